@@ -1,0 +1,515 @@
+//! The worked calculation: a breakdown as numbered steps in the worksheet's order.
+//!
+//! Order (the worksheet's): transformed normal N, L, V, ambient, diffuse, H, specular,
+//! attenuation, I — with the steps the worksheet leaves implicit (eye-space positions,
+//! d, the cosines, spot, each light's contribution, scene ambient, emission) in between.
+//! The CLI prints [`Explanation::to_text`]; the app draws the same steps and copies
+//! [`Explanation::to_markdown`].
+
+use std::fmt::Write as _;
+
+use crate::breakdown::{Limit, SideColor, SideTerms, VertexLighting};
+use crate::real::{Real, Vec3Ops};
+use crate::rules::SpecularModel;
+use crate::scene::Scene;
+
+/// Which face side to explain.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum Side {
+    /// Front-facing (`n` as given).
+    #[default]
+    Front,
+    /// Back-facing (`-n`, the back material; only differs with two-sided lighting).
+    Back,
+}
+
+/// What a step computes; the app colours steps and the plot's vectors by kind.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum StepKind {
+    /// N.
+    Normal,
+    /// P, the vertex in eye space.
+    Position,
+    /// The light's position in eye space.
+    LightPosition,
+    /// L = VP.
+    L,
+    /// d = |VP|.
+    Distance,
+    /// V.
+    V,
+    /// a_cm a_cli.
+    Ambient,
+    /// n . L.
+    CosTheta,
+    /// max(n.L, 0) d_cm d_cli.
+    Diffuse,
+    /// H.
+    H,
+    /// R.
+    R,
+    /// n . H or R . V.
+    CosBeta,
+    /// The specular term.
+    Specular,
+    /// att.
+    Attenuation,
+    /// spot.
+    Spot,
+    /// att spot (ambient + diffuse + specular).
+    Contribution,
+    /// a_cm a_cs.
+    SceneAmbient,
+    /// e_cm.
+    Emission,
+    /// The primary colour I.
+    Primary,
+    /// The secondary colour.
+    Secondary,
+    /// rgba as OpenGL delivers it, clamped.
+    Clamped,
+}
+
+impl Limit {
+    /// The step a limit is shown beside.
+    pub fn step_kind(self) -> StepKind {
+        match self {
+            Limit::ZeroNormal | Limit::NormalScaled | Limit::SingularModelview => StepKind::Normal,
+            Limit::VertexAtInfinity => StepKind::Position,
+            Limit::VertexAtEye => StepKind::V,
+            Limit::LightAtVertex | Limit::LightDirectionZero => StepKind::L,
+            Limit::DistanceScaled => StepKind::Distance,
+            Limit::AttenuationInfinite => StepKind::Attenuation,
+            Limit::SpotDirectionZero | Limit::SpotAtVertex => StepKind::Spot,
+            Limit::HalfwayZero => StepKind::H,
+            Limit::InfinitiesCancelled => StepKind::Primary,
+        }
+    }
+}
+
+/// One line of the worked calculation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Step {
+    /// What it computes.
+    pub kind: StepKind,
+    /// The light it belongs to (`None`: the vertex or the total).
+    pub light: Option<usize>,
+    /// A title, e.g. "Transformed normal".
+    pub title: String,
+    /// The variable name the worksheet prints it under, e.g. `vertexNormal`.
+    pub name: String,
+    /// The formula, e.g. `N = (M^-1)^T n`.
+    pub formula: String,
+    /// The value: 1 number, or a vector/colour printed worksheet-style with 4 components;
+    /// `None` where the step does not apply (e.g. d for a directional light).
+    pub value: Option<Vec<f64>>,
+    /// Why the value is absent, or what limit the engine took here.
+    pub notes: Vec<String>,
+}
+
+/// A whole worked calculation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Explanation {
+    /// One line describing what was explained.
+    pub heading: String,
+    /// The steps in order.
+    pub steps: Vec<Step>,
+}
+
+fn dir4<S: Real>(v: S::V3) -> Vec<f64> {
+    vec![v.x().to_f64(), v.y().to_f64(), v.z().to_f64(), 0.0]
+}
+
+/// Formats `x` with `sig` significant digits, trailing zeros trimmed (`0.09942795`,
+/// `4.5151924e+28`, `0`); non-finite values as `NaN`, `Infinity`, `-Infinity`.
+pub fn fmt_sig(x: f64, sig: usize) -> String {
+    if x.is_nan() {
+        return "NaN".into();
+    }
+    if x.is_infinite() {
+        return if x > 0.0 { "Infinity".into() } else { "-Infinity".into() };
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let sig = sig.max(1);
+    let sci = format!("{:.*e}", sig - 1, x);
+    let (mant, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
+    let exp: i32 = exp.parse().unwrap_or(0);
+    let trim = |s: &str| -> String {
+        if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s.to_string() }
+    };
+    if exp < -5 || exp >= sig as i32 {
+        format!("{}e{}{}", trim(mant), if exp < 0 { "-" } else { "+" }, exp.abs())
+    } else {
+        let decimals = (sig as i32 - 1 - exp).max(0) as usize;
+        trim(&format!("{:.*}", decimals, x))
+    }
+}
+
+/// Formats a value worksheet-style: a scalar alone, a vector as `[a b c d]`.
+pub fn fmt_value(v: &[f64], sig: usize) -> String {
+    if v.len() == 1 {
+        fmt_sig(v[0], sig)
+    } else {
+        let parts: Vec<String> = v.iter().map(|x| fmt_sig(*x, sig)).collect();
+        format!("[{}]", parts.join(" "))
+    }
+}
+
+struct Builder {
+    steps: Vec<Step>,
+}
+
+impl Builder {
+    fn push(
+        &mut self,
+        kind: StepKind,
+        light: Option<usize>,
+        title: &str,
+        name: String,
+        formula: &str,
+        value: Option<Vec<f64>>,
+    ) {
+        self.steps.push(Step {
+            kind,
+            light,
+            title: title.into(),
+            name,
+            formula: formula.into(),
+            value,
+            notes: Vec::new(),
+        });
+    }
+
+    fn note(&mut self, s: impl Into<String>) {
+        if let Some(last) = self.steps.last_mut() {
+            last.notes.push(s.into());
+        }
+    }
+}
+
+/// Builds the worked calculation of `lit` (computed from `scene`) for one side.
+pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> Explanation {
+    let mut b = Builder { steps: Vec::new() };
+    let rules = scene.rules;
+    let back = side == Side::Back && scene.light_model.two_sided;
+    let sign = if back { "-" } else { "" };
+    let vertex_limits = |b: &mut Builder, kind: StepKind| {
+        for l in lit.limits.iter().filter(|l| l.step_kind() == kind) {
+            b.note(l.message());
+        }
+    };
+
+    let n = lit.normal_in_eye;
+    let n_shown = if back { -n } else { n };
+    let nformula = match scene.normal_mode {
+        crate::NormalMode::AsIs => "N = (M^-1)^T n_obj",
+        crate::NormalMode::Normalize => "N = normalize((M^-1)^T n_obj)   (GL_NORMALIZE)",
+        crate::NormalMode::Rescale => "N = f (M^-1)^T n_obj, f = 1/|row 3 of M^-1|   (GL_RESCALE_NORMAL)",
+    };
+    let ntitle = if back { "Transformed normal (back side: -N)" } else { "Transformed normal" };
+    b.push(StepKind::Normal, None, ntitle, "vertexNormal".into(), nformula, Some(dir4::<S>(n_shown)));
+    vertex_limits(&mut b, StepKind::Normal);
+
+    let p = lit.pos_in_eye;
+    b.push(
+        StepKind::Position,
+        None,
+        "Vertex in eye space",
+        "vertexEye".into(),
+        "P = M v_obj, divided by w",
+        Some(vec![p.x, p.y, p.z, 1.0]),
+    );
+    vertex_limits(&mut b, StepKind::Position);
+
+    let vformula = if scene.light_model.local_viewer {
+        "V = normalize(-P)   (local viewer)"
+    } else {
+        "V = (0, 0, 1)   (infinite viewer)"
+    };
+    let push_v = |b: &mut Builder| {
+        b.push(StepKind::V, None, "View vector", "vov".into(), vformula, Some(dir4::<S>(lit.v)));
+        vertex_limits(b, StepKind::V);
+    };
+    if lit.lights().is_empty() {
+        push_v(&mut b);
+    }
+
+    for (k, t) in lit.lights().iter().enumerate() {
+        let i = Some(t.index);
+        let sfx = if lit.lights().len() > 1 { format!("[{}]", t.index) } else { String::new() };
+        let st: &SideTerms<S> = if back { &t.back } else { &t.front };
+        let lim = |b: &mut Builder, kind: StepKind| {
+            for l in t.limits.iter().filter(|l| l.step_kind() == kind) {
+                b.note(l.message());
+            }
+        };
+        let pe = t.pos_in_eye;
+        b.push(
+            StepKind::LightPosition,
+            i,
+            "Light in eye space",
+            format!("lightEye{sfx}"),
+            "P_l = M_light p_light",
+            Some(pe.to_array().to_vec()),
+        );
+        let lformula =
+            if t.positional { "L = normalize(P_l - P)" } else { "L = normalize(P_l.xyz)   (directional: w = 0)" };
+        b.push(StepKind::L, i, "Light vector", format!("vlv{sfx}"), lformula, Some(dir4::<S>(t.l)));
+        lim(&mut b, StepKind::L);
+        let dval = t.distance.map(|d| vec![d.to_f64()]);
+        b.push(StepKind::Distance, i, "Distance to the light", format!("d{sfx}"), "d = |P_l - P|", dval);
+        if t.distance.is_none() {
+            b.note("directional light: no distance");
+        }
+        lim(&mut b, StepKind::Distance);
+        if k == 0 {
+            push_v(&mut b);
+        }
+        b.push(StepKind::Ambient, i, "Ambient term", format!("Iamb{sfx}"), "Iamb = La Ma", Some(dir4::<S>(st.ambient)));
+        b.push(
+            StepKind::CosTheta,
+            i,
+            "cos(theta)",
+            format!("cosTheta{sfx}"),
+            &format!("cos(theta) = {sign}N . L"),
+            Some(vec![st.n_dot_l.to_f64()]),
+        );
+        b.push(
+            StepKind::Diffuse,
+            i,
+            "Diffuse term",
+            format!("Idif{sfx}"),
+            "Idif = Ld Md max(cos(theta), 0)",
+            Some(dir4::<S>(st.diffuse)),
+        );
+        match rules.specular {
+            SpecularModel::BlinnPhong => {
+                b.push(
+                    StepKind::H,
+                    i,
+                    "Halfway vector",
+                    format!("hv{sfx}"),
+                    "H = normalize(L + V)",
+                    Some(dir4::<S>(t.h)),
+                );
+                lim(&mut b, StepKind::H);
+                b.push(
+                    StepKind::CosBeta,
+                    i,
+                    "cos(beta)",
+                    format!("cosBeta{sfx}"),
+                    &format!("cos(beta) = {sign}N . H"),
+                    Some(vec![st.spec_cos.to_f64()]),
+                );
+            }
+            SpecularModel::Phong => {
+                b.push(
+                    StepKind::R,
+                    i,
+                    "Reflection vector",
+                    format!("rv{sfx}"),
+                    "R = 2 (N . L) N - L",
+                    Some(dir4::<S>(t.r)),
+                );
+                b.push(
+                    StepKind::CosBeta,
+                    i,
+                    "cos(alpha)",
+                    format!("cosAlpha{sfx}"),
+                    "cos(alpha) = R . V",
+                    Some(vec![st.spec_cos.to_f64()]),
+                );
+            }
+        }
+        let gate = match rules.specular_gate() {
+            crate::SpecularGate::LitSide => "f = 1 if N . L > 0",
+            crate::SpecularGate::PositiveCosine => "only where cos > 0",
+            crate::SpecularGate::None => "no gate",
+        };
+        b.push(
+            StepKind::Specular,
+            i,
+            "Specular term",
+            format!("Ispec{sfx}"),
+            &format!("Ispec = Ls Ms max(cos, 0)^ns   ({gate}; f = {})", st.f.to_f64()),
+            Some(dir4::<S>(st.specular)),
+        );
+        let aformula = if t.positional { "at = k0 + k1 d + k2 d^2;  att = 1/at" } else { "att = 1   (directional)" };
+        let at = t.attenuation.to_f64();
+        b.push(
+            StepKind::Attenuation,
+            i,
+            "Attenuation",
+            format!("at{sfx}"),
+            aformula,
+            Some(vec![if at == 0.0 { f64::INFINITY } else { 1.0 / at }]),
+        );
+        lim(&mut b, StepKind::Attenuation);
+        if t.spot.active {
+            b.push(
+                StepKind::Spot,
+                i,
+                "Spotlight",
+                format!("spot{sfx}"),
+                &format!(
+                    "spot = max(-L . s, 0)^e if -L . s >= cos(cutoff) = {}, else 0;  -L . s = {}",
+                    fmt_sig(t.spot.cos_cutoff.to_f64(), 8),
+                    fmt_sig(t.spot.cos_angle.to_f64(), 8)
+                ),
+                Some(vec![t.spot.factor.to_f64()]),
+            );
+        } else {
+            b.push(
+                StepKind::Spot,
+                i,
+                "Spotlight",
+                format!("spot{sfx}"),
+                "spot = 1   (cutoff 180: not a spotlight)",
+                Some(vec![1.0]),
+            );
+        }
+        lim(&mut b, StepKind::Spot);
+        let sep = scene.light_model.separate_specular;
+        let cformula = if sep {
+            "att spot (Iamb + Idif)   (specular goes to the secondary colour)"
+        } else {
+            "att spot (Iamb + Idif + Ispec)"
+        };
+        b.push(
+            StepKind::Contribution,
+            i,
+            "This light's share",
+            format!("Ilight{sfx}"),
+            cformula,
+            Some(dir4::<S>(st.primary)),
+        );
+    }
+
+    let sc: &SideColor<S> = if back { &lit.back } else { &lit.front };
+    if rules.scene_ambient() {
+        b.push(
+            StepKind::SceneAmbient,
+            None,
+            "Scene ambient",
+            "Iscene".into(),
+            "a_cm a_cs   (light-model ambient)",
+            Some(dir4::<S>(sc.scene_ambient)),
+        );
+    }
+    if rules.emission() {
+        b.push(StepKind::Emission, None, "Emission", "Iemi".into(), "e_cm", Some(dir4::<S>(sc.emission)));
+    }
+    let iformula = match (rules.scene_ambient(), rules.emission()) {
+        (true, true) => "I = e_cm + a_cm a_cs + sum of the lights' shares",
+        _ => "I = (Iamb + Idif + Ispec) / at, summed over the lights",
+    };
+    let pr = sc.primary.map(S::to_f64);
+    b.push(StepKind::Primary, None, "Vertex colour", "I".into(), iformula, Some(vec![pr[0], pr[1], pr[2], 0.0]));
+    vertex_limits(&mut b, StepKind::Primary);
+    if scene.light_model.separate_specular {
+        let s = sc.secondary.map(S::to_f64);
+        b.push(
+            StepKind::Secondary,
+            None,
+            "Secondary colour",
+            "Isec".into(),
+            "sum of att spot Ispec   (separate specular)",
+            Some(s.to_vec()),
+        );
+    }
+    let c = sc.sum();
+    let c = [c[0], c[1], c[2], c[3]].map(|x| x.max(S::ZERO).min(S::ONE).to_f64());
+    b.push(
+        StepKind::Clamped,
+        None,
+        "Colour as drawn",
+        "glColor".into(),
+        "rgba clamped to [0, 1]; alpha = diffuse alpha",
+        Some(c.to_vec()),
+    );
+
+    let heading = format!(
+        "{} side, {} lights, {}, rules: {}",
+        if back { "back" } else { "front" },
+        lit.lights().len(),
+        S::NAME,
+        rules
+    );
+    Explanation { heading, steps: b.steps }
+}
+
+impl Explanation {
+    /// Plain text, one numbered step per two lines: title and formula, then `name = value`.
+    pub fn to_text(&self, sig: usize) -> String {
+        let mut s = String::new();
+        let _ = writeln!(s, "{}", self.heading);
+        for (k, st) in self.steps.iter().enumerate() {
+            let _ = writeln!(s, "{:>2}. {:<28} {}", k + 1, st.title, st.formula);
+            match &st.value {
+                Some(v) => {
+                    let _ = writeln!(s, "    {} = {}", st.name, fmt_value(v, sig));
+                }
+                None => {
+                    let _ = writeln!(s, "    {} = n/a", st.name);
+                }
+            }
+            for n in &st.notes {
+                let _ = writeln!(s, "    note: {n}");
+            }
+        }
+        s
+    }
+
+    /// A Markdown table of the steps.
+    pub fn to_markdown(&self, sig: usize) -> String {
+        let mut s = String::new();
+        let _ = writeln!(s, "**{}**\n", self.heading);
+        let _ = writeln!(s, "| # | step | formula | value | notes |");
+        let _ = writeln!(s, "|---|---|---|---|---|");
+        for (k, st) in self.steps.iter().enumerate() {
+            let v = st
+                .value
+                .as_ref()
+                .map(|v| format!("`{} = {}`", st.name, fmt_value(v, sig)))
+                .unwrap_or_else(|| "n/a".into());
+            let _ = writeln!(
+                s,
+                "| {} | {} | `{}` | {} | {} |",
+                k + 1,
+                st.title,
+                st.formula.replace('|', "\\|"),
+                v,
+                st.notes.join("; ").replace('|', "\\|")
+            );
+        }
+        s
+    }
+
+    /// The value of the first step with worksheet name `name`.
+    pub fn value(&self, name: &str) -> Option<&[f64]> {
+        self.steps.iter().find(|s| s.name == name).and_then(|s| s.value.as_deref())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn significant_digits_like_the_worksheet() {
+        assert_eq!(fmt_sig(0.792205263, 8), "0.79220526");
+        assert_eq!(fmt_sig(0.0994279500001, 8), "0.09942795");
+        assert_eq!(fmt_sig(-0.24508850, 8), "-0.2450885");
+        assert_eq!(fmt_sig(0.0, 8), "0");
+        assert_eq!(fmt_sig(-0.0, 8), "0");
+        assert_eq!(fmt_sig(0.6, 8), "0.6");
+        assert_eq!(fmt_sig(4.5151920e28, 8), "4.515192e+28");
+        assert_eq!(fmt_sig(1.1075480e-33, 8), "1.107548e-33");
+        assert_eq!(fmt_sig(45151924.0, 8), "45151924");
+        assert_eq!(fmt_sig(123456789.0, 8), "1.2345679e+8");
+        assert_eq!(fmt_sig(f64::NEG_INFINITY, 8), "-Infinity");
+        assert_eq!(fmt_value(&[0.0, 0.6, 0.8, 0.0], 8), "[0 0.6 0.8 0]");
+    }
+}

@@ -1,0 +1,370 @@
+//! The glref case schema (`shared/glref/README.md`): JSON cases in, lit colours out.
+//!
+//! A file is a list of cases or `{"cases": [...]}`. Every field is optional and takes
+//! OpenGL's default; colours are rgb or rgba; numbers may be strings ("NaN", "Infinity",
+//! "1e18"). A case that does not fit the schema is an error of that case alone.
+
+use glam::{DMat4, DVec3, DVec4};
+use serde_json::{Map, Value, json};
+use thiserror::Error;
+
+use crate::lighting::{Engine, EvalOptions};
+use crate::real::Real;
+use crate::rules::Rules;
+use crate::scene::{Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Scene, Vertex};
+use crate::transform::mat4_from_rows;
+
+/// The file as a whole could not be read as cases.
+#[derive(Debug, Error)]
+pub enum FileError {
+    /// Not JSON.
+    #[error("not valid JSON: {0}")]
+    Json(#[from] serde_json::Error),
+    /// JSON, but neither a list nor an object with a "cases" list.
+    #[error("expected a list of cases or an object {{\"cases\": [...]}}, found {0}")]
+    Shape(&'static str),
+}
+
+/// One case did not fit the schema.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error("{field}: {message}")]
+pub struct CaseError {
+    /// The offending field, e.g. `lights[1].position`.
+    pub field: String,
+    /// What is wrong.
+    pub message: String,
+}
+
+fn err(field: &str, message: impl Into<String>) -> CaseError {
+    CaseError { field: field.to_string(), message: message.into() }
+}
+
+/// A colour result as the harness writes it: rgba.
+pub type Rgba4 = [f64; 4];
+
+/// The lit colours of one case (Mesa's, embedded in generated files, or ours).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CaseColors {
+    /// Primary colour of a front-facing primitive.
+    pub front: Rgba4,
+    /// Secondary colour, front.
+    pub front_secondary: Rgba4,
+    /// Primary colour of a back-facing primitive.
+    pub back: Rgba4,
+    /// Secondary colour, back.
+    pub back_secondary: Rgba4,
+}
+
+/// One parsed case.
+#[derive(Clone, Debug)]
+pub struct Case {
+    /// The case's `id` (or `case<index>` when it has none).
+    pub id: String,
+    /// The scene, with the case's vertex as the scene's vertex.
+    pub scene: Scene,
+    /// Mesa's result when the file embeds one.
+    pub expected: Option<CaseColors>,
+    /// The case's tags (generated files).
+    pub tags: Vec<String>,
+}
+
+/// Splits a file into its raw case objects.
+pub fn raw_cases(text: &str) -> Result<Vec<Value>, FileError> {
+    let v: Value = serde_json::from_str(text)?;
+    match v {
+        Value::Array(a) => Ok(a),
+        Value::Object(mut o) => match o.remove("cases") {
+            Some(Value::Array(a)) => Ok(a),
+            Some(_) => Err(FileError::Shape("\"cases\" that is not a list")),
+            None => Err(FileError::Shape("an object without \"cases\"")),
+        },
+        Value::Null => Err(FileError::Shape("null")),
+        Value::Bool(_) => Err(FileError::Shape("a boolean")),
+        Value::Number(_) => Err(FileError::Shape("a number")),
+        Value::String(_) => Err(FileError::Shape("a string")),
+    }
+}
+
+/// Parses a file: `Err` when the file is not a case file; otherwise one result per case.
+pub fn parse_cases(text: &str) -> Result<Vec<(String, Result<Case, CaseError>)>, FileError> {
+    Ok(raw_cases(text)?
+        .iter()
+        .enumerate()
+        .map(|(i, raw)| {
+            let id = raw.get("id").and_then(Value::as_str).map(str::to_string).unwrap_or_else(|| format!("case{i}"));
+            (id, parse_case(raw, i))
+        })
+        .collect())
+}
+
+/// A number, or a string holding one ("NaN", "Infinity", "-Infinity", "1e18").
+pub fn number(v: &Value, field: &str) -> Result<f64, CaseError> {
+    match v {
+        Value::Number(n) => n.as_f64().ok_or_else(|| err(field, "number out of range")),
+        Value::String(s) => {
+            let t = s.trim();
+            match t.to_ascii_lowercase().as_str() {
+                "nan" | "+nan" | "-nan" => Ok(f64::NAN),
+                "infinity" | "+infinity" | "inf" | "+inf" => Ok(f64::INFINITY),
+                "-infinity" | "-inf" => Ok(f64::NEG_INFINITY),
+                _ => t.parse().map_err(|_| err(field, format!("{s:?} is not a number"))),
+            }
+        }
+        other => Err(err(field, format!("expected a number, found {other}"))),
+    }
+}
+
+fn numbers(v: &Value, field: &str, lens: &[usize]) -> Result<Vec<f64>, CaseError> {
+    let a = v.as_array().ok_or_else(|| err(field, format!("expected a list, found {v}")))?;
+    if !lens.contains(&a.len()) {
+        let want: Vec<String> = lens.iter().map(|n| n.to_string()).collect();
+        return Err(err(field, format!("expected {} numbers, found {}", want.join(" or "), a.len())));
+    }
+    a.iter().enumerate().map(|(i, x)| number(x, &format!("{field}[{i}]"))).collect()
+}
+
+fn rgba(v: &Value, field: &str) -> Result<DVec4, CaseError> {
+    let n = numbers(v, field, &[3, 4])?;
+    Ok(DVec4::new(n[0], n[1], n[2], n.get(3).copied().unwrap_or(1.0)))
+}
+
+fn vec3(v: &Value, field: &str) -> Result<DVec3, CaseError> {
+    let n = numbers(v, field, &[3])?;
+    Ok(DVec3::new(n[0], n[1], n[2]))
+}
+
+fn point(v: &Value, field: &str) -> Result<DVec4, CaseError> {
+    let n = numbers(v, field, &[3, 4])?;
+    Ok(DVec4::new(n[0], n[1], n[2], n.get(3).copied().unwrap_or(1.0)))
+}
+
+fn mat4(v: &Value, field: &str) -> Result<DMat4, CaseError> {
+    let rows = v.as_array().ok_or_else(|| err(field, "expected 4 rows of 4 numbers"))?;
+    if rows.len() != 4 {
+        return Err(err(field, format!("expected 4 rows, found {}", rows.len())));
+    }
+    let mut m = [[0.0; 4]; 4];
+    for (i, r) in rows.iter().enumerate() {
+        let n = numbers(r, &format!("{field}[{i}]"), &[4])?;
+        m[i].copy_from_slice(&n);
+    }
+    Ok(mat4_from_rows(m))
+}
+
+fn boolean(v: &Value, field: &str) -> Result<bool, CaseError> {
+    match v {
+        Value::Bool(b) => Ok(*b),
+        Value::Number(n) if n.as_f64() == Some(0.0) => Ok(false),
+        Value::Number(n) if n.as_f64() == Some(1.0) => Ok(true),
+        other => Err(err(field, format!("expected true or false, found {other}"))),
+    }
+}
+
+fn object<'a>(v: &'a Value, field: &str) -> Result<&'a Map<String, Value>, CaseError> {
+    v.as_object().ok_or_else(|| err(field, format!("expected an object, found {v}")))
+}
+
+fn material(v: &Value, field: &str) -> Result<Material, CaseError> {
+    let o = object(v, field)?;
+    let mut m = Material::default();
+    for (k, x) in o {
+        let f = format!("{field}.{k}");
+        match k.as_str() {
+            "ambient" => m.ambient = rgba(x, &f)?,
+            "diffuse" => m.diffuse = rgba(x, &f)?,
+            "specular" => m.specular = rgba(x, &f)?,
+            "emission" => m.emission = rgba(x, &f)?,
+            "shininess" => m.shininess = number(x, &f)?,
+            _ => {} // e.g. "name"
+        }
+    }
+    Ok(m)
+}
+
+fn light(v: &Value, index: usize, placement: &LightPlacement) -> Result<Light, CaseError> {
+    let field = format!("lights[{index}]");
+    let o = object(v, &field)?;
+    let mut l = Light { placement: placement.clone(), ..Light::gl_default(index) };
+    for (k, x) in o {
+        let f = format!("{field}.{k}");
+        match k.as_str() {
+            "ambient" => l.ambient = rgba(x, &f)?,
+            "diffuse" => l.diffuse = rgba(x, &f)?,
+            "specular" => l.specular = rgba(x, &f)?,
+            "position" => l.position = point(x, &f)?,
+            "spot_direction" => l.spot_direction = vec3(x, &f)?,
+            "spot_cutoff" => l.spot_cutoff = number(x, &f)?,
+            "spot_exponent" => l.spot_exponent = number(x, &f)?,
+            "constant_attenuation" => l.attenuation[0] = number(x, &f)?,
+            "linear_attenuation" => l.attenuation[1] = number(x, &f)?,
+            "quadratic_attenuation" => l.attenuation[2] = number(x, &f)?,
+            _ => {}
+        }
+    }
+    Ok(l)
+}
+
+/// Parses one case object (`index` names it when it has no id).
+pub fn parse_case(raw: &Value, index: usize) -> Result<Case, CaseError> {
+    let o = object(raw, &format!("cases[{index}]"))?;
+    let get = |k: &str| o.get(k).filter(|v| !v.is_null());
+    let id = get("id").and_then(Value::as_str).map(str::to_string).unwrap_or_else(|| format!("case{index}"));
+    let modelview = get("modelview").map(|v| mat4(v, "modelview")).transpose()?.unwrap_or(DMat4::IDENTITY);
+    let placement = match get("light_modelview") {
+        Some(v) => LightPlacement::Matrix(mat4(v, "light_modelview")?),
+        None => LightPlacement::Object,
+    };
+    let lights_raw: Vec<&Value> = match (get("lights"), get("light")) {
+        (Some(v), _) => v.as_array().ok_or_else(|| err("lights", "expected a list"))?.iter().collect(),
+        (None, Some(v)) => vec![v],
+        (None, None) => Vec::new(),
+    };
+    if lights_raw.len() > MAX_LIGHTS {
+        return Err(err("lights", format!("{} lights: OpenGL has at most {MAX_LIGHTS}", lights_raw.len())));
+    }
+    let lights = lights_raw.iter().enumerate().map(|(i, v)| light(v, i, &placement)).collect::<Result<Vec<_>, _>>()?;
+    let flag = |k: &str| get(k).map(|v| boolean(v, k)).transpose().map(|b| b.unwrap_or(false));
+    let normal_mode = if flag("normalize")? {
+        NormalMode::Normalize
+    } else if flag("rescale_normal")? {
+        NormalMode::Rescale
+    } else {
+        NormalMode::AsIs
+    };
+    let scene = Scene {
+        light_model: LightModel {
+            ambient: get("light_model_ambient")
+                .map(|v| rgba(v, "light_model_ambient"))
+                .transpose()?
+                .unwrap_or(LightModel::default().ambient),
+            local_viewer: flag("local_viewer")?,
+            two_sided: flag("two_sided")?,
+            separate_specular: flag("separate_specular")?,
+        },
+        lights,
+        material: get("material").map(|v| material(v, "material")).transpose()?.unwrap_or_default(),
+        back_material: get("back_material").map(|v| material(v, "back_material")).transpose()?,
+        eye_from_world: modelview,
+        world_from_object: DMat4::IDENTITY,
+        normal_mode,
+        rules: Rules::OPENGL,
+        vertex: Vertex {
+            position: get("vertex").map(|v| point(v, "vertex")).transpose()?.unwrap_or(DVec4::W),
+            normal: get("normal").map(|v| vec3(v, "normal")).transpose()?.unwrap_or(DVec3::Z),
+        },
+    };
+    let expected = get("result").map(expected_colors).transpose()?;
+    let tags = get("tags")
+        .and_then(Value::as_array)
+        .map(|a| a.iter().filter_map(Value::as_str).map(str::to_string).collect())
+        .unwrap_or_default();
+    Ok(Case { id, scene, expected, tags })
+}
+
+fn expected_colors(v: &Value) -> Result<CaseColors, CaseError> {
+    let c = |k: &str| -> Result<Rgba4, CaseError> {
+        let x = v.get(k).ok_or_else(|| err(&format!("result.{k}"), "missing"))?;
+        let n = numbers(x, &format!("result.{k}"), &[4])?;
+        Ok([n[0], n[1], n[2], n[3]])
+    };
+    Ok(CaseColors {
+        front: c("front")?,
+        front_secondary: c("front_secondary")?,
+        back: c("back")?,
+        back_secondary: c("back_secondary")?,
+    })
+}
+
+/// Evaluates a scene's vertex in precision `S` into the four result colours.
+/// `Err` carries the message of a parameter OpenGL refuses.
+pub fn evaluate<S: Real>(scene: &Scene, options: EvalOptions, clamp: bool) -> Result<CaseColors, crate::SceneError> {
+    let lit = Engine::<S>::with_options(scene, options)?.light(&scene.vertex);
+    let pick = |c: &crate::SideColor<S>| {
+        let (p, s) = if clamp { (c.primary_clamped(), c.secondary_clamped()) } else { (c.primary, c.secondary) };
+        (p.map(S::to_f64), s.map(S::to_f64))
+    };
+    let (front, front_secondary) = pick(&lit.front);
+    let (back, back_secondary) = pick(&lit.back);
+    Ok(CaseColors { front, front_secondary, back, back_secondary })
+}
+
+/// A number as JSON, with non-finite values as the strings "NaN", "Infinity", "-Infinity".
+pub fn json_number(x: f64) -> Value {
+    if x.is_nan() {
+        json!("NaN")
+    } else if x == f64::INFINITY {
+        json!("Infinity")
+    } else if x == f64::NEG_INFINITY {
+        json!("-Infinity")
+    } else {
+        json!(x)
+    }
+}
+
+/// One result object: `{"id", "front", "front_secondary", "back", "back_secondary", "error"}`,
+/// colours `null` when `error` is set.
+pub fn result_json(id: &str, r: &Result<CaseColors, String>) -> Value {
+    let arr = |c: &Rgba4| Value::Array(c.iter().map(|x| json_number(*x)).collect());
+    match r {
+        Ok(c) => json!({
+            "id": id,
+            "front": arr(&c.front),
+            "front_secondary": arr(&c.front_secondary),
+            "back": arr(&c.back),
+            "back_secondary": arr(&c.back_secondary),
+            "error": Value::Null,
+        }),
+        Err(e) => json!({
+            "id": id, "front": null, "front_secondary": null, "back": null, "back_secondary": null, "error": e,
+        }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_opengl_defaults() {
+        let c = parse_case(&json!({"lights": [{}, {}]}), 0).unwrap();
+        assert_eq!(c.id, "case0");
+        assert_eq!(c.scene.lights[0].diffuse, DVec4::ONE);
+        assert_eq!(c.scene.lights[1].diffuse, DVec4::new(0.0, 0.0, 0.0, 1.0));
+        assert_eq!(c.scene.material, Material::default());
+        assert_eq!(c.scene.light_model.ambient, DVec4::new(0.2, 0.2, 0.2, 1.0));
+    }
+
+    #[test]
+    fn numbers_may_be_strings_and_colours_rgb() {
+        let c = parse_case(&json!({"vertex": ["1e18", 0, "-Infinity"], "material": {"diffuse": [1, "NaN", 0]}}), 3)
+            .unwrap();
+        assert_eq!(c.scene.vertex.position, DVec4::new(1e18, 0.0, f64::NEG_INFINITY, 1.0));
+        assert!(c.scene.material.diffuse.y.is_nan());
+        assert_eq!(c.scene.material.diffuse.w, 1.0);
+    }
+
+    #[test]
+    fn schema_errors_name_the_field() {
+        let e = parse_case(&json!({"lights": [{"position": [1, 2]}]}), 0).unwrap_err();
+        assert_eq!(e.field, "lights[0].position");
+        let e = parse_case(&json!({"modelview": [[1, 0, 0, 0]]}), 0).unwrap_err();
+        assert_eq!(e.field, "modelview");
+        let e = parse_case(&json!({"normal": [0, "x", 1]}), 0).unwrap_err();
+        assert_eq!(e.field, "normal[1]");
+    }
+
+    #[test]
+    fn file_shapes() {
+        assert_eq!(raw_cases("[{}, {}]").unwrap().len(), 2);
+        assert_eq!(raw_cases("{\"cases\": [{}], \"meta\": 1}").unwrap().len(), 1);
+        assert!(matches!(raw_cases("{\"x\": 1}"), Err(FileError::Shape(_))));
+        assert!(matches!(raw_cases("[1,"), Err(FileError::Json(_))));
+    }
+
+    #[test]
+    fn non_finite_numbers_are_written_as_strings() {
+        assert_eq!(json_number(f64::NAN), json!("NaN"));
+        assert_eq!(json_number(f64::NEG_INFINITY), json!("-Infinity"));
+        assert_eq!(json_number(0.5), json!(0.5));
+    }
+}

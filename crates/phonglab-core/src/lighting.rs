@@ -1,0 +1,459 @@
+//! The OpenGL 2.1 fixed-function lighting equation (section 2.14.1) with its breakdown.
+//!
+//! | symbol | meaning | here |
+//! |---|---|---|
+//! | `P`   | the vertex in eye space (after w-division) | [`VertexLighting::pos_in_eye`] |
+//! | `N`, `n` | the normal in eye space: `(M^-1)^T n_obj`, then normalised or rescaled | `normal_in_eye` |
+//! | `L`   | `VP_pli`: unit vector from the vertex to light i (its direction when w = 0) | [`LightTerms::l`] |
+//! | `V`   | unit vector from the vertex to the viewer: `normalize(-P)` (local) or (0, 0, 1) | `v` |
+//! | `H`   | the halfway vector `normalize(L + V)` (Blinn-Phong) | [`LightTerms::h`] |
+//! | `R`   | the reflection of L about n: `2 (n . L) n - L` (Phong) | [`LightTerms::r`] |
+//! | `d`   | `|VP|`, the distance to a positional light | [`LightTerms::distance`] |
+//! | `att` | `1 / (k0 + k1 d + k2 d^2)` for w != 0, else 1 | [`LightTerms::attenuation`] |
+//! | `spot`| `max(-L . s, 0)^s_rl` inside the cone `-L . s >= cos(c_rl)`, 0 outside, 1 for cutoff 180 | [`SpotTerms::factor`] |
+//! | `f`   | 1 where `n . L > 0`, else 0: no specular from a light behind the surface | [`SideTerms::f`] |
+//!
+//! The colour of a side (`n` negated and the back material on the back side):
+//!
+//! ```text
+//! c_pri = e_cm + a_cm a_cs + sum_i att_i spot_i [ a_cm a_cli + max(n.L, 0) d_cm d_cli + f_i max(n.H, 0)^s_rm s_cm s_cli ]
+//! ```
+//!
+//! with the specular term moved to `c_sec` under `SEPARATE_SPECULAR_COLOR`, and alpha
+//! `= alpha(d_cm)`. The worksheet's and the Phong demo's rules (see [`crate::rules`]) drop
+//! terms from this same sum; they never compute a term differently.
+//!
+//! Numerics (DESIGN.md): positions are transformed, divided by w and differenced in f64
+//! with compensated dot products in both precisions, so huge cancelling coordinates
+//! (1e18) stay exact; lengths are scaled before squaring; a product with a zero factor is
+//! zero even when the other is infinite; where a direction is undefined the engine takes
+//! the limit a person expects and records a [`Limit`].
+
+use glam::{DMat4, DVec3, DVec4, Vec4Swizzles as _};
+
+use crate::breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerms, VertexLighting};
+use crate::error::SceneError;
+use crate::pow::PowFn;
+use crate::real::{Real, Vec3Ops};
+use crate::robust::{cos_deg, mul0, mul0_v, scale0, scaled_length, transform_point, transform_vector3, try_normalize};
+use crate::rules::{Rules, SpecularGate, SpecularModel};
+use crate::scene::{Light, Material, NormalMode, Rgba, Scene, Vertex};
+use crate::transform::NormalMatrix;
+
+/// A material side rounded to the engine's precision.
+#[derive(Clone, Copy, Debug)]
+struct SideMaterial<S: Real> {
+    shininess: S,
+    alpha: S,
+    /// `e_cm + a_cm a_cs`, with the rule set's terms only.
+    emission: S::V3,
+    scene_ambient: S::V3,
+}
+
+/// How a light's direction is found.
+#[derive(Clone, Copy, Debug)]
+enum LightPos {
+    /// w != 0: at this eye-space point.
+    Positional(DVec3),
+    /// w = 0: in direction `dir` (unit: `None` for (0, 0, 0)).
+    Directional { dir: DVec3, unit: Option<DVec3> },
+}
+
+/// A spotlight's cone, precomputed.
+#[derive(Clone, Copy, Debug)]
+struct PreparedSpot<S: Real> {
+    /// The unit axis in eye space (f64), `None` when the direction is zero.
+    axis: Option<DVec3>,
+    /// The cutoff in degrees, its cosine and sine.
+    cutoff: f64,
+    cos_cutoff: f64,
+    sin_cutoff: f64,
+    exponent: S,
+}
+
+/// Is the unit vector `a` (= -L) inside the cone of half-angle `cutoff` about the unit
+/// axis `s`? OpenGL's test is `a . s >= cos(cutoff)`; near the axis a cosine cannot
+/// resolve small angles (cos 0.01 deg = 1 - 1.5e-8 rounds to 1 in f32), so for cutoffs
+/// under 45 degrees the equivalent `|a x s| <= sin(cutoff)` (with `a . s >= 0`) is used.
+fn inside_cone(a: DVec3, s: DVec3, cutoff: f64, cos_cutoff: f64, sin_cutoff: f64) -> bool {
+    let cos = a.dot(s);
+    if cutoff >= 45.0 { cos >= cos_cutoff } else { cos >= 0.0 && a.cross(s).length() <= sin_cutoff }
+}
+
+/// One light with everything that does not depend on the vertex precomputed.
+#[derive(Clone, Copy, Debug)]
+struct PreparedLight<S: Real> {
+    index: usize,
+    pos_in_eye: DVec4,
+    pos: LightPos,
+    k: [S; 3],
+    /// The spotlight; `None` when cutoff is 180.
+    spot: Option<PreparedSpot<S>>,
+    /// Light x material products per side: ambient, diffuse, specular.
+    products: [[S::V3; 3]; 2],
+}
+
+/// How the engine computes, beyond what the scene says: numerical choices, not GL state.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct EvalOptions {
+    /// The power function of the specular and spot terms.
+    pub pow: PowFn,
+}
+
+/// The general lighting engine for a scene, in precision `S`: every term of the
+/// equation, with the full breakdown. Build it once per scene, then light vertices.
+#[derive(Clone, Debug)]
+pub struct Engine<S: Real> {
+    options: EvalOptions,
+    rules: Rules,
+    local_viewer: bool,
+    two_sided: bool,
+    separate_specular: bool,
+    normal_mode: NormalMode,
+    eye_from_object: DMat4,
+    normal_matrix: S::M3,
+    rescale: S,
+    singular: bool,
+    sides: [SideMaterial<S>; 2],
+    lights: Vec<PreparedLight<S>>,
+}
+
+fn rgb<S: Real>(c: Rgba) -> S::V3 {
+    S::V3::from_dvec3(c.xyz())
+}
+
+fn side_material<S: Real>(m: &Material, scene: &Scene) -> SideMaterial<S> {
+    let rules = scene.rules;
+    SideMaterial {
+        shininess: S::from_f64(m.shininess),
+        alpha: S::from_f64(m.diffuse.w),
+        emission: if rules.emission() { rgb::<S>(m.emission) } else { S::V3::ZERO },
+        scene_ambient: if rules.scene_ambient() {
+            mul0_v::<S>(rgb::<S>(m.ambient), rgb::<S>(scene.light_model.ambient))
+        } else {
+            S::V3::ZERO
+        },
+    }
+}
+
+fn prepare_light<S: Real>(scene: &Scene, index: usize, l: &Light) -> PreparedLight<S> {
+    let eye_from_light = scene.eye_from_light(l);
+    let pos_in_eye = transform_point(&eye_from_light, l.position);
+    let pos = if pos_in_eye.w != 0.0 {
+        LightPos::Positional(pos_in_eye.xyz() / pos_in_eye.w)
+    } else {
+        let dir = pos_in_eye.xyz();
+        LightPos::Directional { dir, unit: try_normalize::<f64>(dir) }
+    };
+    let spot = l.is_spot().then(|| PreparedSpot {
+        axis: try_normalize::<f64>(transform_vector3(&eye_from_light, l.spot_direction)),
+        cutoff: l.spot_cutoff,
+        cos_cutoff: cos_deg(l.spot_cutoff),
+        sin_cutoff: if l.spot_cutoff == 0.0 { 0.0 } else { l.spot_cutoff.to_radians().sin() },
+        exponent: S::from_f64(l.spot_exponent),
+    });
+    let product = |m: &Material| {
+        [
+            mul0_v::<S>(rgb::<S>(m.ambient), rgb::<S>(l.ambient)),
+            mul0_v::<S>(rgb::<S>(m.diffuse), rgb::<S>(l.diffuse)),
+            mul0_v::<S>(rgb::<S>(m.specular), rgb::<S>(l.specular)),
+        ]
+    };
+    PreparedLight {
+        index,
+        pos_in_eye,
+        pos,
+        k: l.attenuation.map(S::from_f64),
+        spot,
+        products: [product(&scene.material), product(scene.back())],
+    }
+}
+
+impl<S: Real> Engine<S> {
+    /// Builds the engine for `scene`, refusing what OpenGL refuses ([`Scene::validate`]).
+    pub fn new(scene: &Scene) -> Result<Self, SceneError> {
+        Self::with_options(scene, EvalOptions::default())
+    }
+
+    /// [`Engine::new`] with numerical options.
+    pub fn with_options(scene: &Scene, options: EvalOptions) -> Result<Self, SceneError> {
+        scene.validate()?;
+        let eye_from_object = scene.eye_from_object();
+        let nm = NormalMatrix::new(&eye_from_object);
+        Ok(Self {
+            options,
+            rules: scene.rules,
+            local_viewer: scene.light_model.local_viewer,
+            two_sided: scene.light_model.two_sided,
+            separate_specular: scene.light_model.separate_specular,
+            normal_mode: scene.normal_mode,
+            eye_from_object,
+            normal_matrix: S::m3_from_dmat3(nm.eye_from_object),
+            rescale: S::from_f64(nm.rescale),
+            singular: nm.singular,
+            sides: [side_material(&scene.material, scene), side_material(scene.back(), scene)],
+            lights: scene.lights.iter().enumerate().map(|(i, l)| prepare_light(scene, i, l)).collect(),
+        })
+    }
+
+    /// Lights the scene's own vertex.
+    pub fn light_scene_vertex(scene: &Scene) -> Result<VertexLighting<S>, SceneError> {
+        Ok(Self::new(scene)?.light(&scene.vertex))
+    }
+
+    /// The options the engine was built with.
+    pub fn options(&self) -> EvalOptions {
+        self.options
+    }
+
+    /// Lights one vertex (object-space position and normal), with the full breakdown.
+    pub fn light(&self, vertex: &Vertex) -> VertexLighting<S> {
+        let mut out = VertexLighting::<S>::default();
+        if self.singular {
+            out.limits.insert(Limit::SingularModelview);
+        }
+
+        // P: the vertex in eye space, divided by w (a direction when w = 0).
+        let pos_h = transform_point(&self.eye_from_object, vertex.position);
+        let at_infinity = pos_h.w == 0.0;
+        let pos = if at_infinity { pos_h.xyz() } else { pos_h.xyz() / pos_h.w };
+        if at_infinity {
+            out.limits.insert(Limit::VertexAtInfinity);
+        }
+        out.pos_in_eye_h = pos_h;
+        out.pos_in_eye = pos;
+
+        // n: (M^-1)^T n_obj, then GL_NORMALIZE or GL_RESCALE_NORMAL.
+        let n_t = self.normal_matrix * S::V3::from_dvec3(vertex.normal);
+        let n = match self.normal_mode {
+            NormalMode::AsIs => n_t,
+            NormalMode::Rescale => n_t * self.rescale,
+            NormalMode::Normalize => match try_normalize::<S>(n_t) {
+                Some(u) => {
+                    let sq = n_t.dot(n_t);
+                    if sq == S::ZERO || !sq.is_finite() {
+                        out.limits.insert(Limit::NormalScaled);
+                    }
+                    u
+                }
+                None => S::V3::ZERO,
+            },
+        };
+        let zero_normal = n == S::V3::ZERO || !n.max_abs().is_finite();
+        if zero_normal {
+            out.limits.insert(Limit::ZeroNormal);
+        }
+        out.normal_transformed = n_t;
+        out.normal_in_eye = n;
+
+        // V: towards the viewer.
+        let v = if self.local_viewer {
+            match try_normalize::<f64>(-pos) {
+                Some(u) => Some(S::V3::from_dvec3(u)),
+                None => {
+                    out.limits.insert(Limit::VertexAtEye);
+                    None
+                }
+            }
+        } else {
+            Some(S::V3::new(S::ZERO, S::ZERO, S::ONE))
+        };
+        out.v = v.unwrap_or(S::V3::ZERO);
+
+        let mut acc = [Accum::<S>::default(); 2];
+        for pl in &self.lights {
+            let t = self.light_one(pl, pos, at_infinity, n, zero_normal, v);
+            for (side, a) in acc.iter_mut().enumerate() {
+                let st = if side == 0 { &t.front } else { &t.back };
+                a.primary = a.primary + st.primary;
+                a.secondary = a.secondary + st.secondary;
+            }
+            out.push_light(t);
+        }
+
+        let mut limits = out.limits;
+        out.front = self.side_color(0, &acc[0], &mut limits);
+        out.back = if self.two_sided { self.side_color(1, &acc[1], &mut limits) } else { out.front };
+        out.limits = limits;
+        out
+    }
+
+    fn side_color(&self, side: usize, acc: &Accum<S>, limits: &mut Limits) -> SideColor<S> {
+        let m = &self.sides[side];
+        let p = m.emission + m.scene_ambient + acc.primary;
+        let mut fix = |x: S| {
+            if x.is_nan() {
+                limits.insert(Limit::InfinitiesCancelled);
+                S::ZERO
+            } else {
+                x
+            }
+        };
+        let primary = [fix(p.x()), fix(p.y()), fix(p.z()), m.alpha];
+        let s = acc.secondary;
+        let secondary =
+            if self.separate_specular { [fix(s.x()), fix(s.y()), fix(s.z()), S::ONE] } else { [S::ZERO; 4] };
+        SideColor { emission: m.emission, scene_ambient: m.scene_ambient, primary, secondary }
+    }
+
+    /// One light's terms at the vertex.
+    fn light_one(
+        &self,
+        pl: &PreparedLight<S>,
+        pos: DVec3,
+        at_infinity: bool,
+        n: S::V3,
+        zero_normal: bool,
+        v: Option<S::V3>,
+    ) -> LightTerms<S> {
+        let mut limits = Limits::NONE;
+
+        // L = VP and d; att.
+        let (l64, distance): (Option<DVec3>, Option<S>) = match pl.pos {
+            LightPos::Positional(lp) => {
+                if at_infinity {
+                    // From a point at infinity, every finite point lies in the opposite direction.
+                    (try_normalize::<f64>(-pos), Some(S::INFINITY))
+                } else {
+                    let vp = lp - pos;
+                    let d = scaled_length::<f64>(vp);
+                    // Would |VP|^2 have under- or overflowed in this precision?
+                    let vp_s = S::V3::from_dvec3(vp);
+                    let sq = vp_s.dot(vp_s);
+                    if d > 0.0 && (sq == S::ZERO || !sq.is_finite()) {
+                        limits.insert(Limit::DistanceScaled);
+                    }
+                    (try_normalize::<f64>(vp), Some(S::from_f64(d)))
+                }
+            }
+            LightPos::Directional { dir, unit } => {
+                if at_infinity {
+                    (try_normalize::<f64>(dir - pos), None)
+                } else {
+                    (unit, None)
+                }
+            }
+        };
+        let l: Option<S::V3> = l64.map(S::V3::from_dvec3);
+        if l.is_none() {
+            limits.insert(match pl.pos {
+                LightPos::Positional(_) => Limit::LightAtVertex,
+                LightPos::Directional { .. } => Limit::LightDirectionZero,
+            });
+        }
+        let attenuation = match distance {
+            Some(d) => {
+                let [k0, k1, k2] = pl.k;
+                let denom = k0 + mul0(k1, d) + mul0(mul0(k2, d), d);
+                if denom == S::ZERO {
+                    limits.insert(Limit::AttenuationInfinite);
+                    S::INFINITY
+                } else {
+                    S::ONE / denom
+                }
+            }
+            None => S::ONE,
+        };
+
+        // spot
+        let spot = match &pl.spot {
+            None => SpotTerms { active: false, factor: S::ONE, ..Default::default() },
+            Some(sp) => {
+                let mut st = SpotTerms {
+                    active: true,
+                    cos_cutoff: S::from_f64(sp.cos_cutoff),
+                    dir_in_eye: sp.axis.map(S::V3::from_dvec3).unwrap_or(S::V3::ZERO),
+                    ..Default::default()
+                };
+                match (sp.axis, l64) {
+                    (None, _) => limits.insert(Limit::SpotDirectionZero),
+                    (Some(_), None) => {
+                        if matches!(pl.pos, LightPos::Positional(_)) {
+                            limits.insert(Limit::SpotAtVertex);
+                        }
+                    }
+                    (Some(axis), Some(l)) => {
+                        st.cos_angle = S::from_f64(-l.dot(axis));
+                        st.inside = inside_cone(-l, axis, sp.cutoff, sp.cos_cutoff, sp.sin_cutoff);
+                        if st.inside {
+                            st.factor = self.options.pow.pow(st.cos_angle.max(S::ZERO), sp.exponent);
+                        }
+                    }
+                }
+                st
+            }
+        };
+        let scale = mul0(attenuation, spot.factor);
+
+        // H or R.
+        let lit = l.filter(|_| !zero_normal);
+        let h = match (l, v) {
+            (Some(l), Some(v)) if self.rules.specular == SpecularModel::BlinnPhong => {
+                let h = try_normalize::<S>(l + v);
+                if h.is_none() {
+                    limits.insert(Limit::HalfwayZero);
+                }
+                h
+            }
+            _ => None,
+        };
+        let r = lit.map(|l| n * (S::from_f64(2.0) * n.dot(l)) - l);
+
+        let side_terms = |side: usize| -> SideTerms<S> {
+            let [amb, dif, spe] = pl.products[side];
+            let mut st = SideTerms { ambient: amb, ..Default::default() };
+            if let Some(l) = lit {
+                let n_side = if side == 0 { n } else { -n };
+                st.n_dot_l = n_side.dot(l);
+                st.diffuse = scale0::<S>(dif, st.n_dot_l.max(S::ZERO));
+                let cos = match self.rules.specular {
+                    SpecularModel::BlinnPhong => h.map(|h| n_side.dot(h)),
+                    SpecularModel::Phong => v.zip(r).map(|(v, r)| r.dot(v)),
+                };
+                if let Some(c) = cos {
+                    st.spec_cos = c;
+                    let allowed = match self.rules.specular_gate() {
+                        SpecularGate::LitSide => st.n_dot_l > S::ZERO,
+                        SpecularGate::PositiveCosine => c > S::ZERO,
+                        SpecularGate::None => true,
+                    };
+                    if allowed {
+                        st.f = S::ONE;
+                        let shin = self.sides[side].shininess;
+                        st.specular = scale0::<S>(spe, self.options.pow.pow(c.max(S::ZERO), shin));
+                    }
+                }
+            }
+            let pri = if self.separate_specular { amb + st.diffuse } else { amb + st.diffuse + st.specular };
+            st.primary = scale0::<S>(pri, scale);
+            if self.separate_specular {
+                st.secondary = scale0::<S>(st.specular, scale);
+            }
+            st
+        };
+        let front = side_terms(0);
+        let back = if self.two_sided { side_terms(1) } else { front };
+
+        LightTerms {
+            index: pl.index,
+            pos_in_eye: pl.pos_in_eye,
+            positional: matches!(pl.pos, LightPos::Positional(_)),
+            l: l.unwrap_or(S::V3::ZERO),
+            distance,
+            attenuation,
+            spot,
+            scale,
+            h: h.unwrap_or(S::V3::ZERO),
+            r: r.unwrap_or(S::V3::ZERO),
+            front,
+            back,
+            limits,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, Default)]
+struct Accum<S: Real> {
+    primary: S::V3,
+    secondary: S::V3,
+}

@@ -1,0 +1,83 @@
+//! Ready-made scenes: the worksheet (with each of its five modelviews) and the Phong demo.
+
+use glam::{DMat4, DVec3, DVec4};
+
+use crate::materials;
+use crate::rules::Rules;
+use crate::scene::{Light, LightModel, LightPlacement, Material, NormalMode, Scene, Vertex};
+use crate::transform::{try_look_at, worksheet_modelview};
+
+/// The worksheet's vertex, in the 1024x768 window's centre-relative coordinates.
+pub const WORKSHEET_VERTEX: DVec4 = DVec4::new(-512.0, -384.0, 0.0, 1.0);
+/// The worksheet's light position.
+pub const WORKSHEET_LIGHT: DVec4 = DVec4::new(0.0, 0.0, 90.0, 1.0);
+
+/// The worksheet's bronze (the classic table's).
+pub fn bronze() -> Material {
+    materials::by_name("bronze").cloned().unwrap_or_default()
+}
+
+/// The worksheet's scene with modelview `mview{index}` (1..=5; other values give 5):
+/// vertex (-512, -384, 0, 1), normal (0, 0, 1), a white light at (0, 0, 90, 1) with
+/// attenuation (1, 0.0001, 0.00001), bronze, infinite viewer, and the worksheet's rules
+/// (no scene ambient, no emission). The light-model ambient keeps OpenGL's 0.2, so
+/// switching the rules to OpenGL shows what a real OpenGL prints (0.102087 for red).
+pub fn worksheet(index: usize) -> Scene {
+    let view = worksheet_modelview(index).or_else(|| worksheet_modelview(5)).unwrap_or(DMat4::IDENTITY);
+    Scene {
+        light_model: LightModel::default(),
+        lights: vec![Light {
+            ambient: DVec4::ONE,
+            diffuse: DVec4::ONE,
+            specular: DVec4::ONE,
+            position: WORKSHEET_LIGHT,
+            attenuation: [1.0, 0.0001, 0.00001],
+            placement: LightPlacement::World,
+            ..Light::gl_default(0)
+        }],
+        material: bronze(),
+        back_material: None,
+        eye_from_world: view,
+        world_from_object: DMat4::IDENTITY,
+        normal_mode: NormalMode::AsIs,
+        rules: Rules::WORKSHEET,
+        vertex: Vertex { position: WORKSHEET_VERTEX, normal: DVec3::Z },
+    }
+}
+
+/// The demo's eye and light position.
+pub const PHONG_DEMO_EYE: DVec3 = DVec3::new(-4.0, 0.0, -8.0);
+
+/// The Phong demo: a red object with ambient 0.2, diffuse 0.4, specular 0.5 and exponent
+/// 100, light and eye at (-4, 0, -8) looking at the origin, local viewer, Phong's
+/// reflection vector. The coefficients become material colours (ambient (0.2, 0, 0),
+/// diffuse (0.4, 0, 0), specular (0.5, 0.5, 0.5): a white highlight) under a white light.
+/// The vertex is the point of a radius-0.5 sphere facing the light.
+pub fn phong_demo() -> Scene {
+    let view = try_look_at(PHONG_DEMO_EYE, DVec3::ZERO, DVec3::Y).unwrap_or(DMat4::IDENTITY);
+    let facing = PHONG_DEMO_EYE.normalize();
+    Scene {
+        light_model: LightModel { local_viewer: true, ..LightModel::default() },
+        lights: vec![Light {
+            ambient: DVec4::ONE,
+            diffuse: DVec4::ONE,
+            specular: DVec4::ONE,
+            position: PHONG_DEMO_EYE.extend(1.0),
+            placement: LightPlacement::World,
+            ..Light::gl_default(0)
+        }],
+        material: Material {
+            ambient: DVec4::new(0.2, 0.0, 0.0, 1.0),
+            diffuse: DVec4::new(0.4, 0.0, 0.0, 1.0),
+            specular: DVec4::new(0.5, 0.5, 0.5, 1.0),
+            emission: DVec4::new(0.0, 0.0, 0.0, 1.0),
+            shininess: 100.0,
+        },
+        back_material: None,
+        eye_from_world: view,
+        world_from_object: DMat4::IDENTITY,
+        normal_mode: NormalMode::Normalize,
+        rules: Rules::PHONG_DEMO,
+        vertex: Vertex { position: (facing * 0.5).extend(1.0), normal: facing },
+    }
+}

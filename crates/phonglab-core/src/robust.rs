@@ -1,0 +1,180 @@
+//! Numerically robust building blocks: compensated sums, scaled lengths, zero-safe products.
+//!
+//! These implement DESIGN.md's numerics policy where single precision (or even plain
+//! double precision) breaks down while the answer is still well defined:
+//!
+//! | problem | remedy | function |
+//! |---|---|---|
+//! | `M * p` with `|p| ~ 1e18` and a cancelling translation | error-free products and sums (Ogita, Rump, Oishi 2005, *Accurate sum and dot product*, Dot2) | [`dot2`], [`transform_point`] |
+//! | `|v|^2` underflows (`1e-25` in f32) or overflows (`1e20` in f32) | divide by the largest component before squaring | [`scaled_length`], [`normalize_or_zero`] |
+//! | `0 * inf` where the infinity is an overflowed finite value or the d = 0 limit | a product is 0 when either factor is 0 | [`mul0`], [`scale0`] |
+
+use glam::{DMat4, DVec3, DVec4};
+
+use crate::real::{Real, Vec3Ops};
+
+/// Error-free sum: `a + b = s + e` exactly (Knuth's TwoSum).
+#[inline(always)]
+pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    let e = (a - (s - bb)) + (b - bb);
+    (s, e)
+}
+
+/// Error-free product: `a * b = p + e` exactly (with a fused multiply-add).
+#[inline(always)]
+pub fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    let e = a.mul_add(b, -p);
+    (p, e)
+}
+
+/// Dot product computed as if in twice the working precision, then rounded (Dot2).
+///
+/// The error is at most `eps*|result| + O(n^2 eps^2) * sum|x_i y_i|`: with `|x_i y_i| ~ 1e18`
+/// terms cancelling to a result of order 1, the absolute error is ~1e-14, where a plain
+/// f64 dot product would be off by ~100.
+#[inline]
+pub fn dot2(x: &[f64], y: &[f64]) -> f64 {
+    debug_assert_eq!(x.len(), y.len());
+    if x.is_empty() {
+        return 0.0;
+    }
+    let (mut p, mut s) = two_prod(x[0], y[0]);
+    for i in 1..x.len() {
+        let (h, r) = two_prod(x[i], y[i]);
+        let (pp, q) = two_sum(p, h);
+        p = pp;
+        s += q + r;
+    }
+    p + s
+}
+
+/// `m * p` with each row evaluated by [`dot2`], so huge cancelling terms stay exact.
+pub fn transform_point(m: &DMat4, p: DVec4) -> DVec4 {
+    let pa = p.to_array();
+    let row = |i: usize| dot2(&m.row(i).to_array(), &pa);
+    DVec4::new(row(0), row(1), row(2), row(3))
+}
+
+/// The 3x3 part of `m` times `v`, each row by [`dot2`].
+pub fn transform_vector3(m: &DMat4, v: DVec3) -> DVec3 {
+    let va = v.to_array();
+    let row = |i: usize| {
+        let r = m.row(i);
+        dot2(&[r.x, r.y, r.z], &va)
+    };
+    DVec3::new(row(0), row(1), row(2))
+}
+
+/// `|v|`, computed as `m * |v / m|` with `m` the largest component, so that neither
+/// underflow (`|v| = 1e-25`) nor overflow (`|v| = 1e20` in f32, `1e200` in f64) of `|v|^2`
+/// loses the answer. Returns 0 for the zero vector and `+inf` when a component is infinite.
+#[inline]
+pub fn scaled_length<S: Real>(v: S::V3) -> S {
+    let m = v.max_abs();
+    if m == S::ZERO || !m.is_finite() {
+        return m;
+    }
+    let u = v / m;
+    m * u.dot(u).sqrt()
+}
+
+/// `v / |v|` computed with the scaling of [`scaled_length`]; `None` for a zero or
+/// non-finite vector (the direction is undefined).
+#[inline]
+pub fn try_normalize<S: Real>(v: S::V3) -> Option<S::V3> {
+    let m = v.max_abs();
+    if m == S::ZERO || !m.is_finite() {
+        return None;
+    }
+    let u = v / m;
+    let len = u.dot(u).sqrt();
+    Some(u / len)
+}
+
+/// [`try_normalize`], with the zero vector for an undefined direction.
+#[inline]
+pub fn normalize_or_zero<S: Real>(v: S::V3) -> S::V3 {
+    try_normalize::<S>(v).unwrap_or(S::V3::ZERO)
+}
+
+/// `a * b`, but 0 whenever either factor is 0 (so `0 * inf = 0`, never NaN).
+///
+/// Every infinity the engine can meet is either an overflowed finite value (whose product
+/// with 0 is truly 0) or the attenuation limit at a zero denominator, which DESIGN.md
+/// defines as 0 where the term is 0.
+#[inline(always)]
+pub fn mul0<S: Real>(a: S, b: S) -> S {
+    if a == S::ZERO || b == S::ZERO { S::ZERO } else { a * b }
+}
+
+/// Component-wise [`mul0`] of a vector by a scalar.
+#[inline(always)]
+pub fn scale0<S: Real>(v: S::V3, k: S) -> S::V3 {
+    S::V3::new(mul0(v.x(), k), mul0(v.y(), k), mul0(v.z(), k))
+}
+
+/// Component-wise [`mul0`] of two vectors.
+#[inline(always)]
+pub fn mul0_v<S: Real>(a: S::V3, b: S::V3) -> S::V3 {
+    S::V3::new(mul0(a.x(), b.x()), mul0(a.y(), b.y()), mul0(a.z(), b.z()))
+}
+
+/// `cos(deg)` with the exact values at multiples of 90 degrees (so a 90 degree spot
+/// cutoff gives exactly 0, not 6e-17).
+pub fn cos_deg(deg: f64) -> f64 {
+    let r = deg.rem_euclid(360.0);
+    if r == 0.0 {
+        1.0
+    } else if r == 90.0 || r == 270.0 {
+        0.0
+    } else if r == 180.0 {
+        -1.0
+    } else {
+        deg.to_radians().cos()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dot2_recovers_cancelled_terms() {
+        // 1e18 + 3 - 1e18 in plain f64 loses the 3 (spacing at 1e18 is 128).
+        let x = [1e18, 3.0, -1e18];
+        let y = [1.0, 1.0, 1.0];
+        assert_eq!(x.iter().sum::<f64>(), 0.0);
+        assert_eq!(dot2(&x, &y), 3.0);
+    }
+
+    #[test]
+    fn scaled_length_survives_underflow_and_overflow_in_f32() {
+        let tiny = glam::Vec3::new(1e-25, 0.0, 1e-25);
+        assert_eq!(tiny.length(), 0.0, "plain f32 underflows");
+        let l = scaled_length::<f32>(tiny);
+        assert!((l / 1.414_213_6e-25 - 1.0).abs() < 1e-6, "{l}");
+        let huge = glam::Vec3::new(0.0, 0.0, 1e20);
+        assert!(huge.length().is_infinite(), "plain f32 overflows");
+        assert_eq!(scaled_length::<f32>(huge), 1e20);
+        let n = normalize_or_zero::<f32>(tiny);
+        assert!((n.x - std::f32::consts::FRAC_1_SQRT_2).abs() < 1e-7);
+        assert_eq!(normalize_or_zero::<f32>(glam::Vec3::ZERO), glam::Vec3::ZERO);
+    }
+
+    #[test]
+    fn mul0_never_makes_nan() {
+        assert_eq!(mul0(0.0f32, f32::INFINITY), 0.0);
+        assert_eq!(mul0(f32::INFINITY, 0.0f32), 0.0);
+        assert_eq!(mul0(-2.0f32, f32::INFINITY), f32::NEG_INFINITY);
+    }
+
+    #[test]
+    fn cos_deg_is_exact_at_right_angles() {
+        assert_eq!(cos_deg(90.0), 0.0);
+        assert_eq!(cos_deg(0.0), 1.0);
+        assert!((cos_deg(60.0) - 0.5).abs() < 1e-15);
+    }
+}

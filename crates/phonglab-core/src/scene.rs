@@ -1,0 +1,230 @@
+//! The lighting state: light model, up to 8 lights, materials, transforms, normal handling.
+//!
+//! Values are stored in `f64` exactly as the user gave them; an engine of precision `S`
+//! rounds them once when it is built (OpenGL stores them as `f32`). Defaults are OpenGL's
+//! (OpenGL 2.1 spec, tables 6.9-6.11): only light 0 has white diffuse and specular.
+
+use glam::{DMat4, DVec3, DVec4};
+
+use crate::rules::Rules;
+
+/// OpenGL's limit on simultaneous lights (`GL_MAX_LIGHTS` is at least 8).
+pub const MAX_LIGHTS: usize = 8;
+
+/// An RGBA colour (unclamped: OpenGL accepts any value, negative or above 1).
+pub type Rgba = DVec4;
+
+/// Material parameters of one face side (`glMaterial`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material {
+    /// `a_cm`, reflects ambient light. Default (0.2, 0.2, 0.2, 1).
+    pub ambient: Rgba,
+    /// `d_cm`, reflects diffuse light; its alpha is the lit colour's alpha. Default (0.8, 0.8, 0.8, 1).
+    pub diffuse: Rgba,
+    /// `s_cm`, reflects specular light. Default (0, 0, 0, 1).
+    pub specular: Rgba,
+    /// `e_cm`, light the surface emits. Default (0, 0, 0, 1).
+    pub emission: Rgba,
+    /// `s_rm`, the specular exponent, in [0, 128]. Default 0.
+    pub shininess: f64,
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Self {
+            ambient: DVec4::new(0.2, 0.2, 0.2, 1.0),
+            diffuse: DVec4::new(0.8, 0.8, 0.8, 1.0),
+            specular: DVec4::new(0.0, 0.0, 0.0, 1.0),
+            emission: DVec4::new(0.0, 0.0, 0.0, 1.0),
+            shininess: 0.0,
+        }
+    }
+}
+
+/// Which coordinate frame a light's position and spot direction were given in: the
+/// modelview current when `glLight(GL_POSITION)` was called.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub enum LightPlacement {
+    /// Set under an identity modelview: the light moves with the eye (a head lamp).
+    Eye,
+    /// Set under the view matrix: the light stays put in the world as the object turns.
+    World,
+    /// Set under the full modelview: the light turns with the object.
+    #[default]
+    Object,
+    /// Set under an explicit matrix (`light_modelview` in the glref case schema).
+    Matrix(DMat4),
+}
+
+/// One light source (`glLight`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Light {
+    /// `a_cli`. Default (0, 0, 0, 1).
+    pub ambient: Rgba,
+    /// `d_cli`. Default white for light 0, black for the others.
+    pub diffuse: Rgba,
+    /// `s_cli`. Default white for light 0, black for the others.
+    pub specular: Rgba,
+    /// `P_pli`, homogeneous: w = 0 is a directional light, otherwise positional at xyz/w.
+    /// Default (0, 0, 1, 0): a directional light shining down -z.
+    pub position: DVec4,
+    /// `s_dli`, the spot axis. Default (0, 0, -1).
+    pub spot_direction: DVec3,
+    /// `c_rli`, the spot cone's half angle in degrees: [0, 90], or 180 for no spotlight.
+    pub spot_cutoff: f64,
+    /// `s_rli`, the spot exponent, in [0, 128]. Default 0.
+    pub spot_exponent: f64,
+    /// `k_0i`, `k_1i`, `k_2i`: constant, linear and quadratic attenuation. Default (1, 0, 0).
+    pub attenuation: [f64; 3],
+    /// The frame `position` and `spot_direction` are given in.
+    pub placement: LightPlacement,
+}
+
+impl Light {
+    /// OpenGL's defaults for `GL_LIGHTi`: light 0 is white, lights 1..7 are black.
+    pub fn gl_default(index: usize) -> Self {
+        let white = DVec4::ONE;
+        let black = DVec4::new(0.0, 0.0, 0.0, 1.0);
+        let c = if index == 0 { white } else { black };
+        Self {
+            ambient: black,
+            diffuse: c,
+            specular: c,
+            position: DVec4::new(0.0, 0.0, 1.0, 0.0),
+            spot_direction: DVec3::new(0.0, 0.0, -1.0),
+            spot_cutoff: 180.0,
+            spot_exponent: 0.0,
+            attenuation: [1.0, 0.0, 0.0],
+            placement: LightPlacement::default(),
+        }
+    }
+
+    /// True when the light is directional (w = 0).
+    pub fn is_directional(&self) -> bool {
+        self.position.w == 0.0
+    }
+
+    /// True when the light is a spotlight (cutoff other than 180).
+    pub fn is_spot(&self) -> bool {
+        self.spot_cutoff != 180.0
+    }
+
+    /// True when the attenuation differs from OpenGL's default (1, 0, 0).
+    pub fn is_attenuated(&self) -> bool {
+        self.attenuation != [1.0, 0.0, 0.0]
+    }
+}
+
+/// `glLightModel` state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LightModel {
+    /// `a_cs`, the scene's ambient light. Default (0.2, 0.2, 0.2, 1).
+    pub ambient: Rgba,
+    /// `v_bs`: the viewer is at the eye (true) or infinitely far along +z (false, default).
+    pub local_viewer: bool,
+    /// `t_bs`: back faces lit with the back material and -n.
+    pub two_sided: bool,
+    /// `c_es = SEPARATE_SPECULAR_COLOR`: specular goes to the secondary colour.
+    pub separate_specular: bool,
+}
+
+impl Default for LightModel {
+    fn default() -> Self {
+        Self {
+            ambient: DVec4::new(0.2, 0.2, 0.2, 1.0),
+            local_viewer: false,
+            two_sided: false,
+            separate_specular: false,
+        }
+    }
+}
+
+/// How normals are treated after the inverse-transpose transform.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Hash)]
+pub enum NormalMode {
+    /// Used as transformed (OpenGL's default): a non-unit normal scales diffuse and specular.
+    #[default]
+    AsIs,
+    /// `GL_NORMALIZE`: divided by its length.
+    Normalize,
+    /// `GL_RESCALE_NORMAL`: scaled by the modelview's inverse scale (exact for uniform scales).
+    Rescale,
+}
+
+/// A vertex in object coordinates: the point whose colour is computed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vertex {
+    /// Homogeneous position (w = 1 for an ordinary point).
+    pub position: DVec4,
+    /// Object-space normal.
+    pub normal: DVec3,
+}
+
+impl Default for Vertex {
+    fn default() -> Self {
+        Self { position: DVec4::new(0.0, 0.0, 0.0, 1.0), normal: DVec3::Z }
+    }
+}
+
+/// Everything that decides a vertex's lit colour.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// `glLightModel` state.
+    pub light_model: LightModel,
+    /// Enabled lights, at most [`MAX_LIGHTS`]; light `i` is `GL_LIGHTi`.
+    pub lights: Vec<Light>,
+    /// Front material (and back, unless `back_material` is set).
+    pub material: Material,
+    /// Back material for two-sided lighting; `None` means the same as the front.
+    pub back_material: Option<Material>,
+    /// The camera: world to eye coordinates.
+    pub eye_from_world: DMat4,
+    /// The object's placement: object to world coordinates.
+    pub world_from_object: DMat4,
+    /// Normal handling.
+    pub normal_mode: NormalMode,
+    /// Which rule set (OpenGL, the worksheet's, the Phong demo's) and specular model.
+    pub rules: Rules,
+    /// The vertex under study.
+    pub vertex: Vertex,
+}
+
+impl Default for Scene {
+    /// OpenGL's initial state with light 0 enabled, identity transforms, a vertex at the
+    /// origin with normal +z.
+    fn default() -> Self {
+        Self {
+            light_model: LightModel::default(),
+            lights: vec![Light::gl_default(0)],
+            material: Material::default(),
+            back_material: None,
+            eye_from_world: DMat4::IDENTITY,
+            world_from_object: DMat4::IDENTITY,
+            normal_mode: NormalMode::default(),
+            rules: Rules::default(),
+            vertex: Vertex::default(),
+        }
+    }
+}
+
+impl Scene {
+    /// The modelview: object to eye coordinates.
+    pub fn eye_from_object(&self) -> DMat4 {
+        self.eye_from_world * self.world_from_object
+    }
+
+    /// The modelview that was current when light `light` was placed.
+    pub fn eye_from_light(&self, light: &Light) -> DMat4 {
+        match &light.placement {
+            LightPlacement::Eye => DMat4::IDENTITY,
+            LightPlacement::World => self.eye_from_world,
+            LightPlacement::Object => self.eye_from_object(),
+            LightPlacement::Matrix(m) => *m,
+        }
+    }
+
+    /// The material lighting the back side.
+    pub fn back(&self) -> &Material {
+        self.back_material.as_ref().unwrap_or(&self.material)
+    }
+}

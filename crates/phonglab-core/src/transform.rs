@@ -1,0 +1,145 @@
+//! Transforms: lookAt, the openFrameworks camera, the worksheet's modelviews, normal matrices.
+
+use glam::{DMat3, DMat4, DVec3};
+
+/// Builds a matrix from rows (the layout matrices are written in: numpy, the worksheet, JSON).
+pub fn mat4_from_rows(rows: [[f64; 4]; 4]) -> DMat4 {
+    DMat4::from_cols_array_2d(&rows).transpose()
+}
+
+/// The rows of a matrix.
+pub fn mat4_rows(m: &DMat4) -> [[f64; 4]; 4] {
+    m.transpose().to_cols_array_2d()
+}
+
+/// `gluLookAt(eye, centre, up)`: the view matrix `eye_from_world` of a camera at `eye`
+/// looking at `centre`. `None` when `eye == centre` or `up` is parallel to the view
+/// direction (the camera's orientation is then undefined).
+pub fn try_look_at(eye: DVec3, centre: DVec3, up: DVec3) -> Option<DMat4> {
+    if !(eye.is_finite() && centre.is_finite() && up.is_finite()) {
+        return None;
+    }
+    // gluLookAt: forward f, side s = f x up, true up u = s x f; rows s, u, -f, then -eye.
+    let f = (centre - eye).try_normalize()?;
+    let s = f.cross(up).try_normalize()?;
+    let u = s.cross(f);
+    Some(mat4_from_rows([
+        [s.x, s.y, s.z, -s.dot(eye)],
+        [u.x, u.y, u.z, -u.dot(eye)],
+        [-f.x, -f.y, -f.z, f.dot(eye)],
+        [0.0, 0.0, 0.0, 1.0],
+    ]))
+}
+
+/// The distance of openFrameworks' default camera from the screen plane for a window
+/// `height` pixels high: `(height/2) / tan(30 deg)` (a 60 degree vertical field of view).
+/// 665.10751 for 768.
+pub fn of_camera_distance(height: f64) -> f64 {
+    (height / 2.0) / 30f64.to_radians().tan()
+}
+
+/// openFrameworks' default camera for a `width` x `height` window, as the worksheet uses
+/// it: the eye on the +z axis at [`of_camera_distance`], looking down -z at the screen
+/// plane z = 0, with vertices given relative to the window centre. (openFrameworks also
+/// moves the origin to the top-left corner and flips y; the worksheet's vertex
+/// (-512, -384) is already centre-relative, so that part is left out.) `width` does not
+/// change the view matrix; it only decides the window's aspect ratio.
+pub fn of_default_camera(_width: f64, height: f64) -> DMat4 {
+    DMat4::from_translation(DVec3::new(0.0, 0.0, -of_camera_distance(height)))
+}
+
+/// The worksheet's modelviews, `mview1` to `mview5` (index 1..=5).
+///
+/// `mview1` (translate z by -665.108, the openFrameworks camera rounded as the worksheet
+/// prints it) and `mview5` are the worksheet's own. The worksheet describes `mview2..4`
+/// only as rotations; their entries did not reach this project, so these are
+/// reconstructions: the same 3-4-5 rotation (cos 0.8, sin 0.6, 36.87 degrees) that
+/// `mview5` uses, about x, y and z in turn.
+pub fn worksheet_modelview(index: usize) -> Option<DMat4> {
+    let rows = match index {
+        1 => [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, -665.108], [0.0, 0.0, 0.0, 1.0]],
+        2 => [[1.0, 0.0, 0.0, 0.0], [0.0, 0.8, -0.6, 0.0], [0.0, 0.6, 0.8, 0.0], [0.0, 0.0, 0.0, 1.0]],
+        3 => [[0.8, 0.0, 0.6, 0.0], [0.0, 1.0, 0.0, 0.0], [-0.6, 0.0, 0.8, 0.0], [0.0, 0.0, 0.0, 1.0]],
+        4 => [[0.8, -0.6, 0.0, 0.0], [0.6, 0.8, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]],
+        5 => [[1.0, 0.0, 0.0, 0.0], [0.0, 0.8, 0.6, 0.0], [0.0, -0.6, 0.8, -960.0], [0.0, 0.0, 0.0, 1.0]],
+        _ => return None,
+    };
+    Some(mat4_from_rows(rows))
+}
+
+/// The matrix that takes object-space normals to eye space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NormalMatrix {
+    /// `(M^-1)^T` of the modelview's upper 3x3 `M`; its cofactor matrix when `M` is singular.
+    pub eye_from_object: DMat3,
+    /// `GL_RESCALE_NORMAL`'s factor `1 / sqrt(m31^2 + m32^2 + m33^2)`, the `m3j` being the
+    /// third row of `M^-1` (OpenGL 2.1 section 2.11.3).
+    pub rescale: f64,
+    /// `M` is singular (det = 0): normals keep only their direction, through the cofactors.
+    pub singular: bool,
+    /// `M` preserves lengths (a rotation, possibly with reflection): `(M^-1)^T = M`.
+    pub orthonormal: bool,
+}
+
+impl NormalMatrix {
+    /// Computes the normal matrix of `eye_from_object` (the modelview) in f64.
+    pub fn new(eye_from_object: &DMat4) -> Self {
+        let m = DMat3::from_mat4(*eye_from_object);
+        let (a, b, c) = (m.x_axis, m.y_axis, m.z_axis);
+        // Columns of the cofactor matrix: M^-1 = cofactor^T / det, so (M^-1)^T = cofactor / det.
+        let cof = DMat3::from_cols(b.cross(c), c.cross(a), a.cross(b));
+        let det = a.dot(b.cross(c));
+        let singular = det == 0.0 || !det.is_finite();
+        let eye_from_object = if singular { cof } else { cof * (1.0 / det) };
+        // Third row of M^-1 = third column of (M^-1)^T.
+        let row3 = eye_from_object.z_axis;
+        let len = crate::robust::scaled_length::<f64>(row3);
+        let rescale = if len > 0.0 && len.is_finite() { 1.0 / len } else { 1.0 };
+        let mt_m = m.transpose() * m;
+        let orthonormal = (mt_m - DMat3::IDENTITY).to_cols_array().iter().all(|x| x.abs() <= 1e-12);
+        Self { eye_from_object, rescale, singular, orthonormal }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn of_camera_matches_worksheet() {
+        assert!((of_camera_distance(768.0) - 665.108).abs() < 1e-3);
+        let m = of_default_camera(1024.0, 768.0);
+        assert!((m.w_axis.z + 665.1075).abs() < 1e-4);
+    }
+
+    #[test]
+    fn normal_matrix_is_inverse_transpose() {
+        let m = DMat4::from_scale(DVec3::new(1.0, 4.0, 0.25));
+        let n = NormalMatrix::new(&m);
+        assert!((n.eye_from_object.y_axis.y - 0.25).abs() < 1e-15);
+        assert!((n.eye_from_object.z_axis.z - 4.0).abs() < 1e-15);
+        assert!(!n.singular && !n.orthonormal);
+        let r = worksheet_modelview(5).unwrap();
+        let n = NormalMatrix::new(&r);
+        assert!(n.orthonormal);
+        assert!((n.eye_from_object - DMat3::from_mat4(r)).to_cols_array().iter().all(|x| x.abs() < 1e-15));
+        assert_eq!(n.rescale, 1.0);
+    }
+
+    #[test]
+    fn singular_modelview_keeps_directions() {
+        let m = DMat4::from_scale(DVec3::new(1.0, 1.0, 0.0));
+        let n = NormalMatrix::new(&m);
+        assert!(n.singular);
+        let v = n.eye_from_object * DVec3::Z;
+        assert!(v.is_finite() && v.z > 0.0);
+    }
+
+    #[test]
+    fn look_at_refuses_degenerate_cameras() {
+        assert!(try_look_at(DVec3::ZERO, DVec3::ZERO, DVec3::Y).is_none());
+        assert!(try_look_at(DVec3::ZERO, DVec3::Y, DVec3::Y).is_none());
+        let m = try_look_at(DVec3::new(0.0, 0.0, 5.0), DVec3::ZERO, DVec3::Y).unwrap();
+        assert!((m.w_axis.z + 5.0).abs() < 1e-15);
+    }
+}
