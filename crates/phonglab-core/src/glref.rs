@@ -354,6 +354,14 @@ mod tests {
     }
 
     #[test]
+    fn numbers_parse_exactly() {
+        // serde_json's fast path is 1 ulp off here; the cases at 1e6 and 1e18 depend on exact inputs.
+        let c = parse_case(&json!({"vertex": [-1.9267785549163818, 0.1, 3.0]}), 0).unwrap();
+        assert_eq!(c.scene.vertex.position.x, -1.9267785549163818f32 as f64);
+        assert_eq!(c.scene.vertex.position.y.to_bits(), 0.1f64.to_bits());
+    }
+
+    #[test]
     fn file_shapes() {
         assert_eq!(raw_cases("[{}, {}]").unwrap().len(), 2);
         assert_eq!(raw_cases("{\"cases\": [{}], \"meta\": 1}").unwrap().len(), 1);

@@ -3,19 +3,22 @@
 
 use phonglab_core::glref::{Case, CaseColors, parse_cases};
 
-/// The public glref cases with Mesa llvmpipe's results (copied from shared/glref).
-pub fn public_cases() -> Vec<Case> {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/cases_public.json"))
-        .expect("tests/data/cases_public.json is in the repository");
-    parse_cases(&text)
-        .expect("the public case file parses")
-        .into_iter()
-        .map(|(id, c)| c.unwrap_or_else(|e| panic!("case {id}: {e}")))
-        .collect()
+/// The public glref cases with Mesa llvmpipe's results (copied from shared/glref), parsed once.
+pub fn public_cases() -> &'static [Case] {
+    static CASES: std::sync::OnceLock<Vec<Case>> = std::sync::OnceLock::new();
+    CASES.get_or_init(|| {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/cases_public.json"))
+            .expect("tests/data/cases_public.json is in the repository");
+        parse_cases(&text)
+            .expect("the public case file parses")
+            .into_iter()
+            .map(|(id, c)| c.unwrap_or_else(|e| panic!("case {id}: {e}")))
+            .collect()
+    })
 }
 
 pub fn case(id: &str) -> Case {
-    public_cases().into_iter().find(|c| c.id == id).unwrap_or_else(|| panic!("no case {id}"))
+    public_cases().iter().find(|c| c.id == id).cloned().unwrap_or_else(|| panic!("no case {id}"))
 }
 
 /// numpy.isclose: |a - b| <= atol + rtol |b|, with equal non-finite values matching.
