@@ -430,10 +430,11 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         Some(c.to_vec()),
     );
 
+    let n = lit.lights().len();
     let heading = format!(
-        "{} side, {} lights, {}, rules: {}",
+        "{} side, {n} light{}, {}, rules: {}",
         if back { "back" } else { "front" },
-        lit.lights().len(),
+        if n == 1 { "" } else { "s" },
         S::NAME,
         rules
     );

@@ -1,0 +1,182 @@
+//! The command line: `phonglab <subcommand>` works headless and never opens a window.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use anyhow::{Context, Result, bail};
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use phonglab_core::explain::{Side, explain};
+use phonglab_core::glref::{self, CaseColors};
+use phonglab_core::{Engine, EvalOptions, PowFn, Real, Scene, presets};
+
+/// phonglab: OpenGL's fixed-function vertex lighting, step by step. Without a subcommand it
+/// opens the explorer window on the worksheet's scene.
+#[derive(Parser, Debug)]
+#[command(name = "phonglab", version, about)]
+pub struct Cli {
+    /// What to do; omit to open the app.
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// The subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Evaluate glref cases (JSON) and print the lit colours as JSON.
+    Eval(EvalArgs),
+    /// Print the worked calculation of a vertex, step by step, in the worksheet's order.
+    Explain(ExplainArgs),
+}
+
+/// Floating-point precision of the engine.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum Precision {
+    /// Single precision, as OpenGL computes.
+    F32,
+    /// Double precision.
+    F64,
+}
+
+/// The power function of the specular and spot terms.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum PowArg {
+    /// The exact library pow (default).
+    Exact,
+    /// Mesa llvmpipe's exp2(e log2 x) approximation, bit-exact with Mesa 22.3.
+    Llvmpipe,
+    /// Schlick's rational approximation.
+    Schlick,
+}
+
+impl From<PowArg> for PowFn {
+    fn from(p: PowArg) -> Self {
+        match p {
+            PowArg::Exact => PowFn::Exact,
+            PowArg::Llvmpipe => PowFn::Llvmpipe,
+            PowArg::Schlick => PowFn::Schlick,
+        }
+    }
+}
+
+/// `phonglab eval`.
+#[derive(Args, Debug)]
+pub struct EvalArgs {
+    /// A JSON file of cases (a list, or {"cases": [...]}), as in shared/glref/README.md.
+    pub cases: PathBuf,
+    /// Engine precision.
+    #[arg(long, value_enum, default_value = "f32")]
+    pub precision: Precision,
+    /// Clamp the colours to [0, 1] as OpenGL does by default (otherwise unclamped).
+    #[arg(long)]
+    pub clamp: bool,
+    /// Power function for the specular and spot terms.
+    #[arg(long, value_enum, default_value = "exact")]
+    pub pow: PowArg,
+}
+
+/// `phonglab explain`.
+#[derive(Args, Debug)]
+pub struct ExplainArgs {
+    /// The worksheet's scene with modelview N (1-5). The default when no scene is given: 5.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u8).range(1..=5))]
+    pub worksheet: Option<u8>,
+    /// A ready-made scene instead: "phong-demo".
+    #[arg(long, conflicts_with = "worksheet")]
+    pub preset: Option<String>,
+    /// Engine precision.
+    #[arg(long, value_enum, default_value = "f64")]
+    pub precision: Precision,
+    /// Explain the back side (two-sided lighting).
+    #[arg(long)]
+    pub back: bool,
+    /// Print a Markdown table instead of text.
+    #[arg(long)]
+    pub markdown: bool,
+    /// Significant digits.
+    #[arg(long, default_value_t = 8, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+}
+
+/// Runs a subcommand; the exit code is 0 on success, 2 on input that cannot be used.
+pub fn run(command: Command) -> ExitCode {
+    let r = match command {
+        Command::Eval(a) => eval(&a),
+        Command::Explain(a) => explain_cmd(&a),
+    };
+    match r {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("phonglab: {e:#}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn read(path: &Path) -> Result<String> {
+    std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))
+}
+
+fn evaluate(scene: &Scene, precision: Precision, options: EvalOptions, clamp: bool) -> Result<CaseColors, String> {
+    let r = match precision {
+        Precision::F32 => glref::evaluate::<f32>(scene, options, clamp),
+        Precision::F64 => glref::evaluate::<f64>(scene, options, clamp),
+    };
+    r.map_err(|e| e.to_string())
+}
+
+/// Evaluates every case of a glref case file; prints `{"results": [...]}`.
+pub fn eval_text(text: &str, precision: Precision, options: EvalOptions, clamp: bool) -> Result<serde_json::Value> {
+    let cases = glref::parse_cases(text).context("not a case file")?;
+    let results: Vec<serde_json::Value> = cases
+        .iter()
+        .map(|(id, case)| {
+            let r = match case {
+                Ok(c) => evaluate(&c.scene, precision, options, clamp),
+                Err(e) => Err(e.to_string()),
+            };
+            glref::result_json(id, &r)
+        })
+        .collect();
+    Ok(serde_json::json!({ "results": results }))
+}
+
+fn eval(a: &EvalArgs) -> Result<()> {
+    let text = read(&a.cases)?;
+    let out = eval_text(&text, a.precision, EvalOptions { pow: a.pow.into() }, a.clamp)
+        .with_context(|| format!("{}", a.cases.display()))?;
+    println!("{}", serde_json::to_string_pretty(&out)?);
+    Ok(())
+}
+
+/// The scene `explain` works on.
+fn explain_scene(a: &ExplainArgs) -> Result<(Scene, String)> {
+    if let Some(p) = &a.preset {
+        return match p.as_str() {
+            "phong-demo" => Ok((presets::phong_demo(), "the Phong demo".into())),
+            other => bail!("unknown preset {other:?}: try phong-demo"),
+        };
+    }
+    let n = a.worksheet.unwrap_or(5) as usize;
+    Ok((presets::worksheet(n), format!("the worksheet, mview{n}")))
+}
+
+fn explain_text<S: Real>(scene: &Scene, what: &str, a: &ExplainArgs) -> Result<String> {
+    let lit = Engine::<S>::light_scene_vertex(scene)?;
+    let ex = explain(scene, &lit, if a.back { Side::Back } else { Side::Front });
+    let digits = a.digits as usize;
+    Ok(if a.markdown {
+        format!("# Worked calculation: {what}\n\n{}", ex.to_markdown(digits))
+    } else {
+        format!("Worked calculation: {what}\n{}", ex.to_text(digits))
+    })
+}
+
+fn explain_cmd(a: &ExplainArgs) -> Result<()> {
+    let (scene, what) = explain_scene(a)?;
+    let text = match a.precision {
+        Precision::F32 => explain_text::<f32>(&scene, &what, a)?,
+        Precision::F64 => explain_text::<f64>(&scene, &what, a)?,
+    };
+    print!("{text}");
+    Ok(())
+}

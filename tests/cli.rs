@@ -1,0 +1,164 @@
+//! The command line, run as a real process: `eval` and `explain`.
+
+use std::io::Write;
+use std::process::{Command, Output};
+
+fn phonglab(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_phonglab")).args(args).output().expect("the binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn temp_file(name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("phonglab-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::File::create(&p).unwrap().write_all(text.as_bytes()).unwrap();
+    p
+}
+
+fn result<'a>(out: &'a serde_json::Value, id: &str) -> &'a serde_json::Value {
+    out["results"].as_array().unwrap().iter().find(|r| r["id"] == id).unwrap_or_else(|| panic!("no result {id}"))
+}
+
+fn num(v: &serde_json::Value) -> f64 {
+    match v {
+        serde_json::Value::String(s) if s == "Infinity" => f64::INFINITY,
+        serde_json::Value::String(s) if s == "-Infinity" => f64::NEG_INFINITY,
+        serde_json::Value::String(s) if s == "NaN" => f64::NAN,
+        other => other.as_f64().unwrap(),
+    }
+}
+
+#[test]
+fn eval_prints_every_public_case_with_errors_in_place() {
+    let o = phonglab(&["eval", "tests/data/cases_public.json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(out["results"].as_array().unwrap().len(), 346);
+    // The worksheet's known value (Mesa's, with the light-model ambient 0).
+    let k = result(&out, "hard_known_bronze_lma0");
+    assert!(k["error"].is_null());
+    let front: Vec<f64> = k["front"].as_array().unwrap().iter().map(num).collect();
+    for (got, want) in front.iter().zip([0.05958709, 0.03575929, 0.01515525, 1.0]) {
+        assert!((got - want).abs() < 1e-7, "{front:?}");
+    }
+    // Refused parameters become an error of that case only.
+    let bad = result(&out, "hard_shin200_invalid");
+    assert!(bad["front"].is_null());
+    assert!(bad["error"].as_str().unwrap().contains("material.shininess"), "{bad}");
+    // Non-finite values are written as strings.
+    assert_eq!(result(&out, "hard_att_all_zero")["front"][0], "Infinity");
+    // No other case has an error or a NaN.
+    for r in out["results"].as_array().unwrap() {
+        let id = r["id"].as_str().unwrap();
+        if !id.contains("invalid") {
+            assert!(r["error"].is_null(), "{r}");
+            for k in ["front", "front_secondary", "back", "back_secondary"] {
+                assert!(r[k].as_array().unwrap().iter().all(|x| !num(x).is_nan()), "{id} {k}: {r}");
+            }
+        }
+    }
+}
+
+#[test]
+fn eval_clamps_on_request_and_takes_f64() {
+    let f = temp_file(
+        "bright.json",
+        r#"{"cases": [{"id": "b", "lights": [{}], "material": {"emission": [2, -1, 0.5]}, "normal": [0, 0, 1]}]}"#,
+    );
+    let o = phonglab(&["eval", f.to_str().unwrap(), "--clamp", "--precision", "f64"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let front: Vec<f64> = result(&out, "b")["front"].as_array().unwrap().iter().map(num).collect();
+    assert_eq!(front[0], 1.0);
+    assert_eq!(front[1], 0.0);
+    let o = phonglab(&["eval", f.to_str().unwrap()]);
+    let out: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert!(num(&result(&out, "b")["front"][0]) > 2.0, "unclamped by default");
+}
+
+#[test]
+fn eval_reports_schema_errors_per_case() {
+    let f = temp_file(
+        "mixed.json",
+        r#"[{"id": "ok"}, {"id": "broken", "normal": [0, 1]}, {"id": "cut", "lights": [{"spot_cutoff": 91}]}]"#,
+    );
+    let o = phonglab(&["eval", f.to_str().unwrap()]);
+    assert!(o.status.success());
+    let out: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert!(result(&out, "ok")["error"].is_null());
+    assert!(result(&out, "broken")["error"].as_str().unwrap().contains("normal"));
+    assert!(result(&out, "cut")["error"].as_str().unwrap().contains("[0, 90], or 180"));
+}
+
+#[test]
+fn eval_refuses_a_file_that_is_not_cases_with_exit_code_2() {
+    let f = temp_file("bad.json", "{\"cases\": [ {\"id\": 1,, } ]");
+    let o = phonglab(&["eval", f.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("not valid JSON") && stderr(&o).contains("line 1"), "{}", stderr(&o));
+    let o = phonglab(&["eval", "no/such/file.json"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("cannot read no/such/file.json"), "{}", stderr(&o));
+    let f = temp_file("shape.json", "{\"meta\": {}}");
+    let o = phonglab(&["eval", f.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("expected a list of cases"), "{}", stderr(&o));
+}
+
+/// `name = [a b c d]` lines of the explain output.
+fn explained(text: &str, name: &str) -> Vec<f64> {
+    let prefix = format!("{name} = ");
+    let line =
+        text.lines().map(str::trim).find(|l| l.starts_with(&prefix)).unwrap_or_else(|| panic!("no {name} in\n{text}"));
+    line[prefix.len()..].trim_matches(['[', ']']).split(' ').map(|x| x.parse().unwrap()).collect()
+}
+
+#[test]
+fn explain_worksheet_5_prints_the_worksheets_values() {
+    let o = phonglab(&["explain", "--worksheet", "5"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    for (name, want) in [
+        ("vertexNormal", [0.0, 0.6, 0.8, 0.0]),
+        ("vlv", [0.79220526, 0.55887606, -0.2450885, 0.0]),
+        ("vov", [0.0, 0.0, 1.0, 0.0]),
+        ("Iamb", [0.2125, 0.1275, 0.054, 0.0]),
+        ("Idif", [0.09942795, 0.05965677, 0.0252664, 0.0]),
+        ("Ispec", [0.00040551, 0.00028017, 0.00017179, 0.0]),
+        ("I", [0.05958709, 0.03575929, 0.01515525, 0.0]),
+    ] {
+        let got = explained(&text, name);
+        assert!(got.iter().zip(want).all(|(g, w)| (g - w).abs() <= 1e-7), "{name}: {got:?} vs {want:?}");
+    }
+    // In the worksheet's order.
+    let order: Vec<usize> = ["vertexNormal =", "vlv =", "vov =", "Iamb =", "Idif =", "hv =", "Ispec =", "at =", "I ="]
+        .iter()
+        .map(|k| text.find(&format!("    {k}")).unwrap_or_else(|| panic!("{k}")))
+        .collect();
+    assert!(order.windows(2).all(|w| w[0] < w[1]), "{order:?}");
+}
+
+#[test]
+fn explain_other_modelviews_markdown_and_bad_arguments() {
+    let one = stdout(&phonglab(&["explain", "--worksheet", "1"]));
+    let five = stdout(&phonglab(&["explain"]));
+    assert_ne!(explained(&one, "vlv"), explained(&five, "vlv"));
+    assert!(five.contains("mview5"), "the default is the worksheet with mview5");
+    let md = stdout(&phonglab(&["explain", "--markdown"]));
+    assert!(md.contains("| # | step | formula | value | notes |"), "{md}");
+    let demo = stdout(&phonglab(&["explain", "--preset", "phong-demo"]));
+    assert!(demo.contains("R = 2 (N . L) N - L"), "{demo}");
+    let o = phonglab(&["explain", "--worksheet", "9"]);
+    assert_eq!(o.status.code(), Some(2));
+    let o = phonglab(&["explain", "--preset", "nope"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("unknown preset"), "{}", stderr(&o));
+}
