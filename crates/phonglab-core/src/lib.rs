@@ -13,6 +13,8 @@
 //! ```
 
 pub mod breakdown;
+pub mod camera;
+pub mod document;
 pub mod error;
 pub mod explain;
 pub mod glref;
@@ -26,11 +28,15 @@ pub mod rules;
 pub mod scene;
 pub mod transform;
 pub mod validate;
+pub mod view;
 
 pub use breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerms, VertexLighting};
+pub use camera::CameraSpec;
+pub use document::{Document, DocumentError};
 pub use error::SceneError;
 pub use lighting::{Engine, EvalOptions};
 pub use pow::PowFn;
 pub use real::{Real, Vec3Ops};
 pub use rules::{RuleSet, Rules, SpecularGate, SpecularModel};
 pub use scene::{Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Rgba, Scene, Vertex};
+pub use view::{ObjectKind, Shading, View};

@@ -1,0 +1,567 @@
+//! Scene files: everything the app shows, as TOML (parsing and writing text; no file I/O).
+//!
+//! A [`Document`] is a [`Scene`] plus how its camera was chosen ([`CameraSpec`]) and a name.
+//! The file layout is the program's public format, kept apart from the in-memory types:
+//! matrices are written as rows, colours as rgb or rgba, rule sets by name, and unknown
+//! keys are refused so a typo is reported with its line and column.
+//!
+//! ```toml
+//! name = "the worksheet, mview5"
+//! rules = "worksheet"            # opengl | worksheet | phong-demo
+//! specular = "blinn-phong"       # blinn-phong | phong
+//! normals = "as-is"              # as-is | normalize | rescale
+//!
+//! [camera]
+//! kind = "worksheet"             # worksheet | look-at | openframeworks | matrix
+//! modelview = 5
+//!
+//! [material]
+//! preset = "bronze"              # optional: a classic material; the keys below override it
+//! shininess = 25.6
+//!
+//! [[lights]]
+//! position = [0, 0, 90, 1]
+//! ambient = [1, 1, 1]
+//! attenuation = [1, 0.0001, 0.00001]
+//! placement = "world"            # eye | world | object | matrix (with placement_matrix)
+//!
+//! [vertex]
+//! position = [-512, -384, 0, 1]
+//! normal = [0, 0, 1]
+//! ```
+
+use glam::{DMat4, DVec3, DVec4};
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use crate::camera::CameraSpec;
+use crate::error::SceneError;
+use crate::materials;
+use crate::rules::{RuleSet, Rules, SpecularModel};
+use crate::scene::{Light, LightModel, LightPlacement, Material, NormalMode, Scene, Vertex};
+use crate::transform::{mat4_from_rows, mat4_rows};
+use crate::view::View;
+
+/// A scene as the app holds it and files store it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Document {
+    /// A title, e.g. "the worksheet, mview5".
+    pub name: String,
+    /// How `scene.eye_from_world` was chosen.
+    pub camera: CameraSpec,
+    /// The lighting state; `eye_from_world` equals `camera.matrix()`.
+    pub scene: Scene,
+    /// The shaded view's object and shading.
+    pub view: View,
+}
+
+impl Default for Document {
+    fn default() -> Self {
+        Document::from_scene("the worksheet, mview5", CameraSpec::Worksheet(5), crate::presets::worksheet(5))
+    }
+}
+
+/// Why a scene file could not be used.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum DocumentError {
+    /// Not TOML, or not this format (the message names the line and column).
+    #[error("{0}")]
+    Syntax(String),
+    /// A value is out of range or not finite (the message names the field).
+    #[error("{0}")]
+    Invalid(#[from] SceneError),
+    /// The scene cannot be written (a non-finite number has no TOML form here).
+    #[error("cannot write the scene: {0}")]
+    Write(String),
+}
+
+impl Document {
+    /// A document for `scene`, with its view matrix replaced by `camera`'s when it has one.
+    pub fn from_scene(name: &str, camera: CameraSpec, mut scene: Scene) -> Self {
+        if let Ok(m) = camera.matrix() {
+            scene.eye_from_world = m;
+        }
+        Document { name: name.to_string(), camera, scene, view: View::default() }
+    }
+
+    /// Checks the document as the app does ([`Scene::validate_for_editing`] and the camera).
+    pub fn validate(&self) -> Result<(), SceneError> {
+        let m = self.camera.matrix()?;
+        if m != self.scene.eye_from_world {
+            return Err(SceneError::OutOfRange {
+                field: "camera".into(),
+                value: f64::NAN,
+                allowed: "the scene's view matrix must be the camera's",
+            });
+        }
+        self.view.validate()?;
+        self.scene.validate_for_editing()
+    }
+
+    /// Parses and checks a scene file.
+    pub fn from_toml(text: &str) -> Result<Document, DocumentError> {
+        let file: FileV1 =
+            toml::from_str(text).map_err(|e| DocumentError::Syntax(e.to_string().trim_end().to_string()))?;
+        let doc = file.into_document()?;
+        doc.validate()?;
+        Ok(doc)
+    }
+
+    /// Writes the document as a scene file (every value explicit, so loading it gives back
+    /// exactly this document).
+    pub fn to_toml(&self) -> Result<String, DocumentError> {
+        toml::to_string_pretty(&FileV1::from_document(self)).map_err(|e| DocumentError::Write(e.to_string()))
+    }
+}
+
+// ---------------------------------------------------------------- the file layout (v1)
+
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileV1 {
+    #[serde(default)]
+    name: String,
+    #[serde(default)]
+    rules: RuleName,
+    #[serde(default)]
+    specular: SpecularName,
+    #[serde(default)]
+    normals: NormalsName,
+    #[serde(default)]
+    light_model: LightModelFile,
+    #[serde(default)]
+    camera: CameraFile,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    object_matrix: Option<[[f64; 4]; 4]>,
+    #[serde(default)]
+    material: MaterialFile,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    back_material: Option<MaterialFile>,
+    #[serde(default)]
+    lights: Vec<LightFile>,
+    #[serde(default)]
+    vertex: VertexFile,
+    #[serde(default)]
+    view: View,
+}
+
+#[derive(Serialize, Deserialize, Default, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum RuleName {
+    #[default]
+    Opengl,
+    Worksheet,
+    PhongDemo,
+}
+
+#[derive(Serialize, Deserialize, Default, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum SpecularName {
+    #[default]
+    BlinnPhong,
+    Phong,
+}
+
+#[derive(Serialize, Deserialize, Default, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum NormalsName {
+    #[default]
+    AsIs,
+    Normalize,
+    Rescale,
+}
+
+/// A colour: rgb (alpha 1) or rgba.
+#[derive(Serialize, Deserialize, Clone, Copy)]
+#[serde(try_from = "Vec<f64>", into = "Vec<f64>")]
+struct Color(DVec4);
+
+impl TryFrom<Vec<f64>> for Color {
+    type Error = String;
+    fn try_from(v: Vec<f64>) -> Result<Self, String> {
+        match v.as_slice() {
+            [r, g, b] => Ok(Color(DVec4::new(*r, *g, *b, 1.0))),
+            [r, g, b, a] => Ok(Color(DVec4::new(*r, *g, *b, *a))),
+            _ => Err(format!("a colour has 3 or 4 numbers (rgb or rgba), not {}", v.len())),
+        }
+    }
+}
+
+impl From<Color> for Vec<f64> {
+    fn from(c: Color) -> Vec<f64> {
+        c.0.to_array().to_vec()
+    }
+}
+
+/// A homogeneous point: xyz (w = 1) or xyzw.
+#[derive(Serialize, Deserialize, Clone, Copy)]
+#[serde(try_from = "Vec<f64>", into = "Vec<f64>")]
+struct Point(DVec4);
+
+impl TryFrom<Vec<f64>> for Point {
+    type Error = String;
+    fn try_from(v: Vec<f64>) -> Result<Self, String> {
+        match v.as_slice() {
+            [x, y, z] => Ok(Point(DVec4::new(*x, *y, *z, 1.0))),
+            [x, y, z, w] => Ok(Point(DVec4::new(*x, *y, *z, *w))),
+            _ => Err(format!("a position has 3 or 4 numbers (xyz or xyzw), not {}", v.len())),
+        }
+    }
+}
+
+impl From<Point> for Vec<f64> {
+    fn from(p: Point) -> Vec<f64> {
+        p.0.to_array().to_vec()
+    }
+}
+
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LightModelFile {
+    #[serde(default = "default_scene_ambient")]
+    ambient: Color,
+    #[serde(default)]
+    local_viewer: bool,
+    #[serde(default)]
+    two_sided: bool,
+    #[serde(default)]
+    separate_specular: bool,
+}
+
+fn default_scene_ambient() -> Color {
+    Color(LightModel::default().ambient)
+}
+
+impl Default for LightModelFile {
+    fn default() -> Self {
+        Self { ambient: default_scene_ambient(), local_viewer: false, two_sided: false, separate_specular: false }
+    }
+}
+
+#[derive(Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
+enum CameraFile {
+    Worksheet { modelview: u8 },
+    LookAt { eye: [f64; 3], centre: [f64; 3], up: [f64; 3] },
+    Openframeworks { width: f64, height: f64 },
+    Matrix { rows: [[f64; 4]; 4] },
+}
+
+impl Default for CameraFile {
+    fn default() -> Self {
+        CameraFile::Matrix { rows: mat4_rows(&DMat4::IDENTITY) }
+    }
+}
+
+#[derive(Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct MaterialFile {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    preset: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    ambient: Option<Color>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    diffuse: Option<Color>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    specular: Option<Color>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    emission: Option<Color>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    shininess: Option<f64>,
+}
+
+#[derive(Serialize, Deserialize, Clone, Copy, Default, PartialEq)]
+#[serde(rename_all = "kebab-case")]
+enum PlacementName {
+    Eye,
+    World,
+    #[default]
+    Object,
+    Matrix,
+}
+
+#[derive(Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct LightFile {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    position: Option<Point>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    ambient: Option<Color>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    diffuse: Option<Color>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    specular: Option<Color>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    spot_direction: Option<[f64; 3]>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    spot_cutoff: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    spot_exponent: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    attenuation: Option<[f64; 3]>,
+    #[serde(default)]
+    placement: PlacementName,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    placement_matrix: Option<[[f64; 4]; 4]>,
+}
+
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct VertexFile {
+    position: Point,
+    normal: [f64; 3],
+}
+
+impl Default for VertexFile {
+    fn default() -> Self {
+        let v = Vertex::default();
+        Self { position: Point(v.position), normal: v.normal.to_array() }
+    }
+}
+
+fn syntax(msg: String) -> DocumentError {
+    DocumentError::Syntax(msg)
+}
+
+impl MaterialFile {
+    fn into_material(self, field: &str) -> Result<Material, DocumentError> {
+        let base = match &self.preset {
+            Some(name) => materials::by_name(name).cloned().ok_or_else(|| {
+                let names: Vec<&str> = materials::classic().iter().map(|m| m.name.as_str()).collect();
+                syntax(format!(
+                    "{field}.preset: unknown material {name:?}; the classic materials are {}",
+                    names.join(", ")
+                ))
+            })?,
+            None => Material::default(),
+        };
+        Ok(Material {
+            ambient: self.ambient.map_or(base.ambient, |c| c.0),
+            diffuse: self.diffuse.map_or(base.diffuse, |c| c.0),
+            specular: self.specular.map_or(base.specular, |c| c.0),
+            emission: self.emission.map_or(base.emission, |c| c.0),
+            shininess: self.shininess.unwrap_or(base.shininess),
+        })
+    }
+
+    fn from_material(m: &Material) -> Self {
+        Self {
+            preset: materials::name_of(m).map(str::to_string),
+            ambient: Some(Color(m.ambient)),
+            diffuse: Some(Color(m.diffuse)),
+            specular: Some(Color(m.specular)),
+            emission: Some(Color(m.emission)),
+            shininess: Some(m.shininess),
+        }
+    }
+}
+
+impl FileV1 {
+    fn into_document(self) -> Result<Document, DocumentError> {
+        let camera = match self.camera {
+            CameraFile::Worksheet { modelview } => CameraSpec::Worksheet(modelview),
+            CameraFile::LookAt { eye, centre, up } => {
+                CameraSpec::LookAt { eye: DVec3::from(eye), centre: DVec3::from(centre), up: DVec3::from(up) }
+            }
+            CameraFile::Openframeworks { width, height } => CameraSpec::OpenFrameworks { width, height },
+            CameraFile::Matrix { rows } => CameraSpec::Matrix(mat4_from_rows(rows)),
+        };
+        let eye_from_world = camera.matrix()?;
+        let mut lights = Vec::with_capacity(self.lights.len());
+        for (i, l) in self.lights.into_iter().enumerate() {
+            let d = Light::gl_default(i);
+            let placement = match (l.placement, l.placement_matrix) {
+                (PlacementName::Eye, None) => LightPlacement::Eye,
+                (PlacementName::World, None) => LightPlacement::World,
+                (PlacementName::Object, None) => LightPlacement::Object,
+                (PlacementName::Matrix, Some(rows)) => LightPlacement::Matrix(mat4_from_rows(rows)),
+                (PlacementName::Matrix, None) => {
+                    return Err(syntax(format!(
+                        "lights[{i}]: placement = \"matrix\" needs placement_matrix (4 rows of 4)"
+                    )));
+                }
+                (_, Some(_)) => {
+                    return Err(syntax(format!("lights[{i}]: placement_matrix needs placement = \"matrix\"")));
+                }
+            };
+            lights.push(Light {
+                ambient: l.ambient.map_or(d.ambient, |c| c.0),
+                diffuse: l.diffuse.map_or(d.diffuse, |c| c.0),
+                specular: l.specular.map_or(d.specular, |c| c.0),
+                position: l.position.map_or(d.position, |p| p.0),
+                spot_direction: l.spot_direction.map_or(d.spot_direction, DVec3::from),
+                spot_cutoff: l.spot_cutoff.unwrap_or(d.spot_cutoff),
+                spot_exponent: l.spot_exponent.unwrap_or(d.spot_exponent),
+                attenuation: l.attenuation.unwrap_or(d.attenuation),
+                placement,
+            });
+        }
+        let scene = Scene {
+            light_model: LightModel {
+                ambient: self.light_model.ambient.0,
+                local_viewer: self.light_model.local_viewer,
+                two_sided: self.light_model.two_sided,
+                separate_specular: self.light_model.separate_specular,
+            },
+            lights,
+            material: self.material.into_material("material")?,
+            back_material: self.back_material.map(|m| m.into_material("back_material")).transpose()?,
+            eye_from_world,
+            world_from_object: self.object_matrix.map_or(DMat4::IDENTITY, mat4_from_rows),
+            normal_mode: match self.normals {
+                NormalsName::AsIs => NormalMode::AsIs,
+                NormalsName::Normalize => NormalMode::Normalize,
+                NormalsName::Rescale => NormalMode::Rescale,
+            },
+            rules: Rules {
+                set: match self.rules {
+                    RuleName::Opengl => RuleSet::OpenGl,
+                    RuleName::Worksheet => RuleSet::Worksheet,
+                    RuleName::PhongDemo => RuleSet::PhongDemo,
+                },
+                specular: match self.specular {
+                    SpecularName::BlinnPhong => SpecularModel::BlinnPhong,
+                    SpecularName::Phong => SpecularModel::Phong,
+                },
+            },
+            vertex: Vertex { position: self.vertex.position.0, normal: DVec3::from(self.vertex.normal) },
+        };
+        Ok(Document { name: self.name, camera, scene, view: self.view })
+    }
+
+    fn from_document(doc: &Document) -> Self {
+        let s = &doc.scene;
+        FileV1 {
+            name: doc.name.clone(),
+            rules: match s.rules.set {
+                RuleSet::OpenGl => RuleName::Opengl,
+                RuleSet::Worksheet => RuleName::Worksheet,
+                RuleSet::PhongDemo => RuleName::PhongDemo,
+            },
+            specular: match s.rules.specular {
+                SpecularModel::BlinnPhong => SpecularName::BlinnPhong,
+                SpecularModel::Phong => SpecularName::Phong,
+            },
+            normals: match s.normal_mode {
+                NormalMode::AsIs => NormalsName::AsIs,
+                NormalMode::Normalize => NormalsName::Normalize,
+                NormalMode::Rescale => NormalsName::Rescale,
+            },
+            light_model: LightModelFile {
+                ambient: Color(s.light_model.ambient),
+                local_viewer: s.light_model.local_viewer,
+                two_sided: s.light_model.two_sided,
+                separate_specular: s.light_model.separate_specular,
+            },
+            camera: match &doc.camera {
+                CameraSpec::Worksheet(i) => CameraFile::Worksheet { modelview: *i },
+                CameraSpec::LookAt { eye, centre, up } => {
+                    CameraFile::LookAt { eye: eye.to_array(), centre: centre.to_array(), up: up.to_array() }
+                }
+                CameraSpec::OpenFrameworks { width, height } => {
+                    CameraFile::Openframeworks { width: *width, height: *height }
+                }
+                CameraSpec::Matrix(m) => CameraFile::Matrix { rows: mat4_rows(m) },
+            },
+            object_matrix: (s.world_from_object != DMat4::IDENTITY).then(|| mat4_rows(&s.world_from_object)),
+            material: MaterialFile::from_material(&s.material),
+            back_material: s.back_material.as_ref().map(MaterialFile::from_material),
+            lights: s
+                .lights
+                .iter()
+                .map(|l| {
+                    let (placement, placement_matrix) = match &l.placement {
+                        LightPlacement::Eye => (PlacementName::Eye, None),
+                        LightPlacement::World => (PlacementName::World, None),
+                        LightPlacement::Object => (PlacementName::Object, None),
+                        LightPlacement::Matrix(m) => (PlacementName::Matrix, Some(mat4_rows(m))),
+                    };
+                    LightFile {
+                        position: Some(Point(l.position)),
+                        ambient: Some(Color(l.ambient)),
+                        diffuse: Some(Color(l.diffuse)),
+                        specular: Some(Color(l.specular)),
+                        spot_direction: Some(l.spot_direction.to_array()),
+                        spot_cutoff: Some(l.spot_cutoff),
+                        spot_exponent: Some(l.spot_exponent),
+                        attenuation: Some(l.attenuation),
+                        placement,
+                        placement_matrix,
+                    }
+                })
+                .collect(),
+            vertex: VertexFile { position: Point(s.vertex.position), normal: s.vertex.normal.to_array() },
+            view: doc.view.clone(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_default_document_round_trips() {
+        let doc = Document::default();
+        let text = doc.to_toml().unwrap();
+        assert!(text.contains("preset = \"bronze\""), "{text}");
+        assert_eq!(Document::from_toml(&text).unwrap(), doc);
+    }
+
+    #[test]
+    fn a_short_file_takes_defaults_and_presets() {
+        let doc = Document::from_toml(
+            r#"
+            rules = "worksheet"
+            [camera]
+            kind = "openframeworks"
+            width = 1024
+            height = 768
+            [material]
+            preset = "gold"
+            shininess = 10
+            [[lights]]
+            position = [0, 0, 90]
+            [[lights]]
+            placement = "eye"
+            "#,
+        )
+        .unwrap();
+        assert_eq!(doc.scene.rules, Rules::WORKSHEET);
+        assert_eq!(doc.scene.material.ambient, materials::by_name("gold").unwrap().ambient);
+        assert_eq!(doc.scene.material.shininess, 10.0);
+        assert_eq!(doc.scene.lights[0].position, DVec4::new(0.0, 0.0, 90.0, 1.0));
+        assert_eq!(doc.scene.lights[0].diffuse, DVec4::ONE, "light 0 is white");
+        assert_eq!(doc.scene.lights[1].diffuse, DVec4::new(0.0, 0.0, 0.0, 1.0), "light 1 is black");
+        assert_eq!(doc.scene.lights[1].placement, LightPlacement::Eye);
+        assert!((doc.scene.eye_from_world.w_axis.z + 665.1075).abs() < 1e-4);
+    }
+
+    #[test]
+    fn errors_name_the_line_or_the_field() {
+        let e = Document::from_toml("rules = \"worksheet\"\nnormals = 3\n").unwrap_err();
+        assert!(e.to_string().contains("line 2"), "{e}");
+        let e = Document::from_toml("[material]\nshinyness = 3\n").unwrap_err();
+        assert!(e.to_string().contains("shinyness") && e.to_string().contains("line 2"), "{e}");
+        let e = Document::from_toml("[material]\nshininess = 300\n").unwrap_err();
+        assert_eq!(
+            e,
+            DocumentError::Invalid(SceneError::OutOfRange {
+                field: "material.shininess".into(),
+                value: 300.0,
+                allowed: "[0, 128]"
+            })
+        );
+        let e = Document::from_toml("[material]\npreset = \"unobtainium\"\n").unwrap_err();
+        assert!(e.to_string().contains("bronze"), "{e}");
+        let e = Document::from_toml("[[lights]]\nattenuation = [0, 0, 0]\nposition = [1, 2, 3]\n").unwrap_err();
+        assert!(e.to_string().contains("lights[0].attenuation"), "{e}");
+        let e = Document::from_toml("[camera]\nkind = \"look-at\"\neye = [0,0,1]\ncentre = [0,0,1]\nup = [0,1,0]\n")
+            .unwrap_err();
+        assert!(e.to_string().contains("camera.look_at"), "{e}");
+        let e = Document::from_toml("[vertex]\nposition = [1, 2]\nnormal = [0, 0, 1]\n").unwrap_err();
+        assert!(e.to_string().contains("3 or 4 numbers"), "{e}");
+        let e = Document::from_toml("[[lights]]\nplacement = \"matrix\"\n").unwrap_err();
+        assert!(e.to_string().contains("placement_matrix"), "{e}");
+    }
+}
