@@ -1,18 +1,21 @@
 //! phonglab: a desktop explorer for OpenGL's fixed-function vertex lighting, and a CLI.
 
-mod cli;
-
 use std::process::ExitCode;
 
 use clap::Parser;
+use phonglab::cli;
 
 fn main() -> ExitCode {
     let args = cli::Cli::parse();
     match args.command {
         Some(command) => cli::run(command),
-        None => {
-            eprintln!("phonglab: the explorer window is not built yet; try `phonglab --help`");
-            ExitCode::from(2)
-        }
+        None => match phonglab::app::run() {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("phonglab: cannot open the window: {e}");
+                eprintln!("(headless? the subcommands work without a display: phonglab --help)");
+                ExitCode::from(1)
+            }
+        },
     }
 }

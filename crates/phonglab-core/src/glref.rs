@@ -85,8 +85,11 @@ pub fn raw_cases(text: &str) -> Result<Vec<Value>, FileError> {
     }
 }
 
+/// Each case's id with the case, or why it does not fit the schema.
+pub type ParsedCases = Vec<(String, Result<Case, CaseError>)>;
+
 /// Parses a file: `Err` when the file is not a case file; otherwise one result per case.
-pub fn parse_cases(text: &str) -> Result<Vec<(String, Result<Case, CaseError>)>, FileError> {
+pub fn parse_cases(text: &str) -> Result<ParsedCases, FileError> {
     Ok(raw_cases(text)?
         .iter()
         .enumerate()

@@ -69,24 +69,36 @@ impl PowFn {
     }
 }
 
-/// gallivm's `lp_build_log2_polynomial`, LOG_POLY_DEGREE 4.
-const LOG2_POLY: [f32; 5] = [
+/// gallivm's `lp_build_log2_polynomial`, LOG_POLY_DEGREE 4, as the doubles gallivm
+/// lists them (it rounds them to f32 when it builds the constant vector, as [`f32s`] does).
+const LOG2_POLY: [f32; 5] = f32s([
     2.885_390_093_433_091_8,
     0.961_791_550_404_184_2,
     0.577_440_339_438_736_4,
     0.403_343_858_251_329_9,
     0.406_718_052_498_846_25,
-];
+]);
 
 /// gallivm's `lp_build_exp2_polynomial`, EXP_POLY_DEGREE 5 (c0 = 1).
-const EXP2_POLY: [f32; 6] = [
+const EXP2_POLY: [f32; 6] = f32s([
     1.0,
-    0.693_153_073_200_168_9,
+    0.693_153_073_200_169,
     0.240_153_617_044_375_4,
     0.055_826_318_053_295_67,
     0.008_989_340_090_494_664,
-    0.001_877_576_675_191_479_1,
-];
+    0.001_877_576_675_191_479,
+]);
+
+/// Rounds each coefficient to f32.
+const fn f32s<const N: usize>(c: [f64; N]) -> [f32; N] {
+    let mut out = [0.0f32; N];
+    let mut i = 0;
+    while i < N {
+        out[i] = c[i] as f32;
+        i += 1;
+    }
+    out
+}
 
 /// `lp_build_polynomial`: even and odd powers separately, fused multiply-adds.
 #[inline]

@@ -1,0 +1,265 @@
+//! The controls: lights, material, light model, vertex, camera and rules. Every widget
+//! edits a copy of the document; the caller applies it (or refuses it).
+
+use egui::{CollapsingHeader, ComboBox, Ui};
+use glam::{DMat4, DVec3, DVec4};
+use phonglab_core::transform::{mat4_from_rows, mat4_rows};
+use phonglab_core::{
+    CameraSpec, Document, Light, LightPlacement, MAX_LIGHTS, Material, NormalMode, RuleSet, SpecularModel, materials,
+};
+
+use super::state::UiState;
+use super::widgets::{color, number, slider, vec3, vec4};
+
+/// All the controls, in collapsible sections.
+pub fn controls_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
+    CollapsingHeader::new("Rules").default_open(true).show(ui, |ui| rules_ui(ui, doc));
+    CollapsingHeader::new("Lights").default_open(true).show(ui, |ui| lights_ui(ui, doc, state));
+    CollapsingHeader::new("Material").default_open(true).show(ui, |ui| material_section_ui(ui, doc));
+    CollapsingHeader::new("Light model").default_open(true).show(ui, |ui| light_model_ui(ui, doc));
+    CollapsingHeader::new("Vertex").default_open(true).show(ui, |ui| vertex_ui(ui, doc));
+    CollapsingHeader::new("Camera (modelview)").default_open(false).show(ui, |ui| camera_ui(ui, doc));
+}
+
+/// Rule set and specular model.
+pub fn rules_ui(ui: &mut Ui, doc: &mut Document) {
+    let rules = &mut doc.scene.rules;
+    ComboBox::from_label("Rule set").selected_text(rules.set.label()).show_ui(ui, |ui| {
+        for r in RuleSet::ALL {
+            ui.selectable_value(&mut rules.set, r, r.label());
+        }
+    });
+    ComboBox::from_label("Specular model").selected_text(rules.specular.label()).show_ui(ui, |ui| {
+        for m in SpecularModel::ALL {
+            ui.selectable_value(&mut rules.specular, m, m.label());
+        }
+    });
+    ui.small(match rules.set {
+        RuleSet::OpenGl => {
+            "Emission + scene ambient + every light's ambient, diffuse and specular (OpenGL 2.1, 2.14.1)."
+        }
+        RuleSet::Worksheet => {
+            "The worksheet: no scene ambient, no emission; diffuse 0 past 90 degrees, specular 0 past 90 degrees."
+        }
+        RuleSet::PhongDemo => {
+            "The Phong demo's shader: no scene ambient, no emission, pow(max(R.V, 0), e) with no other gate."
+        }
+    });
+}
+
+fn placement_label(p: &LightPlacement) -> &'static str {
+    match p {
+        LightPlacement::Eye => "the eye (moves with the camera)",
+        LightPlacement::World => "the world",
+        LightPlacement::Object => "the object (turns with it)",
+        LightPlacement::Matrix(_) => "a typed matrix",
+    }
+}
+
+fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
+    let lights = &mut doc.scene.lights;
+    // The buttons come first, in their own id scope, so their ids do not move when a
+    // tab is added (a click aimed at the last frame's button would miss).
+    ui.push_id("light buttons", |ui| {
+        ui.horizontal(|ui| {
+            if ui.add_enabled(lights.len() < MAX_LIGHTS, egui::Button::new("Add light")).clicked() {
+                let mut l = Light::gl_default(lights.len());
+                // A visible default: a white directional light from the upper right.
+                l.diffuse = DVec4::ONE;
+                l.specular = DVec4::ONE;
+                l.position = DVec4::new(1.0, 1.0, 1.0, 0.0);
+                lights.push(l);
+                state.selected_light = lights.len() - 1;
+            }
+            if ui.add_enabled(!lights.is_empty(), egui::Button::new("Remove light")).clicked() {
+                let i = state.selected_light.min(lights.len() - 1);
+                lights.remove(i);
+                state.selected_light = i.saturating_sub(1);
+            }
+            ui.small(format!("{} of {MAX_LIGHTS}", lights.len()));
+        });
+    });
+    ui.horizontal_wrapped(|ui| {
+        for i in 0..lights.len() {
+            ui.selectable_value(&mut state.selected_light, i, format!("Light {i}"));
+        }
+    });
+    if lights.is_empty() {
+        ui.label("No lights: only emission and the scene ambient remain.");
+        return;
+    }
+    let i = state.selected_light.min(lights.len() - 1);
+    let l = &mut lights[i];
+    ui.separator();
+
+    let mut directional = l.position.w == 0.0;
+    if ui.checkbox(&mut directional, "Directional (w = 0)").changed() {
+        l.position.w = if directional { 0.0 } else { 1.0 };
+    }
+    slider(ui, "Light x", &mut l.position.x, -2000.0..=2000.0, true);
+    slider(ui, "Light y", &mut l.position.y, -2000.0..=2000.0, true);
+    slider(ui, "Light z", &mut l.position.z, -2000.0..=2000.0, true);
+    ComboBox::from_label("Light fixed to").selected_text(placement_label(&l.placement)).show_ui(ui, |ui| {
+        for p in [LightPlacement::Eye, LightPlacement::World, LightPlacement::Object] {
+            let label = placement_label(&p);
+            ui.selectable_value(&mut l.placement, p, label);
+        }
+    });
+
+    color(ui, "Light ambient", &mut l.ambient, false);
+    color(ui, "Light diffuse", &mut l.diffuse, false);
+    color(ui, "Light specular", &mut l.specular, false);
+
+    ui.add_enabled_ui(!directional, |ui| {
+        slider(ui, "Constant attenuation", &mut l.attenuation[0], 0.0..=10.0, true);
+        slider(ui, "Linear attenuation", &mut l.attenuation[1], 0.0..=1.0, true);
+        slider(ui, "Quadratic attenuation", &mut l.attenuation[2], 0.0..=0.1, true);
+    });
+    if directional {
+        ui.small("Attenuation applies to positional lights only.");
+    }
+
+    let mut spot = l.is_spot();
+    if ui.checkbox(&mut spot, "Spotlight").changed() {
+        l.spot_cutoff = if spot { 30.0 } else { 180.0 };
+    }
+    if spot {
+        vec3(ui, "Spot direction", &mut l.spot_direction, 0.01);
+        slider(ui, "Spot cutoff", &mut l.spot_cutoff, 0.0..=90.0, false);
+        slider(ui, "Spot exponent", &mut l.spot_exponent, 0.0..=128.0, false);
+    }
+}
+
+fn material_ui(ui: &mut Ui, m: &mut Material, prefix: &str) {
+    let current = materials::name_of(m).unwrap_or("custom");
+    ComboBox::from_label(format!("{prefix}preset")).selected_text(current).show_ui(ui, |ui| {
+        for named in materials::classic() {
+            if ui.selectable_label(current == named.name, &named.name).clicked() {
+                *m = named.material.clone();
+            }
+        }
+    });
+    color(ui, &format!("{prefix}ambient"), &mut m.ambient, false);
+    color(ui, &format!("{prefix}diffuse"), &mut m.diffuse, true);
+    color(ui, &format!("{prefix}specular"), &mut m.specular, false);
+    color(ui, &format!("{prefix}emission"), &mut m.emission, false);
+    slider(ui, &format!("{prefix}shininess"), &mut m.shininess, 0.0..=128.0, false);
+}
+
+fn material_section_ui(ui: &mut Ui, doc: &mut Document) {
+    material_ui(ui, &mut doc.scene.material, "Material ");
+    if doc.scene.light_model.two_sided {
+        let mut separate = doc.scene.back_material.is_some();
+        if ui.checkbox(&mut separate, "Separate back material").changed() {
+            doc.scene.back_material = separate.then(|| doc.scene.material.clone());
+        }
+        if let Some(b) = &mut doc.scene.back_material {
+            material_ui(ui, b, "Back ");
+        }
+    }
+}
+
+fn light_model_ui(ui: &mut Ui, doc: &mut Document) {
+    let lm = &mut doc.scene.light_model;
+    color(ui, "Scene ambient", &mut lm.ambient, false);
+    ui.checkbox(&mut lm.local_viewer, "Local viewer");
+    ui.checkbox(&mut lm.two_sided, "Two-sided lighting");
+    ui.checkbox(&mut lm.separate_specular, "Separate specular colour");
+    let label = |m: NormalMode| match m {
+        NormalMode::AsIs => "as transformed",
+        NormalMode::Normalize => "GL_NORMALIZE",
+        NormalMode::Rescale => "GL_RESCALE_NORMAL",
+    };
+    let nm = &mut doc.scene.normal_mode;
+    ComboBox::from_label("Normals").selected_text(label(*nm)).show_ui(ui, |ui| {
+        for m in [NormalMode::AsIs, NormalMode::Normalize, NormalMode::Rescale] {
+            ui.selectable_value(nm, m, label(m));
+        }
+    });
+}
+
+fn vertex_ui(ui: &mut Ui, doc: &mut Document) {
+    let v = &mut doc.scene.vertex;
+    vec4(ui, "Vertex", &mut v.position, 1.0);
+    vec3(ui, "Normal", &mut v.normal, 0.01);
+    if ui.button("Normalise the normal").clicked()
+        && let Some(n) = v.normal.try_normalize()
+    {
+        v.normal = n;
+    }
+}
+
+fn camera_ui(ui: &mut Ui, doc: &mut Document) {
+    let kinds = [
+        CameraSpec::Worksheet(5),
+        CameraSpec::LookAt { eye: DVec3::new(0.0, 0.0, 5.0), centre: DVec3::ZERO, up: DVec3::Y },
+        CameraSpec::OpenFrameworks { width: 1024.0, height: 768.0 },
+        CameraSpec::Matrix(doc.scene.eye_from_world),
+    ];
+    let current = doc.camera.kind_label();
+    ComboBox::from_label("Camera").selected_text(current).show_ui(ui, |ui| {
+        for k in kinds {
+            if ui.selectable_label(current == k.kind_label(), k.kind_label()).clicked() && current != k.kind_label() {
+                doc.camera = k;
+            }
+        }
+    });
+    match &mut doc.camera {
+        CameraSpec::Worksheet(i) => {
+            ui.horizontal(|ui| {
+                for k in 1..=5u8 {
+                    ui.radio_value(i, k, format!("mview{k}"));
+                }
+            });
+            if *i != 1 && *i != 5 {
+                ui.small("mview2..4: the worksheet calls them rotations; these are reconstructions (3-4-5 rotations about x, y, z).");
+            }
+        }
+        CameraSpec::LookAt { eye, centre, up } => {
+            vec3(ui, "Eye", eye, 0.05);
+            vec3(ui, "Centre", centre, 0.05);
+            vec3(ui, "Up", up, 0.05);
+        }
+        CameraSpec::OpenFrameworks { width, height } => {
+            number(ui, "Window width", width, 1.0);
+            number(ui, "Window height", height, 1.0);
+            ui.small(format!(
+                "Eye distance (H/2)/tan(30 deg) = {:.3}",
+                phonglab_core::transform::of_camera_distance(*height)
+            ));
+        }
+        CameraSpec::Matrix(m) => matrix_ui(ui, m),
+    }
+    ui.separator();
+    ui.label("Object placement (world from object)");
+    matrix_ui_named(ui, &mut doc.scene.world_from_object, "Object");
+}
+
+fn matrix_ui(ui: &mut Ui, m: &mut DMat4) {
+    matrix_ui_named(ui, m, "M");
+}
+
+/// A 4x4 grid of number fields, each named "{name} row r" + "column c" for assistive technology.
+fn matrix_ui_named(ui: &mut Ui, m: &mut DMat4, name: &str) {
+    let mut rows = mat4_rows(m);
+    let mut changed = false;
+    egui::Grid::new(format!("{name} matrix")).show(ui, |ui| {
+        ui.label("");
+        let cols: Vec<egui::Id> = (0..4).map(|c| ui.small(format!("column {c}")).id).collect();
+        ui.end_row();
+        for (r, row) in rows.iter_mut().enumerate() {
+            let rl = ui.small(format!("{name} row {r}")).id;
+            for (c, x) in row.iter_mut().enumerate() {
+                changed |= ui
+                    .add(egui::DragValue::new(x).speed(0.01).max_decimals(6))
+                    .labelled_by(rl)
+                    .labelled_by(cols[c])
+                    .changed();
+            }
+            ui.end_row();
+        }
+    });
+    if changed {
+        *m = mat4_from_rows(rows);
+    }
+}

@@ -1,0 +1,78 @@
+//! Keyboard shortcuts: one table for the handler and the help overlay.
+
+use egui::{Key, Modifiers, Ui};
+
+/// What a shortcut does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Action {
+    /// Open or close this help.
+    Help,
+    /// Toggle the local viewer.
+    LocalViewer,
+    /// Next classic material.
+    NextMaterial,
+    /// Previous classic material.
+    PreviousMaterial,
+    /// Next worksheet modelview (mview1..5).
+    NextModelview,
+    /// Blinn-Phong <-> Phong.
+    SpecularModel,
+    /// Next rule set.
+    NextRuleSet,
+    /// Next normal mode.
+    NextNormals,
+    /// Two-sided lighting on/off.
+    TwoSided,
+    /// f32 <-> f64.
+    Precision,
+    /// Back to the worksheet.
+    Reset,
+}
+
+/// (modifiers, key, shown as, action, description).
+pub const SHORTCUTS: &[(Modifiers, Key, &str, Action, &str)] = &[
+    (Modifiers::NONE, Key::F1, "F1", Action::Help, "show or hide this help"),
+    (Modifiers::NONE, Key::Questionmark, "?", Action::Help, "show or hide this help"),
+    (Modifiers::NONE, Key::L, "L", Action::LocalViewer, "toggle the local viewer"),
+    (Modifiers::NONE, Key::M, "M", Action::NextMaterial, "next classic material"),
+    (Modifiers::SHIFT, Key::M, "Shift+M", Action::PreviousMaterial, "previous classic material"),
+    (Modifiers::NONE, Key::V, "V", Action::NextModelview, "next worksheet modelview (mview1..5)"),
+    (Modifiers::NONE, Key::B, "B", Action::SpecularModel, "Blinn-Phong / Phong specular"),
+    (Modifiers::NONE, Key::G, "G", Action::NextRuleSet, "next rule set (OpenGL, worksheet, Phong demo)"),
+    (Modifiers::NONE, Key::N, "N", Action::NextNormals, "next normal mode (as is, normalize, rescale)"),
+    (Modifiers::NONE, Key::W, "W", Action::TwoSided, "two-sided lighting on/off"),
+    (Modifiers::NONE, Key::P, "P", Action::Precision, "f32 / f64 evaluation"),
+    (Modifiers::CTRL, Key::R, "Ctrl+R", Action::Reset, "reset to the worksheet"),
+];
+
+/// The actions whose keys were pressed this frame (none while a text field has focus).
+pub fn pressed(ctx: &egui::Context) -> Vec<Action> {
+    if ctx.egui_wants_keyboard_input() {
+        return Vec::new();
+    }
+    ctx.input_mut(|i| {
+        let mut out = Vec::new();
+        // Most specific first, so Shift+M is not also taken as M.
+        let mut ordered: Vec<_> = SHORTCUTS.iter().collect();
+        ordered.sort_by_key(|(m, ..)| std::cmp::Reverse(m.shift as u8 + m.ctrl as u8 + m.command as u8));
+        for (m, k, _, a, _) in ordered {
+            if i.consume_key(*m, *k) && !out.contains(a) {
+                out.push(*a);
+            }
+        }
+        out
+    })
+}
+
+/// The overlay's contents.
+pub fn help_ui(ui: &mut Ui) {
+    egui::Grid::new("shortcuts").striped(true).show(ui, |ui| {
+        for (_, _, shown, _, what) in SHORTCUTS {
+            ui.monospace(*shown);
+            ui.label(*what);
+            ui.end_row();
+        }
+    });
+    ui.separator();
+    ui.label("Drag the vector plot to orbit it. Every field takes typed values: out-of-range ones are refused with a message and the scene keeps its last valid value.");
+}

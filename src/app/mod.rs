@@ -1,0 +1,217 @@
+//! The explorer window: controls on the left, the worked calculation on the right, the
+//! colour and the vector plot in the middle. `app_ui` draws everything from an
+//! [`AppState`] and takes `&mut egui::Ui`, so tests drive it headless.
+
+pub mod calculation;
+pub mod controls;
+pub mod help;
+pub mod palette;
+pub mod result;
+pub mod state;
+pub mod vector_plot;
+pub mod widgets;
+
+use egui::Ui;
+use phonglab_core::{CameraSpec, NormalMode, RuleSet, SpecularModel, materials};
+
+pub use state::AppState;
+use state::{Message, Precision, preset_documents};
+
+/// Applies one keyboard shortcut.
+fn apply_action(state: &mut AppState, action: help::Action) {
+    use help::Action as A;
+    let mut c = state.doc.clone();
+    match action {
+        A::Help => {
+            state.ui.show_help = !state.ui.show_help;
+            return;
+        }
+        A::Reset => {
+            state.reset_to_worksheet();
+            return;
+        }
+        A::Precision => {
+            state.ui.precision = match state.ui.precision {
+                Precision::F32 => Precision::F64,
+                Precision::F64 => Precision::F32,
+            };
+            return;
+        }
+        A::LocalViewer => c.scene.light_model.local_viewer = !c.scene.light_model.local_viewer,
+        A::TwoSided => c.scene.light_model.two_sided = !c.scene.light_model.two_sided,
+        A::NextMaterial | A::PreviousMaterial => {
+            let table = materials::classic();
+            let n = table.len();
+            let now = table.iter().position(|m| m.material == c.scene.material);
+            let next = match (now, action == A::NextMaterial) {
+                (Some(i), true) => (i + 1) % n,
+                (Some(i), false) => (i + n - 1) % n,
+                (None, true) => 0,
+                (None, false) => n - 1,
+            };
+            c.scene.material = table[next].material.clone();
+        }
+        A::NextModelview => {
+            c.camera = match c.camera {
+                CameraSpec::Worksheet(k) => CameraSpec::Worksheet(k % 5 + 1),
+                _ => CameraSpec::Worksheet(1),
+            }
+        }
+        A::SpecularModel => {
+            c.scene.rules.specular = match c.scene.rules.specular {
+                SpecularModel::BlinnPhong => SpecularModel::Phong,
+                SpecularModel::Phong => SpecularModel::BlinnPhong,
+            }
+        }
+        A::NextRuleSet => {
+            let i = RuleSet::ALL.iter().position(|r| *r == c.scene.rules.set).unwrap_or(0);
+            c.scene.rules.set = RuleSet::ALL[(i + 1) % RuleSet::ALL.len()];
+        }
+        A::NextNormals => {
+            c.scene.normal_mode = match c.scene.normal_mode {
+                NormalMode::AsIs => NormalMode::Normalize,
+                NormalMode::Normalize => NormalMode::Rescale,
+                NormalMode::Rescale => NormalMode::AsIs,
+            }
+        }
+    }
+    state.apply(c);
+}
+
+fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
+    ui.horizontal_wrapped(|ui| {
+        ui.strong("phonglab");
+        ui.separator();
+        if ui.button("Reset to worksheet").on_hover_text("Ctrl+R").clicked() {
+            state.reset_to_worksheet();
+        }
+        ui.menu_button("Presets", |ui| {
+            for (name, doc) in preset_documents() {
+                if ui.button(&name).clicked() {
+                    state.load(doc, &name);
+                    ui.close();
+                }
+            }
+        });
+        ui.separator();
+        ui.label("Precision:");
+        ui.radio_value(&mut state.ui.precision, Precision::F32, "f32");
+        ui.radio_value(&mut state.ui.precision, Precision::F64, "f64");
+        egui::ComboBox::from_label("pow").selected_text(state.ui.pow.label()).show_ui(ui, |ui| {
+            for p in phonglab_core::PowFn::ALL {
+                ui.selectable_value(&mut state.ui.pow, p, p.label());
+            }
+        });
+        ui.separator();
+        if ui.button("Help (F1)").clicked() {
+            state.ui.show_help = !state.ui.show_help;
+        }
+        ui.label(egui::RichText::new(&state.doc.name).weak());
+    });
+}
+
+/// The whole explorer UI.
+pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
+    for a in help::pressed(ui.ctx()) {
+        apply_action(state, a);
+    }
+
+    egui::Panel::top("top bar").show(ui, |ui| top_bar_ui(ui, state));
+
+    egui::Panel::left("controls").resizable(true).default_size(380.0).min_size(280.0).show(ui, |ui| {
+        egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
+            let mut candidate = state.doc.clone();
+            controls::controls_ui(ui, &mut candidate, &mut state.ui);
+            state.apply(candidate);
+        });
+    });
+
+    let eval = match state.evaluate() {
+        Ok(e) => e,
+        Err(e) => {
+            // The document is validated on every edit, so this is not expected; say so and
+            // fall back to the worksheet rather than panic.
+            state.message =
+                Some(Message::Refused(format!("Could not evaluate the scene ({e}); back to the worksheet.")));
+            state.doc = Default::default();
+            match state.evaluate() {
+                Ok(e) => e,
+                Err(_) => return,
+            }
+        }
+    };
+
+    egui::Panel::right("calculation").resizable(true).default_size(430.0).min_size(300.0).show(ui, |ui| {
+        let two_sided = state.doc.scene.light_model.two_sided;
+        calculation::calculation_ui(ui, &eval.explanation, &mut state.ui.side, two_sided);
+    });
+
+    egui::CentralPanel::default().show(ui, |ui| {
+        result::result_ui(ui, &eval, state.doc.scene.light_model.separate_specular, &state.message);
+        ui.separator();
+        vector_plot::vector_plot_ui(ui, &mut state.ui.orbit, &eval, state.doc.scene.rules.specular);
+    });
+
+    if state.ui.show_help {
+        let mut open = true;
+        egui::Window::new("Keyboard shortcuts")
+            .open(&mut open)
+            .collapsible(false)
+            .resizable(false)
+            .show(ui.ctx(), help::help_ui);
+        state.ui.show_help = open;
+    }
+}
+
+/// The key the document is persisted under.
+const DOCUMENT_KEY: &str = "phonglab.document.toml";
+
+/// The eframe application.
+pub struct PhongLabApp {
+    state: AppState,
+}
+
+impl PhongLabApp {
+    /// Restores the last session's document when there is one and it loads; otherwise
+    /// starts on the worksheet, saying why.
+    pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
+        let mut state = AppState::worksheet();
+        if let Some(storage) = cc.storage
+            && let Some(text) = storage.get_string(DOCUMENT_KEY)
+        {
+            match phonglab_core::Document::from_toml(&text) {
+                Ok(doc) => state.doc = doc,
+                Err(e) => {
+                    state.message = Some(Message::Info(format!(
+                        "The last session could not be restored ({e}); starting on the worksheet."
+                    )))
+                }
+            }
+        }
+        Self { state }
+    }
+}
+
+impl eframe::App for PhongLabApp {
+    fn ui(&mut self, ui: &mut Ui, _frame: &mut eframe::Frame) {
+        app_ui(ui, &mut self.state);
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        if let Ok(text) = self.state.doc.to_toml() {
+            storage.set_string(DOCUMENT_KEY, text);
+        }
+    }
+}
+
+/// Opens the window.
+pub fn run() -> eframe::Result {
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title("phonglab")
+            .with_inner_size([1440.0, 900.0])
+            .with_min_inner_size([900.0, 600.0]),
+        ..Default::default()
+    };
+    eframe::run_native("phonglab", options, Box::new(|cc| Ok(Box::new(PhongLabApp::new(cc)))))
+}

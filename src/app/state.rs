@@ -1,0 +1,300 @@
+//! The app's state: the last valid document, UI choices, and the message of the last refusal.
+//!
+//! Data flows one way: widgets edit a copy of the [`Document`]; [`AppState::apply`] keeps
+//! it if it is valid (or refuses it with a message, keeping the last valid one); the core
+//! evaluates it ([`Evaluated`]); panels draw the result.
+
+use glam::DVec3;
+use phonglab_core::breakdown::VertexLighting;
+use phonglab_core::explain::{Explanation, Side, explain};
+use phonglab_core::{CameraSpec, Document, Engine, EvalOptions, Limit, PowFn, Real, SceneError, Vec3Ops, presets};
+
+/// Engine precision shown in the app.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Precision {
+    /// Single precision, as OpenGL computes.
+    F32,
+    /// Double precision.
+    #[default]
+    F64,
+}
+
+/// What the last message says.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Message {
+    /// An edit was refused; the scene kept its last valid value.
+    Refused(String),
+    /// Something worth knowing (a preset chosen, a file loaded).
+    Info(String),
+}
+
+/// Orbit of the vector plot: yaw about y, then pitch about x, in degrees.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Orbit {
+    /// Degrees about the eye-space y axis.
+    pub yaw: f64,
+    /// Degrees about the x axis.
+    pub pitch: f64,
+}
+
+impl Orbit {
+    /// Looking down -z: x across, y up.
+    pub const XY: Orbit = Orbit { yaw: 0.0, pitch: 0.0 };
+    /// Looking down from +y: x across, -z up the screen.
+    pub const XZ: Orbit = Orbit { yaw: 0.0, pitch: 90.0 };
+    /// Looking from +x: z across, y up.
+    pub const ZY: Orbit = Orbit { yaw: 90.0, pitch: 0.0 };
+    /// A three-quarter view.
+    pub const PERSPECTIVE: Orbit = Orbit { yaw: 35.0, pitch: 20.0 };
+}
+
+/// UI choices that are not part of the scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct UiState {
+    /// The light whose controls are shown.
+    pub selected_light: usize,
+    /// Which side the calculation explains.
+    pub side: Side,
+    /// The help overlay is open.
+    pub show_help: bool,
+    /// The vector plot's orbit.
+    pub orbit: Orbit,
+    /// Engine precision.
+    pub precision: Precision,
+    /// The power function.
+    pub pow: PowFn,
+    /// Show colours clamped (as OpenGL delivers them) in the swatch; numbers show both.
+    pub clamp: bool,
+}
+
+impl Default for UiState {
+    fn default() -> Self {
+        Self {
+            selected_light: 0,
+            side: Side::Front,
+            show_help: false,
+            orbit: Orbit::PERSPECTIVE,
+            precision: Precision::F64,
+            pow: PowFn::Exact,
+            clamp: true,
+        }
+    }
+}
+
+/// The whole app state.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct AppState {
+    /// The last valid document.
+    pub doc: Document,
+    /// UI choices.
+    pub ui: UiState,
+    /// The last refusal or notice.
+    pub message: Option<Message>,
+}
+
+/// The colours of one side, as f64.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SideColors {
+    /// Primary, unclamped.
+    pub primary: [f64; 4],
+    /// Secondary, unclamped.
+    pub secondary: [f64; 4],
+    /// The colour sum clamped to [0, 1] (what a fixed-function fragment shows).
+    pub shown: [f64; 4],
+}
+
+/// One light's vectors for the plot, in eye space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightVectors {
+    /// GL_LIGHTi.
+    pub index: usize,
+    /// L (zero when undefined).
+    pub l: DVec3,
+    /// H (zero when undefined).
+    pub h: DVec3,
+    /// R (zero when undefined).
+    pub r: DVec3,
+    /// The spot axis when a spotlight.
+    pub spot: Option<DVec3>,
+}
+
+/// Everything the panels draw, computed once per frame from the document.
+#[derive(Clone, Debug)]
+pub struct Evaluated {
+    /// Front side colours.
+    pub front: SideColors,
+    /// Back side colours (two-sided lighting only).
+    pub back: Option<SideColors>,
+    /// The worked calculation of the chosen side.
+    pub explanation: Explanation,
+    /// N as used (front side).
+    pub n: DVec3,
+    /// V.
+    pub v: DVec3,
+    /// Per light.
+    pub lights: Vec<LightVectors>,
+    /// Limits taken, with the light they concern.
+    pub limits: Vec<(Option<usize>, Limit)>,
+}
+
+fn d3<S: Real>(v: S::V3) -> DVec3 {
+    v.to_dvec3()
+}
+
+fn side_colors<S: Real>(c: &phonglab_core::SideColor<S>) -> SideColors {
+    let sum = c.sum();
+    SideColors {
+        primary: c.primary.map(S::to_f64),
+        secondary: c.secondary.map(S::to_f64),
+        shown: sum.map(|x| x.to_f64().clamp(0.0, 1.0)),
+    }
+}
+
+fn evaluated<S: Real>(doc: &Document, lit: &VertexLighting<S>, side: Side) -> Evaluated {
+    let two_sided = doc.scene.light_model.two_sided;
+    Evaluated {
+        front: side_colors(&lit.front),
+        back: two_sided.then(|| side_colors(&lit.back)),
+        explanation: explain(&doc.scene, lit, if two_sided { side } else { Side::Front }),
+        n: d3::<S>(lit.normal_in_eye),
+        v: d3::<S>(lit.v),
+        lights: lit
+            .lights()
+            .iter()
+            .map(|t| LightVectors {
+                index: t.index,
+                l: d3::<S>(t.l),
+                h: d3::<S>(t.h),
+                r: d3::<S>(t.r),
+                spot: t.spot.active.then(|| d3::<S>(t.spot.dir_in_eye)),
+            })
+            .collect(),
+        limits: lit.all_limits(),
+    }
+}
+
+impl AppState {
+    /// Starts on the worksheet's scene (modelview 5).
+    pub fn worksheet() -> Self {
+        Self::default()
+    }
+
+    /// Evaluates the document with the chosen precision and power function.
+    pub fn evaluate(&self) -> Result<Evaluated, SceneError> {
+        let options = EvalOptions { pow: self.ui.pow };
+        let doc = &self.doc;
+        Ok(match self.ui.precision {
+            Precision::F32 => evaluated(
+                doc,
+                &Engine::<f32>::with_options(&doc.scene, options)?.light(&doc.scene.vertex),
+                self.ui.side,
+            ),
+            Precision::F64 => evaluated(
+                doc,
+                &Engine::<f64>::with_options(&doc.scene, options)?.light(&doc.scene.vertex),
+                self.ui.side,
+            ),
+        })
+    }
+
+    /// Keeps `candidate` if it is valid; otherwise refuses it with a message naming the
+    /// field and the allowed range, and keeps the last valid document. Returns whether it
+    /// was kept.
+    pub fn apply(&mut self, mut candidate: Document) -> bool {
+        if candidate == self.doc {
+            return true;
+        }
+        let checked = candidate.camera.matrix().and_then(|m| {
+            candidate.scene.eye_from_world = m;
+            candidate.validate()
+        });
+        match checked {
+            Ok(()) => {
+                self.doc = candidate;
+                self.ui.selected_light = self.ui.selected_light.min(self.doc.scene.lights.len().saturating_sub(1));
+                if matches!(self.message, Some(Message::Refused(_))) {
+                    self.message = None;
+                }
+                true
+            }
+            Err(e) => {
+                self.message = Some(Message::Refused(format!("Refused: {e}. The scene keeps its last valid value.")));
+                false
+            }
+        }
+    }
+
+    /// Back to the start: the worksheet with modelview 5 (UI choices kept).
+    pub fn reset_to_worksheet(&mut self) {
+        self.doc = Document::default();
+        self.ui.selected_light = 0;
+        self.message = Some(Message::Info("Reset to the worksheet (mview5).".into()));
+    }
+
+    /// Loads a ready-made document.
+    pub fn load(&mut self, doc: Document, what: &str) {
+        self.doc = doc;
+        self.ui.selected_light = 0;
+        self.message = Some(Message::Info(format!("Loaded {what}.")));
+    }
+}
+
+/// The ready-made scenes of the Presets menu.
+pub fn preset_documents() -> Vec<(String, Document)> {
+    let mut v: Vec<(String, Document)> = (1..=5u8)
+        .map(|k| {
+            let name = format!("Worksheet, mview{k}");
+            (name.clone(), Document::from_scene(&name, CameraSpec::Worksheet(k), presets::worksheet(k as usize)))
+        })
+        .collect();
+    let demo = presets::phong_demo();
+    v.push((
+        "Phong demo".into(),
+        Document::from_scene(
+            "the Phong demo",
+            CameraSpec::LookAt { eye: presets::PHONG_DEMO_EYE, centre: DVec3::ZERO, up: DVec3::Y },
+            demo,
+        ),
+    ));
+    v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn refusing_keeps_the_last_valid_document() {
+        let mut s = AppState::worksheet();
+        let before = s.doc.clone();
+        let mut c = s.doc.clone();
+        c.scene.material.shininess = 200.0;
+        assert!(!s.apply(c));
+        assert_eq!(s.doc, before);
+        assert!(
+            matches!(&s.message, Some(Message::Refused(m)) if m.contains("material.shininess") && m.contains("[0, 128]"))
+        );
+        let mut c = s.doc.clone();
+        c.scene.material.shininess = 100.0;
+        assert!(s.apply(c));
+        assert_eq!(s.doc.scene.material.shininess, 100.0);
+        assert_eq!(s.message, None, "a good edit clears the refusal");
+    }
+
+    #[test]
+    fn the_camera_decides_the_view_matrix() {
+        let mut s = AppState::worksheet();
+        let mut c = s.doc.clone();
+        c.camera = CameraSpec::Worksheet(1);
+        assert!(s.apply(c));
+        assert_eq!(s.doc.scene.eye_from_world, phonglab_core::transform::worksheet_modelview(1).unwrap());
+    }
+
+    #[test]
+    fn the_worksheet_evaluates_to_its_answer() {
+        let s = AppState::worksheet();
+        let e = s.evaluate().unwrap();
+        assert!((e.front.primary[0] - 0.05958709).abs() < 1e-7);
+        assert_eq!(preset_documents().len(), 6);
+    }
+}

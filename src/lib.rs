@@ -1,0 +1,4 @@
+//! The phonglab app and CLI, as a library so tests drive them headless.
+
+pub mod app;
+pub mod cli;

@@ -1,0 +1,240 @@
+//! The explorer UI, driven headless with egui_kittest: widgets found by their labels,
+//! clicked, typed into and dragged; the state and the displayed text checked.
+
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use glam::DVec3;
+use phonglab::app::state::{Message, Orbit};
+use phonglab::app::{AppState, app_ui};
+use phonglab_core::explain::{fmt_sig, fmt_value};
+use phonglab_core::{CameraSpec, Engine, materials};
+
+fn harness() -> Harness<'static, AppState> {
+    let mut h = Harness::builder()
+        .with_size([1500.0, 1000.0])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(2);
+    h
+}
+
+/// The unclamped rgba line of the result panel, as it is displayed.
+fn displayed_rgba(c: [f64; 4]) -> String {
+    let s: Vec<String> = c.iter().map(|x| fmt_sig(*x, 8)).collect();
+    format!("[{}]", s.join("  "))
+}
+
+fn front_primary(state: &AppState) -> [f64; 4] {
+    Engine::<f64>::light_scene_vertex(&state.doc.scene).unwrap().front.primary
+}
+
+#[test]
+fn starts_on_the_worksheets_answer() {
+    let h = harness();
+    let want = displayed_rgba(front_primary(h.state()));
+    assert!(want.starts_with("[0.059587089  0.035759287  0.015155245"), "{want}");
+    // Shown twice: unclamped and clamped agree inside [0, 1].
+    assert_eq!(h.get_all_by_label(&want).count(), 2);
+    h.get_by_label("vlv = [0.79220526 0.55887606 -0.2450885 0]");
+    h.get_by_label("I = [0.059587089 0.035759287 0.015155245 0]");
+}
+
+#[test]
+fn moving_the_light_z_shows_exactly_what_the_core_computes() {
+    let mut h = harness();
+    let before = front_primary(h.state());
+    h.get_by_role_and_label(Role::Slider, "Light z").set_value_accesskit(300.0);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.scene.lights[0].position.z, 300.0);
+    let after = front_primary(h.state());
+    assert_ne!(before, after, "moving the light changes the colour");
+    assert!(h.get_all_by_label(&displayed_rgba(after)).count() >= 1);
+    assert!(h.query_by_label(&displayed_rgba(before)).is_none(), "the old colour is gone within the frame");
+
+    // Typing into the slider's number field works too.
+    let field = h.get_by_role_and_label(Role::SpinButton, "Light z");
+    field.click();
+    h.run_steps(1);
+    h.get_by_role_and_label(Role::SpinButton, "Light z").type_text("-40");
+    h.key_press(egui::Key::Enter);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.scene.lights[0].position.z, -40.0);
+    assert!(h.get_all_by_label(&displayed_rgba(front_primary(h.state()))).count() >= 1);
+}
+
+#[test]
+fn toggling_the_local_viewer_changes_v() {
+    let mut h = harness();
+    h.get_by_label("vov = [0 0 1 0]");
+    h.get_by_label("Local viewer").click();
+    h.run_steps(2);
+    assert!(h.state().doc.scene.light_model.local_viewer);
+    assert!(h.query_by_label("vov = [0 0 1 0]").is_none());
+    // V = normalize(-P) with P = mview5 (-512, -384, 0, 1) = (-512, -307.2, -729.6).
+    let v = -DVec3::new(-512.0, -307.2, -729.6).normalize();
+    h.get_by_label(&format!("vov = {}", fmt_value(&[v.x, v.y, v.z, 0.0], 8)));
+}
+
+#[test]
+fn choosing_gold_sets_the_material() {
+    let mut h = harness();
+    h.get_by_label("Material preset").click();
+    h.run_steps(2);
+    // The list scrolls; click through accesskit as assistive technology does.
+    h.get_by_label("gold").click_accesskit();
+    h.run_steps(2);
+    let gold = materials::by_name("gold").unwrap();
+    assert_eq!(&h.state().doc.scene.material, gold);
+    assert_eq!(h.get_by_role_and_label(Role::SpinButton, "Material shininess").value().as_deref(), Some("51.2"));
+}
+
+fn type_into(h: &mut Harness<'static, AppState>, label: &str, text: &str) {
+    h.get_by_role_and_label(Role::SpinButton, label).click();
+    h.run_steps(1);
+    h.get_by_role_and_label(Role::SpinButton, label).type_text(text);
+    h.key_press(egui::Key::Enter);
+    h.run_steps(2);
+}
+
+#[test]
+fn an_out_of_range_shininess_is_refused_and_the_scene_keeps_its_value() {
+    let mut h = harness();
+    let before = h.state().doc.clone();
+    type_into(&mut h, "Material shininess", "200");
+    assert_eq!(h.state().doc, before, "the scene keeps its last valid value");
+    let msg = match &h.state().message {
+        Some(Message::Refused(m)) => m.clone(),
+        other => panic!("expected a refusal, got {other:?}"),
+    };
+    assert!(msg.contains("material.shininess = 200") && msg.contains("[0, 128]"), "{msg}");
+    h.get_by_label(&msg);
+    assert_eq!(h.get_by_role_and_label(Role::SpinButton, "Material shininess").value().as_deref(), Some("25.6"));
+
+    // NaN is refused the same way.
+    type_into(&mut h, "Material shininess", "NaN");
+    assert_eq!(h.state().doc, before);
+    assert!(matches!(&h.state().message, Some(Message::Refused(m)) if m.contains("material.shininess")));
+
+    // A valid value is taken and clears the message.
+    type_into(&mut h, "Material shininess", "100");
+    assert_eq!(h.state().doc.scene.material.shininess, 100.0);
+    assert_eq!(h.state().message, None);
+}
+
+#[test]
+fn a_nan_vertex_or_zero_attenuation_is_refused() {
+    let mut h = harness();
+    let before = h.state().doc.clone();
+    type_into(&mut h, "Vertex x", "inf");
+    assert_eq!(h.state().doc, before);
+    assert!(matches!(&h.state().message, Some(Message::Refused(m)) if m.contains("vertex.position[0]")));
+    for label in ["Constant attenuation", "Linear attenuation", "Quadratic attenuation"] {
+        type_into(&mut h, label, "0");
+    }
+    let refused = match &h.state().message {
+        Some(Message::Refused(m)) => m.clone(),
+        other => panic!("{other:?}"),
+    };
+    assert!(refused.contains("lights[0].attenuation") && refused.contains("infinitely bright"), "{refused}");
+    assert_ne!(h.state().doc.scene.lights[0].attenuation, [0.0; 3]);
+}
+
+#[test]
+fn shortcuts_and_the_help_overlay() {
+    let mut h = harness();
+    h.key_press(egui::Key::L);
+    h.run_steps(1);
+    assert!(h.state().doc.scene.light_model.local_viewer);
+    h.key_press(egui::Key::V);
+    h.run_steps(1);
+    assert_eq!(h.state().doc.camera, CameraSpec::Worksheet(1));
+    h.key_press(egui::Key::M);
+    h.run_steps(1);
+    assert_eq!(materials::name_of(&h.state().doc.scene.material), Some("chrome"), "bronze is followed by chrome");
+    h.key_press(egui::Key::F1);
+    h.run_steps(2);
+    h.get_by_label("Keyboard shortcuts");
+    h.get_by_label("toggle the local viewer");
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::R);
+    h.run_steps(1);
+    assert_eq!(h.state().doc, phonglab_core::Document::default());
+}
+
+#[test]
+fn shortcuts_do_not_fire_while_typing() {
+    let mut h = harness();
+    h.get_by_role_and_label(Role::SpinButton, "Vertex z").click();
+    h.run_steps(1);
+    h.get_by_role_and_label(Role::SpinButton, "Vertex z").type_text("l");
+    h.run_steps(1);
+    assert!(!h.state().doc.scene.light_model.local_viewer);
+}
+
+#[test]
+fn the_vector_plot_has_view_buttons_and_orbits_when_dragged() {
+    let mut h = harness();
+    h.get_by_label("XY").click();
+    h.run_steps(1);
+    assert_eq!(h.state().ui.orbit, Orbit::XY);
+    h.get_by_label("ZY").click();
+    h.run_steps(1);
+    assert_eq!(h.state().ui.orbit, Orbit::ZY);
+    let plot = h.get_by_label("N").rect().center();
+    h.drag_at(plot);
+    h.run_steps(1);
+    h.hover_at(plot + egui::vec2(40.0, 0.0));
+    h.run_steps(1);
+    h.drop_at(plot + egui::vec2(40.0, 0.0));
+    h.run_steps(1);
+    assert_ne!(h.state().ui.orbit, Orbit::ZY, "dragging orbits the view");
+}
+
+#[test]
+fn adding_and_removing_lights_up_to_eight() {
+    let mut h = harness();
+    for _ in 0..10 {
+        h.get_by_label("Add light").click();
+        h.run_steps(1);
+    }
+    assert_eq!(h.state().doc.scene.lights.len(), 8, "no ninth light: the button is disabled at 8");
+    h.get_by_label("Light 7");
+    h.get_by_label("Remove light").click();
+    h.run_steps(1);
+    assert_eq!(h.state().doc.scene.lights.len(), 7);
+    assert!(h.state().evaluate().is_ok());
+}
+
+#[test]
+fn copy_as_markdown_puts_the_table_on_the_clipboard() {
+    let mut h = harness();
+    h.get_by_label("Copy as Markdown").click();
+    h.run_steps(1);
+    let copied: Vec<String> = h
+        .output()
+        .platform_output
+        .commands
+        .iter()
+        .filter_map(|c| match c {
+            egui::OutputCommand::CopyText(t) => Some(t.clone()),
+            _ => None,
+        })
+        .collect();
+    assert!(
+        copied.iter().any(|t| t.contains("| # | step | formula | value | notes |") && t.contains("vlv = [0.79220526")),
+        "{copied:?}"
+    );
+}
+
+#[test]
+fn presets_load_the_phong_demo() {
+    let mut h = harness();
+    h.get_by_label("Presets").click();
+    h.run_steps(2);
+    h.get_by_label("Phong demo").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.scene.rules, phonglab_core::Rules::PHONG_DEMO);
+    h.get_by_label_contains("R = 2 (N . L) N - L");
+    h.get_by_label("Reset to worksheet").click();
+    h.run_steps(1);
+    assert_eq!(h.state().doc, phonglab_core::Document::default());
+}
