@@ -20,6 +20,7 @@ pub mod explain;
 pub mod glref;
 pub mod lighting;
 pub mod materials;
+pub mod mesh;
 pub mod pow;
 pub mod presets;
 pub mod real;

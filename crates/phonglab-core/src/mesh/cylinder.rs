@@ -1,0 +1,55 @@
+//! gluCylinder: a (possibly tapered) tube along z from 0 to `height`, quad strips per
+//! stack; `caps` adds gluDisk-style fans at both ends (gluCylinder itself has none).
+
+use glam::Vec3;
+
+use super::Mesh;
+
+/// A cylinder with radii `base` (z = 0) and `top` (z = height); `2 slices stacks`
+/// triangles, plus `2 slices` with caps.
+pub fn glu_cylinder(base: f32, top: f32, height: f32, slices: u32, stacks: u32, caps: bool) -> Mesh {
+    let slices = slices.max(3);
+    let stacks = stacks.max(1);
+    let mut m = Mesh::default();
+    // GLU's normal: the side's slope tilts it by atan((base - top) / height).
+    let slope = ((base - top) as f64).atan2(height as f64);
+    let (sin_s, cos_s) = slope.sin_cos();
+    let angle = |i: u32| 2.0 * std::f64::consts::PI * (i % slices) as f64 / slices as f64;
+    let mut rows = Vec::new();
+    for j in 0..=stacks {
+        let t = j as f64 / stacks as f64;
+        let r = base as f64 + (top as f64 - base as f64) * t;
+        let z = (height as f64 * t) as f32;
+        rows.push(m.positions.len() as u32);
+        for i in 0..=slices {
+            let (s, c) = angle(i).sin_cos();
+            let n = Vec3::new((s * cos_s) as f32, (c * cos_s) as f32, sin_s as f32);
+            m.push_vertex(Vec3::new((r * s) as f32, (r * c) as f32, z), n);
+        }
+    }
+    for w in rows.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        for i in 0..slices {
+            m.triangles.push([a + i + 1, a + i, b + i]);
+            m.triangles.push([a + i + 1, b + i, b + i + 1]);
+        }
+    }
+    if caps {
+        for (z, r, n) in [(0.0f32, base, -Vec3::Z), (height, top, Vec3::Z)] {
+            let centre = m.push_vertex(Vec3::new(0.0, 0.0, z), n);
+            let first = m.positions.len() as u32;
+            for i in 0..=slices {
+                let (s, c) = angle(i).sin_cos();
+                m.push_vertex(Vec3::new(r * s as f32, r * c as f32, z), n);
+            }
+            for i in 0..slices {
+                if n.z > 0.0 {
+                    m.triangles.push([centre, first + i + 1, first + i]);
+                } else {
+                    m.triangles.push([centre, first + i, first + i + 1]);
+                }
+            }
+        }
+    }
+    m
+}

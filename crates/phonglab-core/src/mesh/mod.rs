@@ -1,0 +1,81 @@
+//! Triangle meshes in object space: gluSphere, gluCylinder, the Utah teapot, OBJ files.
+//!
+//! Triangles are counter-clockwise seen from outside (OpenGL's default front face);
+//! normals are unit length and point outward.
+
+pub mod cylinder;
+pub mod obj;
+pub mod sphere;
+pub mod teapot;
+
+use glam::Vec3;
+
+use crate::view::{ObjectKind, View};
+
+/// An indexed triangle mesh.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Mesh {
+    /// Vertex positions, object space.
+    pub positions: Vec<Vec3>,
+    /// Unit vertex normals, object space.
+    pub normals: Vec<Vec3>,
+    /// Triangles as vertex indices, counter-clockwise from outside.
+    pub triangles: Vec<[u32; 3]>,
+}
+
+impl Mesh {
+    /// Number of triangles.
+    pub fn triangle_count(&self) -> usize {
+        self.triangles.len()
+    }
+
+    /// Appends a vertex, returning its index.
+    pub fn push_vertex(&mut self, p: Vec3, n: Vec3) -> u32 {
+        self.positions.push(p);
+        self.normals.push(n);
+        (self.positions.len() - 1) as u32
+    }
+
+    /// The demo's shortcut: every normal replaced by normalize(position). Right for a
+    /// sphere about the origin, wrong for the teapot and the cylinder (shown on purpose).
+    pub fn with_position_normals(mut self) -> Self {
+        for (n, p) in self.normals.iter_mut().zip(&self.positions) {
+            *n = p.try_normalize().unwrap_or(Vec3::Z);
+        }
+        self
+    }
+
+    /// The vertex nearest to `p` (object space), if any.
+    pub fn nearest_vertex(&self, p: Vec3) -> Option<usize> {
+        self.positions
+            .iter()
+            .enumerate()
+            .min_by(|a, b| a.1.distance_squared(p).total_cmp(&b.1.distance_squared(p)))
+            .map(|(i, _)| i)
+    }
+
+    /// The mesh a view shows: the Phong demo's objects at the demo's sizes (sphere r 0.5,
+    /// teapot 0.5, cylinder r 0.3 h 0.5, centred), tessellated as the view says.
+    pub fn for_view(view: &View) -> Mesh {
+        let m = match view.object {
+            ObjectKind::Sphere => sphere::glu_sphere(0.5, view.sphere_slices, view.sphere_stacks),
+            ObjectKind::Teapot => teapot::glut_teapot(0.5, view.teapot_grid),
+            ObjectKind::Cylinder => {
+                let mut c = cylinder::glu_cylinder(
+                    0.3,
+                    0.3,
+                    0.5,
+                    view.cylinder_slices,
+                    view.cylinder_stacks,
+                    view.cylinder_caps,
+                );
+                // gluCylinder runs from z = 0 to z = h; centre it, as the demo's view does.
+                for p in &mut c.positions {
+                    p.z -= 0.25;
+                }
+                c
+            }
+        };
+        if view.demo_normals { m.with_position_normals() } else { m }
+    }
+}
