@@ -48,6 +48,9 @@ pub trait Real:
     fn sqrt(self) -> Self;
     /// `self` to the power `e`, with `0^0 = 1` (IEEE `pow`).
     fn powf(self, e: Self) -> Self;
+    /// The engine's exact power: [`crate::pow::pow_f32`] (computed in f64, rounded once)
+    /// for f32, the C library's `pow` for f64.
+    fn pow_exact(self, e: Self) -> Self;
     /// Absolute value.
     fn abs(self) -> Self;
     /// IEEE maxNum: `max(NaN, x) = x`.
@@ -100,7 +103,13 @@ pub trait Vec3Ops<S>:
 }
 
 macro_rules! impl_real {
-    ($t:ty, $v3:ty, $m3:ty, $name:literal) => {
+    (@pow f32, $x:expr, $e:expr) => {
+        crate::pow::pow_f32($x, $e)
+    };
+    (@pow f64, $x:expr, $e:expr) => {
+        <f64>::powf($x, $e)
+    };
+    ($t:ident, $v3:ty, $m3:ty, $name:literal) => {
         impl Real for $t {
             type V3 = $v3;
             type M3 = $m3;
@@ -123,6 +132,10 @@ macro_rules! impl_real {
             #[inline(always)]
             fn powf(self, e: Self) -> Self {
                 <$t>::powf(self, e)
+            }
+            #[inline(always)]
+            fn pow_exact(self, e: Self) -> Self {
+                impl_real!(@pow $t, self, e)
             }
             #[inline(always)]
             fn abs(self) -> Self {
