@@ -360,7 +360,8 @@ mod tests {
     fn numbers_parse_exactly() {
         // serde_json's fast path is 1 ulp off here; the cases at 1e6 and 1e18 depend on exact inputs.
         let c = parse_case(&json!({"vertex": [-1.9267785549163818, 0.1, 3.0]}), 0).unwrap();
-        assert_eq!(c.scene.vertex.position.x, -1.9267785549163818f32 as f64);
+        assert_eq!(c.scene.vertex.position.x, -1.9267785549163818_f64);
+        assert_eq!(c.scene.vertex.position.x as f32 as f64, c.scene.vertex.position.x, "an f32 value");
         assert_eq!(c.scene.vertex.position.y.to_bits(), 0.1f64.to_bits());
     }
 

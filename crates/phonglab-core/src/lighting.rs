@@ -42,17 +42,17 @@ use crate::transform::NormalMatrix;
 
 /// A material side rounded to the engine's precision.
 #[derive(Clone, Copy, Debug)]
-struct SideMaterial<S: Real> {
-    shininess: S,
-    alpha: S,
-    /// `e_cm + a_cm a_cs`, with the rule set's terms only.
-    emission: S::V3,
-    scene_ambient: S::V3,
+pub(crate) struct SideMaterial<S: Real> {
+    pub(crate) shininess: S,
+    pub(crate) alpha: S,
+    /// `e_cm` and `a_cm a_cs`, with the rule set's terms only.
+    pub(crate) emission: S::V3,
+    pub(crate) scene_ambient: S::V3,
 }
 
 /// How a light's direction is found.
 #[derive(Clone, Copy, Debug)]
-enum LightPos {
+pub(crate) enum LightPos {
     /// w != 0: at this eye-space point.
     Positional(DVec3),
     /// w = 0: in direction `dir` (unit: `None` for (0, 0, 0)).
@@ -61,14 +61,14 @@ enum LightPos {
 
 /// A spotlight's cone, precomputed.
 #[derive(Clone, Copy, Debug)]
-struct PreparedSpot<S: Real> {
+pub(crate) struct PreparedSpot<S: Real> {
     /// The unit axis in eye space (f64), `None` when the direction is zero.
-    axis: Option<DVec3>,
+    pub(crate) axis: Option<DVec3>,
     /// The cutoff in degrees, its cosine and sine.
-    cutoff: f64,
-    cos_cutoff: f64,
-    sin_cutoff: f64,
-    exponent: S,
+    pub(crate) cutoff: f64,
+    pub(crate) cos_cutoff: f64,
+    pub(crate) sin_cutoff: f64,
+    pub(crate) exponent: S,
 }
 
 /// Is the unit vector `a` (= -L) inside the cone of half-angle `cutoff` about the unit
@@ -82,15 +82,15 @@ fn inside_cone(a: DVec3, s: DVec3, cutoff: f64, cos_cutoff: f64, sin_cutoff: f64
 
 /// One light with everything that does not depend on the vertex precomputed.
 #[derive(Clone, Copy, Debug)]
-struct PreparedLight<S: Real> {
-    index: usize,
-    pos_in_eye: DVec4,
-    pos: LightPos,
-    k: [S; 3],
+pub(crate) struct PreparedLight<S: Real> {
+    pub(crate) index: usize,
+    pub(crate) pos_in_eye: DVec4,
+    pub(crate) pos: LightPos,
+    pub(crate) k: [S; 3],
     /// The spotlight; `None` when cutoff is 180.
-    spot: Option<PreparedSpot<S>>,
+    pub(crate) spot: Option<PreparedSpot<S>>,
     /// Light x material products per side: ambient, diffuse, specular.
-    products: [[S::V3; 3]; 2],
+    pub(crate) products: [[S::V3; 3]; 2],
 }
 
 /// How the engine computes, beyond what the scene says: numerical choices, not GL state.
@@ -104,18 +104,18 @@ pub struct EvalOptions {
 /// equation, with the full breakdown. Build it once per scene, then light vertices.
 #[derive(Clone, Debug)]
 pub struct Engine<S: Real> {
-    options: EvalOptions,
-    rules: Rules,
-    local_viewer: bool,
-    two_sided: bool,
-    separate_specular: bool,
-    normal_mode: NormalMode,
-    eye_from_object: DMat4,
-    normal_matrix: S::M3,
-    rescale: S,
-    singular: bool,
-    sides: [SideMaterial<S>; 2],
-    lights: Vec<PreparedLight<S>>,
+    pub(crate) options: EvalOptions,
+    pub(crate) rules: Rules,
+    pub(crate) local_viewer: bool,
+    pub(crate) two_sided: bool,
+    pub(crate) separate_specular: bool,
+    pub(crate) normal_mode: NormalMode,
+    pub(crate) eye_from_object: DMat4,
+    pub(crate) normal_matrix: S::M3,
+    pub(crate) rescale: S,
+    pub(crate) singular: bool,
+    pub(crate) sides: [SideMaterial<S>; 2],
+    pub(crate) lights: Vec<PreparedLight<S>>,
 }
 
 fn rgb<S: Real>(c: Rgba) -> S::V3 {
@@ -208,13 +208,27 @@ impl<S: Real> Engine<S> {
 
     /// Lights one vertex (object-space position and normal), with the full breakdown.
     pub fn light(&self, vertex: &Vertex) -> VertexLighting<S> {
+        // P: the vertex in eye space, divided by w (a direction when w = 0).
+        let pos_h = transform_point(&self.eye_from_object, vertex.position);
+        // n: (M^-1)^T n_obj, then GL_NORMALIZE or GL_RESCALE_NORMAL.
+        let n_t = self.normal_matrix * S::V3::from_dvec3(vertex.normal);
+        let (n, scaled) = terms::normal_mode::<S>(self.normal_mode, self.rescale, n_t);
+        let mut out = self.light_eye(pos_h, n);
+        out.normal_transformed = n_t;
+        if scaled {
+            out.limits.insert(Limit::NormalScaled);
+        }
+        out
+    }
+
+    /// Lights a vertex given in eye space: its homogeneous position and the normal the
+    /// equation uses (already transformed, normalised or rescaled). Per-pixel shading
+    /// calls this with interpolated values.
+    pub fn light_eye(&self, pos_h: DVec4, n: S::V3) -> VertexLighting<S> {
         let mut out = VertexLighting::<S>::default();
         if self.singular {
             out.limits.insert(Limit::SingularModelview);
         }
-
-        // P: the vertex in eye space, divided by w (a direction when w = 0).
-        let pos_h = transform_point(&self.eye_from_object, vertex.position);
         let at_infinity = pos_h.w == 0.0;
         let pos = if at_infinity { pos_h.xyz() } else { pos_h.xyz() / pos_h.w };
         if at_infinity {
@@ -222,42 +236,18 @@ impl<S: Real> Engine<S> {
         }
         out.pos_in_eye_h = pos_h;
         out.pos_in_eye = pos;
-
-        // n: (M^-1)^T n_obj, then GL_NORMALIZE or GL_RESCALE_NORMAL.
-        let n_t = self.normal_matrix * S::V3::from_dvec3(vertex.normal);
-        let n = match self.normal_mode {
-            NormalMode::AsIs => n_t,
-            NormalMode::Rescale => n_t * self.rescale,
-            NormalMode::Normalize => match try_normalize::<S>(n_t) {
-                Some(u) => {
-                    let sq = n_t.dot(n_t);
-                    if sq == S::ZERO || !sq.is_finite() {
-                        out.limits.insert(Limit::NormalScaled);
-                    }
-                    u
-                }
-                None => S::V3::ZERO,
-            },
-        };
-        let zero_normal = n == S::V3::ZERO || !n.max_abs().is_finite();
+        let zero_normal = terms::is_zero_normal::<S>(n);
         if zero_normal {
             out.limits.insert(Limit::ZeroNormal);
         }
-        out.normal_transformed = n_t;
+        out.normal_transformed = n;
         out.normal_in_eye = n;
 
         // V: towards the viewer.
-        let v = if self.local_viewer {
-            match try_normalize::<f64>(-pos) {
-                Some(u) => Some(S::V3::from_dvec3(u)),
-                None => {
-                    out.limits.insert(Limit::VertexAtEye);
-                    None
-                }
-            }
-        } else {
-            Some(S::V3::new(S::ZERO, S::ZERO, S::ONE))
-        };
+        let v = terms::view_vector::<S>(self.local_viewer, pos);
+        if v.is_none() {
+            out.limits.insert(Limit::VertexAtEye);
+        }
         out.v = v.unwrap_or(S::V3::ZERO);
 
         let mut acc = [Accum::<S>::default(); 2];
@@ -280,19 +270,10 @@ impl<S: Real> Engine<S> {
 
     fn side_color(&self, side: usize, acc: &Accum<S>, limits: &mut Limits) -> SideColor<S> {
         let m = &self.sides[side];
-        let p = m.emission + m.scene_ambient + acc.primary;
-        let mut fix = |x: S| {
-            if x.is_nan() {
-                limits.insert(Limit::InfinitiesCancelled);
-                S::ZERO
-            } else {
-                x
-            }
-        };
-        let primary = [fix(p.x()), fix(p.y()), fix(p.z()), m.alpha];
-        let s = acc.secondary;
-        let secondary =
-            if self.separate_specular { [fix(s.x()), fix(s.y()), fix(s.z()), S::ONE] } else { [S::ZERO; 4] };
+        let (primary, secondary, nan) = terms::finish::<S>(m, acc.primary, acc.secondary, self.separate_specular);
+        if nan {
+            limits.insert(Limit::InfinitiesCancelled);
+        }
         SideColor { emission: m.emission, scene_ambient: m.scene_ambient, primary, secondary }
     }
 
@@ -309,31 +290,16 @@ impl<S: Real> Engine<S> {
         let mut limits = Limits::NONE;
 
         // L = VP and d; att.
-        let (l64, distance): (Option<DVec3>, Option<S>) = match pl.pos {
-            LightPos::Positional(lp) => {
-                if at_infinity {
-                    // From a point at infinity, every finite point lies in the opposite direction.
-                    (try_normalize::<f64>(-pos), Some(S::INFINITY))
-                } else {
-                    let vp = lp - pos;
-                    let d = scaled_length::<f64>(vp);
-                    // Would |VP|^2 have under- or overflowed in this precision?
-                    let vp_s = S::V3::from_dvec3(vp);
-                    let sq = vp_s.dot(vp_s);
-                    if d > 0.0 && (sq == S::ZERO || !sq.is_finite()) {
-                        limits.insert(Limit::DistanceScaled);
-                    }
-                    (try_normalize::<f64>(vp), Some(S::from_f64(d)))
-                }
+        let (l64, d64) = terms::light_vector(&pl.pos, pos, at_infinity);
+        let distance = d64.map(S::from_f64);
+        if let (LightPos::Positional(lp), false, Some(d)) = (&pl.pos, at_infinity, d64) {
+            // Would |VP|^2 have under- or overflowed in this precision?
+            let vp_s = S::V3::from_dvec3(*lp - pos);
+            let sq = vp_s.dot(vp_s);
+            if d > 0.0 && (sq == S::ZERO || !sq.is_finite()) {
+                limits.insert(Limit::DistanceScaled);
             }
-            LightPos::Directional { dir, unit } => {
-                if at_infinity {
-                    (try_normalize::<f64>(dir - pos), None)
-                } else {
-                    (unit, None)
-                }
-            }
-        };
+        }
         let l: Option<S::V3> = l64.map(S::V3::from_dvec3);
         if l.is_none() {
             limits.insert(match pl.pos {
@@ -341,46 +307,29 @@ impl<S: Real> Engine<S> {
                 LightPos::Directional { .. } => Limit::LightDirectionZero,
             });
         }
-        let attenuation = match distance {
-            Some(d) => {
-                let [k0, k1, k2] = pl.k;
-                let denom = k0 + mul0(k1, d) + mul0(mul0(k2, d), d);
-                if denom == S::ZERO {
-                    limits.insert(Limit::AttenuationInfinite);
-                    S::INFINITY
-                } else {
-                    S::ONE / denom
-                }
-            }
-            None => S::ONE,
-        };
+        let attenuation = distance.map_or(S::ONE, |d| terms::attenuation(pl.k, d));
+        if attenuation == S::INFINITY {
+            limits.insert(Limit::AttenuationInfinite);
+        }
 
         // spot
         let spot = match &pl.spot {
             None => SpotTerms { active: false, factor: S::ONE, ..Default::default() },
             Some(sp) => {
-                let mut st = SpotTerms {
-                    active: true,
-                    cos_cutoff: S::from_f64(sp.cos_cutoff),
-                    dir_in_eye: sp.axis.map(S::V3::from_dvec3).unwrap_or(S::V3::ZERO),
-                    ..Default::default()
-                };
+                let (cos_angle, inside, factor) = terms::spot(sp, l64, self.options.pow);
                 match (sp.axis, l64) {
                     (None, _) => limits.insert(Limit::SpotDirectionZero),
-                    (Some(_), None) => {
-                        if matches!(pl.pos, LightPos::Positional(_)) {
-                            limits.insert(Limit::SpotAtVertex);
-                        }
-                    }
-                    (Some(axis), Some(l)) => {
-                        st.cos_angle = S::from_f64(-l.dot(axis));
-                        st.inside = inside_cone(-l, axis, sp.cutoff, sp.cos_cutoff, sp.sin_cutoff);
-                        if st.inside {
-                            st.factor = self.options.pow.pow(st.cos_angle.max(S::ZERO), sp.exponent);
-                        }
-                    }
+                    (Some(_), None) if matches!(pl.pos, LightPos::Positional(_)) => limits.insert(Limit::SpotAtVertex),
+                    _ => {}
                 }
-                st
+                SpotTerms {
+                    active: true,
+                    dir_in_eye: sp.axis.map(S::V3::from_dvec3).unwrap_or(S::V3::ZERO),
+                    cos_angle,
+                    cos_cutoff: S::from_f64(sp.cos_cutoff),
+                    inside,
+                    factor,
+                }
             }
         };
         let scale = mul0(attenuation, spot.factor);
@@ -389,7 +338,7 @@ impl<S: Real> Engine<S> {
         let lit = l.filter(|_| !zero_normal);
         let h = match (l, v) {
             (Some(l), Some(v)) if self.rules.specular == SpecularModel::BlinnPhong => {
-                let h = try_normalize::<S>(l + v);
+                let h = terms::halfway::<S>(l, v);
                 if h.is_none() {
                     limits.insert(Limit::HalfwayZero);
                 }
@@ -397,39 +346,21 @@ impl<S: Real> Engine<S> {
             }
             _ => None,
         };
-        let r = lit.map(|l| n * (S::from_f64(2.0) * n.dot(l)) - l);
+        let r = lit.map(|l| terms::reflect::<S>(n, l));
 
         let side_terms = |side: usize| -> SideTerms<S> {
-            let [amb, dif, spe] = pl.products[side];
-            let mut st = SideTerms { ambient: amb, ..Default::default() };
-            if let Some(l) = lit {
-                let n_side = if side == 0 { n } else { -n };
-                st.n_dot_l = n_side.dot(l);
-                st.diffuse = scale0::<S>(dif, st.n_dot_l.max(S::ZERO));
-                let cos = match self.rules.specular {
-                    SpecularModel::BlinnPhong => h.map(|h| n_side.dot(h)),
-                    SpecularModel::Phong => v.zip(r).map(|(v, r)| r.dot(v)),
-                };
-                if let Some(c) = cos {
-                    st.spec_cos = c;
-                    let allowed = match self.rules.specular_gate() {
-                        SpecularGate::LitSide => st.n_dot_l > S::ZERO,
-                        SpecularGate::PositiveCosine => c > S::ZERO,
-                        SpecularGate::None => true,
-                    };
-                    if allowed {
-                        st.f = S::ONE;
-                        let shin = self.sides[side].shininess;
-                        st.specular = scale0::<S>(spe, self.options.pow.pow(c.max(S::ZERO), shin));
-                    }
-                }
-            }
-            let pri = if self.separate_specular { amb + st.diffuse } else { amb + st.diffuse + st.specular };
-            st.primary = scale0::<S>(pri, scale);
-            if self.separate_specular {
-                st.secondary = scale0::<S>(st.specular, scale);
-            }
-            st
+            let n_side = if side == 0 { n } else { -n };
+            let sp = terms::SpecularInputs { h, r, v, gate: self.rules.specular_gate(), model: self.rules.specular };
+            terms::side::<S>(
+                pl.products[side],
+                n_side,
+                lit,
+                &sp,
+                self.sides[side].shininess,
+                self.options.pow,
+                self.separate_specular,
+                scale,
+            )
         };
         let front = side_terms(0);
         let back = if self.two_sided { side_terms(1) } else { front };
@@ -456,4 +387,178 @@ impl<S: Real> Engine<S> {
 struct Accum<S: Real> {
     primary: S::V3,
     secondary: S::V3,
+}
+
+/// The equation's per-vertex arithmetic, one function per step. The general engine and
+/// the specialised kernels ([`crate::specialised`]) both call these, so the two compute
+/// the same operations in the same order and agree bit for bit.
+pub(crate) mod terms {
+    use super::*;
+
+    /// n as the equation uses it, and whether GL_NORMALIZE had to scale before squaring.
+    #[inline(always)]
+    pub fn normal_mode<S: Real>(mode: NormalMode, rescale: S, n_t: S::V3) -> (S::V3, bool) {
+        match mode {
+            NormalMode::AsIs => (n_t, false),
+            NormalMode::Rescale => (n_t * rescale, false),
+            NormalMode::Normalize => match try_normalize::<S>(n_t) {
+                Some(u) => {
+                    let sq = n_t.dot(n_t);
+                    (u, sq == S::ZERO || !sq.is_finite())
+                }
+                None => (S::V3::ZERO, false),
+            },
+        }
+    }
+
+    /// A zero (or non-finite) normal has no direction.
+    #[inline(always)]
+    pub fn is_zero_normal<S: Real>(n: S::V3) -> bool {
+        n == S::V3::ZERO || !n.max_abs().is_finite()
+    }
+
+    /// V: `normalize(-P)` for a local viewer (`None` at the eye), else (0, 0, 1).
+    #[inline(always)]
+    pub fn view_vector<S: Real>(local: bool, pos: DVec3) -> Option<S::V3> {
+        if local {
+            try_normalize::<f64>(-pos).map(S::V3::from_dvec3)
+        } else {
+            Some(S::V3::new(S::ZERO, S::ZERO, S::ONE))
+        }
+    }
+
+    /// L (unit, f64; `None` when undefined) and d (f64; `None` for a directional light).
+    #[inline(always)]
+    pub fn light_vector(lp: &LightPos, pos: DVec3, at_infinity: bool) -> (Option<DVec3>, Option<f64>) {
+        match lp {
+            LightPos::Positional(lp) => {
+                if at_infinity {
+                    // From a point at infinity, every finite point lies in the opposite direction.
+                    (try_normalize::<f64>(-pos), Some(f64::INFINITY))
+                } else {
+                    let vp = *lp - pos;
+                    (try_normalize::<f64>(vp), Some(scaled_length::<f64>(vp)))
+                }
+            }
+            LightPos::Directional { dir, unit } => {
+                if at_infinity {
+                    (try_normalize::<f64>(*dir - pos), None)
+                } else {
+                    (*unit, None)
+                }
+            }
+        }
+    }
+
+    /// `1 / (k0 + k1 d + k2 d^2)`; +infinity where the denominator is 0.
+    #[inline(always)]
+    pub fn attenuation<S: Real>(k: [S; 3], d: S) -> S {
+        let [k0, k1, k2] = k;
+        let denom = k0 + mul0(k1, d) + mul0(mul0(k2, d), d);
+        if denom == S::ZERO { S::INFINITY } else { S::ONE / denom }
+    }
+
+    /// The spot cosine `-L . s`, whether the vertex is inside the cone, and the factor.
+    #[inline(always)]
+    pub fn spot<S: Real>(sp: &PreparedSpot<S>, l64: Option<DVec3>, pow: PowFn) -> (S, bool, S) {
+        match (sp.axis, l64) {
+            (Some(axis), Some(l)) => {
+                let cos_angle = S::from_f64(-l.dot(axis));
+                let inside = inside_cone(-l, axis, sp.cutoff, sp.cos_cutoff, sp.sin_cutoff);
+                let factor = if inside { pow.pow(cos_angle.max(S::ZERO), sp.exponent) } else { S::ZERO };
+                (cos_angle, inside, factor)
+            }
+            _ => (S::ZERO, false, S::ZERO),
+        }
+    }
+
+    /// H = normalize(L + V), `None` when L = -V.
+    #[inline(always)]
+    pub fn halfway<S: Real>(l: S::V3, v: S::V3) -> Option<S::V3> {
+        try_normalize::<S>(l + v)
+    }
+
+    /// R = 2 (n . L) n - L.
+    #[inline(always)]
+    pub fn reflect<S: Real>(n: S::V3, l: S::V3) -> S::V3 {
+        n * (S::from_f64(2.0) * n.dot(l)) - l
+    }
+
+    /// What the specular term needs besides n and L.
+    pub struct SpecularInputs<S: Real> {
+        pub h: Option<S::V3>,
+        pub r: Option<S::V3>,
+        pub v: Option<S::V3>,
+        pub gate: SpecularGate,
+        pub model: SpecularModel,
+    }
+
+    /// One light's terms on one side: `lit` is L where the light reaches the surface with a
+    /// direction (`None`: ambient only), `scale` is att * spot.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    pub fn side<S: Real>(
+        products: [S::V3; 3],
+        n_side: S::V3,
+        lit: Option<S::V3>,
+        spec: &SpecularInputs<S>,
+        shininess: S,
+        pow: PowFn,
+        separate: bool,
+        scale: S,
+    ) -> SideTerms<S> {
+        let [amb, dif, spe] = products;
+        let mut st = SideTerms { ambient: amb, ..Default::default() };
+        if let Some(l) = lit {
+            st.n_dot_l = n_side.dot(l);
+            st.diffuse = scale0::<S>(dif, st.n_dot_l.max(S::ZERO));
+            let cos = match spec.model {
+                SpecularModel::BlinnPhong => spec.h.map(|h| n_side.dot(h)),
+                SpecularModel::Phong => spec.v.zip(spec.r).map(|(v, r)| r.dot(v)),
+            };
+            if let Some(c) = cos {
+                st.spec_cos = c;
+                let allowed = match spec.gate {
+                    SpecularGate::LitSide => st.n_dot_l > S::ZERO,
+                    SpecularGate::PositiveCosine => c > S::ZERO,
+                    SpecularGate::None => true,
+                };
+                if allowed {
+                    st.f = S::ONE;
+                    st.specular = scale0::<S>(spe, pow.pow(c.max(S::ZERO), shininess));
+                }
+            }
+        }
+        let pri = if separate { amb + st.diffuse } else { amb + st.diffuse + st.specular };
+        st.primary = scale0::<S>(pri, scale);
+        if separate {
+            st.secondary = scale0::<S>(st.specular, scale);
+        }
+        st
+    }
+
+    /// The side's colours from the lights' sums: `e_cm + a_cm a_cs + sum`, NaN (from
+    /// opposite infinities) shown as 0; and whether that happened.
+    #[inline(always)]
+    pub fn finish<S: Real>(
+        m: &SideMaterial<S>,
+        primary: S::V3,
+        secondary: S::V3,
+        separate: bool,
+    ) -> ([S; 4], [S; 4], bool) {
+        let p = m.emission + m.scene_ambient + primary;
+        let mut nan = false;
+        let mut fix = |x: S| {
+            if x.is_nan() {
+                nan = true;
+                S::ZERO
+            } else {
+                x
+            }
+        };
+        let primary = [fix(p.x()), fix(p.y()), fix(p.z()), m.alpha];
+        let secondary =
+            if separate { [fix(secondary.x()), fix(secondary.y()), fix(secondary.z()), S::ONE] } else { [S::ZERO; 4] };
+        (primary, secondary, nan)
+    }
 }

@@ -81,3 +81,84 @@ pub fn phong_demo() -> Scene {
         vertex: Vertex { position: (facing * 0.5).extend(1.0), normal: facing },
     }
 }
+
+/// The three scenes of the lighting benchmark (issue 5): what specialisation saves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightingBench {
+    /// (a) one directional light, no spot, infinite viewer.
+    Directional,
+    /// (b) one positional light with attenuation, local viewer.
+    PositionalLocal,
+    /// (c) eight positional spotlights.
+    EightSpots,
+}
+
+impl LightingBench {
+    /// All three, in order.
+    pub const ALL: [LightingBench; 3] =
+        [LightingBench::Directional, LightingBench::PositionalLocal, LightingBench::EightSpots];
+
+    /// A short name for tables.
+    pub fn name(self) -> &'static str {
+        match self {
+            LightingBench::Directional => "a_directional",
+            LightingBench::PositionalLocal => "b_positional_local",
+            LightingBench::EightSpots => "c_eight_spots",
+        }
+    }
+
+    /// The scene: bronze under OpenGL's rules, camera at z = 4 looking at the origin.
+    pub fn scene(self) -> Scene {
+        let mut s = Scene {
+            material: bronze(),
+            eye_from_world: DMat4::from_translation(DVec3::new(0.0, 0.0, -4.0)),
+            normal_mode: NormalMode::Normalize,
+            ..Scene::default()
+        };
+        let white = |position: DVec4| Light {
+            position,
+            ambient: DVec4::new(0.2, 0.2, 0.2, 1.0),
+            placement: LightPlacement::World,
+            ..Light::gl_default(0)
+        };
+        match self {
+            LightingBench::Directional => s.lights = vec![white(DVec4::new(2.0, 3.0, 1.0, 0.0))],
+            LightingBench::PositionalLocal => {
+                s.lights = vec![Light { attenuation: [1.0, 0.05, 0.01], ..white(DVec4::new(2.0, 3.0, 1.0, 1.0)) }];
+                s.light_model.local_viewer = true;
+            }
+            LightingBench::EightSpots => {
+                s.lights = (0..8)
+                    .map(|i| {
+                        let a = i as f64 / 8.0 * std::f64::consts::TAU;
+                        let p = DVec3::new(3.0 * a.cos(), 2.0, 3.0 * a.sin());
+                        Light {
+                            diffuse: DVec4::new(0.3, 0.3, 0.3, 1.0),
+                            specular: DVec4::new(0.3, 0.3, 0.3, 1.0),
+                            spot_direction: -p,
+                            spot_cutoff: 35.0,
+                            spot_exponent: 8.0,
+                            attenuation: [1.0, 0.05, 0.0],
+                            ..white(p.extend(1.0))
+                        }
+                    })
+                    .collect();
+            }
+        }
+        s
+    }
+}
+
+/// `n` points of the unit sphere (a Fibonacci lattice) with their outward normals, as f32.
+pub fn sphere_points(n: usize) -> (Vec<glam::Vec3>, Vec<glam::Vec3>) {
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    (0..n)
+        .map(|i| {
+            let y = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
+            let r = (1.0 - y * y).sqrt();
+            let t = golden * i as f64;
+            let p = DVec3::new(r * t.cos(), y, r * t.sin()).as_vec3();
+            (p, p)
+        })
+        .unzip()
+}

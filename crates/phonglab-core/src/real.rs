@@ -63,6 +63,9 @@ pub trait Real:
     fn is_nan(self) -> bool;
     /// Converts a glam `DMat3` to this precision.
     fn m3_from_dmat3(m: DMat3) -> Self::M3;
+    /// For a finite `m > 0`, the power of two `2^-floor(log2 m)`: multiplying by it is
+    /// exact and brings `m` into [1, 2) (scaling a vector before squaring its components).
+    fn inverse_pow2_scale(m: Self) -> Self;
 }
 
 /// The vector operations the engine needs, on glam's `Vec3` or `DVec3`.
@@ -109,6 +112,18 @@ macro_rules! impl_real {
     (@pow f64, $x:expr, $e:expr) => {
         <f64>::powf($x, $e)
     };
+    // 2^(bias - e) for the biased exponent e of m: biased exponent 2 bias - e, or the
+    // subnormal 2^-(bias) when that is 0 (m in the top binade). Branch-free.
+    (@scale f32, $m:expr) => {{
+        let e = ($m.to_bits() >> 23) & 0xff;
+        let normal = (254u32.wrapping_sub(e)) << 23;
+        f32::from_bits(if e >= 254 { 1 << 22 } else { normal })
+    }};
+    (@scale f64, $m:expr) => {{
+        let e = ($m.to_bits() >> 52) & 0x7ff;
+        let normal = (2046u64.wrapping_sub(e)) << 52;
+        f64::from_bits(if e >= 2046 { 1 << 51 } else { normal })
+    }};
     ($t:ident, $v3:ty, $m3:ty, $name:literal) => {
         impl Real for $t {
             type V3 = $v3;
@@ -156,6 +171,10 @@ macro_rules! impl_real {
             #[inline(always)]
             fn is_nan(self) -> bool {
                 <$t>::is_nan(self)
+            }
+            #[inline(always)]
+            fn inverse_pow2_scale(m: Self) -> Self {
+                impl_real!(@scale $t, m)
             }
             #[inline(always)]
             fn m3_from_dmat3(m: DMat3) -> Self::M3 {

@@ -163,8 +163,7 @@ mod tests {
         s.lights[0].spot_exponent = f64::NAN;
         assert!(matches!(s.validate().unwrap_err(), SceneError::NotFinite { .. }));
 
-        let mut s = Scene::default();
-        s.lights = vec![Light::gl_default(1); 9];
+        let s = Scene { lights: vec![Light::gl_default(1); 9], ..Scene::default() };
         assert!(matches!(s.validate().unwrap_err(), SceneError::TooManyLights { count: 9, .. }));
     }
 

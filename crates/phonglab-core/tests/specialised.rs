@@ -1,0 +1,151 @@
+//! The specialised evaluator gives the general engine's answer bit for bit (f32): on every
+//! public case, and on random scenes lit in batches.
+
+mod common;
+
+use glam::{DMat4, DQuat, DVec3, DVec4, Vec3};
+use phonglab_core::specialised::{Lighter, Lit};
+use phonglab_core::{
+    Engine, EvalOptions, Light, LightPlacement, Material, NormalMode, PowFn, RuleSet, Rules, Scene, SpecularModel,
+    Vertex,
+};
+use proptest::prelude::*;
+
+fn bits(c: [f32; 4]) -> [u32; 4] {
+    c.map(f32::to_bits)
+}
+
+fn general(scene: &Scene, options: EvalOptions, v: &Vertex) -> [Lit; 2] {
+    let lit = Engine::<f32>::with_options(scene, options).unwrap().light(v);
+    [
+        Lit { primary: lit.front.primary, secondary: lit.front.secondary },
+        Lit { primary: lit.back.primary, secondary: lit.back.secondary },
+    ]
+}
+
+fn same(a: &[Lit; 2], b: &[Lit; 2]) -> bool {
+    a.iter().zip(b).all(|(x, y)| bits(x.primary) == bits(y.primary) && bits(x.secondary) == bits(y.secondary))
+}
+
+#[test]
+fn every_public_case_bit_for_bit() {
+    let mut checked = 0;
+    for c in common::public_cases() {
+        for pow in PowFn::ALL {
+            let options = EvalOptions { pow };
+            let Ok(l) = Lighter::new(&c.scene, options) else { continue }; // the refused cases
+            let s = l.light_vertex(&c.scene.vertex);
+            let g = general(&c.scene, options, &c.scene.vertex);
+            assert!(same(&s, &g), "{} {pow:?}:\n  specialised {s:?}\n  general     {g:?}", c.id);
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 3 * (346 - 4));
+}
+
+fn colour(lo: f64, hi: f64) -> impl Strategy<Value = DVec4> {
+    (lo..hi, lo..hi, lo..hi, 0.0..1.0f64).prop_map(|(r, g, b, a)| DVec4::new(r, g, b, a))
+}
+
+fn v3(r: f64) -> impl Strategy<Value = DVec3> {
+    (-r..r, -r..r, -r..r).prop_map(|(x, y, z)| DVec3::new(x, y, z))
+}
+
+fn light() -> impl Strategy<Value = Light> {
+    (
+        (colour(-0.5, 1.5), colour(-0.5, 1.5), prop_oneof![Just(DVec4::new(0.0, 0.0, 0.0, 1.0)), colour(0.0, 1.0)]),
+        (v3(10.0), prop_oneof![Just(0.0), Just(1.0), 0.5..2.0f64]),
+        v3(1.0),
+        prop_oneof![Just(180.0), 0.0..=90.0f64],
+        0.0..=128.0f64,
+        prop_oneof![Just([1.0, 0.0, 0.0]), (0.0..2.0f64, 0.0..0.5f64, 0.0..0.1f64).prop_map(|(a, b, c)| [a, b, c])],
+        prop_oneof![Just(LightPlacement::Eye), Just(LightPlacement::World), Just(LightPlacement::Object)],
+    )
+        .prop_map(
+            |(
+                (ambient, diffuse, specular),
+                (p, w),
+                spot_direction,
+                spot_cutoff,
+                spot_exponent,
+                attenuation,
+                placement,
+            )| Light {
+                ambient,
+                diffuse,
+                specular,
+                position: p.extend(w),
+                spot_direction,
+                spot_cutoff,
+                spot_exponent,
+                attenuation,
+                placement,
+            },
+        )
+}
+
+fn material() -> impl Strategy<Value = Material> {
+    (colour(0.0, 1.0), colour(0.0, 1.0), colour(0.0, 1.0), colour(0.0, 0.3), prop_oneof![Just(0.0), 0.0..=128.0f64])
+        .prop_map(|(ambient, diffuse, specular, emission, shininess)| Material {
+            ambient,
+            diffuse,
+            specular,
+            emission,
+            shininess,
+        })
+}
+
+fn modelview() -> impl Strategy<Value = DMat4> {
+    (v3(1.0), 0.0..6.3f64, v3(5.0), prop_oneof![Just(1.0), 0.2..3.0f64]).prop_map(|(axis, angle, t, s)| {
+        let axis = axis.try_normalize().unwrap_or(DVec3::Y);
+        DMat4::from_scale_rotation_translation(DVec3::splat(s), DQuat::from_axis_angle(axis, angle), t)
+    })
+}
+
+prop_compose! {
+    fn scene()(
+        lights in prop::collection::vec(light(), 0..=4),
+        material in material(),
+        back in prop::option::of(material()),
+        eye_from_world in modelview(),
+        world_from_object in modelview(),
+        normal_mode in prop::sample::select(vec![NormalMode::AsIs, NormalMode::Normalize, NormalMode::Rescale]),
+        set in prop::sample::select(RuleSet::ALL.to_vec()),
+        specular in prop::sample::select(SpecularModel::ALL.to_vec()),
+        flags in (any::<bool>(), any::<bool>(), any::<bool>()),
+        ambient in colour(0.0, 0.5),
+    ) -> Scene {
+        let mut s = Scene {
+            lights, material, back_material: back, eye_from_world, world_from_object, normal_mode,
+            rules: Rules { set, specular }, ..Scene::default()
+        };
+        s.light_model.ambient = ambient;
+        (s.light_model.local_viewer, s.light_model.two_sided, s.light_model.separate_specular) = flags;
+        s
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(600))]
+
+    #[test]
+    fn random_scenes_in_batches_bit_for_bit(
+        scene in scene(),
+        pow in prop::sample::select(PowFn::ALL.to_vec()),
+        verts in prop::collection::vec((v3(3.0), prop_oneof![Just(DVec3::ZERO), v3(1.0)]), 1..150),
+    ) {
+        let options = EvalOptions { pow };
+        let l = Lighter::new(&scene, options).unwrap();
+        let positions: Vec<Vec3> = verts.iter().map(|(p, _)| p.as_vec3()).collect();
+        let normals: Vec<Vec3> = verts.iter().map(|(_, n)| n.as_vec3()).collect();
+        let mut front = vec![Lit::default(); verts.len()];
+        let mut back = vec![Lit::default(); verts.len()];
+        l.light_batch(&positions, &normals, &mut front, Some(&mut back));
+        for i in 0..verts.len() {
+            let v = Vertex { position: positions[i].as_dvec3().extend(1.0), normal: normals[i].as_dvec3() };
+            let g = general(&scene, options, &v);
+            let s = [front[i], if scene.light_model.two_sided { back[i] } else { front[i] }];
+            prop_assert!(same(&s, &g), "vertex {i}:\n  specialised {s:?}\n  general     {g:?}");
+        }
+    }
+}
