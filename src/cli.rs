@@ -26,6 +26,9 @@ pub enum Command {
     Eval(EvalArgs),
     /// Print the worked calculation of a vertex, step by step, in the worksheet's order.
     Explain(ExplainArgs),
+    /// Measure: the renderer, the lighting.
+    #[command(subcommand)]
+    Bench(crate::bench::BenchCommand),
 }
 
 /// Floating-point precision of the engine.
@@ -102,6 +105,7 @@ pub fn run(command: Command) -> ExitCode {
     let r = match command {
         Command::Eval(a) => eval(&a),
         Command::Explain(a) => explain_cmd(&a),
+        Command::Bench(b) => crate::bench::run(&b),
     };
     match r {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,4 +1,5 @@
 //! The phonglab app and CLI, as a library so tests drive them headless.
 
 pub mod app;
+pub mod bench;
 pub mod cli;

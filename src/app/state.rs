@@ -42,8 +42,8 @@ impl Orbit {
     pub const XY: Orbit = Orbit { yaw: 0.0, pitch: 0.0 };
     /// Looking down from +y: x across, -z up the screen.
     pub const XZ: Orbit = Orbit { yaw: 0.0, pitch: 90.0 };
-    /// Looking from +x: z across, y up.
-    pub const ZY: Orbit = Orbit { yaw: 90.0, pitch: 0.0 };
+    /// Looking from -x: z across (to the right), y up.
+    pub const ZY: Orbit = Orbit { yaw: -90.0, pitch: 0.0 };
     /// A three-quarter view.
     pub const PERSPECTIVE: Orbit = Orbit { yaw: 35.0, pitch: 20.0 };
 }

@@ -25,6 +25,7 @@ pub mod plan;
 pub mod pow;
 pub mod presets;
 pub mod real;
+pub mod render;
 pub mod robust;
 pub mod rules;
 pub mod scene;

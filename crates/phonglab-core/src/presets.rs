@@ -162,3 +162,33 @@ pub fn sphere_points(n: usize) -> (Vec<glam::Vec3>, Vec<glam::Vec3>) {
         })
         .unzip()
 }
+
+/// DESIGN.md's rendering benchmark scene at frame `frame`: bronze under one light at
+/// (2, 3, 1, 1) fixed to the eye (ambient 0.2, diffuse and specular 1, linear attenuation
+/// 0.05), GL_NORMALIZE, the object rotated 3 `frame` degrees about (0.3, 1, 0.1) in front
+/// of the eye at z = -4.
+pub fn bench_scene(frame: u32) -> Scene {
+    let axis = DVec3::new(0.3, 1.0, 0.1).normalize();
+    Scene {
+        lights: vec![Light {
+            position: DVec4::new(2.0, 3.0, 1.0, 1.0),
+            ambient: DVec4::new(0.2, 0.2, 0.2, 1.0),
+            attenuation: [1.0, 0.05, 0.0],
+            placement: LightPlacement::Eye,
+            ..Light::gl_default(0)
+        }],
+        material: bronze(),
+        eye_from_world: DMat4::from_translation(DVec3::new(0.0, 0.0, -4.0)),
+        world_from_object: DMat4::from_axis_angle(axis, (3.0 * frame as f64).to_radians()),
+        normal_mode: NormalMode::Normalize,
+        ..Scene::default()
+    }
+}
+
+/// The benchmark's projection: `gluPerspective(40, 1, 0.5, 20)`.
+pub fn bench_projection() -> DMat4 {
+    crate::render::perspective(40.0, 1.0, 0.5, 20.0)
+}
+
+/// The benchmark's clear colour.
+pub const BENCH_BACKGROUND: [f32; 3] = [0.1, 0.1, 0.15];

@@ -75,6 +75,95 @@ fn fast_loop(
     }
 }
 
+/// A positional light without a spot, one side, Blinn-Phong, OpenGL's gate: the stages of
+/// `terms::light_vector`, `terms::attenuation`, `terms::halfway` and `terms::side`
+/// written out on plain arrays (f64 for L and d, as the general engine), so they
+/// vectorise. The same operations in the same order.
+#[inline(always)]
+fn positional_fast(c: &mut Chunk, pl: &PreparedLight<f32>, lp: DVec3, e: &Engine<f32>, local_viewer: bool) {
+    let n = c.n;
+    let [amb, dif, spe] = pl.products[0].map(|v| v.to_array());
+    let shin = e.sides[0].shininess;
+    let attenuated = pl.k != [1.0, 0.0, 0.0];
+    let (mut lx, mut ly, mut lz, mut d) = ([0.0f32; CHUNK], [0.0f32; CHUNK], [0.0f32; CHUNK], [0.0f32; CHUNK]);
+    let mut l_ok = [false; CHUNK];
+    // L = normalize(P_l - P) and d = |P_l - P|, both from one exact power-of-two scaling
+    // (robust::try_normalize and robust::scaled_length), in f64.
+    for i in 0..n {
+        let vp = lp - c.pos[i];
+        let m = vp.x.abs().max(vp.y.abs()).max(vp.z.abs());
+        let ok = m != 0.0 && m.is_finite();
+        let s = <f64 as crate::Real>::inverse_pow2_scale(m);
+        let u = vp * s;
+        let sq = (u.x * u.x + u.y * u.y + u.z * u.z).sqrt();
+        let inv = 1.0 / sq;
+        lx[i] = (u.x * inv) as f32;
+        ly[i] = (u.y * inv) as f32;
+        lz[i] = (u.z * inv) as f32;
+        d[i] = if ok { (sq / s) as f32 } else { m as f32 };
+        l_ok[i] = ok;
+    }
+    // att = 1 / (k0 + k1 d + k2 d^2); the spot factor is 1: scale = mul0(att, 1).
+    let mut scale = [1.0f32; CHUNK];
+    if attenuated {
+        for i in 0..n {
+            scale[i] = mul0(terms::attenuation(pl.k, d[i]), 1.0);
+        }
+    }
+    // H = normalize(L + V) (robust::try_normalize in f32).
+    let (mut hx, mut hy, mut hz) = ([0.0f32; CHUNK], [0.0f32; CHUNK], [0.0f32; CHUNK]);
+    let mut h_ok = [false; CHUNK];
+    for i in 0..n {
+        let v = if local_viewer { c.v[i] } else { Some(Vec3::Z) };
+        let (vx, vy, vz, v_ok) = match v {
+            Some(v) => (v.x, v.y, v.z, true),
+            None => (0.0, 0.0, 0.0, false),
+        };
+        let (x, y, z) = (lx[i] + vx, ly[i] + vy, lz[i] + vz);
+        let m = x.abs().max(y.abs()).max(z.abs());
+        let ok = m != 0.0 && m.is_finite() && v_ok && l_ok[i];
+        let s = <f32 as crate::Real>::inverse_pow2_scale(m);
+        let (ux, uy, uz) = (x * s, y * s, z * s);
+        let inv = 1.0 / (ux * ux + uy * uy + uz * uz).sqrt();
+        hx[i] = ux * inv;
+        hy[i] = uy * inv;
+        hz[i] = uz * inv;
+        h_ok[i] = ok;
+    }
+    // The cosines and the power.
+    let (mut ndl, mut cos) = ([0.0f32; CHUNK], [0.0f32; CHUNK]);
+    for i in 0..n {
+        ndl[i] = c.nx[i] * lx[i] + c.ny[i] * ly[i] + c.nz[i] * lz[i];
+        cos[i] = (c.nx[i] * hx[i] + c.ny[i] * hy[i] + c.nz[i] * hz[i]).max(0.0);
+    }
+    let mut p = [1.0f32; CHUNK];
+    if shin != 0.0 {
+        match e.options.pow {
+            crate::PowFn::Exact => {
+                for i in 0..n {
+                    p[i] = crate::pow::pow_f32(cos[i], shin);
+                }
+            }
+            other => {
+                for i in 0..n {
+                    p[i] = other.pow(cos[i], shin);
+                }
+            }
+        }
+    }
+    // The terms and the sums.
+    let acc = &mut c.acc[0];
+    for ch in 0..3 {
+        for i in 0..n {
+            let lit = l_ok[i] && !c.zero[i];
+            let diffuse = if lit { mul0(dif[ch], ndl[i].max(0.0)) } else { 0.0 };
+            let specular = if lit && h_ok[i] && ndl[i] > 0.0 { mul0(spe[ch], p[i]) } else { 0.0 };
+            let pri = amb[ch] + diffuse + specular;
+            acc[ch][i] += mul0(pri, scale[i]);
+        }
+    }
+}
+
 /// Does this CPU have AVX-512F and DQ (and AVX2, FMA)? (Checked once; `PHONGLAB_NO_AVX512`
 /// set in the environment turns the AVX-512 kernels off, for comparisons.)
 #[cfg(target_arch = "x86_64")]
@@ -145,6 +234,8 @@ enum Source<'a> {
     Object { positions: &'a [Vec3], normals: &'a [Vec3], with_positions: bool },
     /// Eye space, final normals.
     Eye { positions: &'a [Vec3], normals: &'a [Vec3] },
+    /// Eye space, normals to normalise (as `robust::normalize_or_zero`).
+    EyeRaw { positions: &'a [Vec3], normals: &'a [Vec3] },
     /// One eye-space vertex (already divided by w).
     One { pos: DVec3, n: Vec3 },
 }
@@ -152,7 +243,9 @@ enum Source<'a> {
 impl Source<'_> {
     fn len(&self) -> usize {
         match self {
-            Source::Object { positions, .. } | Source::Eye { positions, .. } => positions.len(),
+            Source::Object { positions, .. } | Source::Eye { positions, .. } | Source::EyeRaw { positions, .. } => {
+                positions.len()
+            }
             Source::One { .. } => 1,
         }
     }
@@ -176,6 +269,13 @@ impl Source<'_> {
                     c.pos[i] = positions[start + i].as_dvec3();
                     c.set_nrm(i, normals[start + i]);
                 }
+            }
+            Source::EyeRaw { positions, normals } => {
+                for i in 0..c.n {
+                    c.pos[i] = positions[start + i].as_dvec3();
+                    c.set_nrm(i, normals[start + i]);
+                }
+                normalize_chunk(c);
             }
             Source::One { pos, n } => {
                 c.pos[0] = pos;
@@ -208,18 +308,25 @@ fn transform_normals(e: &Engine<f32>, normals: &[Vec3], c: &mut Chunk) {
             }
         }
         crate::NormalMode::Normalize => {
-            for i in 0..n {
-                let (x, y, z) = (c.nx[i], c.ny[i], c.nz[i]);
-                let m = x.abs().max(y.abs()).max(z.abs());
-                let defined = m != 0.0 && m.is_finite();
-                let s = <f32 as crate::Real>::inverse_pow2_scale(m);
-                let (ux, uy, uz) = (x * s, y * s, z * s);
-                let inv = 1.0 / (ux * ux + uy * uy + uz * uz).sqrt();
-                c.nx[i] = if defined { ux * inv } else { 0.0 };
-                c.ny[i] = if defined { uy * inv } else { 0.0 };
-                c.nz[i] = if defined { uz * inv } else { 0.0 };
-            }
+            c.n = n;
+            normalize_chunk(c);
         }
+    }
+}
+
+/// `robust::normalize_or_zero` over the chunk's normals, on plain arrays.
+#[inline(always)]
+fn normalize_chunk(c: &mut Chunk) {
+    for i in 0..c.n {
+        let (x, y, z) = (c.nx[i], c.ny[i], c.nz[i]);
+        let m = x.abs().max(y.abs()).max(z.abs());
+        let defined = m != 0.0 && m.is_finite();
+        let s = <f32 as crate::Real>::inverse_pow2_scale(m);
+        let (ux, uy, uz) = (x * s, y * s, z * s);
+        let inv = 1.0 / (ux * ux + uy * uy + uz * uz).sqrt();
+        c.nx[i] = if defined { ux * inv } else { 0.0 };
+        c.ny[i] = if defined { uy * inv } else { 0.0 };
+        c.nz[i] = if defined { uz * inv } else { 0.0 };
     }
 }
 
@@ -374,6 +481,20 @@ impl Lighter {
     pub fn light_batch_eye(&self, positions: &[Vec3], normals: &[Vec3], front: &mut [Lit], back: Option<&mut [Lit]>) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
         self.run(Source::Eye { positions, normals }, Output::Lit { front, back });
+    }
+
+    /// [`Lighter::light_batch_eye_sum`] with normals not yet normalised: each is
+    /// normalised first (as `robust::normalize_or_zero`), as Phong shading renormalises its
+    /// interpolated normals.
+    pub fn light_batch_eye_sum_normalizing(
+        &self,
+        positions: &[Vec3],
+        normals: &[Vec3],
+        front: &mut [[f32; 4]],
+        back: Option<&mut [[f32; 4]]>,
+    ) {
+        assert_eq!(positions.len(), normals.len(), "one normal per position");
+        self.run(Source::EyeRaw { positions, normals }, Output::Sum { front, back });
     }
 
     /// [`Lighter::light_batch_eye`] writing only the colour sums: per-pixel shading.
@@ -644,6 +765,15 @@ impl Lighter {
     #[inline(always)]
     fn positional(&self, c: &mut Chunk, pl: &PreparedLight<f32>) {
         let e = &self.engine;
+        if pl.spot.is_none()
+            && !self.key.two_sided
+            && e.rules.specular == SpecularModel::BlinnPhong
+            && self.fast_path_ok()
+            && let LightPos::Positional(lp) = pl.pos
+        {
+            positional_fast(c, pl, lp, e, self.key.local_viewer);
+            return;
+        }
         let attenuated = pl.k != [1.0, 0.0, 0.0];
         let blinn = e.rules.specular == SpecularModel::BlinnPhong;
         for i in 0..c.n {

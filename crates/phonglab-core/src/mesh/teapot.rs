@@ -9,7 +9,8 @@
 //! the rest of the teapot an odd number of times (pointing inside).
 //!
 //! glutSolidTeapot(size) places it: rotate 270 degrees about x (z up becomes y up),
-//! scale by 0.5 size, after moving it down by 1.5 (the body's middle to the origin).
+//! scale by 0.5 size, after moving it down by 1.575 (freeglut's offset, which centres the
+//! teapot vertically; SGI's GLUT used 1.5).
 
 use std::sync::OnceLock;
 
@@ -128,12 +129,16 @@ pub fn patches() -> &'static [Patch] {
     })
 }
 
-/// glutSolidTeapot(size): the 32 patches on a `grid x grid` quad grid each, y up.
+/// freeglut's vertical offset of the teapot (in patch units, before scaling).
+pub const Z_OFFSET: f64 = 1.575;
+
+/// glutSolidTeapot(size) as freeglut draws it: the 32 patches on a `grid x grid` quad grid
+/// each (freeglut: 7), y up.
 pub fn glut_teapot(size: f32, grid: u32) -> Mesh {
     let grid = grid.max(1) as usize;
     let s = 0.5 * size as f64;
-    // Rotate 270 degrees about x: (x, y, z) -> (x, z, -y); after z -= 1.5; then scale.
-    let place = |p: DVec3| DVec3::new(p.x, p.z - 1.5, -p.y) * s;
+    // Rotate 270 degrees about x: (x, y, z) -> (x, z, -y); after z -= 1.575; then scale.
+    let place = |p: DVec3| DVec3::new(p.x, p.z - Z_OFFSET, -p.y) * s;
     let place_n = |n: DVec3| DVec3::new(n.x, n.z, -n.y);
     let mut m = Mesh::default();
     for p in patches() {

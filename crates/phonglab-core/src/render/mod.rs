@@ -1,0 +1,175 @@
+//! The CPU renderer: a mesh, lit by the same engine as the vertex panel, shaded Flat,
+//! Gouraud or Phong, into an RGBA8 image. No GPU.
+//!
+//! Read it top to bottom:
+//!
+//! 1. [`vertices`]: each vertex to eye and clip space; for Gouraud, its colour.
+//! 2. [`setup`]: each triangle clipped (near and far planes, and x/y beyond a guard band),
+//!    its facing decided, back faces culled if asked, snapped to fixed point.
+//! 3. [`raster`]: triangles into a visibility buffer (depth, triangle, barycentrics), in
+//!    horizontal bands on all cores; top-left fill rule, so shared edges are drawn once.
+//! 4. [`resolve`]: each covered pixel shaded once, with perspective-correct barycentrics:
+//!    Gouraud interpolates colours, Phong interpolates position and normal and lights the
+//!    pixel, Flat takes its face's colour.
+
+pub mod raster;
+pub mod resolve;
+pub mod setup;
+pub mod vertices;
+
+use glam::DMat4;
+
+use crate::error::SceneError;
+use crate::lighting::EvalOptions;
+use crate::mesh::Mesh;
+use crate::scene::Scene;
+use crate::specialised::Lighter;
+use crate::view::Shading;
+
+/// `gluPerspective(fovy, aspect, near, far)`: eye to clip space.
+pub fn perspective(fovy_deg: f64, aspect: f64, near: f64, far: f64) -> DMat4 {
+    let f = 1.0 / (fovy_deg.to_radians() / 2.0).tan();
+    crate::transform::mat4_from_rows([
+        [f / aspect, 0.0, 0.0, 0.0],
+        [0.0, f, 0.0, 0.0],
+        [0.0, 0.0, (far + near) / (near - far), 2.0 * far * near / (near - far)],
+        [0.0, 0.0, -1.0, 0.0],
+    ])
+}
+
+/// What to draw.
+#[derive(Clone, Copy, Debug)]
+pub struct Job<'a> {
+    /// Lighting state and the modelview (`scene.eye_from_object()`).
+    pub scene: &'a Scene,
+    /// The mesh, object space.
+    pub mesh: &'a Mesh,
+    /// Eye to clip space.
+    pub clip_from_eye: DMat4,
+    /// Flat, Gouraud or Phong.
+    pub shading: Shading,
+    /// Colour of uncovered pixels (linear, as written).
+    pub background: [f32; 3],
+    /// Skip triangles facing away (OpenGL's GL_CULL_FACE with GL_BACK).
+    pub cull_back: bool,
+    /// The power function and other numerical choices.
+    pub options: EvalOptions,
+}
+
+/// A rendered image, rows top to bottom.
+#[derive(Clone, Debug, Default)]
+pub struct Image {
+    /// Width in pixels.
+    pub width: usize,
+    /// Height in pixels.
+    pub height: usize,
+    /// RGBA8, `width * height * 4` bytes.
+    pub rgba: Vec<u8>,
+    /// Window-space depth of each pixel (1 where uncovered).
+    pub depth: Vec<f32>,
+    /// The rasterised (clipped) triangle at each pixel ([`NO_TRIANGLE`] where uncovered),
+    /// and its screen-space barycentrics (of vertices 1 and 2), for perspective-correct
+    /// interpolation.
+    pub(crate) raster: Vec<u32>,
+    pub(crate) bary: Vec<[f32; 2]>,
+}
+
+/// `Image::triangle` of an uncovered pixel.
+pub const NO_TRIANGLE: u32 = u32::MAX;
+
+impl Image {
+    /// The share of pixels covered by the mesh.
+    pub fn coverage(&self) -> f64 {
+        if self.raster.is_empty() {
+            return 0.0;
+        }
+        self.raster.iter().filter(|t| **t != NO_TRIANGLE).count() as f64 / self.raster.len() as f64
+    }
+
+    /// Is pixel (x, y) (y from the top) covered?
+    pub fn covered(&self, x: usize, y: usize) -> bool {
+        self.raster.get(y * self.width + x).is_some_and(|t| *t != NO_TRIANGLE)
+    }
+
+    /// The RGB of pixel (x, y), y from the top.
+    pub fn rgb(&self, x: usize, y: usize) -> [u8; 3] {
+        let i = (y * self.width + x) * 4;
+        [self.rgba[i], self.rgba[i + 1], self.rgba[i + 2]]
+    }
+}
+
+/// What a frame cost and drew.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Triangles in the mesh.
+    pub triangles: usize,
+    /// Triangles rasterised (after culling and clipping; a clipped one may become several).
+    pub rasterised: usize,
+    /// Lighting evaluations made (vertices, faces or pixels).
+    pub evaluations: usize,
+}
+
+/// The renderer: keeps its buffers and its specialised lighting plan from frame to frame
+/// (re-planned only when the scene's key changes).
+#[derive(Default)]
+pub struct Renderer {
+    lighter: Option<Lighter>,
+    vertices: vertices::Vertices,
+    setup: setup::Setup,
+    image: Image,
+    scratch: resolve::Scratch,
+    bins: Vec<Vec<u32>>,
+}
+
+impl Renderer {
+    /// A renderer with empty buffers.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// The lighting plan of the last frame.
+    pub fn lighter(&self) -> Option<&Lighter> {
+        self.lighter.as_ref()
+    }
+
+    /// Draws `job` into a `width` x `height` image.
+    pub fn render(&mut self, job: &Job<'_>, width: usize, height: usize) -> Result<(&Image, Stats), SceneError> {
+        match &mut self.lighter {
+            Some(l) => {
+                l.update(job.scene, job.options)?;
+            }
+            None => self.lighter = Some(Lighter::new(job.scene, job.options)?),
+        }
+        let lighter = self.lighter.as_ref().expect("set just above");
+        let width = width.max(1);
+        let height = height.max(1);
+        self.vertices.run(job, lighter);
+        self.setup.run(job, &self.vertices, lighter, width, height);
+        raster::rasterise(&self.setup, width, height, &mut self.image, &mut self.bins);
+        let evaluations =
+            resolve::resolve(job, &self.vertices, &self.setup, lighter, &mut self.image, &mut self.scratch);
+        let stats = Stats {
+            triangles: job.mesh.triangle_count(),
+            rasterised: self.setup.tris.len(),
+            evaluations: evaluations + if job.shading == Shading::Gouraud { self.vertices.eye.len() } else { 0 },
+        };
+        Ok((&self.image, stats))
+    }
+}
+
+impl Renderer {
+    /// The mesh vertex nearest to what pixel (x, y) of the last frame shows (y from the
+    /// top): the vertex of the drawn triangle with the largest barycentric weight there.
+    pub fn pick(&self, mesh: &Mesh, x: usize, y: usize) -> Option<usize> {
+        let img = &self.image;
+        if x >= img.width || y >= img.height {
+            return None;
+        }
+        let i = y * img.width + x;
+        let r = img.raster[i];
+        let tri = mesh.triangles.get(self.setup.tris.get(r as usize)?.orig as usize)?;
+        let b = resolve::original_barycentrics(&self.setup, img, i)?;
+        let k = (0..3).max_by(|i, j| b[*i].total_cmp(&b[*j]))?;
+        Some(tri[k] as usize)
+    }
+}

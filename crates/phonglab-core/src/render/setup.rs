@@ -1,0 +1,263 @@
+//! Stage 2: triangles clipped, faced, culled and snapped to fixed point; Flat's face colours.
+//!
+//! Clipping is in homogeneous clip space (Sutherland-Hodgman): always against the near
+//! and far planes (`-w <= z <= w`, so no vertex reaches w <= 0), and against x and y only
+//! when a vertex lies beyond a guard band of 8 viewports (so fixed-point coordinates stay
+//! small). Each clipped vertex carries its barycentric coordinates in the original
+//! triangle, so the resolve stage interpolates the original vertices' attributes.
+
+use glam::{Vec3, Vec4};
+use rayon::prelude::*;
+
+use super::Job;
+use super::vertices::Vertices;
+use crate::specialised::Lighter;
+use crate::view::Shading;
+
+/// Sub-pixel precision: 8 fractional bits, as llvmpipe.
+pub const SUBPIXEL_BITS: u32 = 8;
+const ONE: i64 = 1 << SUBPIXEL_BITS;
+/// Vertices may lie this many viewports away from the centre before x/y clipping.
+const GUARD: f32 = 8.0;
+
+/// A triangle ready to rasterise, in image space (y down), ordered so that its signed
+/// area `(x1-x0)(y2-y0) - (x2-x0)(y1-y0)` is positive.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RasterTri {
+    /// Fixed-point x and y of the three vertices.
+    pub x: [i64; 3],
+    /// Fixed-point y.
+    pub y: [i64; 3],
+    /// Window depth in [0, 1].
+    pub z: [f32; 3],
+    /// 1/w, for perspective-correct interpolation.
+    pub inv_w: [f32; 3],
+    /// Each vertex's barycentric coordinates in the original mesh triangle.
+    pub bary: [[f32; 3]; 3],
+    /// The mesh triangle.
+    pub orig: u32,
+    /// Faces away from the viewer (drawn with the back side's colours).
+    pub back: bool,
+    /// Pixel bounding box (inclusive), clamped to the image.
+    pub x0: i32,
+    /// Last column.
+    pub x1: i32,
+    /// First row.
+    pub y0: i32,
+    /// Last row.
+    pub y1: i32,
+}
+
+/// Per-frame results of stage 2.
+#[derive(Default)]
+pub struct Setup {
+    /// Triangles to rasterise.
+    pub tris: Vec<RasterTri>,
+    /// Flat shading: each mesh triangle's colour (clamped sum) per side.
+    pub face_color: [Vec<[f32; 4]>; 2],
+    per_face: Vec<Vec<RasterTri>>,
+}
+
+#[derive(Clone, Copy, Default)]
+struct ClipVert {
+    clip: Vec4,
+    bary: [f32; 3],
+}
+
+/// A convex polygon of at most 9 vertices (a triangle clipped by 6 planes), on the stack.
+#[derive(Clone, Copy, Default)]
+struct Poly {
+    v: [ClipVert; 9],
+    n: usize,
+}
+
+impl Poly {
+    fn push(&mut self, c: ClipVert) {
+        if self.n < self.v.len() {
+            self.v[self.n] = c;
+            self.n += 1;
+        }
+    }
+
+    fn as_slice(&self) -> &[ClipVert] {
+        &self.v[..self.n]
+    }
+}
+
+fn lerp(a: &ClipVert, b: &ClipVert, t: f32) -> ClipVert {
+    ClipVert {
+        clip: a.clip + (b.clip - a.clip) * t,
+        bary: [
+            a.bary[0] + (b.bary[0] - a.bary[0]) * t,
+            a.bary[1] + (b.bary[1] - a.bary[1]) * t,
+            a.bary[2] + (b.bary[2] - a.bary[2]) * t,
+        ],
+    }
+}
+
+/// Clips a polygon against `dist(v) >= 0` (dist linear in clip space).
+fn clip_plane(p: &Poly, dist: impl Fn(Vec4) -> f32) -> Poly {
+    let poly = p.as_slice();
+    let mut out = Poly::default();
+    for i in 0..poly.len() {
+        let (a, b) = (&poly[i], &poly[(i + 1) % poly.len()]);
+        let (da, db) = (dist(a.clip), dist(b.clip));
+        if da >= 0.0 {
+            out.push(*a);
+        }
+        if (da >= 0.0) != (db >= 0.0) {
+            out.push(lerp(a, b, da / (da - db)));
+        }
+    }
+    out
+}
+
+fn planes_needed(c: &[Vec4; 3]) -> (bool, bool) {
+    let outside_depth = c.iter().any(|v| v.z < -v.w || v.z > v.w || v.w <= 0.0);
+    let outside_guard = c.iter().any(|v| v.x.abs() > GUARD * v.w || v.y.abs() > GUARD * v.w);
+    (outside_depth, outside_guard)
+}
+
+fn trivially_rejected(c: &[Vec4; 3]) -> bool {
+    let all = |f: &dyn Fn(&Vec4) -> bool| c.iter().all(f);
+    all(&|v| v.x < -v.w)
+        || all(&|v| v.x > v.w)
+        || all(&|v| v.y < -v.w)
+        || all(&|v| v.y > v.w)
+        || all(&|v| v.z < -v.w)
+        || all(&|v| v.z > v.w)
+}
+
+/// Snaps a clipped polygon (fan) to raster triangles.
+fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bool, out: &mut Vec<RasterTri>) {
+    if poly.len() < 3 {
+        return;
+    }
+    let (w, h) = (width as f32, height as f32);
+    let mut win = [(0i64, 0i64, 0.0f32, 0.0f32); 9];
+    for (o, v) in win.iter_mut().zip(poly) {
+        let iw = 1.0 / v.clip.w;
+        let (xn, yn, zn) = (v.clip.x * iw, v.clip.y * iw, v.clip.z * iw);
+        let xw = (xn + 1.0) * 0.5 * w;
+        let yw = (1.0 - yn) * 0.5 * h; // image rows go down
+        *o = (
+            ((xw * ONE as f32).round()) as i64,
+            ((yw * ONE as f32).round()) as i64,
+            ((zn + 1.0) * 0.5).clamp(0.0, 1.0),
+            iw,
+        );
+    }
+    for k in 1..poly.len() - 1 {
+        let mut idx = [0, k, k + 1];
+        let area = |i: [usize; 3]| {
+            let (a, b, c) = (win[i[0]], win[i[1]], win[i[2]]);
+            (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1)
+        };
+        let a = area(idx);
+        if a == 0 {
+            continue;
+        }
+        // OpenGL's counter-clockwise front faces (y up) have negative area with y down.
+        let back = a > 0;
+        if back && cull_back {
+            continue;
+        }
+        if a < 0 {
+            idx.swap(1, 2);
+        }
+        let v = idx.map(|i| win[i]);
+        let x0 = v.iter().map(|p| p.0).min().unwrap_or(0);
+        let x1 = v.iter().map(|p| p.0).max().unwrap_or(0);
+        let y0 = v.iter().map(|p| p.1).min().unwrap_or(0);
+        let y1 = v.iter().map(|p| p.1).max().unwrap_or(0);
+        // Pixels whose centres (p + 1/2) may be inside.
+        let px0 = ((x0 - ONE / 2 + ONE - 1) >> SUBPIXEL_BITS).max(0) as i32;
+        let px1 = ((x1 - ONE / 2) >> SUBPIXEL_BITS).min(width as i64 - 1) as i32;
+        let py0 = ((y0 - ONE / 2 + ONE - 1) >> SUBPIXEL_BITS).max(0) as i32;
+        let py1 = ((y1 - ONE / 2) >> SUBPIXEL_BITS).min(height as i64 - 1) as i32;
+        if px0 > px1 || py0 > py1 {
+            continue;
+        }
+        out.push(RasterTri {
+            x: v.map(|p| p.0),
+            y: v.map(|p| p.1),
+            z: v.map(|p| p.2),
+            inv_w: v.map(|p| p.3),
+            bary: idx.map(|i| poly[i].bary),
+            orig,
+            back,
+            x0: px0,
+            x1: px1,
+            y0: py0,
+            y1: py1,
+        });
+    }
+}
+
+impl Setup {
+    /// Clips, faces, culls and snaps every triangle of the job; lights faces for Flat.
+    pub fn run(&mut self, job: &Job<'_>, verts: &Vertices, lighter: &Lighter, width: usize, height: usize) {
+        let tris = &job.mesh.triangles;
+        const GRAIN: usize = 1024;
+        let chunks = tris.len().div_ceil(GRAIN);
+        self.per_face.resize_with(chunks, Vec::new);
+        self.per_face.par_iter_mut().enumerate().for_each(|(k, out)| {
+            out.clear();
+            for (j, t) in tris.iter().enumerate().skip(k * GRAIN).take(GRAIN) {
+                let c = t.map(|i| verts.clip[i as usize]);
+                if trivially_rejected(&c) {
+                    continue;
+                }
+                let mut poly = Poly::default();
+                for (k, clip) in c.into_iter().enumerate() {
+                    let mut bary = [0.0; 3];
+                    bary[k] = 1.0;
+                    poly.push(ClipVert { clip, bary });
+                }
+                let (depth, guard) = planes_needed(&c);
+                if depth {
+                    poly = clip_plane(&poly, |v| v.z + v.w);
+                    poly = clip_plane(&poly, |v| v.w - v.z);
+                }
+                if guard {
+                    for s in [1.0f32, -1.0] {
+                        poly = clip_plane(&poly, |v| GUARD * v.w - s * v.x);
+                        poly = clip_plane(&poly, |v| GUARD * v.w - s * v.y);
+                    }
+                }
+                emit(poly.as_slice(), j as u32, width, height, job.cull_back, out);
+            }
+        });
+        self.tris.clear();
+        for v in &self.per_face {
+            self.tris.extend_from_slice(v);
+        }
+
+        if job.shading == Shading::Flat {
+            // One evaluation per face: at its centroid, with its geometric normal.
+            let (mut pos, mut nrm) = (Vec::with_capacity(tris.len()), Vec::with_capacity(tris.len()));
+            for t in tris {
+                let [a, b, c] = t.map(|i| verts.eye[i as usize]);
+                pos.push((a + b + c) / 3.0);
+                nrm.push(face_normal(a, b, c));
+            }
+            let two = job.scene.light_model.two_sided;
+            for side in 0..2 {
+                self.face_color[side].resize(tris.len(), [0.0; 4]);
+            }
+            let [front, back] = &mut self.face_color;
+            front.par_chunks_mut(GRAIN).zip(back.par_chunks_mut(GRAIN)).enumerate().for_each(|(k, (f, b))| {
+                let r = k * GRAIN..k * GRAIN + f.len();
+                lighter.light_batch_eye_sum(&pos[r.clone()], &nrm[r], f, if two { Some(b) } else { None });
+                if !two {
+                    b.copy_from_slice(f);
+                }
+            });
+        }
+    }
+}
+
+/// The unit normal of a face from its eye-space corners (zero when degenerate).
+pub fn face_normal(a: Vec3, b: Vec3, c: Vec3) -> Vec3 {
+    (b - a).cross(c - a).normalize_or_zero()
+}

@@ -1,0 +1,77 @@
+//! Stage 1: every mesh vertex to eye and clip space; Gouraud's per-vertex colours.
+
+use glam::{Mat3, Mat4, Vec3, Vec4};
+use rayon::prelude::*;
+
+use super::Job;
+use crate::specialised::{Lighter, Lit};
+use crate::transform::NormalMatrix;
+use crate::view::Shading;
+
+/// Per-vertex results of stage 1.
+#[derive(Default)]
+pub struct Vertices {
+    /// Eye-space positions.
+    pub eye: Vec<Vec3>,
+    /// Clip-space positions.
+    pub clip: Vec<Vec4>,
+    /// Eye-space normals, `(M^-1)^T n`, not yet normalised (Phong renormalises per pixel).
+    pub normal: Vec<Vec3>,
+    /// Gouraud: each vertex's colour per side, as OpenGL interpolates it: primary and
+    /// secondary each clamped to [0, 1], then added.
+    pub color: [Vec<[f32; 4]>; 2],
+    lit: [Vec<Lit>; 2],
+}
+
+fn clamped_sum(l: &Lit) -> [f32; 4] {
+    let c = |x: f32| x.clamp(0.0, 1.0);
+    let (p, s) = (l.primary, l.secondary);
+    [c(p[0]) + c(s[0]), c(p[1]) + c(s[1]), c(p[2]) + c(s[2]), c(p[3])]
+}
+
+impl Vertices {
+    /// Transforms the job's mesh (and lights it for Gouraud).
+    pub fn run(&mut self, job: &Job<'_>, lighter: &Lighter) {
+        let mesh = job.mesh;
+        let n = mesh.positions.len();
+        let eye_from_object = job.scene.eye_from_object();
+        let mv = eye_from_object.as_mat4();
+        let clip_from_object: Mat4 = (job.clip_from_eye * eye_from_object).as_mat4();
+        let nm: Mat3 = NormalMatrix::new(&eye_from_object).eye_from_object.as_mat3();
+        self.eye.resize(n, Vec3::ZERO);
+        self.clip.resize(n, Vec4::ZERO);
+        self.normal.resize(n, Vec3::ZERO);
+        const GRAIN: usize = 512;
+        self.eye
+            .par_chunks_mut(GRAIN)
+            .zip(self.clip.par_chunks_mut(GRAIN))
+            .zip(self.normal.par_chunks_mut(GRAIN))
+            .enumerate()
+            .for_each(|(k, ((eye, clip), normal))| {
+                let base = k * GRAIN;
+                for i in 0..eye.len() {
+                    let p = mesh.positions[base + i];
+                    eye[i] = mv.transform_point3(p);
+                    clip[i] = clip_from_object * p.extend(1.0);
+                    normal[i] = nm * mesh.normals[base + i];
+                }
+            });
+        if job.shading == Shading::Gouraud {
+            let two = job.scene.light_model.two_sided;
+            for side in 0..2 {
+                self.lit[side].resize(n, Lit::default());
+            }
+            let [front, back] = &mut self.lit;
+            let (pos, nrm) = (&mesh.positions, &mesh.normals);
+            front.par_chunks_mut(GRAIN).zip(back.par_chunks_mut(GRAIN)).enumerate().for_each(|(k, (f, b))| {
+                let r = k * GRAIN..k * GRAIN + f.len();
+                lighter.light_batch(&pos[r.clone()], &nrm[r], f, if two { Some(b) } else { None });
+            });
+            for side in 0..2 {
+                let src = if side == 1 && two { &self.lit[1] } else { &self.lit[0] };
+                self.color[side].clear();
+                self.color[side].extend(src.iter().map(clamped_sum));
+            }
+        }
+    }
+}
