@@ -26,6 +26,8 @@ pub enum Command {
     Eval(EvalArgs),
     /// Print the worked calculation of a vertex, step by step, in the worksheet's order.
     Explain(ExplainArgs),
+    /// Render the shaded view (sphere, teapot or cylinder) to a PNG.
+    Render(RenderArgs),
     /// Measure: the renderer, the lighting.
     #[command(subcommand)]
     Bench(crate::bench::BenchCommand),
@@ -77,9 +79,67 @@ pub struct EvalArgs {
     pub pow: PowArg,
 }
 
+/// An object of the shaded view.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum ObjectArg {
+    /// gluSphere.
+    Sphere,
+    /// The Utah teapot.
+    Teapot,
+    /// gluCylinder.
+    Cylinder,
+}
+
+/// A shading.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum ShadingArg {
+    /// Per-vertex lighting, colours interpolated.
+    Gouraud,
+    /// Per-pixel lighting.
+    Phong,
+    /// One evaluation per face.
+    Flat,
+}
+
+/// `phonglab render`.
+#[derive(Args, Debug)]
+pub struct RenderArgs {
+    /// The object (default: the scene's).
+    #[arg(long, value_enum)]
+    pub object: Option<ObjectArg>,
+    /// The shading (default: the scene's).
+    #[arg(long, value_enum)]
+    pub shading: Option<ShadingArg>,
+    /// Image width and height in pixels.
+    #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(1..=8192))]
+    pub size: u32,
+    /// The PNG to write.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// A scene file (TOML); default: the worksheet's scene.
+    #[arg(long)]
+    pub scene: Option<PathBuf>,
+    /// A ready-made scene instead: "worksheet" or "phong-demo".
+    #[arg(long, conflicts_with = "scene")]
+    pub preset: Option<String>,
+    /// DESIGN.md's benchmark scene at this frame instead (sphere r 1 50x50, teapot 0.8,
+    /// gluPerspective(40, 1, 0.5, 20)): the image Mesa's harness draws.
+    #[arg(long, conflicts_with_all = ["scene", "preset"])]
+    pub bench_frame: Option<u32>,
+    /// Power function for the specular and spot terms.
+    #[arg(long, value_enum, default_value = "exact")]
+    pub pow: PowArg,
+    /// Cull back faces.
+    #[arg(long)]
+    pub cull: bool,
+}
+
 /// `phonglab explain`.
 #[derive(Args, Debug)]
 pub struct ExplainArgs {
+    /// A scene file (TOML), as the app saves it.
+    #[arg(conflicts_with_all = ["worksheet", "preset"])]
+    pub scene: Option<PathBuf>,
     /// The worksheet's scene with modelview N (1-5). The default when no scene is given: 5.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u8).range(1..=5))]
     pub worksheet: Option<u8>,
@@ -106,6 +166,7 @@ pub fn run(command: Command) -> ExitCode {
         Command::Eval(a) => eval(&a),
         Command::Explain(a) => explain_cmd(&a),
         Command::Bench(b) => crate::bench::run(&b),
+        Command::Render(a) => render(&a),
     };
     match r {
         Ok(()) => ExitCode::SUCCESS,
@@ -152,8 +213,19 @@ fn eval(a: &EvalArgs) -> Result<()> {
     Ok(())
 }
 
+/// Reads and checks a scene file.
+pub fn load_scene_file(path: &Path) -> Result<phonglab_core::Document> {
+    let text = read(path)?;
+    phonglab_core::Document::from_toml(&text).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+}
+
 /// The scene `explain` works on.
 fn explain_scene(a: &ExplainArgs) -> Result<(Scene, String)> {
+    if let Some(p) = &a.scene {
+        let doc = load_scene_file(p)?;
+        let name = if doc.name.is_empty() { p.display().to_string() } else { doc.name.clone() };
+        return Ok((doc.scene, name));
+    }
     if let Some(p) = &a.preset {
         return match p.as_str() {
             "phong-demo" => Ok((presets::phong_demo(), "the Phong demo".into())),
@@ -182,5 +254,78 @@ fn explain_cmd(a: &ExplainArgs) -> Result<()> {
         Precision::F64 => explain_text::<f64>(&scene, &what, a)?,
     };
     print!("{text}");
+    Ok(())
+}
+
+fn render(a: &RenderArgs) -> Result<()> {
+    use phonglab_core::mesh::{Mesh, sphere, teapot};
+    use phonglab_core::render::{Job, Renderer};
+    use phonglab_core::{Document, ObjectKind, Shading};
+    let object = a.object.map(|o| match o {
+        ObjectArg::Sphere => ObjectKind::Sphere,
+        ObjectArg::Teapot => ObjectKind::Teapot,
+        ObjectArg::Cylinder => ObjectKind::Cylinder,
+    });
+    let shading = a.shading.map(|s| match s {
+        ShadingArg::Gouraud => Shading::Gouraud,
+        ShadingArg::Phong => Shading::Phong,
+        ShadingArg::Flat => Shading::Flat,
+    });
+    let size = a.size as usize;
+    let (scene, mesh, clip_from_eye, background, shading) = if let Some(frame) = a.bench_frame {
+        let object = object.unwrap_or(ObjectKind::Sphere);
+        let mesh = match object {
+            ObjectKind::Sphere => sphere::glu_sphere(1.0, 50, 50),
+            ObjectKind::Teapot => teapot::glut_teapot(0.8, 7),
+            ObjectKind::Cylinder => Mesh::for_view(&phonglab_core::View { object, ..Default::default() }),
+        };
+        (
+            presets::bench_scene(frame),
+            mesh,
+            presets::bench_projection(),
+            presets::BENCH_BACKGROUND,
+            shading.unwrap_or(Shading::Gouraud),
+        )
+    } else {
+        let mut doc = match (&a.scene, a.preset.as_deref()) {
+            (Some(p), _) => load_scene_file(p)?,
+            (None, Some("phong-demo")) => {
+                crate::app::state::preset_documents().pop().map(|(_, d)| d).unwrap_or_default()
+            }
+            (None, Some("worksheet")) | (None, None) => Document::default(),
+            (None, Some(other)) => bail!("unknown preset {other:?}: try worksheet or phong-demo"),
+        };
+        if let Some(o) = object {
+            doc.view.object = o;
+        }
+        if let Some(s) = shading {
+            doc.view.shading = s;
+        }
+        let mesh = Mesh::for_view(&doc.view);
+        (doc.shaded_scene(), mesh, phonglab_core::view::view_projection(1.0), [0.1, 0.1, 0.15], doc.view.shading)
+    };
+    let job = Job {
+        scene: &scene,
+        mesh: &mesh,
+        clip_from_eye,
+        shading,
+        background,
+        cull_back: a.cull,
+        options: EvalOptions { pow: a.pow.into() },
+    };
+    let mut r = Renderer::new();
+    let t = std::time::Instant::now();
+    let (img, stats) = r.render(&job, size, size)?;
+    let ms = t.elapsed().as_secs_f64() * 1e3;
+    crate::image_io::write_png(&a.output, img.width, img.height, &img.rgba)?;
+    eprintln!(
+        "{}: {}x{} px, {} triangles, {:.1} % covered, {} lighting evaluations, {ms:.1} ms",
+        a.output.display(),
+        img.width,
+        img.height,
+        stats.triangles,
+        100.0 * img.coverage(),
+        stats.evaluations
+    );
     Ok(())
 }

@@ -3,3 +3,4 @@
 pub mod app;
 pub mod bench;
 pub mod cli;
+pub mod image_io;

@@ -238,3 +238,46 @@ fn presets_load_the_phong_demo() {
     h.run_steps(1);
     assert_eq!(h.state().doc, phonglab_core::Document::default());
 }
+
+#[test]
+fn the_shaded_view_follows_the_demos_keys() {
+    let mut h = harness();
+    h.key_press(egui::Key::T);
+    h.run_steps(1);
+    assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Teapot);
+    h.key_press(egui::Key::Num2);
+    h.run_steps(1);
+    assert_eq!(h.state().doc.view.shading, phonglab_core::Shading::Phong);
+    h.key_press(egui::Key::C);
+    h.key_press(egui::Key::Num3);
+    h.run_steps(1);
+    assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Cylinder);
+    assert_eq!(h.state().doc.view.shading, phonglab_core::Shading::Flat);
+    h.get_by_label("Teapot").click();
+    h.run_steps(1);
+    assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Teapot);
+    h.get_by_label("Auto-rotate").click();
+    h.run_steps(3);
+    let spin = h.state().doc.view.spin_degrees;
+    assert!(spin > 0.0 && spin <= 1.5 + 1e-9, "0.5 degrees a frame: {spin}");
+}
+
+#[test]
+fn clicking_the_surface_explains_that_vertex() {
+    let mut h = harness();
+    let before = h.state().doc.scene.vertex;
+    let image = h.get_by_label_contains("Sphere Gouraud").rect();
+    // The image sits under its caption; click its centre (the sphere is in the middle).
+    let img = h.query_all_by_role(Role::Image).next().map(|n| n.rect()).unwrap_or(image);
+    h.get_all_by_role(Role::Image).next().unwrap().click();
+    h.run_steps(2);
+    let v = h.state().doc.scene.vertex;
+    assert_ne!(v, before, "picked a vertex ({img:?})");
+    assert!((v.position.truncate().length() - 0.5).abs() < 1e-5, "a vertex of the r = 0.5 sphere: {v:?}");
+    assert!((v.normal.length() - 1.0).abs() < 1e-5);
+    assert!(matches!(h.state().doc.camera, CameraSpec::Matrix(_)), "the shaded view's camera");
+    assert!(matches!(&h.state().message, Some(Message::Info(m)) if m.contains("Vertex")));
+    // The calculation now explains it: its normal in eye space faces the viewer.
+    let lit = Engine::<f64>::light_scene_vertex(&h.state().doc.scene).unwrap();
+    assert!(lit.normal_in_eye.z > 0.0, "the picked vertex faces the camera: {:?}", lit.normal_in_eye);
+}

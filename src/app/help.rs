@@ -27,6 +27,12 @@ pub enum Action {
     Precision,
     /// Back to the worksheet.
     Reset,
+    /// The shaded view's object.
+    Object(phonglab_core::ObjectKind),
+    /// The shaded view's shading.
+    Shading(phonglab_core::Shading),
+    /// Auto-rotation on/off.
+    AutoRotate,
 }
 
 /// (modifiers, key, shown as, action, description).
@@ -43,6 +49,25 @@ pub const SHORTCUTS: &[(Modifiers, Key, &str, Action, &str)] = &[
     (Modifiers::NONE, Key::W, "W", Action::TwoSided, "two-sided lighting on/off"),
     (Modifiers::NONE, Key::P, "P", Action::Precision, "f32 / f64 evaluation"),
     (Modifiers::CTRL, Key::R, "Ctrl+R", Action::Reset, "reset to the worksheet"),
+    (
+        Modifiers::NONE,
+        Key::S,
+        "S",
+        Action::Object(phonglab_core::ObjectKind::Sphere),
+        "shaded view: sphere (as the demo)",
+    ),
+    (Modifiers::NONE, Key::T, "T", Action::Object(phonglab_core::ObjectKind::Teapot), "shaded view: teapot"),
+    (Modifiers::NONE, Key::C, "C", Action::Object(phonglab_core::ObjectKind::Cylinder), "shaded view: cylinder"),
+    (
+        Modifiers::NONE,
+        Key::Num1,
+        "1",
+        Action::Shading(phonglab_core::Shading::Gouraud),
+        "Gouraud shading (as the demo)",
+    ),
+    (Modifiers::NONE, Key::Num2, "2", Action::Shading(phonglab_core::Shading::Phong), "Phong shading"),
+    (Modifiers::NONE, Key::Num3, "3", Action::Shading(phonglab_core::Shading::Flat), "Flat shading"),
+    (Modifiers::NONE, Key::A, "A", Action::AutoRotate, "auto-rotate the shaded view"),
 ];
 
 /// The actions whose keys were pressed this frame (none while a text field has focus).
@@ -74,5 +99,6 @@ pub fn help_ui(ui: &mut Ui) {
         }
     });
     ui.separator();
-    ui.label("Drag the vector plot to orbit it. Every field takes typed values: out-of-range ones are refused with a message and the scene keeps its last valid value.");
+    ui.label("Drag the vector plot or the shaded view to orbit it; scroll the shaded view to zoom; click its surface to explain that vertex.");
+    ui.label(" Every field takes typed values: out-of-range ones are refused with a message and the scene keeps its last valid value.");
 }

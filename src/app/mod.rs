@@ -7,6 +7,7 @@ pub mod controls;
 pub mod help;
 pub mod palette;
 pub mod result;
+pub mod shaded;
 pub mod state;
 pub mod vector_plot;
 pub mod widgets;
@@ -67,6 +68,9 @@ fn apply_action(state: &mut AppState, action: help::Action) {
             let i = RuleSet::ALL.iter().position(|r| *r == c.scene.rules.set).unwrap_or(0);
             c.scene.rules.set = RuleSet::ALL[(i + 1) % RuleSet::ALL.len()];
         }
+        A::Object(o) => c.view.object = o,
+        A::Shading(sh) => c.view.shading = sh,
+        A::AutoRotate => c.view.auto_rotate = !c.view.auto_rotate,
         A::NextNormals => {
             c.scene.normal_mode = match c.scene.normal_mode {
                 NormalMode::AsIs => NormalMode::Normalize,
@@ -149,7 +153,32 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     egui::CentralPanel::default().show(ui, |ui| {
         result::result_ui(ui, &eval, state.doc.scene.light_model.separate_specular, &state.message);
         ui.separator();
-        vector_plot::vector_plot_ui(ui, &mut state.ui.orbit, &eval, state.doc.scene.rules.specular);
+        let vectors = |ui: &mut Ui, state: &mut AppState| {
+            ui.push_id("vectors", |ui| {
+                ui.strong("Vectors at the vertex (eye space)");
+                vector_plot::vector_plot_ui(ui, &mut state.ui.orbit, &eval, state.doc.scene.rules.specular);
+            });
+        };
+        let shaded = |ui: &mut Ui, state: &mut AppState| {
+            ui.push_id("shaded", |ui| {
+                ui.strong("Shaded view");
+                let mut cache = std::mem::take(&mut state.shaded);
+                shaded::shaded_ui(ui, state, &mut cache);
+                state.shaded = cache;
+            });
+        };
+        if ui.available_width() >= 760.0 {
+            // Side by side.
+            ui.columns(2, |cols| {
+                vectors(&mut cols[0], state);
+                shaded(&mut cols[1], state);
+            });
+        } else {
+            // Stacked, each half of the height.
+            let h = ui.available_height() / 2.0;
+            ui.allocate_ui(egui::vec2(ui.available_width(), h), |ui| vectors(ui, state));
+            shaded(ui, state);
+        }
     });
 
     if state.ui.show_help {

@@ -82,7 +82,7 @@ impl Default for UiState {
 }
 
 /// The whole app state.
-#[derive(Clone, Debug, PartialEq, Default)]
+#[derive(Default)]
 pub struct AppState {
     /// The last valid document.
     pub doc: Document,
@@ -90,6 +90,8 @@ pub struct AppState {
     pub ui: UiState,
     /// The last refusal or notice.
     pub message: Option<Message>,
+    /// The shaded view's renderer and texture, kept between frames.
+    pub shaded: super::shaded::ShadedCache,
 }
 
 /// The colours of one side, as f64.

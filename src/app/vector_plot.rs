@@ -62,7 +62,10 @@ pub fn vector_plot_ui(ui: &mut Ui, orbit: &mut Orbit, eval: &Evaluated, specular
     });
     let r = view_rotation(*orbit);
     let first = eval.lights.first().copied();
+    let side = ui.available_width().min(ui.available_height() - 4.0).max(120.0);
     let response = Plot::new("vector plot")
+        .width(ui.available_width())
+        .height(side)
         .data_aspect(1.0)
         .allow_drag(false)
         .allow_zoom(false)

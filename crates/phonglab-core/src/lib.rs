@@ -43,4 +43,4 @@ pub use pow::PowFn;
 pub use real::{Real, Vec3Ops};
 pub use rules::{RuleSet, Rules, SpecularGate, SpecularModel};
 pub use scene::{Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Rgba, Scene, Vertex};
-pub use view::{ObjectKind, Shading, View};
+pub use view::{ObjectKind, Shading, View, ViewCamera};

@@ -58,6 +58,39 @@ impl Shading {
     }
 }
 
+/// The shaded view's orbit camera: it looks at the origin from `distance` away, turned by
+/// `yaw` about y and `pitch` about x (degrees).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct ViewCamera {
+    /// Degrees about y.
+    pub yaw: f64,
+    /// Degrees about x, in [-89, 89].
+    pub pitch: f64,
+    /// Distance from the origin, in [0.6, 20].
+    pub distance: f64,
+}
+
+impl Default for ViewCamera {
+    fn default() -> Self {
+        Self { yaw: 0.0, pitch: 15.0, distance: 2.4 }
+    }
+}
+
+impl ViewCamera {
+    /// World to eye.
+    pub fn eye_from_world(&self) -> glam::DMat4 {
+        glam::DMat4::from_translation(glam::DVec3::new(0.0, 0.0, -self.distance))
+            * glam::DMat4::from_rotation_x(self.pitch.to_radians())
+            * glam::DMat4::from_rotation_y(self.yaw.to_radians())
+    }
+}
+
+/// The shaded view's projection: gluPerspective(40, aspect, 0.1, 100).
+pub fn view_projection(aspect: f64) -> glam::DMat4 {
+    crate::render::perspective(40.0, aspect, 0.1, 100.0)
+}
+
 /// Tessellation limits: at least a closed shape, at most what stays interactive.
 pub const SLICES_RANGE: std::ops::RangeInclusive<u32> = 3..=400;
 /// Stacks of the sphere and cylinder.
@@ -92,6 +125,8 @@ pub struct View {
     pub auto_rotate: bool,
     /// The object's spin about y so far, in degrees.
     pub spin_degrees: f64,
+    /// The orbit camera.
+    pub camera: ViewCamera,
 }
 
 impl Default for View {
@@ -108,6 +143,7 @@ impl Default for View {
             demo_normals: false,
             auto_rotate: false,
             spin_degrees: 0.0,
+            camera: ViewCamera::default(),
         }
     }
 }
@@ -127,9 +163,42 @@ impl View {
         check("teapot_grid", self.teapot_grid, &GRID_RANGE, "[1, 64]")?;
         check("cylinder_slices", self.cylinder_slices, &SLICES_RANGE, "[3, 400]")?;
         check("cylinder_stacks", self.cylinder_stacks, &STACKS_RANGE, "[1, 400]")?;
-        if !self.spin_degrees.is_finite() {
-            return Err(SceneError::NotFinite { field: "view.spin_degrees".into(), value: self.spin_degrees });
+        let c = &self.camera;
+        for (f, v) in [
+            ("view.spin_degrees", self.spin_degrees),
+            ("view.camera.yaw", c.yaw),
+            ("view.camera.pitch", c.pitch),
+            ("view.camera.distance", c.distance),
+        ] {
+            if !v.is_finite() {
+                return Err(SceneError::NotFinite { field: f.into(), value: v });
+            }
+        }
+        if !(-89.0..=89.0).contains(&c.pitch) {
+            return Err(SceneError::OutOfRange {
+                field: "view.camera.pitch".into(),
+                value: c.pitch,
+                allowed: "[-89, 89]",
+            });
+        }
+        if !(0.6..=20.0).contains(&c.distance) {
+            return Err(SceneError::OutOfRange {
+                field: "view.camera.distance".into(),
+                value: c.distance,
+                allowed: "[0.6, 20]",
+            });
         }
         Ok(())
+    }
+}
+
+impl crate::Document {
+    /// The scene as the shaded view draws it: the document's lighting, the view's camera,
+    /// the object spun about y by `view.spin_degrees`.
+    pub fn shaded_scene(&self) -> crate::Scene {
+        let mut s = self.scene.clone();
+        s.eye_from_world = self.view.camera.eye_from_world();
+        s.world_from_object = glam::DMat4::from_rotation_y(self.view.spin_degrees.to_radians());
+        s
     }
 }
