@@ -107,6 +107,8 @@ pub struct Stats {
     pub rasterised: usize,
     /// Lighting evaluations made (vertices, faces or pixels).
     pub evaluations: usize,
+    /// Milliseconds spent in each stage: vertices, setup, rasterisation, resolve.
+    pub stage_ms: [f64; 4],
 }
 
 /// The renderer: keeps its buffers and its specialised lighting plan from frame to frame
@@ -143,12 +145,24 @@ impl Renderer {
         let lighter = self.lighter.as_ref().expect("set just above");
         let width = width.max(1);
         let height = height.max(1);
+        let mut clock = std::time::Instant::now();
+        let mut lap = || {
+            let now = std::time::Instant::now();
+            let ms = (now - clock).as_secs_f64() * 1e3;
+            clock = now;
+            ms
+        };
         self.vertices.run(job, lighter);
+        let t_vertices = lap();
         self.setup.run(job, &self.vertices, lighter, width, height);
+        let t_setup = lap();
         raster::rasterise(&self.setup, width, height, &mut self.image, &mut self.bins);
+        let t_raster = lap();
         let evaluations =
             resolve::resolve(job, &self.vertices, &self.setup, lighter, &mut self.image, &mut self.scratch);
+        let t_resolve = lap();
         let stats = Stats {
+            stage_ms: [t_vertices, t_setup, t_raster, t_resolve],
             triangles: job.mesh.triangle_count(),
             rasterised: self.setup.tris.len(),
             evaluations: evaluations + if job.shading == Shading::Gouraud { self.vertices.eye.len() } else { 0 },

@@ -46,9 +46,13 @@ pub fn rasterise(setup: &Setup, width: usize, height: usize, image: &mut Image, 
     for b in bins.iter_mut() {
         b.clear();
     }
-    for (i, t) in setup.tris.iter().enumerate() {
-        for bin in &mut bins[t.y0 as usize / BAND..=t.y1 as usize / BAND] {
-            bin.push(i as u32);
+    // Front faces first: a closed surface's back faces then mostly fail the depth test and
+    // write nothing (the image is the same; only exact depth ties could differ).
+    for back in [false, true] {
+        for (i, t) in setup.tris.iter().enumerate().filter(|(_, t)| t.back == back) {
+            for bin in &mut bins[t.y0 as usize / BAND..=t.y1 as usize / BAND] {
+                bin.push(i as u32);
+            }
         }
     }
 
@@ -140,15 +144,16 @@ fn draw(
             let l2_0 = ((row_w[2] + step_x[2] * lo) as f64 * inv_area) as f32;
             let range = row + lo as usize..=row + hi as usize;
             let (d, r, b) = (&mut depth[range.clone()], &mut raster[range.clone()], &mut bary[range]);
-            for k in 0..d.len() {
+            // Branch-free: every cell is rewritten with either the new fragment or its own
+            // old value, so the loop vectorises.
+            for (k, ((d, r), b)) in d.iter_mut().zip(r.iter_mut()).zip(b.iter_mut()).enumerate() {
                 let kf = k as f32;
                 let (l1, l2) = (l1_0 + sl1 * kf, l2_0 + sl2 * kf);
                 let z = z0 + dz1 * l1 + dz2 * l2;
-                if z < d[k] {
-                    d[k] = z;
-                    r[k] = ti;
-                    b[k] = [l1, l2];
-                }
+                let pass = z < *d;
+                *d = if pass { z } else { *d };
+                *r = if pass { ti } else { *r };
+                *b = if pass { [l1, l2] } else { *b };
             }
         }
         for k in 0..3 {

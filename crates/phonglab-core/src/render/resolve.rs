@@ -40,7 +40,10 @@ struct Fragments {
 
 #[inline(always)]
 fn to_u8(c: f32) -> u8 {
-    (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+    // max/min (IEEE maxNum/minNum) also turn NaN into 0, so v is in [0.5, 255.5].
+    let v = c.max(0.0).min(1.0) * 255.0 + 0.5;
+    // SAFETY: v is finite and within u32's range (see above).
+    unsafe { v.to_int_unchecked::<u32>() as u8 }
 }
 
 /// Perspective-correct barycentrics of the original mesh triangle at pixel `i`.

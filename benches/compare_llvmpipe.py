@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""phonglab's CPU renderer against Mesa llvmpipe on DESIGN.md's benchmark scene, in one run.
+
+  benches/compare_llvmpipe.py --glref PATH/TO/shared/glref [--frames 200] [--rounds 3]
+
+Runs `phonglab bench render` and glref's `bench_llvmpipe.py` (default thread count: all
+cores) alternately, `--rounds` times each, so background load hits both alike, and takes
+each configuration's best round. Prints one line per object and shading:
+
+  object shading phonglab_ms llvmpipe_ms ratio (phonglab / llvmpipe; < 1 is faster)
+
+Gouraud is compared with llvmpipe's fixed-function pipeline, Phong with the harness's
+per-pixel GLSL; Flat has no llvmpipe counterpart and is shown alone. The harness needs its
+setup (glref/setup.sh: Mesa, Xvfb, a venv with PyOpenGL); phonglab itself needs nothing.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+
+
+def phonglab(frames):
+    exe = os.path.join(ROOT, "target", "release", "phonglab")
+    out = subprocess.run([exe, "bench", "render", "--frames", str(frames)], check=True, capture_output=True, text=True).stdout
+    rows = {}
+    for line in out.splitlines():
+        if line.startswith("#") or line.startswith("object"):
+            continue
+        obj, shading, ms, tris, cov = line.split()
+        rows[(obj, shading)] = float(ms)
+    return rows
+
+
+def llvmpipe(glref, frames):
+    py = os.path.join(glref, ".venv", "bin", "python")
+    with tempfile.TemporaryDirectory() as d:
+        j = os.path.join(d, "r.json")
+        subprocess.run([py, os.path.join(glref, "bench_llvmpipe.py"), "--frames", str(frames), "--threads", "default", "--json", j],
+                       check=True, capture_output=True, text=True)
+        res = json.load(open(j))[0]["results"]
+    names = {"sphere_50x50": "sphere", "glut_teapot": "teapot"}
+    modes = {"ff_gouraud": "gouraud", "glsl_phong": "phong"}
+    return {(names[r["mesh"]], modes[r["mode"]]): r["ms_per_frame"] for r in res}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--glref", required=True, help="the glref harness directory (with its .venv)")
+    ap.add_argument("--frames", type=int, default=200)
+    ap.add_argument("--rounds", type=int, default=3)
+    a = ap.parse_args()
+    subprocess.run(["cargo", "build", "--release", "--locked", "-q"], cwd=ROOT, check=True)
+    ours, theirs = {}, {}
+    for r in range(a.rounds):
+        for k, v in phonglab(a.frames).items():
+            ours[k] = min(v, ours.get(k, float("inf")))
+        for k, v in llvmpipe(a.glref, a.frames).items():
+            theirs[k] = min(v, theirs.get(k, float("inf")))
+        print("round %d of %d done" % (r + 1, a.rounds), file=sys.stderr)
+    print("# %d frames, best of %d alternating rounds, %d cpus" % (a.frames, a.rounds, os.cpu_count()))
+    print("object shading phonglab_ms llvmpipe_ms ratio")
+    for (obj, sh), ms in sorted(ours.items()):
+        t = theirs.get((obj, sh))
+        if t:
+            print("%s %s %.3f %.3f %.2f" % (obj, sh, ms, t, ms / t))
+        else:
+            print("%s %s %.3f - -" % (obj, sh, ms))
+
+
+if __name__ == "__main__":
+    main()
