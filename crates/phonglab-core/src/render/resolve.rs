@@ -39,6 +39,7 @@ struct Fragments {
 }
 
 #[inline(always)]
+#[allow(clippy::manual_clamp)] // clamp keeps NaN; max/min turn it into 0, which the cast below needs
 fn to_u8(c: f32) -> u8 {
     // max/min (IEEE maxNum/minNum) also turn NaN into 0, so v is in [0.5, 255.5].
     let v = c.max(0.0).min(1.0) * 255.0 + 0.5;
