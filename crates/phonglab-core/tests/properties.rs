@@ -233,9 +233,13 @@ fn well_conditioned(scene: &Scene) -> bool {
     if scene.vertex.normal.length() < 0.1 || scene.material.shininess < 1.0 {
         return false;
     }
-    // Unnormalised normals raised to powers up to 128 can leave f32's range (3.4e38):
-    // f32's inf is then the correctly rounded answer, not a disagreement.
-    if lit.front.primary.iter().chain(&lit.back.primary).chain(&lit.front.secondary).any(|x| x.abs() > 1e30) {
+    // Unnormalised normals raised to powers up to 128 can leave f32's range (3.4e38),
+    // in the result or in a term before att * spot scales it back (2.7^97 = 1.5e42 times a
+    // spot factor of 6e-34): f32 then holds inf, as OpenGL would, not a disagreement.
+    let huge = |v: glam::DVec3| v.abs().max_element() > 1e30;
+    if lit.front.primary.iter().chain(&lit.back.primary).chain(&lit.front.secondary).any(|x| x.abs() > 1e30)
+        || lit.lights().iter().any(|t| [t.front, t.back].iter().any(|s| huge(s.diffuse) || huge(s.specular)))
+    {
         return false;
     }
     let gate_on_cos = scene.rules.set == RuleSet::Worksheet;
