@@ -281,3 +281,16 @@ fn clicking_the_surface_explains_that_vertex() {
     let lit = Engine::<f64>::light_scene_vertex(&h.state().doc.scene).unwrap();
     assert!(lit.normal_in_eye.z > 0.0, "the picked vertex faces the camera: {:?}", lit.normal_in_eye);
 }
+
+#[test]
+fn the_calculation_says_what_the_specialised_plan_skips() {
+    let mut h = harness();
+    // The worksheet's light is positional and attenuated: attenuation is computed.
+    assert!(h.query_by_label_contains("skipped by the specialised evaluator: the light is directional").is_none());
+    h.get_by_label_contains("Specialised plan:");
+    h.get_by_label("Directional (w = 0)").click();
+    h.run_steps(2);
+    h.get_by_label("skipped by the specialised evaluator: the light is directional");
+    // Named in the plan summary and greyed in the spot-factor step: at least once.
+    assert!(h.get_all_by_label_contains("cutoff 180: not a spotlight").count() >= 1);
+}

@@ -3,14 +3,37 @@
 
 use egui::{RichText, Ui};
 use phonglab_core::explain::{Explanation, Side, fmt_value};
+use phonglab_core::plan::Effect;
 
 use super::palette;
 
 /// Significant digits shown.
 const DIGITS: usize = 8;
 
-/// The steps; `side` is switchable when two-sided lighting is on.
-pub fn calculation_ui(ui: &mut Ui, ex: &Explanation, side: &mut Side, two_sided: bool) {
+/// The specialised evaluator's plan: what it computes and what it skips, and why.
+fn plan_ui(ui: &mut Ui, effects: &[Effect]) {
+    let skipped = effects.iter().filter(|e| !e.on).count();
+    egui::CollapsingHeader::new(format!(
+        "Specialised plan: {} effects computed, {skipped} skipped",
+        effects.len() - skipped
+    ))
+    .id_salt("plan")
+    .show(ui, |ui| {
+        for e in effects {
+            let who = e.light.map(|i| format!("light {i}: ")).unwrap_or_default();
+            let text = format!("{who}{}: {}", e.name, e.why);
+            if e.on {
+                ui.label(RichText::new(format!("computed  {text}")).small());
+            } else {
+                ui.label(RichText::new(format!("skipped   {text}")).small().weak());
+            }
+        }
+    });
+}
+
+/// The steps; `side` is switchable when two-sided lighting is on. Steps the specialised
+/// evaluator skips are greyed, with the reason.
+pub fn calculation_ui(ui: &mut Ui, ex: &Explanation, side: &mut Side, two_sided: bool, effects: &[Effect]) {
     ui.horizontal(|ui| {
         ui.heading("Worked calculation");
         if ui.button("Copy as Markdown").on_hover_text("Copies every step as a Markdown table.").clicked() {
@@ -25,12 +48,15 @@ pub fn calculation_ui(ui: &mut Ui, ex: &Explanation, side: &mut Side, two_sided:
         });
     }
     ui.small(&ex.heading);
+    plan_ui(ui, effects);
     ui.separator();
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
         for (k, st) in ex.steps.iter().enumerate() {
+            let skip = effects.iter().find(|e| !e.on && e.light == st.light && e.step_kind() == Some(st.kind));
             ui.horizontal_wrapped(|ui| {
                 ui.label(RichText::new(format!("{:>2}.", k + 1)).monospace().weak());
-                ui.label(RichText::new(&st.title).strong());
+                let title = RichText::new(&st.title);
+                ui.label(if skip.is_some() { title.weak() } else { title.strong() });
                 ui.label(RichText::new(&st.formula).monospace().weak());
             });
             let value = match &st.value {
@@ -38,11 +64,17 @@ pub fn calculation_ui(ui: &mut Ui, ex: &Explanation, side: &mut Side, two_sided:
                 None => format!("{} = n/a", st.name),
             };
             let mut text = RichText::new(value).monospace();
-            if let Some(c) = palette::step(st.kind) {
+            if let Some(c) = palette::step(st.kind).filter(|_| skip.is_none()) {
                 text = text.color(c);
+            }
+            if skip.is_some() {
+                text = text.weak();
             }
             ui.indent(("value", k), |ui| {
                 ui.label(text);
+                if let Some(e) = skip {
+                    ui.label(RichText::new(format!("skipped by the specialised evaluator: {}", e.why)).small().weak());
+                }
                 for n in &st.notes {
                     ui.label(RichText::new(format!("note: {n}")).color(palette::NOTE));
                 }

@@ -125,6 +125,25 @@ impl fmt::Display for Effect {
     }
 }
 
+impl Effect {
+    /// The step of the worked calculation this effect decides (for showing a skipped step
+    /// greyed with its reason).
+    pub fn step_kind(&self) -> Option<crate::explain::StepKind> {
+        use crate::explain::StepKind as K;
+        Some(match self.name {
+            "normalisation" => K::Normal,
+            "view vector V" => K::V,
+            "light vector L and distance d" => K::Distance,
+            "attenuation" => K::Attenuation,
+            "spotlight" => K::Spot,
+            "halfway vector H" => K::H,
+            "reflection vector R" => K::R,
+            "specular power" => K::Specular,
+            _ => return None,
+        })
+    }
+}
+
 impl Key {
     /// Every effect with whether it is computed and why, lights in order.
     pub fn effects(&self) -> Vec<Effect> {
