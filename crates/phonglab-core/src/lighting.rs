@@ -75,7 +75,8 @@ pub(crate) struct PreparedSpot<S: Real> {
 /// axis `s`? OpenGL's test is `a . s >= cos(cutoff)`; near the axis a cosine cannot
 /// resolve small angles (cos 0.01 deg = 1 - 1.5e-8 rounds to 1 in f32), so for cutoffs
 /// under 45 degrees the equivalent `|a x s| <= sin(cutoff)` (with `a . s >= 0`) is used.
-fn inside_cone(a: DVec3, s: DVec3, cutoff: f64, cos_cutoff: f64, sin_cutoff: f64) -> bool {
+#[inline(always)]
+pub(crate) fn inside_cone(a: DVec3, s: DVec3, cutoff: f64, cos_cutoff: f64, sin_cutoff: f64) -> bool {
     let cos = a.dot(s);
     if cutoff >= 45.0 { cos >= cos_cutoff } else { cos >= 0.0 && a.cross(s).length() <= sin_cutoff }
 }

@@ -23,7 +23,7 @@
 use glam::{DVec3, Vec3};
 
 use crate::error::SceneError;
-use crate::lighting::{Engine, EvalOptions, LightPos, PreparedLight, terms};
+use crate::lighting::{Engine, EvalOptions, LightPos, PreparedLight, inside_cone, terms};
 use crate::plan::Key;
 use crate::real::Vec3Ops;
 use crate::robust::{mul0, transform_point};
@@ -75,18 +75,27 @@ fn fast_loop(
     }
 }
 
-/// A positional light without a spot, one side, Blinn-Phong, OpenGL's gate: the stages of
-/// `terms::light_vector`, `terms::attenuation`, `terms::halfway` and `terms::side`
-/// written out on plain arrays (f64 for L and d, as the general engine), so they
-/// vectorise. The same operations in the same order.
+/// A positional light (a spotlight or not), one side, Blinn-Phong, OpenGL's gate: the
+/// stages of `terms::light_vector`, `terms::attenuation`, `terms::spot`, `terms::halfway`
+/// and `terms::side` written out on plain arrays (f64 for L and d, as the general engine),
+/// so they vectorise. The same operations in the same order.
 #[inline(always)]
-fn positional_fast(c: &mut Chunk, pl: &PreparedLight<f32>, lp: DVec3, e: &Engine<f32>, local_viewer: bool) {
+fn positional_fast(
+    c: &mut Chunk,
+    pl: &PreparedLight<f32>,
+    lp: DVec3,
+    e: &Engine<f32>,
+    local_viewer: bool,
+    pow: impl Fn(f32, f32) -> f32,
+) {
     let n = c.n;
     let [amb, dif, spe] = pl.products[0].map(|v| v.to_array());
     let shin = e.sides[0].shininess;
     let attenuated = pl.k != [1.0, 0.0, 0.0];
     let (mut lx, mut ly, mut lz, mut d) = ([0.0f32; CHUNK], [0.0f32; CHUNK], [0.0f32; CHUNK], [0.0f32; CHUNK]);
     let mut l_ok = [false; CHUNK];
+    // L in f64, for the spot's cone test.
+    let (mut lx64, mut ly64, mut lz64) = ([0.0f64; CHUNK], [0.0f64; CHUNK], [0.0f64; CHUNK]);
     // L = normalize(P_l - P) and d = |P_l - P|, both from one exact power-of-two scaling
     // (robust::try_normalize and robust::scaled_length), in f64.
     for i in 0..n {
@@ -97,18 +106,37 @@ fn positional_fast(c: &mut Chunk, pl: &PreparedLight<f32>, lp: DVec3, e: &Engine
         let u = vp * s;
         let sq = (u.x * u.x + u.y * u.y + u.z * u.z).sqrt();
         let inv = 1.0 / sq;
-        lx[i] = (u.x * inv) as f32;
-        ly[i] = (u.y * inv) as f32;
-        lz[i] = (u.z * inv) as f32;
+        (lx64[i], ly64[i], lz64[i]) = (u.x * inv, u.y * inv, u.z * inv);
+        lx[i] = lx64[i] as f32;
+        ly[i] = ly64[i] as f32;
+        lz[i] = lz64[i] as f32;
         d[i] = if ok { (sq / s) as f32 } else { m as f32 };
         l_ok[i] = ok;
     }
-    // att = 1 / (k0 + k1 d + k2 d^2); the spot factor is 1: scale = mul0(att, 1).
-    let mut scale = [1.0f32; CHUNK];
-    if attenuated {
-        for i in 0..n {
-            scale[i] = mul0(terms::attenuation(pl.k, d[i]), 1.0);
+    // The spot factor (terms::spot): (-L . s)^e inside the cone, 0 outside; 1 without a spot.
+    let mut spot = [1.0f32; CHUNK];
+    if let Some(sp) = pl.spot {
+        match sp.axis {
+            None => spot[..n].fill(0.0),
+            Some(axis) => {
+                let (mut cos, mut inside) = ([0.0f32; CHUNK], [false; CHUNK]);
+                for i in 0..n {
+                    let l = DVec3::new(lx64[i], ly64[i], lz64[i]);
+                    cos[i] = (-l.dot(axis)) as f32;
+                    inside[i] = l_ok[i] && inside_cone(-l, axis, sp.cutoff, sp.cos_cutoff, sp.sin_cutoff);
+                }
+                for i in 0..n {
+                    let p = pow(cos[i].max(0.0), sp.exponent);
+                    spot[i] = if inside[i] { p } else { 0.0 };
+                }
+            }
         }
+    }
+    // att = 1 / (k0 + k1 d + k2 d^2); scale = mul0(att, spot).
+    let mut scale = [1.0f32; CHUNK];
+    for i in 0..n {
+        let att = if attenuated { terms::attenuation(pl.k, d[i]) } else { 1.0 };
+        scale[i] = mul0(att, spot[i]);
     }
     // H = normalize(L + V) (robust::try_normalize in f32).
     let (mut hx, mut hy, mut hz) = ([0.0f32; CHUNK], [0.0f32; CHUNK], [0.0f32; CHUNK]);
@@ -138,17 +166,8 @@ fn positional_fast(c: &mut Chunk, pl: &PreparedLight<f32>, lp: DVec3, e: &Engine
     }
     let mut p = [1.0f32; CHUNK];
     if shin != 0.0 {
-        match e.options.pow {
-            crate::PowFn::Exact => {
-                for i in 0..n {
-                    p[i] = crate::pow::pow_f32(cos[i], shin);
-                }
-            }
-            other => {
-                for i in 0..n {
-                    p[i] = other.pow(cos[i], shin);
-                }
-            }
+        for i in 0..n {
+            p[i] = pow(cos[i], shin);
         }
     }
     // The terms and the sums.
@@ -765,13 +784,17 @@ impl Lighter {
     #[inline(always)]
     fn positional(&self, c: &mut Chunk, pl: &PreparedLight<f32>) {
         let e = &self.engine;
-        if pl.spot.is_none()
-            && !self.key.two_sided
+        if !self.key.two_sided
             && e.rules.specular == SpecularModel::BlinnPhong
             && self.fast_path_ok()
             && let LightPos::Positional(lp) = pl.pos
         {
-            positional_fast(c, pl, lp, e, self.key.local_viewer);
+            let lv = self.key.local_viewer;
+            match e.options.pow {
+                crate::PowFn::Exact => positional_fast(c, pl, lp, e, lv, crate::pow::pow_f32),
+                crate::PowFn::Llvmpipe => positional_fast(c, pl, lp, e, lv, |x, y| crate::PowFn::Llvmpipe.pow(x, y)),
+                crate::PowFn::Schlick => positional_fast(c, pl, lp, e, lv, |x, y| crate::PowFn::Schlick.pow(x, y)),
+            }
             return;
         }
         let attenuated = pl.k != [1.0, 0.0, 0.0];

@@ -149,3 +149,42 @@ proptest! {
         }
     }
 }
+
+/// The benchmark scenes take the fast paths (directional; positional; positional with
+/// spots), and so do spots whose cones cut the sphere (the cross-product test under 45
+/// degrees, the cosine test above): each of 4096 sphere points bit for bit.
+#[test]
+fn the_fast_paths_bit_for_bit() {
+    use phonglab_core::presets::LightingBench;
+    let (positions, normals) = phonglab_core::presets::sphere_points(4096);
+    let mut scenes: Vec<(String, Scene, bool)> =
+        LightingBench::ALL.iter().map(|b| (b.name().to_owned(), b.scene(), false)).collect();
+    for (cutoff, closer) in [(8.0, 1.0), (50.0, 0.3)] {
+        let mut s = LightingBench::EightSpots.scene();
+        s.lights.truncate(2);
+        for l in &mut s.lights {
+            l.spot_cutoff = cutoff;
+            l.position = (l.position.truncate() * closer).extend(1.0);
+        }
+        scenes.push((format!("spots cut off at {cutoff}"), s, true));
+    }
+    for (name, scene, partial) in scenes {
+        for pow in PowFn::ALL {
+            let options = EvalOptions { pow };
+            let l = Lighter::new(&scene, options).unwrap();
+            let mut front = vec![Lit::default(); positions.len()];
+            l.light_batch(&positions, &normals, &mut front, None);
+            let mut dark = 0;
+            for i in 0..positions.len() {
+                let v = Vertex { position: positions[i].as_dvec3().extend(1.0), normal: normals[i].as_dvec3() };
+                let g = general(&scene, options, &v);
+                assert!(same(&[front[i], front[i]], &g), "{name} {pow:?} vertex {i}: {:?} vs {g:?}", front[i]);
+                // Outside every cone only the scene's ambient is left: 0.2 x bronze's 0.2125.
+                dark += usize::from(front[i].primary[0] <= 0.0425 + 1e-6);
+            }
+            if partial {
+                assert!(dark > 100 && dark < positions.len() - 100, "{name}: {dark} vertices outside every cone");
+            }
+        }
+    }
+}
