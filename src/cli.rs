@@ -28,6 +28,9 @@ pub enum Command {
     Explain(ExplainArgs),
     /// Render the shaded view (sphere, teapot or cylinder) to a PNG.
     Render(RenderArgs),
+    /// Write scene files as glref cases (JSON), to check them against a real OpenGL with
+    /// the Mesa harness (`glref.py CASES.json OUT.json`) or with `phonglab eval`.
+    Case(CaseArgs),
     /// Measure: the renderer, the lighting.
     #[command(subcommand)]
     Bench(crate::bench::BenchCommand),
@@ -160,6 +163,14 @@ pub struct ExplainArgs {
     pub digits: u8,
 }
 
+/// `phonglab case`.
+#[derive(Args, Debug)]
+pub struct CaseArgs {
+    /// Scene files (TOML); each becomes one case, its id the file's stem.
+    #[arg(required = true)]
+    pub scenes: Vec<PathBuf>,
+}
+
 /// Runs a subcommand; the exit code is 0 on success, 2 on input that cannot be used.
 pub fn run(command: Command) -> ExitCode {
     let r = match command {
@@ -167,6 +178,7 @@ pub fn run(command: Command) -> ExitCode {
         Command::Explain(a) => explain_cmd(&a),
         Command::Bench(b) => crate::bench::run(&b),
         Command::Render(a) => render(&a),
+        Command::Case(a) => case(&a),
     };
     match r {
         Ok(()) => ExitCode::SUCCESS,
@@ -254,6 +266,29 @@ fn explain_cmd(a: &ExplainArgs) -> Result<()> {
         Precision::F64 => explain_text::<f64>(&scene, &what, a)?,
     };
     print!("{text}");
+    Ok(())
+}
+
+/// The scene files as `{"cases": [...]}`.
+pub fn cases_json(paths: &[PathBuf]) -> Result<serde_json::Value> {
+    let mut cases = Vec::new();
+    for p in paths {
+        let doc = load_scene_file(p)?;
+        if doc.scene.rules != phonglab_core::Rules::OPENGL {
+            eprintln!(
+                "phonglab: note: {} uses the {} rules; a case always means OpenGL's",
+                p.display(),
+                doc.scene.rules.set.label()
+            );
+        }
+        let id = p.file_stem().map_or_else(|| format!("case{}", cases.len()), |s| s.to_string_lossy().into_owned());
+        cases.push(glref::case_json(&id, &doc.scene));
+    }
+    Ok(serde_json::json!({ "cases": cases }))
+}
+
+fn case(a: &CaseArgs) -> Result<()> {
+    println!("{}", serde_json::to_string_pretty(&cases_json(&a.scenes)?)?);
     Ok(())
 }
 

@@ -323,9 +323,94 @@ pub fn result_json(id: &str, r: &Result<CaseColors, String>) -> Value {
     }
 }
 
+/// A scene as one glref case (the inverse of [`parse_case`] for what OpenGL can express),
+/// so any scene can be checked against a real OpenGL with the harness. The schema has one
+/// `light_modelview` for all lights, so each light is written already in eye space (its
+/// position by the modelview current when it was placed, its spot direction by that
+/// matrix's upper 3x3, as `glLight` does) under the identity. The rule set and the
+/// specular model are not GL state: a case always means OpenGL's rules.
+pub fn case_json(id: &str, scene: &Scene) -> Value {
+    let rows = |m: &DMat4| Value::Array(crate::transform::mat4_rows(m).iter().map(|r| nums(r)).collect());
+    let v4 = |v: DVec4| nums(&v.to_array());
+    let v3 = |v: DVec3| nums(&v.to_array());
+    let material = |m: &Material| {
+        json!({
+            "ambient": v4(m.ambient), "diffuse": v4(m.diffuse), "specular": v4(m.specular),
+            "emission": v4(m.emission), "shininess": json_number(m.shininess),
+        })
+    };
+    let lights: Vec<Value> = scene
+        .lights
+        .iter()
+        .map(|l| {
+            let m = scene.eye_from_light(l);
+            json!({
+                "position": v4(m * l.position),
+                "ambient": v4(l.ambient),
+                "diffuse": v4(l.diffuse),
+                "specular": v4(l.specular),
+                "spot_direction": v3(glam::DMat3::from_mat4(m) * l.spot_direction),
+                "spot_cutoff": json_number(l.spot_cutoff),
+                "spot_exponent": json_number(l.spot_exponent),
+                "constant_attenuation": json_number(l.attenuation[0]),
+                "linear_attenuation": json_number(l.attenuation[1]),
+                "quadratic_attenuation": json_number(l.attenuation[2]),
+            })
+        })
+        .collect();
+    let mut case = json!({
+        "id": id,
+        "modelview": rows(&scene.eye_from_object()),
+        "light_modelview": rows(&DMat4::IDENTITY),
+        "vertex": v4(scene.vertex.position),
+        "normal": v3(scene.vertex.normal),
+        "lights": lights,
+        "material": material(&scene.material),
+        "light_model_ambient": v4(scene.light_model.ambient),
+        "local_viewer": scene.light_model.local_viewer,
+        "two_sided": scene.light_model.two_sided,
+        "separate_specular": scene.light_model.separate_specular,
+        "normalize": scene.normal_mode == NormalMode::Normalize,
+        "rescale_normal": scene.normal_mode == NormalMode::Rescale,
+    });
+    if let (Some(b), Value::Object(o)) = (&scene.back_material, &mut case) {
+        o.insert("back_material".into(), material(b));
+    }
+    case
+}
+
+fn nums(v: &[f64]) -> Value {
+    Value::Array(v.iter().map(|x| json_number(*x)).collect())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_scene_written_as_a_case_lights_the_same() {
+        // Lights placed in the eye, the world and the object, one a spotlight, two-sided
+        // with a back material, under a modelview that is not a rigid motion.
+        let mut s = crate::presets::LightingBench::EightSpots.scene();
+        s.lights.truncate(3);
+        s.lights[1].placement = LightPlacement::Eye;
+        s.lights[2].placement = LightPlacement::Object;
+        s.world_from_object = DMat4::from_scale(DVec3::new(1.0, 2.0, 0.5)) * DMat4::from_rotation_z(0.3);
+        s.light_model.two_sided = true;
+        s.back_material = Some(crate::materials::by_name("jade").unwrap().clone());
+        s.vertex = Vertex { position: DVec4::new(0.3, 0.2, 0.9, 1.0), normal: DVec3::new(0.2, 0.3, 0.9) };
+        let back = parse_case(&case_json("x", &s), 0).unwrap();
+        let (a, b) = (
+            evaluate::<f64>(&s, EvalOptions::default(), false).unwrap(),
+            evaluate::<f64>(&back.scene, EvalOptions::default(), false).unwrap(),
+        );
+        for (x, y) in [(a.front, b.front), (a.back, b.back), (a.front_secondary, b.front_secondary)] {
+            for k in 0..4 {
+                assert!((x[k] - y[k]).abs() < 1e-12, "{x:?} vs {y:?}");
+            }
+        }
+        assert!(a.front[0] > 0.05 && a.back[1] > 0.0, "lit: {a:?}");
+    }
 
     #[test]
     fn defaults_are_opengl_defaults() {

@@ -1,0 +1,135 @@
+//! The scene files under `assets/scenes/`: each loads, evaluates, and lights its vertex as a
+//! real OpenGL does (Mesa llvmpipe's results in `tests/data/scenes_mesa.json`, made with
+//! `phonglab case` and the glref harness).
+
+use std::path::{Path, PathBuf};
+
+use phonglab::cli::cases_json;
+use phonglab_core::glref::{self, CaseColors};
+use phonglab_core::{Document, Engine, EvalOptions, LightPlacement, Rules, materials, presets};
+
+fn scene_files() -> Vec<PathBuf> {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        for e in std::fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|x| x == "toml") {
+                out.push(p);
+            }
+        }
+    }
+    let mut v = Vec::new();
+    walk(&Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes"), &mut v);
+    v.sort();
+    v
+}
+
+fn load(p: &Path) -> Document {
+    let text = std::fs::read_to_string(p).unwrap();
+    Document::from_toml(&text).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+}
+
+fn asset(name: &str) -> Document {
+    load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes").join(name))
+}
+
+#[test]
+fn every_scene_file_loads_and_lights_its_vertex() {
+    let files = scene_files();
+    assert_eq!(files.len(), 5 + 1 + 24 + 2, "{files:?}");
+    for p in &files {
+        let doc = load(p);
+        assert!(!doc.name.is_empty(), "{}", p.display());
+        let lit32 = Engine::<f32>::new(&doc.scene).unwrap().light(&doc.scene.vertex);
+        let lit64 = Engine::<f64>::new(&doc.scene).unwrap().light(&doc.scene.vertex);
+        for k in 0..4 {
+            let (a, b) = (lit32.front.primary[k] as f64, lit64.front.primary[k]);
+            assert!(a.is_finite() && (a - b).abs() < 1e-5, "{}: {a} vs {b}", p.display());
+        }
+        assert!(lit64.front.primary[..3].iter().any(|&c| c > 0.01), "{} is lit", p.display());
+        // And it survives a save and a load unchanged.
+        assert_eq!(Document::from_toml(&doc.to_toml().unwrap()).unwrap(), doc, "{}", p.display());
+    }
+}
+
+#[test]
+fn the_worksheet_files_are_the_worksheet() {
+    for k in 1..=5 {
+        let doc = asset(&format!("worksheet-mview{k}.toml"));
+        assert_eq!(doc.scene, presets::worksheet(k), "mview{k}");
+    }
+    let lit = Engine::<f64>::new(&asset("worksheet-mview5.toml").scene).unwrap().light(&presets::worksheet(5).vertex);
+    for (got, want) in lit.front.primary.iter().zip([0.05958709, 0.03575929, 0.01515525]) {
+        assert!((got - want).abs() < 1e-8, "I = {got}, the worksheet prints {want}");
+    }
+}
+
+#[test]
+fn the_phong_demo_file_is_the_preset() {
+    let doc = asset("phong-demo.toml");
+    let preset = presets::phong_demo();
+    let (a, b) = (
+        Engine::<f64>::new(&doc.scene).unwrap().light(&doc.scene.vertex),
+        Engine::<f64>::new(&preset).unwrap().light(&preset.vertex),
+    );
+    for k in 0..4 {
+        assert!((a.front.primary[k] - b.front.primary[k]).abs() < 1e-12);
+    }
+    assert_eq!((doc.scene.rules, doc.scene.material.shininess), (preset.rules, 100.0));
+    assert!(doc.view.auto_rotate);
+}
+
+#[test]
+fn the_red_book_teapots_are_the_24_classic_materials() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/redbook-teapots");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
+    files.sort();
+    let table = materials::classic();
+    assert_eq!(files.len(), table.len());
+    for (p, m) in files.iter().zip(table) {
+        let doc = load(p);
+        assert_eq!(doc.scene.material, m.material, "{}", p.display());
+        let l = &doc.scene.lights[0];
+        assert_eq!((l.position.to_array(), &l.placement), ([0.0, 3.0, 3.0, 0.0], &LightPlacement::Eye));
+        assert_eq!(doc.scene.light_model.ambient.x, 0.2);
+        assert_eq!(doc.scene.normal_mode, phonglab_core::NormalMode::Normalize);
+    }
+}
+
+fn close(ours: [f64; 4], mesa: [f64; 4]) -> bool {
+    ours.iter().zip(mesa).all(|(a, b)| (a - b).abs() <= 1e-6 + 1e-5 * b.abs())
+}
+
+#[test]
+fn every_scene_file_lights_as_mesa_does() {
+    let stored =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/scenes_mesa.json")).unwrap();
+    let stored = glref::parse_cases(&stored).unwrap();
+    let files = scene_files();
+    let fresh = cases_json(&files).unwrap();
+    let fresh = fresh["cases"].as_array().unwrap();
+    assert_eq!(stored.len(), files.len(), "regenerate tests/data/scenes_mesa.json (see its README)");
+    for (p, json) in files.iter().zip(fresh) {
+        let stem = p.file_stem().and_then(|s| s.to_str()).unwrap();
+        let Some((_, case)) = stored.iter().find(|(id, _)| id == stem) else {
+            panic!("{stem} has no stored case: regenerate tests/data/scenes_mesa.json")
+        };
+        let case = case.as_ref().unwrap();
+        // The stored case is this file's (the files have not moved on since Mesa ran).
+        let again = glref::parse_case(json, 0).unwrap();
+        assert_eq!(again.scene, case.scene, "{}: regenerate tests/data/scenes_mesa.json", p.display());
+        // A case means OpenGL's rules, whatever the file's.
+        let mut scene = load(p).scene;
+        scene.rules = Rules::OPENGL;
+        let ours: CaseColors = glref::evaluate::<f32>(&scene, EvalOptions::default(), false).unwrap();
+        let mesa = case.expected.unwrap();
+        for (o, m, what) in [
+            (ours.front, mesa.front, "front"),
+            (ours.front_secondary, mesa.front_secondary, "front secondary"),
+            (ours.back, mesa.back, "back"),
+        ] {
+            assert!(close(o, m), "{} {what}: phonglab {o:?}, Mesa {m:?}", p.display());
+        }
+    }
+}
