@@ -162,3 +162,23 @@ fn explain_other_modelviews_markdown_and_bad_arguments() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("unknown preset"), "{}", stderr(&o));
 }
+
+#[test]
+fn case_writes_a_scene_file_that_eval_lights_as_opengl() {
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes/worksheet-mview5.toml");
+    let o = phonglab(&["case", scene]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stderr(&o).contains("Worksheet rules"), "says a case means OpenGL's rules: {}", stderr(&o));
+    let cases = temp_file("mview5-case.json", &stdout(&o));
+    let o = phonglab(&["eval", cases.to_str().unwrap(), "--precision", "f32"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let front = &result(&out, "worksheet-mview5")["front"];
+    // What Mesa prints for the worksheet with OpenGL's default scene ambient (DESIGN.md).
+    for (k, want) in [0.102087, 0.061259, 0.025955].into_iter().enumerate() {
+        assert!((num(&front[k]) - want).abs() < 1e-6, "{front}");
+    }
+    let o = phonglab(&["case", "/no/such/scene.toml"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("/no/such/scene.toml"), "{}", stderr(&o));
+}
