@@ -294,3 +294,134 @@ fn the_calculation_says_what_the_specialised_plan_skips() {
     // Named in the plan summary and greyed in the spot-factor step: at least once.
     assert!(h.get_all_by_label_contains("cutoff 180: not a spotlight").count() >= 1);
 }
+
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("phonglab-ui-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn set_file_path(h: &mut Harness<'static, AppState>, path: &std::path::Path) {
+    h.get_by_role_and_label(Role::TextInput, "Scene file:").set_text_value_accesskit(&path.display().to_string());
+    h.run_steps(1);
+}
+
+#[test]
+fn open_and_save_scene_files_by_path() {
+    let mut h = harness();
+    let spot = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    set_file_path(&mut h, &spot);
+    h.get_by_label("Open").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.name, "a spotlight");
+    assert_eq!(h.state().doc.scene.lights[0].spot_cutoff, 25.0);
+    assert!(matches!(&h.state().message, Some(Message::Info(m)) if m.contains("spotlight.toml")));
+
+    // Change something, save it elsewhere, reset, open the saved file: the change is back.
+    type_into(&mut h, "Material shininess", "77");
+    assert_eq!(h.state().doc.scene.material.shininess, 77.0);
+    let saved = temp_dir("save").join("mine.toml");
+    set_file_path(&mut h, &saved);
+    h.get_by_label("Save").click();
+    h.run_steps(2);
+    assert!(matches!(&h.state().message, Some(Message::Info(m)) if m.contains("Saved")), "{:?}", h.state().message);
+    let doc = h.state().doc.clone();
+    h.get_by_label("Reset to worksheet").click();
+    h.run_steps(2);
+    assert_ne!(h.state().doc, doc);
+    set_file_path(&mut h, &saved);
+    h.get_by_label("Open").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc, doc, "saved and opened: the same scene");
+}
+
+#[test]
+fn a_bad_file_is_refused_with_its_line_and_the_scene_kept() {
+    let mut h = harness();
+    let before = h.state().doc.clone();
+    let dir = temp_dir("bad");
+    for (name, text, says) in [
+        ("syntax.toml", "name = \"x\"\n[material\nshininess = 3\n", "line 2"),
+        ("range.toml", "[material]\nshininess = 300\n", "material.shininess"),
+        ("nan.toml", "[[lights]]\nposition = [0, nan, 1, 1]\n", "lights[0].position[1]"),
+        ("binary.toml", "\u{0}\u{1}", "line 1"),
+    ] {
+        let p = dir.join(name);
+        std::fs::write(&p, text).unwrap();
+        set_file_path(&mut h, &p);
+        h.get_by_label("Open").click();
+        h.run_steps(2);
+        let msg = match &h.state().message {
+            Some(Message::Refused(m)) => m.clone(),
+            other => panic!("{name}: {other:?}"),
+        };
+        assert!(msg.contains(says) && msg.contains("unchanged"), "{name}: {msg}");
+        assert_eq!(h.state().doc, before, "{name}: the scene is kept");
+        assert!(h.get_all_by_label_contains(says).count() >= 1, "{name}: the message is shown");
+    }
+    set_file_path(&mut h, &dir.join("missing.toml"));
+    h.get_by_label("Open").click();
+    h.run_steps(2);
+    assert!(matches!(&h.state().message, Some(Message::Refused(m)) if m.contains("cannot read")));
+    // Saving into a folder that does not exist fails and says so; nothing is lost.
+    set_file_path(&mut h, &dir.join("no/such/folder/x.toml"));
+    h.get_by_label("Save").click();
+    h.run_steps(2);
+    assert!(matches!(&h.state().message, Some(Message::Refused(m)) if m.contains("Not saved")));
+    assert_eq!(h.state().doc, before);
+}
+
+/// A file dropped on the window, as eframe hands it to egui.
+#[derive(Debug)]
+struct Dropped(std::path::PathBuf);
+
+impl egui::DroppedFile for Dropped {
+    fn path(&self) -> &std::path::Path {
+        &self.0
+    }
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|e| e.to_string())
+    }
+}
+
+#[test]
+fn dropping_a_scene_file_opens_it() {
+    let mut h = harness();
+    let demo = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/phong-demo.toml");
+    h.input_mut().dropped_files.push(std::sync::Arc::new(Dropped(demo.clone())));
+    h.run_steps(2);
+    assert_eq!(h.state().doc.name, "the Phong demo");
+    assert_eq!(h.state().ui.file_path, demo.display().to_string(), "Save writes back to it");
+    // A dropped file that is not a scene is refused; the Phong demo stays.
+    let png = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/screenshot.png");
+    h.input_mut().dropped_files.push(std::sync::Arc::new(Dropped(png)));
+    h.run_steps(2);
+    assert!(
+        matches!(&h.state().message, Some(Message::Refused(m)) if m.contains("not a text file")),
+        "{:?}",
+        h.state().message
+    );
+    assert_eq!(h.state().doc.name, "the Phong demo");
+}
+
+#[test]
+fn ctrl_s_saves_and_ctrl_o_opens() {
+    let mut h = harness();
+    let p = temp_dir("keys").join("k.toml");
+    set_file_path(&mut h, &p);
+    // Leave the field (shortcuts are off while typing), as a user clicks elsewhere.
+    h.key_press(egui::Key::Escape);
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::S);
+    h.run_steps(2);
+    assert!(p.exists(), "{:?}", h.state().message);
+    assert_eq!(h.state().doc.to_toml().unwrap(), std::fs::read_to_string(&p).unwrap());
+    let saved = h.state().doc.clone();
+    h.key_press(egui::Key::L); // local viewer on
+    h.run_steps(2);
+    assert_ne!(h.state().doc, saved);
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::O);
+    h.run_steps(2);
+    assert_eq!(h.state().doc, saved);
+}

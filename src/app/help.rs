@@ -33,6 +33,10 @@ pub enum Action {
     Shading(phonglab_core::Shading),
     /// Auto-rotation on/off.
     AutoRotate,
+    /// Open the scene file at the typed path.
+    Open,
+    /// Save the scene to the typed path.
+    Save,
 }
 
 /// (modifiers, key, shown as, action, description).
@@ -49,6 +53,8 @@ pub const SHORTCUTS: &[(Modifiers, Key, &str, Action, &str)] = &[
     (Modifiers::NONE, Key::W, "W", Action::TwoSided, "two-sided lighting on/off"),
     (Modifiers::NONE, Key::P, "P", Action::Precision, "f32 / f64 evaluation"),
     (Modifiers::CTRL, Key::R, "Ctrl+R", Action::Reset, "reset to the worksheet"),
+    (Modifiers::CTRL, Key::O, "Ctrl+O", Action::Open, "open the scene file at the typed path"),
+    (Modifiers::CTRL, Key::S, "Ctrl+S", Action::Save, "save the scene to the typed path"),
     (
         Modifiers::NONE,
         Key::S,
@@ -99,6 +105,7 @@ pub fn help_ui(ui: &mut Ui) {
         }
     });
     ui.separator();
+    ui.label("Drop a scene file (.toml) on the window to open it.");
     ui.label("Drag the vector plot or the shaded view to orbit it; scroll the shaded view to zoom; click its surface to explain that vertex.");
     ui.label(" Every field takes typed values: out-of-range ones are refused with a message and the scene keeps its last valid value.");
 }

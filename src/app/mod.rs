@@ -4,8 +4,10 @@
 
 pub mod calculation;
 pub mod controls;
+pub mod files;
 pub mod help;
 pub mod palette;
+pub mod persist;
 pub mod result;
 pub mod shaded;
 pub mod state;
@@ -31,6 +33,8 @@ fn apply_action(state: &mut AppState, action: help::Action) {
             state.reset_to_worksheet();
             return;
         }
+        A::Open => return files::open_typed(state),
+        A::Save => return files::save_typed(state),
         A::Precision => {
             state.ui.precision = match state.ui.precision {
                 Precision::F32 => Precision::F64,
@@ -107,6 +111,8 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
             }
         });
         ui.separator();
+        files::file_ui(ui, state);
+        ui.separator();
         if ui.button("Help (F1)").clicked() {
             state.ui.show_help = !state.ui.show_help;
         }
@@ -119,6 +125,7 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     for a in help::pressed(ui.ctx()) {
         apply_action(state, a);
     }
+    files::dropped_files_ui(ui.ctx(), state);
 
     egui::Panel::top("top bar").show(ui, |ui| top_bar_ui(ui, state));
 
@@ -194,9 +201,6 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     }
 }
 
-/// The key the document is persisted under.
-const DOCUMENT_KEY: &str = "phonglab.document.toml";
-
 /// The eframe application.
 pub struct PhongLabApp {
     state: AppState,
@@ -204,20 +208,19 @@ pub struct PhongLabApp {
 
 impl PhongLabApp {
     /// Restores the last session's document when there is one and it loads; otherwise
-    /// starts on the worksheet, saying why.
-    pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
+    /// starts on the worksheet, saying why (`notice`: what was found before eframe started,
+    /// see [`persist::set_aside_unreadable_storage`]).
+    pub fn new(cc: &eframe::CreationContext<'_>, notice: Option<String>) -> Self {
         let mut state = AppState::worksheet();
-        if let Some(storage) = cc.storage
-            && let Some(text) = storage.get_string(DOCUMENT_KEY)
-        {
-            match phonglab_core::Document::from_toml(&text) {
-                Ok(doc) => state.doc = doc,
-                Err(e) => {
-                    state.message = Some(Message::Info(format!(
-                        "The last session could not be restored ({e}); starting on the worksheet."
-                    )))
-                }
-            }
+        let text = cc.storage.and_then(|s| s.get_string(persist::DOCUMENT_KEY));
+        let dir = eframe::storage_dir(persist::APP_ID);
+        match persist::restore_document(text.as_deref(), dir.as_deref()) {
+            Ok(Some(doc)) => state.doc = doc,
+            Ok(None) => {}
+            Err(m) => state.message = Some(Message::Refused(m)),
+        }
+        if let Some(m) = notice {
+            state.message = Some(Message::Refused(m));
         }
         Self { state }
     }
@@ -230,7 +233,7 @@ impl eframe::App for PhongLabApp {
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         if let Ok(text) = self.state.doc.to_toml() {
-            storage.set_string(DOCUMENT_KEY, text);
+            storage.set_string(persist::DOCUMENT_KEY, text);
         }
     }
 }
@@ -244,5 +247,6 @@ pub fn run() -> eframe::Result {
             .with_min_inner_size([900.0, 600.0]),
         ..Default::default()
     };
-    eframe::run_native("phonglab", options, Box::new(|cc| Ok(Box::new(PhongLabApp::new(cc)))))
+    let notice = eframe::storage_dir(persist::APP_ID).and_then(|d| persist::set_aside_unreadable_storage(&d));
+    eframe::run_native(persist::APP_ID, options, Box::new(|cc| Ok(Box::new(PhongLabApp::new(cc, notice)))))
 }

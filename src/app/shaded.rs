@@ -77,14 +77,15 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
             ui.checkbox(&mut view.cylinder_caps, "Caps");
         }
     });
-    if view.auto_rotate {
-        view.spin_degrees = (view.spin_degrees + 0.5).rem_euclid(360.0);
-        ui.ctx().request_repaint();
-    }
     if view != state.doc.view {
         let mut c = state.doc.clone();
         c.view = view;
         state.apply(c);
+    }
+    // The spin is not an edit: it stays finite and in range, and must not clear a message.
+    if state.doc.view.auto_rotate {
+        state.doc.view.spin_degrees = (state.doc.view.spin_degrees + 0.5).rem_euclid(360.0);
+        ui.ctx().request_repaint();
     }
 
     let avail = ui.available_size();

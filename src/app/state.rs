@@ -65,6 +65,8 @@ pub struct UiState {
     pub pow: PowFn,
     /// Show colours clamped (as OpenGL delivers them) in the swatch; numbers show both.
     pub clamp: bool,
+    /// The scene file path typed for Open and Save.
+    pub file_path: String,
 }
 
 impl Default for UiState {
@@ -77,6 +79,7 @@ impl Default for UiState {
             precision: Precision::F64,
             pow: PowFn::Exact,
             clamp: true,
+            file_path: "scene.toml".into(),
         }
     }
 }

@@ -33,10 +33,15 @@ fn m4() -> BoxedStrategy<DMat4> {
 }
 
 fn material() -> BoxedStrategy<Material> {
-    (v4(), v4(), v4(), v4(), prop_oneof![Just(0.0), Just(128.0), 0.0..=128.0f64]).prop_map(
-        |(ambient, diffuse, specular, emission, shininess)| Material { ambient, diffuse, specular, emission, shininess },
-    )
-    .boxed()
+    (v4(), v4(), v4(), v4(), prop_oneof![Just(0.0), Just(128.0), 0.0..=128.0f64])
+        .prop_map(|(ambient, diffuse, specular, emission, shininess)| Material {
+            ambient,
+            diffuse,
+            specular,
+            emission,
+            shininess,
+        })
+        .boxed()
 }
 
 fn light() -> BoxedStrategy<Light> {
@@ -192,8 +197,9 @@ fn syntax_errors_name_the_line_and_column() {
     let msg = e.to_string();
     assert!(matches!(e, DocumentError::Syntax(_)));
     assert!(msg.contains("line 3") && msg.contains("column"), "{msg}");
-    let e = Document::from_toml("[[lights]]\n[[lights]]\n[[lights]]\n[[lights]]\n[[lights]]\n[[lights]]\n[[lights]]\n[[lights]]\n[[lights]]\n")
-        .unwrap_err();
+    let e = Document::from_toml(
+        "[[lights]]\n[[lights]]\n[[lights]]\n[[lights]]\n[[lights]]\n[[lights]]\n[[lights]]\n[[lights]]\n[[lights]]\n",
+    )
+    .unwrap_err();
     assert!(e.to_string().contains('9') && e.to_string().contains('8'), "{e}");
 }
-

@@ -1,0 +1,124 @@
+//! Scene files from the app: a path field with Open and Save, and files dropped on the
+//! window. A file that cannot be read, parsed or validated is refused with a message that
+//! names the line and column or the field, and the current scene stays as it was; a save
+//! writes a temporary file first and renames it, so a failed save leaves the old file whole.
+
+use std::path::{Path, PathBuf};
+
+use egui::Ui;
+use phonglab_core::Document;
+
+use super::state::{AppState, Message};
+
+/// Writes `doc` to `path` (through a temporary file beside it, renamed into place).
+pub fn write_document(doc: &Document, path: &Path) -> Result<(), String> {
+    let text = doc.to_toml().map_err(|e| e.to_string())?;
+    let file_name = path.file_name().ok_or_else(|| format!("{} is not a file name", path.display()))?;
+    let tmp = path.with_file_name(format!(".{}.saving", file_name.to_string_lossy()));
+    std::fs::write(&tmp, text).map_err(|e| format!("cannot write {}: {e}", tmp.display()))?;
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        format!("cannot write {}: {e}", path.display())
+    })
+}
+
+/// Opens a scene file into the app, or says why not and keeps the current scene.
+pub fn open(state: &mut AppState, path: &Path) {
+    match std::fs::read(path) {
+        Ok(bytes) => open_bytes(state, &bytes, path),
+        Err(e) => refuse(state, format!("cannot read {}: {e}", path.display())),
+    }
+}
+
+/// Opens a scene from the bytes of the file at `path`, or says why not.
+fn open_bytes(state: &mut AppState, bytes: &[u8], path: &Path) {
+    let Ok(text) = std::str::from_utf8(bytes) else {
+        return refuse(state, format!("{} is not a text file", path.display()));
+    };
+    match Document::from_toml(text) {
+        Ok(doc) => {
+            state.load(doc, &path.display().to_string());
+            state.ui.file_path = path.display().to_string();
+        }
+        Err(e) => refuse(state, format!("{}: {e}", path.display())),
+    }
+}
+
+fn refuse(state: &mut AppState, why: String) {
+    state.message = Some(Message::Refused(format!("Not opened: {why}. The current scene is unchanged.")));
+}
+
+/// Saves the current scene, and says where (or why not).
+pub fn save(state: &mut AppState, path: &Path) {
+    state.message = Some(match write_document(&state.doc, path) {
+        Ok(()) => Message::Info(format!("Saved {}.", path.display())),
+        Err(e) => Message::Refused(format!("Not saved: {e}.")),
+    });
+}
+
+fn path_of(state: &AppState) -> Option<PathBuf> {
+    let p = state.ui.file_path.trim();
+    (!p.is_empty()).then(|| PathBuf::from(p))
+}
+
+/// The path field and the Open and Save buttons (Enter in the field opens).
+pub fn file_ui(ui: &mut Ui, state: &mut AppState) {
+    let label = ui.label("Scene file:");
+    let field = ui
+        .add(egui::TextEdit::singleline(&mut state.ui.file_path).desired_width(220.0).hint_text("path/to/scene.toml"))
+        .labelled_by(label.id);
+    let enter = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+    if ui.button("Open").on_hover_text("Open the scene file at this path (Ctrl+O)").clicked() || enter {
+        open_typed(state);
+    }
+    if ui.button("Save").on_hover_text("Save the scene to this path (Ctrl+S)").clicked() {
+        save_typed(state);
+    }
+}
+
+/// Opens the file at the typed path.
+pub fn open_typed(state: &mut AppState) {
+    match path_of(state) {
+        Some(p) => open(state, &p),
+        None => state.message = Some(Message::Refused("Type the scene file's path first.".into())),
+    }
+}
+
+/// Saves to the typed path.
+pub fn save_typed(state: &mut AppState) {
+    match path_of(state) {
+        Some(p) => save(state, &p),
+        None => state.message = Some(Message::Refused("Type the scene file's path first.".into())),
+    }
+}
+
+/// Opens a scene file dropped on the window (the first one, when several are dropped), and
+/// while files hover over the window, says that dropping one opens it.
+pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
+    let hovering = ctx.input(|i| !i.raw.hovered_files.is_empty());
+    if hovering {
+        let painter = ctx.layer_painter(egui::LayerId::new(egui::Order::Foreground, egui::Id::unique("drop target")));
+        let rect = ctx.content_rect();
+        painter.rect_filled(rect, 0.0, egui::Color32::from_black_alpha(160));
+        painter.text(
+            rect.center(),
+            egui::Align2::CENTER_CENTER,
+            "Drop a scene file (.toml) to open it",
+            egui::FontId::proportional(28.0),
+            egui::Color32::WHITE,
+        );
+    }
+    let dropped = ctx.input(|i| i.raw.dropped_files.clone());
+    let Some(file) = dropped.first() else { return };
+    let path = file.path().to_path_buf();
+    match file.bytes() {
+        Ok(bytes) => open_bytes(state, &bytes, &path),
+        Err(e) => refuse(state, format!("cannot read {}: {e}", path.display())),
+    }
+    if dropped.len() > 1 {
+        let extra = format!(" ({} files were dropped; only the first is opened.)", dropped.len());
+        if let Some(Message::Info(m) | Message::Refused(m)) = &mut state.message {
+            m.push_str(&extra);
+        }
+    }
+}
