@@ -250,11 +250,7 @@ fn matrix_ui_named(ui: &mut Ui, m: &mut DMat4, name: &str) {
         for (r, row) in rows.iter_mut().enumerate() {
             let rl = ui.small(format!("{name} row {r}")).id;
             for (c, x) in row.iter_mut().enumerate() {
-                changed |= ui
-                    .add(egui::DragValue::new(x).speed(0.01).max_decimals(6))
-                    .labelled_by(rl)
-                    .labelled_by(cols[c])
-                    .changed();
+                changed |= ui.add(super::widgets::exact_drag(x, 0.01)).labelled_by(rl).labelled_by(cols[c]).changed();
             }
             ui.end_row();
         }

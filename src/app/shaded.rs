@@ -63,18 +63,22 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
         ui.checkbox(&mut view.demo_normals, "Demo's normals")
             .on_hover_text("normalize(position), as the demo: wrong for the teapot and the cylinder");
     });
-    ui.horizontal_wrapped(|ui| match view.object {
-        ObjectKind::Sphere => {
-            ui.add(egui::DragValue::new(&mut view.sphere_slices).range(3..=400).prefix("slices "));
-            ui.add(egui::DragValue::new(&mut view.sphere_stacks).range(3..=400).prefix("stacks "));
-        }
-        ObjectKind::Teapot => {
-            ui.add(egui::DragValue::new(&mut view.teapot_grid).range(1..=64).prefix("grid "));
-        }
-        ObjectKind::Cylinder => {
-            ui.add(egui::DragValue::new(&mut view.cylinder_slices).range(3..=400).prefix("slices "));
-            ui.add(egui::DragValue::new(&mut view.cylinder_stacks).range(1..=400).prefix("stacks "));
-            ui.checkbox(&mut view.cylinder_caps, "Caps");
+    ui.horizontal_wrapped(|ui| {
+        let count = |ui: &mut Ui, label: &str, v: &mut u32, r: std::ops::RangeInclusive<u32>| {
+            let l = ui.label(label);
+            ui.add(egui::DragValue::new(v).range(r)).labelled_by(l.id);
+        };
+        match view.object {
+            ObjectKind::Sphere => {
+                count(ui, "Sphere slices", &mut view.sphere_slices, phonglab_core::view::SLICES_RANGE);
+                count(ui, "Sphere stacks", &mut view.sphere_stacks, phonglab_core::view::SLICES_RANGE);
+            }
+            ObjectKind::Teapot => count(ui, "Teapot grid", &mut view.teapot_grid, phonglab_core::view::GRID_RANGE),
+            ObjectKind::Cylinder => {
+                count(ui, "Cylinder slices", &mut view.cylinder_slices, phonglab_core::view::SLICES_RANGE);
+                count(ui, "Cylinder stacks", &mut view.cylinder_stacks, phonglab_core::view::STACKS_RANGE);
+                ui.checkbox(&mut view.cylinder_caps, "Caps");
+            }
         }
     });
     if view != state.doc.view {

@@ -5,13 +5,25 @@
 use egui::{DragValue, Response, Slider, SliderClamping, Ui};
 use glam::{DVec3, DVec4};
 
+/// A number as the shortest decimal that reads back as the same `f64` (exponent form
+/// outside [1e-4, 1e15)). egui puts a field's text in the editor when it gains focus and
+/// parses it back when it loses focus, so a rounded display would round the value of a
+/// field that was only clicked: every number field shows its value exactly.
+pub fn exact_text(v: f64) -> String {
+    let a = v.abs();
+    if a != 0.0 && a.is_finite() && !(1e-4..1e15).contains(&a) { format!("{v:e}") } else { format!("{v}") }
+}
+
+/// A number field (no clamping) that shows its value exactly.
+pub fn exact_drag(value: &mut f64, speed: f64) -> DragValue<'_> {
+    DragValue::new(value).speed(speed).custom_formatter(|v, _| exact_text(v))
+}
+
 /// A slider over `range` whose typed values are not clamped (the document validator
 /// decides), with `label` as its accessible name.
 pub fn slider(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::RangeInclusive<f64>, log: bool) -> Response {
-    let mut s = Slider::new(value, range)
-        .text(label)
-        .clamping(SliderClamping::Never)
-        .custom_formatter(|v, _| phonglab_core::explain::fmt_sig(v, 6));
+    let mut s =
+        Slider::new(value, range).text(label).clamping(SliderClamping::Never).custom_formatter(|v, _| exact_text(v));
     if log {
         s = s.logarithmic(true).smallest_positive(1e-6);
     }
@@ -22,24 +34,20 @@ pub fn slider(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::RangeI
 pub fn number(ui: &mut Ui, label: &str, value: &mut f64, speed: f64) -> Response {
     ui.horizontal(|ui| {
         let l = ui.label(label);
-        ui.add(DragValue::new(value).speed(speed).max_decimals(8)).labelled_by(l.id)
+        ui.add(exact_drag(value, speed)).labelled_by(l.id)
     })
     .inner
 }
 
 /// Number fields on one row, each named "{label} {component}" for assistive technology
 /// and tests (the row label and the component label together).
-fn components(ui: &mut Ui, label: &str, comps: &mut [(&str, &mut f64)], speed: f64, decimals: usize) -> bool {
+fn components(ui: &mut Ui, label: &str, comps: &mut [(&str, &mut f64)], speed: f64) -> bool {
     let mut changed = false;
     ui.horizontal(|ui| {
         let row = ui.label(label);
         for (name, c) in comps.iter_mut() {
             let cl = ui.small(*name);
-            changed |= ui
-                .add(DragValue::new(*c).speed(speed).max_decimals(decimals))
-                .labelled_by(row.id)
-                .labelled_by(cl.id)
-                .changed();
+            changed |= ui.add(exact_drag(c, speed)).labelled_by(row.id).labelled_by(cl.id).changed();
         }
     });
     changed
@@ -47,12 +55,12 @@ fn components(ui: &mut Ui, label: &str, comps: &mut [(&str, &mut f64)], speed: f
 
 /// Three components: `"{label} x"`, `"{label} y"`, `"{label} z"`.
 pub fn vec3(ui: &mut Ui, label: &str, v: &mut DVec3, speed: f64) -> bool {
-    components(ui, label, &mut [("x", &mut v.x), ("y", &mut v.y), ("z", &mut v.z)], speed, 8)
+    components(ui, label, &mut [("x", &mut v.x), ("y", &mut v.y), ("z", &mut v.z)], speed)
 }
 
 /// Four components (`x y z w`).
 pub fn vec4(ui: &mut Ui, label: &str, v: &mut DVec4, speed: f64) -> bool {
-    components(ui, label, &mut [("x", &mut v.x), ("y", &mut v.y), ("z", &mut v.z), ("w", &mut v.w)], speed, 8)
+    components(ui, label, &mut [("x", &mut v.x), ("y", &mut v.y), ("z", &mut v.z), ("w", &mut v.w)], speed)
 }
 
 /// An unclamped GL colour: r, g, b (and alpha when `alpha`), after a swatch of how it shows.
@@ -62,10 +70,27 @@ pub fn color(ui: &mut Ui, label: &str, c: &mut DVec4, alpha: bool) -> bool {
         ui.painter().rect_filled(rect, 2.0, crate::app::palette::gl_to_color32([c.x, c.y, c.z]));
         let DVec4 { x, y, z, w } = c;
         if alpha {
-            components(ui, label, &mut [("r", x), ("g", y), ("b", z), ("a", w)], 0.005, 6)
+            components(ui, label, &mut [("r", x), ("g", y), ("b", z), ("a", w)], 0.005)
         } else {
-            components(ui, label, &mut [("r", x), ("g", y), ("b", z)], 0.005, 6)
+            components(ui, label, &mut [("r", x), ("g", y), ("b", z)], 0.005)
         }
     })
     .inner
+}
+
+#[cfg(test)]
+mod tests {
+    use super::exact_text;
+
+    #[test]
+    fn exact_text_reads_back_as_the_same_number() {
+        for v in [0.0, -0.0, 0.2125, 121.76225070590814, 1e300, -1e-300, 5e-324, 1e15, 99999.5, 0.44721359549995804] {
+            let t = exact_text(v);
+            assert_eq!(t.parse::<f64>().unwrap().to_bits(), v.to_bits(), "{v} -> {t}");
+            assert!(t.len() <= 24, "{t}");
+        }
+        assert_eq!(exact_text(0.2125), "0.2125");
+        assert_eq!(exact_text(1e300), "1e300");
+        assert_eq!(exact_text(-665.1075), "-665.1075");
+    }
 }
