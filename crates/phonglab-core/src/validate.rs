@@ -67,7 +67,9 @@ impl Scene {
     }
 
     /// [`Scene::validate`] plus what the app refuses on top: any NaN or infinity in any
-    /// field, and a light whose three attenuation factors are all zero.
+    /// field, any number a float cannot hold ([`is_float`]: OpenGL's state is float, so
+    /// 1e300 would be infinity and 1e-300 zero), and a light whose three attenuation
+    /// factors are all zero. With these, the f64 engine's colours are always finite.
     pub fn validate_for_editing(&self) -> Result<(), SceneError> {
         self.validate()?;
         let mut fin = Finite::default();
@@ -104,7 +106,17 @@ impl Scene {
     }
 }
 
-/// Collects the first non-finite value met.
+/// What [`is_float`] allows, in words.
+pub const FLOAT_RANGE: &str = "a float: 0, or 1.2e-38 <= |x| <= 3.4e38";
+
+/// Is `x` a value OpenGL's float state holds as it is: 0, or a normal f32 magnitude?
+/// (1e300 would be infinity to it, 1e-300 zero; either can turn a finite scene into an
+/// infinite colour, in f32 and even in f64.)
+pub fn is_float(x: f64) -> bool {
+    x == 0.0 || (f32::MIN_POSITIVE as f64..=f32::MAX as f64).contains(&x.abs())
+}
+
+/// Collects the first non-finite or non-float value met.
 #[derive(Default)]
 struct Finite {
     error: Option<SceneError>,
@@ -117,6 +129,9 @@ impl Finite {
         }
         if let Some((i, x)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
             self.error = Some(SceneError::NotFinite { field: format!("{field}[{i}]"), value: *x });
+        } else if let Some((i, x)) = v.iter().enumerate().find(|(_, x)| !is_float(**x)) {
+            self.error =
+                Some(SceneError::OutOfRange { field: format!("{field}[{i}]"), value: *x, allowed: FLOAT_RANGE });
         }
     }
     fn v3(&mut self, field: &str, v: DVec3) {

@@ -9,14 +9,15 @@ use phonglab_core::{
 };
 use proptest::prelude::*;
 
-/// Any finite number, from the tiny to the huge, negative zero included.
+/// Any number a float can hold, from the tiny to the huge, negative zero included.
 fn num() -> BoxedStrategy<f64> {
     prop_oneof![
         4 => -10.0..10.0f64,
         1 => Just(-0.0),
-        1 => (-300i32..300, -1.0..1.0f64).prop_map(|(e, m)| m * 10f64.powi(e)),
-        1 => any::<f64>().prop_filter("finite", |x| x.is_finite()),
+        1 => (-37i32..38, 0.2..1.0f64, any::<bool>()).prop_map(|(e, m, neg)| if neg { -m } else { m } * 10f64.powi(e)),
+        1 => any::<f32>().prop_filter("a normal float", |x| x.is_normal()).prop_map(f64::from),
     ]
+    .prop_filter("a float", |x| phonglab_core::validate::is_float(*x))
     .boxed()
 }
 
@@ -82,7 +83,9 @@ fn camera() -> BoxedStrategy<CameraSpec> {
         (1.0..8192.0f64, 1.0..8192.0f64).prop_map(|(width, height)| CameraSpec::OpenFrameworks { width, height }),
         m4().prop_map(CameraSpec::Matrix),
     ]
-    .prop_filter("a camera with a view matrix", |c| c.matrix().is_ok())
+    .prop_filter("a camera with a view matrix of floats", |c| {
+        c.matrix().is_ok_and(|m| m.to_cols_array().iter().all(|x| phonglab_core::validate::is_float(*x)))
+    })
     .boxed()
 }
 
@@ -184,6 +187,8 @@ fn non_finite_values_are_refused_by_name() {
         ("[[lights]]\nposition = [0, 0, -inf, 1]\n", "lights[0].position[2]"),
         ("[vertex]\nposition = [0, 0, 0, 1]\nnormal = [nan, 0, 1]\n", "vertex.normal[0]"),
         ("[view]\nspin_degrees = inf\n", "view.spin_degrees"),
+        ("[material]\nemission = [1e300, 0, 0]\n", "material.emission[0]"),
+        ("[[lights]]\nattenuation = [1e-300, 0, 0]\n", "lights[0].attenuation[0]"),
     ] {
         let e = Document::from_toml(text).unwrap_err();
         assert!(matches!(e, DocumentError::Invalid(_)), "{text}: {e:?}");
