@@ -110,7 +110,7 @@ impl Document {
     /// Writes the document as a scene file (every value explicit, so loading it gives back
     /// exactly this document).
     pub fn to_toml(&self) -> Result<String, DocumentError> {
-        toml::to_string_pretty(&FileV1::from_document(self)).map_err(|e| DocumentError::Write(e.to_string()))
+        toml::to_string(&FileV1::from_document(self)).map_err(|e| DocumentError::Write(e.to_string()))
     }
 }
 
