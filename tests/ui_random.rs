@@ -1,0 +1,214 @@
+//! A few hundred seeded random interactions with the whole window: sliders and number
+//! fields set to values in range, out of range, huge, negative or NaN; buttons, checkboxes,
+//! menus and radio buttons clicked; text typed; shortcuts pressed; drags on the plots and
+//! the shaded view. After every step: no panic, the document valid, every displayed colour
+//! finite, and a refused step leaves the scene as it was.
+
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT, Queryable};
+use phonglab::app::state::{Message, Precision};
+use phonglab::app::{AppState, app_ui};
+use phonglab_core::Document;
+
+/// xorshift64*: a small, seeded generator, so a failure replays exactly.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n.max(1) as u64) as usize
+    }
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// A value a user (or a cat on the keyboard) might enter.
+fn wild_value(rng: &mut Rng) -> f64 {
+    match rng.below(10) {
+        0 => f64::NAN,
+        1 => f64::INFINITY,
+        2 => -1e300,
+        3 => 1e-300,
+        4 => -(rng.unit() * 500.0),
+        5 => 0.0,
+        _ => rng.unit() * 200.0 - 50.0,
+    }
+}
+
+const TYPED: &[&str] = &["nan", "inf", "-1", "1e400", "abc", "0.5", "128", "-0", "", "1,5", "999999"];
+
+const KEYS: &[egui::Key] = &[
+    egui::Key::L,
+    egui::Key::M,
+    egui::Key::V,
+    egui::Key::B,
+    egui::Key::G,
+    egui::Key::N,
+    egui::Key::W,
+    egui::Key::P,
+    egui::Key::S,
+    egui::Key::T,
+    egui::Key::C,
+    egui::Key::Num1,
+    egui::Key::Num2,
+    egui::Key::Num3,
+    egui::Key::A,
+    egui::Key::F1,
+    egui::Key::Escape,
+    egui::Key::Enter,
+    egui::Key::Tab,
+];
+
+/// The document without the auto-rotation's spin (which moves every frame by itself).
+fn without_spin(d: &Document) -> Document {
+    let mut d = d.clone();
+    d.view.spin_degrees = 0.0;
+    d
+}
+
+fn colours(e: &phonglab::app::state::Evaluated) -> Vec<[f64; 4]> {
+    let mut v = vec![e.front.primary, e.front.secondary, e.front.shown];
+    if let Some(b) = e.back {
+        v.extend([b.primary, b.secondary, b.shown]);
+    }
+    v
+}
+
+/// Never NaN; the shown colour in [0, 1]; f64 finite; f32 infinite only where the f64
+/// value is beyond f32's range (a sum of terms that overflows a float, as in OpenGL).
+fn check(h: &Harness<'static, AppState>, step: usize, what: &str) {
+    let s = h.state();
+    assert!(s.doc.validate().is_ok(), "step {step} ({what}): invalid document kept: {:?}", s.doc.validate());
+    let e = s.evaluate().unwrap_or_else(|e| panic!("step {step} ({what}): {e}"));
+    assert!(!e.explanation.steps.is_empty(), "step {step} ({what}): an explanation");
+    let mut s64 = AppState { doc: s.doc.clone(), ..AppState::default() };
+    s64.ui.precision = Precision::F64;
+    s64.ui.pow = s.ui.pow;
+    let e64 = s64.evaluate().unwrap();
+    for (c, c64) in colours(&e).into_iter().zip(colours(&e64)) {
+        for k in 0..4 {
+            assert!(!c[k].is_nan(), "step {step} ({what}): NaN in {c:?}");
+            assert!(c64[k].is_finite(), "step {step} ({what}): f64 {c64:?}\n{}", s.doc.to_toml().unwrap());
+            assert!(
+                c[k].is_finite() || c64[k].abs() > f32::MAX as f64 && c[k].signum() == c64[k].signum(),
+                "step {step} ({what}): {c:?} where f64 gives {c64:?}"
+            );
+        }
+    }
+    for c in &e.front.shown[..3] {
+        assert!((0.0..=1.0).contains(c), "step {step} ({what}): shown colour {c} outside [0, 1]");
+    }
+}
+
+fn run(seed: u64, steps: usize) {
+    let dir = std::env::temp_dir().join(format!("phonglab-ui-random-{seed}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut state = AppState::worksheet();
+    // Save and Open use a file of their own.
+    state.ui.file_path = dir.join("random.toml").display().to_string();
+    let mut h =
+        Harness::builder().with_size([1500.0, 1000.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+    h.run_steps(2);
+    let mut rng = Rng(seed);
+    let (mut refusals, mut changes) = (0, 0);
+    for step in 0..steps {
+        let before = without_spin(&h.state().doc);
+        let message_before = h.state().message.clone();
+        let what = match rng.below(6) {
+            0 | 1 => {
+                let nodes: Vec<_> =
+                    h.query_all_by_role(Role::Slider).chain(h.query_all_by_role(Role::SpinButton)).collect();
+                if nodes.is_empty() {
+                    continue;
+                }
+                let n = &nodes[rng.below(nodes.len())];
+                let v = wild_value(&mut rng);
+                let label = n.accesskit_node().label().unwrap_or_default();
+                n.set_value_accesskit(v);
+                format!("set {label:?} to {v}")
+            }
+            2 => {
+                let nodes: Vec<_> = h
+                    .query_all_by_role(Role::Button)
+                    .chain(h.query_all_by_role(Role::CheckBox))
+                    .chain(h.query_all_by_role(Role::RadioButton))
+                    .chain(h.query_all_by_role(Role::ComboBox))
+                    .collect();
+                if nodes.is_empty() {
+                    continue;
+                }
+                let n = &nodes[rng.below(nodes.len())];
+                let label = n.accesskit_node().label().unwrap_or_default();
+                if rng.below(2) == 0 {
+                    n.click()
+                } else {
+                    n.click_accesskit()
+                }
+                format!("click {label:?}")
+            }
+            3 => {
+                let nodes: Vec<_> = h
+                    .query_all_by_role(Role::TextInput)
+                    .filter(|n| n.accesskit_node().label().is_none_or(|l| !l.contains("Scene file")))
+                    .chain(h.query_all_by_role(Role::SpinButton))
+                    .collect();
+                if nodes.is_empty() {
+                    continue;
+                }
+                let n = &nodes[rng.below(nodes.len())];
+                let text = TYPED[rng.below(TYPED.len())];
+                let label = n.accesskit_node().label().unwrap_or_default();
+                n.click();
+                n.type_text(text);
+                format!("type {text:?} into {label:?}")
+            }
+            4 => {
+                let k = KEYS[rng.below(KEYS.len())];
+                h.key_press(k);
+                format!("press {k:?}")
+            }
+            _ => {
+                let (x, y) = (rng.unit() as f32 * 1500.0, rng.unit() as f32 * 1000.0);
+                let d = egui::vec2(rng.unit() as f32 * 200.0 - 100.0, rng.unit() as f32 * 200.0 - 100.0);
+                h.drag_at(egui::pos2(x, y));
+                h.run_steps(1);
+                h.hover_at(egui::pos2(x, y) + d);
+                h.run_steps(1);
+                h.drop_at(egui::pos2(x, y) + d);
+                format!("drag from ({x:.0}, {y:.0}) by {d:?}")
+            }
+        };
+        h.run_steps(2);
+        check(&h, step, &what);
+        changes += usize::from(without_spin(&h.state().doc) != before);
+        if let Some(Message::Refused(m)) = &h.state().message
+            && h.state().message != message_before
+            && m.contains("Refused")
+        {
+            refusals += 1;
+            assert_eq!(without_spin(&h.state().doc), before, "step {step} ({what}): refused ({m}) but changed");
+        }
+    }
+    // The walk did meet bad values (and refused them), or it tested little.
+    eprintln!("seed {seed:#x}: {steps} steps, {changes} changed the scene, {refusals} refused");
+    assert!(refusals >= 5, "seed {seed}: {refusals} refusals in {steps} steps");
+    assert!(changes >= steps / 5, "seed {seed}: {changes} changes in {steps} steps");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn three_hundred_random_interactions_seed_1() {
+    run(0x9E37_79B9_7F4A_7C15, 300);
+}
+
+#[test]
+fn three_hundred_random_interactions_seed_2() {
+    run(0xD1B5_4A32_D192_ED03, 300);
+}
