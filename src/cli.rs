@@ -219,7 +219,7 @@ pub fn eval_text(text: &str, precision: Precision, options: EvalOptions, clamp: 
 
 fn eval(a: &EvalArgs) -> Result<()> {
     let text = read(&a.cases)?;
-    let out = eval_text(&text, a.precision, EvalOptions { pow: a.pow.into() }, a.clamp)
+    let out = eval_text(&text, a.precision, EvalOptions::with_pow(a.pow.into()), a.clamp)
         .with_context(|| format!("{}", a.cases.display()))?;
     println!("{}", serde_json::to_string_pretty(&out)?);
     Ok(())
@@ -346,7 +346,7 @@ fn render(a: &RenderArgs) -> Result<()> {
         shading,
         background,
         cull_back: a.cull,
-        options: EvalOptions { pow: a.pow.into() },
+        options: EvalOptions::with_pow(a.pow.into()),
     };
     let mut r = Renderer::new();
     let t = std::time::Instant::now();

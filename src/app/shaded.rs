@@ -109,7 +109,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
             shading: state.doc.view.shading,
             background: [0.1, 0.1, 0.15],
             cull_back: false,
-            options: EvalOptions { pow: state.ui.pow },
+            options: EvalOptions::with_pow(state.ui.pow),
         };
         let t = std::time::Instant::now();
         match cache.renderer.render(&job, px, px) {

@@ -186,7 +186,7 @@ impl AppState {
 
     /// Evaluates the document with the chosen precision and power function.
     pub fn evaluate(&self) -> Result<Evaluated, SceneError> {
-        let options = EvalOptions { pow: self.ui.pow };
+        let options = EvalOptions::with_pow(self.ui.pow);
         let doc = &self.doc;
         Ok(match self.ui.precision {
             Precision::F32 => evaluated(

@@ -14,6 +14,7 @@
 
 pub mod breakdown;
 pub mod camera;
+pub mod cost;
 pub mod document;
 pub mod error;
 pub mod explain;
@@ -38,7 +39,7 @@ pub use breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerms, 
 pub use camera::CameraSpec;
 pub use document::{Document, DocumentError};
 pub use error::SceneError;
-pub use lighting::{Engine, EvalOptions};
+pub use lighting::{Engine, EvalOptions, Renormalize};
 pub use pow::PowFn;
 pub use real::{Real, Vec3Ops};
 pub use rules::{RuleSet, Rules, SpecularGate, SpecularModel};

@@ -99,6 +99,51 @@ pub(crate) struct PreparedLight<S: Real> {
 pub struct EvalOptions {
     /// The power function of the specular and spot terms.
     pub pow: PowFn,
+    /// How per-pixel (Phong) shading renormalises its interpolated normals.
+    pub renormalize: Renormalize,
+}
+
+impl EvalOptions {
+    /// The default options with power function `pow`.
+    pub fn with_pow(pow: PowFn) -> Self {
+        Self { pow, ..Self::default() }
+    }
+}
+
+/// How Phong shading brings its interpolated normals (shorter than 1 inside a triangle)
+/// back to unit length: what a shader's `normalize(n)` costs and what skipping it costs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Renormalize {
+    /// `n / |n|`, exactly rounded (with a power-of-two prescale, as everywhere).
+    #[default]
+    Exact,
+    /// `n * rsqrt(n . n)` with the classic approximate reciprocal square root: the bit
+    /// trick `0x5f3759df - (bits >> 1)` and one Newton step (relative error <= 0.175 %).
+    FastRsqrt,
+    /// Not renormalised: `n` as interpolated.
+    Skip,
+}
+
+impl Renormalize {
+    /// All three, exact first.
+    pub const ALL: [Renormalize; 3] = [Renormalize::Exact, Renormalize::FastRsqrt, Renormalize::Skip];
+
+    /// A short name for tables.
+    pub fn label(self) -> &'static str {
+        match self {
+            Renormalize::Exact => "exact normalize",
+            Renormalize::FastRsqrt => "fast rsqrt",
+            Renormalize::Skip => "no renormalisation",
+        }
+    }
+}
+
+/// The classic approximate `1 / sqrt(x)` for `x > 0`: an initial guess from the float's
+/// bits, refined by one Newton step `y (3/2 - x y^2 / 2)`.
+#[inline(always)]
+pub fn fast_rsqrt(x: f32) -> f32 {
+    let y = f32::from_bits(0x5f37_59df_u32.wrapping_sub(x.to_bits() >> 1));
+    y * (1.5 - 0.5 * x * y * y)
 }
 
 /// The general lighting engine for a scene, in precision `S`: every term of the

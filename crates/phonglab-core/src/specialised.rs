@@ -23,7 +23,7 @@
 use glam::{DVec3, Vec3};
 
 use crate::error::SceneError;
-use crate::lighting::{Engine, EvalOptions, LightPos, PreparedLight, inside_cone, terms};
+use crate::lighting::{Engine, EvalOptions, LightPos, PreparedLight, Renormalize, fast_rsqrt, inside_cone, terms};
 use crate::plan::Key;
 use crate::real::Vec3Ops;
 use crate::robust::{mul0, transform_point};
@@ -294,7 +294,11 @@ impl Source<'_> {
                     c.pos[i] = positions[start + i].as_dvec3();
                     c.set_nrm(i, normals[start + i]);
                 }
-                normalize_chunk(c);
+                match e.options.renormalize {
+                    Renormalize::Exact => normalize_chunk(c),
+                    Renormalize::FastRsqrt => normalize_chunk_fast(c),
+                    Renormalize::Skip => {}
+                }
             }
             Source::One { pos, n } => {
                 c.pos[0] = pos;
@@ -330,6 +334,19 @@ fn transform_normals(e: &Engine<f32>, normals: &[Vec3], c: &mut Chunk) {
             c.n = n;
             normalize_chunk(c);
         }
+    }
+}
+
+/// The chunk's normals times [`fast_rsqrt`] of their squared length (0 stays 0).
+#[inline(always)]
+fn normalize_chunk_fast(c: &mut Chunk) {
+    for i in 0..c.n {
+        let (x, y, z) = (c.nx[i], c.ny[i], c.nz[i]);
+        let q = x * x + y * y + z * z;
+        let inv = if q > 0.0 { fast_rsqrt(q) } else { 0.0 };
+        c.nx[i] = x * inv;
+        c.ny[i] = y * inv;
+        c.nz[i] = z * inv;
     }
 }
 

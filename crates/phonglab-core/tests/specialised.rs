@@ -32,7 +32,7 @@ fn every_public_case_bit_for_bit() {
     let mut checked = 0;
     for c in common::public_cases() {
         for pow in PowFn::ALL {
-            let options = EvalOptions { pow };
+            let options = EvalOptions::with_pow(pow);
             let Ok(l) = Lighter::new(&c.scene, options) else { continue }; // the refused cases
             let s = l.light_vertex(&c.scene.vertex);
             let g = general(&c.scene, options, &c.scene.vertex);
@@ -134,7 +134,7 @@ proptest! {
         pow in prop::sample::select(PowFn::ALL.to_vec()),
         verts in prop::collection::vec((v3(3.0), prop_oneof![Just(DVec3::ZERO), v3(1.0)]), 1..150),
     ) {
-        let options = EvalOptions { pow };
+        let options = EvalOptions::with_pow(pow);
         let l = Lighter::new(&scene, options).unwrap();
         let positions: Vec<Vec3> = verts.iter().map(|(p, _)| p.as_vec3()).collect();
         let normals: Vec<Vec3> = verts.iter().map(|(_, n)| n.as_vec3()).collect();
@@ -170,7 +170,7 @@ fn the_fast_paths_bit_for_bit() {
     }
     for (name, scene, partial) in scenes {
         for pow in PowFn::ALL {
-            let options = EvalOptions { pow };
+            let options = EvalOptions::with_pow(pow);
             let l = Lighter::new(&scene, options).unwrap();
             let mut front = vec![Lit::default(); positions.len()];
             l.light_batch(&positions, &normals, &mut front, None);

@@ -171,7 +171,26 @@ impl Renderer {
     }
 }
 
+/// What a pixel of the last frame shows: a point of a mesh triangle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Surface {
+    /// The mesh triangle.
+    pub triangle: usize,
+    /// The point's barycentric coordinates in it (perspective-correct).
+    pub barycentrics: [f32; 3],
+    /// The triangle faces away from the viewer.
+    pub back: bool,
+}
+
 impl Renderer {
+    /// What pixel `i` (row-major, rows from the top) of the last frame shows, if covered.
+    pub fn surface_at(&self, i: usize) -> Option<Surface> {
+        let r = *self.image.raster.get(i)?;
+        let t = self.setup.tris.get(r as usize)?;
+        let b = resolve::original_barycentrics(&self.setup, &self.image, i)?;
+        Some(Surface { triangle: t.orig as usize, barycentrics: b, back: t.back })
+    }
+
     /// The mesh vertex nearest to what pixel (x, y) of the last frame shows (y from the
     /// top): the vertex of the drawn triangle with the largest barycentric weight there.
     pub fn pick(&self, mesh: &Mesh, x: usize, y: usize) -> Option<usize> {
