@@ -425,3 +425,79 @@ fn ctrl_s_saves_and_ctrl_o_opens() {
     h.run_steps(2);
     assert_eq!(h.state().doc, saved);
 }
+
+/// Steps the UI until `done` holds (background work), failing after `secs` seconds.
+fn wait_for(h: &mut Harness<'static, AppState>, secs: u64, done: impl Fn(&AppState) -> bool) {
+    let start = std::time::Instant::now();
+    while !done(h.state()) {
+        assert!(start.elapsed().as_secs() < secs, "timed out");
+        std::thread::sleep(std::time::Duration::from_millis(50));
+        h.run_steps(1);
+    }
+    h.run_steps(2);
+}
+
+#[test]
+fn the_cost_of_accuracy_study_runs_in_the_background() {
+    let mut h = harness();
+    h.get_by_label("Cost of accuracy").click();
+    h.run_steps(2);
+    h.get_by_label("Run the study").click();
+    h.run_steps(2);
+    // While it runs the UI keeps answering: a progress bar, a Cancel button, live edits.
+    assert!(h.state().cost.running.is_some());
+    h.get_by_label("Cancel");
+    h.get_by_role_and_label(Role::Slider, "Light z").set_value_accesskit(120.0);
+    h.run_steps(1);
+    assert_eq!(h.state().doc.scene.lights[0].position.z, 120.0);
+    wait_for(&mut h, 120, |s| s.cost.running.is_none());
+    let (study, about) = h.state().cost.study.clone().expect("a study");
+    assert!(about.contains("Sphere"), "{about}");
+    assert_eq!(study.points.len(), phonglab_core::cost::variants(phonglab_core::ObjectKind::Sphere).len());
+    // The table shows every variant, and the takeaways are stated.
+    h.get_by_label("Gouraud 64");
+    h.get_by_label("Phong 32, fast rsqrt");
+    h.get_by_label_contains("f32 against f64 on");
+    // Phong beats Gouraud at every level, as the core's tests also say.
+    for l in phonglab_core::cost::levels(phonglab_core::ObjectKind::Sphere) {
+        let e = |s: &str| study.points.iter().find(|p| p.variant.label == format!("{s} {l}")).unwrap().error.mean;
+        assert!(e("Phong") <= e("Gouraud"), "level {l}");
+    }
+}
+
+#[test]
+fn cancelling_or_closing_stops_the_study() {
+    let mut h = harness();
+    h.get_by_label("Cost of accuracy").click();
+    h.run_steps(2);
+    h.get_by_label("Run the study").click();
+    h.run_steps(2);
+    h.get_by_label("Cancel").click();
+    h.run_steps(2);
+    assert!(h.state().cost.running.is_none() && h.state().cost.study.is_none());
+    h.get_by_label("Run the study").click();
+    h.run_steps(2);
+    assert!(h.state().cost.running.is_some());
+    h.get_by_role_and_label(Role::Button, "Cost of accuracy").click_accesskit(); // close the window
+    h.run_steps(2);
+    assert!(h.state().cost.running.is_none(), "closing cancels");
+}
+
+#[test]
+fn the_heat_map_shows_beside_the_shaded_view() {
+    let mut h = harness();
+    h.get_by_label("Error heat map").click();
+    h.run_steps(1);
+    wait_for(&mut h, 60, |s| s.cost.heat.is_some());
+    let heat = h.state().cost.heat.as_ref().unwrap();
+    // Gouraud on the 50x50 sphere: close, but not exact, at the highlight and the rim.
+    assert!(heat.error.mean > 0.0 && heat.error.mean < 2.0, "{:?}", heat.error);
+    h.get_by_label_contains("Error against the f64 reference");
+    // Switching to Phong asks for a new map, which is closer to the reference.
+    let gouraud = heat.error;
+    h.get_by_label("Phong").click();
+    h.run_steps(2);
+    wait_for(&mut h, 60, |s| s.cost.heat.as_ref().is_some_and(|m| m.key.contains("Phong")));
+    let phong = h.state().cost.heat.as_ref().unwrap().error;
+    assert!(phong.mean <= gouraud.mean && phong.share_over_one <= gouraud.share_over_one, "{phong:?} vs {gouraud:?}");
+}

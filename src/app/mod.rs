@@ -4,6 +4,7 @@
 
 pub mod calculation;
 pub mod controls;
+pub mod cost;
 pub mod files;
 pub mod help;
 pub mod palette;
@@ -111,6 +112,9 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
             }
         });
         ui.separator();
+        ui.toggle_value(&mut state.cost.open, "Cost of accuracy")
+            .on_hover_text("What each shading, tessellation and approximation costs in time and in error");
+        ui.separator();
         files::file_ui(ui, state);
         ui.separator();
         if ui.button("Help (F1)").clicked() {
@@ -155,7 +159,8 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     egui::Panel::right("calculation").resizable(true).default_size(430.0).min_size(300.0).show(ui, |ui| {
         let two_sided = state.doc.scene.light_model.two_sided;
         let effects =
-            phonglab_core::plan::Key::of(&state.doc.scene, phonglab_core::EvalOptions::with_pow(state.ui.pow)).effects();
+            phonglab_core::plan::Key::of(&state.doc.scene, phonglab_core::EvalOptions::with_pow(state.ui.pow))
+                .effects();
         calculation::calculation_ui(ui, &eval.explanation, &mut state.ui.side, two_sided, &effects);
     });
 
@@ -189,6 +194,11 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
             shaded(ui, state);
         }
     });
+
+    cost::cost_window_ui(ui.ctx(), state);
+    if state.cost.poll() {
+        ui.ctx().request_repaint_after(std::time::Duration::from_millis(100));
+    }
 
     if state.ui.show_help {
         let mut open = true;

@@ -62,6 +62,8 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
         ui.checkbox(&mut view.auto_rotate, "Auto-rotate").on_hover_text("0.5 degrees a frame, as the demo (key A)");
         ui.checkbox(&mut view.demo_normals, "Demo's normals")
             .on_hover_text("normalize(position), as the demo: wrong for the teapot and the cylinder");
+        ui.checkbox(&mut state.cost.heat_map, "Error heat map")
+            .on_hover_text("Beside the view: how far each pixel is from per-pixel Phong in f64 on a very fine mesh");
     });
     ui.horizontal_wrapped(|ui| {
         let count = |ui: &mut Ui, label: &str, v: &mut u32, r: std::ops::RangeInclusive<u32>| {
@@ -93,8 +95,10 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
     }
 
     let avail = ui.available_size();
-    // Leave room for the caption line above the image.
-    let side = avail.x.min(avail.y - ui.text_style_height(&egui::TextStyle::Small) - 8.0).max(64.0);
+    let heat = state.cost.heat_map;
+    // Leave room for the caption line above the image (and the heat map beside it).
+    let width = if heat { (avail.x - 8.0) / 2.0 } else { avail.x };
+    let side = width.min(avail.y - 2.0 * ui.text_style_height(&egui::TextStyle::Small) - 8.0).max(64.0);
     let ppp = ui.ctx().pixels_per_point();
     let px = ((side * ppp) as usize).clamp(64, 1024);
     let camera = state.doc.view.camera;
@@ -125,18 +129,35 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
             Err(e) => state.message = Some(Message::Refused(format!("The shaded view cannot render this scene: {e}"))),
         }
     }
+    if heat {
+        state.cost.want_heat_map(&scene, &state.doc.view, EvalOptions::with_pow(state.ui.pow));
+    }
     let Some(tex) = &cache.texture else { return };
     let size = egui::vec2(side, side);
-    let label = ui.small(format!(
+    let caption = format!(
         "{} {}: {} ms per frame",
         state.doc.view.object.label(),
         state.doc.view.shading.label(),
         fmt_ms(cache.last_ms)
-    ));
+    );
     let resp = ui
-        .add(egui::Image::new((tex.id(), size)).sense(Sense::click_and_drag()))
-        .on_hover_text("Drag to orbit, scroll to zoom, click the surface to make that vertex the worked calculation's")
-        .labelled_by(label.id);
+        .horizontal_top(|ui| {
+            let resp = ui
+                .vertical(|ui| {
+                    let label = ui.small(caption);
+                    ui.add(egui::Image::new((tex.id(), size)).sense(Sense::click_and_drag()))
+                        .on_hover_text(
+                            "Drag to orbit, scroll to zoom, click the surface to make that vertex the worked calculation's",
+                        )
+                        .labelled_by(label.id)
+                })
+                .inner;
+            if heat {
+                super::cost::heat_map_ui(ui, state, side);
+            }
+            resp
+        })
+        .inner;
 
     // The light(s), as markers.
     let clip_from_world = view_projection(1.0) * camera.eye_from_world();

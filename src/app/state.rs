@@ -95,6 +95,8 @@ pub struct AppState {
     pub message: Option<Message>,
     /// The shaded view's renderer and texture, kept between frames.
     pub shaded: super::shaded::ShadedCache,
+    /// The cost-of-accuracy panel and its background work.
+    pub cost: super::cost::CostState,
 }
 
 /// The colours of one side, as f64.

@@ -1,0 +1,385 @@
+//! "Cost of accuracy": the core's study ([`phonglab_core::cost`]) run in the background on
+//! the current scene and object, shown as a chart (time across, error up, every point
+//! labelled) and a table; and an error heat map of the shaded view against the reference.
+//!
+//! Work runs on its own thread ([`Worker`]) with a progress bar; the UI never waits for
+//! it, and closing the panel or starting again cancels what is running.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{Receiver, TryRecvError};
+use std::sync::{Arc, Mutex};
+
+use egui::{Color32, ColorImage, TextureHandle, TextureOptions, Ui};
+use egui_plot::{Legend, Line, LineStyle, MarkerShape, Plot, PlotPoint, PlotPoints, Points, Text};
+use phonglab_core::cost::{self, ErrorStats, Progress, Question, Setup, Study, Timing};
+use phonglab_core::view::view_projection;
+use phonglab_core::{EvalOptions, Scene, Shading, View};
+
+/// Image size of the app's study and heat map, in pixels (the CLI's default is larger).
+pub const APP_SIZE: usize = 256;
+
+/// The background colour of the study's images (the shaded view's).
+pub const BACKGROUND: [f32; 3] = [0.1, 0.1, 0.15];
+
+/// A computation on its own thread, with progress and cancellation.
+pub struct Worker<T> {
+    progress: Arc<Mutex<Progress>>,
+    cancel: Arc<AtomicBool>,
+    result: Receiver<Result<Option<T>, String>>,
+}
+
+impl<T: Send + 'static> Worker<T> {
+    /// Starts `job`; it reports progress through the callback, which returns `false` once
+    /// the worker is cancelled (or dropped).
+    pub fn spawn(
+        job: impl FnOnce(&mut dyn FnMut(&Progress) -> bool) -> Result<Option<T>, String> + Send + 'static,
+    ) -> Self {
+        let progress = Arc::new(Mutex::new(Progress { done: 0, total: 1, what: "starting".into() }));
+        let cancel = Arc::new(AtomicBool::new(false));
+        let (tx, rx) = std::sync::mpsc::channel();
+        let (p, c) = (progress.clone(), cancel.clone());
+        std::thread::spawn(move || {
+            let mut report = |now: &Progress| {
+                if let Ok(mut g) = p.lock() {
+                    *g = now.clone();
+                }
+                !c.load(Ordering::Relaxed)
+            };
+            // A panic in the job must not take the app down: it becomes a message.
+            let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(&mut report)))
+                .unwrap_or_else(|_| Err("the computation failed unexpectedly".into()));
+            let _ = tx.send(r);
+        });
+        Self { progress, cancel, result: rx }
+    }
+
+    /// Where it is.
+    pub fn progress(&self) -> Progress {
+        self.progress.lock().map(|g| g.clone()).unwrap_or(Progress { done: 0, total: 1, what: String::new() })
+    }
+
+    /// The result once finished (`Ok(None)`: cancelled).
+    pub fn poll(&self) -> Option<Result<Option<T>, String>> {
+        match self.result.try_recv() {
+            Ok(r) => Some(r),
+            Err(TryRecvError::Empty) => None,
+            Err(TryRecvError::Disconnected) => Some(Err("the computation stopped".into())),
+        }
+    }
+}
+
+impl<T> Drop for Worker<T> {
+    fn drop(&mut self) {
+        self.cancel.store(true, Ordering::Relaxed);
+    }
+}
+
+/// A heat map of one view against the reference.
+pub struct HeatMap {
+    /// What it was computed for (the scene, the view, the options).
+    pub key: String,
+    /// Its error figures.
+    pub error: ErrorStats,
+    /// Milliseconds per frame of the view at this size.
+    pub ms: f64,
+    image: ColorImage,
+    texture: Option<TextureHandle>,
+}
+
+/// The panel's state.
+#[derive(Default)]
+pub struct CostState {
+    /// The window is open.
+    pub open: bool,
+    /// Show the shaded view's error heat map.
+    pub heat_map: bool,
+    /// The last finished study, and what it was of.
+    pub study: Option<(Arc<Study>, String)>,
+    /// The study under way.
+    pub running: Option<Worker<Study>>,
+    /// The last heat map.
+    pub heat: Option<HeatMap>,
+    heat_running: Option<(String, Worker<HeatMap>)>,
+    /// Why the last computation failed.
+    pub error: Option<String>,
+    /// What the running study is of.
+    pending_about: String,
+}
+
+impl CostState {
+    /// Starts a study of `scene` (as the shaded view lights it) and `view`'s object.
+    pub fn start(&mut self, scene: Scene, view: View, about: String) {
+        self.error = None;
+        self.running = Some(Worker::spawn(move |progress| {
+            let setup = Setup {
+                scene: &scene,
+                view: &view,
+                clip_from_eye: view_projection(1.0),
+                size: APP_SIZE,
+                background: BACKGROUND,
+            };
+            cost::run(&setup, Timing::QUICK, progress).map_err(|e| e.to_string())
+        }));
+        self.pending_about = about;
+    }
+
+    /// Collects finished work; returns whether something is still running.
+    pub fn poll(&mut self) -> bool {
+        if let Some(w) = &self.running
+            && let Some(r) = w.poll()
+        {
+            match r {
+                Ok(Some(s)) => self.study = Some((Arc::new(s), std::mem::take(&mut self.pending_about))),
+                Ok(None) => {}
+                Err(e) => self.error = Some(format!("The study failed: {e}")),
+            }
+            self.running = None;
+        }
+        if let Some((_, w)) = &self.heat_running
+            && let Some(r) = w.poll()
+        {
+            match r {
+                Ok(Some(h)) => self.heat = Some(h),
+                Ok(None) => {}
+                Err(e) => self.error = Some(format!("The heat map failed: {e}")),
+            }
+            self.heat_running = None;
+        }
+        self.running.is_some() || self.heat_running.is_some()
+    }
+
+    /// Makes sure a heat map of this view is on its way (or there).
+    pub fn want_heat_map(&mut self, scene: &Scene, view: &View, options: EvalOptions) {
+        let key = format!("{scene:?}|{view:?}|{options:?}");
+        if self.heat.as_ref().is_some_and(|h| h.key == key)
+            || self.heat_running.as_ref().is_some_and(|(k, _)| *k == key)
+        {
+            return;
+        }
+        if self.heat_running.is_some() {
+            // One at a time: the newest view is asked for when this one is done.
+            return;
+        }
+        let (scene, view, k) = (scene.clone(), view.clone(), key.clone());
+        let worker = Worker::spawn(move |progress| {
+            let setup = Setup {
+                scene: &scene,
+                view: &view,
+                clip_from_eye: view_projection(1.0),
+                size: APP_SIZE,
+                background: BACKGROUND,
+            };
+            if !progress(&Progress { done: 0, total: 2, what: "reference".into() }) {
+                return Ok(None);
+            }
+            let reference = cost::reference(&setup).map_err(|e| e.to_string())?;
+            if !progress(&Progress { done: 1, total: 2, what: "the view".into() }) {
+                return Ok(None);
+            }
+            let m = cost::measure_view(&setup, &view, view.shading, options, &reference, Timing::ONCE)
+                .map_err(|e| e.to_string())?;
+            let rgba = cost::heat_map_rgba(&m.map, &reference, HEAT_FULL_SCALE);
+            let image = ColorImage::from_rgba_unmultiplied([reference.size, reference.size], &rgba);
+            Ok(Some(HeatMap { key: k, error: m.error, ms: m.ms, image, texture: None }))
+        });
+        self.heat_running = Some((key, worker));
+    }
+}
+
+/// The heat map's white point, in 1/255.
+pub const HEAT_FULL_SCALE: f32 = 16.0;
+
+/// Colours of the three shadings and of the other questions, in the chart and the table.
+fn series_color(q: Question, s: Shading) -> Color32 {
+    match (q, s) {
+        (Question::Shading, Shading::Flat) => Color32::from_rgb(120, 144, 156),
+        (Question::Shading, Shading::Gouraud) => Color32::from_rgb(30, 136, 229),
+        (Question::Shading, Shading::Phong) => Color32::from_rgb(67, 160, 71),
+        (Question::Precision, _) => Color32::from_rgb(142, 36, 170),
+        (Question::Approximation, _) => Color32::from_rgb(239, 108, 0),
+    }
+}
+
+/// `10^v` for a log-scale axis, with few digits.
+fn pow10_label(v: f64) -> String {
+    let x = 10f64.powf(v);
+    if x >= 10.0 {
+        format!("{x:.0}")
+    } else if x >= 1.0 {
+        format!("{x:.1}")
+    } else {
+        format!("{x:.2}")
+    }
+}
+
+/// The chart: median ms per frame across, mean error (1/255) up, both logarithmic; the
+/// three shadings as lines through their tessellations, each point labelled with its
+/// level; the approximations and Phong in f32 as labelled markers; the 8-bit floor dashed.
+pub fn cost_chart_ui(ui: &mut Ui, study: &Study, height: f32) {
+    let log = |x: f64| x.max(1e-3).log10();
+    let xs: Vec<f64> = study.points.iter().map(|p| log(p.ms)).collect();
+    let (x_min, x_max) = xs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(*x), b.max(*x)));
+    Plot::new(format!("cost chart {:?}", study.object))
+        .height(height)
+        .legend(Legend::default())
+        .x_axis_label("median ms per frame (log)")
+        .y_axis_label("mean error, 1/255 (log)")
+        .x_axis_formatter(|m, _| pow10_label(m.value))
+        .y_axis_formatter(|m, _| pow10_label(m.value))
+        .allow_scroll(false)
+        .show(ui, |p| {
+            for shading in Shading::ALL {
+                let pts: Vec<&cost::CostPoint> = study
+                    .points
+                    .iter()
+                    .filter(|q| q.variant.question == Question::Shading && q.variant.shading == shading)
+                    .collect();
+                let xy: Vec<[f64; 2]> = pts.iter().map(|q| [log(q.ms), log(q.error.mean)]).collect();
+                let c = series_color(Question::Shading, shading);
+                p.line(Line::new(shading.label(), PlotPoints::from(xy.clone())).color(c).width(2.0));
+                p.points(Points::new(shading.label(), PlotPoints::from(xy.clone())).color(c).radius(4.0));
+                for (q, at) in pts.iter().zip(&xy) {
+                    p.text(
+                        Text::new(shading.label(), PlotPoint::new(at[0], at[1]), format!(" {}", q.variant.level))
+                            .color(c)
+                            .anchor(egui::Align2::LEFT_BOTTOM),
+                    );
+                }
+            }
+            for q in study.points.iter().filter(|q| q.variant.question != Question::Shading) {
+                let c = series_color(q.variant.question, q.variant.shading);
+                let at = [log(q.ms), log(q.error.mean)];
+                let (name, shape) = match q.variant.question {
+                    Question::Precision => ("Phong, f32 on the reference mesh", MarkerShape::Asterisk),
+                    _ => ("approximations", MarkerShape::Diamond),
+                };
+                p.points(Points::new(name, PlotPoints::from(vec![at])).color(c).radius(5.0).shape(shape));
+                let label = q.variant.label.split(", ").last().unwrap_or(&q.variant.label).to_string();
+                p.text(
+                    Text::new(name, PlotPoint::new(at[0], at[1]), format!(" {label}"))
+                        .color(c)
+                        .anchor(egui::Align2::LEFT_TOP),
+                );
+            }
+            // 8-bit rounding alone leaves a mean error of about 1/4 of a step.
+            let floor = log(0.25);
+            p.line(
+                Line::new("8-bit rounding", PlotPoints::from(vec![[x_min - 0.1, floor], [x_max + 0.3, floor]]))
+                    .color(Color32::GRAY)
+                    .style(LineStyle::dashed_loose()),
+            );
+        });
+}
+
+/// The table under the chart.
+pub fn cost_table_ui(ui: &mut Ui, study: &Study) {
+    egui::Grid::new(format!("cost table {:?}", study.object)).striped(true).num_columns(6).show(ui, |ui| {
+        for h in ["variant", "triangles", "ms/frame", "mean /255", "max /255", "> 1/255"] {
+            ui.strong(h);
+        }
+        ui.end_row();
+        for p in &study.points {
+            ui.colored_label(series_color(p.variant.question, p.variant.shading), &p.variant.label);
+            ui.monospace(p.triangles.to_string());
+            ui.monospace(format!("{:.2}", p.ms));
+            ui.monospace(format!("{:.2}", p.error.mean));
+            ui.monospace(format!("{:.1}", p.error.max));
+            ui.monospace(format!("{:.1} %", 100.0 * p.error.share_over_one));
+            ui.end_row();
+        }
+    });
+}
+
+/// The lessons the numbers support, in words.
+pub fn takeaways(study: &Study) -> Vec<String> {
+    let mut out = Vec::new();
+    let good = |q: &&cost::CostPoint| q.variant.question == Question::Shading && q.error.share_over_one < 0.01;
+    if let Some(best) = study.points.iter().filter(good).min_by(|a, b| a.ms.total_cmp(&b.ms)) {
+        out.push(format!(
+            "Cheapest with under 1 % of pixels off by more than 1/255: {} ({} triangles), {:.2} ms per frame.",
+            best.variant.label, best.triangles, best.ms
+        ));
+    } else {
+        out.push("No shading studied stays within 1/255 on 99 % of the pixels: the silhouette or the highlight needs a finer mesh.".into());
+    }
+    let p = &study.precision;
+    out.push(format!(
+        "f32 against f64 on {} vertices: at most {:.1e} apart ({:.4}/255 after clamping); the general engine takes {:.0} ns (f32) and {:.0} ns (f64) a vertex, the specialised one {:.0} ns.",
+        p.vertices, p.max_error, p.max_error_shown_255, p.general_f32_ns, p.general_f64_ns, p.specialised_f32_ns
+    ));
+    out
+}
+
+/// The "Cost of accuracy" window.
+pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
+    if !state.cost.open {
+        if state.cost.running.is_some() {
+            state.cost.running = None; // closing cancels
+        }
+        return;
+    }
+    let mut open = true;
+    egui::Window::new("Cost of accuracy")
+        .open(&mut open)
+        .default_pos(egui::pos2(420.0, 60.0))
+        .default_width(760.0)
+        .vscroll(true)
+        .show(ctx, |ui| {
+            ui.label(
+                "Each shading at five tessellations of the current object, timed and compared with a reference: \
+             per-pixel Phong in f64 on a very fine mesh. Also Phong in f32 on the reference's own mesh \
+             (does f64 change anything visible?) and the approximations people use.",
+            );
+            ui.horizontal(|ui| {
+                let busy = state.cost.running.is_some();
+                if ui.add_enabled(!busy, egui::Button::new("Run the study")).clicked() {
+                    let about = format!("{}, {}", state.doc.view.object.label(), state.doc.name);
+                    state.cost.start(state.doc.shaded_scene(), state.doc.view.clone(), about);
+                }
+                if busy && ui.button("Cancel").clicked() {
+                    state.cost.running = None;
+                }
+            });
+            if let Some(w) = &state.cost.running {
+                let p = w.progress();
+                ui.add(
+                    egui::ProgressBar::new(p.done as f32 / p.total.max(1) as f32)
+                        .text(format!("{}/{}: {}", p.done, p.total, p.what))
+                        .show_percentage(),
+                );
+            }
+            if let Some(e) = &state.cost.error {
+                ui.colored_label(super::palette::ERROR, e);
+            }
+            if let Some((study, about)) = &state.cost.study {
+                ui.separator();
+                ui.strong(format!("{about} ({}x{} px, timings taken while the app runs)", study.size, study.size));
+                cost_chart_ui(ui, study, 340.0);
+                for t in takeaways(study) {
+                    ui.label(t);
+                }
+                egui::CollapsingHeader::new("Table").default_open(true).show(ui, |ui| cost_table_ui(ui, study));
+            }
+        });
+    state.cost.open = open;
+}
+
+/// The heat map beside the shaded view, `side` points square, with its caption.
+pub fn heat_map_ui(ui: &mut Ui, state: &mut super::AppState, side: f32) {
+    ui.vertical(|ui| {
+        let Some(h) = &mut state.cost.heat else {
+            ui.small("Error heat map: computing the reference...");
+            return;
+        };
+        let tex = h
+            .texture
+            .get_or_insert_with(|| ui.ctx().load_texture("error heat map", h.image.clone(), TextureOptions::NEAREST));
+        let caption = ui.small(format!(
+            "Error against the f64 reference: mean {:.2}/255, max {:.0}/255, {:.1} % of pixels > 1/255 (white: {HEAT_FULL_SCALE}/255)",
+            h.error.mean,
+            h.error.max,
+            100.0 * h.error.share_over_one
+        ));
+        ui.add(egui::Image::new((tex.id(), egui::vec2(side, side)))).labelled_by(caption.id);
+    });
+}
