@@ -31,6 +31,10 @@ pub enum Command {
     /// Write scene files as glref cases (JSON), to check them against a real OpenGL with
     /// the Mesa harness (`glref.py CASES.json OUT.json`) or with `phonglab eval`.
     Case(CaseArgs),
+    /// What accuracy costs: each shading and tessellation, f32 against f64 and the usual
+    /// approximations, timed and compared with a per-pixel f64 reference; writes
+    /// cost.csv and cost.png.
+    Cost(crate::cost_cmd::CostArgs),
     /// Measure: the renderer, the lighting.
     #[command(subcommand)]
     Bench(crate::bench::BenchCommand),
@@ -179,6 +183,7 @@ pub fn run(command: Command) -> ExitCode {
         Command::Bench(b) => crate::bench::run(&b),
         Command::Render(a) => render(&a),
         Command::Case(a) => case(&a),
+        Command::Cost(a) => crate::cost_cmd::run(&a),
     };
     match r {
         Ok(()) => ExitCode::SUCCESS,

@@ -3,4 +3,6 @@
 pub mod app;
 pub mod bench;
 pub mod cli;
+pub mod cost_cmd;
+pub mod egui_cpu;
 pub mod image_io;

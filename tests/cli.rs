@@ -182,3 +182,37 @@ fn case_writes_a_scene_file_that_eval_lights_as_opengl() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("/no/such/scene.toml"), "{}", stderr(&o));
 }
+
+#[test]
+fn cost_prints_a_table_and_writes_the_csv_the_chart_and_heat_maps() {
+    let dir = std::env::temp_dir().join(format!("phonglab-cost-{}", std::process::id()));
+    let o = phonglab(&["cost", "--object", "sphere", "--size", "48", "--quick", "--out", dir.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(
+        out.contains("# Sphere: 48x48 px") && out.contains("Gouraud 32") && out.contains("Phong 32, fast rsqrt"),
+        "{out}"
+    );
+    let csv = std::fs::read_to_string(dir.join("cost.csv")).unwrap();
+    let rows: Vec<&str> = csv.lines().collect();
+    assert_eq!(rows.len(), 1 + phonglab_core::cost::variants(phonglab_core::ObjectKind::Sphere).len());
+    assert!(rows[0].starts_with("object,variant,question"));
+    assert!(rows[1].starts_with("sphere,Flat 8,Shading,Flat,8,112,"), "{}", rows[1]);
+    // Every error figure parses and is non-negative; the f32 Phong on the reference mesh
+    // is within 8-bit rounding.
+    for r in &rows[1..] {
+        let f: Vec<f64> = r.rsplit(',').take(3).map(|x| x.parse().unwrap()).collect();
+        assert!(f.iter().all(|x| *x >= 0.0), "{r}");
+    }
+    let f32_row = rows.iter().find(|r| r.contains("(f32)")).unwrap();
+    let max: f64 = f32_row.split(',').nth(8).unwrap().parse().unwrap();
+    assert!(max <= 0.5 + 1e-3, "{f32_row}");
+    let (w, h, _) = phonglab::image_io::read_png(&dir.join("cost.png")).unwrap();
+    assert!(w >= 960 && h >= 400, "{w}x{h}");
+    let (w, h, _) = phonglab::image_io::read_png(&dir.join("heat-sphere-phong-32.png")).unwrap();
+    assert_eq!((w, h), (48, 48));
+    let _ = std::fs::remove_dir_all(&dir);
+    // Bad arguments are refused with a message.
+    let o = phonglab(&["cost", "--size", "4"]);
+    assert_eq!(o.status.code(), Some(2));
+}

@@ -174,8 +174,8 @@ pub fn error(image: &Image, reference: &Reference) -> ErrorStats {
         }
         let c = image.rgb(x, y);
         let mut worst = 0.0f64;
-        for k in 0..3 {
-            let d = (c[k] as f64 - 255.0 * reference.rgb[i][k]).abs();
+        for (got, want) in c.iter().zip(reference.rgb[i]) {
+            let d = (*got as f64 - 255.0 * want).abs();
             sum += d;
             worst = worst.max(d);
         }
@@ -322,15 +322,43 @@ pub fn measure(
     reference: &Reference,
     timing: Timing,
 ) -> Result<(CostPoint, Vec<f32>), SceneError> {
-    let mesh = Mesh::for_view(&view_at(setup.view, variant.level));
+    let view = view_at(setup.view, variant.level);
+    let m = measure_view(setup, &view, variant.shading, variant.options, reference, timing)?;
+    Ok((CostPoint { variant: variant.clone(), triangles: m.triangles, ms: m.ms, error: m.error }, m.map))
+}
+
+/// One way of drawing, measured: see [`measure_view`].
+#[derive(Clone, Debug)]
+pub struct Measured {
+    /// Triangles in the mesh.
+    pub triangles: usize,
+    /// Median milliseconds per frame.
+    pub ms: f64,
+    /// Error against the reference.
+    pub error: ErrorStats,
+    /// Per-pixel worst-channel error, in 1/255 ([`error_map`]).
+    pub map: Vec<f32>,
+}
+
+/// Renders the object of `view` (its own tessellation) with `shading` and `options` at
+/// the reference's size, timing it, and compares the last frame with the reference.
+pub fn measure_view(
+    setup: &Setup<'_>,
+    view: &View,
+    shading: Shading,
+    options: EvalOptions,
+    reference: &Reference,
+    timing: Timing,
+) -> Result<Measured, SceneError> {
+    let mesh = Mesh::for_view(view);
     let job = Job {
         scene: setup.scene,
         mesh: &mesh,
         clip_from_eye: setup.clip_from_eye,
-        shading: variant.shading,
+        shading,
         background: setup.background,
         cull_back: false,
-        options: variant.options,
+        options,
     };
     let size = reference.size;
     let mut renderer = Renderer::new();
@@ -346,13 +374,12 @@ pub fn measure(
     }
     times.sort_by(f64::total_cmp);
     let (image, _) = renderer.render(&job, size, size)?;
-    let point = CostPoint {
-        variant: variant.clone(),
+    Ok(Measured {
         triangles: mesh.triangle_count(),
         ms: times[times.len() / 2],
         error: error(image, reference),
-    };
-    Ok((point, error_map(image, reference)))
+        map: error_map(image, reference),
+    })
 }
 
 /// f32 against f64: the time per vertex of each evaluator and the largest difference.

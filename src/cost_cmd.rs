@@ -1,0 +1,177 @@
+//! `phonglab cost`: the cost-of-accuracy study from the command line. Prints a table per
+//! object and writes `cost.csv` (every variant) and `cost.png` (the app's chart, painted
+//! on the CPU), plus each object's error heat maps of Gouraud and Phong at the middle level.
+
+use std::io::IsTerminal as _;
+use std::path::PathBuf;
+
+use anyhow::{Context as _, Result};
+use clap::Args;
+use phonglab_core::cost::{self, Question, Setup, Study, Timing};
+use phonglab_core::view::view_projection;
+use phonglab_core::{Document, ObjectKind};
+
+use crate::app::cost::{BACKGROUND, HEAT_FULL_SCALE, cost_chart_ui, takeaways};
+use crate::cli::ObjectArg;
+
+/// `phonglab cost`.
+#[derive(Args, Debug)]
+pub struct CostArgs {
+    /// The object to study (default: all three).
+    #[arg(long, value_enum)]
+    pub object: Option<ObjectArg>,
+    /// Where to write cost.csv, cost.png and the heat maps.
+    #[arg(long, default_value = ".")]
+    pub out: PathBuf,
+    /// Image width and height in pixels.
+    #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
+    pub size: u32,
+    /// A scene file (TOML) for the lighting and the view; default: the worksheet's scene.
+    #[arg(long)]
+    pub scene: Option<PathBuf>,
+    /// Turn the object this many degrees about y (the cylinder shows its side at 30).
+    #[arg(long, default_value_t = 30.0)]
+    pub spin: f64,
+    /// Threads for rendering (default: all cores).
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Quick timings (3 frames or 0.1 s per variant) instead of careful ones.
+    #[arg(long)]
+    pub quick: bool,
+}
+
+fn objects(a: &CostArgs) -> Vec<ObjectKind> {
+    match a.object {
+        None => ObjectKind::ALL.to_vec(),
+        Some(ObjectArg::Sphere) => vec![ObjectKind::Sphere],
+        Some(ObjectArg::Teapot) => vec![ObjectKind::Teapot],
+        Some(ObjectArg::Cylinder) => vec![ObjectKind::Cylinder],
+    }
+}
+
+/// Runs the study of every chosen object, printing progress on stderr.
+pub fn studies(a: &CostArgs) -> Result<Vec<Study>> {
+    let base = match &a.scene {
+        Some(p) => crate::cli::load_scene_file(p)?,
+        None => Document::default(),
+    };
+    if !a.spin.is_finite() {
+        anyhow::bail!("--spin must be a finite number of degrees");
+    }
+    let timing = if a.quick { Timing::QUICK } else { Timing::CAREFUL };
+    let mut out = Vec::new();
+    for object in objects(a) {
+        let mut doc = base.clone();
+        doc.view.object = object;
+        doc.view.spin_degrees = a.spin.rem_euclid(360.0);
+        let scene = doc.shaded_scene();
+        let setup = Setup {
+            scene: &scene,
+            view: &doc.view,
+            clip_from_eye: view_projection(1.0),
+            size: a.size as usize,
+            background: BACKGROUND,
+        };
+        let tty = std::io::stderr().is_terminal();
+        let study = cost::run(&setup, timing, &mut |p| {
+            if tty {
+                eprint!("\r\x1b[2K{}: {}/{} {}", object.label(), p.done, p.total, p.what);
+            }
+            true
+        })?
+        .context("the study stopped")?;
+        if tty {
+            eprintln!();
+        }
+        out.push(study);
+    }
+    Ok(out)
+}
+
+/// The table printed for one study.
+pub fn table(study: &Study) -> String {
+    let mut s = format!(
+        "# {}: {}x{} px, reference {} triangles (f64, per pixel); errors in 1/255 against it\n",
+        study.object.label(),
+        study.size,
+        study.size,
+        study.reference_triangles
+    );
+    s.push_str(&format!(
+        "{:<34} {:>9} {:>9} {:>8} {:>8} {:>9}\n",
+        "variant", "triangles", "ms/frame", "mean", "max", ">1/255 %"
+    ));
+    for p in &study.points {
+        s.push_str(&format!(
+            "{:<34} {:>9} {:>9.3} {:>8.3} {:>8.1} {:>9.2}\n",
+            p.variant.label,
+            p.triangles,
+            p.ms,
+            p.error.mean,
+            p.error.max,
+            100.0 * p.error.share_over_one
+        ));
+    }
+    for t in takeaways(study) {
+        s.push_str(&format!("# {t}\n"));
+    }
+    s
+}
+
+/// Paints the studies' charts, one under another, into an RGBA image (1 point = 1 pixel
+/// at `ppp` 1; 2 for a sharper image).
+pub fn chart_png(studies: &[Study], ppp: f32) -> (usize, usize, Vec<u8>) {
+    let (w, h_each) = (960.0, 420.0);
+    let h = h_each * studies.len() as f32 + 10.0;
+    let canvas = crate::egui_cpu::paint_ui(w, h, ppp, |ui| {
+        egui::CentralPanel::default().show(ui, |ui| {
+            for s in studies {
+                ui.strong(format!(
+                    "{}: time per frame against mean error ({}x{} px, reference: per-pixel Phong in f64, {} triangles)",
+                    s.object.label(),
+                    s.size,
+                    s.size,
+                    s.reference_triangles
+                ));
+                cost_chart_ui(ui, s, h_each - 40.0);
+            }
+        });
+    });
+    (canvas.width, canvas.height, canvas.rgba8())
+}
+
+/// `phonglab cost`.
+pub fn run(a: &CostArgs) -> Result<()> {
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(a.threads.unwrap_or(0)).build()?;
+    let studies = pool.install(|| studies(a))?;
+    std::fs::create_dir_all(&a.out).with_context(|| format!("cannot create {}", a.out.display()))?;
+    let mut csv = String::new();
+    for (i, s) in studies.iter().enumerate() {
+        println!("{}", table(s));
+        let part = cost::to_csv(s);
+        csv.push_str(if i == 0 { &part } else { part.split_once('\n').map_or("", |(_, rest)| rest) });
+        // The middle level's Gouraud and Phong error maps.
+        let mid = cost::levels(s.object)[2];
+        for (p, map) in s.points.iter().zip(&s.error_maps) {
+            if p.variant.question == Question::Shading
+                && p.variant.level == mid
+                && p.variant.shading != phonglab_core::Shading::Flat
+            {
+                let rgba = cost::heat_map_rgba(map, &s.reference, HEAT_FULL_SCALE);
+                let name = format!(
+                    "heat-{}-{}-{mid}.png",
+                    s.object.label().to_lowercase(),
+                    p.variant.shading.label().to_lowercase()
+                );
+                crate::image_io::write_png(&a.out.join(name), s.size, s.size, &rgba)?;
+            }
+        }
+    }
+    let csv_path = a.out.join("cost.csv");
+    std::fs::write(&csv_path, csv).with_context(|| format!("cannot write {}", csv_path.display()))?;
+    let (w, h, rgba) = chart_png(&studies, 1.5);
+    let png_path = a.out.join("cost.png");
+    crate::image_io::write_png(&png_path, w, h, &rgba)?;
+    eprintln!("wrote {}, {} and the heat maps", csv_path.display(), png_path.display());
+    Ok(())
+}
