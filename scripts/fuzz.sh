@@ -24,8 +24,17 @@ for c in cases:
         json.dump([c], f)
 PY
 
+mkdir -p fuzz/logs
+status=0
 for t in "${targets[@]}"; do
-  echo "== $t: ${secs}s" >&2
-  cargo +nightly fuzz run "$t" --fuzz-dir fuzz -- -max_total_time="$secs" -max_len=8192 -timeout=10 \
-    -dict=fuzz/toml.dict 2>&1 | tail -n 25
+  echo "== $t: ${secs}s (log: fuzz/logs/$t.log)" >&2
+  if cargo +nightly fuzz run "$t" --fuzz-dir fuzz -- -max_total_time="$secs" -max_len=8192 -timeout=10 \
+      -dict=fuzz/toml.dict > "fuzz/logs/$t.log" 2>&1; then
+    grep -E "^Done [0-9]+ runs" "fuzz/logs/$t.log" >&2 || true
+  else
+    status=1
+    echo "$t FOUND A FAILURE:" >&2
+    grep -E "panicked at|^thread|SUMMARY|crash-" "fuzz/logs/$t.log" | head -n 8 >&2
+  fi
 done
+exit $status

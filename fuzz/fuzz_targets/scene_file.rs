@@ -1,6 +1,6 @@
 //! Any text as a scene file: it parses or is refused, never panics. A document it accepts
 //! is valid, saves and loads back to itself, lights its vertex with no NaN and finite f64
-//! colours (the editing rules keep every number a float), gives the same colour in the
+//! colours (the editing rules keep every number a float; llvmpipe's pow is f32 arithmetic), gives the same colour in the
 //! specialised evaluator as in the general engine (bit for bit, f32), explains itself, and
 //! renders.
 #![no_main]
@@ -21,10 +21,16 @@ fuzz_target!(|data: &[u8]| {
 
     let scene = &doc.scene;
     for pow in PowFn::ALL {
-        let options = EvalOptions { pow };
+        let options = EvalOptions::with_pow(pow);
         let lit64 = Engine::<f64>::with_options(scene, options).unwrap().light(&scene.vertex);
         for c in [lit64.front.primary, lit64.front.secondary, lit64.back.primary, lit64.back.secondary] {
-            assert!(c.iter().all(|x| x.is_finite()), "f64 {c:?}");
+            // llvmpipe's pow is f32 arithmetic even in the f64 engine (it emulates Mesa), so
+            // 5^100 from an unnormalised normal is infinity there, as in Mesa.
+            if pow == PowFn::Llvmpipe {
+                assert!(!c.iter().any(|x| x.is_nan()), "f64 {c:?}");
+            } else {
+                assert!(c.iter().all(|x| x.is_finite()), "f64 {pow:?} {c:?}");
+            }
         }
         let lit32 = Engine::<f32>::with_options(scene, options).unwrap().light(&scene.vertex);
         for c in [lit32.front.primary, lit32.front.secondary, lit32.back.primary, lit32.back.secondary] {

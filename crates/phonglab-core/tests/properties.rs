@@ -300,3 +300,25 @@ proptest! {
         prop_assert!((a.pos_in_eye - b.pos_in_eye).length() <= 1e-9 * a.pos_in_eye.length().max(1.0));
     }
 }
+
+/// Found by fuzzing (scene_file): a normal of length 5.5 left as is, with the Phong demo's
+/// exponent 100, makes n.H = 5.1 and a specular term of 2.6e70. Exact pow keeps f64 finite;
+/// llvmpipe's pow is f32 arithmetic (it emulates Mesa), so there it overflows to +infinity,
+/// as in Mesa, and never to NaN.
+#[test]
+fn a_long_normal_with_a_high_exponent_overflows_only_in_f32_arithmetic() {
+    let mut s = phonglab_core::presets::phong_demo();
+    s.rules = Rules::OPENGL;
+    s.light_model.local_viewer = false;
+    s.normal_mode = NormalMode::AsIs;
+    s.eye_from_world = DMat4::IDENTITY;
+    s.vertex.normal = DVec3::new(-5.4472135954999579, 0.0, -0.8944271909999159);
+    let exact = Engine::<f64>::new(&s).unwrap().light(&s.vertex).front.primary;
+    assert!((exact[0] / 2.6417625e70 - 1.0).abs() < 1e-7, "{exact:?}");
+    let llvm = Engine::<f64>::with_options(&s, phonglab_core::EvalOptions::with_pow(phonglab_core::PowFn::Llvmpipe))
+        .unwrap()
+        .light(&s.vertex)
+        .front
+        .primary;
+    assert!(llvm[..3].iter().all(|c| *c == f64::INFINITY), "{llvm:?}");
+}
