@@ -82,7 +82,8 @@ fn colours(e: &phonglab::app::state::Evaluated) -> Vec<[f64; 4]> {
 }
 
 /// Never NaN; the shown colour in [0, 1]; f64 finite; f32 infinite only where the f64
-/// value is beyond f32's range (a sum of terms that overflows a float, as in OpenGL).
+/// value is near or beyond f32's range (a term or a sum that overflows a float, as in
+/// OpenGL: terms of 1e38 can overflow before they cancel).
 fn check(h: &Harness<'static, AppState>, step: usize, what: &str) {
     let s = h.state();
     assert!(s.doc.validate().is_ok(), "step {step} ({what}): invalid document kept: {:?}", s.doc.validate());
@@ -97,7 +98,7 @@ fn check(h: &Harness<'static, AppState>, step: usize, what: &str) {
             assert!(!c[k].is_nan(), "step {step} ({what}): NaN in {c:?}");
             assert!(c64[k].is_finite(), "step {step} ({what}): f64 {c64:?}\n{}", s.doc.to_toml().unwrap());
             assert!(
-                c[k].is_finite() || c64[k].abs() > f32::MAX as f64 && c[k].signum() == c64[k].signum(),
+                c[k].is_finite() || c64[k].abs() > 1e30 && c[k].signum() == c64[k].signum(),
                 "step {step} ({what}): {c:?} where f64 gives {c64:?}"
             );
         }

@@ -35,10 +35,8 @@ fn finer_meshes_come_closer_to_the_reference() {
     for object in ObjectKind::ALL {
         let s = study(object);
         for shading in Shading::ALL {
-            let errors: Vec<f64> = cost::levels(object)
-                .iter()
-                .map(|l| point(s, &format!("{} {l}", shading.label())).error.mean)
-                .collect();
+            let errors: Vec<f64> =
+                cost::levels(object).iter().map(|l| point(s, &format!("{} {l}", shading.label())).error.mean).collect();
             for w in errors.windows(2) {
                 assert!(w[1] <= w[0] * 1.02, "{object:?} {shading:?}: {errors:?}");
             }
@@ -125,7 +123,8 @@ fn the_figures_are_deterministic_and_the_maps_agree_with_them() {
 fn a_study_can_be_cancelled() {
     let doc = Document::default();
     let scene = doc.shaded_scene();
-    let setup = Setup { scene: &scene, view: &doc.view, clip_from_eye: view_projection(1.0), size: 32, background: [0.0; 3] };
+    let setup =
+        Setup { scene: &scene, view: &doc.view, clip_from_eye: view_projection(1.0), size: 32, background: [0.0; 3] };
     let mut seen = 0;
     let r = cost::run(&setup, Timing::ONCE, &mut |p| {
         seen += 1;

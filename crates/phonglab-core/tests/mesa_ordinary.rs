@@ -31,7 +31,8 @@ fn check<S: Real>(pow: PowFn) -> Vec<String> {
     let mut worst = (0.0f64, String::new());
     for c in &ordinary {
         let mesa = c.expected.expect("generated cases embed Mesa's result");
-        let ours = evaluate::<S>(&c.scene, EvalOptions::with_pow(pow), false).unwrap_or_else(|e| panic!("{}: {e}", c.id));
+        let ours =
+            evaluate::<S>(&c.scene, EvalOptions::with_pow(pow), false).unwrap_or_else(|e| panic!("{}: {e}", c.id));
         let strict = common::worst_ratio(&ours, &mesa, 1e-5, 1e-6);
         if ILL_CONDITIONED.contains(&c.id.as_str()) {
             let exact = evaluate::<f64>(&c.scene, EvalOptions::with_pow(pow), false).unwrap();
