@@ -5,6 +5,10 @@
 //!   `object shading ms_per_frame triangles coverage`.
 //! - `lighting`: the general engine against the specialised evaluator on the three scenes
 //!   of issue 5: `scene general_ns_per_vertex specialised_ns_per_vertex speedup`.
+//! - `ui`: the whole window headless with every panel open, CPU milliseconds per frame for
+//!   egui's layout (which includes evaluating the scene and re-rendering the shaded view
+//!   when it changed) and for tessellation: `case ui_median ui_p95 tessellate_median
+//!   tessellate_p95 total_median`. Painting is the GPU's and is not included.
 
 use std::time::Instant;
 
@@ -23,6 +27,22 @@ pub enum BenchCommand {
     Render(RenderBench),
     /// ns per vertex of the general and the specialised lighting.
     Lighting(LightingBenchArgs),
+    /// CPU time per frame of the whole UI, headless, with every panel open.
+    Ui(UiBenchArgs),
+}
+
+/// `phonglab bench ui`.
+#[derive(Args, Debug)]
+pub struct UiBenchArgs {
+    /// Frames timed per case.
+    #[arg(long, default_value_t = 200)]
+    pub frames: u32,
+    /// Window width in points.
+    #[arg(long, default_value_t = 1440.0)]
+    pub width: f32,
+    /// Window height in points.
+    #[arg(long, default_value_t = 900.0)]
+    pub height: f32,
 }
 
 /// `phonglab bench render`.
@@ -185,5 +205,104 @@ pub fn run(cmd: &BenchCommand) -> Result<()> {
             pool.install(|| render(a))
         }
         BenchCommand::Lighting(a) => lighting(a),
+        BenchCommand::Ui(a) => ui(a),
     }
+}
+
+/// Median and 95th percentile of `v` (sorted in place).
+fn median_p95(v: &mut [f64]) -> (f64, f64) {
+    v.sort_by(f64::total_cmp);
+    if v.is_empty() {
+        return (f64::NAN, f64::NAN);
+    }
+    (v[v.len() / 2], v[((v.len() as f64 * 0.95) as usize).min(v.len() - 1)])
+}
+
+/// One timed UI case: per frame, `change` edits the state, then the UI runs and is
+/// tessellated. Returns (ui ms, tessellation ms) per frame.
+pub fn time_ui_frames(
+    ctx: &egui::Context,
+    state: &mut crate::app::AppState,
+    size: [f32; 2],
+    frames: u32,
+    mut change: impl FnMut(&mut crate::app::AppState, u32),
+) -> (Vec<f64>, Vec<f64>) {
+    let (mut ui_ms, mut tess_ms) = (Vec::new(), Vec::new());
+    for f in 0..frames {
+        change(state, f);
+        let t0 = Instant::now();
+        let mut out = ctx.run_ui(crate::egui_cpu::raw_input(size[0], size[1], 1.0), |ui| crate::app::app_ui(ui, state));
+        let t1 = Instant::now();
+        let prims = ctx.tessellate(std::mem::take(&mut out.shapes), out.pixels_per_point);
+        let t2 = Instant::now();
+        std::hint::black_box(prims);
+        out.textures_delta.clear();
+        ui_ms.push((t1 - t0).as_secs_f64() * 1e3);
+        tess_ms.push((t2 - t1).as_secs_f64() * 1e3);
+    }
+    (ui_ms, tess_ms)
+}
+
+/// The app with every panel open: controls, calculation, vector plot, shaded view with its
+/// heat map, the cost window with a finished study, and the help overlay.
+pub fn all_panels_open(ctx: &egui::Context, size: [f32; 2]) -> Result<crate::app::AppState> {
+    let mut state = crate::app::AppState::worksheet();
+    state.ui.show_help = true;
+    state.cost.open = true;
+    state.cost.heat_map = true;
+    state.cost.start(state.doc.shaded_scene(), state.doc.view.clone(), "the worksheet".into());
+    let start = Instant::now();
+    while state.cost.study.is_none() || state.cost.heat.is_none() {
+        if start.elapsed().as_secs() > 300 {
+            anyhow::bail!("the study did not finish in 5 minutes");
+        }
+        if let Some(e) = &state.cost.error {
+            anyhow::bail!("{e}");
+        }
+        time_ui_frames(ctx, &mut state, size, 1, |_, _| {});
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    Ok(state)
+}
+
+/// An edit made before a timed frame (the frame's number given).
+type StateChange = Box<dyn FnMut(&mut crate::app::AppState, u32)>;
+
+fn ui(a: &UiBenchArgs) -> Result<()> {
+    let size = [a.width, a.height];
+    let ctx = egui::Context::default();
+    let mut state = all_panels_open(&ctx, size)?;
+    println!(
+        "# phonglab bench ui: {}x{} points, every panel open, {} frames per case, CPU ms (layout includes the scene's evaluation and the shaded view's render when it changed)",
+        a.width, a.height, a.frames
+    );
+    println!("case ui_median ui_p95 tessellate_median tessellate_p95 total_median");
+    let z0 = state.doc.scene.lights[0].position.z;
+    let cases: [(&str, StateChange); 3] = [
+        ("idle", Box::new(|_, _| {})),
+        (
+            "slider_move",
+            Box::new(move |s, f| {
+                let mut d = s.doc.clone();
+                d.scene.lights[0].position.z = z0 + (f % 100) as f64;
+                s.apply(d);
+            }),
+        ),
+        (
+            "auto_rotate",
+            Box::new(|s, _| {
+                s.doc.view.auto_rotate = true;
+            }),
+        ),
+    ];
+    for (name, change) in cases {
+        let (mut u, mut t) = time_ui_frames(&ctx, &mut state, size, a.frames, change);
+        let total: Vec<f64> = u.iter().zip(&t).map(|(a, b)| a + b).collect();
+        let mut total = total;
+        let (um, up) = median_p95(&mut u);
+        let (tm, tp) = median_p95(&mut t);
+        let (sm, _) = median_p95(&mut total);
+        println!("{name} {um:.2} {up:.2} {tm:.2} {tp:.2} {sm:.2}");
+    }
+    Ok(())
 }

@@ -216,3 +216,17 @@ fn cost_prints_a_table_and_writes_the_csv_the_chart_and_heat_maps() {
     let o = phonglab(&["cost", "--size", "4"]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn bench_ui_times_every_case_with_every_panel_open() {
+    let o = phonglab(&["bench", "ui", "--frames", "3", "--width", "1200", "--height", "800"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    let rows: Vec<Vec<&str>> = out.lines().filter(|l| !l.starts_with('#')).map(|l| l.split(' ').collect()).collect();
+    assert_eq!(rows[0], ["case", "ui_median", "ui_p95", "tessellate_median", "tessellate_p95", "total_median"]);
+    let cases: Vec<&str> = rows[1..].iter().map(|r| r[0]).collect();
+    assert_eq!(cases, ["idle", "slider_move", "auto_rotate"]);
+    for r in &rows[1..] {
+        assert!(r[1..].iter().all(|x| x.parse::<f64>().is_ok_and(|v| v > 0.0)), "{r:?}");
+    }
+}

@@ -29,9 +29,12 @@ pub struct Worker<T> {
 }
 
 impl<T: Send + 'static> Worker<T> {
-    /// Starts `job`; it reports progress through the callback, which returns `false` once
-    /// the worker is cancelled (or dropped).
+    /// Starts `job` on its own thread, rendering with `threads` threads of its own (0: one
+    /// per core) so that it does not queue behind, or in front of, the UI's own renders.
+    /// It reports progress through the callback, which returns `false` once the worker is
+    /// cancelled (or dropped).
     pub fn spawn(
+        threads: usize,
         job: impl FnOnce(&mut dyn FnMut(&Progress) -> bool) -> Result<Option<T>, String> + Send + 'static,
     ) -> Self {
         let progress = Arc::new(Mutex::new(Progress { done: 0, total: 1, what: "starting".into() }));
@@ -45,9 +48,15 @@ impl<T: Send + 'static> Worker<T> {
                 }
                 !c.load(Ordering::Relaxed)
             };
-            // A panic in the job must not take the app down: it becomes a message.
-            let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(&mut report)))
-                .unwrap_or_else(|_| Err("the computation failed unexpectedly".into()));
+            let run = || {
+                // A panic in the job must not take the app down: it becomes a message.
+                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(&mut report)))
+                    .unwrap_or_else(|_| Err("the computation failed unexpectedly".into()))
+            };
+            let r = match rayon::ThreadPoolBuilder::new().num_threads(threads).build() {
+                Ok(pool) => pool.install(run),
+                Err(e) => Err(format!("no thread pool: {e}")),
+            };
             let _ = tx.send(r);
         });
         Self { progress, cancel, result: rx }
@@ -110,7 +119,8 @@ impl CostState {
     /// Starts a study of `scene` (as the shaded view lights it) and `view`'s object.
     pub fn start(&mut self, scene: Scene, view: View, about: String) {
         self.error = None;
-        self.running = Some(Worker::spawn(move |progress| {
+        // The study times frames as the shaded view draws them: on every core.
+        self.running = Some(Worker::spawn(0, move |progress| {
             let setup = Setup {
                 scene: &scene,
                 view: &view,
@@ -161,7 +171,8 @@ impl CostState {
             return;
         }
         let (scene, view, k) = (scene.clone(), view.clone(), key.clone());
-        let worker = Worker::spawn(move |progress| {
+        // The heat map follows every edit: one thread, so the UI's own renders stay quick.
+        let worker = Worker::spawn(1, move |progress| {
             let setup = Setup {
                 scene: &scene,
                 view: &view,
