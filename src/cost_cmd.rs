@@ -8,7 +8,6 @@ use std::path::PathBuf;
 use anyhow::{Context as _, Result};
 use clap::Args;
 use phonglab_core::cost::{self, Question, Setup, Study, Timing};
-use phonglab_core::view::view_projection;
 use phonglab_core::{Document, ObjectKind};
 
 use crate::app::cost::{BACKGROUND, HEAT_FULL_SCALE, cost_chart_ui, takeaways};
@@ -65,13 +64,7 @@ pub fn studies(a: &CostArgs) -> Result<Vec<Study>> {
         doc.view.object = object;
         doc.view.spin_degrees = a.spin.rem_euclid(360.0);
         let scene = doc.shaded_scene();
-        let setup = Setup {
-            scene: &scene,
-            view: &doc.view,
-            clip_from_eye: view_projection(1.0),
-            size: a.size as usize,
-            background: BACKGROUND,
-        };
+        let setup = Setup::shaded_view(&scene, &doc.view, a.size as usize, BACKGROUND);
         let tty = std::io::stderr().is_terminal();
         let study = cost::run(&setup, timing, &mut |p| {
             if tty {

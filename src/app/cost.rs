@@ -12,7 +12,6 @@ use std::sync::{Arc, Mutex};
 use egui::{Color32, ColorImage, TextureHandle, TextureOptions, Ui};
 use egui_plot::{Legend, Line, LineStyle, MarkerShape, Plot, PlotPoint, PlotPoints, Points, Text};
 use phonglab_core::cost::{self, ErrorStats, Progress, Question, Setup, Study, Timing};
-use phonglab_core::view::view_projection;
 use phonglab_core::{EvalOptions, Scene, Shading, View};
 
 /// Image size of the app's study and heat map, in pixels (the CLI's default is larger).
@@ -121,13 +120,7 @@ impl CostState {
         self.error = None;
         // The study times frames as the shaded view draws them: on every core.
         self.running = Some(Worker::spawn(0, move |progress| {
-            let setup = Setup {
-                scene: &scene,
-                view: &view,
-                clip_from_eye: view_projection(1.0),
-                size: APP_SIZE,
-                background: BACKGROUND,
-            };
+            let setup = Setup::shaded_view(&scene, &view, APP_SIZE, BACKGROUND);
             cost::run(&setup, Timing::QUICK, progress).map_err(|e| e.to_string())
         }));
         self.pending_about = about;
@@ -173,13 +166,7 @@ impl CostState {
         let (scene, view, k) = (scene.clone(), view.clone(), key.clone());
         // The heat map follows every edit: one thread, so the UI's own renders stay quick.
         let worker = Worker::spawn(1, move |progress| {
-            let setup = Setup {
-                scene: &scene,
-                view: &view,
-                clip_from_eye: view_projection(1.0),
-                size: APP_SIZE,
-                background: BACKGROUND,
-            };
+            let setup = Setup::shaded_view(&scene, &view, APP_SIZE, BACKGROUND);
             if !progress(&Progress { done: 0, total: 2, what: "reference".into() }) {
                 return Ok(None);
             }

@@ -44,6 +44,14 @@ pub struct Setup<'a> {
     pub background: [f32; 3],
 }
 
+impl<'a> Setup<'a> {
+    /// The shaded view's setup: `scene` as [`crate::Document::shaded_scene`] gives it, the
+    /// view's projection ([`crate::view::view_projection`]), `size` pixels square.
+    pub fn shaded_view(scene: &'a Scene, view: &'a View, size: usize, background: [f32; 3]) -> Self {
+        Setup { scene, view, clip_from_eye: crate::view::view_projection(1.0), size, background }
+    }
+}
+
 /// The five tessellation levels studied per object, coarse to fine: sphere slices and
 /// stacks, teapot quads per patch side, cylinder slices (with a quarter as many stacks).
 pub fn levels(object: ObjectKind) -> [u32; 5] {

@@ -4,7 +4,7 @@
 use std::sync::OnceLock;
 
 use phonglab_core::cost::{self, Question, Setup, Study, Timing};
-use phonglab_core::view::{ObjectKind, view_projection};
+use phonglab_core::view::ObjectKind;
 use phonglab_core::{Document, Shading};
 
 const SIZE: usize = 160;
@@ -15,8 +15,7 @@ fn study_of(object: ObjectKind) -> Study {
     doc.view.object = object;
     doc.view.spin_degrees = 30.0;
     let scene = doc.shaded_scene();
-    let setup =
-        Setup { scene: &scene, view: &doc.view, clip_from_eye: view_projection(1.0), size: SIZE, background: [0.1; 3] };
+    let setup = Setup::shaded_view(&scene, &doc.view, SIZE, [0.1; 3]);
     cost::run(&setup, Timing::ONCE, &mut |_| true).unwrap().expect("not cancelled")
 }
 
@@ -123,8 +122,7 @@ fn the_figures_are_deterministic_and_the_maps_agree_with_them() {
 fn a_study_can_be_cancelled() {
     let doc = Document::default();
     let scene = doc.shaded_scene();
-    let setup =
-        Setup { scene: &scene, view: &doc.view, clip_from_eye: view_projection(1.0), size: 32, background: [0.0; 3] };
+    let setup = Setup::shaded_view(&scene, &doc.view, 32, [0.0; 3]);
     let mut seen = 0;
     let r = cost::run(&setup, Timing::ONCE, &mut |p| {
         seen += 1;
