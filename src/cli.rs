@@ -34,7 +34,7 @@ pub enum Command {
     /// What accuracy costs: each shading and tessellation, f32 against f64 and the usual
     /// approximations, timed and compared with a per-pixel f64 reference; writes
     /// cost.csv and cost.png.
-    Cost(crate::cost_cmd::CostArgs),
+    Cost(CostArgs),
     /// Measure: the renderer, the lighting.
     #[command(subcommand)]
     Bench(crate::bench::BenchCommand),
@@ -95,6 +95,16 @@ pub enum ObjectArg {
     Teapot,
     /// gluCylinder.
     Cylinder,
+}
+
+impl From<ObjectArg> for phonglab_core::ObjectKind {
+    fn from(o: ObjectArg) -> Self {
+        match o {
+            ObjectArg::Sphere => Self::Sphere,
+            ObjectArg::Teapot => Self::Teapot,
+            ObjectArg::Cylinder => Self::Cylinder,
+        }
+    }
 }
 
 /// A shading.
@@ -167,6 +177,32 @@ pub struct ExplainArgs {
     pub digits: u8,
 }
 
+/// `phonglab cost`.
+#[derive(Args, Debug)]
+pub struct CostArgs {
+    /// The object to study (default: all three).
+    #[arg(long, value_enum)]
+    pub object: Option<ObjectArg>,
+    /// Where to write cost.csv, cost.png and the heat maps.
+    #[arg(long, default_value = ".")]
+    pub out: PathBuf,
+    /// Image width and height in pixels.
+    #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
+    pub size: u32,
+    /// A scene file (TOML) for the lighting and the view; default: the worksheet's scene.
+    #[arg(long)]
+    pub scene: Option<PathBuf>,
+    /// Turn the object this many degrees about y (the cylinder shows its side at 30).
+    #[arg(long, default_value_t = 30.0)]
+    pub spin: f64,
+    /// Threads for rendering (default: all cores).
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Quick timings (3 frames or 0.1 s per variant) instead of careful ones.
+    #[arg(long)]
+    pub quick: bool,
+}
+
 /// `phonglab case`.
 #[derive(Args, Debug)]
 pub struct CaseArgs {
@@ -183,7 +219,7 @@ pub fn run(command: Command) -> ExitCode {
         Command::Bench(b) => crate::bench::run(&b),
         Command::Render(a) => render(&a),
         Command::Case(a) => case(&a),
-        Command::Cost(a) => crate::cost_cmd::run(&a),
+        Command::Cost(a) => cost(&a),
     };
     match r {
         Ok(()) => ExitCode::SUCCESS,
@@ -297,15 +333,27 @@ fn case(a: &CaseArgs) -> Result<()> {
     Ok(())
 }
 
+fn cost(a: &CostArgs) -> Result<()> {
+    let doc = match &a.scene {
+        Some(p) => load_scene_file(p)?,
+        None => phonglab_core::Document::default(),
+    };
+    crate::cost_cmd::run(&crate::cost_cmd::CostRun {
+        objects: a.object.map_or(phonglab_core::ObjectKind::ALL.to_vec(), |o| vec![o.into()]),
+        doc,
+        out: a.out.clone(),
+        size: a.size as usize,
+        spin: a.spin,
+        threads: a.threads.unwrap_or(0),
+        timing: if a.quick { phonglab_core::cost::Timing::QUICK } else { phonglab_core::cost::Timing::CAREFUL },
+    })
+}
+
 fn render(a: &RenderArgs) -> Result<()> {
-    use phonglab_core::mesh::{Mesh, sphere, teapot};
+    use phonglab_core::mesh::{sphere, teapot};
     use phonglab_core::render::{Job, Renderer};
     use phonglab_core::{Document, ObjectKind, Shading};
-    let object = a.object.map(|o| match o {
-        ObjectArg::Sphere => ObjectKind::Sphere,
-        ObjectArg::Teapot => ObjectKind::Teapot,
-        ObjectArg::Cylinder => ObjectKind::Cylinder,
-    });
+    let object = a.object.map(ObjectKind::from);
     let shading = a.shading.map(|s| match s {
         ShadingArg::Gouraud => Shading::Gouraud,
         ShadingArg::Phong => Shading::Phong,
@@ -317,7 +365,7 @@ fn render(a: &RenderArgs) -> Result<()> {
         let mesh = match object {
             ObjectKind::Sphere => sphere::glu_sphere(1.0, 50, 50),
             ObjectKind::Teapot => teapot::glut_teapot(0.8, 7),
-            ObjectKind::Cylinder => Mesh::for_view(&phonglab_core::View { object, ..Default::default() }),
+            ObjectKind::Cylinder => (phonglab_core::View { object, ..Default::default() }).mesh(),
         };
         (
             presets::bench_scene(frame),
@@ -341,7 +389,7 @@ fn render(a: &RenderArgs) -> Result<()> {
         if let Some(s) = shading {
             doc.view.shading = s;
         }
-        let mesh = Mesh::for_view(&doc.view);
+        let mesh = doc.view.mesh();
         (doc.shaded_scene(), mesh, phonglab_core::view::view_projection(1.0), [0.1, 0.1, 0.15], doc.view.shading)
     };
     let job = Job {

@@ -6,67 +6,44 @@ use std::io::IsTerminal as _;
 use std::path::PathBuf;
 
 use anyhow::{Context as _, Result};
-use clap::Args;
 use phonglab_core::cost::{self, Question, Setup, Study, Timing};
 use phonglab_core::{Document, ObjectKind};
 
 use crate::app::cost::{BACKGROUND, HEAT_FULL_SCALE, cost_chart_ui, takeaways};
-use crate::cli::ObjectArg;
 
-/// `phonglab cost`.
-#[derive(Args, Debug)]
-pub struct CostArgs {
-    /// The object to study (default: all three).
-    #[arg(long, value_enum)]
-    pub object: Option<ObjectArg>,
-    /// Where to write cost.csv, cost.png and the heat maps.
-    #[arg(long, default_value = ".")]
+/// What to study: the command line's arguments, resolved.
+#[derive(Clone, Debug)]
+pub struct CostRun {
+    /// The objects, in order.
+    pub objects: Vec<ObjectKind>,
+    /// The lighting and the view (the worksheet's scene by default).
+    pub doc: Document,
+    /// Where the files go.
     pub out: PathBuf,
-    /// Image width and height in pixels.
-    #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
-    pub size: u32,
-    /// A scene file (TOML) for the lighting and the view; default: the worksheet's scene.
-    #[arg(long)]
-    pub scene: Option<PathBuf>,
-    /// Turn the object this many degrees about y (the cylinder shows its side at 30).
-    #[arg(long, default_value_t = 30.0)]
+    /// Image size in pixels.
+    pub size: usize,
+    /// The object's turn about y, degrees.
     pub spin: f64,
-    /// Threads for rendering (default: all cores).
-    #[arg(long)]
-    pub threads: Option<usize>,
-    /// Quick timings (3 frames or 0.1 s per variant) instead of careful ones.
-    #[arg(long)]
-    pub quick: bool,
+    /// Rendering threads (0: one per core).
+    pub threads: usize,
+    /// How long to time each variant.
+    pub timing: Timing,
 }
 
-fn objects(a: &CostArgs) -> Vec<ObjectKind> {
-    match a.object {
-        None => ObjectKind::ALL.to_vec(),
-        Some(ObjectArg::Sphere) => vec![ObjectKind::Sphere],
-        Some(ObjectArg::Teapot) => vec![ObjectKind::Teapot],
-        Some(ObjectArg::Cylinder) => vec![ObjectKind::Cylinder],
-    }
-}
-
-/// Runs the study of every chosen object, printing progress on stderr.
-pub fn studies(a: &CostArgs) -> Result<Vec<Study>> {
-    let base = match &a.scene {
-        Some(p) => crate::cli::load_scene_file(p)?,
-        None => Document::default(),
-    };
-    if !a.spin.is_finite() {
+/// Runs the study of every chosen object, printing progress on stderr when it is a terminal.
+pub fn studies(r: &CostRun) -> Result<Vec<Study>> {
+    if !r.spin.is_finite() {
         anyhow::bail!("--spin must be a finite number of degrees");
     }
-    let timing = if a.quick { Timing::QUICK } else { Timing::CAREFUL };
     let mut out = Vec::new();
-    for object in objects(a) {
-        let mut doc = base.clone();
+    for &object in &r.objects {
+        let mut doc = r.doc.clone();
         doc.view.object = object;
-        doc.view.spin_degrees = a.spin.rem_euclid(360.0);
+        doc.view.spin_degrees = r.spin.rem_euclid(360.0);
         let scene = doc.shaded_scene();
-        let setup = Setup::shaded_view(&scene, &doc.view, a.size as usize, BACKGROUND);
+        let setup = Setup::shaded_view(&scene, &doc.view, r.size, BACKGROUND);
         let tty = std::io::stderr().is_terminal();
-        let study = cost::run(&setup, timing, &mut |p| {
+        let study = cost::run(&setup, r.timing, &mut |p| {
             if tty {
                 eprint!("\r\x1b[2K{}: {}/{} {}", object.label(), p.done, p.total, p.what);
             }
@@ -133,9 +110,9 @@ pub fn chart_png(studies: &[Study], ppp: f32) -> (usize, usize, Vec<u8>) {
     (canvas.width, canvas.height, canvas.rgba8())
 }
 
-/// `phonglab cost`.
-pub fn run(a: &CostArgs) -> Result<()> {
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(a.threads.unwrap_or(0)).build()?;
+/// `phonglab cost`: the studies, their tables on stdout, and the files.
+pub fn run(a: &CostRun) -> Result<()> {
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(a.threads).build()?;
     let studies = pool.install(|| studies(a))?;
     std::fs::create_dir_all(&a.out).with_context(|| format!("cannot create {}", a.out.display()))?;
     let mut csv = String::new();

@@ -42,7 +42,7 @@ fn mesh_for<'a>(cache: &'a mut Option<(View, Mesh)>, view: &View) -> &'a Mesh {
         a != b
     });
     if stale {
-        *cache = Some((view.clone(), Mesh::for_view(view)));
+        *cache = Some((view.clone(), view.mesh()));
     }
     &cache.as_ref().expect("set just above").1
 }

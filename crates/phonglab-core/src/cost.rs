@@ -102,7 +102,7 @@ pub struct Reference {
 /// pixel lit in f64 by the general engine with the position and normal interpolated (in
 /// f64) at that point of the mesh triangle, the normal renormalised.
 pub fn reference(setup: &Setup<'_>) -> Result<Reference, SceneError> {
-    let mesh = Mesh::for_view(&reference_view(setup.view));
+    let mesh = reference_view(setup.view).mesh();
     let mut renderer = Renderer::new();
     let job = Job {
         scene: setup.scene,
@@ -358,7 +358,7 @@ pub fn measure_view(
     reference: &Reference,
     timing: Timing,
 ) -> Result<Measured, SceneError> {
-    let mesh = Mesh::for_view(view);
+    let mesh = view.mesh();
     let job = Job {
         scene: setup.scene,
         mesh: &mesh,
@@ -519,7 +519,7 @@ pub fn run(
     if !step(vs.len() + 1, "f32 against f64".into()) {
         return Ok(None);
     }
-    let mid = Mesh::for_view(&view_at(setup.view, levels(setup.view.object)[2]));
+    let mid = view_at(setup.view, levels(setup.view.object)[2]).mesh();
     let precision = precision(setup.scene, &mid, timing.min_seconds)?;
     step(total, "done".into());
     Ok(Some(Study {

@@ -187,7 +187,7 @@ pub fn bench_scene(frame: u32) -> Scene {
 
 /// The benchmark's projection: `gluPerspective(40, 1, 0.5, 20)`.
 pub fn bench_projection() -> DMat4 {
-    crate::render::perspective(40.0, 1.0, 0.5, 20.0)
+    crate::transform::perspective(40.0, 1.0, 0.5, 20.0)
 }
 
 /// The benchmark's clear colour.

@@ -101,6 +101,17 @@ impl NormalMatrix {
     }
 }
 
+/// `gluPerspective(fovy, aspect, near, far)`: eye to clip space.
+pub fn perspective(fovy_deg: f64, aspect: f64, near: f64, far: f64) -> DMat4 {
+    let f = 1.0 / (fovy_deg.to_radians() / 2.0).tan();
+    mat4_from_rows([
+        [f / aspect, 0.0, 0.0, 0.0],
+        [0.0, f, 0.0, 0.0],
+        [0.0, 0.0, (far + near) / (near - far), 2.0 * far * near / (near - far)],
+        [0.0, 0.0, -1.0, 0.0],
+    ])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

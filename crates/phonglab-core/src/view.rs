@@ -88,7 +88,7 @@ impl ViewCamera {
 
 /// The shaded view's projection: gluPerspective(40, aspect, 0.1, 100).
 pub fn view_projection(aspect: f64) -> glam::DMat4 {
-    crate::render::perspective(40.0, aspect, 0.1, 100.0)
+    crate::transform::perspective(40.0, aspect, 0.1, 100.0)
 }
 
 /// Tessellation limits: at least a closed shape, at most what stays interactive.
@@ -149,6 +149,31 @@ impl Default for View {
 }
 
 impl View {
+    /// The mesh this view shows: the Phong demo's objects at the demo's sizes (sphere r 0.5,
+    /// teapot 0.5, cylinder r 0.3 h 0.5, centred), tessellated as the view says.
+    pub fn mesh(&self) -> crate::mesh::Mesh {
+        let m = match self.object {
+            ObjectKind::Sphere => crate::mesh::sphere::glu_sphere(0.5, self.sphere_slices, self.sphere_stacks),
+            ObjectKind::Teapot => crate::mesh::teapot::glut_teapot(0.5, self.teapot_grid),
+            ObjectKind::Cylinder => {
+                let mut c = crate::mesh::cylinder::glu_cylinder(
+                    0.3,
+                    0.3,
+                    0.5,
+                    self.cylinder_slices,
+                    self.cylinder_stacks,
+                    self.cylinder_caps,
+                );
+                // gluCylinder runs from z = 0 to z = h; centre it, as the demo's view does.
+                for p in &mut c.positions {
+                    p.z -= 0.25;
+                }
+                c
+            }
+        };
+        if self.demo_normals { m.with_position_normals() } else { m }
+    }
+
     /// Refuses a tessellation outside the ranges above, and a non-finite spin.
     pub fn validate(&self) -> Result<(), SceneError> {
         let check = |field: &str, v: u32, r: &std::ops::RangeInclusive<u32>, allowed: &'static str| {

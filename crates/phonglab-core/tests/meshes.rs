@@ -128,16 +128,16 @@ fn the_patch_file_is_parsed_and_bad_ones_are_reported() {
 #[test]
 fn view_meshes_and_the_demos_normals() {
     let v = View::default();
-    assert_eq!(Mesh::for_view(&v).triangle_count(), 4900);
-    let t = Mesh::for_view(&View { object: ObjectKind::Teapot, ..View::default() });
+    assert_eq!(v.mesh().triangle_count(), 4900);
+    let t = (View { object: ObjectKind::Teapot, ..View::default() }).mesh();
     assert_eq!(t.triangle_count(), 3136);
-    let c = Mesh::for_view(&View { object: ObjectKind::Cylinder, ..View::default() });
-    let demo = Mesh::for_view(&View { object: ObjectKind::Cylinder, demo_normals: true, ..View::default() });
+    let c = (View { object: ObjectKind::Cylinder, ..View::default() }).mesh();
+    let demo = (View { object: ObjectKind::Cylinder, demo_normals: true, ..View::default() }).mesh();
     // normalize(position) is wrong on a cylinder: up to 40 degrees off near its ends.
     let worst = c.normals.iter().zip(&demo.normals).map(|(a, b)| a.dot(*b)).fold(1.0f32, f32::min);
     assert!(worst < 0.8, "{worst}");
-    let s = Mesh::for_view(&View::default());
-    let sd = Mesh::for_view(&View { demo_normals: true, ..View::default() });
+    let s = View::default().mesh();
+    let sd = (View { demo_normals: true, ..View::default() }).mesh();
     assert!(s.normals.iter().zip(&sd.normals).all(|(a, b)| (*a - *b).length() < 1e-5), "right on a sphere");
 }
 

@@ -10,8 +10,6 @@ pub mod teapot;
 
 use glam::Vec3;
 
-use crate::view::{ObjectKind, View};
-
 /// An indexed triangle mesh.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Mesh {
@@ -52,30 +50,5 @@ impl Mesh {
             .enumerate()
             .min_by(|a, b| a.1.distance_squared(p).total_cmp(&b.1.distance_squared(p)))
             .map(|(i, _)| i)
-    }
-
-    /// The mesh a view shows: the Phong demo's objects at the demo's sizes (sphere r 0.5,
-    /// teapot 0.5, cylinder r 0.3 h 0.5, centred), tessellated as the view says.
-    pub fn for_view(view: &View) -> Mesh {
-        let m = match view.object {
-            ObjectKind::Sphere => sphere::glu_sphere(0.5, view.sphere_slices, view.sphere_stacks),
-            ObjectKind::Teapot => teapot::glut_teapot(0.5, view.teapot_grid),
-            ObjectKind::Cylinder => {
-                let mut c = cylinder::glu_cylinder(
-                    0.3,
-                    0.3,
-                    0.5,
-                    view.cylinder_slices,
-                    view.cylinder_stacks,
-                    view.cylinder_caps,
-                );
-                // gluCylinder runs from z = 0 to z = h; centre it, as the demo's view does.
-                for p in &mut c.positions {
-                    p.z -= 0.25;
-                }
-                c
-            }
-        };
-        if view.demo_normals { m.with_position_normals() } else { m }
     }
 }
