@@ -184,7 +184,7 @@ fn side_material<S: Real>(m: &Material, scene: &Scene) -> SideMaterial<S> {
 
 fn prepare_light<S: Real>(scene: &Scene, index: usize, l: &Light) -> PreparedLight<S> {
     let eye_from_light = scene.eye_from_light(l);
-    let pos_in_eye = transform_point(&eye_from_light, l.position);
+    let pos_in_eye = scene.light_pos_in_eye(l);
     let pos = if pos_in_eye.w != 0.0 {
         LightPos::Positional(pos_in_eye.xyz() / pos_in_eye.w)
     } else {

@@ -77,8 +77,9 @@ impl Key {
                 .lights
                 .iter()
                 .map(|l| LightKey {
-                    positional: !l.is_directional(),
-                    attenuated: !l.is_directional() && l.is_attenuated(),
+                    // In eye space, as the engine decides (the placement can change w).
+                    positional: !scene.light_is_directional(l),
+                    attenuated: !scene.light_is_directional(l) && l.is_attenuated(),
                     spot: l.is_spot(),
                     specular: spec_nonzero(l),
                 })

@@ -223,6 +223,20 @@ impl Scene {
         }
     }
 
+    /// Light `l`'s position in eye space (homogeneous, not divided): its position by the
+    /// modelview that was current when it was placed.
+    pub fn light_pos_in_eye(&self, l: &Light) -> DVec4 {
+        crate::robust::transform_point(&self.eye_from_light(l), l.position)
+    }
+
+    /// Is light `l` directional where it counts, in eye space (w = 0 there)? Usually the
+    /// same as [`Light::is_directional`], but a placement matrix whose last row is not
+    /// (0, 0, 0, 1) can send a positional light to infinity, or bring a directional one
+    /// back.
+    pub fn light_is_directional(&self, l: &Light) -> bool {
+        self.light_pos_in_eye(l).w == 0.0
+    }
+
     /// The material lighting the back side.
     pub fn back(&self) -> &Material {
         self.back_material.as_ref().unwrap_or(&self.material)

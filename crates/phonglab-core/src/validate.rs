@@ -98,7 +98,7 @@ impl Scene {
             return Err(e);
         }
         for (i, l) in self.lights.iter().enumerate() {
-            if l.attenuation == [0.0; 3] && !l.is_directional() {
+            if l.attenuation == [0.0; 3] && !self.light_is_directional(l) {
                 return Err(SceneError::ZeroAttenuation { field: format!("lights[{i}].attenuation") });
             }
         }

@@ -59,7 +59,21 @@ fn light() -> impl Strategy<Value = Light> {
         prop_oneof![Just(180.0), 0.0..=90.0f64],
         0.0..=128.0f64,
         prop_oneof![Just([1.0, 0.0, 0.0]), (0.0..2.0f64, 0.0..0.5f64, 0.0..0.1f64).prop_map(|(a, b, c)| [a, b, c])],
-        prop_oneof![Just(LightPlacement::Eye), Just(LightPlacement::World), Just(LightPlacement::Object)],
+        prop_oneof![
+            Just(LightPlacement::Eye),
+            Just(LightPlacement::World),
+            Just(LightPlacement::Object),
+            // A placement matrix with any last row: w can go to 0 or away from it.
+            (prop::array::uniform16(-2.0..2.0f64), prop::sample::select(vec![0.0, 1.0])).prop_map(|(m, k)| {
+                let mut m = DMat4::from_cols_array(&m);
+                if k == 0.0 {
+                    m = m.transpose();
+                    m.w_axis = DVec4::ZERO;
+                    m = m.transpose(); // last row (0, 0, 0, 0)
+                }
+                LightPlacement::Matrix(m)
+            }),
+        ],
     )
         .prop_map(
             |(
@@ -186,5 +200,39 @@ fn the_fast_paths_bit_for_bit() {
                 assert!(dark > 100 && dark < positions.len() - 100, "{name}: {dark} vertices outside every cone");
             }
         }
+    }
+}
+
+/// Found by fuzzing (glref_cases): a light placed under a matrix whose last row is zero is
+/// positional in object space but directional in eye space. The plan must follow the
+/// engine (eye space), or it folds no half vector and drops the specular term.
+#[test]
+fn a_placement_that_changes_w_is_planned_as_the_engine_lights_it() {
+    let mut scene = phonglab_core::presets::LightingBench::Directional.scene();
+    scene.material.shininess = 8.0;
+    let mut to_infinity = DMat4::from_rotation_x(0.4).transpose();
+    to_infinity.w_axis = DVec4::ZERO;
+    let to_infinity = to_infinity.transpose(); // last row (0, 0, 0, 0)
+    // And the other way: w' = z turns (2, 3, 1, 0) into a point at (2, 3, 1).
+    let from_infinity = DMat4::from_cols(DVec4::X, DVec4::Y, DVec4::new(0.0, 0.0, 1.0, 1.0), DVec4::ZERO);
+    for (placement, position) in
+        [(to_infinity, DVec4::new(2.0, 3.0, 4.0, 1.0)), (from_infinity, DVec4::new(2.0, 3.0, 1.0, 0.0))]
+    {
+        scene.lights[0].placement = LightPlacement::Matrix(placement);
+        scene.lights[0].position = position;
+        let key = phonglab_core::plan::Key::of(&scene, EvalOptions::default());
+        assert_eq!(key.lights[0].positional, !scene.light_is_directional(&scene.lights[0]));
+        let (positions, normals) = phonglab_core::presets::sphere_points(512);
+        let l = Lighter::new(&scene, EvalOptions::default()).unwrap();
+        let mut front = vec![Lit::default(); positions.len()];
+        l.light_batch(&positions, &normals, &mut front, None);
+        let mut lit_specular = 0;
+        for i in 0..positions.len() {
+            let v = Vertex { position: positions[i].as_dvec3().extend(1.0), normal: normals[i].as_dvec3() };
+            let g = general(&scene, EvalOptions::default(), &v);
+            assert!(same(&[front[i], front[i]], &g), "vertex {i}: {:?} vs {g:?}", front[i]);
+            lit_specular += usize::from(g[0].primary[2] > 0.3);
+        }
+        assert!(lit_specular > 0, "the highlight is there");
     }
 }
