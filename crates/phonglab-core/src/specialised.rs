@@ -45,7 +45,7 @@ fn fast_loop(
     pow: impl Fn(f32, f32) -> f32,
 ) {
     let [amb, dif, spe] = products.map(|v| v.to_array());
-    let n = c.n;
+    let n = c.len();
     let (nx, ny, nz, zero) = (&c.nx[..n], &c.ny[..n], &c.nz[..n], &c.zero[..n]);
     // Pass 1: the two cosines (glam's dot: (x x' + y y') + z z').
     let mut ndl = [0.0f32; CHUNK];
@@ -88,7 +88,7 @@ fn positional_fast(
     local_viewer: bool,
     pow: impl Fn(f32, f32) -> f32,
 ) {
-    let n = c.n;
+    let n = c.len();
     let [amb, dif, spe] = pl.products[0].map(|v| v.to_array());
     let shin = e.sides[0].shininess;
     let attenuated = pl.k != [1.0, 0.0, 0.0];
@@ -275,7 +275,7 @@ impl Source<'_> {
         match *self {
             Source::Object { positions, normals, with_positions } => {
                 if with_positions {
-                    for i in 0..c.n {
+                    for i in 0..c.len() {
                         let p = positions[start + i].as_dvec3().extend(1.0);
                         let pos_h = transform_point(&e.eye_from_object, p);
                         c.pos[i] = pos_h.truncate() / pos_h.w;
@@ -284,13 +284,13 @@ impl Source<'_> {
                 transform_normals(e, &normals[start..start + c.n], c);
             }
             Source::Eye { positions, normals } => {
-                for i in 0..c.n {
+                for i in 0..c.len() {
                     c.pos[i] = positions[start + i].as_dvec3();
                     c.set_nrm(i, normals[start + i]);
                 }
             }
             Source::EyeRaw { positions, normals } => {
-                for i in 0..c.n {
+                for i in 0..c.len() {
                     c.pos[i] = positions[start + i].as_dvec3();
                     c.set_nrm(i, normals[start + i]);
                 }
@@ -314,7 +314,7 @@ impl Source<'_> {
 #[inline(always)]
 fn transform_normals(e: &Engine<f32>, normals: &[Vec3], c: &mut Chunk) {
     let m = e.normal_matrix;
-    let n = normals.len();
+    let n = normals.len().min(CHUNK);
     for (i, &v) in normals.iter().enumerate() {
         c.nx[i] = m.x_axis.x * v.x + m.y_axis.x * v.y + m.z_axis.x * v.z;
         c.ny[i] = m.x_axis.y * v.x + m.y_axis.y * v.y + m.z_axis.y * v.z;
@@ -340,7 +340,7 @@ fn transform_normals(e: &Engine<f32>, normals: &[Vec3], c: &mut Chunk) {
 /// The chunk's normals times [`fast_rsqrt`] of their squared length (0 stays 0).
 #[inline(always)]
 fn normalize_chunk_fast(c: &mut Chunk) {
-    for i in 0..c.n {
+    for i in 0..c.len() {
         let (x, y, z) = (c.nx[i], c.ny[i], c.nz[i]);
         let q = x * x + y * y + z * z;
         let inv = if q > 0.0 { fast_rsqrt(q) } else { 0.0 };
@@ -353,7 +353,7 @@ fn normalize_chunk_fast(c: &mut Chunk) {
 /// `robust::normalize_or_zero` over the chunk's normals, on plain arrays.
 #[inline(always)]
 fn normalize_chunk(c: &mut Chunk) {
-    for i in 0..c.n {
+    for i in 0..c.len() {
         let (x, y, z) = (c.nx[i], c.ny[i], c.nz[i]);
         let m = x.abs().max(y.abs()).max(z.abs());
         let defined = m != 0.0 && m.is_finite();
@@ -383,6 +383,14 @@ struct Chunk {
 }
 
 impl Chunk {
+    /// The vertices in the chunk. Always `n`, but written with its bound so that the
+    /// compiler knows every index below it is in range (no bounds checks in the loops,
+    /// which then vectorise).
+    #[inline(always)]
+    fn len(&self) -> usize {
+        self.n.min(CHUNK)
+    }
+
     fn new() -> Box<Self> {
         Box::new(Chunk {
             n: 0,
@@ -642,7 +650,7 @@ impl Lighter {
         let sep = self.key.separate_specular;
         let fix = |x: f32| if x.is_nan() { 0.0 } else { x };
         let (pr, sc) = (&c.acc[2 * side], &c.acc[2 * side + 1]);
-        for (i, o) in out.iter_mut().enumerate().take(c.n) {
+        for (i, o) in out.iter_mut().enumerate().take(c.len()) {
             o.primary = [fix(base[0] + pr[0][i]), fix(base[1] + pr[1][i]), fix(base[2] + pr[2][i]), m.alpha];
             o.secondary = if sep { [fix(sc[0][i]), fix(sc[1][i]), fix(sc[2][i]), 1.0] } else { [0.0; 4] };
         }
@@ -656,7 +664,7 @@ impl Lighter {
         let fix = |x: f32| if x.is_nan() { 0.0 } else { x };
         let (pr, sc) = (&c.acc[2 * side], &c.acc[2 * side + 1]);
         if self.key.separate_specular {
-            for (i, o) in out.iter_mut().enumerate().take(c.n) {
+            for (i, o) in out.iter_mut().enumerate().take(c.len()) {
                 *o = [
                     fix(base[0] + pr[0][i]) + fix(sc[0][i]),
                     fix(base[1] + pr[1][i]) + fix(sc[1][i]),
@@ -665,7 +673,7 @@ impl Lighter {
                 ];
             }
         } else {
-            for (i, o) in out.iter_mut().enumerate().take(c.n) {
+            for (i, o) in out.iter_mut().enumerate().take(c.len()) {
                 *o = [fix(base[0] + pr[0][i]), fix(base[1] + pr[1][i]), fix(base[2] + pr[2][i]), m.alpha];
             }
         }
@@ -675,7 +683,7 @@ impl Lighter {
     #[inline(always)]
     fn light_chunk(&self, c: &mut Chunk) {
         let e = &self.engine;
-        let n = c.n;
+        let n = c.len();
         for i in 0..n {
             c.zero[i] = terms::is_zero_normal::<f32>(c.nrm(i));
         }
@@ -747,7 +755,7 @@ impl Lighter {
             self.directional_fast(c, pl, k);
             return;
         }
-        for i in 0..c.n {
+        for i in 0..c.len() {
             let lit = k.l.filter(|_| !c.zero[i]);
             let h = if per_vertex_h {
                 k.l.zip(c.view(i, self.key.local_viewer)).and_then(|(l, v)| terms::halfway::<f32>(l, v))
@@ -779,7 +787,7 @@ impl Lighter {
         let Some(l) = k.l else {
             // No direction: ambient only.
             let pri = crate::robust::scale0::<f32>(amb, scale);
-            for i in 0..c.n {
+            for i in 0..c.len() {
                 c.add(0, i, pri);
             }
             return;
@@ -816,7 +824,7 @@ impl Lighter {
         }
         let attenuated = pl.k != [1.0, 0.0, 0.0];
         let blinn = e.rules.specular == SpecularModel::BlinnPhong;
-        for i in 0..c.n {
+        for i in 0..c.len() {
             let (l64, d64) = terms::light_vector(&pl.pos, c.pos[i], false);
             let att = match (attenuated, d64) {
                 (true, Some(d)) => terms::attenuation(pl.k, d as f32),
