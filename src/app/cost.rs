@@ -210,7 +210,7 @@ fn pow10_label(v: f64) -> String {
     }
 }
 
-/// The chart: median ms per frame across, mean error (1/255) up, both logarithmic; the
+/// The chart: ms per frame (median; the best of the rounds) across, mean error (1/255) up, both logarithmic; the
 /// three shadings as lines through their tessellations, each point labelled with its
 /// level; the approximations and Phong in f32 as labelled markers; the 8-bit floor dashed.
 pub fn cost_chart_ui(ui: &mut Ui, study: &Study, height: f32) {
@@ -220,7 +220,7 @@ pub fn cost_chart_ui(ui: &mut Ui, study: &Study, height: f32) {
     Plot::new(format!("cost chart {:?}", study.object))
         .height(height)
         .legend(Legend::default())
-        .x_axis_label("median ms per frame (log)")
+        .x_axis_label("ms per frame (log)")
         .y_axis_label("mean error, 1/255 (log)")
         .x_axis_formatter(|m, _| pow10_label(m.value))
         .y_axis_formatter(|m, _| pow10_label(m.value))

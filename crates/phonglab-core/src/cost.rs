@@ -291,23 +291,29 @@ pub fn variants(object: ObjectKind) -> Vec<Variant> {
 }
 
 /// How long to time each variant.
+///
+/// Each variant is timed in `rounds` passes over all the variants in turn, so that a
+/// slow spell of a shared machine hits every variant alike rather than the few timed
+/// during it; the figure kept is the lowest of the per-round medians.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Timing {
-    /// At least this many timed frames (after one untimed).
+    /// At least this many timed frames per round (after one untimed).
     pub min_frames: u32,
-    /// And at least this long in all.
+    /// And at least this long per round.
     pub min_seconds: f64,
-    /// But no more frames than this.
+    /// But no more frames per round than this.
     pub max_frames: u32,
+    /// Passes over all the variants (at least one).
+    pub rounds: u32,
 }
 
 impl Timing {
-    /// Enough for stable figures on a quiet machine.
-    pub const CAREFUL: Timing = Timing { min_frames: 5, min_seconds: 0.3, max_frames: 200 };
+    /// Enough for stable figures on a quiet machine: 3 rounds of at least 0.15 s.
+    pub const CAREFUL: Timing = Timing { min_frames: 5, min_seconds: 0.15, max_frames: 200, rounds: 3 };
     /// Quick, for the app's background study.
-    pub const QUICK: Timing = Timing { min_frames: 3, min_seconds: 0.1, max_frames: 60 };
+    pub const QUICK: Timing = Timing { min_frames: 3, min_seconds: 0.1, max_frames: 60, rounds: 1 };
     /// One frame each: tests, which check the error figures only.
-    pub const ONCE: Timing = Timing { min_frames: 1, min_seconds: 0.0, max_frames: 1 };
+    pub const ONCE: Timing = Timing { min_frames: 1, min_seconds: 0.0, max_frames: 1, rounds: 1 };
 }
 
 /// One measured variant.
@@ -317,7 +323,7 @@ pub struct CostPoint {
     pub variant: Variant,
     /// Triangles in its mesh.
     pub triangles: usize,
-    /// Median milliseconds per frame.
+    /// Milliseconds per frame: the lowest of the per-round medians ([`Timing`]).
     pub ms: f64,
     /// Its error against the reference.
     pub error: ErrorStats,
@@ -370,24 +376,46 @@ pub fn measure_view(
     };
     let size = reference.size;
     let mut renderer = Renderer::new();
-    renderer.render(&job, size, size)?;
+    let ms = time_job(&mut renderer, &job, size, timing)?;
+    let (image, _) = renderer.render(&job, size, size)?;
+    Ok(Measured {
+        triangles: mesh.triangle_count(),
+        ms,
+        error: error(image, reference),
+        map: error_map(image, reference),
+    })
+}
+
+/// Another round of timing for `variant` (see [`Timing`]): median ms per frame.
+pub fn retime(setup: &Setup<'_>, variant: &Variant, size: usize, timing: Timing) -> Result<f64, SceneError> {
+    let view = view_at(setup.view, variant.level);
+    let mesh = view.mesh();
+    let job = Job {
+        scene: setup.scene,
+        mesh: &mesh,
+        clip_from_eye: setup.clip_from_eye,
+        shading: variant.shading,
+        background: setup.background,
+        cull_back: false,
+        options: variant.options,
+    };
+    time_job(&mut Renderer::new(), &job, size, timing)
+}
+
+/// One untimed frame, then frames as `timing` asks; the median in milliseconds.
+fn time_job(renderer: &mut Renderer, job: &Job<'_>, size: usize, timing: Timing) -> Result<f64, SceneError> {
+    renderer.render(job, size, size)?;
     let mut times = Vec::new();
     let start = Instant::now();
     while times.len() < timing.max_frames.max(1) as usize
         && (times.len() < timing.min_frames.max(1) as usize || start.elapsed().as_secs_f64() < timing.min_seconds)
     {
         let t = Instant::now();
-        renderer.render(&job, size, size)?;
+        renderer.render(job, size, size)?;
         times.push(t.elapsed().as_secs_f64() * 1e3);
     }
     times.sort_by(f64::total_cmp);
-    let (image, _) = renderer.render(&job, size, size)?;
-    Ok(Measured {
-        triangles: mesh.triangle_count(),
-        ms: times[times.len() / 2],
-        error: error(image, reference),
-        map: error_map(image, reference),
-    })
+    Ok(times[times.len() / 2])
 }
 
 /// f32 against f64: the time per vertex of each evaluator and the largest difference.
@@ -500,7 +528,8 @@ pub fn run(
     progress: &mut dyn FnMut(&Progress) -> bool,
 ) -> Result<Option<Study>, SceneError> {
     let vs = variants(setup.view.object);
-    let total = vs.len() + 2;
+    let rounds = timing.rounds.max(1) as usize;
+    let total = vs.len() * rounds + 2;
     let mut step = |done: usize, what: String| progress(&Progress { done, total, what });
     if !step(0, "reference (f64, per pixel, finest mesh)".into()) {
         return Ok(None);
@@ -516,7 +545,15 @@ pub fn run(
         points.push(p);
         error_maps.push(map);
     }
-    if !step(vs.len() + 1, "f32 against f64".into()) {
+    for round in 1..rounds {
+        for (i, (v, p)) in vs.iter().zip(&mut points).enumerate() {
+            if !step(round * vs.len() + i + 1, format!("{} (timing round {})", v.label, round + 1)) {
+                return Ok(None);
+            }
+            p.ms = p.ms.min(retime(setup, v, reference.size, timing)?);
+        }
+    }
+    if !step(total - 1, "f32 against f64".into()) {
         return Ok(None);
     }
     let mid = view_at(setup.view, levels(setup.view.object)[2]).mesh();

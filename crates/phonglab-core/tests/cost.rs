@@ -132,3 +132,29 @@ fn a_study_can_be_cancelled() {
     assert!(r.is_none());
     assert_eq!(seen, 4);
 }
+
+#[test]
+fn timing_rounds_visit_every_variant_again_and_keep_the_errors() {
+    let doc = Document::default();
+    let scene = doc.shaded_scene();
+    let setup = Setup::shaded_view(&scene, &doc.view, 32, [0.0; 3]);
+    let n = cost::variants(doc.view.object).len();
+    let once = cost::run(&setup, Timing::ONCE, &mut |_| true).unwrap().unwrap();
+    let mut steps = Vec::new();
+    let timing = Timing { rounds: 3, ..Timing::ONCE };
+    let three = cost::run(&setup, timing, &mut |p| {
+        steps.push((p.done, p.total, p.what.clone()));
+        true
+    })
+    .unwrap()
+    .unwrap();
+    // The reference, each variant in three rounds, the precision figures, done.
+    assert_eq!(steps.len(), 3 * n + 3);
+    assert!(steps.iter().all(|s| s.1 == 3 * n + 2));
+    assert!(steps.windows(2).all(|w| w[1].0 == w[0].0 + 1), "{steps:?}");
+    assert_eq!(steps[3 * n].2, format!("{} (timing round 3)", cost::variants(doc.view.object)[n - 1].label));
+    for (a, b) in once.points.iter().zip(&three.points) {
+        assert_eq!(a.error, b.error, "{}", a.variant.label);
+        assert!(b.ms.is_finite() && b.ms > 0.0);
+    }
+}
