@@ -579,7 +579,7 @@ pub fn to_csv(study: &Study) -> String {
         s.push_str(&format!(
             "{},{},{:?},{},{},{},{:.4},{:.4},{:.3},{:.6}\n",
             study.object.label().to_lowercase(),
-            p.variant.label,
+            csv_field(&p.variant.label),
             p.variant.question,
             p.variant.shading.label(),
             p.variant.level,
@@ -591,4 +591,10 @@ pub fn to_csv(study: &Study) -> String {
         ));
     }
     s
+}
+
+/// A CSV field (RFC 4180): quoted, with quotes doubled, when it holds a comma, a quote or
+/// a line break ("Phong 32, fast rsqrt").
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n', '\r']) { format!("\"{}\"", s.replace('"', "\"\"")) } else { s.to_string() }
 }

@@ -116,6 +116,12 @@ fn the_figures_are_deterministic_and_the_maps_agree_with_them() {
     let csv = cost::to_csv(s);
     assert_eq!(csv.lines().count(), 1 + cost::variants(ObjectKind::Teapot).len());
     assert!(csv.lines().nth(1).unwrap().starts_with("teapot,Flat 1,Shading,Flat,1,64,"), "{csv}");
+    // Labels with a comma are quoted, so every row has the header's ten fields.
+    assert!(csv.contains("\nteapot,\"Phong 4, fast rsqrt\",Approximation,Phong,4,1024,"), "{csv}");
+    for line in csv.lines() {
+        let unquoted: String = line.split('"').step_by(2).collect();
+        assert_eq!(unquoted.matches(',').count(), 9, "{line}");
+    }
 }
 
 #[test]
