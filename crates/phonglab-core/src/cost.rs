@@ -50,6 +50,23 @@ impl<'a> Setup<'a> {
     pub fn shaded_view(scene: &'a Scene, view: &'a View, size: usize, background: [f32; 3]) -> Self {
         Setup { scene, view, clip_from_eye: crate::view::view_projection(1.0), size, background }
     }
+
+    /// What the renderer draws for `mesh` in this setup (no culling, as the study compares
+    /// every covered pixel).
+    pub fn job<'m>(&self, mesh: &'m Mesh, shading: Shading, options: EvalOptions) -> Job<'m>
+    where
+        'a: 'm,
+    {
+        Job {
+            scene: self.scene,
+            mesh,
+            clip_from_eye: self.clip_from_eye,
+            shading,
+            background: self.background,
+            cull_back: false,
+            options,
+        }
+    }
 }
 
 /// The five tessellation levels studied per object, coarse to fine: sphere slices and
@@ -104,15 +121,7 @@ pub struct Reference {
 pub fn reference(setup: &Setup<'_>) -> Result<Reference, SceneError> {
     let mesh = reference_view(setup.view).mesh();
     let mut renderer = Renderer::new();
-    let job = Job {
-        scene: setup.scene,
-        mesh: &mesh,
-        clip_from_eye: setup.clip_from_eye,
-        shading: Shading::Gouraud,
-        background: setup.background,
-        cull_back: false,
-        options: EvalOptions::default(),
-    };
+    let job = setup.job(&mesh, Shading::Gouraud, EvalOptions::default());
     let size = setup.size.max(1);
     renderer.render(&job, size, size)?;
     let engine = Engine::<f64>::new(setup.scene)?;
@@ -365,15 +374,7 @@ pub fn measure_view(
     timing: Timing,
 ) -> Result<Measured, SceneError> {
     let mesh = view.mesh();
-    let job = Job {
-        scene: setup.scene,
-        mesh: &mesh,
-        clip_from_eye: setup.clip_from_eye,
-        shading,
-        background: setup.background,
-        cull_back: false,
-        options,
-    };
+    let job = setup.job(&mesh, shading, options);
     let size = reference.size;
     let mut renderer = Renderer::new();
     let ms = time_job(&mut renderer, &job, size, timing)?;
@@ -390,15 +391,7 @@ pub fn measure_view(
 pub fn retime(setup: &Setup<'_>, variant: &Variant, size: usize, timing: Timing) -> Result<f64, SceneError> {
     let view = view_at(setup.view, variant.level);
     let mesh = view.mesh();
-    let job = Job {
-        scene: setup.scene,
-        mesh: &mesh,
-        clip_from_eye: setup.clip_from_eye,
-        shading: variant.shading,
-        background: setup.background,
-        cull_back: false,
-        options: variant.options,
-    };
+    let job = setup.job(&mesh, variant.shading, variant.options);
     time_job(&mut Renderer::new(), &job, size, timing)
 }
 
@@ -441,12 +434,7 @@ pub fn precision(scene: &Scene, mesh: &Mesh, min_seconds: f64) -> Result<Precisi
     let e32 = Engine::<f32>::new(scene)?;
     let e64 = Engine::<f64>::new(scene)?;
     let lighter = Lighter::new(scene, EvalOptions::default())?;
-    let verts: Vec<Vertex> = mesh
-        .positions
-        .iter()
-        .zip(&mesh.normals)
-        .map(|(p, n)| Vertex { position: p.as_dvec3().extend(1.0), normal: n.as_dvec3() })
-        .collect();
+    let verts: Vec<Vertex> = mesh.positions.iter().zip(&mesh.normals).map(|(p, n)| Vertex::from_f32(*p, *n)).collect();
     let n = verts.len().max(1);
     let (mut max_error, mut max_shown) = (0.0f64, 0.0f64);
     for v in &verts {
