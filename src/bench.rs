@@ -155,11 +155,7 @@ fn render(a: &RenderBench) -> Result<()> {
 /// One figure of `bench lighting`: ns per vertex, general and specialised.
 pub fn lighting_figures(vertices: usize, repeats: u32) -> Result<Vec<(&'static str, f64, f64)>> {
     let (pos, nrm) = sphere_points(vertices);
-    let verts: Vec<Vertex> = pos
-        .iter()
-        .zip(&nrm)
-        .map(|(p, n)| Vertex { position: p.as_dvec3().extend(1.0), normal: n.as_dvec3() })
-        .collect();
+    let verts: Vec<Vertex> = pos.iter().zip(&nrm).map(|(p, n)| Vertex::from_f32(*p, *n)).collect();
     let mut out_buf = vec![[0.0f32; 4]; vertices];
     let best = |f: &mut dyn FnMut()| {
         (0..repeats.max(1))

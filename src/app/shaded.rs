@@ -211,8 +211,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
         let mesh = mesh_for(&mut cache.mesh, &state.doc.view);
         if let Some(i) = cache.renderer.pick(mesh, x, y) {
             let mut c = state.doc.clone();
-            c.scene.vertex =
-                Vertex { position: mesh.positions[i].as_dvec3().extend(1.0), normal: mesh.normals[i].as_dvec3() };
+            c.scene.vertex = Vertex::from_f32(mesh.positions[i], mesh.normals[i]);
             c.camera = CameraSpec::Matrix(camera.eye_from_world());
             c.scene.world_from_object = DMat4::from_rotation_y(state.doc.view.spin_degrees.to_radians());
             if state.apply(c) {

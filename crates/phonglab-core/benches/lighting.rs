@@ -4,20 +4,20 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use glam::{DVec3, DVec4};
+use glam::DVec4;
 use phonglab_core::{Engine, Real, Vertex, presets};
 
-/// 1M vertices on a unit sphere (positions and outward normals), placed in front of the
-/// worksheet's camera.
+/// `n` vertices on a unit sphere ([`presets::sphere_points`]), scaled by 200 and placed in
+/// front of the worksheet's camera.
 fn sphere_vertices(n: usize) -> Vec<Vertex> {
-    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
-    (0..n)
-        .map(|i| {
-            let y = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
-            let r = (1.0 - y * y).sqrt();
-            let t = golden * i as f64;
-            let nrm = DVec3::new(r * t.cos(), y, r * t.sin());
-            Vertex { position: (nrm * 200.0).extend(1.0) + DVec4::new(-512.0, -384.0, 0.0, 0.0), normal: nrm }
+    let (points, normals) = presets::sphere_points(n);
+    let offset = DVec4::new(-512.0, -384.0, 0.0, 0.0);
+    points
+        .iter()
+        .zip(&normals)
+        .map(|(p, n)| {
+            let v = Vertex::from_f32(*p, *n);
+            Vertex { position: (v.position.truncate() * 200.0).extend(1.0) + offset, ..v }
         })
         .collect()
 }

@@ -12,11 +12,7 @@ const N: usize = 1_000_000;
 
 fn benches(c: &mut Criterion) {
     let (pos, nrm) = sphere_points(N);
-    let verts: Vec<Vertex> = pos
-        .iter()
-        .zip(&nrm)
-        .map(|(p, n)| Vertex { position: p.as_dvec3().extend(1.0), normal: n.as_dvec3() })
-        .collect();
+    let verts: Vec<Vertex> = pos.iter().zip(&nrm).map(|(p, n)| Vertex::from_f32(*p, *n)).collect();
     let mut out = vec![Lit::default(); N];
     let mut g = c.benchmark_group("lighting");
     g.sample_size(10);

@@ -4,7 +4,7 @@
 //! rounds them once when it is built (OpenGL stores them as `f32`). Defaults are OpenGL's
 //! (OpenGL 2.1 spec, tables 6.9-6.11): only light 0 has white diffuse and specular.
 
-use glam::{DMat4, DVec3, DVec4};
+use glam::{DMat4, DVec3, DVec4, Vec3};
 
 use crate::rules::Rules;
 
@@ -158,6 +158,14 @@ pub struct Vertex {
     pub position: DVec4,
     /// Object-space normal.
     pub normal: DVec3,
+}
+
+impl Vertex {
+    /// A point (w = 1) and its normal as meshes and the batch API store them, in f32,
+    /// widened exactly to f64.
+    pub fn from_f32(position: Vec3, normal: Vec3) -> Self {
+        Self { position: position.as_dvec3().extend(1.0), normal: normal.as_dvec3() }
+    }
 }
 
 impl Default for Vertex {
