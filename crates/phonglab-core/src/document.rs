@@ -171,6 +171,15 @@ enum NormalsName {
     Rescale,
 }
 
+/// Three numbers (the fourth taken as 1) or four; otherwise `rule`, with the count.
+fn three_or_four(v: &[f64], rule: &str) -> Result<DVec4, String> {
+    match v {
+        [x, y, z] => Ok(DVec4::new(*x, *y, *z, 1.0)),
+        [x, y, z, w] => Ok(DVec4::new(*x, *y, *z, *w)),
+        _ => Err(format!("{rule}, not {}", v.len())),
+    }
+}
+
 /// A colour: rgb (alpha 1) or rgba.
 #[derive(Serialize, Deserialize, Clone, Copy)]
 #[serde(try_from = "Vec<f64>", into = "Vec<f64>")]
@@ -179,11 +188,7 @@ struct Color(DVec4);
 impl TryFrom<Vec<f64>> for Color {
     type Error = String;
     fn try_from(v: Vec<f64>) -> Result<Self, String> {
-        match v.as_slice() {
-            [r, g, b] => Ok(Color(DVec4::new(*r, *g, *b, 1.0))),
-            [r, g, b, a] => Ok(Color(DVec4::new(*r, *g, *b, *a))),
-            _ => Err(format!("a colour has 3 or 4 numbers (rgb or rgba), not {}", v.len())),
-        }
+        three_or_four(&v, "a colour has 3 or 4 numbers (rgb or rgba)").map(Color)
     }
 }
 
@@ -201,11 +206,7 @@ struct Point(DVec4);
 impl TryFrom<Vec<f64>> for Point {
     type Error = String;
     fn try_from(v: Vec<f64>) -> Result<Self, String> {
-        match v.as_slice() {
-            [x, y, z] => Ok(Point(DVec4::new(*x, *y, *z, 1.0))),
-            [x, y, z, w] => Ok(Point(DVec4::new(*x, *y, *z, *w))),
-            _ => Err(format!("a position has 3 or 4 numbers (xyz or xyzw), not {}", v.len())),
-        }
+        three_or_four(&v, "a position has 3 or 4 numbers (xyz or xyzw)").map(Point)
     }
 }
 
