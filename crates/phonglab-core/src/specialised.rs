@@ -520,13 +520,6 @@ impl Lighter {
         );
     }
 
-    /// Lights vertices given in eye space: positions (w = 1) and the normals the equation
-    /// uses (already normalised as the caller wants).
-    pub fn light_batch_eye(&self, positions: &[Vec3], normals: &[Vec3], front: &mut [Lit], back: Option<&mut [Lit]>) {
-        assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(Source::Eye { positions, normals }, Output::Lit { front, back });
-    }
-
     /// [`Lighter::light_batch_eye_sum`] with normals not yet normalised: each is
     /// normalised first (as `robust::normalize_or_zero`), as Phong shading renormalises its
     /// interpolated normals.
@@ -541,7 +534,9 @@ impl Lighter {
         self.run(Source::EyeRaw { positions, normals }, Output::Sum { front, back });
     }
 
-    /// [`Lighter::light_batch_eye`] writing only the colour sums: per-pixel shading.
+    /// Lights vertices given in eye space, positions (w = 1) and the normals the equation
+    /// uses (already normalised as the caller wants), writing only each side's colour sum
+    /// as [`Lighter::light_batch_sum`] does: per-pixel shading.
     pub fn light_batch_eye_sum(
         &self,
         positions: &[Vec3],
