@@ -1,8 +1,9 @@
 //! The worksheet: with mview5 the engine's worked calculation prints the worksheet's own
-//! values; with each of the five modelviews every step equals an independent, literal
-//! transcription of the worksheet's steps (to 1e-7, as the worksheet prints 8 digits).
+//! values; with each of its five modelviews (as printed in its cell `In [4]`) every step
+//! equals what the worksheet's own Python cells compute when `mview` is set to it (run by
+//! `scripts/worksheet_cells.py`, kept in `tests/data/worksheet_cells.json`), to 1e-7.
 
-use glam::{DMat3, DVec3, DVec4, Vec4Swizzles};
+use glam::DVec3;
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::{Engine, Rules, presets};
 
@@ -44,76 +45,127 @@ fn mview5_prints_the_worksheets_values() {
     assert!(text.contains("vertexNormal = [0 0.6 0.8 0]"), "{text}");
 }
 
-/// The worksheet's steps, transcribed literally (f64, no robustness tricks).
-struct Hand {
-    normal: DVec3,
-    l: DVec3,
-    v: DVec3,
-    iamb: DVec3,
-    idif: DVec3,
-    h: DVec3,
-    ispec: DVec3,
-    at: f64,
-    i: DVec3,
+/// One run of the worksheet's own cells (`scripts/worksheet_cells.py`, kept in
+/// `tests/data/worksheet_cells.json`): what it printed and the values behind the prints.
+struct Run {
+    mview: usize,
+    rows: Vec<Vec<f64>>,
+    printed: serde_json::Map<String, serde_json::Value>,
+    values: serde_json::Map<String, serde_json::Value>,
 }
 
-fn by_hand(k: usize) -> Hand {
-    let m = phonglab_core::transform::worksheet_modelview(k).unwrap();
-    let normal = DMat3::from_mat4(m).inverse().transpose() * DVec3::Z;
-    let vertex = (m * DVec4::new(-512.0, -384.0, 0.0, 1.0)).xyz();
-    let light = (m * DVec4::new(0.0, 0.0, 90.0, 1.0)).xyz();
-    let l = (light - vertex).normalize();
-    let v = DVec3::Z;
-    let (ma, md, ms) = (
-        DVec3::new(0.2125, 0.1275, 0.054),
-        DVec3::new(0.714, 0.4284, 0.18144),
-        DVec3::new(0.393548, 0.271906, 0.166721),
-    );
-    let iamb = ma;
-    let cos_theta = normal.dot(l);
-    let idif = if cos_theta > 0.0 { md * cos_theta } else { DVec3::ZERO };
-    let h = (l + v).normalize();
-    let cos_beta = normal.dot(h);
-    let ispec = if cos_beta > 0.0 { ms * cos_beta.powf(0.2 * 128.0) } else { DVec3::ZERO };
-    let d = (light - vertex).length();
-    let at = 1.0 + 0.0001 * d + 0.00001 * d * d;
-    Hand { normal, l, v, iamb, idif, h, ispec, at, i: (iamb + idif + ispec) / at }
+fn runs() -> Vec<Run> {
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/worksheet_cells.json"))
+        .expect("tests/data/worksheet_cells.json is in the repository");
+    let doc: serde_json::Value = serde_json::from_str(&text).unwrap();
+    doc["runs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| Run {
+            mview: r["mview"].as_u64().unwrap() as usize,
+            rows: serde_json::from_value(r["modelview_rows"].clone()).unwrap(),
+            printed: r["printed"].as_object().unwrap().clone(),
+            values: r["values"].as_object().unwrap().clone(),
+        })
+        .collect()
+}
+
+fn nums(v: &serde_json::Value) -> Vec<f64> {
+    match v {
+        serde_json::Value::Array(a) => a.iter().map(|x| x.as_f64().unwrap()).collect(),
+        x => vec![x.as_f64().unwrap()],
+    }
+}
+
+/// numpy's printout `[0.  0.6 0.8 0. ]` as numbers.
+fn parse_printed(s: &str) -> Vec<f64> {
+    s.trim_matches(|c| c == '[' || c == ']').split_whitespace().map(|x| x.parse().unwrap()).collect()
 }
 
 #[test]
-fn all_five_modelviews_match_the_worksheets_steps() {
-    for k in 1..=5 {
-        let scene = presets::worksheet(k);
-        let hand = by_hand(k);
-        for lit in [Engine::<f64>::light_scene_vertex(&scene).map(|l| explain(&scene, &l, Side::Front))] {
-            let ex = lit.unwrap();
-            let v4 = |v: DVec3| [v.x, v.y, v.z, 0.0];
-            for (name, want) in [
-                ("vertexNormal", v4(hand.normal)),
-                ("vlv", v4(hand.l)),
-                ("vov", v4(hand.v)),
-                ("Iamb", v4(hand.iamb)),
-                ("Idif", v4(hand.idif)),
-                ("hv", v4(hand.h)),
-                ("Ispec", v4(hand.ispec)),
-                ("I", v4(hand.i)),
-            ] {
-                assert_close(&format!("mview{k} {name}"), ex.value(name).unwrap(), &want, 1e-7);
-            }
-            assert_close(&format!("mview{k} at"), ex.value("at").unwrap(), &[hand.at], 1e-7 * hand.at);
+fn the_modelviews_are_the_worksheets_as_printed() {
+    let runs = runs();
+    assert_eq!(runs.len(), 5);
+    for r in &runs {
+        let m = phonglab_core::transform::worksheet_modelview(r.mview).unwrap();
+        let ours = phonglab_core::transform::mat4_rows(&m);
+        for (i, row) in r.rows.iter().enumerate() {
+            assert_eq!(row.as_slice(), ours[i].as_slice(), "mview{} row {i}", r.mview);
         }
+    }
+    // mview2's third row is printed with one digit less ("-0.85749"): kept as printed.
+    let m2 = phonglab_core::transform::mat4_rows(&phonglab_core::transform::worksheet_modelview(2).unwrap());
+    assert_eq!(m2[2][1], -0.85749);
+}
+
+#[test]
+fn all_five_modelviews_give_what_the_worksheets_code_prints() {
+    for r in runs() {
+        let k = r.mview;
+        let scene = presets::worksheet(k);
+        let v = |name: &str| nums(&r.values[name]);
+        let steps = [
+            ("vertexNormal", "vertexNormal"),
+            ("vlv", "vlv"),
+            ("vov", "vov"),
+            ("Iamb", "Iamb"),
+            ("cosTheta", "cosTheta"),
+            ("Idif", "Idif"),
+            ("hv", "H"),
+            ("cosBeta", "cosBeta"),
+            ("Ispec", "Ispec"),
+            ("d", "d"),
+            ("I", "I"),
+        ];
+        let ex64 = explain(&scene, &Engine::<f64>::light_scene_vertex(&scene).unwrap(), Side::Front);
         let ex32 = explain(&scene, &Engine::<f32>::light_scene_vertex(&scene).unwrap(), Side::Front);
-        let i = ex32.value("I").unwrap();
-        assert_close(&format!("mview{k} I (f32)"), &i[..3], &[hand.i.x, hand.i.y, hand.i.z], 1e-7);
+        for (ours, theirs) in steps {
+            let want = v(theirs);
+            // d is ~2000: its 1e-7 is relative.
+            let tol = if ours == "d" { 1e-7 * want[0] } else { 1e-7 };
+            assert_close(&format!("mview{k} {ours}"), ex64.value(ours).unwrap(), &want, tol);
+            let tol32 = if ours == "d" { 1e-6 * want[0] } else { 1e-6 };
+            assert_close(&format!("mview{k} {ours} (f32)"), ex32.value(ours).unwrap(), &want, tol32);
+        }
+        let at = v("at")[0];
+        assert_close(&format!("mview{k} at"), ex64.value("at").unwrap(), &[at], 1e-7 * at);
+        // And every printed line, to its 8 digits.
+        for (name, text) in &r.printed {
+            let want = parse_printed(text.as_str().unwrap());
+            assert_close(&format!("mview{k} printed {name}"), ex64.value(name).unwrap(), &want, 1e-8);
+        }
     }
 }
 
 #[test]
+fn mview2_normal_differs_from_opengls_and_the_calculation_says_so() {
+    let scene = presets::worksheet(2);
+    let ex = explain(&scene, &Engine::<f64>::light_scene_vertex(&scene).unwrap(), Side::Front);
+    let n = ex.steps.iter().find(|s| s.name == "vertexNormal").unwrap();
+    assert!(n.formula.contains("M itself"), "{}", n.formula);
+    assert!(n.notes.iter().any(|x| x.contains("(M^-1)^T")), "{:?}", n.notes);
+    // mview5 is a true rotation: no such note.
+    let scene5 = presets::worksheet(5);
+    let ex5 = explain(&scene5, &Engine::<f64>::light_scene_vertex(&scene5).unwrap(), Side::Front);
+    assert!(ex5.steps.iter().find(|s| s.name == "vertexNormal").unwrap().notes.is_empty());
+    // Under OpenGL's rules mview2's normal is the inverse transpose's, and differs.
+    let mut gl = scene.clone();
+    gl.rules = Rules::OPENGL;
+    let a = Engine::<f64>::light_scene_vertex(&scene).unwrap().normal_in_eye;
+    let b = Engine::<f64>::light_scene_vertex(&gl).unwrap().normal_in_eye;
+    assert!((a - b).length() > 1e-6 && (a - b).length() < 1e-4, "{a} vs {b}");
+}
+
+#[test]
 fn the_modelviews_give_different_eye_space_geometry() {
-    // Guards against a helper that ignores its index. (The colours themselves may agree:
-    // with an infinite viewer a translation changes nothing relative, and a rotation about
-    // z leaves this z-symmetric setup alone.)
-    let ls: Vec<DVec3> = (1..=5).map(|k| by_hand(k).l).collect();
+    // Guards against a helper that ignores its index.
+    let ls: Vec<DVec3> = (1..=5)
+        .map(|k| {
+            let s = presets::worksheet(k);
+            Engine::<f64>::light_scene_vertex(&s).unwrap().lights()[0].l
+        })
+        .collect();
     for a in 0..5 {
         for b in a + 1..5 {
             assert!((ls[a] - ls[b]).length() > 1e-3, "mview{} and mview{} give the same L: {ls:?}", a + 1, b + 1);
