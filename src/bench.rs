@@ -15,8 +15,8 @@ use std::time::Instant;
 use anyhow::Result;
 use clap::{Args, Subcommand};
 use phonglab_core::mesh::{Mesh, sphere, teapot};
-use phonglab_core::presets::{BENCH_BACKGROUND, LightingBench, bench_projection, bench_scene, sphere_points};
-use phonglab_core::render::{Job, Renderer};
+use phonglab_core::presets::{LightingBench, bench_scene, sphere_points};
+use phonglab_core::render::Renderer;
 use phonglab_core::specialised::Lighter;
 use phonglab_core::{Engine, EvalOptions, Shading, Vertex};
 
@@ -97,15 +97,7 @@ pub fn render_figures(frames: u32, size: usize) -> Result<Vec<RenderFigure>> {
             let mut r = Renderer::new();
             let frame = |i: u32, r: &mut Renderer| -> Result<f64> {
                 let scene = bench_scene(i);
-                let job = Job {
-                    scene: &scene,
-                    mesh: &mesh,
-                    clip_from_eye: bench_projection(),
-                    shading,
-                    background: BENCH_BACKGROUND,
-                    cull_back: false,
-                    options: EvalOptions::default(),
-                };
+                let job = phonglab_core::presets::bench_job(&scene, &mesh, shading);
                 let (img, _) = r.render(&job, size, size)?;
                 Ok(img.coverage())
             };

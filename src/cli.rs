@@ -149,6 +149,41 @@ pub struct RenderArgs {
     /// Cull back faces.
     #[arg(long)]
     pub cull: bool,
+    /// Frame N of the scene's spin: N steps of 0.5 degrees (the Phong demo's first frame
+    /// drawn is 1). Default: the scene's own spin.
+    #[arg(long, value_name = "N", conflicts_with = "bench_frame")]
+    pub frame: Option<u32>,
+    /// Correct the Phong demo's departures from OpenGL's lighting (comma-separated):
+    /// light (fixed in the world), normals (the surface's true ones), highlight (in the
+    /// light's colour), or all.
+    #[arg(long, value_delimiter = ',', value_enum, conflicts_with = "bench_frame")]
+    pub correct: Vec<CorrectArg>,
+}
+
+/// A correction of the Phong demo (`render --correct`).
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum CorrectArg {
+    /// The light fixed in the world.
+    Light,
+    /// The surface's true normals.
+    Normals,
+    /// The highlight in the light's colour.
+    Highlight,
+    /// All three.
+    All,
+}
+
+impl CorrectArg {
+    /// The departures this argument corrects.
+    pub fn departures(self) -> Vec<presets::DemoDeparture> {
+        use presets::DemoDeparture as D;
+        match self {
+            CorrectArg::Light => vec![D::LightTurnsWithObject],
+            CorrectArg::Normals => vec![D::PositionNormals],
+            CorrectArg::Highlight => vec![D::HighlightInObjectColour],
+            CorrectArg::All => D::ALL.to_vec(),
+        }
+    }
 }
 
 /// `phonglab explain`.
@@ -351,7 +386,7 @@ fn cost(a: &CostArgs) -> Result<()> {
 
 fn render(a: &RenderArgs) -> Result<()> {
     use phonglab_core::mesh::{sphere, teapot};
-    use phonglab_core::render::{Job, Renderer};
+    use phonglab_core::render::Renderer;
     use phonglab_core::{Document, ObjectKind, Shading};
     let object = a.object.map(ObjectKind::from);
     let shading = a.shading.map(|s| match s {
@@ -360,26 +395,26 @@ fn render(a: &RenderArgs) -> Result<()> {
         ShadingArg::Flat => Shading::Flat,
     });
     let size = a.size as usize;
-    let (scene, mesh, clip_from_eye, background, shading) = if let Some(frame) = a.bench_frame {
+    let bench_scene;
+    let bench_mesh;
+    let setup;
+    let doc_mesh;
+    let job = if let Some(frame) = a.bench_frame {
         let object = object.unwrap_or(ObjectKind::Sphere);
-        let mesh = match object {
+        bench_mesh = match object {
             ObjectKind::Sphere => sphere::glu_sphere(1.0, 50, 50),
             ObjectKind::Teapot => teapot::glut_teapot(0.8, 7),
             ObjectKind::Cylinder => (phonglab_core::View { object, ..Default::default() }).mesh(),
         };
-        (
-            presets::bench_scene(frame),
-            mesh,
-            presets::bench_projection(),
-            presets::BENCH_BACKGROUND,
-            shading.unwrap_or(Shading::Gouraud),
-        )
+        bench_scene = presets::bench_scene(frame);
+        let mut job = presets::bench_job(&bench_scene, &bench_mesh, shading.unwrap_or(Shading::Gouraud));
+        job.cull_back = a.cull;
+        job.options = EvalOptions::with_pow(a.pow.into());
+        job
     } else {
         let mut doc = match (&a.scene, a.preset.as_deref()) {
             (Some(p), _) => load_scene_file(p)?,
-            (None, Some("phong-demo")) => {
-                crate::app::state::preset_documents().pop().map(|(_, d)| d).unwrap_or_default()
-            }
+            (None, Some("phong-demo")) => presets::phong_demo_document(),
             (None, Some("worksheet")) | (None, None) => Document::default(),
             (None, Some(other)) => bail!("unknown preset {other:?}: try worksheet or phong-demo"),
         };
@@ -389,17 +424,20 @@ fn render(a: &RenderArgs) -> Result<()> {
         if let Some(s) = shading {
             doc.view.shading = s;
         }
-        let mesh = doc.view.mesh();
-        (doc.shaded_scene(), mesh, phonglab_core::view::view_projection(1.0), [0.1, 0.1, 0.15], doc.view.shading)
-    };
-    let job = Job {
-        scene: &scene,
-        mesh: &mesh,
-        clip_from_eye,
-        shading,
-        background,
-        cull_back: a.cull,
-        options: EvalOptions::with_pow(a.pow.into()),
+        if let Some(f) = a.frame {
+            doc.view.spin_degrees = 0.5 * f as f64;
+        }
+        for c in &a.correct {
+            for d in c.departures() {
+                d.correct(&mut doc);
+            }
+        }
+        doc.validate().context("the scene after --frame/--correct")?;
+        doc_mesh = doc.view.mesh();
+        setup = doc.shaded_setup(a.pow.into());
+        let mut job = setup.job(&doc_mesh);
+        job.cull_back = a.cull;
+        job
     };
     let mut r = Renderer::new();
     let t = std::time::Instant::now();

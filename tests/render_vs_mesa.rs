@@ -3,10 +3,10 @@
 //! harness's per-pixel GLSL. Over the pixels both cover, the mean absolute difference is
 //! at most 1/255 per channel; the covered areas agree within 0.5 % of the image.
 
+use phonglab_core::Shading;
 use phonglab_core::mesh::{Mesh, sphere, teapot};
-use phonglab_core::presets::{BENCH_BACKGROUND, bench_projection, bench_scene};
-use phonglab_core::render::{Job, Renderer};
-use phonglab_core::{EvalOptions, Shading};
+use phonglab_core::presets::bench_scene;
+use phonglab_core::render::Renderer;
 
 fn mesa(name: &str) -> (usize, usize, Vec<[u8; 3]>) {
     let path = format!("{}/tests/data/mesa_bench/{name}.png", env!("CARGO_MANIFEST_DIR"));
@@ -29,15 +29,7 @@ struct Comparison {
 fn compare(mesh: &Mesh, shading: Shading, reference: &str) -> Comparison {
     let (w, h, theirs) = mesa(reference);
     let scene = bench_scene(199);
-    let job = Job {
-        scene: &scene,
-        mesh,
-        clip_from_eye: bench_projection(),
-        shading,
-        background: BENCH_BACKGROUND,
-        cull_back: false,
-        options: EvalOptions::default(),
-    };
+    let job = phonglab_core::presets::bench_job(&scene, mesh, shading);
     let mut r = Renderer::new();
     let (img, _) = r.render(&job, w, h).unwrap();
     // Covered: differs from the background, as the harness counts it.

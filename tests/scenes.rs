@@ -68,16 +68,16 @@ fn the_worksheet_files_are_the_worksheet() {
 #[test]
 fn the_phong_demo_file_is_the_preset() {
     let doc = asset("phong-demo.toml");
-    let preset = presets::phong_demo();
-    let (a, b) = (
-        Engine::<f64>::new(&doc.scene).unwrap().light(&doc.scene.vertex),
-        Engine::<f64>::new(&preset).unwrap().light(&preset.vertex),
-    );
-    for k in 0..4 {
-        assert!((a.front.primary[k] - b.front.primary[k]).abs() < 1e-12);
-    }
-    assert_eq!((doc.scene.rules, doc.scene.material.shininess), (preset.rules, 100.0));
-    assert!(doc.view.auto_rotate);
+    let preset = presets::phong_demo_document();
+    assert_eq!(doc.scene, preset.scene);
+    assert_eq!(doc.view, preset.view);
+    assert_eq!(doc.camera, preset.camera);
+    // The demo's choices, as the program makes them.
+    assert_eq!((doc.scene.rules, doc.scene.material.shininess), (Rules::PHONG_DEMO, 100.0));
+    assert_eq!(doc.scene.material.specular.truncate(), glam::DVec3::new(0.5, 0.0, 0.0), "the highlight is red");
+    assert!(doc.view.auto_rotate && doc.view.demo_normals && !doc.view.phong_renormalize);
+    assert_eq!(doc.view.framing, phonglab_core::Framing::ClipSpace);
+    assert_eq!(doc.view.lighting_space, phonglab_core::LightingSpace::Object);
 }
 
 #[test]

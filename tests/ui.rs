@@ -233,7 +233,21 @@ fn presets_load_the_phong_demo() {
     h.get_by_label("Phong demo").click();
     h.run_steps(2);
     assert_eq!(h.state().doc.scene.rules, phonglab_core::Rules::PHONG_DEMO);
-    h.get_by_label_contains("R = 2 (N . L) N - L");
+    h.get_by_label_contains("R = 2 max(N . L, 0) N - L");
+    // The program as it draws: spinning, in clip space, the light turning with the object.
+    let preset = phonglab_core::presets::phong_demo_document();
+    assert_eq!(h.state().doc.scene, preset.scene);
+    let mut view = h.state().doc.view.clone();
+    assert!(view.auto_rotate && view.spin_degrees > preset.view.spin_degrees, "it opens spinning");
+    view.spin_degrees = preset.view.spin_degrees;
+    assert_eq!(view, preset.view);
+    // On a vertex where N, L and R are clearly apart (V is L: the demo's eye is its light).
+    let lit = Engine::<f64>::light_scene_vertex(&h.state().doc.scene).unwrap();
+    let (n, l, r) = (lit.normal_in_eye, lit.lights()[0].l, lit.lights()[0].r);
+    for (a, b, what) in [(n, l, "N, L"), (n, r, "N, R"), (l, r, "L, R")] {
+        let deg = a.dot(b).clamp(-1.0, 1.0).acos().to_degrees();
+        assert!(deg > 30.0, "{what} are {deg} degrees apart");
+    }
     h.get_by_label("Reset to worksheet").click();
     h.run_steps(1);
     assert_eq!(h.state().doc, phonglab_core::Document::default());
@@ -500,4 +514,35 @@ fn the_heat_map_shows_beside_the_shaded_view() {
     wait_for(&mut h, 60, |s| s.cost.heat.as_ref().is_some_and(|m| m.key.contains("Phong")));
     let phong = h.state().cost.heat.as_ref().unwrap().error;
     assert!(phong.mean <= gouraud.mean && phong.share_over_one <= gouraud.share_over_one, "{phong:?} vs {gouraud:?}");
+}
+
+#[test]
+fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
+    let mut h = harness();
+    h.get_by_label("Presets").click();
+    h.run_steps(2);
+    h.get_by_label("Phong demo").click();
+    h.run_steps(2);
+    // One picture: the demo's own.
+    assert_eq!(h.query_all_by_role(Role::Image).count(), 1);
+    for d in phonglab_core::presets::DemoDeparture::ALL {
+        h.get_by_label(d.fix_label());
+        h.get_by_label(d.why());
+    }
+    h.get_by_label("light fixed in the world").click();
+    h.run_steps(2);
+    assert_eq!(h.state().ui.demo_fixes, [true, false, false]);
+    // Two pictures: the demo's on the left, the corrected one on the right.
+    let images: Vec<egui::Rect> = h.query_all_by_role(Role::Image).map(|n| n.rect()).collect();
+    assert_eq!(images.len(), 2, "{images:?}");
+    assert!(images[0].center().x < images[1].center().x);
+    h.get_by_label("Corrected: light fixed in the world");
+    let corrected = phonglab::app::shaded::corrected_document(&h.state().doc, &h.state().ui.demo_fixes).unwrap();
+    assert_eq!(corrected.view.lighting_space, phonglab_core::LightingSpace::Eye);
+    assert_eq!(h.state().doc.view.lighting_space, phonglab_core::LightingSpace::Object, "the demo's stays");
+    h.get_by_label("highlight in the light's colour").click();
+    h.run_steps(2);
+    let corrected = phonglab::app::shaded::corrected_document(&h.state().doc, &h.state().ui.demo_fixes).unwrap();
+    assert_eq!(corrected.scene.material.specular.truncate(), DVec3::splat(0.5));
+    h.get_by_label("Corrected: light fixed in the world, highlight in the light's colour");
 }

@@ -44,17 +44,9 @@ fuzz_target!(|data: &[u8]| {
         let _ = explain(scene, &lit32, Side::Back);
     }
 
-    let shaded = doc.shaded_scene();
+    let setup = doc.shaded_setup(phonglab_core::PowFn::Exact);
     let mesh = sphere::glu_sphere(0.5, 8, 6);
-    let job = Job {
-        scene: &shaded,
-        mesh: &mesh,
-        clip_from_eye: phonglab_core::view::view_projection(1.0),
-        shading: doc.view.shading,
-        background: [0.0; 3],
-        cull_back: false,
-        options: EvalOptions::default(),
-    };
+    let job = setup.job(&mesh);
     let mut r = Renderer::new();
     let (image, _) = r.render(&job, 24, 24).expect("a valid scene renders");
     assert_eq!(image.rgba.len(), 24 * 24 * 4);

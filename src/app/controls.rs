@@ -211,9 +211,7 @@ fn camera_ui(ui: &mut Ui, doc: &mut Document) {
                     ui.radio_value(i, k, format!("mview{k}"));
                 }
             });
-            if *i != 1 && *i != 5 {
-                ui.small("mview2..4: the worksheet calls them rotations; these are reconstructions (3-4-5 rotations about x, y, z).");
-            }
+            ui.small(worksheet_modelview_note(*i));
         }
         CameraSpec::LookAt { eye, centre, up } => {
             vec3(ui, "Eye", eye, 0.05);
@@ -257,5 +255,17 @@ fn matrix_ui_named(ui: &mut Ui, m: &mut DMat4, name: &str) {
     });
     if changed {
         *m = mat4_from_rows(rows);
+    }
+}
+
+/// One line on the worksheet's modelview `mview{k}`, as its cell `In [4]` prints it.
+pub fn worksheet_modelview_note(k: u8) -> &'static str {
+    match k {
+        1 => "mview1: the openFrameworks camera, translate z by -665.108.",
+        2 => {
+            "mview2: a rotation about x, as printed: its rows are not quite orthonormal (-0.85749), so the worksheet's M n differs from OpenGL's (M^-1)^T n in the 6th digit."
+        }
+        3 | 4 => "mview3/4: rotations built from 15/17 and 8/17, as the worksheet prints them.",
+        _ => "mview5: a 3-4-5 rotation about x and translate z by -960; the worksheet prints its values for this one.",
     }
 }

@@ -6,17 +6,17 @@
 //! worked calculation, with this view's camera and spin, so both panels show one vertex.
 
 use egui::{Color32, ColorImage, Sense, TextureHandle, TextureOptions, Ui};
-use glam::{DMat4, DVec4};
+use glam::DVec4;
 use phonglab_core::mesh::Mesh;
-use phonglab_core::render::{Job, Renderer};
-use phonglab_core::view::view_projection;
-use phonglab_core::{CameraSpec, EvalOptions, LightPlacement, ObjectKind, Shading, Vertex, View};
+use phonglab_core::presets::DemoDeparture;
+use phonglab_core::render::Renderer;
+use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, PowFn, Shading, Vertex, View};
 
 use super::state::{AppState, Message};
 
-/// The renderer, its mesh and its texture, kept between frames.
+/// One picture's renderer, mesh and texture, kept between frames.
 #[derive(Default)]
-pub struct ShadedCache {
+pub struct ViewCache {
     renderer: Renderer,
     mesh: Option<(View, Mesh)>,
     texture: Option<TextureHandle>,
@@ -26,19 +26,61 @@ pub struct ShadedCache {
     pub last_ms: f64,
 }
 
+/// The shaded view's pictures: the document's, and the corrected one beside it when the
+/// Phong demo's departures are being corrected.
+#[derive(Default)]
+pub struct ShadedCache {
+    /// The document's own picture.
+    pub main: ViewCache,
+    /// The corrected picture (the right half of the comparison).
+    pub corrected: ViewCache,
+}
+
+impl ShadedCache {
+    /// The last frame's render time of the main picture, in milliseconds.
+    pub fn last_ms(&self) -> f64 {
+        self.main.last_ms
+    }
+}
+
+impl ViewCache {
+    /// Renders `doc`'s shaded view at `px` pixels square unless the texture already shows it.
+    fn render(&mut self, ctx: &egui::Context, doc: &Document, pow: PowFn, px: usize, name: &str) -> Result<(), String> {
+        let setup = doc.shaded_setup(pow);
+        let key = format!("{:?}|{:?}|{px}|{pow:?}", setup.scene, doc.view);
+        if self.key.as_deref() == Some(key.as_str()) && self.texture.is_some() {
+            return Ok(());
+        }
+        let mesh = mesh_for(&mut self.mesh, &doc.view);
+        let t = std::time::Instant::now();
+        let (img, _) = self.renderer.render(&setup.job(mesh), px, px).map_err(|e| e.to_string())?;
+        self.last_ms = t.elapsed().as_secs_f64() * 1e3;
+        let image = ColorImage::from_rgba_unmultiplied([img.width, img.height], &img.rgba);
+        match &mut self.texture {
+            Some(tex) => tex.set(image, TextureOptions::LINEAR),
+            None => self.texture = Some(ctx.load_texture(name, image, TextureOptions::LINEAR)),
+        }
+        self.key = Some(key);
+        Ok(())
+    }
+}
+
 fn mesh_for<'a>(cache: &'a mut Option<(View, Mesh)>, view: &View) -> &'a Mesh {
     let stale = cache.as_ref().is_none_or(|(v, _)| {
         let mut a = v.clone();
         let mut b = view.clone();
         // Only what changes the geometry matters.
-        a.shading = Shading::Gouraud;
-        b.shading = Shading::Gouraud;
-        a.auto_rotate = false;
-        b.auto_rotate = false;
-        a.spin_degrees = 0.0;
-        b.spin_degrees = 0.0;
-        a.camera = Default::default();
-        b.camera = Default::default();
+        for v in [&mut a, &mut b] {
+            v.shading = Shading::Gouraud;
+            v.auto_rotate = false;
+            v.spin_degrees = 0.0;
+            v.camera = Default::default();
+            v.framing = Default::default();
+            v.lighting_space = Default::default();
+            v.flat_normal = Default::default();
+            v.phong_renormalize = true;
+            v.background = [0.0; 3];
+        }
         a != b
     });
     if stale {
@@ -47,7 +89,54 @@ fn mesh_for<'a>(cache: &'a mut Option<(View, Mesh)>, view: &View) -> &'a Mesh {
     &cache.as_ref().expect("set just above").1
 }
 
-/// The view's controls and the image.
+/// The pipeline's choices where OpenGL and the Phong demo differ, and the demo's
+/// departures as switches: each flipped one is corrected in a second picture beside the
+/// demo's own.
+fn pipeline_ui(ui: &mut Ui, view: &mut View, fixes: &mut [bool; 3], departures: &[DemoDeparture]) {
+    egui::CollapsingHeader::new("Pipeline: OpenGL's or the demo's").id_salt("pipeline").show(ui, |ui| {
+        ui.horizontal_wrapped(|ui| {
+            let l = ui.label("Picture");
+            egui::ComboBox::from_id_salt("framing")
+                .selected_text(view.framing.label())
+                .show_ui(ui, |ui| {
+                    for f in Framing::ALL {
+                        ui.selectable_value(&mut view.framing, f, f.label());
+                    }
+                })
+                .response
+                .labelled_by(l.id);
+            ui.checkbox(&mut view.phong_renormalize, "Phong renormalises N")
+                .on_hover_text("OpenGL shaders normalise the interpolated normal; the demo's does not");
+            let mut derivative = view.flat_normal == FlatNormal::ScreenDerivatives;
+            if ui
+                .checkbox(&mut derivative, "Flat from dFdx/dFdy")
+                .on_hover_text(
+                    "The demo's Flat: each fragment lit with cross(dFdy(p), dFdx(p)); otherwise one colour per face",
+                )
+                .changed()
+            {
+                view.flat_normal = if derivative { FlatNormal::ScreenDerivatives } else { FlatNormal::Face };
+            }
+        });
+    });
+    if departures.is_empty() {
+        return;
+    }
+    egui::CollapsingHeader::new("The demo's departures from OpenGL").id_salt("departures").default_open(true).show(
+        ui,
+        |ui| {
+            ui.small("Flip a switch to see the corrected picture on the right, beside the demo's own on the left.");
+            for (k, d) in DemoDeparture::ALL.into_iter().enumerate() {
+                if departures.contains(&d) {
+                    ui.checkbox(&mut fixes[k], d.fix_label());
+                    ui.small(d.why());
+                }
+            }
+        },
+    );
+}
+
+/// The view's controls and the image (beside it, the corrected picture or the heat map).
 pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
     let mut view = state.doc.view.clone();
     ui.horizontal_wrapped(|ui| {
@@ -83,6 +172,8 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
             }
         }
     });
+    let departures: Vec<DemoDeparture> = DemoDeparture::ALL.into_iter().filter(|d| d.present_in(&state.doc)).collect();
+    pipeline_ui(ui, &mut view, &mut state.ui.demo_fixes, &departures);
     if view != state.doc.view {
         let mut c = state.doc.clone();
         c.view = view;
@@ -93,52 +184,38 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
         state.doc.view.spin_degrees = (state.doc.view.spin_degrees + 0.5).rem_euclid(360.0);
         ui.ctx().request_repaint();
     }
+    // The corrected document, when a departure the document makes is switched off.
+    let corrected = corrected_document(&state.doc, &state.ui.demo_fixes);
 
     let avail = ui.available_size();
     let heat = state.cost.heat_map;
-    // Leave room for the caption line above the image (and the heat map beside it).
-    let width = if heat { (avail.x - 8.0) / 2.0 } else { avail.x };
+    let beside = heat || corrected.is_some();
+    // Leave room for the caption line above the image (and the picture beside it).
+    let width = if beside { (avail.x - 8.0) / 2.0 } else { avail.x };
     let side = width.min(avail.y - 2.0 * ui.text_style_height(&egui::TextStyle::Small) - 8.0).max(64.0);
     let ppp = ui.ctx().pixels_per_point();
     let px = ((side * ppp) as usize).clamp(64, 1024);
     let camera = state.doc.view.camera;
+    if let Err(e) = cache.main.render(ui.ctx(), &state.doc, state.ui.pow, px, "shaded view") {
+        state.message = Some(Message::Refused(format!("The shaded view cannot render this scene: {e}")));
+    }
+    if let Some(c) = &corrected
+        && let Err(e) = cache.corrected.render(ui.ctx(), c, state.ui.pow, px, "corrected view")
+    {
+        state.message = Some(Message::Refused(format!("The corrected view cannot render: {e}")));
+    }
     let scene = state.doc.shaded_scene();
-    let job_key = format!("{:?}|{:?}|{px}|{:?}", scene, state.doc.view, state.ui.pow);
-    let mesh = mesh_for(&mut cache.mesh, &state.doc.view);
-    if cache.key.as_deref() != Some(job_key.as_str()) || cache.texture.is_none() {
-        let job = Job {
-            scene: &scene,
-            mesh,
-            clip_from_eye: view_projection(1.0),
-            shading: state.doc.view.shading,
-            background: [0.1, 0.1, 0.15],
-            cull_back: false,
-            options: EvalOptions::with_pow(state.ui.pow),
-        };
-        let t = std::time::Instant::now();
-        match cache.renderer.render(&job, px, px) {
-            Ok((img, _)) => {
-                cache.last_ms = t.elapsed().as_secs_f64() * 1e3;
-                let image = ColorImage::from_rgba_unmultiplied([img.width, img.height], &img.rgba);
-                match &mut cache.texture {
-                    Some(tex) => tex.set(image, TextureOptions::LINEAR),
-                    None => cache.texture = Some(ui.ctx().load_texture("shaded view", image, TextureOptions::LINEAR)),
-                }
-                cache.key = Some(job_key);
-            }
-            Err(e) => state.message = Some(Message::Refused(format!("The shaded view cannot render this scene: {e}"))),
-        }
-    }
     if heat {
-        state.cost.want_heat_map(&scene, &state.doc.view, EvalOptions::with_pow(state.ui.pow));
+        state.cost.want_heat_map(&scene, &state.doc.view, state.doc.view.eval_options(state.ui.pow));
     }
-    let Some(tex) = &cache.texture else { return };
+    let Some(tex) = &cache.main.texture else { return };
     let size = egui::vec2(side, side);
     let caption = format!(
-        "{} {}: {} ms per frame",
+        "{} {}: {} ms per frame{}",
         state.doc.view.object.label(),
         state.doc.view.shading.label(),
-        fmt_ms(cache.last_ms)
+        fmt_ms(cache.main.last_ms),
+        if corrected.is_some() { " (the demo's own)" } else { "" }
     );
     let resp = ui
         .horizontal_top(|ui| {
@@ -152,23 +229,33 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
                         .labelled_by(label.id)
                 })
                 .inner;
-            if heat {
+            if let (Some(c), Some(tex)) = (&corrected, &cache.corrected.texture) {
+                ui.vertical(|ui| {
+                    let fixed: Vec<&str> = DemoDeparture::ALL
+                        .into_iter()
+                        .zip(state.ui.demo_fixes)
+                        .filter(|(d, on)| *on && d.present_in(&state.doc))
+                        .map(|(d, _)| d.fix_label())
+                        .collect();
+                    let label = ui.small(format!("Corrected: {}", fixed.join(", ")));
+                    ui.add(egui::Image::new((tex.id(), size))).labelled_by(label.id);
+                    let _ = c;
+                });
+            } else if heat {
                 super::cost::heat_map_ui(ui, state, side);
             }
             resp
         })
         .inner;
 
-    // The light(s), as markers.
-    let clip_from_world = view_projection(1.0) * camera.eye_from_world();
+    // The light(s), as markers: each light's position in object space, drawn where the
+    // view draws the object.
+    let clip_from_object = state.doc.view.clip_from_object();
+    let object_from_eye = scene.eye_from_object().inverse();
     for (i, l) in state.doc.scene.lights.iter().enumerate() {
-        let world = match &l.placement {
-            LightPlacement::Eye => camera.eye_from_world().inverse() * l.position,
-            LightPlacement::Object => DMat4::from_rotation_y(state.doc.view.spin_degrees.to_radians()) * l.position,
-            _ => l.position,
-        };
+        let world = object_from_eye * scene.light_pos_in_eye(l);
         let p = if world.w == 0.0 { (world.truncate().normalize_or_zero() * 1.2).extend(1.0) } else { world / world.w };
-        let c = clip_from_world * DVec4::new(p.x, p.y, p.z, 1.0);
+        let c = clip_from_object * DVec4::new(p.x, p.y, p.z, 1.0);
         if c.w <= 0.0 {
             continue;
         }
@@ -187,12 +274,12 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
     }
 
     let mut cam = camera;
-    if resp.dragged() {
+    if resp.dragged() && state.doc.view.framing == Framing::Orbit {
         let d = resp.drag_delta();
         cam.yaw = (cam.yaw + d.x as f64 * 0.5).rem_euclid(360.0);
         cam.pitch = (cam.pitch + d.y as f64 * 0.5).clamp(-89.0, 89.0);
     }
-    if resp.hovered() {
+    if resp.hovered() && state.doc.view.framing == Framing::Orbit {
         let scroll = ui.input(|i| i.smooth_scroll_delta.y);
         if scroll != 0.0 {
             cam.distance = (cam.distance * (-scroll as f64 * 0.002).exp()).clamp(0.6, 20.0);
@@ -208,20 +295,31 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
     {
         let rel = (p - resp.rect.min) / size;
         let (x, y) = ((rel.x * px as f32) as usize, (rel.y * px as f32) as usize);
-        let mesh = mesh_for(&mut cache.mesh, &state.doc.view);
-        if let Some(i) = cache.renderer.pick(mesh, x, y) {
-            let mut c = state.doc.clone();
-            c.scene.vertex = Vertex::from_f32(mesh.positions[i], mesh.normals[i]);
-            c.camera = CameraSpec::Matrix(camera.eye_from_world());
-            c.scene.world_from_object = DMat4::from_rotation_y(state.doc.view.spin_degrees.to_radians());
+        let mesh = mesh_for(&mut cache.main.mesh, &state.doc.view);
+        if let Some(i) = cache.main.renderer.pick(mesh, x, y) {
+            let c = state.doc.with_vertex_as_shaded(Vertex::from_f32(mesh.positions[i], mesh.normals[i]));
             if state.apply(c) {
                 state.message = Some(Message::Info(format!(
-                    "Vertex {i} of the {}: the worked calculation now uses it, with the shaded view's camera.",
+                    "Vertex {i} of the {}: the worked calculation now uses it, as the shaded view lights it.",
                     state.doc.view.object.label().to_lowercase()
                 )));
             }
         }
     }
+}
+
+/// `doc` with each departure switched on in `fixes` (and present in `doc`) corrected, or
+/// `None` when there is nothing to correct.
+pub fn corrected_document(doc: &Document, fixes: &[bool; 3]) -> Option<Document> {
+    let mut c = doc.clone();
+    let mut any = false;
+    for (d, on) in DemoDeparture::ALL.into_iter().zip(fixes) {
+        if *on && d.present_in(doc) {
+            d.correct(&mut c);
+            any = true;
+        }
+    }
+    any.then_some(c)
 }
 
 fn fmt_ms(ms: f64) -> String {

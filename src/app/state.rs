@@ -7,7 +7,7 @@
 use glam::DVec3;
 use phonglab_core::breakdown::VertexLighting;
 use phonglab_core::explain::{Explanation, Side, explain};
-use phonglab_core::{CameraSpec, Document, Engine, EvalOptions, Limit, PowFn, Real, SceneError, Vec3Ops, presets};
+use phonglab_core::{Document, Engine, EvalOptions, Limit, PowFn, Real, SceneError, Vec3Ops, presets};
 
 /// Engine precision shown in the app.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -67,6 +67,9 @@ pub struct UiState {
     pub clamp: bool,
     /// The scene file path typed for Open and Save.
     pub file_path: String,
+    /// Which of the Phong demo's departures the corrected picture corrects, in the order
+    /// of [`phonglab_core::presets::DemoDeparture::ALL`].
+    pub demo_fixes: [bool; 3],
 }
 
 impl Default for UiState {
@@ -80,6 +83,7 @@ impl Default for UiState {
             pow: PowFn::Exact,
             clamp: true,
             file_path: "scene.toml".into(),
+            demo_fixes: [false; 3],
         }
     }
 }
@@ -247,23 +251,9 @@ impl AppState {
 }
 
 /// The ready-made scenes of the Presets menu.
+/// The built-in documents: [`presets::documents`] (kept in the core, so the CLI needs no app).
 pub fn preset_documents() -> Vec<(String, Document)> {
-    let mut v: Vec<(String, Document)> = (1..=5u8)
-        .map(|k| {
-            let name = format!("Worksheet, mview{k}");
-            (name.clone(), Document::from_scene(&name, CameraSpec::Worksheet(k), presets::worksheet(k as usize)))
-        })
-        .collect();
-    let demo = presets::phong_demo();
-    v.push((
-        "Phong demo".into(),
-        Document::from_scene(
-            "the Phong demo",
-            CameraSpec::LookAt { eye: presets::PHONG_DEMO_EYE, centre: DVec3::ZERO, up: DVec3::Y },
-            demo,
-        ),
-    ));
-    v
+    presets::documents()
 }
 
 #[cfg(test)]
@@ -292,7 +282,7 @@ mod tests {
     fn the_camera_decides_the_view_matrix() {
         let mut s = AppState::worksheet();
         let mut c = s.doc.clone();
-        c.camera = CameraSpec::Worksheet(1);
+        c.camera = phonglab_core::CameraSpec::Worksheet(1);
         assert!(s.apply(c));
         assert_eq!(s.doc.scene.eye_from_world, phonglab_core::transform::worksheet_modelview(1).unwrap());
     }

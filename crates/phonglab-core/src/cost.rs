@@ -36,8 +36,8 @@ pub struct Setup<'a> {
     pub scene: &'a Scene,
     /// The object (its kind, demo normals and cylinder caps; the tessellation is varied).
     pub view: &'a View,
-    /// Eye to clip space.
-    pub clip_from_eye: DMat4,
+    /// Object to clip space.
+    pub clip_from_object: DMat4,
     /// Width and height of the images, in pixels.
     pub size: usize,
     /// Colour of uncovered pixels.
@@ -45,10 +45,10 @@ pub struct Setup<'a> {
 }
 
 impl<'a> Setup<'a> {
-    /// The shaded view's setup: `scene` as [`crate::Document::shaded_scene`] gives it, the
-    /// view's projection ([`crate::view::view_projection`]), `size` pixels square.
+    /// The shaded view's setup: `scene` as [`crate::Document::shaded_scene`] gives it, drawn
+    /// where the view draws it ([`View::clip_from_object`]), `size` pixels square.
     pub fn shaded_view(scene: &'a Scene, view: &'a View, size: usize, background: [f32; 3]) -> Self {
-        Setup { scene, view, clip_from_eye: crate::view::view_projection(1.0), size, background }
+        Setup { scene, view, clip_from_object: view.clip_from_object(), size, background }
     }
 
     /// What the renderer draws for `mesh` in this setup (no culling, as the study compares
@@ -60,8 +60,9 @@ impl<'a> Setup<'a> {
         Job {
             scene: self.scene,
             mesh,
-            clip_from_eye: self.clip_from_eye,
+            clip_from_object: self.clip_from_object,
             shading,
+            flat_normal: self.view.flat_normal,
             background: self.background,
             cull_back: false,
             options,

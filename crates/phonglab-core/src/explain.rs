@@ -203,14 +203,35 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
 
     let n = lit.normal_in_eye;
     let n_shown = if back { -n } else { n };
-    let nformula = match scene.normal_mode {
-        crate::NormalMode::AsIs => "N = (M^-1)^T n_obj",
-        crate::NormalMode::Normalize => "N = normalize((M^-1)^T n_obj)   (GL_NORMALIZE)",
-        crate::NormalMode::Rescale => "N = f (M^-1)^T n_obj, f = 1/|row 3 of M^-1|   (GL_RESCALE_NORMAL)",
+    let by_m = rules.normal_transform() == crate::NormalTransform::Modelview;
+    let nformula = match (scene.normal_mode, by_m) {
+        (crate::NormalMode::AsIs, false) => "N = (M^-1)^T n_obj",
+        (crate::NormalMode::Normalize, false) => "N = normalize((M^-1)^T n_obj)   (GL_NORMALIZE)",
+        (crate::NormalMode::Rescale, false) => "N = f (M^-1)^T n_obj, f = 1/|row 3 of M^-1|   (GL_RESCALE_NORMAL)",
+        (crate::NormalMode::AsIs, true) => "N = M n_obj   (the worksheet: M itself, not (M^-1)^T)",
+        (crate::NormalMode::Normalize, true) => "N = normalize(M n_obj)   (the worksheet: M itself, not (M^-1)^T)",
+        (crate::NormalMode::Rescale, true) => "N = f M n_obj, f = 1/|row 3 of M^-1|   (the worksheet's M)",
     };
     let ntitle = if back { "Transformed normal (back side: -N)" } else { "Transformed normal" };
     b.push(StepKind::Normal, None, ntitle, "vertexNormal".into(), nformula, Some(dir4::<S>(n_shown)));
     vertex_limits(&mut b, StepKind::Normal);
+    if by_m {
+        // Where the worksheet's M n and OpenGL's (M^-1)^T n part: compare the directions.
+        let m = scene.eye_from_object();
+        let gl = crate::transform::NormalMatrix::new(&m).eye_from_object * scene.vertex.normal;
+        let ws = glam::DMat3::from_mat4(m) * scene.vertex.normal;
+        if let (Some(gl), Some(ws)) = (gl.try_normalize(), ws.try_normalize()) {
+            let gap = (gl - ws).abs().max_element();
+            if gap > 1e-12 {
+                let g = [gl.x, gl.y, gl.z, 0.0];
+                b.note(format!(
+                    "OpenGL's (M^-1)^T n points along {} here ({} off): M's rows are not quite orthonormal",
+                    fmt_value(&g, 8),
+                    fmt_sig(gap, 2)
+                ));
+            }
+        }
+    }
 
     let p = lit.pos_in_eye;
     b.push(
@@ -225,12 +246,19 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
 
     let vformula = if scene.light_model.local_viewer {
         "V = normalize(-P)   (local viewer)"
+    } else if rules.viewer_from_eye_plane() {
+        "V = normalize(obs - P), obs = P (1, 1, 0, 1)   (the worksheet's infinite viewer: (0, 0, -sign(P.z)))"
     } else {
         "V = (0, 0, 1)   (infinite viewer)"
     };
     let push_v = |b: &mut Builder| {
         b.push(StepKind::V, None, "View vector", "vov".into(), vformula, Some(dir4::<S>(lit.v)));
         vertex_limits(b, StepKind::V);
+        if rules.viewer_from_eye_plane() && !scene.light_model.local_viewer && lit.pos_in_eye.z > 0.0 {
+            b.note(
+                "the worksheet's text says vov is always [0 0 1 0]; its code gives [0 0 -1 0] here, as the vertex is behind the eye (z > 0)",
+            );
+        }
     };
     if lit.lights().is_empty() {
         push_v(&mut b);
@@ -310,7 +338,11 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
                     i,
                     "Reflection vector",
                     format!("rv{sfx}"),
-                    "R = 2 (N . L) N - L",
+                    if rules.reflect_clamped() {
+                        "R = 2 max(N . L, 0) N - L   (the demo's)"
+                    } else {
+                        "R = 2 (N . L) N - L"
+                    },
                     Some(dir4::<S>(t.r)),
                 );
                 b.push(

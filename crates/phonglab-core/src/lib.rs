@@ -42,6 +42,6 @@ pub use error::SceneError;
 pub use lighting::{Engine, EvalOptions, Renormalize};
 pub use pow::PowFn;
 pub use real::{Real, Vec3Ops};
-pub use rules::{RuleSet, Rules, SpecularGate, SpecularModel};
+pub use rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel};
 pub use scene::{Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Rgba, Scene, Vertex};
-pub use view::{ObjectKind, Shading, View, ViewCamera};
+pub use view::{FlatNormal, Framing, LightingSpace, ObjectKind, ShadedSetup, Shading, View, ViewCamera};

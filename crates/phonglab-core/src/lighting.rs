@@ -225,7 +225,7 @@ impl<S: Real> Engine<S> {
     pub fn with_options(scene: &Scene, options: EvalOptions) -> Result<Self, SceneError> {
         scene.validate()?;
         let eye_from_object = scene.eye_from_object();
-        let nm = NormalMatrix::new(&eye_from_object);
+        let nm = NormalMatrix::for_rules(&eye_from_object, scene.rules);
         Ok(Self {
             options,
             rules: scene.rules,
@@ -290,7 +290,7 @@ impl<S: Real> Engine<S> {
         out.normal_in_eye = n;
 
         // V: towards the viewer.
-        let v = terms::view_vector::<S>(self.local_viewer, pos);
+        let v = terms::view_vector::<S>(self.local_viewer, self.rules.viewer_from_eye_plane(), pos);
         if v.is_none() {
             out.limits.insert(Limit::VertexAtEye);
         }
@@ -392,7 +392,7 @@ impl<S: Real> Engine<S> {
             }
             _ => None,
         };
-        let r = lit.map(|l| terms::reflect::<S>(n, l));
+        let r = lit.map(|l| terms::reflect::<S>(n, l, self.rules.reflect_clamped()));
 
         let side_terms = |side: usize| -> SideTerms<S> {
             let n_side = if side == 0 { n } else { -n };
@@ -463,11 +463,19 @@ pub(crate) mod terms {
         n == S::V3::ZERO || !n.max_abs().is_finite()
     }
 
-    /// V: `normalize(-P)` for a local viewer (`None` at the eye), else (0, 0, 1).
+    /// V: `normalize(-P)` for a local viewer (`None` at the eye), else (0, 0, 1); with
+    /// `eye_plane` (the worksheet's code) the infinite viewer is `normalize(obs - P)`,
+    /// `obs = P * (1, 1, 0, 1)`: (0, 0, -sign(P.z)), `None` on the plane z = 0 (0/0 there).
     #[inline(always)]
-    pub fn view_vector<S: Real>(local: bool, pos: DVec3) -> Option<S::V3> {
+    pub fn view_vector<S: Real>(local: bool, eye_plane: bool, pos: DVec3) -> Option<S::V3> {
         if local {
             try_normalize::<f64>(-pos).map(S::V3::from_dvec3)
+        } else if eye_plane {
+            match pos.z.partial_cmp(&0.0) {
+                Some(std::cmp::Ordering::Less) => Some(S::V3::new(S::ZERO, S::ZERO, S::ONE)),
+                Some(std::cmp::Ordering::Greater) => Some(S::V3::new(S::ZERO, S::ZERO, -S::ONE)),
+                _ => None,
+            }
         } else {
             Some(S::V3::new(S::ZERO, S::ZERO, S::ONE))
         }
@@ -524,10 +532,11 @@ pub(crate) mod terms {
         try_normalize::<S>(l + v)
     }
 
-    /// R = 2 (n . L) n - L.
+    /// R = 2 (n . L) n - L; with `clamped` (the Phong demo's shaders) 2 max(n . L, 0) n - L.
     #[inline(always)]
-    pub fn reflect<S: Real>(n: S::V3, l: S::V3) -> S::V3 {
-        n * (S::from_f64(2.0) * n.dot(l)) - l
+    pub fn reflect<S: Real>(n: S::V3, l: S::V3, clamped: bool) -> S::V3 {
+        let c = n.dot(l);
+        n * (S::from_f64(2.0) * if clamped { c.max(S::ZERO) } else { c }) - l
     }
 
     /// What the specular term needs besides n and L.

@@ -34,8 +34,11 @@ pub struct LightKey {
 pub struct Key {
     /// Per enabled light.
     pub lights: Vec<LightKey>,
-    /// V varies per vertex.
+    /// A local viewer: V = normalize(-P).
     pub local_viewer: bool,
+    /// V varies per vertex: a local viewer, or the worksheet's infinite viewer
+    /// (0, 0, -sign(P.z)).
+    pub per_vertex_view: bool,
     /// Back colours are computed too.
     pub two_sided: bool,
     /// Specular goes to the secondary colour.
@@ -85,6 +88,7 @@ impl Key {
                 })
                 .collect(),
             local_viewer: scene.light_model.local_viewer,
+            per_vertex_view: scene.light_model.local_viewer || rules.viewer_from_eye_plane(),
             two_sided: scene.light_model.two_sided,
             separate_specular: scene.light_model.separate_specular,
             normals: scene.normal_mode,
@@ -100,7 +104,7 @@ impl Key {
     pub fn per_vertex_halfway(&self, i: usize) -> bool {
         let l = &self.lights[i];
         match self.rules.specular {
-            SpecularModel::BlinnPhong => l.positional || self.local_viewer,
+            SpecularModel::BlinnPhong => l.positional || self.per_vertex_view,
             SpecularModel::Phong => true,
         }
     }
@@ -163,6 +167,13 @@ impl Key {
             },
             if self.local_viewer {
                 e(None, "view vector V", true, "local viewer: V = normalize(-P) per vertex")
+            } else if self.per_vertex_view {
+                e(
+                    None,
+                    "view vector V",
+                    true,
+                    "the worksheet's V = normalize(obs - P), obs = P (1, 1, 0, 1): (0, 0, -sign(P.z)) per vertex",
+                )
             } else {
                 e(None, "view vector V", false, "infinite viewer: V = (0, 0, 1) for every vertex")
             },

@@ -67,6 +67,16 @@ pub enum SpecularGate {
     None,
 }
 
+/// How a normal reaches eye space.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum NormalTransform {
+    /// OpenGL's: by the inverse transpose of the modelview's 3x3, `(M^-1)^T n`.
+    InverseTranspose,
+    /// The worksheet's: by the modelview itself, `M n` (the same for a rotation; not for a
+    /// matrix whose rows are not orthonormal, such as the worksheet's printed `mview2`).
+    Modelview,
+}
+
 /// The rule set and the specular model: everything that selects the equation's form.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub struct Rules {
@@ -92,6 +102,35 @@ impl Rules {
     /// Does the material's emission `e_cm` enter the sum?
     pub fn emission(self) -> bool {
         self.set == RuleSet::OpenGl
+    }
+
+    /// How normals are transformed to eye space.
+    pub fn normal_transform(self) -> NormalTransform {
+        match self.set {
+            RuleSet::Worksheet => NormalTransform::Modelview,
+            RuleSet::OpenGl | RuleSet::PhongDemo => NormalTransform::InverseTranspose,
+        }
+    }
+
+    /// Is the reflection vector formed with `max(N . L, 0)`, as the Phong demo's shaders
+    /// write it (`R = 2 max(N.L, 0) N - L`), rather than with `N . L`?
+    pub fn reflect_clamped(self) -> bool {
+        self.set == RuleSet::PhongDemo
+    }
+
+    /// Does the infinite viewer follow the worksheet's code, `V = normalize(obs - P)` with
+    /// `obs = P * (1, 1, 0, 1)`, i.e. `(0, 0, -sign(P.z))`? OpenGL's is (0, 0, 1) always; the
+    /// worksheet's turns to (0, 0, -1) for a vertex behind the eye plane (z > 0, as under
+    /// its mview2 and mview4).
+    pub fn viewer_from_eye_plane(self) -> bool {
+        self.set == RuleSet::Worksheet
+    }
+
+    /// Are vertex colours clamped to [0, 1] before they are interpolated? OpenGL's
+    /// fixed-function pipeline clamps them; the Phong demo's colour is a shader varying,
+    /// interpolated as it is (only the framebuffer clamps).
+    pub fn clamps_vertex_colors(self) -> bool {
+        self.set != RuleSet::PhongDemo
     }
 
     /// When the specular term is allowed.

@@ -459,7 +459,7 @@ impl Lighter {
 
     /// Positions matter only to positional lights and a local viewer.
     fn needs_positions(&self) -> bool {
-        self.key.local_viewer || self.key.lights.iter().any(|l| l.positional)
+        self.key.per_vertex_view || self.key.lights.iter().any(|l| l.positional)
     }
 
     /// How many times a plan has been built (1 after [`Lighter::new`]).
@@ -682,9 +682,10 @@ impl Lighter {
         for i in 0..n {
             c.zero[i] = terms::is_zero_normal::<f32>(c.nrm(i));
         }
-        if self.key.local_viewer {
+        if self.key.per_vertex_view {
+            let (local, plane) = (self.key.local_viewer, e.rules.viewer_from_eye_plane());
             for i in 0..n {
-                c.v[i] = terms::view_vector::<f32>(true, c.pos[i]);
+                c.v[i] = terms::view_vector::<f32>(local, plane, c.pos[i]);
             }
         }
         // Only the sums that will be read: per side, the primary, and the secondary with
@@ -744,7 +745,7 @@ impl Lighter {
     #[inline(always)]
     fn directional(&self, c: &mut Chunk, pl: &PreparedLight<f32>, k: &LightConsts) {
         let blinn = self.engine.rules.specular == SpecularModel::BlinnPhong;
-        let per_vertex_h = blinn && self.key.local_viewer;
+        let per_vertex_h = blinn && self.key.per_vertex_view;
         // The hot path: constant L and H, Blinn-Phong, one side, no separate specular.
         if !per_vertex_h && blinn && !self.key.two_sided && self.fast_path_ok() {
             self.directional_fast(c, pl, k);
@@ -753,14 +754,14 @@ impl Lighter {
         for i in 0..c.len() {
             let lit = k.l.filter(|_| !c.zero[i]);
             let h = if per_vertex_h {
-                k.l.zip(c.view(i, self.key.local_viewer)).and_then(|(l, v)| terms::halfway::<f32>(l, v))
+                k.l.zip(c.view(i, self.key.per_vertex_view)).and_then(|(l, v)| terms::halfway::<f32>(l, v))
             } else if blinn {
                 k.h
             } else {
                 None
             };
-            let r = lit.map(|l| terms::reflect::<f32>(c.nrm(i), l));
-            let spec = self.spec_inputs(h, r, c.view(i, self.key.local_viewer));
+            let r = lit.map(|l| terms::reflect::<f32>(c.nrm(i), l, self.engine.rules.reflect_clamped()));
+            let spec = self.spec_inputs(h, r, c.view(i, self.key.per_vertex_view));
             self.accumulate(c, i, pl, lit, &spec, k.scale);
         }
     }
@@ -809,7 +810,7 @@ impl Lighter {
             && self.fast_path_ok()
             && let LightPos::Positional(lp) = pl.pos
         {
-            let lv = self.key.local_viewer;
+            let lv = self.key.per_vertex_view;
             match e.options.pow {
                 crate::PowFn::Exact => positional_fast(c, pl, lp, e, lv, crate::pow::pow_f32),
                 crate::PowFn::Llvmpipe => positional_fast(c, pl, lp, e, lv, |x, y| crate::PowFn::Llvmpipe.pow(x, y)),
@@ -830,12 +831,12 @@ impl Lighter {
             let l = l64.map(Vec3::from_dvec3);
             let lit = l.filter(|_| !c.zero[i]);
             let h = if blinn {
-                l.zip(c.view(i, self.key.local_viewer)).and_then(|(l, v)| terms::halfway::<f32>(l, v))
+                l.zip(c.view(i, self.key.per_vertex_view)).and_then(|(l, v)| terms::halfway::<f32>(l, v))
             } else {
                 None
             };
-            let r = lit.map(|l| terms::reflect::<f32>(c.nrm(i), l));
-            let spec = self.spec_inputs(h, r, c.view(i, self.key.local_viewer));
+            let r = lit.map(|l| terms::reflect::<f32>(c.nrm(i), l, self.engine.rules.reflect_clamped()));
+            let spec = self.spec_inputs(h, r, c.view(i, self.key.per_vertex_view));
             self.accumulate(c, i, pl, lit, &spec, scale);
         }
     }

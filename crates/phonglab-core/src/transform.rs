@@ -48,19 +48,33 @@ pub fn of_default_camera(_width: f64, height: f64) -> DMat4 {
     DMat4::from_translation(DVec3::new(0.0, 0.0, -of_camera_distance(height)))
 }
 
-/// The worksheet's modelviews, `mview1` to `mview5` (index 1..=5).
+/// The worksheet's modelviews, `mview1` to `mview5` (index 1..=5), exactly as its cell
+/// `In [4]` prints them (rows):
 ///
-/// `mview1` (translate z by -665.108, the openFrameworks camera rounded as the worksheet
-/// prints it) and `mview5` are the worksheet's own. The worksheet describes `mview2..4`
-/// only as rotations; their entries did not reach this project, so these are
-/// reconstructions: the same 3-4-5 rotation (cos 0.8, sin 0.6, 36.87 degrees) that
-/// `mview5` uses, about x, y and z in turn.
+/// - `mview1`: translate z by -665.108, the openFrameworks camera for a 768-high window;
+/// - `mview2`: a rotation about x by about 59 degrees (rows (0, 0.514496, 0.857493) and
+///   (0, -0.85749, 0.514496): the second is printed with one digit less, so the rows are
+///   not quite orthonormal and the worksheet's normal differs from OpenGL's in the 6th digit);
+/// - `mview3`, `mview4`: rotations built from 15/17 and 8/17 (0.882353, 0.470588);
+/// - `mview5`: a 3-4-5 rotation about x (cos 0.8, sin 0.6) and translate z by -960.
 pub fn worksheet_modelview(index: usize) -> Option<DMat4> {
     let rows = match index {
         1 => [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, -665.108], [0.0, 0.0, 0.0, 1.0]],
-        2 => [[1.0, 0.0, 0.0, 0.0], [0.0, 0.8, -0.6, 0.0], [0.0, 0.6, 0.8, 0.0], [0.0, 0.0, 0.0, 1.0]],
-        3 => [[0.8, 0.0, 0.6, 0.0], [0.0, 1.0, 0.0, 0.0], [-0.6, 0.0, 0.8, 0.0], [0.0, 0.0, 0.0, 1.0]],
-        4 => [[0.8, -0.6, 0.0, 0.0], [0.6, 0.8, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]],
+        2 => {
+            [[1.0, 0.0, 0.0, 0.0], [0.0, 0.514496, 0.857493, 0.0], [0.0, -0.85749, 0.514496, 0.0], [0.0, 0.0, 0.0, 1.0]]
+        }
+        3 => [
+            [0.882353, 0.470588, 0.0, 0.0],
+            [-0.220182, 0.412842, 0.882353, 0.0],
+            [0.470588, -0.220182, 0.882353, 0.0],
+            [0.0, 0.0, 0.0, 1.0],
+        ],
+        4 => [
+            [0.882353, -0.470588, 0.0, 0.0],
+            [0.220182, 0.412842, 0.882353, 0.0],
+            [-0.470588, 0.220182, 0.882353, 0.0],
+            [0.0, 0.0, 0.0, 1.0],
+        ],
         5 => [[1.0, 0.0, 0.0, 0.0], [0.0, 0.8, 0.6, 0.0], [0.0, -0.6, 0.8, -960.0], [0.0, 0.0, 0.0, 1.0]],
         _ => return None,
     };
@@ -82,6 +96,18 @@ pub struct NormalMatrix {
 }
 
 impl NormalMatrix {
+    /// The normal matrix a rule set uses: OpenGL's inverse transpose, or (the worksheet)
+    /// the modelview's 3x3 itself. `rescale` and `orthonormal` describe `M` either way.
+    pub fn for_rules(eye_from_object: &DMat4, rules: crate::rules::Rules) -> Self {
+        let nm = Self::new(eye_from_object);
+        match rules.normal_transform() {
+            crate::rules::NormalTransform::InverseTranspose => nm,
+            crate::rules::NormalTransform::Modelview => {
+                Self { eye_from_object: DMat3::from_mat4(*eye_from_object), singular: false, ..nm }
+            }
+        }
+    }
+
     /// Computes the normal matrix of `eye_from_object` (the modelview) in f64.
     pub fn new(eye_from_object: &DMat4) -> Self {
         let m = DMat3::from_mat4(*eye_from_object);

@@ -58,6 +58,67 @@ impl Shading {
     }
 }
 
+/// Where the shaded view's picture comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Framing {
+    /// The orbit camera ([`ViewCamera`]) and `gluPerspective(40, 1, 0.1, 100)`.
+    #[default]
+    Orbit,
+    /// The Phong demo's: no projection at all (`gl_Position = mvMatrix * p`), so the picture
+    /// is clip space itself: x to the right, y up, and the nearer fragment has the smaller
+    /// z (depth test LESS), as if seen from z = -infinity.
+    ClipSpace,
+}
+
+impl Framing {
+    /// Both, in menu order.
+    pub const ALL: [Framing; 2] = [Framing::Orbit, Framing::ClipSpace];
+
+    /// A name for menus.
+    pub fn label(self) -> &'static str {
+        match self {
+            Framing::Orbit => "Orbit camera",
+            Framing::ClipSpace => "Clip space (the demo's)",
+        }
+    }
+}
+
+/// Which coordinates the shaded view lights the object in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum LightingSpace {
+    /// OpenGL's: eye space after the whole modelview, the object's spin included, with each
+    /// light placed as its placement says (a light placed in the world stays put while the
+    /// object turns).
+    #[default]
+    Eye,
+    /// The Phong demo's: positions and normals are not transformed by the spin; the object
+    /// is lit in its own coordinates (the scene's modelview only), so the light turns with
+    /// the object.
+    Object,
+}
+
+/// How Flat shading finds a fragment's normal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FlatNormal {
+    /// One colour per face: lit once, at its centroid, with its geometric normal.
+    #[default]
+    Face,
+    /// The Phong demo's: lit per fragment with `normalize(cross(dFdy(p), dFdx(p)))` of the
+    /// interpolated position: the face's plane normal, turned by the triangle's winding on
+    /// the screen (towards a viewer at -z in clip space, away from an ordinary camera).
+    ScreenDerivatives,
+}
+
+/// The Phong demo's spin after `degrees` (0.5 a frame): its `mvMatrix` is
+/// `rotY(0.5 deg)^frame` in NumPy's row-major layout, uploaded with transpose `GL_FALSE`,
+/// so the shader applies its transpose: a turn by `-degrees` about y.
+pub fn demo_spin(degrees: f64) -> glam::DMat4 {
+    glam::DMat4::from_rotation_y(-degrees.to_radians())
+}
+
 /// The shaded view's orbit camera: it looks at the origin from `distance` away, turned by
 /// `yaw` about y and `pitch` about x (degrees).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -127,6 +188,18 @@ pub struct View {
     pub spin_degrees: f64,
     /// The orbit camera.
     pub camera: ViewCamera,
+    /// Orbit camera, or the demo's clip space.
+    pub framing: Framing,
+    /// Eye space (OpenGL) or object space (the demo: the light turns with the object).
+    pub lighting_space: LightingSpace,
+    /// Flat shading's normal.
+    pub flat_normal: FlatNormal,
+    /// Phong shading renormalises its interpolated normal (the demo's shader does not).
+    pub phong_renormalize: bool,
+    /// Move gluCylinder (z from 0 to 0.5) to be centred on the origin (the demo does not).
+    pub cylinder_centered: bool,
+    /// The colour of uncovered pixels (the demo: black).
+    pub background: [f32; 3],
 }
 
 impl Default for View {
@@ -144,6 +217,12 @@ impl Default for View {
             auto_rotate: false,
             spin_degrees: 0.0,
             camera: ViewCamera::default(),
+            framing: Framing::Orbit,
+            lighting_space: LightingSpace::Eye,
+            flat_normal: FlatNormal::Face,
+            phong_renormalize: true,
+            cylinder_centered: true,
+            background: [0.1, 0.1, 0.15],
         }
     }
 }
@@ -164,9 +243,11 @@ impl View {
                     self.cylinder_stacks,
                     self.cylinder_caps,
                 );
-                // gluCylinder runs from z = 0 to z = h; centre it, as the demo's view does.
-                for p in &mut c.positions {
-                    p.z -= 0.25;
+                // gluCylinder runs from z = 0 to z = h; centred unless drawn as the demo does.
+                if self.cylinder_centered {
+                    for p in &mut c.positions {
+                        p.z -= 0.25;
+                    }
                 }
                 c
             }
@@ -188,6 +269,9 @@ impl View {
         check("teapot_grid", self.teapot_grid, &GRID_RANGE, "[1, 64]")?;
         check("cylinder_slices", self.cylinder_slices, &SLICES_RANGE, "[3, 400]")?;
         check("cylinder_stacks", self.cylinder_stacks, &STACKS_RANGE, "[1, 400]")?;
+        if let Some((i, v)) = self.background.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+            return Err(SceneError::NotFinite { field: format!("view.background[{i}]"), value: *v as f64 });
+        }
         let c = &self.camera;
         for (f, v) in [
             ("view.spin_degrees", self.spin_degrees),
@@ -217,13 +301,106 @@ impl View {
     }
 }
 
+impl View {
+    /// The object's spin: [`demo_spin`] of `spin_degrees`.
+    pub fn spin(&self) -> glam::DMat4 {
+        demo_spin(self.spin_degrees)
+    }
+
+    /// World to clip space: the orbit camera and its projection, or nothing (clip space).
+    pub fn clip_from_world(&self) -> glam::DMat4 {
+        match self.framing {
+            Framing::Orbit => view_projection(1.0) * self.camera.eye_from_world(),
+            Framing::ClipSpace => glam::DMat4::IDENTITY,
+        }
+    }
+
+    /// Where the view draws the object: object to clip space (the orbit camera's
+    /// projection, camera and spin; or the demo's spin alone). It does not depend on where
+    /// the object is lit.
+    pub fn clip_from_object(&self) -> glam::DMat4 {
+        match self.framing {
+            Framing::Orbit => view_projection(1.0) * (self.camera.eye_from_world() * self.spin()),
+            Framing::ClipSpace => self.spin(),
+        }
+    }
+
+    /// The numerical options of the shaded view with power function `pow`.
+    pub fn eval_options(&self, pow: crate::PowFn) -> crate::EvalOptions {
+        crate::EvalOptions {
+            pow,
+            renormalize: if self.phong_renormalize { crate::Renormalize::Exact } else { crate::Renormalize::Skip },
+        }
+    }
+}
+
+/// Everything the renderer needs to draw a document's shaded view: one setup for the app,
+/// the CLI and the cost study, so they all draw the same picture.
+#[derive(Clone, Debug)]
+pub struct ShadedSetup {
+    /// The lighting state, with the modelview the object is lit under.
+    pub scene: crate::Scene,
+    /// Where it is drawn.
+    pub clip_from_object: glam::DMat4,
+    /// The view it came from.
+    pub view: View,
+    /// Numerical options.
+    pub options: crate::EvalOptions,
+}
+
+impl ShadedSetup {
+    /// The render job for `mesh` (the view's mesh, usually).
+    pub fn job<'a>(&'a self, mesh: &'a crate::mesh::Mesh) -> crate::render::Job<'a> {
+        crate::render::Job {
+            scene: &self.scene,
+            mesh,
+            clip_from_object: self.clip_from_object,
+            shading: self.view.shading,
+            flat_normal: self.view.flat_normal,
+            background: self.view.background,
+            cull_back: false,
+            options: self.options,
+        }
+    }
+}
+
 impl crate::Document {
-    /// The scene as the shaded view draws it: the document's lighting, the view's camera,
-    /// the object spun about y by `view.spin_degrees`.
+    /// The scene as the shaded view lights it. In eye space (OpenGL): the document's
+    /// lighting under the view's camera (the orbit camera, or in clip space the document's
+    /// own), with the object spun. In object space (the demo): the document's scene as it
+    /// is, spin left out.
     pub fn shaded_scene(&self) -> crate::Scene {
         let mut s = self.scene.clone();
-        s.eye_from_world = self.view.camera.eye_from_world();
-        s.world_from_object = glam::DMat4::from_rotation_y(self.view.spin_degrees.to_radians());
+        if self.view.lighting_space == LightingSpace::Eye {
+            if self.view.framing == Framing::Orbit {
+                s.eye_from_world = self.view.camera.eye_from_world();
+            }
+            s.world_from_object = self.view.spin();
+        }
         s
+    }
+
+    /// The shaded view's whole setup with power function `pow`.
+    pub fn shaded_setup(&self, pow: crate::PowFn) -> ShadedSetup {
+        ShadedSetup {
+            scene: self.shaded_scene(),
+            clip_from_object: self.view.clip_from_object(),
+            view: self.view.clone(),
+            options: self.view.eval_options(pow),
+        }
+    }
+
+    /// This document with the worked calculation moved to `vertex` (object space) as the
+    /// shaded view lights it: the same camera and spin, so both panels show one vertex.
+    pub fn with_vertex_as_shaded(&self, vertex: crate::Vertex) -> crate::Document {
+        let mut d = self.clone();
+        let s = self.shaded_scene();
+        d.scene.vertex = vertex;
+        if s.eye_from_world != d.scene.eye_from_world {
+            d.camera = crate::CameraSpec::Matrix(s.eye_from_world);
+            d.scene.eye_from_world = s.eye_from_world;
+        }
+        d.scene.world_from_object = s.world_from_object;
+        d
     }
 }

@@ -2,7 +2,7 @@
 //! and files that are not valid are refused with a message naming where and why.
 
 use glam::{DMat4, DVec3, DVec4};
-use phonglab_core::view::{ObjectKind, Shading, View, ViewCamera};
+use phonglab_core::view::{FlatNormal, Framing, LightingSpace, ObjectKind, Shading, View, ViewCamera};
 use phonglab_core::{
     CameraSpec, Document, DocumentError, Light, LightModel, LightPlacement, Material, NormalMode, RuleSet, Rules,
     Scene, SpecularModel, Vertex,
@@ -95,8 +95,16 @@ fn view() -> BoxedStrategy<View> {
         (3u32..=400, 3u32..=400, 1u32..=64, 3u32..=400, 1u32..=400),
         (any::<bool>(), any::<bool>(), any::<bool>()),
         (num(), num(), -89.0..=89.0f64, 0.6..=20.0f64),
+        (
+            prop::sample::select(Framing::ALL.to_vec()),
+            any::<bool>(),
+            any::<bool>(),
+            any::<bool>(),
+            any::<bool>(),
+            prop::array::uniform3(-1.0e3f32..1.0e3),
+        ),
     )
-        .prop_map(|((object, shading), t, (caps, demo, spin), (spin_degrees, yaw, pitch, distance))| View {
+        .prop_map(|((object, shading), t, (caps, demo, spin), (spin_degrees, yaw, pitch, distance), more)| View {
             object,
             shading,
             sphere_slices: t.0,
@@ -109,6 +117,12 @@ fn view() -> BoxedStrategy<View> {
             auto_rotate: spin,
             spin_degrees,
             camera: ViewCamera { yaw, pitch, distance },
+            framing: more.0,
+            lighting_space: if more.1 { LightingSpace::Object } else { LightingSpace::Eye },
+            flat_normal: if more.2 { FlatNormal::ScreenDerivatives } else { FlatNormal::Face },
+            phong_renormalize: more.3,
+            cylinder_centered: more.4,
+            background: more.5,
         })
         .boxed()
 }

@@ -3,14 +3,16 @@
 //!
 //! Read it top to bottom:
 //!
-//! 1. [`vertices`]: each vertex to eye and clip space; for Gouraud, its colour.
+//! 1. [`vertices`]: each vertex to eye space (where it is lit) and clip space (where it is
+//!    drawn); for Gouraud, its colour.
 //! 2. [`setup`]: each triangle clipped (near and far planes, and x/y beyond a guard band),
 //!    its facing decided, back faces culled if asked, snapped to fixed point.
 //! 3. [`raster`]: triangles into a visibility buffer (depth, triangle, barycentrics), in
 //!    horizontal bands on all cores; top-left fill rule, so shared edges are drawn once.
 //! 4. [`resolve`]: each covered pixel shaded once, with perspective-correct barycentrics:
 //!    Gouraud interpolates colours, Phong interpolates position and normal and lights the
-//!    pixel, Flat takes its face's colour.
+//!    pixel, Flat takes its face's colour (or, as the Phong demo does, lights the pixel
+//!    with the face's normal taken from the screen derivatives).
 
 pub mod raster;
 pub mod resolve;
@@ -24,21 +26,25 @@ use crate::lighting::EvalOptions;
 use crate::mesh::Mesh;
 use crate::scene::Scene;
 use crate::specialised::Lighter;
-use crate::view::Shading;
+use crate::view::{FlatNormal, Shading};
 
 pub use crate::transform::perspective;
 
 /// What to draw.
 #[derive(Clone, Copy, Debug)]
 pub struct Job<'a> {
-    /// Lighting state and the modelview (`scene.eye_from_object()`).
+    /// Lighting state and the modelview the object is lit under (`scene.eye_from_object()`).
     pub scene: &'a Scene,
     /// The mesh, object space.
     pub mesh: &'a Mesh,
-    /// Eye to clip space.
-    pub clip_from_eye: DMat4,
+    /// Object to clip space: where the mesh is drawn. Usually `projection *
+    /// scene.eye_from_object()`; the Phong demo draws with its spin alone and lights in
+    /// object space, so the two are separate.
+    pub clip_from_object: DMat4,
     /// Flat, Gouraud or Phong.
     pub shading: Shading,
+    /// Flat shading's normal: per face, or per fragment from the screen derivatives.
+    pub flat_normal: FlatNormal,
     /// Colour of uncovered pixels (linear, as written).
     pub background: [f32; 3],
     /// Skip triangles facing away (OpenGL's GL_CULL_FACE with GL_BACK).

@@ -8,7 +8,11 @@
 //! - Gouraud: the vertices' colours (each clamped as OpenGL clamps vertex colours).
 //! - Phong: position and normal, the normal renormalised, the lighting engine per pixel
 //!   (in batches through the specialised evaluator).
-//! - Flat: the face's colour.
+//! - Flat: the face's colour; or, as the Phong demo's shader does, the pixel lit with
+//!   `normalize(cross(dFdy(p), dFdx(p)))`. Within a triangle `p` is affine in the window
+//!   coordinates, so that cross product is `-((b - a) x (c - a)) / A`, A the triangle's
+//!   signed window area (y up): the face normal, negated on triangles counter-clockwise on
+//!   the screen.
 //!
 //! Colours go to 8 bits as OpenGL converts them: `round(255 clamp(c, 0, 1))`.
 
@@ -20,7 +24,7 @@ use super::setup::Setup;
 use super::vertices::Vertices;
 use super::{Image, Job, NO_TRIANGLE};
 use crate::specialised::Lighter;
-use crate::view::Shading;
+use crate::view::{FlatNormal, Shading};
 
 /// Per-band buffers of Phong fragments.
 #[derive(Default)]
@@ -84,11 +88,14 @@ pub fn resolve(
     let bg = job.background.map(to_u8);
     let tris = &job.mesh.triangles;
     let two = job.scene.light_model.two_sided;
+    // Shadings that light each pixel: Phong, and Flat with the demo's derivative normals.
+    let per_pixel = job.shading == Shading::Phong
+        || (job.shading == Shading::Flat && job.flat_normal == FlatNormal::ScreenDerivatives);
     let bands = image.height.div_ceil(BAND);
     scratch.bands.resize_with(bands, Fragments::default);
     let (raster, bary) = (&image.raster, &image.bary);
     // Flat: each face's colour converted to 8 bits once.
-    let face8: [Vec<[u8; 4]>; 2] = if job.shading == Shading::Flat {
+    let face8: [Vec<[u8; 4]>; 2] = if job.shading == Shading::Flat && !per_pixel {
         [0, 1].map(|side| setup.face_color[side].iter().map(|c| c.map(to_u8)).collect())
     } else {
         [Vec::new(), Vec::new()]
@@ -103,7 +110,7 @@ pub fn resolve(
         frags.back.clear();
         frags.pos.clear();
         frags.nrm.clear();
-        if job.shading == Shading::Phong {
+        if per_pixel {
             for v in [&mut frags.pos, &mut frags.nrm] {
                 v.reserve(px.len());
             }
@@ -118,6 +125,19 @@ pub fn resolve(
             let t = &setup.tris[r as usize];
             let side = (t.back && two) as usize;
             match job.shading {
+                Shading::Flat if per_pixel => {
+                    let w = barycentrics(setup, r, bary[k]);
+                    let v = tris[t.orig as usize];
+                    let p = verts.eye[v[0] as usize] * w[0]
+                        + verts.eye[v[1] as usize] * w[1]
+                        + verts.eye[v[2] as usize] * w[2];
+                    // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
+                    let n = setup.face_normal[t.orig as usize];
+                    frags.pixel.push(k as u32);
+                    frags.back.push(side == 1);
+                    frags.pos.push(p);
+                    frags.nrm.push(if t.back { n } else { -n });
+                }
                 Shading::Flat => *out = face8[side][t.orig as usize],
                 Shading::Gouraud => {
                     let w = barycentrics(setup, r, bary[k]);
@@ -142,17 +162,18 @@ pub fn resolve(
                 }
             }
         }
-        if job.shading == Shading::Phong && !frags.pixel.is_empty() {
+        if per_pixel && !frags.pixel.is_empty() {
             let m = frags.pixel.len();
             frags.front_out.resize(m, [0.0; 4]);
             frags.back_out.resize(m, [0.0; 4]);
-            // The interpolated normals are renormalised inside (in vectorised chunks).
-            lighter.light_batch_eye_sum_normalizing(
-                &frags.pos,
-                &frags.nrm,
-                &mut frags.front_out,
-                if two { Some(&mut frags.back_out) } else { None },
-            );
+            let back_out = if two { Some(&mut frags.back_out[..]) } else { None };
+            if job.shading == Shading::Phong {
+                // The interpolated normals are renormalised inside (in vectorised chunks).
+                lighter.light_batch_eye_sum_normalizing(&frags.pos, &frags.nrm, &mut frags.front_out, back_out);
+            } else {
+                // Face normals are unit already.
+                lighter.light_batch_eye_sum(&frags.pos, &frags.nrm, &mut frags.front_out, back_out);
+            }
             for j in 0..m {
                 let c = if frags.back[j] { frags.back_out[j] } else { frags.front_out[j] };
                 px[frags.pixel[j] as usize] = c.map(to_u8);
@@ -161,6 +182,7 @@ pub fn resolve(
     });
     match job.shading {
         Shading::Phong => scratch.bands.iter().map(|f| f.pixel.len()).sum(),
+        Shading::Flat if per_pixel => scratch.bands.iter().map(|f| f.pixel.len()).sum(),
         Shading::Flat => tris.len(),
         Shading::Gouraud => 0,
     }

@@ -12,7 +12,7 @@ use rayon::prelude::*;
 use super::Job;
 use super::vertices::Vertices;
 use crate::specialised::Lighter;
-use crate::view::Shading;
+use crate::view::{FlatNormal, Shading};
 
 /// Sub-pixel precision: 8 fractional bits, as llvmpipe.
 pub const SUBPIXEL_BITS: u32 = 8;
@@ -55,6 +55,9 @@ pub struct Setup {
     pub tris: Vec<RasterTri>,
     /// Flat shading: each mesh triangle's colour (clamped sum) per side.
     pub face_color: [Vec<[f32; 4]>; 2],
+    /// Flat shading from screen derivatives: each mesh triangle's unit normal in eye
+    /// space, `(b - a) x (c - a)` (counter-clockwise from outside: outward).
+    pub face_normal: Vec<Vec3>,
     per_face: Vec<Vec<RasterTri>>,
 }
 
@@ -233,7 +236,14 @@ impl Setup {
             self.tris.extend_from_slice(v);
         }
 
-        if job.shading == Shading::Flat {
+        if job.shading == Shading::Flat && job.flat_normal == FlatNormal::ScreenDerivatives {
+            // Lit per fragment (resolve); here only each face's plane normal.
+            self.face_normal.clear();
+            self.face_normal.extend(tris.iter().map(|t| {
+                let [a, b, c] = t.map(|i| verts.eye[i as usize]);
+                face_normal(a, b, c)
+            }));
+        } else if job.shading == Shading::Flat {
             // One evaluation per face: at its centroid, with its geometric normal.
             let (mut pos, mut nrm) = (Vec::with_capacity(tris.len()), Vec::with_capacity(tris.len()));
             for t in tris {

@@ -17,10 +17,16 @@ pub struct Vertices {
     pub clip: Vec<Vec4>,
     /// Eye-space normals, `(M^-1)^T n`, not yet normalised (Phong renormalises per pixel).
     pub normal: Vec<Vec3>,
-    /// Gouraud: each vertex's colour per side, as OpenGL interpolates it: primary and
-    /// secondary each clamped to [0, 1], then added.
+    /// Gouraud: each vertex's colour per side, as the pipeline interpolates it: OpenGL
+    /// clamps primary and secondary each to [0, 1], then adds them; a shader's varying (the
+    /// Phong demo's `fragColor`) is interpolated unclamped.
     pub color: [Vec<[f32; 4]>; 2],
     lit: [Vec<Lit>; 2],
+}
+
+fn unclamped_sum(l: &Lit) -> [f32; 4] {
+    let (p, s) = (l.primary, l.secondary);
+    [p[0] + s[0], p[1] + s[1], p[2] + s[2], p[3]]
 }
 
 fn clamped_sum(l: &Lit) -> [f32; 4] {
@@ -36,8 +42,8 @@ impl Vertices {
         let n = mesh.positions.len();
         let eye_from_object = job.scene.eye_from_object();
         let mv = eye_from_object.as_mat4();
-        let clip_from_object: Mat4 = (job.clip_from_eye * eye_from_object).as_mat4();
-        let nm: Mat3 = NormalMatrix::new(&eye_from_object).eye_from_object.as_mat3();
+        let clip_from_object: Mat4 = job.clip_from_object.as_mat4();
+        let nm: Mat3 = NormalMatrix::for_rules(&eye_from_object, job.scene.rules).eye_from_object.as_mat3();
         self.eye.resize(n, Vec3::ZERO);
         self.clip.resize(n, Vec4::ZERO);
         self.normal.resize(n, Vec3::ZERO);
@@ -70,7 +76,11 @@ impl Vertices {
             for side in 0..2 {
                 let src = if side == 1 && two { &self.lit[1] } else { &self.lit[0] };
                 self.color[side].clear();
-                self.color[side].extend(src.iter().map(clamped_sum));
+                if job.scene.rules.clamps_vertex_colors() {
+                    self.color[side].extend(src.iter().map(clamped_sum));
+                } else {
+                    self.color[side].extend(src.iter().map(unclamped_sum));
+                }
             }
         }
     }
