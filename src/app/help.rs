@@ -108,4 +108,18 @@ pub fn help_ui(ui: &mut Ui) {
     ui.label("Drop a scene file (.toml) on the window to open it.");
     ui.label("Drag the vector plot or the shaded view to orbit it; scroll the shaded view to zoom; click its surface to explain that vertex.");
     ui.label(" Every field takes typed values: out-of-range ones are refused with a message and the scene keeps its last valid value.");
+    ui.separator();
+    ui.strong("The Phong demo preset: the demo's choices and OpenGL's");
+    for line in DEMO_CHOICES {
+        ui.label(*line);
+    }
 }
+
+/// Where the Phong demo preset follows the demo's program rather than OpenGL (shown in the
+/// help overlay; the scene file and the README say the same).
+pub const DEMO_CHOICES: &[&str] = &[
+    "The demo's: lighting in object space, light and eye at (-4, 0, -8), so the light turns with the object. OpenGL's: lighting in eye space after the modelview (switch: light fixed in the world).",
+    "The demo's: every normal is normalize(position). OpenGL's: the surface's normals (switch: the surface's true normals).",
+    "The demo's: R = 2 max(N.L, 0) N - L and pow(max(V.R, 0), 100), times the object's red, so the highlight is red. OpenGL's: Blinn-Phong's n.H and the light's specular colour times the material's (switch: highlight in the light's colour).",
+    "The demo's: no projection (the picture is clip space), Phong without renormalising, Flat from dFdx/dFdy per fragment, colours interpolated unclamped. Under Pipeline, the shaded view offers OpenGL's choices.",
+];
