@@ -155,7 +155,7 @@ fn explain_other_modelviews_markdown_and_bad_arguments() {
     let md = stdout(&phonglab(&["explain", "--markdown"]));
     assert!(md.contains("| # | step | formula | value | notes |"), "{md}");
     let demo = stdout(&phonglab(&["explain", "--preset", "phong-demo"]));
-    assert!(demo.contains("R = 2 (N . L) N - L"), "{demo}");
+    assert!(demo.contains("R = 2 max(N . L, 0) N - L"), "{demo}");
     let o = phonglab(&["explain", "--worksheet", "9"]);
     assert_eq!(o.status.code(), Some(2));
     let o = phonglab(&["explain", "--preset", "nope"]);

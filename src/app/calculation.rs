@@ -3,15 +3,16 @@
 
 use egui::{RichText, Ui};
 use phonglab_core::explain::{Explanation, Side, fmt_value};
-use phonglab_core::plan::Effect;
+use phonglab_core::plan::{Effect, Stage};
 
 use super::palette;
 
 /// Significant digits shown.
 const DIGITS: usize = 8;
 
-/// The specialised evaluator's plan: what it computes and what it skips, and why.
-fn plan_ui(ui: &mut Ui, effects: &[Effect]) {
+/// The specialised evaluator's plan: what it computes and what it skips, and why, and
+/// the stages it runs, in order (the same list the evaluator runs).
+fn plan_ui(ui: &mut Ui, effects: &[Effect], stages: &[Stage]) {
     let skipped = effects.iter().filter(|e| !e.on).count();
     egui::CollapsingHeader::new(format!(
         "Specialised plan: {} effects computed, {skipped} skipped",
@@ -28,12 +29,22 @@ fn plan_ui(ui: &mut Ui, effects: &[Effect]) {
                 ui.label(RichText::new(format!("skipped   {text}")).small().weak());
             }
         }
+        ui.label(RichText::new(format!("The program, {} stages per chunk of vertices:", stages.len())).small());
+        let list: Vec<String> = stages.iter().map(|s| format!("{s:?}")).collect();
+        ui.label(RichText::new(list.join(" > ")).small().monospace());
     });
 }
 
 /// The steps; `side` is switchable when two-sided lighting is on. Steps the specialised
 /// evaluator skips are greyed, with the reason.
-pub fn calculation_ui(ui: &mut Ui, ex: &Explanation, side: &mut Side, two_sided: bool, effects: &[Effect]) {
+pub fn calculation_ui(
+    ui: &mut Ui,
+    ex: &Explanation,
+    side: &mut Side,
+    two_sided: bool,
+    effects: &[Effect],
+    stages: &[Stage],
+) {
     ui.horizontal(|ui| {
         ui.heading("Worked calculation");
         if ui.button("Copy as Markdown").on_hover_text("Copies every step as a Markdown table.").clicked() {
@@ -48,7 +59,7 @@ pub fn calculation_ui(ui: &mut Ui, ex: &Explanation, side: &mut Side, two_sided:
         });
     }
     ui.small(&ex.heading);
-    plan_ui(ui, effects);
+    plan_ui(ui, effects, stages);
     ui.separator();
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
         for (k, st) in ex.steps.iter().enumerate() {

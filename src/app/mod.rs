@@ -158,10 +158,10 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
 
     egui::Panel::right("calculation").resizable(true).default_size(430.0).min_size(300.0).show(ui, |ui| {
         let two_sided = state.doc.scene.light_model.two_sided;
-        let effects =
-            phonglab_core::plan::Key::of(&state.doc.scene, phonglab_core::EvalOptions::with_pow(state.ui.pow))
-                .effects();
-        calculation::calculation_ui(ui, &eval.explanation, &mut state.ui.side, two_sided, &effects);
+        let key = phonglab_core::plan::Key::of(&state.doc.scene, phonglab_core::EvalOptions::with_pow(state.ui.pow));
+        let program = key.program();
+        let effects = key.effects_of(&program);
+        calculation::calculation_ui(ui, &eval.explanation, &mut state.ui.side, two_sided, &effects, &program.stages);
     });
 
     egui::CentralPanel::default().show(ui, |ui| {

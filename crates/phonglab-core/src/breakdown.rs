@@ -153,11 +153,6 @@ impl Limits {
         self.0 == 0
     }
 
-    /// Both sets together.
-    pub fn union(self, o: Limits) -> Limits {
-        Limits(self.0 | o.0)
-    }
-
     /// The limits present, in [`Limit::ALL`] order.
     pub fn iter(self) -> impl Iterator<Item = Limit> {
         Limit::ALL.into_iter().filter(move |l| self.contains(*l))

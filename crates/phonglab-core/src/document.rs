@@ -88,11 +88,7 @@ impl Document {
     pub fn validate(&self) -> Result<(), SceneError> {
         let m = self.camera.matrix()?;
         if m != self.scene.eye_from_world {
-            return Err(SceneError::OutOfRange {
-                field: "camera".into(),
-                value: f64::NAN,
-                allowed: "the scene's view matrix must be the camera's",
-            });
+            return Err(SceneError::CameraMismatch { camera: self.camera.kind_label() });
         }
         self.view.validate()?;
         self.scene.validate_for_editing()

@@ -31,6 +31,14 @@ pub enum SceneError {
         /// The limit, 8.
         max: usize,
     },
+    /// A document whose scene's view matrix is not the one its camera description gives.
+    #[error(
+        "the scene's view matrix is not the one its camera gives ({camera}): set the camera, or give the matrix as a typed camera"
+    )]
+    CameraMismatch {
+        /// The camera's kind, e.g. "lookAt".
+        camera: &'static str,
+    },
     /// All three attenuation factors zero: the light would be infinitely bright.
     #[error(
         "{field}: constant, linear and quadratic attenuation are all 0, so the light would be infinitely bright; make at least one positive"
@@ -49,6 +57,7 @@ impl SceneError {
             | SceneError::NotFinite { field, .. }
             | SceneError::ZeroAttenuation { field } => field,
             SceneError::TooManyLights { .. } => "lights",
+            SceneError::CameraMismatch { .. } => "camera",
         }
     }
 }

@@ -35,7 +35,7 @@ use crate::breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerm
 use crate::error::SceneError;
 use crate::pow::PowFn;
 use crate::real::{Real, Vec3Ops};
-use crate::robust::{cos_deg, mul0, mul0_v, scale0, scaled_length, transform_point, transform_vector3, try_normalize};
+use crate::robust::{cos_deg, mul0, mul0_v, transform_point, transform_vector3, try_normalize};
 use crate::rules::{Rules, SpecularGate, SpecularModel};
 use crate::scene::{Light, Material, NormalMode, Rgba, Scene, Vertex};
 use crate::transform::NormalMatrix;
@@ -122,20 +122,6 @@ pub enum Renormalize {
     FastRsqrt,
     /// Not renormalised: `n` as interpolated.
     Skip,
-}
-
-impl Renormalize {
-    /// All three, exact first.
-    pub const ALL: [Renormalize; 3] = [Renormalize::Exact, Renormalize::FastRsqrt, Renormalize::Skip];
-
-    /// A short name for tables.
-    pub fn label(self) -> &'static str {
-        match self {
-            Renormalize::Exact => "exact normalize",
-            Renormalize::FastRsqrt => "fast rsqrt",
-            Renormalize::Skip => "no renormalisation",
-        }
-    }
 }
 
 /// The classic approximate `1 / sqrt(x)` for `x > 0`: an initial guess from the float's
@@ -490,8 +476,8 @@ pub(crate) mod terms {
                     // From a point at infinity, every finite point lies in the opposite direction.
                     (try_normalize::<f64>(-pos), Some(f64::INFINITY))
                 } else {
-                    let vp = *lp - pos;
-                    (try_normalize::<f64>(vp), Some(scaled_length::<f64>(vp)))
+                    let (l, d) = light_direction(*lp, pos);
+                    (l, Some(d))
                 }
             }
             LightPos::Directional { dir, unit } => {
@@ -504,6 +490,21 @@ pub(crate) mod terms {
         }
     }
 
+    /// L and d of a positional light at `lp` seen from the eye-space point `pos`:
+    /// `VP = P_l - P`, normalised and measured by one [`crate::robust::normalize3`] in f64.
+    #[inline(always)]
+    pub fn light_direction(lp: DVec3, pos: DVec3) -> (Option<DVec3>, f64) {
+        let vp = lp - pos;
+        let (x, y, z, d, ok) = crate::robust::normalize3::<f64>(vp.x, vp.y, vp.z);
+        (ok.then_some(DVec3::new(x, y, z)), d)
+    }
+
+    /// The dot product as glam computes it: `(a.x b.x + a.y b.y) + a.z b.z`.
+    #[inline(always)]
+    pub fn dot3<S: Real>(ax: S, ay: S, az: S, bx: S, by: S, bz: S) -> S {
+        ax * bx + ay * by + az * bz
+    }
+
     /// `1 / (k0 + k1 d + k2 d^2)`; +infinity where the denominator is 0.
     #[inline(always)]
     pub fn attenuation<S: Real>(k: [S; 3], d: S) -> S {
@@ -512,15 +513,28 @@ pub(crate) mod terms {
         if denom == S::ZERO { S::INFINITY } else { S::ONE / denom }
     }
 
-    /// The spot cosine `-L . s`, whether the vertex is inside the cone, and the factor.
+    /// The spot cosine `-L . s` (in f64, rounded) and whether the vertex is inside the cone
+    /// `-L . s >= cos(cutoff)` (section 2.14.1, the spotlight factor).
+    #[inline(always)]
+    pub fn spot_cone<S: Real>(sp: &PreparedSpot<S>, axis: DVec3, l: DVec3) -> (S, bool) {
+        (S::from_f64(-l.dot(axis)), inside_cone(-l, axis, sp.cutoff, sp.cos_cutoff, sp.sin_cutoff))
+    }
+
+    /// The spot factor: `max(-L . s, 0)^s_rl` inside the cone, 0 outside.
+    #[inline(always)]
+    pub fn spot_power<S: Real>(cos_angle: S, inside: bool, exponent: S, pow: PowFn) -> S {
+        let p = pow.pow(cos_angle.max(S::ZERO), exponent);
+        if inside { p } else { S::ZERO }
+    }
+
+    /// The spot cosine `-L . s`, whether the vertex is inside the cone, and the factor
+    /// (0 where the axis or L is undefined).
     #[inline(always)]
     pub fn spot<S: Real>(sp: &PreparedSpot<S>, l64: Option<DVec3>, pow: PowFn) -> (S, bool, S) {
         match (sp.axis, l64) {
             (Some(axis), Some(l)) => {
-                let cos_angle = S::from_f64(-l.dot(axis));
-                let inside = inside_cone(-l, axis, sp.cutoff, sp.cos_cutoff, sp.sin_cutoff);
-                let factor = if inside { pow.pow(cos_angle.max(S::ZERO), sp.exponent) } else { S::ZERO };
-                (cos_angle, inside, factor)
+                let (cos_angle, inside) = spot_cone(sp, axis, l);
+                (cos_angle, inside, spot_power(cos_angle, inside, sp.exponent, pow))
             }
             _ => (S::ZERO, false, S::ZERO),
         }
@@ -535,8 +549,52 @@ pub(crate) mod terms {
     /// R = 2 (n . L) n - L; with `clamped` (the Phong demo's shaders) 2 max(n . L, 0) n - L.
     #[inline(always)]
     pub fn reflect<S: Real>(n: S::V3, l: S::V3, clamped: bool) -> S::V3 {
-        let c = n.dot(l);
-        n * (S::from_f64(2.0) * if clamped { c.max(S::ZERO) } else { c }) - l
+        let (x, y, z) = reflect3::<S>(n.x(), n.y(), n.z(), l.x(), l.y(), l.z(), clamped);
+        S::V3::new(x, y, z)
+    }
+
+    /// [`reflect`] on components.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn reflect3<S: Real>(nx: S, ny: S, nz: S, lx: S, ly: S, lz: S, clamped: bool) -> (S, S, S) {
+        let c = dot3(nx, ny, nz, lx, ly, lz);
+        let k = S::from_f64(2.0) * if clamped { c.max(S::ZERO) } else { c };
+        (nx * k - lx, ny * k - ly, nz * k - lz)
+    }
+
+    /// Whether the specular term is allowed, by the rule set's gate: OpenGL's `f_i` (where
+    /// `n . L > 0`), the worksheet's `cos > 0`, or always (the demo's).
+    #[inline(always)]
+    pub fn specular_allowed<S: Real>(gate: SpecularGate, n_dot_l: S, cos: S) -> bool {
+        match gate {
+            SpecularGate::LitSide => n_dot_l > S::ZERO,
+            SpecularGate::PositiveCosine => cos > S::ZERO,
+            SpecularGate::None => true,
+        }
+    }
+
+    /// One colour channel of one light's terms on one side, each factor of the sum in
+    /// section 2.14.1: `diffuse = max(n . L, 0) d_cm d_cli` where the light reaches the
+    /// surface (`lit`), `specular = f_i s_cm s_cli p` where allowed (`p` the power), and
+    /// `att spot (ambient + diffuse + specular)` (the specular apart with a separate
+    /// specular colour). Returns (diffuse, specular, primary, secondary).
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn channel<S: Real>(
+        amb: S,
+        dif: S,
+        spe: S,
+        n_dot_l: S,
+        lit: bool,
+        allowed: bool,
+        p: S,
+        separate: bool,
+        scale: S,
+    ) -> (S, S, S, S) {
+        let diffuse = if lit { mul0(dif, n_dot_l.max(S::ZERO)) } else { S::ZERO };
+        let specular = if allowed { mul0(spe, p) } else { S::ZERO };
+        let pri = if separate { amb + diffuse } else { amb + diffuse + specular };
+        (diffuse, specular, mul0(pri, scale), if separate { mul0(specular, scale) } else { S::ZERO })
     }
 
     /// What the specular term needs besides n and L.
@@ -564,31 +622,34 @@ pub(crate) mod terms {
     ) -> SideTerms<S> {
         let [amb, dif, spe] = products;
         let mut st = SideTerms { ambient: amb, ..Default::default() };
+        let mut allowed = false;
+        let mut p = S::ONE;
         if let Some(l) = lit {
-            st.n_dot_l = n_side.dot(l);
-            st.diffuse = scale0::<S>(dif, st.n_dot_l.max(S::ZERO));
+            st.n_dot_l = dot3(n_side.x(), n_side.y(), n_side.z(), l.x(), l.y(), l.z());
             let cos = match spec.model {
-                SpecularModel::BlinnPhong => spec.h.map(|h| n_side.dot(h)),
-                SpecularModel::Phong => spec.v.zip(spec.r).map(|(v, r)| r.dot(v)),
+                SpecularModel::BlinnPhong => {
+                    spec.h.map(|h| dot3(n_side.x(), n_side.y(), n_side.z(), h.x(), h.y(), h.z()))
+                }
+                SpecularModel::Phong => spec.v.zip(spec.r).map(|(v, r)| dot3(r.x(), r.y(), r.z(), v.x(), v.y(), v.z())),
             };
             if let Some(c) = cos {
                 st.spec_cos = c;
-                let allowed = match spec.gate {
-                    SpecularGate::LitSide => st.n_dot_l > S::ZERO,
-                    SpecularGate::PositiveCosine => c > S::ZERO,
-                    SpecularGate::None => true,
-                };
+                allowed = specular_allowed(spec.gate, st.n_dot_l, c);
                 if allowed {
                     st.f = S::ONE;
-                    st.specular = scale0::<S>(spe, pow.pow(c.max(S::ZERO), shininess));
+                    p = pow.pow(c.max(S::ZERO), shininess);
                 }
             }
         }
-        let pri = if separate { amb + st.diffuse } else { amb + st.diffuse + st.specular };
-        st.primary = scale0::<S>(pri, scale);
-        if separate {
-            st.secondary = scale0::<S>(st.specular, scale);
-        }
+        let ch = |k: usize| {
+            let pick = |v: S::V3| [v.x(), v.y(), v.z()][k];
+            channel(pick(amb), pick(dif), pick(spe), st.n_dot_l, lit.is_some(), allowed, p, separate, scale)
+        };
+        let (c0, c1, c2) = (ch(0), ch(1), ch(2));
+        st.diffuse = S::V3::new(c0.0, c1.0, c2.0);
+        st.specular = S::V3::new(c0.1, c1.1, c2.1);
+        st.primary = S::V3::new(c0.2, c1.2, c2.2);
+        st.secondary = S::V3::new(c0.3, c1.3, c2.3);
         st
     }
 

@@ -10,7 +10,7 @@
 
 use std::fmt;
 
-use crate::lighting::EvalOptions;
+use crate::lighting::{EvalOptions, Renormalize};
 use crate::pow::PowFn;
 use crate::rules::{Rules, SpecularModel};
 use crate::scene::{NormalMode, Scene};
@@ -45,8 +45,9 @@ pub struct Key {
     pub separate_specular: bool,
     /// Normal handling.
     pub normals: NormalMode,
-    /// The modelview's 3x3 part preserves lengths (rescaling is then a no-op).
-    pub preserves_lengths: bool,
+    /// GL_RESCALE_NORMAL's factor is exactly 1 (a length-preserving modelview): rescaling
+    /// would multiply by 1, so it is left out.
+    pub rescale_is_one: bool,
     /// Rule set and specular model.
     pub rules: Rules,
     /// The power function.
@@ -64,7 +65,7 @@ impl Key {
         let spec_nonzero = |l: &crate::Light| {
             [&scene.material, back].iter().any(|m| (0..3).any(|i| m.specular[i] * l.specular[i] != 0.0))
         };
-        let nm = NormalMatrix::new(&scene.eye_from_object());
+        let nm = NormalMatrix::for_rules(&scene.eye_from_object(), scene.rules);
         let rules = scene.rules;
         let scene_color_zero = [&scene.material, back].iter().all(|m| {
             let e = if rules.emission() { m.emission.truncate() } else { glam::DVec3::ZERO };
@@ -92,7 +93,7 @@ impl Key {
             two_sided: scene.light_model.two_sided,
             separate_specular: scene.light_model.separate_specular,
             normals: scene.normal_mode,
-            preserves_lengths: nm.orthonormal,
+            rescale_is_one: nm.rescale == 1.0,
             rules,
             pow: options.pow,
             shininess_zero: [scene.material.shininess == 0.0, back.shininess == 0.0],
@@ -110,9 +111,237 @@ impl Key {
     }
 }
 
-/// An effect of the equation, and whether the specialised evaluator computes it.
+/// Where the stages' inputs come from: what the prologue of the program must do.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SourceKind {
+    /// Object-space vertices (w = 1): normals and positions to transform (Gouraud, the
+    /// vertex panel).
+    Object,
+    /// Eye-space points with the normals the equation uses (Flat faces, the demo's
+    /// derivative normals).
+    Eye,
+    /// Eye-space points with interpolated normals to renormalise as the options say
+    /// (Phong fragments).
+    EyeRaw(Renormalize),
+}
+
+/// One stage of the specialised program: a loop over a chunk of vertices. The list a key
+/// compiles to ([`Program::compile`]) is exactly what the evaluator runs, in order, and
+/// what the calculation panel reports as computed; every stage absent from it is skipped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Stage {
+    /// `N = (M^-1)^T n` (or the worksheet's `M n`).
+    TransformNormal,
+    /// `N = f N`, GL_RESCALE_NORMAL with a factor other than exactly 1.
+    RescaleNormal,
+    /// `N = normalize(N)`: GL_NORMALIZE, or Phong's renormalisation of an interpolated normal.
+    NormalizeNormal,
+    /// `N = N rsqrt(N . N)` with the approximate reciprocal square root (the cost study).
+    NormalizeNormalFast,
+    /// `P = M p` (compensated, f64), divided by w.
+    TransformPosition,
+    /// Which normals are zero (no direction: no diffuse, no specular).
+    ZeroNormals,
+    /// V per vertex: `normalize(-P)` (local viewer) or the worksheet's `(0, 0, -sign(P.z))`.
+    ViewVector,
+    /// L and d of positional light `i` per vertex (f64, scaled before squaring).
+    LightVector(usize),
+    /// L of directional light `i`: one constant (and its spot factor, one constant).
+    LightConstant(usize),
+    /// `att = 1 / (k0 + k1 d + k2 d^2)` per vertex.
+    Attenuate(usize),
+    /// The spot cosine `-L . s` and the cone test per vertex.
+    SpotCone(usize),
+    /// The spot factor `(-L . s)^s_rl` inside the cone.
+    SpotPower(usize),
+    /// `H = normalize(L + V)` per vertex.
+    Halfway(usize),
+    /// `H = normalize(L + V)`: one constant (directional light, infinite viewer).
+    HalfwayConstant(usize),
+    /// `R = 2 (N . L) N - L` per vertex (Phong's specular).
+    Reflect(usize),
+    /// `n . L` on a side (0 front, 1 back: -n).
+    DiffuseCosine(usize, usize),
+    /// `n . H` (or `R . V`) on a side.
+    SpecularCosine(usize, usize),
+    /// `max(cos, 0)^s_rm` on a side.
+    Power(usize, usize),
+    /// The light's ambient + diffuse + specular, scaled by att spot, added to the side's sums.
+    Sum(usize, usize),
+    /// `e_cm + a_cm a_cs` added to every side's primary colour.
+    SceneColor,
+}
+
+impl Stage {
+    /// The light the stage belongs to.
+    pub fn light(self) -> Option<usize> {
+        match self {
+            Stage::LightVector(i)
+            | Stage::LightConstant(i)
+            | Stage::Attenuate(i)
+            | Stage::SpotCone(i)
+            | Stage::SpotPower(i)
+            | Stage::Halfway(i)
+            | Stage::HalfwayConstant(i)
+            | Stage::Reflect(i)
+            | Stage::DiffuseCosine(i, _)
+            | Stage::SpecularCosine(i, _)
+            | Stage::Power(i, _)
+            | Stage::Sum(i, _) => Some(i),
+            _ => None,
+        }
+    }
+}
+
+/// The stages a key compiles to, for one source of vertices.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Program {
+    /// In order.
+    pub stages: Vec<Stage>,
+}
+
+impl Program {
+    /// Compiles `key` for vertices from `source`: only the stages the key calls for.
+    pub fn compile(key: &Key, source: SourceKind) -> Program {
+        let mut st = Vec::new();
+        match source {
+            SourceKind::Object => {
+                st.push(Stage::TransformNormal);
+                match key.normals {
+                    NormalMode::AsIs => {}
+                    NormalMode::Rescale if key.rescale_is_one => {}
+                    NormalMode::Rescale => st.push(Stage::RescaleNormal),
+                    NormalMode::Normalize => st.push(Stage::NormalizeNormal),
+                }
+                if key.needs_positions() {
+                    st.push(Stage::TransformPosition);
+                }
+            }
+            SourceKind::Eye => {}
+            SourceKind::EyeRaw(r) => match r {
+                Renormalize::Exact => st.push(Stage::NormalizeNormal),
+                Renormalize::FastRsqrt => st.push(Stage::NormalizeNormalFast),
+                Renormalize::Skip => {}
+            },
+        }
+        if !key.lights.is_empty() {
+            st.push(Stage::ZeroNormals);
+        }
+        if key.per_vertex_view && !key.lights.is_empty() {
+            st.push(Stage::ViewVector);
+        }
+        let sides = if key.two_sided { 2 } else { 1 };
+        for (i, l) in key.lights.iter().enumerate() {
+            if l.positional {
+                st.push(Stage::LightVector(i));
+                if l.attenuated {
+                    st.push(Stage::Attenuate(i));
+                }
+                if l.spot {
+                    st.push(Stage::SpotCone(i));
+                    st.push(Stage::SpotPower(i));
+                }
+            } else {
+                st.push(Stage::LightConstant(i));
+            }
+            if l.specular {
+                st.push(match key.rules.specular {
+                    SpecularModel::BlinnPhong if key.per_vertex_halfway(i) => Stage::Halfway(i),
+                    SpecularModel::BlinnPhong => Stage::HalfwayConstant(i),
+                    SpecularModel::Phong => Stage::Reflect(i),
+                });
+            }
+            for side in 0..sides {
+                st.push(Stage::DiffuseCosine(i, side));
+                if l.specular {
+                    st.push(Stage::SpecularCosine(i, side));
+                    if !key.shininess_zero[side] {
+                        st.push(Stage::Power(i, side));
+                    }
+                }
+                st.push(Stage::Sum(i, side));
+            }
+        }
+        if !key.scene_color_zero {
+            st.push(Stage::SceneColor);
+        }
+        Program { stages: st }
+    }
+
+    /// Does the program run `stage`?
+    pub fn has(&self, stage: Stage) -> bool {
+        self.stages.contains(&stage)
+    }
+}
+
+/// The effects a panel reports, each decided by stages of the program.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum EffectKind {
+    /// GL_NORMALIZE or GL_RESCALE_NORMAL.
+    Normalisation,
+    /// V per vertex.
+    ViewVector,
+    /// `e_cm + a_cm a_cs`.
+    SceneColor,
+    /// The back side's colours.
+    BackSide,
+    /// L and d per vertex.
+    LightVector,
+    /// Attenuation.
+    Attenuation,
+    /// The spotlight's cone and exponent.
+    Spotlight,
+    /// H (Blinn-Phong) or R (Phong) per vertex.
+    HalfwayOrReflection,
+    /// The specular power.
+    SpecularPower,
+}
+
+impl EffectKind {
+    /// The effect's name, e.g. "attenuation".
+    pub fn name(self, specular: SpecularModel) -> &'static str {
+        match self {
+            EffectKind::Normalisation => "normalisation",
+            EffectKind::ViewVector => "view vector V",
+            EffectKind::SceneColor => "emission and scene ambient",
+            EffectKind::BackSide => "back side",
+            EffectKind::LightVector => "light vector L and distance d",
+            EffectKind::Attenuation => "attenuation",
+            EffectKind::Spotlight => "spotlight",
+            EffectKind::HalfwayOrReflection => match specular {
+                SpecularModel::BlinnPhong => "halfway vector H",
+                SpecularModel::Phong => "reflection vector R",
+            },
+            EffectKind::SpecularPower => "specular power",
+        }
+    }
+
+    /// The step of the worked calculation this effect decides (for showing a skipped
+    /// step greyed with its reason).
+    pub fn step_kind(self, specular: SpecularModel) -> Option<crate::explain::StepKind> {
+        use crate::explain::StepKind as K;
+        Some(match self {
+            EffectKind::Normalisation => K::Normal,
+            EffectKind::ViewVector => K::V,
+            EffectKind::LightVector => K::Distance,
+            EffectKind::Attenuation => K::Attenuation,
+            EffectKind::Spotlight => K::Spot,
+            EffectKind::HalfwayOrReflection => match specular {
+                SpecularModel::BlinnPhong => K::H,
+                SpecularModel::Phong => K::R,
+            },
+            EffectKind::SpecularPower => K::Specular,
+            EffectKind::SceneColor | EffectKind::BackSide => return None,
+        })
+    }
+}
+
+/// An effect of the equation, and whether the specialised evaluator computes it: read off
+/// the compiled [`Program`], so it is true of what runs.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Effect {
+    /// Which effect.
+    pub kind: EffectKind,
     /// The light it belongs to (`None`: the vertex).
     pub light: Option<usize>,
     /// What, e.g. "attenuation".
@@ -121,6 +350,8 @@ pub struct Effect {
     pub on: bool,
     /// Why, e.g. "the light is directional".
     pub why: String,
+    /// The specular model (decides whether H or R is meant).
+    specular: SpecularModel,
 }
 
 impl fmt::Display for Effect {
@@ -131,102 +362,127 @@ impl fmt::Display for Effect {
 }
 
 impl Effect {
-    /// The step of the worked calculation this effect decides (for showing a skipped step
-    /// greyed with its reason).
+    /// The step of the worked calculation this effect decides.
     pub fn step_kind(&self) -> Option<crate::explain::StepKind> {
-        use crate::explain::StepKind as K;
-        Some(match self.name {
-            "normalisation" => K::Normal,
-            "view vector V" => K::V,
-            "light vector L and distance d" => K::Distance,
-            "attenuation" => K::Attenuation,
-            "spotlight" => K::Spot,
-            "halfway vector H" => K::H,
-            "reflection vector R" => K::R,
-            "specular power" => K::Specular,
-            _ => return None,
-        })
+        self.kind.step_kind(self.specular)
     }
 }
 
 impl Key {
-    /// Every effect with whether it is computed and why, lights in order.
+    /// Positions matter only to positional lights and a per-vertex V.
+    pub fn needs_positions(&self) -> bool {
+        self.per_vertex_view || self.lights.iter().any(|l| l.positional)
+    }
+
+    /// The program of object-space vertices (what Gouraud and the vertex panel run).
+    pub fn program(&self) -> Program {
+        Program::compile(self, SourceKind::Object)
+    }
+
+    /// Every effect with whether the program for object-space vertices runs it and why,
+    /// lights in order.
     pub fn effects(&self) -> Vec<Effect> {
-        let e = |light, name, on, why: &str| Effect { light, name, on, why: why.to_string() };
+        self.effects_of(&self.program())
+    }
+
+    /// Every effect with whether `program` runs it and why.
+    pub fn effects_of(&self, program: &Program) -> Vec<Effect> {
+        let sp = self.rules.specular;
+        let e = |kind: EffectKind, light, on: bool, why: &str| Effect {
+            kind,
+            light,
+            name: kind.name(sp),
+            on,
+            why: why.to_string(),
+            specular: sp,
+        };
+        let has = |s: Stage| program.has(s);
+        let normalised = has(Stage::NormalizeNormal) || has(Stage::RescaleNormal) || has(Stage::NormalizeNormalFast);
         let mut out = vec![
-            match self.normals {
-                NormalMode::AsIs => e(None, "normalisation", false, "GL_NORMALIZE and GL_RESCALE_NORMAL are off"),
-                NormalMode::Normalize => e(None, "normalisation", true, "GL_NORMALIZE is on"),
-                NormalMode::Rescale if self.preserves_lengths => e(
-                    None,
-                    "normalisation",
-                    false,
-                    "GL_RESCALE_NORMAL is on but the modelview preserves lengths (factor 1)",
-                ),
-                NormalMode::Rescale => e(None, "normalisation", true, "GL_RESCALE_NORMAL is on"),
-            },
-            if self.local_viewer {
-                e(None, "view vector V", true, "local viewer: V = normalize(-P) per vertex")
-            } else if self.per_vertex_view {
+            e(
+                EffectKind::Normalisation,
+                None,
+                normalised,
+                match (self.normals, normalised) {
+                    (NormalMode::AsIs, false) => "GL_NORMALIZE and GL_RESCALE_NORMAL are off",
+                    (NormalMode::Rescale, false) => {
+                        "GL_RESCALE_NORMAL is on but its factor is exactly 1 (the modelview preserves lengths)"
+                    }
+                    (NormalMode::Normalize, _) => "GL_NORMALIZE is on",
+                    (NormalMode::Rescale, true) => "GL_RESCALE_NORMAL is on",
+                    (NormalMode::AsIs, true) => "interpolated normals are renormalised",
+                },
+            ),
+            if has(Stage::ViewVector) {
                 e(
+                    EffectKind::ViewVector,
                     None,
-                    "view vector V",
                     true,
-                    "the worksheet's V = normalize(obs - P), obs = P (1, 1, 0, 1): (0, 0, -sign(P.z)) per vertex",
+                    if self.local_viewer {
+                        "local viewer: V = normalize(-P) per vertex"
+                    } else {
+                        "the worksheet's V = normalize(obs - P), obs = P (1, 1, 0, 1): (0, 0, -sign(P.z)) per vertex"
+                    },
                 )
             } else {
-                e(None, "view vector V", false, "infinite viewer: V = (0, 0, 1) for every vertex")
+                e(EffectKind::ViewVector, None, false, "infinite viewer: V = (0, 0, 1) for every vertex")
             },
-            if self.scene_color_zero {
-                e(None, "emission and scene ambient", false, "both are zero (or the rule set leaves them out)")
+            if has(Stage::SceneColor) {
+                e(EffectKind::SceneColor, None, true, "added as one constant per side")
             } else {
-                e(None, "emission and scene ambient", true, "folded into one constant per side")
+                e(
+                    EffectKind::SceneColor,
+                    None,
+                    false,
+                    "both are zero (or the rule set leaves them out): nothing is added",
+                )
             },
-            if self.two_sided {
-                e(None, "back side", true, "two-sided lighting: -n and the back material")
+            if program.stages.iter().any(|s| matches!(s, Stage::Sum(_, 1))) {
+                e(EffectKind::BackSide, None, true, "two-sided lighting: -n and the back material")
             } else {
-                e(None, "back side", false, "one-sided lighting: the back colour is the front's")
+                e(EffectKind::BackSide, None, false, "one-sided lighting: the back colour is the front's")
             },
         ];
         for (i, l) in self.lights.iter().enumerate() {
             let li = Some(i);
-            out.push(if l.positional {
-                e(li, "light vector L and distance d", true, "positional light: per vertex")
+            out.push(if has(Stage::LightVector(i)) {
+                e(EffectKind::LightVector, li, true, "positional light: per vertex")
             } else {
-                e(
+                e(EffectKind::LightVector, li, false, "the light is directional: L is one constant, there is no d")
+            });
+            out.push(match (has(Stage::Attenuate(i)), l.positional) {
+                (true, _) => e(EffectKind::Attenuation, li, true, "1/(k0 + k1 d + k2 d^2) per vertex"),
+                (false, false) => e(EffectKind::Attenuation, li, false, "the light is directional"),
+                (false, true) => e(EffectKind::Attenuation, li, false, "factors (1, 0, 0) give 1"),
+            });
+            out.push(match (has(Stage::SpotCone(i)), l.spot) {
+                (true, _) => e(EffectKind::Spotlight, li, true, "cone test and exponent per vertex"),
+                (false, true) => e(
+                    EffectKind::Spotlight,
                     li,
-                    "light vector L and distance d",
                     false,
-                    "the light is directional: L is one constant, there is no d",
+                    "the light is directional: its spot factor is one constant, computed once",
+                ),
+                (false, false) => e(EffectKind::Spotlight, li, false, "cutoff 180: not a spotlight"),
+            });
+            out.push(if has(Stage::Halfway(i)) || has(Stage::Reflect(i)) {
+                e(EffectKind::HalfwayOrReflection, li, true, "per vertex")
+            } else if has(Stage::HalfwayConstant(i)) {
+                e(
+                    EffectKind::HalfwayOrReflection,
+                    li,
+                    false,
+                    "directional light and infinite viewer: H = normalize(L + V) is one constant",
                 )
-            });
-            out.push(match (l.positional, l.attenuated) {
-                (false, _) => e(li, "attenuation", false, "the light is directional"),
-                (true, false) => e(li, "attenuation", false, "factors (1, 0, 0) give 1"),
-                (true, true) => e(li, "attenuation", true, "1/(k0 + k1 d + k2 d^2) per vertex"),
-            });
-            out.push(if l.spot {
-                e(li, "spotlight", true, "cone test and exponent per vertex")
             } else {
-                e(li, "spotlight", false, "cutoff 180: not a spotlight")
+                e(EffectKind::HalfwayOrReflection, li, false, "light specular x material specular is zero")
             });
-            let model = match self.rules.specular {
-                SpecularModel::BlinnPhong => "halfway vector H",
-                SpecularModel::Phong => "reflection vector R",
-            };
-            out.push(if !l.specular {
-                e(li, model, false, "light specular x material specular is zero")
-            } else if self.per_vertex_halfway(i) {
-                e(li, model, true, "per vertex")
+            out.push(if program.stages.iter().any(|s| matches!(s, Stage::Power(j, _) if *j == i)) {
+                e(EffectKind::SpecularPower, li, true, "max(cos, 0)^shininess per vertex")
+            } else if !l.specular {
+                e(EffectKind::SpecularPower, li, false, "no specular term")
             } else {
-                e(li, model, false, "directional light and infinite viewer: H = normalize(L + V) is one constant")
-            });
-            out.push(if !l.specular {
-                e(li, "specular power", false, "no specular term")
-            } else if self.shininess_zero.iter().all(|z| *z) {
-                e(li, "specular power", false, "shininess 0: max(cos, 0)^0 = 1")
-            } else {
-                e(li, "specular power", true, "max(cos, 0)^shininess per vertex")
+                e(EffectKind::SpecularPower, li, false, "shininess 0: max(cos, 0)^0 = 1")
             });
         }
         out

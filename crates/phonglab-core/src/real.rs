@@ -46,8 +46,6 @@ pub trait Real:
     fn to_f64(self) -> f64;
     /// Square root.
     fn sqrt(self) -> Self;
-    /// `self` to the power `e`, with `0^0 = 1` (IEEE `pow`).
-    fn powf(self, e: Self) -> Self;
     /// The engine's exact power: [`crate::pow::pow_f32`] (computed in f64, rounded once)
     /// for f32, the C library's `pow` for f64.
     fn pow_exact(self, e: Self) -> Self;
@@ -87,8 +85,6 @@ pub trait Vec3Ops<S>:
     const ZERO: Self;
     /// Builds a vector.
     fn new(x: S, y: S, z: S) -> Self;
-    /// The same value in every component.
-    fn splat(v: S) -> Self;
     /// x component.
     fn x(self) -> S;
     /// y component.
@@ -145,10 +141,6 @@ macro_rules! impl_real {
                 <$t>::sqrt(self)
             }
             #[inline(always)]
-            fn powf(self, e: Self) -> Self {
-                <$t>::powf(self, e)
-            }
-            #[inline(always)]
             fn pow_exact(self, e: Self) -> Self {
                 impl_real!(@pow $t, self, e)
             }
@@ -191,10 +183,6 @@ macro_rules! impl_real {
             #[inline(always)]
             fn new(x: $t, y: $t, z: $t) -> Self {
                 <$v3>::new(x, y, z)
-            }
-            #[inline(always)]
-            fn splat(v: $t) -> Self {
-                <$v3>::splat(v)
             }
             #[inline(always)]
             fn x(self) -> $t {

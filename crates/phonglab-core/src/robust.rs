@@ -69,33 +69,38 @@ pub fn transform_vector3(m: &DMat4, v: DVec3) -> DVec3 {
     DVec3::new(row(0), row(1), row(2))
 }
 
-/// `|v|`, computed as `|v s| / s` with `s` the power of two that brings the largest
-/// component into [1, 2) (an exact scaling), so that neither underflow (`|v| = 1e-25`) nor
-/// overflow (`|v| = 1e20` in f32, `1e200` in f64) of `|v|^2` loses the answer. Returns 0
-/// for the zero vector and `+inf` when a component is infinite.
+/// `(x, y, z) / |(x, y, z)|` and `|(x, y, z)|` on components, without branches (so loops of
+/// it vectorise): the largest component is brought into [1, 2) by an exact power-of-two
+/// scaling `s` before squaring, so neither underflow (`|v| = 1e-25`) nor overflow (`|v| =
+/// 1e20` in f32, `1e200` in f64) of `|v|^2` loses the answer; then one reciprocal and three
+/// multiplications (within 1 ulp, a third of the cost of three divisions). The flag says
+/// whether the direction is defined (not for a zero or non-finite vector: the other
+/// outputs are then meaningless). The length is `|v s| / s`, or the largest component
+/// itself (0 or +inf) where the direction is undefined.
 #[inline(always)]
-pub fn scaled_length<S: Real>(v: S::V3) -> S {
-    let m = v.max_abs();
-    if m == S::ZERO || !m.is_finite() {
-        return m;
-    }
+pub fn normalize3<S: Real>(x: S, y: S, z: S) -> (S, S, S, S, bool) {
+    let m = x.abs().max(y.abs()).max(z.abs());
+    let ok = m != S::ZERO && m.is_finite();
     let s = S::inverse_pow2_scale(m);
-    let u = v * s;
-    u.dot(u).sqrt() / s
+    let (ux, uy, uz) = (x * s, y * s, z * s);
+    let len_s = (ux * ux + uy * uy + uz * uz).sqrt();
+    let inv = S::ONE / len_s;
+    let len = if ok { len_s / s } else { m };
+    (ux * inv, uy * inv, uz * inv, len, ok)
 }
 
-/// `v / |v|` computed with the exact power-of-two scaling of [`scaled_length`], then one
-/// reciprocal; `None` for a zero or non-finite vector (the direction is undefined).
+/// `|v|` by [`normalize3`]: 0 for the zero vector, `+inf` when a component is infinite.
+#[inline(always)]
+pub fn scaled_length<S: Real>(v: S::V3) -> S {
+    normalize3::<S>(v.x(), v.y(), v.z()).3
+}
+
+/// `v / |v|` by [`normalize3`]; `None` for a zero or non-finite vector (the direction is
+/// undefined).
 #[inline(always)]
 pub fn try_normalize<S: Real>(v: S::V3) -> Option<S::V3> {
-    let m = v.max_abs();
-    if m == S::ZERO || !m.is_finite() {
-        return None;
-    }
-    let u = v * S::inverse_pow2_scale(m);
-    // One division and three multiplications: within 1 ulp, and a third of the cost.
-    let inv = S::ONE / u.dot(u).sqrt();
-    Some(u * inv)
+    let (x, y, z, _, ok) = normalize3::<S>(v.x(), v.y(), v.z());
+    ok.then(|| S::V3::new(x, y, z))
 }
 
 /// [`try_normalize`], with the zero vector for an undefined direction.

@@ -1,187 +1,44 @@
-//! The specialised evaluator: lights arrays of vertices with only the stages the scene's
-//! [`Key`] calls for, on the constants the general engine prepares.
+//! The specialised evaluator: runs the [`Program`] a scene's [`Key`] compiles to, and
+//! nothing else, over arrays of vertices.
 //!
-//! Vertices are processed in chunks of [`CHUNK`], as structures of arrays. For each light
-//! one fused loop runs over the chunk, and what the key says is not needed is not in it:
+//! As Mesa's `ffvertex_prog.c` builds a vertex program from the fixed-function state key,
+//! [`Program::compile`] turns the key into a list of [`Stage`]s once per key, and the chunk
+//! loop runs exactly that list. What the key does not call for is not in the list, so it
+//! does not run:
 //!
-//! | key says | stage skipped |
+//! | key says | stages left out |
 //! |---|---|
-//! | directional light | L, d, attenuation (L is a constant) |
-//! | directional light, infinite viewer, Blinn-Phong | H (a constant) |
-//! | attenuation (1, 0, 0) | attenuation |
-//! | cutoff 180 | cone test and spot power |
-//! | zero specular product | H, n.H and the power |
-//! | shininess 0 | the power (`x^0 = 1`) |
-//! | one-sided | the back side |
-//! | GL_NORMALIZE off, or GL_RESCALE_NORMAL on a length-preserving modelview | normalisation |
+//! | directional light | `LightVector`, `Attenuate`, `SpotCone`, `SpotPower` (L and the spot factor are constants) |
+//! | directional light, infinite viewer, Blinn-Phong | `Halfway` (H is a constant) |
+//! | attenuation (1, 0, 0) | `Attenuate` |
+//! | cutoff 180 | `SpotCone`, `SpotPower` |
+//! | zero specular product | `Halfway`/`Reflect`, `SpecularCosine`, `Power` |
+//! | shininess 0 | `Power` (`x^0 = 1`) |
+//! | one-sided | every back-side stage |
+//! | GL_NORMALIZE off, or GL_RESCALE_NORMAL with a factor of exactly 1 | `NormalizeNormal`, `RescaleNormal` |
+//! | emission and scene ambient zero (or left out by the rules) | `SceneColor` |
 //!
-//! Each stage calls the same function of `lighting::terms` as the general [`Engine`],
-//! in the same order, so the two agree bit for bit (tested on every public case and on
-//! random scenes). The plan is rebuilt only when the key changes ([`Lighter::update`]);
-//! a value that moves without switching an effect only refreshes the constants.
+//! Vertices are processed in chunks of [`CHUNK`], as structures of arrays; each stage is
+//! one loop over the chunk. Every stage computes its term with the same function of
+//! `lighting::terms` (and `robust`) as the general [`Engine`], in the same order, so the two
+//! agree bit for bit (tested on every public case and on random scenes), and a stage that
+//! is left out is one whose result is known exactly (a product by 1, a sum with +0). The
+//! program is rebuilt only when the key changes ([`Lighter::update`]); a value that moves
+//! without switching an effect only refreshes the constants.
+
+// The stages index parallel arrays by vertex: index loops are what vectorise here.
+#![allow(clippy::needless_range_loop)]
 
 use glam::{DVec3, Vec3};
 
 use crate::error::SceneError;
-use crate::lighting::{Engine, EvalOptions, LightPos, PreparedLight, Renormalize, fast_rsqrt, inside_cone, terms};
-use crate::plan::Key;
+use crate::lighting::{Engine, EvalOptions, LightPos, PreparedLight, fast_rsqrt, terms};
+use crate::plan::{Key, Program, SourceKind, Stage};
+use crate::pow::PowFn;
 use crate::real::Vec3Ops;
-use crate::robust::{mul0, transform_point};
-use crate::rules::{SpecularGate, SpecularModel};
+use crate::robust::{mul0, normalize3, transform_point};
+use crate::rules::SpecularModel;
 use crate::scene::{Scene, Vertex};
-
-/// The hot loop of [`Lighter::directional_fast`]: per vertex, the arithmetic of
-/// `terms::side` for a constant L and H, one channel at a time.
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-fn fast_loop(
-    c: &mut Chunk,
-    l: Vec3,
-    h: Vec3,
-    products: [Vec3; 3],
-    shin: f32,
-    sp: bool,
-    scale: f32,
-    pow: impl Fn(f32, f32) -> f32,
-) {
-    let [amb, dif, spe] = products.map(|v| v.to_array());
-    let n = c.len();
-    let (nx, ny, nz, zero) = (&c.nx[..n], &c.ny[..n], &c.nz[..n], &c.zero[..n]);
-    // Pass 1: the two cosines (glam's dot: (x x' + y y') + z z').
-    let mut ndl = [0.0f32; CHUNK];
-    let mut cos = [0.0f32; CHUNK];
-    for i in 0..n {
-        ndl[i] = nx[i] * l.x + ny[i] * l.y + nz[i] * l.z;
-        cos[i] = (nx[i] * h.x + ny[i] * h.y + nz[i] * h.z).max(0.0);
-    }
-    // Pass 2: the power, alone in its loop (so the f32 -> f64 -> f32 conversions do not
-    // stop the other passes from vectorising).
-    let mut p = [1.0f32; CHUNK];
-    if shin != 0.0 {
-        for i in 0..n {
-            p[i] = pow(cos[i], shin);
-        }
-    }
-    // Pass 3: the terms and the sum, channel by channel.
-    let acc = &mut c.acc[0];
-    for ch in 0..3 {
-        for i in 0..n {
-            let allowed = !zero[i] && sp && ndl[i] > 0.0;
-            let diffuse = if zero[i] { 0.0 } else { mul0(dif[ch], ndl[i].max(0.0)) };
-            let specular = if allowed { mul0(spe[ch], p[i]) } else { 0.0 };
-            let pri = amb[ch] + diffuse + specular;
-            acc[ch][i] += mul0(pri, scale);
-        }
-    }
-}
-
-/// A positional light (a spotlight or not), one side, Blinn-Phong, OpenGL's gate: the
-/// stages of `terms::light_vector`, `terms::attenuation`, `terms::spot`, `terms::halfway`
-/// and `terms::side` written out on plain arrays (f64 for L and d, as the general engine),
-/// so they vectorise. The same operations in the same order.
-#[inline(always)]
-fn positional_fast(
-    c: &mut Chunk,
-    pl: &PreparedLight<f32>,
-    lp: DVec3,
-    e: &Engine<f32>,
-    local_viewer: bool,
-    pow: impl Fn(f32, f32) -> f32,
-) {
-    let n = c.len();
-    let [amb, dif, spe] = pl.products[0].map(|v| v.to_array());
-    let shin = e.sides[0].shininess;
-    let attenuated = pl.k != [1.0, 0.0, 0.0];
-    let (mut lx, mut ly, mut lz, mut d) = ([0.0f32; CHUNK], [0.0f32; CHUNK], [0.0f32; CHUNK], [0.0f32; CHUNK]);
-    let mut l_ok = [false; CHUNK];
-    // L in f64, for the spot's cone test.
-    let (mut lx64, mut ly64, mut lz64) = ([0.0f64; CHUNK], [0.0f64; CHUNK], [0.0f64; CHUNK]);
-    // L = normalize(P_l - P) and d = |P_l - P|, both from one exact power-of-two scaling
-    // (robust::try_normalize and robust::scaled_length), in f64.
-    for i in 0..n {
-        let vp = lp - c.pos[i];
-        let m = vp.x.abs().max(vp.y.abs()).max(vp.z.abs());
-        let ok = m != 0.0 && m.is_finite();
-        let s = <f64 as crate::Real>::inverse_pow2_scale(m);
-        let u = vp * s;
-        let sq = (u.x * u.x + u.y * u.y + u.z * u.z).sqrt();
-        let inv = 1.0 / sq;
-        (lx64[i], ly64[i], lz64[i]) = (u.x * inv, u.y * inv, u.z * inv);
-        lx[i] = lx64[i] as f32;
-        ly[i] = ly64[i] as f32;
-        lz[i] = lz64[i] as f32;
-        d[i] = if ok { (sq / s) as f32 } else { m as f32 };
-        l_ok[i] = ok;
-    }
-    // The spot factor (terms::spot): (-L . s)^e inside the cone, 0 outside; 1 without a spot.
-    let mut spot = [1.0f32; CHUNK];
-    if let Some(sp) = pl.spot {
-        match sp.axis {
-            None => spot[..n].fill(0.0),
-            Some(axis) => {
-                let (mut cos, mut inside) = ([0.0f32; CHUNK], [false; CHUNK]);
-                for i in 0..n {
-                    let l = DVec3::new(lx64[i], ly64[i], lz64[i]);
-                    cos[i] = (-l.dot(axis)) as f32;
-                    inside[i] = l_ok[i] && inside_cone(-l, axis, sp.cutoff, sp.cos_cutoff, sp.sin_cutoff);
-                }
-                for i in 0..n {
-                    let p = pow(cos[i].max(0.0), sp.exponent);
-                    spot[i] = if inside[i] { p } else { 0.0 };
-                }
-            }
-        }
-    }
-    // att = 1 / (k0 + k1 d + k2 d^2); scale = mul0(att, spot).
-    let mut scale = [1.0f32; CHUNK];
-    for i in 0..n {
-        let att = if attenuated { terms::attenuation(pl.k, d[i]) } else { 1.0 };
-        scale[i] = mul0(att, spot[i]);
-    }
-    // H = normalize(L + V) (robust::try_normalize in f32).
-    let (mut hx, mut hy, mut hz) = ([0.0f32; CHUNK], [0.0f32; CHUNK], [0.0f32; CHUNK]);
-    let mut h_ok = [false; CHUNK];
-    for i in 0..n {
-        let v = if local_viewer { c.v[i] } else { Some(Vec3::Z) };
-        let (vx, vy, vz, v_ok) = match v {
-            Some(v) => (v.x, v.y, v.z, true),
-            None => (0.0, 0.0, 0.0, false),
-        };
-        let (x, y, z) = (lx[i] + vx, ly[i] + vy, lz[i] + vz);
-        let m = x.abs().max(y.abs()).max(z.abs());
-        let ok = m != 0.0 && m.is_finite() && v_ok && l_ok[i];
-        let s = <f32 as crate::Real>::inverse_pow2_scale(m);
-        let (ux, uy, uz) = (x * s, y * s, z * s);
-        let inv = 1.0 / (ux * ux + uy * uy + uz * uz).sqrt();
-        hx[i] = ux * inv;
-        hy[i] = uy * inv;
-        hz[i] = uz * inv;
-        h_ok[i] = ok;
-    }
-    // The cosines and the power.
-    let (mut ndl, mut cos) = ([0.0f32; CHUNK], [0.0f32; CHUNK]);
-    for i in 0..n {
-        ndl[i] = c.nx[i] * lx[i] + c.ny[i] * ly[i] + c.nz[i] * lz[i];
-        cos[i] = (c.nx[i] * hx[i] + c.ny[i] * hy[i] + c.nz[i] * hz[i]).max(0.0);
-    }
-    let mut p = [1.0f32; CHUNK];
-    if shin != 0.0 {
-        for i in 0..n {
-            p[i] = pow(cos[i], shin);
-        }
-    }
-    // The terms and the sums.
-    let acc = &mut c.acc[0];
-    for ch in 0..3 {
-        for i in 0..n {
-            let lit = l_ok[i] && !c.zero[i];
-            let diffuse = if lit { mul0(dif[ch], ndl[i].max(0.0)) } else { 0.0 };
-            let specular = if lit && h_ok[i] && ndl[i] > 0.0 { mul0(spe[ch], p[i]) } else { 0.0 };
-            let pri = amb[ch] + diffuse + specular;
-            acc[ch][i] += mul0(pri, scale[i]);
-        }
-    }
-}
 
 /// Does this CPU have AVX-512F and DQ (and AVX2, FMA)? (Checked once; `PHONGLAB_NO_AVX512`
 /// set in the environment turns the AVX-512 kernels off, for comparisons.)
@@ -222,7 +79,11 @@ pub struct Lit {
 pub struct Lighter {
     key: Key,
     engine: Engine<f32>,
-    /// Per light, the constants of a directional light: L (f64 and f32) and H.
+    /// The programs for each source of vertices, compiled from the key.
+    object: Program,
+    eye: Program,
+    eye_raw: Program,
+    /// Per light, the constants of a directional light: L and H.
     consts: Vec<LightConsts>,
     replans: usize,
 }
@@ -233,7 +94,7 @@ struct LightConsts {
     l: Option<Vec3>,
     /// H for a directional light with an infinite viewer under Blinn-Phong.
     h: Option<Vec3>,
-    /// The spot factor and scale of a directional light (constant over vertices).
+    /// The spot factor of a directional light (att = 1): its scale, constant over vertices.
     scale: f32,
 }
 
@@ -249,135 +110,89 @@ enum Output<'a> {
 /// Where a chunk's positions and normals come from.
 #[derive(Clone, Copy)]
 enum Source<'a> {
-    /// Object space (w = 1), transformed like the general engine does.
-    Object { positions: &'a [Vec3], normals: &'a [Vec3], with_positions: bool },
-    /// Eye space, final normals.
-    Eye { positions: &'a [Vec3], normals: &'a [Vec3] },
-    /// Eye space, normals to normalise (as `robust::normalize_or_zero`).
-    EyeRaw { positions: &'a [Vec3], normals: &'a [Vec3] },
-    /// One eye-space vertex (already divided by w).
+    /// Object space (w = 1): the program transforms them.
+    Object { positions: &'a [Vec3], normals: &'a [Vec3] },
+    /// Eye space: the normals as the equation uses them, or (`raw`) to renormalise.
+    Eye { positions: &'a [Vec3], normals: &'a [Vec3], raw: bool },
+    /// One eye-space vertex (already divided by w) with its final normal.
     One { pos: DVec3, n: Vec3 },
 }
 
 impl Source<'_> {
     fn len(&self) -> usize {
         match self {
-            Source::Object { positions, .. } | Source::Eye { positions, .. } | Source::EyeRaw { positions, .. } => {
-                positions.len()
-            }
+            Source::Object { positions, .. } | Source::Eye { positions, .. } => positions.len(),
             Source::One { .. } => 1,
         }
     }
 
-    /// Sets the chunk's positions and final normals from `start`.
+    /// Loads the chunk's inputs from `start`: normals, and (`positions`: only where a
+    /// stage reads them) object-space or eye-space points.
     #[inline(always)]
-    fn fill(&self, e: &Engine<f32>, c: &mut Chunk, start: usize) {
+    fn load(&self, c: &mut Chunk, start: usize, with_positions: bool) {
+        let n = c.len();
         match *self {
-            Source::Object { positions, normals, with_positions } => {
+            Source::Object { positions, normals } | Source::Eye { positions, normals, .. } => {
+                let normals = &normals[start..start + n];
+                for i in 0..n {
+                    let v = normals[i];
+                    (c.nx[i], c.ny[i], c.nz[i]) = (v.x, v.y, v.z);
+                }
                 if with_positions {
-                    for i in 0..c.len() {
-                        let p = positions[start + i].as_dvec3().extend(1.0);
-                        let pos_h = transform_point(&e.eye_from_object, p);
-                        c.pos[i] = pos_h.truncate() / pos_h.w;
+                    let positions = &positions[start..start + n];
+                    for i in 0..n {
+                        c.pos[i] = positions[i].as_dvec3();
                     }
-                }
-                transform_normals(e, &normals[start..start + c.n], c);
-            }
-            Source::Eye { positions, normals } => {
-                for i in 0..c.len() {
-                    c.pos[i] = positions[start + i].as_dvec3();
-                    c.set_nrm(i, normals[start + i]);
-                }
-            }
-            Source::EyeRaw { positions, normals } => {
-                for i in 0..c.len() {
-                    c.pos[i] = positions[start + i].as_dvec3();
-                    c.set_nrm(i, normals[start + i]);
-                }
-                match e.options.renormalize {
-                    Renormalize::Exact => normalize_chunk(c),
-                    Renormalize::FastRsqrt => normalize_chunk_fast(c),
-                    Renormalize::Skip => {}
                 }
             }
             Source::One { pos, n } => {
                 c.pos[0] = pos;
-                c.set_nrm(0, n);
+                (c.nx[0], c.ny[0], c.nz[0]) = (n.x, n.y, n.z);
             }
         }
-    }
-}
-
-/// `terms::normal_mode(mode, rescale, M n)` for a chunk, written on plain arrays without
-/// branches so it vectorises: the same operations in the same order as glam's
-/// `Mat3 * Vec3` (`x_axis x + y_axis y + z_axis z`) and `robust::try_normalize`.
-#[inline(always)]
-fn transform_normals(e: &Engine<f32>, normals: &[Vec3], c: &mut Chunk) {
-    let m = e.normal_matrix;
-    let n = normals.len().min(CHUNK);
-    for (i, &v) in normals.iter().enumerate() {
-        c.nx[i] = m.x_axis.x * v.x + m.y_axis.x * v.y + m.z_axis.x * v.z;
-        c.ny[i] = m.x_axis.y * v.x + m.y_axis.y * v.y + m.z_axis.y * v.z;
-        c.nz[i] = m.x_axis.z * v.x + m.y_axis.z * v.y + m.z_axis.z * v.z;
-    }
-    match e.normal_mode {
-        crate::NormalMode::AsIs => {}
-        crate::NormalMode::Rescale => {
-            let s = e.rescale;
-            for i in 0..n {
-                c.nx[i] *= s;
-                c.ny[i] *= s;
-                c.nz[i] *= s;
-            }
-        }
-        crate::NormalMode::Normalize => {
-            c.n = n;
-            normalize_chunk(c);
-        }
-    }
-}
-
-/// The chunk's normals times [`fast_rsqrt`] of their squared length (0 stays 0).
-#[inline(always)]
-fn normalize_chunk_fast(c: &mut Chunk) {
-    for i in 0..c.len() {
-        let (x, y, z) = (c.nx[i], c.ny[i], c.nz[i]);
-        let q = x * x + y * y + z * z;
-        let inv = if q > 0.0 { fast_rsqrt(q) } else { 0.0 };
-        c.nx[i] = x * inv;
-        c.ny[i] = y * inv;
-        c.nz[i] = z * inv;
-    }
-}
-
-/// `robust::normalize_or_zero` over the chunk's normals, on plain arrays.
-#[inline(always)]
-fn normalize_chunk(c: &mut Chunk) {
-    for i in 0..c.len() {
-        let (x, y, z) = (c.nx[i], c.ny[i], c.nz[i]);
-        let m = x.abs().max(y.abs()).max(z.abs());
-        let defined = m != 0.0 && m.is_finite();
-        let s = <f32 as crate::Real>::inverse_pow2_scale(m);
-        let (ux, uy, uz) = (x * s, y * s, z * s);
-        let inv = 1.0 / (ux * ux + uy * uy + uz * uz).sqrt();
-        c.nx[i] = if defined { ux * inv } else { 0.0 };
-        c.ny[i] = if defined { uy * inv } else { 0.0 };
-        c.nz[i] = if defined { uz * inv } else { 0.0 };
     }
 }
 
 /// Per-chunk arrays, one array per component so loops vectorise.
 struct Chunk {
     n: usize,
-    /// Eye-space positions (f64, as the general engine differences them).
+    /// Positions: object space as loaded, eye space after `TransformPosition` (f64, as the
+    /// general engine differences them).
     pos: [DVec3; CHUNK],
-    /// Final normals, by component, and whether each is zero.
+    /// Normals by component, and whether each is zero.
     nx: [f32; CHUNK],
     ny: [f32; CHUNK],
     nz: [f32; CHUNK],
     zero: [bool; CHUNK],
-    /// V per vertex (`None` at the eye).
-    v: [Option<Vec3>; CHUNK],
+    /// V per vertex, and whether it is defined.
+    vx: [f32; CHUNK],
+    vy: [f32; CHUNK],
+    vz: [f32; CHUNK],
+    v_ok: [bool; CHUNK],
+    /// The current light's L (f32 and f64), whether it is defined, and d.
+    lx: [f32; CHUNK],
+    ly: [f32; CHUNK],
+    lz: [f32; CHUNK],
+    l_ok: [bool; CHUNK],
+    lx64: [f64; CHUNK],
+    ly64: [f64; CHUNK],
+    lz64: [f64; CHUNK],
+    d: [f32; CHUNK],
+    /// The spot cosine and cone test; att spot.
+    spot_cos: [f32; CHUNK],
+    inside: [bool; CHUNK],
+    scale: [f32; CHUNK],
+    /// The current light's H (Blinn-Phong) or R (Phong), and whether it is defined.
+    hx: [f32; CHUNK],
+    hy: [f32; CHUNK],
+    hz: [f32; CHUNK],
+    h_ok: [bool; CHUNK],
+    /// The normals negated (the back side's), by component.
+    neg: [[f32; CHUNK]; 3],
+    /// Per side: n . L, the specular cosine, the power.
+    ndl: [[f32; CHUNK]; 2],
+    cos: [[f32; CHUNK]; 2],
+    p: [[f32; CHUNK]; 2],
     /// Sums per (side, primary or secondary) and channel.
     acc: [[[f32; CHUNK]; 3]; 4],
 }
@@ -399,37 +214,31 @@ impl Chunk {
             ny: [0.0; CHUNK],
             nz: [0.0; CHUNK],
             zero: [false; CHUNK],
-            v: [None; CHUNK],
+            vx: [0.0; CHUNK],
+            vy: [0.0; CHUNK],
+            vz: [1.0; CHUNK],
+            v_ok: [true; CHUNK],
+            lx: [0.0; CHUNK],
+            ly: [0.0; CHUNK],
+            lz: [0.0; CHUNK],
+            l_ok: [false; CHUNK],
+            lx64: [0.0; CHUNK],
+            ly64: [0.0; CHUNK],
+            lz64: [0.0; CHUNK],
+            d: [0.0; CHUNK],
+            spot_cos: [0.0; CHUNK],
+            inside: [false; CHUNK],
+            scale: [1.0; CHUNK],
+            hx: [0.0; CHUNK],
+            hy: [0.0; CHUNK],
+            hz: [0.0; CHUNK],
+            h_ok: [false; CHUNK],
+            neg: [[0.0; CHUNK]; 3],
+            ndl: [[0.0; CHUNK]; 2],
+            cos: [[0.0; CHUNK]; 2],
+            p: [[1.0; CHUNK]; 2],
             acc: [[[0.0; CHUNK]; 3]; 4],
         })
-    }
-
-    /// V at vertex `i`: per vertex for a local viewer, else (0, 0, 1).
-    #[inline(always)]
-    fn view(&self, i: usize, local: bool) -> Option<Vec3> {
-        if local { self.v[i] } else { Some(Vec3::Z) }
-    }
-
-    #[inline(always)]
-    fn nrm(&self, i: usize) -> Vec3 {
-        Vec3::new(self.nx[i], self.ny[i], self.nz[i])
-    }
-
-    #[inline(always)]
-    fn set_nrm(&mut self, i: usize, n: Vec3) {
-        (self.nx[i], self.ny[i], self.nz[i]) = (n.x, n.y, n.z);
-    }
-
-    #[inline(always)]
-    fn acc(&self, k: usize, i: usize) -> Vec3 {
-        Vec3::new(self.acc[k][0][i], self.acc[k][1][i], self.acc[k][2][i])
-    }
-
-    /// `acc = acc + x`, as the general engine sums.
-    #[inline(always)]
-    fn add(&mut self, k: usize, i: usize, x: Vec3) {
-        let a = self.acc(k, i) + x;
-        (self.acc[k][0][i], self.acc[k][1][i], self.acc[k][2][i]) = (a.x, a.y, a.z);
     }
 }
 
@@ -439,16 +248,26 @@ impl Lighter {
         let engine = Engine::<f32>::with_options(scene, options)?;
         let key = Key::of(scene, options);
         let consts = Self::fold(&engine, &key);
-        Ok(Lighter { key, engine, consts, replans: 1 })
+        let [object, eye, eye_raw] = Self::compile(&key, options);
+        Ok(Lighter { key, engine, object, eye, eye_raw, consts, replans: 1 })
     }
 
-    /// Takes a changed scene: re-plans if its key differs, else refreshes the constants
-    /// only. Returns whether it re-planned.
+    fn compile(key: &Key, options: EvalOptions) -> [Program; 3] {
+        [
+            Program::compile(key, SourceKind::Object),
+            Program::compile(key, SourceKind::Eye),
+            Program::compile(key, SourceKind::EyeRaw(options.renormalize)),
+        ]
+    }
+
+    /// Takes a changed scene: recompiles if its key differs, else refreshes the constants
+    /// only. Returns whether it recompiled.
     pub fn update(&mut self, scene: &Scene, options: EvalOptions) -> Result<bool, SceneError> {
         let engine = Engine::<f32>::with_options(scene, options)?;
         let key = Key::of(scene, options);
-        let replan = key != self.key;
+        let replan = key != self.key || options.renormalize != self.engine.options.renormalize;
         if replan {
+            [self.object, self.eye, self.eye_raw] = Self::compile(&key, options);
             self.key = key;
             self.replans += 1;
         }
@@ -457,19 +276,28 @@ impl Lighter {
         Ok(replan)
     }
 
-    /// Positions matter only to positional lights and a local viewer.
-    fn needs_positions(&self) -> bool {
-        self.key.per_vertex_view || self.key.lights.iter().any(|l| l.positional)
-    }
-
-    /// How many times a plan has been built (1 after [`Lighter::new`]).
+    /// How many times a program has been compiled (1 after [`Lighter::new`]).
     pub fn replans(&self) -> usize {
         self.replans
     }
 
-    /// The key the plan was built from.
+    /// The key the program was compiled from.
     pub fn key(&self) -> &Key {
         &self.key
+    }
+
+    /// The program object-space vertices run (Gouraud, the vertex panel).
+    pub fn program(&self) -> &Program {
+        &self.object
+    }
+
+    /// The program `source` runs.
+    pub fn program_for(&self, source: SourceKind) -> &Program {
+        match source {
+            SourceKind::Object => &self.object,
+            SourceKind::Eye => &self.eye,
+            SourceKind::EyeRaw(_) => &self.eye_raw,
+        }
     }
 
     /// Constants that do not depend on the vertex: a directional light's L, its H under
@@ -498,10 +326,7 @@ impl Lighter {
     /// two-sided lighting) receive the colours of `positions[i]`, `normals[i]`.
     pub fn light_batch(&self, positions: &[Vec3], normals: &[Vec3], front: &mut [Lit], back: Option<&mut [Lit]>) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(
-            Source::Object { positions, normals, with_positions: self.needs_positions() },
-            Output::Lit { front, back },
-        );
+        self.run(Source::Object { positions, normals }, Output::Lit { front, back }, None);
     }
 
     /// [`Lighter::light_batch`] writing only each side's colour sum (primary + secondary
@@ -514,15 +339,12 @@ impl Lighter {
         back: Option<&mut [[f32; 4]]>,
     ) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(
-            Source::Object { positions, normals, with_positions: self.needs_positions() },
-            Output::Sum { front, back },
-        );
+        self.run(Source::Object { positions, normals }, Output::Sum { front, back }, None);
     }
 
     /// [`Lighter::light_batch_eye_sum`] with normals not yet normalised: each is
-    /// normalised first (as `robust::normalize_or_zero`), as Phong shading renormalises its
-    /// interpolated normals.
+    /// renormalised first as the options say (exactly, by fast rsqrt, or not at all), as
+    /// Phong shading treats its interpolated normals.
     pub fn light_batch_eye_sum_normalizing(
         &self,
         positions: &[Vec3],
@@ -531,7 +353,7 @@ impl Lighter {
         back: Option<&mut [[f32; 4]]>,
     ) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(Source::EyeRaw { positions, normals }, Output::Sum { front, back });
+        self.run(Source::Eye { positions, normals, raw: true }, Output::Sum { front, back }, None);
     }
 
     /// Lights vertices given in eye space, positions (w = 1) and the normals the equation
@@ -545,7 +367,23 @@ impl Lighter {
         back: Option<&mut [[f32; 4]]>,
     ) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(Source::Eye { positions, normals }, Output::Sum { front, back });
+        self.run(Source::Eye { positions, normals, raw: false }, Output::Sum { front, back }, None);
+    }
+
+    /// [`Lighter::light_batch`] that also records every stage it ran, once per chunk, in
+    /// order: what the tests check the program against.
+    pub fn light_batch_traced(&self, positions: &[Vec3], normals: &[Vec3]) -> (Vec<[Lit; 2]>, Vec<Stage>) {
+        assert_eq!(positions.len(), normals.len(), "one normal per position");
+        let mut front = vec![Lit::default(); positions.len()];
+        let mut back = vec![Lit::default(); positions.len()];
+        let mut trace = Vec::new();
+        self.run(
+            Source::Object { positions, normals },
+            Output::Lit { front: &mut front, back: Some(&mut back) },
+            Some(&mut trace),
+        );
+        let two = self.key.two_sided;
+        (front.into_iter().zip(back).map(|(f, b)| [f, if two { b } else { f }]).collect(), trace)
     }
 
     /// One vertex with any w, as [`Engine::light`] takes it (points at infinity go through
@@ -564,71 +402,86 @@ impl Lighter {
         }
         let mut out = [Lit::default(); 2];
         let (f, b) = out.split_at_mut(1);
-        self.run(Source::One { pos: pos_h.truncate() / pos_h.w, n }, Output::Lit { front: f, back: Some(b) });
+        self.run(Source::One { pos: pos_h.truncate() / pos_h.w, n }, Output::Lit { front: f, back: Some(b) }, None);
         if !self.key.two_sided {
             out[1] = out[0];
         }
         out
     }
 
-    /// The chunked driver: `fill` sets positions and final normals of a chunk. Runs a copy
-    /// compiled for AVX2 and FMA when the CPU has them (the same operations: FMA only
-    /// replaces the library call behind `mul_add` in the exact products).
-    fn run(&self, src: Source<'_>, out: Output<'_>) {
+    /// The chunked driver. Runs a copy compiled for AVX-512 or AVX2 and FMA when the CPU
+    /// has them (the same operations: FMA only replaces the library call behind `mul_add`
+    /// in the exact products).
+    fn run(&self, src: Source<'_>, out: Output<'_>, trace: Option<&mut Vec<Stage>>) {
         #[cfg(target_arch = "x86_64")]
         if has_avx512() {
             // SAFETY: the CPU has AVX-512F/DQ, AVX2 and FMA (checked just above).
-            unsafe { self.run_avx512(src, out) };
+            unsafe { self.run_avx512(src, out, trace) };
             return;
         }
         #[cfg(target_arch = "x86_64")]
         if has_avx2_fma() {
             // SAFETY: the CPU has AVX2 and FMA (checked just above).
-            unsafe { self.run_avx2_fma(src, out) };
+            unsafe { self.run_avx2_fma(src, out, trace) };
             return;
         }
-        self.run_portable(src, out);
+        self.run_portable(src, out, trace);
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx512f,avx512dq,avx2,fma")]
-    fn run_avx512(&self, src: Source<'_>, out: Output<'_>) {
-        self.run_portable(src, out);
+    fn run_avx512(&self, src: Source<'_>, out: Output<'_>, trace: Option<&mut Vec<Stage>>) {
+        self.run_portable(src, out, trace);
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    fn run_avx2_fma(&self, src: Source<'_>, out: Output<'_>) {
-        self.run_portable(src, out);
+    fn run_avx2_fma(&self, src: Source<'_>, out: Output<'_>, trace: Option<&mut Vec<Stage>>) {
+        self.run_portable(src, out, trace);
     }
 
     #[inline(always)]
-    fn run_portable(&self, src: Source<'_>, mut out: Output<'_>) {
+    fn run_portable(&self, src: Source<'_>, mut out: Output<'_>, mut trace: Option<&mut Vec<Stage>>) {
         let count = src.len();
         let front_len = match &out {
             Output::Lit { front, .. } => front.len(),
             Output::Sum { front, .. } => front.len(),
         };
         assert!(front_len >= count, "front output too short");
+        let program = match src {
+            Source::Object { .. } => &self.object,
+            Source::Eye { raw: true, .. } => &self.eye_raw,
+            Source::Eye { raw: false, .. } | Source::One { .. } => &self.eye,
+        };
         let two = self.key.two_sided;
+        let scene_color = program.has(Stage::SceneColor);
+        // Positions are read by the stages that place the vertex: only a positional light or
+        // a per-vertex V needs them.
+        let with_positions = self.key.needs_positions();
         let mut c = Chunk::new();
         let mut start = 0;
         while start < count {
             c.n = CHUNK.min(count - start);
-            src.fill(&self.engine, &mut c, start);
-            self.light_chunk(&mut c);
+            src.load(&mut c, start, with_positions);
+            self.clear_sums(&mut c);
+            for &stage in &program.stages {
+                self.stage(&mut c, stage);
+                if let Some(t) = trace.as_deref_mut() {
+                    t.push(stage);
+                }
+            }
             let r = start..start + c.n;
             match &mut out {
                 Output::Lit { front, back } => {
-                    self.write(&c, 0, &mut front[r.clone()]);
+                    self.write(&c, 0, scene_color, &mut front[r.clone()]);
                     if let Some(b) = back.as_deref_mut().filter(|_| two) {
-                        self.write(&c, 1, &mut b[r]);
+                        self.write(&c, 1, scene_color, &mut b[r]);
                     }
                 }
                 Output::Sum { front, back } => {
-                    self.write_sum(&c, 0, &mut front[r.clone()]);
+                    self.write_sum(&c, 0, scene_color, &mut front[r.clone()]);
                     if let Some(b) = back.as_deref_mut().filter(|_| two) {
-                        self.write_sum(&c, 1, &mut b[r]);
+                        self.write_sum(&c, 1, scene_color, &mut b[r]);
                     }
                 }
             }
@@ -636,28 +489,286 @@ impl Lighter {
         }
     }
 
-    /// `terms::finish` for the chunk, written on plain arrays: `(e_cm + a_cm a_cs) + sum`,
-    /// NaN shown as 0, the alphas.
+    /// Zeroes the sums that will be read: per side, the primary, and the secondary with
+    /// separate specular.
     #[inline(always)]
-    fn write(&self, c: &Chunk, side: usize, out: &mut [Lit]) {
+    fn clear_sums(&self, c: &mut Chunk) {
+        let n = c.len();
+        let sides = if self.key.two_sided { 2 } else { 1 };
+        let kinds = if self.key.separate_specular { 2 } else { 1 };
+        for side in 0..sides {
+            for k in 2 * side..2 * side + kinds {
+                for ch in 0..3 {
+                    c.acc[k][ch][..n].fill(0.0);
+                }
+            }
+        }
+    }
+
+    /// Runs one stage over the chunk.
+    #[inline(always)]
+    fn stage(&self, c: &mut Chunk, stage: Stage) {
+        let e = &self.engine;
+        let n = c.len();
+        match stage {
+            Stage::TransformNormal => {
+                // glam's `Mat3 * Vec3`: x_axis x + y_axis y + z_axis z, per component.
+                let m = e.normal_matrix;
+                for i in 0..n {
+                    let (x, y, z) = (c.nx[i], c.ny[i], c.nz[i]);
+                    c.nx[i] = m.x_axis.x * x + m.y_axis.x * y + m.z_axis.x * z;
+                    c.ny[i] = m.x_axis.y * x + m.y_axis.y * y + m.z_axis.y * z;
+                    c.nz[i] = m.x_axis.z * x + m.y_axis.z * y + m.z_axis.z * z;
+                }
+            }
+            Stage::RescaleNormal => {
+                let s = e.rescale;
+                for i in 0..n {
+                    c.nx[i] *= s;
+                    c.ny[i] *= s;
+                    c.nz[i] *= s;
+                }
+            }
+            Stage::NormalizeNormal => {
+                // robust::normalize_or_zero.
+                for i in 0..n {
+                    let (x, y, z, _, ok) = normalize3::<f32>(c.nx[i], c.ny[i], c.nz[i]);
+                    c.nx[i] = if ok { x } else { 0.0 };
+                    c.ny[i] = if ok { y } else { 0.0 };
+                    c.nz[i] = if ok { z } else { 0.0 };
+                }
+            }
+            Stage::NormalizeNormalFast => {
+                for i in 0..n {
+                    let (x, y, z) = (c.nx[i], c.ny[i], c.nz[i]);
+                    let q = x * x + y * y + z * z;
+                    let inv = if q > 0.0 { fast_rsqrt(q) } else { 0.0 };
+                    c.nx[i] = x * inv;
+                    c.ny[i] = y * inv;
+                    c.nz[i] = z * inv;
+                }
+            }
+            Stage::TransformPosition => {
+                for i in 0..n {
+                    let pos_h = transform_point(&e.eye_from_object, c.pos[i].extend(1.0));
+                    c.pos[i] = pos_h.truncate() / pos_h.w;
+                }
+            }
+            Stage::ZeroNormals => {
+                for i in 0..n {
+                    c.zero[i] = terms::is_zero_normal::<f32>(Vec3::new(c.nx[i], c.ny[i], c.nz[i]));
+                }
+            }
+            Stage::ViewVector => {
+                let (local, plane) = (self.key.local_viewer, e.rules.viewer_from_eye_plane());
+                for i in 0..n {
+                    let v = terms::view_vector::<f32>(local, plane, c.pos[i]);
+                    let v3 = v.unwrap_or(Vec3::ZERO);
+                    (c.vx[i], c.vy[i], c.vz[i], c.v_ok[i]) = (v3.x, v3.y, v3.z, v.is_some());
+                }
+            }
+            Stage::LightVector(li) => {
+                let LightPos::Positional(lp) = e.lights[li].pos else { return };
+                // terms::light_direction on components: one robust::normalize3 in f64.
+                for i in 0..n {
+                    let vp = lp - c.pos[i];
+                    let (x, y, z, d, ok) = normalize3::<f64>(vp.x, vp.y, vp.z);
+                    (c.lx64[i], c.ly64[i], c.lz64[i], c.l_ok[i]) = (x, y, z, ok);
+                    (c.lx[i], c.ly[i], c.lz[i]) = (x as f32, y as f32, z as f32);
+                    c.d[i] = d as f32;
+                }
+                c.scale[..n].fill(1.0);
+            }
+            Stage::LightConstant(li) => {
+                let k = &self.consts[li];
+                c.l_ok[..n].fill(k.l.is_some());
+                c.scale[..n].fill(k.scale);
+                // The cosines read the constant itself; per-vertex H or R read it as arrays.
+                let per_vertex_h_or_r = self.key.lights[li].specular
+                    && (e.rules.specular == SpecularModel::Phong || self.key.per_vertex_halfway(li));
+                if per_vertex_h_or_r {
+                    let l = k.l.unwrap_or(Vec3::ZERO);
+                    c.lx[..n].fill(l.x);
+                    c.ly[..n].fill(l.y);
+                    c.lz[..n].fill(l.z);
+                }
+            }
+            Stage::Attenuate(li) => {
+                let k = e.lights[li].k;
+                for i in 0..n {
+                    c.scale[i] = terms::attenuation(k, c.d[i]);
+                }
+            }
+            Stage::SpotCone(li) => {
+                let Some(sp) = e.lights[li].spot else { return };
+                match sp.axis {
+                    None => c.inside[..n].fill(false),
+                    Some(axis) => {
+                        for i in 0..n {
+                            let l = DVec3::new(c.lx64[i], c.ly64[i], c.lz64[i]);
+                            let (cos, inside) = terms::spot_cone(&sp, axis, l);
+                            c.spot_cos[i] = cos;
+                            c.inside[i] = c.l_ok[i] && inside;
+                        }
+                    }
+                }
+            }
+            Stage::SpotPower(li) => {
+                let Some(sp) = e.lights[li].spot else { return };
+                if sp.axis.is_none() {
+                    c.inside[..n].fill(false);
+                }
+                let mut f = [0.0f32; CHUNK];
+                with_pow!(e.options.pow, |pow| { power_loop(&c.spot_cos, &mut f, n, sp.exponent, pow) });
+                for i in 0..n {
+                    let spot = if c.inside[i] { f[i] } else { 0.0 };
+                    // scale = mul0(att, spot), att from `Attenuate` (or 1).
+                    c.scale[i] = mul0(c.scale[i], spot);
+                }
+            }
+            Stage::Halfway(_) => {
+                // terms::halfway: normalize(L + V), defined where L, V and L + V are.
+                for i in 0..n {
+                    let (x, y, z, _, ok) = normalize3::<f32>(c.lx[i] + c.vx[i], c.ly[i] + c.vy[i], c.lz[i] + c.vz[i]);
+                    (c.hx[i], c.hy[i], c.hz[i]) = (x, y, z);
+                    c.h_ok[i] = ok && c.l_ok[i] && c.v_ok[i];
+                }
+            }
+            Stage::HalfwayConstant(li) => {
+                // `SpecularCosine` reads the constant itself.
+                c.h_ok[..n].fill(self.consts[li].h.is_some());
+            }
+            Stage::Reflect(_) => {
+                let clamped = e.rules.reflect_clamped();
+                for i in 0..n {
+                    let (x, y, z) = terms::reflect3(c.nx[i], c.ny[i], c.nz[i], c.lx[i], c.ly[i], c.lz[i], clamped);
+                    (c.hx[i], c.hy[i], c.hz[i]) = (x, y, z);
+                    // R is defined where L is and the normal is not zero; R . V needs V.
+                    c.h_ok[i] = c.l_ok[i] && !c.zero[i] && c.v_ok[i];
+                }
+            }
+            Stage::DiffuseCosine(li, side) => {
+                // n_side . L with n_side = n or -n (negation is exact); a directional light's
+                // L is the constant `consts[li].l`.
+                let ndl = &mut c.ndl[side];
+                let (nx, ny, nz) =
+                    if side == 0 { (&c.nx, &c.ny, &c.nz) } else { negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n) };
+                match self.consts.get(li).and_then(|k| k.l) {
+                    Some(l) if !self.key.lights[li].positional => {
+                        for i in 0..n {
+                            ndl[i] = terms::dot3(nx[i], ny[i], nz[i], l.x, l.y, l.z);
+                        }
+                    }
+                    _ => {
+                        for i in 0..n {
+                            ndl[i] = terms::dot3(nx[i], ny[i], nz[i], c.lx[i], c.ly[i], c.lz[i]);
+                        }
+                    }
+                }
+            }
+            Stage::SpecularCosine(li, side) => {
+                let cos = &mut c.cos[side];
+                match e.rules.specular {
+                    SpecularModel::BlinnPhong => {
+                        let (nx, ny, nz) =
+                            if side == 0 { (&c.nx, &c.ny, &c.nz) } else { negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n) };
+                        match self.consts.get(li).and_then(|k| k.h) {
+                            // HalfwayConstant: H is one vector.
+                            Some(h) => {
+                                for i in 0..n {
+                                    cos[i] = terms::dot3(nx[i], ny[i], nz[i], h.x, h.y, h.z);
+                                }
+                            }
+                            None => {
+                                for i in 0..n {
+                                    cos[i] = terms::dot3(nx[i], ny[i], nz[i], c.hx[i], c.hy[i], c.hz[i]);
+                                }
+                            }
+                        }
+                    }
+                    SpecularModel::Phong => {
+                        // R . V, the same on both sides (R is formed with the front normal).
+                        for i in 0..n {
+                            cos[i] = terms::dot3(c.hx[i], c.hy[i], c.hz[i], c.vx[i], c.vy[i], c.vz[i]);
+                        }
+                    }
+                }
+            }
+            Stage::Power(_, side) => {
+                let shin = e.sides[side].shininess;
+                let [p0, p1] = &mut c.p;
+                let p = if side == 0 { p0 } else { p1 };
+                with_pow!(e.options.pow, |pow| { power_loop(&c.cos[side], p, n, shin, pow) });
+            }
+            Stage::Sum(li, side) => self.sum(c, &e.lights[li], side),
+            // Added as the colours are written (`write`, `write_sum`).
+            Stage::SceneColor => {}
+        }
+    }
+
+    /// `Stage::Sum`: the light's terms channel by channel (`terms::channel`), added to the
+    /// side's sums. First which vertices the light reaches and where its specular is
+    /// allowed, then one loop per channel (so each vectorises).
+    #[inline(always)]
+    fn sum(&self, c: &mut Chunk, pl: &PreparedLight<f32>, side: usize) {
+        let e = &self.engine;
+        let n = c.len();
+        let [amb, dif, spe] = pl.products[side].map(|v| v.to_array());
+        let gate = e.rules.specular_gate();
+        let separate = e.separate_specular;
+        let specular_on = self.key.lights.get(pl.index).is_some_and(|l| l.specular);
+        let (ndl, cos, scale) = (&c.ndl[side][..n], &c.cos[side][..n], &c.scale[..n]);
+        let (l_ok, zero, h_ok) = (&c.l_ok[..n], &c.zero[..n], &c.h_ok[..n]);
+        // Shininess 0 (no `Power` stage): max(cos, 0)^0 = 1.
+        let p = if self.key.shininess_zero[side] { &ONES[..n] } else { &c.p[side][..n] };
+        let mut lit = [false; CHUNK];
+        let mut allowed = [false; CHUNK];
+        for i in 0..n {
+            lit[i] = l_ok[i] && !zero[i];
+            allowed[i] = specular_on && lit[i] && h_ok[i] && terms::specular_allowed(gate, ndl[i], cos[i]);
+        }
+        let (lit, allowed) = (&lit[..n], &allowed[..n]);
+        let (pri, sec) = c.acc[2 * side..2 * side + 2].split_at_mut(1);
+        let channel = |acc: &mut [f32], ch: usize, k: usize| {
+            for i in 0..n {
+                let t = terms::channel(amb[ch], dif[ch], spe[ch], ndl[i], lit[i], allowed[i], p[i], separate, scale[i]);
+                acc[i] += if k == 2 { t.2 } else { t.3 };
+            }
+        };
+        for ch in 0..3 {
+            channel(&mut pri[0][ch][..n], ch, 2);
+        }
+        if separate {
+            for ch in 0..3 {
+                channel(&mut sec[0][ch][..n], ch, 3);
+            }
+        }
+    }
+
+    /// `terms::finish` for the chunk, written on plain arrays: `(e_cm + a_cm a_cs) + sum`
+    /// (the first term only with `SceneColor` in the program), NaN shown as 0, the alphas.
+    #[inline(always)]
+    fn write(&self, c: &Chunk, side: usize, scene_color: bool, out: &mut [Lit]) {
         let m = &self.engine.sides[side];
         let base = (m.emission + m.scene_ambient).to_array();
         let sep = self.key.separate_specular;
         let fix = |x: f32| if x.is_nan() { 0.0 } else { x };
         let (pr, sc) = (&c.acc[2 * side], &c.acc[2 * side + 1]);
         for (i, o) in out.iter_mut().enumerate().take(c.len()) {
-            o.primary = [fix(base[0] + pr[0][i]), fix(base[1] + pr[1][i]), fix(base[2] + pr[2][i]), m.alpha];
+            let p = |ch: usize| if scene_color { base[ch] + pr[ch][i] } else { pr[ch][i] };
+            o.primary = [fix(p(0)), fix(p(1)), fix(p(2)), m.alpha];
             o.secondary = if sep { [fix(sc[0][i]), fix(sc[1][i]), fix(sc[2][i]), 1.0] } else { [0.0; 4] };
         }
     }
 
     /// The colour sums of the chunk: `primary + secondary` rgb of [`Lighter::write`].
     #[inline(always)]
-    fn write_sum(&self, c: &Chunk, side: usize, out: &mut [[f32; 4]]) {
+    fn write_sum(&self, c: &Chunk, side: usize, scene_color: bool, out: &mut [[f32; 4]]) {
         let m = &self.engine.sides[side];
-        let base = (m.emission + m.scene_ambient).to_array();
+        let base = if scene_color { (m.emission + m.scene_ambient).to_array() } else { [0.0; 3] };
         let fix = |x: f32| if x.is_nan() { 0.0 } else { x };
         let (pr, sc) = (&c.acc[2 * side], &c.acc[2 * side + 1]);
+        // Without `SceneColor`, base is +0 and `+0 + x = x` for every sum (which is never -0).
         if self.key.separate_specular {
             for (i, o) in out.iter_mut().enumerate().take(c.len()) {
                 *o = [
@@ -673,174 +784,59 @@ impl Lighter {
             }
         }
     }
+}
 
-    /// Every light's contribution to the chunk.
-    #[inline(always)]
-    fn light_chunk(&self, c: &mut Chunk) {
-        let e = &self.engine;
-        let n = c.len();
-        for i in 0..n {
-            c.zero[i] = terms::is_zero_normal::<f32>(c.nrm(i));
-        }
-        if self.key.per_vertex_view {
-            let (local, plane) = (self.key.local_viewer, e.rules.viewer_from_eye_plane());
-            for i in 0..n {
-                c.v[i] = terms::view_vector::<f32>(local, plane, c.pos[i]);
-            }
-        }
-        // Only the sums that will be read: per side, the primary, and the secondary with
-        // separate specular.
-        let sides = if self.key.two_sided { 2 } else { 1 };
-        for side in 0..sides {
-            for k in [2 * side, 2 * side + 1].into_iter().take(if self.key.separate_specular { 2 } else { 1 }) {
-                for ch in 0..3 {
-                    c.acc[k][ch][..n].fill(0.0);
-                }
-            }
-        }
-        for (li, pl) in e.lights.iter().enumerate() {
-            match pl.pos {
-                LightPos::Directional { .. } => self.directional(c, pl, &self.consts[li]),
-                LightPos::Positional(_) => self.positional(c, pl),
-            }
-        }
+/// The back side's normal `-n` into `neg`, by component (negation is exact).
+#[inline(always)]
+fn negated<'a>(
+    neg: &'a mut [[f32; CHUNK]; 3],
+    nx: &[f32; CHUNK],
+    ny: &[f32; CHUNK],
+    nz: &[f32; CHUNK],
+    n: usize,
+) -> (&'a [f32; CHUNK], &'a [f32; CHUNK], &'a [f32; CHUNK]) {
+    for i in 0..n.min(CHUNK) {
+        neg[0][i] = -nx[i];
+        neg[1][i] = -ny[i];
+        neg[2][i] = -nz[i];
     }
+    let [x, y, z] = neg;
+    (x, y, z)
+}
 
-    #[inline(always)]
-    fn spec_inputs(&self, h: Option<Vec3>, r: Option<Vec3>, v: Option<Vec3>) -> terms::SpecularInputs<f32> {
-        terms::SpecularInputs { h, r, v, gate: self.engine.rules.specular_gate(), model: self.engine.rules.specular }
-    }
-
-    /// Both sides' terms of one vertex, added to the chunk's sums.
-    #[inline(always)]
-    fn accumulate(
-        &self,
-        c: &mut Chunk,
-        i: usize,
-        pl: &PreparedLight<f32>,
-        lit: Option<Vec3>,
-        spec: &terms::SpecularInputs<f32>,
-        scale: f32,
-    ) {
-        let e = &self.engine;
-        let sides = if self.key.two_sided { 2 } else { 1 };
-        for side in 0..sides {
-            let n_side = if side == 0 { c.nrm(i) } else { -c.nrm(i) };
-            let st = terms::side::<f32>(
-                pl.products[side],
-                n_side,
-                lit,
-                spec,
-                e.sides[side].shininess,
-                e.options.pow,
-                e.separate_specular,
-                scale,
-            );
-            c.add(2 * side, i, st.primary);
-            c.add(2 * side + 1, i, st.secondary);
-        }
-    }
-
-    /// A directional light: L, H and the spot factor are constants.
-    #[inline(always)]
-    fn directional(&self, c: &mut Chunk, pl: &PreparedLight<f32>, k: &LightConsts) {
-        let blinn = self.engine.rules.specular == SpecularModel::BlinnPhong;
-        let per_vertex_h = blinn && self.key.per_vertex_view;
-        // The hot path: constant L and H, Blinn-Phong, one side, no separate specular.
-        if !per_vertex_h && blinn && !self.key.two_sided && self.fast_path_ok() {
-            self.directional_fast(c, pl, k);
-            return;
-        }
-        for i in 0..c.len() {
-            let lit = k.l.filter(|_| !c.zero[i]);
-            let h = if per_vertex_h {
-                k.l.zip(c.view(i, self.key.per_vertex_view)).and_then(|(l, v)| terms::halfway::<f32>(l, v))
-            } else if blinn {
-                k.h
-            } else {
-                None
-            };
-            let r = lit.map(|l| terms::reflect::<f32>(c.nrm(i), l, self.engine.rules.reflect_clamped()));
-            let spec = self.spec_inputs(h, r, c.view(i, self.key.per_vertex_view));
-            self.accumulate(c, i, pl, lit, &spec, k.scale);
-        }
-    }
-
-    #[inline(always)]
-    fn fast_path_ok(&self) -> bool {
-        self.engine.rules.specular_gate() == SpecularGate::LitSide && !self.engine.separate_specular
-    }
-
-    /// Directional light, infinite viewer (or constant H), Blinn-Phong, OpenGL's gate, one
-    /// side: `terms::side` written out channel by channel on plain arrays so the loop
-    /// vectorises. The same operations in the same order as `terms::side`.
-    #[inline(always)]
-    fn directional_fast(&self, c: &mut Chunk, pl: &PreparedLight<f32>, k: &LightConsts) {
-        let e = &self.engine;
-        let [amb, dif, spe] = pl.products[0];
-        let shin = e.sides[0].shininess;
-        let scale = k.scale;
-        let Some(l) = k.l else {
-            // No direction: ambient only.
-            let pri = crate::robust::scale0::<f32>(amb, scale);
-            for i in 0..c.len() {
-                c.add(0, i, pri);
-            }
-            return;
-        };
-        let h = k.h.unwrap_or(Vec3::ZERO);
-        let sp = k.h.is_some() && spe != Vec3::ZERO;
-        match e.options.pow {
-            crate::PowFn::Exact => fast_loop(c, l, h, [amb, dif, spe], shin, sp, scale, crate::pow::pow_f32),
-            crate::PowFn::Llvmpipe => {
-                fast_loop(c, l, h, [amb, dif, spe], shin, sp, scale, |x, y| crate::PowFn::Llvmpipe.pow(x, y))
-            }
-            crate::PowFn::Schlick => {
-                fast_loop(c, l, h, [amb, dif, spe], shin, sp, scale, |x, y| crate::PowFn::Schlick.pow(x, y))
-            }
-        }
-    }
-
-    /// A positional light: L, d, attenuation and the spot factor per vertex.
-    #[inline(always)]
-    fn positional(&self, c: &mut Chunk, pl: &PreparedLight<f32>) {
-        let e = &self.engine;
-        if !self.key.two_sided
-            && e.rules.specular == SpecularModel::BlinnPhong
-            && self.fast_path_ok()
-            && let LightPos::Positional(lp) = pl.pos
-        {
-            let lv = self.key.per_vertex_view;
-            match e.options.pow {
-                crate::PowFn::Exact => positional_fast(c, pl, lp, e, lv, crate::pow::pow_f32),
-                crate::PowFn::Llvmpipe => positional_fast(c, pl, lp, e, lv, |x, y| crate::PowFn::Llvmpipe.pow(x, y)),
-                crate::PowFn::Schlick => positional_fast(c, pl, lp, e, lv, |x, y| crate::PowFn::Schlick.pow(x, y)),
-            }
-            return;
-        }
-        let attenuated = pl.k != [1.0, 0.0, 0.0];
-        let blinn = e.rules.specular == SpecularModel::BlinnPhong;
-        for i in 0..c.len() {
-            let (l64, d64) = terms::light_vector(&pl.pos, c.pos[i], false);
-            let att = match (attenuated, d64) {
-                (true, Some(d)) => terms::attenuation(pl.k, d as f32),
-                _ => 1.0,
-            };
-            let spot = pl.spot.map_or(1.0, |sp| terms::spot(&sp, l64, e.options.pow).2);
-            let scale = mul0(att, spot);
-            let l = l64.map(Vec3::from_dvec3);
-            let lit = l.filter(|_| !c.zero[i]);
-            let h = if blinn {
-                l.zip(c.view(i, self.key.per_vertex_view)).and_then(|(l, v)| terms::halfway::<f32>(l, v))
-            } else {
-                None
-            };
-            let r = lit.map(|l| terms::reflect::<f32>(c.nrm(i), l, self.engine.rules.reflect_clamped()));
-            let spec = self.spec_inputs(h, r, c.view(i, self.key.per_vertex_view));
-            self.accumulate(c, i, pl, lit, &spec, scale);
-        }
+/// `p[i] = pow(max(x[i], 0), e)` over the chunk: the power alone in its loop, so the
+/// f32 -> f64 -> f32 conversions of `pow_f32` vectorise.
+#[inline(always)]
+fn power_loop(x: &[f32; CHUNK], p: &mut [f32; CHUNK], n: usize, e: f32, pow: impl Fn(f32, f32) -> f32) {
+    for i in 0..n.min(CHUNK) {
+        p[i] = pow(x[i].max(0.0), e);
     }
 }
+
+/// Powers of 1, for a side with shininess 0.
+static ONES: [f32; CHUNK] = [1.0; CHUNK];
+
+/// Expands `$body` once per power function with `$pow` bound to it as a closure, so each
+/// loop is compiled with its own power inlined (and vectorised where it can be).
+macro_rules! with_pow {
+    ($which:expr, |$pow:ident| $body:block) => {
+        match $which {
+            PowFn::Exact => {
+                let $pow = crate::pow::pow_f32;
+                $body
+            }
+            PowFn::Llvmpipe => {
+                let $pow = |x: f32, y: f32| PowFn::Llvmpipe.pow(x, y);
+                $body
+            }
+            PowFn::Schlick => {
+                let $pow = |x: f32, y: f32| PowFn::Schlick.pow(x, y);
+                $body
+            }
+        }
+    };
+}
+use with_pow;
 
 #[cfg(test)]
 mod tests {
@@ -859,5 +855,6 @@ mod tests {
         assert!(l.update(&scene, EvalOptions::default()).unwrap());
         assert_eq!(l.replans(), 2);
         assert!(!l.key().lights[0].positional);
+        assert!(!l.program().has(Stage::LightVector(0)));
     }
 }

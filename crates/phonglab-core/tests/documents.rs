@@ -222,3 +222,12 @@ fn syntax_errors_name_the_line_and_column() {
     .unwrap_err();
     assert!(e.to_string().contains('9') && e.to_string().contains('8'), "{e}");
 }
+
+#[test]
+fn a_camera_that_does_not_give_the_view_matrix_is_refused_in_a_sentence() {
+    let mut doc = phonglab_core::Document::default();
+    doc.scene.eye_from_world = DMat4::IDENTITY;
+    let e = doc.validate().unwrap_err().to_string();
+    assert!(e.contains("the scene's view matrix is not the one its camera gives (Worksheet modelview)"), "{e}");
+    assert!(!e.contains("NaN"), "{e}");
+}

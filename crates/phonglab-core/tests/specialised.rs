@@ -236,3 +236,153 @@ fn a_placement_that_changes_w_is_planned_as_the_engine_lights_it() {
         assert!(lit_specular > 0, "the highlight is there");
     }
 }
+
+/// Every key bit switched off in turn from a scene that uses everything: the stages the
+/// evaluator runs (traced) are exactly the compiled program, chunk after chunk; each stage
+/// the key leaves out never runs; each effect the panel reports as skipped ran no stage of
+/// its own; and the colours stay the general engine's, bit for bit.
+#[test]
+fn skipped_stages_never_run_for_any_key_bit() {
+    use phonglab_core::plan::{EffectKind, Stage};
+    let full = || {
+        let mut s = Scene {
+            material: Material {
+                emission: DVec4::new(0.1, 0.0, 0.05, 1.0),
+                specular: DVec4::new(0.5, 0.4, 0.3, 1.0),
+                shininess: 20.0,
+                ..Material::default()
+            },
+            back_material: Some(Material { shininess: 7.0, specular: DVec4::ONE, ..Material::default() }),
+            eye_from_world: DMat4::from_translation(DVec3::new(0.0, 0.0, -4.0)),
+            world_from_object: DMat4::from_scale(DVec3::splat(1.5)),
+            normal_mode: NormalMode::Normalize,
+            ..Scene::default()
+        };
+        s.light_model.local_viewer = true;
+        s.light_model.two_sided = true;
+        s.lights = vec![Light {
+            position: DVec4::new(1.0, 2.0, 3.0, 1.0),
+            spot_direction: DVec3::new(-1.0, -2.0, -3.0),
+            spot_cutoff: 40.0,
+            spot_exponent: 3.0,
+            attenuation: [1.0, 0.1, 0.01],
+            ..Light::gl_default(0)
+        }];
+        s
+    };
+    type Bit = (&'static str, fn(&mut Scene), fn(&Stage) -> bool);
+    let bits: [Bit; 11] = [
+        ("nothing", |_| {}, |_| false),
+        (
+            "directional",
+            |s| s.lights[0].position.w = 0.0,
+            |st| matches!(st, Stage::LightVector(_) | Stage::Attenuate(_) | Stage::SpotCone(_) | Stage::SpotPower(_)),
+        ),
+        ("no attenuation", |s| s.lights[0].attenuation = [1.0, 0.0, 0.0], |st| matches!(st, Stage::Attenuate(_))),
+        ("no spot", |s| s.lights[0].spot_cutoff = 180.0, |st| matches!(st, Stage::SpotCone(_) | Stage::SpotPower(_))),
+        (
+            "no specular",
+            |s| {
+                s.material.specular = DVec4::new(0.0, 0.0, 0.0, 1.0);
+                s.back_material.as_mut().unwrap().specular = DVec4::new(0.0, 0.0, 0.0, 1.0);
+            },
+            |st| {
+                matches!(
+                    st,
+                    Stage::Halfway(_)
+                        | Stage::HalfwayConstant(_)
+                        | Stage::Reflect(_)
+                        | Stage::SpecularCosine(..)
+                        | Stage::Power(..)
+                )
+            },
+        ),
+        (
+            "shininess 0",
+            |s| {
+                s.material.shininess = 0.0;
+                s.back_material.as_mut().unwrap().shininess = 0.0;
+            },
+            |st| matches!(st, Stage::Power(..)),
+        ),
+        (
+            "one-sided",
+            |s| s.light_model.two_sided = false,
+            |st| {
+                matches!(
+                    st,
+                    Stage::DiffuseCosine(_, 1) | Stage::SpecularCosine(_, 1) | Stage::Power(_, 1) | Stage::Sum(_, 1)
+                )
+            },
+        ),
+        (
+            "normals as they are",
+            |s| s.normal_mode = NormalMode::AsIs,
+            |st| matches!(st, Stage::NormalizeNormal | Stage::RescaleNormal),
+        ),
+        (
+            "rescale with factor 1",
+            |s| {
+                s.normal_mode = NormalMode::Rescale;
+                s.world_from_object = DMat4::IDENTITY;
+            },
+            |st| matches!(st, Stage::NormalizeNormal | Stage::RescaleNormal),
+        ),
+        (
+            "no emission, no scene ambient",
+            |s| {
+                s.material.emission = DVec4::new(0.0, 0.0, 0.0, 1.0);
+                s.back_material.as_mut().unwrap().emission = DVec4::new(0.0, 0.0, 0.0, 1.0);
+                s.light_model.ambient = DVec4::new(0.0, 0.0, 0.0, 1.0);
+            },
+            |st| matches!(st, Stage::SceneColor),
+        ),
+        (
+            "infinite viewer, directional",
+            |s| {
+                s.light_model.local_viewer = false;
+                s.lights[0].position.w = 0.0;
+            },
+            |st| matches!(st, Stage::ViewVector | Stage::Halfway(_) | Stage::LightVector(_)),
+        ),
+    ];
+    let (positions, normals) = phonglab_core::presets::sphere_points(300);
+    for (name, change, left_out) in bits {
+        let mut scene = full();
+        change(&mut scene);
+        for model in SpecularModel::ALL {
+            scene.rules.specular = model;
+            let options = EvalOptions::default();
+            let l = Lighter::new(&scene, options).unwrap();
+            let program = l.program().stages.clone();
+            let (lit, trace) = l.light_batch_traced(&positions, &normals);
+            // Three chunks of 128, 128 and 44 vertices: the program three times.
+            assert_eq!(trace, program.repeat(3), "{name}: the evaluator runs exactly the program");
+            if name != "nothing" {
+                assert!(!trace.iter().any(left_out), "{name} {model:?}: a left-out stage ran: {program:?}");
+            }
+            assert!(program.contains(&Stage::Sum(0, 0)));
+            // What the panel says is skipped ran no stage of its kind.
+            for eff in l.key().effects().iter().filter(|e| !e.on) {
+                let ran = trace.iter().any(|st| match eff.kind {
+                    EffectKind::Normalisation => matches!(st, Stage::NormalizeNormal | Stage::RescaleNormal),
+                    EffectKind::ViewVector => matches!(st, Stage::ViewVector),
+                    EffectKind::SceneColor => matches!(st, Stage::SceneColor),
+                    EffectKind::BackSide => matches!(st, Stage::Sum(_, 1)),
+                    EffectKind::LightVector => matches!(st, Stage::LightVector(_)),
+                    EffectKind::Attenuation => matches!(st, Stage::Attenuate(_)),
+                    EffectKind::Spotlight => matches!(st, Stage::SpotCone(_) | Stage::SpotPower(_)),
+                    EffectKind::HalfwayOrReflection => matches!(st, Stage::Halfway(_) | Stage::Reflect(_)),
+                    EffectKind::SpecularPower => matches!(st, Stage::Power(..)),
+                });
+                assert!(!ran, "{name}: the panel says {eff} but a stage of it ran");
+            }
+            // And the colours are the general engine's.
+            for (k, got) in lit.iter().enumerate().step_by(37) {
+                let v = Vertex::from_f32(positions[k], normals[k]);
+                let want = general(&scene, options, &v);
+                assert!(same(got, &want), "{name} {model:?} vertex {k}: {got:?} vs {want:?}");
+            }
+        }
+    }
+}
