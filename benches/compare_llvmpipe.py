@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""phonglab's CPU renderer against Mesa llvmpipe on DESIGN.md's benchmark scene, in one run.
+"""phonglab's CPU renderer against Mesa llvmpipe on docs/lighting.md's benchmark scene, in one run.
 
   benches/compare_llvmpipe.py --glref PATH/TO/shared/glref [--frames 200] [--rounds 3]
 

@@ -1,6 +1,6 @@
 //! `phonglab bench`: figures measured on this machine, printed as plain columns.
 //!
-//! - `render`: DESIGN.md's benchmark scene (512x512, gluPerspective(40, 1, 0.5, 20), the
+//! - `render`: docs/lighting.md's benchmark scene (512x512, gluPerspective(40, 1, 0.5, 20), the
 //!   object rotating 3 degrees a frame) for each object and shading:
 //!   `object shading ms_per_frame triangles coverage`.
 //! - `lighting`: the general engine against the specialised evaluator on the three scenes
@@ -97,7 +97,7 @@ pub fn render_figures(frames: u32, size: usize) -> Result<Vec<RenderFigure>> {
             let mut r = Renderer::new();
             let frame = |i: u32, r: &mut Renderer| -> Result<f64> {
                 let scene = bench_scene(i);
-                let job = phonglab_core::presets::bench_job(&scene, &mesh, shading);
+                let job = phonglab_core::library::bench_job(&scene, &mesh, shading);
                 let (img, _) = r.render(&job, size, size)?;
                 Ok(img.coverage())
             };

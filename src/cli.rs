@@ -7,16 +7,19 @@ use anyhow::{Context, Result, bail};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::glref::{self, CaseColors};
-use phonglab_core::{Engine, EvalOptions, PowFn, Real, Scene, presets};
+use phonglab_core::{Engine, EvalOptions, PowFn, Real, Scene, library, presets};
 
 /// phonglab: OpenGL's fixed-function vertex lighting, step by step. Without a subcommand it
 /// opens the explorer window on the worksheet's scene.
 #[derive(Parser, Debug)]
-#[command(name = "phonglab", version, about)]
+#[command(name = "phonglab", version, about, args_conflicts_with_subcommands = true)]
 pub struct Cli {
     /// What to do; omit to open the app.
     #[command(subcommand)]
     pub command: Option<Command>,
+    /// A scene file (TOML) to open the app on; one that cannot be read opens the worksheet
+    /// and says why.
+    pub file: Option<PathBuf>,
 }
 
 /// The subcommands.
@@ -73,7 +76,7 @@ impl From<PowArg> for PowFn {
 /// `phonglab eval`.
 #[derive(Args, Debug)]
 pub struct EvalArgs {
-    /// A JSON file of cases (a list, or {"cases": [...]}), as in shared/glref/README.md.
+    /// A JSON file of cases (a list, or {"cases": [...]}), as in docs/lighting.md.
     pub cases: PathBuf,
     /// Engine precision.
     #[arg(long, value_enum, default_value = "f32")]
@@ -139,7 +142,7 @@ pub struct RenderArgs {
     /// A ready-made scene instead: "worksheet" or "phong-demo".
     #[arg(long, conflicts_with = "scene")]
     pub preset: Option<String>,
-    /// DESIGN.md's benchmark scene at this frame instead (sphere r 1 50x50, teapot 0.8,
+    /// docs/lighting.md's benchmark scene at this frame instead (sphere r 1 50x50, teapot 0.8,
     /// gluPerspective(40, 1, 0.5, 20)): the image Mesa's harness draws.
     #[arg(long, conflicts_with_all = ["scene", "preset"])]
     pub bench_frame: Option<u32>,
@@ -175,8 +178,8 @@ pub enum CorrectArg {
 
 impl CorrectArg {
     /// The departures this argument corrects.
-    pub fn departures(self) -> Vec<presets::DemoDeparture> {
-        use presets::DemoDeparture as D;
+    pub fn departures(self) -> Vec<library::DemoDeparture> {
+        use library::DemoDeparture as D;
         match self {
             CorrectArg::Light => vec![D::LightTurnsWithObject],
             CorrectArg::Normals => vec![D::PositionNormals],
@@ -407,14 +410,14 @@ fn render(a: &RenderArgs) -> Result<()> {
             ObjectKind::Cylinder => (phonglab_core::View { object, ..Default::default() }).mesh(),
         };
         bench_scene = presets::bench_scene(frame);
-        let mut job = presets::bench_job(&bench_scene, &bench_mesh, shading.unwrap_or(Shading::Gouraud));
+        let mut job = library::bench_job(&bench_scene, &bench_mesh, shading.unwrap_or(Shading::Gouraud));
         job.cull_back = a.cull;
         job.options = EvalOptions::with_pow(a.pow.into());
         job
     } else {
         let mut doc = match (&a.scene, a.preset.as_deref()) {
             (Some(p), _) => load_scene_file(p)?,
-            (None, Some("phong-demo")) => presets::phong_demo_document(),
+            (None, Some("phong-demo")) => library::phong_demo_document(),
             (None, Some("worksheet")) | (None, None) => Document::default(),
             (None, Some(other)) => bail!("unknown preset {other:?}: try worksheet or phong-demo"),
         };

@@ -6,3 +6,4 @@ pub mod cli;
 pub mod cost_cmd;
 pub mod egui_cpu;
 pub mod image_io;
+pub mod scenes;

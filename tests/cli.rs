@@ -174,7 +174,7 @@ fn case_writes_a_scene_file_that_eval_lights_as_opengl() {
     assert!(o.status.success(), "{}", stderr(&o));
     let out: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     let front = &result(&out, "worksheet-mview5")["front"];
-    // What Mesa prints for the worksheet with OpenGL's default scene ambient (DESIGN.md).
+    // What Mesa prints for the worksheet with OpenGL's default scene ambient (docs/lighting.md).
     for (k, want) in [0.102087, 0.061259, 0.025955].into_iter().enumerate() {
         assert!((num(&front[k]) - want).abs() < 1e-6, "{front}");
     }

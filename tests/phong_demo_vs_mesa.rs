@@ -10,7 +10,7 @@
 //! the numbers of covered pixels agree within 15 % instead.
 
 use phonglab_core::render::Renderer;
-use phonglab_core::{ObjectKind, Shading, presets};
+use phonglab_core::{ObjectKind, Shading, library};
 
 /// The frames kept (1: the first frame the program draws; 250: 125 degrees on).
 const FRAMES: [u32; 2] = [1, 250];
@@ -40,7 +40,7 @@ struct Comparison {
 
 fn compare(frame: u32, object: ObjectKind, shading: Shading) -> Comparison {
     let (w, h, theirs) = mesa(frame, object, shading);
-    let mut doc = presets::phong_demo_document();
+    let mut doc = library::phong_demo_document();
     doc.view.object = object;
     doc.view.shading = shading;
     doc.view.spin_degrees = 0.5 * frame as f64;
@@ -127,7 +127,7 @@ fn the_highlight_is_red_and_on_the_left() {
     // Frame 1, sphere, Gouraud: the brightest pixel is pure red and left of centre, as in
     // the program's own picture.
     let (w, h, theirs) = mesa(1, ObjectKind::Sphere, Shading::Gouraud);
-    let mut doc = presets::phong_demo_document();
+    let mut doc = library::phong_demo_document();
     doc.view.spin_degrees = 0.5;
     let mesh = doc.view.mesh();
     let setup = doc.shaded_setup(phonglab_core::PowFn::Exact);

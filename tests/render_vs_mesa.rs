@@ -1,4 +1,4 @@
-//! The shaded view against Mesa llvmpipe's own images of DESIGN.md's benchmark scene
+//! The shaded view against Mesa llvmpipe's own images of docs/lighting.md's benchmark scene
 //! (tests/data/mesa_bench): Gouraud against the fixed-function pipeline, Phong against the
 //! harness's per-pixel GLSL. Over the pixels both cover, the mean absolute difference is
 //! at most 1/255 per channel; the covered areas agree within 0.5 % of the image.
@@ -29,7 +29,7 @@ struct Comparison {
 fn compare(mesh: &Mesh, shading: Shading, reference: &str) -> Comparison {
     let (w, h, theirs) = mesa(reference);
     let scene = bench_scene(199);
-    let job = phonglab_core::presets::bench_job(&scene, mesh, shading);
+    let job = phonglab_core::library::bench_job(&scene, mesh, shading);
     let mut r = Renderer::new();
     let (img, _) = r.render(&job, w, h).unwrap();
     // Covered: differs from the background, as the harness counts it.

@@ -68,7 +68,7 @@ fn the_worksheet_files_are_the_worksheet() {
 #[test]
 fn the_phong_demo_file_is_the_preset() {
     let doc = asset("phong-demo.toml");
-    let preset = presets::phong_demo_document();
+    let preset = phonglab_core::library::phong_demo_document();
     assert_eq!(doc.scene, preset.scene);
     assert_eq!(doc.view, preset.view);
     assert_eq!(doc.camera, preset.camera);

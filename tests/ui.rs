@@ -235,7 +235,7 @@ fn presets_load_the_phong_demo() {
     assert_eq!(h.state().doc.scene.rules, phonglab_core::Rules::PHONG_DEMO);
     h.get_by_label_contains("R = 2 max(N . L, 0) N - L");
     // The program as it draws: spinning, in clip space, the light turning with the object.
-    let preset = phonglab_core::presets::phong_demo_document();
+    let preset = phonglab_core::library::phong_demo_document();
     assert_eq!(h.state().doc.scene, preset.scene);
     let mut view = h.state().doc.view.clone();
     assert!(view.auto_rotate && view.spin_degrees > preset.view.spin_degrees, "it opens spinning");
@@ -525,7 +525,7 @@ fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
     h.run_steps(2);
     // One picture: the demo's own.
     assert_eq!(h.query_all_by_role(Role::Image).count(), 1);
-    for d in phonglab_core::presets::DemoDeparture::ALL {
+    for d in phonglab_core::library::DemoDeparture::ALL {
         h.get_by_label(d.fix_label());
         h.get_by_label(d.why());
     }
@@ -545,4 +545,50 @@ fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
     let corrected = phonglab::app::shaded::corrected_document(&h.state().doc, &h.state().ui.demo_fixes).unwrap();
     assert_eq!(corrected.scene.material.specular.truncate(), DVec3::splat(0.5));
     h.get_by_label("Corrected: light fixed in the world, highlight in the light's colour");
+}
+
+#[test]
+fn the_presets_menu_lists_every_shipped_scene_grouped() {
+    let mut h = harness();
+    h.get_by_label("Presets").click();
+    h.run_steps(2);
+    for group in ["The worksheet", "The Phong demo", "More scenes"] {
+        h.get_by_label(group);
+    }
+    for title in ["Worksheet, mview1", "Worksheet, mview5", "Phong demo", "Spotlight", "Three lights"] {
+        // (A step of the calculation may share a name, e.g. "Spotlight": at least one.)
+        assert!(h.get_all_by_label(title).count() >= 1, "{title} is listed");
+    }
+    h.get_by_label("Red Book teapots").click();
+    h.run_steps(2);
+    h.get_by_label("Gold").click();
+    h.run_steps(2);
+    let gold = materials::by_name("gold").unwrap();
+    assert_eq!(h.state().doc.scene.material, gold.clone());
+    assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Teapot);
+}
+
+#[test]
+fn a_file_named_at_start_opens_or_the_worksheet_says_why() {
+    let dir = temp_dir("start");
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = dir.join("spot.toml");
+    std::fs::copy(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes/spotlight.toml"), &good).unwrap();
+    let mut s = AppState::worksheet();
+    phonglab::app::files::open_at_start(&mut s, &good);
+    assert!(s.doc.scene.lights[0].is_spot(), "the spotlight scene is open");
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "rules = \"opengl\"\n[material]\nshininess = 500\n").unwrap();
+    let mut s = AppState::worksheet();
+    s.doc = phonglab_core::library::phong_demo_document();
+    phonglab::app::files::open_at_start(&mut s, &bad);
+    assert_eq!(s.doc, phonglab_core::Document::default(), "the default scene");
+    assert!(
+        matches!(&s.message, Some(Message::Refused(m)) if m.contains("bad.toml") && m.contains("shininess") && m.contains("Showing the worksheet")),
+        "{:?}",
+        s.message
+    );
+    let mut s = AppState::worksheet();
+    phonglab::app::files::open_at_start(&mut s, &dir.join("missing.toml"));
+    assert!(matches!(&s.message, Some(Message::Refused(m)) if m.contains("cannot read")), "{:?}", s.message);
 }

@@ -22,6 +22,17 @@ pub fn write_document(doc: &Document, path: &Path) -> Result<(), String> {
     })
 }
 
+/// The app's first scene when it is started with a file (`phonglab FILE.toml`): that file,
+/// or, when it cannot be used, the default scene (the worksheet), saying why.
+pub fn open_at_start(state: &mut AppState, path: &Path) {
+    open(state, path);
+    if let Some(Message::Refused(why)) = &state.message {
+        let why = why.replace(" The current scene is unchanged.", "");
+        state.doc = Document::default();
+        state.message = Some(Message::Refused(format!("{why} Showing the worksheet instead.")));
+    }
+}
+
 /// Opens a scene file into the app, or says why not and keeps the current scene.
 pub fn open(state: &mut AppState, path: &Path) {
     match std::fs::read(path) {

@@ -13,13 +13,14 @@ pub mod result;
 pub mod shaded;
 pub mod state;
 pub mod vector_plot;
+pub mod view_cache;
 pub mod widgets;
 
 use egui::Ui;
 use phonglab_core::{CameraSpec, NormalMode, RuleSet, SpecularModel, materials};
 
 pub use state::AppState;
-use state::{Message, Precision, preset_documents};
+use state::{Message, Precision};
 
 /// Applies one keyboard shortcut.
 fn apply_action(state: &mut AppState, action: help::Action) {
@@ -94,14 +95,7 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         if ui.button("Reset to worksheet").on_hover_text("Ctrl+R").clicked() {
             state.reset_to_worksheet();
         }
-        ui.menu_button("Presets", |ui| {
-            for (name, doc) in preset_documents() {
-                if ui.button(&name).clicked() {
-                    state.load(doc, &name);
-                    ui.close();
-                }
-            }
-        });
+        ui.menu_button("Presets", |ui| presets_menu_ui(ui, state));
         ui.separator();
         ui.label("Precision:");
         ui.radio_value(&mut state.ui.precision, Precision::F32, "f32");
@@ -121,6 +115,48 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
             state.ui.show_help = !state.ui.show_help;
         }
         ui.label(egui::RichText::new(&state.doc.name).weak());
+    });
+}
+
+/// A small square of a material's diffuse colour (clamped, as displayed).
+fn swatch_ui(ui: &mut Ui, doc: &phonglab_core::Document) {
+    let c = doc.scene.material.diffuse;
+    let to8 = |x: f64| (x.clamp(0.0, 1.0) * 255.0).round() as u8;
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(12.0, 12.0), egui::Sense::hover());
+    ui.painter().rect_filled(rect, 2.0, egui::Color32::from_rgb(to8(c.x), to8(c.y), to8(c.z)));
+}
+
+/// Every scene file shipped under `assets/scenes/`, grouped, each with its material's swatch;
+/// the 24 Red Book teapots in a submenu.
+fn presets_menu_ui(ui: &mut Ui, state: &mut AppState) {
+    let files = crate::scenes::scene_files();
+    let mut entry = |ui: &mut Ui, f: &crate::scenes::SceneFile| {
+        ui.horizontal(|ui| {
+            swatch_ui(ui, &f.doc);
+            if ui.button(&f.title).on_hover_text(format!("assets/scenes/{}", f.path)).clicked() {
+                state.load(f.doc.clone(), &f.title);
+                ui.close();
+            }
+        });
+    };
+    let mut group = "";
+    for f in files.iter().filter(|f| f.group != "Red Book teapots") {
+        if f.group != group {
+            if !group.is_empty() {
+                ui.separator();
+            }
+            ui.label(egui::RichText::new(f.group).small().strong());
+            group = f.group;
+        }
+        entry(ui, f);
+    }
+    ui.separator();
+    ui.menu_button("Red Book teapots", |ui| {
+        egui::ScrollArea::vertical().max_height(480.0).show(ui, |ui| {
+            for f in files.iter().filter(|f| f.group == "Red Book teapots") {
+                entry(ui, f);
+            }
+        });
     });
 }
 
@@ -220,7 +256,7 @@ impl PhongLabApp {
     /// Restores the last session's document when there is one and it loads; otherwise
     /// starts on the worksheet, saying why (`notice`: what was found before eframe started,
     /// see [`persist::set_aside_unreadable_storage`]).
-    pub fn new(cc: &eframe::CreationContext<'_>, notice: Option<String>) -> Self {
+    pub fn new(cc: &eframe::CreationContext<'_>, notice: Option<String>, file: Option<std::path::PathBuf>) -> Self {
         let mut state = AppState::worksheet();
         let text = cc.storage.and_then(|s| s.get_string(persist::DOCUMENT_KEY));
         let dir = eframe::storage_dir(persist::APP_ID);
@@ -231,6 +267,10 @@ impl PhongLabApp {
         }
         if let Some(m) = notice {
             state.message = Some(Message::Refused(m));
+        }
+        // A file named on the command line wins over the restored session.
+        if let Some(path) = file {
+            files::open_at_start(&mut state, &path);
         }
         Self { state }
     }
@@ -248,8 +288,8 @@ impl eframe::App for PhongLabApp {
     }
 }
 
-/// Opens the window.
-pub fn run() -> eframe::Result {
+/// Opens the window, on the scene file `file` when one is given.
+pub fn run(file: Option<std::path::PathBuf>) -> eframe::Result {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("phonglab")
@@ -258,5 +298,5 @@ pub fn run() -> eframe::Result {
         ..Default::default()
     };
     let notice = eframe::storage_dir(persist::APP_ID).and_then(|d| persist::set_aside_unreadable_storage(&d));
-    eframe::run_native(persist::APP_ID, options, Box::new(|cc| Ok(Box::new(PhongLabApp::new(cc, notice)))))
+    eframe::run_native(persist::APP_ID, options, Box::new(|cc| Ok(Box::new(PhongLabApp::new(cc, notice, file)))))
 }

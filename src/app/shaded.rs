@@ -5,89 +5,13 @@
 //! Phong demo does. Clicking the surface makes the nearest mesh vertex the vertex of the
 //! worked calculation, with this view's camera and spin, so both panels show one vertex.
 
-use egui::{Color32, ColorImage, Sense, TextureHandle, TextureOptions, Ui};
+use egui::{Color32, Sense, Ui};
 use glam::DVec4;
-use phonglab_core::mesh::Mesh;
-use phonglab_core::presets::DemoDeparture;
-use phonglab_core::render::Renderer;
-use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, PowFn, Shading, Vertex, View};
+use phonglab_core::library::DemoDeparture;
+use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, Shading, Vertex, View};
 
 use super::state::{AppState, Message};
-
-/// One picture's renderer, mesh and texture, kept between frames.
-#[derive(Default)]
-pub struct ViewCache {
-    renderer: Renderer,
-    mesh: Option<(View, Mesh)>,
-    texture: Option<TextureHandle>,
-    /// What the texture shows; re-rendered only when it changes.
-    key: Option<String>,
-    /// The last frame's render time in milliseconds.
-    pub last_ms: f64,
-}
-
-/// The shaded view's pictures: the document's, and the corrected one beside it when the
-/// Phong demo's departures are being corrected.
-#[derive(Default)]
-pub struct ShadedCache {
-    /// The document's own picture.
-    pub main: ViewCache,
-    /// The corrected picture (the right half of the comparison).
-    pub corrected: ViewCache,
-}
-
-impl ShadedCache {
-    /// The last frame's render time of the main picture, in milliseconds.
-    pub fn last_ms(&self) -> f64 {
-        self.main.last_ms
-    }
-}
-
-impl ViewCache {
-    /// Renders `doc`'s shaded view at `px` pixels square unless the texture already shows it.
-    fn render(&mut self, ctx: &egui::Context, doc: &Document, pow: PowFn, px: usize, name: &str) -> Result<(), String> {
-        let setup = doc.shaded_setup(pow);
-        let key = format!("{:?}|{:?}|{px}|{pow:?}", setup.scene, doc.view);
-        if self.key.as_deref() == Some(key.as_str()) && self.texture.is_some() {
-            return Ok(());
-        }
-        let mesh = mesh_for(&mut self.mesh, &doc.view);
-        let t = std::time::Instant::now();
-        let (img, _) = self.renderer.render(&setup.job(mesh), px, px).map_err(|e| e.to_string())?;
-        self.last_ms = t.elapsed().as_secs_f64() * 1e3;
-        let image = ColorImage::from_rgba_unmultiplied([img.width, img.height], &img.rgba);
-        match &mut self.texture {
-            Some(tex) => tex.set(image, TextureOptions::LINEAR),
-            None => self.texture = Some(ctx.load_texture(name, image, TextureOptions::LINEAR)),
-        }
-        self.key = Some(key);
-        Ok(())
-    }
-}
-
-fn mesh_for<'a>(cache: &'a mut Option<(View, Mesh)>, view: &View) -> &'a Mesh {
-    let stale = cache.as_ref().is_none_or(|(v, _)| {
-        let mut a = v.clone();
-        let mut b = view.clone();
-        // Only what changes the geometry matters.
-        for v in [&mut a, &mut b] {
-            v.shading = Shading::Gouraud;
-            v.auto_rotate = false;
-            v.spin_degrees = 0.0;
-            v.camera = Default::default();
-            v.framing = Default::default();
-            v.lighting_space = Default::default();
-            v.flat_normal = Default::default();
-            v.phong_renormalize = true;
-            v.background = [0.0; 3];
-        }
-        a != b
-    });
-    if stale {
-        *cache = Some((view.clone(), view.mesh()));
-    }
-    &cache.as_ref().expect("set just above").1
-}
+pub use super::view_cache::{ShadedCache, ViewCache, mesh_for};
 
 /// The pipeline's choices where OpenGL and the Phong demo differ, and the demo's
 /// departures as switches: each flipped one is corrected in a second picture beside the

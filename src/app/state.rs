@@ -7,7 +7,7 @@
 use glam::DVec3;
 use phonglab_core::breakdown::VertexLighting;
 use phonglab_core::explain::{Explanation, Side, explain};
-use phonglab_core::{Document, Engine, EvalOptions, Limit, PowFn, Real, SceneError, Vec3Ops, presets};
+use phonglab_core::{Document, Engine, EvalOptions, Limit, PowFn, Real, SceneError, Vec3Ops, library};
 
 /// Engine precision shown in the app.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -68,7 +68,7 @@ pub struct UiState {
     /// The scene file path typed for Open and Save.
     pub file_path: String,
     /// Which of the Phong demo's departures the corrected picture corrects, in the order
-    /// of [`phonglab_core::presets::DemoDeparture::ALL`].
+    /// of [`phonglab_core::library::DemoDeparture::ALL`].
     pub demo_fixes: [bool; 3],
 }
 
@@ -98,7 +98,7 @@ pub struct AppState {
     /// The last refusal or notice.
     pub message: Option<Message>,
     /// The shaded view's renderer and texture, kept between frames.
-    pub shaded: super::shaded::ShadedCache,
+    pub shaded: super::view_cache::ShadedCache,
     /// The cost-of-accuracy panel and its background work.
     pub cost: super::cost::CostState,
 }
@@ -253,7 +253,7 @@ impl AppState {
 /// The ready-made scenes of the Presets menu.
 /// The built-in documents: [`presets::documents`] (kept in the core, so the CLI needs no app).
 pub fn preset_documents() -> Vec<(String, Document)> {
-    presets::documents()
+    library::documents()
 }
 
 #[cfg(test)]

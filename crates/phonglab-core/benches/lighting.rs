@@ -1,6 +1,9 @@
 //! Criterion benchmarks of the general lighting engine (full breakdown per vertex):
 //! one evaluation, and a batch of 1M vertices, in f32 and f64.
 
+// criterion_group! defines undocumented functions.
+#![allow(missing_docs)]
+
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};

@@ -1,6 +1,9 @@
 //! The specialised evaluator against the general engine on the three scenes of issue 5,
 //! 1M vertices each (ns per vertex = time / 1M).
 
+// criterion_group! defines undocumented functions.
+#![allow(missing_docs)]
+
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};

@@ -13,7 +13,7 @@ use crate::real::Real;
 use crate::scene::MAX_LIGHTS;
 
 /// A value the engine could not compute directly and replaced by the limit a person
-/// expects (DESIGN.md, "Numerics policy"), or a fact worth knowing about how it computed.
+/// expects (docs/lighting.md, "Numerics policy"), or a fact worth knowing about how it computed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[repr(u8)]
 pub enum Limit {

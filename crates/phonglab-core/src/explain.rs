@@ -243,7 +243,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         Some(vec![p.x, p.y, p.z, 1.0]),
     );
     vertex_limits(&mut b, StepKind::Position);
-    if scene.eye_from_object() == crate::presets::phong_demo_eye_from_object() {
+    if scene.eye_from_object() == crate::transform::phong_demo_eye_from_object() {
         b.note(
             "the Phong demo lights in object space with its eye at (-4, 0, -8); here eye space is object space moved by (4, 0, 8), so that eye is the origin: every vector and term is the demo's",
         );

@@ -1,4 +1,4 @@
-//! The glref case schema (`shared/glref/README.md`): JSON cases in, lit colours out.
+//! The glref case schema (docs/lighting.md): JSON cases in, lit colours out.
 //!
 //! A file is a list of cases or `{"cases": [...]}`. Every field is optional and takes
 //! OpenGL's default; colours are rgb or rgba; numbers may be strings ("NaN", "Infinity",

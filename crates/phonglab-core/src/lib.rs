@@ -11,14 +11,28 @@
 //! let lit = Engine::<f64>::light_scene_vertex(&scene).unwrap();
 //! assert!((lit.front.primary[0] - 0.05958709).abs() < 1e-7);
 //! ```
+//!
+//! The modules, by group (ARCHITECTURE.md says how data flows between them):
+//!
+//! | group | modules |
+//! |---|---|
+//! | model: what is lit | [`scene`], [`rules`], [`materials`], [`camera`], [`transform`], [`view`], [`presets`], [`library`] |
+//! | equation: the lighting equation and its worked calculation | [`lighting`], [`breakdown`], [`explain`], [`validate`], [`error`] |
+//! | numerics: where floating point needs care | [`robust`], [`real`], [`exact_pow`], [`pow`] |
+//! | specialise: only the stages a scene needs | [`plan`], [`specialised`] |
+//! | raster: meshes and the CPU renderer | [`mesh`], [`render`], [`shaded`] |
+//! | formats: text in and out | [`document`], [`glref`] |
+//! | study: what accuracy costs | [`cost`] |
 
 pub mod breakdown;
 pub mod camera;
 pub mod cost;
 pub mod document;
 pub mod error;
+pub mod exact_pow;
 pub mod explain;
 pub mod glref;
+pub mod library;
 pub mod lighting;
 pub mod materials;
 pub mod mesh;
@@ -30,6 +44,7 @@ pub mod render;
 pub mod robust;
 pub mod rules;
 pub mod scene;
+pub mod shaded;
 pub mod specialised;
 pub mod transform;
 pub mod validate;
@@ -44,4 +59,5 @@ pub use pow::PowFn;
 pub use real::{Real, Vec3Ops};
 pub use rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel};
 pub use scene::{Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Rgba, Scene, Vertex};
-pub use view::{FlatNormal, Framing, LightingSpace, ObjectKind, ShadedSetup, Shading, View, ViewCamera};
+pub use shaded::ShadedSetup;
+pub use view::{FlatNormal, Framing, LightingSpace, ObjectKind, Shading, View, ViewCamera};

@@ -23,7 +23,7 @@
 //! `= alpha(d_cm)`. The worksheet's and the Phong demo's rules (see [`crate::rules`]) drop
 //! terms from this same sum; they never compute a term differently.
 //!
-//! Numerics (DESIGN.md): positions are transformed, divided by w and differenced in f64
+//! Numerics (docs/lighting.md): positions are transformed, divided by w and differenced in f64
 //! with compensated dot products in both precisions, so huge cancelling coordinates
 //! (1e18) stay exact; lengths are scaled before squaring; a product with a zero factor is
 //! zero even when the other is infinite; where a direction is undefined the engine takes

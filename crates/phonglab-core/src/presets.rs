@@ -2,13 +2,10 @@
 
 use glam::{DMat4, DVec3, DVec4};
 
-use crate::camera::CameraSpec;
-use crate::document::Document;
 use crate::materials;
 use crate::rules::Rules;
 use crate::scene::{Light, LightModel, LightPlacement, Material, NormalMode, Scene, Vertex};
-use crate::transform::worksheet_modelview;
-use crate::view::{FlatNormal, Framing, LightingSpace, ObjectKind, Shading, View};
+use crate::transform::{phong_demo_eye_from_object, worksheet_modelview};
 
 /// The worksheet's vertex, in the 1024x768 window's centre-relative coordinates.
 pub const WORKSHEET_VERTEX: DVec4 = DVec4::new(-512.0, -384.0, 0.0, 1.0);
@@ -98,124 +95,6 @@ pub fn phong_demo() -> Scene {
     }
 }
 
-/// The demo's "eye space": object space moved so that its eye (-4, 0, -8) is the origin.
-pub fn phong_demo_eye_from_object() -> DMat4 {
-    // -PHONG_DEMO_EYE, written out (negating 0 would give -0).
-    DMat4::from_translation(DVec3::new(4.0, 0.0, 8.0))
-}
-
-/// The shaded view as the demo's program draws: clip space (no projection), the spin of
-/// 0.5 degrees a frame (the first frame drawn has taken one step), lit in object space,
-/// `normalize(position)` for normals, Phong without renormalising, Flat from the screen
-/// derivatives, gluCylinder not centred, a black background, sphere and Gouraud first.
-pub fn phong_demo_view() -> View {
-    View {
-        object: ObjectKind::Sphere,
-        shading: Shading::Gouraud,
-        sphere_slices: 50,
-        sphere_stacks: 50,
-        teapot_grid: 7,
-        cylinder_slices: 20,
-        cylinder_stacks: 5,
-        cylinder_caps: false,
-        demo_normals: true,
-        auto_rotate: true,
-        spin_degrees: 0.5,
-        framing: Framing::ClipSpace,
-        lighting_space: LightingSpace::Object,
-        flat_normal: FlatNormal::ScreenDerivatives,
-        phong_renormalize: false,
-        cylinder_centered: false,
-        background: [0.0, 0.0, 0.0],
-        ..View::default()
-    }
-}
-
-/// The Phong demo as a document: [`phong_demo`] lit, [`phong_demo_view`] drawn.
-pub fn phong_demo_document() -> Document {
-    let mut d = Document::from_scene("the Phong demo", CameraSpec::Matrix(phong_demo_eye_from_object()), phong_demo());
-    d.view = phong_demo_view();
-    d
-}
-
-/// Where the Phong demo departs from OpenGL's lighting: each a switch a teacher can flip.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum DemoDeparture {
-    /// The light turns with the object (lit in object space).
-    LightTurnsWithObject,
-    /// Normals are `normalize(position)`.
-    PositionNormals,
-    /// The highlight is multiplied by the object's colour.
-    HighlightInObjectColour,
-}
-
-impl DemoDeparture {
-    /// All three, in the order the document lists them.
-    pub const ALL: [DemoDeparture; 3] =
-        [DemoDeparture::LightTurnsWithObject, DemoDeparture::PositionNormals, DemoDeparture::HighlightInObjectColour];
-
-    /// The correction's name, as the switch shows it.
-    pub fn fix_label(self) -> &'static str {
-        match self {
-            DemoDeparture::LightTurnsWithObject => "light fixed in the world",
-            DemoDeparture::PositionNormals => "the surface's true normals",
-            DemoDeparture::HighlightInObjectColour => "highlight in the light's colour",
-        }
-    }
-
-    /// One sentence on why.
-    pub fn why(self) -> &'static str {
-        match self {
-            DemoDeparture::LightTurnsWithObject => {
-                "The demo lights untransformed positions and normals, so its light turns with the object; the document's own fix transforms them by mvMatrix (for a rotation its inverse transpose is itself), and the light stays put while the object turns."
-            }
-            DemoDeparture::PositionNormals => {
-                "normalize(position) is the normal of a sphere about the origin only; the teapot's and the cylinder's surfaces point elsewhere, and their true normals light them as they are."
-            }
-            DemoDeparture::HighlightInObjectColour => {
-                "The demo multiplies the specular term by the object's red; OpenGL multiplies the light's specular colour by the material's specular colour (white here), so a highlight shows the light's colour."
-            }
-        }
-    }
-
-    /// Applies the correction to a document.
-    pub fn correct(self, d: &mut Document) {
-        match self {
-            DemoDeparture::LightTurnsWithObject => d.view.lighting_space = LightingSpace::Eye,
-            DemoDeparture::PositionNormals => d.view.demo_normals = false,
-            DemoDeparture::HighlightInObjectColour => {
-                let s = d.scene.material.specular;
-                let k = s.x.max(s.y).max(s.z);
-                d.scene.material.specular = DVec4::new(k, k, k, s.w);
-            }
-        }
-    }
-
-    /// Does the document still make this departure?
-    pub fn present_in(self, d: &Document) -> bool {
-        match self {
-            DemoDeparture::LightTurnsWithObject => d.view.lighting_space == LightingSpace::Object,
-            DemoDeparture::PositionNormals => d.view.demo_normals,
-            DemoDeparture::HighlightInObjectColour => {
-                let s = d.scene.material.specular;
-                !(s.x == s.y && s.y == s.z)
-            }
-        }
-    }
-}
-
-/// Every built-in document, in menu order: the worksheet with each modelview, the demo.
-pub fn documents() -> Vec<(String, Document)> {
-    let mut v: Vec<(String, Document)> = (1..=5u8)
-        .map(|k| {
-            let name = format!("Worksheet, mview{k}");
-            (name.clone(), Document::from_scene(&name, CameraSpec::Worksheet(k), worksheet(k as usize)))
-        })
-        .collect();
-    v.push(("Phong demo".into(), phong_demo_document()));
-    v
-}
-
 /// The three scenes of the lighting benchmark (issue 5): what specialisation saves.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum LightingBench {
@@ -297,7 +176,7 @@ pub fn sphere_points(n: usize) -> (Vec<glam::Vec3>, Vec<glam::Vec3>) {
         .unzip()
 }
 
-/// DESIGN.md's rendering benchmark scene at frame `frame`: bronze under one light at
+/// docs/lighting.md's rendering benchmark scene at frame `frame`: bronze under one light at
 /// (2, 3, 1, 1) fixed to the eye (ambient 0.2, diffuse and specular 1, linear attenuation
 /// 0.05), GL_NORMALIZE, the object rotated 3 `frame` degrees about (0.3, 1, 0.1) in front
 /// of the eye at z = -4.
@@ -322,21 +201,6 @@ pub fn bench_scene(frame: u32) -> Scene {
 /// The benchmark's projection: `gluPerspective(40, 1, 0.5, 20)`.
 pub fn bench_projection() -> DMat4 {
     crate::transform::perspective(40.0, 1.0, 0.5, 20.0)
-}
-
-/// The benchmark's render job for `scene` (a [`bench_scene`] frame): its projection, Flat
-/// per face, no culling, exact pow.
-pub fn bench_job<'a>(scene: &'a Scene, mesh: &'a crate::mesh::Mesh, shading: Shading) -> crate::render::Job<'a> {
-    crate::render::Job {
-        scene,
-        mesh,
-        clip_from_object: bench_projection() * scene.eye_from_object(),
-        shading,
-        flat_normal: FlatNormal::Face,
-        background: BENCH_BACKGROUND,
-        cull_back: false,
-        options: crate::EvalOptions::default(),
-    }
 }
 
 /// The benchmark's clear colour.

@@ -1,6 +1,6 @@
 //! Numerically robust building blocks: compensated sums, scaled lengths, zero-safe products.
 //!
-//! These implement DESIGN.md's numerics policy where single precision (or even plain
+//! These implement docs/lighting.md's numerics policy where single precision (or even plain
 //! double precision) breaks down while the answer is still well defined:
 //!
 //! | problem | remedy | function |
@@ -112,7 +112,7 @@ pub fn normalize_or_zero<S: Real>(v: S::V3) -> S::V3 {
 /// `a * b`, but 0 whenever either factor is 0 (so `0 * inf = 0`, never NaN).
 ///
 /// Every infinity the engine can meet is either an overflowed finite value (whose product
-/// with 0 is truly 0) or the attenuation limit at a zero denominator, which DESIGN.md
+/// with 0 is truly 0) or the attenuation limit at a zero denominator, which docs/lighting.md
 /// defines as 0 where the term is 0.
 #[inline(always)]
 pub fn mul0<S: Real>(a: S, b: S) -> S {

@@ -81,6 +81,12 @@ pub fn worksheet_modelview(index: usize) -> Option<DMat4> {
     Some(mat4_from_rows(rows))
 }
 
+/// The demo's "eye space": object space moved so that its eye (-4, 0, -8) is the origin.
+pub fn phong_demo_eye_from_object() -> DMat4 {
+    // -PHONG_DEMO_EYE, written out (negating 0 would give -0).
+    DMat4::from_translation(DVec3::new(4.0, 0.0, 8.0))
+}
+
 /// The matrix that takes object-space normals to eye space.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NormalMatrix {

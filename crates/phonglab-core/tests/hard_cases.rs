@@ -1,4 +1,4 @@
-//! Every `hard_*` public case, one test each: the value DESIGN.md's numerics policy gives,
+//! Every `hard_*` public case, one test each: the value docs/lighting.md's numerics policy gives,
 //! and why. Where the policy departs from Mesa the test says so and asserts the correct
 //! value; at an exact discontinuity (a 1-ulp change of an input flips the answer) either
 //! side is accepted, and the test says which two.
@@ -418,7 +418,7 @@ case_tests! {
     hard_uniform_scale3_normalize_off => matches_mesa("hard_uniform_scale3_normalize_off");
     hard_uniform_scale3_normalize_on => matches_mesa("hard_uniform_scale3_normalize_on");
     hard_uniform_scale3_normalize_rescale => matches_mesa("hard_uniform_scale3_normalize_rescale");
-    // Positions with w != 1 are divided by w (DESIGN.md): (0,0,-10,2) is (0,0,-5). Mesa ignores
+    // Positions with w != 1 are divided by w (docs/lighting.md): (0,0,-10,2) is (0,0,-5). Mesa ignores
     // the vertex's w and lights it as if at (0,0,-10).
     hard_vertex_w2 => departs_same_as("hard_vertex_w2", |s| s.vertex.position = DVec4::new(0.0, 0.0, -5.0, 1.0));
     // The light's w is divided by (Mesa agrees): (6,0,0,2) is (3,0,0).

@@ -7,7 +7,7 @@ use glam::DVec3;
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::{Engine, Rules, presets};
 
-/// The worksheet's printout with mview5 (DESIGN.md).
+/// The worksheet's printout with mview5 (docs/lighting.md).
 const PRINTED: [(&str, [f64; 4]); 7] = [
     ("vertexNormal", [0.0, 0.6, 0.8, 0.0]),
     ("vlv", [0.79220526, 0.55887606, -0.2450885, 0.0]),
@@ -178,6 +178,6 @@ fn opengl_rules_add_the_scene_ambient_as_mesa_does() {
     let mut scene = presets::worksheet(5);
     scene.rules = Rules::OPENGL;
     let lit = Engine::<f32>::light_scene_vertex(&scene).unwrap();
-    // Mesa llvmpipe with the default light-model ambient 0.2 (DESIGN.md).
+    // Mesa llvmpipe with the default light-model ambient 0.2 (docs/lighting.md).
     assert_close("I", &lit.front.primary.map(|x| x as f64), &[0.102087, 0.061259, 0.025955, 1.0], 1e-6);
 }

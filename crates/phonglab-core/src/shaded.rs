@@ -1,0 +1,76 @@
+//! A document's shaded view, set up for the renderer: the scene as the view lights it (eye
+//! space, or the demo's object space), where the view draws the object, and the options.
+//! One setup for the app, the CLI and the cost study, so they all draw the same picture.
+
+use crate::view::{Framing, LightingSpace, View};
+
+/// Everything the renderer needs to draw a document's shaded view: one setup for the app,
+/// the CLI and the cost study, so they all draw the same picture.
+#[derive(Clone, Debug)]
+pub struct ShadedSetup {
+    /// The lighting state, with the modelview the object is lit under.
+    pub scene: crate::Scene,
+    /// Where it is drawn.
+    pub clip_from_object: glam::DMat4,
+    /// The view it came from.
+    pub view: View,
+    /// Numerical options.
+    pub options: crate::EvalOptions,
+}
+
+impl ShadedSetup {
+    /// The render job for `mesh` (the view's mesh, usually).
+    pub fn job<'a>(&'a self, mesh: &'a crate::mesh::Mesh) -> crate::render::Job<'a> {
+        crate::render::Job {
+            scene: &self.scene,
+            mesh,
+            clip_from_object: self.clip_from_object,
+            shading: self.view.shading,
+            flat_normal: self.view.flat_normal,
+            background: self.view.background,
+            cull_back: false,
+            options: self.options,
+        }
+    }
+}
+
+impl crate::Document {
+    /// The scene as the shaded view lights it. In eye space (OpenGL): the document's
+    /// lighting under the view's camera (the orbit camera, or in clip space the document's
+    /// own), with the object spun. In object space (the demo): the document's scene as it
+    /// is, spin left out.
+    pub fn shaded_scene(&self) -> crate::Scene {
+        let mut s = self.scene.clone();
+        if self.view.lighting_space == LightingSpace::Eye {
+            if self.view.framing == Framing::Orbit {
+                s.eye_from_world = self.view.camera.eye_from_world();
+            }
+            s.world_from_object = self.view.spin();
+        }
+        s
+    }
+
+    /// The shaded view's whole setup with power function `pow`.
+    pub fn shaded_setup(&self, pow: crate::PowFn) -> ShadedSetup {
+        ShadedSetup {
+            scene: self.shaded_scene(),
+            clip_from_object: self.view.clip_from_object(),
+            view: self.view.clone(),
+            options: self.view.eval_options(pow),
+        }
+    }
+
+    /// This document with the worked calculation moved to `vertex` (object space) as the
+    /// shaded view lights it: the same camera and spin, so both panels show one vertex.
+    pub fn with_vertex_as_shaded(&self, vertex: crate::Vertex) -> crate::Document {
+        let mut d = self.clone();
+        let s = self.shaded_scene();
+        d.scene.vertex = vertex;
+        if s.eye_from_world != d.scene.eye_from_world {
+            d.camera = crate::CameraSpec::Matrix(s.eye_from_world);
+            d.scene.eye_from_world = s.eye_from_world;
+        }
+        d.scene.world_from_object = s.world_from_object;
+        d
+    }
+}
