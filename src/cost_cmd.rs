@@ -5,7 +5,7 @@
 use std::io::IsTerminal as _;
 use std::path::PathBuf;
 
-use anyhow::{Context as _, Result};
+use anyhow::{Context as _, Result, bail};
 use phonglab_core::cost::{self, Question, Setup, Study, Timing};
 use phonglab_core::{Document, ObjectKind};
 
@@ -88,6 +88,70 @@ pub fn table(study: &Study) -> String {
     s
 }
 
+/// Splits one CSV line into fields (RFC 4180: a quoted field may hold commas, and `""` is
+/// a quote).
+fn csv_fields(line: &str) -> Vec<String> {
+    let (mut out, mut cur, mut quoted, mut chars) = (Vec::new(), String::new(), false, line.chars().peekable());
+    while let Some(c) = chars.next() {
+        match (c, quoted) {
+            ('"', true) if chars.peek() == Some(&'"') => {
+                cur.push('"');
+                chars.next();
+            }
+            ('"', _) => quoted = !quoted,
+            (',', false) => out.push(std::mem::take(&mut cur)),
+            (c, _) => cur.push(c),
+        }
+    }
+    out.push(cur);
+    out
+}
+
+/// The README's tables of a `cost.csv`: one Markdown table per object, its rows as the CSV
+/// has them (the README shows exactly this, and a test keeps the two equal).
+pub fn markdown_tables(csv: &str) -> Result<String> {
+    let mut lines = csv.lines();
+    let header = csv_fields(lines.next().context("an empty cost.csv")?);
+    let col = |name: &str| header.iter().position(|h| h == name).with_context(|| format!("no column {name}"));
+    let (object, variant, tris, ms, mean, max, share) = (
+        col("object")?,
+        col("variant")?,
+        col("triangles")?,
+        col("ms_per_frame")?,
+        col("mean_error_255")?,
+        col("max_error_255")?,
+        col("share_over_1_255")?,
+    );
+    let mut out = String::new();
+    let mut current = String::new();
+    for (n, line) in lines.enumerate().filter(|(_, l)| !l.trim().is_empty()) {
+        let f = csv_fields(line);
+        if f.len() != header.len() {
+            bail!("cost.csv line {}: {} fields, the header has {}", n + 2, f.len(), header.len());
+        }
+        let num = |i: usize| f[i].parse::<f64>().with_context(|| format!("cost.csv line {}: {:?}", n + 2, f[i]));
+        if f[object] != current {
+            current = f[object].clone();
+            if !out.is_empty() {
+                out.push('\n');
+            }
+            out.push_str(&format!("**{current}**\n\n"));
+            out.push_str("| variant | triangles | ms/frame | mean error | max error | pixels off > 1/255 |\n");
+            out.push_str("|---|---|---|---|---|---|\n");
+        }
+        out.push_str(&format!(
+            "| {} | {} | {:.2} | {:.2} | {:.1} | {:.1} % |\n",
+            f[variant],
+            f[tris],
+            num(ms)?,
+            num(mean)?,
+            num(max)?,
+            100.0 * num(share)?
+        ));
+    }
+    Ok(out)
+}
+
 /// Paints the studies' charts, one under another, into an RGBA image (1 point = 1 pixel
 /// at `ppp` 1; 2 for a sharper image).
 pub fn chart_png(studies: &[Study], ppp: f32) -> (usize, usize, Vec<u8>) {
@@ -138,7 +202,9 @@ pub fn run(a: &CostRun) -> Result<()> {
         }
     }
     let csv_path = a.out.join("cost.csv");
-    std::fs::write(&csv_path, csv).with_context(|| format!("cannot write {}", csv_path.display()))?;
+    std::fs::write(&csv_path, &csv).with_context(|| format!("cannot write {}", csv_path.display()))?;
+    let md_path = a.out.join("cost.md");
+    std::fs::write(&md_path, markdown_tables(&csv)?).with_context(|| format!("cannot write {}", md_path.display()))?;
     let (w, h, rgba) = chart_png(&studies, 1.5);
     let png_path = a.out.join("cost.png");
     crate::image_io::write_png(&png_path, w, h, &rgba)?;

@@ -230,3 +230,31 @@ fn bench_ui_times_every_case_with_every_panel_open() {
         assert!(r[1..].iter().all(|x| x.parse::<f64>().is_ok_and(|v| v > 0.0)), "{r:?}");
     }
 }
+
+#[test]
+fn the_readme_cost_tables_are_the_committed_csv() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let csv = std::fs::read_to_string(format!("{root}/docs/cost.csv")).unwrap();
+    let tables = phonglab::cost_cmd::markdown_tables(&csv).unwrap();
+    let readme = std::fs::read_to_string(format!("{root}/README.md")).unwrap();
+    let begin = readme.find("<!-- cost-tables:begin").expect("the README marks its cost tables");
+    let begin = begin + readme[begin..].find("-->\n").unwrap() + 4;
+    let end = readme.find("<!-- cost-tables:end -->").unwrap();
+    assert_eq!(readme[begin..end].trim(), tables.trim(), "regenerate the README's tables from docs/cost.csv");
+    // Every row has its columns in place: a triangle count, then the figures.
+    for row in tables.lines().filter(|l| l.starts_with("| ") && !l.starts_with("| variant")) {
+        let cells: Vec<&str> = row.trim_matches('|').split(" | ").map(str::trim).collect();
+        assert_eq!(cells.len(), 6, "{row}");
+        assert!(cells[1].parse::<u64>().is_ok(), "{row}");
+        let share: f64 = cells[5].trim_end_matches(" %").parse().unwrap();
+        assert!((0.0..=100.0).contains(&share), "{row}");
+    }
+}
+
+#[test]
+fn a_quoted_label_keeps_its_columns() {
+    let csv = "object,variant,question,shading,level,triangles,ms_per_frame,mean_error_255,max_error_255,share_over_1_255\n\
+               sphere,\"Phong 32, llvmpipe pow\",Approximation,Phong,32,1984,6.5,0.70,111.9,0.171\n";
+    let t = phonglab::cost_cmd::markdown_tables(csv).unwrap();
+    assert!(t.contains("| Phong 32, llvmpipe pow | 1984 | 6.50 | 0.70 | 111.9 | 17.1 % |"), "{t}");
+}
