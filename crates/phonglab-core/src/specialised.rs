@@ -560,11 +560,24 @@ impl Lighter {
                 }
             }
             Stage::ViewVector => {
-                let (local, plane) = (self.key.local_viewer, e.rules.viewer_from_eye_plane());
-                for i in 0..n {
-                    let v = terms::view_vector::<f32>(local, plane, c.pos[i]);
-                    let v3 = v.unwrap_or(Vec3::ZERO);
-                    (c.vx[i], c.vy[i], c.vz[i], c.v_ok[i]) = (v3.x, v3.y, v3.z, v.is_some());
+                // terms::view_vector on components, so the loops vectorise.
+                if self.key.local_viewer {
+                    // normalize(-P), in f64, rounded to f32.
+                    for i in 0..n {
+                        let p = c.pos[i];
+                        let (x, y, z, _, ok) = normalize3::<f64>(-p.x, -p.y, -p.z);
+                        (c.vx[i], c.vy[i], c.vz[i], c.v_ok[i]) = (x as f32, y as f32, z as f32, ok);
+                    }
+                } else {
+                    // The stage runs only for a local viewer or the worksheet's rule
+                    // (plan::Key::per_vertex_view), so here V = (0, 0, -sign(P.z)),
+                    // undefined on the plane z = 0.
+                    for i in 0..n {
+                        let z = c.pos[i].z;
+                        (c.vx[i], c.vy[i]) = (0.0, 0.0);
+                        c.vz[i] = if z > 0.0 { -1.0 } else { 1.0 };
+                        c.v_ok[i] = z < 0.0 || z > 0.0;
+                    }
                 }
             }
             Stage::LightVector(li) => {
