@@ -576,7 +576,7 @@ impl Lighter {
                         let z = c.pos[i].z;
                         (c.vx[i], c.vy[i]) = (0.0, 0.0);
                         c.vz[i] = if z > 0.0 { -1.0 } else { 1.0 };
-                        c.v_ok[i] = z < 0.0 || z > 0.0;
+                        c.v_ok[i] = z.abs() > 0.0; // false for 0 and NaN
                     }
                 }
             }
