@@ -35,6 +35,16 @@ fn plan_ui(ui: &mut Ui, effects: &[Effect], stages: &[Stage]) {
     });
 }
 
+/// The teacher's walk through the steps: the step highlighted, and whether it just moved
+/// (then the list scrolls to it).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Walk {
+    /// The highlighted step, counted from 0.
+    pub step: Option<usize>,
+    /// Scroll it into view this frame.
+    pub scroll: bool,
+}
+
 /// The steps; `side` is switchable when two-sided lighting is on. Steps the specialised
 /// evaluator skips are greyed, with the reason.
 pub fn calculation_ui(
@@ -44,6 +54,7 @@ pub fn calculation_ui(
     two_sided: bool,
     effects: &[Effect],
     stages: &[Stage],
+    walk: Walk,
 ) {
     ui.horizontal(|ui| {
         ui.heading("Worked calculation");
@@ -64,33 +75,53 @@ pub fn calculation_ui(
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
         for (k, st) in ex.steps.iter().enumerate() {
             let skip = effects.iter().find(|e| !e.on && e.light == st.light && e.step_kind() == Some(st.kind));
-            ui.horizontal_wrapped(|ui| {
-                ui.label(RichText::new(format!("{:>2}.", k + 1)).monospace().weak());
-                let title = RichText::new(&st.title);
-                ui.label(if skip.is_some() { title.weak() } else { title.strong() });
-                ui.label(RichText::new(&st.formula).monospace().weak());
-            });
-            let value = match &st.value {
-                Some(v) => format!("{} = {}", st.name, fmt_value(v, DIGITS)),
-                None => format!("{} = n/a", st.name),
+            let here = walk.step == Some(k);
+            let frame = if here {
+                egui::Frame::new()
+                    .fill(ui.visuals().selection.bg_fill.gamma_multiply(0.45))
+                    .stroke(ui.visuals().selection.stroke)
+                    .corner_radius(4.0)
+                    .inner_margin(4.0)
+            } else {
+                egui::Frame::new().inner_margin(4.0)
             };
-            let mut text = RichText::new(value).monospace();
-            if let Some(c) = palette::step(st.kind).filter(|_| skip.is_none()) {
-                text = text.color(c);
+            let shown = frame.show(ui, |ui| step_ui(ui, k, st, skip));
+            if here && walk.scroll {
+                shown.response.scroll_to_me(Some(egui::Align::Center));
             }
-            if skip.is_some() {
-                text = text.weak();
-            }
-            ui.indent(("value", k), |ui| {
-                ui.label(text);
-                if let Some(e) = skip {
-                    ui.label(RichText::new(format!("skipped by the specialised evaluator: {}", e.why)).small().weak());
-                }
-                for n in &st.notes {
-                    ui.label(RichText::new(format!("note: {n}")).color(palette::NOTE));
-                }
-            });
             ui.add_space(2.0);
+        }
+    });
+}
+
+/// One step: its number, title and formula, then its value (in its symbol's colour) and
+/// the notes.
+fn step_ui(ui: &mut Ui, k: usize, st: &phonglab_core::explain::Step, skip: Option<&Effect>) {
+    ui.horizontal(|ui| {
+        ui.label(RichText::new(format!("{:>2}.", k + 1)).monospace().weak());
+        let title = RichText::new(&st.title);
+        ui.label(if skip.is_some() { title.weak() } else { title.strong() });
+    });
+    // The formula on a line of its own, so that when it wraps it wraps under itself.
+    ui.label(RichText::new(&st.formula).monospace().weak());
+    let value = match &st.value {
+        Some(v) => format!("{} = {}", st.name, fmt_value(v, DIGITS)),
+        None => format!("{} = n/a", st.name),
+    };
+    let mut text = RichText::new(value).monospace();
+    if let Some(c) = palette::step(st.kind).filter(|_| skip.is_none()) {
+        text = text.color(palette::ink(ui, c));
+    }
+    if skip.is_some() {
+        text = text.weak();
+    }
+    ui.indent(("value", k), |ui| {
+        ui.label(text);
+        if let Some(e) = skip {
+            ui.label(RichText::new(format!("skipped by the specialised evaluator: {}", e.why)).small().weak());
+        }
+        for n in &st.notes {
+            ui.label(RichText::new(format!("note: {n}")).color(palette::ink(ui, palette::NOTE)));
         }
     });
 }

@@ -3,10 +3,13 @@
 //! [`AppState`] and takes `&mut egui::Ui`, so tests drive it headless.
 
 pub mod calculation;
+pub mod compare;
 pub mod controls;
 pub mod cost;
 pub mod files;
 pub mod help;
+pub mod layout;
+pub mod lobe;
 pub mod palette;
 pub mod persist;
 pub mod result;
@@ -89,13 +92,40 @@ fn apply_action(state: &mut AppState, action: help::Action) {
 }
 
 fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
+    // Labels move to the next row whole rather than breaking across rows.
+    ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
     ui.horizontal_wrapped(|ui| {
         ui.strong("phonglab");
+        ui.separator();
+        let layout = &mut state.ui.layout;
+        let present = if layout.presenting { "Leave presentation (F5)" } else { "Present (F5)" };
+        if ui
+            .selectable_label(layout.presenting, present)
+            .on_hover_text("Large type; the controls in a drawer")
+            .clicked()
+        {
+            layout.presenting = !layout.presenting;
+        }
+        if layout.presenting {
+            ui.toggle_value(&mut layout.drawer_open, "Controls drawer");
+        } else {
+            ui.toggle_value(&mut layout.controls_open, "Controls");
+            ui.toggle_value(&mut layout.calculation_open, "Calculation");
+        }
+        if ui.button(layout.theme.toggled().label()).on_hover_text("Both themes are high-contrast").clicked() {
+            layout.theme = layout.theme.toggled();
+        }
         ui.separator();
         if ui.button("Reset to worksheet").on_hover_text("Ctrl+R").clicked() {
             state.reset_to_worksheet();
         }
         ui.menu_button("Presets", |ui| presets_menu_ui(ui, state));
+        ui.toggle_value(&mut state.compare.open, "Compare")
+            .on_hover_text("Pin the scene as A, change anything, and see A and B side by side");
+        if state.ui.layout.presenting {
+            ui.label(egui::RichText::new(&state.doc.name).weak());
+            return;
+        }
         ui.separator();
         ui.label("Precision:");
         ui.radio_value(&mut state.ui.precision, Precision::F32, "f32");
@@ -160,22 +190,41 @@ fn presets_menu_ui(ui: &mut Ui, state: &mut AppState) {
     });
 }
 
+/// The keys of presentation: F5 toggles it; the arrow keys walk through the calculation's
+/// steps (when no widget has the keyboard).
+fn presentation_keys(ctx: &egui::Context, state: &mut AppState, steps: usize) {
+    let layout = &mut state.ui.layout;
+    if ctx.input_mut(|i| i.consume_key(egui::Modifiers::NONE, egui::Key::F5)) {
+        layout.presenting = !layout.presenting;
+    }
+    if ctx.egui_wants_keyboard_input() || ctx.memory(|m| m.focused().is_some()) {
+        return;
+    }
+    let (down, up) = ctx.input_mut(|i| {
+        let down = i.consume_key(egui::Modifiers::NONE, egui::Key::ArrowDown)
+            || i.consume_key(egui::Modifiers::NONE, egui::Key::ArrowRight);
+        let up = i.consume_key(egui::Modifiers::NONE, egui::Key::ArrowUp)
+            || i.consume_key(egui::Modifiers::NONE, egui::Key::ArrowLeft);
+        (down, up)
+    });
+    if down || up {
+        layout.step_by(if down { 1 } else { -1 }, steps);
+        state.ui.scroll_to_step = true;
+    }
+}
+
 /// The whole explorer UI.
 pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
-    for a in help::pressed(ui.ctx()) {
+    let ctx = ui.ctx().clone();
+    let visuals = state.ui.layout.theme.visuals();
+    if ctx.global_style().visuals != visuals {
+        ctx.set_visuals(visuals.clone());
+    }
+    *ui.visuals_mut() = visuals;
+    for a in help::pressed(&ctx) {
         apply_action(state, a);
     }
-    files::dropped_files_ui(ui.ctx(), state);
-
-    egui::Panel::top("top bar").show(ui, |ui| top_bar_ui(ui, state));
-
-    egui::Panel::left("controls").resizable(true).default_size(380.0).min_size(280.0).show(ui, |ui| {
-        egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
-            let mut candidate = state.doc.clone();
-            controls::controls_ui(ui, &mut candidate, &mut state.ui);
-            state.apply(candidate);
-        });
-    });
+    files::dropped_files_ui(&ctx, state);
 
     let eval = match state.evaluate() {
         Ok(e) => e,
@@ -191,49 +240,74 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
             }
         }
     };
+    presentation_keys(&ctx, state, eval.explanation.steps.len());
+    if state.ui.layout.presenting {
+        layout::scale_text(ui.style_mut(), layout::PRESENTATION_TEXT_SCALE);
+    }
+    let width = ui.max_rect().width();
 
-    egui::Panel::right("calculation").resizable(true).default_size(430.0).min_size(300.0).show(ui, |ui| {
-        let two_sided = state.doc.scene.light_model.two_sided;
-        let key = phonglab_core::plan::Key::of(&state.doc.scene, phonglab_core::EvalOptions::with_pow(state.ui.pow));
-        let program = key.program();
-        let effects = key.effects_of(&program);
-        calculation::calculation_ui(ui, &eval.explanation, &mut state.ui.side, two_sided, &effects, &program.stages);
-    });
+    egui::Panel::top("top bar").show(ui, |ui| top_bar_ui(ui, state));
 
-    egui::CentralPanel::default().show(ui, |ui| {
-        result::result_ui(ui, &eval, state.doc.scene.light_model.separate_specular, &state.message);
-        ui.separator();
-        let vectors = |ui: &mut Ui, state: &mut AppState| {
-            ui.push_id("vectors", |ui| {
-                ui.strong("Vectors at the vertex (eye space)");
-                vector_plot::vector_plot_ui(ui, &mut state.ui.orbit, &eval, state.doc.scene.rules.specular);
-            });
-        };
-        let shaded = |ui: &mut Ui, state: &mut AppState| {
-            ui.push_id("shaded", |ui| {
-                ui.strong("Shaded view");
-                let mut cache = std::mem::take(&mut state.shaded);
-                shaded::shaded_ui(ui, state, &mut cache);
-                state.shaded = cache;
-            });
-        };
-        if ui.available_width() >= 760.0 {
-            // Side by side.
-            ui.columns(2, |cols| {
-                vectors(&mut cols[0], state);
-                shaded(&mut cols[1], state);
-            });
-        } else {
-            // Stacked, each half of the height.
-            let h = ui.available_height() / 2.0;
-            ui.allocate_ui(egui::vec2(ui.available_width(), h), |ui| vectors(ui, state));
-            shaded(ui, state);
-        }
-    });
+    let controls = |ui: &mut Ui, state: &mut AppState| {
+        // Sliders sized to the panel, so a narrow panel does not widen to fit them.
+        ui.spacing_mut().slider_width = (ui.available_width() - 200.0).clamp(60.0, 160.0);
+        egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
+            let mut candidate = state.doc.clone();
+            controls::controls_ui(ui, &mut candidate, &mut state.ui);
+            state.apply(candidate);
+        });
+    };
+    let presenting = state.ui.layout.presenting;
+    if presenting {
+        let mut open = state.ui.layout.drawer_open;
+        egui::Panel::left("drawer")
+            .resizable(true)
+            .default_size(layout::Layout::controls_width(width))
+            .min_size(240.0)
+            .show_collapsible(ui, &mut open, |ui| controls(ui, state));
+        state.ui.layout.drawer_open = open;
+    } else {
+        let mut open = state.ui.layout.controls_open;
+        egui::Panel::left("controls")
+            .resizable(true)
+            .default_size(layout::Layout::controls_width(width))
+            .min_size(220.0)
+            .show_collapsible(ui, &mut open, |ui| controls(ui, state));
+        state.ui.layout.controls_open = open;
+    }
 
-    cost::cost_window_ui(ui.ctx(), state);
+    let mut open = state.ui.layout.calculation_open || presenting;
+    egui::Panel::right(if presenting { "calculation (presenting)" } else { "calculation" })
+        .resizable(true)
+        .default_size(layout::Layout::calculation_width(width) * if presenting { 1.25 } else { 1.0 })
+        .min_size(260.0)
+        .show_collapsible(ui, &mut open, |ui| {
+            let two_sided = state.doc.scene.light_model.two_sided;
+            let key =
+                phonglab_core::plan::Key::of(&state.doc.scene, phonglab_core::EvalOptions::with_pow(state.ui.pow));
+            let program = key.program();
+            let effects = key.effects_of(&program);
+            let walk =
+                calculation::Walk { step: state.ui.layout.step, scroll: std::mem::take(&mut state.ui.scroll_to_step) };
+            calculation::calculation_ui(
+                ui,
+                &eval.explanation,
+                &mut state.ui.side,
+                two_sided,
+                &effects,
+                &program.stages,
+                walk,
+            );
+        });
+    if !presenting {
+        state.ui.layout.calculation_open = open;
+    }
+
+    egui::CentralPanel::default().show(ui, |ui| centre_ui(ui, state, &eval));
+
+    cost::cost_window_ui(&ctx, state);
     if state.cost.poll() {
-        ui.ctx().request_repaint_after(std::time::Duration::from_millis(100));
+        ctx.request_repaint_after(std::time::Duration::from_millis(100));
     }
 
     if state.ui.show_help {
@@ -242,8 +316,58 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
             .open(&mut open)
             .collapsible(false)
             .resizable(false)
-            .show(ui.ctx(), help::help_ui);
+            .show(&ctx, help::help_ui);
         state.ui.show_help = open;
+    }
+}
+
+/// The centre: the colour, then the shaded view with the vector plot (or the lobe) beside
+/// it when the centre is wide, or below it when it is tall; with Compare on, A beside B.
+fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
+    if state.compare.open {
+        compare::compare_ui(ui, state, eval);
+        return;
+    }
+    result::result_ui(ui, eval, state.doc.scene.light_model.separate_specular, &state.message);
+    ui.separator();
+    let beside = |ui: &mut Ui, state: &mut AppState| {
+        ui.push_id("beside", |ui| {
+            ui.horizontal(|ui| {
+                ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Vectors, "Vectors at the vertex");
+                ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Lobe, "Reflection lobe");
+            });
+            match state.ui.layout.beside {
+                layout::Beside::Vectors => {
+                    vector_plot::vector_plot_ui(ui, &mut state.ui.orbit, eval, state.doc.scene.rules.specular)
+                }
+                layout::Beside::Lobe => lobe::lobe_ui(ui, &state.doc.scene, eval),
+            }
+        });
+    };
+    let shaded = |ui: &mut Ui, state: &mut AppState| {
+        ui.push_id("shaded", |ui| {
+            let mut cache = std::mem::take(&mut state.shaded);
+            shaded::shaded_ui(ui, state, &mut cache, eval);
+            state.shaded = cache;
+        });
+    };
+    let avail = ui.available_size();
+    if avail.x >= 1.5 * avail.y {
+        // Side by side: the shaded view takes the larger share.
+        let w = (avail.x * 0.58).min(avail.y + 40.0);
+        ui.horizontal_top(|ui| {
+            ui.allocate_ui(egui::vec2(w, avail.y), |ui| shaded(ui, state));
+            ui.separator();
+            ui.vertical(|ui| beside(ui, state));
+        });
+    } else {
+        // Stacked: the shaded view on top, its image at least 45 % of the window's height
+        // where the centre allows (its controls take about 150 points above it).
+        let window = ui.ctx().content_rect().height();
+        let h = (0.45 * window + 150.0).max(avail.y * 0.6).min(avail.y - 120.0);
+        ui.allocate_ui(egui::vec2(avail.x, h), |ui| shaded(ui, state));
+        ui.separator();
+        beside(ui, state);
     }
 }
 
@@ -259,6 +383,8 @@ impl PhongLabApp {
     pub fn new(cc: &eframe::CreationContext<'_>, notice: Option<String>, file: Option<std::path::PathBuf>) -> Self {
         let mut state = AppState::worksheet();
         let text = cc.storage.and_then(|s| s.get_string(persist::DOCUMENT_KEY));
+        state.ui.layout =
+            layout::Layout::from_ron(cc.storage.and_then(|s| s.get_string(layout::LAYOUT_KEY)).as_deref());
         let dir = eframe::storage_dir(persist::APP_ID);
         match persist::restore_document(text.as_deref(), dir.as_deref()) {
             Ok(Some(doc)) => state.doc = doc,
@@ -285,6 +411,7 @@ impl eframe::App for PhongLabApp {
         if let Ok(text) = self.state.doc.to_toml() {
             storage.set_string(persist::DOCUMENT_KEY, text);
         }
+        storage.set_string(layout::LAYOUT_KEY, self.state.ui.layout.to_ron());
     }
 }
 

@@ -20,6 +20,18 @@ pub const NOTE: Color32 = Color32::from_rgb(0xff, 0x9a, 0x3c);
 /// Error messages.
 pub const ERROR: Color32 = Color32::from_rgb(0xff, 0x60, 0x60);
 
+/// `c` as drawn on the current background: as is on a dark one, darkened on a light one
+/// so that it keeps its contrast (the light theme is for bright rooms).
+pub fn ink(ui: &egui::Ui, c: Color32) -> Color32 {
+    if ui.visuals().dark_mode { c } else { darker(c) }
+}
+
+/// `c` at 55 % of its brightness.
+pub fn darker(c: Color32) -> Color32 {
+    let k = |x: u8| (x as f32 * 0.55).round() as u8;
+    Color32::from_rgb(k(c.r()), k(c.g()), k(c.b()))
+}
+
 /// The colour a step's value is drawn in (`None`: the default text colour).
 pub fn step(kind: StepKind) -> Option<Color32> {
     match kind {

@@ -1,6 +1,6 @@
 //! The lit colour: a large swatch and the rgba numbers, clamped and unclamped.
 
-use egui::{RichText, Ui};
+use egui::{Color32, RichText, Ui};
 
 use super::palette::{self, gl_to_color32};
 use super::state::{Evaluated, Message, SideColors};
@@ -11,9 +11,14 @@ fn fmt4(c: &[f64; 4]) -> String {
 }
 
 fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool) {
-    ui.vertical(|ui| {
-        ui.label(RichText::new(title).strong());
-        let (rect, _) = ui.allocate_exact_size(egui::vec2(160.0, 96.0), egui::Sense::hover());
+    let unclamped = fmt4(&c.primary);
+    // The numbers' width, to choose between the swatch beside them and a swatch above.
+    let font = egui::TextStyle::Monospace.resolve(ui.style());
+    let text_w = ui.ctx().fonts_mut(|f| f.layout_no_wrap(unclamped.clone(), font, Color32::WHITE).size().x);
+    let labels_w = 70.0;
+    let wide = ui.available_width() >= 88.0 + 16.0 + labels_w + text_w;
+    let swatch = |ui: &mut Ui, size: egui::Vec2| {
+        let (rect, _) = ui.allocate_exact_size(size, egui::Sense::hover());
         ui.painter().rect_filled(rect, 6.0, gl_to_color32([c.shown[0], c.shown[1], c.shown[2]]));
         ui.painter().rect_stroke(
             rect,
@@ -21,26 +26,47 @@ fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool) {
             egui::Stroke::new(1.0, ui.visuals().weak_text_color()),
             egui::StrokeKind::Outside,
         );
-        egui::Grid::new(format!("{title} numbers")).num_columns(2).show(ui, |ui| {
-            ui.label("rgba (unclamped)");
-            ui.monospace(fmt4(&c.primary)).on_hover_text("The primary colour as the equation gives it.");
-            ui.end_row();
-            ui.label("rgba (clamped)");
-            ui.monospace(fmt4(&c.shown))
-                .on_hover_text("Primary + secondary rgb, clamped to [0, 1]: what a fragment gets.");
-            ui.end_row();
-            if separate {
-                ui.label("secondary");
-                ui.monospace(fmt4(&c.secondary));
+    };
+    let numbers = |ui: &mut Ui, labelled: bool| {
+        let rows = [
+            ("unclamped", unclamped.clone(), "The primary colour as the equation gives it."),
+            ("clamped", fmt4(&c.shown), "Primary + secondary rgb, clamped to [0, 1]: what a fragment gets."),
+        ];
+        let secondary = separate.then(|| ("secondary", fmt4(&c.secondary), "The secondary (specular) colour."));
+        egui::Grid::new(format!("{title} numbers")).num_columns(2).spacing([6.0, 2.0]).show(ui, |ui| {
+            for (name, value, why) in rows.into_iter().chain(secondary) {
+                if labelled {
+                    ui.small(name);
+                }
+                ui.monospace(value).on_hover_text(why);
                 ui.end_row();
             }
         });
-    });
+    };
+    if wide {
+        ui.horizontal_top(|ui| {
+            swatch(ui, egui::vec2(88.0, 64.0));
+            ui.vertical(|ui| {
+                ui.label(RichText::new(title).strong());
+                numbers(ui, true);
+            });
+        });
+    } else {
+        // Narrow: the swatch beside the title, the numbers below, unclamped first.
+        ui.vertical(|ui| {
+            ui.horizontal(|ui| {
+                swatch(ui, egui::vec2(40.0, 18.0));
+                ui.label(RichText::new(title).strong());
+                ui.small(if separate { "unclamped, clamped, secondary" } else { "unclamped, then clamped" });
+            });
+            numbers(ui, false);
+        });
+    }
 }
 
 /// The swatch(es) and numbers, and the last message.
 pub fn result_ui(ui: &mut Ui, eval: &Evaluated, separate_specular: bool, message: &Option<Message>) {
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         side_ui(ui, if eval.back.is_some() { "Front face" } else { "Vertex colour" }, &eval.front, separate_specular);
         if let Some(b) = &eval.back {
             ui.add_space(16.0);
@@ -49,7 +75,7 @@ pub fn result_ui(ui: &mut Ui, eval: &Evaluated, separate_specular: bool, message
     });
     match message {
         Some(Message::Refused(m)) => {
-            ui.colored_label(palette::ERROR, m);
+            ui.colored_label(palette::ink(ui, palette::ERROR), m);
         }
         Some(Message::Info(m)) => {
             ui.label(m);

@@ -6,17 +6,17 @@
 //! worked calculation, with this view's camera and spin, so both panels show one vertex.
 
 use egui::{Color32, Sense, Ui};
-use glam::DVec4;
+use glam::{DVec3, DVec4};
 use phonglab_core::library::DemoDeparture;
 use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, Shading, Vertex, View};
 
-use super::state::{AppState, Message};
+use super::state::{AppState, Evaluated, Message};
 pub use super::view_cache::{ShadedCache, ViewCache, mesh_for};
 
 /// The pipeline's choices where OpenGL and the Phong demo differ, and the demo's
 /// departures as switches: each flipped one is corrected in a second picture beside the
 /// demo's own.
-fn pipeline_ui(ui: &mut Ui, view: &mut View, fixes: &mut [bool; 3], departures: &[DemoDeparture]) {
+fn pipeline_ui(ui: &mut Ui, view: &mut View) {
     egui::CollapsingHeader::new("Pipeline: OpenGL's or the demo's").id_salt("pipeline").show(ui, |ui| {
         ui.horizontal_wrapped(|ui| {
             let l = ui.label("Picture");
@@ -43,6 +43,10 @@ fn pipeline_ui(ui: &mut Ui, view: &mut View, fixes: &mut [bool; 3], departures: 
             }
         });
     });
+}
+
+/// The demo's departures as switches (only those the document makes).
+fn departures_ui(ui: &mut Ui, fixes: &mut [bool; 3], departures: &[DemoDeparture]) {
     if departures.is_empty() {
         return;
     }
@@ -60,24 +64,8 @@ fn pipeline_ui(ui: &mut Ui, view: &mut View, fixes: &mut [bool; 3], departures: 
     );
 }
 
-/// The view's controls and the image (beside it, the corrected picture or the heat map).
-pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
-    let mut view = state.doc.view.clone();
-    ui.horizontal_wrapped(|ui| {
-        for (k, o) in [("s", ObjectKind::Sphere), ("t", ObjectKind::Teapot), ("c", ObjectKind::Cylinder)] {
-            ui.selectable_value(&mut view.object, o, o.label()).on_hover_text(format!("key {k}"));
-        }
-        ui.separator();
-        for (k, s) in [("1", Shading::Gouraud), ("2", Shading::Phong), ("3", Shading::Flat)] {
-            ui.selectable_value(&mut view.shading, s, s.label()).on_hover_text(format!("key {k}"));
-        }
-        ui.separator();
-        ui.checkbox(&mut view.auto_rotate, "Auto-rotate").on_hover_text("0.5 degrees a frame, as the demo (key A)");
-        ui.checkbox(&mut view.demo_normals, "Demo's normals")
-            .on_hover_text("normalize(position), as the demo: wrong for the teapot and the cylinder");
-        ui.checkbox(&mut state.cost.heat_map, "Error heat map")
-            .on_hover_text("Beside the view: how far each pixel is from per-pixel Phong in f64 on a very fine mesh");
-    });
+/// The mesh's resolution and the pipeline's choices.
+fn view_options_ui(ui: &mut Ui, view: &mut View) {
     ui.horizontal_wrapped(|ui| {
         let count = |ui: &mut Ui, label: &str, v: &mut u32, r: std::ops::RangeInclusive<u32>| {
             let l = ui.label(label);
@@ -96,8 +84,42 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
             }
         }
     });
+    pipeline_ui(ui, view);
+}
+
+/// The view's controls and the image (beside it, the corrected picture or the heat map),
+/// with N, L, V and H (or R) drawn at the worked calculation's vertex and the lights as
+/// markers that can be dragged.
+pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eval: &Evaluated) {
+    let mut view = state.doc.view.clone();
+    let presenting = state.ui.layout.presenting;
+    ui.horizontal_wrapped(|ui| {
+        for (k, o) in [("s", ObjectKind::Sphere), ("t", ObjectKind::Teapot), ("c", ObjectKind::Cylinder)] {
+            ui.selectable_value(&mut view.object, o, o.label()).on_hover_text(format!("key {k}"));
+        }
+        ui.separator();
+        for (k, s) in [("1", Shading::Gouraud), ("2", Shading::Phong), ("3", Shading::Flat)] {
+            ui.selectable_value(&mut view.shading, s, s.label()).on_hover_text(format!("key {k}"));
+        }
+        if presenting {
+            // In front of a class: the object and the shading only (the rest is in the drawer
+            // and on the keys).
+            return;
+        }
+        ui.separator();
+        ui.checkbox(&mut view.auto_rotate, "Auto-rotate").on_hover_text("0.5 degrees a frame, as the demo (key A)");
+        ui.checkbox(&mut view.demo_normals, "Demo's normals")
+            .on_hover_text("normalize(position), as the demo: wrong for the teapot and the cylinder");
+        ui.checkbox(&mut state.cost.heat_map, "Error heat map")
+            .on_hover_text("Beside the view: how far each pixel is from per-pixel Phong in f64 on a very fine mesh");
+    });
+    if !presenting {
+        egui::CollapsingHeader::new("View options").id_salt("view options").show(ui, |ui| {
+            view_options_ui(ui, &mut view);
+        });
+    }
     let departures: Vec<DemoDeparture> = DemoDeparture::ALL.into_iter().filter(|d| d.present_in(&state.doc)).collect();
-    pipeline_ui(ui, &mut view, &mut state.ui.demo_fixes, &departures);
+    departures_ui(ui, &mut state.ui.demo_fixes, &departures);
     if view != state.doc.view {
         let mut c = state.doc.clone();
         c.view = view;
@@ -172,33 +194,16 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
         })
         .inner;
 
-    // The light(s), as markers: each light's position in object space, drawn where the
-    // view draws the object.
-    let clip_from_object = state.doc.view.clip_from_object();
-    let object_from_eye = scene.eye_from_object().inverse();
-    for (i, l) in state.doc.scene.lights.iter().enumerate() {
-        let world = object_from_eye * scene.light_pos_in_eye(l);
-        let p = if world.w == 0.0 { (world.truncate().normalize_or_zero() * 1.2).extend(1.0) } else { world / world.w };
-        let c = clip_from_object * DVec4::new(p.x, p.y, p.z, 1.0);
-        if c.w <= 0.0 {
-            continue;
-        }
-        let (x, y) = (c.x / c.w, c.y / c.w);
-        let pos = resp.rect.min + egui::vec2(((x + 1.0) * 0.5) as f32 * size.x, ((1.0 - y) * 0.5) as f32 * size.y);
-        if resp.rect.expand(-4.0).contains(pos) {
-            ui.painter().circle(pos, 6.0, Color32::from_rgb(255, 230, 120), egui::Stroke::new(1.5, Color32::BLACK));
-            ui.painter().text(
-                pos + egui::vec2(8.0, -8.0),
-                egui::Align2::LEFT_BOTTOM,
-                format!("light {i}"),
-                egui::FontId::proportional(12.0),
-                Color32::WHITE,
-            );
-        }
-    }
+    let overlay = Overlay {
+        rect: resp.rect,
+        clip_from_object: state.doc.view.clip_from_object(),
+        object_from_eye: scene.eye_from_object().inverse(),
+    };
+    vectors_on_object_ui(ui, &overlay, state, eval);
+    let dragged_light = lights_ui(ui, &overlay, state, &scene);
 
     let mut cam = camera;
-    if resp.dragged() && state.doc.view.framing == Framing::Orbit {
+    if resp.dragged() && !dragged_light && state.doc.view.framing == Framing::Orbit {
         let d = resp.drag_delta();
         cam.yaw = (cam.yaw + d.x as f64 * 0.5).rem_euclid(360.0);
         cam.pitch = (cam.pitch + d.y as f64 * 0.5).clamp(-89.0, 89.0);
@@ -230,6 +235,162 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) {
             }
         }
     }
+}
+
+/// Where the shaded view's image is, and how object and eye space map onto it.
+struct Overlay {
+    /// The image on screen.
+    rect: egui::Rect,
+    /// The view's projection of the object.
+    clip_from_object: glam::DMat4,
+    /// The inverse of the scene's modelview, as the view lights it.
+    object_from_eye: glam::DMat4,
+}
+
+impl Overlay {
+    /// An object-space point (homogeneous) on screen, or `None` behind the camera.
+    fn screen_from_object(&self, p: DVec4) -> Option<egui::Pos2> {
+        let c = self.clip_from_object * p;
+        if c.w <= 0.0 || !c.is_finite() {
+            return None;
+        }
+        let (x, y) = (c.x / c.w, c.y / c.w);
+        let size = self.rect.size();
+        Some(self.rect.min + egui::vec2(((x + 1.0) * 0.5) as f32 * size.x, ((1.0 - y) * 0.5) as f32 * size.y))
+    }
+
+    /// An eye-space point on screen.
+    fn screen_from_eye(&self, p: DVec3) -> Option<egui::Pos2> {
+        self.screen_from_object(self.object_from_eye * p.extend(1.0))
+    }
+
+    /// The object-space point under the screen point `pos`, at the depth of the
+    /// object-space point `at` (so a dragged marker stays at its distance).
+    fn object_at(&self, pos: egui::Pos2, at: DVec4) -> Option<DVec4> {
+        let c = self.clip_from_object * at;
+        if c.w <= 0.0 {
+            return None;
+        }
+        let rel = (pos - self.rect.min) / self.rect.size();
+        let ndc = DVec4::new(rel.x as f64 * 2.0 - 1.0, 1.0 - rel.y as f64 * 2.0, c.z / c.w, 1.0);
+        let p = self.clip_from_object.inverse() * ndc;
+        (p.w != 0.0 && p.is_finite()).then(|| p / p.w)
+    }
+}
+
+/// An arrow from `from` to `to` with `label` at its tip.
+fn arrow_ui(ui: &Ui, from: egui::Pos2, to: egui::Pos2, color: Color32, label: &str) {
+    let p = ui.painter();
+    let outline = if ui.visuals().dark_mode { Color32::BLACK } else { Color32::WHITE };
+    let d = to - from;
+    if d.length() < 2.0 {
+        return;
+    }
+    let dir = d.normalized();
+    let tip = 10.0_f32.min(d.length() * 0.4);
+    let wing = egui::vec2(-dir.y, dir.x) * tip * 0.5;
+    let head = vec![to, to - dir * tip + wing, to - dir * tip - wing];
+    for (w, c) in [(5.0, outline), (2.5, color)] {
+        p.line_segment([from, to - dir * tip * 0.5], egui::Stroke::new(w, c));
+    }
+    p.add(egui::Shape::convex_polygon(head, color, egui::Stroke::new(1.0, outline)));
+    let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Body));
+    let at = to + dir * (font.size * 0.7);
+    p.text(at + egui::vec2(1.0, 1.0), egui::Align2::CENTER_CENTER, label, font.clone(), outline);
+    p.text(at, egui::Align2::CENTER_CENTER, label, font, color);
+}
+
+/// N, V, and each light's L and H (or R), drawn from the vertex on the object in the
+/// plot's and the calculation's colours, when the worked calculation's vertex is one the
+/// view draws (after a click on the surface, or in any scene whose frame is the view's).
+fn vectors_on_object_ui(ui: &Ui, o: &Overlay, state: &AppState, eval: &Evaluated) {
+    let doc = &state.doc;
+    if doc.with_vertex_as_shaded(doc.scene.vertex) != *doc {
+        return;
+    }
+    let scene = doc.shaded_scene();
+    let eye_from_object = scene.eye_from_object();
+    let v = doc.scene.vertex.position;
+    if v.w == 0.0 {
+        return;
+    }
+    let pos_in_eye = (eye_from_object * v).truncate() / (eye_from_object * v).w;
+    // A third of the object's size, in eye space.
+    let len = 0.35 * eye_from_object.transform_vector3(glam::DVec3::X).length();
+    let Some(from) = o.screen_from_eye(pos_in_eye) else { return };
+    if !o.rect.contains(from) {
+        return;
+    }
+    let draw = |vec: DVec3, c: Color32, name: &str| {
+        if vec.length() > 0.0
+            && let Some(to) = o.screen_from_eye(pos_in_eye + vec.normalize() * len)
+        {
+            arrow_ui(ui, from, to, super::palette::ink(ui, c), name);
+        }
+    };
+    let many = eval.lights.len() > 1;
+    for lv in &eval.lights {
+        let sfx = if many { lv.index.to_string() } else { String::new() };
+        draw(lv.l, super::palette::L, &format!("L{sfx}"));
+        match doc.scene.rules.specular {
+            phonglab_core::SpecularModel::BlinnPhong => draw(lv.h, super::palette::H, &format!("H{sfx}")),
+            phonglab_core::SpecularModel::Phong => draw(lv.r, super::palette::R, &format!("R{sfx}")),
+        }
+    }
+    draw(eval.v, super::palette::V, "V");
+    draw(eval.n, super::palette::N, "N");
+    ui.painter().circle_filled(from, 3.5, super::palette::ink(ui, super::palette::N));
+}
+
+/// Each light as a marker where the view draws it; a marker can be dragged (in the plane
+/// facing the viewer), which moves the light. Returns whether a marker is being dragged.
+fn lights_ui(ui: &mut Ui, o: &Overlay, state: &mut AppState, scene: &phonglab_core::Scene) -> bool {
+    let mut dragging = false;
+    let mut moved = None;
+    for (i, l) in state.doc.scene.lights.iter().enumerate() {
+        let eye = scene.light_pos_in_eye(l);
+        let in_object = o.object_from_eye * eye;
+        // A directional light is drawn in its direction, a little outside the object.
+        let p = if in_object.w == 0.0 {
+            (in_object.truncate().normalize_or_zero() * 1.2).extend(1.0)
+        } else {
+            in_object / in_object.w
+        };
+        let Some(pos) = o.screen_from_object(p) else { continue };
+        if !o.rect.expand(-4.0).contains(pos) {
+            continue;
+        }
+        let hit = egui::Rect::from_center_size(pos, egui::vec2(18.0, 18.0));
+        let r = ui.interact(hit, ui.scope_id().with(("light marker", i)), Sense::drag());
+        let r = r.on_hover_text(format!("Light {i}: drag to move it"));
+        let ring = if r.hovered() || r.dragged() { 3.0 } else { 1.5 };
+        ui.painter().circle(pos, 7.0, Color32::from_rgb(255, 230, 120), egui::Stroke::new(ring, Color32::BLACK));
+        let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
+        let text = if ui.visuals().dark_mode { Color32::WHITE } else { Color32::BLACK };
+        ui.painter().text(pos + egui::vec2(9.0, -9.0), egui::Align2::LEFT_BOTTOM, format!("light {i}"), font, text);
+        if r.dragged() {
+            dragging = true;
+            if let Some(to) = o.object_at(pos + r.drag_delta(), p) {
+                moved = Some((i, to, in_object.w == 0.0));
+            }
+        }
+    }
+    if let Some((i, to, directional)) = moved {
+        let mut c = state.doc.clone();
+        let l = &mut c.scene.lights[i];
+        let eye_from_object = o.object_from_eye.inverse();
+        let eye = if directional {
+            (eye_from_object * to.truncate().extend(0.0)).truncate().normalize_or_zero().extend(0.0)
+        } else {
+            eye_from_object * to
+        };
+        let light = scene.eye_from_light(l).inverse() * eye;
+        if light.is_finite() {
+            l.position = light;
+            state.apply(c);
+        }
+    }
+    dragging
 }
 
 /// `doc` with each departure switched on in `fixes` (and present in `doc`) corrected, or

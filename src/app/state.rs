@@ -70,6 +70,10 @@ pub struct UiState {
     /// Which of the Phong demo's departures the corrected picture corrects, in the order
     /// of [`phonglab_core::library::DemoDeparture::ALL`].
     pub demo_fixes: [bool; 3],
+    /// The window's arrangement (kept across restarts).
+    pub layout: super::layout::Layout,
+    /// The highlighted step moved this frame: the calculation scrolls to it.
+    pub scroll_to_step: bool,
 }
 
 impl Default for UiState {
@@ -84,6 +88,8 @@ impl Default for UiState {
             clamp: true,
             file_path: "scene.toml".into(),
             demo_fixes: [false; 3],
+            layout: Default::default(),
+            scroll_to_step: false,
         }
     }
 }
@@ -101,6 +107,8 @@ pub struct AppState {
     pub shaded: super::view_cache::ShadedCache,
     /// The cost-of-accuracy panel and its background work.
     pub cost: super::cost::CostState,
+    /// Compare: the pinned scene A and its views.
+    pub compare: super::compare::CompareState,
 }
 
 /// The colours of one side, as f64.
@@ -184,6 +192,29 @@ fn evaluated<S: Real>(doc: &Document, lit: &VertexLighting<S>, side: Side) -> Ev
     }
 }
 
+/// Evaluates `doc` in `precision` with `pow`, explaining `side`.
+pub fn evaluate(doc: &Document, precision: Precision, pow: PowFn, side: Side) -> Result<Evaluated, SceneError> {
+    let options = EvalOptions::with_pow(pow);
+    Ok(match precision {
+        Precision::F32 => {
+            evaluated(doc, &Engine::<f32>::with_options(&doc.scene, options)?.light(&doc.scene.vertex), side)
+        }
+        Precision::F64 => {
+            evaluated(doc, &Engine::<f64>::with_options(&doc.scene, options)?.light(&doc.scene.vertex), side)
+        }
+    })
+}
+
+impl Precision {
+    /// "f32" or "f64".
+    pub fn label(self) -> &'static str {
+        match self {
+            Precision::F32 => "f32",
+            Precision::F64 => "f64",
+        }
+    }
+}
+
 impl AppState {
     /// Starts on the worksheet's scene (modelview 5).
     pub fn worksheet() -> Self {
@@ -192,20 +223,7 @@ impl AppState {
 
     /// Evaluates the document with the chosen precision and power function.
     pub fn evaluate(&self) -> Result<Evaluated, SceneError> {
-        let options = EvalOptions::with_pow(self.ui.pow);
-        let doc = &self.doc;
-        Ok(match self.ui.precision {
-            Precision::F32 => evaluated(
-                doc,
-                &Engine::<f32>::with_options(&doc.scene, options)?.light(&doc.scene.vertex),
-                self.ui.side,
-            ),
-            Precision::F64 => evaluated(
-                doc,
-                &Engine::<f64>::with_options(&doc.scene, options)?.light(&doc.scene.vertex),
-                self.ui.side,
-            ),
-        })
+        evaluate(&self.doc, self.ui.precision, self.ui.pow, self.ui.side)
     }
 
     /// Keeps `candidate` if it is valid; otherwise refuses it with a message naming the

@@ -42,10 +42,27 @@ pub fn number(ui: &mut Ui, label: &str, value: &mut f64, speed: f64) -> Response
 /// Number fields on one row, each named "{label} {component}" for assistive technology
 /// and tests (the row label and the component label together).
 fn components(ui: &mut Ui, label: &str, comps: &mut [(&str, &mut f64)], speed: f64) -> bool {
+    components_after(ui, |_| {}, label, comps, speed)
+}
+
+/// [`components`] after `before` (e.g. a swatch) on the same row.
+fn components_after(
+    ui: &mut Ui,
+    before: impl FnOnce(&mut Ui),
+    label: &str,
+    comps: &mut [(&str, &mut f64)],
+    speed: f64,
+) -> bool {
     let mut changed = false;
-    ui.horizontal(|ui| {
+    // Wrapped, so a narrow panel puts the fields on a second line rather than widening.
+    ui.horizontal_wrapped(|ui| {
+        before(ui);
         let row = ui.label(label);
         for (name, c) in comps.iter_mut() {
+            // A component's name and field go to the next row together.
+            if ui.available_width() < 72.0 {
+                ui.end_row();
+            }
             let cl = ui.small(*name);
             changed |= ui.add(exact_drag(c, speed)).labelled_by(row.id).labelled_by(cl.id).changed();
         }
@@ -65,17 +82,17 @@ pub fn vec4(ui: &mut Ui, label: &str, v: &mut DVec4, speed: f64) -> bool {
 
 /// An unclamped GL colour: r, g, b (and alpha when `alpha`), after a swatch of how it shows.
 pub fn color(ui: &mut Ui, label: &str, c: &mut DVec4, alpha: bool) -> bool {
-    ui.horizontal(|ui| {
+    let shown = crate::app::palette::gl_to_color32([c.x, c.y, c.z]);
+    let swatch = move |ui: &mut Ui| {
         let (rect, _) = ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
-        ui.painter().rect_filled(rect, 2.0, crate::app::palette::gl_to_color32([c.x, c.y, c.z]));
-        let DVec4 { x, y, z, w } = c;
-        if alpha {
-            components(ui, label, &mut [("r", x), ("g", y), ("b", z), ("a", w)], 0.005)
-        } else {
-            components(ui, label, &mut [("r", x), ("g", y), ("b", z)], 0.005)
-        }
-    })
-    .inner
+        ui.painter().rect_filled(rect, 2.0, shown);
+    };
+    let DVec4 { x, y, z, w } = c;
+    if alpha {
+        components_after(ui, swatch, label, &mut [("r", x), ("g", y), ("b", z), ("a", w)], 0.005)
+    } else {
+        components_after(ui, swatch, label, &mut [("r", x), ("g", y), ("b", z)], 0.005)
+    }
 }
 
 #[cfg(test)]

@@ -103,9 +103,11 @@ impl DemoDeparture {
         match self {
             DemoDeparture::LightTurnsWithObject => d.view.lighting_space == LightingSpace::Object,
             DemoDeparture::PositionNormals => d.view.demo_normals,
+            // Only under the demo's rules: a coloured specular material is ordinary OpenGL
+            // (the worksheet's is brass), not the demo's object colour in the highlight.
             DemoDeparture::HighlightInObjectColour => {
                 let s = d.scene.material.specular;
-                !(s.x == s.y && s.y == s.z)
+                d.scene.rules.set == crate::rules::RuleSet::PhongDemo && !(s.x == s.y && s.y == s.z)
             }
         }
     }

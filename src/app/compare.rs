@@ -1,0 +1,177 @@
+//! Compare: pin the scene as A, change anything, and see A and B (the current scene) side
+//! by side: both shaded views, both colours, and every step of the worked calculation with
+//! the ones whose values differ highlighted. Typical pairs: Gouraud against Phong, f32
+//! against f64, bronze against gold.
+
+use egui::{Color32, RichText, Ui};
+use phonglab_core::explain::{Explanation, fmt_value};
+use phonglab_core::{Document, PowFn};
+
+use super::state::{AppState, Evaluated, Message, Precision, evaluate};
+use super::view_cache::ViewCache;
+
+/// The pinned scene A: the document and the numerics it was evaluated with.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pinned {
+    /// The document.
+    pub doc: Document,
+    /// Its precision.
+    pub precision: Precision,
+    /// Its power function.
+    pub pow: PowFn,
+}
+
+impl Pinned {
+    /// One line naming what A is.
+    pub fn describe(&self) -> String {
+        describe(&self.doc, self.precision, self.pow)
+    }
+}
+
+fn describe(doc: &Document, precision: Precision, pow: PowFn) -> String {
+    format!(
+        "{}, {} {}, {}, {} pow",
+        doc.name,
+        doc.view.object.label(),
+        doc.view.shading.label(),
+        precision.label(),
+        pow.label()
+    )
+}
+
+/// The compare view's state.
+#[derive(Default)]
+pub struct CompareState {
+    /// Compare is shown in the centre.
+    pub open: bool,
+    /// The pinned scene A.
+    pub a: Option<Pinned>,
+    /// A's shaded view.
+    pub a_view: ViewCache,
+    /// B's shaded view.
+    pub b_view: ViewCache,
+}
+
+/// The steps of two calculations side by side: (step number, title, A's value, B's value,
+/// they differ). Steps are matched by kind and light, so a step present in one only shows
+/// "n/a" in the other.
+pub fn step_pairs(a: &Explanation, b: &Explanation) -> Vec<(usize, String, String, String, bool)> {
+    let value = |st: Option<&phonglab_core::explain::Step>| match st.and_then(|s| s.value.as_ref()) {
+        Some(v) => fmt_value(v, 8),
+        None => "n/a".into(),
+    };
+    b.steps
+        .iter()
+        .enumerate()
+        .map(|(k, sb)| {
+            let sa = a.steps.iter().find(|s| s.kind == sb.kind && s.light == sb.light && s.name == sb.name);
+            let differ = sa.map(|s| &s.value) != Some(&sb.value);
+            (k + 1, sb.title.clone(), value(sa), value(Some(sb)), differ)
+        })
+        .collect()
+}
+
+fn swatch_ui(ui: &mut Ui, eval: &Evaluated) {
+    let c = eval.front.shown;
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(40.0, 24.0), egui::Sense::hover());
+    ui.painter().rect_filled(rect, 4.0, super::palette::gl_to_color32([c[0], c[1], c[2]]));
+}
+
+/// One side of the comparison.
+struct Side<'a> {
+    /// "A" or "B".
+    which: &'a str,
+    /// What it is (scene, object, shading, numerics).
+    what: String,
+    doc: &'a Document,
+    eval: &'a Evaluated,
+    pow: PowFn,
+}
+
+/// One side: its name, colour and shaded view.
+fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) {
+    let which = s.which;
+    ui.vertical(|ui| {
+        ui.label(RichText::new(format!("{which}: {}", s.what)).strong());
+        ui.horizontal(|ui| {
+            swatch_ui(ui, s.eval);
+            ui.monospace(fmt_value(&s.eval.front.shown, 8));
+        });
+        match view.render(ui.ctx(), s.doc, s.pow, px, which) {
+            Ok(()) => {
+                if let Some(tex) = &view.texture {
+                    let side = px as f32 / ui.ctx().pixels_per_point();
+                    let label = ui.small(format!("{which}'s shaded view, {:.1} ms", view.last_ms));
+                    ui.add(egui::Image::new((tex.id(), egui::vec2(side, side)))).labelled_by(label.id);
+                }
+            }
+            Err(e) => {
+                ui.colored_label(super::palette::ERROR, format!("{which}'s view cannot render: {e}"));
+            }
+        }
+    });
+}
+
+/// The compare view, in the centre.
+pub fn compare_ui(ui: &mut Ui, state: &mut AppState, b: &Evaluated) {
+    ui.horizontal_wrapped(|ui| {
+        ui.heading("Compare");
+        let pin =
+            if state.compare.a.is_some() { "Pin the current scene as A again" } else { "Pin the current scene as A" };
+        if ui.button(pin).clicked() {
+            state.compare.a = Some(Pinned { doc: state.doc.clone(), precision: state.ui.precision, pow: state.ui.pow });
+            state.message = Some(Message::Info("Pinned as A: now change anything, and B follows.".into()));
+        }
+        if ui.button("Close compare").clicked() {
+            state.compare.open = false;
+        }
+    });
+    let Some(a) = state.compare.a.clone() else {
+        ui.label("Pin the current scene as A, then change anything (shading, precision, material): A and B show side by side.");
+        return;
+    };
+    let a_eval = match evaluate(&a.doc, a.precision, a.pow, state.ui.side) {
+        Ok(e) => e,
+        Err(e) => {
+            ui.colored_label(super::palette::ERROR, format!("A cannot be evaluated: {e}"));
+            return;
+        }
+    };
+    let avail = ui.available_size();
+    let side = ((avail.x - 24.0) / 2.0).min(avail.y * 0.5).max(64.0);
+    let px = ((side * ui.ctx().pixels_per_point()) as usize).clamp(64, 1024);
+    let b_what = describe(&state.doc, state.ui.precision, state.ui.pow);
+    let (doc, pow) = (state.doc.clone(), state.ui.pow);
+    let sa = Side { which: "A", what: a.describe(), doc: &a.doc, eval: &a_eval, pow: a.pow };
+    let sb = Side { which: "B", what: b_what, doc: &doc, eval: b, pow };
+    ui.columns(2, |cols| {
+        side_ui(&mut cols[0], &sa, &mut state.compare.a_view, px);
+        side_ui(&mut cols[1], &sb, &mut state.compare.b_view, px);
+    });
+    ui.separator();
+    let pairs = step_pairs(&a_eval.explanation, &b.explanation);
+    let differing = pairs.iter().filter(|p| p.4).count();
+    ui.label(format!("{differing} of {} steps differ (highlighted).", pairs.len()));
+    let hi = if ui.visuals().dark_mode { Color32::from_rgb(90, 60, 0) } else { Color32::from_rgb(255, 224, 150) };
+    egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
+        egui::Grid::new("compare steps").striped(false).num_columns(4).show(ui, |ui| {
+            ui.strong("step");
+            ui.strong("A");
+            ui.strong("B");
+            ui.end_row();
+            for (k, title, va, vb, differ) in pairs {
+                let cell = |ui: &mut Ui, text: String| {
+                    let mut t = RichText::new(text).monospace();
+                    if differ {
+                        t = t.background_color(hi);
+                    }
+                    ui.label(t);
+                };
+                ui.label(format!("{k}. {title}"));
+                cell(ui, va);
+                cell(ui, vb);
+                ui.end_row();
+            }
+        });
+    });
+}

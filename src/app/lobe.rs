@@ -1,0 +1,211 @@
+//! The reflection lobe: how much light the vertex sends towards each direction of view,
+//! for the current material, the first light and its angle of incidence.
+//!
+//! The view direction turns in the plane of N and L, at the angle φ from N (positive on the
+//! side away from L, where the mirror direction R lies at φ = θ). For each φ:
+//!
+//! | curve | formula |
+//! |---|---|
+//! | diffuse | kd · max(N·L, 0), the same towards every viewer |
+//! | Blinn-Phong | ks · max(N·H, 0)^n, H = normalize(L + V) |
+//! | Phong | ks · max(R·V, 0)^n, R = 2 (N·L) N − L |
+//!
+//! kd and ks are the luminances (Rec. 709 weights) of the material's colour times the
+//! light's, so the curves are in the units of the vertex colour. Both specular curves are 0
+//! when N·L ≤ 0 (OpenGL's gate). A polar plot draws the lobes around N; a plot against φ
+//! marks with a vertical line where the vertex's own V lies.
+
+use egui::{Color32, Ui};
+use egui_plot::{Legend, Line, Plot, PlotPoints, VLine};
+use glam::DVec3;
+use phonglab_core::{Scene, SpecularModel};
+
+use super::palette;
+use super::state::Evaluated;
+
+/// Luminance of the product of two colours' rgb.
+fn luminance(a: glam::DVec4, b: glam::DVec4) -> f64 {
+    0.2126 * a.x * b.x + 0.7152 * a.y * b.y + 0.0722 * a.z * b.z
+}
+
+/// The lobe of one light at one incidence, in the plane of N and L.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lobe {
+    /// The angle of incidence θ, radians (between N and L).
+    pub theta: f64,
+    /// kd: diffuse luminance.
+    pub kd: f64,
+    /// ks: specular luminance.
+    pub ks: f64,
+    /// The shininess n.
+    pub n: f64,
+}
+
+impl Lobe {
+    /// Unit vectors in the plane: N = +y, L at −θ (to the left), V at φ.
+    fn dir(angle: f64) -> DVec3 {
+        DVec3::new(angle.sin(), angle.cos(), 0.0)
+    }
+
+    /// The diffuse term towards φ (the same for every φ).
+    pub fn diffuse(&self) -> f64 {
+        self.kd * self.theta.cos().max(0.0)
+    }
+
+    /// The Blinn-Phong specular term towards φ.
+    pub fn blinn(&self, phi: f64) -> f64 {
+        let (n, l, v) = (DVec3::Y, Self::dir(-self.theta), Self::dir(phi));
+        if n.dot(l) <= 0.0 {
+            return 0.0;
+        }
+        match (l + v).try_normalize() {
+            Some(h) => self.ks * phonglab_core::PowFn::Exact.pow::<f64>(n.dot(h).max(0.0), self.n),
+            None => 0.0,
+        }
+    }
+
+    /// The Phong specular term towards φ.
+    pub fn phong(&self, phi: f64) -> f64 {
+        let (n, l, v) = (DVec3::Y, Self::dir(-self.theta), Self::dir(phi));
+        if n.dot(l) <= 0.0 {
+            return 0.0;
+        }
+        let r = 2.0 * n.dot(l) * n - l;
+        self.ks * phonglab_core::PowFn::Exact.pow::<f64>(r.dot(v).max(0.0), self.n)
+    }
+
+    /// The lobe of the scene's first light at the evaluated vertex, with the signed angle
+    /// φ of the vertex's V in the plane of N and L (`None` when there is no light or N, L
+    /// are undefined).
+    pub fn of(scene: &Scene, eval: &Evaluated) -> Option<(Lobe, f64)> {
+        let lv = eval.lights.first()?;
+        let light = scene.lights.get(lv.index)?;
+        let n = eval.n.try_normalize()?;
+        let l = lv.l.try_normalize()?;
+        let theta = n.dot(l).clamp(-1.0, 1.0).acos();
+        let m = &scene.material;
+        let lobe = Lobe {
+            theta,
+            kd: luminance(m.diffuse, light.diffuse),
+            ks: luminance(m.specular, light.specular),
+            n: m.shininess,
+        };
+        // The tangent in the plane, pointing away from L (towards R).
+        let t = (-(l - l.dot(n) * n)).try_normalize().unwrap_or_else(|| n.any_orthonormal_vector());
+        let v = eval.v;
+        let phi = v.dot(t).atan2(v.dot(n));
+        Some((lobe, phi))
+    }
+}
+
+const STEPS: usize = 180;
+
+/// One curve: its name, colour, (φ, value) points, and whether it is the scene's model.
+type Curve = (&'static str, Color32, Vec<(f64, f64)>, bool);
+
+fn sweep(f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
+    (0..=STEPS)
+        .map(|i| {
+            let phi = (i as f64 / STEPS as f64 - 0.5) * std::f64::consts::PI;
+            (phi, f(phi))
+        })
+        .collect()
+}
+
+/// The polar plot and the plot against φ.
+pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
+    let Some((lobe, phi_v)) = Lobe::of(scene, eval) else {
+        ui.label("No light with a defined L at this vertex: nothing to plot.");
+        return;
+    };
+    let dark = ui.visuals().dark_mode;
+    let ink = |c: Color32| if dark { c } else { palette::darker(c) };
+    let chosen = scene.rules.specular;
+    ui.small(format!(
+        "Light {}: θ = {:.1}°, n = {}, kd = {:.3}, ks = {:.3}; the vertex's V at φ = {:.1}°",
+        eval.lights[0].index,
+        lobe.theta.to_degrees(),
+        lobe.n,
+        lobe.kd,
+        lobe.ks,
+        phi_v.to_degrees()
+    ));
+    let curves: [Curve; 3] = [
+        ("diffuse kd cos θ", ink(palette::L), sweep(|_| lobe.diffuse()), false),
+        ("Blinn-Phong ks (N·H)^n", ink(palette::H), sweep(|p| lobe.blinn(p)), chosen == SpecularModel::BlinnPhong),
+        ("Phong ks (R·V)^n", ink(palette::R), sweep(|p| lobe.phong(p)), chosen == SpecularModel::Phong),
+    ];
+    let avail = ui.available_size();
+    let wide = avail.x >= 1.6 * avail.y;
+    let (w, h) = if wide { (avail.x / 2.0 - 6.0, avail.y - 4.0) } else { (avail.x, avail.y / 2.0 - 6.0) };
+    let h = h.max(80.0);
+    let polar = |ui: &mut Ui| {
+        Plot::new("lobe polar")
+            .width(w)
+            .height(h)
+            .data_aspect(1.0)
+            .legend(Legend::default())
+            .allow_drag(false)
+            .allow_zoom(false)
+            .allow_scroll(false)
+            .show(ui, |p| {
+                for (name, c, pts, on) in &curves {
+                    let xy: Vec<[f64; 2]> = pts.iter().map(|(phi, r)| [r * phi.sin(), r * phi.cos()]).collect();
+                    p.line(Line::new(*name, PlotPoints::from(xy)).color(*c).width(if *on { 3.0 } else { 1.5 }));
+                }
+                let ray = |a: f64| PlotPoints::from(vec![[0.0, 0.0], [a.sin() * 1.05, a.cos() * 1.05]]);
+                p.line(Line::new("N", ray(0.0)).color(ink(palette::N)));
+                p.line(
+                    Line::new("L", ray(-lobe.theta)).color(ink(palette::L)).style(egui_plot::LineStyle::dashed_loose()),
+                );
+                p.line(Line::new("V", ray(phi_v)).color(ink(palette::V)));
+            });
+    };
+    let cartesian = |ui: &mut Ui| {
+        Plot::new("lobe against angle")
+            .width(w)
+            .height(h)
+            .legend(Legend::default())
+            .x_axis_label("φ, degrees from N")
+            .allow_drag(false)
+            .allow_zoom(false)
+            .allow_scroll(false)
+            .include_y(0.0)
+            .show(ui, |p| {
+                for (name, c, pts, on) in &curves {
+                    let xy: Vec<[f64; 2]> = pts.iter().map(|(phi, r)| [phi.to_degrees(), *r]).collect();
+                    p.line(Line::new(*name, PlotPoints::from(xy)).color(*c).width(if *on { 3.0 } else { 1.5 }));
+                }
+                p.vline(VLine::new("the vertex's V", phi_v.to_degrees()).color(ink(palette::V)).width(2.0));
+            });
+    };
+    if wide {
+        ui.horizontal_top(|ui| {
+            polar(ui);
+            cartesian(ui);
+        });
+    } else {
+        polar(ui);
+        cartesian(ui);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_lobes_peak_at_the_mirror_direction() {
+        let lobe = Lobe { theta: 30f64.to_radians(), kd: 0.8, ks: 0.5, n: 50.0 };
+        // R lies at φ = θ: Phong's lobe is ks there; Blinn-Phong's too (H = N).
+        assert!((lobe.phong(lobe.theta) - 0.5).abs() < 1e-12);
+        assert!((lobe.blinn(lobe.theta) - 0.5).abs() < 1e-12);
+        // Off the peak both fall, and Blinn-Phong's lobe is the wider one (n·H is nearer 1).
+        let off = lobe.theta + 0.2;
+        assert!(lobe.phong(off) < lobe.blinn(off) && lobe.blinn(off) < 0.5);
+        assert!((lobe.diffuse() - 0.8 * 30f64.to_radians().cos()).abs() < 1e-12);
+        // Light below the surface: no specular at all.
+        let below = Lobe { theta: 100f64.to_radians(), ..lobe };
+        assert_eq!((below.phong(0.3), below.blinn(0.3), below.diffuse()), (0.0, 0.0, 0.0));
+    }
+}

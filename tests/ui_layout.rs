@@ -1,0 +1,155 @@
+//! The explorer at projector sizes, driven headless: at 1024×768, 1280×720, 1440×900 and
+//! 1920×1080, in the normal layout and in presentation mode, every labelled widget lies
+//! inside the window (widgets in the side panels may lie below it: those panels scroll),
+//! no two labelled widgets overlap, and the shaded view is at least 40 % of the window's
+//! height.
+
+use egui::Rect;
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::NodeT;
+use phonglab::app::{AppState, app_ui};
+
+const SIZES: [(f32, f32); 4] = [(1024.0, 768.0), (1280.0, 720.0), (1440.0, 900.0), (1920.0, 1080.0)];
+
+fn harness_at(w: f32, h: f32, presenting: bool) -> Harness<'static, AppState> {
+    let mut state = AppState::worksheet();
+    state.ui.layout.presenting = presenting;
+    let mut h = Harness::builder().with_size([w, h]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+    h.run_steps(4);
+    h
+}
+
+/// A labelled widget: its label (a text label's text), role, rect, and its ancestors.
+struct Widget {
+    label: String,
+    role: Role,
+    rect: Rect,
+    id: String,
+    ancestors: Vec<String>,
+}
+
+fn widgets(h: &Harness<'static, AppState>) -> Vec<Widget> {
+    let mut out = Vec::new();
+    for n in h.root().children_recursive() {
+        let ak = n.accesskit_node();
+        let text = if ak.role() == Role::Label { ak.value() } else { ak.label() };
+        let Some(label) = text.filter(|l| !l.trim().is_empty()) else { continue };
+        if ak.bounding_box().is_none() {
+            continue;
+        }
+        let mut ancestors = Vec::new();
+        let mut p = n.parent();
+        while let Some(q) = p {
+            ancestors.push(format!("{:?}", q.accesskit_node().id()));
+            p = q.parent();
+        }
+        out.push(Widget { label, role: ak.role(), rect: n.rect(), id: format!("{:?}", ak.id()), ancestors });
+    }
+    out
+}
+
+/// The window's regions: the top bar, then the panels between the splitters.
+struct Regions {
+    top_bottom: f32,
+    columns: Vec<(f32, f32)>,
+}
+
+fn regions(ws: &[Widget], w: f32) -> Regions {
+    let splitters: Vec<&Widget> = ws.iter().filter(|x| x.role == Role::Splitter).collect();
+    let top_bottom = splitters.iter().map(|s| s.rect.min.y).fold(f32::INFINITY, f32::min);
+    let mut xs: Vec<(f32, f32)> = splitters.iter().map(|s| (s.rect.min.x, s.rect.max.x)).collect();
+    xs.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut columns = Vec::new();
+    let mut left = 0.0;
+    for (a, b) in xs {
+        columns.push((left, a + 3.0));
+        left = b - 3.0;
+    }
+    columns.push((left, w));
+    Regions { top_bottom, columns }
+}
+
+/// Checks one window size; returns the problems found.
+fn problems(h: &Harness<'static, AppState>, w: f32, height: f32) -> Vec<String> {
+    let ws = widgets(h);
+    let reg = regions(&ws, w);
+    let mut out = Vec::new();
+    let tol = 0.5;
+    let inside_x = |r: Rect, a: f32, b: f32| r.min.x >= a - tol && r.max.x <= b + tol;
+    let mut visible = Vec::new();
+    for x in ws.iter().filter(|x| x.role != Role::Splitter) {
+        let r = x.rect;
+        if r.max.y <= reg.top_bottom + tol {
+            if !inside_x(r, 0.0, w) || r.min.y < -tol {
+                out.push(format!("{:?} {:?} leaves the window at {r:?}", x.role, x.label));
+            }
+        } else if !reg.columns.iter().any(|(a, b)| inside_x(r, *a, *b)) {
+            out.push(format!("{:?} {:?} crosses a panel's edge at {r:?} (panels {:?})", x.role, x.label, reg.columns));
+        } else {
+            // Only the side panels scroll: the centre must fit the window's height.
+            let centre = reg.columns.len() == 3 && inside_x(r, reg.columns[1].0, reg.columns[1].1);
+            let scrolls_in_side = !centre && reg.columns.len() > 1;
+            if r.max.y > height + tol && !scrolls_in_side && r.min.y < height {
+                out.push(format!("{:?} {:?} is cut by the window's bottom at {r:?}", x.role, x.label));
+            }
+        }
+        if r.min.y < height && r.max.y > 0.0 {
+            visible.push(x);
+        }
+    }
+    for (i, a) in visible.iter().enumerate() {
+        for b in &visible[i + 1..] {
+            // A widget and its own caption (a combo box's label covers the box) are one.
+            let caption = a.label == b.label && (a.role == Role::Label || b.role == Role::Label);
+            if caption || a.ancestors.contains(&b.id) || b.ancestors.contains(&a.id) {
+                continue;
+            }
+            let o = a.rect.intersect(b.rect);
+            if o.width() > 1.0 && o.height() > 1.0 {
+                out.push(format!(
+                    "{:?} {:?} at {:?} overlaps {:?} {:?} at {:?}",
+                    a.role, a.label, a.rect, b.role, b.label, b.rect
+                ));
+            }
+        }
+    }
+    match ws.iter().find(|x| x.role == Role::Image && x.label.contains("ms per frame")) {
+        Some(img) if img.rect.height() >= 0.4 * height => {}
+        Some(img) => out.push(format!("the shaded view is {} high, under 40 % of {height}", img.rect.height())),
+        None => out.push("no shaded view".into()),
+    }
+    out
+}
+
+#[test]
+fn every_projector_size_fits() {
+    let mut all = Vec::new();
+    for (w, h) in SIZES {
+        for presenting in [false, true] {
+            let harness = harness_at(w, h, presenting);
+            for p in problems(&harness, w, h) {
+                all.push(format!("{w}x{h}{}: {p}", if presenting { " presenting" } else { "" }));
+            }
+        }
+    }
+    assert!(all.is_empty(), "{} problems:\n{}", all.len(), all.join("\n"));
+}
+
+#[test]
+#[ignore]
+fn dump() {
+    let (w, h, presenting) = match std::env::var("SIZE").ok().as_deref() {
+        Some("1920") => (1920.0, 1080.0, false),
+        Some("1920p") => (1920.0, 1080.0, true),
+        Some("1280") => (1280.0, 720.0, false),
+        _ => (1024.0, 768.0, false),
+    };
+    let harness = harness_at(w, h, presenting);
+    for x in widgets(&harness) {
+        println!("{:?} {:?} {:?}", x.role, x.label, x.rect);
+    }
+    for p in problems(&harness, w, h) {
+        println!("PROBLEM {p}");
+    }
+}
