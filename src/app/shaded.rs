@@ -199,7 +199,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
         clip_from_object: state.doc.view.clip_from_object(),
         object_from_eye: scene.eye_from_object().inverse(),
     };
-    vectors_on_object_ui(ui, &overlay, state, eval);
+    vectors_on_object_ui(ui, overlay.rect, &state.doc, eval);
     let dragged_light = lights_ui(ui, &overlay, state, &scene);
 
     let mut cam = camera;
@@ -300,46 +300,56 @@ fn arrow_ui(ui: &Ui, from: egui::Pos2, to: egui::Pos2, color: Color32, label: &s
     p.text(at, egui::Align2::CENTER_CENTER, label, font, color);
 }
 
-/// N, V, and each light's L and H (or R), drawn from the vertex on the object in the
-/// plot's and the calculation's colours, when the worked calculation's vertex is one the
-/// view draws (after a click on the surface, or in any scene whose frame is the view's).
-fn vectors_on_object_ui(ui: &Ui, o: &Overlay, state: &AppState, eval: &Evaluated) {
-    let doc = &state.doc;
-    if doc.with_vertex_as_shaded(doc.scene.vertex) != *doc {
-        return;
+/// N, V, and each light's L and H (or R) as arrows on the image `rect`: (name, colour,
+/// from, to), from the vertex on the object, a third of the object's size long. Empty
+/// unless the worked calculation's vertex is one the view draws (after a click on the
+/// surface, or in any scene whose frame is the view's).
+pub fn vector_arrows(
+    doc: &Document,
+    eval: &Evaluated,
+    rect: egui::Rect,
+) -> Vec<(String, Color32, egui::Pos2, egui::Pos2)> {
+    let mut out = Vec::new();
+    if doc.with_vertex_as_shaded(doc.scene.vertex) != *doc || doc.scene.vertex.position.w == 0.0 {
+        return out;
     }
     let scene = doc.shaded_scene();
     let eye_from_object = scene.eye_from_object();
-    let v = doc.scene.vertex.position;
-    if v.w == 0.0 {
-        return;
-    }
-    let pos_in_eye = (eye_from_object * v).truncate() / (eye_from_object * v).w;
-    // A third of the object's size, in eye space.
-    let len = 0.35 * eye_from_object.transform_vector3(glam::DVec3::X).length();
-    let Some(from) = o.screen_from_eye(pos_in_eye) else { return };
-    if !o.rect.contains(from) {
-        return;
-    }
-    let draw = |vec: DVec3, c: Color32, name: &str| {
+    let o = Overlay { rect, clip_from_object: doc.view.clip_from_object(), object_from_eye: eye_from_object.inverse() };
+    let p = eye_from_object * doc.scene.vertex.position;
+    let pos_in_eye = p.truncate() / p.w;
+    let len = 0.35 * eye_from_object.transform_vector3(DVec3::X).length();
+    let Some(from) = o.screen_from_eye(pos_in_eye).filter(|f| rect.contains(*f)) else { return out };
+    let mut add = |vec: DVec3, c: Color32, name: String| {
         if vec.length() > 0.0
             && let Some(to) = o.screen_from_eye(pos_in_eye + vec.normalize() * len)
         {
-            arrow_ui(ui, from, to, super::palette::ink(ui, c), name);
+            out.push((name, c, from, to));
         }
     };
     let many = eval.lights.len() > 1;
     for lv in &eval.lights {
         let sfx = if many { lv.index.to_string() } else { String::new() };
-        draw(lv.l, super::palette::L, &format!("L{sfx}"));
+        add(lv.l, super::palette::L, format!("L{sfx}"));
         match doc.scene.rules.specular {
-            phonglab_core::SpecularModel::BlinnPhong => draw(lv.h, super::palette::H, &format!("H{sfx}")),
-            phonglab_core::SpecularModel::Phong => draw(lv.r, super::palette::R, &format!("R{sfx}")),
+            phonglab_core::SpecularModel::BlinnPhong => add(lv.h, super::palette::H, format!("H{sfx}")),
+            phonglab_core::SpecularModel::Phong => add(lv.r, super::palette::R, format!("R{sfx}")),
         }
     }
-    draw(eval.v, super::palette::V, "V");
-    draw(eval.n, super::palette::N, "N");
-    ui.painter().circle_filled(from, 3.5, super::palette::ink(ui, super::palette::N));
+    add(eval.v, super::palette::V, "V".into());
+    add(eval.n, super::palette::N, "N".into());
+    out
+}
+
+/// Draws [`vector_arrows`] on the image.
+fn vectors_on_object_ui(ui: &Ui, rect: egui::Rect, doc: &Document, eval: &Evaluated) {
+    let arrows = vector_arrows(doc, eval, rect);
+    for (name, c, from, to) in &arrows {
+        arrow_ui(ui, *from, *to, super::palette::ink(ui, *c), name);
+    }
+    if let Some((_, _, from, _)) = arrows.first() {
+        ui.painter().circle_filled(*from, 3.5, super::palette::ink(ui, super::palette::N));
+    }
 }
 
 /// Each light as a marker where the view draws it; a marker can be dragged (in the plane
@@ -362,6 +372,7 @@ fn lights_ui(ui: &mut Ui, o: &Overlay, state: &mut AppState, scene: &phonglab_co
         }
         let hit = egui::Rect::from_center_size(pos, egui::vec2(18.0, 18.0));
         let r = ui.interact(hit, ui.scope_id().with(("light marker", i)), Sense::drag());
+        r.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, format!("light {i} marker")));
         let r = r.on_hover_text(format!("Light {i}: drag to move it"));
         let ring = if r.hovered() || r.dragged() { 3.0 } else { 1.5 };
         ui.painter().circle(pos, 7.0, Color32::from_rgb(255, 230, 120), egui::Stroke::new(ring, Color32::BLACK));
@@ -370,7 +381,10 @@ fn lights_ui(ui: &mut Ui, o: &Overlay, state: &mut AppState, scene: &phonglab_co
         ui.painter().text(pos + egui::vec2(9.0, -9.0), egui::Align2::LEFT_BOTTOM, format!("light {i}"), font, text);
         if r.dragged() {
             dragging = true;
-            if let Some(to) = o.object_at(pos + r.drag_delta(), p) {
+            // The marker follows the pointer (it is small, so grabbing it off-centre
+            // moves it by at most its radius).
+            let target = r.interact_pointer_pos().unwrap_or(pos + r.drag_delta());
+            if let Some(to) = o.object_at(target, p) {
                 moved = Some((i, to, in_object.w == 0.0));
             }
         }

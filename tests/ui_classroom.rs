@@ -1,0 +1,202 @@
+//! In front of a class, driven headless: presentation mode and its drawer, zoom, the two
+//! themes, walking the steps with the arrow keys, the vectors on the shaded object, the
+//! dragged light, the reflection lobe and Compare.
+
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use phonglab::app::layout::{Beside, Theme};
+use phonglab::app::shaded::vector_arrows;
+use phonglab::app::{AppState, app_ui};
+
+fn harness_at(w: f32, h: f32) -> Harness<'static, AppState> {
+    let mut h = Harness::builder()
+        .with_size([w, h])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(3);
+    h
+}
+
+#[test]
+fn f5_presents_with_large_type_and_the_controls_in_a_drawer() {
+    let mut h = harness_at(1280.0, 720.0);
+    let heading = h.get_by_label("Worked calculation").rect().height();
+    assert!(h.query_by_role_and_label(Role::Slider, "Light z").is_some(), "the controls are open");
+    h.key_press(egui::Key::F5);
+    h.run_steps(3);
+    assert!(h.state().ui.layout.presenting);
+    assert!(h.query_by_role_and_label(Role::Slider, "Light z").is_none(), "the controls went into the drawer");
+    let big = h.get_by_label("Worked calculation").rect().height();
+    assert!(big > heading * 1.3, "large type: {heading} -> {big}");
+    // The drawer opens on a click, with the controls in it.
+    h.get_by_label("Controls drawer").click();
+    h.run_steps(4);
+    assert!(h.state().ui.layout.drawer_open);
+    assert!(h.query_by_role_and_label(Role::Slider, "Light z").is_some(), "the drawer holds the controls");
+    // The button leaves presentation as F5 does.
+    h.get_by_label("Leave presentation (F5)").click();
+    h.run_steps(3);
+    assert!(!h.state().ui.layout.presenting);
+    assert!(h.query_by_role_and_label(Role::Slider, "Light z").is_some());
+}
+
+#[test]
+fn ctrl_plus_minus_and_zero_zoom() {
+    let mut h = harness_at(1280.0, 720.0);
+    let z0 = h.ctx.zoom_factor();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Plus);
+    h.run_steps(2);
+    let z1 = h.ctx.zoom_factor();
+    assert!(z1 > z0, "{z0} -> {z1}");
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Minus);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Minus);
+    h.run_steps(2);
+    assert!(h.ctx.zoom_factor() < z0);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Num0);
+    h.run_steps(2);
+    assert_eq!(h.ctx.zoom_factor(), 1.0);
+}
+
+#[test]
+fn the_light_theme_for_bright_rooms() {
+    let mut h = harness_at(1280.0, 720.0);
+    assert!(h.ctx.global_style().visuals.dark_mode);
+    h.get_by_label("Light theme").click();
+    h.run_steps(2);
+    assert_eq!(h.state().ui.layout.theme, Theme::Light);
+    let v = h.ctx.global_style().visuals.clone();
+    assert!(!v.dark_mode);
+    assert_eq!(v.panel_fill, egui::Color32::WHITE);
+    assert_eq!(v.widgets.noninteractive.fg_stroke.color, egui::Color32::BLACK);
+    h.get_by_label("Dark theme").click();
+    h.run_steps(2);
+    assert!(h.ctx.global_style().visuals.dark_mode);
+}
+
+#[test]
+fn arrow_keys_walk_through_the_steps() {
+    let mut h = harness_at(1440.0, 900.0);
+    assert_eq!(h.state().ui.layout.step, None);
+    h.key_press(egui::Key::ArrowDown);
+    h.run_steps(1);
+    assert_eq!(h.state().ui.layout.step, Some(0));
+    h.key_press(egui::Key::ArrowDown);
+    h.key_press(egui::Key::ArrowRight);
+    h.run_steps(1);
+    assert_eq!(h.state().ui.layout.step, Some(2));
+    h.key_press(egui::Key::ArrowUp);
+    h.run_steps(2);
+    assert_eq!(h.state().ui.layout.step, Some(1));
+    // The highlighted step is scrolled into view: the last one, after walking to the end.
+    for _ in 0..40 {
+        h.key_press(egui::Key::ArrowDown);
+    }
+    h.run_steps(4);
+    let n = h.state().evaluate().unwrap().explanation.steps.len();
+    assert_eq!(h.state().ui.layout.step, Some(n - 1));
+    let last = h.state().evaluate().unwrap().explanation.steps[n - 1].title.clone();
+    let r = h.get_by_label(&last).rect();
+    assert!(r.max.y < 900.0 && r.min.y > 0.0, "{last} scrolled into view: {r:?}");
+    // Not while typing into a field.
+    h.get_by_role_and_label(Role::SpinButton, "Vertex z").click();
+    h.run_steps(1);
+    h.key_press(egui::Key::ArrowUp);
+    h.run_steps(1);
+    assert_eq!(h.state().ui.layout.step, Some(n - 1));
+}
+
+#[test]
+fn the_vectors_are_drawn_on_the_object_after_a_click_and_point_the_right_way() {
+    let mut h = harness_at(1440.0, 900.0);
+    let image = h.get_all_by_role(Role::Image).next().unwrap().rect();
+    let eval = h.state().evaluate().unwrap();
+    assert!(vector_arrows(&h.state().doc, &eval, image).is_empty(), "the worksheet's vertex is not on the sphere");
+    // Click right of the sphere's centre: a vertex whose normal points right.
+    let at = image.center() + egui::vec2(image.width() * 0.25, 0.0);
+    h.drag_at(at);
+    h.drop_at(at);
+    h.run_steps(2);
+    let eval = h.state().evaluate().unwrap();
+    let arrows = vector_arrows(&h.state().doc, &eval, image);
+    let names: Vec<&str> = arrows.iter().map(|a| a.0.as_str()).collect();
+    assert_eq!(names, ["L", "H", "V", "N"]);
+    let n = arrows.iter().find(|a| a.0 == "N").unwrap();
+    assert!(n.3.x > n.2.x + 10.0, "N points out of the sphere's right side: {n:?}");
+    let v = arrows.iter().find(|a| a.0 == "V").unwrap();
+    assert!((v.3 - v.2).length() < (n.3 - n.2).length(), "V points at the viewer, foreshortened");
+}
+
+#[test]
+fn dragging_the_light_marker_moves_the_light() {
+    let mut h = harness_at(1440.0, 900.0);
+    // A scene whose light sits in front of the object, inside the view.
+    let mut doc = h.state().doc.clone();
+    doc.scene.lights[0].position = glam::DVec4::new(0.3, 0.3, 1.0, 1.0);
+    doc.scene.lights[0].placement = phonglab_core::LightPlacement::World;
+    assert!(h.state_mut().apply(doc));
+    h.run_steps(2);
+    let before = h.state().doc.scene.lights[0].position;
+    let marker = h.get_by_label("light 0 marker").rect().center();
+    h.drag_at(marker);
+    h.run_steps(1);
+    h.hover_at(marker + egui::vec2(30.0, 0.0));
+    h.run_steps(1);
+    h.drop_at(marker + egui::vec2(30.0, 0.0));
+    h.run_steps(2);
+    let after = h.state().doc.scene.lights[0].position;
+    assert_ne!(before, after, "the light moved");
+    assert!(after.x > before.x, "to the right: {before:?} -> {after:?}");
+    let moved = h.get_by_label("light 0 marker").rect().center();
+    assert!((moved.x - marker.x - 30.0).abs() < 3.0 && (moved.y - marker.y).abs() < 3.0, "{marker:?} -> {moved:?}");
+    assert_eq!(h.state().doc.view.camera, phonglab_core::Document::default().view.camera, "the view did not orbit");
+}
+
+#[test]
+fn the_lobe_follows_the_shininess() {
+    let mut h = harness_at(1440.0, 900.0);
+    h.get_by_label("Reflection lobe").click();
+    h.run_steps(2);
+    assert_eq!(h.state().ui.layout.beside, Beside::Lobe);
+    let n = h.state().doc.scene.material.shininess;
+    h.get_by_label_contains(&format!("n = {n},"));
+    h.get_by_role_and_label(Role::Slider, "Material shininess").set_value_accesskit(12.0);
+    h.run_steps(2);
+    h.get_by_label_contains("n = 12,");
+}
+
+#[test]
+fn compare_pins_a_and_highlights_the_steps_that_differ() {
+    let mut h = harness_at(1440.0, 900.0);
+    h.get_by_label("Compare").click();
+    h.run_steps(2);
+    h.get_by_label("Pin the current scene as A").click();
+    h.run_steps(2);
+    h.get_by_label_contains("0 of");
+    // B: f32 and Phong shading.
+    h.key_press(egui::Key::P);
+    h.key_press(egui::Key::Num2);
+    h.run_steps(3);
+    h.get_by_label_contains("A: the worksheet, mview5, Sphere Gouraud, f64");
+    h.get_by_label_contains("B: the worksheet, mview5, Sphere Phong, f32");
+    h.get_by_label_contains("A's shaded view");
+    h.get_by_label_contains("B's shaded view");
+    let differ = h.get_by_label_contains("steps differ").value().unwrap_or_default();
+    let k: usize = differ.split_whitespace().next().unwrap().parse().unwrap();
+    assert!(k > 0, "f32 against f64 changes some steps: {differ}");
+    // Back to f64: Gouraud against Phong shades differently, but the vertex's steps agree.
+    h.key_press(egui::Key::P);
+    h.run_steps(2);
+    h.get_by_label_contains("0 of");
+    // Another material: the terms it enters differ, the geometry does not.
+    h.key_press(egui::Key::M);
+    h.run_steps(2);
+    let differ = h.get_by_label_contains("steps differ").value().unwrap_or_default();
+    let (k, all): (usize, usize) = {
+        let w: Vec<&str> = differ.split_whitespace().collect();
+        (w[0].parse().unwrap(), w[2].parse().unwrap())
+    };
+    assert!(k > 0 && k < all, "a material changes the terms only: {differ}");
+    h.get_by_label("Close compare").click();
+    h.run_steps(2);
+    assert!(!h.state().compare.open);
+}
