@@ -127,6 +127,9 @@ pub struct RenderArgs {
     /// The object (default: the scene's).
     #[arg(long, value_enum)]
     pub object: Option<ObjectArg>,
+    /// Shade this Wavefront OBJ mesh instead of the scene's object (fitted to radius 0.5).
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["object", "bench_frame"])]
+    pub obj: Option<PathBuf>,
     /// The shading (default: the scene's).
     #[arg(long, value_enum)]
     pub shading: Option<ShadingArg>,
@@ -307,7 +310,7 @@ fn eval(a: &EvalArgs) -> Result<()> {
 /// Reads and checks a scene file.
 pub fn load_scene_file(path: &Path) -> Result<phonglab_core::Document> {
     let text = read(path)?;
-    phonglab_core::Document::from_toml(&text).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+    phonglab_core::Document::from_toml_in(&text, path.parent()).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
 }
 
 /// The scene `explain` works on.
@@ -408,6 +411,9 @@ fn render(a: &RenderArgs) -> Result<()> {
             ObjectKind::Sphere => sphere::glu_sphere(1.0, 50, 50),
             ObjectKind::Teapot => teapot::glut_teapot(0.8, 7),
             ObjectKind::Cylinder => (phonglab_core::View { object, ..Default::default() }).mesh(),
+            ObjectKind::Obj => {
+                bail!("--bench-frame draws the benchmark's sphere, teapot or cylinder; use --obj without it")
+            }
         };
         bench_scene = presets::bench_scene(frame);
         let mut job = library::bench_job(&bench_scene, &bench_mesh, shading.unwrap_or(Shading::Gouraud));
@@ -424,6 +430,10 @@ fn render(a: &RenderArgs) -> Result<()> {
         if let Some(o) = object {
             doc.view.object = o;
         }
+        if let Some(obj) = &a.obj {
+            doc.view.object = ObjectKind::Obj;
+            doc.view.obj = Some(obj.display().to_string());
+        }
         if let Some(s) = shading {
             doc.view.shading = s;
         }
@@ -435,7 +445,7 @@ fn render(a: &RenderArgs) -> Result<()> {
                 d.correct(&mut doc);
             }
         }
-        doc.validate().context("the scene after --frame/--correct")?;
+        doc.validate().context("the scene to render")?;
         doc_mesh = doc.view.mesh();
         setup = doc.shaded_setup(a.pow.into());
         let mut job = setup.job(&doc_mesh);

@@ -258,3 +258,34 @@ fn a_quoted_label_keeps_its_columns() {
     let t = phonglab::cost_cmd::markdown_tables(csv).unwrap();
     assert!(t.contains("| Phong 32, llvmpipe pow | 1984 | 6.50 | 0.70 | 111.9 | 17.1 % |"), "{t}");
 }
+
+const PYRAMID: &str =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\nf 1 2 3 4\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n";
+
+#[test]
+fn render_obj_shades_a_users_mesh_and_refuses_a_bad_one_with_its_line() {
+    let obj = temp_file("pyramid.obj", PYRAMID);
+    let png = obj.with_file_name("pyramid.png");
+    let o = phonglab(&["render", "--obj", obj.to_str().unwrap(), "--output", png.to_str().unwrap(), "--size", "128"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // The square base fans into 2 triangles: 6 in all.
+    assert!(stderr(&o).contains("6 triangles"), "{}", stderr(&o));
+    assert!(std::fs::metadata(&png).unwrap().len() > 100);
+
+    // A scene file naming the mesh relative to itself.
+    let scene = temp_file("mesh-scene.toml", "[view]\nobject = \"obj\"\nobj = \"pyramid.obj\"\nshading = \"phong\"\n");
+    let o =
+        phonglab(&["render", "--scene", scene.to_str().unwrap(), "--output", png.to_str().unwrap(), "--size", "64"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+
+    for (name, text, want) in [
+        ("nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n", "line 3: a vertex needs 3 finite numbers"),
+        ("range.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 9\n", "line 4: vertex index 9 is out of range"),
+        ("two.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", "line 3: a face needs at least 3 corners"),
+    ] {
+        let bad = temp_file(name, text);
+        let o = phonglab(&["render", "--obj", bad.to_str().unwrap(), "--output", png.to_str().unwrap()]);
+        assert!(!o.status.success());
+        assert!(stderr(&o).contains(want), "{name}: {}", stderr(&o));
+    }
+}

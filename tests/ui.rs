@@ -592,3 +592,58 @@ fn a_file_named_at_start_opens_or_the_worksheet_says_why() {
     phonglab::app::files::open_at_start(&mut s, &dir.join("missing.toml"));
     assert!(matches!(&s.message, Some(Message::Refused(m)) if m.contains("cannot read")), "{:?}", s.message);
 }
+
+#[test]
+fn an_obj_mesh_opens_from_the_path_field_and_a_bad_one_is_refused_with_its_line() {
+    let dir = temp_dir("obj");
+    let good = dir.join("pyramid.obj");
+    std::fs::write(
+        &good,
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\nf 1 2 3 4\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n",
+    )
+    .unwrap();
+    let bad = dir.join("bad.obj");
+    std::fs::write(&bad, "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 7\n").unwrap();
+    let mut h = harness();
+    let scene_before = h.state().doc.scene.clone();
+    set_file_path(&mut h, &good);
+    h.get_by_label("Open").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Obj, "{:?}", h.state().message);
+    assert_eq!(h.state().doc.scene, scene_before, "the scene stays; the view shows the mesh");
+    assert!(
+        matches!(&h.state().message, Some(Message::Info(m)) if m.contains("6 triangles") && m.contains("fanned") && m.contains("computed")),
+        "{:?}",
+        h.state().message
+    );
+    h.get_by_label("Your mesh");
+    h.get_by_label_contains("Your mesh Gouraud");
+    let view_before = h.state().doc.view.clone();
+    set_file_path(&mut h, &bad);
+    h.get_by_label("Open").click();
+    h.run_steps(2);
+    assert!(
+        matches!(&h.state().message, Some(Message::Refused(m)) if m.contains("line 4") && m.contains("out of range")),
+        "{:?}",
+        h.state().message
+    );
+    assert_eq!(h.state().doc.view, view_before, "the current mesh stays");
+    // Back to the sphere with one click, and to the mesh again.
+    h.get_by_label("Sphere").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Sphere);
+    h.get_by_label("Your mesh").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Obj);
+}
+
+#[test]
+fn dropping_an_obj_file_shows_it() {
+    let dir = temp_dir("drop-obj");
+    let good = dir.join("tri.obj");
+    std::fs::write(&good, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    let mut h = harness();
+    h.input_mut().dropped_files.push(std::sync::Arc::new(Dropped(good.clone())));
+    h.run_steps(2);
+    assert_eq!(h.state().doc.view.obj.as_deref(), Some(good.to_str().unwrap()));
+}

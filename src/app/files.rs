@@ -35,18 +35,54 @@ pub fn open_at_start(state: &mut AppState, path: &Path) {
 
 /// Opens a scene file into the app, or says why not and keeps the current scene.
 pub fn open(state: &mut AppState, path: &Path) {
+    if is_obj(path) {
+        return open_obj(state, path);
+    }
     match std::fs::read(path) {
         Ok(bytes) => open_bytes(state, &bytes, path),
         Err(e) => refuse(state, format!("cannot read {}: {e}", path.display())),
     }
 }
 
+/// Does `path` name an OBJ mesh (rather than a scene file)?
+pub fn is_obj(path: &Path) -> bool {
+    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("obj"))
+}
+
+/// Shows the OBJ mesh at `path` in the shaded view (the scene stays), or says why not with
+/// the line at fault; says what was done to the file (fanned, normals computed, fitted).
+pub fn open_obj(state: &mut AppState, path: &Path) {
+    let full = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+    let mut c = state.doc.clone();
+    c.view.object = phonglab_core::ObjectKind::Obj;
+    c.view.obj = Some(full.display().to_string());
+    let loaded = c.view.obj_mesh();
+    if state.apply(c) {
+        let what = match loaded {
+            Ok(o) => format!(
+                "{} triangles, {} vertices; {}",
+                o.mesh.triangle_count(),
+                o.mesh.positions.len(),
+                o.notes.join("; ")
+            ),
+            Err(e) => e.to_string(),
+        };
+        state.message = Some(Message::Info(format!("Opened the mesh {}: {what}.", path.display())));
+    } else if let Some(Message::Refused(m)) = &state.message {
+        let m = m.replace("Refused: ", "");
+        refuse(state, m.replace(" The scene keeps its last valid value.", ""));
+    }
+}
+
 /// Opens a scene from the bytes of the file at `path`, or says why not.
 fn open_bytes(state: &mut AppState, bytes: &[u8], path: &Path) {
+    if is_obj(path) {
+        return open_obj(state, path);
+    }
     let Ok(text) = std::str::from_utf8(bytes) else {
         return refuse(state, format!("{} is not a text file", path.display()));
     };
-    match Document::from_toml(text) {
+    match Document::from_toml_in(text, path.parent()) {
         Ok(doc) => {
             state.load(doc, &path.display().to_string());
             state.ui.file_path = path.display().to_string();
@@ -114,7 +150,7 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
         painter.text(
             rect.center(),
             egui::Align2::CENTER_CENTER,
-            "Drop a scene file (.toml) to open it",
+            "Drop a scene file (.toml) or a mesh (.obj) to open it",
             egui::FontId::proportional(28.0),
             egui::Color32::WHITE,
         );

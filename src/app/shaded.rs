@@ -82,6 +82,11 @@ fn view_options_ui(ui: &mut Ui, view: &mut View) {
                 count(ui, "Cylinder stacks", &mut view.cylinder_stacks, phonglab_core::view::STACKS_RANGE);
                 ui.checkbox(&mut view.cylinder_caps, "Caps");
             }
+            ObjectKind::Obj => {
+                if let Ok(o) = view.obj_mesh() {
+                    ui.small(format!("{} triangles: {}", o.mesh.triangle_count(), o.notes.join("; ")));
+                }
+            }
         }
     });
     pipeline_ui(ui, view);
@@ -93,9 +98,14 @@ fn view_options_ui(ui: &mut Ui, view: &mut View) {
 pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eval: &Evaluated) {
     let mut view = state.doc.view.clone();
     let presenting = state.ui.layout.presenting;
+    let mut open_obj_requested = None;
     ui.horizontal_wrapped(|ui| {
         for (k, o) in [("s", ObjectKind::Sphere), ("t", ObjectKind::Teapot), ("c", ObjectKind::Cylinder)] {
             ui.selectable_value(&mut view.object, o, o.label()).on_hover_text(format!("key {k}"));
+        }
+        if let Some(path) = &view.obj {
+            let tip = format!("{path} (open another under View options, or drop an .obj file)");
+            ui.selectable_value(&mut view.object, ObjectKind::Obj, ObjectKind::Obj.label()).on_hover_text(tip);
         }
         ui.separator();
         for (k, s) in [("1", Shading::Gouraud), ("2", Shading::Phong), ("3", Shading::Flat)] {
@@ -116,6 +126,25 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
     if !presenting {
         egui::CollapsingHeader::new("View options").id_salt("view options").show(ui, |ui| {
             view_options_ui(ui, &mut view);
+            ui.horizontal_wrapped(|ui| {
+                let l = ui.label("Mesh file (.obj):");
+                let field = ui
+                    .add(
+                        egui::TextEdit::singleline(&mut state.ui.obj_path)
+                            .desired_width(180.0)
+                            .hint_text("path/to/mesh.obj"),
+                    )
+                    .labelled_by(l.id);
+                let enter = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+                if ui
+                    .button("Show mesh")
+                    .on_hover_text("Shade this OBJ file in the view (Enter in the field)")
+                    .clicked()
+                    || enter
+                {
+                    open_obj_requested = Some(std::path::PathBuf::from(state.ui.obj_path.trim()));
+                }
+            });
         });
     }
     let departures: Vec<DemoDeparture> = DemoDeparture::ALL.into_iter().filter(|d| d.present_in(&state.doc)).collect();
@@ -124,6 +153,9 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
         let mut c = state.doc.clone();
         c.view = view;
         state.apply(c);
+    }
+    if let Some(p) = open_obj_requested {
+        super::files::open_obj(state, &p);
     }
     // The spin is not an edit: it stays finite and in range, and must not clear a message.
     if state.doc.view.auto_rotate {

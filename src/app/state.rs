@@ -70,6 +70,8 @@ pub struct UiState {
     /// Which of the Phong demo's departures the corrected picture corrects, in the order
     /// of [`phonglab_core::library::DemoDeparture::ALL`].
     pub demo_fixes: [bool; 3],
+    /// The OBJ file path typed under View options.
+    pub obj_path: String,
     /// The window's arrangement (kept across restarts).
     pub layout: super::layout::Layout,
     /// The highlighted step moved this frame: the calculation scrolls to it.
@@ -88,6 +90,7 @@ impl Default for UiState {
             clamp: true,
             file_path: "scene.toml".into(),
             demo_fixes: [false; 3],
+            obj_path: String::new(),
             layout: Default::default(),
             scroll_to_step: false,
         }

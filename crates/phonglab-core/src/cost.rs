@@ -72,10 +72,12 @@ impl<'a> Setup<'a> {
 
 /// The five tessellation levels studied per object, coarse to fine: sphere slices and
 /// stacks, teapot quads per patch side, cylinder slices (with a quarter as many stacks).
+/// A mesh file has the one tessellation it was made with, at every level.
 pub fn levels(object: ObjectKind) -> [u32; 5] {
     match object {
         ObjectKind::Sphere | ObjectKind::Cylinder => [8, 16, 32, 64, 128],
         ObjectKind::Teapot => [1, 2, 4, 7, 14],
+        ObjectKind::Obj => [1; 5],
     }
 }
 
@@ -84,6 +86,7 @@ pub fn reference_level(object: ObjectKind) -> u32 {
     match object {
         ObjectKind::Sphere | ObjectKind::Cylinder => 400,
         ObjectKind::Teapot => 48,
+        ObjectKind::Obj => 1,
     }
 }
 
@@ -94,6 +97,7 @@ pub fn view_at(view: &View, level: u32) -> View {
         ObjectKind::Sphere => (v.sphere_slices, v.sphere_stacks) = (level, level),
         ObjectKind::Teapot => v.teapot_grid = level,
         ObjectKind::Cylinder => (v.cylinder_slices, v.cylinder_stacks) = (level, (level / 4).max(1)),
+        ObjectKind::Obj => {}
     }
     v
 }

@@ -96,9 +96,20 @@ impl Document {
 
     /// Parses and checks a scene file.
     pub fn from_toml(text: &str) -> Result<Document, DocumentError> {
+        Self::from_toml_in(text, None)
+    }
+
+    /// Parses and checks a scene file that lives in the folder `dir`: a relative mesh file
+    /// path (`[view] obj`) is taken from that folder.
+    pub fn from_toml_in(text: &str, dir: Option<&std::path::Path>) -> Result<Document, DocumentError> {
         let file: FileV1 =
             toml::from_str(text).map_err(|e| DocumentError::Syntax(e.to_string().trim_end().to_string()))?;
-        let doc = file.into_document()?;
+        let mut doc = file.into_document()?;
+        if let (Some(dir), Some(obj)) = (dir, &doc.view.obj)
+            && std::path::Path::new(obj).is_relative()
+        {
+            doc.view.obj = Some(dir.join(obj).display().to_string());
+        }
         doc.validate()?;
         Ok(doc)
     }

@@ -47,6 +47,15 @@ pub enum SceneError {
         /// Where, e.g. `lights[0].attenuation`.
         field: String,
     },
+    /// A mesh file that cannot be used (missing, too large, malformed: the message names
+    /// the line).
+    #[error("{field}: {message}")]
+    Mesh {
+        /// Where, e.g. `view.obj`.
+        field: String,
+        /// What is wrong, e.g. `line 12: vertex index 40 is out of range (there are 8)`.
+        message: String,
+    },
 }
 
 impl SceneError {
@@ -55,7 +64,8 @@ impl SceneError {
         match self {
             SceneError::OutOfRange { field, .. }
             | SceneError::NotFinite { field, .. }
-            | SceneError::ZeroAttenuation { field } => field,
+            | SceneError::ZeroAttenuation { field }
+            | SceneError::Mesh { field, .. } => field,
             SceneError::TooManyLights { .. } => "lights",
             SceneError::CameraMismatch { .. } => "camera",
         }

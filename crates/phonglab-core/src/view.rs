@@ -15,6 +15,8 @@ pub enum ObjectKind {
     Teapot,
     /// gluCylinder(0.3, 0.3, 0.5, slices, stacks).
     Cylinder,
+    /// The user's mesh: the OBJ file at [`View::obj`], fitted to radius 0.5.
+    Obj,
 }
 
 impl ObjectKind {
@@ -27,6 +29,7 @@ impl ObjectKind {
             ObjectKind::Sphere => "Sphere",
             ObjectKind::Teapot => "Teapot",
             ObjectKind::Cylinder => "Cylinder",
+            ObjectKind::Obj => "Your mesh",
         }
     }
 }
@@ -200,6 +203,9 @@ pub struct View {
     pub cylinder_centered: bool,
     /// The colour of uncovered pixels (the demo: black).
     pub background: [f32; 3],
+    /// The OBJ file shown when the object is [`ObjectKind::Obj`] (a path; relative paths
+    /// in a scene file are taken from the scene file's folder when it is opened).
+    pub obj: Option<String>,
 }
 
 impl Default for View {
@@ -223,6 +229,7 @@ impl Default for View {
             phong_renormalize: true,
             cylinder_centered: true,
             background: [0.1, 0.1, 0.15],
+            obj: None,
         }
     }
 }
@@ -251,12 +258,29 @@ impl View {
                 }
                 c
             }
+            // Validated when the view was accepted; a file that went away since shows
+            // nothing rather than failing.
+            ObjectKind::Obj => self.obj_mesh().map(|o| o.mesh.clone()).unwrap_or_default(),
         };
         if self.demo_normals { m.with_position_normals() } else { m }
     }
 
-    /// Refuses a tessellation outside the ranges above, and a non-finite spin.
+    /// The OBJ file's mesh and notes (read once per modification), or why it cannot be used.
+    pub fn obj_mesh(&self) -> Result<std::sync::Arc<crate::mesh::obj::LoadedObj>, SceneError> {
+        let path = self.obj.as_deref().ok_or_else(|| SceneError::Mesh {
+            field: "view.obj".into(),
+            message: "the object is a mesh file, but no file is given".into(),
+        })?;
+        crate::mesh::obj::load_obj_cached(std::path::Path::new(path))
+            .map_err(|message| SceneError::Mesh { field: "view.obj".into(), message })
+    }
+
+    /// Refuses a tessellation outside the ranges above, a non-finite spin, and a mesh file
+    /// that cannot be read.
     pub fn validate(&self) -> Result<(), SceneError> {
+        if self.object == ObjectKind::Obj {
+            self.obj_mesh()?;
+        }
         let check = |field: &str, v: u32, r: &std::ops::RangeInclusive<u32>, allowed: &'static str| {
             if r.contains(&v) {
                 Ok(())

@@ -123,6 +123,7 @@ fn view() -> BoxedStrategy<View> {
             phong_renormalize: more.3,
             cylinder_centered: more.4,
             background: more.5,
+            obj: None,
         })
         .boxed()
 }
