@@ -43,6 +43,10 @@ pub struct UiBenchArgs {
     /// Window height in points.
     #[arg(long, default_value_t = 900.0)]
     pub height: f32,
+    /// Presentation mode (large type, the controls drawer out) at 1920x1080 unless a size
+    /// is given: the light is dragged with Gouraud and then with Phong shading.
+    #[arg(long)]
+    pub present: bool,
 }
 
 /// `phonglab bench render`.
@@ -256,7 +260,45 @@ pub fn all_panels_open(ctx: &egui::Context, size: [f32; 2]) -> Result<crate::app
 /// An edit made before a timed frame (the frame's number given).
 type StateChange = Box<dyn FnMut(&mut crate::app::AppState, u32)>;
 
+/// Presentation mode while the light is dragged: per shading, (ui, tessellation, total)
+/// median and p95 in ms.
+fn ui_presenting(a: &UiBenchArgs) -> Result<()> {
+    let size = if a.width == 1440.0 && a.height == 900.0 { [1920.0, 1080.0] } else { [a.width, a.height] };
+    let ctx = egui::Context::default();
+    println!(
+        "# phonglab bench ui --present: {}x{} points, presentation mode with the controls drawer out, {} frames per case; each frame the light's z moves as a dragged slider moves it; CPU ms (layout includes the scene's evaluation and the shaded view's render)",
+        size[0], size[1], a.frames
+    );
+    println!("case ui_median ui_p95 tessellate_median tessellate_p95 total_median total_p95 image_px");
+    for shading in [Shading::Gouraud, Shading::Phong] {
+        let mut state = crate::app::AppState::worksheet();
+        state.ui.layout.presenting = true;
+        state.ui.layout.drawer_open = true;
+        let mut d = state.doc.clone();
+        d.view.shading = shading;
+        state.apply(d);
+        // Settle the layout (panel sizes, fonts) before timing.
+        time_ui_frames(&ctx, &mut state, size, 5, |_, _| {});
+        let z0 = state.doc.scene.lights[0].position.z;
+        let (mut u, mut t) = time_ui_frames(&ctx, &mut state, size, a.frames, move |s, f| {
+            let mut d = s.doc.clone();
+            d.scene.lights[0].position.z = z0 + (f % 100) as f64;
+            s.apply(d);
+        });
+        let mut total: Vec<f64> = u.iter().zip(&t).map(|(a, b)| a + b).collect();
+        let (um, up) = median_p95(&mut u);
+        let (tm, tp) = median_p95(&mut t);
+        let (sm, sp) = median_p95(&mut total);
+        let px = state.shaded.main.image_px();
+        println!("drag_{} {um:.2} {up:.2} {tm:.2} {tp:.2} {sm:.2} {sp:.2} {px}", shading.label().to_lowercase());
+    }
+    Ok(())
+}
+
 fn ui(a: &UiBenchArgs) -> Result<()> {
+    if a.present {
+        return ui_presenting(a);
+    }
     let size = [a.width, a.height];
     let ctx = egui::Context::default();
     let mut state = all_panels_open(&ctx, size)?;

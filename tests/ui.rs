@@ -527,11 +527,12 @@ fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
     assert_eq!(h.query_all_by_role(Role::Image).count(), 1);
     for d in phonglab_core::library::DemoDeparture::ALL {
         h.get_by_label(d.fix_label());
-        h.get_by_label(d.why());
+        assert!(h.query_by_label(d.why()).is_none(), "the why shows once the switch is on");
     }
     h.get_by_label("light fixed in the world").click();
     h.run_steps(2);
     assert_eq!(h.state().ui.demo_fixes, [true, false, false]);
+    h.get_by_label(phonglab_core::library::DemoDeparture::LightTurnsWithObject.why());
     // Two pictures: the demo's on the left, the corrected one on the right.
     let images: Vec<egui::Rect> = h.query_all_by_role(Role::Image).map(|n| n.rect()).collect();
     assert_eq!(images.len(), 2, "{images:?}");

@@ -200,3 +200,41 @@ fn compare_pins_a_and_highlights_the_steps_that_differ() {
     h.run_steps(2);
     assert!(!h.state().compare.open);
 }
+
+/// Writes the README's screenshots (presentation mode and Compare, at 1280×720) when
+/// `PHONGLAB_SCREENSHOTS` names a folder: `PHONGLAB_SCREENSHOTS=docs cargo test --test
+/// ui_classroom screenshots -- --ignored`. Rendered by wgpu on the software adapter.
+#[test]
+#[ignore]
+fn screenshots() {
+    let Ok(dir) = std::env::var("PHONGLAB_SCREENSHOTS") else { return };
+    let dir = std::path::PathBuf::from(dir);
+    let mut h = harness_at(1440.0, 900.0);
+    h.run_steps(2);
+    h.render().unwrap().save(dir.join("screenshot.png")).unwrap();
+
+    let mut h = harness_at(1280.0, 720.0);
+    h.key_press(egui::Key::F5);
+    h.run_steps(3);
+    // A vertex on the sphere, so the vectors stand on the object, and a step highlighted.
+    let image = h.get_all_by_role(Role::Image).next().unwrap().rect();
+    let at = image.center() + egui::vec2(-image.width() * 0.12, -image.height() * 0.15);
+    h.drag_at(at);
+    h.drop_at(at);
+    h.run_steps(2);
+    for _ in 0..9 {
+        h.key_press(egui::Key::ArrowDown);
+    }
+    h.run_steps(4);
+    h.render().unwrap().save(dir.join("presentation.png")).unwrap();
+
+    let mut h = harness_at(1280.0, 720.0);
+    h.get_by_label("Compare").click();
+    h.run_steps(2);
+    h.get_by_label("Pin the current scene as A").click();
+    h.run_steps(2);
+    h.key_press(egui::Key::Num2);
+    h.key_press(egui::Key::M);
+    h.run_steps(4);
+    h.render().unwrap().save(dir.join("compare.png")).unwrap();
+}

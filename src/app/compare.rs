@@ -93,10 +93,8 @@ fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) {
     let which = s.which;
     ui.vertical(|ui| {
         ui.label(RichText::new(format!("{which}: {}", s.what)).strong());
-        ui.horizontal(|ui| {
-            swatch_ui(ui, s.eval);
-            ui.monospace(fmt_value(&s.eval.front.shown, 8));
-        });
+        swatch_ui(ui, s.eval);
+        ui.label(RichText::new(fmt_value(&s.eval.front.shown, 8)).monospace());
         match view.render(ui.ctx(), s.doc, s.pow, px, which) {
             Ok(()) => {
                 if let Some(tex) = &view.texture {
@@ -154,24 +152,18 @@ pub fn compare_ui(ui: &mut Ui, state: &mut AppState, b: &Evaluated) {
     ui.label(format!("{differing} of {} steps differ (highlighted).", pairs.len()));
     let hi = if ui.visuals().dark_mode { Color32::from_rgb(90, 60, 0) } else { Color32::from_rgb(255, 224, 150) };
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
-        egui::Grid::new("compare steps").striped(false).num_columns(4).show(ui, |ui| {
-            ui.strong("step");
-            ui.strong("A");
-            ui.strong("B");
-            ui.end_row();
-            for (k, title, va, vb, differ) in pairs {
-                let cell = |ui: &mut Ui, text: String| {
-                    let mut t = RichText::new(text).monospace();
-                    if differ {
-                        t = t.background_color(hi);
-                    }
-                    ui.label(t);
-                };
-                ui.label(format!("{k}. {title}"));
-                cell(ui, va);
-                cell(ui, vb);
-                ui.end_row();
+        // One step after another: its title, then A's value and B's, highlighted where they
+        // differ (values wrap rather than run under the next panel).
+        for (k, title, va, vb, differ) in pairs {
+            ui.label(RichText::new(format!("{k}. {title}")).strong());
+            for (who, v) in [("A", va), ("B", vb)] {
+                let mut t = RichText::new(format!("{who}  {v}")).monospace();
+                if differ {
+                    t = t.background_color(hi);
+                }
+                ui.label(t);
             }
-        });
+            ui.add_space(2.0);
+        }
     });
 }

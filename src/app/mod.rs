@@ -276,7 +276,8 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
         state.ui.layout.controls_open = open;
     }
 
-    let mut open = state.ui.layout.calculation_open || presenting;
+    // Compare lists the steps of A and B itself, in the calculation's place.
+    let mut open = (state.ui.layout.calculation_open || presenting) && !state.compare.open;
     egui::Panel::right(if presenting { "calculation (presenting)" } else { "calculation" })
         .resizable(true)
         .default_size(layout::Layout::calculation_width(width) * if presenting { 1.25 } else { 1.0 })
@@ -299,7 +300,7 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
                 walk,
             );
         });
-    if !presenting {
+    if !presenting && !state.compare.open {
         state.ui.layout.calculation_open = open;
     }
 
@@ -352,19 +353,23 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
         });
     };
     let avail = ui.available_size();
-    if avail.x >= 1.5 * avail.y {
+    // Two pictures side by side (the corrected one, or the heat map) want the full width.
+    let pair = state.cost.heat_map || shaded::corrected_document(&state.doc, &state.ui.demo_fixes).is_some();
+    if avail.x >= 1.5 * avail.y && !pair {
         // Side by side: the shaded view takes the larger share.
         let w = (avail.x * 0.58).min(avail.y + 40.0);
         ui.horizontal_top(|ui| {
-            ui.allocate_ui(egui::vec2(w, avail.y), |ui| shaded(ui, state));
+            let down = egui::Layout::top_down(egui::Align::Min);
+            ui.allocate_ui_with_layout(egui::vec2(w, avail.y), down, |ui| shaded(ui, state));
             ui.separator();
-            ui.vertical(|ui| beside(ui, state));
+            let rest = egui::vec2(ui.available_width(), avail.y);
+            ui.allocate_ui_with_layout(rest, down, |ui| beside(ui, state));
         });
     } else {
-        // Stacked: the shaded view on top, its image at least 45 % of the window's height
-        // where the centre allows (its controls take about 150 points above it).
+        // Stacked: the shaded view on top, its image about 42 % of the window's height
+        // where the centre allows (its controls take about 130 points above it).
         let window = ui.ctx().content_rect().height();
-        let h = (0.45 * window + 150.0).max(avail.y * 0.6).min(avail.y - 120.0);
+        let h = (0.42 * window + 130.0).min(avail.y - 120.0);
         ui.allocate_ui(egui::vec2(avail.x, h), |ui| shaded(ui, state));
         ui.separator();
         beside(ui, state);

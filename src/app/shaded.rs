@@ -53,10 +53,17 @@ fn departures_ui(ui: &mut Ui, fixes: &mut [bool; 3], departures: &[DemoDeparture
     egui::CollapsingHeader::new("The demo's departures from OpenGL").id_salt("departures").default_open(true).show(
         ui,
         |ui| {
-            ui.small("Flip a switch to see the corrected picture on the right, beside the demo's own on the left.");
+            ui.small("Flip a switch: the corrected picture shows on the right, the demo's own on the left.");
+            ui.horizontal_wrapped(|ui| {
+                for (k, d) in DemoDeparture::ALL.into_iter().enumerate() {
+                    if departures.contains(&d) {
+                        ui.checkbox(&mut fixes[k], d.fix_label()).on_hover_text(d.why());
+                    }
+                }
+            });
+            // Why, for each one corrected (one sentence each).
             for (k, d) in DemoDeparture::ALL.into_iter().enumerate() {
-                if departures.contains(&d) {
-                    ui.checkbox(&mut fixes[k], d.fix_label());
+                if fixes[k] && departures.contains(&d) {
                     ui.small(d.why());
                 }
             }
@@ -170,7 +177,9 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
     let beside = heat || corrected.is_some();
     // Leave room for the caption line above the image (and the picture beside it).
     let width = if beside { (avail.x - 8.0) / 2.0 } else { avail.x };
-    let side = width.min(avail.y - 2.0 * ui.text_style_height(&egui::TextStyle::Small) - 8.0).max(64.0);
+    // Room for the caption above the image (up to three lines when it wraps beside another).
+    let caption_lines = if beside { 3.0 } else { 2.0 };
+    let side = width.min(avail.y - caption_lines * ui.text_style_height(&egui::TextStyle::Small) - 8.0).max(64.0);
     let ppp = ui.ctx().pixels_per_point();
     let px = ((side * ppp) as usize).clamp(64, 1024);
     let camera = state.doc.view.camera;
@@ -199,6 +208,8 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
         .horizontal_top(|ui| {
             let resp = ui
                 .vertical(|ui| {
+                    // Captions wrap within the picture's width rather than widen its column.
+                    ui.set_max_width(side);
                     let label = ui.small(caption);
                     ui.add(egui::Image::new((tex.id(), size)).sense(Sense::click_and_drag()))
                         .on_hover_text(
@@ -209,6 +220,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
                 .inner;
             if let (Some(c), Some(tex)) = (&corrected, &cache.corrected.texture) {
                 ui.vertical(|ui| {
+                    ui.set_max_width(side);
                     let fixed: Vec<&str> = DemoDeparture::ALL
                         .into_iter()
                         .zip(state.ui.demo_fixes)

@@ -78,20 +78,23 @@ fn angle_arc<'a>(
     Some((Line::new("", PlotPoints::from(pts)).color(c).width(1.5), label, p))
 }
 
-/// Where the second angle's label goes so that it stays clear of the first's: pushed
-/// outwards along its own direction until the two are `gap` apart on the plot.
-pub fn clear_of(first: [f64; 2], second: [f64; 2], gap: f64) -> [f64; 2] {
+/// Where the second angle's label goes so that it stays clear of the first's: both are
+/// boxes `size` (plot units) centred on their points; the second is pushed outwards along
+/// its own direction until the boxes no longer overlap.
+pub fn clear_of(first: [f64; 2], second: [f64; 2], size: [f64; 2]) -> [f64; 2] {
+    let overlaps = |p: [f64; 2]| (p[0] - first[0]).abs() < size[0] && (p[1] - first[1]).abs() < size[1];
+    let len = (second[0] * second[0] + second[1] * second[1]).sqrt();
+    let dir = if len > 1e-9 { [second[0] / len, second[1] / len] } else { [0.0, 1.0] };
+    let step = size[0].min(size[1]) * 0.25;
     let mut p = second;
-    let len = (p[0] * p[0] + p[1] * p[1]).sqrt();
-    let dir = if len > 1e-9 { [p[0] / len, p[1] / len] } else { [0.0, 1.0] };
     let mut k = 0;
-    while ((p[0] - first[0]).powi(2) + (p[1] - first[1]).powi(2)).sqrt() < gap && k < 40 {
-        p = [p[0] + dir[0] * 0.04, p[1] + dir[1] * 0.04];
+    while overlaps(p) && k < 200 {
+        p = [p[0] + dir[0] * step, p[1] + dir[1] * step];
         k += 1;
     }
-    // Straight above or below the first when pushing along the direction does not help.
-    if ((p[0] - first[0]).powi(2) + (p[1] - first[1]).powi(2)).sqrt() < gap {
-        p = [first[0], first[1] - gap];
+    if overlaps(p) {
+        // Straight below the first when pushing along the direction does not help.
+        p = [first[0], first[1] - size[1]];
     }
     p
 }
@@ -120,6 +123,11 @@ pub fn vector_plot_ui(ui: &mut Ui, orbit: &mut Orbit, eval: &Evaluated, specular
     let entries = 3 + eval.lights.iter().map(|l| 2 + l.spot.is_some() as usize).sum::<usize>();
     let row = ui.text_style_height(&egui::TextStyle::Body) + 4.0;
     let show_legend = side >= 48.0 + entries as f32 * (row + 4.0);
+    // An angle label's size in plot units: about 10 characters of 14-point text, on a plot
+    // about 3.2 units across `side` points (the label is drawn at 14 points, scaled with the
+    // presentation's zoom as text is).
+    let units_per_point = 3.2 / side as f64;
+    let label_box = [10.0 * 0.6 * 14.0 * units_per_point, 18.0 * units_per_point];
     let mut plot = Plot::new("vector plot")
         .width(ui.available_width())
         .height(side)
@@ -182,7 +190,7 @@ pub fn vector_plot_ui(ui: &mut Ui, orbit: &mut Orbit, eval: &Evaluated, specular
             }
             if let Some((line, text, at)) = beta {
                 p.line(line);
-                let at = theta_at.map_or(at, |t| clear_of(t, at, 0.22));
+                let at = theta_at.map_or(at, |t| clear_of(t, at, label_box));
                 let c = if specular == SpecularModel::BlinnPhong { palette::H } else { palette::R };
                 p.text(label(text, at, ink(c)));
             }
@@ -215,10 +223,13 @@ mod tests {
     fn angle_labels_are_kept_apart() {
         let d = |a: [f64; 2], b: [f64; 2]| ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt();
         // The worksheet's theta and beta labels nearly coincide in the XY view.
-        for (a, b) in [([0.3, 0.2], [0.31, 0.21]), ([0.0, 0.0], [0.0, 0.0]), ([0.5, 0.1], [0.1, 0.5])] {
-            let c = clear_of(a, b, 0.22);
-            assert!(d(a, c) >= 0.22 - 1e-12, "{a:?} {b:?} -> {c:?}");
+        let size = [0.4, 0.1];
+        let apart = |a: [f64; 2], c: [f64; 2]| (a[0] - c[0]).abs() >= size[0] || (a[1] - c[1]).abs() >= size[1];
+        for (a, b) in [([0.3, 0.2], [0.31, 0.21]), ([0.0, 0.0], [0.0, 0.0]), ([0.5, 0.1], [0.3, 0.15])] {
+            let c = clear_of(a, b, size);
+            assert!(apart(a, c), "{a:?} {b:?} -> {c:?}");
+            assert!(d(b, c) < 1.0, "not pushed far: {b:?} -> {c:?}");
         }
-        assert_eq!(clear_of([0.5, 0.1], [0.1, 0.5], 0.22), [0.1, 0.5], "already clear: left alone");
+        assert_eq!(clear_of([0.5, 0.1], [0.1, 0.5], size), [0.1, 0.5], "already clear: left alone");
     }
 }

@@ -37,6 +37,11 @@ impl ShadedCache {
 }
 
 impl ViewCache {
+    /// The side of the last picture, in pixels (0 before the first).
+    pub fn image_px(&self) -> usize {
+        self.texture.as_ref().map_or(0, |t| t.size()[0])
+    }
+
     /// Renders `doc`'s shaded view at `px` pixels square unless the texture already shows it.
     pub(crate) fn render(
         &mut self,
