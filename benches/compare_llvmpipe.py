@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """phonglab's CPU renderer against Mesa llvmpipe on docs/lighting.md's benchmark scene, in one run.
 
-  benches/compare_llvmpipe.py --glref PATH/TO/shared/glref [--frames 200] [--rounds 3]
+  benches/compare_llvmpipe.py --glref PATH/TO/shared/glref [--frames 200] [--rounds 3] [--size 512] [--threads 2]
 
 Runs `phonglab bench render` and glref's `bench_llvmpipe.py` (default thread count: all
 cores) alternately, `--rounds` times each, so background load hits both alike, and takes
@@ -24,23 +24,26 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
 
-def phonglab(frames):
+def phonglab(frames, size, threads):
     exe = os.path.join(ROOT, "target", "release", "phonglab")
-    out = subprocess.run([exe, "bench", "render", "--frames", str(frames)], check=True, capture_output=True, text=True).stdout
+    cmd = [exe, "bench", "render", "--frames", str(frames), "--size", str(size)]
+    if threads != "default":
+        cmd += ["--threads", threads]
+    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     rows = {}
     for line in out.splitlines():
         if line.startswith("#") or line.startswith("object"):
             continue
-        obj, shading, ms, tris, cov = line.split()
+        obj, shading, ms, tris, cov = line.split()[:5]
         rows[(obj, shading)] = float(ms)
     return rows
 
 
-def llvmpipe(glref, frames):
+def llvmpipe(glref, frames, size, threads):
     py = os.path.join(glref, ".venv", "bin", "python")
     with tempfile.TemporaryDirectory() as d:
         j = os.path.join(d, "r.json")
-        subprocess.run([py, os.path.join(glref, "bench_llvmpipe.py"), "--frames", str(frames), "--threads", "default", "--json", j],
+        subprocess.run([py, os.path.join(glref, "bench_llvmpipe.py"), "--frames", str(frames), "--size", str(size), "--threads", threads, "--json", j],
                        check=True, capture_output=True, text=True)
         res = json.load(open(j))[0]["results"]
     names = {"sphere_50x50": "sphere", "glut_teapot": "teapot"}
@@ -53,16 +56,18 @@ def main():
     ap.add_argument("--glref", required=True, help="the glref harness directory (with its .venv)")
     ap.add_argument("--frames", type=int, default=200)
     ap.add_argument("--rounds", type=int, default=3)
+    ap.add_argument("--size", type=int, default=512, help="image side in pixels, both renderers")
+    ap.add_argument("--threads", default="default", help="threads for both (default: all cores)")
     a = ap.parse_args()
     subprocess.run(["cargo", "build", "--release", "--locked", "-q"], cwd=ROOT, check=True)
     ours, theirs = {}, {}
     for r in range(a.rounds):
-        for k, v in phonglab(a.frames).items():
+        for k, v in phonglab(a.frames, a.size, a.threads).items():
             ours[k] = min(v, ours.get(k, float("inf")))
-        for k, v in llvmpipe(a.glref, a.frames).items():
+        for k, v in llvmpipe(a.glref, a.frames, a.size, a.threads).items():
             theirs[k] = min(v, theirs.get(k, float("inf")))
         print("round %d of %d done" % (r + 1, a.rounds), file=sys.stderr)
-    print("# %d frames, best of %d alternating rounds, %d cpus" % (a.frames, a.rounds, os.cpu_count()))
+    print("# %dx%d, %d frames, best of %d alternating rounds, threads %s, %d cpus" % (a.size, a.size, a.frames, a.rounds, a.threads, os.cpu_count()))
     print("object shading phonglab_ms llvmpipe_ms ratio")
     for (obj, sh), ms in sorted(ours.items()):
         t = theirs.get((obj, sh))

@@ -91,6 +91,8 @@ pub struct RenderFigure {
     pub triangles: usize,
     /// Share of pixels covered.
     pub coverage: f64,
+    /// Mean milliseconds of each stage: vertices, setup, raster, resolve.
+    pub stage_ms: [f64; 4],
 }
 
 /// Times the renderer on the benchmark scene.
@@ -99,27 +101,35 @@ pub fn render_figures(frames: u32, size: usize) -> Result<Vec<RenderFigure>> {
     for (name, mesh) in bench_meshes() {
         for shading in Shading::ALL {
             let mut r = Renderer::new();
-            let frame = |i: u32, r: &mut Renderer| -> Result<f64> {
+            let frame = |i: u32, r: &mut Renderer| -> Result<[f64; 4]> {
                 let scene = bench_scene(i);
                 let job = phonglab_core::library::bench_job(&scene, &mesh, shading);
-                let (img, _) = r.render(&job, size, size)?;
-                Ok(img.coverage())
+                let (_, stats) = r.render(&job, size, size)?;
+                Ok(stats.stage_ms)
             };
             for i in 0..5 {
                 frame(i, &mut r)?;
             }
             let t = Instant::now();
-            let mut coverage = 0.0;
+            let mut stages = [0.0; 4];
             for i in 0..frames {
-                coverage = frame(i, &mut r)?;
+                let s = frame(i, &mut r)?;
+                for k in 0..4 {
+                    stages[k] += s[k] / frames.max(1) as f64;
+                }
             }
             let ms = t.elapsed().as_secs_f64() * 1e3 / frames.max(1) as f64;
+            // Measured after the timed frames: counting pixels is not part of a frame.
+            let scene = bench_scene(frames);
+            let job = phonglab_core::library::bench_job(&scene, &mesh, shading);
+            let coverage = r.render(&job, size, size)?.0.coverage();
             out.push(RenderFigure {
                 object: name,
                 shading,
                 ms_per_frame: ms,
                 triangles: mesh.triangle_count(),
                 coverage,
+                stage_ms: stages,
             });
         }
     }
@@ -128,16 +138,17 @@ pub fn render_figures(frames: u32, size: usize) -> Result<Vec<RenderFigure>> {
 
 fn render(a: &RenderBench) -> Result<()> {
     println!(
-        "# phonglab bench render: {}x{} px, {} frames, {} threads",
+        "# phonglab bench render: {}x{} px, {} frames, {} threads; the stages' mean ms: vertices, setup, raster, resolve",
         a.size,
         a.size,
         a.frames,
         rayon::current_num_threads()
     );
-    println!("object shading ms_per_frame triangles coverage");
+    println!("object shading ms_per_frame triangles coverage vertices_ms setup_ms raster_ms resolve_ms");
     for f in render_figures(a.frames, a.size)? {
+        let [v, s, r, res] = f.stage_ms;
         println!(
-            "{} {} {:.3} {} {:.4}",
+            "{} {} {:.3} {} {:.4} {v:.3} {s:.3} {r:.3} {res:.3}",
             f.object,
             f.shading.label().to_lowercase(),
             f.ms_per_frame,

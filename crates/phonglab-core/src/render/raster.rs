@@ -161,3 +161,58 @@ fn draw(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::span;
+
+    /// The spans by exact integer search, for comparison.
+    fn by_search(w0: i64, step: i64, bias: i64, n: i64) -> (i64, i64) {
+        let inside: Vec<i64> = (0..=n).filter(|k| w0 + bias + step * k >= 0).collect();
+        match (inside.first(), inside.last()) {
+            (Some(a), Some(b)) => (*a, *b),
+            _ => (0, -1),
+        }
+    }
+
+    #[test]
+    fn spans_are_exactly_the_integer_ones() {
+        let mut seed = 0x9e3779b97f4a7c15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        for _ in 0..200_000 {
+            let step = (next() % 20_001) as i64 - 10_000;
+            let w0 = (next() % 4_000_001) as i64 - 2_000_000;
+            let bias = -((next() % 2) as i64);
+            let n = 600;
+            let (mut lo, mut hi) = (0, n);
+            span(w0, step, bias, &mut lo, &mut hi);
+            let (a, b) = by_search(w0, step, bias, n);
+            if a <= b {
+                assert_eq!((lo, hi), (a, b), "w0 {w0} step {step} bias {bias}");
+            } else {
+                assert!(lo > hi, "empty: w0 {w0} step {step} bias {bias} -> {lo}..{hi}");
+            }
+        }
+        // Exact multiples, where a rounded quotient could be off by one.
+        for step in [1i64, 3, 256, 7 * 256, -1, -3, -256, -7 * 256] {
+            for m in -50..50 {
+                let w0 = step.abs() * m;
+                for bias in [0, -1] {
+                    let (mut lo, mut hi) = (0, 100);
+                    span(w0, step, bias, &mut lo, &mut hi);
+                    let (a, b) = by_search(w0, step, bias, 100);
+                    if a <= b {
+                        assert_eq!((lo, hi), (a, b), "w0 {w0} step {step} bias {bias}");
+                    } else {
+                        assert!(lo > hi);
+                    }
+                }
+            }
+        }
+    }
+}

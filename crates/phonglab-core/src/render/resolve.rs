@@ -26,10 +26,64 @@ use super::{Image, Job, NO_TRIANGLE};
 use crate::specialised::Lighter;
 use crate::view::{FlatNormal, Shading};
 
-/// Per-band buffers of Phong fragments.
+/// Per-band buffers of Phong fragments, and each rasterised triangle's attributes at its
+/// three (clipped) vertices, divided by w.
 #[derive(Default)]
 pub struct Scratch {
     bands: Vec<Fragments>,
+    /// Gouraud: the colours of the triangle's side at its vertices, times 1/w.
+    tri_color: Vec<[[f32; 4]; 3]>,
+    /// Phong and the demo's Flat: eye-space positions at the vertices, times 1/w.
+    tri_pos: Vec<[Vec3; 3]>,
+    /// Phong: (unnormalised) normals at the vertices, times 1/w.
+    tri_nrm: Vec<[Vec3; 3]>,
+}
+
+/// The perspective-correct weights of a pixel with screen barycentrics `l` (of vertices 1
+/// and 2) in a triangle whose vertices have `1/w = inv_w`: `b_k = l_k inv_w_k / sum_j l_j
+/// inv_w_j`, returned as (`l_k`, `1 / sum`), so that an attribute stored as `a_k inv_w_k`
+/// is `sum_k l_k (a_k inv_w_k) / sum_j l_j inv_w_j`.
+#[inline(always)]
+fn screen_weights(inv_w: [f32; 3], l: [f32; 2]) -> ([f32; 3], f32) {
+    let ls = [1.0 - l[0] - l[1], l[0], l[1]];
+    (ls, 1.0 / (ls[0] * inv_w[0] + ls[1] * inv_w[1] + ls[2] * inv_w[2]))
+}
+
+/// Each rasterised triangle's attributes at its three vertices, mapped from the original
+/// triangle's through the clipped vertices' barycentrics and multiplied by 1/w: computed once
+/// per triangle, so a pixel blends three values instead of mapping its barycentrics back.
+fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: &mut Scratch) {
+    let tris = &job.mesh.triangles;
+    let two = job.scene.light_model.two_sided;
+    let blend3 = |t: &super::setup::RasterTri, a: &dyn Fn(usize) -> Vec3| -> [Vec3; 3] {
+        let v = tris[t.orig as usize];
+        let at = [a(v[0] as usize), a(v[1] as usize), a(v[2] as usize)];
+        std::array::from_fn(|k| (at[0] * t.bary[k][0] + at[1] * t.bary[k][1] + at[2] * t.bary[k][2]) * t.inv_w[k])
+    };
+    match job.shading {
+        Shading::Gouraud => {
+            scratch.tri_color.clear();
+            scratch.tri_color.extend(setup.tris.iter().map(|t| {
+                let side = (t.back && two) as usize;
+                let v = tris[t.orig as usize];
+                let cs = v.map(|i| verts.color[side][i as usize]);
+                std::array::from_fn(|k| {
+                    let b = t.bary[k];
+                    std::array::from_fn(|ch| (cs[0][ch] * b[0] + cs[1][ch] * b[1] + cs[2][ch] * b[2]) * t.inv_w[k])
+                })
+            }));
+        }
+        Shading::Phong => {
+            scratch.tri_pos.clear();
+            scratch.tri_nrm.clear();
+            scratch.tri_pos.extend(setup.tris.iter().map(|t| blend3(t, &|i| verts.eye[i])));
+            scratch.tri_nrm.extend(setup.tris.iter().map(|t| blend3(t, &|i| verts.normal[i])));
+        }
+        Shading::Flat => {
+            scratch.tri_pos.clear();
+            scratch.tri_pos.extend(setup.tris.iter().map(|t| blend3(t, &|i| verts.eye[i])));
+        }
+    }
 }
 
 #[derive(Default)]
@@ -93,6 +147,10 @@ pub fn resolve(
         || (job.shading == Shading::Flat && job.flat_normal == FlatNormal::ScreenDerivatives);
     let bands = image.height.div_ceil(BAND);
     scratch.bands.resize_with(bands, Fragments::default);
+    if job.shading != Shading::Flat || per_pixel {
+        triangle_attributes(job, verts, setup, scratch);
+    }
+    let (tri_color, tri_pos, tri_nrm) = (&scratch.tri_color, &scratch.tri_pos, &scratch.tri_nrm);
     let (raster, bary) = (&image.raster, &image.bary);
     // Flat: each face's colour converted to 8 bits once.
     let face8: [Vec<[u8; 4]>; 2] = if job.shading == Shading::Flat && !per_pixel {
@@ -126,11 +184,9 @@ pub fn resolve(
             let side = (t.back && two) as usize;
             match job.shading {
                 Shading::Flat if per_pixel => {
-                    let w = barycentrics(setup, r, bary[k]);
-                    let v = tris[t.orig as usize];
-                    let p = verts.eye[v[0] as usize] * w[0]
-                        + verts.eye[v[1] as usize] * w[1]
-                        + verts.eye[v[2] as usize] * w[2];
+                    let (ls, s) = screen_weights(t.inv_w, bary[k]);
+                    let pw = &tri_pos[r as usize];
+                    let p = (pw[0] * ls[0] + pw[1] * ls[1] + pw[2] * ls[2]) * s;
                     // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
                     let n = setup.face_normal[t.orig as usize];
                     frags.pixel.push(k as u32);
@@ -140,21 +196,16 @@ pub fn resolve(
                 }
                 Shading::Flat => *out = face8[side][t.orig as usize],
                 Shading::Gouraud => {
-                    let w = barycentrics(setup, r, bary[k]);
-                    let v = tris[t.orig as usize];
-                    let cs = v.map(|i| verts.color[side][i as usize]);
-                    let c = |ch: usize| to_u8(cs[0][ch] * w[0] + cs[1][ch] * w[1] + cs[2][ch] * w[2]);
+                    let (ls, s) = screen_weights(t.inv_w, bary[k]);
+                    let cw = &tri_color[r as usize];
+                    let c = |ch: usize| to_u8((cw[0][ch] * ls[0] + cw[1][ch] * ls[1] + cw[2][ch] * ls[2]) * s);
                     *out = [c(0), c(1), c(2), c(3)];
                 }
                 Shading::Phong => {
-                    let w = barycentrics(setup, r, bary[k]);
-                    let v = tris[t.orig as usize];
-                    let p = verts.eye[v[0] as usize] * w[0]
-                        + verts.eye[v[1] as usize] * w[1]
-                        + verts.eye[v[2] as usize] * w[2];
-                    let nv = verts.normal[v[0] as usize] * w[0]
-                        + verts.normal[v[1] as usize] * w[1]
-                        + verts.normal[v[2] as usize] * w[2];
+                    let (ls, s) = screen_weights(t.inv_w, bary[k]);
+                    let (pw, nw) = (&tri_pos[r as usize], &tri_nrm[r as usize]);
+                    let p = (pw[0] * ls[0] + pw[1] * ls[1] + pw[2] * ls[2]) * s;
+                    let nv = (nw[0] * ls[0] + nw[1] * ls[1] + nw[2] * ls[2]) * s;
                     frags.pixel.push(k as u32);
                     frags.back.push(side == 1);
                     frags.pos.push(p);
