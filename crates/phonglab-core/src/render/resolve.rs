@@ -86,8 +86,9 @@ fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: 
     }
 }
 
+/// One band's Phong fragments.
 #[derive(Default)]
-struct Fragments {
+pub struct Fragments {
     pixel: Vec<u32>,
     back: Vec<bool>,
     pos: Vec<Vec3>,
@@ -128,7 +129,144 @@ pub(crate) fn original_barycentrics(setup: &Setup, image: &Image, i: usize) -> O
     (r != NO_TRIANGLE).then(|| barycentrics(setup, r, image.bary[i]))
 }
 
-/// Shades every covered pixel; returns the number of lighting evaluations made here.
+/// What every band's resolve shares, computed once per frame ([`prepare`]).
+pub struct Prepared {
+    bg: [u8; 4],
+    two: bool,
+    per_pixel: bool,
+    /// Flat: each face's colour in 8 bits, per side.
+    face8: [Vec<[u8; 4]>; 2],
+}
+
+/// The frame's shared resolve state; fills the per-triangle attributes in `scratch`.
+pub fn prepare(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: &mut Scratch, bands: usize) -> Prepared {
+    let bg = job.background.map(to_u8);
+    // Shadings that light each pixel: Phong, and Flat with the demo's derivative normals.
+    let per_pixel = job.shading == Shading::Phong
+        || (job.shading == Shading::Flat && job.flat_normal == FlatNormal::ScreenDerivatives);
+    scratch.bands.resize_with(bands, Fragments::default);
+    if job.shading != Shading::Flat || per_pixel {
+        triangle_attributes(job, verts, setup, scratch);
+    }
+    // Flat: each face's colour converted to 8 bits once.
+    let face8: [Vec<[u8; 4]>; 2] = if job.shading == Shading::Flat && !per_pixel {
+        [0, 1].map(|side| setup.face_color[side].iter().map(|c| c.map(to_u8)).collect())
+    } else {
+        [Vec::new(), Vec::new()]
+    };
+    Prepared { bg: [bg[0], bg[1], bg[2], 255], two: job.scene.light_model.two_sided, per_pixel, face8 }
+}
+
+/// The per-triangle attributes and the per-band fragment buffers, split so that each band
+/// borrows its own fragments while all share the attributes.
+pub fn split(scratch: &mut Scratch) -> (Shared<'_>, &mut [Fragments]) {
+    (Shared { tri_color: &scratch.tri_color, tri_pos: &scratch.tri_pos, tri_nrm: &scratch.tri_nrm }, &mut scratch.bands)
+}
+
+/// The per-triangle attributes, read by every band.
+pub struct Shared<'a> {
+    tri_color: &'a [[[f32; 4]; 3]],
+    tri_pos: &'a [[Vec3; 3]],
+    tri_nrm: &'a [[Vec3; 3]],
+}
+
+/// Shades one band: `px` its pixels, `raster` and `bary` its visibility buffer. Returns the
+/// lighting evaluations made (fragments lit).
+#[allow(clippy::too_many_arguments)]
+pub fn resolve_band(
+    job: &Job<'_>,
+    setup: &Setup,
+    lighter: &Lighter,
+    p: &Prepared,
+    shared: &Shared<'_>,
+    px: &mut [[u8; 4]],
+    raster: &[u32],
+    bary: &[[f32; 2]],
+    frags: &mut Fragments,
+) -> usize {
+    let (two, per_pixel, bg) = (p.two, p.per_pixel, p.bg);
+    let (tri_color, tri_pos, tri_nrm) = (shared.tri_color, shared.tri_pos, shared.tri_nrm);
+    frags.pixel.clear();
+    frags.back.clear();
+    frags.pos.clear();
+    frags.nrm.clear();
+    if per_pixel {
+        for v in [&mut frags.pos, &mut frags.nrm] {
+            v.reserve(px.len());
+        }
+        frags.pixel.reserve(px.len());
+        frags.back.reserve(px.len());
+    }
+    for (k, (out, &r)) in px.iter_mut().zip(raster).enumerate() {
+        if r == NO_TRIANGLE {
+            *out = bg;
+            continue;
+        }
+        let t = &setup.tris[r as usize];
+        let side = (t.back && two) as usize;
+        match job.shading {
+            Shading::Flat if per_pixel => {
+                let (ls, s) = screen_weights(t.inv_w, bary[k]);
+                let pw = &tri_pos[r as usize];
+                let p = (pw[0] * ls[0] + pw[1] * ls[1] + pw[2] * ls[2]) * s;
+                // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
+                let n = setup.face_normal[t.orig as usize];
+                frags.pixel.push(k as u32);
+                frags.back.push(side == 1);
+                frags.pos.push(p);
+                frags.nrm.push(if t.back { n } else { -n });
+            }
+            Shading::Flat => *out = p.face8[side][t.orig as usize],
+            Shading::Gouraud => {
+                let (ls, s) = screen_weights(t.inv_w, bary[k]);
+                let cw = &tri_color[r as usize];
+                let c = |ch: usize| to_u8((cw[0][ch] * ls[0] + cw[1][ch] * ls[1] + cw[2][ch] * ls[2]) * s);
+                *out = [c(0), c(1), c(2), c(3)];
+            }
+            Shading::Phong => {
+                let (ls, s) = screen_weights(t.inv_w, bary[k]);
+                let (pw, nw) = (&tri_pos[r as usize], &tri_nrm[r as usize]);
+                let p = (pw[0] * ls[0] + pw[1] * ls[1] + pw[2] * ls[2]) * s;
+                let nv = (nw[0] * ls[0] + nw[1] * ls[1] + nw[2] * ls[2]) * s;
+                frags.pixel.push(k as u32);
+                frags.back.push(side == 1);
+                frags.pos.push(p);
+                frags.nrm.push(nv);
+            }
+        }
+    }
+    if per_pixel && !frags.pixel.is_empty() {
+        let m = frags.pixel.len();
+        frags.front_out.resize(m, [0.0; 4]);
+        frags.back_out.resize(m, [0.0; 4]);
+        let back_out = if two { Some(&mut frags.back_out[..]) } else { None };
+        if job.shading == Shading::Phong {
+            // The interpolated normals are renormalised inside (in vectorised chunks).
+            lighter.light_batch_eye_sum_normalizing(&frags.pos, &frags.nrm, &mut frags.front_out, back_out);
+        } else {
+            // Face normals are unit already.
+            lighter.light_batch_eye_sum(&frags.pos, &frags.nrm, &mut frags.front_out, back_out);
+        }
+        for j in 0..m {
+            let c = if frags.back[j] { frags.back_out[j] } else { frags.front_out[j] };
+            px[frags.pixel[j] as usize] = c.map(to_u8);
+        }
+    }
+    frags.pixel.len()
+}
+
+/// The lighting evaluations a frame made in the resolve stage, given the fragments lit.
+pub fn evaluations(job: &Job<'_>, fragments: usize) -> usize {
+    match job.shading {
+        Shading::Phong => fragments,
+        Shading::Flat if job.flat_normal == FlatNormal::ScreenDerivatives => fragments,
+        Shading::Flat => job.mesh.triangles.len(),
+        Shading::Gouraud => 0,
+    }
+}
+
+/// Shades every covered pixel (band by band on all cores); returns the number of lighting
+/// evaluations made here.
 pub fn resolve(
     job: &Job<'_>,
     verts: &Vertices,
@@ -137,104 +275,31 @@ pub fn resolve(
     image: &mut Image,
     scratch: &mut Scratch,
 ) -> usize {
-    let width = image.width;
-    let rows = width * BAND;
-    let bg = job.background.map(to_u8);
-    let tris = &job.mesh.triangles;
-    let two = job.scene.light_model.two_sided;
-    // Shadings that light each pixel: Phong, and Flat with the demo's derivative normals.
-    let per_pixel = job.shading == Shading::Phong
-        || (job.shading == Shading::Flat && job.flat_normal == FlatNormal::ScreenDerivatives);
-    let bands = image.height.div_ceil(BAND);
-    scratch.bands.resize_with(bands, Fragments::default);
-    if job.shading != Shading::Flat || per_pixel {
-        triangle_attributes(job, verts, setup, scratch);
-    }
-    let (tri_color, tri_pos, tri_nrm) = (&scratch.tri_color, &scratch.tri_pos, &scratch.tri_nrm);
+    let rows = image.width * BAND;
+    let p = prepare(job, verts, setup, scratch, image.height.div_ceil(BAND));
+    let (shared, bands) = split(scratch);
     let (raster, bary) = (&image.raster, &image.bary);
-    // Flat: each face's colour converted to 8 bits once.
-    let face8: [Vec<[u8; 4]>; 2] = if job.shading == Shading::Flat && !per_pixel {
-        [0, 1].map(|side| setup.face_color[side].iter().map(|c| c.map(to_u8)).collect())
-    } else {
-        [Vec::new(), Vec::new()]
-    };
-    let bg = [bg[0], bg[1], bg[2], 255];
-    image.rgba.par_chunks_mut(rows * 4).zip(scratch.bands.par_iter_mut()).enumerate().for_each(|(b, (rgba, frags))| {
-        let start = b * rows;
-        let (px, _) = rgba.as_chunks_mut::<4>();
-        let raster = &raster[start..start + px.len()];
-        let bary = &bary[start..start + px.len()];
-        frags.pixel.clear();
-        frags.back.clear();
-        frags.pos.clear();
-        frags.nrm.clear();
-        if per_pixel {
-            for v in [&mut frags.pos, &mut frags.nrm] {
-                v.reserve(px.len());
-            }
-            frags.pixel.reserve(px.len());
-            frags.back.reserve(px.len());
-        }
-        for (k, (out, &r)) in px.iter_mut().zip(raster).enumerate() {
-            if r == NO_TRIANGLE {
-                *out = bg;
-                continue;
-            }
-            let t = &setup.tris[r as usize];
-            let side = (t.back && two) as usize;
-            match job.shading {
-                Shading::Flat if per_pixel => {
-                    let (ls, s) = screen_weights(t.inv_w, bary[k]);
-                    let pw = &tri_pos[r as usize];
-                    let p = (pw[0] * ls[0] + pw[1] * ls[1] + pw[2] * ls[2]) * s;
-                    // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
-                    let n = setup.face_normal[t.orig as usize];
-                    frags.pixel.push(k as u32);
-                    frags.back.push(side == 1);
-                    frags.pos.push(p);
-                    frags.nrm.push(if t.back { n } else { -n });
-                }
-                Shading::Flat => *out = face8[side][t.orig as usize],
-                Shading::Gouraud => {
-                    let (ls, s) = screen_weights(t.inv_w, bary[k]);
-                    let cw = &tri_color[r as usize];
-                    let c = |ch: usize| to_u8((cw[0][ch] * ls[0] + cw[1][ch] * ls[1] + cw[2][ch] * ls[2]) * s);
-                    *out = [c(0), c(1), c(2), c(3)];
-                }
-                Shading::Phong => {
-                    let (ls, s) = screen_weights(t.inv_w, bary[k]);
-                    let (pw, nw) = (&tri_pos[r as usize], &tri_nrm[r as usize]);
-                    let p = (pw[0] * ls[0] + pw[1] * ls[1] + pw[2] * ls[2]) * s;
-                    let nv = (nw[0] * ls[0] + nw[1] * ls[1] + nw[2] * ls[2]) * s;
-                    frags.pixel.push(k as u32);
-                    frags.back.push(side == 1);
-                    frags.pos.push(p);
-                    frags.nrm.push(nv);
-                }
-            }
-        }
-        if per_pixel && !frags.pixel.is_empty() {
-            let m = frags.pixel.len();
-            frags.front_out.resize(m, [0.0; 4]);
-            frags.back_out.resize(m, [0.0; 4]);
-            let back_out = if two { Some(&mut frags.back_out[..]) } else { None };
-            if job.shading == Shading::Phong {
-                // The interpolated normals are renormalised inside (in vectorised chunks).
-                lighter.light_batch_eye_sum_normalizing(&frags.pos, &frags.nrm, &mut frags.front_out, back_out);
-            } else {
-                // Face normals are unit already.
-                lighter.light_batch_eye_sum(&frags.pos, &frags.nrm, &mut frags.front_out, back_out);
-            }
-            for j in 0..m {
-                let c = if frags.back[j] { frags.back_out[j] } else { frags.front_out[j] };
-                px[frags.pixel[j] as usize] = c.map(to_u8);
-            }
-        }
-    });
-    match job.shading {
-        Shading::Phong => scratch.bands.iter().map(|f| f.pixel.len()).sum(),
-        Shading::Flat if per_pixel => scratch.bands.iter().map(|f| f.pixel.len()).sum(),
-        Shading::Flat => tris.len(),
-        Shading::Gouraud => 0,
-    }
+    let lit: usize = image
+        .rgba
+        .par_chunks_mut(rows * 4)
+        .zip(bands.par_iter_mut())
+        .enumerate()
+        .map(|(b, (rgba, frags))| {
+            let start = b * rows;
+            let (px, _) = rgba.as_chunks_mut::<4>();
+            let n = px.len();
+            resolve_band(
+                job,
+                setup,
+                lighter,
+                &p,
+                &shared,
+                px,
+                &raster[start..start + n],
+                &bary[start..start + n],
+                frags,
+            )
+        })
+        .sum();
+    evaluations(job, lit)
 }
