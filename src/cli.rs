@@ -31,6 +31,8 @@ pub enum Command {
     Explain(ExplainArgs),
     /// Render the shaded view (sphere, teapot or cylinder) to a PNG.
     Render(RenderArgs),
+    /// Write exercise sheets in the worksheet's style, with scene files and answer keys.
+    Exercise(crate::exercise_cmd::ExerciseArgs),
     /// Write scene files as glref cases (JSON), to check them against a real OpenGL with
     /// the Mesa harness (`glref.py CASES.json OUT.json`) or with `phonglab eval`.
     Case(CaseArgs),
@@ -257,6 +259,7 @@ pub fn run(command: Command) -> ExitCode {
     let r = match command {
         Command::Eval(a) => eval(&a),
         Command::Explain(a) => explain_cmd(&a),
+        Command::Exercise(a) => crate::exercise_cmd::run(&a),
         Command::Bench(b) => crate::bench::run(&b),
         Command::Render(a) => render(&a),
         Command::Case(a) => case(&a),

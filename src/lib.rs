@@ -5,5 +5,6 @@ pub mod bench;
 pub mod cli;
 pub mod cost_cmd;
 pub mod egui_cpu;
+pub mod exercise_cmd;
 pub mod image_io;
 pub mod scenes;

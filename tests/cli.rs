@@ -289,3 +289,57 @@ fn render_obj_shades_a_users_mesh_and_refuses_a_bad_one_with_its_line() {
         assert!(stderr(&o).contains(want), "{name}: {}", stderr(&o));
     }
 }
+
+fn read_dir_sorted(dir: &std::path::Path) -> Vec<(String, Vec<u8>)> {
+    let mut v: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .map(|p| (p.file_name().unwrap().to_string_lossy().into_owned(), std::fs::read(&p).unwrap()))
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn exercise_sheets_are_reproducible_and_their_keys_are_what_explain_prints() {
+    let base = std::env::temp_dir().join(format!("phonglab-ex-{}", std::process::id()));
+    let (a, b) = (base.join("a"), base.join("b"));
+    for out in [&a, &b] {
+        let o = phonglab(&[
+            "exercise",
+            "--seed",
+            "7",
+            "--count",
+            "4",
+            "--effects",
+            "attenuation,spot",
+            "--rules",
+            "worksheet",
+            "--worksheet",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+    }
+    let (fa, fb) = (read_dir_sorted(&a), read_dir_sorted(&b));
+    assert_eq!(fa.len(), 4 * 3 + 2 + 5 + 1, "{:?}", fa.iter().map(|f| &f.0).collect::<Vec<_>>());
+    assert_eq!(fa, fb, "the same seed gives the same files, byte for byte");
+
+    // Each key is explain's output on the exercise's own scene file.
+    for k in 1..=4 {
+        let toml = a.join(format!("exercise-{k:02}.toml"));
+        let explained = stdout(&phonglab(&["explain", toml.to_str().unwrap()]));
+        let key = std::fs::read_to_string(a.join(format!("exercise-{k:02}-key.md"))).unwrap();
+        let block = key.split("```\n").nth(1).unwrap();
+        assert_eq!(block, explained, "exercise {k}");
+        let sheet = std::fs::read_to_string(a.join(format!("exercise-{k:02}.md"))).unwrap();
+        assert!(sheet.contains("lightSpotDir") && sheet.contains("atQuad"), "the effects asked for: {sheet}");
+    }
+    // Exercise 0 is the worksheet, with the values it prints (mview5: I = [0.05958709 ...]).
+    let key0 = std::fs::read_to_string(a.join("exercise-00-key.md")).unwrap();
+    assert!(key0.contains("I = [0.059587089 0.035759287 0.015155245 0]"), "{key0}");
+    assert_eq!(key0.matches("Worked calculation:").count(), 5);
+
+    let o = phonglab(&["exercise", "--effects", "sparkles", "--out", base.join("c").to_str().unwrap()]);
+    assert!(!o.status.success() && stderr(&o).contains("sparkles"), "{}", stderr(&o));
+}

@@ -30,6 +30,7 @@ pub mod cost;
 pub mod document;
 pub mod error;
 pub mod exact_pow;
+pub mod exercise;
 pub mod explain;
 pub mod glref;
 pub mod library;

@@ -1,0 +1,470 @@
+//! Exercises in the worksheet's style: a scene drawn at random from "nice" numbers, screened
+//! so that no answer hinges on rounding, with its answer key.
+//!
+//! A draw takes integer coordinates, one of the 24 classic materials, a rotation by whole
+//! degrees about a coordinate axis and an integer translation, and attenuations and spot
+//! parameters from short lists. It is kept only when
+//!
+//! - the scene uses exactly the effects asked for, read off the specialised plan's
+//!   [`Key`] (so the check is the one the evaluator itself makes);
+//! - no step's value differs between f32 and f64 by more than 1e-6 (relative to the
+//!   value, for values above 1);
+//! - some light reaches the surface (an exercise of ambient terms alone is not worth doing);
+//! - it is not near a discontinuity: every |n·L| and every |n·H| at least 1e-3, every
+//!   light at least 1e-3 from the vertex, and the vertex at least 1e-3 (in cosine) from a
+//!   spotlight's cone edge;
+//!
+//! and otherwise drawn again. The random numbers are SplitMix64, so a seed gives the same
+//! exercises on every machine.
+
+use glam::{DMat4, DVec3, DVec4};
+
+use crate::camera::CameraSpec;
+use crate::document::Document;
+use crate::explain::{Explanation, Side, explain};
+use crate::lighting::{Engine, EvalOptions};
+use crate::materials;
+use crate::plan::Key;
+use crate::rules::Rules;
+use crate::scene::{Light, LightModel, LightPlacement, NormalMode, Scene, Vertex};
+
+/// An effect an exercise can be asked to use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Effect {
+    /// A positional light (w = 1): L and d vary with the vertex.
+    Positional,
+    /// Attenuation other than (1, 0, 0) on a positional light.
+    Attenuation,
+    /// A spotlight.
+    Spot,
+    /// A local viewer.
+    LocalViewer,
+    /// Two-sided lighting.
+    TwoSided,
+    /// More than one light.
+    SeveralLights,
+}
+
+impl Effect {
+    /// Every effect, in the order of the difficulty levels.
+    pub const ALL: [Effect; 6] = [
+        Effect::Positional,
+        Effect::Attenuation,
+        Effect::Spot,
+        Effect::LocalViewer,
+        Effect::TwoSided,
+        Effect::SeveralLights,
+    ];
+
+    /// The name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Effect::Positional => "positional",
+            Effect::Attenuation => "attenuation",
+            Effect::Spot => "spot",
+            Effect::LocalViewer => "local-viewer",
+            Effect::TwoSided => "two-sided",
+            Effect::SeveralLights => "several-lights",
+        }
+    }
+
+    /// The effect named `s`.
+    pub fn parse(s: &str) -> Option<Effect> {
+        Effect::ALL.into_iter().find(|e| e.name() == s.trim())
+    }
+
+    /// The effects a scene uses, read off its key.
+    pub fn of_key(key: &Key) -> Vec<Effect> {
+        let mut out = Vec::new();
+        let any = |f: &dyn Fn(&crate::plan::LightKey) -> bool| key.lights.iter().any(f);
+        if any(&|l| l.positional) {
+            out.push(Effect::Positional);
+        }
+        if any(&|l| l.attenuated) {
+            out.push(Effect::Attenuation);
+        }
+        if any(&|l| l.spot) {
+            out.push(Effect::Spot);
+        }
+        if key.local_viewer {
+            out.push(Effect::LocalViewer);
+        }
+        if key.two_sided {
+            out.push(Effect::TwoSided);
+        }
+        if key.lights.len() > 1 {
+            out.push(Effect::SeveralLights);
+        }
+        out
+    }
+}
+
+/// The difficulty levels: each adds to the one before.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Level {
+    /// One directional light, infinite viewer.
+    Directional = 1,
+    /// One positional light with attenuation.
+    Positional = 2,
+    /// A positional, attenuated spotlight.
+    Spotlight = 3,
+    /// Two or three lights, two-sided lighting, a local viewer.
+    TwoSidedSeveral = 4,
+}
+
+impl Level {
+    /// The level numbered `n` (1 to 4).
+    pub fn from_number(n: u8) -> Option<Level> {
+        [Level::Directional, Level::Positional, Level::Spotlight, Level::TwoSidedSeveral]
+            .get(n.checked_sub(1)? as usize)
+            .copied()
+    }
+
+    /// The effects of the level.
+    pub fn effects(self) -> Vec<Effect> {
+        match self {
+            Level::Directional => vec![],
+            Level::Positional => vec![Effect::Positional, Effect::Attenuation],
+            Level::Spotlight => vec![Effect::Positional, Effect::Attenuation, Effect::Spot],
+            Level::TwoSidedSeveral => vec![
+                Effect::Positional,
+                Effect::Attenuation,
+                Effect::LocalViewer,
+                Effect::TwoSided,
+                Effect::SeveralLights,
+            ],
+        }
+    }
+}
+
+/// SplitMix64: small, fast, and the same on every machine.
+#[derive(Clone, Debug)]
+pub struct Rng(u64);
+
+impl Rng {
+    /// A generator from `seed`.
+    pub fn new(seed: u64) -> Rng {
+        Rng(seed)
+    }
+
+    /// The next 64 random bits.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// An integer in `lo..=hi`.
+    pub fn int(&mut self, lo: i64, hi: i64) -> i64 {
+        lo + (self.next_u64() % (hi - lo + 1) as u64) as i64
+    }
+
+    /// One of `items`.
+    pub fn pick<T: Copy>(&mut self, items: &[T]) -> T {
+        items[self.next_u64() as usize % items.len()]
+    }
+
+    /// A non-zero integer vector with components in `-k..=k`.
+    fn int_vec(&mut self, k: i64) -> DVec3 {
+        loop {
+            let v = DVec3::new(self.int(-k, k) as f64, self.int(-k, k) as f64, self.int(-k, k) as f64);
+            if v != DVec3::ZERO {
+                return v;
+            }
+        }
+    }
+}
+
+/// What to generate.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Spec {
+    /// Exactly these effects (sorted, no repeats).
+    pub effects: Vec<Effect>,
+    /// The rules the answers follow.
+    pub rules: Rules,
+}
+
+impl Spec {
+    /// A level's effects under `rules`.
+    pub fn level(level: Level, rules: Rules) -> Spec {
+        Spec { effects: level.effects(), rules }
+    }
+}
+
+/// One exercise: its scene and its answer key.
+#[derive(Clone, Debug)]
+pub struct Exercise {
+    /// The scene, with a description of its modelview as its camera.
+    pub doc: Document,
+    /// The modelview in words, e.g. "rotate 30 degrees about y, then translate (0, 0, -40)".
+    pub modelview: String,
+    /// The worked calculation in f64: the answer key.
+    pub key: Explanation,
+    /// Draws rejected before this one was kept (by the screen).
+    pub redraws: usize,
+}
+
+/// A rotation about axis `axis` (0 x, 1 y, 2 z) by `degrees`, then a translation.
+fn modelview(axis: usize, degrees: i64, t: DVec3) -> DMat4 {
+    let a = (degrees as f64).to_radians();
+    let r = match axis {
+        0 => DMat4::from_rotation_x(a),
+        1 => DMat4::from_rotation_y(a),
+        _ => DMat4::from_rotation_z(a),
+    };
+    DMat4::from_translation(t) * r
+}
+
+/// One draw for `spec` (not yet screened).
+fn draw(rng: &mut Rng, spec: &Spec) -> (Scene, String) {
+    let has = |e: Effect| spec.effects.contains(&e);
+    let axis = rng.int(0, 2) as usize;
+    let degrees = rng.pick(&[0, 15, 20, 30, 45, 60, -30, -45, 90]);
+    let t = DVec3::new(0.0, 0.0, -(rng.int(2, 8) * 10) as f64);
+    let m = modelview(axis, degrees, t);
+    let words =
+        format!("rotate {degrees} degrees about {}, then translate ({}, {}, {})", ["x", "y", "z"][axis], t.x, t.y, t.z);
+    let named = &materials::classic()[rng.int(0, 23) as usize];
+    let lights_n = if has(Effect::SeveralLights) { rng.int(2, 3) as usize } else { 1 };
+    let vertex_pos = rng.int_vec(10);
+    // The normal faces the viewer's side in object space, so the surface is usually lit.
+    let normal = rng.int_vec(2);
+    let mut lights = Vec::new();
+    for i in 0..lights_n {
+        let positional = has(Effect::Positional) && (i == 0 || rng.int(0, 1) == 1);
+        let position = if positional {
+            // Somewhere in front of the vertex, along its normal.
+            (vertex_pos + normal.normalize() * rng.int(10, 30) as f64 + rng.int_vec(8)).round().extend(1.0)
+        } else {
+            (normal.normalize() * 4.0 + rng.int_vec(2)).round().extend(0.0)
+        };
+        let attenuation = if has(Effect::Attenuation) && positional {
+            rng.pick(&[[1.0, 0.01, 0.0], [1.0, 0.0, 0.001], [1.0, 0.01, 0.001], [0.5, 0.02, 0.0]])
+        } else {
+            [1.0, 0.0, 0.0]
+        };
+        let gray = |v: f64| DVec4::new(v, v, v, 1.0);
+        let mut l = Light {
+            ambient: gray(rng.pick(&[0.0, 0.2, 0.5, 1.0])),
+            diffuse: gray(rng.pick(&[0.5, 0.8, 1.0])),
+            specular: gray(rng.pick(&[0.5, 1.0])),
+            position: if position.w == 0.0 && position.truncate() == DVec3::ZERO { DVec4::Z } else { position },
+            attenuation,
+            placement: LightPlacement::World,
+            ..Light::gl_default(i)
+        };
+        if has(Effect::Spot) && positional && i == 0 {
+            // Aimed near the vertex, the cone wide enough to hold it.
+            let aim = (vertex_pos - l.position.truncate() + rng.int_vec(2)).round();
+            l.spot_direction = if aim == DVec3::ZERO { -DVec3::Z } else { aim };
+            l.spot_cutoff = rng.pick(&[20.0, 30.0, 45.0, 60.0]);
+            l.spot_exponent = rng.pick(&[0.0, 2.0, 5.0, 10.0, 20.0]);
+        }
+        lights.push(l);
+    }
+    let scene = Scene {
+        light_model: LightModel {
+            ambient: DVec4::new(0.2, 0.2, 0.2, 1.0),
+            local_viewer: has(Effect::LocalViewer),
+            two_sided: has(Effect::TwoSided),
+            separate_specular: false,
+        },
+        lights,
+        material: named.material.clone(),
+        back_material: None,
+        eye_from_world: m,
+        world_from_object: DMat4::IDENTITY,
+        normal_mode: NormalMode::Normalize,
+        rules: spec.rules,
+        vertex: Vertex { position: vertex_pos.extend(1.0), normal },
+    };
+    (scene, format!("{words}; material {}", named.name))
+}
+
+/// Why a draw is not kept (`None`: it is).
+pub fn screen(scene: &Scene, spec: &Spec) -> Option<String> {
+    let mut want = spec.effects.clone();
+    want.sort();
+    want.dedup();
+    let key = Key::of(scene, EvalOptions::default());
+    let mut got = Effect::of_key(&key);
+    got.sort();
+    if got != want {
+        return Some(format!("uses {got:?}, not {want:?}"));
+    }
+    let e64 = match Engine::<f64>::new(scene) {
+        Ok(e) => e.light(&scene.vertex),
+        Err(e) => return Some(format!("refused: {e}")),
+    };
+    let e32 = match Engine::<f32>::new(scene) {
+        Ok(e) => e.light(&scene.vertex),
+        Err(e) => return Some(format!("refused: {e}")),
+    };
+    if !e64.all_limits().is_empty() {
+        return Some("a limit was taken".into());
+    }
+    let sides: &[Side] = if scene.light_model.two_sided { &[Side::Front, Side::Back] } else { &[Side::Front] };
+    for &side in sides {
+        let (a, b) = (explain(scene, &e64, side), explain(scene, &e32, side));
+        for (sa, sb) in a.steps.iter().zip(&b.steps) {
+            match (&sa.value, &sb.value) {
+                (Some(x), Some(y)) => {
+                    for (p, q) in x.iter().zip(y) {
+                        if !p.is_finite() || (p - q).abs() > 1e-6 * p.abs().max(1.0) {
+                            return Some(format!("{}: f32 and f64 differ ({p} against {q})", sa.name));
+                        }
+                    }
+                }
+                (None, None) => {}
+                _ => return Some(format!("{}: defined in one precision only", sa.name)),
+            }
+        }
+    }
+    // Near a discontinuity?
+    for t in e64.lights() {
+        for side in [&t.front, &t.back].into_iter().take(sides.len()) {
+            if side.n_dot_l.abs() < 1e-3 {
+                return Some("n.L within 1e-3 of 0".into());
+            }
+            if side.spec_cos.abs() < 1e-3 {
+                return Some("the specular cosine within 1e-3 of 0".into());
+            }
+        }
+    }
+    // Worth doing: some light reaches the side explained (or, two-sided, either side).
+    let lit = e64.lights().iter().any(|t| t.front.n_dot_l > 0.0 || (sides.len() > 1 && t.back.n_dot_l > 0.0));
+    if !lit {
+        return Some("unlit: no light reaches the surface".into());
+    }
+    let p = e64.pos_in_eye;
+    for l in &scene.lights {
+        let lp = scene.light_pos_in_eye(l);
+        if lp.w != 0.0 && (lp.truncate() / lp.w - p).length() < 1e-3 {
+            return Some("a light within 1e-3 of the vertex".into());
+        }
+        if l.is_spot() && lp.w != 0.0 {
+            let dir = (scene.eye_from_light(l).transform_vector3(l.spot_direction)).normalize();
+            let to_vertex = (p - lp.truncate() / lp.w).normalize();
+            if (dir.dot(to_vertex) - l.spot_cutoff.to_radians().cos()).abs() < 1e-3 {
+                return Some("the vertex within 1e-3 of the cone's edge".into());
+            }
+            if dir.dot(to_vertex) < l.spot_cutoff.to_radians().cos() {
+                return Some("the vertex outside the cone (no light to compute)".into());
+            }
+        }
+    }
+    None
+}
+
+/// The most draws made for one exercise before giving up.
+pub const MAX_DRAWS: usize = 10_000;
+
+/// `count` exercises from `seed`, numbered from 1.
+pub fn generate(seed: u64, count: usize, spec: &Spec) -> Result<Vec<Exercise>, String> {
+    let mut rng = Rng::new(seed);
+    let mut out = Vec::new();
+    for k in 1..=count {
+        let mut redraws = 0;
+        loop {
+            let (scene, words) = draw(&mut rng, spec);
+            if screen(&scene, spec).is_none() {
+                let doc = Document::from_scene(
+                    &format!("exercise {k} (seed {seed})"),
+                    CameraSpec::Matrix(scene.eye_from_world),
+                    scene,
+                );
+                let lit = Engine::<f64>::new(&doc.scene).map_err(|e| e.to_string())?.light(&doc.scene.vertex);
+                let key = explain(&doc.scene, &lit, Side::Front);
+                out.push(Exercise { doc, modelview: words, key, redraws });
+                break;
+            }
+            redraws += 1;
+            if redraws >= MAX_DRAWS {
+                return Err(format!(
+                    "exercise {k}: no scene with {:?} passed the screen in {MAX_DRAWS} draws",
+                    spec.effects
+                ));
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// A number as the sheet prints it: 8 significant digits, no trailing zeros.
+fn num(x: f64) -> String {
+    crate::explain::fmt_sig(x, 8)
+}
+
+fn vec4(v: DVec4) -> String {
+    crate::explain::fmt_value(&[v.x, v.y, v.z, v.w], 8)
+}
+
+/// The exercise sheet, in the worksheet's style: the givens under the worksheet's names,
+/// then the steps to compute, each with a blank.
+pub fn sheet_markdown(ex: &Exercise) -> String {
+    use std::fmt::Write as _;
+    let s = &ex.doc.scene;
+    let mut o = String::new();
+    let _ = writeln!(o, "# {}\n", ex.doc.name);
+    let rules = match s.rules.set {
+        crate::rules::RuleSet::Worksheet => "the worksheet's (no scene ambient, no emission, M itself for normals)",
+        crate::rules::RuleSet::OpenGl => "OpenGL 2.1's fixed function",
+        crate::rules::RuleSet::PhongDemo => "the Phong demo's shader",
+    };
+    let _ = writeln!(o, "Compute the colour of the vertex step by step, under {rules} rules.\n");
+    let _ = writeln!(o, "## The vertex\n");
+    let _ = writeln!(o, "- vertexPos = {}", vec4(s.vertex.position));
+    let _ = writeln!(o, "- vertexNormal = {}\n", vec4(s.vertex.normal.extend(0.0)));
+    let _ = writeln!(o, "## The modelview\n");
+    let (words, material) = ex.modelview.split_once("; material ").unwrap_or((&ex.modelview, ""));
+    let _ = writeln!(o, "{words}:\n\n```");
+    let rows = crate::transform::mat4_rows(&s.eye_from_world);
+    for r in rows {
+        let _ = writeln!(o, "[{}]", r.iter().map(|x| format!("{:>12}", num(*x))).collect::<Vec<_>>().join(" "));
+    }
+    let _ = writeln!(o, "```\n");
+    for (i, l) in s.lights.iter().enumerate() {
+        let _ = writeln!(o, "## Light {i}\n");
+        let what = if l.position.w == 0.0 { "direction (w = 0)" } else { "position" };
+        let _ = writeln!(
+            o,
+            "- lightPos = {} ({what}, in world coordinates: transform it by the modelview)",
+            vec4(l.position)
+        );
+        let _ = writeln!(o, "- Lamb = {}, Ldif = {}, Lspec = {}", vec4(l.ambient), vec4(l.diffuse), vec4(l.specular));
+        if l.position.w != 0.0 {
+            let [c, k1, k2] = l.attenuation;
+            let _ = writeln!(o, "- atC = {}, atLin = {}, atQuad = {}", num(c), num(k1), num(k2));
+        }
+        if l.is_spot() {
+            let _ = writeln!(
+                o,
+                "- lightSpotDir = {}, spotCutoff = {} degrees, spotCoef = {}",
+                vec4(l.spot_direction.extend(0.0)),
+                num(l.spot_cutoff),
+                num(l.spot_exponent)
+            );
+        }
+        let _ = writeln!(o);
+    }
+    let m = &s.material;
+    let _ = writeln!(o, "## Material{}\n", if material.is_empty() { String::new() } else { format!(": {material}") });
+    let _ = writeln!(o, "- matAmb = {}", vec4(m.ambient));
+    let _ = writeln!(o, "- matDif = {}", vec4(m.diffuse));
+    let _ = writeln!(o, "- matSpec = {}", vec4(m.specular));
+    let _ = writeln!(o, "- ns = {}\n", num(m.shininess));
+    let _ = writeln!(o, "## The light model\n");
+    let lm = &s.light_model;
+    let _ = writeln!(o, "- local viewer: {}", lm.local_viewer);
+    let _ = writeln!(o, "- two-sided lighting: {}", lm.two_sided);
+    if s.rules.scene_ambient() {
+        let _ = writeln!(o, "- scene ambient = {}", vec4(lm.ambient));
+    }
+    let _ = writeln!(o, "\n## Compute\n");
+    for (k, st) in ex.key.steps.iter().enumerate() {
+        let _ = writeln!(o, "{}. {}: `{}` = ________", k + 1, st.title, st.name);
+    }
+    o
+}

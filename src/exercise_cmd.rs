@@ -1,0 +1,159 @@
+//! `phonglab exercise`: exercise sheets in the worksheet's style, each with its scene file
+//! and its answer key (the worked calculation `phonglab explain` prints for that file).
+//!
+//! For exercise k (numbered from 1; 0 is the worksheet itself, with `--worksheet`) it
+//! writes `exercise-KK.md` (the sheet), `exercise-KK-key.md` (the answers) and
+//! `exercise-KK.toml` (the scene, which the app and every command open), and `index.md`
+//! listing them. The same seed gives the same files, byte for byte.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result, bail};
+use clap::Args;
+use phonglab_core::exercise::{Effect, Exercise, Level, Spec, generate, sheet_markdown};
+use phonglab_core::explain::{Side, explain};
+use phonglab_core::{Document, Engine, Rules};
+
+/// `phonglab exercise`.
+#[derive(Args, Debug)]
+pub struct ExerciseArgs {
+    /// The random seed: the same seed gives the same sheets.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// How many exercises.
+    #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub count: u32,
+    /// Difficulty: 1 directional only, 2 positional with attenuation, 3 spotlights, 4
+    /// two-sided with several lights.
+    #[arg(long, value_parser = clap::value_parser!(u8).range(1..=4), conflicts_with = "effects")]
+    pub level: Option<u8>,
+    /// Exactly these effects instead of a level (comma-separated): positional,
+    /// attenuation, spot, local-viewer, two-sided, several-lights.
+    #[arg(long, value_delimiter = ',')]
+    pub effects: Vec<String>,
+    /// The rules the answers follow: worksheet or opengl.
+    #[arg(long, default_value = "worksheet")]
+    pub rules: String,
+    /// Also write exercise 0: the worksheet itself, its five modelviews on one sheet.
+    #[arg(long)]
+    pub worksheet: bool,
+    /// The folder to write to (created if missing).
+    #[arg(long, default_value = "sheets")]
+    pub out: PathBuf,
+}
+
+/// The answer key: what `phonglab explain FILE` prints (and `--back` with two-sided
+/// lighting), in a code block.
+pub fn answer_key(doc: &Document, file: &str) -> Result<String> {
+    let lit = Engine::<f64>::light_scene_vertex(&doc.scene)?;
+    let mut o =
+        format!("# Answers: {}\n\nAs `phonglab explain {file}` prints them (8 significant digits).\n\n", doc.name);
+    let sides: &[Side] = if doc.scene.light_model.two_sided { &[Side::Front, Side::Back] } else { &[Side::Front] };
+    for &side in sides {
+        let ex = explain(&doc.scene, &lit, side);
+        let _ = writeln!(o, "```\nWorked calculation: {}\n{}```\n", doc.name, ex.to_text(8));
+    }
+    Ok(o)
+}
+
+fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
+    let rules = match a.rules.as_str() {
+        "worksheet" => Rules::WORKSHEET,
+        "opengl" => Rules::OPENGL,
+        other => bail!("--rules {other:?}: try worksheet or opengl"),
+    };
+    if !a.effects.is_empty() {
+        let mut effects = Vec::new();
+        for e in &a.effects {
+            let Some(x) = Effect::parse(e) else {
+                let names: Vec<&str> = Effect::ALL.iter().map(|e| e.name()).collect();
+                bail!("--effects: {e:?} is not one of {}", names.join(", "));
+            };
+            effects.push(x);
+        }
+        // Attenuation and spotlights exist only on positional lights.
+        if effects.iter().any(|e| matches!(e, Effect::Attenuation | Effect::Spot))
+            && !effects.contains(&Effect::Positional)
+        {
+            effects.push(Effect::Positional);
+        }
+        effects.sort();
+        effects.dedup();
+        return Ok(Spec { effects, rules });
+    }
+    let level = Level::from_number(a.level.unwrap_or(2)).context("--level is 1 to 4")?;
+    Ok(Spec::level(level, rules))
+}
+
+fn write(path: &Path, text: &str) -> Result<()> {
+    std::fs::write(path, text).with_context(|| format!("cannot write {}", path.display()))
+}
+
+/// The worksheet as exercise 0: its five modelviews, one sheet, with the values it prints.
+fn worksheet_sheet(out: &Path) -> Result<String> {
+    let mut sheet = String::from(
+        "# Exercise 0: the worksheet\n\nThe worksheet's own scene (bronze, the light at (0, 0, 90), the vertex (-512, -384, 0) with normal (0, 0, 1)) under each of its five modelviews, `mview1` to `mview5`. Compute every step for each.\n\n",
+    );
+    let mut key = String::from("# Answers: the worksheet\n\n");
+    for k in 1..=5u8 {
+        let doc = phonglab_core::library::documents()
+            .into_iter()
+            .map(|(_, d)| d)
+            .find(|d| d.camera == phonglab_core::CameraSpec::Worksheet(k))
+            .context("the worksheet's documents")?;
+        let file = format!("exercise-00-mview{k}.toml");
+        write(&out.join(&file), &doc.to_toml()?)?;
+        let rows = phonglab_core::transform::mat4_rows(&doc.scene.eye_from_world);
+        let _ = writeln!(sheet, "## mview{k} ({file})\n\n```");
+        for r in rows {
+            let _ = writeln!(sheet, "[{}]", r.map(|x| phonglab_core::explain::fmt_sig(x, 8)).join(" "));
+        }
+        let _ = writeln!(sheet, "```\n");
+        key.push_str(&answer_key(&doc, &file)?.replace("# Answers: ", "## "));
+    }
+    write(&out.join("exercise-00.md"), &sheet)?;
+    write(&out.join("exercise-00-key.md"), &key)?;
+    Ok("- [Exercise 0: the worksheet](exercise-00.md) ([answers](exercise-00-key.md))\n".into())
+}
+
+/// Writes the exercises; returns them.
+pub fn write_exercises(a: &ExerciseArgs) -> Result<Vec<Exercise>> {
+    let spec = spec_of(a)?;
+    let exercises = generate(a.seed, a.count as usize, &spec).map_err(|e| anyhow::anyhow!(e))?;
+    std::fs::create_dir_all(&a.out).with_context(|| format!("cannot create {}", a.out.display()))?;
+    let names: Vec<&str> = spec.effects.iter().map(|e| e.name()).collect();
+    let mut index = format!(
+        "# Exercises, seed {}\n\nEffects: {}. Rules: {}. Each sheet has its scene file (open it in phonglab) and its answers.\n\n",
+        a.seed,
+        if names.is_empty() { "one directional light only".to_string() } else { names.join(", ") },
+        a.rules
+    );
+    if a.worksheet {
+        index.push_str(&worksheet_sheet(&a.out)?);
+    }
+    for (i, ex) in exercises.iter().enumerate() {
+        let stem = format!("exercise-{:02}", i + 1);
+        let toml = format!("{stem}.toml");
+        write(&a.out.join(&toml), &ex.doc.to_toml()?)?;
+        let sheet = format!("{}\nScene file: `{toml}`.\n", sheet_markdown(ex));
+        write(&a.out.join(format!("{stem}.md")), &sheet)?;
+        write(&a.out.join(format!("{stem}-key.md")), &answer_key(&ex.doc, &toml)?)?;
+        let _ = writeln!(index, "- [{}]({stem}.md) ([answers]({stem}-key.md))", ex.doc.name);
+    }
+    write(&a.out.join("index.md"), &index)?;
+    Ok(exercises)
+}
+
+/// Runs `phonglab exercise`.
+pub fn run(a: &ExerciseArgs) -> Result<()> {
+    let ex = write_exercises(a)?;
+    let redraws: usize = ex.iter().map(|e| e.redraws).sum();
+    eprintln!(
+        "{} exercises in {} ({} draws set aside by the screen)",
+        ex.len() + a.worksheet as usize,
+        a.out.display(),
+        redraws
+    );
+    Ok(())
+}
