@@ -3,8 +3,8 @@
 //!
 //! For exercise k (numbered from 1; 0 is the worksheet itself, with `--worksheet`) it
 //! writes `exercise-KK.md` (the sheet), `exercise-KK-key.md` (the answers) and
-//! `exercise-KK.toml` (the scene, which the app and every command open), and `index.md`
-//! listing them. The same seed gives the same files, byte for byte.
+//! `exercise-KK.toml` (the scene, which the app and every command open), `index.md`
+//! listing them, and `exercises.pdf`, every sheet and key ready to print. The same seed gives the same files, byte for byte.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -117,6 +117,55 @@ fn worksheet_sheet(out: &Path) -> Result<String> {
     Ok("- [Exercise 0: the worksheet](exercise-00.md) ([answers](exercise-00-key.md))\n".into())
 }
 
+/// Lines of at most `width` characters (longer ones wrapped at spaces where possible).
+fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut out = Vec::new();
+    for line in text.lines() {
+        let mut rest = line.trim_end().to_string();
+        loop {
+            if rest.chars().count() <= width {
+                out.push(rest);
+                break;
+            }
+            let cut: String = rest.chars().take(width).collect();
+            let at = cut.rfind(' ').filter(|i| *i > width / 3).unwrap_or(cut.len());
+            out.push(rest[..at].to_string());
+            rest = format!("      {}", rest[at..].trim_start());
+        }
+    }
+    out
+}
+
+/// A printable PDF of `documents` (each starts on a new page): A4, 9-point Hack (the
+/// monospaced font egui ships, embedded and subset), so the numbers line up as in the
+/// worksheet. No dates or random ids: the same input gives the same bytes.
+pub fn pdf(documents: &[String]) -> Result<Vec<u8>> {
+    use krilla::geom::Point;
+    use krilla::page::PageSettings;
+    use krilla::text::{Font, TextDirection};
+    let font = Font::new(epaint_default_fonts::HACK_REGULAR.to_vec().into(), 0).context("the embedded font")?;
+    let (w, h, margin, size, lead) = (595.0f32, 842.0f32, 48.0f32, 9.0f32, 12.0f32);
+    let per_page = ((h - 2.0 * margin) / lead) as usize;
+    let mut doc = krilla::Document::new();
+    for text in documents {
+        let lines = wrap(text, 88);
+        for chunk in lines.chunks(per_page) {
+            let settings = PageSettings::from_wh(w, h).context("A4")?;
+            let mut page = doc.start_page_with(settings);
+            let mut surface = page.surface();
+            for (i, line) in chunk.iter().enumerate() {
+                if !line.is_empty() {
+                    let y = margin + size + i as f32 * lead;
+                    surface.draw_text(Point::from_xy(margin, y), font.clone(), size, line, false, TextDirection::Auto);
+                }
+            }
+            surface.finish();
+            page.finish();
+        }
+    }
+    doc.finish().map_err(|e| anyhow::anyhow!("cannot write the PDF: {e:?}"))
+}
+
 /// Writes the exercises; returns them.
 pub fn write_exercises(a: &ExerciseArgs) -> Result<Vec<Exercise>> {
     let spec = spec_of(a)?;
@@ -129,8 +178,12 @@ pub fn write_exercises(a: &ExerciseArgs) -> Result<Vec<Exercise>> {
         if names.is_empty() { "one directional light only".to_string() } else { names.join(", ") },
         a.rules
     );
+    let mut printable = Vec::new();
     if a.worksheet {
         index.push_str(&worksheet_sheet(&a.out)?);
+        for f in ["exercise-00.md", "exercise-00-key.md"] {
+            printable.push(std::fs::read_to_string(a.out.join(f))?);
+        }
     }
     for (i, ex) in exercises.iter().enumerate() {
         let stem = format!("exercise-{:02}", i + 1);
@@ -138,10 +191,16 @@ pub fn write_exercises(a: &ExerciseArgs) -> Result<Vec<Exercise>> {
         write(&a.out.join(&toml), &ex.doc.to_toml()?)?;
         let sheet = format!("{}\nScene file: `{toml}`.\n", sheet_markdown(ex));
         write(&a.out.join(format!("{stem}.md")), &sheet)?;
-        write(&a.out.join(format!("{stem}-key.md")), &answer_key(&ex.doc, &toml)?)?;
+        let key = answer_key(&ex.doc, &toml)?;
+        write(&a.out.join(format!("{stem}-key.md")), &key)?;
+        printable.push(sheet);
+        printable.push(key);
         let _ = writeln!(index, "- [{}]({stem}.md) ([answers]({stem}-key.md))", ex.doc.name);
     }
+    let _ = writeln!(index, "\nPrintable: [exercises.pdf](exercises.pdf) (each sheet, then its answers).");
     write(&a.out.join("index.md"), &index)?;
+    let bytes = pdf(&printable)?;
+    std::fs::write(a.out.join("exercises.pdf"), bytes).context("cannot write exercises.pdf")?;
     Ok(exercises)
 }
 

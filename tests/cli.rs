@@ -343,3 +343,41 @@ fn exercise_sheets_are_reproducible_and_their_keys_are_what_explain_prints() {
     let o = phonglab(&["exercise", "--effects", "sparkles", "--out", base.join("c").to_str().unwrap()]);
     assert!(!o.status.success() && stderr(&o).contains("sparkles"), "{}", stderr(&o));
 }
+
+#[test]
+fn the_pdf_renders_and_holds_every_answer() {
+    let out = std::env::temp_dir().join(format!("phonglab-expdf-{}", std::process::id()));
+    let o = phonglab(&[
+        "exercise",
+        "--seed",
+        "5",
+        "--count",
+        "3",
+        "--level",
+        "4",
+        "--worksheet",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let pdf = out.join("exercises.pdf");
+    let ppm = Command::new("pdftoppm")
+        .args(["-r", "30", "-png", "-f", "1", "-l", "1"])
+        .arg(&pdf)
+        .arg(out.join("page"))
+        .output();
+    let ppm = ppm.expect("pdftoppm (poppler-utils) is installed by scripts/test");
+    assert!(ppm.status.success(), "{}", String::from_utf8_lossy(&ppm.stderr));
+    let text = Command::new("pdftotext").arg(&pdf).arg("-").output().expect("pdftotext");
+    let text = String::from_utf8_lossy(&text.stdout).into_owned();
+    let mut values = 0;
+    for k in 0..=3 {
+        let key = std::fs::read_to_string(out.join(format!("exercise-{k:02}-key.md"))).unwrap();
+        for line in key.lines().filter(|l| l.starts_with("    ") && l.contains(" = ")) {
+            let value = line.trim();
+            assert!(text.contains(value), "exercise {k}: {value:?} is not in the PDF's text");
+            values += 1;
+        }
+    }
+    assert!(values > 100, "{values} answers checked");
+}
