@@ -40,6 +40,7 @@ pub mod mesh;
 pub mod plan;
 pub mod pow;
 pub mod presets;
+pub mod quiz;
 pub mod real;
 pub mod render;
 pub mod robust;

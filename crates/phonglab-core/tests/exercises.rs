@@ -108,3 +108,21 @@ fn the_screen_refuses_what_hinges_on_rounding() {
     let why = screen(&s, &spec);
     assert!(why.as_deref().is_some_and(|w| w.contains("differ")), "{why:?}");
 }
+
+#[test]
+fn every_keys_own_answers_check_right_with_carried_forward_inputs() {
+    use phonglab_core::quiz::{check, score};
+    for seed in 0..200u64 {
+        let level = Level::from_number((seed % 4) as u8 + 1).unwrap();
+        let rules = if seed % 2 == 0 { Rules::OPENGL } else { Rules::WORKSHEET };
+        let ex = &generate(seed, 1, &Spec::level(level, rules)).unwrap()[0];
+        let answers: Vec<Option<Vec<f64>>> = ex.key.steps.iter().map(|s| s.value.clone()).collect();
+        for k in 0..ex.key.steps.len() {
+            if let Some(v) = check(&ex.doc.scene, &ex.key, &answers, k) {
+                assert!(v.right, "seed {seed} step {} {}: key {:?}, recomputed {:?}", k + 1, ex.key.steps[k].name, ex.key.steps[k].value, v.expected);
+            }
+        }
+        let (right, answered, all) = score(&ex.doc.scene, &ex.key, &answers);
+        assert_eq!((right, answered), (all, all), "seed {seed}");
+    }
+}
