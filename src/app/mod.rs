@@ -12,6 +12,7 @@ pub mod layout;
 pub mod lobe;
 pub mod palette;
 pub mod persist;
+pub mod quiz;
 pub mod result;
 pub mod shaded;
 pub mod state;
@@ -122,6 +123,15 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         ui.menu_button("Presets", |ui| presets_menu_ui(ui, state));
         ui.toggle_value(&mut state.compare.open, "Compare")
             .on_hover_text("Pin the scene as A, change anything, and see A and B side by side");
+        if ui
+            .toggle_value(&mut state.quiz.open, "Quiz")
+            .on_hover_text("Every value of the calculation behind a field: type them step by step")
+            .clicked()
+            && state.quiz.open
+            && state.quiz.doc.is_none()
+        {
+            state.quiz.start(state.doc.clone());
+        }
         if state.ui.layout.presenting {
             ui.label(egui::RichText::new(&state.doc.name).weak());
             return;
@@ -283,6 +293,10 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
         .default_size(layout::Layout::calculation_width(width) * if presenting { 1.25 } else { 1.0 })
         .min_size(260.0)
         .show_collapsible(ui, &mut open, |ui| {
+            if state.quiz.open {
+                quiz::quiz_ui(ui, &mut state.quiz, &state.doc);
+                return;
+            }
             let two_sided = state.doc.scene.light_model.two_sided;
             let key =
                 phonglab_core::plan::Key::of(&state.doc.scene, phonglab_core::EvalOptions::with_pow(state.ui.pow));
@@ -417,6 +431,9 @@ impl eframe::App for PhongLabApp {
             storage.set_string(persist::DOCUMENT_KEY, text);
         }
         storage.set_string(layout::LAYOUT_KEY, self.state.ui.layout.to_ron());
+        if let Some(q) = self.state.quiz.to_ron() {
+            storage.set_string(quiz::QUIZ_KEY, q);
+        }
     }
 }
 

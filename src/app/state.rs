@@ -112,6 +112,8 @@ pub struct AppState {
     pub cost: super::cost::CostState,
     /// Compare: the pinned scene A and its views.
     pub compare: super::compare::CompareState,
+    /// Quiz mode: the exercise and the student's answers.
+    pub quiz: super::quiz::QuizState,
 }
 
 /// The colours of one side, as f64.

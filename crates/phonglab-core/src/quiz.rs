@@ -51,11 +51,14 @@ pub struct Verdict {
     /// The step's formula.
     pub formula: String,
     /// The inputs used: (name, value, whether it is the student's own).
-    pub inputs: Vec<(String, Vec<f64>, bool)>,
+    pub inputs: Vec<Input>,
 }
 
 /// The student's answers, one per step of the key (`None`: not given or not numbers).
 pub type Answers = [Option<Vec<f64>>];
+
+/// An input a step took: its name, its value, and whether it is the student's own.
+pub type Input = (String, Vec<f64>, bool);
 
 fn v3(v: &[f64]) -> DVec3 {
     DVec3::new(v.first().copied().unwrap_or(0.0), v.get(1).copied().unwrap_or(0.0), v.get(2).copied().unwrap_or(0.0))
@@ -67,8 +70,17 @@ fn dir4(v: DVec3) -> Vec<f64> {
 
 /// Finds the step of `kind` for `light` (or the vertex) and the value to use for it: the
 /// student's when given, otherwise the key's.
-fn input(key: &Explanation, answers: &Answers, kind: StepKind, light: Option<usize>) -> Option<(String, Vec<f64>, bool)> {
-    let (k, st) = key.steps.iter().enumerate().find(|(_, s)| s.kind == kind && (s.light == light || light.is_none() && s.light.is_none()))?;
+fn input(
+    key: &Explanation,
+    answers: &Answers,
+    kind: StepKind,
+    light: Option<usize>,
+) -> Option<(String, Vec<f64>, bool)> {
+    let (k, st) = key
+        .steps
+        .iter()
+        .enumerate()
+        .find(|(_, s)| s.kind == kind && (s.light == light || light.is_none() && s.light.is_none()))?;
     match answers.get(k).cloned().flatten() {
         Some(v) => Some((st.name.clone(), v, true)),
         None => st.value.clone().map(|v| (st.name.clone(), v, false)),
@@ -77,7 +89,7 @@ fn input(key: &Explanation, answers: &Answers, kind: StepKind, light: Option<usi
 
 /// What step `k` should be, given the student's earlier answers, with the inputs used.
 /// `None` when the step has no value (e.g. d for a directional light).
-pub fn expected(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -> Option<(Vec<f64>, Vec<(String, Vec<f64>, bool)>)> {
+pub fn expected(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -> Option<(Vec<f64>, Vec<Input>)> {
     let st: &Step = key.steps.get(k)?;
     let keyed = st.value.clone()?;
     let li = st.light;
@@ -157,7 +169,12 @@ pub fn expected(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -
             let amb = get(StepKind::Ambient, li)?;
             let dif = get(StepKind::Diffuse, li)?;
             let spe = get(StepKind::Specular, li).unwrap_or_else(|| vec![0.0; 4]);
-            Some((0..3).map(|i| spot * (amb[i] + dif[i] + spe[i]) / at).chain([keyed.get(3).copied().unwrap_or(0.0)]).collect())
+            Some(
+                (0..3)
+                    .map(|i| spot * (amb[i] + dif[i] + spe[i]) / at)
+                    .chain([keyed.get(3).copied().unwrap_or(0.0)])
+                    .collect(),
+            )
         }
         StepKind::Primary => {
             let mut sum = [0.0f64; 3];

@@ -119,7 +119,14 @@ fn every_keys_own_answers_check_right_with_carried_forward_inputs() {
         let answers: Vec<Option<Vec<f64>>> = ex.key.steps.iter().map(|s| s.value.clone()).collect();
         for k in 0..ex.key.steps.len() {
             if let Some(v) = check(&ex.doc.scene, &ex.key, &answers, k) {
-                assert!(v.right, "seed {seed} step {} {}: key {:?}, recomputed {:?}", k + 1, ex.key.steps[k].name, ex.key.steps[k].value, v.expected);
+                assert!(
+                    v.right,
+                    "seed {seed} step {} {}: key {:?}, recomputed {:?}",
+                    k + 1,
+                    ex.key.steps[k].name,
+                    ex.key.steps[k].value,
+                    v.expected
+                );
             }
         }
         let (right, answered, all) = score(&ex.doc.scene, &ex.key, &answers);
