@@ -278,3 +278,21 @@ fn the_quiz_checks_each_step_and_carries_a_slip_forward() {
     h.get_by_label_contains("does not read as numbers");
     h.get_by_label_contains("(3 answered)");
 }
+
+#[test]
+fn a_new_exercise_is_generated_shown_and_quizzed() {
+    let mut h = harness_at(1440.0, 900.0);
+    h.get_by_label("Quiz").click();
+    h.run_steps(2);
+    let before = h.state().doc.clone();
+    h.get_by_label("New exercise").click();
+    h.run_steps(3);
+    let doc = h.state().doc.clone();
+    assert_ne!(doc, before, "the app shows the exercise");
+    assert_eq!(h.state().quiz.doc.as_ref(), Some(&doc), "and quizzes it");
+    assert!(doc.name.starts_with("exercise 1 (seed"), "{}", doc.name);
+    // Level 2 by default: a positional, attenuated light, as the plan's key reads it.
+    let key = phonglab_core::plan::Key::of(&doc.scene, phonglab_core::EvalOptions::default());
+    assert!(key.lights[0].positional && key.lights[0].attenuated);
+    h.get_by_label_contains("Score: 0 of");
+}

@@ -294,7 +294,10 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
         .min_size(260.0)
         .show_collapsible(ui, &mut open, |ui| {
             if state.quiz.open {
-                quiz::quiz_ui(ui, &mut state.quiz, &state.doc);
+                if let Some(doc) = quiz::quiz_ui(ui, &mut state.quiz, &state.doc) {
+                    let name = doc.name.clone();
+                    state.load(doc, &name);
+                }
                 return;
             }
             let two_sided = state.doc.scene.light_model.two_sided;

@@ -25,6 +25,10 @@ pub struct QuizState {
     pub checked: Vec<bool>,
     /// The step's value is shown (the teacher revealed it).
     pub revealed: Vec<bool>,
+    /// The level of "New exercise" (1 to 4).
+    pub level: u8,
+    /// The seed of the last generated exercise.
+    pub seed: u64,
 }
 
 /// What is kept across restarts.
@@ -42,7 +46,20 @@ pub const QUIZ_KEY: &str = "phonglab.quiz.ron";
 impl QuizState {
     /// Starts a quiz on `doc`, with no answers.
     pub fn start(&mut self, doc: Document) {
-        *self = QuizState { open: true, doc: Some(doc), ..Default::default() };
+        let (level, seed) = (self.level, self.seed);
+        *self = QuizState { open: true, doc: Some(doc), level, seed, ..Default::default() };
+    }
+
+    /// Generates an exercise of `self.level` from `seed` (the worksheet's rules) and starts
+    /// a quiz on it; returns its document, or why not.
+    pub fn new_exercise(&mut self, seed: u64) -> Result<Document, String> {
+        use phonglab_core::exercise::{Level, Spec, generate};
+        let level = Level::from_number(self.level.clamp(1, 4)).ok_or("no such level")?;
+        let ex = generate(seed, 1, &Spec::level(level, phonglab_core::Rules::WORKSHEET))?;
+        let doc = ex.into_iter().next().ok_or("no exercise")?.doc;
+        self.seed = seed;
+        self.start(doc.clone());
+        Ok(doc)
     }
 
     /// The quiz as stored (`None`: nothing started).
@@ -61,7 +78,15 @@ impl QuizState {
     pub fn from_ron(text: &str) -> Option<QuizState> {
         let s: Saved = ron::from_str(text).ok()?;
         let doc = Document::from_toml(&s.doc).ok()?;
-        Some(QuizState { open: false, doc: Some(doc), answers: s.answers, checked: s.checked, revealed: s.revealed })
+        Some(QuizState {
+            open: false,
+            doc: Some(doc),
+            answers: s.answers,
+            checked: s.checked,
+            revealed: s.revealed,
+            level: 2,
+            seed: 0,
+        })
     }
 
     /// The answer key (front side, f64).
@@ -98,17 +123,33 @@ fn inputs_text(v: &Verdict) -> String {
     if list.is_empty() { "the givens".into() } else { list.join(", ") }
 }
 
-/// The quiz panel; `current` is the scene the app shows (a quiz can start on it).
-pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) {
+/// The quiz panel; `current` is the scene the app shows (a quiz can start on it). Returns a
+/// generated exercise for the app to show.
+pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<Document> {
+    let mut shown = None;
     ui.horizontal_wrapped(|ui| {
         ui.heading("Quiz");
         if ui.button("Quiz this scene").on_hover_text("Start over on the scene shown, every value hidden").clicked() {
             quiz.start(current.clone());
         }
+        // Level 2 (positional with attenuation) until one is chosen.
+        quiz.level = if quiz.level == 0 { 2 } else { quiz.level.clamp(1, 4) };
+        let l = ui.label("Level");
+        ui.add(egui::DragValue::new(&mut quiz.level).range(1..=4)).labelled_by(l.id).on_hover_text(
+            "1 directional only, 2 positional with attenuation, 3 spotlights, 4 two-sided with several lights",
+        );
+        if ui
+            .button("New exercise")
+            .on_hover_text("A new scene of this level, screened as phonglab exercise screens")
+            .clicked()
+        {
+            let seed = quiz.seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407) >> 16;
+            shown = quiz.new_exercise(seed).ok();
+        }
     });
     let Some(key) = quiz.key() else {
-        ui.label("Open an exercise (phonglab exercise writes them) or any scene, then press \"Quiz this scene\".");
-        return;
+        ui.label("Open an exercise (phonglab exercise writes them) or any scene, then press \"Quiz this scene\", or press New exercise.");
+        return shown;
     };
     quiz.fit(key.steps.len());
     let scene = &quiz.doc.as_ref().map(|d| d.name.clone()).unwrap_or_default();
@@ -170,6 +211,7 @@ pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) {
             ui.add_space(4.0);
         }
     });
+    shown
 }
 
 #[cfg(test)]
