@@ -33,6 +33,8 @@ pub enum Command {
     Render(RenderArgs),
     /// Write exercise sheets in the worksheet's style, with scene files and answer keys.
     Exercise(crate::exercise_cmd::ExerciseArgs),
+    /// Print the shader (GLSL 3.30 or WGSL) a scene compiles to: only the stages it needs.
+    Shader(ShaderArgs),
     /// Write scene files as glref cases (JSON), to check them against a real OpenGL with
     /// the Mesa harness (`glref.py CASES.json OUT.json`) or with `phonglab eval`.
     Case(CaseArgs),
@@ -121,6 +123,42 @@ pub enum ShadingArg {
     Phong,
     /// One evaluation per face.
     Flat,
+}
+
+/// `phonglab shader`.
+#[derive(Args, Debug)]
+pub struct ShaderArgs {
+    /// A scene file (default: the worksheet's, mview5).
+    #[arg(long)]
+    pub scene: Option<PathBuf>,
+    /// glsl (3.30 core: a vertex and a fragment shader) or wgsl (one module).
+    #[arg(long, default_value = "glsl")]
+    pub lang: String,
+    /// gouraud (lit per vertex) or phong (lit per fragment).
+    #[arg(long, default_value = "gouraud")]
+    pub shading: String,
+}
+
+fn shader_cmd(a: &ShaderArgs) -> Result<()> {
+    use phonglab_core::shader::{Lang, ShaderShading, generate};
+    let doc = match &a.scene {
+        Some(p) => load_scene_file(p)?,
+        None => phonglab_core::Document::default(),
+    };
+    let lang = match a.lang.as_str() {
+        "glsl" => Lang::Glsl,
+        "wgsl" => Lang::Wgsl,
+        other => bail!("--lang {other:?}: try glsl or wgsl"),
+    };
+    let shading = match a.shading.as_str() {
+        "gouraud" => ShaderShading::Gouraud,
+        "phong" => ShaderShading::Phong,
+        other => bail!("--shading {other:?}: try gouraud or phong"),
+    };
+    let lit = Engine::<f64>::light_scene_vertex(&doc.scene)?;
+    let ex = explain(&doc.scene, &lit, Side::Front);
+    print!("{}", generate(&doc.scene, EvalOptions::default(), &ex, lang, shading).text(lang));
+    Ok(())
 }
 
 /// `phonglab render`.
@@ -260,6 +298,7 @@ pub fn run(command: Command) -> ExitCode {
         Command::Eval(a) => eval(&a),
         Command::Explain(a) => explain_cmd(&a),
         Command::Exercise(a) => crate::exercise_cmd::run(&a),
+        Command::Shader(a) => shader_cmd(&a),
         Command::Bench(b) => crate::bench::run(&b),
         Command::Render(a) => render(&a),
         Command::Case(a) => case(&a),

@@ -168,6 +168,8 @@ pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<
         }
     });
     ui.separator();
+    // Again: "Clear answers" just above starts the quiz over, with no fields.
+    quiz.fit(key.steps.len());
     let ok = palette::ink(ui, egui::Color32::from_rgb(80, 200, 120));
     let bad = palette::ink(ui, palette::ERROR);
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {

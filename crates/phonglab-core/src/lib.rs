@@ -47,6 +47,7 @@ pub mod robust;
 pub mod rules;
 pub mod scene;
 pub mod shaded;
+pub mod shader;
 pub mod specialised;
 pub mod transform;
 pub mod validate;

@@ -1,0 +1,518 @@
+//! The shader a scene compiles to: GLSL 3.30 and WGSL generated from the specialised
+//! plan's stage list ([`Program`]), as Mesa's `ffvertex_prog.c` builds a vertex program
+//! from the fixed-function state.
+//!
+//! Only the stages the scene's key calls for appear: no cone test without a spotlight, no
+//! attenuation at (1, 0, 0), a constant L and H for a directional light under an infinite
+//! viewer, no power at shininess 0. Values a slider moves without changing the key (light
+//! positions and colours, the material, attenuation factors) are uniforms; what the key
+//! fixes (how many lights, which are positional, the rules) is folded into the code. Each
+//! line carries the number of the worked calculation's step it computes.
+//!
+//! Gouraud lights in the vertex shader and interpolates the colour; Phong passes the
+//! eye-space position and normal and lights each fragment. Colours are clamped as OpenGL
+//! clamps vertex colours (the Phong demo's rules do not).
+
+use std::fmt::Write as _;
+
+use crate::explain::{Explanation, StepKind};
+use crate::lighting::{EvalOptions, Renormalize};
+use crate::plan::{Key, Program, SourceKind, Stage};
+use crate::rules::{NormalTransform, SpecularGate, SpecularModel};
+use crate::scene::Scene;
+
+/// The shading language.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lang {
+    /// GLSL `#version 330 core`.
+    Glsl,
+    /// WGSL (WebGPU).
+    Wgsl,
+}
+
+/// Where the lighting runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShaderShading {
+    /// Per vertex, the colour interpolated.
+    Gouraud,
+    /// Per fragment, the position and normal interpolated.
+    Phong,
+}
+
+/// A generated program: the vertex stage and, for Phong, the fragment stage (for Gouraud,
+/// a fragment stage that writes the interpolated colour).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Shader {
+    /// The vertex shader.
+    pub vertex: String,
+    /// The fragment shader.
+    pub fragment: String,
+}
+
+impl Shader {
+    /// Both stages, one after the other, as `phonglab shader` prints them. WGSL keeps both
+    /// entry points in one module, so it is printed once.
+    pub fn text(&self, lang: Lang) -> String {
+        match lang {
+            Lang::Glsl => {
+                format!("// ---- vertex shader ----\n{}\n// ---- fragment shader ----\n{}", self.vertex, self.fragment)
+            }
+            Lang::Wgsl => self.vertex.clone(),
+        }
+    }
+}
+
+/// Syntax per language.
+struct Syn {
+    lang: Lang,
+}
+
+impl Syn {
+    fn vec3(&self) -> &'static str {
+        if self.lang == Lang::Glsl { "vec3" } else { "vec3<f32>" }
+    }
+    fn vec4(&self) -> &'static str {
+        if self.lang == Lang::Glsl { "vec4" } else { "vec4<f32>" }
+    }
+    /// A new variable.
+    fn var(&self, ty: &str, name: &str, e: &str) -> String {
+        match self.lang {
+            Lang::Glsl => format!("{ty} {name} = {e};"),
+            Lang::Wgsl => format!("var {name}: {} = {e};", self.wty(ty)),
+        }
+    }
+    fn wty(&self, ty: &str) -> String {
+        match ty {
+            "float" => "f32".into(),
+            "bool" => "bool".into(),
+            "vec3" => "vec3<f32>".into(),
+            "vec4" => "vec4<f32>".into(),
+            other => other.into(),
+        }
+    }
+    /// A uniform's reference.
+    fn u(&self, name: &str) -> String {
+        match self.lang {
+            Lang::Glsl => format!("u_{name}"),
+            Lang::Wgsl => format!("u.{name}"),
+        }
+    }
+    /// `c ? a : b`.
+    fn select(&self, c: &str, a: &str, b: &str) -> String {
+        match self.lang {
+            Lang::Glsl => format!("(({c}) ? ({a}) : ({b}))"),
+            Lang::Wgsl => format!("select({b}, {a}, {c})"),
+        }
+    }
+}
+
+/// The worked calculation's number of the first step of `kind` (for `light`).
+fn step_no(ex: &Explanation, kind: StepKind, light: Option<usize>) -> String {
+    match ex.steps.iter().position(|s| s.kind == kind && (light.is_none() || s.light == light)) {
+        Some(k) => format!("step {}", k + 1),
+        None => "".into(),
+    }
+}
+
+/// One uniform: name and GLSL type.
+type Uniform = (String, &'static str);
+
+/// The lighting code for the stages of `program` (statements, each with its step), writing
+/// `color_front` (and `color_back` when two-sided); the uniforms it reads are added to
+/// `uniforms`.
+fn lighting(
+    scene: &Scene,
+    key: &Key,
+    program: &Program,
+    ex: &Explanation,
+    s: &Syn,
+    uniforms: &mut Vec<Uniform>,
+) -> Vec<String> {
+    let mut o: Vec<String> = Vec::new();
+    let (v3, v4) = (s.vec3(), s.vec4());
+    let mut uni = |name: String, ty: &'static str| {
+        if !uniforms.iter().any(|(n, _)| *n == name) {
+            uniforms.push((name.clone(), ty));
+        }
+        s.u(&name)
+    };
+    let sides = if key.two_sided { 2 } else { 1 };
+    let gate = scene.rules.specular_gate();
+    for side in 0..sides {
+        o.push(s.var("vec3", &format!("sum{side}"), &format!("{v3}(0.0)")));
+    }
+    for stage in &program.stages {
+        let at = |k: StepKind, l: Option<usize>| format!("// {}", step_no(ex, k, l));
+        match *stage {
+            Stage::TransformNormal | Stage::TransformPosition | Stage::RescaleNormal => {}
+            Stage::NormalizeNormal | Stage::NormalizeNormalFast => {
+                o.push(format!("N = normalize(N); {}", at(StepKind::Normal, None)));
+            }
+            Stage::ZeroNormals => {
+                o.push(format!(
+                    "{} // a zero normal has no direction: no diffuse, no specular",
+                    s.var("bool", "n_ok", "dot(N, N) > 0.0")
+                ));
+            }
+            Stage::ViewVector => {
+                let e =
+                    if key.local_viewer { "normalize(-P)".to_string() } else { format!("{v3}(0.0, 0.0, -sign(P.z))") };
+                o.push(format!("{} {} (V)", s.var("vec3", "V", &e), at(StepKind::V, None)));
+            }
+            Stage::LightVector(i) => {
+                let p = uni(format!("light{i}_position"), "vec4");
+                o.push(format!(
+                    "{} {}",
+                    s.var("vec3", &format!("toL{i}"), &format!("{p}.xyz / {p}.w - P")),
+                    at(StepKind::L, Some(i))
+                ));
+                o.push(format!(
+                    "{} {} (d)",
+                    s.var("float", &format!("d{i}"), &format!("length(toL{i})")),
+                    at(StepKind::Distance, Some(i))
+                ));
+                o.push(format!(
+                    "{} {} (L)",
+                    s.var("vec3", &format!("L{i}"), &format!("toL{i} / d{i}")),
+                    at(StepKind::L, Some(i))
+                ));
+            }
+            Stage::LightConstant(i) => {
+                let l = uni(format!("light{i}_direction"), "vec3");
+                o.push(format!(
+                    "{} {} (directional: one L for every vertex)",
+                    s.var("vec3", &format!("L{i}"), &l),
+                    at(StepKind::L, Some(i))
+                ));
+            }
+            Stage::Attenuate(i) => {
+                let k = uni(format!("light{i}_attenuation"), "vec3");
+                o.push(format!(
+                    "{} {}",
+                    s.var("float", &format!("att{i}"), &format!("1.0 / ({k}.x + {k}.y * d{i} + {k}.z * d{i} * d{i})")),
+                    at(StepKind::Attenuation, Some(i))
+                ));
+            }
+            Stage::SpotCone(i) => {
+                let dir = uni(format!("light{i}_spot_direction"), "vec3");
+                let cut = uni(format!("light{i}_spot_cos_cutoff"), "float");
+                o.push(format!(
+                    "{} {} (spot cosine)",
+                    s.var("float", &format!("spot_cos{i}"), &format!("dot(-L{i}, normalize({dir}))")),
+                    at(StepKind::Spot, Some(i))
+                ));
+                o.push(format!(
+                    "{} {} (the cone test)",
+                    s.var("bool", &format!("in_cone{i}"), &format!("spot_cos{i} >= {cut}")),
+                    at(StepKind::Spot, Some(i))
+                ));
+            }
+            Stage::SpotPower(i) => {
+                let ex_ = uni(format!("light{i}_spot_exponent"), "float");
+                let pw = s.select(&format!("in_cone{i}"), &format!("pow(max(spot_cos{i}, 0.0), {ex_})"), "0.0");
+                o.push(format!("{} {}", s.var("float", &format!("spot{i}"), &pw), at(StepKind::Spot, Some(i))));
+            }
+            Stage::Halfway(i) => {
+                let v = if key.per_vertex_view { "V".to_string() } else { format!("{v3}(0.0, 0.0, 1.0)") };
+                o.push(format!(
+                    "{} {}",
+                    s.var("vec3", &format!("H{i}"), &format!("normalize(L{i} + {v})")),
+                    at(StepKind::H, Some(i))
+                ));
+            }
+            Stage::HalfwayConstant(i) => {
+                let h = uni(format!("light{i}_halfway"), "vec3");
+                o.push(format!(
+                    "{} {} (one H: directional light, infinite viewer)",
+                    s.var("vec3", &format!("H{i}"), &h),
+                    at(StepKind::H, Some(i))
+                ));
+            }
+            Stage::Reflect(i) => {
+                let dot = if scene.rules.reflect_clamped() {
+                    format!("max(dot(N, L{i}), 0.0)")
+                } else {
+                    format!("dot(N, L{i})")
+                };
+                o.push(format!(
+                    "{} {}",
+                    s.var("vec3", &format!("R{i}"), &format!("2.0 * {dot} * N - L{i}")),
+                    at(StepKind::R, Some(i))
+                ));
+            }
+            Stage::DiffuseCosine(i, side) => {
+                let n = if side == 1 { "-N" } else { "N" };
+                o.push(format!(
+                    "{} {}",
+                    s.var("float", &format!("ndl{i}_{side}"), &format!("dot({n}, L{i})")),
+                    at(StepKind::CosTheta, Some(i))
+                ));
+            }
+            Stage::SpecularCosine(i, side) => {
+                let n = if side == 1 { "-N" } else { "N" };
+                let e = match scene.rules.specular {
+                    SpecularModel::BlinnPhong => format!("dot({n}, H{i})"),
+                    SpecularModel::Phong => {
+                        let v = if key.per_vertex_view { "V".to_string() } else { format!("{v3}(0.0, 0.0, 1.0)") };
+                        format!("dot(R{i}, {v})")
+                    }
+                };
+                o.push(format!(
+                    "{} {}",
+                    s.var("float", &format!("spec_cos{i}_{side}"), &e),
+                    at(StepKind::CosBeta, Some(i))
+                ));
+            }
+            Stage::Power(i, side) => {
+                let m = if side == 1 && scene.back_material.is_some() { "back" } else { "mat" };
+                let sh = uni(format!("{m}_shininess"), "float");
+                let cond = match gate {
+                    SpecularGate::LitSide => format!("ndl{i}_{side} > 0.0"),
+                    SpecularGate::PositiveCosine => format!("spec_cos{i}_{side} > 0.0"),
+                    SpecularGate::None => "true".into(),
+                };
+                let e = s.select(&cond, &format!("pow(max(spec_cos{i}_{side}, 0.0), {sh})"), "0.0");
+                o.push(format!("{} {}", s.var("float", &format!("pf{i}_{side}"), &e), at(StepKind::Specular, Some(i))));
+            }
+            Stage::Sum(i, side) => {
+                let m = if side == 1 && scene.back_material.is_some() { "back" } else { "mat" };
+                let l = key.lights[i];
+                let (la, ld, ls) = (
+                    uni(format!("light{i}_ambient"), "vec3"),
+                    uni(format!("light{i}_diffuse"), "vec3"),
+                    uni(format!("light{i}_specular"), "vec3"),
+                );
+                let (ma, md) = (uni(format!("{m}_ambient"), "vec3"), uni(format!("{m}_diffuse"), "vec4"));
+                let mut terms = format!("{la} * {ma} + {ld} * {md}.xyz * max(ndl{i}_{side}, 0.0)");
+                if l.specular {
+                    let ms = uni(format!("{m}_specular"), "vec3");
+                    // The power (or 1 at shininess 0) where the gate lets it through.
+                    let pf = if program.has(Stage::Power(i, side)) {
+                        format!("pf{i}_{side}")
+                    } else {
+                        let cond = match gate {
+                            SpecularGate::LitSide => format!("ndl{i}_{side} > 0.0"),
+                            SpecularGate::PositiveCosine => format!("spec_cos{i}_{side} > 0.0"),
+                            SpecularGate::None => "true".into(),
+                        };
+                        s.select(&cond, "1.0", "0.0")
+                    };
+                    terms.push_str(&format!(" + {ls} * {ms} * {pf}"));
+                }
+                let mut scale = String::new();
+                if program.has(Stage::Attenuate(i)) {
+                    scale.push_str(&format!("att{i} * "));
+                }
+                if program.has(Stage::SpotPower(i)) {
+                    scale.push_str(&format!("spot{i} * "));
+                }
+                let lit = if program.has(Stage::ZeroNormals) {
+                    s.select("n_ok", &format!("{scale}({terms})"), &format!("{scale}({la} * {ma})"))
+                } else {
+                    format!("{scale}({terms})")
+                };
+                o.push(format!("sum{side} = sum{side} + {lit}; {}", at(StepKind::Contribution, Some(i))));
+            }
+            Stage::SceneColor => {
+                let c = uni("scene_color".into(), "vec3");
+                for side in 0..sides {
+                    o.push(format!(
+                        "sum{side} = sum{side} + {c}; {} (emission + scene ambient)",
+                        at(StepKind::SceneAmbient, None)
+                    ));
+                }
+            }
+        }
+    }
+    let clamp = scene.rules.clamps_vertex_colors();
+    for side in 0..sides {
+        let m = if side == 1 && scene.back_material.is_some() { "back" } else { "mat" };
+        let md = uni(format!("{m}_diffuse"), "vec4");
+        let rgb = if clamp { format!("clamp(sum{side}, {v3}(0.0), {v3}(1.0))") } else { format!("sum{side}") };
+        o.push(format!(
+            "{} // {} (alpha: the diffuse alpha)",
+            s.var("vec4", &format!("color{side}"), &format!("{v4}({rgb}, {md}.w)")),
+            step_no(ex, StepKind::Primary, None)
+        ));
+    }
+    o
+}
+
+/// The prologue that brings N and P to eye space from object space (Gouraud's vertex
+/// shader), for the stages the program has.
+fn prologue(
+    scene: &Scene,
+    key: &Key,
+    program: &Program,
+    ex: &Explanation,
+    s: &Syn,
+    uniforms: &mut Vec<Uniform>,
+) -> Vec<String> {
+    let mut o = Vec::new();
+    let by_m = scene.rules.normal_transform() == NormalTransform::Modelview;
+    uniforms.push(("normal_matrix".into(), "mat3"));
+    let (nm, mv) = (s.u("normal_matrix"), s.u("eye_from_object"));
+    let what = if by_m { "the worksheet: M itself" } else { "(M^-1)^T" };
+    let n_in = if s.lang == Lang::Glsl { "a_normal" } else { "input.normal" };
+    let p_in = if s.lang == Lang::Glsl { "a_position" } else { "input.position" };
+    o.push(format!(
+        "{} // {} ({what})",
+        s.var("vec3", "N", &format!("{nm} * {n_in}")),
+        step_no(ex, StepKind::Normal, None)
+    ));
+    if program.has(Stage::RescaleNormal) {
+        uniforms.push(("rescale".into(), "float"));
+        o.push(format!("N = {} * N; // {} (GL_RESCALE_NORMAL)", s.u("rescale"), step_no(ex, StepKind::Normal, None)));
+    }
+    if program.has(Stage::TransformPosition) || program.has(Stage::ViewVector) {
+        let v4 = s.vec4();
+        o.push(format!(
+            "{} // {}",
+            s.var("vec4", "Ph", &format!("{mv} * {v4}({p_in}, 1.0)")),
+            step_no(ex, StepKind::Position, None)
+        ));
+        o.push(s.var("vec3", "P", "Ph.xyz / Ph.w"));
+    }
+    o
+}
+
+/// The uniform declarations.
+fn declare(s: &Syn, uniforms: &[Uniform]) -> String {
+    let mut d = String::new();
+    match s.lang {
+        Lang::Glsl => {
+            for (n, t) in uniforms {
+                let _ = writeln!(d, "uniform {t} u_{n};");
+            }
+        }
+        Lang::Wgsl => {
+            let _ = writeln!(d, "struct Uniforms {{");
+            for (n, t) in uniforms {
+                let ty = match *t {
+                    "mat4" => "mat4x4<f32>".to_string(),
+                    "mat3" => "mat3x3<f32>".to_string(),
+                    other => s.wty(other),
+                };
+                let _ = writeln!(d, "    {n}: {ty},");
+            }
+            let _ = writeln!(d, "}};\n@group(0) @binding(0) var<uniform> u: Uniforms;");
+        }
+    }
+    d
+}
+
+fn indent(lines: &[String]) -> String {
+    lines.iter().map(|l| format!("    {l}\n")).collect()
+}
+
+/// Generates the program for `scene` (its key under `options`), with step numbers taken
+/// from `ex` (the scene's worked calculation).
+pub fn generate(scene: &Scene, options: EvalOptions, ex: &Explanation, lang: Lang, shading: ShaderShading) -> Shader {
+    let key = Key::of(scene, options);
+    let s = Syn { lang };
+    let header = |what: &str| {
+        format!(
+            "// phonglab: {what}, {} shading, generated from the specialised plan.\n// Only the stages this scene's key calls for; comments give the worked calculation's steps.\n",
+            match shading {
+                ShaderShading::Gouraud => "Gouraud",
+                ShaderShading::Phong => "Phong",
+            }
+        )
+    };
+    let mut uniforms: Vec<Uniform> = vec![("clip_from_object".into(), "mat4"), ("eye_from_object".into(), "mat4")];
+    match shading {
+        ShaderShading::Gouraud => {
+            let program = Program::compile(&key, SourceKind::Object);
+            let mut body = prologue(scene, &key, &program, ex, &s, &mut uniforms);
+            body.extend(lighting(scene, &key, &program, ex, &s, &mut uniforms));
+            let two = key.two_sided;
+            let stages: Vec<String> = program.stages.iter().map(|st| format!("{st:?}")).collect();
+            let list = format!("// The program: {}\n", stages.join(" > "));
+            match lang {
+                Lang::Glsl => {
+                    let outs = if two { "out vec4 v_front;\nout vec4 v_back;\n" } else { "out vec4 v_front;\n" };
+                    let store =
+                        if two { "    v_front = color0;\n    v_back = color1;\n" } else { "    v_front = color0;\n" };
+                    let vertex = format!(
+                        "#version 330 core\n{}{list}layout(location = 0) in vec3 a_position;\nlayout(location = 1) in vec3 a_normal;\n{}{outs}\nvoid main() {{\n{}{store}    gl_Position = u_clip_from_object * vec4(a_position, 1.0);\n}}\n",
+                        header("the vertex lighting"),
+                        declare(&s, &uniforms),
+                        indent(&body)
+                    );
+                    let pick = if two { "gl_FrontFacing ? v_front : v_back" } else { "v_front" };
+                    let ins = if two { "in vec4 v_front;\nin vec4 v_back;\n" } else { "in vec4 v_front;\n" };
+                    let fragment = format!(
+                        "#version 330 core\n{ins}out vec4 frag_color;\n\nvoid main() {{\n    frag_color = {pick};\n}}\n"
+                    );
+                    Shader { vertex, fragment }
+                }
+                Lang::Wgsl => {
+                    let back = if two { "    @location(1) back: vec4<f32>,\n" } else { "" };
+                    let store_back = if two { "    out.back = color1;\n" } else { "" };
+                    let pick = if two { "select(in.back, in.front, facing)" } else { "in.front" };
+                    let facing = if two { ", @builtin(front_facing) facing: bool" } else { "" };
+                    let module = format!(
+                        "{}{list}{}\nstruct VertexIn {{\n    @location(0) position: vec3<f32>,\n    @location(1) normal: vec3<f32>,\n}};\n\nstruct VertexOut {{\n    @builtin(position) clip: vec4<f32>,\n    @location(0) front: vec4<f32>,\n{back}}};\n\n@vertex\nfn vs_main(input: VertexIn) -> VertexOut {{\n{}    var out: VertexOut;\n    out.front = color0;\n{store_back}    out.clip = u.clip_from_object * vec4<f32>(input.position, 1.0);\n    return out;\n}}\n\n@fragment\nfn fs_main(in: VertexOut{facing}) -> @location(0) vec4<f32> {{\n    return {pick};\n}}\n",
+                        header("the vertex lighting"),
+                        declare(&s, &uniforms),
+                        indent(&body)
+                    );
+                    Shader { vertex: module, fragment: String::new() }
+                }
+            }
+        }
+        ShaderShading::Phong => {
+            let program = Program::compile(&key, SourceKind::EyeRaw(Renormalize::Exact));
+            let mut frag_uniforms: Vec<Uniform> = Vec::new();
+            let body = lighting(scene, &key, &program, ex, &s, &mut frag_uniforms);
+            let two = key.two_sided;
+            let stages: Vec<String> = program.stages.iter().map(|st| format!("{st:?}")).collect();
+            let list = format!("// The program per fragment: {}\n", stages.join(" > "));
+            uniforms.push(("normal_matrix".into(), "mat3"));
+            let by_m = scene.rules.normal_transform() == NormalTransform::Modelview;
+            let what = if by_m { "the worksheet: M itself" } else { "(M^-1)^T" };
+            let mut all = uniforms.clone();
+            for u in frag_uniforms {
+                if !all.contains(&u) {
+                    all.push(u);
+                }
+            }
+            match lang {
+                Lang::Glsl => {
+                    let vertex = format!(
+                        "#version 330 core\n{}layout(location = 0) in vec3 a_position;\nlayout(location = 1) in vec3 a_normal;\n{}out vec3 v_pos;\nout vec3 v_normal;\n\nvoid main() {{\n    vec4 Ph = u_eye_from_object * vec4(a_position, 1.0); // {}\n    v_pos = Ph.xyz / Ph.w;\n    v_normal = u_normal_matrix * a_normal; // {} ({what})\n    gl_Position = u_clip_from_object * vec4(a_position, 1.0);\n}}\n",
+                        header("the per-fragment lighting's vertex stage"),
+                        declare(&s, &uniforms),
+                        step_no(ex, StepKind::Position, None),
+                        step_no(ex, StepKind::Normal, None)
+                    );
+                    let side_pick = if two {
+                        "    frag_color = gl_FrontFacing ? color0 : color1;\n"
+                    } else {
+                        "    frag_color = color0;\n"
+                    };
+                    let fragment = format!(
+                        "#version 330 core\n{}{list}{}in vec3 v_pos;\nin vec3 v_normal;\nout vec4 frag_color;\n\nvoid main() {{\n    vec3 P = v_pos;\n    vec3 N = v_normal;\n{}{side_pick}}}\n",
+                        header("the per-fragment lighting"),
+                        declare(&s, &all),
+                        indent(&body)
+                    );
+                    Shader { vertex, fragment }
+                }
+                Lang::Wgsl => {
+                    let facing = if two { ", @builtin(front_facing) facing: bool" } else { "" };
+                    let pick = if two { "select(color1, color0, facing)" } else { "color0" };
+                    let module = format!(
+                        "{}{list}{}\nstruct VertexIn {{\n    @location(0) position: vec3<f32>,\n    @location(1) normal: vec3<f32>,\n}};\n\nstruct VertexOut {{\n    @builtin(position) clip: vec4<f32>,\n    @location(0) pos: vec3<f32>,\n    @location(1) normal: vec3<f32>,\n}};\n\n@vertex\nfn vs_main(input: VertexIn) -> VertexOut {{\n    var out: VertexOut;\n    let Ph = u.eye_from_object * vec4<f32>(input.position, 1.0); // {}\n    out.pos = Ph.xyz / Ph.w;\n    out.normal = u.normal_matrix * input.normal; // {} ({what})\n    out.clip = u.clip_from_object * vec4<f32>(input.position, 1.0);\n    return out;\n}}\n\n@fragment\nfn fs_main(in: VertexOut{facing}) -> @location(0) vec4<f32> {{\n    var P: vec3<f32> = in.pos;\n    var N: vec3<f32> = in.normal;\n{}    return {pick};\n}}\n",
+                        header("the per-fragment lighting"),
+                        declare(&s, &all),
+                        step_no(ex, StepKind::Position, None),
+                        step_no(ex, StepKind::Normal, None),
+                        indent(&body)
+                    );
+                    Shader { vertex: module, fragment: String::new() }
+                }
+            }
+        }
+    }
+}
