@@ -340,14 +340,7 @@ fn lighting(
 
 /// The prologue that brings N and P to eye space from object space (Gouraud's vertex
 /// shader), for the stages the program has.
-fn prologue(
-    scene: &Scene,
-    key: &Key,
-    program: &Program,
-    ex: &Explanation,
-    s: &Syn,
-    uniforms: &mut Vec<Uniform>,
-) -> Vec<String> {
+fn prologue(scene: &Scene, program: &Program, ex: &Explanation, s: &Syn, uniforms: &mut Vec<Uniform>) -> Vec<String> {
     let mut o = Vec::new();
     let by_m = scene.rules.normal_transform() == NormalTransform::Modelview;
     uniforms.push(("normal_matrix".into(), "mat3"));
@@ -423,7 +416,7 @@ pub fn generate(scene: &Scene, options: EvalOptions, ex: &Explanation, lang: Lan
     match shading {
         ShaderShading::Gouraud => {
             let program = Program::compile(&key, SourceKind::Object);
-            let mut body = prologue(scene, &key, &program, ex, &s, &mut uniforms);
+            let mut body = prologue(scene, &program, ex, &s, &mut uniforms);
             body.extend(lighting(scene, &key, &program, ex, &s, &mut uniforms));
             let two = key.two_sided;
             let stages: Vec<String> = program.stages.iter().map(|st| format!("{st:?}")).collect();
