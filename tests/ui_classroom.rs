@@ -301,3 +301,38 @@ fn a_new_exercise_is_generated_shown_and_quizzed() {
     assert!(key.lights[0].positional && key.lights[0].attenuated);
     h.get_by_label_contains("Score: 0 of");
 }
+
+#[test]
+fn the_shader_window_shows_the_program_and_what_an_effect_adds() {
+    let mut h = harness_at(1440.0, 900.0);
+    h.get_by_label("Shader").click();
+    h.run_steps(2);
+    h.get_by_label_contains("vec3 L0 = toL0 / d0;");
+    assert!(h.query_by_label_contains("in_cone0").is_none(), "no spotlight, no cone test");
+    // Switch the spotlight on with its checkbox (the window leaves the controls free): the
+    // cone test appears, highlighted as added.
+    h.get_by_role_and_label(Role::CheckBox, "Spotlight").click();
+    h.run_steps(3);
+    assert!(h.state().doc.scene.lights[0].is_spot());
+    h.get_by_label_contains("bool in_cone0 = spot_cos0 >= u_light0_spot_cos_cutoff;");
+    let added = &h.state().shader.added;
+    assert!(added.iter().any(|l| l.contains("in_cone0")), "{added:?}");
+    h.get_by_label_contains("The last change added");
+    // WGSL, and Copy.
+    h.get_by_label("WGSL").click();
+    h.run_steps(2);
+    h.get_by_label_contains("@vertex");
+    h.get_by_label("Copy").click();
+    h.run_steps(1);
+    let copied: Vec<String> = h
+        .output()
+        .platform_output
+        .commands
+        .iter()
+        .filter_map(|c| match c {
+            egui::OutputCommand::CopyText(t) => Some(t.clone()),
+            _ => None,
+        })
+        .collect();
+    assert!(copied.iter().any(|t| t.contains("fn vs_main") && t.contains("in_cone0")), "{copied:?}");
+}

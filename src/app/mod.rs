@@ -15,6 +15,7 @@ pub mod persist;
 pub mod quiz;
 pub mod result;
 pub mod shaded;
+pub mod shader_panel;
 pub mod state;
 pub mod vector_plot;
 pub mod view_cache;
@@ -148,6 +149,8 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         ui.separator();
         ui.toggle_value(&mut state.cost.open, "Cost of accuracy")
             .on_hover_text("What each shading, tessellation and approximation costs in time and in error");
+        ui.toggle_value(&mut state.shader.open, "Shader")
+            .on_hover_text("The GLSL or WGSL program this scene compiles to: only the stages it needs");
         ui.separator();
         files::file_ui(ui, state);
         ui.separator();
@@ -324,6 +327,7 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     egui::CentralPanel::default().show(ui, |ui| centre_ui(ui, state, &eval));
 
     cost::cost_window_ui(&ctx, state);
+    shader_panel::shader_window_ui(&ctx, &mut state.shader, &state.doc);
     if state.cost.poll() {
         ctx.request_repaint_after(std::time::Duration::from_millis(100));
     }

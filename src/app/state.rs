@@ -114,6 +114,8 @@ pub struct AppState {
     pub compare: super::compare::CompareState,
     /// Quiz mode: the exercise and the student's answers.
     pub quiz: super::quiz::QuizState,
+    /// The Shader window.
+    pub shader: super::shader_panel::ShaderState,
 }
 
 /// The colours of one side, as f64.
