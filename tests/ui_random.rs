@@ -120,6 +120,18 @@ fn run(seed: u64, steps: usize) {
     let mut rng = Rng(seed);
     let (mut refusals, mut changes) = (0, 0);
     for step in 0..steps {
+        // The walk can put the controls away (the Controls toggle, F5, Compare, Quiz): now and
+        // then it brings them back, as a user would, so typed values keep reaching the
+        // validator.
+        if rng.below(4) == 0 {
+            let s = h.state_mut();
+            s.ui.layout.presenting = false;
+            s.ui.layout.controls_open = true;
+            s.compare.open = false;
+            s.quiz.open = false;
+            s.shader.open = false;
+            h.run_steps(1);
+        }
         let before = without_spin(&h.state().doc);
         let message_before = h.state().message.clone();
         let what = match rng.below(6) {
@@ -157,7 +169,13 @@ fn run(seed: u64, steps: usize) {
             3 => {
                 let nodes: Vec<_> = h
                     .query_all_by_role(Role::TextInput)
-                    .filter(|n| n.accesskit_node().label().is_none_or(|l| !l.contains("Scene file")))
+                    // Scene fields: not the file paths, nor the quiz's answer fields (which
+                    // hold any text and refuse nothing), so typed bad values meet the validator.
+                    .filter(|n| {
+                        n.accesskit_node()
+                            .label()
+                            .is_none_or(|l| !l.contains("Scene file") && !l.contains("Mesh file") && !l.ends_with(" ="))
+                    })
                     .chain(h.query_all_by_role(Role::SpinButton))
                     .collect();
                 if nodes.is_empty() {

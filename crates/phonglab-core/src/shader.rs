@@ -509,3 +509,136 @@ pub fn generate(scene: &Scene, options: EvalOptions, ex: &Explanation, lang: Lan
         }
     }
 }
+
+/// The value a uniform of the generated program takes for `scene` drawn with
+/// `clip_from_object`, as f32s in column-major order (a `mat3` as three columns of three),
+/// or `None` for a name the generator does not use. Light positions and directions are in
+/// eye space, as OpenGL keeps them.
+pub fn uniform_value(scene: &Scene, clip_from_object: &glam::DMat4, name: &str) -> Option<Vec<f32>> {
+    let f = |v: &[f64]| v.iter().map(|x| *x as f32).collect::<Vec<f32>>();
+    let eye_from_object = scene.eye_from_object();
+    let material = |m: &str| if m == "back" { scene.back() } else { &scene.material };
+    if let Some(rest) = name.strip_prefix("light") {
+        let (i, what) = rest.split_once('_')?;
+        let l = scene.lights.get(i.parse::<usize>().ok()?)?;
+        let pos = scene.light_pos_in_eye(l);
+        return match what {
+            "position" => Some(f(&pos.to_array())),
+            "direction" => Some(f(&pos.truncate().normalize_or_zero().to_array())),
+            "halfway" => Some(f(&(pos.truncate().normalize_or_zero() + glam::DVec3::Z).normalize_or_zero().to_array())),
+            "ambient" => Some(f(&l.ambient.truncate().to_array())),
+            "diffuse" => Some(f(&l.diffuse.truncate().to_array())),
+            "specular" => Some(f(&l.specular.truncate().to_array())),
+            "attenuation" => Some(f(&l.attenuation)),
+            "spot_direction" => Some(f(&scene.eye_from_light(l).transform_vector3(l.spot_direction).to_array())),
+            "spot_cos_cutoff" => Some(vec![l.spot_cutoff.to_radians().cos() as f32]),
+            "spot_exponent" => Some(vec![l.spot_exponent as f32]),
+            _ => None,
+        };
+    }
+    if let Some((m, what)) = name.split_once('_').filter(|(m, _)| *m == "mat" || *m == "back") {
+        let mat = material(m);
+        return match what {
+            "ambient" => Some(f(&mat.ambient.truncate().to_array())),
+            "diffuse" => Some(f(&mat.diffuse.to_array())),
+            "specular" => Some(f(&mat.specular.truncate().to_array())),
+            "shininess" => Some(vec![mat.shininess as f32]),
+            _ => None,
+        };
+    }
+    match name {
+        "clip_from_object" => Some(f(&clip_from_object.to_cols_array())),
+        "eye_from_object" => Some(f(&eye_from_object.to_cols_array())),
+        "normal_matrix" => {
+            let nm = crate::transform::NormalMatrix::for_rules(&eye_from_object, scene.rules);
+            Some(f(&nm.eye_from_object.to_cols_array()))
+        }
+        "rescale" => {
+            Some(vec![crate::transform::NormalMatrix::for_rules(&eye_from_object, scene.rules).rescale as f32])
+        }
+        "scene_color" => {
+            let m = &scene.material;
+            let e = if scene.rules.emission() { m.emission.truncate() } else { glam::DVec3::ZERO };
+            let a = if scene.rules.scene_ambient() {
+                m.ambient.truncate() * scene.light_model.ambient.truncate()
+            } else {
+                glam::DVec3::ZERO
+            };
+            Some(f(&(e + a).to_array()))
+        }
+        _ => None,
+    }
+}
+
+/// The uniforms a generated program declares, in order: (name, GLSL type).
+pub fn uniforms(shader: &Shader) -> Vec<(String, String)> {
+    let src = format!("{}\n{}", shader.vertex, shader.fragment);
+    let mut out: Vec<(String, String)> = Vec::new();
+    for line in src.lines() {
+        let line = line.trim();
+        let parsed = if let Some(rest) = line.strip_prefix("uniform ") {
+            rest.trim_end_matches(';')
+                .split_once(' ')
+                .map(|(t, n)| (n.trim_start_matches("u_").to_string(), t.to_string()))
+        } else if line.ends_with(',') && line.contains(": ") && !line.starts_with('@') {
+            // WGSL struct member `name: type,`
+            line.trim_end_matches(',').split_once(": ").map(|(n, t)| (n.to_string(), t.to_string()))
+        } else {
+            None
+        };
+        if let Some(u) = parsed
+            && !out.iter().any(|(n, _)| *n == u.0)
+        {
+            out.push(u);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_uniform_a_program_declares_has_a_value() {
+        let mut scenes = vec![crate::presets::worksheet(5), crate::presets::phong_demo()];
+        let mut spot = crate::presets::worksheet(3);
+        spot.lights[0].spot_cutoff = 30.0;
+        spot.light_model.two_sided = true;
+        scenes.push(spot);
+        let mut dir = crate::presets::worksheet(5);
+        dir.rules = crate::rules::Rules::OPENGL;
+        dir.lights[0].position = glam::DVec4::new(0.0, 1.0, 1.0, 0.0);
+        scenes.push(dir);
+        for scene in &scenes {
+            let lit = crate::lighting::Engine::<f64>::new(scene).unwrap().light(&scene.vertex);
+            let ex = crate::explain::explain(scene, &lit, crate::explain::Side::Front);
+            for lang in [Lang::Glsl, Lang::Wgsl] {
+                for shading in [ShaderShading::Gouraud, ShaderShading::Phong] {
+                    let sh = generate(scene, EvalOptions::default(), &ex, lang, shading);
+                    let us = uniforms(&sh);
+                    assert!(us.iter().any(|(n, _)| n == "clip_from_object"), "{us:?}");
+                    for (name, ty) in us
+                        .iter()
+                        .filter(|(n, _)| !["position", "normal", "clip", "front", "back", "pos"].contains(&n.as_str()))
+                    {
+                        let v = uniform_value(scene, &glam::DMat4::IDENTITY, name)
+                            .unwrap_or_else(|| panic!("{name}: {ty}"));
+                        let want = match ty.as_str() {
+                            "mat4" | "mat4x4<f32>" => 16,
+                            "mat3" | "mat3x3<f32>" => 9,
+                            "vec4" | "vec4<f32>" => 4,
+                            "vec3" | "vec3<f32>" => 3,
+                            _ => 1,
+                        };
+                        assert_eq!(v.len(), want, "{name}: {ty}");
+                    }
+                }
+            }
+        }
+        // Values are the scene's, in eye space.
+        let s = crate::presets::worksheet(5);
+        assert_eq!(uniform_value(&s, &glam::DMat4::IDENTITY, "light0_position").unwrap(), vec![0.0, 54.0, -888.0, 1.0]);
+        assert_eq!(uniform_value(&s, &glam::DMat4::IDENTITY, "mat_shininess").unwrap(), vec![25.6]);
+    }
+}
