@@ -31,7 +31,7 @@ fn uniform_bytes(shader: &phonglab_core::shader::Shader, scene: &phonglab_core::
             continue;
         }
         let (align, _) = layout(&ty);
-        while bytes.len() % align != 0 {
+        while !bytes.len().is_multiple_of(align) {
             bytes.push(0);
         }
         let v = uniform_value(scene, clip, &name).unwrap_or_else(|| panic!("no value for {name}"));
@@ -47,7 +47,7 @@ fn uniform_bytes(shader: &phonglab_core::shader::Shader, scene: &phonglab_core::
             }
         }
     }
-    while bytes.len() % 16 != 0 {
+    while !bytes.len().is_multiple_of(16) {
         bytes.push(0);
     }
     bytes
