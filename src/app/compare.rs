@@ -7,7 +7,7 @@ use egui::{Color32, RichText, Ui};
 use phonglab_core::explain::{Explanation, fmt_value};
 use phonglab_core::{Document, PowFn};
 
-use super::state::{AppState, Evaluated, Message, Precision, evaluate};
+use super::evaluated::{Evaluated, Precision, evaluate};
 use super::view_cache::ViewCache;
 
 /// The pinned scene A: the document and the numerics it was evaluated with.
@@ -111,40 +111,53 @@ fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) {
 }
 
 /// The compare view, in the centre.
-pub fn compare_ui(ui: &mut Ui, state: &mut AppState, b: &Evaluated) {
+/// The scene shown (B) and the numerics it is evaluated with.
+pub struct Current<'a> {
+    /// B's document.
+    pub doc: &'a Document,
+    /// B's precision.
+    pub precision: Precision,
+    /// B's power function.
+    pub pow: PowFn,
+    /// The side the calculation explains.
+    pub side: phonglab_core::explain::Side,
+}
+
+/// The compare view, in the centre; returns a notice for the app's message line.
+pub fn compare_ui(ui: &mut Ui, compare: &mut CompareState, current: &Current<'_>, b: &Evaluated) -> Option<String> {
+    let mut notice = None;
     ui.horizontal_wrapped(|ui| {
         ui.heading("Compare");
-        let pin =
-            if state.compare.a.is_some() { "Pin the current scene as A again" } else { "Pin the current scene as A" };
+        let pin = if compare.a.is_some() { "Pin the current scene as A again" } else { "Pin the current scene as A" };
         if ui.button(pin).clicked() {
-            state.compare.a = Some(Pinned { doc: state.doc.clone(), precision: state.ui.precision, pow: state.ui.pow });
-            state.message = Some(Message::Info("Pinned as A: now change anything, and B follows.".into()));
+            compare.a = Some(Pinned { doc: current.doc.clone(), precision: current.precision, pow: current.pow });
+            notice = Some("Pinned as A: now change anything, and B follows.".to_string());
         }
         if ui.button("Close compare").clicked() {
-            state.compare.open = false;
+            compare.open = false;
         }
     });
-    let Some(a) = state.compare.a.clone() else {
+    let Some(a) = compare.a.clone() else {
         ui.label("Pin the current scene as A, then change anything (shading, precision, material): A and B show side by side.");
-        return;
+        return notice;
     };
-    let a_eval = match evaluate(&a.doc, a.precision, a.pow, state.ui.side) {
+    let a_eval = match evaluate(&a.doc, a.precision, a.pow, current.side) {
         Ok(e) => e,
         Err(e) => {
             ui.colored_label(super::palette::ERROR, format!("A cannot be evaluated: {e}"));
-            return;
+            return notice;
         }
     };
     let avail = ui.available_size();
     let side = ((avail.x - 24.0) / 2.0).min(avail.y * 0.5).max(64.0);
     let px = ((side * ui.ctx().pixels_per_point()) as usize).clamp(64, 1024);
-    let b_what = describe(&state.doc, state.ui.precision, state.ui.pow);
-    let (doc, pow) = (state.doc.clone(), state.ui.pow);
+    let b_what = describe(current.doc, current.precision, current.pow);
+    let (doc, pow) = (current.doc.clone(), current.pow);
     let sa = Side { which: "A", what: a.describe(), doc: &a.doc, eval: &a_eval, pow: a.pow };
     let sb = Side { which: "B", what: b_what, doc: &doc, eval: b, pow };
     ui.columns(2, |cols| {
-        side_ui(&mut cols[0], &sa, &mut state.compare.a_view, px);
-        side_ui(&mut cols[1], &sb, &mut state.compare.b_view, px);
+        side_ui(&mut cols[0], &sa, &mut compare.a_view, px);
+        side_ui(&mut cols[1], &sb, &mut compare.b_view, px);
     });
     ui.separator();
     let pairs = step_pairs(&a_eval.explanation, &b.explanation);
@@ -166,4 +179,5 @@ pub fn compare_ui(ui: &mut Ui, state: &mut AppState, b: &Evaluated) {
             ui.add_space(2.0);
         }
     });
+    notice
 }

@@ -6,6 +6,7 @@ pub mod calculation;
 pub mod compare;
 pub mod controls;
 pub mod cost;
+pub mod evaluated;
 pub mod files;
 pub mod help;
 pub mod layout;
@@ -347,7 +348,11 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
 /// it when the centre is wide, or below it when it is tall; with Compare on, A beside B.
 fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     if state.compare.open {
-        compare::compare_ui(ui, state, eval);
+        let current =
+            compare::Current { doc: &state.doc, precision: state.ui.precision, pow: state.ui.pow, side: state.ui.side };
+        if let Some(m) = compare::compare_ui(ui, &mut state.compare, &current, eval) {
+            state.message = Some(Message::Info(m));
+        }
         return;
     }
     result::result_ui(ui, eval, state.doc.scene.light_model.separate_specular, &state.message);
