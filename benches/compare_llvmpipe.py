@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """phonglab's CPU renderer against Mesa llvmpipe on docs/lighting.md's benchmark scene, in one run.
 
-  benches/compare_llvmpipe.py --glref PATH/TO/shared/glref [--frames 200] [--rounds 3] [--size 512] [--threads 2]
+  benches/compare_llvmpipe.py --glref GLREF [--frames 200] [--rounds 3] [--size 512] [--threads 2]
 
 Runs `phonglab bench render` and glref's `bench_llvmpipe.py` (default thread count: all
 cores) alternately, `--rounds` times each, so background load hits both alike, and takes

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Compares the "Phong demo" preset with the demo's own shaders under Mesa at many frames of
 # the spin. Needs the glref harness set up (its setup.sh: Mesa, Xvfb, a venv with numpy)
-# in GLREF (default ../shared/glref; copy it somewhere writable if that is read-only).
+# (docs/lighting.md) in the folder GLREF names.
 # Usage: scripts/seed_demo_sweep.sh [FRAME...]   (default: 1 37 90 120 180 250 333 360 444 500 575 640 719)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-GLREF=${GLREF:-../shared/glref}
+GLREF=${GLREF:?set GLREF to the glref harness folder (docs/lighting.md)}
 PY="$GLREF/.venv/bin/python"
 OUT=${OUT:-/tmp/phonglab-seed-sweep}
 mkdir -p "$OUT"

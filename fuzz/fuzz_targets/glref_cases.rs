@@ -59,7 +59,9 @@ fuzz_target!(|data: &[u8]| {
         }
         let general = Engine::<f32>::new(s).unwrap().light(&s.vertex);
         let fast = Lighter::new(s, EvalOptions::default()).unwrap().light_vertex(&s.vertex);
-        let same = |a: [f32; 4], b: [f32; 4]| a.iter().zip(&b).all(|(x, y)| x.to_bits() == y.to_bits() || x.is_nan() && y.is_nan());
+        let same = |a: [f32; 4], b: [f32; 4]| {
+            a.iter().zip(&b).all(|(x, y)| x.to_bits() == y.to_bits() || x.is_nan() && y.is_nan())
+        };
         assert!(same(fast[0].primary, general.front.primary), "{:?} vs {:?}", fast[0], general.front);
         assert!(same(fast[1].primary, general.back.primary), "{:?} vs {:?}", fast[1], general.back);
     }

@@ -1,5 +1,5 @@
 //! `PowFn::Llvmpipe` reproduces Mesa llvmpipe's `pow` bit for bit (540 probes made with
-//! shared/glref: see tests/data/mesa_pow_probes.json), including its flush to 0 below 2^-127.
+//! the glref harness: see tests/data/mesa_pow_probes.json), including its flush to 0 below 2^-127.
 
 use phonglab_core::pow::llvmpipe_pow;
 

@@ -3,7 +3,7 @@
 
 use phonglab_core::glref::{Case, CaseColors, parse_cases};
 
-/// The public glref cases with Mesa llvmpipe's results (copied from shared/glref), parsed once.
+/// The public glref cases with Mesa llvmpipe's results (copied from the glref harness, docs/lighting.md), parsed once.
 pub fn public_cases() -> &'static [Case] {
     static CASES: std::sync::OnceLock<Vec<Case>> = std::sync::OnceLock::new();
     CASES.get_or_init(|| {
