@@ -7,35 +7,29 @@ use eframe::wgpu;
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::mesh::sphere;
 use phonglab_core::render::Renderer;
-use phonglab_core::shader::{Lang, ShaderShading, generate, uniform_value, uniforms};
+use phonglab_core::shader::{Lang, ShaderShading, generate, uniform_value};
 use phonglab_core::{Engine, EvalOptions, Shading, library, presets};
 
 const SIZE: u32 = 256;
 
-/// WGSL's uniform layout: (alignment, size) of a member type.
-fn layout(ty: &str) -> (usize, usize) {
+/// WGSL's uniform layout: the alignment of a member of GLSL type `ty` (a `mat3` takes
+/// three columns of 16 bytes).
+fn align(ty: &str) -> usize {
     match ty {
-        "mat4x4<f32>" => (16, 64),
-        "mat3x3<f32>" => (16, 48),
-        "vec4<f32>" => (16, 16),
-        "vec3<f32>" => (16, 12),
-        _ => (4, 4),
+        "mat4" | "mat3" | "vec4" | "vec3" => 16,
+        _ => 4,
     }
 }
 
 /// The uniform buffer's bytes for the generated module.
 fn uniform_bytes(shader: &phonglab_core::shader::Shader, scene: &phonglab_core::Scene, clip: &glam::DMat4) -> Vec<u8> {
     let mut bytes: Vec<u8> = Vec::new();
-    for (name, ty) in uniforms(shader) {
-        if ["position", "normal", "clip", "front", "back", "pos"].contains(&name.as_str()) {
-            continue;
-        }
-        let (align, _) = layout(&ty);
-        while !bytes.len().is_multiple_of(align) {
+    for (name, ty) in &shader.uniforms {
+        while !bytes.len().is_multiple_of(align(ty)) {
             bytes.push(0);
         }
-        let v = uniform_value(scene, clip, &name).unwrap_or_else(|| panic!("no value for {name}"));
-        if ty == "mat3x3<f32>" {
+        let v = uniform_value(scene, clip, name).unwrap_or_else(|| panic!("no value for {name}"));
+        if *ty == "mat3" {
             for col in v.chunks(3) {
                 for x in col.iter().chain([0.0f32].iter()) {
                     bytes.extend_from_slice(&x.to_le_bytes());

@@ -47,6 +47,9 @@ pub struct Shader {
     pub vertex: String,
     /// The fragment shader.
     pub fragment: String,
+    /// The uniforms it declares, in order: (name, GLSL type: `mat4`, `mat3`, `vec4`, `vec3`
+    /// or `float`); [`uniform_value`] gives each one's value.
+    pub uniforms: Vec<(String, &'static str)>,
 }
 
 impl Shader {
@@ -138,6 +141,13 @@ fn lighting(
     };
     let sides = if key.two_sided { 2 } else { 1 };
     let gate = scene.rules.specular_gate();
+    // Where the rules let the specular term through (OpenGL: the lit side; the worksheet: a
+    // positive cosine; the demo: always).
+    let gate_open = |i: usize, side: usize| match gate {
+        SpecularGate::LitSide => format!("ndl{i}_{side} > 0.0"),
+        SpecularGate::PositiveCosine => format!("spec_cos{i}_{side} > 0.0"),
+        SpecularGate::None => "true".to_string(),
+    };
     for side in 0..sides {
         o.push(s.var("vec3", &format!("sum{side}"), &format!("{v3}(0.0)")));
     }
@@ -266,12 +276,7 @@ fn lighting(
             Stage::Power(i, side) => {
                 let m = if side == 1 && scene.back_material.is_some() { "back" } else { "mat" };
                 let sh = uni(format!("{m}_shininess"), "float");
-                let cond = match gate {
-                    SpecularGate::LitSide => format!("ndl{i}_{side} > 0.0"),
-                    SpecularGate::PositiveCosine => format!("spec_cos{i}_{side} > 0.0"),
-                    SpecularGate::None => "true".into(),
-                };
-                let e = s.select(&cond, &format!("pow(max(spec_cos{i}_{side}, 0.0), {sh})"), "0.0");
+                let e = s.select(&gate_open(i, side), &format!("pow(max(spec_cos{i}_{side}, 0.0), {sh})"), "0.0");
                 o.push(format!("{} {}", s.var("float", &format!("pf{i}_{side}"), &e), at(StepKind::Specular, Some(i))));
             }
             Stage::Sum(i, side) => {
@@ -290,12 +295,7 @@ fn lighting(
                     let pf = if program.has(Stage::Power(i, side)) {
                         format!("pf{i}_{side}")
                     } else {
-                        let cond = match gate {
-                            SpecularGate::LitSide => format!("ndl{i}_{side} > 0.0"),
-                            SpecularGate::PositiveCosine => format!("spec_cos{i}_{side} > 0.0"),
-                            SpecularGate::None => "true".into(),
-                        };
-                        s.select(&cond, "1.0", "0.0")
+                        s.select(&gate_open(i, side), "1.0", "0.0")
                     };
                     terms.push_str(&format!(" + {ls} * {ms} * {pf}"));
                 }
@@ -437,7 +437,7 @@ pub fn generate(scene: &Scene, options: EvalOptions, ex: &Explanation, lang: Lan
                     let fragment = format!(
                         "#version 330 core\n{ins}out vec4 frag_color;\n\nvoid main() {{\n    frag_color = {pick};\n}}\n"
                     );
-                    Shader { vertex, fragment }
+                    Shader { vertex, fragment, uniforms }
                 }
                 Lang::Wgsl => {
                     let back = if two { "    @location(1) back: vec4<f32>,\n" } else { "" };
@@ -450,7 +450,7 @@ pub fn generate(scene: &Scene, options: EvalOptions, ex: &Explanation, lang: Lan
                         declare(&s, &uniforms),
                         indent(&body)
                     );
-                    Shader { vertex: module, fragment: String::new() }
+                    Shader { vertex: module, fragment: String::new(), uniforms }
                 }
             }
         }
@@ -490,7 +490,7 @@ pub fn generate(scene: &Scene, options: EvalOptions, ex: &Explanation, lang: Lan
                         declare(&s, &all),
                         indent(&body)
                     );
-                    Shader { vertex, fragment }
+                    Shader { vertex, fragment, uniforms: all }
                 }
                 Lang::Wgsl => {
                     let facing = if two { ", @builtin(front_facing) facing: bool" } else { "" };
@@ -503,7 +503,7 @@ pub fn generate(scene: &Scene, options: EvalOptions, ex: &Explanation, lang: Lan
                         step_no(ex, StepKind::Normal, None),
                         indent(&body)
                     );
-                    Shader { vertex: module, fragment: String::new() }
+                    Shader { vertex: module, fragment: String::new(), uniforms: all }
                 }
             }
         }
@@ -570,31 +570,6 @@ pub fn uniform_value(scene: &Scene, clip_from_object: &glam::DMat4, name: &str) 
     }
 }
 
-/// The uniforms a generated program declares, in order: (name, GLSL type).
-pub fn uniforms(shader: &Shader) -> Vec<(String, String)> {
-    let src = format!("{}\n{}", shader.vertex, shader.fragment);
-    let mut out: Vec<(String, String)> = Vec::new();
-    for line in src.lines() {
-        let line = line.trim();
-        let parsed = if let Some(rest) = line.strip_prefix("uniform ") {
-            rest.trim_end_matches(';')
-                .split_once(' ')
-                .map(|(t, n)| (n.trim_start_matches("u_").to_string(), t.to_string()))
-        } else if line.ends_with(',') && line.contains(": ") && !line.starts_with('@') {
-            // WGSL struct member `name: type,`
-            line.trim_end_matches(',').split_once(": ").map(|(n, t)| (n.to_string(), t.to_string()))
-        } else {
-            None
-        };
-        if let Some(u) = parsed
-            && !out.iter().any(|(n, _)| *n == u.0)
-        {
-            out.push(u);
-        }
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -616,19 +591,22 @@ mod tests {
             for lang in [Lang::Glsl, Lang::Wgsl] {
                 for shading in [ShaderShading::Gouraud, ShaderShading::Phong] {
                     let sh = generate(scene, EvalOptions::default(), &ex, lang, shading);
-                    let us = uniforms(&sh);
+                    let us = &sh.uniforms;
                     assert!(us.iter().any(|(n, _)| n == "clip_from_object"), "{us:?}");
-                    for (name, ty) in us
-                        .iter()
-                        .filter(|(n, _)| !["position", "normal", "clip", "front", "back", "pos"].contains(&n.as_str()))
-                    {
+                    for (name, ty) in us {
+                        // Declared in the source as listed.
+                        let declared = match lang {
+                            Lang::Glsl => format!("uniform {ty} u_{name};"),
+                            Lang::Wgsl => format!("    {name}: "),
+                        };
+                        assert!(sh.vertex.contains(&declared) || sh.fragment.contains(&declared), "{name}");
                         let v = uniform_value(scene, &glam::DMat4::IDENTITY, name)
                             .unwrap_or_else(|| panic!("{name}: {ty}"));
-                        let want = match ty.as_str() {
-                            "mat4" | "mat4x4<f32>" => 16,
-                            "mat3" | "mat3x3<f32>" => 9,
-                            "vec4" | "vec4<f32>" => 4,
-                            "vec3" | "vec3<f32>" => 3,
+                        let want = match *ty {
+                            "mat4" => 16,
+                            "mat3" => 9,
+                            "vec4" => 4,
+                            "vec3" => 3,
                             _ => 1,
                         };
                         assert_eq!(v.len(), want, "{name}: {ty}");
