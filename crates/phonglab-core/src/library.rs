@@ -9,22 +9,15 @@ use crate::document::Document;
 use crate::presets::{BENCH_BACKGROUND, bench_projection, phong_demo, worksheet};
 use crate::scene::Scene;
 use crate::transform::phong_demo_eye_from_object;
-use crate::view::{FlatNormal, Framing, LightingSpace, ObjectKind, Shading, View};
+use crate::view::{FlatNormal, Framing, LightingSpace, Shading, View};
 
 /// The shaded view as the demo's program draws: clip space (no projection), the spin of
 /// 0.5 degrees a frame (the first frame drawn has taken one step), lit in object space,
 /// `normalize(position)` for normals, Phong without renormalising, Flat from the screen
 /// derivatives, gluCylinder not centred, a black background, sphere and Gouraud first.
 pub fn phong_demo_view() -> View {
+    // The tessellations, the sphere and Gouraud are the default view's: the demo's own.
     View {
-        object: ObjectKind::Sphere,
-        shading: Shading::Gouraud,
-        sphere_slices: 50,
-        sphere_stacks: 50,
-        teapot_grid: 7,
-        cylinder_slices: 20,
-        cylinder_stacks: 5,
-        cylinder_caps: false,
         demo_normals: true,
         auto_rotate: true,
         spin_degrees: 0.5,
@@ -137,5 +130,21 @@ pub fn bench_job<'a>(scene: &'a Scene, mesh: &'a crate::mesh::Mesh, shading: Sha
         background: BENCH_BACKGROUND,
         cull_back: false,
         options: crate::EvalOptions::default(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::view::ObjectKind;
+
+    #[test]
+    fn the_demo_view_draws_the_demos_objects() {
+        // gluSphere(0.5, 50, 50), glutSolidTeapot's 7 per patch side, gluCylinder(.., 20, 5)
+        // with no caps; the sphere under Gouraud first, as the program opens.
+        let v = phong_demo_view();
+        assert_eq!((v.object, v.shading), (ObjectKind::Sphere, Shading::Gouraud));
+        assert_eq!((v.sphere_slices, v.sphere_stacks, v.teapot_grid), (50, 50, 7));
+        assert_eq!((v.cylinder_slices, v.cylinder_stacks, v.cylinder_caps), (20, 5, false));
     }
 }
