@@ -22,13 +22,8 @@ fn mesa(frame: u32, object: ObjectKind, shading: Shading) -> (usize, usize, Vec<
         object.label().to_lowercase(),
         shading.label().to_lowercase()
     );
-    let file = std::fs::File::open(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let mut reader = png::Decoder::new(std::io::BufReader::new(file)).read_info().unwrap();
-    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
-    let info = reader.next_frame(&mut buf).unwrap();
-    assert_eq!(info.color_type, png::ColorType::Rgb);
-    let px = buf[..info.buffer_size()].chunks(3).map(|c| [c[0], c[1], c[2]]).collect();
-    (info.width as usize, info.height as usize, px)
+    let (w, h, rgba) = phonglab::image_io::read_png(std::path::Path::new(&path)).unwrap();
+    (w, h, rgba.chunks(4).map(|c| [c[0], c[1], c[2]]).collect())
 }
 
 struct Comparison {

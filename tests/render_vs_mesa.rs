@@ -10,13 +10,8 @@ use phonglab_core::render::Renderer;
 
 fn mesa(name: &str) -> (usize, usize, Vec<[u8; 3]>) {
     let path = format!("{}/tests/data/mesa_bench/{name}.png", env!("CARGO_MANIFEST_DIR"));
-    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&path).unwrap()));
-    let mut reader = decoder.read_info().unwrap();
-    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
-    let info = reader.next_frame(&mut buf).unwrap();
-    assert_eq!(info.color_type, png::ColorType::Rgb);
-    let px = buf[..info.buffer_size()].chunks(3).map(|c| [c[0], c[1], c[2]]).collect();
-    (info.width as usize, info.height as usize, px)
+    let (w, h, rgba) = phonglab::image_io::read_png(std::path::Path::new(&path)).unwrap();
+    (w, h, rgba.chunks(4).map(|c| [c[0], c[1], c[2]]).collect())
 }
 
 struct Comparison {
