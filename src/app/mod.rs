@@ -272,23 +272,18 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
         });
     };
     let presenting = state.ui.layout.presenting;
-    if presenting {
-        let mut open = state.ui.layout.drawer_open;
-        egui::Panel::left("drawer")
-            .resizable(true)
-            .default_size(layout::Layout::controls_width(width))
-            .min_size(240.0)
-            .show_collapsible(ui, &mut open, |ui| controls(ui, state));
-        state.ui.layout.drawer_open = open;
+    // Presenting, the controls are a drawer (its own panel, so each keeps its width).
+    let (id, min, mut open) = if presenting {
+        ("drawer", 240.0, state.ui.layout.drawer_open)
     } else {
-        let mut open = state.ui.layout.controls_open;
-        egui::Panel::left("controls")
-            .resizable(true)
-            .default_size(layout::Layout::controls_width(width))
-            .min_size(220.0)
-            .show_collapsible(ui, &mut open, |ui| controls(ui, state));
-        state.ui.layout.controls_open = open;
-    }
+        ("controls", 220.0, state.ui.layout.controls_open)
+    };
+    egui::Panel::left(id)
+        .resizable(true)
+        .default_size(layout::Layout::controls_width(width))
+        .min_size(min)
+        .show_collapsible(ui, &mut open, |ui| controls(ui, state));
+    *(if presenting { &mut state.ui.layout.drawer_open } else { &mut state.ui.layout.controls_open }) = open;
 
     // Compare lists the steps of A and B itself, in the calculation's place.
     let mut open = (state.ui.layout.calculation_open || presenting) && !state.compare.open;

@@ -151,7 +151,6 @@ pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<
         ui.label("Open an exercise (phonglab exercise writes them) or any scene, then press \"Quiz this scene\", or press New exercise.");
         return shown;
     };
-    quiz.fit(key.steps.len());
     let scene = &quiz.doc.as_ref().map(|d| d.name.clone()).unwrap_or_default();
     ui.small(format!(
         "{scene}: type each step's value and press Enter. 1e-4 relative or 1e-6 absolute counts as right."
@@ -168,7 +167,7 @@ pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<
         }
     });
     ui.separator();
-    // Again: "Clear answers" just above starts the quiz over, with no fields.
+    // One field per step; after "Clear answers" just above, too.
     quiz.fit(key.steps.len());
     let ok = palette::ink(ui, egui::Color32::from_rgb(80, 200, 120));
     let bad = palette::ink(ui, palette::ERROR);
