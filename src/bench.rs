@@ -212,6 +212,25 @@ pub fn run(cmd: &BenchCommand) -> Result<()> {
     }
 }
 
+/// Median and p95 of the layout times `ui`, the tessellation times `tess` and their sums
+/// per frame: `[ui median, ui p95, tess median, tess p95, total median, total p95]`.
+fn figures(ui: &mut [f64], tess: &mut [f64]) -> [f64; 6] {
+    let mut total: Vec<f64> = ui.iter().zip(tess.iter()).map(|(a, b)| a + b).collect();
+    let (um, up) = median_p95(ui);
+    let (tm, tp) = median_p95(tess);
+    let (sm, sp) = median_p95(&mut total);
+    [um, up, tm, tp, sm, sp]
+}
+
+/// An edit as dragging the light-z slider makes it: frame f puts the light at `z0 + f mod 100`.
+fn drag_light_z(z0: f64) -> impl FnMut(&mut crate::app::AppState, u32) {
+    move |s, f| {
+        let mut d = s.doc.clone();
+        d.scene.lights[0].position.z = z0 + (f % 100) as f64;
+        s.apply(d);
+    }
+}
+
 /// Median and 95th percentile of `v` (sorted in place).
 fn median_p95(v: &mut [f64]) -> (f64, f64) {
     v.sort_by(f64::total_cmp);
@@ -291,15 +310,8 @@ fn ui_presenting(a: &UiBenchArgs) -> Result<()> {
         // Settle the layout (panel sizes, fonts) before timing.
         time_ui_frames(&ctx, &mut state, size, 5, |_, _| {});
         let z0 = state.doc.scene.lights[0].position.z;
-        let (mut u, mut t) = time_ui_frames(&ctx, &mut state, size, a.frames, move |s, f| {
-            let mut d = s.doc.clone();
-            d.scene.lights[0].position.z = z0 + (f % 100) as f64;
-            s.apply(d);
-        });
-        let mut total: Vec<f64> = u.iter().zip(&t).map(|(a, b)| a + b).collect();
-        let (um, up) = median_p95(&mut u);
-        let (tm, tp) = median_p95(&mut t);
-        let (sm, sp) = median_p95(&mut total);
+        let (mut u, mut t) = time_ui_frames(&ctx, &mut state, size, a.frames, drag_light_z(z0));
+        let [um, up, tm, tp, sm, sp] = figures(&mut u, &mut t);
         let px = state.shaded.main.image_px();
         println!("drag_{} {um:.2} {up:.2} {tm:.2} {tp:.2} {sm:.2} {sp:.2} {px}", shading.label().to_lowercase());
     }
@@ -321,14 +333,7 @@ fn ui(a: &UiBenchArgs) -> Result<()> {
     let z0 = state.doc.scene.lights[0].position.z;
     let cases: [(&str, StateChange); 3] = [
         ("idle", Box::new(|_, _| {})),
-        (
-            "slider_move",
-            Box::new(move |s, f| {
-                let mut d = s.doc.clone();
-                d.scene.lights[0].position.z = z0 + (f % 100) as f64;
-                s.apply(d);
-            }),
-        ),
+        ("slider_move", Box::new(drag_light_z(z0))),
         (
             "auto_rotate",
             Box::new(|s, _| {
@@ -338,11 +343,7 @@ fn ui(a: &UiBenchArgs) -> Result<()> {
     ];
     for (name, change) in cases {
         let (mut u, mut t) = time_ui_frames(&ctx, &mut state, size, a.frames, change);
-        let total: Vec<f64> = u.iter().zip(&t).map(|(a, b)| a + b).collect();
-        let mut total = total;
-        let (um, up) = median_p95(&mut u);
-        let (tm, tp) = median_p95(&mut t);
-        let (sm, _) = median_p95(&mut total);
+        let [um, up, tm, tp, sm, _] = figures(&mut u, &mut t);
         println!("{name} {um:.2} {up:.2} {tm:.2} {tp:.2} {sm:.2}");
     }
     Ok(())
