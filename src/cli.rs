@@ -20,6 +20,32 @@ pub struct Cli {
     /// A scene file (TOML) to open the app on; one that cannot be read opens the worksheet
     /// and says why.
     pub file: Option<PathBuf>,
+    /// Who draws the app's shaded view: auto (the GPU when the adapter is a real one), cpu
+    /// (the reference renderer) or gpu (the scene's generated WGSL, even on a software
+    /// adapter).
+    #[arg(long, value_enum, default_value_t = RendererArg::Auto)]
+    pub renderer: RendererArg,
+}
+
+/// `--renderer`'s values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum RendererArg {
+    /// The GPU when the adapter is a real one, else the CPU renderer.
+    Auto,
+    /// The CPU renderer (the reference).
+    Cpu,
+    /// The GPU, even a software adapter.
+    Gpu,
+}
+
+impl From<RendererArg> for crate::app::gpu_view::RendererChoice {
+    fn from(a: RendererArg) -> Self {
+        match a {
+            RendererArg::Auto => Self::Auto,
+            RendererArg::Cpu => Self::Cpu,
+            RendererArg::Gpu => Self::Gpu,
+        }
+    }
 }
 
 /// The subcommands.
@@ -33,7 +59,7 @@ pub enum Command {
     Render(RenderArgs),
     /// Write exercise sheets in the worksheet's style, with scene files and answer keys.
     Exercise(crate::exercise_cmd::ExerciseArgs),
-    /// Print the shader (GLSL 3.30 or WGSL) a scene compiles to: only the stages it needs.
+    /// Print the shader (GLSL 3.30 or WGSL) that draws a scene's shaded view: only the stages it needs.
     Shader(ShaderArgs),
     /// Write scene files as glref cases (JSON), to check them against a real OpenGL with
     /// the Mesa harness (`glref.py CASES.json OUT.json`) or with `phonglab eval`.
@@ -140,7 +166,7 @@ pub struct ShaderArgs {
 }
 
 fn shader_cmd(a: &ShaderArgs) -> Result<()> {
-    use phonglab_core::shader::{Lang, ShaderShading, generate};
+    use phonglab_core::shader::{Lang, ShaderShading};
     let doc = match &a.scene {
         Some(p) => load_scene_file(p)?,
         None => phonglab_core::Document::default(),
@@ -155,9 +181,10 @@ fn shader_cmd(a: &ShaderArgs) -> Result<()> {
         "phong" => ShaderShading::Phong,
         other => bail!("--shading {other:?}: try gouraud or phong"),
     };
-    let lit = Engine::<f64>::light_scene_vertex(&doc.scene)?;
-    let ex = explain(&doc.scene, &lit, Side::Front);
-    print!("{}", generate(&doc.scene, EvalOptions::default(), &ex, lang, shading).text(lang));
+    // Refuse a scene that does not evaluate with the engine's reason.
+    Engine::<f64>::light_scene_vertex(&doc.scene)?;
+    let shader = phonglab_core::shader::for_view(&doc, lang, shading).context("the scene does not evaluate")?;
+    print!("{}", shader.text(lang));
     Ok(())
 }
 

@@ -1,6 +1,7 @@
 //! The command line, run as a real process: `eval` and `explain`.
 
 use std::io::Write;
+use std::path::Path;
 use std::process::{Command, Output};
 
 fn phonglab(args: &[&str]) -> Output {
@@ -380,4 +381,26 @@ fn the_pdf_renders_and_holds_every_answer() {
         }
     }
     assert!(values > 100, "{values} answers checked");
+}
+
+#[test]
+fn shader_prints_only_the_stages_the_scene_needs() {
+    let spot = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    for lang in ["glsl", "wgsl"] {
+        for shading in ["gouraud", "phong"] {
+            let with = phonglab(&["shader", "--scene", spot.to_str().unwrap(), "--lang", lang, "--shading", shading]);
+            assert!(with.status.success(), "{}", String::from_utf8_lossy(&with.stderr));
+            let with = String::from_utf8(with.stdout).unwrap();
+            let without =
+                String::from_utf8(phonglab(&["shader", "--lang", lang, "--shading", shading]).stdout).unwrap();
+            assert!(with.contains("spot_cos_cutoff"), "{lang} {shading}: the spotlight's cone test\n{with}");
+            assert!(!without.contains("spot_"), "{lang} {shading}: the worksheet has no spotlight\n{without}");
+            // Phong lights per fragment: the lighting is in the fragment stage.
+            let fragment = with.split("fs_main").nth(1).or_else(|| with.split("fragment shader").nth(1)).unwrap();
+            assert_eq!(fragment.contains("spot_cos_cutoff"), shading == "phong", "{lang} {shading}");
+        }
+    }
+    let bad = phonglab(&["shader", "--lang", "hlsl"]);
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("try glsl or wgsl"));
 }

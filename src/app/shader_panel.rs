@@ -5,9 +5,8 @@
 
 use egui::text::LayoutJob;
 use egui::{Color32, FontId, RichText, TextFormat, Ui};
-use phonglab_core::explain::{Side, explain};
-use phonglab_core::shader::{Lang, ShaderShading, generate};
-use phonglab_core::{Document, Engine, EvalOptions, Shading};
+use phonglab_core::shader::{Lang, ShaderShading, for_view};
+use phonglab_core::{Document, Shading};
 
 /// The window's state.
 #[derive(Clone, Debug, Default)]
@@ -52,13 +51,12 @@ pub fn line_diff(old: &str, new: &str) -> (Vec<String>, Vec<String>) {
     (added, removed)
 }
 
-/// The program for `doc` (its view's shading: Phong per fragment, otherwise per vertex).
+/// The program that draws `doc`'s shaded view (its shading: Phong per fragment,
+/// otherwise per vertex), as the GPU view runs it ([`phonglab_core::shader::for_view`]).
 pub fn program_text(doc: &Document, wgsl: bool) -> String {
     let lang = if wgsl { Lang::Wgsl } else { Lang::Glsl };
     let shading = if doc.view.shading == Shading::Phong { ShaderShading::Phong } else { ShaderShading::Gouraud };
-    let Ok(engine) = Engine::<f64>::new(&doc.scene) else { return String::new() };
-    let ex = explain(&doc.scene, &engine.light(&doc.scene.vertex), Side::Front);
-    generate(&doc.scene, EvalOptions::default(), &ex, lang, shading).text(lang)
+    for_view(doc, lang, shading).map(|s| s.text(lang)).unwrap_or_default()
 }
 
 const KEYWORDS: &[&str] = &[

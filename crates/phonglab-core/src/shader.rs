@@ -16,7 +16,7 @@
 use std::fmt::Write as _;
 
 use crate::explain::{Explanation, StepKind};
-use crate::lighting::{EvalOptions, Renormalize};
+use crate::lighting::EvalOptions;
 use crate::plan::{Key, Program, SourceKind, Stage};
 use crate::rules::{NormalTransform, SpecularGate, SpecularModel};
 use crate::scene::Scene;
@@ -398,6 +398,21 @@ fn indent(lines: &[String]) -> String {
     lines.iter().map(|l| format!("    {l}\n")).collect()
 }
 
+/// The program for `scene` under `options`, with the step numbers of the scene's own worked
+/// calculation (front side), or `None` when the scene does not evaluate.
+pub fn generate_for(scene: &Scene, options: EvalOptions, lang: Lang, shading: ShaderShading) -> Option<Shader> {
+    let lit = crate::Engine::<f64>::new(scene).ok()?.light(&scene.vertex);
+    let ex = crate::explain::explain(scene, &lit, crate::explain::Side::Front);
+    Some(generate(scene, options, &ex, lang, shading))
+}
+
+/// The program that draws `doc`'s shaded view: its scene as the view lights it (the view's
+/// camera and spin, or the demo's object space) and the view's renormalisation. What the
+/// app's Shader window shows, what its GPU view runs and what `phonglab shader` prints.
+pub fn for_view(doc: &crate::Document, lang: Lang, shading: ShaderShading) -> Option<Shader> {
+    generate_for(&doc.shaded_scene(), doc.view.eval_options(crate::PowFn::Exact), lang, shading)
+}
+
 /// Generates the program for `scene` (its key under `options`), with step numbers taken
 /// from `ex` (the scene's worked calculation).
 pub fn generate(scene: &Scene, options: EvalOptions, ex: &Explanation, lang: Lang, shading: ShaderShading) -> Shader {
@@ -455,7 +470,7 @@ pub fn generate(scene: &Scene, options: EvalOptions, ex: &Explanation, lang: Lan
             }
         }
         ShaderShading::Phong => {
-            let program = Program::compile(&key, SourceKind::EyeRaw(Renormalize::Exact));
+            let program = Program::compile(&key, SourceKind::EyeRaw(options.renormalize));
             let mut frag_uniforms: Vec<Uniform> = Vec::new();
             let body = lighting(scene, &key, &program, ex, &s, &mut frag_uniforms);
             let two = key.two_sided;
