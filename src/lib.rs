@@ -6,5 +6,6 @@ pub mod cli;
 pub mod cost_cmd;
 pub mod egui_cpu;
 pub mod exercise_cmd;
+pub mod gpu;
 pub mod image_io;
 pub mod scenes;

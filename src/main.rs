@@ -9,7 +9,7 @@ fn main() -> ExitCode {
     let args = cli::Cli::parse();
     match args.command {
         Some(command) => cli::run(command),
-        None => match phonglab::app::run(args.file) {
+        None => match phonglab::app::run(args.file, args.renderer.into()) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {
                 eprintln!("phonglab: cannot open the window: {e}");

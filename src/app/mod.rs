@@ -8,6 +8,7 @@ pub mod controls;
 pub mod cost;
 pub mod evaluated;
 pub mod files;
+pub mod gpu_view;
 pub mod help;
 pub mod layout;
 pub mod lobe;
@@ -406,8 +407,16 @@ impl PhongLabApp {
     /// Restores the last session's document when there is one and it loads; otherwise
     /// starts on the worksheet, saying why (`notice`: what was found before eframe started,
     /// see [`persist::set_aside_unreadable_storage`]).
-    pub fn new(cc: &eframe::CreationContext<'_>, notice: Option<String>, file: Option<std::path::PathBuf>) -> Self {
+    pub fn new(
+        cc: &eframe::CreationContext<'_>,
+        notice: Option<String>,
+        file: Option<std::path::PathBuf>,
+        renderer: gpu_view::RendererChoice,
+    ) -> Self {
         let mut state = AppState::worksheet();
+        // The shaded view can run the scene's generated WGSL on eframe's adapter.
+        state.gpu = cc.wgpu_render_state.as_ref().map(gpu_view::install);
+        state.ui.renderer = renderer;
         let text = cc.storage.and_then(|s| s.get_string(persist::DOCUMENT_KEY));
         state.ui.layout =
             layout::Layout::from_ron(cc.storage.and_then(|s| s.get_string(layout::LAYOUT_KEY)).as_deref());
@@ -444,8 +453,9 @@ impl eframe::App for PhongLabApp {
     }
 }
 
-/// Opens the window, on the scene file `file` when one is given.
-pub fn run(file: Option<std::path::PathBuf>) -> eframe::Result {
+/// Opens the window, on the scene file `file` when one is given, with the shaded view
+/// drawn as `renderer` says.
+pub fn run(file: Option<std::path::PathBuf>, renderer: gpu_view::RendererChoice) -> eframe::Result {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("phonglab")
@@ -454,5 +464,9 @@ pub fn run(file: Option<std::path::PathBuf>) -> eframe::Result {
         ..Default::default()
     };
     let notice = eframe::storage_dir(persist::APP_ID).and_then(|d| persist::set_aside_unreadable_storage(&d));
-    eframe::run_native(persist::APP_ID, options, Box::new(|cc| Ok(Box::new(PhongLabApp::new(cc, notice, file)))))
+    eframe::run_native(
+        persist::APP_ID,
+        options,
+        Box::new(|cc| Ok(Box::new(PhongLabApp::new(cc, notice, file, renderer)))),
+    )
 }

@@ -10,8 +10,9 @@ use glam::{DVec3, DVec4};
 use phonglab_core::library::DemoDeparture;
 use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, Shading, Vertex, View};
 
+use super::gpu_view::{self, Picture};
 use super::state::{AppState, Evaluated, Message};
-pub use super::view_cache::{ShadedCache, ViewCache, mesh_for};
+pub use super::view_cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
 
 /// The pipeline's choices where OpenGL and the Phong demo differ, and the demo's
 /// departures as switches: each flipped one is corrected in a second picture beside the
@@ -152,6 +153,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
                     open_obj_requested = Some(std::path::PathBuf::from(state.ui.obj_path.trim()));
                 }
             });
+            renderer_ui(ui, state, &cache.main.drawn_by);
         });
     }
     let departures: Vec<DemoDeparture> = DemoDeparture::ALL.into_iter().filter(|d| d.present_in(&state.doc)).collect();
@@ -182,28 +184,40 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
     let side = width.min(avail.y - caption_lines * ui.text_style_height(&egui::TextStyle::Small) - 8.0).max(64.0);
     let ppp = ui.ctx().pixels_per_point();
     let px = ((side * ppp) as usize).clamp(64, 1024);
+    // One texel a screen pixel (no resampling), unless the view is wider than 1024 pixels.
+    let side = if (side * ppp) as usize <= 1024 { px as f32 / ppp } else { side };
     let camera = state.doc.view.camera;
-    if let Err(e) = cache.main.render(ui.ctx(), &state.doc, state.ui.pow, px, "shaded view") {
-        state.message = Some(Message::Refused(format!("The shaded view cannot render this scene: {e}")));
-    }
-    if let Some(c) = &corrected
-        && let Err(e) = cache.corrected.render(ui.ctx(), c, state.ui.pow, px, "corrected view")
-    {
-        state.message = Some(Message::Refused(format!("The corrected view cannot render: {e}")));
-    }
+    let main_gpu = match prepare_picture(ui.ctx(), state, &mut cache.main, &state.doc, px, 0, "shaded view") {
+        Ok(p) => p,
+        Err(e) => {
+            state.message = Some(Message::Refused(format!("The shaded view cannot render this scene: {e}")));
+            None
+        }
+    };
+    let corrected_gpu = match &corrected {
+        Some(c) => match prepare_picture(ui.ctx(), state, &mut cache.corrected, c, px, 1, "corrected view") {
+            Ok(p) => p,
+            Err(e) => {
+                state.message = Some(Message::Refused(format!("The corrected view cannot render: {e}")));
+                None
+            }
+        },
+        None => None,
+    };
     let scene = state.doc.shaded_scene();
     if heat {
         state.cost.want_heat_map(&scene, &state.doc.view, state.doc.view.eval_options(state.ui.pow));
     }
-    let Some(tex) = &cache.main.texture else { return };
     let size = egui::vec2(side, side);
     let caption = format!(
-        "{} {}: {} ms per frame{}",
+        "{} {}: {}{}",
         state.doc.view.object.label(),
         state.doc.view.shading.label(),
-        fmt_ms(cache.main.last_ms),
+        drawn_caption(&cache.main),
         if corrected.is_some() { " (the demo's own)" } else { "" }
     );
+    let mut main_gpu = main_gpu;
+    let mut corrected_gpu = corrected_gpu;
     let resp = ui
         .horizontal_top(|ui| {
             let resp = ui
@@ -211,14 +225,14 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
                     // Captions wrap within the picture's width rather than widen its column.
                     ui.set_max_width(side);
                     let label = ui.small(caption);
-                    ui.add(egui::Image::new((tex.id(), size)).sense(Sense::click_and_drag()))
+                    picture_ui(ui, &cache.main, main_gpu.take(), size, Sense::click_and_drag())
                         .on_hover_text(
                             "Drag to orbit, scroll to zoom, click the surface to make that vertex the worked calculation's",
                         )
                         .labelled_by(label.id)
                 })
                 .inner;
-            if let (Some(c), Some(tex)) = (&corrected, &cache.corrected.texture) {
+            if corrected.is_some() {
                 ui.vertical(|ui| {
                     ui.set_max_width(side);
                     let fixed: Vec<&str> = DemoDeparture::ALL
@@ -228,8 +242,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
                         .map(|(d, _)| d.fix_label())
                         .collect();
                     let label = ui.small(format!("Corrected: {}", fixed.join(", ")));
-                    ui.add(egui::Image::new((tex.id(), size))).labelled_by(label.id);
-                    let _ = c;
+                    picture_ui(ui, &cache.corrected, corrected_gpu.take(), size, Sense::hover()).labelled_by(label.id);
                 });
             } else if heat {
                 super::cost::heat_map_ui(ui, state, side);
@@ -268,6 +281,14 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
     {
         let rel = (p - resp.rect.min) / size;
         let (x, y) = ((rel.x * px as f32) as usize, (rel.y * px as f32) as usize);
+        // Picking reads the CPU renderer's triangle buffer: after a GPU frame, the CPU
+        // renderer draws the same picture first (only on a click).
+        if matches!(cache.main.drawn_by, DrawnBy::Gpu { .. })
+            && let Err(e) = cache.main.render(ui.ctx(), &state.doc, state.ui.pow, px, "shaded view")
+        {
+            state.message = Some(Message::Refused(format!("The shaded view cannot render this scene: {e}")));
+            return;
+        }
         let mesh = mesh_for(&mut cache.main.mesh, &state.doc.view);
         if let Some(i) = cache.main.renderer.pick(mesh, x, y) {
             let c = state.doc.with_vertex_as_shaded(Vertex::from_f32(mesh.positions[i], mesh.normals[i]));
@@ -463,6 +484,86 @@ pub fn corrected_document(doc: &Document, fixes: &[bool; 3]) -> Option<Document>
         }
     }
     any.then_some(c)
+}
+
+/// The renderer choice, and who drew the last picture (and why not the GPU).
+fn renderer_ui(ui: &mut Ui, state: &mut AppState, drawn_by: &DrawnBy) {
+    ui.horizontal_wrapped(|ui| {
+        let l = ui.label("Renderer");
+        egui::ComboBox::from_id_salt("renderer")
+            .selected_text(state.ui.renderer.label())
+            .show_ui(ui, |ui| {
+                for c in gpu_view::RendererChoice::ALL {
+                    ui.selectable_value(&mut state.ui.renderer, c, c.label());
+                }
+            })
+            .response
+            .labelled_by(l.id)
+            .on_hover_text(
+                "The CPU renderer is the reference; the GPU runs the scene's generated WGSL (Shader window)",
+            );
+    });
+    match drawn_by {
+        DrawnBy::Gpu { adapter } => {
+            ui.small(format!("Drawn on the GPU ({adapter}) by the scene's generated WGSL."));
+        }
+        DrawnBy::Cpu { why } => {
+            ui.small(format!("Drawn by the CPU renderer: {why}."));
+        }
+        DrawnBy::Nothing => {}
+    }
+}
+
+/// Draws `doc`'s picture for `cache`: on the GPU when the adapter, the renderer choice and
+/// the scene allow it (the picture to paint is returned), otherwise on the CPU renderer
+/// (into `cache`'s texture). `cache.drawn_by` says which, and why not the GPU.
+fn prepare_picture(
+    ctx: &egui::Context,
+    state: &AppState,
+    cache: &mut ViewCache,
+    doc: &Document,
+    px: usize,
+    slot: u64,
+    name: &str,
+) -> Result<Option<Picture>, String> {
+    let pow = state.ui.pow;
+    let why = match gpu_view::why_cpu(state.gpu.as_ref(), state.ui.renderer, doc, pow) {
+        Some(why) => why,
+        None => match cache.gpu_picture(doc, pow, px, slot) {
+            Ok(p) => {
+                let gpu = state.gpu.as_ref().expect("why_cpu says there is one");
+                cache.drawn_by = DrawnBy::Gpu { adapter: format!("{}, {}", gpu.name, gpu.backend) };
+                return Ok(Some(p));
+            }
+            Err(e) => e,
+        },
+    };
+    cache.render(ctx, doc, pow, px, name)?;
+    cache.drawn_by = DrawnBy::Cpu { why };
+    Ok(None)
+}
+
+/// The picture, `size` points: the GPU's through its paint callback, or the CPU
+/// renderer's texture.
+fn picture_ui(ui: &mut Ui, cache: &ViewCache, gpu: Option<Picture>, size: egui::Vec2, sense: Sense) -> egui::Response {
+    match (gpu, &cache.texture) {
+        (Some(p), _) => {
+            let (rect, resp) = ui.allocate_exact_size(size, sense);
+            gpu_view::paint(ui, rect, p);
+            resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "shaded view (GPU)"));
+            resp
+        }
+        (None, Some(tex)) => ui.add(egui::Image::new((tex.id(), size)).sense(sense)),
+        (None, None) => ui.allocate_exact_size(size, sense).1,
+    }
+}
+
+/// Who drew the picture, for its caption.
+fn drawn_caption(cache: &ViewCache) -> String {
+    match &cache.drawn_by {
+        DrawnBy::Gpu { adapter } => format!("on the GPU ({adapter})"),
+        _ => format!("{} ms per frame on the CPU", fmt_ms(cache.last_ms)),
+    }
 }
 
 fn fmt_ms(ms: f64) -> String {

@@ -66,6 +66,8 @@ pub struct UiState {
     pub layout: super::layout::Layout,
     /// The highlighted step moved this frame: the calculation scrolls to it.
     pub scroll_to_step: bool,
+    /// Which renderer draws the shaded view.
+    pub renderer: super::gpu_view::RendererChoice,
 }
 
 impl Default for UiState {
@@ -83,6 +85,7 @@ impl Default for UiState {
             obj_path: String::new(),
             layout: Default::default(),
             scroll_to_step: false,
+            renderer: Default::default(),
         }
     }
 }
@@ -106,6 +109,9 @@ pub struct AppState {
     pub quiz: super::quiz::QuizState,
     /// The Shader window.
     pub shader: super::shader_panel::ShaderState,
+    /// The wgpu adapter eframe runs on, when there is one (the shaded view can then be
+    /// drawn by the scene's generated WGSL).
+    pub gpu: Option<super::gpu_view::GpuInfo>,
 }
 
 impl AppState {

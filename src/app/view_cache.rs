@@ -2,21 +2,52 @@
 //! texture, re-rendered only when what it shows changes. Kept apart from the panel
 //! ([`super::shaded`]) so the app state can hold it without depending on the panel.
 
+use std::sync::{Arc, Mutex};
+
 use egui::{ColorImage, TextureHandle, TextureOptions};
 use phonglab_core::mesh::Mesh;
 use phonglab_core::render::Renderer;
 use phonglab_core::{Document, PowFn, Shading, View};
 
+use super::gpu_view::Picture;
+
 /// One picture's renderer, mesh and texture, kept between frames.
 #[derive(Default)]
 pub struct ViewCache {
     pub(crate) renderer: Renderer,
-    pub(crate) mesh: Option<(View, Mesh)>,
+    pub(crate) mesh: Option<(View, Arc<Mesh>)>,
     pub(crate) texture: Option<TextureHandle>,
     /// What the texture shows; re-rendered only when it changes.
     key: Option<String>,
-    /// The last frame's render time in milliseconds.
+    /// The last frame's render time in milliseconds (on the CPU).
     pub last_ms: f64,
+    /// Who drew the last picture: the GPU (the adapter's name) or the CPU renderer (and
+    /// why not the GPU).
+    pub drawn_by: DrawnBy,
+    /// The generated program of the last GPU picture.
+    gpu_program: Option<GpuProgram>,
+    /// A failure of the GPU picture reported by its paint callback, with the program that
+    /// failed (that program is not tried again).
+    gpu_error: Arc<Mutex<Option<String>>>,
+    failed_program: Option<Arc<str>>,
+}
+
+/// Who drew a picture of the shaded view.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub enum DrawnBy {
+    /// Nothing drawn yet.
+    #[default]
+    Nothing,
+    /// The core's CPU renderer, and why not the GPU.
+    Cpu {
+        /// Why the GPU did not draw it.
+        why: String,
+    },
+    /// The scene's generated WGSL on the GPU, through a paint callback.
+    Gpu {
+        /// The adapter's name and API.
+        adapter: String,
+    },
 }
 
 /// The shaded view's pictures: the document's, and the corrected one beside it when the
@@ -56,9 +87,9 @@ impl ViewCache {
         if self.key.as_deref() == Some(key.as_str()) && self.texture.is_some() {
             return Ok(());
         }
-        let mesh = mesh_for(&mut self.mesh, &doc.view);
+        let mesh = mesh_for(&mut self.mesh, &doc.view).clone();
         let t = std::time::Instant::now();
-        let (img, _) = self.renderer.render(&setup.job(mesh), px, px).map_err(|e| e.to_string())?;
+        let (img, _) = self.renderer.render(&setup.job(&mesh), px, px).map_err(|e| e.to_string())?;
         self.last_ms = t.elapsed().as_secs_f64() * 1e3;
         let image = ColorImage::from_rgba_unmultiplied([img.width, img.height], &img.rgba);
         match &mut self.texture {
@@ -68,10 +99,52 @@ impl ViewCache {
         self.key = Some(key);
         Ok(())
     }
+
+    /// The GPU picture of `doc`'s shaded view at `px` pixels square (slot `slot`), or why
+    /// it cannot be drawn on the GPU (a program the driver refused is not tried again).
+    pub(crate) fn gpu_picture(&mut self, doc: &Document, pow: PowFn, px: usize, slot: u64) -> Result<Picture, String> {
+        if let Some(e) = self.gpu_error.lock().unwrap_or_else(|e| e.into_inner()).take() {
+            self.failed_program = self.gpu_program.take().map(|p| p.wgsl);
+            return Err(format!("the GPU refused the generated program: {e}"));
+        }
+        let setup = doc.shaded_setup(pow);
+        let key = format!("{:?}|{:?}|{:?}", setup.scene, setup.options, doc.view.shading);
+        if self.gpu_program.as_ref().is_none_or(|p| p.key != key) {
+            let shader = crate::gpu::wgsl_for(&setup.scene, setup.options, doc.view.shading)
+                .ok_or("no program is generated for this shading")?;
+            self.gpu_program = Some(GpuProgram { key, wgsl: shader.vertex.as_str().into(), shader });
+        }
+        let program = self.gpu_program.as_ref().expect("set just above");
+        if self.failed_program.as_ref() == Some(&program.wgsl) {
+            return Err("the GPU refused the generated program".into());
+        }
+        let uniforms = crate::gpu::uniform_bytes(&program.shader, &setup.scene, &setup.clip_from_object)?;
+        let wgsl = program.wgsl.clone();
+        Ok(Picture {
+            slot,
+            wgsl,
+            uniforms,
+            mesh: mesh_for(&mut self.mesh, &doc.view).clone(),
+            background: doc.view.background,
+            px: px as u32,
+            error: self.gpu_error.clone(),
+        })
+    }
+}
+
+/// A generated program kept between frames (regenerated when the scene changes; the GPU
+/// pipeline is rebuilt only when its text does).
+struct GpuProgram {
+    /// The scene, options and shading it was generated for.
+    key: String,
+    /// The WGSL module.
+    wgsl: Arc<str>,
+    /// The program, with its uniform list.
+    shader: phonglab_core::shader::Shader,
 }
 
 /// The view's mesh, rebuilt only when what shapes it changes.
-pub fn mesh_for<'a>(cache: &'a mut Option<(View, Mesh)>, view: &View) -> &'a Mesh {
+pub fn mesh_for<'a>(cache: &'a mut Option<(View, Arc<Mesh>)>, view: &View) -> &'a Arc<Mesh> {
     let stale = cache.as_ref().is_none_or(|(v, _)| {
         let mut a = v.clone();
         let mut b = view.clone();
@@ -90,7 +163,7 @@ pub fn mesh_for<'a>(cache: &'a mut Option<(View, Mesh)>, view: &View) -> &'a Mes
         a != b
     });
     if stale {
-        *cache = Some((view.clone(), view.mesh()));
+        *cache = Some((view.clone(), Arc::new(view.mesh())));
     }
     &cache.as_ref().expect("set just above").1
 }
