@@ -12,7 +12,10 @@
 //! assert!((lit.front.primary[0] - 0.05958709).abs() < 1e-7);
 //! ```
 //!
-//! The modules, by group (ARCHITECTURE.md says how data flows between them):
+//! The modules, by group, each group a directory (`src/model/`, `src/equation/`, ...);
+//! every module is also re-exported at the crate's root, so `phonglab_core::scene` and
+//! `phonglab_core::model::scene` name the same module (ARCHITECTURE.md says how data flows
+//! between them):
 //!
 //! | group | modules |
 //! |---|---|
@@ -22,36 +25,27 @@
 //! | specialise: only the stages a scene needs | [`plan`], [`specialised`] |
 //! | raster: meshes and the CPU renderer | [`mesh`], [`render`], [`shaded`] |
 //! | formats: text in and out | [`document`], [`glref`] |
+//! | teach: for the classroom | [`exercise`], [`quiz`], [`shader`] |
 //! | study: what accuracy costs | [`cost`] |
 
-pub mod breakdown;
-pub mod camera;
-pub mod cost;
-pub mod document;
-pub mod error;
-pub mod exact_pow;
-pub mod exercise;
-pub mod explain;
-pub mod glref;
-pub mod library;
-pub mod lighting;
-pub mod materials;
-pub mod mesh;
-pub mod plan;
-pub mod pow;
-pub mod presets;
-pub mod quiz;
-pub mod real;
-pub mod render;
-pub mod robust;
-pub mod rules;
-pub mod scene;
-pub mod shaded;
-pub mod shader;
-pub mod specialised;
-pub mod transform;
-pub mod validate;
-pub mod view;
+pub mod equation;
+pub mod formats;
+pub mod model;
+pub mod numerics;
+pub mod raster;
+pub mod specialise;
+pub mod study;
+pub mod teach;
+
+// Each module also at the crate's root, so paths name the module, not its group.
+pub use equation::{breakdown, error, explain, lighting, validate};
+pub use formats::{document, glref};
+pub use model::{camera, library, materials, presets, rules, scene, transform, view};
+pub use numerics::{exact_pow, pow, real, robust};
+pub use raster::{mesh, render, shaded};
+pub use specialise::{plan, specialised};
+pub use study::cost;
+pub use teach::{exercise, quiz, shader};
 
 pub use breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerms, VertexLighting};
 pub use camera::CameraSpec;

@@ -7,7 +7,7 @@ use glam::DVec4;
 use crate::scene::Material;
 
 /// The table as shipped in `assets/materials-classic.csv` (compiled in; the core reads no files).
-pub const CLASSIC_CSV: &str = include_str!("../../../assets/materials-classic.csv");
+pub const CLASSIC_CSV: &str = include_str!("../../../../assets/materials-classic.csv");
 
 /// A named material of the classic table.
 #[derive(Clone, Debug, PartialEq)]

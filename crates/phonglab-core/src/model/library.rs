@@ -118,7 +118,7 @@ pub fn documents() -> Vec<(String, Document)> {
     v
 }
 
-/// The benchmark's render job for `scene` (a [`bench_scene`] frame): its projection, Flat
+/// The benchmark's render job for `scene` (a [`crate::presets::bench_scene`] frame): its projection, Flat
 /// per face, no culling, exact pow.
 pub fn bench_job<'a>(scene: &'a Scene, mesh: &'a crate::mesh::Mesh, shading: Shading) -> crate::render::Job<'a> {
     crate::render::Job {

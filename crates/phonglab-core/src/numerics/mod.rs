@@ -1,0 +1,6 @@
+//! Where floating point needs care: compensated sums, scaled lengths, zero-safe products, the powers.
+
+pub mod exact_pow;
+pub mod pow;
+pub mod real;
+pub mod robust;

@@ -1,0 +1,4 @@
+//! Only the stages a scene needs: the key, the stage list compiled from it, and the engine that runs it.
+
+pub mod plan;
+pub mod specialised;

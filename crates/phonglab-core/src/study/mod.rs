@@ -1,0 +1,3 @@
+//! What accuracy costs in time and in error.
+
+pub mod cost;

@@ -1,0 +1,5 @@
+//! For the classroom: generated exercises, the quiz's checks, and the shader a scene compiles to.
+
+pub mod exercise;
+pub mod quiz;
+pub mod shader;
