@@ -38,16 +38,6 @@ pub enum RendererArg {
     Gpu,
 }
 
-impl From<RendererArg> for crate::app::gpu_view::RendererChoice {
-    fn from(a: RendererArg) -> Self {
-        match a {
-            RendererArg::Auto => Self::Auto,
-            RendererArg::Cpu => Self::Cpu,
-            RendererArg::Gpu => Self::Gpu,
-        }
-    }
-}
-
 /// The subcommands.
 #[derive(Subcommand, Debug)]
 pub enum Command {

@@ -3,13 +3,21 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use phonglab::cli;
+use phonglab::app::gpu_view::RendererChoice;
+use phonglab::cli::{self, RendererArg};
 
 fn main() -> ExitCode {
     let args = cli::Cli::parse();
     match args.command {
         Some(command) => cli::run(command),
-        None => match phonglab::app::run(args.file, args.renderer.into()) {
+        None => match phonglab::app::run(
+            args.file,
+            match args.renderer {
+                RendererArg::Auto => RendererChoice::Auto,
+                RendererArg::Cpu => RendererChoice::Cpu,
+                RendererArg::Gpu => RendererChoice::Gpu,
+            },
+        ) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {
                 eprintln!("phonglab: cannot open the window: {e}");
