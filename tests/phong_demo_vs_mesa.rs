@@ -9,32 +9,32 @@
 //! per channel; where an object covers under 1 % of the image (the cylinder seen end-on)
 //! the numbers of covered pixels agree within 15 % instead.
 
+use phonglab::image_io::Difference;
 use phonglab_core::render::Renderer;
 use phonglab_core::{ObjectKind, Shading, library};
 
 /// The frames kept (1: the first frame the program draws; 250: 125 degrees on).
 const FRAMES: [u32; 2] = [1, 250];
 
-fn mesa(frame: u32, object: ObjectKind, shading: Shading) -> (usize, usize, Vec<[u8; 3]>) {
+/// Mesa's picture: width, height, RGBA8.
+fn mesa_rgba(frame: u32, object: ObjectKind, shading: Shading) -> (usize, usize, Vec<u8>) {
     let path = format!(
         "{}/tests/data/seed_demo/seed_{frame}_{}_{}.png",
         env!("CARGO_MANIFEST_DIR"),
         object.label().to_lowercase(),
         shading.label().to_lowercase()
     );
-    let (w, h, rgba) = phonglab::image_io::read_png(std::path::Path::new(&path)).unwrap();
+    phonglab::image_io::read_png(std::path::Path::new(&path)).unwrap()
+}
+
+fn mesa(frame: u32, object: ObjectKind, shading: Shading) -> (usize, usize, Vec<[u8; 3]>) {
+    let (w, h, rgba) = mesa_rgba(frame, object, shading);
     (w, h, rgba.chunks(4).map(|c| [c[0], c[1], c[2]]).collect())
 }
 
-struct Comparison {
-    iou: f64,
-    mad: [f64; 3],
-    ours: usize,
-    theirs: usize,
-}
-
-fn compare(frame: u32, object: ObjectKind, shading: Shading) -> Comparison {
-    let (w, h, theirs) = mesa(frame, object, shading);
+/// Ours (first) against Mesa's (second).
+fn compare(frame: u32, object: ObjectKind, shading: Shading) -> Difference {
+    let (w, h, theirs) = mesa_rgba(frame, object, shading);
     let mut doc = library::phong_demo_document();
     doc.view.object = object;
     doc.view.shading = shading;
@@ -43,49 +43,22 @@ fn compare(frame: u32, object: ObjectKind, shading: Shading) -> Comparison {
     let setup = doc.shaded_setup(phonglab_core::PowFn::Exact);
     let mut r = Renderer::new();
     let (img, _) = r.render(&setup.job(&mesh), w, h).unwrap();
-    let (mut inter, mut union, mut ours, mut theirs_n) = (0usize, 0usize, 0usize, 0usize);
-    let mut sum = [0.0f64; 3];
-    for y in 0..h {
-        for x in 0..w {
-            // Covered, as the harness counts it: not black. (The demo's ambient alone is
-            // 0.2 red, so a covered pixel is never black.)
-            let o = img.rgb(x, y);
-            let t = theirs[y * w + x];
-            let (co, ct) = (o != [0; 3], t != [0; 3]);
-            ours += co as usize;
-            theirs_n += ct as usize;
-            union += (co || ct) as usize;
-            if co && ct {
-                inter += 1;
-                for c in 0..3 {
-                    sum[c] += (o[c] as f64 - t[c] as f64).abs();
-                }
-            }
-        }
-    }
-    Comparison {
-        iou: inter as f64 / union.max(1) as f64,
-        mad: sum.map(|s| s / inter.max(1) as f64),
-        ours,
-        theirs: theirs_n,
-    }
+    // Covered, as the harness counts it: not black. (The demo's ambient alone is 0.2 red,
+    // so a covered pixel is never black.)
+    Difference::of(&img.rgba, &theirs, [0; 3])
 }
 
 fn check(frame: u32, object: ObjectKind, shading: Shading) {
     let c = compare(frame, object, shading);
     let what = format!("frame {frame} {} {}", object.label(), shading.label());
-    eprintln!(
-        "{what}: IoU {:.4}, MAD {:.3} {:.3} {:.3} /255, covered ours {} Mesa {}",
-        c.iou, c.mad[0], c.mad[1], c.mad[2], c.ours, c.theirs
-    );
-    let share = c.theirs as f64 / (512.0 * 512.0);
-    if share < 0.01 {
+    let (ours, theirs) = (c.both + c.only_first, c.both + c.only_second);
+    eprintln!("{what}: IoU {:.4}, {c}; covered ours {ours} Mesa {theirs}", c.iou());
+    if c.coverage_second() < 0.01 {
         // Edge-on (no pixel at all) both ways, or within 15 %.
-        let ratio =
-            if c.theirs == 0 { if c.ours == 0 { 1.0 } else { f64::INFINITY } } else { c.ours as f64 / c.theirs as f64 };
-        assert!((0.85..=1.15).contains(&ratio), "{what}: covered {} vs Mesa's {}", c.ours, c.theirs);
+        let ratio = if theirs == 0 { if ours == 0 { 1.0 } else { f64::INFINITY } } else { ours as f64 / theirs as f64 };
+        assert!((0.85..=1.15).contains(&ratio), "{what}: covered {ours} vs Mesa's {theirs}");
     } else {
-        assert!(c.iou >= 0.97, "{what}: IoU {}", c.iou);
+        assert!(c.iou() >= 0.97, "{what}: IoU {}", c.iou());
         assert!(c.mad.iter().all(|m| *m <= 3.0), "{what}: mean absolute difference {:?}", c.mad);
     }
 }

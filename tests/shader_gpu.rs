@@ -5,6 +5,7 @@
 //! the silhouette, and a mean difference over the covered pixels within 1/255 per channel,
 //! Gouraud and Phong.
 
+use phonglab::image_io::Difference;
 use phonglab_core::mesh::sphere;
 use phonglab_core::render::{Job, Renderer};
 use phonglab_core::shader::ShaderShading;
@@ -42,27 +43,11 @@ fn gpu_image(job: &Job<'_>) -> (Vec<u8>, Vec<u8>, [u8; 3]) {
 }
 
 fn compare(what: &str, shading: ShaderShading, (gpu, cpu, bg): (Vec<u8>, Vec<u8>, [u8; 3])) {
-    let covered = |img: &[u8], i: usize| img[i * 4..i * 4 + 3] != bg;
-    let n = (SIZE * SIZE) as usize;
-    let (mut both, mut only) = (0usize, 0usize);
-    let mut sum = [0f64; 3];
-    for i in 0..n {
-        match (covered(&gpu, i), covered(&cpu, i)) {
-            (true, true) => {
-                both += 1;
-                for c in 0..3 {
-                    sum[c] += (gpu[i * 4 + c] as f64 - cpu[i * 4 + c] as f64).abs();
-                }
-            }
-            (false, false) => {}
-            _ => only += 1,
-        }
-    }
-    let mad = sum.map(|s| s / both.max(1) as f64);
-    println!("{what} {shading:?}: {both} pixels both, {only} in one only; MAD per channel {mad:?} (of 255)");
-    assert!(both > 2_000, "{what}: {both}");
-    assert!(only as f64 <= 0.01 * both as f64, "{what}: coverage differs on {only} pixels of {both}");
-    assert!(mad.iter().all(|m| *m <= 1.0), "{what} {shading:?}: mean difference {mad:?} > 1/255");
+    let d = Difference::of(&gpu, &cpu, bg);
+    println!("{what} {shading:?}: {d}");
+    assert!(d.both > 2_000, "{what}: {d}");
+    assert!(d.only_one() as f64 <= 0.01 * d.both as f64, "{what}: coverage differs: {d}");
+    assert!(d.mad.iter().all(|m| *m <= 1.0), "{what} {shading:?}: mean difference > 1/255: {d}");
 }
 
 #[test]

@@ -15,6 +15,7 @@
 
 use std::path::{Path, PathBuf};
 
+use phonglab::image_io::Difference;
 use phonglab_core::mesh::{Mesh, sphere};
 use phonglab_core::render::{Job, Renderer};
 use phonglab_core::shader::{Lang, ShaderShading, generate_for, uniform_value};
@@ -156,25 +157,11 @@ fn the_generated_glsl_under_mesa_draws_what_the_cpu_renderer_draws() {
             let mut r = Renderer::new();
             let cpu = r.render(&s.job(cpu_shading), SIZE, SIZE).unwrap().0;
             let bg = s.background.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
-            let (mut both, mut only, mut sum) = (0usize, 0usize, [0f64; 3]);
-            for i in 0..SIZE * SIZE {
-                let (m, c) = (&mesa[i * 4..i * 4 + 3], &cpu.rgba[i * 4..i * 4 + 3]);
-                match (m != bg, c != bg) {
-                    (true, true) => {
-                        both += 1;
-                        for k in 0..3 {
-                            sum[k] += (m[k] as f64 - c[k] as f64).abs();
-                        }
-                    }
-                    (false, false) => {}
-                    _ => only += 1,
-                }
-            }
-            let mad = sum.map(|x| x / both.max(1) as f64);
-            println!("{name}: {both} covered in both, {only} in one only, MAD {mad:?} of 255");
-            assert!(both > 300, "{name}: only {both} pixels drawn");
-            assert_eq!(only, 0, "{name}: coverage differs on {only} pixels");
-            assert!(mad.iter().all(|m| *m <= 1.0), "{name}: mean difference {mad:?} > 1/255");
+            let d = Difference::of(&mesa, &cpu.rgba, bg);
+            println!("{name}: {d}");
+            assert!(d.both > 300, "{name}: only {} pixels drawn", d.both);
+            assert_eq!(d.only_one(), 0, "{name}: coverage differs: {d}");
+            assert!(d.mad.iter().all(|m| *m <= 1.0), "{name}: mean difference > 1/255: {d}");
             checked += 1;
         }
     }

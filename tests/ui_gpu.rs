@@ -9,6 +9,7 @@ use egui_kittest::kittest::Queryable;
 use phonglab::app::gpu_view::{self, RendererChoice};
 use phonglab::app::shaded::DrawnBy;
 use phonglab::app::{AppState, app_ui};
+use phonglab::image_io::Difference;
 use phonglab_core::render::Renderer;
 use phonglab_core::{PowFn, Shading};
 
@@ -33,9 +34,8 @@ fn harness(choice: RendererChoice, shading: Shading) -> Harness<'static, AppStat
 }
 
 /// The window's pixels under the shaded view against the CPU renderer's picture of the
-/// same document: (pixels covered in both, covered in one only, mean difference per
-/// channel over the first).
-fn compare_with_cpu(h: &mut Harness<'static, AppState>) -> (usize, usize, [f64; 3]) {
+/// same document.
+fn compare_with_cpu(h: &mut Harness<'static, AppState>) -> Difference {
     // The first image in the window is the shaded view.
     let rect = h.get_all_by_role(egui::accesskit::Role::Image).next().expect("the shaded view").rect();
     let screen = h.render().expect("the wgpu test renderer draws");
@@ -47,24 +47,19 @@ fn compare_with_cpu(h: &mut Harness<'static, AppState>) -> (usize, usize, [f64; 
     let cpu = renderer.render(&setup.job(&mesh), px, px).unwrap().0;
     let bg = state.doc.view.background.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
     let (x0, y0) = (rect.min.x.round() as u32, rect.min.y.round() as u32);
-    let (mut both, mut only, mut sum) = (0usize, 0usize, [0f64; 3]);
-    for y in 0..px {
-        for x in 0..px {
-            let s = screen.get_pixel(x0 + x as u32, y0 + y as u32).0;
-            let c = &cpu.rgba[(y * px + x) * 4..(y * px + x) * 4 + 4];
-            match (s[..3] != bg, c[..3] != bg) {
-                (true, true) => {
-                    both += 1;
-                    for k in 0..3 {
-                        sum[k] += (s[k] as f64 - c[k] as f64).abs();
-                    }
-                }
-                (false, false) => {}
-                _ => only += 1,
-            }
+    let mut under_view = Vec::with_capacity(px * px * 4);
+    for y in 0..px as u32 {
+        for x in 0..px as u32 {
+            under_view.extend_from_slice(&screen.get_pixel(x0 + x, y0 + y).0);
         }
     }
-    (both, only, sum.map(|s| s / both.max(1) as f64))
+    Difference::of(&under_view, &cpu.rgba, bg)
+}
+
+fn assert_matches(d: &Difference, what: &str) {
+    assert!(d.both > 20_000, "{what}: {d}");
+    assert!(d.only_one() as f64 <= 0.002 * d.both as f64, "{what}: coverage differs: {d}");
+    assert!(d.mad.iter().all(|m| *m <= 1.0), "{what}: {d}");
 }
 
 #[test]
@@ -76,11 +71,9 @@ fn asked_for_the_gpu_the_view_runs_the_generated_wgsl_and_draws_the_cpu_renderer
         // The CPU renderer did not run: it has no picture.
         assert_eq!(h.state().shaded.main.image_px(), 0);
         h.get_by_label_contains("on the GPU (llvmpipe");
-        let (both, only, mad) = compare_with_cpu(&mut h);
-        println!("{shading:?}: {both} pixels both, {only} in one only, MAD {mad:?} of 255");
-        assert!(both > 20_000, "{both}");
-        assert!(only as f64 <= 0.002 * both as f64, "coverage differs on {only} of {both}");
-        assert!(mad.iter().all(|m| *m <= 1.0), "{mad:?}");
+        let d = compare_with_cpu(&mut h);
+        println!("{shading:?}: {d}");
+        assert_matches(&d, &format!("{shading:?}"));
     }
 }
 
@@ -93,8 +86,7 @@ fn the_picture_follows_an_edit() {
     assert!(h.state_mut().apply(doc));
     h.run_steps(2);
     assert!(matches!(h.state().shaded.main.drawn_by, DrawnBy::Gpu { .. }));
-    let (both, only, mad) = compare_with_cpu(&mut h);
-    assert!(both > 20_000 && only as f64 <= 0.002 * both as f64 && mad.iter().all(|m| *m <= 1.0), "{mad:?}");
+    assert_matches(&compare_with_cpu(&mut h), "after the edit");
     assert_ne!(before.as_raw(), h.render().unwrap().as_raw(), "the edit changed the picture");
 }
 
