@@ -1,6 +1,8 @@
 //! The explorer UI, driven headless with egui_kittest: widgets found by their labels,
 //! clicked, typed into and dragged; the state and the displayed text checked.
 
+mod common;
+
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -209,16 +211,7 @@ fn copy_as_markdown_puts_the_table_on_the_clipboard() {
     let mut h = harness();
     h.get_by_label("Copy as Markdown").click();
     h.run_steps(1);
-    let copied: Vec<String> = h
-        .output()
-        .platform_output
-        .commands
-        .iter()
-        .filter_map(|c| match c {
-            egui::OutputCommand::CopyText(t) => Some(t.clone()),
-            _ => None,
-        })
-        .collect();
+    let copied = common::copied_text(&h);
     assert!(
         copied.iter().any(|t| t.contains("| # | step | formula | value | notes |") && t.contains("vlv = [0.79220526")),
         "{copied:?}"

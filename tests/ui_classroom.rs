@@ -2,6 +2,8 @@
 //! themes, walking the steps with the arrow keys, the vectors on the shaded object, the
 //! dragged light, the reflection lobe and Compare.
 
+mod common;
+
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -324,15 +326,6 @@ fn the_shader_window_shows_the_program_and_what_an_effect_adds() {
     h.get_by_label_contains("@vertex");
     h.get_by_label("Copy").click();
     h.run_steps(1);
-    let copied: Vec<String> = h
-        .output()
-        .platform_output
-        .commands
-        .iter()
-        .filter_map(|c| match c {
-            egui::OutputCommand::CopyText(t) => Some(t.clone()),
-            _ => None,
-        })
-        .collect();
+    let copied = common::copied_text(&h);
     assert!(copied.iter().any(|t| t.contains("fn vs_main") && t.contains("in_cone0")), "{copied:?}");
 }
