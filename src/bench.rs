@@ -72,6 +72,10 @@ pub struct LightingBenchArgs {
     /// Timed repetitions (the best is reported).
     #[arg(long, default_value_t = 5)]
     pub repeats: u32,
+    /// Also say where the specialised lighting's time goes: ns per vertex for loading,
+    /// each stage of the scene's program, and writing.
+    #[arg(long)]
+    pub stages: bool,
 }
 
 /// The benchmark's objects: gluSphere(1, 50, 50) and glutSolidTeapot(0.8).
@@ -196,6 +200,36 @@ fn lighting(a: &LightingBenchArgs) -> Result<()> {
     println!("scene general_ns_per_vertex specialised_ns_per_vertex speedup");
     for (name, g, s) in lighting_figures(a.vertices, a.repeats)? {
         println!("{name} {g:.2} {s:.2} {:.1}", g / s);
+    }
+    if a.stages {
+        stage_figures(a.vertices, a.repeats)?;
+    }
+    Ok(())
+}
+
+/// Where the specialised lighting's time goes, per scene: ns per vertex of each step of its
+/// program (the run with the least total of `repeats`).
+fn stage_figures(vertices: usize, repeats: u32) -> Result<()> {
+    let (pos, nrm) = sphere_points(vertices);
+    let mut out_buf = vec![[0.0f32; 4]; vertices];
+    println!("# where the specialised time goes (ns per vertex; reading the clock adds ~0.2 a step)");
+    println!("scene step ns_per_vertex");
+    for b in LightingBench::ALL {
+        let lighter = Lighter::new(&b.scene(), EvalOptions::default())?;
+        let total = |t: &phonglab_core::specialised::StageTimes| {
+            t.load + t.write + t.stages.iter().map(|(_, d)| *d).sum::<std::time::Duration>()
+        };
+        let best = (0..repeats.max(1))
+            .map(|_| lighter.light_batch_timed(&pos, &nrm, &mut out_buf))
+            .min_by_key(total)
+            .expect("at least one run");
+        let ns = |d: std::time::Duration| d.as_secs_f64() * 1e9 / vertices as f64;
+        println!("{} load {:.2}", b.name(), ns(best.load));
+        for (stage, d) in &best.stages {
+            println!("{} {stage:?} {:.2}", b.name(), ns(*d));
+        }
+        println!("{} write {:.2}", b.name(), ns(best.write));
+        println!("{} total {:.2}", b.name(), ns(total(&best)));
     }
     Ok(())
 }

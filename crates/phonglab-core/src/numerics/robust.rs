@@ -116,7 +116,7 @@ pub fn normalize_or_zero<S: Real>(v: S::V3) -> S::V3 {
 /// defines as 0 where the term is 0.
 #[inline(always)]
 pub fn mul0<S: Real>(a: S, b: S) -> S {
-    if a == S::ZERO || b == S::ZERO { S::ZERO } else { a * b }
+    if (a == S::ZERO) | (b == S::ZERO) { S::ZERO } else { a * b }
 }
 
 /// Component-wise [`mul0`] of a vector by a scalar.

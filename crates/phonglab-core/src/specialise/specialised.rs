@@ -29,6 +29,8 @@
 // The stages index parallel arrays by vertex: index loops are what vectorise here.
 #![allow(clippy::needless_range_loop)]
 
+use std::time::{Duration, Instant};
+
 use glam::{DVec3, Vec3};
 
 use crate::error::SceneError;
@@ -151,6 +153,34 @@ impl Source<'_> {
             }
         }
     }
+}
+
+/// What a run records besides its output: nothing, the stages it ran (what the tests
+/// check the program against), or the time each step took.
+enum Probe<'a> {
+    None,
+    Trace(&'a mut Vec<Stage>),
+    Time(&'a mut StageTimes),
+}
+
+/// The time a run spent in each step, summed over its chunks.
+#[derive(Clone, Debug, Default)]
+pub struct StageTimes {
+    /// Loading each chunk (transforming positions and normals into it) and clearing its sums.
+    pub load: Duration,
+    /// Each stage of the program, in order.
+    pub stages: Vec<(Stage, Duration)>,
+    /// Writing the colour sums out.
+    pub write: Duration,
+}
+
+/// The time since `*at`, which moves on to now.
+#[inline(always)]
+fn lap(at: &mut Instant) -> Duration {
+    let now = Instant::now();
+    let d = now - *at;
+    *at = now;
+    d
 }
 
 /// Per-chunk arrays, one array per component so loops vectorise.
@@ -326,7 +356,7 @@ impl Lighter {
     /// two-sided lighting) receive the colours of `positions[i]`, `normals[i]`.
     pub fn light_batch(&self, positions: &[Vec3], normals: &[Vec3], front: &mut [Lit], back: Option<&mut [Lit]>) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(Source::Object { positions, normals }, Output::Lit { front, back }, None);
+        self.run(Source::Object { positions, normals }, Output::Lit { front, back }, Probe::None);
     }
 
     /// [`Lighter::light_batch`] writing only each side's colour sum (primary + secondary
@@ -339,7 +369,7 @@ impl Lighter {
         back: Option<&mut [[f32; 4]]>,
     ) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(Source::Object { positions, normals }, Output::Sum { front, back }, None);
+        self.run(Source::Object { positions, normals }, Output::Sum { front, back }, Probe::None);
     }
 
     /// [`Lighter::light_batch_eye_sum`] with normals not yet normalised: each is
@@ -353,7 +383,7 @@ impl Lighter {
         back: Option<&mut [[f32; 4]]>,
     ) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(Source::Eye { positions, normals, raw: true }, Output::Sum { front, back }, None);
+        self.run(Source::Eye { positions, normals, raw: true }, Output::Sum { front, back }, Probe::None);
     }
 
     /// Lights vertices given in eye space, positions (w = 1) and the normals the equation
@@ -367,7 +397,7 @@ impl Lighter {
         back: Option<&mut [[f32; 4]]>,
     ) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(Source::Eye { positions, normals, raw: false }, Output::Sum { front, back }, None);
+        self.run(Source::Eye { positions, normals, raw: false }, Output::Sum { front, back }, Probe::None);
     }
 
     /// [`Lighter::light_batch`] that also records every stage it ran, once per chunk, in
@@ -380,10 +410,21 @@ impl Lighter {
         self.run(
             Source::Object { positions, normals },
             Output::Lit { front: &mut front, back: Some(&mut back) },
-            Some(&mut trace),
+            Probe::Trace(&mut trace),
         );
         let two = self.key.two_sided;
         (front.into_iter().zip(back).map(|(f, b)| [f, if two { b } else { f }]).collect(), trace)
+    }
+
+    /// [`Lighter::light_batch_sum`] that also measures the time each step took over all the
+    /// chunks: loading, each stage of the program, writing the sums. For
+    /// `phonglab bench lighting --stages` (reading the clock costs some 20 ns a step per
+    /// chunk of 128 vertices, so the figures are a little high).
+    pub fn light_batch_timed(&self, positions: &[Vec3], normals: &[Vec3], front: &mut [[f32; 4]]) -> StageTimes {
+        assert_eq!(positions.len(), normals.len(), "one normal per position");
+        let mut times = StageTimes::default();
+        self.run(Source::Object { positions, normals }, Output::Sum { front, back: None }, Probe::Time(&mut times));
+        times
     }
 
     /// One vertex with any w, as [`Engine::light`] takes it (points at infinity go through
@@ -402,7 +443,11 @@ impl Lighter {
         }
         let mut out = [Lit::default(); 2];
         let (f, b) = out.split_at_mut(1);
-        self.run(Source::One { pos: pos_h.truncate() / pos_h.w, n }, Output::Lit { front: f, back: Some(b) }, None);
+        self.run(
+            Source::One { pos: pos_h.truncate() / pos_h.w, n },
+            Output::Lit { front: f, back: Some(b) },
+            Probe::None,
+        );
         if !self.key.two_sided {
             out[1] = out[0];
         }
@@ -412,36 +457,36 @@ impl Lighter {
     /// The chunked driver. Runs a copy compiled for AVX-512 or AVX2 and FMA when the CPU
     /// has them (the same operations: FMA only replaces the library call behind `mul_add`
     /// in the exact products).
-    fn run(&self, src: Source<'_>, out: Output<'_>, trace: Option<&mut Vec<Stage>>) {
+    fn run(&self, src: Source<'_>, out: Output<'_>, probe: Probe<'_>) {
         #[cfg(target_arch = "x86_64")]
         if has_avx512() {
             // SAFETY: the CPU has AVX-512F/DQ, AVX2 and FMA (checked just above).
-            unsafe { self.run_avx512(src, out, trace) };
+            unsafe { self.run_avx512(src, out, probe) };
             return;
         }
         #[cfg(target_arch = "x86_64")]
         if has_avx2_fma() {
             // SAFETY: the CPU has AVX2 and FMA (checked just above).
-            unsafe { self.run_avx2_fma(src, out, trace) };
+            unsafe { self.run_avx2_fma(src, out, probe) };
             return;
         }
-        self.run_portable(src, out, trace);
+        self.run_portable(src, out, probe);
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx512f,avx512dq,avx2,fma")]
-    fn run_avx512(&self, src: Source<'_>, out: Output<'_>, trace: Option<&mut Vec<Stage>>) {
-        self.run_portable(src, out, trace);
+    fn run_avx512(&self, src: Source<'_>, out: Output<'_>, probe: Probe<'_>) {
+        self.run_portable(src, out, probe);
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    fn run_avx2_fma(&self, src: Source<'_>, out: Output<'_>, trace: Option<&mut Vec<Stage>>) {
-        self.run_portable(src, out, trace);
+    fn run_avx2_fma(&self, src: Source<'_>, out: Output<'_>, probe: Probe<'_>) {
+        self.run_portable(src, out, probe);
     }
 
     #[inline(always)]
-    fn run_portable(&self, src: Source<'_>, mut out: Output<'_>, mut trace: Option<&mut Vec<Stage>>) {
+    fn run_portable(&self, src: Source<'_>, mut out: Output<'_>, mut probe: Probe<'_>) {
         let count = src.len();
         let front_len = match &out {
             Output::Lit { front, .. } => front.len(),
@@ -460,14 +505,23 @@ impl Lighter {
         let with_positions = self.key.needs_positions();
         let mut c = Chunk::new();
         let mut start = 0;
+        if let Probe::Time(t) = &mut probe {
+            t.stages = program.stages.iter().map(|s| (*s, Duration::ZERO)).collect();
+        }
+        let mut clock = matches!(probe, Probe::Time(_)).then(Instant::now);
         while start < count {
             c.n = CHUNK.min(count - start);
             src.load(&mut c, start, with_positions);
             self.clear_sums(&mut c);
-            for &stage in &program.stages {
+            if let (Probe::Time(t), Some(at)) = (&mut probe, &mut clock) {
+                t.load += lap(at);
+            }
+            for (k, &stage) in program.stages.iter().enumerate() {
                 self.stage(&mut c, stage);
-                if let Some(t) = trace.as_deref_mut() {
-                    t.push(stage);
+                match (&mut probe, &mut clock) {
+                    (Probe::Trace(t), _) => t.push(stage),
+                    (Probe::Time(t), Some(at)) => t.stages[k].1 += lap(at),
+                    _ => {}
                 }
             }
             let r = start..start + c.n;
@@ -484,6 +538,9 @@ impl Lighter {
                         self.write_sum(&c, 1, scene_color, &mut b[r]);
                     }
                 }
+            }
+            if let (Probe::Time(t), Some(at)) = (&mut probe, &mut clock) {
+                t.write += lap(at);
             }
             start += c.n;
         }
@@ -644,7 +701,7 @@ impl Lighter {
                 for i in 0..n {
                     let (x, y, z, _, ok) = normalize3::<f32>(c.lx[i] + c.vx[i], c.ly[i] + c.vy[i], c.lz[i] + c.vz[i]);
                     (c.hx[i], c.hy[i], c.hz[i]) = (x, y, z);
-                    c.h_ok[i] = ok && c.l_ok[i] && c.v_ok[i];
+                    c.h_ok[i] = ok & c.l_ok[i] & c.v_ok[i];
                 }
             }
             Stage::HalfwayConstant(li) => {
@@ -657,7 +714,7 @@ impl Lighter {
                     let (x, y, z) = terms::reflect3(c.nx[i], c.ny[i], c.nz[i], c.lx[i], c.ly[i], c.lz[i], clamped);
                     (c.hx[i], c.hy[i], c.hz[i]) = (x, y, z);
                     // R is defined where L is and the normal is not zero; R . V needs V.
-                    c.h_ok[i] = c.l_ok[i] && !c.zero[i] && c.v_ok[i];
+                    c.h_ok[i] = c.l_ok[i] & !c.zero[i] & c.v_ok[i];
                 }
             }
             Stage::DiffuseCosine(li, side) => {
@@ -736,9 +793,10 @@ impl Lighter {
         let p = if self.key.shininess_zero[side] { &ONES[..n] } else { &c.p[side][..n] };
         let mut lit = [false; CHUNK];
         let mut allowed = [false; CHUNK];
+        // `&`, not `&&`: no short circuit, so the loop vectorises (every operand is defined).
         for i in 0..n {
-            lit[i] = l_ok[i] && !zero[i];
-            allowed[i] = specular_on && lit[i] && h_ok[i] && terms::specular_allowed(gate, ndl[i], cos[i]);
+            lit[i] = l_ok[i] & !zero[i];
+            allowed[i] = specular_on & lit[i] & h_ok[i] & terms::specular_allowed(gate, ndl[i], cos[i]);
         }
         let (lit, allowed) = (&lit[..n], &allowed[..n]);
         let (pri, sec) = c.acc[2 * side..2 * side + 2].split_at_mut(1);
@@ -855,6 +913,22 @@ use with_pow;
 mod tests {
     use super::*;
     use crate::presets;
+
+    #[test]
+    fn the_timed_run_times_each_stage_of_the_program_and_lights_as_the_plain_one() {
+        let scene = presets::LightingBench::PositionalLocal.scene();
+        let l = Lighter::new(&scene, EvalOptions::default()).unwrap();
+        let (pos, nrm) = presets::sphere_points(1000);
+        let (mut plain, mut timed) = (vec![[0.0f32; 4]; 1000], vec![[0.0f32; 4]; 1000]);
+        l.light_batch_sum(&pos, &nrm, &mut plain, None);
+        let t = l.light_batch_timed(&pos, &nrm, &mut timed);
+        assert_eq!(plain, timed);
+        let stages: Vec<Stage> = t.stages.iter().map(|(s, _)| *s).collect();
+        assert_eq!(stages, l.program().stages);
+        assert!(stages.contains(&Stage::Halfway(0)));
+        let total: Duration = t.load + t.write + t.stages.iter().map(|(_, d)| *d).sum::<Duration>();
+        assert!(total > Duration::ZERO);
+    }
 
     #[test]
     fn a_slider_move_does_not_replan_but_a_switch_does() {
