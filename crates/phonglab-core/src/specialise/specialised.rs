@@ -39,7 +39,7 @@ use crate::plan::{Key, Program, SourceKind, Stage};
 use crate::pow::PowFn;
 use crate::real::Vec3Ops;
 use crate::robust::{mul0, normalize3, transform_point};
-use crate::rules::SpecularModel;
+use crate::rules::{SpecularGate, SpecularModel};
 use crate::scene::{Scene, Vertex};
 
 /// Does this CPU have AVX-512F and DQ (and AVX2, FMA)? (Checked once; `PHONGLAB_NO_AVX512`
@@ -793,10 +793,22 @@ impl Lighter {
         let p = if self.key.shininess_zero[side] { &ONES[..n] } else { &c.p[side][..n] };
         let mut lit = [false; CHUNK];
         let mut allowed = [false; CHUNK];
-        // `&`, not `&&`: no short circuit, so the loop vectorises (every operand is defined).
+        // `&`, not `&&`: no short circuit, and one loop per gate (the gate is the scene's),
+        // so the loops vectorise (every operand is defined).
         for i in 0..n {
             lit[i] = l_ok[i] & !zero[i];
-            allowed[i] = specular_on & lit[i] & h_ok[i] & terms::specular_allowed(gate, ndl[i], cos[i]);
+        }
+        macro_rules! allowed_where {
+            ($g:expr) => {
+                for i in 0..n {
+                    allowed[i] = specular_on & lit[i] & h_ok[i] & terms::specular_allowed($g, ndl[i], cos[i]);
+                }
+            };
+        }
+        match gate {
+            SpecularGate::LitSide => allowed_where!(SpecularGate::LitSide),
+            SpecularGate::PositiveCosine => allowed_where!(SpecularGate::PositiveCosine),
+            SpecularGate::None => allowed_where!(SpecularGate::None),
         }
         let (lit, allowed) = (&lit[..n], &allowed[..n]);
         let (pri, sec) = c.acc[2 * side..2 * side + 2].split_at_mut(1);
