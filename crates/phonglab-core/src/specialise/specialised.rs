@@ -38,7 +38,7 @@ use crate::lighting::{Engine, EvalOptions, LightPos, PreparedLight, fast_rsqrt, 
 use crate::plan::{Key, Program, SourceKind, Stage};
 use crate::pow::PowFn;
 use crate::real::Vec3Ops;
-use crate::robust::{mul0, normalize3, transform_point};
+use crate::robust::{dot2, mul0, normalize3, transform_point};
 use crate::rules::{SpecularGate, SpecularModel};
 use crate::scene::{Scene, Vertex};
 
@@ -143,12 +143,13 @@ impl Source<'_> {
                 if with_positions {
                     let positions = &positions[start..start + n];
                     for i in 0..n {
-                        c.pos[i] = positions[i].as_dvec3();
+                        let p = positions[i];
+                        (c.px[i], c.py[i], c.pz[i]) = (p.x as f64, p.y as f64, p.z as f64);
                     }
                 }
             }
             Source::One { pos, n } => {
-                c.pos[0] = pos;
+                (c.px[0], c.py[0], c.pz[0]) = (pos.x, pos.y, pos.z);
                 (c.nx[0], c.ny[0], c.nz[0]) = (n.x, n.y, n.z);
             }
         }
@@ -188,7 +189,9 @@ struct Chunk {
     n: usize,
     /// Positions: object space as loaded, eye space after `TransformPosition` (f64, as the
     /// general engine differences them).
-    pos: [DVec3; CHUNK],
+    px: [f64; CHUNK],
+    py: [f64; CHUNK],
+    pz: [f64; CHUNK],
     /// Normals by component, and whether each is zero.
     nx: [f32; CHUNK],
     ny: [f32; CHUNK],
@@ -239,7 +242,9 @@ impl Chunk {
     fn new() -> Box<Self> {
         Box::new(Chunk {
             n: 0,
-            pos: [DVec3::ZERO; CHUNK],
+            px: [0.0; CHUNK],
+            py: [0.0; CHUNK],
+            pz: [0.0; CHUNK],
             nx: [0.0; CHUNK],
             ny: [0.0; CHUNK],
             nz: [0.0; CHUNK],
@@ -606,9 +611,14 @@ impl Lighter {
                 }
             }
             Stage::TransformPosition => {
+                // robust::transform_point on components: each row a Dot2, then / w.
+                let m = &e.eye_from_object;
+                let rows = [0, 1, 2, 3].map(|k| m.row(k).to_array());
                 for i in 0..n {
-                    let pos_h = transform_point(&e.eye_from_object, c.pos[i].extend(1.0));
-                    c.pos[i] = pos_h.truncate() / pos_h.w;
+                    let p = [c.px[i], c.py[i], c.pz[i], 1.0];
+                    let w = dot2(&rows[3], &p);
+                    let (x, y, z) = (dot2(&rows[0], &p), dot2(&rows[1], &p), dot2(&rows[2], &p));
+                    (c.px[i], c.py[i], c.pz[i]) = (x / w, y / w, z / w);
                 }
             }
             Stage::ZeroNormals => {
@@ -621,8 +631,7 @@ impl Lighter {
                 if self.key.local_viewer {
                     // normalize(-P), in f64, rounded to f32.
                     for i in 0..n {
-                        let p = c.pos[i];
-                        let (x, y, z, _, ok) = normalize3::<f64>(-p.x, -p.y, -p.z);
+                        let (x, y, z, _, ok) = normalize3::<f64>(-c.px[i], -c.py[i], -c.pz[i]);
                         (c.vx[i], c.vy[i], c.vz[i], c.v_ok[i]) = (x as f32, y as f32, z as f32, ok);
                     }
                 } else {
@@ -630,7 +639,7 @@ impl Lighter {
                     // (plan::Key::per_vertex_view), so here V = (0, 0, -sign(P.z)),
                     // undefined on the plane z = 0.
                     for i in 0..n {
-                        let z = c.pos[i].z;
+                        let z = c.pz[i];
                         (c.vx[i], c.vy[i]) = (0.0, 0.0);
                         c.vz[i] = if z > 0.0 { -1.0 } else { 1.0 };
                         c.v_ok[i] = z.abs() > 0.0; // false for 0 and NaN
@@ -641,8 +650,7 @@ impl Lighter {
                 let LightPos::Positional(lp) = e.lights[li].pos else { return };
                 // terms::light_direction on components: one robust::normalize3 in f64.
                 for i in 0..n {
-                    let vp = lp - c.pos[i];
-                    let (x, y, z, d, ok) = normalize3::<f64>(vp.x, vp.y, vp.z);
+                    let (x, y, z, d, ok) = normalize3::<f64>(lp.x - c.px[i], lp.y - c.py[i], lp.z - c.pz[i]);
                     (c.lx64[i], c.ly64[i], c.lz64[i], c.l_ok[i]) = (x, y, z, ok);
                     (c.lx[i], c.ly[i], c.lz[i]) = (x as f32, y as f32, z as f32);
                     c.d[i] = d as f32;
