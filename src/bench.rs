@@ -201,10 +201,39 @@ fn lighting(a: &LightingBenchArgs) -> Result<()> {
     for (name, g, s) in lighting_figures(a.vertices, a.repeats)? {
         println!("{name} {g:.2} {s:.2} {:.1}", g / s);
     }
+    let (ns, gbs) = memory_floor(a.vertices, a.repeats);
+    println!(
+        "# memory floor: the same arrays read and written with no lighting, {ns:.2} ns per vertex ({gbs:.1} GB/s of the {MOVED} bytes a vertex moves)"
+    );
     if a.stages {
         stage_figures(a.vertices, a.repeats)?;
     }
     Ok(())
+}
+
+/// Bytes a vertex moves through memory in `bench lighting`: its position and normal in
+/// (2 x 12, f32) and its colour out (16).
+const MOVED: usize = 40;
+
+/// The memory floor of `bench lighting`: the time to read the same positions and normals
+/// and write the same colour array with no lighting at all (one add per component), in ns
+/// per vertex, and the bandwidth that is (the best of `repeats`). Lighting cannot go below
+/// it; how far above it a scene is says how much is arithmetic.
+pub fn memory_floor(vertices: usize, repeats: u32) -> (f64, f64) {
+    let (pos, nrm) = sphere_points(vertices);
+    let mut out = vec![[0.0f32; 4]; vertices];
+    let best = (0..repeats.max(1))
+        .map(|_| {
+            let t = Instant::now();
+            for ((o, p), n) in out.iter_mut().zip(&pos).zip(&nrm) {
+                *o = [p.x + n.x, p.y + n.y, p.z + n.z, 1.0];
+            }
+            std::hint::black_box(&mut out);
+            t.elapsed().as_secs_f64()
+        })
+        .fold(f64::INFINITY, f64::min);
+    let ns = best * 1e9 / vertices as f64;
+    (ns, MOVED as f64 / ns)
 }
 
 /// Where the specialised lighting's time goes, per scene: ns per vertex of each step of its

@@ -404,3 +404,37 @@ fn shader_prints_only_the_stages_the_scene_needs() {
     assert!(!bad.status.success());
     assert!(String::from_utf8_lossy(&bad.stderr).contains("try glsl or wgsl"));
 }
+
+#[test]
+fn bench_lighting_says_where_the_time_goes_stage_by_stage() {
+    let o = phonglab(&["bench", "lighting", "--vertices", "3000", "--repeats", "1", "--stages"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(out.contains("# memory floor: the same arrays read and written"), "{out}");
+    let steps = |scene: &str| -> Vec<(String, f64)> {
+        out.lines()
+            .filter_map(|l| l.strip_prefix(&format!("{scene} ")))
+            .filter(|rest| !rest.starts_with(|c: char| c.is_ascii_digit()))
+            .map(|rest| {
+                let (step, ns) = rest.rsplit_once(' ').unwrap();
+                (step.to_string(), ns.parse::<f64>().unwrap())
+            })
+            .collect()
+    };
+    let a = steps("a_directional");
+    let b = steps("b_positional_local");
+    let c = steps("c_eight_spots");
+    // Each scene lists its own program: the directional light's L is a constant, the
+    // positional one's is a stage, and eight spotlights have eight cone tests.
+    let names = |v: &[(String, f64)]| v.iter().map(|(s, _)| s.clone()).collect::<Vec<_>>();
+    assert!(names(&a).contains(&"LightConstant(0)".to_string()) && !names(&a).contains(&"LightVector(0)".to_string()));
+    assert!(names(&b).contains(&"LightVector(0)".to_string()) && names(&b).contains(&"Halfway(0)".to_string()));
+    assert_eq!(names(&c).iter().filter(|s| s.starts_with("SpotCone(")).count(), 8);
+    for v in [&a, &b, &c] {
+        assert_eq!(v.first().unwrap().0, "load");
+        assert_eq!(v.last().unwrap().0, "total");
+        let parts: f64 = v[..v.len() - 1].iter().map(|(_, ns)| ns).sum();
+        let total = v.last().unwrap().1;
+        assert!(total > 0.0 && (parts - total).abs() <= 0.02 * total + 0.05, "{parts} vs {total}");
+    }
+}
