@@ -38,7 +38,7 @@ use crate::lighting::{Engine, EvalOptions, LightPos, PreparedLight, fast_rsqrt, 
 use crate::plan::{Key, Program, SourceKind, Stage};
 use crate::pow::PowFn;
 use crate::real::Vec3Ops;
-use crate::robust::{dot2, mul0, normalize3, transform_point};
+use crate::robust::{mul0, normalize3, transform_point, transform_point_rows};
 use crate::rules::{SpecularGate, SpecularModel};
 use crate::scene::{Scene, Vertex};
 
@@ -611,13 +611,10 @@ impl Lighter {
                 }
             }
             Stage::TransformPosition => {
-                // robust::transform_point on components: each row a Dot2, then / w.
-                let m = &e.eye_from_object;
-                let rows = [0, 1, 2, 3].map(|k| m.row(k).to_array());
+                // robust::transform_point on components, the rows taken out once.
+                let rows = e.eye_from_object.transpose().to_cols_array_2d();
                 for i in 0..n {
-                    let p = [c.px[i], c.py[i], c.pz[i], 1.0];
-                    let w = dot2(&rows[3], &p);
-                    let (x, y, z) = (dot2(&rows[0], &p), dot2(&rows[1], &p), dot2(&rows[2], &p));
+                    let [x, y, z, w] = transform_point_rows(&rows, [c.px[i], c.py[i], c.pz[i], 1.0]);
                     (c.px[i], c.py[i], c.pz[i]) = (x / w, y / w, z / w);
                 }
             }
