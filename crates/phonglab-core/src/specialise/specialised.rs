@@ -161,7 +161,8 @@ impl Source<'_> {
 enum Probe<'a> {
     None,
     Trace(&'a mut Vec<Stage>),
-    Time(&'a mut StageTimes),
+    /// The times so far, and when the step being timed began.
+    Time(&'a mut StageTimes, Instant),
 }
 
 /// The time a run spent in each step, summed over its chunks.
@@ -428,7 +429,8 @@ impl Lighter {
     pub fn light_batch_timed(&self, positions: &[Vec3], normals: &[Vec3], front: &mut [[f32; 4]]) -> StageTimes {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
         let mut times = StageTimes::default();
-        self.run(Source::Object { positions, normals }, Output::Sum { front, back: None }, Probe::Time(&mut times));
+        let probe = Probe::Time(&mut times, Instant::now());
+        self.run(Source::Object { positions, normals }, Output::Sum { front, back: None }, probe);
         times
     }
 
@@ -510,23 +512,22 @@ impl Lighter {
         let with_positions = self.key.needs_positions();
         let mut c = Chunk::new();
         let mut start = 0;
-        if let Probe::Time(t) = &mut probe {
+        if let Probe::Time(t, _) = &mut probe {
             t.stages = program.stages.iter().map(|s| (*s, Duration::ZERO)).collect();
         }
-        let mut clock = matches!(probe, Probe::Time(_)).then(Instant::now);
         while start < count {
             c.n = CHUNK.min(count - start);
             src.load(&mut c, start, with_positions);
             self.clear_sums(&mut c);
-            if let (Probe::Time(t), Some(at)) = (&mut probe, &mut clock) {
+            if let Probe::Time(t, at) = &mut probe {
                 t.load += lap(at);
             }
             for (k, &stage) in program.stages.iter().enumerate() {
                 self.stage(&mut c, stage);
-                match (&mut probe, &mut clock) {
-                    (Probe::Trace(t), _) => t.push(stage),
-                    (Probe::Time(t), Some(at)) => t.stages[k].1 += lap(at),
-                    _ => {}
+                match &mut probe {
+                    Probe::Trace(t) => t.push(stage),
+                    Probe::Time(t, at) => t.stages[k].1 += lap(at),
+                    Probe::None => {}
                 }
             }
             let r = start..start + c.n;
@@ -544,7 +545,7 @@ impl Lighter {
                     }
                 }
             }
-            if let (Probe::Time(t), Some(at)) = (&mut probe, &mut clock) {
+            if let Probe::Time(t, at) = &mut probe {
                 t.write += lap(at);
             }
             start += c.n;
