@@ -219,44 +219,32 @@ impl Resources {
         Resources { copy, copy_layout, slots: Default::default() }
     }
 
-    fn copy_bind(&self, device: &wgpu::Device, target: &gpu::Target) -> wgpu::BindGroup {
-        device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: None,
-            layout: &self.copy_layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: wgpu::BindingResource::TextureView(&target.color.create_view(&Default::default())),
-            }],
-        })
-    }
-
-    /// Brings `picture`'s slot up to date (program, mesh, target), building what changed.
+    /// Brings `picture`'s slot up to date, rebuilding each part only when what it holds
+    /// changed: the program (another WGSL text), the target (another size), the mesh
+    /// buffers (another mesh).
     fn update(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, p: &Picture) -> Result<&Slot, String> {
-        let stale = match self.slots.get(&p.slot) {
-            None => true,
-            Some(s) => s.wgsl != p.wgsl || s.program.uniform_len() != p.uniforms.len(),
+        let program = || gpu::Program::new(device, &p.wgsl, p.uniforms.len());
+        let slot = match self.slots.entry(p.slot) {
+            std::collections::hash_map::Entry::Occupied(e) => e.into_mut(),
+            std::collections::hash_map::Entry::Vacant(e) => {
+                let target = gpu::Target::new(device, p.px);
+                e.insert(Slot {
+                    wgsl: p.wgsl.clone(),
+                    program: program()?,
+                    mesh: p.mesh.clone(),
+                    buffers: gpu::MeshBuffers::new(device, &p.mesh),
+                    copy_bind: copy_bind(device, &self.copy_layout, &target),
+                    target,
+                })
+            }
         };
-        if stale {
-            let program = gpu::Program::new(device, &p.wgsl, p.uniforms.len())?;
-            let target = gpu::Target::new(device, p.px);
-            let copy_bind = self.copy_bind(device, &target);
-            let slot = Slot {
-                wgsl: p.wgsl.clone(),
-                program,
-                mesh: p.mesh.clone(),
-                buffers: gpu::MeshBuffers::new(device, &p.mesh),
-                target,
-                copy_bind,
-            };
-            self.slots.insert(p.slot, slot);
+        if slot.wgsl != p.wgsl || slot.program.uniform_len() != p.uniforms.len() {
+            slot.program = program()?;
+            slot.wgsl = p.wgsl.clone();
         }
-        let new_target = self.slots.get(&p.slot).is_some_and(|s| s.target.size != p.px);
-        let target = new_target.then(|| gpu::Target::new(device, p.px));
-        let copy_bind = target.as_ref().map(|t| self.copy_bind(device, t));
-        let slot = self.slots.get_mut(&p.slot).expect("inserted above");
-        if let (Some(t), Some(b)) = (target, copy_bind) {
-            slot.target = t;
-            slot.copy_bind = b;
+        if slot.target.size != p.px {
+            slot.target = gpu::Target::new(device, p.px);
+            slot.copy_bind = copy_bind(device, &self.copy_layout, &slot.target);
         }
         if !Arc::ptr_eq(&slot.mesh, &p.mesh) {
             slot.buffers = gpu::MeshBuffers::new(device, &p.mesh);
@@ -265,6 +253,18 @@ impl Resources {
         slot.program.write_uniforms(queue, &p.uniforms);
         Ok(slot)
     }
+}
+
+/// The copy pipeline's binding of `target`'s colour texture.
+fn copy_bind(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, target: &gpu::Target) -> wgpu::BindGroup {
+    device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout,
+        entries: &[wgpu::BindGroupEntry {
+            binding: 0,
+            resource: wgpu::BindingResource::TextureView(&target.color.create_view(&Default::default())),
+        }],
+    })
 }
 
 impl CallbackTrait for Picture {
