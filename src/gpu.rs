@@ -35,15 +35,15 @@ pub fn wgpu_from_gl_clip() -> glam::DMat4 {
     glam::DMat4::from_cols_array(&[1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0, 0.5, 1.0])
 }
 
-/// The generated WGSL module for `scene` (its key under `options`), or `None` for Flat
-/// shading, which the generator does not write.
-pub fn wgsl_for(scene: &Scene, options: EvalOptions, shading: Shading) -> Option<Shader> {
+/// The generated WGSL module for `scene` (its key under `options`), or why there is none:
+/// Flat shading, which the generator does not write, or a scene that does not evaluate.
+pub fn wgsl_for(scene: &Scene, options: EvalOptions, shading: Shading) -> Result<Shader, String> {
     let shading = match shading {
         Shading::Gouraud => ShaderShading::Gouraud,
         Shading::Phong => ShaderShading::Phong,
-        Shading::Flat => return None,
+        Shading::Flat => return Err("no program is generated for Flat shading".into()),
     };
-    generate_for(scene, options, Lang::Wgsl, shading)
+    generate_for(scene, options, Lang::Wgsl, shading).map_err(|e| e.to_string())
 }
 
 /// WGSL's uniform layout: the alignment of a member of GLSL type `ty` (a `mat3` is three
@@ -324,8 +324,7 @@ pub fn read_rgba(device: &wgpu::Device, queue: &wgpu::Queue, target: &Target) ->
 /// (RGBA8, rows top to bottom): the one-shot path the tests compare with the CPU renderer.
 /// Flat shading is refused (the generator writes Gouraud and Phong).
 pub fn render(device: &wgpu::Device, queue: &wgpu::Queue, job: &Job<'_>, size: u32) -> Result<Vec<u8>, String> {
-    let shader = wgsl_for(job.scene, job.options, job.shading)
-        .ok_or_else(|| format!("no program is generated for {} shading", job.shading.label()))?;
+    let shader = wgsl_for(job.scene, job.options, job.shading)?;
     let bytes = uniform_bytes(&shader, job.scene, &job.clip_from_object)?;
     let program = Program::new(device, &shader.vertex, bytes.len())?;
     program.write_uniforms(queue, &bytes);

@@ -110,8 +110,7 @@ impl ViewCache {
         let setup = doc.shaded_setup(pow);
         let key = format!("{:?}|{:?}|{:?}", setup.scene, setup.options, doc.view.shading);
         if self.gpu_program.as_ref().is_none_or(|p| p.key != key) {
-            let shader = crate::gpu::wgsl_for(&setup.scene, setup.options, doc.view.shading)
-                .ok_or("no program is generated for this shading")?;
+            let shader = crate::gpu::wgsl_for(&setup.scene, setup.options, doc.view.shading)?;
             self.gpu_program = Some(GpuProgram { key, wgsl: shader.vertex.as_str().into(), shader });
         }
         let program = self.gpu_program.as_ref().expect("set just above");

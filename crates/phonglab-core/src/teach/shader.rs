@@ -399,17 +399,22 @@ fn indent(lines: &[String]) -> String {
 }
 
 /// The program for `scene` under `options`, with the step numbers of the scene's own worked
-/// calculation (front side), or `None` when the scene does not evaluate.
-pub fn generate_for(scene: &Scene, options: EvalOptions, lang: Lang, shading: ShaderShading) -> Option<Shader> {
-    let lit = crate::Engine::<f64>::new(scene).ok()?.light(&scene.vertex);
+/// calculation (front side), or why the scene does not evaluate.
+pub fn generate_for(
+    scene: &Scene,
+    options: EvalOptions,
+    lang: Lang,
+    shading: ShaderShading,
+) -> Result<Shader, crate::SceneError> {
+    let lit = crate::Engine::<f64>::new(scene)?.light(&scene.vertex);
     let ex = crate::explain::explain(scene, &lit, crate::explain::Side::Front);
-    Some(generate(scene, options, &ex, lang, shading))
+    Ok(generate(scene, options, &ex, lang, shading))
 }
 
 /// The program that draws `doc`'s shaded view: its scene as the view lights it (the view's
 /// camera and spin, or the demo's object space) and the view's renormalisation. What the
 /// app's Shader window shows, what its GPU view runs and what `phonglab shader` prints.
-pub fn for_view(doc: &crate::Document, lang: Lang, shading: ShaderShading) -> Option<Shader> {
+pub fn for_view(doc: &crate::Document, lang: Lang, shading: ShaderShading) -> Result<Shader, crate::SceneError> {
     generate_for(&doc.shaded_scene(), doc.view.eval_options(crate::PowFn::Exact), lang, shading)
 }
 
