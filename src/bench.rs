@@ -163,11 +163,30 @@ fn render(a: &RenderBench) -> Result<()> {
     Ok(())
 }
 
+/// The arrays `bench lighting` lights: `vertices` points of the unit sphere with their
+/// normals, and room for their colours.
+struct LightingArrays {
+    pos: Vec<glam::Vec3>,
+    nrm: Vec<glam::Vec3>,
+    out: Vec<[f32; 4]>,
+}
+
+impl LightingArrays {
+    fn new(vertices: usize) -> Self {
+        let (pos, nrm) = sphere_points(vertices);
+        LightingArrays { pos, nrm, out: vec![[0.0f32; 4]; vertices] }
+    }
+}
+
 /// One figure of `bench lighting`: ns per vertex, general and specialised.
 pub fn lighting_figures(vertices: usize, repeats: u32) -> Result<Vec<(&'static str, f64, f64)>> {
-    let (pos, nrm) = sphere_points(vertices);
-    let verts: Vec<Vertex> = pos.iter().zip(&nrm).map(|(p, n)| Vertex::from_f32(*p, *n)).collect();
-    let mut out_buf = vec![[0.0f32; 4]; vertices];
+    scene_figures(&mut LightingArrays::new(vertices), repeats)
+}
+
+fn scene_figures(arrays: &mut LightingArrays, repeats: u32) -> Result<Vec<(&'static str, f64, f64)>> {
+    let LightingArrays { pos, nrm, out: out_buf } = arrays;
+    let vertices = pos.len();
+    let verts: Vec<Vertex> = pos.iter().zip(nrm.iter()).map(|(p, n)| Vertex::from_f32(*p, *n)).collect();
     let best = |f: &mut dyn FnMut()| {
         (0..repeats.max(1))
             .map(|_| {
@@ -188,7 +207,7 @@ pub fn lighting_figures(vertices: usize, repeats: u32) -> Result<Vec<(&'static s
                 sink += engine.light(v).front.primary[0];
             }
         });
-        let special = best(&mut || lighter.light_batch_sum(&pos, &nrm, &mut out_buf, None));
+        let special = best(&mut || lighter.light_batch_sum(pos, nrm, out_buf, None));
         std::hint::black_box(sink);
         figures.push((b.name(), general * 1e9 / vertices as f64, special * 1e9 / vertices as f64));
     }
@@ -198,15 +217,16 @@ pub fn lighting_figures(vertices: usize, repeats: u32) -> Result<Vec<(&'static s
 fn lighting(a: &LightingBenchArgs) -> Result<()> {
     println!("# phonglab bench lighting: {} vertices, best of {}, one thread, f32", a.vertices, a.repeats);
     println!("scene general_ns_per_vertex specialised_ns_per_vertex speedup");
-    for (name, g, s) in lighting_figures(a.vertices, a.repeats)? {
+    let mut arrays = LightingArrays::new(a.vertices);
+    for (name, g, s) in scene_figures(&mut arrays, a.repeats)? {
         println!("{name} {g:.2} {s:.2} {:.1}", g / s);
     }
-    let (ns, gbs) = memory_floor(a.vertices, a.repeats);
+    let (ns, gbs) = memory_floor(&mut arrays, a.repeats);
     println!(
         "# memory floor: the same arrays read and written with no lighting, {ns:.2} ns per vertex ({gbs:.1} GB/s of the {MOVED} bytes a vertex moves)"
     );
     if a.stages {
-        stage_figures(a.vertices, a.repeats)?;
+        stage_figures(&mut arrays, a.repeats)?;
     }
     Ok(())
 }
@@ -219,28 +239,27 @@ const MOVED: usize = 40;
 /// and write the same colour array with no lighting at all (one add per component), in ns
 /// per vertex, and the bandwidth that is (the best of `repeats`). Lighting cannot go below
 /// it; how far above it a scene is says how much is arithmetic.
-pub fn memory_floor(vertices: usize, repeats: u32) -> (f64, f64) {
-    let (pos, nrm) = sphere_points(vertices);
-    let mut out = vec![[0.0f32; 4]; vertices];
+fn memory_floor(arrays: &mut LightingArrays, repeats: u32) -> (f64, f64) {
+    let LightingArrays { pos, nrm, out } = arrays;
     let best = (0..repeats.max(1))
         .map(|_| {
             let t = Instant::now();
-            for ((o, p), n) in out.iter_mut().zip(&pos).zip(&nrm) {
+            for ((o, p), n) in out.iter_mut().zip(pos.iter()).zip(nrm.iter()) {
                 *o = [p.x + n.x, p.y + n.y, p.z + n.z, 1.0];
             }
-            std::hint::black_box(&mut out);
+            std::hint::black_box(&mut *out);
             t.elapsed().as_secs_f64()
         })
         .fold(f64::INFINITY, f64::min);
-    let ns = best * 1e9 / vertices as f64;
+    let ns = best * 1e9 / pos.len() as f64;
     (ns, MOVED as f64 / ns)
 }
 
 /// Where the specialised lighting's time goes, per scene: ns per vertex of each step of its
 /// program (the run with the least total of `repeats`).
-fn stage_figures(vertices: usize, repeats: u32) -> Result<()> {
-    let (pos, nrm) = sphere_points(vertices);
-    let mut out_buf = vec![[0.0f32; 4]; vertices];
+fn stage_figures(arrays: &mut LightingArrays, repeats: u32) -> Result<()> {
+    let LightingArrays { pos, nrm, out: out_buf } = arrays;
+    let vertices = pos.len();
     println!("# where the specialised time goes (ns per vertex; reading the clock adds ~0.2 a step)");
     println!("scene step ns_per_vertex");
     for b in LightingBench::ALL {
@@ -249,7 +268,7 @@ fn stage_figures(vertices: usize, repeats: u32) -> Result<()> {
             t.load + t.write + t.stages.iter().map(|(_, d)| *d).sum::<std::time::Duration>()
         };
         let best = (0..repeats.max(1))
-            .map(|_| lighter.light_batch_timed(&pos, &nrm, &mut out_buf))
+            .map(|_| lighter.light_batch_timed(pos, nrm, out_buf))
             .min_by_key(total)
             .expect("at least one run");
         let ns = |d: std::time::Duration| d.as_secs_f64() * 1e9 / vertices as f64;
