@@ -187,23 +187,12 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
     // One texel a screen pixel (no resampling), unless the view is wider than 1024 pixels.
     let side = if (side * ppp) as usize <= 1024 { px as f32 / ppp } else { side };
     let camera = state.doc.view.camera;
-    let main_gpu = match prepare_picture(ui.ctx(), state, &mut cache.main, &state.doc, px, 0, "shaded view") {
-        Ok(p) => p,
-        Err(e) => {
-            state.message = Some(Message::Refused(format!("The shaded view cannot render this scene: {e}")));
-            None
-        }
-    };
-    let corrected_gpu = match &corrected {
-        Some(c) => match prepare_picture(ui.ctx(), state, &mut cache.corrected, c, px, 1, "corrected view") {
-            Ok(p) => p,
-            Err(e) => {
-                state.message = Some(Message::Refused(format!("The corrected view cannot render: {e}")));
-                None
-            }
-        },
-        None => None,
-    };
+    let main = prepare_picture(ui.ctx(), state, &mut cache.main, &state.doc, px, 0, "shaded view");
+    let mut main_gpu = picture_or_refusal(state, main, "The shaded view cannot render this scene");
+    let mut corrected_gpu = corrected.as_ref().and_then(|c| {
+        let picture = prepare_picture(ui.ctx(), state, &mut cache.corrected, c, px, 1, "corrected view");
+        picture_or_refusal(state, picture, "The corrected view cannot render")
+    });
     let scene = state.doc.shaded_scene();
     if heat {
         state.cost.want_heat_map(&scene, &state.doc.view, state.doc.view.eval_options(state.ui.pow));
@@ -216,8 +205,6 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
         drawn_caption(&cache.main),
         if corrected.is_some() { " (the demo's own)" } else { "" }
     );
-    let mut main_gpu = main_gpu;
-    let mut corrected_gpu = corrected_gpu;
     let resp = ui
         .horizontal_top(|ui| {
             let resp = ui
@@ -541,6 +528,15 @@ fn prepare_picture(
     cache.render(ctx, doc, pow, px, name)?;
     cache.drawn_by = DrawnBy::Cpu { why };
     Ok(None)
+}
+
+/// The GPU picture [`prepare_picture`] made, if any; a failure becomes the message `what:
+/// reason` (the view then shows the last picture it has).
+fn picture_or_refusal(state: &mut AppState, r: Result<Option<Picture>, String>, what: &str) -> Option<Picture> {
+    r.unwrap_or_else(|e| {
+        state.message = Some(Message::Refused(format!("{what}: {e}")));
+        None
+    })
 }
 
 /// The picture, `size` points: the GPU's through its paint callback, or the CPU
