@@ -368,9 +368,9 @@ fn the_pdf_renders_and_holds_every_answer() {
         .arg(out.join("page"))
         .output();
     let ppm = ppm.expect("pdftoppm (poppler-utils) is installed by scripts/test");
-    assert!(ppm.status.success(), "{}", String::from_utf8_lossy(&ppm.stderr));
+    assert!(ppm.status.success(), "{}", stderr(&ppm));
     let text = Command::new("pdftotext").arg(&pdf).arg("-").output().expect("pdftotext");
-    let text = String::from_utf8_lossy(&text.stdout).into_owned();
+    let text = stdout(&text);
     let mut values = 0;
     for k in 0..=3 {
         let key = std::fs::read_to_string(out.join(format!("exercise-{k:02}-key.md"))).unwrap();
@@ -389,10 +389,9 @@ fn shader_prints_only_the_stages_the_scene_needs() {
     for lang in ["glsl", "wgsl"] {
         for shading in ["gouraud", "phong"] {
             let with = phonglab(&["shader", "--scene", spot.to_str().unwrap(), "--lang", lang, "--shading", shading]);
-            assert!(with.status.success(), "{}", String::from_utf8_lossy(&with.stderr));
-            let with = String::from_utf8(with.stdout).unwrap();
-            let without =
-                String::from_utf8(phonglab(&["shader", "--lang", lang, "--shading", shading]).stdout).unwrap();
+            assert!(with.status.success(), "{}", stderr(&with));
+            let with = stdout(&with);
+            let without = stdout(&phonglab(&["shader", "--lang", lang, "--shading", shading]));
             assert!(with.contains("spot_cos_cutoff"), "{lang} {shading}: the spotlight's cone test\n{with}");
             assert!(!without.contains("spot_"), "{lang} {shading}: the worksheet has no spotlight\n{without}");
             // Phong lights per fragment: the lighting is in the fragment stage.
@@ -402,14 +401,14 @@ fn shader_prints_only_the_stages_the_scene_needs() {
     }
     let bad = phonglab(&["shader", "--lang", "hlsl"]);
     assert!(!bad.status.success());
-    assert!(String::from_utf8_lossy(&bad.stderr).contains("try glsl or wgsl"));
+    assert!(stderr(&bad).contains("try glsl or wgsl"));
 }
 
 #[test]
 fn bench_lighting_says_where_the_time_goes_stage_by_stage() {
     let o = phonglab(&["bench", "lighting", "--vertices", "3000", "--repeats", "1", "--stages"]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
     assert!(out.contains("# memory floor: the same arrays read and written"), "{out}");
     let steps = |scene: &str| -> Vec<(String, f64)> {
         out.lines()
