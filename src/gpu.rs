@@ -55,13 +55,17 @@ fn align(ty: &str) -> usize {
     }
 }
 
-/// The uniform buffer's bytes for `shader`, drawing `scene` with `clip_from_object` in
-/// OpenGL's clip space (converted to WebGPU's here). An error names a uniform the
-/// generator declared but has no value for.
-pub fn uniform_bytes(shader: &Shader, scene: &Scene, clip_from_object: &glam::DMat4) -> Result<Vec<u8>, String> {
+/// The uniform buffer's bytes for a generated program's `uniforms` (`Shader::uniforms`),
+/// drawing `scene` with `clip_from_object` in OpenGL's clip space (converted to WebGPU's
+/// here). An error names a uniform the generator declared but has no value for.
+pub fn uniform_bytes(
+    uniforms: &[(String, &'static str)],
+    scene: &Scene,
+    clip_from_object: &glam::DMat4,
+) -> Result<Vec<u8>, String> {
     let clip = wgpu_from_gl_clip() * *clip_from_object;
     let mut bytes: Vec<u8> = Vec::new();
-    for (name, ty) in &shader.uniforms {
+    for (name, ty) in uniforms {
         while !bytes.len().is_multiple_of(align(ty)) {
             bytes.push(0);
         }
@@ -325,7 +329,7 @@ pub fn read_rgba(device: &wgpu::Device, queue: &wgpu::Queue, target: &Target) ->
 /// Flat shading is refused (the generator writes Gouraud and Phong).
 pub fn render(device: &wgpu::Device, queue: &wgpu::Queue, job: &Job<'_>, size: u32) -> Result<Vec<u8>, String> {
     let shader = wgsl_for(job.scene, job.options, job.shading)?;
-    let bytes = uniform_bytes(&shader, job.scene, &job.clip_from_object)?;
+    let bytes = uniform_bytes(&shader.uniforms, job.scene, &job.clip_from_object)?;
     let program = Program::new(device, &shader.vertex, bytes.len())?;
     program.write_uniforms(queue, &bytes);
     let mesh = MeshBuffers::new(device, job.mesh);

@@ -111,13 +111,14 @@ impl ViewCache {
         let key = format!("{:?}|{:?}|{:?}", setup.scene, setup.options, doc.view.shading);
         if self.gpu_program.as_ref().is_none_or(|p| p.key != key) {
             let shader = crate::gpu::wgsl_for(&setup.scene, setup.options, doc.view.shading)?;
-            self.gpu_program = Some(GpuProgram { key, wgsl: shader.vertex.as_str().into(), shader });
+            // WGSL keeps both entry points in one module: `vertex`.
+            self.gpu_program = Some(GpuProgram { key, wgsl: shader.vertex.into(), uniforms: shader.uniforms });
         }
         let program = self.gpu_program.as_ref().expect("set just above");
         if self.failed_program.as_ref() == Some(&program.wgsl) {
             return Err("the GPU refused the generated program".into());
         }
-        let uniforms = crate::gpu::uniform_bytes(&program.shader, &setup.scene, &setup.clip_from_object)?;
+        let uniforms = crate::gpu::uniform_bytes(&program.uniforms, &setup.scene, &setup.clip_from_object)?;
         let wgsl = program.wgsl.clone();
         Ok(Picture {
             slot,
@@ -138,8 +139,8 @@ struct GpuProgram {
     key: String,
     /// The WGSL module.
     wgsl: Arc<str>,
-    /// The program, with its uniform list.
-    shader: phonglab_core::shader::Shader,
+    /// Its uniforms, in order (as `Shader::uniforms`).
+    uniforms: Vec<(String, &'static str)>,
 }
 
 /// The view's mesh, rebuilt only when what shapes it changes.
