@@ -64,6 +64,10 @@ pub trait Real:
     /// For a finite `m > 0`, the power of two `2^-floor(log2 m)`: multiplying by it is
     /// exact and brings `m` into [1, 2) (scaling a vector before squaring its components).
     fn inverse_pow2_scale(m: Self) -> Self;
+    /// `1 / inverse_pow2_scale(m)`, exactly (a power of two, so dividing by the scale and
+    /// multiplying by this give the same correctly rounded result), from the bits of `m`:
+    /// no division.
+    fn pow2_scale_inverse(m: Self) -> Self;
 }
 
 /// The vector operations the engine needs, on glam's `Vec3` or `DVec3`.
@@ -120,6 +124,16 @@ macro_rules! impl_real {
         let normal = (2046u64.wrapping_sub(e)) << 52;
         f64::from_bits(if e >= 2046 { 1 << 51 } else { normal })
     }};
+    // 2^(e - bias): `m` with its mantissa cleared, or the subnormal 2^-(bias) for e = 0.
+    (@unscale f32, $m:expr) => {{
+        let b = $m.to_bits();
+        f32::from_bits(if b & 0x7f80_0000 == 0 { 1 << 22 } else { b & 0x7f80_0000 })
+    }};
+    (@unscale f64, $m:expr) => {{
+        let b = $m.to_bits();
+        let e = b & 0x7ff0_0000_0000_0000;
+        f64::from_bits(if e == 0 { 1 << 51 } else { e })
+    }};
     ($t:ident, $v3:ty, $m3:ty, $name:literal) => {
         impl Real for $t {
             type V3 = $v3;
@@ -167,6 +181,10 @@ macro_rules! impl_real {
             #[inline(always)]
             fn inverse_pow2_scale(m: Self) -> Self {
                 impl_real!(@scale $t, m)
+            }
+            #[inline(always)]
+            fn pow2_scale_inverse(m: Self) -> Self {
+                impl_real!(@unscale $t, m)
             }
             #[inline(always)]
             fn m3_from_dmat3(m: DMat3) -> Self::M3 {

@@ -52,9 +52,19 @@ pub fn dot2(x: &[f64], y: &[f64]) -> f64 {
 }
 
 /// `m * p` with each row evaluated by [`dot2`], so huge cancelling terms stay exact.
+///
+/// An affine `m` (last row (0, 0, 0, 1)) and a point with w = 1 give w = 1 exactly, so the
+/// fourth row is not evaluated ([`transform_affine_rows`]): for finite input the same
+/// result as evaluating it, and a point with an infinite coordinate keeps w = 1 instead of
+/// `0 * inf = NaN`.
 #[inline(always)]
 pub fn transform_point(m: &DMat4, p: DVec4) -> DVec4 {
-    DVec4::from_array(transform_point_rows(&m.transpose().to_cols_array_2d(), p.to_array()))
+    let rows = m.transpose().to_cols_array_2d();
+    if rows[3] == [0.0, 0.0, 0.0, 1.0] && p.w == 1.0 {
+        let [x, y, z] = transform_affine_rows(&rows, [p.x, p.y, p.z]);
+        return DVec4::new(x, y, z, 1.0);
+    }
+    DVec4::from_array(transform_point_rows(&rows, p.to_array()))
 }
 
 /// [`transform_point`] with the matrix given by its rows (`rows[i]` is row i), for loops
@@ -64,6 +74,14 @@ pub fn transform_point(m: &DMat4, p: DVec4) -> DVec4 {
 #[inline(always)]
 pub fn transform_point_rows(rows: &[[f64; 4]; 4], p: [f64; 4]) -> [f64; 4] {
     [dot2(&rows[0], &p), dot2(&rows[1], &p), dot2(&rows[2], &p), dot2(&rows[3], &p)]
+}
+
+/// The first three rows of [`transform_point_rows`] for a point with w = 1: what an affine
+/// matrix (last row (0, 0, 0, 1), so w = 1 exactly) leaves to compute.
+#[inline(always)]
+pub fn transform_affine_rows(rows: &[[f64; 4]; 4], p: [f64; 3]) -> [f64; 3] {
+    let p = [p[0], p[1], p[2], 1.0];
+    [dot2(&rows[0], &p), dot2(&rows[1], &p), dot2(&rows[2], &p)]
 }
 
 /// The 3x3 part of `m` times `v`, each row by [`dot2`].
@@ -92,7 +110,8 @@ pub fn normalize3<S: Real>(x: S, y: S, z: S) -> (S, S, S, S, bool) {
     let (ux, uy, uz) = (x * s, y * s, z * s);
     let len_s = (ux * ux + uy * uy + uz * uz).sqrt();
     let inv = S::ONE / len_s;
-    let len = if ok { len_s / s } else { m };
+    // len_s / s, as a product by the exact power of two 1 / s (one division fewer).
+    let len = if ok { len_s * S::pow2_scale_inverse(m) } else { m };
     (ux * inv, uy * inv, uz * inv, len, ok)
 }
 
@@ -181,8 +200,47 @@ mod tests {
         assert_eq!(f32::inverse_pow2_scale(1e-40) * 1e-40, 1e-40 * 2f32.powi(127));
         assert_eq!(f64::inverse_pow2_scale(f64::MAX), 2f64.powi(-1023));
         assert_eq!(f64::inverse_pow2_scale(0.75), 2.0);
+        // The inverse scale is 1 / scale exactly, across the whole range.
+        for m in [3.0f32, 1.0, 0.75, f32::MAX, 2f32.powi(127), f32::MIN_POSITIVE, 1e-40, 1e-45] {
+            assert_eq!(f32::pow2_scale_inverse(m), 1.0 / f32::inverse_pow2_scale(m), "{m}");
+        }
+        for m in [3.0f64, 1.0, 0.75, f64::MAX, 2f64.powi(1023), f64::MIN_POSITIVE, 1e-310, 5e-324] {
+            assert_eq!(f64::pow2_scale_inverse(m), 1.0 / f64::inverse_pow2_scale(m), "{m}");
+        }
         assert!((n.x - std::f32::consts::FRAC_1_SQRT_2).abs() < 1e-7);
         assert_eq!(normalize_or_zero::<f32>(glam::Vec3::ZERO), glam::Vec3::ZERO);
+    }
+
+    #[test]
+    fn the_length_is_the_scaled_length_divided_by_the_scale() {
+        // normalize3 multiplies by the exact inverse of the scale instead of dividing by
+        // it: the same correctly rounded result, over the whole exponent range.
+        let mut state = 0x1234_5678_9abc_def1u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        for _ in 0..20_000 {
+            let r = next();
+            let v = [0, 1, 2]
+                .map(|k| f64::from_bits((r >> (k * 3)) & 0x7fef_ffff_ffff_ffff ^ (next() & 0x800f_ffff_ffff_ffff)));
+            let m = v[0].abs().max(v[1].abs()).max(v[2].abs());
+            let s = f64::inverse_pow2_scale(m);
+            let q = ((v[0] * s).powi(2) + (v[1] * s).powi(2) + (v[2] * s).powi(2)).sqrt();
+            let len = normalize3::<f64>(v[0], v[1], v[2]).3;
+            assert_eq!(len.to_bits(), (q / s).to_bits(), "{v:?}");
+            let w = v.map(|x| x as f32);
+            let m = w[0].abs().max(w[1].abs()).max(w[2].abs());
+            if m == 0.0 || !m.is_finite() {
+                continue;
+            }
+            let s = f32::inverse_pow2_scale(m);
+            let q = ((w[0] * s) * (w[0] * s) + (w[1] * s) * (w[1] * s) + (w[2] * s) * (w[2] * s)).sqrt();
+            let len = normalize3::<f32>(w[0], w[1], w[2]).3;
+            assert_eq!(len.to_bits(), (q / s).to_bits(), "{w:?}");
+        }
     }
 
     #[test]
