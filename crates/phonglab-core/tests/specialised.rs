@@ -271,8 +271,14 @@ fn skipped_stages_never_run_for_any_key_bit() {
         s
     };
     type Bit = (&'static str, fn(&mut Scene), fn(&Stage) -> bool);
-    let bits: [Bit; 11] = [
+    let bits: [Bit; 12] = [
         ("nothing", |_| {}, |_| false),
+        (
+            // The last row (0, 0, 0.05, 1): w = 1 + 0.075 z varies over the sphere.
+            "projective modelview",
+            |s| s.world_from_object.z_axis.w = 0.05,
+            |st| matches!(st, Stage::TransformPosition),
+        ),
         (
             "directional",
             |s| s.lights[0].position.w = 0.0,
@@ -343,7 +349,16 @@ fn skipped_stages_never_run_for_any_key_bit() {
                 s.light_model.local_viewer = false;
                 s.lights[0].position.w = 0.0;
             },
-            |st| matches!(st, Stage::ViewVector | Stage::Halfway(_) | Stage::LightVector(_)),
+            |st| {
+                matches!(
+                    st,
+                    Stage::ViewVector
+                        | Stage::Halfway(_)
+                        | Stage::LightVector(_)
+                        | Stage::TransformPosition
+                        | Stage::TransformPositionProjective
+                )
+            },
         ),
     ];
     let (positions, normals) = phonglab_core::presets::sphere_points(300);
@@ -362,10 +377,18 @@ fn skipped_stages_never_run_for_any_key_bit() {
                 assert!(!trace.iter().any(left_out), "{name} {model:?}: a left-out stage ran: {program:?}");
             }
             assert!(program.contains(&Stage::Sum(0, 0)));
+            // The position effect says which transform ran.
+            let position = l.key().effects().into_iter().find(|e| e.kind == EffectKind::Position).unwrap();
+            let projective = trace.contains(&Stage::TransformPositionProjective);
+            assert_eq!(position.why.contains("division by w is skipped"), trace.contains(&Stage::TransformPosition));
+            assert_eq!(position.why.contains("divided"), false);
+            assert_eq!(position.why.contains("projective"), projective, "{name}: {position}");
+            assert_eq!(projective, name == "projective modelview", "{name}: the division by w runs only there");
             // What the panel says is skipped ran no stage of its kind.
             for eff in l.key().effects().iter().filter(|e| !e.on) {
                 let ran = trace.iter().any(|st| match eff.kind {
                     EffectKind::Normalisation => matches!(st, Stage::NormalizeNormal | Stage::RescaleNormal),
+                    EffectKind::Position => matches!(st, Stage::TransformPosition | Stage::TransformPositionProjective),
                     EffectKind::ViewVector => matches!(st, Stage::ViewVector),
                     EffectKind::SceneColor => matches!(st, Stage::SceneColor),
                     EffectKind::BackSide => matches!(st, Stage::Sum(_, 1)),

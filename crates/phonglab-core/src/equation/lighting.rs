@@ -573,26 +573,25 @@ pub(crate) mod terms {
         }
     }
 
-    /// One colour channel of one light's terms on one side, each factor of the sum in
-    /// section 2.14.1: `diffuse = max(n . L, 0) d_cm d_cli` where the light reaches the
-    /// surface (`lit`), `specular = f_i s_cm s_cli p` where allowed (`p` the power), and
-    /// `att spot (ambient + diffuse + specular)` (the specular apart with a separate
-    /// specular colour). Returns (diffuse, specular, primary, secondary).
+    /// The two factors of one light's terms on one side that every colour channel shares
+    /// (section 2.14.1): `max(n . L, 0)` where the light reaches the surface (`lit`), else
+    /// 0; and `f_i p` (`p` the power) where the specular is allowed, else 0. Taken once per
+    /// vertex, not once per channel.
     #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    pub fn channel<S: Real>(
-        amb: S,
-        dif: S,
-        spe: S,
-        n_dot_l: S,
-        lit: bool,
-        allowed: bool,
-        p: S,
-        separate: bool,
-        scale: S,
-    ) -> (S, S, S, S) {
-        let diffuse = if lit { mul0(dif, n_dot_l.max(S::ZERO)) } else { S::ZERO };
-        let specular = if allowed { mul0(spe, p) } else { S::ZERO };
+    pub fn shared_factors<S: Real>(n_dot_l: S, lit: bool, allowed: bool, p: S) -> (S, S) {
+        (if lit { n_dot_l.max(S::ZERO) } else { S::ZERO }, if allowed { p } else { S::ZERO })
+    }
+
+    /// One colour channel of one light's terms on one side, each factor of the sum in
+    /// section 2.14.1, from the [`shared_factors`] `(dn, fp)`: `diffuse = dn d_cm d_cli`,
+    /// `specular = fp s_cm s_cli`, and `att spot (ambient + diffuse + specular)` (the
+    /// specular apart with a separate specular colour). Returns (diffuse, specular,
+    /// primary, secondary).
+    #[inline(always)]
+    pub fn channel<S: Real>(amb: S, dif: S, spe: S, dn: S, fp: S, separate: bool, scale: S) -> (S, S, S, S) {
+        // mul0(x, 0) = +0: a light that does not reach the side adds +0, as no term at all.
+        let diffuse = mul0(dif, dn);
+        let specular = mul0(spe, fp);
         let pri = if separate { amb + diffuse } else { amb + diffuse + specular };
         (diffuse, specular, mul0(pri, scale), if separate { mul0(specular, scale) } else { S::ZERO })
     }
@@ -641,9 +640,10 @@ pub(crate) mod terms {
                 }
             }
         }
+        let (dn, fp) = shared_factors(st.n_dot_l, lit.is_some(), allowed, p);
         let ch = |k: usize| {
             let pick = |v: S::V3| [v.x(), v.y(), v.z()][k];
-            channel(pick(amb), pick(dif), pick(spe), st.n_dot_l, lit.is_some(), allowed, p, separate, scale)
+            channel(pick(amb), pick(dif), pick(spe), dn, fp, separate, scale)
         };
         let (c0, c1, c2) = (ch(0), ch(1), ch(2));
         st.diffuse = S::V3::new(c0.0, c1.0, c2.0);

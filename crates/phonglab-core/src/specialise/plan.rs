@@ -56,6 +56,9 @@ pub struct Key {
     pub shininess_zero: [bool; 2],
     /// Emission and scene ambient are both absent (the sum starts at 0).
     pub scene_color_zero: bool,
+    /// The modelview's last row is not (0, 0, 0, 1): w varies from vertex to vertex and
+    /// P is divided by it. (With (0, 0, 0, 1), w = 1 exactly and there is nothing to divide.)
+    pub projective: bool,
 }
 
 impl Key {
@@ -98,6 +101,7 @@ impl Key {
             pow: options.pow,
             shininess_zero: [scene.material.shininess == 0.0, back.shininess == 0.0],
             scene_color_zero,
+            projective: scene.eye_from_object().row(3) != glam::DVec4::W,
         }
     }
 
@@ -138,8 +142,12 @@ pub enum Stage {
     NormalizeNormal,
     /// `N = N rsqrt(N . N)` with the approximate reciprocal square root (the cost study).
     NormalizeNormalFast,
-    /// `P = M p` (compensated, f64), divided by w.
+    /// `P = M p` (compensated, f64) with an affine modelview: three rows, w = 1 exactly,
+    /// no division.
     TransformPosition,
+    /// `P = M p / w` (compensated, f64) with a projective modelview: the fourth row too,
+    /// and the division by w.
+    TransformPositionProjective,
     /// Which normals are zero (no direction: no diffuse, no specular).
     ZeroNormals,
     /// V per vertex: `normalize(-P)` (local viewer) or the worksheet's `(0, 0, -sign(P.z))`.
@@ -214,7 +222,7 @@ impl Program {
                     NormalMode::Normalize => st.push(Stage::NormalizeNormal),
                 }
                 if key.needs_positions() {
-                    st.push(Stage::TransformPosition);
+                    st.push(if key.projective { Stage::TransformPositionProjective } else { Stage::TransformPosition });
                 }
             }
             SourceKind::Eye => {}
@@ -279,6 +287,8 @@ impl Program {
 pub enum EffectKind {
     /// GL_NORMALIZE or GL_RESCALE_NORMAL.
     Normalisation,
+    /// P, the vertex in eye space (and whether it is divided by w).
+    Position,
     /// V per vertex.
     ViewVector,
     /// `e_cm + a_cm a_cs`.
@@ -302,6 +312,7 @@ impl EffectKind {
     pub fn name(self, specular: SpecularModel) -> &'static str {
         match self {
             EffectKind::Normalisation => "normalisation",
+            EffectKind::Position => "eye-space position P",
             EffectKind::ViewVector => "view vector V",
             EffectKind::SceneColor => "emission and scene ambient",
             EffectKind::BackSide => "back side",
@@ -322,6 +333,7 @@ impl EffectKind {
         use crate::explain::StepKind as K;
         Some(match self {
             EffectKind::Normalisation => K::Normal,
+            EffectKind::Position => K::Position,
             EffectKind::ViewVector => K::V,
             EffectKind::LightVector => K::Distance,
             EffectKind::Attenuation => K::Attenuation,
@@ -413,6 +425,23 @@ impl Key {
                     (NormalMode::AsIs, true) => "interpolated normals are renormalised",
                 },
             ),
+            match (has(Stage::TransformPosition), has(Stage::TransformPositionProjective), self.needs_positions()) {
+                (true, _, _) => e(
+                    EffectKind::Position,
+                    None,
+                    true,
+                    "P = M p; the modelview is affine (last row 0 0 0 1), so w = 1 and the division by w is skipped",
+                ),
+                (_, true, _) => {
+                    e(EffectKind::Position, None, true, "P = M p / w: the modelview is projective, w varies per vertex")
+                }
+                (false, false, true) => {
+                    e(EffectKind::Position, None, false, "the vertices arrive in eye space: nothing to transform")
+                }
+                (false, false, false) => {
+                    e(EffectKind::Position, None, false, "no positional light and an infinite viewer: nothing reads P")
+                }
+            },
             if has(Stage::ViewVector) {
                 e(
                     EffectKind::ViewVector,

@@ -16,6 +16,8 @@
 //! | shininess 0 | `Power` (`x^0 = 1`) |
 //! | one-sided | every back-side stage |
 //! | GL_NORMALIZE off, or GL_RESCALE_NORMAL with a factor of exactly 1 | `NormalizeNormal`, `RescaleNormal` |
+//! | directional lights and an infinite viewer | `TransformPosition` (nothing reads P) |
+//! | an affine modelview (last row 0 0 0 1) | the fourth row and the division by w (`TransformPosition`, not `TransformPositionProjective`) |
 //! | emission and scene ambient zero (or left out by the rules) | `SceneColor` |
 //!
 //! Vertices are processed in chunks of [`CHUNK`], as structures of arrays; each stage is
@@ -38,7 +40,7 @@ use crate::lighting::{Engine, EvalOptions, LightPos, PreparedLight, fast_rsqrt, 
 use crate::plan::{Key, Program, SourceKind, Stage};
 use crate::pow::PowFn;
 use crate::real::Vec3Ops;
-use crate::robust::{mul0, normalize3, transform_point, transform_point_rows};
+use crate::robust::{mul0, normalize3, transform_affine_rows, transform_point, transform_point_rows};
 use crate::rules::{SpecularGate, SpecularModel};
 use crate::scene::{Scene, Vertex};
 
@@ -612,7 +614,16 @@ impl Lighter {
                 }
             }
             Stage::TransformPosition => {
-                // robust::transform_point on components, the rows taken out once.
+                // robust::transform_point of an affine matrix on components (w = 1: the
+                // fourth row and the division are left out), the rows taken out once.
+                let rows = e.eye_from_object.transpose().to_cols_array_2d();
+                for i in 0..n {
+                    let [x, y, z] = transform_affine_rows(&rows, [c.px[i], c.py[i], c.pz[i]]);
+                    (c.px[i], c.py[i], c.pz[i]) = (x, y, z);
+                }
+            }
+            Stage::TransformPositionProjective => {
+                // robust::transform_point on components, then the division by w.
                 let rows = e.eye_from_object.transpose().to_cols_array_2d();
                 for i in 0..n {
                     let [x, y, z, w] = transform_point_rows(&rows, [c.px[i], c.py[i], c.pz[i], 1.0]);
@@ -695,7 +706,7 @@ impl Lighter {
                     c.inside[..n].fill(false);
                 }
                 let mut f = [0.0f32; CHUNK];
-                with_pow!(e.options.pow, |pow| { power_loop(&c.spot_cos, &mut f, n, sp.exponent, pow) });
+                power_loop(e.options.pow, &c.spot_cos, &mut f, n, sp.exponent);
                 for i in 0..n {
                     let spot = if c.inside[i] { f[i] } else { 0.0 };
                     // scale = mul0(att, spot), att from `Attenuate` (or 1).
@@ -774,7 +785,7 @@ impl Lighter {
                 let shin = e.sides[side].shininess;
                 let [p0, p1] = &mut c.p;
                 let p = if side == 0 { p0 } else { p1 };
-                with_pow!(e.options.pow, |pow| { power_loop(&c.cos[side], p, n, shin, pow) });
+                power_loop(e.options.pow, &c.cos[side], p, n, shin);
             }
             Stage::Sum(li, side) => self.sum(c, &e.lights[li], side),
             // Added as the colours are written (`write`, `write_sum`).
@@ -797,30 +808,30 @@ impl Lighter {
         let (l_ok, zero, h_ok) = (&c.l_ok[..n], &c.zero[..n], &c.h_ok[..n]);
         // Shininess 0 (no `Power` stage): max(cos, 0)^0 = 1.
         let p = if self.key.shininess_zero[side] { &ONES[..n] } else { &c.p[side][..n] };
-        let mut lit = [false; CHUNK];
-        let mut allowed = [false; CHUNK];
-        // `&`, not `&&`: no short circuit, and one loop per gate (the gate is the scene's),
-        // so the loops vectorise (every operand is defined).
-        for i in 0..n {
-            lit[i] = l_ok[i] & !zero[i];
-        }
-        macro_rules! allowed_where {
+        // The factors every channel shares (terms::shared_factors), once per vertex. `&`,
+        // not `&&`: no short circuit, and one loop per gate (the gate is the scene's), so
+        // the loops vectorise (every operand is defined).
+        let mut dn = [0.0f32; CHUNK];
+        let mut fp = [0.0f32; CHUNK];
+        macro_rules! factors_where {
             ($g:expr) => {
                 for i in 0..n {
-                    allowed[i] = specular_on & lit[i] & h_ok[i] & terms::specular_allowed($g, ndl[i], cos[i]);
+                    let lit = l_ok[i] & !zero[i];
+                    let allowed = specular_on & lit & h_ok[i] & terms::specular_allowed($g, ndl[i], cos[i]);
+                    (dn[i], fp[i]) = terms::shared_factors(ndl[i], lit, allowed, p[i]);
                 }
             };
         }
         match gate {
-            SpecularGate::LitSide => allowed_where!(SpecularGate::LitSide),
-            SpecularGate::PositiveCosine => allowed_where!(SpecularGate::PositiveCosine),
-            SpecularGate::None => allowed_where!(SpecularGate::None),
+            SpecularGate::LitSide => factors_where!(SpecularGate::LitSide),
+            SpecularGate::PositiveCosine => factors_where!(SpecularGate::PositiveCosine),
+            SpecularGate::None => factors_where!(SpecularGate::None),
         }
-        let (lit, allowed) = (&lit[..n], &allowed[..n]);
+        let (dn, fp) = (&dn[..n], &fp[..n]);
         let (pri, sec) = c.acc[2 * side..2 * side + 2].split_at_mut(1);
         let channel = |acc: &mut [f32], ch: usize, k: usize| {
             for i in 0..n {
-                let t = terms::channel(amb[ch], dif[ch], spe[ch], ndl[i], lit[i], allowed[i], p[i], separate, scale[i]);
+                let t = terms::channel(amb[ch], dif[ch], spe[ch], dn[i], fp[i], separate, scale[i]);
                 acc[i] += if k == 2 { t.2 } else { t.3 };
             }
         };
@@ -893,39 +904,29 @@ fn negated<'a>(
     (x, y, z)
 }
 
-/// `p[i] = pow(max(x[i], 0), e)` over the chunk: the power alone in its loop, so the
-/// f32 -> f64 -> f32 conversions of `pow_f32` vectorise.
+/// `p[i] = pow(max(x[i], 0), e)` over the chunk, with the scene's power function: the
+/// exact one by `exact_pow::pow_f32_chunk` (a whole exponent by squarings over the array),
+/// the others one vertex at a time, each loop compiled with its power inlined.
 #[inline(always)]
-fn power_loop(x: &[f32; CHUNK], p: &mut [f32; CHUNK], n: usize, e: f32, pow: impl Fn(f32, f32) -> f32) {
-    for i in 0..n.min(CHUNK) {
-        p[i] = pow(x[i].max(0.0), e);
+fn power_loop(which: PowFn, x: &[f32; CHUNK], p: &mut [f32; CHUNK], n: usize, e: f32) {
+    let n = n.min(CHUNK);
+    match which {
+        PowFn::Exact => crate::exact_pow::pow_f32_chunk(x, e, p, n),
+        PowFn::Llvmpipe => {
+            for i in 0..n {
+                p[i] = PowFn::Llvmpipe.pow(x[i].max(0.0), e);
+            }
+        }
+        PowFn::Schlick => {
+            for i in 0..n {
+                p[i] = PowFn::Schlick.pow(x[i].max(0.0), e);
+            }
+        }
     }
 }
 
 /// Powers of 1, for a side with shininess 0.
 static ONES: [f32; CHUNK] = [1.0; CHUNK];
-
-/// Expands `$body` once per power function with `$pow` bound to it as a closure, so each
-/// loop is compiled with its own power inlined (and vectorised where it can be).
-macro_rules! with_pow {
-    ($which:expr, |$pow:ident| $body:block) => {
-        match $which {
-            PowFn::Exact => {
-                let $pow = crate::pow::pow_f32;
-                $body
-            }
-            PowFn::Llvmpipe => {
-                let $pow = |x: f32, y: f32| PowFn::Llvmpipe.pow(x, y);
-                $body
-            }
-            PowFn::Schlick => {
-                let $pow = |x: f32, y: f32| PowFn::Schlick.pow(x, y);
-                $body
-            }
-        }
-    };
-}
-use with_pow;
 
 #[cfg(test)]
 mod tests {

@@ -154,7 +154,10 @@ fn lighting(
     for stage in &program.stages {
         let at = |k: StepKind, l: Option<usize>| format!("// {}", step_no(ex, k, l));
         match *stage {
-            Stage::TransformNormal | Stage::TransformPosition | Stage::RescaleNormal => {}
+            Stage::TransformNormal
+            | Stage::TransformPosition
+            | Stage::TransformPositionProjective
+            | Stage::RescaleNormal => {}
             Stage::NormalizeNormal | Stage::NormalizeNormalFast => {
                 o.push(format!("N = normalize(N); {}", at(StepKind::Normal, None)));
             }
@@ -357,14 +360,20 @@ fn prologue(scene: &Scene, program: &Program, ex: &Explanation, s: &Syn, uniform
         uniforms.push(("rescale".into(), "float"));
         o.push(format!("N = {} * N; // {} (GL_RESCALE_NORMAL)", s.u("rescale"), step_no(ex, StepKind::Normal, None)));
     }
-    if program.has(Stage::TransformPosition) || program.has(Stage::ViewVector) {
-        let v4 = s.vec4();
+    let v4 = s.vec4();
+    if program.has(Stage::TransformPositionProjective) {
         o.push(format!(
             "{} // {}",
             s.var("vec4", "Ph", &format!("{mv} * {v4}({p_in}, 1.0)")),
             step_no(ex, StepKind::Position, None)
         ));
-        o.push(s.var("vec3", "P", "Ph.xyz / Ph.w"));
+        o.push(format!("{} // the modelview is projective: divide by w", s.var("vec3", "P", "Ph.xyz / Ph.w")));
+    } else if program.has(Stage::TransformPosition) || program.has(Stage::ViewVector) {
+        o.push(format!(
+            "{} // {} (affine modelview: w = 1, no division)",
+            s.var("vec3", "P", &format!("({mv} * {v4}({p_in}, 1.0)).xyz")),
+            step_no(ex, StepKind::Position, None)
+        ));
     }
     o
 }
