@@ -182,6 +182,14 @@ fn the_fast_paths_bit_for_bit() {
         }
         scenes.push((format!("spots cut off at {cutoff}"), s, true));
     }
+    // Past robust::unscaled_is_exact's range, so L and V take normalize3's scaling: a light
+    // 1e130 away, and a vertex shrunk to 1e-125 (P's x and y below 2^-400).
+    let mut far = LightingBench::PositionalLocal.scene();
+    far.lights[0].position = DVec4::new(1e130, -3e129, 2e130, 1.0);
+    scenes.push(("a light 1e130 away".into(), far, false));
+    let mut tiny = LightingBench::PositionalLocal.scene();
+    tiny.world_from_object = DMat4::from_scale(DVec3::splat(1e-125));
+    scenes.push(("vertices shrunk to 1e-125".into(), tiny, false));
     for (name, scene, partial) in scenes {
         for pow in PowFn::ALL {
             let options = EvalOptions::with_pow(pow);

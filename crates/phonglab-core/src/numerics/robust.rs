@@ -115,6 +115,32 @@ pub fn normalize3<S: Real>(x: S, y: S, z: S) -> (S, S, S, S, bool) {
     (ux * inv, uy * inv, uz * inv, len, ok)
 }
 
+/// The bounds of [`unscaled_is_exact`]: 2^-400 and 2^400.
+const UNSCALED_MIN: f64 = 3.872_591_914_849_318e-121;
+const UNSCALED_MAX: f64 = 2.582_249_878_086_908_6e120;
+
+/// Is `x` 0, or of a magnitude from 2^-400 to 2^400? Where all three components of a
+/// vector are, [`normalize3`]'s power-of-two scaling changes no rounding: every square,
+/// sum, root, reciprocal and product it forms stays a normal f64 with or without it, and
+/// scaling by 2^k commutes with rounding there. So [`normalize3_unscaled`] gives the same
+/// bits, without the scaling's integer work.
+#[inline(always)]
+pub fn unscaled_is_exact(x: f64) -> bool {
+    let a = x.abs();
+    (a == 0.0) | ((UNSCALED_MIN..=UNSCALED_MAX).contains(&a))
+}
+
+/// [`normalize3`] in f64 without the power-of-two scaling, for vectors whose components
+/// all pass [`unscaled_is_exact`]: bit for bit the same results there (for others the
+/// squares may overflow or underflow; do not call it).
+#[inline(always)]
+pub fn normalize3_unscaled(x: f64, y: f64, z: f64) -> (f64, f64, f64, f64, bool) {
+    let ok = (x != 0.0) | (y != 0.0) | (z != 0.0);
+    let len = (x * x + y * y + z * z).sqrt();
+    let inv = 1.0 / len;
+    (x * inv, y * inv, z * inv, len, ok)
+}
+
 /// `|v|` by [`normalize3`]: 0 for the zero vector, `+inf` when a component is infinite.
 #[inline(always)]
 pub fn scaled_length<S: Real>(v: S::V3) -> S {
@@ -241,6 +267,55 @@ mod tests {
             let len = normalize3::<f32>(w[0], w[1], w[2]).3;
             assert_eq!(len.to_bits(), (q / s).to_bits(), "{w:?}");
         }
+    }
+
+    #[test]
+    fn unscaled_normalisation_is_the_scaled_one_bit_for_bit_in_its_range() {
+        let mut state = 0x0bad_5eed_1234_5678u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let (mut tried, mut outside) = (0, 0);
+        for k in 0..200_000 {
+            // Exponents from 2^-420 to 2^420 (past both bounds), some components 0.
+            let mut c = [0.0f64; 3];
+            for v in &mut c {
+                let r = next();
+                let e = (r % 841) as i32 - 420;
+                let m = 1.0 + (r >> 12) as f64 / (1u64 << 52) as f64;
+                *v = if r % 13 == 0 {
+                    0.0
+                } else if r % 2 == 0 {
+                    m * 2f64.powi(e)
+                } else {
+                    -m * 2f64.powi(e)
+                };
+            }
+            if k % 3 == 0 {
+                // Components of similar size, as in a scene.
+                c[1] = c[0] * 0.75;
+                c[2] = -c[0] * 1.25;
+            }
+            if !c.iter().all(|&v| unscaled_is_exact(v)) {
+                outside += 1;
+                continue;
+            }
+            tried += 1;
+            let a = normalize3::<f64>(c[0], c[1], c[2]);
+            let b = normalize3_unscaled(c[0], c[1], c[2]);
+            assert_eq!(a.4, b.4, "{c:?}");
+            if a.4 {
+                let bits = |t: (f64, f64, f64, f64, bool)| [t.0, t.1, t.2, t.3].map(f64::to_bits);
+                assert_eq!(bits(a), bits(b), "{c:?}");
+            }
+        }
+        assert!(tried > 50_000 && outside > 1_000, "{tried} {outside}");
+        assert!(unscaled_is_exact(0.0) && unscaled_is_exact(-2f64.powi(400)) && unscaled_is_exact(2f64.powi(-400)));
+        assert!(!unscaled_is_exact(2f64.powi(401)) && !unscaled_is_exact(2f64.powi(-401)));
+        assert!(!unscaled_is_exact(f64::NAN) && !unscaled_is_exact(f64::INFINITY));
     }
 
     #[test]

@@ -448,7 +448,7 @@ impl Key {
                     None,
                     true,
                     if self.local_viewer {
-                        "local viewer: V = normalize(-P) per vertex"
+                        "local viewer: V = normalize(-P) per vertex, in f64; a chunk of 128 vertices whose coordinates all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)"
                     } else {
                         "the worksheet's V = normalize(obs - P), obs = P (1, 1, 0, 1): (0, 0, -sign(P.z)) per vertex"
                     },
@@ -475,7 +475,12 @@ impl Key {
         for (i, l) in self.lights.iter().enumerate() {
             let li = Some(i);
             out.push(if has(Stage::LightVector(i)) {
-                e(EffectKind::LightVector, li, true, "positional light: per vertex")
+                e(
+                    EffectKind::LightVector,
+                    li,
+                    true,
+                    "positional light: per vertex, in f64; a chunk of 128 vertices whose VP components all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)",
+                )
             } else {
                 e(EffectKind::LightVector, li, false, "the light is directional: L is one constant, there is no d")
             });

@@ -40,7 +40,10 @@ use crate::lighting::{Engine, EvalOptions, LightPos, PreparedLight, fast_rsqrt, 
 use crate::plan::{Key, Program, SourceKind, Stage};
 use crate::pow::PowFn;
 use crate::real::Vec3Ops;
-use crate::robust::{mul0, normalize3, transform_affine_rows, transform_point, transform_point_rows};
+use crate::robust::{
+    mul0, normalize3, normalize3_unscaled, transform_affine_rows, transform_point, transform_point_rows,
+    unscaled_is_exact,
+};
 use crate::rules::{SpecularGate, SpecularModel};
 use crate::scene::{Scene, Vertex};
 
@@ -638,10 +641,23 @@ impl Lighter {
             Stage::ViewVector => {
                 // terms::view_vector on components, so the loops vectorise.
                 if self.key.local_viewer {
-                    // normalize(-P), in f64, rounded to f32.
+                    // normalize(-P), in f64 (unscaled where that changes no bit), rounded to f32.
+                    let mut plain = true;
                     for i in 0..n {
-                        let (x, y, z, _, ok) = normalize3::<f64>(-c.px[i], -c.py[i], -c.pz[i]);
-                        (c.vx[i], c.vy[i], c.vz[i], c.v_ok[i]) = (x as f32, y as f32, z as f32, ok);
+                        plain &= unscaled_is_exact(c.px[i]) & unscaled_is_exact(c.py[i]) & unscaled_is_exact(c.pz[i]);
+                    }
+                    macro_rules! view_vectors {
+                        ($norm:expr) => {
+                            for i in 0..n {
+                                let (x, y, z, _, ok) = $norm(-c.px[i], -c.py[i], -c.pz[i]);
+                                (c.vx[i], c.vy[i], c.vz[i], c.v_ok[i]) = (x as f32, y as f32, z as f32, ok);
+                            }
+                        };
+                    }
+                    if plain {
+                        view_vectors!(normalize3_unscaled);
+                    } else {
+                        view_vectors!(normalize3::<f64>);
                     }
                 } else {
                     // The stage runs only for a local viewer or the worksheet's rule
@@ -657,12 +673,29 @@ impl Lighter {
             }
             Stage::LightVector(li) => {
                 let LightPos::Positional(lp) = e.lights[li].pos else { return };
-                // terms::light_direction on components: one robust::normalize3 in f64.
+                // terms::light_direction on components: one robust::normalize3 in f64, without
+                // its scaling where that changes no bit (robust::unscaled_is_exact).
                 for i in 0..n {
-                    let (x, y, z, d, ok) = normalize3::<f64>(lp.x - c.px[i], lp.y - c.py[i], lp.z - c.pz[i]);
-                    (c.lx64[i], c.ly64[i], c.lz64[i], c.l_ok[i]) = (x, y, z, ok);
-                    (c.lx[i], c.ly[i], c.lz[i]) = (x as f32, y as f32, z as f32);
-                    c.d[i] = d as f32;
+                    (c.lx64[i], c.ly64[i], c.lz64[i]) = (lp.x - c.px[i], lp.y - c.py[i], lp.z - c.pz[i]);
+                }
+                let mut plain = true;
+                for i in 0..n {
+                    plain &= unscaled_is_exact(c.lx64[i]) & unscaled_is_exact(c.ly64[i]) & unscaled_is_exact(c.lz64[i]);
+                }
+                macro_rules! light_vectors {
+                    ($norm:expr) => {
+                        for i in 0..n {
+                            let (x, y, z, d, ok) = $norm(c.lx64[i], c.ly64[i], c.lz64[i]);
+                            (c.lx64[i], c.ly64[i], c.lz64[i], c.l_ok[i]) = (x, y, z, ok);
+                            (c.lx[i], c.ly[i], c.lz[i]) = (x as f32, y as f32, z as f32);
+                            c.d[i] = d as f32;
+                        }
+                    };
+                }
+                if plain {
+                    light_vectors!(normalize3_unscaled);
+                } else {
+                    light_vectors!(normalize3::<f64>);
                 }
                 c.scale[..n].fill(1.0);
             }
