@@ -32,14 +32,15 @@ fn log2_f64(x: f64) -> f64 {
     // 1 + f2/3 + f2^2/5 + ... + f2^6/13 by Estrin's scheme: pairs first, then pairs of
     // pairs, so the longest chain is 4 steps instead of Horner's 6 (the loop is bound by
     // latency, not by the number of operations).
+    // Each step a fused multiply-add: one rounding instead of two, one instruction.
     let f2 = f * f;
     let f4 = f2 * f2;
     let f8 = f4 * f4;
-    let a = 1.0 + f2 * (1.0 / 3.0);
-    let b = 1.0 / 5.0 + f2 * (1.0 / 7.0);
-    let c = 1.0 / 9.0 + f2 * (1.0 / 11.0);
-    let series = (a + f4 * b) + f8 * (c + f4 * (1.0 / 13.0));
-    k + f * series * (2.0 / std::f64::consts::LN_2)
+    let a = f2.mul_add(1.0 / 3.0, 1.0);
+    let b = f2.mul_add(1.0 / 7.0, 1.0 / 5.0);
+    let c = f2.mul_add(1.0 / 11.0, 1.0 / 9.0);
+    let series = f8.mul_add(f4.mul_add(1.0 / 13.0, c), f4.mul_add(b, a));
+    (f * (2.0 / std::f64::consts::LN_2)).mul_add(series, k)
 }
 
 /// `2^t`, relative error < 1e-13: `t = n + r`, |r| <= 1/2, `e^(r ln 2)` by its Taylor series
@@ -53,15 +54,16 @@ fn exp2_f64(t: f64) -> f64 {
     let y = (tc - n) * std::f64::consts::LN_2;
     // The Taylor series to y^10/10! by Estrin's scheme (longest chain 4 steps, not 10):
     // every coefficient a constant 1/k!, folded when compiled.
+    // Each step a fused multiply-add.
     let y2 = y * y;
     let y4 = y2 * y2;
     let y8 = y4 * y4;
     let a0 = 1.0 + y;
-    let a1 = 1.0 / 2.0 + y * (1.0 / 6.0);
-    let a2 = 1.0 / 24.0 + y * (1.0 / 120.0);
-    let a3 = 1.0 / 720.0 + y * (1.0 / 5040.0);
-    let a4 = 1.0 / 40320.0 + y * (1.0 / 362880.0) + y2 * (1.0 / 3628800.0);
-    let p = ((a0 + y2 * a1) + y4 * (a2 + y2 * a3)) + y8 * a4;
+    let a1 = y.mul_add(1.0 / 6.0, 1.0 / 2.0);
+    let a2 = y.mul_add(1.0 / 120.0, 1.0 / 24.0);
+    let a3 = y.mul_add(1.0 / 5040.0, 1.0 / 720.0);
+    let a4 = y2.mul_add(1.0 / 3628800.0, y.mul_add(1.0 / 362880.0, 1.0 / 40320.0));
+    let p = y8.mul_add(a4, y4.mul_add(y2.mul_add(a3, a2), y2.mul_add(a1, a0)));
     let scale = f64::from_bits(((ni + 1023) as u64) << 52);
     let r = p * scale;
     let r = if t < -1022.0 { 0.0 } else { r };
@@ -75,8 +77,31 @@ fn exp2_f64(t: f64) -> f64 {
 /// gives NaN. For a given `e` there are no branches (only selects), so loops over it
 /// vectorise; the specialised kernels ([`pow_f32_chunk`]) and the general engine do the
 /// same operations, so they agree bit for bit.
-#[inline(always)]
+///
+/// The polynomials use fused multiply-adds (`mul_add`, exactly rounded by definition, so
+/// every processor gives the same bits): this scalar entry runs a copy compiled for the
+/// FMA instruction where the processor has it (the array kernels are compiled so already),
+/// and the library's `fma` elsewhere.
+#[inline]
 pub fn pow_f32(x: f32, e: f32) -> f32 {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the processor has FMA (checked just above).
+        return unsafe { pow_f32_fma(x, e) };
+    }
+    pow_f32_body(x, e)
+}
+
+/// [`pow_f32_body`] compiled with the FMA instruction.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+fn pow_f32_fma(x: f32, e: f32) -> f32 {
+    pow_f32_body(x, e)
+}
+
+/// [`pow_f32`]'s operations.
+#[inline(always)]
+fn pow_f32_body(x: f32, e: f32) -> f32 {
     let r = match whole_exponent(e) {
         Some(k) => powi_f64(x as f64, k),
         None => pow_core(x as f64, e as f64),
