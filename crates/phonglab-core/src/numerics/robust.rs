@@ -237,17 +237,21 @@ mod tests {
         assert_eq!(normalize_or_zero::<f32>(glam::Vec3::ZERO), glam::Vec3::ZERO);
     }
 
-    #[test]
-    fn the_length_is_the_scaled_length_divided_by_the_scale() {
-        // normalize3 multiplies by the exact inverse of the scale instead of dividing by
-        // it: the same correctly rounded result, over the whole exponent range.
-        let mut state = 0x1234_5678_9abc_def1u64;
-        let mut next = || {
+    /// A fixed sequence of 64-bit words (xorshift64).
+    fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
+        move || {
             state ^= state << 13;
             state ^= state >> 7;
             state ^= state << 17;
             state
-        };
+        }
+    }
+
+    #[test]
+    fn the_length_is_the_scaled_length_divided_by_the_scale() {
+        // normalize3 multiplies by the exact inverse of the scale instead of dividing by
+        // it: the same correctly rounded result, over the whole exponent range.
+        let mut next = xorshift(0x1234_5678_9abc_def1u64);
         for _ in 0..20_000 {
             let r = next();
             let v = [0, 1, 2]
@@ -271,13 +275,7 @@ mod tests {
 
     #[test]
     fn unscaled_normalisation_is_the_scaled_one_bit_for_bit_in_its_range() {
-        let mut state = 0x0bad_5eed_1234_5678u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = xorshift(0x0bad_5eed_1234_5678u64);
         let (mut tried, mut outside) = (0, 0);
         for k in 0..200_000 {
             // Exponents from 2^-420 to 2^420 (past both bounds), some components 0.
@@ -286,9 +284,9 @@ mod tests {
                 let r = next();
                 let e = (r % 841) as i32 - 420;
                 let m = 1.0 + (r >> 12) as f64 / (1u64 << 52) as f64;
-                *v = if r % 13 == 0 {
+                *v = if r.is_multiple_of(13) {
                     0.0
-                } else if r % 2 == 0 {
+                } else if r.is_multiple_of(2) {
                     m * 2f64.powi(e)
                 } else {
                     -m * 2f64.powi(e)
