@@ -438,9 +438,12 @@ impl Key {
                 (false, false, true) => {
                     e(EffectKind::Position, None, false, "the vertices arrive in eye space: nothing to transform")
                 }
-                (false, false, false) => {
-                    e(EffectKind::Position, None, false, "no positional light and an infinite viewer: nothing reads P")
-                }
+                (false, false, false) => e(
+                    EffectKind::Position,
+                    None,
+                    false,
+                    "no positional light and V is one constant (infinite viewer): nothing reads P",
+                ),
             },
             if has(Stage::ViewVector) {
                 e(

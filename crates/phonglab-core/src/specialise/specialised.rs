@@ -16,7 +16,7 @@
 //! | shininess 0 | `Power` (`x^0 = 1`) |
 //! | one-sided | every back-side stage |
 //! | GL_NORMALIZE off, or GL_RESCALE_NORMAL with a factor of exactly 1 | `NormalizeNormal`, `RescaleNormal` |
-//! | directional lights and an infinite viewer | `TransformPosition` (nothing reads P) |
+//! | directional lights and a constant V (an infinite viewer, not the worksheet's rule) | `TransformPosition` (nothing reads P) |
 //! | an affine modelview (last row 0 0 0 1) | the fourth row and the division by w (`TransformPosition`, not `TransformPositionProjective`) |
 //! | emission and scene ambient zero (or left out by the rules) | `SceneColor` |
 //!
