@@ -61,6 +61,12 @@ pub struct RenderBench {
     /// Worker threads (default: one per core).
     #[arg(long)]
     pub threads: Option<usize>,
+    /// Only this object: sphere or teapot (default: both).
+    #[arg(long)]
+    pub object: Option<String>,
+    /// Only this shading: gouraud, phong or flat (default: all three).
+    #[arg(long)]
+    pub shading: Option<String>,
 }
 
 /// `phonglab bench lighting`.
@@ -99,11 +105,12 @@ pub struct RenderFigure {
     pub stage_ms: [f64; 4],
 }
 
-/// Times the renderer on the benchmark scene.
-pub fn render_figures(frames: u32, size: usize) -> Result<Vec<RenderFigure>> {
+/// Times the renderer on the benchmark scene, for each object and shading that `only`
+/// accepts.
+pub fn render_figures(frames: u32, size: usize, only: impl Fn(&str, Shading) -> bool) -> Result<Vec<RenderFigure>> {
     let mut out = Vec::new();
     for (name, mesh) in bench_meshes() {
-        for shading in Shading::ALL {
+        for shading in Shading::ALL.into_iter().filter(|s| only(name, *s)) {
             let mut r = Renderer::new();
             let frame = |i: u32, r: &mut Renderer| -> Result<[f64; 4]> {
                 let scene = bench_scene(i);
@@ -141,6 +148,16 @@ pub fn render_figures(frames: u32, size: usize) -> Result<Vec<RenderFigure>> {
 }
 
 fn render(a: &RenderBench) -> Result<()> {
+    for name in a.object.iter() {
+        if !bench_meshes().iter().any(|(n, _)| n == name) {
+            anyhow::bail!("--object {name}: the benchmark's objects are sphere and teapot");
+        }
+    }
+    for name in a.shading.iter() {
+        if !Shading::ALL.iter().any(|s| s.label().eq_ignore_ascii_case(name)) {
+            anyhow::bail!("--shading {name}: the shadings are gouraud, phong and flat");
+        }
+    }
     println!(
         "# phonglab bench render: {}x{} px, {} frames, {} threads; the stages' mean ms: vertices, setup, raster, resolve",
         a.size,
@@ -149,7 +166,11 @@ fn render(a: &RenderBench) -> Result<()> {
         rayon::current_num_threads()
     );
     println!("object shading ms_per_frame triangles coverage vertices_ms setup_ms raster_ms resolve_ms");
-    for f in render_figures(a.frames, a.size)? {
+    let only = |object: &str, shading: Shading| {
+        a.object.as_deref().is_none_or(|o| o == object)
+            && a.shading.as_deref().is_none_or(|s| shading.label().eq_ignore_ascii_case(s))
+    };
+    for f in render_figures(a.frames, a.size, only)? {
         let [v, s, r, res] = f.stage_ms;
         println!(
             "{} {} {:.3} {} {:.4} {v:.3} {s:.3} {r:.3} {res:.3}",
