@@ -7,9 +7,11 @@
 //!    drawn); for Gouraud, its colour.
 //! 2. [`setup`]: each triangle clipped (near and far planes, and x/y beyond a guard band),
 //!    its facing decided, back faces culled if asked, snapped to fixed point.
-//! 3. [`raster`]: triangles into a visibility buffer (depth, triangle, barycentrics), in
-//!    horizontal bands on all cores; top-left fill rule, so shared edges are drawn once.
-//! 4. [`resolve`]: each covered pixel shaded once, with perspective-correct barycentrics:
+//! 3. [`raster`]: triangles into a visibility buffer (depth, triangle), in horizontal
+//!    bands on all cores; top-left fill rule, so shared edges are drawn once.
+//! 4. [`resolve`]: right after each band is drawn, while it is in cache, each covered pixel
+//!    shaded once, in runs of one triangle, with exact
+//!    screen barycentrics from the triangle's edge functions, made perspective-correct:
 //!    Gouraud interpolates colours, Phong interpolates position and normal and lights the
 //!    pixel, Flat takes its face's colour (or, as the Phong demo does, lights the pixel
 //!    with the face's normal taken from the screen derivatives).
@@ -64,11 +66,8 @@ pub struct Image {
     pub rgba: Vec<u8>,
     /// Window-space depth of each pixel (1 where uncovered).
     pub depth: Vec<f32>,
-    /// The rasterised (clipped) triangle at each pixel ([`NO_TRIANGLE`] where uncovered),
-    /// and its screen-space barycentrics (of vertices 1 and 2), for perspective-correct
-    /// interpolation.
+    /// The rasterised (clipped) triangle at each pixel ([`NO_TRIANGLE`] where uncovered).
     pub(crate) raster: Vec<u32>,
-    pub(crate) bary: Vec<[f32; 2]>,
 }
 
 /// `Image::triangle` of an uncovered pixel.
@@ -104,7 +103,9 @@ pub struct Stats {
     pub rasterised: usize,
     /// Lighting evaluations made (vertices, faces or pixels).
     pub evaluations: usize,
-    /// Milliseconds spent in each stage: vertices, setup, rasterisation, resolve.
+    /// Milliseconds spent in each stage: vertices, setup, rasterisation, resolve. The last
+    /// two run together, band by band (each band drawn, then shaded); the time of the pair
+    /// is split between them in proportion to the time the bands spent in each.
     pub stage_ms: [f64; 4],
 }
 
@@ -153,11 +154,12 @@ impl Renderer {
         let t_vertices = lap();
         self.setup.run(job, &self.vertices, lighter, width, height);
         let t_setup = lap();
-        raster::rasterise(&self.setup, width, height, &mut self.image, &mut self.bins);
-        let t_raster = lap();
-        let evaluations =
-            resolve::resolve(job, &self.vertices, &self.setup, lighter, &mut self.image, &mut self.scratch);
-        let t_resolve = lap();
+        raster::bin(&self.setup, width, height, &mut self.image, &mut self.bins);
+        let (lit, [raster_share, resolve_share]) =
+            draw_and_shade(job, &self.vertices, &self.setup, lighter, &mut self.image, &mut self.scratch, &self.bins);
+        let t_bands = lap();
+        let (t_raster, t_resolve) = (t_bands * raster_share, t_bands * resolve_share);
+        let evaluations = resolve::evaluations(job, lit);
         let stats = Stats {
             stage_ms: [t_vertices, t_setup, t_raster, t_resolve],
             triangles: job.mesh.triangle_count(),
@@ -166,6 +168,45 @@ impl Renderer {
         };
         Ok((&self.image, stats))
     }
+}
+
+/// Stages 3 and 4, band by band on all cores: each band is drawn and then shaded at once,
+/// while its depths and triangles are still in the core's cache. Returns the fragments lit
+/// and the shares of the bands' time spent drawing and shading.
+fn draw_and_shade(
+    job: &Job<'_>,
+    verts: &vertices::Vertices,
+    setup: &setup::Setup,
+    lighter: &Lighter,
+    image: &mut Image,
+    scratch: &mut resolve::Scratch,
+    bins: &[Vec<u32>],
+) -> (usize, [f64; 2]) {
+    use rayon::prelude::*;
+    let (width, rows) = (image.width, image.width * raster::BAND);
+    let prepared = resolve::prepare(job, verts, setup, scratch, image.height.div_ceil(raster::BAND));
+    let (shared, fragments) = resolve::split(scratch);
+    let (lit, drawing, shading) = image
+        .depth
+        .par_chunks_mut(rows)
+        .zip(image.raster.par_chunks_mut(rows))
+        .zip(image.rgba.par_chunks_mut(rows * 4))
+        .zip(bins.par_iter())
+        .zip(fragments.par_iter_mut())
+        .enumerate()
+        .map(|(b, ((((depth, raster), rgba), bin), frags))| {
+            let start = std::time::Instant::now();
+            let y_start = b * raster::BAND;
+            raster::draw_band(setup, bin, raster::Band { y_start: y_start as i32, width, depth, raster: &mut *raster });
+            let drawn = std::time::Instant::now();
+            let (px, _) = rgba.as_chunks_mut::<4>();
+            let lit = resolve::resolve_band(job, setup, lighter, &prepared, &shared, px, raster, y_start, width, frags);
+            (lit, (drawn - start).as_secs_f64(), drawn.elapsed().as_secs_f64())
+        })
+        .reduce(|| (0, 0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1, a.2 + b.2));
+    let total = drawing + shading;
+    let shares = if total > 0.0 { [drawing / total, shading / total] } else { [0.5, 0.5] };
+    (lit, shares)
 }
 
 /// What a pixel of the last frame shows: a point of a mesh triangle.

@@ -1,9 +1,11 @@
 //! Stage 4: each covered pixel shaded once.
 //!
-//! The visibility buffer holds, per pixel, the rasterised triangle and its screen-space
-//! barycentrics. Attributes vary linearly in clip space, not on the screen, so they are
-//! interpolated perspective-correctly: `b_i = (l_i / w_i) / sum_j (l_j / w_j)`. Those are
-//! mapped back to the original mesh triangle through its clipped vertices' barycentrics.
+//! The visibility buffer holds, per pixel, the rasterised triangle. The pixels of a row go
+//! in runs of one triangle: its screen-space barycentrics `l` come from its edge functions
+//! ([`ScreenBarycentrics`], exact), and its attributes are loaded once for the run.
+//! Attributes vary linearly in clip space, not on the screen, so they are interpolated
+//! perspective-correctly: `b_i = (l_i / w_i) / sum_j (l_j / w_j)`. Those are mapped back to
+//! the original mesh triangle through its clipped vertices' barycentrics.
 //!
 //! - Gouraud: the vertices' colours (each clamped as OpenGL clamps vertex colours).
 //! - Phong: position and normal, the normal renormalised, the lighting engine per pixel
@@ -17,9 +19,8 @@
 //! Colours go to 8 bits as OpenGL converts them: `round(255 clamp(c, 0, 1))`.
 
 use glam::Vec3;
-use rayon::prelude::*;
 
-use super::raster::BAND;
+use super::raster::ScreenBarycentrics;
 use super::setup::Setup;
 use super::vertices::Vertices;
 use super::{Image, Job, NO_TRIANGLE};
@@ -86,7 +87,7 @@ fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: 
     }
 }
 
-/// One band's Phong fragments.
+/// One band's per-pixel fragments, presized to the band (written by index, never pushed).
 #[derive(Default)]
 pub struct Fragments {
     pixel: Vec<u32>,
@@ -97,13 +98,24 @@ pub struct Fragments {
     back_out: Vec<[f32; 4]>,
 }
 
+impl Fragments {
+    /// Room for `n` fragments.
+    fn size(&mut self, n: usize) {
+        self.pixel.resize(n, 0);
+        self.back.resize(n, false);
+        self.pos.resize(n, Vec3::ZERO);
+        self.nrm.resize(n, Vec3::ZERO);
+    }
+}
+
 #[inline(always)]
 #[allow(clippy::manual_clamp)] // clamp keeps NaN; max/min turn it into 0, which the cast below needs
 fn to_u8(c: f32) -> u8 {
     // max/min (IEEE maxNum/minNum) also turn NaN into 0, so v is in [0.5, 255.5].
     let v = c.max(0.0).min(1.0) * 255.0 + 0.5;
-    // SAFETY: v is finite and within u32's range (see above).
-    unsafe { v.to_int_unchecked::<u32>() as u8 }
+    // SAFETY: v is finite and within i32's range (see above); i32, not u32, because
+    // processors convert f32 lanes to i32 in one instruction.
+    unsafe { v.to_int_unchecked::<i32>() as u8 }
 }
 
 /// Perspective-correct barycentrics of the original mesh triangle at pixel `i`.
@@ -126,7 +138,9 @@ fn barycentrics(setup: &Setup, raster: u32, l: [f32; 2]) -> [f32; 3] {
 /// The original triangle's barycentrics at pixel `i` of the last frame (for picking).
 pub(crate) fn original_barycentrics(setup: &Setup, image: &Image, i: usize) -> Option<[f32; 3]> {
     let r = *image.raster.get(i)?;
-    (r != NO_TRIANGLE).then(|| barycentrics(setup, r, image.bary[i]))
+    let t = setup.tris.get(r as usize)?;
+    let l = ScreenBarycentrics::new(t).at(i % image.width, i / image.width);
+    Some(barycentrics(setup, r, l))
 }
 
 /// What every band's resolve shares, computed once per frame ([`prepare`]).
@@ -170,8 +184,108 @@ pub struct Shared<'a> {
     tri_nrm: &'a [[Vec3; 3]],
 }
 
-/// Shades one band: `px` its pixels, `raster` and `bary` its visibility buffer. Returns the
-/// lighting evaluations made (fragments lit).
+/// How many entries at the start of `row` (not empty) equal its first: eight compared at
+/// a time (one AVX2 compare and a bit scan), the rest one by one.
+#[inline(always)]
+fn run_length(row: &[u32]) -> usize {
+    let r = row[0];
+    let mut n = 1;
+    while let Some(block) = row.get(n..).and_then(|s| s.first_chunk::<8>()) {
+        let differ = (0..8).fold(0u32, |m, j| m | (((block[j] != r) as u32) << j));
+        if differ != 0 {
+            return n + differ.trailing_zeros() as usize;
+        }
+        n += 8;
+    }
+    n + row[n..].iter().position(|&q| q != r).unwrap_or(row.len() - n)
+}
+
+/// A run of pixels of one triangle in one row: `len` pixels from (`x`, `y`) of the image,
+/// the first at index `at` of the band.
+#[derive(Clone, Copy)]
+struct Run {
+    x: usize,
+    y: usize,
+    at: usize,
+    len: usize,
+}
+
+/// Pixels of a run shaded together: eight f32 lanes, one AVX2 register.
+const LANES: usize = 8;
+
+/// The perspective weights of [`LANES`] pixels of a run, [`screen_weights`] lane by lane:
+/// `ls[k][j]` the screen barycentric of vertex k at lane j, `s[j]` one over their sum
+/// weighted by 1/w.
+struct Weights {
+    ls: [[f32; LANES]; 3],
+    s: [f32; LANES],
+}
+
+impl Run {
+    /// The weights of pixels `k0..k0 + LANES` of the run (lanes past its end are computed
+    /// and ignored). Each screen barycentric is the exact edge function (f64) times
+    /// 1/area, rounded once to f32; then [`screen_weights`]' arithmetic, in its order.
+    #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // lanes index several arrays; the loop vectorises
+    fn weights(&self, edges: &([f64; 2], [f64; 2], f64), inv_w: [f32; 3], k0: usize) -> Weights {
+        let (w, step, inv_area) = *edges;
+        let mut out = Weights { ls: [[0.0; LANES]; 3], s: [0.0; LANES] };
+        for j in 0..LANES {
+            // i32 to f64 is one instruction for four lanes; k0 + j is below the image width.
+            let kf = (k0 as i32 + j as i32) as f64;
+            let l = [((w[0] + step[0] * kf) * inv_area) as f32, ((w[1] + step[1] * kf) * inv_area) as f32];
+            let (ls, s) = screen_weights(inv_w, l);
+            for k in 0..3 {
+                out.ls[k][j] = ls[k];
+            }
+            out.s[j] = s;
+        }
+        out
+    }
+
+    /// The run's pixels in blocks of [`LANES`]: `(k0, n)`, the block's first pixel and how
+    /// many of its lanes are in the run.
+    #[inline(always)]
+    fn blocks(&self) -> impl Iterator<Item = (usize, usize)> {
+        let len = self.len;
+        (0..len).step_by(LANES).map(move |k0| (k0, (len - k0).min(LANES)))
+    }
+}
+
+/// `sum_k ls_k a_k`, times `s`, lane by lane: an attribute stored per vertex as `a_k / w_k`,
+/// interpolated perspective-correctly.
+#[inline(always)]
+#[allow(clippy::needless_range_loop)] // lanes index several arrays; the loop vectorises
+fn blend(wt: &Weights, a: [f32; 3]) -> [f32; LANES] {
+    // Plain loops, not array::from_fn: its closure is not always inlined, and then the
+    // lanes go through memory.
+    let mut out = [0.0; LANES];
+    for j in 0..LANES {
+        out[j] = (a[0] * wt.ls[0][j] + a[1] * wt.ls[1][j] + a[2] * wt.ls[2][j]) * wt.s[j];
+    }
+    out
+}
+
+/// A triangle's three vectors as arrays, for [`blend_n`].
+#[inline(always)]
+fn xyz(v: &[Vec3; 3]) -> [[f32; 3]; 3] {
+    [v[0].to_array(), v[1].to_array(), v[2].to_array()]
+}
+
+/// [`blend`] for each of `N` channels, `a[k][c]` channel c at vertex k.
+#[inline(always)]
+fn blend_n<const N: usize>(wt: &Weights, a: &[[f32; N]; 3]) -> [[f32; LANES]; N] {
+    let mut out = [[0.0; LANES]; N];
+    for c in 0..N {
+        out[c] = blend(wt, [a[0][c], a[1][c], a[2][c]]);
+    }
+    out
+}
+
+/// Shades one band: `px` its pixels, `raster` its visibility buffer, `y0` the image row of
+/// its first row, `width` the image's width. Returns the lighting evaluations made
+/// (fragments lit). Runs a copy compiled for AVX2 where the processor has it (the same
+/// operations, so the same bits: Rust never fuses a multiply and an add by itself).
 #[allow(clippy::too_many_arguments)]
 pub fn resolve_band(
     job: &Job<'_>,
@@ -181,78 +295,163 @@ pub fn resolve_band(
     shared: &Shared<'_>,
     px: &mut [[u8; 4]],
     raster: &[u32],
-    bary: &[[f32; 2]],
+    y0: usize,
+    width: usize,
+    frags: &mut Fragments,
+) -> usize {
+    #[cfg(target_arch = "x86_64")]
+    if crate::specialised::has_avx2_fma() {
+        // SAFETY: the CPU has AVX2 and FMA (checked just above).
+        return unsafe { resolve_band_avx2(job, setup, lighter, p, shared, px, raster, y0, width, frags) };
+    }
+    resolve_band_any(job, setup, lighter, p, shared, px, raster, y0, width, frags)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+#[allow(clippy::too_many_arguments)]
+fn resolve_band_avx2(
+    job: &Job<'_>,
+    setup: &Setup,
+    lighter: &Lighter,
+    p: &Prepared,
+    shared: &Shared<'_>,
+    px: &mut [[u8; 4]],
+    raster: &[u32],
+    y0: usize,
+    width: usize,
+    frags: &mut Fragments,
+) -> usize {
+    resolve_band_any(job, setup, lighter, p, shared, px, raster, y0, width, frags)
+}
+
+#[inline(always)]
+#[allow(clippy::too_many_arguments, clippy::needless_range_loop)] // lane loops: see `blend`
+fn resolve_band_any(
+    job: &Job<'_>,
+    setup: &Setup,
+    lighter: &Lighter,
+    p: &Prepared,
+    shared: &Shared<'_>,
+    px: &mut [[u8; 4]],
+    raster: &[u32],
+    y0: usize,
+    width: usize,
     frags: &mut Fragments,
 ) -> usize {
     let (two, per_pixel, bg) = (p.two, p.per_pixel, p.bg);
     let (tri_color, tri_pos, tri_nrm) = (shared.tri_color, shared.tri_pos, shared.tri_nrm);
-    frags.pixel.clear();
-    frags.back.clear();
-    frags.pos.clear();
-    frags.nrm.clear();
     if per_pixel {
-        for v in [&mut frags.pos, &mut frags.nrm] {
-            v.reserve(px.len());
-        }
-        frags.pixel.reserve(px.len());
-        frags.back.reserve(px.len());
+        frags.size(px.len());
     }
-    for (k, (out, &r)) in px.iter_mut().zip(raster).enumerate() {
-        if r == NO_TRIANGLE {
-            *out = bg;
-            continue;
-        }
-        let t = &setup.tris[r as usize];
-        let side = (t.back && two) as usize;
-        match job.shading {
-            Shading::Flat if per_pixel => {
-                let (ls, s) = screen_weights(t.inv_w, bary[k]);
-                let pw = &tri_pos[r as usize];
-                let p = (pw[0] * ls[0] + pw[1] * ls[1] + pw[2] * ls[2]) * s;
-                // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
-                let n = setup.face_normal[t.orig as usize];
-                frags.pixel.push(k as u32);
-                frags.back.push(side == 1);
-                frags.pos.push(p);
-                frags.nrm.push(if t.back { n } else { -n });
+    // Fragments written so far.
+    let mut m = 0;
+    for (row, (px_row, r_row)) in px.chunks_mut(width).zip(raster.chunks(width)).enumerate() {
+        let mut x = 0;
+        while x < r_row.len() {
+            let r = r_row[x];
+            let len = run_length(&r_row[x..]);
+            let run = Run { x, y: y0 + row, at: row * width + x, len };
+            x += len;
+            if r == NO_TRIANGLE {
+                px_row[run.x..run.x + len].fill(bg);
+                continue;
             }
-            Shading::Flat => *out = p.face8[side][t.orig as usize],
-            Shading::Gouraud => {
-                let (ls, s) = screen_weights(t.inv_w, bary[k]);
-                let cw = &tri_color[r as usize];
-                let c = |ch: usize| to_u8((cw[0][ch] * ls[0] + cw[1][ch] * ls[1] + cw[2][ch] * ls[2]) * s);
-                *out = [c(0), c(1), c(2), c(3)];
+            let t = &setup.tris[r as usize];
+            let side = (t.back && two) as usize;
+            if job.shading == Shading::Flat && !per_pixel {
+                px_row[run.x..run.x + len].fill(p.face8[side][t.orig as usize]);
+                continue;
             }
-            Shading::Phong => {
-                let (ls, s) = screen_weights(t.inv_w, bary[k]);
-                let (pw, nw) = (&tri_pos[r as usize], &tri_nrm[r as usize]);
-                let p = (pw[0] * ls[0] + pw[1] * ls[1] + pw[2] * ls[2]) * s;
-                let nv = (nw[0] * ls[0] + nw[1] * ls[1] + nw[2] * ls[2]) * s;
-                frags.pixel.push(k as u32);
-                frags.back.push(side == 1);
-                frags.pos.push(p);
-                frags.nrm.push(nv);
+            let edges = ScreenBarycentrics::new(t).row(run.x, run.y);
+            let r = r as usize;
+            match job.shading {
+                Shading::Gouraud => {
+                    let cw = &tri_color[r];
+                    for (k0, n) in run.blocks() {
+                        let wt = run.weights(&edges, t.inv_w, k0);
+                        let ch = blend_n(&wt, cw);
+                        let mut rgba = [[0u8; 4]; LANES];
+                        for j in 0..LANES {
+                            for c in 0..4 {
+                                rgba[j][c] = to_u8(ch[c][j]);
+                            }
+                        }
+                        // Whole blocks where the row has room: lanes past the run land on
+                        // pixels of the row that later runs overwrite.
+                        if let Some(dst) = px_row.get_mut(run.x + k0..).and_then(|d| d.first_chunk_mut::<LANES>()) {
+                            *dst = rgba;
+                        } else {
+                            px_row[run.x + k0..run.x + k0 + n].copy_from_slice(&rgba[..n]);
+                        }
+                    }
+                }
+                Shading::Phong => {
+                    let (pw, nw) = (&tri_pos[r], &tri_nrm[r]);
+                    for (k0, n) in run.blocks() {
+                        let wt = run.weights(&edges, t.inv_w, k0);
+                        let p = blend_n(&wt, &xyz(pw));
+                        let nv = blend_n(&wt, &xyz(nw));
+                        let at = m + k0;
+                        for j in 0..n {
+                            frags.pos[at + j] = Vec3::new(p[0][j], p[1][j], p[2][j]);
+                            frags.nrm[at + j] = Vec3::new(nv[0][j], nv[1][j], nv[2][j]);
+                        }
+                    }
+                    m = run.fragments(frags, m, side == 1);
+                }
+                Shading::Flat => {
+                    // The demo's Flat: the face normal, from the screen derivatives.
+                    let pw = &tri_pos[r];
+                    // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
+                    let n = setup.face_normal[t.orig as usize];
+                    let n = if t.back { n } else { -n };
+                    for (k0, len) in run.blocks() {
+                        let wt = run.weights(&edges, t.inv_w, k0);
+                        let p = blend_n(&wt, &xyz(pw));
+                        let at = m + k0;
+                        for j in 0..len {
+                            frags.pos[at + j] = Vec3::new(p[0][j], p[1][j], p[2][j]);
+                            frags.nrm[at + j] = n;
+                        }
+                    }
+                    m = run.fragments(frags, m, side == 1);
+                }
             }
         }
     }
-    if per_pixel && !frags.pixel.is_empty() {
-        let m = frags.pixel.len();
+    if per_pixel && m > 0 {
         frags.front_out.resize(m, [0.0; 4]);
         frags.back_out.resize(m, [0.0; 4]);
-        let back_out = if two { Some(&mut frags.back_out[..]) } else { None };
+        let back_out = if two { Some(&mut frags.back_out[..m]) } else { None };
+        let (pos, nrm, front_out) = (&frags.pos[..m], &frags.nrm[..m], &mut frags.front_out[..m]);
         if job.shading == Shading::Phong {
             // The interpolated normals are renormalised inside (in vectorised chunks).
-            lighter.light_batch_eye_sum_normalizing(&frags.pos, &frags.nrm, &mut frags.front_out, back_out);
+            lighter.light_batch_eye_sum_normalizing(pos, nrm, front_out, back_out);
         } else {
             // Face normals are unit already.
-            lighter.light_batch_eye_sum(&frags.pos, &frags.nrm, &mut frags.front_out, back_out);
+            lighter.light_batch_eye_sum(pos, nrm, front_out, back_out);
         }
         for j in 0..m {
             let c = if frags.back[j] { frags.back_out[j] } else { frags.front_out[j] };
             px[frags.pixel[j] as usize] = c.map(to_u8);
         }
     }
-    frags.pixel.len()
+    m
+}
+
+impl Run {
+    /// Records the run's pixels, and their side, as fragments `m..m + len` (their positions
+    /// and normals already written); returns the fragments written after it.
+    #[inline(always)]
+    fn fragments(&self, frags: &mut Fragments, m: usize, back: bool) -> usize {
+        let end = m + self.len;
+        for (k, p) in frags.pixel[m..end].iter_mut().enumerate() {
+            *p = (self.at + k) as u32;
+        }
+        frags.back[m..end].fill(back);
+        end
+    }
 }
 
 /// The lighting evaluations a frame made in the resolve stage, given the fragments lit.
@@ -265,41 +464,64 @@ pub fn evaluations(job: &Job<'_>, fragments: usize) -> usize {
     }
 }
 
-/// Shades every covered pixel (band by band on all cores); returns the number of lighting
-/// evaluations made here.
-pub fn resolve(
-    job: &Job<'_>,
-    verts: &Vertices,
-    setup: &Setup,
-    lighter: &Lighter,
-    image: &mut Image,
-    scratch: &mut Scratch,
-) -> usize {
-    let rows = image.width * BAND;
-    let p = prepare(job, verts, setup, scratch, image.height.div_ceil(BAND));
-    let (shared, bands) = split(scratch);
-    let (raster, bary) = (&image.raster, &image.bary);
-    let lit: usize = image
-        .rgba
-        .par_chunks_mut(rows * 4)
-        .zip(bands.par_iter_mut())
-        .enumerate()
-        .map(|(b, (rgba, frags))| {
-            let start = b * rows;
-            let (px, _) = rgba.as_chunks_mut::<4>();
-            let n = px.len();
-            resolve_band(
-                job,
-                setup,
-                lighter,
-                &p,
-                &shared,
-                px,
-                &raster[start..start + n],
-                &bary[start..start + n],
-                frags,
-            )
-        })
-        .sum();
-    evaluations(job, lit)
+#[cfg(test)]
+mod tests {
+    use super::super::setup::RasterTri;
+    use super::*;
+
+    /// Runs are found whole: the length of the first run of every suffix of rows with
+    /// runs of every length from 1 to 40 (across the eight-wide blocks and into the tail).
+    #[test]
+    fn run_length_is_the_first_run() {
+        let mut seed = 0x853c49e6748fea9bu64;
+        for _ in 0..2_000 {
+            let mut row = Vec::new();
+            while row.len() < 100 {
+                seed ^= seed << 13;
+                seed ^= seed >> 7;
+                seed ^= seed << 17;
+                let len = 1 + (seed % 40) as usize;
+                let value = if seed.is_multiple_of(3) { NO_TRIANGLE } else { (seed >> 20) as u32 % 5 };
+                row.extend(std::iter::repeat_n(value, len));
+            }
+            for start in 0..row.len() {
+                let s = &row[start..];
+                let naive = s.iter().position(|&q| q != s[0]).unwrap_or(s.len());
+                assert_eq!(run_length(s), naive, "{s:?}");
+            }
+        }
+    }
+
+    /// The weights of a block are [`screen_weights`] of the exact barycentrics, lane by
+    /// lane, and lane j is pixel k0 + j of the run.
+    #[test]
+    fn block_weights_are_the_pixels_weights() {
+        let t = RasterTri {
+            x: [3 << 8, 90 << 8, 20 << 8],
+            y: [2 << 8, 10 << 8, 33 << 8],
+            inv_w: [0.5, 0.25, 0.8],
+            x0: 3,
+            x1: 89,
+            y0: 2,
+            y1: 32,
+            ..RasterTri::default()
+        };
+        let sb = ScreenBarycentrics::new(&t);
+        let run = Run { x: 12, y: 9, at: 0, len: 30 };
+        let edges = sb.row(run.x, run.y);
+        for (k0, n) in run.blocks() {
+            assert_eq!(n, (30 - k0).min(LANES));
+            let wt = run.weights(&edges, t.inv_w, k0);
+            for j in 0..n {
+                let (ls, s) = screen_weights(t.inv_w, sb.at(run.x + k0 + j, run.y));
+                assert_eq!(
+                    [wt.ls[0][j], wt.ls[1][j], wt.ls[2][j], wt.s[j]],
+                    [ls[0], ls[1], ls[2], s],
+                    "pixel {}",
+                    k0 + j
+                );
+            }
+        }
+        assert_eq!(run.blocks().count(), 4);
+    }
 }
