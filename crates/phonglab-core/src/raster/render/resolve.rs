@@ -371,18 +371,27 @@ fn resolve_band_any(
                     for (k0, n) in run.blocks() {
                         let wt = run.weights(&edges, t.inv_w, k0);
                         let ch = blend_n(&wt, cw);
-                        let mut rgba = [[0u8; 4]; LANES];
+                        // Each pixel's four bytes as one little-endian u32, built in the
+                        // lanes by shifts (bytes assembled in memory would be stored in two
+                        // halves and reloaded whole, which stalls).
+                        let mut rgba = [0u32; LANES];
                         for j in 0..LANES {
-                            for c in 0..4 {
-                                rgba[j][c] = to_u8(ch[c][j]);
-                            }
+                            rgba[j] = to_u8(ch[0][j]) as u32
+                                | (to_u8(ch[1][j]) as u32) << 8
+                                | (to_u8(ch[2][j]) as u32) << 16
+                                | (to_u8(ch[3][j]) as u32) << 24;
                         }
                         // Whole blocks where the row has room: lanes past the run land on
                         // pixels of the row that later runs overwrite.
-                        if let Some(dst) = px_row.get_mut(run.x + k0..).and_then(|d| d.first_chunk_mut::<LANES>()) {
-                            *dst = rgba;
+                        let dst = &mut px_row[run.x + k0..];
+                        if let Some(dst) = dst.first_chunk_mut::<LANES>() {
+                            for j in 0..LANES {
+                                dst[j] = rgba[j].to_le_bytes();
+                            }
                         } else {
-                            px_row[run.x + k0..run.x + k0 + n].copy_from_slice(&rgba[..n]);
+                            for (d, c) in dst.iter_mut().zip(&rgba).take(n) {
+                                *d = c.to_le_bytes();
+                            }
                         }
                     }
                 }
