@@ -38,6 +38,8 @@ pub struct Scratch {
     tri_pos: Vec<[Vec3; 3]>,
     /// Phong: (unnormalised) normals at the vertices, times 1/w.
     tri_nrm: Vec<[Vec3; 3]>,
+    /// Each triangle's edge functions, set up once a frame rather than once a run.
+    tri_edges: Vec<ScreenBarycentrics>,
 }
 
 /// The perspective-correct weights of a pixel with screen barycentrics `l` (of vertices 1
@@ -161,6 +163,8 @@ pub fn prepare(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: &mut Scr
     scratch.bands.resize_with(bands, Fragments::default);
     if job.shading != Shading::Flat || per_pixel {
         triangle_attributes(job, verts, setup, scratch);
+        scratch.tri_edges.clear();
+        scratch.tri_edges.extend(setup.tris.iter().map(ScreenBarycentrics::new));
     }
     // Flat: each face's colour converted to 8 bits once.
     let face8: [Vec<[u8; 4]>; 2] = if job.shading == Shading::Flat && !per_pixel {
@@ -174,7 +178,13 @@ pub fn prepare(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: &mut Scr
 /// The per-triangle attributes and the per-band fragment buffers, split so that each band
 /// borrows its own fragments while all share the attributes.
 pub fn split(scratch: &mut Scratch) -> (Shared<'_>, &mut [Fragments]) {
-    (Shared { tri_color: &scratch.tri_color, tri_pos: &scratch.tri_pos, tri_nrm: &scratch.tri_nrm }, &mut scratch.bands)
+    let shared = Shared {
+        tri_color: &scratch.tri_color,
+        tri_pos: &scratch.tri_pos,
+        tri_nrm: &scratch.tri_nrm,
+        tri_edges: &scratch.tri_edges,
+    };
+    (shared, &mut scratch.bands)
 }
 
 /// The per-triangle attributes, read by every band.
@@ -182,6 +192,7 @@ pub struct Shared<'a> {
     tri_color: &'a [[[f32; 4]; 3]],
     tri_pos: &'a [[Vec3; 3]],
     tri_nrm: &'a [[Vec3; 3]],
+    tri_edges: &'a [ScreenBarycentrics],
 }
 
 /// How many entries at the start of `row` (not empty) equal its first: eight compared at
@@ -363,7 +374,7 @@ fn resolve_band_any(
                 px_row[run.x..run.x + len].fill(p.face8[side][t.orig as usize]);
                 continue;
             }
-            let edges = ScreenBarycentrics::new(t).row(run.x, run.y);
+            let edges = shared.tri_edges[r as usize].row(run.x, run.y);
             let r = r as usize;
             match job.shading {
                 Shading::Gouraud => {
