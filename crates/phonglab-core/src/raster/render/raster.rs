@@ -136,6 +136,9 @@ struct Tiles {
 /// Tiles in a band at most (no allocation: the array is on the stack).
 const MAX_TILES: usize = 256;
 
+/// Columns whose farthest depths [`Tiles::farthest`] gathers at once, on the stack.
+const SEGMENT: usize = 2048;
+
 /// How far below its vertices' depths a triangle's interpolated depth can fall by rounding,
 /// with a wide margin. At a covered pixel the exact barycentrics are in [0, 1] (the
 /// coverage test is exact), the f32 ones are off by a few units in the last place, and so
@@ -144,15 +147,34 @@ const MAX_TILES: usize = 256;
 const DEPTH_ROUNDING_MARGIN: f32 = 1.0 / 4096.0;
 
 impl Tiles {
-    /// The tiles of `band` as it stands.
+    /// The tiles of `band` as it stands: each column's farthest depth down the band, a
+    /// segment of columns at a time (a loop over whole rows, which vectorises), then each
+    /// tile's farthest column.
     fn farthest(band: &Band<'_>) -> Self {
+        // Compares rather than f32::max, so that the loops vectorise. (The buffer never
+        // holds a NaN: a NaN depth fails the test that writes it.)
+        let max = |m: f32, z: f32| if z > m { z } else { m };
         let width = band.width.div_ceil(MAX_TILES).next_multiple_of(LANES);
         let mut farthest = [f32::NEG_INFINITY; MAX_TILES];
-        for row in band.depth.chunks_exact(band.width) {
-            for (tile, far) in row.chunks(width).zip(farthest.iter_mut()) {
-                // Compares rather than f32::max, so that the loop vectorises. (The buffer
-                // never holds a NaN: a NaN depth fails the test that writes it.)
-                *far = tile.iter().fold(*far, |m, &z| if z > m { z } else { m });
+        let mut column = [f32::NEG_INFINITY; SEGMENT];
+        // Whole tiles per segment (a tile wider than a segment is one segment).
+        let segment = (SEGMENT / width * width).max(width);
+        for x0 in (0..band.width).step_by(segment) {
+            let n = segment.min(band.width - x0);
+            let mut far_columns = |col: &mut [f32]| {
+                col.fill(f32::NEG_INFINITY);
+                for row in band.depth.chunks_exact(band.width) {
+                    for (c, &z) in col.iter_mut().zip(&row[x0..x0 + n]) {
+                        *c = max(*c, z);
+                    }
+                }
+                for (tile, far) in col.chunks(width).zip(&mut farthest[x0 / width..]) {
+                    *far = tile.iter().fold(f32::NEG_INFINITY, |m, &z| max(m, z));
+                }
+            };
+            match column.get_mut(..n) {
+                Some(col) => far_columns(col),
+                None => far_columns(&mut vec![0.0; n]),
             }
         }
         Self { width, farthest }

@@ -89,22 +89,31 @@ fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: 
     }
 }
 
-/// One band's per-pixel fragments, presized to the band (written by index, never pushed).
+/// One band's per-pixel fragments, presized to the band (written by index, never pushed),
+/// and the runs they came from.
 #[derive(Default)]
 pub struct Fragments {
-    pixel: Vec<u32>,
-    back: Vec<bool>,
+    runs: Vec<FragmentRun>,
     pos: Vec<Vec3>,
     nrm: Vec<Vec3>,
     front_out: Vec<[f32; 4]>,
     back_out: Vec<[f32; 4]>,
 }
 
+/// `len` fragments from index `first`, lit for the pixels from index `pixel` of the band
+/// on (a run: consecutive pixels, consecutive fragments), on the back side or the front.
+#[derive(Clone, Copy)]
+struct FragmentRun {
+    first: u32,
+    pixel: u32,
+    len: u32,
+    back: bool,
+}
+
 impl Fragments {
-    /// Room for `n` fragments.
+    /// Room for `n` fragments, and no runs yet.
     fn size(&mut self, n: usize) {
-        self.pixel.resize(n, 0);
-        self.back.resize(n, false);
+        self.runs.clear();
         self.pos.resize(n, Vec3::ZERO);
         self.nrm.resize(n, Vec3::ZERO);
     }
@@ -452,9 +461,16 @@ fn resolve_band_any(
             // Face normals are unit already.
             lighter.light_batch_eye_sum(pos, nrm, front_out, back_out);
         }
-        for j in 0..m {
-            let c = if frags.back[j] { frags.back_out[j] } else { frags.front_out[j] };
-            px[frags.pixel[j] as usize] = c.map(to_u8);
+        // Run by run: consecutive fragments to consecutive pixels, channel by channel (a
+        // loop the compiler vectorises).
+        for run in &frags.runs {
+            let out = if run.back { &frags.back_out } else { &frags.front_out };
+            let (first, pixel, len) = (run.first as usize, run.pixel as usize, run.len as usize);
+            let src = out[first..first + len].as_flattened();
+            let dst = px[pixel..pixel + len].as_flattened_mut();
+            for (d, &c) in dst.iter_mut().zip(src) {
+                *d = to_u8(c);
+            }
         }
     }
     m
@@ -465,12 +481,8 @@ impl Run {
     /// and normals already written); returns the fragments written after it.
     #[inline(always)]
     fn fragments(&self, frags: &mut Fragments, m: usize, back: bool) -> usize {
-        let end = m + self.len;
-        for (k, p) in frags.pixel[m..end].iter_mut().enumerate() {
-            *p = (self.at + k) as u32;
-        }
-        frags.back[m..end].fill(back);
-        end
+        frags.runs.push(FragmentRun { first: m as u32, pixel: self.at as u32, len: self.len as u32, back });
+        m + self.len
     }
 }
 
