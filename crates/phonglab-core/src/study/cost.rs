@@ -126,6 +126,7 @@ pub struct Reference {
 pub fn reference(setup: &Setup<'_>) -> Result<Reference, SceneError> {
     let mesh = reference_view(setup.view).mesh();
     let mut renderer = Renderer::new();
+    renderer.keep_visibility(true);
     let job = setup.job(&mesh, Shading::Gouraud, EvalOptions::default());
     let size = setup.size.max(1);
     renderer.render(&job, size, size)?;
@@ -173,11 +174,13 @@ pub struct ErrorStats {
 }
 
 /// Each pixel's worst-channel error in units of 1/255 (0 where neither image covers it).
+/// `image` is a frame whose visibility was kept ([`Renderer::keep_visibility`]); where it
+/// was not, its pixels count as covered.
 pub fn error_map(image: &Image, reference: &Reference) -> Vec<f32> {
     (0..reference.rgb.len())
         .map(|i| {
             let (x, y) = (i % reference.size, i / reference.size);
-            if !reference.covered[i] && !image.covered(x, y) {
+            if !reference.covered[i] && image.covered(x, y) == Some(false) {
                 return 0.0;
             }
             let c = image.rgb(x, y);
@@ -186,12 +189,12 @@ pub fn error_map(image: &Image, reference: &Reference) -> Vec<f32> {
         .collect()
 }
 
-/// [`ErrorStats`] of `image` against `reference` (same size).
+/// [`ErrorStats`] of `image` against `reference` (same size; `image` as for [`error_map`]).
 pub fn error(image: &Image, reference: &Reference) -> ErrorStats {
     let (mut sum, mut max, mut over, mut n) = (0.0, 0.0f64, 0usize, 0usize);
     for i in 0..reference.rgb.len() {
         let (x, y) = (i % reference.size, i / reference.size);
-        if !reference.covered[i] && !image.covered(x, y) {
+        if !reference.covered[i] && image.covered(x, y) == Some(false) {
             continue;
         }
         let c = image.rgb(x, y);
@@ -383,6 +386,8 @@ pub fn measure_view(
     let size = reference.size;
     let mut renderer = Renderer::new();
     let ms = time_job(&mut renderer, &job, size, timing)?;
+    // Timed as every frame is drawn; the frame compared keeps its visibility.
+    renderer.keep_visibility(true);
     let (image, _) = renderer.render(&job, size, size)?;
     Ok(Measured {
         triangles: mesh.triangle_count(),

@@ -8,7 +8,9 @@
 //! 2. [`setup`]: each triangle clipped (near and far planes, and x/y beyond a guard band),
 //!    its facing decided, back faces culled if asked, snapped to fixed point.
 //! 3. [`raster`]: triangles into a visibility buffer (depth, triangle), in horizontal
-//!    bands on all cores; top-left fill rule, so shared edges are drawn once.
+//!    bands on all cores, each band in a buffer of its thread's own that stays in cache;
+//!    top-left fill rule, so shared edges are drawn once; back faces hidden whole behind
+//!    the band's front faces skipped.
 //! 4. [`resolve`]: right after each band is drawn, while it is in cache, each covered pixel
 //!    shaded once, in runs of one triangle, with exact
 //!    screen barycentrics from the triangle's edge functions, made perspective-correct:
@@ -64,9 +66,10 @@ pub struct Image {
     pub height: usize,
     /// RGBA8, `width * height * 4` bytes.
     pub rgba: Vec<u8>,
-    /// Window-space depth of each pixel (1 where uncovered).
-    pub depth: Vec<f32>,
-    /// The rasterised (clipped) triangle at each pixel ([`NO_TRIANGLE`] where uncovered).
+    /// Pixels covered by the mesh.
+    covered: usize,
+    /// The rasterised (clipped) triangle at each pixel ([`NO_TRIANGLE`] where uncovered),
+    /// kept only when the renderer is asked to ([`Renderer::keep_visibility`]); else empty.
     pub(crate) raster: Vec<u32>,
 }
 
@@ -76,15 +79,17 @@ pub const NO_TRIANGLE: u32 = u32::MAX;
 impl Image {
     /// The share of pixels covered by the mesh.
     pub fn coverage(&self) -> f64 {
-        if self.raster.is_empty() {
-            return 0.0;
-        }
-        self.raster.iter().filter(|t| **t != NO_TRIANGLE).count() as f64 / self.raster.len() as f64
+        let n = self.width * self.height;
+        if n == 0 { 0.0 } else { self.covered as f64 / n as f64 }
     }
 
-    /// Is pixel (x, y) (y from the top) covered?
-    pub fn covered(&self, x: usize, y: usize) -> bool {
-        self.raster.get(y * self.width + x).is_some_and(|t| *t != NO_TRIANGLE)
+    /// Is pixel (x, y) (y from the top) covered? `None` unless the renderer kept the
+    /// frame's visibility ([`Renderer::keep_visibility`]), or outside the image.
+    pub fn covered(&self, x: usize, y: usize) -> Option<bool> {
+        if x >= self.width {
+            return None;
+        }
+        self.raster.get(y * self.width + x).map(|t| *t != NO_TRIANGLE)
     }
 
     /// The RGB of pixel (x, y), y from the top.
@@ -119,12 +124,22 @@ pub struct Renderer {
     image: Image,
     scratch: resolve::Scratch,
     bins: Vec<Vec<u32>>,
+    keep_visibility: bool,
 }
 
 impl Renderer {
     /// A renderer with empty buffers.
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// Keep each frame's visibility (the triangle at every pixel) in its image, for
+    /// [`Image::covered`] and for a [`Renderer::surface_at`] of every pixel. Off by default:
+    /// each band is then drawn in a buffer of its own thread, which stays in cache, and
+    /// [`Renderer::pick`] and [`Renderer::surface_at`] draw the band of the pixel asked
+    /// about again (the same triangles, the same code, so the same answer).
+    pub fn keep_visibility(&mut self, keep: bool) {
+        self.keep_visibility = keep;
     }
 
     /// The lighting plan of the last frame.
@@ -154,7 +169,7 @@ impl Renderer {
         let t_vertices = lap();
         self.setup.run(job, &self.vertices, lighter, width, height);
         let t_setup = lap();
-        raster::bin(&self.setup, width, height, &mut self.image, &mut self.bins);
+        raster::bin(&self.setup, width, height, self.keep_visibility, &mut self.image, &mut self.bins);
         let (lit, [raster_share, resolve_share]) =
             draw_and_shade(job, &self.vertices, &self.setup, lighter, &mut self.image, &mut self.scratch, &self.bins);
         let t_bands = lap();
@@ -170,9 +185,11 @@ impl Renderer {
     }
 }
 
-/// Stages 3 and 4, band by band on all cores: each band is drawn and then shaded at once,
-/// while its depths and triangles are still in the core's cache. Returns the fragments lit
-/// and the shares of the bands' time spent drawing and shading.
+/// Stages 3 and 4, band by band on all cores: each band is drawn into its thread's own
+/// visibility buffer ([`raster::with_band_buffer`]) and then shaded at once, while the
+/// buffer is still in the core's cache; the buffer is copied into the image only if the
+/// visibility is kept. Returns the fragments lit and the shares of the bands' time spent
+/// drawing and shading; sets the image's coverage.
 fn draw_and_shade(
     job: &Job<'_>,
     verts: &vertices::Vertices,
@@ -184,26 +201,41 @@ fn draw_and_shade(
 ) -> (usize, [f64; 2]) {
     use rayon::prelude::*;
     let (width, rows) = (image.width, image.width * raster::BAND);
-    let prepared = resolve::prepare(job, verts, setup, scratch, image.height.div_ceil(raster::BAND));
+    let bands = image.height.div_ceil(raster::BAND);
+    let prepared = resolve::prepare(job, verts, setup, scratch, bands);
     let (shared, fragments) = resolve::split(scratch);
-    let (lit, drawing, shading) = image
-        .depth
-        .par_chunks_mut(rows)
-        .zip(image.raster.par_chunks_mut(rows))
-        .zip(image.rgba.par_chunks_mut(rows * 4))
+    let mut kept: Vec<Option<&mut [u32]>> = match image.raster.is_empty() {
+        true => (0..bands).map(|_| None).collect(),
+        false => image.raster.chunks_mut(rows).map(Some).collect(),
+    };
+    let (covered, lit, drawing, shading) = image
+        .rgba
+        .par_chunks_mut(rows * 4)
         .zip(bins.par_iter())
         .zip(fragments.par_iter_mut())
+        .zip(kept.par_iter_mut())
         .enumerate()
-        .map(|(b, ((((depth, raster), rgba), bin), frags))| {
-            let start = std::time::Instant::now();
-            let y_start = b * raster::BAND;
-            raster::draw_band(setup, bin, raster::Band { y_start: y_start as i32, width, depth, raster: &mut *raster });
-            let drawn = std::time::Instant::now();
+        .map(|(b, (((rgba, bin), frags), kept))| {
             let (px, _) = rgba.as_chunks_mut::<4>();
-            let lit = resolve::resolve_band(job, setup, lighter, &prepared, &shared, px, raster, y_start, width, frags);
-            (lit, (drawn - start).as_secs_f64(), drawn.elapsed().as_secs_f64())
+            raster::with_band_buffer(px.len(), |depth, raster| {
+                let start = std::time::Instant::now();
+                let y_start = b * raster::BAND;
+                raster::draw_band(
+                    setup,
+                    bin,
+                    raster::Band { y_start: y_start as i32, width, depth, raster: &mut *raster },
+                );
+                let drawn = std::time::Instant::now();
+                let shaded =
+                    resolve::resolve_band(job, setup, lighter, &prepared, &shared, px, raster, y_start, width, frags);
+                if let Some(kept) = kept {
+                    kept.copy_from_slice(raster);
+                }
+                (shaded.covered, shaded.lit, (drawn - start).as_secs_f64(), drawn.elapsed().as_secs_f64())
+            })
         })
-        .reduce(|| (0, 0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1, a.2 + b.2));
+        .reduce(|| (0, 0, 0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1, a.2 + b.2, a.3 + b.3));
+    image.covered = covered;
     let total = drawing + shading;
     let shares = if total > 0.0 { [drawing / total, shading / total] } else { [0.5, 0.5] };
     (lit, shares)
@@ -221,26 +253,91 @@ pub struct Surface {
 }
 
 impl Renderer {
+    /// The rasterised triangle at pixel (`x`, `y`) of the last frame, if covered: from the
+    /// kept visibility, or else by drawing the pixel's band again.
+    fn triangle_at(&self, x: usize, y: usize) -> Option<u32> {
+        let img = &self.image;
+        if x >= img.width || y >= img.height {
+            return None;
+        }
+        let r = if img.raster.is_empty() {
+            let b = y / raster::BAND;
+            let (y_start, band_rows) = (b * raster::BAND, raster::BAND.min(img.height - b * raster::BAND));
+            let n = band_rows * img.width;
+            let (mut depth, mut tri) = (vec![1.0; n], vec![NO_TRIANGLE; n]);
+            let band = raster::Band { y_start: y_start as i32, width: img.width, depth: &mut depth, raster: &mut tri };
+            raster::draw_band(&self.setup, self.bins.get(b)?, band);
+            *tri.get((y - y_start) * img.width + x)?
+        } else {
+            img.raster[y * img.width + x]
+        };
+        (r != NO_TRIANGLE).then_some(r)
+    }
+
     /// What pixel `i` (row-major, rows from the top) of the last frame shows, if covered.
+    /// (For every pixel of a frame, keep its visibility first: [`Renderer::keep_visibility`].)
     pub fn surface_at(&self, i: usize) -> Option<Surface> {
-        let r = *self.image.raster.get(i)?;
+        let width = self.image.width.max(1);
+        let (x, y) = (i % width, i / width);
+        let r = self.triangle_at(x, y)?;
         let t = self.setup.tris.get(r as usize)?;
-        let b = resolve::original_barycentrics(&self.setup, &self.image, i)?;
+        let b = resolve::original_barycentrics(&self.setup, r, x, y)?;
         Some(Surface { triangle: t.orig as usize, barycentrics: b, back: t.back })
     }
 
     /// The mesh vertex nearest to what pixel (x, y) of the last frame shows (y from the
     /// top): the vertex of the drawn triangle with the largest barycentric weight there.
     pub fn pick(&self, mesh: &Mesh, x: usize, y: usize) -> Option<usize> {
-        let img = &self.image;
-        if x >= img.width || y >= img.height {
-            return None;
-        }
-        let i = y * img.width + x;
-        let r = img.raster[i];
+        let r = self.triangle_at(x, y)?;
         let tri = mesh.triangles.get(self.setup.tris.get(r as usize)?.orig as usize)?;
-        let b = resolve::original_barycentrics(&self.setup, img, i)?;
+        let b = resolve::original_barycentrics(&self.setup, r, x, y)?;
         let k = (0..3).max_by(|i, j| b[*i].total_cmp(&b[*j]))?;
         Some(tri[k] as usize)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::library::bench_job;
+    use crate::mesh::{sphere, teapot};
+    use crate::presets::bench_scene;
+
+    /// Without the kept visibility, picking and `surface_at` draw the pixel's band again:
+    /// at every pixel they answer exactly as the kept visibility does; the images and the
+    /// coverage are the same either way, and the coverage is the kept buffer's count.
+    #[test]
+    fn a_band_drawn_again_answers_as_the_kept_visibility() {
+        let scene = bench_scene(37);
+        for (mesh, shading) in
+            [(sphere::glu_sphere(1.0, 50, 50), Shading::Phong), (teapot::glut_teapot(0.8, 7), Shading::Gouraud)]
+        {
+            let job = bench_job(&scene, &mesh, shading);
+            // 61 rows: the last band is a short one.
+            let (w, h) = (83, 61);
+            let mut kept = Renderer::new();
+            kept.keep_visibility(true);
+            let mut redrawn = Renderer::new();
+            let a = kept.render(&job, w, h).unwrap().0.clone();
+            let b = redrawn.render(&job, w, h).unwrap().0.clone();
+            assert_eq!(a.rgba, b.rgba);
+            let counted = a.raster.iter().filter(|t| **t != NO_TRIANGLE).count();
+            assert!(counted > 500, "{counted}");
+            assert_eq!(a.coverage(), counted as f64 / (w * h) as f64);
+            assert_eq!(b.coverage(), a.coverage());
+            assert_eq!(b.covered(3, 3), None, "not kept");
+            let mut surfaces = 0;
+            for y in 0..h {
+                for x in 0..w {
+                    let i = y * w + x;
+                    assert_eq!(a.covered(x, y), Some(a.raster[i] != NO_TRIANGLE));
+                    assert_eq!(kept.surface_at(i), redrawn.surface_at(i), "pixel {x},{y}");
+                    assert_eq!(kept.pick(&mesh, x, y), redrawn.pick(&mesh, x, y), "pixel {x},{y}");
+                    surfaces += kept.surface_at(i).is_some() as usize;
+                }
+            }
+            assert_eq!(surfaces, counted);
+            assert_eq!(redrawn.pick(&mesh, w, 0), None, "outside the image");
+        }
     }
 }

@@ -37,14 +37,13 @@ fn bias(ax: i64, ay: i64, bx: i64, by: i64) -> i64 {
     if (dy == 0 && dx > 0) || dy < 0 { 0 } else { -1 }
 }
 
-/// Sizes `image` to width x height (cleared band by band when each is drawn, by
-/// [`draw_band`]) and sorts the triangles of `setup` into the bands of rows they touch.
-pub fn bin(setup: &Setup, width: usize, height: usize, image: &mut Image, bins: &mut Vec<Vec<u32>>) {
+/// Sizes `image` to width x height (its triangle at each pixel only if `keep`) and sorts
+/// the triangles of `setup` into the bands of rows they touch.
+pub fn bin(setup: &Setup, width: usize, height: usize, keep: bool, image: &mut Image, bins: &mut Vec<Vec<u32>>) {
     let n = width * height;
     image.width = width;
     image.height = height;
-    image.depth.resize(n, 1.0);
-    image.raster.resize(n, NO_TRIANGLE);
+    image.raster.resize(if keep { n } else { 0 }, NO_TRIANGLE);
     image.rgba.resize(n * 4, 0);
 
     let bands = height.div_ceil(BAND);
@@ -61,6 +60,27 @@ pub fn bin(setup: &Setup, width: usize, height: usize, image: &mut Image, bins: 
             }
         }
     }
+}
+
+std::thread_local! {
+    /// Each thread's visibility buffer (depths, triangles) for the band it is drawing.
+    static BAND_BUFFER: std::cell::RefCell<(Vec<f32>, Vec<u32>)> = const { std::cell::RefCell::new((Vec::new(), Vec::new())) };
+}
+
+/// Runs `f` on a visibility buffer of `n` pixels (depths and triangles, contents left
+/// over): the calling thread's own, kept from band to band and frame to frame, so that a
+/// band is drawn and shaded in memory that stays in the core's cache, and the frame's
+/// visibility never goes out to main memory. (A fresh buffer if the thread's is in use.)
+pub fn with_band_buffer<R>(n: usize, f: impl FnOnce(&mut [f32], &mut [u32]) -> R) -> R {
+    BAND_BUFFER.with(|cell| match cell.try_borrow_mut() {
+        Ok(mut buffer) => {
+            let (depth, raster) = &mut *buffer;
+            depth.resize(n, 1.0);
+            raster.resize(n, NO_TRIANGLE);
+            f(depth, raster)
+        }
+        Err(_) => f(&mut vec![1.0; n], &mut vec![NO_TRIANGLE; n]),
+    })
 }
 
 /// One band of the visibility buffer: rows `y_start..` of the image, `width` pixels each.

@@ -23,7 +23,7 @@ use glam::Vec3;
 use super::raster::ScreenBarycentrics;
 use super::setup::Setup;
 use super::vertices::Vertices;
-use super::{Image, Job, NO_TRIANGLE};
+use super::{Job, NO_TRIANGLE};
 use crate::specialised::Lighter;
 use crate::view::{FlatNormal, Shading};
 
@@ -146,11 +146,11 @@ fn barycentrics(setup: &Setup, raster: u32, l: [f32; 2]) -> [f32; 3] {
     out
 }
 
-/// The original triangle's barycentrics at pixel `i` of the last frame (for picking).
-pub(crate) fn original_barycentrics(setup: &Setup, image: &Image, i: usize) -> Option<[f32; 3]> {
-    let r = *image.raster.get(i)?;
+/// The original triangle's barycentrics at pixel (`x`, `y`) of the last frame, where the
+/// rasterised triangle `r` shows (for picking).
+pub(crate) fn original_barycentrics(setup: &Setup, r: u32, x: usize, y: usize) -> Option<[f32; 3]> {
     let t = setup.tris.get(r as usize)?;
-    let l = ScreenBarycentrics::new(t).at(i % image.width, i / image.width);
+    let l = ScreenBarycentrics::new(t).at(x, y);
     Some(barycentrics(setup, r, l))
 }
 
@@ -303,7 +303,8 @@ fn blend_n<const N: usize>(wt: &Weights, a: &[[f32; N]; 3]) -> [[f32; LANES]; N]
 }
 
 /// Shades one band: `px` its pixels, `raster` its visibility buffer, `y0` the image row of
-/// its first row, `width` the image's width. Returns the lighting evaluations made
+/// its first row, `width` the image's width. Returns the pixels covered and the lighting
+/// evaluations made
 /// (fragments lit). Runs a copy compiled for AVX2 where the processor has it (the same
 /// operations, so the same bits: Rust never fuses a multiply and an add by itself).
 #[allow(clippy::too_many_arguments)]
@@ -318,7 +319,7 @@ pub fn resolve_band(
     y0: usize,
     width: usize,
     frags: &mut Fragments,
-) -> usize {
+) -> Shaded {
     #[cfg(target_arch = "x86_64")]
     if crate::specialised::has_avx2_fma() {
         // SAFETY: the CPU has AVX2 and FMA (checked just above).
@@ -341,7 +342,7 @@ fn resolve_band_avx2(
     y0: usize,
     width: usize,
     frags: &mut Fragments,
-) -> usize {
+) -> Shaded {
     resolve_band_any(job, setup, lighter, p, shared, px, raster, y0, width, frags)
 }
 
@@ -358,14 +359,14 @@ fn resolve_band_any(
     y0: usize,
     width: usize,
     frags: &mut Fragments,
-) -> usize {
+) -> Shaded {
     let (two, per_pixel, bg) = (p.two, p.per_pixel, p.bg);
     let (tri_color, tri_pos, tri_nrm) = (shared.tri_color, shared.tri_pos, shared.tri_nrm);
     if per_pixel {
         frags.size(px.len());
     }
-    // Fragments written so far.
-    let mut m = 0;
+    // Fragments written so far, pixels covered.
+    let (mut m, mut covered) = (0, 0);
     for (row, (px_row, r_row)) in px.chunks_mut(width).zip(raster.chunks(width)).enumerate() {
         let mut x = 0;
         while x < r_row.len() {
@@ -377,6 +378,7 @@ fn resolve_band_any(
                 px_row[run.x..run.x + len].fill(bg);
                 continue;
             }
+            covered += len;
             let t = &setup.tris[r as usize];
             let side = (t.back && two) as usize;
             if job.shading == Shading::Flat && !per_pixel {
@@ -473,7 +475,16 @@ fn resolve_band_any(
             }
         }
     }
-    m
+    Shaded { covered, lit: m }
+}
+
+/// What [`resolve_band`] did.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Shaded {
+    /// Pixels covered by the mesh.
+    pub covered: usize,
+    /// Fragments lit (per-pixel shading), each one lighting evaluation.
+    pub lit: usize,
 }
 
 impl Run {
