@@ -121,17 +121,27 @@ fn planes_needed(c: &[Vec4; 3]) -> (bool, bool) {
     (outside_depth, outside_guard)
 }
 
-fn trivially_rejected(c: &[Vec4; 3]) -> bool {
-    let all = |f: &dyn Fn(&Vec4) -> bool| c.iter().all(f);
-    all(&|v| v.x < -v.w)
-        || all(&|v| v.x > v.w)
-        || all(&|v| v.y < -v.w)
-        || all(&|v| v.y > v.w)
-        || all(&|v| v.z < -v.w)
-        || all(&|v| v.z > v.w)
+/// The planes of the view volume a clip-space point is outside of, one bit each:
+/// x < -w, x > w, y < -w, y > w, z < -w, z > w (a NaN is outside of none).
+#[inline(always)]
+fn outcode(v: Vec4) -> u8 {
+    (v.x < -v.w) as u8
+        | ((v.x > v.w) as u8) << 1
+        | ((v.y < -v.w) as u8) << 2
+        | ((v.y > v.w) as u8) << 3
+        | ((v.z < -v.w) as u8) << 4
+        | ((v.z > v.w) as u8) << 5
 }
 
-/// Snaps a clipped polygon (fan) to raster triangles.
+/// Are all three corners outside the same plane? Then nothing of the triangle is visible.
+#[inline(always)]
+fn trivially_rejected(c: &[Vec4; 3]) -> bool {
+    outcode(c[0]) & outcode(c[1]) & outcode(c[2]) != 0
+}
+
+/// Snaps a clipped polygon (fan) to raster triangles. (Inline: in [`setup_faces_avx2`] it
+/// rounds without calls.)
+#[inline(always)]
 fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bool, out: &mut Vec<RasterTri>) {
     if poly.len() < 3 {
         return;
@@ -144,8 +154,8 @@ fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bo
         let xw = (xn + 1.0) * 0.5 * w;
         let yw = (1.0 - yn) * 0.5 * h; // image rows go down
         *o = (
-            ((xw * ONE as f32).round()) as i64,
-            ((yw * ONE as f32).round()) as i64,
+            (xw * ONE as f32).round() as i64,
+            (yw * ONE as f32).round() as i64,
             ((zn + 1.0) * 0.5).clamp(0.0, 1.0),
             iw,
         );
@@ -205,31 +215,8 @@ impl Setup {
         let chunks = tris.len().div_ceil(GRAIN);
         self.per_face.resize_with(chunks, Vec::new);
         self.per_face.par_iter_mut().enumerate().for_each(|(k, out)| {
-            out.clear();
-            for (j, t) in tris.iter().enumerate().skip(k * GRAIN).take(GRAIN) {
-                let c = t.map(|i| verts.clip[i as usize]);
-                if trivially_rejected(&c) {
-                    continue;
-                }
-                let mut poly = Poly::default();
-                for (k, clip) in c.into_iter().enumerate() {
-                    let mut bary = [0.0; 3];
-                    bary[k] = 1.0;
-                    poly.push(ClipVert { clip, bary });
-                }
-                let (depth, guard) = planes_needed(&c);
-                if depth {
-                    poly = clip_plane(&poly, |v| v.z + v.w);
-                    poly = clip_plane(&poly, |v| v.w - v.z);
-                }
-                if guard {
-                    for s in [1.0f32, -1.0] {
-                        poly = clip_plane(&poly, |v| GUARD * v.w - s * v.x);
-                        poly = clip_plane(&poly, |v| GUARD * v.w - s * v.y);
-                    }
-                }
-                emit(poly.as_slice(), j as u32, width, height, job.cull_back, out);
-            }
+            let faces = k * GRAIN..(k * GRAIN + GRAIN).min(tris.len());
+            setup_faces(job, verts, faces, width, height, out);
         });
         self.tris.clear();
         for v in &self.per_face {
@@ -267,7 +254,98 @@ impl Setup {
     }
 }
 
+/// Clips, faces, culls and snaps the mesh triangles `faces` into `out` (cleared first).
+/// Runs a copy compiled for AVX2 where the processor has it, whose rounding to fixed point
+/// is inline (the portable copy calls the C library's `roundf`); the arithmetic is the
+/// same, so the bits are.
+fn setup_faces(job: &Job<'_>, verts: &Vertices, faces: std::ops::Range<usize>, width: usize, height: usize, out: &mut Vec<RasterTri>) {
+    #[cfg(target_arch = "x86_64")]
+    if crate::specialised::has_avx2_fma() {
+        // SAFETY: the CPU has AVX2 and FMA (checked just above).
+        return unsafe { setup_faces_avx2(job, verts, faces, width, height, out) };
+    }
+    setup_faces_any(job, verts, faces, width, height, out);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn setup_faces_avx2(job: &Job<'_>, verts: &Vertices, faces: std::ops::Range<usize>, width: usize, height: usize, out: &mut Vec<RasterTri>) {
+    setup_faces_any(job, verts, faces, width, height, out);
+}
+
+#[inline(always)]
+fn setup_faces_any(job: &Job<'_>, verts: &Vertices, faces: std::ops::Range<usize>, width: usize, height: usize, out: &mut Vec<RasterTri>) {
+    out.clear();
+    for j in faces {
+        let t = job.mesh.triangles[j];
+        let c = t.map(|i| verts.clip[i as usize]);
+        if trivially_rejected(&c) {
+            continue;
+        }
+        let (depth, guard) = planes_needed(&c);
+        if !depth && !guard {
+            // Nothing to clip (most triangles): the corners as they are.
+            let corner = |k: usize| {
+                let mut bary = [0.0; 3];
+                bary[k] = 1.0;
+                ClipVert { clip: c[k], bary }
+            };
+            emit(&[corner(0), corner(1), corner(2)], j as u32, width, height, job.cull_back, out);
+            continue;
+        }
+        let mut poly = Poly::default();
+        for (k, clip) in c.into_iter().enumerate() {
+            let mut bary = [0.0; 3];
+            bary[k] = 1.0;
+            poly.push(ClipVert { clip, bary });
+        }
+        if depth {
+            poly = clip_plane(&poly, |v| v.z + v.w);
+            poly = clip_plane(&poly, |v| v.w - v.z);
+        }
+        if guard {
+            for s in [1.0f32, -1.0] {
+                poly = clip_plane(&poly, |v| GUARD * v.w - s * v.x);
+                poly = clip_plane(&poly, |v| GUARD * v.w - s * v.y);
+            }
+        }
+        emit(poly.as_slice(), j as u32, width, height, job.cull_back, out);
+    }
+}
+
 /// The unit normal of a face from its eye-space corners (zero when degenerate).
 pub fn face_normal(a: Vec3, b: Vec3, c: Vec3) -> Vec3 {
     (b - a).cross(c - a).normalize_or_zero()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Outcodes reject exactly the triangles with all three corners beyond one plane.
+    #[test]
+    fn trivially_rejected_means_all_corners_beyond_one_plane() {
+        let mut seed = 0x2545f4914f6cdd1du64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % 2001) as f32 / 500.0 - 2.0
+        };
+        let (mut rejected, mut kept) = (0, 0);
+        for _ in 0..100_000 {
+            let c = [0; 3].map(|_| Vec4::new(next(), next(), next(), 1.0));
+            let all = |f: &dyn Fn(&Vec4) -> bool| c.iter().all(f);
+            let want = all(&|v| v.x < -v.w)
+                || all(&|v| v.x > v.w)
+                || all(&|v| v.y < -v.w)
+                || all(&|v| v.y > v.w)
+                || all(&|v| v.z < -v.w)
+                || all(&|v| v.z > v.w);
+            assert_eq!(trivially_rejected(&c), want, "{c:?}");
+            if want { rejected += 1 } else { kept += 1 }
+        }
+        assert!(rejected > 1000 && kept > 1000, "{rejected} / {kept}");
+        assert!(!trivially_rejected(&[Vec4::NAN; 3]));
+    }
 }
