@@ -67,6 +67,10 @@ pub struct RenderBench {
     /// Only this shading: gouraud, phong or flat (default: all three).
     #[arg(long)]
     pub shading: Option<String>,
+    /// The sphere's slices and stacks, 3 to 1024 (the benchmark's is 50): the cost against
+    /// the triangle count.
+    #[arg(long, default_value_t = 50)]
+    pub slices: u32,
 }
 
 /// `phonglab bench lighting`.
@@ -86,7 +90,12 @@ pub struct LightingBenchArgs {
 
 /// The benchmark's objects: gluSphere(1, 50, 50) and glutSolidTeapot(0.8).
 pub fn bench_meshes() -> [(&'static str, Mesh); 2] {
-    [("sphere", sphere::glu_sphere(1.0, 50, 50)), ("teapot", teapot::glut_teapot(0.8, 7))]
+    bench_meshes_with(50)
+}
+
+/// The benchmark's objects with the sphere cut into `slices` slices and stacks.
+fn bench_meshes_with(slices: u32) -> [(&'static str, Mesh); 2] {
+    [("sphere", sphere::glu_sphere(1.0, slices, slices)), ("teapot", teapot::glut_teapot(0.8, 7))]
 }
 
 /// One figure of `bench render`.
@@ -108,8 +117,17 @@ pub struct RenderFigure {
 /// Times the renderer on the benchmark scene, for each object and shading that `only`
 /// accepts.
 pub fn render_figures(frames: u32, size: usize, only: impl Fn(&str, Shading) -> bool) -> Result<Vec<RenderFigure>> {
+    render_figures_of(bench_meshes(), frames, size, only)
+}
+
+fn render_figures_of(
+    meshes: [(&'static str, Mesh); 2],
+    frames: u32,
+    size: usize,
+    only: impl Fn(&str, Shading) -> bool,
+) -> Result<Vec<RenderFigure>> {
     let mut out = Vec::new();
-    for (name, mesh) in bench_meshes() {
+    for (name, mesh) in meshes {
         for shading in Shading::ALL.into_iter().filter(|s| only(name, *s)) {
             let mut r = Renderer::new();
             let frame = |i: u32, r: &mut Renderer| -> Result<[f64; 4]> {
@@ -158,6 +176,9 @@ fn render(a: &RenderBench) -> Result<()> {
             anyhow::bail!("--shading {name}: the shadings are gouraud, phong and flat");
         }
     }
+    if !(3..=1024).contains(&a.slices) {
+        anyhow::bail!("--slices {}: the sphere takes 3 to 1024 slices (the benchmark's is 50)", a.slices);
+    }
     println!(
         "# phonglab bench render: {}x{} px, {} frames, {} threads; the stages' mean ms: vertices, setup, raster, resolve",
         a.size,
@@ -170,7 +191,7 @@ fn render(a: &RenderBench) -> Result<()> {
         a.object.as_deref().is_none_or(|o| o == object)
             && a.shading.as_deref().is_none_or(|s| shading.label().eq_ignore_ascii_case(s))
     };
-    for f in render_figures(a.frames, a.size, only)? {
+    for f in render_figures_of(bench_meshes_with(a.slices), a.frames, a.size, only)? {
         let [v, s, r, res] = f.stage_ms;
         println!(
             "{} {} {:.3} {} {:.4} {v:.3} {s:.3} {r:.3} {res:.3}",

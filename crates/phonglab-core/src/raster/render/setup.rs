@@ -258,7 +258,14 @@ impl Setup {
 /// Runs a copy compiled for AVX2 where the processor has it, whose rounding to fixed point
 /// is inline (the portable copy calls the C library's `roundf`); the arithmetic is the
 /// same, so the bits are.
-fn setup_faces(job: &Job<'_>, verts: &Vertices, faces: std::ops::Range<usize>, width: usize, height: usize, out: &mut Vec<RasterTri>) {
+fn setup_faces(
+    job: &Job<'_>,
+    verts: &Vertices,
+    faces: std::ops::Range<usize>,
+    width: usize,
+    height: usize,
+    out: &mut Vec<RasterTri>,
+) {
     #[cfg(target_arch = "x86_64")]
     if crate::specialised::has_avx2_fma() {
         // SAFETY: the CPU has AVX2 and FMA (checked just above).
@@ -269,12 +276,26 @@ fn setup_faces(job: &Job<'_>, verts: &Vertices, faces: std::ops::Range<usize>, w
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn setup_faces_avx2(job: &Job<'_>, verts: &Vertices, faces: std::ops::Range<usize>, width: usize, height: usize, out: &mut Vec<RasterTri>) {
+fn setup_faces_avx2(
+    job: &Job<'_>,
+    verts: &Vertices,
+    faces: std::ops::Range<usize>,
+    width: usize,
+    height: usize,
+    out: &mut Vec<RasterTri>,
+) {
     setup_faces_any(job, verts, faces, width, height, out);
 }
 
 #[inline(always)]
-fn setup_faces_any(job: &Job<'_>, verts: &Vertices, faces: std::ops::Range<usize>, width: usize, height: usize, out: &mut Vec<RasterTri>) {
+fn setup_faces_any(
+    job: &Job<'_>,
+    verts: &Vertices,
+    faces: std::ops::Range<usize>,
+    width: usize,
+    height: usize,
+    out: &mut Vec<RasterTri>,
+) {
     out.clear();
     for j in faces {
         let t = job.mesh.triangles[j];
