@@ -58,3 +58,23 @@ pub use rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel};
 pub use scene::{Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Rgba, Scene, Vertex};
 pub use shaded::ShadedSetup;
 pub use view::{FlatNormal, Framing, LightingSpace, ObjectKind, Shading, View, ViewCamera};
+
+/// What the unit tests share.
+#[cfg(test)]
+pub(crate) mod test_support {
+    /// A fixed sequence of 64-bit words (xorshift64): the same random cases on every run.
+    pub(crate) fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
+        move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        }
+    }
+
+    /// A fixed sequence of doubles in [0, 1): the top 53 bits of [`xorshift`]'s words.
+    pub(crate) fn uniform(seed: u64) -> impl FnMut() -> f64 {
+        let mut words = xorshift(seed);
+        move || (words() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}

@@ -196,17 +196,7 @@ fn pow_fix(x: f32, e: f32, r: f32) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A fixed sequence of doubles in [0, 1).
-    fn uniform(seed: u64) -> impl FnMut() -> f64 {
-        let mut state = seed;
-        move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
+    use crate::test_support::uniform;
 
     #[test]
     fn whole_exponents_are_the_ones_from_1_to_128() {

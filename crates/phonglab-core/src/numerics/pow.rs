@@ -181,13 +181,7 @@ mod tests {
     fn pow_f32_is_correctly_rounded() {
         // Against f64 pow rounded once, over the engine's domain: x in [0, 4], e in [0, 128].
         let mut worst = 0u32;
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = crate::test_support::uniform(0x2545_f491_4f6c_dd1d);
         for i in 0..200_000 {
             let x = if i % 3 == 0 { 1.0 - next().powi(4) } else { next() * 4.0 } as f32;
             let e = (next() * 128.0) as f32;

@@ -201,6 +201,7 @@ pub fn cos_deg(deg: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_support::xorshift;
 
     #[test]
     fn dot2_recovers_cancelled_terms() {
@@ -235,16 +236,6 @@ mod tests {
         }
         assert!((n.x - std::f32::consts::FRAC_1_SQRT_2).abs() < 1e-7);
         assert_eq!(normalize_or_zero::<f32>(glam::Vec3::ZERO), glam::Vec3::ZERO);
-    }
-
-    /// A fixed sequence of 64-bit words (xorshift64).
-    fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
-        move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        }
     }
 
     #[test]

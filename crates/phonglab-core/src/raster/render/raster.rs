@@ -485,16 +485,7 @@ impl ScreenBarycentrics {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A small xorshift generator: the same triangles on every run.
-    fn rng(mut seed: u64) -> impl FnMut() -> u64 {
-        move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        }
-    }
+    use crate::test_support::xorshift as rng;
 
     /// A random positively oriented triangle in a `w` x `h` image (fixed point, vertices
     /// up to a few pixels outside), with its pixel bounding box as setup computes it.
@@ -533,22 +524,26 @@ mod tests {
         })
     }
 
+    /// [`draw_band`] with the portable loop or (`avx2`, only where [`avx2_here`]) the AVX2
+    /// one; returns the back faces skipped.
+    fn draw_band_with(setup: &Setup, bin: &[u32], band: Band<'_>, avx2: bool) -> usize {
+        #[cfg(target_arch = "x86_64")]
+        if avx2 {
+            assert!(avx2_here(), "the AVX2 raster asked for where it cannot run");
+            // SAFETY: the CPU has AVX2 and FMA (asserted just above).
+            return unsafe { draw_band_avx2(setup, bin, band) };
+        }
+        assert!(!avx2, "the AVX2 raster asked for off x86-64");
+        draw_band_any::<false>(setup, bin, band)
+    }
+
     /// Draws `tris` into one band of `w` x `h` with the portable loop or the AVX2 one.
     fn draw_all(tris: &[RasterTri], w: usize, h: usize, avx2: bool) -> (Vec<f32>, Vec<u32>) {
         let (mut depth, mut raster) = (vec![0.5; w * h], vec![7; w * h]);
         let mut setup = Setup::default();
         setup.tris = tris.to_vec();
         let bin: Vec<u32> = (0..tris.len() as u32).collect();
-        let band = Band { y_start: 0, width: w, depth: &mut depth, raster: &mut raster };
-        if avx2 {
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: called only where the CPU has AVX2 and FMA (checked by the caller).
-            unsafe {
-                draw_band_avx2(&setup, &bin, band)
-            };
-        } else {
-            draw_band_any::<false>(&setup, &bin, band);
-        }
+        draw_band_with(&setup, &bin, Band { y_start: 0, width: w, depth: &mut depth, raster: &mut raster }, avx2);
         (depth, raster)
     }
 
@@ -620,15 +615,7 @@ mod tests {
                 }
                 let (mut depth, mut raster) = (vec![0.0; w * h], vec![0; w * h]);
                 let band = Band { y_start: 0, width: w, depth: &mut depth, raster: &mut raster };
-                #[cfg(target_arch = "x86_64")]
-                let skipped = if avx2 {
-                    // SAFETY: the CPU has AVX2 and FMA (checked above).
-                    unsafe { draw_band_avx2(&setup, &bin, band) }
-                } else {
-                    draw_band_any::<false>(&setup, &bin, band)
-                };
-                #[cfg(not(target_arch = "x86_64"))]
-                let skipped = draw_band_any::<false>(&setup, &bin, band);
+                let skipped = draw_band_with(&setup, &bin, band, avx2);
                 assert_eq!(raster, r_all, "{w}x{h} avx2 {avx2}: triangles");
                 assert_eq!(bits(&depth), bits(&d_all), "{w}x{h} avx2 {avx2}: depths");
                 skipped_total += skipped;
@@ -724,13 +711,7 @@ mod tests {
 
     #[test]
     fn spans_are_exactly_the_integer_ones() {
-        let mut seed = 0x9e3779b97f4a7c15u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut next = rng(0x9e3779b97f4a7c15);
         for _ in 0..200_000 {
             let step = (next() % 20_001) as i64 - 10_000;
             let w0 = (next() % 4_000_001) as i64 - 2_000_000;

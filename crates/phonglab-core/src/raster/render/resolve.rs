@@ -89,8 +89,8 @@ fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: 
     }
 }
 
-/// One band's per-pixel fragments, presized to the band (written by index, never pushed),
-/// and the runs they came from.
+/// One band's per-pixel fragments, presized to the band and written by index, and the runs
+/// they came from (a list cleared for each band).
 #[derive(Default)]
 pub struct Fragments {
     runs: Vec<FragmentRun>,
@@ -304,8 +304,7 @@ fn blend_n<const N: usize>(wt: &Weights, a: &[[f32; N]; 3]) -> [[f32; LANES]; N]
 
 /// Shades one band: `px` its pixels, `raster` its visibility buffer, `y0` the image row of
 /// its first row, `width` the image's width. Returns the pixels covered and the lighting
-/// evaluations made
-/// (fragments lit). Runs a copy compiled for AVX2 where the processor has it (the same
+/// evaluations made (fragments lit). Runs a copy compiled for AVX2 where the processor has it (the same
 /// operations, so the same bits: Rust never fuses a multiply and an add by itself).
 #[allow(clippy::too_many_arguments)]
 pub fn resolve_band(
@@ -516,13 +515,11 @@ mod tests {
     /// runs of every length from 1 to 40 (across the eight-wide blocks and into the tail).
     #[test]
     fn run_length_is_the_first_run() {
-        let mut seed = 0x853c49e6748fea9bu64;
+        let mut next = crate::test_support::xorshift(0x853c49e6748fea9b);
         for _ in 0..2_000 {
             let mut row = Vec::new();
             while row.len() < 100 {
-                seed ^= seed << 13;
-                seed ^= seed >> 7;
-                seed ^= seed << 17;
+                let seed = next();
                 let len = 1 + (seed % 40) as usize;
                 let value = if seed.is_multiple_of(3) { NO_TRIANGLE } else { (seed >> 20) as u32 % 5 };
                 row.extend(std::iter::repeat_n(value, len));

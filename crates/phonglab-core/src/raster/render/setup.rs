@@ -303,22 +303,21 @@ fn setup_faces_any(
         if trivially_rejected(&c) {
             continue;
         }
+        // Each corner with its barycentrics in the mesh triangle: (1, 0, 0) and so on.
+        let corners = [0, 1, 2].map(|k| {
+            let mut bary = [0.0; 3];
+            bary[k] = 1.0;
+            ClipVert { clip: c[k], bary }
+        });
         let (depth, guard) = planes_needed(&c);
         if !depth && !guard {
             // Nothing to clip (most triangles): the corners as they are.
-            let corner = |k: usize| {
-                let mut bary = [0.0; 3];
-                bary[k] = 1.0;
-                ClipVert { clip: c[k], bary }
-            };
-            emit(&[corner(0), corner(1), corner(2)], j as u32, width, height, job.cull_back, out);
+            emit(&corners, j as u32, width, height, job.cull_back, out);
             continue;
         }
         let mut poly = Poly::default();
-        for (k, clip) in c.into_iter().enumerate() {
-            let mut bary = [0.0; 3];
-            bary[k] = 1.0;
-            poly.push(ClipVert { clip, bary });
+        for corner in corners {
+            poly.push(corner);
         }
         if depth {
             poly = clip_plane(&poly, |v| v.z + v.w);
@@ -346,13 +345,8 @@ mod tests {
     /// Outcodes reject exactly the triangles with all three corners beyond one plane.
     #[test]
     fn trivially_rejected_means_all_corners_beyond_one_plane() {
-        let mut seed = 0x2545f4914f6cdd1du64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed % 2001) as f32 / 500.0 - 2.0
-        };
+        let mut words = crate::test_support::xorshift(0x2545f4914f6cdd1d);
+        let mut next = move || (words() % 2001) as f32 / 500.0 - 2.0;
         let (mut rejected, mut kept) = (0, 0);
         for _ in 0..100_000 {
             let c = [0; 3].map(|_| Vec4::new(next(), next(), next(), 1.0));
