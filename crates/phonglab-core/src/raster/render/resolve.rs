@@ -211,13 +211,50 @@ fn run_length(row: &[u32]) -> usize {
     let r = row[0];
     let mut n = 1;
     while let Some(block) = row.get(n..).and_then(|s| s.first_chunk::<8>()) {
-        let differ = (0..8).fold(0u32, |m, j| m | (((block[j] != r) as u32) << j));
+        let differ = differ8(block, r);
         if differ != 0 {
             return n + differ.trailing_zeros() as usize;
         }
         n += 8;
     }
     n + row[n..].iter().position(|&q| q != r).unwrap_or(row.len() - n)
+}
+
+/// One bit per entry of `block` that differs from `r`: two SSE2 compares and masks (the
+/// compiler turned a plain loop into eight scalar compares and shifts).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn differ8(block: &[u32; 8], r: u32) -> u32 {
+    use std::arch::x86_64::{
+        __m128i, _mm_castsi128_ps, _mm_cmpeq_epi32, _mm_loadu_si128, _mm_movemask_ps, _mm_set1_epi32,
+    };
+    // SAFETY: SSE2 is part of x86_64; both loads read 16 bytes within `block`.
+    let equal = unsafe {
+        let p = block.as_ptr() as *const __m128i;
+        let rv = _mm_set1_epi32(r as i32);
+        let lo = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(_mm_loadu_si128(p), rv)));
+        let hi = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(_mm_loadu_si128(p.add(1)), rv)));
+        (lo | hi << 4) as u32
+    };
+    !equal & 0xff
+}
+
+/// One bit per entry of `block` that differs from `r`.
+#[cfg(not(target_arch = "x86_64"))]
+#[inline(always)]
+fn differ8(block: &[u32; 8], r: u32) -> u32 {
+    (0..8).fold(0u32, |m, j| m | (((block[j] != r) as u32) << j))
+}
+
+/// Sets every pixel of `px` to `c`, eight at a time (32-byte stores; a plain `fill` of
+/// 4-byte arrays stored them one by one).
+#[inline(always)]
+fn fill_px(px: &mut [[u8; 4]], c: [u8; 4]) {
+    let (blocks, rest) = px.as_chunks_mut::<8>();
+    for b in blocks {
+        *b = [c; 8];
+    }
+    rest.fill(c);
 }
 
 /// A run of pixels of one triangle in one row: `len` pixels from (`x`, `y`) of the image,
@@ -249,12 +286,19 @@ impl Run {
     #[allow(clippy::needless_range_loop)] // lanes index several arrays; the loop vectorises
     fn weights(&self, edges: &([f64; 2], [f64; 2], f64), inv_w: [f32; 3], k0: usize) -> Weights {
         let (w, step, inv_area) = *edges;
+        // Coordinate by coordinate, lanes side by side (computing both of a lane's
+        // coordinates together made the compiler shuffle them apart again).
+        let mut l = [[0.0f32; LANES]; 2];
+        for c in 0..2 {
+            for j in 0..LANES {
+                // i32 to f64 is one instruction for four lanes; k0 + j is below the image width.
+                let kf = (k0 as i32 + j as i32) as f64;
+                l[c][j] = ((w[c] + step[c] * kf) * inv_area) as f32;
+            }
+        }
         let mut out = Weights { ls: [[0.0; LANES]; 3], s: [0.0; LANES] };
         for j in 0..LANES {
-            // i32 to f64 is one instruction for four lanes; k0 + j is below the image width.
-            let kf = (k0 as i32 + j as i32) as f64;
-            let l = [((w[0] + step[0] * kf) * inv_area) as f32, ((w[1] + step[1] * kf) * inv_area) as f32];
-            let (ls, s) = screen_weights(inv_w, l);
+            let (ls, s) = screen_weights(inv_w, [l[0][j], l[1][j]]);
             for k in 0..3 {
                 out.ls[k][j] = ls[k];
             }
@@ -374,14 +418,14 @@ fn resolve_band_any(
             let run = Run { x, y: y0 + row, at: row * width + x, len };
             x += len;
             if r == NO_TRIANGLE {
-                px_row[run.x..run.x + len].fill(bg);
+                fill_px(&mut px_row[run.x..run.x + len], bg);
                 continue;
             }
             covered += len;
             let t = &setup.tris[r as usize];
             let side = (t.back && two) as usize;
             if job.shading == Shading::Flat && !per_pixel {
-                px_row[run.x..run.x + len].fill(p.face8[side][t.orig as usize]);
+                fill_px(&mut px_row[run.x..run.x + len], p.face8[side][t.orig as usize]);
                 continue;
             }
             let edges = shared.tri_edges[r as usize].row(run.x, run.y);
