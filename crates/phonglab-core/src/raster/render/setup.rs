@@ -139,8 +139,84 @@ fn trivially_rejected(c: &[Vec4; 3]) -> bool {
     outcode(c[0]) & outcode(c[1]) & outcode(c[2]) != 0
 }
 
-/// Snaps a clipped polygon (fan) to raster triangles. (Inline: in [`setup_faces_avx2`] it
-/// rounds without calls.)
+/// A clip-space vertex in window coordinates: fixed-point x and y (y down), depth in
+/// [0, 1], and 1/w.
+type WindowVert = (i64, i64, f32, f32);
+
+/// `clip` divided by w and mapped to the `width` x `height` viewport. (Inline: in
+/// [`setup_faces_avx2`] it rounds without calls.)
+#[inline(always)]
+fn to_window(clip: Vec4, w: f32, h: f32) -> WindowVert {
+    let iw = 1.0 / clip.w;
+    let (xn, yn, zn) = (clip.x * iw, clip.y * iw, clip.z * iw);
+    let xw = (xn + 1.0) * 0.5 * w;
+    let yw = (1.0 - yn) * 0.5 * h; // image rows go down
+    ((xw * ONE as f32).round() as i64, (yw * ONE as f32).round() as i64, ((zn + 1.0) * 0.5).clamp(0.0, 1.0), iw)
+}
+
+/// The raster triangle of window vertices `v` (with barycentrics `bary` in the mesh
+/// triangle), turned counter-clockwise on the screen; `None` if it has no area, is a culled
+/// back face, or covers no pixel centre of the image.
+#[inline(always)]
+fn raster_tri(
+    v: [WindowVert; 3],
+    bary: [[f32; 3]; 3],
+    orig: u32,
+    width: usize,
+    height: usize,
+    cull_back: bool,
+) -> Option<RasterTri> {
+    let (a, b, c) = (v[0], v[1], v[2]);
+    let area = (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1);
+    if area == 0 {
+        return None;
+    }
+    // OpenGL's counter-clockwise front faces (y up) have negative area with y down.
+    let back = area > 0;
+    if back && cull_back {
+        return None;
+    }
+    let (v, bary) = if area < 0 { ([v[0], v[2], v[1]], [bary[0], bary[2], bary[1]]) } else { (v, bary) };
+    let x0 = v[0].0.min(v[1].0).min(v[2].0);
+    let x1 = v[0].0.max(v[1].0).max(v[2].0);
+    let y0 = v[0].1.min(v[1].1).min(v[2].1);
+    let y1 = v[0].1.max(v[1].1).max(v[2].1);
+    // Pixels whose centres (p + 1/2) may be inside.
+    let px0 = ((x0 - ONE / 2 + ONE - 1) >> SUBPIXEL_BITS).max(0) as i32;
+    let px1 = ((x1 - ONE / 2) >> SUBPIXEL_BITS).min(width as i64 - 1) as i32;
+    let py0 = ((y0 - ONE / 2 + ONE - 1) >> SUBPIXEL_BITS).max(0) as i32;
+    let py1 = ((y1 - ONE / 2) >> SUBPIXEL_BITS).min(height as i64 - 1) as i32;
+    if px0 > px1 || py0 > py1 {
+        return None;
+    }
+    Some(RasterTri {
+        x: [v[0].0, v[1].0, v[2].0],
+        y: [v[0].1, v[1].1, v[2].1],
+        z: [v[0].2, v[1].2, v[2].2],
+        inv_w: [v[0].3, v[1].3, v[2].3],
+        bary,
+        orig,
+        back,
+        x0: px0,
+        x1: px1,
+        y0: py0,
+        y1: py1,
+    })
+}
+
+/// Snaps a mesh triangle that needs no clipping (clip-space corners `c`) to a raster
+/// triangle: [`emit`] for a polygon of three corners, written out.
+#[inline(always)]
+fn emit_triangle(c: &[Vec4; 3], orig: u32, width: usize, height: usize, cull_back: bool, out: &mut Vec<RasterTri>) {
+    let (w, h) = (width as f32, height as f32);
+    let v = [to_window(c[0], w, h), to_window(c[1], w, h), to_window(c[2], w, h)];
+    let corners = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    if let Some(t) = raster_tri(v, corners, orig, width, height, cull_back) {
+        out.push(t);
+    }
+}
+
+/// Snaps a clipped polygon (fan) to raster triangles.
 #[inline(always)]
 fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bool, out: &mut Vec<RasterTri>) {
     if poly.len() < 3 {
@@ -149,61 +225,13 @@ fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bo
     let (w, h) = (width as f32, height as f32);
     let mut win = [(0i64, 0i64, 0.0f32, 0.0f32); 9];
     for (o, v) in win.iter_mut().zip(poly) {
-        let iw = 1.0 / v.clip.w;
-        let (xn, yn, zn) = (v.clip.x * iw, v.clip.y * iw, v.clip.z * iw);
-        let xw = (xn + 1.0) * 0.5 * w;
-        let yw = (1.0 - yn) * 0.5 * h; // image rows go down
-        *o = (
-            (xw * ONE as f32).round() as i64,
-            (yw * ONE as f32).round() as i64,
-            ((zn + 1.0) * 0.5).clamp(0.0, 1.0),
-            iw,
-        );
+        *o = to_window(v.clip, w, h);
     }
     for k in 1..poly.len() - 1 {
-        let mut idx = [0, k, k + 1];
-        let area = |i: [usize; 3]| {
-            let (a, b, c) = (win[i[0]], win[i[1]], win[i[2]]);
-            (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1)
-        };
-        let a = area(idx);
-        if a == 0 {
-            continue;
+        let idx = [0, k, k + 1];
+        if let Some(t) = raster_tri(idx.map(|i| win[i]), idx.map(|i| poly[i].bary), orig, width, height, cull_back) {
+            out.push(t);
         }
-        // OpenGL's counter-clockwise front faces (y up) have negative area with y down.
-        let back = a > 0;
-        if back && cull_back {
-            continue;
-        }
-        if a < 0 {
-            idx.swap(1, 2);
-        }
-        let v = idx.map(|i| win[i]);
-        let x0 = v.iter().map(|p| p.0).min().unwrap_or(0);
-        let x1 = v.iter().map(|p| p.0).max().unwrap_or(0);
-        let y0 = v.iter().map(|p| p.1).min().unwrap_or(0);
-        let y1 = v.iter().map(|p| p.1).max().unwrap_or(0);
-        // Pixels whose centres (p + 1/2) may be inside.
-        let px0 = ((x0 - ONE / 2 + ONE - 1) >> SUBPIXEL_BITS).max(0) as i32;
-        let px1 = ((x1 - ONE / 2) >> SUBPIXEL_BITS).min(width as i64 - 1) as i32;
-        let py0 = ((y0 - ONE / 2 + ONE - 1) >> SUBPIXEL_BITS).max(0) as i32;
-        let py1 = ((y1 - ONE / 2) >> SUBPIXEL_BITS).min(height as i64 - 1) as i32;
-        if px0 > px1 || py0 > py1 {
-            continue;
-        }
-        out.push(RasterTri {
-            x: v.map(|p| p.0),
-            y: v.map(|p| p.1),
-            z: v.map(|p| p.2),
-            inv_w: v.map(|p| p.3),
-            bary: idx.map(|i| poly[i].bary),
-            orig,
-            back,
-            x0: px0,
-            x1: px1,
-            y0: py0,
-            y1: py1,
-        });
     }
 }
 
@@ -211,7 +239,7 @@ impl Setup {
     /// Clips, faces, culls and snaps every triangle of the job; lights faces for Flat.
     pub fn run(&mut self, job: &Job<'_>, verts: &Vertices, lighter: &Lighter, width: usize, height: usize) {
         let tris = &job.mesh.triangles;
-        const GRAIN: usize = 1024;
+        const GRAIN: usize = 256;
         let chunks = tris.len().div_ceil(GRAIN);
         self.per_face.resize_with(chunks, Vec::new);
         self.per_face.par_iter_mut().enumerate().for_each(|(k, out)| {
@@ -303,21 +331,18 @@ fn setup_faces_any(
         if trivially_rejected(&c) {
             continue;
         }
-        // Each corner with its barycentrics in the mesh triangle: (1, 0, 0) and so on.
-        let corners = [0, 1, 2].map(|k| {
-            let mut bary = [0.0; 3];
-            bary[k] = 1.0;
-            ClipVert { clip: c[k], bary }
-        });
         let (depth, guard) = planes_needed(&c);
         if !depth && !guard {
             // Nothing to clip (most triangles): the corners as they are.
-            emit(&corners, j as u32, width, height, job.cull_back, out);
+            emit_triangle(&c, j as u32, width, height, job.cull_back, out);
             continue;
         }
+        // Each corner with its barycentrics in the mesh triangle: (1, 0, 0) and so on.
         let mut poly = Poly::default();
-        for corner in corners {
-            poly.push(corner);
+        for (k, &clip) in c.iter().enumerate() {
+            let mut bary = [0.0; 3];
+            bary[k] = 1.0;
+            poly.push(ClipVert { clip, bary });
         }
         if depth {
             poly = clip_plane(&poly, |v| v.z + v.w);
