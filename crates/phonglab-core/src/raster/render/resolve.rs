@@ -19,6 +19,7 @@
 //! Colours go to 8 bits as OpenGL converts them: `round(255 clamp(c, 0, 1))`.
 
 use glam::Vec3;
+use rayon::prelude::*;
 
 use super::raster::ScreenBarycentrics;
 use super::setup::Setup;
@@ -58,34 +59,32 @@ fn screen_weights(inv_w: [f32; 3], l: [f32; 2]) -> ([f32; 3], f32) {
 fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: &mut Scratch) {
     let tris = &job.mesh.triangles;
     let two = job.scene.light_model.two_sided;
-    let blend3 = |t: &super::setup::RasterTri, a: &dyn Fn(usize) -> Vec3| -> [Vec3; 3] {
+    let blend3 = |t: &super::setup::RasterTri, a: &[Vec3]| -> [Vec3; 3] {
         let v = tris[t.orig as usize];
-        let at = [a(v[0] as usize), a(v[1] as usize), a(v[2] as usize)];
+        let at = [a[v[0] as usize], a[v[1] as usize], a[v[2] as usize]];
         std::array::from_fn(|k| (at[0] * t.bary[k][0] + at[1] * t.bary[k][1] + at[2] * t.bary[k][2]) * t.inv_w[k])
     };
+    // Both threads share the triangles (each result depends on its triangle alone).
+    let per_tri = setup.tris.par_iter();
     match job.shading {
         Shading::Gouraud => {
-            scratch.tri_color.clear();
-            scratch.tri_color.extend(setup.tris.iter().map(|t| {
-                let side = (t.back && two) as usize;
-                let v = tris[t.orig as usize];
-                let cs = v.map(|i| verts.color[side][i as usize]);
-                std::array::from_fn(|k| {
-                    let b = t.bary[k];
-                    std::array::from_fn(|ch| (cs[0][ch] * b[0] + cs[1][ch] * b[1] + cs[2][ch] * b[2]) * t.inv_w[k])
+            per_tri
+                .map(|t| {
+                    let side = (t.back && two) as usize;
+                    let v = tris[t.orig as usize];
+                    let cs = v.map(|i| verts.color[side][i as usize]);
+                    std::array::from_fn(|k| {
+                        let b = t.bary[k];
+                        std::array::from_fn(|ch| (cs[0][ch] * b[0] + cs[1][ch] * b[1] + cs[2][ch] * b[2]) * t.inv_w[k])
+                    })
                 })
-            }));
+                .collect_into_vec(&mut scratch.tri_color);
         }
         Shading::Phong => {
-            scratch.tri_pos.clear();
-            scratch.tri_nrm.clear();
-            scratch.tri_pos.extend(setup.tris.iter().map(|t| blend3(t, &|i| verts.eye[i])));
-            scratch.tri_nrm.extend(setup.tris.iter().map(|t| blend3(t, &|i| verts.normal[i])));
+            per_tri.clone().map(|t| blend3(t, &verts.eye)).collect_into_vec(&mut scratch.tri_pos);
+            per_tri.map(|t| blend3(t, &verts.normal)).collect_into_vec(&mut scratch.tri_nrm);
         }
-        Shading::Flat => {
-            scratch.tri_pos.clear();
-            scratch.tri_pos.extend(setup.tris.iter().map(|t| blend3(t, &|i| verts.eye[i])));
-        }
+        Shading::Flat => per_tri.map(|t| blend3(t, &verts.eye)).collect_into_vec(&mut scratch.tri_pos),
     }
 }
 
@@ -172,8 +171,7 @@ pub fn prepare(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: &mut Scr
     scratch.bands.resize_with(bands, Fragments::default);
     if job.shading != Shading::Flat || per_pixel {
         triangle_attributes(job, verts, setup, scratch);
-        scratch.tri_edges.clear();
-        scratch.tri_edges.extend(setup.tris.iter().map(ScreenBarycentrics::new));
+        setup.tris.par_iter().map(ScreenBarycentrics::new).collect_into_vec(&mut scratch.tri_edges);
     }
     // Flat: each face's colour converted to 8 bits once.
     let face8: [Vec<[u8; 4]>; 2] = if job.shading == Shading::Flat && !per_pixel {
