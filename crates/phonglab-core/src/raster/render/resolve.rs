@@ -128,6 +128,52 @@ fn to_u8(c: f32) -> u8 {
     unsafe { v.to_int_unchecked::<i32>() as u8 }
 }
 
+/// Eight pixels' channels (`ch[c][j]`: channel c of pixel j) as [`to_u8`] bytes, each
+/// pixel's four as one little-endian u32, built in the lanes by shifts (bytes assembled in
+/// memory would be stored in two halves and reloaded whole, which stalls).
+#[inline(always)]
+#[allow(clippy::needless_range_loop)] // lanes index several arrays; the loop vectorises
+fn rgba8(ch: &[[f32; LANES]; 4]) -> [u32; LANES] {
+    let mut rgba = [0u32; LANES];
+    for j in 0..LANES {
+        rgba[j] = to_u8(ch[0][j]) as u32
+            | (to_u8(ch[1][j]) as u32) << 8
+            | (to_u8(ch[2][j]) as u32) << 16
+            | (to_u8(ch[3][j]) as u32) << 24;
+    }
+    rgba
+}
+
+/// [`rgba8`] in AVX2 registers, with the same bytes: for a channel in [0, 1] the same
+/// multiply and add, then truncation; the clamps come from saturating packs (i32 to u16
+/// to u8) instead of a max, a min and a mask per channel. Only `min(1, c)` stays, so that
+/// a huge value cannot wrap: below 0 (or NaN, which the min passes on and the conversion
+/// turns into i32::MIN), the packs give 0 as [`to_u8`] does. A byte shuffle then
+/// interleaves the channels pixel by pixel.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn rgba8_avx2(ch: &[[f32; LANES]; 4]) -> [u32; LANES] {
+    use std::arch::x86_64::*;
+    let (one, scale, half) = (_mm256_set1_ps(1.0), _mm256_set1_ps(255.0), _mm256_set1_ps(0.5));
+    // SAFETY (loads and stores): each array is LANES f32 or u32, 32 bytes; the unaligned
+    // forms need no alignment.
+    let q = |c: &[f32; LANES]| {
+        let v = unsafe { _mm256_loadu_ps(c.as_ptr()) };
+        // min(one, v): the second operand, v, where either is NaN.
+        _mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(_mm256_min_ps(one, v), scale), half))
+    };
+    // Per 128-bit half: r0..3 g0..3 b0..3 a0..3 (pixels 0-3), then the same for 4-7.
+    let bytes =
+        _mm256_packus_epi16(_mm256_packus_epi32(q(&ch[0]), q(&ch[1])), _mm256_packus_epi32(q(&ch[2]), q(&ch[3])));
+    let by_pixel = _mm256_setr_epi8(
+        0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15, 0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15,
+    );
+    let mut out = [0u32; LANES];
+    unsafe { _mm256_storeu_si256(out.as_mut_ptr().cast(), _mm256_shuffle_epi8(bytes, by_pixel)) };
+    out
+}
+
 /// Perspective-correct barycentrics of the original mesh triangle at pixel `i`.
 #[inline(always)]
 fn barycentrics(setup: &Setup, raster: u32, l: [f32; 2]) -> [f32; 3] {
@@ -366,7 +412,7 @@ pub fn resolve_band(
         // SAFETY: the CPU has AVX2 and FMA (checked just above).
         return unsafe { resolve_band_avx2(job, setup, lighter, p, shared, px, raster, y0, width, frags) };
     }
-    resolve_band_any(job, setup, lighter, p, shared, px, raster, y0, width, frags)
+    resolve_band_any::<false>(job, setup, lighter, p, shared, px, raster, y0, width, frags)
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -384,12 +430,12 @@ fn resolve_band_avx2(
     width: usize,
     frags: &mut Fragments,
 ) -> Shaded {
-    resolve_band_any(job, setup, lighter, p, shared, px, raster, y0, width, frags)
+    resolve_band_any::<true>(job, setup, lighter, p, shared, px, raster, y0, width, frags)
 }
 
 #[inline(always)]
 #[allow(clippy::too_many_arguments, clippy::needless_range_loop)] // lane loops: see `blend`
-fn resolve_band_any(
+fn resolve_band_any<const AVX2: bool>(
     job: &Job<'_>,
     setup: &Setup,
     lighter: &Lighter,
@@ -434,16 +480,12 @@ fn resolve_band_any(
                     for (k0, n) in run.blocks() {
                         let wt = run.weights(&edges, t.inv_w, k0);
                         let ch = blend_n(&wt, cw);
-                        // Each pixel's four bytes as one little-endian u32, built in the
-                        // lanes by shifts (bytes assembled in memory would be stored in two
-                        // halves and reloaded whole, which stalls).
-                        let mut rgba = [0u32; LANES];
-                        for j in 0..LANES {
-                            rgba[j] = to_u8(ch[0][j]) as u32
-                                | (to_u8(ch[1][j]) as u32) << 8
-                                | (to_u8(ch[2][j]) as u32) << 16
-                                | (to_u8(ch[3][j]) as u32) << 24;
-                        }
+                        #[cfg(target_arch = "x86_64")]
+                        // SAFETY: AVX2 is only instantiated inside resolve_band_avx2, which
+                        // runs only where the processor has AVX2.
+                        let rgba = if AVX2 { unsafe { rgba8_avx2(&ch) } } else { rgba8(&ch) };
+                        #[cfg(not(target_arch = "x86_64"))]
+                        let rgba = rgba8(&ch);
                         // Whole blocks where the row has room: lanes past the run land on
                         // pixels of the row that later runs overwrite.
                         let dst = &mut px_row[run.x + k0..];
@@ -570,6 +612,50 @@ mod tests {
                 let s = &row[start..];
                 let naive = s.iter().position(|&q| q != s[0]).unwrap_or(s.len());
                 assert_eq!(run_length(s), naive, "{s:?}");
+            }
+        }
+    }
+
+    /// The AVX2 packing gives [`to_u8`]'s bytes for every kind of channel value: NaN,
+    /// infinities, huge and tiny, negative, just around each rounding boundary, and random.
+    #[test]
+    fn avx2_bytes_are_the_portable_bytes() {
+        #[cfg(target_arch = "x86_64")]
+        if crate::specialised::has_avx2_fma() {
+            let mut values = vec![
+                f32::NAN,
+                -f32::NAN,
+                f32::INFINITY,
+                f32::NEG_INFINITY,
+                f32::MAX,
+                f32::MIN,
+                3e9,
+                -3e9,
+                1e-40,
+                -1e-40,
+                0.0,
+                -0.0,
+                1.0,
+                -1.0,
+                -0.5,
+                1.5,
+            ];
+            // Each boundary between two bytes, and the floats next to it.
+            for b in 0..=256 {
+                let x = (b as f32 - 0.5) / 255.0;
+                values.extend([x, x.next_up(), x.next_down(), x.next_up().next_up()]);
+            }
+            let mut next = crate::test_support::xorshift(0x9e3779b97f4a7c15);
+            values.extend((0..4000).map(|_| f32::from_bits(next() as u32)));
+            values.extend((0..4000).map(|_| (next() % 3_000_000) as f32 / 1e6 - 1.0));
+            for block in values.chunks(4 * LANES) {
+                let mut ch = [[0.0; LANES]; 4];
+                for (i, &v) in block.iter().enumerate() {
+                    ch[i % 4][i / 4] = v;
+                }
+                // SAFETY: the CPU has AVX2 (checked above).
+                let fast = unsafe { rgba8_avx2(&ch) };
+                assert_eq!(fast, rgba8(&ch), "{ch:?}");
             }
         }
     }
