@@ -47,16 +47,18 @@ use crate::robust::{
 use crate::rules::{SpecularGate, SpecularModel};
 use crate::scene::{Scene, Vertex};
 
-/// Does this CPU have AVX-512F and DQ (and AVX2, FMA)? (Checked once; `PHONGLAB_NO_AVX512`
-/// set in the environment turns the AVX-512 kernels off, for comparisons.)
+/// Does this CPU have AVX-512F, DQ and VL (and AVX2, FMA)? (Checked once;
+/// `PHONGLAB_NO_AVX512` set in the environment turns the AVX-512 kernels off, for
+/// comparisons.)
 #[cfg(target_arch = "x86_64")]
-fn has_avx512() -> bool {
+pub(crate) fn has_avx512() -> bool {
     use std::sync::OnceLock;
     static HAS: OnceLock<bool> = OnceLock::new();
     *HAS.get_or_init(|| {
         std::env::var_os("PHONGLAB_NO_AVX512").is_none()
             && std::arch::is_x86_feature_detected!("avx512f")
             && std::arch::is_x86_feature_detected!("avx512dq")
+            && std::arch::is_x86_feature_detected!("avx512vl")
             && has_avx2_fma()
     })
 }
