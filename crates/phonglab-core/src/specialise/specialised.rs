@@ -123,14 +123,41 @@ enum Source<'a> {
     Object { positions: &'a [Vec3], normals: &'a [Vec3] },
     /// Eye space: the normals as the equation uses them, or (`raw`) to renormalise.
     Eye { positions: &'a [Vec3], normals: &'a [Vec3], raw: bool },
+    /// Eye space, as six arrays: the normals as the equation uses them, or (`raw`) to
+    /// renormalise.
+    EyeArrays { arrays: EyeArrays<'a>, raw: bool },
     /// One eye-space vertex (already divided by w) with its final normal.
     One { pos: DVec3, n: Vec3 },
+}
+
+/// Eye-space points (w = 1) and normals as six arrays, x, y and z of each (structure of
+/// arrays): what the renderer's per-pixel fragments are, so that the lighting loads them
+/// without taking vectors apart.
+#[derive(Clone, Copy, Debug)]
+pub struct EyeArrays<'a> {
+    /// The points' x, y and z.
+    pub pos: [&'a [f32]; 3],
+    /// The normals' x, y and z.
+    pub nrm: [&'a [f32]; 3],
+}
+
+impl EyeArrays<'_> {
+    /// The number of points (the shortest array's length).
+    pub fn len(&self) -> usize {
+        self.pos.iter().chain(&self.nrm).map(|a| a.len()).min().unwrap_or(0)
+    }
+
+    /// No points?
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
 }
 
 impl Source<'_> {
     fn len(&self) -> usize {
         match self {
             Source::Object { positions, .. } | Source::Eye { positions, .. } => positions.len(),
+            Source::EyeArrays { arrays, .. } => arrays.len(),
             Source::One { .. } => 1,
         }
     }
@@ -152,6 +179,19 @@ impl Source<'_> {
                     for i in 0..n {
                         let p = positions[i];
                         (c.px[i], c.py[i], c.pz[i]) = (p.x as f64, p.y as f64, p.z as f64);
+                    }
+                }
+            }
+            Source::EyeArrays { arrays: EyeArrays { pos, nrm }, .. } => {
+                let (cn, cp) = ([&mut c.nx, &mut c.ny, &mut c.nz], [&mut c.px, &mut c.py, &mut c.pz]);
+                for (dst, src) in cn.into_iter().zip(nrm) {
+                    dst[..n].copy_from_slice(&src[start..start + n]);
+                }
+                if with_positions {
+                    for (dst, src) in cp.into_iter().zip(pos) {
+                        for (d, &x) in dst[..n].iter_mut().zip(&src[start..start + n]) {
+                            *d = x as f64;
+                        }
                     }
                 }
             }
@@ -399,6 +439,19 @@ impl Lighter {
         self.run(Source::Eye { positions, normals, raw: true }, Output::Sum { front, back }, Probe::None);
     }
 
+    /// [`Lighter::light_batch_eye_sum`] (or, `raw_normals`,
+    /// [`Lighter::light_batch_eye_sum_normalizing`]) from six arrays: the same stages, so
+    /// the same bits.
+    pub fn light_arrays_eye_sum(
+        &self,
+        arrays: EyeArrays<'_>,
+        raw_normals: bool,
+        front: &mut [[f32; 4]],
+        back: Option<&mut [[f32; 4]]>,
+    ) {
+        self.run(Source::EyeArrays { arrays, raw: raw_normals }, Output::Sum { front, back }, Probe::None);
+    }
+
     /// Lights vertices given in eye space, positions (w = 1) and the normals the equation
     /// uses (already normalised as the caller wants), writing only each side's colour sum
     /// as [`Lighter::light_batch_sum`] does: per-pixel shading.
@@ -509,8 +562,8 @@ impl Lighter {
         assert!(front_len >= count, "front output too short");
         let program = match src {
             Source::Object { .. } => &self.object,
-            Source::Eye { raw: true, .. } => &self.eye_raw,
-            Source::Eye { raw: false, .. } | Source::One { .. } => &self.eye,
+            Source::Eye { raw: true, .. } | Source::EyeArrays { raw: true, .. } => &self.eye_raw,
+            Source::Eye { raw: false, .. } | Source::EyeArrays { raw: false, .. } | Source::One { .. } => &self.eye,
         };
         let two = self.key.two_sided;
         let scene_color = program.has(Stage::SceneColor);
@@ -982,6 +1035,42 @@ mod tests {
         assert!(stages.contains(&Stage::Halfway(0)));
         let total: Duration = t.load + t.write + t.stages.iter().map(|(_, d)| *d).sum::<Duration>();
         assert!(total > Duration::ZERO);
+    }
+
+    /// Fragments given as six arrays light exactly as the same fragments given as vectors,
+    /// with normals to renormalise or not, one side or two, over lengths that end mid-chunk.
+    #[test]
+    fn arrays_light_as_vectors_do() {
+        let mut next = crate::test_support::xorshift(0x6a09e667f3bcc909);
+        let mut uniform = move || (next() % 2_000_001) as f32 / 1e6 - 1.0;
+        for (scene, two) in [(presets::LightingBench::PositionalLocal.scene(), false), (presets::worksheet(5), true)] {
+            let mut scene = scene;
+            scene.light_model.two_sided = two;
+            let l = Lighter::new(&scene, EvalOptions::default()).unwrap();
+            for n in [1, 127, 128, 300] {
+                let pos: Vec<Vec3> = (0..n).map(|_| Vec3::new(uniform(), uniform(), uniform() - 3.0)).collect();
+                let nrm: Vec<Vec3> = (0..n).map(|_| Vec3::new(uniform(), uniform(), uniform()) * 1.7).collect();
+                let xyz = |v: &[Vec3]| [0, 1, 2].map(|c| v.iter().map(|p| p[c]).collect::<Vec<f32>>());
+                let (pa, na) = (xyz(&pos), xyz(&nrm));
+                let arrays = EyeArrays { pos: pa.each_ref().map(|a| &a[..]), nrm: na.each_ref().map(|a| &a[..]) };
+                assert_eq!(arrays.len(), n);
+                for raw in [true, false] {
+                    let mut want = [vec![[0.0f32; 4]; n], vec![[0.0f32; 4]; n]];
+                    let mut got = want.clone();
+                    let [wf, wb] = &mut want;
+                    match raw {
+                        true => l.light_batch_eye_sum_normalizing(&pos, &nrm, wf, Some(wb)),
+                        false => l.light_batch_eye_sum(&pos, &nrm, wf, Some(wb)),
+                    }
+                    let [gf, gb] = &mut got;
+                    l.light_arrays_eye_sum(arrays, raw, gf, Some(gb));
+                    let bits =
+                        |v: &[Vec<[f32; 4]>; 2]| v.iter().flatten().flatten().map(|x| x.to_bits()).collect::<Vec<_>>();
+                    assert_eq!(bits(&got), bits(&want), "n {n}, raw {raw}, two-sided {two}");
+                    assert!(want[0].iter().any(|c| c[0] > 0.0), "something lit");
+                }
+            }
+        }
     }
 
     #[test]

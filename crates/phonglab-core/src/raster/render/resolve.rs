@@ -25,7 +25,7 @@ use super::raster::ScreenBarycentrics;
 use super::setup::Setup;
 use super::vertices::Vertices;
 use super::{Job, NO_TRIANGLE};
-use crate::specialised::Lighter;
+use crate::specialised::{EyeArrays, Lighter};
 use crate::view::{FlatNormal, Shading};
 
 /// Per-band buffers of Phong fragments, and each rasterised triangle's attributes at its
@@ -89,12 +89,13 @@ fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: 
 }
 
 /// One band's per-pixel fragments, presized to the band and written by index, and the runs
-/// they came from (a list cleared for each band).
+/// they came from (a list cleared for each band). Positions and normals are six arrays
+/// (x, y, z of each), written a block of [`LANES`] at a time and read so by the lighting.
 #[derive(Default)]
 pub struct Fragments {
     runs: Vec<FragmentRun>,
-    pos: Vec<Vec3>,
-    nrm: Vec<Vec3>,
+    pos: [Vec<f32>; 3],
+    nrm: [Vec<f32>; 3],
     front_out: Vec<[f32; 4]>,
     back_out: Vec<[f32; 4]>,
 }
@@ -110,11 +111,25 @@ struct FragmentRun {
 }
 
 impl Fragments {
-    /// Room for `n` fragments, and no runs yet.
+    /// Room for `n` fragments and a block past them (a run's last block is stored whole),
+    /// and no runs yet.
     fn size(&mut self, n: usize) {
         self.runs.clear();
-        self.pos.resize(n, Vec3::ZERO);
-        self.nrm.resize(n, Vec3::ZERO);
+        for a in self.pos.iter_mut().chain(&mut self.nrm) {
+            a.resize(n + LANES, 0.0);
+        }
+    }
+
+    /// Stores a block's channels (`v[c]`: channel c of its lanes) as fragments `at..at +
+    /// LANES` of `to`, whole: lanes past the run land where the next run's fragments go.
+    #[inline(always)]
+    fn store(to: &mut [Vec<f32>; 3], at: usize, v: &[[f32; LANES]; 3]) {
+        debug_assert!(to.iter().all(|a| at + LANES <= a.len()), "sized by Fragments::size");
+        for (a, c) in to.iter_mut().zip(v) {
+            if let Some(dst) = a.get_mut(at..).and_then(|d| d.first_chunk_mut::<LANES>()) {
+                *dst = *c;
+            }
+        }
     }
 }
 
@@ -527,15 +542,10 @@ fn resolve_band_any<const AVX2: bool>(
                 }
                 Shading::Phong => {
                     let (pw, nw) = (&tri_pos[r], &tri_nrm[r]);
-                    for (k0, n) in run.blocks() {
+                    for (k0, _) in run.blocks() {
                         let wt = run.weights(&edges, t.inv_w, k0);
-                        let p = blend_n(&wt, &xyz(pw));
-                        let nv = blend_n(&wt, &xyz(nw));
-                        let at = m + k0;
-                        for j in 0..n {
-                            frags.pos[at + j] = Vec3::new(p[0][j], p[1][j], p[2][j]);
-                            frags.nrm[at + j] = Vec3::new(nv[0][j], nv[1][j], nv[2][j]);
-                        }
+                        Fragments::store(&mut frags.pos, m + k0, &blend_n(&wt, &xyz(pw)));
+                        Fragments::store(&mut frags.nrm, m + k0, &blend_n(&wt, &xyz(nw)));
                     }
                     m = run.fragments(frags, m, side == 1);
                 }
@@ -545,14 +555,11 @@ fn resolve_band_any<const AVX2: bool>(
                     // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
                     let n = setup.face_normal[t.orig as usize];
                     let n = if t.back { n } else { -n };
-                    for (k0, len) in run.blocks() {
+                    let face = [[n.x; LANES], [n.y; LANES], [n.z; LANES]];
+                    for (k0, _) in run.blocks() {
                         let wt = run.weights(&edges, t.inv_w, k0);
-                        let p = blend_n(&wt, &xyz(pw));
-                        let at = m + k0;
-                        for j in 0..len {
-                            frags.pos[at + j] = Vec3::new(p[0][j], p[1][j], p[2][j]);
-                            frags.nrm[at + j] = n;
-                        }
+                        Fragments::store(&mut frags.pos, m + k0, &blend_n(&wt, &xyz(pw)));
+                        Fragments::store(&mut frags.nrm, m + k0, &face);
                     }
                     m = run.fragments(frags, m, side == 1);
                 }
@@ -563,14 +570,11 @@ fn resolve_band_any<const AVX2: bool>(
         frags.front_out.resize(m, [0.0; 4]);
         frags.back_out.resize(m, [0.0; 4]);
         let back_out = if two { Some(&mut frags.back_out[..m]) } else { None };
-        let (pos, nrm, front_out) = (&frags.pos[..m], &frags.nrm[..m], &mut frags.front_out[..m]);
-        if job.shading == Shading::Phong {
-            // The interpolated normals are renormalised inside (in vectorised chunks).
-            lighter.light_batch_eye_sum_normalizing(pos, nrm, front_out, back_out);
-        } else {
-            // Face normals are unit already.
-            lighter.light_batch_eye_sum(pos, nrm, front_out, back_out);
-        }
+        let arrays =
+            EyeArrays { pos: frags.pos.each_ref().map(|a| &a[..m]), nrm: frags.nrm.each_ref().map(|a| &a[..m]) };
+        // Phong's interpolated normals are renormalised inside (in vectorised chunks); the
+        // Flat face normals are unit already.
+        lighter.light_arrays_eye_sum(arrays, job.shading == Shading::Phong, &mut frags.front_out[..m], back_out);
         // Run by run: consecutive fragments to consecutive pixels, channel by channel (a
         // loop the compiler vectorises).
         for run in &frags.runs {
