@@ -48,12 +48,30 @@ impl Vertices {
         self.clip.resize(n, Vec4::ZERO);
         self.normal.resize(n, Vec3::ZERO);
         const GRAIN: usize = 512;
+        // One pass over chunks of vertices on both threads: transforms and, for Gouraud, the
+        // lighting and each side's colour (one fork and join a frame for the whole stage).
+        let gouraud = job.shading == Shading::Gouraud;
+        let two = job.scene.light_model.two_sided;
+        let clamps = job.scene.rules.clamps_vertex_colors();
+        let m = if gouraud { n } else { 0 };
+        for side in 0..2 {
+            self.lit[side].resize(m, Lit::default());
+            self.color[side].resize(m, [0.0; 4]);
+        }
+        let [lit_front, lit_back] = &mut self.lit;
+        let [color_front, color_back] = &mut self.color;
+        // Gouraud's outputs, chunk by chunk (none otherwise: the vectors are empty).
+        let lit = lit_front.chunks_mut(GRAIN).zip(lit_back.chunks_mut(GRAIN));
+        let color = color_front.chunks_mut(GRAIN).zip(color_back.chunks_mut(GRAIN));
+        let mut gouraud_chunks: Vec<_> = lit.zip(color).map(Some).collect();
+        gouraud_chunks.resize_with(n.div_ceil(GRAIN), || None);
         self.eye
             .par_chunks_mut(GRAIN)
             .zip(self.clip.par_chunks_mut(GRAIN))
             .zip(self.normal.par_chunks_mut(GRAIN))
+            .zip(gouraud_chunks.into_par_iter())
             .enumerate()
-            .for_each(|(k, ((eye, clip), normal))| {
+            .for_each(|(k, (((eye, clip), normal), gouraud))| {
                 let base = k * GRAIN;
                 for i in 0..eye.len() {
                     let p = mesh.positions[base + i];
@@ -61,27 +79,19 @@ impl Vertices {
                     clip[i] = clip_from_object * p.extend(1.0);
                     normal[i] = nm * mesh.normals[base + i];
                 }
-            });
-        if job.shading == Shading::Gouraud {
-            let two = job.scene.light_model.two_sided;
-            for side in 0..2 {
-                self.lit[side].resize(n, Lit::default());
-            }
-            let [front, back] = &mut self.lit;
-            let (pos, nrm) = (&mesh.positions, &mesh.normals);
-            front.par_chunks_mut(GRAIN).zip(back.par_chunks_mut(GRAIN)).enumerate().for_each(|(k, (f, b))| {
-                let r = k * GRAIN..k * GRAIN + f.len();
-                lighter.light_batch(&pos[r.clone()], &nrm[r], f, if two { Some(b) } else { None });
-            });
-            for side in 0..2 {
-                let src = if side == 1 && two { &self.lit[1] } else { &self.lit[0] };
-                self.color[side].clear();
-                if job.scene.rules.clamps_vertex_colors() {
-                    self.color[side].extend(src.iter().map(clamped_sum));
-                } else {
-                    self.color[side].extend(src.iter().map(unclamped_sum));
+                let Some(((f, b), (cf, cb))) = gouraud else { return };
+                let r = base..base + eye.len();
+                let (pos, nrm) = (&mesh.positions[r.clone()], &mesh.normals[r]);
+                lighter.light_batch(pos, nrm, f, if two { Some(&mut *b) } else { None });
+                let sum = if clamps { clamped_sum } else { unclamped_sum };
+                for (c, l) in cf.iter_mut().zip(f.iter()) {
+                    *c = sum(l);
                 }
-            }
-        }
+                // One-sided: the back side's colour is the front's.
+                let back = if two { &*b } else { &*f };
+                for (c, l) in cb.iter_mut().zip(back) {
+                    *c = sum(l);
+                }
+            });
     }
 }
