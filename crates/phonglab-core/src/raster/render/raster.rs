@@ -453,7 +453,7 @@ fn draw<const AVX2: bool>(t: &RasterTri, ti: u32, band: &mut Band<'_>) {
 /// barycentric is the exact edge function times 1/area (f64), rounded to f32. (The raster
 /// steps its barycentrics in f32 along the row for the depth test, as OpenGL's
 /// rasterisers step depth; shading does not inherit that drift.)
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 pub struct ScreenBarycentrics {
     /// `w1`, `w2` at the centre of pixel (0, 0).
     w_origin: [i64; 2],

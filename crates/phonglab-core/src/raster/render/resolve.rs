@@ -54,9 +54,12 @@ fn screen_weights(inv_w: [f32; 3], l: [f32; 2]) -> ([f32; 3], f32) {
 }
 
 /// Each rasterised triangle's attributes at its three vertices, mapped from the original
-/// triangle's through the clipped vertices' barycentrics and multiplied by 1/w: computed once
-/// per triangle, so a pixel blends three values instead of mapping its barycentrics back.
+/// triangle's through the clipped vertices' barycentrics and multiplied by 1/w, and its edge
+/// functions: computed once per triangle, so a pixel blends three values instead of mapping
+/// its barycentrics back. One pass over chunks of triangles on both threads (each result
+/// depends on its triangle alone).
 fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: &mut Scratch) {
+    const GRAIN: usize = 256;
     let tris = &job.mesh.triangles;
     let two = job.scene.light_model.two_sided;
     let blend3 = |t: &super::setup::RasterTri, a: &[Vec3]| -> [Vec3; 3] {
@@ -64,28 +67,40 @@ fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: 
         let at = [a[v[0] as usize], a[v[1] as usize], a[v[2] as usize]];
         std::array::from_fn(|k| (at[0] * t.bary[k][0] + at[1] * t.bary[k][1] + at[2] * t.bary[k][2]) * t.inv_w[k])
     };
-    // Both threads share the triangles (each result depends on its triangle alone).
-    let per_tri = setup.tris.par_iter();
-    match job.shading {
-        Shading::Gouraud => {
-            per_tri
-                .map(|t| {
-                    let side = (t.back && two) as usize;
-                    let v = tris[t.orig as usize];
-                    let cs = v.map(|i| verts.color[side][i as usize]);
-                    std::array::from_fn(|k| {
-                        let b = t.bary[k];
-                        std::array::from_fn(|ch| (cs[0][ch] * b[0] + cs[1][ch] * b[1] + cs[2][ch] * b[2]) * t.inv_w[k])
-                    })
-                })
-                .collect_into_vec(&mut scratch.tri_color);
-        }
-        Shading::Phong => {
-            per_tri.clone().map(|t| blend3(t, &verts.eye)).collect_into_vec(&mut scratch.tri_pos);
-            per_tri.map(|t| blend3(t, &verts.normal)).collect_into_vec(&mut scratch.tri_nrm);
-        }
-        Shading::Flat => per_tri.map(|t| blend3(t, &verts.eye)).collect_into_vec(&mut scratch.tri_pos),
-    }
+    let color = |t: &super::setup::RasterTri| -> [[f32; 4]; 3] {
+        let side = (t.back && two) as usize;
+        let v = tris[t.orig as usize];
+        let cs = v.map(|i| verts.color[side][i as usize]);
+        std::array::from_fn(|k| {
+            let b = t.bary[k];
+            std::array::from_fn(|ch| (cs[0][ch] * b[0] + cs[1][ch] * b[1] + cs[2][ch] * b[2]) * t.inv_w[k])
+        })
+    };
+    // Every array sized to the triangles (growing only on the first frames); only those the
+    // shading reads are written.
+    let n = setup.tris.len();
+    scratch.tri_color.resize(n, [[0.0; 4]; 3]);
+    scratch.tri_pos.resize(n, [Vec3::ZERO; 3]);
+    scratch.tri_nrm.resize(n, [Vec3::ZERO; 3]);
+    scratch.tri_edges.resize(n, ScreenBarycentrics::default());
+    let shading = job.shading;
+    setup
+        .tris
+        .par_chunks(GRAIN)
+        .zip(scratch.tri_edges.par_chunks_mut(GRAIN))
+        .zip(scratch.tri_color.par_chunks_mut(GRAIN))
+        .zip(scratch.tri_pos.par_chunks_mut(GRAIN))
+        .zip(scratch.tri_nrm.par_chunks_mut(GRAIN))
+        .for_each(|((((ts, edges), colors), pos), nrm)| {
+            for (i, t) in ts.iter().enumerate() {
+                edges[i] = ScreenBarycentrics::new(t);
+                match shading {
+                    Shading::Gouraud => colors[i] = color(t),
+                    Shading::Phong => (pos[i], nrm[i]) = (blend3(t, &verts.eye), blend3(t, &verts.normal)),
+                    Shading::Flat => pos[i] = blend3(t, &verts.eye),
+                }
+            }
+        });
 }
 
 /// One band's per-pixel fragments, presized to the band and written by index, and the runs
@@ -232,7 +247,6 @@ pub fn prepare(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: &mut Scr
     scratch.bands.resize_with(bands, Fragments::default);
     if job.shading != Shading::Flat || per_pixel {
         triangle_attributes(job, verts, setup, scratch);
-        setup.tris.par_iter().map(ScreenBarycentrics::new).collect_into_vec(&mut scratch.tri_edges);
     }
     // Flat: each face's colour converted to 8 bits once.
     let face8: [Vec<[u8; 4]>; 2] = if job.shading == Shading::Flat && !per_pixel {
