@@ -169,9 +169,16 @@ impl Renderer {
         let t_vertices = lap();
         self.setup.run(job, &self.vertices, lighter, width, height);
         let t_setup = lap();
-        raster::bin(&self.setup, width, height, self.keep_visibility, &mut self.image, &mut self.bins);
+        // Binning is serial; the other thread sets up the triangles' attributes meanwhile.
+        let bands = height.div_ceil(raster::BAND);
+        let (setup, keep) = (&self.setup, self.keep_visibility);
+        let (image, bins, vertices, scratch) = (&mut self.image, &mut self.bins, &self.vertices, &mut self.scratch);
+        let ((), prepared) = rayon::join(
+            || raster::bin(setup, width, height, keep, image, bins),
+            || resolve::prepare(job, vertices, setup, scratch, bands),
+        );
         let (lit, [raster_share, resolve_share]) =
-            draw_and_shade(job, &self.vertices, &self.setup, lighter, &mut self.image, &mut self.scratch, &self.bins);
+            draw_and_shade(job, &self.setup, lighter, &prepared, &mut self.image, &mut self.scratch, &self.bins);
         let t_bands = lap();
         let (t_raster, t_resolve) = (t_bands * raster_share, t_bands * resolve_share);
         let evaluations = resolve::evaluations(job, lit);
@@ -192,9 +199,9 @@ impl Renderer {
 /// drawing and shading; sets the image's coverage.
 fn draw_and_shade(
     job: &Job<'_>,
-    verts: &vertices::Vertices,
     setup: &setup::Setup,
     lighter: &Lighter,
+    prepared: &resolve::Prepared,
     image: &mut Image,
     scratch: &mut resolve::Scratch,
     bins: &[Vec<u32>],
@@ -202,7 +209,6 @@ fn draw_and_shade(
     use rayon::prelude::*;
     let (width, rows) = (image.width, image.width * raster::BAND);
     let bands = image.height.div_ceil(raster::BAND);
-    let prepared = resolve::prepare(job, verts, setup, scratch, bands);
     let (shared, fragments) = resolve::split(scratch);
     let mut kept: Vec<Option<&mut [u32]>> = match image.raster.is_empty() {
         true => (0..bands).map(|_| None).collect(),
