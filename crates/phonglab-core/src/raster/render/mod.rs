@@ -233,7 +233,7 @@ fn draw_and_shade(
                 );
                 let drawn = std::time::Instant::now();
                 let shaded =
-                    resolve::resolve_band(job, setup, lighter, &prepared, &shared, px, raster, y_start, width, frags);
+                    resolve::resolve_band(job, setup, lighter, prepared, &shared, px, raster, y_start, width, frags);
                 if let Some(kept) = kept {
                     kept.copy_from_slice(raster);
                 }
