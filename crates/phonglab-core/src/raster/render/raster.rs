@@ -30,6 +30,14 @@ fn edge(ax: i64, ay: i64, bx: i64, by: i64, px: i64, py: i64) -> i64 {
     (bx - ax) * (py - ay) - (by - ay) * (px - ax)
 }
 
+/// `f(a, b)` for the triangle's three edges a -> b, 1 -> 2, 2 -> 0 and 0 -> 1 (the edge
+/// opposite vertex 0 first), written out: `array::map` was left as a call, once per
+/// triangle and band.
+#[inline(always)]
+fn per_edge<T>(mut f: impl FnMut(usize, usize) -> T) -> [T; 3] {
+    [f(1, 2), f(2, 0), f(0, 1)]
+}
+
 /// 0 for a top or left edge (a centre on it is inside), -1 otherwise.
 #[inline(always)]
 fn bias(ax: i64, ay: i64, bx: i64, by: i64) -> i64 {
@@ -400,18 +408,17 @@ fn draw<const AVX2: bool>(t: &RasterTri, ti: u32, band: &mut Band<'_>) {
     let half = 1i64 << (SUBPIXEL_BITS - 1);
     let one = 1i64 << SUBPIXEL_BITS;
     // w0 is opposite vertex 0 (edge 1 -> 2), and so on.
-    let e = [(1, 2), (2, 0), (0, 1)];
-    let biases = e.map(|(a, b)| bias(x[a], y[a], x[b], y[b]));
+    let biases = per_edge(|a, b| bias(x[a], y[a], x[b], y[b]));
     // Steps of each edge function per pixel in x and per row in y.
-    let step_x = e.map(|(a, b)| -(y[b] - y[a]) * one);
-    let step_y = e.map(|(a, b)| (x[b] - x[a]) * one);
+    let step_x = per_edge(|a, b| -(y[b] - y[a]) * one);
+    let step_y = per_edge(|a, b| (x[b] - x[a]) * one);
     let (py0, py1) = (t.y0.max(y_start), t.y1.min(y_end));
     if py0 > py1 {
         return;
     }
     let px0 = t.x0 as i64;
     let cx = px0 * one + half;
-    let mut row_w = e.map(|(a, b)| edge(x[a], y[a], x[b], y[b], cx, py0 as i64 * one + half));
+    let mut row_w = per_edge(|a, b| edge(x[a], y[a], x[b], y[b], cx, py0 as i64 * one + half));
     // Screen-space barycentrics l1 = w1 / area, l2 = w2 / area and depth, per pixel step.
     let (z0, dz1, dz2) = (t.z[0], t.z[1] - t.z[0], t.z[2] - t.z[0]);
     let (step1, step2) = ((step_x[1] as f64 * inv_area) as f32, (step_x[2] as f64 * inv_area) as f32);
@@ -472,11 +479,14 @@ impl ScreenBarycentrics {
         let half = 1i64 << (SUBPIXEL_BITS - 1);
         let one = 1i64 << SUBPIXEL_BITS;
         let area = edge(x[0], y[0], x[1], y[1], x[2], y[2]);
-        let e = [(2, 0), (0, 1)];
+        // The edges 2 -> 0 and 0 -> 1 of [`per_edge`].
+        let [_, w1, w2] = per_edge(|a, b| edge(x[a], y[a], x[b], y[b], half, half));
+        let [_, sx1, sx2] = per_edge(|a, b| -(y[b] - y[a]) * one);
+        let [_, sy1, sy2] = per_edge(|a, b| (x[b] - x[a]) * one);
         Self {
-            w_origin: e.map(|(a, b)| edge(x[a], y[a], x[b], y[b], half, half)),
-            step_x: e.map(|(a, b)| -(y[b] - y[a]) * one),
-            step_y: e.map(|(a, b)| (x[b] - x[a]) * one),
+            w_origin: [w1, w2],
+            step_x: [sx1, sx2],
+            step_y: [sy1, sy2],
             inv_area: if area != 0 { 1.0 / area as f64 } else { 0.0 },
         }
     }
@@ -487,7 +497,7 @@ impl ScreenBarycentrics {
     pub fn row(&self, px: usize, py: usize) -> ([f64; 2], [f64; 2], f64) {
         let (px, py) = (px as i64, py as i64);
         let w = std::array::from_fn(|k| (self.w_origin[k] + self.step_x[k] * px + self.step_y[k] * py) as f64);
-        (w, self.step_x.map(|s| s as f64), self.inv_area)
+        (w, [self.step_x[0] as f64, self.step_x[1] as f64], self.inv_area)
     }
 
     /// The barycentrics `[l1, l2]` at the centre of pixel (`px`, `py`).

@@ -70,7 +70,8 @@ fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: 
     let color = |t: &super::setup::RasterTri| -> [[f32; 4]; 3] {
         let side = (t.back && two) as usize;
         let v = tris[t.orig as usize];
-        let cs = v.map(|i| verts.color[side][i as usize]);
+        let vc = &verts.color[side];
+        let cs = [vc[v[0] as usize], vc[v[1] as usize], vc[v[2] as usize]];
         std::array::from_fn(|k| {
             let b = t.bary[k];
             std::array::from_fn(|ch| (cs[0][ch] * b[0] + cs[1][ch] * b[1] + cs[2][ch] * b[2]) * t.inv_w[k])

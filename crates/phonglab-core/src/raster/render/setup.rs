@@ -327,7 +327,8 @@ fn setup_faces_any(
     out.clear();
     for j in faces {
         let t = job.mesh.triangles[j];
-        let c = t.map(|i| verts.clip[i as usize]);
+        // Written out: `array::map` was left as a call, once per triangle.
+        let c = [verts.clip[t[0] as usize], verts.clip[t[1] as usize], verts.clip[t[2] as usize]];
         if trivially_rejected(&c) {
             continue;
         }
