@@ -309,6 +309,59 @@ mod tests {
     use crate::mesh::{sphere, teapot};
     use crate::presets::bench_scene;
 
+    /// Every compiled copy of the resolve this processor can run (portable, AVX2, AVX-512)
+    /// shades every band of a frame into the same bytes, with the same counts, for each
+    /// shading (the demo's derivative Flat included) and a two-sided scene.
+    #[test]
+    fn every_copy_of_the_resolve_shades_alike() {
+        let mut two_sided = bench_scene(37);
+        two_sided.light_model.two_sided = true;
+        let (sphere, teapot) = (sphere::glu_sphere(1.0, 50, 50), teapot::glut_teapot(0.8, 7));
+        let cases = [
+            (bench_scene(37), &sphere, Shading::Phong, FlatNormal::Face),
+            (bench_scene(37), &teapot, Shading::Gouraud, FlatNormal::Face),
+            (two_sided.clone(), &teapot, Shading::Phong, FlatNormal::Face),
+            (two_sided, &sphere, Shading::Gouraud, FlatNormal::Face),
+            (bench_scene(37), &teapot, Shading::Flat, FlatNormal::ScreenDerivatives),
+            (bench_scene(37), &sphere, Shading::Flat, FlatNormal::Face),
+        ];
+        let mut copies_run = 0;
+        for (scene, mesh, shading, flat_normal) in cases {
+            let job = Job { flat_normal, ..bench_job(&scene, mesh, shading) };
+            // Wide enough for a band to take more than one batch of Phong fragments; 101
+            // rows, so the last band is a short one.
+            let (w, h) = (211, 101);
+            let mut r = Renderer::new();
+            r.keep_visibility(true);
+            let image = r.render(&job, w, h).unwrap().0.clone();
+            let lighter = r.lighter.as_ref().unwrap();
+            let bands = h.div_ceil(raster::BAND);
+            let prepared = resolve::prepare(&job, &r.vertices, &r.setup, &mut r.scratch, bands);
+            let (shared, fragments) = resolve::split(&mut r.scratch);
+            for (b, frags) in fragments.iter_mut().enumerate().take(bands) {
+                let rows = b * raster::BAND * w..((b + 1) * raster::BAND * w).min(w * h);
+                let want = &image.rgba[rows.start * 4..rows.end * 4];
+                let mut shaded = Vec::new();
+                for copy in [resolve::Compiled::Portable, resolve::Compiled::Avx2, resolve::Compiled::Avx512] {
+                    let mut px = vec![[0u8; 4]; rows.len()];
+                    let raster = &image.raster[rows.clone()];
+                    let y0 = b * raster::BAND;
+                    let (setup, px) = (&r.setup, &mut px);
+                    let shade = resolve::resolve_band_copy;
+                    let Some(s) = shade(copy, &job, setup, lighter, &prepared, &shared, px, raster, y0, w, frags)
+                    else {
+                        continue;
+                    };
+                    assert_eq!(px.as_flattened(), want, "{copy:?}, {shading:?}, band {b}");
+                    shaded.push(s);
+                    copies_run += 1;
+                }
+                assert!(shaded.windows(2).all(|p| p[0] == p[1]), "{shaded:?}");
+            }
+        }
+        assert!(copies_run >= 6 * 7, "{copies_run}");
+    }
+
     /// Without the kept visibility, picking and `surface_at` draw the pixel's band again:
     /// at every pixel they answer exactly as the kept visibility does; the images and the
     /// coverage are the same either way, and the coverage is the kept buffer's count.

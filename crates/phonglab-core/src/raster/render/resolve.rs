@@ -450,6 +450,48 @@ pub fn resolve_band(
     resolve_band_any::<false>(job, setup, lighter, p, shared, px, raster, y0, width, frags)
 }
 
+/// The compiled copies of the resolve, for the test that they shade alike.
+#[cfg(test)]
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Compiled {
+    Portable,
+    Avx2,
+    Avx512,
+}
+
+/// [`resolve_band`] through one given copy; `None` if this processor cannot run it.
+#[cfg(test)]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn resolve_band_copy(
+    copy: Compiled,
+    job: &Job<'_>,
+    setup: &Setup,
+    lighter: &Lighter,
+    p: &Prepared,
+    shared: &Shared<'_>,
+    px: &mut [[u8; 4]],
+    raster: &[u32],
+    y0: usize,
+    width: usize,
+    frags: &mut Fragments,
+) -> Option<Shaded> {
+    match copy {
+        Compiled::Portable => {
+            Some(resolve_band_any::<false>(job, setup, lighter, p, shared, px, raster, y0, width, frags))
+        }
+        #[cfg(target_arch = "x86_64")]
+        // SAFETY: each copy runs only where the processor has its features.
+        Compiled::Avx2 if crate::specialised::has_avx2_fma() => {
+            Some(unsafe { resolve_band_avx2(job, setup, lighter, p, shared, px, raster, y0, width, frags) })
+        }
+        #[cfg(target_arch = "x86_64")]
+        Compiled::Avx512 if crate::specialised::has_avx512() => {
+            Some(unsafe { resolve_band_avx512(job, setup, lighter, p, shared, px, raster, y0, width, frags) })
+        }
+        _ => None,
+    }
+}
+
 /// [`resolve_band_avx2`] where the processor has AVX-512: the weights' f64 arithmetic, eight
 /// lanes, fits one register instead of two.
 #[cfg(target_arch = "x86_64")]
