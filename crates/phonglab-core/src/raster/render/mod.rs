@@ -165,7 +165,7 @@ impl Renderer {
             clock = now;
             ms
         };
-        self.vertices.run(job, lighter);
+        self.vertices.run(job, lighter, width, height);
         let t_vertices = lap();
         self.setup.run(job, &self.vertices, lighter, width, height);
         let t_setup = lap();

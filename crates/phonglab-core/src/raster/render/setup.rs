@@ -141,7 +141,36 @@ fn trivially_rejected(c: &[Vec4; 3]) -> bool {
 
 /// A clip-space vertex in window coordinates: fixed-point x and y (y down), depth in
 /// [0, 1], and 1/w.
-type WindowVert = (i64, i64, f32, f32);
+pub type WindowVert = (i64, i64, f32, f32);
+
+/// Each clip-space vertex of `clip` in window coordinates for a `width` x `height` image
+/// ([`to_window`], the same bits as setup's own), into `out`: once per mesh vertex, for the
+/// triangles that need no clipping, instead of once per triangle corner (a vertex of a
+/// closed mesh has about six triangles). Vertices outside the view volume get values no
+/// unclipped triangle reads. Runs a copy compiled for AVX2 where the processor has it
+/// (rounding inline instead of through the C library).
+pub fn window_vertices(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
+    #[cfg(target_arch = "x86_64")]
+    if crate::specialised::has_avx2_fma() {
+        // SAFETY: the CPU has AVX2 and FMA (checked just above).
+        return unsafe { window_vertices_avx2(clip, out, width, height) };
+    }
+    window_vertices_any(clip, out, width, height);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn window_vertices_avx2(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
+    window_vertices_any(clip, out, width, height);
+}
+
+#[inline(always)]
+fn window_vertices_any(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
+    let (w, h) = (width as f32, height as f32);
+    for (o, &c) in out.iter_mut().zip(clip) {
+        *o = to_window(c, w, h);
+    }
+}
 
 /// `clip` divided by w and mapped to the `width` x `height` viewport. (Inline: in
 /// [`setup_faces_avx2`] it rounds without calls.)
@@ -204,12 +233,18 @@ fn raster_tri(
     })
 }
 
-/// Snaps a mesh triangle that needs no clipping (clip-space corners `c`) to a raster
-/// triangle: [`emit`] for a polygon of three corners, written out.
+/// Snaps a mesh triangle that needs no clipping (its corners `v` in window coordinates,
+/// from [`window_vertices`]) to a raster triangle: [`emit`] for a polygon of three corners,
+/// written out.
 #[inline(always)]
-fn emit_triangle(c: &[Vec4; 3], orig: u32, width: usize, height: usize, cull_back: bool, out: &mut Vec<RasterTri>) {
-    let (w, h) = (width as f32, height as f32);
-    let v = [to_window(c[0], w, h), to_window(c[1], w, h), to_window(c[2], w, h)];
+fn emit_triangle(
+    v: [WindowVert; 3],
+    orig: u32,
+    width: usize,
+    height: usize,
+    cull_back: bool,
+    out: &mut Vec<RasterTri>,
+) {
     let corners = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     if let Some(t) = raster_tri(v, corners, orig, width, height, cull_back) {
         out.push(t);
@@ -334,8 +369,11 @@ fn setup_faces_any(
         }
         let (depth, guard) = planes_needed(&c);
         if !depth && !guard {
-            // Nothing to clip (most triangles): the corners as they are.
-            emit_triangle(&c, j as u32, width, height, job.cull_back, out);
+            // Nothing to clip (most triangles): the corners as they are, in window
+            // coordinates already.
+            let win = &verts.window;
+            let v = [win[t[0] as usize], win[t[1] as usize], win[t[2] as usize]];
+            emit_triangle(v, j as u32, width, height, job.cull_back, out);
             continue;
         }
         // Each corner with its barycentrics in the mesh triangle: (1, 0, 0) and so on.

@@ -4,6 +4,7 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 use rayon::prelude::*;
 
 use super::Job;
+use super::setup::{WindowVert, window_vertices};
 use crate::specialised::{Lighter, Lit};
 use crate::transform::NormalMatrix;
 use crate::view::Shading;
@@ -15,6 +16,9 @@ pub struct Vertices {
     pub eye: Vec<Vec3>,
     /// Clip-space positions.
     pub clip: Vec<Vec4>,
+    /// Window coordinates of the clip-space positions (see
+    /// [`super::setup::window_vertices`]).
+    pub window: Vec<WindowVert>,
     /// Eye-space normals, `(M^-1)^T n`, not yet normalised (Phong renormalises per pixel).
     pub normal: Vec<Vec3>,
     /// Gouraud: each vertex's colour per side, as the pipeline interpolates it: OpenGL
@@ -36,8 +40,8 @@ fn clamped_sum(l: &Lit) -> [f32; 4] {
 }
 
 impl Vertices {
-    /// Transforms the job's mesh (and lights it for Gouraud).
-    pub fn run(&mut self, job: &Job<'_>, lighter: &Lighter) {
+    /// Transforms the job's mesh for a `width` x `height` image (and lights it for Gouraud).
+    pub fn run(&mut self, job: &Job<'_>, lighter: &Lighter, width: usize, height: usize) {
         let mesh = job.mesh;
         let n = mesh.positions.len();
         let eye_from_object = job.scene.eye_from_object();
@@ -46,6 +50,7 @@ impl Vertices {
         let nm: Mat3 = NormalMatrix::for_rules(&eye_from_object, job.scene.rules).eye_from_object.as_mat3();
         self.eye.resize(n, Vec3::ZERO);
         self.clip.resize(n, Vec4::ZERO);
+        self.window.resize(n, (0, 0, 0.0, 0.0));
         self.normal.resize(n, Vec3::ZERO);
         const GRAIN: usize = 512;
         // One pass over chunks of vertices on both threads: transforms and, for Gouraud, the
@@ -69,9 +74,10 @@ impl Vertices {
             .par_chunks_mut(GRAIN)
             .zip(self.clip.par_chunks_mut(GRAIN))
             .zip(self.normal.par_chunks_mut(GRAIN))
+            .zip(self.window.par_chunks_mut(GRAIN))
             .zip(gouraud_chunks.into_par_iter())
             .enumerate()
-            .for_each(|(k, (((eye, clip), normal), gouraud))| {
+            .for_each(|(k, ((((eye, clip), normal), window), gouraud))| {
                 let base = k * GRAIN;
                 for i in 0..eye.len() {
                     let p = mesh.positions[base + i];
@@ -79,6 +85,7 @@ impl Vertices {
                     clip[i] = clip_from_object * p.extend(1.0);
                     normal[i] = nm * mesh.normals[base + i];
                 }
+                window_vertices(clip, window, width, height);
                 let Some(((f, b), (cf, cb))) = gouraud else { return };
                 let r = base..base + eye.len();
                 let (pos, nrm) = (&mesh.positions[r.clone()], &mesh.normals[r]);
