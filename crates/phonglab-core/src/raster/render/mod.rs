@@ -269,11 +269,12 @@ impl Renderer {
         let r = if img.raster.is_empty() {
             let b = y / raster::BAND;
             let (y_start, band_rows) = (b * raster::BAND, raster::BAND.min(img.height - b * raster::BAND));
-            let n = band_rows * img.width;
-            let (mut depth, mut tri) = (vec![1.0; n], vec![NO_TRIANGLE; n]);
-            let band = raster::Band { y_start: y_start as i32, width: img.width, depth: &mut depth, raster: &mut tri };
-            raster::draw_band(&self.setup, self.bins.get(b)?, band);
-            *tri.get((y - y_start) * img.width + x)?
+            let bin = self.bins.get(b)?;
+            raster::with_band_buffer(band_rows * img.width, |depth, tri| {
+                let band = raster::Band { y_start: y_start as i32, width: img.width, depth, raster: &mut *tri };
+                raster::draw_band(&self.setup, bin, band);
+                tri.get((y - y_start) * img.width + x).copied()
+            })?
         } else {
             img.raster[y * img.width + x]
         };

@@ -422,8 +422,9 @@ fn blend_n<const N: usize>(wt: &Weights, a: &[[f32; N]; 3]) -> [[f32; LANES]; N]
 
 /// Shades one band: `px` its pixels, `raster` its visibility buffer, `y0` the image row of
 /// its first row, `width` the image's width. Returns the pixels covered and the lighting
-/// evaluations made (fragments lit). Runs a copy compiled for AVX2 where the processor has it (the same
-/// operations, so the same bits: Rust never fuses a multiply and an add by itself).
+/// evaluations made (fragments lit). Runs the fastest copy the processor has
+/// ([`Compiled::best`]): the copies do the same operations, so they give the same bits
+/// (Rust never fuses a multiply and an add by itself).
 #[allow(clippy::too_many_arguments)]
 pub fn resolve_band(
     job: &Job<'_>,
@@ -437,30 +438,38 @@ pub fn resolve_band(
     width: usize,
     frags: &mut Fragments,
 ) -> Shaded {
-    #[cfg(target_arch = "x86_64")]
-    if crate::specialised::has_avx512() {
-        // SAFETY: the CPU has AVX-512F/DQ, AVX2 and FMA (checked just above).
-        return unsafe { resolve_band_avx512(job, setup, lighter, p, shared, px, raster, y0, width, frags) };
-    }
-    #[cfg(target_arch = "x86_64")]
-    if crate::specialised::has_avx2_fma() {
-        // SAFETY: the CPU has AVX2 and FMA (checked just above).
-        return unsafe { resolve_band_avx2(job, setup, lighter, p, shared, px, raster, y0, width, frags) };
-    }
-    resolve_band_any::<false>(job, setup, lighter, p, shared, px, raster, y0, width, frags)
+    let copy = Compiled::best();
+    resolve_band_copy(copy, job, setup, lighter, p, shared, px, raster, y0, width, frags)
+        .unwrap_or_else(|| resolve_band_any::<false>(job, setup, lighter, p, shared, px, raster, y0, width, frags))
 }
 
-/// The compiled copies of the resolve, for the test that they shade alike.
-#[cfg(test)]
-#[derive(Clone, Copy, Debug)]
+/// The compiled copies of the resolve.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Compiled {
+    /// For any processor.
     Portable,
+    /// For processors with AVX2 and FMA.
     Avx2,
+    /// For processors with AVX-512 (F, DQ, VL) as well.
     Avx512,
 }
 
+impl Compiled {
+    /// The fastest copy this processor runs.
+    fn best() -> Self {
+        #[cfg(target_arch = "x86_64")]
+        if crate::specialised::has_avx512() {
+            return Compiled::Avx512;
+        }
+        #[cfg(target_arch = "x86_64")]
+        if crate::specialised::has_avx2_fma() {
+            return Compiled::Avx2;
+        }
+        Compiled::Portable
+    }
+}
+
 /// [`resolve_band`] through one given copy; `None` if this processor cannot run it.
-#[cfg(test)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn resolve_band_copy(
     copy: Compiled,
@@ -581,8 +590,8 @@ fn resolve_band_any<const AVX2: bool>(
                         let wt = run.weights(&edges, t.inv_w, k0);
                         let ch = blend_n(&wt, cw);
                         #[cfg(target_arch = "x86_64")]
-                        // SAFETY: AVX2 is only instantiated inside resolve_band_avx2, which
-                        // runs only where the processor has AVX2.
+                        // SAFETY: AVX2 is only instantiated inside resolve_band_avx2 and
+                        // resolve_band_avx512, which run only where the processor has AVX2.
                         let rgba = if AVX2 { unsafe { rgba8_avx2(&ch) } } else { rgba8(&ch) };
                         #[cfg(not(target_arch = "x86_64"))]
                         let rgba = rgba8(&ch);

@@ -173,7 +173,7 @@ fn window_vertices_any(clip: &[Vec4], out: &mut [WindowVert], width: usize, heig
 }
 
 /// `clip` divided by w and mapped to the `width` x `height` viewport. (Inline: in
-/// [`setup_faces_avx2`] it rounds without calls.)
+/// [`window_vertices_avx2`] and [`setup_faces_avx2`] it rounds without calls.)
 #[inline(always)]
 fn to_window(clip: Vec4, w: f32, h: f32) -> WindowVert {
     let iw = 1.0 / clip.w;
