@@ -287,6 +287,19 @@ impl Chunk {
         self.n.min(CHUNK)
     }
 
+    /// The lanes the stages compute: all of them, [`CHUNK`], whatever `n` is. The lanes from
+    /// `n` on hold the previous chunk's values (or the zeros of [`Chunk::new`]); they are
+    /// computed like the others and never written out, and no stage mixes lanes (the
+    /// range checks that choose a way, such as `unscaled_is_exact`, choose between ways
+    /// that give the same bits). A constant trip count is what lets every loop vectorise
+    /// whole: with `n` the compiler kept the last 16 of 128 vertices for a scalar loop
+    /// (its bound check), and the scalar lanes cost as much as the vector ones. Measured
+    /// with `phonglab bench lighting`: 11.7 -> 9.9 ns a vertex on scene (a), 102 -> 79 on (c).
+    #[inline(always)]
+    fn lanes(&self) -> usize {
+        CHUNK
+    }
+
     fn new() -> Box<Self> {
         Box::new(Chunk {
             n: 0,
@@ -616,7 +629,7 @@ impl Lighter {
     /// separate specular.
     #[inline(always)]
     fn clear_sums(&self, c: &mut Chunk) {
-        let n = c.len();
+        let n = c.lanes();
         let sides = if self.key.two_sided { 2 } else { 1 };
         let kinds = if self.key.separate_specular { 2 } else { 1 };
         for side in 0..sides {
@@ -632,7 +645,7 @@ impl Lighter {
     #[inline(always)]
     fn stage(&self, c: &mut Chunk, stage: Stage) {
         let e = &self.engine;
-        let n = c.len();
+        let n = c.lanes();
         match stage {
             Stage::TransformNormal => {
                 // glam's `Mat3 * Vec3`: x_axis x + y_axis y + z_axis z, per component.
@@ -887,7 +900,7 @@ impl Lighter {
     #[inline(always)]
     fn sum(&self, c: &mut Chunk, pl: &PreparedLight<f32>, side: usize) {
         let e = &self.engine;
-        let n = c.len();
+        let n = c.lanes();
         let [amb, dif, spe] = pl.products[side].map(|v| v.to_array());
         let gate = e.rules.specular_gate();
         let separate = e.separate_specular;
@@ -956,20 +969,25 @@ impl Lighter {
         let base = if scene_color { (m.emission + m.scene_ambient).to_array() } else { [0.0; 3] };
         let fix = |x: f32| if x.is_nan() { 0.0 } else { x };
         let (pr, sc) = (&c.acc[2 * side], &c.acc[2 * side + 1]);
+        // The sums by channel over the whole chunk first (loops of a constant length, which
+        // vectorise), then interleaved into the output with the alpha.
         // Without `SceneColor`, base is +0 and `+0 + x = x` for every sum (which is never -0).
-        if self.key.separate_specular {
-            for (i, o) in out.iter_mut().enumerate().take(c.len()) {
-                *o = [
-                    fix(base[0] + pr[0][i]) + fix(sc[0][i]),
-                    fix(base[1] + pr[1][i]) + fix(sc[1][i]),
-                    fix(base[2] + pr[2][i]) + fix(sc[2][i]),
-                    m.alpha,
-                ];
+        let mut rgb = [[0.0f32; CHUNK]; 3];
+        for (ch, sum) in rgb.iter_mut().enumerate() {
+            if self.key.separate_specular {
+                for i in 0..CHUNK {
+                    sum[i] = fix(base[ch] + pr[ch][i]) + fix(sc[ch][i]);
+                }
+            } else {
+                for i in 0..CHUNK {
+                    sum[i] = fix(base[ch] + pr[ch][i]);
+                }
             }
-        } else {
-            for (i, o) in out.iter_mut().enumerate().take(c.len()) {
-                *o = [fix(base[0] + pr[0][i]), fix(base[1] + pr[1][i]), fix(base[2] + pr[2][i]), m.alpha];
-            }
+        }
+        let n = out.len().min(c.len());
+        let [r, g, b] = &rgb;
+        for (i, o) in out[..n].iter_mut().enumerate() {
+            *o = [r[i], g[i], b[i], m.alpha];
         }
     }
 }
