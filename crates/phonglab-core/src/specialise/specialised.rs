@@ -162,6 +162,31 @@ impl Source<'_> {
         }
     }
 
+    /// Asks for the inputs of the vertices `r` to be brought into the cache (see
+    /// [`prefetch`]).
+    #[inline(always)]
+    fn prefetch(&self, r: std::ops::Range<usize>, with_positions: bool) {
+        match *self {
+            Source::Object { positions, normals } | Source::Eye { positions, normals, .. } => {
+                prefetch(&normals[r.clone()]);
+                if with_positions {
+                    prefetch(&positions[r]);
+                }
+            }
+            Source::EyeArrays { arrays: EyeArrays { pos, nrm }, .. } => {
+                for a in &nrm {
+                    prefetch(&a[r.clone()]);
+                }
+                if with_positions {
+                    for a in &pos {
+                        prefetch(&a[r.clone()]);
+                    }
+                }
+            }
+            Source::One { .. } => {}
+        }
+    }
+
     /// Loads the chunk's inputs from `start`: normals, and (`positions`: only where a
     /// stage reads them) object-space or eye-space points.
     #[inline(always)]
@@ -590,6 +615,13 @@ impl Lighter {
         }
         while start < count {
             c.n = CHUNK.min(count - start);
+            // The chunk after next is asked for now, its inputs and the outputs it will write.
+            let ahead = (start + 2 * CHUNK).min(count)..(start + 3 * CHUNK).min(count);
+            src.prefetch(ahead.clone(), with_positions);
+            match &out {
+                Output::Lit { front, .. } => prefetch(&front[ahead]),
+                Output::Sum { front, .. } => prefetch(&front[ahead]),
+            }
             src.load(&mut c, start, with_positions);
             self.clear_sums(&mut c);
             if let Probe::Time(t, at) = &mut probe {
@@ -988,6 +1020,22 @@ impl Lighter {
         let [r, g, b] = &rgb;
         for (i, o) in out[..n].iter_mut().enumerate() {
             *o = [r[i], g[i], b[i], m.alpha];
+        }
+    }
+}
+
+/// Asks the processor to bring the memory of `s` into its nearest cache, one cache line
+/// at a time: a hint, which changes no result. The lighting of a large array is otherwise
+/// bound by waiting for memory (1M vertices of scene (a) took 9.5 ns a vertex, 10 000 of
+/// them, which stay in cache, 5.6).
+#[inline(always)]
+fn prefetch<T>(s: &[T]) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        let (p, len) = (s.as_ptr().cast::<i8>(), std::mem::size_of_val(s));
+        for off in (0..len).step_by(64) {
+            // SAFETY: a prefetch never faults, and the address is inside `s`.
+            unsafe { std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(p.add(off)) };
         }
     }
 }
