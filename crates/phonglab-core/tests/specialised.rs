@@ -279,8 +279,14 @@ fn skipped_stages_never_run_for_any_key_bit() {
         s
     };
     type Bit = (&'static str, fn(&mut Scene), fn(&Stage) -> bool);
-    let bits: [Bit; 12] = [
+    let bits: [Bit; 13] = [
         ("nothing", |_| {}, |_| false),
+        (
+            // The object unscaled: the modelview is the view's translation alone.
+            "translation modelview",
+            |s| s.world_from_object = DMat4::IDENTITY,
+            |st| matches!(st, Stage::TransformPosition | Stage::TransformPositionProjective),
+        ),
         (
             // The last row (0, 0, 0.05, 1): w = 1 + 0.075 z varies over the sphere.
             "projective modelview",
@@ -391,11 +397,22 @@ fn skipped_stages_never_run_for_any_key_bit() {
             assert_eq!(position.why.contains("division by w is skipped"), trace.contains(&Stage::TransformPosition));
             assert_eq!(position.why.contains("projective"), projective, "{name}: {position}");
             assert_eq!(projective, name == "projective modelview", "{name}: the division by w runs only there");
+            let translation = trace.contains(&Stage::TranslatePosition);
+            assert_eq!(position.why.contains("is a translation"), translation, "{name}: {position}");
+            let m = scene.eye_from_object();
+            let is_translation = m.row(3) == DVec4::W && glam::DMat3::from_mat4(m) == glam::DMat3::IDENTITY;
+            assert_eq!(translation, is_translation, "{name}: P = p + t where the modelview is a translation");
+            if name == "translation modelview" {
+                assert!(translation, "the bit that makes the modelview a translation");
+            }
             // What the panel says is skipped ran no stage of its kind.
             for eff in l.key().effects().iter().filter(|e| !e.on) {
                 let ran = trace.iter().any(|st| match eff.kind {
                     EffectKind::Normalisation => matches!(st, Stage::NormalizeNormal | Stage::RescaleNormal),
-                    EffectKind::Position => matches!(st, Stage::TransformPosition | Stage::TransformPositionProjective),
+                    EffectKind::Position => matches!(
+                        st,
+                        Stage::TransformPosition | Stage::TransformPositionProjective | Stage::TranslatePosition
+                    ),
                     EffectKind::ViewVector => matches!(st, Stage::ViewVector),
                     EffectKind::SceneColor => matches!(st, Stage::SceneColor),
                     EffectKind::BackSide => matches!(st, Stage::Sum(_, 1)),

@@ -84,6 +84,29 @@ pub fn transform_affine_rows(rows: &[[f64; 4]; 4], p: [f64; 3]) -> [f64; 3] {
     [dot2(&rows[0], &p), dot2(&rows[1], &p), dot2(&rows[2], &p)]
 }
 
+/// [`transform_affine_rows`] for a modelview that is a translation by `t` (its 3x3 part the
+/// identity), in three additions: `P = (p + t) + 0`, or NaN in every row where a
+/// coordinate of `p` is not finite and in a row whose sum overflows. The same bits (NaN
+/// for NaN).
+///
+/// Why it is the same: in row `i`, [`dot2`]'s products are `p_i` and `t_i` exactly and
+/// zeros, so its partial sum is `fl(p_i + t_i)` and its error sum is that addition's
+/// rounding error `err` (the zeros add exactly); `fl(fl(p_i + t_i) + err)` is `fl(p_i + t_i)`
+/// again, because `fl(p_i + t_i) + err` is the exact sum. Where the sum is 0 the error sum
+/// is +0, so the row gives +0 even for `-0 + -0`: the `+ 0` does the same. A zero times an
+/// infinite coordinate, an infinite coordinate's own error term (`inf - inf`) and an
+/// overflowing sum's error term are NaN, and so is the row (every row multiplies every
+/// coordinate, by 0 or 1).
+#[inline(always)]
+pub fn translate_point(t: [f64; 3], p: [f64; 3]) -> [f64; 3] {
+    let finite = p[0].is_finite() & p[1].is_finite() & p[2].is_finite();
+    let row = |i: usize| {
+        let sum = p[i] + t[i];
+        if finite & sum.is_finite() { sum + 0.0 } else { f64::NAN }
+    };
+    [row(0), row(1), row(2)]
+}
+
 /// The 3x3 part of `m` times `v`, each row by [`dot2`].
 pub fn transform_vector3(m: &DMat4, v: DVec3) -> DVec3 {
     let va = v.to_array();
@@ -305,6 +328,64 @@ mod tests {
         assert!(unscaled_is_exact(0.0) && unscaled_is_exact(-2f64.powi(400)) && unscaled_is_exact(2f64.powi(-400)));
         assert!(!unscaled_is_exact(2f64.powi(401)) && !unscaled_is_exact(2f64.powi(-401)));
         assert!(!unscaled_is_exact(f64::NAN) && !unscaled_is_exact(f64::INFINITY));
+    }
+
+    #[test]
+    fn a_translation_is_the_compensated_rows_bit_for_bit() {
+        // Random coordinates and translations of every size, with the cases where the
+        // shortcut must take care: exact cancellation to 0 (and -0 + -0), zeros of both
+        // signs, infinities, NaN, and sums that overflow.
+        let mut next = xorshift(0x7a45_1a7e_0000_0001u64);
+        let mut value = |r: u64| -> f64 {
+            let m = 1.0 + (r >> 12) as f64 / (1u64 << 52) as f64;
+            let sign = if r.is_multiple_of(2) { 1.0 } else { -1.0 };
+            match r % 23 {
+                0 => 0.0,
+                1 => -0.0,
+                2 => f64::INFINITY * sign,
+                3 => f64::NAN,
+                4 => f64::MAX * sign,
+                _ => sign * m * 2f64.powi((r % 61) as i32 - 30),
+            }
+        };
+        let mut rows_by_kind = [0usize; 3];
+        for k in 0..300_000 {
+            let mut t = [0.0; 3];
+            let mut p = [0.0; 3];
+            for i in 0..3 {
+                t[i] = value(next());
+                // Keep the translation finite (a modelview is), and make some sums cancel.
+                if !t[i].is_finite() {
+                    t[i] = 1.5;
+                }
+                // Mostly f32 coordinates (as meshes give), some f64 ones (whose sums with a
+                // translation near f64::MAX overflow).
+                p[i] = match k % 5 {
+                    0 => -t[i],
+                    1 => value(next()),
+                    _ => value(next()) as f32 as f64,
+                };
+            }
+            let m = DMat4::from_translation(DVec3::from_array(t));
+            let rows = m.transpose().to_cols_array_2d();
+            let want = transform_affine_rows(&rows, p);
+            let got = translate_point(t, p);
+            // The same bits, or both NaN (whose payload and sign nothing reads: every
+            // later step tests NaN with is_nan or lets it through a max).
+            let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+            assert!((0..3).all(|i| same(got[i], want[i])), "t = {t:?}, p = {p:?}: {got:?} vs {want:?}");
+            for w in want {
+                rows_by_kind[if w.is_nan() {
+                    0
+                } else if w == 0.0 {
+                    1
+                } else {
+                    2
+                }] += 1;
+            }
+        }
+        assert!(rows_by_kind.iter().all(|&n| n > 10_000), "{rows_by_kind:?}");
+        assert_eq!(translate_point([-0.0; 3], [-0.0; 3]).map(f64::to_bits), [0.0f64.to_bits(); 3]);
     }
 
     #[test]

@@ -59,6 +59,10 @@ pub struct Key {
     /// The modelview's last row is not (0, 0, 0, 1): w varies from vertex to vertex and
     /// P is divided by it. (With (0, 0, 0, 1), w = 1 exactly and there is nothing to divide.)
     pub projective: bool,
+    /// The modelview is a translation: affine, and its 3x3 part is the identity. P is then
+    /// `p + t`, three additions (the same bits as the compensated rows,
+    /// [`crate::robust::translate_point`]).
+    pub translation: bool,
 }
 
 impl Key {
@@ -102,6 +106,8 @@ impl Key {
             shininess_zero: [scene.material.shininess == 0.0, back.shininess == 0.0],
             scene_color_zero,
             projective: scene.eye_from_object().row(3) != glam::DVec4::W,
+            translation: scene.eye_from_object().row(3) == glam::DVec4::W
+                && glam::DMat3::from_mat4(scene.eye_from_object()) == glam::DMat3::IDENTITY,
         }
     }
 
@@ -148,6 +154,9 @@ pub enum Stage {
     /// `P = M p / w` (compensated, f64) with a projective modelview: the fourth row too,
     /// and the division by w.
     TransformPositionProjective,
+    /// `P = p + t` (f64) with a modelview that is a translation: three additions, the same
+    /// bits as `TransformPosition`'s compensated rows.
+    TranslatePosition,
     /// Which normals are zero (no direction: no diffuse, no specular).
     ZeroNormals,
     /// V per vertex: `normalize(-P)` (local viewer) or the worksheet's `(0, 0, -sign(P.z))`.
@@ -222,7 +231,13 @@ impl Program {
                     NormalMode::Normalize => st.push(Stage::NormalizeNormal),
                 }
                 if key.needs_positions() {
-                    st.push(if key.projective { Stage::TransformPositionProjective } else { Stage::TransformPosition });
+                    st.push(if key.projective {
+                        Stage::TransformPositionProjective
+                    } else if key.translation {
+                        Stage::TranslatePosition
+                    } else {
+                        Stage::TransformPosition
+                    });
                 }
             }
             SourceKind::Eye => {}
@@ -426,6 +441,12 @@ impl Key {
                 },
             ),
             match (has(Stage::TransformPosition), has(Stage::TransformPositionProjective), self.needs_positions()) {
+                _ if has(Stage::TranslatePosition) => e(
+                    EffectKind::Position,
+                    None,
+                    true,
+                    "P = p + t; the modelview is a translation (its 3x3 part is the identity), so the rows' products and the division by w are skipped: three additions",
+                ),
                 (true, _, _) => e(
                     EffectKind::Position,
                     None,

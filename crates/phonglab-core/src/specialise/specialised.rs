@@ -42,7 +42,7 @@ use crate::pow::PowFn;
 use crate::real::Vec3Ops;
 use crate::robust::{
     mul0, normalize3, normalize3_unscaled, transform_affine_rows, transform_point, transform_point_rows,
-    unscaled_is_exact,
+    translate_point, unscaled_is_exact,
 };
 use crate::rules::{SpecularGate, SpecularModel};
 use crate::scene::{Scene, Vertex};
@@ -722,6 +722,14 @@ impl Lighter {
                 let rows = e.eye_from_object.transpose().to_cols_array_2d();
                 for i in 0..n {
                     let [x, y, z] = transform_affine_rows(&rows, [c.px[i], c.py[i], c.pz[i]]);
+                    (c.px[i], c.py[i], c.pz[i]) = (x, y, z);
+                }
+            }
+            Stage::TranslatePosition => {
+                // robust::translate_point: the translation is the matrix's last column.
+                let t = e.eye_from_object.w_axis.truncate().to_array();
+                for i in 0..n {
+                    let [x, y, z] = translate_point(t, [c.px[i], c.py[i], c.pz[i]]);
                     (c.px[i], c.py[i], c.pz[i]) = (x, y, z);
                 }
             }

@@ -157,6 +157,7 @@ fn lighting(
             Stage::TransformNormal
             | Stage::TransformPosition
             | Stage::TransformPositionProjective
+            | Stage::TranslatePosition
             | Stage::RescaleNormal => {}
             Stage::NormalizeNormal | Stage::NormalizeNormalFast => {
                 o.push(format!("N = normalize(N); {}", at(StepKind::Normal, None)));
@@ -368,6 +369,12 @@ fn prologue(scene: &Scene, program: &Program, ex: &Explanation, s: &Syn, uniform
             step_no(ex, StepKind::Position, None)
         ));
         o.push(format!("{} // the modelview is projective: divide by w", s.var("vec3", "P", "Ph.xyz / Ph.w")));
+    } else if program.has(Stage::TranslatePosition) {
+        o.push(format!(
+            "{} // {} (the modelview is a translation: its last column)",
+            s.var("vec3", "P", &format!("{p_in} + {mv}[3].xyz")),
+            step_no(ex, StepKind::Position, None)
+        ));
     } else if program.has(Stage::TransformPosition) || program.has(Stage::ViewVector) {
         o.push(format!(
             "{} // {} (affine modelview: w = 1, no division)",
