@@ -169,10 +169,29 @@ pub fn pow_f32_chunk<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N], n
             }
         }
         None => {
+            // By blocks of 8 (one vector of f64): a block where no x is above 0 is all
+            // +0 for e > 0 (what pow_fix gives for 0, -0 and NaN, which max makes 0), and
+            // skips the logarithm and the exponential. A lit surface's far side (or a
+            // caller that zeroes the lanes whose power nobody reads) has many such blocks.
             let ed = e as f64;
-            for i in 0..n {
-                let xi = x[i].max(0.0);
-                out[i] = pow_fix(xi, e, pow_core(xi as f64, ed) as f32);
+            let one = |xi: f32| {
+                let xi = xi.max(0.0);
+                pow_fix(xi, e, pow_core(xi as f64, ed) as f32)
+            };
+            let mut i = 0;
+            while i + 8 <= n {
+                let (xs, os) = (&x[i..i + 8], &mut out[i..i + 8]);
+                if e > 0.0 && xs.iter().fold(true, |none, &v| none & !(v > 0.0)) {
+                    os.fill(0.0);
+                } else {
+                    for (o, &v) in os.iter_mut().zip(xs) {
+                        *o = one(v);
+                    }
+                }
+                i += 8;
+            }
+            for k in i..n {
+                out[k] = one(x[k]);
             }
         }
     }
@@ -253,6 +272,12 @@ mod tests {
                 4 => f32::INFINITY,
                 5 => 1.0,
                 6 => 1e-30,
+                // Blocks of 8 with nothing above 0 (the skipped ones), one with a single
+                // positive lane last, and one of NaN and -0.
+                16..24 => -(next() as f32),
+                24..31 => -1.0,
+                31 => 0.25,
+                32..40 => [f32::NAN, -0.0][i % 2],
                 _ => (next() * 1.2) as f32,
             };
         }

@@ -923,14 +923,46 @@ impl Lighter {
                 }
             }
             Stage::Power(_, side) => {
+                // Raised where `Sum` reads the power (its specular is allowed there); the
+                // other lanes are raised as 0, which lets the exact power skip every block of
+                // 8 of them (exact_pow::pow_f32_chunk). `Sum` gives them f_i p = 0 whatever
+                // p is.
                 let shin = e.sides[side].shininess;
-                let [p0, p1] = &mut c.p;
-                let p = if side == 0 { p0 } else { p1 };
-                power_loop(e.options.pow, &c.cos[side], p, n, shin);
+                let mut allowed = [false; CHUNK];
+                self.specular_lanes(c, side, &mut allowed);
+                let mut x = [0.0f32; CHUNK];
+                for i in 0..n {
+                    x[i] = if allowed[i] { c.cos[side][i] } else { 0.0 };
+                }
+                power_loop(e.options.pow, &x, &mut c.p[side], n, shin);
             }
             Stage::Sum(li, side) => self.sum(c, &e.lights[li], side),
             // Added as the colours are written (`write`, `write_sum`).
             Stage::SceneColor => {}
+        }
+    }
+
+    /// Where the current light's specular is allowed on `side` (the `allowed` of
+    /// `terms::shared_factors`): the light reaches the surface (L defined, normal not zero),
+    /// H or R is defined, and the rule set's gate is open (`terms::specular_allowed`). Read
+    /// by `Power` (which raises only these lanes) and `Sum`. One loop per gate (the gate is
+    /// the scene's), `&` rather than `&&`, so each vectorises.
+    #[inline(always)]
+    fn specular_lanes(&self, c: &Chunk, side: usize, allowed: &mut [bool; CHUNK]) {
+        let n = c.lanes();
+        let (ndl, cos) = (&c.ndl[side], &c.cos[side]);
+        let (l_ok, zero, h_ok) = (&c.l_ok, &c.zero, &c.h_ok);
+        macro_rules! where_gate {
+            ($g:expr) => {
+                for i in 0..n {
+                    allowed[i] = l_ok[i] & !zero[i] & h_ok[i] & terms::specular_allowed($g, ndl[i], cos[i]);
+                }
+            };
+        }
+        match self.engine.rules.specular_gate() {
+            SpecularGate::LitSide => where_gate!(SpecularGate::LitSide),
+            SpecularGate::PositiveCosine => where_gate!(SpecularGate::PositiveCosine),
+            SpecularGate::None => where_gate!(SpecularGate::None),
         }
     }
 
@@ -942,31 +974,23 @@ impl Lighter {
         let e = &self.engine;
         let n = c.lanes();
         let [amb, dif, spe] = pl.products[side].map(|v| v.to_array());
-        let gate = e.rules.specular_gate();
         let separate = e.separate_specular;
         let specular_on = self.key.lights.get(pl.index).is_some_and(|l| l.specular);
-        let (ndl, cos, scale) = (&c.ndl[side][..n], &c.cos[side][..n], &c.scale[..n]);
-        let (l_ok, zero, h_ok) = (&c.l_ok[..n], &c.zero[..n], &c.h_ok[..n]);
+        let (ndl, scale) = (&c.ndl[side][..n], &c.scale[..n]);
+        let (l_ok, zero) = (&c.l_ok[..n], &c.zero[..n]);
         // Shininess 0 (no `Power` stage): max(cos, 0)^0 = 1.
         let p = if self.key.shininess_zero[side] { &ONES[..n] } else { &c.p[side][..n] };
+        let mut allowed = [false; CHUNK];
+        if specular_on {
+            self.specular_lanes(c, side, &mut allowed);
+        }
         // The factors every channel shares (terms::shared_factors), once per vertex. `&`,
-        // not `&&`: no short circuit, and one loop per gate (the gate is the scene's), so
-        // the loops vectorise (every operand is defined).
+        // not `&&`: no short circuit, so the loop vectorises (every operand is defined).
         let mut dn = [0.0f32; CHUNK];
         let mut fp = [0.0f32; CHUNK];
-        macro_rules! factors_where {
-            ($g:expr) => {
-                for i in 0..n {
-                    let lit = l_ok[i] & !zero[i];
-                    let allowed = specular_on & lit & h_ok[i] & terms::specular_allowed($g, ndl[i], cos[i]);
-                    (dn[i], fp[i]) = terms::shared_factors(ndl[i], lit, allowed, p[i]);
-                }
-            };
-        }
-        match gate {
-            SpecularGate::LitSide => factors_where!(SpecularGate::LitSide),
-            SpecularGate::PositiveCosine => factors_where!(SpecularGate::PositiveCosine),
-            SpecularGate::None => factors_where!(SpecularGate::None),
+        for i in 0..n {
+            let lit = l_ok[i] & !zero[i];
+            (dn[i], fp[i]) = terms::shared_factors(ndl[i], lit, allowed[i], p[i]);
         }
         let (dn, fp) = (&dn[..n], &fp[..n]);
         let (pri, sec) = c.acc[2 * side..2 * side + 2].split_at_mut(1);
