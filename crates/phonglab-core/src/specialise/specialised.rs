@@ -293,6 +293,9 @@ struct Chunk {
     hy: [f32; CHUNK],
     hz: [f32; CHUNK],
     h_ok: [bool; CHUNK],
+    /// Per side: where the current light's specular is allowed, as its `Power` stage found
+    /// it (read by its `Sum`).
+    allowed: [[bool; CHUNK]; 2],
     /// The normals negated (the back side's), by component.
     neg: [[f32; CHUNK]; 3],
     /// Per side: n . L, the specular cosine, the power.
@@ -354,6 +357,7 @@ impl Chunk {
             hy: [0.0; CHUNK],
             hz: [0.0; CHUNK],
             h_ok: [false; CHUNK],
+            allowed: [[false; CHUNK]; 2],
             neg: [[0.0; CHUNK]; 3],
             ndl: [[0.0; CHUNK]; 2],
             cos: [[0.0; CHUNK]; 2],
@@ -927,6 +931,7 @@ impl Lighter {
                 // other lanes are raised as 0, which lets the exact power skip every block of
                 // 8 of them (exact_pow::pow_f32_chunk). `Sum` gives them f_i p = 0 whatever
                 // p is.
+                // The lanes are kept for `Sum` (`Chunk::allowed`).
                 let shin = e.sides[side].shininess;
                 let mut allowed = [false; CHUNK];
                 self.specular_lanes(c, side, &mut allowed);
@@ -935,6 +940,7 @@ impl Lighter {
                     x[i] = if allowed[i] { c.cos[side][i] } else { 0.0 };
                 }
                 power_loop(e.options.pow, &x, &mut c.p[side], n, shin);
+                c.allowed[side] = allowed;
             }
             Stage::Sum(li, side) => self.sum(c, &e.lights[li], side),
             // Added as the colours are written (`write`, `write_sum`).
@@ -980,10 +986,17 @@ impl Lighter {
         let (l_ok, zero) = (&c.l_ok[..n], &c.zero[..n]);
         // Shininess 0 (no `Power` stage): max(cos, 0)^0 = 1.
         let p = if self.key.shininess_zero[side] { &ONES[..n] } else { &c.p[side][..n] };
-        let mut allowed = [false; CHUNK];
-        if specular_on {
-            self.specular_lanes(c, side, &mut allowed);
-        }
+        // Where the specular is allowed: as `Power` found it for this light and side (it
+        // ran just before, unless the shininess is 0), or found here.
+        let mut own = [false; CHUNK];
+        let allowed = if specular_on && !self.key.shininess_zero[side] {
+            &c.allowed[side]
+        } else {
+            if specular_on {
+                self.specular_lanes(c, side, &mut own);
+            }
+            &own
+        };
         // The factors every channel shares (terms::shared_factors), once per vertex. `&`,
         // not `&&`: no short circuit, so the loop vectorises (every operand is defined).
         let mut dn = [0.0f32; CHUNK];
