@@ -197,6 +197,66 @@ pub fn pow_f32_chunk<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N], n
     }
 }
 
+/// [`pow_f32_chunk`] over a whole chunk of 128 for a fractional exponent `e > 0`, with the
+/// lanes that need a power packed together first: where `x <= 0` (or NaN) the result is
+/// +0 without any work, and the logarithm and exponential run only over the others, 8 at a
+/// time. Bit for bit [`pow_f32_chunk`]'s results (the same operations on the same values).
+/// With AVX-512 (`vcompressps` / `vexpandps`); elsewhere it is [`pow_f32_chunk`], whose
+/// blocks of 8 with nothing above 0 are skipped. Scene (a)'s lit half of a sphere needs
+/// about 40 % of the lanes, scattered (a fifth of its blocks of 8 have none).
+#[inline(always)]
+pub fn pow_f32_chunk_packed(x: &[f32; 128], e: f32, out: &mut [f32; 128]) {
+    #[cfg(target_arch = "x86_64")]
+    if e > 0.0 && whole_exponent(e).is_none() && crate::specialised::has_avx512() {
+        // SAFETY: the processor has AVX-512F/DQ/VL, AVX2 and FMA (checked just above).
+        unsafe { pow_packed_avx512(x, e, out) };
+        return;
+    }
+    pow_f32_chunk(x, e, out, 128);
+}
+
+/// [`pow_f32_chunk_packed`]'s AVX-512 way, for a fractional `e > 0`.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+fn pow_packed_avx512(x: &[f32; 128], e: f32, out: &mut [f32; 128]) {
+    use std::arch::x86_64::*;
+    // The lanes with x > 0, packed (16 spare lanes: each block of 16 is stored whole).
+    let mut packed = [0.0f32; 128 + 16];
+    let mut masks = [0u16; 8];
+    let mut m = 0;
+    for (b, mask) in masks.iter_mut().enumerate() {
+        // SAFETY: 16 lanes from 16 b < 128 are inside `x`; `m <= 16 b`, so 16 lanes from
+        // m are inside `packed`.
+        unsafe {
+            let v = _mm512_loadu_ps(x.as_ptr().add(16 * b));
+            let k = _mm512_cmp_ps_mask::<_CMP_GT_OQ>(v, _mm512_setzero_ps());
+            _mm512_storeu_ps(packed.as_mut_ptr().add(m), _mm512_maskz_compress_ps(k, v));
+            *mask = k;
+            m += k.count_ones() as usize;
+        }
+    }
+    // Their powers, a block of 8 at a time (the last block's spare lanes hold zeros or
+    // earlier values: computed and never read).
+    let ed = e as f64;
+    let mut powers = [0.0f32; 128 + 16];
+    for (pb, xb) in powers.chunks_exact_mut(8).zip(packed.chunks_exact(8)).take(m.div_ceil(8)) {
+        for (o, &v) in pb.iter_mut().zip(xb) {
+            let xi = v.max(0.0);
+            *o = pow_fix(xi, e, pow_core(xi as f64, ed) as f32);
+        }
+    }
+    // Back to their lanes; +0 in the others.
+    let mut at = 0;
+    for (b, &k) in masks.iter().enumerate() {
+        // SAFETY: as above, `at <= 16 b`; 16 lanes to 16 b < 128 are inside `out`.
+        unsafe {
+            let r = _mm512_loadu_ps(powers.as_ptr().add(at));
+            _mm512_storeu_ps(out.as_mut_ptr().add(16 * b), _mm512_maskz_expand_ps(k, r));
+        }
+        at += k.count_ones() as usize;
+    }
+}
+
 /// The general case of [`pow_f32`], in f64: `2^(e log2 x)`.
 #[inline(always)]
 fn pow_core(xd: f64, ed: f64) -> f64 {
@@ -257,6 +317,33 @@ mod tests {
         assert_eq!(pow_f32(1e10, 8.0), f32::INFINITY, "overflows f32 as it should");
         assert!(pow_f32(-0.5, 2.0).is_nan(), "a negative base stays NaN, as for any exponent");
         assert!(pow_f32(f32::NAN, 8.0).is_nan());
+    }
+
+    #[test]
+    fn the_packed_power_is_the_chunk_power_bit_for_bit() {
+        // Densities from none to all of the lanes above 0, with -0, NaN, +inf and tiny
+        // values among them. (On a processor without AVX-512 both are the same loop.)
+        let mut next = uniform(0x1357_9bdf_2468_ace0);
+        for density in [0.0, 0.05, 0.4, 0.5, 0.9, 1.0] {
+            for round in 0..20 {
+                let mut x = [0.0f32; 128];
+                for (i, v) in x.iter_mut().enumerate() {
+                    let r = next();
+                    *v = if r < density { (next() * 1.2) as f32 } else { -(next() as f32) };
+                    if round == 0 {
+                        *v = [*v, -0.0, f32::NAN, f32::INFINITY, 1e-30, 1.0][i % 6];
+                    }
+                }
+                for e in [25.6, 0.5, 3.3e-3, 127.5, 8.0, 0.0] {
+                    let (mut packed, mut plain) = ([7.0f32; 128], [7.0f32; 128]);
+                    pow_f32_chunk_packed(&x, e, &mut packed);
+                    pow_f32_chunk(&x, e, &mut plain, 128);
+                    for i in 0..128 {
+                        assert_eq!(packed[i].to_bits(), plain[i].to_bits(), "x = {}, e = {e}", x[i]);
+                    }
+                }
+            }
+        }
     }
 
     #[test]

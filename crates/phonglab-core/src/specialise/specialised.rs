@@ -1110,7 +1110,7 @@ fn negated<'a>(
 fn power_loop(which: PowFn, x: &[f32; CHUNK], p: &mut [f32; CHUNK], n: usize, e: f32) {
     let n = n.min(CHUNK);
     match which {
-        PowFn::Exact => crate::exact_pow::pow_f32_chunk(x, e, p, n),
+        PowFn::Exact => crate::exact_pow::pow_f32_chunk_packed(x, e, p),
         PowFn::Llvmpipe => {
             for i in 0..n {
                 p[i] = PowFn::Llvmpipe.pow(x[i].max(0.0), e);
