@@ -181,7 +181,7 @@ pub fn pow_f32_chunk<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N], n
             let mut i = 0;
             while i + 8 <= n {
                 let (xs, os) = (&x[i..i + 8], &mut out[i..i + 8]);
-                if e > 0.0 && xs.iter().fold(true, |none, &v| none & !(v > 0.0)) {
+                if e > 0.0 && !xs.iter().fold(false, |any, &v| any | (v > 0.0)) {
                     os.fill(0.0);
                 } else {
                     for (o, &v) in os.iter_mut().zip(xs) {

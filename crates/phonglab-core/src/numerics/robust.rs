@@ -336,7 +336,7 @@ mod tests {
         // shortcut must take care: exact cancellation to 0 (and -0 + -0), zeros of both
         // signs, infinities, NaN, and sums that overflow.
         let mut next = xorshift(0x7a45_1a7e_0000_0001u64);
-        let mut value = |r: u64| -> f64 {
+        let value = |r: u64| -> f64 {
             let m = 1.0 + (r >> 12) as f64 / (1u64 << 52) as f64;
             let sign = if r.is_multiple_of(2) { 1.0 } else { -1.0 };
             match r % 23 {
