@@ -927,11 +927,11 @@ impl Lighter {
                 }
             }
             Stage::Power(_, side) => {
-                // Raised where `Sum` reads the power (its specular is allowed there); the
-                // other lanes are raised as 0, which lets the exact power skip every block of
-                // 8 of them (exact_pow::pow_f32_chunk). `Sum` gives them f_i p = 0 whatever
-                // p is.
-                // The lanes are kept for `Sum` (`Chunk::allowed`).
+                // Raised where `Sum` reads the power (its specular is allowed there; the
+                // lanes are kept for it in `Chunk::allowed`); the other lanes are raised as 0,
+                // which the exact power does not compute at all (pow_f32_chunk_packed packs
+                // the others together; without AVX-512 it skips blocks of 8 zeros). `Sum`
+                // gives them f_i p = 0 whatever p is.
                 let shin = e.sides[side].shininess;
                 let mut allowed = [false; CHUNK];
                 self.specular_lanes(c, side, &mut allowed);
