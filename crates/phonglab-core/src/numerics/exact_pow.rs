@@ -173,11 +173,6 @@ pub fn pow_f32_chunk<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N], n
             // +0 for e > 0 (what pow_fix gives for 0, -0 and NaN, which max makes 0), and
             // skips the logarithm and the exponential. A lit surface's far side (or a
             // caller that zeroes the lanes whose power nobody reads) has many such blocks.
-            let ed = e as f64;
-            let one = |xi: f32| {
-                let xi = xi.max(0.0);
-                pow_fix(xi, e, pow_core(xi as f64, ed) as f32)
-            };
             let mut i = 0;
             while i + 8 <= n {
                 let (xs, os) = (&x[i..i + 8], &mut out[i..i + 8]);
@@ -185,13 +180,13 @@ pub fn pow_f32_chunk<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N], n
                     os.fill(0.0);
                 } else {
                     for (o, &v) in os.iter_mut().zip(xs) {
-                        *o = one(v);
+                        *o = pow_fractional(v, e);
                     }
                 }
                 i += 8;
             }
             for k in i..n {
-                out[k] = one(x[k]);
+                out[k] = pow_fractional(x[k], e);
             }
         }
     }
@@ -237,12 +232,10 @@ fn pow_packed_avx512(x: &[f32; 128], e: f32, out: &mut [f32; 128]) {
     }
     // Their powers, a block of 8 at a time (the last block's spare lanes hold zeros or
     // earlier values: computed and never read).
-    let ed = e as f64;
     let mut powers = [0.0f32; 128 + 16];
     for (pb, xb) in powers.chunks_exact_mut(8).zip(packed.chunks_exact(8)).take(m.div_ceil(8)) {
         for (o, &v) in pb.iter_mut().zip(xb) {
-            let xi = v.max(0.0);
-            *o = pow_fix(xi, e, pow_core(xi as f64, ed) as f32);
+            *o = pow_fractional(v, e);
         }
     }
     // Back to their lanes; +0 in the others.
@@ -255,6 +248,14 @@ fn pow_packed_avx512(x: &[f32; 128], e: f32, out: &mut [f32; 128]) {
         }
         at += k.count_ones() as usize;
     }
+}
+
+/// One lane of the array powers for an exponent that is not whole:
+/// `pow_f32(max(x, 0), e)` by [`pow_core`] (what [`pow_f32_body`] does for such `e`).
+#[inline(always)]
+fn pow_fractional(x: f32, e: f32) -> f32 {
+    let x = x.max(0.0);
+    pow_fix(x, e, pow_core(x as f64, e as f64) as f32)
 }
 
 /// The general case of [`pow_f32`], in f64: `2^(e log2 x)`.

@@ -72,7 +72,8 @@ impl Key {
         let spec_nonzero = |l: &crate::Light| {
             [&scene.material, back].iter().any(|m| (0..3).any(|i| m.specular[i] * l.specular[i] != 0.0))
         };
-        let nm = NormalMatrix::for_rules(&scene.eye_from_object(), scene.rules);
+        let eye_from_object = scene.eye_from_object();
+        let nm = NormalMatrix::for_rules(&eye_from_object, scene.rules);
         let rules = scene.rules;
         let scene_color_zero = [&scene.material, back].iter().all(|m| {
             let e = if rules.emission() { m.emission.truncate() } else { glam::DVec3::ZERO };
@@ -105,10 +106,17 @@ impl Key {
             pow: options.pow,
             shininess_zero: [scene.material.shininess == 0.0, back.shininess == 0.0],
             scene_color_zero,
-            projective: scene.eye_from_object().row(3) != glam::DVec4::W,
-            translation: scene.eye_from_object().row(3) == glam::DVec4::W
-                && glam::DMat3::from_mat4(scene.eye_from_object()) == glam::DMat3::IDENTITY,
+            projective: eye_from_object.row(3) != glam::DVec4::W,
+            translation: eye_from_object.row(3) == glam::DVec4::W
+                && glam::DMat3::from_mat4(eye_from_object) == glam::DMat3::IDENTITY,
         }
+    }
+
+    /// Does light `i` raise a power on `side` (`Stage::Power(i, side)`): it has a specular
+    /// term there and the side's shininess is not 0? The program compiles the stage exactly
+    /// then, and `Sum` relies on it having run.
+    pub fn has_power(&self, i: usize, side: usize) -> bool {
+        self.lights.get(i).is_some_and(|l| l.specular) && !self.shininess_zero[side]
     }
 
     /// Does light `i` need a per-vertex H (Blinn-Phong) or R (Phong)?
@@ -278,9 +286,9 @@ impl Program {
                 st.push(Stage::DiffuseCosine(i, side));
                 if l.specular {
                     st.push(Stage::SpecularCosine(i, side));
-                    if !key.shininess_zero[side] {
-                        st.push(Stage::Power(i, side));
-                    }
+                }
+                if key.has_power(i, side) {
+                    st.push(Stage::Power(i, side));
                 }
                 st.push(Stage::Sum(i, side));
             }

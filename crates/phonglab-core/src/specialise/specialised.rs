@@ -989,7 +989,7 @@ impl Lighter {
         // Where the specular is allowed: as `Power` found it for this light and side (it
         // ran just before, unless the shininess is 0), or found here.
         let mut own = [false; CHUNK];
-        let allowed = if specular_on && !self.key.shininess_zero[side] {
+        let allowed = if self.key.has_power(pl.index, side) {
             &c.allowed[side]
         } else {
             if specular_on {
