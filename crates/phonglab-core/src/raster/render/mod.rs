@@ -232,8 +232,17 @@ fn draw_and_shade(
                     raster::Band { y_start: y_start as i32, width, depth, raster: &mut *raster },
                 );
                 let drawn = std::time::Instant::now();
-                let shaded =
-                    resolve::resolve_band(job, setup, lighter, prepared, &shared, px, raster, y_start, width, frags);
+                let input = resolve::BandInput {
+                    job,
+                    setup,
+                    lighter,
+                    p: prepared,
+                    shared: &shared,
+                    raster,
+                    y0: y_start,
+                    width,
+                };
+                let shaded = resolve::resolve_band(&input, px, frags);
                 if let Some(kept) = kept {
                     kept.copy_from_slice(raster);
                 }
@@ -347,10 +356,17 @@ mod tests {
                     let mut px = vec![[0u8; 4]; rows.len()];
                     let raster = &image.raster[rows.clone()];
                     let y0 = b * raster::BAND;
-                    let (setup, px) = (&r.setup, &mut px);
-                    let shade = resolve::resolve_band_copy;
-                    let Some(s) = shade(copy, &job, setup, lighter, &prepared, &shared, px, raster, y0, w, frags)
-                    else {
+                    let input = resolve::BandInput {
+                        job: &job,
+                        setup: &r.setup,
+                        lighter,
+                        p: &prepared,
+                        shared: &shared,
+                        raster,
+                        y0,
+                        width: w,
+                    };
+                    let Some(s) = resolve::resolve_band_copy(copy, &input, &mut px, frags) else {
                         continue;
                     };
                     assert_eq!(px.as_flattened(), want, "{copy:?}, {shading:?}, band {b}");

@@ -420,27 +420,36 @@ fn blend_n<const N: usize>(wt: &Weights, a: &[[f32; N]; 3]) -> [[f32; LANES]; N]
     out
 }
 
-/// Shades one band: `px` its pixels, `raster` its visibility buffer, `y0` the image row of
-/// its first row, `width` the image's width. Returns the pixels covered and the lighting
+/// What shading one band reads: the frame's job, triangles (`setup`), lighting plan and
+/// prepared attributes, and the band's own visibility buffer `raster`, whose first row is
+/// row `y0` of an image `width` pixels wide.
+#[derive(Clone, Copy)]
+pub struct BandInput<'a> {
+    /// The frame's job.
+    pub job: &'a Job<'a>,
+    /// The frame's rasterised triangles.
+    pub setup: &'a Setup,
+    /// The specialised lighting, for per-pixel shading.
+    pub lighter: &'a Lighter,
+    /// What [`prepare`] set up for the frame.
+    pub p: &'a Prepared,
+    /// The per-triangle attributes ([`split`]).
+    pub shared: &'a Shared<'a>,
+    /// The band's visibility buffer: the rasterised triangle at each pixel.
+    pub raster: &'a [u32],
+    /// The image row of the band's first row.
+    pub y0: usize,
+    /// The image's width.
+    pub width: usize,
+}
+
+/// Shades one band (`band`) into `px`, its pixels. Returns the pixels covered and the lighting
 /// evaluations made (fragments lit). Runs the fastest copy the processor has
 /// ([`Compiled::best`]): the copies do the same operations, so they give the same bits
 /// (Rust never fuses a multiply and an add by itself).
-#[allow(clippy::too_many_arguments)]
-pub fn resolve_band(
-    job: &Job<'_>,
-    setup: &Setup,
-    lighter: &Lighter,
-    p: &Prepared,
-    shared: &Shared<'_>,
-    px: &mut [[u8; 4]],
-    raster: &[u32],
-    y0: usize,
-    width: usize,
-    frags: &mut Fragments,
-) -> Shaded {
+pub fn resolve_band(band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragments) -> Shaded {
     let copy = Compiled::best();
-    resolve_band_copy(copy, job, setup, lighter, p, shared, px, raster, y0, width, frags)
-        .unwrap_or_else(|| resolve_band_any::<false>(job, setup, lighter, p, shared, px, raster, y0, width, frags))
+    resolve_band_copy(copy, band, px, frags).unwrap_or_else(|| resolve_band_any::<false>(band, px, frags))
 }
 
 /// The compiled copies of the resolve.
@@ -470,33 +479,19 @@ impl Compiled {
 }
 
 /// [`resolve_band`] through one given copy; `None` if this processor cannot run it.
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn resolve_band_copy(
     copy: Compiled,
-    job: &Job<'_>,
-    setup: &Setup,
-    lighter: &Lighter,
-    p: &Prepared,
-    shared: &Shared<'_>,
+    band: &BandInput<'_>,
     px: &mut [[u8; 4]],
-    raster: &[u32],
-    y0: usize,
-    width: usize,
     frags: &mut Fragments,
 ) -> Option<Shaded> {
     match copy {
-        Compiled::Portable => {
-            Some(resolve_band_any::<false>(job, setup, lighter, p, shared, px, raster, y0, width, frags))
-        }
+        Compiled::Portable => Some(resolve_band_any::<false>(band, px, frags)),
         #[cfg(target_arch = "x86_64")]
         // SAFETY: each copy runs only where the processor has its features.
-        Compiled::Avx2 if crate::specialised::has_avx2_fma() => {
-            Some(unsafe { resolve_band_avx2(job, setup, lighter, p, shared, px, raster, y0, width, frags) })
-        }
+        Compiled::Avx2 if crate::specialised::has_avx2_fma() => Some(unsafe { resolve_band_avx2(band, px, frags) }),
         #[cfg(target_arch = "x86_64")]
-        Compiled::Avx512 if crate::specialised::has_avx512() => {
-            Some(unsafe { resolve_band_avx512(job, setup, lighter, p, shared, px, raster, y0, width, frags) })
-        }
+        Compiled::Avx512 if crate::specialised::has_avx512() => Some(unsafe { resolve_band_avx512(band, px, frags) }),
         _ => None,
     }
 }
@@ -505,54 +500,20 @@ pub(crate) fn resolve_band_copy(
 /// lanes, fits one register instead of two.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-#[allow(clippy::too_many_arguments)]
-fn resolve_band_avx512(
-    job: &Job<'_>,
-    setup: &Setup,
-    lighter: &Lighter,
-    p: &Prepared,
-    shared: &Shared<'_>,
-    px: &mut [[u8; 4]],
-    raster: &[u32],
-    y0: usize,
-    width: usize,
-    frags: &mut Fragments,
-) -> Shaded {
-    resolve_band_any::<true>(job, setup, lighter, p, shared, px, raster, y0, width, frags)
+fn resolve_band_avx512(band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragments) -> Shaded {
+    resolve_band_any::<true>(band, px, frags)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-#[allow(clippy::too_many_arguments)]
-fn resolve_band_avx2(
-    job: &Job<'_>,
-    setup: &Setup,
-    lighter: &Lighter,
-    p: &Prepared,
-    shared: &Shared<'_>,
-    px: &mut [[u8; 4]],
-    raster: &[u32],
-    y0: usize,
-    width: usize,
-    frags: &mut Fragments,
-) -> Shaded {
-    resolve_band_any::<true>(job, setup, lighter, p, shared, px, raster, y0, width, frags)
+fn resolve_band_avx2(band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragments) -> Shaded {
+    resolve_band_any::<true>(band, px, frags)
 }
 
 #[inline(always)]
-#[allow(clippy::too_many_arguments, clippy::needless_range_loop)] // lane loops: see `blend`
-fn resolve_band_any<const AVX2: bool>(
-    job: &Job<'_>,
-    setup: &Setup,
-    lighter: &Lighter,
-    p: &Prepared,
-    shared: &Shared<'_>,
-    px: &mut [[u8; 4]],
-    raster: &[u32],
-    y0: usize,
-    width: usize,
-    frags: &mut Fragments,
-) -> Shaded {
+#[allow(clippy::needless_range_loop)] // lane loops: see `blend`
+fn resolve_band_any<const AVX2: bool>(band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragments) -> Shaded {
+    let BandInput { job, setup, lighter, p, shared, raster, y0, width } = *band;
     let (two, per_pixel, bg) = (p.two, p.per_pixel, p.bg);
     let (tri_color, tri_pos, tri_nrm) = (shared.tri_color, shared.tri_pos, shared.tri_nrm);
     if per_pixel {
