@@ -192,7 +192,8 @@ pub fn pow_f32_chunk<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N], n
     }
 }
 
-/// [`pow_f32_chunk`] over a whole chunk of 128 for a fractional exponent `e > 0`, with the
+/// [`pow_f32_chunk`] over a whole chunk of `N` (a multiple of 16, at most 128) for a
+/// fractional exponent `e > 0`, with the
 /// lanes that need a power packed together first: where `x <= 0` (or NaN) the result is
 /// +0 without any work, and the logarithm and exponential run only over the others, 8 at a
 /// time. Bit for bit [`pow_f32_chunk`]'s results (the same operations on the same values).
@@ -200,27 +201,28 @@ pub fn pow_f32_chunk<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N], n
 /// blocks of 8 with nothing above 0 are skipped. Scene (a)'s lit half of a sphere needs
 /// about 40 % of the lanes, scattered (a fifth of its blocks of 8 have none).
 #[inline(always)]
-pub fn pow_f32_chunk_packed(x: &[f32; 128], e: f32, out: &mut [f32; 128]) {
+pub fn pow_f32_chunk_packed<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N]) {
     #[cfg(target_arch = "x86_64")]
     if e > 0.0 && whole_exponent(e).is_none() && crate::specialised::has_avx512() {
         // SAFETY: the processor has AVX-512F/DQ/VL, AVX2 and FMA (checked just above).
         unsafe { pow_packed_avx512(x, e, out) };
         return;
     }
-    pow_f32_chunk(x, e, out, 128);
+    pow_f32_chunk(x, e, out, N);
 }
 
 /// [`pow_f32_chunk_packed`]'s AVX-512 way, for a fractional `e > 0`.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-fn pow_packed_avx512(x: &[f32; 128], e: f32, out: &mut [f32; 128]) {
+fn pow_packed_avx512<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N]) {
     use std::arch::x86_64::*;
+    const { assert!(N.is_multiple_of(16) && N <= 128, "whole blocks of 16, at most 8 of them") };
     // The lanes with x > 0, packed (16 spare lanes: each block of 16 is stored whole).
     let mut packed = [0.0f32; 128 + 16];
     let mut masks = [0u16; 8];
     let mut m = 0;
-    for (b, mask) in masks.iter_mut().enumerate() {
-        // SAFETY: 16 lanes from 16 b < 128 are inside `x`; `m <= 16 b`, so 16 lanes from
+    for (b, mask) in masks.iter_mut().enumerate().take(N / 16) {
+        // SAFETY: 16 lanes from 16 b < N are inside `x`; `m <= 16 b < 128`, so 16 lanes from
         // m are inside `packed`.
         unsafe {
             let v = _mm512_loadu_ps(x.as_ptr().add(16 * b));
@@ -240,8 +242,8 @@ fn pow_packed_avx512(x: &[f32; 128], e: f32, out: &mut [f32; 128]) {
     }
     // Back to their lanes; +0 in the others.
     let mut at = 0;
-    for (b, &k) in masks.iter().enumerate() {
-        // SAFETY: as above, `at <= 16 b`; 16 lanes to 16 b < 128 are inside `out`.
+    for (b, &k) in masks.iter().enumerate().take(N / 16) {
+        // SAFETY: as above, `at <= 16 b`; 16 lanes from 16 b < N are inside `out`.
         unsafe {
             let r = _mm512_loadu_ps(powers.as_ptr().add(at));
             _mm512_storeu_ps(out.as_mut_ptr().add(16 * b), _mm512_maskz_expand_ps(k, r));
@@ -322,29 +324,36 @@ mod tests {
 
     #[test]
     fn the_packed_power_is_the_chunk_power_bit_for_bit() {
-        // Densities from none to all of the lanes above 0, with -0, NaN, +inf and tiny
-        // values among them. (On a processor without AVX-512 both are the same loop.)
-        let mut next = uniform(0x1357_9bdf_2468_ace0);
-        for density in [0.0, 0.05, 0.4, 0.5, 0.9, 1.0] {
-            for round in 0..20 {
-                let mut x = [0.0f32; 128];
-                for (i, v) in x.iter_mut().enumerate() {
-                    let r = next();
-                    *v = if r < density { (next() * 1.2) as f32 } else { -(next() as f32) };
-                    if round == 0 {
-                        *v = [*v, -0.0, f32::NAN, f32::INFINITY, 1e-30, 1.0][i % 6];
+        // Chunks of 16 to 128 (the evaluator's is specialised::CHUNK); densities from none
+        // to all of the lanes above 0, with -0, NaN, +inf and tiny values among them. (On a
+        // processor without AVX-512 both are the same loop.)
+        fn check<const N: usize>(seed: u64) {
+            let mut next = uniform(seed);
+            for density in [0.0, 0.05, 0.4, 0.5, 0.9, 1.0] {
+                for round in 0..20 {
+                    let mut x = [0.0f32; N];
+                    for (i, v) in x.iter_mut().enumerate() {
+                        let r = next();
+                        *v = if r < density { (next() * 1.2) as f32 } else { -(next() as f32) };
+                        if round == 0 {
+                            *v = [*v, -0.0, f32::NAN, f32::INFINITY, 1e-30, 1.0][i % 6];
+                        }
                     }
-                }
-                for e in [25.6, 0.5, 3.3e-3, 127.5, 8.0, 0.0] {
-                    let (mut packed, mut plain) = ([7.0f32; 128], [7.0f32; 128]);
-                    pow_f32_chunk_packed(&x, e, &mut packed);
-                    pow_f32_chunk(&x, e, &mut plain, 128);
-                    for i in 0..128 {
-                        assert_eq!(packed[i].to_bits(), plain[i].to_bits(), "x = {}, e = {e}", x[i]);
+                    for e in [25.6, 0.5, 3.3e-3, 127.5, 8.0, 0.0] {
+                        let (mut packed, mut plain) = ([7.0f32; N], [7.0f32; N]);
+                        pow_f32_chunk_packed(&x, e, &mut packed);
+                        pow_f32_chunk(&x, e, &mut plain, N);
+                        for i in 0..N {
+                            assert_eq!(packed[i].to_bits(), plain[i].to_bits(), "N = {N}, x = {}, e = {e}", x[i]);
+                        }
                     }
                 }
             }
         }
+        check::<16>(0x1357_9bdf_2468_ace0);
+        check::<64>(0x2468_ace0_1357_9bdf);
+        check::<128>(0x9bdf_1357_ace0_2468);
+        check::<{ crate::specialised::CHUNK }>(0x0f1e_2d3c_4b5a_6978);
     }
 
     #[test]

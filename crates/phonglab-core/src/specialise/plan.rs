@@ -480,7 +480,7 @@ impl Key {
                     None,
                     true,
                     if self.local_viewer {
-                        "local viewer: V = normalize(-P) per vertex, in f64; a chunk of 128 vertices whose coordinates all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)"
+                        "local viewer: V = normalize(-P) per vertex, in f64; a chunk of 64 vertices whose coordinates all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)"
                     } else {
                         "the worksheet's V = normalize(obs - P), obs = P (1, 1, 0, 1): (0, 0, -sign(P.z)) per vertex"
                     },
@@ -511,7 +511,7 @@ impl Key {
                     EffectKind::LightVector,
                     li,
                     true,
-                    "positional light: per vertex, in f64; a chunk of 128 vertices whose VP components all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)",
+                    "positional light: per vertex, in f64; a chunk of 64 vertices whose VP components all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)",
                 )
             } else {
                 e(EffectKind::LightVector, li, false, "the light is directional: L is one constant, there is no d")

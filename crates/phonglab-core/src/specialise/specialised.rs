@@ -72,7 +72,7 @@ pub(crate) fn has_avx2_fma() -> bool {
 }
 
 /// Vertices per chunk: the arrays of a chunk stay in L1 cache.
-pub const CHUNK: usize = 128;
+pub const CHUNK: usize = 64;
 
 /// One vertex's lit colours on one side.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -527,7 +527,7 @@ impl Lighter {
     /// [`Lighter::light_batch_sum`] that also measures the time each step took over all the
     /// chunks: loading, each stage of the program, writing the sums. For
     /// `phonglab bench lighting --stages` (reading the clock costs some 20 ns a step per
-    /// chunk of 128 vertices, so the figures are a little high).
+    /// chunk of [`CHUNK`] vertices, so the figures are a little high).
     pub fn light_batch_timed(&self, positions: &[Vec3], normals: &[Vec3], front: &mut [[f32; 4]]) -> StageTimes {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
         let mut times = StageTimes::default();
@@ -840,7 +840,7 @@ impl Lighter {
                             let l = DVec3::new(c.lx64[i], c.ly64[i], c.lz64[i]);
                             let (cos, inside) = terms::spot_cone(&sp, axis, l);
                             c.spot_cos[i] = cos;
-                            c.inside[i] = c.l_ok[i] && inside;
+                            c.inside[i] = c.l_ok[i] & inside;
                         }
                     }
                 }
@@ -853,7 +853,7 @@ impl Lighter {
                 let mut f = [0.0f32; CHUNK];
                 power_loop(e.options.pow, &c.spot_cos, &mut f, n, sp.exponent);
                 for i in 0..n {
-                    let spot = if c.inside[i] { f[i] } else { 0.0 };
+                    let spot = keep_or_zero(c.inside[i], f[i]);
                     // scale = mul0(att, spot), att from `Attenuate` (or 1).
                     c.scale[i] = mul0(c.scale[i], spot);
                 }
@@ -1124,6 +1124,14 @@ fn power_loop(which: PowFn, x: &[f32; CHUNK], p: &mut [f32; CHUNK], n: usize, e:
     }
 }
 
+/// `x` where `keep`, +0 elsewhere: `if keep { x } else { 0.0 }`, as a mask of the bits.
+/// The `if` on a bool loaded from a chunk's array was compiled as a branch per vertex
+/// (in chunks of 64); the mask is one vector AND.
+#[inline(always)]
+fn keep_or_zero(keep: bool, x: f32) -> f32 {
+    f32::from_bits(x.to_bits() & (keep as u32).wrapping_neg())
+}
+
 /// Powers of 1, for a side with shininess 0.
 static ONES: [f32; CHUNK] = [1.0; CHUNK];
 
@@ -1158,7 +1166,7 @@ mod tests {
             let mut scene = scene;
             scene.light_model.two_sided = two;
             let l = Lighter::new(&scene, EvalOptions::default()).unwrap();
-            for n in [1, 127, 128, 300] {
+            for n in [1, 63, 64, 65, 127, 128, 300] {
                 let pos: Vec<Vec3> = (0..n).map(|_| Vec3::new(uniform(), uniform(), uniform() - 3.0)).collect();
                 let nrm: Vec<Vec3> = (0..n).map(|_| Vec3::new(uniform(), uniform(), uniform()) * 1.7).collect();
                 let xyz = |v: &[Vec3]| [0, 1, 2].map(|c| v.iter().map(|p| p[c]).collect::<Vec<f32>>());

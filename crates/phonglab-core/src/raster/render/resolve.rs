@@ -610,8 +610,9 @@ fn resolve_band_any<const AVX2: bool>(band: &BandInput<'_>, px: &mut [[u8; 4]], 
 }
 
 /// Fragments lit in one batch, at least (whole rows are gathered first): enough for the
-/// lighting's chunks of 128 to run full, few enough that the fragments, their colours and
-/// their pixels stay in the core's nearest caches (a whole band's, at 1024², did not).
+/// lighting's chunks ([`CHUNK`](crate::specialised::CHUNK), 64) to run full, few enough
+/// that the fragments, their colours and their pixels stay in the core's nearest caches (a
+/// whole band's, at 1024², did not).
 const BATCH: usize = 1024;
 
 /// Lights fragments `..m` of `frags` and writes their colours to their pixels of `px`
