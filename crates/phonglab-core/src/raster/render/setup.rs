@@ -281,9 +281,9 @@ impl Setup {
             let faces = k * GRAIN..(k * GRAIN + GRAIN).min(tris.len());
             setup_faces(job, verts, faces, width, height, out);
         });
-        // Gathered into one array on both threads: each chunk's triangles copied to their
-        // place (a serial copy, some 400 KB for the teapot, left the other thread idle long
-        // enough to fall asleep before the next stage).
+        // Gathered into one array on both threads, each chunk's triangles copied to their
+        // place: a serial copy (some 400 KB a frame for the teapot) left the other thread
+        // idle between two parallel stages.
         let total = self.per_face.iter().map(Vec::len).sum();
         self.tris.resize(total, RasterTri::default());
         let mut places = Vec::with_capacity(self.per_face.len());
