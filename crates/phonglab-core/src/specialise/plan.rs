@@ -73,6 +73,7 @@ impl Key {
             [&scene.material, back].iter().any(|m| (0..3).any(|i| m.specular[i] * l.specular[i] != 0.0))
         };
         let eye_from_object = scene.eye_from_object();
+        let affine = eye_from_object.row(3) == glam::DVec4::W;
         let nm = NormalMatrix::for_rules(&eye_from_object, scene.rules);
         let rules = scene.rules;
         let scene_color_zero = [&scene.material, back].iter().all(|m| {
@@ -106,9 +107,8 @@ impl Key {
             pow: options.pow,
             shininess_zero: [scene.material.shininess == 0.0, back.shininess == 0.0],
             scene_color_zero,
-            projective: eye_from_object.row(3) != glam::DVec4::W,
-            translation: eye_from_object.row(3) == glam::DVec4::W
-                && glam::DMat3::from_mat4(eye_from_object) == glam::DMat3::IDENTITY,
+            projective: !affine,
+            translation: affine && glam::DMat3::from_mat4(eye_from_object) == glam::DMat3::IDENTITY,
         }
     }
 

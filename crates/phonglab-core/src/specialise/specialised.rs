@@ -937,7 +937,7 @@ impl Lighter {
                 self.specular_lanes(c, side, &mut allowed);
                 let mut x = [0.0f32; CHUNK];
                 for i in 0..n {
-                    x[i] = if allowed[i] { c.cos[side][i] } else { 0.0 };
+                    x[i] = keep_or_zero(allowed[i], c.cos[side][i]);
                 }
                 power_loop(e.options.pow, &x, &mut c.p[side], n, shin);
                 c.allowed[side] = allowed;
