@@ -379,6 +379,61 @@ mod tests {
         assert!(copies_run >= 6 * 7, "{copies_run}");
     }
 
+    /// Gouraud's pixels are the perspective-correct interpolation of the vertices' colours,
+    /// computed here in f64 from the exact barycentrics of each pixel's triangle and
+    /// converted as OpenGL converts: within one level everywhere, and off by that one level
+    /// at a handful of pixels (where the exact value lies within a few f32 roundings of a
+    /// rounding boundary), on the benchmark's sphere and teapot, a cylinder and a two-sided
+    /// scene, at sizes up to 1024.
+    #[test]
+    fn gouraud_pixels_are_the_exact_perspective_correct_interpolation() {
+        let mut two_sided = bench_scene(91);
+        two_sided.light_model.two_sided = true;
+        let (sphere, teapot) = (sphere::glu_sphere(1.0, 50, 50), teapot::glut_teapot(0.8, 7));
+        let cylinder = crate::mesh::cylinder::glu_cylinder(0.6, 0.3, 1.2, 24, 6, true);
+        let cases = [
+            (bench_scene(199), &sphere, 1024, 1024),
+            (bench_scene(199), &teapot, 512, 512),
+            (bench_scene(13), &cylinder, 333, 251),
+            (two_sided, &teapot, 400, 300),
+        ];
+        let (mut pixels, mut off) = (0, 0);
+        for (scene, mesh, w, h) in cases {
+            let job = bench_job(&scene, mesh, Shading::Gouraud);
+            let mut r = Renderer::new();
+            r.keep_visibility(true);
+            let image = r.render(&job, w, h).unwrap().0.clone();
+            let two = scene.light_model.two_sided;
+            for (i, &ri) in image.raster.iter().enumerate().filter(|(_, ri)| **ri != NO_TRIANGLE) {
+                let t = &r.setup.tris[ri as usize];
+                let (x, y) = (i % w, i / w);
+                // Exact screen barycentrics: the integer edge functions over the area.
+                let (wf, _, _) = raster::ScreenBarycentrics::new(t).row(x, y);
+                let xy = |k: usize| (t.x[k] as f64, t.y[k] as f64);
+                let ((x0, y0), (x1, y1), (x2, y2)) = (xy(0), xy(1), xy(2));
+                let area = (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0);
+                let l = [1.0 - wf[0] / area - wf[1] / area, wf[0] / area, wf[1] / area];
+                let q: [f64; 3] = std::array::from_fn(|k| l[k] * t.inv_w[k] as f64);
+                let sum = q[0] + q[1] + q[2];
+                let v = job.mesh.triangles[t.orig as usize];
+                let side = (t.back && two) as usize;
+                let vc = |j: usize| r.vertices.color[side][v[j] as usize];
+                for c in 0..3 {
+                    let at = |k: usize| (0..3).map(|j| t.bary[k][j] as f64 * vc(j)[c] as f64).sum::<f64>();
+                    let exact = (0..3).map(|k| q[k] / sum * at(k)).sum::<f64>();
+                    let want = (255.0 * exact.clamp(0.0, 1.0)).round() as i32;
+                    let got = image.rgba[4 * i + c] as i32;
+                    assert!((got - want).abs() <= 1, "pixel {x},{y} channel {c}: {got} against exact {exact}");
+                    off += (got != want) as usize;
+                    pixels += 1;
+                }
+            }
+        }
+        eprintln!("{off} of {pixels} channels one level off the exact interpolation");
+        assert!(pixels > 1_000_000, "{pixels}");
+        assert!(off * 10_000 <= pixels, "{off} of {pixels} one level off");
+    }
+
     /// Without the kept visibility, picking and `surface_at` draw the pixel's band again:
     /// at every pixel they answer exactly as the kept visibility does; the images and the
     /// coverage are the same either way, and the coverage is the kept buffer's count.
