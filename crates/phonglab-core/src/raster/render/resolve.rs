@@ -244,6 +244,7 @@ pub struct ColorPlanes {
 impl ColorPlanes {
     /// The planes of `t`, whose colours at its vertices (times 1/w) are `colors`. A
     /// triangle without area (never drawn) gets flat planes.
+    #[inline(always)]
     pub fn new(t: &RasterTri, colors: [[f32; 4]; 3]) -> Self {
         let (x, y) = (t.x, t.y);
         let one = (1i64 << SUBPIXEL_BITS) as f64;
