@@ -12,8 +12,9 @@
 //!   each is set up once per triangle ([`ColorPlanes`], f64, through a vertex) and stepped
 //!   along a run in f32, and a pixel's colour is their quotient. Within a few f32 roundings
 //!   of the exact value (tested: 7 channels in 1.5 million one level off the f64
-//!   interpolation, as the barycentric blend had 6), and a block of 8 pixels is about 15
-//!   operations instead of 60.
+//!   interpolation, as the barycentric blend had 6); 8 pixels' colours are 16 vector
+//!   operations before the packing to bytes, where the blend took about 50 (counted in
+//!   the source).
 //! - Phong: position and normal, the normal renormalised, the lighting engine per pixel
 //!   (in batches through the specialised evaluator).
 //! - Flat: the face's colour; or, as the Phong demo's shader does, the pixel lit with
@@ -97,8 +98,8 @@ struct Attributes<'a> {
 
 /// The attributes of triangles `ts` (a chunk) into `out`, through the copy `copy` compiled
 /// for this processor (the portable one if it cannot run it): the AVX2 copy does the same
-/// operations with four f64 lanes where the portable one has two, so the same bits
-/// (tested).
+/// operations, in registers of four f64 where the portable copy has SSE2's two, so the
+/// same bits (tested).
 fn attributes_chunk(copy: Compiled, job: &Job<'_>, verts: &Vertices, ts: &[RasterTri], out: Attributes<'_>) {
     #[cfg(target_arch = "x86_64")]
     if copy != Compiled::Portable && crate::specialised::has_avx2_fma() {
@@ -315,14 +316,6 @@ impl ColorPlanes {
             step[c] = self.dx[c] as f32;
         }
         (start, step)
-    }
-
-    /// The colour (r, g, b, a) at the centre of pixel (`px`, `py`), as the resolve
-    /// computes it.
-    pub fn color_at(&self, px: usize, py: usize) -> [f32; 4] {
-        let (start, step) = self.row(px, py);
-        let ch = gouraud_block(&start, &step, 0);
-        [ch[0][0], ch[1][0], ch[2][0], ch[3][0]]
     }
 }
 
