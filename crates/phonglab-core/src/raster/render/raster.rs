@@ -472,23 +472,30 @@ pub struct ScreenBarycentrics {
     inv_area: f64,
 }
 
+/// The steps of a triangle's edge functions `w1` (edge 2 -> 0) and `w2` (edge 0 -> 1) per
+/// pixel to the right and per row down, and `1 / area` (0 for a triangle without area):
+/// `l1 = w1 / area`, `l2 = w2 / area` change by `step_x[k] / area` a pixel. Shared by
+/// [`ScreenBarycentrics`] and the resolve's Gouraud planes.
+#[inline(always)]
+pub(crate) fn barycentric_steps(t: &RasterTri) -> ([i64; 2], [i64; 2], f64) {
+    let (x, y) = (t.x, t.y);
+    let one = 1i64 << SUBPIXEL_BITS;
+    let area = edge(x[0], y[0], x[1], y[1], x[2], y[2]);
+    // The edges 2 -> 0 and 0 -> 1 of [`per_edge`].
+    let [_, sx1, sx2] = per_edge(|a, b| -(y[b] - y[a]) * one);
+    let [_, sy1, sy2] = per_edge(|a, b| (x[b] - x[a]) * one);
+    ([sx1, sx2], [sy1, sy2], if area != 0 { 1.0 / area as f64 } else { 0.0 })
+}
+
 impl ScreenBarycentrics {
     /// The edge functions of `t`.
     pub fn new(t: &RasterTri) -> Self {
         let (x, y) = (t.x, t.y);
         let half = 1i64 << (SUBPIXEL_BITS - 1);
-        let one = 1i64 << SUBPIXEL_BITS;
-        let area = edge(x[0], y[0], x[1], y[1], x[2], y[2]);
         // The edges 2 -> 0 and 0 -> 1 of [`per_edge`].
         let [_, w1, w2] = per_edge(|a, b| edge(x[a], y[a], x[b], y[b], half, half));
-        let [_, sx1, sx2] = per_edge(|a, b| -(y[b] - y[a]) * one);
-        let [_, sy1, sy2] = per_edge(|a, b| (x[b] - x[a]) * one);
-        Self {
-            w_origin: [w1, w2],
-            step_x: [sx1, sx2],
-            step_y: [sy1, sy2],
-            inv_area: if area != 0 { 1.0 / area as f64 } else { 0.0 },
-        }
+        let (step_x, step_y, inv_area) = barycentric_steps(t);
+        Self { w_origin: [w1, w2], step_x, step_y, inv_area }
     }
 
     /// `w1` and `w2` at the centre of pixel (`px`, `py`), as f64 (exact), their steps per

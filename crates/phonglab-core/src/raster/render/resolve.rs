@@ -28,7 +28,7 @@
 use glam::Vec3;
 use rayon::prelude::*;
 
-use super::raster::ScreenBarycentrics;
+use super::raster::{ScreenBarycentrics, barycentric_steps};
 use super::setup::{RasterTri, SUBPIXEL_BITS, Setup};
 use super::vertices::Vertices;
 use super::{Job, NO_TRIANGLE};
@@ -281,16 +281,12 @@ impl ColorPlanes {
     /// triangle without area (never drawn) gets flat planes.
     #[inline(always)]
     pub fn new(t: &RasterTri, colors: [[f32; 4]; 3]) -> Self {
-        let (x, y) = (t.x, t.y);
-        let one = (1i64 << SUBPIXEL_BITS) as f64;
-        // The doubled area, and the steps per pixel of the edge functions w1 (edge 2 -> 0)
-        // and w2 (edge 0 -> 1), as ScreenBarycentrics has them: l1 = w1 / area, l2 = w2 / area.
-        let area = ((x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0])) as f64;
-        let (sx1, sy1) = (-((y[0] - y[2]) as f64) * one, (x[0] - x[2]) as f64 * one);
-        let (sx2, sy2) = (-((y[1] - y[0]) as f64) * one, (x[1] - x[0]) as f64 * one);
-        let inv_area = if area != 0.0 { 1.0 / area } else { 0.0 };
+        // l1 = w1 / area and l2 = w2 / area change by step / area a pixel, exactly as the
+        // resolve's barycentrics do (the steps are integers, exact in f64).
+        let ([sx1, sx2], [sy1, sy2], inv_area) = barycentric_steps(t);
+        let (sx1, sx2, sy1, sy2) = (sx1 as f64, sx2 as f64, sy1 as f64, sy2 as f64);
         let value = |k: usize, c: usize| if c < 4 { colors[k][c] as f64 } else { t.inv_w[k] as f64 };
-        let mut planes = Self { origin: [x[0], y[0]], ..Self::default() };
+        let mut planes = Self { origin: [t.x[0], t.y[0]], ..Self::default() };
         for c in 0..5 {
             let (v0, d1, d2) = (value(0, c), value(1, c) - value(0, c), value(2, c) - value(0, c));
             planes.at_origin[c] = v0;
