@@ -196,8 +196,9 @@ pub fn pow_f32_chunk<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N], n
 /// fractional exponent `e > 0`, with the lanes that need a power packed together first:
 /// where `x <= 0` (or NaN) the result is +0 without any work, and the logarithm and
 /// exponential run only over the others, 8 at a time. Bit for bit [`pow_f32_chunk`]'s
-/// results (the same operations on the same values). With AVX-512 (`vcompressps` / `vexpandps`); elsewhere it is [`pow_f32_chunk`], whose
-/// blocks of 8 with nothing above 0 are skipped. Scene (a)'s lit half of a sphere needs
+/// results (the same operations on the same values). With AVX-512 (`vcompressps` /
+/// `vexpandps`); elsewhere it is [`pow_f32_chunk`], whose blocks of 8 with nothing above 0
+/// are skipped. Scene (a)'s lit half of a sphere needs
 /// about 40 % of the lanes, scattered (a fifth of its blocks of 8 have none).
 #[inline(always)]
 pub fn pow_f32_chunk_packed<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N]) {

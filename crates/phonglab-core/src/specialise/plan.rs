@@ -14,6 +14,7 @@ use crate::lighting::{EvalOptions, Renormalize};
 use crate::pow::PowFn;
 use crate::rules::{Rules, SpecularModel};
 use crate::scene::{NormalMode, Scene};
+use crate::specialised::CHUNK;
 use crate::transform::NormalMatrix;
 
 /// One light's part of the key.
@@ -479,10 +480,13 @@ impl Key {
                     EffectKind::ViewVector,
                     None,
                     true,
-                    if self.local_viewer {
-                        "local viewer: V = normalize(-P) per vertex, in f64; a chunk of 64 vertices whose coordinates all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)"
+                    &if self.local_viewer {
+                        format!(
+                            "local viewer: V = normalize(-P) per vertex, in f64; a chunk of {CHUNK} vertices whose coordinates all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)"
+                        )
                     } else {
                         "the worksheet's V = normalize(obs - P), obs = P (1, 1, 0, 1): (0, 0, -sign(P.z)) per vertex"
+                            .into()
                     },
                 )
             } else {
@@ -511,7 +515,9 @@ impl Key {
                     EffectKind::LightVector,
                     li,
                     true,
-                    "positional light: per vertex, in f64; a chunk of 64 vertices whose VP components all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)",
+                    &format!(
+                        "positional light: per vertex, in f64; a chunk of {CHUNK} vertices whose VP components all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)"
+                    ),
                 )
             } else {
                 e(EffectKind::LightVector, li, false, "the light is directional: L is one constant, there is no d")
