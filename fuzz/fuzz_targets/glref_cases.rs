@@ -1,7 +1,8 @@
 //! Any bytes as a glref case file (the `phonglab eval` input): it parses or is refused,
 //! never panics; every case OpenGL accepts evaluates in f32 and f64, and the specialised
 //! evaluator agrees with the general engine bit for bit. The numerics policy: when every
-//! input is finite, no output is NaN (f64; in f32, when every input is also a float).
+//! input is finite, no output is NaN (f64; in f32, when every input is also a float). The
+//! cases read are those with unique string ids.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -41,8 +42,11 @@ fn numbers(s: &Scene) -> Vec<f64> {
 fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else { return };
     let Ok(cases) = parse_cases(text) else { return };
-    for (_, case) in cases {
+    let mut ids = std::collections::HashSet::new();
+    for (id, case) in cases {
         let Ok(case) = case else { continue };
+        assert_eq!(id, case.id, "an accepted case keeps its id as given");
+        assert!(ids.insert(case.id.clone()), "two accepted cases share the id {id:?}");
         let s = &case.scene;
         let Ok(c64) = evaluate::<f64>(s, EvalOptions::default(), false) else { continue };
         let c32 = evaluate::<f32>(s, EvalOptions::default(), false).expect("f32 accepts what f64 accepts");

@@ -36,6 +36,7 @@ use thiserror::Error;
 
 use crate::camera::CameraSpec;
 use crate::error::SceneError;
+use crate::formats::strict;
 use crate::materials;
 use crate::rules::{RuleSet, Rules, SpecularModel};
 use crate::scene::{Light, LightModel, LightPlacement, Material, NormalMode, Scene, Vertex};
@@ -101,16 +102,53 @@ impl Document {
 
     /// Parses and checks a scene file that lives in the folder `dir`: a relative mesh file
     /// path (`[view] obj`) is taken from that folder.
+    ///
+    /// A file with no key at all (empty, or only comments) is refused: it is more likely a
+    /// file that lost its contents than a wish for OpenGL's defaults, which `name = "..."`
+    /// alone asks for.
     pub fn from_toml_in(text: &str, dir: Option<&std::path::Path>) -> Result<Document, DocumentError> {
-        let file: FileV1 =
-            toml::from_str(text).map_err(|e| DocumentError::Syntax(e.to_string().trim_end().to_string()))?;
+        let doc = Self::parse_unchecked(text, dir)?;
+        doc.validate()?;
+        Ok(doc)
+    }
+
+    /// [`Document::from_toml_in`], except that a mesh file that cannot be read (moved,
+    /// deleted) does not refuse the scene: the view shows the sphere instead, keeps the
+    /// path, and the note says so. For a session restored at start.
+    pub fn from_toml_keeping_missing_mesh(
+        text: &str,
+        dir: Option<&std::path::Path>,
+    ) -> Result<(Document, Option<String>), DocumentError> {
+        let mut doc = Self::parse_unchecked(text, dir)?;
+        let mut note = None;
+        if doc.view.object == crate::view::ObjectKind::Obj
+            && let Err(e) = doc.view.obj_mesh()
+        {
+            let path = doc.view.obj.clone().unwrap_or_default();
+            note = Some(format!(
+                "The mesh {path} is missing or cannot be read ({e}); the scene is kept and shown on the sphere. Open the mesh again to show it."
+            ));
+            doc.view.object = crate::view::ObjectKind::Sphere;
+        }
+        doc.validate()?;
+        Ok((doc, note))
+    }
+
+    /// Parses a scene file without checking its values.
+    fn parse_unchecked(text: &str, dir: Option<&std::path::Path>) -> Result<Document, DocumentError> {
+        let table: toml::Table = toml::from_str(text).map_err(|e| toml_error(text, &e))?;
+        if table.is_empty() {
+            return Err(syntax(
+                "the scene file is empty: it has no key (a scene file written by phonglab names at least its rules and material)".into(),
+            ));
+        }
+        let file: FileV1 = toml::from_str(text).map_err(|e| toml_error(text, &e))?;
         let mut doc = file.into_document()?;
         if let (Some(dir), Some(obj)) = (dir, &doc.view.obj)
             && std::path::Path::new(obj).is_relative()
         {
             doc.view.obj = Some(dir.join(obj).display().to_string());
         }
-        doc.validate()?;
         Ok(doc)
     }
 
@@ -138,7 +176,7 @@ struct FileV1 {
     light_model: LightModelFile,
     #[serde(default)]
     camera: CameraFile,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "strict::rows_opt")]
     object_matrix: Option<[[f64; 4]; 4]>,
     #[serde(default)]
     material: MaterialFile,
@@ -246,18 +284,102 @@ impl Default for LightModelFile {
     }
 }
 
-#[derive(Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
-enum CameraFile {
-    Worksheet { modelview: u8 },
-    LookAt { eye: [f64; 3], centre: [f64; 3], up: [f64; 3] },
-    Openframeworks { width: f64, height: f64 },
-    Matrix { rows: [[f64; 4]; 4] },
+/// The camera's kinds (the `kind` key of `[camera]`).
+#[derive(Serialize, Deserialize, Default, Clone, Copy, PartialEq)]
+#[serde(rename_all = "kebab-case")]
+enum CameraKind {
+    Worksheet,
+    LookAt,
+    Openframeworks,
+    #[default]
+    Matrix,
 }
 
-impl Default for CameraFile {
-    fn default() -> Self {
-        CameraFile::Matrix { rows: mat4_rows(&DMat4::IDENTITY) }
+/// `[camera]`: a kind and that kind's keys. A plain table rather than a tagged enum, so an
+/// error in a key names that key's line (serde reads a tagged enum's keys out of their place).
+#[derive(Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct CameraFile {
+    #[serde(default)]
+    kind: CameraKind,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    modelview: Option<u8>,
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "strict::exact_opt")]
+    eye: Option<[f64; 3]>,
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "strict::exact_opt")]
+    centre: Option<[f64; 3]>,
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "strict::exact_opt")]
+    up: Option<[f64; 3]>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    width: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    height: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "strict::rows_opt")]
+    rows: Option<[[f64; 4]; 4]>,
+}
+
+impl CameraFile {
+    /// The camera, when the keys given are exactly those of its kind.
+    fn spec(&self) -> Result<CameraSpec, DocumentError> {
+        let given: Vec<&str> = [
+            ("modelview", self.modelview.is_some()),
+            ("eye", self.eye.is_some()),
+            ("centre", self.centre.is_some()),
+            ("up", self.up.is_some()),
+            ("width", self.width.is_some()),
+            ("height", self.height.is_some()),
+            ("rows", self.rows.is_some()),
+        ]
+        .into_iter()
+        .filter_map(|(k, g)| g.then_some(k))
+        .collect();
+        let (name, keys): (&str, &[&str]) = match self.kind {
+            CameraKind::Worksheet => ("worksheet", &["modelview"]),
+            CameraKind::LookAt => ("look-at", &["eye", "centre", "up"]),
+            CameraKind::Openframeworks => ("openframeworks", &["width", "height"]),
+            CameraKind::Matrix => ("matrix", &["rows"]),
+        };
+        if let Some(extra) = given.iter().find(|k| !keys.contains(k)) {
+            return Err(syntax(format!("camera.{extra}: a camera of kind = \"{name}\" takes {}", keys.join(", "))));
+        }
+        let missing: Vec<&str> = keys.iter().copied().filter(|k| !given.contains(k)).collect();
+        if !missing.is_empty() && self.kind != CameraKind::Matrix {
+            return Err(syntax(format!("camera: kind = \"{name}\" needs {}", missing.join(", "))));
+        }
+        let v3 = |v: Option<[f64; 3]>| DVec3::from(v.unwrap_or_default());
+        Ok(match self.kind {
+            CameraKind::Worksheet => CameraSpec::Worksheet(self.modelview.unwrap_or(5)),
+            CameraKind::LookAt => CameraSpec::LookAt { eye: v3(self.eye), centre: v3(self.centre), up: v3(self.up) },
+            CameraKind::Openframeworks => CameraSpec::OpenFrameworks {
+                width: self.width.unwrap_or_default(),
+                height: self.height.unwrap_or_default(),
+            },
+            CameraKind::Matrix => CameraSpec::Matrix(self.rows.map_or(DMat4::IDENTITY, mat4_from_rows)),
+        })
+    }
+
+    fn of(spec: &CameraSpec) -> CameraFile {
+        match spec {
+            CameraSpec::Worksheet(i) => {
+                CameraFile { kind: CameraKind::Worksheet, modelview: Some(*i), ..Default::default() }
+            }
+            CameraSpec::LookAt { eye, centre, up } => CameraFile {
+                kind: CameraKind::LookAt,
+                eye: Some(eye.to_array()),
+                centre: Some(centre.to_array()),
+                up: Some(up.to_array()),
+                ..Default::default()
+            },
+            CameraSpec::OpenFrameworks { width, height } => CameraFile {
+                kind: CameraKind::Openframeworks,
+                width: Some(*width),
+                height: Some(*height),
+                ..Default::default()
+            },
+            CameraSpec::Matrix(m) => {
+                CameraFile { kind: CameraKind::Matrix, rows: Some(mat4_rows(m)), ..Default::default() }
+            }
+        }
     }
 }
 
@@ -299,17 +421,17 @@ struct LightFile {
     diffuse: Option<Color>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     specular: Option<Color>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "strict::exact_opt")]
     spot_direction: Option<[f64; 3]>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     spot_cutoff: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     spot_exponent: Option<f64>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "strict::exact_opt")]
     attenuation: Option<[f64; 3]>,
     #[serde(default)]
     placement: PlacementName,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "strict::rows_opt")]
     placement_matrix: Option<[[f64; 4]; 4]>,
 }
 
@@ -317,6 +439,7 @@ struct LightFile {
 #[serde(deny_unknown_fields)]
 struct VertexFile {
     position: Point,
+    #[serde(deserialize_with = "strict::exact")]
     normal: [f64; 3],
 }
 
@@ -329,6 +452,19 @@ impl Default for VertexFile {
 
 fn syntax(msg: String) -> DocumentError {
     DocumentError::Syntax(msg)
+}
+
+/// A TOML error as "line L, column C: what (did you mean ...?)" and a short excerpt of the
+/// line, however long the line is.
+fn toml_error(text: &str, e: &toml::de::Error) -> DocumentError {
+    let what = strict::shortened(&strict::with_suggestion(e.message().trim_end()), strict::MESSAGE_CHARS);
+    match e.span() {
+        Some(span) => {
+            let (place, excerpt) = strict::place(text, span.start);
+            syntax(format!("{place}: {what}\n{excerpt}"))
+        }
+        None => syntax(what),
+    }
 }
 
 impl MaterialFile {
@@ -366,14 +502,7 @@ impl MaterialFile {
 
 impl FileV1 {
     fn into_document(self) -> Result<Document, DocumentError> {
-        let camera = match self.camera {
-            CameraFile::Worksheet { modelview } => CameraSpec::Worksheet(modelview),
-            CameraFile::LookAt { eye, centre, up } => {
-                CameraSpec::LookAt { eye: DVec3::from(eye), centre: DVec3::from(centre), up: DVec3::from(up) }
-            }
-            CameraFile::Openframeworks { width, height } => CameraSpec::OpenFrameworks { width, height },
-            CameraFile::Matrix { rows } => CameraSpec::Matrix(mat4_from_rows(rows)),
-        };
+        let camera = self.camera.spec()?;
         let eye_from_world = camera.matrix()?;
         let mut lights = Vec::with_capacity(self.lights.len());
         for (i, l) in self.lights.into_iter().enumerate() {
@@ -461,16 +590,7 @@ impl FileV1 {
                 two_sided: s.light_model.two_sided,
                 separate_specular: s.light_model.separate_specular,
             },
-            camera: match &doc.camera {
-                CameraSpec::Worksheet(i) => CameraFile::Worksheet { modelview: *i },
-                CameraSpec::LookAt { eye, centre, up } => {
-                    CameraFile::LookAt { eye: eye.to_array(), centre: centre.to_array(), up: up.to_array() }
-                }
-                CameraSpec::OpenFrameworks { width, height } => {
-                    CameraFile::Openframeworks { width: *width, height: *height }
-                }
-                CameraSpec::Matrix(m) => CameraFile::Matrix { rows: mat4_rows(m) },
-            },
+            camera: CameraFile::of(&doc.camera),
             object_matrix: (s.world_from_object != DMat4::IDENTITY).then(|| mat4_rows(&s.world_from_object)),
             material: MaterialFile::from_material(&s.material),
             back_material: s.back_material.as_ref().map(MaterialFile::from_material),

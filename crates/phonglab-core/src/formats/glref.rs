@@ -3,11 +3,18 @@
 //! A file is a list of cases or `{"cases": [...]}`. Every field is optional and takes
 //! OpenGL's default; colours are rgb or rgba; numbers may be strings ("NaN", "Infinity",
 //! "1e18"). A case that does not fit the schema is an error of that case alone.
+//!
+//! The reader is strict, so that a typo cannot change a result in silence: an unknown key
+//! is refused with the closest known name (`constant_atenuation` -> did you mean
+//! `constant_attenuation`?), an `id` must be a string and unique, and an empty case `{}`
+//! is refused. The harness's own record of a result (`result`) is read for its four
+//! colours and otherwise left as the harness wrote it.
 
 use glam::{DMat4, DVec3, DVec4};
 use serde_json::{Map, Value, json};
 use thiserror::Error;
 
+use crate::formats::strict;
 use crate::lighting::{Engine, EvalOptions};
 use crate::real::Real;
 use crate::rules::Rules;
@@ -89,15 +96,82 @@ pub fn raw_cases(text: &str) -> Result<Vec<Value>, FileError> {
 pub type ParsedCases = Vec<(String, Result<Case, CaseError>)>;
 
 /// Parses a file: `Err` when the file is not a case file; otherwise one result per case.
+/// A case whose id an earlier case already has is an error of its own.
 pub fn parse_cases(text: &str) -> Result<ParsedCases, FileError> {
+    let mut seen = std::collections::HashSet::new();
     Ok(raw_cases(text)?
         .iter()
         .enumerate()
         .map(|(i, raw)| {
-            let id = raw.get("id").and_then(Value::as_str).map(str::to_string).unwrap_or_else(|| format!("case{i}"));
-            (id, parse_case(raw, i))
+            let id = match raw.get("id") {
+                Some(Value::String(s)) => s.clone(),
+                Some(other) => strict::shortened(&other.to_string(), 40),
+                None => format!("case{i}"),
+            };
+            let parsed = parse_case(raw, i).and_then(|c| {
+                if seen.insert(c.id.clone()) {
+                    Ok(c)
+                } else {
+                    Err(err("id", format!("{:?} is the id of an earlier case; ids must be unique", c.id)))
+                }
+            });
+            (id, parsed)
         })
         .collect())
+}
+
+/// The keys a case may have.
+pub const CASE_KEYS: &[&str] = &[
+    "id",
+    "tags",
+    "note",
+    "modelview",
+    "light_modelview",
+    "vertex",
+    "normal",
+    "lights",
+    "light",
+    "material",
+    "back_material",
+    "light_model_ambient",
+    "local_viewer",
+    "two_sided",
+    "separate_specular",
+    "normalize",
+    "rescale_normal",
+    "result",
+];
+
+/// The keys a light may have.
+pub const LIGHT_KEYS: &[&str] = &[
+    "position",
+    "ambient",
+    "diffuse",
+    "specular",
+    "spot_direction",
+    "spot_cutoff",
+    "spot_exponent",
+    "constant_attenuation",
+    "linear_attenuation",
+    "quadratic_attenuation",
+];
+
+/// The keys a material may have (`name` is a label, not GL state).
+pub const MATERIAL_KEYS: &[&str] = &["name", "ambient", "diffuse", "specular", "emission", "shininess"];
+
+/// Refuses a key of `o` that is not one of `known`, suggesting the closest.
+fn known_keys(o: &Map<String, Value>, known: &[&str], field: &str) -> Result<(), CaseError> {
+    for k in o.keys() {
+        if !known.contains(&k.as_str()) {
+            let at = if field.is_empty() { k.clone() } else { format!("{field}.{k}") };
+            let hint = match strict::closest(k, known.iter().copied()) {
+                Some(c) => format!("; did you mean {c:?}?"),
+                None => format!("; the keys are {}", known.join(", ")),
+            };
+            return Err(err(&strict::shortened(&at, 80), format!("unknown key{hint}")));
+        }
+    }
+    Ok(())
 }
 
 /// A number, or a string holding one ("NaN", "Infinity", "-Infinity", "1e18").
@@ -169,6 +243,7 @@ fn object<'a>(v: &'a Value, field: &str) -> Result<&'a Map<String, Value>, CaseE
 
 fn material(v: &Value, field: &str) -> Result<Material, CaseError> {
     let o = object(v, field)?;
+    known_keys(o, MATERIAL_KEYS, field)?;
     let mut m = Material::default();
     for (k, x) in o {
         let f = format!("{field}.{k}");
@@ -178,7 +253,7 @@ fn material(v: &Value, field: &str) -> Result<Material, CaseError> {
             "specular" => m.specular = rgba(x, &f)?,
             "emission" => m.emission = rgba(x, &f)?,
             "shininess" => m.shininess = number(x, &f)?,
-            _ => {} // e.g. "name"
+            _ => {} // "name", a label
         }
     }
     Ok(m)
@@ -187,6 +262,7 @@ fn material(v: &Value, field: &str) -> Result<Material, CaseError> {
 fn light(v: &Value, index: usize, placement: &LightPlacement) -> Result<Light, CaseError> {
     let field = format!("lights[{index}]");
     let o = object(v, &field)?;
+    known_keys(o, LIGHT_KEYS, &field)?;
     let mut l = Light { placement: placement.clone(), ..Light::gl_default(index) };
     for (k, x) in o {
         let f = format!("{field}.{k}");
@@ -201,7 +277,7 @@ fn light(v: &Value, index: usize, placement: &LightPlacement) -> Result<Light, C
             "constant_attenuation" => l.attenuation[0] = number(x, &f)?,
             "linear_attenuation" => l.attenuation[1] = number(x, &f)?,
             "quadratic_attenuation" => l.attenuation[2] = number(x, &f)?,
-            _ => {}
+            _ => {} // refused above
         }
     }
     Ok(l)
@@ -210,8 +286,27 @@ fn light(v: &Value, index: usize, placement: &LightPlacement) -> Result<Light, C
 /// Parses one case object (`index` names it when it has no id).
 pub fn parse_case(raw: &Value, index: usize) -> Result<Case, CaseError> {
     let o = object(raw, &format!("cases[{index}]"))?;
+    if o.is_empty() {
+        return Err(err(
+            &format!("cases[{index}]"),
+            "an empty case: every value would be OpenGL's default; give at least an id and a vertex or a light",
+        ));
+    }
+    known_keys(o, CASE_KEYS, "")?;
     let get = |k: &str| o.get(k).filter(|v| !v.is_null());
-    let id = get("id").and_then(Value::as_str).map(str::to_string).unwrap_or_else(|| format!("case{index}"));
+    let id = match get("id") {
+        None => format!("case{index}"),
+        Some(Value::String(s)) if !s.is_empty() => s.clone(),
+        Some(other) => {
+            return Err(err(
+                "id",
+                format!("an id is a non-empty string, not {}", strict::shortened(&other.to_string(), 40)),
+            ));
+        }
+    };
+    if get("lights").is_some() && get("light").is_some() {
+        return Err(err("light", "give either \"lights\" (a list) or \"light\" (one), not both"));
+    }
     let modelview = get("modelview").map(|v| mat4(v, "modelview")).transpose()?.unwrap_or(DMat4::IDENTITY);
     let placement = match get("light_modelview") {
         Some(v) => LightPlacement::Matrix(mat4(v, "light_modelview")?),
@@ -439,6 +534,41 @@ mod tests {
         assert_eq!(e.field, "modelview");
         let e = parse_case(&json!({"normal": [0, "x", 1]}), 0).unwrap_err();
         assert_eq!(e.field, "normal[1]");
+    }
+
+    #[test]
+    fn unknown_keys_are_refused_with_the_closest_name() {
+        let e = parse_case(&json!({"id": "a", "lights": [{"constant_atenuation": 2}]}), 0).unwrap_err();
+        assert_eq!(e.field, "lights[0].constant_atenuation");
+        assert!(e.message.contains("did you mean \"constant_attenuation\""), "{e}");
+        let e = parse_case(&json!({"id": "a", "vertx": [0, 0, 0]}), 0).unwrap_err();
+        assert!(e.message.contains("\"vertex\""), "{e}");
+        let e = parse_case(&json!({"id": "a", "material": {"shine": 3}}), 0).unwrap_err();
+        assert_eq!(e.field, "material.shine");
+        let e = parse_case(&json!({"id": "a", "zzzzzz": 1}), 0).unwrap_err();
+        assert!(e.message.contains("the keys are id, tags"), "{e}");
+        assert!(
+            parse_case(&json!({"id": "a", "material": {"name": "bronze"}}), 0).is_ok(),
+            "a material's name is a label"
+        );
+    }
+
+    #[test]
+    fn ids_are_strings_kept_as_given_and_unique() {
+        let e = parse_case(&json!({}), 4).unwrap_err();
+        assert_eq!(e.field, "cases[4]");
+        let e = parse_case(&json!({"id": 123, "vertex": [0, 0, 0]}), 0).unwrap_err();
+        assert!(e.field == "id" && e.message.contains("123"), "{e}");
+        let cases = parse_cases(
+            r#"[{"id": "x", "vertex": [0,0,0]}, {"id": "y"}, {"id": "x", "normal": [0,1,0]}, {"vertex": [1,1,1]}]"#,
+        )
+        .unwrap();
+        let ids: Vec<&str> = cases.iter().map(|(id, _)| id.as_str()).collect();
+        assert_eq!(ids, ["x", "y", "x", "case3"]);
+        assert!(cases[0].1.is_ok() && cases[1].1.is_ok() && cases[3].1.is_ok());
+        assert!(cases[2].1.as_ref().unwrap_err().message.contains("earlier case"));
+        let e = parse_case(&json!({"id": "a", "light": {}, "lights": []}), 0).unwrap_err();
+        assert!(e.message.contains("not both"), "{e}");
     }
 
     #[test]

@@ -202,6 +202,7 @@ pub struct View {
     /// Move gluCylinder (z from 0 to 0.5) to be centred on the origin (the demo does not).
     pub cylinder_centered: bool,
     /// The colour of uncovered pixels (the demo: black).
+    #[serde(deserialize_with = "crate::formats::strict::exact")]
     pub background: [f32; 3],
     /// The OBJ file shown when the object is [`ObjectKind::Obj`] (a path; relative paths
     /// in a scene file are taken from the scene file's folder when it is opened).
