@@ -308,10 +308,16 @@ pub struct CaseArgs {
     pub scenes: Vec<PathBuf>,
 }
 
-/// Runs a subcommand; the exit code is 0 on success, 2 on input that cannot be used.
+/// Runs a subcommand; the exit code is 0 on success, 2 on input that cannot be used, 1
+/// when `eval` evaluated a file some of whose cases failed.
 pub fn run(command: Command) -> ExitCode {
     let r = match command {
-        Command::Eval(a) => eval(&a),
+        Command::Eval(a) => {
+            return eval(&a).unwrap_or_else(|e| {
+                eprintln!("phonglab: {e:#}");
+                ExitCode::from(2)
+            });
+        }
         Command::Explain(a) => explain_cmd(&a),
         Command::Exercise(a) => crate::exercise_cmd::run(&a),
         Command::Shader(a) => shader_cmd(&a),
@@ -329,8 +335,8 @@ pub fn run(command: Command) -> ExitCode {
     }
 }
 
-fn read(path: &Path) -> Result<String> {
-    std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))
+fn read(path: &Path, cap: u64, what: &str) -> Result<String> {
+    crate::input_file::read_text_capped(path, cap, what).map_err(anyhow::Error::msg)
 }
 
 fn evaluate(scene: &Scene, precision: Precision, options: EvalOptions, clamp: bool) -> Result<CaseColors, String> {
@@ -341,9 +347,16 @@ fn evaluate(scene: &Scene, precision: Precision, options: EvalOptions, clamp: bo
     r.map_err(|e| e.to_string())
 }
 
-/// Evaluates every case of a glref case file; prints `{"results": [...]}`.
-pub fn eval_text(text: &str, precision: Precision, options: EvalOptions, clamp: bool) -> Result<serde_json::Value> {
+/// Evaluates every case of a glref case file: `{"results": [...]}`, and how many cases
+/// failed (did not fit the schema, or set a parameter OpenGL refuses).
+pub fn eval_text(
+    text: &str,
+    precision: Precision,
+    options: EvalOptions,
+    clamp: bool,
+) -> Result<(serde_json::Value, usize)> {
     let cases = glref::parse_cases(text).context("not a case file")?;
+    let mut failed = 0;
     let results: Vec<serde_json::Value> = cases
         .iter()
         .map(|(id, case)| {
@@ -351,23 +364,30 @@ pub fn eval_text(text: &str, precision: Precision, options: EvalOptions, clamp: 
                 Ok(c) => evaluate(&c.scene, precision, options, clamp),
                 Err(e) => Err(e.to_string()),
             };
+            failed += usize::from(r.is_err());
             glref::result_json(id, &r)
         })
         .collect();
-    Ok(serde_json::json!({ "results": results }))
+    Ok((serde_json::json!({ "results": results }), failed))
 }
 
-fn eval(a: &EvalArgs) -> Result<()> {
-    let text = read(&a.cases)?;
-    let out = eval_text(&text, a.precision, EvalOptions::with_pow(a.pow.into()), a.clamp)
+/// `eval`: the results on stdout; exit 1 (after printing them) when any case failed.
+fn eval(a: &EvalArgs) -> Result<ExitCode> {
+    let text = read(&a.cases, crate::input_file::MAX_CASE_BYTES, "case files")?;
+    let (out, failed) = eval_text(&text, a.precision, EvalOptions::with_pow(a.pow.into()), a.clamp)
         .with_context(|| format!("{}", a.cases.display()))?;
     println!("{}", serde_json::to_string_pretty(&out)?);
-    Ok(())
+    let all = out["results"].as_array().map_or(0, Vec::len);
+    if failed > 0 {
+        eprintln!("phonglab: {failed} of {all} cases failed (their \"error\" says why)");
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
 }
 
 /// Reads and checks a scene file.
 pub fn load_scene_file(path: &Path) -> Result<phonglab_core::Document> {
-    let text = read(path)?;
+    let text = read(path, crate::input_file::MAX_SCENE_BYTES, "scene files")?;
     phonglab_core::Document::from_toml_in(&text, path.parent()).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
 }
 
@@ -459,6 +479,8 @@ fn render(a: &RenderArgs) -> Result<()> {
         ShadingArg::Flat => Shading::Flat,
     });
     let size = a.size as usize;
+    crate::atomic_write::check_file_destination(&a.output)?;
+    let mut notes = Vec::new();
     let bench_scene;
     let bench_mesh;
     let setup;
@@ -504,6 +526,9 @@ fn render(a: &RenderArgs) -> Result<()> {
             }
         }
         doc.validate().context("the scene to render")?;
+        if doc.view.object == ObjectKind::Obj {
+            notes = doc.view.obj_mesh()?.notes.clone();
+        }
         doc_mesh = doc.view.mesh();
         setup = doc.shaded_setup(a.pow.into());
         let mut job = setup.job(&doc_mesh);
@@ -524,5 +549,8 @@ fn render(a: &RenderArgs) -> Result<()> {
         100.0 * img.coverage(),
         stats.evaluations
     );
+    for note in notes {
+        eprintln!("note: {note}");
+    }
     Ok(())
 }

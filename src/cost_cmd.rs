@@ -174,11 +174,18 @@ pub fn chart_png(studies: &[Study], ppp: f32) -> (usize, usize, Vec<u8>) {
     (canvas.width, canvas.height, canvas.rgba8())
 }
 
-/// `phonglab cost`: the studies, their tables on stdout, and the files.
+/// Is `name` a file of a cost report (so a new report in the same folder replaces it)?
+pub fn belongs_to_a_report(name: &str) -> bool {
+    matches!(name, "cost.csv" | "cost.md" | "cost.png") || (name.starts_with("heat-") && name.ends_with(".png"))
+}
+
+/// `phonglab cost`: the studies, their tables on stdout, and the files, written as one
+/// report ([`crate::atomic_write::write_set`]) after the folder was tried before the study.
 pub fn run(a: &CostRun) -> Result<()> {
+    crate::atomic_write::check_folder_destination(&a.out)?;
     let pool = rayon::ThreadPoolBuilder::new().num_threads(a.threads).build()?;
     let studies = pool.install(|| studies(a))?;
-    std::fs::create_dir_all(&a.out).with_context(|| format!("cannot create {}", a.out.display()))?;
+    let mut set = crate::atomic_write::FileSet::default();
     let mut csv = String::new();
     for (i, s) in studies.iter().enumerate() {
         println!("{}", table(s));
@@ -197,17 +204,16 @@ pub fn run(a: &CostRun) -> Result<()> {
                     s.object.label().to_lowercase(),
                     p.variant.shading.label().to_lowercase()
                 );
-                crate::image_io::write_png(&a.out.join(name), s.size, s.size, &rgba)?;
+                set.add(name, crate::image_io::encode_png(s.size, s.size, &rgba)?);
             }
         }
     }
-    let csv_path = a.out.join("cost.csv");
-    std::fs::write(&csv_path, &csv).with_context(|| format!("cannot write {}", csv_path.display()))?;
-    let md_path = a.out.join("cost.md");
-    std::fs::write(&md_path, markdown_tables(&csv)?).with_context(|| format!("cannot write {}", md_path.display()))?;
+    let tables = markdown_tables(&csv)?;
+    set.add("cost.csv", csv);
+    set.add("cost.md", tables);
     let (w, h, rgba) = chart_png(&studies, 1.5);
-    let png_path = a.out.join("cost.png");
-    crate::image_io::write_png(&png_path, w, h, &rgba)?;
-    eprintln!("wrote {}, {} and the heat maps", csv_path.display(), png_path.display());
+    set.add("cost.png", crate::image_io::encode_png(w, h, &rgba)?);
+    crate::atomic_write::write_set(&a.out, &set, belongs_to_a_report)?;
+    eprintln!("wrote {} in {}", set, a.out.display());
     Ok(())
 }

@@ -5,15 +5,18 @@
 //! writes `exercise-KK.md` (the sheet), `exercise-KK-key.md` (the answers) and
 //! `exercise-KK.toml` (the scene, which the app and every command open), `index.md`
 //! listing them, and `exercises.pdf`, every sheet and key ready to print. The same seed gives the same files, byte for byte.
+//! The set is written as one: a folder holds one whole set, never parts of two.
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use phonglab_core::exercise::{Effect, Exercise, Level, Spec, generate, sheet_markdown};
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::{Document, Engine, Rules};
+
+use crate::atomic_write::FileSet;
 
 /// `phonglab exercise`.
 #[derive(Args, Debug)]
@@ -86,12 +89,25 @@ fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
     Ok(Spec::level(level, rules))
 }
 
-fn write(path: &Path, text: &str) -> Result<()> {
-    std::fs::write(path, text).with_context(|| format!("cannot write {}", path.display()))
+/// Is `name` a file of an exercise set (so a new set in the same folder replaces it)?
+pub fn belongs_to_a_set(name: &str) -> bool {
+    let stem = name.strip_suffix(".md").or_else(|| name.strip_suffix(".toml"));
+    match stem {
+        Some("index") => name == "index.md",
+        Some(stem) => stem.strip_prefix("exercise-").is_some_and(|rest| {
+            let rest = rest.strip_suffix("-key").unwrap_or(rest);
+            let (number, mview) = rest.split_once("-mview").unwrap_or((rest, "1"));
+            !number.is_empty()
+                && number.bytes().all(|b| b.is_ascii_digit())
+                && mview.len() == 1
+                && mview.bytes().all(|b| b.is_ascii_digit())
+        }),
+        None => name == "exercises.pdf",
+    }
 }
 
 /// The worksheet as exercise 0: its five modelviews, one sheet, with the values it prints.
-fn worksheet_sheet(out: &Path) -> Result<String> {
+fn worksheet_sheet(set: &mut FileSet) -> Result<String> {
     let mut sheet = String::from(
         "# Exercise 0: the worksheet\n\nThe worksheet's own scene (bronze, the light at (0, 0, 90), the vertex (-512, -384, 0) with normal (0, 0, 1)) under each of its five modelviews, `mview1` to `mview5`. Compute every step for each.\n\n",
     );
@@ -103,7 +119,7 @@ fn worksheet_sheet(out: &Path) -> Result<String> {
             .find(|d| d.camera == phonglab_core::CameraSpec::Worksheet(k))
             .context("the worksheet's documents")?;
         let file = format!("exercise-00-mview{k}.toml");
-        write(&out.join(&file), &doc.to_toml()?)?;
+        set.add(file.clone(), doc.to_toml()?);
         let rows = phonglab_core::transform::mat4_rows(&doc.scene.eye_from_world);
         let _ = writeln!(sheet, "## mview{k} ({file})\n\n```");
         for r in rows {
@@ -112,8 +128,8 @@ fn worksheet_sheet(out: &Path) -> Result<String> {
         let _ = writeln!(sheet, "```\n");
         key.push_str(&answer_key(&doc, &file)?.replace("# Answers: ", "## "));
     }
-    write(&out.join("exercise-00.md"), &sheet)?;
-    write(&out.join("exercise-00-key.md"), &key)?;
+    set.add("exercise-00.md", sheet);
+    set.add("exercise-00-key.md", key);
     Ok("- [Exercise 0: the worksheet](exercise-00.md) ([answers](exercise-00-key.md))\n".into())
 }
 
@@ -166,11 +182,12 @@ pub fn pdf(documents: &[String]) -> Result<Vec<u8>> {
     doc.finish().map_err(|e| anyhow::anyhow!("cannot write the PDF: {e:?}"))
 }
 
-/// Writes the exercises; returns them.
-pub fn write_exercises(a: &ExerciseArgs) -> Result<Vec<Exercise>> {
+/// The exercises and the files of their set: the sheets, keys and scene files, `index.md`
+/// and `exercises.pdf` (nothing is written).
+pub fn exercise_set(a: &ExerciseArgs) -> Result<(Vec<Exercise>, FileSet)> {
     let spec = spec_of(a)?;
     let exercises = generate(a.seed, a.count as usize, &spec).map_err(|e| anyhow::anyhow!(e))?;
-    std::fs::create_dir_all(&a.out).with_context(|| format!("cannot create {}", a.out.display()))?;
+    let mut set = FileSet::default();
     let names: Vec<&str> = spec.effects.iter().map(|e| e.name()).collect();
     let mut index = format!(
         "# Exercises, seed {}\n\nEffects: {}. Rules: {}. Each sheet has its scene file (open it in phonglab) and its answers.\n\n",
@@ -180,27 +197,36 @@ pub fn write_exercises(a: &ExerciseArgs) -> Result<Vec<Exercise>> {
     );
     let mut printable = Vec::new();
     if a.worksheet {
-        index.push_str(&worksheet_sheet(&a.out)?);
+        index.push_str(&worksheet_sheet(&mut set)?);
         for f in ["exercise-00.md", "exercise-00-key.md"] {
-            printable.push(std::fs::read_to_string(a.out.join(f))?);
+            let text = set.get(f).map(|b| String::from_utf8_lossy(b).into_owned()).unwrap_or_default();
+            printable.push(text);
         }
     }
     for (i, ex) in exercises.iter().enumerate() {
         let stem = format!("exercise-{:02}", i + 1);
         let toml = format!("{stem}.toml");
-        write(&a.out.join(&toml), &ex.doc.to_toml()?)?;
+        set.add(toml.clone(), ex.doc.to_toml()?);
         let sheet = format!("{}\nScene file: `{toml}`.\n", sheet_markdown(ex));
-        write(&a.out.join(format!("{stem}.md")), &sheet)?;
+        set.add(format!("{stem}.md"), sheet.clone());
         let key = answer_key(&ex.doc, &toml)?;
-        write(&a.out.join(format!("{stem}-key.md")), &key)?;
+        set.add(format!("{stem}-key.md"), key.clone());
         printable.push(sheet);
         printable.push(key);
         let _ = writeln!(index, "- [{}]({stem}.md) ([answers]({stem}-key.md))", ex.doc.name);
     }
     let _ = writeln!(index, "\nPrintable: [exercises.pdf](exercises.pdf) (each sheet, then its answers).");
-    write(&a.out.join("index.md"), &index)?;
-    let bytes = pdf(&printable)?;
-    std::fs::write(a.out.join("exercises.pdf"), bytes).context("cannot write exercises.pdf")?;
+    set.add("index.md", index);
+    set.add("exercises.pdf", pdf(&printable)?);
+    Ok((exercises, set))
+}
+
+/// Writes the exercises as one set ([`crate::atomic_write::write_set`]): the folder ends
+/// with the new set whole, or as it was; returns them.
+pub fn write_exercises(a: &ExerciseArgs) -> Result<Vec<Exercise>> {
+    crate::atomic_write::check_folder_destination(&a.out)?;
+    let (exercises, set) = exercise_set(a)?;
+    crate::atomic_write::write_set(&a.out, &set, belongs_to_a_set)?;
     Ok(exercises)
 }
 

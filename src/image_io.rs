@@ -4,14 +4,24 @@ use std::path::Path;
 
 use anyhow::{Context, Result};
 
-/// Writes RGBA8 pixels (rows top to bottom) as a PNG.
-pub fn write_png(path: &Path, width: usize, height: usize, rgba: &[u8]) -> Result<()> {
-    let file = std::fs::File::create(path).with_context(|| format!("cannot create {}", path.display()))?;
-    let mut enc = png::Encoder::new(std::io::BufWriter::new(file), width as u32, height as u32);
+/// Encodes RGBA8 pixels (rows top to bottom) as the bytes of a PNG file, every chunk
+/// written and the encoder finished with its errors checked (dropping it would ignore them).
+pub fn encode_png(width: usize, height: usize, rgba: &[u8]) -> Result<Vec<u8>> {
+    let mut bytes = Vec::new();
+    let mut enc = png::Encoder::new(&mut bytes, width as u32, height as u32);
     enc.set_color(png::ColorType::Rgba);
     enc.set_depth(png::BitDepth::Eight);
-    let mut w = enc.write_header().with_context(|| format!("cannot write {}", path.display()))?;
-    w.write_image_data(rgba).with_context(|| format!("cannot write {}", path.display()))?;
+    let mut w = enc.write_header().context("cannot encode the PNG")?;
+    w.write_image_data(rgba).context("cannot encode the PNG")?;
+    w.finish().context("cannot encode the PNG")?;
+    Ok(bytes)
+}
+
+/// Writes RGBA8 pixels (rows top to bottom) as a PNG, whole or not at all
+/// ([`crate::atomic_write::write`]).
+pub fn write_png(path: &Path, width: usize, height: usize, rgba: &[u8]) -> Result<()> {
+    let bytes = encode_png(width, height, rgba)?;
+    crate::atomic_write::write(path, &bytes)?;
     Ok(())
 }
 

@@ -1,6 +1,7 @@
 //! The phonglab app and CLI, as a library so tests drive them headless.
 
 pub mod app;
+pub mod atomic_write;
 pub mod bench;
 pub mod cli;
 pub mod cost_cmd;
@@ -8,4 +9,6 @@ pub mod egui_cpu;
 pub mod exercise_cmd;
 pub mod gpu;
 pub mod image_io;
+pub mod input_file;
+pub mod platform;
 pub mod scenes;

@@ -40,7 +40,9 @@ fn num(v: &serde_json::Value) -> f64 {
 #[test]
 fn eval_prints_every_public_case_with_errors_in_place() {
     let o = phonglab(&["eval", "tests/data/cases_public.json"]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    // Four public cases set parameters OpenGL refuses: printed, counted, and exit 1.
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("4 of 346 cases failed"), "{}", stderr(&o));
     let out: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert_eq!(out["results"].as_array().unwrap().len(), 346);
     // The worksheet's known value (Mesa's, with the light-model ambient 0).
@@ -92,11 +94,75 @@ fn eval_reports_schema_errors_per_case() {
         r#"[{"id": "ok"}, {"id": "broken", "normal": [0, 1]}, {"id": "cut", "lights": [{"spot_cutoff": 91}]}]"#,
     );
     let o = phonglab(&["eval", f.to_str().unwrap()]);
-    assert!(o.status.success());
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("2 of 3 cases failed"), "{}", stderr(&o));
     let out: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert!(result(&out, "ok")["error"].is_null());
     assert!(result(&out, "broken")["error"].as_str().unwrap().contains("normal"));
     assert!(result(&out, "cut")["error"].as_str().unwrap().contains("[0, 90], or 180"));
+}
+
+#[test]
+fn eval_refuses_misspelt_keys_odd_ids_and_empty_cases() {
+    let f = temp_file(
+        "strict.json",
+        r#"[{"id": "typo", "lights": [{"constant_atenuation": 2}]}, {}, {"id": 123, "vertex": [0,0,0]},
+            {"id": "twice", "vertex": [0,0,0]}, {"id": "twice", "vertex": [1,0,0]}, {"id": "fine", "vertex": [0,0,0]}]"#,
+    );
+    let o = phonglab(&["eval", f.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("4 of 6 cases failed"), "{}", stderr(&o));
+    let out: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let r = out["results"].as_array().unwrap();
+    let ids: Vec<&str> = r.iter().map(|x| x["id"].as_str().unwrap()).collect();
+    assert_eq!(ids, ["typo", "case1", "123", "twice", "twice", "fine"], "ids as given");
+    let err = |i: usize| r[i]["error"].as_str().unwrap_or("").to_string();
+    assert!(err(0).contains("did you mean \"constant_attenuation\""), "{}", err(0));
+    assert!(err(1).contains("empty case"), "{}", err(1));
+    assert!(err(2).contains("non-empty string"), "{}", err(2));
+    assert!(r[3]["error"].is_null() && err(4).contains("earlier case"), "{}", err(4));
+    assert!(r[5]["error"].is_null());
+    let ok = temp_file("all-good.json", r#"[{"id": "a", "vertex": [0, 0, 0]}]"#);
+    assert!(phonglab(&["eval", ok.to_str().unwrap()]).status.success(), "no failure, exit 0");
+}
+
+#[test]
+fn scene_files_are_strict_and_their_errors_short() {
+    for (text, want) in [
+        ("[[lights]]\nattenuation = [1, 0.05, 0.01, nan]\n", "line 2, column 15: expected 3 numbers, found 4"),
+        ("[[lights]]\nspot_direction = [0, -2.5, -1.5, 99]\n", "line 2, column 18: expected 3 numbers, found 4"),
+        (
+            "[vertex]\nposition = [0, 1, 0]\nnormal = [0, 1, 0, 5, 6]\n",
+            "line 3, column 10: expected 3 numbers, found 5",
+        ),
+        (
+            "[camera]\nkind = \"look-at\"\neye = [0, 1.2, 3, 4]\ncentre = [0, 0, 0]\nup = [0, 1, 0]\n",
+            "line 3, column 7: expected 3 numbers, found 4",
+        ),
+        ("[material]\nshinyness = 3\n", "did you mean `shininess`?"),
+        ("[view]\nbackground = [0, 0, 0, 1]\n", "expected 3 numbers, found 4"),
+        ("", "the scene file is empty"),
+        ("# only a comment\n", "the scene file is empty"),
+    ] {
+        let f = temp_file("strict.toml", text);
+        let o = phonglab(&["explain", f.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2), "{text}");
+        assert!(stderr(&o).contains(want), "{text}: {}", stderr(&o));
+    }
+    // A line of 300 000 numbers (900 kB) gives a message of a few hundred characters, not megabytes.
+    let huge = format!("[vertex]\nnormal = [0, 0, 1]\nposition = [{}]\n", vec!["1"; 300_000].join(", "));
+    let f = temp_file("huge.toml", &huge);
+    let o = phonglab(&["explain", f.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).len() < 600, "{} bytes: {}", stderr(&o).len(), stderr(&o));
+    assert!(stderr(&o).contains("line 3"), "{}", stderr(&o));
+    // Not a regular file: refused at once rather than read until the memory runs out.
+    let o = phonglab(&["explain", "/dev/zero"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("not a regular file"), "{}", stderr(&o));
+    // A name alone is a scene with OpenGL's defaults.
+    let f = temp_file("named.toml", "name = \"defaults\"\n");
+    assert!(phonglab(&["explain", f.to_str().unwrap()]).status.success());
 }
 
 #[test]
@@ -269,8 +335,10 @@ fn render_obj_shades_a_users_mesh_and_refuses_a_bad_one_with_its_line() {
     let png = obj.with_file_name("pyramid.png");
     let o = phonglab(&["render", "--obj", obj.to_str().unwrap(), "--output", png.to_str().unwrap(), "--size", "128"]);
     assert!(o.status.success(), "{}", stderr(&o));
-    // The square base fans into 2 triangles: 6 in all.
+    // The square base fans into 2 triangles: 6 in all; the notes say what was done.
     assert!(stderr(&o).contains("6 triangles"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("note: faces of more than 3 corners"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("note: centred and scaled"), "{}", stderr(&o));
     assert!(std::fs::metadata(&png).unwrap().len() > 100);
 
     // A scene file naming the mesh relative to itself.
@@ -283,11 +351,32 @@ fn render_obj_shades_a_users_mesh_and_refuses_a_bad_one_with_its_line() {
         ("nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n", "line 3: a vertex needs 3 finite numbers"),
         ("range.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 9\n", "line 4: vertex index 9 is out of range"),
         ("two.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", "line 3: a face needs at least 3 corners"),
+        ("vt.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nf 1/99 2/1 3/1\n", "line 5: texture index 99 is out of range"),
     ] {
         let bad = temp_file(name, text);
         let o = phonglab(&["render", "--obj", bad.to_str().unwrap(), "--output", png.to_str().unwrap()]);
         assert!(!o.status.success());
         assert!(stderr(&o).contains(want), "{name}: {}", stderr(&o));
+    }
+
+    // Far from the origin or tiny, a mesh is fitted in f64 and drawn.
+    for (name, scale) in [("far.obj", "e20"), ("tiny.obj", "e-25")] {
+        let text = PYRAMID
+            .lines()
+            .map(|l| match l.strip_prefix("v ") {
+                Some(v) => {
+                    format!("v {}", v.split_whitespace().map(|x| format!("{x}{scale}")).collect::<Vec<_>>().join(" "))
+                }
+                None => l.to_string(),
+            })
+            .collect::<Vec<_>>()
+            .join("\n");
+        let f = temp_file(name, &text);
+        let o = phonglab(&["render", "--obj", f.to_str().unwrap(), "--output", png.to_str().unwrap(), "--size", "64"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let covered: f64 =
+            stderr(&o).split(" % covered").next().and_then(|s| s.rsplit(", ").next()).unwrap().parse().unwrap();
+        assert!(covered > 5.0, "{name}: {}", stderr(&o));
     }
 }
 

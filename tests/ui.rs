@@ -433,6 +433,25 @@ fn ctrl_s_saves_and_ctrl_o_opens() {
     assert_eq!(h.state().doc, saved);
 }
 
+#[test]
+fn ctrl_q_closes_the_window_which_saves_the_session() {
+    let mut h = harness();
+    let closes = |h: &Harness<'static, AppState>| {
+        h.output().viewport_output[&egui::ViewportId::ROOT]
+            .commands
+            .iter()
+            .any(|c| matches!(c, egui::ViewportCommand::Close))
+    };
+    h.run_steps(1);
+    assert!(!closes(&h));
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::Q);
+    h.run_steps(1);
+    assert!(h.state().ui.quit && closes(&h), "Ctrl+Q asks eframe to close (its on_exit saves the session)");
+    h.key_press(egui::Key::F1);
+    h.run_steps(2);
+    h.get_by_label("quit (the session is saved)");
+}
+
 /// Steps the UI until `done` holds (background work), failing after `secs` seconds.
 fn wait_for(h: &mut Harness<'static, AppState>, secs: u64, done: impl Fn(&AppState) -> bool) {
     let start = std::time::Instant::now();

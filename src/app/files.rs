@@ -1,7 +1,7 @@
 //! Scene files from the app: a path field with Open and Save, and files dropped on the
 //! window. A file that cannot be read, parsed or validated is refused with a message that
 //! names the line and column or the field, and the current scene stays as it was; a save
-//! writes a temporary file first and renames it, so a failed save leaves the old file whole.
+//! is written whole or not at all, so a failed save leaves the old file whole.
 
 use std::path::{Path, PathBuf};
 
@@ -10,16 +10,10 @@ use phonglab_core::Document;
 
 use super::state::{AppState, Message};
 
-/// Writes `doc` to `path` (through a temporary file beside it, renamed into place).
+/// Writes `doc` to `path`, whole or not at all ([`crate::atomic_write::write`]).
 pub fn write_document(doc: &Document, path: &Path) -> Result<(), String> {
     let text = doc.to_toml().map_err(|e| e.to_string())?;
-    let file_name = path.file_name().ok_or_else(|| format!("{} is not a file name", path.display()))?;
-    let tmp = path.with_file_name(format!(".{}.saving", file_name.to_string_lossy()));
-    std::fs::write(&tmp, text).map_err(|e| format!("cannot write {}: {e}", tmp.display()))?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        format!("cannot write {}: {e}", path.display())
-    })
+    crate::atomic_write::write(path, text.as_bytes()).map_err(|e| e.to_string())
 }
 
 /// The app's first scene when it is started with a file (`phonglab FILE.toml`): that file,
@@ -38,9 +32,9 @@ pub fn open(state: &mut AppState, path: &Path) {
     if is_obj(path) {
         return open_obj(state, path);
     }
-    match std::fs::read(path) {
+    match crate::input_file::read_capped(path, crate::input_file::MAX_SCENE_BYTES, "scene files") {
         Ok(bytes) => open_bytes(state, &bytes, path),
-        Err(e) => refuse(state, format!("cannot read {}: {e}", path.display())),
+        Err(e) => refuse(state, e),
     }
 }
 
@@ -158,9 +152,16 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
     let dropped = ctx.input(|i| i.raw.dropped_files.clone());
     let Some(file) = dropped.first() else { return };
     let path = file.path().to_path_buf();
-    match file.bytes() {
+    // A file on this machine is read with the scene files' cap; the integration's bytes
+    // otherwise.
+    let bytes = if path.exists() {
+        crate::input_file::read_capped(&path, crate::input_file::MAX_SCENE_BYTES, "scene files")
+    } else {
+        file.bytes().map_err(|e| format!("cannot read {}: {e}", path.display()))
+    };
+    match bytes {
         Ok(bytes) => open_bytes(state, &bytes, &path),
-        Err(e) => refuse(state, format!("cannot read {}: {e}", path.display())),
+        Err(e) => refuse(state, e),
     }
     if dropped.len() > 1 {
         let extra = format!(" ({} files were dropped; only the first is opened.)", dropped.len());

@@ -37,6 +37,8 @@ pub enum Action {
     Open,
     /// Save the scene to the typed path.
     Save,
+    /// Close the window, saving the session.
+    Quit,
 }
 
 /// (modifiers, key, shown as, action, description).
@@ -55,6 +57,7 @@ pub const SHORTCUTS: &[(Modifiers, Key, &str, Action, &str)] = &[
     (Modifiers::CTRL, Key::R, "Ctrl+R", Action::Reset, "reset to the worksheet"),
     (Modifiers::CTRL, Key::O, "Ctrl+O", Action::Open, "open the scene file at the typed path"),
     (Modifiers::CTRL, Key::S, "Ctrl+S", Action::Save, "save the scene to the typed path"),
+    (Modifiers::CTRL, Key::Q, "Ctrl+Q", Action::Quit, "quit (the session is saved)"),
     (
         Modifiers::NONE,
         Key::S,

@@ -13,11 +13,12 @@ pub mod help;
 pub mod layout;
 pub mod lobe;
 pub mod palette;
-pub mod persist;
 pub mod quiz;
 pub mod result;
+pub mod session;
 pub mod shaded;
 pub mod shader_panel;
+pub mod shutdown;
 pub mod state;
 pub mod vector_plot;
 pub mod view_cache;
@@ -40,6 +41,10 @@ fn apply_action(state: &mut AppState, action: help::Action) {
         }
         A::Reset => {
             state.reset_to_worksheet();
+            return;
+        }
+        A::Quit => {
+            state.ui.quit = true;
             return;
         }
         A::Open => return files::open_typed(state),
@@ -239,6 +244,10 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     for a in help::pressed(&ctx) {
         apply_action(state, a);
     }
+    if state.ui.quit {
+        // eframe then calls `on_exit`, which saves the session.
+        ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+    }
     files::dropped_files_ui(&ctx, state);
 
     let eval = match state.evaluate() {
@@ -398,64 +407,123 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     }
 }
 
-/// The eframe application.
+/// The eframe application: the state, and the session it is kept in.
 pub struct PhongLabApp {
     state: AppState,
+    session: session::Session,
+    shutdown: shutdown::Shutdown,
+    /// When the session was last written (or tried).
+    last_save: std::time::Instant,
+    /// The scene and layout last handed to `shutdown`, so an unchanged frame costs nothing.
+    kept: Option<(phonglab_core::Document, layout::Layout)>,
+}
+
+/// How often the session is written while the window is open (when it changed).
+const AUTOSAVE: std::time::Duration = std::time::Duration::from_secs(30);
+
+/// The state restored from `session` (the scene, the layout), with what the user should be
+/// told about it (`notices`: what was found when the session was opened).
+pub fn restore(session: &session::Session, notices: Vec<String>) -> AppState {
+    let mut state = AppState::worksheet();
+    state.ui.layout = layout::Layout::from_ron(session.get(layout::LAYOUT_KEY));
+    let mut said = notices;
+    match session::restore_document(session.get(session::DOCUMENT_KEY), session.dir()) {
+        Ok(Some((doc, note))) => {
+            state.doc = doc;
+            said.extend(note);
+        }
+        Ok(None) => {}
+        Err(m) => said.push(m),
+    }
+    for m in &said {
+        log::warn!("{m}");
+    }
+    if !said.is_empty() {
+        state.message = Some(Message::Refused(said.join(" ")));
+    }
+    state
+}
+
+/// Puts the state's lasting parts (the scene, the layout, the quiz) into the session.
+pub fn store(state: &AppState, session: &mut session::Session) {
+    if let Ok(text) = state.doc.to_toml() {
+        session.set(session::DOCUMENT_KEY, text);
+    }
+    session.set(layout::LAYOUT_KEY, state.ui.layout.to_ron());
+    if let Some(q) = state.quiz.to_ron() {
+        session.set(quiz::QUIZ_KEY, q);
+    }
 }
 
 impl PhongLabApp {
-    /// Restores the last session's document when there is one and it loads; otherwise
-    /// starts on the worksheet, saying why (`notice`: what was found before eframe started,
-    /// see [`persist::set_aside_unreadable_storage`]).
+    /// Restores the last session (see [`restore`]), then opens `file` when one is given.
     pub fn new(
         cc: &eframe::CreationContext<'_>,
-        notice: Option<String>,
+        (session, notices): (session::Session, Vec<String>),
         file: Option<std::path::PathBuf>,
         renderer: gpu_view::RendererChoice,
     ) -> Self {
-        let mut state = AppState::worksheet();
+        let mut state = restore(&session, notices);
         // The shaded view can run the scene's generated WGSL on eframe's adapter.
         state.gpu = cc.wgpu_render_state.as_ref().map(gpu_view::install);
         state.ui.renderer = renderer;
-        let text = cc.storage.and_then(|s| s.get_string(persist::DOCUMENT_KEY));
-        state.ui.layout =
-            layout::Layout::from_ron(cc.storage.and_then(|s| s.get_string(layout::LAYOUT_KEY)).as_deref());
-        let dir = eframe::storage_dir(persist::APP_ID);
-        match persist::restore_document(text.as_deref(), dir.as_deref()) {
-            Ok(Some(doc)) => state.doc = doc,
-            Ok(None) => {}
-            Err(m) => state.message = Some(Message::Refused(m)),
-        }
-        if let Some(m) = notice {
-            state.message = Some(Message::Refused(m));
-        }
         // A file named on the command line wins over the restored session.
         if let Some(path) = file {
             files::open_at_start(&mut state, &path);
         }
-        Self { state }
+        let shutdown = shutdown::Shutdown::install(&cc.egui_ctx);
+        Self { state, session, shutdown, last_save: std::time::Instant::now(), kept: None }
+    }
+
+    /// Writes the session when it changed; a failure is said in the window and the log.
+    fn save_session(&mut self) {
+        store(&self.state, &mut self.session);
+        self.last_save = std::time::Instant::now();
+        if let Err(e) = self.session.save() {
+            log::error!("{e}");
+            self.state.message = Some(Message::Refused(format!("The session could not be saved: {e}.")));
+        }
     }
 }
 
 impl eframe::App for PhongLabApp {
     fn ui(&mut self, ui: &mut Ui, _frame: &mut eframe::Frame) {
         app_ui(ui, &mut self.state);
+        let now = (&self.state.doc, &self.state.ui.layout);
+        if let Some(path) = self.session.writer()
+            && self.kept.as_ref().is_none_or(|(d, l)| (d, l) != now)
+        {
+            self.kept = Some((now.0.clone(), now.1.clone()));
+            store(&self.state, &mut self.session);
+            self.shutdown.keep(path, self.session.text());
+        }
+        if self.shutdown.requested() {
+            self.save_session();
+            ui.ctx().send_viewport_cmd(egui::ViewportCommand::Close);
+        } else if self.last_save.elapsed() >= AUTOSAVE {
+            self.save_session();
+        }
+        ui.ctx().request_repaint_after(AUTOSAVE);
     }
 
-    fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        if let Ok(text) = self.state.doc.to_toml() {
-            storage.set_string(persist::DOCUMENT_KEY, text);
-        }
-        storage.set_string(layout::LAYOUT_KEY, self.state.ui.layout.to_ron());
-        if let Some(q) = self.state.quiz.to_ron() {
-            storage.set_string(quiz::QUIZ_KEY, q);
-        }
+    fn on_exit(&mut self) {
+        self.save_session();
     }
 }
 
 /// Opens the window, on the scene file `file` when one is given, with the shaded view
-/// drawn as `renderer` says.
+/// drawn as `renderer` says. The session is phonglab's own (see [`session`]).
 pub fn run(file: Option<std::path::PathBuf>, renderer: gpu_view::RendererChoice) -> eframe::Result {
+    let opened = match crate::platform::storage_dir() {
+        Some(dir) => session::Session::open(&dir),
+        None => (
+            session::Session::in_memory(),
+            vec![
+                "There is no folder to keep the session in (HOME is not set): this window will not save its session."
+                    .into(),
+            ],
+        ),
+    };
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("phonglab")
@@ -463,10 +531,5 @@ pub fn run(file: Option<std::path::PathBuf>, renderer: gpu_view::RendererChoice)
             .with_min_inner_size([900.0, 600.0]),
         ..Default::default()
     };
-    let notice = eframe::storage_dir(persist::APP_ID).and_then(|d| persist::set_aside_unreadable_storage(&d));
-    eframe::run_native(
-        persist::APP_ID,
-        options,
-        Box::new(|cc| Ok(Box::new(PhongLabApp::new(cc, notice, file, renderer)))),
-    )
+    eframe::run_native("phonglab", options, Box::new(|cc| Ok(Box::new(PhongLabApp::new(cc, opened, file, renderer)))))
 }

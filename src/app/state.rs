@@ -68,6 +68,8 @@ pub struct UiState {
     pub scroll_to_step: bool,
     /// Which renderer draws the shaded view.
     pub renderer: super::gpu_view::RendererChoice,
+    /// Ctrl+Q was pressed: the window is closing (saving the session).
+    pub quit: bool,
 }
 
 impl Default for UiState {
@@ -86,6 +88,7 @@ impl Default for UiState {
             layout: Default::default(),
             scroll_to_step: false,
             renderer: Default::default(),
+            quit: false,
         }
     }
 }

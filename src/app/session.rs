@@ -1,0 +1,365 @@
+//! The app's session, kept by phonglab: what the window shows, restored at the next start.
+//!
+//! The session is a RON map of strings (the scene file's TOML under [`DOCUMENT_KEY`], the
+//! layout, the quiz) in `session.ron` in the storage folder ([`crate::platform::storage_dir`],
+//! or `PHONGLAB_SESSION_DIR`). It is written whole or not at all
+//! ([`crate::atomic_write::write`]), so a full disk leaves the last good session.
+//!
+//! One window owns the session at a time: it holds `session.lock` ([`std::fs::File::try_lock`],
+//! released by the system when the process ends, however it ends). A second window reads
+//! the session but never writes it, and says so.
+//!
+//! What can go wrong at the start, each said in the window and in the log:
+//! - `session.ron` does not parse: it is renamed `session-unreadable-<time>.ron`, and the
+//!   window starts on the worksheet;
+//! - the scene in it does not load: the text is kept in `phonglab-unreadable-<time>.toml`;
+//! - its mesh file has moved: the scene is kept, shown on the sphere, and the message names
+//!   the missing file;
+//! - `session.ron` is a folder, or the storage folder cannot be made: the window works but
+//!   does not save its session.
+
+use std::collections::BTreeMap;
+use std::fs::File;
+use std::path::{Path, PathBuf};
+
+use phonglab_core::Document;
+
+/// The key the scene is kept under (a scene file's TOML).
+pub const DOCUMENT_KEY: &str = "phonglab.document.toml";
+
+/// The session file's name in the storage folder.
+pub const SESSION_FILE: &str = "session.ron";
+
+/// The lock file's name in the storage folder.
+pub const LOCK_FILE: &str = "session.lock";
+
+/// Whether this window may write the session.
+#[derive(Debug)]
+enum Owner {
+    /// This window holds the lock (the file stays open while the window runs).
+    Owns(#[allow(dead_code)] File),
+    /// Another window holds it, or the session cannot be written; the reason.
+    ReadOnly(String),
+}
+
+/// The session: its values, where it lives, and whether this window may write it.
+#[derive(Debug)]
+pub struct Session {
+    dir: Option<PathBuf>,
+    values: BTreeMap<String, String>,
+    owner: Owner,
+    /// The text last written or read, so an unchanged session is not written again.
+    saved: Option<String>,
+}
+
+/// A file name in `dir` that does not exist yet: `{stem}-{unix seconds}[-n].{ext}`.
+fn fresh_path(dir: &Path, stem: &str, ext: &str) -> PathBuf {
+    let secs = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
+    let mut p = dir.join(format!("{stem}-{secs}.{ext}"));
+    let mut n = 1;
+    while p.exists() {
+        p = dir.join(format!("{stem}-{secs}-{n}.{ext}"));
+        n += 1;
+    }
+    p
+}
+
+impl Session {
+    /// A session that is neither read nor written (tests, and a machine with no storage).
+    pub fn in_memory() -> Self {
+        Session { dir: None, values: BTreeMap::new(), owner: Owner::ReadOnly("no storage folder".into()), saved: None }
+    }
+
+    /// Opens the session in `dir`: takes the lock if no other window has it, reads the
+    /// values. Returns the session and what the user should be told (empty when all is well).
+    pub fn open(dir: &Path) -> (Session, Vec<String>) {
+        let mut notices = Vec::new();
+        let mut session = Session {
+            dir: Some(dir.to_path_buf()),
+            values: BTreeMap::new(),
+            owner: Owner::ReadOnly(String::new()),
+            saved: None,
+        };
+        session.owner = match std::fs::create_dir_all(dir).and_then(|()| lock(dir)) {
+            Ok(Some(file)) => Owner::Owns(file),
+            Ok(None) => {
+                notices.push(format!(
+                    "Another phonglab window is open on this session ({}): this window shows its last saved scene but will not save its session. Use Save to keep your work in a file.",
+                    dir.display()
+                ));
+                Owner::ReadOnly("another window owns the session".into())
+            }
+            Err(e) => {
+                notices.push(format!(
+                    "The session folder {} cannot be used ({e}): this window will not save its session.",
+                    dir.display()
+                ));
+                Owner::ReadOnly(e.to_string())
+            }
+        };
+        let path = dir.join(SESSION_FILE);
+        if path.is_dir() {
+            notices.push(format!(
+                "The session file {} is a folder, so the last session cannot be read and this window will not save its session. Remove or rename that folder.",
+                path.display()
+            ));
+            session.owner = Owner::ReadOnly("the session file is a folder".into());
+            return (session, notices);
+        }
+        match std::fs::read(&path) {
+            Ok(bytes) => match parse(&bytes) {
+                Ok(values) => {
+                    session.values = values;
+                    session.saved = std::str::from_utf8(&bytes).ok().map(str::to_string);
+                }
+                Err(why) if session.may_write() => {
+                    let kept = fresh_path(dir, "session-unreadable", "ron");
+                    notices.push(match std::fs::rename(&path, &kept) {
+                        Ok(()) => format!(
+                            "The saved session could not be read ({why}); starting on the worksheet. The file is kept as {}.",
+                            kept.display()
+                        ),
+                        Err(e) => format!(
+                            "The saved session {} could not be read ({why}) nor set aside ({e}); starting on the worksheet.",
+                            path.display()
+                        ),
+                    });
+                }
+                Err(why) => notices.push(format!("The saved session could not be read ({why}).")),
+            },
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => session.read_eframe_storage(dir),
+            Err(e) => notices.push(format!("The saved session {} could not be read ({e}).", path.display())),
+        }
+        (session, notices)
+    }
+
+    /// Reads the session of phonglab versions that let eframe keep it (`app.ron`, the same
+    /// map), once: it is left as it was.
+    fn read_eframe_storage(&mut self, dir: &Path) {
+        if let Ok(bytes) = std::fs::read(dir.join("app.ron"))
+            && let Ok(values) = parse(&bytes)
+        {
+            self.values = values;
+        }
+    }
+
+    /// May this window write the session?
+    pub fn may_write(&self) -> bool {
+        matches!(self.owner, Owner::Owns(_))
+    }
+
+    /// Why this window does not write the session, when it does not.
+    pub fn not_saved_because(&self) -> Option<&str> {
+        match &self.owner {
+            Owner::Owns(_) => None,
+            Owner::ReadOnly(why) => Some(why),
+        }
+    }
+
+    /// Where the session is kept, when it is kept anywhere.
+    pub fn path(&self) -> Option<PathBuf> {
+        self.dir.as_ref().map(|d| d.join(SESSION_FILE))
+    }
+
+    /// The storage folder.
+    pub fn dir(&self) -> Option<&Path> {
+        self.dir.as_deref()
+    }
+
+    /// A value.
+    pub fn get(&self, key: &str) -> Option<&str> {
+        self.values.get(key).map(String::as_str)
+    }
+
+    /// Sets a value (written by the next [`Session::save`]).
+    pub fn set(&mut self, key: &str, value: String) {
+        self.values.insert(key.to_string(), value);
+    }
+
+    /// The session's text as it would be written.
+    pub fn text(&self) -> String {
+        ron::ser::to_string_pretty(&self.values, ron::ser::PrettyConfig::default()).unwrap_or_default()
+    }
+
+    /// Writes the session when it changed and this window owns it. `Ok(true)`: written.
+    pub fn save(&mut self) -> Result<bool, String> {
+        let (Some(path), true) = (self.path(), self.may_write()) else { return Ok(false) };
+        let text = self.text();
+        if self.saved.as_deref() == Some(text.as_str()) {
+            return Ok(false);
+        }
+        crate::atomic_write::write(&path, text.as_bytes()).map_err(|e| e.to_string())?;
+        self.saved = Some(text);
+        Ok(true)
+    }
+
+    /// A writer for this session's file that another thread can use (the signal handler),
+    /// when this window owns it.
+    pub fn writer(&self) -> Option<PathBuf> {
+        self.may_write().then(|| self.path()).flatten()
+    }
+}
+
+/// Takes the session's lock: `Ok(None)` when another process holds it.
+fn lock(dir: &Path) -> std::io::Result<Option<File>> {
+    let file = File::options().read(true).write(true).create(true).truncate(false).open(dir.join(LOCK_FILE))?;
+    match file.try_lock() {
+        Ok(()) => Ok(Some(file)),
+        Err(std::fs::TryLockError::WouldBlock) => Ok(None),
+        Err(std::fs::TryLockError::Error(e)) => Err(e),
+    }
+}
+
+fn parse(bytes: &[u8]) -> Result<BTreeMap<String, String>, String> {
+    let text = std::str::from_utf8(bytes).map_err(|e| e.to_string())?;
+    ron::from_str::<BTreeMap<String, String>>(text).map_err(|e| e.to_string())
+}
+
+/// The last session's document, from the text stored under [`DOCUMENT_KEY`], and a note
+/// when it was restored with a change (its mesh file is missing).
+///
+/// `Ok(None)`: nothing stored. `Err(message)`: the text does not load; it has been written
+/// to `phonglab-unreadable-<time>.toml` in `dir` (when given) and the message says where.
+pub fn restore_document(text: Option<&str>, dir: Option<&Path>) -> Result<Option<(Document, Option<String>)>, String> {
+    let Some(text) = text else { return Ok(None) };
+    let e = match Document::from_toml_keeping_missing_mesh(text, None) {
+        Ok(restored) => return Ok(Some(restored)),
+        Err(e) => e,
+    };
+    let kept = match dir {
+        Some(dir) => {
+            let p = fresh_path(dir, "phonglab-unreadable", "toml");
+            match std::fs::create_dir_all(dir)
+                .map_err(|e| e.to_string())
+                .and_then(|()| crate::atomic_write::write(&p, text.as_bytes()).map_err(|e| e.to_string()))
+            {
+                Ok(()) => format!("The scene is kept in {}.", p.display()),
+                Err(err) => format!("It could not be kept ({err})."),
+            }
+        }
+        None => "There is no storage folder to keep it in.".into(),
+    };
+    Err(format!("The last session's scene could not be restored ({e}); starting on the worksheet. {kept}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn temp_dir(name: &str) -> PathBuf {
+        let d = std::env::temp_dir().join(format!("phonglab-session-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    fn files(dir: &Path) -> Vec<String> {
+        let mut v: Vec<String> =
+            std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        v.sort();
+        v
+    }
+
+    #[test]
+    fn a_good_session_is_restored_and_an_empty_one_is_none() {
+        let doc = phonglab_core::Document::default();
+        let text = doc.to_toml().unwrap();
+        assert_eq!(restore_document(Some(&text), None), Ok(Some((doc, None))));
+        assert_eq!(restore_document(None, None), Ok(None));
+    }
+
+    #[test]
+    fn a_bad_scene_is_kept_beside_the_storage() {
+        let dir = temp_dir("scene");
+        let bad = "name = \"mine\"\n[material]\nshininess = 500\n";
+        let msg = restore_document(Some(bad), Some(&dir)).unwrap_err();
+        assert!(msg.contains("material.shininess") && msg.contains("starting on the worksheet"), "{msg}");
+        let kept = files(&dir);
+        assert_eq!(kept.len(), 1);
+        assert!(msg.contains(&kept[0]), "{msg}");
+        assert_eq!(std::fs::read_to_string(dir.join(&kept[0])).unwrap(), bad, "kept byte for byte");
+    }
+
+    #[test]
+    fn a_scene_whose_mesh_moved_is_kept_on_the_sphere() {
+        let mut doc = phonglab_core::Document::default();
+        doc.scene.material.shininess = 77.0;
+        let text = doc
+            .to_toml()
+            .unwrap()
+            .replace("object = \"sphere\"\n", "object = \"obj\"\nobj = \"/nowhere/phonglab-moved-mesh.obj\"\n");
+        let (back, note) = restore_document(Some(&text), None).unwrap().unwrap();
+        assert_eq!(back.scene.material.shininess, 77.0, "the scene is kept");
+        assert_eq!(back.view.object, phonglab_core::ObjectKind::Sphere);
+        assert_eq!(back.view.obj.as_deref(), Some("/nowhere/phonglab-moved-mesh.obj"));
+        let note = note.unwrap();
+        assert!(note.contains("/nowhere/phonglab-moved-mesh.obj") && note.contains("missing"), "{note}");
+    }
+
+    #[test]
+    fn the_session_is_saved_whole_and_read_back() {
+        let dir = temp_dir("save");
+        let (mut s, notices) = Session::open(&dir);
+        assert!(notices.is_empty() && s.may_write(), "{notices:?}");
+        s.set(DOCUMENT_KEY, "name = \"x\"".into());
+        assert_eq!(s.save(), Ok(true));
+        assert_eq!(s.save(), Ok(false), "unchanged: not written again");
+        s.set(DOCUMENT_KEY, "name = \"y\"".into());
+        let e = crate::atomic_write::with_fault(crate::atomic_write::Fault::AfterBytes(5), || s.save()).unwrap_err();
+        assert!(e.contains("unchanged"), "{e}");
+        drop(s);
+        let (s, _) = Session::open(&dir);
+        assert_eq!(s.get(DOCUMENT_KEY), Some("name = \"x\""), "the failed save left the last good session");
+        assert_eq!(files(&dir), [LOCK_FILE, SESSION_FILE], "no temporary file left");
+    }
+
+    #[test]
+    fn a_second_window_reads_but_does_not_write() {
+        let dir = temp_dir("two");
+        let (mut first, _) = Session::open(&dir);
+        first.set("k", "first".into());
+        first.save().unwrap();
+        // The lock is per open file description, so a second open in this process stands
+        // for a second process.
+        let (mut second, notices) = Session::open(&dir);
+        assert!(!second.may_write());
+        assert_eq!(second.not_saved_because(), Some("another window owns the session"));
+        assert!(notices[0].contains("Another phonglab window"), "{notices:?}");
+        assert_eq!(second.get("k"), Some("first"));
+        second.set("k", "second".into());
+        assert_eq!(second.save(), Ok(false));
+        drop(first);
+        let (third, notices) = Session::open(&dir);
+        assert!(third.may_write() && notices.is_empty(), "the lock went with the first window");
+        assert_eq!(third.get("k"), Some("first"));
+    }
+
+    #[test]
+    fn an_unreadable_session_is_set_aside_and_a_folder_is_reported() {
+        let dir = temp_dir("bad");
+        std::fs::write(dir.join(SESSION_FILE), "{\"phonglab.document.toml\": \"unterminated").unwrap();
+        let (s, notices) = Session::open(&dir);
+        assert!(s.may_write());
+        assert!(notices[0].contains("could not be read") && notices[0].contains("session-unreadable"), "{notices:?}");
+        assert!(!dir.join(SESSION_FILE).exists(), "moved, so it is not overwritten");
+        drop(s);
+
+        let dir = temp_dir("folder");
+        std::fs::create_dir(dir.join(SESSION_FILE)).unwrap();
+        let (mut s, notices) = Session::open(&dir);
+        assert!(notices[0].contains("is a folder"), "{notices:?}");
+        s.set("k", "v".into());
+        assert_eq!(s.save(), Ok(false), "not written into a folder's place");
+        assert!(dir.join(SESSION_FILE).is_dir());
+    }
+
+    #[test]
+    fn an_older_eframe_session_is_read() {
+        let dir = temp_dir("eframe");
+        let old = ron::to_string(&BTreeMap::from([(DOCUMENT_KEY.to_string(), "name = \"old\"".to_string())])).unwrap();
+        std::fs::write(dir.join("app.ron"), old).unwrap();
+        let (s, notices) = Session::open(&dir);
+        assert!(notices.is_empty());
+        assert_eq!(s.get(DOCUMENT_KEY), Some("name = \"old\""));
+    }
+}

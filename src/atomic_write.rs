@@ -1,0 +1,431 @@
+//! Every file phonglab writes is written whole or not at all: the one way to write a file.
+//!
+//! A single file ([`write`]) goes to a temporary file in the target's own folder, which is
+//! flushed, synced to the disk and closed with every error checked, then renamed over the
+//! target. A rename within one folder either happens or does not, so the target holds the
+//! old bytes or the new ones, never a part. A failure removes the temporary file, leaves
+//! the target untouched, and says what failed.
+//!
+//! A set of files that belong together (an exercise set, a cost report: [`write_set`]) is
+//! first written whole into a staging folder inside the target folder. Only when every file
+//! of it is on the disk are the old set's files moved aside and the new ones renamed into
+//! place; a failed rename moves everything back. So the folder holds the old set or the new
+//! set, never a mix, and files of the old set that the new one lacks (`exercise-07.md` after
+//! a set of five) go with the old set.
+//!
+//! [`check_file_destination`] and [`check_folder_destination`] try the destination before
+//! long work starts (`cost` runs for a quarter of a minute before it writes).
+//!
+//! Tests make the disk fail on purpose with [`with_fault`]: after N bytes, on the sync, on
+//! the close or on a rename, on the calling thread only.
+
+use std::cell::Cell;
+use std::fmt;
+use std::fs::File;
+use std::io::{self, Write};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// Why a file could not be written. The message names the file and says that the old one
+/// (or the old set) is untouched.
+#[derive(Debug, thiserror::Error)]
+#[error("cannot write {}: {what}: {reason}; {kept}", path.display())]
+pub struct WriteError {
+    /// The file or folder that was to be written.
+    pub path: PathBuf,
+    /// The step that failed: "create", "write", "sync", "close", "rename".
+    pub what: &'static str,
+    /// The system's reason (in the message, not a separate source, so it is said once).
+    pub reason: io::Error,
+    /// What the reader can rely on: "the old file is unchanged", "nothing was written", ...
+    pub kept: &'static str,
+}
+
+impl WriteError {
+    fn new(path: &Path, what: &'static str, source: io::Error, kept: &'static str) -> Self {
+        WriteError { path: path.to_path_buf(), what, reason: source, kept }
+    }
+}
+
+/// A failure injected by tests (see [`with_fault`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fault {
+    /// Writing fails once this many bytes of the file in hand have been written (a full
+    /// disk): each file of a set starts counting again.
+    AfterBytes(u64),
+    /// Syncing a file to the disk fails (a write-back error).
+    OnSync,
+    /// Closing a file fails (NFS reports late errors there).
+    OnClose,
+    /// The n-th rename (from 0) fails: for a set, n past the moves of the old files aside
+    /// fails a move into place.
+    OnRename(u32),
+}
+
+thread_local! {
+    static FAULT: Cell<Option<Fault>> = const { Cell::new(None) };
+    static RENAMES: Cell<u32> = const { Cell::new(0) };
+}
+
+/// Runs `f` with `fault` injected into every write on this thread (for tests).
+pub fn with_fault<R>(fault: Fault, f: impl FnOnce() -> R) -> R {
+    let before = FAULT.with(|c| c.replace(Some(fault)));
+    RENAMES.with(|c| c.set(0));
+    let r = f();
+    FAULT.with(|c| c.set(before));
+    r
+}
+
+fn fault() -> Option<Fault> {
+    FAULT.with(Cell::get)
+}
+
+fn injected(what: &str) -> io::Error {
+    io::Error::other(format!("{what} failed (injected by a test)"))
+}
+
+/// A file being written, counting bytes so a test can make the disk full at any point.
+struct Counted {
+    file: File,
+    written: u64,
+}
+
+impl Write for Counted {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        let buf = match fault() {
+            Some(Fault::AfterBytes(n)) if self.written + buf.len() as u64 > n => {
+                let room = n.saturating_sub(self.written) as usize;
+                if room == 0 {
+                    return Err(io::Error::new(io::ErrorKind::StorageFull, "no space left on device (injected)"));
+                }
+                &buf[..room]
+            }
+            _ => buf,
+        };
+        let n = self.file.write(buf)?;
+        self.written += n as u64;
+        Ok(n)
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        self.file.flush()
+    }
+}
+
+static COUNTER: AtomicU64 = AtomicU64::new(0);
+
+/// A name in `dir` for a temporary file or folder beside `name`, hidden and unique to this
+/// process and call.
+fn temporary_name(dir: &Path, name: &str) -> PathBuf {
+    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+    dir.join(format!(".{name}.{}.{n}.tmp", std::process::id()))
+}
+
+/// The folder a file path lives in (`.` for a bare file name).
+fn folder_of(path: &Path) -> &Path {
+    match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    }
+}
+
+fn file_name_of(path: &Path) -> io::Result<String> {
+    path.file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidInput, "not a file name"))
+}
+
+/// Closes `file`, reporting the close's own error (which `drop` would ignore).
+fn close(file: File) -> io::Result<()> {
+    if fault() == Some(Fault::OnClose) {
+        return Err(injected("close"));
+    }
+    crate::platform::close_file(file)
+}
+
+/// Writes `bytes` to a new file at `tmp`: create, write, flush, sync, close, each checked.
+/// On failure the file at `tmp` is removed and the failing step named.
+fn write_new(tmp: &Path, bytes: &[u8]) -> Result<(), (&'static str, io::Error)> {
+    let file = File::options().write(true).create_new(true).open(tmp).map_err(|e| ("create", e))?;
+    let mut out = Counted { file, written: 0 };
+    let result = (|| {
+        out.write_all(bytes).map_err(|e| ("write", e))?;
+        out.flush().map_err(|e| ("write", e))?;
+        if fault() == Some(Fault::OnSync) {
+            return Err(("sync", injected("sync")));
+        }
+        out.file.sync_all().map_err(|e| ("sync", e))?;
+        close(out.file).map_err(|e| ("close", e))
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(tmp);
+    }
+    result
+}
+
+fn rename(from: &Path, to: &Path) -> io::Result<()> {
+    if let Some(Fault::OnRename(n)) = fault() {
+        let k = RENAMES.with(|c| {
+            let k = c.get();
+            c.set(k + 1);
+            k
+        });
+        if k == n {
+            return Err(injected("rename"));
+        }
+    }
+    std::fs::rename(from, to)
+}
+
+/// Writes `bytes` to `path` whole or not at all (see the module's documentation).
+pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
+    const KEPT: &str = "the file there before (if any) is unchanged";
+    let name = file_name_of(path).map_err(|e| WriteError::new(path, "name", e, "nothing was written"))?;
+    if path.is_dir() {
+        let e = io::Error::new(io::ErrorKind::IsADirectory, "it is a folder");
+        return Err(WriteError::new(path, "create", e, "nothing was written"));
+    }
+    let dir = folder_of(path);
+    let tmp = temporary_name(dir, &name);
+    write_new(&tmp, bytes).map_err(|(what, e)| WriteError::new(path, what, e, KEPT))?;
+    if let Err(e) = rename(&tmp, path) {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(WriteError::new(path, "rename", e, KEPT));
+    }
+    crate::platform::sync_folder(dir);
+    Ok(())
+}
+
+/// Checks, before long work, that a file can be created in `path`'s folder (by creating
+/// and removing a temporary file there) and that `path` is not a folder.
+pub fn check_file_destination(path: &Path) -> Result<(), WriteError> {
+    const KEPT: &str = "nothing was written";
+    let name = file_name_of(path).map_err(|e| WriteError::new(path, "name", e, KEPT))?;
+    if path.is_dir() {
+        return Err(WriteError::new(
+            path,
+            "create",
+            io::Error::new(io::ErrorKind::IsADirectory, "it is a folder"),
+            KEPT,
+        ));
+    }
+    probe(folder_of(path), &name).map_err(|e| WriteError::new(path, "create", e, KEPT))
+}
+
+/// Checks, before long work, that the folder `dir` exists or can be made, and that files
+/// can be created in it.
+pub fn check_folder_destination(dir: &Path) -> Result<(), WriteError> {
+    const KEPT: &str = "nothing was written";
+    std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "create the folder", e, KEPT))?;
+    probe(dir, "probe").map_err(|e| WriteError::new(dir, "create a file in", e, KEPT))
+}
+
+fn probe(dir: &Path, name: &str) -> io::Result<()> {
+    let tmp = temporary_name(dir, name);
+    File::options().write(true).create_new(true).open(&tmp)?;
+    std::fs::remove_file(&tmp)
+}
+
+/// Files that belong together, written by [`write_set`]: names (no folders) and bytes.
+#[derive(Clone, Debug, Default)]
+pub struct FileSet {
+    /// The files, in the order they are written.
+    pub files: Vec<(String, Vec<u8>)>,
+}
+
+impl FileSet {
+    /// Adds a file.
+    pub fn add(&mut self, name: impl Into<String>, bytes: impl Into<Vec<u8>>) {
+        self.files.push((name.into(), bytes.into()));
+    }
+
+    /// The file's bytes, if the set has it.
+    pub fn get(&self, name: &str) -> Option<&[u8]> {
+        self.files.iter().find(|(n, _)| n == name).map(|(_, b)| b.as_slice())
+    }
+}
+
+/// Writes `set` into the folder `dir` (created if missing) as one: the folder ends with
+/// the whole new set, or, on any failure, exactly the files it had. Files already in `dir`
+/// for which `belongs` is true are the old set: they are replaced, or removed when the new
+/// set has no file of that name. Other files in `dir` are never touched.
+pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> Result<(), WriteError> {
+    const UNTOUCHED: &str = "the folder is unchanged";
+    std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "create the folder", e, UNTOUCHED))?;
+    let staging = temporary_name(dir, "phonglab-set");
+    std::fs::create_dir(&staging).map_err(|e| WriteError::new(dir, "create a staging folder in", e, UNTOUCHED))?;
+    let result = stage_and_swap(dir, &staging, set, &belongs);
+    let _ = std::fs::remove_dir_all(&staging);
+    result
+}
+
+fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&str) -> bool) -> Result<(), WriteError> {
+    const UNTOUCHED: &str = "the folder is unchanged";
+    for (name, bytes) in &set.files {
+        let target = dir.join(name);
+        write_new(&staging.join(name), bytes).map_err(|(what, e)| WriteError::new(&target, what, e, UNTOUCHED))?;
+    }
+    crate::platform::sync_folder(staging);
+    // The old set: every file the new one replaces, and every other member of it.
+    let new_names: Vec<&str> = set.files.iter().map(|(n, _)| n.as_str()).collect();
+    let mut old = Vec::new();
+    let entries = std::fs::read_dir(dir).map_err(|e| WriteError::new(dir, "list", e, UNTOUCHED))?;
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let is_file = entry.file_type().is_ok_and(|t| t.is_file());
+        if is_file && (new_names.contains(&name.as_str()) || belongs(&name)) {
+            old.push(name);
+        }
+    }
+    old.sort();
+    let aside = staging.join(".old");
+    std::fs::create_dir(&aside).map_err(|e| WriteError::new(dir, "create a staging folder in", e, UNTOUCHED))?;
+    let mut moved_aside = Vec::new();
+    let mut moved_in = Vec::new();
+    let undo = |moved_aside: &[String], moved_in: &[&str]| {
+        for name in moved_in {
+            let _ = std::fs::remove_file(dir.join(name));
+        }
+        for name in moved_aside {
+            let _ = std::fs::rename(aside.join(name), dir.join(name));
+        }
+    };
+    for name in &old {
+        if let Err(e) = rename(&dir.join(name), &aside.join(name)) {
+            undo(&moved_aside, &moved_in);
+            return Err(WriteError::new(&dir.join(name), "rename", e, UNTOUCHED));
+        }
+        moved_aside.push(name.clone());
+    }
+    for name in &new_names {
+        if let Err(e) = rename(&staging.join(name), &dir.join(name)) {
+            undo(&moved_aside, &moved_in);
+            return Err(WriteError::new(&dir.join(name), "rename", e, UNTOUCHED));
+        }
+        moved_in.push(name);
+    }
+    crate::platform::sync_folder(dir);
+    Ok(())
+}
+
+impl fmt::Display for FileSet {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let names: Vec<&str> = self.files.iter().map(|(n, _)| n.as_str()).collect();
+        write!(f, "{}", names.join(", "))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn temp_dir(name: &str) -> PathBuf {
+        let d = std::env::temp_dir().join(format!("phonglab-atomic-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    fn listing(dir: &Path) -> Vec<(String, Vec<u8>)> {
+        let mut v: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| {
+                let e = e.unwrap();
+                let bytes = if e.path().is_file() { std::fs::read(e.path()).unwrap() } else { b"<dir>".to_vec() };
+                (e.file_name().to_string_lossy().into_owned(), bytes)
+            })
+            .collect();
+        v.sort();
+        v
+    }
+
+    const FAULTS: [Fault; 6] = [
+        Fault::AfterBytes(0),
+        Fault::AfterBytes(1),
+        Fault::AfterBytes(4000),
+        Fault::OnSync,
+        Fault::OnClose,
+        Fault::OnRename(0),
+    ];
+
+    #[test]
+    fn a_failed_write_leaves_the_old_file_and_no_temporary() {
+        let dir = temp_dir("one");
+        let target = dir.join("out.png");
+        std::fs::write(&target, b"the good old file").unwrap();
+        let new = vec![7u8; 10_000];
+        for fault in FAULTS {
+            let e = with_fault(fault, || write(&target, &new)).unwrap_err();
+            assert_eq!(std::fs::read(&target).unwrap(), b"the good old file", "{fault:?}");
+            assert_eq!(listing(&dir).len(), 1, "{fault:?}: no temporary left: {:?}", listing(&dir));
+            let msg = e.to_string();
+            assert!(msg.contains("out.png") && msg.contains("unchanged"), "{msg}");
+        }
+        write(&target, &new).unwrap();
+        assert_eq!(std::fs::read(&target).unwrap(), new);
+        assert_eq!(listing(&dir).len(), 1);
+    }
+
+    #[test]
+    fn the_injected_fault_names_the_failing_step() {
+        let dir = temp_dir("steps");
+        let t = dir.join("a.txt");
+        let step = |f| with_fault(f, || write(&t, b"abc")).unwrap_err().what;
+        assert_eq!(step(Fault::AfterBytes(2)), "write");
+        assert_eq!(step(Fault::OnSync), "sync");
+        assert_eq!(step(Fault::OnClose), "close");
+        assert_eq!(step(Fault::OnRename(0)), "rename");
+        assert!(!t.exists(), "nothing was there, and nothing is");
+    }
+
+    #[test]
+    fn a_folder_or_a_missing_folder_is_refused_before_work() {
+        let dir = temp_dir("dest");
+        assert!(check_file_destination(&dir).is_err(), "a folder is not a file");
+        assert!(check_file_destination(&dir.join("missing/out.png")).is_err());
+        check_file_destination(&dir.join("out.png")).unwrap();
+        check_folder_destination(&dir.join("new/deeper")).unwrap();
+        std::fs::write(dir.join("plain"), b"x").unwrap();
+        assert!(check_folder_destination(&dir.join("plain")).is_err(), "a file is not a folder");
+        assert!(check_folder_destination(Path::new("/proc/phonglab-cannot-be-here")).is_err());
+        assert_eq!(listing(&dir).iter().filter(|(n, _)| n.ends_with(".tmp")).count(), 0);
+    }
+
+    fn old_set(dir: &Path) {
+        for (n, b) in
+            [("a.md", "old a"), ("b.md", "old b"), ("c.md", "old c, not in the new set"), ("mine.txt", "user")]
+        {
+            std::fs::write(dir.join(n), b).unwrap();
+        }
+    }
+
+    fn new_set() -> FileSet {
+        let mut s = FileSet::default();
+        s.add("a.md", vec![b'A'; 5000]);
+        s.add("b.md", "new b");
+        s.add("d.md", "new d");
+        s
+    }
+
+    #[test]
+    fn a_set_is_written_whole_or_the_folder_is_unchanged() {
+        let belongs = |n: &str| n.ends_with(".md");
+        let renames = (1..6).map(Fault::OnRename);
+        for fault in FAULTS.iter().copied().chain(renames) {
+            let dir = temp_dir("set");
+            old_set(&dir);
+            let before = listing(&dir);
+            let r = with_fault(fault, || write_set(&dir, &new_set(), belongs));
+            assert!(r.is_err(), "{fault:?} must fail");
+            assert_eq!(listing(&dir), before, "{fault:?}: the old set, untouched, and no staging left");
+        }
+        let dir = temp_dir("set-ok");
+        old_set(&dir);
+        write_set(&dir, &new_set(), belongs).unwrap();
+        let after = listing(&dir);
+        let names: Vec<&str> = after.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(names, ["a.md", "b.md", "d.md", "mine.txt"], "c.md went with the old set; mine.txt stays");
+        assert_eq!(after[1].1, b"new b");
+        assert_eq!(after[3].1, b"user");
+    }
+}

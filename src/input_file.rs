@@ -1,0 +1,69 @@
+//! Reading a file a user names: a regular file, at most a size cap, checked before reading
+//! (`/dev/zero` or a stray 2 GB file is refused at once instead of filling the memory).
+
+use std::io::Read;
+use std::path::Path;
+
+/// The largest scene file read: a scene file is a few kilobytes.
+pub const MAX_SCENE_BYTES: u64 = 1 << 20;
+
+/// The largest case file (glref JSON) read: the public cases are 1.3 MB.
+pub const MAX_CASE_BYTES: u64 = 256 << 20;
+
+/// Reads the file at `path` as bytes: refused when it is not a regular file or is larger
+/// than `cap` bytes (`what` names the kind of file in the message).
+pub fn read_capped(path: &Path, cap: u64, what: &str) -> Result<Vec<u8>, String> {
+    let cannot = |e: std::io::Error| format!("cannot read {}: {e}", path.display());
+    let meta = std::fs::metadata(path).map_err(cannot)?;
+    if !meta.is_file() {
+        return Err(format!("{} is not a regular file", path.display()));
+    }
+    let too_large = |n: u64| {
+        format!(
+            "{} is {}; phonglab reads {what} of at most {}",
+            path.display(),
+            phonglab_core::mesh::obj::describe_bytes(n),
+            phonglab_core::mesh::obj::describe_bytes(cap)
+        )
+    };
+    if meta.len() > cap {
+        return Err(too_large(meta.len()));
+    }
+    let mut bytes = Vec::with_capacity(meta.len() as usize);
+    std::fs::File::open(path).and_then(|f| f.take(cap + 1).read_to_end(&mut bytes)).map_err(cannot)?;
+    // The file may have grown since its size was read.
+    if bytes.len() as u64 > cap {
+        return Err(too_large(bytes.len() as u64));
+    }
+    Ok(bytes)
+}
+
+/// [`read_capped`], as UTF-8 text.
+pub fn read_text_capped(path: &Path, cap: u64, what: &str) -> Result<String, String> {
+    let bytes = read_capped(path, cap, what)?;
+    String::from_utf8(bytes)
+        .map_err(|e| format!("{} is not UTF-8 text (byte {})", path.display(), e.utf8_error().valid_up_to()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn devices_folders_and_large_files_are_refused_before_reading() {
+        let e = read_capped(Path::new("/dev/zero"), MAX_SCENE_BYTES, "scene files").unwrap_err();
+        assert!(e.contains("not a regular file"), "{e}");
+        let dir = std::env::temp_dir().join(format!("phonglab-input-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        assert!(read_capped(&dir, MAX_SCENE_BYTES, "scene files").unwrap_err().contains("not a regular file"));
+        let big = dir.join("big.toml");
+        std::fs::File::create(&big).unwrap().set_len(MAX_SCENE_BYTES + 1).unwrap();
+        let e = read_capped(&big, MAX_SCENE_BYTES, "scene files").unwrap_err();
+        assert!(e.contains("is 1 048 577 bytes") && e.contains("scene files of at most 1 048 576 bytes"), "{e}");
+        let ok = dir.join("ok.toml");
+        std::fs::write(&ok, "name = \"é\"").unwrap();
+        assert_eq!(read_text_capped(&ok, MAX_SCENE_BYTES, "scene files").unwrap(), "name = \"é\"");
+        std::fs::write(&ok, [b'a', 0xff]).unwrap();
+        assert!(read_text_capped(&ok, MAX_SCENE_BYTES, "scene files").unwrap_err().contains("not UTF-8"));
+    }
+}

@@ -1,0 +1,146 @@
+//! Nothing lost: every kind of output, made to fail on purpose (a full disk after N bytes,
+//! a failed sync, a failed close, a failed rename), leaves what was there before untouched,
+//! and says so with a non-zero exit. No file system is mounted: the faults are injected
+//! into phonglab's one way of writing files (`atomic_write`).
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::Parser;
+use phonglab::atomic_write::{Fault, with_fault};
+use phonglab::cli::{self, Cli};
+
+fn temp_dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("phonglab-lost-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Every file under `dir` (names and bytes), sorted: what a user would find there.
+fn listing(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut v: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| {
+            let e = e.unwrap();
+            let bytes = if e.path().is_file() { std::fs::read(e.path()).unwrap() } else { b"<folder>".to_vec() };
+            (e.file_name().to_string_lossy().into_owned(), bytes)
+        })
+        .collect();
+    v.sort();
+    v
+}
+
+fn run(args: &[&str]) -> ExitCode {
+    let cli = Cli::try_parse_from(std::iter::once("phonglab").chain(args.iter().copied())).unwrap();
+    cli::run(cli.command.expect("a subcommand"))
+}
+
+/// The faults every output is tried with: the disk full at the first byte, in the middle of
+/// the first file and later, a failed sync, a failed close, and a failed rename (for a set:
+/// moving an old file aside, and moving a new one in).
+fn faults(renames: u32) -> Vec<Fault> {
+    let mut f =
+        vec![Fault::AfterBytes(0), Fault::AfterBytes(100), Fault::AfterBytes(5000), Fault::OnSync, Fault::OnClose];
+    f.extend((0..renames).map(Fault::OnRename));
+    f
+}
+
+#[test]
+fn a_failed_render_leaves_the_old_png_and_exits_non_zero() {
+    let dir = temp_dir("render");
+    let out = dir.join("out.png");
+    let out_s = out.to_str().unwrap();
+    assert_eq!(run(&["render", "--size", "64", "-o", out_s]), ExitCode::SUCCESS);
+    let before = listing(&dir);
+    assert!(before[0].1.ends_with(&[0xAE, 0x42, 0x60, 0x82]), "a whole PNG ends with IEND's CRC");
+    for fault in faults(1) {
+        let code = with_fault(fault, || run(&["render", "--size", "200", "-o", out_s]));
+        assert_eq!(code, ExitCode::from(2), "{fault:?}");
+        assert_eq!(listing(&dir), before, "{fault:?}: the old PNG, whole, and no temporary file");
+    }
+    assert_eq!(run(&["render", "--size", "200", "-o", out_s]), ExitCode::SUCCESS);
+    assert_ne!(listing(&dir), before, "without a fault the new picture replaces it");
+}
+
+#[test]
+fn a_render_into_a_missing_folder_is_refused_before_rendering() {
+    let dir = temp_dir("render-dest");
+    let out = dir.join("no/such/folder/out.png");
+    assert_eq!(run(&["render", "--size", "64", "-o", out.to_str().unwrap()]), ExitCode::from(2));
+    assert_eq!(run(&["render", "--size", "64", "-o", dir.to_str().unwrap()]), ExitCode::from(2), "a folder");
+    assert!(listing(&dir).is_empty());
+}
+
+#[test]
+fn a_failed_exercise_set_leaves_the_old_set_whole() {
+    let dir = temp_dir("exercise");
+    let out = dir.to_str().unwrap();
+    std::fs::write(dir.join("notes.txt"), "the teacher's own file").unwrap();
+    assert_eq!(run(&["exercise", "--seed", "1", "--count", "3", "--out", out]), ExitCode::SUCCESS);
+    let before = listing(&dir);
+    let names: Vec<&str> = before.iter().map(|(n, _)| n.as_str()).collect();
+    assert!(names.contains(&"exercise-03-key.md") && names.contains(&"exercises.pdf"), "{names:?}");
+    // A set of 3 has 11 files, all moved aside before the 2 new exercises' 8 move in.
+    for fault in faults(19) {
+        let code = with_fault(fault, || run(&["exercise", "--seed", "2", "--count", "2", "--out", out]));
+        assert_eq!(code, ExitCode::from(2), "{fault:?}");
+        assert_eq!(listing(&dir), before, "{fault:?}: seed 1's set, whole, and nothing else");
+    }
+    assert_eq!(run(&["exercise", "--seed", "2", "--count", "2", "--out", out]), ExitCode::SUCCESS);
+    let after = listing(&dir);
+    let names: Vec<&str> = after.iter().map(|(n, _)| n.as_str()).collect();
+    assert!(
+        !names.iter().any(|n| n.starts_with("exercise-03")),
+        "the old set's third exercise went with it: {names:?}"
+    );
+    assert!(names.contains(&"notes.txt"), "other files stay");
+    let index = String::from_utf8_lossy(&after.iter().find(|(n, _)| n == "index.md").unwrap().1).into_owned();
+    assert!(index.contains("seed 2"), "{index}");
+}
+
+#[test]
+fn a_failed_cost_report_leaves_the_old_report_whole() {
+    let dir = temp_dir("cost");
+    let out = dir.to_str().unwrap();
+    let args = ["cost", "--quick", "--object", "cylinder", "--size", "32", "--threads", "1", "--out", out];
+    assert_eq!(run(&args), ExitCode::SUCCESS);
+    let before = listing(&dir);
+    let names: Vec<&str> = before.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(
+        names,
+        ["cost.csv", "cost.md", "cost.png", "heat-cylinder-gouraud-32.png", "heat-cylinder-phong-32.png"]
+    );
+    for fault in [Fault::AfterBytes(3000), Fault::OnClose, Fault::OnRename(2), Fault::OnRename(8)] {
+        let code = with_fault(fault, || run(&args));
+        assert_eq!(code, ExitCode::from(2), "{fault:?}");
+        assert_eq!(listing(&dir), before, "{fault:?}: the old report, whole");
+    }
+}
+
+#[test]
+fn a_cost_report_into_a_folder_that_cannot_be_made_is_refused_before_the_study() {
+    let t = std::time::Instant::now();
+    let code = run(&["cost", "--object", "sphere", "--out", "/proc/phonglab-cannot-be-here"]);
+    assert_eq!(code, ExitCode::from(2));
+    assert!(t.elapsed().as_secs_f64() < 5.0, "refused before the study ran ({:?})", t.elapsed());
+}
+
+#[test]
+fn a_failed_scene_save_in_the_app_keeps_the_old_file() {
+    let dir = temp_dir("save");
+    let path = dir.join("scene.toml");
+    let mut state = phonglab::app::AppState::worksheet();
+    phonglab::app::files::save(&mut state, &path);
+    let before = listing(&dir);
+    state.doc.scene.material.shininess = 3.0;
+    let faults = [Fault::AfterBytes(0), Fault::AfterBytes(1000), Fault::OnSync, Fault::OnClose, Fault::OnRename(0)];
+    for fault in faults {
+        with_fault(fault, || phonglab::app::files::save(&mut state, &path));
+        let said = format!("{:?}", state.message);
+        assert!(said.contains("Not saved") && said.contains("unchanged"), "{fault:?}: {said}");
+        assert_eq!(listing(&dir), before, "{fault:?}");
+    }
+    phonglab::app::files::save(&mut state, &path);
+    assert!(std::fs::read_to_string(&path).unwrap().contains("shininess = 3.0"));
+}
