@@ -61,6 +61,9 @@ pub enum Command {
     /// Measure: the renderer, the lighting.
     #[command(subcommand)]
     Bench(crate::bench::BenchCommand),
+    /// Draw the whole window headless (no display, no GPU) to a PNG: for slides, handouts
+    /// and the tests.
+    Screenshot(crate::screenshot_cmd::ScreenshotArgs),
 }
 
 /// Floating-point precision of the engine.
@@ -325,6 +328,7 @@ pub fn run(command: Command) -> ExitCode {
         Command::Render(a) => render(&a),
         Command::Case(a) => case(&a),
         Command::Cost(a) => cost(&a),
+        Command::Screenshot(a) => crate::screenshot_cmd::run(&a),
     };
     match r {
         Ok(()) => ExitCode::SUCCESS,

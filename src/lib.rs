@@ -12,3 +12,4 @@ pub mod image_io;
 pub mod input_file;
 pub mod platform;
 pub mod scenes;
+pub mod screenshot_cmd;

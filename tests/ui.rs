@@ -181,7 +181,7 @@ fn the_vector_plot_has_view_buttons_and_orbits_when_dragged() {
     h.get_by_label("ZY").click();
     h.run_steps(1);
     assert_eq!(h.state().ui.orbit, Orbit::ZY);
-    let plot = h.get_by_label("N").rect().center();
+    let plot = h.get_by_label("vector plot").rect().center();
     h.drag_at(plot);
     h.run_steps(1);
     h.hover_at(plot + egui::vec2(40.0, 0.0));
@@ -539,12 +539,15 @@ fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
     assert_eq!(h.query_all_by_role(Role::Image).count(), 1);
     for d in phonglab_core::library::DemoDeparture::ALL {
         h.get_by_label(d.fix_label());
-        assert!(h.query_by_label(d.why()).is_none(), "the why shows once the switch is on");
+        assert!(h.query_by_label_contains(d.why()).is_none(), "the reasons are folded");
     }
     h.get_by_label("light fixed in the world").click();
     h.run_steps(2);
     assert_eq!(h.state().ui.demo_fixes, [true, false, false]);
-    h.get_by_label(phonglab_core::library::DemoDeparture::LightTurnsWithObject.why());
+    // The reasons open in one click, and the switches have not moved.
+    h.get_by_label_contains("Why the demo differs from OpenGL").click();
+    h.run_steps(2);
+    h.get_by_label_contains(phonglab_core::library::DemoDeparture::LightTurnsWithObject.why());
     // Two pictures: the demo's on the left, the corrected one on the right.
     let images: Vec<egui::Rect> = h.query_all_by_role(Role::Image).map(|n| n.rect()).collect();
     assert_eq!(images.len(), 2, "{images:?}");
@@ -659,4 +662,19 @@ fn dropping_an_obj_file_shows_it() {
     h.input_mut().dropped_files.push(std::sync::Arc::new(Dropped(good.clone())));
     h.run_steps(2);
     assert_eq!(h.state().doc.view.obj.as_deref(), Some(good.to_str().unwrap()));
+}
+
+#[test]
+fn view_options_open_with_a_click_and_keep_the_picture_on_screen() {
+    let mut h = Harness::builder()
+        .with_size([1500.0, 1000.0])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(2);
+    h.get_by_label("View options").click();
+    // The header opens over a few frames (egui animates it).
+    h.run_steps(12);
+    h.get_by_label("Renderer");
+    h.get_by_label_contains("Mesh file");
+    let picture = h.state().ui.geometry.pictures[0];
+    assert!(picture.max.y <= 1000.0 && picture.width() > 150.0, "{picture:?}");
 }

@@ -36,7 +36,7 @@ fn f5_presents_with_large_type_and_the_controls_in_a_drawer() {
     assert!(h.state().ui.layout.drawer_open);
     assert!(h.query_by_role_and_label(Role::Slider, "Light z").is_some(), "the drawer holds the controls");
     // The button leaves presentation as F5 does.
-    h.get_by_label("Leave presentation (F5)").click();
+    h.get_by_label("Leave (F5)").click();
     h.run_steps(3);
     assert!(!h.state().ui.layout.presenting);
     assert!(h.query_by_role_and_label(Role::Slider, "Light z").is_some());
@@ -171,7 +171,7 @@ fn compare_pins_a_and_highlights_the_steps_that_differ() {
     let mut h = harness_at(1440.0, 900.0);
     h.get_by_label("Compare").click();
     h.run_steps(2);
-    h.get_by_label("Pin the current scene as A").click();
+    h.get_by_label("Pin the current scene as A again").click();
     h.run_steps(2);
     h.get_by_label_contains("0 of");
     // B: f32 and Phong shading.
@@ -233,7 +233,7 @@ fn screenshots() {
     let mut h = harness_at(1280.0, 720.0);
     h.get_by_label("Compare").click();
     h.run_steps(2);
-    h.get_by_label("Pin the current scene as A").click();
+    h.get_by_label("Pin the current scene as A again").click();
     h.run_steps(2);
     h.key_press(egui::Key::Num2);
     h.key_press(egui::Key::M);

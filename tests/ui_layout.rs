@@ -162,7 +162,7 @@ fn set_up(w: f32, h: f32, sc: Scenario) -> Harness<'static, AppState> {
         Scenario::Compare => {
             harness.get_by_label("Compare").click();
             harness.run_steps(2);
-            harness.get_by_label("Pin the current scene as A").click();
+            harness.get_by_label("Pin the current scene as A again").click();
             harness.run_steps(2);
             harness.key_press(egui::Key::Num2);
             harness.key_press(egui::Key::M);

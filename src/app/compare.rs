@@ -28,9 +28,64 @@ impl Pinned {
     }
 }
 
+/// What differs between A and B, one entry per setting: (setting, A's value, B's value),
+/// from their scene files key by key, and their numerics.
+pub fn differences(a: &Pinned, b: &Pinned) -> Vec<(String, String, String)> {
+    let table = |d: &Document| d.to_toml().ok().and_then(|t| t.parse::<toml::Table>().ok()).unwrap_or_default();
+    let mut out = Vec::new();
+    diff_tables("", &table(&a.doc), &table(&b.doc), &mut out);
+    out.retain(|(k, _, _)| k != "name");
+    // A material's preset name follows its values: it is said only when nothing else of
+    // that material differs.
+    let tables: Vec<String> =
+        out.iter().filter_map(|(k, _, _)| k.rsplit_once('.').map(|(t, _)| t.to_string())).collect();
+    out.retain(|(k, _, _)| {
+        k.strip_suffix(".preset").is_none_or(|t| tables.iter().filter(|x| x.as_str() == t).count() == 1)
+    });
+    if a.precision != b.precision {
+        out.push(("precision".into(), a.precision.label().into(), b.precision.label().into()));
+    }
+    if a.pow != b.pow {
+        out.push(("pow".into(), a.pow.label().into(), b.pow.label().into()));
+    }
+    out
+}
+
+fn diff_tables(prefix: &str, a: &toml::Table, b: &toml::Table, out: &mut Vec<(String, String, String)>) {
+    let mut keys: Vec<&String> = a.keys().chain(b.keys()).collect();
+    keys.sort();
+    keys.dedup();
+    for k in keys {
+        let path = if prefix.is_empty() { k.clone() } else { format!("{prefix}.{k}") };
+        match (a.get(k), b.get(k)) {
+            (Some(toml::Value::Table(x)), Some(toml::Value::Table(y))) => diff_tables(&path, x, y, out),
+            (x, y) if x != y => {
+                let show = |v: Option<&toml::Value>| v.map_or("none".to_string(), |v| v.to_string().replace('"', ""));
+                out.push((path, show(x), show(y)));
+            }
+            _ => {}
+        }
+    }
+}
+
+/// The title that names what differs: "B: shininess 10; A: 100" for one setting, the
+/// settings' names for several.
+pub fn title(diffs: &[(String, String, String)]) -> String {
+    let short = |k: &str| k.rsplit('.').next().unwrap_or(k).replace('_', " ");
+    match diffs {
+        [] => "A and B are the same scene: change anything, and B follows".into(),
+        [(k, a, b)] => format!("B: {} {b}; A: {a}", short(k)),
+        many if many.len() <= 4 => {
+            let names: Vec<String> = many.iter().map(|(k, _, _)| short(k)).collect();
+            format!("A and B differ in {}", names.join(", "))
+        }
+        many => format!("A and B differ in {} settings", many.len()),
+    }
+}
+
 fn describe(doc: &Document, precision: Precision, pow: PowFn) -> String {
     format!(
-        "{}, {} {}, {}, {} pow",
+        "{}, {} {}, {}, {}",
         doc.name,
         doc.view.object.label(),
         doc.view.shading.label(),
@@ -50,6 +105,13 @@ pub struct CompareState {
     pub a_view: ViewCache,
     /// B's shaded view.
     pub b_view: ViewCache,
+}
+
+impl CompareState {
+    /// Pins `doc` as A.
+    pub fn pin(&mut self, doc: &Document, precision: Precision, pow: PowFn) {
+        self.a = Some(Pinned { doc: doc.clone(), precision, pow });
+    }
 }
 
 /// The steps of two calculations side by side: (step number, title, A's value, B's value,
@@ -88,9 +150,10 @@ struct Side<'a> {
     pow: PowFn,
 }
 
-/// One side: its name, colour and shaded view.
-fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) {
+/// One side: its name, colour and shaded view; returns where the picture went.
+fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) -> Option<egui::Rect> {
     let which = s.which;
+    let mut at = None;
     ui.vertical(|ui| {
         ui.label(RichText::new(format!("{which}: {}", s.what)).strong());
         swatch_ui(ui, s.eval);
@@ -100,7 +163,8 @@ fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) {
                 if let Some(tex) = &view.texture {
                     let side = px as f32 / ui.ctx().pixels_per_point();
                     let label = ui.small(format!("{which}'s shaded view, {:.1} ms", view.last_ms));
-                    ui.add(egui::Image::new((tex.id(), egui::vec2(side, side)))).labelled_by(label.id);
+                    let r = ui.add(egui::Image::new((tex.id(), egui::vec2(side, side)))).labelled_by(label.id);
+                    at = Some(r.rect);
                 }
             }
             Err(e) => {
@@ -108,6 +172,7 @@ fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) {
             }
         }
     });
+    at
 }
 
 /// The compare view, in the centre.
@@ -123,14 +188,22 @@ pub struct Current<'a> {
     pub side: phonglab_core::explain::Side,
 }
 
-/// The compare view, in the centre; returns a notice for the app's message line.
-pub fn compare_ui(ui: &mut Ui, compare: &mut CompareState, current: &Current<'_>, b: &Evaluated) -> Option<String> {
+/// The compare view, in the centre; returns a notice for the app's message line, and where
+/// the two pictures went.
+pub fn compare_ui(
+    ui: &mut Ui,
+    compare: &mut CompareState,
+    current: &Current<'_>,
+    b: &Evaluated,
+) -> (Option<String>, Vec<egui::Rect>) {
     let mut notice = None;
+    let b_pinned = Pinned { doc: current.doc.clone(), precision: current.precision, pow: current.pow };
+    let diffs = compare.a.as_ref().map(|a| differences(a, &b_pinned)).unwrap_or_default();
     ui.horizontal_wrapped(|ui| {
-        ui.heading("Compare");
+        ui.heading(if compare.a.is_some() { title(&diffs) } else { "Compare".into() });
         let pin = if compare.a.is_some() { "Pin the current scene as A again" } else { "Pin the current scene as A" };
         if ui.button(pin).clicked() {
-            compare.a = Some(Pinned { doc: current.doc.clone(), precision: current.precision, pow: current.pow });
+            compare.pin(current.doc, current.precision, current.pow);
             notice = Some("Pinned as A: now change anything, and B follows.".to_string());
         }
         if ui.button("Close compare").clicked() {
@@ -138,31 +211,42 @@ pub fn compare_ui(ui: &mut Ui, compare: &mut CompareState, current: &Current<'_>
         }
     });
     let Some(a) = compare.a.clone() else {
-        ui.label("Pin the current scene as A, then change anything (shading, precision, material): A and B show side by side.");
-        return notice;
+        ui.add_space(12.0);
+        for line in [
+            "1. Pin the current scene as A (the button above).",
+            "2. Change anything: the shading, f32 or f64, the material, a light.",
+            "3. A and B show side by side, with the steps that differ first.",
+        ] {
+            ui.label(RichText::new(line).heading());
+        }
+        return (notice, Vec::new());
     };
     let a_eval = match evaluate(&a.doc, a.precision, a.pow, current.side) {
         Ok(e) => e,
         Err(e) => {
             ui.colored_label(super::palette::ERROR, format!("A cannot be evaluated: {e}"));
-            return notice;
+            return (notice, Vec::new());
         }
     };
     let avail = ui.available_size();
-    let side = ((avail.x - 24.0) / 2.0).min(avail.y * 0.5).max(64.0);
-    let px = ((side * ui.ctx().pixels_per_point()) as usize).clamp(64, 1024);
-    let b_what = describe(current.doc, current.precision, current.pow);
+    // Two large squares; the steps below get what is left (at least a few lines).
+    let row = ui.text_style_height(&egui::TextStyle::Body) * 4.0;
+    let side = ((avail.x - 24.0) / 2.0).min(avail.y * 0.75 - row).max(64.0);
+    let px = ((side * ui.ctx().pixels_per_point()) as usize).clamp(64, 2048);
     let (doc, pow) = (current.doc.clone(), current.pow);
     let sa = Side { which: "A", what: a.describe(), doc: &a.doc, eval: &a_eval, pow: a.pow };
-    let sb = Side { which: "B", what: b_what, doc: &doc, eval: b, pow };
-    ui.columns(2, |cols| {
-        side_ui(&mut cols[0], &sa, &mut compare.a_view, px);
-        side_ui(&mut cols[1], &sb, &mut compare.b_view, px);
+    let sb = Side { which: "B", what: b_pinned.describe(), doc: &doc, eval: b, pow };
+    let pictures = ui.columns(2, |cols| {
+        let a = side_ui(&mut cols[0], &sa, &mut compare.a_view, px);
+        let b = side_ui(&mut cols[1], &sb, &mut compare.b_view, px);
+        a.into_iter().chain(b).collect::<Vec<_>>()
     });
     ui.separator();
-    let pairs = step_pairs(&a_eval.explanation, &b.explanation);
+    let mut pairs = step_pairs(&a_eval.explanation, &b.explanation);
     let differing = pairs.iter().filter(|p| p.4).count();
-    ui.label(format!("{differing} of {} steps differ (highlighted).", pairs.len()));
+    // The steps that differ first, each group in the calculation's order.
+    pairs.sort_by_key(|p| !p.4);
+    ui.label(format!("{differing} of {} steps differ: they come first, highlighted.", pairs.len()));
     let hi = if ui.visuals().dark_mode { Color32::from_rgb(90, 60, 0) } else { Color32::from_rgb(255, 224, 150) };
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
         // One step after another: its title, then A's value and B's, highlighted where they
@@ -179,5 +263,24 @@ pub fn compare_ui(ui: &mut Ui, compare: &mut CompareState, current: &Current<'_>
             ui.add_space(2.0);
         }
     });
-    notice
+    (notice, pictures)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_title_names_what_differs() {
+        let a = Pinned { doc: Document::default(), precision: Precision::F64, pow: PowFn::Exact };
+        let mut b = a.clone();
+        assert_eq!(differences(&a, &b), vec![]);
+        b.doc.scene.material.shininess = 10.0;
+        let d = differences(&a, &b);
+        assert_eq!(title(&d), "B: shininess 10.0; A: 25.6", "{d:?}");
+        b.precision = Precision::F32;
+        b.doc.view.shading = phonglab_core::Shading::Phong;
+        let t = title(&differences(&a, &b));
+        assert!(t.contains("shininess") && t.contains("shading") && t.contains("precision"), "{t}");
+    }
 }

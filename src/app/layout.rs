@@ -82,6 +82,8 @@ pub struct Layout {
     pub step: Option<usize>,
     /// The plot beside the shaded view.
     pub beside: Beside,
+    /// Where the divider between the pictures and the plot was dragged.
+    pub dividers: super::centre_layout::Dividers,
 }
 
 impl Default for Layout {
@@ -94,6 +96,7 @@ impl Default for Layout {
             theme: Theme::Dark,
             step: None,
             beside: Beside::Vectors,
+            dividers: Default::default(),
         }
     }
 }

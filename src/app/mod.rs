@@ -3,6 +3,7 @@
 //! [`AppState`] and takes `&mut egui::Ui`, so tests drive it headless.
 
 pub mod calculation;
+pub mod centre_layout;
 pub mod compare;
 pub mod controls;
 pub mod cost;
@@ -10,6 +11,7 @@ pub mod evaluated;
 pub mod files;
 pub mod gpu_view;
 pub mod help;
+pub mod label_placement;
 pub mod layout;
 pub mod lobe;
 pub mod palette;
@@ -107,7 +109,7 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         ui.strong("phonglab");
         ui.separator();
         let layout = &mut state.ui.layout;
-        let present = if layout.presenting { "Leave presentation (F5)" } else { "Present (F5)" };
+        let present = if layout.presenting { "Leave (F5)" } else { "Present (F5)" };
         if ui
             .selectable_label(layout.presenting, present)
             .on_hover_text("Large type; the controls in a drawer")
@@ -116,7 +118,8 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
             layout.presenting = !layout.presenting;
         }
         if layout.presenting {
-            ui.toggle_value(&mut layout.drawer_open, "Controls drawer");
+            ui.toggle_value(&mut layout.drawer_open, "Controls drawer")
+                .on_hover_text("The scene's controls, in a drawer");
         } else {
             ui.toggle_value(&mut layout.controls_open, "Controls");
             ui.toggle_value(&mut layout.calculation_open, "Calculation");
@@ -129,8 +132,13 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
             state.reset_to_worksheet();
         }
         ui.menu_button("Presets", |ui| presets_menu_ui(ui, state));
+        let was_open = state.compare.open;
         ui.toggle_value(&mut state.compare.open, "Compare")
             .on_hover_text("Pin the scene as A, change anything, and see A and B side by side");
+        if state.compare.open && !was_open && state.compare.a.is_none() {
+            // Opened: A is the scene as it is, so the first change already compares.
+            state.compare.pin(&state.doc, state.ui.precision, state.ui.pow);
+        }
         if ui
             .toggle_value(&mut state.quiz.open, "Quiz")
             .on_hover_text("Every value of the calculation behind a field: type them step by step")
@@ -140,14 +148,18 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         {
             state.quiz.start(state.doc.clone());
         }
+        ui.toggle_value(&mut state.shader.open, "Shader")
+            .on_hover_text("The GLSL or WGSL program this scene compiles to: only the stages it needs");
+        ui.separator();
+        if !state.ui.layout.presenting {
+            ui.label("Precision:");
+        }
+        ui.radio_value(&mut state.ui.precision, Precision::F32, "f32")
+            .on_hover_text("Evaluate in single precision, as OpenGL does");
+        ui.radio_value(&mut state.ui.precision, Precision::F64, "f64").on_hover_text("Evaluate in double precision");
         if state.ui.layout.presenting {
-            ui.label(egui::RichText::new(&state.doc.name).weak());
             return;
         }
-        ui.separator();
-        ui.label("Precision:");
-        ui.radio_value(&mut state.ui.precision, Precision::F32, "f32");
-        ui.radio_value(&mut state.ui.precision, Precision::F64, "f64");
         egui::ComboBox::from_label("pow").selected_text(state.ui.pow.label()).show_ui(ui, |ui| {
             for p in phonglab_core::PowFn::ALL {
                 ui.selectable_value(&mut state.ui.pow, p, p.label());
@@ -156,8 +168,6 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         ui.separator();
         ui.toggle_value(&mut state.cost.open, "Cost of accuracy")
             .on_hover_text("What each shading, tessellation and approximation costs in time and in error");
-        ui.toggle_value(&mut state.shader.open, "Shader")
-            .on_hover_text("The GLSL or WGSL program this scene compiles to: only the stages it needs");
         ui.separator();
         files::file_ui(ui, state);
         ui.separator();
@@ -299,7 +309,7 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     let mut open = (state.ui.layout.calculation_open || presenting) && !state.compare.open;
     egui::Panel::right(if presenting { "calculation (presenting)" } else { "calculation" })
         .resizable(true)
-        .default_size(layout::Layout::calculation_width(width) * if presenting { 1.25 } else { 1.0 })
+        .default_size(layout::Layout::calculation_width(width))
         .min_size(260.0)
         .show_collapsible(ui, &mut open, |ui| {
             if state.quiz.open {
@@ -349,61 +359,109 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     }
 }
 
-/// The centre: the colour, then the shaded view with the vector plot (or the lobe) beside
-/// it when the centre is wide, or below it when it is tall; with Compare on, A beside B.
+/// How many rows of widgets stand above the shaded picture, and above the plot's diagram,
+/// as heights in points (see [`centre_layout::Chrome`]).
+fn chrome(ui: &Ui, state: &AppState) -> centre_layout::Chrome {
+    let row = ui.spacing().interact_size.y + ui.spacing().item_spacing.y;
+    let small = ui.text_style_height(&egui::TextStyle::Small) + ui.spacing().item_spacing.y;
+    let rows = if state.ui.layout.presenting { 1.0 } else { 2.0 };
+    let legend = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
+    centre_layout::Chrome { picture: rows * row + 2.0 * small + 8.0, plot: 2.0 * row + legend + 8.0 }
+}
+
+/// The centre: the colour, then the shaded view and the vector plot (or the lobe), side by
+/// side or stacked as the space allows ([`centre_layout::split`]), with a divider between
+/// them that can be dragged; with Compare on, A beside B.
 fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     if state.compare.open {
         let current =
             compare::Current { doc: &state.doc, precision: state.ui.precision, pow: state.ui.pow, side: state.ui.side };
-        if let Some(m) = compare::compare_ui(ui, &mut state.compare, &current, eval) {
+        let (notice, pictures) = compare::compare_ui(ui, &mut state.compare, &current, eval);
+        if let Some(m) = notice {
             state.message = Some(Message::Info(m));
+        }
+        state.ui.geometry = state::Geometry { pictures, plot: None, arrangement: None };
+        if !state.compare.open && matches!(&state.message, Some(Message::Info(m)) if m.starts_with("Pinned as A")) {
+            // Closed: its notice goes with it.
+            state.message = None;
         }
         return;
     }
-    result::result_ui(ui, eval, state.doc.scene.light_model.separate_specular, &state.message);
+    // The colour and the message take a fixed height, so that a longer number or a new
+    // message moves nothing below them.
+    let mono = ui.text_style_height(&egui::TextStyle::Monospace) + ui.spacing().item_spacing.y;
+    let body = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
+    let rows = 3.0 + f32::from(state.doc.scene.light_model.separate_specular);
+    let strip = egui::vec2(ui.available_width(), rows * mono + 2.0 * body + 6.0);
+    let (rect, _) = ui.allocate_exact_size(strip, egui::Sense::hover());
+    ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
+        ui.set_clip_rect(rect.intersect(ui.clip_rect()));
+        result::result_ui(ui, eval, state.doc.scene.light_model.separate_specular, &state.message);
+    });
     ui.separator();
-    let beside = |ui: &mut Ui, state: &mut AppState| {
-        ui.push_id("beside", |ui| {
-            ui.horizontal(|ui| {
-                ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Vectors, "Vectors at the vertex");
-                ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Lobe, "Reflection lobe");
-            });
-            match state.ui.layout.beside {
-                layout::Beside::Vectors => {
-                    vector_plot::vector_plot_ui(ui, &mut state.ui.orbit, eval, state.doc.scene.rules.specular)
-                }
-                layout::Beside::Lobe => lobe::lobe_ui(ui, &state.doc.scene, eval),
+    shaded::departures_ui(ui, state);
+    // Two pictures side by side (the corrected one, or the heat map) share the view's part.
+    let pair = state.cost.heat_map || shaded::corrected_document(&state.doc, &state.ui.demo_fixes).is_some();
+    let area = ui.available_rect_before_wrap();
+    let split = centre_layout::split(area, 1 + pair as usize, chrome(ui, state), state.ui.layout.dividers);
+    divider_ui(ui, state, area, &split);
+    let show_angles = !state.quiz.open;
+    let mut geometry = state::Geometry { pictures: Vec::new(), plot: None, arrangement: Some(split.arrangement) };
+    ui.scope_builder(egui::UiBuilder::new().max_rect(split.pictures).id_salt("shaded"), |ui| {
+        let mut cache = std::mem::take(&mut state.shaded);
+        geometry.pictures = shaded::shaded_ui(ui, state, &mut cache, eval);
+        state.shaded = cache;
+    });
+    ui.scope_builder(egui::UiBuilder::new().max_rect(split.beside).id_salt("beside"), |ui| {
+        ui.horizontal_wrapped(|ui| {
+            ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Vectors, "Vectors at the vertex");
+            ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Lobe, "Reflection lobe");
+            if state.ui.layout.beside == layout::Beside::Vectors {
+                ui.separator();
+                vector_plot::view_buttons_ui(ui, &mut state.ui.orbit);
             }
         });
-    };
-    let shaded = |ui: &mut Ui, state: &mut AppState| {
-        ui.push_id("shaded", |ui| {
-            let mut cache = std::mem::take(&mut state.shaded);
-            shaded::shaded_ui(ui, state, &mut cache, eval);
-            state.shaded = cache;
-        });
-    };
-    let avail = ui.available_size();
-    // Two pictures side by side (the corrected one, or the heat map) want the full width.
-    let pair = state.cost.heat_map || shaded::corrected_document(&state.doc, &state.ui.demo_fixes).is_some();
-    if avail.x >= 1.5 * avail.y && !pair {
-        // Side by side: the shaded view takes the larger share.
-        let w = (avail.x * 0.58).min(avail.y + 40.0);
-        ui.horizontal_top(|ui| {
-            let down = egui::Layout::top_down(egui::Align::Min);
-            ui.allocate_ui_with_layout(egui::vec2(w, avail.y), down, |ui| shaded(ui, state));
-            ui.separator();
-            let rest = egui::vec2(ui.available_width(), avail.y);
-            ui.allocate_ui_with_layout(rest, down, |ui| beside(ui, state));
-        });
+        match state.ui.layout.beside {
+            layout::Beside::Vectors => {
+                let specular = state.doc.scene.rules.specular;
+                geometry.plot = Some(vector_plot::vector_plot_ui(ui, &mut state.ui.orbit, eval, specular, show_angles));
+            }
+            layout::Beside::Lobe => lobe::lobe_ui(ui, &state.doc.scene, eval),
+        }
+    });
+    ui.advance_cursor_after_rect(area);
+    state.ui.geometry = geometry;
+}
+
+/// The handle between the pictures and the plot: drag it to share the space otherwise
+/// (kept across restarts, per arrangement); double-click to put it back.
+fn divider_ui(ui: &mut Ui, state: &mut AppState, area: egui::Rect, split: &centre_layout::Split) {
+    let id = ui.scope_id().with("centre divider");
+    let resp = ui.interact(split.divider, id, egui::Sense::click_and_drag());
+    resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Splitter, true, "divider"));
+    let beside = split.arrangement == centre_layout::Arrangement::Beside;
+    let resp = resp.on_hover_cursor(if beside {
+        egui::CursorIcon::ResizeHorizontal
     } else {
-        // Stacked: the shaded view on top, its image about 42 % of the window's height
-        // where the centre allows (its controls take about 130 points above it).
-        let window = ui.ctx().content_rect().height();
-        let h = (0.42 * window + 130.0).min(avail.y - 120.0);
-        ui.allocate_ui(egui::vec2(avail.x, h), |ui| shaded(ui, state));
-        ui.separator();
-        beside(ui, state);
+        egui::CursorIcon::ResizeVertical
+    });
+    let strong = resp.hovered() || resp.dragged();
+    let c = if strong { ui.visuals().strong_text_color() } else { ui.visuals().weak_text_color() };
+    let r = split.divider;
+    let (a, b) = if beside {
+        (egui::pos2(r.center().x, r.min.y + 4.0), egui::pos2(r.center().x, r.max.y - 4.0))
+    } else {
+        (egui::pos2(r.min.x + 4.0, r.center().y), egui::pos2(r.max.x - 4.0, r.center().y))
+    };
+    ui.painter().line_segment([a, b], egui::Stroke::new(if strong { 3.0 } else { 1.0 }, c));
+    let dividers = &mut state.ui.layout.dividers;
+    let slot = if beside { &mut dividers.beside } else { &mut dividers.stacked };
+    if resp.double_clicked() {
+        *slot = None;
+    } else if resp.dragged()
+        && let Some(p) = resp.interact_pointer_pos()
+    {
+        *slot = Some(centre_layout::dragged_fraction(area, split.arrangement, p));
     }
 }
 

@@ -73,13 +73,25 @@ pub fn result_ui(ui: &mut Ui, eval: &Evaluated, separate_specular: bool, message
             side_ui(ui, "Back face", b, separate_specular);
         }
     });
-    match message {
-        Some(Message::Refused(m)) => {
-            ui.colored_label(palette::ink(ui, palette::ERROR), m);
-        }
-        Some(Message::Info(m)) => {
-            ui.label(m);
-        }
-        None => {}
-    }
+    message_ui(ui, message);
+}
+
+/// The last message, in two lines reserved for it whether there is one or not, so that
+/// nothing below moves when one appears (a longer one is cut, and shown whole on hover).
+fn message_ui(ui: &mut Ui, message: &Option<Message>) {
+    let h = 2.0 * ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
+    let w = ui.available_width();
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(w, h), egui::Sense::hover());
+    let (text, color) = match message {
+        Some(Message::Refused(m)) => (m, palette::ink(ui, palette::ERROR)),
+        Some(Message::Info(m)) => (m, ui.visuals().text_color()),
+        None => return,
+    };
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let mut job = egui::text::LayoutJob::simple(text.clone(), font, color, rect.width());
+    job.wrap.max_rows = 2;
+    job.wrap.overflow_character = Some('…');
+    ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
+        ui.add(egui::Label::new(job)).on_hover_text(text);
+    });
 }

@@ -46,30 +46,36 @@ fn pipeline_ui(ui: &mut Ui, view: &mut View) {
     });
 }
 
-/// The demo's departures as switches (only those the document makes).
-fn departures_ui(ui: &mut Ui, fixes: &mut [bool; 3], departures: &[DemoDeparture]) {
+/// The demo's departures as switches (only those the document makes): one row that stays
+/// where it is whatever is switched, and the reasons folded into one line that opens on a
+/// click.
+///
+/// They stand across the whole centre, above the pictures, so that switching one (which
+/// puts a second picture beside the first) moves nothing.
+pub fn departures_ui(ui: &mut Ui, state: &mut AppState) {
+    let departures: Vec<DemoDeparture> = DemoDeparture::ALL.into_iter().filter(|d| d.present_in(&state.doc)).collect();
     if departures.is_empty() {
         return;
     }
-    egui::CollapsingHeader::new("The demo's departures from OpenGL").id_salt("departures").default_open(true).show(
-        ui,
-        |ui| {
-            ui.small("Flip a switch: the corrected picture shows on the right, the demo's own on the left.");
-            ui.horizontal_wrapped(|ui| {
-                for (k, d) in DemoDeparture::ALL.into_iter().enumerate() {
-                    if departures.contains(&d) {
-                        ui.checkbox(&mut fixes[k], d.fix_label()).on_hover_text(d.why());
-                    }
-                }
-            });
-            // Why, for each one corrected (one sentence each).
-            for (k, d) in DemoDeparture::ALL.into_iter().enumerate() {
-                if fixes[k] && departures.contains(&d) {
-                    ui.small(d.why());
+    let fixes = &mut state.ui.demo_fixes;
+    ui.horizontal_wrapped(|ui| {
+        ui.label("Correct the demo:");
+        for (k, d) in DemoDeparture::ALL.into_iter().enumerate() {
+            if departures.contains(&d) {
+                ui.checkbox(&mut fixes[k], d.fix_label()).on_hover_text(d.why());
+            }
+        }
+    });
+    egui::CollapsingHeader::new("Why the demo differs from OpenGL (the corrected picture shows on the right)")
+        .id_salt("departures")
+        .default_open(false)
+        .show(ui, |ui| {
+            for d in DemoDeparture::ALL {
+                if departures.contains(&d) {
+                    ui.small(format!("{}: {}", d.fix_label(), d.why()));
                 }
             }
-        },
-    );
+        });
 }
 
 /// The mesh's resolution and the pipeline's choices.
@@ -103,7 +109,9 @@ fn view_options_ui(ui: &mut Ui, view: &mut View) {
 /// The view's controls and the image (beside it, the corrected picture or the heat map),
 /// with N, L, V and H (or R) drawn at the worked calculation's vertex and the lights as
 /// markers that can be dragged.
-pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eval: &Evaluated) {
+///
+/// Returns where the picture (and the one beside it) was drawn.
+pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eval: &Evaluated) -> Vec<egui::Rect> {
     let mut view = state.doc.view.clone();
     let presenting = state.ui.layout.presenting;
     let mut open_obj_requested = None;
@@ -132,32 +140,35 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
             .on_hover_text("Beside the view: how far each pixel is from per-pixel Phong in f64 on a very fine mesh");
     });
     if !presenting {
+        // Opened, the options scroll within a part of the view's space, so the picture
+        // stays on screen (smaller) rather than being pushed below the window.
+        let most = ui.available_height() * 0.45;
         egui::CollapsingHeader::new("View options").id_salt("view options").show(ui, |ui| {
-            view_options_ui(ui, &mut view);
-            ui.horizontal_wrapped(|ui| {
-                let l = ui.label("Mesh file (.obj):");
-                let field = ui
-                    .add(
-                        egui::TextEdit::singleline(&mut state.ui.obj_path)
-                            .desired_width(180.0)
-                            .hint_text("path/to/mesh.obj"),
-                    )
-                    .labelled_by(l.id);
-                let enter = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
-                if ui
-                    .button("Show mesh")
-                    .on_hover_text("Shade this OBJ file in the view (Enter in the field)")
-                    .clicked()
-                    || enter
-                {
-                    open_obj_requested = Some(std::path::PathBuf::from(state.ui.obj_path.trim()));
-                }
+            egui::ScrollArea::vertical().max_height(most).show(ui, |ui| {
+                renderer_ui(ui, state, &cache.main.drawn_by);
+                view_options_ui(ui, &mut view);
+                ui.horizontal_wrapped(|ui| {
+                    let l = ui.label("Mesh file (.obj):");
+                    let field = ui
+                        .add(
+                            egui::TextEdit::singleline(&mut state.ui.obj_path)
+                                .desired_width(180.0)
+                                .hint_text("path/to/mesh.obj"),
+                        )
+                        .labelled_by(l.id);
+                    let enter = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+                    if ui
+                        .button("Show mesh")
+                        .on_hover_text("Shade this OBJ file in the view (Enter in the field)")
+                        .clicked()
+                        || enter
+                    {
+                        open_obj_requested = Some(std::path::PathBuf::from(state.ui.obj_path.trim()));
+                    }
+                });
             });
-            renderer_ui(ui, state, &cache.main.drawn_by);
         });
     }
-    let departures: Vec<DemoDeparture> = DemoDeparture::ALL.into_iter().filter(|d| d.present_in(&state.doc)).collect();
-    departures_ui(ui, &mut state.ui.demo_fixes, &departures);
     if view != state.doc.view {
         let mut c = state.doc.clone();
         c.view = view;
@@ -174,7 +185,8 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
     // The corrected document, when a departure the document makes is switched off.
     let corrected = corrected_document(&state.doc, &state.ui.demo_fixes);
 
-    let avail = ui.available_size();
+    // The part of the centre this view was given (a row above cannot have widened it).
+    let avail = egui::vec2(ui.max_rect().width(), ui.available_size().y);
     let heat = state.cost.heat_map;
     let beside = heat || corrected.is_some();
     // Leave room for the caption line above the image (and the picture beside it).
@@ -205,6 +217,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
         drawn_caption(&cache.main),
         if corrected.is_some() { " (the demo's own)" } else { "" }
     );
+    let mut second = None;
     let resp = ui
         .horizontal_top(|ui| {
             let resp = ui
@@ -229,15 +242,18 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
                         .map(|(d, _)| d.fix_label())
                         .collect();
                     let label = ui.small(format!("Corrected: {}", fixed.join(", ")));
-                    picture_ui(ui, &cache.corrected, corrected_gpu.take(), size, Sense::hover()).labelled_by(label.id);
+                    let r = picture_ui(ui, &cache.corrected, corrected_gpu.take(), size, Sense::hover())
+                        .labelled_by(label.id);
+                    second = Some(r.rect);
                 });
             } else if heat {
-                super::cost::heat_map_ui(ui, state, side);
+                second = Some(ui.scope(|ui| super::cost::heat_map_ui(ui, state, side)).response.rect);
             }
             resp
         })
         .inner;
 
+    let pictures: Vec<egui::Rect> = std::iter::once(resp.rect).chain(second).collect();
     let overlay = Overlay {
         rect: resp.rect,
         clip_from_object: state.doc.view.clip_from_object(),
@@ -274,7 +290,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
             && let Err(e) = cache.main.render(ui.ctx(), &state.doc, state.ui.pow, px, "shaded view")
         {
             state.message = Some(Message::Refused(format!("The shaded view cannot render this scene: {e}")));
-            return;
+            return pictures;
         }
         let mesh = mesh_for(&mut cache.main.mesh, &state.doc.view);
         if let Some(i) = cache.main.renderer.pick(mesh, x, y) {
@@ -287,6 +303,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
             }
         }
     }
+    pictures
 }
 
 /// Where the shaded view's image is, and how object and eye space map onto it.
@@ -330,28 +347,6 @@ impl Overlay {
     }
 }
 
-/// An arrow from `from` to `to` with `label` at its tip.
-fn arrow_ui(ui: &Ui, from: egui::Pos2, to: egui::Pos2, color: Color32, label: &str) {
-    let p = ui.painter();
-    let outline = if ui.visuals().dark_mode { Color32::BLACK } else { Color32::WHITE };
-    let d = to - from;
-    if d.length() < 2.0 {
-        return;
-    }
-    let dir = d.normalized();
-    let tip = 10.0_f32.min(d.length() * 0.4);
-    let wing = egui::vec2(-dir.y, dir.x) * tip * 0.5;
-    let head = vec![to, to - dir * tip + wing, to - dir * tip - wing];
-    for (w, c) in [(5.0, outline), (2.5, color)] {
-        p.line_segment([from, to - dir * tip * 0.5], egui::Stroke::new(w, c));
-    }
-    p.add(egui::Shape::convex_polygon(head, color, egui::Stroke::new(1.0, outline)));
-    let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Body));
-    let at = to + dir * (font.size * 0.7);
-    p.text(at + egui::vec2(1.0, 1.0), egui::Align2::CENTER_CENTER, label, font.clone(), outline);
-    p.text(at, egui::Align2::CENTER_CENTER, label, font, color);
-}
-
 /// N, V, and each light's L and H (or R) as arrows on the image `rect`: (name, colour,
 /// from, to), from the vertex on the object, a third of the object's size long. Empty
 /// unless the worked calculation's vertex is one the view draws (after a click on the
@@ -393,15 +388,56 @@ pub fn vector_arrows(
     out
 }
 
-/// Draws [`vector_arrows`] on the image.
+/// Draws [`vector_arrows`] on the image, every arrow the same length on screen (a fifth of
+/// the image) in the direction the view shows it, ⊙ or ⊗ for one that points at the viewer
+/// or away, in the plot's colours and styles, each letter placed clear of the others and of
+/// the arrows ([`super::label_placement`]).
 fn vectors_on_object_ui(ui: &Ui, rect: egui::Rect, doc: &Document, eval: &Evaluated) {
+    use super::label_placement::{Wanted, place};
     let arrows = vector_arrows(doc, eval, rect);
-    for (name, c, from, to) in &arrows {
-        arrow_ui(ui, *from, *to, super::palette::ink(ui, *c), name);
+    let Some((_, _, from, _)) = arrows.first() else { return };
+    let from = *from;
+    let p = ui.painter_at(rect);
+    let len = rect.width().min(rect.height()) * 0.2;
+    let width = (3.0 / ui.ctx().pixels_per_point()).max(len * 0.03);
+    let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Body) * 1.5);
+    let outline = if ui.visuals().dark_mode { Color32::BLACK } else { Color32::WHITE };
+    let mut lines = Vec::new();
+    let mut wanted = Vec::new();
+    let mut galleys = Vec::new();
+    let mut end_on = 0;
+    for (name, c, _, to) in &arrows {
+        let c = super::palette::ink(ui, *c);
+        let d = *to - from;
+        let dashed = name.starts_with('H') || name.starts_with('R');
+        if d.length() < 3.0 {
+            let at = from + egui::vec2(1.0, 1.0) * (end_on as f32 * width * 8.0);
+            end_on += 1;
+            super::vector_plot::draw_end_on(&p, at, width * 3.0, width, c, true);
+            lines.push(super::label_placement::Segment { a: at, b: at, half_width: width * 3.5 });
+            wanted.push(Wanted {
+                anchor: at,
+                direction: egui::vec2(0.7, -0.7),
+                size: egui::Vec2::ZERO,
+                gap: width * 3.5,
+            });
+        } else {
+            let tip = from + d.normalized() * len;
+            // A dark (or light) edge under the colour, so the arrow reads on any surface.
+            super::vector_plot::draw_arrow(&p, from, tip, width * 1.8, outline, false, false);
+            lines.push(super::vector_plot::draw_arrow(&p, from, tip, width, c, dashed, false));
+            wanted.push(Wanted { anchor: tip, direction: d, size: egui::Vec2::ZERO, gap: width });
+        }
+        galleys.push(p.layout_no_wrap(name.clone(), font.clone(), c));
     }
-    if let Some((_, _, from, _)) = arrows.first() {
-        ui.painter().circle_filled(*from, 3.5, super::palette::ink(ui, super::palette::N));
+    for (w, g) in wanted.iter_mut().zip(&galleys) {
+        w.size = g.size() + egui::vec2(4.0, 0.0);
     }
+    for (b, g) in place(&wanted, &lines, rect).into_iter().zip(galleys) {
+        p.rect_filled(b, 3.0, outline.gamma_multiply(0.6));
+        p.galley(b.min + egui::vec2(2.0, 0.0), g, Color32::PLACEHOLDER);
+    }
+    p.circle_filled(from, width * 1.3, super::palette::ink(ui, super::palette::N));
 }
 
 /// Each light as a marker where the view draws it; a marker can be dragged (in the plane

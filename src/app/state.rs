@@ -38,6 +38,17 @@ impl Orbit {
     pub const PERSPECTIVE: Orbit = Orbit { yaw: 35.0, pitch: 20.0 };
 }
 
+/// What the centre drew last frame: the tests and `phonglab screenshot` check it.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Geometry {
+    /// The shaded view's picture or pictures.
+    pub pictures: Vec<egui::Rect>,
+    /// The vector plot, when it is shown.
+    pub plot: Option<super::vector_plot::PlotGeometry>,
+    /// How the centre was arranged.
+    pub arrangement: Option<super::centre_layout::Arrangement>,
+}
+
 /// UI choices that are not part of the scene.
 #[derive(Clone, Debug, PartialEq)]
 pub struct UiState {
@@ -70,6 +81,8 @@ pub struct UiState {
     pub renderer: super::gpu_view::RendererChoice,
     /// Ctrl+Q was pressed: the window is closing (saving the session).
     pub quit: bool,
+    /// What the centre drew last frame.
+    pub geometry: Geometry,
 }
 
 impl Default for UiState {
@@ -89,6 +102,7 @@ impl Default for UiState {
             scroll_to_step: false,
             renderer: Default::default(),
             quit: false,
+            geometry: Geometry::default(),
         }
     }
 }

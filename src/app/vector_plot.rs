@@ -1,12 +1,19 @@
-//! The vector plot: N, L, V, H (R for Phong, the spot axis when on) as arrows from the
-//! vertex, in eye space, seen from an orbit the user drags; the angles theta (N, L) and
-//! beta (N, H) (alpha (R, V) for Phong) drawn as arcs and labelled.
+//! The vector plot: N, L, V, H (R under Phong's model, S the spot axis when on) as arrows
+//! from the vertex, in eye space, seen from an orbit the user drags; the angles θ (N, L) and
+//! β (N, H) (α (R, V) under Phong's model) drawn as arcs and labelled outside them.
+//!
+//! Drawn for a projector: arrows at least 3 pixels wide, letters at their tips half as large
+//! again as the body text, every label placed clear of the others and of every line
+//! ([`super::label_placement`]), the legend above the diagram rather than over it, the
+//! tangent plane as one disc, and no axes or ticks (a small x/y/z triad says how the view is
+//! turned). A vector that points at the viewer (or away) is drawn as ⊙ (or ⊗), the way a
+//! physics text draws it, rather than as a dot.
 
-use egui::{Color32, Ui};
-use egui_plot::{Arrows, Legend, Line, Plot, PlotPoints, Text};
+use egui::{Color32, Pos2, Rect, Sense, Stroke, Ui, Vec2, vec2};
 use glam::{DMat3, DVec3};
 use phonglab_core::SpecularModel;
 
+use super::label_placement::{self, Segment, Wanted};
 use super::palette;
 use super::state::{Evaluated, Orbit};
 
@@ -20,188 +27,293 @@ fn project(r: &DMat3, v: DVec3) -> [f64; 2] {
     [p.x, p.y]
 }
 
-/// Vectors pointing away from the viewer are drawn fainter.
-fn depth_tint(r: &DMat3, v: DVec3, c: Color32) -> Color32 {
-    if (*r * v).z < -1e-9 { c.gamma_multiply(0.45) } else { c }
+/// What the plot drew, for the layout's tests and the screenshot's checks.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlotGeometry {
+    /// The diagram's square (without its buttons and legend).
+    pub rect: Rect,
+    /// Points per unit: a unit vector's length on screen.
+    pub unit: f32,
+    /// Every label's box.
+    pub labels: Vec<Rect>,
+    /// The arrows' stroke width (points).
+    pub stroke: f32,
 }
 
-/// The arrow from the vertex to `v` and its label just beyond its tip (`tag`, e.g. "L" or
-/// "L1"), in its symbol's colour.
-fn arrow<'a>(r: &DMat3, name: &str, tag: &str, v: DVec3, c: Color32) -> Option<(Arrows<'a>, Text)> {
-    (v.length() > 0.0).then(|| {
-        let c = depth_tint(r, v, c);
-        let tip = project(r, v);
-        let label = project(r, v * 1.16);
-        let text = Text::new("", label.into(), egui::RichText::new(tag).strong().size(16.0)).color(c);
-        (Arrows::new(name.to_string(), vec![[0.0, 0.0]], vec![tip]).color(c).tip_length(12.0), text)
-    })
+impl Default for PlotGeometry {
+    fn default() -> Self {
+        PlotGeometry { rect: Rect::NOTHING, unit: 0.0, labels: Vec::new(), stroke: 0.0 }
+    }
 }
 
-/// The tangent plane at the vertex (perpendicular to N), drawn as a disc of radius 1.2
-/// seen from the orbit: θ and β are measured from N, up from this plane's normal.
-fn tangent_plane<'a>(r: &DMat3, n: DVec3, c: Color32) -> Option<egui_plot::Polygon<'a>> {
-    let n = n.try_normalize()?;
-    let (a, b) = n.any_orthonormal_pair();
-    let pts: Vec<[f64; 2]> = (0..64)
-        .map(|i| i as f64 / 64.0 * std::f64::consts::TAU)
-        .map(|t| project(r, (a * t.cos() + b * t.sin()) * 1.2))
-        .collect();
-    Some(
-        egui_plot::Polygon::new("tangent plane", PlotPoints::from(pts))
-            .fill_color(c.gamma_multiply(0.12))
-            .stroke(egui::Stroke::new(1.0, c.gamma_multiply(0.6))),
-    )
+/// One arrow of the diagram.
+struct Arrow {
+    tag: String,
+    v: DVec3,
+    color: Color32,
+    dashed: bool,
 }
 
-/// The arc from `a` to `b` (unit vectors) at radius `radius`, and its label.
-fn angle_arc<'a>(
-    r: &DMat3,
-    name: &str,
-    a: DVec3,
-    b: DVec3,
-    radius: f64,
-    c: Color32,
-) -> Option<(Line<'a>, String, [f64; 2])> {
+/// The arrows: N, V, and each light's L and H (or R) and spot axis.
+fn arrows(eval: &Evaluated, specular: SpecularModel, ink: &dyn Fn(Color32) -> Color32) -> Vec<Arrow> {
+    let mut out = vec![
+        Arrow { tag: "N".into(), v: eval.n, color: ink(palette::N), dashed: false },
+        Arrow { tag: "V".into(), v: eval.v, color: ink(palette::V), dashed: false },
+    ];
+    let many = eval.lights.len() > 1;
+    for lv in &eval.lights {
+        let tag = if many { lv.index.to_string() } else { String::new() };
+        out.push(Arrow { tag: format!("L{tag}"), v: lv.l, color: ink(palette::L), dashed: false });
+        let (name, v) = match specular {
+            SpecularModel::BlinnPhong => ("H", lv.h),
+            SpecularModel::Phong => ("R", lv.r),
+        };
+        out.push(Arrow { tag: format!("{name}{tag}"), v, color: ink(palette::H), dashed: true });
+        if let Some(s) = lv.spot {
+            out.push(Arrow { tag: format!("S{tag}"), v: s, color: ink(palette::SPOT), dashed: true });
+        }
+    }
+    out.retain(|a| a.v.length() > 0.0);
+    out
+}
+
+/// The legend's entries: (symbol, meaning, colour, dashed).
+fn legend(eval: &Evaluated, specular: SpecularModel) -> Vec<(&'static str, &'static str, Color32, bool)> {
+    let mut v = vec![
+        ("N", "normal", palette::N, false),
+        ("L", "light", palette::L, false),
+        ("V", "viewer", palette::V, false),
+        match specular {
+            SpecularModel::BlinnPhong => ("H", "halfway", palette::H, true),
+            SpecularModel::Phong => ("R", "reflection", palette::H, true),
+        },
+    ];
+    if eval.lights.iter().any(|l| l.spot.is_some()) {
+        v.push(("S", "spot", palette::SPOT, true));
+    }
+    v
+}
+
+/// A line from `a` to `b`, dashed or not.
+fn line(p: &egui::Painter, a: Pos2, b: Pos2, stroke: Stroke, dashed: bool) {
+    if dashed {
+        let dash = stroke.width * 3.0;
+        p.extend(egui::Shape::dashed_line(&[a, b], stroke, dash, dash * 0.6));
+    } else {
+        p.line_segment([a, b], stroke);
+    }
+}
+
+/// Draws an arrow from `from` to `to` (a filled head; hollow when it points away from the
+/// viewer) and returns its segment for the labels to avoid.
+pub fn draw_arrow(
+    p: &egui::Painter,
+    from: Pos2,
+    to: Pos2,
+    width: f32,
+    color: Color32,
+    dashed: bool,
+    away: bool,
+) -> Segment {
+    let d = to - from;
+    let dir = d.normalized();
+    let head = (width * 4.0).min(d.length() * 0.45);
+    let wing = vec2(-dir.y, dir.x) * head * 0.5;
+    let base = to - dir * head;
+    line(p, from, base, Stroke::new(width, color), dashed);
+    let tri = vec![to, base + wing, base - wing];
+    if away {
+        p.add(egui::Shape::closed_line(tri, Stroke::new(width * 0.6, color)));
+    } else {
+        p.add(egui::Shape::convex_polygon(tri, color, Stroke::NONE));
+    }
+    Segment { a: from, b: to, half_width: width * 0.5 + head * 0.5 * (1.0 / 3.0) }
+}
+
+/// ⊙ (towards the viewer) or ⊗ (away) at `at`, radius `r`.
+pub fn draw_end_on(p: &egui::Painter, at: Pos2, r: f32, width: f32, color: Color32, towards: bool) {
+    p.circle_stroke(at, r, Stroke::new(width * 0.7, color));
+    if towards {
+        p.circle_filled(at, r * 0.3, color);
+    } else {
+        let k = r * 0.6;
+        for (a, b) in [(vec2(-k, -k), vec2(k, k)), (vec2(-k, k), vec2(k, -k))] {
+            p.line_segment([at + a, at + b], Stroke::new(width * 0.7, color));
+        }
+    }
+}
+
+/// The view buttons (XY, XZ, ZY, 3D), in the row the caller opened.
+pub fn view_buttons_ui(ui: &mut Ui, orbit: &mut Orbit) {
+    ui.label("View:");
+    for (name, o) in [("XY", Orbit::XY), ("XZ", Orbit::XZ), ("ZY", Orbit::ZY), ("3D", Orbit::PERSPECTIVE)] {
+        if ui.selectable_label(*orbit == o, name).on_hover_text(format!("Look at the {name} plane")).clicked() {
+            *orbit = o;
+        }
+    }
+}
+
+/// The legend, above the diagram: each symbol's line (dashed where the diagram dashes it),
+/// letter and meaning.
+fn legend_ui(ui: &mut Ui, entries: &[(&str, &str, Color32, bool)]) {
+    ui.horizontal_wrapped(|ui| {
+        for (sym, what, c, dashed) in entries {
+            let c = palette::ink(ui, *c);
+            let h = ui.text_style_height(&egui::TextStyle::Body);
+            let (r, _) = ui.allocate_exact_size(vec2(h * 1.6, h), Sense::hover());
+            line(ui.painter(), r.left_center(), r.right_center(), Stroke::new(3.0, c), *dashed);
+            ui.label(egui::RichText::new(*sym).strong().color(c));
+            ui.label(*what);
+            ui.add_space(h * 0.4);
+        }
+    });
+}
+
+/// The small triad in the diagram's corner: where eye space's x, y and z point.
+fn triad(p: &egui::Painter, r: &DMat3, origin: Pos2, len: f32, color: Color32, font: egui::FontId) -> Vec<Segment> {
+    let mut out = Vec::new();
+    for (name, axis) in [("x", DVec3::X), ("y", DVec3::Y), ("z", DVec3::Z)] {
+        let [x, y] = project(r, axis);
+        let to = origin + vec2(x as f32, -y as f32) * len;
+        if (to - origin).length() > 2.0 {
+            p.line_segment([origin, to], Stroke::new(1.5, color));
+            p.text(to + (to - origin).normalized() * 7.0, egui::Align2::CENTER_CENTER, name, font.clone(), color);
+        } else {
+            draw_end_on(p, origin, 5.0, 1.5, color, (*r * axis).z > 0.0);
+            p.text(origin + vec2(9.0, -9.0), egui::Align2::CENTER_CENTER, name, font.clone(), color);
+        }
+        out.push(Segment { a: origin, b: to, half_width: 6.0 });
+    }
+    out
+}
+
+/// Points along the arc from `a` to `b` (unit vectors) at `radius`, projected; and the
+/// arc's middle direction.
+fn arc(r: &DMat3, a: DVec3, b: DVec3, radius: f64) -> Option<(Vec<[f64; 2]>, [f64; 2], f64)> {
     let (a, b) = (a.try_normalize()?, b.try_normalize()?);
     let angle = a.dot(b).clamp(-1.0, 1.0).acos();
     let axis = a.cross(b).try_normalize().unwrap_or_else(|| a.any_orthonormal_vector());
-    let pts: Vec<[f64; 2]> = (0..=24)
-        .map(|i| {
-            let t = angle * i as f64 / 24.0;
-            project(r, DMat3::from_axis_angle(axis, t) * a * radius)
-        })
-        .collect();
-    let mid = DMat3::from_axis_angle(axis, angle / 2.0) * a * (radius + 0.12);
-    let label = format!("{name} = {:.1}\u{b0}", angle.to_degrees());
-    let p = project(r, mid);
-    // Unnamed items stay out of the legend.
-    Some((Line::new("", PlotPoints::from(pts)).color(c).width(1.5), label, p))
+    let pts =
+        (0..=24).map(|i| project(r, DMat3::from_axis_angle(axis, angle * i as f64 / 24.0) * a * radius)).collect();
+    let mid = project(r, DMat3::from_axis_angle(axis, angle / 2.0) * a * radius);
+    Some((pts, mid, angle))
 }
 
-/// Where the second angle's label goes so that it stays clear of the first's: both are
-/// boxes `size` (plot units) centred on their points; the second is pushed outwards along
-/// its own direction until the boxes no longer overlap.
-pub fn clear_of(first: [f64; 2], second: [f64; 2], size: [f64; 2]) -> [f64; 2] {
-    let overlaps = |p: [f64; 2]| (p[0] - first[0]).abs() < size[0] && (p[1] - first[1]).abs() < size[1];
-    let len = (second[0] * second[0] + second[1] * second[1]).sqrt();
-    let dir = if len > 1e-9 { [second[0] / len, second[1] / len] } else { [0.0, 1.0] };
-    let step = size[0].min(size[1]) * 0.25;
-    let mut p = second;
-    let mut k = 0;
-    while overlaps(p) && k < 200 {
-        p = [p[0] + dir[0] * step, p[1] + dir[1] * step];
-        k += 1;
-    }
-    if overlaps(p) {
-        // Straight below the first when pushing along the direction does not help.
-        p = [first[0], first[1] - size[1]];
-    }
-    p
-}
-
-/// The plot and its view buttons.
-pub fn vector_plot_ui(ui: &mut Ui, orbit: &mut Orbit, eval: &Evaluated, specular: SpecularModel) {
-    ui.horizontal_wrapped(|ui| {
-        ui.label("View:");
-        for (name, o) in [("XY", Orbit::XY), ("XZ", Orbit::XZ), ("ZY", Orbit::ZY), ("3D", Orbit::PERSPECTIVE)] {
-            if ui.selectable_label(*orbit == o, name).on_hover_text(format!("Look at the {name} plane")).clicked() {
-                *orbit = o;
-            }
-        }
-        ui.add(
-            egui::Label::new(egui::RichText::new(format!("yaw {:.0}°, pitch {:.0}°", orbit.yaw, orbit.pitch)).small())
-                .wrap_mode(egui::TextWrapMode::Extend),
-        )
-        .on_hover_text("Drag the plot to orbit");
-    });
-    let r = view_rotation(*orbit);
-    let dark = ui.visuals().dark_mode;
-    let ink = |c: Color32| if dark { c } else { palette::darker(c) };
-    let first = eval.lights.first().copied();
-    let side = (ui.available_height() - 8.0).max(120.0);
-    // The legend (which can hide an arrow) only where it fits: the tips are labelled anyway.
-    let entries = 3 + eval.lights.iter().map(|l| 2 + l.spot.is_some() as usize).sum::<usize>();
-    let row = ui.text_style_height(&egui::TextStyle::Body) + 4.0;
-    let show_legend = side >= 48.0 + entries as f32 * (row + 4.0);
-    // An angle label's size in plot units: about 10 characters of 14-point text, on a plot
-    // about 3.2 units across `side` points (the label is drawn at 14 points, scaled with the
-    // presentation's zoom as text is).
-    let units_per_point = 3.2 / side as f64;
-    let label_box = [10.0 * 0.6 * 14.0 * units_per_point, 18.0 * units_per_point];
-    let mut plot = Plot::new("vector plot")
-        .width(ui.available_width())
-        .height(side)
-        .data_aspect(1.0)
-        .allow_drag(false)
-        .allow_zoom(false)
-        .allow_scroll(false)
-        .allow_boxed_zoom(false)
-        .allow_double_click_reset(false)
-        .include_x(-1.4)
-        .include_x(1.4)
-        .include_y(-1.4)
-        .include_y(1.4)
-        .sense(egui::Sense::click_and_drag());
-    if show_legend {
-        plot = plot.legend(Legend::default());
-    }
-    let response = plot.show(ui, |p| {
-        let circle: Vec<[f64; 2]> =
-            (0..=96).map(|i| i as f64 / 96.0 * std::f64::consts::TAU).map(|t| [t.cos(), t.sin()]).collect();
-        p.line(Line::new("", PlotPoints::from(circle)).color(Color32::GRAY).width(1.0));
-        let many = eval.lights.len() > 1;
-        if let Some(plane) = tangent_plane(&r, eval.n, ink(palette::N)) {
-            p.add(plane);
-        }
-        let put = |p: &mut egui_plot::PlotUi<'_>, a: Option<(Arrows<'static>, Text)>| {
-            if let Some((a, t)) = a {
-                p.add(a);
-                p.text(t);
-            }
-        };
-        put(p, arrow(&r, "N", "N", eval.n, ink(palette::N)));
-        put(p, arrow(&r, "V", "V", eval.v, ink(palette::V)));
-        for lv in &eval.lights {
-            let sfx = if many { format!(" (light {})", lv.index) } else { String::new() };
-            let tag = if many { lv.index.to_string() } else { String::new() };
-            put(p, arrow(&r, &format!("L{sfx}"), &format!("L{tag}"), lv.l, ink(palette::L)));
-            let (name, vec, c) = match specular {
-                SpecularModel::BlinnPhong => ("H", lv.h, palette::H),
-                SpecularModel::Phong => ("R", lv.r, palette::R),
-            };
-            put(p, arrow(&r, &format!("{name}{sfx}"), &format!("{name}{tag}"), vec, ink(c)));
-            if let Some(s) = lv.spot {
-                put(p, arrow(&r, &format!("S, spot axis{sfx}"), &format!("S{tag}"), s, ink(palette::SPOT)));
-            }
-        }
-        if let Some(lv) = first {
-            let theta = angle_arc(&r, "\u{3b8}", eval.n, lv.l, 0.35, ink(palette::L));
-            let beta = match specular {
-                SpecularModel::BlinnPhong => angle_arc(&r, "\u{3b2}", eval.n, lv.h, 0.6, ink(palette::H)),
-                SpecularModel::Phong => angle_arc(&r, "\u{3b1}", lv.r, eval.v, 0.6, ink(palette::R)),
-            };
-            let label = |text: String, at: [f64; 2], c: Color32| {
-                Text::new("", at.into(), egui::RichText::new(text).size(14.0)).color(c)
-            };
-            let theta_at = theta.as_ref().map(|t| t.2);
-            if let Some((line, text, at)) = theta {
-                p.line(line);
-                p.text(label(text, at, ink(palette::L)));
-            }
-            if let Some((line, text, at)) = beta {
-                p.line(line);
-                let at = theta_at.map_or(at, |t| clear_of(t, at, label_box));
-                let c = if specular == SpecularModel::BlinnPhong { palette::H } else { palette::R };
-                p.text(label(text, at, ink(c)));
-            }
-        }
-    });
-    let resp = &response.response;
+/// The plot: its legend and the diagram, in the space given (the view buttons,
+/// [`view_buttons_ui`], go in the row above it). θ and β are labelled when `show_angles`
+/// (the quiz hides them). Returns what was drawn.
+pub fn vector_plot_ui(
+    ui: &mut Ui,
+    orbit: &mut Orbit,
+    eval: &Evaluated,
+    specular: SpecularModel,
+    show_angles: bool,
+) -> PlotGeometry {
+    legend_ui(ui, &legend(eval, specular));
+    let avail = ui.available_size();
+    let side = avail.x.min(avail.y).max(80.0);
+    let (outer, resp) = ui.allocate_exact_size(vec2(avail.x.max(side), side), Sense::click_and_drag());
+    let rect = Rect::from_center_size(outer.center(), Vec2::splat(side));
+    resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, "vector plot"));
+    let resp = resp.on_hover_text(format!("Drag to orbit (yaw {:.0}°, pitch {:.0}°)", orbit.yaw, orbit.pitch));
     if resp.dragged() {
         let d = resp.drag_delta();
         orbit.yaw = (orbit.yaw + d.x as f64 * 0.5).rem_euclid(360.0);
         orbit.pitch = (orbit.pitch + d.y as f64 * 0.5).clamp(-90.0, 90.0);
     }
+
+    let r = view_rotation(*orbit);
+    let bg = ui.visuals().panel_fill;
+    let ink = |c: Color32| palette::ink_on(c, bg);
+    let painter = ui.painter_at(outer);
+    let body = ui.text_style_height(&egui::TextStyle::Body);
+    let ppp = ui.ctx().pixels_per_point();
+    // Room beyond a unit vector's tip for its letter.
+    let unit = side * 0.5 / 1.25;
+    let width = (3.2 / ppp).max(unit * 0.022);
+    let centre = rect.center();
+    let at = |v: [f64; 2], k: f64| centre + vec2((v[0] * k) as f32, -(v[1] * k) as f32) * unit;
+    let mut lines: Vec<Segment> = Vec::new();
+
+    // The tangent plane: the unit disc perpendicular to N.
+    if let Some(n) = eval.n.try_normalize() {
+        let (a, b) = n.any_orthonormal_pair();
+        let pts: Vec<Pos2> = (0..72)
+            .map(|i| i as f64 / 72.0 * std::f64::consts::TAU)
+            .map(|t| at(project(&r, a * t.cos() + b * t.sin()), 1.0))
+            .collect();
+        let c = ink(palette::N);
+        painter.add(egui::Shape::convex_polygon(pts.clone(), c.gamma_multiply(0.10), Stroke::NONE));
+        painter.add(egui::Shape::closed_line(pts, Stroke::new(1.0, c.gamma_multiply(0.5))));
+    }
+
+    // The arrows, and each one's letter to place.
+    let tip_font = egui::FontId::proportional(body * 1.6);
+    let angle_font = egui::FontId::proportional(body * 1.5);
+    let mut wanted = Vec::new();
+    let mut texts = Vec::new();
+    let mut end_on = 0;
+    for a in arrows(eval, specular, &ink) {
+        let v = a.v.normalize_or_zero();
+        let [x, y] = project(&r, v);
+        let z = (r * v).z;
+        let tip = at([x, y], 1.0);
+        let flat = (x * x + y * y).sqrt() < 0.15;
+        if flat {
+            // End on: ⊙ or ⊗ at the vertex, its letter beside it.
+            // Each further one a little aside, so two never sit on one another.
+            let ring = centre + vec2(1.0, 1.0) * (end_on as f32 * width * 8.0);
+            end_on += 1;
+            draw_end_on(&painter, ring, width * 3.0, width, a.color, z > 0.0);
+            lines.push(Segment { a: ring, b: ring, half_width: width * 3.5 });
+            wanted.push(Wanted { anchor: ring, direction: vec2(0.7, -0.7), size: Vec2::ZERO, gap: width * 3.5 });
+        } else {
+            lines.push(draw_arrow(&painter, centre, tip, width, a.color, a.dashed, z < -1e-9));
+            wanted.push(Wanted { anchor: tip, direction: tip - centre, size: Vec2::ZERO, gap: width });
+        }
+        texts.push((a.tag, a.color, tip_font.clone()));
+    }
+    painter.circle_filled(centre, width * 1.2, ink(palette::N));
+
+    // θ and β (or α) as arcs, their labels outside them.
+    if show_angles && let Some(lv) = eval.lights.first() {
+        let (second, sym, from, to) = match specular {
+            SpecularModel::BlinnPhong => (0.5, "\u{3b2}", eval.n, lv.h),
+            SpecularModel::Phong => (0.5, "\u{3b1}", lv.r, eval.v),
+        };
+        for (radius, name, a, b, c) in
+            [(0.3, "\u{3b8}", eval.n, lv.l, ink(palette::L)), (second, sym, from, to, ink(palette::H))]
+        {
+            let Some((pts, mid, angle)) = arc(&r, a, b, radius) else { continue };
+            let pts: Vec<Pos2> = pts.iter().map(|p| at(*p, 1.0)).collect();
+            for w in pts.windows(2) {
+                lines.push(Segment { a: w[0], b: w[1], half_width: 1.0 });
+            }
+            painter.add(egui::Shape::line(pts, Stroke::new(1.5, c)));
+            let m = at(mid, 1.0);
+            let out = if (m - centre).length() > 1.0 { m - centre } else { vec2(1.0, -1.0) };
+            wanted.push(Wanted { anchor: m, direction: out, size: Vec2::ZERO, gap: 4.0 });
+            texts.push((format!("{name} = {:.1}\u{b0}", angle.to_degrees()), c, angle_font.clone()));
+        }
+    }
+
+    // The triad, bottom left.
+    let small = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
+    let grey = ink(Color32::from_gray(140));
+    let origin = rect.left_bottom() + vec2(side * 0.08, -side * 0.08);
+    lines.extend(triad(&painter, &r, origin, side * 0.06, grey, small));
+
+    // Every label, placed clear of every other and of every line.
+    let galleys: Vec<_> = texts.into_iter().map(|(t, c, f)| painter.layout_no_wrap(t, f, c)).collect();
+    for (w, g) in wanted.iter_mut().zip(&galleys) {
+        w.size = g.size();
+    }
+    // Labels may use the whole width given, beyond the square.
+    let boxes = label_placement::place(&wanted, &lines, outer);
+    for (b, g) in boxes.iter().zip(galleys) {
+        painter.galley(b.min, g, Color32::PLACEHOLDER);
+    }
+    PlotGeometry { rect, unit, labels: boxes, stroke: width }
 }
 
 #[cfg(test)]
@@ -220,16 +332,11 @@ mod tests {
     }
 
     #[test]
-    fn angle_labels_are_kept_apart() {
-        let d = |a: [f64; 2], b: [f64; 2]| ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt();
-        // The worksheet's theta and beta labels nearly coincide in the XY view.
-        let size = [0.4, 0.1];
-        let apart = |a: [f64; 2], c: [f64; 2]| (a[0] - c[0]).abs() >= size[0] || (a[1] - c[1]).abs() >= size[1];
-        for (a, b) in [([0.3, 0.2], [0.31, 0.21]), ([0.0, 0.0], [0.0, 0.0]), ([0.5, 0.1], [0.3, 0.15])] {
-            let c = clear_of(a, b, size);
-            assert!(apart(a, c), "{a:?} {b:?} -> {c:?}");
-            assert!(d(b, c) < 1.0, "not pushed far: {b:?} -> {c:?}");
-        }
-        assert_eq!(clear_of([0.5, 0.1], [0.1, 0.5], size), [0.1, 0.5], "already clear: left alone");
+    fn an_arc_spans_its_angle() {
+        let r = view_rotation(Orbit::XY);
+        let (pts, mid, angle) = arc(&r, DVec3::Y, DVec3::X, 0.5).unwrap();
+        assert!((angle - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+        assert!((pts[0][1] - 0.5).abs() < 1e-12 && (pts[24][0] - 0.5).abs() < 1e-12);
+        assert!((mid[0] - mid[1]).abs() < 1e-12 && mid[0] > 0.0);
     }
 }

@@ -1,0 +1,203 @@
+//! What the back row sees: the pictures and the plot, at the four projector sizes (2560x1440
+//! at scale 2), presenting and not, in five situations: a fresh start, after a pick on the
+//! surface, the Phong demo with every correction on, Compare, and the lobe. The UI records
+//! where it drew each picture and the plot (`state.ui.geometry`); these tests hold it to
+//! the sizes a class needs, and the plot's labels to never overlapping.
+
+use egui_kittest::Harness;
+use phonglab::app::{AppState, app_ui};
+use phonglab::screenshot_cmd::{Open, state_for};
+
+const SIZES: [(f32, f32, f32); 4] =
+    [(1024.0, 768.0, 1.0), (1280.0, 720.0, 1.0), (1920.0, 1080.0, 1.0), (2560.0, 1440.0, 2.0)];
+
+/// The situations: what is open, and whether the surface is clicked first.
+const SITUATIONS: [(&str, Option<Open>, bool); 5] = [
+    ("fresh start", None, false),
+    ("after a pick", None, true),
+    ("the demo with its corrections", Some(Open::DemoFixes), false),
+    ("compare", Some(Open::Compare), false),
+    ("the lobe", Some(Open::Lobe), false),
+];
+
+fn harness(w: f32, h: f32, scale: f32, state: AppState) -> Harness<'static, AppState> {
+    let mut h = Harness::builder()
+        .with_size([w, h])
+        .with_pixels_per_point(scale)
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+    h.run_steps(3);
+    h
+}
+
+/// Clicks the middle of the shaded picture (a pick on the surface).
+fn pick(h: &mut Harness<'static, AppState>) {
+    let Some(r) = h.state().ui.geometry.pictures.first().copied() else { return };
+    let at = r.center();
+    h.input_mut().events.push(egui::Event::PointerMoved(at));
+    for pressed in [true, false] {
+        h.input_mut().events.push(egui::Event::PointerButton {
+            pos: at,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+        h.step();
+    }
+    h.run_steps(3);
+}
+
+/// The least sizes, as shares of the window's height: a single picture's side, each of two
+/// pictures', and the plot's unit circle.
+///
+/// Presenting, the full figures (55 %, 40 %, 40 %) wherever they fit beside the worked
+/// calculation: one picture from 1280 points wide, two from 1920. Where they cannot fit,
+/// less is asked, and the arithmetic says why: at 1280x720 presenting, two pictures of 288
+/// and a plot square of 360 need 952 points of a centre of about 880; at 1024x768 one
+/// picture of 422 and a plot square of 384 need 814 of about 720. The normal window keeps
+/// both side panels open (the controls and the calculation, 560 to 860 points), which
+/// leaves the centre 460 to 1060 points: there the pictures and the plot share what is
+/// left, and these floors keep them from shrinking back to a strip.
+fn least(w: f32, presenting: bool, pictures: usize) -> (f32, f32, f32) {
+    match (presenting, pictures > 1) {
+        (true, false) if w >= 1280.0 => (0.55, 0.40, 0.40),
+        (true, true) if w >= 1920.0 => (0.55, 0.40, 0.40),
+        (true, _) => (0.36, 0.26, 0.25),
+        (false, false) if w >= 1280.0 => (0.36, 0.25, 0.25),
+        (false, true) if w >= 1280.0 => (0.36, 0.22, 0.22),
+        (false, _) => (0.22, 0.16, 0.19),
+    }
+}
+
+#[test]
+fn pictures_and_the_plot_are_large_inside_the_window_and_labelled_clear() {
+    let mut failures = Vec::new();
+    for (w, hgt, scale) in SIZES {
+        for presenting in [true, false] {
+            for (what, open, picks) in SITUATIONS {
+                let state = state_for(phonglab_core::Document::default(), presenting, false, open);
+                let mut h = harness(w, hgt, scale, state);
+                if picks {
+                    pick(&mut h);
+                }
+                let g = h.state().ui.geometry.clone();
+                let window = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(w, hgt));
+                let case = format!("{w}x{hgt}@{scale} {} {what}", if presenting { "presenting" } else { "normal" });
+                let (one, two, circle) = least(w, presenting, g.pictures.len());
+                let want = if g.pictures.len() > 1 { two } else { one };
+                if g.pictures.is_empty() {
+                    failures.push(format!("{case}: no picture drawn"));
+                }
+                for r in &g.pictures {
+                    if !window.contains_rect(r.shrink(0.5)) {
+                        failures.push(format!("{case}: a picture {r:?} leaves the window"));
+                    }
+                    let side = r.width().min(r.height());
+                    if side < want * hgt {
+                        failures.push(format!("{case}: a picture's side {side:.0} < {:.0}", want * hgt));
+                    }
+                }
+                let plot_expected = open != Some(Open::Compare) && open != Some(Open::Lobe);
+                match (&g.plot, plot_expected) {
+                    (Some(p), true) => {
+                        if !window.contains_rect(p.rect.shrink(0.5)) {
+                            failures.push(format!("{case}: the plot {:?} leaves the window", p.rect));
+                        }
+                        if 2.0 * p.unit < circle * hgt {
+                            failures.push(format!("{case}: the unit circle {:.0} < {:.0}", 2.0 * p.unit, circle * hgt));
+                        }
+                        if p.stroke * scale < 3.0 {
+                            failures.push(format!("{case}: arrows {:.1} px wide", p.stroke * scale));
+                        }
+                        for (i, a) in p.labels.iter().enumerate() {
+                            for b in &p.labels[i + 1..] {
+                                if a.intersects(*b) {
+                                    failures.push(format!("{case}: labels overlap {a:?} {b:?}"));
+                                }
+                            }
+                        }
+                    }
+                    (None, true) => failures.push(format!("{case}: no plot")),
+                    _ => {}
+                }
+                for p in &g.pictures {
+                    if let Some(plot) = &g.plot
+                        && p.intersects(plot.rect.shrink(1.0))
+                    {
+                        failures.push(format!("{case}: a picture and the plot overlap"));
+                    }
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
+}
+
+#[test]
+fn the_layout_of_the_first_frame_is_the_layout_after_a_click() {
+    for presenting in [true, false] {
+        let state = state_for(phonglab_core::Document::default(), presenting, false, None);
+        let mut h = harness(1280.0, 720.0, 1.0, state);
+        let first = h.state().ui.geometry.clone();
+        pick(&mut h);
+        let after = h.state().ui.geometry.clone();
+        assert_eq!(first.arrangement, after.arrangement, "presenting {presenting}");
+        if presenting {
+            assert_eq!(first.pictures, after.pictures);
+            assert_eq!(first.plot.map(|p| p.rect), after.plot.map(|p| p.rect));
+        } else {
+            // The controls panel widens to the picked vertex's longer numbers (its fields
+            // show every digit); the centre follows, within a few per cent.
+            let side = |g: &phonglab::app::state::Geometry| g.pictures[0].width();
+            assert!((side(&first) - side(&after)).abs() < 0.1 * side(&first), "{first:?} -> {after:?}");
+        }
+    }
+}
+
+#[test]
+fn the_divider_moves_the_split_and_is_kept() {
+    let state = state_for(phonglab_core::Document::default(), true, false, None);
+    let mut h = harness(1280.0, 720.0, 1.0, state);
+    let before = h.state().ui.geometry.pictures[0];
+    let plot = h.state().ui.geometry.plot.clone().unwrap().rect;
+    // The divider lies between the picture and the plot.
+    let x = (before.max.x + plot.min.x) / 2.0;
+    let from = egui::pos2(x, before.center().y);
+    let to = from - egui::vec2(120.0, 0.0);
+    h.input_mut().events.push(egui::Event::PointerMoved(from));
+    h.input_mut().events.push(egui::Event::PointerButton {
+        pos: from,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.step();
+    for k in 1..=6 {
+        h.input_mut().events.push(egui::Event::PointerMoved(from + (to - from) * (k as f32 / 6.0)));
+        h.step();
+    }
+    h.input_mut().events.push(egui::Event::PointerButton {
+        pos: to,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.run_steps(3);
+    let kept = h.state().ui.layout.dividers;
+    assert!(kept.beside.is_some(), "{kept:?}");
+    let after = h.state().ui.geometry.pictures[0];
+    assert!(after.width() < before.width() - 40.0, "{before:?} -> {after:?}");
+    // Kept across restarts: the layout's stored text carries it.
+    let back = phonglab::app::layout::Layout::from_ron(Some(&h.state().ui.layout.to_ron()));
+    assert_eq!(back.dividers, kept);
+}
+
+#[test]
+fn at_most_half_the_window_is_empty_in_presentation() {
+    for open in [None, Some(Open::Compare), Some(Open::DemoFixes)] {
+        let state = state_for(phonglab_core::Document::default(), true, false, open);
+        let (w, h, rgba, state) = phonglab::screenshot_cmd::take(state, 1280.0, 720.0, 1.0);
+        let bg = state.ui.layout.theme.visuals().panel_fill;
+        let empty = phonglab::screenshot_cmd::empty_share(&rgba, w, h, bg, 16);
+        assert!(empty <= 0.5, "{open:?}: {:.0} % empty", 100.0 * empty);
+    }
+}
