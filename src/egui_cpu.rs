@@ -149,7 +149,7 @@ pub fn raw_input(width: f32, height: f32, pixels_per_point: f32) -> RawInput {
     input
 }
 
-/// Runs `ui_fn` for a few frames (so layout settles) on a `width` x `height` point screen
+/// Runs `ui_fn` for six frames a tenth of a second apart (so layout and animations settle) on a `width` x `height` point screen
 /// and paints the last frame at `pixels_per_point`.
 pub fn paint_ui(width: f32, height: f32, pixels_per_point: f32, mut ui_fn: impl FnMut(&mut Ui)) -> Canvas {
     let ctx = Context::default();
@@ -160,8 +160,12 @@ pub fn paint_ui(width: f32, height: f32, pixels_per_point: f32, mut ui_fn: impl 
         ctx.global_style().visuals.panel_fill,
     );
     let mut last = None;
-    for _ in 0..3 {
-        let mut out = ctx.run_ui(raw_input(width, height, pixels_per_point), &mut ui_fn);
+    // A tenth of a second between frames, so that fades and openings (a window appearing)
+    // have finished by the last one.
+    for frame in 0..6 {
+        let mut input = raw_input(width, height, pixels_per_point);
+        input.time = Some(frame as f64 * 0.1);
+        let mut out = ctx.run_ui(input, &mut ui_fn);
         let mut delta = std::mem::take(&mut out.textures_delta);
         canvas.apply_textures(&delta);
         delta.clear(); // applied above (egui checks that deltas are not dropped unseen)

@@ -20,6 +20,17 @@ fn harness() -> Harness<'static, AppState> {
     h
 }
 
+/// The app on the worksheet with its shaded view on the sphere (the start shows the teapot):
+/// for the tests whose numbers are the r = 0.5 sphere's.
+fn sphere_harness() -> Harness<'static, AppState> {
+    let mut state = AppState::worksheet();
+    state.doc.view.object = phonglab_core::ObjectKind::Sphere;
+    let mut h =
+        Harness::builder().with_size([1500.0, 1000.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+    h.run_steps(2);
+    h
+}
+
 /// The unclamped rgba line of the result panel, as it is displayed.
 fn displayed_rgba(c: [f64; 4]) -> String {
     let s: Vec<String> = c.iter().map(|x| fmt_sig(*x, 8)).collect();
@@ -271,7 +282,7 @@ fn the_shaded_view_follows_the_demos_keys() {
 
 #[test]
 fn clicking_the_surface_explains_that_vertex() {
-    let mut h = harness();
+    let mut h = sphere_harness();
     let before = h.state().doc.scene.vertex;
     let image = h.get_by_label_contains("Sphere Gouraud").rect();
     // The image sits under its caption; click its centre (the sphere is in the middle).
@@ -465,7 +476,7 @@ fn wait_for(h: &mut Harness<'static, AppState>, secs: u64, done: impl Fn(&AppSta
 
 #[test]
 fn the_cost_of_accuracy_study_runs_in_the_background() {
-    let mut h = harness();
+    let mut h = sphere_harness();
     h.get_by_label("Cost of accuracy").click();
     h.run_steps(2);
     h.get_by_label("Run the study").click();
@@ -482,7 +493,8 @@ fn the_cost_of_accuracy_study_runs_in_the_background() {
     assert_eq!(study.points.len(), phonglab_core::cost::variants(phonglab_core::ObjectKind::Sphere).len());
     // The table shows every variant, and the takeaways are stated.
     h.get_by_label("Gouraud 64");
-    h.get_by_label("Phong 32, fast rsqrt");
+    // In the table, and in the chart's legend.
+    assert!(h.query_all_by_label("Phong 32, fast rsqrt").count() >= 1);
     h.get_by_label_contains("f32 against f64 on");
     // Phong beats Gouraud at every level, as the core's tests also say.
     for l in phonglab_core::cost::levels(phonglab_core::ObjectKind::Sphere) {
@@ -511,7 +523,7 @@ fn cancelling_or_closing_stops_the_study() {
 
 #[test]
 fn the_heat_map_shows_beside_the_shaded_view() {
-    let mut h = harness();
+    let mut h = sphere_harness();
     h.get_by_label("Error heat map").click();
     h.run_steps(1);
     wait_for(&mut h, 60, |s| s.cost.heat.is_some());
@@ -545,7 +557,7 @@ fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
     h.run_steps(2);
     assert_eq!(h.state().ui.demo_fixes, [true, false, false]);
     // The reasons open in one click, and the switches have not moved.
-    h.get_by_label_contains("Why the demo differs from OpenGL").click();
+    h.get_by_label_contains("Why the demo differs").click();
     h.run_steps(2);
     h.get_by_label_contains(phonglab_core::library::DemoDeparture::LightTurnsWithObject.why());
     // Two pictures: the demo's on the left, the corrected one on the right.
@@ -677,4 +689,26 @@ fn view_options_open_with_a_click_and_keep_the_picture_on_screen() {
     h.get_by_label_contains("Mesh file");
     let picture = h.state().ui.geometry.pictures[0];
     assert!(picture.max.y <= 1000.0 && picture.width() > 150.0, "{picture:?}");
+}
+
+#[test]
+fn a_new_spotlight_aims_at_the_object_so_the_demo_stays_lit() {
+    let mut h = harness();
+    h.get_by_label("Presets").click();
+    h.run_steps(2);
+    h.get_by_label("Phong demo").click();
+    h.run_steps(2);
+    let before = h.state().doc.clone();
+    h.get_by_role_and_label(Role::CheckBox, "Spotlight").click();
+    h.run_steps(2);
+    let l = &h.state().doc.scene.lights[0];
+    assert_eq!(l.spot_cutoff, 30.0);
+    let aim = phonglab::app::controls::aim_at_object(&before, &before.scene.lights[0]).unwrap();
+    assert!((l.spot_direction - aim).length() < 1e-12, "{:?} vs {aim:?}", l.spot_direction);
+    // The light at (-4, 0, -8) in the demo's object space aims back at the origin.
+    let want = DVec3::new(4.0, 0.0, 8.0).normalize();
+    assert!((l.spot_direction - want).length() < 1e-9, "{:?}", l.spot_direction);
+    // The worked vertex, on the object, is inside the cone: lit.
+    let c = front_primary(h.state());
+    assert!(c[0] > 0.05, "{c:?}");
 }

@@ -178,8 +178,8 @@ fn compare_pins_a_and_highlights_the_steps_that_differ() {
     h.key_press(egui::Key::P);
     h.key_press(egui::Key::Num2);
     h.run_steps(3);
-    h.get_by_label_contains("A: the worksheet, mview5, Sphere Gouraud, f64");
-    h.get_by_label_contains("B: the worksheet, mview5, Sphere Phong, f32");
+    h.get_by_label_contains("A: the worksheet, mview5, Teapot Gouraud, f64");
+    h.get_by_label_contains("B: the worksheet, mview5, Teapot Phong, f32");
     h.get_by_label_contains("A's shaded view");
     h.get_by_label_contains("B's shaded view");
     let differ = h.get_by_label_contains("steps differ").value().unwrap_or_default();

@@ -1,8 +1,8 @@
 //! The explorer at projector sizes, driven headless: at 1024×768, 1280×720, 1440×900 and
 //! 1920×1080, in the normal layout and in presentation mode, every labelled widget lies
 //! inside the window (widgets in the side panels may lie below it: those panels scroll),
-//! no two labelled widgets overlap, and the shaded view is at least 40 % of the window's
-//! height.
+//! no two labelled widgets overlap, and the shaded view keeps a floor of the window's
+//! height (the sizes a class needs, per mode and window size, are `tests/ui_pictures.rs`'s).
 
 use egui::Rect;
 use egui::accesskit::Role;
@@ -56,7 +56,9 @@ struct Regions {
 }
 
 fn regions(ws: &[Widget], w: f32) -> Regions {
-    let splitters: Vec<&Widget> = ws.iter().filter(|x| x.role == Role::Splitter).collect();
+    // The panels' own edges; the centre's divider between the pictures and the plot lies
+    // inside the centre.
+    let splitters: Vec<&Widget> = ws.iter().filter(|x| x.role == Role::Splitter && x.label != "divider").collect();
     let top_bottom = splitters.iter().map(|s| s.rect.min.y).fold(f32::INFINITY, f32::min);
     let mut xs: Vec<(f32, f32)> = splitters.iter().map(|s| (s.rect.min.x, s.rect.max.x)).collect();
     xs.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -123,8 +125,11 @@ fn problems(h: &Harness<'static, AppState>, w: f32, height: f32) -> Vec<String> 
             }
         }
     }
-    // With a second picture beside it (the demo's corrected one), the two share the width.
-    let share = if ws.iter().any(|x| x.role == Role::Image && x.label.starts_with("Corrected")) { 0.2 } else { 0.4 };
+    // The centre shares its space between the picture and the vector plot (both squares),
+    // so the picture alone no longer takes 40 %: 22 % is the floor in the tightest case (a
+    // 1024x768 normal window, both side panels open); two pictures (the demo's corrected
+    // one beside its own) in that window's 360-point centre get 13 % each.
+    let share = if ws.iter().any(|x| x.role == Role::Image && x.label.starts_with("Corrected")) { 0.13 } else { 0.22 };
     match ws.iter().find(|x| x.role == Role::Image && x.label.contains("ms per frame")) {
         Some(img) if img.rect.height() >= share * height => {}
         Some(img) => out.push(format!("the shaded view is {} high, under {share} of {height}", img.rect.height())),

@@ -61,10 +61,10 @@ fn least(w: f32, presenting: bool, pictures: usize) -> (f32, f32, f32) {
     match (presenting, pictures > 1) {
         (true, false) if w >= 1280.0 => (0.55, 0.40, 0.40),
         (true, true) if w >= 1920.0 => (0.55, 0.40, 0.40),
-        (true, _) => (0.36, 0.26, 0.25),
+        (true, _) => (0.36, 0.20, 0.22),
         (false, false) if w >= 1280.0 => (0.36, 0.25, 0.25),
         (false, true) if w >= 1280.0 => (0.36, 0.22, 0.22),
-        (false, _) => (0.22, 0.16, 0.19),
+        (false, _) => (0.22, 0.13, 0.15),
     }
 }
 

@@ -18,6 +18,9 @@ pub struct Chrome {
     pub picture: f32,
     /// Above the plot: its view buttons and legend.
     pub plot: f32,
+    /// The least width (side by side) or height (stacked) of each part, so that its widest
+    /// button fits ("Vectors at the vertex", the shaded view's toolbar).
+    pub min_part: f32,
 }
 
 /// The two arrangements.
@@ -60,9 +63,9 @@ pub struct Split {
 pub const DIVIDER: f32 = 8.0;
 
 /// How the plot's square counts against a picture's: one picture is wanted at 55 % of the
-/// window's height, each of two at 40 %, and the plot's unit circle at 40 % (its square
-/// 1.25 times that, 50 %), so a plot's side counts 0.55 / 0.5 = 1.1 times one picture's,
-/// and 0.40 / 0.5 = 0.8 times each of two.
+/// window's height, each of two at 40 %, and the plot's unit circle at 40 % (its square 1.2
+/// times that, and a little more for its letters: about 50 %), so a plot's side counts
+/// 0.55 / 0.5 = 1.1 times one picture's, and 0.40 / 0.5 = 0.8 times each of two.
 fn plot_weight(pictures: usize) -> f32 {
     if pictures > 1 { 0.8 } else { 1.1 }
 }
@@ -91,10 +94,24 @@ fn score((picture, plot): (f32, f32), pictures: usize) -> f32 {
     picture.min(plot * plot_weight(pictures))
 }
 
+/// The fractions `arrangement` may use in `area`: each part at least `min_part`, and
+/// between 20 % and 85 %; empty when the area is too small for both.
+fn allowed(area: Rect, arrangement: Arrangement, min_part: f32) -> (f32, f32) {
+    let span = match arrangement {
+        Arrangement::Beside => area.width(),
+        Arrangement::Stacked => area.height(),
+    } - DIVIDER;
+    let lo = (min_part / span.max(1.0)).max(0.2);
+    let hi = (1.0 - min_part / span.max(1.0)).min(0.85);
+    (lo, hi)
+}
+
 /// The best fraction for `arrangement`: the one whose smaller square is largest.
 fn best_fraction(area: Rect, arrangement: Arrangement, pictures: usize, chrome: Chrome) -> f32 {
+    let (lo, hi) = allowed(area, arrangement, chrome.min_part);
     (20..=85)
         .map(|k| k as f32 / 100.0)
+        .filter(|f| *f >= lo && *f <= hi)
         .max_by(|a, b| {
             let (sa, sb) = (
                 score(sides(area, arrangement, *a, pictures, chrome), pictures),
@@ -102,7 +119,7 @@ fn best_fraction(area: Rect, arrangement: Arrangement, pictures: usize, chrome: 
             );
             sa.total_cmp(&sb).then(b.total_cmp(a))
         })
-        .unwrap_or(0.5)
+        .unwrap_or((lo + hi) * 0.5)
 }
 
 /// Shares `area` between `pictures` pictures and the plot (see the module's rule), with
@@ -110,14 +127,18 @@ fn best_fraction(area: Rect, arrangement: Arrangement, pictures: usize, chrome: 
 pub fn split(area: Rect, pictures: usize, chrome: Chrome, dividers: Dividers) -> Split {
     let candidates = [Arrangement::Beside, Arrangement::Stacked].map(|a| {
         let f = best_fraction(area, a, pictures, chrome);
-        (a, f, score(sides(area, a, f, pictures, chrome), pictures))
+        let (lo, hi) = allowed(area, a, chrome.min_part);
+        // An arrangement whose parts cannot both have their least size counts for nothing.
+        let fits = lo <= hi;
+        (a, f, if fits { score(sides(area, a, f, pictures, chrome), pictures) } else { -1.0 })
     });
     let (arrangement, best, _) = if candidates[1].2 > candidates[0].2 * 1.02 { candidates[1] } else { candidates[0] };
     let chosen = match arrangement {
         Arrangement::Beside => dividers.beside,
         Arrangement::Stacked => dividers.stacked,
     };
-    let fraction = chosen.unwrap_or(best).clamp(0.2, 0.85);
+    let (lo, hi) = allowed(area, arrangement, chrome.min_part);
+    let fraction = chosen.unwrap_or(best).clamp(lo.min(hi), hi.max(lo));
     let s = sides(area, arrangement, fraction, pictures, chrome);
     let (pictures_rect, divider, beside) = match arrangement {
         Arrangement::Beside => {
@@ -158,7 +179,7 @@ pub fn area(w: f32, h: f32) -> Rect {
 mod tests {
     use super::*;
 
-    const CHROME: Chrome = Chrome { picture: 60.0, plot: 70.0 };
+    const CHROME: Chrome = Chrome { picture: 60.0, plot: 70.0, min_part: 160.0 };
 
     #[test]
     fn a_wide_area_goes_side_by_side_and_a_tall_one_stacks() {

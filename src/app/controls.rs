@@ -56,7 +56,43 @@ fn placement_label(p: &LightPlacement) -> &'static str {
     }
 }
 
+/// The spot direction, in the coordinates light `l` is placed in, that aims it at the
+/// shaded view's object (its origin), so a new spotlight lights what is on screen; `None`
+/// for a directional light or a light at the object.
+pub fn aim_at_object(doc: &Document, l: &Light) -> Option<DVec3> {
+    let shaded = doc.shaded_scene();
+    let object = shaded.eye_from_object() * DVec4::W;
+    let in_light = shaded.eye_from_light(l).inverse() * object;
+    if l.position.w == 0.0 || in_light.w == 0.0 {
+        return None;
+    }
+    (in_light.truncate() / in_light.w - l.position.truncate() / l.position.w).try_normalize()
+}
+
+/// The smallest of 1, 2 and 5 times a power of ten that is at least `x`.
+pub fn nice_ceiling(x: f64) -> f64 {
+    if x.is_nan() || x <= 0.0 || x.is_infinite() {
+        return 1.0;
+    }
+    let p = 10f64.powf(x.log10().floor());
+    [1.0, 2.0, 5.0, 10.0].into_iter().map(|k| k * p).find(|v| *v >= x * (1.0 - 1e-12)).unwrap_or(10.0 * p)
+}
+
+/// The light position sliders' range, ±this: twice the scene's own size (the worked
+/// vertex, the lights, the view's object of radius about 1), rounded up to 1, 2 or 5 times
+/// a power of ten. A one-unit teapot gets ±5 (a slider's pixel is a few hundredths), the
+/// worksheet's vertex at -512 gets ±2000. Typed values are not bounded by it; one beyond it
+/// widens the range.
+pub fn position_range(doc: &Document) -> f64 {
+    let extent = |p: DVec4| if p.w != 0.0 { (p.truncate() / p.w).abs().max_element() } else { 0.0 };
+    let lights = doc.scene.lights.iter().map(|l| extent(l.position)).fold(0.0, f64::max);
+    let m = extent(doc.scene.vertex.position).max(lights).max(1.0);
+    nice_ceiling(2.0 * m).max(5.0)
+}
+
 fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
+    let range = position_range(doc);
+    let aims: Vec<Option<DVec3>> = doc.scene.lights.iter().map(|l| aim_at_object(doc, l)).collect();
     let lights = &mut doc.scene.lights;
     // The buttons come first, in their own id scope, so their ids do not move when a
     // tab is added (a click aimed at the last frame's button would miss).
@@ -96,9 +132,9 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
     if ui.checkbox(&mut directional, "Directional (w = 0)").changed() {
         l.position.w = if directional { 0.0 } else { 1.0 };
     }
-    slider(ui, "Light x", &mut l.position.x, -2000.0..=2000.0, true);
-    slider(ui, "Light y", &mut l.position.y, -2000.0..=2000.0, true);
-    slider(ui, "Light z", &mut l.position.z, -2000.0..=2000.0, true);
+    for (name, v) in [("Light x", &mut l.position.x), ("Light y", &mut l.position.y), ("Light z", &mut l.position.z)] {
+        slider(ui, name, v, -range..=range, false);
+    }
     ComboBox::from_label("Light fixed to").selected_text(placement_label(&l.placement)).show_ui(ui, |ui| {
         for p in [LightPlacement::Eye, LightPlacement::World, LightPlacement::Object] {
             let label = placement_label(&p);
@@ -120,8 +156,11 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
     }
 
     let mut spot = l.is_spot();
-    if ui.checkbox(&mut spot, "Spotlight").changed() {
+    if ui.checkbox(&mut spot, "Spotlight").on_hover_text("A new spotlight aims at the object in the view").changed() {
         l.spot_cutoff = if spot { 30.0 } else { 180.0 };
+        if let (true, Some(Some(aim))) = (spot, aims.get(i)) {
+            l.spot_direction = *aim;
+        }
     }
     if spot {
         vec3(ui, "Spot direction", &mut l.spot_direction, 0.01);
@@ -267,5 +306,26 @@ pub fn worksheet_modelview_note(k: u8) -> &'static str {
         }
         3 | 4 => "mview3/4: rotations built from 15/17 and 8/17, as the worksheet prints them.",
         _ => "mview5: a 3-4-5 rotation about x and translate z by -960; the worksheet prints its values for this one.",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slider_ranges_follow_the_scene() {
+        assert_eq!(nice_ceiling(3.0), 5.0);
+        assert_eq!(nice_ceiling(1024.0), 2000.0);
+        assert_eq!(nice_ceiling(17.8), 20.0);
+        assert_eq!(nice_ceiling(100.0), 100.0);
+        // The worksheet: the vertex at -512.
+        assert_eq!(position_range(&Document::default()), 2000.0);
+        // The Phong demo: the light at (-4, 0, -8) and a one-unit sphere.
+        assert_eq!(position_range(&phonglab_core::library::phong_demo_document()), 20.0);
+        let mut d = phonglab_core::library::phong_demo_document();
+        d.scene.lights[0].position = DVec4::new(0.5, 0.5, 1.0, 1.0);
+        d.scene.vertex.position = DVec4::new(0.0, 0.0, 0.5, 1.0);
+        assert_eq!(position_range(&d), 5.0);
     }
 }

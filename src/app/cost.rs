@@ -126,6 +126,11 @@ impl CostState {
         self.pending_about = about;
     }
 
+    /// Is a study or a heat map being computed?
+    pub fn busy(&self) -> bool {
+        self.running.is_some() || self.heat_running.is_some()
+    }
+
     /// Collects finished work; returns whether something is still running.
     pub fn poll(&mut self) -> bool {
         if let Some(w) = &self.running
@@ -188,14 +193,23 @@ impl CostState {
 pub const HEAT_FULL_SCALE: f32 = 16.0;
 
 /// Colours of the three shadings and of the other questions, in the chart and the table.
+/// The series' colours: Okabe and Ito's, so colour-blind readers tell them apart, and none
+/// of them the grey of the 8-bit floor.
 fn series_color(q: Question, s: Shading) -> Color32 {
     match (q, s) {
-        (Question::Shading, Shading::Flat) => Color32::from_rgb(120, 144, 156),
-        (Question::Shading, Shading::Gouraud) => Color32::from_rgb(30, 136, 229),
-        (Question::Shading, Shading::Phong) => Color32::from_rgb(67, 160, 71),
-        (Question::Precision, _) => Color32::from_rgb(142, 36, 170),
-        (Question::Approximation, _) => Color32::from_rgb(239, 108, 0),
+        (Question::Shading, Shading::Flat) => Color32::from_rgb(0xE6, 0x9F, 0x00),
+        (Question::Shading, Shading::Gouraud) => Color32::from_rgb(0x00, 0x72, 0xB2),
+        (Question::Shading, Shading::Phong) => Color32::from_rgb(0x00, 0x9E, 0x73),
+        (Question::Precision, _) => Color32::from_rgb(0xCC, 0x79, 0xA7),
+        (Question::Approximation, _) => Color32::from_rgb(0xD5, 0x5E, 0x00),
     }
+}
+
+/// Each approximation's marker, so the legend tells them apart without labels on the plot
+/// (two approximations of nearly one cost and error used to print their names on top of
+/// each other).
+fn approximation_marker(k: usize) -> MarkerShape {
+    [MarkerShape::Diamond, MarkerShape::Square, MarkerShape::Cross, MarkerShape::Up, MarkerShape::Down][k % 5]
 }
 
 /// `10^v` for a log-scale axis, with few digits.
@@ -217,9 +231,11 @@ pub fn cost_chart_ui(ui: &mut Ui, study: &Study, height: f32) {
     let log = |x: f64| x.max(1e-3).log10();
     let xs: Vec<f64> = study.points.iter().map(|p| log(p.ms)).collect();
     let (x_min, x_max) = xs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(*x), b.max(*x)));
+    // The floor in the text's own colour: no series is grey, so none is taken for it.
+    let ui_text = ui.visuals().text_color();
     Plot::new(format!("cost chart {:?}", study.object))
         .height(height)
-        .legend(Legend::default())
+        .legend(Legend::default().position(egui_plot::Corner::LeftTop))
         .x_axis_label("ms per frame (log)")
         .y_axis_label("mean error, 1/255 (log)")
         .x_axis_formatter(|m, _| pow10_label(m.value))
@@ -244,26 +260,22 @@ pub fn cost_chart_ui(ui: &mut Ui, study: &Study, height: f32) {
                     );
                 }
             }
-            for q in study.points.iter().filter(|q| q.variant.question != Question::Shading) {
+            for (k, q) in study.points.iter().filter(|q| q.variant.question != Question::Shading).enumerate() {
                 let c = series_color(q.variant.question, q.variant.shading);
                 let at = [log(q.ms), log(q.error.mean)];
-                let (name, shape) = match q.variant.question {
-                    Question::Precision => ("Phong, f32 on the reference mesh", MarkerShape::Asterisk),
-                    _ => ("approximations", MarkerShape::Diamond),
+                let shape = match q.variant.question {
+                    Question::Precision => MarkerShape::Asterisk,
+                    _ => approximation_marker(k),
                 };
-                p.points(Points::new(name, PlotPoints::from(vec![at])).color(c).radius(5.0).shape(shape));
-                let label = q.variant.label.split(", ").last().unwrap_or(&q.variant.label).to_string();
-                p.text(
-                    Text::new(name, PlotPoint::new(at[0], at[1]), format!(" {label}"))
-                        .color(c)
-                        .anchor(egui::Align2::LEFT_TOP),
-                );
+                // Named in the legend (outside the data, below the plot), not on the plot.
+                let name = q.variant.label.clone();
+                p.points(Points::new(name, PlotPoints::from(vec![at])).color(c).radius(6.0).shape(shape).filled(true));
             }
             // 8-bit rounding alone leaves a mean error of about 1/4 of a step.
             let floor = log(0.25);
             p.line(
                 Line::new("8-bit rounding", PlotPoints::from(vec![[x_min - 0.1, floor], [x_max + 0.3, floor]]))
-                    .color(Color32::GRAY)
+                    .color(ui_text)
                     .style(LineStyle::dashed_loose()),
             );
         });
@@ -317,10 +329,12 @@ pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
         return;
     }
     let mut open = true;
+    let screen = ctx.content_rect();
     egui::Window::new("Cost of accuracy")
         .open(&mut open)
-        .default_pos(egui::pos2(420.0, 60.0))
-        .default_width(760.0)
+        .default_pos(egui::pos2(screen.width() * 0.12, 60.0))
+        .default_size(egui::vec2((screen.width() * 0.76).max(640.0), (screen.height() * 0.8).max(480.0)))
+        .resizable(true)
         .vscroll(true)
         .show(ctx, |ui| {
             ui.label(
@@ -352,7 +366,9 @@ pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
             if let Some((study, about)) = &state.cost.study {
                 ui.separator();
                 ui.strong(format!("{about} ({}x{} px, timings taken while the app runs)", study.size, study.size));
-                cost_chart_ui(ui, study, 340.0);
+                // The chart takes the window's width, and height in proportion.
+                let height = (ui.available_width() * 0.55).clamp(260.0, 900.0);
+                cost_chart_ui(ui, study, height);
                 for t in takeaways(study) {
                     ui.label(t);
                 }

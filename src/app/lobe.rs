@@ -11,12 +11,14 @@
 //! | Phong | ks · max(R·V, 0)^n, R = 2 (N·L) N − L |
 //!
 //! kd and ks are the luminances (Rec. 709 weights) of the material's colour times the
-//! light's, so the curves are in the units of the vertex colour. Both specular curves are 0
+//! light's, so the curves are in the units of the vertex colour; where that product is grey
+//! they are the material's own coefficients, and otherwise the caption says what was
+//! weighed (the Phong demo's red: kd = 0.4 weighed on [0.4 0 0] is 0.08504). Both specular curves are 0
 //! when N·L ≤ 0 (OpenGL's gate). A polar plot draws the lobes around N; a plot against φ
 //! marks with a vertical line where the vertex's own V lies.
 
 use egui::{Color32, Ui};
-use egui_plot::{Legend, Line, Plot, PlotPoints, VLine};
+use egui_plot::{Line, Plot, PlotPoints, VLine};
 use glam::DVec3;
 use phonglab_core::{Scene, SpecularModel};
 
@@ -112,39 +114,79 @@ fn sweep(f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// The polar plot and the plot against φ.
+/// kd or ks as the caption says it: the material's own value where the product of the
+/// material's and the light's colours is grey, otherwise the luminance and what it weighs.
+fn coefficient(name: &str, product: glam::DVec3, value: f64) -> String {
+    let grey = (product.x - product.y).abs() < 1e-12 && (product.y - product.z).abs() < 1e-12;
+    if grey {
+        format!("{name} = {}", fmt(value))
+    } else {
+        format!("{name} = {} (the luminance of [{} {} {}])", fmt(value), fmt(product.x), fmt(product.y), fmt(product.z))
+    }
+}
+
+fn fmt(x: f64) -> String {
+    phonglab_core::explain::fmt_sig(x, 4)
+}
+
+/// The least side of each of the two plots (points): below it they scroll, rather than
+/// shrink to nothing (after Ctrl + or in a small window).
+pub const MIN_PLOT: f32 = 180.0;
+
+/// The legend, above the plots rather than over the curves.
+fn legend_ui(ui: &mut Ui, curves: &[Curve], ink: &dyn Fn(Color32) -> Color32) {
+    ui.horizontal_wrapped(|ui| {
+        ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
+        let h = ui.text_style_height(&egui::TextStyle::Body);
+        for (name, c, _, on) in curves {
+            let (r, _) = ui.allocate_exact_size(egui::vec2(h * 1.6, h), egui::Sense::hover());
+            ui.painter()
+                .line_segment([r.left_center(), r.right_center()], egui::Stroke::new(if *on { 3.0 } else { 1.5 }, *c));
+            ui.label(*name);
+        }
+        for (name, c) in [("N", palette::N), ("L", palette::L), ("V", palette::V)] {
+            let (r, _) = ui.allocate_exact_size(egui::vec2(h * 1.6, h), egui::Sense::hover());
+            ui.painter().line_segment([r.left_center(), r.right_center()], egui::Stroke::new(1.5, ink(c)));
+            ui.label(name);
+        }
+    });
+}
+
+/// The polar plot and the plot against φ, with the legend above them.
 pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
     let Some((lobe, phi_v)) = Lobe::of(scene, eval) else {
         ui.label("No light with a defined L at this vertex: nothing to plot.");
         return;
     };
-    let dark = ui.visuals().dark_mode;
-    let ink = |c: Color32| if dark { c } else { palette::darker(c) };
+    let bg = ui.visuals().panel_fill;
+    let ink = |c: Color32| palette::ink_on(c, bg);
     let chosen = scene.rules.specular;
-    ui.small(format!(
-        "Light {}: θ = {:.1}°, n = {}, kd = {:.3}, ks = {:.3}; the vertex's V at φ = {:.1}°",
+    let light = &scene.lights[eval.lights[0].index];
+    let m = &scene.material;
+    let kd = coefficient("kd", (m.diffuse * light.diffuse).truncate(), lobe.kd);
+    let ks = coefficient("ks", (m.specular * light.specular).truncate(), lobe.ks);
+    ui.label(format!(
+        "Light {}: θ = {:.1}°, n = {}, {kd}, {ks}; the vertex's V at φ = {:.1}°",
         eval.lights[0].index,
         lobe.theta.to_degrees(),
         lobe.n,
-        lobe.kd,
-        lobe.ks,
         phi_v.to_degrees()
     ));
     let curves: [Curve; 3] = [
         ("diffuse kd cos θ", ink(palette::L), sweep(|_| lobe.diffuse()), false),
         ("Blinn-Phong ks (N·H)^n", ink(palette::H), sweep(|p| lobe.blinn(p)), chosen == SpecularModel::BlinnPhong),
-        ("Phong ks (R·V)^n", ink(palette::R), sweep(|p| lobe.phong(p)), chosen == SpecularModel::Phong),
+        ("Phong ks (R·V)^n", ink(palette::SPOT), sweep(|p| lobe.phong(p)), chosen == SpecularModel::Phong),
     ];
+    legend_ui(ui, &curves, &ink);
     let avail = ui.available_size();
     let wide = avail.x >= 1.6 * avail.y;
     let (w, h) = if wide { (avail.x / 2.0 - 6.0, avail.y - 4.0) } else { (avail.x, avail.y / 2.0 - 6.0) };
-    let h = h.max(80.0);
+    let (w, h) = (w.max(MIN_PLOT), h.max(MIN_PLOT));
     let polar = |ui: &mut Ui| {
         Plot::new("lobe polar")
             .width(w)
             .height(h)
             .data_aspect(1.0)
-            .legend(Legend::default())
             .allow_drag(false)
             .allow_zoom(false)
             .allow_scroll(false)
@@ -165,7 +207,6 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
         Plot::new("lobe against angle")
             .width(w)
             .height(h)
-            .legend(Legend::default())
             .x_axis_label("φ, degrees from N")
             .allow_drag(false)
             .allow_zoom(false)
@@ -179,15 +220,17 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
                 p.vline(VLine::new("the vertex's V", phi_v.to_degrees()).color(ink(palette::V)).width(2.0));
             });
     };
-    if wide {
-        ui.horizontal_top(|ui| {
+    egui::ScrollArea::both().auto_shrink(false).show(ui, |ui| {
+        if wide {
+            ui.horizontal_top(|ui| {
+                polar(ui);
+                cartesian(ui);
+            });
+        } else {
             polar(ui);
             cartesian(ui);
-        });
-    } else {
-        polar(ui);
-        cartesian(ui);
-    }
+        }
+    });
 }
 
 #[cfg(test)]
@@ -207,5 +250,17 @@ mod tests {
         // Light below the surface: no specular at all.
         let below = Lobe { theta: 100f64.to_radians(), ..lobe };
         assert_eq!((below.phong(0.3), below.blinn(0.3), below.diffuse()), (0.0, 0.0, 0.0));
+    }
+}
+
+#[cfg(test)]
+mod caption_tests {
+    use super::*;
+
+    #[test]
+    fn the_caption_gives_the_demos_own_kd_or_says_what_was_weighed() {
+        assert_eq!(coefficient("kd", glam::DVec3::splat(0.4), 0.4), "kd = 0.4");
+        let red = coefficient("kd", glam::DVec3::new(0.4, 0.0, 0.0), 0.2126 * 0.4);
+        assert!(red.starts_with("kd = 0.08504") && red.contains("[0.4 0 0]"), "{red}");
     }
 }

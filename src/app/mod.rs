@@ -342,11 +342,17 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
 
     egui::CentralPanel::default().show(ui, |ui| centre_ui(ui, state, &eval));
 
-    cost::cost_window_ui(&ctx, state);
-    shader_panel::shader_window_ui(&ctx, &mut state.shader, &state.doc);
-    if state.cost.poll() {
+    // Finished work is collected before the window is drawn, and a frame is asked for at
+    // once when something finished (the result would otherwise wait for the next input).
+    let was_running = state.cost.busy();
+    let running = state.cost.poll();
+    if was_running && !running {
+        ctx.request_repaint();
+    } else if running {
         ctx.request_repaint_after(std::time::Duration::from_millis(100));
     }
+    cost::cost_window_ui(&ctx, state);
+    shader_panel::shader_window_ui(&ctx, &mut state.shader, &state.doc);
 
     if state.ui.show_help {
         let mut open = true;
@@ -366,7 +372,12 @@ fn chrome(ui: &Ui, state: &AppState) -> centre_layout::Chrome {
     let small = ui.text_style_height(&egui::TextStyle::Small) + ui.spacing().item_spacing.y;
     let rows = if state.ui.layout.presenting { 1.0 } else { 2.0 };
     let legend = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
-    centre_layout::Chrome { picture: rows * row + 2.0 * small + 8.0, plot: 2.0 * row + legend + 8.0 }
+    let body = ui.text_style_height(&egui::TextStyle::Body);
+    centre_layout::Chrome {
+        picture: rows * row + 2.0 * small + 8.0,
+        plot: 2.0 * row + legend + 8.0,
+        min_part: 10.5 * body,
+    }
 }
 
 /// The centre: the colour, then the shaded view and the vector plot (or the lobe), side by
@@ -403,7 +414,12 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     // Two pictures side by side (the corrected one, or the heat map) share the view's part.
     let pair = state.cost.heat_map || shaded::corrected_document(&state.doc, &state.ui.demo_fixes).is_some();
     let area = ui.available_rect_before_wrap();
-    let split = centre_layout::split(area, 1 + pair as usize, chrome(ui, state), state.ui.layout.dividers);
+    let mut chrome = chrome(ui, state);
+    // What the toolbar and captions really took last frame (they wrap in a narrow part).
+    if let Some(h) = state.ui.picture_chrome {
+        chrome.picture = h;
+    }
+    let split = centre_layout::split(area, 1 + pair as usize, chrome, state.ui.layout.dividers);
     divider_ui(ui, state, area, &split);
     let show_angles = !state.quiz.open;
     let mut geometry = state::Geometry { pictures: Vec::new(), plot: None, arrangement: Some(split.arrangement) };
@@ -414,6 +430,8 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     });
     ui.scope_builder(egui::UiBuilder::new().max_rect(split.beside).id_salt("beside"), |ui| {
         ui.horizontal_wrapped(|ui| {
+            // Each button or label moves to the next row whole rather than breaking inside.
+            ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
             ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Vectors, "Vectors at the vertex");
             ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Lobe, "Reflection lobe");
             if state.ui.layout.beside == layout::Beside::Vectors {
@@ -430,6 +448,7 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
         }
     });
     ui.advance_cursor_after_rect(area);
+    state.ui.picture_chrome = geometry.pictures.first().map(|p| p.min.y - split.pictures.min.y + 4.0);
     state.ui.geometry = geometry;
 }
 

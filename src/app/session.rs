@@ -284,10 +284,9 @@ mod tests {
     fn a_scene_whose_mesh_moved_is_kept_on_the_sphere() {
         let mut doc = phonglab_core::Document::default();
         doc.scene.material.shininess = 77.0;
-        let text = doc
-            .to_toml()
-            .unwrap()
-            .replace("object = \"sphere\"\n", "object = \"obj\"\nobj = \"/nowhere/phonglab-moved-mesh.obj\"\n");
+        doc.view.object = phonglab_core::ObjectKind::Obj;
+        doc.view.obj = Some("/nowhere/phonglab-moved-mesh.obj".into());
+        let text = doc.to_toml().unwrap();
         let (back, note) = restore_document(Some(&text), None).unwrap().unwrap();
         assert_eq!(back.scene.material.shininess, 77.0, "the scene is kept");
         assert_eq!(back.view.object, phonglab_core::ObjectKind::Sphere);

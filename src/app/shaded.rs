@@ -66,16 +66,14 @@ pub fn departures_ui(ui: &mut Ui, state: &mut AppState) {
             }
         }
     });
-    egui::CollapsingHeader::new("Why the demo differs from OpenGL (the corrected picture shows on the right)")
-        .id_salt("departures")
-        .default_open(false)
-        .show(ui, |ui| {
-            for d in DemoDeparture::ALL {
-                if departures.contains(&d) {
-                    ui.small(format!("{}: {}", d.fix_label(), d.why()));
-                }
+    egui::CollapsingHeader::new("Why the demo differs").id_salt("departures").default_open(false).show(ui, |ui| {
+        ui.small("Each switch on corrects the demo in a second picture, on the right of its own.");
+        for d in DemoDeparture::ALL {
+            if departures.contains(&d) {
+                ui.small(format!("{}: {}", d.fix_label(), d.why()));
             }
-        });
+        }
+    });
 }
 
 /// The mesh's resolution and the pipeline's choices.
@@ -440,6 +438,62 @@ fn vectors_on_object_ui(ui: &Ui, rect: egui::Rect, doc: &Document, eval: &Evalua
     p.circle_filled(from, width * 1.3, super::palette::ink(ui, super::palette::N));
 }
 
+/// A light outside the picture: a triangle on the picture's edge pointing towards it, and
+/// its name (saying so when it is behind the camera, where no edge is nearer than another).
+fn light_off_view_ui(ui: &Ui, rect: egui::Rect, towards: egui::Vec2, i: usize, behind: bool) {
+    let d = if towards.length() > 1e-3 { towards.normalized() } else { egui::vec2(0.0, -1.0) };
+    // Where the ray from the centre along `d` leaves the picture, 14 points inside.
+    let half = rect.size() * 0.5 - egui::vec2(14.0, 14.0);
+    let t = (half.x / d.x.abs().max(1e-6)).min(half.y / d.y.abs().max(1e-6));
+    let tip = rect.center() + d * t;
+    let side = egui::vec2(-d.y, d.x) * 7.0;
+    let (fill, ink) =
+        (Color32::from_rgb(255, 230, 120), if ui.visuals().dark_mode { Color32::WHITE } else { Color32::BLACK });
+    ui.painter().add(egui::Shape::convex_polygon(
+        vec![tip + d * 10.0, tip - d * 4.0 + side, tip - d * 4.0 - side],
+        fill,
+        egui::Stroke::new(1.5, Color32::BLACK),
+    ));
+    let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
+    let at = tip - d * 16.0;
+    let name = if behind { format!("light {i} (behind the camera)") } else { format!("light {i}") };
+    let align = if d.x > 0.3 {
+        egui::Align2::RIGHT_CENTER
+    } else if d.x < -0.3 {
+        egui::Align2::LEFT_CENTER
+    } else {
+        egui::Align2::CENTER_CENTER
+    };
+    ui.painter().text(at, align, name, font, ink);
+}
+
+/// A spotlight's cone as the view shows it: the rim of the cut-off circle where the cone
+/// reaches the object's distance (48 points on screen), `None` for a light that is no
+/// spotlight or whose cone does not project.
+fn spot_cone(
+    o: &Overlay,
+    scene: &phonglab_core::Scene,
+    l: &phonglab_core::Light,
+    at: DVec4,
+) -> Option<Vec<egui::Pos2>> {
+    if !l.is_spot() || at.w == 0.0 {
+        return None;
+    }
+    let object_from_light = o.object_from_eye * scene.eye_from_light(l);
+    let axis = object_from_light.transform_vector3(l.spot_direction).try_normalize()?;
+    let apex = at.truncate() / at.w;
+    let reach = apex.length().max(0.5);
+    let (a, b) = axis.any_orthonormal_pair();
+    let (cos, sin) = (l.spot_cutoff.to_radians().cos(), l.spot_cutoff.to_radians().sin());
+    (0..48)
+        .map(|k| {
+            let t = k as f64 / 48.0 * std::f64::consts::TAU;
+            let dir = axis * cos + (a * t.cos() + b * t.sin()) * sin;
+            o.screen_from_object((apex + dir * reach).extend(1.0))
+        })
+        .collect()
+}
+
 /// Each light as a marker where the view draws it; a marker can be dragged (in the plane
 /// facing the viewer), which moves the light. Returns whether a marker is being dragged.
 fn lights_ui(ui: &mut Ui, o: &Overlay, state: &mut AppState, scene: &phonglab_core::Scene) -> bool {
@@ -454,9 +508,29 @@ fn lights_ui(ui: &mut Ui, o: &Overlay, state: &mut AppState, scene: &phonglab_co
         } else {
             in_object / in_object.w
         };
-        let Some(pos) = o.screen_from_object(p) else { continue };
-        if !o.rect.expand(-4.0).contains(pos) {
-            continue;
+        let centre = o.rect.center();
+        let pos = match o.screen_from_object(p) {
+            Some(pos) if o.rect.expand(-4.0).contains(pos) => pos,
+            seen => {
+                // Outside the picture (or behind the camera): an arrow at the edge, towards it.
+                let towards = match seen {
+                    Some(pos) => pos - centre,
+                    None => {
+                        let e = (o.object_from_eye.inverse() * p).truncate();
+                        egui::vec2(e.x as f32, -e.y as f32)
+                    }
+                };
+                light_off_view_ui(ui, o.rect, towards, i, seen.is_none());
+                continue;
+            }
+        };
+        if let Some(cone) = spot_cone(o, scene, l, p) {
+            let c = super::palette::ink(ui, super::palette::SPOT);
+            let stroke = egui::Stroke::new(1.5, c);
+            for q in cone.iter().step_by(6) {
+                ui.painter_at(o.rect).line_segment([pos, *q], stroke);
+            }
+            ui.painter_at(o.rect).add(egui::Shape::closed_line(cone, stroke));
         }
         let hit = egui::Rect::from_center_size(pos, egui::vec2(18.0, 18.0));
         let r = ui.interact(hit, ui.scope_id().with(("light marker", i)), Sense::drag());

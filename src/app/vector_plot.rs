@@ -154,17 +154,23 @@ pub fn view_buttons_ui(ui: &mut Ui, orbit: &mut Orbit) {
 }
 
 /// The legend, above the diagram: each symbol's line (dashed where the diagram dashes it),
-/// letter and meaning.
+/// letter and meaning, one label an entry so that an entry moves to the next row whole.
 fn legend_ui(ui: &mut Ui, entries: &[(&str, &str, Color32, bool)]) {
     ui.horizontal_wrapped(|ui| {
+        ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
+        let body = egui::TextStyle::Body.resolve(ui.style());
+        let mono = egui::FontId::monospace(body.size);
+        let text = ui.visuals().text_color();
         for (sym, what, c, dashed) in entries {
             let c = palette::ink(ui, *c);
-            let h = ui.text_style_height(&egui::TextStyle::Body);
-            let (r, _) = ui.allocate_exact_size(vec2(h * 1.6, h), Sense::hover());
-            line(ui.painter(), r.left_center(), r.right_center(), Stroke::new(3.0, c), *dashed);
-            ui.label(egui::RichText::new(*sym).strong().color(c));
-            ui.label(*what);
-            ui.add_space(h * 0.4);
+            let mut job = egui::text::LayoutJob::default();
+            let fmt =
+                |font: egui::FontId, color: Color32| egui::TextFormat { font_id: font, color, ..Default::default() };
+            job.append(if *dashed { "\u{254C}\u{254C}" } else { "\u{2500}\u{2500}" }, 0.0, fmt(mono.clone(), c));
+            job.append(sym, 4.0, fmt(body.clone(), c));
+            job.append(what, 4.0, fmt(body.clone(), text));
+            ui.label(job);
+            ui.add_space(body.size * 0.4);
         }
     });
 }
@@ -211,7 +217,8 @@ pub fn vector_plot_ui(
 ) -> PlotGeometry {
     legend_ui(ui, &legend(eval, specular));
     let avail = ui.available_size();
-    let side = avail.x.min(avail.y).max(80.0);
+    // As large as the part allows, and never wider than it.
+    let side = avail.x.min(avail.y).max(40.0).min(avail.x.max(1.0));
     let (outer, resp) = ui.allocate_exact_size(vec2(avail.x.max(side), side), Sense::click_and_drag());
     let rect = Rect::from_center_size(outer.center(), Vec2::splat(side));
     resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, "vector plot"));
@@ -229,7 +236,7 @@ pub fn vector_plot_ui(
     let body = ui.text_style_height(&egui::TextStyle::Body);
     let ppp = ui.ctx().pixels_per_point();
     // Room beyond a unit vector's tip for its letter.
-    let unit = side * 0.5 / 1.25;
+    let unit = side * 0.5 / 1.2;
     let width = (3.2 / ppp).max(unit * 0.022);
     let centre = rect.center();
     let at = |v: [f64; 2], k: f64| centre + vec2((v[0] * k) as f32, -(v[1] * k) as f32) * unit;
