@@ -679,7 +679,7 @@ fn dropping_an_obj_file_shows_it() {
 #[test]
 fn view_options_open_with_a_click_and_keep_the_picture_on_screen() {
     let mut h = Harness::builder()
-        .with_size([1500.0, 1000.0])
+        .with_size([1280.0, 800.0])
         .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
     h.run_steps(2);
     h.get_by_label("View options").click();
@@ -688,7 +688,8 @@ fn view_options_open_with_a_click_and_keep_the_picture_on_screen() {
     h.get_by_label("Renderer");
     h.get_by_label_contains("Mesh file");
     let picture = h.state().ui.geometry.pictures[0];
-    assert!(picture.max.y <= 1000.0 && picture.width() > 150.0, "{picture:?}");
+    assert!(picture.max.y <= 800.0 && picture.width() > 150.0, "{picture:?}");
+    assert!(!h.state().cost.heat_map, "the click opened the options, and nothing else");
 }
 
 #[test]

@@ -5,6 +5,7 @@
 //! the sizes a class needs, and the plot's labels to never overlapping.
 
 use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
 use phonglab::app::{AppState, app_ui};
 use phonglab::screenshot_cmd::{Open, state_for};
 
@@ -158,10 +159,10 @@ fn the_divider_moves_the_split_and_is_kept() {
     let state = state_for(phonglab_core::Document::default(), true, false, None);
     let mut h = harness(1280.0, 720.0, 1.0, state);
     let before = h.state().ui.geometry.pictures[0];
-    let plot = h.state().ui.geometry.plot.clone().unwrap().rect;
     // The divider lies between the picture and the plot.
-    let x = (before.max.x + plot.min.x) / 2.0;
-    let from = egui::pos2(x, before.center().y);
+    let divider = h.get_by_label("divider").rect();
+    assert!(divider.min.x >= before.max.x - 1.0, "{divider:?} {before:?}");
+    let from = divider.center();
     let to = from - egui::vec2(120.0, 0.0);
     h.input_mut().events.push(egui::Event::PointerMoved(from));
     h.input_mut().events.push(egui::Event::PointerButton {

@@ -284,7 +284,10 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
 
     let controls = |ui: &mut Ui, state: &mut AppState| {
         // Sliders sized to the panel, so a narrow panel does not widen to fit them.
-        ui.spacing_mut().slider_width = (ui.available_width() - 200.0).clamp(60.0, 160.0);
+        // From the panel's starting width, not its width now: a slider sized from the
+        // panel it widens grew the panel by a few points a frame until the clamp.
+        let panel = layout::Layout::controls_width(width).min(ui.available_width());
+        ui.spacing_mut().slider_width = (panel - 200.0).clamp(60.0, 160.0);
         egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
             let mut candidate = state.doc.clone();
             controls::controls_ui(ui, &mut candidate, &mut state.ui);
@@ -370,7 +373,10 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
 fn chrome(ui: &Ui, state: &AppState) -> centre_layout::Chrome {
     let row = ui.spacing().interact_size.y + ui.spacing().item_spacing.y;
     let small = ui.text_style_height(&egui::TextStyle::Small) + ui.spacing().item_spacing.y;
-    let rows = if state.ui.layout.presenting { 1.0 } else { 2.0 };
+    // The toolbar's rows as they wrap in a part of the centre (object and shading; then the
+    // switches and View options in the normal window): counted from the frame's own sizes,
+    // never from the last frame's, so the split cannot chase itself from frame to frame.
+    let rows = if state.ui.layout.presenting { 2.0 } else { 3.0 };
     let legend = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
     let body = ui.text_style_height(&egui::TextStyle::Body);
     centre_layout::Chrome {
@@ -414,11 +420,7 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     // Two pictures side by side (the corrected one, or the heat map) share the view's part.
     let pair = state.cost.heat_map || shaded::corrected_document(&state.doc, &state.ui.demo_fixes).is_some();
     let area = ui.available_rect_before_wrap();
-    let mut chrome = chrome(ui, state);
-    // What the toolbar and captions really took last frame (they wrap in a narrow part).
-    if let Some(h) = state.ui.picture_chrome {
-        chrome.picture = h;
-    }
+    let chrome = chrome(ui, state);
     let split = centre_layout::split(area, 1 + pair as usize, chrome, state.ui.layout.dividers);
     divider_ui(ui, state, area, &split);
     let show_angles = !state.quiz.open;
@@ -448,7 +450,6 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
         }
     });
     ui.advance_cursor_after_rect(area);
-    state.ui.picture_chrome = geometry.pictures.first().map(|p| p.min.y - split.pictures.min.y + 4.0);
     state.ui.geometry = geometry;
 }
 

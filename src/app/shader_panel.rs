@@ -86,18 +86,42 @@ const KEYWORDS: &[&str] = &[
     "@fragment",
 ];
 
-/// One line, coloured: comments, keywords, numbers.
+/// The colour of a symbol the calculation and the plot draw in colour: `N`, `L`, `V`, `H`,
+/// `R` or `S`, alone or with a light's number (`L0`, `H2`).
+pub fn symbol_color(word: &str) -> Option<Color32> {
+    let mut chars = word.chars();
+    let first = chars.next()?;
+    if !chars.all(|c| c.is_ascii_digit()) {
+        return None;
+    }
+    use super::palette as p;
+    Some(match first {
+        'N' => p::N,
+        'L' => p::L,
+        'V' => p::V,
+        'H' | 'R' => p::H,
+        'S' => p::SPOT,
+        _ => return None,
+    })
+}
+
+/// The colour a line is drawn on: its own background, or the panel's where it has none.
+fn background_of(ui: &Ui, background: Color32) -> Color32 {
+    if background == Color32::TRANSPARENT { ui.visuals().panel_fill } else { background }
+}
+
+/// One line, coloured: comments, keywords, numbers, and the symbols in their colours.
 fn line_job(line: &str, ui: &Ui, background: Color32) -> LayoutJob {
     let dark = ui.visuals().dark_mode;
     let (text, comment, keyword, number) = if dark {
         (
             Color32::from_gray(230),
             Color32::from_gray(140),
-            Color32::from_rgb(120, 180, 255),
+            Color32::from_rgb(175, 155, 255),
             Color32::from_rgb(240, 190, 110),
         )
     } else {
-        (Color32::BLACK, Color32::from_gray(90), Color32::from_rgb(20, 60, 170), Color32::from_rgb(150, 80, 0))
+        (Color32::BLACK, Color32::from_gray(90), Color32::from_rgb(95, 55, 170), Color32::from_rgb(150, 80, 0))
     };
     let font = FontId::monospace(ui.text_style_height(&egui::TextStyle::Monospace) * 0.85);
     let mut job = LayoutJob::default();
@@ -111,7 +135,10 @@ fn line_job(line: &str, ui: &Ui, background: Color32) -> LayoutJob {
         if word.is_empty() {
             return;
         }
-        let c = if KEYWORDS.contains(&word.as_str()) {
+        let c = if let Some(c) = symbol_color(word) {
+            // N, L, V, H, R and S (L0, H1, ... with several lights) in the plot's colours.
+            super::palette::ink_on(c, background_of(ui, background))
+        } else if KEYWORDS.contains(&word.as_str()) {
             keyword
         } else if word.chars().next().is_some_and(|c| c.is_ascii_digit()) {
             number
@@ -206,5 +233,22 @@ mod tests {
         assert_eq!(a, ["x", "y"]);
         assert_eq!(r, ["b"]);
         assert_eq!(line_diff("a\nb\n", "a\nb\n"), (vec![], vec![]));
+    }
+}
+
+#[cfg(test)]
+mod symbol_tests {
+    use super::symbol_color;
+
+    #[test]
+    fn the_symbols_have_the_plots_colours() {
+        use super::super::palette as p;
+        assert_eq!(symbol_color("N"), Some(p::N));
+        assert_eq!(symbol_color("L2"), Some(p::L));
+        assert_eq!(symbol_color("H0"), Some(p::H));
+        assert_eq!(symbol_color("V"), Some(p::V));
+        assert_eq!(symbol_color("NdotL"), None);
+        assert_eq!(symbol_color("vec3"), None);
+        assert_eq!(symbol_color("P"), None);
     }
 }

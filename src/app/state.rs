@@ -83,8 +83,6 @@ pub struct UiState {
     pub quit: bool,
     /// What the centre drew last frame.
     pub geometry: Geometry,
-    /// The height the shaded view's toolbar and captions took last frame (points).
-    pub picture_chrome: Option<f32>,
 }
 
 impl Default for UiState {
@@ -105,7 +103,6 @@ impl Default for UiState {
             renderer: Default::default(),
             quit: false,
             geometry: Geometry::default(),
-            picture_chrome: None,
         }
     }
 }
