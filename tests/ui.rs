@@ -713,3 +713,26 @@ fn a_new_spotlight_aims_at_the_object_so_the_demo_stays_lit() {
     let c = front_primary(h.state());
     assert!(c[0] > 0.05, "{c:?}");
 }
+
+#[test]
+fn the_demos_switches_stay_where_they_are_when_one_is_clicked() {
+    let mut h = harness();
+    h.get_by_label("Presets").click();
+    h.run_steps(2);
+    h.get_by_label("Phong demo").click();
+    h.run_steps(3);
+    let at = |h: &Harness<'static, AppState>| -> Vec<egui::Rect> {
+        phonglab_core::library::DemoDeparture::ALL
+            .iter()
+            .map(|d| h.get_by_role_and_label(Role::CheckBox, d.fix_label()).rect())
+            .collect()
+    };
+    let before = at(&h);
+    for d in phonglab_core::library::DemoDeparture::ALL {
+        h.get_by_role_and_label(Role::CheckBox, d.fix_label()).click();
+        h.run_steps(3);
+        assert_eq!(at(&h), before, "after switching {:?} on", d.fix_label());
+    }
+    assert_eq!(h.state().ui.demo_fixes, [true; 3]);
+    assert_eq!(h.state().ui.geometry.pictures.len(), 2, "the corrected picture beside the demo's");
+}
