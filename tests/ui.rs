@@ -736,3 +736,15 @@ fn the_demos_switches_stay_where_they_are_when_one_is_clicked() {
     assert_eq!(h.state().ui.demo_fixes, [true; 3]);
     assert_eq!(h.state().ui.geometry.pictures.len(), 2, "the corrected picture beside the demo's");
 }
+
+#[test]
+fn a_decimal_comma_is_read_and_a_number_a_float_cannot_hold_is_not_truncated() {
+    let mut h = harness();
+    type_into(&mut h, "Material shininess", "12,5");
+    assert_eq!(h.state().doc.scene.material.shininess, 12.5);
+    // 1e-400 was silently 0 before: now it is not taken.
+    type_into(&mut h, "Material shininess", "1e-400");
+    assert_eq!(h.state().doc.scene.material.shininess, 12.5);
+    type_into(&mut h, "Light z", "-40,25");
+    assert_eq!(h.state().doc.scene.lights[0].position.z, -40.25);
+}

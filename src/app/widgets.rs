@@ -14,16 +14,32 @@ pub fn exact_text(v: f64) -> String {
     if a != 0.0 && a.is_finite() && !(1e-4..1e15).contains(&a) { format!("{v:e}") } else { format!("{v}") }
 }
 
-/// A number field (no clamping) that shows its value exactly.
+/// A typed number, with a decimal point or comma
+/// ([`phonglab_core::formats::typed_number::parse_number`]). A number that is not finite or
+/// too large goes on to the document's validator, which refuses it naming the field; one
+/// that a float would hold as 0 (`1e-400`) keeps the field's value rather than become 0.
+fn typed(text: &str) -> Option<f64> {
+    use phonglab_core::formats::typed_number::{TypedNumberError as E, parse_number};
+    match parse_number(text) {
+        Ok(x) => Some(x),
+        Err(E::NotFinite(t) | E::TooLarge(t)) => t.trim().replacen(',', ".", 1).parse().ok(),
+        Err(E::TooSmall(_) | E::NotANumber(_) | E::Empty) => None,
+    }
+}
+
+/// A number field (no clamping) that shows its value exactly and reads `12,5` as 12.5.
 pub fn exact_drag(value: &mut f64, speed: f64) -> DragValue<'_> {
-    DragValue::new(value).speed(speed).custom_formatter(|v, _| exact_text(v))
+    DragValue::new(value).speed(speed).custom_formatter(|v, _| exact_text(v)).custom_parser(typed)
 }
 
 /// A slider over `range` whose typed values are not clamped (the document validator
 /// decides), with `label` as its accessible name.
 pub fn slider(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::RangeInclusive<f64>, log: bool) -> Response {
-    let mut s =
-        Slider::new(value, range).text(label).clamping(SliderClamping::Never).custom_formatter(|v, _| exact_text(v));
+    let mut s = Slider::new(value, range)
+        .text(label)
+        .clamping(SliderClamping::Never)
+        .custom_formatter(|v, _| exact_text(v))
+        .custom_parser(typed);
     if log {
         s = s.logarithmic(true).smallest_positive(1e-6);
     }

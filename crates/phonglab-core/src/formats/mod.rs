@@ -3,3 +3,4 @@
 pub mod document;
 pub mod glref;
 pub mod strict;
+pub mod typed_number;

@@ -16,20 +16,12 @@ use crate::lighting::terms;
 use crate::rules::SpecularModel;
 use crate::scene::Scene;
 
-/// Reads an answer: numbers separated by spaces or commas, with optional brackets, e.g.
-/// `[0.79 0.56 -0.25 0]`, `0.79, 0.56, -0.25` or `646.297`.
+/// Reads an answer: numbers separated by spaces, commas or semicolons, with optional
+/// brackets, and a decimal point or comma, e.g. `[0.79 0.56 -0.25 0]`, `0.79, 0.56, -0.25`,
+/// `0,79; 0,56; -0,25`, `646.297` or `0,7246526`
+/// ([`crate::formats::typed_number::parse_numbers`]).
 pub fn parse_answer(text: &str) -> Result<Vec<f64>, String> {
-    let t = text.trim().trim_start_matches(['[', '(']).trim_end_matches([']', ')']);
-    if t.trim().is_empty() {
-        return Err("no value".into());
-    }
-    t.split(|c: char| c == ',' || c.is_whitespace())
-        .filter(|s| !s.is_empty())
-        .map(|s| {
-            let x: f64 = s.parse().map_err(|_| format!("{s:?} is not a number"))?;
-            if x.is_finite() { Ok(x) } else { Err(format!("{s} is not a finite number")) }
-        })
-        .collect()
+    crate::formats::typed_number::parse_numbers(text).map_err(|e| e.to_string())
 }
 
 /// Is `got` close to `want`: each component within 1e-4 relative or 1e-6 absolute? A
@@ -239,6 +231,9 @@ mod tests {
         assert!(parse_answer("").is_err());
         assert!(parse_answer("0.5 NaN").is_err());
         assert!(parse_answer("x").unwrap_err().contains("\"x\""));
+        // The decimal comma a Portuguese-speaking student types.
+        assert_eq!(parse_answer("0,7246526").unwrap(), vec![0.7246526]);
+        assert_eq!(parse_answer("0,79; 0,56; -0,25").unwrap(), vec![0.79, 0.56, -0.25]);
     }
 
     #[test]
