@@ -177,9 +177,36 @@ fn rename(from: &Path, to: &Path) -> io::Result<()> {
     std::fs::rename(from, to)
 }
 
-/// Writes `bytes` to `path` whole or not at all (see the module's documentation).
+/// Is `path` something that is written in place rather than replaced: a device, a pipe or
+/// a socket (`-o /dev/null`, `-o /dev/stdout`)? Renaming a file over `/dev/null` would
+/// replace the device with a file for every program on the machine.
+pub fn written_in_place(path: &Path) -> bool {
+    std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir())
+}
+
+/// Writes to a device or a pipe as it is (there is no old file to keep).
+fn write_in_place(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
+    const KEPT: &str = "it is not a file, so nothing was kept";
+    let mut f = File::options().write(true).open(path).map_err(|e| WriteError::new(path, "open", e, KEPT))?;
+    f.write_all(bytes).and_then(|()| f.flush()).map_err(|e| WriteError::new(path, "write", e, KEPT))?;
+    close(f).map_err(|e| WriteError::new(path, "close", e, KEPT))
+}
+
+/// Writes `bytes` to `path` whole or not at all (see the module's documentation). A
+/// symbolic link is followed (the file it names is replaced, the link stays a link); a
+/// device or a pipe is written in place.
 pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
     const KEPT: &str = "the file there before (if any) is unchanged";
+    if written_in_place(path) {
+        return write_in_place(path, bytes);
+    }
+    let resolved;
+    let path = if std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink()) {
+        resolved = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
+        resolved.as_path()
+    } else {
+        path
+    };
     let name = file_name_of(path).map_err(|e| WriteError::new(path, "name", e, "nothing was written"))?;
     if path.is_dir() {
         let e = io::Error::new(io::ErrorKind::IsADirectory, "it is a folder");
@@ -200,6 +227,9 @@ pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
 /// and removing a temporary file there) and that `path` is not a folder.
 pub fn check_file_destination(path: &Path) -> Result<(), WriteError> {
     const KEPT: &str = "nothing was written";
+    if written_in_place(path) {
+        return File::options().write(true).open(path).map(drop).map_err(|e| WriteError::new(path, "open", e, KEPT));
+    }
     let name = file_name_of(path).map_err(|e| WriteError::new(path, "name", e, KEPT))?;
     if path.is_dir() {
         return Err(WriteError::new(
@@ -364,6 +394,25 @@ mod tests {
         write(&target, &new).unwrap();
         assert_eq!(std::fs::read(&target).unwrap(), new);
         assert_eq!(listing(&dir).len(), 1);
+    }
+
+    #[test]
+    #[cfg(unix)]
+    fn a_device_is_written_in_place_and_a_link_stays_a_link() {
+        // Renaming over /dev/null would turn it into a file for the whole machine: it is
+        // recognised as written in place (this test does not write to it).
+        assert!(written_in_place(Path::new("/dev/null")));
+        assert!(!written_in_place(Path::new("/tmp")));
+        let dir = temp_dir("link");
+        let real = dir.join("real.png");
+        std::fs::write(&real, b"old").unwrap();
+        let link = dir.join("link.png");
+        std::os::unix::fs::symlink(&real, &link).unwrap();
+        assert!(!written_in_place(&link));
+        write(&link, b"new").unwrap();
+        assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink(), "still a link");
+        assert_eq!(std::fs::read(&real).unwrap(), b"new");
+        assert_eq!(listing(&dir).len(), 2, "no temporary left: {:?}", listing(&dir));
     }
 
     #[test]

@@ -144,3 +144,16 @@ fn a_failed_scene_save_in_the_app_keeps_the_old_file() {
     phonglab::app::files::save(&mut state, &path);
     assert!(std::fs::read_to_string(&path).unwrap().contains("shininess = 3.0"));
 }
+
+#[test]
+fn render_to_a_device_writes_into_it_and_leaves_it_a_device() {
+    // `-o /dev/null` (discard the picture) must write into the device: renaming a file over
+    // it would replace /dev/null with a file for every program on the machine.
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        assert_eq!(run(&["render", "--size", "32", "-o", "/dev/null"]), ExitCode::SUCCESS);
+        let t = std::fs::metadata("/dev/null").unwrap().file_type();
+        assert!(t.is_char_device(), "/dev/null is still a device: {t:?}");
+    }
+}
