@@ -133,21 +133,19 @@ fn fmt(x: f64) -> String {
 /// shrink to nothing (after Ctrl + or in a small window).
 pub const MIN_PLOT: f32 = 180.0;
 
-/// The legend, above the plots rather than over the curves.
-fn legend_ui(ui: &mut Ui, curves: &[Curve], ink: &dyn Fn(Color32) -> Color32) {
+/// The legend, above the plots rather than over the curves (the scene's own model's curve
+/// heavy, as in the plots; L dashed, as its ray is).
+fn legend_ui(ui: &mut Ui, curves: &[Curve]) {
+    use super::vector_plot::{Sample, legend_entry_ui};
     ui.horizontal_wrapped(|ui| {
         ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
-        let h = ui.text_style_height(&egui::TextStyle::Body);
         for (name, c, _, on) in curves {
-            let (r, _) = ui.allocate_exact_size(egui::vec2(h * 1.6, h), egui::Sense::hover());
-            ui.painter()
-                .line_segment([r.left_center(), r.right_center()], egui::Stroke::new(if *on { 3.0 } else { 1.5 }, *c));
-            ui.label(*name);
+            legend_entry_ui(ui, if *on { Sample::Heavy } else { Sample::Solid }, "", name, *c);
         }
-        for (name, c) in [("N", palette::N), ("L", palette::L), ("V", palette::V)] {
-            let (r, _) = ui.allocate_exact_size(egui::vec2(h * 1.6, h), egui::Sense::hover());
-            ui.painter().line_segment([r.left_center(), r.right_center()], egui::Stroke::new(1.5, ink(c)));
-            ui.label(name);
+        for (name, c, sample) in
+            [("N", palette::N, Sample::Solid), ("L", palette::L, Sample::Dashed), ("V", palette::V, Sample::Solid)]
+        {
+            legend_entry_ui(ui, sample, name, "", c);
         }
     });
 }
@@ -177,7 +175,7 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
         ("Blinn-Phong ks (N·H)^n", ink(palette::H), sweep(|p| lobe.blinn(p)), chosen == SpecularModel::BlinnPhong),
         ("Phong ks (R·V)^n", ink(palette::SPOT), sweep(|p| lobe.phong(p)), chosen == SpecularModel::Phong),
     ];
-    legend_ui(ui, &curves, &ink);
+    legend_ui(ui, &curves);
     let avail = ui.available_size();
     let wide = avail.x >= 1.6 * avail.y;
     let (w, h) = if wide { (avail.x / 2.0 - 6.0, avail.y - 4.0) } else { (avail.x, avail.y / 2.0 - 6.0) };

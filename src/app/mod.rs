@@ -377,8 +377,8 @@ fn chrome(ui: &Ui, state: &AppState) -> centre_layout::Chrome {
     // switches and View options in the normal window): counted from the frame's own sizes,
     // never from the last frame's, so the split cannot chase itself from frame to frame.
     let rows = if state.ui.layout.presenting { 2.0 } else { 3.0 };
-    let legend = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
     let body = ui.text_style_height(&egui::TextStyle::Body);
+    let legend = body + ui.spacing().item_spacing.y;
     centre_layout::Chrome {
         picture: rows * row + 2.0 * small + 8.0,
         plot: 2.0 * row + legend + 8.0,

@@ -391,7 +391,7 @@ pub fn vector_arrows(
 /// or away, in the plot's colours and styles, each letter placed clear of the others and of
 /// the arrows ([`super::label_placement`]).
 fn vectors_on_object_ui(ui: &Ui, rect: egui::Rect, doc: &Document, eval: &Evaluated) {
-    use super::label_placement::{Wanted, place};
+    use super::vector_plot::{draw_arrow, end_on_marker, paint_labels};
     let arrows = vector_arrows(doc, eval, rect);
     let Some((_, _, from, _)) = arrows.first() else { return };
     let from = *from;
@@ -409,32 +409,25 @@ fn vectors_on_object_ui(ui: &Ui, rect: egui::Rect, doc: &Document, eval: &Evalua
         let d = *to - from;
         let dashed = name.starts_with('H') || name.starts_with('R');
         if d.length() < 3.0 {
-            let at = from + egui::vec2(1.0, 1.0) * (end_on as f32 * width * 8.0);
+            let (line, label) = end_on_marker(&p, from, end_on, width, c, true);
             end_on += 1;
-            super::vector_plot::draw_end_on(&p, at, width * 3.0, width, c, true);
-            lines.push(super::label_placement::Segment { a: at, b: at, half_width: width * 3.5 });
-            wanted.push(Wanted {
-                anchor: at,
-                direction: egui::vec2(0.7, -0.7),
-                size: egui::Vec2::ZERO,
-                gap: width * 3.5,
-            });
+            lines.push(line);
+            wanted.push(label);
         } else {
             let tip = from + d.normalized() * len;
             // A dark (or light) edge under the colour, so the arrow reads on any surface.
-            super::vector_plot::draw_arrow(&p, from, tip, width * 1.8, outline, false, false);
-            lines.push(super::vector_plot::draw_arrow(&p, from, tip, width, c, dashed, false));
-            wanted.push(Wanted { anchor: tip, direction: d, size: egui::Vec2::ZERO, gap: width });
+            draw_arrow(&p, from, tip, width * 1.8, outline, false, false);
+            lines.push(draw_arrow(&p, from, tip, width, c, dashed, false));
+            wanted.push(super::label_placement::Wanted {
+                anchor: tip,
+                direction: d,
+                size: egui::Vec2::ZERO,
+                gap: width,
+            });
         }
         galleys.push(p.layout_no_wrap(name.clone(), font.clone(), c));
     }
-    for (w, g) in wanted.iter_mut().zip(&galleys) {
-        w.size = g.size() + egui::vec2(4.0, 0.0);
-    }
-    for (b, g) in place(&wanted, &lines, rect).into_iter().zip(galleys) {
-        p.rect_filled(b, 3.0, outline.gamma_multiply(0.6));
-        p.galley(b.min + egui::vec2(2.0, 0.0), g, Color32::PLACEHOLDER);
-    }
+    paint_labels(&p, wanted, galleys, &lines, rect, Some(outline.gamma_multiply(0.6)));
     p.circle_filled(from, width * 1.3, super::palette::ink(ui, super::palette::N));
 }
 

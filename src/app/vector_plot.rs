@@ -143,6 +143,50 @@ pub fn draw_end_on(p: &egui::Painter, at: Pos2, r: f32, width: f32, color: Color
     }
 }
 
+/// The `k`-th vector seen end on at `at`, drawn as ⊙ or ⊗ (each further one a little aside,
+/// so two never sit on one another); returns the line its label must avoid and the label it
+/// wants, beside it.
+pub fn end_on_marker(
+    p: &egui::Painter,
+    at: Pos2,
+    k: usize,
+    width: f32,
+    color: Color32,
+    towards: bool,
+) -> (Segment, Wanted) {
+    let ring = at + vec2(1.0, 1.0) * (k as f32 * width * 8.0);
+    draw_end_on(p, ring, width * 3.0, width, color, towards);
+    (
+        Segment { a: ring, b: ring, half_width: width * 3.5 },
+        Wanted { anchor: ring, direction: vec2(0.7, -0.7), size: Vec2::ZERO, gap: width * 3.5 },
+    )
+}
+
+/// Places the laid-out labels `galleys` (one per `wanted`) clear of each other and of
+/// `lines` within `bounds` ([`label_placement::place`]) and paints them, each on a rounded
+/// `backdrop` (with 2 points of room either side) when one is given; returns their boxes.
+pub fn paint_labels(
+    p: &egui::Painter,
+    mut wanted: Vec<Wanted>,
+    galleys: Vec<std::sync::Arc<egui::Galley>>,
+    lines: &[Segment],
+    bounds: Rect,
+    backdrop: Option<Color32>,
+) -> Vec<Rect> {
+    let pad = if backdrop.is_some() { 2.0 } else { 0.0 };
+    for (w, g) in wanted.iter_mut().zip(&galleys) {
+        w.size = g.size() + vec2(2.0 * pad, 0.0);
+    }
+    let boxes = label_placement::place(&wanted, lines, bounds);
+    for (b, g) in boxes.iter().zip(galleys) {
+        if let Some(fill) = backdrop {
+            p.rect_filled(*b, 3.0, fill);
+        }
+        p.galley(b.min + vec2(pad, 0.0), g, Color32::PLACEHOLDER);
+    }
+    boxes
+}
+
 /// The view buttons (XY, XZ, ZY, 3D), in the row the caller opened.
 pub fn view_buttons_ui(ui: &mut Ui, orbit: &mut Orbit) {
     ui.label("View:");
@@ -153,24 +197,48 @@ pub fn view_buttons_ui(ui: &mut Ui, orbit: &mut Orbit) {
     }
 }
 
+/// How a legend entry's sample line is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Sample {
+    /// A plain line.
+    Solid,
+    /// A thicker line (the scene's own model among several curves).
+    Heavy,
+    /// A dashed line (H, R, S; the lobe's L).
+    Dashed,
+}
+
+/// One legend entry as one label (so that a wrapping row moves it whole): its sample line
+/// in `color`, then `symbol` in `color` and `what` in the text's colour. Used by the vector
+/// plot's legend and the lobe's.
+pub fn legend_entry_ui(ui: &mut Ui, sample: Sample, symbol: &str, what: &str, color: Color32) {
+    let body = egui::TextStyle::Body.resolve(ui.style());
+    let mono = egui::FontId::monospace(body.size);
+    let text = ui.visuals().text_color();
+    let c = palette::ink(ui, color);
+    let fmt = |font: egui::FontId, color: Color32| egui::TextFormat { font_id: font, color, ..Default::default() };
+    let mut job = egui::text::LayoutJob::default();
+    let line = match sample {
+        Sample::Solid => "\u{2500}\u{2500}",
+        Sample::Heavy => "\u{2501}\u{2501}",
+        Sample::Dashed => "\u{254C}\u{254C}",
+    };
+    job.append(line, 0.0, fmt(mono, c));
+    if !symbol.is_empty() {
+        job.append(symbol, 4.0, fmt(body.clone(), c));
+    }
+    job.append(what, 4.0, fmt(body.clone(), text));
+    ui.label(job);
+    ui.add_space(body.size * 0.4);
+}
+
 /// The legend, above the diagram: each symbol's line (dashed where the diagram dashes it),
-/// letter and meaning, one label an entry so that an entry moves to the next row whole.
+/// letter and meaning.
 fn legend_ui(ui: &mut Ui, entries: &[(&str, &str, Color32, bool)]) {
     ui.horizontal_wrapped(|ui| {
         ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
-        let body = egui::TextStyle::Body.resolve(ui.style());
-        let mono = egui::FontId::monospace(body.size);
-        let text = ui.visuals().text_color();
         for (sym, what, c, dashed) in entries {
-            let c = palette::ink(ui, *c);
-            let mut job = egui::text::LayoutJob::default();
-            let fmt =
-                |font: egui::FontId, color: Color32| egui::TextFormat { font_id: font, color, ..Default::default() };
-            job.append(if *dashed { "\u{254C}\u{254C}" } else { "\u{2500}\u{2500}" }, 0.0, fmt(mono.clone(), c));
-            job.append(sym, 4.0, fmt(body.clone(), c));
-            job.append(what, 4.0, fmt(body.clone(), text));
-            ui.label(job);
-            ui.add_space(body.size * 0.4);
+            legend_entry_ui(ui, if *dashed { Sample::Dashed } else { Sample::Solid }, sym, what, *c);
         }
     });
 }
@@ -268,12 +336,10 @@ pub fn vector_plot_ui(
         let flat = (x * x + y * y).sqrt() < 0.15;
         if flat {
             // End on: ⊙ or ⊗ at the vertex, its letter beside it.
-            // Each further one a little aside, so two never sit on one another.
-            let ring = centre + vec2(1.0, 1.0) * (end_on as f32 * width * 8.0);
+            let (line, label) = end_on_marker(&painter, centre, end_on, width, a.color, z > 0.0);
             end_on += 1;
-            draw_end_on(&painter, ring, width * 3.0, width, a.color, z > 0.0);
-            lines.push(Segment { a: ring, b: ring, half_width: width * 3.5 });
-            wanted.push(Wanted { anchor: ring, direction: vec2(0.7, -0.7), size: Vec2::ZERO, gap: width * 3.5 });
+            lines.push(line);
+            wanted.push(label);
         } else {
             lines.push(draw_arrow(&painter, centre, tip, width, a.color, a.dashed, z < -1e-9));
             wanted.push(Wanted { anchor: tip, direction: tip - centre, size: Vec2::ZERO, gap: width });
@@ -310,16 +376,10 @@ pub fn vector_plot_ui(
     let origin = rect.left_bottom() + vec2(side * 0.08, -side * 0.08);
     lines.extend(triad(&painter, &r, origin, side * 0.06, grey, small));
 
-    // Every label, placed clear of every other and of every line.
+    // Every label, placed clear of every other and of every line; labels may use the whole
+    // width given, beyond the square.
     let galleys: Vec<_> = texts.into_iter().map(|(t, c, f)| painter.layout_no_wrap(t, f, c)).collect();
-    for (w, g) in wanted.iter_mut().zip(&galleys) {
-        w.size = g.size();
-    }
-    // Labels may use the whole width given, beyond the square.
-    let boxes = label_placement::place(&wanted, &lines, outer);
-    for (b, g) in boxes.iter().zip(galleys) {
-        painter.galley(b.min, g, Color32::PLACEHOLDER);
-    }
+    let boxes = paint_labels(&painter, wanted, galleys, &lines, outer, None);
     PlotGeometry { rect, unit, labels: boxes, stroke: width }
 }
 

@@ -19,10 +19,10 @@ pub fn exact_text(v: f64) -> String {
 /// too large goes on to the document's validator, which refuses it naming the field; one
 /// that a float would hold as 0 (`1e-400`) keeps the field's value rather than become 0.
 fn typed(text: &str) -> Option<f64> {
-    use phonglab_core::formats::typed_number::{TypedNumberError as E, parse_number};
+    use phonglab_core::formats::typed_number::{TypedNumberError as E, parse_number, with_decimal_point};
     match parse_number(text) {
         Ok(x) => Some(x),
-        Err(E::NotFinite(t) | E::TooLarge(t)) => t.trim().replacen(',', ".", 1).parse().ok(),
+        Err(E::NotFinite(t) | E::TooLarge(t)) => with_decimal_point(&t).parse().ok(),
         Err(E::TooSmall(_) | E::NotANumber(_) | E::Empty) => None,
     }
 }

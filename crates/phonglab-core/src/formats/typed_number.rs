@@ -32,17 +32,20 @@ fn names_non_zero(text: &str) -> bool {
     significand.chars().any(|c| c.is_ascii_digit() && c != '0')
 }
 
+/// `text` (trimmed) with its decimal comma, when it has one (one comma and no point), as a
+/// decimal point: the one rule for what a decimal comma is.
+pub fn with_decimal_point(text: &str) -> String {
+    let t = text.trim();
+    if t.matches(',').count() == 1 && !t.contains('.') { t.replacen(',', ".", 1) } else { t.to_string() }
+}
+
 /// One number, with `.` or `,` as its decimal separator (one of them, once).
 pub fn parse_number(text: &str) -> Result<f64, TypedNumberError> {
     let t = text.trim();
     if t.is_empty() {
         return Err(TypedNumberError::Empty);
     }
-    let normalised = if t.contains(',') && !t.contains('.') && t.matches(',').count() == 1 {
-        t.replacen(',', ".", 1)
-    } else {
-        t.to_string()
-    };
+    let normalised = with_decimal_point(t);
     let lower = normalised.to_ascii_lowercase();
     if ["nan", "+nan", "-nan", "inf", "+inf", "-inf", "infinity", "+infinity", "-infinity"].contains(&lower.as_str()) {
         return Err(TypedNumberError::NotFinite(t.to_string()));
