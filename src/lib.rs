@@ -7,6 +7,7 @@ pub mod cli;
 pub mod cost_cmd;
 pub mod egui_cpu;
 pub mod exercise_cmd;
+pub mod file_dialog;
 pub mod gpu;
 pub mod image_io;
 pub mod input_file;

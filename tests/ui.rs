@@ -102,6 +102,9 @@ fn choosing_gold_sets_the_material() {
 }
 
 fn type_into(h: &mut Harness<'static, AppState>, label: &str, text: &str) {
+    h.get_by_role_and_label(Role::SpinButton, label).scroll_to_me();
+    // Scrolling is animated: wait for it to settle before clicking.
+    h.run_steps(30);
     h.get_by_role_and_label(Role::SpinButton, label).click();
     h.run_steps(1);
     h.get_by_role_and_label(Role::SpinButton, label).type_text(text);
@@ -121,6 +124,14 @@ fn an_out_of_range_shininess_is_refused_and_the_scene_keeps_its_value() {
     };
     assert!(msg.contains("material.shininess = 200") && msg.contains("[0, 128]"), "{msg}");
     h.get_by_label(&msg);
+    // The refused text stays in the field, with the validator's reason beside it, until
+    // it is corrected or Esc puts the value back.
+    assert_eq!(h.get_by_role_and_label(Role::SpinButton, "Material shininess").value().as_deref(), Some("200"));
+    h.get_by_label_contains("material.shininess = 200 is out of range: allowed [0, 128] (Esc: back to 25.6)");
+    h.get_by_role_and_label(Role::SpinButton, "Material shininess").click();
+    h.run_steps(1);
+    h.key_press(egui::Key::Escape);
+    h.run_steps(2);
     assert_eq!(h.get_by_role_and_label(Role::SpinButton, "Material shininess").value().as_deref(), Some("25.6"));
 
     // NaN is refused the same way.
@@ -140,7 +151,14 @@ fn a_nan_vertex_or_zero_attenuation_is_refused() {
     let before = h.state().doc.clone();
     type_into(&mut h, "Vertex x", "inf");
     assert_eq!(h.state().doc, before);
-    assert!(matches!(&h.state().message, Some(Message::Refused(m)) if m.contains("vertex.position[0]")));
+    // The field refuses it itself: the text stays, with the reason beside it.
+    assert_eq!(h.get_by_role_and_label(Role::SpinButton, "Vertex x").value().as_deref(), Some("inf"));
+    h.get_by_label_contains("inf is not a finite number (Esc: back to");
+    h.get_by_role_and_label(Role::SpinButton, "Vertex x").click();
+    h.run_steps(1);
+    h.key_press(egui::Key::Escape);
+    h.run_steps(2);
+    assert!(h.query_by_label_contains("inf is not a finite number").is_none(), "Esc puts the value back");
     for label in ["Constant attenuation", "Linear attenuation", "Quadratic attenuation"] {
         type_into(&mut h, label, "0");
     }

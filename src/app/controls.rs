@@ -8,8 +8,9 @@ use phonglab_core::{
     CameraSpec, Document, Light, LightPlacement, MAX_LIGHTS, Material, NormalMode, RuleSet, SpecularModel, materials,
 };
 
+use super::number_field::NumberField;
 use super::state::UiState;
-use super::widgets::{color, number, slider, vec3, vec4};
+use super::widgets::{color_ui, number_ui, slider_ui, vec3_ui, vec4_ui};
 
 /// All the controls, in collapsible sections.
 pub fn controls_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
@@ -133,7 +134,7 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
         l.position.w = if directional { 0.0 } else { 1.0 };
     }
     for (name, v) in [("Light x", &mut l.position.x), ("Light y", &mut l.position.y), ("Light z", &mut l.position.z)] {
-        slider(ui, name, v, -range..=range, false);
+        slider_ui(ui, name, v, -range..=range, false);
     }
     ComboBox::from_label("Light fixed to").selected_text(placement_label(&l.placement)).show_ui(ui, |ui| {
         for p in [LightPlacement::Eye, LightPlacement::World, LightPlacement::Object] {
@@ -142,14 +143,14 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
         }
     });
 
-    color(ui, "Light ambient", &mut l.ambient, false);
-    color(ui, "Light diffuse", &mut l.diffuse, false);
-    color(ui, "Light specular", &mut l.specular, false);
+    color_ui(ui, "Light ambient", &mut l.ambient, false);
+    color_ui(ui, "Light diffuse", &mut l.diffuse, false);
+    color_ui(ui, "Light specular", &mut l.specular, false);
 
     ui.add_enabled_ui(!directional, |ui| {
-        slider(ui, "Constant attenuation", &mut l.attenuation[0], 0.0..=10.0, true);
-        slider(ui, "Linear attenuation", &mut l.attenuation[1], 0.0..=1.0, true);
-        slider(ui, "Quadratic attenuation", &mut l.attenuation[2], 0.0..=0.1, true);
+        slider_ui(ui, "Constant attenuation", &mut l.attenuation[0], 0.0..=10.0, true);
+        slider_ui(ui, "Linear attenuation", &mut l.attenuation[1], 0.0..=1.0, true);
+        slider_ui(ui, "Quadratic attenuation", &mut l.attenuation[2], 0.0..=0.1, true);
     });
     if directional {
         ui.small("Attenuation applies to positional lights only.");
@@ -163,9 +164,9 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
         }
     }
     if spot {
-        vec3(ui, "Spot direction", &mut l.spot_direction, 0.01);
-        slider(ui, "Spot cutoff", &mut l.spot_cutoff, 0.0..=90.0, false);
-        slider(ui, "Spot exponent", &mut l.spot_exponent, 0.0..=128.0, false);
+        vec3_ui(ui, "Spot direction", &mut l.spot_direction, 0.01);
+        slider_ui(ui, "Spot cutoff", &mut l.spot_cutoff, 0.0..=90.0, false);
+        slider_ui(ui, "Spot exponent", &mut l.spot_exponent, 0.0..=128.0, false);
     }
 }
 
@@ -178,11 +179,11 @@ fn material_ui(ui: &mut Ui, m: &mut Material, prefix: &str) {
             }
         }
     });
-    color(ui, &format!("{prefix}ambient"), &mut m.ambient, false);
-    color(ui, &format!("{prefix}diffuse"), &mut m.diffuse, true);
-    color(ui, &format!("{prefix}specular"), &mut m.specular, false);
-    color(ui, &format!("{prefix}emission"), &mut m.emission, false);
-    slider(ui, &format!("{prefix}shininess"), &mut m.shininess, 0.0..=128.0, false);
+    color_ui(ui, &format!("{prefix}ambient"), &mut m.ambient, false);
+    color_ui(ui, &format!("{prefix}diffuse"), &mut m.diffuse, true);
+    color_ui(ui, &format!("{prefix}specular"), &mut m.specular, false);
+    color_ui(ui, &format!("{prefix}emission"), &mut m.emission, false);
+    slider_ui(ui, &format!("{prefix}shininess"), &mut m.shininess, 0.0..=128.0, false);
 }
 
 fn material_section_ui(ui: &mut Ui, doc: &mut Document) {
@@ -200,7 +201,7 @@ fn material_section_ui(ui: &mut Ui, doc: &mut Document) {
 
 fn light_model_ui(ui: &mut Ui, doc: &mut Document) {
     let lm = &mut doc.scene.light_model;
-    color(ui, "Scene ambient", &mut lm.ambient, false);
+    color_ui(ui, "Scene ambient", &mut lm.ambient, false);
     ui.checkbox(&mut lm.local_viewer, "Local viewer");
     ui.checkbox(&mut lm.two_sided, "Two-sided lighting");
     ui.checkbox(&mut lm.separate_specular, "Separate specular colour");
@@ -219,8 +220,8 @@ fn light_model_ui(ui: &mut Ui, doc: &mut Document) {
 
 fn vertex_ui(ui: &mut Ui, doc: &mut Document) {
     let v = &mut doc.scene.vertex;
-    vec4(ui, "Vertex", &mut v.position, 1.0);
-    vec3(ui, "Normal", &mut v.normal, 0.01);
+    vec4_ui(ui, "Vertex", &mut v.position, 1.0);
+    vec3_ui(ui, "Normal", &mut v.normal, 0.01);
     if ui.button("Normalise the normal").clicked()
         && let Some(n) = v.normal.try_normalize()
     {
@@ -253,13 +254,13 @@ fn camera_ui(ui: &mut Ui, doc: &mut Document) {
             ui.small(worksheet_modelview_note(*i));
         }
         CameraSpec::LookAt { eye, centre, up } => {
-            vec3(ui, "Eye", eye, 0.05);
-            vec3(ui, "Centre", centre, 0.05);
-            vec3(ui, "Up", up, 0.05);
+            vec3_ui(ui, "Eye", eye, 0.05);
+            vec3_ui(ui, "Centre", centre, 0.05);
+            vec3_ui(ui, "Up", up, 0.05);
         }
         CameraSpec::OpenFrameworks { width, height } => {
-            number(ui, "Window width", width, 1.0);
-            number(ui, "Window height", height, 1.0);
+            number_ui(ui, "Window width", width, 1.0);
+            number_ui(ui, "Window height", height, 1.0);
             ui.small(format!(
                 "Eye distance (H/2)/tan(30 deg) = {:.3}",
                 phonglab_core::transform::of_camera_distance(*height)
@@ -269,25 +270,38 @@ fn camera_ui(ui: &mut Ui, doc: &mut Document) {
     }
     ui.separator();
     ui.label("Object placement (world from object)");
-    matrix_ui_named(ui, &mut doc.scene.world_from_object, "Object");
+    named_matrix_ui(ui, &mut doc.scene.world_from_object, "Object");
 }
 
 fn matrix_ui(ui: &mut Ui, m: &mut DMat4) {
-    matrix_ui_named(ui, m, "M");
+    named_matrix_ui(ui, m, "M");
 }
 
-/// A 4x4 grid of number fields, each named "{name} row r" + "column c" for assistive technology.
-fn matrix_ui_named(ui: &mut Ui, m: &mut DMat4, name: &str) {
+/// A 4x4 grid of number fields, each named "{name} row r column c" for assistive
+/// technology; four numbers typed into one field set its row.
+fn named_matrix_ui(ui: &mut Ui, m: &mut DMat4, name: &str) {
     let mut rows = mat4_rows(m);
     let mut changed = false;
     egui::Grid::new(format!("{name} matrix")).show(ui, |ui| {
         ui.label("");
-        let cols: Vec<egui::Id> = (0..4).map(|c| ui.small(format!("column {c}")).id).collect();
+        for c in 0..4 {
+            ui.small(format!("column {c}"));
+        }
         ui.end_row();
         for (r, row) in rows.iter_mut().enumerate() {
-            let rl = ui.small(format!("{name} row {r}")).id;
+            ui.small(format!("{name} row {r}"));
+            let (mut typed_row, mut refused) = (None, None);
             for (c, x) in row.iter_mut().enumerate() {
-                changed |= ui.add(super::widgets::exact_drag(x, 0.01)).labelled_by(rl).labelled_by(cols[c]).changed();
+                let shown = NumberField::new(x, format!("{name} row {r} column {c}")).show_in_row(ui, 4);
+                changed |= shown.response.changed();
+                typed_row = typed_row.or(shown.row);
+                refused = refused.or(shown.refused);
+            }
+            if let Some(all) = typed_row {
+                row.iter_mut().zip(all).for_each(|(x, t)| *x = t);
+            }
+            if let Some(why) = refused {
+                super::number_field::refusal_ui(ui, &why);
             }
             ui.end_row();
         }

@@ -115,6 +115,21 @@ pub fn file_ui(ui: &mut Ui, state: &mut AppState) {
     if ui.button("Save").on_hover_text("Save the scene to this path (Ctrl+S)").clicked() {
         save_typed(state);
     }
+    if state.ui.file_dialogs {
+        let start = path_of(state);
+        if ui.button("Open…").on_hover_text("Choose a scene file in the system's file dialog").clicked()
+            && let Some(p) = crate::file_dialog::pick_scene_to_open(start.as_deref())
+        {
+            state.ui.file_path = p.display().to_string();
+            open(state, &p);
+        }
+        if ui.button("Save as…").on_hover_text("Choose where to save in the system's file dialog").clicked()
+            && let Some(p) = crate::file_dialog::pick_scene_to_save(start.as_deref())
+        {
+            state.ui.file_path = p.display().to_string();
+            save(state, &p);
+        }
+    }
 }
 
 /// Opens the file at the typed path.

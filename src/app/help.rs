@@ -39,6 +39,10 @@ pub enum Action {
     Save,
     /// Close the window, saving the session.
     Quit,
+    /// Undo the last change of the scene.
+    Undo,
+    /// Redo the last undone change.
+    Redo,
 }
 
 /// (modifiers, key, shown as, action, description).
@@ -58,6 +62,9 @@ pub const SHORTCUTS: &[(Modifiers, Key, &str, Action, &str)] = &[
     (Modifiers::CTRL, Key::O, "Ctrl+O", Action::Open, "open the scene file at the typed path"),
     (Modifiers::CTRL, Key::S, "Ctrl+S", Action::Save, "save the scene to the typed path"),
     (Modifiers::CTRL, Key::Q, "Ctrl+Q", Action::Quit, "quit (the session is saved)"),
+    (Modifiers::CTRL, Key::Z, "Ctrl+Z", Action::Undo, "undo the last change of the scene"),
+    (Modifiers::CTRL.plus(Modifiers::SHIFT), Key::Z, "Ctrl+Shift+Z", Action::Redo, "redo"),
+    (Modifiers::CTRL, Key::Y, "Ctrl+Y", Action::Redo, "redo"),
     (
         Modifiers::NONE,
         Key::S,
@@ -79,18 +86,30 @@ pub const SHORTCUTS: &[(Modifiers, Key, &str, Action, &str)] = &[
     (Modifiers::NONE, Key::A, "A", Action::AutoRotate, "auto-rotate the shaded view"),
 ];
 
-/// The actions whose keys were pressed this frame (none while a text field has focus).
-pub fn pressed(ctx: &egui::Context) -> Vec<Action> {
-    if ctx.egui_wants_keyboard_input() {
-        return Vec::new();
+/// May `action` fire from its keys now? While a text field has the keyboard only what
+/// works from everywhere does (Open, Save, Quit and Help's F1: Ctrl+Z is the field's own
+/// undo); in the quiz, where the student types numbers, no key without Ctrl does, so digits
+/// typed after a missed click change nothing.
+fn allowed(modifiers: Modifiers, key: Key, action: Action, typing: bool, quiz: bool) -> bool {
+    let plain = !modifiers.ctrl && !modifiers.command && key != Key::F1;
+    if typing {
+        matches!(action, Action::Open | Action::Save | Action::Quit) || key == Key::F1
+    } else {
+        !(quiz && plain)
     }
+}
+
+/// The actions whose keys were pressed this frame: see [`allowed`] for which fire while a
+/// text field has the keyboard, or while the quiz (`quiz`) is open.
+pub fn pressed(ctx: &egui::Context, quiz: bool) -> Vec<Action> {
+    let typing = ctx.egui_wants_keyboard_input();
     ctx.input_mut(|i| {
         let mut out = Vec::new();
         // Most specific first, so Shift+M is not also taken as M.
         let mut ordered: Vec<_> = SHORTCUTS.iter().collect();
         ordered.sort_by_key(|(m, ..)| std::cmp::Reverse(m.shift as u8 + m.ctrl as u8 + m.command as u8));
         for (m, k, _, a, _) in ordered {
-            if i.consume_key(*m, *k) && !out.contains(a) {
+            if allowed(*m, *k, *a, typing, quiz) && i.consume_key(*m, *k) && !out.contains(a) {
                 out.push(*a);
             }
         }

@@ -11,9 +11,11 @@ pub mod evaluated;
 pub mod files;
 pub mod gpu_view;
 pub mod help;
+pub mod history;
 pub mod label_placement;
 pub mod layout;
 pub mod lobe;
+pub mod number_field;
 pub mod palette;
 pub mod quiz;
 pub mod result;
@@ -50,6 +52,8 @@ fn apply_action(state: &mut AppState, action: help::Action) {
             return;
         }
         A::Open => return files::open_typed(state),
+        A::Undo => return state.undo(),
+        A::Redo => return state.redo(),
         A::Save => return files::save_typed(state),
         A::Precision => {
             state.ui.precision = match state.ui.precision {
@@ -131,6 +135,7 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         if ui.button("Reset to worksheet").on_hover_text("Ctrl+R").clicked() {
             state.reset_to_worksheet();
         }
+        undo_buttons_ui(ui, state);
         ui.menu_button("Presets", |ui| presets_menu_ui(ui, state));
         let was_open = state.compare.open;
         ui.toggle_value(&mut state.compare.open, "Compare")
@@ -176,6 +181,22 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         }
         ui.label(egui::RichText::new(&state.doc.name).weak());
     });
+}
+
+/// Undo and Redo, each saying what it would change.
+fn undo_buttons_ui(ui: &mut Ui, state: &mut AppState) {
+    let undo = state.history.undo_label().map(|l| format!("Undo {l} (Ctrl+Z)"));
+    let redo = state.history.redo_label().map(|l| format!("Redo {l} (Ctrl+Shift+Z, Ctrl+Y)"));
+    // Presenting, the icons alone: the top bar keeps one row at 1280 points.
+    let short = state.ui.layout.presenting;
+    let b = ui.add_enabled(undo.is_some(), egui::Button::new(if short { "⟲" } else { "⟲ Undo" }));
+    if b.on_hover_text(undo.unwrap_or_else(|| "Nothing to undo".into())).clicked() {
+        state.undo();
+    }
+    let b = ui.add_enabled(redo.is_some(), egui::Button::new(if short { "⟳" } else { "⟳ Redo" }));
+    if b.on_hover_text(redo.unwrap_or_else(|| "Nothing to redo".into())).clicked() {
+        state.redo();
+    }
 }
 
 /// A small square of a material's diffuse colour (clamped, as displayed).
@@ -251,7 +272,8 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
         ctx.set_visuals(visuals.clone());
     }
     *ui.visuals_mut() = visuals;
-    for a in help::pressed(&ctx) {
+    state.now = ctx.input(|i| i.time);
+    for a in help::pressed(&ctx, state.quiz.open) {
         apply_action(state, a);
     }
     if state.ui.quit {
@@ -287,11 +309,14 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
         // From the panel's starting width, not its width now: a slider sized from the
         // panel it widens grew the panel by a few points a frame until the clamp.
         let panel = layout::Layout::controls_width(width).min(ui.available_width());
-        ui.spacing_mut().slider_width = (panel - 200.0).clamp(60.0, 160.0);
+        ui.spacing_mut().slider_width = (panel - 230.0).clamp(60.0, 160.0);
         egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
             let mut candidate = state.doc.clone();
             controls::controls_ui(ui, &mut candidate, &mut state.ui);
-            state.apply(candidate);
+            match state.apply_or_why(candidate) {
+                Ok(()) => number_field::accept_last_commit(ui.ctx()),
+                Err(why) => number_field::refuse_last_commit(ui.ctx(), &why),
+            }
         });
     };
     let presenting = state.ui.layout.presenting;
@@ -545,6 +570,7 @@ impl PhongLabApp {
         // The shaded view can run the scene's generated WGSL on eframe's adapter.
         state.gpu = cc.wgpu_render_state.as_ref().map(gpu_view::install);
         state.ui.renderer = renderer;
+        state.ui.file_dialogs = true;
         // A file named on the command line wins over the restored session.
         if let Some(path) = file {
             files::open_at_start(&mut state, &path);

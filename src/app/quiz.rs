@@ -134,10 +134,9 @@ pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<
         }
         // Level 2 (positional with attenuation) until one is chosen.
         quiz.level = if quiz.level == 0 { 2 } else { quiz.level.clamp(1, 4) };
-        let l = ui.label("Level");
-        ui.add(egui::DragValue::new(&mut quiz.level).range(1..=4)).labelled_by(l.id).on_hover_text(
-            "1 directional only, 2 positional with attenuation, 3 spotlights, 4 two-sided with several lights",
-        );
+        let mut level = u32::from(quiz.level);
+        super::widgets::whole_number_ui(ui, "Level", &mut level, 1..=4);
+        quiz.level = level as u8;
         if ui
             .button("New exercise")
             .on_hover_text("A new scene of this level, screened as phonglab exercise screens")

@@ -80,8 +80,7 @@ pub fn departures_ui(ui: &mut Ui, state: &mut AppState) {
 fn view_options_ui(ui: &mut Ui, view: &mut View) {
     ui.horizontal_wrapped(|ui| {
         let count = |ui: &mut Ui, label: &str, v: &mut u32, r: std::ops::RangeInclusive<u32>| {
-            let l = ui.label(label);
-            ui.add(egui::DragValue::new(v).range(r)).labelled_by(l.id);
+            super::widgets::whole_number_ui(ui, label, v, r);
         };
         match view.object {
             ObjectKind::Sphere => {

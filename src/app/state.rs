@@ -83,6 +83,9 @@ pub struct UiState {
     pub quit: bool,
     /// What the centre drew last frame.
     pub geometry: Geometry,
+    /// Open… and Save as… use the system's file dialog (the window's app; not headless
+    /// tests, where a dialog would wait for a person).
+    pub file_dialogs: bool,
 }
 
 impl Default for UiState {
@@ -103,6 +106,7 @@ impl Default for UiState {
             renderer: Default::default(),
             quit: false,
             geometry: Geometry::default(),
+            file_dialogs: false,
         }
     }
 }
@@ -129,6 +133,11 @@ pub struct AppState {
     /// The wgpu adapter eframe runs on, when there is one (the shaded view can then be
     /// drawn by the scene's generated WGSL).
     pub gpu: Option<super::gpu_view::GpuInfo>,
+    /// Undo and redo of the scene's changes.
+    pub history: super::history::History,
+    /// This frame's time (seconds, egui's clock): a drag's changes within a second are one
+    /// undo step.
+    pub now: f64,
 }
 
 impl AppState {
@@ -145,9 +154,14 @@ impl AppState {
     /// Keeps `candidate` if it is valid; otherwise refuses it with a message naming the
     /// field and the allowed range, and keeps the last valid document. Returns whether it
     /// was kept.
-    pub fn apply(&mut self, mut candidate: Document) -> bool {
+    pub fn apply(&mut self, candidate: Document) -> bool {
+        self.apply_or_why(candidate).is_ok()
+    }
+
+    /// [`Self::apply`], with the validator's reason when it refuses.
+    pub fn apply_or_why(&mut self, mut candidate: Document) -> Result<(), String> {
         if candidate == self.doc {
-            return true;
+            return Ok(());
         }
         let checked = candidate.camera.matrix().and_then(|m| {
             candidate.scene.eye_from_world = m;
@@ -155,32 +169,69 @@ impl AppState {
         });
         match checked {
             Ok(()) => {
-                self.doc = candidate;
+                let before = std::mem::replace(&mut self.doc, candidate);
+                self.history.record(&before, &self.doc, None, self.now);
                 self.ui.selected_light = self.ui.selected_light.min(self.doc.scene.lights.len().saturating_sub(1));
                 if matches!(self.message, Some(Message::Refused(_))) {
                     self.message = None;
                 }
-                true
+                Ok(())
             }
             Err(e) => {
                 self.message = Some(Message::Refused(format!("Refused: {e}. The scene keeps its last valid value.")));
-                false
+                Err(e.to_string())
             }
         }
     }
 
     /// Back to the start: the worksheet with modelview 5 (UI choices kept).
     pub fn reset_to_worksheet(&mut self) {
-        self.doc = Document::default();
+        let before = std::mem::take(&mut self.doc);
+        if before != self.doc {
+            self.history.record(&before, &self.doc, Some("reset to the worksheet"), self.now);
+        }
         self.ui.selected_light = 0;
         self.message = Some(Message::Info("Reset to the worksheet (mview5).".into()));
     }
 
     /// Loads a ready-made document.
     pub fn load(&mut self, doc: Document, what: &str) {
-        self.doc = doc;
+        let before = std::mem::replace(&mut self.doc, doc);
+        if before != self.doc {
+            self.history.record(&before, &self.doc, Some(&format!("open {what}")), self.now);
+        }
         self.ui.selected_light = 0;
         self.message = Some(Message::Info(format!("Loaded {what}.")));
+    }
+}
+
+impl AppState {
+    /// Undoes the last change of the scene, saying what was undone.
+    pub fn undo(&mut self) {
+        self.message = Some(Message::Info(match self.history.undo(&self.doc) {
+            Some((doc, label)) => {
+                self.set_doc(doc);
+                format!("Undid {label}.")
+            }
+            None => "Nothing to undo.".into(),
+        }));
+    }
+
+    /// Redoes the last undone change, saying what was redone.
+    pub fn redo(&mut self) {
+        self.message = Some(Message::Info(match self.history.redo(&self.doc) {
+            Some((doc, label)) => {
+                self.set_doc(doc);
+                format!("Redid {label}.")
+            }
+            None => "Nothing to redo.".into(),
+        }));
+    }
+
+    /// Shows `doc` (a document that was valid when it was shown before).
+    fn set_doc(&mut self, doc: Document) {
+        self.doc = doc;
+        self.ui.selected_light = self.ui.selected_light.min(self.doc.scene.lights.len().saturating_sub(1));
     }
 }
 
@@ -210,6 +261,12 @@ mod tests {
         assert!(s.apply(c));
         assert_eq!(s.doc.scene.material.shininess, 100.0);
         assert_eq!(s.message, None, "a good edit clears the refusal");
+        // The refused edit left no step; the kept one is undone.
+        s.undo();
+        assert_eq!(s.doc, before);
+        assert_eq!(s.message, Some(Message::Info("Undid shininess 25.6 ➡ 100.".into())));
+        s.redo();
+        assert_eq!(s.doc.scene.material.shininess, 100.0);
     }
 
     #[test]

@@ -1,68 +1,66 @@
 //! Labelled input widgets: every input has an accessible label (found by tests with
-//! `get_by_label`), and numbers the user types reach the validator unclamped, so an
-//! out-of-range value is refused with a message rather than silently clamped.
+//! `get_by_label`), and every number is typed into the one number field
+//! ([`super::number_field::NumberField`]), whose values reach the validator unclamped, so
+//! an out-of-range value is refused with a message rather than silently clamped.
 
-use egui::{DragValue, Response, Slider, SliderClamping, Ui};
+use egui::{Response, Slider, SliderClamping, Ui};
 use glam::{DVec3, DVec4};
 
-/// A number as the shortest decimal that reads back as the same `f64` (exponent form
-/// outside [1e-4, 1e15)). egui puts a field's text in the editor when it gains focus and
-/// parses it back when it loses focus, so a rounded display would round the value of a
-/// field that was only clicked: every number field shows its value exactly.
-pub fn exact_text(v: f64) -> String {
-    let a = v.abs();
-    if a != 0.0 && a.is_finite() && !(1e-4..1e15).contains(&a) { format!("{v:e}") } else { format!("{v}") }
-}
+use super::number_field::{Accepts, NumberField, refusal_ui};
 
-/// A typed number, with a decimal point or comma
-/// ([`phonglab_core::formats::typed_number::parse_number`]). A number that is not finite or
-/// too large goes on to the document's validator, which refuses it naming the field; one
-/// that a float would hold as 0 (`1e-400`) keeps the field's value rather than become 0.
-fn typed(text: &str) -> Option<f64> {
-    use phonglab_core::formats::typed_number::{TypedNumberError as E, parse_number, with_decimal_point};
-    match parse_number(text) {
-        Ok(x) => Some(x),
-        Err(E::NotFinite(t) | E::TooLarge(t)) => with_decimal_point(&t).parse().ok(),
-        Err(E::TooSmall(_) | E::NotANumber(_) | E::Empty) => None,
-    }
-}
+/// A number field's width in the controls: 6 significant digits and a sign.
+const FIELD_WIDTH: f32 = 58.0;
 
-/// A number field (no clamping) that shows its value exactly and reads `12,5` as 12.5.
-pub fn exact_drag(value: &mut f64, speed: f64) -> DragValue<'_> {
-    DragValue::new(value).speed(speed).custom_formatter(|v, _| exact_text(v)).custom_parser(typed)
-}
-
-/// A slider over `range` whose typed values are not clamped (the document validator
-/// decides), with `label` as its accessible name.
-pub fn slider(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::RangeInclusive<f64>, log: bool) -> Response {
-    let mut s = Slider::new(value, range)
-        .text(label)
-        .clamping(SliderClamping::Never)
-        .custom_formatter(|v, _| exact_text(v))
-        .custom_parser(typed);
-    if log {
-        s = s.logarithmic(true).smallest_positive(1e-6);
-    }
-    ui.add(s)
-}
-
-/// A labelled number field (no clamping).
-pub fn number(ui: &mut Ui, label: &str, value: &mut f64, speed: f64) -> Response {
-    ui.horizontal(|ui| {
-        let l = ui.label(label);
-        ui.add(exact_drag(value, speed)).labelled_by(l.id)
+/// A slider over `range` (dragged values stay inside it) and a number field beside it
+/// whose typed values are not clamped (the document validator decides), both named `label`.
+pub fn slider_ui(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::RangeInclusive<f64>, log: bool) -> bool {
+    ui.horizontal_wrapped(|ui| {
+        let mut s = Slider::new(value, range).show_value(false).clamping(SliderClamping::Never);
+        if log {
+            s = s.logarithmic(true).smallest_positive(1e-6);
+        }
+        let slid = ui.add(s);
+        ui.ctx().accesskit_node_builder(slid.id, |b| b.set_label(label.to_string()));
+        let typed = NumberField::new(value, label).width(FIELD_WIDTH).show_in_row(ui, 1);
+        ui.add(egui::Label::new(label).wrap_mode(egui::TextWrapMode::Extend));
+        if let Some(why) = &typed.refused {
+            ui.end_row();
+            refusal_ui(ui, why);
+        }
+        slid.changed() || typed.response.changed()
     })
     .inner
 }
 
-/// Number fields on one row, each named "{label} {component}" for assistive technology
-/// and tests (the row label and the component label together).
-fn components(ui: &mut Ui, label: &str, comps: &mut [(&str, &mut f64)], speed: f64) -> bool {
-    components_after(ui, |_| {}, label, comps, speed)
+/// A labelled number field (no clamping).
+pub fn number_ui(ui: &mut Ui, label: &str, value: &mut f64, speed: f64) -> Response {
+    ui.horizontal(|ui| {
+        ui.label(label);
+        NumberField::new(value, label).speed(speed).show(ui)
+    })
+    .inner
 }
 
-/// [`components`] after `before` (e.g. a swatch) on the same row.
-fn components_after(
+/// A labelled field for a whole number in `range` (a mesh's slices, a quiz's level).
+pub fn whole_number_ui(ui: &mut Ui, label: &str, value: &mut u32, range: std::ops::RangeInclusive<u32>) -> bool {
+    let mut x = f64::from(*value);
+    ui.label(label);
+    let accepts = Accepts::Whole { min: i64::from(*range.start()), max: i64::from(*range.end()) };
+    let changed = NumberField::new(&mut x, label).speed(0.1).accepts(accepts).width(40.0).show(ui).changed();
+    if changed {
+        *value = x as u32;
+    }
+    changed
+}
+
+/// A row of number fields, each named "{label} {component}" for assistive technology and
+/// tests; a row of numbers typed into any of them sets them all.
+pub fn components_ui(ui: &mut Ui, label: &str, comps: &mut [(&str, &mut f64)], speed: f64) -> bool {
+    components_after_ui(ui, |_| {}, label, comps, speed)
+}
+
+/// [`components_ui`] after `before` (e.g. a swatch) on the same row.
+fn components_after_ui(
     ui: &mut Ui,
     before: impl FnOnce(&mut Ui),
     label: &str,
@@ -70,34 +68,58 @@ fn components_after(
     speed: f64,
 ) -> bool {
     let mut changed = false;
+    let n = comps.len();
     // Wrapped, so a narrow panel puts the fields on a second line rather than widening.
-    ui.horizontal_wrapped(|ui| {
-        before(ui);
-        let row = ui.label(label);
-        for (name, c) in comps.iter_mut() {
-            // A component's name and field go to the next row together.
-            if ui.available_width() < 72.0 {
+    let row = ui
+        .horizontal_wrapped(|ui| {
+            let (mut row, mut refused) = (None, None);
+            before(ui);
+            ui.add(egui::Label::new(label).wrap_mode(egui::TextWrapMode::Extend));
+            // The fields on the label's row when they all fit there, else on the next row.
+            let each = FIELD_WIDTH + 14.0 + 2.0 * ui.spacing().item_spacing.x;
+            let left = |ui: &Ui| ui.max_rect().max.x - ui.cursor().min.x;
+            if left(ui) < n as f32 * each {
                 ui.end_row();
             }
-            let cl = ui.small(*name);
-            changed |= ui.add(exact_drag(c, speed)).labelled_by(row.id).labelled_by(cl.id).changed();
+            for (name, c) in comps.iter_mut() {
+                // A component's name and field go to the next row together.
+                if left(ui) < each {
+                    ui.end_row();
+                }
+                ui.small(*name);
+                let shown =
+                    NumberField::new(c, format!("{label} {name}")).speed(speed).width(FIELD_WIDTH).show_in_row(ui, n);
+                changed |= shown.response.changed();
+                row = row.or(shown.row);
+                refused = refused.or(shown.refused);
+            }
+            if let Some(why) = &refused {
+                ui.end_row();
+                refusal_ui(ui, why);
+            }
+            row
+        })
+        .inner;
+    if let Some(all) = row {
+        for ((_, c), x) in comps.iter_mut().zip(all) {
+            **c = x;
         }
-    });
+    }
     changed
 }
 
 /// Three components: `"{label} x"`, `"{label} y"`, `"{label} z"`.
-pub fn vec3(ui: &mut Ui, label: &str, v: &mut DVec3, speed: f64) -> bool {
-    components(ui, label, &mut [("x", &mut v.x), ("y", &mut v.y), ("z", &mut v.z)], speed)
+pub fn vec3_ui(ui: &mut Ui, label: &str, v: &mut DVec3, speed: f64) -> bool {
+    components_ui(ui, label, &mut [("x", &mut v.x), ("y", &mut v.y), ("z", &mut v.z)], speed)
 }
 
 /// Four components (`x y z w`).
-pub fn vec4(ui: &mut Ui, label: &str, v: &mut DVec4, speed: f64) -> bool {
-    components(ui, label, &mut [("x", &mut v.x), ("y", &mut v.y), ("z", &mut v.z), ("w", &mut v.w)], speed)
+pub fn vec4_ui(ui: &mut Ui, label: &str, v: &mut DVec4, speed: f64) -> bool {
+    components_ui(ui, label, &mut [("x", &mut v.x), ("y", &mut v.y), ("z", &mut v.z), ("w", &mut v.w)], speed)
 }
 
 /// An unclamped GL colour: r, g, b (and alpha when `alpha`), after a swatch of how it shows.
-pub fn color(ui: &mut Ui, label: &str, c: &mut DVec4, alpha: bool) -> bool {
+pub fn color_ui(ui: &mut Ui, label: &str, c: &mut DVec4, alpha: bool) -> bool {
     let shown = crate::app::palette::gl_to_color32([c.x, c.y, c.z]);
     let swatch = move |ui: &mut Ui| {
         let (rect, _) = ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
@@ -105,25 +127,8 @@ pub fn color(ui: &mut Ui, label: &str, c: &mut DVec4, alpha: bool) -> bool {
     };
     let DVec4 { x, y, z, w } = c;
     if alpha {
-        components_after(ui, swatch, label, &mut [("r", x), ("g", y), ("b", z), ("a", w)], 0.005)
+        components_after_ui(ui, swatch, label, &mut [("r", x), ("g", y), ("b", z), ("a", w)], 0.005)
     } else {
-        components_after(ui, swatch, label, &mut [("r", x), ("g", y), ("b", z)], 0.005)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::exact_text;
-
-    #[test]
-    fn exact_text_reads_back_as_the_same_number() {
-        for v in [0.0, -0.0, 0.2125, 121.76225070590814, 1e300, -1e-300, 5e-324, 1e15, 99999.5, 0.44721359549995804] {
-            let t = exact_text(v);
-            assert_eq!(t.parse::<f64>().unwrap().to_bits(), v.to_bits(), "{v} -> {t}");
-            assert!(t.len() <= 24, "{t}");
-        }
-        assert_eq!(exact_text(0.2125), "0.2125");
-        assert_eq!(exact_text(1e300), "1e300");
-        assert_eq!(exact_text(-665.1075), "-665.1075");
+        components_after_ui(ui, swatch, label, &mut [("r", x), ("g", y), ("b", z)], 0.005)
     }
 }

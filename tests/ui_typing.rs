@@ -1,0 +1,223 @@
+//! Numbers typed as students type them, undo, and the keys: the window driven headless with
+//! egui_kittest, typing, clicking and reading back as a student does.
+
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use phonglab::app::state::Message;
+use phonglab::app::{AppState, app_ui};
+
+fn harness() -> Harness<'static, AppState> {
+    let mut h = Harness::builder()
+        .with_size([1500.0, 1000.0])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(2);
+    h
+}
+
+/// Brings the field named `label` into view and clicks it, as a student does.
+fn click_field(h: &mut Harness<'static, AppState>, label: &str) {
+    h.get_by_role_and_label(Role::SpinButton, label).scroll_to_me();
+    // Scrolling is animated: wait for it to settle before clicking.
+    h.run_steps(30);
+    h.get_by_role_and_label(Role::SpinButton, label).click();
+    h.run_steps(1);
+}
+
+/// Types `text` one key at a time into the field named `label`, then presses `leave`.
+fn type_keys(h: &mut Harness<'static, AppState>, label: &str, text: &str, leave: egui::Key) {
+    click_field(h, label);
+    for c in text.chars() {
+        h.get_by_role_and_label(Role::SpinButton, label).type_text(&c.to_string());
+        h.run_steps(1);
+    }
+    h.key_press(leave);
+    h.run_steps(2);
+}
+
+fn field_text(h: &Harness<'static, AppState>, label: &str) -> String {
+    h.get_by_role_and_label(Role::SpinButton, label).value().unwrap_or_default()
+}
+
+#[test]
+fn a_field_shows_six_digits_at_rest_and_the_exact_value_while_edited() {
+    let mut h = harness();
+    let mut d = h.state().doc.clone();
+    d.scene.vertex.normal = glam::DVec3::new(0.0, 0.4472135954999579, 0.8944271909999159);
+    assert!(h.state_mut().apply(d));
+    h.run_steps(2);
+    assert_eq!(field_text(&h, "Normal y"), "0.447214");
+    let rest = h.get_by_role_and_label(Role::SpinButton, "Normal y").rect();
+    assert!(rest.width() < 80.0, "the field stays narrow: {rest:?}");
+    click_field(&mut h, "Normal y");
+    h.run_steps(1);
+    assert_eq!(field_text(&h, "Normal y"), "0.4472135954999579", "the exact value while it has focus");
+    // Left without a change, the value is kept exactly (not rounded to what was shown).
+    h.key_press(egui::Key::Tab);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.scene.vertex.normal.y, 0.4472135954999579);
+}
+
+#[test]
+fn typing_commits_only_when_the_field_is_left() {
+    let mut h = harness();
+    click_field(&mut h, "Material shininess");
+    let before = h.state().doc.scene.material.shininess;
+    for (i, c) in "1e400".chars().enumerate() {
+        h.get_by_role_and_label(Role::SpinButton, "Material shininess").type_text(&c.to_string());
+        h.run_steps(1);
+        assert_eq!(h.state().doc.scene.material.shininess, before, "after {} keys nothing is committed", i + 1);
+    }
+    assert_eq!(field_text(&h, "Material shininess"), "1e400", "no key was lost");
+    h.key_press(egui::Key::Enter);
+    h.run_steps(2);
+    // Refused: the text stays, in red, with the reason beside it; the scene is unchanged.
+    assert_eq!(h.state().doc.scene.material.shininess, before);
+    assert_eq!(field_text(&h, "Material shininess"), "1e400");
+    h.get_by_label_contains("1e400 is beyond single precision's range (±3.4e38) (Esc: back to 25.6)");
+    // Corrected: the red goes and the value is taken.
+    type_keys(&mut h, "Material shininess", "64", egui::Key::Tab);
+    assert_eq!(h.state().doc.scene.material.shininess, 64.0);
+    assert!(h.query_by_label_contains("beyond single precision").is_none());
+}
+
+#[test]
+fn every_refusal_is_said_and_nothing_is_truncated() {
+    let mut h = harness();
+    let before = h.state().doc.clone();
+    for (typed, reason) in [
+        ("abc", "\"abc\" is not a number"),
+        ("NaN", "NaN is not a finite number"),
+        ("1e-400", "1e-400 is too small for single precision: it would be 0"),
+        ("-5", "material.shininess = -5 is out of range: allowed [0, 128]"),
+        ("51,002.5", "2 numbers: type one"),
+    ] {
+        type_keys(&mut h, "Material shininess", typed, egui::Key::Enter);
+        assert_eq!(h.state().doc, before, "{typed} changes nothing");
+        assert_eq!(field_text(&h, "Material shininess"), typed, "{typed} stays in the field");
+        assert!(h.get_all_by_label_contains(reason).count() >= 1, "{typed}: {reason}");
+        h.get_by_label_contains("(Esc: back to 25.6)");
+        // Esc puts the value back.
+        click_field(&mut h, "Material shininess");
+        h.key_press(egui::Key::Escape);
+        h.run_steps(2);
+        assert_eq!(field_text(&h, "Material shininess"), "25.6", "after {typed} and Esc");
+    }
+}
+
+#[test]
+fn a_decimal_comma_and_a_whole_vector_are_read() {
+    let mut h = harness();
+    type_keys(&mut h, "Material shininess", "12,5", egui::Key::Enter);
+    assert_eq!(h.state().doc.scene.material.shininess, 12.5);
+    type_keys(&mut h, "Linear attenuation", "1,5e-3", egui::Key::Tab);
+    assert_eq!(h.state().doc.scene.lights[0].attenuation[1], 0.0015);
+    // A whole colour typed into its first field, the Portuguese way and the code's way.
+    type_keys(&mut h, "Material ambient r", "0,5; 0,3; 0,1", egui::Key::Enter);
+    assert_eq!(h.state().doc.scene.material.ambient.truncate(), glam::DVec3::new(0.5, 0.3, 0.1));
+    type_keys(&mut h, "Material ambient g", "0.25, 0.2, 0.15", egui::Key::Enter);
+    assert_eq!(h.state().doc.scene.material.ambient.truncate(), glam::DVec3::new(0.25, 0.2, 0.15));
+    // Two numbers for a row of three: refused, saying what to type.
+    type_keys(&mut h, "Material ambient b", "0,5; 0,3", egui::Key::Enter);
+    h.get_by_label_contains("2 numbers: type one, or all 3 of the row");
+    assert_eq!(h.state().doc.scene.material.ambient.z, 0.15);
+    // A whole number field refuses a fraction.
+    h.get_by_label("View options").click();
+    h.run_steps(3);
+    type_keys(&mut h, "Teapot grid", "4,5", egui::Key::Enter);
+    h.get_by_label_contains("4,5 is not a whole number");
+}
+
+#[test]
+fn ctrl_z_undoes_and_the_buttons_say_what() {
+    let mut h = harness();
+    type_keys(&mut h, "Material shininess", "100", egui::Key::Enter);
+    h.key_press(egui::Key::L); // the local viewer on
+    h.run_steps(2);
+    assert!(h.state().doc.scene.light_model.local_viewer);
+    assert_eq!(h.state().history.undo_label(), Some("light model local viewer off ➡ on"));
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::Z);
+    h.run_steps(2);
+    assert!(!h.state().doc.scene.light_model.local_viewer);
+    assert_eq!(h.state().history.undo_label(), Some("shininess 25.6 ➡ 100"));
+    // The Undo button says what it undoes.
+    h.get_by_label("⟲ Undo").hover();
+    // Tooltips wait a moment before they show.
+    h.run_steps(60);
+    h.get_by_label("Undo shininess 25.6 ➡ 100 (Ctrl+Z)");
+    h.get_by_label("⟲ Undo").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.scene.material.shininess, 25.6);
+    assert_eq!(h.state().message, Some(Message::Info("Undid shininess 25.6 ➡ 100.".into())));
+    // Redo: Ctrl+Shift+Z and Ctrl+Y.
+    h.key_press_modifiers(egui::Modifiers::CTRL | egui::Modifiers::SHIFT, egui::Key::Z);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.scene.material.shininess, 100.0);
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::Y);
+    h.run_steps(2);
+    assert!(h.state().doc.scene.light_model.local_viewer);
+}
+
+#[test]
+fn a_hundred_typed_changes_are_undone_one_by_one() {
+    let mut h = harness();
+    for i in 0..100 {
+        let mut d = h.state().doc.clone();
+        d.scene.material.shininess = f64::from(i);
+        h.state_mut().now += 2.0;
+        assert!(h.state_mut().apply(d));
+    }
+    for i in (0..100).rev() {
+        assert_eq!(h.state().doc.scene.material.shininess, f64::from(i));
+        h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::Z);
+        h.run_steps(1);
+    }
+    assert_eq!(h.state().doc.scene.material.shininess, 25.6);
+}
+
+#[test]
+fn ctrl_s_saves_from_the_path_field_and_letters_there_are_text() {
+    let mut h = harness();
+    let dir = std::env::temp_dir().join(format!("phonglab-typing-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("from-the-field.toml");
+    let _ = std::fs::remove_file(&path);
+    let field = h.get_by_role_and_label(Role::TextInput, "Scene file:");
+    field.click();
+    h.run_steps(1);
+    let typed = path.display().to_string();
+    let (start, last) = typed.split_at(typed.len() - 1);
+    h.get_by_role_and_label(Role::TextInput, "Scene file:").set_text_value_accesskit(start);
+    h.run_steps(1);
+    // The last letter typed in the field is text, not a shortcut (L is the local viewer).
+    assert_eq!(last, "l");
+    h.get_by_role_and_label(Role::TextInput, "Scene file:").type_text(last);
+    h.run_steps(1);
+    assert!(!h.state().doc.scene.light_model.local_viewer);
+    assert_eq!(h.state().ui.file_path, typed);
+    assert!(h.get_by_role_and_label(Role::TextInput, "Scene file:").is_focused());
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::S);
+    h.run_steps(2);
+    assert!(path.exists(), "Ctrl+S saved with the field focused: {:?}", h.state().message);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn in_the_quiz_digits_and_letters_fire_no_shortcut() {
+    let mut h = harness();
+    h.get_by_label("Quiz").click();
+    h.run_steps(3);
+    let shading = h.state().doc.view.shading;
+    let viewer = h.state().doc.scene.light_model.local_viewer;
+    // Digits typed after a click that missed every field.
+    for k in [egui::Key::Num2, egui::Key::Num3, egui::Key::L, egui::Key::M] {
+        h.key_press(k);
+        h.run_steps(1);
+    }
+    assert_eq!(h.state().doc.view.shading, shading);
+    assert_eq!(h.state().doc.scene.light_model.local_viewer, viewer);
+    // Ctrl shortcuts and F1 still work.
+    h.key_press(egui::Key::F1);
+    h.run_steps(1);
+    assert!(h.state().ui.show_help);
+}
