@@ -61,8 +61,9 @@ def main():
                 "d": float(ns["d"]), "at": float(ns["at"]), "I": vec(ns["I"]),
             },
         })
+    # The cells' own text too: the app's names are tested against it.
     json.dump({"source": "worksheet-vertex-colour.txt, cells In [1]..In [10] run as printed",
-               "numpy": np.__version__, "runs": runs}, sys.stdout, indent=1)
+               "numpy": np.__version__, "cells": code, "runs": runs}, sys.stdout, indent=1)
     print()
 
 

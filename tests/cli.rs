@@ -206,7 +206,7 @@ fn explain_worksheet_5_prints_the_worksheets_values() {
         assert!(got.iter().zip(want).all(|(g, w)| (g - w).abs() <= 1e-7), "{name}: {got:?} vs {want:?}");
     }
     // In the worksheet's order.
-    let order: Vec<usize> = ["vertexNormal =", "vlv =", "vov =", "Iamb =", "Idif =", "hv =", "Ispec =", "at =", "I ="]
+    let order: Vec<usize> = ["vertexNormal =", "vlv =", "vov =", "Iamb =", "Idif =", "H =", "Ispec =", "at =", "I ="]
         .iter()
         .map(|k| text.find(&format!("    {k}")).unwrap_or_else(|| panic!("{k}")))
         .collect();
@@ -222,7 +222,7 @@ fn explain_other_modelviews_markdown_and_bad_arguments() {
     let md = stdout(&phonglab(&["explain", "--markdown"]));
     assert!(md.contains("| # | step | formula | value | notes |"), "{md}");
     let demo = stdout(&phonglab(&["explain", "--preset", "phong-demo"]));
-    assert!(demo.contains("R = 2 max(N . L, 0) N - L"), "{demo}");
+    assert!(demo.contains("R = 2 max(vertexNormal · vlv, 0) vertexNormal − vlv"), "{demo}");
     let o = phonglab(&["explain", "--worksheet", "9"]);
     assert_eq!(o.status.code(), Some(2));
     let o = phonglab(&["explain", "--preset", "nope"]);

@@ -255,7 +255,7 @@ fn presets_load_the_phong_demo() {
     h.get_by_label("Phong demo").click();
     h.run_steps(2);
     assert_eq!(h.state().doc.scene.rules, phonglab_core::Rules::PHONG_DEMO);
-    h.get_by_label_contains("R = 2 max(N . L, 0) N - L");
+    h.get_by_label_contains("R = 2 max(vertexNormal · vlv, 0) vertexNormal − vlv");
     // The program as it draws: spinning, in clip space, the light turning with the object.
     let preset = phonglab_core::library::phong_demo_document();
     assert_eq!(h.state().doc.scene, preset.scene);

@@ -221,3 +221,100 @@ fn in_the_quiz_digits_and_letters_fire_no_shortcut() {
     h.run_steps(1);
     assert!(h.state().ui.show_help);
 }
+
+/// Types `text` into the quiz's field for step `name` and presses Enter.
+fn answer(h: &mut Harness<'static, AppState>, name: &str, text: &str) {
+    let label = format!("{name} =");
+    h.get_by_role_and_label(Role::TextInput, &label).scroll_to_me();
+    h.run_steps(30);
+    h.get_by_role_and_label(Role::TextInput, &label).click();
+    h.run_steps(1);
+    h.get_by_role_and_label(Role::TextInput, &label).type_text(text);
+    h.run_steps(1);
+    h.key_press(egui::Key::Enter);
+    h.run_steps(2);
+}
+
+fn quiz_harness() -> Harness<'static, AppState> {
+    let mut h = Harness::builder()
+        .with_size([1440.0, 1400.0])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(2);
+    h
+}
+
+#[test]
+fn the_quiz_hides_the_answers_unless_the_teacher_shows_them() {
+    let mut h = quiz_harness();
+    let labels = |h: &Harness<'static, AppState>| h.state().ui.geometry.plot.as_ref().unwrap().labels.len();
+    let colour = "[0.059587089  0.035759287  0.015155245  1]";
+    assert_eq!(h.get_all_by_label(colour).count(), 2);
+    let with_angles = labels(&h);
+    h.get_by_label("Quiz").click();
+    h.run_steps(3);
+    assert!(h.query_by_label(colour).is_none(), "the vertex colour (I) is hidden");
+    h.get_by_label_contains("Hidden while the quiz is open");
+    assert_eq!(labels(&h), with_angles - 2, "the plot's θ and β are hidden");
+    assert!(h.query_by_label_contains("vlv = [0.79220526").is_none(), "the calculation's values are hidden");
+    h.get_by_label("Show the answers (teacher)").click();
+    h.run_steps(3);
+    assert_eq!(h.get_all_by_label(colour).count(), 2);
+    assert_eq!(labels(&h), with_angles);
+    h.get_by_label("key: vlv = [0.79220526 0.55887606 -0.2450885 0]");
+}
+
+#[test]
+fn the_quiz_marks_say_which_check_they_passed_and_no_field_moves() {
+    let mut h = quiz_harness();
+    h.get_by_label("Quiz").click();
+    h.run_steps(3);
+    // The tolerance, in readable type.
+    h.get_by_label_contains("Right: within 0.01 % of the value (or 1e-6 near 0)");
+    // Steps that do not apply to one light with no spotlight, under the worksheet's rules.
+    for name in ["spot =", "Ilight =", "glColor ="] {
+        assert!(h.query_by_label(name).is_none(), "{name} is asked");
+    }
+    let field = |h: &Harness<'static, AppState>, name: &str| {
+        h.get_by_role_and_label(Role::TextInput, &format!("{name} =")).rect()
+    };
+    let before: Vec<egui::Rect> = ["vlv", "cosTheta", "Idif", "cosBeta", "I"].iter().map(|n| field(&h, n)).collect();
+
+    answer(&mut h, "vertexNormal", "[0 0,6 0,8 0]");
+    h.get_by_label("✔ right");
+    // A wrong L (twice the unit vector): the formula and the value it gives.
+    answer(&mut h, "vlv", "1.5844105 1.1177521 -0.490177 0");
+    h.get_by_label_contains("✖ wrong: vlv = normalize(lightPos − vertexPos) = [0.79220526 0.55887606 -0.2450885 0]");
+    // cos(theta) from that L: right, given the student's vlv, and the key's is said.
+    // N · L = 0.6 · 1.1177521 + 0.8 · -0.490177 = 0.27851
+    answer(&mut h, "cosTheta", "0,2785096");
+    h.get_by_label("✔ right, given your vlv (the key's vlv gives cosTheta = 0.13925)");
+    // The worksheet's own Idif is right (a value equal to the key is never wrong).
+    answer(&mut h, "Idif", "[0.09942795 0.05965677 0.0252664 0.]");
+    assert_eq!(h.get_all_by_label("✔ right").count(), 2);
+    // Rounded too far: close, with the digits it needs.
+    answer(&mut h, "cosBeta", "0.764");
+    h.get_by_label("≈ close: 0.05 % from the key; give 4 significant digits");
+    h.get_by_label_contains("Score: 3 of 14 (5 answered)");
+    // No field moved while the marks appeared (relative to the list, which the student
+    // scrolled to reach each field).
+    let after: Vec<egui::Rect> = ["vlv", "cosTheta", "Idif", "cosBeta", "I"].iter().map(|n| field(&h, n)).collect();
+    let offsets = |r: &[egui::Rect]| r.iter().map(|x| x.min - r[0].min).collect::<Vec<_>>();
+    assert_eq!(offsets(&before), offsets(&after));
+    // Every Reveal button is one size, and wide enough for its word.
+    let reveals: Vec<egui::Rect> = h.get_all_by_label("Reveal").map(|n| n.rect()).collect();
+    assert_eq!(reveals.len(), 14);
+    assert!(reveals.iter().all(|r| r.size() == reveals[0].size() && r.width() >= 60.0), "{reveals:?}");
+    // The four buttons at the top are one size too.
+    let tops: Vec<egui::Vec2> = ["Quiz this scene", "New exercise", "Reveal all", "Clear answers"]
+        .iter()
+        .map(|l| h.get_by_label(l).rect().size())
+        .collect();
+    assert!(tops.iter().all(|s| *s == tops[0]), "{tops:?}");
+    // Not a number: said so, not counted.
+    answer(&mut h, "d", "six hundred");
+    h.get_by_label_contains("does not read as numbers");
+    h.get_by_label_contains("(5 answered)");
+    h.get_by_label("Clear answers").click();
+    h.run_steps(2);
+    h.get_by_label_contains("(0 answered)");
+}

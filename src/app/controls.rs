@@ -311,21 +311,37 @@ fn named_matrix_ui(ui: &mut Ui, m: &mut DMat4, name: &str) {
     }
 }
 
-/// One line on the worksheet's modelview `mview{k}`, as its cell `In [4]` prints it.
-pub fn worksheet_modelview_note(k: u8) -> &'static str {
-    match k {
-        1 => "mview1: the openFrameworks camera, translate z by -665.108.",
-        2 => {
-            "mview2: a rotation about x, as printed: its rows are not quite orthonormal (-0.85749), so the worksheet's M n differs from OpenGL's (M^-1)^T n in the 6th digit."
-        }
-        3 | 4 => "mview3/4: rotations built from 15/17 and 8/17, as the worksheet prints them.",
-        _ => "mview5: a 3-4-5 rotation about x and translate z by -960; the worksheet prints its values for this one.",
-    }
+/// A note on the worksheet's modelview `mview{k}`: what it is, and how far it is from a
+/// rotation, measured ([`phonglab_core::transform::RotationCheck`]) with the worksheet's
+/// normal (0, 0, 1): mview3 and mview4 are not rotations, and their M n and OpenGL's
+/// (M^-1)^T n point 13.5° and 48° apart.
+pub fn worksheet_modelview_note(k: u8) -> String {
+    let what = match k {
+        1 => "the openFrameworks camera, translate z by −665.108",
+        2 => "a rotation about x, as printed (one entry with a digit less, −0.85749)",
+        3 | 4 => "built from 15/17 and 8/17, as the worksheet prints it",
+        _ => "a 3-4-5 rotation about x and translate z by −960",
+    };
+    let Some(m) = phonglab_core::transform::worksheet_modelview(usize::from(k)) else { return String::new() };
+    let check = phonglab_core::transform::RotationCheck::of(&m, DVec3::Z);
+    format!("mview{k}: {what}. {}.", phonglab_core::explain::modelview_note(&check))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_notes_on_mview3_and_mview4_say_they_are_not_rotations() {
+        let n3 = worksheet_modelview_note(3);
+        assert!(n3.contains("M is not a rotation: rows 1 and 3 are 72.3° apart, rows 2 and 3 are 55.2° apart"), "{n3}");
+        assert!(n3.contains("points 13.5° away from OpenGL's (M^-1)^T n"), "{n3}");
+        let n4 = worksheet_modelview_note(4);
+        assert!(n4.contains("rows 1 and 3 are 120° apart, rows 2 and 3 are 41.5° apart"), "{n4}");
+        assert!(n4.contains("points 48.5° away"), "{n4}");
+        assert!(worksheet_modelview_note(5).contains("M is a rotation"));
+        assert!(worksheet_modelview_note(2).contains("M is a rotation to the 6 digits"));
+    }
 
     #[test]
     fn slider_ranges_follow_the_scene() {

@@ -438,7 +438,8 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     let (rect, _) = ui.allocate_exact_size(strip, egui::Sense::hover());
     ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
         ui.set_clip_rect(rect.intersect(ui.clip_rect()));
-        result::result_ui(ui, eval, state.doc.scene.light_model.separate_specular, &state.message);
+        let hidden = state.quiz.hides_answers();
+        result::result_ui(ui, eval, state.doc.scene.light_model.separate_specular, &state.message, hidden);
     });
     ui.separator();
     shaded::departures_ui(ui, state);
@@ -448,7 +449,7 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     let chrome = chrome(ui, state);
     let split = centre_layout::split(area, 1 + pair as usize, chrome, state.ui.layout.dividers);
     divider_ui(ui, state, area, &split);
-    let show_angles = !state.quiz.open;
+    let show_angles = !state.quiz.hides_answers();
     let mut geometry = state::Geometry { pictures: Vec::new(), plot: None, arrangement: Some(split.arrangement) };
     ui.scope_builder(egui::UiBuilder::new().max_rect(split.pictures).id_salt("shaded"), |ui| {
         let mut cache = std::mem::take(&mut state.shaded);

@@ -1,12 +1,15 @@
 //! Quiz mode: the worked calculation with every value hidden behind a field. The student
-//! types each step's value; Enter checks it (✔, or ✖ with the formula expected and the
-//! inputs it took, the student's own earlier values where the formula takes them). A
-//! score, "Reveal" per step and "Reveal all" for the teacher; the quiz and its answers are
-//! kept across restarts.
+//! types each step's value; leaving the field checks it, and the mark says which check it
+//! passed ([`phonglab_core::quiz::Mark`]): right; right given the student's own earlier
+//! answers; close, with the digits it needs; or wrong, with the formula and the value it
+//! gives. Each step's mark has its own reserved space, so no field moves when one appears.
+//! While the quiz is open the vertex colour and the plot's angles (the answers) are hidden,
+//! unless the teacher shows them. A score, "Reveal" per step and "Reveal all"; the quiz and
+//! its answers are kept across restarts.
 
 use egui::{RichText, Ui};
-use phonglab_core::explain::{Explanation, Side, explain, fmt_value};
-use phonglab_core::quiz::{Verdict, check, parse_answer, score};
+use phonglab_core::explain::{Explanation, Side, explain, fmt_sig, fmt_value};
+use phonglab_core::quiz::{Mark, TOLERANCE, Verdict, asked, check, parse_answer, score};
 use phonglab_core::{Document, Engine};
 use serde::{Deserialize, Serialize};
 
@@ -29,6 +32,8 @@ pub struct QuizState {
     pub level: u8,
     /// The seed of the last generated exercise.
     pub seed: u64,
+    /// The teacher shows the answers (the vertex colour, the plot's angles, every key).
+    pub show_answers: bool,
 }
 
 /// What is kept across restarts.
@@ -86,6 +91,7 @@ impl QuizState {
             revealed: s.revealed,
             level: 2,
             seed: 0,
+            show_answers: false,
         })
     }
 
@@ -107,6 +113,11 @@ impl QuizState {
         check(&doc.scene, key, &self.parsed(), k)
     }
 
+    /// Are the answers (the vertex colour, the plot's angles) hidden now?
+    pub fn hides_answers(&self) -> bool {
+        self.open && !self.show_answers
+    }
+
     fn fit(&mut self, n: usize) {
         self.answers.resize(n, String::new());
         self.checked.resize(n, false);
@@ -123,95 +134,186 @@ fn inputs_text(v: &Verdict) -> String {
     if list.is_empty() { "the givens".into() } else { list.join(", ") }
 }
 
+/// The formula without OpenGL's names (which follow it in parentheses).
+fn worksheet_formula(formula: &str) -> &str {
+    formula.split("   (").next().unwrap_or(formula)
+}
+
+/// What a mark says, and whether it counts as right.
+pub fn mark_text(v: &Verdict, name: &str) -> (String, bool) {
+    match &v.mark {
+        Mark::Right => ("✔ right".into(), true),
+        Mark::RightGivenYours { yours, key } => {
+            let yours = yours.join(", ");
+            (format!("✔ right, given your {yours} (the key's {yours} gives {name} = {})", fmt_value(key, 5)), true)
+        }
+        Mark::Close { percent, digits } => {
+            let from = if close_to_key(v) { "the key" } else { "what your earlier answers give" };
+            (format!("≈ close: {} % from {from}; give {digits} significant digits", fmt_sig(*percent, 1)), false)
+        }
+        Mark::Wrong => (
+            format!(
+                "✖ wrong: {} = {}, from {}",
+                worksheet_formula(&v.formula),
+                fmt_value(&v.expected, 8),
+                inputs_text(v)
+            ),
+            false,
+        ),
+    }
+}
+
+fn close_to_key(v: &Verdict) -> bool {
+    phonglab_core::quiz::close(&v.expected, &v.key)
+}
+
+/// The quiz's buttons, all one size (the widest's), two to a row.
+fn buttons_ui(ui: &mut Ui, labels: &[(&str, &str)]) -> Option<usize> {
+    let font = egui::TextStyle::Button.resolve(ui.style());
+    let pad = 2.0 * ui.spacing().button_padding.x;
+    let widest = labels
+        .iter()
+        .map(|(l, _)| {
+            ui.ctx().fonts_mut(|f| f.layout_no_wrap(l.to_string(), font.clone(), egui::Color32::WHITE).size().x)
+        })
+        .fold(0.0, f32::max)
+        + pad;
+    let size = egui::vec2(widest, ui.spacing().interact_size.y);
+    let mut clicked = None;
+    ui.horizontal_wrapped(|ui| {
+        for (k, (label, hover)) in labels.iter().enumerate() {
+            if ui.add_sized(size, egui::Button::new(*label)).on_hover_text(*hover).clicked() {
+                clicked = Some(k);
+            }
+        }
+    });
+    clicked
+}
+
 /// The quiz panel; `current` is the scene the app shows (a quiz can start on it). Returns a
 /// generated exercise for the app to show.
 pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<Document> {
     let mut shown = None;
+    ui.heading("Quiz");
+    // Level 2 (positional with attenuation) until one is chosen.
+    quiz.level = if quiz.level == 0 { 2 } else { quiz.level.clamp(1, 4) };
     ui.horizontal_wrapped(|ui| {
-        ui.heading("Quiz");
-        if ui.button("Quiz this scene").on_hover_text("Start over on the scene shown, every value hidden").clicked() {
-            quiz.start(current.clone());
-        }
-        // Level 2 (positional with attenuation) until one is chosen.
-        quiz.level = if quiz.level == 0 { 2 } else { quiz.level.clamp(1, 4) };
         let mut level = u32::from(quiz.level);
         super::widgets::whole_number_ui(ui, "Level", &mut level, 1..=4);
         quiz.level = level as u8;
-        if ui
-            .button("New exercise")
-            .on_hover_text("A new scene of this level, screened as phonglab exercise screens")
-            .clicked()
-        {
+        ui.small("1 directional, 2 positional with attenuation, 3 spotlights, 4 two-sided with several lights");
+    });
+    let buttons = [
+        ("Quiz this scene", "Start over on the scene shown, every value hidden"),
+        ("New exercise", "A new scene of this level, screened as phonglab exercise screens"),
+        ("Reveal all", "Show the key's value under every step"),
+        ("Clear answers", "Start this quiz again with no answers"),
+    ];
+    match buttons_ui(ui, &buttons) {
+        Some(0) => quiz.start(current.clone()),
+        Some(1) => {
             let seed = quiz.seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407) >> 16;
             shown = quiz.new_exercise(seed).ok();
         }
-    });
+        Some(2) => quiz.revealed.iter_mut().for_each(|r| *r = true),
+        Some(3) => {
+            let doc = quiz.doc.clone();
+            quiz.start(doc.unwrap_or_default());
+        }
+        _ => {}
+    }
+    ui.checkbox(&mut quiz.show_answers, "Show the answers (teacher)")
+        .on_hover_text("The vertex colour, the plot's angles and every step's key");
     let Some(key) = quiz.key() else {
         ui.label("Open an exercise (phonglab exercise writes them) or any scene, then press \"Quiz this scene\", or press New exercise.");
         return shown;
     };
-    let scene = &quiz.doc.as_ref().map(|d| d.name.clone()).unwrap_or_default();
-    ui.small(format!(
-        "{scene}: type each step's value and press Enter. 1e-4 relative or 1e-6 absolute counts as right."
+    let Some(doc) = quiz.doc.clone() else { return shown };
+    ui.label(format!(
+        "{}: type each step's value and press Enter. Right: within {} % of the value (or {} near 0). A point or a comma; a vector as 0,5; 0,3; 0,1.",
+        doc.name,
+        fmt_sig(100.0 * TOLERANCE.0, 2),
+        fmt_sig(TOLERANCE.1, 2)
     ));
-    let (right, answered, all) = quiz.doc.as_ref().map_or((0, 0, 0), |d| score(&d.scene, &key, &quiz.parsed()));
-    ui.horizontal_wrapped(|ui| {
-        ui.label(RichText::new(format!("Score: {right} of {all} ({answered} answered)")).strong());
-        if ui.button("Reveal all").clicked() {
-            quiz.revealed.iter_mut().for_each(|r| *r = true);
-        }
-        if ui.button("Clear answers").clicked() {
-            let doc = quiz.doc.clone();
-            quiz.start(doc.unwrap_or_default());
-        }
-    });
+    let (right, answered, all) = score(&doc.scene, &key, &quiz.parsed());
+    ui.label(RichText::new(format!("Score: {right} of {all} ({answered} answered)")).strong());
     ui.separator();
     // One field per step; after "Clear answers" just above, too.
     quiz.fit(key.steps.len());
-    let ok = palette::ink(ui, egui::Color32::from_rgb(80, 200, 120));
-    let bad = palette::ink(ui, palette::ERROR);
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
-        for (k, st) in key.steps.iter().enumerate() {
-            let Some(value) = &st.value else { continue };
-            ui.label(RichText::new(format!("{:>2}. {}", k + 1, st.title)).strong());
-            ui.horizontal(|ui| {
-                let label = ui.monospace(format!("{} =", st.name));
-                let field = ui
-                    .add(egui::TextEdit::singleline(&mut quiz.answers[k]).desired_width(240.0).hint_text("your value"))
-                    .labelled_by(label.id);
-                if field.changed() {
-                    quiz.checked[k] = false;
-                }
-                if field.lost_focus() && !quiz.answers[k].trim().is_empty() {
-                    quiz.checked[k] = true;
-                }
-                if ui.small_button("Reveal").on_hover_text("Show the key's value for this step").clicked() {
-                    quiz.revealed[k] = true;
-                }
-            });
-            if quiz.checked[k] {
-                match parse_answer(&quiz.answers[k]) {
-                    Err(e) => {
-                        ui.colored_label(bad, format!("does not read as numbers: {e}"));
-                    }
-                    Ok(_) => match quiz.verdict(&key, k) {
-                        Some(v) if v.right => {
-                            ui.colored_label(ok, "✔ right");
-                        }
-                        Some(v) => {
-                            ui.colored_label(bad, format!("✖ expected {} from {}", v.formula, inputs_text(&v)));
-                        }
-                        None => {}
-                    },
-                }
-            }
-            if quiz.revealed[k] {
-                ui.label(RichText::new(format!("key: {} = {}", st.name, fmt_value(value, 8))).monospace().weak());
-            }
-            ui.add_space(4.0);
+        for k in (0..key.steps.len()).filter(|k| asked(&doc.scene, &key, *k)) {
+            step_ui(ui, quiz, &key, k);
         }
     });
     shown
+}
+
+/// One step: its title, the name and the field, Reveal, and the space for its mark.
+fn step_ui(ui: &mut Ui, quiz: &mut QuizState, key: &Explanation, k: usize) {
+    let st = &key.steps[k];
+    let Some(value) = &st.value else { return };
+    // The title and the name on one row, the field (wide enough for a 4-vector) and Reveal
+    // on the next.
+    let name = ui
+        .horizontal_wrapped(|ui| {
+            ui.label(RichText::new(&st.title).strong());
+            let text = RichText::new(format!("{} =", st.name)).monospace();
+            ui.add(egui::Label::new(text).wrap_mode(egui::TextWrapMode::Extend))
+        })
+        .inner;
+    ui.horizontal(|ui| {
+        let reveal_w = 72.0;
+        let w = (ui.available_width() - reveal_w - ui.spacing().item_spacing.x).max(80.0);
+        let field = ui
+            .add(egui::TextEdit::singleline(&mut quiz.answers[k]).desired_width(w).hint_text("your value"))
+            .labelled_by(name.id);
+        if field.changed() {
+            quiz.checked[k] = false;
+        }
+        if field.lost_focus() && !quiz.answers[k].trim().is_empty() {
+            quiz.checked[k] = true;
+        }
+        let size = egui::vec2(reveal_w, ui.spacing().interact_size.y);
+        if ui.add_sized(size, egui::Button::new("Reveal")).on_hover_text("Show the key's value for this step").clicked()
+        {
+            quiz.revealed[k] = true;
+        }
+    });
+    // The mark and the key take this space whether they are shown or not.
+    let body = ui.text_style_height(&egui::TextStyle::Body);
+    let mono = ui.text_style_height(&egui::TextStyle::Monospace);
+    let h = 2.0 * body + mono + 2.0 * ui.spacing().item_spacing.y;
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(ui.available_width(), h), egui::Sense::hover());
+    // A child that draws in the reserved rect without taking more space from the panel.
+    let mut child = ui.new_child(egui::UiBuilder::new().max_rect(rect).id_salt(("mark", k)));
+    child.set_clip_rect(rect.intersect(ui.clip_rect()));
+    let ui = &mut child;
+    {
+        let ok = palette::ink(ui, egui::Color32::from_rgb(80, 200, 120));
+        let bad = palette::ink(ui, palette::ERROR);
+        if quiz.checked[k] {
+            let (text, colour) = match parse_answer(&quiz.answers[k]) {
+                Err(e) => (format!("does not read as numbers: {e}"), bad),
+                Ok(_) => match quiz.verdict(key, k) {
+                    Some(v) => {
+                        let (t, right) = mark_text(&v, &st.name);
+                        (t, if right { ok } else { bad })
+                    }
+                    None => (String::new(), ok),
+                },
+            };
+            let font = egui::TextStyle::Body.resolve(ui.style());
+            let mut job = egui::text::LayoutJob::simple(text.clone(), font, colour, rect.width());
+            job.wrap.max_rows = 2;
+            job.wrap.overflow_character = Some('…');
+            ui.add(egui::Label::new(job)).on_hover_text(text);
+        } else {
+            ui.add_space(2.0 * body + ui.spacing().item_spacing.y);
+        }
+        if quiz.revealed[k] || quiz.show_answers {
+            ui.label(RichText::new(format!("key: {} = {}", st.name, fmt_value(value, 8))).monospace().weak());
+        }
+    }
 }
 
 #[cfg(test)]

@@ -64,8 +64,16 @@ fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool) {
     }
 }
 
-/// The swatch(es) and numbers, and the last message.
-pub fn result_ui(ui: &mut Ui, eval: &Evaluated, separate_specular: bool, message: &Option<Message>) {
+/// The swatch(es) and numbers, and the last message; while a quiz hides the answers
+/// (`hidden`), a line saying so in their place.
+pub fn result_ui(ui: &mut Ui, eval: &Evaluated, separate_specular: bool, message: &Option<Message>, hidden: bool) {
+    if hidden {
+        ui.label(RichText::new("Vertex colour").strong());
+        ui.label("Hidden while the quiz is open: it is the quiz's last answer, I.");
+        ui.small("The teacher can show it with \"Show the answers\" in the quiz.");
+        message_ui(ui, message);
+        return;
+    }
     ui.horizontal_wrapped(|ui| {
         side_ui(ui, if eval.back.is_some() { "Front face" } else { "Vertex colour" }, &eval.front, separate_specular);
         if let Some(b) = &eval.back {

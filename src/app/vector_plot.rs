@@ -77,12 +77,13 @@ fn arrows(eval: &Evaluated, specular: SpecularModel, ink: &dyn Fn(Color32) -> Co
     out
 }
 
-/// The legend's entries: (symbol, meaning, colour, dashed).
+/// The legend's entries: (symbol, the worksheet's name for it, colour, dashed). The
+/// symbols are OpenGL's (N, L, V, H); the names the worksheet's code uses.
 fn legend(eval: &Evaluated, specular: SpecularModel) -> Vec<(&'static str, &'static str, Color32, bool)> {
     let mut v = vec![
-        ("N", "normal", palette::N, false),
-        ("L", "light", palette::L, false),
-        ("V", "viewer", palette::V, false),
+        ("N", "vertexNormal", palette::N, false),
+        ("L", "vlv", palette::L, false),
+        ("V", "vov", palette::V, false),
         match specular {
             SpecularModel::BlinnPhong => ("H", "halfway", palette::H, true),
             SpecularModel::Phong => ("R", "reflection", palette::H, true),

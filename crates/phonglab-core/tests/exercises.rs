@@ -133,3 +133,31 @@ fn every_keys_own_answers_check_right_with_carried_forward_inputs() {
         assert_eq!((right, answered), (all, all), "seed {seed}");
     }
 }
+
+/// The numbers of a sheet's line `- NAME = [a b c d]` (the first such vector on the line).
+fn sheet_vector(sheet: &str, name: &str) -> Vec<f64> {
+    let at = sheet.find(&format!("{name} = [")).unwrap_or_else(|| panic!("{name} in {sheet}"));
+    let rest = &sheet[at + name.len() + 4..];
+    let inner = &rest[..rest.find(']').unwrap()];
+    inner.split_whitespace().map(|x| x.parse().unwrap()).collect()
+}
+
+#[test]
+fn a_sheet_writes_colours_as_the_worksheet_does_so_the_products_match_the_key() {
+    for seed in 0..40u64 {
+        let level = Level::from_number((seed % 4) as u8 + 1).unwrap();
+        let ex = &generate(seed, 1, &Spec::level(level, Rules::WORKSHEET)).unwrap()[0];
+        let sheet = phonglab_core::exercise::sheet_markdown(ex);
+        let (lamb, mamb) = (sheet_vector(&sheet, "Lamb"), sheet_vector(&sheet, "matAmb"));
+        assert_eq!((lamb[3], mamb[3]), (0.0, 0.0), "seed {seed}: colours are [r g b 0]");
+        // The worksheet's element-wise product of the sheet's vectors is the key's Iamb.
+        let product: Vec<f64> = lamb.iter().zip(&mamb).map(|(a, b)| a * b).collect();
+        let iamb = ex.key.steps.iter().find(|s| s.name.starts_with("Iamb")).unwrap().value.clone().unwrap();
+        for (p, k) in product.iter().zip(&iamb) {
+            assert!((p - k).abs() < 1e-7, "seed {seed}: {product:?} against the key's {iamb:?}");
+        }
+        // Steps that do not apply are not asked: no spot factor without a spotlight.
+        let spot = ex.doc.scene.lights.iter().any(|l| l.is_spot());
+        assert_eq!(sheet.contains("`spot"), spot, "seed {seed}");
+    }
+}

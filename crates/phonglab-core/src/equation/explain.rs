@@ -157,6 +157,31 @@ pub fn fmt_value(v: &[f64], sig: usize) -> String {
     }
 }
 
+/// What a modelview that is not a rotation does to the worksheet's normal (which it
+/// transforms by M itself, where OpenGL uses (M^-1)^T): the rows' angles and lengths, and
+/// how far apart the two normals point.
+pub fn modelview_note(check: &crate::transform::RotationCheck) -> String {
+    let deg = |a: f64| format!("{}°", fmt_sig(a, 3));
+    let gap = match check.normal_gap {
+        Some(g) if g >= 0.05 => format!(
+            "so M n, the worksheet's normal, points {} away from OpenGL's (M^-1)^T n, and N and every term after it differ from OpenGL's",
+            deg(g)
+        ),
+        Some(g) => format!("M n and OpenGL's (M^-1)^T n point {} apart here", fmt_sig(g, 2) + "°"),
+        None => "M is singular: OpenGL's (M^-1)^T n does not exist".into(),
+    };
+    let lengths = check.row_lengths.map(|l| fmt_sig(l, 5)).join(", ");
+    if check.is_rotation() {
+        return format!("M is a rotation to the 6 digits it is printed with (row lengths {lengths}); {gap}");
+    }
+    let skew: Vec<String> =
+        check.skewed_rows().iter().map(|(i, j, a)| format!("rows {i} and {j} are {} apart", deg(*a))).collect();
+    let rows = if skew.is_empty() { "its rows are 90° apart".into() } else { skew.join(", ") };
+    format!(
+        "M is not a rotation: {rows} (a rotation's rows are 90° apart and of length 1; these have lengths {lengths}); {gap}"
+    )
+}
+
 struct Builder {
     steps: Vec<Step>,
 }
@@ -205,31 +230,33 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
     let n_shown = if back { -n } else { n };
     let by_m = rules.normal_transform() == crate::NormalTransform::Modelview;
     let nformula = match (scene.normal_mode, by_m) {
-        (crate::NormalMode::AsIs, false) => "N = (M^-1)^T n_obj",
-        (crate::NormalMode::Normalize, false) => "N = normalize((M^-1)^T n_obj)   (GL_NORMALIZE)",
-        (crate::NormalMode::Rescale, false) => "N = f (M^-1)^T n_obj, f = 1/|row 3 of M^-1|   (GL_RESCALE_NORMAL)",
-        (crate::NormalMode::AsIs, true) => "N = M n_obj   (the worksheet: M itself, not (M^-1)^T)",
-        (crate::NormalMode::Normalize, true) => "N = normalize(M n_obj)   (the worksheet: M itself, not (M^-1)^T)",
-        (crate::NormalMode::Rescale, true) => "N = f M n_obj, f = 1/|row 3 of M^-1|   (the worksheet's M)",
+        (crate::NormalMode::AsIs, false) => "vertexNormal = (M^-1)^T · vertexNormal   (OpenGL's N)",
+        (crate::NormalMode::Normalize, false) => {
+            "vertexNormal = normalize((M^-1)^T · vertexNormal)   (OpenGL's N, GL_NORMALIZE)"
+        }
+        (crate::NormalMode::Rescale, false) => {
+            "vertexNormal = f · (M^-1)^T · vertexNormal, f = 1/|row 3 of M^-1|   (OpenGL's N, GL_RESCALE_NORMAL)"
+        }
+        (crate::NormalMode::AsIs, true) => {
+            "vertexNormal = mview · vertexNormal   (the worksheet: M itself; OpenGL: (M^-1)^T)"
+        }
+        (crate::NormalMode::Normalize, true) => {
+            "vertexNormal = normalize(mview · vertexNormal)   (the worksheet: M itself; OpenGL: (M^-1)^T)"
+        }
+        (crate::NormalMode::Rescale, true) => {
+            "vertexNormal = f · mview · vertexNormal, f = 1/|row 3 of M^-1|   (the worksheet's M)"
+        }
     };
     let ntitle = if back { "Transformed normal (back side: -N)" } else { "Transformed normal" };
     b.push(StepKind::Normal, None, ntitle, "vertexNormal".into(), nformula, Some(dir4::<S>(n_shown)));
     vertex_limits(&mut b, StepKind::Normal);
     if by_m {
-        // Where the worksheet's M n and OpenGL's (M^-1)^T n part: compare the directions.
+        // Where the worksheet's M n and OpenGL's (M^-1)^T n part: say how far M is from a
+        // rotation, and what that does to N.
         let m = scene.eye_from_object();
-        let gl = crate::transform::NormalMatrix::new(&m).eye_from_object * scene.vertex.normal;
-        let ws = glam::DMat3::from_mat4(m) * scene.vertex.normal;
-        if let (Some(gl), Some(ws)) = (gl.try_normalize(), ws.try_normalize()) {
-            let gap = (gl - ws).abs().max_element();
-            if gap > 1e-12 {
-                let g = [gl.x, gl.y, gl.z, 0.0];
-                b.note(format!(
-                    "OpenGL's (M^-1)^T n points along {} here ({} off): M's rows are not quite orthonormal",
-                    fmt_value(&g, 8),
-                    fmt_sig(gap, 2)
-                ));
-            }
+        let check = crate::transform::RotationCheck::of(&m, scene.vertex.normal);
+        if check.departure() > 1e-12 {
+            b.note(modelview_note(&check));
         }
     }
 
@@ -238,8 +265,8 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         StepKind::Position,
         None,
         "Vertex in eye space",
-        "vertexEye".into(),
-        "P = M v_obj, divided by w",
+        "vertexPos".into(),
+        "vertexPos = mview · vertexPos, divided by w   (OpenGL: P = M v)",
         Some(vec![p.x, p.y, p.z, 1.0]),
     );
     vertex_limits(&mut b, StepKind::Position);
@@ -250,11 +277,11 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
     }
 
     let vformula = if scene.light_model.local_viewer {
-        "V = normalize(-P)   (local viewer)"
+        "vov = normalize(obs − vertexPos), obs = [0 0 0 1]   (local viewer; OpenGL: V = −P/|P|)"
     } else if rules.viewer_from_eye_plane() {
-        "V = normalize(obs - P), obs = P (1, 1, 0, 1)   (the worksheet's infinite viewer: (0, 0, -sign(P.z)))"
+        "vov = normalize(obs − vertexPos), obs = vertexPos · [1 1 0 1]   (the worksheet's infinite viewer: (0, 0, −sign z))"
     } else {
-        "V = (0, 0, 1)   (infinite viewer)"
+        "vov = [0 0 1 0]   (infinite viewer; OpenGL: V = (0, 0, 1))"
     };
     let push_v = |b: &mut Builder| {
         b.push(StepKind::V, None, "View vector", "vov".into(), vformula, Some(dir4::<S>(lit.v)));
@@ -283,16 +310,19 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
             StepKind::LightPosition,
             i,
             "Light in eye space",
-            format!("lightEye{sfx}"),
-            "P_l = M_light p_light",
+            format!("lightPos{sfx}"),
+            "lightPos = mview · lightPos   (OpenGL: P_l, the modelview when the light was placed times GL_POSITION)",
             Some(pe.to_array().to_vec()),
         );
-        let lformula =
-            if t.positional { "L = normalize(P_l - P)" } else { "L = normalize(P_l.xyz)   (directional: w = 0)" };
+        let lformula = if t.positional {
+            "vlv = normalize(lightPos − vertexPos)   (OpenGL: L = normalize(P_l − P))"
+        } else {
+            "vlv = normalize(lightPos)   (directional, w = 0; OpenGL: L = normalize(P_l.xyz))"
+        };
         b.push(StepKind::L, i, "Light vector", format!("vlv{sfx}"), lformula, Some(dir4::<S>(t.l)));
         lim(&mut b, StepKind::L);
         let dval = t.distance.map(|d| vec![d.to_f64()]);
-        b.push(StepKind::Distance, i, "Distance to the light", format!("d{sfx}"), "d = |P_l - P|", dval);
+        b.push(StepKind::Distance, i, "Distance to the light", format!("d{sfx}"), "d = |lightPos − vertexPos|", dval);
         if t.distance.is_none() {
             b.note("directional light: no distance");
         }
@@ -300,13 +330,20 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         if k == 0 {
             push_v(&mut b);
         }
-        b.push(StepKind::Ambient, i, "Ambient term", format!("Iamb{sfx}"), "Iamb = La Ma", Some(dir4::<S>(st.ambient)));
+        b.push(
+            StepKind::Ambient,
+            i,
+            "Ambient term",
+            format!("Iamb{sfx}"),
+            "Iamb = Lamb · matAmb   (OpenGL: a_cl · a_cm)",
+            Some(dir4::<S>(st.ambient)),
+        );
         b.push(
             StepKind::CosTheta,
             i,
             "cos(theta)",
             format!("cosTheta{sfx}"),
-            &format!("cos(theta) = {sign}N . L"),
+            &format!("cosTheta = {sign}vertexNormal · vlv   (OpenGL: {sign}n · L)"),
             Some(vec![st.n_dot_l.to_f64()]),
         );
         b.push(
@@ -314,7 +351,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
             i,
             "Diffuse term",
             format!("Idif{sfx}"),
-            "Idif = Ld Md max(cos(theta), 0)",
+            "Idif = Ldif · matDif · max(cosTheta, 0)   (OpenGL: d_cl · d_cm · max(n · L, 0))",
             Some(dir4::<S>(st.diffuse)),
         );
         match rules.specular {
@@ -323,8 +360,8 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
                     StepKind::H,
                     i,
                     "Halfway vector",
-                    format!("hv{sfx}"),
-                    "H = normalize(L + V)",
+                    format!("H{sfx}"),
+                    "H = normalize(vlv + vov)   (OpenGL: h = normalize(L + V))",
                     Some(dir4::<S>(t.h)),
                 );
                 lim(&mut b, StepKind::H);
@@ -333,7 +370,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
                     i,
                     "cos(beta)",
                     format!("cosBeta{sfx}"),
-                    &format!("cos(beta) = {sign}N . H"),
+                    &format!("cosBeta = {sign}vertexNormal · H   (OpenGL: {sign}n · h)"),
                     Some(vec![st.spec_cos.to_f64()]),
                 );
             }
@@ -344,9 +381,9 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
                     "Reflection vector",
                     format!("rv{sfx}"),
                     if rules.reflect_clamped() {
-                        "R = 2 max(N . L, 0) N - L   (the demo's)"
+                        "R = 2 max(vertexNormal · vlv, 0) vertexNormal − vlv   (the demo's)"
                     } else {
-                        "R = 2 (N . L) N - L"
+                        "R = 2 (vertexNormal · vlv) vertexNormal − vlv"
                     },
                     Some(dir4::<S>(t.r)),
                 );
@@ -355,13 +392,13 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
                     i,
                     "cos(alpha)",
                     format!("cosAlpha{sfx}"),
-                    "cos(alpha) = R . V",
+                    "cosAlpha = R · vov",
                     Some(vec![st.spec_cos.to_f64()]),
                 );
             }
         }
         let gate = match rules.specular_gate() {
-            crate::SpecularGate::LitSide => "f = 1 if N . L > 0",
+            crate::SpecularGate::LitSide => "f = 1 if cosTheta > 0",
             crate::SpecularGate::PositiveCosine => "only where cos > 0",
             crate::SpecularGate::None => "no gate",
         };
@@ -370,10 +407,18 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
             i,
             "Specular term",
             format!("Ispec{sfx}"),
-            &format!("Ispec = Ls Ms max(cos, 0)^ns   ({gate}; f = {})", st.f.to_f64()),
+            &format!(
+                "Ispec = Lspec · matSpec · max({cos}, 0)^ns   ({gate}; f = {}; OpenGL: s_cl · s_cm · max(n · h, 0)^s_rm)",
+                st.f.to_f64(),
+                cos = if rules.specular == SpecularModel::Phong { "cosAlpha" } else { "cosBeta" }
+            ),
             Some(dir4::<S>(st.specular)),
         );
-        let aformula = if t.positional { "at = k0 + k1 d + k2 d^2;  att = 1/at" } else { "att = 1   (directional)" };
+        let aformula = if t.positional {
+            "at = atC + atLin · d + atQuad · d²   (OpenGL: the terms are divided by k0 + k1 d + k2 d²)"
+        } else {
+            "at = 1   (directional)"
+        };
         let at = t.attenuation.to_f64();
         b.push(
             StepKind::Attenuation,
@@ -410,9 +455,9 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         lim(&mut b, StepKind::Spot);
         let sep = scene.light_model.separate_specular;
         let cformula = if sep {
-            "att spot (Iamb + Idif)   (specular goes to the secondary colour)"
+            "Ilight = spot · (Iamb + Idif) / at   (specular goes to the secondary colour)"
         } else {
-            "att spot (Iamb + Idif + Ispec)"
+            "Ilight = spot · (Iamb + Idif + Ispec) / at"
         };
         b.push(
             StepKind::Contribution,
@@ -440,7 +485,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
     }
     let iformula = match (rules.scene_ambient(), rules.emission()) {
         (true, true) => "I = e_cm + a_cm a_cs + sum of the lights' shares",
-        _ => "I = (Iamb + Idif + Ispec) / at, summed over the lights",
+        _ => "I = (Iamb + Idif + Ispec) / at, summed over the lights   (the worksheet's I)",
     };
     let pr = sc.primary.map(S::to_f64);
     b.push(StepKind::Primary, None, "Vertex colour", "I".into(), iformula, Some(vec![pr[0], pr[1], pr[2], 0.0]));

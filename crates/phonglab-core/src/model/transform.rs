@@ -53,9 +53,11 @@ pub fn of_default_camera(_width: f64, height: f64) -> DMat4 {
 ///
 /// - `mview1`: translate z by -665.108, the openFrameworks camera for a 768-high window;
 /// - `mview2`: a rotation about x by about 59 degrees (rows (0, 0.514496, 0.857493) and
-///   (0, -0.85749, 0.514496): the second is printed with one digit less, so the rows are
-///   not quite orthonormal and the worksheet's normal differs from OpenGL's in the 6th digit);
-/// - `mview3`, `mview4`: rotations built from 15/17 and 8/17 (0.882353, 0.470588);
+///   (0, -0.85749, 0.514496): the second is printed with one digit less, so it is a
+///   rotation to 6 digits and the worksheet's normal differs from OpenGL's in the 6th digit);
+/// - `mview3`, `mview4`: built from 15/17 and 8/17 (0.882353, 0.470588), but not rotations:
+///   rows 1 and 3 are 72° (120°) apart, rows 2 and 3 55° (42°), and the worksheet's M n and
+///   OpenGL's (M^-1)^T n point 13.5° (48°) apart ([`RotationCheck`]);
 /// - `mview5`: a 3-4-5 rotation about x (cos 0.8, sin 0.6) and translate z by -960.
 pub fn worksheet_modelview(index: usize) -> Option<DMat4> {
     let rows = match index {
@@ -184,5 +186,89 @@ mod tests {
         assert!(try_look_at(DVec3::ZERO, DVec3::Y, DVec3::Y).is_none());
         let m = try_look_at(DVec3::new(0.0, 0.0, 5.0), DVec3::ZERO, DVec3::Y).unwrap();
         assert!((m.w_axis.z + 5.0).abs() < 1e-15);
+    }
+}
+
+/// How far the upper 3×3 of a modelview is from a rotation, and what that does to a
+/// normal: the worksheet transforms normals by M itself, OpenGL by (M^-1)^T, and the two
+/// agree (in direction) only when M's rows are orthogonal and of one length.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RotationCheck {
+    /// The lengths of rows 1, 2 and 3.
+    pub row_lengths: [f64; 3],
+    /// The angles between rows (1, 2), (1, 3) and (2, 3), in degrees.
+    pub row_angles: [f64; 3],
+    /// The angle between normalize(M n) and normalize((M^-1)^T n), in degrees (`None` when
+    /// either is zero or M is singular).
+    pub normal_gap: Option<f64>,
+}
+
+impl RotationCheck {
+    /// Checks `m` with the normal `n`.
+    pub fn of(m: &DMat4, n: glam::DVec3) -> Self {
+        let rows = mat4_rows(m).map(|r| glam::DVec3::new(r[0], r[1], r[2]));
+        let angle = |a: glam::DVec3, b: glam::DVec3| {
+            let c = a.dot(b) / (a.length() * b.length());
+            c.clamp(-1.0, 1.0).acos().to_degrees()
+        };
+        let by_m = glam::DMat3::from_mat4(*m) * n;
+        let by_gl = NormalMatrix::new(m).eye_from_object * n;
+        let normal_gap = match (by_m.try_normalize(), by_gl.try_normalize()) {
+            (Some(a), Some(b)) if a.is_finite() && b.is_finite() => Some(angle(a, b)),
+            _ => None,
+        };
+        RotationCheck {
+            row_lengths: [rows[0].length(), rows[1].length(), rows[2].length()],
+            row_angles: [angle(rows[0], rows[1]), angle(rows[0], rows[2]), angle(rows[1], rows[2])],
+            normal_gap,
+        }
+    }
+
+    /// The largest departure from a rotation: of a row's length from 1 (relative) and of
+    /// an angle from 90 degrees (as a fraction of 90).
+    pub fn departure(&self) -> f64 {
+        let lengths = self.row_lengths.iter().map(|l| (l - 1.0).abs());
+        let angles = self.row_angles.iter().map(|a| (a - 90.0).abs() / 90.0);
+        lengths.chain(angles).fold(0.0, f64::max)
+    }
+
+    /// Is M a rotation to 6 digits (as the worksheet prints its matrices)?
+    pub fn is_rotation(&self) -> bool {
+        self.departure() < 1e-5
+    }
+
+    /// The rows' angles as "72.3° (rows 1 and 3), 55.2° (rows 2 and 3)": those that are
+    /// not 90 degrees to 0.05.
+    pub fn skewed_rows(&self) -> Vec<(usize, usize, f64)> {
+        [(1, 2), (1, 3), (2, 3)]
+            .into_iter()
+            .zip(self.row_angles)
+            .filter(|(_, a)| (a - 90.0).abs() >= 0.05)
+            .map(|((i, j), a)| (i, j, a))
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod rotation_check_tests {
+    use super::*;
+
+    #[test]
+    fn the_worksheets_mview3_and_mview4_are_not_rotations() {
+        let n = glam::DVec3::Z;
+        let check = |k| RotationCheck::of(&worksheet_modelview(k).unwrap(), n);
+        let (m3, m4) = (check(3), check(4));
+        assert!(!m3.is_rotation() && !m4.is_rotation());
+        // Rows 1 and 3 are 72° apart, rows 2 and 3 55° (mview3); 120° and 42° (mview4).
+        assert!((m3.row_angles[1] - 72.283).abs() < 1e-3 && (m3.row_angles[2] - 55.173).abs() < 1e-3, "{m3:?}");
+        assert!((m4.row_angles[1] - 120.444).abs() < 1e-3 && (m4.row_angles[2] - 41.508).abs() < 1e-3, "{m4:?}");
+        assert_eq!(m3.skewed_rows().len(), 2);
+        // The worksheet's normal: M n and (M^-1)^T n are 13.5° and 48° apart.
+        assert!((m3.normal_gap.unwrap() - 13.5335).abs() < 1e-3, "{m3:?}");
+        assert!((m4.normal_gap.unwrap() - 48.4535).abs() < 1e-3, "{m4:?}");
+        // mview2 is a rotation to the 6 digits it is printed with; mview1 and mview5 exactly.
+        let m2 = check(2);
+        assert!(m2.is_rotation() && m2.normal_gap.unwrap() < 1e-3, "{m2:?}");
+        assert!(check(5).departure() < 1e-15 && check(1).departure() < 1e-15);
     }
 }

@@ -401,6 +401,12 @@ fn vec4(v: DVec4) -> String {
     crate::explain::fmt_value(&[v.x, v.y, v.z, v.w], 8)
 }
 
+/// A colour as the worksheet writes it, `[r g b 0]`: every product of two colours (Iamb,
+/// Idif, Ispec) then has 0 as its fourth component, as the key does.
+fn colour4(c: DVec4) -> String {
+    crate::explain::fmt_value(&[c.x, c.y, c.z, 0.0], 8)
+}
+
 /// The exercise sheet, in the worksheet's style: the givens under the worksheet's names,
 /// then the steps to compute, each with a blank.
 pub fn sheet_markdown(ex: &Exercise) -> String {
@@ -414,6 +420,10 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
         crate::rules::RuleSet::PhongDemo => "the Phong demo's shader",
     };
     let _ = writeln!(o, "Compute the colour of the vertex step by step, under {rules} rules.\n");
+    let _ = writeln!(
+        o,
+        "Colours are written as the worksheet writes them, [r g b 0], so every product of two colours has 0 as its fourth component, as in the key.\n"
+    );
     let _ = writeln!(o, "## The vertex\n");
     let _ = writeln!(o, "- vertexPos = {}", vec4(s.vertex.position));
     let _ = writeln!(o, "- vertexNormal = {}\n", vec4(s.vertex.normal.extend(0.0)));
@@ -433,7 +443,13 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
             "- lightPos = {} ({what}, in world coordinates: transform it by the modelview)",
             vec4(l.position)
         );
-        let _ = writeln!(o, "- Lamb = {}, Ldif = {}, Lspec = {}", vec4(l.ambient), vec4(l.diffuse), vec4(l.specular));
+        let _ = writeln!(
+            o,
+            "- Lamb = {}, Ldif = {}, Lspec = {}",
+            colour4(l.ambient),
+            colour4(l.diffuse),
+            colour4(l.specular)
+        );
         if l.position.w != 0.0 {
             let [c, k1, k2] = l.attenuation;
             let _ = writeln!(o, "- atC = {}, atLin = {}, atQuad = {}", num(c), num(k1), num(k2));
@@ -451,20 +467,22 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
     }
     let m = &s.material;
     let _ = writeln!(o, "## Material{}\n", if material.is_empty() { String::new() } else { format!(": {material}") });
-    let _ = writeln!(o, "- matAmb = {}", vec4(m.ambient));
-    let _ = writeln!(o, "- matDif = {}", vec4(m.diffuse));
-    let _ = writeln!(o, "- matSpec = {}", vec4(m.specular));
+    let _ = writeln!(o, "- matAmb = {}", colour4(m.ambient));
+    let _ = writeln!(o, "- matDif = {}", colour4(m.diffuse));
+    let _ = writeln!(o, "- matSpec = {}", colour4(m.specular));
     let _ = writeln!(o, "- ns = {}\n", num(m.shininess));
     let _ = writeln!(o, "## The light model\n");
     let lm = &s.light_model;
     let _ = writeln!(o, "- local viewer: {}", lm.local_viewer);
     let _ = writeln!(o, "- two-sided lighting: {}", lm.two_sided);
     if s.rules.scene_ambient() {
-        let _ = writeln!(o, "- scene ambient = {}", vec4(lm.ambient));
+        let _ = writeln!(o, "- scene ambient = {}", colour4(lm.ambient));
     }
     let _ = writeln!(o, "\n## Compute\n");
-    for (k, st) in ex.key.steps.iter().enumerate() {
-        let _ = writeln!(o, "{}. {}: `{}` = ________", k + 1, st.title, st.name);
+    let asked = (0..ex.key.steps.len()).filter(|k| crate::quiz::asked(s, &ex.key, *k));
+    for (n, k) in asked.enumerate() {
+        let st = &ex.key.steps[k];
+        let _ = writeln!(o, "{}. {}: `{}` = ________", n + 1, st.title, st.name);
     }
     o
 }

@@ -1,13 +1,16 @@
 //! Checking a student's worked calculation step by step.
 //!
 //! A step's answer is right when every component is within 1e-4 of the expected value
-//! relative to it, or within 1e-6 absolutely. What is expected is computed from the
-//! student's own earlier answers wherever the step's formula takes them (the carried-forward
-//! inputs), so one slip is counted once: with a wrong L, the cosine `N . L` is checked
-//! against the student's N and L. Where an input was not given (or does not read as
-//! numbers), the answer key's value stands in. Steps whose inputs are only the givens
-//! (N, P, the light in eye space, the ambient term, the spot factor) are checked against
-//! the key.
+//! relative to it, or within 1e-6 absolutely ([`TOLERANCE`]). Each answer is checked twice,
+//! and its [`Mark`] says which check it passed:
+//! - against the key: an answer equal to the key is always right;
+//! - against what the student's own earlier answers give, wherever the step's formula
+//!   takes them (the carried-forward inputs), so one slip is counted once: with a wrong L,
+//!   the cosine `N · L` from the student's N and L is "right, given your vlv".
+//!
+//! Where an input was not given (or does not read as numbers), the key's value stands in.
+//! An answer within 1 % that is not right is "close", with the significant digits it needs.
+//! Steps that do not apply to the scene ([`asked`]) are not asked.
 
 use glam::DVec3;
 
@@ -24,22 +27,80 @@ pub fn parse_answer(text: &str) -> Result<Vec<f64>, String> {
     crate::formats::typed_number::parse_numbers(text).map_err(|e| e.to_string())
 }
 
-/// Is `got` close to `want`: each component within 1e-4 relative or 1e-6 absolute? A
-/// 3-number answer to a 4-component vector is compared on x, y, z.
-pub fn close(got: &[f64], want: &[f64]) -> bool {
+/// How close is right: (relative, absolute).
+pub const TOLERANCE: (f64, f64) = (1e-4, 1e-6);
+
+/// How close is "close": within 1 % (or 1e-4 absolutely).
+const CLOSE: (f64, f64) = (1e-2, 1e-4);
+
+/// The components compared: a 3-number answer to a 4-component vector is compared on x,
+/// y, z; otherwise the lengths must agree.
+fn compared(got: &[f64], want: &[f64]) -> Option<usize> {
     let n = if got.len() + 1 == want.len() { got.len() } else { want.len() };
-    got.len() >= n && got.len() <= want.len() && {
-        got.iter().zip(want).take(n).all(|(g, w)| (g - w).abs() <= (1e-4 * w.abs()).max(1e-6))
-    }
+    (got.len() >= n && got.len() <= want.len()).then_some(n)
+}
+
+fn within(got: &[f64], want: &[f64], (rel, abs): (f64, f64)) -> bool {
+    compared(got, want)
+        .is_some_and(|n| got.iter().zip(want).take(n).all(|(g, w)| (g - w).abs() <= (rel * w.abs()).max(abs)))
+}
+
+/// Is `got` right for `want`: each component within [`TOLERANCE`]?
+pub fn close(got: &[f64], want: &[f64]) -> bool {
+    within(got, want, TOLERANCE)
+}
+
+/// The largest relative difference of `got` from `want`, over the components.
+fn relative_gap(got: &[f64], want: &[f64]) -> f64 {
+    got.iter().zip(want).map(|(g, w)| (g - w).abs() / w.abs().max(TOLERANCE.1)).fold(0.0, f64::max)
+}
+
+/// The fewest significant digits (up to 17) to which `want` rounds to a right answer.
+pub fn digits_needed(want: &[f64]) -> usize {
+    (1..=17)
+        .find(|&d| {
+            let rounded: Vec<f64> =
+                want.iter().map(|w| crate::explain::fmt_sig(*w, d).parse::<f64>().unwrap_or(*w)).collect();
+            close(&rounded, want)
+        })
+        .unwrap_or(17)
+}
+
+/// What an answer was marked, and why.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Mark {
+    /// Within the tolerance of the key.
+    Right,
+    /// Not the key's value, but what the student's own earlier answers give: those
+    /// answers (`yours`, by name) differ from the key's, which give `key`.
+    RightGivenYours {
+        /// The student's earlier answers it follows from (those that differ from the key).
+        yours: Vec<String>,
+        /// The key's value for this step.
+        key: Vec<f64>,
+    },
+    /// Within 1 % of the value expected, but not within the tolerance.
+    Close {
+        /// How far off, in percent.
+        percent: f64,
+        /// The significant digits the expected value needs to be right.
+        digits: usize,
+    },
+    /// Neither: the expected value, from the formula and its inputs.
+    Wrong,
 }
 
 /// The verdict on one step.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Verdict {
-    /// Within the tolerance.
+    /// The mark.
+    pub mark: Mark,
+    /// Within the tolerance (of the key, or of what the student's answers give).
     pub right: bool,
     /// What was expected (from the carried-forward inputs).
     pub expected: Vec<f64>,
+    /// The key's value.
+    pub key: Vec<f64>,
     /// The step's formula.
     pub formula: String,
     /// The inputs used: (name, value, whether it is the student's own).
@@ -199,15 +260,50 @@ pub fn expected(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -
 /// The verdict on step `k`, or `None` when it has no answer yet or no value to check.
 pub fn check(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -> Option<Verdict> {
     let got = answers.get(k)?.as_ref()?;
+    let keyed = key.steps.get(k)?.value.clone()?;
     let (expected, inputs) = expected(scene, key, answers, k)?;
-    Some(Verdict { right: close(got, &expected), expected, formula: key.steps[k].formula.clone(), inputs })
+    let mark = if close(got, &keyed) {
+        Mark::Right
+    } else if close(got, &expected) {
+        // Right from the student's own inputs, which differ from the key's.
+        let differing = |(name, v, own): &Input| {
+            let keyed_input = key.steps.iter().find(|s| &s.name == name).and_then(|s| s.value.clone());
+            (*own && keyed_input.is_some_and(|kv| !close(v, &kv))).then(|| name.clone())
+        };
+        let yours: Vec<String> = inputs.iter().filter_map(differing).collect();
+        if yours.is_empty() { Mark::Right } else { Mark::RightGivenYours { yours, key: keyed.clone() } }
+    } else if compared(got, &expected).is_some() && within(got, &expected, CLOSE) {
+        let percent = 100.0 * relative_gap(got, &expected);
+        Mark::Close { percent, digits: digits_needed(&expected) }
+    } else {
+        Mark::Wrong
+    };
+    let right = matches!(mark, Mark::Right | Mark::RightGivenYours { .. });
+    Some(Verdict { mark, right, expected, key: keyed, formula: key.steps[k].formula.clone(), inputs })
 }
 
-/// The score: (right, answered, steps with a value).
+/// Does step `k` apply to the scene (is it asked)? Not the spot factor of a light that is
+/// not a spotlight, nor the attenuation of a directional light (both 1); not a light's
+/// share when one light is all of I; not the clamped colour under the worksheet's rules
+/// (the worksheet stops at I); not a step with no value (d of a directional light).
+pub fn asked(scene: &Scene, key: &Explanation, k: usize) -> bool {
+    let Some(st) = key.steps.get(k) else { return false };
+    let light = st.light.and_then(|i| scene.lights.get(i));
+    st.value.is_some()
+        && match st.kind {
+            StepKind::Spot => light.is_some_and(|l| l.is_spot()),
+            StepKind::Attenuation => light.is_some_and(|l| l.position.w != 0.0),
+            StepKind::Contribution => scene.lights.len() > 1 || scene.rules.scene_ambient() || scene.rules.emission(),
+            StepKind::Clamped => scene.rules.set != crate::rules::RuleSet::Worksheet,
+            _ => true,
+        }
+}
+
+/// The score: (right, answered, steps asked).
 pub fn score(scene: &Scene, key: &Explanation, answers: &Answers) -> (usize, usize, usize) {
-    let with_value = key.steps.iter().filter(|s| s.value.is_some()).count();
-    let verdicts: Vec<Verdict> = (0..key.steps.len()).filter_map(|k| check(scene, key, answers, k)).collect();
-    (verdicts.iter().filter(|v| v.right).count(), verdicts.len(), with_value)
+    let steps: Vec<usize> = (0..key.steps.len()).filter(|k| asked(scene, key, *k)).collect();
+    let verdicts: Vec<Verdict> = steps.iter().filter_map(|k| check(scene, key, answers, *k)).collect();
+    (verdicts.iter().filter(|v| v.right).count(), verdicts.len(), steps.len())
 }
 
 #[cfg(test)]
@@ -266,15 +362,82 @@ mod tests {
         let v = check(&s, &e, &answers, idx("cosTheta")).unwrap();
         assert!(v.right, "{v:?}");
         assert!(v.inputs.iter().any(|(name, val, own)| name == "vlv" && *own && *val == wrong));
-        // The key's cos(theta) is now the wrong answer for this student.
+        assert_eq!(
+            v.mark,
+            Mark::RightGivenYours { yours: vec!["vlv".into()], key: e.steps[idx("cosTheta")].value.clone().unwrap() }
+        );
+        // The key's cos(theta) is right too: a value equal to the key is never wrong.
         answers[idx("cosTheta")] = e.steps[idx("cosTheta")].value.clone();
-        assert!(!check(&s, &e, &answers, idx("cosTheta")).unwrap().right);
+        assert_eq!(check(&s, &e, &answers, idx("cosTheta")).unwrap().mark, Mark::Right);
+        // And so is the worksheet's own Idif, typed next.
+        answers[idx("Idif")] = Some(vec![0.09942795, 0.05965677, 0.0252664, 0.0]);
+        assert_eq!(check(&s, &e, &answers, idx("Idif")).unwrap().mark, Mark::Right);
         // Within 1e-4 relative is right; beyond it is not.
         let at = e.steps[idx("at")].value.clone().unwrap()[0];
         answers[idx("at")] = Some(vec![at * (1.0 + 5e-5)]);
         assert!(check(&s, &e, &answers, idx("at")).unwrap().right);
         answers[idx("at")] = Some(vec![at * (1.0 + 5e-4)]);
         let v = check(&s, &e, &answers, idx("at")).unwrap();
-        assert!(!v.right && v.formula.contains("k0 + k1 d"), "{v:?}");
+        assert!(!v.right && v.formula.contains("atC + atLin · d + atQuad · d²"), "{v:?}");
+        assert!(matches!(v.mark, Mark::Close { .. }), "{v:?}");
+    }
+
+    #[test]
+    fn a_rounded_answer_is_close_and_says_the_digits_it_needs() {
+        let (s, e) = worksheet();
+        let idx = |name: &str| e.steps.iter().position(|st| st.name == name).unwrap();
+        let cos_beta = e.steps[idx("cosBeta")].value.clone().unwrap()[0];
+        assert!((cos_beta - 0.76439955).abs() < 1e-8, "{cos_beta}");
+        let mut answers: Vec<Option<Vec<f64>>> = vec![None; e.steps.len()];
+        answers[idx("cosBeta")] = Some(vec![0.764]);
+        let v = check(&s, &e, &answers, idx("cosBeta")).unwrap();
+        let Mark::Close { percent, digits } = v.mark else { panic!("{v:?}") };
+        assert!((percent - 0.0523).abs() < 1e-4, "{percent}");
+        assert_eq!(digits, 4, "0.7644 is within 1e-4 of 0.76439955; 0.764 is not");
+        answers[idx("cosBeta")] = Some(vec![0.7644]);
+        assert_eq!(check(&s, &e, &answers, idx("cosBeta")).unwrap().mark, Mark::Right);
+        // Far off is wrong.
+        answers[idx("cosBeta")] = Some(vec![0.5]);
+        assert_eq!(check(&s, &e, &answers, idx("cosBeta")).unwrap().mark, Mark::Wrong);
+        assert_eq!(digits_needed(&[646.29715]), 4);
+        assert_eq!(digits_needed(&[0.0]), 1);
+    }
+
+    #[test]
+    fn steps_that_do_not_apply_are_not_asked() {
+        let (s, e) = worksheet();
+        let asked_names: Vec<&str> =
+            (0..e.steps.len()).filter(|k| asked(&s, &e, *k)).map(|k| e.steps[k].name.as_str()).collect();
+        // One light, no spotlight, the worksheet's rules: spot, Ilight and glColor are not asked.
+        for not in ["spot", "Ilight", "glColor"] {
+            assert!(!asked_names.contains(&not), "{not} in {asked_names:?}");
+        }
+        for yes in [
+            "vertexNormal",
+            "vertexPos",
+            "lightPos",
+            "vlv",
+            "d",
+            "vov",
+            "Iamb",
+            "cosTheta",
+            "Idif",
+            "H",
+            "cosBeta",
+            "Ispec",
+            "at",
+            "I",
+        ] {
+            assert!(asked_names.contains(&yes), "{yes} not in {asked_names:?}");
+        }
+        // A spotlight's factor is asked.
+        let mut spot = crate::presets::worksheet(5);
+        spot.rules = crate::Rules::OPENGL;
+        spot.lights[0].spot_cutoff = 60.0;
+        spot.lights[0].spot_direction = -glam::DVec3::Z;
+        let lit = Engine::<f64>::new(&spot).unwrap().light(&spot.vertex);
+        let es = explain(&spot, &lit, Side::Front);
+        assert!((0..es.steps.len()).any(|k| es.steps[k].kind == StepKind::Spot && asked(&spot, &es, k)));
+        assert!((0..es.steps.len()).any(|k| es.steps[k].kind == StepKind::Clamped && asked(&spot, &es, k)));
     }
 }
