@@ -129,7 +129,8 @@ pub fn help_ui(ui: &mut Ui) {
     ui.separator();
     ui.label("Drop a scene file (.toml) on the window to open it.");
     ui.label("Drag the vector plot or the shaded view to orbit it; scroll the shaded view to zoom; click its surface to explain that vertex.");
-    ui.label(" Every field takes typed values: out-of-range ones are refused with a message and the scene keeps its last valid value.");
+    ui.label("A number field takes a decimal point or comma, and reads what was typed when it is left (Enter, Tab, a click elsewhere); a refused value stays in red with its reason until it is corrected or Esc puts the value back.");
+    ui.label("Ctrl+Z undoes any change of the scene. Keys without Ctrl do nothing while a text field has the keyboard, nor in the quiz.");
     ui.separator();
     ui.strong("The Phong demo preset: the demo's choices and OpenGL's");
     for line in DEMO_CHOICES {
