@@ -25,6 +25,32 @@ pub struct Cli {
     /// adapter).
     #[arg(long, value_enum, default_value_t = RendererArg::Auto)]
     pub renderer: RendererArg,
+    /// The language of what phonglab says: en, pt-PT or pt-BR (default: the system's, from
+    /// LC_ALL, LC_MESSAGES or LANG). JSON, CSV and scene files keep English keys.
+    #[arg(long, global = true, value_parser = parse_lang)]
+    pub lang: Option<phonglab_core::locale::Lang>,
+    /// How numbers meant for people are written: point (0.5) or comma (0,5); default: the
+    /// language's (a comma in Portuguese). Typed numbers are read with either.
+    #[arg(long, global = true, value_parser = parse_decimal)]
+    pub decimal: Option<phonglab_core::locale::DecimalMark>,
+}
+
+fn parse_lang(s: &str) -> Result<phonglab_core::locale::Lang, String> {
+    phonglab_core::locale::Lang::parse(s).ok_or_else(|| format!("{s:?}: phonglab speaks en, pt-PT and pt-BR"))
+}
+
+fn parse_decimal(s: &str) -> Result<phonglab_core::locale::DecimalMark, String> {
+    phonglab_core::locale::DecimalMark::parse(s).ok_or_else(|| format!("{s:?}: point or comma"))
+}
+
+impl Cli {
+    /// The locale the command line asks for: `--lang` over the system's, `--decimal` over
+    /// the language's own mark.
+    pub fn locale(&self) -> phonglab_core::locale::Locale {
+        use phonglab_core::locale::{Lang, Locale};
+        let lang = self.lang.unwrap_or_else(Lang::from_env);
+        Locale { lang, decimal: self.decimal.unwrap_or(lang.decimal_mark()) }
+    }
 }
 
 /// `--renderer`'s values.
@@ -150,9 +176,10 @@ pub struct ShaderArgs {
     /// A scene file (default: the worksheet's, mview5).
     #[arg(long)]
     pub scene: Option<PathBuf>,
-    /// glsl (3.30 core: a vertex and a fragment shader) or wgsl (one module).
+    /// glsl (3.30 core: a vertex and a fragment shader) or wgsl (one module). (`--lang`
+    /// is the language phonglab speaks, on every command.)
     #[arg(long, default_value = "glsl")]
-    pub lang: String,
+    pub target: String,
     /// gouraud (lit per vertex) or phong (lit per fragment).
     #[arg(long, default_value = "gouraud")]
     pub shading: String,
@@ -164,10 +191,10 @@ fn shader_cmd(a: &ShaderArgs) -> Result<()> {
         Some(p) => load_scene_file(p)?,
         None => phonglab_core::Document::default(),
     };
-    let lang = match a.lang.as_str() {
+    let lang = match a.target.as_str() {
         "glsl" => Lang::Glsl,
         "wgsl" => Lang::Wgsl,
-        other => bail!("--lang {other:?}: try glsl or wgsl"),
+        other => bail!("--target {other:?}: try glsl or wgsl"),
     };
     let shading = match a.shading.as_str() {
         "gouraud" => ShaderShading::Gouraud,

@@ -10,6 +10,7 @@ fn main() -> ExitCode {
     // eframe's and wgpu's warnings reach stderr (RUST_LOG=info or debug for more).
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
     let args = cli::Cli::parse();
+    phonglab_core::locale::set_default(args.locale());
     match args.command {
         Some(command) => cli::run(command),
         None => match phonglab::app::run(

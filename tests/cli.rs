@@ -477,10 +477,10 @@ fn shader_prints_only_the_stages_the_scene_needs() {
     let spot = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
     for lang in ["glsl", "wgsl"] {
         for shading in ["gouraud", "phong"] {
-            let with = phonglab(&["shader", "--scene", spot.to_str().unwrap(), "--lang", lang, "--shading", shading]);
+            let with = phonglab(&["shader", "--scene", spot.to_str().unwrap(), "--target", lang, "--shading", shading]);
             assert!(with.status.success(), "{}", stderr(&with));
             let with = stdout(&with);
-            let without = stdout(&phonglab(&["shader", "--lang", lang, "--shading", shading]));
+            let without = stdout(&phonglab(&["shader", "--target", lang, "--shading", shading]));
             assert!(with.contains("spot_cos_cutoff"), "{lang} {shading}: the spotlight's cone test\n{with}");
             assert!(!without.contains("spot_"), "{lang} {shading}: the worksheet has no spotlight\n{without}");
             // Phong lights per fragment: the lighting is in the fragment stage.
@@ -488,7 +488,7 @@ fn shader_prints_only_the_stages_the_scene_needs() {
             assert_eq!(fragment.contains("spot_cos_cutoff"), shading == "phong", "{lang} {shading}");
         }
     }
-    let bad = phonglab(&["shader", "--lang", "hlsl"]);
+    let bad = phonglab(&["shader", "--target", "hlsl"]);
     assert!(!bad.status.success());
     assert!(stderr(&bad).contains("try glsl or wgsl"));
 }

@@ -568,8 +568,8 @@ fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
     // One picture: the demo's own.
     assert_eq!(h.query_all_by_role(Role::Image).count(), 1);
     for d in phonglab_core::library::DemoDeparture::ALL {
-        h.get_by_label(d.fix_label());
-        assert!(h.query_by_label_contains(d.why()).is_none(), "the reasons are folded");
+        h.get_by_label(&d.fix_label());
+        assert!(h.query_by_label_contains(&d.why()).is_none(), "the reasons are folded");
     }
     h.get_by_label("light fixed in the world").click();
     h.run_steps(2);
@@ -577,7 +577,7 @@ fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
     // The reasons open in one click, and the switches have not moved.
     h.get_by_label_contains("Why the demo differs").click();
     h.run_steps(2);
-    h.get_by_label_contains(phonglab_core::library::DemoDeparture::LightTurnsWithObject.why());
+    h.get_by_label_contains(&phonglab_core::library::DemoDeparture::LightTurnsWithObject.why());
     // Two pictures: the demo's on the left, the corrected one on the right.
     let images: Vec<egui::Rect> = h.query_all_by_role(Role::Image).map(|n| n.rect()).collect();
     assert_eq!(images.len(), 2, "{images:?}");
@@ -742,12 +742,12 @@ fn the_demos_switches_stay_where_they_are_when_one_is_clicked() {
     let at = |h: &Harness<'static, AppState>| -> Vec<egui::Rect> {
         phonglab_core::library::DemoDeparture::ALL
             .iter()
-            .map(|d| h.get_by_role_and_label(Role::CheckBox, d.fix_label()).rect())
+            .map(|d| h.get_by_role_and_label(Role::CheckBox, &d.fix_label()).rect())
             .collect()
     };
     let before = at(&h);
     for d in phonglab_core::library::DemoDeparture::ALL {
-        h.get_by_role_and_label(Role::CheckBox, d.fix_label()).click();
+        h.get_by_role_and_label(Role::CheckBox, &d.fix_label()).click();
         h.run_steps(3);
         assert_eq!(at(&h), before, "after switching {:?} on", d.fix_label());
     }

@@ -4,6 +4,7 @@
 use egui::{RichText, Ui};
 use phonglab_core::explain::{Explanation, Side, fmt_value};
 use phonglab_core::plan::{Effect, Stage};
+use phonglab_core::t;
 
 use super::palette;
 
@@ -14,25 +15,22 @@ const DIGITS: usize = 8;
 /// the stages it runs, in order (the same list the evaluator runs).
 fn plan_ui(ui: &mut Ui, effects: &[Effect], stages: &[Stage]) {
     let skipped = effects.iter().filter(|e| !e.on).count();
-    egui::CollapsingHeader::new(format!(
-        "Specialised plan: {} effects computed, {skipped} skipped",
-        effects.len() - skipped
-    ))
-    .id_salt("plan")
-    .show(ui, |ui| {
-        for e in effects {
-            let who = e.light.map(|i| format!("light {i}: ")).unwrap_or_default();
-            let text = format!("{who}{}: {}", e.name, e.why);
-            if e.on {
-                ui.label(RichText::new(format!("computed  {text}")).small());
-            } else {
-                ui.label(RichText::new(format!("skipped   {text}")).small().weak());
+    egui::CollapsingHeader::new(t!("plan-heading", computed = effects.len() - skipped, skipped = skipped))
+        .id_salt("plan")
+        .show(ui, |ui| {
+            for e in effects {
+                let who = e.light.map(|i| t!("plan-light", index = i.to_string())).unwrap_or_default();
+                let text = format!("{who}{}: {}", e.name, e.why);
+                if e.on {
+                    ui.label(RichText::new(t!("plan-computed", what = text)).small());
+                } else {
+                    ui.label(RichText::new(t!("plan-skipped", what = text)).small().weak());
+                }
             }
-        }
-        ui.label(RichText::new(format!("The program, {} stages per chunk of vertices:", stages.len())).small());
-        let list: Vec<String> = stages.iter().map(|s| format!("{s:?}")).collect();
-        ui.label(RichText::new(list.join(" > ")).small().monospace());
-    });
+            ui.label(RichText::new(t!("plan-program", stages = stages.len())).small());
+            let list: Vec<String> = stages.iter().map(|s| format!("{s:?}")).collect();
+            ui.label(RichText::new(list.join(" > ")).small().monospace());
+        });
 }
 
 /// The teacher's walk through the steps: the step highlighted, and whether it just moved
@@ -57,16 +55,16 @@ pub fn calculation_ui(
     walk: Walk,
 ) {
     ui.horizontal(|ui| {
-        ui.heading("Worked calculation");
-        if ui.button("Copy as Markdown").on_hover_text("Copies every step as a Markdown table.").clicked() {
+        ui.heading(t!("worked-calculation"));
+        if ui.button(t!("copy-markdown")).on_hover_text(t!("copy-markdown-hover")).clicked() {
             ui.ctx().copy_text(ex.to_markdown(DIGITS));
         }
     });
     if two_sided {
         ui.horizontal(|ui| {
-            ui.label("Side:");
-            ui.radio_value(side, Side::Front, "front");
-            ui.radio_value(side, Side::Back, "back");
+            ui.label(t!("side"));
+            ui.radio_value(side, Side::Front, t!("side-front"));
+            ui.radio_value(side, Side::Back, t!("side-back"));
         });
     }
     ui.small(&ex.heading);
@@ -105,8 +103,8 @@ fn step_ui(ui: &mut Ui, k: usize, st: &phonglab_core::explain::Step, skip: Optio
     // The formula on a line of its own, so that when it wraps it wraps under itself.
     ui.label(RichText::new(&st.formula).monospace().weak());
     let value = match &st.value {
-        Some(v) => format!("{} = {}", st.name, fmt_value(v, DIGITS)),
-        None => format!("{} = n/a", st.name),
+        Some(v) => format!("{} = {}", st.name, phonglab_core::locale::decimal(&fmt_value(v, DIGITS))),
+        None => format!("{} = {}", st.name, t!("not-applicable")),
     };
     let mut text = RichText::new(value).monospace();
     if let Some(c) = palette::step(st.kind).filter(|_| skip.is_none()) {
@@ -118,10 +116,10 @@ fn step_ui(ui: &mut Ui, k: usize, st: &phonglab_core::explain::Step, skip: Optio
     ui.indent(("value", k), |ui| {
         ui.label(text);
         if let Some(e) = skip {
-            ui.label(RichText::new(format!("skipped by the specialised evaluator: {}", e.why)).small().weak());
+            ui.label(RichText::new(t!("skipped-by-specialised", why = &e.why)).small().weak());
         }
         for n in &st.notes {
-            ui.label(RichText::new(format!("note: {n}")).color(palette::ink(ui, palette::NOTE)));
+            ui.label(RichText::new(t!("note-line", note = n)).color(palette::ink(ui, palette::NOTE)));
         }
     });
 }

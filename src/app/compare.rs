@@ -46,7 +46,7 @@ pub fn differences(a: &Pinned, b: &Pinned) -> Vec<(String, String, String)> {
         out.push(("precision".into(), a.precision.label().into(), b.precision.label().into()));
     }
     if a.pow != b.pow {
-        out.push(("pow".into(), a.pow.label().into(), b.pow.label().into()));
+        out.push(("pow".into(), a.pow.label(), b.pow.label()));
     }
     out
 }

@@ -3,6 +3,7 @@
 
 use egui::{CollapsingHeader, ComboBox, Ui};
 use glam::{DMat4, DVec3, DVec4};
+use phonglab_core::t;
 use phonglab_core::transform::{mat4_from_rows, mat4_rows};
 use phonglab_core::{
     CameraSpec, Document, Light, LightPlacement, MAX_LIGHTS, Material, NormalMode, RuleSet, SpecularModel, materials,
@@ -14,46 +15,58 @@ use super::widgets::{color_ui, number_ui, slider_ui, vec3_ui, vec4_ui};
 
 /// All the controls, in collapsible sections.
 pub fn controls_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
-    CollapsingHeader::new("Rules").default_open(true).show(ui, |ui| rules_ui(ui, doc));
-    CollapsingHeader::new("Lights").default_open(true).show(ui, |ui| lights_ui(ui, doc, state));
-    CollapsingHeader::new("Material").default_open(true).show(ui, |ui| material_section_ui(ui, doc));
-    CollapsingHeader::new("Light model").default_open(true).show(ui, |ui| light_model_ui(ui, doc));
-    CollapsingHeader::new("Vertex").default_open(true).show(ui, |ui| vertex_ui(ui, doc));
-    CollapsingHeader::new("Camera (modelview)").default_open(false).show(ui, |ui| camera_ui(ui, doc));
+    CollapsingHeader::new(t!("controls-rules")).id_salt("rules").default_open(true).show(ui, |ui| rules_ui(ui, doc));
+    CollapsingHeader::new(t!("controls-lights"))
+        .id_salt("lights")
+        .default_open(true)
+        .show(ui, |ui| lights_ui(ui, doc, state));
+    CollapsingHeader::new(t!("controls-material"))
+        .id_salt("material")
+        .default_open(true)
+        .show(ui, |ui| material_section_ui(ui, doc));
+    CollapsingHeader::new(t!("controls-light-model"))
+        .id_salt("light model")
+        .default_open(true)
+        .show(ui, |ui| light_model_ui(ui, doc));
+    CollapsingHeader::new(t!("controls-vertex")).id_salt("vertex").default_open(true).show(ui, |ui| vertex_ui(ui, doc));
+    CollapsingHeader::new(t!("controls-camera"))
+        .id_salt("camera")
+        .default_open(false)
+        .show(ui, |ui| camera_ui(ui, doc));
 }
 
 /// Rule set and specular model.
 pub fn rules_ui(ui: &mut Ui, doc: &mut Document) {
     let rules = &mut doc.scene.rules;
-    ComboBox::from_label("Rule set").selected_text(rules.set.label()).show_ui(ui, |ui| {
+    ComboBox::from_label(t!("rule-set")).selected_text(rules.set.label()).show_ui(ui, |ui| {
         for r in RuleSet::ALL {
             ui.selectable_value(&mut rules.set, r, r.label());
         }
     });
-    ComboBox::from_label("Specular model").selected_text(rules.specular.label()).show_ui(ui, |ui| {
+    ComboBox::from_label(t!("specular-model")).selected_text(rules.specular.label()).show_ui(ui, |ui| {
         for m in SpecularModel::ALL {
             ui.selectable_value(&mut rules.specular, m, m.label());
         }
     });
     ui.small(match rules.set {
         RuleSet::OpenGl => {
-            "Emission + scene ambient + every light's ambient, diffuse and specular (OpenGL 2.1, 2.14.1)."
+            t!("rules-opengl-summary")
         }
         RuleSet::Worksheet => {
-            "The worksheet: no scene ambient, no emission; diffuse 0 past 90 degrees, specular 0 past 90 degrees."
+            t!("rules-worksheet-summary")
         }
         RuleSet::PhongDemo => {
-            "The Phong demo's shader: no scene ambient, no emission, pow(max(R.V, 0), e) with no other gate."
+            t!("rules-demo-summary")
         }
     });
 }
 
-fn placement_label(p: &LightPlacement) -> &'static str {
+fn placement_label(p: &LightPlacement) -> String {
     match p {
-        LightPlacement::Eye => "the eye (moves with the camera)",
-        LightPlacement::World => "the world",
-        LightPlacement::Object => "the object (turns with it)",
-        LightPlacement::Matrix(_) => "a typed matrix",
+        LightPlacement::Eye => t!("placement-eye"),
+        LightPlacement::World => t!("placement-world"),
+        LightPlacement::Object => t!("placement-object"),
+        LightPlacement::Matrix(_) => t!("placement-matrix"),
     }
 }
 
@@ -99,7 +112,7 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
     // tab is added (a click aimed at the last frame's button would miss).
     ui.push_id("light buttons", |ui| {
         ui.horizontal(|ui| {
-            if ui.add_enabled(lights.len() < MAX_LIGHTS, egui::Button::new("Add light")).clicked() {
+            if ui.add_enabled(lights.len() < MAX_LIGHTS, egui::Button::new(t!("add-light"))).clicked() {
                 let mut l = Light::gl_default(lights.len());
                 // A visible default: a white directional light from the upper right.
                 l.diffuse = DVec4::ONE;
@@ -108,21 +121,21 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
                 lights.push(l);
                 state.selected_light = lights.len() - 1;
             }
-            if ui.add_enabled(!lights.is_empty(), egui::Button::new("Remove light")).clicked() {
+            if ui.add_enabled(!lights.is_empty(), egui::Button::new(t!("remove-light"))).clicked() {
                 let i = state.selected_light.min(lights.len() - 1);
                 lights.remove(i);
                 state.selected_light = i.saturating_sub(1);
             }
-            ui.small(format!("{} of {MAX_LIGHTS}", lights.len()));
+            ui.small(t!("lights-of-max", count = lights.len(), max = MAX_LIGHTS.to_string()));
         });
     });
     ui.horizontal_wrapped(|ui| {
         for i in 0..lights.len() {
-            ui.selectable_value(&mut state.selected_light, i, format!("Light {i}"));
+            ui.selectable_value(&mut state.selected_light, i, t!("light-tab", index = i.to_string()));
         }
     });
     if lights.is_empty() {
-        ui.label("No lights: only emission and the scene ambient remain.");
+        ui.label(t!("no-lights"));
         return;
     }
     let i = state.selected_light.min(lights.len() - 1);
@@ -130,88 +143,96 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
     ui.separator();
 
     let mut directional = l.position.w == 0.0;
-    if ui.checkbox(&mut directional, "Directional (w = 0)").changed() {
+    if ui.checkbox(&mut directional, t!("directional")).changed() {
         l.position.w = if directional { 0.0 } else { 1.0 };
     }
-    for (name, v) in [("Light x", &mut l.position.x), ("Light y", &mut l.position.y), ("Light z", &mut l.position.z)] {
-        slider_ui(ui, name, v, -range..=range, false);
+    for (name, v) in
+        [(t!("light-x"), &mut l.position.x), (t!("light-y"), &mut l.position.y), (t!("light-z"), &mut l.position.z)]
+    {
+        slider_ui(ui, &name, v, -range..=range, false);
     }
-    ComboBox::from_label("Light fixed to").selected_text(placement_label(&l.placement)).show_ui(ui, |ui| {
+    ComboBox::from_label(t!("light-fixed-to")).selected_text(placement_label(&l.placement)).show_ui(ui, |ui| {
         for p in [LightPlacement::Eye, LightPlacement::World, LightPlacement::Object] {
             let label = placement_label(&p);
             ui.selectable_value(&mut l.placement, p, label);
         }
     });
 
-    color_ui(ui, "Light ambient", &mut l.ambient, false);
-    color_ui(ui, "Light diffuse", &mut l.diffuse, false);
-    color_ui(ui, "Light specular", &mut l.specular, false);
+    color_ui(ui, &t!("light-ambient"), &mut l.ambient, false);
+    color_ui(ui, &t!("light-diffuse"), &mut l.diffuse, false);
+    color_ui(ui, &t!("light-specular"), &mut l.specular, false);
 
     ui.add_enabled_ui(!directional, |ui| {
-        slider_ui(ui, "Constant attenuation", &mut l.attenuation[0], 0.0..=10.0, true);
-        slider_ui(ui, "Linear attenuation", &mut l.attenuation[1], 0.0..=1.0, true);
-        slider_ui(ui, "Quadratic attenuation", &mut l.attenuation[2], 0.0..=0.1, true);
+        slider_ui(ui, &t!("attenuation-constant"), &mut l.attenuation[0], 0.0..=10.0, true);
+        slider_ui(ui, &t!("attenuation-linear"), &mut l.attenuation[1], 0.0..=1.0, true);
+        slider_ui(ui, &t!("attenuation-quadratic"), &mut l.attenuation[2], 0.0..=0.1, true);
     });
     if directional {
-        ui.small("Attenuation applies to positional lights only.");
+        ui.small(t!("attenuation-positional-only"));
     }
 
     let mut spot = l.is_spot();
-    if ui.checkbox(&mut spot, "Spotlight").on_hover_text("A new spotlight aims at the object in the view").changed() {
+    if ui.checkbox(&mut spot, t!("spotlight")).on_hover_text(t!("spotlight-hover")).changed() {
         l.spot_cutoff = if spot { 30.0 } else { 180.0 };
         if let (true, Some(Some(aim))) = (spot, aims.get(i)) {
             l.spot_direction = *aim;
         }
     }
     if spot {
-        vec3_ui(ui, "Spot direction", &mut l.spot_direction, 0.01);
-        slider_ui(ui, "Spot cutoff", &mut l.spot_cutoff, 0.0..=90.0, false);
-        slider_ui(ui, "Spot exponent", &mut l.spot_exponent, 0.0..=128.0, false);
+        vec3_ui(ui, &t!("spot-direction"), &mut l.spot_direction, 0.01);
+        slider_ui(ui, &t!("spot-cutoff"), &mut l.spot_cutoff, 0.0..=90.0, false);
+        slider_ui(ui, &t!("spot-exponent"), &mut l.spot_exponent, 0.0..=128.0, false);
     }
 }
 
-fn material_ui(ui: &mut Ui, m: &mut Material, prefix: &str) {
-    let current = materials::name_of(m).unwrap_or("custom");
-    ComboBox::from_label(format!("{prefix}preset")).selected_text(current).show_ui(ui, |ui| {
+fn material_ui(ui: &mut Ui, m: &mut Material, back: bool) {
+    // "Material shininess" or "Back shininess", as one message each.
+    let label = |field: &str| {
+        let side = if back { "back" } else { "material" };
+        phonglab_core::locale::tr(&format!("{side}-{field}"))
+    };
+    let custom = t!("material-custom");
+    let current = materials::name_of(m).unwrap_or(&custom);
+    ComboBox::from_label(label("preset")).selected_text(current).show_ui(ui, |ui| {
         for named in materials::classic() {
             if ui.selectable_label(current == named.name, &named.name).clicked() {
                 *m = named.material.clone();
             }
         }
     });
-    color_ui(ui, &format!("{prefix}ambient"), &mut m.ambient, false);
-    color_ui(ui, &format!("{prefix}diffuse"), &mut m.diffuse, true);
-    color_ui(ui, &format!("{prefix}specular"), &mut m.specular, false);
-    color_ui(ui, &format!("{prefix}emission"), &mut m.emission, false);
-    slider_ui(ui, &format!("{prefix}shininess"), &mut m.shininess, 0.0..=128.0, false);
+    color_ui(ui, &label("ambient"), &mut m.ambient, false);
+    color_ui(ui, &label("diffuse"), &mut m.diffuse, true);
+    color_ui(ui, &label("specular"), &mut m.specular, false);
+    color_ui(ui, &label("emission"), &mut m.emission, false);
+    slider_ui(ui, &label("shininess"), &mut m.shininess, 0.0..=128.0, false);
 }
 
 fn material_section_ui(ui: &mut Ui, doc: &mut Document) {
-    material_ui(ui, &mut doc.scene.material, "Material ");
+    material_ui(ui, &mut doc.scene.material, false);
     if doc.scene.light_model.two_sided {
         let mut separate = doc.scene.back_material.is_some();
-        if ui.checkbox(&mut separate, "Separate back material").changed() {
+        if ui.checkbox(&mut separate, t!("separate-back-material")).changed() {
             doc.scene.back_material = separate.then(|| doc.scene.material.clone());
         }
         if let Some(b) = &mut doc.scene.back_material {
-            material_ui(ui, b, "Back ");
+            material_ui(ui, b, true);
         }
     }
 }
 
 fn light_model_ui(ui: &mut Ui, doc: &mut Document) {
     let lm = &mut doc.scene.light_model;
-    color_ui(ui, "Scene ambient", &mut lm.ambient, false);
-    ui.checkbox(&mut lm.local_viewer, "Local viewer");
-    ui.checkbox(&mut lm.two_sided, "Two-sided lighting");
-    ui.checkbox(&mut lm.separate_specular, "Separate specular colour");
+    color_ui(ui, &t!("scene-ambient"), &mut lm.ambient, false);
+    ui.checkbox(&mut lm.local_viewer, t!("local-viewer"));
+    ui.checkbox(&mut lm.two_sided, t!("two-sided"));
+    ui.checkbox(&mut lm.separate_specular, t!("separate-specular"));
     let label = |m: NormalMode| match m {
-        NormalMode::AsIs => "as transformed",
-        NormalMode::Normalize => "GL_NORMALIZE",
-        NormalMode::Rescale => "GL_RESCALE_NORMAL",
+        NormalMode::AsIs => t!("normals-as-is"),
+        NormalMode::Normalize => "GL_NORMALIZE".to_string(),
+        NormalMode::Rescale => "GL_RESCALE_NORMAL".to_string(),
     };
     let nm = &mut doc.scene.normal_mode;
-    ComboBox::from_label("Normals").selected_text(label(*nm)).show_ui(ui, |ui| {
+    ComboBox::from_label(t!("normals")).selected_text(label(*nm)).show_ui(ui, |ui| {
         for m in [NormalMode::AsIs, NormalMode::Normalize, NormalMode::Rescale] {
             ui.selectable_value(nm, m, label(m));
         }
@@ -220,9 +241,9 @@ fn light_model_ui(ui: &mut Ui, doc: &mut Document) {
 
 fn vertex_ui(ui: &mut Ui, doc: &mut Document) {
     let v = &mut doc.scene.vertex;
-    vec4_ui(ui, "Vertex", &mut v.position, 1.0);
-    vec3_ui(ui, "Normal", &mut v.normal, 0.01);
-    if ui.button("Normalise the normal").clicked()
+    vec4_ui(ui, &t!("vertex"), &mut v.position, 1.0);
+    vec3_ui(ui, &t!("normal"), &mut v.normal, 0.01);
+    if ui.button(t!("normalise-normal")).clicked()
         && let Some(n) = v.normal.try_normalize()
     {
         v.normal = n;
@@ -237,9 +258,9 @@ fn camera_ui(ui: &mut Ui, doc: &mut Document) {
         CameraSpec::Matrix(doc.scene.eye_from_world),
     ];
     let current = doc.camera.kind_label();
-    ComboBox::from_label("Camera").selected_text(current).show_ui(ui, |ui| {
+    ComboBox::from_label(t!("camera")).selected_text(doc.camera.kind_name()).show_ui(ui, |ui| {
         for k in kinds {
-            if ui.selectable_label(current == k.kind_label(), k.kind_label()).clicked() && current != k.kind_label() {
+            if ui.selectable_label(current == k.kind_label(), k.kind_name()).clicked() && current != k.kind_label() {
                 doc.camera = k;
             }
         }
@@ -254,23 +275,21 @@ fn camera_ui(ui: &mut Ui, doc: &mut Document) {
             ui.small(worksheet_modelview_note(*i));
         }
         CameraSpec::LookAt { eye, centre, up } => {
-            vec3_ui(ui, "Eye", eye, 0.05);
-            vec3_ui(ui, "Centre", centre, 0.05);
-            vec3_ui(ui, "Up", up, 0.05);
+            vec3_ui(ui, &t!("camera-eye"), eye, 0.05);
+            vec3_ui(ui, &t!("camera-centre"), centre, 0.05);
+            vec3_ui(ui, &t!("camera-up"), up, 0.05);
         }
         CameraSpec::OpenFrameworks { width, height } => {
-            number_ui(ui, "Window width", width, 1.0);
-            number_ui(ui, "Window height", height, 1.0);
-            ui.small(format!(
-                "Eye distance (H/2)/tan(30 deg) = {:.3}",
-                phonglab_core::transform::of_camera_distance(*height)
-            ));
+            number_ui(ui, &t!("window-width"), width, 1.0);
+            number_ui(ui, &t!("window-height"), height, 1.0);
+            let d = phonglab_core::transform::of_camera_distance(*height);
+            ui.small(t!("of-eye-distance", distance = phonglab_core::locale::num(d, 7)));
         }
         CameraSpec::Matrix(m) => matrix_ui(ui, m),
     }
     ui.separator();
-    ui.label("Object placement (world from object)");
-    named_matrix_ui(ui, &mut doc.scene.world_from_object, "Object");
+    ui.label(t!("object-placement"));
+    named_matrix_ui(ui, &mut doc.scene.world_from_object, &t!("object-matrix"));
 }
 
 fn matrix_ui(ui: &mut Ui, m: &mut DMat4) {
@@ -285,14 +304,16 @@ fn named_matrix_ui(ui: &mut Ui, m: &mut DMat4, name: &str) {
     egui::Grid::new(format!("{name} matrix")).show(ui, |ui| {
         ui.label("");
         for c in 0..4 {
-            ui.small(format!("column {c}"));
+            ui.small(t!("matrix-column", column = c.to_string()));
         }
         ui.end_row();
         for (r, row) in rows.iter_mut().enumerate() {
-            ui.small(format!("{name} row {r}"));
+            ui.small(t!("matrix-row", name = name, row = r.to_string()));
             let (mut typed_row, mut refused) = (None, None);
             for (c, x) in row.iter_mut().enumerate() {
-                let shown = NumberField::new(x, format!("{name} row {r} column {c}")).show_in_row(ui, 4);
+                let shown =
+                    NumberField::new(x, t!("matrix-cell", name = name, row = r.to_string(), column = c.to_string()))
+                        .show_in_row(ui, 4);
                 changed |= shown.response.changed();
                 typed_row = typed_row.or(shown.row);
                 refused = refused.or(shown.refused);
@@ -317,10 +338,10 @@ fn named_matrix_ui(ui: &mut Ui, m: &mut DMat4, name: &str) {
 /// (M^-1)^T n point 13.5° and 48° apart.
 pub fn worksheet_modelview_note(k: u8) -> String {
     let what = match k {
-        1 => "the openFrameworks camera, translate z by −665.108",
-        2 => "a rotation about x, as printed (one entry with a digit less, −0.85749)",
-        3 | 4 => "built from 15/17 and 8/17, as the worksheet prints it",
-        _ => "a 3-4-5 rotation about x and translate z by −960",
+        1 => t!("mview1-what"),
+        2 => t!("mview2-what"),
+        3 | 4 => t!("mview34-what"),
+        _ => t!("mview5-what"),
     };
     let Some(m) = phonglab_core::transform::worksheet_modelview(usize::from(k)) else { return String::new() };
     let check = phonglab_core::transform::RotationCheck::of(&m, DVec3::Z);

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 use egui::Ui;
 use phonglab_core::Document;
+use phonglab_core::t;
 
 use super::state::{AppState, Message};
 
@@ -19,23 +20,26 @@ pub fn write_document(doc: &Document, path: &Path) -> Result<(), String> {
 /// The app's first scene when it is started with a file (`phonglab FILE.toml`): that file,
 /// or, when it cannot be used, the default scene (the worksheet), saying why.
 pub fn open_at_start(state: &mut AppState, path: &Path) {
-    open(state, path);
-    if let Some(Message::Refused(why)) = &state.message {
-        let why = why.replace(" The current scene is unchanged.", "");
+    if let Err(why) = open_or_why(state, path) {
         state.doc = Document::default();
-        state.message = Some(Message::Refused(format!("{why} Showing the worksheet instead.")));
+        state.message = Some(Message::Refused(t!("not-opened-worksheet", why = why)));
     }
 }
 
 /// Opens a scene file into the app, or says why not and keeps the current scene.
 pub fn open(state: &mut AppState, path: &Path) {
+    if let Err(why) = open_or_why(state, path) {
+        refuse(state, why);
+    }
+}
+
+/// Opens a scene file (or an OBJ mesh) into the app, or returns why not (the scene stays).
+fn open_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
     if is_obj(path) {
-        return open_obj(state, path);
+        return open_obj_or_why(state, path);
     }
-    match crate::input_file::read_capped(path, crate::input_file::MAX_SCENE_BYTES, "scene files") {
-        Ok(bytes) => open_bytes(state, &bytes, path),
-        Err(e) => refuse(state, e),
-    }
+    let bytes = crate::input_file::read_capped(path, crate::input_file::MAX_SCENE_BYTES, "scene files")?;
+    open_bytes_or_why(state, &bytes, path)
 }
 
 /// Does `path` name an OBJ mesh (rather than a scene file)?
@@ -46,54 +50,60 @@ pub fn is_obj(path: &Path) -> bool {
 /// Shows the OBJ mesh at `path` in the shaded view (the scene stays), or says why not with
 /// the line at fault; says what was done to the file (fanned, normals computed, fitted).
 pub fn open_obj(state: &mut AppState, path: &Path) {
+    if let Err(why) = open_obj_or_why(state, path) {
+        refuse(state, why);
+    }
+}
+
+fn open_obj_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
     let full = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
     let mut c = state.doc.clone();
     c.view.object = phonglab_core::ObjectKind::Obj;
     c.view.obj = Some(full.display().to_string());
     let loaded = c.view.obj_mesh();
-    if state.apply(c) {
-        let what = match loaded {
-            Ok(o) => format!(
-                "{} triangles, {} vertices; {}",
-                o.mesh.triangle_count(),
-                o.mesh.positions.len(),
-                o.notes.join("; ")
-            ),
-            Err(e) => e.to_string(),
-        };
-        state.message = Some(Message::Info(format!("Opened the mesh {}: {what}.", path.display())));
-    } else if let Some(Message::Refused(m)) = &state.message {
-        let m = m.replace("Refused: ", "");
-        refuse(state, m.replace(" The scene keeps its last valid value.", ""));
-    }
+    state.apply_or_why(c)?;
+    let what = match loaded {
+        Ok(o) => t!(
+            "mesh-summary",
+            triangles = o.mesh.triangle_count(),
+            vertices = o.mesh.positions.len(),
+            notes = o.notes.join("; ")
+        ),
+        Err(e) => e.to_string(),
+    };
+    state.message = Some(Message::Info(t!("opened-mesh", path = path.display().to_string(), what = what)));
+    Ok(())
 }
 
 /// Opens a scene from the bytes of the file at `path`, or says why not.
 fn open_bytes(state: &mut AppState, bytes: &[u8], path: &Path) {
-    if is_obj(path) {
-        return open_obj(state, path);
-    }
-    let Ok(text) = std::str::from_utf8(bytes) else {
-        return refuse(state, format!("{} is not a text file", path.display()));
-    };
-    match Document::from_toml_in(text, path.parent()) {
-        Ok(doc) => {
-            state.load(doc, &path.display().to_string());
-            state.ui.file_path = path.display().to_string();
-        }
-        Err(e) => refuse(state, format!("{}: {e}", path.display())),
+    if let Err(why) = open_bytes_or_why(state, bytes, path) {
+        refuse(state, why);
     }
 }
 
+fn open_bytes_or_why(state: &mut AppState, bytes: &[u8], path: &Path) -> Result<(), String> {
+    if is_obj(path) {
+        return open_obj_or_why(state, path);
+    }
+    let Ok(text) = std::str::from_utf8(bytes) else {
+        return Err(t!("not-text", path = path.display().to_string()));
+    };
+    let doc = Document::from_toml_in(text, path.parent()).map_err(|e| format!("{}: {e}", path.display()))?;
+    state.load(doc, &path.display().to_string());
+    state.ui.file_path = path.display().to_string();
+    Ok(())
+}
+
 fn refuse(state: &mut AppState, why: String) {
-    state.message = Some(Message::Refused(format!("Not opened: {why}. The current scene is unchanged.")));
+    state.message = Some(Message::Refused(t!("not-opened", why = why)));
 }
 
 /// Saves the current scene, and says where (or why not).
 pub fn save(state: &mut AppState, path: &Path) {
     state.message = Some(match write_document(&state.doc, path) {
-        Ok(()) => Message::Info(format!("Saved {}.", path.display())),
-        Err(e) => Message::Refused(format!("Not saved: {e}.")),
+        Ok(()) => Message::Info(t!("saved", path = path.display().to_string())),
+        Err(e) => Message::Refused(t!("not-saved", error = e)),
     });
 }
 
@@ -104,26 +114,26 @@ fn path_of(state: &AppState) -> Option<PathBuf> {
 
 /// The path field and the Open and Save buttons (Enter in the field opens).
 pub fn file_ui(ui: &mut Ui, state: &mut AppState) {
-    let label = ui.label("Scene file:");
+    let label = ui.label(t!("scene-file"));
     let field = ui
-        .add(egui::TextEdit::singleline(&mut state.ui.file_path).desired_width(220.0).hint_text("path/to/scene.toml"))
+        .add(egui::TextEdit::singleline(&mut state.ui.file_path).desired_width(220.0).hint_text(t!("scene-file-hint")))
         .labelled_by(label.id);
     let enter = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
-    if ui.button("Open").on_hover_text("Open the scene file at this path (Ctrl+O)").clicked() || enter {
+    if ui.button(t!("open")).on_hover_text(t!("open-hover")).clicked() || enter {
         open_typed(state);
     }
-    if ui.button("Save").on_hover_text("Save the scene to this path (Ctrl+S)").clicked() {
+    if ui.button(t!("save")).on_hover_text(t!("save-hover")).clicked() {
         save_typed(state);
     }
     if state.ui.file_dialogs {
         let start = path_of(state);
-        if ui.button("Open…").on_hover_text("Choose a scene file in the system's file dialog").clicked()
+        if ui.button(t!("open-dialog")).on_hover_text(t!("open-dialog-hover")).clicked()
             && let Some(p) = crate::file_dialog::pick_scene_to_open(start.as_deref())
         {
             state.ui.file_path = p.display().to_string();
             open(state, &p);
         }
-        if ui.button("Save as…").on_hover_text("Choose where to save in the system's file dialog").clicked()
+        if ui.button(t!("save-as")).on_hover_text(t!("save-as-hover")).clicked()
             && let Some(p) = crate::file_dialog::pick_scene_to_save(start.as_deref())
         {
             state.ui.file_path = p.display().to_string();
@@ -136,7 +146,7 @@ pub fn file_ui(ui: &mut Ui, state: &mut AppState) {
 pub fn open_typed(state: &mut AppState) {
     match path_of(state) {
         Some(p) => open(state, &p),
-        None => state.message = Some(Message::Refused("Type the scene file's path first.".into())),
+        None => state.message = Some(Message::Refused(t!("type-path-first"))),
     }
 }
 
@@ -144,7 +154,7 @@ pub fn open_typed(state: &mut AppState) {
 pub fn save_typed(state: &mut AppState) {
     match path_of(state) {
         Some(p) => save(state, &p),
-        None => state.message = Some(Message::Refused("Type the scene file's path first.".into())),
+        None => state.message = Some(Message::Refused(t!("type-path-first"))),
     }
 }
 
@@ -159,7 +169,7 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
         painter.text(
             rect.center(),
             egui::Align2::CENTER_CENTER,
-            "Drop a scene file (.toml) or a mesh (.obj) to open it",
+            t!("drop-to-open"),
             egui::FontId::proportional(28.0),
             egui::Color32::WHITE,
         );
@@ -172,14 +182,14 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
     let bytes = if path.exists() {
         crate::input_file::read_capped(&path, crate::input_file::MAX_SCENE_BYTES, "scene files")
     } else {
-        file.bytes().map_err(|e| format!("cannot read {}: {e}", path.display()))
+        file.bytes().map_err(|e| t!("cannot-read", path = path.display().to_string(), error = e.to_string()))
     };
     match bytes {
         Ok(bytes) => open_bytes(state, &bytes, &path),
         Err(e) => refuse(state, e),
     }
     if dropped.len() > 1 {
-        let extra = format!(" ({} files were dropped; only the first is opened.)", dropped.len());
+        let extra = t!("dropped-several", count = dropped.len());
         if let Some(Message::Info(m) | Message::Refused(m)) = &mut state.message {
             m.push_str(&extra);
         }

@@ -34,11 +34,11 @@ impl RendererChoice {
     pub const ALL: [RendererChoice; 3] = [RendererChoice::Auto, RendererChoice::Cpu, RendererChoice::Gpu];
 
     /// The menu's words.
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            RendererChoice::Auto => "Automatic (GPU if a real one)",
-            RendererChoice::Cpu => "CPU (the reference)",
-            RendererChoice::Gpu => "GPU (even a software one)",
+            RendererChoice::Auto => phonglab_core::t!("renderer-auto"),
+            RendererChoice::Cpu => phonglab_core::t!("renderer-cpu"),
+            RendererChoice::Gpu => phonglab_core::t!("renderer-gpu"),
         }
     }
 }
@@ -76,12 +76,12 @@ pub fn install(render_state: &RenderState) -> GpuInfo {
 
 /// Why the generated program cannot draw `doc`'s view with power function `pow`, or
 /// `None` when it can.
-pub fn cannot_draw(doc: &Document, pow: PowFn) -> Option<&'static str> {
+pub fn cannot_draw(doc: &Document, pow: PowFn) -> Option<String> {
     if doc.view.shading == Shading::Flat {
-        return Some("Flat shading is drawn by the CPU renderer (the generator writes Gouraud and Phong)");
+        return Some(phonglab_core::t!("cpu-flat"));
     }
     if pow != PowFn::Exact {
-        return Some("an approximate power function is studied on the CPU renderer (the GPU's pow is its own)");
+        return Some(phonglab_core::t!("cpu-approximate-pow"));
     }
     None
 }
@@ -89,16 +89,16 @@ pub fn cannot_draw(doc: &Document, pow: PowFn) -> Option<&'static str> {
 /// Why `doc`'s view is drawn by the CPU renderer, or `None` when the GPU draws it.
 pub fn why_cpu(gpu: Option<&GpuInfo>, choice: RendererChoice, doc: &Document, pow: PowFn) -> Option<String> {
     let Some(gpu) = gpu else {
-        return Some("no wgpu adapter here (headless, or another backend)".into());
+        return Some(phonglab_core::t!("cpu-no-adapter"));
     };
     match choice {
-        RendererChoice::Cpu => return Some("the CPU renderer is chosen under View options".into()),
+        RendererChoice::Cpu => return Some(phonglab_core::t!("cpu-chosen")),
         RendererChoice::Auto if gpu.software => {
-            return Some(format!("the adapter ({}) is a software one, no faster than the CPU renderer", gpu.name));
+            return Some(phonglab_core::t!("cpu-software-adapter", adapter = &gpu.name));
         }
         _ => {}
     }
-    cannot_draw(doc, pow).map(str::to_string)
+    cannot_draw(doc, pow)
 }
 
 /// What one GPU picture needs, built each frame by the view and handed to the callback.

@@ -46,10 +46,10 @@ impl Theme {
     }
 
     /// "light" or "dark".
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            Theme::Light => "Light theme",
-            Theme::Dark => "Dark theme",
+            Theme::Light => phonglab_core::t!("theme-light"),
+            Theme::Dark => phonglab_core::t!("theme-dark"),
         }
     }
 }
@@ -84,6 +84,11 @@ pub struct Layout {
     pub beside: Beside,
     /// Where the divider between the pictures and the plot was dragged.
     pub dividers: super::centre_layout::Dividers,
+    /// The language chosen in the menu (`en`, `pt-PT`, `pt-BR`); `None`: the command
+    /// line's or the system's.
+    pub language: Option<String>,
+    /// The decimal mark chosen in the menu (`point`, `comma`); `None`: the language's.
+    pub decimal: Option<String>,
 }
 
 impl Default for Layout {
@@ -97,6 +102,8 @@ impl Default for Layout {
             step: None,
             beside: Beside::Vectors,
             dividers: Default::default(),
+            language: None,
+            decimal: None,
         }
     }
 }
@@ -117,6 +124,17 @@ impl Layout {
     /// (an arrangement is not worth a message).
     pub fn from_ron(text: Option<&str>) -> Layout {
         text.and_then(|t| ron::from_str(t).ok()).unwrap_or_default()
+    }
+
+    /// The locale the window speaks: the menu's choices over the process's default.
+    pub fn locale(&self) -> phonglab_core::locale::Locale {
+        use phonglab_core::locale::{DecimalMark, Lang, Locale, default_locale};
+        let lang = self.language.as_deref().and_then(Lang::parse).unwrap_or(default_locale().lang);
+        let decimal = self.decimal.as_deref().and_then(DecimalMark::parse).unwrap_or_else(|| {
+            // The process's mark when the language is the process's; else the language's own.
+            if self.language.is_none() { default_locale().decimal } else { lang.decimal_mark() }
+        });
+        Locale { lang, decimal }
     }
 
     /// The controls panel's starting width for a window `width` points wide.

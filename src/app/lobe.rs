@@ -103,7 +103,7 @@ impl Lobe {
 const STEPS: usize = 180;
 
 /// One curve: its name, colour, (φ, value) points, and whether it is the scene's model.
-type Curve = (&'static str, Color32, Vec<(f64, f64)>, bool);
+type Curve = (String, Color32, Vec<(f64, f64)>, bool);
 
 fn sweep(f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
     (0..=STEPS)
@@ -121,12 +121,13 @@ fn coefficient(name: &str, product: glam::DVec3, value: f64) -> String {
     if grey {
         format!("{name} = {}", fmt(value))
     } else {
-        format!("{name} = {} (the luminance of [{} {} {}])", fmt(value), fmt(product.x), fmt(product.y), fmt(product.z))
+        let colour = format!("[{} {} {}]", fmt(product.x), fmt(product.y), fmt(product.z));
+        phonglab_core::t!("lobe-luminance", name = name, value = fmt(value), colour = colour)
     }
 }
 
 fn fmt(x: f64) -> String {
-    phonglab_core::explain::fmt_sig(x, 4)
+    phonglab_core::locale::num(x, 4)
 }
 
 /// The least side of each of the two plots (points): below it they scroll, rather than
@@ -153,7 +154,7 @@ fn legend_ui(ui: &mut Ui, curves: &[Curve]) {
 /// The polar plot and the plot against φ, with the legend above them.
 pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
     let Some((lobe, phi_v)) = Lobe::of(scene, eval) else {
-        ui.label("No light with a defined L at this vertex: nothing to plot.");
+        ui.label(phonglab_core::t!("lobe-no-light"));
         return;
     };
     let bg = ui.visuals().panel_fill;
@@ -163,17 +164,25 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
     let m = &scene.material;
     let kd = coefficient("kd", (m.diffuse * light.diffuse).truncate(), lobe.kd);
     let ks = coefficient("ks", (m.specular * light.specular).truncate(), lobe.ks);
-    ui.label(format!(
-        "Light {}: θ = {:.1}°, n = {}, {kd}, {ks}; the vertex's V at φ = {:.1}°",
-        eval.lights[0].index,
-        lobe.theta.to_degrees(),
-        lobe.n,
-        phi_v.to_degrees()
+    let deg = |a: f64| phonglab_core::locale::decimal(&format!("{:.1}", a.to_degrees()));
+    ui.label(phonglab_core::t!(
+        "lobe-caption",
+        light = eval.lights[0].index.to_string(),
+        theta = deg(lobe.theta),
+        n = phonglab_core::locale::num(lobe.n, 6),
+        kd = kd,
+        ks = ks,
+        phi = deg(phi_v)
     ));
     let curves: [Curve; 3] = [
-        ("diffuse kd cos θ", ink(palette::L), sweep(|_| lobe.diffuse()), false),
-        ("Blinn-Phong ks (N·H)^n", ink(palette::H), sweep(|p| lobe.blinn(p)), chosen == SpecularModel::BlinnPhong),
-        ("Phong ks (R·V)^n", ink(palette::SPOT), sweep(|p| lobe.phong(p)), chosen == SpecularModel::Phong),
+        (phonglab_core::t!("lobe-diffuse"), ink(palette::L), sweep(|_| lobe.diffuse()), false),
+        (
+            "Blinn-Phong ks (N·H)^n".into(),
+            ink(palette::H),
+            sweep(|p| lobe.blinn(p)),
+            chosen == SpecularModel::BlinnPhong,
+        ),
+        ("Phong ks (R·V)^n".into(), ink(palette::SPOT), sweep(|p| lobe.phong(p)), chosen == SpecularModel::Phong),
     ];
     legend_ui(ui, &curves);
     let avail = ui.available_size();
@@ -191,7 +200,7 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
             .show(ui, |p| {
                 for (name, c, pts, on) in &curves {
                     let xy: Vec<[f64; 2]> = pts.iter().map(|(phi, r)| [r * phi.sin(), r * phi.cos()]).collect();
-                    p.line(Line::new(*name, PlotPoints::from(xy)).color(*c).width(if *on { 3.0 } else { 1.5 }));
+                    p.line(Line::new(name.clone(), PlotPoints::from(xy)).color(*c).width(if *on { 3.0 } else { 1.5 }));
                 }
                 let ray = |a: f64| PlotPoints::from(vec![[0.0, 0.0], [a.sin() * 1.05, a.cos() * 1.05]]);
                 p.line(Line::new("N", ray(0.0)).color(ink(palette::N)));
@@ -205,7 +214,7 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
         Plot::new("lobe against angle")
             .width(w)
             .height(h)
-            .x_axis_label("φ, degrees from N")
+            .x_axis_label(phonglab_core::t!("lobe-axis"))
             .allow_drag(false)
             .allow_zoom(false)
             .allow_scroll(false)
@@ -213,9 +222,13 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
             .show(ui, |p| {
                 for (name, c, pts, on) in &curves {
                     let xy: Vec<[f64; 2]> = pts.iter().map(|(phi, r)| [phi.to_degrees(), *r]).collect();
-                    p.line(Line::new(*name, PlotPoints::from(xy)).color(*c).width(if *on { 3.0 } else { 1.5 }));
+                    p.line(Line::new(name.clone(), PlotPoints::from(xy)).color(*c).width(if *on { 3.0 } else { 1.5 }));
                 }
-                p.vline(VLine::new("the vertex's V", phi_v.to_degrees()).color(ink(palette::V)).width(2.0));
+                p.vline(
+                    VLine::new(phonglab_core::t!("lobe-vertex-v"), phi_v.to_degrees())
+                        .color(ink(palette::V))
+                        .width(2.0),
+                );
             });
     };
     egui::ScrollArea::both().auto_shrink(false).show(ui, |ui| {

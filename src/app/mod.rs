@@ -29,6 +29,7 @@ pub mod view_cache;
 pub mod widgets;
 
 use egui::Ui;
+use phonglab_core::t;
 use phonglab_core::{CameraSpec, NormalMode, RuleSet, SpecularModel, materials};
 
 pub use state::AppState;
@@ -113,55 +114,44 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         ui.strong("phonglab");
         ui.separator();
         let layout = &mut state.ui.layout;
-        let present = if layout.presenting { "Leave (F5)" } else { "Present (F5)" };
-        if ui
-            .selectable_label(layout.presenting, present)
-            .on_hover_text("Large type; the controls in a drawer")
-            .clicked()
-        {
+        let present = if layout.presenting { t!("leave-presenting") } else { t!("present") };
+        if ui.selectable_label(layout.presenting, present).on_hover_text(t!("present-hover")).clicked() {
             layout.presenting = !layout.presenting;
         }
         if layout.presenting {
-            ui.toggle_value(&mut layout.drawer_open, "Controls drawer")
-                .on_hover_text("The scene's controls, in a drawer");
+            ui.toggle_value(&mut layout.drawer_open, t!("controls-drawer")).on_hover_text(t!("controls-drawer-hover"));
         } else {
-            ui.toggle_value(&mut layout.controls_open, "Controls");
-            ui.toggle_value(&mut layout.calculation_open, "Calculation");
+            ui.toggle_value(&mut layout.controls_open, t!("controls"));
+            ui.toggle_value(&mut layout.calculation_open, t!("calculation"));
         }
-        if ui.button(layout.theme.toggled().label()).on_hover_text("Both themes are high-contrast").clicked() {
+        if ui.button(layout.theme.toggled().label()).on_hover_text(t!("theme-hover")).clicked() {
             layout.theme = layout.theme.toggled();
         }
         ui.separator();
-        if ui.button("Reset to worksheet").on_hover_text("Ctrl+R").clicked() {
+        if ui.button(t!("reset-worksheet")).on_hover_text("Ctrl+R").clicked() {
             state.reset_to_worksheet();
         }
         undo_buttons_ui(ui, state);
-        ui.menu_button("Presets", |ui| presets_menu_ui(ui, state));
+        ui.menu_button(t!("presets"), |ui| presets_menu_ui(ui, state));
         let was_open = state.compare.open;
-        ui.toggle_value(&mut state.compare.open, "Compare")
-            .on_hover_text("Pin the scene as A, change anything, and see A and B side by side");
+        ui.toggle_value(&mut state.compare.open, t!("compare")).on_hover_text(t!("compare-hover"));
         if state.compare.open && !was_open && state.compare.a.is_none() {
             // Opened: A is the scene as it is, so the first change already compares.
             state.compare.pin(&state.doc, state.ui.precision, state.ui.pow);
         }
-        if ui
-            .toggle_value(&mut state.quiz.open, "Quiz")
-            .on_hover_text("Every value of the calculation behind a field: type them step by step")
-            .clicked()
+        if ui.toggle_value(&mut state.quiz.open, t!("quiz")).on_hover_text(t!("quiz-hover")).clicked()
             && state.quiz.open
             && state.quiz.doc.is_none()
         {
             state.quiz.start(state.doc.clone());
         }
-        ui.toggle_value(&mut state.shader.open, "Shader")
-            .on_hover_text("The GLSL or WGSL program this scene compiles to: only the stages it needs");
+        ui.toggle_value(&mut state.shader.open, t!("shader")).on_hover_text(t!("shader-hover"));
         ui.separator();
         if !state.ui.layout.presenting {
-            ui.label("Precision:");
+            ui.label(t!("precision"));
         }
-        ui.radio_value(&mut state.ui.precision, Precision::F32, "f32")
-            .on_hover_text("Evaluate in single precision, as OpenGL does");
-        ui.radio_value(&mut state.ui.precision, Precision::F64, "f64").on_hover_text("Evaluate in double precision");
+        ui.radio_value(&mut state.ui.precision, Precision::F32, "f32").on_hover_text(t!("f32-hover"));
+        ui.radio_value(&mut state.ui.precision, Precision::F64, "f64").on_hover_text(t!("f64-hover"));
         if state.ui.layout.presenting {
             return;
         }
@@ -171,30 +161,52 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
             }
         });
         ui.separator();
-        ui.toggle_value(&mut state.cost.open, "Cost of accuracy")
-            .on_hover_text("What each shading, tessellation and approximation costs in time and in error");
+        ui.toggle_value(&mut state.cost.open, t!("cost-of-accuracy")).on_hover_text(t!("cost-hover"));
         ui.separator();
         files::file_ui(ui, state);
         ui.separator();
-        if ui.button("Help (F1)").clicked() {
+        language_menu_ui(ui, &mut state.ui.layout);
+        if ui.button(t!("help-button")).clicked() {
             state.ui.show_help = !state.ui.show_help;
         }
         ui.label(egui::RichText::new(&state.doc.name).weak());
     });
 }
 
+/// The language and decimal mark menu (kept across restarts).
+fn language_menu_ui(ui: &mut Ui, layout: &mut layout::Layout) {
+    use phonglab_core::locale::{DecimalMark, Lang};
+    let now = layout.locale();
+    ui.menu_button(now.lang.code(), |ui| {
+        for lang in Lang::ALL {
+            if ui.radio(now.lang == lang, lang.name()).clicked() {
+                layout.language = Some(lang.code().to_string());
+                layout.decimal = None;
+            }
+        }
+        ui.separator();
+        for (mark, text) in [(DecimalMark::Comma, "0,5"), (DecimalMark::Point, "0.5")] {
+            if ui.radio(now.decimal == mark, text).clicked() {
+                layout.decimal = Some(if mark == DecimalMark::Comma { "comma" } else { "point" }.to_string());
+            }
+        }
+    })
+    .response
+    .on_hover_text(phonglab_core::t!("language-menu-hover"));
+}
+
 /// Undo and Redo, each saying what it would change.
 fn undo_buttons_ui(ui: &mut Ui, state: &mut AppState) {
-    let undo = state.history.undo_label().map(|l| format!("Undo {l} (Ctrl+Z)"));
-    let redo = state.history.redo_label().map(|l| format!("Redo {l} (Ctrl+Shift+Z, Ctrl+Y)"));
+    let undo = state.history.undo_label().map(|l| t!("undo-what", what = l));
+    let redo = state.history.redo_label().map(|l| t!("redo-what", what = l));
     // Presenting, the icons alone: the top bar keeps one row at 1280 points.
     let short = state.ui.layout.presenting;
-    let b = ui.add_enabled(undo.is_some(), egui::Button::new(if short { "⟲" } else { "⟲ Undo" }));
-    if b.on_hover_text(undo.unwrap_or_else(|| "Nothing to undo".into())).clicked() {
+    let b = ui.add_enabled(undo.is_some(), egui::Button::new(if short { "⟲".to_string() } else { t!("undo-button") }));
+    if b.on_hover_text(undo.unwrap_or_else(|| t!("nothing-to-undo"))).clicked() {
         state.undo();
     }
-    let b = ui.add_enabled(redo.is_some(), egui::Button::new(if short { "⟳" } else { "⟳ Redo" }));
-    if b.on_hover_text(redo.unwrap_or_else(|| "Nothing to redo".into())).clicked() {
+    let b = ui.add_enabled(redo.is_some(), egui::Button::new(if short { "⟳".to_string() } else { t!("redo-button") }));
+    if b.on_hover_text(redo.unwrap_or_else(|| t!("nothing-to-redo"))).clicked() {
         state.redo();
     }
 }
@@ -232,7 +244,7 @@ fn presets_menu_ui(ui: &mut Ui, state: &mut AppState) {
         entry(ui, f);
     }
     ui.separator();
-    ui.menu_button("Red Book teapots", |ui| {
+    ui.menu_button(t!("redbook-teapots"), |ui| {
         egui::ScrollArea::vertical().max_height(480.0).show(ui, |ui| {
             for f in files.iter().filter(|f| f.group == "Red Book teapots") {
                 entry(ui, f);
@@ -273,6 +285,8 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     }
     *ui.visuals_mut() = visuals;
     state.now = ctx.input(|i| i.time);
+    // The window's language, switched at once when the menu changes it.
+    phonglab_core::locale::set_thread(Some(state.ui.layout.locale()));
     for a in help::pressed(&ctx, state.quiz.open) {
         apply_action(state, a);
     }
@@ -287,8 +301,7 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
         Err(e) => {
             // The document is validated on every edit, so this is not expected; say so and
             // fall back to the worksheet rather than panic.
-            state.message =
-                Some(Message::Refused(format!("Could not evaluate the scene ({e}); back to the worksheet.")));
+            state.message = Some(Message::Refused(t!("could-not-evaluate", error = e.to_string())));
             state.doc = Default::default();
             match state.evaluate() {
                 Ok(e) => e,
@@ -384,7 +397,7 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
 
     if state.ui.show_help {
         let mut open = true;
-        egui::Window::new("Keyboard shortcuts")
+        egui::Window::new(t!("keyboard-shortcuts"))
             .open(&mut open)
             .collapsible(false)
             .resizable(false)
@@ -460,8 +473,8 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
         ui.horizontal_wrapped(|ui| {
             // Each button or label moves to the next row whole rather than breaking inside.
             ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
-            ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Vectors, "Vectors at the vertex");
-            ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Lobe, "Reflection lobe");
+            ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Vectors, t!("vectors-at-vertex"));
+            ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Lobe, t!("reflection-lobe"));
             if state.ui.layout.beside == layout::Beside::Vectors {
                 ui.separator();
                 vector_plot::view_buttons_ui(ui, &mut state.ui.orbit);
@@ -586,7 +599,7 @@ impl PhongLabApp {
         self.last_save = std::time::Instant::now();
         if let Err(e) = self.session.save() {
             log::error!("{e}");
-            self.state.message = Some(Message::Refused(format!("The session could not be saved: {e}.")));
+            self.state.message = Some(Message::Refused(t!("session-not-saved", error = e.to_string())));
         }
     }
 }
@@ -621,13 +634,7 @@ impl eframe::App for PhongLabApp {
 pub fn run(file: Option<std::path::PathBuf>, renderer: gpu_view::RendererChoice) -> eframe::Result {
     let opened = match crate::platform::storage_dir() {
         Some(dir) => session::Session::open(&dir),
-        None => (
-            session::Session::in_memory(),
-            vec![
-                "There is no folder to keep the session in (HOME is not set): this window will not save its session."
-                    .into(),
-            ],
-        ),
+        None => (session::Session::in_memory(), vec![t!("no-session-folder")]),
     };
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()

@@ -58,7 +58,7 @@ fn last_commit_id() -> Id {
 
 /// The text a value shows at rest: 6 significant digits.
 pub fn shown_text(v: f64) -> String {
-    fmt_sig(v, SHOWN_DIGITS)
+    phonglab_core::locale::decimal(&fmt_sig(v, SHOWN_DIGITS))
 }
 
 /// A number as the shortest decimal that reads back as the same `f64` (exponent form
@@ -76,9 +76,14 @@ pub fn read(text: &str, accepts: Accepts) -> Result<f64, String> {
         Accepts::Any => Ok(x),
         Accepts::Whole { min, max } => {
             if x.fract() != 0.0 {
-                Err(format!("{} is not a whole number", text.trim()))
+                Err(phonglab_core::t!("not-whole", text = text.trim()))
             } else if x < min as f64 || x > max as f64 {
-                Err(format!("{} is outside {min} to {max}", text.trim()))
+                Err(phonglab_core::t!(
+                    "outside-range",
+                    text = text.trim(),
+                    min = min.to_string(),
+                    max = max.to_string()
+                ))
             } else {
                 Ok(x)
             }
@@ -123,8 +128,8 @@ pub fn read_row(text: &str, accepts: Accepts, n: usize) -> Result<Typed, String>
             let text_of = |x: &f64| exact_text(*x);
             parts.iter().map(|x| read(&text_of(x), accepts)).collect::<Result<Vec<_>, _>>().map(Typed::Row)
         }
-        k if n == 1 => Err(format!("{k} numbers: type one")),
-        k => Err(format!("{k} numbers: type one, or all {n} of the row")),
+        k if n == 1 => Err(phonglab_core::t!("numbers-type-one", count = k)),
+        k => Err(phonglab_core::t!("numbers-type-row", count = k, fields = n)),
     }
 }
 
@@ -194,7 +199,10 @@ impl<'a> NumberField<'a> {
             draft = if escape { None } else { finish(ui, id, d, accepts, n, value, &mut row, &mut changed) };
         }
         let mut response = if editing {
-            let mut d = draft.take().unwrap_or_else(|| Draft { text: exact_text(*value), ..Draft::default() });
+            let mut d = draft.take().unwrap_or_else(|| Draft {
+                text: phonglab_core::locale::decimal(&exact_text(*value)),
+                ..Draft::default()
+            });
             let gained = !d.editing;
             d.editing = true;
             if gained {
@@ -246,7 +254,7 @@ impl<'a> NumberField<'a> {
         let refused = draft
             .as_ref()
             .and_then(|d| d.refused.as_ref())
-            .map(|why| format!("{why} (Esc: back to {})", shown_text(*value)));
+            .map(|why| phonglab_core::t!("refused-esc", why = why, value = shown_text(*value)));
         if changed {
             response.mark_changed();
         }
@@ -299,7 +307,7 @@ fn rest_ui(ui: &mut Ui, id: Id, value: &f64, draft: Option<&Draft>, width: f32, 
     }
     response = response.on_hover_cursor(egui::CursorIcon::ResizeHorizontal);
     if !refused && shown_text(*value) != exact_text(*value) {
-        response = response.on_hover_text(exact_text(*value));
+        response = response.on_hover_text(phonglab_core::locale::decimal(&exact_text(*value)));
     }
     response
 }
@@ -343,7 +351,7 @@ fn finish(
 /// A dragged value, rounded to 6 significant digits (a drag has no more precision than
 /// that), whole when the field takes whole numbers, and kept inside their range.
 fn dragged(x: f64, accepts: Accepts) -> f64 {
-    let rounded: f64 = shown_text(x).parse().unwrap_or(x);
+    let rounded: f64 = fmt_sig(x, SHOWN_DIGITS).parse().unwrap_or(x);
     match accepts {
         Accepts::Any => rounded,
         Accepts::Whole { min, max } => rounded.round().clamp(min as f64, max as f64),

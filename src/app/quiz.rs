@@ -8,9 +8,10 @@
 //! its answers are kept across restarts.
 
 use egui::{RichText, Ui};
-use phonglab_core::explain::{Explanation, Side, explain, fmt_sig, fmt_value};
+use phonglab_core::explain::{Explanation, Side, explain, fmt_value};
 use phonglab_core::quiz::{Mark, TOLERANCE, Verdict, asked, check, parse_answer, score};
 use phonglab_core::{Document, Engine};
+use phonglab_core::{locale, t};
 use serde::{Deserialize, Serialize};
 
 use super::palette;
@@ -129,9 +130,16 @@ fn inputs_text(v: &Verdict) -> String {
     let list: Vec<String> = v
         .inputs
         .iter()
-        .map(|(name, val, own)| format!("{name} = {}{}", fmt_value(val, 8), if *own { " (yours)" } else { " (key)" }))
+        .map(|(name, val, own)| {
+            let value = locale::decimal(&fmt_value(val, 8));
+            if *own {
+                t!("quiz-input-yours", name = name, value = value)
+            } else {
+                t!("quiz-input-key", name = name, value = value)
+            }
+        })
         .collect();
-    if list.is_empty() { "the givens".into() } else { list.join(", ") }
+    if list.is_empty() { t!("quiz-the-givens") } else { list.join(", ") }
 }
 
 /// The formula without OpenGL's names (which follow it in parentheses).
@@ -142,21 +150,26 @@ fn worksheet_formula(formula: &str) -> &str {
 /// What a mark says, and whether it counts as right.
 pub fn mark_text(v: &Verdict, name: &str) -> (String, bool) {
     match &v.mark {
-        Mark::Right => ("✔ right".into(), true),
+        Mark::Right => (t!("quiz-right"), true),
         Mark::RightGivenYours { yours, key } => {
             let yours = yours.join(", ");
-            (format!("✔ right, given your {yours} (the key's {yours} gives {name} = {})", fmt_value(key, 5)), true)
+            (t!("quiz-right-given", yours = yours, name = name, key = locale::decimal(&fmt_value(key, 5))), true)
         }
         Mark::Close { percent, digits } => {
-            let from = if close_to_key(v) { "the key" } else { "what your earlier answers give" };
-            (format!("≈ close: {} % from {from}; give {digits} significant digits", fmt_sig(*percent, 1)), false)
+            let percent = locale::num(*percent, 1);
+            let digits = *digits as i64;
+            if close_to_key(v) {
+                (t!("quiz-close-key", percent = percent, digits = digits), false)
+            } else {
+                (t!("quiz-close-yours", percent = percent, digits = digits), false)
+            }
         }
         Mark::Wrong => (
-            format!(
-                "✖ wrong: {} = {}, from {}",
-                worksheet_formula(&v.formula),
-                fmt_value(&v.expected, 8),
-                inputs_text(v)
+            t!(
+                "quiz-wrong",
+                formula = worksheet_formula(&v.formula),
+                value = locale::decimal(&fmt_value(&v.expected, 8)),
+                inputs = inputs_text(v)
             ),
             false,
         ),
@@ -168,21 +181,19 @@ fn close_to_key(v: &Verdict) -> bool {
 }
 
 /// The quiz's buttons, all one size (the widest's), two to a row.
-fn buttons_ui(ui: &mut Ui, labels: &[(&str, &str)]) -> Option<usize> {
+fn buttons_ui(ui: &mut Ui, labels: &[(String, String)]) -> Option<usize> {
     let font = egui::TextStyle::Button.resolve(ui.style());
     let pad = 2.0 * ui.spacing().button_padding.x;
     let widest = labels
         .iter()
-        .map(|(l, _)| {
-            ui.ctx().fonts_mut(|f| f.layout_no_wrap(l.to_string(), font.clone(), egui::Color32::WHITE).size().x)
-        })
+        .map(|(l, _)| ui.ctx().fonts_mut(|f| f.layout_no_wrap(l.clone(), font.clone(), egui::Color32::WHITE).size().x))
         .fold(0.0, f32::max)
         + pad;
     let size = egui::vec2(widest, ui.spacing().interact_size.y);
     let mut clicked = None;
     ui.horizontal_wrapped(|ui| {
         for (k, (label, hover)) in labels.iter().enumerate() {
-            if ui.add_sized(size, egui::Button::new(*label)).on_hover_text(*hover).clicked() {
+            if ui.add_sized(size, egui::Button::new(label)).on_hover_text(hover).clicked() {
                 clicked = Some(k);
             }
         }
@@ -194,20 +205,20 @@ fn buttons_ui(ui: &mut Ui, labels: &[(&str, &str)]) -> Option<usize> {
 /// generated exercise for the app to show.
 pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<Document> {
     let mut shown = None;
-    ui.heading("Quiz");
+    ui.heading(t!("quiz"));
     // Level 2 (positional with attenuation) until one is chosen.
     quiz.level = if quiz.level == 0 { 2 } else { quiz.level.clamp(1, 4) };
     ui.horizontal_wrapped(|ui| {
         let mut level = u32::from(quiz.level);
-        super::widgets::whole_number_ui(ui, "Level", &mut level, 1..=4);
+        super::widgets::whole_number_ui(ui, &t!("quiz-level"), &mut level, 1..=4);
         quiz.level = level as u8;
-        ui.small("1 directional, 2 positional with attenuation, 3 spotlights, 4 two-sided with several lights");
+        ui.small(t!("quiz-levels"));
     });
     let buttons = [
-        ("Quiz this scene", "Start over on the scene shown, every value hidden"),
-        ("New exercise", "A new scene of this level, screened as phonglab exercise screens"),
-        ("Reveal all", "Show the key's value under every step"),
-        ("Clear answers", "Start this quiz again with no answers"),
+        (t!("quiz-this-scene"), t!("quiz-this-scene-hover")),
+        (t!("quiz-new-exercise"), t!("quiz-new-exercise-hover")),
+        (t!("quiz-reveal-all"), t!("quiz-reveal-all-hover")),
+        (t!("quiz-clear"), t!("quiz-clear-hover")),
     ];
     match buttons_ui(ui, &buttons) {
         Some(0) => quiz.start(current.clone()),
@@ -222,21 +233,20 @@ pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<
         }
         _ => {}
     }
-    ui.checkbox(&mut quiz.show_answers, "Show the answers (teacher)")
-        .on_hover_text("The vertex colour, the plot's angles and every step's key");
+    ui.checkbox(&mut quiz.show_answers, t!("quiz-show-answers")).on_hover_text(t!("quiz-show-answers-hover"));
     let Some(key) = quiz.key() else {
-        ui.label("Open an exercise (phonglab exercise writes them) or any scene, then press \"Quiz this scene\", or press New exercise.");
+        ui.label(t!("quiz-nothing-open"));
         return shown;
     };
     let Some(doc) = quiz.doc.clone() else { return shown };
-    ui.label(format!(
-        "{}: type each step's value and press Enter. Right: within {} % of the value (or {} near 0). A point or a comma; a vector as 0,5; 0,3; 0,1.",
-        doc.name,
-        fmt_sig(100.0 * TOLERANCE.0, 2),
-        fmt_sig(TOLERANCE.1, 2)
+    ui.label(t!(
+        "quiz-instructions",
+        scene = &doc.name,
+        percent = locale::num(100.0 * TOLERANCE.0, 2),
+        absolute = locale::num(TOLERANCE.1, 2)
     ));
     let (right, answered, all) = score(&doc.scene, &key, &quiz.parsed());
-    ui.label(RichText::new(format!("Score: {right} of {all} ({answered} answered)")).strong());
+    ui.label(RichText::new(t!("quiz-score", right = right, all = all, answered = answered)).strong());
     ui.separator();
     // One field per step; after "Clear answers" just above, too.
     quiz.fit(key.steps.len());
@@ -265,7 +275,7 @@ fn step_ui(ui: &mut Ui, quiz: &mut QuizState, key: &Explanation, k: usize) {
         let reveal_w = 72.0;
         let w = (ui.available_width() - reveal_w - ui.spacing().item_spacing.x).max(80.0);
         let field = ui
-            .add(egui::TextEdit::singleline(&mut quiz.answers[k]).desired_width(w).hint_text("your value"))
+            .add(egui::TextEdit::singleline(&mut quiz.answers[k]).desired_width(w).hint_text(t!("quiz-your-value")))
             .labelled_by(name.id);
         if field.changed() {
             quiz.checked[k] = false;
@@ -274,8 +284,7 @@ fn step_ui(ui: &mut Ui, quiz: &mut QuizState, key: &Explanation, k: usize) {
             quiz.checked[k] = true;
         }
         let size = egui::vec2(reveal_w, ui.spacing().interact_size.y);
-        if ui.add_sized(size, egui::Button::new("Reveal")).on_hover_text("Show the key's value for this step").clicked()
-        {
+        if ui.add_sized(size, egui::Button::new(t!("quiz-reveal"))).on_hover_text(t!("quiz-reveal-hover")).clicked() {
             quiz.revealed[k] = true;
         }
     });
@@ -293,7 +302,7 @@ fn step_ui(ui: &mut Ui, quiz: &mut QuizState, key: &Explanation, k: usize) {
         let bad = palette::ink(ui, palette::ERROR);
         if quiz.checked[k] {
             let (text, colour) = match parse_answer(&quiz.answers[k]) {
-                Err(e) => (format!("does not read as numbers: {e}"), bad),
+                Err(e) => (t!("quiz-not-numbers", error = e), bad),
                 Ok(_) => match quiz.verdict(key, k) {
                     Some(v) => {
                         let (t, right) = mark_text(&v, &st.name);
@@ -311,7 +320,11 @@ fn step_ui(ui: &mut Ui, quiz: &mut QuizState, key: &Explanation, k: usize) {
             ui.add_space(2.0 * body + ui.spacing().item_spacing.y);
         }
         if quiz.revealed[k] || quiz.show_answers {
-            ui.label(RichText::new(format!("key: {} = {}", st.name, fmt_value(value, 8))).monospace().weak());
+            ui.label(
+                RichText::new(t!("quiz-key", name = &st.name, value = locale::decimal(&fmt_value(value, 8))))
+                    .monospace()
+                    .weak(),
+            );
         }
     }
 }

@@ -1,12 +1,13 @@
 //! The lit colour: a large swatch and the rgba numbers, clamped and unclamped.
 
 use egui::{Color32, RichText, Ui};
+use phonglab_core::t;
 
 use super::palette::{self, gl_to_color32};
 use super::state::{Evaluated, Message, SideColors};
 
 fn fmt4(c: &[f64; 4]) -> String {
-    let s: Vec<String> = c.iter().map(|x| phonglab_core::explain::fmt_sig(*x, 8)).collect();
+    let s: Vec<String> = c.iter().map(|x| phonglab_core::locale::num(*x, 8)).collect();
     format!("[{}]", s.join("  "))
 }
 
@@ -29,14 +30,14 @@ fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool) {
     };
     let numbers = |ui: &mut Ui, labelled: bool| {
         let rows = [
-            ("unclamped", unclamped.clone(), "The primary colour as the equation gives it."),
-            ("clamped", fmt4(&c.shown), "Primary + secondary rgb, clamped to [0, 1]: what a fragment gets."),
+            (t!("unclamped"), unclamped.clone(), t!("unclamped-hover")),
+            (t!("clamped"), fmt4(&c.shown), t!("clamped-hover")),
         ];
-        let secondary = separate.then(|| ("secondary", fmt4(&c.secondary), "The secondary (specular) colour."));
+        let secondary = separate.then(|| (t!("secondary"), fmt4(&c.secondary), t!("secondary-hover")));
         egui::Grid::new(format!("{title} numbers")).num_columns(2).spacing([6.0, 2.0]).show(ui, |ui| {
             for (name, value, why) in rows.into_iter().chain(secondary) {
                 if labelled {
-                    ui.small(name);
+                    ui.small(&name);
                 }
                 ui.monospace(value).on_hover_text(why);
                 ui.end_row();
@@ -57,7 +58,7 @@ fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool) {
             ui.horizontal(|ui| {
                 swatch(ui, egui::vec2(40.0, 18.0));
                 ui.label(RichText::new(title).strong());
-                ui.small(if separate { "unclamped, clamped, secondary" } else { "unclamped, then clamped" });
+                ui.small(if separate { t!("rows-with-secondary") } else { t!("rows-unclamped-clamped") });
             });
             numbers(ui, false);
         });
@@ -68,17 +69,22 @@ fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool) {
 /// (`hidden`), a line saying so in their place.
 pub fn result_ui(ui: &mut Ui, eval: &Evaluated, separate_specular: bool, message: &Option<Message>, hidden: bool) {
     if hidden {
-        ui.label(RichText::new("Vertex colour").strong());
-        ui.label("Hidden while the quiz is open: it is the quiz's last answer, I.");
-        ui.small("The teacher can show it with \"Show the answers\" in the quiz.");
+        ui.label(RichText::new(t!("vertex-colour")).strong());
+        ui.label(t!("colour-hidden"));
+        ui.small(t!("colour-hidden-teacher"));
         message_ui(ui, message);
         return;
     }
     ui.horizontal_wrapped(|ui| {
-        side_ui(ui, if eval.back.is_some() { "Front face" } else { "Vertex colour" }, &eval.front, separate_specular);
+        side_ui(
+            ui,
+            &if eval.back.is_some() { t!("front-face") } else { t!("vertex-colour") },
+            &eval.front,
+            separate_specular,
+        );
         if let Some(b) = &eval.back {
             ui.add_space(16.0);
-            side_ui(ui, "Back face", b, separate_specular);
+            side_ui(ui, &t!("back-face"), b, separate_specular);
         }
     });
     message_ui(ui, message);

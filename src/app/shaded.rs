@@ -8,6 +8,7 @@
 use egui::{Color32, Sense, Ui};
 use glam::{DVec3, DVec4};
 use phonglab_core::library::DemoDeparture;
+use phonglab_core::t;
 use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, Shading, Vertex, View};
 
 use super::gpu_view::{self, Picture};
@@ -18,9 +19,9 @@ pub use super::view_cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
 /// departures as switches: each flipped one is corrected in a second picture beside the
 /// demo's own.
 fn pipeline_ui(ui: &mut Ui, view: &mut View) {
-    egui::CollapsingHeader::new("Pipeline: OpenGL's or the demo's").id_salt("pipeline").show(ui, |ui| {
+    egui::CollapsingHeader::new(t!("pipeline")).id_salt("pipeline").show(ui, |ui| {
         ui.horizontal_wrapped(|ui| {
-            let l = ui.label("Picture");
+            let l = ui.label(t!("picture"));
             egui::ComboBox::from_id_salt("framing")
                 .selected_text(view.framing.label())
                 .show_ui(ui, |ui| {
@@ -30,14 +31,12 @@ fn pipeline_ui(ui: &mut Ui, view: &mut View) {
                 })
                 .response
                 .labelled_by(l.id);
-            ui.checkbox(&mut view.phong_renormalize, "Phong renormalises N")
-                .on_hover_text("OpenGL shaders normalise the interpolated normal; the demo's does not");
+            ui.checkbox(&mut view.phong_renormalize, t!("phong-renormalises"))
+                .on_hover_text(t!("phong-renormalises-hover"));
             let mut derivative = view.flat_normal == FlatNormal::ScreenDerivatives;
             if ui
-                .checkbox(&mut derivative, "Flat from dFdx/dFdy")
-                .on_hover_text(
-                    "The demo's Flat: each fragment lit with cross(dFdy(p), dFdx(p)); otherwise one colour per face",
-                )
+                .checkbox(&mut derivative, t!("flat-derivatives"))
+                .on_hover_text(t!("flat-derivatives-hover"))
                 .changed()
             {
                 view.flat_normal = if derivative { FlatNormal::ScreenDerivatives } else { FlatNormal::Face };
@@ -59,15 +58,15 @@ pub fn departures_ui(ui: &mut Ui, state: &mut AppState) {
     }
     let fixes = &mut state.ui.demo_fixes;
     ui.horizontal_wrapped(|ui| {
-        ui.label("Correct the demo:");
+        ui.label(t!("correct-the-demo"));
         for (k, d) in DemoDeparture::ALL.into_iter().enumerate() {
             if departures.contains(&d) {
                 ui.checkbox(&mut fixes[k], d.fix_label()).on_hover_text(d.why());
             }
         }
     });
-    egui::CollapsingHeader::new("Why the demo differs").id_salt("departures").default_open(false).show(ui, |ui| {
-        ui.small("Each switch on corrects the demo in a second picture, on the right of its own.");
+    egui::CollapsingHeader::new(t!("why-demo-differs")).id_salt("departures").default_open(false).show(ui, |ui| {
+        ui.small(t!("why-demo-differs-intro"));
         for d in DemoDeparture::ALL {
             if departures.contains(&d) {
                 ui.small(format!("{}: {}", d.fix_label(), d.why()));
@@ -84,18 +83,18 @@ fn view_options_ui(ui: &mut Ui, view: &mut View) {
         };
         match view.object {
             ObjectKind::Sphere => {
-                count(ui, "Sphere slices", &mut view.sphere_slices, phonglab_core::view::SLICES_RANGE);
-                count(ui, "Sphere stacks", &mut view.sphere_stacks, phonglab_core::view::SLICES_RANGE);
+                count(ui, &t!("sphere-slices"), &mut view.sphere_slices, phonglab_core::view::SLICES_RANGE);
+                count(ui, &t!("sphere-stacks"), &mut view.sphere_stacks, phonglab_core::view::SLICES_RANGE);
             }
-            ObjectKind::Teapot => count(ui, "Teapot grid", &mut view.teapot_grid, phonglab_core::view::GRID_RANGE),
+            ObjectKind::Teapot => count(ui, &t!("teapot-grid"), &mut view.teapot_grid, phonglab_core::view::GRID_RANGE),
             ObjectKind::Cylinder => {
-                count(ui, "Cylinder slices", &mut view.cylinder_slices, phonglab_core::view::SLICES_RANGE);
-                count(ui, "Cylinder stacks", &mut view.cylinder_stacks, phonglab_core::view::STACKS_RANGE);
-                ui.checkbox(&mut view.cylinder_caps, "Caps");
+                count(ui, &t!("cylinder-slices"), &mut view.cylinder_slices, phonglab_core::view::SLICES_RANGE);
+                count(ui, &t!("cylinder-stacks"), &mut view.cylinder_stacks, phonglab_core::view::STACKS_RANGE);
+                ui.checkbox(&mut view.cylinder_caps, t!("caps"));
             }
             ObjectKind::Obj => {
                 if let Ok(o) = view.obj_mesh() {
-                    ui.small(format!("{} triangles: {}", o.mesh.triangle_count(), o.notes.join("; ")));
+                    ui.small(t!("mesh-triangles", count = o.mesh.triangle_count(), notes = o.notes.join("; ")));
                 }
             }
         }
@@ -114,15 +113,15 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
     let mut open_obj_requested = None;
     ui.horizontal_wrapped(|ui| {
         for (k, o) in [("s", ObjectKind::Sphere), ("t", ObjectKind::Teapot), ("c", ObjectKind::Cylinder)] {
-            ui.selectable_value(&mut view.object, o, o.label()).on_hover_text(format!("key {k}"));
+            ui.selectable_value(&mut view.object, o, o.label()).on_hover_text(t!("key-hint", key = k));
         }
         if let Some(path) = &view.obj {
-            let tip = format!("{path} (open another under View options, or drop an .obj file)");
+            let tip = t!("mesh-tip", path = path);
             ui.selectable_value(&mut view.object, ObjectKind::Obj, ObjectKind::Obj.label()).on_hover_text(tip);
         }
         ui.separator();
         for (k, s) in [("1", Shading::Gouraud), ("2", Shading::Phong), ("3", Shading::Flat)] {
-            ui.selectable_value(&mut view.shading, s, s.label()).on_hover_text(format!("key {k}"));
+            ui.selectable_value(&mut view.shading, s, s.label()).on_hover_text(t!("key-hint", key = k));
         }
         if presenting {
             // In front of a class: the object and the shading only (the rest is in the drawer
@@ -130,22 +129,20 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
             return;
         }
         ui.separator();
-        ui.checkbox(&mut view.auto_rotate, "Auto-rotate").on_hover_text("0.5 degrees a frame, as the demo (key A)");
-        ui.checkbox(&mut view.demo_normals, "Demo's normals")
-            .on_hover_text("normalize(position), as the demo: wrong for the teapot and the cylinder");
-        ui.checkbox(&mut state.cost.heat_map, "Error heat map")
-            .on_hover_text("Beside the view: how far each pixel is from per-pixel Phong in f64 on a very fine mesh");
+        ui.checkbox(&mut view.auto_rotate, t!("auto-rotate")).on_hover_text(t!("auto-rotate-hover"));
+        ui.checkbox(&mut view.demo_normals, t!("demo-normals")).on_hover_text(t!("demo-normals-hover"));
+        ui.checkbox(&mut state.cost.heat_map, t!("heat-map")).on_hover_text(t!("heat-map-hover"));
     });
     if !presenting {
         // Opened, the options scroll within a part of the view's space, so the picture
         // stays on screen (smaller) rather than being pushed below the window.
         let most = ui.available_height() * 0.45;
-        egui::CollapsingHeader::new("View options").id_salt("view options").show(ui, |ui| {
+        egui::CollapsingHeader::new(t!("view-options")).id_salt("view options").show(ui, |ui| {
             egui::ScrollArea::vertical().max_height(most).show(ui, |ui| {
                 renderer_ui(ui, state, &cache.main.drawn_by);
                 view_options_ui(ui, &mut view);
                 ui.horizontal_wrapped(|ui| {
-                    let l = ui.label("Mesh file (.obj):");
+                    let l = ui.label(t!("mesh-file"));
                     let field = ui
                         .add(
                             egui::TextEdit::singleline(&mut state.ui.obj_path)
@@ -154,12 +151,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
                         )
                         .labelled_by(l.id);
                     let enter = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
-                    if ui
-                        .button("Show mesh")
-                        .on_hover_text("Shade this OBJ file in the view (Enter in the field)")
-                        .clicked()
-                        || enter
-                    {
+                    if ui.button(t!("show-mesh")).on_hover_text(t!("show-mesh-hover")).clicked() || enter {
                         open_obj_requested = Some(std::path::PathBuf::from(state.ui.obj_path.trim()));
                     }
                 });
@@ -197,10 +189,10 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
     let side = if (side * ppp) as usize <= 1024 { px as f32 / ppp } else { side };
     let camera = state.doc.view.camera;
     let main = prepare_picture(ui.ctx(), state, &mut cache.main, &state.doc, px, 0, "shaded view");
-    let mut main_gpu = picture_or_refusal(state, main, "The shaded view cannot render this scene");
+    let mut main_gpu = picture_or_refusal(state, main, &t!("shaded-cannot-render"));
     let mut corrected_gpu = corrected.as_ref().and_then(|c| {
         let picture = prepare_picture(ui.ctx(), state, &mut cache.corrected, c, px, 1, "corrected view");
-        picture_or_refusal(state, picture, "The corrected view cannot render")
+        picture_or_refusal(state, picture, &t!("corrected-cannot-render"))
     });
     let scene = state.doc.shaded_scene();
     if heat {
@@ -212,7 +204,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
         state.doc.view.object.label(),
         state.doc.view.shading.label(),
         drawn_caption(&cache.main),
-        if corrected.is_some() { " (the demo's own)" } else { "" }
+        if corrected.is_some() { t!("the-demos-own") } else { String::new() }
     );
     let mut second = None;
     let resp = ui
@@ -223,22 +215,20 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
                     ui.set_max_width(side);
                     let label = ui.small(caption);
                     picture_ui(ui, &cache.main, main_gpu.take(), size, Sense::click_and_drag())
-                        .on_hover_text(
-                            "Drag to orbit, scroll to zoom, click the surface to make that vertex the worked calculation's",
-                        )
+                        .on_hover_text(t!("picture-hover"))
                         .labelled_by(label.id)
                 })
                 .inner;
             if corrected.is_some() {
                 ui.vertical(|ui| {
                     ui.set_max_width(side);
-                    let fixed: Vec<&str> = DemoDeparture::ALL
+                    let fixed: Vec<String> = DemoDeparture::ALL
                         .into_iter()
                         .zip(state.ui.demo_fixes)
                         .filter(|(d, on)| *on && d.present_in(&state.doc))
                         .map(|(d, _)| d.fix_label())
                         .collect();
-                    let label = ui.small(format!("Corrected: {}", fixed.join(", ")));
+                    let label = ui.small(t!("corrected", fixes = fixed.join(", ")));
                     let r = picture_ui(ui, &cache.corrected, corrected_gpu.take(), size, Sense::hover())
                         .labelled_by(label.id);
                     second = Some(r.rect);
@@ -286,17 +276,15 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
         if matches!(cache.main.drawn_by, DrawnBy::Gpu { .. })
             && let Err(e) = cache.main.render(ui.ctx(), &state.doc, state.ui.pow, px, "shaded view")
         {
-            state.message = Some(Message::Refused(format!("The shaded view cannot render this scene: {e}")));
+            state.message = Some(Message::Refused(format!("{}: {e}", t!("shaded-cannot-render"))));
             return pictures;
         }
         let mesh = mesh_for(&mut cache.main.mesh, &state.doc.view);
         if let Some(i) = cache.main.renderer.pick(mesh, x, y) {
             let c = state.doc.with_vertex_as_shaded(Vertex::from_f32(mesh.positions[i], mesh.normals[i]));
             if state.apply(c) {
-                state.message = Some(Message::Info(format!(
-                    "Vertex {i} of the {}: the worked calculation now uses it, as the shaded view lights it.",
-                    state.doc.view.object.label().to_lowercase()
-                )));
+                let object = state.doc.view.object.label().to_lowercase();
+                state.message = Some(Message::Info(t!("picked-vertex", index = i.to_string(), object = object)));
             }
         }
     }
@@ -448,7 +436,7 @@ fn light_off_view_ui(ui: &Ui, rect: egui::Rect, towards: egui::Vec2, i: usize, b
     ));
     let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
     let at = tip - d * 16.0;
-    let name = if behind { format!("light {i} (behind the camera)") } else { format!("light {i}") };
+    let name = if behind { t!("light-behind", index = i.to_string()) } else { t!("light-name", index = i.to_string()) };
     let align = if d.x > 0.3 {
         egui::Align2::RIGHT_CENTER
     } else if d.x < -0.3 {
@@ -527,12 +515,18 @@ fn lights_ui(ui: &mut Ui, o: &Overlay, state: &mut AppState, scene: &phonglab_co
         let hit = egui::Rect::from_center_size(pos, egui::vec2(18.0, 18.0));
         let r = ui.interact(hit, ui.scope_id().with(("light marker", i)), Sense::drag());
         r.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, format!("light {i} marker")));
-        let r = r.on_hover_text(format!("Light {i}: drag to move it"));
+        let r = r.on_hover_text(t!("light-drag", index = i.to_string()));
         let ring = if r.hovered() || r.dragged() { 3.0 } else { 1.5 };
         ui.painter().circle(pos, 7.0, Color32::from_rgb(255, 230, 120), egui::Stroke::new(ring, Color32::BLACK));
         let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
         let text = if ui.visuals().dark_mode { Color32::WHITE } else { Color32::BLACK };
-        ui.painter().text(pos + egui::vec2(9.0, -9.0), egui::Align2::LEFT_BOTTOM, format!("light {i}"), font, text);
+        ui.painter().text(
+            pos + egui::vec2(9.0, -9.0),
+            egui::Align2::LEFT_BOTTOM,
+            t!("light-name", index = i.to_string()),
+            font,
+            text,
+        );
         if r.dragged() {
             dragging = true;
             // The marker follows the pointer (it is small, so grabbing it off-centre
@@ -578,7 +572,7 @@ pub fn corrected_document(doc: &Document, fixes: &[bool; 3]) -> Option<Document>
 /// The renderer choice, and who drew the last picture (and why not the GPU).
 fn renderer_ui(ui: &mut Ui, state: &mut AppState, drawn_by: &DrawnBy) {
     ui.horizontal_wrapped(|ui| {
-        let l = ui.label("Renderer");
+        let l = ui.label(t!("renderer"));
         egui::ComboBox::from_id_salt("renderer")
             .selected_text(state.ui.renderer.label())
             .show_ui(ui, |ui| {
@@ -588,16 +582,14 @@ fn renderer_ui(ui: &mut Ui, state: &mut AppState, drawn_by: &DrawnBy) {
             })
             .response
             .labelled_by(l.id)
-            .on_hover_text(
-                "The CPU renderer is the reference; the GPU runs the scene's generated WGSL (Shader window)",
-            );
+            .on_hover_text(t!("renderer-hover"));
     });
     match drawn_by {
         DrawnBy::Gpu { adapter } => {
-            ui.small(format!("Drawn on the GPU ({adapter}) by the scene's generated WGSL."));
+            ui.small(t!("drawn-gpu", adapter = adapter.to_string()));
         }
         DrawnBy::Cpu { why } => {
-            ui.small(format!("Drawn by the CPU renderer: {why}."));
+            ui.small(t!("drawn-cpu", why = why.to_string()));
         }
         DrawnBy::Nothing => {}
     }
@@ -659,11 +651,11 @@ fn picture_ui(ui: &mut Ui, cache: &ViewCache, gpu: Option<Picture>, size: egui::
 /// Who drew the picture, for its caption.
 fn drawn_caption(cache: &ViewCache) -> String {
     match &cache.drawn_by {
-        DrawnBy::Gpu { adapter } => format!("on the GPU ({adapter})"),
-        _ => format!("{} ms per frame on the CPU", fmt_ms(cache.last_ms)),
+        DrawnBy::Gpu { adapter } => t!("caption-gpu", adapter = adapter.to_string()),
+        _ => t!("caption-cpu", ms = fmt_ms(cache.last_ms)),
     }
 }
 
 fn fmt_ms(ms: f64) -> String {
-    format!("{ms:.1}")
+    phonglab_core::locale::decimal(&format!("{ms:.1}"))
 }

@@ -178,7 +178,7 @@ impl AppState {
                 Ok(())
             }
             Err(e) => {
-                self.message = Some(Message::Refused(format!("Refused: {e}. The scene keeps its last valid value.")));
+                self.message = Some(Message::Refused(phonglab_core::t!("refused-kept", error = e.to_string())));
                 Err(e.to_string())
             }
         }
@@ -188,20 +188,20 @@ impl AppState {
     pub fn reset_to_worksheet(&mut self) {
         let before = std::mem::take(&mut self.doc);
         if before != self.doc {
-            self.history.record(&before, &self.doc, Some("reset to the worksheet"), self.now);
+            self.history.record(&before, &self.doc, Some(&phonglab_core::t!("history-reset")), self.now);
         }
         self.ui.selected_light = 0;
-        self.message = Some(Message::Info("Reset to the worksheet (mview5).".into()));
+        self.message = Some(Message::Info(phonglab_core::t!("reset-done")));
     }
 
     /// Loads a ready-made document.
     pub fn load(&mut self, doc: Document, what: &str) {
         let before = std::mem::replace(&mut self.doc, doc);
         if before != self.doc {
-            self.history.record(&before, &self.doc, Some(&format!("open {what}")), self.now);
+            self.history.record(&before, &self.doc, Some(&phonglab_core::t!("history-open", what = what)), self.now);
         }
         self.ui.selected_light = 0;
-        self.message = Some(Message::Info(format!("Loaded {what}.")));
+        self.message = Some(Message::Info(phonglab_core::t!("loaded", what = what)));
     }
 }
 
@@ -211,9 +211,9 @@ impl AppState {
         self.message = Some(Message::Info(match self.history.undo(&self.doc) {
             Some((doc, label)) => {
                 self.set_doc(doc);
-                format!("Undid {label}.")
+                phonglab_core::t!("undid", what = label)
             }
-            None => "Nothing to undo.".into(),
+            None => phonglab_core::t!("nothing-to-undo"),
         }));
     }
 
@@ -222,9 +222,9 @@ impl AppState {
         self.message = Some(Message::Info(match self.history.redo(&self.doc) {
             Some((doc, label)) => {
                 self.set_doc(doc);
-                format!("Redid {label}.")
+                phonglab_core::t!("redid", what = label)
             }
-            None => "Nothing to redo.".into(),
+            None => phonglab_core::t!("nothing-to-redo"),
         }));
     }
 

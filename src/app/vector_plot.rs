@@ -85,12 +85,12 @@ fn legend(eval: &Evaluated, specular: SpecularModel) -> Vec<(&'static str, &'sta
         ("L", "vlv", palette::L, false),
         ("V", "vov", palette::V, false),
         match specular {
-            SpecularModel::BlinnPhong => ("H", "halfway", palette::H, true),
-            SpecularModel::Phong => ("R", "reflection", palette::H, true),
+            SpecularModel::BlinnPhong => ("H", "halfway", palette::H, true), // the worksheet's "vetor halfway" too
+            SpecularModel::Phong => ("R", "R", palette::H, true),
         },
     ];
     if eval.lights.iter().any(|l| l.spot.is_some()) {
-        v.push(("S", "spot", palette::SPOT, true));
+        v.push(("S", "spot", palette::SPOT, true)); // the scene file's name
     }
     v
 }
@@ -190,9 +190,13 @@ pub fn paint_labels(
 
 /// The view buttons (XY, XZ, ZY, 3D), in the row the caller opened.
 pub fn view_buttons_ui(ui: &mut Ui, orbit: &mut Orbit) {
-    ui.label("View:");
+    ui.label(phonglab_core::t!("plot-view"));
     for (name, o) in [("XY", Orbit::XY), ("XZ", Orbit::XZ), ("ZY", Orbit::ZY), ("3D", Orbit::PERSPECTIVE)] {
-        if ui.selectable_label(*orbit == o, name).on_hover_text(format!("Look at the {name} plane")).clicked() {
+        if ui
+            .selectable_label(*orbit == o, name)
+            .on_hover_text(phonglab_core::t!("plot-view-hover", plane = name))
+            .clicked()
+        {
             *orbit = o;
         }
     }
@@ -291,7 +295,11 @@ pub fn vector_plot_ui(
     let (outer, resp) = ui.allocate_exact_size(vec2(avail.x.max(side), side), Sense::click_and_drag());
     let rect = Rect::from_center_size(outer.center(), Vec2::splat(side));
     resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, "vector plot"));
-    let resp = resp.on_hover_text(format!("Drag to orbit (yaw {:.0}°, pitch {:.0}°)", orbit.yaw, orbit.pitch));
+    let resp = resp.on_hover_text(phonglab_core::t!(
+        "plot-drag",
+        yaw = format!("{:.0}", orbit.yaw),
+        pitch = format!("{:.0}", orbit.pitch)
+    ));
     if resp.dragged() {
         let d = resp.drag_delta();
         orbit.yaw = (orbit.yaw + d.x as f64 * 0.5).rem_euclid(360.0);
@@ -367,7 +375,8 @@ pub fn vector_plot_ui(
             let m = at(mid, 1.0);
             let out = if (m - centre).length() > 1.0 { m - centre } else { vec2(1.0, -1.0) };
             wanted.push(Wanted { anchor: m, direction: out, size: Vec2::ZERO, gap: 4.0 });
-            texts.push((format!("{name} = {:.1}\u{b0}", angle.to_degrees()), c, angle_font.clone()));
+            let text = phonglab_core::locale::decimal(&format!("{name} = {:.1}\u{b0}", angle.to_degrees()));
+            texts.push((text, c, angle_font.clone()));
         }
     }
 

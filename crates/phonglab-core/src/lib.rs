@@ -27,9 +27,11 @@
 //! | formats: text in and out | [`document`], [`glref`] |
 //! | teach: for the classroom | [`exercise`], [`quiz`], [`shader`] |
 //! | study: what accuracy costs | [`cost`] |
+//! | locale: the user's language and decimal mark | [`locale`] |
 
 pub mod equation;
 pub mod formats;
+pub mod locale;
 pub mod model;
 pub mod numerics;
 pub mod raster;

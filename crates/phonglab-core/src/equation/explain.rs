@@ -8,6 +8,8 @@
 
 use std::fmt::Write as _;
 
+use crate::t;
+
 use crate::breakdown::{Limit, SideColor, SideTerms, VertexLighting};
 use crate::real::{Real, Vec3Ops};
 use crate::rules::SpecularModel;
@@ -161,25 +163,24 @@ pub fn fmt_value(v: &[f64], sig: usize) -> String {
 /// transforms by M itself, where OpenGL uses (M^-1)^T): the rows' angles and lengths, and
 /// how far apart the two normals point.
 pub fn modelview_note(check: &crate::transform::RotationCheck) -> String {
-    let deg = |a: f64| format!("{}°", fmt_sig(a, 3));
+    use crate::locale::num;
+    let deg = |a: f64| format!("{}°", num(a, 3));
     let gap = match check.normal_gap {
-        Some(g) if g >= 0.05 => format!(
-            "so M n, the worksheet's normal, points {} away from OpenGL's (M^-1)^T n, and N and every term after it differ from OpenGL's",
-            deg(g)
-        ),
-        Some(g) => format!("M n and OpenGL's (M^-1)^T n point {} apart here", fmt_sig(g, 2) + "°"),
-        None => "M is singular: OpenGL's (M^-1)^T n does not exist".into(),
+        Some(g) if g >= 0.05 => t!("mview-note-gap", angle = deg(g)),
+        Some(g) => t!("mview-note-small-gap", angle = format!("{}°", num(g, 2))),
+        None => t!("mview-note-singular"),
     };
-    let lengths = check.row_lengths.map(|l| fmt_sig(l, 5)).join(", ");
+    let lengths = check.row_lengths.map(|l| num(l, 5)).join("; ");
     if check.is_rotation() {
-        return format!("M is a rotation to the 6 digits it is printed with (row lengths {lengths}); {gap}");
+        return t!("mview-note-rotation", lengths = lengths, gap = gap);
     }
-    let skew: Vec<String> =
-        check.skewed_rows().iter().map(|(i, j, a)| format!("rows {i} and {j} are {} apart", deg(*a))).collect();
-    let rows = if skew.is_empty() { "its rows are 90° apart".into() } else { skew.join(", ") };
-    format!(
-        "M is not a rotation: {rows} (a rotation's rows are 90° apart and of length 1; these have lengths {lengths}); {gap}"
-    )
+    let skew: Vec<String> = check
+        .skewed_rows()
+        .iter()
+        .map(|(i, j, a)| t!("mview-note-rows", first = i.to_string(), second = j.to_string(), angle = deg(*a)))
+        .collect();
+    let rows = if skew.is_empty() { t!("mview-note-rows-square") } else { skew.join(", ") };
+    t!("mview-note-not-rotation", rows = rows, lengths = lengths, gap = gap)
 }
 
 struct Builder {
@@ -230,25 +231,15 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
     let n_shown = if back { -n } else { n };
     let by_m = rules.normal_transform() == crate::NormalTransform::Modelview;
     let nformula = match (scene.normal_mode, by_m) {
-        (crate::NormalMode::AsIs, false) => "vertexNormal = (M^-1)^T · vertexNormal   (OpenGL's N)",
-        (crate::NormalMode::Normalize, false) => {
-            "vertexNormal = normalize((M^-1)^T · vertexNormal)   (OpenGL's N, GL_NORMALIZE)"
-        }
-        (crate::NormalMode::Rescale, false) => {
-            "vertexNormal = f · (M^-1)^T · vertexNormal, f = 1/|row 3 of M^-1|   (OpenGL's N, GL_RESCALE_NORMAL)"
-        }
-        (crate::NormalMode::AsIs, true) => {
-            "vertexNormal = mview · vertexNormal   (the worksheet: M itself; OpenGL: (M^-1)^T)"
-        }
-        (crate::NormalMode::Normalize, true) => {
-            "vertexNormal = normalize(mview · vertexNormal)   (the worksheet: M itself; OpenGL: (M^-1)^T)"
-        }
-        (crate::NormalMode::Rescale, true) => {
-            "vertexNormal = f · mview · vertexNormal, f = 1/|row 3 of M^-1|   (the worksheet's M)"
-        }
+        (crate::NormalMode::AsIs, false) => t!("formula-normal-gl"),
+        (crate::NormalMode::Normalize, false) => t!("formula-normal-gl-normalize"),
+        (crate::NormalMode::Rescale, false) => t!("formula-normal-gl-rescale"),
+        (crate::NormalMode::AsIs, true) => t!("formula-normal-ws"),
+        (crate::NormalMode::Normalize, true) => t!("formula-normal-ws-normalize"),
+        (crate::NormalMode::Rescale, true) => t!("formula-normal-ws-rescale"),
     };
-    let ntitle = if back { "Transformed normal (back side: -N)" } else { "Transformed normal" };
-    b.push(StepKind::Normal, None, ntitle, "vertexNormal".into(), nformula, Some(dir4::<S>(n_shown)));
+    let ntitle = if back { t!("step-normal-back") } else { t!("step-normal") };
+    b.push(StepKind::Normal, None, &ntitle, "vertexNormal".into(), &nformula, Some(dir4::<S>(n_shown)));
     vertex_limits(&mut b, StepKind::Normal);
     if by_m {
         // Where the worksheet's M n and OpenGL's (M^-1)^T n part: say how far M is from a
@@ -264,32 +255,28 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
     b.push(
         StepKind::Position,
         None,
-        "Vertex in eye space",
+        &t!("step-position"),
         "vertexPos".into(),
-        "vertexPos = mview · vertexPos, divided by w   (OpenGL: P = M v)",
+        &t!("formula-position"),
         Some(vec![p.x, p.y, p.z, 1.0]),
     );
     vertex_limits(&mut b, StepKind::Position);
     if scene.eye_from_object() == crate::transform::phong_demo_eye_from_object() {
-        b.note(
-            "the Phong demo lights in object space with its eye at (-4, 0, -8); here eye space is object space moved by (4, 0, 8), so that eye is the origin: every vector and term is the demo's",
-        );
+        b.note(t!("note-demo-space"));
     }
 
     let vformula = if scene.light_model.local_viewer {
-        "vov = normalize(obs − vertexPos), obs = [0 0 0 1]   (local viewer; OpenGL: V = −P/|P|)"
+        t!("formula-v-local")
     } else if rules.viewer_from_eye_plane() {
-        "vov = normalize(obs − vertexPos), obs = vertexPos · [1 1 0 1]   (the worksheet's infinite viewer: (0, 0, −sign z))"
+        t!("formula-v-worksheet")
     } else {
-        "vov = [0 0 1 0]   (infinite viewer; OpenGL: V = (0, 0, 1))"
+        t!("formula-v-infinite")
     };
     let push_v = |b: &mut Builder| {
-        b.push(StepKind::V, None, "View vector", "vov".into(), vformula, Some(dir4::<S>(lit.v)));
+        b.push(StepKind::V, None, &t!("step-v"), "vov".into(), &vformula, Some(dir4::<S>(lit.v)));
         vertex_limits(b, StepKind::V);
         if rules.viewer_from_eye_plane() && !scene.light_model.local_viewer && lit.pos_in_eye.z > 0.0 {
-            b.note(
-                "the worksheet's text says vov is always [0 0 1 0]; its code gives [0 0 -1 0] here, as the vertex is behind the eye (z > 0)",
-            );
+            b.note(t!("note-vov-behind"));
         }
     };
     if lit.lights().is_empty() {
@@ -309,22 +296,18 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         b.push(
             StepKind::LightPosition,
             i,
-            "Light in eye space",
+            &t!("step-light-position"),
             format!("lightPos{sfx}"),
-            "lightPos = mview · lightPos   (OpenGL: P_l, the modelview when the light was placed times GL_POSITION)",
+            &t!("formula-light-position"),
             Some(pe.to_array().to_vec()),
         );
-        let lformula = if t.positional {
-            "vlv = normalize(lightPos − vertexPos)   (OpenGL: L = normalize(P_l − P))"
-        } else {
-            "vlv = normalize(lightPos)   (directional, w = 0; OpenGL: L = normalize(P_l.xyz))"
-        };
-        b.push(StepKind::L, i, "Light vector", format!("vlv{sfx}"), lformula, Some(dir4::<S>(t.l)));
+        let lformula = if t.positional { t!("formula-l-positional") } else { t!("formula-l-directional") };
+        b.push(StepKind::L, i, &t!("step-l"), format!("vlv{sfx}"), &lformula, Some(dir4::<S>(t.l)));
         lim(&mut b, StepKind::L);
         let dval = t.distance.map(|d| vec![d.to_f64()]);
-        b.push(StepKind::Distance, i, "Distance to the light", format!("d{sfx}"), "d = |lightPos − vertexPos|", dval);
+        b.push(StepKind::Distance, i, &t!("step-distance"), format!("d{sfx}"), "d = |lightPos − vertexPos|", dval);
         if t.distance.is_none() {
-            b.note("directional light: no distance");
+            b.note(t!("note-no-distance"));
         }
         lim(&mut b, StepKind::Distance);
         if k == 0 {
@@ -333,7 +316,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         b.push(
             StepKind::Ambient,
             i,
-            "Ambient term",
+            &t!("step-ambient"),
             format!("Iamb{sfx}"),
             "Iamb = Lamb · matAmb   (OpenGL: a_cl · a_cm)",
             Some(dir4::<S>(st.ambient)),
@@ -341,7 +324,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         b.push(
             StepKind::CosTheta,
             i,
-            "cos(theta)",
+            "cos(θ)",
             format!("cosTheta{sfx}"),
             &format!("cosTheta = {sign}vertexNormal · vlv   (OpenGL: {sign}n · L)"),
             Some(vec![st.n_dot_l.to_f64()]),
@@ -349,7 +332,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         b.push(
             StepKind::Diffuse,
             i,
-            "Diffuse term",
+            &t!("step-diffuse"),
             format!("Idif{sfx}"),
             "Idif = Ldif · matDif · max(cosTheta, 0)   (OpenGL: d_cl · d_cm · max(n · L, 0))",
             Some(dir4::<S>(st.diffuse)),
@@ -359,7 +342,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
                 b.push(
                     StepKind::H,
                     i,
-                    "Halfway vector",
+                    &t!("step-h"),
                     format!("H{sfx}"),
                     "H = normalize(vlv + vov)   (OpenGL: h = normalize(L + V))",
                     Some(dir4::<S>(t.h)),
@@ -368,7 +351,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
                 b.push(
                     StepKind::CosBeta,
                     i,
-                    "cos(beta)",
+                    "cos(β)",
                     format!("cosBeta{sfx}"),
                     &format!("cosBeta = {sign}vertexNormal · H   (OpenGL: {sign}n · h)"),
                     Some(vec![st.spec_cos.to_f64()]),
@@ -378,19 +361,19 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
                 b.push(
                     StepKind::R,
                     i,
-                    "Reflection vector",
-                    format!("rv{sfx}"),
-                    if rules.reflect_clamped() {
-                        "R = 2 max(vertexNormal · vlv, 0) vertexNormal − vlv   (the demo's)"
+                    &t!("step-r"),
+                    format!("R{sfx}"),
+                    &if rules.reflect_clamped() {
+                        t!("formula-r-demo")
                     } else {
-                        "R = 2 (vertexNormal · vlv) vertexNormal − vlv"
+                        "R = 2 (vertexNormal · vlv) vertexNormal − vlv".to_string()
                     },
                     Some(dir4::<S>(t.r)),
                 );
                 b.push(
                     StepKind::CosBeta,
                     i,
-                    "cos(alpha)",
+                    "cos(α)",
                     format!("cosAlpha{sfx}"),
                     "cosAlpha = R · vov",
                     Some(vec![st.spec_cos.to_f64()]),
@@ -398,34 +381,31 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
             }
         }
         let gate = match rules.specular_gate() {
-            crate::SpecularGate::LitSide => "f = 1 if cosTheta > 0",
-            crate::SpecularGate::PositiveCosine => "only where cos > 0",
-            crate::SpecularGate::None => "no gate",
+            crate::SpecularGate::LitSide => t!("gate-lit-side"),
+            crate::SpecularGate::PositiveCosine => t!("gate-positive"),
+            crate::SpecularGate::None => t!("gate-none"),
         };
         b.push(
             StepKind::Specular,
             i,
-            "Specular term",
+            &t!("step-specular"),
             format!("Ispec{sfx}"),
-            &format!(
-                "Ispec = Lspec · matSpec · max({cos}, 0)^ns   ({gate}; f = {}; OpenGL: s_cl · s_cm · max(n · h, 0)^s_rm)",
-                st.f.to_f64(),
+            &t!(
+                "formula-specular",
+                gate = gate,
+                f = crate::locale::num(st.f.to_f64(), 8),
                 cos = if rules.specular == SpecularModel::Phong { "cosAlpha" } else { "cosBeta" }
             ),
             Some(dir4::<S>(st.specular)),
         );
-        let aformula = if t.positional {
-            "at = atC + atLin · d + atQuad · d²   (OpenGL: the terms are divided by k0 + k1 d + k2 d²)"
-        } else {
-            "at = 1   (directional)"
-        };
+        let aformula = if t.positional { t!("formula-at") } else { t!("formula-at-directional") };
         let at = t.attenuation.to_f64();
         b.push(
             StepKind::Attenuation,
             i,
-            "Attenuation",
+            &t!("step-attenuation"),
             format!("at{sfx}"),
-            aformula,
+            &aformula,
             Some(vec![if at == 0.0 { f64::INFINITY } else { 1.0 / at }]),
         );
         lim(&mut b, StepKind::Attenuation);
@@ -433,12 +413,12 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
             b.push(
                 StepKind::Spot,
                 i,
-                "Spotlight",
+                &t!("step-spot"),
                 format!("spot{sfx}"),
-                &format!(
-                    "spot = max(-L . s, 0)^e if -L . s >= cos(cutoff) = {}, else 0;  -L . s = {}",
-                    fmt_sig(t.spot.cos_cutoff.to_f64(), 8),
-                    fmt_sig(t.spot.cos_angle.to_f64(), 8)
+                &t!(
+                    "formula-spot",
+                    cutoff = crate::locale::num(t.spot.cos_cutoff.to_f64(), 8),
+                    angle = crate::locale::num(t.spot.cos_angle.to_f64(), 8)
                 ),
                 Some(vec![t.spot.factor.to_f64()]),
             );
@@ -446,25 +426,22 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
             b.push(
                 StepKind::Spot,
                 i,
-                "Spotlight",
+                &t!("step-spot"),
                 format!("spot{sfx}"),
-                "spot = 1   (cutoff 180: not a spotlight)",
+                &t!("formula-spot-none"),
                 Some(vec![1.0]),
             );
         }
         lim(&mut b, StepKind::Spot);
         let sep = scene.light_model.separate_specular;
-        let cformula = if sep {
-            "Ilight = spot · (Iamb + Idif) / at   (specular goes to the secondary colour)"
-        } else {
-            "Ilight = spot · (Iamb + Idif + Ispec) / at"
-        };
+        let cformula =
+            if sep { t!("formula-share-separate") } else { "Ilight = spot · (Iamb + Idif + Ispec) / at".to_string() };
         b.push(
             StepKind::Contribution,
             i,
-            "This light's share",
+            &t!("step-share"),
             format!("Ilight{sfx}"),
-            cformula,
+            &cformula,
             Some(dir4::<S>(st.primary)),
         );
     }
@@ -474,51 +451,45 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         b.push(
             StepKind::SceneAmbient,
             None,
-            "Scene ambient",
+            &t!("step-scene-ambient"),
             "Iscene".into(),
-            "a_cm a_cs   (light-model ambient)",
+            &t!("formula-scene-ambient"),
             Some(dir4::<S>(sc.scene_ambient)),
         );
     }
     if rules.emission() {
-        b.push(StepKind::Emission, None, "Emission", "Iemi".into(), "e_cm", Some(dir4::<S>(sc.emission)));
+        b.push(StepKind::Emission, None, &t!("step-emission"), "Iemi".into(), "e_cm", Some(dir4::<S>(sc.emission)));
     }
     let iformula = match (rules.scene_ambient(), rules.emission()) {
-        (true, true) => "I = e_cm + a_cm a_cs + sum of the lights' shares",
-        _ => "I = (Iamb + Idif + Ispec) / at, summed over the lights   (the worksheet's I)",
+        (true, true) => t!("formula-i-opengl"),
+        _ => t!("formula-i-worksheet"),
     };
     let pr = sc.primary.map(S::to_f64);
-    b.push(StepKind::Primary, None, "Vertex colour", "I".into(), iformula, Some(vec![pr[0], pr[1], pr[2], 0.0]));
+    b.push(StepKind::Primary, None, &t!("step-primary"), "I".into(), &iformula, Some(vec![pr[0], pr[1], pr[2], 0.0]));
     vertex_limits(&mut b, StepKind::Primary);
     if scene.light_model.separate_specular {
         let s = sc.secondary.map(S::to_f64);
         b.push(
             StepKind::Secondary,
             None,
-            "Secondary colour",
+            &t!("step-secondary"),
             "Isec".into(),
-            "sum of att spot Ispec   (separate specular)",
+            &t!("formula-secondary"),
             Some(s.to_vec()),
         );
     }
     let c = sc.sum();
     let c = [c[0], c[1], c[2], c[3]].map(|x| x.max(S::ZERO).min(S::ONE).to_f64());
-    b.push(
-        StepKind::Clamped,
-        None,
-        "Colour as drawn",
-        "glColor".into(),
-        "rgba clamped to [0, 1]; alpha = diffuse alpha",
-        Some(c.to_vec()),
-    );
+    b.push(StepKind::Clamped, None, &t!("step-clamped"), "glColor".into(), &t!("formula-clamped"), Some(c.to_vec()));
 
     let n = lit.lights().len();
-    let heading = format!(
-        "{} side, {n} light{}, {}, rules: {}",
-        if back { "back" } else { "front" },
-        if n == 1 { "" } else { "s" },
-        S::NAME,
-        rules
+    let side = if back { t!("side-back") } else { t!("side-front") };
+    let heading = t!(
+        "explain-heading",
+        side = side,
+        lights = t!("lights-count", count = n),
+        precision = S::NAME,
+        rules = rules.to_string()
     );
     Explanation { heading, steps: b.steps }
 }
@@ -532,14 +503,14 @@ impl Explanation {
             let _ = writeln!(s, "{:>2}. {:<28} {}", k + 1, st.title, st.formula);
             match &st.value {
                 Some(v) => {
-                    let _ = writeln!(s, "    {} = {}", st.name, fmt_value(v, sig));
+                    let _ = writeln!(s, "    {} = {}", st.name, crate::locale::decimal(&fmt_value(v, sig)));
                 }
                 None => {
                     let _ = writeln!(s, "    {} = n/a", st.name);
                 }
             }
             for n in &st.notes {
-                let _ = writeln!(s, "    note: {n}");
+                let _ = writeln!(s, "    {}", t!("note-line", note = n));
             }
         }
         s

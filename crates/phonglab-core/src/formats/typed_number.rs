@@ -10,19 +10,19 @@ use thiserror::Error;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum TypedNumberError {
     /// Nothing was typed.
-    #[error("no value")]
+    #[error("{}", crate::t!("typed-empty"))]
     Empty,
     /// Not a number at all.
-    #[error("{0:?} is not a number")]
+    #[error("{}", crate::t!("typed-not-a-number", text = .0))]
     NotANumber(String),
     /// NaN or infinity.
-    #[error("{0} is not a finite number")]
+    #[error("{}", crate::t!("typed-not-finite", text = .0))]
     NotFinite(String),
     /// Beyond what a float holds.
-    #[error("{0} is beyond single precision's range (±3.4e38)")]
+    #[error("{}", crate::t!("typed-too-large", text = .0))]
     TooLarge(String),
     /// Not zero, but a float would hold it as zero.
-    #[error("{0} is too small for single precision: it would be 0")]
+    #[error("{}", crate::t!("typed-too-small", text = .0))]
     TooSmall(String),
 }
 

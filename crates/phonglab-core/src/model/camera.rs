@@ -39,6 +39,17 @@ impl Default for CameraSpec {
 
 impl CameraSpec {
     /// A short name for menus.
+    /// The kind's name for people, in the current language.
+    pub fn kind_name(&self) -> String {
+        match self {
+            CameraSpec::Worksheet(_) => crate::t!("camera-kind-worksheet"),
+            CameraSpec::LookAt { .. } => "lookAt".into(),
+            CameraSpec::OpenFrameworks { .. } => crate::t!("camera-kind-of"),
+            CameraSpec::Matrix(_) => crate::t!("camera-kind-matrix"),
+        }
+    }
+
+    /// The kind's key (English; the name shown is [`Self::kind_name`]).
     pub fn kind_label(&self) -> &'static str {
         match self {
             CameraSpec::Worksheet(_) => "Worksheet modelview",

@@ -55,26 +55,20 @@ impl DemoDeparture {
         [DemoDeparture::LightTurnsWithObject, DemoDeparture::PositionNormals, DemoDeparture::HighlightInObjectColour];
 
     /// The correction's name, as the switch shows it.
-    pub fn fix_label(self) -> &'static str {
+    pub fn fix_label(self) -> String {
         match self {
-            DemoDeparture::LightTurnsWithObject => "light fixed in the world",
-            DemoDeparture::PositionNormals => "the surface's true normals",
-            DemoDeparture::HighlightInObjectColour => "highlight in the light's colour",
+            DemoDeparture::LightTurnsWithObject => crate::t!("fix-light-world"),
+            DemoDeparture::PositionNormals => crate::t!("fix-true-normals"),
+            DemoDeparture::HighlightInObjectColour => crate::t!("fix-highlight-colour"),
         }
     }
 
     /// One sentence on why.
-    pub fn why(self) -> &'static str {
+    pub fn why(self) -> String {
         match self {
-            DemoDeparture::LightTurnsWithObject => {
-                "The demo lights untransformed positions and normals, so its light turns with the object; the document's own fix transforms them by mvMatrix (for a rotation its inverse transpose is itself), and the light stays put while the object turns."
-            }
-            DemoDeparture::PositionNormals => {
-                "normalize(position) is the normal of a sphere about the origin only; the teapot's and the cylinder's surfaces point elsewhere, and their true normals light them as they are."
-            }
-            DemoDeparture::HighlightInObjectColour => {
-                "The demo multiplies the specular term by the object's red; OpenGL multiplies the light's specular colour by the material's specular colour (white here), so a highlight shows the light's colour."
-            }
+            DemoDeparture::LightTurnsWithObject => crate::t!("why-light-world"),
+            DemoDeparture::PositionNormals => crate::t!("why-true-normals"),
+            DemoDeparture::HighlightInObjectColour => crate::t!("why-highlight-colour"),
         }
     }
 

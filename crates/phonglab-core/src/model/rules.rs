@@ -24,11 +24,11 @@ impl RuleSet {
     pub const ALL: [RuleSet; 3] = [RuleSet::OpenGl, RuleSet::Worksheet, RuleSet::PhongDemo];
 
     /// A short name for menus and files.
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            RuleSet::OpenGl => "OpenGL 2.1",
-            RuleSet::Worksheet => "Worksheet",
-            RuleSet::PhongDemo => "Phong demo",
+            RuleSet::OpenGl => "OpenGL 2.1".into(),
+            RuleSet::Worksheet => crate::t!("ruleset-worksheet"),
+            RuleSet::PhongDemo => crate::t!("ruleset-demo"),
         }
     }
 }

@@ -24,12 +24,12 @@ impl ObjectKind {
     pub const ALL: [ObjectKind; 3] = [ObjectKind::Sphere, ObjectKind::Teapot, ObjectKind::Cylinder];
 
     /// A name for menus.
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            ObjectKind::Sphere => "Sphere",
-            ObjectKind::Teapot => "Teapot",
-            ObjectKind::Cylinder => "Cylinder",
-            ObjectKind::Obj => "Your mesh",
+            ObjectKind::Sphere => crate::t!("object-sphere"),
+            ObjectKind::Teapot => crate::t!("object-teapot"),
+            ObjectKind::Cylinder => crate::t!("object-cylinder"),
+            ObjectKind::Obj => crate::t!("object-mesh"),
         }
     }
 }
@@ -79,10 +79,10 @@ impl Framing {
     pub const ALL: [Framing; 2] = [Framing::Orbit, Framing::ClipSpace];
 
     /// A name for menus.
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            Framing::Orbit => "Orbit camera",
-            Framing::ClipSpace => "Clip space (the demo's)",
+            Framing::Orbit => crate::t!("framing-orbit"),
+            Framing::ClipSpace => crate::t!("framing-clip"),
         }
     }
 }

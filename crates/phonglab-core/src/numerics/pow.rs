@@ -36,11 +36,11 @@ impl PowFn {
     pub const ALL: [PowFn; 3] = [PowFn::Exact, PowFn::Llvmpipe, PowFn::Schlick];
 
     /// A short name for menus and files.
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            PowFn::Exact => "exact pow",
-            PowFn::Llvmpipe => "llvmpipe exp2(e log2 x)",
-            PowFn::Schlick => "Schlick x/(e-ex+x)",
+            PowFn::Exact => crate::t!("pow-exact"),
+            PowFn::Llvmpipe => "llvmpipe exp2(e log2 x)".into(),
+            PowFn::Schlick => "Schlick x/(e-ex+x)".into(),
         }
     }
 

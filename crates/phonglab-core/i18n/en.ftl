@@ -1,0 +1,412 @@
+# phonglab's messages in English.
+
+## app
+
+language-menu-hover = Language, and how numbers are written (0,5 or 0.5)
+leave-presenting = Leave (F5)
+present = Present (F5)
+present-hover = Large type; the controls in a drawer
+controls-drawer = Controls drawer
+controls-drawer-hover = The scene's controls, in a drawer
+controls = Controls
+calculation = Calculation
+theme-hover = Both themes are high-contrast
+theme-light = Light theme
+theme-dark = Dark theme
+reset-worksheet = Reset to worksheet
+presets = Presets
+redbook-teapots = Red Book teapots
+compare = Compare
+compare-hover = Pin the scene as A, change anything, and see A and B side by side
+quiz = Quiz
+quiz-hover = Every value of the calculation behind a field: type them step by step
+shader = Shader
+shader-hover = The GLSL or WGSL program this scene compiles to: only the stages it needs
+precision = Precision:
+f32-hover = Evaluate in single precision, as OpenGL does
+f64-hover = Evaluate in double precision
+cost-of-accuracy = Cost of accuracy
+cost-hover = What each shading, tessellation and approximation costs in time and in error
+help-button = Help (F1)
+undo-what = Undo { $what } (Ctrl+Z)
+redo-what = Redo { $what } (Ctrl+Shift+Z, Ctrl+Y)
+undo-button = ⟲ Undo
+redo-button = ⟳ Redo
+nothing-to-undo = Nothing to undo
+nothing-to-redo = Nothing to redo
+could-not-evaluate = Could not evaluate the scene ({ $error }); back to the worksheet.
+keyboard-shortcuts = Keyboard shortcuts
+vectors-at-vertex = Vectors at the vertex
+reflection-lobe = Reflection lobe
+session-not-saved = The session could not be saved: { $error }.
+no-session-folder = There is no folder to keep the session in (HOME is not set): this window will not save its session.
+
+## controls
+
+controls-rules = Rules
+controls-lights = Lights
+controls-material = Material
+controls-light-model = Light model
+controls-vertex = Vertex
+controls-camera = Camera (modelview)
+rule-set = Rule set
+specular-model = Specular model
+rules-opengl-summary = Emission + scene ambient + every light's ambient, diffuse and specular (OpenGL 2.1, 2.14.1).
+rules-worksheet-summary = The worksheet: no scene ambient, no emission; diffuse 0 past 90 degrees, specular 0 past 90 degrees.
+rules-demo-summary = The Phong demo's shader: no scene ambient, no emission, pow(max(R.V, 0), e) with no other gate.
+ruleset-worksheet = Worksheet
+ruleset-demo = Phong demo
+pow-exact = exact pow
+placement-eye = the eye (moves with the camera)
+placement-world = the world
+placement-object = the object (turns with it)
+placement-matrix = a typed matrix
+add-light = Add light
+remove-light = Remove light
+lights-count =
+    { $count ->
+    [one] { $count } light
+    *[other] { $count } lights
+    }
+lights-of-max = { $count } of { $max }
+light-tab = Light { $index }
+no-lights = No lights: only emission and the scene ambient remain.
+directional = Directional (w = 0)
+light-x = Light x
+light-y = Light y
+light-z = Light z
+light-fixed-to = Light fixed to
+light-ambient = Light ambient
+light-diffuse = Light diffuse
+light-specular = Light specular
+attenuation-constant = Constant attenuation
+attenuation-linear = Linear attenuation
+attenuation-quadratic = Quadratic attenuation
+attenuation-positional-only = Attenuation applies to positional lights only.
+spotlight = Spotlight
+spotlight-hover = A new spotlight aims at the object in the view
+spot-direction = Spot direction
+spot-cutoff = Spot cutoff
+spot-exponent = Spot exponent
+material-custom = custom
+material-preset = Material preset
+material-ambient = Material ambient
+material-diffuse = Material diffuse
+material-specular = Material specular
+material-emission = Material emission
+material-shininess = Material shininess
+back-preset = Back preset
+back-ambient = Back ambient
+back-diffuse = Back diffuse
+back-specular = Back specular
+back-emission = Back emission
+back-shininess = Back shininess
+separate-back-material = Separate back material
+scene-ambient = Scene ambient
+local-viewer = Local viewer
+two-sided = Two-sided lighting
+separate-specular = Separate specular colour
+normals-as-is = as transformed
+normals = Normals
+vertex = Vertex
+normal = Normal
+normalise-normal = Normalise the normal
+camera = Camera
+camera-kind-worksheet = Worksheet modelview
+camera-kind-of = openFrameworks camera
+camera-kind-matrix = Typed 4x4
+camera-eye = Eye
+camera-centre = Centre
+camera-up = Up
+window-width = Window width
+window-height = Window height
+of-eye-distance = Eye distance (H/2)/tan(30 deg) = { $distance }
+object-placement = Object placement (world from object)
+object-matrix = Object
+matrix-column = column { $column }
+matrix-row = { $name } row { $row }
+matrix-cell = { $name } row { $row } column { $column }
+mview1-what = the openFrameworks camera, translate z by −665.108
+mview2-what = a rotation about x, as printed (one entry with a digit less, −0.85749)
+mview34-what = built from 15/17 and 8/17, as the worksheet prints it
+mview5-what = a 3-4-5 rotation about x and translate z by −960
+
+## result
+
+unclamped = unclamped
+unclamped-hover = The primary colour as the equation gives it.
+clamped = clamped
+clamped-hover = Primary + secondary rgb, clamped to [0, 1]: what a fragment gets.
+secondary = secondary
+secondary-hover = The secondary (specular) colour.
+rows-with-secondary = unclamped, clamped, secondary
+rows-unclamped-clamped = unclamped, then clamped
+vertex-colour = Vertex colour
+front-face = Front face
+back-face = Back face
+colour-hidden = Hidden while the quiz is open: it is the quiz's last answer, I.
+colour-hidden-teacher = The teacher can show it with "Show the answers" in the quiz.
+refused-kept = Refused: { $error }. The scene keeps its last valid value.
+history-reset = reset to the worksheet
+reset-done = Reset to the worksheet (mview5).
+history-open = open { $what }
+loaded = Loaded { $what }.
+undid = Undid { $what }.
+redid = Redid { $what }.
+not-whole = { $text } is not a whole number
+outside-range = { $text } is outside { $min } to { $max }
+numbers-type-one = { $count } numbers: type one
+numbers-type-row = { $count } numbers: type one, or all { $fields } of the row
+refused-esc = { $why } (Esc: back to { $value })
+typed-empty = no value
+typed-not-a-number = "{ $text }" is not a number
+typed-not-finite = { $text } is not a finite number
+typed-too-large = { $text } is beyond single precision's range (±3.4e38)
+typed-too-small = { $text } is too small for single precision: it would be 0
+
+## help
+
+help-help = show or hide this help
+help-local-viewer = toggle the local viewer
+help-next-material = next classic material
+help-previous-material = previous classic material
+help-next-modelview = next worksheet modelview (mview1..5)
+help-specular-model = Blinn-Phong / Phong specular
+help-next-rules = next rule set (OpenGL, worksheet, Phong demo)
+help-next-normals = next normal mode (as is, normalize, rescale)
+help-two-sided = two-sided lighting on/off
+help-precision = f32 / f64 evaluation
+help-reset = reset to the worksheet
+help-open = open the scene file at the typed path
+help-save = save the scene to the typed path
+help-quit = quit (the session is saved)
+help-undo = undo the last change of the scene
+help-redo = redo
+help-sphere = shaded view: sphere (as the demo)
+help-teapot = shaded view: teapot
+help-cylinder = shaded view: cylinder
+help-gouraud = Gouraud shading (as the demo)
+help-phong = Phong shading
+help-flat = Flat shading
+help-auto-rotate = auto-rotate the shaded view
+help-drop = Drop a scene file (.toml) on the window to open it.
+help-drag = Drag the vector plot or the shaded view to orbit it; scroll the shaded view to zoom; click its surface to explain that vertex.
+help-numbers = A number field takes a decimal point or comma, and reads what was typed when it is left (Enter, Tab, a click elsewhere); a refused value stays in red with its reason until it is corrected or Esc puts the value back.
+help-undo-keys = Ctrl+Z undoes any change of the scene. Keys without Ctrl do nothing while a text field has the keyboard, nor in the quiz.
+help-demo-title = The Phong demo preset: the demo's choices and OpenGL's
+help-demo-space = The demo's: lighting in object space, light and eye at (-4, 0, -8), so the light turns with the object. OpenGL's: lighting in eye space after the modelview (switch: light fixed in the world).
+help-demo-normals = The demo's: every normal is normalize(position). OpenGL's: the surface's normals (switch: the surface's true normals).
+help-demo-specular = The demo's: R = 2 max(N.L, 0) N - L and pow(max(V.R, 0), 100), times the object's red, so the highlight is red. OpenGL's: Blinn-Phong's n.H and the light's specular colour times the material's (switch: highlight in the light's colour).
+help-demo-pipeline = The demo's: no projection (the picture is clip space), Phong without renormalising, Flat from dFdx/dFdy per fragment, colours interpolated unclamped. Under Pipeline, the shaded view offers OpenGL's choices.
+
+## quiz
+
+quiz-input-yours = { $name } = { $value } (yours)
+quiz-input-key = { $name } = { $value } (key)
+quiz-the-givens = the givens
+quiz-right = ✔ right
+quiz-right-given = ✔ right, given your { $yours } (the key's { $yours } gives { $name } = { $key })
+quiz-close-key = ≈ close: { $percent } % from the key; give { $digits } significant digits
+quiz-close-yours = ≈ close: { $percent } % from what your earlier answers give; give { $digits } significant digits
+quiz-wrong = ✖ wrong: { $formula } = { $value }, from { $inputs }
+quiz-level = Level
+quiz-levels = 1 directional, 2 positional with attenuation, 3 spotlights, 4 two-sided with several lights
+quiz-this-scene = Quiz this scene
+quiz-this-scene-hover = Start over on the scene shown, every value hidden
+quiz-new-exercise = New exercise
+quiz-new-exercise-hover = A new scene of this level, screened as phonglab exercise screens
+quiz-reveal-all = Reveal all
+quiz-reveal-all-hover = Show the key's value under every step
+quiz-clear = Clear answers
+quiz-clear-hover = Start this quiz again with no answers
+quiz-show-answers = Show the answers (teacher)
+quiz-show-answers-hover = The vertex colour, the plot's angles and every step's key
+quiz-nothing-open = Open an exercise (phonglab exercise writes them) or any scene, then press "Quiz this scene", or press New exercise.
+quiz-instructions = { $scene }: type each step's value and press Enter. Right: within { $percent } % of the value (or { $absolute } near 0). A point or a comma; a vector as 0,5; 0,3; 0,1.
+quiz-score = Score: { $right } of { $all } ({ $answered } answered)
+quiz-your-value = your value
+quiz-reveal = Reveal
+quiz-reveal-hover = Show the key's value for this step
+quiz-not-numbers = does not read as numbers: { $error }
+quiz-key = key: { $name } = { $value }
+
+## explain
+
+explain-heading = { $side } side, { $lights }, { $precision }, rules: { $rules }
+side-front = front
+side-back = back
+note-line = note: { $note }
+step-normal = Transformed normal
+step-normal-back = Transformed normal (back side: -N)
+step-position = Vertex in eye space
+step-light-position = Light in eye space
+step-l = Light vector
+step-distance = Distance to the light
+step-v = View vector
+step-ambient = Ambient term
+step-diffuse = Diffuse term
+step-h = Halfway vector
+step-r = Reflection vector
+step-specular = Specular term
+step-attenuation = Attenuation
+step-spot = Spotlight
+step-share = This light's share
+step-scene-ambient = Scene ambient
+step-emission = Emission
+step-primary = Vertex colour
+step-secondary = Secondary colour
+step-clamped = Colour as drawn
+formula-normal-gl = vertexNormal = (M^-1)^T · vertexNormal   (OpenGL's N)
+formula-normal-gl-normalize = vertexNormal = normalize((M^-1)^T · vertexNormal)   (OpenGL's N, GL_NORMALIZE)
+formula-normal-gl-rescale = vertexNormal = f · (M^-1)^T · vertexNormal, f = 1/|row 3 of M^-1|   (OpenGL's N, GL_RESCALE_NORMAL)
+formula-normal-ws = vertexNormal = mview · vertexNormal   (the worksheet: M itself; OpenGL: (M^-1)^T)
+formula-normal-ws-normalize = vertexNormal = normalize(mview · vertexNormal)   (the worksheet: M itself; OpenGL: (M^-1)^T)
+formula-normal-ws-rescale = vertexNormal = f · mview · vertexNormal, f = 1/|row 3 of M^-1|   (the worksheet's M)
+formula-position = vertexPos = mview · vertexPos, divided by w   (OpenGL: P = M v)
+formula-light-position = lightPos = mview · lightPos   (OpenGL: P_l, the modelview when the light was placed times GL_POSITION)
+formula-l-positional = vlv = normalize(lightPos − vertexPos)   (OpenGL: L = normalize(P_l − P))
+formula-l-directional = vlv = normalize(lightPos)   (directional, w = 0; OpenGL: L = normalize(P_l.xyz))
+formula-v-local = vov = normalize(obs − vertexPos), obs = [0 0 0 1]   (local viewer; OpenGL: V = −P/|P|)
+formula-v-worksheet = vov = normalize(obs − vertexPos), obs = vertexPos · [1 1 0 1]   (the worksheet's infinite viewer: (0, 0, −sign z))
+formula-v-infinite = vov = [0 0 1 0]   (infinite viewer; OpenGL: V = (0, 0, 1))
+formula-r-demo = R = 2 max(vertexNormal · vlv, 0) vertexNormal − vlv   (the demo's)
+gate-lit-side = f = 1 if cosTheta > 0
+gate-positive = only where cos > 0
+gate-none = no gate
+formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate }; f = { $f }; OpenGL: s_cl · s_cm · max(n · h, 0)^s_rm)
+formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: the terms are divided by k0 + k1 d + k2 d²)
+formula-at-directional = at = 1   (directional)
+formula-spot = spot = max(-L . s, 0)^e if -L . s >= cos(cutoff) = { $cutoff }, else 0;  -L . s = { $angle }
+formula-spot-none = spot = 1   (cutoff 180: not a spotlight)
+formula-share-separate = Ilight = spot · (Iamb + Idif) / at   (specular goes to the secondary colour)
+formula-scene-ambient = a_cm a_cs   (light-model ambient)
+formula-i-opengl = I = e_cm + a_cm a_cs + sum of the lights' shares
+formula-i-worksheet = I = (Iamb + Idif + Ispec) / at, summed over the lights   (the worksheet's I)
+formula-secondary = sum of att spot Ispec   (separate specular)
+formula-clamped = rgba clamped to [0, 1]; alpha = diffuse alpha
+note-demo-space = the Phong demo lights in object space with its eye at (-4, 0, -8); here eye space is object space moved by (4, 0, 8), so that eye is the origin: every vector and term is the demo's
+note-vov-behind = the worksheet's text says vov is always [0 0 1 0]; its code gives [0 0 -1 0] here, as the vertex is behind the eye (z > 0)
+note-no-distance = directional light: no distance
+mview-note-gap = so M n, the worksheet's normal, points { $angle } away from OpenGL's (M^-1)^T n, and N and every term after it differ from OpenGL's
+mview-note-small-gap = M n and OpenGL's (M^-1)^T n point { $angle } apart here
+mview-note-singular = M is singular: OpenGL's (M^-1)^T n does not exist
+mview-note-rotation = M is a rotation to the 6 digits it is printed with (row lengths { $lengths }); { $gap }
+mview-note-rows = rows { $first } and { $second } are { $angle } apart
+mview-note-rows-square = its rows are 90° apart
+mview-note-not-rotation = M is not a rotation: { $rows } (a rotation's rows are 90° apart and of length 1; these have lengths { $lengths }); { $gap }
+
+## calculation
+
+plan-heading = Specialised plan: { $computed } effects computed, { $skipped } skipped
+plan-light = light { $index }:{" "}
+plan-computed = computed  { $what }
+plan-skipped = skipped   { $what }
+plan-program = The program, { $stages } stages per chunk of vertices:
+worked-calculation = Worked calculation
+copy-markdown = Copy as Markdown
+copy-markdown-hover = Copies every step as a Markdown table.
+side = Side:
+not-applicable = n/a
+skipped-by-specialised = skipped by the specialised evaluator: { $why }
+plot-view = View:
+plot-view-hover = Look at the { $plane } plane
+
+## view
+
+object-sphere = Sphere
+object-teapot = Teapot
+object-cylinder = Cylinder
+object-mesh = Your mesh
+framing-orbit = Orbit camera
+framing-clip = Clip space (the demo's)
+fix-light-world = light fixed in the world
+fix-true-normals = the surface's true normals
+fix-highlight-colour = highlight in the light's colour
+why-light-world = The demo lights untransformed positions and normals, so its light turns with the object; the document's own fix transforms them by mvMatrix (for a rotation its inverse transpose is itself), and the light stays put while the object turns.
+why-true-normals = normalize(position) is the normal of a sphere about the origin only; the teapot's and the cylinder's surfaces point elsewhere, and their true normals light them as they are.
+why-highlight-colour = The demo multiplies the specular term by the object's red; OpenGL multiplies the light's specular colour by the material's specular colour (white here), so a highlight shows the light's colour.
+pipeline = Pipeline: OpenGL's or the demo's
+picture = Picture
+phong-renormalises = Phong renormalises N
+phong-renormalises-hover = OpenGL shaders normalise the interpolated normal; the demo's does not
+flat-derivatives = Flat from dFdx/dFdy
+flat-derivatives-hover = The demo's Flat: each fragment lit with cross(dFdy(p), dFdx(p)); otherwise one colour per face
+correct-the-demo = Correct the demo:
+why-demo-differs = Why the demo differs
+why-demo-differs-intro = Each switch on corrects the demo in a second picture, on the right of its own.
+sphere-slices = Sphere slices
+sphere-stacks = Sphere stacks
+teapot-grid = Teapot grid
+cylinder-slices = Cylinder slices
+cylinder-stacks = Cylinder stacks
+caps = Caps
+mesh-triangles = { $count } triangles: { $notes }
+key-hint = key { $key }
+mesh-tip = { $path } (open another under View options, or drop an .obj file)
+auto-rotate = Auto-rotate
+auto-rotate-hover = 0.5 degrees a frame, as the demo (key A)
+demo-normals = Demo's normals
+demo-normals-hover = normalize(position), as the demo: wrong for the teapot and the cylinder
+heat-map = Error heat map
+heat-map-hover = Beside the view: how far each pixel is from per-pixel Phong in f64 on a very fine mesh
+view-options = View options
+mesh-file = Mesh file (.obj):
+show-mesh = Show mesh
+show-mesh-hover = Shade this OBJ file in the view (Enter in the field)
+shaded-cannot-render = The shaded view cannot render this scene
+corrected-cannot-render = The corrected view cannot render
+the-demos-own = {" "}(the demo's own)
+picture-hover = Drag to orbit, scroll to zoom, click the surface to make that vertex the worked calculation's
+corrected = Corrected: { $fixes }
+picked-vertex = Vertex { $index } of the { $object }: the worked calculation now uses it, as the shaded view lights it.
+light-behind = light { $index } (behind the camera)
+light-name = light { $index }
+light-drag = Light { $index }: drag to move it
+renderer = Renderer
+renderer-hover = The CPU renderer is the reference; the GPU runs the scene's generated WGSL (Shader window)
+renderer-auto = Automatic (GPU if a real one)
+renderer-cpu = CPU (the reference)
+renderer-gpu = GPU (even a software one)
+drawn-gpu = Drawn on the GPU ({ $adapter }) by the scene's generated WGSL.
+drawn-cpu = Drawn by the CPU renderer: { $why }.
+caption-gpu = on the GPU ({ $adapter })
+caption-cpu = { $ms } ms per frame on the CPU
+cpu-flat = Flat shading is drawn by the CPU renderer (the generator writes Gouraud and Phong)
+cpu-approximate-pow = an approximate power function is studied on the CPU renderer (the GPU's pow is its own)
+cpu-no-adapter = no wgpu adapter here (headless, or another backend)
+cpu-chosen = the CPU renderer is chosen under View options
+cpu-software-adapter = the adapter ({ $adapter }) is a software one, no faster than the CPU renderer
+
+## files
+
+not-opened-worksheet = Not opened: { $why }. Showing the worksheet instead.
+not-opened = Not opened: { $why }. The current scene is unchanged.
+mesh-summary = { $triangles } triangles, { $vertices } vertices; { $notes }
+opened-mesh = Opened the mesh { $path }: { $what }.
+not-text = { $path } is not a text file
+saved = Saved { $path }.
+not-saved = Not saved: { $error }.
+scene-file = Scene file:
+scene-file-hint = path/to/scene.toml
+open = Open
+open-hover = Open the scene file at this path (Ctrl+O)
+save = Save
+save-hover = Save the scene to this path (Ctrl+S)
+open-dialog = Open…
+open-dialog-hover = Choose a scene file in the system's file dialog
+save-as = Save as…
+save-as-hover = Choose where to save in the system's file dialog
+drop-to-open = Drop a scene file (.toml) or a mesh (.obj) to open it
+cannot-read = cannot read { $path }: { $error }
+dropped-several = {" "}({ $count } files were dropped; only the first is opened.)
+type-path-first = Type the scene file's path first.
+
+## plots
+
+plot-drag = Drag to orbit (yaw { $yaw }°, pitch { $pitch }°)
+lobe-no-light = No light with a defined L at this vertex: nothing to plot.
+lobe-axis = φ, degrees from N
+lobe-luminance = { $name } = { $value } (the luminance of { $colour })
+lobe-caption = Light { $light }: θ = { $theta }°, n = { $n }, { $kd }, { $ks }; the vertex's V at φ = { $phi }°
+lobe-diffuse = diffuse kd cos θ
+lobe-vertex-v = the vertex's V

@@ -1,0 +1,412 @@
+# As mensagens do phonglab em português europeu.
+
+## app
+
+language-menu-hover = Língua, e como se escrevem os números (0,5 ou 0.5)
+leave-presenting = Sair (F5)
+present = Apresentar (F5)
+present-hover = Letra grande; os controlos numa gaveta
+controls-drawer = Gaveta dos controlos
+controls-drawer-hover = Os controlos da cena, numa gaveta
+controls = Controlos
+calculation = Cálculo
+theme-hover = Os dois temas têm alto contraste
+theme-light = Tema claro
+theme-dark = Tema escuro
+reset-worksheet = Voltar à ficha
+presets = Cenas prontas
+redbook-teapots = Bules do Red Book
+compare = Comparar
+compare-hover = Fixa a cena como A; muda o que quiseres e vê A e B lado a lado
+quiz = Teste
+quiz-hover = Cada valor do cálculo atrás de um campo: escreve-os passo a passo
+shader = Shader
+shader-hover = O programa GLSL ou WGSL em que esta cena se compila: só as etapas de que precisa
+precision = Precisão:
+f32-hover = Calcular em precisão simples, como o OpenGL
+f64-hover = Calcular em precisão dupla
+cost-of-accuracy = Custo da exatidão
+cost-hover = O que cada sombreamento, tesselação e aproximação custa em tempo e em erro
+help-button = Ajuda (F1)
+undo-what = Desfazer { $what } (Ctrl+Z)
+redo-what = Refazer { $what } (Ctrl+Shift+Z, Ctrl+Y)
+undo-button = ⟲ Desfazer
+redo-button = ⟳ Refazer
+nothing-to-undo = Nada a desfazer
+nothing-to-redo = Nada a refazer
+could-not-evaluate = Não foi possível calcular a cena ({ $error }); de volta à ficha.
+keyboard-shortcuts = Atalhos de teclado
+vectors-at-vertex = Vetores no vértice
+reflection-lobe = Lóbulo de reflexão
+session-not-saved = Não foi possível guardar a sessão: { $error }.
+no-session-folder = Não há pasta onde guardar a sessão (HOME não está definida): esta janela não guardará a sua sessão.
+
+## controls
+
+controls-rules = Regras
+controls-lights = Luzes
+controls-material = Material
+controls-light-model = Modelo de iluminação
+controls-vertex = Vértice
+controls-camera = Câmara (modelview)
+rule-set = Regras de cálculo
+specular-model = Modelo especular
+rules-opengl-summary = Emissão + ambiente da cena + as componentes ambiente, difusa e especular de cada luz (OpenGL 2.1, 2.14.1).
+rules-worksheet-summary = A ficha de trabalho: sem ambiente da cena nem emissão; difusa 0 além de 90 graus, especular 0 além de 90 graus.
+rules-demo-summary = O shader da demo de Phong: sem ambiente da cena nem emissão, pow(max(R.V, 0), e) sem outra condição.
+ruleset-worksheet = Ficha de trabalho
+ruleset-demo = Demo de Phong
+pow-exact = pow exata
+placement-eye = o olho (move-se com a câmara)
+placement-world = o mundo
+placement-object = o objeto (roda com ele)
+placement-matrix = uma matriz escrita
+add-light = Juntar luz
+remove-light = Remover luz
+lights-count =
+    { $count ->
+    [one] { $count } luz
+    *[other] { $count } luzes
+    }
+lights-of-max = { $count } de { $max }
+light-tab = Luz { $index }
+no-lights = Sem luzes: restam apenas a emissão e o ambiente da cena.
+directional = Direcional (w = 0)
+light-x = Luz x
+light-y = Luz y
+light-z = Luz z
+light-fixed-to = Luz presa a
+light-ambient = Luz: ambiente
+light-diffuse = Luz: difusa
+light-specular = Luz: especular
+attenuation-constant = Atenuação constante
+attenuation-linear = Atenuação linear
+attenuation-quadratic = Atenuação quadrática
+attenuation-positional-only = A atenuação só vale para luz pontual ou foco.
+spotlight = Foco
+spotlight-hover = Um foco novo aponta para o objeto da vista
+spot-direction = Direção do foco
+spot-cutoff = Abertura do foco (cutoff)
+spot-exponent = Expoente do foco
+material-custom = personalizado
+material-preset = Material pré-definido
+material-ambient = Material: ambiente
+material-diffuse = Material: difusa
+material-specular = Material: especular
+material-emission = Material: emissão
+material-shininess = Material: brilho (ns)
+back-preset = Verso pré-definido
+back-ambient = Verso: ambiente
+back-diffuse = Verso: difusa
+back-specular = Verso: especular
+back-emission = Verso: emissão
+back-shininess = Verso: brilho (ns)
+separate-back-material = Material próprio para o verso
+scene-ambient = Ambiente da cena
+local-viewer = Observador local
+two-sided = Iluminação das duas faces
+separate-specular = Cor especular separada
+normals-as-is = como transformadas
+normals = Normais
+vertex = Vértice
+normal = Normal
+normalise-normal = Normalizar a normal
+camera = Câmara
+camera-kind-worksheet = Modelview da ficha
+camera-kind-of = Câmara do openFrameworks
+camera-kind-matrix = Matriz 4x4 escrita
+camera-eye = Olho
+camera-centre = Centro
+camera-up = Cima
+window-width = Largura da janela
+window-height = Altura da janela
+of-eye-distance = Distância do olho (H/2)/tan(30 graus) = { $distance }
+object-placement = Posição do objeto (do objeto para o mundo)
+object-matrix = Objeto
+matrix-column = coluna { $column }
+matrix-row = { $name } linha { $row }
+matrix-cell = { $name } linha { $row } coluna { $column }
+mview1-what = a câmara do openFrameworks, translação em z de −665,108
+mview2-what = uma rotação em torno de x, tal como impressa (uma entrada com menos um algarismo, −0,85749)
+mview34-what = construída com 15/17 e 8/17, tal como a ficha a imprime
+mview5-what = uma rotação 3-4-5 em torno de x e translação em z de −960
+
+## result
+
+unclamped = sem limite
+unclamped-hover = A cor primária tal como a equação a dá.
+clamped = limitada a [0, 1]
+clamped-hover = Primária + secundária rgb, limitada a [0, 1]: o que um fragmento recebe.
+secondary = secundária
+secondary-hover = A cor secundária (especular).
+rows-with-secondary = sem limite, limitada, secundária
+rows-unclamped-clamped = sem limite, depois limitada
+vertex-colour = Cor do vértice
+front-face = Face da frente
+back-face = Face de trás
+colour-hidden = Escondida enquanto o teste está aberto: é a última resposta do teste, I.
+colour-hidden-teacher = O professor pode mostrá-la com "Mostrar as respostas" no teste.
+refused-kept = Recusado: { $error }. A cena mantém o último valor válido.
+history-reset = voltar à ficha
+reset-done = De volta à ficha (mview5).
+history-open = abrir { $what }
+loaded = Aberto: { $what }.
+undid = Desfeito: { $what }.
+redid = Refeito: { $what }.
+not-whole = { $text } não é um número inteiro
+outside-range = { $text } está fora de { $min } a { $max }
+numbers-type-one = { $count } números: escreve um
+numbers-type-row = { $count } números: escreve um, ou todos os { $fields } da linha
+refused-esc = { $why } (Esc: volta a { $value })
+typed-empty = nenhum valor
+typed-not-a-number = "{ $text }" não é um número
+typed-not-finite = { $text } não é um número finito
+typed-too-large = { $text } está além do alcance da precisão simples (±3,4e38)
+typed-too-small = { $text } é pequeno demais para a precisão simples: seria 0
+
+## help
+
+help-help = mostrar ou esconder esta ajuda
+help-local-viewer = ligar ou desligar o observador local
+help-next-material = material clássico seguinte
+help-previous-material = material clássico anterior
+help-next-modelview = modelview seguinte da ficha (mview1..5)
+help-specular-model = especular de Blinn-Phong / Phong
+help-next-rules = regras seguintes (OpenGL, ficha, demo de Phong)
+help-next-normals = modo seguinte das normais (como estão, normalizar, reescalar)
+help-two-sided = iluminação das duas faces ligada/desligada
+help-precision = cálculo em f32 / f64
+help-reset = voltar à ficha
+help-open = abrir o ficheiro de cena no caminho escrito
+help-save = guardar a cena no caminho escrito
+help-quit = sair (a sessão é guardada)
+help-undo = desfazer a última alteração da cena
+help-redo = refazer
+help-sphere = vista sombreada: esfera (como a demo)
+help-teapot = vista sombreada: bule
+help-cylinder = vista sombreada: cilindro
+help-gouraud = sombreamento de Gouraud (como a demo)
+help-phong = sombreamento de Phong
+help-flat = sombreamento plano (Flat)
+help-auto-rotate = rodar a vista sombreada sozinha
+help-drop = Larga um ficheiro de cena (.toml) na janela para o abrir.
+help-drag = Arrasta o gráfico dos vetores ou a vista sombreada para os rodar; usa a roda na vista sombreada para ampliar; clica na superfície para explicar esse vértice.
+help-numbers = Um campo numérico aceita ponto ou vírgula decimal e lê o que foi escrito quando se sai dele (Enter, Tab, um clique noutro sítio); um valor recusado fica a vermelho com a razão até ser corrigido ou até Esc repor o valor.
+help-undo-keys = Ctrl+Z desfaz qualquer alteração da cena. As teclas sem Ctrl não fazem nada enquanto um campo de texto tem o teclado, nem no teste.
+help-demo-title = A cena da demo de Phong: as escolhas da demo e as do OpenGL
+help-demo-space = Da demo: iluminação no espaço do objeto, luz e olho em (-4, 0, -8), por isso a luz roda com o objeto. Do OpenGL: iluminação no espaço do olho, depois da modelview (interruptor: luz presa ao mundo).
+help-demo-normals = Da demo: cada normal é normalize(posição). Do OpenGL: as normais da superfície (interruptor: as normais verdadeiras da superfície).
+help-demo-specular = Da demo: R = 2 max(N.L, 0) N - L e pow(max(V.R, 0), 100), vezes o vermelho do objeto, por isso o brilho é vermelho. Do OpenGL: o n.H de Blinn-Phong e a cor especular da luz vezes a do material (interruptor: brilho da cor da luz).
+help-demo-pipeline = Da demo: sem projeção (a imagem é o espaço de recorte), Phong sem renormalizar, Flat a partir de dFdx/dFdy por fragmento, cores interpoladas sem limite. Em Pipeline, a vista sombreada oferece as escolhas do OpenGL.
+
+## quiz
+
+quiz-input-yours = { $name } = { $value } (teu)
+quiz-input-key = { $name } = { $value } (chave)
+quiz-the-givens = os dados
+quiz-right = ✔ certo
+quiz-right-given = ✔ certo, dado o teu { $yours } (o { $yours } da chave dá { $name } = { $key })
+quiz-close-key = ≈ perto: a { $percent } % da chave; dá { $digits } algarismos significativos
+quiz-close-yours = ≈ perto: a { $percent } % do que as tuas respostas anteriores dão; dá { $digits } algarismos significativos
+quiz-wrong = ✖ errado: { $formula } = { $value }, a partir de { $inputs }
+quiz-level = Nível
+quiz-levels = 1 direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
+quiz-this-scene = Testar esta cena
+quiz-this-scene-hover = Recomeçar com a cena mostrada, todos os valores escondidos
+quiz-new-exercise = Novo exercício
+quiz-new-exercise-hover = Uma cena nova deste nível, filtrada como o phonglab exercise filtra
+quiz-reveal-all = Revelar tudo
+quiz-reveal-all-hover = Mostrar o valor da chave em cada passo
+quiz-clear = Limpar respostas
+quiz-clear-hover = Recomeçar este teste sem respostas
+quiz-show-answers = Mostrar as respostas (professor)
+quiz-show-answers-hover = A cor do vértice, os ângulos do gráfico e a chave de cada passo
+quiz-nothing-open = Abre um exercício (o phonglab exercise escreve-os) ou qualquer cena e carrega em "Testar esta cena", ou carrega em Novo exercício.
+quiz-instructions = { $scene }: escreve o valor de cada passo e prime Enter. Certo: a menos de { $percent } % do valor (ou { $absolute } perto de 0). Ponto ou vírgula; um vetor como 0,5; 0,3; 0,1.
+quiz-score = Pontuação: { $right } de { $all } ({ $answered } respondidos)
+quiz-your-value = o teu valor
+quiz-reveal = Revelar
+quiz-reveal-hover = Mostrar o valor da chave neste passo
+quiz-not-numbers = não se lê como números: { $error }
+quiz-key = chave: { $name } = { $value }
+
+## explain
+
+explain-heading = face { $side }, { $lights }, { $precision }, regras: { $rules }
+side-front = da frente
+side-back = de trás
+note-line = nota: { $note }
+step-normal = Vetor normal transformado
+step-normal-back = Vetor normal transformado (face de trás: -N)
+step-position = Vértice no espaço do olho
+step-light-position = Luz no espaço do olho
+step-l = Vetor da luz
+step-distance = Distância à luz
+step-v = Vetor do observador
+step-ambient = Componente ambiente
+step-diffuse = Componente difusa
+step-h = Vetor halfway
+step-r = Vetor refletido
+step-specular = Componente especular
+step-attenuation = Atenuação
+step-spot = Foco
+step-share = Parte desta luz
+step-scene-ambient = Ambiente da cena
+step-emission = Emissão
+step-primary = Cor do vértice
+step-secondary = Cor secundária
+step-clamped = Cor desenhada
+formula-normal-gl = vertexNormal = (M^-1)^T · vertexNormal   (o N do OpenGL)
+formula-normal-gl-normalize = vertexNormal = normalize((M^-1)^T · vertexNormal)   (o N do OpenGL, GL_NORMALIZE)
+formula-normal-gl-rescale = vertexNormal = f · (M^-1)^T · vertexNormal, f = 1/|linha 3 de M^-1|   (o N do OpenGL, GL_RESCALE_NORMAL)
+formula-normal-ws = vertexNormal = mview · vertexNormal   (a ficha: a própria M; OpenGL: (M^-1)^T)
+formula-normal-ws-normalize = vertexNormal = normalize(mview · vertexNormal)   (a ficha: a própria M; OpenGL: (M^-1)^T)
+formula-normal-ws-rescale = vertexNormal = f · mview · vertexNormal, f = 1/|linha 3 de M^-1|   (a M da ficha)
+formula-position = vertexPos = mview · vertexPos, dividido por w   (OpenGL: P = M v)
+formula-light-position = lightPos = mview · lightPos   (OpenGL: P_l, a modelview de quando a luz foi colocada vezes GL_POSITION)
+formula-l-positional = vlv = normalize(lightPos − vertexPos)   (OpenGL: L = normalize(P_l − P))
+formula-l-directional = vlv = normalize(lightPos)   (direcional, w = 0; OpenGL: L = normalize(P_l.xyz))
+formula-v-local = vov = normalize(obs − vertexPos), obs = [0 0 0 1]   (observador local; OpenGL: V = −P/|P|)
+formula-v-worksheet = vov = normalize(obs − vertexPos), obs = vertexPos · [1 1 0 1]   (o observador no infinito da ficha: (0, 0, −sinal z))
+formula-v-infinite = vov = [0 0 1 0]   (observador no infinito; OpenGL: V = (0, 0, 1))
+formula-r-demo = R = 2 max(vertexNormal · vlv, 0) vertexNormal − vlv   (o da demo)
+gate-lit-side = f = 1 se cosTheta > 0
+gate-positive = só onde cos > 0
+gate-none = sem condição
+formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate }; f = { $f }; OpenGL: s_cl · s_cm · max(n · h, 0)^s_rm)
+formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: as componentes são divididas por k0 + k1 d + k2 d²)
+formula-at-directional = at = 1   (direcional)
+formula-spot = spot = max(-L . s, 0)^e se -L . s >= cos(cutoff) = { $cutoff }, senão 0;  -L . s = { $angle }
+formula-spot-none = spot = 1   (cutoff 180: não é um foco)
+formula-share-separate = Ilight = spot · (Iamb + Idif) / at   (a especular vai para a cor secundária)
+formula-scene-ambient = a_cm a_cs   (ambiente do modelo de iluminação)
+formula-i-opengl = I = e_cm + a_cm a_cs + soma das partes das luzes
+formula-i-worksheet = I = (Iamb + Idif + Ispec) / at, somado sobre as luzes   (o I da ficha)
+formula-secondary = soma de att spot Ispec   (especular separada)
+formula-clamped = rgba limitado a [0, 1]; alfa = alfa da difusa
+note-demo-space = a demo de Phong ilumina no espaço do objeto com o olho em (-4, 0, -8); aqui o espaço do olho é o espaço do objeto deslocado de (4, 0, 8), para que esse olho seja a origem: cada vetor e componente é o da demo
+note-vov-behind = o texto da ficha diz que vov é sempre [0 0 1 0]; o seu código dá aqui [0 0 -1 0], porque o vértice está atrás do olho (z > 0)
+note-no-distance = luz direcional: sem distância
+mview-note-gap = por isso M n, a normal da ficha, aponta a { $angle } da (M^-1)^T n do OpenGL, e N e cada componente a seguir diferem dos do OpenGL
+mview-note-small-gap = M n e a (M^-1)^T n do OpenGL apontam aqui a { $angle } uma da outra
+mview-note-singular = M é singular: a (M^-1)^T n do OpenGL não existe
+mview-note-rotation = M é uma rotação aos 6 algarismos com que está impressa (comprimentos das linhas { $lengths }); { $gap }
+mview-note-rows = as linhas { $first } e { $second } fazem { $angle }
+mview-note-rows-square = as suas linhas fazem 90°
+mview-note-not-rotation = M não é uma rotação: { $rows } (as linhas de uma rotação fazem 90° e têm comprimento 1; estas têm comprimentos { $lengths }); { $gap }
+
+## calculation
+
+plan-heading = Plano especializado: { $computed } efeitos calculados, { $skipped } saltados
+plan-light = luz { $index }:{" "}
+plan-computed = calculado  { $what }
+plan-skipped = saltado   { $what }
+plan-program = O programa, { $stages } etapas por bloco de vértices:
+worked-calculation = Cálculo passo a passo
+copy-markdown = Copiar como Markdown
+copy-markdown-hover = Copia todos os passos como uma tabela Markdown.
+side = Face:
+not-applicable = não se aplica
+skipped-by-specialised = saltado pelo avaliador especializado: { $why }
+plot-view = Vista:
+plot-view-hover = Ver o plano { $plane }
+
+## view
+
+object-sphere = Esfera
+object-teapot = Bule
+object-cylinder = Cilindro
+object-mesh = A tua malha
+framing-orbit = Câmara em órbita
+framing-clip = Espaço de recorte (o da demo)
+fix-light-world = luz presa ao mundo
+fix-true-normals = as normais verdadeiras da superfície
+fix-highlight-colour = brilho da cor da luz
+why-light-world = A demo ilumina posições e normais não transformadas, por isso a luz roda com o objeto; a correção do próprio documento transforma-as pela mvMatrix (para uma rotação, a inversa transposta é ela própria), e a luz fica parada enquanto o objeto roda.
+why-true-normals = normalize(posição) só é a normal de uma esfera centrada na origem; as superfícies do bule e do cilindro apontam para outros lados, e as suas normais verdadeiras iluminam-nas como são.
+why-highlight-colour = A demo multiplica a componente especular pelo vermelho do objeto; o OpenGL multiplica a cor especular da luz pela cor especular do material (aqui branca), por isso o brilho mostra a cor da luz.
+pipeline = Pipeline: a do OpenGL ou a da demo
+picture = Imagem
+phong-renormalises = Phong renormaliza N
+phong-renormalises-hover = Os shaders do OpenGL normalizam a normal interpolada; o da demo não
+flat-derivatives = Flat a partir de dFdx/dFdy
+flat-derivatives-hover = O Flat da demo: cada fragmento iluminado com cross(dFdy(p), dFdx(p)); senão, uma cor por face
+correct-the-demo = Corrigir a demo:
+why-demo-differs = Porque é que a demo difere
+why-demo-differs-intro = Cada interruptor ligado corrige a demo numa segunda imagem, à direita da sua.
+sphere-slices = Fatias da esfera
+sphere-stacks = Camadas da esfera
+teapot-grid = Grelha do bule
+cylinder-slices = Fatias do cilindro
+cylinder-stacks = Camadas do cilindro
+caps = Tampas
+mesh-triangles = { $count } triângulos: { $notes }
+key-hint = tecla { $key }
+mesh-tip = { $path } (abre outra em Opções da vista, ou larga um ficheiro .obj)
+auto-rotate = Rodar sozinho
+auto-rotate-hover = 0,5 graus por imagem, como a demo (tecla A)
+demo-normals = Normais da demo
+demo-normals-hover = normalize(posição), como a demo: erradas para o bule e o cilindro
+heat-map = Mapa de calor do erro
+heat-map-hover = Ao lado da vista: a distância de cada píxel ao Phong por píxel em f64 numa malha muito fina
+view-options = Opções da vista
+mesh-file = Ficheiro da malha (.obj):
+show-mesh = Mostrar a malha
+show-mesh-hover = Sombrear este ficheiro OBJ na vista (Enter no campo)
+shaded-cannot-render = A vista sombreada não consegue desenhar esta cena
+corrected-cannot-render = A vista corrigida não consegue desenhar
+the-demos-own = {" "}(a da própria demo)
+picture-hover = Arrasta para rodar, usa a roda para ampliar, clica na superfície para que esse vértice seja o do cálculo
+corrected = Corrigida: { $fixes }
+picked-vertex = Vértice { $index } de { $object }: o cálculo passa a usá-lo, tal como a vista sombreada o ilumina.
+light-behind = luz { $index } (atrás da câmara)
+light-name = luz { $index }
+light-drag = Luz { $index }: arrasta para a mover
+renderer = Desenho
+renderer-hover = O desenho no CPU é a referência; a GPU corre o WGSL gerado para a cena (janela Shader)
+renderer-auto = Automático (GPU, se for real)
+renderer-cpu = CPU (a referência)
+renderer-gpu = GPU (mesmo por software)
+drawn-gpu = Desenhado na GPU ({ $adapter }) pelo WGSL gerado para a cena.
+drawn-cpu = Desenhado pelo CPU: { $why }.
+caption-gpu = na GPU ({ $adapter })
+caption-cpu = { $ms } ms por imagem no CPU
+cpu-flat = o sombreamento Flat é desenhado no CPU (o gerador escreve Gouraud e Phong)
+cpu-approximate-pow = uma potência aproximada estuda-se no CPU (a pow da GPU é a sua)
+cpu-no-adapter = não há adaptador wgpu aqui (sem ecrã, ou outro backend)
+cpu-chosen = o desenho no CPU está escolhido em Opções da vista
+cpu-software-adapter = o adaptador ({ $adapter }) é por software, não mais rápido do que o CPU
+
+## files
+
+not-opened-worksheet = Não aberto: { $why }. Em vez disso, mostra-se a ficha.
+not-opened = Não aberto: { $why }. A cena atual não mudou.
+mesh-summary = { $triangles } triângulos, { $vertices } vértices; { $notes }
+opened-mesh = Malha aberta: { $path }: { $what }.
+not-text = { $path } não é um ficheiro de texto
+saved = Guardado: { $path }.
+not-saved = Não guardado: { $error }.
+scene-file = Ficheiro de cena:
+scene-file-hint = caminho/para/cena.toml
+open = Abrir
+open-hover = Abrir o ficheiro de cena neste caminho (Ctrl+O)
+save = Guardar
+save-hover = Guardar a cena neste caminho (Ctrl+S)
+open-dialog = Abrir…
+open-dialog-hover = Escolher um ficheiro de cena na janela de ficheiros do sistema
+save-as = Guardar como…
+save-as-hover = Escolher onde guardar na janela de ficheiros do sistema
+drop-to-open = Larga um ficheiro de cena (.toml) ou uma malha (.obj) para o abrir
+cannot-read = não é possível ler { $path }: { $error }
+dropped-several = {" "}(foram largados { $count } ficheiros; só se abre o primeiro.)
+type-path-first = Escreve primeiro o caminho do ficheiro de cena.
+
+## plots
+
+plot-drag = Arrasta para rodar (guinada { $yaw }°, inclinação { $pitch }°)
+lobe-no-light = Nenhuma luz com L definido neste vértice: nada a desenhar.
+lobe-axis = φ, graus a partir de N
+lobe-luminance = { $name } = { $value } (a luminância de { $colour })
+lobe-caption = Luz { $light }: θ = { $theta }°, n = { $n }, { $kd }, { $ks }; o V do vértice em φ = { $phi }°
+lobe-diffuse = difusa kd cos θ
+lobe-vertex-v = o V do vértice
