@@ -436,7 +436,7 @@ fn explain_scene(a: &ExplainArgs) -> Result<(Scene, String)> {
         };
     }
     let n = a.worksheet.unwrap_or(5) as usize;
-    Ok((presets::worksheet(n), format!("the worksheet, mview{n}")))
+    Ok((presets::worksheet(n), phonglab_core::t!("doc-worksheet", k = n.to_string())))
 }
 
 fn explain_text<S: Real>(scene: &Scene, what: &str, a: &ExplainArgs) -> Result<String> {

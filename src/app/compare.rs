@@ -6,6 +6,7 @@
 use egui::{Color32, RichText, Ui};
 use phonglab_core::explain::{Explanation, fmt_value};
 use phonglab_core::{Document, PowFn};
+use phonglab_core::{locale, t};
 
 use super::evaluated::{Evaluated, Precision, evaluate};
 use super::view_cache::ViewCache;
@@ -73,20 +74,20 @@ fn diff_tables(prefix: &str, a: &toml::Table, b: &toml::Table, out: &mut Vec<(St
 pub fn title(diffs: &[(String, String, String)]) -> String {
     let short = |k: &str| k.rsplit('.').next().unwrap_or(k).replace('_', " ");
     match diffs {
-        [] => "A and B are the same scene: change anything, and B follows".into(),
-        [(k, a, b)] => format!("B: {} {b}; A: {a}", short(k)),
+        [] => t!("compare-same"),
+        [(k, a, b)] => t!("compare-one", setting = short(k), b = locale::decimal(b), a = locale::decimal(a)),
         many if many.len() <= 4 => {
             let names: Vec<String> = many.iter().map(|(k, _, _)| short(k)).collect();
-            format!("A and B differ in {}", names.join(", "))
+            t!("compare-several", names = names.join(", "))
         }
-        many => format!("A and B differ in {} settings", many.len()),
+        many => t!("compare-many", count = many.len()),
     }
 }
 
 fn describe(doc: &Document, precision: Precision, pow: PowFn) -> String {
     format!(
         "{}, {} {}, {}, {}",
-        doc.name,
+        phonglab_core::locale::localised_name(&doc.name),
         doc.view.object.label(),
         doc.view.shading.label(),
         precision.label(),
@@ -120,7 +121,7 @@ impl CompareState {
 pub fn step_pairs(a: &Explanation, b: &Explanation) -> Vec<(usize, String, String, String, bool)> {
     let value = |st: Option<&phonglab_core::explain::Step>| match st.and_then(|s| s.value.as_ref()) {
         Some(v) => fmt_value(v, 8),
-        None => "n/a".into(),
+        None => t!("not-applicable"),
     };
     b.steps
         .iter()
@@ -157,18 +158,25 @@ fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) -> Option
     ui.vertical(|ui| {
         ui.label(RichText::new(format!("{which}: {}", s.what)).strong());
         swatch_ui(ui, s.eval);
-        ui.label(RichText::new(fmt_value(&s.eval.front.shown, 8)).monospace());
+        ui.label(RichText::new(locale::decimal(&fmt_value(&s.eval.front.shown, 8))).monospace());
         match view.render(ui.ctx(), s.doc, s.pow, px, which) {
             Ok(()) => {
                 if let Some(tex) = &view.texture {
                     let side = px as f32 / ui.ctx().pixels_per_point();
-                    let label = ui.small(format!("{which}'s shaded view, {:.1} ms", view.last_ms));
+                    let label = ui.small(t!(
+                        "compare-view",
+                        which = which,
+                        ms = locale::decimal(&format!("{:.1}", view.last_ms))
+                    ));
                     let r = ui.add(egui::Image::new((tex.id(), egui::vec2(side, side)))).labelled_by(label.id);
                     at = Some(r.rect);
                 }
             }
             Err(e) => {
-                ui.colored_label(super::palette::ERROR, format!("{which}'s view cannot render: {e}"));
+                ui.colored_label(
+                    super::palette::ERROR,
+                    t!("compare-cannot-render", which = which, error = e.to_string()),
+                );
             }
         }
     });
@@ -200,23 +208,19 @@ pub fn compare_ui(
     let b_pinned = Pinned { doc: current.doc.clone(), precision: current.precision, pow: current.pow };
     let diffs = compare.a.as_ref().map(|a| differences(a, &b_pinned)).unwrap_or_default();
     ui.horizontal_wrapped(|ui| {
-        ui.heading(if compare.a.is_some() { title(&diffs) } else { "Compare".into() });
-        let pin = if compare.a.is_some() { "Pin the current scene as A again" } else { "Pin the current scene as A" };
+        ui.heading(if compare.a.is_some() { title(&diffs) } else { t!("compare") });
+        let pin = if compare.a.is_some() { t!("compare-pin-again") } else { t!("compare-pin") };
         if ui.button(pin).clicked() {
             compare.pin(current.doc, current.precision, current.pow);
-            notice = Some("Pinned as A: now change anything, and B follows.".to_string());
+            notice = Some(t!("compare-pinned"));
         }
-        if ui.button("Close compare").clicked() {
+        if ui.button(t!("compare-close")).clicked() {
             compare.open = false;
         }
     });
     let Some(a) = compare.a.clone() else {
         ui.add_space(12.0);
-        for line in [
-            "1. Pin the current scene as A (the button above).",
-            "2. Change anything: the shading, f32 or f64, the material, a light.",
-            "3. A and B show side by side, with the steps that differ first.",
-        ] {
+        for line in [t!("compare-step-1"), t!("compare-step-2"), t!("compare-step-3")] {
             ui.label(RichText::new(line).heading());
         }
         return (notice, Vec::new());
@@ -224,7 +228,7 @@ pub fn compare_ui(
     let a_eval = match evaluate(&a.doc, a.precision, a.pow, current.side) {
         Ok(e) => e,
         Err(e) => {
-            ui.colored_label(super::palette::ERROR, format!("A cannot be evaluated: {e}"));
+            ui.colored_label(super::palette::ERROR, t!("compare-a-fails", error = e.to_string()));
             return (notice, Vec::new());
         }
     };
@@ -246,7 +250,7 @@ pub fn compare_ui(
     let differing = pairs.iter().filter(|p| p.4).count();
     // The steps that differ first, each group in the calculation's order.
     pairs.sort_by_key(|p| !p.4);
-    ui.label(format!("{differing} of {} steps differ: they come first, highlighted.", pairs.len()));
+    ui.label(t!("compare-differing", differing = differing, all = pairs.len()));
     let hi = if ui.visuals().dark_mode { Color32::from_rgb(90, 60, 0) } else { Color32::from_rgb(255, 224, 150) };
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
         // One step after another: its title, then A's value and B's, highlighted where they

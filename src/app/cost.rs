@@ -345,7 +345,11 @@ pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
             ui.horizontal(|ui| {
                 let busy = state.cost.running.is_some();
                 if ui.add_enabled(!busy, egui::Button::new("Run the study")).clicked() {
-                    let about = format!("{}, {}", state.doc.view.object.label(), state.doc.name);
+                    let about = format!(
+                        "{}, {}",
+                        state.doc.view.object.label(),
+                        phonglab_core::locale::localised_name(&state.doc.name)
+                    );
                     state.cost.start(state.doc.shaded_scene(), state.doc.view.clone(), about);
                 }
                 if busy && ui.button("Cancel").clicked() {

@@ -169,7 +169,7 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         if ui.button(t!("help-button")).clicked() {
             state.ui.show_help = !state.ui.show_help;
         }
-        ui.label(egui::RichText::new(&state.doc.name).weak());
+        ui.label(egui::RichText::new(phonglab_core::locale::localised_name(&state.doc.name)).weak());
     });
 }
 
@@ -436,7 +436,7 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
             state.message = Some(Message::Info(m));
         }
         state.ui.geometry = state::Geometry { pictures, plot: None, arrangement: None };
-        if !state.compare.open && matches!(&state.message, Some(Message::Info(m)) if m.starts_with("Pinned as A")) {
+        if !state.compare.open && matches!(&state.message, Some(Message::Info(m)) if *m == t!("compare-pinned")) {
             // Closed: its notice goes with it.
             state.message = None;
         }

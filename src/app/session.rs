@@ -18,6 +18,7 @@
 //! - `session.ron` is a folder, or the storage folder cannot be made: the window works but
 //!   does not save its session.
 
+use phonglab_core::t;
 use std::collections::BTreeMap;
 use std::fs::File;
 use std::path::{Path, PathBuf};
@@ -83,26 +84,17 @@ impl Session {
         session.owner = match std::fs::create_dir_all(dir).and_then(|()| lock(dir)) {
             Ok(Some(file)) => Owner::Owns(file),
             Ok(None) => {
-                notices.push(format!(
-                    "Another phonglab window is open on this session ({}): this window shows its last saved scene but will not save its session. Use Save to keep your work in a file.",
-                    dir.display()
-                ));
+                notices.push(t!("session-other-window", dir = dir.display().to_string()));
                 Owner::ReadOnly("another window owns the session".into())
             }
             Err(e) => {
-                notices.push(format!(
-                    "The session folder {} cannot be used ({e}): this window will not save its session.",
-                    dir.display()
-                ));
+                notices.push(t!("session-folder-unusable", dir = dir.display().to_string(), error = e.to_string()));
                 Owner::ReadOnly(e.to_string())
             }
         };
         let path = dir.join(SESSION_FILE);
         if path.is_dir() {
-            notices.push(format!(
-                "The session file {} is a folder, so the last session cannot be read and this window will not save its session. Remove or rename that folder.",
-                path.display()
-            ));
+            notices.push(t!("session-file-is-folder", path = path.display().to_string()));
             session.owner = Owner::ReadOnly("the session file is a folder".into());
             return (session, notices);
         }
@@ -115,20 +107,21 @@ impl Session {
                 Err(why) if session.may_write() => {
                     let kept = fresh_path(dir, "session-unreadable", "ron");
                     notices.push(match std::fs::rename(&path, &kept) {
-                        Ok(()) => format!(
-                            "The saved session could not be read ({why}); starting on the worksheet. The file is kept as {}.",
-                            kept.display()
-                        ),
-                        Err(e) => format!(
-                            "The saved session {} could not be read ({why}) nor set aside ({e}); starting on the worksheet.",
-                            path.display()
+                        Ok(()) => t!("session-unreadable-kept", why = &why, kept = kept.display().to_string()),
+                        Err(e) => t!(
+                            "session-unreadable-not-kept",
+                            path = path.display().to_string(),
+                            why = &why,
+                            error = e.to_string()
                         ),
                     });
                 }
-                Err(why) => notices.push(format!("The saved session could not be read ({why}).")),
+                Err(why) => notices.push(t!("session-unreadable", why = why)),
             },
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => session.read_eframe_storage(dir),
-            Err(e) => notices.push(format!("The saved session {} could not be read ({e}).", path.display())),
+            Err(e) => {
+                notices.push(t!("session-unreadable-at", path = path.display().to_string(), error = e.to_string()))
+            }
         }
         (session, notices)
     }
@@ -233,13 +226,13 @@ pub fn restore_document(text: Option<&str>, dir: Option<&Path>) -> Result<Option
                 .map_err(|e| e.to_string())
                 .and_then(|()| crate::atomic_write::write(&p, text.as_bytes()).map_err(|e| e.to_string()))
             {
-                Ok(()) => format!("The scene is kept in {}.", p.display()),
-                Err(err) => format!("It could not be kept ({err})."),
+                Ok(()) => t!("session-scene-kept", path = p.display().to_string()),
+                Err(err) => t!("session-scene-not-kept", error = err.to_string()),
             }
         }
-        None => "There is no storage folder to keep it in.".into(),
+        None => t!("session-no-folder"),
     };
-    Err(format!("The last session's scene could not be restored ({e}); starting on the worksheet. {kept}"))
+    Err(t!("session-scene-not-restored", error = e.to_string(), kept = kept))
 }
 
 #[cfg(test)]

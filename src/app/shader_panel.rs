@@ -6,6 +6,7 @@
 use egui::text::LayoutJob;
 use egui::{Color32, FontId, RichText, TextFormat, Ui};
 use phonglab_core::shader::{Lang, ShaderShading, for_view};
+use phonglab_core::t;
 use phonglab_core::{Document, Shading};
 
 /// The window's state.
@@ -189,20 +190,17 @@ pub fn shader_window_ui(ctx: &egui::Context, state: &mut ShaderState, doc: &Docu
                 state.added.clear();
                 state.removed.clear();
             }
-            if ui.button("Copy").on_hover_text("Copy the program to the clipboard").clicked() {
+            if ui.button(t!("copy")).on_hover_text(t!("copy-program-hover")).clicked() {
                 ui.ctx().copy_text(text.clone());
             }
-            ui.small(format!(
-                "{} shading: only the stages this scene needs",
-                if doc.view.shading == Shading::Phong { "Phong (per fragment)" } else { "per vertex" }
-            ));
+            ui.small(if doc.view.shading == Shading::Phong {
+                t!("shader-stages-phong")
+            } else {
+                t!("shader-stages-vertex")
+            });
         });
         if !state.added.is_empty() || !state.removed.is_empty() {
-            ui.small(format!(
-                "The last change added {} lines (highlighted) and removed {}.",
-                state.added.len(),
-                state.removed.len()
-            ));
+            ui.small(t!("shader-last-change", added = state.added.len(), removed = state.removed.len()));
         }
         egui::ScrollArea::both().auto_shrink(false).show(ui, |ui| {
             let hi =
@@ -213,7 +211,7 @@ pub fn shader_window_ui(ctx: &egui::Context, state: &mut ShaderState, doc: &Docu
             }
             if !state.removed.is_empty() {
                 ui.separator();
-                ui.label(RichText::new("Removed by the last change:").small());
+                ui.label(RichText::new(t!("shader-removed")).small());
                 for line in &state.removed {
                     ui.label(RichText::new(format!("- {line}")).monospace().small().strikethrough());
                 }

@@ -41,6 +41,11 @@ reflection-lobe = Reflection lobe
 session-not-saved = The session could not be saved: { $error }.
 no-session-folder = There is no folder to keep the session in (HOME is not set): this window will not save its session.
 
+## names
+
+doc-worksheet = the worksheet, mview{ $k }
+doc-worksheet-preset = Worksheet, mview{ $k }
+
 ## controls
 
 controls-rules = Rules
@@ -410,3 +415,38 @@ lobe-luminance = { $name } = { $value } (the luminance of { $colour })
 lobe-caption = Light { $light }: θ = { $theta }°, n = { $n }, { $kd }, { $ks }; the vertex's V at φ = { $phi }°
 lobe-diffuse = diffuse kd cos θ
 lobe-vertex-v = the vertex's V
+
+## compare
+
+compare-same = A and B are the same scene: change anything, and B follows
+compare-one = B: { $setting } { $b }; A: { $a }
+compare-several = A and B differ in { $names }
+compare-many = A and B differ in { $count } settings
+compare-view = { $which }'s shaded view, { $ms } ms
+compare-cannot-render = { $which }'s view cannot render: { $error }
+compare-pin-again = Pin the current scene as A again
+compare-pin = Pin the current scene as A
+compare-pinned = Pinned as A: now change anything, and B follows.
+compare-close = Close compare
+compare-step-1 = 1. Pin the current scene as A (the button above).
+compare-step-2 = 2. Change anything: the shading, f32 or f64, the material, a light.
+compare-step-3 = 3. A and B show side by side, with the steps that differ first.
+compare-a-fails = A cannot be evaluated: { $error }
+compare-differing = { $differing } of { $all } steps differ: they come first, highlighted.
+copy = Copy
+copy-program-hover = Copy the program to the clipboard
+shader-stages-phong = Phong (per fragment) shading: only the stages this scene needs
+shader-stages-vertex = per vertex shading: only the stages this scene needs
+shader-last-change = The last change added { $added } lines (highlighted) and removed { $removed }.
+shader-removed = Removed by the last change:
+session-other-window = Another phonglab window is open on this session ({ $dir }): this window shows its last saved scene but will not save its session. Use Save to keep your work in a file.
+session-folder-unusable = The session folder { $dir } cannot be used ({ $error }): this window will not save its session.
+session-file-is-folder = The session file { $path } is a folder, so the last session cannot be read and this window will not save its session. Remove or rename that folder.
+session-unreadable-kept = The saved session could not be read ({ $why }); starting on the worksheet. The file is kept as { $kept }.
+session-unreadable-not-kept = The saved session { $path } could not be read ({ $why }) nor set aside ({ $error }); starting on the worksheet.
+session-unreadable = The saved session could not be read ({ $why }).
+session-unreadable-at = The saved session { $path } could not be read ({ $error }).
+session-scene-kept = The scene is kept in { $path }.
+session-scene-not-kept = It could not be kept ({ $error }).
+session-no-folder = There is no storage folder to keep it in.
+session-scene-not-restored = The last session's scene could not be restored ({ $error }); starting on the worksheet. { $kept }

@@ -41,6 +41,11 @@ reflection-lobe = Lóbulo de reflexão
 session-not-saved = Não foi possível salvar a sessão: { $error }.
 no-session-folder = Não há pasta onde salvar a sessão (HOME não está definida): esta janela não guardará a sua sessão.
 
+## names
+
+doc-worksheet = a ficha, mview{ $k }
+doc-worksheet-preset = Ficha, mview{ $k }
+
 ## controls
 
 controls-rules = Regras
@@ -410,3 +415,38 @@ lobe-luminance = { $name } = { $value } (a luminância de { $colour })
 lobe-caption = Luz { $light }: θ = { $theta }°, n = { $n }, { $kd }, { $ks }; o V do vértice em φ = { $phi }°
 lobe-diffuse = difusa kd cos θ
 lobe-vertex-v = o V do vértice
+
+## compare
+
+compare-same = A e B são a mesma cena: mude qualquer coisa e B acompanha
+compare-one = B: { $setting } { $b }; A: { $a }
+compare-several = A e B diferem em { $names }
+compare-many = A e B diferem em { $count } parâmetros
+compare-view = vista sombreada de { $which }, { $ms } ms
+compare-cannot-render = a vista de { $which } não consegue desenhar: { $error }
+compare-pin-again = Fixar de novo a cena atual como A
+compare-pin = Fixar a cena atual como A
+compare-pinned = Fixada como A: agora mude qualquer coisa e B acompanha.
+compare-close = Fechar a comparação
+compare-step-1 = 1. Fixe a cena atual como A (o botão acima).
+compare-step-2 = 2. Mude qualquer coisa: o sombreamento, f32 ou f64, o material, uma luz.
+compare-step-3 = 3. A e B aparecem lado a lado, com os passos que diferem primeiro.
+compare-a-fails = A não pode ser calculada: { $error }
+compare-differing = { $differing } de { $all } passos diferem: vêm primeiro, destacados.
+copy = Copiar
+copy-program-hover = Copiar o programa para a área de transferência
+shader-stages-phong = Sombreamento de Phong (por fragmento): só as etapas de que esta cena precisa
+shader-stages-vertex = Sombreamento por vértice: só as etapas de que esta cena precisa
+shader-last-change = A última alteração adicionou { $added } linhas (destacadas) e removeu { $removed }.
+shader-removed = Removido pela última alteração:
+session-other-window = Outra janela do phonglab está aberta nesta sessão ({ $dir }): esta janela mostra a última cena salva mas não salvará a sua sessão. Use Salvar para manter seu trabalho em um arquivo.
+session-folder-unusable = A pasta da sessão { $dir } não pode ser usada ({ $error }): esta janela não guardará a sua sessão.
+session-file-is-folder = O arquivo da sessão { $path } é uma pasta, por isso a última sessão não pode ser lida e esta janela não salvará a sua sessão. Remova ou renomeie essa pasta.
+session-unreadable-kept = A sessão salva não pôde ser lida ({ $why }); começa-se pela ficha. O arquivo fica salvo como { $kept }.
+session-unreadable-not-kept = A sessão salva { $path } não pôde ser lida ({ $why }) nem posta de lado ({ $error }); começa-se pela ficha.
+session-unreadable = A sessão salva não pôde ser lida ({ $why }).
+session-unreadable-at = A sessão salva { $path } não pôde ser lida ({ $error }).
+session-scene-kept = A cena fica salva em { $path }.
+session-scene-not-kept = Não pôde ser salva ({ $error }).
+session-no-folder = Não há pasta onde salvá-la.
+session-scene-not-restored = A cena da última sessão não pôde ser reposta ({ $error }); começa-se pela ficha. { $kept }

@@ -41,6 +41,11 @@ reflection-lobe = Lóbulo de reflexão
 session-not-saved = Não foi possível guardar a sessão: { $error }.
 no-session-folder = Não há pasta onde guardar a sessão (HOME não está definida): esta janela não guardará a sua sessão.
 
+## names
+
+doc-worksheet = a ficha, mview{ $k }
+doc-worksheet-preset = Ficha, mview{ $k }
+
 ## controls
 
 controls-rules = Regras
@@ -410,3 +415,38 @@ lobe-luminance = { $name } = { $value } (a luminância de { $colour })
 lobe-caption = Luz { $light }: θ = { $theta }°, n = { $n }, { $kd }, { $ks }; o V do vértice em φ = { $phi }°
 lobe-diffuse = difusa kd cos θ
 lobe-vertex-v = o V do vértice
+
+## compare
+
+compare-same = A e B são a mesma cena: muda qualquer coisa e B acompanha
+compare-one = B: { $setting } { $b }; A: { $a }
+compare-several = A e B diferem em { $names }
+compare-many = A e B diferem em { $count } parâmetros
+compare-view = vista sombreada de { $which }, { $ms } ms
+compare-cannot-render = a vista de { $which } não consegue desenhar: { $error }
+compare-pin-again = Fixar de novo a cena atual como A
+compare-pin = Fixar a cena atual como A
+compare-pinned = Fixada como A: agora muda qualquer coisa e B acompanha.
+compare-close = Fechar a comparação
+compare-step-1 = 1. Fixa a cena atual como A (o botão acima).
+compare-step-2 = 2. Muda qualquer coisa: o sombreamento, f32 ou f64, o material, uma luz.
+compare-step-3 = 3. A e B aparecem lado a lado, com os passos que diferem primeiro.
+compare-a-fails = A não pode ser calculada: { $error }
+compare-differing = { $differing } de { $all } passos diferem: vêm primeiro, destacados.
+copy = Copiar
+copy-program-hover = Copiar o programa para a área de transferência
+shader-stages-phong = Sombreamento de Phong (por fragmento): só as etapas de que esta cena precisa
+shader-stages-vertex = Sombreamento por vértice: só as etapas de que esta cena precisa
+shader-last-change = A última alteração juntou { $added } linhas (destacadas) e removeu { $removed }.
+shader-removed = Removido pela última alteração:
+session-other-window = Outra janela do phonglab está aberta nesta sessão ({ $dir }): esta janela mostra a última cena guardada mas não guardará a sua sessão. Usa Guardar para manter o teu trabalho num ficheiro.
+session-folder-unusable = A pasta da sessão { $dir } não pode ser usada ({ $error }): esta janela não guardará a sua sessão.
+session-file-is-folder = O ficheiro da sessão { $path } é uma pasta, por isso a última sessão não pode ser lida e esta janela não guardará a sua sessão. Remove ou muda o nome a essa pasta.
+session-unreadable-kept = A sessão guardada não pôde ser lida ({ $why }); começa-se pela ficha. O ficheiro fica guardado como { $kept }.
+session-unreadable-not-kept = A sessão guardada { $path } não pôde ser lida ({ $why }) nem posta de lado ({ $error }); começa-se pela ficha.
+session-unreadable = A sessão guardada não pôde ser lida ({ $why }).
+session-unreadable-at = A sessão guardada { $path } não pôde ser lida ({ $error }).
+session-scene-kept = A cena fica guardada em { $path }.
+session-scene-not-kept = Não pôde ser guardada ({ $error }).
+session-no-folder = Não há pasta onde a guardar.
+session-scene-not-restored = A cena da última sessão não pôde ser reposta ({ $error }); começa-se pela ficha. { $kept }

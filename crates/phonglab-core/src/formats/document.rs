@@ -62,8 +62,11 @@ impl Default for Document {
     /// (up to 67/255 at 256 pixels, where a 50x50 sphere differs by 6/255), and the worked
     /// vertex stays the worksheet's.
     fn default() -> Self {
-        let mut d =
-            Document::from_scene("the worksheet, mview5", CameraSpec::Worksheet(5), crate::presets::worksheet(5));
+        let mut d = Document::from_scene(
+            &crate::t!("doc-worksheet", k = "5"),
+            CameraSpec::Worksheet(5),
+            crate::presets::worksheet(5),
+        );
         d.view.object = crate::view::ObjectKind::Teapot;
         d
     }

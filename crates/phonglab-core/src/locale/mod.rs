@@ -195,6 +195,20 @@ pub fn num(x: f64, sig: usize) -> String {
     decimal(&crate::explain::fmt_sig(x, sig))
 }
 
+/// A document's name as this language says it: the built-in scenes' names (the worksheet's,
+/// in whichever language they were made) in the current language; any other name as it is.
+pub fn localised_name(name: &str) -> String {
+    for id in ["doc-worksheet", "doc-worksheet-preset"] {
+        for k in 1..=5 {
+            let args = [("k", Arg::Text(k.to_string()))];
+            if Lang::ALL.iter().any(|l| tr_in(*l, id, &args) == name) {
+                return tr_args(id, &args);
+            }
+        }
+    }
+    name.to_string()
+}
+
 /// Looks up a message: `t!("id")`, or with arguments `t!("id", name = value, ...)`
 /// (strings, or counts for plurals). A missing message gives its id.
 #[macro_export]
@@ -226,6 +240,16 @@ mod tests {
         assert_eq!(Lang::from_vars(env(&[("LC_MESSAGES", "en_US.UTF-8"), ("LANG", "pt_PT.UTF-8")])), Lang::En);
         assert_eq!(Lang::from_vars(env(&[("LC_ALL", ""), ("LANG", "pt_PT.UTF-8")])), Lang::PtPt);
         assert_eq!(Lang::from_vars(env(&[])), Lang::En);
+    }
+
+    #[test]
+    fn the_built_in_names_follow_the_language() {
+        let english = with_locale(Locale::of(Lang::En), || crate::Document::default().name);
+        assert_eq!(english, "the worksheet, mview5");
+        assert_eq!(with_locale(Locale::of(Lang::PtPt), || localised_name(&english)), "a ficha, mview5");
+        assert_eq!(with_locale(Locale::of(Lang::PtBr), || localised_name("Ficha, mview3")), "Ficha, mview3");
+        assert_eq!(with_locale(Locale::of(Lang::En), || localised_name("Ficha, mview3")), "Worksheet, mview3");
+        assert_eq!(localised_name("my scene"), "my scene");
     }
 
     #[test]

@@ -104,7 +104,7 @@ impl DemoDeparture {
 pub fn documents() -> Vec<(String, Document)> {
     let mut v: Vec<(String, Document)> = (1..=5u8)
         .map(|k| {
-            let name = format!("Worksheet, mview{k}");
+            let name = crate::t!("doc-worksheet-preset", k = k.to_string());
             (name.clone(), Document::from_scene(&name, CameraSpec::Worksheet(k), worksheet(k as usize)))
         })
         .collect();
