@@ -12,7 +12,7 @@ use phonglab_core::{Engine, EvalOptions, PowFn, Real, Scene, library, presets};
 /// phonglab: OpenGL's fixed-function vertex lighting, step by step. Without a subcommand it
 /// opens the explorer window on the worksheet's scene.
 #[derive(Parser, Debug)]
-#[command(name = "phonglab", version, about, args_conflicts_with_subcommands = true)]
+#[command(name = "phonglab", version, about)]
 pub struct Cli {
     /// What to do; omit to open the app.
     #[command(subcommand)]
@@ -444,9 +444,9 @@ fn explain_text<S: Real>(scene: &Scene, what: &str, a: &ExplainArgs) -> Result<S
     let ex = explain(scene, &lit, if a.back { Side::Back } else { Side::Front });
     let digits = a.digits as usize;
     Ok(if a.markdown {
-        format!("# Worked calculation: {what}\n\n{}", ex.to_markdown(digits))
+        format!("# {}\n\n{}", phonglab_core::t!("worked-calculation-of", name = what), ex.to_markdown(digits))
     } else {
-        format!("Worked calculation: {what}\n{}", ex.to_text(digits))
+        format!("{}\n{}", phonglab_core::t!("worked-calculation-of", name = what), ex.to_text(digits))
     })
 }
 

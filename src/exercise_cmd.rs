@@ -17,6 +17,7 @@ use phonglab_core::explain::{Side, explain};
 use phonglab_core::{Document, Engine, Rules};
 
 use crate::atomic_write::FileSet;
+use phonglab_core::t;
 
 /// `phonglab exercise`.
 #[derive(Args, Debug)]
@@ -49,13 +50,17 @@ pub struct ExerciseArgs {
 /// The answer key: what `phonglab explain FILE` prints (and `--back` with two-sided
 /// lighting), in a code block.
 pub fn answer_key(doc: &Document, file: &str) -> Result<String> {
+    Ok(format!("# {}\n\n{}", t!("key-title", name = &doc.name), answer_key_body(doc, file)?))
+}
+
+/// The answer key without its title.
+fn answer_key_body(doc: &Document, file: &str) -> Result<String> {
     let lit = Engine::<f64>::light_scene_vertex(&doc.scene)?;
-    let mut o =
-        format!("# Answers: {}\n\nAs `phonglab explain {file}` prints them (8 significant digits).\n\n", doc.name);
+    let mut o = format!("{}\n\n", t!("key-intro", file = file));
     let sides: &[Side] = if doc.scene.light_model.two_sided { &[Side::Front, Side::Back] } else { &[Side::Front] };
     for &side in sides {
         let ex = explain(&doc.scene, &lit, side);
-        let _ = writeln!(o, "```\nWorked calculation: {}\n{}```\n", doc.name, ex.to_text(8));
+        let _ = writeln!(o, "```\n{}\n{}```\n", t!("worked-calculation-of", name = &doc.name), ex.to_text(8));
     }
     Ok(o)
 }
@@ -108,10 +113,8 @@ pub fn belongs_to_a_set(name: &str) -> bool {
 
 /// The worksheet as exercise 0: its five modelviews, one sheet, with the values it prints.
 fn worksheet_sheet(set: &mut FileSet) -> Result<String> {
-    let mut sheet = String::from(
-        "# Exercise 0: the worksheet\n\nThe worksheet's own scene (bronze, the light at (0, 0, 90), the vertex (-512, -384, 0) with normal (0, 0, 1)) under each of its five modelviews, `mview1` to `mview5`. Compute every step for each.\n\n",
-    );
-    let mut key = String::from("# Answers: the worksheet\n\n");
+    let mut sheet = format!("# {}\n\n{}\n\n", t!("exercise-zero-title"), t!("exercise-zero-intro"));
+    let mut key = format!("# {}\n\n", t!("key-title", name = t!("exercise-zero-name")));
     for k in 1..=5u8 {
         let doc = phonglab_core::library::documents()
             .into_iter()
@@ -123,14 +126,14 @@ fn worksheet_sheet(set: &mut FileSet) -> Result<String> {
         let rows = phonglab_core::transform::mat4_rows(&doc.scene.eye_from_world);
         let _ = writeln!(sheet, "## mview{k} ({file})\n\n```");
         for r in rows {
-            let _ = writeln!(sheet, "[{}]", r.map(|x| phonglab_core::explain::fmt_sig(x, 8)).join(" "));
+            let _ = writeln!(sheet, "[{}]", r.map(|x| phonglab_core::locale::num(x, 8)).join(" "));
         }
         let _ = writeln!(sheet, "```\n");
-        key.push_str(&answer_key(&doc, &file)?.replace("# Answers: ", "## "));
+        let _ = write!(key, "## mview{k}\n\n{}", answer_key_body(&doc, &file)?);
     }
     set.add("exercise-00.md", sheet);
     set.add("exercise-00-key.md", key);
-    Ok("- [Exercise 0: the worksheet](exercise-00.md) ([answers](exercise-00-key.md))\n".into())
+    Ok(format!("- [{}](exercise-00.md) ([{}](exercise-00-key.md))\n", t!("exercise-zero-title"), t!("answers")))
 }
 
 /// Lines of at most `width` characters (longer ones wrapped at spaces where possible).
@@ -189,11 +192,11 @@ pub fn exercise_set(a: &ExerciseArgs) -> Result<(Vec<Exercise>, FileSet)> {
     let exercises = generate(a.seed, a.count as usize, &spec).map_err(|e| anyhow::anyhow!(e))?;
     let mut set = FileSet::default();
     let names: Vec<&str> = spec.effects.iter().map(|e| e.name()).collect();
+    let effects = if names.is_empty() { t!("index-directional-only") } else { names.join(", ") };
     let mut index = format!(
-        "# Exercises, seed {}\n\nEffects: {}. Rules: {}. Each sheet has its scene file (open it in phonglab) and its answers.\n\n",
-        a.seed,
-        if names.is_empty() { "one directional light only".to_string() } else { names.join(", ") },
-        a.rules
+        "# {}\n\n{}\n\n",
+        t!("index-title", seed = a.seed.to_string()),
+        t!("index-intro", effects = effects, rules = &a.rules)
     );
     let mut printable = Vec::new();
     if a.worksheet {
@@ -207,15 +210,15 @@ pub fn exercise_set(a: &ExerciseArgs) -> Result<(Vec<Exercise>, FileSet)> {
         let stem = format!("exercise-{:02}", i + 1);
         let toml = format!("{stem}.toml");
         set.add(toml.clone(), ex.doc.to_toml()?);
-        let sheet = format!("{}\nScene file: `{toml}`.\n", sheet_markdown(ex));
+        let sheet = format!("{}\n{}\n", sheet_markdown(ex), t!("sheet-scene-file", file = &toml));
         set.add(format!("{stem}.md"), sheet.clone());
         let key = answer_key(&ex.doc, &toml)?;
         set.add(format!("{stem}-key.md"), key.clone());
         printable.push(sheet);
         printable.push(key);
-        let _ = writeln!(index, "- [{}]({stem}.md) ([answers]({stem}-key.md))", ex.doc.name);
+        let _ = writeln!(index, "- [{}]({stem}.md) ([{}]({stem}-key.md))", ex.doc.name, t!("answers"));
     }
-    let _ = writeln!(index, "\nPrintable: [exercises.pdf](exercises.pdf) (each sheet, then its answers).");
+    let _ = writeln!(index, "\n{}", t!("index-printable"));
     set.add("index.md", index);
     set.add("exercises.pdf", pdf(&printable)?);
     Ok((exercises, set))
@@ -235,10 +238,13 @@ pub fn run(a: &ExerciseArgs) -> Result<()> {
     let ex = write_exercises(a)?;
     let redraws: usize = ex.iter().map(|e| e.redraws).sum();
     eprintln!(
-        "{} exercises in {} ({} draws set aside by the screen)",
-        ex.len() + a.worksheet as usize,
-        a.out.display(),
-        redraws
+        "{}",
+        t!(
+            "exercises-written",
+            count = ex.len() + a.worksheet as usize,
+            out = a.out.display().to_string(),
+            redraws = redraws
+        )
     );
     Ok(())
 }

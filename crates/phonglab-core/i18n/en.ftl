@@ -450,3 +450,44 @@ session-scene-kept = The scene is kept in { $path }.
 session-scene-not-kept = It could not be kept ({ $error }).
 session-no-folder = There is no storage folder to keep it in.
 session-scene-not-restored = The last session's scene could not be restored ({ $error }); starting on the worksheet. { $kept }
+
+## sheets
+
+exercise-modelview = rotate { $degrees } degrees about { $axis }, then translate { $translation }
+exercise-name = exercise { $number } (seed { $seed })
+sheet-rules-worksheet = the worksheet's rules (no scene ambient, no emission, M itself for normals)
+sheet-rules-opengl = the rules of OpenGL 2.1's fixed function
+sheet-rules-demo = the rules of the Phong demo's shader
+sheet-compute = Compute the colour of the vertex step by step, under { $rules }.
+sheet-colours = Colours are written as the worksheet writes them, [r g b 0], so every product of two colours has 0 as its fourth component, as in the key.
+sheet-vertex = The vertex
+sheet-modelview = The modelview
+sheet-direction = direction (w = 0)
+sheet-position = position
+sheet-light-world = { $what }, in world coordinates: transform it by the modelview
+sheet-degrees = { $value } degrees
+sheet-material = Material: { $name }
+sheet-light-model = The light model
+yes = yes
+no = no
+sheet-compute-heading = Compute
+sheet-scene-file = Scene file: `{ $file }`.
+key-title = Answers: { $name }
+key-intro = As `phonglab explain { $file }` prints them (8 significant digits).
+worked-calculation-of = Worked calculation: { $name }
+exercise-zero-title = Exercise 0: the worksheet
+exercise-zero-name = the worksheet
+exercise-zero-intro = The worksheet's own scene (bronze, the light at (0, 0, 90), the vertex (-512, -384, 0) with normal (0, 0, 1)) under each of its five modelviews, `mview1` to `mview5`. Compute every step for each.
+answers = answers
+index-directional-only = one directional light only
+index-title = Exercises, seed { $seed }
+index-intro = Effects: { $effects }. Rules: { $rules }. Each sheet has its scene file (open it in phonglab) and its answers.
+index-printable = Printable: [exercises.pdf](exercises.pdf) (each sheet, then its answers).
+
+## cli
+
+exercises-written =
+    { $count ->
+    [one] 1 exercise in { $out } ({ $redraws } draws set aside by the screen)
+    *[other] { $count } exercises in { $out } ({ $redraws } draws set aside by the screen)
+    }

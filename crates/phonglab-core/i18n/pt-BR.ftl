@@ -450,3 +450,44 @@ session-scene-kept = A cena fica salva em { $path }.
 session-scene-not-kept = Não pôde ser salva ({ $error }).
 session-no-folder = Não há pasta onde salvá-la.
 session-scene-not-restored = A cena da última sessão não pôde ser reposta ({ $error }); começa-se pela ficha. { $kept }
+
+## sheets
+
+exercise-modelview = girar { $degrees } graus em torno de { $axis }, depois transladar { $translation }
+exercise-name = exercício { $number } (semente { $seed })
+sheet-rules-worksheet = as regras da ficha (sem ambiente da cena, sem emissão, a própria M para as normais)
+sheet-rules-opengl = as regras da função fixa do OpenGL 2.1
+sheet-rules-demo = as regras do shader da demo de Phong
+sheet-compute = Calcule a cor do vértice passo a passo, segundo { $rules }.
+sheet-colours = As cores são escritas como na ficha, [r g b 0], por isso cada produto de duas cores tem 0 como quarta componente, tal como na chave.
+sheet-vertex = O vértice
+sheet-modelview = A modelview
+sheet-direction = direção (w = 0)
+sheet-position = posição
+sheet-light-world = { $what }, em coordenadas do mundo: transforme-a pela modelview
+sheet-degrees = { $value } graus
+sheet-material = Material: { $name }
+sheet-light-model = O modelo de iluminação
+yes = sim
+no = não
+sheet-compute-heading = Calcular
+sheet-scene-file = Arquivo de cena: `{ $file }`.
+key-title = Respostas: { $name }
+key-intro = Tal como `phonglab explain { $file }` as imprime (8 algarismos significativos).
+worked-calculation-of = Cálculo passo a passo: { $name }
+exercise-zero-title = Exercício 0: a ficha
+exercise-zero-name = a ficha
+exercise-zero-intro = A própria cena da ficha (bronze, a luz em (0, 0, 90), o vértice (-512, -384, 0) com normal (0, 0, 1)) com cada uma das suas cinco modelviews, `mview1` a `mview5`. Calcule todos os passos para cada uma.
+answers = respostas
+index-directional-only = só uma luz direcional
+index-title = Exercícios, semente { $seed }
+index-intro = Efeitos: { $effects }. Regras: { $rules }. Cada ficha tem o seu arquivo de cena (abra-o no phonglab) e as suas respostas.
+index-printable = Para imprimir: [exercises.pdf](exercises.pdf) (cada ficha, depois as respostas).
+
+## cli
+
+exercises-written =
+    { $count ->
+    [one] 1 exercício em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
+    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
+    }

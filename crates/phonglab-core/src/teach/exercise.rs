@@ -200,6 +200,8 @@ pub struct Exercise {
     pub doc: Document,
     /// The modelview in words, e.g. "rotate 30 degrees about y, then translate (0, 0, -40)".
     pub modelview: String,
+    /// The classic material's name, e.g. "gold".
+    pub material: String,
     /// The worked calculation in f64: the answer key.
     pub key: Explanation,
     /// Draws rejected before this one was kept (by the screen).
@@ -218,14 +220,18 @@ fn modelview(axis: usize, degrees: i64, t: DVec3) -> DMat4 {
 }
 
 /// One draw for `spec` (not yet screened).
-fn draw(rng: &mut Rng, spec: &Spec) -> (Scene, String) {
+fn draw(rng: &mut Rng, spec: &Spec) -> (Scene, String, String) {
     let has = |e: Effect| spec.effects.contains(&e);
     let axis = rng.int(0, 2) as usize;
     let degrees = rng.pick(&[0, 15, 20, 30, 45, 60, -30, -45, 90]);
     let t = DVec3::new(0.0, 0.0, -(rng.int(2, 8) * 10) as f64);
     let m = modelview(axis, degrees, t);
-    let words =
-        format!("rotate {degrees} degrees about {}, then translate ({}, {}, {})", ["x", "y", "z"][axis], t.x, t.y, t.z);
+    let words = crate::t!(
+        "exercise-modelview",
+        degrees = degrees.to_string(),
+        axis = ["x", "y", "z"][axis],
+        translation = format!("({}, {}, {})", t.x, t.y, t.z)
+    );
     let named = &materials::classic()[rng.int(0, 23) as usize];
     let lights_n = if has(Effect::SeveralLights) { rng.int(2, 3) as usize } else { 1 };
     let vertex_pos = rng.int_vec(10);
@@ -280,7 +286,7 @@ fn draw(rng: &mut Rng, spec: &Spec) -> (Scene, String) {
         rules: spec.rules,
         vertex: Vertex { position: vertex_pos.extend(1.0), normal },
     };
-    (scene, format!("{words}; material {}", named.name))
+    (scene, words, named.name.clone())
 }
 
 /// Why a draw is not kept (`None`: it is).
@@ -368,16 +374,16 @@ pub fn generate(seed: u64, count: usize, spec: &Spec) -> Result<Vec<Exercise>, S
     for k in 1..=count {
         let mut redraws = 0;
         loop {
-            let (scene, words) = draw(&mut rng, spec);
+            let (scene, words, material) = draw(&mut rng, spec);
             if screen(&scene, spec).is_none() {
                 let doc = Document::from_scene(
-                    &format!("exercise {k} (seed {seed})"),
+                    &crate::t!("exercise-name", number = k.to_string(), seed = seed.to_string()),
                     CameraSpec::Matrix(scene.eye_from_world),
                     scene,
                 );
                 let lit = Engine::<f64>::new(&doc.scene).map_err(|e| e.to_string())?.light(&doc.scene.vertex);
                 let key = explain(&doc.scene, &lit, Side::Front);
-                out.push(Exercise { doc, modelview: words, key, redraws });
+                out.push(Exercise { doc, modelview: words, material, key, redraws });
                 break;
             }
             redraws += 1;
@@ -394,17 +400,17 @@ pub fn generate(seed: u64, count: usize, spec: &Spec) -> Result<Vec<Exercise>, S
 
 /// A number as the sheet prints it: 8 significant digits, no trailing zeros.
 fn num(x: f64) -> String {
-    crate::explain::fmt_sig(x, 8)
+    crate::locale::num(x, 8)
 }
 
 fn vec4(v: DVec4) -> String {
-    crate::explain::fmt_value(&[v.x, v.y, v.z, v.w], 8)
+    crate::locale::decimal(&crate::explain::fmt_value(&[v.x, v.y, v.z, v.w], 8))
 }
 
 /// A colour as the worksheet writes it, `[r g b 0]`: every product of two colours (Iamb,
 /// Idif, Ispec) then has 0 as its fourth component, as the key does.
 fn colour4(c: DVec4) -> String {
-    crate::explain::fmt_value(&[c.x, c.y, c.z, 0.0], 8)
+    crate::locale::decimal(&crate::explain::fmt_value(&[c.x, c.y, c.z, 0.0], 8))
 }
 
 /// The exercise sheet, in the worksheet's style: the givens under the worksheet's names,
@@ -415,20 +421,17 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
     let mut o = String::new();
     let _ = writeln!(o, "# {}\n", ex.doc.name);
     let rules = match s.rules.set {
-        crate::rules::RuleSet::Worksheet => "the worksheet's (no scene ambient, no emission, M itself for normals)",
-        crate::rules::RuleSet::OpenGl => "OpenGL 2.1's fixed function",
-        crate::rules::RuleSet::PhongDemo => "the Phong demo's shader",
+        crate::rules::RuleSet::Worksheet => crate::t!("sheet-rules-worksheet"),
+        crate::rules::RuleSet::OpenGl => crate::t!("sheet-rules-opengl"),
+        crate::rules::RuleSet::PhongDemo => crate::t!("sheet-rules-demo"),
     };
-    let _ = writeln!(o, "Compute the colour of the vertex step by step, under {rules} rules.\n");
-    let _ = writeln!(
-        o,
-        "Colours are written as the worksheet writes them, [r g b 0], so every product of two colours has 0 as its fourth component, as in the key.\n"
-    );
-    let _ = writeln!(o, "## The vertex\n");
+    let _ = writeln!(o, "{}\n", crate::t!("sheet-compute", rules = rules));
+    let _ = writeln!(o, "{}\n", crate::t!("sheet-colours"));
+    let _ = writeln!(o, "## {}\n", crate::t!("sheet-vertex"));
     let _ = writeln!(o, "- vertexPos = {}", vec4(s.vertex.position));
     let _ = writeln!(o, "- vertexNormal = {}\n", vec4(s.vertex.normal.extend(0.0)));
-    let _ = writeln!(o, "## The modelview\n");
-    let (words, material) = ex.modelview.split_once("; material ").unwrap_or((&ex.modelview, ""));
+    let _ = writeln!(o, "## {}\n", crate::t!("sheet-modelview"));
+    let (words, material) = (ex.modelview.as_str(), ex.material.as_str());
     let _ = writeln!(o, "{words}:\n\n```");
     let rows = crate::transform::mat4_rows(&s.eye_from_world);
     for r in rows {
@@ -436,13 +439,9 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
     }
     let _ = writeln!(o, "```\n");
     for (i, l) in s.lights.iter().enumerate() {
-        let _ = writeln!(o, "## Light {i}\n");
-        let what = if l.position.w == 0.0 { "direction (w = 0)" } else { "position" };
-        let _ = writeln!(
-            o,
-            "- lightPos = {} ({what}, in world coordinates: transform it by the modelview)",
-            vec4(l.position)
-        );
+        let _ = writeln!(o, "## {}\n", crate::t!("light-tab", index = i.to_string()));
+        let what = if l.position.w == 0.0 { crate::t!("sheet-direction") } else { crate::t!("sheet-position") };
+        let _ = writeln!(o, "- lightPos = {} ({})", vec4(l.position), crate::t!("sheet-light-world", what = what));
         let _ = writeln!(
             o,
             "- Lamb = {}, Ldif = {}, Lspec = {}",
@@ -457,28 +456,29 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
         if l.is_spot() {
             let _ = writeln!(
                 o,
-                "- lightSpotDir = {}, spotCutoff = {} degrees, spotCoef = {}",
+                "- lightSpotDir = {}, spotCutoff = {}, spotCoef = {}",
                 vec4(l.spot_direction.extend(0.0)),
-                num(l.spot_cutoff),
+                crate::t!("sheet-degrees", value = num(l.spot_cutoff)),
                 num(l.spot_exponent)
             );
         }
         let _ = writeln!(o);
     }
     let m = &s.material;
-    let _ = writeln!(o, "## Material{}\n", if material.is_empty() { String::new() } else { format!(": {material}") });
+    let _ = writeln!(o, "## {}\n", crate::t!("sheet-material", name = material));
     let _ = writeln!(o, "- matAmb = {}", colour4(m.ambient));
     let _ = writeln!(o, "- matDif = {}", colour4(m.diffuse));
     let _ = writeln!(o, "- matSpec = {}", colour4(m.specular));
     let _ = writeln!(o, "- ns = {}\n", num(m.shininess));
-    let _ = writeln!(o, "## The light model\n");
+    let _ = writeln!(o, "## {}\n", crate::t!("sheet-light-model"));
     let lm = &s.light_model;
-    let _ = writeln!(o, "- local viewer: {}", lm.local_viewer);
-    let _ = writeln!(o, "- two-sided lighting: {}", lm.two_sided);
+    let yes_no = |b: bool| if b { crate::t!("yes") } else { crate::t!("no") };
+    let _ = writeln!(o, "- {}: {}", crate::t!("local-viewer"), yes_no(lm.local_viewer));
+    let _ = writeln!(o, "- {}: {}", crate::t!("two-sided"), yes_no(lm.two_sided));
     if s.rules.scene_ambient() {
-        let _ = writeln!(o, "- scene ambient = {}", colour4(lm.ambient));
+        let _ = writeln!(o, "- {} = {}", crate::t!("scene-ambient"), colour4(lm.ambient));
     }
-    let _ = writeln!(o, "\n## Compute\n");
+    let _ = writeln!(o, "\n## {}\n", crate::t!("sheet-compute-heading"));
     let asked = (0..ex.key.steps.len()).filter(|k| crate::quiz::asked(s, &ex.key, *k));
     for (n, k) in asked.enumerate() {
         let st = &ex.key.steps[k];
