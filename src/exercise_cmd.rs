@@ -4,7 +4,9 @@
 //! For exercise k (numbered from 1; 0 is the worksheet itself, with `--worksheet`) it
 //! writes `exercise-KK.md` (the sheet), `exercise-KK-key.md` (the answers) and
 //! `exercise-KK.toml` (the scene, which the app and every command open), `index.md`
-//! listing them, and `exercises.pdf`, every sheet and key ready to print. The same seed gives the same files, byte for byte.
+//! listing them, `sheets.pdf` (to hand out: one exercise a page, with lines for the class,
+//! the name and the date) and `keys.pdf` (for the teacher), typeset by [`crate::sheet_pdf`]
+//! in the chosen language. The same seed gives the same files, byte for byte.
 //! The set is written as one: a folder holds one whole set, never parts of two.
 
 use std::fmt::Write as _;
@@ -17,6 +19,7 @@ use phonglab_core::explain::{Side, explain};
 use phonglab_core::{Document, Engine, Rules};
 
 use crate::atomic_write::FileSet;
+use crate::sheet_pdf::{Block, pdf};
 use phonglab_core::t;
 
 /// `phonglab exercise`.
@@ -107,14 +110,20 @@ pub fn belongs_to_a_set(name: &str) -> bool {
                 && mview.len() == 1
                 && mview.bytes().all(|b| b.is_ascii_digit())
         }),
-        None => name == "exercises.pdf",
+        // exercises.pdf: what a set held before the sheets and keys were apart.
+        None => ["sheets.pdf", "keys.pdf", "exercises.pdf"].contains(&name),
     }
 }
 
 /// The worksheet as exercise 0: its five modelviews, one sheet, with the values it prints.
-fn worksheet_sheet(set: &mut FileSet) -> Result<String> {
+fn worksheet_sheet(set: &mut FileSet, sheets: &mut Vec<Block>, keys: &mut Vec<Block>) -> Result<String> {
     let mut sheet = format!("# {}\n\n{}\n\n", t!("exercise-zero-title"), t!("exercise-zero-intro"));
     let mut key = format!("# {}\n\n", t!("key-title", name = t!("exercise-zero-name")));
+    sheets.extend([
+        Block::Title(t!("exercise-zero-title")),
+        Block::WriteOn(vec![t!("sheet-class"), t!("sheet-name"), t!("sheet-date")]),
+        Block::Text(t!("exercise-zero-intro").replace('`', "")),
+    ]);
     for k in 1..=5u8 {
         let doc = phonglab_core::library::documents()
             .into_iter()
@@ -129,64 +138,127 @@ fn worksheet_sheet(set: &mut FileSet) -> Result<String> {
             let _ = writeln!(sheet, "[{}]", r.map(|x| phonglab_core::locale::num(x, 8)).join(" "));
         }
         let _ = writeln!(sheet, "```\n");
+        sheets.push(Block::Heading(format!("mview{k} ({file})")));
+        sheets.push(Block::Matrix { name: format!("mview{k}"), rows: rows.iter().map(|r| components(r)).collect() });
         let _ = write!(key, "## mview{k}\n\n{}", answer_key_body(&doc, &file)?);
+        keys.extend(key_blocks(&doc, &file)?.into_iter().skip(1));
     }
     set.add("exercise-00.md", sheet);
     set.add("exercise-00-key.md", key);
     Ok(format!("- [{}](exercise-00.md) ([{}](exercise-00-key.md))\n", t!("exercise-zero-title"), t!("answers")))
 }
 
-/// Lines of at most `width` characters (longer ones wrapped at spaces where possible).
-fn wrap(text: &str, width: usize) -> Vec<String> {
-    let mut out = Vec::new();
-    for line in text.lines() {
-        let mut rest = line.trim_end().to_string();
-        loop {
-            if rest.chars().count() <= width {
-                out.push(rest);
-                break;
-            }
-            let cut: String = rest.chars().take(width).collect();
-            let at = cut.rfind(' ').filter(|i| *i > width / 3).unwrap_or(cut.len());
-            out.push(rest[..at].to_string());
-            rest = format!("      {}", rest[at..].trim_start());
-        }
-    }
-    out
+/// A vector's components for people (8 significant digits, the locale's decimal mark).
+fn components(v: &[f64]) -> Vec<String> {
+    v.iter().map(|x| phonglab_core::locale::num(*x, 8)).collect()
 }
 
-/// A printable PDF of `documents` (each starts on a new page): A4, 9-point Hack (the
-/// monospaced font egui ships, embedded and subset), so the numbers line up as in the
-/// worksheet. No dates or random ids: the same input gives the same bytes.
-pub fn pdf(documents: &[String]) -> Result<Vec<u8>> {
-    use krilla::geom::Point;
-    use krilla::page::PageSettings;
-    use krilla::text::{Font, TextDirection};
-    let font = Font::new(epaint_default_fonts::HACK_REGULAR.to_vec().into(), 0).context("the embedded font")?;
-    let (w, h, margin, size, lead) = (595.0f32, 842.0f32, 48.0f32, 9.0f32, 12.0f32);
-    let per_page = ((h - 2.0 * margin) / lead) as usize;
-    let mut doc = krilla::Document::new();
-    for text in documents {
-        let lines = wrap(text, 88);
-        for chunk in lines.chunks(per_page) {
-            let settings = PageSettings::from_wh(w, h).context("A4")?;
-            let mut page = doc.start_page_with(settings);
-            let mut surface = page.surface();
-            for (i, line) in chunk.iter().enumerate() {
-                if !line.is_empty() {
-                    let y = margin + size + i as f32 * lead;
-                    surface.draw_text(Point::from_xy(margin, y), font.clone(), size, line, false, TextDirection::Auto);
-                }
-            }
-            surface.finish();
-            page.finish();
+/// A colour as the worksheet writes it, `[r g b 0]`.
+fn colour(c: glam::DVec4) -> Vec<String> {
+    components(&[c.x, c.y, c.z, 0.0])
+}
+
+/// An exercise's sheet, to hand out: the class, name and date lines, the givens set as
+/// vectors and a matrix, and a box for each step, sized for its value.
+fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
+    use Block::*;
+    let s = &ex.doc.scene;
+    let vector = |name: &str, values: Vec<String>| Vector { name: name.into(), values, note: String::new() };
+    let rules = match s.rules.set {
+        phonglab_core::RuleSet::Worksheet => t!("sheet-rules-worksheet"),
+        phonglab_core::RuleSet::OpenGl => t!("sheet-rules-opengl"),
+        phonglab_core::RuleSet::PhongDemo => t!("sheet-rules-demo"),
+    };
+    let mut b = vec![
+        Title(ex.doc.name.clone()),
+        WriteOn(vec![t!("sheet-class"), t!("sheet-name"), t!("sheet-date")]),
+        Text(format!("{} {}", t!("sheet-compute", rules = rules), t!("sheet-colours"))),
+        Heading(t!("sheet-vertex")),
+        vector("vertexPos", components(&s.vertex.position.to_array())),
+        vector("vertexNormal", components(&s.vertex.normal.extend(0.0).to_array())),
+        Heading(t!("sheet-modelview")),
+        Text(ex.modelview.clone()),
+        Matrix {
+            name: "mview".into(),
+            rows: phonglab_core::transform::mat4_rows(&s.eye_from_world).iter().map(|r| components(r)).collect(),
+        },
+    ];
+    for (i, l) in s.lights.iter().enumerate() {
+        b.push(Heading(t!("light-tab", index = i.to_string())));
+        let what = if l.position.w == 0.0 { t!("sheet-direction") } else { t!("sheet-position") };
+        b.push(Vector {
+            name: "lightPos".into(),
+            values: components(&l.position.to_array()),
+            note: t!("sheet-light-world", what = what),
+        });
+        b.push(vector("Lamb", colour(l.ambient)));
+        b.push(vector("Ldif", colour(l.diffuse)));
+        b.push(vector("Lspec", colour(l.specular)));
+        if l.position.w != 0.0 {
+            b.push(vector("[atC atLin atQuad]", components(&l.attenuation)));
+        }
+        if l.is_spot() {
+            b.push(vector("lightSpotDir", components(&l.spot_direction.extend(0.0).to_array())));
+            b.push(vector("[spotCutoff spotCoef]", components(&[l.spot_cutoff, l.spot_exponent])));
         }
     }
-    doc.finish().map_err(|e| anyhow::anyhow!("cannot write the PDF: {e:?}"))
+    let m = &s.material;
+    b.push(Heading(t!("sheet-material", name = &ex.material)));
+    b.push(vector("matAmb", colour(m.ambient)));
+    b.push(vector("matDif", colour(m.diffuse)));
+    b.push(vector("matSpec", colour(m.specular)));
+    b.push(vector("ns", components(&[m.shininess])));
+    let lm = &s.light_model;
+    let yes_no = |on: bool| if on { t!("yes") } else { t!("no") };
+    b.push(Heading(t!("sheet-light-model")));
+    b.push(Text(format!(
+        "{}: {}. {}: {}.",
+        t!("local-viewer"),
+        yes_no(lm.local_viewer),
+        t!("two-sided"),
+        yes_no(lm.two_sided)
+    )));
+    if s.rules.scene_ambient() {
+        b.push(vector(&t!("scene-ambient"), colour(lm.ambient)));
+    }
+    b.push(Heading(t!("sheet-compute-heading")));
+    let asked = (0..ex.key.steps.len()).filter(|k| phonglab_core::quiz::asked(s, &ex.key, *k));
+    for (n, k) in asked.enumerate() {
+        let st = &ex.key.steps[k];
+        let cells = st.value.as_ref().map_or(1, Vec::len);
+        b.push(Answer { label: format!("{}. {}", n + 1, st.title), name: st.name.clone(), cells });
+    }
+    b.push(Text(t!("sheet-scene-file", file = toml).replace('`', "")));
+    b
+}
+
+/// An exercise's key, for the teacher: every step's formula and value, as explain prints
+/// them (both sides with two-sided lighting).
+fn key_blocks(doc: &Document, file: &str) -> Result<Vec<Block>> {
+    use Block::*;
+    let lit = Engine::<f64>::light_scene_vertex(&doc.scene)?;
+    let mut b = vec![Title(t!("key-title", name = &doc.name)), Text(t!("key-intro", file = file).replace('`', ""))];
+    let sides: &[Side] = if doc.scene.light_model.two_sided { &[Side::Front, Side::Back] } else { &[Side::Front] };
+    for &side in sides {
+        let ex = explain(&doc.scene, &lit, side);
+        b.push(Heading(ex.heading.clone()));
+        for (k, st) in ex.steps.iter().enumerate() {
+            let value = match &st.value {
+                Some(v) => phonglab_core::locale::decimal(&phonglab_core::explain::fmt_value(v, 8)),
+                None => t!("not-applicable"),
+            };
+            b.push(KeyStep {
+                label: format!("{}. {}", k + 1, st.title),
+                formula: st.formula.clone(),
+                line: format!("{} = {value}", st.name),
+            });
+        }
+    }
+    Ok(b)
 }
 
 /// The exercises and the files of their set: the sheets, keys and scene files, `index.md`
-/// and `exercises.pdf` (nothing is written).
+/// and the two PDFs, `sheets.pdf` and `keys.pdf` (nothing is written).
 pub fn exercise_set(a: &ExerciseArgs) -> Result<(Vec<Exercise>, FileSet)> {
     let spec = spec_of(a)?;
     let exercises = generate(a.seed, a.count as usize, &spec).map_err(|e| anyhow::anyhow!(e))?;
@@ -198,13 +270,11 @@ pub fn exercise_set(a: &ExerciseArgs) -> Result<(Vec<Exercise>, FileSet)> {
         t!("index-title", seed = a.seed.to_string()),
         t!("index-intro", effects = effects, rules = &a.rules)
     );
-    let mut printable = Vec::new();
+    // To hand out, one exercise per page; and the keys, for the teacher.
+    let (mut sheets, mut keys) = (Vec::new(), Vec::new());
     if a.worksheet {
-        index.push_str(&worksheet_sheet(&mut set)?);
-        for f in ["exercise-00.md", "exercise-00-key.md"] {
-            let text = set.get(f).map(|b| String::from_utf8_lossy(b).into_owned()).unwrap_or_default();
-            printable.push(text);
-        }
+        keys.push(Block::Title(t!("key-title", name = t!("exercise-zero-name"))));
+        index.push_str(&worksheet_sheet(&mut set, &mut sheets, &mut keys)?);
     }
     for (i, ex) in exercises.iter().enumerate() {
         let stem = format!("exercise-{:02}", i + 1);
@@ -212,15 +282,19 @@ pub fn exercise_set(a: &ExerciseArgs) -> Result<(Vec<Exercise>, FileSet)> {
         set.add(toml.clone(), ex.doc.to_toml()?);
         let sheet = format!("{}\n{}\n", sheet_markdown(ex), t!("sheet-scene-file", file = &toml));
         set.add(format!("{stem}.md"), sheet.clone());
-        let key = answer_key(&ex.doc, &toml)?;
-        set.add(format!("{stem}-key.md"), key.clone());
-        printable.push(sheet);
-        printable.push(key);
+        set.add(format!("{stem}-key.md"), answer_key(&ex.doc, &toml)?);
+        for (all, page) in [(&mut sheets, sheet_blocks(ex, &toml)), (&mut keys, key_blocks(&ex.doc, &toml)?)] {
+            if !all.is_empty() {
+                all.push(Block::PageBreak);
+            }
+            all.extend(page);
+        }
         let _ = writeln!(index, "- [{}]({stem}.md) ([{}]({stem}-key.md))", ex.doc.name, t!("answers"));
     }
     let _ = writeln!(index, "\n{}", t!("index-printable"));
     set.add("index.md", index);
-    set.add("exercises.pdf", pdf(&printable)?);
+    set.add("sheets.pdf", pdf(&sheets)?);
+    set.add("keys.pdf", pdf(&keys)?);
     Ok((exercises, set))
 }
 

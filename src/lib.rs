@@ -14,3 +14,4 @@ pub mod input_file;
 pub mod platform;
 pub mod scenes;
 pub mod screenshot_cmd;
+pub mod sheet_pdf;

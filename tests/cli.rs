@@ -412,7 +412,8 @@ fn exercise_sheets_are_reproducible_and_their_keys_are_what_explain_prints() {
         assert!(o.status.success(), "{}", stderr(&o));
     }
     let (fa, fb) = (read_dir_sorted(&a), read_dir_sorted(&b));
-    assert_eq!(fa.len(), 4 * 3 + 2 + 5 + 1 + 1, "{:?}", fa.iter().map(|f| &f.0).collect::<Vec<_>>());
+    // Sheets, keys and scenes; exercise 0's sheet, key and five scenes; the index; the two PDFs.
+    assert_eq!(fa.len(), 4 * 3 + 2 + 5 + 1 + 2, "{:?}", fa.iter().map(|f| &f.0).collect::<Vec<_>>());
     assert_eq!(fa, fb, "the same seed gives the same files, byte for byte");
 
     // Each key is explain's output on the exercise's own scene file.
@@ -435,7 +436,7 @@ fn exercise_sheets_are_reproducible_and_their_keys_are_what_explain_prints() {
 }
 
 #[test]
-fn the_pdf_renders_and_holds_every_answer() {
+fn the_pdfs_are_typeset_sheets_to_hand_out_and_keys_for_the_teacher() {
     let out = std::env::temp_dir().join(format!("phonglab-expdf-{}", std::process::id()));
     let o = phonglab(&[
         "exercise",
@@ -450,26 +451,65 @@ fn the_pdf_renders_and_holds_every_answer() {
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let pdf = out.join("exercises.pdf");
-    let ppm = Command::new("pdftoppm")
-        .args(["-r", "30", "-png", "-f", "1", "-l", "1"])
-        .arg(&pdf)
-        .arg(out.join("page"))
-        .output();
-    let ppm = ppm.expect("pdftoppm (poppler-utils) is installed by scripts/test");
-    assert!(ppm.status.success(), "{}", stderr(&ppm));
-    let text = Command::new("pdftotext").arg(&pdf).arg("-").output().expect("pdftotext");
-    let text = stdout(&text);
+    let text_of = |pdf: &str, pages: Option<(u32, u32)>| {
+        let mut c = Command::new("pdftotext");
+        if let Some((f, l)) = pages {
+            c.args(["-f", &f.to_string(), "-l", &l.to_string()]);
+        }
+        stdout(&c.arg(out.join(pdf)).arg("-").output().expect("pdftotext (poppler-utils) is installed by scripts/test"))
+    };
+    for pdf in ["sheets.pdf", "keys.pdf"] {
+        let ppm = Command::new("pdftoppm")
+            .args(["-r", "30", "-png", "-f", "1", "-l", "1"])
+            .arg(out.join(pdf))
+            .arg(out.join("page"))
+            .output()
+            .expect("pdftoppm (poppler-utils) is installed by scripts/test");
+        assert!(ppm.status.success(), "{}", stderr(&ppm));
+        // Typeset, not Markdown: no syntax is printed.
+        let text = text_of(pdf, None);
+        for syntax in ["```", "## ", "# ", "`", "**", "________", "- ["] {
+            assert!(!text.contains(syntax), "{pdf} prints {syntax:?}");
+        }
+    }
+    // The sheets: each exercise starts a page, with the lines to write on, and no answers.
+    let sheets = text_of("sheets.pdf", None);
+    assert!(sheets.contains("Class:") && sheets.contains("Name:") && sheets.contains("Date:"), "{sheets}");
+    for k in 1..=3 {
+        let title = format!("exercise {k} (seed 5)");
+        let page = (1..=12).find(|p| text_of("sheets.pdf", Some((*p, *p))).contains(&title)).unwrap();
+        assert!(
+            text_of("sheets.pdf", Some((page, page))).trim_start().starts_with(&title),
+            "exercise {k} opens page {page}"
+        );
+    }
+    // The keys hold every answer, as explain prints it.
+    let keys = text_of("keys.pdf", None);
     let mut values = 0;
     for k in 0..=3 {
         let key = std::fs::read_to_string(out.join(format!("exercise-{k:02}-key.md"))).unwrap();
         for line in key.lines().filter(|l| l.starts_with("    ") && l.contains(" = ")) {
             let value = line.trim();
-            assert!(text.contains(value), "exercise {k}: {value:?} is not in the PDF's text");
+            assert!(keys.contains(value), "exercise {k}: {value:?} is not in keys.pdf");
+            assert!(
+                !sheets.contains(value) || value.ends_with("= 1") || value.contains("= [0 0"),
+                "{value:?} is on a sheet"
+            );
             values += 1;
         }
     }
     assert!(values > 100, "{values} answers checked");
+
+    // In Portuguese: the lines to write on, the steps' names and the decimal comma.
+    let pt = out.join("pt");
+    let o = phonglab(&["exercise", "--lang", "pt-PT", "--seed", "5", "--count", "1", "--out", pt.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&Command::new("pdftotext").arg(pt.join("sheets.pdf")).arg("-").output().unwrap());
+    for pt_text in ["Turma:", "Nome:", "Data:", "Vetor da luz", "Calcular", "exercício 1 (semente 5)"] {
+        assert!(text.contains(pt_text), "{pt_text:?} in the Portuguese sheet:\n{text}");
+    }
+    let keys = stdout(&Command::new("pdftotext").arg(pt.join("keys.pdf")).arg("-").output().unwrap());
+    assert!(keys.contains("Respostas:") && keys.contains("I = [0,"), "{keys}");
 }
 
 #[test]

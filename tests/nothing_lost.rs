@@ -80,9 +80,12 @@ fn a_failed_exercise_set_leaves_the_old_set_whole() {
     assert_eq!(run(&["exercise", "--seed", "1", "--count", "3", "--out", out]), ExitCode::SUCCESS);
     let before = listing(&dir);
     let names: Vec<&str> = before.iter().map(|(n, _)| n.as_str()).collect();
-    assert!(names.contains(&"exercise-03-key.md") && names.contains(&"exercises.pdf"), "{names:?}");
-    // A set of 3 has 11 files, all moved aside before the 2 new exercises' 8 move in.
-    for fault in faults(19) {
+    assert!(
+        names.contains(&"exercise-03-key.md") && names.contains(&"sheets.pdf") && names.contains(&"keys.pdf"),
+        "{names:?}"
+    );
+    // A set of 3 has 12 files, all moved aside before the 2 new exercises' 9 move in.
+    for fault in faults(21) {
         let code = with_fault(fault, || run(&["exercise", "--seed", "2", "--count", "2", "--out", out]));
         assert_eq!(code, ExitCode::from(2), "{fault:?}");
         assert_eq!(listing(&dir), before, "{fault:?}: seed 1's set, whole, and nothing else");

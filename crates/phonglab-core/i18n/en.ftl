@@ -482,7 +482,13 @@ answers = answers
 index-directional-only = one directional light only
 index-title = Exercises, seed { $seed }
 index-intro = Effects: { $effects }. Rules: { $rules }. Each sheet has its scene file (open it in phonglab) and its answers.
-index-printable = Printable: [exercises.pdf](exercises.pdf) (each sheet, then its answers).
+index-printable = To print: [sheets.pdf](sheets.pdf) (to hand out, one exercise a page) and [keys.pdf](keys.pdf) (the answers, for the teacher).
+
+## pdf
+
+sheet-class = Class
+sheet-name = Name
+sheet-date = Date
 
 ## cli
 

@@ -482,7 +482,13 @@ answers = respostas
 index-directional-only = só uma luz direcional
 index-title = Exercícios, semente { $seed }
 index-intro = Efeitos: { $effects }. Regras: { $rules }. Cada ficha tem o seu arquivo de cena (abra-o no phonglab) e as suas respostas.
-index-printable = Para imprimir: [exercises.pdf](exercises.pdf) (cada ficha, depois as respostas).
+index-printable = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir, um exercício por página) e [keys.pdf](keys.pdf) (as respostas, para o professor).
+
+## pdf
+
+sheet-class = Turma
+sheet-name = Nome
+sheet-date = Data
 
 ## cli
 

@@ -1,0 +1,325 @@
+//! Exercise sheets and their keys typeset as PDF (krilla): a proportional text font with
+//! Portuguese glyphs (egui's Ubuntu Light) for the words, Hack for the numbers, real
+//! headings, vectors and matrices set in brackets with their numbers in columns, and
+//! answer boxes sized for what goes in them (one cell per component of a vector).
+//!
+//! A document is a list of pages' [`Block`]s, laid out top to bottom; a block that does
+//! not fit goes to the next page. Nothing depends on the clock or on chance: the same
+//! blocks give the same bytes.
+
+use anyhow::{Context, Result};
+use krilla::geom::{PathBuilder, Point, Rect};
+use krilla::page::PageSettings;
+use krilla::paint::Stroke;
+use krilla::text::{Font, TextDirection};
+
+/// One piece of a page.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Block {
+    /// The document's title.
+    Title(String),
+    /// A section's heading.
+    Heading(String),
+    /// A paragraph (wrapped).
+    Text(String),
+    /// Lines to write on: ("Class", "Name", "Date").
+    WriteOn(Vec<String>),
+    /// `name = [a b c d]`, the numbers in columns inside brackets, and a note after them.
+    Vector {
+        /// The worksheet's name.
+        name: String,
+        /// The numbers, formatted.
+        values: Vec<String>,
+        /// Said after the brackets.
+        note: String,
+    },
+    /// `name =` and a matrix in brackets.
+    Matrix {
+        /// The worksheet's name.
+        name: String,
+        /// The rows of formatted numbers.
+        rows: Vec<Vec<String>>,
+    },
+    /// A step to compute: its number and title, `name =` and a box of `cells` cells.
+    Answer {
+        /// "3. Light in eye space".
+        label: String,
+        /// The step's name.
+        name: String,
+        /// One per component.
+        cells: usize,
+    },
+    /// A step of the key: its number and title, its formula, and `name = value`.
+    KeyStep {
+        /// "3. Light in eye space".
+        label: String,
+        /// The formula.
+        formula: String,
+        /// `name = value`, as explain prints it.
+        line: String,
+    },
+    /// Start a new page.
+    PageBreak,
+}
+
+/// The page: A4 in points, and the margins.
+const PAGE: (f32, f32) = (595.0, 842.0);
+const MARGIN: f32 = 56.0;
+
+/// The fonts and how wide their text is.
+struct Fonts {
+    text: Font,
+    mono: Font,
+    text_face: ttf_parser::Face<'static>,
+    mono_face: ttf_parser::Face<'static>,
+}
+
+impl Fonts {
+    fn new() -> Result<Fonts> {
+        let text = Font::new(epaint_default_fonts::UBUNTU_LIGHT.to_vec().into(), 0).context("the text font")?;
+        let mono = Font::new(epaint_default_fonts::HACK_REGULAR.to_vec().into(), 0).context("the number font")?;
+        let text_face = ttf_parser::Face::parse(epaint_default_fonts::UBUNTU_LIGHT, 0).context("the text font")?;
+        let mono_face = ttf_parser::Face::parse(epaint_default_fonts::HACK_REGULAR, 0).context("the number font")?;
+        Ok(Fonts { text, mono, text_face, mono_face })
+    }
+
+    /// The width of `s` at `size` points.
+    fn width(&self, s: &str, size: f32, mono: bool) -> f32 {
+        let face = if mono { &self.mono_face } else { &self.text_face };
+        let units: f32 =
+            s.chars().map(|c| face.glyph_index(c).and_then(|g| face.glyph_hor_advance(g)).unwrap_or(0) as f32).sum();
+        units * size / f32::from(face.units_per_em())
+    }
+
+    /// `text` broken into lines no wider than `width`.
+    fn wrap(&self, text: &str, size: f32, width: f32, mono: bool) -> Vec<String> {
+        let mut lines = Vec::new();
+        let mut line = String::new();
+        for word in text.split_whitespace() {
+            let candidate = if line.is_empty() { word.to_string() } else { format!("{line} {word}") };
+            if self.width(&candidate, size, mono) > width && !line.is_empty() {
+                lines.push(std::mem::replace(&mut line, word.to_string()));
+            } else {
+                line = candidate;
+            }
+        }
+        if !line.is_empty() {
+            lines.push(line);
+        }
+        lines
+    }
+}
+
+/// Sizes, in points.
+const TITLE: f32 = 18.0;
+const HEADING: f32 = 13.0;
+const BODY: f32 = 10.5;
+const NUMBERS: f32 = 9.5;
+
+/// A page being drawn: its surface's draw calls are collected, then replayed on a page.
+enum Mark {
+    Text { at: (f32, f32), text: String, size: f32, mono: bool },
+    Line { from: (f32, f32), to: (f32, f32), width: f32 },
+    Rect { x: f32, y: f32, w: f32, h: f32 },
+}
+
+/// The blocks laid out into pages of marks.
+fn layout(fonts: &Fonts, blocks: &[Block]) -> Vec<Vec<Mark>> {
+    let width = PAGE.0 - 2.0 * MARGIN;
+    let mut pages: Vec<Vec<Mark>> = vec![Vec::new()];
+    let mut y = MARGIN;
+    for block in blocks {
+        let height = block_height(fonts, block, width);
+        if matches!(block, Block::PageBreak) || y + height > PAGE.1 - MARGIN {
+            if !pages.last().is_some_and(Vec::is_empty) {
+                pages.push(Vec::new());
+            }
+            y = MARGIN;
+            if matches!(block, Block::PageBreak) {
+                continue;
+            }
+        }
+        let page = pages.last_mut().expect("a page");
+        draw_block(fonts, block, y, width, page);
+        y += height;
+    }
+    pages
+}
+
+/// The rows of a vector's or a matrix's numbers: the widest number sets every column.
+fn column_width(fonts: &Fonts, values: &[&String]) -> f32 {
+    values.iter().map(|v| fonts.width(v, NUMBERS, true)).fold(0.0, f32::max) + 10.0
+}
+
+fn block_height(fonts: &Fonts, block: &Block, width: f32) -> f32 {
+    match block {
+        Block::Title(t) => fonts.wrap(t, TITLE, width, false).len() as f32 * TITLE * 1.3 + 10.0,
+        Block::Heading(_) => HEADING * 1.3 + 8.0,
+        Block::Text(t) => fonts.wrap(t, BODY, width, false).len() as f32 * BODY * 1.35 + 6.0,
+        Block::WriteOn(_) => BODY * 2.6 + 8.0,
+        Block::Vector { .. } => NUMBERS * 1.6 + 5.0,
+        Block::Matrix { rows, .. } => rows.len() as f32 * NUMBERS * 1.5 + 14.0,
+        Block::Answer { .. } => BODY * 1.4 + 30.0,
+        Block::KeyStep { formula, .. } => {
+            BODY * 1.4
+                + fonts.wrap(formula, NUMBERS - 1.0, width - 14.0, true).len() as f32 * NUMBERS * 1.3
+                + NUMBERS * 1.5
+                + 8.0
+        }
+        Block::PageBreak => 0.0,
+    }
+}
+
+/// A bracket from `top` to `bottom` at `x`, opening right (`left`) or left.
+fn bracket(page: &mut Vec<Mark>, x: f32, top: f32, bottom: f32, left: bool) {
+    let serif = if left { 4.0 } else { -4.0 };
+    page.push(Mark::Line { from: (x, top), to: (x, bottom), width: 0.8 });
+    page.push(Mark::Line { from: (x, top), to: (x + serif, top), width: 0.8 });
+    page.push(Mark::Line { from: (x, bottom), to: (x + serif, bottom), width: 0.8 });
+}
+
+fn draw_block(fonts: &Fonts, block: &Block, y: f32, width: f32, page: &mut Vec<Mark>) {
+    let x = MARGIN;
+    let text = |page: &mut Vec<Mark>, at: (f32, f32), s: &str, size: f32, mono: bool| {
+        page.push(Mark::Text { at, text: s.to_string(), size, mono });
+    };
+    match block {
+        Block::Title(t) => {
+            for (i, line) in fonts.wrap(t, TITLE, width, false).iter().enumerate() {
+                text(page, (x, y + TITLE + i as f32 * TITLE * 1.3), line, TITLE, false);
+            }
+        }
+        Block::Heading(h) => {
+            text(page, (x, y + 6.0 + HEADING), h, HEADING, false);
+            page.push(Mark::Line { from: (x, y + 10.0 + HEADING), to: (x + width, y + 10.0 + HEADING), width: 0.4 });
+        }
+        Block::Text(t) => {
+            for (i, line) in fonts.wrap(t, BODY, width, false).iter().enumerate() {
+                text(page, (x, y + BODY + i as f32 * BODY * 1.35), line, BODY, false);
+            }
+        }
+        Block::WriteOn(labels) => {
+            // Each label with a line to write on; the name's line the longest.
+            let base = y + BODY * 2.0;
+            let shares = [0.25, 0.5, 0.25];
+            let mut at = x;
+            for (k, label) in labels.iter().enumerate() {
+                let w = width * shares.get(k).copied().unwrap_or(0.25);
+                text(page, (at, base), &format!("{label}:"), BODY, false);
+                let from = at + fonts.width(&format!("{label}: "), BODY, false);
+                page.push(Mark::Line { from: (from, base + 2.0), to: (at + w - 12.0, base + 2.0), width: 0.5 });
+                at += w;
+            }
+        }
+        Block::Vector { name, values, note } => {
+            let base = y + NUMBERS * 1.2;
+            let lead = format!("{name} =");
+            text(page, (x, base), &lead, NUMBERS, true);
+            let col = column_width(fonts, &values.iter().collect::<Vec<_>>());
+            let left = x + fonts.width(&lead, NUMBERS, true) + 8.0;
+            let (top, bottom) = (base - NUMBERS * 0.9, base + NUMBERS * 0.35);
+            bracket(page, left, top, bottom, true);
+            for (k, v) in values.iter().enumerate() {
+                let right = left + 4.0 + (k + 1) as f32 * col;
+                text(page, (right - fonts.width(v, NUMBERS, true), base), v, NUMBERS, true);
+            }
+            let end = left + 8.0 + values.len() as f32 * col;
+            bracket(page, end, top, bottom, false);
+            if !note.is_empty() {
+                text(page, (end + 10.0, base), note, BODY - 1.0, false);
+            }
+        }
+        Block::Matrix { name, rows } => {
+            let lead = format!("{name} =");
+            let line = NUMBERS * 1.5;
+            let top = y + 6.0;
+            let middle = top + rows.len() as f32 * line / 2.0 + NUMBERS / 2.0 - 2.0;
+            text(page, (x, middle), &lead, NUMBERS, true);
+            let cells: Vec<&String> = rows.iter().flatten().collect();
+            let col = column_width(fonts, &cells);
+            let left = x + fonts.width(&lead, NUMBERS, true) + 8.0;
+            let columns = rows.first().map_or(0, Vec::len);
+            for (r, row) in rows.iter().enumerate() {
+                let base = top + NUMBERS + r as f32 * line;
+                for (c, v) in row.iter().enumerate() {
+                    let right = left + 4.0 + (c + 1) as f32 * col;
+                    text(page, (right - fonts.width(v, NUMBERS, true), base), v, NUMBERS, true);
+                }
+            }
+            let bottom = top + rows.len() as f32 * line + 2.0;
+            bracket(page, left, top, bottom, true);
+            bracket(page, left + 8.0 + columns as f32 * col, top, bottom, false);
+        }
+        Block::Answer { label, name, cells } => {
+            text(page, (x, y + BODY), label, BODY, false);
+            let base = y + BODY * 1.4 + 17.0;
+            let lead = format!("{name} =");
+            text(page, (x + 14.0, base), &lead, NUMBERS, true);
+            // Every box starts in one column (past the longest name, vertexNormal).
+            let left = (x + 14.0 + fonts.width(&lead, NUMBERS, true) + 8.0).max(x + 110.0);
+            // Room for 8 significant digits, a sign and a decimal mark in each cell.
+            let cell = fonts.width("-0,00000000", NUMBERS, true) + 14.0;
+            let w = cell * *cells as f32;
+            page.push(Mark::Rect { x: left, y: base - 15.0, w, h: 22.0 });
+            for k in 1..*cells {
+                let cx = left + k as f32 * cell;
+                page.push(Mark::Line { from: (cx, base - 10.0), to: (cx, base + 2.0), width: 0.3 });
+            }
+        }
+        Block::KeyStep { label, formula, line } => {
+            text(page, (x, y + BODY), label, BODY, false);
+            let mut at = y + BODY * 1.4;
+            for f in fonts.wrap(formula, NUMBERS - 1.0, width - 14.0, true) {
+                at += NUMBERS * 1.3;
+                text(page, (x + 14.0, at), &f, NUMBERS - 1.0, true);
+            }
+            text(page, (x + 14.0, at + NUMBERS * 1.5), line, NUMBERS, true);
+        }
+        Block::PageBreak => {}
+    }
+}
+
+/// The PDF of `blocks`.
+pub fn pdf(blocks: &[Block]) -> Result<Vec<u8>> {
+    let fonts = Fonts::new()?;
+    let mut doc = krilla::Document::new();
+    for marks in layout(&fonts, blocks) {
+        let settings = PageSettings::from_wh(PAGE.0, PAGE.1).context("A4")?;
+        let mut page = doc.start_page_with(settings);
+        let mut surface = page.surface();
+        for m in &marks {
+            match m {
+                Mark::Text { at, text, size, mono } => {
+                    let font = if *mono { fonts.mono.clone() } else { fonts.text.clone() };
+                    surface.set_fill(Some(krilla::paint::Fill::default()));
+                    surface.set_stroke(None);
+                    surface.draw_text(Point::from_xy(at.0, at.1), font, *size, text, false, TextDirection::Auto);
+                }
+                Mark::Line { from, to, width } => {
+                    let mut path = PathBuilder::new();
+                    path.move_to(from.0, from.1);
+                    path.line_to(to.0, to.1);
+                    if let Some(path) = path.finish() {
+                        surface.set_fill(None);
+                        surface.set_stroke(Some(Stroke { width: *width, ..Default::default() }));
+                        surface.draw_path(&path);
+                    }
+                }
+                Mark::Rect { x, y, w, h } => {
+                    let mut path = PathBuilder::new();
+                    if let Some(r) = Rect::from_xywh(*x, *y, *w, *h) {
+                        path.push_rect(r);
+                    }
+                    if let Some(path) = path.finish() {
+                        surface.set_fill(None);
+                        surface.set_stroke(Some(Stroke { width: 0.7, ..Default::default() }));
+                        surface.draw_path(&path);
+                    }
+                }
+            }
+        }
+        surface.finish();
+        page.finish();
+    }
+    doc.finish().map_err(|e| anyhow::anyhow!("cannot write the PDF: {e:?}"))
+}
