@@ -318,3 +318,24 @@ fn the_quiz_marks_say_which_check_they_passed_and_no_field_moves() {
     h.run_steps(2);
     h.get_by_label_contains("(0 answered)");
 }
+
+#[test]
+fn presenting_in_portuguese_no_reveal_button_is_clipped_and_no_row_grows() {
+    let mut state = AppState::worksheet();
+    state.ui.layout.presenting = true;
+    state.ui.layout.language = Some("pt-BR".into());
+    let mut h =
+        Harness::builder().with_size([1920.0, 1080.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+    h.run_steps(2);
+    h.get_by_label("Teste").click();
+    h.run_steps(4);
+    let reveals: Vec<egui::Rect> = h.get_all_by_label("Revelar").map(|n| n.rect()).collect();
+    assert!(reveals.len() >= 4, "{reveals:?}");
+    let fields: Vec<egui::Rect> =
+        h.query_all_by_role(Role::TextInput).filter(|n| n.rect().min.x > 1000.0).map(|n| n.rect()).collect();
+    for r in &reveals {
+        assert!(r.max.x <= 1920.0 && r.size() == reveals[0].size(), "{r:?} against {:?}", reveals[0]);
+    }
+    // Every answer field one width, its Reveal beside it.
+    assert!(fields.iter().all(|f| (f.width() - fields[0].width()).abs() < 0.5), "{fields:?}");
+}

@@ -250,16 +250,23 @@ pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<
     ui.separator();
     // One field per step; after "Clear answers" just above, too.
     quiz.fit(key.steps.len());
+    // Every row one width (the panel's, less the scroll bar), and Reveal as wide as its word
+    // in this language and text size: no row grows, no button is clipped.
+    let row_w = ui.available_width() - ui.spacing().scroll.bar_width - ui.spacing().scroll.bar_inner_margin;
+    let font = egui::TextStyle::Button.resolve(ui.style());
+    let word = ui.ctx().fonts_mut(|f| f.layout_no_wrap(t!("quiz-reveal"), font, egui::Color32::WHITE).size().x);
+    let reveal_w = word + 2.0 * ui.spacing().button_padding.x + 4.0;
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
+        ui.set_max_width(row_w);
         for k in (0..key.steps.len()).filter(|k| asked(&doc.scene, &key, *k)) {
-            step_ui(ui, quiz, &key, k);
+            step_ui(ui, quiz, &key, k, (row_w, reveal_w));
         }
     });
     shown
 }
 
 /// One step: its title, the name and the field, Reveal, and the space for its mark.
-fn step_ui(ui: &mut Ui, quiz: &mut QuizState, key: &Explanation, k: usize) {
+fn step_ui(ui: &mut Ui, quiz: &mut QuizState, key: &Explanation, k: usize, (row_w, reveal_w): (f32, f32)) {
     let st = &key.steps[k];
     let Some(value) = &st.value else { return };
     // The title and the name on one row, the field (wide enough for a 4-vector) and Reveal
@@ -272,8 +279,7 @@ fn step_ui(ui: &mut Ui, quiz: &mut QuizState, key: &Explanation, k: usize) {
         })
         .inner;
     ui.horizontal(|ui| {
-        let reveal_w = 72.0;
-        let w = (ui.available_width() - reveal_w - ui.spacing().item_spacing.x).max(80.0);
+        let w = (row_w - reveal_w - ui.spacing().item_spacing.x).max(80.0);
         let field = ui
             .add(egui::TextEdit::singleline(&mut quiz.answers[k]).desired_width(w).hint_text(t!("quiz-your-value")))
             .labelled_by(name.id);
@@ -292,7 +298,7 @@ fn step_ui(ui: &mut Ui, quiz: &mut QuizState, key: &Explanation, k: usize) {
     let body = ui.text_style_height(&egui::TextStyle::Body);
     let mono = ui.text_style_height(&egui::TextStyle::Monospace);
     let h = 2.0 * body + mono + 2.0 * ui.spacing().item_spacing.y;
-    let (rect, _) = ui.allocate_exact_size(egui::vec2(ui.available_width(), h), egui::Sense::hover());
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(row_w, h), egui::Sense::hover());
     // A child that draws in the reserved rect without taking more space from the panel.
     let mut child = ui.new_child(egui::UiBuilder::new().max_rect(rect).id_salt(("mark", k)));
     child.set_clip_rect(rect.intersect(ui.clip_rect()));
