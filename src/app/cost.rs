@@ -13,6 +13,7 @@ use egui::{Color32, ColorImage, TextureHandle, TextureOptions, Ui};
 use egui_plot::{Legend, Line, LineStyle, MarkerShape, Plot, PlotPoint, PlotPoints, Points, Text};
 use phonglab_core::cost::{self, ErrorStats, Progress, Question, Setup, Study, Timing};
 use phonglab_core::{EvalOptions, Scene, Shading, View};
+use phonglab_core::{locale, t};
 
 /// Image size of the app's study and heat map, in pixels (the CLI's default is larger).
 pub const APP_SIZE: usize = 256;
@@ -139,7 +140,7 @@ impl CostState {
             match r {
                 Ok(Some(s)) => self.study = Some((Arc::new(s), std::mem::take(&mut self.pending_about))),
                 Ok(None) => {}
-                Err(e) => self.error = Some(format!("The study failed: {e}")),
+                Err(e) => self.error = Some(t!("cost-failed", error = e.to_string())),
             }
             self.running = None;
         }
@@ -149,7 +150,7 @@ impl CostState {
             match r {
                 Ok(Some(h)) => self.heat = Some(h),
                 Ok(None) => {}
-                Err(e) => self.error = Some(format!("The heat map failed: {e}")),
+                Err(e) => self.error = Some(t!("heat-map-failed", error = e.to_string())),
             }
             self.heat_running = None;
         }
@@ -236,8 +237,8 @@ pub fn cost_chart_ui(ui: &mut Ui, study: &Study, height: f32) {
     Plot::new(format!("cost chart {:?}", study.object))
         .height(height)
         .legend(Legend::default().position(egui_plot::Corner::LeftTop))
-        .x_axis_label("ms per frame (log)")
-        .y_axis_label("mean error, 1/255 (log)")
+        .x_axis_label(t!("cost-axis-ms"))
+        .y_axis_label(t!("cost-axis-error"))
         .x_axis_formatter(|m, _| pow10_label(m.value))
         .y_axis_formatter(|m, _| pow10_label(m.value))
         .allow_scroll(false)
@@ -274,7 +275,7 @@ pub fn cost_chart_ui(ui: &mut Ui, study: &Study, height: f32) {
             // 8-bit rounding alone leaves a mean error of about 1/4 of a step.
             let floor = log(0.25);
             p.line(
-                Line::new("8-bit rounding", PlotPoints::from(vec![[x_min - 0.1, floor], [x_max + 0.3, floor]]))
+                Line::new(t!("cost-rounding"), PlotPoints::from(vec![[x_min - 0.1, floor], [x_max + 0.3, floor]]))
                     .color(ui_text)
                     .style(LineStyle::dashed_loose()),
             );
@@ -284,7 +285,9 @@ pub fn cost_chart_ui(ui: &mut Ui, study: &Study, height: f32) {
 /// The table under the chart.
 pub fn cost_table_ui(ui: &mut Ui, study: &Study) {
     egui::Grid::new(format!("cost table {:?}", study.object)).striped(true).num_columns(6).show(ui, |ui| {
-        for h in ["variant", "triangles", "ms/frame", "mean /255", "max /255", "> 1/255"] {
+        for h in
+            [t!("cost-variant"), t!("cost-triangles"), t!("cost-ms"), t!("cost-mean"), t!("cost-max"), "> 1/255".into()]
+        {
             ui.strong(h);
         }
         ui.end_row();
@@ -305,17 +308,24 @@ pub fn takeaways(study: &Study) -> Vec<String> {
     let mut out = Vec::new();
     let good = |q: &&cost::CostPoint| q.variant.question == Question::Shading && q.error.share_over_one < 0.01;
     if let Some(best) = study.points.iter().filter(good).min_by(|a, b| a.ms.total_cmp(&b.ms)) {
-        out.push(format!(
-            "Cheapest with under 1 % of pixels off by more than 1/255: {} ({} triangles), {:.2} ms per frame.",
-            best.variant.label, best.triangles, best.ms
+        out.push(t!(
+            "cost-cheapest",
+            variant = best.variant.label.to_string(),
+            triangles = best.triangles,
+            ms = locale::decimal(&format!("{:.2}", best.ms))
         ));
     } else {
-        out.push("No shading studied stays within 1/255 on 99 % of the pixels: the silhouette or the highlight needs a finer mesh.".into());
+        out.push(t!("cost-none-within"));
     }
     let p = &study.precision;
-    out.push(format!(
-        "f32 against f64 on {} vertices: at most {:.1e} apart ({:.4}/255 after clamping); the general engine takes {:.0} ns (f32) and {:.0} ns (f64) a vertex, the specialised one {:.0} ns.",
-        p.vertices, p.max_error, p.max_error_shown_255, p.general_f32_ns, p.general_f64_ns, p.specialised_f32_ns
+    out.push(t!(
+        "cost-precision",
+        vertices = p.vertices,
+        apart = locale::decimal(&format!("{:.1e}", p.max_error)),
+        shown = locale::decimal(&format!("{:.4}", p.max_error_shown_255)),
+        f32 = format!("{:.0}", p.general_f32_ns),
+        f64 = format!("{:.0}", p.general_f64_ns),
+        specialised = format!("{:.0}", p.specialised_f32_ns)
     ));
     out
 }
@@ -330,21 +340,17 @@ pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
     }
     let mut open = true;
     let screen = ctx.content_rect();
-    egui::Window::new("Cost of accuracy")
+    egui::Window::new(t!("cost-of-accuracy"))
         .open(&mut open)
         .default_pos(egui::pos2(screen.width() * 0.12, 60.0))
         .default_size(egui::vec2((screen.width() * 0.76).max(640.0), (screen.height() * 0.8).max(480.0)))
         .resizable(true)
         .vscroll(true)
         .show(ctx, |ui| {
-            ui.label(
-                "Each shading at five tessellations of the current object, timed and compared with a reference: \
-             per-pixel Phong in f64 on a very fine mesh. Also Phong in f32 on the reference's own mesh \
-             (does f64 change anything visible?) and the approximations people use.",
-            );
+            ui.label(t!("cost-intro"));
             ui.horizontal(|ui| {
                 let busy = state.cost.running.is_some();
-                if ui.add_enabled(!busy, egui::Button::new("Run the study")).clicked() {
+                if ui.add_enabled(!busy, egui::Button::new(t!("cost-run"))).clicked() {
                     let about = format!(
                         "{}, {}",
                         state.doc.view.object.label(),
@@ -352,7 +358,7 @@ pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
                     );
                     state.cost.start(state.doc.shaded_scene(), state.doc.view.clone(), about);
                 }
-                if busy && ui.button("Cancel").clicked() {
+                if busy && ui.button(t!("cancel")).clicked() {
                     state.cost.running = None;
                 }
             });
@@ -369,14 +375,17 @@ pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
             }
             if let Some((study, about)) = &state.cost.study {
                 ui.separator();
-                ui.strong(format!("{about} ({}x{} px, timings taken while the app runs)", study.size, study.size));
+                ui.strong(t!("cost-about", about = about, size = study.size.to_string()));
                 // The chart takes the window's width, and height in proportion.
                 let height = (ui.available_width() * 0.55).clamp(260.0, 900.0);
                 cost_chart_ui(ui, study, height);
                 for t in takeaways(study) {
                     ui.label(t);
                 }
-                egui::CollapsingHeader::new("Table").default_open(true).show(ui, |ui| cost_table_ui(ui, study));
+                egui::CollapsingHeader::new(t!("cost-table"))
+                    .id_salt("cost table")
+                    .default_open(true)
+                    .show(ui, |ui| cost_table_ui(ui, study));
             }
         });
     state.cost.open = open;
@@ -386,17 +395,18 @@ pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
 pub fn heat_map_ui(ui: &mut Ui, state: &mut super::AppState, side: f32) {
     ui.vertical(|ui| {
         let Some(h) = &mut state.cost.heat else {
-            ui.small("Error heat map: computing the reference...");
+            ui.small(t!("heat-map-computing"));
             return;
         };
         let tex = h
             .texture
             .get_or_insert_with(|| ui.ctx().load_texture("error heat map", h.image.clone(), TextureOptions::NEAREST));
-        let caption = ui.small(format!(
-            "Error against the f64 reference: mean {:.2}/255, max {:.0}/255, {:.1} % of pixels > 1/255 (white: {HEAT_FULL_SCALE}/255)",
-            h.error.mean,
-            h.error.max,
-            100.0 * h.error.share_over_one
+        let caption = ui.small(t!(
+            "heat-map-caption",
+            mean = locale::decimal(&format!("{:.2}", h.error.mean)),
+            max = format!("{:.0}", h.error.max),
+            share = locale::decimal(&format!("{:.1}", 100.0 * h.error.share_over_one)),
+            white = HEAT_FULL_SCALE.to_string()
         ));
         ui.add(egui::Image::new((tex.id(), egui::vec2(side, side)))).labelled_by(caption.id);
     });

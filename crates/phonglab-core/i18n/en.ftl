@@ -497,3 +497,55 @@ exercises-written =
     [one] 1 exercise in { $out } ({ $redraws } draws set aside by the screen)
     *[other] { $count } exercises in { $out } ({ $redraws } draws set aside by the screen)
     }
+
+## errors
+
+error-out-of-range = { $field } = { $value } is out of range: allowed { $allowed }
+error-not-finite = { $field } must be a finite number, not { $value }
+error-too-many-lights = { $count } lights: OpenGL has at most { $max }
+error-camera-mismatch = the scene's view matrix is not the one its camera gives ({ $camera }): set the camera, or give the matrix as a typed camera
+error-zero-attenuation = { $field }: constant, linear and quadratic attenuation are all 0, so the light would be infinitely bright; make at least one positive
+allowed-spot-cutoff = [0, 90], or 180 for no spotlight
+allowed-float = a float: 0, or 1.2e-38 <= |x| <= 3.4e38
+allowed-mview = 1, 2, 3, 4 or 5
+allowed-look-at = an eye away from the centre, with up not along the view direction
+allowed-pixel = at least 1 pixel
+
+## limits
+
+limit-light-at-vertex = the light is at the vertex: L has no direction, so no diffuse or specular; its ambient stays, attenuated at d = 0
+limit-light-direction-zero = the directional light's direction is (0, 0, 0): L has no direction, so no diffuse or specular; its ambient stays
+limit-halfway-zero = L is exactly opposite V, so H = L + V = 0 has no direction: no specular
+limit-zero-normal = the normal is zero: no diffuse or specular
+limit-normal-scaled = |n|^2 under- or overflows in this precision: n was divided by its largest component before normalising
+limit-distance-scaled = |VP|^2 under- or overflows in this precision: d was computed by scaling VP by its largest component first
+limit-attenuation-infinite = k0 + k1 d + k2 d^2 = 0: the light's terms are +infinity where positive and 0 where zero (clamping gives 1 and 0)
+limit-spot-direction-zero = the spot direction is (0, 0, 0): the cone has no axis, so the spot factor is 0
+limit-spot-at-vertex = the spotlight is at the vertex: there is no direction to test against the cone, so the spot factor is 0
+limit-vertex-at-eye = the vertex is at the eye (local viewer): V has no direction, so no specular
+limit-vertex-at-infinity = the vertex has w = 0 (a point at infinity): L points away from it towards positional lights, and d is infinite
+limit-singular-modelview = the modelview's 3x3 part is singular: normals go through its cofactor matrix, which keeps their direction only
+limit-infinities-cancelled = an infinite term of one sign met one of the other sign: the sum is undefined and shown as 0
+
+## cost
+
+cost-axis-ms = ms per frame (log)
+cost-axis-error = mean error, 1/255 (log)
+cost-rounding = 8-bit rounding
+cost-variant = variant
+cost-triangles = triangles
+cost-ms = ms/frame
+cost-mean = mean /255
+cost-max = max /255
+cost-cheapest = Cheapest with under 1 % of pixels off by more than 1/255: { $variant } ({ $triangles } triangles), { $ms } ms per frame.
+cost-none-within = No shading studied stays within 1/255 on 99 % of the pixels: the silhouette or the highlight needs a finer mesh.
+cost-precision = f32 against f64 on { $vertices } vertices: at most { $apart } apart ({ $shown }/255 after clamping); the general engine takes { $f32 } ns (f32) and { $f64 } ns (f64) a vertex, the specialised one { $specialised } ns.
+cost-intro = Each shading at five tessellations of the current object, timed and compared with a reference: per-pixel Phong in f64 on a very fine mesh. Also Phong in f32 on the reference's own mesh (does f64 change anything visible?) and the approximations people use.
+cost-run = Run the study
+cancel = Cancel
+cost-about = { $about } ({ $size }x{ $size } px, timings taken while the app runs)
+cost-table = Table
+heat-map-computing = Error heat map: computing the reference...
+heat-map-caption = Error against the f64 reference: mean { $mean }/255, max { $max }/255, { $share } % of pixels > 1/255 (white: { $white }/255)
+cost-failed = The study failed: { $error }
+heat-map-failed = The heat map failed: { $error }

@@ -497,3 +497,55 @@ exercises-written =
     [one] 1 exercício em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
     *[other] { $count } exercícios em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
     }
+
+## errors
+
+error-out-of-range = { $field } = { $value } está fora do intervalo: permitido { $allowed }
+error-not-finite = { $field } precisa ser um número finito, não { $value }
+error-too-many-lights = { $count } luzes: o OpenGL tem no máximo { $max }
+error-camera-mismatch = a matriz de vista da cena não é a que a sua câmera dá ({ $camera }): defina a câmera, ou dê a matriz como câmera digitada
+error-zero-attenuation = { $field }: as atenuações constante, linear e quadrática são todas 0, por isso a luz seria infinitamente brilhante; torne pelo menos uma positiva
+allowed-spot-cutoff = [0, 90], ou 180 para não haver foco
+allowed-float = um float: 0, ou 1,2e-38 <= |x| <= 3,4e38
+allowed-mview = 1, 2, 3, 4 ou 5
+allowed-look-at = um olho afastado do centro, com o vetor para cima fora da direção de vista
+allowed-pixel = pelo menos 1 pixel
+
+## limits
+
+limit-light-at-vertex = a luz está no vértice: L não tem direção, por isso não há difusa nem especular; a sua componente ambiente fica, atenuada em d = 0
+limit-light-direction-zero = a direção da luz direcional é (0, 0, 0): L não tem direção, por isso não há difusa nem especular; a sua componente ambiente fica
+limit-halfway-zero = L é exatamente oposto a V, por isso H = L + V = 0 não tem direção: sem especular
+limit-zero-normal = a normal é zero: sem difusa nem especular
+limit-normal-scaled = |n|^2 sai do alcance desta precisão: n foi dividido pela sua maior componente antes de normalizar
+limit-distance-scaled = |VP|^2 sai do alcance desta precisão: d foi calculado dividindo primeiro VP pela sua maior componente
+limit-attenuation-infinite = k0 + k1 d + k2 d^2 = 0: as componentes da luz são +infinito onde positivas e 0 onde zero (o limite dá 1 e 0)
+limit-spot-direction-zero = a direção do foco é (0, 0, 0): o cone não tem eixo, por isso o fator do foco é 0
+limit-spot-at-vertex = o foco está no vértice: não há direção para comparar com o cone, por isso o fator do foco é 0
+limit-vertex-at-eye = o vértice está no olho (observador local): V não tem direção, por isso não há especular
+limit-vertex-at-infinity = o vértice tem w = 0 (um ponto no infinito): L aponta dele para as luzes pontuais, e d é infinito
+limit-singular-modelview = a parte 3x3 da modelview é singular: as normais passam pela sua matriz dos cofatores, que só mantém a direção
+limit-infinities-cancelled = uma componente infinita de um sinal encontrou outra do sinal oposto: a soma é indefinida e mostra-se 0
+
+## cost
+
+cost-axis-ms = ms por imagem (log)
+cost-axis-error = erro médio, 1/255 (log)
+cost-rounding = arredondamento a 8 bits
+cost-variant = variante
+cost-triangles = triângulos
+cost-ms = ms/imagem
+cost-mean = média /255
+cost-max = máx. /255
+cost-cheapest = O mais barato com menos de 1 % dos pixels a mais de 1/255: { $variant } ({ $triangles } triângulos), { $ms } ms por imagem.
+cost-none-within = Nenhum sombreamento estudado fica a menos de 1/255 em 99 % dos pixels: a silhueta ou o brilho pedem uma malha mais fina.
+cost-precision = f32 contra f64 em { $vertices } vértices: no máximo { $apart } de diferença ({ $shown }/255 depois de limitar); o motor geral leva { $f32 } ns (f32) e { $f64 } ns (f64) por vértice, o especializado { $specialised } ns.
+cost-intro = Cada sombreamento em cinco tesselações do objeto atual, cronometrado e comparado com uma referência: Phong por pixel em f64 numa malha muito fina. Também Phong em f32 na própria malha da referência (o f64 muda algo visível?) e as aproximações mais usadas.
+cost-run = Rodar o estudo
+cancel = Cancelar
+cost-about = { $about } ({ $size }x{ $size } px, tempos medidos com a aplicação rodando)
+cost-table = Tabela
+heat-map-computing = Mapa de calor do erro: calculando a referência...
+heat-map-caption = Erro em relação à referência f64: média { $mean }/255, máximo { $max }/255, { $share } % dos pixels > 1/255 (branco: { $white }/255)
+cost-failed = O estudo falhou: { $error }
+heat-map-failed = O mapa de calor falhou: { $error }

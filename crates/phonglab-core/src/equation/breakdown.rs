@@ -64,41 +64,21 @@ impl Limit {
     ];
 
     /// What happened and what the engine did, in one sentence.
-    pub fn message(self) -> &'static str {
+    pub fn message(self) -> String {
         match self {
-            Limit::LightAtVertex => {
-                "the light is at the vertex: L has no direction, so no diffuse or specular; its ambient stays, attenuated at d = 0"
-            }
-            Limit::LightDirectionZero => {
-                "the directional light's direction is (0, 0, 0): L has no direction, so no diffuse or specular; its ambient stays"
-            }
-            Limit::HalfwayZero => "L is exactly opposite V, so H = L + V = 0 has no direction: no specular",
-            Limit::ZeroNormal => "the normal is zero: no diffuse or specular",
-            Limit::NormalScaled => {
-                "|n|^2 under- or overflows in this precision: n was divided by its largest component before normalising"
-            }
-            Limit::DistanceScaled => {
-                "|VP|^2 under- or overflows in this precision: d was computed by scaling VP by its largest component first"
-            }
-            Limit::AttenuationInfinite => {
-                "k0 + k1 d + k2 d^2 = 0: the light's terms are +infinity where positive and 0 where zero (clamping gives 1 and 0)"
-            }
-            Limit::SpotDirectionZero => {
-                "the spot direction is (0, 0, 0): the cone has no axis, so the spot factor is 0"
-            }
-            Limit::SpotAtVertex => {
-                "the spotlight is at the vertex: there is no direction to test against the cone, so the spot factor is 0"
-            }
-            Limit::VertexAtEye => "the vertex is at the eye (local viewer): V has no direction, so no specular",
-            Limit::VertexAtInfinity => {
-                "the vertex has w = 0 (a point at infinity): L points away from it towards positional lights, and d is infinite"
-            }
-            Limit::SingularModelview => {
-                "the modelview's 3x3 part is singular: normals go through its cofactor matrix, which keeps their direction only"
-            }
-            Limit::InfinitiesCancelled => {
-                "an infinite term of one sign met one of the other sign: the sum is undefined and shown as 0"
-            }
+            Limit::LightAtVertex => crate::t!("limit-light-at-vertex"),
+            Limit::LightDirectionZero => crate::t!("limit-light-direction-zero"),
+            Limit::HalfwayZero => crate::t!("limit-halfway-zero"),
+            Limit::ZeroNormal => crate::t!("limit-zero-normal"),
+            Limit::NormalScaled => crate::t!("limit-normal-scaled"),
+            Limit::DistanceScaled => crate::t!("limit-distance-scaled"),
+            Limit::AttenuationInfinite => crate::t!("limit-attenuation-infinite"),
+            Limit::SpotDirectionZero => crate::t!("limit-spot-direction-zero"),
+            Limit::SpotAtVertex => crate::t!("limit-spot-at-vertex"),
+            Limit::VertexAtEye => crate::t!("limit-vertex-at-eye"),
+            Limit::VertexAtInfinity => crate::t!("limit-vertex-at-infinity"),
+            Limit::SingularModelview => crate::t!("limit-singular-modelview"),
+            Limit::InfinitiesCancelled => crate::t!("limit-infinities-cancelled"),
         }
     }
 
@@ -124,7 +104,7 @@ impl Limit {
 
 impl fmt::Display for Limit {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.message())
+        f.write_str(&self.message())
     }
 }
 

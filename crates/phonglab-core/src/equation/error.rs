@@ -6,7 +6,7 @@ use thiserror::Error;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SceneError {
     /// A parameter OpenGL refuses with `GL_INVALID_VALUE`, or the app refuses as meaningless.
-    #[error("{field} = {value} is out of range: allowed {allowed}")]
+    #[error("{}", crate::t!("error-out-of-range", field = field, value = crate::locale::decimal(&value.to_string()), allowed = allowed_in_words(allowed)))]
     OutOfRange {
         /// Where, e.g. `lights[0].spot_cutoff`.
         field: String,
@@ -16,7 +16,7 @@ pub enum SceneError {
         allowed: &'static str,
     },
     /// NaN or an infinity where a finite number is needed.
-    #[error("{field} must be a finite number, not {value}")]
+    #[error("{}", crate::t!("error-not-finite", field = field, value = value.to_string()))]
     NotFinite {
         /// Where, e.g. `material.diffuse[1]`.
         field: String,
@@ -24,7 +24,7 @@ pub enum SceneError {
         value: f64,
     },
     /// More lights than OpenGL has.
-    #[error("{count} lights: OpenGL has at most {max}")]
+    #[error("{}", crate::t!("error-too-many-lights", count = *count, max = max.to_string()))]
     TooManyLights {
         /// How many were given.
         count: usize,
@@ -32,17 +32,13 @@ pub enum SceneError {
         max: usize,
     },
     /// A document whose scene's view matrix is not the one its camera description gives.
-    #[error(
-        "the scene's view matrix is not the one its camera gives ({camera}): set the camera, or give the matrix as a typed camera"
-    )]
+    #[error("{}", crate::t!("error-camera-mismatch", camera = *camera))]
     CameraMismatch {
         /// The camera's kind, e.g. "lookAt".
         camera: &'static str,
     },
     /// All three attenuation factors zero: the light would be infinitely bright.
-    #[error(
-        "{field}: constant, linear and quadratic attenuation are all 0, so the light would be infinitely bright; make at least one positive"
-    )]
+    #[error("{}", crate::t!("error-zero-attenuation", field = field))]
     ZeroAttenuation {
         /// Where, e.g. `lights[0].attenuation`.
         field: String,
@@ -56,6 +52,19 @@ pub enum SceneError {
         /// What is wrong, e.g. `line 12: vertex index 40 is out of range (there are 8)`.
         message: String,
     },
+}
+
+/// An allowed range as the current language says it: the ranges in words translated, the
+/// numeric ones in its decimal mark.
+fn allowed_in_words(allowed: &str) -> String {
+    match allowed {
+        "[0, 90], or 180 for no spotlight" => crate::t!("allowed-spot-cutoff"),
+        crate::validate::FLOAT_RANGE => crate::t!("allowed-float"),
+        "1, 2, 3, 4 or 5" => crate::t!("allowed-mview"),
+        "an eye away from the centre, with up not along the view direction" => crate::t!("allowed-look-at"),
+        "at least 1 pixel" => crate::t!("allowed-pixel"),
+        numeric => crate::locale::decimal(numeric),
+    }
 }
 
 impl SceneError {
