@@ -44,6 +44,44 @@ fn parse_decimal(s: &str) -> Result<phonglab_core::locale::DecimalMark, String> 
 }
 
 impl Cli {
+    /// Parses the command line with its help in the language asked for (`--lang`, before
+    /// parsing, or the system's): the commands' and the language options' descriptions
+    /// come from the catalogue; clap's own words ("Usage", "Options") stay English.
+    pub fn parse_localised() -> Cli {
+        use clap::{CommandFactory, FromArgMatches};
+        let args: Vec<String> = std::env::args().collect();
+        let asked = args
+            .iter()
+            .enumerate()
+            .find_map(|(i, a)| match a.strip_prefix("--lang=") {
+                Some(v) => Some(v.to_string()),
+                None => (a == "--lang").then(|| args.get(i + 1).cloned()).flatten(),
+            })
+            .and_then(|v| phonglab_core::locale::Lang::parse(&v));
+        let lang = asked.unwrap_or_else(phonglab_core::locale::Lang::from_env);
+        phonglab_core::locale::set_default(phonglab_core::locale::Locale::of(lang));
+        use phonglab_core::t;
+        let mut cmd = Cli::command()
+            .about(t!("cli-about"))
+            .mut_arg("lang", |a| a.help(t!("cli-lang")))
+            .mut_arg("decimal", |a| a.help(t!("cli-decimal")));
+        for (name, id) in [
+            ("eval", "cli-eval"),
+            ("explain", "cli-explain"),
+            ("render", "cli-render"),
+            ("exercise", "cli-exercise"),
+            ("shader", "cli-shader"),
+            ("case", "cli-case"),
+            ("cost", "cli-cost"),
+            ("bench", "cli-bench"),
+            ("screenshot", "cli-screenshot"),
+        ] {
+            cmd = cmd.mut_subcommand(name, |c| c.about(phonglab_core::locale::tr(id)));
+        }
+        let matches = cmd.get_matches();
+        Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit())
+    }
+
     /// The locale the command line asks for: `--lang` over the system's, `--decimal` over
     /// the language's own mark.
     pub fn locale(&self) -> phonglab_core::locale::Locale {

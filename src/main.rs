@@ -2,14 +2,13 @@
 
 use std::process::ExitCode;
 
-use clap::Parser;
 use phonglab::app::gpu_view::RendererChoice;
 use phonglab::cli::{self, RendererArg};
 
 fn main() -> ExitCode {
     // eframe's and wgpu's warnings reach stderr (RUST_LOG=info or debug for more).
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
-    let args = cli::Cli::parse();
+    let args = cli::Cli::parse_localised();
     phonglab_core::locale::set_default(args.locale());
     match args.command {
         Some(command) => cli::run(command),

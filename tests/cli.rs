@@ -4,8 +4,46 @@ use std::io::Write;
 use std::path::Path;
 use std::process::{Command, Output};
 
+/// Runs the binary in English whatever the machine's locale (tests of the other languages
+/// set theirs).
 fn phonglab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_phonglab")).args(args).output().expect("the binary runs")
+    Command::new(env!("CARGO_BIN_EXE_phonglab"))
+        .env_remove("LC_MESSAGES")
+        .env_remove("LANG")
+        .env("LC_ALL", "C.UTF-8")
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+#[test]
+fn explain_speaks_the_systems_language_or_the_one_asked_for() {
+    let run = |lang: &str, args: &[&str]| {
+        let o = Command::new(env!("CARGO_BIN_EXE_phonglab"))
+            .env_remove("LC_ALL")
+            .env_remove("LC_MESSAGES")
+            .env("LANG", lang)
+            .args(args)
+            .output()
+            .unwrap();
+        stdout(&o)
+    };
+    let pt = run("pt_PT.UTF-8", &["explain", "--worksheet", "5"]);
+    assert!(pt.starts_with("Cálculo passo a passo: a ficha, mview5\nface da frente, 1 luz, f64"), "{pt}");
+    assert!(
+        pt.contains(" 9. Componente difusa") && pt.contains("Idif = [0,09942795 0,05965677 0,025266397 0]"),
+        "{pt}"
+    );
+    let br = run("pt_BR.UTF-8", &["explain", "--worksheet", "5"]);
+    assert!(br.contains("Ficha de exercícios") && br.contains("I = [0,059587089"), "{br}");
+    // --lang and --decimal win over the system's.
+    let en = run("pt_PT.UTF-8", &["--lang", "en", "explain", "--worksheet", "5"]);
+    assert!(en.contains("Diffuse term") && en.contains("I = [0.059587089"), "{en}");
+    let point = run("pt_PT.UTF-8", &["explain", "--worksheet", "5", "--decimal", "point"]);
+    assert!(point.contains("Componente difusa") && point.contains("I = [0.059587089"), "{point}");
+    // The help, where clap allows.
+    let help = run("pt_PT.UTF-8", &["--help"]);
+    assert!(help.contains("Imprimir o cálculo da cor de um vértice"), "{help}");
 }
 
 fn stdout(o: &Output) -> String {

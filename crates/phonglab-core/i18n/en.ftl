@@ -549,3 +549,18 @@ heat-map-computing = Error heat map: computing the reference...
 heat-map-caption = Error against the f64 reference: mean { $mean }/255, max { $max }/255, { $share } % of pixels > 1/255 (white: { $white }/255)
 cost-failed = The study failed: { $error }
 heat-map-failed = The heat map failed: { $error }
+
+## cli
+
+cli-about = An explorer for OpenGL's fixed-function vertex lighting and Gouraud/Phong/Flat shading
+cli-lang = The language of what phonglab says: en, pt-PT or pt-BR (default: the system's, from LC_ALL, LC_MESSAGES or LANG). JSON, CSV and scene files keep English keys
+cli-decimal = How numbers meant for people are written: point (0.5) or comma (0,5); default: the language's (a comma in Portuguese). Typed numbers are read with either
+cli-eval = Evaluate glref cases (JSON) and print the lit colours as JSON
+cli-explain = Print the worked calculation of a vertex, step by step, in the worksheet's order
+cli-render = Render the shaded view (sphere, teapot or cylinder) to a PNG
+cli-exercise = Write exercise sheets in the worksheet's style, with scene files and answer keys
+cli-shader = Print the shader (GLSL 3.30 or WGSL) that draws a scene's shaded view: only the stages it needs
+cli-case = Write scene files as glref cases (JSON), to check them against a real OpenGL
+cli-cost = What accuracy costs: each shading and tessellation, f32 against f64 and the usual approximations, timed and compared with a per-pixel f64 reference; writes cost.csv and cost.png
+cli-bench = Measure: the renderer, the lighting
+cli-screenshot = Draw the whole window headless (no display, no GPU) to a PNG: for slides, handouts and the tests

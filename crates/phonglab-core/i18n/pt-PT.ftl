@@ -549,3 +549,18 @@ heat-map-computing = Mapa de calor do erro: a calcular a referência...
 heat-map-caption = Erro face à referência f64: média { $mean }/255, máximo { $max }/255, { $share } % dos píxeis > 1/255 (branco: { $white }/255)
 cost-failed = O estudo falhou: { $error }
 heat-map-failed = O mapa de calor falhou: { $error }
+
+## cli
+
+cli-about = Um explorador da iluminação por vértice da função fixa do OpenGL e dos sombreamentos de Gouraud, Phong e Flat
+cli-lang = A língua do que o phonglab diz: en, pt-PT ou pt-BR (por omissão, a do sistema: LC_ALL, LC_MESSAGES ou LANG). JSON, CSV e ficheiros de cena mantêm as chaves em inglês
+cli-decimal = Como se escrevem os números para pessoas: point (0.5) ou comma (0,5); por omissão, o da língua (vírgula em português). Os números escritos leem-se com qualquer um
+cli-eval = Calcular casos glref (JSON) e imprimir as cores iluminadas em JSON
+cli-explain = Imprimir o cálculo da cor de um vértice, passo a passo, pela ordem da ficha
+cli-render = Desenhar a vista sombreada (esfera, bule ou cilindro) num PNG
+cli-exercise = Escrever fichas de exercícios ao estilo da ficha, com ficheiros de cena e chaves de respostas
+cli-shader = Imprimir o shader (GLSL 3.30 ou WGSL) que desenha a vista sombreada de uma cena: só as etapas de que precisa
+cli-case = Escrever ficheiros de cena como casos glref (JSON), para os comparar com um OpenGL real
+cli-cost = O custo da exatidão: cada sombreamento e tesselação, f32 contra f64 e as aproximações habituais, cronometrados e comparados com uma referência f64 por píxel; escreve cost.csv e cost.png
+cli-bench = Medir: o desenho, a iluminação
+cli-screenshot = Desenhar a janela inteira sem ecrã nem GPU num PNG: para diapositivos, fichas e testes
