@@ -564,3 +564,48 @@ cli-case = Write scene files as glref cases (JSON), to check them against a real
 cli-cost = What accuracy costs: each shading and tessellation, f32 against f64 and the usual approximations, timed and compared with a per-pixel f64 reference; writes cost.csv and cost.png
 cli-bench = Measure: the renderer, the lighting
 cli-screenshot = Draw the whole window headless (no display, no GPU) to a PNG: for slides, handouts and the tests
+
+## plan
+
+effect-normalisation = normalisation
+effect-position = eye-space position P
+effect-view-vector = view vector V
+effect-scene-colour = emission and scene ambient
+effect-back-side = back side
+effect-light-vector = light vector L and distance d
+effect-attenuation = attenuation
+effect-spotlight = spotlight
+effect-halfway = halfway vector H
+effect-reflection = reflection vector R
+effect-specular-power = specular power
+why-normalise-off = GL_NORMALIZE and GL_RESCALE_NORMAL are off
+why-rescale-one = GL_RESCALE_NORMAL is on but its factor is exactly 1 (the modelview preserves lengths)
+why-normalize-on = GL_NORMALIZE is on
+why-rescale-on = GL_RESCALE_NORMAL is on
+why-renormalised = interpolated normals are renormalised
+why-position-translation = P = p + t; the modelview is a translation (its 3x3 part is the identity), so the rows' products and the division by w are skipped: three additions
+why-position-affine = P = M p; the modelview is affine (last row 0 0 0 1), so w = 1 and the division by w is skipped
+why-position-projective = P = M p / w: the modelview is projective, w varies per vertex
+why-position-eye = the vertices arrive in eye space: nothing to transform
+why-position-unread = no positional light and V is one constant (infinite viewer): nothing reads P
+why-v-local = local viewer: V = normalize(-P) per vertex, in f64; a chunk of { $chunk } vertices whose coordinates all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)
+why-v-worksheet = the worksheet's V = normalize(obs - P), obs = P (1, 1, 0, 1): (0, 0, -sign(P.z)) per vertex
+why-v-infinite = infinite viewer: V = (0, 0, 1) for every vertex
+why-scene-added = added as one constant per side
+why-scene-zero = both are zero (or the rule set leaves them out): nothing is added
+why-two-sided = two-sided lighting: -n and the back material
+why-one-sided = one-sided lighting: the back colour is the front's
+why-l-positional = positional light: per vertex, in f64; a chunk of { $chunk } vertices whose VP components all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)
+why-l-directional = the light is directional: L is one constant, there is no d
+why-attenuation-on = 1/(k0 + k1 d + k2 d^2) per vertex
+why-attenuation-directional = the light is directional
+why-attenuation-one = factors (1, 0, 0) give 1
+why-spot-on = cone test and exponent per vertex
+why-spot-directional = the light is directional: its spot factor is one constant, computed once
+why-spot-none = cutoff 180: not a spotlight
+why-per-vertex = per vertex
+why-h-constant = directional light and infinite viewer: H = normalize(L + V) is one constant
+why-specular-zero = light specular x material specular is zero
+why-power-on = max(cos, 0)^shininess per vertex
+why-power-none = no specular term
+why-power-zero = shininess 0: max(cos, 0)^0 = 1

@@ -564,3 +564,48 @@ cli-case = Escrever ficheiros de cena como casos glref (JSON), para os comparar 
 cli-cost = O custo da exatidão: cada sombreamento e tesselação, f32 contra f64 e as aproximações habituais, cronometrados e comparados com uma referência f64 por píxel; escreve cost.csv e cost.png
 cli-bench = Medir: o desenho, a iluminação
 cli-screenshot = Desenhar a janela inteira sem ecrã nem GPU num PNG: para diapositivos, fichas e testes
+
+## plan
+
+effect-normalisation = normalização
+effect-position = posição P no espaço do olho
+effect-view-vector = vetor do observador V
+effect-scene-colour = emissão e ambiente da cena
+effect-back-side = face de trás
+effect-light-vector = vetor da luz L e distância d
+effect-attenuation = atenuação
+effect-spotlight = foco
+effect-halfway = vetor halfway H
+effect-reflection = vetor refletido R
+effect-specular-power = potência especular
+why-normalise-off = GL_NORMALIZE e GL_RESCALE_NORMAL estão desligados
+why-rescale-one = GL_RESCALE_NORMAL está ligado mas o seu fator é exatamente 1 (a modelview preserva comprimentos)
+why-normalize-on = GL_NORMALIZE está ligado
+why-rescale-on = GL_RESCALE_NORMAL está ligado
+why-renormalised = as normais interpoladas são renormalizadas
+why-position-translation = P = p + t; a modelview é uma translação (a sua parte 3x3 é a identidade), por isso os produtos das linhas e a divisão por w são saltados: três somas
+why-position-affine = P = M p; a modelview é afim (última linha 0 0 0 1), por isso w = 1 e a divisão por w é saltada
+why-position-projective = P = M p / w: a modelview é projetiva, w varia de vértice para vértice
+why-position-eye = os vértices chegam no espaço do olho: nada a transformar
+why-position-unread = nenhuma luz pontual e V é uma constante (observador no infinito): nada lê P
+why-v-local = observador local: V = normalize(-P) por vértice, em f64; um bloco de { $chunk } vértices cujas coordenadas estão todas entre 2^-400 e 2^400 salta a mudança de escala por potências de dois antes de elevar ao quadrado (aí não muda nenhum bit)
+why-v-worksheet = o V da ficha = normalize(obs - P), obs = P (1, 1, 0, 1): (0, 0, -sinal(P.z)) por vértice
+why-v-infinite = observador no infinito: V = (0, 0, 1) para todos os vértices
+why-scene-added = somado como uma constante por face
+why-scene-zero = ambos são zero (ou as regras deixam-nos de fora): nada é somado
+why-two-sided = iluminação das duas faces: -n e o material do verso
+why-one-sided = iluminação de uma face: a cor de trás é a da frente
+why-l-positional = luz pontual: por vértice, em f64; um bloco de { $chunk } vértices cujas componentes de VP estão todas entre 2^-400 e 2^400 salta a mudança de escala por potências de dois antes de elevar ao quadrado (aí não muda nenhum bit)
+why-l-directional = a luz é direcional: L é uma constante, não há d
+why-attenuation-on = 1/(k0 + k1 d + k2 d^2) por vértice
+why-attenuation-directional = a luz é direcional
+why-attenuation-one = os fatores (1, 0, 0) dão 1
+why-spot-on = teste do cone e expoente por vértice
+why-spot-directional = a luz é direcional: o fator do foco é uma constante, calculada uma vez
+why-spot-none = cutoff 180: não é um foco
+why-per-vertex = por vértice
+why-h-constant = luz direcional e observador no infinito: H = normalize(L + V) é uma constante
+why-specular-zero = especular da luz x especular do material é zero
+why-power-on = max(cos, 0)^brilho por vértice
+why-power-none = sem componente especular
+why-power-zero = brilho 0: max(cos, 0)^0 = 1

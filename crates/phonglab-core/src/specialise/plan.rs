@@ -333,21 +333,21 @@ pub enum EffectKind {
 
 impl EffectKind {
     /// The effect's name, e.g. "attenuation".
-    pub fn name(self, specular: SpecularModel) -> &'static str {
+    pub fn name(self, specular: SpecularModel) -> String {
         match self {
-            EffectKind::Normalisation => "normalisation",
-            EffectKind::Position => "eye-space position P",
-            EffectKind::ViewVector => "view vector V",
-            EffectKind::SceneColor => "emission and scene ambient",
-            EffectKind::BackSide => "back side",
-            EffectKind::LightVector => "light vector L and distance d",
-            EffectKind::Attenuation => "attenuation",
-            EffectKind::Spotlight => "spotlight",
+            EffectKind::Normalisation => crate::t!("effect-normalisation"),
+            EffectKind::Position => crate::t!("effect-position"),
+            EffectKind::ViewVector => crate::t!("effect-view-vector"),
+            EffectKind::SceneColor => crate::t!("effect-scene-colour"),
+            EffectKind::BackSide => crate::t!("effect-back-side"),
+            EffectKind::LightVector => crate::t!("effect-light-vector"),
+            EffectKind::Attenuation => crate::t!("effect-attenuation"),
+            EffectKind::Spotlight => crate::t!("effect-spotlight"),
             EffectKind::HalfwayOrReflection => match specular {
-                SpecularModel::BlinnPhong => "halfway vector H",
-                SpecularModel::Phong => "reflection vector R",
+                SpecularModel::BlinnPhong => crate::t!("effect-halfway"),
+                SpecularModel::Phong => crate::t!("effect-reflection"),
             },
-            EffectKind::SpecularPower => "specular power",
+            EffectKind::SpecularPower => crate::t!("effect-specular-power"),
         }
     }
 
@@ -380,8 +380,8 @@ pub struct Effect {
     pub kind: EffectKind,
     /// The light it belongs to (`None`: the vertex).
     pub light: Option<usize>,
-    /// What, e.g. "attenuation".
-    pub name: &'static str,
+    /// What, e.g. "attenuation" (in the current language).
+    pub name: String,
     /// Computed (true) or skipped (false).
     pub on: bool,
     /// Why, e.g. "the light is directional".
@@ -424,12 +424,12 @@ impl Key {
     /// Every effect with whether `program` runs it and why.
     pub fn effects_of(&self, program: &Program) -> Vec<Effect> {
         let sp = self.rules.specular;
-        let e = |kind: EffectKind, light, on: bool, why: &str| Effect {
+        let e = |kind: EffectKind, light, on: bool, why: String| Effect {
             kind,
             light,
             name: kind.name(sp),
             on,
-            why: why.to_string(),
+            why,
             specular: sp,
         };
         let has = |s: Stage| program.has(s);
@@ -440,121 +440,79 @@ impl Key {
                 None,
                 normalised,
                 match (self.normals, normalised) {
-                    (NormalMode::AsIs, false) => "GL_NORMALIZE and GL_RESCALE_NORMAL are off",
+                    (NormalMode::AsIs, false) => crate::t!("why-normalise-off"),
                     (NormalMode::Rescale, false) => {
-                        "GL_RESCALE_NORMAL is on but its factor is exactly 1 (the modelview preserves lengths)"
+                        crate::t!("why-rescale-one")
                     }
-                    (NormalMode::Normalize, _) => "GL_NORMALIZE is on",
-                    (NormalMode::Rescale, true) => "GL_RESCALE_NORMAL is on",
-                    (NormalMode::AsIs, true) => "interpolated normals are renormalised",
+                    (NormalMode::Normalize, _) => crate::t!("why-normalize-on"),
+                    (NormalMode::Rescale, true) => crate::t!("why-rescale-on"),
+                    (NormalMode::AsIs, true) => crate::t!("why-renormalised"),
                 },
             ),
             match (has(Stage::TransformPosition), has(Stage::TransformPositionProjective), self.needs_positions()) {
-                _ if has(Stage::TranslatePosition) => e(
-                    EffectKind::Position,
-                    None,
-                    true,
-                    "P = p + t; the modelview is a translation (its 3x3 part is the identity), so the rows' products and the division by w are skipped: three additions",
-                ),
-                (true, _, _) => e(
-                    EffectKind::Position,
-                    None,
-                    true,
-                    "P = M p; the modelview is affine (last row 0 0 0 1), so w = 1 and the division by w is skipped",
-                ),
-                (_, true, _) => {
-                    e(EffectKind::Position, None, true, "P = M p / w: the modelview is projective, w varies per vertex")
+                _ if has(Stage::TranslatePosition) => {
+                    e(EffectKind::Position, None, true, crate::t!("why-position-translation"))
                 }
-                (false, false, true) => {
-                    e(EffectKind::Position, None, false, "the vertices arrive in eye space: nothing to transform")
-                }
-                (false, false, false) => e(
-                    EffectKind::Position,
-                    None,
-                    false,
-                    "no positional light and V is one constant (infinite viewer): nothing reads P",
-                ),
+                (true, _, _) => e(EffectKind::Position, None, true, crate::t!("why-position-affine")),
+                (_, true, _) => e(EffectKind::Position, None, true, crate::t!("why-position-projective")),
+                (false, false, true) => e(EffectKind::Position, None, false, crate::t!("why-position-eye")),
+                (false, false, false) => e(EffectKind::Position, None, false, crate::t!("why-position-unread")),
             },
             if has(Stage::ViewVector) {
                 e(
                     EffectKind::ViewVector,
                     None,
                     true,
-                    &if self.local_viewer {
-                        format!(
-                            "local viewer: V = normalize(-P) per vertex, in f64; a chunk of {CHUNK} vertices whose coordinates all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)"
-                        )
+                    if self.local_viewer {
+                        crate::t!("why-v-local", chunk = CHUNK)
                     } else {
-                        "the worksheet's V = normalize(obs - P), obs = P (1, 1, 0, 1): (0, 0, -sign(P.z)) per vertex"
-                            .into()
+                        crate::t!("why-v-worksheet")
                     },
                 )
             } else {
-                e(EffectKind::ViewVector, None, false, "infinite viewer: V = (0, 0, 1) for every vertex")
+                e(EffectKind::ViewVector, None, false, crate::t!("why-v-infinite"))
             },
             if has(Stage::SceneColor) {
-                e(EffectKind::SceneColor, None, true, "added as one constant per side")
+                e(EffectKind::SceneColor, None, true, crate::t!("why-scene-added"))
             } else {
-                e(
-                    EffectKind::SceneColor,
-                    None,
-                    false,
-                    "both are zero (or the rule set leaves them out): nothing is added",
-                )
+                e(EffectKind::SceneColor, None, false, crate::t!("why-scene-zero"))
             },
             if program.stages.iter().any(|s| matches!(s, Stage::Sum(_, 1))) {
-                e(EffectKind::BackSide, None, true, "two-sided lighting: -n and the back material")
+                e(EffectKind::BackSide, None, true, crate::t!("why-two-sided"))
             } else {
-                e(EffectKind::BackSide, None, false, "one-sided lighting: the back colour is the front's")
+                e(EffectKind::BackSide, None, false, crate::t!("why-one-sided"))
             },
         ];
         for (i, l) in self.lights.iter().enumerate() {
             let li = Some(i);
             out.push(if has(Stage::LightVector(i)) {
-                e(
-                    EffectKind::LightVector,
-                    li,
-                    true,
-                    &format!(
-                        "positional light: per vertex, in f64; a chunk of {CHUNK} vertices whose VP components all lie within 2^-400..2^400 skips the power-of-two scaling before squaring (there it changes no bit)"
-                    ),
-                )
+                e(EffectKind::LightVector, li, true, crate::t!("why-l-positional", chunk = CHUNK))
             } else {
-                e(EffectKind::LightVector, li, false, "the light is directional: L is one constant, there is no d")
+                e(EffectKind::LightVector, li, false, crate::t!("why-l-directional"))
             });
             out.push(match (has(Stage::Attenuate(i)), l.positional) {
-                (true, _) => e(EffectKind::Attenuation, li, true, "1/(k0 + k1 d + k2 d^2) per vertex"),
-                (false, false) => e(EffectKind::Attenuation, li, false, "the light is directional"),
-                (false, true) => e(EffectKind::Attenuation, li, false, "factors (1, 0, 0) give 1"),
+                (true, _) => e(EffectKind::Attenuation, li, true, crate::t!("why-attenuation-on")),
+                (false, false) => e(EffectKind::Attenuation, li, false, crate::t!("why-attenuation-directional")),
+                (false, true) => e(EffectKind::Attenuation, li, false, crate::t!("why-attenuation-one")),
             });
             out.push(match (has(Stage::SpotCone(i)), l.spot) {
-                (true, _) => e(EffectKind::Spotlight, li, true, "cone test and exponent per vertex"),
-                (false, true) => e(
-                    EffectKind::Spotlight,
-                    li,
-                    false,
-                    "the light is directional: its spot factor is one constant, computed once",
-                ),
-                (false, false) => e(EffectKind::Spotlight, li, false, "cutoff 180: not a spotlight"),
+                (true, _) => e(EffectKind::Spotlight, li, true, crate::t!("why-spot-on")),
+                (false, true) => e(EffectKind::Spotlight, li, false, crate::t!("why-spot-directional")),
+                (false, false) => e(EffectKind::Spotlight, li, false, crate::t!("why-spot-none")),
             });
             out.push(if has(Stage::Halfway(i)) || has(Stage::Reflect(i)) {
-                e(EffectKind::HalfwayOrReflection, li, true, "per vertex")
+                e(EffectKind::HalfwayOrReflection, li, true, crate::t!("why-per-vertex"))
             } else if has(Stage::HalfwayConstant(i)) {
-                e(
-                    EffectKind::HalfwayOrReflection,
-                    li,
-                    false,
-                    "directional light and infinite viewer: H = normalize(L + V) is one constant",
-                )
+                e(EffectKind::HalfwayOrReflection, li, false, crate::t!("why-h-constant"))
             } else {
-                e(EffectKind::HalfwayOrReflection, li, false, "light specular x material specular is zero")
+                e(EffectKind::HalfwayOrReflection, li, false, crate::t!("why-specular-zero"))
             });
             out.push(if program.stages.iter().any(|s| matches!(s, Stage::Power(j, _) if *j == i)) {
-                e(EffectKind::SpecularPower, li, true, "max(cos, 0)^shininess per vertex")
+                e(EffectKind::SpecularPower, li, true, crate::t!("why-power-on"))
             } else if !l.specular {
-                e(EffectKind::SpecularPower, li, false, "no specular term")
+                e(EffectKind::SpecularPower, li, false, crate::t!("why-power-none"))
             } else {
-                e(EffectKind::SpecularPower, li, false, "shininess 0: max(cos, 0)^0 = 1")
+                e(EffectKind::SpecularPower, li, false, crate::t!("why-power-zero"))
             });
         }
         out
