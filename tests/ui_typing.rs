@@ -339,3 +339,26 @@ fn presenting_in_portuguese_no_reveal_button_is_clipped_and_no_row_grows() {
     // Every answer field one width, its Reveal beside it.
     assert!(fields.iter().all(|f| (f.width() - fields[0].width()).abs() < 0.5), "{fields:?}");
 }
+
+#[test]
+fn a_slow_drag_still_moves_a_large_value() {
+    let mut h = harness();
+    let mut d = h.state().doc.clone();
+    d.scene.vertex.position.x = 123456.0;
+    assert!(h.state_mut().apply(d));
+    h.run_steps(2);
+    h.get_by_role_and_label(Role::SpinButton, "Vertex x").scroll_to_me();
+    h.run_steps(30);
+    let at = h.get_by_role_and_label(Role::SpinButton, "Vertex x").rect().center();
+    // Ten moves of 0.3 points: each less than the last digit shown (1), together 3.
+    h.drag_at(at);
+    h.run_steps(1);
+    for k in 1..=10 {
+        h.hover_at(at + egui::vec2(0.3 * k as f32, 0.0));
+        h.run_steps(1);
+    }
+    h.drop_at(at + egui::vec2(3.0, 0.0));
+    h.run_steps(1);
+    let x = h.state().doc.scene.vertex.position.x;
+    assert!((x - 123459.0).abs() <= 1.0, "{x}");
+}

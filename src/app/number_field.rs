@@ -234,10 +234,15 @@ impl<'a> NumberField<'a> {
             if response.clicked() {
                 ui.memory_mut(|m| m.request_focus(id));
             } else if response.dragged() {
+                // The drag's exact position is kept apart from the value, which is rounded
+                // to what the field shows: a slow drag still moves the last digit.
+                let precise_id = id.with("drag");
+                let start = if response.drag_started() { None } else { ui.data(|d| d.get_temp::<f64>(precise_id)) };
                 let delta = response.drag_delta();
-                let step = f64::from(delta.x - delta.y) * speed;
-                let moved = dragged(*value + step, accepts);
-                if step != 0.0 && moved != *value {
+                let precise = start.unwrap_or(*value) + f64::from(delta.x - delta.y) * speed;
+                ui.data_mut(|d| d.insert_temp(precise_id, precise));
+                let moved = dragged(precise, accepts);
+                if moved != *value {
                     *value = moved;
                     changed = true;
                 }
