@@ -203,7 +203,7 @@ fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
         }
     }
     let m = &s.material;
-    b.push(Heading(t!("sheet-material", name = &ex.material)));
+    b.push(Heading(t!("sheet-material", name = phonglab_core::materials::display_name(&ex.material))));
     b.push(vector("matAmb", colour(m.ambient)));
     b.push(vector("matDif", colour(m.diffuse)));
     b.push(vector("matSpec", colour(m.specular)));

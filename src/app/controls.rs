@@ -191,11 +191,12 @@ fn material_ui(ui: &mut Ui, m: &mut Material, back: bool) {
         let side = if back { "back" } else { "material" };
         phonglab_core::locale::tr(&format!("{side}-{field}"))
     };
-    let custom = t!("material-custom");
-    let current = materials::name_of(m).unwrap_or(&custom);
-    ComboBox::from_label(label("preset")).selected_text(current).show_ui(ui, |ui| {
+    let current = materials::name_of(m);
+    let shown = current.map_or_else(|| t!("material-custom"), materials::display_name);
+    ComboBox::from_label(label("preset")).selected_text(shown).show_ui(ui, |ui| {
         for named in materials::classic() {
-            if ui.selectable_label(current == named.name, &named.name).clicked() {
+            let name = materials::display_name(&named.name);
+            if ui.selectable_label(current == Some(named.name.as_str()), name).clicked() {
                 *m = named.material.clone();
             }
         }

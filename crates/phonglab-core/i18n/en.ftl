@@ -609,3 +609,30 @@ why-specular-zero = light specular x material specular is zero
 why-power-on = max(cos, 0)^shininess per vertex
 why-power-none = no specular term
 why-power-zero = shininess 0: max(cos, 0)^0 = 1
+
+## materials
+
+material-name-emerald = emerald
+material-name-jade = jade
+material-name-obsidian = obsidian
+material-name-pearl = pearl
+material-name-ruby = ruby
+material-name-turquoise = turquoise
+material-name-brass = brass
+material-name-bronze = bronze
+material-name-chrome = chrome
+material-name-copper = copper
+material-name-gold = gold
+material-name-silver = silver
+material-name-black-plastic = black plastic
+material-name-cyan-plastic = cyan plastic
+material-name-green-plastic = green plastic
+material-name-red-plastic = red plastic
+material-name-white-plastic = white plastic
+material-name-yellow-plastic = yellow plastic
+material-name-black-rubber = black rubber
+material-name-cyan-rubber = cyan rubber
+material-name-green-rubber = green rubber
+material-name-red-rubber = red rubber
+material-name-white-rubber = white rubber
+material-name-yellow-rubber = yellow rubber

@@ -609,3 +609,30 @@ why-specular-zero = especular da luz x especular do material é zero
 why-power-on = max(cos, 0)^brilho por vértice
 why-power-none = sem componente especular
 why-power-zero = brilho 0: max(cos, 0)^0 = 1
+
+## materials
+
+material-name-emerald = esmeralda
+material-name-jade = jade
+material-name-obsidian = obsidiana
+material-name-pearl = pérola
+material-name-ruby = rubi
+material-name-turquoise = turquesa
+material-name-brass = latão
+material-name-bronze = bronze
+material-name-chrome = cromado
+material-name-copper = cobre
+material-name-gold = ouro
+material-name-silver = prata
+material-name-black-plastic = plástico preto
+material-name-cyan-plastic = plástico ciano
+material-name-green-plastic = plástico verde
+material-name-red-plastic = plástico vermelho
+material-name-white-plastic = plástico branco
+material-name-yellow-plastic = plástico amarelo
+material-name-black-rubber = borracha preta
+material-name-cyan-rubber = borracha ciano
+material-name-green-rubber = borracha verde
+material-name-red-rubber = borracha vermelha
+material-name-white-rubber = borracha branca
+material-name-yellow-rubber = borracha amarela

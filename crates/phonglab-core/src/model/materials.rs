@@ -61,6 +61,17 @@ pub fn by_name(name: &str) -> Option<&'static Material> {
     classic().iter().find(|m| m.name.eq_ignore_ascii_case(name)).map(|m| &m.material)
 }
 
+/// A classic material's name for people, in the current language ("gold" is "ouro" in
+/// Portuguese); the scene files keep the table's own names.
+pub fn display_name(name: &str) -> String {
+    let id = format!("material-name-{}", name.replace('_', "-"));
+    if crate::locale::has_message(crate::locale::current().lang, &id) {
+        crate::locale::tr(&id)
+    } else {
+        name.to_string()
+    }
+}
+
 /// The name of the classic material equal to `m`, if any.
 pub fn name_of(m: &Material) -> Option<&'static str> {
     classic().iter().find(|c| &c.material == m).map(|c| c.name.as_str())

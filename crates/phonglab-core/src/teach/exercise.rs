@@ -431,7 +431,7 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
     let _ = writeln!(o, "- vertexPos = {}", vec4(s.vertex.position));
     let _ = writeln!(o, "- vertexNormal = {}\n", vec4(s.vertex.normal.extend(0.0)));
     let _ = writeln!(o, "## {}\n", crate::t!("sheet-modelview"));
-    let (words, material) = (ex.modelview.as_str(), ex.material.as_str());
+    let (words, material) = (ex.modelview.as_str(), crate::materials::display_name(&ex.material));
     let _ = writeln!(o, "{words}:\n\n```");
     let rows = crate::transform::mat4_rows(&s.eye_from_world);
     for r in rows {
