@@ -505,9 +505,12 @@ pub fn cases_json(paths: &[PathBuf]) -> Result<serde_json::Value> {
         let doc = load_scene_file(p)?;
         if doc.scene.rules != phonglab_core::Rules::OPENGL {
             eprintln!(
-                "phonglab: note: {} uses the {} rules; a case always means OpenGL's",
-                p.display(),
-                doc.scene.rules.set.label()
+                "phonglab: {}",
+                phonglab_core::t!(
+                    "case-rules-note",
+                    path = p.display().to_string(),
+                    rules = doc.scene.rules.set.label()
+                )
             );
         }
         let id = p.file_stem().map_or_else(|| format!("case{}", cases.len()), |s| s.to_string_lossy().into_owned());
@@ -610,16 +613,19 @@ fn render(a: &RenderArgs) -> Result<()> {
     let ms = t.elapsed().as_secs_f64() * 1e3;
     crate::image_io::write_png(&a.output, img.width, img.height, &img.rgba)?;
     eprintln!(
-        "{}: {}x{} px, {} triangles, {:.1} % covered, {} lighting evaluations, {ms:.1} ms",
-        a.output.display(),
-        img.width,
-        img.height,
-        stats.triangles,
-        100.0 * img.coverage(),
-        stats.evaluations
+        "{}",
+        phonglab_core::t!(
+            "render-summary",
+            path = a.output.display().to_string(),
+            size = format!("{}x{}", img.width, img.height),
+            triangles = stats.triangles,
+            covered = phonglab_core::locale::decimal(&format!("{:.1}", 100.0 * img.coverage())),
+            evaluations = stats.evaluations,
+            ms = phonglab_core::locale::decimal(&format!("{ms:.1}"))
+        )
     );
     for note in notes {
-        eprintln!("note: {note}");
+        eprintln!("{}", phonglab_core::t!("note-line", note = note));
     }
     Ok(())
 }

@@ -214,6 +214,6 @@ pub fn run(a: &CostRun) -> Result<()> {
     let (w, h, rgba) = chart_png(&studies, 1.5);
     set.add("cost.png", crate::image_io::encode_png(w, h, &rgba)?);
     crate::atomic_write::write_set(&a.out, &set, belongs_to_a_report)?;
-    eprintln!("wrote {} in {}", set, a.out.display());
+    eprintln!("{}", phonglab_core::t!("cost-wrote", files = set.to_string(), out = a.out.display().to_string()));
     Ok(())
 }

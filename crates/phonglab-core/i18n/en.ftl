@@ -498,6 +498,12 @@ exercises-written =
     *[other] { $count } exercises in { $out } ({ $redraws } draws set aside by the screen)
     }
 
+## cli-out
+
+render-summary = { $path }: { $size } px, { $triangles } triangles, { $covered } % covered, { $evaluations } lighting evaluations, { $ms } ms
+case-rules-note = note: { $path } uses the { $rules } rules; a case always means OpenGL's
+cost-wrote = wrote { $files } in { $out }
+
 ## errors
 
 error-out-of-range = { $field } = { $value } is out of range: allowed { $allowed }

@@ -498,6 +498,12 @@ exercises-written =
     *[other] { $count } exercícios em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
     }
 
+## cli-out
+
+render-summary = { $path }: { $size } px, { $triangles } triângulos, { $covered } % coberto, { $evaluations } cálculos de iluminação, { $ms } ms
+case-rules-note = nota: { $path } usa as regras { $rules }; um caso segue sempre as do OpenGL
+cost-wrote = escrito { $files } em { $out }
+
 ## errors
 
 error-out-of-range = { $field } = { $value } está fora do intervalo: permitido { $allowed }
