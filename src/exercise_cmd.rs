@@ -56,13 +56,18 @@ pub fn answer_key(doc: &Document, file: &str) -> Result<String> {
     Ok(format!("# {}\n\n{}", t!("key-title", name = &doc.name), answer_key_body(doc, file)?))
 }
 
+/// The worked calculation of `doc`'s vertex in f64: the front side, and the back one too
+/// with two-sided lighting. What every key, in Markdown or in the PDF, shows.
+fn explained_sides(doc: &Document) -> Result<Vec<phonglab_core::explain::Explanation>> {
+    let lit = Engine::<f64>::light_scene_vertex(&doc.scene)?;
+    let sides: &[Side] = if doc.scene.light_model.two_sided { &[Side::Front, Side::Back] } else { &[Side::Front] };
+    Ok(sides.iter().map(|&side| explain(&doc.scene, &lit, side)).collect())
+}
+
 /// The answer key without its title.
 fn answer_key_body(doc: &Document, file: &str) -> Result<String> {
-    let lit = Engine::<f64>::light_scene_vertex(&doc.scene)?;
     let mut o = format!("{}\n\n", t!("key-intro", file = file));
-    let sides: &[Side] = if doc.scene.light_model.two_sided { &[Side::Front, Side::Back] } else { &[Side::Front] };
-    for &side in sides {
-        let ex = explain(&doc.scene, &lit, side);
+    for ex in explained_sides(doc)? {
         let _ = writeln!(o, "```\n{}\n{}```\n", t!("worked-calculation-of", name = &doc.name), ex.to_text(8));
     }
     Ok(o)
@@ -164,11 +169,7 @@ fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
     use Block::*;
     let s = &ex.doc.scene;
     let vector = |name: &str, values: Vec<String>| Vector { name: name.into(), values, note: String::new() };
-    let rules = match s.rules.set {
-        phonglab_core::RuleSet::Worksheet => t!("sheet-rules-worksheet"),
-        phonglab_core::RuleSet::OpenGl => t!("sheet-rules-opengl"),
-        phonglab_core::RuleSet::PhongDemo => t!("sheet-rules-demo"),
-    };
+    let rules = phonglab_core::exercise::rules_in_words(s.rules.set);
     let mut b = vec![
         Title(ex.doc.name.clone()),
         WriteOn(vec![t!("sheet-class"), t!("sheet-name"), t!("sheet-date")]),
@@ -236,11 +237,8 @@ fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
 /// them (both sides with two-sided lighting).
 fn key_blocks(doc: &Document, file: &str) -> Result<Vec<Block>> {
     use Block::*;
-    let lit = Engine::<f64>::light_scene_vertex(&doc.scene)?;
     let mut b = vec![Title(t!("key-title", name = &doc.name)), Text(t!("key-intro", file = file).replace('`', ""))];
-    let sides: &[Side] = if doc.scene.light_model.two_sided { &[Side::Front, Side::Back] } else { &[Side::Front] };
-    for &side in sides {
-        let ex = explain(&doc.scene, &lit, side);
+    for ex in explained_sides(doc)? {
         b.push(Heading(ex.heading.clone()));
         for (k, st) in ex.steps.iter().enumerate() {
             let value = match &st.value {

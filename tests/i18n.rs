@@ -9,9 +9,9 @@ use egui_kittest::kittest::{NodeT, Queryable};
 use phonglab::app::{AppState, app_ui};
 use phonglab_core::locale::{Lang, has_message, message_ids, tr_in};
 
-/// The text of every source file.
-fn sources_text() -> String {
-    let mut out = String::new();
+/// The text of every source file of the app and the core.
+fn source_texts() -> Vec<String> {
+    let mut out = Vec::new();
     let mut stack = vec![
         std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/src")),
         std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/crates/phonglab-core/src")),
@@ -22,41 +22,29 @@ fn sources_text() -> String {
             if path.is_dir() {
                 stack.push(path);
             } else if path.extension().is_some_and(|e| e == "rs") {
-                out.push_str(&std::fs::read_to_string(&path).unwrap());
+                out.push(std::fs::read_to_string(&path).unwrap());
             }
         }
     }
     out
 }
 
-/// Every `t!("id"` and `tr("id"` in the sources, and the help table's ids.
-fn ids_in_sources() -> BTreeSet<String> {
+/// Every `t!("id"` and `tr("id"` in `sources`, and the help table's ids.
+fn ids_in_sources(sources: &[String]) -> BTreeSet<String> {
     let mut ids = BTreeSet::new();
-    let mut stack = vec![
-        std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/src")),
-        std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/crates/phonglab-core/src")),
-    ];
-    while let Some(dir) = stack.pop() {
-        for entry in std::fs::read_dir(&dir).unwrap() {
-            let path = entry.unwrap().path();
-            if path.is_dir() {
-                stack.push(path);
-            } else if path.extension().is_some_and(|e| e == "rs") {
-                let text = std::fs::read_to_string(&path).unwrap();
-                for open in ["t!(", "tr("] {
-                    for (at, _) in text.match_indices(open) {
-                        let line_start = text[..at].rfind('\n').map_or(0, |i| i + 1);
-                        if text[line_start..at].trim_start().starts_with("//") {
-                            continue; // documentation
-                        }
-                        let Some(rest) = text[at + open.len()..].trim_start().strip_prefix('"') else { continue };
-                        let id: String = rest.chars().take_while(|c| *c != '"').collect();
-                        let is_id = id.starts_with(|c: char| c.is_ascii_lowercase())
-                            && id.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-');
-                        if is_id {
-                            ids.insert(id);
-                        }
-                    }
+    for text in sources {
+        for open in ["t!(", "tr("] {
+            for (at, _) in text.match_indices(open) {
+                let line_start = text[..at].rfind('\n').map_or(0, |i| i + 1);
+                if text[line_start..at].trim_start().starts_with("//") {
+                    continue; // documentation
+                }
+                let Some(rest) = text[at + open.len()..].trim_start().strip_prefix('"') else { continue };
+                let id: String = rest.chars().take_while(|c| *c != '"').collect();
+                let is_id = id.starts_with(|c: char| c.is_ascii_lowercase())
+                    && id.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-');
+                if is_id {
+                    ids.insert(id);
                 }
             }
         }
@@ -72,7 +60,8 @@ fn ids_in_sources() -> BTreeSet<String> {
 
 #[test]
 fn every_message_the_code_asks_for_is_in_every_language() {
-    let ids = ids_in_sources();
+    let sources = source_texts();
+    let ids = ids_in_sources(&sources);
     assert!(ids.len() > 300, "{} ids found", ids.len());
     for lang in Lang::ALL {
         let missing: Vec<&String> = ids.iter().filter(|id| !has_message(lang, id)).collect();
@@ -80,7 +69,7 @@ fn every_message_the_code_asks_for_is_in_every_language() {
     }
     // And every message of the catalogues is asked for somewhere: by t!/tr, named in a
     // table of ids, or built from a prefix (material-*/back-* by field name).
-    let all_source = sources_text();
+    let all_source = sources.concat();
     let unused: Vec<String> = message_ids(Lang::En)
         .into_iter()
         .filter(|id| !ids.contains(id) && !all_source.contains(&format!("\"{id}\"")))

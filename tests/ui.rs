@@ -102,11 +102,7 @@ fn choosing_gold_sets_the_material() {
 }
 
 fn type_into(h: &mut Harness<'static, AppState>, label: &str, text: &str) {
-    h.get_by_role_and_label(Role::SpinButton, label).scroll_to_me();
-    // Scrolling is animated: wait for it to settle before clicking.
-    h.run_steps(30);
-    h.get_by_role_and_label(Role::SpinButton, label).click();
-    h.run_steps(1);
+    common::click_field(h, label);
     h.get_by_role_and_label(Role::SpinButton, label).type_text(text);
     h.key_press(egui::Key::Enter);
     h.run_steps(2);

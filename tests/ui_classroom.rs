@@ -100,10 +100,7 @@ fn arrow_keys_walk_through_the_steps() {
     let r = h.get_by_label(&last).rect();
     assert!(r.max.y < 900.0 && r.min.y > 0.0, "{last} scrolled into view: {r:?}");
     // Not while typing into a field.
-    h.get_by_role_and_label(Role::SpinButton, "Vertex z").scroll_to_me();
-    h.run_steps(30);
-    h.get_by_role_and_label(Role::SpinButton, "Vertex z").click();
-    h.run_steps(1);
+    common::click_field(&mut h, "Vertex z");
     h.key_press(egui::Key::ArrowUp);
     h.run_steps(1);
     assert_eq!(h.state().ui.layout.step, Some(n - 1));

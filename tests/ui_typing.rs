@@ -1,6 +1,9 @@
 //! Numbers typed as students type them, undo, and the keys: the window driven headless with
 //! egui_kittest, typing, clicking and reading back as a student does.
 
+mod common;
+
+use common::click_field;
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -13,15 +16,6 @@ fn harness() -> Harness<'static, AppState> {
         .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
     h.run_steps(2);
     h
-}
-
-/// Brings the field named `label` into view and clicks it, as a student does.
-fn click_field(h: &mut Harness<'static, AppState>, label: &str) {
-    h.get_by_role_and_label(Role::SpinButton, label).scroll_to_me();
-    // Scrolling is animated: wait for it to settle before clicking.
-    h.run_steps(30);
-    h.get_by_role_and_label(Role::SpinButton, label).click();
-    h.run_steps(1);
 }
 
 /// Types `text` one key at a time into the field named `label`, then presses `leave`.

@@ -111,13 +111,9 @@ pub fn describe(before: &Document, after: &Document) -> (Vec<String>, String) {
         a.retain(|(k, _)| k != "material.preset");
         b.retain(|(k, _)| k != "material.preset");
     }
-    let keys: Vec<&String> = {
-        let mut k: Vec<&String> = a.iter().chain(&b).map(|(k, _)| k).collect();
-        k.dedup();
-        let mut seen = std::collections::HashSet::new();
-        k.retain(|x| seen.insert(*x));
-        k
-    };
+    // Every field of either, once, in the order the scene files give them.
+    let mut seen = std::collections::HashSet::new();
+    let keys: Vec<&String> = a.iter().chain(&b).map(|(k, _)| k).filter(|k| seen.insert(*k)).collect();
     let find = |list: &[(String, String)], k: &str| list.iter().find(|(x, _)| x == k).map(|(_, v)| v.clone());
     let changed: Vec<(String, Option<String>, Option<String>)> =
         keys.into_iter().map(|k| (k.clone(), find(&a, k), find(&b, k))).filter(|(_, x, y)| x != y).collect();

@@ -389,11 +389,6 @@ pub fn accept_last_commit(ctx: &egui::Context) {
     ctx.data_mut(|d| d.remove::<LastCommit>(last_commit_id()));
 }
 
-/// The colour of refused text (for tests that look at it).
-pub fn refused_color(ui: &Ui) -> Color32 {
-    palette::ink(ui, palette::ERROR)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -413,6 +413,15 @@ fn colour4(c: DVec4) -> String {
     crate::locale::decimal(&crate::explain::fmt_value(&[c.x, c.y, c.z, 0.0], 8))
 }
 
+/// The rules an exercise is computed under, as its sheet says them.
+pub fn rules_in_words(set: crate::rules::RuleSet) -> String {
+    match set {
+        crate::rules::RuleSet::Worksheet => crate::t!("sheet-rules-worksheet"),
+        crate::rules::RuleSet::OpenGl => crate::t!("sheet-rules-opengl"),
+        crate::rules::RuleSet::PhongDemo => crate::t!("sheet-rules-demo"),
+    }
+}
+
 /// The exercise sheet, in the worksheet's style: the givens under the worksheet's names,
 /// then the steps to compute, each with a blank.
 pub fn sheet_markdown(ex: &Exercise) -> String {
@@ -420,12 +429,7 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
     let s = &ex.doc.scene;
     let mut o = String::new();
     let _ = writeln!(o, "# {}\n", ex.doc.name);
-    let rules = match s.rules.set {
-        crate::rules::RuleSet::Worksheet => crate::t!("sheet-rules-worksheet"),
-        crate::rules::RuleSet::OpenGl => crate::t!("sheet-rules-opengl"),
-        crate::rules::RuleSet::PhongDemo => crate::t!("sheet-rules-demo"),
-    };
-    let _ = writeln!(o, "{}\n", crate::t!("sheet-compute", rules = rules));
+    let _ = writeln!(o, "{}\n", crate::t!("sheet-compute", rules = rules_in_words(s.rules.set)));
     let _ = writeln!(o, "{}\n", crate::t!("sheet-colours"));
     let _ = writeln!(o, "## {}\n", crate::t!("sheet-vertex"));
     let _ = writeln!(o, "- vertexPos = {}", vec4(s.vertex.position));
