@@ -1,4 +1,7 @@
 //! The command line: `phonglab <subcommand>` works headless and never opens a window.
+//!
+//! The doc comments below describe the arguments to readers of the code; what a user reads
+//! in `--help` comes from the message catalogue, in their language ([`crate::cli_help`]).
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -45,8 +48,8 @@ fn parse_decimal(s: &str) -> Result<phonglab_core::locale::DecimalMark, String> 
 
 impl Cli {
     /// Parses the command line with its help in the language asked for (`--lang`, before
-    /// parsing, or the system's): the commands' and the language options' descriptions
-    /// come from the catalogue; clap's own words ("Usage", "Options") stay English.
+    /// parsing, or the system's): every text of `--help` comes from the catalogue
+    /// ([`crate::cli_help`]).
     pub fn parse_localised() -> Cli {
         use clap::{CommandFactory, FromArgMatches};
         let args: Vec<String> = std::env::args().collect();
@@ -60,25 +63,13 @@ impl Cli {
             .and_then(|v| phonglab_core::locale::Lang::parse(&v));
         let lang = asked.unwrap_or_else(phonglab_core::locale::Lang::from_env);
         phonglab_core::locale::set_default(phonglab_core::locale::Locale::of(lang));
-        use phonglab_core::t;
-        let mut cmd = Cli::command()
-            .about(t!("cli-about"))
-            .mut_arg("lang", |a| a.help(t!("cli-lang")))
-            .mut_arg("decimal", |a| a.help(t!("cli-decimal")));
-        for (name, id) in [
-            ("eval", "cli-eval"),
-            ("explain", "cli-explain"),
-            ("render", "cli-render"),
-            ("exercise", "cli-exercise"),
-            ("shader", "cli-shader"),
-            ("case", "cli-case"),
-            ("cost", "cli-cost"),
-            ("bench", "cli-bench"),
-            ("screenshot", "cli-screenshot"),
-        ] {
-            cmd = cmd.mut_subcommand(name, |c| c.about(phonglab_core::locale::tr(id)));
+        let mut cmd = crate::cli_help::localised(Cli::command());
+        let matches = cmd.get_matches_mut();
+        if let Some(("help", asked)) = matches.subcommand() {
+            let names = asked.get_many::<String>("command").into_iter().flatten();
+            crate::cli_help::print_help_of(&mut cmd, names);
+            std::process::exit(0);
         }
-        let matches = cmd.get_matches();
         Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit())
     }
 

@@ -4,6 +4,7 @@ pub mod app;
 pub mod atomic_write;
 pub mod bench;
 pub mod cli;
+pub mod cli_help;
 pub mod cost_cmd;
 pub mod egui_cpu;
 pub mod exercise_cmd;

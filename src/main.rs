@@ -22,8 +22,11 @@ fn main() -> ExitCode {
         ) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {
-                eprintln!("phonglab: cannot open the window: {e}");
-                eprintln!("(headless? the subcommands work without a display: phonglab --help)");
+                let error = e.to_string();
+                eprintln!(
+                    "phonglab: {}",
+                    phonglab_core::locale::tr_args("app-cannot-open-window", &[("error", error.into())])
+                );
                 ExitCode::from(1)
             }
         },

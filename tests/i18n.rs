@@ -68,12 +68,19 @@ fn every_message_the_code_asks_for_is_in_every_language() {
         assert!(missing.is_empty(), "{} lacks {missing:?}", lang.code());
     }
     // And every message of the catalogues is asked for somewhere: by t!/tr, named in a
-    // table of ids, or built from a prefix (material-*/back-* by field name).
+    // table of ids, or built from a prefix (material-*/back-* by field name; the command
+    // line's help by command and argument, checked in tests/cli_help.rs).
     let all_source = sources.concat();
+    let root = <phonglab::cli::Cli as clap::CommandFactory>::command();
+    let abouts: BTreeSet<String> = phonglab::cli_help::command_paths(&root)
+        .iter()
+        .map(|(path, _)| phonglab::cli_help::about_message_id(path))
+        .collect();
     let unused: Vec<String> = message_ids(Lang::En)
         .into_iter()
         .filter(|id| !ids.contains(id) && !all_source.contains(&format!("\"{id}\"")))
         .filter(|id| !id.starts_with("material-") && !id.starts_with("back-"))
+        .filter(|id| !id.starts_with("cli-arg-") && !id.starts_with("cli-value-") && !abouts.contains(id))
         .collect();
     assert!(unused.is_empty(), "messages no code asks for: {unused:?}");
 }
