@@ -68,8 +68,9 @@ fn every_message_the_code_asks_for_is_in_every_language() {
         assert!(missing.is_empty(), "{} lacks {missing:?}", lang.code());
     }
     // And every message of the catalogues is asked for somewhere: by t!/tr, named in a
-    // table of ids, or built from a prefix (material-*/back-* by field name; the command
-    // line's help by command and argument, checked in tests/cli_help.rs).
+    // table of ids, or built from a prefix (material-*/back-* by field name, preset-* by
+    // scene file (src/scenes.rs tests them); the command line's help by command and
+    // argument, checked in tests/cli_help.rs).
     let all_source = sources.concat();
     let root = <phonglab::cli::Cli as clap::CommandFactory>::command();
     let abouts: BTreeSet<String> = phonglab::cli_help::command_paths(&root)
@@ -79,7 +80,7 @@ fn every_message_the_code_asks_for_is_in_every_language() {
     let unused: Vec<String> = message_ids(Lang::En)
         .into_iter()
         .filter(|id| !ids.contains(id) && !all_source.contains(&format!("\"{id}\"")))
-        .filter(|id| !id.starts_with("material-") && !id.starts_with("back-"))
+        .filter(|id| !id.starts_with("material-") && !id.starts_with("back-") && !id.starts_with("preset-"))
         .filter(|id| !id.starts_with("cli-arg-") && !id.starts_with("cli-value-") && !abouts.contains(id))
         .collect();
     assert!(unused.is_empty(), "messages no code asks for: {unused:?}");
@@ -122,8 +123,20 @@ fn the_window_in_portuguese_shows_no_english_message() {
     let english = english_only_texts();
     assert!(english.len() > 150, "{}", english.len());
     let mut seen = Vec::new();
-    // The main window, View options, the help overlay, then the quiz.
+    // The main window, the Presets menu and its teapots, View options, the help overlay,
+    // then the quiz.
     seen.extend(labels(&h));
+    h.get_by_label("Cenas prontas").click();
+    h.run_steps(3);
+    h.get_by_label("Bules do Red Book").hover();
+    h.run_steps(3);
+    let presets = labels(&h);
+    for pt in ["A ficha", "Ficha, mview3", "Demo de Phong", "Mais cenas", "Três luzes", "Borracha amarela"] {
+        assert!(presets.iter().any(|l| l == pt), "{pt} in the Presets menu: {presets:?}");
+    }
+    seen.extend(presets);
+    h.key_press(egui::Key::Escape);
+    h.run_steps(3);
     h.get_by_label("Opções da vista").click();
     h.run_steps(3);
     seen.extend(labels(&h));

@@ -226,27 +226,29 @@ fn presets_menu_ui(ui: &mut Ui, state: &mut AppState) {
     let mut entry = |ui: &mut Ui, f: &crate::scenes::SceneFile| {
         ui.horizontal(|ui| {
             swatch_ui(ui, &f.doc);
-            if ui.button(&f.title).on_hover_text(format!("assets/scenes/{}", f.path)).clicked() {
-                state.load(f.doc.clone(), &f.title);
+            let title = f.title();
+            if ui.button(&title).on_hover_text(format!("assets/scenes/{}", f.path)).clicked() {
+                state.load(f.doc.clone(), &title);
                 ui.close();
             }
         });
     };
-    let mut group = "";
-    for f in files.iter().filter(|f| f.group != "Red Book teapots") {
-        if f.group != group {
-            if !group.is_empty() {
+    use crate::scenes::Group;
+    let mut group = None;
+    for f in files.iter().filter(|f| f.group != Group::RedbookTeapots) {
+        if group != Some(f.group) {
+            if group.is_some() {
                 ui.separator();
             }
-            ui.label(egui::RichText::new(f.group).small().strong());
-            group = f.group;
+            ui.label(egui::RichText::new(f.group.label()).small().strong());
+            group = Some(f.group);
         }
         entry(ui, f);
     }
     ui.separator();
-    ui.menu_button(t!("redbook-teapots"), |ui| {
+    ui.menu_button(Group::RedbookTeapots.label(), |ui| {
         egui::ScrollArea::vertical().max_height(480.0).show(ui, |ui| {
-            for f in files.iter().filter(|f| f.group == "Red Book teapots") {
+            for f in files.iter().filter(|f| f.group == Group::RedbookTeapots) {
                 entry(ui, f);
             }
         });

@@ -46,6 +46,16 @@ no-session-folder = There is no folder to keep the session in (HOME is not set):
 doc-worksheet = the worksheet, mview{ $k }
 doc-worksheet-preset = Worksheet, mview{ $k }
 
+## presets
+
+preset-group-worksheet = The worksheet
+preset-group-phong-demo = The Phong demo
+preset-group-more = More scenes
+preset-worksheet = Worksheet, { $modelview }
+preset-phong-demo = Phong demo
+preset-spotlight = Spotlight
+preset-three-lights = Three lights
+
 ## controls
 
 controls-rules = Rules

@@ -46,6 +46,16 @@ no-session-folder = Não há pasta onde guardar a sessão (HOME não está defin
 doc-worksheet = a ficha, mview{ $k }
 doc-worksheet-preset = Ficha, mview{ $k }
 
+## presets
+
+preset-group-worksheet = A ficha
+preset-group-phong-demo = A demo de Phong
+preset-group-more = Mais cenas
+preset-worksheet = Ficha, { $modelview }
+preset-phong-demo = Demo de Phong
+preset-spotlight = Foco
+preset-three-lights = Três luzes
+
 ## controls
 
 controls-rules = Regras
