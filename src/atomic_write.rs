@@ -29,16 +29,31 @@ use std::sync::atomic::{AtomicU64, Ordering};
 /// Why a file could not be written. The message names the file and says that the old one
 /// (or the old set) is untouched.
 #[derive(Debug, thiserror::Error)]
-#[error("cannot write {}: {what}: {reason}; {kept}", path.display())]
 pub struct WriteError {
     /// The file or folder that was to be written.
     pub path: PathBuf,
-    /// The step that failed: "create", "write", "sync", "close", "rename".
+    /// The step that failed, as a message id: "write-step-create", "write-step-write",
+    /// "write-step-sync", "write-step-close", "write-step-rename", ...
     pub what: &'static str,
     /// The system's reason (in the message, not a separate source, so it is said once).
     pub reason: io::Error,
-    /// What the reader can rely on: "the old file is unchanged", "nothing was written", ...
+    /// What the reader can rely on, as a message id: "write-kept-file" (the old file is
+    /// unchanged), "write-kept-nothing", ...
     pub kept: &'static str,
+}
+
+impl fmt::Display for WriteError {
+    /// "cannot write PATH: STEP: REASON; WHAT WAS KEPT", in the current language.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use phonglab_core::locale::tr;
+        f.write_str(&phonglab_core::t!(
+            "write-error",
+            path = self.path.display().to_string(),
+            what = tr(self.what),
+            reason = crate::io_text::io_reason(&self.reason),
+            kept = tr(self.kept)
+        ))
+    }
 }
 
 impl WriteError {
@@ -132,7 +147,7 @@ fn folder_of(path: &Path) -> &Path {
 fn file_name_of(path: &Path) -> io::Result<String> {
     path.file_name()
         .map(|n| n.to_string_lossy().into_owned())
-        .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidInput, "not a file name"))
+        .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidFilename, "not a file name"))
 }
 
 /// Closes `file`, reporting the close's own error (which `drop` would ignore).
@@ -146,16 +161,16 @@ fn close(file: File) -> io::Result<()> {
 /// Writes `bytes` to a new file at `tmp`: create, write, flush, sync, close, each checked.
 /// On failure the file at `tmp` is removed and the failing step named.
 fn write_new(tmp: &Path, bytes: &[u8]) -> Result<(), (&'static str, io::Error)> {
-    let file = File::options().write(true).create_new(true).open(tmp).map_err(|e| ("create", e))?;
+    let file = File::options().write(true).create_new(true).open(tmp).map_err(|e| ("write-step-create", e))?;
     let mut out = Counted { file, written: 0 };
     let result = (|| {
-        out.write_all(bytes).map_err(|e| ("write", e))?;
-        out.flush().map_err(|e| ("write", e))?;
+        out.write_all(bytes).map_err(|e| ("write-step-write", e))?;
+        out.flush().map_err(|e| ("write-step-write", e))?;
         if fault() == Some(Fault::OnSync) {
-            return Err(("sync", injected("sync")));
+            return Err(("write-step-sync", injected("sync")));
         }
-        out.file.sync_all().map_err(|e| ("sync", e))?;
-        close(out.file).map_err(|e| ("close", e))
+        out.file.sync_all().map_err(|e| ("write-step-sync", e))?;
+        close(out.file).map_err(|e| ("write-step-close", e))
     })();
     if result.is_err() {
         let _ = std::fs::remove_file(tmp);
@@ -186,17 +201,18 @@ pub fn written_in_place(path: &Path) -> bool {
 
 /// Writes to a device or a pipe as it is (there is no old file to keep).
 fn write_in_place(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
-    const KEPT: &str = "it is not a file, so nothing was kept";
-    let mut f = File::options().write(true).open(path).map_err(|e| WriteError::new(path, "open", e, KEPT))?;
-    f.write_all(bytes).and_then(|()| f.flush()).map_err(|e| WriteError::new(path, "write", e, KEPT))?;
-    close(f).map_err(|e| WriteError::new(path, "close", e, KEPT))
+    const KEPT: &str = "write-kept-not-a-file";
+    let mut f =
+        File::options().write(true).open(path).map_err(|e| WriteError::new(path, "write-step-open", e, KEPT))?;
+    f.write_all(bytes).and_then(|()| f.flush()).map_err(|e| WriteError::new(path, "write-step-write", e, KEPT))?;
+    close(f).map_err(|e| WriteError::new(path, "write-step-close", e, KEPT))
 }
 
 /// Writes `bytes` to `path` whole or not at all (see the module's documentation). A
 /// symbolic link is followed (the file it names is replaced, the link stays a link); a
 /// device or a pipe is written in place.
 pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
-    const KEPT: &str = "the file there before (if any) is unchanged";
+    const KEPT: &str = "write-kept-file";
     if written_in_place(path) {
         return write_in_place(path, bytes);
     }
@@ -207,17 +223,17 @@ pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
     } else {
         path
     };
-    let name = file_name_of(path).map_err(|e| WriteError::new(path, "name", e, "nothing was written"))?;
+    let name = file_name_of(path).map_err(|e| WriteError::new(path, "write-step-name", e, "write-kept-nothing"))?;
     if path.is_dir() {
         let e = io::Error::new(io::ErrorKind::IsADirectory, "it is a folder");
-        return Err(WriteError::new(path, "create", e, "nothing was written"));
+        return Err(WriteError::new(path, "write-step-create", e, "write-kept-nothing"));
     }
     let dir = folder_of(path);
     let tmp = temporary_name(dir, &name);
     write_new(&tmp, bytes).map_err(|(what, e)| WriteError::new(path, what, e, KEPT))?;
     if let Err(e) = rename(&tmp, path) {
         let _ = std::fs::remove_file(&tmp);
-        return Err(WriteError::new(path, "rename", e, KEPT));
+        return Err(WriteError::new(path, "write-step-rename", e, KEPT));
     }
     crate::platform::sync_folder(dir);
     Ok(())
@@ -226,28 +242,32 @@ pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
 /// Checks, before long work, that a file can be created in `path`'s folder (by creating
 /// and removing a temporary file there) and that `path` is not a folder.
 pub fn check_file_destination(path: &Path) -> Result<(), WriteError> {
-    const KEPT: &str = "nothing was written";
+    const KEPT: &str = "write-kept-nothing";
     if written_in_place(path) {
-        return File::options().write(true).open(path).map(drop).map_err(|e| WriteError::new(path, "open", e, KEPT));
+        return File::options()
+            .write(true)
+            .open(path)
+            .map(drop)
+            .map_err(|e| WriteError::new(path, "write-step-open", e, KEPT));
     }
-    let name = file_name_of(path).map_err(|e| WriteError::new(path, "name", e, KEPT))?;
+    let name = file_name_of(path).map_err(|e| WriteError::new(path, "write-step-name", e, KEPT))?;
     if path.is_dir() {
         return Err(WriteError::new(
             path,
-            "create",
+            "write-step-create",
             io::Error::new(io::ErrorKind::IsADirectory, "it is a folder"),
             KEPT,
         ));
     }
-    probe(folder_of(path), &name).map_err(|e| WriteError::new(path, "create", e, KEPT))
+    probe(folder_of(path), &name).map_err(|e| WriteError::new(path, "write-step-create", e, KEPT))
 }
 
 /// Checks, before long work, that the folder `dir` exists or can be made, and that files
 /// can be created in it.
 pub fn check_folder_destination(dir: &Path) -> Result<(), WriteError> {
-    const KEPT: &str = "nothing was written";
-    std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "create the folder", e, KEPT))?;
-    probe(dir, "probe").map_err(|e| WriteError::new(dir, "create a file in", e, KEPT))
+    const KEPT: &str = "write-kept-nothing";
+    std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, KEPT))?;
+    probe(dir, "probe").map_err(|e| WriteError::new(dir, "write-step-create-file-in", e, KEPT))
 }
 
 fn probe(dir: &Path, name: &str) -> io::Result<()> {
@@ -280,17 +300,17 @@ impl FileSet {
 /// for which `belongs` is true are the old set: they are replaced, or removed when the new
 /// set has no file of that name. Other files in `dir` are never touched.
 pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> Result<(), WriteError> {
-    const UNTOUCHED: &str = "the folder is unchanged";
-    std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "create the folder", e, UNTOUCHED))?;
+    const UNTOUCHED: &str = "write-kept-folder";
+    std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED))?;
     let staging = temporary_name(dir, "phonglab-set");
-    std::fs::create_dir(&staging).map_err(|e| WriteError::new(dir, "create a staging folder in", e, UNTOUCHED))?;
+    std::fs::create_dir(&staging).map_err(|e| WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED))?;
     let result = stage_and_swap(dir, &staging, set, &belongs);
     let _ = std::fs::remove_dir_all(&staging);
     result
 }
 
 fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&str) -> bool) -> Result<(), WriteError> {
-    const UNTOUCHED: &str = "the folder is unchanged";
+    const UNTOUCHED: &str = "write-kept-folder";
     for (name, bytes) in &set.files {
         let target = dir.join(name);
         write_new(&staging.join(name), bytes).map_err(|(what, e)| WriteError::new(&target, what, e, UNTOUCHED))?;
@@ -299,7 +319,7 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
     // The old set: every file the new one replaces, and every other member of it.
     let new_names: Vec<&str> = set.files.iter().map(|(n, _)| n.as_str()).collect();
     let mut old = Vec::new();
-    let entries = std::fs::read_dir(dir).map_err(|e| WriteError::new(dir, "list", e, UNTOUCHED))?;
+    let entries = std::fs::read_dir(dir).map_err(|e| WriteError::new(dir, "write-step-list", e, UNTOUCHED))?;
     for entry in entries.flatten() {
         let name = entry.file_name().to_string_lossy().into_owned();
         let is_file = entry.file_type().is_ok_and(|t| t.is_file());
@@ -309,7 +329,7 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
     }
     old.sort();
     let aside = staging.join(".old");
-    std::fs::create_dir(&aside).map_err(|e| WriteError::new(dir, "create a staging folder in", e, UNTOUCHED))?;
+    std::fs::create_dir(&aside).map_err(|e| WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED))?;
     let mut moved_aside = Vec::new();
     let mut moved_in = Vec::new();
     let undo = |moved_aside: &[String], moved_in: &[&str]| {
@@ -323,14 +343,14 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
     for name in &old {
         if let Err(e) = rename(&dir.join(name), &aside.join(name)) {
             undo(&moved_aside, &moved_in);
-            return Err(WriteError::new(&dir.join(name), "rename", e, UNTOUCHED));
+            return Err(WriteError::new(&dir.join(name), "write-step-rename", e, UNTOUCHED));
         }
         moved_aside.push(name.clone());
     }
     for name in &new_names {
         if let Err(e) = rename(&staging.join(name), &dir.join(name)) {
             undo(&moved_aside, &moved_in);
-            return Err(WriteError::new(&dir.join(name), "rename", e, UNTOUCHED));
+            return Err(WriteError::new(&dir.join(name), "write-step-rename", e, UNTOUCHED));
         }
         moved_in.push(name);
     }
@@ -420,10 +440,10 @@ mod tests {
         let dir = temp_dir("steps");
         let t = dir.join("a.txt");
         let step = |f| with_fault(f, || write(&t, b"abc")).unwrap_err().what;
-        assert_eq!(step(Fault::AfterBytes(2)), "write");
-        assert_eq!(step(Fault::OnSync), "sync");
-        assert_eq!(step(Fault::OnClose), "close");
-        assert_eq!(step(Fault::OnRename(0)), "rename");
+        assert_eq!(step(Fault::AfterBytes(2)), "write-step-write");
+        assert_eq!(step(Fault::OnSync), "write-step-sync");
+        assert_eq!(step(Fault::OnClose), "write-step-close");
+        assert_eq!(step(Fault::OnRename(0)), "write-step-rename");
         assert!(!t.exists(), "nothing was there, and nothing is");
     }
 

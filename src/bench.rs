@@ -168,23 +168,25 @@ fn render_figures_of(
 fn render(a: &RenderBench) -> Result<()> {
     for name in a.object.iter() {
         if !bench_meshes().iter().any(|(n, _)| n == name) {
-            anyhow::bail!("--object {name}: the benchmark's objects are sphere and teapot");
+            anyhow::bail!(phonglab_core::t!("err-bench-object", value = name));
         }
     }
     for name in a.shading.iter() {
         if !Shading::ALL.iter().any(|s| s.label().eq_ignore_ascii_case(name)) {
-            anyhow::bail!("--shading {name}: the shadings are gouraud, phong and flat");
+            anyhow::bail!(phonglab_core::t!("err-bench-shading", value = name));
         }
     }
     if !(3..=1024).contains(&a.slices) {
-        anyhow::bail!("--slices {}: the sphere takes 3 to 1024 slices (the benchmark's is 50)", a.slices);
+        anyhow::bail!(phonglab_core::t!("err-bench-slices", value = a.slices.to_string()));
     }
     println!(
-        "# phonglab bench render: {}x{} px, {} frames, {} threads; the stages' mean ms: vertices, setup, raster, resolve",
-        a.size,
-        a.size,
-        a.frames,
-        rayon::current_num_threads()
+        "# {}",
+        phonglab_core::t!(
+            "bench-render-header",
+            size = a.size.to_string(),
+            frames = a.frames.to_string(),
+            threads = rayon::current_num_threads().to_string()
+        )
     );
     println!("object shading ms_per_frame triangles coverage vertices_ms setup_ms raster_ms resolve_ms");
     let only = |object: &str, shading: Shading| {
@@ -257,7 +259,10 @@ fn scene_figures(arrays: &mut LightingArrays, repeats: u32) -> Result<Vec<(&'sta
 }
 
 fn lighting(a: &LightingBenchArgs) -> Result<()> {
-    println!("# phonglab bench lighting: {} vertices, best of {}, one thread, f32", a.vertices, a.repeats);
+    println!(
+        "# {}",
+        phonglab_core::t!("bench-lighting-header", vertices = a.vertices.to_string(), repeats = a.repeats.to_string())
+    );
     println!("scene general_ns_per_vertex specialised_ns_per_vertex speedup");
     let mut arrays = LightingArrays::new(a.vertices);
     for (name, g, s) in scene_figures(&mut arrays, a.repeats)? {
@@ -265,7 +270,13 @@ fn lighting(a: &LightingBenchArgs) -> Result<()> {
     }
     let (ns, gbs) = memory_floor(&mut arrays, a.repeats);
     println!(
-        "# memory floor: the same arrays read and written with no lighting, {ns:.2} ns per vertex ({gbs:.1} GB/s of the {MOVED} bytes a vertex moves)"
+        "# {}",
+        phonglab_core::t!(
+            "bench-memory-floor",
+            ns = phonglab_core::locale::decimal(&format!("{ns:.2}")),
+            gbs = phonglab_core::locale::decimal(&format!("{gbs:.1}")),
+            bytes = MOVED.to_string()
+        )
     );
     if a.stages {
         stage_figures(&mut arrays, a.repeats)?;
@@ -302,7 +313,7 @@ fn memory_floor(arrays: &mut LightingArrays, repeats: u32) -> (f64, f64) {
 fn stage_figures(arrays: &mut LightingArrays, repeats: u32) -> Result<()> {
     let LightingArrays { pos, nrm, out: out_buf } = arrays;
     let vertices = pos.len();
-    println!("# where the specialised time goes (ns per vertex; reading the clock adds ~0.2 a step)");
+    println!("# {}", phonglab_core::t!("bench-stages-header"));
     println!("scene step ns_per_vertex");
     for b in LightingBench::ALL {
         let lighter = Lighter::new(&b.scene(), EvalOptions::default())?;
@@ -400,7 +411,7 @@ pub fn all_panels_open(ctx: &egui::Context, size: [f32; 2]) -> Result<crate::app
     let start = Instant::now();
     while state.cost.study.is_none() || state.cost.heat.is_none() {
         if start.elapsed().as_secs() > 300 {
-            anyhow::bail!("the study did not finish in 5 minutes");
+            anyhow::bail!(phonglab_core::t!("err-study-timeout"));
         }
         if let Some(e) = &state.cost.error {
             anyhow::bail!("{e}");
@@ -420,8 +431,13 @@ fn ui_presenting(a: &UiBenchArgs) -> Result<()> {
     let size = if a.width == 1440.0 && a.height == 900.0 { [1920.0, 1080.0] } else { [a.width, a.height] };
     let ctx = egui::Context::default();
     println!(
-        "# phonglab bench ui --present: {}x{} points, presentation mode with the controls drawer out, {} frames per case; each frame the light's z moves as a dragged slider moves it; CPU ms (layout includes the scene's evaluation and the shaded view's render)",
-        size[0], size[1], a.frames
+        "# {}",
+        phonglab_core::t!(
+            "bench-ui-present-header",
+            width = size[0].to_string(),
+            height = size[1].to_string(),
+            frames = a.frames.to_string()
+        )
     );
     println!("case ui_median ui_p95 tessellate_median tessellate_p95 total_median total_p95 image_px");
     for shading in [Shading::Gouraud, Shading::Phong] {
@@ -450,8 +466,13 @@ fn ui(a: &UiBenchArgs) -> Result<()> {
     let ctx = egui::Context::default();
     let mut state = all_panels_open(&ctx, size)?;
     println!(
-        "# phonglab bench ui: {}x{} points, every panel open, {} frames per case, CPU ms (layout includes the scene's evaluation and the shaded view's render when it changed)",
-        a.width, a.height, a.frames
+        "# {}",
+        phonglab_core::t!(
+            "bench-ui-header",
+            width = a.width.to_string(),
+            height = a.height.to_string(),
+            frames = a.frames.to_string()
+        )
     );
     println!("case ui_median ui_p95 tessellate_median tessellate_p95 total_median");
     let z0 = state.doc.scene.lights[0].position.z;

@@ -10,7 +10,7 @@ use anyhow::{Context, Result, bail};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::glref::{self, CaseColors};
-use phonglab_core::{Engine, EvalOptions, PowFn, Real, Scene, library, presets};
+use phonglab_core::{Engine, EvalOptions, PowFn, Real, Scene, library, presets, t};
 
 /// phonglab: OpenGL's fixed-function vertex lighting, step by step. Without a subcommand it
 /// opens the explorer window on the worksheet's scene.
@@ -39,11 +39,11 @@ pub struct Cli {
 }
 
 fn parse_lang(s: &str) -> Result<phonglab_core::locale::Lang, String> {
-    phonglab_core::locale::Lang::parse(s).ok_or_else(|| format!("{s:?}: phonglab speaks en, pt-PT and pt-BR"))
+    phonglab_core::locale::Lang::parse(s).ok_or_else(|| t!("err-lang", value = format!("{s:?}")))
 }
 
 fn parse_decimal(s: &str) -> Result<phonglab_core::locale::DecimalMark, String> {
-    phonglab_core::locale::DecimalMark::parse(s).ok_or_else(|| format!("{s:?}: point or comma"))
+    phonglab_core::locale::DecimalMark::parse(s).ok_or_else(|| t!("err-decimal", value = format!("{s:?}")))
 }
 
 impl Cli {
@@ -223,12 +223,12 @@ fn shader_cmd(a: &ShaderArgs) -> Result<()> {
     let lang = match a.target.as_str() {
         "glsl" => Lang::Glsl,
         "wgsl" => Lang::Wgsl,
-        other => bail!("--target {other:?}: try glsl or wgsl"),
+        other => bail!(t!("err-target", value = format!("{other:?}"))),
     };
     let shading = match a.shading.as_str() {
         "gouraud" => ShaderShading::Gouraud,
         "phong" => ShaderShading::Phong,
-        other => bail!("--shading {other:?}: try gouraud or phong"),
+        other => bail!(t!("err-shading", value = format!("{other:?}"))),
     };
     // A scene that does not evaluate is refused with the engine's reason.
     let shader = phonglab_core::shader::for_view(&doc, lang, shading)?;
@@ -415,7 +415,7 @@ pub fn eval_text(
     options: EvalOptions,
     clamp: bool,
 ) -> Result<(serde_json::Value, usize)> {
-    let cases = glref::parse_cases(text).context("not a case file")?;
+    let cases = glref::parse_cases(text).context(t!("err-not-case-file"))?;
     let mut failed = 0;
     let results: Vec<serde_json::Value> = cases
         .iter()
@@ -433,13 +433,13 @@ pub fn eval_text(
 
 /// `eval`: the results on stdout; exit 1 (after printing them) when any case failed.
 fn eval(a: &EvalArgs) -> Result<ExitCode> {
-    let text = read(&a.cases, crate::input_file::MAX_CASE_BYTES, "case files")?;
+    let text = read(&a.cases, crate::input_file::MAX_CASE_BYTES, &t!("file-kind-cases"))?;
     let (out, failed) = eval_text(&text, a.precision, EvalOptions::with_pow(a.pow.into()), a.clamp)
         .with_context(|| format!("{}", a.cases.display()))?;
     println!("{}", serde_json::to_string_pretty(&out)?);
     let all = out["results"].as_array().map_or(0, Vec::len);
     if failed > 0 {
-        eprintln!("phonglab: {failed} of {all} cases failed (their \"error\" says why)");
+        eprintln!("phonglab: {}", t!("err-cases-failed", failed = failed, all = all));
         return Ok(ExitCode::from(1));
     }
     Ok(ExitCode::SUCCESS)
@@ -447,7 +447,7 @@ fn eval(a: &EvalArgs) -> Result<ExitCode> {
 
 /// Reads and checks a scene file.
 pub fn load_scene_file(path: &Path) -> Result<phonglab_core::Document> {
-    let text = read(path, crate::input_file::MAX_SCENE_BYTES, "scene files")?;
+    let text = read(path, crate::input_file::MAX_SCENE_BYTES, &t!("file-kind-scenes"))?;
     phonglab_core::Document::from_toml_in(&text, path.parent()).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
 }
 
@@ -460,8 +460,8 @@ fn explain_scene(a: &ExplainArgs) -> Result<(Scene, String)> {
     }
     if let Some(p) = &a.preset {
         return match p.as_str() {
-            "phong-demo" => Ok((presets::phong_demo(), "the Phong demo".into())),
-            other => bail!("unknown preset {other:?}: try phong-demo"),
+            "phong-demo" => Ok((presets::phong_demo(), t!("preset-phong-demo"))),
+            other => bail!(t!("err-unknown-preset", value = format!("{other:?}"), names = "phong-demo")),
         };
     }
     let n = a.worksheet.unwrap_or(5) as usize;
@@ -555,7 +555,7 @@ fn render(a: &RenderArgs) -> Result<()> {
             ObjectKind::Teapot => teapot::glut_teapot(0.8, 7),
             ObjectKind::Cylinder => (phonglab_core::View { object, ..Default::default() }).mesh(),
             ObjectKind::Obj => {
-                bail!("--bench-frame draws the benchmark's sphere, teapot or cylinder; use --obj without it")
+                bail!(t!("err-bench-frame-obj"))
             }
         };
         bench_scene = presets::bench_scene(frame);
@@ -568,7 +568,9 @@ fn render(a: &RenderArgs) -> Result<()> {
             (Some(p), _) => load_scene_file(p)?,
             (None, Some("phong-demo")) => library::phong_demo_document(),
             (None, Some("worksheet")) | (None, None) => Document::default(),
-            (None, Some(other)) => bail!("unknown preset {other:?}: try worksheet or phong-demo"),
+            (None, Some(other)) => {
+                bail!(t!("err-unknown-preset", value = format!("{other:?}"), names = "worksheet, phong-demo"))
+            }
         };
         if let Some(o) = object {
             doc.view.object = o;
@@ -588,7 +590,7 @@ fn render(a: &RenderArgs) -> Result<()> {
                 d.correct(&mut doc);
             }
         }
-        doc.validate().context("the scene to render")?;
+        doc.validate().context(t!("err-scene-to-render"))?;
         if doc.view.object == ObjectKind::Obj {
             notes = doc.view.obj_mesh()?.notes.clone();
         }

@@ -33,7 +33,7 @@ pub struct CostRun {
 /// Runs the study of every chosen object, printing progress on stderr when it is a terminal.
 pub fn studies(r: &CostRun) -> Result<Vec<Study>> {
     if !r.spin.is_finite() {
-        anyhow::bail!("--spin must be a finite number of degrees");
+        anyhow::bail!(phonglab_core::t!("err-spin"));
     }
     let mut out = Vec::new();
     for &object in &r.objects {
@@ -49,7 +49,7 @@ pub fn studies(r: &CostRun) -> Result<Vec<Study>> {
             }
             true
         })?
-        .context("the study stopped")?;
+        .context(phonglab_core::t!("err-study-stopped"))?;
         if tty {
             eprintln!();
         }
@@ -60,26 +60,35 @@ pub fn studies(r: &CostRun) -> Result<Vec<Study>> {
 
 /// The table printed for one study.
 pub fn table(study: &Study) -> String {
+    use phonglab_core::locale::decimal;
+    use phonglab_core::t;
     let mut s = format!(
-        "# {}: {}x{} px, reference {} triangles (f64, per pixel); errors in 1/255 against it\n",
-        study.object.label(),
-        study.size,
-        study.size,
-        study.reference_triangles
+        "# {}\n",
+        t!(
+            "cost-table-title",
+            object = study.object.label(),
+            size = study.size.to_string(),
+            triangles = study.reference_triangles.to_string()
+        )
     );
     s.push_str(&format!(
-        "{:<34} {:>9} {:>9} {:>8} {:>8} {:>9}\n",
-        "variant", "triangles", "ms/frame", "mean", "max", ">1/255 %"
+        "{:<36} {:>10} {:>9} {:>10} {:>10} {:>9}\n",
+        t!("cost-variant"),
+        t!("cost-triangles"),
+        t!("cost-ms"),
+        t!("cost-mean"),
+        t!("cost-max"),
+        t!("cost-over-column")
     ));
     for p in &study.points {
         s.push_str(&format!(
-            "{:<34} {:>9} {:>9.3} {:>8.3} {:>8.1} {:>9.2}\n",
-            p.variant.label,
+            "{:<36} {:>10} {:>9} {:>10} {:>10} {:>9}\n",
+            p.variant.name(),
             p.triangles,
-            p.ms,
-            p.error.mean,
-            p.error.max,
-            100.0 * p.error.share_over_one
+            decimal(&format!("{:.3}", p.ms)),
+            decimal(&format!("{:.3}", p.error.mean)),
+            decimal(&format!("{:.1}", p.error.max)),
+            decimal(&format!("{:.2}", 100.0 * p.error.share_over_one))
         ));
     }
     for t in takeaways(study) {
@@ -160,12 +169,11 @@ pub fn chart_png(studies: &[Study], ppp: f32) -> (usize, usize, Vec<u8>) {
     let canvas = crate::egui_cpu::paint_ui(w, h, ppp, |ui| {
         egui::CentralPanel::default().show(ui, |ui| {
             for s in studies {
-                ui.strong(format!(
-                    "{}: time per frame against mean error ({}x{} px, reference: per-pixel Phong in f64, {} triangles)",
-                    s.object.label(),
-                    s.size,
-                    s.size,
-                    s.reference_triangles
+                ui.strong(phonglab_core::t!(
+                    "cost-chart-title",
+                    object = s.object.label(),
+                    size = s.size.to_string(),
+                    triangles = s.reference_triangles.to_string()
                 ));
                 cost_chart_ui(ui, s, h_each - 40.0);
             }
@@ -199,11 +207,7 @@ pub fn run(a: &CostRun) -> Result<()> {
                 && p.variant.shading != phonglab_core::Shading::Flat
             {
                 let rgba = cost::heat_map_rgba(map, &s.reference, HEAT_FULL_SCALE);
-                let name = format!(
-                    "heat-{}-{}-{mid}.png",
-                    s.object.label().to_lowercase(),
-                    p.variant.shading.label().to_lowercase()
-                );
+                let name = format!("heat-{}-{}-{mid}.png", s.object.key(), p.variant.shading.label().to_lowercase());
                 set.add(name, crate::image_io::encode_png(s.size, s.size, &rgba)?);
             }
         }

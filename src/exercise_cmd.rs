@@ -77,14 +77,14 @@ fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
     let rules = match a.rules.as_str() {
         "worksheet" => Rules::WORKSHEET,
         "opengl" => Rules::OPENGL,
-        other => bail!("--rules {other:?}: try worksheet or opengl"),
+        other => bail!(phonglab_core::t!("err-rules", value = format!("{other:?}"))),
     };
     if !a.effects.is_empty() {
         let mut effects = Vec::new();
         for e in &a.effects {
             let Some(x) = Effect::parse(e) else {
                 let names: Vec<&str> = Effect::ALL.iter().map(|e| e.name()).collect();
-                bail!("--effects: {e:?} is not one of {}", names.join(", "));
+                bail!(phonglab_core::t!("err-effects", value = format!("{e:?}"), names = names.join(", ")));
             };
             effects.push(x);
         }
@@ -98,7 +98,7 @@ fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
         effects.dedup();
         return Ok(Spec { effects, rules });
     }
-    let level = Level::from_number(a.level.unwrap_or(2)).context("--level is 1 to 4")?;
+    let level = Level::from_number(a.level.unwrap_or(2)).context(phonglab_core::t!("err-level"))?;
     Ok(Spec::level(level, rules))
 }
 

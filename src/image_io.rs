@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use anyhow::{Context, Result};
+use phonglab_core::t;
 
 /// Encodes RGBA8 pixels (rows top to bottom) as the bytes of a PNG file, every chunk
 /// written and the encoder finished with its errors checked (dropping it would ignore them).
@@ -11,9 +12,9 @@ pub fn encode_png(width: usize, height: usize, rgba: &[u8]) -> Result<Vec<u8>> {
     let mut enc = png::Encoder::new(&mut bytes, width as u32, height as u32);
     enc.set_color(png::ColorType::Rgba);
     enc.set_depth(png::BitDepth::Eight);
-    let mut w = enc.write_header().context("cannot encode the PNG")?;
-    w.write_image_data(rgba).context("cannot encode the PNG")?;
-    w.finish().context("cannot encode the PNG")?;
+    let mut w = enc.write_header().context(t!("png-cannot-encode"))?;
+    w.write_image_data(rgba).context(t!("png-cannot-encode"))?;
+    w.finish().context(t!("png-cannot-encode"))?;
     Ok(bytes)
 }
 
@@ -31,14 +32,14 @@ pub fn read_png(path: &Path) -> Result<(usize, usize, Vec<u8>)> {
     let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
     decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::ALPHA);
     let mut reader = decoder.read_info().with_context(|| format!("{} is not a PNG", path.display()))?;
-    let mut buf = vec![0; reader.output_buffer_size().context("image too large")?];
+    let mut buf = vec![0; reader.output_buffer_size().context(t!("png-too-large"))?];
     let info = reader.next_frame(&mut buf).with_context(|| format!("{}: cannot decode", path.display()))?;
     let (w, h) = (info.width as usize, info.height as usize);
     buf.truncate(info.buffer_size());
     let rgba = match info.color_type {
         png::ColorType::Rgba => buf,
         png::ColorType::GrayscaleAlpha => buf.chunks(2).flat_map(|c| [c[0], c[0], c[0], c[1]]).collect(),
-        other => anyhow::bail!("{}: unexpected colour type {other:?}", path.display()),
+        other => anyhow::bail!(t!("png-colour-type", path = path.display().to_string(), kind = format!("{other:?}"))),
     };
     Ok((w, h, rgba))
 }

@@ -4,6 +4,8 @@
 use std::io::Read;
 use std::path::Path;
 
+use phonglab_core::t;
+
 /// The largest scene file read: a scene file is a few kilobytes.
 pub const MAX_SCENE_BYTES: u64 = 1 << 20;
 
@@ -11,19 +13,22 @@ pub const MAX_SCENE_BYTES: u64 = 1 << 20;
 pub const MAX_CASE_BYTES: u64 = 256 << 20;
 
 /// Reads the file at `path` as bytes: refused when it is not a regular file or is larger
-/// than `cap` bytes (`what` names the kind of file in the message).
+/// than `cap` bytes (`what` names the kind of file in the message, in the user's language:
+/// `t!("file-kind-scenes")`). The messages are in the current language.
 pub fn read_capped(path: &Path, cap: u64, what: &str) -> Result<Vec<u8>, String> {
-    let cannot = |e: std::io::Error| format!("cannot read {}: {e}", path.display());
+    let shown = path.display().to_string();
+    let cannot = |e: std::io::Error| t!("read-cannot", path = shown.clone(), reason = crate::io_text::io_reason(&e));
     let meta = std::fs::metadata(path).map_err(cannot)?;
     if !meta.is_file() {
-        return Err(format!("{} is not a regular file", path.display()));
+        return Err(t!("read-not-a-file", path = shown.clone()));
     }
     let too_large = |n: u64| {
-        format!(
-            "{} is {}; phonglab reads {what} of at most {}",
-            path.display(),
-            phonglab_core::mesh::obj::describe_bytes(n),
-            phonglab_core::mesh::obj::describe_bytes(cap)
+        t!(
+            "read-too-large",
+            path = shown.clone(),
+            size = phonglab_core::mesh::obj::describe_bytes(n),
+            what = what,
+            cap = phonglab_core::mesh::obj::describe_bytes(cap)
         )
     };
     if meta.len() > cap {
@@ -42,7 +47,7 @@ pub fn read_capped(path: &Path, cap: u64, what: &str) -> Result<Vec<u8>, String>
 pub fn read_text_capped(path: &Path, cap: u64, what: &str) -> Result<String, String> {
     let bytes = read_capped(path, cap, what)?;
     String::from_utf8(bytes)
-        .map_err(|e| format!("{} is not UTF-8 text (byte {})", path.display(), e.utf8_error().valid_up_to()))
+        .map_err(|e| t!("read-not-utf8", path = path.display().to_string(), byte = e.utf8_error().valid_up_to()))
 }
 
 #[cfg(test)]

@@ -12,6 +12,7 @@ pub mod file_dialog;
 pub mod gpu;
 pub mod image_io;
 pub mod input_file;
+pub mod io_text;
 pub mod platform;
 pub mod scenes;
 pub mod screenshot_cmd;

@@ -116,7 +116,7 @@ pub fn empty_share(rgba: &[u8], width: usize, height: usize, background: egui::C
 /// Runs `phonglab screenshot`.
 pub fn run(a: &ScreenshotArgs) -> Result<()> {
     if !(0.5..=4.0).contains(&a.scale) {
-        bail!("--scale {}: from 0.5 to 4", a.scale);
+        bail!(phonglab_core::t!("err-scale", scale = phonglab_core::locale::decimal(&a.scale.to_string())));
     }
     crate::atomic_write::check_file_destination(&a.output)?;
     let doc = match &a.scene {

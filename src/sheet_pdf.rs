@@ -321,5 +321,5 @@ pub fn pdf(blocks: &[Block]) -> Result<Vec<u8>> {
         surface.finish();
         page.finish();
     }
-    doc.finish().map_err(|e| anyhow::anyhow!("cannot write the PDF: {e:?}"))
+    doc.finish().map_err(|e| anyhow::anyhow!(phonglab_core::t!("pdf-cannot-write", error = format!("{e:?}"))))
 }

@@ -604,3 +604,48 @@ fn bench_lighting_says_where_the_time_goes_stage_by_stage() {
         assert!(total > 0.0 && (parts - total).abs() <= 0.02 * total + 0.05, "{parts} vs {total}");
     }
 }
+
+/// Runs the binary with the system's language `lang`.
+fn phonglab_in(lang: &str, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_phonglab"))
+        .env_remove("LC_ALL")
+        .env_remove("LC_MESSAGES")
+        .env("LANG", lang)
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+#[test]
+fn errors_tables_and_file_names_in_portuguese_data_in_english() {
+    // A missing file, a device, an unwritable place, an unknown preset: said in Portuguese,
+    // the system's reason too.
+    let o = phonglab_in("pt_PT.UTF-8", &["eval", "/no/such/cases.json"]);
+    assert_eq!(stderr(&o).trim(), "phonglab: não foi possível ler /no/such/cases.json: não existe");
+    let o = phonglab_in("pt_BR.UTF-8", &["explain", "/dev/zero"]);
+    assert_eq!(stderr(&o).trim(), "phonglab: /dev/zero não é um arquivo comum");
+    let o = phonglab_in("pt_PT.UTF-8", &["render", "-o", "/no/such/folder/x.png"]);
+    assert!(
+        stderr(&o).contains("não foi possível escrever /no/such/folder/x.png: criar: não existe; nada foi escrito"),
+        "{}",
+        stderr(&o)
+    );
+    let o = phonglab_in("pt_PT.UTF-8", &["render", "--preset", "foo", "-o", "/tmp/x.png"]);
+    assert!(stderr(&o).contains("cena pronta desconhecida \"foo\""), "{}", stderr(&o));
+    // The cost table in Portuguese, with decimal commas; its files keep English names and
+    // the CSV English keys and decimal points.
+    let dir = std::env::temp_dir().join(format!("phonglab-cost-pt-{}", std::process::id()));
+    let out = dir.to_str().unwrap();
+    let o = phonglab_in("pt_PT.UTF-8", &["cost", "--quick", "--object", "cylinder", "--size", "32", "--out", out]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let table = stdout(&o);
+    assert!(table.starts_with("# Cilindro: 32x32 px, referência com 80000 triângulos"), "{table}");
+    assert!(table.contains("variante") && table.contains("Phong 32, pow de Schlick"), "{table}");
+    let row = table.lines().find(|l| l.starts_with("Gouraud 8 ")).unwrap();
+    assert!(row.contains(',') && !row.contains('.'), "{row}");
+    assert!(dir.join("heat-cylinder-phong-32.png").exists());
+    let csv = std::fs::read_to_string(dir.join("cost.csv")).unwrap();
+    let line = csv.lines().find(|l| l.contains("Schlick")).unwrap();
+    assert!(line.starts_with("cylinder,\"Phong 32, Schlick pow\",Approximation,Phong,32,"), "{line}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

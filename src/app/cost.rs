@@ -213,16 +213,17 @@ fn approximation_marker(k: usize) -> MarkerShape {
     [MarkerShape::Diamond, MarkerShape::Square, MarkerShape::Cross, MarkerShape::Up, MarkerShape::Down][k % 5]
 }
 
-/// `10^v` for a log-scale axis, with few digits.
+/// `10^v` for a log-scale axis, with few digits, in the language's decimal mark.
 fn pow10_label(v: f64) -> String {
     let x = 10f64.powf(v);
-    if x >= 10.0 {
+    let text = if x >= 10.0 {
         format!("{x:.0}")
     } else if x >= 1.0 {
         format!("{x:.1}")
     } else {
         format!("{x:.2}")
-    }
+    };
+    locale::decimal(&text)
 }
 
 /// The chart: ms per frame (median; the best of the rounds) across, mean error (1/255) up, both logarithmic; the
@@ -269,7 +270,7 @@ pub fn cost_chart_ui(ui: &mut Ui, study: &Study, height: f32) {
                     _ => approximation_marker(k),
                 };
                 // Named in the legend (outside the data, below the plot), not on the plot.
-                let name = q.variant.label.clone();
+                let name = q.variant.name();
                 p.points(Points::new(name, PlotPoints::from(vec![at])).color(c).radius(6.0).shape(shape).filled(true));
             }
             // 8-bit rounding alone leaves a mean error of about 1/4 of a step.
@@ -292,12 +293,12 @@ pub fn cost_table_ui(ui: &mut Ui, study: &Study) {
         }
         ui.end_row();
         for p in &study.points {
-            ui.colored_label(series_color(p.variant.question, p.variant.shading), &p.variant.label);
+            ui.colored_label(series_color(p.variant.question, p.variant.shading), p.variant.name());
             ui.monospace(p.triangles.to_string());
-            ui.monospace(format!("{:.2}", p.ms));
-            ui.monospace(format!("{:.2}", p.error.mean));
-            ui.monospace(format!("{:.1}", p.error.max));
-            ui.monospace(format!("{:.1} %", 100.0 * p.error.share_over_one));
+            ui.monospace(locale::decimal(&format!("{:.2}", p.ms)));
+            ui.monospace(locale::decimal(&format!("{:.2}", p.error.mean)));
+            ui.monospace(locale::decimal(&format!("{:.1}", p.error.max)));
+            ui.monospace(locale::decimal(&format!("{:.1} %", 100.0 * p.error.share_over_one)));
             ui.end_row();
         }
     });
@@ -310,7 +311,7 @@ pub fn takeaways(study: &Study) -> Vec<String> {
     if let Some(best) = study.points.iter().filter(good).min_by(|a, b| a.ms.total_cmp(&b.ms)) {
         out.push(t!(
             "cost-cheapest",
-            variant = best.variant.label.to_string(),
+            variant = best.variant.name(),
             triangles = best.triangles,
             ms = locale::decimal(&format!("{:.2}", best.ms))
         ));

@@ -38,7 +38,7 @@ fn open_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
     if is_obj(path) {
         return open_obj_or_why(state, path);
     }
-    let bytes = crate::input_file::read_capped(path, crate::input_file::MAX_SCENE_BYTES, "scene files")?;
+    let bytes = crate::input_file::read_capped(path, crate::input_file::MAX_SCENE_BYTES, &t!("file-kind-scenes"))?;
     open_bytes_or_why(state, &bytes, path)
 }
 
@@ -180,7 +180,7 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
     // A file on this machine is read with the scene files' cap; the integration's bytes
     // otherwise.
     let bytes = if path.exists() {
-        crate::input_file::read_capped(&path, crate::input_file::MAX_SCENE_BYTES, "scene files")
+        crate::input_file::read_capped(&path, crate::input_file::MAX_SCENE_BYTES, &t!("file-kind-scenes"))
     } else {
         file.bytes().map_err(|e| t!("cannot-read", path = path.display().to_string(), error = e.to_string()))
     };

@@ -527,6 +527,68 @@ allowed-mview = 1, 2, 3, 4 or 5
 allowed-look-at = an eye away from the centre, with up not along the view direction
 allowed-pixel = at least 1 pixel
 
+## io-errors
+
+io-not-found = it does not exist
+io-permission-denied = permission denied
+io-storage-full = the disk is full
+io-is-a-directory = it is a folder
+io-not-a-directory = a part of the path is not a folder
+io-read-only = the file system is read-only
+io-already-exists = it already exists
+io-invalid-name = not a file name
+write-error = cannot write { $path }: { $what }: { $reason }; { $kept }
+write-step-open = open
+write-step-write = write
+write-step-close = close
+write-step-sync = sync to the disk
+write-step-create = create
+write-step-rename = rename
+write-step-name = name
+write-step-create-folder = create the folder
+write-step-create-file-in = create a file in
+write-step-create-staging = create a staging folder in
+write-step-list = list
+write-kept-not-a-file = it is not a file, so nothing was kept
+write-kept-file = the file there before (if any) is unchanged
+write-kept-nothing = nothing was written
+write-kept-folder = the folder is unchanged
+read-cannot = cannot read { $path }: { $reason }
+read-not-a-file = { $path } is not a regular file
+read-too-large = { $path } is { $size }; phonglab reads { $what } of at most { $cap }
+read-not-utf8 = { $path } is not UTF-8 text (byte { $byte })
+file-kind-scenes = scene files
+file-kind-cases = case files
+png-cannot-encode = cannot encode the PNG
+png-too-large = image too large
+png-colour-type = { $path }: unexpected colour type { $kind }
+pdf-cannot-write = cannot write the PDF: { $error }
+err-scale = --scale { $scale }: from 0.5 to 4
+err-spin = --spin must be a finite number of degrees
+err-study-stopped = the study stopped
+err-rules = --rules { $value }: try worksheet or opengl
+err-effects = --effects: { $value } is not one of { $names }
+err-level = --level is 1 to 4
+err-target = --target { $value }: try glsl or wgsl
+err-shading = --shading { $value }: try gouraud or phong
+err-not-case-file = not a case file
+err-cases-failed = { $failed } of { $all } cases failed (their "error" says why)
+err-unknown-preset = unknown preset { $value }: try { $names }
+err-bench-frame-obj = --bench-frame draws the benchmark's sphere, teapot or cylinder; use --obj without it
+err-scene-to-render = the scene to render
+err-bench-object = --object { $value }: the benchmark's objects are sphere and teapot
+err-bench-shading = --shading { $value }: the shadings are gouraud, phong and flat
+err-bench-slices = --slices { $value }: the sphere takes 3 to 1024 slices (the benchmark's is 50)
+err-study-timeout = the study did not finish in 5 minutes
+bench-render-header = phonglab bench render: { $size }x{ $size } px, { $frames } frames, { $threads } threads; the stages' mean ms: vertices, setup, raster, resolve
+bench-lighting-header = phonglab bench lighting: { $vertices } vertices, best of { $repeats }, one thread, f32
+bench-memory-floor = memory floor: the same arrays read and written with no lighting, { $ns } ns per vertex ({ $gbs } GB/s of the { $bytes } bytes a vertex moves)
+bench-stages-header = where the specialised time goes (ns per vertex; reading the clock adds ~0.2 a step)
+bench-ui-present-header = phonglab bench ui --present: { $width }x{ $height } points, presentation mode with the controls drawer out, { $frames } frames per case; each frame the light's z moves as a dragged slider moves it; CPU ms (layout includes the scene's evaluation and the shaded view's render)
+bench-ui-header = phonglab bench ui: { $width }x{ $height } points, every panel open, { $frames } frames per case, CPU ms (layout includes the scene's evaluation and the shaded view's render when it changed)
+err-lang = { $value }: phonglab speaks en, pt-PT and pt-BR
+err-decimal = { $value }: point or comma
+
 ## limits
 
 limit-light-at-vertex = the light is at the vertex: L has no direction, so no diffuse or specular; its ambient stays, attenuated at d = 0
@@ -565,6 +627,13 @@ heat-map-computing = Error heat map: computing the reference...
 heat-map-caption = Error against the f64 reference: mean { $mean }/255, max { $max }/255, { $share } % of pixels > 1/255 (white: { $white }/255)
 cost-failed = The study failed: { $error }
 heat-map-failed = The heat map failed: { $error }
+cost-table-title = { $object }: { $size }x{ $size } px, reference { $triangles } triangles (f64, per pixel); errors in 1/255 against it
+cost-over-column = >1/255 %
+cost-chart-title = { $object }: time per frame against mean error ({ $size }x{ $size } px, reference: per-pixel Phong in f64, { $triangles } triangles)
+cost-approx-llvmpipe-pow = llvmpipe pow
+cost-approx-schlick-pow = Schlick pow
+cost-approx-fast-rsqrt = fast rsqrt
+cost-approx-no-renormalisation = no renormalisation
 
 ## cli
 

@@ -527,6 +527,68 @@ allowed-mview = 1, 2, 3, 4 ou 5
 allowed-look-at = um olho afastado do centro, com o vetor para cima fora da direção de vista
 allowed-pixel = pelo menos 1 píxel
 
+## io-errors
+
+io-not-found = não existe
+io-permission-denied = sem permissão
+io-storage-full = o disco está cheio
+io-is-a-directory = é uma pasta
+io-not-a-directory = uma parte do caminho não é uma pasta
+io-read-only = o sistema de ficheiros é só de leitura
+io-already-exists = já existe
+io-invalid-name = não é um nome de ficheiro
+write-error = não foi possível escrever { $path }: { $what }: { $reason }; { $kept }
+write-step-open = abrir
+write-step-write = escrever
+write-step-close = fechar
+write-step-sync = sincronizar com o disco
+write-step-create = criar
+write-step-rename = mudar o nome
+write-step-name = nome
+write-step-create-folder = criar a pasta
+write-step-create-file-in = criar um ficheiro em
+write-step-create-staging = criar uma pasta temporária em
+write-step-list = listar
+write-kept-not-a-file = não é um ficheiro, por isso nada foi guardado
+write-kept-file = o ficheiro que lá estava (se havia) não mudou
+write-kept-nothing = nada foi escrito
+write-kept-folder = a pasta não mudou
+read-cannot = não foi possível ler { $path }: { $reason }
+read-not-a-file = { $path } não é um ficheiro normal
+read-too-large = { $path } tem { $size }; o phonglab lê { $what } de no máximo { $cap }
+read-not-utf8 = { $path } não é texto UTF-8 (byte { $byte })
+file-kind-scenes = ficheiros de cena
+file-kind-cases = ficheiros de casos
+png-cannot-encode = não foi possível codificar o PNG
+png-too-large = imagem grande demais
+png-colour-type = { $path }: tipo de cor inesperado { $kind }
+pdf-cannot-write = não foi possível escrever o PDF: { $error }
+err-scale = --scale { $scale }: de 0,5 a 4
+err-spin = --spin tem de ser um número finito de graus
+err-study-stopped = o estudo parou
+err-rules = --rules { $value }: experimente worksheet ou opengl
+err-effects = --effects: { $value } não é nenhum de { $names }
+err-level = --level vai de 1 a 4
+err-target = --target { $value }: experimente glsl ou wgsl
+err-shading = --shading { $value }: experimente gouraud ou phong
+err-not-case-file = não é um ficheiro de casos
+err-cases-failed = { $failed } de { $all } casos falharam (o seu "error" diz porquê)
+err-unknown-preset = cena pronta desconhecida { $value }: experimente { $names }
+err-bench-frame-obj = --bench-frame desenha a esfera, o bule ou o cilindro de referência; use --obj sem ele
+err-scene-to-render = a cena a desenhar
+err-bench-object = --object { $value }: os objetos de referência são sphere (esfera) e teapot (bule)
+err-bench-shading = --shading { $value }: os sombreamentos são gouraud, phong e flat
+err-bench-slices = --slices { $value }: a esfera aceita de 3 a 1024 fatias (a de referência tem 50)
+err-study-timeout = o estudo não terminou em 5 minutos
+bench-render-header = phonglab bench render: { $size }x{ $size } px, { $frames } imagens, { $threads } threads; ms médios das etapas: vértices, preparação, rasterização, resolução
+bench-lighting-header = phonglab bench lighting: { $vertices } vértices, a melhor de { $repeats }, uma thread, f32
+bench-memory-floor = limite da memória: os mesmos arrays lidos e escritos sem iluminação, { $ns } ns por vértice ({ $gbs } GB/s dos { $bytes } bytes que um vértice move)
+bench-stages-header = onde se gasta o tempo especializado (ns por vértice; ler o relógio soma ~0,2 por etapa)
+bench-ui-present-header = phonglab bench ui --present: { $width }x{ $height } pontos, modo de apresentação com a gaveta dos controlos aberta, { $frames } imagens por caso; em cada imagem o z da luz move-se como o move um slider arrastado; ms de CPU (o layout inclui o cálculo da cena e o desenho da vista sombreada)
+bench-ui-header = phonglab bench ui: { $width }x{ $height } pontos, todos os painéis abertos, { $frames } imagens por caso, ms de CPU (o layout inclui o cálculo da cena e o desenho da vista sombreada quando mudou)
+err-lang = { $value }: o phonglab fala en, pt-PT e pt-BR
+err-decimal = { $value }: point (ponto) ou comma (vírgula)
+
 ## limits
 
 limit-light-at-vertex = a luz está no vértice: L não tem direção, por isso não há difusa nem especular; a sua componente ambiente fica, atenuada em d = 0
@@ -565,6 +627,13 @@ heat-map-computing = Mapa de calor do erro: a calcular a referência...
 heat-map-caption = Erro face à referência f64: média { $mean }/255, máximo { $max }/255, { $share } % dos píxeis > 1/255 (branco: { $white }/255)
 cost-failed = O estudo falhou: { $error }
 heat-map-failed = O mapa de calor falhou: { $error }
+cost-table-title = { $object }: { $size }x{ $size } px, referência com { $triangles } triângulos (f64, por píxel); erros em 1/255 em relação a ela
+cost-over-column = >1/255 %
+cost-chart-title = { $object }: tempo por imagem contra erro médio ({ $size }x{ $size } px, referência: Phong por píxel em f64, { $triangles } triângulos)
+cost-approx-llvmpipe-pow = pow do llvmpipe
+cost-approx-schlick-pow = pow de Schlick
+cost-approx-fast-rsqrt = rsqrt rápida
+cost-approx-no-renormalisation = sem renormalizar
 
 ## cli
 

@@ -23,7 +23,17 @@ impl ObjectKind {
     /// All three, in menu order (the demo's keys s, t, c).
     pub const ALL: [ObjectKind; 3] = [ObjectKind::Sphere, ObjectKind::Teapot, ObjectKind::Cylinder];
 
-    /// A name for menus.
+    /// The name in files and data (scene files, CSV columns, file names): the serde name.
+    pub fn key(self) -> &'static str {
+        match self {
+            ObjectKind::Sphere => "sphere",
+            ObjectKind::Teapot => "teapot",
+            ObjectKind::Cylinder => "cylinder",
+            ObjectKind::Obj => "obj",
+        }
+    }
+
+    /// A name for menus, in the current language.
     pub fn label(self) -> String {
         match self {
             ObjectKind::Sphere => crate::t!("object-sphere"),

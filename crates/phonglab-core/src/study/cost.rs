@@ -252,8 +252,11 @@ pub enum Question {
 /// One way to draw the object.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Variant {
-    /// A short name, e.g. "Gouraud 32" or "Phong 32, Schlick pow".
+    /// A short name in English, the key of data (the CSV's `variant` column), e.g.
+    /// "Gouraud 32" or "Phong 32, Schlick pow"; [`Variant::name`] is for people.
     pub label: String,
+    /// The approximation's message id, for [`Question::Approximation`].
+    pub approximation: Option<&'static str>,
     /// The shading.
     pub shading: Shading,
     /// The tessellation level ([`levels`]).
@@ -262,6 +265,18 @@ pub struct Variant {
     pub options: EvalOptions,
     /// What it is for.
     pub question: Question,
+}
+
+impl Variant {
+    /// The name for people, in the current language: "Phong 32, pow de Schlick".
+    pub fn name(&self) -> String {
+        match (self.question, self.approximation) {
+            (Question::Approximation, Some(id)) => {
+                format!("{} {}, {}", self.shading.label(), self.level, crate::locale::tr(id))
+            }
+            _ => self.label.clone(),
+        }
+    }
 }
 
 /// The variants studied for `object`: Flat, Gouraud and Phong at each of [`levels`];
@@ -273,6 +288,7 @@ pub fn variants(object: ObjectKind) -> Vec<Variant> {
         for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
             v.push(Variant {
                 label: format!("{} {level}", shading.label()),
+                approximation: None,
                 shading,
                 level,
                 options: EvalOptions::default(),
@@ -283,6 +299,7 @@ pub fn variants(object: ObjectKind) -> Vec<Variant> {
     let r = reference_level(object);
     v.push(Variant {
         label: format!("Phong {r} (f32)"),
+        approximation: None,
         shading: Shading::Phong,
         level: r,
         options: EvalOptions::default(),
@@ -290,14 +307,23 @@ pub fn variants(object: ObjectKind) -> Vec<Variant> {
     });
     let mid = levels(object)[2];
     let approx = [
-        ("llvmpipe pow", EvalOptions::with_pow(PowFn::Llvmpipe)),
-        ("Schlick pow", EvalOptions::with_pow(PowFn::Schlick)),
-        ("fast rsqrt", EvalOptions { renormalize: Renormalize::FastRsqrt, ..EvalOptions::default() }),
-        ("no renormalisation", EvalOptions { renormalize: Renormalize::Skip, ..EvalOptions::default() }),
+        ("llvmpipe pow", "cost-approx-llvmpipe-pow", EvalOptions::with_pow(PowFn::Llvmpipe)),
+        ("Schlick pow", "cost-approx-schlick-pow", EvalOptions::with_pow(PowFn::Schlick)),
+        (
+            "fast rsqrt",
+            "cost-approx-fast-rsqrt",
+            EvalOptions { renormalize: Renormalize::FastRsqrt, ..EvalOptions::default() },
+        ),
+        (
+            "no renormalisation",
+            "cost-approx-no-renormalisation",
+            EvalOptions { renormalize: Renormalize::Skip, ..EvalOptions::default() },
+        ),
     ];
-    for (name, options) in approx {
+    for (name, id, options) in approx {
         v.push(Variant {
             label: format!("Phong {mid}, {name}"),
+            approximation: Some(id),
             shading: Shading::Phong,
             level: mid,
             options,
@@ -576,7 +602,7 @@ pub fn to_csv(study: &Study) -> String {
     for p in &study.points {
         s.push_str(&format!(
             "{},{},{:?},{},{},{},{:.4},{:.4},{:.3},{:.6}\n",
-            study.object.label().to_lowercase(),
+            study.object.key(),
             csv_field(&p.variant.label),
             p.variant.question,
             p.variant.shading.label(),
