@@ -4,8 +4,10 @@
 //! For exercise k (numbered from 1; 0 is the worksheet itself, with `--worksheet`) it
 //! writes `exercise-KK.md` (the sheet), `exercise-KK-key.md` (the answers) and
 //! `exercise-KK.toml` (the scene, which the app and every command open), `index.md`
-//! listing them, `sheets.pdf` (to hand out: one exercise a page, with lines for the class,
-//! the name and the date) and `keys.pdf` (for the teacher), typeset by [`crate::sheet_pdf`]
+//! listing them, `sheets.pdf` (to hand out: each exercise starts a page and takes an even
+//! number of them, two for levels 1 to 3, so printed on both sides it is one sheet of
+//! paper; the lines for the class, the name and the date; each page's footer names its
+//! exercise and counts its pages) and `keys.pdf` (for the teacher), typeset by [`crate::sheet_pdf`]
 //! in the chosen language. The same seed gives the same files, byte for byte.
 //! The set is written as one: a folder holds one whole set, never parts of two.
 
@@ -19,7 +21,7 @@ use phonglab_core::explain::{Side, explain};
 use phonglab_core::{Document, Engine, Rules};
 
 use crate::atomic_write::FileSet;
-use crate::sheet_pdf::{Block, pdf};
+use crate::sheet_pdf::{Block, Pages, pdf};
 use phonglab_core::t;
 
 /// `phonglab exercise`.
@@ -125,6 +127,7 @@ fn worksheet_sheet(set: &mut FileSet, sheets: &mut Vec<Block>, keys: &mut Vec<Bl
     let mut sheet = format!("# {}\n\n{}\n\n", t!("exercise-zero-title"), t!("exercise-zero-intro"));
     let mut key = format!("# {}\n\n", t!("key-title", name = t!("exercise-zero-name")));
     sheets.extend([
+        Block::Section(t!("exercise-zero-title")),
         Block::Title(t!("exercise-zero-title")),
         Block::WriteOn(vec![t!("sheet-class"), t!("sheet-name"), t!("sheet-date")]),
         Block::Text(t!("exercise-zero-intro").replace('`', "")),
@@ -268,10 +271,11 @@ pub fn exercise_set(a: &ExerciseArgs) -> Result<(Vec<Exercise>, FileSet)> {
         t!("index-title", seed = a.seed.to_string()),
         t!("index-intro", effects = effects, rules = &a.rules)
     );
-    // To hand out, one exercise per page; and the keys, for the teacher.
+    // To hand out, each exercise on its own paper; and the keys, for the teacher.
     let (mut sheets, mut keys) = (Vec::new(), Vec::new());
     if a.worksheet {
-        keys.push(Block::Title(t!("key-title", name = t!("exercise-zero-name"))));
+        let title = t!("key-title", name = t!("exercise-zero-name"));
+        keys.extend([Block::Section(title.clone()), Block::Title(title)]);
         index.push_str(&worksheet_sheet(&mut set, &mut sheets, &mut keys)?);
     }
     for (i, ex) in exercises.iter().enumerate() {
@@ -281,18 +285,17 @@ pub fn exercise_set(a: &ExerciseArgs) -> Result<(Vec<Exercise>, FileSet)> {
         let sheet = format!("{}\n{}\n", sheet_markdown(ex), t!("sheet-scene-file", file = &toml));
         set.add(format!("{stem}.md"), sheet.clone());
         set.add(format!("{stem}-key.md"), answer_key(&ex.doc, &toml)?);
-        for (all, page) in [(&mut sheets, sheet_blocks(ex, &toml)), (&mut keys, key_blocks(&ex.doc, &toml)?)] {
-            if !all.is_empty() {
-                all.push(Block::PageBreak);
-            }
-            all.extend(page);
-        }
+        sheets.push(Block::Section(ex.doc.name.clone()));
+        sheets.extend(sheet_blocks(ex, &toml));
+        keys.push(Block::Section(t!("key-title", name = &ex.doc.name)));
+        keys.extend(key_blocks(&ex.doc, &toml)?);
         let _ = writeln!(index, "- [{}]({stem}.md) ([{}]({stem}-key.md))", ex.doc.name, t!("answers"));
     }
     let _ = writeln!(index, "\n{}", t!("index-printable"));
     set.add("index.md", index);
-    set.add("sheets.pdf", pdf(&sheets)?);
-    set.add("keys.pdf", pdf(&keys)?);
+    // Sheets are printed on both sides and handed out: each exercise its own paper.
+    set.add("sheets.pdf", pdf(&sheets, Pages::Duplex)?);
+    set.add("keys.pdf", pdf(&keys, Pages::Plain)?);
     Ok((exercises, set))
 }
 

@@ -3,9 +3,13 @@
 //! headings, vectors and matrices set in brackets with their numbers in columns, and
 //! answer boxes sized for what goes in them (one cell per component of a vector).
 //!
-//! A document is a list of pages' [`Block`]s, laid out top to bottom; a block that does
-//! not fit goes to the next page. Nothing depends on the clock or on chance: the same
-//! blocks give the same bytes.
+//! A document is a list of [`Block`]s, laid out top to bottom; a block that does not fit
+//! goes to the next page. [`Block::Section`] starts a part on a new page (one exercise, one
+//! key) and names it in the footer of each of its pages, with "page k of n" counted within
+//! the part, so a page that comes loose from its exercise still says whose it is. Sheets to
+//! hand out give each part an even number of pages ([`Pages::Duplex`]): printed on both
+//! sides, every exercise is its own sheet(s) of paper. Nothing depends on the clock or on
+//! chance: the same blocks give the same bytes.
 
 use anyhow::{Context, Result};
 use krilla::geom::{PathBuilder, Point, Rect};
@@ -58,8 +62,18 @@ pub enum Block {
         /// `name = value`, as explain prints it.
         line: String,
     },
-    /// Start a new page.
-    PageBreak,
+    /// Start a part on a new page: its pages' footer says this, and "page k of n".
+    Section(String),
+}
+
+/// How the parts of a document are paginated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Pages {
+    /// Each part as long as it is (for reading on a screen, or printing one-sided).
+    Plain,
+    /// Each part padded with a blank page to an even count, so that printed on both sides
+    /// no sheet of paper holds two parts.
+    Duplex,
 }
 
 /// The page: A4 in points, and the margins.
@@ -123,27 +137,91 @@ enum Mark {
     Rect { x: f32, y: f32, w: f32, h: f32 },
 }
 
-/// The blocks laid out into pages of marks.
-fn layout(fonts: &Fonts, blocks: &[Block]) -> Vec<Vec<Mark>> {
+/// One laid-out page: the part it belongs to and its marks.
+struct LaidOut {
+    part: usize,
+    marks: Vec<Mark>,
+}
+
+/// The blocks laid out into pages of marks, each with its part (the blocks before the first
+/// [`Block::Section`] are part 0).
+fn layout(fonts: &Fonts, blocks: &[Block]) -> Vec<LaidOut> {
     let width = PAGE.0 - 2.0 * MARGIN;
-    let mut pages: Vec<Vec<Mark>> = vec![Vec::new()];
+    let mut pages = vec![LaidOut { part: 0, marks: Vec::new() }];
+    let mut part = 0;
     let mut y = MARGIN;
-    for block in blocks {
-        let height = block_height(fonts, block, width);
-        if matches!(block, Block::PageBreak) || y + height > PAGE.1 - MARGIN {
-            if !pages.last().is_some_and(Vec::is_empty) {
-                pages.push(Vec::new());
+    for (i, block) in blocks.iter().enumerate() {
+        if let Block::Section(_) = block {
+            part += 1;
+            match pages.last_mut() {
+                Some(last) if last.marks.is_empty() => last.part = part,
+                _ => pages.push(LaidOut { part, marks: Vec::new() }),
             }
             y = MARGIN;
-            if matches!(block, Block::PageBreak) {
-                continue;
-            }
+            continue;
+        }
+        let height = block_height(fonts, block, width);
+        // A heading stays with the block under it.
+        let needed = match (block, blocks.get(i + 1)) {
+            (Block::Heading(_), Some(next)) => height + block_height(fonts, next, width),
+            _ => height,
+        };
+        if y + needed > PAGE.1 - MARGIN && !pages.last().is_some_and(|p| p.marks.is_empty()) {
+            pages.push(LaidOut { part, marks: Vec::new() });
+            y = MARGIN;
         }
         let page = pages.last_mut().expect("a page");
-        draw_block(fonts, block, y, width, page);
+        draw_block(fonts, block, y, width, &mut page.marks);
         y += height;
     }
     pages
+}
+
+/// Pads each part to an even number of pages with a page that says it is blank.
+fn pad_to_even(fonts: &Fonts, pages: Vec<LaidOut>) -> Vec<LaidOut> {
+    let mut out: Vec<LaidOut> = Vec::with_capacity(pages.len() + 8);
+    let blank = |fonts: &Fonts, part: usize| {
+        let text = phonglab_core::t!("pdf-blank-page");
+        let x = (PAGE.0 - fonts.width(&text, BODY, false)) / 2.0;
+        LaidOut { part, marks: vec![Mark::Text { at: (x, PAGE.1 / 2.0), text, size: BODY, mono: false }] }
+    };
+    let mut count = 0;
+    for page in pages {
+        if let Some(last) = out.last()
+            && last.part != page.part
+            && count % 2 == 1
+        {
+            out.push(blank(fonts, last.part));
+        }
+        count = if out.last().is_some_and(|l| l.part == page.part) { count + 1 } else { 1 };
+        out.push(page);
+    }
+    if count % 2 == 1
+        && let Some(part) = out.last().map(|l| l.part)
+    {
+        out.push(blank(fonts, part));
+    }
+    out
+}
+
+/// Each page's footer: its part's name on the left, "page k of n" (within the part) on the
+/// right.
+fn add_footers(fonts: &Fonts, pages: &mut [LaidOut], names: &[String]) {
+    let size = BODY - 2.0;
+    let base = PAGE.1 - MARGIN / 2.0;
+    for i in 0..pages.len() {
+        let part = pages[i].part;
+        let first = pages.iter().position(|p| p.part == part).unwrap_or(i);
+        let count = pages.iter().filter(|p| p.part == part).count();
+        let name = names.get(part).cloned().unwrap_or_default();
+        let number = phonglab_core::t!("pdf-page", page = (i - first + 1).to_string(), pages = count.to_string());
+        let marks = &mut pages[i].marks;
+        if !name.is_empty() {
+            marks.push(Mark::Text { at: (MARGIN, base), text: name, size, mono: false });
+        }
+        let x = PAGE.0 - MARGIN - fonts.width(&number, size, false);
+        marks.push(Mark::Text { at: (x, base), text: number, size, mono: false });
+    }
 }
 
 /// The rows of a vector's or a matrix's numbers: the widest number sets every column.
@@ -166,7 +244,7 @@ fn block_height(fonts: &Fonts, block: &Block, width: f32) -> f32 {
                 + NUMBERS * 1.5
                 + 8.0
         }
-        Block::PageBreak => 0.0,
+        Block::Section(_) => 0.0,
     }
 }
 
@@ -275,15 +353,26 @@ fn draw_block(fonts: &Fonts, block: &Block, y: f32, width: f32, page: &mut Vec<M
             }
             text(page, (x + 14.0, at + NUMBERS * 1.5), line, NUMBERS, true);
         }
-        Block::PageBreak => {}
+        Block::Section(_) => {}
     }
 }
 
-/// The PDF of `blocks`.
-pub fn pdf(blocks: &[Block]) -> Result<Vec<u8>> {
+/// The PDF of `blocks`, its parts paginated as `pages` says.
+pub fn pdf(blocks: &[Block], pages: Pages) -> Result<Vec<u8>> {
     let fonts = Fonts::new()?;
     let mut doc = krilla::Document::new();
-    for marks in layout(&fonts, blocks) {
+    let names: Vec<String> = std::iter::once(String::new())
+        .chain(blocks.iter().filter_map(|b| match b {
+            Block::Section(name) => Some(name.clone()),
+            _ => None,
+        }))
+        .collect();
+    let mut laid_out = layout(&fonts, blocks);
+    if pages == Pages::Duplex {
+        laid_out = pad_to_even(&fonts, laid_out);
+    }
+    add_footers(&fonts, &mut laid_out, &names);
+    for LaidOut { marks, .. } in laid_out {
         let settings = PageSettings::from_wh(PAGE.0, PAGE.1).context("A4")?;
         let mut page = doc.start_page_with(settings);
         let mut surface = page.surface();

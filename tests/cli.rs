@@ -513,14 +513,23 @@ fn the_pdfs_are_typeset_sheets_to_hand_out_and_keys_for_the_teacher() {
     // The sheets: each exercise starts a page, with the lines to write on, and no answers.
     let sheets = text_of("sheets.pdf", None);
     assert!(sheets.contains("Class:") && sheets.contains("Name:") && sheets.contains("Date:"), "{sheets}");
+    let pages: Vec<String> =
+        (1..=40).map(|p| text_of("sheets.pdf", Some((p, p)))).take_while(|t| !t.is_empty()).collect();
     for k in 1..=3 {
         let title = format!("exercise {k} (seed 5)");
-        let page = (1..=12).find(|p| text_of("sheets.pdf", Some((*p, *p))).contains(&title)).unwrap();
-        assert!(
-            text_of("sheets.pdf", Some((page, page))).trim_start().starts_with(&title),
-            "exercise {k} opens page {page}"
-        );
+        let page = pages.iter().position(|t| t.contains(&title)).unwrap();
+        assert!(pages[page].trim_start().starts_with(&title), "exercise {k} opens page {}", page + 1);
+        // Each page of it names it in the footer and counts its pages, an even number (a
+        // blank back page where needed), so that printed on both sides it is its own paper.
+        let count = pages.iter().filter(|t| t.contains(&title)).count();
+        assert!(count >= 2 && count.is_multiple_of(2), "exercise {k}: {count} pages");
+        for n in 1..=count {
+            let t = &pages[page + n - 1];
+            assert!(t.contains(&title) && t.contains(&format!("page {n} of {count}")), "exercise {k} page {n}:\n{t}");
+        }
     }
+    assert!(pages.len().is_multiple_of(2), "{} pages", pages.len());
+    assert!(pages.iter().any(|t| t.contains("This page is left blank on purpose.")), "level 4 pads an exercise");
     // The keys hold every answer, as explain prints it.
     let keys = text_of("keys.pdf", None);
     let mut values = 0;

@@ -492,13 +492,15 @@ answers = answers
 index-directional-only = one directional light only
 index-title = Exercises, seed { $seed }
 index-intro = Effects: { $effects }. Rules: { $rules }. Each sheet has its scene file (open it in phonglab) and its answers.
-index-printable = To print: [sheets.pdf](sheets.pdf) (to hand out, one exercise a page) and [keys.pdf](keys.pdf) (the answers, for the teacher).
+index-printable = To print: [sheets.pdf](sheets.pdf) (to hand out: print it on both sides, and each exercise is its own sheet of paper) and [keys.pdf](keys.pdf) (the answers, for the teacher).
 
 ## pdf
 
 sheet-class = Class
 sheet-name = Name
 sheet-date = Date
+pdf-page = page { $page } of { $pages }
+pdf-blank-page = This page is left blank on purpose.
 
 ## cli
 

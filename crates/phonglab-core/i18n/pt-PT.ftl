@@ -492,13 +492,15 @@ answers = respostas
 index-directional-only = só uma luz direcional
 index-title = Exercícios, semente { $seed }
 index-intro = Efeitos: { $effects }. Regras: { $rules }. Cada ficha tem o seu ficheiro de cena (abre-o no phonglab) e as suas respostas.
-index-printable = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir, um exercício por página) e [keys.pdf](keys.pdf) (as respostas, para o professor).
+index-printable = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir: impresso frente e verso, cada exercício fica na sua própria folha) e [keys.pdf](keys.pdf) (as respostas, para o professor).
 
 ## pdf
 
 sheet-class = Turma
 sheet-name = Nome
 sheet-date = Data
+pdf-page = página { $page } de { $pages }
+pdf-blank-page = Esta página foi deixada em branco propositadamente.
 
 ## cli
 
