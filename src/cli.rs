@@ -455,7 +455,11 @@ pub fn load_scene_file(path: &Path) -> Result<phonglab_core::Document> {
 fn explain_scene(a: &ExplainArgs) -> Result<(Scene, String)> {
     if let Some(p) = &a.scene {
         let doc = load_scene_file(p)?;
-        let name = if doc.name.is_empty() { p.display().to_string() } else { doc.name.clone() };
+        let name = if doc.name.is_empty() {
+            p.display().to_string()
+        } else {
+            phonglab_core::locale::localised_name(&doc.name)
+        };
         return Ok((doc.scene, name));
     }
     if let Some(p) = &a.preset {

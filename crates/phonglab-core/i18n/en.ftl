@@ -55,6 +55,10 @@ preset-worksheet = Worksheet, { $modelview }
 preset-phong-demo = Phong demo
 preset-spotlight = Spotlight
 preset-three-lights = Three lights
+doc-phong-demo = the Phong demo
+doc-spotlight = a spotlight
+doc-three-lights = three coloured lights and a headlight
+doc-redbook-teapot = Red Book teapots: { $material }
 
 ## controls
 

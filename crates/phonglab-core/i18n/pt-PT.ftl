@@ -55,6 +55,10 @@ preset-worksheet = Ficha, { $modelview }
 preset-phong-demo = Demo de Phong
 preset-spotlight = Foco
 preset-three-lights = Três luzes
+doc-phong-demo = a demo de Phong
+doc-spotlight = um foco
+doc-three-lights = três luzes coloridas e uma luz presa ao observador
+doc-redbook-teapot = bules do Red Book: { $material }
 
 ## controls
 

@@ -195,8 +195,9 @@ pub fn num(x: f64, sig: usize) -> String {
     decimal(&crate::explain::fmt_sig(x, sig))
 }
 
-/// A document's name as this language says it: the built-in scenes' names (the worksheet's,
-/// in whichever language they were made) in the current language; any other name as it is.
+/// A document's name as this language says it: the built-in and shipped scenes' names (in
+/// whichever language they were made: scene files keep the English) in the current
+/// language; any other name as it is.
 pub fn localised_name(name: &str) -> String {
     for id in ["doc-worksheet", "doc-worksheet-preset"] {
         for k in 1..=5 {
@@ -205,6 +206,15 @@ pub fn localised_name(name: &str) -> String {
                 return tr_args(id, &args);
             }
         }
+    }
+    for id in ["doc-phong-demo", "doc-spotlight", "doc-three-lights"] {
+        if Lang::ALL.iter().any(|l| tr_in(*l, id, &[]) == name) {
+            return tr(id);
+        }
+    }
+    if let Some(material) = name.strip_prefix("Red Book teapots: ") {
+        let material = crate::materials::display_name(&material.replace(' ', "-"));
+        return tr_args("doc-redbook-teapot", &[("material", Arg::Text(material))]);
     }
     name.to_string()
 }
@@ -250,6 +260,13 @@ mod tests {
         assert_eq!(with_locale(Locale::of(Lang::PtBr), || localised_name("Ficha, mview3")), "Ficha, mview3");
         assert_eq!(with_locale(Locale::of(Lang::En), || localised_name("Ficha, mview3")), "Worksheet, mview3");
         assert_eq!(localised_name("my scene"), "my scene");
+        // The shipped scene files' names (English in the files).
+        let pt = |name: &str| with_locale(Locale::of(Lang::PtPt), || localised_name(name));
+        assert_eq!(pt("the Phong demo"), "a demo de Phong");
+        assert_eq!(pt("a spotlight"), "um foco");
+        assert_eq!(pt("three coloured lights and a headlight"), "três luzes coloridas e uma luz presa ao observador");
+        assert_eq!(pt("Red Book teapots: yellow rubber"), "bules do Red Book: borracha amarela");
+        assert_eq!(with_locale(Locale::of(Lang::En), || localised_name("um foco")), "a spotlight");
     }
 
     #[test]
