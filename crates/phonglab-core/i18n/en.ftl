@@ -532,6 +532,17 @@ allowed-float = a float: 0, or 1.2e-38 <= |x| <= 3.4e38
 allowed-mview = 1, 2, 3, 4 or 5
 allowed-look-at = an eye away from the centre, with up not along the view direction
 allowed-pixel = at least 1 pixel
+toml-place = line { $line }, column { $column }
+toml-unknown-field = unknown field { $field }, expected one of { $known }
+toml-did-you-mean = did you mean { $field }?
+toml-missing-field = missing field { $field }
+toml-invalid-type = invalid type: { $found }, expected { $expected }
+toml-camera-takes = { $field }: a camera of kind = "{ $kind }" takes { $keys }
+toml-camera-needs = camera: kind = "{ $kind }" needs { $keys }
+toml-unknown-material = { $field }: unknown material { $name }; the classic materials are { $names }
+toml-placement-needs-matrix = { $field }: placement = "matrix" needs placement_matrix (4 rows of 4)
+toml-matrix-needs-placement = { $field }: placement_matrix needs placement = "matrix"
+toml-unknown-field-one = unknown field { $field }, expected { $known }
 
 ## io-errors
 

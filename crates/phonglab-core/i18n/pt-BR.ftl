@@ -532,6 +532,17 @@ allowed-float = um float: 0, ou 1,2e-38 <= |x| <= 3,4e38
 allowed-mview = 1, 2, 3, 4 ou 5
 allowed-look-at = um olho afastado do centro, com o vetor para cima fora da direção de vista
 allowed-pixel = pelo menos 1 pixel
+toml-place = linha { $line }, coluna { $column }
+toml-unknown-field = campo desconhecido { $field }; os campos aceitos são { $known }
+toml-did-you-mean = você quis dizer { $field }?
+toml-missing-field = falta o campo { $field }
+toml-invalid-type = tipo inválido: { $found }, esperava-se { $expected }
+toml-camera-takes = { $field }: uma câmera do tipo kind = "{ $kind }" aceita { $keys }
+toml-camera-needs = camera: kind = "{ $kind }" precisa de { $keys }
+toml-unknown-material = { $field }: material desconhecido { $name }; os materiais clássicos são { $names }
+toml-placement-needs-matrix = { $field }: placement = "matrix" precisa de placement_matrix (4 linhas de 4)
+toml-matrix-needs-placement = { $field }: placement_matrix precisa de placement = "matrix"
+toml-unknown-field-one = campo desconhecido { $field }; o campo aceito é { $known }
 
 ## io-errors
 

@@ -350,11 +350,12 @@ impl CameraFile {
             CameraKind::Matrix => ("matrix", &["rows"]),
         };
         if let Some(extra) = given.iter().find(|k| !keys.contains(k)) {
-            return Err(syntax(format!("camera.{extra}: a camera of kind = \"{name}\" takes {}", keys.join(", "))));
+            let field = format!("camera.{extra}");
+            return Err(syntax(crate::t!("toml-camera-takes", field = field, kind = name, keys = keys.join(", "))));
         }
         let missing: Vec<&str> = keys.iter().copied().filter(|k| !given.contains(k)).collect();
         if !missing.is_empty() && self.kind != CameraKind::Matrix {
-            return Err(syntax(format!("camera: kind = \"{name}\" needs {}", missing.join(", "))));
+            return Err(syntax(crate::t!("toml-camera-needs", kind = name, keys = missing.join(", "))));
         }
         let v3 = |v: Option<[f64; 3]>| DVec3::from(v.unwrap_or_default());
         Ok(match self.kind {
@@ -482,9 +483,11 @@ impl MaterialFile {
         let base = match &self.preset {
             Some(name) => materials::by_name(name).cloned().ok_or_else(|| {
                 let names: Vec<&str> = materials::classic().iter().map(|m| m.name.as_str()).collect();
-                syntax(format!(
-                    "{field}.preset: unknown material {name:?}; the classic materials are {}",
-                    names.join(", ")
+                syntax(crate::t!(
+                    "toml-unknown-material",
+                    field = format!("{field}.preset"),
+                    name = format!("{name:?}"),
+                    names = names.join(", ")
                 ))
             })?,
             None => Material::default(),
@@ -523,12 +526,10 @@ impl FileV1 {
                 (PlacementName::Object, None) => LightPlacement::Object,
                 (PlacementName::Matrix, Some(rows)) => LightPlacement::Matrix(mat4_from_rows(rows)),
                 (PlacementName::Matrix, None) => {
-                    return Err(syntax(format!(
-                        "lights[{i}]: placement = \"matrix\" needs placement_matrix (4 rows of 4)"
-                    )));
+                    return Err(syntax(crate::t!("toml-placement-needs-matrix", field = format!("lights[{i}]"))));
                 }
                 (_, Some(_)) => {
-                    return Err(syntax(format!("lights[{i}]: placement_matrix needs placement = \"matrix\"")));
+                    return Err(syntax(crate::t!("toml-matrix-needs-placement", field = format!("lights[{i}]"))));
                 }
             };
             lights.push(Light {

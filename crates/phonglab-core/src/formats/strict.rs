@@ -39,13 +39,34 @@ pub fn closest<'a>(unknown: &str, known: impl IntoIterator<Item = &'a str>) -> O
 /// serde's "unknown field `x`, expected one of `a`, `b`" (or "expected `a`"), with the
 /// closest known name suggested when there is one.
 pub fn with_suggestion(message: &str) -> String {
-    let Some(rest) = message.strip_prefix("unknown field `") else { return message.to_string() };
-    let Some((unknown, expected)) = rest.split_once('`') else { return message.to_string() };
+    let Some(rest) = message.strip_prefix("unknown field `") else { return in_words(message) };
+    let Some((unknown, expected)) = rest.split_once('`') else { return in_words(message) };
     let known: Vec<&str> = expected.split('`').skip(1).step_by(2).collect();
+    let listed = known.iter().map(|k| format!("`{k}`")).collect::<Vec<_>>().join(", ");
+    let field = format!("`{unknown}`");
+    let said = match known.len() {
+        0 => return message.to_string(),
+        1 => crate::t!("toml-unknown-field-one", field = field, known = listed),
+        _ => crate::t!("toml-unknown-field", field = field, known = listed),
+    };
     match closest(unknown, known) {
-        Some(k) => format!("{message}; did you mean `{k}`?"),
-        None => message.to_string(),
+        Some(k) => format!("{said}; {}", crate::t!("toml-did-you-mean", field = format!("`{k}`"))),
+        None => said,
     }
+}
+
+/// serde's common messages in the current language ("missing field `x`", "invalid type:
+/// string \"a\", expected f64"); any other as the parser says it.
+fn in_words(message: &str) -> String {
+    if let Some(field) = message.strip_prefix("missing field ") {
+        return crate::t!("toml-missing-field", field = field);
+    }
+    if let Some(rest) = message.strip_prefix("invalid type: ")
+        && let Some((found, expected)) = rest.split_once(", expected ")
+    {
+        return crate::t!("toml-invalid-type", found = found, expected = expected);
+    }
+    message.to_string()
 }
 
 /// At most `max` characters of `text`, with "…" where it was cut.
@@ -81,7 +102,8 @@ pub fn place(text: &str, at: usize) -> (String, String) {
         excerpt.push('…');
     }
     let pointer = format!("{}^", " ".repeat(caret));
-    (format!("line {line_no}, column {}", col + 1), format!("    {excerpt}\n    {pointer}"))
+    let place = crate::t!("toml-place", line = line_no.to_string(), column = (col + 1).to_string());
+    (place, format!("    {excerpt}\n    {pointer}"))
 }
 
 /// A list of exactly `N` items into an array: serde's own arrays ignore extra items in
@@ -151,6 +173,16 @@ mod tests {
         assert!(m.ends_with("did you mean `shininess`?"), "{m}");
         assert_eq!(with_suggestion("unknown field `q`, expected `kind`"), "unknown field `q`, expected `kind`");
         assert_eq!(with_suggestion("invalid type"), "invalid type");
+        // In Portuguese, serde's common messages too.
+        use crate::locale::{Lang, Locale, with_locale};
+        let pt = |m: &str| with_locale(Locale::of(Lang::PtPt), || with_suggestion(m));
+        assert_eq!(
+            pt("unknown field `shinyness`, expected one of `preset`, `shininess`"),
+            "campo desconhecido `shinyness`; os campos aceites são `preset`, `shininess`; queria dizer `shininess`?"
+        );
+        assert_eq!(pt("missing field `kind`"), "falta o campo `kind`");
+        assert_eq!(pt("invalid type: string \"a\", expected f64"), "tipo inválido: string \"a\", esperava-se f64");
+        assert_eq!(with_locale(Locale::of(Lang::PtBr), || place("a\nbc", 3).0), "linha 2, coluna 2");
     }
 
     #[test]
