@@ -155,7 +155,7 @@ fn close(file: File) -> io::Result<()> {
     if fault() == Some(Fault::OnClose) {
         return Err(injected("close"));
     }
-    crate::platform::close_file(file)
+    crate::platform::os::close_file(file)
 }
 
 /// Writes `bytes` to a new file at `tmp`: create, write, flush, sync, close, each checked.
@@ -235,7 +235,7 @@ pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
         let _ = std::fs::remove_file(&tmp);
         return Err(WriteError::new(path, "write-step-rename", e, KEPT));
     }
-    crate::platform::sync_folder(dir);
+    crate::platform::os::sync_folder(dir);
     Ok(())
 }
 
@@ -315,7 +315,7 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
         let target = dir.join(name);
         write_new(&staging.join(name), bytes).map_err(|(what, e)| WriteError::new(&target, what, e, UNTOUCHED))?;
     }
-    crate::platform::sync_folder(staging);
+    crate::platform::os::sync_folder(staging);
     // The old set: every file the new one replaces, and every other member of it.
     let new_names: Vec<&str> = set.files.iter().map(|(n, _)| n.as_str()).collect();
     let mut old = Vec::new();
@@ -354,7 +354,7 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
         }
         moved_in.push(name);
     }
-    crate::platform::sync_folder(dir);
+    crate::platform::os::sync_folder(dir);
     Ok(())
 }
 

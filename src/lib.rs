@@ -8,7 +8,6 @@ pub mod cli_help;
 pub mod cost_cmd;
 pub mod egui_cpu;
 pub mod exercise_cmd;
-pub mod file_dialog;
 pub mod gpu;
 pub mod image_io;
 pub mod input_file;
@@ -17,3 +16,5 @@ pub mod platform;
 pub mod scenes;
 pub mod screenshot_cmd;
 pub mod sheet_pdf;
+#[cfg(target_arch = "wasm32")]
+pub mod web;

@@ -41,7 +41,7 @@ impl<T: Send + 'static> Worker<T> {
         let cancel = Arc::new(AtomicBool::new(false));
         let (tx, rx) = std::sync::mpsc::channel();
         let (p, c) = (progress.clone(), cancel.clone());
-        std::thread::spawn(move || {
+        crate::platform::threads::run_in_background(move || {
             let mut report = |now: &Progress| {
                 if let Ok(mut g) = p.lock() {
                     *g = now.clone();
@@ -53,10 +53,8 @@ impl<T: Send + 'static> Worker<T> {
                 std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(&mut report)))
                     .unwrap_or_else(|_| Err("the computation failed unexpectedly".into()))
             };
-            let r = match rayon::ThreadPoolBuilder::new().num_threads(threads).build() {
-                Ok(pool) => pool.install(run),
-                Err(e) => Err(format!("no thread pool: {e}")),
-            };
+            let r = crate::platform::threads::with_pool(threads, run)
+                .unwrap_or_else(|e| Err(format!("no thread pool: {e}")));
             let _ = tx.send(r);
         });
         Self { progress, cancel, result: rx }

@@ -10,6 +10,7 @@ use phonglab_core::Document;
 use phonglab_core::t;
 
 use super::state::{AppState, Message};
+use crate::platform::files as platform;
 
 /// Writes `doc` to `path`, whole or not at all ([`crate::atomic_write::write`]).
 pub fn write_document(doc: &Document, path: &Path) -> Result<(), String> {
@@ -112,8 +113,14 @@ fn path_of(state: &AppState) -> Option<PathBuf> {
     (!p.is_empty()).then(|| PathBuf::from(p))
 }
 
-/// The path field and the Open and Save buttons (Enter in the field opens).
+/// The scene file's controls: on the desktop the path field with Open and Save (Enter in
+/// the field opens) and the system's dialogs; in the browser, where files have no paths,
+/// Open… (the browser's chooser) and Save (a download).
 pub fn file_ui(ui: &mut Ui, state: &mut AppState) {
+    if !platform::TYPED_PATHS {
+        browser_file_ui(ui, state);
+        return;
+    }
     let label = ui.label(t!("scene-file"));
     let field = ui
         .add(egui::TextEdit::singleline(&mut state.ui.file_path).desired_width(220.0).hint_text(t!("scene-file-hint")))
@@ -125,20 +132,41 @@ pub fn file_ui(ui: &mut Ui, state: &mut AppState) {
     if ui.button(t!("save")).on_hover_text(t!("save-hover")).clicked() {
         save_typed(state);
     }
+    #[cfg(not(target_arch = "wasm32"))]
     if state.ui.file_dialogs {
         let start = path_of(state);
         if ui.button(t!("open-dialog")).on_hover_text(t!("open-dialog-hover")).clicked()
-            && let Some(p) = crate::file_dialog::pick_scene_to_open(start.as_deref())
+            && let Some(p) = platform::pick_scene_to_open(start.as_deref())
         {
             state.ui.file_path = p.display().to_string();
             open(state, &p);
         }
         if ui.button(t!("save-as")).on_hover_text(t!("save-as-hover")).clicked()
-            && let Some(p) = crate::file_dialog::pick_scene_to_save(start.as_deref())
+            && let Some(p) = platform::pick_scene_to_save(start.as_deref())
         {
             state.ui.file_path = p.display().to_string();
             save(state, &p);
         }
+    }
+}
+
+/// The browser's Open… (the file chooser) and Save (a download of the scene file, named
+/// after the file it came from, or `scene.toml`).
+fn browser_file_ui(ui: &mut Ui, state: &mut AppState) {
+    if ui.button(t!("open-dialog")).on_hover_text(t!("open-browser-hover")).clicked() {
+        platform::choose_file(ui.ctx(), ".toml");
+    }
+    if ui.button(t!("save")).on_hover_text(t!("save-download-hover")).clicked() {
+        let name = Path::new(state.ui.file_path.trim())
+            .file_name()
+            .map_or("scene.toml".to_string(), |n| n.to_string_lossy().into_owned());
+        state.message = Some(match state.doc.to_toml().map_err(|e| e.to_string()) {
+            Ok(text) => match platform::download(&name, text.as_bytes(), "application/toml") {
+                Ok(()) => Message::Info(t!("downloaded", name = name)),
+                Err(e) => Message::Refused(t!("not-saved", error = e)),
+            },
+            Err(e) => Message::Refused(t!("not-saved", error = e)),
+        });
     }
 }
 
@@ -174,19 +202,20 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
             egui::Color32::WHITE,
         );
     }
+    // Files that arrived since the last frame (the browser's chooser and drops).
+    for arrived in platform::take_arrived() {
+        match arrived {
+            Ok((name, bytes)) => open_bytes(state, &bytes, Path::new(&name)),
+            Err(why) => refuse(state, why),
+        }
+    }
     let dropped = ctx.input(|i| i.raw.dropped_files.clone());
     let Some(file) = dropped.first() else { return };
-    let path = file.path().to_path_buf();
-    // A file on this machine is read with the scene files' cap; the integration's bytes
-    // otherwise.
-    let bytes = if path.exists() {
-        crate::input_file::read_capped(&path, crate::input_file::MAX_SCENE_BYTES, &t!("file-kind-scenes"))
-    } else {
-        file.bytes().map_err(|e| t!("cannot-read", path = path.display().to_string(), error = e.to_string()))
-    };
-    match bytes {
-        Ok(bytes) => open_bytes(state, &bytes, &path),
-        Err(e) => refuse(state, e),
+    // Read now on the desktop; in the browser the bytes arrive later (see file_ui).
+    match platform::read_dropped(ctx, file, crate::input_file::MAX_SCENE_BYTES) {
+        Some(Ok((name, bytes))) => open_bytes(state, &bytes, Path::new(&name)),
+        Some(Err(why)) => refuse(state, why),
+        None => {}
     }
     if dropped.len() > 1 {
         let extra = t!("dropped-several", count = dropped.len());

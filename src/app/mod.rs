@@ -532,7 +532,7 @@ pub struct PhongLabApp {
     session: session::Session,
     shutdown: shutdown::Shutdown,
     /// When the session was last written (or tried).
-    last_save: std::time::Instant,
+    last_save: crate::platform::clock::Instant,
     /// The scene and layout last handed to `shutdown`, so an unchanged frame costs nothing.
     kept: Option<(phonglab_core::Document, layout::Layout)>,
 }
@@ -592,13 +592,13 @@ impl PhongLabApp {
             files::open_at_start(&mut state, &path);
         }
         let shutdown = shutdown::Shutdown::install(&cc.egui_ctx);
-        Self { state, session, shutdown, last_save: std::time::Instant::now(), kept: None }
+        Self { state, session, shutdown, last_save: crate::platform::clock::Instant::now(), kept: None }
     }
 
     /// Writes the session when it changed; a failure is said in the window and the log.
     fn save_session(&mut self) {
         store(&self.state, &mut self.session);
-        self.last_save = std::time::Instant::now();
+        self.last_save = crate::platform::clock::Instant::now();
         if let Err(e) = self.session.save() {
             log::error!("{e}");
             self.state.message = Some(Message::Refused(t!("session-not-saved", error = e.to_string())));
@@ -633,8 +633,9 @@ impl eframe::App for PhongLabApp {
 
 /// Opens the window, on the scene file `file` when one is given, with the shaded view
 /// drawn as `renderer` says. The session is phonglab's own (see [`session`]).
+#[cfg(not(target_arch = "wasm32"))]
 pub fn run(file: Option<std::path::PathBuf>, renderer: gpu_view::RendererChoice) -> eframe::Result {
-    let opened = match crate::platform::storage_dir() {
+    let opened = match crate::platform::storage::storage_dir() {
         Some(dir) => session::Session::open(&dir),
         None => (session::Session::in_memory(), vec![t!("no-session-folder")]),
     };

@@ -1,7 +1,7 @@
 //! The app's session, kept by phonglab: what the window shows, restored at the next start.
 //!
 //! The session is a RON map of strings (the scene file's TOML under [`DOCUMENT_KEY`], the
-//! layout, the quiz) in `session.ron` in the storage folder ([`crate::platform::storage_dir`],
+//! layout, the quiz) in `session.ron` in the storage folder ([`crate::platform::storage::storage_dir`],
 //! or `PHONGLAB_SESSION_DIR`). It is written whole or not at all
 //! ([`crate::atomic_write::write`]), so a full disk leaves the last good session.
 //!
@@ -69,6 +69,22 @@ impl Session {
     /// A session that is neither read nor written (tests, and a machine with no storage).
     pub fn in_memory() -> Self {
         Session { dir: None, values: BTreeMap::new(), owner: Owner::ReadOnly("no storage folder".into()), saved: None }
+    }
+
+    /// A session read from `text` (the browser's, kept in `localStorage`), with what the user
+    /// should be told when it does not parse (the window then starts on the worksheet). It
+    /// is written by the caller, who has the text ([`Session::text`]); [`Session::save`]
+    /// writes nothing.
+    pub fn from_text(text: Option<&str>) -> (Session, Vec<String>) {
+        let mut session = Session::in_memory();
+        let mut notices = Vec::new();
+        if let Some(text) = text {
+            match parse(text.as_bytes()) {
+                Ok(values) => session.values = values,
+                Err(why) => notices.push(t!("session-unreadable", why = why)),
+            }
+        }
+        (session, notices)
     }
 
     /// Opens the session in `dir`: takes the lock if no other window has it, reads the

@@ -214,9 +214,11 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
                     // Captions wrap within the picture's width rather than widen its column.
                     ui.set_max_width(side);
                     let label = ui.small(caption);
-                    picture_ui(ui, &cache.main, main_gpu.take(), size, Sense::click_and_drag())
+                    let picture = picture_ui(ui, &cache.main, main_gpu.take(), size, Sense::click_and_drag())
                         .on_hover_text(t!("picture-hover"))
-                        .labelled_by(label.id)
+                        .labelled_by(label.id);
+                    super::widgets::landmark(ui.ctx(), "shaded-picture", picture.rect);
+                    picture
                 })
                 .inner;
             if corrected.is_some() {
@@ -649,7 +651,7 @@ fn picture_ui(ui: &mut Ui, cache: &ViewCache, gpu: Option<Picture>, size: egui::
 }
 
 /// Who drew the picture, for its caption.
-fn drawn_caption(cache: &ViewCache) -> String {
+pub fn drawn_caption(cache: &ViewCache) -> String {
     match &cache.drawn_by {
         DrawnBy::Gpu { adapter } => t!("caption-gpu", adapter = adapter.to_string()),
         _ => t!("caption-cpu", ms = fmt_ms(cache.last_ms)),

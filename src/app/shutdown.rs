@@ -25,7 +25,7 @@ impl Shutdown {
     pub fn install(ctx: &egui::Context) -> Shutdown {
         let me = Shutdown::default();
         let (handler, ctx) = (me.clone(), ctx.clone());
-        let installed = crate::platform::on_termination(move |signal| handler.on_signal(signal, &ctx));
+        let installed = crate::platform::os::on_termination(move |signal| handler.on_signal(signal, &ctx));
         if let Err(e) = installed {
             log::warn!("the session will not be saved on SIGTERM/SIGHUP: {e}");
         }

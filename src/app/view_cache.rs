@@ -88,7 +88,7 @@ impl ViewCache {
             return Ok(());
         }
         let mesh = mesh_for(&mut self.mesh, &doc.view).clone();
-        let t = std::time::Instant::now();
+        let t = crate::platform::clock::Instant::now();
         let (img, _) = self.renderer.render(&setup.job(&mesh), px, px).map_err(|e| e.to_string())?;
         self.last_ms = t.elapsed().as_secs_f64() * 1e3;
         let image = ColorImage::from_rgba_unmultiplied([img.width, img.height], &img.rgba);

@@ -21,6 +21,7 @@ pub fn slider_ui(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::Ran
         }
         let slid = ui.add(s);
         ui.ctx().accesskit_node_builder(slid.id, |b| b.set_label(label.to_string()));
+        landmark(ui.ctx(), label, slid.rect);
         let typed = NumberField::new(value, label).width(FIELD_WIDTH).show_in_row(ui, 1);
         ui.add(egui::Label::new(label).wrap_mode(egui::TextWrapMode::Extend));
         if let Some(why) = &typed.refused {
@@ -31,6 +32,25 @@ pub fn slider_ui(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::Ran
     })
     .inner
 }
+
+/// Notes where a named control or picture is this frame (in points), for those who drive
+/// the window from outside: the browser test reads them through the page's probe
+/// (`crate::web`), where there is no accessibility tree to search.
+pub fn landmark(ctx: &egui::Context, name: &str, rect: egui::Rect) {
+    ctx.data_mut(|d| {
+        d.get_temp_mut_or_default::<Landmarks>(egui::Id::unique(LANDMARKS)).0.insert(name.to_string(), rect)
+    });
+}
+
+/// Where each named control was drawn last ([`landmark`]).
+pub fn landmarks(ctx: &egui::Context) -> std::collections::BTreeMap<String, egui::Rect> {
+    ctx.data(|d| d.get_temp::<Landmarks>(egui::Id::unique(LANDMARKS)).map(|l| l.0).unwrap_or_default())
+}
+
+const LANDMARKS: &str = "phonglab landmarks";
+
+#[derive(Clone, Default)]
+struct Landmarks(std::collections::BTreeMap<String, egui::Rect>);
 
 /// A labelled number field (no clamping).
 pub fn number_ui(ui: &mut Ui, label: &str, value: &mut f64, speed: f64) -> Response {

@@ -420,6 +420,15 @@ cannot-read = cannot read { $path }: { $error }
 dropped-several = {" "}({ $count } files were dropped; only the first is opened.)
 type-path-first = Type the scene file's path first.
 
+## browser
+
+browser-no-storage = this browser keeps no local storage for the page
+browser-storage-refused = the browser refused to keep the session ({ $error })
+browser-download-failed = the browser could not offer the download ({ $error })
+open-browser-hover = Choose a scene file (.toml) on this computer
+save-download-hover = Download the scene as a file (.toml)
+downloaded = Offered { $name } as a download.
+
 ## plots
 
 plot-drag = Drag to orbit (yaw { $yaw }°, pitch { $pitch }°)

@@ -420,6 +420,15 @@ cannot-read = não é possível ler { $path }: { $error }
 dropped-several = {" "}(foram soltos { $count } arquivos; só o primeiro é aberto.)
 type-path-first = Digite primeiro o caminho do arquivo de cena.
 
+## browser
+
+browser-no-storage = este navegador não guarda dados locais para a página
+browser-storage-refused = o navegador recusou salvar a sessão ({ $error })
+browser-download-failed = o navegador não conseguiu oferecer o download ({ $error })
+open-browser-hover = Escolher um arquivo de cena (.toml) neste computador
+save-download-hover = Baixar a cena como arquivo (.toml)
+downloaded = { $name } oferecido para download.
+
 ## plots
 
 plot-drag = Arraste para girar (guinada { $yaw }°, inclinação { $pitch }°)

@@ -420,6 +420,15 @@ cannot-read = não é possível ler { $path }: { $error }
 dropped-several = {" "}(foram largados { $count } ficheiros; só se abre o primeiro.)
 type-path-first = Escreve primeiro o caminho do ficheiro de cena.
 
+## browser
+
+browser-no-storage = este navegador não guarda dados locais para a página
+browser-storage-refused = o navegador recusou guardar a sessão ({ $error })
+browser-download-failed = o navegador não conseguiu oferecer a transferência ({ $error })
+open-browser-hover = Escolher um ficheiro de cena (.toml) neste computador
+save-download-hover = Transferir a cena como ficheiro (.toml)
+downloaded = { $name } oferecido para transferir.
+
 ## plots
 
 plot-drag = Arrasta para rodar (guinada { $yaw }°, inclinação { $pitch }°)

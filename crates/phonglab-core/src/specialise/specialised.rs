@@ -31,7 +31,7 @@
 // The stages index parallel arrays by vertex: index loops are what vectorise here.
 #![allow(clippy::needless_range_loop)]
 
-use std::time::{Duration, Instant};
+use web_time::{Duration, Instant};
 
 use glam::{DVec3, Vec3};
 
@@ -1083,6 +1083,9 @@ fn prefetch<T>(s: &[T]) {
             unsafe { std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(p.add(off)) };
         }
     }
+    // Elsewhere (the browser's wasm32) there is no hint to give.
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = s;
 }
 
 /// The back side's normal `-n` into `neg`, by component (negation is exact).

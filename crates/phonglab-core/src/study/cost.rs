@@ -13,7 +13,7 @@
 //! 1/255" means an error that a display can show. The error figures are deterministic;
 //! only the times depend on the machine.
 
-use std::time::Instant;
+use web_time::Instant;
 
 use glam::{DMat4, DVec3, Vec3};
 use rayon::prelude::*;

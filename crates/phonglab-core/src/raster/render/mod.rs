@@ -158,9 +158,9 @@ impl Renderer {
         let lighter = self.lighter.as_ref().expect("set just above");
         let width = width.max(1);
         let height = height.max(1);
-        let mut clock = std::time::Instant::now();
+        let mut clock = web_time::Instant::now();
         let mut lap = || {
-            let now = std::time::Instant::now();
+            let now = web_time::Instant::now();
             let ms = (now - clock).as_secs_f64() * 1e3;
             clock = now;
             ms
@@ -224,14 +224,14 @@ fn draw_and_shade(
         .map(|(b, (((rgba, bin), frags), kept))| {
             let (px, _) = rgba.as_chunks_mut::<4>();
             raster::with_band_buffer(px.len(), |depth, raster| {
-                let start = std::time::Instant::now();
+                let start = web_time::Instant::now();
                 let y_start = b * raster::BAND;
                 raster::draw_band(
                     setup,
                     bin,
                     raster::Band { y_start: y_start as i32, width, depth, raster: &mut *raster },
                 );
-                let drawn = std::time::Instant::now();
+                let drawn = web_time::Instant::now();
                 let input = resolve::BandInput {
                     job,
                     setup,

@@ -585,8 +585,9 @@ pub fn resolve_band(band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragme
     resolve_band_copy(copy, band, px, frags).unwrap_or_else(|| resolve_band_any::<false>(band, px, frags))
 }
 
-/// The compiled copies of the resolve.
+/// The compiled copies of the resolve (the AVX ones only exist on x86-64).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
 pub(crate) enum Compiled {
     /// For any processor.
     Portable,

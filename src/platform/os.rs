@@ -1,5 +1,6 @@
-//! What differs between operating systems, kept out of the rest of the code: closing a
-//! file with its error reported, and syncing a folder's entries to the disk.
+//! What differs between operating systems on the desktop: closing a file with its error
+//! reported, syncing a folder's entries to the disk, and hearing the signals that end the
+//! process.
 
 use std::fs::File;
 use std::io;
@@ -19,7 +20,8 @@ pub fn close_file(file: File) -> io::Result<()> {
 /// Closes `file` (where the close cannot report an error of its own).
 #[cfg(not(unix))]
 pub fn close_file(file: File) -> io::Result<()> {
-    drop(file);
+    // Dropped here: the file closes as it goes out of scope.
+    let _closed = file;
     Ok(())
 }
 
@@ -32,24 +34,6 @@ pub fn sync_folder(dir: &Path) {
     }
     #[cfg(not(unix))]
     let _ = dir;
-}
-
-/// The folder the app keeps its session in: `PHONGLAB_SESSION_DIR` when set, else the
-/// system's place for an application's data (`$XDG_DATA_HOME/phonglab` or
-/// `~/.local/share/phonglab` on Linux, as eframe chose before phonglab kept it itself).
-pub fn storage_dir() -> Option<std::path::PathBuf> {
-    use std::path::PathBuf;
-    let var = |k: &str| std::env::var_os(k).filter(|v| !v.is_empty()).map(PathBuf::from);
-    if let Some(d) = var("PHONGLAB_SESSION_DIR") {
-        return Some(d);
-    }
-    if cfg!(target_os = "windows") {
-        return var("APPDATA").map(|d| d.join("phonglab").join("data"));
-    }
-    if cfg!(target_os = "macos") {
-        return var("HOME").map(|h| h.join("Library/Application Support/phonglab"));
-    }
-    var("XDG_DATA_HOME").or_else(|| var("HOME").map(|h| h.join(".local/share"))).map(|d| d.join("phonglab"))
 }
 
 /// Calls `handler` with the signal's number, on a thread of its own, each time the process

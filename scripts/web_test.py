@@ -1,0 +1,279 @@
+#!/usr/bin/env python3
+"""The browser build, tested in a real browser: headless Chromium driven by chromedriver
+over WebDriver's HTTP protocol (no client library: urllib is enough).
+
+It serves dist/ (built by scripts/web) on localhost, opens it in Chromium with WebGL on
+SwiftShader and the language set to Portuguese (Portugal), and checks, reading the page's
+probe (`phonglab_probe()`, src/web.rs):
+  1. the page loads with no console error and no panic;
+  2. the window reaches the worksheet's vertex colour I (to 1e-7);
+  3. the language is the browser's (the controls say "Luz z");
+  4. a slider moved with the pointer (a real drag of "Luz z") changes the colour;
+  5. the session is kept in localStorage and restored on reload;
+  6. the shaded view drawn by the scene's generated WGSL on WebGL2 (`?renderer=gpu`)
+     matches the CPU renderer's picture (`?renderer=cpu`, the reference renderer, the
+     same code as the desktop's): the same coverage (within 0.5 % of the pixels, the
+     edges' rasterisation) and a mean difference within 2/255 where both cover.
+It prints the time to first frame and who drew the shaded view. Exit status 0 when all
+pass. Usage: scripts/web_test.py [DIST] (default: dist).
+"""
+import base64
+import json
+import os
+import re
+import socket
+import subprocess
+import sys
+import time
+import urllib.request
+import zlib
+
+WORKSHEET_I = [0.059587089, 0.035759287, 0.015155245]
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def wait_for_port(port, seconds=20):
+    end = time.time() + seconds
+    while time.time() < end:
+        try:
+            with socket.create_connection(("127.0.0.1", port), timeout=0.5):
+                return
+        except OSError:
+            time.sleep(0.1)
+    raise SystemExit(f"nothing listens on port {port}")
+
+
+class Driver:
+    """The few WebDriver commands the test needs."""
+
+    def __init__(self, port):
+        self.base = f"http://127.0.0.1:{port}"
+        caps = {
+            "capabilities": {
+                "alwaysMatch": {
+                    "browserName": "chrome",
+                    "goog:loggingPrefs": {"browser": "ALL"},
+                    "goog:chromeOptions": {
+                        "binary": "/usr/bin/chromium",
+                        "args": [
+                            "--headless=new", "--no-sandbox", "--disable-dev-shm-usage",
+                            "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+                            "--window-size=1280,800", "--lang=pt-PT",
+                        ],
+                        "prefs": {"intl.accept_languages": "pt-PT,pt"},
+                    },
+                }
+            }
+        }
+        self.session = self.call("POST", "/session", caps)["sessionId"]
+
+    def call(self, method, path, body=None):
+        data = None if body is None else json.dumps(body).encode()
+        req = urllib.request.Request(self.base + path, data=data, method=method,
+                                     headers={"Content-Type": "application/json"})
+        try:
+            with urllib.request.urlopen(req, timeout=120) as r:
+                return json.loads(r.read() or b"{}").get("value")
+        except urllib.error.HTTPError as e:
+            raise SystemExit(f"WebDriver {method} {path}: {e.code} {e.read()[:500]!r}")
+
+    def s(self, method, path, body=None):
+        return self.call(method, f"/session/{self.session}{path}", body)
+
+    def go(self, url):
+        self.s("POST", "/url", {"url": url})
+
+    def js(self, script, *args):
+        return self.s("POST", "/execute/sync", {"script": script, "args": list(args)})
+
+    def probe(self):
+        return self.js("return window.phonglab_probe ? window.phonglab_probe() : null;")
+
+    def logs(self):
+        return self.s("POST", "/se/log", {"type": "browser"}) or []
+
+    def drag(self, x, y, dx, steps=10):
+        moves = [{"type": "pointerMove", "duration": 0, "x": int(x), "y": int(y), "origin": "viewport"},
+                 {"type": "pointerDown", "button": 0}]
+        for k in range(1, steps + 1):
+            moves.append({"type": "pointerMove", "duration": 30, "x": int(x + dx * k / steps), "y": int(y),
+                          "origin": "viewport"})
+        moves.append({"type": "pointerUp", "button": 0})
+        self.s("POST", "/actions", {"actions": [{"type": "pointer", "id": "mouse",
+                                                   "parameters": {"pointerType": "mouse"}, "actions": moves}]})
+
+    def quit(self):
+        try:
+            self.s("DELETE", "")
+        except SystemExit:
+            pass
+
+
+def decode_png(data):
+    """RGBA rows of an 8-bit RGB or RGBA PNG (what Chromium's screenshots are)."""
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    pos, idat, width = 8, b"", 0
+    while pos < len(data):
+        n = int.from_bytes(data[pos:pos + 4], "big")
+        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]
+        if kind == b"IHDR":
+            width, height, depth, colour = int.from_bytes(body[0:4], "big"), int.from_bytes(body[4:8], "big"), body[8], body[9]
+            assert depth == 8 and colour in (2, 6), (depth, colour)
+            bpp = 3 if colour == 2 else 4
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + n
+    raw, stride, rows, prev = zlib.decompress(idat), width * bpp, [], bytearray(width * bpp)
+    for y in range(height):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+            if f == 1:
+                line[i] = (line[i] + a) & 255
+            elif f == 2:
+                line[i] = (line[i] + b) & 255
+            elif f == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append([tuple(line[x * bpp:x * bpp + 3]) for x in range(width)])
+        prev = line
+    return rows
+
+
+def shaded_picture(d, url):
+    """The shaded view's pixels on the page at `url`, and who drew them."""
+    d.go(url)
+    p = wait_probe(d, lambda q: q["frames"] >= 5 and "shaded-picture" in q["landmarks"], "the shaded view")
+    time.sleep(1.0)
+    p = d.probe()
+    rows = decode_png(base64.b64decode(d.s("GET", "/screenshot")))
+    x, y, w, h = (round(v * p["pixels_per_point"]) for v in p["landmarks"]["shaded-picture"])
+    return [row[x:x + w] for row in rows[y:y + h]], p["drawn_by"]
+
+
+def compare_pictures(a, b):
+    """(share of pixels whose coverage differs, mean |difference| in 1/255 where both cover)."""
+    background = a[0][0]
+    covered = lambda px: max(abs(px[k] - background[k]) for k in range(3)) > 2
+    total = differ = both = 0
+    diff = 0.0
+    for ra, rb in zip(a, b):
+        for pa, pb in zip(ra, rb):
+            total += 1
+            ca, cb = covered(pa), covered(pb)
+            if ca != cb:
+                differ += 1
+            elif ca:
+                both += 1
+                diff += sum(abs(pa[k] - pb[k]) for k in range(3)) / 3
+    return differ / max(total, 1), diff / max(both, 1), both
+
+
+def wait_probe(d, until, what, seconds=60):
+    end = time.time() + seconds
+    p = None
+    while time.time() < end:
+        p = d.probe()
+        if p and until(p):
+            return p
+        time.sleep(0.05)
+    raise SystemExit(f"the page never showed {what}; last probe: {json.dumps(p)[:1500]}")
+
+
+def main():
+    dist = sys.argv[1] if len(sys.argv) > 1 else "dist"
+    if not os.path.exists(os.path.join(dist, "phonglab_bg.wasm")):
+        raise SystemExit(f"{dist}/ has no build: run scripts/web first")
+    web_port, driver_port = free_port(), free_port()
+    server = subprocess.Popen([sys.executable, "-m", "http.server", "--bind", "127.0.0.1", "--directory", dist,
+                               str(web_port)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    chromedriver = subprocess.Popen(["chromedriver", f"--port={driver_port}"], stdout=subprocess.DEVNULL,
+                                    stderr=subprocess.DEVNULL)
+    failures = []
+    try:
+        wait_for_port(web_port)
+        wait_for_port(driver_port)
+        d = Driver(driver_port)
+        try:
+            url = f"http://127.0.0.1:{web_port}/index.html"
+            start = time.time()
+            d.go(url)
+            first = wait_probe(d, lambda p: p["frames"] >= 1, "a first frame")
+            first_frame_s = time.time() - start
+            p = wait_probe(d, lambda p: p["frames"] >= 3 and p["colour"], "the worksheet's colour")
+            print(f"first frame: {first_frame_s:.2f} s from navigation; shaded view: {p['drawn_by']}; "
+                  f"wgpu: {p['gpu']}")
+            # 2. The worksheet's I.
+            got = p["colour"][:3]
+            if any(abs(a - b) > 1e-7 for a, b in zip(got, WORKSHEET_I)):
+                failures.append(f"the colour is {got}, not the worksheet's I {WORKSHEET_I}")
+            # 3. The browser's language.
+            marks = p["landmarks"]
+            if "Luz z" not in marks:
+                failures.append(f"no 'Luz z' among the controls (the browser asked for pt-PT): {sorted(marks)[:20]}")
+            # 4. A slider moved with the pointer changes the colour.
+            else:
+                x, y, w, h = marks["Luz z"]
+                d.drag(x + w / 2, y + h / 2, -w / 3)
+                moved = wait_probe(d, lambda q: q["colour"] and q["colour"][:3] != got, "a new colour after the drag", 20)
+                print(f"dragged 'Luz z': colour {got} -> {moved['colour'][:3]}")
+            # 5. The session in localStorage, restored on reload.
+            time.sleep(1.5)
+            kept = d.js("return window.localStorage.getItem('phonglab.session.ron');")
+            if not kept or "phonglab.document.toml" not in kept:
+                failures.append(f"no session in localStorage: {str(kept)[:200]}")
+            before = d.probe()["colour"]
+            d.go(url)
+            again = wait_probe(d, lambda q: q["frames"] >= 3 and q["colour"], "the restored scene")
+            if any(abs(a - b) > 1e-12 for a, b in zip(again["colour"], before)):
+                failures.append(f"after a reload the colour is {again['colour']}, was {before}")
+            # 6. The generated WGSL on WebGL2 against the CPU renderer, on the worksheet's
+            # scene as the teapot in Gouraud shading and as the sphere in Phong shading (the
+            # scene is put in the page's session before it opens).
+            d.js("window.localStorage.clear();")
+            d.go(url)
+            wait_probe(d, lambda q: q["frames"] >= 3, "the worksheet again")
+            time.sleep(1.5)
+            base = d.js("return window.localStorage.getItem('phonglab.session.ron');")
+            for obj, shading in [("teapot", "gouraud"), ("sphere", "phong")]:
+                text = re.sub(r'object = \\"[a-z]+\\"', f'object = \\"{obj}\\"', base)
+                text = re.sub(r'shading = \\"[a-z]+\\"', f'shading = \\"{shading}\\"', text)
+                d.js("window.localStorage.setItem('phonglab.session.ron', arguments[0]);", text)
+                cpu, cpu_by = shaded_picture(d, url + "?renderer=cpu")
+                gpu, gpu_by = shaded_picture(d, url + "?renderer=gpu")
+                coverage, mean, both = compare_pictures(cpu, gpu)
+                print(f"{obj}, {shading}, {len(cpu[0])}x{len(cpu)} px: GPU ({gpu_by}) against CPU ({cpu_by}): "
+                      f"coverage differs on {100 * coverage:.2f} % of the pixels, mean difference "
+                      f"{mean:.2f}/255 on the {both} both cover")
+                if "GPU" not in gpu_by or "CPU" not in cpu_by:
+                    failures.append(f"the pictures were not drawn as asked: {gpu_by!r}, {cpu_by!r}")
+                if coverage > 0.005 or mean > 2.0 or both < 1000:
+                    failures.append(f"{obj} {shading}: the GPU's picture differs from the CPU's: "
+                                    f"coverage {coverage:.4f}, mean {mean:.2f}/255 on {both} pixels")
+            # 1. No console error, no panic.
+            for entry in d.logs():
+                if entry.get("level") == "SEVERE" or "panicked" in entry.get("message", ""):
+                    failures.append(f"console: {entry.get('message', '')[:400]}")
+        finally:
+            d.quit()
+    finally:
+        chromedriver.terminate()
+        server.terminate()
+    for f in failures:
+        print("FAIL:", f)
+    if failures:
+        sys.exit(1)
+    print("browser test: all checks pass")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,173 @@
+//! Files the user gives and takes. On the desktop they have paths: a typed path, or the
+//! system's file dialog (through `rfd`: the desktop portal on Linux, the native dialogs on
+//! Windows and macOS), read and written where they are. In the browser there are no paths:
+//! a file chooser and dropped files bring a file's name and bytes, read asynchronously (they
+//! arrive in an inbox that the window empties each frame, [`take_arrived`]), and a file
+//! goes out as a download ([`download`]).
+
+#[cfg(not(target_arch = "wasm32"))]
+use std::path::PathBuf;
+
+/// Whether files have paths that the user can type (the desktop) or only names (the web).
+pub const TYPED_PATHS: bool = cfg!(not(target_arch = "wasm32"));
+
+/// A file that arrived: its name and its bytes.
+pub type Arrived = (String, Vec<u8>);
+
+/// The scene file to open, or `None` when the dialog was cancelled or could not open (the
+/// desktop; the browser's chooser is [`choose_file`]).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn pick_scene_to_open(start: Option<&std::path::Path>) -> Option<PathBuf> {
+    dialog(start).add_filter("Scene or mesh", &["toml", "obj"]).pick_file()
+}
+
+/// Where to save the scene, or `None` when the dialog was cancelled or could not open.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn pick_scene_to_save(start: Option<&std::path::Path>) -> Option<PathBuf> {
+    let name = start.and_then(|p| p.file_name()).map_or("scene.toml".into(), |n| n.to_string_lossy().into_owned());
+    dialog(start).add_filter("Scene", &["toml"]).set_file_name(name).save_file()
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn dialog(start: Option<&std::path::Path>) -> rfd::FileDialog {
+    let d = rfd::FileDialog::new();
+    match start.and_then(|p| std::path::absolute(p).ok()).and_then(|p| p.parent().map(|d| d.to_path_buf())) {
+        Some(dir) if dir.is_dir() => d.set_directory(dir),
+        _ => d,
+    }
+}
+
+/// The desktop has no chooser of its own beside the dialog: nothing happens.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn choose_file(_ctx: &egui::Context, _accept: &str) {}
+
+/// Reads a file dropped on the window: its bytes now on the desktop (from its path, with
+/// `cap` and the messages of [`crate::input_file`]).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn read_dropped(_ctx: &egui::Context, file: &egui::DroppedFileHandle, cap: u64) -> Option<Result<Arrived, String>> {
+    let path = file.path().to_path_buf();
+    let name = path.display().to_string();
+    let bytes = if path.exists() {
+        crate::input_file::read_capped(&path, cap, &phonglab_core::t!("file-kind-scenes"))
+    } else {
+        file.bytes().map_err(|e| phonglab_core::t!("cannot-read", path = name.clone(), error = e))
+    };
+    Some(bytes.map(|b| (name, b)))
+}
+
+/// Files that arrived since the last frame (the browser's chooser and drops; none on the
+/// desktop, where files are read when asked for).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn take_arrived() -> Vec<Result<Arrived, String>> {
+    Vec::new()
+}
+
+/// Offers `bytes` as a file named `name` to download (the browser); the desktop writes
+/// files at paths instead, so this says so.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn download(_name: &str, _bytes: &[u8], _mime: &str) -> Result<(), String> {
+    Err("downloads are for the browser; the desktop saves at a path".into())
+}
+
+#[cfg(target_arch = "wasm32")]
+pub use web::{choose_file, download, read_dropped, take_arrived};
+
+#[cfg(target_arch = "wasm32")]
+mod web {
+    use std::cell::RefCell;
+
+    use wasm_bindgen::JsCast;
+    use wasm_bindgen::prelude::Closure;
+
+    use super::Arrived;
+
+    thread_local! {
+        static INBOX: RefCell<Vec<Result<Arrived, String>>> = const { RefCell::new(Vec::new()) };
+    }
+
+    fn arrive(ctx: &egui::Context, file: Result<Arrived, String>) {
+        INBOX.with(|i| i.borrow_mut().push(file));
+        ctx.request_repaint();
+    }
+
+    /// The files that arrived since the last frame.
+    pub fn take_arrived() -> Vec<Result<Arrived, String>> {
+        INBOX.with(|i| std::mem::take(&mut *i.borrow_mut()))
+    }
+
+    /// Opens the browser's file chooser for files of the types in `accept` (".toml"); the
+    /// chosen file arrives in the inbox once read.
+    pub fn choose_file(ctx: &egui::Context, accept: &str) {
+        let Some(document) = web_sys::window().and_then(|w| w.document()) else { return };
+        let Ok(input) = document.create_element("input") else { return };
+        let Ok(input) = input.dyn_into::<web_sys::HtmlInputElement>() else { return };
+        input.set_type("file");
+        input.set_accept(accept);
+        let ctx = ctx.clone();
+        let chosen = input.clone();
+        let on_change = Closure::once_into_js(move || {
+            let Some(file) = chosen.files().and_then(|l| l.get(0)) else { return };
+            wasm_bindgen_futures::spawn_local(async move {
+                let name = file.name();
+                let read = wasm_bindgen_futures::JsFuture::from(file.array_buffer()).await;
+                let bytes = read
+                    .map(|b| js_sys::Uint8Array::new(&b).to_vec())
+                    .map_err(|e| phonglab_core::t!("cannot-read", path = name.clone(), error = format!("{e:?}")));
+                arrive(&ctx, bytes.map(|b| (name, b)));
+            });
+        });
+        input.set_onchange(Some(on_change.unchecked_ref()));
+        input.click();
+    }
+
+    /// Reads a dropped file's bytes (asynchronously: they arrive in the inbox); `None` now.
+    pub fn read_dropped(
+        ctx: &egui::Context,
+        file: &egui::DroppedFileHandle,
+        cap: u64,
+    ) -> Option<Result<Arrived, String>> {
+        let (ctx, file) = (ctx.clone(), file.clone());
+        wasm_bindgen_futures::spawn_local(async move {
+            let name = file.path().display().to_string();
+            let read = file.bytes_async().await;
+            let checked =
+                read.map_err(|e| phonglab_core::t!("cannot-read", path = name.clone(), error = e)).and_then(|b| {
+                    if b.len() as u64 > cap {
+                        Err(phonglab_core::t!(
+                            "read-too-large",
+                            path = name.clone(),
+                            size = phonglab_core::mesh::obj::describe_bytes(b.len() as u64),
+                            what = phonglab_core::t!("file-kind-scenes"),
+                            cap = phonglab_core::mesh::obj::describe_bytes(cap)
+                        ))
+                    } else {
+                        Ok(b)
+                    }
+                });
+            arrive(&ctx, checked.map(|b| (name, b)));
+        });
+        None
+    }
+
+    /// Offers `bytes` as a download named `name`.
+    pub fn download(name: &str, bytes: &[u8], mime: &str) -> Result<(), String> {
+        let fail = |e: wasm_bindgen::JsValue| phonglab_core::t!("browser-download-failed", error = format!("{e:?}"));
+        let array = js_sys::Uint8Array::from(bytes);
+        let parts = js_sys::Array::of1(&array);
+        let options = web_sys::BlobPropertyBag::new();
+        options.set_type(mime);
+        let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &options).map_err(fail)?;
+        let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(fail)?;
+        let document = web_sys::window().and_then(|w| w.document()).ok_or_else(|| fail("no document".into()))?;
+        let a = document
+            .create_element("a")
+            .map_err(fail)?
+            .dyn_into::<web_sys::HtmlAnchorElement>()
+            .map_err(|e| fail(e.into()))?;
+        a.set_href(&url);
+        a.set_download(name);
+        a.click();
+        let _ = web_sys::Url::revoke_object_url(&url);
+        Ok(())
+    }
+}

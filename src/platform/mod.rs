@@ -1,0 +1,19 @@
+//! What differs between the desktop and the browser (and between operating systems), kept
+//! out of the panels: each file is one concept, with its desktop and its browser way side
+//! by side.
+//!
+//! | module | desktop | browser |
+//! |---|---|---|
+//! | [`os`] | closing and syncing files, the storage folder, termination signals | (not used) |
+//! | [`files`] | typed paths and the system's file dialog | a file chooser, downloads, dropped files read asynchronously |
+//! | [`storage`] | the session in a file ([`crate::app::session`]) | the session in `localStorage` |
+//! | [`threads`] | work on a thread of its own, rayon's pool | work on the calling thread (no cross-origin isolation needed) |
+//! | [`clock`] | `std::time::Instant` | `performance.now()`, through `web-time` |
+//! | [`language`] | `LC_ALL`, `LC_MESSAGES`, `LANG` | `navigator.language` |
+
+pub mod clock;
+pub mod files;
+pub mod language;
+pub mod os;
+pub mod storage;
+pub mod threads;

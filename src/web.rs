@@ -1,0 +1,143 @@
+//! The app in a browser (`scripts/web` builds it): the same window as the desktop's, started
+//! on the page's canvas by eframe's web runner, on WebGPU where the browser has it and on
+//! WebGL2 otherwise (the shaded view then runs the scene's generated WGSL through wgpu's
+//! WebGL2 backend, or falls back to the CPU renderer, on the page's one thread). What
+//! differs from the desktop is in [`crate::platform`]: the session lives in `localStorage`,
+//! files come from the browser's chooser and drops and leave as downloads, the language is
+//! the browser's.
+//!
+//! The page's probe, `phonglab_probe()` (a JSON string), tells a test what the window shows:
+//! the vertex colour, who drew the shaded view, and where the named controls are.
+
+use std::cell::RefCell;
+
+use wasm_bindgen::JsCast;
+use wasm_bindgen::prelude::*;
+
+use crate::app::gpu_view::RendererChoice;
+use crate::app::state::{AppState, Message};
+use crate::app::{app_ui, restore, session, store};
+use crate::platform::clock::{Duration, Instant};
+
+/// How often the session is kept while it changes (localStorage is written synchronously).
+const KEEP_EVERY: Duration = Duration::from_millis(1000);
+
+thread_local! {
+    static PROBE: RefCell<String> = const { RefCell::new(String::new()) };
+}
+
+/// What the window showed last frame, as JSON (see the module's documentation).
+#[wasm_bindgen]
+pub fn phonglab_probe() -> String {
+    PROBE.with(|p| p.borrow().clone())
+}
+
+/// The app on a page: its state and the text of the session it last kept.
+struct WebApp {
+    state: AppState,
+    session: session::Session,
+    kept: Option<String>,
+    last_keep: Instant,
+    frames: u64,
+}
+
+impl WebApp {
+    fn new(cc: &eframe::CreationContext<'_>) -> Self {
+        let stored = crate::platform::storage::load_browser_session();
+        let (session, notices) = session::Session::from_text(stored.as_deref());
+        let mut state = restore(&session, notices);
+        state.gpu = cc.wgpu_render_state.as_ref().map(crate::app::gpu_view::install);
+        state.ui.renderer = renderer_asked();
+        WebApp { state, session, kept: stored, last_keep: Instant::now(), frames: 0 }
+    }
+
+    /// Keeps the session in localStorage when it changed (at most once a second).
+    fn keep(&mut self) {
+        if self.last_keep.elapsed() < KEEP_EVERY {
+            return;
+        }
+        self.last_keep = Instant::now();
+        store(&self.state, &mut self.session);
+        let text = self.session.text();
+        if self.kept.as_deref() == Some(text.as_str()) {
+            return;
+        }
+        match crate::platform::storage::save_browser_session(&text) {
+            Ok(()) => self.kept = Some(text),
+            Err(e) => {
+                log::error!("{e}");
+                self.state.message = Some(Message::Refused(phonglab_core::t!("session-not-saved", error = e)));
+                // Said once: not tried again until the session changes.
+                self.kept = Some(text);
+            }
+        }
+    }
+
+    fn probe(&self, ctx: &egui::Context) {
+        let colour = self.state.evaluate().ok().map(|e| e.front.primary);
+        let caption = crate::app::shaded::drawn_caption(&self.state.shaded.main);
+        let landmarks: serde_json::Map<String, serde_json::Value> = crate::app::widgets::landmarks(ctx)
+            .into_iter()
+            .map(|(k, r)| (k, serde_json::json!([r.min.x, r.min.y, r.width(), r.height()])))
+            .collect();
+        let probe = serde_json::json!({
+            "frames": self.frames,
+            "scene": self.state.doc.name,
+            "colour": colour,
+            "drawn_by": caption,
+            "gpu": self.state.gpu.is_some(),
+            "pixels_per_point": ctx.pixels_per_point(),
+            "landmarks": landmarks,
+            "message": self.state.message.as_ref().map(|m| format!("{m:?}")),
+        });
+        PROBE.with(|p| *p.borrow_mut() = probe.to_string());
+    }
+}
+
+impl eframe::App for WebApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        app_ui(ui, &mut self.state);
+        self.frames += 1;
+        self.probe(ui.ctx());
+        self.keep();
+        ui.ctx().request_repaint_after(KEEP_EVERY);
+    }
+}
+
+/// Who draws the shaded view, as the page's address asks (`?renderer=gpu`, `cpu` or `auto`,
+/// the desktop's `--renderer`): by default the GPU when the browser's adapter is a real
+/// one, else the CPU renderer.
+fn renderer_asked() -> RendererChoice {
+    let search = web_sys::window().and_then(|w| w.location().search().ok()).unwrap_or_default();
+    let asked = web_sys::UrlSearchParams::new_with_str(&search).ok().and_then(|p| p.get("renderer"));
+    match asked.as_deref() {
+        Some("gpu") => RendererChoice::Gpu,
+        Some("cpu") => RendererChoice::Cpu,
+        _ => RendererChoice::Auto,
+    }
+}
+
+/// Starts the app on the page's `<canvas id="phonglab">`.
+pub fn start() {
+    eframe::WebLogger::init(log::LevelFilter::Warn).ok();
+    let lang = crate::platform::language::system();
+    phonglab_core::locale::set_default(phonglab_core::locale::Locale::of(lang));
+    wasm_bindgen_futures::spawn_local(async {
+        let Some(document) = web_sys::window().and_then(|w| w.document()) else { return };
+        let Some(canvas) =
+            document.get_element_by_id("phonglab").and_then(|e| e.dyn_into::<web_sys::HtmlCanvasElement>().ok())
+        else {
+            log::error!("the page has no <canvas id=\"phonglab\">");
+            return;
+        };
+        let started = eframe::WebRunner::new()
+            .start(canvas, eframe::WebOptions::default(), Box::new(|cc| Ok(Box::new(WebApp::new(cc)))))
+            .await;
+        if let Some(loading) = document.get_element_by_id("loading") {
+            match started {
+                Ok(()) => loading.remove(),
+                Err(e) => loading.set_text_content(Some(&format!("phonglab could not start: {e:?}"))),
+            }
+        }
+    });
+}
