@@ -18,3 +18,4 @@ pub mod screenshot_cmd;
 pub mod sheet_pdf;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
+pub mod zip_store;

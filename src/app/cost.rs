@@ -16,7 +16,9 @@ use phonglab_core::{EvalOptions, Scene, Shading, View};
 use phonglab_core::{locale, t};
 
 /// Image size of the app's study and heat map, in pixels (the CLI's default is larger).
-pub const APP_SIZE: usize = 256;
+/// Smaller in the browser, where the study runs on the page's one thread, before the next
+/// frame ([`crate::platform::threads`]).
+pub const APP_SIZE: usize = if crate::platform::threads::BACKGROUND { 256 } else { 128 };
 
 /// The background colour of the study's images (the shaded view's).
 pub const BACKGROUND: [f32; 3] = [0.1, 0.1, 0.15];

@@ -8,6 +8,7 @@ pub mod compare;
 pub mod controls;
 pub mod cost;
 pub mod evaluated;
+pub mod export;
 pub mod files;
 pub mod gpu_view;
 pub mod help;
@@ -164,6 +165,7 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         ui.toggle_value(&mut state.cost.open, t!("cost-of-accuracy")).on_hover_text(t!("cost-hover"));
         ui.separator();
         files::file_ui(ui, state);
+        export::export_menu_ui(ui, state);
         ui.separator();
         language_menu_ui(ui, &mut state.ui.layout);
         if ui.button(t!("help-button")).clicked() {

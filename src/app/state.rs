@@ -86,6 +86,8 @@ pub struct UiState {
     /// Open… and Save as… use the system's file dialog (the window's app; not headless
     /// tests, where a dialog would wait for a person).
     pub file_dialogs: bool,
+    /// The Export menu's exercise settings.
+    pub export: super::export::ExportState,
 }
 
 impl Default for UiState {
@@ -107,6 +109,7 @@ impl Default for UiState {
             quit: false,
             geometry: Geometry::default(),
             file_dialogs: false,
+            export: Default::default(),
         }
     }
 }

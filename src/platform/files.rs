@@ -69,6 +69,33 @@ pub fn download(_name: &str, _bytes: &[u8], _mime: &str) -> Result<(), String> {
     Err("downloads are for the browser; the desktop saves at a path".into())
 }
 
+/// Saves `bytes` as a file the user names: on the desktop where the system's dialog says
+/// (offering `name`), written whole or not at all; in the browser as a download. `Ok(None)`:
+/// the user cancelled; `Ok(Some(where))`: saved there. `dialogs` is false where no dialog
+/// may open (headless tests): then nothing is saved, and the reason is returned.
+pub fn save_bytes(name: &str, bytes: &[u8], mime: &str, dialogs: bool) -> Result<Option<String>, String> {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let _ = mime;
+        if !dialogs {
+            return Err("no file dialog here".into());
+        }
+        let ext = std::path::Path::new(name).extension().map(|e| e.to_string_lossy().into_owned()).unwrap_or_default();
+        let Some(path) =
+            rfd::FileDialog::new().add_filter(ext.to_uppercase(), &[ext.as_str()]).set_file_name(name).save_file()
+        else {
+            return Ok(None);
+        };
+        crate::atomic_write::write(&path, bytes).map_err(|e| e.to_string())?;
+        Ok(Some(path.display().to_string()))
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        let _ = dialogs;
+        download(name, bytes, mime).map(|()| Some(name.to_string()))
+    }
+}
+
 #[cfg(target_arch = "wasm32")]
 pub use web::{choose_file, download, read_dropped, take_arrived};
 

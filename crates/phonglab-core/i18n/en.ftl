@@ -429,6 +429,21 @@ open-browser-hover = Choose a scene file (.toml) on this computer
 save-download-hover = Download the scene as a file (.toml)
 downloaded = Offered { $name } as a download.
 
+## export
+
+export = Export
+export-png = Shaded view as PNG ({ $size }×{ $size })
+export-png-hover = The shaded view drawn by the CPU renderer, as phonglab render draws it
+export-exercises = Exercise sheets
+export-seed = Seed
+export-count = Exercises
+export-level = Level
+export-levels = 1 directional, 2 positional with attenuation, 3 spotlights, 4 two-sided with several lights
+export-exercises-save = Save the sheets (.zip)
+export-exercises-hover = The sheets and their keys, as Markdown, scene files and the two PDFs (sheets.pdf to hand out, keys.pdf for the teacher), in this language
+exported = Saved { $what }: { $at }
+not-exported = { $what } was not saved: { $error }
+
 ## plots
 
 plot-drag = Drag to orbit (yaw { $yaw }°, pitch { $pitch }°)

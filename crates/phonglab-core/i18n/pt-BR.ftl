@@ -429,6 +429,21 @@ open-browser-hover = Escolher um arquivo de cena (.toml) neste computador
 save-download-hover = Baixar a cena como arquivo (.toml)
 downloaded = { $name } oferecido para download.
 
+## export
+
+export = Exportar
+export-png = Vista sombreada em PNG ({ $size }×{ $size })
+export-png-hover = A vista sombreada desenhada na CPU, como o phonglab render a desenha
+export-exercises = Fichas de exercícios
+export-seed = Semente
+export-count = Exercícios
+export-level = Nível
+export-levels = 1 direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
+export-exercises-save = Salvar as fichas (.zip)
+export-exercises-hover = As fichas e as respostas, em Markdown, arquivos de cena e os dois PDF (sheets.pdf para distribuir, keys.pdf para o professor), neste idioma
+exported = Salvo { $what }: { $at }
+not-exported = { $what } não foi salvo: { $error }
+
 ## plots
 
 plot-drag = Arraste para girar (guinada { $yaw }°, inclinação { $pitch }°)

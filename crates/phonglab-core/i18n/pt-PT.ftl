@@ -429,6 +429,21 @@ open-browser-hover = Escolher um ficheiro de cena (.toml) neste computador
 save-download-hover = Transferir a cena como ficheiro (.toml)
 downloaded = { $name } oferecido para transferir.
 
+## export
+
+export = Exportar
+export-png = Vista sombreada em PNG ({ $size }×{ $size })
+export-png-hover = A vista sombreada desenhada no CPU, como o phonglab render a desenha
+export-exercises = Fichas de exercícios
+export-seed = Semente
+export-count = Exercícios
+export-level = Nível
+export-levels = 1 direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
+export-exercises-save = Guardar as fichas (.zip)
+export-exercises-hover = As fichas e as respostas, em Markdown, ficheiros de cena e os dois PDF (sheets.pdf para distribuir, keys.pdf para o professor), nesta língua
+exported = Guardado { $what }: { $at }
+not-exported = { $what } não foi guardado: { $error }
+
 ## plots
 
 plot-drag = Arrasta para rodar (guinada { $yaw }°, inclinação { $pitch }°)

@@ -1,0 +1,102 @@
+//! The Export menu: what the app hands out as files. The shaded view as a PNG (the CPU
+//! renderer at 512×512: what `phonglab render --scene` draws for this scene) and a set of
+//! exercise sheets as one zip (what `phonglab exercise` writes: the sheets, keys and scene
+//! files, `sheets.pdf` and `keys.pdf`, in the window's language). On the desktop they are
+//! saved where the system's dialog says; in the browser they are downloads
+//! ([`crate::platform::files::save_bytes`]).
+
+use egui::Ui;
+use phonglab_core::t;
+
+use super::state::{AppState, Message};
+
+/// The exercise set's settings, kept while the window runs.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ExportState {
+    /// The random seed (the same seed gives the same sheets).
+    pub seed: u32,
+    /// How many exercises.
+    pub count: u32,
+    /// The level, 1 to 4.
+    pub level: u32,
+}
+
+impl Default for ExportState {
+    fn default() -> Self {
+        ExportState { seed: 1, count: 5, level: 2 }
+    }
+}
+
+/// The PNG's size in pixels.
+pub const PNG_SIZE: usize = 512;
+
+/// The shaded view of `state`'s scene as a PNG file's bytes, drawn by the CPU renderer.
+pub fn shaded_png(state: &AppState) -> Result<Vec<u8>, String> {
+    let doc = &state.doc;
+    let mesh = doc.view.mesh();
+    let setup = doc.shaded_setup(state.ui.pow);
+    let job = setup.job(&mesh);
+    let mut renderer = phonglab_core::render::Renderer::new();
+    let (img, _) = renderer.render(&job, PNG_SIZE, PNG_SIZE).map_err(|e| e.to_string())?;
+    crate::image_io::encode_png(img.width, img.height, &img.rgba).map_err(|e| e.to_string())
+}
+
+/// An exercise set as a zip file's bytes: every file `phonglab exercise` writes.
+pub fn exercises_zip(e: &ExportState) -> Result<Vec<u8>, String> {
+    let args = crate::exercise_cmd::ExerciseArgs {
+        seed: u64::from(e.seed),
+        count: e.count.clamp(1, 100),
+        level: Some(e.level.clamp(1, 4) as u8),
+        effects: Vec::new(),
+        rules: "worksheet".into(),
+        worksheet: false,
+        out: std::path::PathBuf::from("."),
+    };
+    let (_, set) = crate::exercise_cmd::exercise_set(&args).map_err(|e| format!("{e:#}"))?;
+    Ok(crate::zip_store::zip_stored(&set.files))
+}
+
+/// Saves (or downloads) `bytes` as `name`, and says so.
+fn hand_out(state: &mut AppState, name: &str, bytes: Result<Vec<u8>, String>, mime: &str) {
+    let saved = bytes.and_then(|b| crate::platform::files::save_bytes(name, &b, mime, state.ui.file_dialogs));
+    state.message = match saved {
+        Ok(Some(at)) => Some(Message::Info(t!("exported", what = name, at = at))),
+        Ok(None) => None,
+        Err(e) => Some(Message::Refused(t!("not-exported", what = name, error = e))),
+    };
+}
+
+/// The Export menu's button and its contents.
+pub fn export_menu_ui(ui: &mut Ui, state: &mut AppState) {
+    ui.menu_button(t!("export"), |ui| {
+        if ui.button(t!("export-png", size = PNG_SIZE.to_string())).on_hover_text(t!("export-png-hover")).clicked() {
+            let name = format!(
+                "phonglab-{}-{}.png",
+                state.doc.view.object.key(),
+                state.doc.view.shading.label().to_lowercase()
+            );
+            let png = shaded_png(state);
+            hand_out(state, &name, png, "image/png");
+            ui.close();
+        }
+        ui.separator();
+        ui.label(egui::RichText::new(t!("export-exercises")).strong());
+        let e = &mut state.ui.export;
+        egui::Grid::new("export exercises").num_columns(2).show(ui, |ui| {
+            super::widgets::whole_number_ui(ui, &t!("export-seed"), &mut e.seed, 1..=999_999);
+            ui.end_row();
+            super::widgets::whole_number_ui(ui, &t!("export-count"), &mut e.count, 1..=100);
+            ui.end_row();
+            super::widgets::whole_number_ui(ui, &t!("export-level"), &mut e.level, 1..=4);
+            ui.end_row();
+        });
+        ui.small(t!("export-levels"));
+        if ui.button(t!("export-exercises-save")).on_hover_text(t!("export-exercises-hover")).clicked() {
+            let e = state.ui.export.clone();
+            let name = format!("phonglab-exercises-seed{}-level{}.zip", e.seed, e.level);
+            let zip = exercises_zip(&e);
+            hand_out(state, &name, zip, "application/zip");
+            ui.close();
+        }
+    });
+}

@@ -1,0 +1,89 @@
+//! The Export menu: the PNG is what `phonglab render` draws for the scene, byte for byte;
+//! the exercise zip holds what `phonglab exercise` writes, byte for byte; the menu shows
+//! its labelled fields inside the window.
+
+use std::process::Command;
+
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use phonglab::app::export::{ExportState, exercises_zip, shaded_png};
+use phonglab::app::{AppState, app_ui};
+
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("phonglab-export-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn phonglab(args: &[&str]) {
+    let o = Command::new(env!("CARGO_BIN_EXE_phonglab"))
+        .env_remove("LC_MESSAGES")
+        .env_remove("LANG")
+        .env("LC_ALL", "C.UTF-8")
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+}
+
+#[test]
+fn the_png_is_what_render_draws_for_the_scene() {
+    let dir = temp_dir("png");
+    let mut state = AppState::worksheet();
+    state.doc.view.shading = phonglab_core::Shading::Phong;
+    let png = shaded_png(&state).unwrap();
+    let scene = dir.join("scene.toml");
+    std::fs::write(&scene, state.doc.to_toml().unwrap()).unwrap();
+    let out = dir.join("render.png");
+    phonglab(&["render", "--scene", scene.to_str().unwrap(), "--size", "512", "-o", out.to_str().unwrap()]);
+    assert_eq!(png, std::fs::read(&out).unwrap(), "the menu's PNG and render's");
+    assert!(png.len() > 10_000, "{} bytes: a picture, not an empty image", png.len());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn the_exercise_zip_holds_what_exercise_writes() {
+    let dir = temp_dir("zip");
+    let zip = exercises_zip(&ExportState { seed: 3, count: 2, level: 2 }).unwrap();
+    std::fs::write(dir.join("set.zip"), &zip).unwrap();
+    let unzipped = Command::new("python3")
+        .args(["-c", "import sys, zipfile; zipfile.ZipFile(sys.argv[1]).extractall(sys.argv[2])"])
+        .arg(dir.join("set.zip"))
+        .arg(dir.join("zip"))
+        .output()
+        .unwrap();
+    assert!(unzipped.status.success(), "{}", String::from_utf8_lossy(&unzipped.stderr));
+    let cli = dir.join("cli");
+    phonglab(&["exercise", "--seed", "3", "--count", "2", "--level", "2", "--out", cli.to_str().unwrap()]);
+    let mut names: Vec<String> =
+        std::fs::read_dir(&cli).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    names.sort();
+    assert!(names.contains(&"sheets.pdf".to_string()) && names.contains(&"keys.pdf".to_string()), "{names:?}");
+    for name in &names {
+        let a = std::fs::read(cli.join(name)).unwrap();
+        let b = std::fs::read(dir.join("zip").join(name)).unwrap_or_else(|_| panic!("{name} is not in the zip"));
+        assert!(a == b, "{name} differs between the zip and phonglab exercise");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn the_export_menu_shows_its_fields_inside_the_window() {
+    let mut h = Harness::builder()
+        .with_size([1440.0, 900.0])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(3);
+    h.get_by_label("Export").click();
+    h.run_steps(3);
+    let window = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(1440.0, 900.0));
+    for label in ["Seed", "Exercises", "Level"] {
+        let field = h.get_by_role_and_label(Role::SpinButton, label);
+        let r = field.rect();
+        assert!(window.contains_rect(r) && r.width() > 20.0, "{label} at {r:?}");
+    }
+    let png = h.get_by_label("Shaded view as PNG (512×512)").rect();
+    let save = h.get_by_label("Save the sheets (.zip)").rect();
+    assert!(window.contains_rect(png) && window.contains_rect(save) && save.min.y > png.max.y, "{png:?} {save:?}");
+}
