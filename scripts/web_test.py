@@ -15,7 +15,8 @@ probe (`phonglab_probe()`, src/web.rs):
      same code as the desktop's): the same coverage (within 0.5 % of the pixels, the
      edges' rasterisation) and a mean difference within 2/255 where both cover.
 It prints the time to first frame and who drew the shaded view. Exit status 0 when all
-pass. Usage: scripts/web_test.py [DIST] (default: dist).
+pass. Usage: scripts/web_test.py [DIST] [--figures] (default: dist; --figures also prints
+ms per frame for each object, shading and renderer, for README's figures).
 """
 import base64
 import json
@@ -107,6 +108,16 @@ class Driver:
         self.s("POST", "/actions", {"actions": [{"type": "pointer", "id": "mouse",
                                                    "parameters": {"pointerType": "mouse"}, "actions": moves}]})
 
+    def nudge(self, times=3):
+        """Moves the pointer over an empty corner: each move is an input, so a frame (the
+        window draws only when something happens)."""
+        for k in range(times):
+            self.s("POST", "/actions", {"actions": [{"type": "pointer", "id": "mouse",
+                                                       "parameters": {"pointerType": "mouse"},
+                                                       "actions": [{"type": "pointerMove", "duration": 0,
+                                                                    "x": 1200 - k, "y": 600, "origin": "viewport"}]}]})
+            time.sleep(0.2)
+
     def quit(self):
         try:
             self.s("DELETE", "")
@@ -152,8 +163,8 @@ def decode_png(data):
 def shaded_picture(d, url):
     """The shaded view's pixels on the page at `url`, and who drew them."""
     d.go(url)
-    p = wait_probe(d, lambda q: q["frames"] >= 5 and "shaded-picture" in q["landmarks"], "the shaded view")
-    time.sleep(1.0)
+    wait_probe(d, lambda q: q["frames"] >= 1 and "shaded-picture" in q["landmarks"], "the shaded view")
+    d.nudge()
     p = d.probe()
     rows = decode_png(base64.b64decode(d.s("GET", "/screenshot")))
     x, y, w, h = (round(v * p["pixels_per_point"]) for v in p["landmarks"]["shaded-picture"])
@@ -190,7 +201,8 @@ def wait_probe(d, until, what, seconds=60):
 
 
 def main():
-    dist = sys.argv[1] if len(sys.argv) > 1 else "dist"
+    paths = [a for a in sys.argv[1:] if not a.startswith("--")]
+    dist = paths[0] if paths else "dist"
     if not os.path.exists(os.path.join(dist, "phonglab_bg.wasm")):
         raise SystemExit(f"{dist}/ has no build: run scripts/web first")
     web_port, driver_port = free_port(), free_port()
@@ -209,7 +221,7 @@ def main():
             d.go(url)
             first = wait_probe(d, lambda p: p["frames"] >= 1, "a first frame")
             first_frame_s = time.time() - start
-            p = wait_probe(d, lambda p: p["frames"] >= 3 and p["colour"], "the worksheet's colour")
+            p = wait_probe(d, lambda p: p["frames"] >= 1 and p["colour"], "the worksheet's colour")
             print(f"first frame: {first_frame_s:.2f} s from navigation; shaded view: {p['drawn_by']}; "
                   f"wgpu: {p['gpu']}")
             # 2. The worksheet's I.
@@ -233,7 +245,7 @@ def main():
                 failures.append(f"no session in localStorage: {str(kept)[:200]}")
             before = d.probe()["colour"]
             d.go(url)
-            again = wait_probe(d, lambda q: q["frames"] >= 3 and q["colour"], "the restored scene")
+            again = wait_probe(d, lambda q: q["frames"] >= 1 and q["colour"], "the restored scene")
             if any(abs(a - b) > 1e-12 for a, b in zip(again["colour"], before)):
                 failures.append(f"after a reload the colour is {again['colour']}, was {before}")
             # 6. The generated WGSL on WebGL2 against the CPU renderer, on the worksheet's
@@ -241,7 +253,7 @@ def main():
             # scene is put in the page's session before it opens).
             d.js("window.localStorage.clear();")
             d.go(url)
-            wait_probe(d, lambda q: q["frames"] >= 3, "the worksheet again")
+            wait_probe(d, lambda q: q["frames"] >= 1, "the worksheet again")
             time.sleep(1.5)
             base = d.js("return window.localStorage.getItem('phonglab.session.ron');")
             for obj, shading in [("teapot", "gouraud"), ("sphere", "phong")]:
@@ -259,6 +271,25 @@ def main():
                 if coverage > 0.005 or mean > 2.0 or both < 1000:
                     failures.append(f"{obj} {shading}: the GPU's picture differs from the CPU's: "
                                     f"coverage {coverage:.4f}, mean {mean:.2f}/255 on {both} pixels")
+            # Figures (no assertion): ms per frame of the whole window while the object turns
+            # (auto-rotate repaints every frame), for each object, shading and renderer.
+            if "--figures" in sys.argv:
+                for obj, shading in [("sphere", "gouraud"), ("sphere", "phong"), ("teapot", "gouraud"), ("teapot", "phong")]:
+                    text = re.sub(r'object = \\"[a-z]+\\"', f'object = \\"{obj}\\"', base)
+                    text = re.sub(r'shading = \\"[a-z]+\\"', f'shading = \\"{shading}\\"', text)
+                    text = text.replace('auto_rotate = false', 'auto_rotate = true')
+                    for renderer in ["gpu", "cpu"]:
+                        d.js("window.localStorage.setItem('phonglab.session.ron', arguments[0]);", text)
+                        d.go(url + "?renderer=" + renderer)
+                        q = wait_probe(d, lambda q: q["frames"] >= 10, "turning frames")
+                        d.js("return 0;")
+                        t0, f0 = time.time(), q["frames"]
+                        time.sleep(4.0)
+                        q = d.probe()
+                        ms = 1000 * (time.time() - t0) / max(q["frames"] - f0, 1)
+                        side = round(q["landmarks"]["shaded-picture"][2])
+                        print(f"figures: {obj} {shading} {renderer}: {ms:.1f} ms per frame "
+                              f"({side}x{side} px view; {q['drawn_by']})")
             # 1. No console error, no panic.
             for entry in d.logs():
                 if entry.get("level") == "SEVERE" or "panicked" in entry.get("message", ""):

@@ -19,8 +19,9 @@ use crate::app::state::{AppState, Message};
 use crate::app::{app_ui, restore, session, store};
 use crate::platform::clock::{Duration, Instant};
 
-/// How often the session is kept while it changes (localStorage is written synchronously).
-const KEEP_EVERY: Duration = Duration::from_millis(1000);
+/// How often, at most, the session is kept while it changes (a drag changes it every frame;
+/// localStorage is written synchronously). The last change is kept this long after it.
+const KEEP_EVERY: Duration = Duration::from_millis(250);
 
 thread_local! {
     static PROBE: RefCell<String> = const { RefCell::new(String::new()) };
@@ -37,6 +38,8 @@ struct WebApp {
     state: AppState,
     session: session::Session,
     kept: Option<String>,
+    /// The scene and layout as last kept, so an unchanged frame costs one comparison.
+    kept_state: Option<(phonglab_core::Document, crate::app::layout::Layout)>,
     last_keep: Instant,
     frames: u64,
 }
@@ -48,14 +51,23 @@ impl WebApp {
         let mut state = restore(&session, notices);
         state.gpu = cc.wgpu_render_state.as_ref().map(crate::app::gpu_view::install);
         state.ui.renderer = renderer_asked();
-        WebApp { state, session, kept: stored, last_keep: Instant::now(), frames: 0 }
+        WebApp { state, session, kept: stored, kept_state: None, last_keep: Instant::now(), frames: 0 }
     }
 
-    /// Keeps the session in localStorage when it changed (at most once a second).
-    fn keep(&mut self) {
-        if self.last_keep.elapsed() < KEEP_EVERY {
+    /// Keeps the session in localStorage when the scene or the layout changed (at most every
+    /// [`KEEP_EVERY`]; a change not kept yet asks for a frame then).
+    fn keep(&mut self, ctx: &egui::Context) {
+        let now = (&self.state.doc, &self.state.ui.layout);
+        // The quiz's answers are kept too, with the next change or every half minute.
+        let unchanged = self.kept_state.as_ref().is_some_and(|(d, l)| (d, l) == now);
+        if unchanged && self.last_keep.elapsed() < Duration::from_secs(30) {
             return;
         }
+        if self.last_keep.elapsed() < KEEP_EVERY {
+            ctx.request_repaint_after(KEEP_EVERY);
+            return;
+        }
+        self.kept_state = Some((now.0.clone(), now.1.clone()));
         self.last_keep = Instant::now();
         store(&self.state, &mut self.session);
         let text = self.session.text();
@@ -99,8 +111,7 @@ impl eframe::App for WebApp {
         app_ui(ui, &mut self.state);
         self.frames += 1;
         self.probe(ui.ctx());
-        self.keep();
-        ui.ctx().request_repaint_after(KEEP_EVERY);
+        self.keep(ui.ctx());
     }
 }
 

@@ -132,7 +132,6 @@ pub fn file_ui(ui: &mut Ui, state: &mut AppState) {
     if ui.button(t!("save")).on_hover_text(t!("save-hover")).clicked() {
         save_typed(state);
     }
-    #[cfg(not(target_arch = "wasm32"))]
     if state.ui.file_dialogs {
         let start = path_of(state);
         if ui.button(t!("open-dialog")).on_hover_text(t!("open-dialog-hover")).clicked()

@@ -96,6 +96,18 @@ pub fn save_bytes(name: &str, bytes: &[u8], mime: &str, dialogs: bool) -> Result
     }
 }
 
+/// The browser has no dialog that returns a path: see [`choose_file`].
+#[cfg(target_arch = "wasm32")]
+pub fn pick_scene_to_open(_start: Option<&std::path::Path>) -> Option<std::path::PathBuf> {
+    None
+}
+
+/// The browser has no dialog that returns a path: see [`save_bytes`].
+#[cfg(target_arch = "wasm32")]
+pub fn pick_scene_to_save(_start: Option<&std::path::Path>) -> Option<std::path::PathBuf> {
+    None
+}
+
 #[cfg(target_arch = "wasm32")]
 pub use web::{choose_file, download, read_dropped, take_arrived};
 
