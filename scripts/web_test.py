@@ -274,6 +274,8 @@ def main():
             # Figures (no assertion): ms per frame of the whole window while the object turns
             # (auto-rotate repaints every frame), for each object, shading and renderer.
             if "--figures" in sys.argv:
+                # A window large enough for a view of about 512x512 pixels.
+                d.s("POST", "/window/rect", {"width": 2300, "height": 1500})
                 for obj, shading in [("sphere", "gouraud"), ("sphere", "phong"), ("teapot", "gouraud"), ("teapot", "phong")]:
                     text = re.sub(r'object = \\"[a-z]+\\"', f'object = \\"{obj}\\"', base)
                     text = re.sub(r'shading = \\"[a-z]+\\"', f'shading = \\"{shading}\\"', text)

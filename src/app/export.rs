@@ -60,6 +60,7 @@ pub fn exercises_zip(e: &ExportState) -> Result<Vec<u8>, String> {
 fn hand_out(state: &mut AppState, name: &str, bytes: Result<Vec<u8>, String>, mime: &str) {
     let saved = bytes.and_then(|b| crate::platform::files::save_bytes(name, &b, mime, state.ui.file_dialogs));
     state.message = match saved {
+        Ok(Some(_)) if !crate::platform::files::TYPED_PATHS => Some(Message::Info(t!("downloaded", name = name))),
         Ok(Some(at)) => Some(Message::Info(t!("exported", what = name, at = at))),
         Ok(None) => None,
         Err(e) => Some(Message::Refused(t!("not-exported", what = name, error = e))),
