@@ -10,6 +10,7 @@ probe (`phonglab_probe()`, src/web.rs):
   3. the language is the browser's (the controls say "Luz z");
   4. a slider moved with the pointer (a real drag of "Luz z") changes the colour;
   5. the session is kept in localStorage and restored on reload;
+  6a. a scene file dropped on the page opens (assets/scenes/spotlight.toml);
   6. the shaded view drawn by the scene's generated WGSL on WebGL2 (`?renderer=gpu`)
      matches the CPU renderer's picture (`?renderer=cpu`, the reference renderer, the
      same code as the desktop's): the same coverage (within 0.5 % of the pixels, the
@@ -248,6 +249,22 @@ def main():
             again = wait_probe(d, lambda q: q["frames"] >= 1 and q["colour"], "the restored scene")
             if any(abs(a - b) > 1e-12 for a, b in zip(again["colour"], before)):
                 failures.append(f"after a reload the colour is {again['colour']}, was {before}")
+            # 6a. A scene file dropped on the page (a drop event with the file, as the
+            # browser makes when a file is dropped on the canvas).
+            spot = open(os.path.join(os.path.dirname(__file__), "..", "assets", "scenes", "spotlight.toml")).read()
+            d.js("""
+                const dt = new DataTransfer();
+                dt.items.add(new File([arguments[0]], 'spotlight.toml', {type: 'application/toml'}));
+                const canvas = document.getElementById('phonglab');
+                for (const kind of ['dragenter', 'dragover', 'drop']) {
+                    canvas.dispatchEvent(new DragEvent(kind, {dataTransfer: dt, bubbles: true, cancelable: true}));
+                }""", spot)
+            d.nudge()
+            dropped = wait_probe(d, lambda q: q["scene"] == "a spotlight", "the dropped scene (a spotlight)", 20)
+            print(f"dropped spotlight.toml: the scene is {dropped['scene']!r}, I = {dropped['colour'][:3]}")
+            # What `phonglab explain assets/scenes/spotlight.toml` prints.
+            if any(abs(a - b) > 1e-8 for a, b in zip(dropped["colour"], [0.54840042, 0.42136389, 0.13368278])):
+                failures.append(f"the dropped spotlight's I is {dropped['colour']}, not explain's")
             # 6. The generated WGSL on WebGL2 against the CPU renderer, on the worksheet's
             # scene as the teapot in Gouraud shading and as the sphere in Phong shading (the
             # scene is put in the page's session before it opens).
