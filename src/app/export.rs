@@ -83,6 +83,10 @@ pub fn export_menu_ui(ui: &mut Ui, state: &mut AppState) {
         ui.separator();
         ui.label(egui::RichText::new(t!("export-exercises")).strong());
         let e = &mut state.ui.export;
+        // A menu draws its widgets frameless: give the fields back their frame, so they read
+        // as fields to type in.
+        let framed = ui.visuals().widgets.noninteractive.bg_stroke;
+        ui.visuals_mut().widgets.inactive.bg_stroke = framed;
         egui::Grid::new("export exercises").num_columns(2).show(ui, |ui| {
             super::widgets::whole_number_ui(ui, &t!("export-seed"), &mut e.seed, 1..=999_999);
             ui.end_row();
