@@ -10,7 +10,7 @@
 //!   when it changed) and for tessellation: `case ui_median ui_p95 tessellate_median
 //!   tessellate_p95 total_median`. Painting is the GPU's and is not included.
 
-use std::time::Instant;
+use crate::platform::clock::Instant;
 
 use anyhow::Result;
 use clap::{Args, Subcommand};

@@ -42,6 +42,10 @@ struct WebApp {
     kept_state: Option<(phonglab_core::Document, crate::app::layout::Layout)>,
     last_keep: Instant,
     frames: u64,
+    /// The last frame's time in `app_ui` (layout, the scene's evaluation, the CPU render).
+    ui_ms: f64,
+    /// The benchmark's figures, when the address asked for them.
+    bench: Option<serde_json::Value>,
 }
 
 impl WebApp {
@@ -51,7 +55,16 @@ impl WebApp {
         let mut state = restore(&session, notices);
         state.gpu = cc.wgpu_render_state.as_ref().map(crate::app::gpu_view::install);
         state.ui.renderer = renderer_asked();
-        WebApp { state, session, kept: stored, kept_state: None, last_keep: Instant::now(), frames: 0 }
+        WebApp {
+            state,
+            session,
+            kept: stored,
+            kept_state: None,
+            last_keep: Instant::now(),
+            frames: 0,
+            ui_ms: 0.0,
+            bench: None,
+        }
     }
 
     /// Keeps the session in localStorage when the scene or the layout changed (at most every
@@ -85,6 +98,24 @@ impl WebApp {
         }
     }
 
+    /// `?bench=render`: the CPU renderer on the benchmark scene at 512x512 (what `phonglab
+    /// bench render --size 512` times on the desktop), 20 frames per object and shading,
+    /// on the page's one thread; the figures go into the probe.
+    fn bench_once(&mut self) {
+        if self.bench.is_some() || !url_asks("bench", "render") {
+            return;
+        }
+        use phonglab_core::Shading;
+        let figures = crate::bench::render_figures(20, 512, |_, s| s != Shading::Flat);
+        self.bench = Some(match figures {
+            Ok(f) => f
+                .iter()
+                .map(|f| serde_json::json!({"object": f.object, "shading": f.shading.label(), "ms_per_frame": f.ms_per_frame}))
+                .collect(),
+            Err(e) => serde_json::json!({ "error": e.to_string() }),
+        });
+    }
+
     fn probe(&self, ctx: &egui::Context) {
         let colour = self.state.evaluate().ok().map(|e| e.front.primary);
         let caption = crate::app::shaded::drawn_caption(&self.state.shaded.main);
@@ -94,6 +125,8 @@ impl WebApp {
             .collect();
         let probe = serde_json::json!({
             "frames": self.frames,
+            "ui_ms": self.ui_ms,
+            "bench": self.bench,
             "scene": self.state.doc.name,
             "colour": colour,
             "drawn_by": caption,
@@ -108,7 +141,10 @@ impl WebApp {
 
 impl eframe::App for WebApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        self.bench_once();
+        let started = Instant::now();
         app_ui(ui, &mut self.state);
+        self.ui_ms = started.elapsed().as_secs_f64() * 1e3;
         self.frames += 1;
         self.probe(ui.ctx());
         self.keep(ui.ctx());
@@ -119,13 +155,19 @@ impl eframe::App for WebApp {
 /// the desktop's `--renderer`): by default the GPU when the browser's adapter is a real
 /// one, else the CPU renderer.
 fn renderer_asked() -> RendererChoice {
-    let search = web_sys::window().and_then(|w| w.location().search().ok()).unwrap_or_default();
-    let asked = web_sys::UrlSearchParams::new_with_str(&search).ok().and_then(|p| p.get("renderer"));
-    match asked.as_deref() {
-        Some("gpu") => RendererChoice::Gpu,
-        Some("cpu") => RendererChoice::Cpu,
-        _ => RendererChoice::Auto,
+    if url_asks("renderer", "gpu") {
+        RendererChoice::Gpu
+    } else if url_asks("renderer", "cpu") {
+        RendererChoice::Cpu
+    } else {
+        RendererChoice::Auto
     }
+}
+
+/// Does the page's address say `key=value`?
+fn url_asks(key: &str, value: &str) -> bool {
+    let search = web_sys::window().and_then(|w| w.location().search().ok()).unwrap_or_default();
+    web_sys::UrlSearchParams::new_with_str(&search).ok().and_then(|p| p.get(key)).as_deref() == Some(value)
 }
 
 /// Starts the app on the page's `<canvas id="phonglab">`.
