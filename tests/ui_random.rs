@@ -155,6 +155,9 @@ fn run(seed: u64, steps: usize) {
                     .chain(h.query_all_by_role(Role::CheckBox))
                     .chain(h.query_all_by_role(Role::RadioButton))
                     .chain(h.query_all_by_role(Role::ComboBox))
+                    // Not the Export menu: it writes files (and here, with no file dialog,
+                    // only says it cannot), and changes no scene.
+                    .filter(|n| n.accesskit_node().label().is_none_or(|l| l != "Export"))
                     .collect();
                 if nodes.is_empty() {
                     continue;
@@ -171,14 +174,18 @@ fn run(seed: u64, steps: usize) {
             3 => {
                 let nodes: Vec<_> = h
                     .query_all_by_role(Role::TextInput)
-                    // Scene fields: not the file paths, nor the quiz's answer fields (which
-                    // hold any text and refuse nothing), so typed bad values meet the validator.
-                    .filter(|n| {
-                        n.accesskit_node()
-                            .label()
-                            .is_none_or(|l| !l.contains("Scene file") && !l.contains("Mesh file") && !l.ends_with(" ="))
-                    })
                     .chain(h.query_all_by_role(Role::SpinButton))
+                    // Scene fields: not the file paths, nor the quiz's answer fields (which
+                    // hold any text and refuse nothing), nor the Export menu's exercise
+                    // settings, so typed bad values meet the validator.
+                    .filter(|n| {
+                        n.accesskit_node().label().is_none_or(|l| {
+                            !l.contains("Scene file")
+                                && !l.contains("Mesh file")
+                                && !l.ends_with(" =")
+                                && !["Seed", "Exercises", "Level"].contains(&l.as_str())
+                        })
+                    })
                     .collect();
                 if nodes.is_empty() {
                     continue;
