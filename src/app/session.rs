@@ -370,4 +370,24 @@ mod tests {
         assert!(notices.is_empty());
         assert_eq!(s.get(DOCUMENT_KEY), Some("name = \"old\""));
     }
+
+    #[test]
+    fn the_browsers_session_text_is_read_back_and_a_bad_one_is_said() {
+        // The browser keeps the session's text in localStorage: what `text` gives,
+        // `from_text` reads back, and it writes no file.
+        let mut s = Session::in_memory();
+        s.set(DOCUMENT_KEY, "name = \"from the browser\"".into());
+        let (back, notices) = Session::from_text(Some(&s.text()));
+        assert!(notices.is_empty(), "{notices:?}");
+        assert_eq!(back.get(DOCUMENT_KEY), Some("name = \"from the browser\""));
+        assert_eq!(back.path(), None, "nothing on a disk");
+        let mut back = back;
+        assert_eq!(back.save(), Ok(false), "the page writes localStorage itself");
+        // Nothing kept yet: an empty session. A damaged text: said, and an empty session.
+        let (none, notices) = Session::from_text(None);
+        assert!(notices.is_empty() && none.get(DOCUMENT_KEY).is_none());
+        let (bad, notices) = Session::from_text(Some("{\"phonglab.document.toml\": \"unterminated"));
+        assert_eq!(notices.len(), 1, "{notices:?}");
+        assert!(bad.get(DOCUMENT_KEY).is_none());
+    }
 }
