@@ -4,30 +4,12 @@ use std::io::Write;
 use std::path::Path;
 use std::process::{Command, Output};
 
-/// Runs the binary in English whatever the machine's locale (tests of the other languages
-/// set theirs).
-fn phonglab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_phonglab"))
-        .env_remove("LC_MESSAGES")
-        .env_remove("LANG")
-        .env("LC_ALL", "C.UTF-8")
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
+mod common;
+use common::{phonglab, phonglab_in};
 
 #[test]
 fn explain_speaks_the_systems_language_or_the_one_asked_for() {
-    let run = |lang: &str, args: &[&str]| {
-        let o = Command::new(env!("CARGO_BIN_EXE_phonglab"))
-            .env_remove("LC_ALL")
-            .env_remove("LC_MESSAGES")
-            .env("LANG", lang)
-            .args(args)
-            .output()
-            .unwrap();
-        stdout(&o)
-    };
+    let run = |lang: &str, args: &[&str]| stdout(&phonglab_in(lang, args));
     let pt = run("pt_PT.UTF-8", &["explain", "--worksheet", "5"]);
     assert!(pt.starts_with("Cálculo passo a passo: a ficha, mview5\nface da frente, 1 luz, f64"), "{pt}");
     assert!(
@@ -612,17 +594,6 @@ fn bench_lighting_says_where_the_time_goes_stage_by_stage() {
         let total = v.last().unwrap().1;
         assert!(total > 0.0 && (parts - total).abs() <= 0.02 * total + 0.05, "{parts} vs {total}");
     }
-}
-
-/// Runs the binary with the system's language `lang`.
-fn phonglab_in(lang: &str, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_phonglab"))
-        .env_remove("LC_ALL")
-        .env_remove("LC_MESSAGES")
-        .env("LANG", lang)
-        .args(args)
-        .output()
-        .expect("the binary runs")
 }
 
 #[test]

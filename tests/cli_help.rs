@@ -4,7 +4,6 @@
 //! sentence of ours nor clap's own words.
 
 use std::collections::BTreeSet;
-use std::process::Command as Process;
 
 use clap::CommandFactory;
 use phonglab::cli::Cli;
@@ -54,14 +53,10 @@ fn the_localised_command_tree_is_one_clap_accepts_in_every_language() {
     set_default(Locale::of(Lang::En));
 }
 
+mod common;
+
 fn help(lang: &str, args: &[&str]) -> String {
-    let o = Process::new(env!("CARGO_BIN_EXE_phonglab"))
-        .env_remove("LC_ALL")
-        .env_remove("LC_MESSAGES")
-        .env("LANG", lang)
-        .args(args)
-        .output()
-        .unwrap();
+    let o = common::phonglab_in(lang, args);
     assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
     String::from_utf8_lossy(&o.stdout).into_owned()
 }

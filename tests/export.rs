@@ -17,14 +17,10 @@ fn temp_dir(name: &str) -> std::path::PathBuf {
     d
 }
 
+mod common;
+
 fn phonglab(args: &[&str]) {
-    let o = Command::new(env!("CARGO_BIN_EXE_phonglab"))
-        .env_remove("LC_MESSAGES")
-        .env_remove("LANG")
-        .env("LC_ALL", "C.UTF-8")
-        .args(args)
-        .output()
-        .unwrap();
+    let o = common::phonglab(args);
     assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
 }
 

@@ -27,3 +27,27 @@ pub fn copied_text(h: &Harness<'_, AppState>) -> Vec<String> {
         })
         .collect()
 }
+
+/// Runs the binary in English whatever the machine's locale (tests of the other languages
+/// use [`phonglab_in`]).
+pub fn phonglab(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_phonglab"))
+        .env_remove("LC_MESSAGES")
+        .env_remove("LANG")
+        .env("LC_ALL", "C.UTF-8")
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+/// Runs the binary with the system's language `lang` (`LANG`, the others unset), as a
+/// user whose machine speaks it.
+pub fn phonglab_in(lang: &str, args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_phonglab"))
+        .env_remove("LC_ALL")
+        .env_remove("LC_MESSAGES")
+        .env("LANG", lang)
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
