@@ -22,25 +22,27 @@ pub fn read_capped(path: &Path, cap: u64, what: &str) -> Result<Vec<u8>, String>
     if !meta.is_file() {
         return Err(t!("read-not-a-file", path = shown.clone()));
     }
-    let too_large = |n: u64| {
-        t!(
-            "read-too-large",
-            path = shown.clone(),
-            size = phonglab_core::mesh::obj::describe_bytes(n),
-            what = what,
-            cap = phonglab_core::mesh::obj::describe_bytes(cap)
-        )
-    };
-    if meta.len() > cap {
-        return Err(too_large(meta.len()));
-    }
+    within_cap(&shown, meta.len(), cap, what)?;
     let mut bytes = Vec::with_capacity(meta.len() as usize);
     std::fs::File::open(path).and_then(|f| f.take(cap + 1).read_to_end(&mut bytes)).map_err(cannot)?;
     // The file may have grown since its size was read.
-    if bytes.len() as u64 > cap {
-        return Err(too_large(bytes.len() as u64));
-    }
+    within_cap(&shown, bytes.len() as u64, cap, what)?;
     Ok(bytes)
+}
+
+/// Refuses a file of `size` bytes larger than `cap`, naming it (`name`) and the kind of
+/// file (`what`): for files read here and for the browser's, which arrive as bytes.
+pub fn within_cap(name: &str, size: u64, cap: u64, what: &str) -> Result<(), String> {
+    if size <= cap {
+        return Ok(());
+    }
+    Err(t!(
+        "read-too-large",
+        path = name,
+        size = phonglab_core::mesh::obj::describe_bytes(size),
+        what = what,
+        cap = phonglab_core::mesh::obj::describe_bytes(cap)
+    ))
 }
 
 /// [`read_capped`], as UTF-8 text.

@@ -171,17 +171,8 @@ mod web {
             let read = file.bytes_async().await;
             let checked =
                 read.map_err(|e| phonglab_core::t!("cannot-read", path = name.clone(), error = e)).and_then(|b| {
-                    if b.len() as u64 > cap {
-                        Err(phonglab_core::t!(
-                            "read-too-large",
-                            path = name.clone(),
-                            size = phonglab_core::mesh::obj::describe_bytes(b.len() as u64),
-                            what = phonglab_core::t!("file-kind-scenes"),
-                            cap = phonglab_core::mesh::obj::describe_bytes(cap)
-                        ))
-                    } else {
-                        Ok(b)
-                    }
+                    let what = phonglab_core::t!("file-kind-scenes");
+                    crate::input_file::within_cap(&name, b.len() as u64, cap, &what).map(|()| b)
                 });
             arrive(&ctx, checked.map(|b| (name, b)));
         });
