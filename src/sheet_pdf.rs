@@ -179,27 +179,20 @@ fn layout(fonts: &Fonts, blocks: &[Block]) -> Vec<LaidOut> {
 
 /// Pads each part to an even number of pages with a page that says it is blank.
 fn pad_to_even(fonts: &Fonts, pages: Vec<LaidOut>) -> Vec<LaidOut> {
-    let mut out: Vec<LaidOut> = Vec::with_capacity(pages.len() + 8);
-    let blank = |fonts: &Fonts, part: usize| {
-        let text = phonglab_core::t!("pdf-blank-page");
-        let x = (PAGE.0 - fonts.width(&text, BODY, false)) / 2.0;
-        LaidOut { part, marks: vec![Mark::Text { at: (x, PAGE.1 / 2.0), text, size: BODY, mono: false }] }
-    };
-    let mut count = 0;
-    for page in pages {
-        if let Some(last) = out.last()
-            && last.part != page.part
-            && count % 2 == 1
-        {
-            out.push(blank(fonts, last.part));
+    // A part's pages follow one another (layout starts each part on a new page).
+    let runs: Vec<(usize, usize)> = pages.chunk_by(|a, b| a.part == b.part).map(|r| (r[0].part, r.len())).collect();
+    let mut out = Vec::with_capacity(pages.len() + runs.len());
+    let mut pages = pages.into_iter();
+    for (part, len) in runs {
+        out.extend(pages.by_ref().take(len));
+        if len % 2 == 1 {
+            let text = phonglab_core::t!("pdf-blank-page");
+            let x = (PAGE.0 - fonts.width(&text, BODY, false)) / 2.0;
+            out.push(LaidOut {
+                part,
+                marks: vec![Mark::Text { at: (x, PAGE.1 / 2.0), text, size: BODY, mono: false }],
+            });
         }
-        count = if out.last().is_some_and(|l| l.part == page.part) { count + 1 } else { 1 };
-        out.push(page);
-    }
-    if count % 2 == 1
-        && let Some(part) = out.last().map(|l| l.part)
-    {
-        out.push(blank(fonts, part));
     }
     out
 }
@@ -209,18 +202,17 @@ fn pad_to_even(fonts: &Fonts, pages: Vec<LaidOut>) -> Vec<LaidOut> {
 fn add_footers(fonts: &Fonts, pages: &mut [LaidOut], names: &[String]) {
     let size = BODY - 2.0;
     let base = PAGE.1 - MARGIN / 2.0;
-    for i in 0..pages.len() {
-        let part = pages[i].part;
-        let first = pages.iter().position(|p| p.part == part).unwrap_or(i);
-        let count = pages.iter().filter(|p| p.part == part).count();
-        let name = names.get(part).cloned().unwrap_or_default();
-        let number = phonglab_core::t!("pdf-page", page = (i - first + 1).to_string(), pages = count.to_string());
-        let marks = &mut pages[i].marks;
-        if !name.is_empty() {
-            marks.push(Mark::Text { at: (MARGIN, base), text: name, size, mono: false });
+    for run in pages.chunk_by_mut(|a, b| a.part == b.part) {
+        let count = run.len();
+        let name = names.get(run[0].part).cloned().unwrap_or_default();
+        for (k, page) in run.iter_mut().enumerate() {
+            let number = phonglab_core::t!("pdf-page", page = (k + 1).to_string(), pages = count.to_string());
+            if !name.is_empty() {
+                page.marks.push(Mark::Text { at: (MARGIN, base), text: name.clone(), size, mono: false });
+            }
+            let x = PAGE.0 - MARGIN - fonts.width(&number, size, false);
+            page.marks.push(Mark::Text { at: (x, base), text: number, size, mono: false });
         }
-        let x = PAGE.0 - MARGIN - fonts.width(&number, size, false);
-        marks.push(Mark::Text { at: (x, base), text: number, size, mono: false });
     }
 }
 
