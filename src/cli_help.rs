@@ -13,7 +13,7 @@
 
 use clap::builder::{PossibleValue, StyledStr};
 use clap::{Arg, ArgAction, Command};
-use phonglab_core::locale::{Arg as FluentArg, tr, tr_args};
+use phonglab_core::locale::tr;
 use phonglab_core::t;
 
 /// The path of the root command in message ids.
@@ -122,7 +122,7 @@ fn described(arg: Arg, message: &str, arguments: String, options: String) -> Arg
     if !values.is_empty() {
         let names: Vec<&str> = values.iter().map(|v| v.get_name()).collect();
         help.push(' ');
-        help.push_str(&tr_in_current("cli-possible-values", "values", names.join(", ")));
+        help.push_str(&t!("cli-possible-values", values = names.join(", ")));
         long.push('\n');
         for v in &values {
             long.push_str(&format!("\n- {}: {}", v.get_name(), tr(&value_message_id(v.get_name()))));
@@ -131,7 +131,7 @@ fn described(arg: Arg, message: &str, arguments: String, options: String) -> Arg
     let defaults: Vec<String> = arg.get_default_values().iter().map(|v| v.to_string_lossy().into_owned()).collect();
     let shows_default = !defaults.is_empty() && arg.get_action().takes_values();
     if shows_default {
-        let line = tr_in_current("cli-default", "value", defaults.join(", "));
+        let line = t!("cli-default", value = defaults.join(", "));
         help.push(' ');
         help.push_str(&line);
         long.push_str(if values.is_empty() { " " } else { "\n" });
@@ -144,10 +144,6 @@ fn described(arg: Arg, message: &str, arguments: String, options: String) -> Arg
         .hide_possible_values(takes_values)
         .hide_default_value(takes_values)
         .help_heading(heading)
-}
-
-fn tr_in_current(id: &str, name: &str, value: String) -> String {
-    tr_args(id, &[(name, FluentArg::from(value))])
 }
 
 /// `phonglab help [COMMAND…]`: the long help of the command named, or of the root.
