@@ -25,11 +25,20 @@ const KEEP_EVERY: Duration = Duration::from_millis(250);
 
 thread_local! {
     static PROBE: RefCell<String> = const { RefCell::new(String::new()) };
+    /// Whether a page has asked for the probe: from then on each frame writes it; until
+    /// then the frames do no work for it.
+    static PROBED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// The window's context, for the probe's first call to ask for a frame.
+    static WINDOW: RefCell<Option<egui::Context>> = const { RefCell::new(None) };
 }
 
-/// What the window showed last frame, as JSON (see the module's documentation).
+/// What the window showed last frame, as JSON (see the module's documentation); empty
+/// until a frame has been drawn since the first call.
 #[wasm_bindgen]
 pub fn phonglab_probe() -> String {
+    if !PROBED.replace(true) {
+        WINDOW.with(|w| w.borrow().as_ref().map(egui::Context::request_repaint));
+    }
     PROBE.with(|p| p.borrow().clone())
 }
 
@@ -44,6 +53,8 @@ struct WebApp {
     frames: u64,
     /// The last frame's time in `app_ui` (layout, the scene's evaluation, the CPU render).
     ui_ms: f64,
+    /// The address asked for the benchmark (read once, at the start).
+    bench_asked: bool,
     /// The benchmark's figures, when the address asked for them.
     bench: Option<serde_json::Value>,
 }
@@ -55,6 +66,7 @@ impl WebApp {
         let mut state = restore(&session, notices);
         state.gpu = cc.wgpu_render_state.as_ref().map(crate::app::gpu_view::install);
         state.ui.renderer = renderer_asked();
+        WINDOW.with(|w| *w.borrow_mut() = Some(cc.egui_ctx.clone()));
         WebApp {
             state,
             session,
@@ -63,6 +75,7 @@ impl WebApp {
             last_keep: Instant::now(),
             frames: 0,
             ui_ms: 0.0,
+            bench_asked: url_asks("bench", "render"),
             bench: None,
         }
     }
@@ -102,7 +115,7 @@ impl WebApp {
     /// bench render --size 512` times on the desktop), 20 frames per object and shading,
     /// on the page's one thread; the figures go into the probe.
     fn bench_once(&mut self) {
-        if self.bench.is_some() || !url_asks("bench", "render") {
+        if self.bench.is_some() || !self.bench_asked {
             return;
         }
         use phonglab_core::Shading;
@@ -142,11 +155,16 @@ impl WebApp {
 impl eframe::App for WebApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.bench_once();
-        let started = Instant::now();
-        app_ui(ui, &mut self.state);
-        self.ui_ms = started.elapsed().as_secs_f64() * 1e3;
         self.frames += 1;
-        self.probe(ui.ctx());
+        if PROBED.get() {
+            crate::app::widgets::record_landmarks(ui.ctx());
+            let started = Instant::now();
+            app_ui(ui, &mut self.state);
+            self.ui_ms = started.elapsed().as_secs_f64() * 1e3;
+            self.probe(ui.ctx());
+        } else {
+            app_ui(ui, &mut self.state);
+        }
         self.keep(ui.ctx());
     }
 }

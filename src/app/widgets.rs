@@ -35,19 +35,32 @@ pub fn slider_ui(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::Ran
 
 /// Notes where a named control or picture is this frame (in points), for those who drive
 /// the window from outside: the browser test reads them through the page's probe
-/// (`crate::web`), where there is no accessibility tree to search.
+/// (`crate::web`), where there is no accessibility tree to search. Only while someone
+/// asked for them ([`record_landmarks`]); otherwise this is one lookup.
 pub fn landmark(ctx: &egui::Context, name: &str, rect: egui::Rect) {
     ctx.data_mut(|d| {
-        d.get_temp_mut_or_default::<Landmarks>(egui::Id::unique(LANDMARKS)).0.insert(name.to_string(), rect)
+        if d.get_temp::<bool>(egui::Id::unique(RECORDING)) == Some(true) {
+            d.get_temp_mut_or_default::<Landmarks>(egui::Id::unique(LANDMARKS)).0.insert(name.to_string(), rect);
+        }
     });
 }
 
-/// Where each named control was drawn last ([`landmark`]).
+/// Records this frame's landmarks from now on, forgetting the last frame's (a control
+/// not drawn this frame is not where it was).
+pub fn record_landmarks(ctx: &egui::Context) {
+    ctx.data_mut(|d| {
+        d.insert_temp(egui::Id::unique(RECORDING), true);
+        d.insert_temp(egui::Id::unique(LANDMARKS), Landmarks::default());
+    });
+}
+
+/// Where each named control was drawn this frame ([`landmark`]).
 pub fn landmarks(ctx: &egui::Context) -> std::collections::BTreeMap<String, egui::Rect> {
     ctx.data(|d| d.get_temp::<Landmarks>(egui::Id::unique(LANDMARKS)).map(|l| l.0).unwrap_or_default())
 }
 
 const LANDMARKS: &str = "phonglab landmarks";
+const RECORDING: &str = "phonglab landmarks: recording";
 
 #[derive(Clone, Default)]
 struct Landmarks(std::collections::BTreeMap<String, egui::Rect>);
