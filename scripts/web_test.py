@@ -14,10 +14,16 @@ probe (`phonglab_probe()`, src/web.rs):
   6. the shaded view drawn by the scene's generated WGSL on WebGL2 (`?renderer=gpu`)
      matches the CPU renderer's picture (`?renderer=cpu`, the reference renderer, the
      same code as the desktop's): the same coverage (within 0.5 % of the pixels, the
-     edges' rasterisation) and a mean difference within 2/255 where both cover.
+     edges' rasterisation) and a mean difference within 2/255 where both cover;
+  7. the benchmark scene (`?picture=bench`, frame 0 of `phonglab bench render`'s scene),
+     drawn on the canvas by the GPU path and by the CPU path, matches the desktop's image
+     of it (`phonglab render --bench-frame 0 --size 256`, made by scripts/test-web in
+     NATIVE_DIR): the same coverage (within 0.5 %) and a mean difference within 2/255.
 It prints the time to first frame and who drew the shaded view. Exit status 0 when all
-pass. Usage: scripts/web_test.py [DIST] [--figures] (default: dist; --figures also prints
-ms per frame for each object, shading and renderer, for README's figures).
+pass. Usage: scripts/web_test.py [DIST] [--native NATIVE_DIR] [--figures] (default: dist;
+--native: the folder of the desktop's images `bench-OBJECT-SHADING.png` for check 7, skipped
+without it; --figures also prints ms per frame for each object, shading and renderer, for
+README's figures).
 """
 import base64
 import json
@@ -201,8 +207,38 @@ def wait_probe(d, until, what, seconds=60):
     raise SystemExit(f"the page never showed {what}; last probe: {json.dumps(p)[:1500]}")
 
 
+BENCH_PICTURES = [("teapot", "gouraud"), ("teapot", "phong"), ("sphere", "gouraud"), ("sphere", "phong")]
+
+
+def bench_pictures_check(d, url, native_dir, failures):
+    """Check 7: the benchmark scene on the canvas, by each renderer, against the desktop's."""
+    for obj, shading in BENCH_PICTURES:
+        native = decode_png(open(os.path.join(native_dir, f"bench-{obj}-{shading}.png"), "rb").read())
+        for renderer in ["gpu", "cpu"]:
+            d.go(f"{url}?picture=bench&object={obj}&shading={shading}&renderer={renderer}")
+            p = wait_probe(d, lambda q: q["frames"] >= 1 and "bench-picture" in q["landmarks"], "the benchmark picture")
+            d.nudge()
+            p = d.probe()
+            rows = decode_png(base64.b64decode(d.s("GET", "/screenshot")))
+            x, y, w, h = (round(v * p["pixels_per_point"]) for v in p["landmarks"]["bench-picture"])
+            page = [row[x:x + w] for row in rows[y:y + h]]
+            coverage, mean, both = compare_pictures(native, page)
+            print(f"benchmark scene, {obj}, {shading}, {w}x{h} px: the canvas ({renderer}: {p['drawn_by']}) against "
+                  f"the desktop's image: coverage differs on {100 * coverage:.2f} % of the pixels, mean difference "
+                  f"{mean:.2f}/255 on the {both} both cover")
+            if (w, h) != (len(native[0]), len(native)):
+                failures.append(f"the benchmark picture is {w}x{h} px, the desktop's {len(native[0])}x{len(native)}")
+            elif p["drawn_by"] != renderer.upper():
+                failures.append(f"the benchmark picture ({obj} {shading}) was not drawn as asked: {p['drawn_by']!r}")
+            elif coverage > 0.005 or mean > 2.0 or both < 5000:
+                failures.append(f"benchmark scene, {obj} {shading}, {renderer}: the canvas differs from the desktop's "
+                                f"image: coverage {coverage:.4f}, mean {mean:.2f}/255 on {both} pixels")
+
+
 def main():
-    paths = [a for a in sys.argv[1:] if not a.startswith("--")]
+    args = sys.argv[1:]
+    native_dir = args[args.index("--native") + 1] if "--native" in args else None
+    paths = [a for i, a in enumerate(args) if not a.startswith("--") and (i == 0 or args[i - 1] != "--native")]
     dist = paths[0] if paths else "dist"
     if not os.path.exists(os.path.join(dist, "phonglab_bg.wasm")):
         raise SystemExit(f"{dist}/ has no build: run scripts/web first")
@@ -288,6 +324,11 @@ def main():
                 if coverage > 0.005 or mean > 2.0 or both < 1000:
                     failures.append(f"{obj} {shading}: the GPU's picture differs from the CPU's: "
                                     f"coverage {coverage:.4f}, mean {mean:.2f}/255 on {both} pixels")
+            # 7. The benchmark scene against the desktop's image.
+            if native_dir:
+                bench_pictures_check(d, url, native_dir, failures)
+            else:
+                print("check 7 skipped: no --native folder of the desktop's images")
             # Figures (no assertion): ms per frame of the whole window while the object turns
             # (auto-rotate repaints every frame), for each object, shading and renderer.
             if "--figures" in sys.argv:

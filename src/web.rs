@@ -57,6 +57,10 @@ struct WebApp {
     bench_asked: bool,
     /// The benchmark's figures, when the address asked for them.
     bench: Option<serde_json::Value>,
+    /// `?picture=bench`: the page shows the benchmark scene's picture instead of the window.
+    bench_picture: Option<BenchPicture>,
+    /// Who drew the benchmark picture, or why it was not drawn.
+    bench_drawn_by: Result<String, String>,
 }
 
 impl WebApp {
@@ -77,6 +81,8 @@ impl WebApp {
             ui_ms: 0.0,
             bench_asked: url_asks("bench", "render"),
             bench: None,
+            bench_picture: BenchPicture::asked(),
+            bench_drawn_by: Ok(String::new()),
         }
     }
 
@@ -131,7 +137,11 @@ impl WebApp {
 
     fn probe(&self, ctx: &egui::Context) {
         let colour = self.state.evaluate().ok().map(|e| e.front.primary);
-        let caption = crate::app::shaded::drawn_caption(&self.state.shaded.main);
+        let caption = match (&self.bench_picture, &self.bench_drawn_by) {
+            (None, _) => crate::app::shaded::drawn_caption(&self.state.shaded.main),
+            (Some(_), Ok(by)) => by.clone(),
+            (Some(_), Err(e)) => format!("not drawn: {e}"),
+        };
         let landmarks: serde_json::Map<String, serde_json::Value> = crate::app::widgets::landmarks(ctx)
             .into_iter()
             .map(|(k, r)| (k, serde_json::json!([r.min.x, r.min.y, r.width(), r.height()])))
@@ -156,6 +166,12 @@ impl eframe::App for WebApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.bench_once();
         self.frames += 1;
+        if let Some(picture) = &mut self.bench_picture {
+            crate::app::widgets::record_landmarks(ui.ctx());
+            self.bench_drawn_by = picture.picture_ui(ui, self.state.gpu.is_some());
+            self.probe(ui.ctx());
+            return;
+        }
         if PROBED.get() {
             crate::app::widgets::record_landmarks(ui.ctx());
             let started = Instant::now();
@@ -211,4 +227,86 @@ pub fn start() {
             }
         }
     });
+}
+
+/// `?picture=bench&object=sphere|teapot&shading=gouraud|phong`: the page shows only the
+/// benchmark scene's first frame (what `phonglab render --bench-frame 0` draws natively),
+/// 256 pixels square, drawn by the renderer the address asks for, so that a test can put
+/// the canvas's picture beside the desktop's image.
+struct BenchPicture {
+    object: &'static str,
+    shading: phonglab_core::Shading,
+    gpu: bool,
+    /// The CPU renderer's picture, drawn once.
+    texture: Option<egui::TextureHandle>,
+    /// Where the GPU reports a refused program.
+    error: std::sync::Arc<std::sync::Mutex<Option<String>>>,
+}
+
+/// The benchmark picture's side in physical pixels.
+const BENCH_PICTURE_PX: u32 = 256;
+
+impl BenchPicture {
+    /// The picture the address asks for, if it asks for one.
+    fn asked() -> Option<Self> {
+        use phonglab_core::Shading;
+        if !url_asks("picture", "bench") {
+            return None;
+        }
+        let object = if url_asks("object", "teapot") { "teapot" } else { "sphere" };
+        let shading = if url_asks("shading", "phong") { Shading::Phong } else { Shading::Gouraud };
+        Some(BenchPicture {
+            object,
+            shading,
+            gpu: url_asks("renderer", "gpu"),
+            texture: None,
+            error: Default::default(),
+        })
+    }
+
+    /// Draws the picture at the window's top left; its rect is the landmark "bench-picture".
+    fn picture_ui(&mut self, ui: &mut egui::Ui, gpu: bool) -> Result<String, String> {
+        let ppp = ui.ctx().pixels_per_point();
+        let side = BENCH_PICTURE_PX as f32 / ppp;
+        let (rect, _) = ui.allocate_exact_size(egui::vec2(side, side), egui::Sense::hover());
+        crate::app::widgets::landmark(ui.ctx(), "bench-picture", rect);
+        let scene = phonglab_core::presets::bench_scene(0);
+        let [(_, sphere), (_, teapot)] = crate::bench::bench_meshes();
+        let mesh = if self.object == "teapot" { teapot } else { sphere };
+        let job = phonglab_core::library::bench_job(&scene, &mesh, self.shading);
+        if self.gpu && gpu {
+            if let Some(e) = self.error.lock().unwrap_or_else(|e| e.into_inner()).clone() {
+                return Err(e);
+            }
+            let shader = crate::gpu::wgsl_for(job.scene, job.options, job.shading)?;
+            let uniforms = crate::gpu::uniform_bytes(&shader.uniforms, job.scene, &job.clip_from_object)?;
+            let picture = crate::app::gpu_view::Picture {
+                slot: u64::MAX,
+                wgsl: shader.vertex.into(),
+                uniforms,
+                mesh: std::sync::Arc::new(mesh.clone()),
+                background: job.background,
+                px: BENCH_PICTURE_PX,
+                error: self.error.clone(),
+            };
+            crate::app::gpu_view::paint(ui, rect, picture);
+            return Ok("GPU".into());
+        }
+        if self.texture.is_none() {
+            let size = BENCH_PICTURE_PX as usize;
+            let mut renderer = phonglab_core::render::Renderer::new();
+            let (img, _) = renderer.render(&job, size, size).map_err(|e| e.to_string())?;
+            let image = egui::ColorImage::from_rgba_unmultiplied([img.width, img.height], &img.rgba);
+            self.texture = Some(ui.ctx().load_texture("bench picture", image, egui::TextureOptions::NEAREST));
+        }
+        if let Some(t) = &self.texture {
+            ui.painter().image(
+                t.id(),
+                rect,
+                egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0)),
+                egui::Color32::WHITE,
+            );
+        }
+        Ok("CPU".into())
+    }
 }
