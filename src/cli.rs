@@ -119,6 +119,11 @@ pub enum Command {
     /// Draw the whole window headless (no display, no GPU) to a PNG: for slides, handouts
     /// and the tests.
     Screenshot(crate::screenshot_cmd::ScreenshotArgs),
+    /// Write a scene as the student's own code: the worksheet's notebook, a PyOpenGL
+    /// program, an openFrameworks app, or the GLSL.
+    Export(crate::export_cmd::ExportArgs),
+    /// Read a worksheet-style notebook (.ipynb) or Python script (.py) into a scene file.
+    Import(crate::export_cmd::ImportArgs),
 }
 
 /// Floating-point precision of the engine.
@@ -385,6 +390,8 @@ pub fn run(command: Command) -> ExitCode {
         Command::Case(a) => case(&a),
         Command::Cost(a) => cost(&a),
         Command::Screenshot(a) => crate::screenshot_cmd::run(&a),
+        Command::Export(a) => crate::export_cmd::export(&a),
+        Command::Import(a) => crate::export_cmd::import(&a),
     };
     match r {
         Ok(()) => ExitCode::SUCCESS,

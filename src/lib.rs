@@ -8,6 +8,7 @@ pub mod cli_help;
 pub mod cost_cmd;
 pub mod egui_cpu;
 pub mod exercise_cmd;
+pub mod export_cmd;
 pub mod gpu;
 pub mod image_io;
 pub mod input_file;

@@ -444,6 +444,151 @@ export-exercises-hover = The sheets and their keys, as Markdown, scene files and
 exported = Saved { $what }: { $at }
 not-exported = { $what } was not saved: { $error }
 
+## student-code
+
+export-target-notebook = Jupyter notebook (the worksheet's)
+export-target-pyopengl = Python program (PyOpenGL + GLUT)
+export-target-openframeworks = openFrameworks app (ofApp.h, ofApp.cpp, main.cpp)
+export-target-glsl = GLSL shaders
+nb-title =
+    # Computing a vertex's colour with OpenGL lighting
+
+    Scene: **{ $scene }**, written by phonglab (rules: { $rules }).
+
+    obs: change the variables' values to match the configuration used in the openFrameworks app; each cell prints what `phonglab explain` prints, step by step.
+nb-vertex =
+    Initialising the vertex to compute:
+
+    - screen size
+    - pos (x, y, z, 1)
+    - normal vector (x, y, z, 0)
+nb-light-material =
+    Initialising the light's and the material's parameters
+
+    - position/direction (x, y, z, 0/1)
+    - light l_ambient, l_diffuse, l_specular
+    - light constant, linear and quadratic attenuation
+    - light spot direction, spot_cutoff, spot_coefficient
+    - material k_ambient, k_diffuse, k_specular, shininess_ns
+nb-settings = What this scene uses beyond the worksheet (phonglab wrote the cells below for these settings; to change them, change the scene in phonglab and export again):
+nb-modelview =
+    Initialising the modelview matrix
+
+    The lookat transforms the modelview matrix: to do the calculations we need to transform the vectors and positions we use with the modelview matrix.
+nb-light-mview-comment = # each light's position is transformed by the modelview that was current when glLight(GL_POSITION) was called
+nb-vectors =
+    Compute the vectors needed and normalise them:
+
+    - the vertex's normal
+    - vector lightPos - vertexPos (vlv)
+    - vector obsPos - vertexPos (vov)
+
+    For a directional light the vector (lightPos - vertexPos) is not needed: we use lightPos itself.
+
+    The vector (obsPos - vertexPos) is computed differently for `glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, true/false)`: when **true**, obs = [0 0 0 1]; when **false**, only the z component is kept: obs = vertexPos * [1 1 0 1], and vov always comes out as [0 0 1 0].
+
+    More about this at <https://registry.khronos.org/OpenGL-Refpages/gl2.1/xhtml/glLightModel.xml>
+nb-normal-matrix-comment = # OpenGL transforms normals by the inverse transpose of the modelview's 3x3: (M^-1)^T n
+nb-normal-as-is-comment = # the normal is used as transformed (GL_NORMALIZE is off): not divided by its length
+nb-infinite-viewer-comment =
+    #localViewer
+    #false (OpenGL: the viewer infinitely far along +z, V = (0, 0, 1))
+nb-ambient =
+    Computing the ambient component:
+
+    - I<sub>amb</sub> = Light<sub>amb</sub> × Material<sub>amb</sub>
+nb-diffuse =
+    Computing the diffuse component:
+
+    - I<sub>dif</sub> = Light<sub>dif</sub> × Material<sub>dif</sub> × cos(θ)
+    - θ = the angle between the normal and the vector (lightPos - vertexPos)
+    - θ ∈ [0°, 90°]
+nb-acos-comment = # (cosTheta limited to [-1, 1]: rounding can take the dot product of two unit vectors just past 1, where acos fails)
+nb-specular-blinn =
+    Computing the specular component
+
+    Phong's model defines the specular component as I<sub>spec</sub> = Light<sub>spec</sub> × Material<sub>spec</sub> × cos(γ)<sup>ns</sup>, γ the angle between the light's reflected vector and the observer.
+
+    But the OpenGL used in openFrameworks uses a variation of Phong's model:
+
+    - I<sub>spec</sub> = Light<sub>spec</sub> × Material<sub>spec</sub> × cos(β)<sup>ns</sup>
+    - β is the angle between the normal and the **halfway** vector of (light - pos) and (obs - pos)
+    - β ∈ [0°, 90°]
+    - H = (vlv + vov) / |vlv + vov|
+nb-specular-phong =
+    Computing the specular component, Phong's model
+
+    - I<sub>spec</sub> = Light<sub>spec</sub> × Material<sub>spec</sub> × cos(α)<sup>ns</sup>
+    - α is the angle between R, the light's vector reflected about the normal, and the observer
+    - R = 2 (N · vlv) N - vlv
+nb-gate-lit-side-comment = # OpenGL: no specular from a light behind the surface (f = 0 where N · L <= 0)
+nb-attenuation =
+    Computing the attenuation:
+
+    - at = at<sub>constant</sub> + d × at<sub>linear</sub> + d² × at<sub>quadratic</sub>
+
+    only for a point light or a spotlight!
+nb-spot = The spotlight: inside the cone (the angle between -vlv and the spot direction at most spotCutoff), spot = cos<sup>spotCoef</sup> of that angle; outside, 0; 1 for a light that is not a spotlight (spotCutoff 180).
+nb-final =
+    Final calculation:
+
+    - I<sub>final</sub> = (I<sub>amb</sub> + I<sub>dif</sub> + I<sub>spec</sub>)/at
+nb-glcolor-comment = # the colour as drawn: clamped to [0, 1], alpha from the material's diffuse
+nb-back = The back side (two-sided lighting): the same terms with the normal reversed (-vertexNormal) and the back material; the names end in Back.
+nb-no-spot-comment = # not a spotlight (spotCutoff 180)
+err-export-folder = openframeworks writes three files: give a folder with -o (they go into its src/)
+export-written = written: { $path }
+import-written = scene written: { $path } ({ $lights })
+import-unreadable = { $place }: cannot read `{ $line }`: { $reason }; ignored
+import-no-givens = this is not a worksheet-style notebook or script: it assigns none of vertexPos, vertexNormal, lightPos, matDif, mview
+import-not-notebook = not a Jupyter notebook: { $reason }
+import-no-cells = it has no cells
+import-place-cell = cell { $cell }, line { $line }
+import-place-line = line { $line }
+import-reason-extra = unexpected `{ $token }`
+import-reason-string = a string is not closed
+import-reason-char = the character `{ $char }` is not understood
+import-reason-expected = expected `{ $token }`, found `{ $found }`
+import-reason-end = the expression ends too soon
+import-reason-number = `{ $token }` is not a number
+import-reason-name = `{ $name }` is not known here (only numbers, arrays and names assigned before are read)
+import-reason-arithmetic = `{ $op }` between values of different shapes
+import-missing = { $name } is not assigned: the worksheet's value { $value } is used
+import-malformed = { $place }: { $name } should be { $want }; the worksheet's value is used
+import-want-vector = 4 numbers, [x, y, z, w]
+import-want-number = a number
+import-want-matrix = 4 rows of 4 numbers
+file-kind-code = notebooks and scripts
+cli-export = Write a scene as the student's own code: the worksheet's notebook, a PyOpenGL program, an openFrameworks app, or the GLSL
+cli-import = Read a worksheet-style notebook (.ipynb) or Python script (.py) into a scene file
+cli-arg-export-scene = A scene file (TOML); default: the worksheet's scene
+cli-arg-export-to = What to write
+cli-arg-export-output = Where: a file (a folder for openframeworks: the files go into its src/); without it the text goes to the standard output
+cli-arg-import-file = A worksheet-style notebook (.ipynb) or Python script (.py)
+cli-arg-import-output = The scene file to write (TOML)
+cli-value-notebook = the worksheet's Jupyter notebook (.ipynb), with this scene's values
+cli-value-pyopengl = a PyOpenGL + GLUT program in the Phong demo's style (.py)
+cli-value-openframeworks = ofApp.h, ofApp.cpp and main.cpp for openFrameworks 0.12 (a folder)
+cli-value-glsl = the GLSL that `phonglab shader` prints
+export-flat-unsupported = the PyOpenGL program draws with the scene's generated shaders, which are Gouraud or Phong: choose one of them for the shaded view, not Flat
+py-title = { $scene }: the shaded view as phonglab draws it ({ $shading } shading), written by phonglab.
+py-usage = Run: python3 phong_scene.py (a window; needs PyOpenGL, GLUT and NumPy). With --png FILE it draws one 512x512 frame (--size N: NxN), saves it to FILE and exits. The lighting state is set the fixed-function way (glLightfv, glMaterialfv, glLightModel*); the shaders are the scene's own (phonglab shader) and read that state back from GL.
+py-rules-comment = the equation the shaders compute: "worksheet", "opengl" or "phong-demo" (the normal matrix and the scene's ambient follow it)
+py-shaders-comment = The scene's shaders, as `phonglab shader` prints them, in a compatibility-profile context: a_position and a_normal are GL's own gl_Vertex and gl_Normal, which gluSphere, glutSolidTeapot and gluCylinder send.
+py-uniforms-comment = The shaders' uniforms (name, type); set_uniforms() gives each its value from GL's state.
+py-projection-orbit = phonglab's orbit camera: gluPerspective(40, 1, 0.1, 100)
+py-projection-clip = no projection at all: the picture is clip space itself (the Phong demo's)
+py-modelview-comment = the modelview the object is drawn with: the camera, then the object's turn (rows)
+py-lighting-modelview-comment = the modelview the lighting uses, where it is not the drawing's (the demo lights in object space)
+py-light-eye = placed under the identity: the light moves with the eye
+py-light-object = placed under the whole modelview: the light turns with the object
+py-light-world = placed under the view matrix: the light stays put in the world
+py-state-doc = The scene's lighting state, set the fixed-function way. Each light's GL_POSITION and GL_SPOT_DIRECTION are transformed by the modelview current when they are set, so GL keeps them in eye space.
+py-reader-doc = The value of the shaders' uniform u_NAME, read from GL's state (glGetLightfv, glGetMaterialfv, the matrices).
+py-object-doc = The object, as phonglab builds it.
+py-arrays-comment = phonglab's triangles (positions, normals, and three vertex indices per triangle)
+py-teapot-winding = freeglut's teapot is wound clockwise: with two-sided lighting its outside would be lit as the back side
+
 ## plots
 
 plot-drag = Drag to orbit (yaw { $yaw }°, pitch { $pitch }°)

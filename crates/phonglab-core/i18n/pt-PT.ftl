@@ -444,6 +444,151 @@ export-exercises-hover = As fichas e as respostas, em Markdown, ficheiros de cen
 exported = Guardado { $what }: { $at }
 not-exported = { $what } não foi guardado: { $error }
 
+## student-code
+
+export-target-notebook = Caderno Jupyter (o da ficha)
+export-target-pyopengl = Programa em Python (PyOpenGL + GLUT)
+export-target-openframeworks = App openFrameworks (ofApp.h, ofApp.cpp, main.cpp)
+export-target-glsl = Shaders GLSL
+nb-title =
+    # Cálculo da cor dos vértices com iluminação em OpenGL atual
+
+    Cena: **{ $scene }**, escrita pelo phonglab (regras: { $rules }).
+
+    obs: modifique os valores das variáveis de acordo com configuração que está a ser utilizada na app do OpenFrameworks; cada célula imprime o que o `phonglab explain` imprime, passo a passo.
+nb-vertex =
+    Inicialização do vértice a ser calculado:
+
+    - tamanho da tela
+    - pos (x, y, z, 1)
+    - vetor normal (x, y, z, 0)
+nb-light-material =
+    Inicialização dos parâmetros da luz e material
+
+    - posição/direção (x, y, z, 0/1)
+    - luz l_ambiente, l_difusa, l_specular
+    - luz atenuação_constante, atenuação_linear, atenuação_quadrática
+    - luz spot direction, spot_cutoff, spot_coefficient
+    - material k_ambiente, k_difusa, k_specular, shininess_ns
+nb-settings = O que esta cena usa além da ficha (o phonglab escreveu as células seguintes para estas opções; para as mudar, mude a cena no phonglab e exporte de novo):
+nb-modelview =
+    Inicialização da matriz modelview
+
+    o lookat vai transformar a matriz modelview, para fazer os cálculos precisaremos transformar os vetores e posições que utilizamos com a matriz modelview.
+nb-light-mview-comment = # a posição de cada luz é transformada pela modelview que estava ativa quando se chamou glLight(GL_POSITION)
+nb-vectors =
+    Calcular os vetores necessários e normalizá-los:
+
+    - normal do vértice
+    - vetor luzPos - vérticePos (vlv)
+    - vetor obsPos - vérticePos (vov)
+
+    No caso da luz ser direcional, o vetor (luzPos-vérticePos) é desnecessário, usamos o próprio luzPos
+
+    O vetor (obsPos - vérticePos) é calculado de forma diferente para `glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, true/false)`: quando **true**, obs = [0 0 0 1]; quando **false**, só ficamos com a componente z: obs = (vertexPos) * [1 1 0 1], e vov vai sempre resultar em [0 0 1 0].
+
+    mais info sobre isso em <https://registry.khronos.org/OpenGL-Refpages/gl2.1/xhtml/glLightModel.xml>
+nb-normal-matrix-comment = # o OpenGL transforma as normais pela inversa transposta da 3x3 da modelview: (M^-1)^T n
+nb-normal-as-is-comment = # a normal é usada tal como foi transformada (GL_NORMALIZE desligado): não é dividida pelo comprimento
+nb-infinite-viewer-comment =
+    #localViewer
+    #false (OpenGL: o observador infinitamente longe ao longo de +z, V = (0, 0, 1))
+nb-ambient =
+    Cálculo da componente ambiente:
+
+    - I<sub>amb</sub> = Luz<sub>amb</sub> × Material<sub>amb</sub>
+nb-diffuse =
+    Cálculo da componente difusa:
+
+    - I<sub>dif</sub> = Luz<sub>dif</sub> × Material<sub>dif</sub> × cos(θ)
+    - θ = ângulo entre normal e vetor(luzPos - verticePos)
+    - θ ∈ [0°, 90°]
+nb-acos-comment = # (cosTheta limitado a [-1, 1]: o arredondamento pode levar o produto interno de dois vetores unitários um pouco além de 1, onde o acos falha)
+nb-specular-blinn =
+    Cálculo da componente especular
+
+    O modelo de Phong define o cálculo da componente especular como I<sub>spec</sub> = Luz<sub>spec</sub> × Material<sub>spec</sub> × cos(γ)<sup>ns</sup>, γ o ângulo entre o vetor saída da luz com a normal, e o observador.
+
+    Contudo, a versão atual do OpenGL, utilizada no OpenFrameworks, utiliza uma variação do modelo de Phong para o cálculo da componente especular:
+
+    - I<sub>spec</sub> = Luz<sub>spec</sub> × Material<sub>spec</sub> × cos(β)<sup>ns</sup>
+    - β é o ângulo entre o vetor **halfway** do vetor (luz-pos) e (obs - pos), e a normal
+    - β ∈ [0°, 90°]
+    - H = (vlv + vov) / |vlv + vov|
+nb-specular-phong =
+    Cálculo da componente especular, modelo de Phong
+
+    - I<sub>spec</sub> = Luz<sub>spec</sub> × Material<sub>spec</sub> × cos(α)<sup>ns</sup>
+    - α é o ângulo entre R, o vetor da luz refletido na normal, e o observador
+    - R = 2 (N · vlv) N - vlv
+nb-gate-lit-side-comment = # OpenGL: sem especular de uma luz atrás da superfície (f = 0 onde N · L <= 0)
+nb-attenuation =
+    Calculo da atenuação:
+
+    - at = at<sub>constante</sub> + d × at<sub>linear</sub> + d² × at<sub>quadrática</sub>
+
+    só vale para luz pontual ou foco!
+nb-spot = O foco: dentro do cone (o ângulo entre -vlv e a direção do foco no máximo spotCutoff), spot = cos<sup>spotCoef</sup> desse ângulo; fora, 0; 1 para uma luz que não é foco (spotCutoff 180).
+nb-final =
+    Calculo final:
+
+    - I<sub>final</sub> = (I<sub>amb</sub> + I<sub>dif</sub> + I<sub>spec</sub>)/at
+nb-glcolor-comment = # a cor desenhada: limitada a [0, 1], o alfa vem da difusa do material
+nb-back = A face de trás (iluminação dos dois lados): os mesmos termos com a normal invertida (-vertexNormal) e o material de trás; os nomes acabam em Back.
+nb-no-spot-comment = # não é um foco (spotCutoff 180)
+err-export-folder = openframeworks escreve três ficheiros: indique uma pasta com -o (vão para a sua src/)
+export-written = escrito: { $path }
+import-written = cena escrita: { $path } ({ $lights })
+import-unreadable = { $place }: não consigo ler `{ $line }`: { $reason }; ignorada
+import-no-givens = isto não é um caderno nem um programa no estilo da ficha: não atribui nenhuma de vertexPos, vertexNormal, lightPos, matDif, mview
+import-not-notebook = não é um caderno Jupyter: { $reason }
+import-no-cells = não tem células
+import-place-cell = célula { $cell }, linha { $line }
+import-place-line = linha { $line }
+import-reason-extra = `{ $token }` inesperado
+import-reason-string = uma cadeia de caracteres não está fechada
+import-reason-char = o carácter `{ $char }` não é compreendido
+import-reason-expected = esperava `{ $token }`, encontrei `{ $found }`
+import-reason-end = a expressão acaba cedo demais
+import-reason-number = `{ $token }` não é um número
+import-reason-name = `{ $name }` não é conhecido aqui (só se leem números, arrays e nomes atribuídos antes)
+import-reason-arithmetic = `{ $op }` entre valores de formas diferentes
+import-missing = { $name } não é atribuído: usa-se o valor da ficha, { $value }
+import-malformed = { $place }: { $name } devia ser { $want }; usa-se o valor da ficha
+import-want-vector = 4 números, [x, y, z, w]
+import-want-number = um número
+import-want-matrix = 4 linhas de 4 números
+file-kind-code = cadernos e programas
+cli-export = Escrever uma cena como o código do próprio aluno: o caderno da ficha, um programa PyOpenGL, uma app openFrameworks, ou o GLSL
+cli-import = Ler um caderno (.ipynb) ou programa em Python (.py) no estilo da ficha para um ficheiro de cena
+cli-arg-export-scene = Um ficheiro de cena (TOML); por omissão: a cena da ficha
+cli-arg-export-to = O que escrever
+cli-arg-export-output = Onde: um ficheiro (uma pasta para openframeworks: os ficheiros vão para a sua src/); sem isto o texto vai para a saída padrão
+cli-arg-import-file = Um caderno (.ipynb) ou programa em Python (.py) no estilo da ficha
+cli-arg-import-output = O ficheiro de cena a escrever (TOML)
+cli-value-notebook = o caderno Jupyter da ficha (.ipynb), com os valores desta cena
+cli-value-pyopengl = um programa PyOpenGL + GLUT no estilo da demo de Phong (.py)
+cli-value-openframeworks = ofApp.h, ofApp.cpp e main.cpp para openFrameworks 0.12 (uma pasta)
+cli-value-glsl = o GLSL que o `phonglab shader` imprime
+export-flat-unsupported = o programa PyOpenGL desenha com os shaders gerados para a cena, que são Gouraud ou Phong: escolha um deles para a vista sombreada, não Flat
+py-title = { $scene }: a vista sombreada como o phonglab a desenha (sombreamento { $shading }), escrita pelo phonglab.
+py-usage = Executar: python3 phong_scene.py (uma janela; precisa de PyOpenGL, GLUT e NumPy). Com --png FICHEIRO desenha uma imagem de 512x512 (--size N: NxN), guarda-a em FICHEIRO e termina. O estado da iluminação é definido à maneira do pipeline fixo (glLightfv, glMaterialfv, glLightModel*); os shaders são os da cena (phonglab shader) e leem esse estado de volta do GL.
+py-rules-comment = a equação que os shaders calculam: "worksheet", "opengl" ou "phong-demo" (a matriz das normais e a ambiente da cena seguem-na)
+py-shaders-comment = Os shaders da cena, como o `phonglab shader` os imprime, num contexto de perfil de compatibilidade: a_position e a_normal são o gl_Vertex e o gl_Normal do próprio GL, que o gluSphere, o glutSolidTeapot e o gluCylinder enviam.
+py-uniforms-comment = Os uniforms dos shaders (nome, tipo); set_uniforms() dá a cada um o seu valor a partir do estado do GL.
+py-projection-orbit = a câmara em órbita do phonglab: gluPerspective(40, 1, 0.1, 100)
+py-projection-clip = nenhuma projeção: a imagem é o próprio espaço de recorte (o da demo de Phong)
+py-modelview-comment = a modelview com que o objeto é desenhado: a câmara, depois a rotação do objeto (linhas)
+py-lighting-modelview-comment = a modelview que a iluminação usa, onde não é a do desenho (a demo ilumina no espaço do objeto)
+py-light-eye = colocada sob a identidade: a luz move-se com o olho
+py-light-object = colocada sob a modelview inteira: a luz roda com o objeto
+py-light-world = colocada sob a matriz de vista: a luz fica parada no mundo
+py-state-doc = O estado da iluminação da cena, definido à maneira do pipeline fixo. O GL_POSITION e o GL_SPOT_DIRECTION de cada luz são transformados pela modelview ativa quando são definidos, por isso o GL guarda-os no espaço do olho.
+py-reader-doc = O valor do uniform u_NAME dos shaders, lido do estado do GL (glGetLightfv, glGetMaterialfv, as matrizes).
+py-object-doc = O objeto, tal como o phonglab o constrói.
+py-arrays-comment = os triângulos do phonglab (posições, normais e três índices de vértices por triângulo)
+py-teapot-winding = o bule do freeglut tem os triângulos no sentido dos ponteiros do relógio: com iluminação dos dois lados, o exterior seria iluminado como face de trás
+
 ## plots
 
 plot-drag = Arrasta para rodar (guinada { $yaw }°, inclinação { $pitch }°)

@@ -30,6 +30,7 @@
 //! | locale: the user's language and decimal mark | [`locale`] |
 
 pub mod equation;
+pub mod export;
 pub mod formats;
 pub mod locale;
 pub mod model;

@@ -1,0 +1,66 @@
+//! From a scene to the student's own code and back: the worksheet's Jupyter notebook, a
+//! PyOpenGL program in the Phong demo's style, an openFrameworks app, and the reading of
+//! a worksheet-style notebook or script into a scene.
+//!
+//! Each writer builds its text from the scene's state, as Mesa's `ffvertex_prog.c` builds a
+//! program from a state key: only the cells, calls and lines this scene needs.
+
+pub mod notebook;
+// pub mod openframeworks;
+pub mod pyopengl;
+pub mod python;
+pub mod read_python;
+
+/// What `phonglab export --to` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Target {
+    /// A Jupyter notebook in the worksheet's form (`.ipynb`).
+    Notebook,
+    /// A PyOpenGL + GLUT program in the Phong demo's style (`.py`).
+    PyOpenGl,
+    /// `ofApp.h`, `ofApp.cpp` and `main.cpp` for openFrameworks 0.12.
+    OpenFrameworks,
+    /// The GLSL that `phonglab shader` prints.
+    Glsl,
+}
+
+impl Target {
+    /// Every target, in menu order.
+    pub const ALL: [Target; 4] = [Target::Notebook, Target::PyOpenGl, Target::OpenFrameworks, Target::Glsl];
+
+    /// A name for menus.
+    pub fn label(self) -> String {
+        match self {
+            Target::Notebook => crate::t!("export-target-notebook"),
+            Target::PyOpenGl => crate::t!("export-target-pyopengl"),
+            Target::OpenFrameworks => crate::t!("export-target-openframeworks"),
+            Target::Glsl => crate::t!("export-target-glsl"),
+        }
+    }
+}
+
+/// One written file: its name (with `/` between folders) and its text.
+pub type File = (String, String);
+
+/// The files `target` writes for `doc`, named as the target's own project names them
+/// (`vertex_color_calculator.ipynb`, `phong_scene.py`, `src/ofApp.h`, ...). An error says
+/// why the scene cannot be written so (the engine's refusal, in the reader's language).
+pub fn files(doc: &Document, target: Target) -> Result<Vec<File>, String> {
+    doc.scene.validate().map_err(|e| e.to_string())?;
+    Ok(match target {
+        Target::Notebook => vec![("vertex_color_calculator.ipynb".into(), notebook::notebook(doc))],
+        Target::PyOpenGl => vec![("phong_scene.py".into(), pyopengl::program(doc)?)],
+        Target::OpenFrameworks => return Err("TEMP".into()),
+        Target::Glsl => {
+            let lang = crate::shader::Lang::Glsl;
+            let shading = match doc.view.shading {
+                crate::view::Shading::Phong => crate::shader::ShaderShading::Phong,
+                _ => crate::shader::ShaderShading::Gouraud,
+            };
+            let shader = crate::shader::for_view(doc, lang, shading).map_err(|e| e.to_string())?;
+            vec![("phong_scene.glsl".into(), shader.text(lang))]
+        }
+    })
+}
+
+use crate::document::Document;

@@ -1,0 +1,552 @@
+//! The worksheet's Jupyter notebook, written for a scene.
+//!
+//! The cells are the worksheet's (`vertex_color_calculator.ipynb`): its variable names
+//! (`vertexPos`, `vertexNormal`, `lightPos`, `Lamb`, `Ldif`, `Lspec`, `atC`, `atLin`,
+//! `atQuad`, `matAmb`, `matDif`, `matSpec`, `ns`, `mview`), its order (normal and vectors,
+//! ambient, diffuse, specular, attenuation, I) and its prints, with this scene's values.
+//! What the worksheet leaves out is added in the same style, and only where the scene
+//! has it: several lights (lists, one loop per cell), spotlights, OpenGL's scene ambient
+//! and emission, the local viewer, OpenGL's inverse transpose for normals, the Phong
+//! reflection vector, a separate specular colour, the back side of two-sided lighting.
+//! Run cell by cell, it prints the values `phonglab explain` prints, under the same names.
+
+use glam::DVec4;
+
+use super::python::{array4, colour, matrix, num, shininess, string};
+use crate::document::Document;
+use crate::rules::{NormalTransform, RuleSet, SpecularGate, SpecularModel};
+use crate::scene::{Light, Material, NormalMode, Scene};
+use crate::t;
+
+/// One cell of a notebook.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Cell {
+    /// Markdown text.
+    Markdown(String),
+    /// Python code.
+    Code(String),
+}
+
+/// The notebook as a Jupyter `.ipynb` file (nbformat 4).
+pub fn notebook(doc: &Document) -> String {
+    ipynb(&cells(doc))
+}
+
+/// Cells as an `.ipynb` document.
+pub fn ipynb(cells: &[Cell]) -> String {
+    let lines = |text: &str| -> Vec<String> {
+        let mut out: Vec<String> = text.split_inclusive('\n').map(str::to_string).collect();
+        if out.is_empty() {
+            out.push(String::new());
+        }
+        out
+    };
+    let cells: Vec<serde_json::Value> = cells
+        .iter()
+        .map(|c| match c {
+            Cell::Markdown(t) => serde_json::json!({"cell_type": "markdown", "metadata": {}, "source": lines(t)}),
+            Cell::Code(t) => serde_json::json!({
+                "cell_type": "code", "execution_count": null, "metadata": {}, "outputs": [], "source": lines(t)
+            }),
+        })
+        .collect();
+    let doc = serde_json::json!({
+        "cells": cells,
+        "metadata": {
+            "kernelspec": {"display_name": "Python 3", "language": "python", "name": "python3"},
+            "language_info": {"name": "python"}
+        },
+        "nbformat": 4,
+        "nbformat_minor": 5
+    });
+    let mut text = serde_json::to_string_pretty(&doc).unwrap_or_default();
+    text.push('\n');
+    text
+}
+
+/// What the scene needs the cells to say beyond the worksheet's own.
+struct Needs {
+    /// How many lights (the worksheet has one: plain names; more: lists and loops).
+    lights: usize,
+    /// Some light is placed under a modelview other than `mview`.
+    light_mview: bool,
+    /// Some light is a spotlight.
+    spot: bool,
+    /// OpenGL's rules: scene ambient and emission.
+    opengl_terms: bool,
+    /// The vertex or a light needs its division by w.
+    divide_w: bool,
+}
+
+impl Needs {
+    fn of(scene: &Scene) -> Self {
+        let mview = scene.eye_from_object();
+        let affine = mview.row(3) == DVec4::W;
+        Needs {
+            lights: scene.lights.len(),
+            light_mview: scene.lights.iter().any(|l| scene.eye_from_light(l) != mview),
+            spot: scene.lights.iter().any(Light::is_spot),
+            opengl_terms: scene.rules.scene_ambient(),
+            divide_w: !affine
+                || scene.vertex.position.w != 1.0
+                || scene.lights.iter().any(|l| {
+                    let w = scene.light_pos_in_eye(l).w;
+                    w != 0.0 && w != 1.0
+                }),
+        }
+    }
+
+    /// The worksheet's own scene shape: one light, no spot, the worksheet's terms.
+    fn worksheet_shape(&self, scene: &Scene) -> bool {
+        self.lights == 1 && !self.spot && !self.opengl_terms && !scene.light_model.separate_specular
+    }
+}
+
+/// Writes a per-light cell body: for one light as it is (`⟨i⟩` and `⟨p⟩` dropped); for
+/// several, the lists it assigns made first and the body in `for i in range(n):`, with
+/// `⟨i⟩` indexing (`vlv[i]`) and `⟨p⟩` in the printed names (`vlv[0] = `).
+fn per_light(n: usize, assigned: &[&str], body: &str) -> String {
+    if n == 1 {
+        return body.replace("[⟨i⟩]", "").replace("[⟨p⟩]", "").replace("print(f\"", "print(\"");
+    }
+    let mut out = String::new();
+    for name in assigned {
+        out.push_str(&format!("{name} = [None] * {n}\n"));
+    }
+    out.push_str(&format!("for i in range({n}):\n"));
+    for line in body.lines() {
+        let line = line.replace("[⟨i⟩]", "[i]").replace("[⟨p⟩]", "[{i}]");
+        if line.is_empty() {
+            out.push('\n');
+        } else {
+            out.push_str("    ");
+            out.push_str(&line);
+            out.push('\n');
+        }
+    }
+    out
+}
+
+/// A print of a value under its name, as the worksheet prints (`print("vlv = ", vlv)`);
+/// `indexed` for a per-light value.
+fn print(name: &str, indexed: bool) -> String {
+    if indexed { format!("print(f\"{name}[⟨p⟩] = \", {name}[⟨i⟩])") } else { format!("print(\"{name} = \", {name})") }
+}
+
+/// The notebook's cells for `doc`'s scene (front side; the back side of two-sided
+/// lighting follows in cells of its own).
+pub fn cells(doc: &Document) -> Vec<Cell> {
+    let scene = &doc.scene;
+    let needs = Needs::of(scene);
+    let n = needs.lights;
+    let mut cells = vec![
+        Cell::Markdown(t!("nb-title", scene = doc.name.clone(), rules = scene.rules.to_string())),
+        Cell::Markdown(t!("nb-vertex")),
+        Cell::Code("import math as m\nimport numpy as np".into()),
+        Cell::Code(format!(
+            "gw = 1024\ngh = 768\nvertexPos = {}\nvertexNormal = {}",
+            array4(scene.vertex.position),
+            array4(scene.vertex.normal.extend(0.0))
+        )),
+        Cell::Markdown(t!("nb-light-material")),
+        Cell::Code(light_positions(scene)),
+        Cell::Code(givens(scene)),
+    ];
+    if let Some(settings) = settings(scene) {
+        cells.push(Cell::Markdown(t!("nb-settings")));
+        cells.push(Cell::Code(settings));
+    }
+    cells.push(Cell::Markdown(t!("nb-modelview")));
+    cells.push(Cell::Code(modelview(scene, &needs)));
+    cells.push(Cell::Markdown(t!("nb-vectors")));
+    cells.push(Cell::Code(vectors(scene, &needs)));
+    cells.push(Cell::Markdown(t!("nb-ambient")));
+    cells.push(Cell::Code(per_light(n, &["Iamb"], &format!("Iamb[⟨i⟩] = Lamb[⟨i⟩]*matAmb\n{}", print("Iamb", true)))));
+    cells.push(Cell::Markdown(t!("nb-diffuse")));
+    cells.push(Cell::Code(diffuse(n, "")));
+    cells.push(Cell::Markdown(specular_markdown(scene)));
+    cells.push(Cell::Code(specular(scene, n, "")));
+    cells.push(Cell::Markdown(t!("nb-attenuation")));
+    cells.push(Cell::Code(attenuation(&needs)));
+    if needs.spot {
+        cells.push(Cell::Markdown(t!("nb-spot")));
+        cells.push(Cell::Code(spot(&needs)));
+    }
+    cells.push(Cell::Markdown(t!("nb-final")));
+    cells.push(Cell::Code(final_colour(scene, &needs, "")));
+    if scene.light_model.two_sided {
+        cells.push(Cell::Markdown(t!("nb-back")));
+        cells.push(Cell::Code(back_side(scene, &needs)));
+    }
+    cells
+}
+
+/// `lightPos`: one array, or a list of them.
+fn light_positions(scene: &Scene) -> String {
+    per_light_given(scene, "lightPos", |l| array4(l.position))
+}
+
+/// A given per light: `name = value;` for one light, `name = [v0, v1]` for several.
+fn per_light_given(scene: &Scene, name: &str, value: impl Fn(&Light) -> String) -> String {
+    if scene.lights.len() == 1 {
+        format!("{name} = {};", value(&scene.lights[0]))
+    } else {
+        format!("{name} = [{}]", scene.lights.iter().map(value).collect::<Vec<_>>().join(", "))
+    }
+}
+
+/// The light and material cell: the worksheet's givens, and what this scene adds.
+fn givens(scene: &Scene) -> String {
+    let mut s = String::new();
+    s.push('\n');
+    s.push_str(&per_light_given(scene, "Lamb", |l| colour(l.ambient)));
+    s.push('\n');
+    s.push_str(&per_light_given(scene, "Ldif", |l| colour(l.diffuse)));
+    s.push('\n');
+    s.push_str(&per_light_given(scene, "Lspec", |l| colour(l.specular)));
+    s.push('\n');
+    for (k, name) in ["atC", "atLin", "atQuad"].iter().enumerate() {
+        s.push_str(&per_light_given(scene, name, |l| {
+            let v = num(l.attenuation[k]);
+            if k == 0 && !v.contains(['.', 'e']) { format!("{v}.") } else { v }
+        }));
+        s.push('\n');
+    }
+    s.push('\n');
+    if scene.lights.iter().any(Light::is_spot) {
+        s.push_str(&per_light_given(scene, "lightSpotDir", |l| array4(l.spot_direction.extend(0.0))));
+        s.push('\n');
+        s.push_str(&per_light_given(scene, "spotCutoff", |l| num(l.spot_cutoff)));
+        s.push('\n');
+        s.push_str(&per_light_given(scene, "spotCoef", |l| num(l.spot_exponent)));
+        s.push('\n');
+    } else {
+        s.push_str("#lightSpotDir = [0 0 0 0];\n#spotCutoff = 90;\n#spotCoef = 60;\n");
+    }
+    s.push('\n');
+    s.push_str(&material(&scene.material, "", scene.rules.emission()));
+    if let Some(back) = &scene.back_material {
+        s.push('\n');
+        s.push_str(&material(back, "Back", scene.rules.emission()));
+    }
+    if scene.rules.scene_ambient() {
+        s.push_str(&format!("\nsceneAmb = {};\n", colour(scene.light_model.ambient)));
+    }
+    s.trim_end().to_string() + "\n"
+}
+
+/// One side's material: `matAmb`, `matDif`, `matSpec`, `ns` (and `matEmi`, `matAlpha`).
+fn material(m: &Material, suffix: &str, emission: bool) -> String {
+    let name = crate::materials::classic()
+        .iter()
+        .find(|c| c.material.ambient.truncate() == m.ambient.truncate()
+            && c.material.diffuse.truncate() == m.diffuse.truncate()
+            && c.material.specular.truncate() == m.specular.truncate()
+            && c.material.shininess == m.shininess)
+        .map(|c| c.name.clone());
+    let mut s = match name {
+        Some(n) => format!("#{n}\n"),
+        None => String::new(),
+    };
+    s.push_str(&format!("matAmb{suffix} = {};\n", colour(m.ambient)));
+    s.push_str(&format!("matDif{suffix} = {};\n", colour(m.diffuse)));
+    s.push_str(&format!("matSpec{suffix} = {};\n", colour(m.specular)));
+    s.push_str(&format!("ns{suffix} = {};\n", shininess(m.shininess)));
+    if emission {
+        s.push_str(&format!("matEmi{suffix} = {};\n", colour(m.emission)));
+    }
+    if m.diffuse.w != 1.0 {
+        s.push_str(&format!("matAlpha{suffix} = {};\n", num(m.diffuse.w)));
+    }
+    s
+}
+
+/// The settings the worksheet does not have, as variables (written only when the scene
+/// departs from the worksheet's): what the cells below were written for.
+fn settings(scene: &Scene) -> Option<String> {
+    let mut lines = Vec::new();
+    let rules = match scene.rules.set {
+        RuleSet::Worksheet => "worksheet",
+        RuleSet::OpenGl => "opengl",
+        RuleSet::PhongDemo => "phong-demo",
+    };
+    if scene.rules.set != RuleSet::Worksheet {
+        lines.push(format!("rules = {}", string(rules)));
+    }
+    let specular_default = if scene.rules.set == RuleSet::PhongDemo { SpecularModel::Phong } else { SpecularModel::BlinnPhong };
+    if scene.rules.specular != specular_default {
+        let s = if scene.rules.specular == SpecularModel::Phong { "phong" } else { "blinn-phong" };
+        lines.push(format!("specular = {}", string(s)));
+    }
+    if scene.normal_mode != NormalMode::Normalize {
+        let m = if scene.normal_mode == NormalMode::AsIs { "as-is" } else { "rescale" };
+        lines.push(format!("normalMode = {}", string(m)));
+    }
+    if scene.light_model.two_sided {
+        lines.push("twoSided = True".into());
+    }
+    if scene.light_model.separate_specular {
+        lines.push("separateSpecular = True".into());
+    }
+    (!lines.is_empty()).then(|| lines.join("\n"))
+}
+
+/// `mview`, and each light's modelview where it differs.
+fn modelview(scene: &Scene, needs: &Needs) -> String {
+    let mut s = format!("mview = {};\n", matrix(&scene.eye_from_object()));
+    if needs.light_mview {
+        s.push_str(&t!("nb-light-mview-comment"));
+        s.push('\n');
+        s.push_str(&per_light_given(scene, "lightMview", |l| matrix(&scene.eye_from_light(l))));
+        s.push('\n');
+    }
+    s.push_str("\nprint(\"modelview = \\n\", mview)");
+    s
+}
+
+/// The normal, the positions, `vlv` and `vov`.
+fn vectors(scene: &Scene, needs: &Needs) -> String {
+    let n = needs.lights;
+    let mut s = String::new();
+    match scene.rules.normal_transform() {
+        NormalTransform::Modelview => s.push_str("vertexNormal = np.matmul(mview, vertexNormal)\n"),
+        NormalTransform::InverseTranspose => {
+            s.push_str(&t!("nb-normal-matrix-comment"));
+            s.push_str("\nnormalMatrix = np.linalg.inv(mview[:3, :3]).T\n");
+            s.push_str("vertexNormal = np.append(np.matmul(normalMatrix, vertexNormal[:3]), 0)\n");
+        }
+    }
+    match scene.normal_mode {
+        NormalMode::Normalize => s.push_str("vertexNormal = vertexNormal/np.linalg.norm(vertexNormal)\n"),
+        NormalMode::Rescale => {
+            s.push_str("#GL_RESCALE_NORMAL\nvertexNormal = vertexNormal/np.linalg.norm(np.linalg.inv(mview[:3, :3])[2])\n")
+        }
+        NormalMode::AsIs => s.push_str(&format!("{}\n", t!("nb-normal-as-is-comment"))),
+    }
+    s.push_str("print(\"vertexNormal = \", vertexNormal)\n\n");
+    let light_m = if needs.light_mview { "lightMview[⟨i⟩]" } else { "mview" };
+    s.push_str("vertexPos = np.matmul(mview, vertexPos)\n");
+    if needs.divide_w {
+        s.push_str("vertexPos = vertexPos/vertexPos[3]\n");
+    }
+    s.push_str("print(\"vertexPos = \", vertexPos)\n\n");
+    let light_point = if needs.divide_w { "lightPos[⟨i⟩]/lightPos[⟨i⟩][3]" } else { "lightPos[⟨i⟩]" };
+    let body = format!(
+        "lightPos[⟨i⟩] = np.matmul({light_m}, lightPos[⟨i⟩])\n{}\n\nif (lightPos[⟨i⟩][-1] == 0):\n    vlv[⟨i⟩] = lightPos[⟨i⟩]\nelse:\n    vlv[⟨i⟩] = ({light_point} - vertexPos)\n\nvlv[⟨i⟩] = vlv[⟨i⟩]/np.linalg.norm(vlv[⟨i⟩])\n{}\n",
+        print("lightPos", true),
+        print("vlv", true)
+    );
+    if n == 1 {
+        s.push_str(&per_light(1, &[], &body));
+    } else {
+        // The list of positions is transformed in place, entry by entry.
+        s.push_str(&per_light(n, &["vlv"], &body));
+    }
+    s.push('\n');
+    let local = scene.light_model.local_viewer;
+    if scene.rules.viewer_from_eye_plane() || local {
+        s.push_str("#localViewer\n#true\n");
+        s.push_str(if local { "obs = np.array([0, 0, 0, 1])\n" } else { "#obs = np.array([0, 0, 0, 1])\n" });
+        s.push_str("\n#false\n");
+        s.push_str(if local {
+            "#obs = vertexPos*np.array([1, 1, 0, 1])\n"
+        } else {
+            "obs = vertexPos*np.array([1, 1, 0, 1])\n"
+        });
+        s.push_str("\nvov = (obs - vertexPos)\nvov = vov/np.linalg.norm(vov)\n");
+    } else {
+        s.push_str(&t!("nb-infinite-viewer-comment"));
+        s.push_str("\n#obs = np.array([0, 0, 0, 1])\nvov = np.array([0, 0, 1, 0])\n");
+    }
+    s.push_str("print(\"vov = \", vov)");
+    s
+}
+
+/// The diffuse cell, the worksheet's (θ past 90 degrees gives 0); `suffix` names the back
+/// side's values.
+fn diffuse(n: usize, suffix: &str) -> String {
+    let normal = if suffix.is_empty() { "vertexNormal" } else { "-vertexNormal" };
+    let mat = format!("matDif{}", if suffix.is_empty() { "" } else { "Back" });
+    let ct = format!("cosTheta{suffix}");
+    let idif = format!("Idif{suffix}");
+    let body = format!(
+        "{ct}[⟨i⟩] = np.dot({normal}, vlv[⟨i⟩]);\n{}\n{}\ntheta = m.acos(min(max({ct}[⟨i⟩], -1), 1));\nif (theta > m.pi*0.5):\n    {idif}[⟨i⟩] = np.array([0, 0, 0, 0])\nelse:\n    {idif}[⟨i⟩] = (Ldif[⟨i⟩]*{mat})*{ct}[⟨i⟩]\n\n{}",
+        print(&ct, true),
+        t!("nb-acos-comment"),
+        print(&idif, true)
+    );
+    per_light(n, &[ct.as_str(), idif.as_str()], &body)
+}
+
+/// The specular cell: Blinn-Phong's H (the worksheet's) or Phong's R, gated as the rules
+/// say.
+fn specular(scene: &Scene, n: usize, suffix: &str) -> String {
+    let back = !suffix.is_empty();
+    let normal = if back { "-vertexNormal" } else { "vertexNormal" };
+    let mat = if back { "matSpecBack" } else { "matSpec" };
+    let ns = if back { "nsBack" } else { "ns" };
+    let ct = format!("cosTheta{suffix}");
+    let ispec = format!("Ispec{suffix}");
+    let (vector, cos_name, cos_line, assigned) = match scene.rules.specular {
+        SpecularModel::BlinnPhong => {
+            let cos = format!("cosBeta{suffix}");
+            let lines = if back {
+                format!("{cos}[⟨i⟩] = np.dot({normal}, H[⟨i⟩])\n{}\n", print(&cos, true))
+            } else {
+                format!(
+                    "H[⟨i⟩] = (vlv[⟨i⟩] + vov)\nH[⟨i⟩] = H[⟨i⟩]/np.linalg.norm(H[⟨i⟩])\n{}\n{cos}[⟨i⟩] = np.dot({normal}, H[⟨i⟩])\n{}\n",
+                    print("H", true),
+                    print(&cos, true)
+                )
+            };
+            (lines, cos.clone(), "beta", if back { vec![cos] } else { vec!["H".to_string(), cos] })
+        }
+        SpecularModel::Phong => {
+            let cos = format!("cosAlpha{suffix}");
+            let dot = if scene.rules.reflect_clamped() { "max(np.dot(vertexNormal, vlv[⟨i⟩]), 0)" } else { "np.dot(vertexNormal, vlv[⟨i⟩])" };
+            // R is formed with the front normal on both sides, as the engine forms it.
+            let lines = if back {
+                format!("{cos}[⟨i⟩] = np.dot(R[⟨i⟩], vov)\n{}\n", print(&cos, true))
+            } else {
+                format!(
+                    "R[⟨i⟩] = 2*{dot}*vertexNormal - vlv[⟨i⟩]\n{}\n{cos}[⟨i⟩] = np.dot(R[⟨i⟩], vov)\n{}\n",
+                    print("R", true),
+                    print(&cos, true)
+                )
+            };
+            (lines, cos.clone(), "alpha", if back { vec![cos] } else { vec!["R".to_string(), cos] })
+        }
+    };
+    let power = match scene.rules.specular_gate() {
+        SpecularGate::None => format!("{ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns})\n"),
+        SpecularGate::LitSide => format!(
+            "{}\nif ({ct}[⟨i⟩] <= 0):\n    {ispec}[⟨i⟩] = np.array([0, 0, 0, 0])\nelse:\n    {ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns})\n",
+            t!("nb-gate-lit-side-comment")
+        ),
+        SpecularGate::PositiveCosine => format!(
+            "{cos_line} = m.acos(min(max({cos_name}[⟨i⟩], -1), 1))\nif ({cos_line} > m.pi*0.5 or {cos_line} < 0):\n    {ispec}[⟨i⟩] = np.array([0, 0, 0, 0])\nelse:\n    {ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*({cos_name}[⟨i⟩]**{ns})\n"
+        ),
+    };
+    let mut names: Vec<&str> = assigned.iter().map(String::as_str).collect();
+    names.push(&ispec);
+    let body = format!("{vector}{power}\n{}", print(&ispec, true));
+    per_light(n, &names, &body)
+}
+
+/// The specular cell's explanation for the scene's model.
+fn specular_markdown(scene: &Scene) -> String {
+    match scene.rules.specular {
+        SpecularModel::BlinnPhong => t!("nb-specular-blinn"),
+        SpecularModel::Phong => t!("nb-specular-phong"),
+    }
+}
+
+/// `d` and `at`, per light.
+fn attenuation(needs: &Needs) -> String {
+    let light_point = if needs.divide_w { "lightPos[⟨i⟩]/lightPos[⟨i⟩][3]" } else { "lightPos[⟨i⟩]" };
+    let body = format!(
+        "d[⟨i⟩] = np.linalg.norm({light_point} - vertexPos);\n\nif lightPos[⟨i⟩][-1] == 0:\n    at[⟨i⟩] = 1\nelse:\n    at[⟨i⟩] = atC[⟨i⟩] + atLin[⟨i⟩]*d[⟨i⟩] + atQuad[⟨i⟩]*d[⟨i⟩]*d[⟨i⟩]\n    {}\n{}",
+        print("d", true),
+        print("at", true)
+    );
+    // A directional light has no d (the worksheet computes it unused): printed only for the others.
+    per_light(needs.lights, &["d", "at"], &body)
+}
+
+/// The spotlight factor, per light (1 for a light that is not a spotlight).
+fn spot(needs: &Needs) -> String {
+    let light_m = if needs.light_mview { "lightMview[⟨i⟩]" } else { "mview" };
+    let cone = format!(
+        "if spotCutoff[⟨i⟩] == 180:\n    spot[⟨i⟩] = 1\nelse:\n    spotDir = np.matmul({light_m}[:3, :3], lightSpotDir[⟨i⟩][:3])\n    spotDir = spotDir/np.linalg.norm(spotDir)\n    cosSpot = np.dot(-vlv[⟨i⟩][:3], spotDir)\n    if cosSpot >= m.cos(m.radians(spotCutoff[⟨i⟩])):\n        spot[⟨i⟩] = max(cosSpot, 0)**spotCoef[⟨i⟩]\n    else:\n        spot[⟨i⟩] = 0\n{}",
+        print("spot", true)
+    );
+    per_light(needs.lights, &["spot"], &cone)
+}
+
+/// I: the worksheet's `(Iamb + Idif + Ispec)/at` for its own shape; else each light's
+/// share, summed with the scene ambient and emission the rules keep. Then the colour as
+/// drawn.
+fn final_colour(scene: &Scene, needs: &Needs, suffix: &str) -> String {
+    let back = !suffix.is_empty();
+    let n = needs.lights;
+    let mut s = String::new();
+    let sep = scene.light_model.separate_specular;
+    let (iamb, idif, ispec) = if back { ("IambBack", "IdifBack", "IspecBack") } else { ("Iamb", "Idif", "Ispec") };
+    let (i_name, ilight, isec) = (format!("I{suffix}"), format!("Ilight{suffix}"), format!("Isec{suffix}"));
+    if needs.worksheet_shape(scene) && !back {
+        s.push_str("I = (Iamb + Idif + Ispec)/at\n");
+    } else {
+        // Without a spotlight, each light's spot factor is 1 (explain prints it so).
+        let no_spot = if !needs.spot && !back {
+            format!("spot[⟨i⟩] = 1  {}\n{}\n", t!("nb-no-spot-comment"), print("spot", true))
+        } else {
+            String::new()
+        };
+        let spot = "spot[⟨i⟩]*";
+        let body = no_spot.clone() + &if sep {
+            format!(
+                "{ilight}[⟨i⟩] = {spot}({iamb}[⟨i⟩] + {idif}[⟨i⟩])/at[⟨i⟩]\n{}\n{isec}[⟨i⟩] = {spot}{ispec}[⟨i⟩]/at[⟨i⟩]",
+                print(&ilight, true)
+            )
+        } else {
+            format!("{ilight}[⟨i⟩] = {spot}({iamb}[⟨i⟩] + {idif}[⟨i⟩] + {ispec}[⟨i⟩])/at[⟨i⟩]\n{}", print(&ilight, true))
+        };
+        let mut assigned: Vec<&str> = if sep { vec![&ilight, &isec] } else { vec![&ilight] };
+        if !no_spot.is_empty() {
+            assigned.insert(0, "spot");
+        }
+        s.push_str(&per_light(n, &assigned, &body));
+        s.push('\n');
+        let lights_sum = if n == 1 { ilight.clone() } else { format!("sum({ilight})") };
+        if needs.opengl_terms {
+            let (mat_amb, mat_emi) = if back { ("matAmbBack", "matEmiBack") } else { ("matAmb", "matEmi") };
+            let mat_amb = if back && scene.back_material.is_none() { "matAmb" } else { mat_amb };
+            let mat_emi = if back && scene.back_material.is_none() { "matEmi" } else { mat_emi };
+            s.push_str(&format!("Iscene{suffix} = {mat_amb}*sceneAmb\nprint(\"Iscene{suffix} = \", Iscene{suffix})\n"));
+            s.push_str(&format!("Iemi{suffix} = {mat_emi}\nprint(\"Iemi{suffix} = \", Iemi{suffix})\n"));
+            if n == 0 {
+                s.push_str(&format!("{i_name} = Iemi{suffix} + Iscene{suffix}\n"));
+            } else {
+                s.push_str(&format!("{i_name} = Iemi{suffix} + Iscene{suffix} + {lights_sum}\n"));
+            }
+        } else if n == 0 {
+            s.push_str(&format!("{i_name} = np.array([0, 0, 0, 0])\n"));
+        } else {
+            s.push_str(&format!("{i_name} = {lights_sum}\n"));
+        }
+    }
+    s.push_str(&format!("print(\"{i_name} = \", {i_name})\n"));
+    let alpha_var = if back && scene.back_material.is_some() { "matAlphaBack" } else { "matAlpha" };
+    let alpha_m = if back { scene.back() } else { &scene.material };
+    let alpha = if alpha_m.diffuse.w != 1.0 { alpha_var.to_string() } else { "1".to_string() };
+    let sum = if sep {
+        let isec_sum = if n == 1 { isec.clone() } else { format!("sum({isec})") };
+        s.push_str(&format!("{isec} = {isec_sum}\nprint(\"{isec} = \", {isec})\n"));
+        format!("{i_name} + {isec}")
+    } else {
+        i_name.clone()
+    };
+    s.push_str(&format!(
+        "\n{}\nglColor{suffix} = np.append(np.clip(({sum})[:3], 0, 1), {alpha})\nprint(\"glColor{suffix} = \", glColor{suffix})",
+        t!("nb-glcolor-comment")
+    ));
+    s
+}
+
+/// The back side of two-sided lighting: the same terms with `-vertexNormal` and the back
+/// material, printed with `Back` after their names.
+fn back_side(scene: &Scene, needs: &Needs) -> String {
+    let n = needs.lights;
+    let mut s = String::new();
+    if scene.back_material.is_none() {
+        s.push_str("matAmbBack, matDifBack, matSpecBack, nsBack = matAmb, matDif, matSpec, ns\n\n");
+    }
+    s.push_str(&per_light(n, &["IambBack"], &format!("IambBack[⟨i⟩] = Lamb[⟨i⟩]*matAmbBack\n{}", print("IambBack", true))));
+    s.push('\n');
+    s.push_str(&diffuse(n, "Back"));
+    s.push('\n');
+    s.push_str(&specular(scene, n, "Back"));
+    s.push('\n');
+    s.push_str(&final_colour(scene, needs, "Back"));
+    s
+}

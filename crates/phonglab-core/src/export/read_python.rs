@@ -1,0 +1,628 @@
+//! Reading a worksheet-style notebook (`.ipynb`) or script (`.py`) back into a scene.
+//!
+//! What is read: the assignments of the worksheet's givens (`vertexPos`, `vertexNormal`,
+//! `lightPos`, `Lamb`, `Ldif`, `Lspec`, `atC`, `atLin`, `atQuad`, `lightSpotDir`,
+//! `spotCutoff`, `spotCoef`, `matAmb`, `matDif`, `matSpec`, `ns`, `mview`) and of the names
+//! the exported notebooks add (`lightMview`, `matEmi`, `matAlpha`, `sceneAmb`, the back
+//! material's `...Back`, and the settings `rules`, `specular`, `normalMode`, `twoSided`,
+//! `separateSpecular`), as Python would run them, top to bottom: numbers, simple
+//! arithmetic (`0.2*128`), `np.array([...])` of numbers or of rows, lists of them (one
+//! per light), strings, `True`/`False`, and names assigned before (`mview = mview5`).
+//! The local viewer is the worksheet's own switch: the active line `obs = np.array([0,
+//! 0, 0, 1])`. Comments (the commented-out alternatives) are ignored, and so are the
+//! computing lines (`vertexNormal = np.matmul(mview, vertexNormal)`, anything indented).
+//! A given whose value cannot be read is reported with its line, and so is a given the
+//! file lacks (the worksheet's value is used); nothing else is lost.
+
+use std::collections::BTreeMap;
+
+use glam::{DMat4, DVec3, DVec4};
+
+use crate::camera::CameraSpec;
+use crate::document::Document;
+use crate::rules::{Rules, SpecularModel};
+use crate::scene::{Light, LightPlacement, Material, NormalMode, Scene, Vertex};
+use crate::t;
+
+/// A value as the reader evaluates it.
+#[derive(Clone, Debug, PartialEq)]
+enum Value {
+    Num(f64),
+    Str(String),
+    Bool(bool),
+    /// A list, a tuple or a NumPy array.
+    List(Vec<Value>),
+}
+
+/// The scene read, and what the reader has to say about the file (each naming a line).
+#[derive(Clone, Debug)]
+pub struct Imported {
+    /// The scene, under the worksheet's rules unless the file says otherwise.
+    pub doc: Document,
+    /// Lines that could not be read, and givens the file lacks.
+    pub notices: Vec<String>,
+}
+
+/// Why nothing could be read at all.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ImportError {
+    /// An `.ipynb` that is not a notebook.
+    #[error("{0}")]
+    NotANotebook(String),
+    /// No given of the worksheet at all: not a worksheet-style file.
+    #[error("{0}")]
+    NoGivens(String),
+}
+
+/// The names read as givens.
+const GIVENS: [&str; 31] = [
+    "vertexPos",
+    "vertexNormal",
+    "lightPos",
+    "Lamb",
+    "Ldif",
+    "Lspec",
+    "atC",
+    "atLin",
+    "atQuad",
+    "lightSpotDir",
+    "spotCutoff",
+    "spotCoef",
+    "matAmb",
+    "matDif",
+    "matSpec",
+    "ns",
+    "mview",
+    "lightMview",
+    "matEmi",
+    "matAlpha",
+    "sceneAmb",
+    "matAmbBack",
+    "matDifBack",
+    "matSpecBack",
+    "nsBack",
+    "matEmiBack",
+    "matAlphaBack",
+    "rules",
+    "specular",
+    "normalMode",
+    "twoSided",
+];
+
+/// Settings that are givens too (beyond [`GIVENS`]).
+const MORE_GIVENS: [&str; 1] = ["separateSpecular"];
+
+/// A line of code and where it is (`line 7`, or `cell 4, line 2` in a notebook).
+struct SourceLine {
+    text: String,
+    place: String,
+}
+
+/// Reads `text`, a notebook when `notebook` is true (its code cells, in order), else a
+/// Python script. `name` names the scene.
+pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportError> {
+    let lines = if notebook { notebook_lines(text)? } else { script_lines(text) };
+    let mut env: BTreeMap<String, Value> = BTreeMap::new();
+    let mut given: BTreeMap<String, (Value, String)> = BTreeMap::new();
+    let mut notices = Vec::new();
+    let mut local_viewer = false;
+    for line in &lines {
+        let Some((lhs, rhs)) = assignment(&line.text) else { continue };
+        let value = evaluate(rhs, &env);
+        if lhs == "obs" {
+            // The worksheet's switch: the active `obs` line says which viewer.
+            local_viewer = !rhs.contains("vertexPos") && value.as_ref().is_ok_and(|v| v.numbers() == Some(vec![0.0, 0.0, 0.0, 1.0]));
+            continue;
+        }
+        let is_given = GIVENS.contains(&lhs) || MORE_GIVENS.contains(&lhs);
+        match value {
+            Ok(v) => {
+                if is_given {
+                    given.insert(lhs.to_string(), (v.clone(), line.place.clone()));
+                }
+                env.insert(lhs.to_string(), v);
+            }
+            // A computing line (it uses NumPy's functions, or the name itself): the
+            // worksheet's calculation, not a given.
+            Err(_) if computing(lhs, rhs) => {}
+            Err(e) if is_given => notices.push(t!("import-unreadable", place = line.place.clone(), line = line.text.trim().to_string(), reason = e)),
+            Err(_) => {}
+        }
+    }
+    if !given.keys().any(|k| ["vertexPos", "vertexNormal", "lightPos", "matDif", "mview"].contains(&k.as_str())) {
+        return Err(ImportError::NoGivens(t!("import-no-givens")));
+    }
+    let mut r = Reader { given, notices };
+    let doc = r.document(name, local_viewer);
+    Ok(Imported { doc, notices: r.notices })
+}
+
+/// The code cells' lines of a notebook.
+fn notebook_lines(text: &str) -> Result<Vec<SourceLine>, ImportError> {
+    let nb: serde_json::Value =
+        serde_json::from_str(text).map_err(|e| ImportError::NotANotebook(t!("import-not-notebook", reason = e.to_string())))?;
+    let cells = nb["cells"].as_array().ok_or_else(|| ImportError::NotANotebook(t!("import-not-notebook", reason = t!("import-no-cells"))))?;
+    let mut out = Vec::new();
+    for (c, cell) in cells.iter().enumerate() {
+        if cell["cell_type"] != "code" {
+            continue;
+        }
+        let source = match &cell["source"] {
+            serde_json::Value::String(s) => s.clone(),
+            serde_json::Value::Array(parts) => parts.iter().filter_map(|p| p.as_str()).collect(),
+            _ => String::new(),
+        };
+        for (k, line) in source.lines().enumerate() {
+            out.push(SourceLine { text: line.to_string(), place: t!("import-place-cell", cell = c + 1, line = k + 1) });
+        }
+    }
+    Ok(out)
+}
+
+/// A script's lines.
+fn script_lines(text: &str) -> Vec<SourceLine> {
+    text.lines()
+        .enumerate()
+        .map(|(k, line)| SourceLine { text: line.to_string(), place: t!("import-place-line", line = k + 1) })
+        .collect()
+}
+
+/// `name = expression` at the start of a line (not indented, not a comment, not `==`),
+/// the comment and a final `;` removed.
+fn assignment(line: &str) -> Option<(&str, &str)> {
+    if line.starts_with([' ', '\t', '#']) {
+        return None;
+    }
+    let code = strip_comment(line).trim().trim_end_matches(';').trim();
+    let (lhs, rhs) = code.split_once('=')?;
+    let lhs = lhs.trim();
+    if rhs.starts_with('=') || lhs.is_empty() || !lhs.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+        return None;
+    }
+    if lhs.ends_with(['<', '>', '!']) {
+        return None;
+    }
+    Some((lhs, rhs.trim()))
+}
+
+/// The line without its `#` comment (a `#` inside a string is kept).
+fn strip_comment(line: &str) -> &str {
+    let mut quote = None;
+    for (i, c) in line.char_indices() {
+        match (quote, c) {
+            (None, '#') => return &line[..i],
+            (None, '"' | '\'') => quote = Some(c),
+            (Some(q), c) if c == q => quote = None,
+            _ => {}
+        }
+    }
+    line
+}
+
+/// Does the right-hand side compute (NumPy's functions, `m.` functions, the name itself)?
+fn computing(lhs: &str, rhs: &str) -> bool {
+    let words = ["np.matmul", "np.linalg", "np.dot", "np.append", "np.clip", "m.acos", "np.cross", "sum("];
+    words.iter().any(|w| rhs.contains(w)) || rhs.split(|c: char| !c.is_ascii_alphanumeric() && c != '_').any(|w| w == lhs)
+}
+
+impl Value {
+    /// How deeply lists nest: 0 for a number, 1 for a vector, 2 for a matrix.
+    fn depth(&self) -> usize {
+        match self {
+            Value::List(items) => 1 + items.first().map_or(0, Value::depth),
+            _ => 0,
+        }
+    }
+
+    /// The numbers of a flat list (or one number).
+    fn numbers(&self) -> Option<Vec<f64>> {
+        match self {
+            Value::Num(x) => Some(vec![*x]),
+            Value::List(items) => items.iter().map(|v| if let Value::Num(x) = v { Some(*x) } else { None }).collect(),
+            _ => None,
+        }
+    }
+}
+
+/// Evaluates the expression subset (see the module's documentation).
+fn evaluate(text: &str, env: &BTreeMap<String, Value>) -> Result<Value, String> {
+    let tokens = tokenize(text)?;
+    let mut p = Parser { tokens, pos: 0, env };
+    let v = p.expr()?;
+    if p.pos != p.tokens.len() {
+        return Err(t!("import-reason-extra", token = p.tokens[p.pos].clone()));
+    }
+    Ok(v)
+}
+
+fn tokenize(text: &str) -> Result<Vec<String>, String> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        if c.is_whitespace() {
+            i += 1;
+        } else if c.is_ascii_digit() || (c == '.' && chars.get(i + 1).is_some_and(char::is_ascii_digit)) {
+            let start = i;
+            while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
+                i += 1;
+            }
+            if i < chars.len() && (chars[i] == 'e' || chars[i] == 'E') {
+                i += 1;
+                if i < chars.len() && (chars[i] == '+' || chars[i] == '-') {
+                    i += 1;
+                }
+                while i < chars.len() && chars[i].is_ascii_digit() {
+                    i += 1;
+                }
+            }
+            out.push(chars[start..i].iter().collect());
+        } else if c.is_alphabetic() || c == '_' {
+            let start = i;
+            while i < chars.len() && (chars[i].is_alphanumeric() || chars[i] == '_' || chars[i] == '.') {
+                i += 1;
+            }
+            out.push(chars[start..i].iter().collect());
+        } else if c == '"' || c == '\'' {
+            let start = i;
+            i += 1;
+            while i < chars.len() && chars[i] != c {
+                i += 1;
+            }
+            if i == chars.len() {
+                return Err(t!("import-reason-string"));
+            }
+            i += 1;
+            out.push(chars[start..i].iter().collect());
+        } else if c == '*' && chars.get(i + 1) == Some(&'*') {
+            out.push("**".into());
+            i += 2;
+        } else if "+-*/()[],".contains(c) {
+            out.push(c.to_string());
+            i += 1;
+        } else {
+            return Err(t!("import-reason-char", char = c.to_string()));
+        }
+    }
+    Ok(out)
+}
+
+struct Parser<'a> {
+    tokens: Vec<String>,
+    pos: usize,
+    env: &'a BTreeMap<String, Value>,
+}
+
+impl Parser<'_> {
+    fn peek(&self) -> Option<&str> {
+        self.tokens.get(self.pos).map(String::as_str)
+    }
+
+    fn expect(&mut self, token: &str) -> Result<(), String> {
+        if self.peek() == Some(token) {
+            self.pos += 1;
+            Ok(())
+        } else {
+            Err(t!("import-reason-expected", token = token, found = self.peek().unwrap_or("").to_string()))
+        }
+    }
+
+    /// `term (('+' | '-') term)*`
+    fn expr(&mut self) -> Result<Value, String> {
+        let mut v = self.term()?;
+        while let Some(op) = self.peek().filter(|t| *t == "+" || *t == "-").map(str::to_string) {
+            self.pos += 1;
+            let w = self.term()?;
+            v = arithmetic(&v, &w, &op)?;
+        }
+        Ok(v)
+    }
+
+    /// `factor (('*' | '/') factor)*`
+    fn term(&mut self) -> Result<Value, String> {
+        let mut v = self.power()?;
+        while let Some(op) = self.peek().filter(|t| *t == "*" || *t == "/").map(str::to_string) {
+            self.pos += 1;
+            let w = self.power()?;
+            v = arithmetic(&v, &w, &op)?;
+        }
+        Ok(v)
+    }
+
+    /// `unary ('**' power)?`
+    fn power(&mut self) -> Result<Value, String> {
+        let v = self.unary()?;
+        if self.peek() == Some("**") {
+            self.pos += 1;
+            let w = self.power()?;
+            return arithmetic(&v, &w, "**");
+        }
+        Ok(v)
+    }
+
+    fn unary(&mut self) -> Result<Value, String> {
+        match self.peek() {
+            Some("-") => {
+                self.pos += 1;
+                let v = self.unary()?;
+                arithmetic(&Value::Num(0.0), &v, "-")
+            }
+            Some("+") => {
+                self.pos += 1;
+                self.unary()
+            }
+            _ => self.atom(),
+        }
+    }
+
+    fn atom(&mut self) -> Result<Value, String> {
+        let Some(token) = self.peek().map(str::to_string) else { return Err(t!("import-reason-end")) };
+        self.pos += 1;
+        match token.as_str() {
+            "(" | "[" => {
+                let close = if token == "(" { ")" } else { "]" };
+                let mut items = Vec::new();
+                let mut tuple = token == "[";
+                while self.peek() != Some(close) {
+                    items.push(self.expr()?);
+                    if self.peek() == Some(",") {
+                        self.pos += 1;
+                        tuple = true;
+                    } else {
+                        break;
+                    }
+                }
+                self.expect(close)?;
+                // `(x)` is x; `(x, y)` and `[x]` are sequences.
+                if !tuple && items.len() == 1 { Ok(items.remove(0)) } else { Ok(Value::List(items)) }
+            }
+            "np.array" | "numpy.array" | "float" | "np.float64" => {
+                self.expect("(")?;
+                let v = self.expr()?;
+                self.expect(")")?;
+                Ok(v)
+            }
+            "True" => Ok(Value::Bool(true)),
+            "False" => Ok(Value::Bool(false)),
+            "m.pi" | "math.pi" | "np.pi" => Ok(Value::Num(std::f64::consts::PI)),
+            t if t.starts_with(['"', '\'']) => Ok(Value::Str(t[1..t.len() - 1].to_string())),
+            t if t.starts_with(|c: char| c.is_ascii_digit() || c == '.') => {
+                t.parse::<f64>().map(Value::Num).map_err(|_| t!("import-reason-number", token = t.to_string()))
+            }
+            t => self.env.get(t).cloned().ok_or_else(|| t!("import-reason-name", name = t.to_string())),
+        }
+    }
+}
+
+/// `a op b` on numbers, element by element on lists (a number with a list: each element).
+fn arithmetic(a: &Value, b: &Value, op: &str) -> Result<Value, String> {
+    match (a, b) {
+        (Value::Num(x), Value::Num(y)) => Ok(Value::Num(match op {
+            "+" => x + y,
+            "-" => x - y,
+            "*" => x * y,
+            "/" => x / y,
+            _ => x.powf(*y),
+        })),
+        (Value::List(xs), Value::List(ys)) if xs.len() == ys.len() => {
+            Ok(Value::List(xs.iter().zip(ys).map(|(x, y)| arithmetic(x, y, op)).collect::<Result<_, _>>()?))
+        }
+        (Value::List(xs), y @ Value::Num(_)) => Ok(Value::List(xs.iter().map(|x| arithmetic(x, y, op)).collect::<Result<_, _>>()?)),
+        (x @ Value::Num(_), Value::List(ys)) => Ok(Value::List(ys.iter().map(|y| arithmetic(x, y, op)).collect::<Result<_, _>>()?)),
+        _ => Err(t!("import-reason-arithmetic", op = op.to_string())),
+    }
+}
+
+/// Builds the scene from the givens, reporting what is missing or malformed.
+struct Reader {
+    given: BTreeMap<String, (Value, String)>,
+    notices: Vec<String>,
+}
+
+impl Reader {
+    /// How many lights: the length of a list of positions, else one.
+    fn light_count(&self) -> usize {
+        match self.given.get("lightPos") {
+            Some((Value::List(items), _)) if items.iter().all(|v| matches!(v, Value::List(_))) => items.len(),
+            _ => 1,
+        }
+    }
+
+    /// A given's value for light `i` (of `n`): the list's entry where the given is one
+    /// value per light (one nesting deeper than a single value), else the one value.
+    fn per_light(&self, name: &str, i: usize, n: usize) -> Option<(Value, String)> {
+        let (v, place) = self.given.get(name)?;
+        let single_depth = match name {
+            "lightMview" => 2,
+            "atC" | "atLin" | "atQuad" | "spotCutoff" | "spotCoef" => 0,
+            _ => 1,
+        };
+        match v {
+            Value::List(items) if n > 1 && items.len() == n && v.depth() == single_depth + 1 => {
+                Some((items[i].clone(), place.clone()))
+            }
+            _ => Some((v.clone(), place.clone())),
+        }
+    }
+
+    fn missing(&mut self, name: &str, default: String) {
+        self.notices.push(t!("import-missing", name = name, value = default));
+    }
+
+    fn malformed(&mut self, name: &str, place: &str, want: &str) {
+        self.notices.push(t!("import-malformed", name = name, place = place, want = want));
+    }
+
+    /// A vector of 3 or 4 numbers (the fourth, if any, returned as given).
+    fn vec4(&mut self, name: &str, i: usize, n: usize, default: DVec4) -> DVec4 {
+        match self.per_light(name, i, n) {
+            None => {
+                if i == 0 {
+                    self.missing(name, crate::explain::fmt_value(&default.to_array(), 8));
+                }
+                default
+            }
+            Some((v, place)) => match v.numbers().filter(|x| x.len() == 3 || x.len() == 4) {
+                Some(x) => DVec4::new(x[0], x[1], x[2], x.get(3).copied().unwrap_or(default.w)),
+                None => {
+                    self.malformed(name, &place, &t!("import-want-vector"));
+                    default
+                }
+            },
+        }
+    }
+
+    /// A colour: rgb, alpha 1 (the worksheet writes 0 in the fourth component, unused).
+    fn colour(&mut self, name: &str, i: usize, n: usize, default: DVec4) -> DVec4 {
+        let c = self.vec4(name, i, n, default);
+        DVec4::new(c.x, c.y, c.z, 1.0)
+    }
+
+    fn number(&mut self, name: &str, i: usize, n: usize, default: f64) -> f64 {
+        match self.per_light(name, i, n) {
+            None => default,
+            Some((v, place)) => match v.numbers().filter(|x| x.len() == 1) {
+                Some(x) => x[0],
+                None => {
+                    self.malformed(name, &place, &t!("import-want-number"));
+                    default
+                }
+            },
+        }
+    }
+
+    fn matrix(&mut self, v: &Value, name: &str, place: &str) -> Option<DMat4> {
+        let rows: Option<Vec<Vec<f64>>> = match v {
+            Value::List(rows) if rows.len() == 4 => rows.iter().map(Value::numbers).collect(),
+            _ => None,
+        };
+        match rows.filter(|r| r.iter().all(|row| row.len() == 4)) {
+            Some(r) => Some(crate::transform::mat4_from_rows([
+                [r[0][0], r[0][1], r[0][2], r[0][3]],
+                [r[1][0], r[1][1], r[1][2], r[1][3]],
+                [r[2][0], r[2][1], r[2][2], r[2][3]],
+                [r[3][0], r[3][1], r[3][2], r[3][3]],
+            ])),
+            None => {
+                self.malformed(name, place, &t!("import-want-matrix"));
+                None
+            }
+        }
+    }
+
+    fn string(&self, name: &str) -> Option<String> {
+        match self.given.get(name) {
+            Some((Value::Str(s), _)) => Some(s.clone()),
+            _ => None,
+        }
+    }
+
+    fn flag(&self, name: &str) -> bool {
+        matches!(self.given.get(name), Some((Value::Bool(true), _)))
+    }
+
+    fn material(&mut self, suffix: &str, base: &Material) -> Material {
+        let g = |s: &str| format!("{s}{suffix}");
+        let mut m = base.clone();
+        m.ambient = self.colour(&g("matAmb"), 0, 1, base.ambient);
+        m.diffuse = self.colour(&g("matDif"), 0, 1, base.diffuse);
+        m.specular = self.colour(&g("matSpec"), 0, 1, base.specular);
+        m.shininess = self.number(&g("ns"), 0, 1, base.shininess);
+        if self.given.contains_key(&g("matEmi")) {
+            m.emission = self.colour(&g("matEmi"), 0, 1, base.emission);
+        }
+        m.diffuse.w = self.number(&g("matAlpha"), 0, 1, 1.0);
+        m
+    }
+
+    fn document(&mut self, name: &str, local_viewer: bool) -> Document {
+        let ws = crate::presets::worksheet(5);
+        let mview = match self.given.get("mview").cloned() {
+            Some((v, place)) => self.matrix(&v, "mview", &place).unwrap_or(ws.eye_from_world),
+            None => {
+                self.missing("mview", "mview5".into());
+                ws.eye_from_world
+            }
+        };
+        let mut rules = match self.string("rules").as_deref() {
+            Some("opengl") => Rules::OPENGL,
+            Some("phong-demo") => Rules::PHONG_DEMO,
+            _ => Rules::WORKSHEET,
+        };
+        match self.string("specular").as_deref() {
+            Some("phong") => rules.specular = SpecularModel::Phong,
+            Some("blinn-phong") => rules.specular = SpecularModel::BlinnPhong,
+            _ => {}
+        }
+        let normal_mode = match self.string("normalMode").as_deref() {
+            Some("as-is") => NormalMode::AsIs,
+            Some("rescale") => NormalMode::Rescale,
+            _ => NormalMode::Normalize,
+        };
+        let n = self.light_count();
+        let ws_light = &ws.lights[0];
+        let mut lights = Vec::new();
+        for i in 0..n {
+            let mut l = Light {
+                position: self.vec4("lightPos", i, n, ws_light.position),
+                ambient: self.colour("Lamb", i, n, ws_light.ambient),
+                diffuse: self.colour("Ldif", i, n, ws_light.diffuse),
+                specular: self.colour("Lspec", i, n, ws_light.specular),
+                attenuation: [
+                    self.number("atC", i, n, ws_light.attenuation[0]),
+                    self.number("atLin", i, n, ws_light.attenuation[1]),
+                    self.number("atQuad", i, n, ws_light.attenuation[2]),
+                ],
+                placement: LightPlacement::World,
+                ..Light::gl_default(i)
+            };
+            if self.given.contains_key("spotCutoff") {
+                l.spot_cutoff = self.number("spotCutoff", i, n, 180.0);
+                l.spot_exponent = self.number("spotCoef", i, n, 0.0);
+                let d = self.vec4("lightSpotDir", i, n, DVec4::new(0.0, 0.0, -1.0, 0.0));
+                l.spot_direction = DVec3::new(d.x, d.y, d.z);
+            }
+            if let Some((v, place)) = self.per_light("lightMview", i, n)
+                && let Some(m) = self.matrix(&v, "lightMview", &place)
+            {
+                l.placement = if m == mview {
+                    LightPlacement::World
+                } else if m == DMat4::IDENTITY {
+                    LightPlacement::Eye
+                } else {
+                    LightPlacement::Matrix(m)
+                };
+            }
+            lights.push(l);
+        }
+        let material = self.material("", &ws.material);
+        let has_back = ["matAmbBack", "matDifBack", "matSpecBack", "nsBack"].iter().any(|k| self.given.contains_key(*k));
+        let back_material = has_back.then(|| self.material("Back", &material));
+        let mut light_model = crate::scene::LightModel { local_viewer, ..Default::default() };
+        light_model.two_sided = self.flag("twoSided");
+        light_model.separate_specular = self.flag("separateSpecular");
+        if self.given.contains_key("sceneAmb") {
+            light_model.ambient = self.colour("sceneAmb", 0, 1, light_model.ambient);
+        }
+        let pos = self.vec4("vertexPos", 0, 1, ws.vertex.position);
+        let normal = self.vec4("vertexNormal", 0, 1, ws.vertex.normal.extend(0.0));
+        let scene = Scene {
+            light_model,
+            lights,
+            material,
+            back_material,
+            eye_from_world: mview,
+            world_from_object: DMat4::IDENTITY,
+            normal_mode,
+            rules,
+            vertex: Vertex { position: pos, normal: DVec3::new(normal.x, normal.y, normal.z) },
+        };
+        let camera = (1..=5u8)
+            .find(|&k| crate::transform::worksheet_modelview(k as usize) == Some(mview))
+            .map_or(CameraSpec::Matrix(mview), CameraSpec::Worksheet);
+        let mut doc = Document::from_scene(name, camera, scene);
+        doc.view = Document::default().view;
+        doc
+    }
+}

@@ -1,0 +1,125 @@
+//! `phonglab export` and `phonglab import`: a scene to the student's own code (the
+//! worksheet's notebook, a PyOpenGL program, an openFrameworks app, the GLSL), and a
+//! worksheet-style notebook or script back to a scene file.
+
+use std::path::PathBuf;
+
+use anyhow::{Result, bail};
+use clap::{Args, ValueEnum};
+use phonglab_core::export::{Target, files};
+use phonglab_core::t;
+
+use crate::atomic_write::FileSet;
+
+/// What `--to` names.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum TargetArg {
+    /// The worksheet's Jupyter notebook (.ipynb), with this scene's values.
+    Notebook,
+    /// A PyOpenGL + GLUT program in the Phong demo's style (.py).
+    Pyopengl,
+    /// ofApp.h, ofApp.cpp and main.cpp for openFrameworks 0.12 (a folder).
+    Openframeworks,
+    /// The GLSL that `phonglab shader` prints.
+    Glsl,
+}
+
+impl From<TargetArg> for Target {
+    fn from(t: TargetArg) -> Self {
+        match t {
+            TargetArg::Notebook => Target::Notebook,
+            TargetArg::Pyopengl => Target::PyOpenGl,
+            TargetArg::Openframeworks => Target::OpenFrameworks,
+            TargetArg::Glsl => Target::Glsl,
+        }
+    }
+}
+
+/// `phonglab export`.
+#[derive(Args, Debug)]
+pub struct ExportArgs {
+    /// A scene file (TOML); default: the worksheet's scene.
+    #[arg(long)]
+    pub scene: Option<PathBuf>,
+    /// What to write.
+    #[arg(long, value_enum)]
+    pub to: TargetArg,
+    /// Where: a file (a folder for openframeworks); without it the text goes to the
+    /// standard output.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+}
+
+/// Runs `phonglab export`.
+pub fn export(a: &ExportArgs) -> Result<()> {
+    let doc = match &a.scene {
+        Some(p) => crate::cli::load_scene_file(p)?,
+        None => phonglab_core::Document::default(),
+    };
+    let target = Target::from(a.to);
+    let written = files(&doc, target).map_err(anyhow::Error::msg)?;
+    match (&a.output, target) {
+        (None, Target::OpenFrameworks) => bail!(t!("err-export-folder")),
+        (None, _) => {
+            for (_, text) in &written {
+                print!("{text}");
+            }
+        }
+        (Some(dir), Target::OpenFrameworks) => {
+            crate::atomic_write::check_folder_destination(dir)?;
+            let mut set = FileSet::default();
+            for (name, text) in &written {
+                set.add(name.clone(), text.clone().into_bytes());
+            }
+            let names: Vec<String> = written.iter().map(|(n, _)| n.clone()).collect();
+            crate::atomic_write::write_set(dir, &set, |n| names.iter().any(|m| m == n))?;
+            eprintln!("{}", t!("export-written", path = dir.display().to_string()));
+        }
+        (Some(path), _) => {
+            crate::atomic_write::check_file_destination(path)?;
+            crate::atomic_write::write(path, written[0].1.as_bytes())?;
+            eprintln!("{}", t!("export-written", path = path.display().to_string()));
+        }
+    }
+    Ok(())
+}
+
+/// `phonglab import`.
+#[derive(Args, Debug)]
+pub struct ImportArgs {
+    /// A worksheet-style notebook (.ipynb) or Python script (.py).
+    pub file: PathBuf,
+    /// The scene file to write (TOML).
+    #[arg(short, long)]
+    pub output: PathBuf,
+}
+
+/// Reads a worksheet-style notebook or script (`.ipynb` by its extension, else a script)
+/// into a scene: what it says about lines it could not read goes to the standard error.
+pub fn read_student_code(path: &std::path::Path) -> Result<phonglab_core::export::read_python::Imported> {
+    let text = crate::input_file::read_text_capped(path, crate::input_file::MAX_SCENE_BYTES * 16, &t!("file-kind-code"))
+        .map_err(anyhow::Error::msg)?;
+    let notebook = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("ipynb"));
+    let name = path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
+    phonglab_core::export::read_python::read(&text, notebook, &name).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+}
+
+/// Runs `phonglab import`.
+pub fn import(a: &ImportArgs) -> Result<()> {
+    let imported = read_student_code(&a.file)?;
+    for notice in &imported.notices {
+        eprintln!("{}: {notice}", a.file.display());
+    }
+    crate::atomic_write::check_file_destination(&a.output)?;
+    let text = imported.doc.to_toml().map_err(|e| anyhow::anyhow!("{e}"))?;
+    crate::atomic_write::write(&a.output, text.as_bytes())?;
+    eprintln!(
+        "{}",
+        t!(
+            "import-written",
+            path = a.output.display().to_string(),
+            lights = t!("lights-count", count = imported.doc.scene.lights.len())
+        )
+    );
+    Ok(())
+}
