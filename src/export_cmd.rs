@@ -65,7 +65,9 @@ pub fn export(a: &ExportArgs) -> Result<()> {
                 print!("{text}");
             }
         }
-        (Some(dir), Target::OpenFrameworks) => {
+        (Some(project), Target::OpenFrameworks) => {
+            // An oF project keeps its code in src/.
+            let dir = &project.join("src");
             crate::atomic_write::check_folder_destination(dir)?;
             let mut set = FileSet::default();
             for (name, text) in &written {
@@ -97,11 +99,12 @@ pub struct ImportArgs {
 /// Reads a worksheet-style notebook or script (`.ipynb` by its extension, else a script)
 /// into a scene: what it says about lines it could not read goes to the standard error.
 pub fn read_student_code(path: &std::path::Path) -> Result<phonglab_core::export::read_python::Imported> {
-    let text = crate::input_file::read_text_capped(path, crate::input_file::MAX_SCENE_BYTES * 16, &t!("file-kind-code"))
+    let text = crate::input_file::read_text_capped(path, crate::app::files::MAX_CODE_BYTES, &t!("file-kind-code"))
         .map_err(anyhow::Error::msg)?;
     let notebook = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("ipynb"));
     let name = path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
-    phonglab_core::export::read_python::read(&text, notebook, &name).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+    phonglab_core::export::read_python::read(&text, notebook, &name)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
 }
 
 /// Runs `phonglab import`.

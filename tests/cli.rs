@@ -629,3 +629,49 @@ fn errors_tables_and_file_names_in_portuguese_data_in_english() {
     assert!(line.starts_with("cylinder,\"Phong 32, Schlick pow\",Approximation,Phong,32,"), "{line}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn export_writes_each_kind_of_code_and_import_reads_a_notebook_back() {
+    let dir = std::env::temp_dir().join(format!("phonglab-cli-export-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes/spotlight.toml");
+    // To the standard output.
+    let o = common::phonglab(&["export", "--scene", scene, "--to", "glsl"]);
+    assert!(o.status.success() && String::from_utf8_lossy(&o.stdout).contains("#version 330 core"));
+    // openFrameworks needs a folder: the files go into its src/.
+    let o = common::phonglab(&["export", "--scene", scene, "--to", "openframeworks"]);
+    assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("-o"), "{o:?}");
+    let app = dir.join("spotApp");
+    let o = common::phonglab(&["export", "--scene", scene, "--to", "openframeworks", "-o", app.to_str().unwrap()]);
+    assert!(o.status.success(), "{o:?}");
+    for f in ["ofApp.h", "ofApp.cpp", "main.cpp"] {
+        assert!(app.join("src").join(f).is_file(), "{f}");
+    }
+    assert!(std::fs::read_to_string(app.join("src/ofApp.cpp")).unwrap().contains("light0.setSpotlight(25.0f, 12.0f)"));
+    // The notebook, then back to a scene: the same worked calculation.
+    let nb = dir.join("spot.ipynb");
+    let o = common::phonglab(&["export", "--scene", scene, "--to", "notebook", "-o", nb.to_str().unwrap()]);
+    assert!(o.status.success(), "{o:?}");
+    let back = dir.join("back.toml");
+    let o = common::phonglab(&["import", nb.to_str().unwrap(), "-o", back.to_str().unwrap()]);
+    assert!(o.status.success(), "{o:?}");
+    let explain = |p: &str| String::from_utf8(common::phonglab(&["explain", p]).stdout).unwrap();
+    let (a, b) = (explain(scene), explain(back.to_str().unwrap()));
+    // The heading names the scene; every step after it is the same.
+    assert_eq!(a.lines().skip(1).collect::<Vec<_>>(), b.lines().skip(1).collect::<Vec<_>>());
+    // Not a notebook: refused with the reason, nothing written.
+    let bad = dir.join("bad.ipynb");
+    std::fs::write(&bad, "{ not json").unwrap();
+    let out = dir.join("never.toml");
+    let o = common::phonglab(&["import", bad.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("not a Jupyter notebook"), "{o:?}");
+    assert!(!out.exists());
+    // A Flat view has no PyOpenGL program (the generated shaders are Gouraud and Phong).
+    let flat = dir.join("flat.toml");
+    std::fs::write(&flat, std::fs::read_to_string(scene).unwrap().replace("shading = \"phong\"", "shading = \"flat\""))
+        .unwrap();
+    let o = common::phonglab(&["export", "--scene", flat.to_str().unwrap(), "--to", "pyopengl"]);
+    assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("Gouraud or Phong"), "{o:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -83,3 +83,88 @@ fn the_export_menu_shows_its_fields_inside_the_window() {
     let save = h.get_by_label("Save the sheets (.zip)").rect();
     assert!(window.contains_rect(png) && window.contains_rect(save) && save.min.y > png.max.y, "{png:?} {save:?}");
 }
+
+/// A worksheet notebook made from the worksheet's own cells, with one edit.
+fn students_notebook(dir: &std::path::Path) -> std::path::PathBuf {
+    use phonglab_core::export::notebook::{Cell, ipynb};
+    let text =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/worksheet_cells.json")).unwrap();
+    let json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let cells: Vec<Cell> = json["cells"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| Cell::Code(c.as_str().unwrap().replace("mview = mview5", "mview = mview3")))
+        .collect();
+    let path = dir.join("aluno.ipynb");
+    std::fs::write(&path, ipynb(&cells)).unwrap();
+    path
+}
+
+/// A file dropped on the window, as eframe hands it to egui.
+#[derive(Debug)]
+struct Dropped(std::path::PathBuf);
+
+impl egui::DroppedFile for Dropped {
+    fn path(&self) -> &std::path::Path {
+        &self.0
+    }
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|e| e.to_string())
+    }
+}
+
+#[test]
+fn the_export_menu_copies_each_kind_of_code_and_a_dropped_notebook_opens_as_the_scene() {
+    let mut h = Harness::builder()
+        .with_size([1280.0, 720.0])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(3);
+    let window = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(1280.0, 720.0));
+    let expected = [
+        ("Jupyter notebook (the worksheet's)", "vertexNormal = np.matmul(mview, vertexNormal)"),
+        ("Python program (PyOpenGL + GLUT)", "glLightfv(GL_LIGHT0, GL_POSITION, [0, 0, 90, 1])"),
+        ("openFrameworks app (ofApp.h, ofApp.cpp, main.cpp)", "// ---- ofApp.cpp ----"),
+        ("GLSL shaders", "#version 330 core"),
+    ];
+    for (row, (label, text)) in expected.iter().enumerate() {
+        h.get_by_label("Export").click();
+        h.run_steps(3);
+        let name = h.get_by_label(label).rect();
+        let copies = h.query_all_by_label("Copy").map(|n| n.rect()).collect::<Vec<_>>();
+        let saves = h.query_all_by_label("Save…").map(|n| n.rect()).collect::<Vec<_>>();
+        assert_eq!((copies.len(), saves.len()), (4, 4), "a Copy and a Save for each");
+        // On the label's row, to its right, inside the window.
+        let (copy, save) = (copies[row], saves[row]);
+        assert!(
+            window.contains_rect(copy) && window.contains_rect(save) && window.contains_rect(name),
+            "{name:?} {copy:?}"
+        );
+        assert!(copy.min.x > name.max.x && save.min.x > copy.max.x, "{label}: {name:?} {copy:?} {save:?}");
+        assert!((copy.center().y - name.center().y).abs() < 4.0, "{label}: {name:?} {copy:?}");
+        h.query_all_by_label("Copy").nth(row).unwrap().click();
+        h.run_steps(1);
+        let copied = common::copied_text(&h);
+        assert!(
+            copied.iter().any(|t| t.contains(text)),
+            "{label}: {:?}",
+            copied.iter().map(|t| &t[..t.len().min(200)]).collect::<Vec<_>>()
+        );
+        h.run_steps(2);
+    }
+
+    let dir = temp_dir("import");
+    let notebook = students_notebook(&dir);
+    h.input_mut().dropped_files.push(std::sync::Arc::new(Dropped(notebook.clone())));
+    h.run_steps(2);
+    let s = h.state();
+    assert_eq!(s.doc.camera, phonglab_core::CameraSpec::Worksheet(3), "{:?}", s.message);
+    assert!(
+        matches!(&s.message, Some(phonglab::app::state::Message::Info(m)) if m.contains("aluno.ipynb")),
+        "{:?}",
+        s.message
+    );
+    // Save goes beside the notebook, never over it.
+    assert_eq!(s.ui.file_path, dir.join("aluno.toml").display().to_string());
+    let _ = std::fs::remove_dir_all(&dir);
+}

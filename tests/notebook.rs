@@ -50,7 +50,8 @@ fn printed_values(stdout: &str) -> BTreeMap<String, Vec<f64>> {
     for line in stdout.lines() {
         let Some((name, value)) = line.split_once(" = ") else { continue };
         let value = value.trim().trim_start_matches('[').trim_end_matches(']');
-        let numbers: Option<Vec<f64>> = value.split_whitespace().map(|t| t.trim_end_matches('.').parse().ok()).collect();
+        let numbers: Option<Vec<f64>> =
+            value.split_whitespace().map(|t| t.trim_end_matches('.').parse().ok()).collect();
         if let Some(v) = numbers.filter(|v| !v.is_empty()) {
             out.insert(name.trim().to_string(), v);
         }
@@ -208,8 +209,16 @@ fn export_then_import_gives_back_the_same_scene() {
         assert_eq!(s.light_model.two_sided, doc.scene.light_model.two_sided, "{what}");
         assert_eq!(s.light_model.separate_specular, doc.scene.light_model.separate_specular, "{what}");
         for (l, m) in s.lights.iter().zip(&doc.scene.lights) {
-            assert_eq!((l.position, l.attenuation, l.spot_cutoff), (m.position, m.attenuation, m.spot_cutoff), "{what}");
-            assert_eq!((l.ambient.truncate(), l.diffuse.truncate(), l.specular.truncate()), (m.ambient.truncate(), m.diffuse.truncate(), m.specular.truncate()), "{what}");
+            assert_eq!(
+                (l.position, l.attenuation, l.spot_cutoff),
+                (m.position, m.attenuation, m.spot_cutoff),
+                "{what}"
+            );
+            assert_eq!(
+                (l.ambient.truncate(), l.diffuse.truncate(), l.specular.truncate()),
+                (m.ambient.truncate(), m.diffuse.truncate(), m.specular.truncate()),
+                "{what}"
+            );
         }
         assert_eq!(s.material.shininess, doc.scene.material.shininess, "{what}");
         for side in [Side::Front, Side::Back] {
@@ -220,7 +229,8 @@ fn export_then_import_gives_back_the_same_scene() {
 
 /// The worksheet's own cells (tests/data/worksheet_cells.json, as printed in it).
 fn worksheet_cells() -> Vec<String> {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/worksheet_cells.json")).unwrap();
+    let text =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/worksheet_cells.json")).unwrap();
     let json: serde_json::Value = serde_json::from_str(&text).unwrap();
     json["cells"].as_array().unwrap().iter().map(|c| c.as_str().unwrap().to_string()).collect()
 }
@@ -256,7 +266,11 @@ fn the_worksheets_own_notebook_and_a_students_edit_of_it_open_as_scenes() {
     assert!(edited.doc.scene.light_model.local_viewer);
     // The slip is reported on its line, and the worksheet's value is kept; nothing else is lost.
     assert_eq!(edited.notices.len(), 1, "{:?}", edited.notices);
-    assert!(edited.notices[0].contains(&format!("line {slip_line}")) && edited.notices[0].contains("atQuad"), "{:?}", edited.notices);
+    assert!(
+        edited.notices[0].contains(&format!("line {slip_line}")) && edited.notices[0].contains("atQuad"),
+        "{:?}",
+        edited.notices
+    );
     assert_eq!(edited.doc.scene.lights[0].attenuation, [1.0, 0.0001, 0.00001]);
 }
 

@@ -1,4 +1,6 @@
-//! The Export menu: what the app hands out as files. The shaded view as a PNG (the CPU
+//! The Export menu: what the app hands out as files. The scene as the student's own code
+//! (the worksheet's notebook, a PyOpenGL program, an openFrameworks app, the GLSL: what
+//! `phonglab export` writes), copied or saved; the shaded view as a PNG (the CPU
 //! renderer at 512×512: what `phonglab render --scene` draws for this scene) and a set of
 //! exercise sheets as one zip (what `phonglab exercise` writes: the sheets, keys and scene
 //! files, `sheets.pdf` and `keys.pdf`, in the window's language). On the desktop they are
@@ -7,6 +9,8 @@
 
 use egui::Ui;
 use phonglab_core::t;
+
+use phonglab_core::export::Target;
 
 use super::state::{AppState, Message};
 
@@ -67,9 +71,59 @@ fn hand_out(state: &mut AppState, name: &str, bytes: Result<Vec<u8>, String>, mi
     };
 }
 
+/// The file `target` is saved as: one file, or for openFrameworks a zip of its `src/`.
+pub fn code_file(state: &AppState, target: Target) -> Result<(String, Vec<u8>, &'static str), String> {
+    let written = phonglab_core::export::files(&state.doc, target)?;
+    if target == Target::OpenFrameworks {
+        let files: Vec<(String, Vec<u8>)> =
+            written.into_iter().map(|(name, text)| (format!("src/{name}"), text.into_bytes())).collect();
+        return Ok(("phonglab-ofApp.zip".into(), crate::zip_store::zip_stored(&files), "application/zip"));
+    }
+    let mime = match target {
+        Target::Notebook => "application/x-ipynb+json",
+        Target::PyOpenGl => "text/x-python",
+        _ => "text/plain",
+    };
+    let (name, text) = written.into_iter().next().ok_or_else(|| t!("export-nothing"))?;
+    Ok((name, text.into_bytes(), mime))
+}
+
+/// The student's own code: for each target, Copy (to the clipboard) and Save.
+fn code_ui(ui: &mut Ui, state: &mut AppState) {
+    ui.label(egui::RichText::new(t!("export-code")).strong());
+    egui::Grid::new("export code").num_columns(3).show(ui, |ui| {
+        for target in Target::ALL {
+            ui.label(target.label());
+            if ui.button(t!("export-copy")).on_hover_text(t!("export-copy-hover")).clicked() {
+                state.message = Some(match phonglab_core::export::copy_text(&state.doc, target) {
+                    Ok(text) => {
+                        ui.ctx().copy_text(text);
+                        Message::Info(t!("export-copied", what = target.label()))
+                    }
+                    Err(e) => Message::Refused(t!("not-exported", what = target.label(), error = e)),
+                });
+                ui.close();
+            }
+            if ui.button(t!("export-save")).on_hover_text(t!("export-save-hover")).clicked() {
+                match code_file(state, target) {
+                    Ok((name, bytes, mime)) => hand_out(state, &name, Ok(bytes), mime),
+                    Err(e) => {
+                        state.message = Some(Message::Refused(t!("not-exported", what = target.label(), error = e)))
+                    }
+                }
+                ui.close();
+            }
+            ui.end_row();
+        }
+    });
+    ui.small(t!("export-import-hint"));
+}
+
 /// The Export menu's button and its contents.
 pub fn export_menu_ui(ui: &mut Ui, state: &mut AppState) {
     ui.menu_button(t!("export"), |ui| {
+        code_ui(ui, state);
+        ui.separator();
         if ui.button(t!("export-png", size = PNG_SIZE.to_string())).on_hover_text(t!("export-png-hover")).clicked() {
             let name = format!(
                 "phonglab-{}-{}.png",

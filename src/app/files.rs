@@ -12,6 +12,9 @@ use phonglab_core::t;
 use super::state::{AppState, Message};
 use crate::platform::files as platform;
 
+/// The largest notebook or script opened (a notebook with its outputs is larger than a scene).
+pub const MAX_CODE_BYTES: u64 = 16 * crate::input_file::MAX_SCENE_BYTES;
+
 /// Writes `doc` to `path`, whole or not at all ([`crate::atomic_write::write`]).
 pub fn write_document(doc: &Document, path: &Path) -> Result<(), String> {
     let text = doc.to_toml().map_err(|e| e.to_string())?;
@@ -39,7 +42,8 @@ fn open_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
     if is_obj(path) {
         return open_obj_or_why(state, path);
     }
-    let bytes = crate::input_file::read_capped(path, crate::input_file::MAX_SCENE_BYTES, &t!("file-kind-scenes"))?;
+    let cap = if student_code(path).is_some() { MAX_CODE_BYTES } else { crate::input_file::MAX_SCENE_BYTES };
+    let bytes = crate::input_file::read_capped(path, cap, &t!("file-kind-scenes"))?;
     open_bytes_or_why(state, &bytes, path)
 }
 
@@ -90,9 +94,36 @@ fn open_bytes_or_why(state: &mut AppState, bytes: &[u8], path: &Path) -> Result<
     let Ok(text) = std::str::from_utf8(bytes) else {
         return Err(t!("not-text", path = path.display().to_string()));
     };
+    if let Some(notebook) = student_code(path) {
+        return import_or_why(state, text, notebook, path);
+    }
     let doc = Document::from_toml_in(text, path.parent()).map_err(|e| format!("{}: {e}", path.display()))?;
     state.load(doc, &path.display().to_string());
     state.ui.file_path = path.display().to_string();
+    Ok(())
+}
+
+/// Is `path` a worksheet-style notebook (`Some(true)`) or Python script (`Some(false)`)?
+pub fn student_code(path: &Path) -> Option<bool> {
+    let ext = path.extension()?.to_string_lossy().to_lowercase();
+    match ext.as_str() {
+        "ipynb" => Some(true),
+        "py" => Some(false),
+        _ => None,
+    }
+}
+
+/// Opens a worksheet-style notebook or script as a scene (what `phonglab import` reads),
+/// saying which lines could not be read; the scene stays when nothing could be.
+fn import_or_why(state: &mut AppState, text: &str, notebook: bool, path: &Path) -> Result<(), String> {
+    let name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    let imported = phonglab_core::export::read_python::read(text, notebook, &name)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    state.load(imported.doc, &path.display().to_string());
+    // Save writes a scene file beside it, never over the student's notebook or script.
+    state.ui.file_path = path.with_extension("toml").display().to_string();
+    let what = if imported.notices.is_empty() { String::new() } else { format!(" {}", imported.notices.join("; ")) };
+    state.message = Some(Message::Info(t!("imported", path = path.display().to_string(), notices = what)));
     Ok(())
 }
 
@@ -153,7 +184,7 @@ pub fn file_ui(ui: &mut Ui, state: &mut AppState) {
 /// after the file it came from, or `scene.toml`).
 fn browser_file_ui(ui: &mut Ui, state: &mut AppState) {
     if ui.button(t!("open-dialog")).on_hover_text(t!("open-browser-hover")).clicked() {
-        platform::choose_file(ui.ctx(), ".toml");
+        platform::choose_file(ui.ctx(), ".toml,.ipynb,.py");
     }
     if ui.button(t!("save")).on_hover_text(t!("save-download-hover")).clicked() {
         let name = Path::new(state.ui.file_path.trim())
@@ -211,7 +242,7 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
     let dropped = ctx.input(|i| i.raw.dropped_files.clone());
     let Some(file) = dropped.first() else { return };
     // Read now on the desktop; in the browser the bytes arrive later (see file_ui).
-    match platform::read_dropped(ctx, file, crate::input_file::MAX_SCENE_BYTES) {
+    match platform::read_dropped(ctx, file, MAX_CODE_BYTES) {
         Some(Ok((name, bytes))) => open_bytes(state, &bytes, Path::new(&name)),
         Some(Err(why)) => refuse(state, why),
         None => {}

@@ -18,7 +18,7 @@ pub type Arrived = (String, Vec<u8>);
 /// desktop; the browser's chooser is [`choose_file`]).
 #[cfg(not(target_arch = "wasm32"))]
 pub fn pick_scene_to_open(start: Option<&std::path::Path>) -> Option<PathBuf> {
-    dialog(start).add_filter("Scene or mesh", &["toml", "obj"]).pick_file()
+    dialog(start).add_filter("Scene, mesh or worksheet", &["toml", "obj", "ipynb", "py"]).pick_file()
 }
 
 /// Where to save the scene, or `None` when the dialog was cancelled or could not open.

@@ -588,6 +588,36 @@ py-reader-doc = The value of the shaders' uniform u_NAME, read from GL's state (
 py-object-doc = The object, as phonglab builds it.
 py-arrays-comment = phonglab's triangles (positions, normals, and three vertex indices per triangle)
 py-teapot-winding = freeglut's teapot is wound clockwise: with two-sided lighting its outside would be lit as the back side
+of-header-comment = { $scene }: its lighting in an openFrameworks 0.12 app, written by phonglab. It assumes oF's default renderer: ofSetupOpenGL opens a GL 2.1 window, where ofGLRenderer lights with fixed-function OpenGL (not the programmable renderer of GL 3+).
+of-main-comment = The default renderer: GL 2.1, fixed-function lighting (see ofApp.h).
+of-source-comment = The scene's lights, material and camera as phonglab has them; oF places lights in world coordinates, under the camera's view only.
+of-camera-comment = phonglab's view: gluPerspective(40, 1, 0.1, 100) and its orbit camera
+of-light-comment = the scene's light { $index }
+of-directional-comment = a directional light's GL_POSITION is its look direction, w = 0
+of-spot-comment = the spot direction is the light's look direction
+of-material-comment = the material, bound while the object is drawn (ofSetColor under lighting would turn on glColorMaterial instead)
+of-back-material-comment = oF has one material for both sides: the back side's, raw GL
+of-no-scene-ambient = this scene's rules have no scene ambient: 0 here, so that GL computes the same I (oF's default is 0.2)
+of-rules-comment = phonglab computes this scene under { $rules }; fixed-function GL computes OpenGL's equation, which can differ (the normal by the inverse transpose, the specular gate)
+of-phong-specular-comment = this scene's specular is Phong's (R · V); fixed-function GL computes Blinn-Phong (N · H): the highlight differs
+of-local-viewer-comment = the local viewer: oF has no call for it
+of-two-sided-comment = two-sided lighting: oF has no call for it
+of-separate-specular-comment = a separate specular colour: oF has no call for it
+of-normal-as-is-comment = ofEnableLighting turns GL_NORMALIZE on; this scene uses normals as transformed
+of-normal-rescale-comment = ofEnableLighting turns GL_NORMALIZE on; this scene rescales normals instead
+of-eye-light-comment = a light fixed to the eye (a head lamp): oF places lights in the world, so raw GL under the identity modelview, on the next free light
+of-spin-comment = the object's turn in phonglab's view
+of-cylinder-comment = gluCylinder runs along z; oF's cylinder along y, centred
+of-no-teapot-comment = oF has no teapot and reads no mesh file here: a sphere stands in (load your model with ofMesh::load or ofxAssimpModelLoader)
+export-code = Your own code
+export-copy = Copy
+export-copy-hover = Copy it to the clipboard (the notebook as one script, the openFrameworks files one after the other)
+export-save = Save…
+export-save-hover = Save it as a file (openFrameworks: a zip of the project's src/)
+export-copied = Copied: { $what }
+export-nothing = nothing to write
+export-import-hint = To go the other way, open or drop a worksheet notebook (.ipynb) or script (.py): its values become the scene.
+imported = Opened { $path } as a scene (the worksheet's rules unless it says otherwise).{ $notices }
 
 ## plots
 

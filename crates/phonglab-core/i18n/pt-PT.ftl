@@ -588,6 +588,36 @@ py-reader-doc = O valor do uniform u_NAME dos shaders, lido do estado do GL (glG
 py-object-doc = O objeto, tal como o phonglab o constrói.
 py-arrays-comment = os triângulos do phonglab (posições, normais e três índices de vértices por triângulo)
 py-teapot-winding = o bule do freeglut tem os triângulos no sentido dos ponteiros do relógio: com iluminação dos dois lados, o exterior seria iluminado como face de trás
+of-header-comment = { $scene }: a sua iluminação numa app openFrameworks 0.12, escrita pelo phonglab. Assume o renderizador por omissão do oF: o ofSetupOpenGL abre uma janela GL 2.1, onde o ofGLRenderer ilumina com o OpenGL de pipeline fixo (não o renderizador programável do GL 3+).
+of-main-comment = O renderizador por omissão: GL 2.1, iluminação de pipeline fixo (ver ofApp.h).
+of-source-comment = As luzes, o material e a câmara da cena como o phonglab os tem; o oF coloca as luzes em coordenadas do mundo, só sob a vista da câmara.
+of-camera-comment = a vista do phonglab: gluPerspective(40, 1, 0.1, 100) e a sua câmara em órbita
+of-light-comment = a luz { $index } da cena
+of-directional-comment = o GL_POSITION de uma luz direcional é a sua direção de olhar, w = 0
+of-spot-comment = a direção do foco é a direção de olhar da luz
+of-material-comment = o material, ativo enquanto o objeto é desenhado (ofSetColor com iluminação ligaria antes o glColorMaterial)
+of-back-material-comment = o oF tem um material para os dois lados: o da face de trás, em GL direto
+of-no-scene-ambient = as regras desta cena não têm ambiente da cena: 0 aqui, para o GL calcular o mesmo I (o oF usa 0,2 por omissão)
+of-rules-comment = o phonglab calcula esta cena com { $rules }; o GL de pipeline fixo calcula a equação do OpenGL, que pode diferir (a normal pela inversa transposta, a condição da especular)
+of-phong-specular-comment = a especular desta cena é a de Phong (R · V); o GL de pipeline fixo calcula Blinn-Phong (N · H): o brilho difere
+of-local-viewer-comment = o observador local: o oF não tem chamada para isso
+of-two-sided-comment = iluminação dos dois lados: o oF não tem chamada para isso
+of-separate-specular-comment = uma cor especular separada: o oF não tem chamada para isso
+of-normal-as-is-comment = o ofEnableLighting liga o GL_NORMALIZE; esta cena usa as normais tal como transformadas
+of-normal-rescale-comment = o ofEnableLighting liga o GL_NORMALIZE; esta cena reescala as normais em vez disso
+of-eye-light-comment = uma luz presa ao olho (uma lanterna de cabeça): o oF coloca as luzes no mundo, por isso GL direto sob a modelview identidade, na luz livre seguinte
+of-spin-comment = a rotação do objeto na vista do phonglab
+of-cylinder-comment = o gluCylinder vai ao longo de z; o cilindro do oF ao longo de y, centrado
+of-no-teapot-comment = o oF não tem bule e aqui não lê ficheiros de malhas: uma esfera faz as vezes (carregue o seu modelo com ofMesh::load ou ofxAssimpModelLoader)
+export-code = O seu próprio código
+export-copy = Copiar
+export-copy-hover = Copiar para a área de transferência (o caderno como um só programa, os ficheiros do openFrameworks um após o outro)
+export-save = Guardar…
+export-save-hover = Guardar como ficheiro (openFrameworks: um zip da pasta src/ do projeto)
+export-copied = Copiado: { $what }
+export-nothing = nada para escrever
+export-import-hint = Para o caminho inverso, abra ou largue um caderno (.ipynb) ou programa (.py) da ficha: os seus valores passam a ser a cena.
+imported = Aberto { $path } como cena (as regras da ficha, salvo se ele disser outras).{ $notices }
 
 ## plots
 

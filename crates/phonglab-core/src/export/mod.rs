@@ -6,7 +6,7 @@
 //! program from a state key: only the cells, calls and lines this scene needs.
 
 pub mod notebook;
-// pub mod openframeworks;
+pub mod openframeworks;
 pub mod pyopengl;
 pub mod python;
 pub mod read_python;
@@ -50,7 +50,7 @@ pub fn files(doc: &Document, target: Target) -> Result<Vec<File>, String> {
     Ok(match target {
         Target::Notebook => vec![("vertex_color_calculator.ipynb".into(), notebook::notebook(doc))],
         Target::PyOpenGl => vec![("phong_scene.py".into(), pyopengl::program(doc)?)],
-        Target::OpenFrameworks => return Err("TEMP".into()),
+        Target::OpenFrameworks => openframeworks::app(doc),
         Target::Glsl => {
             let lang = crate::shader::Lang::Glsl;
             let shading = match doc.view.shading {
@@ -61,6 +61,21 @@ pub fn files(doc: &Document, target: Target) -> Result<Vec<File>, String> {
             vec![("phong_scene.glsl".into(), shader.text(lang))]
         }
     })
+}
+
+/// The text the app's Copy puts on the clipboard: the notebook as one script (to paste
+/// into a cell or a file), the openFrameworks files one after the other under their
+/// names, the others as they are.
+pub fn copy_text(doc: &Document, target: Target) -> Result<String, String> {
+    if target == Target::Notebook {
+        doc.scene.validate().map_err(|e| e.to_string())?;
+        return Ok(notebook::script(&notebook::cells(doc)));
+    }
+    let written = files(doc, target)?;
+    if written.len() == 1 {
+        return Ok(written.into_iter().next().map(|(_, t)| t).unwrap_or_default());
+    }
+    Ok(written.iter().map(|(name, text)| format!("// ---- {name} ----\n{text}\n")).collect())
 }
 
 use crate::document::Document;

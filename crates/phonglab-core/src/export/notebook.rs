@@ -130,7 +130,11 @@ fn per_light(n: usize, assigned: &[&str], body: &str) -> String {
 /// A print of a value under its name, as the worksheet prints (`print("vlv = ", vlv)`);
 /// `indexed` for a per-light value.
 fn print(name: &str, indexed: bool) -> String {
-    if indexed { format!("print(f\"{name}[⟨p⟩] = \", {name}[⟨i⟩])") } else { format!("print(\"{name} = \", {name})") }
+    if indexed {
+        format!("print(f\"{name}[⟨p⟩] = \", {name}[⟨i⟩])")
+    } else {
+        format!("print(\"{name} = \", {name})")
+    }
 }
 
 /// The notebook's cells for `doc`'s scene (front side; the back side of two-sided
@@ -239,10 +243,12 @@ fn givens(scene: &Scene) -> String {
 fn material(m: &Material, suffix: &str, emission: bool) -> String {
     let name = crate::materials::classic()
         .iter()
-        .find(|c| c.material.ambient.truncate() == m.ambient.truncate()
-            && c.material.diffuse.truncate() == m.diffuse.truncate()
-            && c.material.specular.truncate() == m.specular.truncate()
-            && c.material.shininess == m.shininess)
+        .find(|c| {
+            c.material.ambient.truncate() == m.ambient.truncate()
+                && c.material.diffuse.truncate() == m.diffuse.truncate()
+                && c.material.specular.truncate() == m.specular.truncate()
+                && c.material.shininess == m.shininess
+        })
         .map(|c| c.name.clone());
     let mut s = match name {
         Some(n) => format!("#{n}\n"),
@@ -273,7 +279,8 @@ fn settings(scene: &Scene) -> Option<String> {
     if scene.rules.set != RuleSet::Worksheet {
         lines.push(format!("rules = {}", string(rules)));
     }
-    let specular_default = if scene.rules.set == RuleSet::PhongDemo { SpecularModel::Phong } else { SpecularModel::BlinnPhong };
+    let specular_default =
+        if scene.rules.set == RuleSet::PhongDemo { SpecularModel::Phong } else { SpecularModel::BlinnPhong };
     if scene.rules.specular != specular_default {
         let s = if scene.rules.specular == SpecularModel::Phong { "phong" } else { "blinn-phong" };
         lines.push(format!("specular = {}", string(s)));
@@ -318,9 +325,9 @@ fn vectors(scene: &Scene, needs: &Needs) -> String {
     }
     match scene.normal_mode {
         NormalMode::Normalize => s.push_str("vertexNormal = vertexNormal/np.linalg.norm(vertexNormal)\n"),
-        NormalMode::Rescale => {
-            s.push_str("#GL_RESCALE_NORMAL\nvertexNormal = vertexNormal/np.linalg.norm(np.linalg.inv(mview[:3, :3])[2])\n")
-        }
+        NormalMode::Rescale => s.push_str(
+            "#GL_RESCALE_NORMAL\nvertexNormal = vertexNormal/np.linalg.norm(np.linalg.inv(mview[:3, :3])[2])\n",
+        ),
         NormalMode::AsIs => s.push_str(&format!("{}\n", t!("nb-normal-as-is-comment"))),
     }
     s.push_str("print(\"vertexNormal = \", vertexNormal)\n\n");
@@ -403,7 +410,11 @@ fn specular(scene: &Scene, n: usize, suffix: &str) -> String {
         }
         SpecularModel::Phong => {
             let cos = format!("cosAlpha{suffix}");
-            let dot = if scene.rules.reflect_clamped() { "max(np.dot(vertexNormal, vlv[⟨i⟩]), 0)" } else { "np.dot(vertexNormal, vlv[⟨i⟩])" };
+            let dot = if scene.rules.reflect_clamped() {
+                "max(np.dot(vertexNormal, vlv[⟨i⟩]), 0)"
+            } else {
+                "np.dot(vertexNormal, vlv[⟨i⟩])"
+            };
             // R is formed with the front normal on both sides, as the engine forms it.
             let lines = if back {
                 format!("{cos}[⟨i⟩] = np.dot(R[⟨i⟩], vov)\n{}\n", print(&cos, true))
@@ -483,14 +494,18 @@ fn final_colour(scene: &Scene, needs: &Needs, suffix: &str) -> String {
             String::new()
         };
         let spot = "spot[⟨i⟩]*";
-        let body = no_spot.clone() + &if sep {
-            format!(
-                "{ilight}[⟨i⟩] = {spot}({iamb}[⟨i⟩] + {idif}[⟨i⟩])/at[⟨i⟩]\n{}\n{isec}[⟨i⟩] = {spot}{ispec}[⟨i⟩]/at[⟨i⟩]",
-                print(&ilight, true)
-            )
-        } else {
-            format!("{ilight}[⟨i⟩] = {spot}({iamb}[⟨i⟩] + {idif}[⟨i⟩] + {ispec}[⟨i⟩])/at[⟨i⟩]\n{}", print(&ilight, true))
-        };
+        let body = no_spot.clone()
+            + &if sep {
+                format!(
+                    "{ilight}[⟨i⟩] = {spot}({iamb}[⟨i⟩] + {idif}[⟨i⟩])/at[⟨i⟩]\n{}\n{isec}[⟨i⟩] = {spot}{ispec}[⟨i⟩]/at[⟨i⟩]",
+                    print(&ilight, true)
+                )
+            } else {
+                format!(
+                    "{ilight}[⟨i⟩] = {spot}({iamb}[⟨i⟩] + {idif}[⟨i⟩] + {ispec}[⟨i⟩])/at[⟨i⟩]\n{}",
+                    print(&ilight, true)
+                )
+            };
         let mut assigned: Vec<&str> = if sep { vec![&ilight, &isec] } else { vec![&ilight] };
         if !no_spot.is_empty() {
             assigned.insert(0, "spot");
@@ -541,7 +556,11 @@ fn back_side(scene: &Scene, needs: &Needs) -> String {
     if scene.back_material.is_none() {
         s.push_str("matAmbBack, matDifBack, matSpecBack, nsBack = matAmb, matDif, matSpec, ns\n\n");
     }
-    s.push_str(&per_light(n, &["IambBack"], &format!("IambBack[⟨i⟩] = Lamb[⟨i⟩]*matAmbBack\n{}", print("IambBack", true))));
+    s.push_str(&per_light(
+        n,
+        &["IambBack"],
+        &format!("IambBack[⟨i⟩] = Lamb[⟨i⟩]*matAmbBack\n{}", print("IambBack", true)),
+    ));
     s.push('\n');
     s.push_str(&diffuse(n, "Back"));
     s.push('\n');
@@ -549,4 +568,29 @@ fn back_side(scene: &Scene, needs: &Needs) -> String {
     s.push('\n');
     s.push_str(&final_colour(scene, needs, "Back"));
     s
+}
+
+/// The notebook as one Python script (what `jupyter nbconvert --to script` writes): the
+/// markdown as comments, the code cells one after the other. It runs as the notebook does,
+/// and `phonglab import` reads it back.
+pub fn script(cells: &[Cell]) -> String {
+    let mut out = String::from("#!/usr/bin/env python3\n");
+    for cell in cells {
+        match cell {
+            Cell::Markdown(text) => {
+                out.push('\n');
+                for line in text.lines() {
+                    out.push_str(if line.is_empty() { "#" } else { "# " });
+                    out.push_str(line);
+                    out.push('\n');
+                }
+            }
+            Cell::Code(code) => {
+                out.push_str("\n# In[ ]:\n\n");
+                out.push_str(code.trim_end());
+                out.push('\n');
+            }
+        }
+    }
+    out
 }

@@ -22,8 +22,8 @@ use crate::document::Document;
 use crate::rules::RuleSet;
 use crate::scene::{Light, LightPlacement, Scene};
 use crate::shader::{Lang, ShaderShading};
-use crate::view::{Framing, LightingSpace, ObjectKind, Shading, View};
 use crate::t;
+use crate::view::{Framing, LightingSpace, ObjectKind, Shading, View};
 
 /// The program's text for `doc`, or why it cannot be written (a Flat view: the generated
 /// shaders are Gouraud and Phong).
@@ -47,7 +47,12 @@ pub fn program(doc: &Document) -> Result<String, String> {
         }),
         t!("py-rules-comment")
     ));
-    s.push_str(&format!("SIZE = 512\nBACKGROUND = ({}, {}, {})\n\n", num(doc.view.background[0] as f64), num(doc.view.background[1] as f64), num(doc.view.background[2] as f64)));
+    s.push_str(&format!(
+        "SIZE = 512\nBACKGROUND = ({}, {}, {})\n\n",
+        num(doc.view.background[0] as f64),
+        num(doc.view.background[1] as f64),
+        num(doc.view.background[2] as f64)
+    ));
     s.push_str(&shaders(&shader));
     s.push_str(&matrices(&setup));
     s.push_str(&lighting_state(scene));
@@ -104,7 +109,9 @@ fn matrices(setup: &crate::ShadedSetup) -> String {
     let view = &setup.view;
     let mut s = String::new();
     let projection = match view.framing {
-        Framing::Orbit => format!("# {}\nPROJECTION = None  # gluPerspective(40, 1, 0.1, 100)\n", t!("py-projection-orbit")),
+        Framing::Orbit => {
+            format!("# {}\nPROJECTION = None  # gluPerspective(40, 1, 0.1, 100)\n", t!("py-projection-orbit"))
+        }
         Framing::ClipSpace => format!("# {}\nPROJECTION = np.identity(4)\n", t!("py-projection-clip")),
     };
     s.push_str(&projection);
@@ -118,7 +125,11 @@ fn matrices(setup: &crate::ShadedSetup) -> String {
     s.push_str(&format!("# {}\nMODELVIEW = {}\n", t!("py-modelview-comment"), np_matrix(&drawing)));
     let lighting = setup.scene.eye_from_object() * shift;
     if view.lighting_space == LightingSpace::Object || !lighting.abs_diff_eq(drawing, 1e-12) {
-        s.push_str(&format!("# {}\nLIGHTING_MODELVIEW = {}\n", t!("py-lighting-modelview-comment"), np_matrix(&lighting)));
+        s.push_str(&format!(
+            "# {}\nLIGHTING_MODELVIEW = {}\n",
+            t!("py-lighting-modelview-comment"),
+            np_matrix(&lighting)
+        ));
     } else {
         s.push_str("LIGHTING_MODELVIEW = MODELVIEW\n");
     }
@@ -143,11 +154,14 @@ fn rgba(c: glam::DVec4) -> String {
 
 /// The fixed-function calls that set the scene's lighting state.
 fn lighting_state(scene: &Scene) -> String {
-    let mut s = format!("def set_lighting_state():\n    \"\"\"{}\"\"\"\n    glMatrixMode(GL_MODELVIEW)\n", t!("py-state-doc"));
+    let mut s =
+        format!("def set_lighting_state():\n    \"\"\"{}\"\"\"\n    glMatrixMode(GL_MODELVIEW)\n", t!("py-state-doc"));
     for (i, l) in scene.lights.iter().enumerate() {
         let light = format!("GL_LIGHT{i}");
         let (matrix, placement) = light_modelview(scene, l);
-        s.push_str(&format!("    # GL_LIGHT{i}: {placement}\n    light_modelview = {matrix}\n    glLoadMatrixf(light_modelview.T)\n"));
+        s.push_str(&format!(
+            "    # GL_LIGHT{i}: {placement}\n    light_modelview = {matrix}\n    glLoadMatrixf(light_modelview.T)\n"
+        ));
         s.push_str(&format!("    glLightfv({light}, GL_POSITION, {})\n", rgba(l.position)));
         s.push_str(&format!(
             "    glLightfv({light}, GL_SPOT_DIRECTION, [{}, {}, {}])\n",
@@ -160,12 +174,18 @@ fn lighting_state(scene: &Scene) -> String {
         s.push_str(&format!("    glLightfv({light}, GL_SPECULAR, {})\n", rgba(l.specular)));
         s.push_str(&format!("    glLightf({light}, GL_SPOT_CUTOFF, {})\n", num(l.spot_cutoff)));
         s.push_str(&format!("    glLightf({light}, GL_SPOT_EXPONENT, {})\n", num(l.spot_exponent)));
-        for (k, name) in ["GL_CONSTANT_ATTENUATION", "GL_LINEAR_ATTENUATION", "GL_QUADRATIC_ATTENUATION"].iter().enumerate() {
+        for (k, name) in
+            ["GL_CONSTANT_ATTENUATION", "GL_LINEAR_ATTENUATION", "GL_QUADRATIC_ATTENUATION"].iter().enumerate()
+        {
             s.push_str(&format!("    glLightf({light}, {name}, {})\n", num(l.attenuation[k])));
         }
         s.push_str(&format!("    glEnable({light})\n"));
     }
-    let faces = if scene.back_material.is_some() { ["GL_FRONT", "GL_BACK"].as_slice() } else { ["GL_FRONT_AND_BACK"].as_slice() };
+    let faces = if scene.back_material.is_some() {
+        ["GL_FRONT", "GL_BACK"].as_slice()
+    } else {
+        ["GL_FRONT_AND_BACK"].as_slice()
+    };
     for face in faces {
         let m = if *face == "GL_BACK" { scene.back() } else { &scene.material };
         s.push_str(&format!("    glMaterialfv({face}, GL_AMBIENT, {})\n", rgba(m.ambient)));
@@ -176,8 +196,14 @@ fn lighting_state(scene: &Scene) -> String {
     }
     let lm = &scene.light_model;
     s.push_str(&format!("    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, {})\n", rgba(lm.ambient)));
-    s.push_str(&format!("    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, {})\n", if lm.local_viewer { "GL_TRUE" } else { "GL_FALSE" }));
-    s.push_str(&format!("    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, {})\n", if lm.two_sided { "GL_TRUE" } else { "GL_FALSE" }));
+    s.push_str(&format!(
+        "    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, {})\n",
+        if lm.local_viewer { "GL_TRUE" } else { "GL_FALSE" }
+    ));
+    s.push_str(&format!(
+        "    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, {})\n",
+        if lm.two_sided { "GL_TRUE" } else { "GL_FALSE" }
+    ));
     s.push_str(&format!(
         "    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, {})\n",
         if lm.separate_specular { "GL_SEPARATE_SPECULAR_COLOR" } else { "GL_SINGLE_COLOR" }
@@ -223,7 +249,9 @@ fn object_shift(view: &View) -> DMat4 {
 fn object(view: &View) -> Result<String, String> {
     let call = match view.object {
         _ if !drawn_by_call(view) => None,
-        ObjectKind::Sphere => Some(format!("    gluSphere(quadric, 0.5, {}, {})\n", view.sphere_slices, view.sphere_stacks)),
+        ObjectKind::Sphere => {
+            Some(format!("    gluSphere(quadric, 0.5, {}, {})\n", view.sphere_slices, view.sphere_stacks))
+        }
         ObjectKind::Teapot if view.teapot_grid == 7 => Some(format!(
             "    # {}\n    glFrontFace(GL_CW)\n    glutSolidTeapot(0.5)\n    glFrontFace(GL_CCW)\n",
             t!("py-teapot-winding")
@@ -245,7 +273,11 @@ fn object(view: &View) -> Result<String, String> {
             };
             s.push_str("    glBegin(GL_TRIANGLES)\n    for i in TRIANGLES:\n        glNormal3fv(NORMALS[i])\n        glVertex3fv(POSITIONS[i])\n    glEnd()\n\n\n");
             let v3 = |v: &glam::Vec3| format!("({}, {}, {})", num(v.x as f64), num(v.y as f64), num(v.z as f64));
-            s.push_str(&format!("# {}\nPOSITIONS = [{}]\n", t!("py-arrays-comment"), mesh.positions.iter().map(v3).collect::<Vec<_>>().join(", ")));
+            s.push_str(&format!(
+                "# {}\nPOSITIONS = [{}]\n",
+                t!("py-arrays-comment"),
+                mesh.positions.iter().map(v3).collect::<Vec<_>>().join(", ")
+            ));
             s.push_str(&format!("NORMALS = [{}]\n", mesh.normals.iter().map(v3).collect::<Vec<_>>().join(", ")));
             s.push_str(&format!(
                 "TRIANGLES = [{}]\n",

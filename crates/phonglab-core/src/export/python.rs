@@ -46,11 +46,7 @@ pub fn shininess(s: f64) -> String {
     let f = s / 128.0;
     // Multiplying by 128 is exact, so `f*128` reads back as `s` exactly.
     let short = num(f);
-    if f * 128.0 == s && s != 0.0 && short.len() <= 8 && s != s.trunc() {
-        format!("{short}*128")
-    } else {
-        num(s)
-    }
+    if f * 128.0 == s && s != 0.0 && short.len() <= 8 && s != s.trunc() { format!("{short}*128") } else { num(s) }
 }
 
 /// A Python string literal (double quotes, backslashes and quotes escaped).

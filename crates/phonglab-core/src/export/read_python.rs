@@ -111,7 +111,8 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
         let value = evaluate(rhs, &env);
         if lhs == "obs" {
             // The worksheet's switch: the active `obs` line says which viewer.
-            local_viewer = !rhs.contains("vertexPos") && value.as_ref().is_ok_and(|v| v.numbers() == Some(vec![0.0, 0.0, 0.0, 1.0]));
+            local_viewer = !rhs.contains("vertexPos")
+                && value.as_ref().is_ok_and(|v| v.numbers() == Some(vec![0.0, 0.0, 0.0, 1.0]));
             continue;
         }
         let is_given = GIVENS.contains(&lhs) || MORE_GIVENS.contains(&lhs);
@@ -125,7 +126,12 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
             // A computing line (it uses NumPy's functions, or the name itself): the
             // worksheet's calculation, not a given.
             Err(_) if computing(lhs, rhs) => {}
-            Err(e) if is_given => notices.push(t!("import-unreadable", place = line.place.clone(), line = line.text.trim().to_string(), reason = e)),
+            Err(e) if is_given => notices.push(t!(
+                "import-unreadable",
+                place = line.place.clone(),
+                line = line.text.trim().to_string(),
+                reason = e
+            )),
             Err(_) => {}
         }
     }
@@ -139,9 +145,11 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
 
 /// The code cells' lines of a notebook.
 fn notebook_lines(text: &str) -> Result<Vec<SourceLine>, ImportError> {
-    let nb: serde_json::Value =
-        serde_json::from_str(text).map_err(|e| ImportError::NotANotebook(t!("import-not-notebook", reason = e.to_string())))?;
-    let cells = nb["cells"].as_array().ok_or_else(|| ImportError::NotANotebook(t!("import-not-notebook", reason = t!("import-no-cells"))))?;
+    let nb: serde_json::Value = serde_json::from_str(text)
+        .map_err(|e| ImportError::NotANotebook(t!("import-not-notebook", reason = e.to_string())))?;
+    let cells = nb["cells"]
+        .as_array()
+        .ok_or_else(|| ImportError::NotANotebook(t!("import-not-notebook", reason = t!("import-no-cells"))))?;
     let mut out = Vec::new();
     for (c, cell) in cells.iter().enumerate() {
         if cell["cell_type"] != "code" {
@@ -202,7 +210,8 @@ fn strip_comment(line: &str) -> &str {
 /// Does the right-hand side compute (NumPy's functions, `m.` functions, the name itself)?
 fn computing(lhs: &str, rhs: &str) -> bool {
     let words = ["np.matmul", "np.linalg", "np.dot", "np.append", "np.clip", "m.acos", "np.cross", "sum("];
-    words.iter().any(|w| rhs.contains(w)) || rhs.split(|c: char| !c.is_ascii_alphanumeric() && c != '_').any(|w| w == lhs)
+    words.iter().any(|w| rhs.contains(w))
+        || rhs.split(|c: char| !c.is_ascii_alphanumeric() && c != '_').any(|w| w == lhs)
 }
 
 impl Value {
@@ -408,8 +417,12 @@ fn arithmetic(a: &Value, b: &Value, op: &str) -> Result<Value, String> {
         (Value::List(xs), Value::List(ys)) if xs.len() == ys.len() => {
             Ok(Value::List(xs.iter().zip(ys).map(|(x, y)| arithmetic(x, y, op)).collect::<Result<_, _>>()?))
         }
-        (Value::List(xs), y @ Value::Num(_)) => Ok(Value::List(xs.iter().map(|x| arithmetic(x, y, op)).collect::<Result<_, _>>()?)),
-        (x @ Value::Num(_), Value::List(ys)) => Ok(Value::List(ys.iter().map(|y| arithmetic(x, y, op)).collect::<Result<_, _>>()?)),
+        (Value::List(xs), y @ Value::Num(_)) => {
+            Ok(Value::List(xs.iter().map(|x| arithmetic(x, y, op)).collect::<Result<_, _>>()?))
+        }
+        (x @ Value::Num(_), Value::List(ys)) => {
+            Ok(Value::List(ys.iter().map(|y| arithmetic(x, y, op)).collect::<Result<_, _>>()?))
+        }
         _ => Err(t!("import-reason-arithmetic", op = op.to_string())),
     }
 }
@@ -597,7 +610,8 @@ impl Reader {
             lights.push(l);
         }
         let material = self.material("", &ws.material);
-        let has_back = ["matAmbBack", "matDifBack", "matSpecBack", "nsBack"].iter().any(|k| self.given.contains_key(*k));
+        let has_back =
+            ["matAmbBack", "matDifBack", "matSpecBack", "nsBack"].iter().any(|k| self.given.contains_key(*k));
         let back_material = has_back.then(|| self.material("Back", &material));
         let mut light_model = crate::scene::LightModel { local_viewer, ..Default::default() };
         light_model.two_sided = self.flag("twoSided");

@@ -1,0 +1,327 @@
+//! An openFrameworks 0.12 app (`ofApp.h`, `ofApp.cpp`, `main.cpp`) that sets up a scene's
+//! lighting with oF's own calls, for the default renderer (`ofSetupOpenGL`: GL 2.1, where
+//! `ofGLRenderer` lights with real fixed-function GL).
+//!
+//! What oF does, read from its sources, and what the writer relies on:
+//! - `ofEnableLighting()` enables `GL_LIGHTING` and `GL_NORMALIZE`;
+//! - light positions are world coordinates, loaded under the view matrix only (the
+//!   camera's), so `ofTranslate`/`ofRotate` do not move lights;
+//! - a directional light's `GL_POSITION` is its node's look direction with w = 0, and a
+//!   spotlight's `GL_SPOT_DIRECTION` is its look direction;
+//! - neither the local viewer nor two-sided lighting is set; `ofSetGlobalAmbientColor`
+//!   sets `GL_LIGHT_MODEL_AMBIENT` (0.2 by default);
+//! - `ofSetColor` under lighting with no material bound turns on `glColorMaterial`, so
+//!   the app binds an `ofMaterial` and never calls `ofSetColor` while lit.
+//!
+//! What oF cannot say (the local viewer, two-sided lighting and a back material, a
+//! separate specular colour, a light fixed to the eye, a normal mode other than
+//! `GL_NORMALIZE`) is the raw GL call, with a comment.
+
+use glam::{DMat4, DVec3, DVec4};
+
+use crate::document::Document;
+use crate::rules::{RuleSet, SpecularModel};
+use crate::scene::{LightPlacement, Material, NormalMode, Scene};
+use crate::t;
+use crate::view::ObjectKind;
+
+/// A C++ float literal: the value as a float holds it, in its shortest form.
+fn f(x: f64) -> String {
+    // -0 is written 0 (no light or camera depends on the sign of a zero).
+    let s = format!("{:?}", if x == 0.0 { 0.0 } else { x as f32 });
+    if s.contains(['.', 'e']) { format!("{s}f") } else { format!("{s}.0f") }
+}
+
+fn colour(c: DVec4) -> String {
+    format!("ofFloatColor({}, {}, {}, {})", f(c.x), f(c.y), f(c.z), f(c.w))
+}
+
+fn vec3(v: DVec3) -> String {
+    format!("glm::vec3({}, {}, {})", f(v.x), f(v.y), f(v.z))
+}
+
+/// The three files, named as an oF project's `src/` holds them.
+pub fn app(doc: &Document) -> Vec<super::File> {
+    vec![("ofApp.h".into(), header(doc)), ("ofApp.cpp".into(), source(doc)), ("main.cpp".into(), main_cpp())]
+}
+
+fn header(doc: &Document) -> String {
+    let lights = oflights(&doc.shaded_scene());
+    format!(
+        "// {}\n#pragma once\n\n#include \"ofMain.h\"\n\nclass ofApp : public ofBaseApp {{\npublic:\n    void setup() override;\n    void draw() override;\n\nprivate:\n    ofCamera cam;\n    ofMaterial material;\n{}}};\n",
+        t!("of-header-comment", scene = doc.name.clone()),
+        (0..lights.len()).map(|i| format!("    ofLight light{i};\n")).collect::<String>()
+    )
+}
+
+fn main_cpp() -> String {
+    format!(
+        "// {}\n#include \"ofMain.h\"\n#include \"ofApp.h\"\n\nint main() {{\n    ofSetupOpenGL(512, 512, OF_WINDOW);\n    ofRunApp(new ofApp());\n}}\n",
+        t!("of-main-comment")
+    )
+}
+
+/// The scene's lights that oF places (every light but those fixed to the eye), with
+/// their indices in the scene.
+fn oflights(scene: &Scene) -> Vec<usize> {
+    (0..scene.lights.len()).filter(|&i| scene.lights[i].placement != LightPlacement::Eye).collect()
+}
+
+/// A light's position and spot direction in world coordinates (what oF's lights take).
+fn in_world(scene: &Scene, i: usize) -> (DVec4, DVec3) {
+    let l = &scene.lights[i];
+    let world_from_light = scene.eye_from_world.inverse() * scene.eye_from_light(l);
+    (world_from_light * l.position, world_from_light.transform_vector3(l.spot_direction))
+}
+
+/// An up vector not parallel to `dir`, for `lookAt`.
+fn up_for(dir: DVec3) -> DVec3 {
+    if dir.normalize_or_zero().cross(DVec3::Y).length() < 1e-3 { DVec3::X } else { DVec3::Y }
+}
+
+fn source(doc: &Document) -> String {
+    let scene = doc.shaded_scene();
+    let view = &doc.view;
+    let mut s = format!("// {}\n#include \"ofApp.h\"\n\nvoid ofApp::setup() {{\n", t!("of-source-comment"));
+    // The camera: phonglab's view (gluPerspective(40, 1, 0.1, 100) and the orbit camera).
+    let world_from_eye = scene.eye_from_world.inverse();
+    let (_, rotation, position) = world_from_eye.to_scale_rotation_translation();
+    s.push_str(&format!("    // {}\n", t!("of-camera-comment")));
+    s.push_str(
+        "    cam.setFov(40);\n    cam.setNearClip(0.1f);\n    cam.setFarClip(100);\n    cam.setAspectRatio(1);\n",
+    );
+    s.push_str(&format!("    cam.setGlobalPosition({});\n", vec3(position)));
+    s.push_str(&format!(
+        "    cam.setGlobalOrientation(glm::quat({}, {}, {}, {}));\n\n",
+        f(rotation.w),
+        f(rotation.x),
+        f(rotation.y),
+        f(rotation.z)
+    ));
+    // The lights oF places.
+    for (k, &i) in oflights(&scene).iter().enumerate() {
+        let l = &scene.lights[i];
+        let (pos, spot_dir) = in_world(&scene, i);
+        let name = format!("light{k}");
+        s.push_str(&format!("    // {}\n", t!("of-light-comment", index = i)));
+        if pos.w == 0.0 {
+            let dir = pos.truncate();
+            s.push_str(&format!("    {name}.setDirectional();\n"));
+            s.push_str(&format!("    {name}.setPosition(0, 0, 0);\n"));
+            s.push_str(&format!(
+                "    {name}.lookAt({}, {});  // {}\n",
+                vec3(dir),
+                vec3(up_for(dir)),
+                t!("of-directional-comment")
+            ));
+        } else {
+            let p = pos.truncate() / pos.w;
+            if l.is_spot() {
+                s.push_str(&format!("    {name}.setSpotlight({}, {});\n", f(l.spot_cutoff), f(l.spot_exponent)));
+            } else {
+                s.push_str(&format!("    {name}.setPointLight();\n"));
+            }
+            s.push_str(&format!("    {name}.setPosition({}, {}, {});\n", f(p.x), f(p.y), f(p.z)));
+            if l.is_spot() {
+                s.push_str(&format!(
+                    "    {name}.lookAt({}, {});  // {}\n",
+                    vec3(p + spot_dir),
+                    vec3(up_for(spot_dir)),
+                    t!("of-spot-comment")
+                ));
+            }
+        }
+        s.push_str(&format!("    {name}.setAmbientColor({});\n", colour(l.ambient)));
+        s.push_str(&format!("    {name}.setDiffuseColor({});\n", colour(l.diffuse)));
+        s.push_str(&format!("    {name}.setSpecularColor({});\n", colour(l.specular)));
+        s.push_str(&format!(
+            "    {name}.setAttenuation({}, {}, {});\n\n",
+            f(l.attenuation[0]),
+            f(l.attenuation[1]),
+            f(l.attenuation[2])
+        ));
+    }
+    s.push_str(&format!("    // {}\n", t!("of-material-comment")));
+    s.push_str(&material_calls("material", &scene.material, scene.rules.emission()));
+    s.push_str("}\n\nvoid ofApp::draw() {\n");
+    let bg = view.background.map(|c| f64::from(c) * 255.0);
+    s.push_str(&format!("    ofBackground({}, {}, {});\n    ofEnableDepthTest();\n", f(bg[0]), f(bg[1]), f(bg[2])));
+    s.push_str("    cam.begin();\n    ofEnableLighting();\n");
+    s.push_str(&lighting_model(&scene));
+    for (k, _) in oflights(&scene).iter().enumerate() {
+        s.push_str(&format!("    light{k}.enable();\n"));
+    }
+    s.push_str(&eye_lights(&scene));
+    s.push_str("    material.begin();\n");
+    if let Some(back) = &scene.back_material {
+        s.push_str(&format!("    // {}\n", t!("of-back-material-comment")));
+        s.push_str(&raw_material("GL_BACK", back, scene.rules.emission()));
+    }
+    s.push_str(&object(doc));
+    s.push_str("    material.end();\n");
+    for (k, _) in oflights(&scene).iter().enumerate() {
+        s.push_str(&format!("    light{k}.disable();\n"));
+    }
+    s.push_str("    ofDisableLighting();\n    cam.end();\n}\n");
+    s
+}
+
+/// `ofMaterial` calls for `m` (emission 0 where the rules leave it out).
+fn material_calls(name: &str, m: &Material, emission: bool) -> String {
+    let e = if emission { m.emission } else { DVec4::new(0.0, 0.0, 0.0, 1.0) };
+    format!(
+        "    {name}.setAmbientColor({});\n    {name}.setDiffuseColor({});\n    {name}.setSpecularColor({});\n    {name}.setEmissiveColor({});\n    {name}.setShininess({});\n",
+        colour(m.ambient),
+        colour(m.diffuse),
+        colour(m.specular),
+        colour(e),
+        f(m.shininess)
+    )
+}
+
+/// Raw `glMaterial` calls for one face.
+fn raw_material(face: &str, m: &Material, emission: bool) -> String {
+    let arr = |c: DVec4| format!("{{{}, {}, {}, {}}}", f(c.x), f(c.y), f(c.z), f(c.w));
+    let e = if emission { m.emission } else { DVec4::new(0.0, 0.0, 0.0, 1.0) };
+    let mut s = String::from("    {\n");
+    for (param, c) in
+        [("GL_AMBIENT", m.ambient), ("GL_DIFFUSE", m.diffuse), ("GL_SPECULAR", m.specular), ("GL_EMISSION", e)]
+    {
+        let var = param.trim_start_matches("GL_").to_lowercase();
+        s.push_str(&format!(
+            "        const GLfloat {var}[4] = {};\n        glMaterialfv({face}, {param}, {var});\n",
+            arr(c)
+        ));
+    }
+    s.push_str(&format!("        glMaterialf({face}, GL_SHININESS, {});\n    }}\n", f(m.shininess)));
+    s
+}
+
+/// The light model: oF's global ambient, and the raw GL for what oF cannot say.
+fn lighting_model(scene: &Scene) -> String {
+    let lm = &scene.light_model;
+    let mut s = String::new();
+    if scene.rules.scene_ambient() {
+        s.push_str(&format!("    ofSetGlobalAmbientColor({});\n", colour(lm.ambient)));
+    } else {
+        s.push_str(&format!("    // {}\n", t!("of-no-scene-ambient")));
+        s.push_str("    ofSetGlobalAmbientColor(ofFloatColor(0, 0, 0, 1));\n");
+    }
+    if scene.rules.set != RuleSet::OpenGl {
+        s.push_str(&format!("    // {}\n", t!("of-rules-comment", rules = scene.rules.to_string())));
+    }
+    if scene.rules.specular == SpecularModel::Phong {
+        s.push_str(&format!("    // {}\n", t!("of-phong-specular-comment")));
+    }
+    if lm.local_viewer {
+        s.push_str(&format!(
+            "    // {}\n    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_TRUE);\n",
+            t!("of-local-viewer-comment")
+        ));
+    }
+    if lm.two_sided {
+        s.push_str(&format!(
+            "    // {}\n    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);\n",
+            t!("of-two-sided-comment")
+        ));
+    }
+    if lm.separate_specular {
+        s.push_str(&format!(
+            "    // {}\n    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);\n",
+            t!("of-separate-specular-comment")
+        ));
+    }
+    match scene.normal_mode {
+        NormalMode::Normalize => {}
+        NormalMode::AsIs => {
+            s.push_str(&format!("    // {}\n    glDisable(GL_NORMALIZE);\n", t!("of-normal-as-is-comment")))
+        }
+        NormalMode::Rescale => s.push_str(&format!(
+            "    // {}\n    glDisable(GL_NORMALIZE);\n    glEnable(GL_RESCALE_NORMAL);\n",
+            t!("of-normal-rescale-comment")
+        )),
+    }
+    s
+}
+
+/// Lights fixed to the eye: raw GL, placed under the identity modelview, on the GL light
+/// indices after oF's.
+fn eye_lights(scene: &Scene) -> String {
+    let placed = oflights(scene).len();
+    let mut s = String::new();
+    let arr = |c: DVec4| format!("{{{}, {}, {}, {}}}", f(c.x), f(c.y), f(c.z), f(c.w));
+    for (k, l) in scene.lights.iter().filter(|l| l.placement == LightPlacement::Eye).enumerate() {
+        let gl = format!("GL_LIGHT{}", placed + k);
+        s.push_str(&format!("    // {}\n    {{\n", t!("of-eye-light-comment")));
+        s.push_str("        glMatrixMode(GL_MODELVIEW);\n        glPushMatrix();\n        glLoadIdentity();\n");
+        s.push_str(&format!(
+            "        const GLfloat position[4] = {};\n        glLightfv({gl}, GL_POSITION, position);\n",
+            arr(l.position)
+        ));
+        let d = l.spot_direction;
+        s.push_str(&format!(
+            "        const GLfloat spot_direction[3] = {{{}, {}, {}}};\n        glLightfv({gl}, GL_SPOT_DIRECTION, spot_direction);\n",
+            f(d.x),
+            f(d.y),
+            f(d.z)
+        ));
+        s.push_str("        glPopMatrix();\n");
+        for (param, c) in [("GL_AMBIENT", l.ambient), ("GL_DIFFUSE", l.diffuse), ("GL_SPECULAR", l.specular)] {
+            let var = param.trim_start_matches("GL_").to_lowercase();
+            s.push_str(&format!(
+                "        const GLfloat {var}[4] = {};\n        glLightfv({gl}, {param}, {var});\n",
+                arr(c)
+            ));
+        }
+        s.push_str(&format!(
+            "        glLightf({gl}, GL_SPOT_CUTOFF, {});\n        glLightf({gl}, GL_SPOT_EXPONENT, {});\n",
+            f(l.spot_cutoff),
+            f(l.spot_exponent)
+        ));
+        for (k2, param) in
+            ["GL_CONSTANT_ATTENUATION", "GL_LINEAR_ATTENUATION", "GL_QUADRATIC_ATTENUATION"].iter().enumerate()
+        {
+            s.push_str(&format!("        glLightf({gl}, {param}, {});\n", f(l.attenuation[k2])));
+        }
+        s.push_str(&format!("        glEnable({gl});\n    }}\n"));
+    }
+    s
+}
+
+/// The object, placed and turned as the view draws it.
+fn object(doc: &Document) -> String {
+    let view = &doc.view;
+    let mut s = String::new();
+    let spin = view.spin();
+    let placed = spin != DMat4::IDENTITY;
+    if placed {
+        let c = spin.to_cols_array();
+        s.push_str(&format!(
+            "    ofPushMatrix();\n    ofMultMatrix(glm::mat4({}));  // {}\n",
+            c.iter().map(|x| f(*x)).collect::<Vec<_>>().join(", "),
+            t!("of-spin-comment")
+        ));
+    }
+    match view.object {
+        ObjectKind::Sphere => s.push_str(&format!(
+            "    ofSetSphereResolution({});\n    ofDrawSphere(0.5f);\n",
+            view.sphere_slices.max(view.sphere_stacks)
+        )),
+        ObjectKind::Cylinder => s.push_str(&format!(
+            "    // {}\n    ofSetCylinderResolution({}, {}, {});\n    ofPushMatrix();\n    ofRotateXDeg(90);\n    ofDrawCylinder(0.3f, 0.5f);\n    ofPopMatrix();\n",
+            t!("of-cylinder-comment"),
+            view.cylinder_slices,
+            view.cylinder_stacks,
+            if view.cylinder_caps { 2 } else { 0 }
+        )),
+        ObjectKind::Teapot | ObjectKind::Obj => s.push_str(&format!(
+            "    // {}\n    ofSetSphereResolution({});\n    ofDrawSphere(0.5f);\n",
+            t!("of-no-teapot-comment"),
+            view.sphere_slices.max(view.sphere_stacks)
+        )),
+    }
+    if placed {
+        s.push_str("    ofPopMatrix();\n");
+    }
+    s
+}
