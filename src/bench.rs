@@ -132,7 +132,7 @@ fn render_figures_of(
             let mut r = Renderer::new();
             let frame = |i: u32, r: &mut Renderer| -> Result<[f64; 4]> {
                 let scene = bench_scene(i);
-                let job = phonglab_core::library::bench_job(&scene, &mesh, shading);
+                let job = phonglab_core::shaded::bench_job(&scene, &mesh, shading);
                 let (_, stats) = r.render(&job, size, size)?;
                 Ok(stats.stage_ms)
             };
@@ -150,7 +150,7 @@ fn render_figures_of(
             let ms = t.elapsed().as_secs_f64() * 1e3 / frames.max(1) as f64;
             // Measured after the timed frames: counting pixels is not part of a frame.
             let scene = bench_scene(frames);
-            let job = phonglab_core::library::bench_job(&scene, &mesh, shading);
+            let job = phonglab_core::shaded::bench_job(&scene, &mesh, shading);
             let coverage = r.render(&job, size, size)?.0.coverage();
             out.push(RenderFigure {
                 object: name,

@@ -465,7 +465,7 @@ fn explain_scene(a: &ExplainArgs) -> Result<(Scene, String)> {
         let name = if doc.name.is_empty() {
             p.display().to_string()
         } else {
-            phonglab_core::locale::localised_name(&doc.name)
+            phonglab_core::library::localised_name(&doc.name)
         };
         return Ok((doc.scene, name));
     }
@@ -570,7 +570,7 @@ fn render(a: &RenderArgs) -> Result<()> {
             }
         };
         bench_scene = presets::bench_scene(frame);
-        let mut job = library::bench_job(&bench_scene, &bench_mesh, shading.unwrap_or(Shading::Gouraud));
+        let mut job = phonglab_core::shaded::bench_job(&bench_scene, &bench_mesh, shading.unwrap_or(Shading::Gouraud));
         job.cull_back = a.cull;
         job.options = EvalOptions::with_pow(a.pow.into());
         job

@@ -273,7 +273,7 @@ impl BenchPicture {
         let scene = phonglab_core::presets::bench_scene(0);
         let [(_, sphere), (_, teapot)] = crate::bench::bench_meshes();
         let mesh = if self.object == "teapot" { teapot } else { sphere };
-        let job = phonglab_core::library::bench_job(&scene, &mesh, self.shading);
+        let job = phonglab_core::shaded::bench_job(&scene, &mesh, self.shading);
         if self.gpu && gpu {
             if let Some(e) = self.error.lock().unwrap_or_else(|e| e.into_inner()).clone() {
                 return Err(e);

@@ -14,7 +14,7 @@ fn compare(mesh: &Mesh, shading: Shading, name: &str) -> Difference {
     let path = format!("{}/tests/data/mesa_bench/{name}.png", env!("CARGO_MANIFEST_DIR"));
     let (w, h, theirs) = phonglab::image_io::read_png(std::path::Path::new(&path)).unwrap();
     let scene = bench_scene(199);
-    let job = phonglab_core::library::bench_job(&scene, mesh, shading);
+    let job = phonglab_core::shaded::bench_job(&scene, mesh, shading);
     let mut r = Renderer::new();
     let (img, _) = r.render(&job, w, h).unwrap();
     // Covered: differs from the background (Mesa's corner pixel), as the harness counts it.

@@ -9,7 +9,7 @@ use phonglab::image_io::Difference;
 use phonglab_core::mesh::sphere;
 use phonglab_core::render::{Job, Renderer};
 use phonglab_core::shader::ShaderShading;
-use phonglab_core::{Shading, library, presets};
+use phonglab_core::{Shading, presets};
 
 const SIZE: u32 = 256;
 
@@ -27,7 +27,7 @@ fn bench_images(shading: ShaderShading) -> (Vec<u8>, Vec<u8>, [u8; 3]) {
     let scene = presets::bench_scene(10);
     let mesh = sphere::glu_sphere(1.0, 50, 50);
     let cpu_shading = if shading == ShaderShading::Phong { Shading::Phong } else { Shading::Gouraud };
-    let job = library::bench_job(&scene, &mesh, cpu_shading);
+    let job = phonglab_core::shaded::bench_job(&scene, &mesh, cpu_shading);
     gpu_image(&job)
 }
 

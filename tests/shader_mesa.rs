@@ -75,7 +75,7 @@ fn samples() -> Vec<Sample> {
     let mut out = Vec::new();
     let scene = presets::bench_scene(10);
     let mesh = sphere::glu_sphere(1.0, 50, 50);
-    let job = library::bench_job(&scene, &mesh, Shading::Gouraud);
+    let job = phonglab_core::shaded::bench_job(&scene, &mesh, Shading::Gouraud);
     out.push(Sample {
         name: "benchmark".into(),
         scene: job.scene.clone(),

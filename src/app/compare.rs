@@ -87,7 +87,7 @@ pub fn title(diffs: &[(String, String, String)]) -> String {
 fn describe(doc: &Document, precision: Precision, pow: PowFn) -> String {
     format!(
         "{}, {} {}, {}, {}",
-        phonglab_core::locale::localised_name(&doc.name),
+        phonglab_core::library::localised_name(&doc.name),
         doc.view.object.label(),
         doc.view.shading.label(),
         precision.label(),

@@ -355,7 +355,7 @@ pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
                     let about = format!(
                         "{}, {}",
                         state.doc.view.object.label(),
-                        phonglab_core::locale::localised_name(&state.doc.name)
+                        phonglab_core::library::localised_name(&state.doc.name)
                     );
                     state.cost.start(state.doc.shaded_scene(), state.doc.view.clone(), about);
                 }

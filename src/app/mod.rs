@@ -171,7 +171,7 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         if ui.button(t!("help-button")).clicked() {
             state.ui.show_help = !state.ui.show_help;
         }
-        ui.label(egui::RichText::new(phonglab_core::locale::localised_name(&state.doc.name)).weak());
+        ui.label(egui::RichText::new(phonglab_core::library::localised_name(&state.doc.name)).weak());
     });
 }
 

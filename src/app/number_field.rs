@@ -6,14 +6,14 @@
 //! - What is typed is read only when the field is left: Enter, Tab or a click elsewhere.
 //!   Never per keystroke, so `1e400` is read as `1e400`, not as 1, then 1e4...
 //! - It reads a decimal point or a decimal comma (`0.5`, `0,5`, `1,5e-3`;
-//!   [`phonglab_core::formats::typed_number::parse_number`]).
+//!   [`phonglab_core::typed_number::parse_number`]).
 //! - A refused text (not a number, beyond single precision, a whole number expected, or a
 //!   value the scene's validator refuses) stays in the field, in red, with the reason beside
 //!   it, until it is corrected or Esc puts the value back.
 
 use egui::{Color32, Id, Key, Response, Sense, TextEdit, Ui, WidgetInfo};
 use phonglab_core::explain::fmt_sig;
-use phonglab_core::formats::typed_number::parse_number;
+use phonglab_core::typed_number::parse_number;
 
 use super::palette;
 
@@ -118,9 +118,9 @@ pub enum Typed {
 
 /// Reads what was typed in one of a row of `n` fields: one number, or `n` of them
 /// separated by semicolons, spaces or commas
-/// ([`phonglab_core::formats::typed_number::parse_numbers`]).
+/// ([`phonglab_core::typed_number::parse_numbers`]).
 pub fn read_row(text: &str, accepts: Accepts, n: usize) -> Result<Typed, String> {
-    use phonglab_core::formats::typed_number::parse_numbers;
+    use phonglab_core::typed_number::parse_numbers;
     let parts = parse_numbers(text).map_err(|e| e.to_string())?;
     match parts.len() {
         0 | 1 => read(text, accepts).map(Typed::One),

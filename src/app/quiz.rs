@@ -241,7 +241,7 @@ pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<
     let Some(doc) = quiz.doc.clone() else { return shown };
     ui.label(t!(
         "quiz-instructions",
-        scene = locale::localised_name(&doc.name),
+        scene = phonglab_core::library::localised_name(&doc.name),
         percent = locale::num(100.0 * TOLERANCE.0, 2),
         absolute = locale::num(TOLERANCE.1, 2)
     ));

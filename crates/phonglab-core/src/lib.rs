@@ -12,27 +12,32 @@
 //! assert!((lit.front.primary[0] - 0.05958709).abs() < 1e-7);
 //! ```
 //!
-//! The modules, by group, each group a directory (`src/model/`, `src/equation/`, ...);
-//! every module is also re-exported at the crate's root, so `phonglab_core::scene` and
+//! The modules, by group, each group a directory (`src/model/`, `src/equation/`, ...).
+//! The groups form one order, from the bottom up: each uses only the groups below it,
+//! and inside the crate modules name each other by group (`crate::equation::lighting`);
+//! `tests/layers.rs` fails on a path against the order. For users every module is also
+//! re-exported at the crate's root, so `phonglab_core::scene` and
 //! `phonglab_core::model::scene` name the same module (ARCHITECTURE.md says how data flows
 //! between them):
 //!
-//! | group | modules |
-//! |---|---|
-//! | model: what is lit | [`scene`], [`rules`], [`materials`], [`camera`], [`transform`], [`view`], [`presets`], [`library`] |
-//! | equation: the lighting equation and its worked calculation | [`lighting`], [`breakdown`], [`explain`], [`validate`], [`error`] |
-//! | numerics: where floating point needs care | [`robust`], [`real`], [`exact_pow`], [`pow`] |
-//! | specialise: only the stages a scene needs | [`plan`], [`specialised`] |
-//! | raster: meshes and the CPU renderer | [`mesh`], [`render`], [`shaded`] |
-//! | formats: text in and out | [`document`], [`glref`] |
-//! | teach: for the classroom | [`exercise`], [`quiz`], [`shader`] |
-//! | study: what accuracy costs | [`cost`] |
-//! | locale: the user's language and decimal mark | [`locale`] |
+//! | rank | group | modules |
+//! |---|---|---|
+//! | 9 | export: the student's own code, and back | `export::notebook`, `export::pyopengl`, `export::openframeworks`, `export::read_python` |
+//! | 8 | teach: for the classroom; study: what accuracy costs | [`exercise`], [`quiz`], [`shader`]; [`cost`] |
+//! | 7 | raster: the CPU renderer | [`render`], [`shaded`] |
+//! | 6 | specialise: only the stages a scene needs | [`plan`], [`specialised`] |
+//! | 5 | formats: text in and out, ready-made documents | [`document`], [`library`], [`glref`] |
+//! | 4 | equation: the lighting equation and its worked calculation | [`lighting`], [`breakdown`], [`explain`], [`validate`] |
+//! | 3 | model: what is lit | [`scene`], [`rules`], [`materials`], [`camera`], [`transform`], [`view`], [`presets`], [`error`] |
+//! | 2 | mesh: the objects | [`mesh`] (`sphere`, `cylinder`, `teapot`, `obj`) |
+//! | 1 | numerics: where floating point needs care | [`robust`], [`real`], [`exact_pow`], [`pow`], [`strict`], [`typed_number`], `numerics::cpu` |
+//! | 0 | locale: the user's language and decimal mark | [`locale`] |
 
 pub mod equation;
 pub mod export;
 pub mod formats;
 pub mod locale;
+pub mod mesh;
 pub mod model;
 pub mod numerics;
 pub mod raster;
@@ -41,11 +46,11 @@ pub mod study;
 pub mod teach;
 
 // Each module also at the crate's root, so paths name the module, not its group.
-pub use equation::{breakdown, error, explain, lighting, validate};
-pub use formats::{document, glref};
-pub use model::{camera, library, materials, presets, rules, scene, transform, view};
-pub use numerics::{exact_pow, pow, real, robust};
-pub use raster::{mesh, render, shaded};
+pub use equation::{breakdown, explain, lighting, validate};
+pub use formats::{document, glref, library};
+pub use model::{camera, error, materials, presets, rules, scene, transform, view};
+pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
+pub use raster::{render, shaded};
 pub use specialise::{plan, specialised};
 pub use study::cost;
 pub use teach::{exercise, quiz, shader};

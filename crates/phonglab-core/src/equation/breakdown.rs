@@ -9,8 +9,8 @@ use std::fmt;
 
 use glam::{DVec3, DVec4};
 
-use crate::real::Real;
-use crate::scene::MAX_LIGHTS;
+use crate::model::scene::MAX_LIGHTS;
+use crate::numerics::real::Real;
 
 /// A value the engine could not compute directly and replaced by the limit a person
 /// expects (docs/lighting.md, "Numerics policy"), or a fact worth knowing about how it computed.

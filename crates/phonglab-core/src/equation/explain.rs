@@ -10,10 +10,10 @@ use std::fmt::Write as _;
 
 use crate::t;
 
-use crate::breakdown::{Limit, SideColor, SideTerms, VertexLighting};
-use crate::real::{Real, Vec3Ops};
-use crate::rules::SpecularModel;
-use crate::scene::Scene;
+use crate::equation::breakdown::{Limit, SideColor, SideTerms, VertexLighting};
+use crate::model::rules::SpecularModel;
+use crate::model::scene::Scene;
+use crate::numerics::real::{Real, Vec3Ops};
 
 /// Which face side to explain.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
@@ -122,32 +122,7 @@ fn dir4<S: Real>(v: S::V3) -> Vec<f64> {
     vec![v.x().to_f64(), v.y().to_f64(), v.z().to_f64(), 0.0]
 }
 
-/// Formats `x` with `sig` significant digits, trailing zeros trimmed (`0.09942795`,
-/// `4.5151924e+28`, `0`); non-finite values as `NaN`, `Infinity`, `-Infinity`.
-pub fn fmt_sig(x: f64, sig: usize) -> String {
-    if x.is_nan() {
-        return "NaN".into();
-    }
-    if x.is_infinite() {
-        return if x > 0.0 { "Infinity".into() } else { "-Infinity".into() };
-    }
-    if x == 0.0 {
-        return "0".into();
-    }
-    let sig = sig.max(1);
-    let sci = format!("{:.*e}", sig - 1, x);
-    let (mant, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
-    let exp: i32 = exp.parse().unwrap_or(0);
-    let trim = |s: &str| -> String {
-        if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s.to_string() }
-    };
-    if exp < -5 || exp >= sig as i32 {
-        format!("{}e{}{}", trim(mant), if exp < 0 { "-" } else { "+" }, exp.abs())
-    } else {
-        let decimals = (sig as i32 - 1 - exp).max(0) as usize;
-        trim(&format!("{:.*}", decimals, x))
-    }
-}
+pub use crate::locale::fmt_sig;
 
 /// Formats a value worksheet-style: a scalar alone, a vector as `[a b c d]`.
 pub fn fmt_value(v: &[f64], sig: usize) -> String {
@@ -162,7 +137,7 @@ pub fn fmt_value(v: &[f64], sig: usize) -> String {
 /// What a modelview that is not a rotation does to the worksheet's normal (which it
 /// transforms by M itself, where OpenGL uses (M^-1)^T): the rows' angles and lengths, and
 /// how far apart the two normals point.
-pub fn modelview_note(check: &crate::transform::RotationCheck) -> String {
+pub fn modelview_note(check: &crate::model::transform::RotationCheck) -> String {
     use crate::locale::num;
     let deg = |a: f64| format!("{}°", num(a, 3));
     let gap = match check.normal_gap {
@@ -229,14 +204,14 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
 
     let n = lit.normal_in_eye;
     let n_shown = if back { -n } else { n };
-    let by_m = rules.normal_transform() == crate::NormalTransform::Modelview;
+    let by_m = rules.normal_transform() == crate::model::rules::NormalTransform::Modelview;
     let nformula = match (scene.normal_mode, by_m) {
-        (crate::NormalMode::AsIs, false) => t!("formula-normal-gl"),
-        (crate::NormalMode::Normalize, false) => t!("formula-normal-gl-normalize"),
-        (crate::NormalMode::Rescale, false) => t!("formula-normal-gl-rescale"),
-        (crate::NormalMode::AsIs, true) => t!("formula-normal-ws"),
-        (crate::NormalMode::Normalize, true) => t!("formula-normal-ws-normalize"),
-        (crate::NormalMode::Rescale, true) => t!("formula-normal-ws-rescale"),
+        (crate::model::scene::NormalMode::AsIs, false) => t!("formula-normal-gl"),
+        (crate::model::scene::NormalMode::Normalize, false) => t!("formula-normal-gl-normalize"),
+        (crate::model::scene::NormalMode::Rescale, false) => t!("formula-normal-gl-rescale"),
+        (crate::model::scene::NormalMode::AsIs, true) => t!("formula-normal-ws"),
+        (crate::model::scene::NormalMode::Normalize, true) => t!("formula-normal-ws-normalize"),
+        (crate::model::scene::NormalMode::Rescale, true) => t!("formula-normal-ws-rescale"),
     };
     let ntitle = if back { t!("step-normal-back") } else { t!("step-normal") };
     b.push(StepKind::Normal, None, &ntitle, "vertexNormal".into(), &nformula, Some(dir4::<S>(n_shown)));
@@ -245,7 +220,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         // Where the worksheet's M n and OpenGL's (M^-1)^T n part: say how far M is from a
         // rotation, and what that does to N.
         let m = scene.eye_from_object();
-        let check = crate::transform::RotationCheck::of(&m, scene.vertex.normal);
+        let check = crate::model::transform::RotationCheck::of(&m, scene.vertex.normal);
         if check.departure() > 1e-12 {
             b.note(modelview_note(&check));
         }
@@ -261,7 +236,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         Some(vec![p.x, p.y, p.z, 1.0]),
     );
     vertex_limits(&mut b, StepKind::Position);
-    if scene.eye_from_object() == crate::transform::phong_demo_eye_from_object() {
+    if scene.eye_from_object() == crate::model::transform::phong_demo_eye_from_object() {
         b.note(t!("note-demo-space"));
     }
 
@@ -381,9 +356,9 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
             }
         }
         let gate = match rules.specular_gate() {
-            crate::SpecularGate::LitSide => t!("gate-lit-side"),
-            crate::SpecularGate::PositiveCosine => t!("gate-positive"),
-            crate::SpecularGate::None => t!("gate-none"),
+            crate::model::rules::SpecularGate::LitSide => t!("gate-lit-side"),
+            crate::model::rules::SpecularGate::PositiveCosine => t!("gate-positive"),
+            crate::model::rules::SpecularGate::None => t!("gate-none"),
         };
         b.push(
             StepKind::Specular,

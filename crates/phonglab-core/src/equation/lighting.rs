@@ -20,7 +20,7 @@
 //! ```
 //!
 //! with the specular term moved to `c_sec` under `SEPARATE_SPECULAR_COLOR`, and alpha
-//! `= alpha(d_cm)`. The worksheet's and the Phong demo's rules (see [`crate::rules`]) drop
+//! `= alpha(d_cm)`. The worksheet's and the Phong demo's rules (see [`crate::model::rules`]) drop
 //! terms from this same sum; they never compute a term differently.
 //!
 //! Numerics (docs/lighting.md): positions are transformed, divided by w and differenced in f64
@@ -31,14 +31,14 @@
 
 use glam::{DMat4, DVec3, DVec4, Vec4Swizzles as _};
 
-use crate::breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerms, VertexLighting};
-use crate::error::SceneError;
-use crate::pow::PowFn;
-use crate::real::{Real, Vec3Ops};
-use crate::robust::{cos_deg, mul0, mul0_v, transform_point, transform_vector3, try_normalize};
-use crate::rules::{Rules, SpecularGate, SpecularModel};
-use crate::scene::{Light, Material, NormalMode, Rgba, Scene, Vertex};
-use crate::transform::NormalMatrix;
+use crate::equation::breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerms, VertexLighting};
+use crate::model::error::SceneError;
+use crate::model::rules::{Rules, SpecularGate, SpecularModel};
+use crate::model::scene::{Light, Material, NormalMode, Rgba, Scene, Vertex};
+use crate::model::transform::NormalMatrix;
+use crate::numerics::pow::PowFn;
+use crate::numerics::real::{Real, Vec3Ops};
+use crate::numerics::robust::{cos_deg, mul0, mul0_v, transform_point, transform_vector3, try_normalize};
 
 /// A material side rounded to the engine's precision.
 #[derive(Clone, Copy, Debug)]
@@ -422,7 +422,7 @@ struct Accum<S: Real> {
 }
 
 /// The equation's per-vertex arithmetic, one function per step. The general engine and
-/// the specialised kernels ([`crate::specialised`]) both call these, so the two compute
+/// the specialised kernels (the specialise group's `specialised`, a layer above) both call these, so the two compute
 /// the same operations in the same order and agree bit for bit.
 pub(crate) mod terms {
     use super::*;
@@ -491,11 +491,11 @@ pub(crate) mod terms {
     }
 
     /// L and d of a positional light at `lp` seen from the eye-space point `pos`:
-    /// `VP = P_l - P`, normalised and measured by one [`crate::robust::normalize3`] in f64.
+    /// `VP = P_l - P`, normalised and measured by one [`crate::numerics::robust::normalize3`] in f64.
     #[inline(always)]
     pub fn light_direction(lp: DVec3, pos: DVec3) -> (Option<DVec3>, f64) {
         let vp = lp - pos;
-        let (x, y, z, d, ok) = crate::robust::normalize3::<f64>(vp.x, vp.y, vp.z);
+        let (x, y, z, d, ok) = crate::numerics::robust::normalize3::<f64>(vp.x, vp.y, vp.z);
         (ok.then_some(DVec3::new(x, y, z)), d)
     }
 
@@ -676,5 +676,12 @@ pub(crate) mod terms {
         let secondary =
             if separate { [fix(secondary.x()), fix(secondary.y()), fix(secondary.z()), S::ONE] } else { [S::ZERO; 4] };
         (primary, secondary, nan)
+    }
+}
+
+impl crate::model::view::View {
+    /// The numerical options of the shaded view with power function `pow`.
+    pub fn eval_options(&self, pow: crate::numerics::pow::PowFn) -> EvalOptions {
+        EvalOptions { pow, renormalize: if self.phong_renormalize { Renormalize::Exact } else { Renormalize::Skip } }
     }
 }

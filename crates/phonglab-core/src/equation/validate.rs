@@ -2,8 +2,8 @@
 
 use glam::{DMat4, DVec3, DVec4};
 
-use crate::error::SceneError;
-use crate::scene::{Light, LightPlacement, MAX_LIGHTS, Material, Scene};
+use crate::model::error::SceneError;
+use crate::model::scene::{Light, LightPlacement, MAX_LIGHTS, Material, Scene};
 
 /// Allowed range of shininess and spot exponent (`GL_MAX_SHININESS`, `GL_MAX_SPOT_EXPONENT`).
 pub const MAX_EXPONENT: f64 = 128.0;
@@ -107,7 +107,7 @@ impl Scene {
 }
 
 /// What [`is_float`] allows, in words.
-pub const FLOAT_RANGE: &str = "a float: 0, or 1.2e-38 <= |x| <= 3.4e38";
+pub use crate::model::error::FLOAT_RANGE;
 
 /// Is `x` a value OpenGL's float state holds as it is: 0, or a normal f32 magnitude?
 /// (1e300 would be infinity to it, 1e-300 zero; either can turn a finite scene into an

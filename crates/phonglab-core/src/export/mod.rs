@@ -52,12 +52,12 @@ pub fn files(doc: &Document, target: Target) -> Result<Vec<File>, String> {
         Target::PyOpenGl => vec![("phong_scene.py".into(), pyopengl::program(doc)?)],
         Target::OpenFrameworks => openframeworks::app(doc),
         Target::Glsl => {
-            let lang = crate::shader::Lang::Glsl;
+            let lang = crate::teach::shader::Lang::Glsl;
             let shading = match doc.view.shading {
-                crate::view::Shading::Phong => crate::shader::ShaderShading::Phong,
-                _ => crate::shader::ShaderShading::Gouraud,
+                crate::model::view::Shading::Phong => crate::teach::shader::ShaderShading::Phong,
+                _ => crate::teach::shader::ShaderShading::Gouraud,
             };
-            let shader = crate::shader::for_view(doc, lang, shading).map_err(|e| e.to_string())?;
+            let shader = crate::teach::shader::for_view(doc, lang, shading).map_err(|e| e.to_string())?;
             vec![("phong_scene.glsl".into(), shader.text(lang))]
         }
     })
@@ -78,4 +78,4 @@ pub fn copy_text(doc: &Document, target: Target) -> Result<String, String> {
     Ok(written.iter().map(|(name, text)| format!("// ---- {name} ----\n{text}\n")).collect())
 }
 
-use crate::document::Document;
+use crate::formats::document::Document;

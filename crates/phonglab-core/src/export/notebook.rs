@@ -13,9 +13,9 @@
 use glam::DVec4;
 
 use super::python::{array4, colour, matrix, num, shininess, string};
-use crate::document::Document;
-use crate::rules::{NormalTransform, RuleSet, SpecularGate, SpecularModel};
-use crate::scene::{Light, Material, NormalMode, Scene};
+use crate::formats::document::Document;
+use crate::model::rules::{NormalTransform, RuleSet, SpecularGate, SpecularModel};
+use crate::model::scene::{Light, Material, NormalMode, Scene};
 use crate::t;
 
 /// One cell of a notebook.
@@ -241,7 +241,7 @@ fn givens(scene: &Scene) -> String {
 
 /// One side's material: `matAmb`, `matDif`, `matSpec`, `ns` (and `matEmi`, `matAlpha`).
 fn material(m: &Material, suffix: &str, emission: bool) -> String {
-    let name = crate::materials::classic()
+    let name = crate::model::materials::classic()
         .iter()
         .find(|c| {
             c.material.ambient.truncate() == m.ambient.truncate()

@@ -19,11 +19,11 @@
 
 use glam::{DMat4, DVec3, DVec4};
 
-use crate::document::Document;
-use crate::rules::{RuleSet, SpecularModel};
-use crate::scene::{LightPlacement, Material, NormalMode, Scene};
+use crate::formats::document::Document;
+use crate::model::rules::{RuleSet, SpecularModel};
+use crate::model::scene::{LightPlacement, Material, NormalMode, Scene};
+use crate::model::view::ObjectKind;
 use crate::t;
-use crate::view::ObjectKind;
 
 /// A C++ float literal: the value as a float holds it, in its shortest form.
 fn f(x: f64) -> String {

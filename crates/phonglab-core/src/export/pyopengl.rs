@@ -18,12 +18,12 @@
 use glam::DMat4;
 
 use super::python::{num, string};
-use crate::document::Document;
-use crate::rules::RuleSet;
-use crate::scene::{Light, LightPlacement, Scene};
-use crate::shader::{Lang, ShaderShading};
+use crate::formats::document::Document;
+use crate::model::rules::RuleSet;
+use crate::model::scene::{Light, LightPlacement, Scene};
+use crate::model::view::{Framing, LightingSpace, ObjectKind, Shading, View};
 use crate::t;
-use crate::view::{Framing, LightingSpace, ObjectKind, Shading, View};
+use crate::teach::shader::{Lang, ShaderShading};
 
 /// The program's text for `doc`, or why it cannot be written (a Flat view: the generated
 /// shaders are Gouraud and Phong).
@@ -33,8 +33,8 @@ pub fn program(doc: &Document) -> Result<String, String> {
         Shading::Phong => ShaderShading::Phong,
         Shading::Flat => return Err(t!("export-flat-unsupported")),
     };
-    let setup = doc.shaded_setup(crate::PowFn::Exact);
-    let shader = crate::shader::for_view(doc, Lang::Glsl, shading).map_err(|e| e.to_string())?;
+    let setup = doc.shaded_setup(crate::numerics::pow::PowFn::Exact);
+    let shader = crate::teach::shader::for_view(doc, Lang::Glsl, shading).map_err(|e| e.to_string())?;
     let scene = &setup.scene;
     let mut s = String::new();
     s.push_str(&header(doc, shading));
@@ -77,7 +77,7 @@ fn header(doc: &Document, shading: ShaderShading) -> String {
 
 /// The generated shaders, adapted to a compatibility-profile context: the attributes are
 /// GL's own vertex and normal (what GLU's and GLUT's objects send).
-fn shaders(shader: &crate::shader::Shader) -> String {
+fn shaders(shader: &crate::teach::shader::Shader) -> String {
     let adapt = |text: &str| {
         text.replace("#version 330 core", "#version 330 compatibility")
             .replace("layout(location = 0) in vec3 a_position;", "#define a_position (gl_Vertex.xyz / gl_Vertex.w)")
@@ -95,7 +95,7 @@ fn shaders(shader: &crate::shader::Shader) -> String {
 
 /// A matrix as a NumPy array of its rows.
 fn np_matrix(m: &DMat4) -> String {
-    let rows = crate::transform::mat4_rows(m);
+    let rows = crate::model::transform::mat4_rows(m);
     format!(
         "np.array([\n{}])",
         rows.iter()
@@ -105,7 +105,7 @@ fn np_matrix(m: &DMat4) -> String {
 }
 
 /// The projection, the view and the object's placement, as phonglab's view draws.
-fn matrices(setup: &crate::ShadedSetup) -> String {
+fn matrices(setup: &crate::raster::shaded::ShadedSetup) -> String {
     let view = &setup.view;
     let mut s = String::new();
     let projection = match view.framing {
@@ -209,9 +209,9 @@ fn lighting_state(scene: &Scene) -> String {
         if lm.separate_specular { "GL_SEPARATE_SPECULAR_COLOR" } else { "GL_SINGLE_COLOR" }
     ));
     let normals = match scene.normal_mode {
-        crate::NormalMode::Normalize => "    glEnable(GL_NORMALIZE)\n",
-        crate::NormalMode::Rescale => "    glEnable(GL_RESCALE_NORMAL)\n",
-        crate::NormalMode::AsIs => "",
+        crate::model::scene::NormalMode::Normalize => "    glEnable(GL_NORMALIZE)\n",
+        crate::model::scene::NormalMode::Rescale => "    glEnable(GL_RESCALE_NORMAL)\n",
+        crate::model::scene::NormalMode::AsIs => "",
     };
     s.push_str(normals);
     s.push_str("    glEnable(GL_LIGHTING)\n\n\n");

@@ -35,7 +35,7 @@ pub fn colour(c: DVec4) -> String {
 
 /// A matrix as the worksheet writes its `mview`: rows as tuples.
 pub fn matrix(m: &DMat4) -> String {
-    let rows = crate::transform::mat4_rows(m);
+    let rows = crate::model::transform::mat4_rows(m);
     let row = |r: &[f64; 4]| format!("({}, {}, {}, {})", num(r[0]), num(r[1]), num(r[2]), num(r[3]));
     format!("np.array([{}])", rows.iter().map(row).collect::<Vec<_>>().join(", "))
 }

@@ -18,10 +18,10 @@ use std::collections::BTreeMap;
 
 use glam::{DMat4, DVec3, DVec4};
 
-use crate::camera::CameraSpec;
-use crate::document::Document;
-use crate::rules::{Rules, SpecularModel};
-use crate::scene::{Light, LightPlacement, Material, NormalMode, Scene, Vertex};
+use crate::formats::document::Document;
+use crate::model::camera::CameraSpec;
+use crate::model::rules::{Rules, SpecularModel};
+use crate::model::scene::{Light, LightPlacement, Material, NormalMode, Scene, Vertex};
 use crate::t;
 
 /// A value as the reader evaluates it.
@@ -472,7 +472,7 @@ impl Reader {
         match self.per_light(name, i, n) {
             None => {
                 if i == 0 {
-                    self.missing(name, crate::explain::fmt_value(&default.to_array(), 8));
+                    self.missing(name, crate::equation::explain::fmt_value(&default.to_array(), 8));
                 }
                 default
             }
@@ -511,7 +511,7 @@ impl Reader {
             _ => None,
         };
         match rows.filter(|r| r.iter().all(|row| row.len() == 4)) {
-            Some(r) => Some(crate::transform::mat4_from_rows([
+            Some(r) => Some(crate::model::transform::mat4_from_rows([
                 [r[0][0], r[0][1], r[0][2], r[0][3]],
                 [r[1][0], r[1][1], r[1][2], r[1][3]],
                 [r[2][0], r[2][1], r[2][2], r[2][3]],
@@ -550,7 +550,7 @@ impl Reader {
     }
 
     fn document(&mut self, name: &str, local_viewer: bool) -> Document {
-        let ws = crate::presets::worksheet(5);
+        let ws = crate::model::presets::worksheet(5);
         let mview = match self.given.get("mview").cloned() {
             Some((v, place)) => self.matrix(&v, "mview", &place).unwrap_or(ws.eye_from_world),
             None => {
@@ -613,7 +613,7 @@ impl Reader {
         let has_back =
             ["matAmbBack", "matDifBack", "matSpecBack", "nsBack"].iter().any(|k| self.given.contains_key(*k));
         let back_material = has_back.then(|| self.material("Back", &material));
-        let mut light_model = crate::scene::LightModel { local_viewer, ..Default::default() };
+        let mut light_model = crate::model::scene::LightModel { local_viewer, ..Default::default() };
         light_model.two_sided = self.flag("twoSided");
         light_model.separate_specular = self.flag("separateSpecular");
         if self.given.contains_key("sceneAmb") {
@@ -633,7 +633,7 @@ impl Reader {
             vertex: Vertex { position: pos, normal: DVec3::new(normal.x, normal.y, normal.z) },
         };
         let camera = (1..=5u8)
-            .find(|&k| crate::transform::worksheet_modelview(k as usize) == Some(mview))
+            .find(|&k| crate::model::transform::worksheet_modelview(k as usize) == Some(mview))
             .map_or(CameraSpec::Matrix(mview), CameraSpec::Worksheet);
         let mut doc = Document::from_scene(name, camera, scene);
         doc.view = Document::default().view;

@@ -34,14 +34,14 @@ use glam::{DMat4, DVec3, DVec4};
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::camera::CameraSpec;
-use crate::error::SceneError;
-use crate::formats::strict;
-use crate::materials;
-use crate::rules::{RuleSet, Rules, SpecularModel};
-use crate::scene::{Light, LightModel, LightPlacement, Material, NormalMode, Scene, Vertex};
-use crate::transform::{mat4_from_rows, mat4_rows};
-use crate::view::View;
+use crate::model::camera::CameraSpec;
+use crate::model::error::SceneError;
+use crate::model::materials;
+use crate::model::rules::{RuleSet, Rules, SpecularModel};
+use crate::model::scene::{Light, LightModel, LightPlacement, Material, NormalMode, Scene, Vertex};
+use crate::model::transform::{mat4_from_rows, mat4_rows};
+use crate::model::view::View;
+use crate::numerics::strict;
 
 /// A scene as the app holds it and files store it.
 #[derive(Clone, Debug, PartialEq)]
@@ -65,9 +65,9 @@ impl Default for Document {
         let mut d = Document::from_scene(
             &crate::t!("doc-worksheet", k = "5"),
             CameraSpec::Worksheet(5),
-            crate::presets::worksheet(5),
+            crate::model::presets::worksheet(5),
         );
-        d.view.object = crate::view::ObjectKind::Teapot;
+        d.view.object = crate::model::view::ObjectKind::Teapot;
         d
     }
 }
@@ -131,14 +131,14 @@ impl Document {
     ) -> Result<(Document, Option<String>), DocumentError> {
         let mut doc = Self::parse_unchecked(text, dir)?;
         let mut note = None;
-        if doc.view.object == crate::view::ObjectKind::Obj
+        if doc.view.object == crate::model::view::ObjectKind::Obj
             && let Err(e) = doc.view.obj_mesh()
         {
             let path = doc.view.obj.clone().unwrap_or_default();
             note = Some(format!(
                 "The mesh {path} is missing or cannot be read ({e}); the scene is kept and shown on the sphere. Open the mesh again to show it."
             ));
-            doc.view.object = crate::view::ObjectKind::Sphere;
+            doc.view.object = crate::model::view::ObjectKind::Sphere;
         }
         doc.validate()?;
         Ok((doc, note))

@@ -14,12 +14,12 @@ use glam::{DMat4, DVec3, DVec4};
 use serde_json::{Map, Value, json};
 use thiserror::Error;
 
-use crate::formats::strict;
-use crate::lighting::{Engine, EvalOptions};
-use crate::real::Real;
-use crate::rules::Rules;
-use crate::scene::{Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Scene, Vertex};
-use crate::transform::mat4_from_rows;
+use crate::equation::lighting::{Engine, EvalOptions};
+use crate::model::rules::Rules;
+use crate::model::scene::{Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Scene, Vertex};
+use crate::model::transform::mat4_from_rows;
+use crate::numerics::real::Real;
+use crate::numerics::strict;
 
 /// The file as a whole could not be read as cases.
 #[derive(Debug, Error)]
@@ -375,9 +375,13 @@ fn expected_colors(v: &Value) -> Result<CaseColors, CaseError> {
 
 /// Evaluates a scene's vertex in precision `S` into the four result colours.
 /// `Err` carries the message of a parameter OpenGL refuses.
-pub fn evaluate<S: Real>(scene: &Scene, options: EvalOptions, clamp: bool) -> Result<CaseColors, crate::SceneError> {
+pub fn evaluate<S: Real>(
+    scene: &Scene,
+    options: EvalOptions,
+    clamp: bool,
+) -> Result<CaseColors, crate::model::error::SceneError> {
     let lit = Engine::<S>::with_options(scene, options)?.light(&scene.vertex);
-    let pick = |c: &crate::SideColor<S>| {
+    let pick = |c: &crate::equation::breakdown::SideColor<S>| {
         let (p, s) = if clamp { (c.primary_clamped(), c.secondary_clamped()) } else { (c.primary, c.secondary) };
         (p.map(S::to_f64), s.map(S::to_f64))
     };
@@ -425,7 +429,7 @@ pub fn result_json(id: &str, r: &Result<CaseColors, String>) -> Value {
 /// matrix's upper 3x3, as `glLight` does) under the identity. The rule set and the
 /// specular model are not GL state: a case always means OpenGL's rules.
 pub fn case_json(id: &str, scene: &Scene) -> Value {
-    let rows = |m: &DMat4| Value::Array(crate::transform::mat4_rows(m).iter().map(|r| nums(r)).collect());
+    let rows = |m: &DMat4| Value::Array(crate::model::transform::mat4_rows(m).iter().map(|r| nums(r)).collect());
     let v4 = |v: DVec4| nums(&v.to_array());
     let v3 = |v: DVec3| nums(&v.to_array());
     let material = |m: &Material| {
@@ -486,13 +490,13 @@ mod tests {
     fn a_scene_written_as_a_case_lights_the_same() {
         // Lights placed in the eye, the world and the object, one a spotlight, two-sided
         // with a back material, under a modelview that is not a rigid motion.
-        let mut s = crate::presets::LightingBench::EightSpots.scene();
+        let mut s = crate::model::presets::LightingBench::EightSpots.scene();
         s.lights.truncate(3);
         s.lights[1].placement = LightPlacement::Eye;
         s.lights[2].placement = LightPlacement::Object;
         s.world_from_object = DMat4::from_scale(DVec3::new(1.0, 2.0, 0.5)) * DMat4::from_rotation_z(0.3);
         s.light_model.two_sided = true;
-        s.back_material = Some(crate::materials::by_name("jade").unwrap().clone());
+        s.back_material = Some(crate::model::materials::by_name("jade").unwrap().clone());
         s.vertex = Vertex { position: DVec4::new(0.3, 0.2, 0.9, 1.0), normal: DVec3::new(0.2, 0.3, 0.9) };
         let back = parse_case(&case_json("x", &s), 0).unwrap();
         let (a, b) = (

@@ -2,5 +2,4 @@
 
 pub mod document;
 pub mod glref;
-pub mod strict;
-pub mod typed_number;
+pub mod library;

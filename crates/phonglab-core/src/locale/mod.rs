@@ -190,33 +190,9 @@ pub fn decimal(text: &str) -> String {
         .collect()
 }
 
-/// A number for people: [`crate::explain::fmt_sig`] in the locale's decimal mark.
+/// A number for people: [`fmt_sig`] in the locale's decimal mark.
 pub fn num(x: f64, sig: usize) -> String {
-    decimal(&crate::explain::fmt_sig(x, sig))
-}
-
-/// A document's name as this language says it: the built-in and shipped scenes' names (in
-/// whichever language they were made: scene files keep the English) in the current
-/// language; any other name as it is.
-pub fn localised_name(name: &str) -> String {
-    for id in ["doc-worksheet", "doc-worksheet-preset"] {
-        for k in 1..=5 {
-            let args = [("k", Arg::Text(k.to_string()))];
-            if Lang::ALL.iter().any(|l| tr_in(*l, id, &args) == name) {
-                return tr_args(id, &args);
-            }
-        }
-    }
-    for id in ["doc-phong-demo", "doc-spotlight", "doc-three-lights"] {
-        if Lang::ALL.iter().any(|l| tr_in(*l, id, &[]) == name) {
-            return tr(id);
-        }
-    }
-    if let Some(material) = name.strip_prefix("Red Book teapots: ") {
-        let material = crate::materials::display_name(&material.replace(' ', "-"));
-        return tr_args("doc-redbook-teapot", &[("material", Arg::Text(material))]);
-    }
-    name.to_string()
+    decimal(&fmt_sig(x, sig))
 }
 
 /// Looks up a message: `t!("id")`, or with arguments `t!("id", name = value, ...)`
@@ -229,6 +205,33 @@ macro_rules! t {
     ($id:literal, $($k:ident = $v:expr),+ $(,)?) => {
         $crate::locale::tr_args($id, &[$((stringify!($k), $crate::locale::Arg::from($v))),+])
     };
+}
+
+/// Formats `x` with `sig` significant digits, trailing zeros trimmed (`0.09942795`,
+/// `4.5151924e+28`, `0`); non-finite values as `NaN`, `Infinity`, `-Infinity`.
+pub fn fmt_sig(x: f64, sig: usize) -> String {
+    if x.is_nan() {
+        return "NaN".into();
+    }
+    if x.is_infinite() {
+        return if x > 0.0 { "Infinity".into() } else { "-Infinity".into() };
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let sig = sig.max(1);
+    let sci = format!("{:.*e}", sig - 1, x);
+    let (mant, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
+    let exp: i32 = exp.parse().unwrap_or(0);
+    let trim = |s: &str| -> String {
+        if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s.to_string() }
+    };
+    if exp < -5 || exp >= sig as i32 {
+        format!("{}e{}{}", trim(mant), if exp < 0 { "-" } else { "+" }, exp.abs())
+    } else {
+        let decimals = (sig as i32 - 1 - exp).max(0) as usize;
+        trim(&format!("{:.*}", decimals, x))
+    }
 }
 
 #[cfg(test)]
@@ -250,23 +253,6 @@ mod tests {
         assert_eq!(Lang::from_vars(env(&[("LC_MESSAGES", "en_US.UTF-8"), ("LANG", "pt_PT.UTF-8")])), Lang::En);
         assert_eq!(Lang::from_vars(env(&[("LC_ALL", ""), ("LANG", "pt_PT.UTF-8")])), Lang::PtPt);
         assert_eq!(Lang::from_vars(env(&[])), Lang::En);
-    }
-
-    #[test]
-    fn the_built_in_names_follow_the_language() {
-        let english = with_locale(Locale::of(Lang::En), || crate::Document::default().name);
-        assert_eq!(english, "the worksheet, mview5");
-        assert_eq!(with_locale(Locale::of(Lang::PtPt), || localised_name(&english)), "a ficha, mview5");
-        assert_eq!(with_locale(Locale::of(Lang::PtBr), || localised_name("Ficha, mview3")), "Ficha, mview3");
-        assert_eq!(with_locale(Locale::of(Lang::En), || localised_name("Ficha, mview3")), "Worksheet, mview3");
-        assert_eq!(localised_name("my scene"), "my scene");
-        // The shipped scene files' names (English in the files).
-        let pt = |name: &str| with_locale(Locale::of(Lang::PtPt), || localised_name(name));
-        assert_eq!(pt("the Phong demo"), "a demo de Phong");
-        assert_eq!(pt("a spotlight"), "um foco");
-        assert_eq!(pt("three coloured lights and a headlight"), "três luzes coloridas e uma luz presa ao observador");
-        assert_eq!(pt("Red Book teapots: yellow rubber"), "bules do Red Book: borracha amarela");
-        assert_eq!(with_locale(Locale::of(Lang::En), || localised_name("um foco")), "a spotlight");
     }
 
     #[test]

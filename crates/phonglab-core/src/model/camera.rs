@@ -3,8 +3,8 @@
 
 use glam::{DMat4, DVec3};
 
-use crate::error::SceneError;
-use crate::transform::{of_default_camera, try_look_at, worksheet_modelview};
+use crate::model::error::SceneError;
+use crate::model::transform::{of_default_camera, try_look_at, worksheet_modelview};
 
 /// A camera description; [`CameraSpec::matrix`] turns it into `eye_from_world`.
 #[derive(Clone, Debug, PartialEq)]

@@ -4,7 +4,7 @@ use std::sync::OnceLock;
 
 use glam::DVec4;
 
-use crate::scene::Material;
+use crate::model::scene::Material;
 
 /// The table as shipped in `assets/materials-classic.csv` (compiled in; the core reads no files).
 pub const CLASSIC_CSV: &str = include_str!("../../../../assets/materials-classic.csv");

@@ -1,7 +1,7 @@
 //! What is lit: the lighting state, its rules, materials, transforms, the view's settings and ready-made scenes.
 
 pub mod camera;
-pub mod library;
+pub mod error;
 pub mod materials;
 pub mod presets;
 pub mod rules;

@@ -2,10 +2,10 @@
 
 use glam::{DMat4, DVec3, DVec4};
 
-use crate::materials;
-use crate::rules::Rules;
-use crate::scene::{Light, LightModel, LightPlacement, Material, NormalMode, Scene, Vertex};
-use crate::transform::{phong_demo_eye_from_object, worksheet_modelview};
+use crate::model::materials;
+use crate::model::rules::Rules;
+use crate::model::scene::{Light, LightModel, LightPlacement, Material, NormalMode, Scene, Vertex};
+use crate::model::transform::{phong_demo_eye_from_object, worksheet_modelview};
 
 /// The worksheet's vertex, in the 1024x768 window's centre-relative coordinates.
 pub const WORKSHEET_VERTEX: DVec4 = DVec4::new(-512.0, -384.0, 0.0, 1.0);
@@ -200,7 +200,7 @@ pub fn bench_scene(frame: u32) -> Scene {
 
 /// The benchmark's projection: `gluPerspective(40, 1, 0.5, 20)`.
 pub fn bench_projection() -> DMat4 {
-    crate::transform::perspective(40.0, 1.0, 0.5, 20.0)
+    crate::model::transform::perspective(40.0, 1.0, 0.5, 20.0)
 }
 
 /// The benchmark's clear colour.

@@ -1,7 +1,7 @@
 //! Rule sets: OpenGL 2.1, the worksheet's, the Phong demo's — presets of one engine.
 //!
 //! A rule set changes which terms the equation has, never how a term is computed, so
-//! all three run through the same code in [`crate::lighting`].
+//! all three run through the same code in the equation group's `lighting` (a layer above).
 
 use std::fmt;
 

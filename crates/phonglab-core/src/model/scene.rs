@@ -6,7 +6,7 @@
 
 use glam::{DMat4, DVec3, DVec4, Vec3};
 
-use crate::rules::Rules;
+use crate::model::rules::Rules;
 
 /// OpenGL's limit on simultaneous lights (`GL_MAX_LIGHTS` is at least 8).
 pub const MAX_LIGHTS: usize = 8;
@@ -234,7 +234,7 @@ impl Scene {
     /// Light `l`'s position in eye space (homogeneous, not divided): its position by the
     /// modelview that was current when it was placed.
     pub fn light_pos_in_eye(&self, l: &Light) -> DVec4 {
-        crate::robust::transform_point(&self.eye_from_light(l), l.position)
+        crate::numerics::robust::transform_point(&self.eye_from_light(l), l.position)
     }
 
     /// Is light `l` directional where it counts, in eye space (w = 0 there)? Usually the

@@ -106,11 +106,11 @@ pub struct NormalMatrix {
 impl NormalMatrix {
     /// The normal matrix a rule set uses: OpenGL's inverse transpose, or (the worksheet)
     /// the modelview's 3x3 itself. `rescale` and `orthonormal` describe `M` either way.
-    pub fn for_rules(eye_from_object: &DMat4, rules: crate::rules::Rules) -> Self {
+    pub fn for_rules(eye_from_object: &DMat4, rules: crate::model::rules::Rules) -> Self {
         let nm = Self::new(eye_from_object);
         match rules.normal_transform() {
-            crate::rules::NormalTransform::InverseTranspose => nm,
-            crate::rules::NormalTransform::Modelview => {
+            crate::model::rules::NormalTransform::InverseTranspose => nm,
+            crate::model::rules::NormalTransform::Modelview => {
                 Self { eye_from_object: DMat3::from_mat4(*eye_from_object), singular: false, ..nm }
             }
         }
@@ -127,7 +127,7 @@ impl NormalMatrix {
         let eye_from_object = if singular { cof } else { cof * (1.0 / det) };
         // Third row of M^-1 = third column of (M^-1)^T.
         let row3 = eye_from_object.z_axis;
-        let len = crate::robust::scaled_length::<f64>(row3);
+        let len = crate::numerics::robust::scaled_length::<f64>(row3);
         let rescale = if len > 0.0 && len.is_finite() { 1.0 / len } else { 1.0 };
         let mt_m = m.transpose() * m;
         let orthonormal = (mt_m - DMat3::IDENTITY).to_cols_array().iter().all(|x| x.abs() <= 1e-12);

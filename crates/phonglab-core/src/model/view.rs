@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::error::SceneError;
+use crate::model::error::SceneError;
 
 /// The objects of the Phong demo.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
@@ -162,7 +162,7 @@ impl ViewCamera {
 
 /// The shaded view's projection: gluPerspective(40, aspect, 0.1, 100).
 pub fn view_projection(aspect: f64) -> glam::DMat4 {
-    crate::transform::perspective(40.0, aspect, 0.1, 100.0)
+    crate::model::transform::perspective(40.0, aspect, 0.1, 100.0)
 }
 
 /// Tessellation limits: at least a closed shape, at most what stays interactive.
@@ -212,7 +212,7 @@ pub struct View {
     /// Move gluCylinder (z from 0 to 0.5) to be centred on the origin (the demo does not).
     pub cylinder_centered: bool,
     /// The colour of uncovered pixels (the demo: black).
-    #[serde(deserialize_with = "crate::formats::strict::exact")]
+    #[serde(deserialize_with = "crate::numerics::strict::exact")]
     pub background: [f32; 3],
     /// The OBJ file shown when the object is [`ObjectKind::Obj`] (a path; relative paths
     /// in a scene file are taken from the scene file's folder when it is opened).
@@ -357,14 +357,6 @@ impl View {
         match self.framing {
             Framing::Orbit => view_projection(1.0) * (self.camera.eye_from_world() * self.spin()),
             Framing::ClipSpace => self.spin(),
-        }
-    }
-
-    /// The numerical options of the shaded view with power function `pow`.
-    pub fn eval_options(&self, pow: crate::PowFn) -> crate::EvalOptions {
-        crate::EvalOptions {
-            pow,
-            renormalize: if self.phong_renormalize { crate::Renormalize::Exact } else { crate::Renormalize::Skip },
         }
     }
 }

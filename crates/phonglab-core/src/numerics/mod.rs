@@ -1,6 +1,9 @@
 //! Where floating point needs care: compensated sums, scaled lengths, zero-safe products, the powers.
 
+pub mod cpu;
 pub mod exact_pow;
 pub mod pow;
 pub mod real;
 pub mod robust;
+pub mod strict;
+pub mod typed_number;

@@ -17,7 +17,7 @@
 //! each polynomial evaluated as even and odd halves with fused multiply-adds, in f32.
 //! It is why Mesa's lit colours differ from the exact ones by up to 1.2e-5.
 
-use crate::real::Real;
+use crate::numerics::real::Real;
 
 /// Which power function the specular and spot terms use.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -69,7 +69,7 @@ impl PowFn {
     }
 }
 
-pub use crate::exact_pow::pow_f32;
+pub use crate::numerics::exact_pow::pow_f32;
 
 /// gallivm's `lp_build_log2_polynomial`, LOG_POLY_DEGREE 4, as the doubles gallivm
 /// lists them (it rounds them to f32 when it builds the constant vector, as [`f32s`] does).

@@ -46,7 +46,7 @@ pub trait Real:
     fn to_f64(self) -> f64;
     /// Square root.
     fn sqrt(self) -> Self;
-    /// The engine's exact power: [`crate::exact_pow::pow_f32`] (computed in f64, rounded once)
+    /// The engine's exact power: [`crate::numerics::exact_pow::pow_f32`] (computed in f64, rounded once)
     /// for f32, the C library's `pow` for f64.
     fn pow_exact(self, e: Self) -> Self;
     /// Absolute value.
@@ -107,7 +107,7 @@ pub trait Vec3Ops<S>:
 
 macro_rules! impl_real {
     (@pow f32, $x:expr, $e:expr) => {
-        crate::exact_pow::pow_f32($x, $e)
+        crate::numerics::exact_pow::pow_f32($x, $e)
     };
     (@pow f64, $x:expr, $e:expr) => {
         <f64>::powf($x, $e)

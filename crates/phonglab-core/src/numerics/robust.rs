@@ -11,7 +11,7 @@
 
 use glam::{DMat4, DVec3, DVec4};
 
-use crate::real::{Real, Vec3Ops};
+use crate::numerics::real::{Real, Vec3Ops};
 
 /// Error-free sum: `a + b = s + e` exactly (Knuth's TwoSum).
 #[inline(always)]

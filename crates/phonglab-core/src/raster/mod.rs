@@ -1,5 +1,4 @@
-//! Meshes and the CPU renderer, and the shaded view's setup.
+//! The CPU renderer and the shaded view's setup.
 
-pub mod mesh;
 pub mod render;
 pub mod shaded;

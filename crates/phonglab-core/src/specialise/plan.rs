@@ -3,19 +3,19 @@
 //!
 //! Mesa's fixed-function vertex program generator builds a state key and emits only the
 //! instructions it needs; phonglab does the same with a plan of array stages
-//! ([`crate::specialised`]). The key changes only when an effect switches on or off (a
+//! ([`crate::specialise::specialised`]). The key changes only when an effect switches on or off (a
 //! light becomes positional, attenuation leaves (1, 0, 0), a cutoff leaves 180,
 //! shininess reaches 0...), never when a value merely moves, so a slider move does not
 //! re-plan.
 
 use std::fmt;
 
-use crate::lighting::{EvalOptions, Renormalize};
-use crate::pow::PowFn;
-use crate::rules::{Rules, SpecularModel};
-use crate::scene::{NormalMode, Scene};
-use crate::specialised::CHUNK;
-use crate::transform::NormalMatrix;
+use crate::equation::lighting::{EvalOptions, Renormalize};
+use crate::model::rules::{Rules, SpecularModel};
+use crate::model::scene::{NormalMode, Scene};
+use crate::model::transform::NormalMatrix;
+use crate::numerics::pow::PowFn;
+use crate::specialise::specialised::CHUNK;
 
 /// One light's part of the key.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -62,7 +62,7 @@ pub struct Key {
     pub projective: bool,
     /// The modelview is a translation: affine, and its 3x3 part is the identity. P is then
     /// `p + t`, three additions (the same bits as the compensated rows,
-    /// [`crate::robust::translate_point`]).
+    /// [`crate::numerics::robust::translate_point`]).
     pub translation: bool,
 }
 
@@ -70,7 +70,7 @@ impl Key {
     /// The key of `scene` under `options`.
     pub fn of(scene: &Scene, options: EvalOptions) -> Key {
         let back = scene.back();
-        let spec_nonzero = |l: &crate::Light| {
+        let spec_nonzero = |l: &crate::model::scene::Light| {
             [&scene.material, back].iter().any(|m| (0..3).any(|i| m.specular[i] * l.specular[i] != 0.0))
         };
         let eye_from_object = scene.eye_from_object();
@@ -353,8 +353,8 @@ impl EffectKind {
 
     /// The step of the worked calculation this effect decides (for showing a skipped
     /// step greyed with its reason).
-    pub fn step_kind(self, specular: SpecularModel) -> Option<crate::explain::StepKind> {
-        use crate::explain::StepKind as K;
+    pub fn step_kind(self, specular: SpecularModel) -> Option<crate::equation::explain::StepKind> {
+        use crate::equation::explain::StepKind as K;
         Some(match self {
             EffectKind::Normalisation => K::Normal,
             EffectKind::Position => K::Position,
@@ -399,7 +399,7 @@ impl fmt::Display for Effect {
 
 impl Effect {
     /// The step of the worked calculation this effect decides.
-    pub fn step_kind(&self) -> Option<crate::explain::StepKind> {
+    pub fn step_kind(&self) -> Option<crate::equation::explain::StepKind> {
         self.kind.step_kind(self.specular)
     }
 }

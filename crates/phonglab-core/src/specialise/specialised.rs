@@ -35,41 +35,19 @@ use web_time::{Duration, Instant};
 
 use glam::{DVec3, Vec3};
 
-use crate::error::SceneError;
-use crate::lighting::{Engine, EvalOptions, LightPos, PreparedLight, fast_rsqrt, terms};
-use crate::plan::{Key, Program, SourceKind, Stage};
-use crate::pow::PowFn;
-use crate::real::Vec3Ops;
-use crate::robust::{
+use crate::equation::lighting::{Engine, EvalOptions, LightPos, PreparedLight, fast_rsqrt, terms};
+use crate::model::error::SceneError;
+use crate::model::rules::{SpecularGate, SpecularModel};
+use crate::model::scene::{Scene, Vertex};
+#[cfg(target_arch = "x86_64")]
+use crate::numerics::cpu::{has_avx2_fma, has_avx512};
+use crate::numerics::pow::PowFn;
+use crate::numerics::real::Vec3Ops;
+use crate::numerics::robust::{
     mul0, normalize3, normalize3_unscaled, transform_affine_rows, transform_point, transform_point_rows,
     translate_point, unscaled_is_exact,
 };
-use crate::rules::{SpecularGate, SpecularModel};
-use crate::scene::{Scene, Vertex};
-
-/// Does this CPU have AVX-512F, DQ and VL (and AVX2, FMA)? (Checked once;
-/// `PHONGLAB_NO_AVX512` set in the environment turns the AVX-512 kernels off, for
-/// comparisons.)
-#[cfg(target_arch = "x86_64")]
-pub(crate) fn has_avx512() -> bool {
-    use std::sync::OnceLock;
-    static HAS: OnceLock<bool> = OnceLock::new();
-    *HAS.get_or_init(|| {
-        std::env::var_os("PHONGLAB_NO_AVX512").is_none()
-            && std::arch::is_x86_feature_detected!("avx512f")
-            && std::arch::is_x86_feature_detected!("avx512dq")
-            && std::arch::is_x86_feature_detected!("avx512vl")
-            && has_avx2_fma()
-    })
-}
-
-/// Does this CPU have AVX2 and FMA? (Checked once.)
-#[cfg(target_arch = "x86_64")]
-pub(crate) fn has_avx2_fma() -> bool {
-    use std::sync::OnceLock;
-    static HAS: OnceLock<bool> = OnceLock::new();
-    *HAS.get_or_init(|| std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma"))
-}
+use crate::specialise::plan::{Key, Program, SourceKind, Stage};
 
 /// Vertices per chunk: the arrays of a chunk stay in L1 cache.
 pub const CHUNK: usize = 64;
@@ -1113,7 +1091,7 @@ fn negated<'a>(
 fn power_loop(which: PowFn, x: &[f32; CHUNK], p: &mut [f32; CHUNK], n: usize, e: f32) {
     let n = n.min(CHUNK);
     match which {
-        PowFn::Exact => crate::exact_pow::pow_f32_chunk_packed(x, e, p),
+        PowFn::Exact => crate::numerics::exact_pow::pow_f32_chunk_packed(x, e, p),
         PowFn::Llvmpipe => {
             for i in 0..n {
                 p[i] = PowFn::Llvmpipe.pow(x[i].max(0.0), e);
@@ -1141,7 +1119,7 @@ static ONES: [f32; CHUNK] = [1.0; CHUNK];
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::presets;
+    use crate::model::presets;
 
     #[test]
     fn the_timed_run_times_each_stage_of_the_program_and_lights_as_the_plain_one() {

@@ -18,18 +18,18 @@ use web_time::Instant;
 use glam::{DMat4, DVec3, Vec3};
 use rayon::prelude::*;
 
-use crate::error::SceneError;
-use crate::lighting::{Engine, EvalOptions, Renormalize};
+use crate::equation::lighting::{Engine, EvalOptions, Renormalize};
 use crate::mesh::Mesh;
-use crate::pow::PowFn;
-use crate::render::{Image, Job, Renderer};
-use crate::robust::normalize_or_zero;
-use crate::scene::{Scene, Vertex};
-use crate::specialised::Lighter;
-use crate::view::{ObjectKind, Shading, View};
+use crate::model::error::SceneError;
+use crate::model::scene::{Scene, Vertex};
+use crate::model::view::{ObjectKind, Shading, View};
+use crate::numerics::pow::PowFn;
+use crate::numerics::robust::normalize_or_zero;
+use crate::raster::render::{Image, Job, Renderer};
+use crate::specialise::specialised::Lighter;
 
 /// What is studied: a scene (its modelview includes the view's camera and the object's
-/// spin, as [`crate::Document::shaded_scene`] gives it), the object and how it is drawn.
+/// spin, as [`crate::formats::document::Document::shaded_scene`] gives it), the object and how it is drawn.
 #[derive(Clone, Copy, Debug)]
 pub struct Setup<'a> {
     /// The lit scene.
@@ -45,7 +45,7 @@ pub struct Setup<'a> {
 }
 
 impl<'a> Setup<'a> {
-    /// The shaded view's setup: `scene` as [`crate::Document::shaded_scene`] gives it, drawn
+    /// The shaded view's setup: `scene` as [`crate::formats::document::Document::shaded_scene`] gives it, drawn
     /// where the view draws it ([`View::clip_from_object`]), `size` pixels square.
     pub fn shaded_view(scene: &'a Scene, view: &'a View, size: usize, background: [f32; 3]) -> Self {
         Setup { scene, view, clip_from_object: view.clip_from_object(), size, background }

@@ -19,14 +19,14 @@
 
 use glam::{DMat4, DVec3, DVec4};
 
-use crate::camera::CameraSpec;
-use crate::document::Document;
-use crate::explain::{Explanation, Side, explain};
-use crate::lighting::{Engine, EvalOptions};
-use crate::materials;
-use crate::plan::Key;
-use crate::rules::Rules;
-use crate::scene::{Light, LightModel, LightPlacement, NormalMode, Scene, Vertex};
+use crate::equation::explain::{Explanation, Side, explain};
+use crate::equation::lighting::{Engine, EvalOptions};
+use crate::formats::document::Document;
+use crate::model::camera::CameraSpec;
+use crate::model::materials;
+use crate::model::rules::Rules;
+use crate::model::scene::{Light, LightModel, LightPlacement, NormalMode, Scene, Vertex};
+use crate::specialise::plan::Key;
 
 /// An effect an exercise can be asked to use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -76,7 +76,7 @@ impl Effect {
     /// The effects a scene uses, read off its key.
     pub fn of_key(key: &Key) -> Vec<Effect> {
         let mut out = Vec::new();
-        let any = |f: &dyn Fn(&crate::plan::LightKey) -> bool| key.lights.iter().any(f);
+        let any = |f: &dyn Fn(&crate::specialise::plan::LightKey) -> bool| key.lights.iter().any(f);
         if any(&|l| l.positional) {
             out.push(Effect::Positional);
         }
@@ -404,21 +404,21 @@ fn num(x: f64) -> String {
 }
 
 fn vec4(v: DVec4) -> String {
-    crate::locale::decimal(&crate::explain::fmt_value(&[v.x, v.y, v.z, v.w], 8))
+    crate::locale::decimal(&crate::equation::explain::fmt_value(&[v.x, v.y, v.z, v.w], 8))
 }
 
 /// A colour as the worksheet writes it, `[r g b 0]`: every product of two colours (Iamb,
 /// Idif, Ispec) then has 0 as its fourth component, as the key does.
 fn colour4(c: DVec4) -> String {
-    crate::locale::decimal(&crate::explain::fmt_value(&[c.x, c.y, c.z, 0.0], 8))
+    crate::locale::decimal(&crate::equation::explain::fmt_value(&[c.x, c.y, c.z, 0.0], 8))
 }
 
 /// The rules an exercise is computed under, as its sheet says them.
-pub fn rules_in_words(set: crate::rules::RuleSet) -> String {
+pub fn rules_in_words(set: crate::model::rules::RuleSet) -> String {
     match set {
-        crate::rules::RuleSet::Worksheet => crate::t!("sheet-rules-worksheet"),
-        crate::rules::RuleSet::OpenGl => crate::t!("sheet-rules-opengl"),
-        crate::rules::RuleSet::PhongDemo => crate::t!("sheet-rules-demo"),
+        crate::model::rules::RuleSet::Worksheet => crate::t!("sheet-rules-worksheet"),
+        crate::model::rules::RuleSet::OpenGl => crate::t!("sheet-rules-opengl"),
+        crate::model::rules::RuleSet::PhongDemo => crate::t!("sheet-rules-demo"),
     }
 }
 
@@ -435,9 +435,9 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
     let _ = writeln!(o, "- vertexPos = {}", vec4(s.vertex.position));
     let _ = writeln!(o, "- vertexNormal = {}\n", vec4(s.vertex.normal.extend(0.0)));
     let _ = writeln!(o, "## {}\n", crate::t!("sheet-modelview"));
-    let (words, material) = (ex.modelview.as_str(), crate::materials::display_name(&ex.material));
+    let (words, material) = (ex.modelview.as_str(), crate::model::materials::display_name(&ex.material));
     let _ = writeln!(o, "{words}:\n\n```");
-    let rows = crate::transform::mat4_rows(&s.eye_from_world);
+    let rows = crate::model::transform::mat4_rows(&s.eye_from_world);
     for r in rows {
         let _ = writeln!(o, "[{}]", r.iter().map(|x| format!("{:>12}", num(*x))).collect::<Vec<_>>().join(" "));
     }
@@ -483,7 +483,7 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
         let _ = writeln!(o, "- {} = {}", crate::t!("scene-ambient"), colour4(lm.ambient));
     }
     let _ = writeln!(o, "\n## {}\n", crate::t!("sheet-compute-heading"));
-    let asked = (0..ex.key.steps.len()).filter(|k| crate::quiz::asked(s, &ex.key, *k));
+    let asked = (0..ex.key.steps.len()).filter(|k| crate::teach::quiz::asked(s, &ex.key, *k));
     for (n, k) in asked.enumerate() {
         let st = &ex.key.steps[k];
         let _ = writeln!(o, "{}. {}: `{}` = ________", n + 1, st.title, st.name);

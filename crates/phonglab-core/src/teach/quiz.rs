@@ -14,17 +14,17 @@
 
 use glam::DVec3;
 
-use crate::explain::{Explanation, Step, StepKind};
-use crate::lighting::terms;
-use crate::rules::SpecularModel;
-use crate::scene::Scene;
+use crate::equation::explain::{Explanation, Step, StepKind};
+use crate::equation::lighting::terms;
+use crate::model::rules::SpecularModel;
+use crate::model::scene::Scene;
 
 /// Reads an answer: numbers separated by spaces, commas or semicolons, with optional
 /// brackets, and a decimal point or comma, e.g. `[0.79 0.56 -0.25 0]`, `0.79, 0.56, -0.25`,
 /// `0,79; 0,56; -0,25`, `646.297` or `0,7246526`
-/// ([`crate::formats::typed_number::parse_numbers`]).
+/// ([`crate::numerics::typed_number::parse_numbers`]).
 pub fn parse_answer(text: &str) -> Result<Vec<f64>, String> {
-    crate::formats::typed_number::parse_numbers(text).map_err(|e| e.to_string())
+    crate::numerics::typed_number::parse_numbers(text).map_err(|e| e.to_string())
 }
 
 /// How close is right: (relative, absolute).
@@ -60,7 +60,7 @@ pub fn digits_needed(want: &[f64]) -> usize {
     (1..=17)
         .find(|&d| {
             let rounded: Vec<f64> =
-                want.iter().map(|w| crate::explain::fmt_sig(*w, d).parse::<f64>().unwrap_or(*w)).collect();
+                want.iter().map(|w| crate::equation::explain::fmt_sig(*w, d).parse::<f64>().unwrap_or(*w)).collect();
             close(&rounded, want)
         })
         .unwrap_or(17)
@@ -202,7 +202,7 @@ pub fn expected(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -
             let c = get(StepKind::CosBeta, li)?[0];
             let n_dot_l = get(StepKind::CosTheta, li)?[0];
             let allowed = terms::specular_allowed(scene.rules.specular_gate(), n_dot_l, c);
-            let f = if allowed { crate::PowFn::Exact.pow::<f64>(c.max(0.0), m.shininess) } else { 0.0 };
+            let f = if allowed { crate::numerics::pow::PowFn::Exact.pow::<f64>(c.max(0.0), m.shininess) } else { 0.0 };
             let ls = light?.specular;
             Some((0..3).map(|i| ls[i] * m.specular[i] * f).chain([0.0]).collect())
         }
@@ -294,7 +294,7 @@ pub fn asked(scene: &Scene, key: &Explanation, k: usize) -> bool {
             StepKind::Spot => light.is_some_and(|l| l.is_spot()),
             StepKind::Attenuation => light.is_some_and(|l| l.position.w != 0.0),
             StepKind::Contribution => scene.lights.len() > 1 || scene.rules.scene_ambient() || scene.rules.emission(),
-            StepKind::Clamped => scene.rules.set != crate::rules::RuleSet::Worksheet,
+            StepKind::Clamped => scene.rules.set != crate::model::rules::RuleSet::Worksheet,
             _ => true,
         }
 }
@@ -309,11 +309,11 @@ pub fn score(scene: &Scene, key: &Explanation, answers: &Answers) -> (usize, usi
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::explain::{Side, explain};
-    use crate::lighting::Engine;
+    use crate::equation::explain::{Side, explain};
+    use crate::equation::lighting::Engine;
 
     fn worksheet() -> (Scene, Explanation) {
-        let s = crate::presets::worksheet(5);
+        let s = crate::model::presets::worksheet(5);
         let lit = Engine::<f64>::new(&s).unwrap().light(&s.vertex);
         let e = explain(&s, &lit, Side::Front);
         (s, e)
@@ -431,8 +431,8 @@ mod tests {
             assert!(asked_names.contains(&yes), "{yes} not in {asked_names:?}");
         }
         // A spotlight's factor is asked.
-        let mut spot = crate::presets::worksheet(5);
-        spot.rules = crate::Rules::OPENGL;
+        let mut spot = crate::model::presets::worksheet(5);
+        spot.rules = crate::model::rules::Rules::OPENGL;
         spot.lights[0].spot_cutoff = 60.0;
         spot.lights[0].spot_direction = -glam::DVec3::Z;
         let lit = Engine::<f64>::new(&spot).unwrap().light(&spot.vertex);

@@ -15,11 +15,11 @@
 
 use std::fmt::Write as _;
 
-use crate::explain::{Explanation, StepKind};
-use crate::lighting::EvalOptions;
-use crate::plan::{Key, Program, SourceKind, Stage};
-use crate::rules::{NormalTransform, SpecularGate, SpecularModel};
-use crate::scene::Scene;
+use crate::equation::explain::{Explanation, StepKind};
+use crate::equation::lighting::EvalOptions;
+use crate::model::rules::{NormalTransform, SpecularGate, SpecularModel};
+use crate::model::scene::Scene;
+use crate::specialise::plan::{Key, Program, SourceKind, Stage};
 
 /// The shading language.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -421,17 +421,21 @@ pub fn generate_for(
     options: EvalOptions,
     lang: Lang,
     shading: ShaderShading,
-) -> Result<Shader, crate::SceneError> {
-    let lit = crate::Engine::<f64>::new(scene)?.light(&scene.vertex);
-    let ex = crate::explain::explain(scene, &lit, crate::explain::Side::Front);
+) -> Result<Shader, crate::model::error::SceneError> {
+    let lit = crate::equation::lighting::Engine::<f64>::new(scene)?.light(&scene.vertex);
+    let ex = crate::equation::explain::explain(scene, &lit, crate::equation::explain::Side::Front);
     Ok(generate(scene, options, &ex, lang, shading))
 }
 
 /// The program that draws `doc`'s shaded view: its scene as the view lights it (the view's
 /// camera and spin, or the demo's object space) and the view's renormalisation. What the
 /// app's Shader window shows, what its GPU view runs and what `phonglab shader` prints.
-pub fn for_view(doc: &crate::Document, lang: Lang, shading: ShaderShading) -> Result<Shader, crate::SceneError> {
-    generate_for(&doc.shaded_scene(), doc.view.eval_options(crate::PowFn::Exact), lang, shading)
+pub fn for_view(
+    doc: &crate::formats::document::Document,
+    lang: Lang,
+    shading: ShaderShading,
+) -> Result<Shader, crate::model::error::SceneError> {
+    generate_for(&doc.shaded_scene(), doc.view.eval_options(crate::numerics::pow::PowFn::Exact), lang, shading)
 }
 
 /// Generates the program for `scene` (its key under `options`), with step numbers taken
@@ -586,11 +590,11 @@ pub fn uniform_value(scene: &Scene, clip_from_object: &glam::DMat4, name: &str) 
         "clip_from_object" => Some(f(&clip_from_object.to_cols_array())),
         "eye_from_object" => Some(f(&eye_from_object.to_cols_array())),
         "normal_matrix" => {
-            let nm = crate::transform::NormalMatrix::for_rules(&eye_from_object, scene.rules);
+            let nm = crate::model::transform::NormalMatrix::for_rules(&eye_from_object, scene.rules);
             Some(f(&nm.eye_from_object.to_cols_array()))
         }
         "rescale" => {
-            Some(vec![crate::transform::NormalMatrix::for_rules(&eye_from_object, scene.rules).rescale as f32])
+            Some(vec![crate::model::transform::NormalMatrix::for_rules(&eye_from_object, scene.rules).rescale as f32])
         }
         "scene_color" => {
             let m = &scene.material;
@@ -612,18 +616,18 @@ mod tests {
 
     #[test]
     fn every_uniform_a_program_declares_has_a_value() {
-        let mut scenes = vec![crate::presets::worksheet(5), crate::presets::phong_demo()];
-        let mut spot = crate::presets::worksheet(3);
+        let mut scenes = vec![crate::model::presets::worksheet(5), crate::model::presets::phong_demo()];
+        let mut spot = crate::model::presets::worksheet(3);
         spot.lights[0].spot_cutoff = 30.0;
         spot.light_model.two_sided = true;
         scenes.push(spot);
-        let mut dir = crate::presets::worksheet(5);
-        dir.rules = crate::rules::Rules::OPENGL;
+        let mut dir = crate::model::presets::worksheet(5);
+        dir.rules = crate::model::rules::Rules::OPENGL;
         dir.lights[0].position = glam::DVec4::new(0.0, 1.0, 1.0, 0.0);
         scenes.push(dir);
         for scene in &scenes {
-            let lit = crate::lighting::Engine::<f64>::new(scene).unwrap().light(&scene.vertex);
-            let ex = crate::explain::explain(scene, &lit, crate::explain::Side::Front);
+            let lit = crate::equation::lighting::Engine::<f64>::new(scene).unwrap().light(&scene.vertex);
+            let ex = crate::equation::explain::explain(scene, &lit, crate::equation::explain::Side::Front);
             for lang in [Lang::Glsl, Lang::Wgsl] {
                 for shading in [ShaderShading::Gouraud, ShaderShading::Phong] {
                     let sh = generate(scene, EvalOptions::default(), &ex, lang, shading);
@@ -651,7 +655,7 @@ mod tests {
             }
         }
         // Values are the scene's, in eye space.
-        let s = crate::presets::worksheet(5);
+        let s = crate::model::presets::worksheet(5);
         assert_eq!(uniform_value(&s, &glam::DMat4::IDENTITY, "light0_position").unwrap(), vec![0.0, 54.0, -888.0, 1.0]);
         assert_eq!(uniform_value(&s, &glam::DMat4::IDENTITY, "mat_shininess").unwrap(), vec![25.6]);
     }

@@ -22,17 +22,18 @@ pub mod raster;
 pub mod resolve;
 pub mod setup;
 pub mod vertices;
+pub mod window;
 
 use glam::DMat4;
 
-use crate::error::SceneError;
-use crate::lighting::EvalOptions;
+use crate::equation::lighting::EvalOptions;
 use crate::mesh::Mesh;
-use crate::scene::Scene;
-use crate::specialised::Lighter;
-use crate::view::{FlatNormal, Shading};
+use crate::model::error::SceneError;
+use crate::model::scene::Scene;
+use crate::model::view::{FlatNormal, Shading};
+use crate::specialise::specialised::Lighter;
 
-pub use crate::transform::perspective;
+pub use crate::model::transform::perspective;
 
 /// What to draw.
 #[derive(Clone, Copy, Debug)]
@@ -315,9 +316,9 @@ impl Renderer {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::library::bench_job;
     use crate::mesh::{sphere, teapot};
-    use crate::presets::bench_scene;
+    use crate::model::presets::bench_scene;
+    use crate::raster::shaded::bench_job;
 
     /// Every compiled copy of the resolve this processor can run (portable, AVX2, AVX-512)
     /// shades every band of a frame into the same bytes, with the same counts, for each

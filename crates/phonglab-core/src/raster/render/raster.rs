@@ -122,7 +122,7 @@ pub struct Band<'a> {
 /// Returns the number of back faces skipped as hidden whole.
 pub fn draw_band(setup: &Setup, bin: &[u32], band: Band<'_>) -> usize {
     #[cfg(target_arch = "x86_64")]
-    if crate::specialised::has_avx2_fma() {
+    if crate::numerics::cpu::has_avx2_fma() {
         // SAFETY: the CPU has AVX2 and FMA (checked just above).
         return unsafe { draw_band_avx2(setup, bin, band) };
     }
@@ -582,7 +582,7 @@ mod tests {
     /// Can the AVX2 raster run here?
     fn avx2_here() -> bool {
         #[cfg(target_arch = "x86_64")]
-        return crate::specialised::has_avx2_fma();
+        return crate::numerics::cpu::has_avx2_fma();
         #[cfg(not(target_arch = "x86_64"))]
         false
     }
@@ -713,7 +713,7 @@ mod tests {
     #[test]
     fn the_avx2_raster_draws_what_the_portable_one_draws() {
         #[cfg(target_arch = "x86_64")]
-        if crate::specialised::has_avx2_fma() {
+        if crate::numerics::cpu::has_avx2_fma() {
             let mut next = rng(0x2545f4914f6cdd1d);
             for (w, h) in [(64, 16), (61, 16), (97, 9), (8, 3), (1, 5)] {
                 let tris: Vec<RasterTri> = (0..400).filter_map(|_| random_tri(&mut next, w, h)).collect();

@@ -32,8 +32,8 @@ use super::raster::{ScreenBarycentrics, barycentric_steps};
 use super::setup::{RasterTri, SUBPIXEL_BITS, Setup};
 use super::vertices::Vertices;
 use super::{Job, NO_TRIANGLE};
-use crate::specialised::{EyeArrays, Lighter};
-use crate::view::{FlatNormal, Shading};
+use crate::model::view::{FlatNormal, Shading};
+use crate::specialise::specialised::{EyeArrays, Lighter};
 
 /// Per-band buffers of Phong fragments, and each rasterised triangle's attributes at its
 /// three (clipped) vertices, divided by w.
@@ -102,7 +102,7 @@ struct Attributes<'a> {
 /// same bits (tested).
 fn attributes_chunk(copy: Compiled, job: &Job<'_>, verts: &Vertices, ts: &[RasterTri], out: Attributes<'_>) {
     #[cfg(target_arch = "x86_64")]
-    if copy != Compiled::Portable && crate::specialised::has_avx2_fma() {
+    if copy != Compiled::Portable && crate::numerics::cpu::has_avx2_fma() {
         // SAFETY: the processor has AVX2 and FMA (checked just above).
         return unsafe { attributes_chunk_avx2(job, verts, ts, out) };
     }
@@ -601,11 +601,11 @@ impl Compiled {
     /// The fastest copy this processor runs.
     fn best() -> Self {
         #[cfg(target_arch = "x86_64")]
-        if crate::specialised::has_avx512() {
+        if crate::numerics::cpu::has_avx512() {
             return Compiled::Avx512;
         }
         #[cfg(target_arch = "x86_64")]
-        if crate::specialised::has_avx2_fma() {
+        if crate::numerics::cpu::has_avx2_fma() {
             return Compiled::Avx2;
         }
         Compiled::Portable
@@ -623,9 +623,9 @@ pub(crate) fn resolve_band_copy(
         Compiled::Portable => Some(resolve_band_any::<false>(band, px, frags)),
         #[cfg(target_arch = "x86_64")]
         // SAFETY: each copy runs only where the processor has its features.
-        Compiled::Avx2 if crate::specialised::has_avx2_fma() => Some(unsafe { resolve_band_avx2(band, px, frags) }),
+        Compiled::Avx2 if crate::numerics::cpu::has_avx2_fma() => Some(unsafe { resolve_band_avx2(band, px, frags) }),
         #[cfg(target_arch = "x86_64")]
-        Compiled::Avx512 if crate::specialised::has_avx512() => Some(unsafe { resolve_band_avx512(band, px, frags) }),
+        Compiled::Avx512 if crate::numerics::cpu::has_avx512() => Some(unsafe { resolve_band_avx512(band, px, frags) }),
         _ => None,
     }
 }
@@ -744,7 +744,7 @@ fn resolve_band_any<const AVX2: bool>(band: &BandInput<'_>, px: &mut [[u8; 4]], 
 }
 
 /// Fragments lit in one batch, at least (whole rows are gathered first): enough for the
-/// lighting's chunks ([`CHUNK`](crate::specialised::CHUNK), 64) to run full, few enough
+/// lighting's chunks ([`CHUNK`](crate::specialise::specialised::CHUNK), 64) to run full, few enough
 /// that the fragments, their colours and their pixels stay in the core's nearest caches (a
 /// whole band's, at 1024², did not).
 const BATCH: usize = 1024;
@@ -821,11 +821,11 @@ mod tests {
     /// at 211 x 101).
     #[test]
     fn the_attribute_copies_agree_bit_for_bit() {
-        use crate::library::bench_job;
         use crate::mesh::{sphere, teapot};
-        use crate::presets::bench_scene;
+        use crate::model::presets::bench_scene;
+        use crate::raster::shaded::bench_job;
         #[cfg(target_arch = "x86_64")]
-        if !crate::specialised::has_avx2_fma() {
+        if !crate::numerics::cpu::has_avx2_fma() {
             return;
         }
         let mut two_sided = bench_scene(21);
@@ -880,7 +880,7 @@ mod tests {
     #[test]
     fn avx2_bytes_are_the_portable_bytes() {
         #[cfg(target_arch = "x86_64")]
-        if crate::specialised::has_avx2_fma() {
+        if crate::numerics::cpu::has_avx2_fma() {
             let mut values = vec![
                 f32::NAN,
                 -f32::NAN,

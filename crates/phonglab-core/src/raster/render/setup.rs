@@ -11,12 +11,11 @@ use rayon::prelude::*;
 
 use super::Job;
 use super::vertices::Vertices;
-use crate::specialised::Lighter;
-use crate::view::{FlatNormal, Shading};
+use crate::model::view::{FlatNormal, Shading};
+use crate::specialise::specialised::Lighter;
 
-/// Sub-pixel precision: 8 fractional bits, as llvmpipe.
-pub const SUBPIXEL_BITS: u32 = 8;
-const ONE: i64 = 1 << SUBPIXEL_BITS;
+pub use super::window::SUBPIXEL_BITS;
+use super::window::{ONE, WindowVert, to_window};
 /// Vertices may lie this many viewports away from the centre before x/y clipping.
 const GUARD: f32 = 8.0;
 
@@ -137,50 +136,6 @@ fn outcode(v: Vec4) -> u8 {
 #[inline(always)]
 fn trivially_rejected(c: &[Vec4; 3]) -> bool {
     outcode(c[0]) & outcode(c[1]) & outcode(c[2]) != 0
-}
-
-/// A clip-space vertex in window coordinates: fixed-point x and y (y down), depth in
-/// [0, 1], and 1/w.
-pub type WindowVert = (i64, i64, f32, f32);
-
-/// Each clip-space vertex of `clip` in window coordinates for a `width` x `height` image
-/// ([`to_window`], the same bits as setup's own), into `out`: once per mesh vertex, for the
-/// triangles that need no clipping, instead of once per triangle corner (a vertex of a
-/// closed mesh has about six triangles). Vertices outside the view volume get values no
-/// unclipped triangle reads. Runs a copy compiled for AVX2 where the processor has it
-/// (rounding inline instead of through the C library).
-pub fn window_vertices(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
-    #[cfg(target_arch = "x86_64")]
-    if crate::specialised::has_avx2_fma() {
-        // SAFETY: the CPU has AVX2 and FMA (checked just above).
-        return unsafe { window_vertices_avx2(clip, out, width, height) };
-    }
-    window_vertices_any(clip, out, width, height);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn window_vertices_avx2(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
-    window_vertices_any(clip, out, width, height);
-}
-
-#[inline(always)]
-fn window_vertices_any(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
-    let (w, h) = (width as f32, height as f32);
-    for (o, &c) in out.iter_mut().zip(clip) {
-        *o = to_window(c, w, h);
-    }
-}
-
-/// `clip` divided by w and mapped to the `width` x `height` viewport. (Inline: in
-/// [`window_vertices_avx2`] and [`setup_faces_avx2`] it rounds without calls.)
-#[inline(always)]
-fn to_window(clip: Vec4, w: f32, h: f32) -> WindowVert {
-    let iw = 1.0 / clip.w;
-    let (xn, yn, zn) = (clip.x * iw, clip.y * iw, clip.z * iw);
-    let xw = (xn + 1.0) * 0.5 * w;
-    let yw = (1.0 - yn) * 0.5 * h; // image rows go down
-    ((xw * ONE as f32).round() as i64, (yw * ONE as f32).round() as i64, ((zn + 1.0) * 0.5).clamp(0.0, 1.0), iw)
 }
 
 /// The raster triangle of window vertices `v` (with barycentrics `bary` in the mesh
@@ -339,7 +294,7 @@ fn setup_faces(
     out: &mut Vec<RasterTri>,
 ) {
     #[cfg(target_arch = "x86_64")]
-    if crate::specialised::has_avx2_fma() {
+    if crate::numerics::cpu::has_avx2_fma() {
         // SAFETY: the CPU has AVX2 and FMA (checked just above).
         return unsafe { setup_faces_avx2(job, verts, faces, width, height, out) };
     }

@@ -4,10 +4,10 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 use rayon::prelude::*;
 
 use super::Job;
-use super::setup::{WindowVert, window_vertices};
-use crate::specialised::{Lighter, Lit};
-use crate::transform::NormalMatrix;
-use crate::view::Shading;
+use super::window::{WindowVert, window_vertices};
+use crate::model::transform::NormalMatrix;
+use crate::model::view::Shading;
+use crate::specialise::specialised::{Lighter, Lit};
 
 /// Per-vertex results of stage 1.
 #[derive(Default)]
@@ -17,7 +17,7 @@ pub struct Vertices {
     /// Clip-space positions.
     pub clip: Vec<Vec4>,
     /// Window coordinates of the clip-space positions (see
-    /// [`super::setup::window_vertices`]).
+    /// [`super::window::window_vertices`]).
     pub window: Vec<WindowVert>,
     /// Eye-space normals, `(M^-1)^T n`, not yet normalised (Phong renormalises per pixel).
     pub normal: Vec<Vec3>,

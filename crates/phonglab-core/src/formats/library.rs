@@ -4,12 +4,11 @@
 
 use glam::DVec4;
 
-use crate::camera::CameraSpec;
-use crate::document::Document;
-use crate::presets::{BENCH_BACKGROUND, bench_projection, phong_demo, worksheet};
-use crate::scene::Scene;
-use crate::transform::phong_demo_eye_from_object;
-use crate::view::{FlatNormal, Framing, LightingSpace, Shading, View};
+use crate::formats::document::Document;
+use crate::model::camera::CameraSpec;
+use crate::model::presets::{phong_demo, worksheet};
+use crate::model::transform::phong_demo_eye_from_object;
+use crate::model::view::{FlatNormal, Framing, LightingSpace, View};
 
 /// The shaded view as the demo's program draws: clip space (no projection), the spin of
 /// 0.5 degrees a frame (the first frame drawn has taken one step), lit in object space,
@@ -94,7 +93,7 @@ impl DemoDeparture {
             // (the worksheet's is brass), not the demo's object colour in the highlight.
             DemoDeparture::HighlightInObjectColour => {
                 let s = d.scene.material.specular;
-                d.scene.rules.set == crate::rules::RuleSet::PhongDemo && !(s.x == s.y && s.y == s.z)
+                d.scene.rules.set == crate::model::rules::RuleSet::PhongDemo && !(s.x == s.y && s.y == s.z)
             }
         }
     }
@@ -112,25 +111,53 @@ pub fn documents() -> Vec<(String, Document)> {
     v
 }
 
-/// The benchmark's render job for `scene` (a [`crate::presets::bench_scene`] frame): its projection, Flat
-/// per face, no culling, exact pow.
-pub fn bench_job<'a>(scene: &'a Scene, mesh: &'a crate::mesh::Mesh, shading: Shading) -> crate::render::Job<'a> {
-    crate::render::Job {
-        scene,
-        mesh,
-        clip_from_object: bench_projection() * scene.eye_from_object(),
-        shading,
-        flat_normal: FlatNormal::Face,
-        background: BENCH_BACKGROUND,
-        cull_back: false,
-        options: crate::EvalOptions::default(),
+/// A document's name as this language says it: the built-in and shipped scenes' names (in
+/// whichever language they were made: scene files keep the English) in the current
+/// language; any other name as it is.
+pub fn localised_name(name: &str) -> String {
+    for id in ["doc-worksheet", "doc-worksheet-preset"] {
+        for k in 1..=5 {
+            let args = [("k", crate::locale::Arg::Text(k.to_string()))];
+            if crate::locale::Lang::ALL.iter().any(|l| crate::locale::tr_in(*l, id, &args) == name) {
+                return crate::locale::tr_args(id, &args);
+            }
+        }
     }
+    for id in ["doc-phong-demo", "doc-spotlight", "doc-three-lights"] {
+        if crate::locale::Lang::ALL.iter().any(|l| crate::locale::tr_in(*l, id, &[]) == name) {
+            return crate::locale::tr(id);
+        }
+    }
+    if let Some(material) = name.strip_prefix("Red Book teapots: ") {
+        let material = crate::model::materials::display_name(&material.replace(' ', "-"));
+        return crate::locale::tr_args("doc-redbook-teapot", &[("material", crate::locale::Arg::Text(material))]);
+    }
+    name.to_string()
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::ObjectKind;
+    use crate::locale::{Lang, Locale, with_locale};
+
+    #[test]
+    fn the_built_in_names_follow_the_language() {
+        let english = with_locale(Locale::of(Lang::En), || crate::formats::document::Document::default().name);
+        assert_eq!(english, "the worksheet, mview5");
+        assert_eq!(with_locale(Locale::of(Lang::PtPt), || localised_name(&english)), "a ficha, mview5");
+        assert_eq!(with_locale(Locale::of(Lang::PtBr), || localised_name("Ficha, mview3")), "Ficha, mview3");
+        assert_eq!(with_locale(Locale::of(Lang::En), || localised_name("Ficha, mview3")), "Worksheet, mview3");
+        assert_eq!(localised_name("my scene"), "my scene");
+        // The shipped scene files' names (English in the files).
+        let pt = |name: &str| with_locale(Locale::of(Lang::PtPt), || localised_name(name));
+        assert_eq!(pt("the Phong demo"), "a demo de Phong");
+        assert_eq!(pt("a spotlight"), "um foco");
+        assert_eq!(pt("three coloured lights and a headlight"), "três luzes coloridas e uma luz presa ao observador");
+        assert_eq!(pt("Red Book teapots: yellow rubber"), "bules do Red Book: borracha amarela");
+        assert_eq!(with_locale(Locale::of(Lang::En), || localised_name("um foco")), "a spotlight");
+    }
+
+    use crate::model::view::{ObjectKind, Shading};
 
     #[test]
     fn the_demo_view_draws_the_demos_objects() {

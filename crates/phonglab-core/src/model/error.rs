@@ -59,7 +59,7 @@ pub enum SceneError {
 fn allowed_in_words(allowed: &str) -> String {
     match allowed {
         "[0, 90], or 180 for no spotlight" => crate::t!("allowed-spot-cutoff"),
-        crate::validate::FLOAT_RANGE => crate::t!("allowed-float"),
+        FLOAT_RANGE => crate::t!("allowed-float"),
         "1, 2, 3, 4 or 5" => crate::t!("allowed-mview"),
         "an eye away from the centre, with up not along the view direction" => crate::t!("allowed-look-at"),
         "at least 1 pixel" => crate::t!("allowed-pixel"),
@@ -80,3 +80,6 @@ impl SceneError {
         }
     }
 }
+
+/// The range of a float OpenGL takes (as f32), in words.
+pub const FLOAT_RANGE: &str = "a float: 0, or 1.2e-38 <= |x| <= 3.4e38";

@@ -19,7 +19,7 @@ use glam::DVec3;
 use super::Mesh;
 
 /// The patch file as shipped in `assets/teapot.bpt` (compiled in).
-pub const TEAPOT_BPT: &str = include_str!("../../../../../assets/teapot.bpt");
+pub const TEAPOT_BPT: &str = include_str!("../../../../assets/teapot.bpt");
 
 /// A bicubic Bezier patch: control points `p[row u][column v]`.
 pub type Patch = [[DVec3; 4]; 4];

@@ -1,0 +1,123 @@
+//! The core's groups form one order, each group using only the groups below it, and
+//! modules name each other by group (`crate::equation::lighting`, not `crate::lighting`),
+//! so the order can be read off every path. From the bottom:
+//!
+//! | rank | group | what it is |
+//! |---|---|---|
+//! | 0 | locale | the user's language: every group says things |
+//! | 1 | numerics | floating point with care, numbers as typed, the processor's features |
+//! | 2 | mesh | gluSphere, gluCylinder, the teapot, OBJ files |
+//! | 3 | model | what is lit: scene, rules, materials, camera, view, presets, errors |
+//! | 4 | equation | the lighting equation and its worked calculation |
+//! | 5 | formats | documents (scene files), the document library, glref cases |
+//! | 6 | specialise | the stage list a scene needs, run over arrays |
+//! | 7 | raster | the CPU renderer and the shaded view's setup |
+//! | 8 | teach, study | exercises, quiz, shaders; the cost of accuracy |
+//! | 9 | export | the student's own code, and back |
+//!
+//! The crate's root re-exports every module for users; inside the crate no path goes
+//! through it, but for the locale's `t!` macro (exported at the root, as every
+//! `macro_rules!` macro is) and the unit tests' shared helpers (`test_support`).
+
+use std::path::Path;
+
+const ORDER: [(&str, u32); 11] = [
+    ("locale", 0),
+    ("numerics", 1),
+    ("mesh", 2),
+    ("model", 3),
+    ("equation", 4),
+    ("formats", 5),
+    ("specialise", 6),
+    ("raster", 7),
+    ("teach", 8),
+    ("study", 8),
+    ("export", 9),
+];
+
+fn rank(group: &str) -> Option<u32> {
+    ORDER.iter().find(|(g, _)| *g == group).map(|(_, r)| *r)
+}
+
+/// Every `.rs` file under `dir`.
+fn sources(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let p = entry.unwrap().path();
+        if p.is_dir() {
+            sources(&p, out);
+        } else if p.extension().is_some_and(|e| e == "rs") {
+            out.push(p);
+        }
+    }
+}
+
+/// The first path segment after each `crate::` in `text` (macros, `crate::t!`, left out),
+/// with its line number.
+fn crate_paths(text: &str) -> Vec<(usize, String)> {
+    let mut out = Vec::new();
+    for (n, line) in text.lines().enumerate() {
+        let mut rest = line;
+        while let Some(at) = rest.find("crate::") {
+            // `$crate::` is a macro's own path.
+            let before = &rest[..at];
+            let after = &rest[at + "crate::".len()..];
+            let name: String = after.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+            let is_macro = after[name.len()..].starts_with('!');
+            if !before.ends_with('$') && !before.ends_with(|c: char| c.is_alphanumeric() || c == '_') && !is_macro {
+                out.push((n + 1, name));
+            }
+            rest = after;
+        }
+    }
+    out
+}
+
+#[test]
+fn every_group_uses_only_the_groups_below_it_and_names_them() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut groups: Vec<String> = std::fs::read_dir(&src)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.is_dir())
+        .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+        .collect();
+    groups.sort();
+    let mut listed: Vec<&str> = ORDER.iter().map(|(g, _)| *g).collect();
+    listed.sort();
+    assert_eq!(groups, listed, "every group has its place in the order (this file's table)");
+    let mut wrong = Vec::new();
+    let mut checked = 0;
+    for group in &groups {
+        let own = rank(group).unwrap();
+        let mut files = Vec::new();
+        sources(&src.join(group), &mut files);
+        for file in files {
+            let text = std::fs::read_to_string(&file).unwrap();
+            let shown = file.strip_prefix(&src).unwrap().display().to_string();
+            for (line, name) in crate_paths(&text) {
+                checked += 1;
+                if name == "t" || name == "test_support" {
+                    continue;
+                }
+                match rank(&name) {
+                    None => {
+                        wrong.push(format!("src/{shown}:{line}: crate::{name} goes through the root: name its group"))
+                    }
+                    Some(r) if r > own => wrong.push(format!(
+                        "src/{shown}:{line}: {group} (rank {own}) uses {name} (rank {r}), a group above it"
+                    )),
+                    Some(_) => {}
+                }
+            }
+        }
+    }
+    assert!(checked > 200, "only {checked} paths read");
+    assert!(wrong.is_empty(), "{} paths against the order:\n{}", wrong.len(), wrong.join("\n"));
+}
+
+#[test]
+fn the_check_sees_a_path_through_the_root_and_a_macro_apart() {
+    let found =
+        crate_paths("use crate::scene::Scene; let x = crate::t!(\"id\"); $crate::locale::tr(x); // crate::model::view");
+    assert_eq!(found, vec![(1, "scene".to_string()), (1, "model".to_string())]);
+}
