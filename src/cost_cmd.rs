@@ -116,8 +116,8 @@ fn csv_fields(line: &str) -> Vec<String> {
     out
 }
 
-/// The README's tables of a `cost.csv`: one Markdown table per object, its rows as the CSV
-/// has them (the README shows exactly this, and a test keeps the two equal).
+/// docs/performance.md's tables of a `cost.csv`: one Markdown table per object, its rows as the CSV
+/// has them (docs/performance.md shows exactly this, and a test keeps the two equal).
 pub fn markdown_tables(csv: &str) -> Result<String> {
     let mut lines = csv.lines();
     let header = csv_fields(lines.next().context("an empty cost.csv")?);

@@ -319,15 +319,15 @@ fn bench_ui_times_every_case_with_every_panel_open() {
 }
 
 #[test]
-fn the_readme_cost_tables_are_the_committed_csv() {
+fn the_performance_records_cost_tables_are_the_committed_csv() {
     let root = env!("CARGO_MANIFEST_DIR");
     let csv = std::fs::read_to_string(format!("{root}/docs/cost.csv")).unwrap();
     let tables = phonglab::cost_cmd::markdown_tables(&csv).unwrap();
-    let readme = std::fs::read_to_string(format!("{root}/README.md")).unwrap();
-    let begin = readme.find("<!-- cost-tables:begin").expect("the README marks its cost tables");
+    let readme = std::fs::read_to_string(format!("{root}/docs/performance.md")).unwrap();
+    let begin = readme.find("<!-- cost-tables:begin").expect("docs/performance.md marks its cost tables");
     let begin = begin + readme[begin..].find("-->\n").unwrap() + 4;
     let end = readme.find("<!-- cost-tables:end -->").unwrap();
-    assert_eq!(readme[begin..end].trim(), tables.trim(), "regenerate the README's tables from docs/cost.csv");
+    assert_eq!(readme[begin..end].trim(), tables.trim(), "regenerate docs/performance.md's tables from docs/cost.csv");
     // Every row has its columns in place: a triangle count, then the figures.
     for row in tables.lines().filter(|l| l.starts_with("| ") && !l.starts_with("| variant")) {
         let cells: Vec<&str> = row.trim_matches('|').split(" | ").map(str::trim).collect();
