@@ -15,8 +15,7 @@
 
 use web_time::Instant;
 
-use glam::{DMat4, DVec3, Vec3};
-use rayon::prelude::*;
+use glam::{DMat4, Vec3};
 
 use crate::equation::lighting::{Engine, EvalOptions, Renormalize};
 use crate::mesh::Mesh;
@@ -24,7 +23,6 @@ use crate::model::error::SceneError;
 use crate::model::scene::{Scene, Vertex};
 use crate::model::view::{ObjectKind, Shading, View};
 use crate::numerics::pow::PowFn;
-use crate::numerics::robust::normalize_or_zero;
 use crate::raster::render::{Image, Job, Renderer};
 use crate::specialise::specialised::Lighter;
 
@@ -120,42 +118,21 @@ pub struct Reference {
     pub triangles: usize,
 }
 
-/// Renders the reference: the fine mesh rasterised for visibility, then every covered
-/// pixel lit in f64 by the general engine with the position and normal interpolated (in
-/// f64) at that point of the mesh triangle, the normal renormalised.
+/// Renders the reference: the fine mesh drawn by the plain renderer
+/// ([`crate::raster::reference`]) with Phong shading in f64: every covered pixel lit by the
+/// general engine with the eye-space position and normal interpolated at that point of the
+/// mesh triangle, the normal renormalised exactly.
 pub fn reference(setup: &Setup<'_>) -> Result<Reference, SceneError> {
     let mesh = reference_view(setup.view).mesh();
-    let mut renderer = Renderer::new();
-    renderer.keep_visibility(true);
-    let job = setup.job(&mesh, Shading::Gouraud, EvalOptions::default());
+    let options = EvalOptions { renormalize: crate::equation::lighting::Renormalize::Exact, ..EvalOptions::default() };
+    let job = setup.job(&mesh, Shading::Phong, options);
     let size = setup.size.max(1);
-    renderer.render(&job, size, size)?;
-    let engine = Engine::<f64>::new(setup.scene)?;
-    let eye_from_object = setup.scene.eye_from_object();
-    let two_sided = setup.scene.light_model.two_sided;
+    let colours = crate::raster::reference::colours(&job, size, size)?;
     let bg = setup.background.map(|c| to_u8(c) as f64 / 255.0);
-    let pixels: Vec<Option<[f64; 3]>> = (0..size * size)
-        .into_par_iter()
-        .map(|i| {
-            let s = renderer.surface_at(i)?;
-            let tri = mesh.triangles[s.triangle];
-            let w = s.barycentrics.map(f64::from);
-            let (mut p, mut n) = (DVec3::ZERO, DVec3::ZERO);
-            for k in 0..3 {
-                p += mesh.positions[tri[k] as usize].as_dvec3() * w[k];
-                n += mesh.normals[tri[k] as usize].as_dvec3() * w[k];
-            }
-            let n_eye = normalize_or_zero::<f64>(engine.normal_matrix * n);
-            let lit = engine.light_eye(eye_from_object * p.extend(1.0), n_eye);
-            let side = if s.back && two_sided { &lit.back } else { &lit.front };
-            let c = side.sum();
-            Some([0, 1, 2].map(|k| c[k].clamp(0.0, 1.0)))
-        })
-        .collect();
     Ok(Reference {
         size,
-        covered: pixels.iter().map(Option::is_some).collect(),
-        rgb: pixels.iter().map(|p| p.unwrap_or(bg)).collect(),
+        covered: colours.iter().map(Option::is_some).collect(),
+        rgb: colours.iter().map(|c| c.map_or(bg, |c| [0, 1, 2].map(|k| c[k].clamp(0.0, 1.0)))).collect(),
         triangles: mesh.triangle_count(),
     })
 }

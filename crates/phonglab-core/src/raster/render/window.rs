@@ -7,7 +7,7 @@ use glam::Vec4;
 /// Sub-pixel precision: 8 fractional bits, as llvmpipe.
 pub const SUBPIXEL_BITS: u32 = 8;
 /// One pixel in fixed point.
-pub(super) const ONE: i64 = 1 << SUBPIXEL_BITS;
+pub const ONE: i64 = 1 << SUBPIXEL_BITS;
 
 /// A clip-space vertex in window coordinates: fixed-point x and y (y down), depth in
 /// [0, 1], and 1/w.
@@ -45,7 +45,7 @@ fn window_vertices_any(clip: &[Vec4], out: &mut [WindowVert], width: usize, heig
 /// `clip` divided by w and mapped to the `width` x `height` viewport. (Inline: in
 /// [`window_vertices_avx2`] and in setup's AVX2 copy it rounds without calls.)
 #[inline(always)]
-pub(super) fn to_window(clip: Vec4, w: f32, h: f32) -> WindowVert {
+pub fn to_window(clip: Vec4, w: f32, h: f32) -> WindowVert {
     let iw = 1.0 / clip.w;
     let (xn, yn, zn) = (clip.x * iw, clip.y * iw, clip.z * iw);
     let xw = (xn + 1.0) * 0.5 * w;
