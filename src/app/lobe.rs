@@ -20,7 +20,8 @@
 use egui::{Color32, Ui};
 use egui_plot::{Line, Plot, PlotPoints, VLine};
 use glam::DVec3;
-use phonglab_core::{Scene, SpecularModel};
+use phonglab_core::lighting::terms;
+use phonglab_core::{PowFn, Scene, SpecularGate, SpecularModel};
 
 use super::palette;
 use super::state::Evaluated;
@@ -49,31 +50,40 @@ impl Lobe {
         DVec3::new(angle.sin(), angle.cos(), 0.0)
     }
 
-    /// The diffuse term towards φ (the same for every φ).
-    pub fn diffuse(&self) -> f64 {
-        self.kd * self.theta.cos().max(0.0)
+    /// N, L and V in the lobe's plane, and n·L.
+    fn vectors(&self, phi: f64) -> (DVec3, DVec3, DVec3, f64) {
+        let (n, l, v) = (DVec3::Y, Self::dir(-self.theta), Self::dir(phi));
+        (n, l, v, n.dot(l))
     }
 
-    /// The Blinn-Phong specular term towards φ.
+    /// The diffuse term towards φ (the same for every φ): kd max(n·L, 0), the engine's own
+    /// factor.
+    pub fn diffuse(&self) -> f64 {
+        let (_, _, _, n_dot_l) = self.vectors(0.0);
+        self.kd * terms::shared_factors(n_dot_l, true, false, 0.0).0
+    }
+
+    /// A specular term of cosine `cos` as the engine forms it: OpenGL's gate (no specular
+    /// from a light behind the surface), then ks max(cos, 0)^n.
+    fn specular(&self, n_dot_l: f64, cos: f64) -> f64 {
+        let allowed = terms::specular_allowed(SpecularGate::LitSide, n_dot_l, cos);
+        let p = PowFn::Exact.pow::<f64>(cos.max(0.0), self.n);
+        self.ks * terms::shared_factors(n_dot_l, true, allowed, p).1
+    }
+
+    /// The Blinn-Phong specular term towards φ: the engine's H = normalize(L + V).
     pub fn blinn(&self, phi: f64) -> f64 {
-        let (n, l, v) = (DVec3::Y, Self::dir(-self.theta), Self::dir(phi));
-        if n.dot(l) <= 0.0 {
-            return 0.0;
-        }
-        match (l + v).try_normalize() {
-            Some(h) => self.ks * phonglab_core::PowFn::Exact.pow::<f64>(n.dot(h).max(0.0), self.n),
+        let (n, l, v, n_dot_l) = self.vectors(phi);
+        match terms::halfway::<f64>(l, v) {
+            Some(h) => self.specular(n_dot_l, n.dot(h)),
             None => 0.0,
         }
     }
 
-    /// The Phong specular term towards φ.
+    /// The Phong specular term towards φ: the engine's R = 2 (n·L) n − L.
     pub fn phong(&self, phi: f64) -> f64 {
-        let (n, l, v) = (DVec3::Y, Self::dir(-self.theta), Self::dir(phi));
-        if n.dot(l) <= 0.0 {
-            return 0.0;
-        }
-        let r = 2.0 * n.dot(l) * n - l;
-        self.ks * phonglab_core::PowFn::Exact.pow::<f64>(r.dot(v).max(0.0), self.n)
+        let (n, l, v, n_dot_l) = self.vectors(phi);
+        self.specular(n_dot_l, terms::reflect::<f64>(n, l, false).dot(v))
     }
 
     /// The lobe of the scene's first light at the evaluated vertex, with the signed angle

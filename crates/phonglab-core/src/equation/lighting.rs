@@ -422,9 +422,10 @@ struct Accum<S: Real> {
 }
 
 /// The equation's per-vertex arithmetic, one function per step. The general engine and
-/// the specialised kernels (the specialise group's `specialised`, a layer above) both call these, so the two compute
-/// the same operations in the same order and agree bit for bit.
-pub(crate) mod terms {
+/// the specialised kernels (the specialise group's `specialised`, a layer above) both call
+/// these, so the two compute the same operations in the same order and agree bit for bit;
+/// the app's reflection lobe calls them too, so it draws the engine's own terms.
+pub mod terms {
     use super::*;
 
     /// n as the equation uses it, and whether GL_NORMALIZE had to scale before squaring.
@@ -469,7 +470,7 @@ pub(crate) mod terms {
 
     /// L (unit, f64; `None` when undefined) and d (f64; `None` for a directional light).
     #[inline(always)]
-    pub fn light_vector(lp: &LightPos, pos: DVec3, at_infinity: bool) -> (Option<DVec3>, Option<f64>) {
+    pub(crate) fn light_vector(lp: &LightPos, pos: DVec3, at_infinity: bool) -> (Option<DVec3>, Option<f64>) {
         match lp {
             LightPos::Positional(lp) => {
                 if at_infinity {
@@ -516,7 +517,7 @@ pub(crate) mod terms {
     /// The spot cosine `-L . s` (in f64, rounded) and whether the vertex is inside the cone
     /// `-L . s >= cos(cutoff)` (section 2.14.1, the spotlight factor).
     #[inline(always)]
-    pub fn spot_cone<S: Real>(sp: &PreparedSpot<S>, axis: DVec3, l: DVec3) -> (S, bool) {
+    pub(crate) fn spot_cone<S: Real>(sp: &PreparedSpot<S>, axis: DVec3, l: DVec3) -> (S, bool) {
         (S::from_f64(-l.dot(axis)), inside_cone(-l, axis, sp.cutoff, sp.cos_cutoff, sp.sin_cutoff))
     }
 
@@ -530,7 +531,7 @@ pub(crate) mod terms {
     /// The spot cosine `-L . s`, whether the vertex is inside the cone, and the factor
     /// (0 where the axis or L is undefined).
     #[inline(always)]
-    pub fn spot<S: Real>(sp: &PreparedSpot<S>, l64: Option<DVec3>, pow: PowFn) -> (S, bool, S) {
+    pub(crate) fn spot<S: Real>(sp: &PreparedSpot<S>, l64: Option<DVec3>, pow: PowFn) -> (S, bool, S) {
         match (sp.axis, l64) {
             (Some(axis), Some(l)) => {
                 let (cos_angle, inside) = spot_cone(sp, axis, l);
@@ -598,10 +599,15 @@ pub(crate) mod terms {
 
     /// What the specular term needs besides n and L.
     pub struct SpecularInputs<S: Real> {
+        /// H, for Blinn-Phong (`None`: undefined, or not Blinn-Phong).
         pub h: Option<S::V3>,
+        /// R, for Phong.
         pub r: Option<S::V3>,
+        /// V (`None` at the eye).
         pub v: Option<S::V3>,
+        /// When the specular is allowed.
         pub gate: SpecularGate,
+        /// Blinn-Phong or Phong.
         pub model: SpecularModel,
     }
 
@@ -656,7 +662,7 @@ pub(crate) mod terms {
     /// The side's colours from the lights' sums: `e_cm + a_cm a_cs + sum`, NaN (from
     /// opposite infinities) shown as 0; and whether that happened.
     #[inline(always)]
-    pub fn finish<S: Real>(
+    pub(crate) fn finish<S: Real>(
         m: &SideMaterial<S>,
         primary: S::V3,
         secondary: S::V3,

@@ -74,7 +74,7 @@ pub struct Image {
     pub(crate) raster: Vec<u32>,
 }
 
-/// `Image::triangle` of an uncovered pixel.
+/// The triangle recorded at an uncovered pixel (in the image's kept visibility, `raster`).
 pub const NO_TRIANGLE: u32 = u32::MAX;
 
 impl Image {

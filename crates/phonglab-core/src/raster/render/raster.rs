@@ -587,10 +587,6 @@ mod tests {
         false
     }
 
-    /// Back faces skipped whole by the hierarchical depth test are exactly those that would
-    /// have drawn nothing: the band is the same, bit for bit, as when every triangle is
-    /// drawn (front faces first, as `bin` orders them), in both the portable and the AVX2
-    /// raster; and the test does skip many.
     /// The band buffers start on a cache line, hold `n` entries, keep what was written
     /// when asked for the same size again, and fill new room with the given value.
     #[test]
@@ -615,6 +611,10 @@ mod tests {
         });
     }
 
+    /// Back faces skipped whole by the hierarchical depth test are exactly those that would
+    /// have drawn nothing: the band is the same, bit for bit, as when every triangle is
+    /// drawn (front faces first, as `bin` orders them), in both the portable and the AVX2
+    /// raster; and the test does skip many.
     #[test]
     fn hidden_back_faces_are_skipped_without_changing_a_pixel() {
         let mut next = rng(0x51afd7ed558ccd1d);

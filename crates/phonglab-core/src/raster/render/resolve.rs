@@ -338,7 +338,8 @@ fn gouraud_block(start: &[f32; 5], step: &[f32; 5], k0: usize) -> [[f32; LANES];
     out
 }
 
-/// Perspective-correct barycentrics of the original mesh triangle at pixel `i`.
+/// Perspective-correct barycentrics of the original mesh triangle of raster triangle
+/// `raster`, at the point whose screen barycentrics (of corners 1 and 2) are `l`.
 #[inline(always)]
 fn barycentrics(setup: &Setup, raster: u32, l: [f32; 2]) -> [f32; 3] {
     let t = &setup.tris[raster as usize];
