@@ -101,19 +101,6 @@ fn students_notebook(dir: &std::path::Path) -> std::path::PathBuf {
     path
 }
 
-/// A file dropped on the window, as eframe hands it to egui.
-#[derive(Debug)]
-struct Dropped(std::path::PathBuf);
-
-impl egui::DroppedFile for Dropped {
-    fn path(&self) -> &std::path::Path {
-        &self.0
-    }
-    fn bytes(&self) -> Result<Vec<u8>, String> {
-        std::fs::read(&self.0).map_err(|e| e.to_string())
-    }
-}
-
 #[test]
 fn the_export_menu_copies_each_kind_of_code_and_a_dropped_notebook_opens_as_the_scene() {
     let mut h = Harness::builder()
@@ -155,7 +142,7 @@ fn the_export_menu_copies_each_kind_of_code_and_a_dropped_notebook_opens_as_the_
 
     let dir = temp_dir("import");
     let notebook = students_notebook(&dir);
-    h.input_mut().dropped_files.push(std::sync::Arc::new(Dropped(notebook.clone())));
+    h.input_mut().dropped_files.push(std::sync::Arc::new(common::Dropped(notebook.clone())));
     h.run_steps(2);
     let s = h.state();
     assert_eq!(s.doc.camera, phonglab_core::CameraSpec::Worksheet(3), "{:?}", s.message);

@@ -404,30 +404,17 @@ fn a_bad_file_is_refused_with_its_line_and_the_scene_kept() {
     assert_eq!(h.state().doc, before);
 }
 
-/// A file dropped on the window, as eframe hands it to egui.
-#[derive(Debug)]
-struct Dropped(std::path::PathBuf);
-
-impl egui::DroppedFile for Dropped {
-    fn path(&self) -> &std::path::Path {
-        &self.0
-    }
-    fn bytes(&self) -> Result<Vec<u8>, String> {
-        std::fs::read(&self.0).map_err(|e| e.to_string())
-    }
-}
-
 #[test]
 fn dropping_a_scene_file_opens_it() {
     let mut h = harness();
     let demo = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/phong-demo.toml");
-    h.input_mut().dropped_files.push(std::sync::Arc::new(Dropped(demo.clone())));
+    h.input_mut().dropped_files.push(std::sync::Arc::new(common::Dropped(demo.clone())));
     h.run_steps(2);
     assert_eq!(h.state().doc.name, "the Phong demo");
     assert_eq!(h.state().ui.file_path, demo.display().to_string(), "Save writes back to it");
     // A dropped file that is not a scene is refused; the Phong demo stays.
     let png = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/screenshot.png");
-    h.input_mut().dropped_files.push(std::sync::Arc::new(Dropped(png)));
+    h.input_mut().dropped_files.push(std::sync::Arc::new(common::Dropped(png)));
     h.run_steps(2);
     assert!(
         matches!(&h.state().message, Some(Message::Refused(m)) if m.contains("not a text file")),
@@ -685,7 +672,7 @@ fn dropping_an_obj_file_shows_it() {
     let good = dir.join("tri.obj");
     std::fs::write(&good, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
     let mut h = harness();
-    h.input_mut().dropped_files.push(std::sync::Arc::new(Dropped(good.clone())));
+    h.input_mut().dropped_files.push(std::sync::Arc::new(common::Dropped(good.clone())));
     h.run_steps(2);
     assert_eq!(h.state().doc.view.obj.as_deref(), Some(good.to_str().unwrap()));
 }

@@ -51,3 +51,16 @@ pub fn phonglab_in(lang: &str, args: &[&str]) -> std::process::Output {
         .output()
         .expect("the binary runs")
 }
+
+/// A file dropped on the window, as eframe hands it to egui.
+#[derive(Debug)]
+pub struct Dropped(pub std::path::PathBuf);
+
+impl egui::DroppedFile for Dropped {
+    fn path(&self) -> &std::path::Path {
+        &self.0
+    }
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|e| e.to_string())
+    }
+}

@@ -235,41 +235,40 @@ fn three_or_four(v: &[f64], rule: &str) -> Result<DVec4, String> {
     }
 }
 
-/// A colour: rgb (alpha 1) or rgba.
-#[derive(Serialize, Deserialize, Clone, Copy)]
-#[serde(try_from = "Vec<f64>", into = "Vec<f64>")]
-struct Color(DVec4);
+/// A file's vector of three or four numbers (the fourth 1 when left out), read through
+/// [`three_or_four`] and refused with `rule`.
+macro_rules! three_or_four_numbers {
+    ($(#[$doc:meta])* $name:ident, $rule:literal) => {
+        $(#[$doc])*
+        #[derive(Serialize, Deserialize, Clone, Copy)]
+        #[serde(try_from = "Vec<f64>", into = "Vec<f64>")]
+        struct $name(DVec4);
 
-impl TryFrom<Vec<f64>> for Color {
-    type Error = String;
-    fn try_from(v: Vec<f64>) -> Result<Self, String> {
-        three_or_four(&v, "a colour has 3 or 4 numbers (rgb or rgba)").map(Color)
-    }
+        impl TryFrom<Vec<f64>> for $name {
+            type Error = String;
+            fn try_from(v: Vec<f64>) -> Result<Self, String> {
+                three_or_four(&v, $rule).map($name)
+            }
+        }
+
+        impl From<$name> for Vec<f64> {
+            fn from(c: $name) -> Vec<f64> {
+                c.0.to_array().to_vec()
+            }
+        }
+    };
 }
 
-impl From<Color> for Vec<f64> {
-    fn from(c: Color) -> Vec<f64> {
-        c.0.to_array().to_vec()
-    }
-}
-
-/// A homogeneous point: xyz (w = 1) or xyzw.
-#[derive(Serialize, Deserialize, Clone, Copy)]
-#[serde(try_from = "Vec<f64>", into = "Vec<f64>")]
-struct Point(DVec4);
-
-impl TryFrom<Vec<f64>> for Point {
-    type Error = String;
-    fn try_from(v: Vec<f64>) -> Result<Self, String> {
-        three_or_four(&v, "a position has 3 or 4 numbers (xyz or xyzw)").map(Point)
-    }
-}
-
-impl From<Point> for Vec<f64> {
-    fn from(p: Point) -> Vec<f64> {
-        p.0.to_array().to_vec()
-    }
-}
+three_or_four_numbers!(
+    /// A colour: rgb (alpha 1) or rgba.
+    Color,
+    "a colour has 3 or 4 numbers (rgb or rgba)"
+);
+three_or_four_numbers!(
+    /// A homogeneous point: xyz (w = 1) or xyzw.
+    Point,
+    "a position has 3 or 4 numbers (xyz or xyzw)"
+);
 
 #[derive(Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

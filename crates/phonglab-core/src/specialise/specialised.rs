@@ -235,53 +235,70 @@ fn lap(at: &mut Instant) -> Duration {
     d
 }
 
-/// Per-chunk arrays, one array per component so loops vectorise.
-struct Chunk {
-    n: usize,
+/// Declares [`Chunk`]'s arrays once, each with the value a new chunk starts with (the
+/// lanes past a chunk's length keep what was there: these values until a longer chunk
+/// has run).
+macro_rules! chunk_arrays {
+    ($($(#[$doc:meta])* $name:ident: $ty:ty = $init:expr,)*) => {
+        /// Per-chunk arrays, one array per component so loops vectorise.
+        struct Chunk {
+            n: usize,
+            $($(#[$doc])* $name: $ty,)*
+        }
+
+        impl Chunk {
+            fn new() -> Box<Self> {
+                Box::new(Chunk { n: 0, $($name: $init,)* })
+            }
+        }
+    };
+}
+
+chunk_arrays! {
     /// Positions: object space as loaded, eye space after `TransformPosition` (f64, as the
     /// general engine differences them).
-    px: [f64; CHUNK],
-    py: [f64; CHUNK],
-    pz: [f64; CHUNK],
+    px: [f64; CHUNK] = [0.0; CHUNK],
+    py: [f64; CHUNK] = [0.0; CHUNK],
+    pz: [f64; CHUNK] = [0.0; CHUNK],
     /// Normals by component, and whether each is zero.
-    nx: [f32; CHUNK],
-    ny: [f32; CHUNK],
-    nz: [f32; CHUNK],
-    zero: [bool; CHUNK],
+    nx: [f32; CHUNK] = [0.0; CHUNK],
+    ny: [f32; CHUNK] = [0.0; CHUNK],
+    nz: [f32; CHUNK] = [0.0; CHUNK],
+    zero: [bool; CHUNK] = [false; CHUNK],
     /// V per vertex, and whether it is defined.
-    vx: [f32; CHUNK],
-    vy: [f32; CHUNK],
-    vz: [f32; CHUNK],
-    v_ok: [bool; CHUNK],
+    vx: [f32; CHUNK] = [0.0; CHUNK],
+    vy: [f32; CHUNK] = [0.0; CHUNK],
+    vz: [f32; CHUNK] = [1.0; CHUNK],
+    v_ok: [bool; CHUNK] = [true; CHUNK],
     /// The current light's L (f32 and f64), whether it is defined, and d.
-    lx: [f32; CHUNK],
-    ly: [f32; CHUNK],
-    lz: [f32; CHUNK],
-    l_ok: [bool; CHUNK],
-    lx64: [f64; CHUNK],
-    ly64: [f64; CHUNK],
-    lz64: [f64; CHUNK],
-    d: [f32; CHUNK],
+    lx: [f32; CHUNK] = [0.0; CHUNK],
+    ly: [f32; CHUNK] = [0.0; CHUNK],
+    lz: [f32; CHUNK] = [0.0; CHUNK],
+    l_ok: [bool; CHUNK] = [false; CHUNK],
+    lx64: [f64; CHUNK] = [0.0; CHUNK],
+    ly64: [f64; CHUNK] = [0.0; CHUNK],
+    lz64: [f64; CHUNK] = [0.0; CHUNK],
+    d: [f32; CHUNK] = [0.0; CHUNK],
     /// The spot cosine and cone test; att spot.
-    spot_cos: [f32; CHUNK],
-    inside: [bool; CHUNK],
-    scale: [f32; CHUNK],
+    spot_cos: [f32; CHUNK] = [0.0; CHUNK],
+    inside: [bool; CHUNK] = [false; CHUNK],
+    scale: [f32; CHUNK] = [1.0; CHUNK],
     /// The current light's H (Blinn-Phong) or R (Phong), and whether it is defined.
-    hx: [f32; CHUNK],
-    hy: [f32; CHUNK],
-    hz: [f32; CHUNK],
-    h_ok: [bool; CHUNK],
+    hx: [f32; CHUNK] = [0.0; CHUNK],
+    hy: [f32; CHUNK] = [0.0; CHUNK],
+    hz: [f32; CHUNK] = [0.0; CHUNK],
+    h_ok: [bool; CHUNK] = [false; CHUNK],
     /// Per side: where the current light's specular is allowed, as its `Power` stage found
     /// it (read by its `Sum`).
-    allowed: [[bool; CHUNK]; 2],
+    allowed: [[bool; CHUNK]; 2] = [[false; CHUNK]; 2],
     /// The normals negated (the back side's), by component.
-    neg: [[f32; CHUNK]; 3],
+    neg: [[f32; CHUNK]; 3] = [[0.0; CHUNK]; 3],
     /// Per side: n . L, the specular cosine, the power.
-    ndl: [[f32; CHUNK]; 2],
-    cos: [[f32; CHUNK]; 2],
-    p: [[f32; CHUNK]; 2],
+    ndl: [[f32; CHUNK]; 2] = [[0.0; CHUNK]; 2],
+    cos: [[f32; CHUNK]; 2] = [[0.0; CHUNK]; 2],
+    p: [[f32; CHUNK]; 2] = [[1.0; CHUNK]; 2],
     /// Sums per (side, primary or secondary) and channel.
-    acc: [[[f32; CHUNK]; 3]; 4],
+    acc: [[[f32; CHUNK]; 3]; 4] = [[[0.0; CHUNK]; 3]; 4],
 }
 
 impl Chunk {
@@ -304,44 +321,6 @@ impl Chunk {
     #[inline(always)]
     fn lanes(&self) -> usize {
         CHUNK
-    }
-
-    fn new() -> Box<Self> {
-        Box::new(Chunk {
-            n: 0,
-            px: [0.0; CHUNK],
-            py: [0.0; CHUNK],
-            pz: [0.0; CHUNK],
-            nx: [0.0; CHUNK],
-            ny: [0.0; CHUNK],
-            nz: [0.0; CHUNK],
-            zero: [false; CHUNK],
-            vx: [0.0; CHUNK],
-            vy: [0.0; CHUNK],
-            vz: [1.0; CHUNK],
-            v_ok: [true; CHUNK],
-            lx: [0.0; CHUNK],
-            ly: [0.0; CHUNK],
-            lz: [0.0; CHUNK],
-            l_ok: [false; CHUNK],
-            lx64: [0.0; CHUNK],
-            ly64: [0.0; CHUNK],
-            lz64: [0.0; CHUNK],
-            d: [0.0; CHUNK],
-            spot_cos: [0.0; CHUNK],
-            inside: [false; CHUNK],
-            scale: [1.0; CHUNK],
-            hx: [0.0; CHUNK],
-            hy: [0.0; CHUNK],
-            hz: [0.0; CHUNK],
-            h_ok: [false; CHUNK],
-            allowed: [[false; CHUNK]; 2],
-            neg: [[0.0; CHUNK]; 3],
-            ndl: [[0.0; CHUNK]; 2],
-            cos: [[0.0; CHUNK]; 2],
-            p: [[1.0; CHUNK]; 2],
-            acc: [[[0.0; CHUNK]; 3]; 4],
-        })
     }
 }
 
