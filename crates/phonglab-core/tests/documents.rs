@@ -1,6 +1,8 @@
 //! Scene files: saving any valid document and loading it gives back the same document,
 //! and files that are not valid are refused with a message naming where and why.
 
+mod common;
+
 use glam::{DMat4, DVec3, DVec4};
 use phonglab_core::view::{FlatNormal, Framing, LightingSpace, ObjectKind, Shading, View, ViewCamera};
 use phonglab_core::{
@@ -46,13 +48,13 @@ fn material() -> BoxedStrategy<Material> {
 }
 
 fn light() -> BoxedStrategy<Light> {
-    (
+    common::light_from(
         (v4(), v4(), v4()),
-        (v3(), prop_oneof![Just(0.0), Just(1.0), num()]),
+        (v3(), prop_oneof![Just(0.0), Just(1.0), num()]).prop_map(|(p, w)| p.extend(w)),
         v3(),
         prop_oneof![Just(180.0), 0.0..=90.0f64],
         0.0..=128.0f64,
-        (0.001..10.0f64, 0.0..1.0f64, 0.0..1.0f64),
+        (0.001..10.0f64, 0.0..1.0f64, 0.0..1.0f64).prop_map(|(a, b, c)| [a, b, c]),
         prop_oneof![
             Just(LightPlacement::Eye),
             Just(LightPlacement::World),
@@ -60,20 +62,7 @@ fn light() -> BoxedStrategy<Light> {
             m4().prop_map(LightPlacement::Matrix),
         ],
     )
-        .prop_map(|((ambient, diffuse, specular), (p, w), spot_direction, spot_cutoff, spot_exponent, k, placement)| {
-            Light {
-                ambient,
-                diffuse,
-                specular,
-                position: p.extend(w),
-                spot_direction,
-                spot_cutoff,
-                spot_exponent,
-                attenuation: [k.0, k.1, k.2],
-                placement,
-            }
-        })
-        .boxed()
+    .boxed()
 }
 
 fn camera() -> BoxedStrategy<CameraSpec> {

@@ -5,6 +5,8 @@
 //! - moving the object, the lights and the eye by one rigid motion leaves the colour unchanged
 //!   (local viewer).
 
+mod common;
+
 use glam::{DMat4, DQuat, DVec3, DVec4};
 use phonglab_core::{
     Engine, Light, LightModel, LightPlacement, Material, NormalMode, Real, RuleSet, Rules, Scene, SpecularModel, Vertex,
@@ -67,9 +69,9 @@ fn placement() -> impl Strategy<Value = LightPlacement> {
 }
 
 fn wild_light() -> impl Strategy<Value = Light> {
-    (
+    common::light_from(
         (colour(-1.0, 2.0), colour(-1.0, 2.0), colour(-1.0, 2.0)),
-        (wild3(), prop_oneof![Just(0.0), Just(1.0), wild()]),
+        (wild3(), prop_oneof![Just(0.0), Just(1.0), wild()]).prop_map(|(p, w)| p.extend(w)),
         wild3(),
         prop_oneof![Just(180.0), 0.0..=90.0f64],
         0.0..=128.0f64,
@@ -77,30 +79,10 @@ fn wild_light() -> impl Strategy<Value = Light> {
             prop_oneof![Just(0.0), 0.0..10.0f64],
             prop_oneof![Just(0.0), 0.0..1.0f64],
             prop_oneof![Just(0.0), 0.0..0.1f64],
-        ),
+        )
+            .prop_map(|(a, b, c)| [a, b, c]),
         placement(),
     )
-        .prop_map(
-            |(
-                (ambient, diffuse, specular),
-                (p, w),
-                spot_direction,
-                spot_cutoff,
-                spot_exponent,
-                (k0, k1, k2),
-                placement,
-            )| Light {
-                ambient,
-                diffuse,
-                specular,
-                position: p.extend(w),
-                spot_direction,
-                spot_cutoff,
-                spot_exponent,
-                attenuation: [k0, k1, k2],
-                placement,
-            },
-        )
 }
 
 fn rules() -> impl Strategy<Value = Rules> {
@@ -173,36 +155,15 @@ fn tame3(r: f64) -> impl Strategy<Value = DVec3> {
 }
 
 fn tame_light() -> impl Strategy<Value = Light> {
-    (
+    common::light_from(
         (colour(0.0, 1.0), colour(0.0, 1.0), colour(0.0, 1.0)),
-        (tame3(10.0), any::<bool>()),
+        (tame3(10.0), any::<bool>()).prop_map(|(p, positional)| p.extend(if positional { 1.0 } else { 0.0 })),
         tame3(1.0),
         prop_oneof![Just(180.0), 5.0..=90.0f64],
         0.0..=128.0f64,
-        (0.2..2.0f64, 0.0..0.5f64, 0.0..0.1f64),
+        (0.2..2.0f64, 0.0..0.5f64, 0.0..0.1f64).prop_map(|(a, b, c)| [a, b, c]),
         placement(),
     )
-        .prop_map(
-            |(
-                (ambient, diffuse, specular),
-                (p, positional),
-                spot_direction,
-                spot_cutoff,
-                spot_exponent,
-                (k0, k1, k2),
-                placement,
-            )| Light {
-                ambient,
-                diffuse,
-                specular,
-                position: p.extend(if positional { 1.0 } else { 0.0 }),
-                spot_direction,
-                spot_cutoff,
-                spot_exponent,
-                attenuation: [k0, k1, k2],
-                placement,
-            },
-        )
 }
 
 prop_compose! {

@@ -52,9 +52,9 @@ fn v3(r: f64) -> impl Strategy<Value = DVec3> {
 }
 
 fn light() -> impl Strategy<Value = Light> {
-    (
+    common::light_from(
         (colour(-0.5, 1.5), colour(-0.5, 1.5), prop_oneof![Just(DVec4::new(0.0, 0.0, 0.0, 1.0)), colour(0.0, 1.0)]),
-        (v3(10.0), prop_oneof![Just(0.0), Just(1.0), 0.5..2.0f64]),
+        (v3(10.0), prop_oneof![Just(0.0), Just(1.0), 0.5..2.0f64]).prop_map(|(p, w)| p.extend(w)),
         v3(1.0),
         prop_oneof![Just(180.0), 0.0..=90.0f64],
         0.0..=128.0f64,
@@ -75,27 +75,6 @@ fn light() -> impl Strategy<Value = Light> {
             }),
         ],
     )
-        .prop_map(
-            |(
-                (ambient, diffuse, specular),
-                (p, w),
-                spot_direction,
-                spot_cutoff,
-                spot_exponent,
-                attenuation,
-                placement,
-            )| Light {
-                ambient,
-                diffuse,
-                specular,
-                position: p.extend(w),
-                spot_direction,
-                spot_cutoff,
-                spot_exponent,
-                attenuation,
-                placement,
-            },
-        )
 }
 
 fn material() -> impl Strategy<Value = Material> {

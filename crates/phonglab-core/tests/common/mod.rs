@@ -53,3 +53,40 @@ pub fn worst_ratio(ours: &CaseColors, mesa: &CaseColors, rtol: f64, atol: f64) -
     }
     worst
 }
+
+/// A random light from a strategy for each of its parts, for the property tests (each
+/// test chooses its own ranges: wild, tame, as the scene format allows).
+pub fn light_from(
+    colours: impl proptest::strategy::Strategy<Value = (glam::DVec4, glam::DVec4, glam::DVec4)>,
+    position: impl proptest::strategy::Strategy<Value = glam::DVec4>,
+    spot_direction: impl proptest::strategy::Strategy<Value = glam::DVec3>,
+    spot_cutoff: impl proptest::strategy::Strategy<Value = f64>,
+    spot_exponent: impl proptest::strategy::Strategy<Value = f64>,
+    attenuation: impl proptest::strategy::Strategy<Value = [f64; 3]>,
+    placement: impl proptest::strategy::Strategy<Value = phonglab_core::LightPlacement>,
+) -> impl proptest::strategy::Strategy<Value = phonglab_core::Light> {
+    use proptest::strategy::Strategy;
+    (colours, position, spot_direction, spot_cutoff, spot_exponent, attenuation, placement).prop_map(
+        |(
+            (ambient, diffuse, specular),
+            position,
+            spot_direction,
+            spot_cutoff,
+            spot_exponent,
+            attenuation,
+            placement,
+        )| {
+            phonglab_core::Light {
+                ambient,
+                diffuse,
+                specular,
+                position,
+                spot_direction,
+                spot_cutoff,
+                spot_exponent,
+                attenuation,
+                placement,
+            }
+        },
+    )
+}
