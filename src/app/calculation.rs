@@ -2,8 +2,9 @@
 //! with the engine's notes beside the step they concern; copies as Markdown.
 
 use egui::{RichText, Ui};
+use phonglab_core::effects::Effect;
 use phonglab_core::explain::{Explanation, Side, fmt_value};
-use phonglab_core::plan::{Effect, Stage};
+use phonglab_core::plan::Stage;
 use phonglab_core::t;
 
 use super::palette;

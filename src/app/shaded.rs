@@ -108,6 +108,16 @@ fn view_options_ui(ui: &mut Ui, view: &mut View) {
 ///
 /// Returns where the picture (and the one beside it) was drawn.
 pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eval: &Evaluated) -> Vec<egui::Rect> {
+    toolbar_ui(ui, state, cache);
+    let shown = pictures_ui(ui, state, cache);
+    let rects = std::iter::once(shown.response.rect).chain(shown.second).collect();
+    interaction_ui(ui, state, cache, &shown, eval);
+    rects
+}
+
+/// The view's toolbar: the object and the shading (and, not presenting, the switches and
+/// the view options); applies what changed, and turns the object when it spins.
+fn toolbar_ui(ui: &mut Ui, state: &mut AppState, cache: &ShadedCache) {
     let mut view = state.doc.view.clone();
     let presenting = state.ui.layout.presenting;
     let mut open_obj_requested = None;
@@ -171,6 +181,22 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
         state.doc.view.spin_degrees = (state.doc.view.spin_degrees + 0.5).rem_euclid(360.0);
         ui.ctx().request_repaint();
     }
+}
+
+/// What [`pictures_ui`] drew: the main picture's response and size, the second picture's
+/// place (the demo corrected, or the heat map), and the scene as the view lights it.
+struct Shown {
+    response: egui::Response,
+    second: Option<egui::Rect>,
+    /// The picture's side on screen, and in the renderer's pixels.
+    size: egui::Vec2,
+    px: usize,
+    scene: phonglab_core::Scene,
+}
+
+/// The pictures: the shaded view sized to the space it was given (whole pixels), drawn by
+/// the GPU or the CPU, and beside it the demo corrected or the error heat map.
+fn pictures_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) -> Shown {
     // The corrected document, when a departure the document makes is switched off.
     let corrected = corrected_document(&state.doc, &state.ui.demo_fixes);
 
@@ -187,7 +213,6 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
     let px = ((side * ppp) as usize).clamp(64, 1024);
     // One texel a screen pixel (no resampling), unless the view is wider than 1024 pixels.
     let side = if (side * ppp) as usize <= 1024 { px as f32 / ppp } else { side };
-    let camera = state.doc.view.camera;
     let main = prepare_picture(ui.ctx(), state, &mut cache.main, &state.doc, px, 0, "shaded view");
     let mut main_gpu = picture_or_refusal(state, main, &t!("shaded-cannot-render"));
     let mut corrected_gpu = corrected.as_ref().and_then(|c| {
@@ -241,15 +266,21 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
             resp
         })
         .inner;
+    Shown { response: resp, second, size, px, scene }
+}
 
-    let pictures: Vec<egui::Rect> = std::iter::once(resp.rect).chain(second).collect();
+/// What the pointer does on the picture: the vectors and lights drawn on it, a light
+/// dragged, the orbit camera turned and zoomed, a vertex picked.
+fn interaction_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, shown: &Shown, eval: &Evaluated) {
+    let (resp, size, px, scene) = (&shown.response, shown.size, shown.px, &shown.scene);
+    let camera = state.doc.view.camera;
     let overlay = Overlay {
         rect: resp.rect,
         clip_from_object: state.doc.view.clip_from_object(),
         object_from_eye: scene.eye_from_object().inverse(),
     };
     vectors_on_object_ui(ui, overlay.rect, &state.doc, eval);
-    let dragged_light = lights_ui(ui, &overlay, state, &scene);
+    let dragged_light = lights_ui(ui, &overlay, state, scene);
 
     let mut cam = camera;
     if resp.dragged() && !dragged_light && state.doc.view.framing == Framing::Orbit {
@@ -279,7 +310,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
             && let Err(e) = cache.main.render(ui.ctx(), &state.doc, state.ui.pow, px, "shaded view")
         {
             state.message = Some(Message::Refused(format!("{}: {e}", t!("shaded-cannot-render"))));
-            return pictures;
+            return;
         }
         let mesh = mesh_for(&mut cache.main.mesh, &state.doc.view);
         if let Some(i) = cache.main.renderer.pick(mesh, x, y) {
@@ -290,7 +321,6 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, eva
             }
         }
     }
-    pictures
 }
 
 /// Where the shaded view's image is, and how object and eye space map onto it.

@@ -25,7 +25,7 @@
 //! | 9 | export: the student's own code, and back | `export::notebook`, `export::pyopengl`, `export::openframeworks`, `export::read_python` |
 //! | 8 | teach: for the classroom; study: what accuracy costs | [`exercise`], [`quiz`], [`shader`]; [`cost`] |
 //! | 7 | raster: the CPU renderer | [`render`], [`shaded`] |
-//! | 6 | specialise: only the stages a scene needs | [`plan`], [`specialised`] |
+//! | 6 | specialise: only the stages a scene needs | [`plan`], [`specialised`], [`effects`] (the plan in words) |
 //! | 5 | formats: text in and out, ready-made documents | [`document`], [`library`], [`glref`] |
 //! | 4 | equation: the lighting equation and its worked calculation | [`lighting`], [`breakdown`], [`explain`], [`validate`] |
 //! | 3 | model: what is lit | [`scene`], [`rules`], [`materials`], [`camera`], [`transform`], [`view`], [`presets`], [`error`] |
@@ -51,7 +51,7 @@ pub use formats::{document, glref, library};
 pub use model::{camera, error, materials, presets, rules, scene, transform, view};
 pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
 pub use raster::{render, shaded};
-pub use specialise::{plan, specialised};
+pub use specialise::{effects, plan, specialised};
 pub use study::cost;
 pub use teach::{exercise, quiz, shader};
 

@@ -1,4 +1,5 @@
 //! Only the stages a scene needs: the key, the stage list compiled from it, and the engine that runs it.
 
+pub mod effects;
 pub mod plan;
 pub mod specialised;

@@ -1,5 +1,5 @@
-//! What a scene asks of the equation: the [`Key`] the specialised evaluator is built from,
-//! and, in words, which effects it computes and which it skips and why.
+//! What a scene asks of the equation: the [`Key`] the specialised evaluator is built from.
+//! Which effects it computes and which it skips, and why, in words: [`super::effects`].
 //!
 //! Mesa's fixed-function vertex program generator builds a state key and emits only the
 //! instructions it needs; phonglab does the same with a plan of array stages
@@ -8,14 +8,11 @@
 //! shininess reaches 0...), never when a value merely moves, so a slider move does not
 //! re-plan.
 
-use std::fmt;
-
 use crate::equation::lighting::{EvalOptions, Renormalize};
 use crate::model::rules::{Rules, SpecularModel};
 use crate::model::scene::{NormalMode, Scene};
 use crate::model::transform::NormalMatrix;
 use crate::numerics::pow::PowFn;
-use crate::specialise::specialised::CHUNK;
 
 /// One light's part of the key.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -372,38 +369,6 @@ impl EffectKind {
     }
 }
 
-/// An effect of the equation, and whether the specialised evaluator computes it: read off
-/// the compiled [`Program`], so it is true of what runs.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Effect {
-    /// Which effect.
-    pub kind: EffectKind,
-    /// The light it belongs to (`None`: the vertex).
-    pub light: Option<usize>,
-    /// What, e.g. "attenuation" (in the current language).
-    pub name: String,
-    /// Computed (true) or skipped (false).
-    pub on: bool,
-    /// Why, e.g. "the light is directional".
-    pub why: String,
-    /// The specular model (decides whether H or R is meant).
-    specular: SpecularModel,
-}
-
-impl fmt::Display for Effect {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let who = self.light.map(|i| format!("light {i} ")).unwrap_or_default();
-        write!(f, "{who}{}: {}, {}", self.name, if self.on { "computed" } else { "skipped" }, self.why)
-    }
-}
-
-impl Effect {
-    /// The step of the worked calculation this effect decides.
-    pub fn step_kind(&self) -> Option<crate::equation::explain::StepKind> {
-        self.kind.step_kind(self.specular)
-    }
-}
-
 impl Key {
     /// Positions matter only to positional lights and a per-vertex V.
     pub fn needs_positions(&self) -> bool {
@@ -413,108 +378,5 @@ impl Key {
     /// The program of object-space vertices (what Gouraud and the vertex panel run).
     pub fn program(&self) -> Program {
         Program::compile(self, SourceKind::Object)
-    }
-
-    /// Every effect with whether the program for object-space vertices runs it and why,
-    /// lights in order.
-    pub fn effects(&self) -> Vec<Effect> {
-        self.effects_of(&self.program())
-    }
-
-    /// Every effect with whether `program` runs it and why.
-    pub fn effects_of(&self, program: &Program) -> Vec<Effect> {
-        let sp = self.rules.specular;
-        let e = |kind: EffectKind, light, on: bool, why: String| Effect {
-            kind,
-            light,
-            name: kind.name(sp),
-            on,
-            why,
-            specular: sp,
-        };
-        let has = |s: Stage| program.has(s);
-        let normalised = has(Stage::NormalizeNormal) || has(Stage::RescaleNormal) || has(Stage::NormalizeNormalFast);
-        let mut out = vec![
-            e(
-                EffectKind::Normalisation,
-                None,
-                normalised,
-                match (self.normals, normalised) {
-                    (NormalMode::AsIs, false) => crate::t!("why-normalise-off"),
-                    (NormalMode::Rescale, false) => {
-                        crate::t!("why-rescale-one")
-                    }
-                    (NormalMode::Normalize, _) => crate::t!("why-normalize-on"),
-                    (NormalMode::Rescale, true) => crate::t!("why-rescale-on"),
-                    (NormalMode::AsIs, true) => crate::t!("why-renormalised"),
-                },
-            ),
-            match (has(Stage::TransformPosition), has(Stage::TransformPositionProjective), self.needs_positions()) {
-                _ if has(Stage::TranslatePosition) => {
-                    e(EffectKind::Position, None, true, crate::t!("why-position-translation"))
-                }
-                (true, _, _) => e(EffectKind::Position, None, true, crate::t!("why-position-affine")),
-                (_, true, _) => e(EffectKind::Position, None, true, crate::t!("why-position-projective")),
-                (false, false, true) => e(EffectKind::Position, None, false, crate::t!("why-position-eye")),
-                (false, false, false) => e(EffectKind::Position, None, false, crate::t!("why-position-unread")),
-            },
-            if has(Stage::ViewVector) {
-                e(
-                    EffectKind::ViewVector,
-                    None,
-                    true,
-                    if self.local_viewer {
-                        crate::t!("why-v-local", chunk = CHUNK)
-                    } else {
-                        crate::t!("why-v-worksheet")
-                    },
-                )
-            } else {
-                e(EffectKind::ViewVector, None, false, crate::t!("why-v-infinite"))
-            },
-            if has(Stage::SceneColor) {
-                e(EffectKind::SceneColor, None, true, crate::t!("why-scene-added"))
-            } else {
-                e(EffectKind::SceneColor, None, false, crate::t!("why-scene-zero"))
-            },
-            if program.stages.iter().any(|s| matches!(s, Stage::Sum(_, 1))) {
-                e(EffectKind::BackSide, None, true, crate::t!("why-two-sided"))
-            } else {
-                e(EffectKind::BackSide, None, false, crate::t!("why-one-sided"))
-            },
-        ];
-        for (i, l) in self.lights.iter().enumerate() {
-            let li = Some(i);
-            out.push(if has(Stage::LightVector(i)) {
-                e(EffectKind::LightVector, li, true, crate::t!("why-l-positional", chunk = CHUNK))
-            } else {
-                e(EffectKind::LightVector, li, false, crate::t!("why-l-directional"))
-            });
-            out.push(match (has(Stage::Attenuate(i)), l.positional) {
-                (true, _) => e(EffectKind::Attenuation, li, true, crate::t!("why-attenuation-on")),
-                (false, false) => e(EffectKind::Attenuation, li, false, crate::t!("why-attenuation-directional")),
-                (false, true) => e(EffectKind::Attenuation, li, false, crate::t!("why-attenuation-one")),
-            });
-            out.push(match (has(Stage::SpotCone(i)), l.spot) {
-                (true, _) => e(EffectKind::Spotlight, li, true, crate::t!("why-spot-on")),
-                (false, true) => e(EffectKind::Spotlight, li, false, crate::t!("why-spot-directional")),
-                (false, false) => e(EffectKind::Spotlight, li, false, crate::t!("why-spot-none")),
-            });
-            out.push(if has(Stage::Halfway(i)) || has(Stage::Reflect(i)) {
-                e(EffectKind::HalfwayOrReflection, li, true, crate::t!("why-per-vertex"))
-            } else if has(Stage::HalfwayConstant(i)) {
-                e(EffectKind::HalfwayOrReflection, li, false, crate::t!("why-h-constant"))
-            } else {
-                e(EffectKind::HalfwayOrReflection, li, false, crate::t!("why-specular-zero"))
-            });
-            out.push(if program.stages.iter().any(|s| matches!(s, Stage::Power(j, _) if *j == i)) {
-                e(EffectKind::SpecularPower, li, true, crate::t!("why-power-on"))
-            } else if !l.specular {
-                e(EffectKind::SpecularPower, li, false, crate::t!("why-power-none"))
-            } else {
-                e(EffectKind::SpecularPower, li, false, crate::t!("why-power-zero"))
-            });
-        }
-        out
     }
 }
