@@ -10,7 +10,7 @@ use std::fmt::Write as _;
 
 use crate::t;
 
-use crate::equation::breakdown::{Limit, SideColor, SideTerms, VertexLighting};
+use crate::equation::breakdown::{LightTerms, Limit, SideColor, SideTerms, VertexLighting};
 use crate::model::rules::SpecularModel;
 use crate::model::scene::Scene;
 use crate::numerics::real::{Real, Vec3Ops};
@@ -193,15 +193,39 @@ impl Builder {
 /// Builds the worked calculation of `lit` (computed from `scene`) for one side.
 pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> Explanation {
     let mut b = Builder { steps: Vec::new() };
-    let rules = scene.rules;
     let back = side == Side::Back && scene.light_model.two_sided;
-    let sign = if back { "-" } else { "" };
-    let vertex_limits = |b: &mut Builder, kind: StepKind| {
-        for l in lit.limits.iter().filter(|l| l.step_kind() == kind) {
-            b.note(l.message());
-        }
-    };
+    normal_step(&mut b, scene, lit, back);
+    position_step(&mut b, scene, lit);
+    if lit.lights().is_empty() {
+        view_step(&mut b, scene, lit);
+    }
+    for (k, t) in lit.lights().iter().enumerate() {
+        light_steps(&mut b, scene, lit, t, k == 0, back);
+    }
+    total_steps(&mut b, scene, lit, back);
+    let n = lit.lights().len();
+    let side = if back { t!("side-back") } else { t!("side-front") };
+    let heading = t!(
+        "explain-heading",
+        side = side,
+        lights = t!("lights-count", count = n),
+        precision = S::NAME,
+        rules = scene.rules.to_string()
+    );
+    Explanation { heading, steps: b.steps }
+}
 
+/// Notes on the step just pushed: the limits the engine took at the vertex for `kind`.
+fn vertex_limits<S: Real>(b: &mut Builder, lit: &VertexLighting<S>, kind: StepKind) {
+    for l in lit.limits.iter().filter(|l| l.step_kind() == kind) {
+        b.note(l.message());
+    }
+}
+
+/// Step 1: the transformed normal (reversed on the back side), with what the worksheet's
+/// `M n` does where M is not a rotation.
+fn normal_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, back: bool) {
+    let rules = scene.rules;
     let n = lit.normal_in_eye;
     let n_shown = if back { -n } else { n };
     let by_m = rules.normal_transform() == crate::model::rules::NormalTransform::Modelview;
@@ -215,7 +239,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
     };
     let ntitle = if back { t!("step-normal-back") } else { t!("step-normal") };
     b.push(StepKind::Normal, None, &ntitle, "vertexNormal".into(), &nformula, Some(dir4::<S>(n_shown)));
-    vertex_limits(&mut b, StepKind::Normal);
+    vertex_limits(b, lit, StepKind::Normal);
     if by_m {
         // Where the worksheet's M n and OpenGL's (M^-1)^T n part: say how far M is from a
         // rotation, and what that does to N.
@@ -225,7 +249,10 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
             b.note(modelview_note(&check));
         }
     }
+}
 
+/// Step 2: the vertex in eye space.
+fn position_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>) {
     let p = lit.pos_in_eye;
     b.push(
         StepKind::Position,
@@ -235,11 +262,15 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
         &t!("formula-position"),
         Some(vec![p.x, p.y, p.z, 1.0]),
     );
-    vertex_limits(&mut b, StepKind::Position);
+    vertex_limits(b, lit, StepKind::Position);
     if scene.eye_from_object() == crate::model::transform::phong_demo_eye_from_object() {
         b.note(t!("note-demo-space"));
     }
+}
 
+/// The view vector V (after the first light's distance, as the worksheet computes it).
+fn view_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>) {
+    let rules = scene.rules;
     let vformula = if scene.light_model.local_viewer {
         t!("formula-v-local")
     } else if rules.viewer_from_eye_plane() {
@@ -247,180 +278,184 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
     } else {
         t!("formula-v-infinite")
     };
-    let push_v = |b: &mut Builder| {
-        b.push(StepKind::V, None, &t!("step-v"), "vov".into(), &vformula, Some(dir4::<S>(lit.v)));
-        vertex_limits(b, StepKind::V);
-        if rules.viewer_from_eye_plane() && !scene.light_model.local_viewer && lit.pos_in_eye.z > 0.0 {
-            b.note(t!("note-vov-behind"));
+    b.push(StepKind::V, None, &t!("step-v"), "vov".into(), &vformula, Some(dir4::<S>(lit.v)));
+    vertex_limits(b, lit, StepKind::V);
+    if rules.viewer_from_eye_plane() && !scene.light_model.local_viewer && lit.pos_in_eye.z > 0.0 {
+        b.note(t!("note-vov-behind"));
+    }
+}
+
+/// One light's steps: its position, L, d (then V, for the first light), the ambient,
+/// diffuse and specular terms, attenuation, the spot factor and the light's share.
+fn light_steps<S: Real>(
+    b: &mut Builder,
+    scene: &Scene,
+    lit: &VertexLighting<S>,
+    t: &LightTerms<S>,
+    first: bool,
+    back: bool,
+) {
+    let rules = scene.rules;
+    let sign = if back { "-" } else { "" };
+    let i = Some(t.index);
+    let sfx = if lit.lights().len() > 1 { format!("[{}]", t.index) } else { String::new() };
+    let st: &SideTerms<S> = if back { &t.back } else { &t.front };
+    let lim = |b: &mut Builder, kind: StepKind| {
+        for l in t.limits.iter().filter(|l| l.step_kind() == kind) {
+            b.note(l.message());
         }
     };
-    if lit.lights().is_empty() {
-        push_v(&mut b);
+    let pe = t.pos_in_eye;
+    b.push(
+        StepKind::LightPosition,
+        i,
+        &t!("step-light-position"),
+        format!("lightPos{sfx}"),
+        &t!("formula-light-position"),
+        Some(pe.to_array().to_vec()),
+    );
+    let lformula = if t.positional { t!("formula-l-positional") } else { t!("formula-l-directional") };
+    b.push(StepKind::L, i, &t!("step-l"), format!("vlv{sfx}"), &lformula, Some(dir4::<S>(t.l)));
+    lim(b, StepKind::L);
+    let dval = t.distance.map(|d| vec![d.to_f64()]);
+    b.push(StepKind::Distance, i, &t!("step-distance"), format!("d{sfx}"), "d = |lightPos − vertexPos|", dval);
+    if t.distance.is_none() {
+        b.note(t!("note-no-distance"));
     }
-
-    for (k, t) in lit.lights().iter().enumerate() {
-        let i = Some(t.index);
-        let sfx = if lit.lights().len() > 1 { format!("[{}]", t.index) } else { String::new() };
-        let st: &SideTerms<S> = if back { &t.back } else { &t.front };
-        let lim = |b: &mut Builder, kind: StepKind| {
-            for l in t.limits.iter().filter(|l| l.step_kind() == kind) {
-                b.note(l.message());
-            }
-        };
-        let pe = t.pos_in_eye;
-        b.push(
-            StepKind::LightPosition,
-            i,
-            &t!("step-light-position"),
-            format!("lightPos{sfx}"),
-            &t!("formula-light-position"),
-            Some(pe.to_array().to_vec()),
-        );
-        let lformula = if t.positional { t!("formula-l-positional") } else { t!("formula-l-directional") };
-        b.push(StepKind::L, i, &t!("step-l"), format!("vlv{sfx}"), &lformula, Some(dir4::<S>(t.l)));
-        lim(&mut b, StepKind::L);
-        let dval = t.distance.map(|d| vec![d.to_f64()]);
-        b.push(StepKind::Distance, i, &t!("step-distance"), format!("d{sfx}"), "d = |lightPos − vertexPos|", dval);
-        if t.distance.is_none() {
-            b.note(t!("note-no-distance"));
+    lim(b, StepKind::Distance);
+    if first {
+        view_step(b, scene, lit);
+    }
+    b.push(
+        StepKind::Ambient,
+        i,
+        &t!("step-ambient"),
+        format!("Iamb{sfx}"),
+        "Iamb = Lamb · matAmb   (OpenGL: a_cl · a_cm)",
+        Some(dir4::<S>(st.ambient)),
+    );
+    b.push(
+        StepKind::CosTheta,
+        i,
+        "cos(θ)",
+        format!("cosTheta{sfx}"),
+        &format!("cosTheta = {sign}vertexNormal · vlv   (OpenGL: {sign}n · L)"),
+        Some(vec![st.n_dot_l.to_f64()]),
+    );
+    b.push(
+        StepKind::Diffuse,
+        i,
+        &t!("step-diffuse"),
+        format!("Idif{sfx}"),
+        "Idif = Ldif · matDif · max(cosTheta, 0)   (OpenGL: d_cl · d_cm · max(n · L, 0))",
+        Some(dir4::<S>(st.diffuse)),
+    );
+    match rules.specular {
+        SpecularModel::BlinnPhong => {
+            b.push(
+                StepKind::H,
+                i,
+                &t!("step-h"),
+                format!("H{sfx}"),
+                "H = normalize(vlv + vov)   (OpenGL: h = normalize(L + V))",
+                Some(dir4::<S>(t.h)),
+            );
+            lim(b, StepKind::H);
+            b.push(
+                StepKind::CosBeta,
+                i,
+                "cos(β)",
+                format!("cosBeta{sfx}"),
+                &format!("cosBeta = {sign}vertexNormal · H   (OpenGL: {sign}n · h)"),
+                Some(vec![st.spec_cos.to_f64()]),
+            );
         }
-        lim(&mut b, StepKind::Distance);
-        if k == 0 {
-            push_v(&mut b);
+        SpecularModel::Phong => {
+            b.push(
+                StepKind::R,
+                i,
+                &t!("step-r"),
+                format!("R{sfx}"),
+                &if rules.reflect_clamped() {
+                    t!("formula-r-demo")
+                } else {
+                    "R = 2 (vertexNormal · vlv) vertexNormal − vlv".to_string()
+                },
+                Some(dir4::<S>(t.r)),
+            );
+            b.push(
+                StepKind::CosBeta,
+                i,
+                "cos(α)",
+                format!("cosAlpha{sfx}"),
+                "cosAlpha = R · vov",
+                Some(vec![st.spec_cos.to_f64()]),
+            );
         }
+    }
+    let gate = match rules.specular_gate() {
+        crate::model::rules::SpecularGate::LitSide => t!("gate-lit-side"),
+        crate::model::rules::SpecularGate::PositiveCosine => t!("gate-positive"),
+        crate::model::rules::SpecularGate::None => t!("gate-none"),
+    };
+    b.push(
+        StepKind::Specular,
+        i,
+        &t!("step-specular"),
+        format!("Ispec{sfx}"),
+        &t!(
+            "formula-specular",
+            gate = gate,
+            f = crate::locale::num(st.f.to_f64(), 8),
+            cos = if rules.specular == SpecularModel::Phong { "cosAlpha" } else { "cosBeta" }
+        ),
+        Some(dir4::<S>(st.specular)),
+    );
+    let aformula = if t.positional { t!("formula-at") } else { t!("formula-at-directional") };
+    let at = t.attenuation.to_f64();
+    b.push(
+        StepKind::Attenuation,
+        i,
+        &t!("step-attenuation"),
+        format!("at{sfx}"),
+        &aformula,
+        Some(vec![if at == 0.0 { f64::INFINITY } else { 1.0 / at }]),
+    );
+    lim(b, StepKind::Attenuation);
+    if t.spot.active {
         b.push(
-            StepKind::Ambient,
+            StepKind::Spot,
             i,
-            &t!("step-ambient"),
-            format!("Iamb{sfx}"),
-            "Iamb = Lamb · matAmb   (OpenGL: a_cl · a_cm)",
-            Some(dir4::<S>(st.ambient)),
-        );
-        b.push(
-            StepKind::CosTheta,
-            i,
-            "cos(θ)",
-            format!("cosTheta{sfx}"),
-            &format!("cosTheta = {sign}vertexNormal · vlv   (OpenGL: {sign}n · L)"),
-            Some(vec![st.n_dot_l.to_f64()]),
-        );
-        b.push(
-            StepKind::Diffuse,
-            i,
-            &t!("step-diffuse"),
-            format!("Idif{sfx}"),
-            "Idif = Ldif · matDif · max(cosTheta, 0)   (OpenGL: d_cl · d_cm · max(n · L, 0))",
-            Some(dir4::<S>(st.diffuse)),
-        );
-        match rules.specular {
-            SpecularModel::BlinnPhong => {
-                b.push(
-                    StepKind::H,
-                    i,
-                    &t!("step-h"),
-                    format!("H{sfx}"),
-                    "H = normalize(vlv + vov)   (OpenGL: h = normalize(L + V))",
-                    Some(dir4::<S>(t.h)),
-                );
-                lim(&mut b, StepKind::H);
-                b.push(
-                    StepKind::CosBeta,
-                    i,
-                    "cos(β)",
-                    format!("cosBeta{sfx}"),
-                    &format!("cosBeta = {sign}vertexNormal · H   (OpenGL: {sign}n · h)"),
-                    Some(vec![st.spec_cos.to_f64()]),
-                );
-            }
-            SpecularModel::Phong => {
-                b.push(
-                    StepKind::R,
-                    i,
-                    &t!("step-r"),
-                    format!("R{sfx}"),
-                    &if rules.reflect_clamped() {
-                        t!("formula-r-demo")
-                    } else {
-                        "R = 2 (vertexNormal · vlv) vertexNormal − vlv".to_string()
-                    },
-                    Some(dir4::<S>(t.r)),
-                );
-                b.push(
-                    StepKind::CosBeta,
-                    i,
-                    "cos(α)",
-                    format!("cosAlpha{sfx}"),
-                    "cosAlpha = R · vov",
-                    Some(vec![st.spec_cos.to_f64()]),
-                );
-            }
-        }
-        let gate = match rules.specular_gate() {
-            crate::model::rules::SpecularGate::LitSide => t!("gate-lit-side"),
-            crate::model::rules::SpecularGate::PositiveCosine => t!("gate-positive"),
-            crate::model::rules::SpecularGate::None => t!("gate-none"),
-        };
-        b.push(
-            StepKind::Specular,
-            i,
-            &t!("step-specular"),
-            format!("Ispec{sfx}"),
+            &t!("step-spot"),
+            format!("spot{sfx}"),
             &t!(
-                "formula-specular",
-                gate = gate,
-                f = crate::locale::num(st.f.to_f64(), 8),
-                cos = if rules.specular == SpecularModel::Phong { "cosAlpha" } else { "cosBeta" }
+                "formula-spot",
+                cutoff = crate::locale::num(t.spot.cos_cutoff.to_f64(), 8),
+                angle = crate::locale::num(t.spot.cos_angle.to_f64(), 8)
             ),
-            Some(dir4::<S>(st.specular)),
+            Some(vec![t.spot.factor.to_f64()]),
         );
-        let aformula = if t.positional { t!("formula-at") } else { t!("formula-at-directional") };
-        let at = t.attenuation.to_f64();
-        b.push(
-            StepKind::Attenuation,
-            i,
-            &t!("step-attenuation"),
-            format!("at{sfx}"),
-            &aformula,
-            Some(vec![if at == 0.0 { f64::INFINITY } else { 1.0 / at }]),
-        );
-        lim(&mut b, StepKind::Attenuation);
-        if t.spot.active {
-            b.push(
-                StepKind::Spot,
-                i,
-                &t!("step-spot"),
-                format!("spot{sfx}"),
-                &t!(
-                    "formula-spot",
-                    cutoff = crate::locale::num(t.spot.cos_cutoff.to_f64(), 8),
-                    angle = crate::locale::num(t.spot.cos_angle.to_f64(), 8)
-                ),
-                Some(vec![t.spot.factor.to_f64()]),
-            );
-        } else {
-            b.push(
-                StepKind::Spot,
-                i,
-                &t!("step-spot"),
-                format!("spot{sfx}"),
-                &t!("formula-spot-none"),
-                Some(vec![1.0]),
-            );
-        }
-        lim(&mut b, StepKind::Spot);
-        let sep = scene.light_model.separate_specular;
-        let cformula =
-            if sep { t!("formula-share-separate") } else { "Ilight = spot · (Iamb + Idif + Ispec) / at".to_string() };
-        b.push(
-            StepKind::Contribution,
-            i,
-            &t!("step-share"),
-            format!("Ilight{sfx}"),
-            &cformula,
-            Some(dir4::<S>(st.primary)),
-        );
+    } else {
+        b.push(StepKind::Spot, i, &t!("step-spot"), format!("spot{sfx}"), &t!("formula-spot-none"), Some(vec![1.0]));
     }
+    lim(b, StepKind::Spot);
+    let sep = scene.light_model.separate_specular;
+    let cformula =
+        if sep { t!("formula-share-separate") } else { "Ilight = spot · (Iamb + Idif + Ispec) / at".to_string() };
+    b.push(
+        StepKind::Contribution,
+        i,
+        &t!("step-share"),
+        format!("Ilight{sfx}"),
+        &cformula,
+        Some(dir4::<S>(st.primary)),
+    );
+}
 
+/// The totals: the scene ambient and the emission where the rules keep them, I, the
+/// secondary colour, and the colour as drawn.
+fn total_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, back: bool) {
+    let rules = scene.rules;
     let sc: &SideColor<S> = if back { &lit.back } else { &lit.front };
     if rules.scene_ambient() {
         b.push(
@@ -441,7 +476,7 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
     };
     let pr = sc.primary.map(S::to_f64);
     b.push(StepKind::Primary, None, &t!("step-primary"), "I".into(), &iformula, Some(vec![pr[0], pr[1], pr[2], 0.0]));
-    vertex_limits(&mut b, StepKind::Primary);
+    vertex_limits(b, lit, StepKind::Primary);
     if scene.light_model.separate_specular {
         let s = sc.secondary.map(S::to_f64);
         b.push(
@@ -456,17 +491,6 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
     let c = sc.sum();
     let c = [c[0], c[1], c[2], c[3]].map(|x| x.max(S::ZERO).min(S::ONE).to_f64());
     b.push(StepKind::Clamped, None, &t!("step-clamped"), "glColor".into(), &t!("formula-clamped"), Some(c.to_vec()));
-
-    let n = lit.lights().len();
-    let side = if back { t!("side-back") } else { t!("side-front") };
-    let heading = t!(
-        "explain-heading",
-        side = side,
-        lights = t!("lights-count", count = n),
-        precision = S::NAME,
-        rules = rules.to_string()
-    );
-    Explanation { heading, steps: b.steps }
 }
 
 impl Explanation {
