@@ -295,11 +295,18 @@ fn light_steps<S: Real>(
     first: bool,
     back: bool,
 ) {
-    let rules = scene.rules;
-    let sign = if back { "-" } else { "" };
+    light_vector_steps(b, lit, t);
+    if first {
+        view_step(b, scene, lit);
+    }
+    term_steps(b, scene, lit, t, back);
+    share_steps(b, scene, lit, t, back);
+}
+
+/// The light in eye space, L and d.
+fn light_vector_steps<S: Real>(b: &mut Builder, lit: &VertexLighting<S>, t: &LightTerms<S>) {
     let i = Some(t.index);
     let sfx = if lit.lights().len() > 1 { format!("[{}]", t.index) } else { String::new() };
-    let st: &SideTerms<S> = if back { &t.back } else { &t.front };
     let lim = |b: &mut Builder, kind: StepKind| {
         for l in t.limits.iter().filter(|l| l.step_kind() == kind) {
             b.note(l.message());
@@ -323,9 +330,19 @@ fn light_steps<S: Real>(
         b.note(t!("note-no-distance"));
     }
     lim(b, StepKind::Distance);
-    if first {
-        view_step(b, scene, lit);
-    }
+}
+
+/// The ambient, diffuse and specular terms, with cos(θ), H or R, and the specular cosine.
+fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, t: &LightTerms<S>, back: bool) {
+    let (rules, i) = (scene.rules, Some(t.index));
+    let sign = if back { "-" } else { "" };
+    let sfx = if lit.lights().len() > 1 { format!("[{}]", t.index) } else { String::new() };
+    let st: &SideTerms<S> = if back { &t.back } else { &t.front };
+    let lim = |b: &mut Builder, kind: StepKind| {
+        for l in t.limits.iter().filter(|l| l.step_kind() == kind) {
+            b.note(l.message());
+        }
+    };
     b.push(
         StepKind::Ambient,
         i,
@@ -411,6 +428,18 @@ fn light_steps<S: Real>(
         ),
         Some(dir4::<S>(st.specular)),
     );
+}
+
+/// Attenuation, the spot factor, and the light's share of the colour.
+fn share_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, t: &LightTerms<S>, back: bool) {
+    let i = Some(t.index);
+    let sfx = if lit.lights().len() > 1 { format!("[{}]", t.index) } else { String::new() };
+    let st: &SideTerms<S> = if back { &t.back } else { &t.front };
+    let lim = |b: &mut Builder, kind: StepKind| {
+        for l in t.limits.iter().filter(|l| l.step_kind() == kind) {
+            b.note(l.message());
+        }
+    };
     let aformula = if t.positional { t!("formula-at") } else { t!("formula-at-directional") };
     let at = t.attenuation.to_f64();
     b.push(
