@@ -314,7 +314,7 @@ fn named_matrix_ui(ui: &mut Ui, m: &mut DMat4, name: &str) {
             for (c, x) in row.iter_mut().enumerate() {
                 let shown =
                     NumberField::new(x, t!("matrix-cell", name = name, row = r.to_string(), column = c.to_string()))
-                        .show_in_row(ui, 4);
+                        .show_in_row_ui(ui, 4);
                 changed |= shown.response.changed();
                 typed_row = typed_row.or(shown.row);
                 refused = refused.or(shown.refused);

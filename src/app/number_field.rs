@@ -168,8 +168,8 @@ impl<'a> NumberField<'a> {
 
     /// Draws the field (and the reason, when its text was refused); the response is
     /// `changed()` when the value changed: a committed text or a drag.
-    pub fn show(self, ui: &mut Ui) -> Response {
-        let shown = self.show_in_row(ui, 1);
+    pub fn show_ui(self, ui: &mut Ui) -> Response {
+        let shown = self.show_in_row_ui(ui, 1);
         if let Some(why) = &shown.refused {
             refusal_ui(ui, why);
         }
@@ -180,7 +180,7 @@ impl<'a> NumberField<'a> {
     /// row, or `n` = 1 with a label after it): `n` numbers typed into any of them
     /// (`0,5; 0,3; 0,1` or `0.5, 0.3, 0.1`) are returned for the whole row, which the
     /// caller sets; the caller shows the reason of a refusal ([`refusal_ui`]) after the row.
-    pub fn show_in_row(self, ui: &mut Ui, n: usize) -> Shown {
+    pub fn show_in_row_ui(self, ui: &mut Ui, n: usize) -> Shown {
         let NumberField { value, name, speed, accepts, width } = self;
         let mut row = None;
         let id = ui.make_persistent_id(("number field", &name));

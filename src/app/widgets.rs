@@ -22,7 +22,7 @@ pub fn slider_ui(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::Ran
         let slid = ui.add(s);
         ui.ctx().accesskit_node_builder(slid.id, |b| b.set_label(label.to_string()));
         landmark(ui.ctx(), label, slid.rect);
-        let typed = NumberField::new(value, label).width(FIELD_WIDTH).show_in_row(ui, 1);
+        let typed = NumberField::new(value, label).width(FIELD_WIDTH).show_in_row_ui(ui, 1);
         ui.add(egui::Label::new(label).wrap_mode(egui::TextWrapMode::Extend));
         if let Some(why) = &typed.refused {
             ui.end_row();
@@ -69,7 +69,7 @@ struct Landmarks(std::collections::BTreeMap<String, egui::Rect>);
 pub fn number_ui(ui: &mut Ui, label: &str, value: &mut f64, speed: f64) -> Response {
     ui.horizontal(|ui| {
         ui.label(label);
-        NumberField::new(value, label).speed(speed).show(ui)
+        NumberField::new(value, label).speed(speed).show_ui(ui)
     })
     .inner
 }
@@ -79,7 +79,7 @@ pub fn whole_number_ui(ui: &mut Ui, label: &str, value: &mut u32, range: std::op
     let mut x = f64::from(*value);
     ui.label(label);
     let accepts = Accepts::Whole { min: i64::from(*range.start()), max: i64::from(*range.end()) };
-    let changed = NumberField::new(&mut x, label).speed(0.1).accepts(accepts).width(40.0).show(ui).changed();
+    let changed = NumberField::new(&mut x, label).speed(0.1).accepts(accepts).width(40.0).show_ui(ui).changed();
     if changed {
         *value = x as u32;
     }
@@ -120,8 +120,10 @@ fn components_after_ui(
                     ui.end_row();
                 }
                 ui.small(*name);
-                let shown =
-                    NumberField::new(c, format!("{label} {name}")).speed(speed).width(FIELD_WIDTH).show_in_row(ui, n);
+                let shown = NumberField::new(c, format!("{label} {name}"))
+                    .speed(speed)
+                    .width(FIELD_WIDTH)
+                    .show_in_row_ui(ui, n);
                 changed |= shown.response.changed();
                 row = row.or(shown.row);
                 refused = refused.or(shown.refused);
