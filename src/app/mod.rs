@@ -282,6 +282,23 @@ fn presentation_keys(ctx: &egui::Context, state: &mut AppState, steps: usize) {
 
 /// The whole explorer UI.
 pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
+    let Some(eval) = frame_start_ui(ui, state) else { return };
+    let ctx = ui.ctx().clone();
+    presentation_keys(&ctx, state, eval.explanation.steps.len());
+    if state.ui.layout.presenting {
+        layout::scale_text(ui.style_mut(), layout::PRESENTATION_TEXT_SCALE);
+    }
+    let width = ui.max_rect().width();
+    egui::Panel::top("top bar").show(ui, |ui| top_bar_ui(ui, state));
+    controls_panel_ui(ui, state, width);
+    calculation_panel_ui(ui, state, &eval, width);
+    egui::CentralPanel::default().show(ui, |ui| centre_ui(ui, state, &eval));
+    windows_ui(&ctx, state);
+}
+
+/// The frame's start: the theme and the language, the keys, a quit asked for, dropped
+/// files, and the document evaluated (`None` only if even the worksheet cannot be).
+fn frame_start_ui(ui: &mut Ui, state: &mut AppState) -> Option<state::Evaluated> {
     let ctx = ui.ctx().clone();
     let visuals = state.ui.layout.theme.visuals();
     if ctx.global_style().visuals != visuals {
@@ -309,18 +326,16 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
             state.doc = Default::default();
             match state.evaluate() {
                 Ok(e) => e,
-                Err(_) => return,
+                Err(_) => return None,
             }
         }
     };
-    presentation_keys(&ctx, state, eval.explanation.steps.len());
-    if state.ui.layout.presenting {
-        layout::scale_text(ui.style_mut(), layout::PRESENTATION_TEXT_SCALE);
-    }
-    let width = ui.max_rect().width();
+    Some(eval)
+}
 
-    egui::Panel::top("top bar").show(ui, |ui| top_bar_ui(ui, state));
-
+/// The controls: a side panel, or presenting, a drawer (its own panel, so each keeps its
+/// width). Every edit goes through `AppState::apply_or_why`.
+fn controls_panel_ui(ui: &mut Ui, state: &mut AppState, width: f32) {
     let controls = |ui: &mut Ui, state: &mut AppState| {
         // Sliders sized to the panel, so a narrow panel does not widen to fit them.
         // From the panel's starting width, not its width now: a slider sized from the
@@ -349,7 +364,11 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
         .min_size(min)
         .show_collapsible(ui, &mut open, |ui| controls(ui, state));
     *(if presenting { &mut state.ui.layout.drawer_open } else { &mut state.ui.layout.controls_open }) = open;
+}
 
+/// The worked calculation's panel (the quiz in its place while the quiz is open).
+fn calculation_panel_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated, width: f32) {
+    let presenting = state.ui.layout.presenting;
     // Compare lists the steps of A and B itself, in the calculation's place.
     let mut open = (state.ui.layout.calculation_open || presenting) && !state.compare.open;
     egui::Panel::right(if presenting { "calculation (presenting)" } else { "calculation" })
@@ -384,9 +403,11 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     if !presenting && !state.compare.open {
         state.ui.layout.calculation_open = open;
     }
+}
 
-    egui::CentralPanel::default().show(ui, |ui| centre_ui(ui, state, &eval));
-
+/// The windows over the layout: the cost study (its finished work collected first), the
+/// shader, the keys.
+fn windows_ui(ctx: &egui::Context, state: &mut AppState) {
     // Finished work is collected before the window is drawn, and a frame is asked for at
     // once when something finished (the result would otherwise wait for the next input).
     let was_running = state.cost.busy();
@@ -396,8 +417,8 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     } else if running {
         ctx.request_repaint_after(std::time::Duration::from_millis(100));
     }
-    cost::cost_window_ui(&ctx, state);
-    shader_panel::shader_window_ui(&ctx, &mut state.shader, &state.doc);
+    cost::cost_window_ui(ctx, state);
+    shader_panel::shader_window_ui(ctx, &mut state.shader, &state.doc);
 
     if state.ui.show_help {
         let mut open = true;
@@ -405,7 +426,7 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
             .open(&mut open)
             .collapsible(false)
             .resizable(false)
-            .show(&ctx, help::help_ui);
+            .show(ctx, help::help_ui);
         state.ui.show_help = open;
     }
 }
