@@ -73,6 +73,14 @@ fn the_exported_openframeworks_apps_compile_against_ofs_signatures() {
         }
         let source = &files[1].1;
         assert!(source.contains("ofEnableLighting()") && source.contains("material.begin()"), "{name}");
+        // Each light and the material are set up once, in setup().
+        let setup = &source[..source.find("void ofApp::draw()").unwrap()];
+        assert_eq!(setup.matches("material.setDiffuseColor").count(), 1, "{name}");
+        assert_eq!(
+            setup.matches(".setDiffuseColor").count(),
+            1 + files[0].1.matches("ofLight light").count(),
+            "{name}"
+        );
         for file in ["ofApp.cpp", "main.cpp"] {
             let out = Command::new(cxx)
                 .args(["-std=c++17", "-fsyntax-only", "-Wall", "-Werror", "-I"])

@@ -81,9 +81,21 @@ fn up_for(dir: DVec3) -> DVec3 {
 
 fn source(doc: &Document) -> String {
     let scene = doc.shaded_scene();
-    let view = &doc.view;
     let mut s = format!("// {}\n#include \"ofApp.h\"\n\nvoid ofApp::setup() {{\n", t!("of-source-comment"));
-    // The camera: phonglab's view (gluPerspective(40, 1, 0.1, 100) and the orbit camera).
+    s.push_str(&camera_calls(&scene));
+    s.push_str(&light_calls(&scene));
+    s.push_str(&format!("    // {}\n", t!("of-material-comment")));
+    s.push_str(&material_calls("material", &scene.material, scene.rules.emission()));
+    s.push_str("}\n\nvoid ofApp::draw() {\n");
+    s.push_str(&draw_body(doc, &scene));
+    s.push_str("}\n");
+    s
+}
+
+/// The camera: phonglab's view (gluPerspective(40, 1, 0.1, 100) and the orbit camera's
+/// position and orientation).
+fn camera_calls(scene: &Scene) -> String {
+    let mut s = String::new();
     let world_from_eye = scene.eye_from_world.inverse();
     let (_, rotation, position) = world_from_eye.to_scale_rotation_translation();
     s.push_str(&format!("    // {}\n", t!("of-camera-comment")));
@@ -98,10 +110,15 @@ fn source(doc: &Document) -> String {
         f(rotation.y),
         f(rotation.z)
     ));
-    // The lights oF places.
-    for (k, &i) in oflights(&scene).iter().enumerate() {
+    s
+}
+
+/// The lights oF places: point, spot or directional, in world coordinates.
+fn light_calls(scene: &Scene) -> String {
+    let mut s = String::new();
+    for (k, &i) in oflights(scene).iter().enumerate() {
         let l = &scene.lights[i];
-        let (pos, spot_dir) = in_world(&scene, i);
+        let (pos, spot_dir) = in_world(scene, i);
         let name = format!("light{k}");
         s.push_str(&format!("    // {}\n", t!("of-light-comment", index = i)));
         if pos.w == 0.0 {
@@ -141,17 +158,22 @@ fn source(doc: &Document) -> String {
             f(l.attenuation[2])
         ));
     }
-    s.push_str(&format!("    // {}\n", t!("of-material-comment")));
-    s.push_str(&material_calls("material", &scene.material, scene.rules.emission()));
-    s.push_str("}\n\nvoid ofApp::draw() {\n");
+    s
+}
+
+/// `draw()`: the background, the camera, the lighting model (raw GL for what oF cannot
+/// say), the lights, the material and the object.
+fn draw_body(doc: &Document, scene: &Scene) -> String {
+    let view = &doc.view;
+    let mut s = String::new();
     let bg = view.background.map(|c| f64::from(c) * 255.0);
     s.push_str(&format!("    ofBackground({}, {}, {});\n    ofEnableDepthTest();\n", f(bg[0]), f(bg[1]), f(bg[2])));
     s.push_str("    cam.begin();\n    ofEnableLighting();\n");
-    s.push_str(&lighting_model(&scene));
-    for (k, _) in oflights(&scene).iter().enumerate() {
+    s.push_str(&lighting_model(scene));
+    for (k, _) in oflights(scene).iter().enumerate() {
         s.push_str(&format!("    light{k}.enable();\n"));
     }
-    s.push_str(&eye_lights(&scene));
+    s.push_str(&eye_lights(scene));
     s.push_str("    material.begin();\n");
     if let Some(back) = &scene.back_material {
         s.push_str(&format!("    // {}\n", t!("of-back-material-comment")));
@@ -159,10 +181,10 @@ fn source(doc: &Document) -> String {
     }
     s.push_str(&object(doc));
     s.push_str("    material.end();\n");
-    for (k, _) in oflights(&scene).iter().enumerate() {
+    for (k, _) in oflights(scene).iter().enumerate() {
         s.push_str(&format!("    light{k}.disable();\n"));
     }
-    s.push_str("    ofDisableLighting();\n    cam.end();\n}\n");
+    s.push_str("    ofDisableLighting();\n    cam.end();\n");
     s
 }
 
