@@ -84,8 +84,10 @@ def functions(root):
                         continue
                     depth, started, j = 0, False, i
                     while j < len(lines):
-                        depth += lines[j].count("{") - lines[j].count("}")
-                        started = started or "{" in lines[j]
+                        # Braces inside string and character literals are not the code's.
+                        code = re.sub(r'"(?:[^"\\]|\\.)*"|\'[{}]\'', "", lines[j])
+                        depth += code.count("{") - code.count("}")
+                        started = started or "{" in code
                         if started and depth <= 0:
                             break
                         j += 1

@@ -24,6 +24,7 @@
 
 use glam::{DVec3, Vec4};
 
+use crate::equation::breakdown::VertexLighting;
 use crate::equation::lighting::{Engine, Renormalize};
 use crate::model::error::SceneError;
 use crate::model::scene::Vertex;
@@ -84,7 +85,6 @@ pub fn render(job: &Job<'_>, width: usize, height: usize) -> Result<Picture, Sce
 pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<[f64; 4]>>, SceneError> {
     let engine = Engine::<f64>::with_options(job.scene, job.options)?;
     let scene = job.scene;
-    let clamp = scene.rules.clamps_vertex_colors();
     let two_sided = scene.light_model.two_sided;
     let mesh = job.mesh;
     let clip_from_object = job.clip_from_object.as_mat4();
@@ -103,7 +103,6 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
         .map(|i| engine.light(&Vertex::from_f32(mesh.positions[i], mesh.normals[i])))
         .collect();
     let eye_pos: Vec<DVec3> = lit.iter().map(|l| l.pos_in_eye).collect();
-    let eye_normal: Vec<DVec3> = lit.iter().map(|l| l.normal_transformed).collect();
 
     // Front faces first, then back faces (as the fast renderer draws them), each in mesh order.
     for pass_front in [true, false] {
@@ -165,45 +164,65 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
                     let over_w: [f64; 3] = [0, 1, 2].map(|k| screen[k] * v[order[k]].3 as f64);
                     let sum: f64 = over_w.iter().sum();
                     let bary = over_w.map(|x| x / sum);
-                    let colour = match (job.shading, face_colour) {
-                        (_, Some(c)) => c,
-                        (Shading::Gouraud, None) => {
-                            let mut c = [0.0; 4];
-                            for k in 0..3 {
-                                let l = &lit[ids[k]];
-                                let s = if side == 0 { &l.front } else { &l.back };
-                                let vc = colour_sum(s.primary, s.secondary, clamp);
-                                for ch in 0..4 {
-                                    c[ch] += bary[k] * vc[ch];
-                                }
-                            }
-                            c
-                        }
-                        _ => {
-                            let pos: DVec3 = (0..3).map(|k| bary[k] * eye_pos[ids[k]]).sum();
-                            let n = if job.shading == Shading::Flat {
-                                let [ea, eb, ec] = ids.map(|i| eye_pos[i]);
-                                plane_normal(ea, eb, ec, order != [0, 1, 2])
-                            } else {
-                                let n: DVec3 = (0..3).map(|k| bary[k] * eye_normal[ids[k]]).sum();
-                                // The interpolated normal renormalised as the options say (the
-                                // reference takes the exact length for the fast reciprocal root too).
-                                match job.options.renormalize {
-                                    Renormalize::Skip => n,
-                                    Renormalize::Exact | Renormalize::FastRsqrt => n.normalize_or_zero(),
-                                }
-                            };
-                            let l = engine.light_eye(pos.extend(1.0), n);
-                            let s = if side == 0 { &l.front } else { &l.back };
-                            colour_sum(s.primary, s.secondary, false)
-                        }
-                    };
+                    let face = Face { ids, swapped: order != [0, 1, 2], side, flat: face_colour };
+                    let colour = shade(job, &engine, &lit, &face, bary);
                     out[at] = Some(colour);
                 }
             }
         }
     }
     Ok(out)
+}
+
+/// One triangle as a pixel of it is shaded: its mesh vertices (in the order that makes
+/// its area positive; `swapped` when that is not the mesh's), the side it shows, and its
+/// colour when it has one for the whole face (Flat).
+struct Face {
+    ids: [usize; 3],
+    swapped: bool,
+    side: usize,
+    flat: Option<[f64; 4]>,
+}
+
+/// The colour of a pixel of `face` at perspective-correct barycentrics `bary`: the face's
+/// own (Flat), the vertices' colours interpolated (Gouraud), or lit here from the
+/// interpolated eye-space position and normal (Phong; the demo's Flat with the plane's
+/// normal).
+fn shade(job: &Job<'_>, engine: &Engine<f64>, lit: &[VertexLighting<f64>], face: &Face, bary: [f64; 3]) -> [f64; 4] {
+    let clamp = job.scene.rules.clamps_vertex_colors();
+    match (job.shading, face.flat) {
+        (_, Some(c)) => c,
+        (Shading::Gouraud, None) => {
+            let mut c = [0.0; 4];
+            for k in 0..3 {
+                let l = &lit[face.ids[k]];
+                let s = if face.side == 0 { &l.front } else { &l.back };
+                let vc = colour_sum(s.primary, s.secondary, clamp);
+                for ch in 0..4 {
+                    c[ch] += bary[k] * vc[ch];
+                }
+            }
+            c
+        }
+        _ => {
+            let pos: DVec3 = (0..3).map(|k| bary[k] * lit[face.ids[k]].pos_in_eye).sum();
+            let n = if job.shading == Shading::Flat {
+                let [ea, eb, ec] = face.ids.map(|i| lit[i].pos_in_eye);
+                plane_normal(ea, eb, ec, face.swapped)
+            } else {
+                let n: DVec3 = (0..3).map(|k| bary[k] * lit[face.ids[k]].normal_transformed).sum();
+                // The interpolated normal renormalised as the options say (the
+                // reference takes the exact length for the fast reciprocal root too).
+                match job.options.renormalize {
+                    Renormalize::Skip => n,
+                    Renormalize::Exact | Renormalize::FastRsqrt => n.normalize_or_zero(),
+                }
+            };
+            let l = engine.light_eye(pos.extend(1.0), n);
+            let s = if face.side == 0 { &l.front } else { &l.back };
+            colour_sum(s.primary, s.secondary, false)
+        }
+    }
 }
 
 /// The unit normal of the plane through the mesh triangle's eye-space corners `a`, `b`,
