@@ -618,6 +618,7 @@ export-copied = Copied: { $what }
 export-nothing = nothing to write
 export-import-hint = To go the other way, open or drop a worksheet notebook (.ipynb) or script (.py): its values become the scene.
 imported = Opened { $path } as a scene (the worksheet's rules unless it says otherwise).{ $notices }
+py-normal-matrix-comment = OpenGL: the inverse transpose of the modelview's 3x3; the worksheet: the 3x3 itself.
 
 ## plots
 

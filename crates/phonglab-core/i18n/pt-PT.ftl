@@ -618,6 +618,7 @@ export-copied = Copiado: { $what }
 export-nothing = nada para escrever
 export-import-hint = Para o caminho inverso, abra ou largue um caderno (.ipynb) ou programa (.py) da ficha: os seus valores passam a ser a cena.
 imported = Aberto { $path } como cena (as regras da ficha, salvo se ele disser outras).{ $notices }
+py-normal-matrix-comment = OpenGL: a inversa transposta da 3x3 da modelview; a ficha: a própria 3x3.
 
 ## plots
 

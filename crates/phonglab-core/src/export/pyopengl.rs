@@ -220,7 +220,12 @@ fn lighting_state(scene: &Scene) -> String {
 
 /// The function that gives the generated program's uniforms their values, read from GL.
 fn uniforms_from_state() -> String {
-    format!("{}\n\n", STATE_READER.replace("__DOC__", &t!("py-reader-doc")))
+    format!(
+        "{}\n\n",
+        STATE_READER
+            .replace("__DOC__", &t!("py-reader-doc"))
+            .replace("__NORMAL_MATRIX__", &t!("py-normal-matrix-comment"))
+    )
 }
 
 /// Whether the object is drawn by GLU's or GLUT's own call (else as phonglab's arrays).
@@ -336,7 +341,7 @@ def state_value(name):
     if name == "eye_from_object":
         return modelview
     if name == "normal_matrix":
-        # OpenGL: the inverse transpose of the modelview's 3x3; the worksheet: the 3x3 itself.
+        # __NORMAL_MATRIX__
         return m3 if RULES == "worksheet" else np.linalg.inv(m3).T
     if name == "rescale":
         return np.array([1.0 / np.linalg.norm(np.linalg.inv(m3)[2])])
