@@ -18,6 +18,7 @@
 //!    pixel, Flat takes its face's colour (or, as the Phong demo does, lights the pixel
 //!    with the face's normal taken from the screen derivatives).
 
+pub mod copies;
 pub mod raster;
 pub mod resolve;
 pub mod setup;
@@ -227,7 +228,7 @@ fn draw_and_shade(
             raster::with_band_buffer(px.len(), |depth, raster| {
                 let start = web_time::Instant::now();
                 let y_start = b * raster::BAND;
-                raster::draw_band(
+                copies::draw_band(
                     setup,
                     bin,
                     raster::Band { y_start: y_start as i32, width, depth, raster: &mut *raster },
@@ -243,7 +244,7 @@ fn draw_and_shade(
                     y0: y_start,
                     width,
                 };
-                let shaded = resolve::resolve_band(&input, px, frags);
+                let shaded = copies::resolve_band(&input, px, frags);
                 if let Some(kept) = kept {
                     kept.copy_from_slice(raster);
                 }
@@ -282,7 +283,7 @@ impl Renderer {
             let bin = self.bins.get(b)?;
             raster::with_band_buffer(band_rows * img.width, |depth, tri| {
                 let band = raster::Band { y_start: y_start as i32, width: img.width, depth, raster: &mut *tri };
-                raster::draw_band(&self.setup, bin, band);
+                copies::draw_band(&self.setup, bin, band);
                 tri.get((y - y_start) * img.width + x).copied()
             })?
         } else {
@@ -353,7 +354,7 @@ mod tests {
                 let rows = b * raster::BAND * w..((b + 1) * raster::BAND * w).min(w * h);
                 let want = &image.rgba[rows.start * 4..rows.end * 4];
                 let mut shaded = Vec::new();
-                for copy in [resolve::Compiled::Portable, resolve::Compiled::Avx2, resolve::Compiled::Avx512] {
+                for copy in [copies::Compiled::Portable, copies::Compiled::Avx2, copies::Compiled::Avx512] {
                     let mut px = vec![[0u8; 4]; rows.len()];
                     let raster = &image.raster[rows.clone()];
                     let y0 = b * raster::BAND;
@@ -367,7 +368,7 @@ mod tests {
                         y0,
                         width: w,
                     };
-                    let Some(s) = resolve::resolve_band_copy(copy, &input, &mut px, frags) else {
+                    let Some(s) = copies::resolve_band_copy(copy, &input, &mut px, frags) else {
                         continue;
                     };
                     assert_eq!(px.as_flattened(), want, "{copy:?}, {shading:?}, band {b}");

@@ -118,25 +118,9 @@ pub struct Band<'a> {
     pub raster: &'a mut [u32],
 }
 
-/// Clears a band and draws the triangles `bin` of `setup` into it (front faces first).
-/// Returns the number of back faces skipped as hidden whole.
-pub fn draw_band(setup: &Setup, bin: &[u32], band: Band<'_>) -> usize {
-    #[cfg(target_arch = "x86_64")]
-    if crate::numerics::cpu::has_avx2_fma() {
-        // SAFETY: the CPU has AVX2 and FMA (checked just above).
-        return unsafe { draw_band_avx2(setup, bin, band) };
-    }
-    draw_band_any::<false>(setup, bin, band)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn draw_band_avx2(setup: &Setup, bin: &[u32], band: Band<'_>) -> usize {
-    draw_band_any::<true>(setup, bin, band)
-}
-
-/// The band's loop; `AVX2`: fill blocks with AVX2 instructions (only ever instantiated
-/// inside [`draw_band_avx2`]).
+/// Clears a band and draws the triangles `bin` of `setup` into it (front faces first);
+/// returns the number of back faces skipped as hidden whole. `AVX2`: fill blocks with AVX2
+/// instructions (only ever instantiated inside the AVX2 copy, [`super::copies::draw_band`]).
 ///
 /// The front faces are drawn first ([`bin`] puts them first). Before the back faces, the
 /// band's farthest depth in each column tile is noted ([`Tiles`]), and a back face whose
@@ -144,7 +128,7 @@ fn draw_band_avx2(setup: &Setup, bin: &[u32], band: Band<'_>) -> usize {
 /// no pixel of it could pass the depth test (a hierarchical depth test, as GPUs make).
 /// Back faces only ever bring depths nearer, so the noted depths stay an upper bound.
 #[inline(always)]
-fn draw_band_any<const AVX2: bool>(setup: &Setup, bin: &[u32], mut band: Band<'_>) -> usize {
+pub(super) fn draw_band_any<const AVX2: bool>(setup: &Setup, bin: &[u32], mut band: Band<'_>) -> usize {
     band.depth.fill(1.0);
     band.raster.fill(NO_TRIANGLE);
     let front = bin.partition_point(|&ti| !setup.tris[ti as usize].back);
@@ -262,14 +246,14 @@ pub const LANES: usize = 8;
 /// barycentrics stepped in f32, as it always was here; the resolve's barycentrics are
 /// exact, [`ScreenBarycentrics`].)
 #[derive(Clone, Copy)]
-struct RowPlane {
-    l1: f32,
-    l2: f32,
-    step1: f32,
-    step2: f32,
-    z0: f32,
-    dz1: f32,
-    dz2: f32,
+pub(super) struct RowPlane {
+    pub(super) l1: f32,
+    pub(super) l2: f32,
+    pub(super) step1: f32,
+    pub(super) step2: f32,
+    pub(super) z0: f32,
+    pub(super) dz1: f32,
+    pub(super) dz2: f32,
 }
 
 /// Depth-tests the `n` pixels starting at index `at` of the band against the triangle
@@ -306,84 +290,9 @@ fn fill_span(ti: u32, plane: RowPlane, band: &mut Band<'_>, at: usize, n: usize)
     }
 }
 
-/// [`fill_span`] in AVX2 registers. The blocks are aligned to multiples of [`LANES`]
-/// pixels in the band, so that a block's loads meet earlier stores of the same block
-/// whole; lanes outside the span are masked off, and a block where no lane passes the
-/// depth test is not stored at all (a closed surface's back faces, drawn last, mostly
-/// stop there). The arithmetic is the portable loop's, operation for operation (multiply,
-/// then add; no fused multiply-add), so the bits are the same.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-#[inline]
-fn fill_span_avx2(ti: u32, plane: RowPlane, band: &mut Band<'_>, at: usize, n: usize) {
-    use std::arch::x86_64::*;
-    let RowPlane { l1: l1_0, l2: l2_0, step1, step2, z0, dz1, dz2 } = plane;
-    let iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    let (l1_0, step1, l2_0, step2) =
-        (_mm256_set1_ps(l1_0), _mm256_set1_ps(step1), _mm256_set1_ps(l2_0), _mm256_set1_ps(step2));
-    let (z0, dz1, dz2) = (_mm256_set1_ps(z0), _mm256_set1_ps(dz1), _mm256_set1_ps(dz2));
-    let (minus_one, count, new_r) = (_mm256_set1_epi32(-1), _mm256_set1_epi32(n as i32), _mm256_set1_epi32(ti as i32));
-    let end = at + n;
-    let mut i = at & !(LANES - 1);
-    while i < end {
-        let blocks = (
-            band.depth.get_mut(i..).and_then(|s| s.first_chunk_mut::<LANES>()),
-            band.raster.get_mut(i..).and_then(|s| s.first_chunk_mut::<LANES>()),
-        );
-        let (Some(d), Some(r)) = blocks else {
-            // The band's last pixels, past its last whole block: one at a time.
-            for k in i.max(at) - at..n {
-                fill_one(ti, plane, band, at, k);
-            }
-            return;
-        };
-        // k: each lane's pixel counted from the span's first (negative before it).
-        let k = _mm256_add_epi32(_mm256_set1_epi32(i as i32 - at as i32), iota);
-        let kf = _mm256_cvtepi32_ps(k);
-        let l1 = _mm256_add_ps(l1_0, _mm256_mul_ps(step1, kf));
-        let l2 = _mm256_add_ps(l2_0, _mm256_mul_ps(step2, kf));
-        let z = _mm256_add_ps(_mm256_add_ps(z0, _mm256_mul_ps(dz1, l1)), _mm256_mul_ps(dz2, l2));
-        let in_span = _mm256_and_si256(_mm256_cmpgt_epi32(k, minus_one), _mm256_cmpgt_epi32(count, k));
-        // SAFETY (the loads and stores): each array is LANES f32 or u32, 32 bytes; the
-        // unaligned forms need no alignment.
-        unsafe {
-            let old_d = _mm256_loadu_ps(d.as_ptr());
-            let pass = _mm256_and_ps(_mm256_castsi256_ps(in_span), _mm256_cmp_ps::<_CMP_LT_OQ>(z, old_d));
-            if _mm256_movemask_ps(pass) != 0 {
-                _mm256_storeu_ps(d.as_mut_ptr(), _mm256_blendv_ps(old_d, z, pass));
-                // The old triangles are read by `load_opaque` so that the compiler keeps a
-                // load, blend and store: left alone it makes them a masked store
-                // (vmaskmovps), several times slower on AMD's Zen (measured: a fifth of
-                // the raster's time).
-                let old_r = load_opaque(r.as_ptr().cast());
-                let r_new = _mm256_blendv_ps(old_r, _mm256_castsi256_ps(new_r), pass);
-                _mm256_storeu_ps(r.as_mut_ptr().cast(), r_new);
-            }
-        }
-        i += LANES;
-    }
-}
-
-/// Eight f32 (or u32) from `p` by one `vmovups`, which the compiler cannot see through.
-///
-/// # Safety
-/// `p` must be valid for reading 32 bytes, and the CPU must have AVX.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-#[inline]
-unsafe fn load_opaque(p: *const f32) -> std::arch::x86_64::__m256 {
-    let v;
-    // SAFETY: the caller's promise; the instruction reads 32 bytes at p, unaligned.
-    unsafe {
-        std::arch::asm!("vmovups {v}, ymmword ptr [{p}]", v = out(ymm_reg) v, p = in(reg) p,
-            options(pure, readonly, nostack, preserves_flags));
-    }
-    v
-}
-
 /// Pixel `k` of the span starting at `at`: [`fill_span`]'s arithmetic for one pixel.
 #[inline(always)]
-fn fill_one(ti: u32, plane: RowPlane, band: &mut Band<'_>, at: usize, k: usize) {
+pub(super) fn fill_one(ti: u32, plane: RowPlane, band: &mut Band<'_>, at: usize, k: usize) {
     let RowPlane { l1: l1_0, l2: l2_0, step1, step2, z0, dz1, dz2 } = plane;
     let kf = k as f32;
     let (l1, l2) = (l1_0 + step1 * kf, l2_0 + step2 * kf);
@@ -439,7 +348,7 @@ fn draw<const AVX2: bool>(t: &RasterTri, ti: u32, band: &mut Band<'_>) {
                 // where the processor has AVX2.
                 #[cfg(target_arch = "x86_64")]
                 unsafe {
-                    fill_span_avx2(ti, plane, band, at, n)
+                    super::copies::fill_span_avx2(ti, plane, band, at, n)
                 };
             } else {
                 fill_span(ti, plane, band, at, n);
@@ -563,7 +472,7 @@ mod tests {
         if avx2 {
             assert!(avx2_here(), "the AVX2 raster asked for where it cannot run");
             // SAFETY: the CPU has AVX2 and FMA (asserted just above).
-            return unsafe { draw_band_avx2(setup, bin, band) };
+            return unsafe { super::super::copies::draw_band_avx2(setup, bin, band) };
         }
         assert!(!avx2, "the AVX2 raster asked for off x86-64");
         draw_band_any::<false>(setup, bin, band)

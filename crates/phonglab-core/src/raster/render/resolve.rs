@@ -75,7 +75,7 @@ fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: 
     scratch.tri_pos.resize(n, [Vec3::ZERO; 3]);
     scratch.tri_nrm.resize(n, [Vec3::ZERO; 3]);
     scratch.tri_edges.resize(n, ScreenBarycentrics::default());
-    let copy = Compiled::best();
+    let copy = super::copies::Compiled::best();
     setup
         .tris
         .par_chunks(GRAIN)
@@ -84,40 +84,22 @@ fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: 
         .zip(scratch.tri_pos.par_chunks_mut(GRAIN))
         .zip(scratch.tri_nrm.par_chunks_mut(GRAIN))
         .for_each(|((((ts, edges), colors), pos), nrm)| {
-            attributes_chunk(copy, job, verts, ts, Attributes { edges, colors, pos, nrm });
+            super::copies::attributes_chunk(copy, job, verts, ts, Attributes { edges, colors, pos, nrm });
         });
 }
 
 /// Where one chunk of triangles' attributes go ([`triangle_attributes`]).
-struct Attributes<'a> {
+pub(super) struct Attributes<'a> {
     edges: &'a mut [ScreenBarycentrics],
     colors: &'a mut [ColorPlanes],
     pos: &'a mut [[Vec3; 3]],
     nrm: &'a mut [[Vec3; 3]],
 }
 
-/// The attributes of triangles `ts` (a chunk) into `out`, through the copy `copy` compiled
-/// for this processor (the portable one if it cannot run it): the AVX2 copy does the same
-/// operations, in registers of four f64 where the portable copy has SSE2's two, so the
-/// same bits (tested).
-fn attributes_chunk(copy: Compiled, job: &Job<'_>, verts: &Vertices, ts: &[RasterTri], out: Attributes<'_>) {
-    #[cfg(target_arch = "x86_64")]
-    if copy != Compiled::Portable && crate::numerics::cpu::has_avx2_fma() {
-        // SAFETY: the processor has AVX2 and FMA (checked just above).
-        return unsafe { attributes_chunk_avx2(job, verts, ts, out) };
-    }
-    let _ = copy;
-    attributes_chunk_any(job, verts, ts, out);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn attributes_chunk_avx2(job: &Job<'_>, verts: &Vertices, ts: &[RasterTri], out: Attributes<'_>) {
-    attributes_chunk_any(job, verts, ts, out);
-}
-
+/// The attributes of triangles `ts` (a chunk) into `out` (run through
+/// [`super::copies::attributes_chunk`]).
 #[inline(always)]
-fn attributes_chunk_any(job: &Job<'_>, verts: &Vertices, ts: &[RasterTri], out: Attributes<'_>) {
+pub(super) fn attributes_chunk_any(job: &Job<'_>, verts: &Vertices, ts: &[RasterTri], out: Attributes<'_>) {
     let tris = &job.mesh.triangles;
     let two = job.scene.light_model.two_sided;
     let blend3 = |t: &RasterTri, a: &[Vec3]| -> [Vec3; 3] {
@@ -211,7 +193,7 @@ fn to_u8(c: f32) -> u8 {
 /// memory would be stored in two halves and reloaded whole, which stalls).
 #[inline(always)]
 #[allow(clippy::needless_range_loop)] // lanes index several arrays; the loop vectorises
-fn rgba8(ch: &[[f32; LANES]; 4]) -> [u32; LANES] {
+pub(super) fn rgba8(ch: &[[f32; LANES]; 4]) -> [u32; LANES] {
     let mut rgba = [0u32; LANES];
     for j in 0..LANES {
         rgba[j] = to_u8(ch[0][j]) as u32
@@ -220,36 +202,6 @@ fn rgba8(ch: &[[f32; LANES]; 4]) -> [u32; LANES] {
             | (to_u8(ch[3][j]) as u32) << 24;
     }
     rgba
-}
-
-/// [`rgba8`] in AVX2 registers, with the same bytes: for a channel in [0, 1] the same
-/// multiply and add, then truncation; the clamps come from saturating packs (i32 to u16
-/// to u8) instead of a max, a min and a mask per channel. Only `min(1, c)` stays, so that
-/// a huge value cannot wrap: below 0 (or NaN, which the min passes on and the conversion
-/// turns into i32::MIN), the packs give 0 as [`to_u8`] does. A byte shuffle then
-/// interleaves the channels pixel by pixel.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-#[inline]
-fn rgba8_avx2(ch: &[[f32; LANES]; 4]) -> [u32; LANES] {
-    use std::arch::x86_64::*;
-    let (one, scale, half) = (_mm256_set1_ps(1.0), _mm256_set1_ps(255.0), _mm256_set1_ps(0.5));
-    // SAFETY (loads and stores): each array is LANES f32 or u32, 32 bytes; the unaligned
-    // forms need no alignment.
-    let q = |c: &[f32; LANES]| {
-        let v = unsafe { _mm256_loadu_ps(c.as_ptr()) };
-        // min(one, v): the second operand, v, where either is NaN.
-        _mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(_mm256_min_ps(one, v), scale), half))
-    };
-    // Per 128-bit half: r0..3 g0..3 b0..3 a0..3 (pixels 0-3), then the same for 4-7.
-    let bytes =
-        _mm256_packus_epi16(_mm256_packus_epi32(q(&ch[0]), q(&ch[1])), _mm256_packus_epi32(q(&ch[2]), q(&ch[3])));
-    let by_pixel = _mm256_setr_epi8(
-        0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15, 0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15,
-    );
-    let mut out = [0u32; LANES];
-    unsafe { _mm256_storeu_si256(out.as_mut_ptr().cast(), _mm256_shuffle_epi8(bytes, by_pixel)) };
-    out
 }
 
 /// Gouraud's interpolation set up once per triangle: the colour channels times 1/w
@@ -419,39 +371,13 @@ fn run_length(row: &[u32]) -> usize {
     let r = row[0];
     let mut n = 1;
     while let Some(block) = row.get(n..).and_then(|s| s.first_chunk::<8>()) {
-        let differ = differ8(block, r);
+        let differ = super::copies::differ8(block, r);
         if differ != 0 {
             return n + differ.trailing_zeros() as usize;
         }
         n += 8;
     }
     n + row[n..].iter().position(|&q| q != r).unwrap_or(row.len() - n)
-}
-
-/// One bit per entry of `block` that differs from `r`: two SSE2 compares and masks (the
-/// compiler turned a plain loop into eight scalar compares and shifts).
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-fn differ8(block: &[u32; 8], r: u32) -> u32 {
-    use std::arch::x86_64::{
-        __m128i, _mm_castsi128_ps, _mm_cmpeq_epi32, _mm_loadu_si128, _mm_movemask_ps, _mm_set1_epi32,
-    };
-    // SAFETY: SSE2 is part of x86_64; both loads read 16 bytes within `block`.
-    let equal = unsafe {
-        let p = block.as_ptr() as *const __m128i;
-        let rv = _mm_set1_epi32(r as i32);
-        let lo = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(_mm_loadu_si128(p), rv)));
-        let hi = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(_mm_loadu_si128(p.add(1)), rv)));
-        (lo | hi << 4) as u32
-    };
-    !equal & 0xff
-}
-
-/// One bit per entry of `block` that differs from `r`.
-#[cfg(not(target_arch = "x86_64"))]
-#[inline(always)]
-fn differ8(block: &[u32; 8], r: u32) -> u32 {
-    (0..8).fold(0u32, |m, j| m | (((block[j] != r) as u32) << j))
 }
 
 /// Sets every pixel of `px` to `c`, eight at a time (32-byte stores; a plain `fill` of
@@ -476,7 +402,7 @@ struct Run {
 }
 
 /// Pixels of a run shaded together: eight f32 lanes, one AVX2 register.
-const LANES: usize = 8;
+pub(super) const LANES: usize = 8;
 
 /// The perspective weights of [`LANES`] pixels of a run, [`screen_weights`] lane by lane:
 /// `ls[k][j]` the screen barycentric of vertex k at lane j, `s[j]` one over their sum
@@ -577,77 +503,15 @@ pub struct BandInput<'a> {
     pub width: usize,
 }
 
-/// Shades one band (`band`) into `px`, its pixels. Returns the pixels covered and the lighting
-/// evaluations made (fragments lit). Runs the fastest copy the processor has
-/// ([`Compiled::best`]): the copies do the same operations, so they give the same bits
-/// (Rust never fuses a multiply and an add by itself).
-pub fn resolve_band(band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragments) -> Shaded {
-    let copy = Compiled::best();
-    resolve_band_copy(copy, band, px, frags).unwrap_or_else(|| resolve_band_any::<false>(band, px, frags))
-}
-
-/// The compiled copies of the resolve (the AVX ones only exist on x86-64).
-#[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
-pub(crate) enum Compiled {
-    /// For any processor.
-    Portable,
-    /// For processors with AVX2 and FMA.
-    Avx2,
-    /// For processors with AVX-512 (F, DQ, VL) as well.
-    Avx512,
-}
-
-impl Compiled {
-    /// The fastest copy this processor runs.
-    fn best() -> Self {
-        #[cfg(target_arch = "x86_64")]
-        if crate::numerics::cpu::has_avx512() {
-            return Compiled::Avx512;
-        }
-        #[cfg(target_arch = "x86_64")]
-        if crate::numerics::cpu::has_avx2_fma() {
-            return Compiled::Avx2;
-        }
-        Compiled::Portable
-    }
-}
-
-/// [`resolve_band`] through one given copy; `None` if this processor cannot run it.
-pub(crate) fn resolve_band_copy(
-    copy: Compiled,
+/// One band's pixels: runs of one triangle shaded, Phong's fragments lit (run through
+/// [`super::copies::resolve_band`]).
+#[inline(always)]
+#[allow(clippy::needless_range_loop)] // lane loops: see `blend`
+pub(super) fn resolve_band_any<const AVX2: bool>(
     band: &BandInput<'_>,
     px: &mut [[u8; 4]],
     frags: &mut Fragments,
-) -> Option<Shaded> {
-    match copy {
-        Compiled::Portable => Some(resolve_band_any::<false>(band, px, frags)),
-        #[cfg(target_arch = "x86_64")]
-        // SAFETY: each copy runs only where the processor has its features.
-        Compiled::Avx2 if crate::numerics::cpu::has_avx2_fma() => Some(unsafe { resolve_band_avx2(band, px, frags) }),
-        #[cfg(target_arch = "x86_64")]
-        Compiled::Avx512 if crate::numerics::cpu::has_avx512() => Some(unsafe { resolve_band_avx512(band, px, frags) }),
-        _ => None,
-    }
-}
-
-/// [`resolve_band_avx2`] where the processor has AVX-512: the weights' f64 arithmetic, eight
-/// lanes, fits one register instead of two.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-fn resolve_band_avx512(band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragments) -> Shaded {
-    resolve_band_any::<true>(band, px, frags)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn resolve_band_avx2(band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragments) -> Shaded {
-    resolve_band_any::<true>(band, px, frags)
-}
-
-#[inline(always)]
-#[allow(clippy::needless_range_loop)] // lane loops: see `blend`
-fn resolve_band_any<const AVX2: bool>(band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragments) -> Shaded {
+) -> Shaded {
     let BandInput { job, setup, lighter, p, shared, raster, y0, width } = *band;
     let (two, per_pixel, bg) = (p.two, p.per_pixel, p.bg);
     let (tri_color, tri_pos, tri_nrm) = (shared.tri_color, shared.tri_pos, shared.tri_nrm);
@@ -686,7 +550,7 @@ fn resolve_band_any<const AVX2: bool>(band: &BandInput<'_>, px: &mut [[u8; 4]], 
                         #[cfg(target_arch = "x86_64")]
                         // SAFETY: AVX2 is only instantiated inside resolve_band_avx2 and
                         // resolve_band_avx512, which run only where the processor has AVX2.
-                        let rgba = if AVX2 { unsafe { rgba8_avx2(&ch) } } else { rgba8(&ch) };
+                        let rgba = if AVX2 { unsafe { super::copies::rgba8_avx2(&ch) } } else { rgba8(&ch) };
                         #[cfg(not(target_arch = "x86_64"))]
                         let rgba = rgba8(&ch);
                         // Whole blocks where the row has room: lanes past the run land on
@@ -840,6 +704,7 @@ mod tests {
                 r.render(&job, 211, 101).unwrap();
                 let ts = &r.setup.tris;
                 let n = ts.len();
+                use super::super::copies::{Compiled, attributes_chunk};
                 let run = |copy: Compiled| {
                     let mut edges = vec![ScreenBarycentrics::default(); n];
                     let mut colors = vec![ColorPlanes::default(); n];
@@ -914,7 +779,7 @@ mod tests {
                     ch[i % 4][i / 4] = v;
                 }
                 // SAFETY: the CPU has AVX2 (checked above).
-                let fast = unsafe { rgba8_avx2(&ch) };
+                let fast = unsafe { super::super::copies::rgba8_avx2(&ch) };
                 assert_eq!(fast, rgba8(&ch), "{ch:?}");
             }
         }

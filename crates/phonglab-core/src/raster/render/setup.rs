@@ -234,7 +234,7 @@ impl Setup {
         self.per_face.resize_with(chunks, Vec::new);
         self.per_face.par_iter_mut().enumerate().for_each(|(k, out)| {
             let faces = k * GRAIN..(k * GRAIN + GRAIN).min(tris.len());
-            setup_faces(job, verts, faces, width, height, out);
+            super::copies::setup_faces(job, verts, faces, width, height, out);
         });
         // Gathered into one array on both threads, each chunk's triangles copied to their
         // place: a serial copy (some 400 KB a frame for the teapot) left the other thread
@@ -282,40 +282,9 @@ impl Setup {
 }
 
 /// Clips, faces, culls and snaps the mesh triangles `faces` into `out` (cleared first).
-/// Runs a copy compiled for AVX2 where the processor has it, whose rounding to fixed point
-/// is inline (the portable copy calls the C library's `roundf`); the arithmetic is the
-/// same, so the bits are.
-fn setup_faces(
-    job: &Job<'_>,
-    verts: &Vertices,
-    faces: std::ops::Range<usize>,
-    width: usize,
-    height: usize,
-    out: &mut Vec<RasterTri>,
-) {
-    #[cfg(target_arch = "x86_64")]
-    if crate::numerics::cpu::has_avx2_fma() {
-        // SAFETY: the CPU has AVX2 and FMA (checked just above).
-        return unsafe { setup_faces_avx2(job, verts, faces, width, height, out) };
-    }
-    setup_faces_any(job, verts, faces, width, height, out);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn setup_faces_avx2(
-    job: &Job<'_>,
-    verts: &Vertices,
-    faces: std::ops::Range<usize>,
-    width: usize,
-    height: usize,
-    out: &mut Vec<RasterTri>,
-) {
-    setup_faces_any(job, verts, faces, width, height, out);
-}
-
+/// (Run through [`super::copies::setup_faces`].)
 #[inline(always)]
-fn setup_faces_any(
+pub(super) fn setup_faces(
     job: &Job<'_>,
     verts: &Vertices,
     faces: std::ops::Range<usize>,

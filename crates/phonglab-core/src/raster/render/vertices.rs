@@ -4,7 +4,8 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 use rayon::prelude::*;
 
 use super::Job;
-use super::window::{WindowVert, window_vertices};
+use super::copies::window_vertices;
+use super::window::WindowVert;
 use crate::model::transform::NormalMatrix;
 use crate::model::view::Shading;
 use crate::specialise::specialised::{Lighter, Lit};

@@ -17,33 +17,17 @@ pub type WindowVert = (i64, i64, f32, f32);
 /// ([`to_window`], the same bits as setup's own), into `out`: once per mesh vertex, for the
 /// triangles that need no clipping, instead of once per triangle corner (a vertex of a
 /// closed mesh has about six triangles). Vertices outside the view volume get values no
-/// unclipped triangle reads. Runs a copy compiled for AVX2 where the processor has it
-/// (rounding inline instead of through the C library).
-pub fn window_vertices(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
-    #[cfg(target_arch = "x86_64")]
-    if crate::numerics::cpu::has_avx2_fma() {
-        // SAFETY: the CPU has AVX2 and FMA (checked just above).
-        return unsafe { window_vertices_avx2(clip, out, width, height) };
-    }
-    window_vertices_any(clip, out, width, height);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn window_vertices_avx2(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
-    window_vertices_any(clip, out, width, height);
-}
-
+/// unclipped triangle reads. (Run through [`super::copies::window_vertices`].)
 #[inline(always)]
-fn window_vertices_any(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
+pub fn window_vertices(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
     let (w, h) = (width as f32, height as f32);
     for (o, &c) in out.iter_mut().zip(clip) {
         *o = to_window(c, w, h);
     }
 }
 
-/// `clip` divided by w and mapped to the `width` x `height` viewport. (Inline: in
-/// [`window_vertices_avx2`] and in setup's AVX2 copy it rounds without calls.)
+/// `clip` divided by w and mapped to the `width` x `height` viewport. (Inline: in the
+/// AVX2 copies ([`super::copies`]) it rounds without calls.)
 #[inline(always)]
 pub fn to_window(clip: Vec4, w: f32, h: f32) -> WindowVert {
     let iw = 1.0 / clip.w;
