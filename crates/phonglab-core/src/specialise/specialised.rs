@@ -35,12 +35,11 @@ use web_time::{Duration, Instant};
 
 use glam::{DVec3, Vec3};
 
+use super::copies::prefetch;
 use crate::equation::lighting::{Engine, EvalOptions, LightPos, PreparedLight, fast_rsqrt, terms};
 use crate::model::error::SceneError;
 use crate::model::rules::{SpecularGate, SpecularModel};
 use crate::model::scene::{Scene, Vertex};
-#[cfg(target_arch = "x86_64")]
-use crate::numerics::cpu::{has_avx2_fma, has_avx512};
 use crate::numerics::pow::PowFn;
 use crate::numerics::real::Vec3Ops;
 use crate::numerics::robust::{
@@ -86,7 +85,7 @@ struct LightConsts {
 }
 
 /// Where the colours go.
-enum Output<'a> {
+pub(super) enum Output<'a> {
     /// Primary and secondary per side.
     Lit { front: &'a mut [Lit], back: Option<&'a mut [Lit]> },
     /// The colour sum (primary + secondary rgb, primary alpha) per side: what a fragment
@@ -96,7 +95,7 @@ enum Output<'a> {
 
 /// Where a chunk's positions and normals come from.
 #[derive(Clone, Copy)]
-enum Source<'a> {
+pub(super) enum Source<'a> {
     /// Object space (w = 1): the program transforms them.
     Object { positions: &'a [Vec3], normals: &'a [Vec3] },
     /// Eye space: the normals as the equation uses them, or (`raw`) to renormalise.
@@ -208,7 +207,7 @@ impl Source<'_> {
 
 /// What a run records besides its output: nothing, the stages it ran (what the tests
 /// check the program against), or the time each step took.
-enum Probe<'a> {
+pub(super) enum Probe<'a> {
     None,
     Trace(&'a mut Vec<Stage>),
     /// The times so far, and when the step being timed began.
@@ -520,39 +519,10 @@ impl Lighter {
         out
     }
 
-    /// The chunked driver. Runs a copy compiled for AVX-512 or AVX2 and FMA when the CPU
-    /// has them (the same operations: FMA only replaces the library call behind `mul_add`
-    /// in the exact products).
-    fn run(&self, src: Source<'_>, out: Output<'_>, probe: Probe<'_>) {
-        #[cfg(target_arch = "x86_64")]
-        if has_avx512() {
-            // SAFETY: the CPU has AVX-512F/DQ, AVX2 and FMA (checked just above).
-            unsafe { self.run_avx512(src, out, probe) };
-            return;
-        }
-        #[cfg(target_arch = "x86_64")]
-        if has_avx2_fma() {
-            // SAFETY: the CPU has AVX2 and FMA (checked just above).
-            unsafe { self.run_avx2_fma(src, out, probe) };
-            return;
-        }
-        self.run_portable(src, out, probe);
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx512f,avx512dq,avx2,fma")]
-    fn run_avx512(&self, src: Source<'_>, out: Output<'_>, probe: Probe<'_>) {
-        self.run_portable(src, out, probe);
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,fma")]
-    fn run_avx2_fma(&self, src: Source<'_>, out: Output<'_>, probe: Probe<'_>) {
-        self.run_portable(src, out, probe);
-    }
-
+    /// The chunked driver, as the portable code has it ([`super::copies`] runs it compiled
+    /// for the processor).
     #[inline(always)]
-    fn run_portable(&self, src: Source<'_>, mut out: Output<'_>, mut probe: Probe<'_>) {
+    pub(super) fn run_portable(&self, src: Source<'_>, mut out: Output<'_>, mut probe: Probe<'_>) {
         let count = src.len();
         let front_len = match &out {
             Output::Lit { front, .. } => front.len(),
@@ -1024,25 +994,6 @@ impl Lighter {
             *o = [r[i], g[i], b[i], m.alpha];
         }
     }
-}
-
-/// Asks the processor to bring the memory of `s` into its nearest cache, one cache line
-/// at a time: a hint, which changes no result. The lighting of a large array is otherwise
-/// bound by waiting for memory (1M vertices of scene (a) took 9.5 ns a vertex, 10 000 of
-/// them, which stay in cache, 5.6).
-#[inline(always)]
-fn prefetch<T>(s: &[T]) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        let (p, len) = (s.as_ptr().cast::<i8>(), std::mem::size_of_val(s));
-        for off in (0..len).step_by(64) {
-            // SAFETY: a prefetch never faults, and the address is inside `s`.
-            unsafe { std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(p.add(off)) };
-        }
-    }
-    // Elsewhere (the browser's wasm32) there is no hint to give.
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = s;
 }
 
 /// The back side's normal `-n` into `neg`, by component (negation is exact).
