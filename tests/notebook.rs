@@ -95,23 +95,9 @@ fn the_exported_notebooks_print_what_explain_prints() {
         eprintln!("SKIPPED: the exported notebooks are not run: no python3 with NumPy here (Debian: python3-numpy)");
         return;
     };
-    let mut docs: Vec<(String, Document)> = Vec::new();
-    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes");
-    let mut files: Vec<_> = std::fs::read_dir(&scenes).unwrap().map(|e| e.unwrap().path()).collect();
-    files.extend(std::fs::read_dir(scenes.join("redbook-teapots")).unwrap().map(|e| e.unwrap().path()));
-    for f in files.iter().filter(|f| f.extension().is_some_and(|e| e == "toml")) {
-        let doc = Document::from_toml_in(&std::fs::read_to_string(f).unwrap(), f.parent()).unwrap();
-        docs.push((f.display().to_string(), doc));
-    }
-    for level in 1..=4u8 {
-        for rules in [Rules::WORKSHEET, Rules::OPENGL] {
-            let spec = Spec::level(Level::from_number(level).unwrap(), rules);
-            let count = if level == 4 { 7 } else { 6 };
-            for (k, ex) in generate(100 + level as u64, count, &spec).unwrap().into_iter().enumerate() {
-                docs.push((format!("exercise level {level} {rules:?} #{k}"), ex.doc));
-            }
-        }
-    }
+    // The shipped scenes and 50 exercises: 6 per level and rule set, 7 at level 4.
+    let mut docs = shipped_scenes();
+    docs.extend(exercises(100, |level| if level == 4 { 7 } else { 6 }));
     let exercises = docs.iter().filter(|(n, _)| n.starts_with("exercise")).count();
     assert!(exercises >= 50, "{exercises} exercises");
 
@@ -159,24 +145,40 @@ fn the_exported_notebooks_print_what_explain_prints() {
     eprintln!("{} notebooks run ({exercises} exercises), {total} printed values checked against explain", docs.len());
 }
 
-/// The scenes the round trips are tried on: the shipped ones and generated exercises.
-fn scenes_and_exercises() -> Vec<(String, Document)> {
-    let mut docs = Vec::new();
+/// Every scene file under assets/scenes/, with its path.
+fn shipped_scenes() -> Vec<(String, Document)> {
     let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes");
     let mut files: Vec<_> = std::fs::read_dir(&scenes).unwrap().map(|e| e.unwrap().path()).collect();
     files.extend(std::fs::read_dir(scenes.join("redbook-teapots")).unwrap().map(|e| e.unwrap().path()));
-    for f in files.iter().filter(|f| f.extension().is_some_and(|e| e == "toml")) {
-        let doc = Document::from_toml_in(&std::fs::read_to_string(f).unwrap(), f.parent()).unwrap();
-        docs.push((f.display().to_string(), doc));
-    }
+    files.sort();
+    files
+        .iter()
+        .filter(|f| f.extension().is_some_and(|e| e == "toml"))
+        .map(|f| {
+            (f.display().to_string(), Document::from_toml_in(&std::fs::read_to_string(f).unwrap(), f.parent()).unwrap())
+        })
+        .collect()
+}
+
+/// Generated exercises of every level under both rule sets (seed `seed + level`), `count`
+/// of them per level and rule set.
+fn exercises(seed: u64, count: impl Fn(u8) -> usize) -> Vec<(String, Document)> {
+    let mut docs = Vec::new();
     for level in 1..=4u8 {
         for rules in [Rules::WORKSHEET, Rules::OPENGL] {
             let spec = Spec::level(Level::from_number(level).unwrap(), rules);
-            for (k, ex) in generate(200 + level as u64, 4, &spec).unwrap().into_iter().enumerate() {
+            for (k, ex) in generate(seed + level as u64, count(level), &spec).unwrap().into_iter().enumerate() {
                 docs.push((format!("exercise level {level} {rules:?} #{k}"), ex.doc));
             }
         }
     }
+    docs
+}
+
+/// The scenes the round trips are tried on: the shipped ones and 32 generated exercises.
+fn scenes_and_exercises() -> Vec<(String, Document)> {
+    let mut docs = shipped_scenes();
+    docs.extend(exercises(200, |_| 4));
     docs
 }
 
