@@ -93,12 +93,8 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
 
     // Per vertex: window coordinates, the eye-space position and normal, and for Gouraud
     // the colour of each side.
-    let window: Vec<_> = mesh
-        .positions
-        .iter()
-        .map(|p| to_window(clip_from_object * p.extend(1.0), width as f32, height as f32))
-        .collect();
     let clip: Vec<Vec4> = mesh.positions.iter().map(|p| clip_from_object * p.extend(1.0)).collect();
+    let window: Vec<_> = clip.iter().map(|&c| to_window(c, width as f32, height as f32)).collect();
     let lit: Vec<_> = (0..mesh.positions.len())
         .map(|i| engine.light(&Vertex::from_f32(mesh.positions[i], mesh.normals[i])))
         .collect();
