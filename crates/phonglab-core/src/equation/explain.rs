@@ -222,6 +222,18 @@ fn vertex_limits<S: Real>(b: &mut Builder, lit: &VertexLighting<S>, kind: StepKi
     }
 }
 
+/// Notes on the step just pushed: the limits the engine took for light `t` at `kind`.
+fn light_limits<S: Real>(b: &mut Builder, t: &LightTerms<S>, kind: StepKind) {
+    for l in t.limits.iter().filter(|l| l.step_kind() == kind) {
+        b.note(l.message());
+    }
+}
+
+/// The index a light's names carry (`vlv[1]`), where there is more than one light.
+fn light_suffix<S: Real>(lit: &VertexLighting<S>, t: &LightTerms<S>) -> String {
+    if lit.lights().len() > 1 { format!("[{}]", t.index) } else { String::new() }
+}
+
 /// Step 1: the transformed normal (reversed on the back side), with what the worksheet's
 /// `M n` does where M is not a rotation.
 fn normal_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, back: bool) {
@@ -306,12 +318,7 @@ fn light_steps<S: Real>(
 /// The light in eye space, L and d.
 fn light_vector_steps<S: Real>(b: &mut Builder, lit: &VertexLighting<S>, t: &LightTerms<S>) {
     let i = Some(t.index);
-    let sfx = if lit.lights().len() > 1 { format!("[{}]", t.index) } else { String::new() };
-    let lim = |b: &mut Builder, kind: StepKind| {
-        for l in t.limits.iter().filter(|l| l.step_kind() == kind) {
-            b.note(l.message());
-        }
-    };
+    let sfx = light_suffix(lit, t);
     let pe = t.pos_in_eye;
     b.push(
         StepKind::LightPosition,
@@ -323,26 +330,21 @@ fn light_vector_steps<S: Real>(b: &mut Builder, lit: &VertexLighting<S>, t: &Lig
     );
     let lformula = if t.positional { t!("formula-l-positional") } else { t!("formula-l-directional") };
     b.push(StepKind::L, i, &t!("step-l"), format!("vlv{sfx}"), &lformula, Some(dir4::<S>(t.l)));
-    lim(b, StepKind::L);
+    light_limits(b, t, StepKind::L);
     let dval = t.distance.map(|d| vec![d.to_f64()]);
     b.push(StepKind::Distance, i, &t!("step-distance"), format!("d{sfx}"), "d = |lightPos − vertexPos|", dval);
     if t.distance.is_none() {
         b.note(t!("note-no-distance"));
     }
-    lim(b, StepKind::Distance);
+    light_limits(b, t, StepKind::Distance);
 }
 
 /// The ambient, diffuse and specular terms, with cos(θ), H or R, and the specular cosine.
 fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, t: &LightTerms<S>, back: bool) {
     let (rules, i) = (scene.rules, Some(t.index));
     let sign = if back { "-" } else { "" };
-    let sfx = if lit.lights().len() > 1 { format!("[{}]", t.index) } else { String::new() };
+    let sfx = light_suffix(lit, t);
     let st: &SideTerms<S> = if back { &t.back } else { &t.front };
-    let lim = |b: &mut Builder, kind: StepKind| {
-        for l in t.limits.iter().filter(|l| l.step_kind() == kind) {
-            b.note(l.message());
-        }
-    };
     b.push(
         StepKind::Ambient,
         i,
@@ -377,7 +379,7 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
                 "H = normalize(vlv + vov)   (OpenGL: h = normalize(L + V))",
                 Some(dir4::<S>(t.h)),
             );
-            lim(b, StepKind::H);
+            light_limits(b, t, StepKind::H);
             b.push(
                 StepKind::CosBeta,
                 i,
@@ -433,13 +435,8 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
 /// Attenuation, the spot factor, and the light's share of the colour.
 fn share_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, t: &LightTerms<S>, back: bool) {
     let i = Some(t.index);
-    let sfx = if lit.lights().len() > 1 { format!("[{}]", t.index) } else { String::new() };
+    let sfx = light_suffix(lit, t);
     let st: &SideTerms<S> = if back { &t.back } else { &t.front };
-    let lim = |b: &mut Builder, kind: StepKind| {
-        for l in t.limits.iter().filter(|l| l.step_kind() == kind) {
-            b.note(l.message());
-        }
-    };
     let aformula = if t.positional { t!("formula-at") } else { t!("formula-at-directional") };
     let at = t.attenuation.to_f64();
     b.push(
@@ -450,7 +447,7 @@ fn share_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
         &aformula,
         Some(vec![if at == 0.0 { f64::INFINITY } else { 1.0 / at }]),
     );
-    lim(b, StepKind::Attenuation);
+    light_limits(b, t, StepKind::Attenuation);
     if t.spot.active {
         b.push(
             StepKind::Spot,
@@ -467,7 +464,7 @@ fn share_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
     } else {
         b.push(StepKind::Spot, i, &t!("step-spot"), format!("spot{sfx}"), &t!("formula-spot-none"), Some(vec![1.0]));
     }
-    lim(b, StepKind::Spot);
+    light_limits(b, t, StepKind::Spot);
     let sep = scene.light_model.separate_specular;
     let cformula =
         if sep { t!("formula-share-separate") } else { "Ilight = spot · (Iamb + Idif + Ispec) / at".to_string() };
