@@ -36,6 +36,11 @@ fn colour(c: DVec4) -> String {
     format!("ofFloatColor({}, {}, {}, {})", f(c.x), f(c.y), f(c.z), f(c.w))
 }
 
+/// A C array initialiser of four floats, `{r, g, b, a}`, for a raw `glLightfv`/`glMaterialfv`.
+fn gl_array(c: DVec4) -> String {
+    format!("{{{}, {}, {}, {}}}", f(c.x), f(c.y), f(c.z), f(c.w))
+}
+
 fn vec3(v: DVec3) -> String {
     format!("glm::vec3({}, {}, {})", f(v.x), f(v.y), f(v.z))
 }
@@ -188,9 +193,14 @@ fn draw_body(doc: &Document, scene: &Scene) -> String {
     s
 }
 
+/// The material's emission as the rules let it into the sum (black where they leave it out).
+fn emission_as_drawn(m: &Material, emission: bool) -> DVec4 {
+    if emission { m.emission } else { DVec4::new(0.0, 0.0, 0.0, 1.0) }
+}
+
 /// `ofMaterial` calls for `m` (emission 0 where the rules leave it out).
 fn material_calls(name: &str, m: &Material, emission: bool) -> String {
-    let e = if emission { m.emission } else { DVec4::new(0.0, 0.0, 0.0, 1.0) };
+    let e = emission_as_drawn(m, emission);
     format!(
         "    {name}.setAmbientColor({});\n    {name}.setDiffuseColor({});\n    {name}.setSpecularColor({});\n    {name}.setEmissiveColor({});\n    {name}.setShininess({});\n",
         colour(m.ambient),
@@ -203,8 +213,7 @@ fn material_calls(name: &str, m: &Material, emission: bool) -> String {
 
 /// Raw `glMaterial` calls for one face.
 fn raw_material(face: &str, m: &Material, emission: bool) -> String {
-    let arr = |c: DVec4| format!("{{{}, {}, {}, {}}}", f(c.x), f(c.y), f(c.z), f(c.w));
-    let e = if emission { m.emission } else { DVec4::new(0.0, 0.0, 0.0, 1.0) };
+    let e = emission_as_drawn(m, emission);
     let mut s = String::from("    {\n");
     for (param, c) in
         [("GL_AMBIENT", m.ambient), ("GL_DIFFUSE", m.diffuse), ("GL_SPECULAR", m.specular), ("GL_EMISSION", e)]
@@ -212,7 +221,7 @@ fn raw_material(face: &str, m: &Material, emission: bool) -> String {
         let var = param.trim_start_matches("GL_").to_lowercase();
         s.push_str(&format!(
             "        const GLfloat {var}[4] = {};\n        glMaterialfv({face}, {param}, {var});\n",
-            arr(c)
+            gl_array(c)
         ));
     }
     s.push_str(&format!("        glMaterialf({face}, GL_SHININESS, {});\n    }}\n", f(m.shininess)));
@@ -271,14 +280,13 @@ fn lighting_model(scene: &Scene) -> String {
 fn eye_lights(scene: &Scene) -> String {
     let placed = oflights(scene).len();
     let mut s = String::new();
-    let arr = |c: DVec4| format!("{{{}, {}, {}, {}}}", f(c.x), f(c.y), f(c.z), f(c.w));
     for (k, l) in scene.lights.iter().filter(|l| l.placement == LightPlacement::Eye).enumerate() {
         let gl = format!("GL_LIGHT{}", placed + k);
         s.push_str(&format!("    // {}\n    {{\n", t!("of-eye-light-comment")));
         s.push_str("        glMatrixMode(GL_MODELVIEW);\n        glPushMatrix();\n        glLoadIdentity();\n");
         s.push_str(&format!(
             "        const GLfloat position[4] = {};\n        glLightfv({gl}, GL_POSITION, position);\n",
-            arr(l.position)
+            gl_array(l.position)
         ));
         let d = l.spot_direction;
         s.push_str(&format!(
@@ -292,7 +300,7 @@ fn eye_lights(scene: &Scene) -> String {
             let var = param.trim_start_matches("GL_").to_lowercase();
             s.push_str(&format!(
                 "        const GLfloat {var}[4] = {};\n        glLightfv({gl}, {param}, {var});\n",
-                arr(c)
+                gl_array(c)
             ));
         }
         s.push_str(&format!(

@@ -55,7 +55,7 @@ pub enum ImportError {
 }
 
 /// The names read as givens.
-const GIVENS: [&str; 31] = [
+const GIVENS: [&str; 32] = [
     "vertexPos",
     "vertexNormal",
     "lightPos",
@@ -87,10 +87,8 @@ const GIVENS: [&str; 31] = [
     "specular",
     "normalMode",
     "twoSided",
+    "separateSpecular",
 ];
-
-/// Settings that are givens too (beyond [`GIVENS`]).
-const MORE_GIVENS: [&str; 1] = ["separateSpecular"];
 
 /// A line of code and where it is (`line 7`, or `cell 4, line 2` in a notebook).
 struct SourceLine {
@@ -115,7 +113,7 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
                 && value.as_ref().is_ok_and(|v| v.numbers() == Some(vec![0.0, 0.0, 0.0, 1.0]));
             continue;
         }
-        let is_given = GIVENS.contains(&lhs) || MORE_GIVENS.contains(&lhs);
+        let is_given = GIVENS.contains(&lhs);
         match value {
             Ok(v) => {
                 if is_given {
