@@ -101,10 +101,9 @@ pub struct ImportArgs {
 pub fn read_student_code(path: &std::path::Path) -> Result<phonglab_core::export::read_python::Imported> {
     let text = crate::input_file::read_text_capped(path, crate::app::files::MAX_CODE_BYTES, &t!("file-kind-code"))
         .map_err(anyhow::Error::msg)?;
-    let notebook = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("ipynb"));
-    let name = path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
-    phonglab_core::export::read_python::read(&text, notebook, &name)
-        .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+    // Any file that is not a notebook is read as a script.
+    let notebook = crate::app::files::student_code(path) == Some(true);
+    crate::app::files::import_text(&text, notebook, path).map_err(anyhow::Error::msg)
 }
 
 /// Runs `phonglab import`.

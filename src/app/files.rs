@@ -42,8 +42,11 @@ fn open_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
     if is_obj(path) {
         return open_obj_or_why(state, path);
     }
-    let cap = if student_code(path).is_some() { MAX_CODE_BYTES } else { crate::input_file::MAX_SCENE_BYTES };
-    let bytes = crate::input_file::read_capped(path, cap, &t!("file-kind-scenes"))?;
+    let (cap, kind) = match student_code(path) {
+        Some(_) => (MAX_CODE_BYTES, t!("file-kind-code")),
+        None => (crate::input_file::MAX_SCENE_BYTES, t!("file-kind-scenes")),
+    };
+    let bytes = crate::input_file::read_capped(path, cap, &kind)?;
     open_bytes_or_why(state, &bytes, path)
 }
 
@@ -113,12 +116,21 @@ pub fn student_code(path: &Path) -> Option<bool> {
     }
 }
 
+/// Reads the text of the worksheet-style notebook or script at `path` into a scene named
+/// after the file (the app's open and drop, and `phonglab import`); an error names the file.
+pub fn import_text(
+    text: &str,
+    notebook: bool,
+    path: &Path,
+) -> Result<phonglab_core::export::read_python::Imported, String> {
+    let name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    phonglab_core::export::read_python::read(text, notebook, &name).map_err(|e| format!("{}: {e}", path.display()))
+}
+
 /// Opens a worksheet-style notebook or script as a scene (what `phonglab import` reads),
 /// saying which lines could not be read; the scene stays when nothing could be.
 fn import_or_why(state: &mut AppState, text: &str, notebook: bool, path: &Path) -> Result<(), String> {
-    let name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
-    let imported = phonglab_core::export::read_python::read(text, notebook, &name)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let imported = import_text(text, notebook, path)?;
     state.load(imported.doc, &path.display().to_string());
     // Save writes a scene file beside it, never over the student's notebook or script.
     state.ui.file_path = path.with_extension("toml").display().to_string();
