@@ -167,14 +167,15 @@ def decode_png(data):
     return rows
 
 
-def shaded_picture(d, url):
-    """The shaded view's pixels on the page at `url`, and who drew them."""
+def picture_at(d, url, landmark="shaded-picture"):
+    """The pixels of the picture the probe names `landmark` on the page at `url` (a
+    screenshot cropped to it), and who drew them."""
     d.go(url)
-    wait_probe(d, lambda q: q["frames"] >= 1 and "shaded-picture" in q["landmarks"], "the shaded view")
+    wait_probe(d, lambda q: q["frames"] >= 1 and landmark in q["landmarks"], landmark)
     d.nudge()
     p = d.probe()
     rows = decode_png(base64.b64decode(d.s("GET", "/screenshot")))
-    x, y, w, h = (round(v * p["pixels_per_point"]) for v in p["landmarks"]["shaded-picture"])
+    x, y, w, h = (round(v * p["pixels_per_point"]) for v in p["landmarks"][landmark])
     return [row[x:x + w] for row in rows[y:y + h]], p["drawn_by"]
 
 
@@ -215,21 +216,17 @@ def bench_pictures_check(d, url, native_dir, failures):
     for obj, shading in BENCH_PICTURES:
         native = decode_png(open(os.path.join(native_dir, f"bench-{obj}-{shading}.png"), "rb").read())
         for renderer in ["gpu", "cpu"]:
-            d.go(f"{url}?picture=bench&object={obj}&shading={shading}&renderer={renderer}")
-            p = wait_probe(d, lambda q: q["frames"] >= 1 and "bench-picture" in q["landmarks"], "the benchmark picture")
-            d.nudge()
-            p = d.probe()
-            rows = decode_png(base64.b64decode(d.s("GET", "/screenshot")))
-            x, y, w, h = (round(v * p["pixels_per_point"]) for v in p["landmarks"]["bench-picture"])
-            page = [row[x:x + w] for row in rows[y:y + h]]
+            page, drawn_by = picture_at(
+                d, f"{url}?picture=bench&object={obj}&shading={shading}&renderer={renderer}", "bench-picture")
+            h, w = len(page), len(page[0]) if page else 0
             coverage, mean, both = compare_pictures(native, page)
-            print(f"benchmark scene, {obj}, {shading}, {w}x{h} px: the canvas ({renderer}: {p['drawn_by']}) against "
+            print(f"benchmark scene, {obj}, {shading}, {w}x{h} px: the canvas ({renderer}: {drawn_by}) against "
                   f"the desktop's image: coverage differs on {100 * coverage:.2f} % of the pixels, mean difference "
                   f"{mean:.2f}/255 on the {both} both cover")
             if (w, h) != (len(native[0]), len(native)):
                 failures.append(f"the benchmark picture is {w}x{h} px, the desktop's {len(native[0])}x{len(native)}")
-            elif p["drawn_by"] != renderer.upper():
-                failures.append(f"the benchmark picture ({obj} {shading}) was not drawn as asked: {p['drawn_by']!r}")
+            elif drawn_by != renderer.upper():
+                failures.append(f"the benchmark picture ({obj} {shading}) was not drawn as asked: {drawn_by!r}")
             elif coverage > 0.005 or mean > 2.0 or both < 5000:
                 failures.append(f"benchmark scene, {obj} {shading}, {renderer}: the canvas differs from the desktop's "
                                 f"image: coverage {coverage:.4f}, mean {mean:.2f}/255 on {both} pixels")
@@ -313,8 +310,8 @@ def main():
                 text = re.sub(r'object = \\"[a-z]+\\"', f'object = \\"{obj}\\"', base)
                 text = re.sub(r'shading = \\"[a-z]+\\"', f'shading = \\"{shading}\\"', text)
                 d.js("window.localStorage.setItem('phonglab.session.ron', arguments[0]);", text)
-                cpu, cpu_by = shaded_picture(d, url + "?renderer=cpu")
-                gpu, gpu_by = shaded_picture(d, url + "?renderer=gpu")
+                cpu, cpu_by = picture_at(d, url + "?renderer=cpu")
+                gpu, gpu_by = picture_at(d, url + "?renderer=gpu")
                 coverage, mean, both = compare_pictures(cpu, gpu)
                 print(f"{obj}, {shading}, {len(cpu[0])}x{len(cpu)} px: GPU ({gpu_by}) against CPU ({cpu_by}): "
                       f"coverage differs on {100 * coverage:.2f} % of the pixels, mean difference "

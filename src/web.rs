@@ -234,7 +234,9 @@ pub fn start() {
 /// 256 pixels square, drawn by the renderer the address asks for, so that a test can put
 /// the canvas's picture beside the desktop's image.
 struct BenchPicture {
-    object: &'static str,
+    /// The benchmark's frame 0 and the object (tessellated once, not every frame).
+    scene: phonglab_core::Scene,
+    mesh: std::sync::Arc<phonglab_core::mesh::Mesh>,
     shading: phonglab_core::Shading,
     gpu: bool,
     /// The CPU renderer's picture, drawn once.
@@ -253,10 +255,12 @@ impl BenchPicture {
         if !url_asks("picture", "bench") {
             return None;
         }
-        let object = if url_asks("object", "teapot") { "teapot" } else { "sphere" };
+        let [(_, sphere), (_, teapot)] = crate::bench::bench_meshes();
+        let mesh = if url_asks("object", "teapot") { teapot } else { sphere };
         let shading = if url_asks("shading", "phong") { Shading::Phong } else { Shading::Gouraud };
         Some(BenchPicture {
-            object,
+            scene: phonglab_core::presets::bench_scene(0),
+            mesh: std::sync::Arc::new(mesh),
             shading,
             gpu: url_asks("renderer", "gpu"),
             texture: None,
@@ -270,10 +274,7 @@ impl BenchPicture {
         let side = BENCH_PICTURE_PX as f32 / ppp;
         let (rect, _) = ui.allocate_exact_size(egui::vec2(side, side), egui::Sense::hover());
         crate::app::widgets::landmark(ui.ctx(), "bench-picture", rect);
-        let scene = phonglab_core::presets::bench_scene(0);
-        let [(_, sphere), (_, teapot)] = crate::bench::bench_meshes();
-        let mesh = if self.object == "teapot" { teapot } else { sphere };
-        let job = phonglab_core::shaded::bench_job(&scene, &mesh, self.shading);
+        let job = phonglab_core::shaded::bench_job(&self.scene, &self.mesh, self.shading);
         if self.gpu && gpu {
             if let Some(e) = self.error.lock().unwrap_or_else(|e| e.into_inner()).clone() {
                 return Err(e);
@@ -284,7 +285,7 @@ impl BenchPicture {
                 slot: u64::MAX,
                 wgsl: shader.vertex.into(),
                 uniforms,
-                mesh: std::sync::Arc::new(mesh.clone()),
+                mesh: self.mesh.clone(),
                 background: job.background,
                 px: BENCH_PICTURE_PX,
                 error: self.error.clone(),
