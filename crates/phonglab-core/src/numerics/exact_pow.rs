@@ -85,23 +85,15 @@ fn exp2_f64(t: f64) -> f64 {
 #[inline]
 pub fn pow_f32(x: f32, e: f32) -> f32 {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the processor has FMA (checked just above).
-        return unsafe { pow_f32_fma(x, e) };
+    if let Some(r) = super::copies::pow_f32_fma(x, e) {
+        return r;
     }
-    pow_f32_body(x, e)
-}
-
-/// [`pow_f32_body`] compiled with the FMA instruction.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-fn pow_f32_fma(x: f32, e: f32) -> f32 {
     pow_f32_body(x, e)
 }
 
 /// [`pow_f32`]'s operations.
 #[inline(always)]
-fn pow_f32_body(x: f32, e: f32) -> f32 {
+pub(super) fn pow_f32_body(x: f32, e: f32) -> f32 {
     let r = match whole_exponent(e) {
         Some(k) => powi_f64(x as f64, k),
         None => pow_core(x as f64, e as f64),
@@ -203,59 +195,16 @@ pub fn pow_f32_chunk<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N], n
 #[inline(always)]
 pub fn pow_f32_chunk_packed<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N]) {
     #[cfg(target_arch = "x86_64")]
-    if e > 0.0 && whole_exponent(e).is_none() && crate::numerics::cpu::has_avx512() {
-        // SAFETY: the processor has AVX-512F/DQ/VL, AVX2 and FMA (checked just above).
-        unsafe { pow_packed_avx512(x, e, out) };
+    if e > 0.0 && whole_exponent(e).is_none() && super::copies::pow_packed_avx512(x, e, out) {
         return;
     }
     pow_f32_chunk(x, e, out, N);
 }
 
-/// [`pow_f32_chunk_packed`]'s AVX-512 way, for a fractional `e > 0`.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-fn pow_packed_avx512<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N]) {
-    use std::arch::x86_64::*;
-    const { assert!(N.is_multiple_of(16) && N <= 128, "whole blocks of 16, at most 8 of them") };
-    // The lanes with x > 0, packed (16 spare lanes: each block of 16 is stored whole).
-    let mut packed = [0.0f32; 128 + 16];
-    let mut masks = [0u16; 8];
-    let mut m = 0;
-    for (b, mask) in masks.iter_mut().enumerate().take(N / 16) {
-        // SAFETY: 16 lanes from 16 b < N are inside `x`; `m <= 16 b < 128`, so 16 lanes from
-        // m are inside `packed`.
-        unsafe {
-            let v = _mm512_loadu_ps(x.as_ptr().add(16 * b));
-            let k = _mm512_cmp_ps_mask::<_CMP_GT_OQ>(v, _mm512_setzero_ps());
-            _mm512_storeu_ps(packed.as_mut_ptr().add(m), _mm512_maskz_compress_ps(k, v));
-            *mask = k;
-            m += k.count_ones() as usize;
-        }
-    }
-    // Their powers, a block of 8 at a time (the last block's spare lanes hold zeros or
-    // earlier values: computed and never read).
-    let mut powers = [0.0f32; 128 + 16];
-    for (pb, xb) in powers.chunks_exact_mut(8).zip(packed.chunks_exact(8)).take(m.div_ceil(8)) {
-        for (o, &v) in pb.iter_mut().zip(xb) {
-            *o = pow_fractional(v, e);
-        }
-    }
-    // Back to their lanes; +0 in the others.
-    let mut at = 0;
-    for (b, &k) in masks.iter().enumerate().take(N / 16) {
-        // SAFETY: as above, `at <= 16 b`; 16 lanes from 16 b < N are inside `out`.
-        unsafe {
-            let r = _mm512_loadu_ps(powers.as_ptr().add(at));
-            _mm512_storeu_ps(out.as_mut_ptr().add(16 * b), _mm512_maskz_expand_ps(k, r));
-        }
-        at += k.count_ones() as usize;
-    }
-}
-
 /// One lane of the array powers for an exponent that is not whole:
 /// `pow_f32(max(x, 0), e)` by [`pow_core`] (what [`pow_f32_body`] does for such `e`).
 #[inline(always)]
-fn pow_fractional(x: f32, e: f32) -> f32 {
+pub(super) fn pow_fractional(x: f32, e: f32) -> f32 {
     let x = x.max(0.0);
     pow_fix(x, e, pow_core(x as f64, e as f64) as f32)
 }
