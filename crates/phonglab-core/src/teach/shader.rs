@@ -131,215 +131,231 @@ fn lighting(
     s: &Syn,
     uniforms: &mut Vec<Uniform>,
 ) -> Vec<String> {
-    let mut o: Vec<String> = Vec::new();
-    let (v3, v4) = (s.vec3(), s.vec4());
-    let mut uni = |name: String, ty: &'static str| {
-        if !uniforms.iter().any(|(n, _)| *n == name) {
-            uniforms.push((name.clone(), ty));
-        }
-        s.u(&name)
-    };
-    let sides = if key.two_sided { 2 } else { 1 };
-    let gate = scene.rules.specular_gate();
-    // Where the rules let the specular term through (OpenGL: the lit side; the worksheet: a
-    // positive cosine; the demo: always).
-    let gate_open = |i: usize, side: usize| match gate {
-        SpecularGate::LitSide => format!("ndl{i}_{side} > 0.0"),
-        SpecularGate::PositiveCosine => format!("spec_cos{i}_{side} > 0.0"),
-        SpecularGate::None => "true".to_string(),
-    };
-    for side in 0..sides {
-        o.push(s.var("vec3", &format!("sum{side}"), &format!("{v3}(0.0)")));
+    let mut body = Body { scene, key, program, ex, s, uniforms, lines: Vec::new() };
+    for side in 0..body.sides() {
+        let zero = format!("{}(0.0)", s.vec3());
+        body.lines.push(s.var("vec3", &format!("sum{side}"), &zero));
     }
-    for stage in &program.stages {
-        let at = |k: StepKind, l: Option<usize>| format!("// {}", step_no(ex, k, l));
-        match *stage {
+    for &stage in &program.stages {
+        body.stage(stage);
+    }
+    body.colors();
+    body.lines
+}
+
+/// The lighting code being written: the scene and its program, and the statements so far.
+struct Body<'a> {
+    scene: &'a Scene,
+    key: &'a Key,
+    program: &'a Program,
+    ex: &'a Explanation,
+    s: &'a Syn,
+    uniforms: &'a mut Vec<Uniform>,
+    lines: Vec<String>,
+}
+
+impl Body<'_> {
+    /// Declares the uniform `name` of GLSL type `ty` (once) and gives its reference.
+    fn uni(&mut self, name: String, ty: &'static str) -> String {
+        if !self.uniforms.iter().any(|(n, _)| *n == name) {
+            self.uniforms.push((name.clone(), ty));
+        }
+        self.s.u(&name)
+    }
+
+    /// A new variable `name = e`, with the worked calculation's step of `kind` (for `light`)
+    /// and a note after it.
+    fn var(&mut self, ty: &str, name: &str, e: &str, kind: StepKind, light: Option<usize>, note: &str) {
+        let line = format!("{} // {}{note}", self.s.var(ty, name, e), step_no(self.ex, kind, light));
+        self.lines.push(line);
+    }
+
+    fn sides(&self) -> usize {
+        if self.key.two_sided { 2 } else { 1 }
+    }
+
+    /// The material a side reads: `back` where the scene has a back material, else `mat`.
+    fn material(&self, side: usize) -> &'static str {
+        if side == 1 && self.scene.back_material.is_some() { "back" } else { "mat" }
+    }
+
+    /// The normal a side's cosines use.
+    fn normal(side: usize) -> &'static str {
+        if side == 1 { "-N" } else { "N" }
+    }
+
+    /// V in the specular cosines: the per-vertex view vector, or (0, 0, 1) for an infinite
+    /// viewer.
+    fn view(&self) -> String {
+        if self.key.per_vertex_view { "V".to_string() } else { format!("{}(0.0, 0.0, 1.0)", self.s.vec3()) }
+    }
+
+    /// Where the rules let the specular term through (OpenGL: the lit side; the worksheet: a
+    /// positive cosine; the demo: always).
+    fn gate_open(&self, i: usize, side: usize) -> String {
+        match self.scene.rules.specular_gate() {
+            SpecularGate::LitSide => format!("ndl{i}_{side} > 0.0"),
+            SpecularGate::PositiveCosine => format!("spec_cos{i}_{side} > 0.0"),
+            SpecularGate::None => "true".to_string(),
+        }
+    }
+
+    /// The statements of one stage (none for the transforms, which the prologue or the
+    /// vertex stage does).
+    fn stage(&mut self, stage: Stage) {
+        match stage {
             Stage::TransformNormal
             | Stage::TransformPosition
             | Stage::TransformPositionProjective
             | Stage::TranslatePosition
             | Stage::RescaleNormal => {}
             Stage::NormalizeNormal | Stage::NormalizeNormalFast => {
-                o.push(format!("N = normalize(N); {}", at(StepKind::Normal, None)));
+                let line = format!("N = normalize(N); // {}", step_no(self.ex, StepKind::Normal, None));
+                self.lines.push(line);
             }
             Stage::ZeroNormals => {
-                o.push(format!(
-                    "{} // a zero normal has no direction: no diffuse, no specular",
-                    s.var("bool", "n_ok", "dot(N, N) > 0.0")
-                ));
+                let n_ok = self.s.var("bool", "n_ok", "dot(N, N) > 0.0");
+                self.lines.push(format!("{n_ok} // a zero normal has no direction: no diffuse, no specular"));
             }
-            Stage::ViewVector => {
-                let e =
-                    if key.local_viewer { "normalize(-P)".to_string() } else { format!("{v3}(0.0, 0.0, -sign(P.z))") };
-                o.push(format!("{} {} (V)", s.var("vec3", "V", &e), at(StepKind::V, None)));
-            }
-            Stage::LightVector(i) => {
-                let p = uni(format!("light{i}_position"), "vec4");
-                o.push(format!(
-                    "{} {}",
-                    s.var("vec3", &format!("toL{i}"), &format!("{p}.xyz / {p}.w - P")),
-                    at(StepKind::L, Some(i))
-                ));
-                o.push(format!(
-                    "{} {} (d)",
-                    s.var("float", &format!("d{i}"), &format!("length(toL{i})")),
-                    at(StepKind::Distance, Some(i))
-                ));
-                o.push(format!(
-                    "{} {} (L)",
-                    s.var("vec3", &format!("L{i}"), &format!("toL{i} / d{i}")),
-                    at(StepKind::L, Some(i))
-                ));
-            }
+            Stage::ViewVector => self.view_vector(),
+            Stage::LightVector(i) => self.light_vector(i),
             Stage::LightConstant(i) => {
-                let l = uni(format!("light{i}_direction"), "vec3");
-                o.push(format!(
-                    "{} {} (directional: one L for every vertex)",
-                    s.var("vec3", &format!("L{i}"), &l),
-                    at(StepKind::L, Some(i))
-                ));
+                let l = self.uni(format!("light{i}_direction"), "vec3");
+                self.var("vec3", &format!("L{i}"), &l, StepKind::L, Some(i), " (directional: one L for every vertex)");
             }
             Stage::Attenuate(i) => {
-                let k = uni(format!("light{i}_attenuation"), "vec3");
-                o.push(format!(
-                    "{} {}",
-                    s.var("float", &format!("att{i}"), &format!("1.0 / ({k}.x + {k}.y * d{i} + {k}.z * d{i} * d{i})")),
-                    at(StepKind::Attenuation, Some(i))
-                ));
+                let k = self.uni(format!("light{i}_attenuation"), "vec3");
+                let e = format!("1.0 / ({k}.x + {k}.y * d{i} + {k}.z * d{i} * d{i})");
+                self.var("float", &format!("att{i}"), &e, StepKind::Attenuation, Some(i), "");
             }
-            Stage::SpotCone(i) => {
-                let dir = uni(format!("light{i}_spot_direction"), "vec3");
-                let cut = uni(format!("light{i}_spot_cos_cutoff"), "float");
-                o.push(format!(
-                    "{} {} (spot cosine)",
-                    s.var("float", &format!("spot_cos{i}"), &format!("dot(-L{i}, normalize({dir}))")),
-                    at(StepKind::Spot, Some(i))
-                ));
-                o.push(format!(
-                    "{} {} (the cone test)",
-                    s.var("bool", &format!("in_cone{i}"), &format!("spot_cos{i} >= {cut}")),
-                    at(StepKind::Spot, Some(i))
-                ));
-            }
+            Stage::SpotCone(i) => self.spot_cone(i),
             Stage::SpotPower(i) => {
-                let ex_ = uni(format!("light{i}_spot_exponent"), "float");
-                let pw = s.select(&format!("in_cone{i}"), &format!("pow(max(spot_cos{i}, 0.0), {ex_})"), "0.0");
-                o.push(format!("{} {}", s.var("float", &format!("spot{i}"), &pw), at(StepKind::Spot, Some(i))));
+                let ex = self.uni(format!("light{i}_spot_exponent"), "float");
+                let pw = self.s.select(&format!("in_cone{i}"), &format!("pow(max(spot_cos{i}, 0.0), {ex})"), "0.0");
+                self.var("float", &format!("spot{i}"), &pw, StepKind::Spot, Some(i), "");
             }
             Stage::Halfway(i) => {
-                let v = if key.per_vertex_view { "V".to_string() } else { format!("{v3}(0.0, 0.0, 1.0)") };
-                o.push(format!(
-                    "{} {}",
-                    s.var("vec3", &format!("H{i}"), &format!("normalize(L{i} + {v})")),
-                    at(StepKind::H, Some(i))
-                ));
+                let e = format!("normalize(L{i} + {})", self.view());
+                self.var("vec3", &format!("H{i}"), &e, StepKind::H, Some(i), "");
             }
             Stage::HalfwayConstant(i) => {
-                let h = uni(format!("light{i}_halfway"), "vec3");
-                o.push(format!(
-                    "{} {} (one H: directional light, infinite viewer)",
-                    s.var("vec3", &format!("H{i}"), &h),
-                    at(StepKind::H, Some(i))
-                ));
+                let h = self.uni(format!("light{i}_halfway"), "vec3");
+                let note = " (one H: directional light, infinite viewer)";
+                self.var("vec3", &format!("H{i}"), &h, StepKind::H, Some(i), note);
             }
             Stage::Reflect(i) => {
-                let dot = if scene.rules.reflect_clamped() {
+                let dot = if self.scene.rules.reflect_clamped() {
                     format!("max(dot(N, L{i}), 0.0)")
                 } else {
                     format!("dot(N, L{i})")
                 };
-                o.push(format!(
-                    "{} {}",
-                    s.var("vec3", &format!("R{i}"), &format!("2.0 * {dot} * N - L{i}")),
-                    at(StepKind::R, Some(i))
-                ));
+                self.var("vec3", &format!("R{i}"), &format!("2.0 * {dot} * N - L{i}"), StepKind::R, Some(i), "");
             }
             Stage::DiffuseCosine(i, side) => {
-                let n = if side == 1 { "-N" } else { "N" };
-                o.push(format!(
-                    "{} {}",
-                    s.var("float", &format!("ndl{i}_{side}"), &format!("dot({n}, L{i})")),
-                    at(StepKind::CosTheta, Some(i))
-                ));
+                let e = format!("dot({}, L{i})", Self::normal(side));
+                self.var("float", &format!("ndl{i}_{side}"), &e, StepKind::CosTheta, Some(i), "");
             }
             Stage::SpecularCosine(i, side) => {
-                let n = if side == 1 { "-N" } else { "N" };
-                let e = match scene.rules.specular {
-                    SpecularModel::BlinnPhong => format!("dot({n}, H{i})"),
-                    SpecularModel::Phong => {
-                        let v = if key.per_vertex_view { "V".to_string() } else { format!("{v3}(0.0, 0.0, 1.0)") };
-                        format!("dot(R{i}, {v})")
-                    }
+                let e = match self.scene.rules.specular {
+                    SpecularModel::BlinnPhong => format!("dot({}, H{i})", Self::normal(side)),
+                    SpecularModel::Phong => format!("dot(R{i}, {})", self.view()),
                 };
-                o.push(format!(
-                    "{} {}",
-                    s.var("float", &format!("spec_cos{i}_{side}"), &e),
-                    at(StepKind::CosBeta, Some(i))
-                ));
+                self.var("float", &format!("spec_cos{i}_{side}"), &e, StepKind::CosBeta, Some(i), "");
             }
             Stage::Power(i, side) => {
-                let m = if side == 1 && scene.back_material.is_some() { "back" } else { "mat" };
-                let sh = uni(format!("{m}_shininess"), "float");
-                let e = s.select(&gate_open(i, side), &format!("pow(max(spec_cos{i}_{side}, 0.0), {sh})"), "0.0");
-                o.push(format!("{} {}", s.var("float", &format!("pf{i}_{side}"), &e), at(StepKind::Specular, Some(i))));
+                let sh = self.uni(format!("{}_shininess", self.material(side)), "float");
+                let e =
+                    self.s.select(&self.gate_open(i, side), &format!("pow(max(spec_cos{i}_{side}, 0.0), {sh})"), "0.0");
+                self.var("float", &format!("pf{i}_{side}"), &e, StepKind::Specular, Some(i), "");
             }
-            Stage::Sum(i, side) => {
-                let m = if side == 1 && scene.back_material.is_some() { "back" } else { "mat" };
-                let l = key.lights[i];
-                let (la, ld, ls) = (
-                    uni(format!("light{i}_ambient"), "vec3"),
-                    uni(format!("light{i}_diffuse"), "vec3"),
-                    uni(format!("light{i}_specular"), "vec3"),
-                );
-                let (ma, md) = (uni(format!("{m}_ambient"), "vec3"), uni(format!("{m}_diffuse"), "vec4"));
-                let mut terms = format!("{la} * {ma} + {ld} * {md}.xyz * max(ndl{i}_{side}, 0.0)");
-                if l.specular {
-                    let ms = uni(format!("{m}_specular"), "vec3");
-                    // The power (or 1 at shininess 0) where the gate lets it through.
-                    let pf = if program.has(Stage::Power(i, side)) {
-                        format!("pf{i}_{side}")
-                    } else {
-                        s.select(&gate_open(i, side), "1.0", "0.0")
-                    };
-                    terms.push_str(&format!(" + {ls} * {ms} * {pf}"));
-                }
-                let mut scale = String::new();
-                if program.has(Stage::Attenuate(i)) {
-                    scale.push_str(&format!("att{i} * "));
-                }
-                if program.has(Stage::SpotPower(i)) {
-                    scale.push_str(&format!("spot{i} * "));
-                }
-                let lit = if program.has(Stage::ZeroNormals) {
-                    s.select("n_ok", &format!("{scale}({terms})"), &format!("{scale}({la} * {ma})"))
-                } else {
-                    format!("{scale}({terms})")
-                };
-                o.push(format!("sum{side} = sum{side} + {lit}; {}", at(StepKind::Contribution, Some(i))));
-            }
+            Stage::Sum(i, side) => self.sum(i, side),
             Stage::SceneColor => {
-                let c = uni("scene_color".into(), "vec3");
-                for side in 0..sides {
-                    o.push(format!(
-                        "sum{side} = sum{side} + {c}; {} (emission + scene ambient)",
-                        at(StepKind::SceneAmbient, None)
-                    ));
+                let c = self.uni("scene_color".into(), "vec3");
+                for side in 0..self.sides() {
+                    let step = step_no(self.ex, StepKind::SceneAmbient, None);
+                    self.lines.push(format!("sum{side} = sum{side} + {c}; // {step} (emission + scene ambient)"));
                 }
             }
         }
     }
-    let clamp = scene.rules.clamps_vertex_colors();
-    for side in 0..sides {
-        let m = if side == 1 && scene.back_material.is_some() { "back" } else { "mat" };
-        let md = uni(format!("{m}_diffuse"), "vec4");
-        let rgb = if clamp { format!("clamp(sum{side}, {v3}(0.0), {v3}(1.0))") } else { format!("sum{side}") };
-        o.push(format!(
-            "{} // {} (alpha: the diffuse alpha)",
-            s.var("vec4", &format!("color{side}"), &format!("{v4}({rgb}, {md}.w)")),
-            step_no(ex, StepKind::Primary, None)
-        ));
+
+    /// V: towards the eye from P (local viewer), or the axis for an infinite viewer.
+    fn view_vector(&mut self) {
+        let e = if self.key.local_viewer {
+            "normalize(-P)".to_string()
+        } else {
+            format!("{}(0.0, 0.0, -sign(P.z))", self.s.vec3())
+        };
+        self.var("vec3", "V", &e, StepKind::V, None, " (V)");
     }
-    o
+
+    /// A positional light's direction: the vector to it, its length d, and L.
+    fn light_vector(&mut self, i: usize) {
+        let p = self.uni(format!("light{i}_position"), "vec4");
+        self.var("vec3", &format!("toL{i}"), &format!("{p}.xyz / {p}.w - P"), StepKind::L, Some(i), "");
+        self.var("float", &format!("d{i}"), &format!("length(toL{i})"), StepKind::Distance, Some(i), " (d)");
+        self.var("vec3", &format!("L{i}"), &format!("toL{i} / d{i}"), StepKind::L, Some(i), " (L)");
+    }
+
+    /// A spotlight's cosine to its axis and the cone test.
+    fn spot_cone(&mut self, i: usize) {
+        let dir = self.uni(format!("light{i}_spot_direction"), "vec3");
+        let cut = self.uni(format!("light{i}_spot_cos_cutoff"), "float");
+        let cos = format!("dot(-L{i}, normalize({dir}))");
+        self.var("float", &format!("spot_cos{i}"), &cos, StepKind::Spot, Some(i), " (spot cosine)");
+        let test = format!("spot_cos{i} >= {cut}");
+        self.var("bool", &format!("in_cone{i}"), &test, StepKind::Spot, Some(i), " (the cone test)");
+    }
+
+    /// Light `i`'s share on `side`: its ambient, diffuse and specular terms, scaled by its
+    /// attenuation and spot factor, added to the side's sum.
+    fn sum(&mut self, i: usize, side: usize) {
+        let m = self.material(side);
+        let (la, ld, ls) = (
+            self.uni(format!("light{i}_ambient"), "vec3"),
+            self.uni(format!("light{i}_diffuse"), "vec3"),
+            self.uni(format!("light{i}_specular"), "vec3"),
+        );
+        let (ma, md) = (self.uni(format!("{m}_ambient"), "vec3"), self.uni(format!("{m}_diffuse"), "vec4"));
+        let mut terms = format!("{la} * {ma} + {ld} * {md}.xyz * max(ndl{i}_{side}, 0.0)");
+        if self.key.lights[i].specular {
+            let ms = self.uni(format!("{m}_specular"), "vec3");
+            // The power (or 1 at shininess 0) where the gate lets it through.
+            let pf = if self.program.has(Stage::Power(i, side)) {
+                format!("pf{i}_{side}")
+            } else {
+                self.s.select(&self.gate_open(i, side), "1.0", "0.0")
+            };
+            terms.push_str(&format!(" + {ls} * {ms} * {pf}"));
+        }
+        let mut scale = String::new();
+        if self.program.has(Stage::Attenuate(i)) {
+            scale.push_str(&format!("att{i} * "));
+        }
+        if self.program.has(Stage::SpotPower(i)) {
+            scale.push_str(&format!("spot{i} * "));
+        }
+        let lit = if self.program.has(Stage::ZeroNormals) {
+            self.s.select("n_ok", &format!("{scale}({terms})"), &format!("{scale}({la} * {ma})"))
+        } else {
+            format!("{scale}({terms})")
+        };
+        let step = step_no(self.ex, StepKind::Contribution, Some(i));
+        self.lines.push(format!("sum{side} = sum{side} + {lit}; // {step}"));
+    }
+
+    /// Each side's colour: its sum (clamped where the rules clamp vertex colours) with the
+    /// diffuse alpha.
+    fn colors(&mut self) {
+        let clamp = self.scene.rules.clamps_vertex_colors();
+        let (v3, v4) = (self.s.vec3(), self.s.vec4());
+        for side in 0..self.sides() {
+            let md = self.uni(format!("{}_diffuse", self.material(side)), "vec4");
+            let rgb = if clamp { format!("clamp(sum{side}, {v3}(0.0), {v3}(1.0))") } else { format!("sum{side}") };
+            let e = format!("{v4}({rgb}, {md}.w)");
+            self.var("vec4", &format!("color{side}"), &e, StepKind::Primary, None, " (alpha: the diffuse alpha)");
+        }
+    }
 }
 
 /// The prologue that brings N and P to eye space from object space (Gouraud's vertex
@@ -443,109 +459,118 @@ pub fn for_view(
 pub fn generate(scene: &Scene, options: EvalOptions, ex: &Explanation, lang: Lang, shading: ShaderShading) -> Shader {
     let key = Key::of(scene, options);
     let s = Syn { lang };
-    let header = |what: &str| {
-        format!(
-            "// phonglab: {what}, {} shading, generated from the specialised plan.\n// Only the stages this scene's key calls for; comments give the worked calculation's steps.\n",
-            match shading {
-                ShaderShading::Gouraud => "Gouraud",
-                ShaderShading::Phong => "Phong",
-            }
-        )
-    };
-    let mut uniforms: Vec<Uniform> = vec![("clip_from_object".into(), "mat4"), ("eye_from_object".into(), "mat4")];
+    let uniforms: Vec<Uniform> = vec![("clip_from_object".into(), "mat4"), ("eye_from_object".into(), "mat4")];
     match shading {
-        ShaderShading::Gouraud => {
-            let program = Program::compile(&key, SourceKind::Object);
-            let mut body = prologue(scene, &program, ex, &s, &mut uniforms);
-            body.extend(lighting(scene, &key, &program, ex, &s, &mut uniforms));
-            let two = key.two_sided;
-            let stages: Vec<String> = program.stages.iter().map(|st| format!("{st:?}")).collect();
-            let list = format!("// The program: {}\n", stages.join(" > "));
-            match lang {
-                Lang::Glsl => {
-                    let outs = if two { "out vec4 v_front;\nout vec4 v_back;\n" } else { "out vec4 v_front;\n" };
-                    let store =
-                        if two { "    v_front = color0;\n    v_back = color1;\n" } else { "    v_front = color0;\n" };
-                    let vertex = format!(
-                        "#version 330 core\n{}{list}layout(location = 0) in vec3 a_position;\nlayout(location = 1) in vec3 a_normal;\n{}{outs}\nvoid main() {{\n{}{store}    gl_Position = u_clip_from_object * vec4(a_position, 1.0);\n}}\n",
-                        header("the vertex lighting"),
-                        declare(&s, &uniforms),
-                        indent(&body)
-                    );
-                    let pick = if two { "gl_FrontFacing ? v_front : v_back" } else { "v_front" };
-                    let ins = if two { "in vec4 v_front;\nin vec4 v_back;\n" } else { "in vec4 v_front;\n" };
-                    let fragment = format!(
-                        "#version 330 core\n{ins}out vec4 frag_color;\n\nvoid main() {{\n    frag_color = {pick};\n}}\n"
-                    );
-                    Shader { vertex, fragment, uniforms }
-                }
-                Lang::Wgsl => {
-                    let back = if two { "    @location(1) back: vec4<f32>,\n" } else { "" };
-                    let store_back = if two { "    out.back = color1;\n" } else { "" };
-                    let pick = if two { "select(in.back, in.front, facing)" } else { "in.front" };
-                    let facing = if two { ", @builtin(front_facing) facing: bool" } else { "" };
-                    let module = format!(
-                        "{}{list}{}\nstruct VertexIn {{\n    @location(0) position: vec3<f32>,\n    @location(1) normal: vec3<f32>,\n}};\n\nstruct VertexOut {{\n    @builtin(position) clip: vec4<f32>,\n    @location(0) front: vec4<f32>,\n{back}}};\n\n@vertex\nfn vs_main(input: VertexIn) -> VertexOut {{\n{}    var out: VertexOut;\n    out.front = color0;\n{store_back}    out.clip = u.clip_from_object * vec4<f32>(input.position, 1.0);\n    return out;\n}}\n\n@fragment\nfn fs_main(in: VertexOut{facing}) -> @location(0) vec4<f32> {{\n    return {pick};\n}}\n",
-                        header("the vertex lighting"),
-                        declare(&s, &uniforms),
-                        indent(&body)
-                    );
-                    Shader { vertex: module, fragment: String::new(), uniforms }
-                }
-            }
+        ShaderShading::Gouraud => gouraud(scene, &key, ex, &s, uniforms),
+        ShaderShading::Phong => phong(scene, &key, options, ex, &s, uniforms),
+    }
+}
+
+/// The comment that opens a stage's text.
+fn header(what: &str, shading: ShaderShading) -> String {
+    let name = match shading {
+        ShaderShading::Gouraud => "Gouraud",
+        ShaderShading::Phong => "Phong",
+    };
+    format!(
+        "// phonglab: {what}, {name} shading, generated from the specialised plan.\n// Only the stages this scene's key calls for; comments give the worked calculation's steps.\n"
+    )
+}
+
+/// The comment that lists a program's stages.
+fn stage_list(what: &str, program: &Program) -> String {
+    let stages: Vec<String> = program.stages.iter().map(|st| format!("{st:?}")).collect();
+    format!("// {what}: {}\n", stages.join(" > "))
+}
+
+/// Gouraud: the vertex stage brings N and P to eye space and lights them; the fragment
+/// stage writes the interpolated colour (of the side facing the eye, when two-sided).
+fn gouraud(scene: &Scene, key: &Key, ex: &Explanation, s: &Syn, mut uniforms: Vec<Uniform>) -> Shader {
+    let program = Program::compile(key, SourceKind::Object);
+    let mut body = prologue(scene, &program, ex, s, &mut uniforms);
+    body.extend(lighting(scene, key, &program, ex, s, &mut uniforms));
+    let head = header("the vertex lighting", ShaderShading::Gouraud);
+    let list = stage_list("The program", &program);
+    let (declared, body) = (declare(s, &uniforms), indent(&body));
+    let two = key.two_sided;
+    match s.lang {
+        Lang::Glsl => {
+            let outs = if two { "out vec4 v_front;\nout vec4 v_back;\n" } else { "out vec4 v_front;\n" };
+            let store = if two { "    v_front = color0;\n    v_back = color1;\n" } else { "    v_front = color0;\n" };
+            let vertex = format!(
+                "#version 330 core\n{head}{list}layout(location = 0) in vec3 a_position;\nlayout(location = 1) in vec3 a_normal;\n{declared}{outs}\nvoid main() {{\n{body}{store}    gl_Position = u_clip_from_object * vec4(a_position, 1.0);\n}}\n",
+            );
+            let pick = if two { "gl_FrontFacing ? v_front : v_back" } else { "v_front" };
+            let ins = if two { "in vec4 v_front;\nin vec4 v_back;\n" } else { "in vec4 v_front;\n" };
+            let fragment = format!(
+                "#version 330 core\n{ins}out vec4 frag_color;\n\nvoid main() {{\n    frag_color = {pick};\n}}\n"
+            );
+            Shader { vertex, fragment, uniforms }
         }
-        ShaderShading::Phong => {
-            let program = Program::compile(&key, SourceKind::EyeRaw(options.renormalize));
-            let mut frag_uniforms: Vec<Uniform> = Vec::new();
-            let body = lighting(scene, &key, &program, ex, &s, &mut frag_uniforms);
-            let two = key.two_sided;
-            let stages: Vec<String> = program.stages.iter().map(|st| format!("{st:?}")).collect();
-            let list = format!("// The program per fragment: {}\n", stages.join(" > "));
-            uniforms.push(("normal_matrix".into(), "mat3"));
-            let by_m = scene.rules.normal_transform() == NormalTransform::Modelview;
-            let what = if by_m { "the worksheet: M itself" } else { "(M^-1)^T" };
-            let mut all = uniforms.clone();
-            for u in frag_uniforms {
-                if !all.contains(&u) {
-                    all.push(u);
-                }
-            }
-            match lang {
-                Lang::Glsl => {
-                    let vertex = format!(
-                        "#version 330 core\n{}layout(location = 0) in vec3 a_position;\nlayout(location = 1) in vec3 a_normal;\n{}out vec3 v_pos;\nout vec3 v_normal;\n\nvoid main() {{\n    vec4 Ph = u_eye_from_object * vec4(a_position, 1.0); // {}\n    v_pos = Ph.xyz / Ph.w;\n    v_normal = u_normal_matrix * a_normal; // {} ({what})\n    gl_Position = u_clip_from_object * vec4(a_position, 1.0);\n}}\n",
-                        header("the per-fragment lighting's vertex stage"),
-                        declare(&s, &uniforms),
-                        step_no(ex, StepKind::Position, None),
-                        step_no(ex, StepKind::Normal, None)
-                    );
-                    let side_pick = if two {
-                        "    frag_color = gl_FrontFacing ? color0 : color1;\n"
-                    } else {
-                        "    frag_color = color0;\n"
-                    };
-                    let fragment = format!(
-                        "#version 330 core\n{}{list}{}in vec3 v_pos;\nin vec3 v_normal;\nout vec4 frag_color;\n\nvoid main() {{\n    vec3 P = v_pos;\n    vec3 N = v_normal;\n{}{side_pick}}}\n",
-                        header("the per-fragment lighting"),
-                        declare(&s, &all),
-                        indent(&body)
-                    );
-                    Shader { vertex, fragment, uniforms: all }
-                }
-                Lang::Wgsl => {
-                    let facing = if two { ", @builtin(front_facing) facing: bool" } else { "" };
-                    let pick = if two { "select(color1, color0, facing)" } else { "color0" };
-                    let module = format!(
-                        "{}{list}{}\nstruct VertexIn {{\n    @location(0) position: vec3<f32>,\n    @location(1) normal: vec3<f32>,\n}};\n\nstruct VertexOut {{\n    @builtin(position) clip: vec4<f32>,\n    @location(0) pos: vec3<f32>,\n    @location(1) normal: vec3<f32>,\n}};\n\n@vertex\nfn vs_main(input: VertexIn) -> VertexOut {{\n    var out: VertexOut;\n    let Ph = u.eye_from_object * vec4<f32>(input.position, 1.0); // {}\n    out.pos = Ph.xyz / Ph.w;\n    out.normal = u.normal_matrix * input.normal; // {} ({what})\n    out.clip = u.clip_from_object * vec4<f32>(input.position, 1.0);\n    return out;\n}}\n\n@fragment\nfn fs_main(in: VertexOut{facing}) -> @location(0) vec4<f32> {{\n    var P: vec3<f32> = in.pos;\n    var N: vec3<f32> = in.normal;\n{}    return {pick};\n}}\n",
-                        header("the per-fragment lighting"),
-                        declare(&s, &all),
-                        step_no(ex, StepKind::Position, None),
-                        step_no(ex, StepKind::Normal, None),
-                        indent(&body)
-                    );
-                    Shader { vertex: module, fragment: String::new(), uniforms: all }
-                }
-            }
+        Lang::Wgsl => {
+            let back = if two { "    @location(1) back: vec4<f32>,\n" } else { "" };
+            let store_back = if two { "    out.back = color1;\n" } else { "" };
+            let pick = if two { "select(in.back, in.front, facing)" } else { "in.front" };
+            let facing = if two { ", @builtin(front_facing) facing: bool" } else { "" };
+            let module = format!(
+                "{head}{list}{declared}\nstruct VertexIn {{\n    @location(0) position: vec3<f32>,\n    @location(1) normal: vec3<f32>,\n}};\n\nstruct VertexOut {{\n    @builtin(position) clip: vec4<f32>,\n    @location(0) front: vec4<f32>,\n{back}}};\n\n@vertex\nfn vs_main(input: VertexIn) -> VertexOut {{\n{body}    var out: VertexOut;\n    out.front = color0;\n{store_back}    out.clip = u.clip_from_object * vec4<f32>(input.position, 1.0);\n    return out;\n}}\n\n@fragment\nfn fs_main(in: VertexOut{facing}) -> @location(0) vec4<f32> {{\n    return {pick};\n}}\n",
+            );
+            Shader { vertex: module, fragment: String::new(), uniforms }
+        }
+    }
+}
+
+/// Phong: the vertex stage passes the eye-space position and normal; the fragment stage
+/// lights each fragment (the side facing the eye, when two-sided).
+fn phong(
+    scene: &Scene,
+    key: &Key,
+    options: EvalOptions,
+    ex: &Explanation,
+    s: &Syn,
+    mut uniforms: Vec<Uniform>,
+) -> Shader {
+    let program = Program::compile(key, SourceKind::EyeRaw(options.renormalize));
+    let mut frag_uniforms: Vec<Uniform> = Vec::new();
+    let body = indent(&lighting(scene, key, &program, ex, s, &mut frag_uniforms));
+    let list = stage_list("The program per fragment", &program);
+    uniforms.push(("normal_matrix".into(), "mat3"));
+    let by_m = scene.rules.normal_transform() == NormalTransform::Modelview;
+    let what = if by_m { "the worksheet: M itself" } else { "(M^-1)^T" };
+    let mut all = uniforms.clone();
+    for u in frag_uniforms {
+        if !all.contains(&u) {
+            all.push(u);
+        }
+    }
+    let (vertex_head, fragment_head) = (
+        header("the per-fragment lighting's vertex stage", ShaderShading::Phong),
+        header("the per-fragment lighting", ShaderShading::Phong),
+    );
+    let (position, normal) = (step_no(ex, StepKind::Position, None), step_no(ex, StepKind::Normal, None));
+    let two = key.two_sided;
+    match s.lang {
+        Lang::Glsl => {
+            let vertex = format!(
+                "#version 330 core\n{vertex_head}layout(location = 0) in vec3 a_position;\nlayout(location = 1) in vec3 a_normal;\n{}out vec3 v_pos;\nout vec3 v_normal;\n\nvoid main() {{\n    vec4 Ph = u_eye_from_object * vec4(a_position, 1.0); // {position}\n    v_pos = Ph.xyz / Ph.w;\n    v_normal = u_normal_matrix * a_normal; // {normal} ({what})\n    gl_Position = u_clip_from_object * vec4(a_position, 1.0);\n}}\n",
+                declare(s, &uniforms),
+            );
+            let side_pick =
+                if two { "    frag_color = gl_FrontFacing ? color0 : color1;\n" } else { "    frag_color = color0;\n" };
+            let fragment = format!(
+                "#version 330 core\n{fragment_head}{list}{}in vec3 v_pos;\nin vec3 v_normal;\nout vec4 frag_color;\n\nvoid main() {{\n    vec3 P = v_pos;\n    vec3 N = v_normal;\n{body}{side_pick}}}\n",
+                declare(s, &all),
+            );
+            Shader { vertex, fragment, uniforms: all }
+        }
+        Lang::Wgsl => {
+            let facing = if two { ", @builtin(front_facing) facing: bool" } else { "" };
+            let pick = if two { "select(color1, color0, facing)" } else { "color0" };
+            let module = format!(
+                "{fragment_head}{list}{}\nstruct VertexIn {{\n    @location(0) position: vec3<f32>,\n    @location(1) normal: vec3<f32>,\n}};\n\nstruct VertexOut {{\n    @builtin(position) clip: vec4<f32>,\n    @location(0) pos: vec3<f32>,\n    @location(1) normal: vec3<f32>,\n}};\n\n@vertex\nfn vs_main(input: VertexIn) -> VertexOut {{\n    var out: VertexOut;\n    let Ph = u.eye_from_object * vec4<f32>(input.position, 1.0); // {position}\n    out.pos = Ph.xyz / Ph.w;\n    out.normal = u.normal_matrix * input.normal; // {normal} ({what})\n    out.clip = u.clip_from_object * vec4<f32>(input.position, 1.0);\n    return out;\n}}\n\n@fragment\nfn fs_main(in: VertexOut{facing}) -> @location(0) vec4<f32> {{\n    var P: vec3<f32> = in.pos;\n    var N: vec3<f32> = in.normal;\n{body}    return {pick};\n}}\n",
+                declare(s, &all),
+            );
+            Shader { vertex: module, fragment: String::new(), uniforms: all }
         }
     }
 }
