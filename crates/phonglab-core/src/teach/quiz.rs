@@ -145,16 +145,45 @@ fn input(
 pub fn expected(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -> Option<(Vec<f64>, Vec<Input>)> {
     let st: &Step = key.steps.get(k)?;
     let keyed = st.value.clone()?;
+    let mut inputs = Inputs { key, answers, used: Vec::new() };
+    let value = match st.kind {
+        StepKind::L
+        | StepKind::Distance
+        | StepKind::V
+        | StepKind::CosTheta
+        | StepKind::H
+        | StepKind::R
+        | StepKind::CosBeta => vector_step(scene, st, &mut inputs),
+        _ => term_step(scene, st, &keyed, &mut inputs),
+    };
+    let carried = value.is_some();
+    Some((value.unwrap_or(keyed), if carried { inputs.used } else { Vec::new() }))
+}
+
+/// The inputs a step takes: the student's answer where given, else the key's, each one
+/// recorded as it is read.
+struct Inputs<'a> {
+    key: &'a Explanation,
+    answers: &'a Answers,
+    used: Vec<Input>,
+}
+
+impl Inputs<'_> {
+    /// The value of the step of `kind` for `light` (or the vertex).
+    fn get(&mut self, kind: StepKind, light: Option<usize>) -> Option<Vec<f64>> {
+        let (name, v, own) = input(self.key, self.answers, kind, light)?;
+        self.used.push((name, v.clone(), own));
+        Some(v)
+    }
+}
+
+/// A vector or cosine step (L, d, V, cos θ, H, R, cos β) from the inputs it takes; `None`
+/// where it comes from the givens alone (a directional light's L, an infinite viewer's V).
+fn vector_step(scene: &Scene, st: &Step, inputs: &mut Inputs) -> Option<Vec<f64>> {
     let li = st.light;
     let light = li.and_then(|i| scene.lights.get(i));
-    let mut used = Vec::new();
-    let mut get = |kind: StepKind, l: Option<usize>| -> Option<Vec<f64>> {
-        let (name, v, own) = input(key, answers, kind, l)?;
-        used.push((name, v.clone(), own));
-        Some(v)
-    };
-    let m = &scene.material;
-    let value: Option<Vec<f64>> = match st.kind {
+    let mut get = |kind: StepKind, l: Option<usize>| inputs.get(kind, l);
+    match st.kind {
         StepKind::L => match light {
             Some(l) if scene.light_pos_in_eye(l).w != 0.0 => {
                 let (p, pl) = (get(StepKind::Position, None)?, get(StepKind::LightPosition, li)?);
@@ -173,11 +202,6 @@ pub fn expected(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -
         StepKind::CosTheta => {
             let (n, l) = (get(StepKind::Normal, None)?, get(StepKind::L, li)?);
             Some(vec![v3(&n).dot(v3(&l))])
-        }
-        StepKind::Diffuse => {
-            let c = get(StepKind::CosTheta, li)?[0].max(0.0);
-            let ld = light?.diffuse;
-            Some((0..3).map(|i| ld[i] * m.diffuse[i] * c).chain([0.0]).collect())
         }
         StepKind::H => {
             let (l, v) = (get(StepKind::L, li)?, get(StepKind::V, None)?);
@@ -198,6 +222,25 @@ pub fn expected(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -
                 Some(vec![v3(&r).dot(v3(&v))])
             }
         },
+        _ => None,
+    }
+}
+
+/// A colour or factor step (the diffuse and specular terms, the attenuation, a light's
+/// share, the sum, the clamped colour) from the inputs it takes; `None` for the givens.
+/// `keyed` is the key's value (its alpha is kept).
+fn term_step(scene: &Scene, st: &Step, keyed: &[f64], inputs: &mut Inputs) -> Option<Vec<f64>> {
+    let li = st.light;
+    let light = li.and_then(|i| scene.lights.get(i));
+    let m = &scene.material;
+    let alpha = |or: f64| keyed.get(3).copied().unwrap_or(or);
+    let mut get = |kind: StepKind, l: Option<usize>| inputs.get(kind, l);
+    match st.kind {
+        StepKind::Diffuse => {
+            let c = get(StepKind::CosTheta, li)?[0].max(0.0);
+            let ld = light?.diffuse;
+            Some((0..3).map(|i| ld[i] * m.diffuse[i] * c).chain([0.0]).collect())
+        }
         StepKind::Specular => {
             let c = get(StepKind::CosBeta, li)?[0];
             let n_dot_l = get(StepKind::CosTheta, li)?[0];
@@ -207,14 +250,9 @@ pub fn expected(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -
             Some((0..3).map(|i| ls[i] * m.specular[i] * f).chain([0.0]).collect())
         }
         StepKind::Attenuation => {
-            let l = light?;
-            match get(StepKind::Distance, li) {
-                Some(d) => {
-                    let [k0, k1, k2] = l.attenuation;
-                    Some(vec![k0 + k1 * d[0] + k2 * d[0] * d[0]])
-                }
-                None => None,
-            }
+            let [k0, k1, k2] = light?.attenuation;
+            let d = get(StepKind::Distance, li)?[0];
+            Some(vec![k0 + k1 * d + k2 * d * d])
         }
         StepKind::Contribution => {
             let at = get(StepKind::Attenuation, li).map_or(1.0, |v| v[0]);
@@ -222,39 +260,26 @@ pub fn expected(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -
             let amb = get(StepKind::Ambient, li)?;
             let dif = get(StepKind::Diffuse, li)?;
             let spe = get(StepKind::Specular, li).unwrap_or_else(|| vec![0.0; 4]);
-            Some(
-                (0..3)
-                    .map(|i| spot * (amb[i] + dif[i] + spe[i]) / at)
-                    .chain([keyed.get(3).copied().unwrap_or(0.0)])
-                    .collect(),
-            )
+            Some((0..3).map(|i| spot * (amb[i] + dif[i] + spe[i]) / at).chain([alpha(0.0)]).collect())
         }
         StepKind::Primary => {
             let mut sum = [0.0f64; 3];
-            let mut add = |v: Option<Vec<f64>>| {
-                if let Some(v) = v {
-                    for (s, x) in sum.iter_mut().zip(&v) {
-                        *s += x;
-                    }
+            let parts = [get(StepKind::Emission, None), get(StepKind::SceneAmbient, None)].into_iter();
+            let shares: Vec<_> = (0..scene.lights.len()).map(|i| get(StepKind::Contribution, Some(i))).collect();
+            for v in parts.chain(shares).flatten() {
+                for (s, x) in sum.iter_mut().zip(&v) {
+                    *s += x;
                 }
-            };
-            add(get(StepKind::Emission, None));
-            add(get(StepKind::SceneAmbient, None));
-            for i in scene.lights.iter().enumerate().map(|(i, _)| i) {
-                add(get(StepKind::Contribution, Some(i)));
             }
-            Some(sum.into_iter().chain([keyed.get(3).copied().unwrap_or(0.0)]).collect())
+            Some(sum.into_iter().chain([alpha(0.0)]).collect())
         }
         StepKind::Clamped => {
             let i = get(StepKind::Primary, None)?;
-            let w = keyed.get(3).copied().unwrap_or(1.0);
-            Some(i.iter().take(3).map(|x| x.clamp(0.0, 1.0)).chain([w]).collect())
+            Some(i.iter().take(3).map(|x| x.clamp(0.0, 1.0)).chain([alpha(1.0)]).collect())
         }
         // From the givens alone: the key's value.
         _ => None,
-    };
-    let carried = value.is_some();
-    Some((value.unwrap_or(keyed), if carried { used } else { Vec::new() }))
+    }
 }
 
 /// The verdict on step `k`, or `None` when it has no answer yet or no value to check.
@@ -343,6 +368,45 @@ mod tests {
         }
         let (right, answered, all) = score(&s, &e, &answers);
         assert_eq!((right, answered), (all, all));
+    }
+
+    /// Every step worked out again from the key's own earlier values gives the key's value:
+    /// each carried-forward formula is the engine's (a slip in one, such as R's factor 2 or
+    /// the attenuation's d², would leave a student marked against a wrong number).
+    #[test]
+    fn each_step_recomputed_from_the_keys_inputs_is_the_key() {
+        let mut spot = crate::model::presets::worksheet(3);
+        spot.rules = crate::model::rules::Rules::OPENGL;
+        spot.light_model.local_viewer = true;
+        spot.lights[0].spot_cutoff = 80.0;
+        spot.lights[0].spot_exponent = 4.0;
+        // An emission bright enough that the sum passes 1 and the clamp shows.
+        let mut bright = crate::model::presets::worksheet(5);
+        bright.rules = crate::model::rules::Rules::OPENGL;
+        bright.material.emission = glam::DVec4::new(1.5, 0.2, 0.2, 1.0);
+        let scenes = [crate::model::presets::worksheet(5), crate::model::presets::phong_demo(), spot, bright];
+        let mut carried = std::collections::BTreeSet::new();
+        for (n, s) in scenes.iter().enumerate() {
+            let lit = Engine::<f64>::new(s).unwrap().light(&s.vertex);
+            let e = explain(s, &lit, Side::Front);
+            let answers: Vec<Option<Vec<f64>>> = e.steps.iter().map(|st| st.value.clone()).collect();
+            for (k, st) in e.steps.iter().enumerate() {
+                let Some((want, inputs)) = expected(s, &e, &answers, k) else { continue };
+                if inputs.is_empty() {
+                    continue;
+                }
+                carried.insert(format!("{:?}", st.kind));
+                let key = st.value.clone().unwrap();
+                assert!(close(&want, &key), "scene {n}: step {} {}: {want:?} against {key:?}", k + 1, st.name);
+            }
+        }
+        // The scenes carry every formula forward (R: the demo's Phong; V: the local viewer).
+        for kind in ["L", "Distance", "V", "CosTheta", "H", "R", "CosBeta", "Diffuse", "Specular", "Attenuation"] {
+            assert!(carried.contains(kind), "{kind} never carried: {carried:?}");
+        }
+        for kind in ["Contribution", "Primary", "Clamped"] {
+            assert!(carried.contains(kind), "{kind} never carried: {carried:?}");
+        }
     }
 
     #[test]
