@@ -289,11 +289,56 @@ pub fn vector_plot_ui(
     show_angles: bool,
 ) -> PlotGeometry {
     legend_ui(ui, &legend(eval, specular));
+    let (outer, side) = plot_area_ui(ui, orbit);
+    let rect = Rect::from_center_size(outer.center(), Vec2::splat(side));
+    let bg = ui.visuals().panel_fill;
+    let ink = |c: Color32| palette::ink_on(c, bg);
+    let body = ui.text_style_height(&egui::TextStyle::Body);
+    let ppp = ui.ctx().pixels_per_point();
+    // Room beyond a unit vector's tip for its letter.
+    let unit = side * 0.5 / 1.2;
+    let canvas = Canvas {
+        painter: ui.painter_at(outer),
+        r: view_rotation(*orbit),
+        centre: rect.center(),
+        unit,
+        width: (3.2 / ppp).max(unit * 0.022),
+    };
+    let mut marks = Marks::default();
+    canvas.tangent_plane(eval.n, ink(palette::N));
+    canvas.arrows(&arrows(eval, specular, &ink), egui::FontId::proportional(body * 1.6), &mut marks);
+    canvas.painter.circle_filled(canvas.centre, canvas.width * 1.2, ink(palette::N));
+    if show_angles && let Some(lv) = eval.lights.first() {
+        let second = match specular {
+            SpecularModel::BlinnPhong => ("\u{3b2}", eval.n, lv.h),
+            SpecularModel::Phong => ("\u{3b1}", lv.r, eval.v),
+        };
+        let font = egui::FontId::proportional(body * 1.5);
+        canvas.angle(0.3, ("\u{3b8}", eval.n, lv.l), ink(palette::L), font.clone(), &mut marks);
+        canvas.angle(0.5, second, ink(palette::H), font, &mut marks);
+    }
+
+    // The triad, bottom left.
+    let small = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
+    let grey = ink(Color32::from_gray(140));
+    let origin = rect.left_bottom() + vec2(side * 0.08, -side * 0.08);
+    marks.lines.extend(triad(&canvas.painter, &canvas.r, origin, side * 0.06, grey, small));
+
+    // Every label, placed clear of every other and of every line; labels may use the whole
+    // width given, beyond the square.
+    let painter = &canvas.painter;
+    let galleys: Vec<_> = marks.texts.into_iter().map(|(t, c, f)| painter.layout_no_wrap(t, f, c)).collect();
+    let boxes = paint_labels(painter, marks.wanted, galleys, &marks.lines, outer, None);
+    PlotGeometry { rect, unit, labels: boxes, stroke: canvas.width }
+}
+
+/// The plot's area (the whole width given, as high as the square it holds) and the square's
+/// side; dragged, it turns the view.
+fn plot_area_ui(ui: &mut Ui, orbit: &mut Orbit) -> (Rect, f32) {
     let avail = ui.available_size();
     // As large as the part allows, and never wider than it.
     let side = avail.x.min(avail.y).max(40.0).min(avail.x.max(1.0));
     let (outer, resp) = ui.allocate_exact_size(vec2(avail.x.max(side), side), Sense::click_and_drag());
-    let rect = Rect::from_center_size(outer.center(), Vec2::splat(side));
     resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, "vector plot"));
     let resp = resp.on_hover_text(phonglab_core::t!(
         "plot-drag",
@@ -305,92 +350,97 @@ pub fn vector_plot_ui(
         orbit.yaw = (orbit.yaw + d.x as f64 * 0.5).rem_euclid(360.0);
         orbit.pitch = (orbit.pitch + d.y as f64 * 0.5).clamp(-90.0, 90.0);
     }
+    (outer, side)
+}
 
-    let r = view_rotation(*orbit);
-    let bg = ui.visuals().panel_fill;
-    let ink = |c: Color32| palette::ink_on(c, bg);
-    let painter = ui.painter_at(outer);
-    let body = ui.text_style_height(&egui::TextStyle::Body);
-    let ppp = ui.ctx().pixels_per_point();
-    // Room beyond a unit vector's tip for its letter.
-    let unit = side * 0.5 / 1.2;
-    let width = (3.2 / ppp).max(unit * 0.022);
-    let centre = rect.center();
-    let at = |v: [f64; 2], k: f64| centre + vec2((v[0] * k) as f32, -(v[1] * k) as f32) * unit;
-    let mut lines: Vec<Segment> = Vec::new();
+/// Where the diagram is drawn: its painter, the view's rotation, the vertex on screen, the
+/// length of a unit vector and the arrows' width (points).
+struct Canvas {
+    painter: egui::Painter,
+    r: DMat3,
+    centre: Pos2,
+    unit: f32,
+    width: f32,
+}
 
-    // The tangent plane: the unit disc perpendicular to N.
-    if let Some(n) = eval.n.try_normalize() {
+/// What the labels must stay clear of (every line drawn), and the labels to place: each
+/// one's anchor and its text, colour and font.
+#[derive(Default)]
+struct Marks {
+    lines: Vec<Segment>,
+    wanted: Vec<Wanted>,
+    texts: Vec<(String, Color32, egui::FontId)>,
+}
+
+impl Canvas {
+    /// A point of the plot plane on screen.
+    fn at(&self, v: [f64; 2]) -> Pos2 {
+        self.centre + vec2(v[0] as f32, -(v[1] as f32)) * self.unit
+    }
+
+    /// The tangent plane: the unit disc perpendicular to `n`.
+    fn tangent_plane(&self, n: DVec3, color: Color32) {
+        let Some(n) = n.try_normalize() else { return };
         let (a, b) = n.any_orthonormal_pair();
         let pts: Vec<Pos2> = (0..72)
             .map(|i| i as f64 / 72.0 * std::f64::consts::TAU)
-            .map(|t| at(project(&r, a * t.cos() + b * t.sin()), 1.0))
+            .map(|t| self.at(project(&self.r, a * t.cos() + b * t.sin())))
             .collect();
-        let c = ink(palette::N);
-        painter.add(egui::Shape::convex_polygon(pts.clone(), c.gamma_multiply(0.10), Stroke::NONE));
-        painter.add(egui::Shape::closed_line(pts, Stroke::new(1.0, c.gamma_multiply(0.5))));
+        self.painter.add(egui::Shape::convex_polygon(pts.clone(), color.gamma_multiply(0.10), Stroke::NONE));
+        self.painter.add(egui::Shape::closed_line(pts, Stroke::new(1.0, color.gamma_multiply(0.5))));
     }
 
-    // The arrows, and each one's letter to place.
-    let tip_font = egui::FontId::proportional(body * 1.6);
-    let angle_font = egui::FontId::proportional(body * 1.5);
-    let mut wanted = Vec::new();
-    let mut texts = Vec::new();
-    let mut end_on = 0;
-    for a in arrows(eval, specular, &ink) {
-        let v = a.v.normalize_or_zero();
-        let [x, y] = project(&r, v);
-        let z = (r * v).z;
-        let tip = at([x, y], 1.0);
-        let flat = (x * x + y * y).sqrt() < 0.15;
-        if flat {
-            // End on: ⊙ or ⊗ at the vertex, its letter beside it.
-            let (line, label) = end_on_marker(&painter, centre, end_on, width, a.color, z > 0.0);
-            end_on += 1;
-            lines.push(line);
-            wanted.push(label);
-        } else {
-            lines.push(draw_arrow(&painter, centre, tip, width, a.color, a.dashed, z < -1e-9));
-            wanted.push(Wanted { anchor: tip, direction: tip - centre, size: Vec2::ZERO, gap: width });
-        }
-        texts.push((a.tag, a.color, tip_font.clone()));
-    }
-    painter.circle_filled(centre, width * 1.2, ink(palette::N));
-
-    // θ and β (or α) as arcs, their labels outside them.
-    if show_angles && let Some(lv) = eval.lights.first() {
-        let (second, sym, from, to) = match specular {
-            SpecularModel::BlinnPhong => (0.5, "\u{3b2}", eval.n, lv.h),
-            SpecularModel::Phong => (0.5, "\u{3b1}", lv.r, eval.v),
-        };
-        for (radius, name, a, b, c) in
-            [(0.3, "\u{3b8}", eval.n, lv.l, ink(palette::L)), (second, sym, from, to, ink(palette::H))]
-        {
-            let Some((pts, mid, angle)) = arc(&r, a, b, radius) else { continue };
-            let pts: Vec<Pos2> = pts.iter().map(|p| at(*p, 1.0)).collect();
-            for w in pts.windows(2) {
-                lines.push(Segment { a: w[0], b: w[1], half_width: 1.0 });
+    /// The arrows from the vertex (⊙ or ⊗ for one seen end on), and each one's letter to
+    /// place.
+    fn arrows(&self, arrows: &[Arrow], font: egui::FontId, marks: &mut Marks) {
+        let mut end_on = 0;
+        for a in arrows {
+            let v = a.v.normalize_or_zero();
+            let [x, y] = project(&self.r, v);
+            let z = (self.r * v).z;
+            let tip = self.at([x, y]);
+            if (x * x + y * y).sqrt() < 0.15 {
+                // End on: ⊙ or ⊗ at the vertex, its letter beside it.
+                let (line, label) = end_on_marker(&self.painter, self.centre, end_on, self.width, a.color, z > 0.0);
+                end_on += 1;
+                marks.lines.push(line);
+                marks.wanted.push(label);
+            } else {
+                let line = draw_arrow(&self.painter, self.centre, tip, self.width, a.color, a.dashed, z < -1e-9);
+                marks.lines.push(line);
+                marks.wanted.push(Wanted {
+                    anchor: tip,
+                    direction: tip - self.centre,
+                    size: Vec2::ZERO,
+                    gap: self.width,
+                });
             }
-            painter.add(egui::Shape::line(pts, Stroke::new(1.5, c)));
-            let m = at(mid, 1.0);
-            let out = if (m - centre).length() > 1.0 { m - centre } else { vec2(1.0, -1.0) };
-            wanted.push(Wanted { anchor: m, direction: out, size: Vec2::ZERO, gap: 4.0 });
-            let text = phonglab_core::locale::decimal(&format!("{name} = {:.1}\u{b0}", angle.to_degrees()));
-            texts.push((text, c, angle_font.clone()));
+            marks.texts.push((a.tag.clone(), a.color, font.clone()));
         }
     }
 
-    // The triad, bottom left.
-    let small = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
-    let grey = ink(Color32::from_gray(140));
-    let origin = rect.left_bottom() + vec2(side * 0.08, -side * 0.08);
-    lines.extend(triad(&painter, &r, origin, side * 0.06, grey, small));
-
-    // Every label, placed clear of every other and of every line; labels may use the whole
-    // width given, beyond the square.
-    let galleys: Vec<_> = texts.into_iter().map(|(t, c, f)| painter.layout_no_wrap(t, f, c)).collect();
-    let boxes = paint_labels(&painter, wanted, galleys, &lines, outer, None);
-    PlotGeometry { rect, unit, labels: boxes, stroke: width }
+    /// The angle `name` between `a` and `b` as an arc of `radius`, its label (the angle in
+    /// degrees) outside it.
+    fn angle(
+        &self,
+        radius: f64,
+        (name, a, b): (&str, DVec3, DVec3),
+        color: Color32,
+        font: egui::FontId,
+        marks: &mut Marks,
+    ) {
+        let Some((pts, mid, angle)) = arc(&self.r, a, b, radius) else { return };
+        let pts: Vec<Pos2> = pts.iter().map(|p| self.at(*p)).collect();
+        for w in pts.windows(2) {
+            marks.lines.push(Segment { a: w[0], b: w[1], half_width: 1.0 });
+        }
+        self.painter.add(egui::Shape::line(pts, Stroke::new(1.5, color)));
+        let m = self.at(mid);
+        let out = if (m - self.centre).length() > 1.0 { m - self.centre } else { vec2(1.0, -1.0) };
+        marks.wanted.push(Wanted { anchor: m, direction: out, size: Vec2::ZERO, gap: 4.0 });
+        let text = phonglab_core::locale::decimal(&format!("{name} = {:.1}\u{b0}", angle.to_degrees()));
+        marks.texts.push((text, color, font));
+    }
 }
 
 #[cfg(test)]
