@@ -320,64 +320,14 @@ impl<S: Real> Engine<S> {
         v: Option<S::V3>,
     ) -> LightTerms<S> {
         let mut limits = Limits::NONE;
-
-        // L = VP and d; att.
-        let (l64, d64) = terms::light_vector(&pl.pos, pos, at_infinity);
-        let distance = d64.map(S::from_f64);
-        if let (LightPos::Positional(lp), false, Some(d)) = (&pl.pos, at_infinity, d64) {
-            // Would |VP|^2 have under- or overflowed in this precision?
-            let vp_s = S::V3::from_dvec3(*lp - pos);
-            let sq = vp_s.dot(vp_s);
-            if d > 0.0 && (sq == S::ZERO || !sq.is_finite()) {
-                limits.insert(Limit::DistanceScaled);
-            }
-        }
+        let (l64, distance, attenuation) = Self::light_vector(pl, pos, at_infinity, &mut limits);
         let l: Option<S::V3> = l64.map(S::V3::from_dvec3);
-        if l.is_none() {
-            limits.insert(match pl.pos {
-                LightPos::Positional(_) => Limit::LightAtVertex,
-                LightPos::Directional { .. } => Limit::LightDirectionZero,
-            });
-        }
-        let attenuation = distance.map_or(S::ONE, |d| terms::attenuation(pl.k, d));
-        if attenuation == S::INFINITY {
-            limits.insert(Limit::AttenuationInfinite);
-        }
-
-        // spot
-        let spot = match &pl.spot {
-            None => SpotTerms { active: false, factor: S::ONE, ..Default::default() },
-            Some(sp) => {
-                let (cos_angle, inside, factor) = terms::spot(sp, l64, self.options.pow);
-                match (sp.axis, l64) {
-                    (None, _) => limits.insert(Limit::SpotDirectionZero),
-                    (Some(_), None) if matches!(pl.pos, LightPos::Positional(_)) => limits.insert(Limit::SpotAtVertex),
-                    _ => {}
-                }
-                SpotTerms {
-                    active: true,
-                    dir_in_eye: sp.axis.map(S::V3::from_dvec3).unwrap_or(S::V3::ZERO),
-                    cos_angle,
-                    cos_cutoff: S::from_f64(sp.cos_cutoff),
-                    inside,
-                    factor,
-                }
-            }
-        };
+        let spot = self.spot_terms(pl, l64, &mut limits);
         let scale = mul0(attenuation, spot.factor);
 
         // H or R.
         let lit = l.filter(|_| !zero_normal);
-        let h = match (l, v) {
-            (Some(l), Some(v)) if self.rules.specular == SpecularModel::BlinnPhong => {
-                let h = terms::halfway::<S>(l, v);
-                if h.is_none() {
-                    limits.insert(Limit::HalfwayZero);
-                }
-                h
-            }
-            _ => None,
-        };
+        let h = self.halfway(l, v, &mut limits);
         let r = lit.map(|l| terms::reflect::<S>(n, l, self.rules.reflect_clamped()));
 
         let side_terms = |side: usize| -> SideTerms<S> {
@@ -411,6 +361,77 @@ impl<S: Real> Engine<S> {
             front,
             back,
             limits,
+        }
+    }
+
+    /// L (in f64, `None` where it has no direction), the distance d (positional lights) and
+    /// the attenuation, noting what this precision could not hold.
+    #[inline(always)]
+    fn light_vector(
+        pl: &PreparedLight<S>,
+        pos: DVec3,
+        at_infinity: bool,
+        limits: &mut Limits,
+    ) -> (Option<DVec3>, Option<S>, S) {
+        let (l64, d64) = terms::light_vector(&pl.pos, pos, at_infinity);
+        if let (LightPos::Positional(lp), false, Some(d)) = (&pl.pos, at_infinity, d64) {
+            // Would |VP|^2 have under- or overflowed in this precision?
+            let vp_s = S::V3::from_dvec3(*lp - pos);
+            let sq = vp_s.dot(vp_s);
+            if d > 0.0 && (sq == S::ZERO || !sq.is_finite()) {
+                limits.insert(Limit::DistanceScaled);
+            }
+        }
+        if l64.is_none() {
+            limits.insert(match pl.pos {
+                LightPos::Positional(_) => Limit::LightAtVertex,
+                LightPos::Directional { .. } => Limit::LightDirectionZero,
+            });
+        }
+        let distance = d64.map(S::from_f64);
+        let attenuation = distance.map_or(S::ONE, |d| terms::attenuation(pl.k, d));
+        if attenuation == S::INFINITY {
+            limits.insert(Limit::AttenuationInfinite);
+        }
+        (l64, distance, attenuation)
+    }
+
+    /// The spotlight's cosine to its axis, the cone test and the factor (1 for a light that
+    /// is not a spot).
+    #[inline(always)]
+    fn spot_terms(&self, pl: &PreparedLight<S>, l64: Option<DVec3>, limits: &mut Limits) -> SpotTerms<S> {
+        let Some(sp) = &pl.spot else {
+            return SpotTerms { active: false, factor: S::ONE, ..Default::default() };
+        };
+        let (cos_angle, inside, factor) = terms::spot(sp, l64, self.options.pow);
+        match (sp.axis, l64) {
+            (None, _) => limits.insert(Limit::SpotDirectionZero),
+            (Some(_), None) if matches!(pl.pos, LightPos::Positional(_)) => limits.insert(Limit::SpotAtVertex),
+            _ => {}
+        }
+        SpotTerms {
+            active: true,
+            dir_in_eye: sp.axis.map(S::V3::from_dvec3).unwrap_or(S::V3::ZERO),
+            cos_angle,
+            cos_cutoff: S::from_f64(sp.cos_cutoff),
+            inside,
+            factor,
+        }
+    }
+
+    /// H, under Blinn-Phong's model where L and V have directions (`None` where L + V is
+    /// zero, noted).
+    #[inline(always)]
+    fn halfway(&self, l: Option<S::V3>, v: Option<S::V3>, limits: &mut Limits) -> Option<S::V3> {
+        match (l, v) {
+            (Some(l), Some(v)) if self.rules.specular == SpecularModel::BlinnPhong => {
+                let h = terms::halfway::<S>(l, v);
+                if h.is_none() {
+                    limits.insert(Limit::HalfwayZero);
+                }
+                h
+            }
+            _ => None,
         }
     }
 }
