@@ -40,8 +40,8 @@ pub fn studies(r: &CostRun) -> Result<Vec<Study>> {
         let mut doc = r.doc.clone();
         doc.view.object = object;
         doc.view.spin_degrees = r.spin.rem_euclid(360.0);
-        let scene = doc.shaded_scene();
-        let setup = Setup::shaded_view(&scene, &doc.view, r.size, BACKGROUND);
+        let shaded = doc.shaded_setup(phonglab_core::PowFn::Exact);
+        let setup = Setup::new(&shaded, r.size, BACKGROUND);
         let tty = std::io::stderr().is_terminal();
         let study = cost::run(&setup, r.timing, &mut |p| {
             if tty {

@@ -12,7 +12,7 @@ use std::sync::{Arc, Mutex};
 use egui::{Color32, ColorImage, TextureHandle, TextureOptions, Ui};
 use egui_plot::{Legend, Line, LineStyle, MarkerShape, Plot, PlotPoint, PlotPoints, Points, Text};
 use phonglab_core::cost::{self, ErrorStats, Progress, Question, Setup, Study, Timing};
-use phonglab_core::{EvalOptions, Scene, Shading, View};
+use phonglab_core::{ShadedSetup, Shading};
 use phonglab_core::{locale, t};
 
 /// Image size of the app's study and heat map, in pixels (the CLI's default is larger).
@@ -116,12 +116,12 @@ pub struct CostState {
 }
 
 impl CostState {
-    /// Starts a study of `scene` (as the shaded view lights it) and `view`'s object.
-    pub fn start(&mut self, scene: Scene, view: View, about: String) {
+    /// Starts a study of the shaded view `shaded`.
+    pub fn start(&mut self, shaded: ShadedSetup, about: String) {
         self.error = None;
         // The study times frames as the shaded view draws them: on every core.
         self.running = Some(Worker::spawn(0, move |progress| {
-            let setup = Setup::shaded_view(&scene, &view, APP_SIZE, BACKGROUND);
+            let setup = Setup::new(&shaded, APP_SIZE, BACKGROUND);
             cost::run(&setup, Timing::QUICK, progress).map_err(|e| e.to_string())
         }));
         self.pending_about = about;
@@ -157,9 +157,9 @@ impl CostState {
         self.running.is_some() || self.heat_running.is_some()
     }
 
-    /// Makes sure a heat map of this view is on its way (or there).
-    pub fn want_heat_map(&mut self, scene: &Scene, view: &View, options: EvalOptions) {
-        let key = format!("{scene:?}|{view:?}|{options:?}");
+    /// Makes sure a heat map of the shaded view `shaded` is on its way (or there).
+    pub fn want_heat_map(&mut self, shaded: &ShadedSetup) {
+        let key = format!("{shaded:?}");
         if self.heat.as_ref().is_some_and(|h| h.key == key)
             || self.heat_running.as_ref().is_some_and(|(k, _)| *k == key)
         {
@@ -169,10 +169,10 @@ impl CostState {
             // One at a time: the newest view is asked for when this one is done.
             return;
         }
-        let (scene, view, k) = (scene.clone(), view.clone(), key.clone());
+        let (shaded, k) = (shaded.clone(), key.clone());
         // The heat map follows every edit: one thread, so the UI's own renders stay quick.
         let worker = Worker::spawn(1, move |progress| {
-            let setup = Setup::shaded_view(&scene, &view, APP_SIZE, BACKGROUND);
+            let setup = Setup::new(&shaded, APP_SIZE, BACKGROUND);
             if !progress(&Progress { done: 0, total: 2, what: "reference".into() }) {
                 return Ok(None);
             }
@@ -180,7 +180,8 @@ impl CostState {
             if !progress(&Progress { done: 1, total: 2, what: "the view".into() }) {
                 return Ok(None);
             }
-            let m = cost::measure_view(&setup, &view, view.shading, options, &reference, Timing::ONCE)
+            let view = &shaded.view;
+            let m = cost::measure_view(&setup, view, view.shading, shaded.options, &reference, Timing::ONCE)
                 .map_err(|e| e.to_string())?;
             let rgba = cost::heat_map_rgba(&m.map, &reference, HEAT_FULL_SCALE);
             let image = ColorImage::from_rgba_unmultiplied([reference.size, reference.size], &rgba);
@@ -357,7 +358,7 @@ pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
                         state.doc.view.object.label(),
                         phonglab_core::library::localised_name(&state.doc.name)
                     );
-                    state.cost.start(state.doc.shaded_scene(), state.doc.view.clone(), about);
+                    state.cost.start(state.doc.shaded_setup(state.ui.pow), about);
                 }
                 if busy && ui.button(t!("cancel")).clicked() {
                     state.cost.running = None;

@@ -221,7 +221,7 @@ fn pictures_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) -> Sh
     });
     let scene = state.doc.shaded_scene();
     if heat {
-        state.cost.want_heat_map(&scene, &state.doc.view, state.doc.view.eval_options(state.ui.pow));
+        state.cost.want_heat_map(&state.doc.shaded_setup(state.ui.pow));
     }
     let size = egui::vec2(side, side);
     let caption = format!(

@@ -14,8 +14,8 @@ fn study_of(object: ObjectKind) -> Study {
     let mut doc = Document::default();
     doc.view.object = object;
     doc.view.spin_degrees = 30.0;
-    let scene = doc.shaded_scene();
-    let setup = Setup::shaded_view(&scene, &doc.view, SIZE, [0.1; 3]);
+    let shaded = doc.shaded_setup(phonglab_core::PowFn::Exact);
+    let setup = Setup::new(&shaded, SIZE, [0.1; 3]);
     cost::run(&setup, Timing::ONCE, &mut |_| true).unwrap().expect("not cancelled")
 }
 
@@ -127,8 +127,8 @@ fn the_figures_are_deterministic_and_the_maps_agree_with_them() {
 #[test]
 fn a_study_can_be_cancelled() {
     let doc = Document::default();
-    let scene = doc.shaded_scene();
-    let setup = Setup::shaded_view(&scene, &doc.view, 32, [0.0; 3]);
+    let shaded = doc.shaded_setup(phonglab_core::PowFn::Exact);
+    let setup = Setup::new(&shaded, 32, [0.0; 3]);
     let mut seen = 0;
     let r = cost::run(&setup, Timing::ONCE, &mut |p| {
         seen += 1;
@@ -142,8 +142,8 @@ fn a_study_can_be_cancelled() {
 #[test]
 fn timing_rounds_visit_every_variant_again_and_keep_the_errors() {
     let doc = Document::default();
-    let scene = doc.shaded_scene();
-    let setup = Setup::shaded_view(&scene, &doc.view, 32, [0.0; 3]);
+    let shaded = doc.shaded_setup(phonglab_core::PowFn::Exact);
+    let setup = Setup::new(&shaded, 32, [0.0; 3]);
     let n = cost::variants(doc.view.object).len();
     let once = cost::run(&setup, Timing::ONCE, &mut |_| true).unwrap().unwrap();
     let mut steps = Vec::new();

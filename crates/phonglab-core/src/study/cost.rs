@@ -15,7 +15,7 @@
 
 use web_time::Instant;
 
-use glam::{DMat4, Vec3};
+use glam::Vec3;
 
 use crate::equation::lighting::{Engine, EvalOptions, Renormalize};
 use crate::mesh::Mesh;
@@ -24,18 +24,17 @@ use crate::model::scene::{Scene, Vertex};
 use crate::model::view::{ObjectKind, Shading, View};
 use crate::numerics::pow::PowFn;
 use crate::raster::render::{Image, Job, Renderer};
+use crate::raster::shaded::ShadedSetup;
 use crate::specialise::specialised::Lighter;
 
-/// What is studied: a scene (its modelview includes the view's camera and the object's
-/// spin, as [`crate::formats::document::Document::shaded_scene`] gives it), the object and how it is drawn.
+/// What is studied: a document's shaded view as the app and the CLI draw it (its scene, as
+/// [`crate::formats::document::Document::shaded_scene`] gives it, where the object is drawn,
+/// and the view: the object, its demo normals and cylinder caps; the tessellation is
+/// varied), drawn `size` pixels square on `background`.
 #[derive(Clone, Copy, Debug)]
 pub struct Setup<'a> {
-    /// The lit scene.
-    pub scene: &'a Scene,
-    /// The object (its kind, demo normals and cylinder caps; the tessellation is varied).
-    pub view: &'a View,
-    /// Object to clip space.
-    pub clip_from_object: DMat4,
+    /// The shaded view.
+    pub shaded: &'a ShadedSetup,
     /// Width and height of the images, in pixels.
     pub size: usize,
     /// Colour of uncovered pixels.
@@ -43,28 +42,23 @@ pub struct Setup<'a> {
 }
 
 impl<'a> Setup<'a> {
-    /// The shaded view's setup: `scene` as [`crate::formats::document::Document::shaded_scene`] gives it, drawn
-    /// where the view draws it ([`View::clip_from_object`]), `size` pixels square.
-    pub fn shaded_view(scene: &'a Scene, view: &'a View, size: usize, background: [f32; 3]) -> Self {
-        Setup { scene, view, clip_from_object: view.clip_from_object(), size, background }
+    /// The study of `shaded`, `size` pixels square on `background`.
+    pub fn new(shaded: &'a ShadedSetup, size: usize, background: [f32; 3]) -> Self {
+        Setup { shaded, size, background }
     }
 
-    /// What the renderer draws for `mesh` in this setup (no culling, as the study compares
-    /// every covered pixel).
+    /// The view studied.
+    pub fn view(&self) -> &'a View {
+        &self.shaded.view
+    }
+
+    /// What the renderer draws for `mesh` in this setup: the shaded view's job (no
+    /// culling, as the study compares every covered pixel) with `shading` and `options`.
     pub fn job<'m>(&self, mesh: &'m Mesh, shading: Shading, options: EvalOptions) -> Job<'m>
     where
         'a: 'm,
     {
-        Job {
-            scene: self.scene,
-            mesh,
-            clip_from_object: self.clip_from_object,
-            shading,
-            flat_normal: self.view.flat_normal,
-            background: self.background,
-            cull_back: false,
-            options,
-        }
+        Job { shading, options, background: self.background, ..self.shaded.job(mesh) }
     }
 }
 
@@ -123,7 +117,7 @@ pub struct Reference {
 /// general engine with the eye-space position and normal interpolated at that point of the
 /// mesh triangle, the normal renormalised exactly.
 pub fn reference(setup: &Setup<'_>) -> Result<Reference, SceneError> {
-    let mesh = reference_view(setup.view).mesh();
+    let mesh = reference_view(setup.view()).mesh();
     let options = EvalOptions { renormalize: crate::equation::lighting::Renormalize::Exact, ..EvalOptions::default() };
     let job = setup.job(&mesh, Shading::Phong, options);
     let size = setup.size.max(1);
@@ -356,7 +350,7 @@ pub fn measure(
     reference: &Reference,
     timing: Timing,
 ) -> Result<(CostPoint, Vec<f32>), SceneError> {
-    let view = view_at(setup.view, variant.level);
+    let view = view_at(setup.view(), variant.level);
     let m = measure_view(setup, &view, variant.shading, variant.options, reference, timing)?;
     Ok((CostPoint { variant: variant.clone(), triangles: m.triangles, ms: m.ms, error: m.error }, m.map))
 }
@@ -402,7 +396,7 @@ pub fn measure_view(
 
 /// Another round of timing for `variant` (see [`Timing`]): median ms per frame.
 pub fn retime(setup: &Setup<'_>, variant: &Variant, size: usize, timing: Timing) -> Result<f64, SceneError> {
-    let view = view_at(setup.view, variant.level);
+    let view = view_at(setup.view(), variant.level);
     let mesh = view.mesh();
     let job = setup.job(&mesh, variant.shading, variant.options);
     time_job(&mut Renderer::new(), &job, size, timing)
@@ -528,7 +522,7 @@ pub fn run(
     timing: Timing,
     progress: &mut dyn FnMut(&Progress) -> bool,
 ) -> Result<Option<Study>, SceneError> {
-    let vs = variants(setup.view.object);
+    let vs = variants(setup.view().object);
     let rounds = timing.rounds.max(1) as usize;
     let total = vs.len() * rounds + 2;
     let mut step = |done: usize, what: String| progress(&Progress { done, total, what });
@@ -557,11 +551,11 @@ pub fn run(
     if !step(total - 1, "f32 against f64".into()) {
         return Ok(None);
     }
-    let mid = view_at(setup.view, levels(setup.view.object)[2]).mesh();
-    let precision = precision(setup.scene, &mid, timing.min_seconds)?;
+    let mid = view_at(setup.view(), levels(setup.view().object)[2]).mesh();
+    let precision = precision(&setup.shaded.scene, &mid, timing.min_seconds)?;
     step(total, "done".into());
     Ok(Some(Study {
-        object: setup.view.object,
+        object: setup.view().object,
         size: reference.size,
         reference_triangles: reference.triangles,
         points,
