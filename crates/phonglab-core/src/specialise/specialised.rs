@@ -677,114 +677,17 @@ impl Lighter {
                     c.zero[i] = terms::is_zero_normal::<f32>(Vec3::new(c.nx[i], c.ny[i], c.nz[i]));
                 }
             }
-            Stage::ViewVector => {
-                // terms::view_vector on components, so the loops vectorise.
-                if self.key.local_viewer {
-                    // normalize(-P), in f64 (unscaled where that changes no bit), rounded to f32.
-                    let mut plain = true;
-                    for i in 0..n {
-                        plain &= unscaled_is_exact(c.px[i]) & unscaled_is_exact(c.py[i]) & unscaled_is_exact(c.pz[i]);
-                    }
-                    macro_rules! view_vectors {
-                        ($norm:expr) => {
-                            for i in 0..n {
-                                let (x, y, z, _, ok) = $norm(-c.px[i], -c.py[i], -c.pz[i]);
-                                (c.vx[i], c.vy[i], c.vz[i], c.v_ok[i]) = (x as f32, y as f32, z as f32, ok);
-                            }
-                        };
-                    }
-                    if plain {
-                        view_vectors!(normalize3_unscaled);
-                    } else {
-                        view_vectors!(normalize3::<f64>);
-                    }
-                } else {
-                    // The stage runs only for a local viewer or the worksheet's rule
-                    // (plan::Key::per_vertex_view), so here V = (0, 0, -sign(P.z)),
-                    // undefined on the plane z = 0.
-                    for i in 0..n {
-                        let z = c.pz[i];
-                        (c.vx[i], c.vy[i]) = (0.0, 0.0);
-                        c.vz[i] = if z > 0.0 { -1.0 } else { 1.0 };
-                        c.v_ok[i] = z.abs() > 0.0; // false for 0 and NaN
-                    }
-                }
-            }
-            Stage::LightVector(li) => {
-                let LightPos::Positional(lp) = e.lights[li].pos else { return };
-                // terms::light_direction on components: one robust::normalize3 in f64, without
-                // its scaling where that changes no bit (robust::unscaled_is_exact).
-                for i in 0..n {
-                    (c.lx64[i], c.ly64[i], c.lz64[i]) = (lp.x - c.px[i], lp.y - c.py[i], lp.z - c.pz[i]);
-                }
-                let mut plain = true;
-                for i in 0..n {
-                    plain &= unscaled_is_exact(c.lx64[i]) & unscaled_is_exact(c.ly64[i]) & unscaled_is_exact(c.lz64[i]);
-                }
-                macro_rules! light_vectors {
-                    ($norm:expr) => {
-                        for i in 0..n {
-                            let (x, y, z, d, ok) = $norm(c.lx64[i], c.ly64[i], c.lz64[i]);
-                            (c.lx64[i], c.ly64[i], c.lz64[i], c.l_ok[i]) = (x, y, z, ok);
-                            (c.lx[i], c.ly[i], c.lz[i]) = (x as f32, y as f32, z as f32);
-                            c.d[i] = d as f32;
-                        }
-                    };
-                }
-                if plain {
-                    light_vectors!(normalize3_unscaled);
-                } else {
-                    light_vectors!(normalize3::<f64>);
-                }
-                c.scale[..n].fill(1.0);
-            }
-            Stage::LightConstant(li) => {
-                let k = &self.consts[li];
-                c.l_ok[..n].fill(k.l.is_some());
-                c.scale[..n].fill(k.scale);
-                // The cosines read the constant itself; per-vertex H or R read it as arrays.
-                let per_vertex_h_or_r = self.key.lights[li].specular
-                    && (e.rules.specular == SpecularModel::Phong || self.key.per_vertex_halfway(li));
-                if per_vertex_h_or_r {
-                    let l = k.l.unwrap_or(Vec3::ZERO);
-                    c.lx[..n].fill(l.x);
-                    c.ly[..n].fill(l.y);
-                    c.lz[..n].fill(l.z);
-                }
-            }
+            Stage::ViewVector => self.view_vector(c, n),
+            Stage::LightVector(li) => self.light_vector(c, n, li),
+            Stage::LightConstant(li) => self.light_constant(c, n, li),
             Stage::Attenuate(li) => {
                 let k = e.lights[li].k;
                 for i in 0..n {
                     c.scale[i] = terms::attenuation(k, c.d[i]);
                 }
             }
-            Stage::SpotCone(li) => {
-                let Some(sp) = e.lights[li].spot else { return };
-                match sp.axis {
-                    None => c.inside[..n].fill(false),
-                    Some(axis) => {
-                        for i in 0..n {
-                            let l = DVec3::new(c.lx64[i], c.ly64[i], c.lz64[i]);
-                            let (cos, inside) = terms::spot_cone(&sp, axis, l);
-                            c.spot_cos[i] = cos;
-                            c.inside[i] = c.l_ok[i] & inside;
-                        }
-                    }
-                }
-            }
-            Stage::SpotPower(li) => {
-                let Some(sp) = e.lights[li].spot else { return };
-                if sp.axis.is_none() {
-                    c.inside[..n].fill(false);
-                }
-                let mut f = [0.0f32; CHUNK];
-                power_loop(e.options.pow, &c.spot_cos, &mut f, n, sp.exponent);
-                for i in 0..n {
-                    let spot = keep_or_zero(c.inside[i], f[i]);
-                    // scale = mul0(att, spot), att from `Attenuate` (or 1).
-                    c.scale[i] = mul0(c.scale[i], spot);
-                }
-            }
+            Stage::SpotCone(li) => self.spot_cone(c, n, li),
+            Stage::SpotPower(li) => self.spot_power(c, n, li),
             Stage::Halfway(_) => {
                 // terms::halfway: normalize(L + V), defined where L, V and L + V are.
                 for i in 0..n {
@@ -806,73 +709,211 @@ impl Lighter {
                     c.h_ok[i] = c.l_ok[i] & !c.zero[i] & c.v_ok[i];
                 }
             }
-            Stage::DiffuseCosine(li, side) => {
-                // n_side . L with n_side = n or -n (negation is exact); a directional light's
-                // L is the constant `consts[li].l`.
-                let ndl = &mut c.ndl[side];
-                let (nx, ny, nz) =
-                    if side == 0 { (&c.nx, &c.ny, &c.nz) } else { negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n) };
-                match self.consts.get(li).and_then(|k| k.l) {
-                    Some(l) if !self.key.lights[li].positional => {
-                        for i in 0..n {
-                            ndl[i] = terms::dot3(nx[i], ny[i], nz[i], l.x, l.y, l.z);
-                        }
-                    }
-                    _ => {
-                        for i in 0..n {
-                            ndl[i] = terms::dot3(nx[i], ny[i], nz[i], c.lx[i], c.ly[i], c.lz[i]);
-                        }
-                    }
-                }
-            }
-            Stage::SpecularCosine(li, side) => {
-                let cos = &mut c.cos[side];
-                match e.rules.specular {
-                    SpecularModel::BlinnPhong => {
-                        let (nx, ny, nz) =
-                            if side == 0 { (&c.nx, &c.ny, &c.nz) } else { negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n) };
-                        match self.consts.get(li).and_then(|k| k.h) {
-                            // HalfwayConstant: H is one vector.
-                            Some(h) => {
-                                for i in 0..n {
-                                    cos[i] = terms::dot3(nx[i], ny[i], nz[i], h.x, h.y, h.z);
-                                }
-                            }
-                            None => {
-                                for i in 0..n {
-                                    cos[i] = terms::dot3(nx[i], ny[i], nz[i], c.hx[i], c.hy[i], c.hz[i]);
-                                }
-                            }
-                        }
-                    }
-                    SpecularModel::Phong => {
-                        // R . V, the same on both sides (R is formed with the front normal).
-                        for i in 0..n {
-                            cos[i] = terms::dot3(c.hx[i], c.hy[i], c.hz[i], c.vx[i], c.vy[i], c.vz[i]);
-                        }
-                    }
-                }
-            }
-            Stage::Power(_, side) => {
-                // Raised where `Sum` reads the power (its specular is allowed there; the
-                // lanes are kept for it in `Chunk::allowed`); the other lanes are raised as 0,
-                // which the exact power does not compute at all (pow_f32_chunk_packed packs
-                // the others together; without AVX-512 it skips blocks of 8 zeros). `Sum`
-                // gives them f_i p = 0 whatever p is.
-                let shin = e.sides[side].shininess;
-                let mut allowed = [false; CHUNK];
-                self.specular_lanes(c, side, &mut allowed);
-                let mut x = [0.0f32; CHUNK];
-                for i in 0..n {
-                    x[i] = keep_or_zero(allowed[i], c.cos[side][i]);
-                }
-                power_loop(e.options.pow, &x, &mut c.p[side], n, shin);
-                c.allowed[side] = allowed;
-            }
+            Stage::DiffuseCosine(li, side) => self.diffuse_cosine(c, n, li, side),
+            Stage::SpecularCosine(li, side) => self.specular_cosine(c, n, li, side),
+            Stage::Power(_, side) => self.power(c, n, side),
             Stage::Sum(li, side) => self.sum(c, &e.lights[li], side),
             // Added as the colours are written (`write`, `write_sum`).
             Stage::SceneColor => {}
         }
+    }
+
+    /// V at each vertex: `normalize(-P)` for a local viewer (in f64, unscaled where that
+    /// changes no bit), else the worksheet's axis `(0, 0, -sign(P.z))` (terms::view_vector
+    /// on components, so the loops vectorise).
+    #[inline(always)]
+    fn view_vector(&self, c: &mut Chunk, n: usize) {
+        // terms::view_vector on components, so the loops vectorise.
+        if self.key.local_viewer {
+            // normalize(-P), in f64 (unscaled where that changes no bit), rounded to f32.
+            let mut plain = true;
+            for i in 0..n {
+                plain &= unscaled_is_exact(c.px[i]) & unscaled_is_exact(c.py[i]) & unscaled_is_exact(c.pz[i]);
+            }
+            macro_rules! view_vectors {
+                ($norm:expr) => {
+                    for i in 0..n {
+                        let (x, y, z, _, ok) = $norm(-c.px[i], -c.py[i], -c.pz[i]);
+                        (c.vx[i], c.vy[i], c.vz[i], c.v_ok[i]) = (x as f32, y as f32, z as f32, ok);
+                    }
+                };
+            }
+            if plain {
+                view_vectors!(normalize3_unscaled);
+            } else {
+                view_vectors!(normalize3::<f64>);
+            }
+        } else {
+            // The stage runs only for a local viewer or the worksheet's rule
+            // (plan::Key::per_vertex_view), so here V = (0, 0, -sign(P.z)),
+            // undefined on the plane z = 0.
+            for i in 0..n {
+                let z = c.pz[i];
+                (c.vx[i], c.vy[i]) = (0.0, 0.0);
+                c.vz[i] = if z > 0.0 { -1.0 } else { 1.0 };
+                c.v_ok[i] = z.abs() > 0.0; // false for 0 and NaN
+            }
+        }
+    }
+
+    /// A positional light's L and d at each vertex, in f64 (terms::light_direction on
+    /// components), and the scale reset to 1 for `Attenuate` and `SpotPower`.
+    #[inline(always)]
+    fn light_vector(&self, c: &mut Chunk, n: usize, li: usize) {
+        let e = &self.engine;
+        let LightPos::Positional(lp) = e.lights[li].pos else { return };
+        // terms::light_direction on components: one robust::normalize3 in f64, without
+        // its scaling where that changes no bit (robust::unscaled_is_exact).
+        for i in 0..n {
+            (c.lx64[i], c.ly64[i], c.lz64[i]) = (lp.x - c.px[i], lp.y - c.py[i], lp.z - c.pz[i]);
+        }
+        let mut plain = true;
+        for i in 0..n {
+            plain &= unscaled_is_exact(c.lx64[i]) & unscaled_is_exact(c.ly64[i]) & unscaled_is_exact(c.lz64[i]);
+        }
+        macro_rules! light_vectors {
+            ($norm:expr) => {
+                for i in 0..n {
+                    let (x, y, z, d, ok) = $norm(c.lx64[i], c.ly64[i], c.lz64[i]);
+                    (c.lx64[i], c.ly64[i], c.lz64[i], c.l_ok[i]) = (x, y, z, ok);
+                    (c.lx[i], c.ly[i], c.lz[i]) = (x as f32, y as f32, z as f32);
+                    c.d[i] = d as f32;
+                }
+            };
+        }
+        if plain {
+            light_vectors!(normalize3_unscaled);
+        } else {
+            light_vectors!(normalize3::<f64>);
+        }
+        c.scale[..n].fill(1.0);
+    }
+
+    /// A directional light's constant L (and its scale), as arrays where H or R reads them.
+    #[inline(always)]
+    fn light_constant(&self, c: &mut Chunk, n: usize, li: usize) {
+        let e = &self.engine;
+        let k = &self.consts[li];
+        c.l_ok[..n].fill(k.l.is_some());
+        c.scale[..n].fill(k.scale);
+        // The cosines read the constant itself; per-vertex H or R read it as arrays.
+        let per_vertex_h_or_r = self.key.lights[li].specular
+            && (e.rules.specular == SpecularModel::Phong || self.key.per_vertex_halfway(li));
+        if per_vertex_h_or_r {
+            let l = k.l.unwrap_or(Vec3::ZERO);
+            c.lx[..n].fill(l.x);
+            c.ly[..n].fill(l.y);
+            c.lz[..n].fill(l.z);
+        }
+    }
+
+    /// The cosine of each L to the spot axis and the cone test (terms::spot_cone).
+    #[inline(always)]
+    fn spot_cone(&self, c: &mut Chunk, n: usize, li: usize) {
+        let e = &self.engine;
+        let Some(sp) = e.lights[li].spot else { return };
+        match sp.axis {
+            None => c.inside[..n].fill(false),
+            Some(axis) => {
+                for i in 0..n {
+                    let l = DVec3::new(c.lx64[i], c.ly64[i], c.lz64[i]);
+                    let (cos, inside) = terms::spot_cone(&sp, axis, l);
+                    c.spot_cos[i] = cos;
+                    c.inside[i] = c.l_ok[i] & inside;
+                }
+            }
+        }
+    }
+
+    /// The spot factor (the cosine raised to the spot exponent inside the cone), folded into
+    /// the scale.
+    #[inline(always)]
+    fn spot_power(&self, c: &mut Chunk, n: usize, li: usize) {
+        let e = &self.engine;
+        let Some(sp) = e.lights[li].spot else { return };
+        if sp.axis.is_none() {
+            c.inside[..n].fill(false);
+        }
+        let mut f = [0.0f32; CHUNK];
+        power_loop(e.options.pow, &c.spot_cos, &mut f, n, sp.exponent);
+        for i in 0..n {
+            let spot = keep_or_zero(c.inside[i], f[i]);
+            // scale = mul0(att, spot), att from `Attenuate` (or 1).
+            c.scale[i] = mul0(c.scale[i], spot);
+        }
+    }
+
+    /// `n_side . L` at each vertex for `side`.
+    #[inline(always)]
+    fn diffuse_cosine(&self, c: &mut Chunk, n: usize, li: usize, side: usize) {
+        // n_side . L with n_side = n or -n (negation is exact); a directional light's
+        // L is the constant `consts[li].l`.
+        let ndl = &mut c.ndl[side];
+        let (nx, ny, nz) = if side == 0 { (&c.nx, &c.ny, &c.nz) } else { negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n) };
+        match self.consts.get(li).and_then(|k| k.l) {
+            Some(l) if !self.key.lights[li].positional => {
+                for i in 0..n {
+                    ndl[i] = terms::dot3(nx[i], ny[i], nz[i], l.x, l.y, l.z);
+                }
+            }
+            _ => {
+                for i in 0..n {
+                    ndl[i] = terms::dot3(nx[i], ny[i], nz[i], c.lx[i], c.ly[i], c.lz[i]);
+                }
+            }
+        }
+    }
+
+    /// The specular cosine for `side`: `n_side . H` (Blinn-Phong) or `R . V` (Phong).
+    #[inline(always)]
+    fn specular_cosine(&self, c: &mut Chunk, n: usize, li: usize, side: usize) {
+        let e = &self.engine;
+        let cos = &mut c.cos[side];
+        match e.rules.specular {
+            SpecularModel::BlinnPhong => {
+                let (nx, ny, nz) =
+                    if side == 0 { (&c.nx, &c.ny, &c.nz) } else { negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n) };
+                match self.consts.get(li).and_then(|k| k.h) {
+                    // HalfwayConstant: H is one vector.
+                    Some(h) => {
+                        for i in 0..n {
+                            cos[i] = terms::dot3(nx[i], ny[i], nz[i], h.x, h.y, h.z);
+                        }
+                    }
+                    None => {
+                        for i in 0..n {
+                            cos[i] = terms::dot3(nx[i], ny[i], nz[i], c.hx[i], c.hy[i], c.hz[i]);
+                        }
+                    }
+                }
+            }
+            SpecularModel::Phong => {
+                // R . V, the same on both sides (R is formed with the front normal).
+                for i in 0..n {
+                    cos[i] = terms::dot3(c.hx[i], c.hy[i], c.hz[i], c.vx[i], c.vy[i], c.vz[i]);
+                }
+            }
+        }
+    }
+
+    /// The specular power for `side`, raised where `Sum` reads it.
+    #[inline(always)]
+    fn power(&self, c: &mut Chunk, n: usize, side: usize) {
+        let e = &self.engine;
+        // Raised where `Sum` reads the power (its specular is allowed there; the
+        // lanes are kept for it in `Chunk::allowed`); the other lanes are raised as 0,
+        // which the exact power does not compute at all (pow_f32_chunk_packed packs
+        // the others together; without AVX-512 it skips blocks of 8 zeros). `Sum`
+        // gives them f_i p = 0 whatever p is.
+        let shin = e.sides[side].shininess;
+        let mut allowed = [false; CHUNK];
+        self.specular_lanes(c, side, &mut allowed);
+        let mut x = [0.0f32; CHUNK];
+        for i in 0..n {
+            x[i] = keep_or_zero(allowed[i], c.cos[side][i]);
+        }
+        power_loop(e.options.pow, &x, &mut c.p[side], n, shin);
+        c.allowed[side] = allowed;
     }
 
     /// Where the current light's specular is allowed on `side` (the `allowed` of
