@@ -515,8 +515,6 @@ fn final_colour(scene: &Scene, needs: &Needs, suffix: &str) -> String {
         let lights_sum = if n == 1 { ilight.clone() } else { format!("sum({ilight})") };
         if needs.opengl_terms {
             let (mat_amb, mat_emi) = if back { ("matAmbBack", "matEmiBack") } else { ("matAmb", "matEmi") };
-            let mat_amb = if back && scene.back_material.is_none() { "matAmb" } else { mat_amb };
-            let mat_emi = if back && scene.back_material.is_none() { "matEmi" } else { mat_emi };
             s.push_str(&format!("Iscene{suffix} = {mat_amb}*sceneAmb\nprint(\"Iscene{suffix} = \", Iscene{suffix})\n"));
             s.push_str(&format!("Iemi{suffix} = {mat_emi}\nprint(\"Iemi{suffix} = \", Iemi{suffix})\n"));
             if n == 0 {
@@ -531,7 +529,7 @@ fn final_colour(scene: &Scene, needs: &Needs, suffix: &str) -> String {
         }
     }
     s.push_str(&format!("print(\"{i_name} = \", {i_name})\n"));
-    let alpha_var = if back && scene.back_material.is_some() { "matAlphaBack" } else { "matAlpha" };
+    let alpha_var = if back { "matAlphaBack" } else { "matAlpha" };
     let alpha_m = if back { scene.back() } else { &scene.material };
     let alpha = if alpha_m.diffuse.w != 1.0 { alpha_var.to_string() } else { "1".to_string() };
     let sum = if sep {
@@ -549,12 +547,23 @@ fn final_colour(scene: &Scene, needs: &Needs, suffix: &str) -> String {
 }
 
 /// The back side of two-sided lighting: the same terms with `-vertexNormal` and the back
-/// material, printed with `Back` after their names.
+/// material, printed with `Back` after their names. The cells read the back material's
+/// names (`matAmbBack` ...) always: a scene without a back material names the front's
+/// values so, in one line.
 fn back_side(scene: &Scene, needs: &Needs) -> String {
     let n = needs.lights;
     let mut s = String::new();
     if scene.back_material.is_none() {
-        s.push_str("matAmbBack, matDifBack, matSpecBack, nsBack = matAmb, matDif, matSpec, ns\n\n");
+        let mut names = vec!["matAmb", "matDif", "matSpec", "ns"];
+        // Written by the material cell only where the rules have emission, or the alpha is not 1.
+        if scene.rules.emission() {
+            names.push("matEmi");
+        }
+        if scene.material.diffuse.w != 1.0 {
+            names.push("matAlpha");
+        }
+        let backs: Vec<String> = names.iter().map(|n| format!("{n}Back")).collect();
+        s.push_str(&format!("{} = {}\n\n", backs.join(", "), names.join(", ")));
     }
     s.push_str(&per_light(
         n,
