@@ -1,6 +1,6 @@
 //! Every file phonglab writes is written whole or not at all: the one way to write a file.
 //!
-//! A single file ([`write`]) goes to a temporary file in the target's own folder, which is
+//! A single file ([`write()`]) goes to a temporary file in the target's own folder, which is
 //! flushed, synced to the disk and closed with every error checked, then renamed over the
 //! target. A rename within one folder either happens or does not, so the target holds the
 //! old bytes or the new ones, never a part. A failure removes the temporary file, leaves

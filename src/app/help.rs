@@ -88,7 +88,7 @@ fn allowed(modifiers: Modifiers, key: Key, action: Action, typing: bool, quiz: b
     }
 }
 
-/// The actions whose keys were pressed this frame: see [`allowed`] for which fire while a
+/// The actions whose keys were pressed this frame: see `allowed` for which fire while a
 /// text field has the keyboard, or while the quiz (`quiz`) is open.
 pub fn pressed(ctx: &egui::Context, quiz: bool) -> Vec<Action> {
     let typing = ctx.egui_wants_keyboard_input();

@@ -239,7 +239,7 @@ impl AppState {
 }
 
 /// The ready-made scenes of the Presets menu.
-/// The built-in documents: [`presets::documents`] (kept in the core, so the CLI needs no app).
+/// The built-in documents: [`phonglab_core::library::documents`] (kept in the core, so the CLI needs no app).
 pub fn preset_documents() -> Vec<(String, Document)> {
     library::documents()
 }

@@ -1,6 +1,6 @@
 //! Where the app keeps its session: on the desktop a folder ([`storage_dir`], the session
 //! file and its lock in it: [`crate::app::session`]); in the browser the page's
-//! `localStorage` ([`load_browser_session`], [`save_browser_session`]), one entry that
+//! `localStorage` (`load_browser_session`, `save_browser_session`), one entry that
 //! holds the same RON text as the desktop's `session.ron`.
 
 /// The folder the app keeps its session in: `PHONGLAB_SESSION_DIR` when set, else the

@@ -29,7 +29,7 @@ fn pow_f32_fma_body(x: f32, e: f32) -> f32 {
     pow_f32_body(x, e)
 }
 
-/// [`pow_f32_chunk_packed`]'s AVX-512 way, for a fractional `e > 0`: computes `out` and
+/// [`super::exact_pow::pow_f32_chunk_packed`]'s AVX-512 way, for a fractional `e > 0`: computes `out` and
 /// says yes where the processor has AVX-512F/DQ/VL (and AVX2, FMA), does nothing and says
 /// no elsewhere.
 #[cfg(target_arch = "x86_64")]

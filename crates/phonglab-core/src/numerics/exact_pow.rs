@@ -129,7 +129,7 @@ fn powi_f64(x: f64, k: u32) -> f64 {
 
 /// `out[i] = pow_f32(max(x[i], 0), e)` for `i < n`, bit for bit, over a chunk: the way is
 /// chosen once for the chunk, and a whole exponent's multiplications are done one bit at a
-/// time over the whole array (each a loop that vectorises), in [`powi_f64`]'s order.
+/// time over the whole array (each a loop that vectorises), in `powi_f64`'s order.
 #[inline(always)]
 #[allow(clippy::needless_range_loop)] // index loops over parallel arrays vectorise
 pub fn pow_f32_chunk<const N: usize>(x: &[f32; N], e: f32, out: &mut [f32; N], n: usize) {

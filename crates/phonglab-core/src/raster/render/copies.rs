@@ -19,7 +19,7 @@ use super::vertices::Vertices;
 use super::window::WindowVert;
 
 /// Each clip-space vertex of `clip` in window coordinates for a `width` x `height` image
-/// ([`to_window`], the same bits as setup's own), into `out`: once per mesh vertex, for the
+/// ([`super::window::to_window`], the same bits as setup's own), into `out`: once per mesh vertex, for the
 /// triangles that need no clipping, instead of once per triangle corner (a vertex of a
 /// closed mesh has about six triangles). Vertices outside the view volume get values no
 /// unclipped triangle reads. Runs a copy compiled for AVX2 where the processor has it
@@ -111,7 +111,7 @@ fn attributes_chunk_avx2(job: &Job<'_>, verts: &Vertices, ts: &[RasterTri], out:
 
 /// Shades one band (`band`) into `px`, its pixels. Returns the pixels covered and the lighting
 /// evaluations made (fragments lit). Runs the fastest copy the processor has
-/// ([`Compiled::best`]): the copies do the same operations, so they give the same bits
+/// (`Compiled::best`): the copies do the same operations, so they give the same bits
 /// (Rust never fuses a multiply and an add by itself).
 pub fn resolve_band(band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragments) -> Shaded {
     let copy = Compiled::best();
@@ -178,7 +178,7 @@ fn resolve_band_avx2(band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragm
     super::resolve::resolve_band_any::<true>(band, px, frags)
 }
 
-/// [`super::raster::fill_span`] in AVX2 registers. The blocks are aligned to multiples of [`super::raster::LANES`]
+/// `raster::fill_span` in AVX2 registers. The blocks are aligned to multiples of [`super::raster::LANES`]
 /// pixels in the band, so that a block's loads meet earlier stores of the same block
 /// whole; lanes outside the span are masked off, and a block where no lane passes the
 /// depth test is not stored at all (a closed surface's back faces, drawn last, mostly

@@ -362,7 +362,7 @@ fn draw<const AVX2: bool>(t: &RasterTri, ti: u32, band: &mut Band<'_>) {
 
 /// A triangle's screen-space barycentrics at pixel centres, from its edge functions:
 /// `l1 = w1 / area`, `l2 = w2 / area`, with `w1` the edge function of edge 2 -> 0 and `w2`
-/// of edge 0 -> 1 ([`edge`]), the same as the raster's coverage test.
+/// of edge 0 -> 1 (`edge`), the same as the raster's coverage test.
 ///
 /// The edge functions are integers (fixed-point products, below 2^46 inside the guard
 /// band), so they are exact in f64, at every pixel and for every step along a row; each

@@ -135,7 +135,7 @@ pub(super) fn attributes_chunk_any(job: &Job<'_>, verts: &Vertices, ts: &[Raster
 
 /// One band's per-pixel fragments, presized to the band and written by index, and the runs
 /// they came from (a list cleared for each band). Positions and normals are six arrays
-/// (x, y, z of each), written a block of [`LANES`] at a time and read so by the lighting.
+/// (x, y, z of each), written a block of `LANES` at a time and read so by the lighting.
 #[derive(Default)]
 pub struct Fragments {
     runs: Vec<FragmentRun>,
@@ -209,7 +209,7 @@ pub(super) fn rgba8(ch: &[[f32; LANES]; 4]) -> [u32; LANES] {
 /// the screen barycentrics), as planes through the triangle's vertex 0: their values there
 /// and their gradients per pixel, in f64. A pixel's colour is then `(c/w) / (1/w)`, the
 /// perspective-correct interpolation, with each plane stepped along a run in f32
-/// ([`gouraud_block`]) instead of blending three vertices from f64 barycentrics: the
+/// (`gouraud_block`) instead of blending three vertices from f64 barycentrics: the
 /// same quantity, within a few f32 roundings (tested against the exact interpolation).
 ///
 /// The planes go through a vertex, not the pixel origin or the box's corner, so that at a
@@ -646,7 +646,7 @@ fn light_fragments(
     frags.runs.clear();
 }
 
-/// What [`resolve_band`] did.
+/// What [`super::copies::resolve_band`] did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Shaded {
     /// Pixels covered by the mesh.

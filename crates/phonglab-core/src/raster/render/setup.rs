@@ -189,7 +189,7 @@ fn raster_tri(
 }
 
 /// Snaps a mesh triangle that needs no clipping (its corners `v` in window coordinates,
-/// from [`window_vertices`]) to a raster triangle: [`emit`] for a polygon of three corners,
+/// from [`super::window::window_vertices`]) to a raster triangle: [`emit`] for a polygon of three corners,
 /// written out.
 #[inline(always)]
 fn emit_triangle(
