@@ -248,104 +248,133 @@ fn bracket(page: &mut Vec<Mark>, x: f32, top: f32, bottom: f32, left: bool) {
     page.push(Mark::Line { from: (x, bottom), to: (x + serif, bottom), width: 0.8 });
 }
 
+/// Draws `block` at `y` on `page`, `width` points wide from the margin.
 fn draw_block(fonts: &Fonts, block: &Block, y: f32, width: f32, page: &mut Vec<Mark>) {
-    let x = MARGIN;
-    let text = |page: &mut Vec<Mark>, at: (f32, f32), s: &str, size: f32, mono: bool| {
-        page.push(Mark::Text { at, text: s.to_string(), size, mono });
-    };
+    let mut pen = Pen { fonts, page, x: MARGIN, width };
     match block {
-        Block::Title(t) => {
-            for (i, line) in fonts.wrap(t, TITLE, width, false).iter().enumerate() {
-                text(page, (x, y + TITLE + i as f32 * TITLE * 1.3), line, TITLE, false);
-            }
-        }
+        Block::Title(t) => pen.paragraph(t, y, TITLE, 1.3),
         Block::Heading(h) => {
-            text(page, (x, y + 6.0 + HEADING), h, HEADING, false);
-            page.push(Mark::Line { from: (x, y + 10.0 + HEADING), to: (x + width, y + 10.0 + HEADING), width: 0.4 });
+            pen.text((MARGIN, y + 6.0 + HEADING), h, HEADING, false);
+            let rule = y + 10.0 + HEADING;
+            pen.page.push(Mark::Line { from: (MARGIN, rule), to: (MARGIN + width, rule), width: 0.4 });
         }
-        Block::Text(t) => {
-            for (i, line) in fonts.wrap(t, BODY, width, false).iter().enumerate() {
-                text(page, (x, y + BODY + i as f32 * BODY * 1.35), line, BODY, false);
-            }
-        }
-        Block::WriteOn(labels) => {
-            // Each label with a line to write on; the name's line the longest.
-            let base = y + BODY * 2.0;
-            let shares = [0.25, 0.5, 0.25];
-            let mut at = x;
-            for (k, label) in labels.iter().enumerate() {
-                let w = width * shares.get(k).copied().unwrap_or(0.25);
-                text(page, (at, base), &format!("{label}:"), BODY, false);
-                let from = at + fonts.width(&format!("{label}: "), BODY, false);
-                page.push(Mark::Line { from: (from, base + 2.0), to: (at + w - 12.0, base + 2.0), width: 0.5 });
-                at += w;
-            }
-        }
-        Block::Vector { name, values, note } => {
-            let base = y + NUMBERS * 1.2;
-            let lead = format!("{name} =");
-            text(page, (x, base), &lead, NUMBERS, true);
-            let col = column_width(fonts, &values.iter().collect::<Vec<_>>());
-            let left = x + fonts.width(&lead, NUMBERS, true) + 8.0;
-            let (top, bottom) = (base - NUMBERS * 0.9, base + NUMBERS * 0.35);
-            bracket(page, left, top, bottom, true);
-            for (k, v) in values.iter().enumerate() {
-                let right = left + 4.0 + (k + 1) as f32 * col;
-                text(page, (right - fonts.width(v, NUMBERS, true), base), v, NUMBERS, true);
-            }
-            let end = left + 8.0 + values.len() as f32 * col;
-            bracket(page, end, top, bottom, false);
-            if !note.is_empty() {
-                text(page, (end + 10.0, base), note, BODY - 1.0, false);
-            }
-        }
-        Block::Matrix { name, rows } => {
-            let lead = format!("{name} =");
-            let line = NUMBERS * 1.5;
-            let top = y + 6.0;
-            let middle = top + rows.len() as f32 * line / 2.0 + NUMBERS / 2.0 - 2.0;
-            text(page, (x, middle), &lead, NUMBERS, true);
-            let cells: Vec<&String> = rows.iter().flatten().collect();
-            let col = column_width(fonts, &cells);
-            let left = x + fonts.width(&lead, NUMBERS, true) + 8.0;
-            let columns = rows.first().map_or(0, Vec::len);
-            for (r, row) in rows.iter().enumerate() {
-                let base = top + NUMBERS + r as f32 * line;
-                for (c, v) in row.iter().enumerate() {
-                    let right = left + 4.0 + (c + 1) as f32 * col;
-                    text(page, (right - fonts.width(v, NUMBERS, true), base), v, NUMBERS, true);
-                }
-            }
-            let bottom = top + rows.len() as f32 * line + 2.0;
-            bracket(page, left, top, bottom, true);
-            bracket(page, left + 8.0 + columns as f32 * col, top, bottom, false);
-        }
-        Block::Answer { label, name, cells } => {
-            text(page, (x, y + BODY), label, BODY, false);
-            let base = y + BODY * 1.4 + 17.0;
-            let lead = format!("{name} =");
-            text(page, (x + 14.0, base), &lead, NUMBERS, true);
-            // Every box starts in one column (past the longest name, vertexNormal).
-            let left = (x + 14.0 + fonts.width(&lead, NUMBERS, true) + 8.0).max(x + 110.0);
-            // Room for 8 significant digits, a sign and a decimal mark in each cell.
-            let cell = fonts.width("-0,00000000", NUMBERS, true) + 14.0;
-            let w = cell * *cells as f32;
-            page.push(Mark::Rect { x: left, y: base - 15.0, w, h: 22.0 });
-            for k in 1..*cells {
-                let cx = left + k as f32 * cell;
-                page.push(Mark::Line { from: (cx, base - 10.0), to: (cx, base + 2.0), width: 0.3 });
-            }
-        }
-        Block::KeyStep { label, formula, line } => {
-            text(page, (x, y + BODY), label, BODY, false);
-            let mut at = y + BODY * 1.4;
-            for f in fonts.wrap(formula, NUMBERS - 1.0, width - 14.0, true) {
-                at += NUMBERS * 1.3;
-                text(page, (x + 14.0, at), &f, NUMBERS - 1.0, true);
-            }
-            text(page, (x + 14.0, at + NUMBERS * 1.5), line, NUMBERS, true);
-        }
+        Block::Text(t) => pen.paragraph(t, y, BODY, 1.35),
+        Block::WriteOn(labels) => pen.write_on(labels, y),
+        Block::Vector { name, values, note } => pen.vector(name, values, note, y),
+        Block::Matrix { name, rows } => pen.matrix(name, rows, y),
+        Block::Answer { label, name, cells } => pen.answer(label, name, *cells, y),
+        Block::KeyStep { label, formula, line } => pen.key_step(label, formula, line, y),
         Block::Section(_) => {}
+    }
+}
+
+/// What draws a block: the fonts, the page's marks, the left margin and the width.
+struct Pen<'a> {
+    fonts: &'a Fonts,
+    page: &'a mut Vec<Mark>,
+    x: f32,
+    width: f32,
+}
+
+impl Pen<'_> {
+    /// `s` with its baseline's left end at `at`.
+    fn text(&mut self, at: (f32, f32), s: &str, size: f32, mono: bool) {
+        self.page.push(Mark::Text { at, text: s.to_string(), size, mono });
+    }
+
+    /// `t` wrapped to the width, lines `leading` times the size apart.
+    fn paragraph(&mut self, t: &str, y: f32, size: f32, leading: f32) {
+        for (i, line) in self.fonts.wrap(t, size, self.width, false).iter().enumerate() {
+            self.text((self.x, y + size + i as f32 * size * leading), line, size, false);
+        }
+    }
+
+    /// Each label with a line to write on; the name's line the longest.
+    fn write_on(&mut self, labels: &[String], y: f32) {
+        let base = y + BODY * 2.0;
+        let shares = [0.25, 0.5, 0.25];
+        let mut at = self.x;
+        for (k, label) in labels.iter().enumerate() {
+            let w = self.width * shares.get(k).copied().unwrap_or(0.25);
+            self.text((at, base), &format!("{label}:"), BODY, false);
+            let from = at + self.fonts.width(&format!("{label}: "), BODY, false);
+            self.page.push(Mark::Line { from: (from, base + 2.0), to: (at + w - 12.0, base + 2.0), width: 0.5 });
+            at += w;
+        }
+    }
+
+    /// `name = [values]`, the numbers right-aligned in columns between brackets, and a note.
+    fn vector(&mut self, name: &str, values: &[String], note: &str, y: f32) {
+        let base = y + NUMBERS * 1.2;
+        let lead = format!("{name} =");
+        self.text((self.x, base), &lead, NUMBERS, true);
+        let col = column_width(self.fonts, &values.iter().collect::<Vec<_>>());
+        let left = self.x + self.fonts.width(&lead, NUMBERS, true) + 8.0;
+        let (top, bottom) = (base - NUMBERS * 0.9, base + NUMBERS * 0.35);
+        bracket(self.page, left, top, bottom, true);
+        for (k, v) in values.iter().enumerate() {
+            let right = left + 4.0 + (k + 1) as f32 * col;
+            self.text((right - self.fonts.width(v, NUMBERS, true), base), v, NUMBERS, true);
+        }
+        let end = left + 8.0 + values.len() as f32 * col;
+        bracket(self.page, end, top, bottom, false);
+        if !note.is_empty() {
+            self.text((end + 10.0, base), note, BODY - 1.0, false);
+        }
+    }
+
+    /// `name =` and the rows of a matrix, right-aligned in columns between brackets.
+    fn matrix(&mut self, name: &str, rows: &[Vec<String>], y: f32) {
+        let lead = format!("{name} =");
+        let line = NUMBERS * 1.5;
+        let top = y + 6.0;
+        let middle = top + rows.len() as f32 * line / 2.0 + NUMBERS / 2.0 - 2.0;
+        self.text((self.x, middle), &lead, NUMBERS, true);
+        let cells: Vec<&String> = rows.iter().flatten().collect();
+        let col = column_width(self.fonts, &cells);
+        let left = self.x + self.fonts.width(&lead, NUMBERS, true) + 8.0;
+        let columns = rows.first().map_or(0, Vec::len);
+        for (r, row) in rows.iter().enumerate() {
+            let base = top + NUMBERS + r as f32 * line;
+            for (c, v) in row.iter().enumerate() {
+                let right = left + 4.0 + (c + 1) as f32 * col;
+                self.text((right - self.fonts.width(v, NUMBERS, true), base), v, NUMBERS, true);
+            }
+        }
+        let bottom = top + rows.len() as f32 * line + 2.0;
+        bracket(self.page, left, top, bottom, true);
+        bracket(self.page, left + 8.0 + columns as f32 * col, top, bottom, false);
+    }
+
+    /// A step to answer: its label, `name =` and a box of `cells` cells to write in.
+    fn answer(&mut self, label: &str, name: &str, cells: usize, y: f32) {
+        let x = self.x;
+        self.text((x, y + BODY), label, BODY, false);
+        let base = y + BODY * 1.4 + 17.0;
+        let lead = format!("{name} =");
+        self.text((x + 14.0, base), &lead, NUMBERS, true);
+        // Every box starts in one column (past the longest name, vertexNormal).
+        let left = (x + 14.0 + self.fonts.width(&lead, NUMBERS, true) + 8.0).max(x + 110.0);
+        // Room for 8 significant digits, a sign and a decimal mark in each cell.
+        let cell = self.fonts.width("-0,00000000", NUMBERS, true) + 14.0;
+        let w = cell * cells as f32;
+        self.page.push(Mark::Rect { x: left, y: base - 15.0, w, h: 22.0 });
+        for k in 1..cells {
+            let cx = left + k as f32 * cell;
+            self.page.push(Mark::Line { from: (cx, base - 10.0), to: (cx, base + 2.0), width: 0.3 });
+        }
+    }
+
+    /// A step of the key: its label, its formula wrapped, and its value.
+    fn key_step(&mut self, label: &str, formula: &str, line: &str, y: f32) {
+        let x = self.x;
+        self.text((x, y + BODY), label, BODY, false);
+        let mut at = y + BODY * 1.4;
+        for f in self.fonts.wrap(formula, NUMBERS - 1.0, self.width - 14.0, true) {
+            at += NUMBERS * 1.3;
+            self.text((x + 14.0, at), &f, NUMBERS - 1.0, true);
+        }
+        self.text((x + 14.0, at + NUMBERS * 1.5), line, NUMBERS, true);
     }
 }
 
