@@ -543,30 +543,7 @@ pub(super) fn resolve_band_any<const AVX2: bool>(
             }
             let r = r as usize;
             match job.shading {
-                Shading::Gouraud => {
-                    let (start, step) = tri_color[r].row(run.x, run.y);
-                    for (k0, n) in run.blocks() {
-                        let ch = gouraud_block(&start, &step, k0);
-                        #[cfg(target_arch = "x86_64")]
-                        // SAFETY: AVX2 is only instantiated inside resolve_band_avx2 and
-                        // resolve_band_avx512, which run only where the processor has AVX2.
-                        let rgba = if AVX2 { unsafe { super::copies::rgba8_avx2(&ch) } } else { rgba8(&ch) };
-                        #[cfg(not(target_arch = "x86_64"))]
-                        let rgba = rgba8(&ch);
-                        // Whole blocks where the row has room: lanes past the run land on
-                        // pixels of the row that later runs overwrite.
-                        let dst = &mut px_row[run.x + k0..];
-                        if let Some(dst) = dst.first_chunk_mut::<LANES>() {
-                            for j in 0..LANES {
-                                dst[j] = rgba[j].to_le_bytes();
-                            }
-                        } else {
-                            for (d, c) in dst.iter_mut().zip(&rgba).take(n) {
-                                *d = c.to_le_bytes();
-                            }
-                        }
-                    }
-                }
+                Shading::Gouraud => gouraud_run::<AVX2>(&tri_color[r], &run, px_row),
                 Shading::Phong => {
                     let edges = shared.tri_edges[r].row(run.x, run.y);
                     let (pw, nw) = (&tri_pos[r], &tri_nrm[r]);
@@ -579,17 +556,11 @@ pub(super) fn resolve_band_any<const AVX2: bool>(
                 }
                 Shading::Flat => {
                     // The demo's Flat: the face normal, from the screen derivatives.
-                    let edges = shared.tri_edges[r].row(run.x, run.y);
-                    let pw = &tri_pos[r];
                     // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
                     let n = setup.face_normal[t.orig as usize];
-                    let n = if t.back { n } else { -n };
-                    let face = [[n.x; LANES], [n.y; LANES], [n.z; LANES]];
-                    for (k0, _) in run.blocks() {
-                        let wt = run.weights(&edges, t.inv_w, k0);
-                        Fragments::store(&mut frags.pos, m + k0, &blend_n(&wt, &xyz(pw)));
-                        Fragments::store(&mut frags.nrm, m + k0, &face);
-                    }
+                    let face = if t.back { n } else { -n };
+                    let edges = shared.tri_edges[r].row(run.x, run.y);
+                    flat_fragments(&run, &edges, t.inv_w, &tri_pos[r], face, frags, m);
                     m = run.fragments(frags, m, side == 1);
                 }
             }
@@ -606,6 +577,55 @@ pub(super) fn resolve_band_any<const AVX2: bool>(
         lit += m;
     }
     Shaded { covered, lit }
+}
+
+/// A run of one triangle under Gouraud shading: its colour planes evaluated a block of
+/// [`LANES`] pixels at a time, packed to bytes, into the run's pixels of `px_row`.
+#[inline(always)]
+#[allow(clippy::needless_range_loop)] // lane loops: see `blend`
+fn gouraud_run<const AVX2: bool>(planes: &ColorPlanes, run: &Run, px_row: &mut [[u8; 4]]) {
+    let (start, step) = planes.row(run.x, run.y);
+    for (k0, n) in run.blocks() {
+        let ch = gouraud_block(&start, &step, k0);
+        #[cfg(target_arch = "x86_64")]
+        // SAFETY: AVX2 is only instantiated inside resolve_band_avx2 and
+        // resolve_band_avx512, which run only where the processor has AVX2.
+        let rgba = if AVX2 { unsafe { super::copies::rgba8_avx2(&ch) } } else { rgba8(&ch) };
+        #[cfg(not(target_arch = "x86_64"))]
+        let rgba = rgba8(&ch);
+        // Whole blocks where the row has room: lanes past the run land on
+        // pixels of the row that later runs overwrite.
+        let dst = &mut px_row[run.x + k0..];
+        if let Some(dst) = dst.first_chunk_mut::<LANES>() {
+            for j in 0..LANES {
+                dst[j] = rgba[j].to_le_bytes();
+            }
+        } else {
+            for (d, c) in dst.iter_mut().zip(&rgba).take(n) {
+                *d = c.to_le_bytes();
+            }
+        }
+    }
+}
+
+/// A run's fragments for the demo's Flat shading, from fragment `m` on: each pixel's
+/// eye-space position interpolated, and one normal, the face's.
+#[inline(always)]
+fn flat_fragments(
+    run: &Run,
+    edges: &([f64; 2], [f64; 2], f64),
+    inv_w: [f32; 3],
+    pos: &[Vec3; 3],
+    face: Vec3,
+    frags: &mut Fragments,
+    m: usize,
+) {
+    let face = [[face.x; LANES], [face.y; LANES], [face.z; LANES]];
+    for (k0, _) in run.blocks() {
+        let wt = run.weights(edges, inv_w, k0);
+        Fragments::store(&mut frags.pos, m + k0, &blend_n(&wt, &xyz(pos)));
+        Fragments::store(&mut frags.nrm, m + k0, &face);
+    }
 }
 
 /// Fragments lit in one batch, at least (whole rows are gathered first): enough for the
