@@ -108,6 +108,110 @@ fn check(h: &Harness<'static, AppState>, step: usize, what: &str) {
     }
 }
 
+/// The controls open again, out of presentation, Compare, the quiz and the shader.
+fn bring_the_controls_back(h: &mut Harness<'_, AppState>) {
+    let s = h.state_mut();
+    s.ui.layout.presenting = false;
+    s.ui.layout.controls_open = true;
+    s.compare.open = false;
+    s.quiz.open = false;
+    s.shader.open = false;
+    h.run_steps(1);
+}
+
+/// One random action a user could take, described; `None` where there was nothing to act on.
+fn act(h: &mut Harness<'_, AppState>, rng: &mut Rng) -> Option<String> {
+    match rng.below(6) {
+        0 | 1 => set_a_value(h, rng),
+        2 => click_something(h, rng),
+        3 => type_into_a_field(h, rng),
+        4 => {
+            let k = KEYS[rng.below(KEYS.len())];
+            h.key_press(k);
+            Some(format!("press {k:?}"))
+        }
+        _ => Some(drag_somewhere(h, rng)),
+    }
+}
+
+/// A slider or a number field set to a wild value.
+fn set_a_value(h: &Harness<'_, AppState>, rng: &mut Rng) -> Option<String> {
+    let nodes: Vec<_> = h.query_all_by_role(Role::Slider).chain(h.query_all_by_role(Role::SpinButton)).collect();
+    if nodes.is_empty() {
+        return None;
+    }
+    let n = &nodes[rng.below(nodes.len())];
+    let v = wild_value(rng);
+    let label = n.accesskit_node().label().unwrap_or_default();
+    n.set_value_accesskit(v);
+    Some(format!("set {label:?} to {v}"))
+}
+
+/// A button, check box, radio button or combo box clicked (by the pointer or by
+/// AccessKit).
+fn click_something(h: &Harness<'_, AppState>, rng: &mut Rng) -> Option<String> {
+    let nodes: Vec<_> = h
+        .query_all_by_role(Role::Button)
+        .chain(h.query_all_by_role(Role::CheckBox))
+        .chain(h.query_all_by_role(Role::RadioButton))
+        .chain(h.query_all_by_role(Role::ComboBox))
+        // Not the Export menu: it writes files (and here, with no file dialog,
+        // only says it cannot), and changes no scene.
+        .filter(|n| n.accesskit_node().label().is_none_or(|l| l != "Export"))
+        .collect();
+    if nodes.is_empty() {
+        return None;
+    }
+    let n = &nodes[rng.below(nodes.len())];
+    let label = n.accesskit_node().label().unwrap_or_default();
+    if rng.below(2) == 0 {
+        n.click()
+    } else {
+        n.click_accesskit()
+    }
+    Some(format!("click {label:?}"))
+}
+
+/// Text typed into a scene's field.
+fn type_into_a_field(h: &Harness<'_, AppState>, rng: &mut Rng) -> Option<String> {
+    let nodes: Vec<_> = h
+        .query_all_by_role(Role::TextInput)
+        .chain(h.query_all_by_role(Role::SpinButton))
+        // Scene fields: not the file paths, nor the quiz's answer fields (which
+        // hold any text and refuse nothing), nor the Export menu's exercise
+        // settings, so typed bad values meet the validator.
+        .filter(|n| {
+            n.accesskit_node().label().is_none_or(|l| {
+                !l.contains("Scene file")
+                    && !l.contains("Mesh file")
+                    && !l.ends_with(" =")
+                    && !["Seed", "Exercises", "Level"].contains(&l.as_str())
+            })
+        })
+        .collect();
+    if nodes.is_empty() {
+        return None;
+    }
+    let n = &nodes[rng.below(nodes.len())];
+    let text = TYPED[rng.below(TYPED.len())];
+    let label = n.accesskit_node().label().unwrap_or_default();
+    n.click();
+    n.type_text(text);
+    Some(format!("type {text:?} into {label:?}"))
+}
+
+/// A drag from a random point by up to 100 points each way.
+fn drag_somewhere(h: &mut Harness<'_, AppState>, rng: &mut Rng) -> String {
+    let (x, y) = (rng.unit() as f32 * 1500.0, rng.unit() as f32 * 1000.0);
+    let d = egui::vec2(rng.unit() as f32 * 200.0 - 100.0, rng.unit() as f32 * 200.0 - 100.0);
+    h.drag_at(egui::pos2(x, y));
+    h.run_steps(1);
+    h.hover_at(egui::pos2(x, y) + d);
+    h.run_steps(1);
+    h.drop_at(egui::pos2(x, y) + d);
+    format!("drag from ({x:.0}, {y:.0}) by {d:?}")
+}
+
 fn run(seed: u64, steps: usize) {
     let dir = std::env::temp_dir().join(format!("phonglab-ui-random-{seed}-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
@@ -124,95 +228,13 @@ fn run(seed: u64, steps: usize) {
         // then it brings them back, as a user would, so typed values keep reaching the
         // validator.
         if rng.below(4) == 0 {
-            let s = h.state_mut();
-            s.ui.layout.presenting = false;
-            s.ui.layout.controls_open = true;
-            s.compare.open = false;
-            s.quiz.open = false;
-            s.shader.open = false;
-            h.run_steps(1);
+            bring_the_controls_back(&mut h);
         }
         let before = without_spin(&h.state().doc);
         let message_before = h.state().message.clone();
         // A number field refuses what is not a number itself, beside the field.
         let fields_refusing = h.query_all_by_label_contains("(Esc: back to").count();
-        let what = match rng.below(6) {
-            0 | 1 => {
-                let nodes: Vec<_> =
-                    h.query_all_by_role(Role::Slider).chain(h.query_all_by_role(Role::SpinButton)).collect();
-                if nodes.is_empty() {
-                    continue;
-                }
-                let n = &nodes[rng.below(nodes.len())];
-                let v = wild_value(&mut rng);
-                let label = n.accesskit_node().label().unwrap_or_default();
-                n.set_value_accesskit(v);
-                format!("set {label:?} to {v}")
-            }
-            2 => {
-                let nodes: Vec<_> = h
-                    .query_all_by_role(Role::Button)
-                    .chain(h.query_all_by_role(Role::CheckBox))
-                    .chain(h.query_all_by_role(Role::RadioButton))
-                    .chain(h.query_all_by_role(Role::ComboBox))
-                    // Not the Export menu: it writes files (and here, with no file dialog,
-                    // only says it cannot), and changes no scene.
-                    .filter(|n| n.accesskit_node().label().is_none_or(|l| l != "Export"))
-                    .collect();
-                if nodes.is_empty() {
-                    continue;
-                }
-                let n = &nodes[rng.below(nodes.len())];
-                let label = n.accesskit_node().label().unwrap_or_default();
-                if rng.below(2) == 0 {
-                    n.click()
-                } else {
-                    n.click_accesskit()
-                }
-                format!("click {label:?}")
-            }
-            3 => {
-                let nodes: Vec<_> = h
-                    .query_all_by_role(Role::TextInput)
-                    .chain(h.query_all_by_role(Role::SpinButton))
-                    // Scene fields: not the file paths, nor the quiz's answer fields (which
-                    // hold any text and refuse nothing), nor the Export menu's exercise
-                    // settings, so typed bad values meet the validator.
-                    .filter(|n| {
-                        n.accesskit_node().label().is_none_or(|l| {
-                            !l.contains("Scene file")
-                                && !l.contains("Mesh file")
-                                && !l.ends_with(" =")
-                                && !["Seed", "Exercises", "Level"].contains(&l.as_str())
-                        })
-                    })
-                    .collect();
-                if nodes.is_empty() {
-                    continue;
-                }
-                let n = &nodes[rng.below(nodes.len())];
-                let text = TYPED[rng.below(TYPED.len())];
-                let label = n.accesskit_node().label().unwrap_or_default();
-                n.click();
-                n.type_text(text);
-                format!("type {text:?} into {label:?}")
-            }
-            4 => {
-                let k = KEYS[rng.below(KEYS.len())];
-                h.key_press(k);
-                format!("press {k:?}")
-            }
-            _ => {
-                let (x, y) = (rng.unit() as f32 * 1500.0, rng.unit() as f32 * 1000.0);
-                let d = egui::vec2(rng.unit() as f32 * 200.0 - 100.0, rng.unit() as f32 * 200.0 - 100.0);
-                h.drag_at(egui::pos2(x, y));
-                h.run_steps(1);
-                h.hover_at(egui::pos2(x, y) + d);
-                h.run_steps(1);
-                h.drop_at(egui::pos2(x, y) + d);
-                format!("drag from ({x:.0}, {y:.0}) by {d:?}")
-            }
-        };
+        let Some(what) = act(&mut h, &mut rng) else { continue };
         h.run_steps(2);
         check(&h, step, &what);
         changes += usize::from(without_spin(&h.state().doc) != before);

@@ -224,41 +224,44 @@ fn a_placement_that_changes_w_is_planned_as_the_engine_lights_it() {
     }
 }
 
-/// Every key bit switched off in turn from a scene that uses everything: the stages the
-/// evaluator runs (traced) are exactly the compiled program, chunk after chunk; each stage
-/// the key leaves out never runs; each effect the panel reports as skipped ran no stage of
-/// its own; and the colours stay the general engine's, bit for bit.
-#[test]
-fn skipped_stages_never_run_for_any_key_bit() {
-    use phonglab_core::plan::{EffectKind, Stage};
-    let full = || {
-        let mut s = Scene {
-            material: Material {
-                emission: DVec4::new(0.1, 0.0, 0.05, 1.0),
-                specular: DVec4::new(0.5, 0.4, 0.3, 1.0),
-                shininess: 20.0,
-                ..Material::default()
-            },
-            back_material: Some(Material { shininess: 7.0, specular: DVec4::ONE, ..Material::default() }),
-            eye_from_world: DMat4::from_translation(DVec3::new(0.0, 0.0, -4.0)),
-            world_from_object: DMat4::from_scale(DVec3::splat(1.5)),
-            normal_mode: NormalMode::Normalize,
-            ..Scene::default()
-        };
-        s.light_model.local_viewer = true;
-        s.light_model.two_sided = true;
-        s.lights = vec![Light {
-            position: DVec4::new(1.0, 2.0, 3.0, 1.0),
-            spot_direction: DVec3::new(-1.0, -2.0, -3.0),
-            spot_cutoff: 40.0,
-            spot_exponent: 3.0,
-            attenuation: [1.0, 0.1, 0.01],
-            ..Light::gl_default(0)
-        }];
-        s
+/// A scene that switches on every key bit: a positional spotlight with attenuation, a
+/// local viewer, two sides with a back material, emission, a scaled object and
+/// GL_NORMALIZE.
+fn everything_on() -> Scene {
+    let mut s = Scene {
+        material: Material {
+            emission: DVec4::new(0.1, 0.0, 0.05, 1.0),
+            specular: DVec4::new(0.5, 0.4, 0.3, 1.0),
+            shininess: 20.0,
+            ..Material::default()
+        },
+        back_material: Some(Material { shininess: 7.0, specular: DVec4::ONE, ..Material::default() }),
+        eye_from_world: DMat4::from_translation(DVec3::new(0.0, 0.0, -4.0)),
+        world_from_object: DMat4::from_scale(DVec3::splat(1.5)),
+        normal_mode: NormalMode::Normalize,
+        ..Scene::default()
     };
-    type Bit = (&'static str, fn(&mut Scene), fn(&Stage) -> bool);
-    let bits: [Bit; 13] = [
+    s.light_model.local_viewer = true;
+    s.light_model.two_sided = true;
+    s.lights = vec![Light {
+        position: DVec4::new(1.0, 2.0, 3.0, 1.0),
+        spot_direction: DVec3::new(-1.0, -2.0, -3.0),
+        spot_cutoff: 40.0,
+        spot_exponent: 3.0,
+        attenuation: [1.0, 0.1, 0.01],
+        ..Light::gl_default(0)
+    }];
+    s
+}
+
+/// A key bit switched off: its name, the change to [`everything_on`], and the stages it
+/// leaves out.
+type Bit = (&'static str, fn(&mut Scene), fn(&phonglab_core::plan::Stage) -> bool);
+
+/// Each key bit in turn ("nothing" first, as the control).
+fn key_bits() -> [Bit; 13] {
+    use phonglab_core::plan::Stage;
+    [
         ("nothing", |_| {}, |_| false),
         (
             // The object unscaled: the modelview is the view's translation alone.
@@ -353,10 +356,60 @@ fn skipped_stages_never_run_for_any_key_bit() {
                 )
             },
         ),
-    ];
+    ]
+}
+
+/// The position effect the panel shows says which transform ran: the division by w only for
+/// a projective modelview, `P = p + t` exactly where the modelview is a translation.
+fn position_effect_is_what_ran(name: &str, l: &Lighter, trace: &[phonglab_core::plan::Stage], scene: &Scene) {
+    use phonglab_core::plan::{EffectKind, Stage};
+    let position = l.key().effects().into_iter().find(|e| e.kind == EffectKind::Position).unwrap();
+    let projective = trace.contains(&Stage::TransformPositionProjective);
+    assert_eq!(position.why.contains("division by w is skipped"), trace.contains(&Stage::TransformPosition));
+    assert_eq!(position.why.contains("projective"), projective, "{name}: {position}");
+    assert_eq!(projective, name == "projective modelview", "{name}: the division by w runs only there");
+    let translation = trace.contains(&Stage::TranslatePosition);
+    assert_eq!(position.why.contains("is a translation"), translation, "{name}: {position}");
+    let m = scene.eye_from_object();
+    let is_translation = m.row(3) == DVec4::W && glam::DMat3::from_mat4(m) == glam::DMat3::IDENTITY;
+    assert_eq!(translation, is_translation, "{name}: P = p + t where the modelview is a translation");
+    if name == "translation modelview" {
+        assert!(translation, "the bit that makes the modelview a translation");
+    }
+}
+
+/// What the panel says is skipped ran no stage of its kind.
+fn skipped_effects_ran_nothing(name: &str, l: &Lighter, trace: &[phonglab_core::plan::Stage]) {
+    use phonglab_core::plan::{EffectKind, Stage};
+    for eff in l.key().effects().iter().filter(|e| !e.on) {
+        let ran = trace.iter().any(|st| match eff.kind {
+            EffectKind::Normalisation => matches!(st, Stage::NormalizeNormal | Stage::RescaleNormal),
+            EffectKind::Position => {
+                matches!(st, Stage::TransformPosition | Stage::TransformPositionProjective | Stage::TranslatePosition)
+            }
+            EffectKind::ViewVector => matches!(st, Stage::ViewVector),
+            EffectKind::SceneColor => matches!(st, Stage::SceneColor),
+            EffectKind::BackSide => matches!(st, Stage::Sum(_, 1)),
+            EffectKind::LightVector => matches!(st, Stage::LightVector(_)),
+            EffectKind::Attenuation => matches!(st, Stage::Attenuate(_)),
+            EffectKind::Spotlight => matches!(st, Stage::SpotCone(_) | Stage::SpotPower(_)),
+            EffectKind::HalfwayOrReflection => matches!(st, Stage::Halfway(_) | Stage::Reflect(_)),
+            EffectKind::SpecularPower => matches!(st, Stage::Power(..)),
+        });
+        assert!(!ran, "{name}: the panel says {eff} but a stage of it ran");
+    }
+}
+
+/// Every key bit switched off in turn from a scene that uses everything: the stages the
+/// evaluator runs (traced) are exactly the compiled program, chunk after chunk; each stage
+/// the key leaves out never runs; each effect the panel reports as skipped ran no stage of
+/// its own; and the colours stay the general engine's, bit for bit.
+#[test]
+fn skipped_stages_never_run_for_any_key_bit() {
+    use phonglab_core::plan::Stage;
     let (positions, normals) = phonglab_core::presets::sphere_points(300);
-    for (name, change, left_out) in bits {
-        let mut scene = full();
+    for (name, change, left_out) in key_bits() {
+        let mut scene = everything_on();
         change(&mut scene);
         for model in SpecularModel::ALL {
             scene.rules.specular = model;
@@ -371,39 +424,8 @@ fn skipped_stages_never_run_for_any_key_bit() {
                 assert!(!trace.iter().any(left_out), "{name} {model:?}: a left-out stage ran: {program:?}");
             }
             assert!(program.contains(&Stage::Sum(0, 0)));
-            // The position effect says which transform ran.
-            let position = l.key().effects().into_iter().find(|e| e.kind == EffectKind::Position).unwrap();
-            let projective = trace.contains(&Stage::TransformPositionProjective);
-            assert_eq!(position.why.contains("division by w is skipped"), trace.contains(&Stage::TransformPosition));
-            assert_eq!(position.why.contains("projective"), projective, "{name}: {position}");
-            assert_eq!(projective, name == "projective modelview", "{name}: the division by w runs only there");
-            let translation = trace.contains(&Stage::TranslatePosition);
-            assert_eq!(position.why.contains("is a translation"), translation, "{name}: {position}");
-            let m = scene.eye_from_object();
-            let is_translation = m.row(3) == DVec4::W && glam::DMat3::from_mat4(m) == glam::DMat3::IDENTITY;
-            assert_eq!(translation, is_translation, "{name}: P = p + t where the modelview is a translation");
-            if name == "translation modelview" {
-                assert!(translation, "the bit that makes the modelview a translation");
-            }
-            // What the panel says is skipped ran no stage of its kind.
-            for eff in l.key().effects().iter().filter(|e| !e.on) {
-                let ran = trace.iter().any(|st| match eff.kind {
-                    EffectKind::Normalisation => matches!(st, Stage::NormalizeNormal | Stage::RescaleNormal),
-                    EffectKind::Position => matches!(
-                        st,
-                        Stage::TransformPosition | Stage::TransformPositionProjective | Stage::TranslatePosition
-                    ),
-                    EffectKind::ViewVector => matches!(st, Stage::ViewVector),
-                    EffectKind::SceneColor => matches!(st, Stage::SceneColor),
-                    EffectKind::BackSide => matches!(st, Stage::Sum(_, 1)),
-                    EffectKind::LightVector => matches!(st, Stage::LightVector(_)),
-                    EffectKind::Attenuation => matches!(st, Stage::Attenuate(_)),
-                    EffectKind::Spotlight => matches!(st, Stage::SpotCone(_) | Stage::SpotPower(_)),
-                    EffectKind::HalfwayOrReflection => matches!(st, Stage::Halfway(_) | Stage::Reflect(_)),
-                    EffectKind::SpecularPower => matches!(st, Stage::Power(..)),
-                });
-                assert!(!ran, "{name}: the panel says {eff} but a stage of it ran");
-            }
+            position_effect_is_what_ran(name, &l, &trace, &scene);
+            skipped_effects_ran_nothing(name, &l, &trace);
             // And the colours are the general engine's.
             for (k, got) in lit.iter().enumerate().step_by(37) {
                 let v = Vertex::from_f32(positions[k], normals[k]);
