@@ -18,6 +18,10 @@
 //! The crate's root re-exports every module for users; inside the crate no path goes
 //! through it, but for the locale's `t!` macro (exported at the root, as every
 //! `macro_rules!` macro is) and the unit tests' shared helpers (`test_support`).
+//!
+//! Code written for one processor's vector units (`#[target_feature]` functions, the
+//! `std::arch` intrinsics, inline assembly) lives in the `copies` modules, apart from the
+//! scalar code a student reads, as glam keeps its `sse2/` apart.
 
 use std::path::Path;
 
@@ -120,4 +124,46 @@ fn the_check_sees_a_path_through_the_root_and_a_macro_apart() {
     let found =
         crate_paths("use crate::scene::Scene; let x = crate::t!(\"id\"); $crate::locale::tr(x); // crate::model::view");
     assert_eq!(found, vec![(1, "scene".to_string()), (1, "model".to_string())]);
+}
+
+/// The lines of `text` that are written for one processor: a `#[target_feature]`, an
+/// `std::arch` intrinsic (`_mm…`), inline assembly.
+fn processor_specific(text: &str) -> Vec<usize> {
+    text.lines()
+        .enumerate()
+        .filter(|(_, l)| {
+            let code = l.split("//").next().unwrap_or("");
+            code.contains("target_feature(")
+                || code.contains("arch::x86_64")
+                || code.contains("_mm")
+                || code.contains("asm!")
+        })
+        .map(|(n, _)| n + 1)
+        .collect()
+}
+
+#[test]
+fn processor_specific_code_lives_in_the_copies_modules() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    sources(&src, &mut files);
+    let (mut wrong, mut in_copies) = (Vec::new(), 0);
+    for file in files {
+        let lines = processor_specific(&std::fs::read_to_string(&file).unwrap());
+        if file.file_name().is_some_and(|n| n == "copies.rs") {
+            in_copies += lines.len();
+        } else {
+            let shown = file.strip_prefix(&src).unwrap().display().to_string();
+            wrong.extend(lines.iter().map(|n| format!("src/{shown}:{n}")));
+        }
+    }
+    // The check reads what it should: the copies do hold such lines.
+    assert!(in_copies > 20, "only {in_copies} processor-specific lines in the copies modules");
+    assert!(wrong.is_empty(), "processor-specific code outside the copies modules:\n{}", wrong.join("\n"));
+}
+
+#[test]
+fn the_check_sees_an_intrinsic_and_not_a_comment() {
+    let text = "let a = 1;\n#[target_feature(enable = \"avx2\")]\nlet v = _mm256_setzero_ps();\n// _mm512 in a comment";
+    assert_eq!(processor_specific(text), vec![2, 3]);
 }
