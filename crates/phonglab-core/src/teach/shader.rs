@@ -170,6 +170,7 @@ impl Body<'_> {
         self.lines.push(line);
     }
 
+    /// How many sides are lit: 2 when two-sided, else 1.
     fn sides(&self) -> usize {
         if self.key.two_sided { 2 } else { 1 }
     }
