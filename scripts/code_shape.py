@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """The codebase's shape, for reviews: the core's group graph (which group's files name
 which other group, through a group path or through the crate root's re-exports), its
-cycles, the longest functions of the core and the app, and README.md's length.
+cycles, the longest functions of the core and the app, where processor-specific code and
+`unsafe` sit (in the `copies` modules or not), the files over 500 lines, and README.md's
+length.
 Usage: scripts/code_shape.py [CHECKOUT] [--functions N] (default: this checkout, 15)."""
 import collections
 import os
@@ -95,6 +97,36 @@ def functions(root):
     return sorted(found, reverse=True)
 
 
+def processor_specific(root):
+    """Counts, in the core, of `#[target_feature]` attributes and of `unsafe {` blocks:
+    (in copies.rs files, elsewhere)."""
+    counts = {"target_feature": [0, 0], "unsafe": [0, 0]}
+    src = os.path.join(root, "crates/phonglab-core/src")
+    for dp, _, fs in os.walk(src):
+        for f in fs:
+            if not f.endswith(".rs"):
+                continue
+            for line in open(os.path.join(dp, f)):
+                code = line.split("//")[0]
+                where = 0 if f == "copies.rs" else 1
+                counts["target_feature"][where] += code.count("#[target_feature(")
+                counts["unsafe"][where] += code.count("unsafe {")
+    return counts
+
+
+def long_files(root, limit=500):
+    found = []
+    for top in ("src", "crates"):
+        for dp, _, fs in os.walk(os.path.join(root, top)):
+            for f in fs:
+                if f.endswith(".rs"):
+                    path = os.path.join(dp, f)
+                    n = sum(1 for _ in open(path))
+                    if n > limit:
+                        found.append((n, os.path.relpath(path, root)))
+    return sorted(found, reverse=True)
+
+
 def main():
     args = sys.argv[1:]
     root = next((a for a in args if not a.startswith("--") and not a.isdigit()), ".")
@@ -107,6 +139,12 @@ def main():
     print(f"longest functions (lines):")
     for lines, name, path in functions(root)[:n]:
         print(f"  {lines:4} {name} ({path})")
+    for what, (copies, elsewhere) in processor_specific(root).items():
+        print(f"core {what}: {copies} in the copies modules, {elsewhere} elsewhere")
+    files = long_files(root)
+    print(f"files over 500 lines: {len(files)}")
+    for lines, path in files:
+        print(f"  {lines:4} {path}")
     readme = os.path.join(root, "README.md")
     print("README.md:", sum(1 for _ in open(readme)), "lines")
 
