@@ -10,7 +10,7 @@ use std::fmt::Write as _;
 
 use crate::t;
 
-use crate::equation::breakdown::{LightTerms, Limit, SideColor, SideTerms, VertexLighting};
+use crate::equation::breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, VertexLighting};
 use crate::model::rules::SpecularModel;
 use crate::model::scene::Scene;
 use crate::numerics::real::{Real, Vec3Ops};
@@ -215,16 +215,10 @@ pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> E
     Explanation { heading, steps: b.steps }
 }
 
-/// Notes on the step just pushed: the limits the engine took at the vertex for `kind`.
-fn vertex_limits<S: Real>(b: &mut Builder, lit: &VertexLighting<S>, kind: StepKind) {
-    for l in lit.limits.iter().filter(|l| l.step_kind() == kind) {
-        b.note(l.message());
-    }
-}
-
-/// Notes on the step just pushed: the limits the engine took for light `t` at `kind`.
-fn light_limits<S: Real>(b: &mut Builder, t: &LightTerms<S>, kind: StepKind) {
-    for l in t.limits.iter().filter(|l| l.step_kind() == kind) {
+/// Notes on the step just pushed: those of `limits` (the vertex's, or a light's) the
+/// engine took at `kind`.
+fn limit_notes(b: &mut Builder, limits: Limits, kind: StepKind) {
+    for l in limits.iter().filter(|l| l.step_kind() == kind) {
         b.note(l.message());
     }
 }
@@ -251,7 +245,7 @@ fn normal_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
     };
     let ntitle = if back { t!("step-normal-back") } else { t!("step-normal") };
     b.push(StepKind::Normal, None, &ntitle, "vertexNormal".into(), &nformula, Some(dir4::<S>(n_shown)));
-    vertex_limits(b, lit, StepKind::Normal);
+    limit_notes(b, lit.limits, StepKind::Normal);
     if by_m {
         // Where the worksheet's M n and OpenGL's (M^-1)^T n part: say how far M is from a
         // rotation, and what that does to N.
@@ -274,7 +268,7 @@ fn position_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S
         &t!("formula-position"),
         Some(vec![p.x, p.y, p.z, 1.0]),
     );
-    vertex_limits(b, lit, StepKind::Position);
+    limit_notes(b, lit.limits, StepKind::Position);
     if scene.eye_from_object() == crate::model::transform::phong_demo_eye_from_object() {
         b.note(t!("note-demo-space"));
     }
@@ -291,7 +285,7 @@ fn view_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>) {
         t!("formula-v-infinite")
     };
     b.push(StepKind::V, None, &t!("step-v"), "vov".into(), &vformula, Some(dir4::<S>(lit.v)));
-    vertex_limits(b, lit, StepKind::V);
+    limit_notes(b, lit.limits, StepKind::V);
     if rules.viewer_from_eye_plane() && !scene.light_model.local_viewer && lit.pos_in_eye.z > 0.0 {
         b.note(t!("note-vov-behind"));
     }
@@ -330,13 +324,13 @@ fn light_vector_steps<S: Real>(b: &mut Builder, lit: &VertexLighting<S>, t: &Lig
     );
     let lformula = if t.positional { t!("formula-l-positional") } else { t!("formula-l-directional") };
     b.push(StepKind::L, i, &t!("step-l"), format!("vlv{sfx}"), &lformula, Some(dir4::<S>(t.l)));
-    light_limits(b, t, StepKind::L);
+    limit_notes(b, t.limits, StepKind::L);
     let dval = t.distance.map(|d| vec![d.to_f64()]);
     b.push(StepKind::Distance, i, &t!("step-distance"), format!("d{sfx}"), "d = |lightPos − vertexPos|", dval);
     if t.distance.is_none() {
         b.note(t!("note-no-distance"));
     }
-    light_limits(b, t, StepKind::Distance);
+    limit_notes(b, t.limits, StepKind::Distance);
 }
 
 /// The ambient, diffuse and specular terms, with cos(θ), H or R, and the specular cosine.
@@ -379,7 +373,7 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
                 "H = normalize(vlv + vov)   (OpenGL: h = normalize(L + V))",
                 Some(dir4::<S>(t.h)),
             );
-            light_limits(b, t, StepKind::H);
+            limit_notes(b, t.limits, StepKind::H);
             b.push(
                 StepKind::CosBeta,
                 i,
@@ -447,7 +441,7 @@ fn share_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
         &aformula,
         Some(vec![if at == 0.0 { f64::INFINITY } else { 1.0 / at }]),
     );
-    light_limits(b, t, StepKind::Attenuation);
+    limit_notes(b, t.limits, StepKind::Attenuation);
     if t.spot.active {
         b.push(
             StepKind::Spot,
@@ -464,7 +458,7 @@ fn share_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
     } else {
         b.push(StepKind::Spot, i, &t!("step-spot"), format!("spot{sfx}"), &t!("formula-spot-none"), Some(vec![1.0]));
     }
-    light_limits(b, t, StepKind::Spot);
+    limit_notes(b, t.limits, StepKind::Spot);
     let sep = scene.light_model.separate_specular;
     let cformula =
         if sep { t!("formula-share-separate") } else { "Ilight = spot · (Iamb + Idif + Ispec) / at".to_string() };
@@ -502,7 +496,7 @@ fn total_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
     };
     let pr = sc.primary.map(S::to_f64);
     b.push(StepKind::Primary, None, &t!("step-primary"), "I".into(), &iformula, Some(vec![pr[0], pr[1], pr[2], 0.0]));
-    vertex_limits(b, lit, StepKind::Primary);
+    limit_notes(b, lit.limits, StepKind::Primary);
     if scene.light_model.separate_specular {
         let s = sc.secondary.map(S::to_f64);
         b.push(
