@@ -24,7 +24,7 @@
 
 use glam::{DVec3, Vec4};
 
-use crate::equation::breakdown::VertexLighting;
+use crate::equation::breakdown::{SideColor, VertexLighting};
 use crate::equation::lighting::{Engine, Renormalize};
 use crate::model::error::SceneError;
 use crate::model::scene::Vertex;
@@ -47,11 +47,21 @@ fn to_byte(c: f64) -> u8 {
     (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
 }
 
-/// Which colour reaches the framebuffer: primary plus secondary, each clamped to [0, 1]
-/// first where OpenGL clamps vertex colours (the Phong demo's varying is not clamped).
-fn colour_sum(primary: [f64; 4], secondary: [f64; 4], clamp: bool) -> [f64; 4] {
-    let c = |x: f64| if clamp { x.clamp(0.0, 1.0) } else { x };
-    [c(primary[0]) + c(secondary[0]), c(primary[1]) + c(secondary[1]), c(primary[2]) + c(secondary[2]), c(primary[3])]
+/// The side `side` (0 front, 1 back) of a vertex's lighting.
+fn side_of(l: &VertexLighting<f64>, side: usize) -> &SideColor<f64> {
+    if side == 0 { &l.front } else { &l.back }
+}
+
+/// A vertex colour as Gouraud interpolates it: primary plus secondary, each clamped to
+/// [0, 1] first where OpenGL clamps vertex colours (the Phong demo's varying is not
+/// clamped).
+fn vertex_colour(s: &SideColor<f64>, clamp: bool) -> [f64; 4] {
+    if !clamp {
+        return s.sum();
+    }
+    let c = |x: f64| x.clamp(0.0, 1.0);
+    let (p, q) = (s.primary, s.secondary);
+    [c(p[0]) + c(q[0]), c(p[1]) + c(q[1]), c(p[2]) + c(q[2]), c(p[3])]
 }
 
 /// The edge function of a -> b at p: twice the signed area of (a, b, p).
@@ -128,10 +138,10 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
             let face_colour = (job.shading == Shading::Flat && job.flat_normal == FlatNormal::Face).then(|| {
                 let [ea, eb, ec] = ids.map(|i| eye_pos[i]);
                 let n = plane_normal(ea, eb, ec, order != [0, 1, 2]);
-                let l = engine.light_eye(((ea + eb + ec) / 3.0).extend(1.0), n);
-                let s = if side == 0 { &l.front } else { &l.back };
-                colour_sum(s.primary, s.secondary, false)
+                side_of(&engine.light_eye(((ea + eb + ec) / 3.0).extend(1.0), n), side).sum()
             });
+            // The top-left rule's bias of each edge (b -> c, c -> a, a -> b), for the triangle.
+            let bias = [top_left(b, c), top_left(c, a), top_left(a, b)];
 
             // The bounding box of the pixel centres the triangle may cover.
             let to_px = |f: i64| f.div_euclid(ONE);
@@ -141,15 +151,11 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
                 for px in x0..=x1 {
                     let centre = (px * ONE + ONE / 2, py * ONE + ONE / 2);
                     // Each edge function is the barycentric weight of the corner opposite it.
-                    let w = [
-                        edge(b, c, centre) + top_left(b, c),
-                        edge(c, a, centre) + top_left(c, a),
-                        edge(a, b, centre) + top_left(a, b),
-                    ];
-                    if w.iter().any(|&e| e < 0) {
+                    let e = [edge(b, c, centre), edge(c, a, centre), edge(a, b, centre)];
+                    if (0..3).any(|k| e[k] + bias[k] < 0) {
                         continue;
                     }
-                    let screen = [0, 1, 2].map(|k| edge([b, c, a][k], [c, a, b][k], centre) as f64 / area as f64);
+                    let screen = e.map(|e| e as f64 / area as f64);
                     let z: f64 = (0..3).map(|k| screen[k] * v[order[k]].2 as f64).sum();
                     let at = py as usize * width + px as usize;
                     if z >= depth[at] {
@@ -191,9 +197,7 @@ fn shade(job: &Job<'_>, engine: &Engine<f64>, lit: &[VertexLighting<f64>], face:
         (Shading::Gouraud, None) => {
             let mut c = [0.0; 4];
             for k in 0..3 {
-                let l = &lit[face.ids[k]];
-                let s = if face.side == 0 { &l.front } else { &l.back };
-                let vc = colour_sum(s.primary, s.secondary, clamp);
+                let vc = vertex_colour(side_of(&lit[face.ids[k]], face.side), clamp);
                 for ch in 0..4 {
                     c[ch] += bary[k] * vc[ch];
                 }
@@ -214,9 +218,7 @@ fn shade(job: &Job<'_>, engine: &Engine<f64>, lit: &[VertexLighting<f64>], face:
                     Renormalize::Exact | Renormalize::FastRsqrt => n.normalize_or_zero(),
                 }
             };
-            let l = engine.light_eye(pos.extend(1.0), n);
-            let s = if face.side == 0 { &l.front } else { &l.back };
-            colour_sum(s.primary, s.secondary, false)
+            side_of(&engine.light_eye(pos.extend(1.0), n), face.side).sum()
         }
     }
 }
