@@ -152,13 +152,9 @@ impl Lighter {
     /// on components, so the loops vectorise).
     #[inline(always)]
     fn view_vector(&self, c: &mut Chunk, n: usize) {
-        // terms::view_vector on components, so the loops vectorise.
         if self.key.local_viewer {
             // normalize(-P), in f64 (unscaled where that changes no bit), rounded to f32.
-            let mut plain = true;
-            for i in 0..n {
-                plain &= unscaled_is_exact(c.px[i]) & unscaled_is_exact(c.py[i]) & unscaled_is_exact(c.pz[i]);
-            }
+            let plain = all_unscaled_exact(&c.px, &c.py, &c.pz, n);
             macro_rules! view_vectors {
                 ($norm:expr) => {
                     for i in 0..n {
@@ -196,10 +192,7 @@ impl Lighter {
         for i in 0..n {
             (c.lx64[i], c.ly64[i], c.lz64[i]) = (lp.x - c.px[i], lp.y - c.py[i], lp.z - c.pz[i]);
         }
-        let mut plain = true;
-        for i in 0..n {
-            plain &= unscaled_is_exact(c.lx64[i]) & unscaled_is_exact(c.ly64[i]) & unscaled_is_exact(c.lz64[i]);
-        }
+        let plain = all_unscaled_exact(&c.lx64, &c.ly64, &c.lz64, n);
         macro_rules! light_vectors {
             ($norm:expr) => {
                 for i in 0..n {
@@ -464,6 +457,17 @@ impl Lighter {
             *o = [r[i], g[i], b[i], m.alpha];
         }
     }
+}
+
+/// Whether every one of the first `n` vectors `(x, y, z)` passes `unscaled_is_exact`, so
+/// `normalize3_unscaled` gives `normalize3`'s bits for all of them (one branch-free loop).
+#[inline(always)]
+fn all_unscaled_exact(x: &[f64; CHUNK], y: &[f64; CHUNK], z: &[f64; CHUNK], n: usize) -> bool {
+    let mut plain = true;
+    for i in 0..n {
+        plain &= unscaled_is_exact(x[i]) & unscaled_is_exact(y[i]) & unscaled_is_exact(z[i]);
+    }
+    plain
 }
 
 /// The back side's normal `-n` into `neg`, by component (negation is exact).
