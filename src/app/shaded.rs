@@ -219,10 +219,14 @@ fn pictures_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) -> Sh
         let picture = prepare_picture(ui.ctx(), state, &mut cache.corrected, c, px, 1, "corrected view");
         picture_or_refusal(state, picture, &t!("corrected-cannot-render"))
     });
-    let scene = state.doc.shaded_scene();
-    if heat {
-        state.cost.want_heat_map(&state.doc.shaded_setup(state.ui.pow));
-    }
+    // The scene as the view lights it, once: with the heat map on, from the setup it asks for.
+    let scene = if heat {
+        let setup = state.doc.shaded_setup(state.ui.pow);
+        state.cost.want_heat_map(&setup);
+        setup.scene
+    } else {
+        state.doc.shaded_scene()
+    };
     let size = egui::vec2(side, side);
     let caption = format!(
         "{} {}: {}{}",
