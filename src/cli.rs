@@ -378,7 +378,7 @@ pub fn run(command: Command) -> ExitCode {
     let r = match command {
         Command::Eval(a) => {
             return eval(&a).unwrap_or_else(|e| {
-                eprintln!("phonglab: {e:#}");
+                eprintln!("phonglab: {}", phonglab_core::escape::terminal::lines(&format!("{e:#}")));
                 ExitCode::from(2)
             });
         }
@@ -396,7 +396,7 @@ pub fn run(command: Command) -> ExitCode {
     match r {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("phonglab: {e:#}");
+            eprintln!("phonglab: {}", phonglab_core::escape::terminal::lines(&format!("{e:#}")));
             ExitCode::from(2)
         }
     }
@@ -484,9 +484,11 @@ fn explain_text<S: Real>(scene: &Scene, what: &str, a: &ExplainArgs) -> Result<S
     let ex = explain(scene, &lit, if a.back { Side::Back } else { Side::Front });
     let digits = a.digits as usize;
     Ok(if a.markdown {
-        format!("# {}\n\n{}", phonglab_core::t!("worked-calculation-of", name = what), ex.to_markdown(digits))
+        let name = phonglab_core::escape::markdown::text(what);
+        format!("# {}\n\n{}", phonglab_core::t!("worked-calculation-of", name = name), ex.to_markdown(digits))
     } else {
-        format!("{}\n{}", phonglab_core::t!("worked-calculation-of", name = what), ex.to_text(digits))
+        let name = phonglab_core::escape::terminal::text(what);
+        format!("{}\n{}", phonglab_core::t!("worked-calculation-of", name = name), ex.to_text(digits))
     })
 }
 

@@ -55,7 +55,8 @@ pub struct ExerciseArgs {
 /// The answer key: what `phonglab explain FILE` prints (and `--back` with two-sided
 /// lighting), in a code block.
 pub fn answer_key(doc: &Document, file: &str) -> Result<String> {
-    Ok(format!("# {}\n\n{}", t!("key-title", name = &doc.name), answer_key_body(doc, file)?))
+    let name = phonglab_core::escape::markdown::text(&doc.name);
+    Ok(format!("# {}\n\n{}", t!("key-title", name = name), answer_key_body(doc, file)?))
 }
 
 /// The worked calculation of `doc`'s vertex in f64: the front side, and the back one too
@@ -70,7 +71,9 @@ fn explained_sides(doc: &Document) -> Result<Vec<phonglab_core::explain::Explana
 fn answer_key_body(doc: &Document, file: &str) -> Result<String> {
     let mut o = format!("{}\n\n", t!("key-intro", file = file));
     for ex in explained_sides(doc)? {
-        let _ = writeln!(o, "```\n{}\n{}```\n", t!("worked-calculation-of", name = &doc.name), ex.to_text(8));
+        // Inside a code block: one printable line.
+        let name = phonglab_core::escape::terminal::text(&doc.name);
+        let _ = writeln!(o, "```\n{}\n{}```\n", t!("worked-calculation-of", name = name), ex.to_text(8));
     }
     Ok(o)
 }
@@ -289,7 +292,8 @@ pub fn exercise_set(a: &ExerciseArgs) -> Result<(Vec<Exercise>, FileSet)> {
         sheets.extend(sheet_blocks(ex, &toml));
         keys.push(Block::Section(t!("key-title", name = &ex.doc.name)));
         keys.extend(key_blocks(&ex.doc, &toml)?);
-        let _ = writeln!(index, "- [{}]({stem}.md) ([{}]({stem}-key.md))", ex.doc.name, t!("answers"));
+        let name = phonglab_core::escape::markdown::text(&ex.doc.name);
+        let _ = writeln!(index, "- [{name}]({stem}.md) ([{}]({stem}-key.md))", t!("answers"));
     }
     let _ = writeln!(index, "\n{}", t!("index-printable"));
     set.add("index.md", index);

@@ -110,7 +110,7 @@ pub fn read_student_code(path: &std::path::Path) -> Result<phonglab_core::export
 pub fn import(a: &ImportArgs) -> Result<()> {
     let imported = read_student_code(&a.file)?;
     for notice in &imported.notices {
-        eprintln!("{}: {notice}", a.file.display());
+        eprintln!("{}", phonglab_core::escape::terminal::lines(&format!("{}: {notice}", a.file.display())));
     }
     crate::atomic_write::check_file_destination(&a.output)?;
     let text = imported.doc.to_toml().map_err(|e| anyhow::anyhow!("{e}"))?;

@@ -97,11 +97,12 @@ impl Fonts {
         Ok(Fonts { text, mono, text_face, mono_face })
     }
 
-    /// The width of `s` at `size` points.
+    /// The width of `s` at `size` points, as [`Pen::text`] draws it (its control
+    /// characters written visibly).
     fn width(&self, s: &str, size: f32, mono: bool) -> f32 {
         let face = if mono { &self.mono_face } else { &self.text_face };
-        let units: f32 =
-            s.chars().map(|c| face.glyph_index(c).and_then(|g| face.glyph_hor_advance(g)).unwrap_or(0) as f32).sum();
+        let units: f32 = phonglab_core::escape::pdf::text(s)
+            .chars().map(|c| face.glyph_index(c).and_then(|g| face.glyph_hor_advance(g)).unwrap_or(0) as f32).sum();
         units * size / f32::from(face.units_per_em())
     }
 
@@ -277,9 +278,10 @@ struct Pen<'a> {
 }
 
 impl Pen<'_> {
-    /// `s` with its baseline's left end at `at`.
+    /// `s` with its baseline's left end at `at`: every text drawn passes here, so a control
+    /// character in a name is written visibly (`\u{1B}`), never drawn as a missing glyph.
     fn text(&mut self, at: (f32, f32), s: &str, size: f32, mono: bool) {
-        self.page.push(Mark::Text { at, text: s.to_string(), size, mono });
+        self.page.push(Mark::Text { at, text: phonglab_core::escape::pdf::text(s), size, mono });
     }
 
     /// `t` wrapped to the width, lines `leading` times the size apart.

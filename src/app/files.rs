@@ -123,7 +123,9 @@ pub fn import_text(
     notebook: bool,
     path: &Path,
 ) -> Result<phonglab_core::export::read_python::Imported, String> {
-    let name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    // A file's name may hold anything but `/`: the scene's name is its printable form.
+    let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    let name = phonglab_core::escape::printable(&stem);
     phonglab_core::export::read_python::read(text, notebook, &name).map_err(|e| format!("{}: {e}", path.display()))
 }
 

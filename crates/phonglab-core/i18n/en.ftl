@@ -571,6 +571,7 @@ cli-value-pyopengl = a PyOpenGL + GLUT program in the Phong demo's style (.py)
 cli-value-openframeworks = ofApp.h, ofApp.cpp and main.cpp for openFrameworks 0.12 (a folder)
 cli-value-glsl = the GLSL that `phonglab shader` prints
 export-flat-unsupported = the PyOpenGL program draws with the scene's generated shaders, which are Gouraud or Phong: choose one of them for the shaded view, not Flat
+export-template-broken = the program template { $template } is filled wrongly ({ $problem }): this is a fault of phonglab's; please report it
 py-title = { $scene }: the shaded view as phonglab draws it ({ $shading } shading), written by phonglab.
 py-usage = Run: python3 phong_scene.py (a window; needs PyOpenGL, GLUT and NumPy). With --png FILE it draws one 512x512 frame (--size N: NxN), saves it to FILE and exits. The lighting state is set the fixed-function way (glLightfv, glMaterialfv, glLightModel*); the shaders are the scene's own (phonglab shader) and read that state back from GL.
 py-rules-comment = the equation the shaders compute: "worksheet", "opengl" or "phong-demo" (the normal matrix and the scene's ambient follow it)
@@ -742,6 +743,7 @@ toml-camera-needs = camera: kind = "{ $kind }" needs { $keys }
 toml-unknown-material = { $field }: unknown material { $name }; the classic materials are { $names }
 toml-placement-needs-matrix = { $field }: placement = "matrix" needs placement_matrix (4 rows of 4)
 toml-matrix-needs-placement = { $field }: placement_matrix needs placement = "matrix"
+toml-control-character = { $field } holds the control character { $char } (character { $position }): a name or a path is one line of printable text
 toml-unknown-field-one = unknown field { $field }, expected { $known }
 
 ## io-errors

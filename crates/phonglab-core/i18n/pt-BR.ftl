@@ -571,6 +571,7 @@ cli-value-pyopengl = um programa PyOpenGL + GLUT no estilo da demo de Phong (.py
 cli-value-openframeworks = ofApp.h, ofApp.cpp e main.cpp para openFrameworks 0.12 (uma pasta)
 cli-value-glsl = o GLSL que o `phonglab shader` imprime
 export-flat-unsupported = o programa PyOpenGL desenha com os shaders gerados para a cena, que são Gouraud ou Phong: escolha um deles para a vista sombreada, não Flat
+export-template-broken = o modelo de programa { $template } está mal preenchido ({ $problem }): é uma falha do phonglab; por favor, informe-a
 py-title = { $scene }: a vista sombreada como o phonglab a desenha (sombreamento { $shading }), escrita pelo phonglab.
 py-usage = Executar: python3 phong_scene.py (uma janela; precisa de PyOpenGL, GLUT e NumPy). Com --png FICHEIRO desenha uma imagem de 512x512 (--size N: NxN), guarda-a em FICHEIRO e termina. O estado da iluminação é definido à maneira do pipeline fixo (glLightfv, glMaterialfv, glLightModel*); os shaders são os da cena (phonglab shader) e leem esse estado de volta do GL.
 py-rules-comment = a equação que os shaders calculam: "worksheet", "opengl" ou "phong-demo" (a matriz das normais e a ambiente da cena seguem-na)
@@ -742,6 +743,7 @@ toml-camera-needs = camera: kind = "{ $kind }" precisa de { $keys }
 toml-unknown-material = { $field }: material desconhecido { $name }; os materiais clássicos são { $names }
 toml-placement-needs-matrix = { $field }: placement = "matrix" precisa de placement_matrix (4 linhas de 4)
 toml-matrix-needs-placement = { $field }: placement_matrix precisa de placement = "matrix"
+toml-control-character = { $field } contém o caractere de controle { $char } (caractere { $position }): um nome ou um caminho é uma linha de texto imprimível
 toml-unknown-field-one = campo desconhecido { $field }; o campo aceito é { $known }
 
 ## io-errors

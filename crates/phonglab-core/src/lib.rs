@@ -26,7 +26,7 @@
 //! | 8 | teach: for the classroom; study: what accuracy costs | [`exercise`], [`quiz`], [`shader`]; [`cost`] |
 //! | 7 | raster: the CPU renderer | [`render`], [`shaded`] |
 //! | 6 | specialise: only the stages a scene needs | [`plan`], [`specialised`], [`effects`] (the plan in words) |
-//! | 5 | formats: text in and out, ready-made documents | [`document`], [`library`], [`glref`] |
+//! | 5 | formats: text in and out, ready-made documents | [`document`], [`library`], [`glref`], [`escape`] (user text for each language written) |
 //! | 4 | equation: the lighting equation and its worked calculation | [`lighting`], [`breakdown`], [`explain`], [`validate`] |
 //! | 3 | model: what is lit | [`scene`], [`rules`], [`materials`], [`camera`], [`transform`], [`view`], [`presets`], [`error`] |
 //! | 2 | mesh: the objects | [`mesh`] (`sphere`, `cylinder`, `teapot`, `obj`) |
@@ -47,7 +47,7 @@ pub mod teach;
 
 // Each module also at the crate's root, so paths name the module, not its group.
 pub use equation::{breakdown, explain, lighting, validate};
-pub use formats::{document, glref, library};
+pub use formats::{document, escape, glref, library};
 pub use model::{camera, error, materials, presets, rules, scene, transform, view};
 pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
 pub use raster::{render, shaded};

@@ -10,6 +10,7 @@ pub mod openframeworks;
 pub mod pyopengl;
 pub mod python;
 pub mod read_python;
+pub mod template;
 
 /// What `phonglab export --to` writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -50,7 +51,7 @@ pub fn files(doc: &Document, target: Target) -> Result<Vec<File>, String> {
     Ok(match target {
         Target::Notebook => vec![("vertex_color_calculator.ipynb".into(), notebook::notebook(doc))],
         Target::PyOpenGl => vec![("phong_scene.py".into(), pyopengl::program(doc)?)],
-        Target::OpenFrameworks => openframeworks::app(doc),
+        Target::OpenFrameworks => openframeworks::app(doc).map_err(|e| e.to_string())?,
         Target::Glsl => {
             let lang = crate::teach::shader::Lang::Glsl;
             let shading = match doc.view.shading {

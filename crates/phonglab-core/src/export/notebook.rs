@@ -14,6 +14,7 @@ use glam::DVec4;
 
 use super::python::{array4, colour, matrix, num, shininess, string};
 use crate::formats::document::Document;
+use crate::formats::escape;
 use crate::model::rules::{NormalTransform, RuleSet, SpecularGate, SpecularModel};
 use crate::model::scene::{Light, Material, NormalMode, Scene};
 use crate::t;
@@ -144,7 +145,7 @@ pub fn cells(doc: &Document) -> Vec<Cell> {
     let needs = Needs::of(scene);
     let n = needs.lights;
     let mut cells = vec![
-        Cell::Markdown(t!("nb-title", scene = doc.name.clone(), rules = scene.rules.to_string())),
+        Cell::Markdown(t!("nb-title", scene = escape::markdown::text(&doc.name), rules = scene.rules.to_string())),
         Cell::Markdown(t!("nb-vertex")),
         Cell::Code("import math as m\nimport numpy as np".into()),
         Cell::Code(format!(
@@ -588,9 +589,9 @@ pub fn script(cells: &[Cell]) -> String {
         match cell {
             Cell::Markdown(text) => {
                 out.push('\n');
-                for line in text.lines() {
+                for line in text.strip_suffix('\n').unwrap_or(text).split('\n') {
                     out.push_str(if line.is_empty() { "#" } else { "# " });
-                    out.push_str(line);
+                    out.push_str(&escape::python::comment(line));
                     out.push('\n');
                 }
             }

@@ -23,6 +23,8 @@ use crate::formats::document::Document;
 use crate::model::rules::{RuleSet, SpecularModel};
 use crate::model::scene::{LightPlacement, Material, NormalMode, Scene};
 use crate::model::view::ObjectKind;
+use super::template::{Fill, Language, Template, TemplateError};
+use crate::formats::escape::cpp::comment;
 use crate::t;
 
 /// A C++ float literal: the value as a float holds it, in its shortest form.
@@ -46,24 +48,26 @@ fn vec3(v: DVec3) -> String {
 }
 
 /// The three files, named as an oF project's `src/` holds them.
-pub fn app(doc: &Document) -> Vec<super::File> {
-    vec![("ofApp.h".into(), header(doc)), ("ofApp.cpp".into(), source(doc)), ("main.cpp".into(), main_cpp())]
+pub fn app(doc: &Document) -> Result<Vec<super::File>, TemplateError> {
+    Ok(vec![
+        ("ofApp.h".into(), header(doc)?),
+        ("ofApp.cpp".into(), source(doc)?),
+        ("main.cpp".into(), MAIN.fill(&[("renderer_comment", Fill::Text(t!("of-main-comment")))])?),
+    ])
 }
 
-fn header(doc: &Document) -> String {
+/// The app's files, whole, with their holes (see [`super::template`]).
+const HEADER: Template = Template { name: "ofApp.h", language: Language::Cpp, text: include_str!("templates/ofApp.h") };
+const SOURCE: Template =
+    Template { name: "ofApp.cpp", language: Language::Cpp, text: include_str!("templates/ofApp.cpp") };
+const MAIN: Template = Template { name: "main.cpp", language: Language::Cpp, text: include_str!("templates/main.cpp") };
+
+fn header(doc: &Document) -> Result<String, TemplateError> {
     let lights = oflights(&doc.shaded_scene());
-    format!(
-        "// {}\n#pragma once\n\n#include \"ofMain.h\"\n\nclass ofApp : public ofBaseApp {{\npublic:\n    void setup() override;\n    void draw() override;\n\nprivate:\n    ofCamera cam;\n    ofMaterial material;\n{}}};\n",
-        t!("of-header-comment", scene = doc.name.clone()),
-        (0..lights.len()).map(|i| format!("    ofLight light{i};\n")).collect::<String>()
-    )
-}
-
-fn main_cpp() -> String {
-    format!(
-        "// {}\n#include \"ofMain.h\"\n#include \"ofApp.h\"\n\nint main() {{\n    ofSetupOpenGL(512, 512, OF_WINDOW);\n    ofRunApp(new ofApp());\n}}\n",
-        t!("of-main-comment")
-    )
+    HEADER.fill(&[
+        ("title", Fill::Text(t!("of-header-comment", scene = doc.name.clone()))),
+        ("lights", Fill::Code((0..lights.len()).map(|i| format!("    ofLight light{i};\n")).collect())),
+    ])
 }
 
 /// The scene's lights that oF places (every light but those fixed to the eye), with
@@ -84,17 +88,16 @@ fn up_for(dir: DVec3) -> DVec3 {
     if dir.normalize_or_zero().cross(DVec3::Y).length() < 1e-3 { DVec3::X } else { DVec3::Y }
 }
 
-fn source(doc: &Document) -> String {
+fn source(doc: &Document) -> Result<String, TemplateError> {
     let scene = doc.shaded_scene();
-    let mut s = format!("// {}\n#include \"ofApp.h\"\n\nvoid ofApp::setup() {{\n", t!("of-source-comment"));
-    s.push_str(&camera_calls(&scene));
-    s.push_str(&light_calls(&scene));
-    s.push_str(&format!("    // {}\n", t!("of-material-comment")));
-    s.push_str(&material_calls("material", &scene.material, scene.rules.emission()));
-    s.push_str("}\n\nvoid ofApp::draw() {\n");
-    s.push_str(&draw_body(doc, &scene));
-    s.push_str("}\n");
-    s
+    SOURCE.fill(&[
+        ("source_comment", Fill::Text(t!("of-source-comment"))),
+        ("camera", Fill::Code(camera_calls(&scene))),
+        ("lights", Fill::Code(light_calls(&scene))),
+        ("material_comment", Fill::Text(t!("of-material-comment"))),
+        ("material", Fill::Code(material_calls("material", &scene.material, scene.rules.emission()))),
+        ("draw", Fill::Code(draw_body(doc, &scene))),
+    ])
 }
 
 /// The camera: phonglab's view (gluPerspective(40, 1, 0.1, 100) and the orbit camera's
@@ -103,7 +106,7 @@ fn camera_calls(scene: &Scene) -> String {
     let mut s = String::new();
     let world_from_eye = scene.eye_from_world.inverse();
     let (_, rotation, position) = world_from_eye.to_scale_rotation_translation();
-    s.push_str(&format!("    // {}\n", t!("of-camera-comment")));
+    s.push_str(&format!("    // {}\n", comment(&t!("of-camera-comment"))));
     s.push_str(
         "    cam.setFov(40);\n    cam.setNearClip(0.1f);\n    cam.setFarClip(100);\n    cam.setAspectRatio(1);\n",
     );
@@ -125,7 +128,7 @@ fn light_calls(scene: &Scene) -> String {
         let l = &scene.lights[i];
         let (pos, spot_dir) = in_world(scene, i);
         let name = format!("light{k}");
-        s.push_str(&format!("    // {}\n", t!("of-light-comment", index = i)));
+        s.push_str(&format!("    // {}\n", comment(&t!("of-light-comment", index = i))));
         if pos.w == 0.0 {
             let dir = pos.truncate();
             s.push_str(&format!("    {name}.setDirectional();\n"));
@@ -134,7 +137,7 @@ fn light_calls(scene: &Scene) -> String {
                 "    {name}.lookAt({}, {});  // {}\n",
                 vec3(dir),
                 vec3(up_for(dir)),
-                t!("of-directional-comment")
+                comment(&t!("of-directional-comment"))
             ));
         } else {
             let p = pos.truncate() / pos.w;
@@ -149,7 +152,7 @@ fn light_calls(scene: &Scene) -> String {
                     "    {name}.lookAt({}, {});  // {}\n",
                     vec3(p + spot_dir),
                     vec3(up_for(spot_dir)),
-                    t!("of-spot-comment")
+                    comment(&t!("of-spot-comment"))
                 ));
             }
         }
@@ -181,7 +184,7 @@ fn draw_body(doc: &Document, scene: &Scene) -> String {
     s.push_str(&eye_lights(scene));
     s.push_str("    material.begin();\n");
     if let Some(back) = &scene.back_material {
-        s.push_str(&format!("    // {}\n", t!("of-back-material-comment")));
+        s.push_str(&format!("    // {}\n", comment(&t!("of-back-material-comment"))));
         s.push_str(&raw_material("GL_BACK", back, scene.rules.emission()));
     }
     s.push_str(&object(doc));
@@ -235,41 +238,41 @@ fn lighting_model(scene: &Scene) -> String {
     if scene.rules.scene_ambient() {
         s.push_str(&format!("    ofSetGlobalAmbientColor({});\n", colour(lm.ambient)));
     } else {
-        s.push_str(&format!("    // {}\n", t!("of-no-scene-ambient")));
+        s.push_str(&format!("    // {}\n", comment(&t!("of-no-scene-ambient"))));
         s.push_str("    ofSetGlobalAmbientColor(ofFloatColor(0, 0, 0, 1));\n");
     }
     if scene.rules.set != RuleSet::OpenGl {
-        s.push_str(&format!("    // {}\n", t!("of-rules-comment", rules = scene.rules.to_string())));
+        s.push_str(&format!("    // {}\n", comment(&t!("of-rules-comment", rules = scene.rules.to_string()))));
     }
     if scene.rules.specular == SpecularModel::Phong {
-        s.push_str(&format!("    // {}\n", t!("of-phong-specular-comment")));
+        s.push_str(&format!("    // {}\n", comment(&t!("of-phong-specular-comment"))));
     }
     if lm.local_viewer {
         s.push_str(&format!(
             "    // {}\n    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_TRUE);\n",
-            t!("of-local-viewer-comment")
+            comment(&t!("of-local-viewer-comment"))
         ));
     }
     if lm.two_sided {
         s.push_str(&format!(
             "    // {}\n    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);\n",
-            t!("of-two-sided-comment")
+            comment(&t!("of-two-sided-comment"))
         ));
     }
     if lm.separate_specular {
         s.push_str(&format!(
             "    // {}\n    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);\n",
-            t!("of-separate-specular-comment")
+            comment(&t!("of-separate-specular-comment"))
         ));
     }
     match scene.normal_mode {
         NormalMode::Normalize => {}
         NormalMode::AsIs => {
-            s.push_str(&format!("    // {}\n    glDisable(GL_NORMALIZE);\n", t!("of-normal-as-is-comment")))
+            s.push_str(&format!("    // {}\n    glDisable(GL_NORMALIZE);\n", comment(&t!("of-normal-as-is-comment"))))
         }
         NormalMode::Rescale => s.push_str(&format!(
             "    // {}\n    glDisable(GL_NORMALIZE);\n    glEnable(GL_RESCALE_NORMAL);\n",
-            t!("of-normal-rescale-comment")
+            comment(&t!("of-normal-rescale-comment"))
         )),
     }
     s
@@ -282,7 +285,7 @@ fn eye_lights(scene: &Scene) -> String {
     let mut s = String::new();
     for (k, l) in scene.lights.iter().filter(|l| l.placement == LightPlacement::Eye).enumerate() {
         let gl = format!("GL_LIGHT{}", placed + k);
-        s.push_str(&format!("    // {}\n    {{\n", t!("of-eye-light-comment")));
+        s.push_str(&format!("    // {}\n    {{\n", comment(&t!("of-eye-light-comment"))));
         s.push_str("        glMatrixMode(GL_MODELVIEW);\n        glPushMatrix();\n        glLoadIdentity();\n");
         s.push_str(&format!(
             "        const GLfloat position[4] = {};\n        glLightfv({gl}, GL_POSITION, position);\n",
@@ -329,7 +332,7 @@ fn object(doc: &Document) -> String {
         s.push_str(&format!(
             "    ofPushMatrix();\n    ofMultMatrix(glm::mat4({}));  // {}\n",
             c.iter().map(|x| f(*x)).collect::<Vec<_>>().join(", "),
-            t!("of-spin-comment")
+            comment(&t!("of-spin-comment"))
         ));
     }
     match view.object {
@@ -339,14 +342,14 @@ fn object(doc: &Document) -> String {
         )),
         ObjectKind::Cylinder => s.push_str(&format!(
             "    // {}\n    ofSetCylinderResolution({}, {}, {});\n    ofPushMatrix();\n    ofRotateXDeg(90);\n    ofDrawCylinder(0.3f, 0.5f);\n    ofPopMatrix();\n",
-            t!("of-cylinder-comment"),
+            comment(&t!("of-cylinder-comment")),
             view.cylinder_slices,
             view.cylinder_stacks,
             if view.cylinder_caps { 2 } else { 0 }
         )),
         ObjectKind::Teapot | ObjectKind::Obj => s.push_str(&format!(
             "    // {}\n    ofSetSphereResolution({});\n    ofDrawSphere(0.5f);\n",
-            t!("of-no-teapot-comment"),
+            comment(&t!("of-no-teapot-comment")),
             view.sphere_slices.max(view.sphere_stacks)
         )),
     }

@@ -49,19 +49,9 @@ pub fn shininess(s: f64) -> String {
     if f * 128.0 == s && s != 0.0 && short.len() <= 8 && s != s.trunc() { format!("{short}*128") } else { num(s) }
 }
 
-/// A Python string literal (double quotes, backslashes and quotes escaped).
+/// A Python string literal whose value is `s`, on one line ([`crate::formats::escape::python::string`]).
 pub fn string(s: &str) -> String {
-    let mut out = String::from("\"");
-    for c in s.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            '\n' => out.push_str("\\n"),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
+    crate::formats::escape::python::string(s)
 }
 
 #[cfg(test)]

@@ -164,8 +164,33 @@ impl Document {
 
     /// Writes the document as a scene file (every value explicit, so loading it gives back
     /// exactly this document).
+    ///
+    /// The name is written by [`crate::formats::escape::toml::string`], on one line whatever
+    /// it holds; a mesh path with a control character is refused (it could not be read back).
     pub fn to_toml(&self) -> Result<String, DocumentError> {
-        toml::to_string(&FileV1::from_document(self)).map_err(|e| DocumentError::Write(e.to_string()))
+        if let Some(obj) = &self.view.obj {
+            printable_line("view.obj", obj).map_err(|e| DocumentError::Write(e.to_string()))?;
+        }
+        let mut file = FileV1::from_document(self);
+        file.name = String::new();
+        let text = toml::to_string(&file).map_err(|e| DocumentError::Write(e.to_string()))?;
+        // The name is the file's first key: written here instead of by the toml crate.
+        let rest = text.strip_prefix("name = \"\"\n").unwrap_or(&text);
+        Ok(format!("name = {}\n{rest}", crate::formats::escape::toml::string(&self.name)))
+    }
+}
+
+/// Refuses a name or a path (`field`) that holds a control character (a line break, ESC,
+/// a bidirectional control: [`crate::formats::escape::is_control`]), naming the character.
+fn printable_line(field: &str, text: &str) -> Result<(), DocumentError> {
+    match text.chars().enumerate().find(|(_, c)| crate::formats::escape::is_control(*c)) {
+        None => Ok(()),
+        Some((k, c)) => Err(syntax(crate::t!(
+            "toml-control-character",
+            field = field,
+            char = format!("U+{:04X}", c as u32),
+            position = k + 1
+        ))),
     }
 }
 
@@ -514,6 +539,10 @@ impl MaterialFile {
 
 impl FileV1 {
     fn into_document(self) -> Result<Document, DocumentError> {
+        printable_line("name", &self.name)?;
+        if let Some(obj) = &self.view.obj {
+            printable_line("view.obj", obj)?;
+        }
         let camera = self.camera.spec()?;
         let eye_from_world = camera.matrix()?;
         let mut lights = Vec::with_capacity(self.lights.len());

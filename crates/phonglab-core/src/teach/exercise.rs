@@ -428,7 +428,7 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
     use std::fmt::Write as _;
     let s = &ex.doc.scene;
     let mut o = String::new();
-    let _ = writeln!(o, "# {}\n", ex.doc.name);
+    let _ = writeln!(o, "# {}\n", crate::formats::escape::markdown::text(&ex.doc.name));
     let _ = writeln!(o, "{}\n", crate::t!("sheet-compute", rules = rules_in_words(s.rules.set)));
     let _ = writeln!(o, "{}\n", crate::t!("sheet-colours"));
     let _ = writeln!(o, "## {}\n", crate::t!("sheet-vertex"));

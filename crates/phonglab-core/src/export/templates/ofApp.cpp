@@ -1,0 +1,9 @@
+// {{source_comment:comment}}
+#include "ofApp.h"
+
+void ofApp::setup() {
+{{camera}}{{lights}}    // {{material_comment:comment}}
+{{material}}}
+
+void ofApp::draw() {
+{{draw}}}

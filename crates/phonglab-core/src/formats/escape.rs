@@ -1,0 +1,319 @@
+//! User text as data: one escaping rule per target language that phonglab writes.
+//!
+//! A scene's name, a file name, a comment: text that a person typed, or that arrived in a
+//! downloaded notebook's file name or a shared link, reaches code that students run (a
+//! PyOpenGL program, an openFrameworks app, a notebook), documents they open (Markdown,
+//! PDF) and their terminal. Every generator passes such text through the helper for the
+//! place it lands in, and never formats it into code as it is.
+//!
+//! | target | helper | what it guarantees |
+//! |---|---|---|
+//! | Python string literal | [`python::string`] | a `"..."` literal whose value is the text, on one line |
+//! | Python triple-quoted string | [`python::triple_quoted`] | the body of a `"""` string that cannot close it; the value is the text |
+//! | Python comment | [`python::comment`] | one line after `#` |
+//! | C++ string literal | [`cpp::string`] | a `"..."` literal whose value is the text (UTF-8) |
+//! | C++ `//` comment | [`cpp::comment`] | one line that no backslash or trigraph splices onto the next |
+//! | GLSL and WGSL `//` comment | [`glsl::comment`] | as C++'s |
+//! | Markdown (and a notebook's Markdown cells) | [`markdown::text`] | inline text: no emphasis, link, HTML, heading, maths or new block |
+//! | TOML string | [`toml::string`] | a basic string (the `toml` crate writes it) |
+//! | PDF text | [`pdf::text`] | only characters a font draws |
+//! | the terminal | [`terminal::text`] | no escape sequence, no line break |
+//!
+//! The notebook's JSON is written by `serde_json`, which escapes every string itself.
+//!
+//! What is escaped everywhere ([`is_control`]): the C0 controls (NUL, ESC, CR, LF, tab ...),
+//! DEL, the C1 controls (U+0080-U+009F: NEL, CSI ...), the line and paragraph separators
+//! U+2028 and U+2029, the bidirectional controls (U+061C, U+200E, U+200F, U+202A-U+202E,
+//! U+2066-U+2069: "Trojan Source") and the byte-order mark U+FEFF. In a literal each
+//! becomes the language's own escape, so the value is unchanged; in a comment, a document
+//! or the terminal each becomes the visible `\u{1B}`.
+
+/// Is `c` a character that must never reach a file or a terminal as it is: a control
+/// character, a line or paragraph separator, a bidirectional control, the byte-order mark.
+pub fn is_control(c: char) -> bool {
+    matches!(c,
+        '\u{0}'..='\u{1F}' | '\u{7F}'..='\u{9F}'
+        | '\u{2028}' | '\u{2029}'
+        | '\u{61C}' | '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}'
+        | '\u{FEFF}')
+}
+
+/// Text from outside made a name that a scene file keeps (a notebook's file name becomes
+/// the scene's name): each control character written visibly, `\u{1B}`, so the name is one
+/// line of printable text, as a scene file requires.
+pub fn printable(text: &str) -> String {
+    visible_controls(text, |_| false)
+}
+
+/// `c` as the visible escape `\u{1B}` (upper-case hexadecimal).
+fn visible(c: char) -> String {
+    format!("\\u{{{:X}}}", c as u32)
+}
+
+/// `text` with every control character written visibly (`\u{1B}`), and each character for
+/// which `also` is true too.
+fn visible_controls(text: &str, also: impl Fn(char) -> bool) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if is_control(c) || also(c) {
+            out.push_str(&visible(c));
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// Python 3 source.
+pub mod python {
+    use super::is_control;
+
+    /// One character inside a Python string literal: the language's escapes for the quote,
+    /// the backslash and the control characters (`\n`, `\x1b`, `\u2028`), itself otherwise.
+    fn push_escaped(out: &mut String, c: char, keep_newlines: bool) {
+        match c {
+            '\\' => out.push_str("\\\\"),
+            '"' => out.push_str("\\\""),
+            '\n' if keep_newlines => out.push('\n'),
+            '\n' => out.push_str("\\n"),
+            '\r' => out.push_str("\\r"),
+            '\t' => out.push_str("\\t"),
+            c if is_control(c) && (c as u32) < 0x100 => out.push_str(&format!("\\x{:02x}", c as u32)),
+            c if is_control(c) => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push(c),
+        }
+    }
+
+    /// A double-quoted Python string literal whose value is `text`, on one line.
+    pub fn string(text: &str) -> String {
+        let mut out = String::from("\"");
+        for c in text.chars() {
+            push_escaped(&mut out, c, false);
+        }
+        out.push('"');
+        out
+    }
+
+    /// The body of a `"""` string (a docstring, a shader's source) whose value is `text`:
+    /// every quote and backslash escaped, so nothing in it closes the string; line breaks
+    /// kept as they are when `keep_newlines` (a shader's lines), escaped otherwise (a
+    /// title).
+    pub fn triple_quoted(text: &str, keep_newlines: bool) -> String {
+        let mut out = String::with_capacity(text.len());
+        for c in text.chars() {
+            push_escaped(&mut out, c, keep_newlines);
+        }
+        out
+    }
+
+    /// Text for one line after `# `: control characters written `\u{1B}` (a comment ends at
+    /// a line break; Python has no continuation inside a comment).
+    pub fn comment(text: &str) -> String {
+        super::visible_controls(text, |_| false)
+    }
+}
+
+/// C++ source (the openFrameworks app).
+pub mod cpp {
+    use super::is_control;
+
+    /// A double-quoted C++ string literal whose value is `text` in UTF-8: the quote and the
+    /// backslash escaped, controls as three-digit octal (`\033`: a hexadecimal escape would
+    /// swallow the digits after it) or as `\u2028`, and `??` as `?\?` (no trigraph).
+    pub fn string(text: &str) -> String {
+        let mut out = String::from("\"");
+        let mut after_question = false;
+        for c in text.chars() {
+            match c {
+                '\\' => out.push_str("\\\\"),
+                '"' => out.push_str("\\\""),
+                '\n' => out.push_str("\\n"),
+                '\r' => out.push_str("\\r"),
+                '\t' => out.push_str("\\t"),
+                '?' if after_question => out.push_str("\\?"),
+                c if is_control(c) && (c as u32) < 0x80 => out.push_str(&format!("\\{:03o}", c as u32)),
+                c if is_control(c) => out.push_str(&format!("\\u{:04x}", c as u32)),
+                c => out.push(c),
+            }
+            after_question = c == '?';
+        }
+        out.push('"');
+        out
+    }
+
+    /// Text for one line after `// `: control characters, every backslash (a backslash at
+    /// the end of a line splices the next line into the comment) and the second `?` of a
+    /// `??` (a trigraph `??/` is a backslash before C++17) written visibly, `\u{5C}`.
+    pub fn comment(text: &str) -> String {
+        let mut out = String::with_capacity(text.len());
+        let mut after_question = false;
+        for c in text.chars() {
+            if is_control(c) || c == '\\' || (c == '?' && after_question) {
+                out.push_str(&super::visible(c));
+            } else {
+                out.push(c);
+            }
+            after_question = c == '?' && !after_question;
+        }
+        out
+    }
+}
+
+/// GLSL and WGSL source.
+pub mod glsl {
+    /// Text for one line after `// `: as [`super::cpp::comment`] (GLSL 4.20 splices lines at
+    /// a backslash; WGSL ends a comment at any of its line breaks, all of them controls).
+    pub fn comment(text: &str) -> String {
+        super::cpp::comment(text)
+    }
+}
+
+/// Markdown (CommonMark with GitHub's tables and strikethrough, as Jupyter renders it).
+pub mod markdown {
+    /// The characters that start or end something inline anywhere: code, emphasis, links
+    /// and images, HTML and autolinks, entities, maths (`$`, Jupyter's MathJax), a
+    /// strikethrough, a table cell, a heading's closing `#`.
+    const INLINE: &[char] = &['\\', '`', '*', '_', '[', ']', '<', '>', '&', '$', '~', '|', '#', '!'];
+
+    /// Inline text: each character of [`INLINE`] backslash-escaped (CommonMark makes
+    /// every such escape its literal character), and at the start a list, quote or
+    /// heading marker too (`-`, `+`, `=`, `1.`); control characters written `\u{1B}`, so
+    /// it stays on its line and starts no new block. Other text (`:`, `.`, accents) is
+    /// left as it is, so the Markdown source stays readable.
+    pub fn text(text: &str) -> String {
+        let mut out = String::with_capacity(text.len());
+        let digits = text.chars().take_while(char::is_ascii_digit).count();
+        for (k, c) in text.chars().enumerate() {
+            let starts_block = (k == 0 && matches!(c, '-' | '+' | '='))
+                || (k == digits && k > 0 && matches!(c, '.' | ')'));
+            if super::is_control(c) {
+                out.push_str(&super::visible(c));
+                continue;
+            }
+            if INLINE.contains(&c) || starts_block {
+                out.push('\\');
+            }
+            out.push(c);
+        }
+        out
+    }
+}
+
+/// TOML.
+pub mod toml {
+    /// A TOML basic string whose value is `text`, on one line: the quote and the backslash
+    /// escaped, and every control character as TOML's `\n`, `\t`... or `\u2028` (the
+    /// `toml` crate would write a line break raw in a multi-line string, and the C1 and
+    /// bidirectional controls raw).
+    pub fn string(text: &str) -> String {
+        let mut out = String::from("\"");
+        for c in text.chars() {
+            match c {
+                '"' => out.push_str("\\\""),
+                '\\' => out.push_str("\\\\"),
+                '\n' => out.push_str("\\n"),
+                '\r' => out.push_str("\\r"),
+                '\t' => out.push_str("\\t"),
+                c if super::is_control(c) => out.push_str(&format!("\\u{:04X}", c as u32)),
+                c => out.push(c),
+            }
+        }
+        out.push('"');
+        out
+    }
+}
+
+/// Text drawn into a PDF.
+pub mod pdf {
+    /// Control characters written `\u{1B}`: a font has no glyph for them, and a line break
+    /// would leave the block's measured box.
+    pub fn text(text: &str) -> String {
+        super::visible_controls(text, |_| false)
+    }
+}
+
+/// The terminal (`phonglab explain`, every message on the standard error).
+pub mod terminal {
+    /// User text on one line: control characters written `\u{1B}`, so no escape sequence
+    /// (ESC, or the C1 CSI U+009B) reaches the terminal and no line break splits a line.
+    pub fn text(text: &str) -> String {
+        super::visible_controls(text, |_| false)
+    }
+
+    /// A whole message, whose line breaks and tabs are its own: every other control
+    /// character written `\u{1B}`. For messages that may quote a file's contents or name.
+    pub fn lines(text: &str) -> String {
+        let mut out = String::with_capacity(text.len());
+        for c in text.chars() {
+            if super::is_control(c) && c != '\n' && c != '\t' {
+                out.push_str(&super::visible(c));
+            } else {
+                out.push(c);
+            }
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const HOSTILE: &str = "a\"\"\"b'''c*/d\re\nf\u{2028}g\u{0}h\u{1b}[31mi\\j??/k\u{9b}l\u{202e}m\t";
+
+    #[test]
+    fn every_helper_leaves_no_control_character() {
+        let outputs = [
+            python::string(HOSTILE),
+            python::triple_quoted(HOSTILE, false),
+            python::comment(HOSTILE),
+            cpp::string(HOSTILE),
+            cpp::comment(HOSTILE),
+            glsl::comment(HOSTILE),
+            markdown::text(HOSTILE),
+            toml::string(HOSTILE),
+            pdf::text(HOSTILE),
+            terminal::text(HOSTILE),
+        ];
+        for out in outputs {
+            assert!(!out.chars().any(is_control), "{out:?}");
+        }
+        assert_eq!(terminal::lines("one\ntwo\u{1b}"), "one\ntwo\\u{1B}");
+    }
+
+    #[test]
+    fn literals_are_the_languages_own_escapes() {
+        assert_eq!(python::string("x"), "\"x\"");
+        assert_eq!(python::string("\"\"\"\\\n\r\u{0}\u{1b}\u{85}\u{2028}"), r#""\"\"\"\\\n\r\x00\x1b\x85\u2028""#);
+        assert_eq!(python::triple_quoted("a\"\nb", true), "a\\\"\nb");
+        assert_eq!(cpp::string("é\"\\\n\u{1b}1??/"), "\"é\\\"\\\\\\n\\0331?\\?/\"");
+        assert_eq!(cpp::string("\u{2028}"), "\"\\u2028\"");
+    }
+
+    #[test]
+    fn comments_cannot_continue_onto_the_next_line() {
+        assert_eq!(cpp::comment("ends with \\"), "ends with \\u{5C}");
+        assert_eq!(cpp::comment("??/"), "?\\u{3F}/");
+        assert_eq!(cpp::comment("???"), "?\\u{3F}?");
+        assert_eq!(cpp::comment("a\r\nb"), "a\\u{D}\\u{A}b");
+        assert_eq!(python::comment("a\rb"), "a\\u{D}b");
+        assert_eq!(cpp::comment("Cena à luz"), "Cena à luz");
+    }
+
+    #[test]
+    fn markdown_text_starts_nothing() {
+        assert_eq!(markdown::text("**b** <script> $x$ # [l](u)"), r"\*\*b\*\* \<script\> \$x\$ \# \[l\](u)");
+        assert_eq!(markdown::text("à\n# h"), "à\\u{A}\\# h");
+        assert_eq!(markdown::text("- 12. x"), r"\- 12. x");
+        assert_eq!(markdown::text("12. x"), r"12\. x");
+        assert_eq!(markdown::text("Exercise 1: a light (level 2)"), "Exercise 1: a light (level 2)");
+    }
+
+    #[test]
+    fn toml_strings_read_back() {
+        for s in [HOSTILE, "plain", "é \u{7f}"] {
+            let doc: ::toml::Table = ::toml::from_str(&format!("k = {}", toml::string(s))).unwrap();
+            assert_eq!(doc["k"].as_str(), Some(s));
+        }
+    }
+}
