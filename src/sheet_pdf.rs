@@ -102,7 +102,9 @@ impl Fonts {
     fn width(&self, s: &str, size: f32, mono: bool) -> f32 {
         let face = if mono { &self.mono_face } else { &self.text_face };
         let units: f32 = phonglab_core::escape::pdf::text(s)
-            .chars().map(|c| face.glyph_index(c).and_then(|g| face.glyph_hor_advance(g)).unwrap_or(0) as f32).sum();
+            .chars()
+            .map(|c| face.glyph_index(c).and_then(|g| face.glyph_hor_advance(g)).unwrap_or(0) as f32)
+            .sum();
         units * size / f32::from(face.units_per_em())
     }
 

@@ -19,12 +19,12 @@
 
 use glam::{DMat4, DVec3, DVec4};
 
+use super::template::{Fill, Language, Template, TemplateError};
 use crate::formats::document::Document;
+use crate::formats::escape::cpp::comment;
 use crate::model::rules::{RuleSet, SpecularModel};
 use crate::model::scene::{LightPlacement, Material, NormalMode, Scene};
 use crate::model::view::ObjectKind;
-use super::template::{Fill, Language, Template, TemplateError};
-use crate::formats::escape::cpp::comment;
 use crate::t;
 
 /// A C++ float literal: the value as a float holds it, in its shortest form.

@@ -19,8 +19,8 @@ use glam::DMat4;
 
 use super::python::{num, string};
 use super::template::{Fill, Language, Template};
-use crate::formats::escape::python::{comment, triple_quoted};
 use crate::formats::document::Document;
+use crate::formats::escape::python::{comment, triple_quoted};
 use crate::model::rules::RuleSet;
 use crate::model::scene::{Light, LightPlacement, Scene};
 use crate::model::view::{Framing, LightingSpace, ObjectKind, Shading, View};
@@ -145,8 +145,10 @@ fn rgba(c: glam::DVec4) -> String {
 
 /// The fixed-function calls that set the scene's lighting state.
 fn lighting_state(scene: &Scene) -> String {
-    let mut s =
-        format!("def set_lighting_state():\n    \"\"\"{}\"\"\"\n    glMatrixMode(GL_MODELVIEW)\n", triple_quoted(&t!("py-state-doc"), false));
+    let mut s = format!(
+        "def set_lighting_state():\n    \"\"\"{}\"\"\"\n    glMatrixMode(GL_MODELVIEW)\n",
+        triple_quoted(&t!("py-state-doc"), false)
+    );
     for (i, l) in scene.lights.iter().enumerate() {
         let light = format!("GL_LIGHT{i}");
         let (matrix, placement) = light_modelview(scene, l);

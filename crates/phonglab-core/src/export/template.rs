@@ -141,8 +141,11 @@ fn fill_len(f: &Fill) -> usize {
 mod tests {
     use super::*;
 
-    const T: Template =
-        Template { name: "test.py", language: Language::Python, text: "\"\"\"{{title:doc}}\"\"\"\nx = {{x}}\n# {{c:comment}}\n" };
+    const T: Template = Template {
+        name: "test.py",
+        language: Language::Python,
+        text: "\"\"\"{{title:doc}}\"\"\"\nx = {{x}}\n# {{c:comment}}\n",
+    };
 
     #[test]
     fn text_is_escaped_for_its_hole_and_code_is_not() {

@@ -184,8 +184,8 @@ pub mod markdown {
         let mut out = String::with_capacity(text.len());
         let digits = text.chars().take_while(char::is_ascii_digit).count();
         for (k, c) in text.chars().enumerate() {
-            let starts_block = (k == 0 && matches!(c, '-' | '+' | '='))
-                || (k == digits && k > 0 && matches!(c, '.' | ')'));
+            let starts_block =
+                (k == 0 && matches!(c, '-' | '+' | '=')) || (k == digits && k > 0 && matches!(c, '.' | ')'));
             if super::is_control(c) {
                 out.push_str(&super::visible(c));
                 continue;
