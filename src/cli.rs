@@ -529,6 +529,18 @@ fn case(a: &CaseArgs) -> Result<()> {
 }
 
 fn cost(a: &CostArgs) -> Result<()> {
+    if let Some(scene) = &a.scene {
+        // The report replaces every file of an earlier report in the folder.
+        let mut names: Vec<String> = ["cost.csv", "cost.md", "cost.png"].map(String::from).to_vec();
+        let earlier = std::fs::read_dir(&a.out).into_iter().flatten().flatten();
+        names.extend(
+            earlier
+                .map(|e| e.file_name().to_string_lossy().into_owned())
+                .filter(|n| crate::cost_cmd::belongs_to_a_report(n)),
+        );
+        let names: Vec<&str> = names.iter().map(String::as_str).collect();
+        crate::same_file::refuse_outputs_in_folder(&a.out, &names, &[scene]).map_err(anyhow::Error::msg)?;
+    }
     let doc = match &a.scene {
         Some(p) => load_scene_file(p)?,
         None => phonglab_core::Document::default(),
@@ -555,6 +567,8 @@ fn render(a: &RenderArgs) -> Result<()> {
         ShadingArg::Flat => Shading::Flat,
     });
     let size = a.size as usize;
+    let inputs: Vec<&Path> = a.scene.iter().chain(&a.obj).map(PathBuf::as_path).collect();
+    crate::same_file::refuse_output_onto_input(&[&a.output], &inputs).map_err(anyhow::Error::msg)?;
     crate::atomic_write::check_file_destination(&a.output)?;
     let mut notes = Vec::new();
     let bench_scene;
@@ -605,6 +619,9 @@ fn render(a: &RenderArgs) -> Result<()> {
         }
         doc.validate().context(t!("err-scene-to-render"))?;
         if doc.view.object == ObjectKind::Obj {
+            // The scene's own mesh is an input too.
+            let mesh = doc.view.obj.as_deref().map(Path::new);
+            crate::same_file::refuse_output_onto_input(&[&a.output], mesh.as_slice()).map_err(anyhow::Error::msg)?;
             notes = doc.view.obj_mesh()?.notes.clone();
         }
         doc_mesh = doc.view.mesh();

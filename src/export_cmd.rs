@@ -52,11 +52,17 @@ pub struct ExportArgs {
 
 /// Runs `phonglab export`.
 pub fn export(a: &ExportArgs) -> Result<()> {
+    let target = Target::from(a.to);
+    if let (Some(scene), Some(output)) = (&a.scene, &a.output) {
+        refuse_onto(target, output, scene)?;
+    }
     let doc = match &a.scene {
         Some(p) => crate::cli::load_scene_file(p)?,
         None => phonglab_core::Document::default(),
     };
-    let target = Target::from(a.to);
+    if let (Some(mesh), Some(output)) = (&doc.view.obj, &a.output) {
+        refuse_onto(target, output, std::path::Path::new(mesh))?;
+    }
     let written = files(&doc, target).map_err(anyhow::Error::msg)?;
     match (&a.output, target) {
         (None, Target::OpenFrameworks) => bail!(t!("err-export-folder")),
@@ -86,6 +92,17 @@ pub fn export(a: &ExportArgs) -> Result<()> {
     Ok(())
 }
 
+/// Refuses an export whose output (a file, or for openFrameworks the files of its `src/`)
+/// is the file `input`.
+fn refuse_onto(target: Target, output: &std::path::Path, input: &std::path::Path) -> Result<()> {
+    let refused = if target == Target::OpenFrameworks {
+        crate::same_file::refuse_outputs_in_folder(&output.join("src"), &["ofApp.h", "ofApp.cpp", "main.cpp"], &[input])
+    } else {
+        crate::same_file::refuse_output_onto_input(&[output], &[input])
+    };
+    refused.map_err(anyhow::Error::msg)
+}
+
 /// `phonglab import`.
 #[derive(Args, Debug)]
 pub struct ImportArgs {
@@ -108,6 +125,7 @@ pub fn read_student_code(path: &std::path::Path) -> Result<phonglab_core::export
 
 /// Runs `phonglab import`.
 pub fn import(a: &ImportArgs) -> Result<()> {
+    crate::same_file::refuse_output_onto_input(&[&a.output], &[&a.file]).map_err(anyhow::Error::msg)?;
     let imported = read_student_code(&a.file)?;
     for notice in &imported.notices {
         eprintln!("{}", phonglab_core::escape::terminal::lines(&format!("{}: {notice}", a.file.display())));

@@ -14,6 +14,7 @@ pub mod image_io;
 pub mod input_file;
 pub mod io_text;
 pub mod platform;
+pub mod same_file;
 pub mod scenes;
 pub mod screenshot_cmd;
 pub mod sheet_pdf;

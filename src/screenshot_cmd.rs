@@ -118,11 +118,15 @@ pub fn run(a: &ScreenshotArgs) -> Result<()> {
     if !(0.5..=4.0).contains(&a.scale) {
         bail!(phonglab_core::t!("err-scale", scale = phonglab_core::locale::decimal(&a.scale.to_string())));
     }
+    let scene: Vec<&std::path::Path> = a.scene.iter().map(PathBuf::as_path).collect();
+    crate::same_file::refuse_output_onto_input(&[&a.output], &scene).map_err(anyhow::Error::msg)?;
     crate::atomic_write::check_file_destination(&a.output)?;
     let doc = match &a.scene {
         Some(p) => crate::cli::load_scene_file(p)?,
         None => phonglab_core::Document::default(),
     };
+    let mesh: Vec<&std::path::Path> = doc.view.obj.iter().map(std::path::Path::new).collect();
+    crate::same_file::refuse_output_onto_input(&[&a.output], &mesh).map_err(anyhow::Error::msg)?;
     let state = state_for(doc, a.present, a.light, a.open);
     let (w, h) = (a.size.0 as f32, a.size.1 as f32);
     let (pw, ph, rgba, state) = take(state, w, h, a.scale);

@@ -80,9 +80,7 @@ fn name_strategy() -> impl Strategy<Value = String> {
 }
 
 fn named(name: &str) -> Document {
-    let mut doc = Document::default();
-    doc.name = name.to_string();
-    doc
+    Document { name: name.to_string(), ..Default::default() }
 }
 
 /// One Python process that answers requests line by line (JSON): the shape of a source's

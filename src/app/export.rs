@@ -62,7 +62,10 @@ pub fn exercises_zip(e: &ExportState) -> Result<Vec<u8>, String> {
 
 /// Saves (or downloads) `bytes` as `name`, and says so.
 fn hand_out(state: &mut AppState, name: &str, bytes: Result<Vec<u8>, String>, mime: &str) {
-    let saved = bytes.and_then(|b| crate::platform::files::save_bytes(name, &b, mime, state.ui.file_dialogs));
+    let scene_file = std::path::PathBuf::from(state.ui.file_path.trim());
+    let mesh = state.doc.view.obj.as_deref().map(std::path::Path::new);
+    let inputs: Vec<&std::path::Path> = [Some(scene_file.as_path()), mesh].into_iter().flatten().collect();
+    let saved = bytes.and_then(|b| crate::platform::files::save_bytes(name, &b, mime, state.ui.file_dialogs, &inputs));
     state.message = match saved {
         Ok(Some(_)) if !crate::platform::files::TYPED_PATHS => Some(Message::Info(t!("downloaded", name = name))),
         Ok(Some(at)) => Some(Message::Info(t!("exported", what = name, at = at))),

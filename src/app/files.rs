@@ -147,7 +147,11 @@ fn refuse(state: &mut AppState, why: String) {
 
 /// Saves the current scene, and says where (or why not).
 pub fn save(state: &mut AppState, path: &Path) {
-    state.message = Some(match write_document(&state.doc, path) {
+    // The scene's mesh is read from its file: saving the scene over it would lose it.
+    let mesh: Vec<&Path> = state.doc.view.obj.iter().map(Path::new).collect();
+    let written =
+        crate::same_file::refuse_output_onto_input(&[path], &mesh).and_then(|()| write_document(&state.doc, path));
+    state.message = Some(match written {
         Ok(()) => Message::Info(t!("saved", path = path.display().to_string())),
         Err(e) => Message::Refused(t!("not-saved", error = e)),
     });

@@ -72,8 +72,16 @@ pub fn download(_name: &str, _bytes: &[u8], _mime: &str) -> Result<(), String> {
 /// Saves `bytes` as a file the user names: on the desktop where the system's dialog says
 /// (offering `name`), written whole or not at all; in the browser as a download. `Ok(None)`:
 /// the user cancelled; `Ok(Some(where))`: saved there. `dialogs` is false where no dialog
-/// may open (headless tests): then nothing is saved, and the reason is returned.
-pub fn save_bytes(name: &str, bytes: &[u8], mime: &str, dialogs: bool) -> Result<Option<String>, String> {
+/// may open (headless tests): then nothing is saved, and the reason is returned. A path
+/// that is one of `inputs` (the scene file, its mesh) is refused
+/// ([`crate::same_file::refuse_output_onto_input`]).
+pub fn save_bytes(
+    name: &str,
+    bytes: &[u8],
+    mime: &str,
+    dialogs: bool,
+    inputs: &[&std::path::Path],
+) -> Result<Option<String>, String> {
     #[cfg(not(target_arch = "wasm32"))]
     {
         let _ = mime;
@@ -86,12 +94,13 @@ pub fn save_bytes(name: &str, bytes: &[u8], mime: &str, dialogs: bool) -> Result
         else {
             return Ok(None);
         };
+        crate::same_file::refuse_output_onto_input(&[&path], inputs)?;
         crate::atomic_write::write(&path, bytes).map_err(|e| e.to_string())?;
         Ok(Some(path.display().to_string()))
     }
     #[cfg(target_arch = "wasm32")]
     {
-        let _ = dialogs;
+        let _ = (dialogs, inputs);
         download(name, bytes, mime).map(|()| Some(name.to_string()))
     }
 }

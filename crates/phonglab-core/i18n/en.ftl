@@ -799,6 +799,7 @@ err-bench-object = --object { $value }: the benchmark's objects are sphere and t
 err-bench-shading = --shading { $value }: the shadings are gouraud, phong and flat
 err-bench-slices = --slices { $value }: the sphere takes 3 to 1024 slices (the benchmark's is 50)
 err-study-timeout = the study did not finish in 5 minutes
+err-output-is-input = { $output } is the input { $input } (the same file): writing it would destroy what is read; choose another output
 bench-render-header = phonglab bench render: { $size }x{ $size } px, { $frames } frames, { $threads } threads; the stages' mean ms: vertices, setup, raster, resolve
 bench-lighting-header = phonglab bench lighting: { $vertices } vertices, best of { $repeats }, one thread, f32
 bench-memory-floor = memory floor: the same arrays read and written with no lighting, { $ns } ns per vertex ({ $gbs } GB/s of the { $bytes } bytes a vertex moves)

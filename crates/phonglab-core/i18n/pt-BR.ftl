@@ -799,6 +799,7 @@ err-bench-object = --object { $value }: os objetos de referência são sphere (e
 err-bench-shading = --shading { $value }: os sombreamentos são gouraud, phong e flat
 err-bench-slices = --slices { $value }: a esfera aceita de 3 a 1024 fatias (a de referência tem 50)
 err-study-timeout = o estudo não terminou em 5 minutos
+err-output-is-input = { $output } é a entrada { $input } (o mesmo arquivo): escrevê-lo destruiria o que é lido; escolha outra saída
 bench-render-header = phonglab bench render: { $size }x{ $size } px, { $frames } imagens, { $threads } threads; ms médios das etapas: vértices, preparação, rasterização, resolução
 bench-lighting-header = phonglab bench lighting: { $vertices } vértices, a melhor de { $repeats }, uma thread, f32
 bench-memory-floor = limite da memória: os mesmos arrays lidos e escritos sem iluminação, { $ns } ns por vértice ({ $gbs } GB/s dos { $bytes } bytes que um vértice move)

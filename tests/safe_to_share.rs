@@ -1,0 +1,105 @@
+//! Safe to share: what a hostile or careless input cannot do to a student's files, their
+//! terminal or their machine, run as a real process (the command line) as a student runs
+//! it. Each test is one attack of issue 43's list.
+
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+mod common;
+use common::phonglab;
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// A fresh folder for one test.
+fn folder(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("phonglab-safe-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+/// A worksheet-style script that `import` reads.
+const SCRIPT: &str = "vertexPos = np.array([-512, -384, 0, 1])\nlightPos = np.array([0, 0, 90, 1])\n";
+
+/// Runs `args`; it must refuse with exit 2, say that the output is the input, and leave
+/// `input` byte for byte as it was.
+fn refused_onto_input(args: &[&str], input: &Path) {
+    let before = std::fs::read(input).unwrap();
+    let out = phonglab(args);
+    let e = stderr(&out);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {e}");
+    assert!(e.contains("is the input") && e.contains("the same file"), "{args:?}: {e}");
+    assert_eq!(std::fs::read(input).unwrap(), before, "{args:?} changed its input");
+}
+
+#[test]
+fn an_output_that_is_an_input_is_refused_by_every_command() {
+    let dir = folder("onto-input");
+    let nb = dir.join("nb.py");
+    std::fs::write(&nb, SCRIPT).unwrap();
+    refused_onto_input(&["import", s(&nb), "-o", s(&nb)], &nb);
+    let scene = dir.join("s.toml");
+    std::fs::copy("assets/scenes/spotlight.toml", &scene).unwrap();
+    refused_onto_input(&["render", "--scene", s(&scene), "--size", "8", "-o", s(&scene)], &scene);
+    refused_onto_input(&["export", "--scene", s(&scene), "--to", "notebook", "-o", s(&scene)], &scene);
+    refused_onto_input(&["screenshot", "--scene", s(&scene), "--size", "320x200", "-o", s(&scene)], &scene);
+    // Through a hard link, a symbolic link and a detour.
+    std::fs::hard_link(&scene, dir.join("hard.toml")).unwrap();
+    std::os::unix::fs::symlink(&scene, dir.join("soft.png")).unwrap();
+    std::fs::create_dir_all(dir.join("sub")).unwrap();
+    for out in ["hard.toml", "soft.png", "sub/../s.toml"] {
+        let out = dir.join(out);
+        refused_onto_input(&["render", "--scene", s(&scene), "--size", "8", "-o", s(&out)], &scene);
+    }
+    // The mesh a scene names is an input too.
+    let mesh = dir.join("m.obj");
+    std::fs::write(&mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    refused_onto_input(&["render", "--obj", s(&mesh), "--size", "8", "-o", s(&mesh)], &mesh);
+    // An openFrameworks export into a folder whose src/ holds the scene.
+    std::fs::create_dir_all(dir.join("app/src")).unwrap();
+    let in_src = dir.join("app/src/ofApp.cpp");
+    std::fs::copy("assets/scenes/spotlight.toml", &in_src).unwrap();
+    refused_onto_input(
+        &["export", "--scene", s(&in_src), "--to", "openframeworks", "-o", s(&dir.join("app"))],
+        &in_src,
+    );
+    // A cost report into the folder of its scene, named like a report's file.
+    let csv = dir.join("cost.csv");
+    std::fs::copy("assets/scenes/spotlight.toml", &csv).unwrap();
+    refused_onto_input(&["cost", "--scene", s(&csv), "--quick", "--size", "16", "--out", s(&dir)], &csv);
+    // A different file is written as asked.
+    let ok = phonglab(&["import", s(&nb), "-o", s(&dir.join("nb.toml"))]);
+    assert!(ok.status.success(), "{}", stderr(&ok));
+}
+
+#[test]
+fn a_name_reaches_the_terminal_without_its_escape_sequences() {
+    let dir = folder("terminal");
+    let scene = dir.join("s.toml");
+    // A scene file refuses a control character in its name, saying which and where...
+    std::fs::write(&scene, "name = \"a\\u001b[2J\\u001b[31mred\"\n[material]\npreset = \"gold\"\n").unwrap();
+    let out = phonglab(&["explain", s(&scene)]);
+    let e = stderr(&out);
+    assert_eq!(out.status.code(), Some(2), "{e}");
+    assert!(e.contains("name holds the control character U+001B (character 2)"), "{e}");
+    assert!(!out.stderr.contains(&0x1b) && !out.stdout.contains(&0x1b), "no ESC reaches the terminal");
+    // ...and a file named so, imported, gives a name that explain prints visibly.
+    let nb = dir.join("evil\u{1b}[2J\"\"\"name.py");
+    std::fs::write(&nb, SCRIPT).unwrap();
+    let toml = dir.join("imported.toml");
+    let out = phonglab(&["import", s(&nb), "-o", s(&toml)]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(!out.stderr.contains(&0x1b), "the notices name the file visibly: {}", stderr(&out));
+    let out = phonglab(&["explain", s(&toml)]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.starts_with("Worked calculation: evil\\u{1B}[2J\"\"\"name\n"), "{text}");
+    // The scene file keeps the name, on one line, and reads back.
+    let saved = std::fs::read_to_string(&toml).unwrap();
+    assert!(saved.starts_with("name = \"evil\\\\u{1B}[2J\\\"\\\"\\\"name\"\n"), "{saved}");
+}
