@@ -7,17 +7,33 @@
 //! the target untouched, and says what failed.
 //!
 //! A set of files that belong together (an exercise set, a cost report: [`write_set`]) is
-//! first written whole into a staging folder inside the target folder. Only when every file
-//! of it is on the disk are the old set's files moved aside and the new ones renamed into
-//! place; a failed rename moves everything back. So the folder holds the old set or the new
-//! set, never a mix, and files of the old set that the new one lacks (`exercise-07.md` after
-//! a set of five) go with the old set.
+//! swapped in so that at every instant either the old set or the new one is whole, even
+//! when the process is killed:
+//! 1. the new set is written whole into a staging folder inside the target folder, and
+//!    synced;
+//! 2. a journal, `.phonglab-set.journal`, naming the staging folder, the new set's files
+//!    and the old set's, is written whole (a temporary file renamed): from this instant the
+//!    new set is decided, and it is whole (in the staging folder, or already in place);
+//! 3. the old set's files are moved aside into the staging folder and the new ones renamed
+//!    into place (each rename happens or does not);
+//! 4. the journal is removed, then the staging folder.
+//!
+//! A failure before the journal leaves the old set untouched; a failure after it (a rename
+//! refused) moves everything back and removes the journal, so the folder is as it was. A
+//! process killed at any step leaves either no journal (the old set whole in place, and a
+//! staging folder to throw away) or the journal (the new set whole across the folder and
+//! the staging folder): the next write of a set into the folder ([`recover`], under the
+//! folder's lock) finishes the swap the journal names, or throws the stale staging away.
+//! Files of the old set that the new one lacks (`exercise-07.md` after a set of five) go
+//! with the old set; other files are never touched. Two processes never swap sets in one
+//! folder at once: each holds the folder's lock (Unix) while it writes.
 //!
 //! [`check_file_destination`] and [`check_folder_destination`] try the destination before
 //! long work starts (`cost` runs for a quarter of a minute before it writes).
 //!
 //! Tests make the disk fail on purpose with [`with_fault`]: after N bytes, on the sync, on
-//! the close or on a rename, on the calling thread only.
+//! the close or on a rename, on the calling thread only; and kill the writer of a set at
+//! any step ([`Fault::KilledAtStep`]: nothing after that step runs, no clean-up, no undo).
 
 use std::cell::Cell;
 use std::fmt;
@@ -72,20 +88,25 @@ pub enum Fault {
     OnSync,
     /// Closing a file fails (NFS reports late errors there).
     OnClose,
-    /// The n-th rename (from 0) fails: for a set, n past the moves of the old files aside
-    /// fails a move into place.
+    /// The n-th rename (from 0) fails: for a set, the journal's rename first, then the
+    /// moves of the old files aside, then the moves of the new files into place.
     OnRename(u32),
+    /// The writer of a set dies at its n-th step (from 0; [`write_set`] counts its steps):
+    /// it returns at once, as a killed process would stop, leaving the folder as it is.
+    KilledAtStep(u32),
 }
 
 thread_local! {
     static FAULT: Cell<Option<Fault>> = const { Cell::new(None) };
     static RENAMES: Cell<u32> = const { Cell::new(0) };
+    static STEPS: Cell<u32> = const { Cell::new(0) };
 }
 
 /// Runs `f` with `fault` injected into every write on this thread (for tests).
 pub fn with_fault<R>(fault: Fault, f: impl FnOnce() -> R) -> R {
     let before = FAULT.with(|c| c.replace(Some(fault)));
     RENAMES.with(|c| c.set(0));
+    STEPS.with(|c| c.set(0));
     let r = f();
     FAULT.with(|c| c.set(before));
     r
@@ -295,64 +316,235 @@ impl FileSet {
     }
 }
 
+/// The journal of a set's swap, in the target folder (see the module's documentation).
+pub const JOURNAL: &str = ".phonglab-set.journal";
+
+/// The stem of a staging folder's name (`.phonglab-set.<pid>.<n>.tmp`).
+const STAGING: &str = "phonglab-set";
+
+/// What the journal says: the staging folder (a name in the target folder), the new set's
+/// files and the old set's.
+#[derive(Debug, serde::Serialize, serde::Deserialize)]
+struct Journal {
+    staging: String,
+    new: Vec<String>,
+    old: Vec<String>,
+}
+
+/// A set's writer killed at this step (by a test): stop here, as a dead process would.
+#[derive(Debug)]
+struct Killed;
+
+/// Counts a step of a set's swap; `Err(Killed)` where a test kills the writer there.
+fn step() -> Result<(), Killed> {
+    let Some(Fault::KilledAtStep(n)) = fault() else { return Ok(()) };
+    let k = STEPS.with(|c| {
+        let k = c.get();
+        c.set(k + 1);
+        k
+    });
+    if k == n { Err(Killed) } else { Ok(()) }
+}
+
+/// Why a set's swap stopped: an error to report (after the clean-up), or a kill (nothing
+/// more runs).
+enum Stop {
+    Failed(WriteError),
+    Killed,
+}
+
+impl From<Killed> for Stop {
+    fn from(_: Killed) -> Self {
+        Stop::Killed
+    }
+}
+
+impl From<WriteError> for Stop {
+    fn from(e: WriteError) -> Self {
+        Stop::Failed(e)
+    }
+}
+
+/// The killed writer's error, for tests: the step's name says it.
+fn killed(dir: &Path) -> WriteError {
+    WriteError::new(dir, "write-step-killed", io::Error::other("killed (injected by a test)"), "write-kept-recoverable")
+}
+
 /// Writes `set` into the folder `dir` (created if missing) as one: the folder ends with
 /// the whole new set, or, on any failure, exactly the files it had. Files already in `dir`
 /// for which `belongs` is true are the old set: they are replaced, or removed when the new
-/// set has no file of that name. Other files in `dir` are never touched.
+/// set has no file of that name. Other files in `dir` are never touched. What a killed
+/// earlier writer left in `dir` is recovered first ([`recover`]).
 pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> Result<(), WriteError> {
     const UNTOUCHED: &str = "write-kept-folder";
     std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED))?;
-    let staging = temporary_name(dir, "phonglab-set");
+    let _lock = crate::platform::os::lock_folder(dir)
+        .map_err(|e| WriteError::new(dir, "write-step-lock-folder", e, UNTOUCHED))?;
+    recover_locked(dir).map_err(|e| WriteError::new(dir, "write-step-recover", e, UNTOUCHED))?;
+    let staging = temporary_name(dir, STAGING);
     std::fs::create_dir(&staging).map_err(|e| WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED))?;
-    let result = stage_and_swap(dir, &staging, set, &belongs);
-    let _ = std::fs::remove_dir_all(&staging);
-    result
+    match stage_and_swap(dir, &staging, set, &belongs) {
+        Ok(()) => Ok(()),
+        Err(Stop::Killed) => Err(killed(dir)),
+        Err(Stop::Failed(e)) => {
+            let _ = std::fs::remove_dir_all(&staging);
+            Err(e)
+        }
+    }
 }
 
-fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&str) -> bool) -> Result<(), WriteError> {
+/// Finishes or throws away what a killed writer of a set left in `dir`: with a journal,
+/// the swap it names is finished (the new set is whole); without one, staging folders and
+/// a journal's temporary file are removed (the old set is whole in place). Takes the
+/// folder's lock, so a writer still at work is waited for, never disturbed.
+pub fn recover(dir: &Path) -> io::Result<()> {
+    let _lock = crate::platform::os::lock_folder(dir)?;
+    recover_locked(dir)
+}
+
+fn recover_locked(dir: &Path) -> io::Result<()> {
+    let journal = dir.join(JOURNAL);
+    match std::fs::read(&journal) {
+        Ok(bytes) => {
+            let j: Journal = serde_json::from_slice(&bytes).map_err(io::Error::other)?;
+            finish_swap(dir, &j)?;
+            std::fs::remove_file(&journal)?;
+            crate::platform::os::sync_folder(dir);
+        }
+        Err(e) if e.kind() == io::ErrorKind::NotFound => {}
+        Err(e) => return Err(e),
+    }
+    // Under the lock, every staging folder and journal temporary is a dead writer's.
+    for entry in std::fs::read_dir(dir)?.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let stale = name.ends_with(".tmp")
+            && (name.starts_with(&format!(".{STAGING}.")) || name.starts_with(&format!(".{JOURNAL}.")));
+        if stale {
+            let _ = if entry.file_type().is_ok_and(|t| t.is_dir()) {
+                std::fs::remove_dir_all(entry.path())
+            } else {
+                std::fs::remove_file(entry.path())
+            };
+        }
+    }
+    Ok(())
+}
+
+/// Rolls the swap that `j` names forward from wherever it stopped: each new file still in
+/// the staging folder is renamed into place (over the old file of its name, if any), and
+/// each old file that the new set lacks is removed. Idempotent.
+fn finish_swap(dir: &Path, j: &Journal) -> io::Result<()> {
+    let staging = dir.join(&j.staging);
+    for name in &j.new {
+        let staged = staging.join(name);
+        if staged.exists() {
+            std::fs::rename(&staged, dir.join(name))?;
+        }
+    }
+    for name in j.old.iter().filter(|n| !j.new.contains(n)) {
+        match std::fs::remove_file(dir.join(name)) {
+            Err(e) if e.kind() != io::ErrorKind::NotFound => return Err(e),
+            _ => {}
+        }
+    }
+    crate::platform::os::sync_folder(dir);
+    let _ = std::fs::remove_dir_all(&staging);
+    Ok(())
+}
+
+/// A plain file name: no folder, not `.` or `..` (a set's files live in its folder).
+fn plain_name(name: &str) -> bool {
+    !name.is_empty() && name != "." && name != ".." && !name.contains(['/', '\\'])
+}
+
+fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&str) -> bool) -> Result<(), Stop> {
     const UNTOUCHED: &str = "write-kept-folder";
+    step()?;
     for (name, bytes) in &set.files {
         let target = dir.join(name);
+        if !plain_name(name) {
+            let e = io::Error::new(io::ErrorKind::InvalidFilename, "not a plain file name");
+            return Err(WriteError::new(&target, "write-step-name", e, UNTOUCHED).into());
+        }
         write_new(&staging.join(name), bytes).map_err(|(what, e)| WriteError::new(&target, what, e, UNTOUCHED))?;
+        step()?;
     }
     crate::platform::os::sync_folder(staging);
-    // The old set: every file the new one replaces, and every other member of it.
-    let new_names: Vec<&str> = set.files.iter().map(|(n, _)| n.as_str()).collect();
+    let new_names: Vec<String> = set.files.iter().map(|(n, _)| n.clone()).collect();
+    let old = old_set(dir, &new_names, belongs)?;
+    step()?;
+    let journal = Journal {
+        staging: file_name_of(staging).map_err(|e| WriteError::new(staging, "write-step-name", e, UNTOUCHED))?,
+        new: new_names,
+        old,
+    };
+    let text = serde_json::to_vec(&journal)
+        .map_err(io::Error::other)
+        .map_err(|e| WriteError::new(dir, "write-step-write", e, UNTOUCHED))?;
+    write(&dir.join(JOURNAL), &text).map_err(|e| WriteError { kept: UNTOUCHED, ..e })?;
+    step()?;
+    swap(dir, staging, &journal)?;
+    std::fs::remove_file(dir.join(JOURNAL))
+        .map_err(|e| WriteError::new(dir, "write-step-remove-journal", e, "write-kept-recoverable"))?;
+    crate::platform::os::sync_folder(dir);
+    step()?;
+    let _ = std::fs::remove_dir_all(staging);
+    Ok(())
+}
+
+/// The old set in `dir`: every file the new one replaces, and every other member of it.
+fn old_set(dir: &Path, new_names: &[String], belongs: &dyn Fn(&str) -> bool) -> Result<Vec<String>, WriteError> {
+    let entries =
+        std::fs::read_dir(dir).map_err(|e| WriteError::new(dir, "write-step-list", e, "write-kept-folder"))?;
     let mut old = Vec::new();
-    let entries = std::fs::read_dir(dir).map_err(|e| WriteError::new(dir, "write-step-list", e, UNTOUCHED))?;
     for entry in entries.flatten() {
         let name = entry.file_name().to_string_lossy().into_owned();
         let is_file = entry.file_type().is_ok_and(|t| t.is_file());
-        if is_file && (new_names.contains(&name.as_str()) || belongs(&name)) {
+        if is_file && name != JOURNAL && (new_names.contains(&name) || belongs(&name)) {
             old.push(name);
         }
     }
     old.sort();
+    Ok(old)
+}
+
+/// Step 3: the old files aside (into `staging/.old`), the new ones into place. A refused
+/// rename moves everything back (the new files into the staging folder, so a journal left
+/// by a kill during the undo still finds them) and removes the journal.
+fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
+    const UNTOUCHED: &str = "write-kept-folder";
     let aside = staging.join(".old");
-    std::fs::create_dir(&aside).map_err(|e| WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED))?;
-    let mut moved_aside = Vec::new();
-    let mut moved_in = Vec::new();
-    let undo = |moved_aside: &[String], moved_in: &[&str]| {
+    let mut moved_aside: Vec<&str> = Vec::new();
+    let mut moved_in: Vec<&str> = Vec::new();
+    let undo = |moved_aside: &[&str], moved_in: &[&str]| {
         for name in moved_in {
-            let _ = std::fs::remove_file(dir.join(name));
+            let _ = std::fs::rename(dir.join(name), staging.join(name));
         }
         for name in moved_aside {
             let _ = std::fs::rename(aside.join(name), dir.join(name));
         }
+        let _ = std::fs::remove_file(dir.join(JOURNAL));
+        crate::platform::os::sync_folder(dir);
     };
-    for name in &old {
+    if let Err(e) = std::fs::create_dir(&aside) {
+        undo(&[], &[]);
+        return Err(WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED).into());
+    }
+    for name in &j.old {
         if let Err(e) = rename(&dir.join(name), &aside.join(name)) {
             undo(&moved_aside, &moved_in);
-            return Err(WriteError::new(&dir.join(name), "write-step-rename", e, UNTOUCHED));
+            return Err(WriteError::new(&dir.join(name), "write-step-rename", e, UNTOUCHED).into());
         }
-        moved_aside.push(name.clone());
+        moved_aside.push(name);
+        step()?;
     }
-    for name in &new_names {
+    for name in &j.new {
         if let Err(e) = rename(&staging.join(name), &dir.join(name)) {
             undo(&moved_aside, &moved_in);
-            return Err(WriteError::new(&dir.join(name), "write-step-rename", e, UNTOUCHED));
+            return Err(WriteError::new(&dir.join(name), "write-step-rename", e, UNTOUCHED).into());
         }
         moved_in.push(name);
+        step()?;
     }
     crate::platform::os::sync_folder(dir);
     Ok(())
@@ -474,6 +666,118 @@ mod tests {
         s.add("b.md", "new b");
         s.add("d.md", "new d");
         s
+    }
+
+    /// What the folder holds for a user: its files, without the staging folders and the
+    /// journal a writer works with.
+    fn user_files(dir: &Path) -> Vec<(String, Vec<u8>)> {
+        listing(dir).into_iter().filter(|(n, _)| !n.starts_with(".phonglab-set")).collect()
+    }
+
+    /// The new set is whole somewhere: each of its files, with its new bytes, in place or
+    /// in the staging folder the journal names.
+    fn new_set_is_whole(dir: &Path, set: &FileSet) -> bool {
+        let j: Journal = serde_json::from_slice(&std::fs::read(dir.join(JOURNAL)).unwrap()).unwrap();
+        set.files.iter().all(|(name, bytes)| {
+            [dir.join(&j.staging).join(name), dir.join(name)]
+                .iter()
+                .any(|p| std::fs::read(p).ok().as_ref() == Some(bytes))
+        })
+    }
+
+    #[test]
+    fn a_writer_killed_at_any_step_leaves_a_whole_set_and_the_next_run_finishes_or_cleans() {
+        let belongs = |n: &str| n.ends_with(".md");
+        let old_dir = temp_dir("kill-old");
+        old_set(&old_dir);
+        let old = listing(&old_dir);
+        let new_dir = temp_dir("kill-new");
+        old_set(&new_dir);
+        write_set(&new_dir, &new_set(), belongs).unwrap();
+        let new = listing(&new_dir);
+        let mut steps = 0;
+        for n in 0.. {
+            let dir = temp_dir("kill");
+            old_set(&dir);
+            if with_fault(Fault::KilledAtStep(n), || write_set(&dir, &new_set(), belongs)).is_ok() {
+                break;
+            }
+            steps += 1;
+            // At the instant of death: no journal and the old set in place, or the journal
+            // and the new set whole.
+            let names = |l: &[(String, Vec<u8>)]| l.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>();
+            if dir.join(JOURNAL).exists() {
+                assert!(new_set_is_whole(&dir, &new_set()), "killed at step {n}: the journal's set is whole");
+            } else {
+                let files = user_files(&dir);
+                assert!(files == old || files == new, "killed at step {n}: no journal: {:?}", names(&files));
+            }
+            // The next run recovers: exactly the old set or exactly the new one, nothing else.
+            recover(&dir).unwrap();
+            let after = listing(&dir);
+            assert!(after == old || after == new, "killed at step {n}, then recovered: {:?}", names(&after));
+            // And a later set is written over it as usual.
+            with_fault(Fault::KilledAtStep(n), || write_set(&dir, &new_set(), belongs)).ok();
+            let mut third = FileSet::default();
+            third.add("z.md", "third");
+            write_set(&dir, &third, belongs).unwrap();
+            let names: Vec<String> = listing(&dir).into_iter().map(|(n, _)| n).collect();
+            assert_eq!(names, ["mine.txt", "z.md"], "killed twice at step {n}, then a third set");
+        }
+        // Staging, each of 3 files, the old set listed, the journal, 4 moves aside, 3 in,
+        // the journal removed: 13 places to die, each tried.
+        assert_eq!(steps, 13);
+    }
+
+    /// Every state a swap or its undo can be in when the process dies (each file of either
+    /// set in place or in the staging folder, one rename at a time), with the journal:
+    /// recovery gives the new set, whole.
+    #[test]
+    fn recovery_finishes_a_swap_from_every_state_it_can_be_left_in() {
+        let belongs = |n: &str| n.ends_with(".md");
+        let new_dir = temp_dir("states-new");
+        old_set(&new_dir);
+        write_set(&new_dir, &new_set(), belongs).unwrap();
+        let new = listing(&new_dir);
+        // a.md and b.md are in both sets: 0 = the new one in place (the old aside), 1 = the
+        // new one staged and the old in place, 2 = both staged; d.md (new only) and c.md (old
+        // only): in place or staged.
+        for state in 0..3 * 3 * 2 * 2 {
+            let (a, b, d, c) = (state % 3, state / 3 % 3, state / 9 % 2, state / 18 % 2);
+            let dir = temp_dir("states");
+            old_set(&dir);
+            let staging = dir.join(".phonglab-set.1.0.tmp");
+            std::fs::create_dir_all(staging.join(".old")).unwrap();
+            for (name, bytes) in &new_set().files {
+                std::fs::write(staging.join(name), bytes).unwrap();
+            }
+            let aside = |n: &str| std::fs::rename(dir.join(n), staging.join(".old").join(n)).unwrap();
+            let move_in = |n: &str| std::fs::rename(staging.join(n), dir.join(n)).unwrap();
+            for (name, s) in [("a.md", a), ("b.md", b)] {
+                match s {
+                    0 => {
+                        aside(name);
+                        move_in(name);
+                    }
+                    2 => aside(name),
+                    _ => {}
+                }
+            }
+            if d == 0 {
+                move_in("d.md");
+            }
+            if c == 1 {
+                aside("c.md");
+            }
+            let j = Journal {
+                staging: ".phonglab-set.1.0.tmp".into(),
+                new: vec!["a.md".into(), "b.md".into(), "d.md".into()],
+                old: vec!["a.md".into(), "b.md".into(), "c.md".into()],
+            };
+            std::fs::write(dir.join(JOURNAL), serde_json::to_vec(&j).unwrap()).unwrap();
+            recover(&dir).unwrap();
+            assert!(listing(&dir) == new, "state {state} ({a}, {b}, {d}, {c}): the new set, whole, and nothing else");
+        }
     }
 
     #[test]

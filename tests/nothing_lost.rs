@@ -102,6 +102,48 @@ fn a_failed_exercise_set_leaves_the_old_set_whole() {
     assert!(index.contains("seed 2"), "{index}");
 }
 
+/// What a user finds in the folder: its files, without a set writer's hidden staging
+/// folders and journal.
+fn user_listing(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    listing(dir).into_iter().filter(|(n, _)| !n.starts_with(".phonglab-set")).collect()
+}
+
+#[test]
+fn an_exercise_set_killed_at_any_step_is_finished_or_undone_by_the_next_run() {
+    let args = |seed: &'static str, out: &str| -> Vec<String> {
+        ["exercise", "--seed", seed, "--count", "1", "--out", out].iter().map(|s| s.to_string()).collect()
+    };
+    let dir = temp_dir("exercise-kill-sets");
+    let (one, two) = (dir.join("one"), dir.join("two"));
+    let run_s = |a: Vec<String>| run(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_eq!(run_s(args("1", one.to_str().unwrap())), ExitCode::SUCCESS);
+    assert_eq!(run_s(args("2", two.to_str().unwrap())), ExitCode::SUCCESS);
+    let (old, new) = (listing(&one), listing(&two));
+    let mut killed = 0;
+    for n in 0.. {
+        let out = temp_dir("exercise-kill");
+        assert_eq!(run_s(args("1", out.to_str().unwrap())), ExitCode::SUCCESS);
+        let code = with_fault(Fault::KilledAtStep(n), || run_s(args("2", out.to_str().unwrap())));
+        if code == ExitCode::SUCCESS {
+            break;
+        }
+        killed += 1;
+        // The next run (of any set) finishes the swap or throws the staging away first.
+        phonglab::atomic_write::recover(&out).unwrap();
+        let after = listing(&out);
+        assert!(
+            after == old || after == new,
+            "killed at step {n}: {:?}",
+            after.iter().map(|f| &f.0).collect::<Vec<_>>()
+        );
+        assert_eq!(run_s(args("3", out.to_str().unwrap())), ExitCode::SUCCESS);
+        assert_eq!(user_listing(&out), listing(&out), "killed at step {n}: nothing hidden is left");
+    }
+    // Staging, the 6 files (the scene, the sheet, the key, the index and the two PDFs), the
+    // old set listed, the journal, 6 moves aside, 6 in, the journal removed.
+    assert_eq!(killed, 22, "every step was killed once");
+}
+
 #[test]
 fn a_failed_cost_report_leaves_the_old_report_whole() {
     let dir = temp_dir("cost");

@@ -36,6 +36,30 @@ pub fn sync_folder(dir: &Path) {
     let _ = dir;
 }
 
+/// A folder held by this process until the value is dropped (see [`lock_folder`]).
+#[derive(Debug)]
+pub struct FolderLock {
+    #[cfg(unix)]
+    _folder: File,
+}
+
+/// Waits for, then holds, the exclusive lock of the folder `dir` (Unix: `flock` on the
+/// folder itself, so no lock file is left behind; released by the system however the
+/// process ends). Elsewhere a no-op: the browser writes no folders.
+pub fn lock_folder(dir: &Path) -> io::Result<FolderLock> {
+    #[cfg(unix)]
+    {
+        let folder = File::open(dir)?;
+        folder.lock()?;
+        Ok(FolderLock { _folder: folder })
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = dir;
+        Ok(FolderLock {})
+    }
+}
+
 /// Calls `handler` with the signal's number, on a thread of its own, each time the process
 /// is asked to end (SIGTERM, SIGINT, SIGHUP: a logout, Ctrl+C in the terminal, `kill`).
 #[cfg(unix)]
