@@ -103,3 +103,53 @@ fn a_name_reaches_the_terminal_without_its_escape_sequences() {
     let saved = std::fs::read_to_string(&toml).unwrap();
     assert!(saved.starts_with("name = \"evil\\\\u{1B}[2J\\\"\\\"\\\"name\"\n"), "{saved}");
 }
+
+/// The hostile scripts of the issue: 10 000 nested brackets, and 399 bytes of lists that
+/// repeat the line above (3 GB when evaluated).
+fn hostile_scripts(dir: &Path) -> Vec<(PathBuf, &'static str)> {
+    let deep = dir.join("deep.py");
+    std::fs::write(&deep, format!("lightPos = {}1{}\n", "[".repeat(10_000), "]".repeat(10_000))).unwrap();
+    let mut growth = String::from("a0 = [1, 2, 3, 4]\n");
+    for i in 1..=15 {
+        growth.push_str(&format!("a{i} = [a{0}, a{0}, a{0}, a{0}]\n", i - 1));
+    }
+    growth.push_str("lightPos = np.array(a15)\n");
+    let grows = dir.join("grows.py");
+    std::fs::write(&grows, growth).unwrap();
+    vec![(deep, "line 1: `lightPos = [[[["), (grows, "line 7: `a6 = [a5, a5, a5, a5]` holds more than 10 000")]
+}
+
+#[test]
+fn a_hostile_script_is_refused_with_its_line_by_import_and_by_the_window() {
+    let dir = folder("hostile");
+    for (file, said) in hostile_scripts(&dir) {
+        let out = phonglab(&["import", s(&file), "-o", s(&dir.join("x.toml"))]);
+        let e = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{e}");
+        assert!(e.contains(said) && e.contains("the file is not read"), "{e}");
+        assert!(!dir.join("x.toml").exists());
+        // Dropped on the window: a message, and the scene the student had stays.
+        let mut state = phonglab::app::AppState::worksheet();
+        state.doc.scene.material.shininess = 7.0;
+        phonglab::app::files::open(&mut state, &file);
+        match &state.message {
+            Some(phonglab::app::state::Message::Refused(m)) => assert!(m.contains(said), "{m}"),
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(state.doc.scene.material.shininess, 7.0, "the last change is kept");
+    }
+}
+
+#[test]
+fn import_refuses_a_given_that_is_not_finite_and_writes_no_inf_or_nan() {
+    let dir = folder("not-finite");
+    let py = dir.join("nf.py");
+    std::fs::write(&py, "vertexPos = np.array([1e999, 0, 0, 1])\nlightPos = np.array([0/0, 0, 90, 1])\n").unwrap();
+    let toml = dir.join("nf.toml");
+    let out = phonglab(&["import", s(&py), "-o", s(&toml)]);
+    let e = stderr(&out);
+    assert!(e.contains("line 1: vertexPos is Infinity, not a finite number"), "{e}");
+    assert!(e.contains("line 2: lightPos is NaN, not a finite number"), "{e}");
+    let text = std::fs::read_to_string(&toml).unwrap();
+    assert!(!text.contains("inf") && !text.contains("nan"), "{text}");
+}

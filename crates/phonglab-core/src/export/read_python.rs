@@ -12,7 +12,15 @@
 //! 0, 0, 1])`. Comments (the commented-out alternatives) are ignored, and so are the
 //! computing lines (`vertexNormal = np.matmul(mview, vertexNormal)`, anything indented).
 //! A given whose value cannot be read is reported with its line, and so is a given the
-//! file lacks (the worksheet's value is used); nothing else is lost.
+//! file lacks (the worksheet's value is used); nothing else is lost. A given that is not a
+//! finite number (`1e999`, `0/0`) is refused so, naming it.
+//!
+//! The file may be hostile, so reading it is bounded: an expression nests at most
+//! [`MAX_DEPTH`] deep (brackets, calls, signs, powers), a value holds at most
+//! [`MAX_ELEMENTS`] numbers, strings and lists and [`MAX_BYTES`] bytes of strings, and all
+//! the names assigned together hold at most [`MAX_TOTAL_ELEMENTS`] and [`MAX_TOTAL_BYTES`]
+//! (a list that repeats the one before grows four times a line: its fifteenth line would be
+//! a billion numbers). Passing a limit stops the reading, naming the line.
 
 use std::collections::BTreeMap;
 
@@ -52,7 +60,22 @@ pub enum ImportError {
     /// No given of the worksheet at all: not a worksheet-style file.
     #[error("{0}")]
     NoGivens(String),
+    /// A line passed one of the reader's limits (nesting, size): the file is not read.
+    #[error("{0}")]
+    TooLarge(String),
 }
+
+/// The deepest an expression nests: brackets, calls, unary signs and powers (the givens
+/// need 3: a list of matrices' rows).
+pub const MAX_DEPTH: usize = 32;
+/// The most numbers, strings and lists one value holds (eight lights' matrices are 136).
+pub const MAX_ELEMENTS: usize = 10_000;
+/// The most bytes of strings one value holds.
+pub const MAX_BYTES: usize = 1 << 20;
+/// The most numbers, strings and lists all the names assigned hold together.
+pub const MAX_TOTAL_ELEMENTS: usize = 1_000_000;
+/// The most bytes of strings all the names assigned hold together.
+pub const MAX_TOTAL_BYTES: usize = 16 << 20;
 
 /// The names read as givens.
 const GIVENS: [&str; 32] = [
@@ -104,9 +127,21 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
     let mut given: BTreeMap<String, (Value, String)> = BTreeMap::new();
     let mut notices = Vec::new();
     let mut local_viewer = false;
+    let mut refused = Vec::new();
+    let mut total = Size::default();
     for line in &lines {
         let Some((lhs, rhs)) = assignment(&line.text) else { continue };
-        let value = evaluate(rhs, &env);
+        let value = match evaluate(rhs, &env) {
+            Err(Failure::Limit(why)) => return Err(too_large(line, &why)),
+            Err(Failure::Unreadable(why)) => Err(why),
+            Ok(v) => {
+                total = total.plus(v.size());
+                if let Some(limit) = total.passes(MAX_TOTAL_ELEMENTS, MAX_TOTAL_BYTES) {
+                    return Err(too_large(line, &t!("import-limit-total", limit = limit)));
+                }
+                Ok(v)
+            }
+        };
         if lhs == "obs" {
             // The worksheet's switch: the active `obs` line says which viewer.
             local_viewer = !rhs.contains("vertexPos")
@@ -116,7 +151,18 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
         let is_given = GIVENS.contains(&lhs);
         match value {
             Ok(v) => {
-                if is_given {
+                if is_given && let Some(x) = v.first_not_finite() {
+                    // A given that is not a finite number is refused; later lines may still
+                    // assign it.
+                    notices.push(t!(
+                        "import-not-finite",
+                        place = line.place.clone(),
+                        name = lhs,
+                        value = crate::locale::num(x, 8)
+                    ));
+                    given.remove(lhs);
+                    refused.push(lhs.to_string());
+                } else if is_given {
                     given.insert(lhs.to_string(), (v.clone(), line.place.clone()));
                 }
                 env.insert(lhs.to_string(), v);
@@ -133,12 +179,20 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
             Err(_) => {}
         }
     }
-    if !given.keys().any(|k| ["vertexPos", "vertexNormal", "lightPos", "matDif", "mview"].contains(&k.as_str())) {
+    let assigned = given.keys().chain(&refused);
+    if !assigned.into_iter().any(|k| ["vertexPos", "vertexNormal", "lightPos", "matDif", "mview"].contains(&k.as_str()))
+    {
         return Err(ImportError::NoGivens(t!("import-no-givens")));
     }
-    let mut r = Reader { given, notices };
+    let mut r = Reader { given, notices, refused };
     let doc = r.document(name, local_viewer);
     Ok(Imported { doc, notices: r.notices })
+}
+
+/// The error for a line that passed a limit: its place, its text (shortened) and why.
+fn too_large(line: &SourceLine, why: &str) -> ImportError {
+    let text = crate::numerics::strict::shortened(line.text.trim(), 60);
+    ImportError::TooLarge(t!("import-too-large", place = line.place.clone(), line = text, reason = why))
 }
 
 /// The code cells' lines of a notebook.
@@ -221,6 +275,24 @@ impl Value {
         }
     }
 
+    /// What the value holds: its numbers, strings and lists, and its strings' bytes.
+    fn size(&self) -> Size {
+        match self {
+            Value::Num(_) | Value::Bool(_) => Size { elements: 1, bytes: 0 },
+            Value::Str(s) => Size { elements: 1, bytes: s.len() },
+            Value::List(items) => items.iter().fold(Size { elements: 1, bytes: 0 }, |a, v| a.plus(v.size())),
+        }
+    }
+
+    /// The first number in the value that is not finite, if any.
+    fn first_not_finite(&self) -> Option<f64> {
+        match self {
+            Value::Num(x) => (!x.is_finite()).then_some(*x),
+            Value::List(items) => items.iter().find_map(Value::first_not_finite),
+            _ => None,
+        }
+    }
+
     /// The numbers of a flat list (or one number).
     fn numbers(&self) -> Option<Vec<f64>> {
         match self {
@@ -231,13 +303,52 @@ impl Value {
     }
 }
 
+/// How much a value holds (see [`Value::size`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Size {
+    elements: usize,
+    bytes: usize,
+}
+
+impl Size {
+    fn plus(self, other: Size) -> Size {
+        Size { elements: self.elements.saturating_add(other.elements), bytes: self.bytes.saturating_add(other.bytes) }
+    }
+
+    /// The limit this size passes, in words, if it passes one.
+    fn passes(self, elements: usize, bytes: usize) -> Option<String> {
+        if self.elements > elements {
+            Some(t!("import-limit-elements", count = crate::locale::grouped(elements as u64)))
+        } else if self.bytes > bytes {
+            Some(t!("import-limit-bytes", count = crate::locale::grouped(bytes as u64)))
+        } else {
+            None
+        }
+    }
+}
+
+/// Why an expression was not read: a construct the reader does not read (the line is
+/// reported, or ignored as the worksheet's calculation), or a limit passed (the file is
+/// refused).
+#[derive(Debug)]
+enum Failure {
+    Unreadable(String),
+    Limit(String),
+}
+
+impl From<String> for Failure {
+    fn from(why: String) -> Self {
+        Failure::Unreadable(why)
+    }
+}
+
 /// Evaluates the expression subset (see the module's documentation).
-fn evaluate(text: &str, env: &BTreeMap<String, Value>) -> Result<Value, String> {
+fn evaluate(text: &str, env: &BTreeMap<String, Value>) -> Result<Value, Failure> {
     let tokens = tokenize(text)?;
-    let mut p = Parser { tokens, pos: 0, env };
+    let mut p = Parser { tokens, pos: 0, env, depth: 0 };
     let v = p.expr()?;
     if p.pos != p.tokens.len() {
-        return Err(t!("import-reason-extra", token = p.tokens[p.pos].clone()));
+        return Err(t!("import-reason-extra", token = p.tokens[p.pos].clone()).into());
     }
     Ok(v)
 }
@@ -299,6 +410,8 @@ struct Parser<'a> {
     tokens: Vec<String>,
     pos: usize,
     env: &'a BTreeMap<String, Value>,
+    /// How deeply the expression nests where the parser is (see [`MAX_DEPTH`]).
+    depth: usize,
 }
 
 impl Parser<'_> {
@@ -306,28 +419,42 @@ impl Parser<'_> {
         self.tokens.get(self.pos).map(String::as_str)
     }
 
-    fn expect(&mut self, token: &str) -> Result<(), String> {
+    fn expect(&mut self, token: &str) -> Result<(), Failure> {
         if self.peek() == Some(token) {
             self.pos += 1;
             Ok(())
         } else {
-            Err(t!("import-reason-expected", token = token, found = self.peek().unwrap_or("").to_string()))
+            Err(t!("import-reason-expected", token = token, found = self.peek().unwrap_or("").to_string()).into())
         }
+    }
+
+    /// Runs `f` one level deeper, refusing past [`MAX_DEPTH`] (a hostile file's ten
+    /// thousand brackets would overflow the stack).
+    fn deeper(&mut self, f: impl FnOnce(&mut Self) -> Result<Value, Failure>) -> Result<Value, Failure> {
+        if self.depth >= MAX_DEPTH {
+            return Err(Failure::Limit(t!("import-limit-depth", depth = MAX_DEPTH)));
+        }
+        self.depth += 1;
+        let v = f(self);
+        self.depth -= 1;
+        v
     }
 
     /// `term (('+' | '-') term)*`
-    fn expr(&mut self) -> Result<Value, String> {
-        let mut v = self.term()?;
-        while let Some(op) = self.peek().filter(|t| *t == "+" || *t == "-").map(str::to_string) {
-            self.pos += 1;
-            let w = self.term()?;
-            v = arithmetic(&v, &w, &op)?;
-        }
-        Ok(v)
+    fn expr(&mut self) -> Result<Value, Failure> {
+        self.deeper(|p| {
+            let mut v = p.term()?;
+            while let Some(op) = p.peek().filter(|t| *t == "+" || *t == "-").map(str::to_string) {
+                p.pos += 1;
+                let w = p.term()?;
+                v = arithmetic(&v, &w, &op)?;
+            }
+            Ok(v)
+        })
     }
 
     /// `factor (('*' | '/') factor)*`
-    fn term(&mut self) -> Result<Value, String> {
+    fn term(&mut self) -> Result<Value, Failure> {
         let mut v = self.power()?;
         while let Some(op) = self.peek().filter(|t| *t == "*" || *t == "/").map(str::to_string) {
             self.pos += 1;
@@ -338,41 +465,53 @@ impl Parser<'_> {
     }
 
     /// `unary ('**' power)?`
-    fn power(&mut self) -> Result<Value, String> {
+    fn power(&mut self) -> Result<Value, Failure> {
         let v = self.unary()?;
         if self.peek() == Some("**") {
             self.pos += 1;
-            let w = self.power()?;
-            return arithmetic(&v, &w, "**");
+            let w = self.deeper(Self::power)?;
+            return Ok(arithmetic(&v, &w, "**")?);
         }
         Ok(v)
     }
 
-    fn unary(&mut self) -> Result<Value, String> {
+    fn unary(&mut self) -> Result<Value, Failure> {
         match self.peek() {
             Some("-") => {
                 self.pos += 1;
-                let v = self.unary()?;
-                arithmetic(&Value::Num(0.0), &v, "-")
+                let v = self.deeper(Self::unary)?;
+                Ok(arithmetic(&Value::Num(0.0), &v, "-")?)
             }
             Some("+") => {
                 self.pos += 1;
-                self.unary()
+                self.deeper(Self::unary)
             }
             _ => self.atom(),
         }
     }
 
-    fn atom(&mut self) -> Result<Value, String> {
-        let Some(token) = self.peek().map(str::to_string) else { return Err(t!("import-reason-end")) };
+    /// A value in a list: refused once the list holds more than a value may.
+    fn push_item(items: &mut Vec<Value>, size: &mut Size, v: Value) -> Result<(), Failure> {
+        *size = size.plus(v.size());
+        if let Some(limit) = size.passes(MAX_ELEMENTS, MAX_BYTES) {
+            return Err(Failure::Limit(limit));
+        }
+        items.push(v);
+        Ok(())
+    }
+
+    fn atom(&mut self) -> Result<Value, Failure> {
+        let Some(token) = self.peek().map(str::to_string) else { return Err(t!("import-reason-end").into()) };
         self.pos += 1;
         match token.as_str() {
             "(" | "[" => {
                 let close = if token == "(" { ")" } else { "]" };
                 let mut items = Vec::new();
+                let mut size = Size { elements: 1, bytes: 0 };
                 let mut tuple = token == "[";
                 while self.peek() != Some(close) {
-                    items.push(self.expr()?);
+                    let item = self.expr()?;
+                    Self::push_item(&mut items, &mut size, item)?;
                     if self.peek() == Some(",") {
                         self.pos += 1;
                         tuple = true;
@@ -395,9 +534,10 @@ impl Parser<'_> {
             "m.pi" | "math.pi" | "np.pi" => Ok(Value::Num(std::f64::consts::PI)),
             t if t.starts_with(['"', '\'']) => Ok(Value::Str(t[1..t.len() - 1].to_string())),
             t if t.starts_with(|c: char| c.is_ascii_digit() || c == '.') => {
-                t.parse::<f64>().map(Value::Num).map_err(|_| t!("import-reason-number", token = t.to_string()))
+                Ok(t.parse::<f64>().map(Value::Num).map_err(|_| t!("import-reason-number", token = t.to_string()))?)
             }
-            t => self.env.get(t).cloned().ok_or_else(|| t!("import-reason-name", name = t.to_string())),
+            // Every assigned value is within the limits, so its copy is too.
+            t => Ok(self.env.get(t).cloned().ok_or_else(|| t!("import-reason-name", name = t.to_string()))?),
         }
     }
 }
@@ -429,6 +569,8 @@ fn arithmetic(a: &Value, b: &Value, op: &str) -> Result<Value, String> {
 struct Reader {
     given: BTreeMap<String, (Value, String)>,
     notices: Vec<String>,
+    /// Givens refused for a value that is not finite (already reported, so not "missing").
+    refused: Vec<String>,
 }
 
 impl Reader {
@@ -458,6 +600,9 @@ impl Reader {
     }
 
     fn missing(&mut self, name: &str, default: String) {
+        if self.refused.iter().any(|r| r == name) {
+            return;
+        }
         self.notices.push(t!("import-missing", name = name, value = default));
     }
 
@@ -636,5 +781,74 @@ impl Reader {
         let mut doc = Document::from_scene(name, camera, scene);
         doc.view = Document::default().view;
         doc
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn script(text: &str) -> Result<Imported, ImportError> {
+        read(text, false, "t")
+    }
+
+    #[test]
+    fn deep_nesting_is_refused_naming_its_line_not_overflowing_the_stack() {
+        for deep in [
+            format!("lightPos = {}1{}", "[".repeat(10_000), "]".repeat(10_000)),
+            format!("lightPos = {}1", "-".repeat(100_000)),
+            format!("lightPos = {}1{}", "np.array(".repeat(5_000), ")".repeat(5_000)),
+            format!("x = 2{}", "**2".repeat(50_000)),
+        ] {
+            let text = format!("vertexPos = np.array([0, 0, 0, 1])\n{deep}\n");
+            let e = script(&text).unwrap_err().to_string();
+            assert!(e.starts_with("line 2: `") && e.contains("nests more than 32 deep"), "{e}");
+        }
+        // Within the limit, nesting reads as before.
+        let ok = script(&format!("lightPos = {}[0, 0, 90, 1]{}\n", "(".repeat(20), ")".repeat(20))).unwrap();
+        assert_eq!(ok.doc.scene.lights[0].position, DVec4::new(0.0, 0.0, 90.0, 1.0));
+    }
+
+    #[test]
+    fn exponential_growth_is_refused_at_the_line_that_passes_the_limit() {
+        let mut text = String::from("a0 = [1, 2, 3, 4]\n");
+        for i in 1..=15 {
+            text.push_str(&format!("a{i} = [a{0}, a{0}, a{0}, a{0}]\n", i - 1));
+        }
+        text.push_str("lightPos = np.array(a15)\n");
+        let e = script(&text).unwrap_err().to_string();
+        // a6 holds 4^7 numbers and 1 + 4 + ... + 4^6 lists: the first past 10 000.
+        assert!(e.starts_with("line 7: `a6 = [a5, a5, a5, a5]` holds more than 10 000"), "{e}");
+        // Strings: a 100 kB string repeated grows past 1 MiB of bytes.
+        let big = "x".repeat(100_000);
+        let mut text = format!("s0 = '{big}'\n");
+        for i in 1..=4 {
+            text.push_str(&format!("s{i} = [s{0}, s{0}, s{0}, s{0}]\n", i - 1));
+        }
+        let e = script(&text).unwrap_err().to_string();
+        assert!(e.starts_with("line 3: ") && e.contains("bytes of strings"), "{e}");
+        // Many lines, each small, past the total.
+        let mut text = String::from("a = [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\nb = [a, a, a, a, a, a, a, a, a, a]\n");
+        for i in 0..20_000 {
+            text.push_str(&format!("c{i} = [b, b, b, b]\n"));
+        }
+        let e = script(&text).unwrap_err().to_string();
+        assert!(e.contains("past what phonglab reads"), "{e}");
+    }
+
+    #[test]
+    fn a_given_that_is_not_finite_is_refused_naming_it() {
+        let text = "vertexPos = np.array([1e999, 0, 0, 1])\nlightPos = np.array([0/0, 0, 90, 1])\nmatDif = np.array([0.5, 0.5, 0.5, 1])\nns = -1e999\n";
+        let r = script(text).unwrap();
+        let notices = r.notices.join("\n");
+        assert!(notices.contains("line 1: vertexPos is Infinity, not a finite number"), "{notices}");
+        assert!(notices.contains("line 2: lightPos is NaN, not a finite number"), "{notices}");
+        assert!(notices.contains("line 4: ns is -Infinity"), "{notices}");
+        assert!(!notices.contains("vertexPos is not assigned"), "reported once: {notices}");
+        let s = &r.doc.scene;
+        assert_eq!(s.vertex.position, DVec4::new(-512.0, -384.0, 0.0, 1.0), "the worksheet's vertex");
+        assert_eq!(s.lights[0].position, DVec4::new(0.0, 0.0, 90.0, 1.0), "the worksheet's light");
+        assert_eq!(s.material.diffuse.x, 0.5, "the finite givens are read");
+        assert!(!r.doc.to_toml().unwrap().contains("inf") && !r.doc.to_toml().unwrap().contains("nan"));
     }
 }

@@ -190,6 +190,20 @@ pub fn decimal(text: &str) -> String {
         .collect()
 }
 
+/// A whole number for people, its digits in groups of three (`10 000`, `1 048 576`), as
+/// both the English and the Portuguese style guides accept.
+pub fn grouped(n: u64) -> String {
+    let digits = n.to_string();
+    let mut out = String::new();
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            out.push(' ');
+        }
+        out.push(c);
+    }
+    out
+}
+
 /// A number for people: [`fmt_sig`] in the locale's decimal mark.
 pub fn num(x: f64, sig: usize) -> String {
     decimal(&fmt_sig(x, sig))

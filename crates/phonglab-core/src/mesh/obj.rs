@@ -39,15 +39,7 @@ pub const MAX_OBJ_LINE: usize = 64 << 10;
 
 /// A file size in words: "536 870 913 bytes (512.0 MiB)".
 pub fn describe_bytes(n: u64) -> String {
-    let digits = n.to_string();
-    let mut grouped = String::new();
-    for (i, c) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i).is_multiple_of(3) {
-            grouped.push(' ');
-        }
-        grouped.push(c);
-    }
-    format!("{grouped} bytes ({:.1} MiB)", n as f64 / (1u64 << 20) as f64)
+    format!("{} bytes ({:.1} MiB)", crate::locale::grouped(n), n as f64 / (1u64 << 20) as f64)
 }
 
 /// At most 40 characters of a word, for a message.
