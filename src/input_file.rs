@@ -1,5 +1,7 @@
 //! Reading a file a user names: a regular file, at most a size cap, checked before reading
 //! (`/dev/zero` or a stray 2 GB file is refused at once instead of filling the memory).
+//! The file is opened without blocking ([`crate::platform::os::open_to_read`]: a FIFO
+//! cannot hang the reader) and checked through the open handle, not the path.
 
 use std::io::Read;
 use std::path::Path;
@@ -17,16 +19,41 @@ pub const MAX_CASE_BYTES: u64 = 256 << 20;
 /// `t!("file-kind-scenes")`). The messages are in the current language.
 pub fn read_capped(path: &Path, cap: u64, what: &str) -> Result<Vec<u8>, String> {
     let shown = path.display().to_string();
-    let cannot = |e: std::io::Error| t!("read-cannot", path = shown.clone(), reason = crate::io_text::io_reason(&e));
-    let meta = std::fs::metadata(path).map_err(cannot)?;
+    read_capped_or(path, cap).map_err(|e| match e {
+        Unread::Io(e) => t!("read-cannot", path = shown.clone(), reason = crate::io_text::io_reason(&e)),
+        Unread::NotAFile => t!("read-not-a-file", path = shown.clone()),
+        Unread::TooLarge(size) => within_cap(&shown, size, cap, what).err().unwrap_or_default(),
+    })
+}
+
+/// Why a file was not read.
+#[derive(Debug)]
+pub enum Unread {
+    /// The system's error (`NotFound`, ...).
+    Io(std::io::Error),
+    /// It is a folder, a device, a FIFO or a socket.
+    NotAFile,
+    /// It is larger than the cap: its size in bytes (at least).
+    TooLarge(u64),
+}
+
+/// [`read_capped`], with the reason as a value (for callers that treat each differently,
+/// as the session does).
+pub fn read_capped_or(path: &Path, cap: u64) -> Result<Vec<u8>, Unread> {
+    let file = crate::platform::os::open_to_read(path).map_err(Unread::Io)?;
+    let meta = file.metadata().map_err(Unread::Io)?;
     if !meta.is_file() {
-        return Err(t!("read-not-a-file", path = shown.clone()));
+        return Err(Unread::NotAFile);
     }
-    within_cap(&shown, meta.len(), cap, what)?;
+    if meta.len() > cap {
+        return Err(Unread::TooLarge(meta.len()));
+    }
     let mut bytes = Vec::with_capacity(meta.len() as usize);
-    std::fs::File::open(path).and_then(|f| f.take(cap + 1).read_to_end(&mut bytes)).map_err(cannot)?;
+    file.take(cap + 1).read_to_end(&mut bytes).map_err(Unread::Io)?;
     // The file may have grown since its size was read.
-    within_cap(&shown, bytes.len() as u64, cap, what)?;
+    if bytes.len() as u64 > cap {
+        return Err(Unread::TooLarge(bytes.len() as u64));
+    }
     Ok(bytes)
 }
 

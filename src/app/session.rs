@@ -10,8 +10,10 @@
 //! the session but never writes it, and says so.
 //!
 //! What can go wrong at the start, each said in the window and in the log:
-//! - `session.ron` does not parse: it is renamed `session-unreadable-<time>.ron`, and the
-//!   window starts on the worksheet;
+//! - `session.ron` does not parse, is not a regular file (a FIFO, a link to a device: it
+//!   is opened without blocking, so neither hangs the start) or is larger than
+//!   [`MAX_SESSION_BYTES`]: it is renamed `session-unreadable-<time>.ron`, and the window
+//!   starts on the worksheet;
 //! - the scene in it does not load: the text is kept in `phonglab-unreadable-<time>.toml`;
 //! - its mesh file has moved: the scene is kept, shown on the sphere, and the message names
 //!   the missing file;
@@ -33,6 +35,9 @@ pub const SESSION_FILE: &str = "session.ron";
 
 /// The lock file's name in the storage folder.
 pub const LOCK_FILE: &str = "session.lock";
+
+/// The largest session file read: a scene, the layout and the quiz take a few kilobytes.
+pub const MAX_SESSION_BYTES: u64 = 4 << 20;
 
 /// Whether this window may write the session.
 #[derive(Debug)]
@@ -114,38 +119,56 @@ impl Session {
             session.owner = Owner::ReadOnly("the session file is a folder".into());
             return (session, notices);
         }
-        match std::fs::read(&path) {
+        use crate::input_file::Unread;
+        let unreadable = match crate::input_file::read_capped_or(&path, MAX_SESSION_BYTES) {
             Ok(bytes) => match parse(&bytes) {
                 Ok(values) => {
                     session.values = values;
                     session.saved = std::str::from_utf8(&bytes).ok().map(str::to_string);
+                    None
                 }
-                Err(why) if session.may_write() => {
-                    let kept = fresh_path(dir, "session-unreadable", "ron");
-                    notices.push(match std::fs::rename(&path, &kept) {
-                        Ok(()) => t!("session-unreadable-kept", why = &why, kept = kept.display().to_string()),
-                        Err(e) => t!(
-                            "session-unreadable-not-kept",
-                            path = path.display().to_string(),
-                            why = &why,
-                            error = e.to_string()
-                        ),
-                    });
-                }
-                Err(why) => notices.push(t!("session-unreadable", why = why)),
+                Err(why) => Some(why),
             },
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => session.read_eframe_storage(dir),
-            Err(e) => {
-                notices.push(t!("session-unreadable-at", path = path.display().to_string(), error = e.to_string()))
+            Err(Unread::Io(e)) if e.kind() == std::io::ErrorKind::NotFound => {
+                session.read_eframe_storage(dir);
+                None
             }
+            Err(Unread::NotAFile) => Some(t!("session-not-a-file")),
+            Err(Unread::TooLarge(size)) => Some(t!(
+                "session-too-large",
+                size = phonglab_core::mesh::obj::describe_bytes(size),
+                cap = phonglab_core::mesh::obj::describe_bytes(MAX_SESSION_BYTES)
+            )),
+            Err(Unread::Io(e)) => {
+                notices.push(t!("session-unreadable-at", path = path.display().to_string(), error = e.to_string()));
+                None
+            }
+        };
+        if let Some(why) = unreadable {
+            notices.push(session.set_aside(&path, &why));
         }
         (session, notices)
+    }
+
+    /// Moves an unreadable session file (`why`) aside as `session-unreadable-<time>.ron`,
+    /// when this window owns the session, and says so; the window starts fresh.
+    fn set_aside(&self, path: &Path, why: &str) -> String {
+        let Some(dir) = self.dir.as_deref().filter(|_| self.may_write()) else {
+            return t!("session-unreadable", why = why);
+        };
+        let kept = fresh_path(dir, "session-unreadable", "ron");
+        match std::fs::rename(path, &kept) {
+            Ok(()) => t!("session-unreadable-kept", why = why, kept = kept.display().to_string()),
+            Err(e) => {
+                t!("session-unreadable-not-kept", path = path.display().to_string(), why = why, error = e.to_string())
+            }
+        }
     }
 
     /// Reads the session of phonglab versions that let eframe keep it (`app.ron`, the same
     /// map), once: it is left as it was.
     fn read_eframe_storage(&mut self, dir: &Path) {
-        if let Ok(bytes) = std::fs::read(dir.join("app.ron"))
+        if let Ok(bytes) = crate::input_file::read_capped_or(&dir.join("app.ron"), MAX_SESSION_BYTES)
             && let Ok(values) = parse(&bytes)
         {
             self.values = values;
@@ -340,6 +363,47 @@ mod tests {
         let (third, notices) = Session::open(&dir);
         assert!(third.may_write() && notices.is_empty(), "the lock went with the first window");
         assert_eq!(third.get("k"), Some("first"));
+    }
+
+    /// Opens the session in `dir` on a thread of its own: a start that hangs fails the test
+    /// instead of the test run.
+    fn open_within_seconds(dir: &Path) -> (Session, Vec<String>) {
+        let (tx, rx) = std::sync::mpsc::channel();
+        let d = dir.to_path_buf();
+        std::thread::spawn(move || tx.send(Session::open(&d)).ok());
+        rx.recv_timeout(std::time::Duration::from_secs(5)).expect("the session opened within 5 seconds")
+    }
+
+    #[test]
+    #[cfg(unix)]
+    fn a_fifo_a_device_or_a_huge_session_file_is_set_aside_and_the_window_starts_fresh() {
+        let make_fifo = |p: &Path| {
+            let c = std::ffi::CString::new(p.as_os_str().as_encoded_bytes()).unwrap();
+            // SAFETY: `c` is a valid NUL-terminated path for the duration of the call.
+            assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
+        };
+        let cases: [(&str, &dyn Fn(&Path), &str); 3] = [
+            ("fifo", &make_fifo, "not a regular file"),
+            ("zero", &|p: &Path| std::os::unix::fs::symlink("/dev/zero", p).unwrap(), "not a regular file"),
+            (
+                "huge",
+                &|p: &Path| std::fs::File::create(p).unwrap().set_len(MAX_SESSION_BYTES + 1).unwrap(),
+                "a session is at most 4 194 304 bytes",
+            ),
+        ];
+        for (name, make, said) in cases {
+            let dir = temp_dir(name);
+            make(&dir.join(SESSION_FILE));
+            let (mut s, notices) = open_within_seconds(&dir);
+            let all = notices.join(" ");
+            assert!(all.contains(said) && all.contains("session-unreadable-"), "{name}: {all}");
+            assert!(s.may_write(), "{name}: this window owns the session");
+            assert!(s.get(DOCUMENT_KEY).is_none(), "{name}: it starts fresh");
+            assert!(std::fs::symlink_metadata(dir.join(SESSION_FILE)).is_err(), "{name}: set aside");
+            s.set("k", "v".into());
+            assert_eq!(s.save(), Ok(true), "{name}: a fresh session is written");
+            assert!(std::fs::metadata(dir.join(SESSION_FILE)).unwrap().is_file());
+        }
     }
 
     #[test]

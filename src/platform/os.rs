@@ -36,6 +36,22 @@ pub fn sync_folder(dir: &Path) {
     let _ = dir;
 }
 
+/// Opens `path` to read without waiting: a FIFO with no writer, or a device, would
+/// otherwise block the open itself (Unix: `O_NONBLOCK`, which changes nothing for a regular
+/// file). The caller checks what was opened from the handle ([`File::metadata`]), so a
+/// file swapped between a check and the open is seen.
+pub fn open_to_read(path: &Path) -> io::Result<File> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        File::options().read(true).custom_flags(libc::O_NONBLOCK).open(path)
+    }
+    #[cfg(not(unix))]
+    {
+        File::open(path)
+    }
+}
+
 /// A folder held by this process until the value is dropped (see [`lock_folder`]).
 #[derive(Debug)]
 pub struct FolderLock {
