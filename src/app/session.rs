@@ -382,7 +382,8 @@ mod tests {
             // SAFETY: `c` is a valid NUL-terminated path for the duration of the call.
             assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
         };
-        let cases: [(&str, &dyn Fn(&Path), &str); 3] = [
+        type Make<'a> = &'a dyn Fn(&Path);
+        let cases: [(&str, Make, &str); 3] = [
             ("fifo", &make_fifo, "not a regular file"),
             ("zero", &|p: &Path| std::os::unix::fs::symlink("/dev/zero", p).unwrap(), "not a regular file"),
             (
