@@ -3,6 +3,7 @@
 //! The doc comments below describe the arguments to readers of the code; what a user reads
 //! in `--help` comes from the message catalogue, in their language ([`crate::cli_help`]).
 
+use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -414,42 +415,73 @@ fn evaluate(scene: &Scene, precision: Precision, options: EvalOptions, clamp: bo
     r.map_err(|e| e.to_string())
 }
 
-/// Evaluates every case of a glref case file: `{"results": [...]}`, and how many cases
-/// failed (did not fit the schema, or set a parameter OpenGL refuses).
-pub fn eval_text(
-    text: &str,
-    precision: Precision,
-    options: EvalOptions,
-    clamp: bool,
-) -> Result<(serde_json::Value, usize)> {
-    let cases = glref::parse_cases(text).context(t!("err-not-case-file"))?;
-    let mut failed = 0;
-    let results: Vec<serde_json::Value> = cases
-        .iter()
-        .map(|(id, case)| {
-            let r = match case {
-                Ok(c) => evaluate(&c.scene, precision, options, clamp),
-                Err(e) => Err(e.to_string()),
-            };
-            failed += usize::from(r.is_err());
-            glref::result_json(id, &r)
-        })
-        .collect();
-    Ok((serde_json::json!({ "results": results }), failed))
-}
-
 /// `eval`: the results on stdout; exit 1 (after printing them) when any case failed.
 fn eval(a: &EvalArgs) -> Result<ExitCode> {
-    let text = read(&a.cases, crate::input_file::MAX_CASE_BYTES, &t!("file-kind-cases"))?;
-    let (out, failed) = eval_text(&text, a.precision, EvalOptions::with_pow(a.pow.into()), a.clamp)
-        .with_context(|| format!("{}", a.cases.display()))?;
-    println!("{}", serde_json::to_string_pretty(&out)?);
-    let all = out["results"].as_array().map_or(0, Vec::len);
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    let (all, failed) = eval_stream(&a.cases, a.precision, EvalOptions::with_pow(a.pow.into()), a.clamp, &mut out)?;
+    out.flush()?;
     if failed > 0 {
         eprintln!("phonglab: {}", t!("err-cases-failed", failed = failed, all = all));
         return Ok(ExitCode::from(1));
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Evaluates the case file at `path` into `out` as `{"results": [...]}` (what `eval`
+/// prints): the number of cases and of failed ones.
+///
+/// The file is read as a stream twice, never whole: once to check that it is a case file
+/// (so a broken one writes nothing), then case by case, each result written as it is
+/// lit. The memory is one case's (and the ids', to refuse a repeated one), whatever the
+/// number of cases.
+pub fn eval_stream(
+    path: &Path,
+    precision: Precision,
+    options: EvalOptions,
+    clamp: bool,
+    out: &mut impl std::io::Write,
+) -> Result<(usize, usize)> {
+    let open = || -> Result<std::fs::File> {
+        // The size cap and the file's kind, checked on the handle; the bytes stream.
+        let file = crate::platform::os::open_to_read(path).map_err(|e| {
+            anyhow::anyhow!(t!(
+                "read-cannot",
+                path = path.display().to_string(),
+                reason = crate::io_text::io_reason(&e)
+            ))
+        })?;
+        let meta = file.metadata()?;
+        if !meta.is_file() {
+            bail!(t!("read-not-a-file", path = path.display().to_string()));
+        }
+        let (shown, kind) = (path.display().to_string(), t!("file-kind-cases"));
+        crate::input_file::within_cap(&shown, meta.len(), crate::input_file::MAX_CASE_BYTES, &kind)
+            .map_err(anyhow::Error::msg)?;
+        Ok(file)
+    };
+    let not_cases = || format!("{}: {}", path.display(), t!("err-not-case-file"));
+    glref::count_cases(open()?).context(not_cases())?;
+    let (mut all, mut failed) = (0usize, 0usize);
+    let mut write_error = None;
+    out.write_all(b"{\n  \"results\": [")?;
+    glref::for_each_case(open()?, |id, case| {
+        let r = case.map_err(|e| e.to_string()).and_then(|c| evaluate(&c.scene, precision, options, clamp));
+        failed += usize::from(r.is_err());
+        // serde_json's pretty form of the whole, one result at a time.
+        let result = serde_json::to_string_pretty(&glref::result_json(&id, &r)).unwrap_or_default();
+        let sep = if all == 0 { "\n" } else { ",\n" };
+        all += 1;
+        let indented = result.lines().map(|l| format!("    {l}")).collect::<Vec<_>>().join("\n");
+        if let Err(e) = write!(out, "{sep}{indented}") {
+            write_error.get_or_insert(e);
+        }
+    })
+    .context(not_cases())?;
+    if let Some(e) = write_error {
+        return Err(e.into());
+    }
+    out.write_all(if all == 0 { b"]\n}\n" } else { b"\n  ]\n}\n" })?;
+    Ok((all, failed))
 }
 
 /// Reads and checks a scene file.

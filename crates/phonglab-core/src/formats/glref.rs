@@ -98,26 +98,211 @@ pub type ParsedCases = Vec<(String, Result<Case, CaseError>)>;
 /// Parses a file: `Err` when the file is not a case file; otherwise one result per case.
 /// A case whose id an earlier case already has is an error of its own.
 pub fn parse_cases(text: &str) -> Result<ParsedCases, FileError> {
-    let mut seen = std::collections::HashSet::new();
-    Ok(raw_cases(text)?
-        .iter()
-        .enumerate()
-        .map(|(i, raw)| {
-            let id = match raw.get("id") {
-                Some(Value::String(s)) => s.clone(),
-                Some(other) => strict::shortened(&other.to_string(), 40),
-                None => format!("case{i}"),
-            };
-            let parsed = parse_case(raw, i).and_then(|c| {
-                if seen.insert(c.id.clone()) {
-                    Ok(c)
+    let mut ids = CaseIds::default();
+    Ok(raw_cases(text)?.iter().enumerate().map(|(i, raw)| ids.parse(raw, i)).collect())
+}
+
+/// The ids seen so far in a file, so that a repeated one is refused: the only thing a
+/// reader keeps from case to case.
+#[derive(Default)]
+struct CaseIds {
+    seen: std::collections::HashSet<String>,
+}
+
+impl CaseIds {
+    /// The `i`-th case's id (as written, for the result) and the case or why not.
+    fn parse(&mut self, raw: &Value, i: usize) -> (String, Result<Case, CaseError>) {
+        let id = match raw.get("id") {
+            Some(Value::String(s)) => s.clone(),
+            Some(other) => strict::shortened(&other.to_string(), 40),
+            None => format!("case{i}"),
+        };
+        let parsed = parse_case(raw, i).and_then(|c| {
+            if self.seen.insert(c.id.clone()) {
+                Ok(c)
+            } else {
+                Err(err("id", format!("{:?} is the id of an earlier case; ids must be unique", c.id)))
+            }
+        });
+        (id, parsed)
+    }
+}
+
+/// Reads a case file from `reader` as a stream, one case at a time: `each` is called with
+/// every case's id and the case (or why it does not fit the schema), in order, and only
+/// one case is in memory at once, so a file of any number of cases takes the memory of
+/// one case (and of the ids, to refuse a repeated one). Returns the number of cases.
+///
+/// `each` has run for the cases before the place where a file that is not JSON breaks;
+/// a caller that must not act on part of a file reads it once with [`count_cases`] first.
+pub fn for_each_case<R: std::io::Read>(
+    reader: R,
+    each: impl FnMut(String, Result<Case, CaseError>),
+) -> Result<usize, FileError> {
+    let mut ids = CaseIds::default();
+    let mut each = each;
+    stream::cases(reader, &mut |raw: Value, i: usize| {
+        let (id, parsed) = ids.parse(&raw, i);
+        each(id, parsed);
+    })
+}
+
+/// Checks that `reader` holds a case file (JSON, a list or `{"cases": [...]}`) and counts
+/// its cases, one at a time, without keeping any.
+pub fn count_cases<R: std::io::Read>(reader: R) -> Result<usize, FileError> {
+    stream::cases(reader, &mut |_: Value, _: usize| {})
+}
+
+/// The case file's outer shape read with serde, element by element.
+mod stream {
+    use std::cell::Cell;
+    use std::fmt;
+
+    use serde::de::{self, DeserializeSeed, IgnoredAny, MapAccess, SeqAccess, Visitor};
+    use serde_json::Value;
+
+    use super::FileError;
+
+    /// What each case goes to, with its index.
+    type Each<'a> = &'a mut dyn FnMut(Value, usize);
+
+    /// Reads the file's cases into `each`; the count, or why the file is not a case file.
+    pub fn cases<R: std::io::Read>(reader: R, each: Each<'_>) -> Result<usize, FileError> {
+        let shape = Cell::new(None);
+        let mut de = serde_json::Deserializer::from_reader(std::io::BufReader::with_capacity(1 << 16, reader));
+        let r = File { each, shape: &shape }.deserialize(&mut de).and_then(|n| de.end().map(|()| n));
+        match (r, shape.get()) {
+            (_, Some(what)) => Err(FileError::Shape(what)),
+            (Ok(n), None) => Ok(n),
+            (Err(e), None) => Err(FileError::Json(e)),
+        }
+    }
+
+    /// The whole file: a list of cases, or an object whose "cases" is one.
+    struct File<'a, 'b> {
+        each: Each<'b>,
+        shape: &'a Cell<Option<&'static str>>,
+    }
+
+    impl File<'_, '_> {
+        fn wrong<E: de::Error>(&self, what: &'static str) -> Result<usize, E> {
+            self.shape.set(Some(what));
+            Err(E::custom(what))
+        }
+    }
+
+    impl<'de> DeserializeSeed<'de> for File<'_, '_> {
+        type Value = usize;
+        fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<usize, D::Error> {
+            d.deserialize_any(self)
+        }
+    }
+
+    impl<'de> Visitor<'de> for File<'_, '_> {
+        type Value = usize;
+
+        fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+            f.write_str("a list of cases or an object {\"cases\": [...]}")
+        }
+
+        fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<usize, A::Error> {
+            each_case(seq, self.each)
+        }
+
+        fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<usize, A::Error> {
+            let mut count = None;
+            while let Some(key) = map.next_key::<String>()? {
+                if key == "cases" && count.is_none() {
+                    count = Some(map.next_value_seed(CaseList { each: &mut *self.each, shape: self.shape })?);
                 } else {
-                    Err(err("id", format!("{:?} is the id of an earlier case; ids must be unique", c.id)))
+                    map.next_value::<IgnoredAny>()?;
                 }
-            });
-            (id, parsed)
-        })
-        .collect())
+            }
+            match count {
+                Some(n) => Ok(n),
+                None => self.wrong("an object without \"cases\""),
+            }
+        }
+
+        fn visit_unit<E: de::Error>(self) -> Result<usize, E> {
+            self.wrong("null")
+        }
+        fn visit_bool<E: de::Error>(self, _: bool) -> Result<usize, E> {
+            self.wrong("a boolean")
+        }
+        fn visit_i64<E: de::Error>(self, _: i64) -> Result<usize, E> {
+            self.wrong("a number")
+        }
+        fn visit_u64<E: de::Error>(self, _: u64) -> Result<usize, E> {
+            self.wrong("a number")
+        }
+        fn visit_f64<E: de::Error>(self, _: f64) -> Result<usize, E> {
+            self.wrong("a number")
+        }
+        fn visit_str<E: de::Error>(self, _: &str) -> Result<usize, E> {
+            self.wrong("a string")
+        }
+    }
+
+    /// The value of "cases": it must be a list.
+    struct CaseList<'a, 'b> {
+        each: Each<'b>,
+        shape: &'a Cell<Option<&'static str>>,
+    }
+
+    impl<'de> DeserializeSeed<'de> for CaseList<'_, '_> {
+        type Value = usize;
+        fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<usize, D::Error> {
+            d.deserialize_any(self)
+        }
+    }
+
+    impl<'de> Visitor<'de> for CaseList<'_, '_> {
+        type Value = usize;
+
+        fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+            f.write_str("a list of cases")
+        }
+
+        fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<usize, A::Error> {
+            each_case(seq, self.each)
+        }
+
+        fn visit_map<A: MapAccess<'de>>(self, _: A) -> Result<usize, A::Error> {
+            self.shape.set(Some("\"cases\" that is not a list"));
+            Err(de::Error::custom("\"cases\" that is not a list"))
+        }
+
+        fn visit_unit<E: de::Error>(self) -> Result<usize, E> {
+            self.shape.set(Some("\"cases\" that is not a list"));
+            Err(E::custom("\"cases\" that is not a list"))
+        }
+        fn visit_bool<E: de::Error>(self, _: bool) -> Result<usize, E> {
+            self.visit_unit()
+        }
+        fn visit_i64<E: de::Error>(self, _: i64) -> Result<usize, E> {
+            self.visit_unit()
+        }
+        fn visit_u64<E: de::Error>(self, _: u64) -> Result<usize, E> {
+            self.visit_unit()
+        }
+        fn visit_f64<E: de::Error>(self, _: f64) -> Result<usize, E> {
+            self.visit_unit()
+        }
+        fn visit_str<E: de::Error>(self, _: &str) -> Result<usize, E> {
+            self.visit_unit()
+        }
+    }
+
+    /// Each element of the list, one at a time.
+    fn each_case<'de, A: SeqAccess<'de>>(mut seq: A, each: Each<'_>) -> Result<usize, A::Error> {
+        let mut i = 0;
+        while let Some(case) = seq.next_element::<Value>()? {
+            each(case, i);
+            i += 1;
+        }
+        Ok(i)
+    }
 }
 
 /// The keys a case may have.

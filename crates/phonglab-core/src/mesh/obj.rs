@@ -6,21 +6,32 @@
 //! not one or not finite (NaN), a face of fewer than 3 corners, a file over
 //! [`MAX_OBJ_BYTES`] or [`MAX_OBJ_TRIANGLES`]. What was done to the file without refusing
 //! it (polygons fanned, normals computed, the mesh fitted to the view) is said in notes.
+//!
+//! The file is read twice as a stream, never whole. The first pass counts ([`Counts`]):
+//! the memory the reading will take is then known ([`Counts::load_bytes`]) and refused
+//! past the budget ([`set_memory_budget`]) before anything is allocated; the second pass
+//! fills arrays of exactly that size. Its peak is under 200 bytes a triangle, a triangle
+//! soup (three vertices of its own each, as STL conversions write) or a shared mesh alike:
+//! the file's vertices in f64 (to fit any finite coordinates), a remap from the file's
+//! vertices to the mesh's (no hash map, but for a vertex met with several normals), and
+//! the mesh itself.
 
 use std::collections::HashMap;
 use std::io::BufRead;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
 use glam::{DVec3, Vec3};
 
 use super::Mesh;
+use crate::t;
 
 fn index(s: &str, len: usize, ln: usize, what: &str) -> Result<usize, String> {
-    let i: i64 = s.parse().map_err(|_| format!("line {ln}: {what} index {s:?} is not a number"))?;
+    let i: i64 = s.parse().map_err(|_| t!("obj-index-not-number", line = ln, what = what, index = format!("{s:?}")))?;
     let resolved = if i > 0 { i - 1 } else { len as i64 + i };
     if resolved < 0 || resolved as usize >= len {
-        return Err(format!("line {ln}: {what} index {i} is out of range (there are {len})"));
+        return Err(t!("obj-index-out-of-range", line = ln, what = what, index = i.to_string(), count = len));
     }
     Ok(resolved as usize)
 }
@@ -37,9 +48,20 @@ pub const MAX_OBJ_BYTES: u64 = 512 << 20;
 /// The longest line read, in bytes.
 pub const MAX_OBJ_LINE: usize = 64 << 10;
 
+/// The memory the reading of an OBJ file may take, in bytes (no limit until the app sets
+/// one from its budget).
+static MEMORY_BUDGET: AtomicU64 = AtomicU64::new(u64::MAX);
+
+/// Sets the memory an OBJ file's reading may take: a file whose [`Counts::load_bytes`]
+/// is larger is refused before it is read, saying how much it needs.
+pub fn set_memory_budget(bytes: u64) {
+    MEMORY_BUDGET.store(bytes, Ordering::Relaxed);
+}
+
 /// A file size in words: "536 870 913 bytes (512.0 MiB)".
 pub fn describe_bytes(n: u64) -> String {
-    format!("{} bytes ({:.1} MiB)", crate::locale::grouped(n), n as f64 / (1u64 << 20) as f64)
+    let mib = format!("{:.1}", n as f64 / (1u64 << 20) as f64);
+    t!("bytes-described", bytes = crate::locale::grouped(n), mib = crate::locale::decimal(&mib))
 }
 
 /// At most 40 characters of a word, for a message.
@@ -51,23 +73,52 @@ fn short(word: &str) -> String {
     }
 }
 
-/// The file as read: positions in f64 (fitted before they become f32), one entry per mesh
-/// vertex (a distinct position and normal pair).
-#[derive(Default)]
-struct Parsed {
-    positions: Vec<DVec3>,
-    /// Zero where the file gave no normal.
-    normals: Vec<Vec3>,
-    triangles: Vec<[u32; 3]>,
-    polygon_line: Option<usize>,
-    no_normal_line: Option<usize>,
+/// What an OBJ file holds, counted in a first pass before anything is allocated.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Counts {
+    /// `v` lines.
+    pub vertices: usize,
+    /// `vn` lines.
+    pub normals: usize,
+    /// `vt` lines.
+    pub texture_coordinates: usize,
+    /// Face corners (`f` entries).
+    pub corners: usize,
+    /// Triangles, once the faces are fanned.
+    pub triangles: usize,
 }
 
-/// Reads OBJ lines from `reader`, at most [`MAX_OBJ_LINE`] bytes a line.
-fn parse<R: BufRead>(mut reader: R) -> Result<Parsed, String> {
-    let mut out = Parsed::default();
-    let (mut vs, mut vns, mut vts) = (Vec::<DVec3>::new(), Vec::<Vec3>::new(), 0usize);
-    let mut corners: HashMap<(usize, Option<usize>), u32> = HashMap::new();
+impl Counts {
+    /// The most vertices the mesh can have: a corner without a normal is its file vertex
+    /// (so at most one mesh vertex each), a corner with a normal a (vertex, normal) pair.
+    pub fn mesh_vertices(&self) -> usize {
+        if self.normals == 0 { self.vertices.min(self.corners) } else { self.corners }
+    }
+
+    /// The memory the reading takes at its peak, in bytes: the file's vertices (f64) and
+    /// normals, the remap from file vertices to mesh vertices, and the mesh (positions,
+    /// normals, triangles, and each mesh vertex's file vertex), all allocated at once;
+    /// the computed normals' sums come after the f64 vertices are freed.
+    pub fn load_bytes(&self) -> u64 {
+        let (v, vn, mv, tris) =
+            (self.vertices as u64, self.normals as u64, self.mesh_vertices() as u64, self.triangles as u64);
+        let file = v * (24 + 8) + vn * 12;
+        let mesh = mv * (12 + 12 + 4) + tris * 12;
+        file + mesh + mv * 12
+    }
+
+    /// The memory the mesh itself keeps once read: positions, normals, triangles.
+    pub fn mesh_bytes(&self) -> u64 {
+        self.mesh_vertices() as u64 * 24 + self.triangles as u64 * 12
+    }
+}
+
+/// Reads the lines of `reader`, at most [`MAX_OBJ_LINE`] bytes each, calling `each` with
+/// every line's number, tag and the rest of its words.
+fn for_each_line<R: BufRead>(
+    mut reader: R,
+    mut each: impl FnMut(usize, &str, std::str::SplitWhitespace<'_>) -> Result<(), String>,
+) -> Result<(), String> {
     let mut bytes = Vec::new();
     let mut ln = 0;
     loop {
@@ -75,31 +126,127 @@ fn parse<R: BufRead>(mut reader: R) -> Result<Parsed, String> {
         ln += 1;
         let n = std::io::Read::take(&mut reader, MAX_OBJ_LINE as u64 + 1)
             .read_until(b'\n', &mut bytes)
-            .map_err(|e| format!("line {ln}: cannot read: {e}"))?;
+            .map_err(|e| t!("obj-cannot-read-line", line = ln, error = e.to_string()))?;
         if n == 0 {
-            break;
+            return Ok(());
         }
         if n > MAX_OBJ_LINE {
-            return Err(format!("line {ln} is longer than {MAX_OBJ_LINE} bytes: not an OBJ file"));
+            return Err(t!("obj-line-too-long", line = ln, bytes = MAX_OBJ_LINE));
         }
         let line = String::from_utf8_lossy(&bytes);
         let mut it = line.split_whitespace();
-        let Some(tag) = it.next() else { continue };
+        if let Some(tag) = it.next() {
+            each(ln, tag, it)?;
+        }
+    }
+}
+
+/// The first pass: what the file holds, and its size refused past [`MAX_OBJ_TRIANGLES`]
+/// on the line that passes it.
+pub fn count<R: BufRead>(reader: R) -> Result<Counts, String> {
+    let mut c = Counts::default();
+    for_each_line(reader, |ln, tag, it| {
+        match tag {
+            "v" => c.vertices += 1,
+            "vn" => c.normals += 1,
+            "vt" => c.texture_coordinates += 1,
+            "f" => {
+                let corners = it.count();
+                c.corners += corners;
+                c.triangles += corners.saturating_sub(2);
+                if c.triangles > MAX_OBJ_TRIANGLES {
+                    return Err(t!(
+                        "obj-too-many-triangles",
+                        line = ln,
+                        max = crate::locale::grouped(MAX_OBJ_TRIANGLES as u64)
+                    ));
+                }
+            }
+            _ => {}
+        }
+        Ok(())
+    })?;
+    Ok(c)
+}
+
+/// The file as read: its vertices in f64 (fitted before they become f32), and one entry
+/// per mesh vertex (a distinct vertex and normal pair): its file vertex and its normal.
+struct Parsed {
+    /// The file's `v`.
+    file_positions: Vec<DVec3>,
+    /// Each mesh vertex's index in `file_positions`.
+    file_vertex: Vec<u32>,
+    /// Zero where the file gave no normal.
+    normals: Vec<Vec3>,
+    triangles: Vec<[u32; 3]>,
+    polygon_line: Option<usize>,
+    no_normal_line: Option<usize>,
+}
+
+/// From a corner's file vertex and normal to its mesh vertex: for each file vertex the
+/// first (normal, mesh vertex) pair met, and a map only for the pairs after it (a vertex
+/// of a flat-shaded mesh, met with several normals).
+struct Remap {
+    /// Per file vertex: `(normal + 1, mesh vertex + 1)`, normal 0 for none, `(_, 0)` unmet.
+    first: Vec<(u32, u32)>,
+    more: HashMap<(u32, u32), u32>,
+}
+
+impl Remap {
+    fn with_vertices(n: usize) -> Remap {
+        Remap { first: vec![(0, 0); n], more: HashMap::new() }
+    }
+
+    /// The mesh vertex of `(v, vn)`, made by `new` the first time the pair is met.
+    fn vertex(&mut self, v: usize, vn: Option<usize>, new: impl FnOnce() -> u32) -> u32 {
+        let key = vn.map_or(0, |k| k as u32 + 1);
+        let slot = &mut self.first[v];
+        if slot.1 == 0 {
+            let id = new();
+            *slot = (key, id + 1);
+            return id;
+        }
+        if slot.0 == key {
+            return slot.1 - 1;
+        }
+        *self.more.entry((v as u32, key)).or_insert_with(new)
+    }
+}
+
+/// The second pass, into arrays of the sizes `counts` gives.
+fn parse<R: BufRead>(reader: R, counts: &Counts) -> Result<Parsed, String> {
+    let mesh_vertices = counts.mesh_vertices();
+    let mut out = Parsed {
+        file_positions: Vec::with_capacity(counts.vertices),
+        file_vertex: Vec::with_capacity(mesh_vertices),
+        normals: Vec::with_capacity(mesh_vertices),
+        triangles: Vec::with_capacity(counts.triangles),
+        polygon_line: None,
+        no_normal_line: None,
+    };
+    let mut vns = Vec::<Vec3>::with_capacity(counts.normals);
+    let mut vts = 0usize;
+    let mut remap = Remap::with_vertices(counts.vertices);
+    let mut face = Vec::new();
+    for_each_line(reader, |ln, tag, it| {
         let nums = |it: std::str::SplitWhitespace<'_>| -> Result<Vec<f64>, String> {
-            it.map(|x| x.parse::<f64>().map_err(|_| format!("line {ln}: {:?} is not a number", short(x)))).collect()
+            it.map(|x| {
+                x.parse::<f64>().map_err(|_| t!("obj-not-a-number", line = ln, word = format!("{:?}", short(x))))
+            })
+            .collect()
         };
         match tag {
             "v" => {
                 let v = nums(it)?;
                 if v.len() < 3 || v[..3].iter().any(|x| !x.is_finite()) {
-                    return Err(format!("line {ln}: a vertex needs 3 finite numbers"));
+                    return Err(t!("obj-vertex-needs", line = ln));
                 }
-                vs.push(DVec3::new(v[0], v[1], v[2]));
+                out.file_positions.push(DVec3::new(v[0], v[1], v[2]));
             }
             "vn" => {
                 let v = nums(it)?;
                 if v.len() != 3 || v.iter().any(|x| !x.is_finite()) {
-                    return Err(format!("line {ln}: a normal needs 3 finite numbers"));
+                    return Err(t!("obj-normal-needs", line = ln));
                 }
                 let n = DVec3::new(v[0], v[1], v[2]);
                 // Scaled first, so 1e-30 or 1e300 components still give a direction.
@@ -108,37 +255,32 @@ fn parse<R: BufRead>(mut reader: R) -> Result<Parsed, String> {
             }
             "vt" => vts += 1,
             "f" => {
-                let mut face = Vec::new();
+                face.clear();
                 for c in it {
                     let mut parts = c.split('/');
-                    let v = index(parts.next().unwrap_or(""), vs.len(), ln, "vertex")?;
-                    if let Some(t) = parts.next().filter(|t| !t.is_empty()) {
-                        index(t, vts, ln, "texture")?;
+                    let v = index(parts.next().unwrap_or(""), out.file_positions.len(), ln, &t!("obj-what-vertex"))?;
+                    if let Some(tc) = parts.next().filter(|tc| !tc.is_empty()) {
+                        index(tc, vts, ln, &t!("obj-what-texture"))?;
                     }
                     let vn = match parts.next() {
-                        Some(s) if !s.is_empty() => Some(index(s, vns.len(), ln, "normal")?),
+                        Some(s) if !s.is_empty() => Some(index(s, vns.len(), ln, &t!("obj-what-normal"))?),
                         _ => None,
                     };
                     if vn.is_none() {
                         out.no_normal_line.get_or_insert(ln);
                     }
-                    let id = *corners.entry((v, vn)).or_insert_with(|| {
-                        out.positions.push(vs[v]);
+                    let id = remap.vertex(v, vn, || {
+                        out.file_vertex.push(v as u32);
                         out.normals.push(vn.map_or(Vec3::ZERO, |k| vns[k]));
-                        (out.positions.len() - 1) as u32
+                        (out.file_vertex.len() - 1) as u32
                     });
                     face.push(id);
                 }
                 if face.len() < 3 {
-                    return Err(format!("line {ln}: a face needs at least 3 corners"));
+                    return Err(t!("obj-face-needs", line = ln));
                 }
                 if face.len() > 3 {
                     out.polygon_line.get_or_insert(ln);
-                }
-                if out.triangles.len() + face.len() - 2 > MAX_OBJ_TRIANGLES {
-                    return Err(format!(
-                        "line {ln}: more than {MAX_OBJ_TRIANGLES} triangles, the most phonglab shades"
-                    ));
                 }
                 for k in 1..face.len() - 1 {
                     out.triangles.push([face[0], face[k], face[k + 1]]);
@@ -146,55 +288,88 @@ fn parse<R: BufRead>(mut reader: R) -> Result<Parsed, String> {
             }
             _ => {}
         }
-    }
+        Ok(())
+    })?;
     if out.triangles.is_empty() {
-        return Err("no faces".into());
+        return Err(t!("obj-no-faces"));
     }
     Ok(out)
+}
+
+/// How positions are centred on their bounding box's centre and scaled to fit a sphere of
+/// `radius`, in f64 and without squaring raw coordinates, so any finite coordinates fit
+/// (1e300 or 1e-300 alike).
+#[derive(Clone, Copy, Debug)]
+struct Fit {
+    centre_half: DVec3,
+    /// Half the largest distance from the centre; not positive (or not finite): every
+    /// position is only moved, by the centre.
+    r_half: f64,
+    radius: f64,
+}
+
+impl Fit {
+    fn of(positions: impl Iterator<Item = DVec3> + Clone, radius: f64) -> Fit {
+        let (lo, hi) = positions
+            .clone()
+            .fold((DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)), |(lo, hi), p| (lo.min(p), hi.max(p)));
+        // Halves, so neither the centre nor an offset overflows at 1e308.
+        let centre_half = lo * 0.25 + hi * 0.25;
+        let fit = Fit { centre_half, r_half: 0.0, radius };
+        let r_half = positions.map(|p| length(fit.offset_half(p))).fold(0.0, f64::max);
+        Fit { r_half, ..fit }
+    }
+
+    fn offset_half(&self, p: DVec3) -> DVec3 {
+        p * 0.5 - self.centre_half
+    }
+
+    fn scales(&self) -> bool {
+        self.r_half > 0.0 && self.r_half.is_finite()
+    }
+
+    /// `p`, placed.
+    fn place(&self, p: DVec3) -> DVec3 {
+        if self.scales() { self.offset_half(p) / self.r_half * self.radius } else { p - self.centre_half * 2.0 }
+    }
+
+    /// The scale applied (1 where only moved).
+    fn scale(&self) -> f64 {
+        if self.scales() { self.radius / self.r_half * 0.5 } else { 1.0 }
+    }
+}
+
+/// A vector's length, scaled first so that no component's square overflows.
+fn length(d: DVec3) -> f64 {
+    let m = d.abs().max_element();
+    if m > 0.0 { m * (d / m).length() } else { 0.0 }
 }
 
 /// Centres `positions` on their bounding box's centre and scales them to fit a sphere of
 /// radius `radius`, in f64 and without squaring raw coordinates, so any finite coordinates
 /// fit (1e300 or 1e-300 alike); returns the scale.
 pub fn fit(positions: &mut [DVec3], radius: f64) -> f64 {
-    let (lo, hi) = positions
-        .iter()
-        .fold((DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
-    // Halves, so neither the centre nor an offset overflows at 1e308.
-    let centre_half = lo * 0.25 + hi * 0.25;
-    let offset_half = |p: DVec3| p * 0.5 - centre_half;
-    let length = |d: DVec3| {
-        let m = d.abs().max_element();
-        if m > 0.0 { m * (d / m).length() } else { 0.0 }
-    };
-    let r_half = positions.iter().map(|p| length(offset_half(*p))).fold(0.0, f64::max);
-    if !(r_half > 0.0 && r_half.is_finite()) {
-        for p in positions.iter_mut() {
-            *p -= centre_half * 2.0;
-        }
-        return 1.0;
-    }
+    let fit = Fit::of(positions.iter().copied(), radius);
     for p in positions.iter_mut() {
-        *p = offset_half(*p) / r_half * radius;
+        *p = fit.place(*p);
     }
-    radius / r_half * 0.5
+    fit.scale()
 }
 
-/// The mesh of `parsed` (positions already as they are to be drawn), with the notes on
-/// what was done: fanned polygons and computed normals.
-fn into_mesh(parsed: Parsed, notes: &mut Vec<String>) -> Mesh {
-    let mut mesh = Mesh::default();
-    for (p, n) in parsed.positions.iter().zip(&parsed.normals) {
-        mesh.push_vertex(p.as_vec3(), *n);
+/// The mesh of `parsed`, each position `place`d (fitted to the view, or as given), with
+/// the notes on what was done: fanned polygons and computed normals. The f64 positions
+/// are freed before the normals are summed.
+fn into_mesh(parsed: Parsed, place: impl Fn(DVec3) -> DVec3, notes: &mut Vec<String>) -> Mesh {
+    let Parsed { file_positions, file_vertex, normals, triangles, polygon_line, no_normal_line } = parsed;
+    let positions: Vec<Vec3> = file_vertex.iter().map(|&v| place(file_positions[v as usize]).as_vec3()).collect();
+    drop(file_positions);
+    drop(file_vertex);
+    let mut mesh = Mesh { positions, normals, triangles };
+    if let Some(ln) = polygon_line {
+        notes.push(t!("obj-note-fanned", line = ln));
     }
-    mesh.triangles = parsed.triangles;
-    if let Some(ln) = parsed.polygon_line {
-        notes.push(format!("faces of more than 3 corners (the first on line {ln}) were fanned into triangles"));
-    }
-    if let Some(ln) = parsed.no_normal_line {
-        notes.push(format!(
-            "faces without normals (the first on line {ln}): their vertices' normals were computed as the area-weighted mean of their faces' normals"
-        ));
+    if let Some(ln) = no_normal_line {
+        notes.push(t!("obj-note-normals", line = ln));
         let mut acc = vec![Vec3::ZERO; mesh.positions.len()];
         for t in &mesh.triangles {
             let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
@@ -222,12 +397,13 @@ pub fn parse_obj(text: &str) -> Result<Mesh, String> {
 /// Positions are kept as given, so they must lie within single precision's range
 /// ([`load_obj`] fits them first, and takes any finite ones).
 pub fn parse_obj_noted(text: &str) -> Result<(Mesh, Vec<String>), String> {
-    let parsed = parse(text.as_bytes())?;
-    if parsed.positions.iter().any(|p| !p.as_vec3().is_finite()) {
-        return Err("coordinates beyond single precision's range: load the file to fit it to the view".into());
+    let counts = count(text.as_bytes())?;
+    let parsed = parse(text.as_bytes(), &counts)?;
+    if parsed.file_vertex.iter().any(|&v| !parsed.file_positions[v as usize].as_vec3().is_finite()) {
+        return Err(t!("obj-beyond-single"));
     }
     let mut notes = Vec::new();
-    let mesh = into_mesh(parsed, &mut notes);
+    let mesh = into_mesh(parsed, |p| p, &mut notes);
     Ok((mesh, notes))
 }
 
@@ -244,28 +420,43 @@ pub struct LoadedObj {
 /// is not a regular file, cannot be read, is over [`MAX_OBJ_BYTES`] or
 /// [`MAX_OBJ_TRIANGLES`], or does not parse; fitted to radius 0.5 in f64.
 pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
-    let cannot = |e: std::io::Error| format!("cannot read {}: {e}", path.display());
+    let shown = path.display().to_string();
+    let cannot = |e: std::io::Error| t!("obj-cannot-read", path = shown.clone(), error = e.to_string());
     let meta = std::fs::metadata(path).map_err(cannot)?;
     if !meta.is_file() {
-        return Err(format!("{} is not a regular file", path.display()));
+        return Err(t!("obj-not-a-file", path = shown.clone()));
     }
     if meta.len() > MAX_OBJ_BYTES {
-        return Err(format!(
-            "{} is {}; phonglab reads OBJ files of at most {} (about {} million triangles)",
-            path.display(),
-            describe_bytes(meta.len()),
-            describe_bytes(MAX_OBJ_BYTES),
-            MAX_OBJ_TRIANGLES / 1_000_000
+        return Err(t!(
+            "obj-too-large",
+            path = shown.clone(),
+            size = describe_bytes(meta.len()),
+            max = describe_bytes(MAX_OBJ_BYTES),
+            millions = (MAX_OBJ_TRIANGLES / 1_000_000).to_string()
         ));
     }
-    let file = std::fs::File::open(path).map_err(cannot)?;
-    let reader = std::io::BufReader::with_capacity(1 << 16, std::io::Read::take(file, MAX_OBJ_BYTES));
-    let mut parsed = parse(reader).map_err(|e| format!("{}: {e}", path.display()))?;
-    let k = fit(&mut parsed.positions, 0.5);
+    let open = || -> Result<_, String> {
+        let file = std::fs::File::open(path).map_err(cannot)?;
+        Ok(std::io::BufReader::with_capacity(1 << 16, std::io::Read::take(file, MAX_OBJ_BYTES)))
+    };
+    let in_file = |e: String| format!("{shown}: {e}");
+    let counts = count(open()?).map_err(in_file)?;
+    let budget = MEMORY_BUDGET.load(Ordering::Relaxed);
+    if counts.load_bytes() > budget {
+        return Err(in_file(t!(
+            "obj-over-budget",
+            triangles = crate::locale::grouped(counts.triangles as u64),
+            bytes = describe_bytes(counts.load_bytes()),
+            budget = describe_bytes(budget)
+        )));
+    }
+    let parsed = parse(open()?, &counts).map_err(in_file)?;
+    let fit = Fit::of(parsed.file_vertex.iter().map(|&v| parsed.file_positions[v as usize]), 0.5);
     let mut notes = Vec::new();
-    let mesh = into_mesh(parsed, &mut notes);
+    let mesh = into_mesh(parsed, |p| fit.place(p), &mut notes);
+    let k = fit.scale();
     let scale = if (1e-3..1e4).contains(&k) { format!("{k:.4}") } else { format!("{k:.4e}") };
-    notes.push(format!("centred and scaled by {scale} to fit the view (radius 0.5)"));
+    notes.push(t!("obj-note-fitted", scale = crate::locale::decimal(&scale)));
     Ok(LoadedObj { mesh, notes })
 }
 

@@ -24,9 +24,9 @@ pub struct Vertices {
     pub normal: Vec<Vec3>,
     /// Gouraud: each vertex's colour per side, as the pipeline interpolates it: OpenGL
     /// clamps primary and secondary each to [0, 1], then adds them; a shader's varying (the
-    /// Phong demo's `fragColor`) is interpolated unclamped.
+    /// Phong demo's `fragColor`) is interpolated unclamped. (The lighter's own results are
+    /// a chunk's scratch, never a whole mesh's: 64 bytes a vertex saved.)
     pub color: [Vec<[f32; 4]>; 2],
-    lit: [Vec<Lit>; 2],
 }
 
 fn unclamped_sum(l: &Lit) -> [f32; 4] {
@@ -61,15 +61,12 @@ impl Vertices {
         let clamps = job.scene.rules.clamps_vertex_colors();
         let m = if gouraud { n } else { 0 };
         for side in 0..2 {
-            self.lit[side].resize(m, Lit::default());
             self.color[side].resize(m, [0.0; 4]);
         }
-        let [lit_front, lit_back] = &mut self.lit;
         let [color_front, color_back] = &mut self.color;
         // Gouraud's outputs, chunk by chunk (none otherwise: the vectors are empty).
-        let lit = lit_front.chunks_mut(GRAIN).zip(lit_back.chunks_mut(GRAIN));
         let color = color_front.chunks_mut(GRAIN).zip(color_back.chunks_mut(GRAIN));
-        let mut gouraud_chunks: Vec<_> = lit.zip(color).map(Some).collect();
+        let mut gouraud_chunks: Vec<_> = color.map(Some).collect();
         gouraud_chunks.resize_with(n.div_ceil(GRAIN), || None);
         self.eye
             .par_chunks_mut(GRAIN)
@@ -87,9 +84,12 @@ impl Vertices {
                     normal[i] = nm * mesh.normals[base + i];
                 }
                 window_vertices(clip, window, width, height);
-                let Some(((f, b), (cf, cb))) = gouraud else { return };
+                let Some((cf, cb)) = gouraud else { return };
                 let r = base..base + eye.len();
                 let (pos, nrm) = (&mesh.positions[r.clone()], &mesh.normals[r]);
+                let mut lit = [[Lit::default(); GRAIN]; 2];
+                let [f, b] = &mut lit;
+                let (f, b) = (&mut f[..eye.len()], &mut b[..eye.len()]);
                 lighter.light_batch(pos, nrm, f, if two { Some(&mut *b) } else { None });
                 let sum = if clamps { clamped_sum } else { unclamped_sum };
                 for (c, l) in cf.iter_mut().zip(f.iter()) {
