@@ -37,6 +37,11 @@ pub struct Cli {
     /// language's (a comma in Portuguese). Typed numbers are read with either.
     #[arg(long, global = true, value_parser = parse_decimal)]
     pub decimal: Option<phonglab_core::locale::DecimalMark>,
+    /// The memory a command may take for what it is asked (a picture's size, a mesh):
+    /// 512M, 8G, ...; default: half of what the system has available. Past it, a command
+    /// says how much it needs and does not start.
+    #[arg(long, global = true, value_name = "SIZE", value_parser = crate::budget::parse_size)]
+    pub memory_budget: Option<u64>,
 }
 
 fn parse_lang(s: &str) -> Result<phonglab_core::locale::Lang, String> {
@@ -662,6 +667,16 @@ fn render(a: &RenderArgs) -> Result<()> {
         job.cull_back = a.cull;
         job
     };
+    let (vertices, triangles) = (job.mesh.positions.len() as u64, job.mesh.triangle_count() as u64);
+    let what = t!(
+        "budget-what-render",
+        width = a.size,
+        height = a.size,
+        count = triangles as i64,
+        triangles = phonglab_core::locale::grouped(triangles)
+    );
+    crate::budget::check(&what, crate::budget::render_bytes(size as u64, size as u64, vertices, triangles))
+        .map_err(anyhow::Error::msg)?;
     let mut r = Renderer::new();
     let t = std::time::Instant::now();
     let (img, stats) = r.render(&job, size, size)?;

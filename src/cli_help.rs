@@ -25,6 +25,7 @@ pub fn arg_message_id(path: &str, arg: &str) -> String {
     match arg {
         "lang" => "cli-lang".to_string(),
         "decimal" => "cli-decimal".to_string(),
+        "memory_budget" => "cli-memory-budget".to_string(),
         _ => format!("cli-arg-{path}-{arg}"),
     }
 }

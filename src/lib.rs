@@ -3,6 +3,7 @@
 pub mod app;
 pub mod atomic_write;
 pub mod bench;
+pub mod budget;
 pub mod cli;
 pub mod cli_help;
 pub mod cost_cmd;

@@ -118,6 +118,10 @@ pub fn run(a: &ScreenshotArgs) -> Result<()> {
     if !(0.5..=4.0).contains(&a.scale) {
         bail!(phonglab_core::t!("err-scale", scale = phonglab_core::locale::decimal(&a.scale.to_string())));
     }
+    let (pw, ph) = ((a.size.0 as f32 * a.scale).round() as u32, (a.size.1 as f32 * a.scale).round() as u32);
+    let needed = crate::budget::window_picture_bytes(u64::from(a.size.0), u64::from(a.size.1), f64::from(a.scale));
+    crate::budget::check(&phonglab_core::t!("budget-what-window", width = pw, height = ph), needed)
+        .map_err(anyhow::Error::msg)?;
     let scene: Vec<&std::path::Path> = a.scene.iter().map(PathBuf::as_path).collect();
     crate::same_file::refuse_output_onto_input(&[&a.output], &scene).map_err(anyhow::Error::msg)?;
     crate::atomic_write::check_file_destination(&a.output)?;

@@ -153,3 +153,30 @@ fn import_refuses_a_given_that_is_not_finite_and_writes_no_inf_or_nan() {
     let text = std::fs::read_to_string(&toml).unwrap();
     assert!(!text.contains("inf") && !text.contains("nan"), "{text}");
 }
+
+#[test]
+fn a_size_past_the_memory_budget_is_refused_with_its_estimate_before_any_work() {
+    let dir = folder("budget");
+    let out = dir.join("x.png");
+    let t = std::time::Instant::now();
+    // 32768 x 32768 pixels: 25.8 GB, past any machine's half; the budget is set small so
+    // the test does not depend on this machine's memory.
+    let o = phonglab(&["--memory-budget", "8G", "screenshot", "--size", "8192x8192", "--scale", "4", "-o", s(&out)]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(e.contains("the window at 32768 x 32768 pixels needs about 25 769 803 776 bytes"), "{e}");
+    assert!(e.contains("memory budget of 8 589 934 592 bytes") && e.contains("--memory-budget SIZE raises it"), "{e}");
+    assert!(t.elapsed().as_secs_f64() < 10.0, "refused before painting ({:?})", t.elapsed());
+    let mesh = dir.join("m.obj");
+    std::fs::write(&mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    let o = phonglab(&["--memory-budget", "100M", "render", "--obj", s(&mesh), "--size", "4096", "-o", s(&out)]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(e.contains("a 4096 x 4096 picture of one triangle needs about 201 32"), "{e}");
+    assert!(!out.exists(), "nothing written");
+    // Within the budget, the same command draws.
+    let o = phonglab(&["--memory-budget", "1G", "render", "--obj", s(&mesh), "--size", "64", "-o", s(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = phonglab(&["--memory-budget", "lots", "render", "--size", "64", "-o", s(&out)]);
+    assert!(stderr(&o).contains("write a size such as 512M, 8G or 1.5G"), "{}", stderr(&o));
+}

@@ -52,6 +52,22 @@ pub fn open_to_read(path: &Path) -> io::Result<File> {
     }
 }
 
+/// The memory the system says is available to a new allocation, in bytes (Linux:
+/// `MemAvailable` in `/proc/meminfo`); `None` where it does not say.
+pub fn available_memory() -> Option<u64> {
+    #[cfg(target_os = "linux")]
+    {
+        let text = std::fs::read_to_string("/proc/meminfo").ok()?;
+        let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
+        let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+        Some(kib * 1024)
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        None
+    }
+}
+
 /// A folder held by this process until the value is dropped (see [`lock_folder`]).
 #[derive(Debug)]
 pub struct FolderLock {

@@ -586,6 +586,15 @@ obj-cannot-read = cannot read { $path }: { $error }
 obj-not-a-file = { $path } is not a regular file
 obj-too-large = { $path } is { $size }; phonglab reads OBJ files of at most { $max } (about { $millions } million triangles)
 obj-over-budget = { $triangles } triangles take { $bytes } to read, more than the memory budget of { $budget } (--memory-budget raises it)
+budget-over = { $what } needs about { $needed }, more than the memory budget of { $budget } ({ $from }); --memory-budget SIZE raises it (e.g. --memory-budget 16G)
+budget-from-option = as --memory-budget asks
+budget-from-system = half of the memory available
+budget-size-refused = { $value }: write a size such as 512M, 8G or 1.5G
+budget-what-render = a { $width } x { $height } picture of { $count ->
+        [one] one triangle
+       *[other] { $triangles } triangles
+    }
+budget-what-window = the window at { $width } x { $height } pixels
 file-kind-code = notebooks and scripts
 cli-export = Write a scene as the student's own code: the worksheet's notebook, a PyOpenGL program, an openFrameworks app, or the GLSL
 cli-import = Read a worksheet-style notebook (.ipynb) or Python script (.py) into a scene file
@@ -895,6 +904,7 @@ cost-approx-no-renormalisation = no renormalisation
 cli-about = An explorer for OpenGL's fixed-function vertex lighting and Gouraud/Phong/Flat shading
 cli-lang = The language of what phonglab says: en, pt-PT or pt-BR (default: the system's, from LC_ALL, LC_MESSAGES or LANG). JSON, CSV and scene files keep English keys
 cli-decimal = How numbers meant for people are written: point (0.5) or comma (0,5); default: the language's (a comma in Portuguese). Typed numbers are read with either
+cli-memory-budget = The memory a command may take for what it is asked (a picture's size, a mesh): 512M, 8G, ...; default: half of what the system has available. Past it, a command says how much it needs and does not start
 cli-eval = Evaluate glref cases (JSON) and print the lit colours as JSON
 cli-explain = Print the worked calculation of a vertex, step by step, in the worksheet's order
 cli-render = Render the shaded view (sphere, teapot or cylinder) to a PNG

@@ -586,6 +586,15 @@ obj-cannot-read = não é possível ler { $path }: { $error }
 obj-not-a-file = { $path } não é um ficheiro normal
 obj-too-large = { $path } tem { $size }; o phonglab lê ficheiros OBJ de no máximo { $max } (cerca de { $millions } milhões de triângulos)
 obj-over-budget = ler { $triangles } triângulos ocupa { $bytes }, mais do que o orçamento de memória de { $budget } (--memory-budget aumenta-o)
+budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçamento de memória de { $budget } ({ $from }); --memory-budget TAMANHO aumenta-o (por exemplo --memory-budget 16G)
+budget-from-option = como pede --memory-budget
+budget-from-system = metade da memória disponível
+budget-size-refused = { $value }: escreva um tamanho como 512M, 8G ou 1,5G
+budget-what-render = uma imagem de { $width } x { $height } com { $count ->
+        [one] um triângulo
+       *[other] { $triangles } triângulos
+    }
+budget-what-window = a janela a { $width } x { $height } píxeis
 file-kind-code = cadernos e programas
 cli-export = Escrever uma cena como o código do próprio aluno: o caderno da ficha, um programa PyOpenGL, uma app openFrameworks, ou o GLSL
 cli-import = Ler um caderno (.ipynb) ou programa em Python (.py) no estilo da ficha para um ficheiro de cena
@@ -895,6 +904,7 @@ cost-approx-no-renormalisation = sem renormalizar
 cli-about = Um explorador da iluminação por vértice da função fixa do OpenGL e dos sombreamentos de Gouraud, Phong e Flat
 cli-lang = A língua do que o phonglab diz: en, pt-PT ou pt-BR (por omissão, a do sistema: LC_ALL, LC_MESSAGES ou LANG). JSON, CSV e ficheiros de cena mantêm as chaves em inglês
 cli-decimal = Como se escrevem os números para pessoas: point (0.5) ou comma (0,5); por omissão, o da língua (vírgula em português). Os números escritos leem-se com qualquer um
+cli-memory-budget = A memória que um comando pode ocupar com o que lhe é pedido (o tamanho de uma imagem, uma malha): 512M, 8G, ...; por omissão: metade da que o sistema tem disponível. Acima dela, um comando diz quanto precisa e não começa
 cli-eval = Calcular casos glref (JSON) e imprimir as cores iluminadas em JSON
 cli-explain = Imprimir o cálculo da cor de um vértice, passo a passo, pela ordem da ficha
 cli-render = Desenhar a vista sombreada (esfera, bule ou cilindro) num PNG

@@ -1,0 +1,128 @@
+//! The memory budget: a command that allocates in proportion to a size the user gives (a
+//! picture's size, a mesh's triangles) estimates the bytes first, and refuses past the
+//! budget, saying the estimate and the option that raises it, instead of failing half-way
+//! or exhausting the machine.
+//!
+//! The budget is `--memory-budget SIZE` where given (`512M`, `8G`, `1.5GiB`, or bytes),
+//! else half the memory the system says is available at the start
+//! ([`crate::platform::os::available_memory`]), else 4 GiB. The core's OBJ reader gets the
+//! same budget ([`phonglab_core::mesh::obj::set_memory_budget`]).
+//!
+//! The estimates are upper bounds of what phonglab itself allocates, from its arrays'
+//! sizes (each named below), not of the process's fixed part (the code, the fonts: tens of
+//! megabytes).
+
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use phonglab_core::mesh::obj::describe_bytes;
+use phonglab_core::t;
+
+/// The budget in bytes, once set (0: not set yet).
+static BUDGET: AtomicU64 = AtomicU64::new(0);
+
+/// Where the budget came from, for the message.
+static FROM_OPTION: AtomicU64 = AtomicU64::new(0);
+
+/// When the system does not say how much memory is available.
+const FALLBACK: u64 = 4 << 30;
+
+/// Sets the budget: `asked` (`--memory-budget`) or the default, for this process and for
+/// the core's OBJ reader.
+pub fn set(asked: Option<u64>) {
+    let bytes = asked.unwrap_or_else(default_budget);
+    BUDGET.store(bytes, Ordering::Relaxed);
+    FROM_OPTION.store(u64::from(asked.is_some()), Ordering::Relaxed);
+    phonglab_core::mesh::obj::set_memory_budget(bytes);
+}
+
+/// Half the memory available now, or [`FALLBACK`].
+fn default_budget() -> u64 {
+    crate::platform::os::available_memory().map_or(FALLBACK, |a| a / 2)
+}
+
+/// The budget in bytes (the default until [`set`] is called).
+pub fn bytes() -> u64 {
+    match BUDGET.load(Ordering::Relaxed) {
+        0 => default_budget(),
+        b => b,
+    }
+}
+
+/// Refuses `what` (in words, in the user's language) when its estimate `needed` is over
+/// the budget; the message gives both and how to raise the budget.
+pub fn check(what: &str, needed: u64) -> Result<(), String> {
+    let budget = bytes();
+    if needed <= budget {
+        return Ok(());
+    }
+    let from =
+        if FROM_OPTION.load(Ordering::Relaxed) == 1 { t!("budget-from-option") } else { t!("budget-from-system") };
+    Err(t!("budget-over", what = what, needed = describe_bytes(needed), budget = describe_bytes(budget), from = from))
+}
+
+/// Reads a size: a number of bytes with an optional unit, K, M, G or T (powers of 1024;
+/// `KiB`, `MB` and `GB` are read the same way), a decimal point or comma allowed.
+pub fn parse_size(text: &str) -> Result<u64, String> {
+    let refused = || t!("budget-size-refused", value = format!("{text:?}"));
+    let t = text.trim();
+    let split = t.find(|c: char| c.is_ascii_alphabetic()).unwrap_or(t.len());
+    let (number, unit) = t.split_at(split);
+    let number: f64 = number.trim().replace(',', ".").parse().map_err(|_| refused())?;
+    let unit = unit.trim().to_ascii_uppercase();
+    let shift = match unit.trim_end_matches('B').trim_end_matches('I') {
+        "" => 0,
+        "K" => 10,
+        "M" => 20,
+        "G" => 30,
+        "T" => 40,
+        _ => return Err(refused()),
+    };
+    let bytes = number * (1u64 << shift) as f64;
+    if !(bytes.is_finite() && bytes >= 1.0 && bytes < u64::MAX as f64) {
+        return Err(refused());
+    }
+    Ok(bytes as u64)
+}
+
+/// What rendering a mesh into a `width` x `height` picture allocates: the image (RGBA, and
+/// the PNG's rows and compressed copy: 12 bytes a pixel), each vertex's eye and clip
+/// positions, window coordinates, normal and two colours (96 bytes), each triangle's
+/// raster setup, bin entry and face colours (176 bytes), and the mesh itself (24 bytes a
+/// vertex, 12 a triangle).
+pub fn render_bytes(width: u64, height: u64, vertices: u64, triangles: u64) -> u64 {
+    width * height * 12 + vertices * (96 + 24) + triangles * (176 + 12)
+}
+
+/// What painting the whole window into a picture of `width` x `height` points at `scale`
+/// pixels a point allocates: the canvas (four f32 a pixel), its RGBA copy and the PNG's
+/// rows (24 bytes a pixel).
+pub fn window_picture_bytes(width: u64, height: u64, scale: f64) -> u64 {
+    let pixels = (width as f64 * scale).round() * (height as f64 * scale).round();
+    (pixels * 24.0) as u64
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_read_as_people_write_them() {
+        assert_eq!(parse_size("512M"), Ok(512 << 20));
+        assert_eq!(parse_size("8G"), Ok(8 << 30));
+        assert_eq!(parse_size("1.5GiB"), Ok(3 << 29));
+        assert_eq!(parse_size("1,5 GB"), Ok(3 << 29));
+        assert_eq!(parse_size("4096"), Ok(4096));
+        for bad in ["", "G", "-1G", "0", "12X", "1e30T", "nan"] {
+            assert!(parse_size(bad).is_err(), "{bad:?}");
+        }
+    }
+
+    #[test]
+    fn over_the_budget_says_the_estimate_and_the_option() {
+        set(Some(1 << 30));
+        assert!(check("a picture", 1 << 29).is_ok());
+        let e = check("a picture of 32768 x 32768 pixels", 24 << 30).unwrap_err();
+        assert!(e.contains("a picture of 32768 x 32768 pixels needs about 25 769 803 776 bytes"), "{e}");
+        assert!(e.contains("the memory budget of 1 073 741 824 bytes") && e.contains("--memory-budget"), "{e}");
+    }
+}
