@@ -593,6 +593,21 @@ fn cost(a: &CostArgs) -> Result<()> {
     })
 }
 
+/// Refuses a render of `job` into a `size` x `size` picture past the memory budget.
+fn within_budget(job: &phonglab_core::render::Job<'_>, size: u32) -> Result<()> {
+    let (vertices, triangles) = (job.mesh.positions.len() as u64, job.mesh.triangle_count() as u64);
+    let what = t!(
+        "budget-what-render",
+        width = size,
+        height = size,
+        count = triangles as i64,
+        triangles = phonglab_core::locale::grouped(triangles)
+    );
+    let size = u64::from(size);
+    crate::budget::check(&what, crate::budget::render_bytes(size, size, vertices, triangles))
+        .map_err(anyhow::Error::msg)
+}
+
 fn render(a: &RenderArgs) -> Result<()> {
     use phonglab_core::mesh::{sphere, teapot};
     use phonglab_core::render::Renderer;
@@ -667,16 +682,7 @@ fn render(a: &RenderArgs) -> Result<()> {
         job.cull_back = a.cull;
         job
     };
-    let (vertices, triangles) = (job.mesh.positions.len() as u64, job.mesh.triangle_count() as u64);
-    let what = t!(
-        "budget-what-render",
-        width = a.size,
-        height = a.size,
-        count = triangles as i64,
-        triangles = phonglab_core::locale::grouped(triangles)
-    );
-    crate::budget::check(&what, crate::budget::render_bytes(size as u64, size as u64, vertices, triangles))
-        .map_err(anyhow::Error::msg)?;
+    within_budget(&job, a.size)?;
     let mut r = Renderer::new();
     let t = std::time::Instant::now();
     let (img, stats) = r.render(&job, size, size)?;
