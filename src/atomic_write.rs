@@ -407,6 +407,12 @@ fn recover_locked(dir: &Path) -> io::Result<()> {
     match std::fs::read(&journal) {
         Ok(bytes) => {
             let j: Journal = serde_json::from_slice(&bytes).map_err(io::Error::other)?;
+            // A journal is read from a folder that may have come from anyone (an unzipped
+            // set): it may only name plain files and a staging folder of phonglab's.
+            let staging_ok = j.staging.starts_with(&format!(".{STAGING}.")) && j.staging.ends_with(".tmp");
+            if !plain_name(&j.staging) || !staging_ok || !j.new.iter().chain(&j.old).all(|n| plain_name(n)) {
+                return Err(io::Error::new(io::ErrorKind::InvalidData, "the journal names files outside its folder"));
+            }
             finish_swap(dir, &j)?;
             std::fs::remove_file(&journal)?;
             crate::platform::os::sync_folder(dir);
@@ -777,6 +783,28 @@ mod tests {
             std::fs::write(dir.join(JOURNAL), serde_json::to_vec(&j).unwrap()).unwrap();
             recover(&dir).unwrap();
             assert!(listing(&dir) == new, "state {state} ({a}, {b}, {d}, {c}): the new set, whole, and nothing else");
+        }
+    }
+
+    #[test]
+    fn a_journal_that_names_files_outside_its_folder_is_refused_and_nothing_moves() {
+        let outside = temp_dir("journal-outside");
+        std::fs::write(outside.join("precious.txt"), "mine").unwrap();
+        for (staging, old) in [
+            (".phonglab-set.1.0.tmp", "../phonglab-atomic-journal-outside-X/precious.txt"),
+            ("../phonglab-atomic-journal-outside-X", "a.md"),
+            (".phonglab-set.1.0.tmp", "/etc/passwd"),
+        ] {
+            let pid = std::process::id().to_string();
+            let (staging, old) = (staging.replace('X', &pid), old.replace('X', &pid));
+            let dir = temp_dir("journal-hostile");
+            old_set(&dir);
+            let j = Journal { staging, new: vec!["a.md".into()], old: vec![old] };
+            std::fs::write(dir.join(JOURNAL), serde_json::to_vec(&j).unwrap()).unwrap();
+            let e = write_set(&dir, &new_set(), |n| n.ends_with(".md")).unwrap_err();
+            assert_eq!(e.what, "write-step-recover");
+            assert_eq!(std::fs::read(outside.join("precious.txt")).unwrap(), b"mine");
+            assert!(dir.join("c.md").exists(), "the folder is untouched");
         }
     }
 

@@ -29,6 +29,12 @@ pub struct Vertices {
     pub color: [Vec<[f32; 4]>; 2],
 }
 
+thread_local! {
+    /// Each thread's lighter results for one chunk, front and back (a chunk's scratch,
+    /// never a whole mesh's).
+    static SCRATCH: std::cell::RefCell<[Vec<Lit>; 2]> = const { std::cell::RefCell::new([Vec::new(), Vec::new()]) };
+}
+
 fn unclamped_sum(l: &Lit) -> [f32; 4] {
     let (p, s) = (l.primary, l.secondary);
     [p[0] + s[0], p[1] + s[1], p[2] + s[2], p[3]]
@@ -87,19 +93,22 @@ impl Vertices {
                 let Some((cf, cb)) = gouraud else { return };
                 let r = base..base + eye.len();
                 let (pos, nrm) = (&mesh.positions[r.clone()], &mesh.normals[r]);
-                let mut lit = [[Lit::default(); GRAIN]; 2];
-                let [f, b] = &mut lit;
-                let (f, b) = (&mut f[..eye.len()], &mut b[..eye.len()]);
-                lighter.light_batch(pos, nrm, f, if two { Some(&mut *b) } else { None });
-                let sum = if clamps { clamped_sum } else { unclamped_sum };
-                for (c, l) in cf.iter_mut().zip(f.iter()) {
-                    *c = sum(l);
-                }
-                // One-sided: the back side's colour is the front's.
-                let back = if two { &*b } else { &*f };
-                for (c, l) in cb.iter_mut().zip(back) {
-                    *c = sum(l);
-                }
+                SCRATCH.with_borrow_mut(|[f, b]| {
+                    // The thread's scratch, sized once: no allocation or clearing per chunk.
+                    f.resize(GRAIN, Lit::default());
+                    b.resize(GRAIN, Lit::default());
+                    let (f, b) = (&mut f[..eye.len()], &mut b[..eye.len()]);
+                    lighter.light_batch(pos, nrm, f, if two { Some(&mut *b) } else { None });
+                    let sum = if clamps { clamped_sum } else { unclamped_sum };
+                    for (c, l) in cf.iter_mut().zip(f.iter()) {
+                        *c = sum(l);
+                    }
+                    // One-sided: the back side's colour is the front's.
+                    let back = if two { &*b } else { &*f };
+                    for (c, l) in cb.iter_mut().zip(back) {
+                        *c = sum(l);
+                    }
+                });
             });
     }
 }
