@@ -119,7 +119,8 @@ fn view() -> BoxedStrategy<View> {
 
 prop_compose! {
     fn document()(
-        name in "\\PC{0,40}",
+        // Any printable name (a scene file refuses control characters and line separators).
+        name in "[^\\p{C}\\p{Zl}\\p{Zp}]{0,40}",
         camera in camera(),
         lights in prop::collection::vec(light(), 0..=8),
         material in material(),
