@@ -21,7 +21,7 @@ fn main() -> ExitCode {
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
     let args = cli::Cli::parse_localised();
     phonglab_core::locale::set_default(args.locale());
-    phonglab::budget::set(args.memory_budget);
+    phonglab::io::budget::set(args.memory_budget);
     match args.command {
         Some(command) => cli::run(command),
         None => match phonglab::app::run(

@@ -125,7 +125,7 @@ impl WebApp {
             return;
         }
         use phonglab_core::Shading;
-        let figures = crate::bench::render_figures(20, 512, |_, s| s != Shading::Flat);
+        let figures = crate::cli::bench::render_figures(20, 512, |_, s| s != Shading::Flat);
         self.bench = Some(match figures {
             Ok(f) => f
                 .iter()
@@ -255,7 +255,7 @@ impl BenchPicture {
         if !url_asks("picture", "bench") {
             return None;
         }
-        let [(_, sphere), (_, teapot)] = crate::bench::bench_meshes();
+        let [(_, sphere), (_, teapot)] = crate::cli::bench::bench_meshes();
         let mesh = if url_asks("object", "teapot") { teapot } else { sphere };
         let shading = if url_asks("shading", "phong") { Shading::Phong } else { Shading::Gouraud };
         Some(BenchPicture {
@@ -279,8 +279,8 @@ impl BenchPicture {
             if let Some(e) = self.error.lock().unwrap_or_else(|e| e.into_inner()).clone() {
                 return Err(e);
             }
-            let shader = crate::gpu::wgsl_for(job.scene, job.options, job.shading)?;
-            let uniforms = crate::gpu::uniform_bytes(&shader.uniforms, job.scene, &job.clip_from_object)?;
+            let shader = crate::paint::gpu::wgsl_for(job.scene, job.options, job.shading)?;
+            let uniforms = crate::paint::gpu::uniform_bytes(&shader.uniforms, job.scene, &job.clip_from_object)?;
             let picture = crate::app::gpu_view::Picture {
                 slot: u64::MAX,
                 wgsl: shader.vertex.into(),

@@ -294,9 +294,9 @@ fn cost_prints_a_table_and_writes_the_csv_the_chart_and_heat_maps() {
     let f32_row = rows.iter().find(|r| r.contains("(f32)")).unwrap();
     let max: f64 = f32_row.split(',').nth(8).unwrap().parse().unwrap();
     assert!(max <= 0.5 + 1e-3, "{f32_row}");
-    let (w, h, _) = phonglab::image_io::read_png(&dir.join("cost.png")).unwrap();
+    let (w, h, _) = phonglab::io::image::read_png(&dir.join("cost.png")).unwrap();
     assert!(w >= 960 && h >= 400, "{w}x{h}");
-    let (w, h, _) = phonglab::image_io::read_png(&dir.join("heat-sphere-phong-32.png")).unwrap();
+    let (w, h, _) = phonglab::io::image::read_png(&dir.join("heat-sphere-phong-32.png")).unwrap();
     assert_eq!((w, h), (48, 48));
     let _ = std::fs::remove_dir_all(&dir);
     // Bad arguments are refused with a message.
@@ -322,7 +322,7 @@ fn bench_ui_times_every_case_with_every_panel_open() {
 fn the_performance_records_cost_tables_are_the_committed_csv() {
     let root = env!("CARGO_MANIFEST_DIR");
     let csv = std::fs::read_to_string(format!("{root}/docs/cost.csv")).unwrap();
-    let tables = phonglab::cost_cmd::markdown_tables(&csv).unwrap();
+    let tables = phonglab::cli::cost::markdown_tables(&csv).unwrap();
     let readme = std::fs::read_to_string(format!("{root}/docs/performance.md")).unwrap();
     let begin = readme.find("<!-- cost-tables:begin").expect("docs/performance.md marks its cost tables");
     let begin = begin + readme[begin..].find("-->\n").unwrap() + 4;
@@ -342,7 +342,7 @@ fn the_performance_records_cost_tables_are_the_committed_csv() {
 fn a_quoted_label_keeps_its_columns() {
     let csv = "object,variant,question,shading,level,triangles,ms_per_frame,mean_error_255,max_error_255,share_over_1_255\n\
                sphere,\"Phong 32, llvmpipe pow\",Approximation,Phong,32,1984,6.5,0.70,111.9,0.171\n";
-    let t = phonglab::cost_cmd::markdown_tables(csv).unwrap();
+    let t = phonglab::cli::cost::markdown_tables(csv).unwrap();
     assert!(t.contains("| Phong 32, llvmpipe pow | 1984 | 6.50 | 0.70 | 111.9 | 17.1 % |"), "{t}");
 }
 

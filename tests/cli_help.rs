@@ -7,7 +7,7 @@ use std::collections::BTreeSet;
 
 use clap::CommandFactory;
 use phonglab::cli::Cli;
-use phonglab::cli_help::{about_message_id, command_paths, described_arguments, described_values, value_message_id};
+use phonglab::cli::help::{about_message_id, command_paths, described_arguments, described_values, value_message_id};
 use phonglab_core::locale::{Lang, Locale, has_message, message_ids, set_default, tr_in};
 
 /// Every message id the help asks for: commands' abouts, arguments and values.
@@ -48,7 +48,7 @@ fn every_command_argument_and_value_has_its_message_in_every_language() {
 fn the_localised_command_tree_is_one_clap_accepts_in_every_language() {
     for lang in Lang::ALL {
         set_default(Locale::of(lang));
-        phonglab::cli_help::localised(Cli::command()).debug_assert();
+        phonglab::cli::help::localised(Cli::command()).debug_assert();
     }
     set_default(Locale::of(Lang::En));
 }

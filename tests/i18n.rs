@@ -73,9 +73,9 @@ fn every_message_the_code_asks_for_is_in_every_language() {
     // argument, checked in tests/cli_help.rs).
     let all_source = sources.concat();
     let root = <phonglab::cli::Cli as clap::CommandFactory>::command();
-    let abouts: BTreeSet<String> = phonglab::cli_help::command_paths(&root)
+    let abouts: BTreeSet<String> = phonglab::cli::help::command_paths(&root)
         .iter()
-        .map(|(path, _)| phonglab::cli_help::about_message_id(path))
+        .map(|(path, _)| phonglab::cli::help::about_message_id(path))
         .collect();
     let unused: Vec<String> = message_ids(Lang::En)
         .into_iter()

@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::Parser;
-use phonglab::atomic_write::{Fault, with_fault};
 use phonglab::cli::{self, Cli};
+use phonglab::io::atomic_write::{Fault, with_fault};
 
 fn temp_dir(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("phonglab-lost-{name}-{}", std::process::id()));
@@ -129,7 +129,7 @@ fn an_exercise_set_killed_at_any_step_is_finished_or_undone_by_the_next_run() {
         }
         killed += 1;
         // The next run (of any set) finishes the swap or throws the staging away first.
-        phonglab::atomic_write::recover(&out).unwrap();
+        phonglab::io::atomic_write::recover(&out).unwrap();
         let after = listing(&out);
         assert!(
             after == old || after == new,

@@ -9,7 +9,7 @@
 //! per channel; where an object covers under 1 % of the image (the cylinder seen end-on)
 //! the numbers of covered pixels agree within 15 % instead.
 
-use phonglab::image_io::Difference;
+use phonglab::io::image::Difference;
 use phonglab_core::render::Renderer;
 use phonglab_core::{ObjectKind, Shading, library};
 
@@ -24,7 +24,7 @@ fn mesa_rgba(frame: u32, object: ObjectKind, shading: Shading) -> (usize, usize,
         object.label().to_lowercase(),
         shading.label().to_lowercase()
     );
-    phonglab::image_io::read_png(std::path::Path::new(&path)).unwrap()
+    phonglab::io::image::read_png(std::path::Path::new(&path)).unwrap()
 }
 
 fn mesa(frame: u32, object: ObjectKind, shading: Shading) -> (usize, usize, Vec<[u8; 3]>) {

@@ -18,7 +18,7 @@
 
 use std::path::{Path, PathBuf};
 
-use phonglab::image_io::{Difference, read_png};
+use phonglab::io::image::{Difference, read_png};
 use phonglab_core::exercise::{Level, Spec, generate};
 use phonglab_core::export::pyopengl::program;
 use phonglab_core::render::Renderer;

@@ -3,7 +3,7 @@
 //! harness's per-pixel GLSL. Over the pixels both cover, the mean absolute difference is
 //! at most 1/255 per channel; the covered areas agree within 0.5 % of the image.
 
-use phonglab::image_io::Difference;
+use phonglab::io::image::Difference;
 use phonglab_core::Shading;
 use phonglab_core::mesh::{Mesh, sphere, teapot};
 use phonglab_core::presets::bench_scene;
@@ -12,7 +12,7 @@ use phonglab_core::render::Renderer;
 /// Ours (first) against Mesa's image `name` (second).
 fn compare(mesh: &Mesh, shading: Shading, name: &str) -> Difference {
     let path = format!("{}/tests/data/mesa_bench/{name}.png", env!("CARGO_MANIFEST_DIR"));
-    let (w, h, theirs) = phonglab::image_io::read_png(std::path::Path::new(&path)).unwrap();
+    let (w, h, theirs) = phonglab::io::image::read_png(std::path::Path::new(&path)).unwrap();
     let scene = bench_scene(199);
     let job = phonglab_core::shaded::bench_job(&scene, mesh, shading);
     let mut r = Renderer::new();

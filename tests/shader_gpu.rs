@@ -1,11 +1,11 @@
 //! The generated WGSL, run by wgpu on the machine's adapter (the software one here, as the
-//! UI snapshot tests use) through the app's own GPU path (`phonglab::gpu`), draws the
+//! UI snapshot tests use) through the app's own GPU path (`phonglab::paint::gpu`), draws the
 //! benchmark scene, the shipped scenes and the Phong demo (lit in object space, its normal
 //! not renormalised) as the CPU renderer does: coverage identical but for at most 1 % of
 //! the silhouette, and a mean difference over the covered pixels within 1/255 per channel,
 //! Gouraud and Phong.
 
-use phonglab::image_io::Difference;
+use phonglab::io::image::Difference;
 use phonglab_core::mesh::sphere;
 use phonglab_core::render::{Job, Renderer};
 use phonglab_core::shader::ShaderShading;
@@ -31,14 +31,14 @@ fn bench_images(shading: ShaderShading) -> (Vec<u8>, Vec<u8>, [u8; 3]) {
     gpu_image(&job)
 }
 
-/// The GPU's picture of `job` (the app's path: `phonglab::gpu`), the CPU renderer's, and
+/// The GPU's picture of `job` (the app's path: `phonglab::paint::gpu`), the CPU renderer's, and
 /// the background.
 fn gpu_image(job: &Job<'_>) -> (Vec<u8>, Vec<u8>, [u8; 3]) {
     let mut r = Renderer::new();
     let cpu = r.render(job, SIZE as usize, SIZE as usize).unwrap().0.rgba.clone();
     let bg = job.background.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
     let rs = egui_kittest::wgpu::create_render_state(egui_kittest::wgpu::default_wgpu_setup(), Default::default());
-    let gpu = phonglab::gpu::render(&rs.device, &rs.queue, job, SIZE).unwrap();
+    let gpu = phonglab::paint::gpu::render(&rs.device, &rs.queue, job, SIZE).unwrap();
     (gpu, cpu, bg)
 }
 

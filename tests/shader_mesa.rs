@@ -15,7 +15,7 @@
 
 use std::path::{Path, PathBuf};
 
-use phonglab::image_io::Difference;
+use phonglab::io::image::Difference;
 use phonglab_core::mesh::{Mesh, sphere};
 use phonglab_core::render::{Job, Renderer};
 use phonglab_core::shader::{Lang, ShaderShading, generate_for, uniform_value};
@@ -151,7 +151,7 @@ fn the_generated_glsl_under_mesa_draws_what_the_cpu_renderer_draws() {
     for s in samples() {
         for (cpu_shading, _, word) in shadings() {
             let name = format!("{}_{word}", s.name);
-            let (w, h, mesa) = phonglab::image_io::read_png(&data.join(format!("{name}.png")))
+            let (w, h, mesa) = phonglab::io::image::read_png(&data.join(format!("{name}.png")))
                 .unwrap_or_else(|e| panic!("{name}: {e}"));
             assert_eq!((w, h), (SIZE, SIZE), "{name}");
             let mut r = Renderer::new();

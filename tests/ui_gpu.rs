@@ -9,7 +9,7 @@ use egui_kittest::kittest::Queryable;
 use phonglab::app::gpu_view::{self, RendererChoice};
 use phonglab::app::shaded::DrawnBy;
 use phonglab::app::{AppState, app_ui};
-use phonglab::image_io::Difference;
+use phonglab::io::image::Difference;
 use phonglab_core::render::Renderer;
 use phonglab_core::{PowFn, Shading};
 
@@ -146,7 +146,7 @@ fn the_shader_window_shows_the_program_the_gpu_runs() {
         h.run_steps(2);
         let state = h.state();
         let setup = state.doc.shaded_setup(PowFn::Exact);
-        let runs = phonglab::gpu::wgsl_for(&setup.scene, setup.options, shading).unwrap().vertex;
+        let runs = phonglab::paint::gpu::wgsl_for(&setup.scene, setup.options, shading).unwrap().vertex;
         assert_eq!(state.shader.shown, runs, "{shading:?}");
     }
 }

@@ -42,12 +42,12 @@ pub fn shaded_png(state: &AppState) -> Result<Vec<u8>, String> {
     let job = setup.job(&mesh);
     let mut renderer = phonglab_core::render::Renderer::new();
     let (img, _) = renderer.render(&job, PNG_SIZE, PNG_SIZE).map_err(|e| e.to_string())?;
-    crate::image_io::encode_png(img.width, img.height, &img.rgba).map_err(|e| e.to_string())
+    crate::io::image::encode_png(img.width, img.height, &img.rgba).map_err(|e| e.to_string())
 }
 
 /// An exercise set as a zip file's bytes: every file `phonglab exercise` writes.
 pub fn exercises_zip(e: &ExportState) -> Result<Vec<u8>, String> {
-    let args = crate::exercise_cmd::ExerciseArgs {
+    let args = crate::cli::exercise::ExerciseArgs {
         seed: u64::from(e.seed),
         count: e.count.clamp(1, 100),
         level: Some(e.level.clamp(1, 4) as u8),
@@ -56,8 +56,8 @@ pub fn exercises_zip(e: &ExportState) -> Result<Vec<u8>, String> {
         worksheet: false,
         out: std::path::PathBuf::from("."),
     };
-    let (_, set) = crate::exercise_cmd::exercise_set(&args).map_err(|e| format!("{e:#}"))?;
-    Ok(crate::zip_store::zip_stored(&set.files))
+    let (_, set) = crate::cli::exercise::exercise_set(&args).map_err(|e| format!("{e:#}"))?;
+    Ok(crate::io::zip::zip_stored(&set.files))
 }
 
 /// Saves (or downloads) `bytes` as `name`, and says so.
@@ -80,7 +80,7 @@ pub fn code_file(state: &AppState, target: Target) -> Result<(String, Vec<u8>, &
     if target == Target::OpenFrameworks {
         let files: Vec<(String, Vec<u8>)> =
             written.into_iter().map(|(name, text)| (format!("src/{name}"), text.into_bytes())).collect();
-        return Ok(("phonglab-ofApp.zip".into(), crate::zip_store::zip_stored(&files), "application/zip"));
+        return Ok(("phonglab-ofApp.zip".into(), crate::io::zip::zip_stored(&files), "application/zip"));
     }
     let mime = match target {
         Target::Notebook => "application/x-ipynb+json",

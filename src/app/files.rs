@@ -13,12 +13,12 @@ use super::state::{AppState, Message};
 use crate::platform::files as platform;
 
 /// The largest notebook or script opened (a notebook with its outputs is larger than a scene).
-pub const MAX_CODE_BYTES: u64 = 16 * crate::input_file::MAX_SCENE_BYTES;
+pub const MAX_CODE_BYTES: u64 = 16 * crate::io::input_file::MAX_SCENE_BYTES;
 
-/// Writes `doc` to `path`, whole or not at all ([`crate::atomic_write::write`]).
+/// Writes `doc` to `path`, whole or not at all ([`crate::io::atomic_write::write`]).
 pub fn write_document(doc: &Document, path: &Path) -> Result<(), String> {
     let text = doc.to_toml().map_err(|e| e.to_string())?;
-    crate::atomic_write::write(path, text.as_bytes()).map_err(|e| e.to_string())
+    crate::io::atomic_write::write(path, text.as_bytes()).map_err(|e| e.to_string())
 }
 
 /// The app's first scene when it is started with a file (`phonglab FILE.toml`): that file,
@@ -44,9 +44,9 @@ fn open_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
     }
     let (cap, kind) = match student_code(path) {
         Some(_) => (MAX_CODE_BYTES, t!("file-kind-code")),
-        None => (crate::input_file::MAX_SCENE_BYTES, t!("file-kind-scenes")),
+        None => (crate::io::input_file::MAX_SCENE_BYTES, t!("file-kind-scenes")),
     };
-    let bytes = crate::input_file::read_capped(path, cap, &kind)?;
+    let bytes = crate::io::input_file::read_capped(path, cap, &kind)?;
     open_bytes_or_why(state, &bytes, path)
 }
 
@@ -150,7 +150,7 @@ pub fn save(state: &mut AppState, path: &Path) {
     // The scene's mesh is read from its file: saving the scene over it would lose it.
     let mesh: Vec<&Path> = state.doc.view.obj.iter().map(Path::new).collect();
     let written =
-        crate::same_file::refuse_output_onto_input(&[path], &mesh).and_then(|()| write_document(&state.doc, path));
+        crate::io::same_file::refuse_output_onto_input(&[path], &mesh).and_then(|()| write_document(&state.doc, path));
     state.message = Some(match written {
         Ok(()) => Message::Info(t!("saved", path = path.display().to_string())),
         Err(e) => Message::Refused(t!("not-saved", error = e)),

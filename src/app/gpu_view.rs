@@ -1,4 +1,4 @@
-//! The shaded view drawn on the GPU: the scene's generated WGSL ([`crate::gpu`]) run
+//! The shaded view drawn on the GPU: the scene's generated WGSL ([`crate::paint::gpu`]) run
 //! through eframe's wgpu backend, as an egui_wgpu paint callback.
 //!
 //! The callback's `prepare` draws the mesh into an offscreen colour and depth target (the
@@ -15,7 +15,7 @@ use eframe::wgpu;
 use phonglab_core::mesh::Mesh;
 use phonglab_core::{Document, PowFn, Shading};
 
-use crate::gpu;
+use crate::paint::gpu;
 
 /// Which renderer draws the shaded view.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -224,8 +224,8 @@ fn swatch_ui(ui: &mut Ui, doc: &phonglab_core::Document) {
 /// Every scene file shipped under `assets/scenes/`, grouped, each with its material's swatch;
 /// the 24 Red Book teapots in a submenu.
 fn presets_menu_ui(ui: &mut Ui, state: &mut AppState) {
-    let files = crate::scenes::scene_files();
-    let mut entry = |ui: &mut Ui, f: &crate::scenes::SceneFile| {
+    let files = crate::io::scenes::scene_files();
+    let mut entry = |ui: &mut Ui, f: &crate::io::scenes::SceneFile| {
         ui.horizontal(|ui| {
             swatch_ui(ui, &f.doc);
             let title = f.title();
@@ -235,7 +235,7 @@ fn presets_menu_ui(ui: &mut Ui, state: &mut AppState) {
             }
         });
     };
-    use crate::scenes::Group;
+    use crate::io::scenes::Group;
     let mut group = None;
     for f in files.iter().filter(|f| f.group != Group::RedbookTeapots) {
         if group != Some(f.group) {

@@ -3,7 +3,7 @@
 //! The session is a RON map of strings (the scene file's TOML under [`DOCUMENT_KEY`], the
 //! layout, the quiz) in `session.ron` in the storage folder ([`crate::platform::storage::storage_dir`],
 //! or `PHONGLAB_SESSION_DIR`). It is written whole or not at all
-//! ([`crate::atomic_write::write`]), so a full disk leaves the last good session.
+//! ([`crate::io::atomic_write::write`]), so a full disk leaves the last good session.
 //!
 //! One window owns the session at a time: it holds `session.lock` ([`std::fs::File::try_lock`],
 //! released by the system when the process ends, however it ends). A second window reads
@@ -119,8 +119,8 @@ impl Session {
             session.owner = Owner::ReadOnly("the session file is a folder".into());
             return (session, notices);
         }
-        use crate::input_file::Unread;
-        let unreadable = match crate::input_file::read_capped_or(&path, MAX_SESSION_BYTES) {
+        use crate::io::input_file::Unread;
+        let unreadable = match crate::io::input_file::read_capped_or(&path, MAX_SESSION_BYTES) {
             Ok(bytes) => match parse(&bytes) {
                 Ok(values) => {
                     session.values = values;
@@ -168,7 +168,7 @@ impl Session {
     /// Reads the session of phonglab versions that let eframe keep it (`app.ron`, the same
     /// map), once: it is left as it was.
     fn read_eframe_storage(&mut self, dir: &Path) {
-        if let Ok(bytes) = crate::input_file::read_capped_or(&dir.join("app.ron"), MAX_SESSION_BYTES)
+        if let Ok(bytes) = crate::io::input_file::read_capped_or(&dir.join("app.ron"), MAX_SESSION_BYTES)
             && let Ok(values) = parse(&bytes)
         {
             self.values = values;
@@ -220,7 +220,7 @@ impl Session {
         if self.saved.as_deref() == Some(text.as_str()) {
             return Ok(false);
         }
-        crate::atomic_write::write(&path, text.as_bytes()).map_err(|e| e.to_string())?;
+        crate::io::atomic_write::write(&path, text.as_bytes()).map_err(|e| e.to_string())?;
         self.saved = Some(text);
         Ok(true)
     }
@@ -263,7 +263,7 @@ pub fn restore_document(text: Option<&str>, dir: Option<&Path>) -> Result<Option
             let p = fresh_path(dir, "phonglab-unreadable", "toml");
             match std::fs::create_dir_all(dir)
                 .map_err(|e| e.to_string())
-                .and_then(|()| crate::atomic_write::write(&p, text.as_bytes()).map_err(|e| e.to_string()))
+                .and_then(|()| crate::io::atomic_write::write(&p, text.as_bytes()).map_err(|e| e.to_string()))
             {
                 Ok(()) => t!("session-scene-kept", path = p.display().to_string()),
                 Err(err) => t!("session-scene-not-kept", error = err.to_string()),
@@ -336,7 +336,8 @@ mod tests {
         assert_eq!(s.save(), Ok(true));
         assert_eq!(s.save(), Ok(false), "unchanged: not written again");
         s.set(DOCUMENT_KEY, "name = \"y\"".into());
-        let e = crate::atomic_write::with_fault(crate::atomic_write::Fault::AfterBytes(5), || s.save()).unwrap_err();
+        let e = crate::io::atomic_write::with_fault(crate::io::atomic_write::Fault::AfterBytes(5), || s.save())
+            .unwrap_err();
         assert!(e.contains("unchanged"), "{e}");
         drop(s);
         let (s, _) = Session::open(&dir);

@@ -49,7 +49,7 @@ impl Shutdown {
     fn write_latest(&self) {
         let latest = self.latest.lock().ok().and_then(|l| l.clone());
         if let Some((path, text)) = latest
-            && let Err(e) = crate::atomic_write::write(&path, text.as_bytes())
+            && let Err(e) = crate::io::atomic_write::write(&path, text.as_bytes())
         {
             log::error!("{e}");
         }

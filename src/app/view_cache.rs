@@ -110,7 +110,7 @@ impl ViewCache {
         let setup = doc.shaded_setup(pow);
         let key = format!("{:?}|{:?}|{:?}", setup.scene, setup.options, doc.view.shading);
         if self.gpu_program.as_ref().is_none_or(|p| p.key != key) {
-            let shader = crate::gpu::wgsl_for(&setup.scene, setup.options, doc.view.shading)?;
+            let shader = crate::paint::gpu::wgsl_for(&setup.scene, setup.options, doc.view.shading)?;
             // WGSL keeps both entry points in one module: `vertex`.
             self.gpu_program = Some(GpuProgram { key, wgsl: shader.vertex.into(), uniforms: shader.uniforms });
         }
@@ -118,7 +118,7 @@ impl ViewCache {
         if self.failed_program.as_ref() == Some(&program.wgsl) {
             return Err("the GPU refused the generated program".into());
         }
-        let uniforms = crate::gpu::uniform_bytes(&program.uniforms, &setup.scene, &setup.clip_from_object)?;
+        let uniforms = crate::paint::gpu::uniform_bytes(&program.uniforms, &setup.scene, &setup.clip_from_object)?;
         let wgsl = program.wgsl.clone();
         Ok(Picture {
             slot,

@@ -42,13 +42,13 @@ fn dialog(start: Option<&std::path::Path>) -> rfd::FileDialog {
 pub fn choose_file(_ctx: &egui::Context, _accept: &str) {}
 
 /// Reads a file dropped on the window: its bytes now on the desktop (from its path, with
-/// `cap` and the messages of [`crate::input_file`]).
+/// `cap` and the messages of [`crate::io::input_file`]).
 #[cfg(not(target_arch = "wasm32"))]
 pub fn read_dropped(_ctx: &egui::Context, file: &egui::DroppedFileHandle, cap: u64) -> Option<Result<Arrived, String>> {
     let path = file.path().to_path_buf();
     let name = path.display().to_string();
     let bytes = if path.exists() {
-        crate::input_file::read_capped(&path, cap, &phonglab_core::t!("file-kind-scenes"))
+        crate::io::input_file::read_capped(&path, cap, &phonglab_core::t!("file-kind-scenes"))
     } else {
         file.bytes().map_err(|e| phonglab_core::t!("cannot-read", path = name.clone(), error = e))
     };
@@ -74,7 +74,7 @@ pub fn download(_name: &str, _bytes: &[u8], _mime: &str) -> Result<(), String> {
 /// the user cancelled; `Ok(Some(where))`: saved there. `dialogs` is false where no dialog
 /// may open (headless tests): then nothing is saved, and the reason is returned. A path
 /// that is one of `inputs` (the scene file, its mesh) is refused
-/// ([`crate::same_file::refuse_output_onto_input`]).
+/// ([`crate::io::same_file::refuse_output_onto_input`]).
 pub fn save_bytes(
     name: &str,
     bytes: &[u8],
@@ -94,8 +94,8 @@ pub fn save_bytes(
         else {
             return Ok(None);
         };
-        crate::same_file::refuse_output_onto_input(&[&path], inputs)?;
-        crate::atomic_write::write(&path, bytes).map_err(|e| e.to_string())?;
+        crate::io::same_file::refuse_output_onto_input(&[&path], inputs)?;
+        crate::io::atomic_write::write(&path, bytes).map_err(|e| e.to_string())?;
         Ok(Some(path.display().to_string()))
     }
     #[cfg(target_arch = "wasm32")]
@@ -181,7 +181,7 @@ mod web {
             let checked =
                 read.map_err(|e| phonglab_core::t!("cannot-read", path = name.clone(), error = e)).and_then(|b| {
                     let what = phonglab_core::t!("file-kind-scenes");
-                    crate::input_file::within_cap(&name, b.len() as u64, cap, &what).map(|()| b)
+                    crate::io::input_file::within_cap(&name, b.len() as u64, cap, &what).map(|()| b)
                 });
             arrive(&ctx, checked.map(|b| (name, b)));
         });

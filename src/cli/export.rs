@@ -9,7 +9,7 @@ use clap::{Args, ValueEnum};
 use phonglab_core::export::{Target, files};
 use phonglab_core::t;
 
-use crate::atomic_write::FileSet;
+use crate::io::atomic_write::FileSet;
 
 /// What `--to` names.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
@@ -74,18 +74,18 @@ pub fn export(a: &ExportArgs) -> Result<()> {
         (Some(project), Target::OpenFrameworks) => {
             // An oF project keeps its code in src/.
             let dir = &project.join("src");
-            crate::atomic_write::check_folder_destination(dir)?;
+            crate::io::atomic_write::check_folder_destination(dir)?;
             let mut set = FileSet::default();
             for (name, text) in &written {
                 set.add(name.clone(), text.clone().into_bytes());
             }
             let names: Vec<String> = written.iter().map(|(n, _)| n.clone()).collect();
-            crate::atomic_write::write_set(dir, &set, |n| names.iter().any(|m| m == n))?;
+            crate::io::atomic_write::write_set(dir, &set, |n| names.iter().any(|m| m == n))?;
             eprintln!("{}", t!("export-written", path = dir.display().to_string()));
         }
         (Some(path), _) => {
-            crate::atomic_write::check_file_destination(path)?;
-            crate::atomic_write::write(path, written[0].1.as_bytes())?;
+            crate::io::atomic_write::check_file_destination(path)?;
+            crate::io::atomic_write::write(path, written[0].1.as_bytes())?;
             eprintln!("{}", t!("export-written", path = path.display().to_string()));
         }
     }
@@ -96,9 +96,13 @@ pub fn export(a: &ExportArgs) -> Result<()> {
 /// is the file `input`.
 fn refuse_onto(target: Target, output: &std::path::Path, input: &std::path::Path) -> Result<()> {
     let refused = if target == Target::OpenFrameworks {
-        crate::same_file::refuse_outputs_in_folder(&output.join("src"), &["ofApp.h", "ofApp.cpp", "main.cpp"], &[input])
+        crate::io::same_file::refuse_outputs_in_folder(
+            &output.join("src"),
+            &["ofApp.h", "ofApp.cpp", "main.cpp"],
+            &[input],
+        )
     } else {
-        crate::same_file::refuse_output_onto_input(&[output], &[input])
+        crate::io::same_file::refuse_output_onto_input(&[output], &[input])
     };
     refused.map_err(anyhow::Error::msg)
 }
@@ -116,7 +120,7 @@ pub struct ImportArgs {
 /// Reads a worksheet-style notebook or script (`.ipynb` by its extension, else a script)
 /// into a scene: what it says about lines it could not read goes to the standard error.
 pub fn read_student_code(path: &std::path::Path) -> Result<phonglab_core::export::read_python::Imported> {
-    let text = crate::input_file::read_text_capped(path, crate::app::files::MAX_CODE_BYTES, &t!("file-kind-code"))
+    let text = crate::io::input_file::read_text_capped(path, crate::app::files::MAX_CODE_BYTES, &t!("file-kind-code"))
         .map_err(anyhow::Error::msg)?;
     // Any file that is not a notebook is read as a script.
     let notebook = crate::app::files::student_code(path) == Some(true);
@@ -125,14 +129,14 @@ pub fn read_student_code(path: &std::path::Path) -> Result<phonglab_core::export
 
 /// Runs `phonglab import`.
 pub fn import(a: &ImportArgs) -> Result<()> {
-    crate::same_file::refuse_output_onto_input(&[&a.output], &[&a.file]).map_err(anyhow::Error::msg)?;
+    crate::io::same_file::refuse_output_onto_input(&[&a.output], &[&a.file]).map_err(anyhow::Error::msg)?;
     let imported = read_student_code(&a.file)?;
     for notice in &imported.notices {
         eprintln!("{}", phonglab_core::escape::terminal::lines(&format!("{}: {notice}", a.file.display())));
     }
-    crate::atomic_write::check_file_destination(&a.output)?;
+    crate::io::atomic_write::check_file_destination(&a.output)?;
     let text = imported.doc.to_toml().map_err(|e| anyhow::anyhow!("{e}"))?;
-    crate::atomic_write::write(&a.output, text.as_bytes())?;
+    crate::io::atomic_write::write(&a.output, text.as_bytes())?;
     eprintln!(
         "{}",
         t!(

@@ -90,7 +90,7 @@ pub fn state_for(doc: phonglab_core::Document, present: bool, light: bool, open:
 /// the frames it takes to settle. Returns the RGBA8 pixels and the state as last drawn.
 pub fn take(state: AppState, width: f32, height: f32, scale: f32) -> (usize, usize, Vec<u8>, AppState) {
     let mut state = state;
-    let canvas = crate::egui_cpu::paint_ui(width, height, scale, |ui| app_ui(ui, &mut state));
+    let canvas = crate::paint::egui_cpu::paint_ui(width, height, scale, |ui| app_ui(ui, &mut state));
     (canvas.width, canvas.height, canvas.rgba8(), state)
 }
 
@@ -119,22 +119,22 @@ pub fn run(a: &ScreenshotArgs) -> Result<()> {
         bail!(phonglab_core::t!("err-scale", scale = phonglab_core::locale::decimal(&a.scale.to_string())));
     }
     let (pw, ph) = ((a.size.0 as f32 * a.scale).round() as u32, (a.size.1 as f32 * a.scale).round() as u32);
-    let needed = crate::budget::window_picture_bytes(u64::from(a.size.0), u64::from(a.size.1), f64::from(a.scale));
-    crate::budget::check(&phonglab_core::t!("budget-what-window", width = pw, height = ph), needed)
+    let needed = crate::io::budget::window_picture_bytes(u64::from(a.size.0), u64::from(a.size.1), f64::from(a.scale));
+    crate::io::budget::check(&phonglab_core::t!("budget-what-window", width = pw, height = ph), needed)
         .map_err(anyhow::Error::msg)?;
     let scene: Vec<&std::path::Path> = a.scene.iter().map(PathBuf::as_path).collect();
-    crate::same_file::refuse_output_onto_input(&[&a.output], &scene).map_err(anyhow::Error::msg)?;
-    crate::atomic_write::check_file_destination(&a.output)?;
+    crate::io::same_file::refuse_output_onto_input(&[&a.output], &scene).map_err(anyhow::Error::msg)?;
+    crate::io::atomic_write::check_file_destination(&a.output)?;
     let doc = match &a.scene {
         Some(p) => crate::cli::load_scene_file(p)?,
         None => phonglab_core::Document::default(),
     };
     let mesh: Vec<&std::path::Path> = doc.view.obj.iter().map(std::path::Path::new).collect();
-    crate::same_file::refuse_output_onto_input(&[&a.output], &mesh).map_err(anyhow::Error::msg)?;
+    crate::io::same_file::refuse_output_onto_input(&[&a.output], &mesh).map_err(anyhow::Error::msg)?;
     let state = state_for(doc, a.present, a.light, a.open);
     let (w, h) = (a.size.0 as f32, a.size.1 as f32);
     let (pw, ph, rgba, state) = take(state, w, h, a.scale);
-    crate::image_io::write_png(&a.output, pw, ph, &rgba).context("the screenshot")?;
+    crate::io::image::write_png(&a.output, pw, ph, &rgba).context("the screenshot")?;
     let g = &state.ui.geometry;
     let bg = state.ui.layout.theme.visuals().panel_fill;
     let sides: Vec<String> = g.pictures.iter().map(|r| format!("{:.0}", r.width().min(r.height()))).collect();

@@ -66,7 +66,7 @@ impl fmt::Display for WriteError {
             "write-error",
             path = self.path.display().to_string(),
             what = tr(self.what),
-            reason = crate::io_text::io_reason(&self.reason),
+            reason = crate::io::reasons::io_reason(&self.reason),
             kept = tr(self.kept)
         ))
     }

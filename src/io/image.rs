@@ -19,10 +19,10 @@ pub fn encode_png(width: usize, height: usize, rgba: &[u8]) -> Result<Vec<u8>> {
 }
 
 /// Writes RGBA8 pixels (rows top to bottom) as a PNG, whole or not at all
-/// ([`crate::atomic_write::write`]).
+/// ([`crate::io::atomic_write::write`]).
 pub fn write_png(path: &Path, width: usize, height: usize, rgba: &[u8]) -> Result<()> {
     let bytes = encode_png(width, height, rgba)?;
-    crate::atomic_write::write(path, &bytes)?;
+    crate::io::atomic_write::write(path, &bytes)?;
     Ok(())
 }
 

@@ -7,7 +7,7 @@
 //! listing them, `sheets.pdf` (to hand out: each exercise starts a page and takes an even
 //! number of them, two for levels 1 to 3, so printed on both sides it is one sheet of
 //! paper; the lines for the class, the name and the date; each page's footer names its
-//! exercise and counts its pages) and `keys.pdf` (for the teacher), typeset by [`crate::sheet_pdf`]
+//! exercise and counts its pages) and `keys.pdf` (for the teacher), typeset by [`crate::io::sheet_pdf`]
 //! in the chosen language. The same seed gives the same files, byte for byte.
 //! The set is written as one: a folder holds one whole set, never parts of two.
 
@@ -20,8 +20,8 @@ use phonglab_core::exercise::{Effect, Exercise, Level, Spec, generate, sheet_mar
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::{Document, Engine, Rules};
 
-use crate::atomic_write::FileSet;
-use crate::sheet_pdf::{Block, Pages, pdf};
+use crate::io::atomic_write::FileSet;
+use crate::io::sheet_pdf::{Block, Pages, pdf};
 use phonglab_core::t;
 
 /// `phonglab exercise`.
@@ -303,12 +303,12 @@ pub fn exercise_set(a: &ExerciseArgs) -> Result<(Vec<Exercise>, FileSet)> {
     Ok((exercises, set))
 }
 
-/// Writes the exercises as one set ([`crate::atomic_write::write_set`]): the folder ends
+/// Writes the exercises as one set ([`crate::io::atomic_write::write_set`]): the folder ends
 /// with the new set whole, or as it was; returns them.
 pub fn write_exercises(a: &ExerciseArgs) -> Result<Vec<Exercise>> {
-    crate::atomic_write::check_folder_destination(&a.out)?;
+    crate::io::atomic_write::check_folder_destination(&a.out)?;
     let (exercises, set) = exercise_set(a)?;
-    crate::atomic_write::write_set(&a.out, &set, belongs_to_a_set)?;
+    crate::io::atomic_write::write_set(&a.out, &set, belongs_to_a_set)?;
     Ok(exercises)
 }
 

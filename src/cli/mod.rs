@@ -1,7 +1,14 @@
 //! The command line: `phonglab <subcommand>` works headless and never opens a window.
 //!
 //! The doc comments below describe the arguments to readers of the code; what a user reads
-//! in `--help` comes from the message catalogue, in their language ([`crate::cli_help`]).
+//! in `--help` comes from the message catalogue, in their language ([`crate::cli::help`]).
+
+pub mod bench;
+pub mod cost;
+pub mod exercise;
+pub mod export;
+pub mod help;
+pub mod screenshot;
 
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -40,7 +47,7 @@ pub struct Cli {
     /// The memory a command may take for what it is asked (a picture's size, a mesh):
     /// 512M, 8G, ...; default: half of what the system has available. Past it, a command
     /// says how much it needs and does not start.
-    #[arg(long, global = true, value_name = "SIZE", value_parser = crate::budget::parse_size)]
+    #[arg(long, global = true, value_name = "SIZE", value_parser = crate::io::budget::parse_size)]
     pub memory_budget: Option<u64>,
 }
 
@@ -55,7 +62,7 @@ fn parse_decimal(s: &str) -> Result<phonglab_core::locale::DecimalMark, String> 
 impl Cli {
     /// Parses the command line with its help in the language asked for (`--lang`, before
     /// parsing, or the system's): every text of `--help` comes from the catalogue
-    /// ([`crate::cli_help`]).
+    /// ([`crate::cli::help`]).
     pub fn parse_localised() -> Cli {
         use clap::{CommandFactory, FromArgMatches};
         let args: Vec<String> = std::env::args().collect();
@@ -69,11 +76,11 @@ impl Cli {
             .and_then(|v| phonglab_core::locale::Lang::parse(&v));
         let lang = asked.unwrap_or_else(phonglab_core::locale::Lang::from_env);
         phonglab_core::locale::set_default(phonglab_core::locale::Locale::of(lang));
-        let mut cmd = crate::cli_help::localised(Cli::command());
+        let mut cmd = crate::cli::help::localised(Cli::command());
         let matches = cmd.get_matches_mut();
         if let Some(("help", asked)) = matches.subcommand() {
             let names = asked.get_many::<String>("command").into_iter().flatten();
-            crate::cli_help::print_help_of(&mut cmd, names);
+            crate::cli::help::print_help_of(&mut cmd, names);
             std::process::exit(0);
         }
         Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit())
@@ -109,7 +116,7 @@ pub enum Command {
     /// Render the shaded view (sphere, teapot or cylinder) to a PNG.
     Render(RenderArgs),
     /// Write exercise sheets in the worksheet's style, with scene files and answer keys.
-    Exercise(crate::exercise_cmd::ExerciseArgs),
+    Exercise(crate::cli::exercise::ExerciseArgs),
     /// Print the shader (GLSL 3.30 or WGSL) that draws a scene's shaded view: only the stages it needs.
     Shader(ShaderArgs),
     /// Write scene files as glref cases (JSON), to check them against a real OpenGL with
@@ -121,15 +128,15 @@ pub enum Command {
     Cost(CostArgs),
     /// Measure: the renderer, the lighting.
     #[command(subcommand)]
-    Bench(crate::bench::BenchCommand),
+    Bench(crate::cli::bench::BenchCommand),
     /// Draw the whole window headless (no display, no GPU) to a PNG: for slides, handouts
     /// and the tests.
-    Screenshot(crate::screenshot_cmd::ScreenshotArgs),
+    Screenshot(crate::cli::screenshot::ScreenshotArgs),
     /// Write a scene as the student's own code: the worksheet's notebook, a PyOpenGL
     /// program, an openFrameworks app, or the GLSL.
-    Export(crate::export_cmd::ExportArgs),
+    Export(crate::cli::export::ExportArgs),
     /// Read a worksheet-style notebook (.ipynb) or Python script (.py) into a scene file.
-    Import(crate::export_cmd::ImportArgs),
+    Import(crate::cli::export::ImportArgs),
 }
 
 /// Floating-point precision of the engine.
@@ -389,15 +396,15 @@ pub fn run(command: Command) -> ExitCode {
             });
         }
         Command::Explain(a) => explain_cmd(&a),
-        Command::Exercise(a) => crate::exercise_cmd::run(&a),
+        Command::Exercise(a) => crate::cli::exercise::run(&a),
         Command::Shader(a) => shader_cmd(&a),
-        Command::Bench(b) => crate::bench::run(&b),
+        Command::Bench(b) => crate::cli::bench::run(&b),
         Command::Render(a) => render(&a),
         Command::Case(a) => case(&a),
         Command::Cost(a) => cost(&a),
-        Command::Screenshot(a) => crate::screenshot_cmd::run(&a),
-        Command::Export(a) => crate::export_cmd::export(&a),
-        Command::Import(a) => crate::export_cmd::import(&a),
+        Command::Screenshot(a) => crate::cli::screenshot::run(&a),
+        Command::Export(a) => crate::cli::export::export(&a),
+        Command::Import(a) => crate::cli::export::import(&a),
     };
     match r {
         Ok(()) => ExitCode::SUCCESS,
@@ -409,7 +416,7 @@ pub fn run(command: Command) -> ExitCode {
 }
 
 fn read(path: &Path, cap: u64, what: &str) -> Result<String> {
-    crate::input_file::read_text_capped(path, cap, what).map_err(anyhow::Error::msg)
+    crate::io::input_file::read_text_capped(path, cap, what).map_err(anyhow::Error::msg)
 }
 
 fn evaluate(scene: &Scene, precision: Precision, options: EvalOptions, clamp: bool) -> Result<CaseColors, String> {
@@ -452,7 +459,7 @@ pub fn eval_stream(
             anyhow::anyhow!(t!(
                 "read-cannot",
                 path = path.display().to_string(),
-                reason = crate::io_text::io_reason(&e)
+                reason = crate::io::reasons::io_reason(&e)
             ))
         })?;
         let meta = file.metadata()?;
@@ -460,7 +467,7 @@ pub fn eval_stream(
             bail!(t!("read-not-a-file", path = path.display().to_string()));
         }
         let (shown, kind) = (path.display().to_string(), t!("file-kind-cases"));
-        crate::input_file::within_cap(&shown, meta.len(), crate::input_file::MAX_CASE_BYTES, &kind)
+        crate::io::input_file::within_cap(&shown, meta.len(), crate::io::input_file::MAX_CASE_BYTES, &kind)
             .map_err(anyhow::Error::msg)?;
         Ok(file)
     };
@@ -491,7 +498,7 @@ pub fn eval_stream(
 
 /// Reads and checks a scene file.
 pub fn load_scene_file(path: &Path) -> Result<phonglab_core::Document> {
-    let text = read(path, crate::input_file::MAX_SCENE_BYTES, &t!("file-kind-scenes"))?;
+    let text = read(path, crate::io::input_file::MAX_SCENE_BYTES, &t!("file-kind-scenes"))?;
     phonglab_core::Document::from_toml_in(&text, path.parent()).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
 }
 
@@ -573,16 +580,16 @@ fn cost(a: &CostArgs) -> Result<()> {
         names.extend(
             earlier
                 .map(|e| e.file_name().to_string_lossy().into_owned())
-                .filter(|n| crate::cost_cmd::belongs_to_a_report(n)),
+                .filter(|n| crate::cli::cost::belongs_to_a_report(n)),
         );
         let names: Vec<&str> = names.iter().map(String::as_str).collect();
-        crate::same_file::refuse_outputs_in_folder(&a.out, &names, &[scene]).map_err(anyhow::Error::msg)?;
+        crate::io::same_file::refuse_outputs_in_folder(&a.out, &names, &[scene]).map_err(anyhow::Error::msg)?;
     }
     let doc = match &a.scene {
         Some(p) => load_scene_file(p)?,
         None => phonglab_core::Document::default(),
     };
-    crate::cost_cmd::run(&crate::cost_cmd::CostRun {
+    crate::cli::cost::run(&crate::cli::cost::CostRun {
         objects: a.object.map_or(phonglab_core::ObjectKind::ALL.to_vec(), |o| vec![o.into()]),
         doc,
         out: a.out.clone(),
@@ -604,7 +611,7 @@ fn within_budget(job: &phonglab_core::render::Job<'_>, size: u32) -> Result<()> 
         triangles = phonglab_core::locale::grouped(triangles)
     );
     let size = u64::from(size);
-    crate::budget::check(&what, crate::budget::render_bytes(size, size, vertices, triangles))
+    crate::io::budget::check(&what, crate::io::budget::render_bytes(size, size, vertices, triangles))
         .map_err(anyhow::Error::msg)
 }
 
@@ -620,8 +627,8 @@ fn render(a: &RenderArgs) -> Result<()> {
     });
     let size = a.size as usize;
     let inputs: Vec<&Path> = a.scene.iter().chain(&a.obj).map(PathBuf::as_path).collect();
-    crate::same_file::refuse_output_onto_input(&[&a.output], &inputs).map_err(anyhow::Error::msg)?;
-    crate::atomic_write::check_file_destination(&a.output)?;
+    crate::io::same_file::refuse_output_onto_input(&[&a.output], &inputs).map_err(anyhow::Error::msg)?;
+    crate::io::atomic_write::check_file_destination(&a.output)?;
     let mut notes = Vec::new();
     let bench_scene;
     let bench_mesh;
@@ -673,7 +680,8 @@ fn render(a: &RenderArgs) -> Result<()> {
         if doc.view.object == ObjectKind::Obj {
             // The scene's own mesh is an input too.
             let mesh = doc.view.obj.as_deref().map(Path::new);
-            crate::same_file::refuse_output_onto_input(&[&a.output], mesh.as_slice()).map_err(anyhow::Error::msg)?;
+            crate::io::same_file::refuse_output_onto_input(&[&a.output], mesh.as_slice())
+                .map_err(anyhow::Error::msg)?;
             notes = doc.view.obj_mesh()?.notes.clone();
         }
         doc_mesh = doc.view.mesh();
@@ -687,7 +695,7 @@ fn render(a: &RenderArgs) -> Result<()> {
     let t = std::time::Instant::now();
     let (img, stats) = r.render(&job, size, size)?;
     let ms = t.elapsed().as_secs_f64() * 1e3;
-    crate::image_io::write_png(&a.output, img.width, img.height, &img.rgba)?;
+    crate::io::image::write_png(&a.output, img.width, img.height, &img.rgba)?;
     eprintln!(
         "{}",
         phonglab_core::t!(

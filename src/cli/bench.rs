@@ -388,7 +388,8 @@ pub fn time_ui_frames(
     for f in 0..frames {
         change(state, f);
         let t0 = Instant::now();
-        let mut out = ctx.run_ui(crate::egui_cpu::raw_input(size[0], size[1], 1.0), |ui| crate::app::app_ui(ui, state));
+        let mut out =
+            ctx.run_ui(crate::paint::egui_cpu::raw_input(size[0], size[1], 1.0), |ui| crate::app::app_ui(ui, state));
         let t1 = Instant::now();
         let prims = ctx.tessellate(std::mem::take(&mut out.shapes), out.pixels_per_point);
         let t2 = Instant::now();

@@ -166,7 +166,7 @@ pub fn markdown_tables(csv: &str) -> Result<String> {
 pub fn chart_png(studies: &[Study], ppp: f32) -> (usize, usize, Vec<u8>) {
     let (w, h_each) = (960.0, 420.0);
     let h = h_each * studies.len() as f32 + 10.0;
-    let canvas = crate::egui_cpu::paint_ui(w, h, ppp, |ui| {
+    let canvas = crate::paint::egui_cpu::paint_ui(w, h, ppp, |ui| {
         egui::CentralPanel::default().show(ui, |ui| {
             for s in studies {
                 ui.strong(phonglab_core::t!(
@@ -188,12 +188,12 @@ pub fn belongs_to_a_report(name: &str) -> bool {
 }
 
 /// `phonglab cost`: the studies, their tables on stdout, and the files, written as one
-/// report ([`crate::atomic_write::write_set`]) after the folder was tried before the study.
+/// report ([`crate::io::atomic_write::write_set`]) after the folder was tried before the study.
 pub fn run(a: &CostRun) -> Result<()> {
-    crate::atomic_write::check_folder_destination(&a.out)?;
+    crate::io::atomic_write::check_folder_destination(&a.out)?;
     let pool = rayon::ThreadPoolBuilder::new().num_threads(a.threads).build()?;
     let studies = pool.install(|| studies(a))?;
-    let mut set = crate::atomic_write::FileSet::default();
+    let mut set = crate::io::atomic_write::FileSet::default();
     let mut csv = String::new();
     for (i, s) in studies.iter().enumerate() {
         println!("{}", table(s));
@@ -208,7 +208,7 @@ pub fn run(a: &CostRun) -> Result<()> {
             {
                 let rgba = cost::heat_map_rgba(map, &s.reference, HEAT_FULL_SCALE);
                 let name = format!("heat-{}-{}-{mid}.png", s.object.key(), p.variant.shading.label().to_lowercase());
-                set.add(name, crate::image_io::encode_png(s.size, s.size, &rgba)?);
+                set.add(name, crate::io::image::encode_png(s.size, s.size, &rgba)?);
             }
         }
     }
@@ -216,8 +216,8 @@ pub fn run(a: &CostRun) -> Result<()> {
     set.add("cost.csv", csv);
     set.add("cost.md", tables);
     let (w, h, rgba) = chart_png(&studies, 1.5);
-    set.add("cost.png", crate::image_io::encode_png(w, h, &rgba)?);
-    crate::atomic_write::write_set(&a.out, &set, belongs_to_a_report)?;
+    set.add("cost.png", crate::io::image::encode_png(w, h, &rgba)?);
+    crate::io::atomic_write::write_set(&a.out, &set, belongs_to_a_report)?;
     eprintln!("{}", phonglab_core::t!("cost-wrote", files = set.to_string(), out = a.out.display().to_string()));
     Ok(())
 }

@@ -20,7 +20,7 @@ pub const MAX_CASE_BYTES: u64 = 256 << 20;
 pub fn read_capped(path: &Path, cap: u64, what: &str) -> Result<Vec<u8>, String> {
     let shown = path.display().to_string();
     read_capped_or(path, cap).map_err(|e| match e {
-        Unread::Io(e) => t!("read-cannot", path = shown.clone(), reason = crate::io_text::io_reason(&e)),
+        Unread::Io(e) => t!("read-cannot", path = shown.clone(), reason = crate::io::reasons::io_reason(&e)),
         Unread::NotAFile => t!("read-not-a-file", path = shown.clone()),
         Unread::TooLarge(size) => within_cap(&shown, size, cap, what).err().unwrap_or_default(),
     })

@@ -1,0 +1,16 @@
+//! Files in and out, the same for the command line and the window: every file is written
+//! whole or not at all ([`atomic_write`]), read under a cap and without blocking
+//! ([`input_file`]), never over one of the inputs ([`same_file`]), within the memory budget
+//! ([`budget`]); PNG pictures ([`image`]), zip archives ([`zip`]), typeset PDF sheets
+//! ([`sheet_pdf`]), the shipped scenes ([`scenes`]) and the system's reasons for a failure
+//! in words ([`reasons`]).
+
+pub mod atomic_write;
+pub mod budget;
+pub mod image;
+pub mod input_file;
+pub mod reasons;
+pub mod same_file;
+pub mod scenes;
+pub mod sheet_pdf;
+pub mod zip;
