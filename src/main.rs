@@ -23,6 +23,17 @@ fn main() -> ExitCode {
     phonglab_core::locale::set_default(args.locale());
     phonglab::io::budget::set(args.memory_budget);
     match args.command {
+        // The two commands that draw the window: the command line reads their arguments,
+        // the window draws them (the two layers never name each other; this file joins them).
+        Some(cli::Command::Screenshot(a)) => cli::finish(phonglab::app::screenshot::run(&shot(a))),
+        Some(cli::Command::Bench(cli::bench::BenchCommand::Ui(a))) => {
+            cli::finish(phonglab::app::bench_ui::run(&phonglab::app::bench_ui::UiBench {
+                frames: a.frames,
+                width: a.width,
+                height: a.height,
+                present: a.present,
+            }))
+        }
         Some(command) => cli::run(command),
         None => match phonglab::app::run(
             args.file,
@@ -42,5 +53,28 @@ fn main() -> ExitCode {
                 ExitCode::from(1)
             }
         },
+    }
+}
+
+/// `phonglab screenshot`'s arguments as the window's picture request.
+#[cfg(not(target_arch = "wasm32"))]
+fn shot(a: cli::screenshot::ScreenshotArgs) -> phonglab::app::screenshot::Shot {
+    use cli::screenshot::Open;
+    use phonglab::app::screenshot::Opened;
+    phonglab::app::screenshot::Shot {
+        size: a.size,
+        scale: a.scale,
+        present: a.present,
+        light: a.light,
+        scene: a.scene,
+        open: a.open.map(|o| match o {
+            Open::Compare => Opened::Compare,
+            Open::Lobe => Opened::Lobe,
+            Open::Quiz => Opened::Quiz,
+            Open::Shader => Opened::Shader,
+            Open::Cost => Opened::Cost,
+            Open::DemoFixes => Opened::DemoFixes,
+        }),
+        output: a.output,
     }
 }

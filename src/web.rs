@@ -125,7 +125,7 @@ impl WebApp {
             return;
         }
         use phonglab_core::Shading;
-        let figures = crate::cli::bench::render_figures(20, 512, |_, s| s != Shading::Flat);
+        let figures = phonglab_core::bench::render_figures(20, 512, |_, s| s != Shading::Flat);
         self.bench = Some(match figures {
             Ok(f) => f
                 .iter()
@@ -255,7 +255,7 @@ impl BenchPicture {
         if !url_asks("picture", "bench") {
             return None;
         }
-        let [(_, sphere), (_, teapot)] = crate::cli::bench::bench_meshes();
+        let [(_, sphere), (_, teapot)] = phonglab_core::bench::bench_meshes();
         let mesh = if url_asks("object", "teapot") { teapot } else { sphere };
         let shading = if url_asks("shading", "phong") { Shading::Phong } else { Shading::Gouraud };
         Some(BenchPicture {

@@ -6,8 +6,8 @@
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
+use phonglab::app::screenshot::{Opened as Open, state_for};
 use phonglab::app::{AppState, app_ui};
-use phonglab::cli::screenshot::{Open, state_for};
 
 const SIZES: [(f32, f32, f32); 4] =
     [(1024.0, 768.0, 1.0), (1280.0, 720.0, 1.0), (1920.0, 1080.0, 1.0), (2560.0, 1440.0, 2.0)];
@@ -196,9 +196,9 @@ fn the_divider_moves_the_split_and_is_kept() {
 fn at_most_half_the_window_is_empty_in_presentation() {
     for open in [None, Some(Open::Compare), Some(Open::DemoFixes)] {
         let state = state_for(phonglab_core::Document::default(), true, false, open);
-        let (w, h, rgba, state) = phonglab::cli::screenshot::take(state, 1280.0, 720.0, 1.0);
+        let (w, h, rgba, state) = phonglab::app::screenshot::take(state, 1280.0, 720.0, 1.0);
         let bg = state.ui.layout.theme.visuals().panel_fill;
-        let empty = phonglab::cli::screenshot::empty_share(&rgba, w, h, bg, 16);
+        let empty = phonglab::app::screenshot::empty_share(&rgba, w, h, bg, 16);
         assert!(empty <= 0.5, "{open:?}: {:.0} % empty", 100.0 * empty);
     }
 }

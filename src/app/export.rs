@@ -5,7 +5,7 @@
 //! exercise sheets as one zip (what `phonglab exercise` writes: the sheets, keys and scene
 //! files, `sheets.pdf` and `keys.pdf`, in the window's language). On the desktop they are
 //! saved where the system's dialog says; in the browser they are downloads
-//! ([`crate::platform::files::save_bytes`]).
+//! ([`crate::io::save::save_bytes`]).
 
 use egui::Ui;
 use phonglab_core::t;
@@ -47,16 +47,16 @@ pub fn shaded_png(state: &AppState) -> Result<Vec<u8>, String> {
 
 /// An exercise set as a zip file's bytes: every file `phonglab exercise` writes.
 pub fn exercises_zip(e: &ExportState) -> Result<Vec<u8>, String> {
-    let args = crate::cli::exercise::ExerciseArgs {
+    use phonglab_core::exercise::{Level, Spec};
+    let level = Level::from_number(e.level.clamp(1, 4) as u8).ok_or_else(|| phonglab_core::t!("err-level"))?;
+    let request = crate::io::exercise_set::Request {
         seed: u64::from(e.seed),
-        count: e.count.clamp(1, 100),
-        level: Some(e.level.clamp(1, 4) as u8),
-        effects: Vec::new(),
-        rules: "worksheet".into(),
+        count: e.count.clamp(1, 100) as usize,
+        spec: Spec::level(level, phonglab_core::Rules::WORKSHEET),
+        rules_name: "worksheet".into(),
         worksheet: false,
-        out: std::path::PathBuf::from("."),
     };
-    let (_, set) = crate::cli::exercise::exercise_set(&args).map_err(|e| format!("{e:#}"))?;
+    let (_, set) = crate::io::exercise_set::exercise_set(&request).map_err(|e| format!("{e:#}"))?;
     Ok(crate::io::zip::zip_stored(&set.files))
 }
 
@@ -65,7 +65,7 @@ fn hand_out(state: &mut AppState, name: &str, bytes: Result<Vec<u8>, String>, mi
     let scene_file = std::path::PathBuf::from(state.ui.file_path.trim());
     let mesh = state.doc.view.obj.as_deref().map(std::path::Path::new);
     let inputs: Vec<&std::path::Path> = [Some(scene_file.as_path()), mesh].into_iter().flatten().collect();
-    let saved = bytes.and_then(|b| crate::platform::files::save_bytes(name, &b, mime, state.ui.file_dialogs, &inputs));
+    let saved = bytes.and_then(|b| crate::io::save::save_bytes(name, &b, mime, state.ui.file_dialogs, &inputs));
     state.message = match saved {
         Ok(Some(_)) if !crate::platform::files::TYPED_PATHS => Some(Message::Info(t!("downloaded", name = name))),
         Ok(Some(at)) => Some(Message::Info(t!("exported", what = name, at = at))),

@@ -10,10 +10,8 @@ use phonglab_core::Document;
 use phonglab_core::t;
 
 use super::state::{AppState, Message};
+use crate::io::student_code::{MAX_CODE_BYTES, import_text, student_code};
 use crate::platform::files as platform;
-
-/// The largest notebook or script opened (a notebook with its outputs is larger than a scene).
-pub const MAX_CODE_BYTES: u64 = 16 * crate::io::input_file::MAX_SCENE_BYTES;
 
 /// Writes `doc` to `path`, whole or not at all ([`crate::io::atomic_write::write`]).
 pub fn write_document(doc: &Document, path: &Path) -> Result<(), String> {
@@ -104,29 +102,6 @@ fn open_bytes_or_why(state: &mut AppState, bytes: &[u8], path: &Path) -> Result<
     state.load(doc, &path.display().to_string());
     state.ui.file_path = path.display().to_string();
     Ok(())
-}
-
-/// Is `path` a worksheet-style notebook (`Some(true)`) or Python script (`Some(false)`)?
-pub fn student_code(path: &Path) -> Option<bool> {
-    let ext = path.extension()?.to_string_lossy().to_lowercase();
-    match ext.as_str() {
-        "ipynb" => Some(true),
-        "py" => Some(false),
-        _ => None,
-    }
-}
-
-/// Reads the text of the worksheet-style notebook or script at `path` into a scene named
-/// after the file (the app's open and drop, and `phonglab import`); an error names the file.
-pub fn import_text(
-    text: &str,
-    notebook: bool,
-    path: &Path,
-) -> Result<phonglab_core::export::read_python::Imported, String> {
-    // A file's name may hold anything but `/`: the scene's name is its printable form.
-    let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
-    let name = phonglab_core::escape::printable(&stem);
-    phonglab_core::export::read_python::read(text, notebook, &name).map_err(|e| format!("{}: {e}", path.display()))
 }
 
 /// Opens a worksheet-style notebook or script as a scene (what `phonglab import` reads),
@@ -260,7 +235,7 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
     let dropped = ctx.input(|i| i.raw.dropped_files.clone());
     let Some(file) = dropped.first() else { return };
     // Read now on the desktop; in the browser the bytes arrive later (see file_ui).
-    match platform::read_dropped(ctx, file, MAX_CODE_BYTES) {
+    match crate::io::input_file::read_dropped(ctx, file, MAX_CODE_BYTES) {
         Some(Ok((name, bytes))) => open_bytes(state, &bytes, Path::new(&name)),
         Some(Err(why)) => refuse(state, why),
         None => {}

@@ -2,6 +2,7 @@
 //! colour and the vector plot in the middle. `app_ui` draws everything from an
 //! [`AppState`] and takes `&mut egui::Ui`, so tests drive it headless.
 
+pub mod bench_ui;
 pub mod calculation;
 pub mod centre_layout;
 pub mod compare;
@@ -20,6 +21,7 @@ pub mod number_field;
 pub mod palette;
 pub mod quiz;
 pub mod result;
+pub mod screenshot;
 pub mod session;
 pub mod shaded;
 pub mod shader_panel;

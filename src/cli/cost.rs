@@ -9,7 +9,7 @@ use anyhow::{Context as _, Result, bail};
 use phonglab_core::cost::{self, Question, Setup, Study, Timing};
 use phonglab_core::{Document, ObjectKind};
 
-use crate::app::cost::{BACKGROUND, HEAT_FULL_SCALE, cost_chart_ui, takeaways};
+use crate::paint::cost_chart::{BACKGROUND, HEAT_FULL_SCALE, cost_chart_ui, takeaways};
 
 /// What to study: the command line's arguments, resolved.
 #[derive(Clone, Debug)]

@@ -120,11 +120,12 @@ pub struct ImportArgs {
 /// Reads a worksheet-style notebook or script (`.ipynb` by its extension, else a script)
 /// into a scene: what it says about lines it could not read goes to the standard error.
 pub fn read_student_code(path: &std::path::Path) -> Result<phonglab_core::export::read_python::Imported> {
-    let text = crate::io::input_file::read_text_capped(path, crate::app::files::MAX_CODE_BYTES, &t!("file-kind-code"))
-        .map_err(anyhow::Error::msg)?;
+    let text =
+        crate::io::input_file::read_text_capped(path, crate::io::student_code::MAX_CODE_BYTES, &t!("file-kind-code"))
+            .map_err(anyhow::Error::msg)?;
     // Any file that is not a notebook is read as a script.
-    let notebook = crate::app::files::student_code(path) == Some(true);
-    crate::app::files::import_text(&text, notebook, path).map_err(anyhow::Error::msg)
+    let notebook = crate::io::student_code::student_code(path) == Some(true);
+    crate::io::student_code::import_text(&text, notebook, path).map_err(anyhow::Error::msg)
 }
 
 /// Runs `phonglab import`.

@@ -402,10 +402,17 @@ pub fn run(command: Command) -> ExitCode {
         Command::Render(a) => render(&a),
         Command::Case(a) => case(&a),
         Command::Cost(a) => cost(&a),
-        Command::Screenshot(a) => crate::cli::screenshot::run(&a),
+        // The binary hands it to the window (`crate::app`), which it draws.
+        Command::Screenshot(_) => Err(anyhow::anyhow!(t!("err-needs-window"))),
         Command::Export(a) => crate::cli::export::export(&a),
         Command::Import(a) => crate::cli::export::import(&a),
     };
+    finish(r)
+}
+
+/// A command's exit code: 0 when it did what it was asked, else 2 after saying why on the
+/// standard error (its control characters written visibly).
+pub fn finish(r: Result<()>) -> ExitCode {
     match r {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
@@ -413,10 +420,6 @@ pub fn run(command: Command) -> ExitCode {
             ExitCode::from(2)
         }
     }
-}
-
-fn read(path: &Path, cap: u64, what: &str) -> Result<String> {
-    crate::io::input_file::read_text_capped(path, cap, what).map_err(anyhow::Error::msg)
 }
 
 fn evaluate(scene: &Scene, precision: Precision, options: EvalOptions, clamp: bool) -> Result<CaseColors, String> {
@@ -498,8 +501,7 @@ pub fn eval_stream(
 
 /// Reads and checks a scene file.
 pub fn load_scene_file(path: &Path) -> Result<phonglab_core::Document> {
-    let text = read(path, crate::io::input_file::MAX_SCENE_BYTES, &t!("file-kind-scenes"))?;
-    phonglab_core::Document::from_toml_in(&text, path.parent()).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+    crate::io::input_file::load_scene(path).map_err(anyhow::Error::msg)
 }
 
 /// The scene `explain` works on.

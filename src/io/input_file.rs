@@ -72,6 +72,27 @@ pub fn within_cap(name: &str, size: u64, cap: u64, what: &str) -> Result<(), Str
     ))
 }
 
+/// A file dropped on the window: its name and bytes now on the desktop (read from its path,
+/// under `cap`); in the browser `None` now, the bytes arriving later through
+/// [`crate::platform::files::take_arrived`], their size checked against `cap` first.
+pub fn read_dropped(
+    ctx: &egui::Context,
+    file: &egui::DroppedFileHandle,
+    cap: u64,
+) -> Option<Result<crate::platform::files::Arrived, String>> {
+    let what = t!("file-kind-scenes");
+    let check = move |name: &str, size: u64| within_cap(name, size, cap, &what);
+    let path = crate::platform::files::dropped_path(ctx, file, check)?;
+    Some(path.and_then(|p| read_capped(&p, cap, &t!("file-kind-scenes")).map(|b| (p.display().to_string(), b))))
+}
+
+/// Reads and checks a scene file (a relative mesh path is taken from its folder); an error
+/// names the file.
+pub fn load_scene(path: &Path) -> Result<phonglab_core::Document, String> {
+    let text = read_text_capped(path, MAX_SCENE_BYTES, &t!("file-kind-scenes"))?;
+    phonglab_core::Document::from_toml_in(&text, path.parent()).map_err(|e| format!("{}: {e}", path.display()))
+}
+
 /// [`read_capped`], as UTF-8 text.
 pub fn read_text_capped(path: &Path, cap: u64, what: &str) -> Result<String, String> {
     let bytes = read_capped(path, cap, what)?;

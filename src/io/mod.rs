@@ -7,10 +7,13 @@
 
 pub mod atomic_write;
 pub mod budget;
+pub mod exercise_set;
 pub mod image;
 pub mod input_file;
 pub mod reasons;
 pub mod same_file;
+pub mod save;
 pub mod scenes;
 pub mod sheet_pdf;
+pub mod student_code;
 pub mod zip;

@@ -2,5 +2,6 @@
 //! ([`egui_cpu`]: charts as PNGs, the whole window headless) and the scene's generated WGSL
 //! on the GPU through wgpu ([`gpu`]).
 
+pub mod cost_chart;
 pub mod egui_cpu;
 pub mod gpu;

@@ -41,18 +41,20 @@ fn dialog(start: Option<&std::path::Path>) -> rfd::FileDialog {
 #[cfg(not(target_arch = "wasm32"))]
 pub fn choose_file(_ctx: &egui::Context, _accept: &str) {}
 
-/// Reads a file dropped on the window: its bytes now on the desktop (from its path, with
-/// `cap` and the messages of [`crate::io::input_file`]).
+/// What a file dropped on the window gives at once: its path on the desktop (read then,
+/// by [`crate::io::input_file`]); in the browser nothing yet, its bytes arriving later in
+/// the inbox ([`take_arrived`]), each first passed to `check` with its name and size.
 #[cfg(not(target_arch = "wasm32"))]
-pub fn read_dropped(_ctx: &egui::Context, file: &egui::DroppedFileHandle, cap: u64) -> Option<Result<Arrived, String>> {
+pub fn dropped_path(
+    _ctx: &egui::Context,
+    file: &egui::DroppedFileHandle,
+    _check: impl Fn(&str, u64) -> Result<(), String> + 'static,
+) -> Option<Result<PathBuf, String>> {
     let path = file.path().to_path_buf();
-    let name = path.display().to_string();
-    let bytes = if path.exists() {
-        crate::io::input_file::read_capped(&path, cap, &phonglab_core::t!("file-kind-scenes"))
-    } else {
-        file.bytes().map_err(|e| phonglab_core::t!("cannot-read", path = name.clone(), error = e))
-    };
-    Some(bytes.map(|b| (name, b)))
+    if path.as_os_str().is_empty() {
+        return Some(Err(phonglab_core::t!("cannot-read", path = String::new(), error = "no path".to_string())));
+    }
+    Some(Ok(path))
 }
 
 /// Files that arrived since the last frame (the browser's chooser and drops; none on the
@@ -69,40 +71,18 @@ pub fn download(_name: &str, _bytes: &[u8], _mime: &str) -> Result<(), String> {
     Err("downloads are for the browser; the desktop saves at a path".into())
 }
 
-/// Saves `bytes` as a file the user names: on the desktop where the system's dialog says
-/// (offering `name`), written whole or not at all; in the browser as a download. `Ok(None)`:
-/// the user cancelled; `Ok(Some(where))`: saved there. `dialogs` is false where no dialog
-/// may open (headless tests): then nothing is saved, and the reason is returned. A path
-/// that is one of `inputs` (the scene file, its mesh) is refused
-/// ([`crate::io::same_file::refuse_output_onto_input`]).
-pub fn save_bytes(
-    name: &str,
-    bytes: &[u8],
-    mime: &str,
-    dialogs: bool,
-    inputs: &[&std::path::Path],
-) -> Result<Option<String>, String> {
-    #[cfg(not(target_arch = "wasm32"))]
-    {
-        let _ = mime;
-        if !dialogs {
-            return Err("no file dialog here".into());
-        }
-        let ext = std::path::Path::new(name).extension().map(|e| e.to_string_lossy().into_owned()).unwrap_or_default();
-        let Some(path) =
-            rfd::FileDialog::new().add_filter(ext.to_uppercase(), &[ext.as_str()]).set_file_name(name).save_file()
-        else {
-            return Ok(None);
-        };
-        crate::io::same_file::refuse_output_onto_input(&[&path], inputs)?;
-        crate::io::atomic_write::write(&path, bytes).map_err(|e| e.to_string())?;
-        Ok(Some(path.display().to_string()))
-    }
-    #[cfg(target_arch = "wasm32")]
-    {
-        let _ = (dialogs, inputs);
-        download(name, bytes, mime).map(|()| Some(name.to_string()))
-    }
+/// Where to save a file the user names, offering `name` (the desktop's dialog, filtered by
+/// its extension); `None` when cancelled or when no dialog could open.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn pick_path_to_save(name: &str) -> Option<PathBuf> {
+    let ext = std::path::Path::new(name).extension().map(|e| e.to_string_lossy().into_owned()).unwrap_or_default();
+    rfd::FileDialog::new().add_filter(ext.to_uppercase(), &[ext.as_str()]).set_file_name(name).save_file()
+}
+
+/// The browser has no dialog that returns a path: files go out as downloads ([`download`]).
+#[cfg(target_arch = "wasm32")]
+pub fn pick_path_to_save(_name: &str) -> Option<std::path::PathBuf> {
+    None
 }
 
 /// The browser has no dialog that returns a path: see [`choose_file`].
@@ -118,7 +98,7 @@ pub fn pick_scene_to_save(_start: Option<&std::path::Path>) -> Option<std::path:
 }
 
 #[cfg(target_arch = "wasm32")]
-pub use web::{choose_file, download, read_dropped, take_arrived};
+pub use web::{choose_file, download, dropped_path, take_arrived};
 
 #[cfg(target_arch = "wasm32")]
 mod web {
@@ -168,21 +148,20 @@ mod web {
         input.click();
     }
 
-    /// Reads a dropped file's bytes (asynchronously: they arrive in the inbox); `None` now.
-    pub fn read_dropped(
+    /// Reads a dropped file's bytes (asynchronously: they arrive in the inbox, once `check`
+    /// passes their name and size); no path now.
+    pub fn dropped_path(
         ctx: &egui::Context,
         file: &egui::DroppedFileHandle,
-        cap: u64,
-    ) -> Option<Result<Arrived, String>> {
+        check: impl Fn(&str, u64) -> Result<(), String> + 'static,
+    ) -> Option<Result<std::path::PathBuf, String>> {
         let (ctx, file) = (ctx.clone(), file.clone());
         wasm_bindgen_futures::spawn_local(async move {
             let name = file.path().display().to_string();
             let read = file.bytes_async().await;
-            let checked =
-                read.map_err(|e| phonglab_core::t!("cannot-read", path = name.clone(), error = e)).and_then(|b| {
-                    let what = phonglab_core::t!("file-kind-scenes");
-                    crate::io::input_file::within_cap(&name, b.len() as u64, cap, &what).map(|()| b)
-                });
+            let checked = read
+                .map_err(|e| phonglab_core::t!("cannot-read", path = name.clone(), error = e))
+                .and_then(|b| check(&name, b.len() as u64).map(|()| b));
             arrive(&ctx, checked.map(|b| (name, b)));
         });
         None

@@ -23,7 +23,7 @@
 //! | rank | group | modules |
 //! |---|---|---|
 //! | 9 | export: the student's own code, and back | `export::notebook`, `export::pyopengl`, `export::openframeworks`, `export::read_python` |
-//! | 8 | teach: for the classroom; study: what accuracy costs | [`exercise`], [`quiz`], [`shader`]; [`cost`] |
+//! | 8 | teach: for the classroom; study: what accuracy costs, the benchmark timed | [`exercise`], [`quiz`], [`shader`]; [`cost`], [`bench`] |
 //! | 7 | raster: the CPU renderer | [`render`], [`shaded`] |
 //! | 6 | specialise: only the stages a scene needs | [`plan`], [`specialised`], [`effects`] (the plan in words) |
 //! | 5 | formats: text in and out, ready-made documents | [`document`], [`library`], [`glref`], [`escape`] (user text for each language written) |
@@ -52,7 +52,7 @@ pub use model::{camera, error, materials, presets, rules, scene, transform, view
 pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
 pub use raster::{render, shaded};
 pub use specialise::{effects, plan, specialised};
-pub use study::cost;
+pub use study::{bench, cost};
 pub use teach::{exercise, quiz, shader};
 
 pub use breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerms, VertexLighting};

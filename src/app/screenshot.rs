@@ -1,0 +1,138 @@
+//! The whole window as a picture, drawn headless on the CPU (no display, no GPU) at a
+//! given size and scale: `phonglab screenshot` (teachers use it for slides and handouts)
+//! and the tests, which look at the pictures as a class would see them.
+
+use std::path::PathBuf;
+
+use anyhow::{Context as _, Result, bail};
+
+use super::{AppState, app_ui, layout};
+
+/// What to open before the picture is taken.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Opened {
+    /// Compare, with the scene pinned as A and B the same scene in Phong shading.
+    Compare,
+    /// The reflection lobe in the plot's place.
+    Lobe,
+    /// The quiz on the scene.
+    Quiz,
+    /// The Shader window.
+    Shader,
+    /// The Cost of accuracy window.
+    Cost,
+    /// The Phong demo's three corrections, side by side with the demo's own picture.
+    DemoFixes,
+}
+
+/// The picture asked for.
+#[derive(Clone, Debug)]
+pub struct Shot {
+    /// The window's size in points.
+    pub size: (u32, u32),
+    /// Pixels per point.
+    pub scale: f32,
+    /// Presentation mode.
+    pub present: bool,
+    /// The light theme (else the dark one).
+    pub light: bool,
+    /// A scene file (else the worksheet's scene).
+    pub scene: Option<PathBuf>,
+    /// What is open first.
+    pub open: Option<Opened>,
+    /// The PNG to write.
+    pub output: PathBuf,
+}
+
+/// The app's state for a screenshot: the scene, the mode, what is open.
+pub fn state_for(doc: phonglab_core::Document, present: bool, light: bool, open: Option<Opened>) -> AppState {
+    let mut state = AppState::worksheet();
+    state.doc = doc;
+    state.ui.layout.presenting = present;
+    state.ui.layout.theme = if light { layout::Theme::Light } else { layout::Theme::Dark };
+    match open {
+        Some(Opened::Compare) => {
+            state.compare.open = true;
+            state.compare.pin(&state.doc, state.ui.precision, state.ui.pow);
+            state.doc.view.shading = phonglab_core::Shading::Phong;
+        }
+        Some(Opened::Lobe) => state.ui.layout.beside = layout::Beside::Lobe,
+        Some(Opened::Quiz) => state.quiz.start(state.doc.clone()),
+        Some(Opened::Shader) => state.shader.open = true,
+        Some(Opened::Cost) => state.cost.open = true,
+        Some(Opened::DemoFixes) => {
+            state.doc = phonglab_core::library::phong_demo_document();
+            state.ui.demo_fixes = [true; 3];
+        }
+        None => {}
+    }
+    state
+}
+
+/// A picture of the whole window: `width` x `height` points at `scale` pixels a point, after
+/// the frames it takes to settle. Returns the RGBA8 pixels and the state as last drawn.
+pub fn take(state: AppState, width: f32, height: f32, scale: f32) -> (usize, usize, Vec<u8>, AppState) {
+    let mut state = state;
+    let canvas = crate::paint::egui_cpu::paint_ui(width, height, scale, |ui| app_ui(ui, &mut state));
+    (canvas.width, canvas.height, canvas.rgba8(), state)
+}
+
+/// The share of the window that is empty: tiles of `tile` x `tile` pixels that show
+/// nothing but the panels' background (a tile with any text, line or picture in it is not
+/// empty, so the gaps between the letters of a paragraph do not count).
+pub fn empty_share(rgba: &[u8], width: usize, height: usize, background: egui::Color32, tile: usize) -> f64 {
+    let bg = background.to_array();
+    let (tx, ty) = (width / tile, height / tile);
+    let mut empty = 0;
+    for j in 0..ty {
+        for i in 0..tx {
+            let all_bg = (0..tile).all(|y| {
+                let row = ((j * tile + y) * width + i * tile) * 4;
+                rgba[row..row + tile * 4].chunks_exact(4).all(|p| p[..3] == bg[..3])
+            });
+            empty += usize::from(all_bg);
+        }
+    }
+    empty as f64 / (tx * ty).max(1) as f64
+}
+
+/// Takes the picture `shot` asks for and writes it (`phonglab screenshot`).
+pub fn run(a: &Shot) -> Result<()> {
+    if !(0.5..=4.0).contains(&a.scale) {
+        bail!(phonglab_core::t!("err-scale", scale = phonglab_core::locale::decimal(&a.scale.to_string())));
+    }
+    let (pw, ph) = ((a.size.0 as f32 * a.scale).round() as u32, (a.size.1 as f32 * a.scale).round() as u32);
+    let needed = crate::io::budget::window_picture_bytes(u64::from(a.size.0), u64::from(a.size.1), f64::from(a.scale));
+    crate::io::budget::check(&phonglab_core::t!("budget-what-window", width = pw, height = ph), needed)
+        .map_err(anyhow::Error::msg)?;
+    let scene: Vec<&std::path::Path> = a.scene.iter().map(PathBuf::as_path).collect();
+    crate::io::same_file::refuse_output_onto_input(&[&a.output], &scene).map_err(anyhow::Error::msg)?;
+    crate::io::atomic_write::check_file_destination(&a.output)?;
+    let doc = match &a.scene {
+        Some(p) => crate::io::input_file::load_scene(p).map_err(anyhow::Error::msg)?,
+        None => phonglab_core::Document::default(),
+    };
+    let mesh: Vec<&std::path::Path> = doc.view.obj.iter().map(std::path::Path::new).collect();
+    crate::io::same_file::refuse_output_onto_input(&[&a.output], &mesh).map_err(anyhow::Error::msg)?;
+    let state = state_for(doc, a.present, a.light, a.open);
+    let (w, h) = (a.size.0 as f32, a.size.1 as f32);
+    let (pw, ph, rgba, state) = take(state, w, h, a.scale);
+    crate::io::image::write_png(&a.output, pw, ph, &rgba).context("the screenshot")?;
+    let g = &state.ui.geometry;
+    let bg = state.ui.layout.theme.visuals().panel_fill;
+    let sides: Vec<String> = g.pictures.iter().map(|r| format!("{:.0}", r.width().min(r.height()))).collect();
+    let none = phonglab_core::t!("screenshot-none");
+    eprintln!(
+        "{}",
+        phonglab_core::t!(
+            "screenshot-summary",
+            path = a.output.display().to_string(),
+            width = pw,
+            height = ph,
+            pictures = if sides.is_empty() { none.clone() } else { sides.join(" + ") },
+            circle = g.plot.as_ref().map_or(none, |p| format!("{:.0}", 2.0 * p.unit)),
+            empty = format!("{:.0}", 100.0 * empty_share(&rgba, pw, ph, bg, (16.0 * a.scale).round() as usize))
+        )
+    );
+    Ok(())
+}

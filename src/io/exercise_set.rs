@@ -1,0 +1,271 @@
+//! Exercise sets (what `phonglab exercise` and the window's Export write): exercise sheets in the worksheet's style, each with its scene file
+//! and its answer key (the worked calculation `phonglab explain` prints for that file).
+//!
+//! For exercise k (numbered from 1; 0 is the worksheet itself, with `--worksheet`) it
+//! writes `exercise-KK.md` (the sheet), `exercise-KK-key.md` (the answers) and
+//! `exercise-KK.toml` (the scene, which the app and every command open), `index.md`
+//! listing them, `sheets.pdf` (to hand out: each exercise starts a page and takes an even
+//! number of them, two for levels 1 to 3, so printed on both sides it is one sheet of
+//! paper; the lines for the class, the name and the date; each page's footer names its
+//! exercise and counts its pages) and `keys.pdf` (for the teacher), typeset by [`super::sheet_pdf`]
+//! in the chosen language. The same seed gives the same files, byte for byte.
+//! The set is written as one: a folder holds one whole set, never parts of two.
+
+use std::fmt::Write as _;
+
+use anyhow::{Context as _, Result};
+use phonglab_core::exercise::{Exercise, Spec, generate, sheet_markdown};
+use phonglab_core::explain::{Side, explain};
+use phonglab_core::{Document, Engine};
+
+use super::atomic_write::FileSet;
+use super::sheet_pdf::{Block, Pages, pdf};
+use phonglab_core::t;
+
+/// What a set is made of: the seed and the count, the effects and rules ([`Spec`]), the
+/// rules' name as the index shows it, and whether exercise 0, the worksheet itself, comes
+/// first.
+#[derive(Clone, Debug)]
+pub struct Request {
+    /// The random seed: the same seed gives the same files, byte for byte.
+    pub seed: u64,
+    /// How many exercises.
+    pub count: usize,
+    /// The effects the exercises have and the rules their answers follow.
+    pub spec: Spec,
+    /// The rules as the index names them (`worksheet`, `opengl`).
+    pub rules_name: String,
+    /// Exercise 0: the worksheet's five modelviews on one sheet.
+    pub worksheet: bool,
+}
+
+/// The answer key: what `phonglab explain FILE` prints (and `--back` with two-sided
+/// lighting), in a code block.
+pub fn answer_key(doc: &Document, file: &str) -> Result<String> {
+    let name = phonglab_core::escape::markdown::text(&doc.name);
+    Ok(format!("# {}\n\n{}", t!("key-title", name = name), answer_key_body(doc, file)?))
+}
+
+/// The worked calculation of `doc`'s vertex in f64: the front side, and the back one too
+/// with two-sided lighting. What every key, in Markdown or in the PDF, shows.
+fn explained_sides(doc: &Document) -> Result<Vec<phonglab_core::explain::Explanation>> {
+    let lit = Engine::<f64>::light_scene_vertex(&doc.scene)?;
+    let sides: &[Side] = if doc.scene.light_model.two_sided { &[Side::Front, Side::Back] } else { &[Side::Front] };
+    Ok(sides.iter().map(|&side| explain(&doc.scene, &lit, side)).collect())
+}
+
+/// The answer key without its title.
+fn answer_key_body(doc: &Document, file: &str) -> Result<String> {
+    let mut o = format!("{}\n\n", t!("key-intro", file = file));
+    for ex in explained_sides(doc)? {
+        // Inside a code block: one printable line.
+        let name = phonglab_core::escape::terminal::text(&doc.name);
+        let _ = writeln!(o, "```\n{}\n{}```\n", t!("worked-calculation-of", name = name), ex.to_text(8));
+    }
+    Ok(o)
+}
+
+/// Is `name` a file of an exercise set (so a new set in the same folder replaces it)?
+pub fn belongs_to_a_set(name: &str) -> bool {
+    let stem = name.strip_suffix(".md").or_else(|| name.strip_suffix(".toml"));
+    match stem {
+        Some("index") => name == "index.md",
+        Some(stem) => stem.strip_prefix("exercise-").is_some_and(|rest| {
+            let rest = rest.strip_suffix("-key").unwrap_or(rest);
+            let (number, mview) = rest.split_once("-mview").unwrap_or((rest, "1"));
+            !number.is_empty()
+                && number.bytes().all(|b| b.is_ascii_digit())
+                && mview.len() == 1
+                && mview.bytes().all(|b| b.is_ascii_digit())
+        }),
+        // exercises.pdf: what a set held before the sheets and keys were apart.
+        None => ["sheets.pdf", "keys.pdf", "exercises.pdf"].contains(&name),
+    }
+}
+
+/// The worksheet as exercise 0: its five modelviews, one sheet, with the values it prints.
+fn worksheet_sheet(set: &mut FileSet, sheets: &mut Vec<Block>, keys: &mut Vec<Block>) -> Result<String> {
+    let mut sheet = format!("# {}\n\n{}\n\n", t!("exercise-zero-title"), t!("exercise-zero-intro"));
+    let mut key = format!("# {}\n\n", t!("key-title", name = t!("exercise-zero-name")));
+    sheets.extend([
+        Block::Section(t!("exercise-zero-title")),
+        Block::Title(t!("exercise-zero-title")),
+        Block::WriteOn(vec![t!("sheet-class"), t!("sheet-name"), t!("sheet-date")]),
+        Block::Text(t!("exercise-zero-intro").replace('`', "")),
+    ]);
+    for k in 1..=5u8 {
+        let doc = phonglab_core::library::documents()
+            .into_iter()
+            .map(|(_, d)| d)
+            .find(|d| d.camera == phonglab_core::CameraSpec::Worksheet(k))
+            .context("the worksheet's documents")?;
+        let file = format!("exercise-00-mview{k}.toml");
+        set.add(file.clone(), doc.to_toml()?);
+        let rows = phonglab_core::transform::mat4_rows(&doc.scene.eye_from_world);
+        let _ = writeln!(sheet, "## mview{k} ({file})\n\n```");
+        for r in rows {
+            let _ = writeln!(sheet, "[{}]", r.map(|x| phonglab_core::locale::num(x, 8)).join(" "));
+        }
+        let _ = writeln!(sheet, "```\n");
+        sheets.push(Block::Heading(format!("mview{k} ({file})")));
+        sheets.push(Block::Matrix { name: format!("mview{k}"), rows: rows.iter().map(|r| components(r)).collect() });
+        let _ = write!(key, "## mview{k}\n\n{}", answer_key_body(&doc, &file)?);
+        keys.extend(key_blocks(&doc, &file)?.into_iter().skip(1));
+    }
+    set.add("exercise-00.md", sheet);
+    set.add("exercise-00-key.md", key);
+    Ok(format!("- [{}](exercise-00.md) ([{}](exercise-00-key.md))\n", t!("exercise-zero-title"), t!("answers")))
+}
+
+/// A vector's components for people (8 significant digits, the locale's decimal mark).
+fn components(v: &[f64]) -> Vec<String> {
+    v.iter().map(|x| phonglab_core::locale::num(*x, 8)).collect()
+}
+
+/// A colour as the worksheet writes it, `[r g b 0]`.
+fn colour(c: glam::DVec4) -> Vec<String> {
+    components(&[c.x, c.y, c.z, 0.0])
+}
+
+/// An exercise's sheet, to hand out: the class, name and date lines, the givens set as
+/// vectors and a matrix, and a box for each step, sized for its value.
+fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
+    use Block::*;
+    let s = &ex.doc.scene;
+    let vector = |name: &str, values: Vec<String>| Vector { name: name.into(), values, note: String::new() };
+    let rules = phonglab_core::exercise::rules_in_words(s.rules.set);
+    let mut b = vec![
+        Title(ex.doc.name.clone()),
+        WriteOn(vec![t!("sheet-class"), t!("sheet-name"), t!("sheet-date")]),
+        Text(format!("{} {}", t!("sheet-compute", rules = rules), t!("sheet-colours"))),
+        Heading(t!("sheet-vertex")),
+        vector("vertexPos", components(&s.vertex.position.to_array())),
+        vector("vertexNormal", components(&s.vertex.normal.extend(0.0).to_array())),
+        Heading(t!("sheet-modelview")),
+        Text(ex.modelview.clone()),
+        Matrix {
+            name: "mview".into(),
+            rows: phonglab_core::transform::mat4_rows(&s.eye_from_world).iter().map(|r| components(r)).collect(),
+        },
+    ];
+    for (i, l) in s.lights.iter().enumerate() {
+        b.push(Heading(t!("light-tab", index = i.to_string())));
+        let what = if l.position.w == 0.0 { t!("sheet-direction") } else { t!("sheet-position") };
+        b.push(Vector {
+            name: "lightPos".into(),
+            values: components(&l.position.to_array()),
+            note: t!("sheet-light-world", what = what),
+        });
+        b.push(vector("Lamb", colour(l.ambient)));
+        b.push(vector("Ldif", colour(l.diffuse)));
+        b.push(vector("Lspec", colour(l.specular)));
+        if l.position.w != 0.0 {
+            b.push(vector("[atC atLin atQuad]", components(&l.attenuation)));
+        }
+        if l.is_spot() {
+            b.push(vector("lightSpotDir", components(&l.spot_direction.extend(0.0).to_array())));
+            b.push(vector("[spotCutoff spotCoef]", components(&[l.spot_cutoff, l.spot_exponent])));
+        }
+    }
+    let m = &s.material;
+    b.push(Heading(t!("sheet-material", name = phonglab_core::materials::display_name(&ex.material))));
+    b.push(vector("matAmb", colour(m.ambient)));
+    b.push(vector("matDif", colour(m.diffuse)));
+    b.push(vector("matSpec", colour(m.specular)));
+    b.push(vector("ns", components(&[m.shininess])));
+    let lm = &s.light_model;
+    let yes_no = |on: bool| if on { t!("yes") } else { t!("no") };
+    b.push(Heading(t!("sheet-light-model")));
+    b.push(Text(format!(
+        "{}: {}. {}: {}.",
+        t!("local-viewer"),
+        yes_no(lm.local_viewer),
+        t!("two-sided"),
+        yes_no(lm.two_sided)
+    )));
+    if s.rules.scene_ambient() {
+        b.push(vector(&t!("scene-ambient"), colour(lm.ambient)));
+    }
+    b.push(Heading(t!("sheet-compute-heading")));
+    let asked = (0..ex.key.steps.len()).filter(|k| phonglab_core::quiz::asked(s, &ex.key, *k));
+    for (n, k) in asked.enumerate() {
+        let st = &ex.key.steps[k];
+        let cells = st.value.as_ref().map_or(1, Vec::len);
+        b.push(Answer { label: format!("{}. {}", n + 1, st.title), name: st.name.clone(), cells });
+    }
+    b.push(Text(t!("sheet-scene-file", file = toml).replace('`', "")));
+    b
+}
+
+/// An exercise's key, for the teacher: every step's formula and value, as explain prints
+/// them (both sides with two-sided lighting).
+fn key_blocks(doc: &Document, file: &str) -> Result<Vec<Block>> {
+    use Block::*;
+    let mut b = vec![Title(t!("key-title", name = &doc.name)), Text(t!("key-intro", file = file).replace('`', ""))];
+    for ex in explained_sides(doc)? {
+        b.push(Heading(ex.heading.clone()));
+        for (k, st) in ex.steps.iter().enumerate() {
+            let value = match &st.value {
+                Some(v) => phonglab_core::locale::decimal(&phonglab_core::explain::fmt_value(v, 8)),
+                None => t!("not-applicable"),
+            };
+            b.push(KeyStep {
+                label: format!("{}. {}", k + 1, st.title),
+                formula: st.formula.clone(),
+                line: format!("{} = {value}", st.name),
+            });
+        }
+    }
+    Ok(b)
+}
+
+/// The exercises and the files of their set: the sheets, keys and scene files, `index.md`
+/// and the two PDFs, `sheets.pdf` and `keys.pdf` (nothing is written).
+pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
+    let spec = &a.spec;
+    let exercises = generate(a.seed, a.count, spec).map_err(|e| anyhow::anyhow!(e))?;
+    let mut set = FileSet::default();
+    let names: Vec<&str> = spec.effects.iter().map(|e| e.name()).collect();
+    let effects = if names.is_empty() { t!("index-directional-only") } else { names.join(", ") };
+    let mut index = format!(
+        "# {}\n\n{}\n\n",
+        t!("index-title", seed = a.seed.to_string()),
+        t!("index-intro", effects = effects, rules = &a.rules_name)
+    );
+    // To hand out, each exercise on its own paper; and the keys, for the teacher.
+    let (mut sheets, mut keys) = (Vec::new(), Vec::new());
+    if a.worksheet {
+        let title = t!("key-title", name = t!("exercise-zero-name"));
+        keys.extend([Block::Section(title.clone()), Block::Title(title)]);
+        index.push_str(&worksheet_sheet(&mut set, &mut sheets, &mut keys)?);
+    }
+    for (i, ex) in exercises.iter().enumerate() {
+        let stem = format!("exercise-{:02}", i + 1);
+        let toml = format!("{stem}.toml");
+        set.add(toml.clone(), ex.doc.to_toml()?);
+        let sheet = format!("{}\n{}\n", sheet_markdown(ex), t!("sheet-scene-file", file = &toml));
+        set.add(format!("{stem}.md"), sheet.clone());
+        set.add(format!("{stem}-key.md"), answer_key(&ex.doc, &toml)?);
+        sheets.push(Block::Section(ex.doc.name.clone()));
+        sheets.extend(sheet_blocks(ex, &toml));
+        keys.push(Block::Section(t!("key-title", name = &ex.doc.name)));
+        keys.extend(key_blocks(&ex.doc, &toml)?);
+        let name = phonglab_core::escape::markdown::text(&ex.doc.name);
+        let _ = writeln!(index, "- [{name}]({stem}.md) ([{}]({stem}-key.md))", t!("answers"));
+    }
+    let _ = writeln!(index, "\n{}", t!("index-printable"));
+    set.add("index.md", index);
+    // Sheets are printed on both sides and handed out: each exercise its own paper.
+    set.add("sheets.pdf", pdf(&sheets, Pages::Duplex)?);
+    set.add("keys.pdf", pdf(&keys, Pages::Plain)?);
+    Ok((exercises, set))
+}
+
+/// Writes the exercises as one set into the folder `dir` ([`super::atomic_write::write_set`]):
+/// the folder ends with the new set whole, or as it was; returns them.
+pub fn write(dir: &std::path::Path, a: &Request) -> Result<Vec<Exercise>> {
+    super::atomic_write::check_folder_destination(dir)?;
+    let (exercises, set) = exercise_set(a)?;
+    super::atomic_write::write_set(dir, &set, belongs_to_a_set)?;
+    Ok(exercises)
+}

@@ -1,0 +1,32 @@
+//! A student's own code read back: which files are worksheet-style notebooks (`.ipynb`) or
+//! scripts (`.py`), the largest read, and their text into a scene named after the file
+//! ([`phonglab_core::export::read_python`]), for `phonglab import` and the window's Open
+//! and drop alike.
+
+use std::path::Path;
+
+/// The largest notebook or script opened (a notebook with its outputs is larger than a scene).
+pub const MAX_CODE_BYTES: u64 = 16 * super::input_file::MAX_SCENE_BYTES;
+
+/// Is `path` a worksheet-style notebook (`Some(true)`) or Python script (`Some(false)`)?
+pub fn student_code(path: &Path) -> Option<bool> {
+    let ext = path.extension()?.to_string_lossy().to_lowercase();
+    match ext.as_str() {
+        "ipynb" => Some(true),
+        "py" => Some(false),
+        _ => None,
+    }
+}
+
+/// Reads the text of the worksheet-style notebook or script at `path` into a scene named
+/// after the file (the app's open and drop, and `phonglab import`); an error names the file.
+pub fn import_text(
+    text: &str,
+    notebook: bool,
+    path: &Path,
+) -> Result<phonglab_core::export::read_python::Imported, String> {
+    // A file's name may hold anything but `/`: the scene's name is its printable form.
+    let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    let name = phonglab_core::escape::printable(&stem);
+    phonglab_core::export::read_python::read(text, notebook, &name).map_err(|e| format!("{}: {e}", path.display()))
+}
