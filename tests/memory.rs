@@ -180,8 +180,9 @@ fn eval_takes_the_memory_of_one_case_whatever_the_number_of_cases() {
         case_file(&path, n);
         let mut out = std::io::sink();
         let options = phonglab_core::EvalOptions::default();
-        let (r, peak) =
-            peak_of(|| phonglab::cli::eval_stream(&path, phonglab::cli::Precision::F32, options, false, &mut out));
+        let (r, peak) = peak_of(|| {
+            phonglab::cli::eval::eval_stream(&path, phonglab_core::Precision::F32, options, false, &mut out)
+        });
         assert_eq!(r.unwrap(), (n, 0));
         eprintln!("{n} cases: peak {peak} bytes");
         peaks.push(peak);

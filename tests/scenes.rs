@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use phonglab::cli::cases_json;
+use phonglab::cli::case::cases_json;
 use phonglab_core::glref::{self, CaseColors};
 use phonglab_core::{Document, Engine, EvalOptions, LightPlacement, Rules, materials, presets};
 

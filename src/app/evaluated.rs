@@ -7,15 +7,8 @@ use phonglab_core::breakdown::VertexLighting;
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::{Document, Engine, EvalOptions, Limit, PowFn, Real, SceneError, Vec3Ops};
 
-/// Engine precision shown in the app.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Precision {
-    /// Single precision, as OpenGL computes.
-    F32,
-    /// Double precision.
-    #[default]
-    F64,
-}
+/// Engine precision shown in the app: the core's.
+pub use phonglab_core::Precision;
 
 /// The colours of one side, as f64.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -109,14 +102,4 @@ pub fn evaluate(doc: &Document, precision: Precision, pow: PowFn, side: Side) ->
             evaluated(doc, &Engine::<f64>::with_options(&doc.scene, options)?.light(&doc.scene.vertex), side)
         }
     })
-}
-
-impl Precision {
-    /// "f32" or "f64".
-    pub fn label(self) -> &'static str {
-        match self {
-            Precision::F32 => "f32",
-            Precision::F64 => "f64",
-        }
-    }
 }

@@ -6,6 +6,7 @@ use std::io::IsTerminal as _;
 use std::path::PathBuf;
 
 use anyhow::{Context as _, Result, bail};
+use clap::Args;
 use phonglab_core::cost::{self, Question, Setup, Study, Timing};
 use phonglab_core::{Document, ObjectKind};
 
@@ -220,4 +221,55 @@ pub fn run(a: &CostRun) -> Result<()> {
     crate::io::atomic_write::write_set(&a.out, &set, belongs_to_a_report)?;
     eprintln!("{}", phonglab_core::t!("cost-wrote", files = set.to_string(), out = a.out.display().to_string()));
     Ok(())
+}
+
+/// `phonglab cost`.
+#[derive(Args, Debug)]
+pub struct CostArgs {
+    /// The object to study (default: all three).
+    #[arg(long, value_enum)]
+    pub object: Option<ObjectKind>,
+    /// Where to write cost.csv, cost.png and the heat maps.
+    #[arg(long, default_value = ".")]
+    pub out: PathBuf,
+    /// Image width and height in pixels.
+    #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(16..=2048))]
+    pub size: u32,
+    /// A scene file (TOML) for the lighting and the view; default: the worksheet's scene.
+    #[arg(long)]
+    pub scene: Option<PathBuf>,
+    /// Turn the object this many degrees about y (the cylinder shows its side at 30).
+    #[arg(long, default_value_t = 30.0)]
+    pub spin: f64,
+    /// Threads for rendering (default: all cores).
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Quick timings (3 frames or 0.1 s per variant) instead of careful ones.
+    #[arg(long)]
+    pub quick: bool,
+}
+
+/// Runs `phonglab cost`.
+pub fn run_args(a: &CostArgs) -> Result<()> {
+    if let Some(scene) = &a.scene {
+        // The report replaces every file of an earlier report in the folder.
+        let mut names: Vec<String> = ["cost.csv", "cost.md", "cost.png"].map(String::from).to_vec();
+        let earlier = std::fs::read_dir(&a.out).into_iter().flatten().flatten();
+        names.extend(earlier.map(|e| e.file_name().to_string_lossy().into_owned()).filter(|n| belongs_to_a_report(n)));
+        let names: Vec<&str> = names.iter().map(String::as_str).collect();
+        crate::io::same_file::refuse_outputs_in_folder(&a.out, &names, &[scene]).map_err(anyhow::Error::msg)?;
+    }
+    let doc = match &a.scene {
+        Some(p) => super::scene_file(p)?,
+        None => phonglab_core::Document::default(),
+    };
+    run(&CostRun {
+        objects: a.object.map_or(phonglab_core::ObjectKind::ALL.to_vec(), |o| vec![o]),
+        doc,
+        out: a.out.clone(),
+        size: a.size as usize,
+        spin: a.spin,
+        threads: a.threads.unwrap_or(0),
+        timing: if a.quick { phonglab_core::cost::Timing::QUICK } else { phonglab_core::cost::Timing::CAREFUL },
+    })
 }

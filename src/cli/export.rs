@@ -57,7 +57,7 @@ pub fn export(a: &ExportArgs) -> Result<()> {
         refuse_onto(target, output, scene)?;
     }
     let doc = match &a.scene {
-        Some(p) => crate::cli::load_scene_file(p)?,
+        Some(p) => crate::io::input_file::load_scene(p).map_err(anyhow::Error::msg)?,
         None => phonglab_core::Document::default(),
     };
     if let (Some(mesh), Some(output)) = (&doc.view.obj, &a.output) {

@@ -61,7 +61,7 @@ pub use document::{Document, DocumentError};
 pub use error::SceneError;
 pub use lighting::{Engine, EvalOptions, Renormalize};
 pub use pow::PowFn;
-pub use real::{Real, Vec3Ops};
+pub use real::{Precision, Real, Vec3Ops};
 pub use rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel};
 pub use scene::{Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Rgba, Scene, Vertex};
 pub use shaded::ShadedSetup;

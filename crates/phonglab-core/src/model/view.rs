@@ -6,6 +6,7 @@ use crate::model::error::SceneError;
 
 /// The objects of the Phong demo.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 #[serde(rename_all = "kebab-case")]
 pub enum ObjectKind {
     /// gluSphere(0.5, slices, stacks).
@@ -16,6 +17,7 @@ pub enum ObjectKind {
     /// gluCylinder(0.3, 0.3, 0.5, slices, stacks).
     Cylinder,
     /// The user's mesh: the OBJ file at [`View::obj`], fitted to radius 0.5.
+    #[cfg_attr(feature = "clap", value(skip))]
     Obj,
 }
 
@@ -46,6 +48,7 @@ impl ObjectKind {
 
 /// How lighting is spread over a surface.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 #[serde(rename_all = "kebab-case")]
 pub enum Shading {
     /// Lighting per vertex, colours interpolated.

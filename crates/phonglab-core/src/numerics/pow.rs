@@ -21,6 +21,7 @@ use crate::numerics::real::Real;
 
 /// Which power function the specular and spot terms use.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum PowFn {
     /// The correctly rounded library `pow` (the default).
     #[default]

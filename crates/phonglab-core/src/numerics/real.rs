@@ -9,6 +9,28 @@ use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub};
 
 use glam::{DMat3, DVec3};
 
+/// The precision an engine computes in: f32 as OpenGL does, or f64 (what the app shows by
+/// default, and the reference).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum Precision {
+    /// Single precision, as OpenGL computes.
+    F32,
+    /// Double precision.
+    #[default]
+    F64,
+}
+
+impl Precision {
+    /// `f32` or `f64`.
+    pub fn label(self) -> &'static str {
+        match self {
+            Precision::F32 => "f32",
+            Precision::F64 => "f64",
+        }
+    }
+}
+
 /// A floating-point scalar the engine can run in: `f32` or `f64`.
 pub trait Real:
     Copy
