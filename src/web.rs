@@ -69,7 +69,7 @@ impl WebApp {
         let (session, notices) = session::Session::from_text(stored.as_deref());
         let mut state = restore(&session, notices);
         state.gpu = cc.wgpu_render_state.as_ref().map(crate::app::gpu_view::install);
-        state.ui.renderer = renderer_asked();
+        state.view_options.renderer = renderer_asked();
         WINDOW.with(|w| *w.borrow_mut() = Some(cc.egui_ctx.clone()));
         WebApp {
             state,

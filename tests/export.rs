@@ -152,6 +152,6 @@ fn the_export_menu_copies_each_kind_of_code_and_a_dropped_notebook_opens_as_the_
         s.message
     );
     // Save goes beside the notebook, never over it.
-    assert_eq!(s.ui.file_path, dir.join("aluno.toml").display().to_string());
+    assert_eq!(s.files.path, dir.join("aluno.toml").display().to_string());
     let _ = std::fs::remove_dir_all(&dir);
 }

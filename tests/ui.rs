@@ -202,10 +202,10 @@ fn the_vector_plot_has_view_buttons_and_orbits_when_dragged() {
     let mut h = harness();
     h.get_by_label("XY").click();
     h.run_steps(1);
-    assert_eq!(h.state().ui.orbit, Orbit::XY);
+    assert_eq!(h.state().orbit, Orbit::XY);
     h.get_by_label("ZY").click();
     h.run_steps(1);
-    assert_eq!(h.state().ui.orbit, Orbit::ZY);
+    assert_eq!(h.state().orbit, Orbit::ZY);
     let plot = h.get_by_label("vector plot").rect().center();
     h.drag_at(plot);
     h.run_steps(1);
@@ -213,7 +213,7 @@ fn the_vector_plot_has_view_buttons_and_orbits_when_dragged() {
     h.run_steps(1);
     h.drop_at(plot + egui::vec2(40.0, 0.0));
     h.run_steps(1);
-    assert_ne!(h.state().ui.orbit, Orbit::ZY, "dragging orbits the view");
+    assert_ne!(h.state().orbit, Orbit::ZY, "dragging orbits the view");
 }
 
 #[test]
@@ -411,7 +411,7 @@ fn dropping_a_scene_file_opens_it() {
     h.input_mut().dropped_files.push(std::sync::Arc::new(common::Dropped(demo.clone())));
     h.run_steps(2);
     assert_eq!(h.state().doc.name, "the Phong demo");
-    assert_eq!(h.state().ui.file_path, demo.display().to_string(), "Save writes back to it");
+    assert_eq!(h.state().files.path, demo.display().to_string(), "Save writes back to it");
     // A dropped file that is not a scene is refused; the Phong demo stays.
     let png = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/screenshot.png");
     h.input_mut().dropped_files.push(std::sync::Arc::new(common::Dropped(png)));
@@ -556,7 +556,7 @@ fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
     }
     h.get_by_label("light fixed in the world").click();
     h.run_steps(2);
-    assert_eq!(h.state().ui.demo_fixes, [true, false, false]);
+    assert_eq!(h.state().view_options.demo_fixes, [true, false, false]);
     // The reasons open in one click, and the switches have not moved.
     h.get_by_label_contains("Why the demo differs").click();
     h.run_steps(2);
@@ -566,12 +566,14 @@ fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
     assert_eq!(images.len(), 2, "{images:?}");
     assert!(images[0].center().x < images[1].center().x);
     h.get_by_label("Corrected: light fixed in the world");
-    let corrected = phonglab::app::shaded::corrected_document(&h.state().doc, &h.state().ui.demo_fixes).unwrap();
+    let corrected =
+        phonglab::app::shaded::corrected_document(&h.state().doc, &h.state().view_options.demo_fixes).unwrap();
     assert_eq!(corrected.view.lighting_space, phonglab_core::LightingSpace::Eye);
     assert_eq!(h.state().doc.view.lighting_space, phonglab_core::LightingSpace::Object, "the demo's stays");
     h.get_by_label("highlight in the light's colour").click();
     h.run_steps(2);
-    let corrected = phonglab::app::shaded::corrected_document(&h.state().doc, &h.state().ui.demo_fixes).unwrap();
+    let corrected =
+        phonglab::app::shaded::corrected_document(&h.state().doc, &h.state().view_options.demo_fixes).unwrap();
     assert_eq!(corrected.scene.material.specular.truncate(), DVec3::splat(0.5));
     h.get_by_label("Corrected: light fixed in the world, highlight in the light's colour");
 }
@@ -734,7 +736,7 @@ fn the_demos_switches_stay_where_they_are_when_one_is_clicked() {
         h.run_steps(3);
         assert_eq!(at(&h), before, "after switching {:?} on", d.fix_label());
     }
-    assert_eq!(h.state().ui.demo_fixes, [true; 3]);
+    assert_eq!(h.state().view_options.demo_fixes, [true; 3]);
     assert_eq!(h.state().ui.geometry.pictures.len(), 2, "the corrected picture beside the demo's");
 }
 

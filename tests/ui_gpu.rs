@@ -23,7 +23,7 @@ fn harness(choice: RendererChoice, shading: Shading) -> Harness<'static, AppStat
     );
     let mut state = AppState::worksheet();
     state.gpu = Some(gpu_view::install(&rs));
-    state.ui.renderer = choice;
+    state.view_options.renderer = choice;
     state.doc.view.shading = shading;
     // The sphere: the GPU and CPU rasters are compared pixel for pixel on it.
     state.doc.view.object = phonglab_core::ObjectKind::Sphere;
@@ -112,11 +112,11 @@ fn flat_shading_and_the_pow_study_stay_on_the_cpu() {
     let h = harness(RendererChoice::Gpu, Shading::Flat);
     assert!(matches!(&h.state().shaded.main.drawn_by, DrawnBy::Cpu { why } if why.contains("Flat")));
     let mut h = harness(RendererChoice::Gpu, Shading::Phong);
-    h.state_mut().ui.pow = PowFn::Schlick;
+    h.state_mut().settings.pow = PowFn::Schlick;
     h.run_steps(2);
     assert!(matches!(&h.state().shaded.main.drawn_by, DrawnBy::Cpu { why } if why.contains("power function")));
     // And back on the GPU when the exact power returns.
-    h.state_mut().ui.pow = PowFn::Exact;
+    h.state_mut().settings.pow = PowFn::Exact;
     h.run_steps(2);
     assert!(matches!(h.state().shaded.main.drawn_by, DrawnBy::Gpu { .. }));
 }
@@ -132,7 +132,7 @@ fn the_renderer_is_chosen_under_view_options() {
     h.run_steps(2);
     h.get_by_label("CPU (the reference)").click();
     h.run_steps(3);
-    assert_eq!(h.state().ui.renderer, RendererChoice::Cpu);
+    assert_eq!(h.state().view_options.renderer, RendererChoice::Cpu);
     h.get_by_label_contains("Drawn by the CPU renderer: the CPU renderer is chosen");
     assert!(h.state().shaded.main.image_px() > 0);
 }

@@ -177,7 +177,7 @@ fn set_up(w: f32, h: f32, sc: Scenario) -> Harness<'static, AppState> {
             let s = harness.state_mut();
             s.load(phonglab_core::library::phong_demo_document(), "the Phong demo");
             s.doc.view.auto_rotate = false;
-            s.ui.demo_fixes = [true, false, true];
+            s.view_options.demo_fixes = [true, false, true];
             harness.run_steps(4);
         }
     }

@@ -90,8 +90,8 @@ fn check(h: &Harness<'static, AppState>, step: usize, what: &str) {
     let e = s.evaluate().unwrap_or_else(|e| panic!("step {step} ({what}): {e}"));
     assert!(!e.explanation.steps.is_empty(), "step {step} ({what}): an explanation");
     let mut s64 = AppState { doc: s.doc.clone(), ..AppState::default() };
-    s64.ui.precision = Precision::F64;
-    s64.ui.pow = s.ui.pow;
+    s64.settings.precision = Precision::F64;
+    s64.settings.pow = s.settings.pow;
     let e64 = s64.evaluate().unwrap();
     for (c, c64) in colours(&e).into_iter().zip(colours(&e64)) {
         for k in 0..4 {
@@ -217,7 +217,7 @@ fn run(seed: u64, steps: usize) {
     std::fs::create_dir_all(&dir).unwrap();
     let mut state = AppState::worksheet();
     // Save and Open use a file of their own.
-    state.ui.file_path = dir.join("random.toml").display().to_string();
+    state.files.path = dir.join("random.toml").display().to_string();
     let mut h =
         Harness::builder().with_size([1500.0, 1000.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
     h.run_steps(2);

@@ -188,7 +188,7 @@ fn ctrl_s_saves_from_the_path_field_and_letters_there_are_text() {
     h.get_by_role_and_label(Role::TextInput, "Scene file:").type_text(last);
     h.run_steps(1);
     assert!(!h.state().doc.scene.light_model.local_viewer);
-    assert_eq!(h.state().ui.file_path, typed);
+    assert_eq!(h.state().files.path, typed);
     assert!(h.get_by_role_and_label(Role::TextInput, "Scene file:").is_focused());
     h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::S);
     h.run_steps(2);

@@ -82,7 +82,7 @@ pub fn all_panels_open(ctx: &egui::Context, size: [f32; 2]) -> Result<AppState> 
     state.ui.show_help = true;
     state.cost.open = true;
     state.cost.heat_map = true;
-    state.cost.start(state.doc.shaded_setup(state.ui.pow), "the worksheet".into());
+    state.cost.start(state.doc.shaded_setup(state.settings.pow), "the worksheet".into());
     let start = Instant::now();
     while state.cost.study.is_none() || state.cost.heat.is_none() {
         if start.elapsed().as_secs() > 300 {

@@ -10,11 +10,17 @@ use phonglab_core::{
 };
 
 use super::number_field::NumberField;
-use super::state::UiState;
 use super::widgets::{color_ui, number_ui, slider_ui, vec3_ui, vec4_ui};
 
+/// The controls' own choice: the light whose controls are shown.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ControlsState {
+    /// The light shown (kept within the scene's lights when it loses some).
+    pub selected_light: usize,
+}
+
 /// All the controls, in collapsible sections.
-pub fn controls_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
+pub fn controls_ui(ui: &mut Ui, doc: &mut Document, state: &mut ControlsState) {
     CollapsingHeader::new(t!("controls-rules")).id_salt("rules").default_open(true).show(ui, |ui| rules_ui(ui, doc));
     CollapsingHeader::new(t!("controls-lights"))
         .id_salt("lights")
@@ -104,7 +110,7 @@ pub fn position_range(doc: &Document) -> f64 {
     nice_ceiling(2.0 * m).max(5.0)
 }
 
-fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut UiState) {
+fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut ControlsState) {
     let range = position_range(doc);
     let aims: Vec<Option<DVec3>> = doc.scene.lights.iter().map(|l| aim_at_object(doc, l)).collect();
     let lights = &mut doc.scene.lights;

@@ -215,7 +215,7 @@ pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
                         state.doc.view.object.label(),
                         phonglab_core::library::localised_name(&state.doc.name)
                     );
-                    state.cost.start(state.doc.shaded_setup(state.ui.pow), about);
+                    state.cost.start(state.doc.shaded_setup(state.settings.pow), about);
                 }
                 if busy && ui.button(t!("cancel")).clicked() {
                     state.cost.running = None;

@@ -10,6 +10,18 @@ use phonglab_core::{Document, Engine, EvalOptions, Limit, PowFn, Real, SceneErro
 /// Engine precision shown in the app: the core's.
 pub use phonglab_core::Precision;
 
+/// How the document is evaluated and explained: the engine's precision, its power
+/// function, and the side the worked calculation explains.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Settings {
+    /// Engine precision (f64 by default).
+    pub precision: Precision,
+    /// The power function.
+    pub pow: PowFn,
+    /// Which side the calculation explains.
+    pub side: Side,
+}
+
 /// The colours of one side, as f64.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SideColors {

@@ -38,7 +38,7 @@ pub const PNG_SIZE: usize = 512;
 pub fn shaded_png(state: &AppState) -> Result<Vec<u8>, String> {
     let doc = &state.doc;
     let mesh = doc.view.mesh();
-    let setup = doc.shaded_setup(state.ui.pow);
+    let setup = doc.shaded_setup(state.settings.pow);
     let job = setup.job(&mesh);
     let mut renderer = phonglab_core::render::Renderer::new();
     let (img, _) = renderer.render(&job, PNG_SIZE, PNG_SIZE).map_err(|e| e.to_string())?;
@@ -62,10 +62,10 @@ pub fn exercises_zip(e: &ExportState) -> Result<Vec<u8>, String> {
 
 /// Saves (or downloads) `bytes` as `name`, and says so.
 fn hand_out(state: &mut AppState, name: &str, bytes: Result<Vec<u8>, String>, mime: &str) {
-    let scene_file = std::path::PathBuf::from(state.ui.file_path.trim());
+    let scene_file = std::path::PathBuf::from(state.files.path.trim());
     let mesh = state.doc.view.obj.as_deref().map(std::path::Path::new);
     let inputs: Vec<&std::path::Path> = [Some(scene_file.as_path()), mesh].into_iter().flatten().collect();
-    let saved = bytes.and_then(|b| crate::io::save::save_bytes(name, &b, mime, state.ui.file_dialogs, &inputs));
+    let saved = bytes.and_then(|b| crate::io::save::save_bytes(name, &b, mime, state.files.dialogs, &inputs));
     state.message = match saved {
         Ok(Some(_)) if !crate::platform::files::TYPED_PATHS => Some(Message::Info(t!("downloaded", name = name))),
         Ok(Some(at)) => Some(Message::Info(t!("exported", what = name, at = at))),
@@ -139,7 +139,7 @@ pub fn export_menu_ui(ui: &mut Ui, state: &mut AppState) {
         }
         ui.separator();
         ui.label(egui::RichText::new(t!("export-exercises")).strong());
-        let e = &mut state.ui.export;
+        let e = &mut state.export;
         // A menu draws its widgets frameless: give the fields back their frame, so they read
         // as fields to type in.
         let framed = ui.visuals().widgets.noninteractive.bg_stroke;
@@ -154,7 +154,7 @@ pub fn export_menu_ui(ui: &mut Ui, state: &mut AppState) {
         });
         ui.small(t!("export-levels"));
         if ui.button(t!("export-exercises-save")).on_hover_text(t!("export-exercises-hover")).clicked() {
-            let e = state.ui.export.clone();
+            let e = state.export.clone();
             let name = format!("phonglab-exercises-seed{}-level{}.zip", e.seed, e.level);
             let zip = exercises_zip(&e);
             hand_out(state, &name, zip, "application/zip");

@@ -100,7 +100,7 @@ fn open_bytes_or_why(state: &mut AppState, bytes: &[u8], path: &Path) -> Result<
     }
     let doc = Document::from_toml_in(text, path.parent()).map_err(|e| format!("{}: {e}", path.display()))?;
     state.load(doc, &path.display().to_string());
-    state.ui.file_path = path.display().to_string();
+    state.files.path = path.display().to_string();
     Ok(())
 }
 
@@ -110,7 +110,7 @@ fn import_or_why(state: &mut AppState, text: &str, notebook: bool, path: &Path) 
     let imported = import_text(text, notebook, path)?;
     state.load(imported.doc, &path.display().to_string());
     // Save writes a scene file beside it, never over the student's notebook or script.
-    state.ui.file_path = path.with_extension("toml").display().to_string();
+    state.files.path = path.with_extension("toml").display().to_string();
     let what = if imported.notices.is_empty() { String::new() } else { format!(" {}", imported.notices.join("; ")) };
     state.message = Some(Message::Info(t!("imported", path = path.display().to_string(), notices = what)));
     Ok(())
@@ -132,8 +132,24 @@ pub fn save(state: &mut AppState, path: &Path) {
     });
 }
 
+/// The scene file's row: the path typed, and whether the system's dialogs may open (the
+/// window's app; not headless tests, where a dialog would wait for a person).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FileState {
+    /// The scene file path typed for Open and Save.
+    pub path: String,
+    /// Open… and Save as… use the system's file dialog.
+    pub dialogs: bool,
+}
+
+impl Default for FileState {
+    fn default() -> Self {
+        FileState { path: "scene.toml".into(), dialogs: false }
+    }
+}
+
 fn path_of(state: &AppState) -> Option<PathBuf> {
-    let p = state.ui.file_path.trim();
+    let p = state.files.path.trim();
     (!p.is_empty()).then(|| PathBuf::from(p))
 }
 
@@ -147,7 +163,7 @@ pub fn file_ui(ui: &mut Ui, state: &mut AppState) {
     }
     let label = ui.label(t!("scene-file"));
     let field = ui
-        .add(egui::TextEdit::singleline(&mut state.ui.file_path).desired_width(220.0).hint_text(t!("scene-file-hint")))
+        .add(egui::TextEdit::singleline(&mut state.files.path).desired_width(220.0).hint_text(t!("scene-file-hint")))
         .labelled_by(label.id);
     let enter = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
     if ui.button(t!("open")).on_hover_text(t!("open-hover")).clicked() || enter {
@@ -156,18 +172,18 @@ pub fn file_ui(ui: &mut Ui, state: &mut AppState) {
     if ui.button(t!("save")).on_hover_text(t!("save-hover")).clicked() {
         save_typed(state);
     }
-    if state.ui.file_dialogs {
+    if state.files.dialogs {
         let start = path_of(state);
         if ui.button(t!("open-dialog")).on_hover_text(t!("open-dialog-hover")).clicked()
             && let Some(p) = platform::pick_scene_to_open(start.as_deref())
         {
-            state.ui.file_path = p.display().to_string();
+            state.files.path = p.display().to_string();
             open(state, &p);
         }
         if ui.button(t!("save-as")).on_hover_text(t!("save-as-hover")).clicked()
             && let Some(p) = platform::pick_scene_to_save(start.as_deref())
         {
-            state.ui.file_path = p.display().to_string();
+            state.files.path = p.display().to_string();
             save(state, &p);
         }
     }
@@ -180,7 +196,7 @@ fn browser_file_ui(ui: &mut Ui, state: &mut AppState) {
         platform::choose_file(ui.ctx(), ".toml,.ipynb,.py");
     }
     if ui.button(t!("save")).on_hover_text(t!("save-download-hover")).clicked() {
-        let name = Path::new(state.ui.file_path.trim())
+        let name = Path::new(state.files.path.trim())
             .file_name()
             .map_or("scene.toml".to_string(), |n| n.to_string_lossy().into_owned());
         state.message = Some(match state.doc.to_toml().map_err(|e| e.to_string()) {

@@ -17,6 +17,7 @@ pub mod history;
 pub mod label_placement;
 pub mod layout;
 pub mod lobe;
+pub mod message;
 pub mod number_field;
 pub mod palette;
 pub mod quiz;
@@ -60,7 +61,7 @@ fn apply_action(state: &mut AppState, action: help::Action) {
         A::Redo => return state.redo(),
         A::Save => return files::save_typed(state),
         A::Precision => {
-            state.ui.precision = match state.ui.precision {
+            state.settings.precision = match state.settings.precision {
                 Precision::F32 => Precision::F64,
                 Precision::F64 => Precision::F32,
             };
@@ -140,7 +141,7 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         ui.toggle_value(&mut state.compare.open, t!("compare")).on_hover_text(t!("compare-hover"));
         if state.compare.open && !was_open && state.compare.a.is_none() {
             // Opened: A is the scene as it is, so the first change already compares.
-            state.compare.pin(&state.doc, state.ui.precision, state.ui.pow);
+            state.compare.pin(&state.doc, state.settings.precision, state.settings.pow);
         }
         if ui.toggle_value(&mut state.quiz.open, t!("quiz")).on_hover_text(t!("quiz-hover")).clicked()
             && state.quiz.open
@@ -153,14 +154,14 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         if !state.ui.layout.presenting {
             ui.label(t!("precision"));
         }
-        ui.radio_value(&mut state.ui.precision, Precision::F32, "f32").on_hover_text(t!("f32-hover"));
-        ui.radio_value(&mut state.ui.precision, Precision::F64, "f64").on_hover_text(t!("f64-hover"));
+        ui.radio_value(&mut state.settings.precision, Precision::F32, "f32").on_hover_text(t!("f32-hover"));
+        ui.radio_value(&mut state.settings.precision, Precision::F64, "f64").on_hover_text(t!("f64-hover"));
         if state.ui.layout.presenting {
             return;
         }
-        egui::ComboBox::from_label("pow").selected_text(state.ui.pow.label()).show_ui(ui, |ui| {
+        egui::ComboBox::from_label("pow").selected_text(state.settings.pow.label()).show_ui(ui, |ui| {
             for p in phonglab_core::PowFn::ALL {
-                ui.selectable_value(&mut state.ui.pow, p, p.label());
+                ui.selectable_value(&mut state.settings.pow, p, p.label());
             }
         });
         ui.separator();
@@ -346,7 +347,7 @@ fn controls_panel_ui(ui: &mut Ui, state: &mut AppState, width: f32) {
         ui.spacing_mut().slider_width = (panel - 230.0).clamp(60.0, 160.0);
         egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
             let mut candidate = state.doc.clone();
-            controls::controls_ui(ui, &mut candidate, &mut state.ui);
+            controls::controls_ui(ui, &mut candidate, &mut state.controls);
             match state.apply_or_why(candidate) {
                 Ok(()) => number_field::accept_last_commit(ui.ctx()),
                 Err(why) => number_field::refuse_last_commit(ui.ctx(), &why),
@@ -386,8 +387,10 @@ fn calculation_panel_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluat
                 return;
             }
             let two_sided = state.doc.scene.light_model.two_sided;
-            let key =
-                phonglab_core::plan::Key::of(&state.doc.scene, phonglab_core::EvalOptions::with_pow(state.ui.pow));
+            let key = phonglab_core::plan::Key::of(
+                &state.doc.scene,
+                phonglab_core::EvalOptions::with_pow(state.settings.pow),
+            );
             let program = key.program();
             let effects = key.effects_of(&program);
             let walk =
@@ -395,7 +398,7 @@ fn calculation_panel_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluat
             calculation::calculation_ui(
                 ui,
                 &eval.explanation,
-                &mut state.ui.side,
+                &mut state.settings.side,
                 two_sided,
                 &effects,
                 &program.stages,
@@ -456,8 +459,12 @@ fn chrome(ui: &Ui, state: &AppState) -> centre_layout::Chrome {
 /// them that can be dragged; with Compare on, A beside B.
 fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     if state.compare.open {
-        let current =
-            compare::Current { doc: &state.doc, precision: state.ui.precision, pow: state.ui.pow, side: state.ui.side };
+        let current = compare::Current {
+            doc: &state.doc,
+            precision: state.settings.precision,
+            pow: state.settings.pow,
+            side: state.settings.side,
+        };
         let (notice, pictures) = compare::compare_ui(ui, &mut state.compare, &current, eval);
         if let Some(m) = notice {
             state.message = Some(Message::Info(m));
@@ -484,7 +491,7 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     ui.separator();
     shaded::departures_ui(ui, state);
     // Two pictures side by side (the corrected one, or the heat map) share the view's part.
-    let pair = state.cost.heat_map || shaded::corrected_document(&state.doc, &state.ui.demo_fixes).is_some();
+    let pair = state.cost.heat_map || shaded::corrected_document(&state.doc, &state.view_options.demo_fixes).is_some();
     let area = ui.available_rect_before_wrap();
     let chrome = chrome(ui, state);
     let split = centre_layout::split(area, 1 + pair as usize, chrome, state.ui.layout.dividers);
@@ -504,13 +511,13 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
             ui.selectable_value(&mut state.ui.layout.beside, layout::Beside::Lobe, t!("reflection-lobe"));
             if state.ui.layout.beside == layout::Beside::Vectors {
                 ui.separator();
-                vector_plot::view_buttons_ui(ui, &mut state.ui.orbit);
+                vector_plot::view_buttons_ui(ui, &mut state.orbit);
             }
         });
         match state.ui.layout.beside {
             layout::Beside::Vectors => {
                 let specular = state.doc.scene.rules.specular;
-                geometry.plot = Some(vector_plot::vector_plot_ui(ui, &mut state.ui.orbit, eval, specular, show_angles));
+                geometry.plot = Some(vector_plot::vector_plot_ui(ui, &mut state.orbit, eval, specular, show_angles));
             }
             layout::Beside::Lobe => lobe::lobe_ui(ui, &state.doc.scene, eval),
         }
@@ -610,8 +617,8 @@ impl PhongLabApp {
         let mut state = restore(&session, notices);
         // The shaded view can run the scene's generated WGSL on eframe's adapter.
         state.gpu = cc.wgpu_render_state.as_ref().map(gpu_view::install);
-        state.ui.renderer = renderer;
-        state.ui.file_dialogs = true;
+        state.view_options.renderer = renderer;
+        state.files.dialogs = true;
         // A file named on the command line wins over the restored session.
         if let Some(path) = file {
             files::open_at_start(&mut state, &path);

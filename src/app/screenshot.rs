@@ -53,7 +53,7 @@ pub fn state_for(doc: phonglab_core::Document, present: bool, light: bool, open:
     match open {
         Some(Opened::Compare) => {
             state.compare.open = true;
-            state.compare.pin(&state.doc, state.ui.precision, state.ui.pow);
+            state.compare.pin(&state.doc, state.settings.precision, state.settings.pow);
             state.doc.view.shading = phonglab_core::Shading::Phong;
         }
         Some(Opened::Lobe) => state.ui.layout.beside = layout::Beside::Lobe,
@@ -62,7 +62,7 @@ pub fn state_for(doc: phonglab_core::Document, present: bool, light: bool, open:
         Some(Opened::Cost) => state.cost.open = true,
         Some(Opened::DemoFixes) => {
             state.doc = phonglab_core::library::phong_demo_document();
-            state.ui.demo_fixes = [true; 3];
+            state.view_options.demo_fixes = [true; 3];
         }
         None => {}
     }

@@ -56,7 +56,7 @@ pub fn departures_ui(ui: &mut Ui, state: &mut AppState) {
     if departures.is_empty() {
         return;
     }
-    let fixes = &mut state.ui.demo_fixes;
+    let fixes = &mut state.view_options.demo_fixes;
     ui.horizontal_wrapped(|ui| {
         ui.label(t!("correct-the-demo"));
         for (k, d) in DemoDeparture::ALL.into_iter().enumerate() {
@@ -100,6 +100,18 @@ fn view_options_ui(ui: &mut Ui, view: &mut View) {
         }
     });
     pipeline_ui(ui, view);
+}
+
+/// The shaded view's own choices, kept between frames.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ShadedOptions {
+    /// Which of the Phong demo's departures the corrected picture corrects, in the order
+    /// of [`phonglab_core::library::DemoDeparture::ALL`].
+    pub demo_fixes: [bool; 3],
+    /// Which renderer draws the view.
+    pub renderer: super::gpu_view::RendererChoice,
+    /// The OBJ file path typed under View options.
+    pub obj_path: String,
 }
 
 /// The view's controls and the image (beside it, the corrected picture or the heat map),
@@ -155,14 +167,14 @@ fn toolbar_ui(ui: &mut Ui, state: &mut AppState, cache: &ShadedCache) {
                     let l = ui.label(t!("mesh-file"));
                     let field = ui
                         .add(
-                            egui::TextEdit::singleline(&mut state.ui.obj_path)
+                            egui::TextEdit::singleline(&mut state.view_options.obj_path)
                                 .desired_width(180.0)
                                 .hint_text("path/to/mesh.obj"),
                         )
                         .labelled_by(l.id);
                     let enter = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
                     if ui.button(t!("show-mesh")).on_hover_text(t!("show-mesh-hover")).clicked() || enter {
-                        open_obj_requested = Some(std::path::PathBuf::from(state.ui.obj_path.trim()));
+                        open_obj_requested = Some(std::path::PathBuf::from(state.view_options.obj_path.trim()));
                     }
                 });
             });
@@ -198,7 +210,7 @@ struct Shown {
 /// the GPU or the CPU, and beside it the demo corrected or the error heat map.
 fn pictures_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) -> Shown {
     // The corrected document, when a departure the document makes is switched off.
-    let corrected = corrected_document(&state.doc, &state.ui.demo_fixes);
+    let corrected = corrected_document(&state.doc, &state.view_options.demo_fixes);
 
     // The part of the centre this view was given (a row above cannot have widened it).
     let avail = egui::vec2(ui.max_rect().width(), ui.available_size().y);
@@ -221,7 +233,7 @@ fn pictures_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) -> Sh
     });
     // The scene as the view lights it, once: with the heat map on, from the setup it asks for.
     let scene = if heat {
-        let setup = state.doc.shaded_setup(state.ui.pow);
+        let setup = state.doc.shaded_setup(state.settings.pow);
         state.cost.want_heat_map(&setup);
         setup.scene
     } else {
@@ -255,7 +267,7 @@ fn pictures_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) -> Sh
                     ui.set_max_width(side);
                     let fixed: Vec<String> = DemoDeparture::ALL
                         .into_iter()
-                        .zip(state.ui.demo_fixes)
+                        .zip(state.view_options.demo_fixes)
                         .filter(|(d, on)| *on && d.present_in(&state.doc))
                         .map(|(d, _)| d.fix_label())
                         .collect();
@@ -311,7 +323,7 @@ fn interaction_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache, sh
         // Picking reads the CPU renderer's triangle buffer: after a GPU frame, the CPU
         // renderer draws the same picture first (only on a click).
         if matches!(cache.main.drawn_by, DrawnBy::Gpu { .. })
-            && let Err(e) = cache.main.render(ui.ctx(), &state.doc, state.ui.pow, px, "shaded view")
+            && let Err(e) = cache.main.render(ui.ctx(), &state.doc, state.settings.pow, px, "shaded view")
         {
             state.message = Some(Message::Refused(format!("{}: {e}", t!("shaded-cannot-render"))));
             return;
@@ -610,10 +622,10 @@ fn renderer_ui(ui: &mut Ui, state: &mut AppState, drawn_by: &DrawnBy) {
     ui.horizontal_wrapped(|ui| {
         let l = ui.label(t!("renderer"));
         egui::ComboBox::from_id_salt("renderer")
-            .selected_text(state.ui.renderer.label())
+            .selected_text(state.view_options.renderer.label())
             .show_ui(ui, |ui| {
                 for c in gpu_view::RendererChoice::ALL {
-                    ui.selectable_value(&mut state.ui.renderer, c, c.label());
+                    ui.selectable_value(&mut state.view_options.renderer, c, c.label());
                 }
             })
             .response
@@ -643,8 +655,8 @@ fn prepare_picture(
     slot: u64,
     name: &str,
 ) -> Result<Option<Picture>, String> {
-    let pow = state.ui.pow;
-    let why = match gpu_view::why_cpu(state.gpu.as_ref(), state.ui.renderer, doc, pow) {
+    let pow = state.settings.pow;
+    let why = match gpu_view::why_cpu(state.gpu.as_ref(), state.view_options.renderer, doc, pow) {
         Some(why) => why,
         None => match cache.gpu_picture(doc, pow, px, slot) {
             Ok(p) => {

@@ -4,39 +4,12 @@
 //! it if it is valid (or refuses it with a message, keeping the last valid one); the core
 //! evaluates it ([`Evaluated`]); panels draw the result.
 
-use phonglab_core::explain::Side;
-use phonglab_core::{Document, PowFn, SceneError, library};
+use phonglab_core::{Document, SceneError, library};
 
 pub use super::evaluated::{Evaluated, LightVectors, Precision, SideColors, evaluate};
 
-/// What the last message says.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Message {
-    /// An edit was refused; the scene kept its last valid value.
-    Refused(String),
-    /// Something worth knowing (a preset chosen, a file loaded).
-    Info(String),
-}
-
-/// Orbit of the vector plot: yaw about y, then pitch about x, in degrees.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Orbit {
-    /// Degrees about the eye-space y axis.
-    pub yaw: f64,
-    /// Degrees about the x axis.
-    pub pitch: f64,
-}
-
-impl Orbit {
-    /// Looking down -z: x across, y up.
-    pub const XY: Orbit = Orbit { yaw: 0.0, pitch: 0.0 };
-    /// Looking down from +y: x across, -z up the screen.
-    pub const XZ: Orbit = Orbit { yaw: 0.0, pitch: 90.0 };
-    /// Looking from -x: z across (to the right), y up.
-    pub const ZY: Orbit = Orbit { yaw: -90.0, pitch: 0.0 };
-    /// A three-quarter view.
-    pub const PERSPECTIVE: Orbit = Orbit { yaw: 35.0, pitch: 20.0 };
-}
+pub use super::message::Message;
+pub use super::vector_plot::Orbit;
 
 /// What the centre drew last frame: the tests and `phonglab screenshot` check it.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -49,69 +22,21 @@ pub struct Geometry {
     pub arrangement: Option<super::centre_layout::Arrangement>,
 }
 
-/// UI choices that are not part of the scene.
-#[derive(Clone, Debug, PartialEq)]
+/// The shell's own choices: the window's arrangement, what the centre drew, the keys'
+/// help, the step the arrow keys moved to, and a quit asked for. Each panel keeps its own
+/// (`controls`, `view_options`, `files`, `export` ... in [`AppState`]).
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct UiState {
-    /// The light whose controls are shown.
-    pub selected_light: usize,
-    /// Which side the calculation explains.
-    pub side: Side,
     /// The help overlay is open.
     pub show_help: bool,
-    /// The vector plot's orbit.
-    pub orbit: Orbit,
-    /// Engine precision.
-    pub precision: Precision,
-    /// The power function.
-    pub pow: PowFn,
-    /// Show colours clamped (as OpenGL delivers them) in the swatch; numbers show both.
-    pub clamp: bool,
-    /// The scene file path typed for Open and Save.
-    pub file_path: String,
-    /// Which of the Phong demo's departures the corrected picture corrects, in the order
-    /// of [`phonglab_core::library::DemoDeparture::ALL`].
-    pub demo_fixes: [bool; 3],
-    /// The OBJ file path typed under View options.
-    pub obj_path: String,
     /// The window's arrangement (kept across restarts).
     pub layout: super::layout::Layout,
     /// The highlighted step moved this frame: the calculation scrolls to it.
     pub scroll_to_step: bool,
-    /// Which renderer draws the shaded view.
-    pub renderer: super::gpu_view::RendererChoice,
     /// Ctrl+Q was pressed: the window is closing (saving the session).
     pub quit: bool,
     /// What the centre drew last frame.
     pub geometry: Geometry,
-    /// Open… and Save as… use the system's file dialog (the window's app; not headless
-    /// tests, where a dialog would wait for a person).
-    pub file_dialogs: bool,
-    /// The Export menu's exercise settings.
-    pub export: super::export::ExportState,
-}
-
-impl Default for UiState {
-    fn default() -> Self {
-        Self {
-            selected_light: 0,
-            side: Side::Front,
-            show_help: false,
-            orbit: Orbit::PERSPECTIVE,
-            precision: Precision::F64,
-            pow: PowFn::Exact,
-            clamp: true,
-            file_path: "scene.toml".into(),
-            demo_fixes: [false; 3],
-            obj_path: String::new(),
-            layout: Default::default(),
-            scroll_to_step: false,
-            renderer: Default::default(),
-            quit: false,
-            geometry: Geometry::default(),
-            file_dialogs: false,
-            export: Default::default(),
-        }
-    }
 }
 
 /// The whole app state.
@@ -119,8 +44,20 @@ impl Default for UiState {
 pub struct AppState {
     /// The last valid document.
     pub doc: Document,
-    /// UI choices.
+    /// The shell's own choices.
     pub ui: UiState,
+    /// How the document is evaluated and explained: precision, power, side.
+    pub settings: super::evaluated::Settings,
+    /// The controls' own: the light shown.
+    pub controls: super::controls::ControlsState,
+    /// The vector plot's orbit.
+    pub orbit: Orbit,
+    /// The shaded view's own: the demo's corrections shown, the renderer, the mesh path typed.
+    pub view_options: super::shaded::ShadedOptions,
+    /// The scene file's path and the system's dialogs.
+    pub files: super::files::FileState,
+    /// The Export menu's exercise settings.
+    pub export: super::export::ExportState,
     /// The last refusal or notice.
     pub message: Option<Message>,
     /// The shaded view's renderer and texture, kept between frames.
@@ -151,7 +88,7 @@ impl AppState {
 
     /// Evaluates the document with the chosen precision and power function.
     pub fn evaluate(&self) -> Result<Evaluated, SceneError> {
-        evaluate(&self.doc, self.ui.precision, self.ui.pow, self.ui.side)
+        evaluate(&self.doc, self.settings.precision, self.settings.pow, self.settings.side)
     }
 
     /// Keeps `candidate` if it is valid; otherwise refuses it with a message naming the
@@ -174,7 +111,8 @@ impl AppState {
             Ok(()) => {
                 let before = std::mem::replace(&mut self.doc, candidate);
                 self.history.record(&before, &self.doc, None, self.now);
-                self.ui.selected_light = self.ui.selected_light.min(self.doc.scene.lights.len().saturating_sub(1));
+                self.controls.selected_light =
+                    self.controls.selected_light.min(self.doc.scene.lights.len().saturating_sub(1));
                 if matches!(self.message, Some(Message::Refused(_))) {
                     self.message = None;
                 }
@@ -193,7 +131,7 @@ impl AppState {
         if before != self.doc {
             self.history.record(&before, &self.doc, Some(&phonglab_core::t!("history-reset")), self.now);
         }
-        self.ui.selected_light = 0;
+        self.controls.selected_light = 0;
         self.message = Some(Message::Info(phonglab_core::t!("reset-done")));
     }
 
@@ -203,7 +141,7 @@ impl AppState {
         if before != self.doc {
             self.history.record(&before, &self.doc, Some(&phonglab_core::t!("history-open", what = what)), self.now);
         }
-        self.ui.selected_light = 0;
+        self.controls.selected_light = 0;
         self.message = Some(Message::Info(phonglab_core::t!("loaded", what = what)));
     }
 }
@@ -234,7 +172,7 @@ impl AppState {
     /// Shows `doc` (a document that was valid when it was shown before).
     fn set_doc(&mut self, doc: Document) {
         self.doc = doc;
-        self.ui.selected_light = self.ui.selected_light.min(self.doc.scene.lights.len().saturating_sub(1));
+        self.controls.selected_light = self.controls.selected_light.min(self.doc.scene.lights.len().saturating_sub(1));
     }
 }
 

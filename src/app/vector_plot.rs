@@ -15,7 +15,34 @@ use phonglab_core::SpecularModel;
 
 use super::label_placement::{self, Segment, Wanted};
 use super::palette;
-use super::state::{Evaluated, Orbit};
+use super::state::Evaluated;
+
+/// Orbit of the vector plot: yaw about y, then pitch about x, in degrees.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Orbit {
+    /// Degrees about the eye-space y axis.
+    pub yaw: f64,
+    /// Degrees about the x axis.
+    pub pitch: f64,
+}
+
+impl Orbit {
+    /// Looking down -z: x across, y up.
+    pub const XY: Orbit = Orbit { yaw: 0.0, pitch: 0.0 };
+    /// Looking down from +y: x across, -z up the screen.
+    pub const XZ: Orbit = Orbit { yaw: 0.0, pitch: 90.0 };
+    /// Looking from -x: z across (to the right), y up.
+    pub const ZY: Orbit = Orbit { yaw: -90.0, pitch: 0.0 };
+    /// A three-quarter view.
+    pub const PERSPECTIVE: Orbit = Orbit { yaw: 35.0, pitch: 20.0 };
+}
+
+impl Default for Orbit {
+    /// The three-quarter view.
+    fn default() -> Self {
+        Orbit::PERSPECTIVE
+    }
+}
 
 /// Eye space to the plot plane: yaw about y, then pitch about x.
 pub fn view_rotation(o: Orbit) -> DMat3 {
