@@ -14,5 +14,3 @@ pub mod cli;
 pub mod io;
 pub mod paint;
 pub mod platform;
-#[cfg(target_arch = "wasm32")]
-pub mod web;

@@ -5,14 +5,14 @@
 use std::process::ExitCode;
 
 #[cfg(not(target_arch = "wasm32"))]
-use phonglab::app::gpu_view::RendererChoice;
+use phonglab::app::panels::gpu_view::RendererChoice;
 #[cfg(not(target_arch = "wasm32"))]
 use phonglab::cli::{self, RendererArg};
 
 /// In the browser: the app on the page's canvas (see `phonglab::web`).
 #[cfg(target_arch = "wasm32")]
 fn main() {
-    phonglab::web::start();
+    phonglab::app::shell::web::start();
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -25,9 +25,9 @@ fn main() -> ExitCode {
     match args.command {
         // The two commands that draw the window: the command line reads their arguments,
         // the window draws them (the two layers never name each other; this file joins them).
-        Some(cli::Command::Screenshot(a)) => cli::finish(phonglab::app::screenshot::run(&shot(a))),
+        Some(cli::Command::Screenshot(a)) => cli::finish(phonglab::app::shell::screenshot::run(&shot(a))),
         Some(cli::Command::Bench(cli::bench::BenchCommand::Ui(a))) => {
-            cli::finish(phonglab::app::bench_ui::run(&phonglab::app::bench_ui::UiBench {
+            cli::finish(phonglab::app::shell::bench_ui::run(&phonglab::app::shell::bench_ui::UiBench {
                 frames: a.frames,
                 width: a.width,
                 height: a.height,
@@ -58,10 +58,10 @@ fn main() -> ExitCode {
 
 /// `phonglab screenshot`'s arguments as the window's picture request.
 #[cfg(not(target_arch = "wasm32"))]
-fn shot(a: cli::screenshot::ScreenshotArgs) -> phonglab::app::screenshot::Shot {
+fn shot(a: cli::screenshot::ScreenshotArgs) -> phonglab::app::shell::screenshot::Shot {
     use cli::screenshot::Open;
-    use phonglab::app::screenshot::Opened;
-    phonglab::app::screenshot::Shot {
+    use phonglab::app::shell::screenshot::Opened;
+    phonglab::app::shell::screenshot::Shot {
         size: a.size,
         scale: a.scale,
         present: a.present,

@@ -7,7 +7,7 @@ use std::process::Command;
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use phonglab::app::export::{ExportState, exercises_zip, shaded_png};
+use phonglab::app::panels::export::{ExportState, exercises_zip, shaded_png};
 use phonglab::app::{AppState, app_ui};
 
 fn temp_dir(name: &str) -> std::path::PathBuf {
@@ -147,7 +147,7 @@ fn the_export_menu_copies_each_kind_of_code_and_a_dropped_notebook_opens_as_the_
     let s = h.state();
     assert_eq!(s.doc.camera, phonglab_core::CameraSpec::Worksheet(3), "{:?}", s.message);
     assert!(
-        matches!(&s.message, Some(phonglab::app::state::Message::Info(m)) if m.contains("aluno.ipynb")),
+        matches!(&s.message, Some(phonglab::app::shell::state::Message::Info(m)) if m.contains("aluno.ipynb")),
         "{:?}",
         s.message
     );

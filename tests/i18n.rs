@@ -49,10 +49,10 @@ fn ids_in_sources(sources: &[String]) -> BTreeSet<String> {
             }
         }
     }
-    for (.., id) in phonglab::app::help::SHORTCUTS {
+    for (.., id) in phonglab::app::panels::help::SHORTCUTS {
         ids.insert(id.to_string());
     }
-    for id in phonglab::app::help::DEMO_CHOICES {
+    for id in phonglab::app::panels::help::DEMO_CHOICES {
         ids.insert(id.to_string());
     }
     ids
@@ -192,6 +192,6 @@ fn switching_the_language_in_the_app_takes_effect_at_once() {
     // Brazilian where usage differs: the Scene file field is an "Arquivo".
     h.get_by_label("Arquivo de cena:");
     // Kept across restarts with the layout.
-    let back = phonglab::app::layout::Layout::from_ron(Some(&h.state().ui.layout.to_ron()));
+    let back = phonglab::app::shell::layout::Layout::from_ron(Some(&h.state().ui.layout.to_ron()));
     assert_eq!(back.language.as_deref(), Some("pt-BR"));
 }

@@ -7,7 +7,7 @@ use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::DVec3;
-use phonglab::app::state::{Message, Orbit};
+use phonglab::app::shell::state::{Message, Orbit};
 use phonglab::app::{AppState, app_ui};
 use phonglab_core::explain::{fmt_sig, fmt_value};
 use phonglab_core::{CameraSpec, Engine, materials};
@@ -567,13 +567,13 @@ fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
     assert!(images[0].center().x < images[1].center().x);
     h.get_by_label("Corrected: light fixed in the world");
     let corrected =
-        phonglab::app::shaded::corrected_document(&h.state().doc, &h.state().view_options.demo_fixes).unwrap();
+        phonglab::app::panels::shaded::corrected_document(&h.state().doc, &h.state().view_options.demo_fixes).unwrap();
     assert_eq!(corrected.view.lighting_space, phonglab_core::LightingSpace::Eye);
     assert_eq!(h.state().doc.view.lighting_space, phonglab_core::LightingSpace::Object, "the demo's stays");
     h.get_by_label("highlight in the light's colour").click();
     h.run_steps(2);
     let corrected =
-        phonglab::app::shaded::corrected_document(&h.state().doc, &h.state().view_options.demo_fixes).unwrap();
+        phonglab::app::panels::shaded::corrected_document(&h.state().doc, &h.state().view_options.demo_fixes).unwrap();
     assert_eq!(corrected.scene.material.specular.truncate(), DVec3::splat(0.5));
     h.get_by_label("Corrected: light fixed in the world, highlight in the light's colour");
 }
@@ -606,13 +606,13 @@ fn a_file_named_at_start_opens_or_the_worksheet_says_why() {
     let good = dir.join("spot.toml");
     std::fs::copy(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes/spotlight.toml"), &good).unwrap();
     let mut s = AppState::worksheet();
-    phonglab::app::files::open_at_start(&mut s, &good);
+    phonglab::app::panels::files::open_at_start(&mut s, &good);
     assert!(s.doc.scene.lights[0].is_spot(), "the spotlight scene is open");
     let bad = dir.join("bad.toml");
     std::fs::write(&bad, "rules = \"opengl\"\n[material]\nshininess = 500\n").unwrap();
     let mut s = AppState::worksheet();
     s.doc = phonglab_core::library::phong_demo_document();
-    phonglab::app::files::open_at_start(&mut s, &bad);
+    phonglab::app::panels::files::open_at_start(&mut s, &bad);
     assert_eq!(s.doc, phonglab_core::Document::default(), "the default scene");
     assert!(
         matches!(&s.message, Some(Message::Refused(m)) if m.contains("bad.toml") && m.contains("shininess") && m.contains("Showing the worksheet")),
@@ -620,7 +620,7 @@ fn a_file_named_at_start_opens_or_the_worksheet_says_why() {
         s.message
     );
     let mut s = AppState::worksheet();
-    phonglab::app::files::open_at_start(&mut s, &dir.join("missing.toml"));
+    phonglab::app::panels::files::open_at_start(&mut s, &dir.join("missing.toml"));
     assert!(matches!(&s.message, Some(Message::Refused(m)) if m.contains("cannot read")), "{:?}", s.message);
 }
 
@@ -707,7 +707,7 @@ fn a_new_spotlight_aims_at_the_object_so_the_demo_stays_lit() {
     h.run_steps(2);
     let l = &h.state().doc.scene.lights[0];
     assert_eq!(l.spot_cutoff, 30.0);
-    let aim = phonglab::app::controls::aim_at_object(&before, &before.scene.lights[0]).unwrap();
+    let aim = phonglab::app::panels::controls::aim_at_object(&before, &before.scene.lights[0]).unwrap();
     assert!((l.spot_direction - aim).length() < 1e-12, "{:?} vs {aim:?}", l.spot_direction);
     // The light at (-4, 0, -8) in the demo's object space aims back at the origin.
     let want = DVec3::new(4.0, 0.0, 8.0).normalize();

@@ -7,8 +7,8 @@ mod common;
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use phonglab::app::layout::{Beside, Theme};
-use phonglab::app::shaded::vector_arrows;
+use phonglab::app::panels::shaded::vector_arrows;
+use phonglab::app::shell::layout::{Beside, Theme};
 use phonglab::app::{AppState, app_ui};
 
 fn harness_at(w: f32, h: f32) -> Harness<'static, AppState> {

@@ -6,7 +6,7 @@
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use phonglab::app::screenshot::{Opened as Open, state_for};
+use phonglab::app::shell::screenshot::{Opened as Open, state_for};
 use phonglab::app::{AppState, app_ui};
 
 const SIZES: [(f32, f32, f32); 4] =
@@ -148,7 +148,7 @@ fn the_layout_of_the_first_frame_is_the_layout_after_a_click() {
         } else {
             // The controls panel widens to the picked vertex's longer numbers (its fields
             // show every digit); the centre follows, within a few per cent.
-            let side = |g: &phonglab::app::state::Geometry| g.pictures[0].width();
+            let side = |g: &phonglab::app::shell::state::Geometry| g.pictures[0].width();
             assert!((side(&first) - side(&after)).abs() < 0.1 * side(&first), "{first:?} -> {after:?}");
         }
     }
@@ -188,7 +188,7 @@ fn the_divider_moves_the_split_and_is_kept() {
     let after = h.state().ui.geometry.pictures[0];
     assert!(after.width() < before.width() - 40.0, "{before:?} -> {after:?}");
     // Kept across restarts: the layout's stored text carries it.
-    let back = phonglab::app::layout::Layout::from_ron(Some(&h.state().ui.layout.to_ron()));
+    let back = phonglab::app::shell::layout::Layout::from_ron(Some(&h.state().ui.layout.to_ron()));
     assert_eq!(back.dividers, kept);
 }
 
@@ -196,9 +196,9 @@ fn the_divider_moves_the_split_and_is_kept() {
 fn at_most_half_the_window_is_empty_in_presentation() {
     for open in [None, Some(Open::Compare), Some(Open::DemoFixes)] {
         let state = state_for(phonglab_core::Document::default(), true, false, open);
-        let (w, h, rgba, state) = phonglab::app::screenshot::take(state, 1280.0, 720.0, 1.0);
+        let (w, h, rgba, state) = phonglab::app::shell::screenshot::take(state, 1280.0, 720.0, 1.0);
         let bg = state.ui.layout.theme.visuals().panel_fill;
-        let empty = phonglab::app::screenshot::empty_share(&rgba, w, h, bg, 16);
+        let empty = phonglab::app::shell::screenshot::empty_share(&rgba, w, h, bg, 16);
         assert!(empty <= 0.5, "{open:?}: {:.0} % empty", 100.0 * empty);
     }
 }

@@ -7,7 +7,7 @@
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
-use phonglab::app::state::{Message, Precision};
+use phonglab::app::shell::state::{Message, Precision};
 use phonglab::app::{AppState, app_ui};
 use phonglab_core::Document;
 
@@ -73,7 +73,7 @@ fn without_spin(d: &Document) -> Document {
     d
 }
 
-fn colours(e: &phonglab::app::state::Evaluated) -> Vec<[f64; 4]> {
+fn colours(e: &phonglab::app::shell::state::Evaluated) -> Vec<[f64; 4]> {
     let mut v = vec![e.front.primary, e.front.secondary, e.front.shown];
     if let Some(b) = e.back {
         v.extend([b.primary, b.secondary, b.shown]);

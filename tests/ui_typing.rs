@@ -7,7 +7,7 @@ use common::click_field;
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use phonglab::app::state::Message;
+use phonglab::app::shell::state::Message;
 use phonglab::app::{AppState, app_ui};
 
 fn harness() -> Harness<'static, AppState> {

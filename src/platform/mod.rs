@@ -6,7 +6,7 @@
 //! |---|---|---|
 //! | [`os`] | closing and syncing files, the storage folder, termination signals | (not used) |
 //! | [`files`] | typed paths and the system's file dialog | a file chooser, downloads, dropped files read asynchronously |
-//! | [`storage`] | the session in a file ([`crate::app::session`]) | the session in `localStorage` |
+//! | [`storage`] | the session in a file ([`crate::app::shell::session`]) | the session in `localStorage` |
 //! | [`threads`] | work on a thread of its own, rayon's pool | work on the calling thread (no cross-origin isolation needed) |
 //! | [`clock`] | `std::time::Instant` | `performance.now()`, through `web-time` |
 //! | [`language`] | `LC_ALL`, `LC_MESSAGES`, `LANG` | `navigator.language` |

@@ -1,5 +1,5 @@
 //! Where the app keeps its session: on the desktop a folder ([`storage_dir`], the session
-//! file and its lock in it: [`crate::app::session`]); in the browser the page's
+//! file and its lock in it: [`crate::app::shell::session`]); in the browser the page's
 //! `localStorage` (`load_browser_session`, `save_browser_session`), one entry that
 //! holds the same RON text as the desktop's `session.ron`.
 

@@ -3,8 +3,8 @@
 use egui::{Color32, RichText, Ui};
 use phonglab_core::t;
 
-use super::palette::{self, gl_to_color32};
-use super::state::{Evaluated, Message, SideColors};
+use crate::app::shell::state::{Evaluated, Message, SideColors};
+use crate::app::widgets::palette::{self, gl_to_color32};
 
 fn fmt4(c: &[f64; 4]) -> String {
     let s: Vec<String> = c.iter().map(|x| phonglab_core::locale::num(*x, 8)).collect();

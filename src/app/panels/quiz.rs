@@ -14,7 +14,7 @@ use phonglab_core::{Document, Engine};
 use phonglab_core::{locale, t};
 use serde::{Deserialize, Serialize};
 
-use super::palette;
+use crate::app::widgets::palette;
 
 /// The quiz: its scene and the student's work on it.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -210,7 +210,7 @@ pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<
     quiz.level = if quiz.level == 0 { 2 } else { quiz.level.clamp(1, 4) };
     ui.horizontal_wrapped(|ui| {
         let mut level = u32::from(quiz.level);
-        super::widgets::whole_number_ui(ui, &t!("quiz-level"), &mut level, 1..=4);
+        crate::app::widgets::fields::whole_number_ui(ui, &t!("quiz-level"), &mut level, 1..=4);
         quiz.level = level as u8;
         ui.small(t!("quiz-levels"));
     });

@@ -6,10 +6,10 @@
 
 use phonglab_core::{Document, SceneError, library};
 
-pub use super::evaluated::{Evaluated, LightVectors, Precision, SideColors, evaluate};
+pub use crate::app::model::evaluated::{Evaluated, LightVectors, Precision, SideColors, evaluate};
 
-pub use super::message::Message;
-pub use super::vector_plot::Orbit;
+pub use crate::app::model::message::Message;
+pub use crate::app::panels::vector_plot::Orbit;
 
 /// What the centre drew last frame: the tests and `phonglab screenshot` check it.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -17,9 +17,9 @@ pub struct Geometry {
     /// The shaded view's picture or pictures.
     pub pictures: Vec<egui::Rect>,
     /// The vector plot, when it is shown.
-    pub plot: Option<super::vector_plot::PlotGeometry>,
+    pub plot: Option<crate::app::panels::vector_plot::PlotGeometry>,
     /// How the centre was arranged.
-    pub arrangement: Option<super::centre_layout::Arrangement>,
+    pub arrangement: Option<crate::app::shell::centre_layout::Arrangement>,
 }
 
 /// The shell's own choices: the window's arrangement, what the centre drew, the keys'
@@ -30,7 +30,7 @@ pub struct UiState {
     /// The help overlay is open.
     pub show_help: bool,
     /// The window's arrangement (kept across restarts).
-    pub layout: super::layout::Layout,
+    pub layout: crate::app::shell::layout::Layout,
     /// The highlighted step moved this frame: the calculation scrolls to it.
     pub scroll_to_step: bool,
     /// Ctrl+Q was pressed: the window is closing (saving the session).
@@ -47,34 +47,34 @@ pub struct AppState {
     /// The shell's own choices.
     pub ui: UiState,
     /// How the document is evaluated and explained: precision, power, side.
-    pub settings: super::evaluated::Settings,
+    pub settings: crate::app::model::evaluated::Settings,
     /// The controls' own: the light shown.
-    pub controls: super::controls::ControlsState,
+    pub controls: crate::app::panels::controls::ControlsState,
     /// The vector plot's orbit.
     pub orbit: Orbit,
     /// The shaded view's own: the demo's corrections shown, the renderer, the mesh path typed.
-    pub view_options: super::shaded::ShadedOptions,
+    pub view_options: crate::app::panels::shaded::ShadedOptions,
     /// The scene file's path and the system's dialogs.
-    pub files: super::files::FileState,
+    pub files: crate::app::panels::files::FileState,
     /// The Export menu's exercise settings.
-    pub export: super::export::ExportState,
+    pub export: crate::app::panels::export::ExportState,
     /// The last refusal or notice.
     pub message: Option<Message>,
     /// The shaded view's renderer and texture, kept between frames.
-    pub shaded: super::view_cache::ShadedCache,
+    pub shaded: crate::app::panels::view_cache::ShadedCache,
     /// The cost-of-accuracy panel and its background work.
-    pub cost: super::cost::CostState,
+    pub cost: crate::app::panels::cost::CostState,
     /// Compare: the pinned scene A and its views.
-    pub compare: super::compare::CompareState,
+    pub compare: crate::app::panels::compare::CompareState,
     /// Quiz mode: the exercise and the student's answers.
-    pub quiz: super::quiz::QuizState,
+    pub quiz: crate::app::panels::quiz::QuizState,
     /// The Shader window.
-    pub shader: super::shader_panel::ShaderState,
+    pub shader: crate::app::panels::shader_panel::ShaderState,
     /// The wgpu adapter eframe runs on, when there is one (the shaded view can then be
     /// drawn by the scene's generated WGSL).
-    pub gpu: Option<super::gpu_view::GpuInfo>,
+    pub gpu: Option<crate::app::panels::gpu_view::GpuInfo>,
     /// Undo and redo of the scene's changes.
-    pub history: super::history::History,
+    pub history: crate::app::model::history::History,
     /// This frame's time (seconds, egui's clock): a drag's changes within a second are one
     /// undo step.
     pub now: f64,

@@ -1,6 +1,6 @@
 //! The shaded view's pictures kept between frames: each a renderer, its mesh and its
 //! texture, re-rendered only when what it shows changes. Kept apart from the panel
-//! ([`super::shaded`]) so the app state can hold it without depending on the panel.
+//! ([`crate::app::panels::shaded`]) so the app state can hold it without depending on the panel.
 
 use std::sync::{Arc, Mutex};
 
@@ -9,7 +9,7 @@ use phonglab_core::mesh::Mesh;
 use phonglab_core::render::Renderer;
 use phonglab_core::{Document, PowFn, Shading, View};
 
-use super::gpu_view::Picture;
+use crate::app::panels::gpu_view::Picture;
 
 /// One picture's renderer, mesh and texture, kept between frames.
 #[derive(Default)]

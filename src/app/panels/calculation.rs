@@ -7,7 +7,7 @@ use phonglab_core::explain::{Explanation, Side, fmt_value};
 use phonglab_core::plan::Stage;
 use phonglab_core::t;
 
-use super::palette;
+use crate::app::widgets::palette;
 
 /// Significant digits shown.
 const DIGITS: usize = 8;

@@ -11,9 +11,9 @@ use phonglab_core::library::DemoDeparture;
 use phonglab_core::t;
 use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, Shading, Vertex, View};
 
-use super::gpu_view::{self, Picture};
-use super::state::{AppState, Evaluated, Message};
-pub use super::view_cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
+use crate::app::panels::gpu_view::{self, Picture};
+pub use crate::app::panels::view_cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
+use crate::app::shell::state::{AppState, Evaluated, Message};
 
 /// The pipeline's choices where OpenGL and the Phong demo differ, and the demo's
 /// departures as switches: each flipped one is corrected in a second picture beside the
@@ -79,7 +79,7 @@ pub fn departures_ui(ui: &mut Ui, state: &mut AppState) {
 fn view_options_ui(ui: &mut Ui, view: &mut View) {
     ui.horizontal_wrapped(|ui| {
         let count = |ui: &mut Ui, label: &str, v: &mut u32, r: std::ops::RangeInclusive<u32>| {
-            super::widgets::whole_number_ui(ui, label, v, r);
+            crate::app::widgets::fields::whole_number_ui(ui, label, v, r);
         };
         match view.object {
             ObjectKind::Sphere => {
@@ -109,7 +109,7 @@ pub struct ShadedOptions {
     /// of [`phonglab_core::library::DemoDeparture::ALL`].
     pub demo_fixes: [bool; 3],
     /// Which renderer draws the view.
-    pub renderer: super::gpu_view::RendererChoice,
+    pub renderer: crate::app::panels::gpu_view::RendererChoice,
     /// The OBJ file path typed under View options.
     pub obj_path: String,
 }
@@ -186,7 +186,7 @@ fn toolbar_ui(ui: &mut Ui, state: &mut AppState, cache: &ShadedCache) {
         state.apply(c);
     }
     if let Some(p) = open_obj_requested {
-        super::files::open_obj(state, &p);
+        crate::app::panels::files::open_obj(state, &p);
     }
     // The spin is not an edit: it stays finite and in range, and must not clear a message.
     if state.doc.view.auto_rotate {
@@ -258,7 +258,7 @@ fn pictures_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) -> Sh
                     let picture = picture_ui(ui, &cache.main, main_gpu.take(), size, Sense::click_and_drag())
                         .on_hover_text(t!("picture-hover"))
                         .labelled_by(label.id);
-                    super::widgets::landmark(ui.ctx(), "shaded-picture", picture.rect);
+                    crate::app::widgets::fields::landmark(ui.ctx(), "shaded-picture", picture.rect);
                     picture
                 })
                 .inner;
@@ -277,7 +277,7 @@ fn pictures_ui(ui: &mut Ui, state: &mut AppState, cache: &mut ShadedCache) -> Sh
                     second = Some(r.rect);
                 });
             } else if heat {
-                second = Some(ui.scope(|ui| super::cost::heat_map_ui(ui, state, side)).response.rect);
+                second = Some(ui.scope(|ui| crate::app::panels::cost::heat_map_ui(ui, state, side)).response.rect);
             }
             resp
         })
@@ -410,23 +410,23 @@ pub fn vector_arrows(
     let many = eval.lights.len() > 1;
     for lv in &eval.lights {
         let sfx = if many { lv.index.to_string() } else { String::new() };
-        add(lv.l, super::palette::L, format!("L{sfx}"));
+        add(lv.l, crate::app::widgets::palette::L, format!("L{sfx}"));
         match doc.scene.rules.specular {
-            phonglab_core::SpecularModel::BlinnPhong => add(lv.h, super::palette::H, format!("H{sfx}")),
-            phonglab_core::SpecularModel::Phong => add(lv.r, super::palette::R, format!("R{sfx}")),
+            phonglab_core::SpecularModel::BlinnPhong => add(lv.h, crate::app::widgets::palette::H, format!("H{sfx}")),
+            phonglab_core::SpecularModel::Phong => add(lv.r, crate::app::widgets::palette::R, format!("R{sfx}")),
         }
     }
-    add(eval.v, super::palette::V, "V".into());
-    add(eval.n, super::palette::N, "N".into());
+    add(eval.v, crate::app::widgets::palette::V, "V".into());
+    add(eval.n, crate::app::widgets::palette::N, "N".into());
     out
 }
 
 /// Draws [`vector_arrows`] on the image, every arrow the same length on screen (a fifth of
 /// the image) in the direction the view shows it, ⊙ or ⊗ for one that points at the viewer
 /// or away, in the plot's colours and styles, each letter placed clear of the others and of
-/// the arrows ([`super::label_placement`]).
+/// the arrows ([`crate::app::widgets::label_placement`]).
 fn vectors_on_object_ui(ui: &Ui, rect: egui::Rect, doc: &Document, eval: &Evaluated) {
-    use super::vector_plot::{draw_arrow, end_on_marker, paint_labels};
+    use crate::app::panels::vector_plot::{draw_arrow, end_on_marker, paint_labels};
     let arrows = vector_arrows(doc, eval, rect);
     let Some((_, _, from, _)) = arrows.first() else { return };
     let from = *from;
@@ -440,7 +440,7 @@ fn vectors_on_object_ui(ui: &Ui, rect: egui::Rect, doc: &Document, eval: &Evalua
     let mut galleys = Vec::new();
     let mut end_on = 0;
     for (name, c, _, to) in &arrows {
-        let c = super::palette::ink(ui, *c);
+        let c = crate::app::widgets::palette::ink(ui, *c);
         let d = *to - from;
         let dashed = name.starts_with('H') || name.starts_with('R');
         if d.length() < 3.0 {
@@ -453,7 +453,7 @@ fn vectors_on_object_ui(ui: &Ui, rect: egui::Rect, doc: &Document, eval: &Evalua
             // A dark (or light) edge under the colour, so the arrow reads on any surface.
             draw_arrow(&p, from, tip, width * 1.8, outline, false, false);
             lines.push(draw_arrow(&p, from, tip, width, c, dashed, false));
-            wanted.push(super::label_placement::Wanted {
+            wanted.push(crate::app::widgets::label_placement::Wanted {
                 anchor: tip,
                 direction: d,
                 size: egui::Vec2::ZERO,
@@ -463,7 +463,7 @@ fn vectors_on_object_ui(ui: &Ui, rect: egui::Rect, doc: &Document, eval: &Evalua
         galleys.push(p.layout_no_wrap(name.clone(), font.clone(), c));
     }
     paint_labels(&p, wanted, galleys, &lines, rect, Some(outline.gamma_multiply(0.6)));
-    p.circle_filled(from, width * 1.3, super::palette::ink(ui, super::palette::N));
+    p.circle_filled(from, width * 1.3, crate::app::widgets::palette::ink(ui, crate::app::widgets::palette::N));
 }
 
 /// A light outside the picture: a triangle on the picture's edge pointing towards it, and
@@ -553,7 +553,7 @@ fn lights_ui(ui: &mut Ui, o: &Overlay, state: &mut AppState, scene: &phonglab_co
             }
         };
         if let Some(cone) = spot_cone(o, scene, l, p) {
-            let c = super::palette::ink(ui, super::palette::SPOT);
+            let c = crate::app::widgets::palette::ink(ui, crate::app::widgets::palette::SPOT);
             let stroke = egui::Stroke::new(1.5, c);
             for q in cone.iter().step_by(6) {
                 ui.painter_at(o.rect).line_segment([pos, *q], stroke);

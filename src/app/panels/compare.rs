@@ -8,8 +8,8 @@ use phonglab_core::explain::{Explanation, fmt_value};
 use phonglab_core::{Document, PowFn};
 use phonglab_core::{locale, t};
 
-use super::evaluated::{Evaluated, Precision, evaluate};
-use super::view_cache::ViewCache;
+use crate::app::model::evaluated::{Evaluated, Precision, evaluate};
+use crate::app::panels::view_cache::ViewCache;
 
 /// The pinned scene A: the document and the numerics it was evaluated with.
 #[derive(Clone, Debug, PartialEq)]
@@ -137,7 +137,7 @@ pub fn step_pairs(a: &Explanation, b: &Explanation) -> Vec<(usize, String, Strin
 fn swatch_ui(ui: &mut Ui, eval: &Evaluated) {
     let c = eval.front.shown;
     let (rect, _) = ui.allocate_exact_size(egui::vec2(40.0, 24.0), egui::Sense::hover());
-    ui.painter().rect_filled(rect, 4.0, super::palette::gl_to_color32([c[0], c[1], c[2]]));
+    ui.painter().rect_filled(rect, 4.0, crate::app::widgets::palette::gl_to_color32([c[0], c[1], c[2]]));
 }
 
 /// One side of the comparison.
@@ -174,7 +174,7 @@ fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) -> Option
             }
             Err(e) => {
                 ui.colored_label(
-                    super::palette::ERROR,
+                    crate::app::widgets::palette::ERROR,
                     t!("compare-cannot-render", which = which, error = e.to_string()),
                 );
             }
@@ -228,7 +228,7 @@ pub fn compare_ui(
     let a_eval = match evaluate(&a.doc, a.precision, a.pow, current.side) {
         Ok(e) => e,
         Err(e) => {
-            ui.colored_label(super::palette::ERROR, t!("compare-a-fails", error = e.to_string()));
+            ui.colored_label(crate::app::widgets::palette::ERROR, t!("compare-a-fails", error = e.to_string()));
             return (notice, Vec::new());
         }
     };

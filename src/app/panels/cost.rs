@@ -190,7 +190,7 @@ impl CostState {
 }
 
 /// The "Cost of accuracy" window.
-pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
+pub fn cost_window_ui(ctx: &egui::Context, state: &mut crate::app::shell::state::AppState) {
     if !state.cost.open {
         if state.cost.running.is_some() {
             state.cost.running = None; // closing cancels
@@ -230,7 +230,7 @@ pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
                 );
             }
             if let Some(e) = &state.cost.error {
-                ui.colored_label(super::palette::ERROR, e);
+                ui.colored_label(crate::app::widgets::palette::ERROR, e);
             }
             if let Some((study, about)) = &state.cost.study {
                 ui.separator();
@@ -251,7 +251,7 @@ pub fn cost_window_ui(ctx: &egui::Context, state: &mut super::AppState) {
 }
 
 /// The heat map beside the shaded view, `side` points square, with its caption.
-pub fn heat_map_ui(ui: &mut Ui, state: &mut super::AppState, side: f32) {
+pub fn heat_map_ui(ui: &mut Ui, state: &mut crate::app::shell::state::AppState, side: f32) {
     ui.vertical(|ui| {
         let Some(h) = &mut state.cost.heat else {
             ui.small(t!("heat-map-computing"));

@@ -4,7 +4,7 @@
 //!
 //! Drawn for a projector: arrows at least 3 pixels wide, letters at their tips half as large
 //! again as the body text, every label placed clear of the others and of every line
-//! ([`super::label_placement`]), the legend above the diagram rather than over it, the
+//! ([`crate::app::widgets::label_placement`]), the legend above the diagram rather than over it, the
 //! tangent plane as one disc, and no axes or ticks (a small x/y/z triad says how the view is
 //! turned). A vector that points at the viewer (or away) is drawn as ⊙ (or ⊗), the way a
 //! physics text draws it, rather than as a dot.
@@ -13,9 +13,9 @@ use egui::{Color32, Pos2, Rect, Sense, Stroke, Ui, Vec2, vec2};
 use glam::{DMat3, DVec3};
 use phonglab_core::SpecularModel;
 
-use super::label_placement::{self, Segment, Wanted};
-use super::palette;
-use super::state::Evaluated;
+use crate::app::shell::state::Evaluated;
+use crate::app::widgets::label_placement::{self, Segment, Wanted};
+use crate::app::widgets::palette;
 
 /// Orbit of the vector plot: yaw about y, then pitch about x, in degrees.
 #[derive(Clone, Copy, Debug, PartialEq)]

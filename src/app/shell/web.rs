@@ -14,14 +14,12 @@ use std::cell::RefCell;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
-use crate::app::gpu_view::RendererChoice;
-use crate::app::state::{AppState, Message};
-use crate::app::{app_ui, restore, session, store};
-use crate::platform::clock::{Duration, Instant};
-
-/// How often, at most, the session is kept while it changes (a drag changes it every frame;
-/// localStorage is written synchronously). The last change is kept this long after it.
-const KEEP_EVERY: Duration = Duration::from_millis(250);
+use super::frame::app_ui;
+use super::session;
+use super::session_loop::{BROWSER_EVERY, SessionLoop, restore};
+use crate::app::panels::gpu_view::RendererChoice;
+use crate::app::shell::state::AppState;
+use crate::platform::clock::Instant;
 
 thread_local! {
     static PROBE: RefCell<String> = const { RefCell::new(String::new()) };
@@ -45,11 +43,7 @@ pub fn phonglab_probe() -> String {
 /// The app on a page: its state and the text of the session it last kept.
 struct WebApp {
     state: AppState,
-    session: session::Session,
-    kept: Option<String>,
-    /// The scene and layout as last kept, so an unchanged frame costs one comparison.
-    kept_state: Option<(phonglab_core::Document, crate::app::layout::Layout)>,
-    last_keep: Instant,
+    session: SessionLoop,
     frames: u64,
     /// The last frame's time in `app_ui` (layout, the scene's evaluation, the CPU render).
     ui_ms: f64,
@@ -68,52 +62,18 @@ impl WebApp {
         let stored = crate::platform::storage::load_browser_session();
         let (session, notices) = session::Session::from_text(stored.as_deref());
         let mut state = restore(&session, notices);
-        state.gpu = cc.wgpu_render_state.as_ref().map(crate::app::gpu_view::install);
+        state.gpu = cc.wgpu_render_state.as_ref().map(crate::app::panels::gpu_view::install);
         state.view_options.renderer = renderer_asked();
         WINDOW.with(|w| *w.borrow_mut() = Some(cc.egui_ctx.clone()));
         WebApp {
             state,
-            session,
-            kept: stored,
-            kept_state: None,
-            last_keep: Instant::now(),
+            session: SessionLoop::new(session, BROWSER_EVERY),
             frames: 0,
             ui_ms: 0.0,
             bench_asked: url_asks("bench", "render"),
             bench: None,
             bench_picture: BenchPicture::asked(),
             bench_drawn_by: Ok(String::new()),
-        }
-    }
-
-    /// Keeps the session in localStorage when the scene or the layout changed (at most every
-    /// [`KEEP_EVERY`]; a change not kept yet asks for a frame then).
-    fn keep(&mut self, ctx: &egui::Context) {
-        let now = (&self.state.doc, &self.state.ui.layout);
-        // The quiz's answers are kept too, with the next change or every half minute.
-        let unchanged = self.kept_state.as_ref().is_some_and(|(d, l)| (d, l) == now);
-        if unchanged && self.last_keep.elapsed() < Duration::from_secs(30) {
-            return;
-        }
-        if self.last_keep.elapsed() < KEEP_EVERY {
-            ctx.request_repaint_after(KEEP_EVERY);
-            return;
-        }
-        self.kept_state = Some((now.0.clone(), now.1.clone()));
-        self.last_keep = Instant::now();
-        store(&self.state, &mut self.session);
-        let text = self.session.text();
-        if self.kept.as_deref() == Some(text.as_str()) {
-            return;
-        }
-        match crate::platform::storage::save_browser_session(&text) {
-            Ok(()) => self.kept = Some(text),
-            Err(e) => {
-                log::error!("{e}");
-                self.state.message = Some(Message::Refused(phonglab_core::t!("session-not-saved", error = e)));
-                // Said once: not tried again until the session changes.
-                self.kept = Some(text);
-            }
         }
     }
 
@@ -138,11 +98,11 @@ impl WebApp {
     fn probe(&self, ctx: &egui::Context) {
         let colour = self.state.evaluate().ok().map(|e| e.front.primary);
         let caption = match (&self.bench_picture, &self.bench_drawn_by) {
-            (None, _) => crate::app::shaded::drawn_caption(&self.state.shaded.main),
+            (None, _) => crate::app::panels::shaded::drawn_caption(&self.state.shaded.main),
             (Some(_), Ok(by)) => by.clone(),
             (Some(_), Err(e)) => format!("not drawn: {e}"),
         };
-        let landmarks: serde_json::Map<String, serde_json::Value> = crate::app::widgets::landmarks(ctx)
+        let landmarks: serde_json::Map<String, serde_json::Value> = crate::app::widgets::fields::landmarks(ctx)
             .into_iter()
             .map(|(k, r)| (k, serde_json::json!([r.min.x, r.min.y, r.width(), r.height()])))
             .collect();
@@ -167,13 +127,13 @@ impl eframe::App for WebApp {
         self.bench_once();
         self.frames += 1;
         if let Some(picture) = &mut self.bench_picture {
-            crate::app::widgets::record_landmarks(ui.ctx());
+            crate::app::widgets::fields::record_landmarks(ui.ctx());
             self.bench_drawn_by = picture.picture_ui(ui, self.state.gpu.is_some());
             self.probe(ui.ctx());
             return;
         }
         if PROBED.get() {
-            crate::app::widgets::record_landmarks(ui.ctx());
+            crate::app::widgets::fields::record_landmarks(ui.ctx());
             let started = Instant::now();
             app_ui(ui, &mut self.state);
             self.ui_ms = started.elapsed().as_secs_f64() * 1e3;
@@ -181,7 +141,8 @@ impl eframe::App for WebApp {
         } else {
             app_ui(ui, &mut self.state);
         }
-        self.keep(ui.ctx());
+        self.session.after_frame(&self.state);
+        self.session.write_when_due(&mut self.state, ui.ctx());
     }
 }
 
@@ -273,7 +234,7 @@ impl BenchPicture {
         let ppp = ui.ctx().pixels_per_point();
         let side = BENCH_PICTURE_PX as f32 / ppp;
         let (rect, _) = ui.allocate_exact_size(egui::vec2(side, side), egui::Sense::hover());
-        crate::app::widgets::landmark(ui.ctx(), "bench-picture", rect);
+        crate::app::widgets::fields::landmark(ui.ctx(), "bench-picture", rect);
         let job = phonglab_core::shaded::bench_job(&self.scene, &self.mesh, self.shading);
         if self.gpu && gpu {
             if let Some(e) = self.error.lock().unwrap_or_else(|e| e.into_inner()).clone() {
@@ -281,7 +242,7 @@ impl BenchPicture {
             }
             let shader = crate::paint::gpu::wgsl_for(job.scene, job.options, job.shading)?;
             let uniforms = crate::paint::gpu::uniform_bytes(&shader.uniforms, job.scene, &job.clip_from_object)?;
-            let picture = crate::app::gpu_view::Picture {
+            let picture = crate::app::panels::gpu_view::Picture {
                 slot: u64::MAX,
                 wgsl: shader.vertex.into(),
                 uniforms,
@@ -290,7 +251,7 @@ impl BenchPicture {
                 px: BENCH_PICTURE_PX,
                 error: self.error.clone(),
             };
-            crate::app::gpu_view::paint(ui, rect, picture);
+            crate::app::panels::gpu_view::paint(ui, rect, picture);
             return Ok("GPU".into());
         }
         if self.texture.is_none() {

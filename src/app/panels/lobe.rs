@@ -23,8 +23,8 @@ use glam::DVec3;
 use phonglab_core::lighting::terms;
 use phonglab_core::{PowFn, Scene, SpecularGate, SpecularModel};
 
-use super::palette;
-use super::state::Evaluated;
+use crate::app::shell::state::Evaluated;
+use crate::app::widgets::palette;
 
 /// Luminance of the product of two colours' rgb.
 fn luminance(a: glam::DVec4, b: glam::DVec4) -> f64 {
@@ -147,7 +147,7 @@ pub const MIN_PLOT: f32 = 180.0;
 /// The legend, above the plots rather than over the curves (the scene's own model's curve
 /// heavy, as in the plots; L dashed, as its ray is).
 fn legend_ui(ui: &mut Ui, curves: &[Curve]) {
-    use super::vector_plot::{Sample, legend_entry_ui};
+    use crate::app::panels::vector_plot::{Sample, legend_entry_ui};
     ui.horizontal_wrapped(|ui| {
         ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
         for (name, c, _, on) in curves {

@@ -12,7 +12,7 @@ use phonglab_core::t;
 
 use phonglab_core::export::Target;
 
-use super::state::{AppState, Message};
+use crate::app::shell::state::{AppState, Message};
 
 /// The exercise set's settings, kept while the window runs.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -145,11 +145,11 @@ pub fn export_menu_ui(ui: &mut Ui, state: &mut AppState) {
         let framed = ui.visuals().widgets.noninteractive.bg_stroke;
         ui.visuals_mut().widgets.inactive.bg_stroke = framed;
         egui::Grid::new("export exercises").num_columns(2).show(ui, |ui| {
-            super::widgets::whole_number_ui(ui, &t!("export-seed"), &mut e.seed, 1..=999_999);
+            crate::app::widgets::fields::whole_number_ui(ui, &t!("export-seed"), &mut e.seed, 1..=999_999);
             ui.end_row();
-            super::widgets::whole_number_ui(ui, &t!("export-count"), &mut e.count, 1..=100);
+            crate::app::widgets::fields::whole_number_ui(ui, &t!("export-count"), &mut e.count, 1..=100);
             ui.end_row();
-            super::widgets::whole_number_ui(ui, &t!("export-level"), &mut e.level, 1..=4);
+            crate::app::widgets::fields::whole_number_ui(ui, &t!("export-level"), &mut e.level, 1..=4);
             ui.end_row();
         });
         ui.small(t!("export-levels"));

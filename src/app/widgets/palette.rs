@@ -99,7 +99,7 @@ mod tests {
 
     #[test]
     fn every_symbol_keeps_3_to_1_on_both_themes_backgrounds() {
-        for theme in [super::super::layout::Theme::Light, super::super::layout::Theme::Dark] {
+        for theme in [crate::app::shell::layout::Theme::Light, crate::app::shell::layout::Theme::Dark] {
             let v = theme.visuals();
             for bg in [v.panel_fill, v.extreme_bg_color, v.faint_bg_color] {
                 for (name, c) in [("N", N), ("L", L), ("V", V), ("H", H), ("S", SPOT), ("note", NOTE)] {

@@ -9,8 +9,8 @@ use phonglab_core::{
     CameraSpec, Document, Light, LightPlacement, MAX_LIGHTS, Material, NormalMode, RuleSet, SpecularModel, materials,
 };
 
-use super::number_field::NumberField;
-use super::widgets::{color_ui, number_ui, slider_ui, vec3_ui, vec4_ui};
+use crate::app::widgets::fields::{color_ui, number_ui, slider_ui, vec3_ui, vec4_ui};
+use crate::app::widgets::number_field::NumberField;
 
 /// The controls' own choice: the light whose controls are shown.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -329,7 +329,7 @@ fn named_matrix_ui(ui: &mut Ui, m: &mut DMat4, name: &str) {
                 row.iter_mut().zip(all).for_each(|(x, t)| *x = t);
             }
             if let Some(why) = refused {
-                super::number_field::refusal_ui(ui, &why);
+                crate::app::widgets::number_field::refusal_ui(ui, &why);
             }
             ui.end_row();
         }

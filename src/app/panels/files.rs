@@ -9,7 +9,7 @@ use egui::Ui;
 use phonglab_core::Document;
 use phonglab_core::t;
 
-use super::state::{AppState, Message};
+use crate::app::shell::state::{AppState, Message};
 use crate::io::student_code::{MAX_CODE_BYTES, import_text, student_code};
 use crate::platform::files as platform;
 

@@ -7,7 +7,8 @@ use phonglab_core::Shading;
 
 use crate::platform::clock::Instant;
 
-use super::{AppState, app_ui};
+use crate::app::shell::frame::app_ui;
+use crate::app::shell::state::AppState;
 
 /// What `phonglab bench ui` asks for.
 #[derive(Clone, Copy, Debug)]

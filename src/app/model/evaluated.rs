@@ -1,6 +1,6 @@
 //! What the panels draw, computed from a document: its colours, vectors and worked
 //! calculation in the chosen precision. Kept apart from the app state so that panels
-//! which only draw ([`super::compare`], [`super::result`]...) need nothing else.
+//! which only draw ([`crate::app::panels::compare`], [`crate::app::panels::result`]...) need nothing else.
 
 use glam::DVec3;
 use phonglab_core::breakdown::VertexLighting;

@@ -6,7 +6,9 @@ use std::path::PathBuf;
 
 use anyhow::{Context as _, Result, bail};
 
-use super::{AppState, app_ui, layout};
+use crate::app::shell::frame::app_ui;
+use crate::app::shell::layout;
+use crate::app::shell::state::AppState;
 
 /// What to open before the picture is taken.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -95,7 +95,7 @@ pub fn symbol_color(word: &str) -> Option<Color32> {
     if !chars.all(|c| c.is_ascii_digit()) {
         return None;
     }
-    use super::palette as p;
+    use crate::app::widgets::palette as p;
     Some(match first {
         'N' => p::N,
         'L' => p::L,
@@ -138,7 +138,7 @@ fn line_job(line: &str, ui: &Ui, background: Color32) -> LayoutJob {
         }
         let c = if let Some(c) = symbol_color(word) {
             // N, L, V, H, R and S (L0, H1, ... with several lights) in the plot's colours.
-            super::palette::ink_on(c, background_of(ui, background))
+            crate::app::widgets::palette::ink_on(c, background_of(ui, background))
         } else if KEYWORDS.contains(&word.as_str()) {
             keyword
         } else if word.chars().next().is_some_and(|c| c.is_ascii_digit()) {
@@ -240,7 +240,7 @@ mod symbol_tests {
 
     #[test]
     fn the_symbols_have_the_plots_colours() {
-        use super::super::palette as p;
+        use crate::app::widgets::palette as p;
         assert_eq!(symbol_color("N"), Some(p::N));
         assert_eq!(symbol_color("L2"), Some(p::L));
         assert_eq!(symbol_color("H0"), Some(p::H));

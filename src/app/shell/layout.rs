@@ -83,7 +83,7 @@ pub struct Layout {
     /// The plot beside the shaded view.
     pub beside: Beside,
     /// Where the divider between the pictures and the plot was dragged.
-    pub dividers: super::centre_layout::Dividers,
+    pub dividers: crate::app::shell::centre_layout::Dividers,
     /// The language chosen in the menu (`en`, `pt-PT`, `pt-BR`); `None`: the command
     /// line's or the system's.
     pub language: Option<String>,

@@ -1,12 +1,12 @@
 //! Labelled input widgets: every input has an accessible label (found by tests with
 //! `get_by_label`), and every number is typed into the one number field
-//! ([`super::number_field::NumberField`]), whose values reach the validator unclamped, so
+//! ([`crate::app::widgets::number_field::NumberField`]), whose values reach the validator unclamped, so
 //! an out-of-range value is refused with a message rather than silently clamped.
 
 use egui::{Response, Slider, SliderClamping, Ui};
 use glam::{DVec3, DVec4};
 
-use super::number_field::{Accepts, NumberField, refusal_ui};
+use crate::app::widgets::number_field::{Accepts, NumberField, refusal_ui};
 
 /// A number field's width in the controls: 6 significant digits and a sign.
 const FIELD_WIDTH: f32 = 58.0;
@@ -155,7 +155,7 @@ pub fn vec4_ui(ui: &mut Ui, label: &str, v: &mut DVec4, speed: f64) -> bool {
 
 /// An unclamped GL colour: r, g, b (and alpha when `alpha`), after a swatch of how it shows.
 pub fn color_ui(ui: &mut Ui, label: &str, c: &mut DVec4, alpha: bool) -> bool {
-    let shown = crate::app::palette::gl_to_color32([c.x, c.y, c.z]);
+    let shown = crate::app::widgets::palette::gl_to_color32([c.x, c.y, c.z]);
     let swatch = move |ui: &mut Ui| {
         let (rect, _) = ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
         ui.painter().rect_filled(rect, 2.0, shown);

@@ -46,6 +46,8 @@ enum Owner {
     Owns(#[allow(dead_code)] File),
     /// Another window holds it, or the session cannot be written; the reason.
     ReadOnly(String),
+    /// The browser's session, kept in `localStorage` ([`crate::platform::storage`]).
+    Browser,
 }
 
 /// The session: its values, where it lives, and whether this window may write it.
@@ -82,8 +84,10 @@ impl Session {
     /// writes nothing.
     pub fn from_text(text: Option<&str>) -> (Session, Vec<String>) {
         let mut session = Session::in_memory();
+        session.owner = Owner::Browser;
         let mut notices = Vec::new();
         if let Some(text) = text {
+            session.saved = Some(text.to_string());
             match parse(text.as_bytes()) {
                 Ok(values) => session.values = values,
                 Err(why) => notices.push(t!("session-unreadable", why = why)),
@@ -183,7 +187,7 @@ impl Session {
     /// Why this window does not write the session, when it does not.
     pub fn not_saved_because(&self) -> Option<&str> {
         match &self.owner {
-            Owner::Owns(_) => None,
+            Owner::Owns(_) | Owner::Browser => None,
             Owner::ReadOnly(why) => Some(why),
         }
     }
@@ -215,11 +219,16 @@ impl Session {
 
     /// Writes the session when it changed and this window owns it. `Ok(true)`: written.
     pub fn save(&mut self) -> Result<bool, String> {
-        let (Some(path), true) = (self.path(), self.may_write()) else { return Ok(false) };
         let text = self.text();
         if self.saved.as_deref() == Some(text.as_str()) {
             return Ok(false);
         }
+        if matches!(self.owner, Owner::Browser) {
+            // Said once when refused: not tried again until the session changes.
+            self.saved = Some(text.clone());
+            return save_in_browser(&text);
+        }
+        let (Some(path), true) = (self.path(), self.may_write()) else { return Ok(false) };
         crate::io::atomic_write::write(&path, text.as_bytes()).map_err(|e| e.to_string())?;
         self.saved = Some(text);
         Ok(true)
@@ -229,6 +238,19 @@ impl Session {
     /// when this window owns it.
     pub fn writer(&self) -> Option<PathBuf> {
         self.may_write().then(|| self.path()).flatten()
+    }
+}
+
+/// Keeps `text` in the browser's `localStorage` (on the desktop there is none: nothing).
+fn save_in_browser(text: &str) -> Result<bool, String> {
+    #[cfg(target_arch = "wasm32")]
+    {
+        crate::platform::storage::save_browser_session(text).map(|()| true)
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let _ = text;
+        Ok(false)
     }
 }
 

@@ -15,7 +15,7 @@ use egui::{Color32, Id, Key, Response, Sense, TextEdit, Ui, WidgetInfo};
 use phonglab_core::explain::fmt_sig;
 use phonglab_core::typed_number::parse_number;
 
-use super::palette;
+use crate::app::widgets::palette;
 
 /// How many significant digits a field shows at rest.
 pub const SHOWN_DIGITS: usize = 6;

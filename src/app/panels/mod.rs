@@ -1,0 +1,18 @@
+//! The panels: each draws one part of the window from what it is given, and gives back
+//! what it changed (an edited document, a message, an action for the shell).
+
+pub mod calculation;
+pub mod compare;
+pub mod controls;
+pub mod cost;
+pub mod export;
+pub mod files;
+pub mod gpu_view;
+pub mod help;
+pub mod lobe;
+pub mod quiz;
+pub mod result;
+pub mod shaded;
+pub mod shader_panel;
+pub mod vector_plot;
+pub mod view_cache;
