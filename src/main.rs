@@ -5,7 +5,7 @@
 use std::process::ExitCode;
 
 #[cfg(not(target_arch = "wasm32"))]
-use phonglab::app::panels::gpu_view::RendererChoice;
+use phonglab::app::panels::shaded::gpu::RendererChoice;
 #[cfg(not(target_arch = "wasm32"))]
 use phonglab::cli::{self, RendererArg};
 

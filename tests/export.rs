@@ -29,7 +29,7 @@ fn the_png_is_what_render_draws_for_the_scene() {
     let dir = temp_dir("png");
     let mut state = AppState::worksheet();
     state.doc.view.shading = phonglab_core::Shading::Phong;
-    let png = shaded_png(&state).unwrap();
+    let png = shaded_png(&state.doc, state.settings.pow).unwrap();
     let scene = dir.join("scene.toml");
     std::fs::write(&scene, state.doc.to_toml().unwrap()).unwrap();
     let out = dir.join("render.png");

@@ -176,17 +176,17 @@ fn a_failed_scene_save_in_the_app_keeps_the_old_file() {
     let dir = temp_dir("save");
     let path = dir.join("scene.toml");
     let mut state = phonglab::app::AppState::worksheet();
-    phonglab::app::panels::files::save(&mut state, &path);
+    phonglab::app::shell::files::save(&mut state, &path);
     let before = listing(&dir);
     state.doc.scene.material.shininess = 3.0;
     let faults = [Fault::AfterBytes(0), Fault::AfterBytes(1000), Fault::OnSync, Fault::OnClose, Fault::OnRename(0)];
     for fault in faults {
-        with_fault(fault, || phonglab::app::panels::files::save(&mut state, &path));
+        with_fault(fault, || phonglab::app::shell::files::save(&mut state, &path));
         let said = format!("{:?}", state.message);
         assert!(said.contains("Not saved") && said.contains("unchanged"), "{fault:?}: {said}");
         assert_eq!(listing(&dir), before, "{fault:?}");
     }
-    phonglab::app::panels::files::save(&mut state, &path);
+    phonglab::app::shell::files::save(&mut state, &path);
     assert!(std::fs::read_to_string(&path).unwrap().contains("shininess = 3.0"));
 }
 

@@ -131,7 +131,7 @@ fn a_hostile_script_is_refused_with_its_line_by_import_and_by_the_window() {
         // Dropped on the window: a message, and the scene the student had stays.
         let mut state = phonglab::app::AppState::worksheet();
         state.doc.scene.material.shininess = 7.0;
-        phonglab::app::panels::files::open(&mut state, &file);
+        phonglab::app::shell::files::open(&mut state, &file);
         match &state.message {
             Some(phonglab::app::shell::state::Message::Refused(m)) => assert!(m.contains(said), "{m}"),
             other => panic!("{other:?}"),

@@ -527,8 +527,8 @@ fn the_heat_map_shows_beside_the_shaded_view() {
     let mut h = sphere_harness();
     h.get_by_label("Error heat map").click();
     h.run_steps(1);
-    wait_for(&mut h, 60, |s| s.cost.heat.is_some());
-    let heat = h.state().cost.heat.as_ref().unwrap();
+    wait_for(&mut h, 60, |s| s.heat_map.heat.is_some());
+    let heat = h.state().heat_map.heat.as_ref().unwrap();
     // Gouraud on the 50x50 sphere: close, but not exact, at the highlight and the rim.
     assert!(heat.error.mean > 0.0 && heat.error.mean < 2.0, "{:?}", heat.error);
     h.get_by_label_contains("Error against the f64 reference");
@@ -536,8 +536,8 @@ fn the_heat_map_shows_beside_the_shaded_view() {
     let gouraud = heat.error;
     h.get_by_label("Phong").click();
     h.run_steps(2);
-    wait_for(&mut h, 60, |s| s.cost.heat.as_ref().is_some_and(|m| m.key.contains("Phong")));
-    let phong = h.state().cost.heat.as_ref().unwrap().error;
+    wait_for(&mut h, 60, |s| s.heat_map.heat.as_ref().is_some_and(|m| m.key.contains("Phong")));
+    let phong = h.state().heat_map.heat.as_ref().unwrap().error;
     assert!(phong.mean <= gouraud.mean && phong.share_over_one <= gouraud.share_over_one, "{phong:?} vs {gouraud:?}");
 }
 
@@ -606,13 +606,13 @@ fn a_file_named_at_start_opens_or_the_worksheet_says_why() {
     let good = dir.join("spot.toml");
     std::fs::copy(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes/spotlight.toml"), &good).unwrap();
     let mut s = AppState::worksheet();
-    phonglab::app::panels::files::open_at_start(&mut s, &good);
+    phonglab::app::shell::files::open_at_start(&mut s, &good);
     assert!(s.doc.scene.lights[0].is_spot(), "the spotlight scene is open");
     let bad = dir.join("bad.toml");
     std::fs::write(&bad, "rules = \"opengl\"\n[material]\nshininess = 500\n").unwrap();
     let mut s = AppState::worksheet();
     s.doc = phonglab_core::library::phong_demo_document();
-    phonglab::app::panels::files::open_at_start(&mut s, &bad);
+    phonglab::app::shell::files::open_at_start(&mut s, &bad);
     assert_eq!(s.doc, phonglab_core::Document::default(), "the default scene");
     assert!(
         matches!(&s.message, Some(Message::Refused(m)) if m.contains("bad.toml") && m.contains("shininess") && m.contains("Showing the worksheet")),
@@ -620,7 +620,7 @@ fn a_file_named_at_start_opens_or_the_worksheet_says_why() {
         s.message
     );
     let mut s = AppState::worksheet();
-    phonglab::app::panels::files::open_at_start(&mut s, &dir.join("missing.toml"));
+    phonglab::app::shell::files::open_at_start(&mut s, &dir.join("missing.toml"));
     assert!(matches!(&s.message, Some(Message::Refused(m)) if m.contains("cannot read")), "{:?}", s.message);
 }
 
@@ -692,7 +692,7 @@ fn view_options_open_with_a_click_and_keep_the_picture_on_screen() {
     h.get_by_label_contains("Mesh file");
     let picture = h.state().ui.geometry.pictures[0];
     assert!(picture.max.y <= 800.0 && picture.width() > 150.0, "{picture:?}");
-    assert!(!h.state().cost.heat_map, "the click opened the options, and nothing else");
+    assert!(!h.state().heat_map.on, "the click opened the options, and nothing else");
 }
 
 #[test]

@@ -6,8 +6,8 @@
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use phonglab::app::panels::gpu_view::{self, RendererChoice};
 use phonglab::app::panels::shaded::DrawnBy;
+use phonglab::app::panels::shaded::gpu::{self as gpu_view, RendererChoice};
 use phonglab::app::{AppState, app_ui};
 use phonglab::io::image::Difference;
 use phonglab_core::render::Renderer;

@@ -9,7 +9,7 @@ use phonglab_core::{Document, PowFn};
 use phonglab_core::{locale, t};
 
 use crate::app::model::evaluated::{Evaluated, Precision, evaluate};
-use crate::app::panels::view_cache::ViewCache;
+use crate::app::panels::shaded::cache::ViewCache;
 
 /// The pinned scene A: the document and the numerics it was evaluated with.
 #[derive(Clone, Debug, PartialEq)]

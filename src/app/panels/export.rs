@@ -12,7 +12,10 @@ use phonglab_core::t;
 
 use phonglab_core::export::Target;
 
-use crate::app::shell::state::{AppState, Message};
+use phonglab_core::{Document, PowFn};
+
+use crate::app::model::message::Message;
+use crate::app::panels::files::FileState;
 
 /// The exercise set's settings, kept while the window runs.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -34,11 +37,11 @@ impl Default for ExportState {
 /// The PNG's size in pixels.
 pub const PNG_SIZE: usize = 512;
 
-/// The shaded view of `state`'s scene as a PNG file's bytes, drawn by the CPU renderer.
-pub fn shaded_png(state: &AppState) -> Result<Vec<u8>, String> {
-    let doc = &state.doc;
+/// The shaded view of `doc` as a PNG file's bytes, drawn by the CPU renderer with the
+/// power function `pow`.
+pub fn shaded_png(doc: &Document, pow: PowFn) -> Result<Vec<u8>, String> {
     let mesh = doc.view.mesh();
-    let setup = doc.shaded_setup(state.settings.pow);
+    let setup = doc.shaded_setup(pow);
     let job = setup.job(&mesh);
     let mut renderer = phonglab_core::render::Renderer::new();
     let (img, _) = renderer.render(&job, PNG_SIZE, PNG_SIZE).map_err(|e| e.to_string())?;
@@ -60,23 +63,30 @@ pub fn exercises_zip(e: &ExportState) -> Result<Vec<u8>, String> {
     Ok(crate::io::zip::zip_stored(&set.files))
 }
 
-/// Saves (or downloads) `bytes` as `name`, and says so.
-fn hand_out(state: &mut AppState, name: &str, bytes: Result<Vec<u8>, String>, mime: &str) {
-    let scene_file = std::path::PathBuf::from(state.files.path.trim());
-    let mesh = state.doc.view.obj.as_deref().map(std::path::Path::new);
+/// Saves (or downloads) `bytes` as `name` (never over the scene file `files` names or
+/// `doc`'s mesh), and says so: the window's message after it (none when cancelled).
+fn hand_out(
+    name: &str,
+    bytes: Result<Vec<u8>, String>,
+    mime: &str,
+    doc: &Document,
+    files: &FileState,
+) -> Option<Message> {
+    let scene_file = std::path::PathBuf::from(files.path.trim());
+    let mesh = doc.view.obj.as_deref().map(std::path::Path::new);
     let inputs: Vec<&std::path::Path> = [Some(scene_file.as_path()), mesh].into_iter().flatten().collect();
-    let saved = bytes.and_then(|b| crate::io::save::save_bytes(name, &b, mime, state.files.dialogs, &inputs));
-    state.message = match saved {
+    let saved = bytes.and_then(|b| crate::io::save::save_bytes(name, &b, mime, files.dialogs, &inputs));
+    match saved {
         Ok(Some(_)) if !crate::platform::files::TYPED_PATHS => Some(Message::Info(t!("downloaded", name = name))),
         Ok(Some(at)) => Some(Message::Info(t!("exported", what = name, at = at))),
         Ok(None) => None,
         Err(e) => Some(Message::Refused(t!("not-exported", what = name, error = e))),
-    };
+    }
 }
 
 /// The file `target` is saved as: one file, or for openFrameworks a zip of its `src/`.
-pub fn code_file(state: &AppState, target: Target) -> Result<(String, Vec<u8>, &'static str), String> {
-    let written = phonglab_core::export::files(&state.doc, target)?;
+pub fn code_file(doc: &Document, target: Target) -> Result<(String, Vec<u8>, &'static str), String> {
+    let written = phonglab_core::export::files(doc, target)?;
     if target == Target::OpenFrameworks {
         let files: Vec<(String, Vec<u8>)> =
             written.into_iter().map(|(name, text)| (format!("src/{name}"), text.into_bytes())).collect();
@@ -92,13 +102,13 @@ pub fn code_file(state: &AppState, target: Target) -> Result<(String, Vec<u8>, &
 }
 
 /// The student's own code: for each target, Copy (to the clipboard) and Save.
-fn code_ui(ui: &mut Ui, state: &mut AppState) {
+fn code_ui(ui: &mut Ui, doc: &Document, files: &FileState, message: &mut Option<Message>) {
     ui.label(egui::RichText::new(t!("export-code")).strong());
     egui::Grid::new("export code").num_columns(3).show(ui, |ui| {
         for target in Target::ALL {
             ui.label(target.label());
             if ui.button(t!("export-copy")).on_hover_text(t!("export-copy-hover")).clicked() {
-                state.message = Some(match phonglab_core::export::copy_text(&state.doc, target) {
+                *message = Some(match phonglab_core::export::copy_text(doc, target) {
                     Ok(text) => {
                         ui.ctx().copy_text(text);
                         Message::Info(t!("export-copied", what = target.label()))
@@ -108,12 +118,10 @@ fn code_ui(ui: &mut Ui, state: &mut AppState) {
                 ui.close();
             }
             if ui.button(t!("export-save")).on_hover_text(t!("export-save-hover")).clicked() {
-                match code_file(state, target) {
-                    Ok((name, bytes, mime)) => hand_out(state, &name, Ok(bytes), mime),
-                    Err(e) => {
-                        state.message = Some(Message::Refused(t!("not-exported", what = target.label(), error = e)))
-                    }
-                }
+                *message = match code_file(doc, target) {
+                    Ok((name, bytes, mime)) => hand_out(&name, Ok(bytes), mime, doc, files),
+                    Err(e) => Some(Message::Refused(t!("not-exported", what = target.label(), error = e))),
+                };
                 ui.close();
             }
             ui.end_row();
@@ -122,24 +130,29 @@ fn code_ui(ui: &mut Ui, state: &mut AppState) {
     ui.small(t!("export-import-hint"));
 }
 
-/// The Export menu's button and its contents.
-pub fn export_menu_ui(ui: &mut Ui, state: &mut AppState) {
+/// The Export menu's button and its contents: the code and the PNG of `doc` (drawn with
+/// `pow`), the exercise set of `export`'s settings; each saved where `files` allows, said
+/// in `message`.
+pub fn export_menu_ui(
+    ui: &mut Ui,
+    export: &mut ExportState,
+    doc: &Document,
+    pow: PowFn,
+    files: &FileState,
+    message: &mut Option<Message>,
+) {
     ui.menu_button(t!("export"), |ui| {
-        code_ui(ui, state);
+        code_ui(ui, doc, files, message);
         ui.separator();
         if ui.button(t!("export-png", size = PNG_SIZE.to_string())).on_hover_text(t!("export-png-hover")).clicked() {
-            let name = format!(
-                "phonglab-{}-{}.png",
-                state.doc.view.object.key(),
-                state.doc.view.shading.label().to_lowercase()
-            );
-            let png = shaded_png(state);
-            hand_out(state, &name, png, "image/png");
+            let name = format!("phonglab-{}-{}.png", doc.view.object.key(), doc.view.shading.label().to_lowercase());
+            let png = shaded_png(doc, pow);
+            *message = hand_out(&name, png, "image/png", doc, files);
             ui.close();
         }
         ui.separator();
         ui.label(egui::RichText::new(t!("export-exercises")).strong());
-        let e = &mut state.export;
+        let e = &mut *export;
         // A menu draws its widgets frameless: give the fields back their frame, so they read
         // as fields to type in.
         let framed = ui.visuals().widgets.noninteractive.bg_stroke;
@@ -154,10 +167,9 @@ pub fn export_menu_ui(ui: &mut Ui, state: &mut AppState) {
         });
         ui.small(t!("export-levels"));
         if ui.button(t!("export-exercises-save")).on_hover_text(t!("export-exercises-hover")).clicked() {
-            let e = state.export.clone();
-            let name = format!("phonglab-exercises-seed{}-level{}.zip", e.seed, e.level);
-            let zip = exercises_zip(&e);
-            hand_out(state, &name, zip, "application/zip");
+            let name = format!("phonglab-exercises-seed{}-level{}.zip", export.seed, export.level);
+            let zip = exercises_zip(export);
+            *message = hand_out(&name, zip, "application/zip", doc, files);
             ui.close();
         }
     });

@@ -23,7 +23,7 @@ use glam::DVec3;
 use phonglab_core::lighting::terms;
 use phonglab_core::{PowFn, Scene, SpecularGate, SpecularModel};
 
-use crate::app::shell::state::Evaluated;
+use crate::app::model::evaluated::Evaluated;
 use crate::app::widgets::palette;
 
 /// Luminance of the product of two colours' rgb.

@@ -82,10 +82,10 @@ pub fn all_panels_open(ctx: &egui::Context, size: [f32; 2]) -> Result<AppState> 
     let mut state = AppState::worksheet();
     state.ui.show_help = true;
     state.cost.open = true;
-    state.cost.heat_map = true;
+    state.heat_map.on = true;
     state.cost.start(state.doc.shaded_setup(state.settings.pow), "the worksheet".into());
     let start = Instant::now();
-    while state.cost.study.is_none() || state.cost.heat.is_none() {
+    while state.cost.study.is_none() || state.heat_map.heat.is_none() {
         if start.elapsed().as_secs() > 300 {
             anyhow::bail!(phonglab_core::t!("err-study-timeout"));
         }

@@ -5,13 +5,13 @@
 use egui::Ui;
 use phonglab_core::t;
 
+use super::files;
 use super::frame::app_ui;
 use super::session::Session;
 use super::session_loop::{DESKTOP_EVERY, SessionLoop, restore};
 use super::shutdown::Shutdown;
 use super::state::AppState;
-use crate::app::panels::files;
-use crate::app::panels::gpu_view::{self, RendererChoice};
+use crate::app::panels::shaded::gpu::{self as gpu_view, RendererChoice};
 
 /// The eframe application: the state, and the session it is kept in.
 pub struct PhongLabApp {

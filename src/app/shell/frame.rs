@@ -7,12 +7,13 @@ use phonglab_core::t;
 use phonglab_core::{CameraSpec, NormalMode, RuleSet, SpecularModel, materials};
 
 use super::state::{AppState, Message, Precision};
+use crate::app::model::editor::Editor;
 use crate::app::panels::{
-    calculation, compare, controls, cost, export, files, help, lobe, quiz, result, shaded, shader_panel, vector_plot,
+    calculation, compare, controls, cost, export, help, lobe, quiz, result, shaded, shader_panel, vector_plot,
 };
 use crate::app::widgets::number_field;
 
-use super::{centre_layout, layout, state};
+use super::{centre_layout, files, layout, state};
 
 /// Applies one keyboard shortcut.
 fn apply_action(state: &mut AppState, action: help::Action) {
@@ -142,8 +143,10 @@ fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         ui.separator();
         ui.toggle_value(&mut state.cost.open, t!("cost-of-accuracy")).on_hover_text(t!("cost-hover"));
         ui.separator();
-        files::file_ui(ui, state);
-        export::export_menu_ui(ui, state);
+        if let Some(asked) = crate::app::panels::files::file_ui(ui, &mut state.files, &state.doc, &mut state.message) {
+            files::carry_out(state, asked);
+        }
+        export::export_menu_ui(ui, &mut state.export, &state.doc, state.settings.pow, &state.files, &mut state.message);
         ui.separator();
         language_menu_ui(ui, &mut state.ui.layout);
         if ui.button(t!("help-button")).clicked() {
@@ -390,14 +393,14 @@ fn calculation_panel_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluat
 fn windows_ui(ctx: &egui::Context, state: &mut AppState) {
     // Finished work is collected before the window is drawn, and a frame is asked for at
     // once when something finished (the result would otherwise wait for the next input).
-    let was_running = state.cost.busy();
-    let running = state.cost.poll();
+    let was_running = state.cost.busy() || state.heat_map.busy();
+    let running = state.cost.poll() | state.heat_map.poll();
     if was_running && !running {
         ctx.request_repaint();
     } else if running {
         ctx.request_repaint_after(std::time::Duration::from_millis(100));
     }
-    cost::cost_window_ui(ctx, state);
+    cost::cost_window_ui(ctx, &mut state.cost, &state.doc, state.settings.pow);
     shader_panel::shader_window_ui(ctx, &mut state.shader, &state.doc);
 
     if state.ui.show_help {
@@ -464,9 +467,9 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
         result::result_ui(ui, eval, state.doc.scene.light_model.separate_specular, &state.message, hidden);
     });
     ui.separator();
-    shaded::departures_ui(ui, state);
+    shaded::departures_ui(ui, &state.doc, &mut state.view_options.demo_fixes);
     // Two pictures side by side (the corrected one, or the heat map) share the view's part.
-    let pair = state.cost.heat_map || shaded::corrected_document(&state.doc, &state.view_options.demo_fixes).is_some();
+    let pair = state.heat_map.on || shaded::corrected_document(&state.doc, &state.view_options.demo_fixes).is_some();
     let area = ui.available_rect_before_wrap();
     let chrome = chrome(ui, state);
     let split = centre_layout::split(area, 1 + pair as usize, chrome, state.ui.layout.dividers);
@@ -474,9 +477,20 @@ fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     let show_angles = !state.quiz.hides_answers();
     let mut geometry = state::Geometry { pictures: Vec::new(), plot: None, arrangement: Some(split.arrangement) };
     ui.scope_builder(egui::UiBuilder::new().max_rect(split.pictures).id_salt("shaded"), |ui| {
-        let mut cache = std::mem::take(&mut state.shaded);
-        geometry.pictures = shaded::shaded_ui(ui, state, &mut cache, eval);
-        state.shaded = cache;
+        let now = state.now;
+        let mut view = shaded::Shaded {
+            edit: Editor { doc: &mut state.doc, history: &mut state.history, message: &mut state.message, now },
+            view_options: &mut state.view_options,
+            heat_map: &mut state.heat_map,
+            pow: state.settings.pow,
+            presenting: state.ui.layout.presenting,
+            gpu: state.gpu.as_ref(),
+        };
+        let asked = shaded::shaded_ui(ui, &mut view, &mut state.shaded, eval);
+        geometry.pictures = asked.rects;
+        if let Some(p) = asked.open_obj {
+            files::open_obj(state, &p);
+        }
     });
     ui.scope_builder(egui::UiBuilder::new().max_rect(split.beside).id_salt("beside"), |ui| {
         ui.horizontal_wrapped(|ui| {

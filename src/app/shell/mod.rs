@@ -6,6 +6,7 @@ pub mod bench_ui;
 pub mod centre_layout;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod desktop;
+pub mod files;
 pub mod frame;
 pub mod layout;
 pub mod screenshot;

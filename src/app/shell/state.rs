@@ -6,6 +6,8 @@
 
 use phonglab_core::{Document, SceneError, library};
 
+use crate::app::model::editor::Editor;
+
 pub use crate::app::model::evaluated::{Evaluated, LightVectors, Precision, SideColors, evaluate};
 
 pub use crate::app::model::message::Message;
@@ -61,9 +63,11 @@ pub struct AppState {
     /// The last refusal or notice.
     pub message: Option<Message>,
     /// The shaded view's renderer and texture, kept between frames.
-    pub shaded: crate::app::panels::view_cache::ShadedCache,
+    pub shaded: crate::app::panels::shaded::cache::ShadedCache,
     /// The cost-of-accuracy panel and its background work.
     pub cost: crate::app::panels::cost::CostState,
+    /// The error heat map beside the shaded view, and its background work.
+    pub heat_map: crate::app::panels::shaded::heat_map::HeatMapState,
     /// Compare: the pinned scene A and its views.
     pub compare: crate::app::panels::compare::CompareState,
     /// Quiz mode: the exercise and the student's answers.
@@ -72,7 +76,7 @@ pub struct AppState {
     pub shader: crate::app::panels::shader_panel::ShaderState,
     /// The wgpu adapter eframe runs on, when there is one (the shaded view can then be
     /// drawn by the scene's generated WGSL).
-    pub gpu: Option<crate::app::panels::gpu_view::GpuInfo>,
+    pub gpu: Option<crate::app::panels::shaded::gpu::GpuInfo>,
     /// Undo and redo of the scene's changes.
     pub history: crate::app::model::history::History,
     /// This frame's time (seconds, egui's clock): a drag's changes within a second are one
@@ -91,38 +95,22 @@ impl AppState {
         evaluate(&self.doc, self.settings.precision, self.settings.pow, self.settings.side)
     }
 
-    /// Keeps `candidate` if it is valid; otherwise refuses it with a message naming the
-    /// field and the allowed range, and keeps the last valid document. Returns whether it
-    /// was kept.
+    /// The document, its history and the message, borrowed for an edit.
+    pub fn editor(&mut self) -> Editor<'_> {
+        Editor { doc: &mut self.doc, history: &mut self.history, message: &mut self.message, now: self.now }
+    }
+
+    /// Keeps `candidate` if it is valid ([`Editor::apply`]). Returns whether it was kept.
     pub fn apply(&mut self, candidate: Document) -> bool {
         self.apply_or_why(candidate).is_ok()
     }
 
-    /// [`Self::apply`], with the validator's reason when it refuses.
-    pub fn apply_or_why(&mut self, mut candidate: Document) -> Result<(), String> {
-        if candidate == self.doc {
-            return Ok(());
-        }
-        let checked = candidate.camera.matrix().and_then(|m| {
-            candidate.scene.eye_from_world = m;
-            candidate.validate()
-        });
-        match checked {
-            Ok(()) => {
-                let before = std::mem::replace(&mut self.doc, candidate);
-                self.history.record(&before, &self.doc, None, self.now);
-                self.controls.selected_light =
-                    self.controls.selected_light.min(self.doc.scene.lights.len().saturating_sub(1));
-                if matches!(self.message, Some(Message::Refused(_))) {
-                    self.message = None;
-                }
-                Ok(())
-            }
-            Err(e) => {
-                self.message = Some(Message::Refused(phonglab_core::t!("refused-kept", error = e.to_string())));
-                Err(e.to_string())
-            }
-        }
+    /// [`Self::apply`], with the validator's reason when it refuses; the light shown stays
+    /// one of the scene's.
+    pub fn apply_or_why(&mut self, candidate: Document) -> Result<(), String> {
+        let r = self.editor().apply_or_why(candidate);
+        self.controls.selected_light = self.controls.selected_light.min(self.doc.scene.lights.len().saturating_sub(1));
+        r
     }
 
     /// Back to the start: the worksheet with modelview 5 (UI choices kept).

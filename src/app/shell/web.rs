@@ -17,7 +17,7 @@ use wasm_bindgen::prelude::*;
 use super::frame::app_ui;
 use super::session;
 use super::session_loop::{BROWSER_EVERY, SessionLoop, restore};
-use crate::app::panels::gpu_view::RendererChoice;
+use crate::app::panels::shaded::gpu::RendererChoice;
 use crate::app::shell::state::AppState;
 use crate::platform::clock::Instant;
 
@@ -62,7 +62,7 @@ impl WebApp {
         let stored = crate::platform::storage::load_browser_session();
         let (session, notices) = session::Session::from_text(stored.as_deref());
         let mut state = restore(&session, notices);
-        state.gpu = cc.wgpu_render_state.as_ref().map(crate::app::panels::gpu_view::install);
+        state.gpu = cc.wgpu_render_state.as_ref().map(crate::app::panels::shaded::gpu::install);
         state.view_options.renderer = renderer_asked();
         WINDOW.with(|w| *w.borrow_mut() = Some(cc.egui_ctx.clone()));
         WebApp {
@@ -242,7 +242,7 @@ impl BenchPicture {
             }
             let shader = crate::paint::gpu::wgsl_for(job.scene, job.options, job.shading)?;
             let uniforms = crate::paint::gpu::uniform_bytes(&shader.uniforms, job.scene, &job.clip_from_object)?;
-            let picture = crate::app::panels::gpu_view::Picture {
+            let picture = crate::app::panels::shaded::gpu::Picture {
                 slot: u64::MAX,
                 wgsl: shader.vertex.into(),
                 uniforms,
@@ -251,7 +251,7 @@ impl BenchPicture {
                 px: BENCH_PICTURE_PX,
                 error: self.error.clone(),
             };
-            crate::app::panels::gpu_view::paint(ui, rect, picture);
+            crate::app::panels::shaded::gpu::paint(ui, rect, picture);
             return Ok("GPU".into());
         }
         if self.texture.is_none() {

@@ -1,7 +1,8 @@
 //! The widgets every panel builds with: the one number field ([`number_field`]), labelled
-//! rows of sliders, vectors and colours ([`fields`]), the symbols' colours ([`palette`]) and
+//! rows of sliders, vectors and colours ([`fields`]), arrows and their labels ([`arrows`]), the symbols' colours ([`palette`]) and
 //! the placement of a diagram's labels ([`label_placement`]).
 
+pub mod arrows;
 pub mod fields;
 pub mod label_placement;
 pub mod number_field;

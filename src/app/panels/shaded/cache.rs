@@ -9,7 +9,7 @@ use phonglab_core::mesh::Mesh;
 use phonglab_core::render::Renderer;
 use phonglab_core::{Document, PowFn, Shading, View};
 
-use crate::app::panels::gpu_view::Picture;
+use crate::app::panels::shaded::gpu::Picture;
 
 /// One picture's renderer, mesh and texture, kept between frames.
 #[derive(Default)]

@@ -1,0 +1,41 @@
+//! The shaded view: the sphere, teapot or cylinder under the document's lights and
+//! material, Flat, Gouraud or Phong, rendered by the core's CPU renderer (or on the GPU).
+//!
+//! Drag to orbit, scroll to zoom; auto-rotate spins the object 0.5 degrees a frame, as the
+//! Phong demo does. Clicking the surface makes the nearest mesh vertex the vertex of the
+//! worked calculation, with this view's camera and spin, so both panels show one vertex.
+//!
+//! Its parts: what it is given ([`context`]), the toolbar and options (`toolbar`), the
+//! pictures (`pictures`), what the pointer does on them and what is drawn over them
+//! (`overlay`), the renderer's cache ([`cache`]) and the GPU's picture ([`gpu`]).
+
+pub mod cache;
+pub mod context;
+pub mod gpu;
+pub mod heat_map;
+mod overlay;
+mod pictures;
+mod toolbar;
+
+use egui::Ui;
+
+pub use cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
+pub use context::{Asked, Shaded, ShadedOptions, corrected_document};
+pub use overlay::vector_arrows;
+pub use pictures::drawn_caption;
+pub use toolbar::departures_ui;
+
+use crate::app::model::evaluated::Evaluated;
+
+/// The view's controls and the image (beside it, the corrected picture or the heat map),
+/// with N, L, V and H (or R) drawn at the worked calculation's vertex and the lights as
+/// markers that can be dragged.
+///
+/// Returns where the picture (and the one beside it) was drawn, and a mesh file to open.
+pub fn shaded_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut ShadedCache, eval: &Evaluated) -> Asked {
+    let open_obj = toolbar::toolbar_ui(ui, state, cache);
+    let shown = pictures::pictures_ui(ui, state, cache);
+    let rects = std::iter::once(shown.response.rect).chain(shown.second).collect();
+    overlay::interaction_ui(ui, state, cache, &shown, eval);
+    Asked { rects, open_obj }
+}

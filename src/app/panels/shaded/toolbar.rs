@@ -1,0 +1,192 @@
+//! The shaded view's toolbar: the object and the shading, the switches, the view's options
+//! (the renderer, the tessellation, the pipeline's choices, a mesh file) and the Phong
+//! demo's departures as switches.
+
+use egui::Ui;
+use phonglab_core::library::DemoDeparture;
+use phonglab_core::t;
+use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, Shading, View};
+
+use super::cache::{DrawnBy, ShadedCache};
+use super::context::Shaded;
+use super::gpu;
+
+/// The pipeline's choices where OpenGL and the Phong demo differ, and the demo's
+/// departures as switches: each flipped one is corrected in a second picture beside the
+/// demo's own.
+fn pipeline_ui(ui: &mut Ui, view: &mut View) {
+    egui::CollapsingHeader::new(t!("pipeline")).id_salt("pipeline").show(ui, |ui| {
+        ui.horizontal_wrapped(|ui| {
+            let l = ui.label(t!("picture"));
+            egui::ComboBox::from_id_salt("framing")
+                .selected_text(view.framing.label())
+                .show_ui(ui, |ui| {
+                    for f in Framing::ALL {
+                        ui.selectable_value(&mut view.framing, f, f.label());
+                    }
+                })
+                .response
+                .labelled_by(l.id);
+            ui.checkbox(&mut view.phong_renormalize, t!("phong-renormalises"))
+                .on_hover_text(t!("phong-renormalises-hover"));
+            let mut derivative = view.flat_normal == FlatNormal::ScreenDerivatives;
+            if ui
+                .checkbox(&mut derivative, t!("flat-derivatives"))
+                .on_hover_text(t!("flat-derivatives-hover"))
+                .changed()
+            {
+                view.flat_normal = if derivative { FlatNormal::ScreenDerivatives } else { FlatNormal::Face };
+            }
+        });
+    });
+}
+
+/// The demo's departures as switches (only those the document makes): one row that stays
+/// where it is whatever is switched, and the reasons folded into one line that opens on a
+/// click.
+///
+/// They stand across the whole centre, above the pictures, so that switching one (which
+/// puts a second picture beside the first) moves nothing.
+pub fn departures_ui(ui: &mut Ui, doc: &Document, fixes: &mut [bool; 3]) {
+    let departures: Vec<DemoDeparture> = DemoDeparture::ALL.into_iter().filter(|d| d.present_in(doc)).collect();
+    if departures.is_empty() {
+        return;
+    }
+    ui.horizontal_wrapped(|ui| {
+        ui.label(t!("correct-the-demo"));
+        for (k, d) in DemoDeparture::ALL.into_iter().enumerate() {
+            if departures.contains(&d) {
+                ui.checkbox(&mut fixes[k], d.fix_label()).on_hover_text(d.why());
+            }
+        }
+    });
+    egui::CollapsingHeader::new(t!("why-demo-differs")).id_salt("departures").default_open(false).show(ui, |ui| {
+        ui.small(t!("why-demo-differs-intro"));
+        for d in DemoDeparture::ALL {
+            if departures.contains(&d) {
+                ui.small(format!("{}: {}", d.fix_label(), d.why()));
+            }
+        }
+    });
+}
+
+/// The mesh's resolution and the pipeline's choices.
+fn view_options_ui(ui: &mut Ui, view: &mut View) {
+    ui.horizontal_wrapped(|ui| {
+        let count = |ui: &mut Ui, label: &str, v: &mut u32, r: std::ops::RangeInclusive<u32>| {
+            crate::app::widgets::fields::whole_number_ui(ui, label, v, r);
+        };
+        match view.object {
+            ObjectKind::Sphere => {
+                count(ui, &t!("sphere-slices"), &mut view.sphere_slices, phonglab_core::view::SLICES_RANGE);
+                count(ui, &t!("sphere-stacks"), &mut view.sphere_stacks, phonglab_core::view::SLICES_RANGE);
+            }
+            ObjectKind::Teapot => count(ui, &t!("teapot-grid"), &mut view.teapot_grid, phonglab_core::view::GRID_RANGE),
+            ObjectKind::Cylinder => {
+                count(ui, &t!("cylinder-slices"), &mut view.cylinder_slices, phonglab_core::view::SLICES_RANGE);
+                count(ui, &t!("cylinder-stacks"), &mut view.cylinder_stacks, phonglab_core::view::STACKS_RANGE);
+                ui.checkbox(&mut view.cylinder_caps, t!("caps"));
+            }
+            ObjectKind::Obj => {
+                if let Ok(o) = view.obj_mesh() {
+                    ui.small(t!("mesh-triangles", count = o.mesh.triangle_count(), notes = o.notes.join("; ")));
+                }
+            }
+        }
+    });
+    pipeline_ui(ui, view);
+}
+
+/// The view's toolbar: the object and the shading (and, not presenting, the switches and
+/// the view options); applies what changed, and turns the object when it spins.
+/// Returns the mesh file asked for, if one was.
+pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCache) -> Option<std::path::PathBuf> {
+    let mut view = state.edit.doc.view.clone();
+    let presenting = state.presenting;
+    let mut open_obj_requested = None;
+    ui.horizontal_wrapped(|ui| {
+        for (k, o) in [("s", ObjectKind::Sphere), ("t", ObjectKind::Teapot), ("c", ObjectKind::Cylinder)] {
+            ui.selectable_value(&mut view.object, o, o.label()).on_hover_text(t!("key-hint", key = k));
+        }
+        if let Some(path) = &view.obj {
+            let tip = t!("mesh-tip", path = path);
+            ui.selectable_value(&mut view.object, ObjectKind::Obj, ObjectKind::Obj.label()).on_hover_text(tip);
+        }
+        ui.separator();
+        for (k, s) in [("1", Shading::Gouraud), ("2", Shading::Phong), ("3", Shading::Flat)] {
+            ui.selectable_value(&mut view.shading, s, s.label()).on_hover_text(t!("key-hint", key = k));
+        }
+        if presenting {
+            // In front of a class: the object and the shading only (the rest is in the drawer
+            // and on the keys).
+            return;
+        }
+        ui.separator();
+        ui.checkbox(&mut view.auto_rotate, t!("auto-rotate")).on_hover_text(t!("auto-rotate-hover"));
+        ui.checkbox(&mut view.demo_normals, t!("demo-normals")).on_hover_text(t!("demo-normals-hover"));
+        ui.checkbox(&mut state.heat_map.on, t!("heat-map")).on_hover_text(t!("heat-map-hover"));
+    });
+    if !presenting {
+        // Opened, the options scroll within a part of the view's space, so the picture
+        // stays on screen (smaller) rather than being pushed below the window.
+        let most = ui.available_height() * 0.45;
+        egui::CollapsingHeader::new(t!("view-options")).id_salt("view options").show(ui, |ui| {
+            egui::ScrollArea::vertical().max_height(most).show(ui, |ui| {
+                renderer_ui(ui, state, &cache.main.drawn_by);
+                view_options_ui(ui, &mut view);
+                ui.horizontal_wrapped(|ui| {
+                    let l = ui.label(t!("mesh-file"));
+                    let field = ui
+                        .add(
+                            egui::TextEdit::singleline(&mut state.view_options.obj_path)
+                                .desired_width(180.0)
+                                .hint_text("path/to/mesh.obj"),
+                        )
+                        .labelled_by(l.id);
+                    let enter = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+                    if ui.button(t!("show-mesh")).on_hover_text(t!("show-mesh-hover")).clicked() || enter {
+                        open_obj_requested = Some(std::path::PathBuf::from(state.view_options.obj_path.trim()));
+                    }
+                });
+            });
+        });
+    }
+    if view != state.edit.doc.view {
+        let mut c = state.edit.doc.clone();
+        c.view = view;
+        state.edit.apply(c);
+    }
+
+    // The spin is not an edit: it stays finite and in range, and must not clear a message.
+    if state.edit.doc.view.auto_rotate {
+        state.edit.doc.view.spin_degrees = (state.edit.doc.view.spin_degrees + 0.5).rem_euclid(360.0);
+        ui.ctx().request_repaint();
+    }
+    open_obj_requested
+}
+
+/// The renderer choice, and who drew the last picture (and why not the GPU).
+fn renderer_ui(ui: &mut Ui, state: &mut Shaded<'_>, drawn_by: &DrawnBy) {
+    ui.horizontal_wrapped(|ui| {
+        let l = ui.label(t!("renderer"));
+        egui::ComboBox::from_id_salt("renderer")
+            .selected_text(state.view_options.renderer.label())
+            .show_ui(ui, |ui| {
+                for c in gpu::RendererChoice::ALL {
+                    ui.selectable_value(&mut state.view_options.renderer, c, c.label());
+                }
+            })
+            .response
+            .labelled_by(l.id)
+            .on_hover_text(t!("renderer-hover"));
+    });
+    match drawn_by {
+        DrawnBy::Gpu { adapter } => {
+            ui.small(t!("drawn-gpu", adapter = adapter.to_string()));
+        }
+        DrawnBy::Cpu { why } => {
+            ui.small(t!("drawn-cpu", why = why.to_string()));
+        }
+        DrawnBy::Nothing => {}
+    }
+}

@@ -1,0 +1,204 @@
+//! Scene files opened and saved by the window (the scene file's row asks: [`crate::app::panels::files`]),
+//! and files dropped on it. A file that cannot be read, parsed or validated is refused with a message that
+//! names the line and column or the field, and the current scene stays as it was; a save
+//! is written whole or not at all, so a failed save leaves the old file whole.
+
+use std::path::Path;
+
+use phonglab_core::Document;
+use phonglab_core::t;
+
+use super::state::{AppState, Message};
+use crate::app::panels::files::FileRequest;
+use crate::io::student_code::{MAX_CODE_BYTES, import_text, student_code};
+use crate::platform::files as platform;
+
+/// Writes `doc` to `path`, whole or not at all ([`crate::io::atomic_write::write`]).
+pub fn write_document(doc: &Document, path: &Path) -> Result<(), String> {
+    let text = doc.to_toml().map_err(|e| e.to_string())?;
+    crate::io::atomic_write::write(path, text.as_bytes()).map_err(|e| e.to_string())
+}
+
+/// The app's first scene when it is started with a file (`phonglab FILE.toml`): that file,
+/// or, when it cannot be used, the default scene (the worksheet), saying why.
+pub fn open_at_start(state: &mut AppState, path: &Path) {
+    if let Err(why) = open_or_why(state, path) {
+        state.doc = Document::default();
+        state.message = Some(Message::Refused(t!("not-opened-worksheet", why = why)));
+    }
+}
+
+/// Opens a scene file into the app, or says why not and keeps the current scene.
+pub fn open(state: &mut AppState, path: &Path) {
+    if let Err(why) = open_or_why(state, path) {
+        refuse(state, why);
+    }
+}
+
+/// Opens a scene file (or an OBJ mesh) into the app, or returns why not (the scene stays).
+fn open_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
+    if is_obj(path) {
+        return open_obj_or_why(state, path);
+    }
+    let (cap, kind) = match student_code(path) {
+        Some(_) => (MAX_CODE_BYTES, t!("file-kind-code")),
+        None => (crate::io::input_file::MAX_SCENE_BYTES, t!("file-kind-scenes")),
+    };
+    let bytes = crate::io::input_file::read_capped(path, cap, &kind)?;
+    open_bytes_or_why(state, &bytes, path)
+}
+
+/// Does `path` name an OBJ mesh (rather than a scene file)?
+pub fn is_obj(path: &Path) -> bool {
+    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("obj"))
+}
+
+/// Shows the OBJ mesh at `path` in the shaded view (the scene stays), or says why not with
+/// the line at fault; says what was done to the file (fanned, normals computed, fitted).
+pub fn open_obj(state: &mut AppState, path: &Path) {
+    if let Err(why) = open_obj_or_why(state, path) {
+        refuse(state, why);
+    }
+}
+
+fn open_obj_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
+    let full = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+    let mut c = state.doc.clone();
+    c.view.object = phonglab_core::ObjectKind::Obj;
+    c.view.obj = Some(full.display().to_string());
+    let loaded = c.view.obj_mesh();
+    state.apply_or_why(c)?;
+    let what = match loaded {
+        Ok(o) => t!(
+            "mesh-summary",
+            triangles = o.mesh.triangle_count(),
+            vertices = o.mesh.positions.len(),
+            notes = o.notes.join("; ")
+        ),
+        Err(e) => e.to_string(),
+    };
+    state.message = Some(Message::Info(t!("opened-mesh", path = path.display().to_string(), what = what)));
+    Ok(())
+}
+
+/// Opens a scene from the bytes of the file at `path`, or says why not.
+fn open_bytes(state: &mut AppState, bytes: &[u8], path: &Path) {
+    if let Err(why) = open_bytes_or_why(state, bytes, path) {
+        refuse(state, why);
+    }
+}
+
+fn open_bytes_or_why(state: &mut AppState, bytes: &[u8], path: &Path) -> Result<(), String> {
+    if is_obj(path) {
+        return open_obj_or_why(state, path);
+    }
+    let Ok(text) = std::str::from_utf8(bytes) else {
+        return Err(t!("not-text", path = path.display().to_string()));
+    };
+    if let Some(notebook) = student_code(path) {
+        return import_or_why(state, text, notebook, path);
+    }
+    let doc = Document::from_toml_in(text, path.parent()).map_err(|e| format!("{}: {e}", path.display()))?;
+    state.load(doc, &path.display().to_string());
+    state.files.path = path.display().to_string();
+    Ok(())
+}
+
+/// Opens a worksheet-style notebook or script as a scene (what `phonglab import` reads),
+/// saying which lines could not be read; the scene stays when nothing could be.
+fn import_or_why(state: &mut AppState, text: &str, notebook: bool, path: &Path) -> Result<(), String> {
+    let imported = import_text(text, notebook, path)?;
+    state.load(imported.doc, &path.display().to_string());
+    // Save writes a scene file beside it, never over the student's notebook or script.
+    state.files.path = path.with_extension("toml").display().to_string();
+    let what = if imported.notices.is_empty() { String::new() } else { format!(" {}", imported.notices.join("; ")) };
+    state.message = Some(Message::Info(t!("imported", path = path.display().to_string(), notices = what)));
+    Ok(())
+}
+
+fn refuse(state: &mut AppState, why: String) {
+    state.message = Some(Message::Refused(t!("not-opened", why = why)));
+}
+
+/// Saves the current scene, and says where (or why not).
+pub fn save(state: &mut AppState, path: &Path) {
+    // The scene's mesh is read from its file: saving the scene over it would lose it.
+    let mesh: Vec<&Path> = state.doc.view.obj.iter().map(Path::new).collect();
+    let written =
+        crate::io::same_file::refuse_output_onto_input(&[path], &mesh).and_then(|()| write_document(&state.doc, path));
+    state.message = Some(match written {
+        Ok(()) => Message::Info(t!("saved", path = path.display().to_string())),
+        Err(e) => Message::Refused(t!("not-saved", error = e)),
+    });
+}
+
+/// Opens the file at the typed path.
+pub fn open_typed(state: &mut AppState) {
+    match state.files.typed() {
+        Some(p) => open(state, &p),
+        None => state.message = Some(Message::Refused(t!("type-path-first"))),
+    }
+}
+
+/// Saves to the typed path.
+pub fn save_typed(state: &mut AppState) {
+    match state.files.typed() {
+        Some(p) => save(state, &p),
+        None => state.message = Some(Message::Refused(t!("type-path-first"))),
+    }
+}
+
+/// Carries out what the scene file's row asked for.
+pub fn carry_out(state: &mut AppState, request: FileRequest) {
+    match request {
+        FileRequest::OpenTyped => open_typed(state),
+        FileRequest::SaveTyped => save_typed(state),
+        FileRequest::Open(p) => {
+            state.files.path = p.display().to_string();
+            open(state, &p);
+        }
+        FileRequest::Save(p) => {
+            state.files.path = p.display().to_string();
+            save(state, &p);
+        }
+    }
+}
+
+/// Opens a scene file dropped on the window (the first one, when several are dropped), and
+/// while files hover over the window, says that dropping one opens it.
+pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
+    let hovering = ctx.input(|i| !i.raw.hovered_files.is_empty());
+    if hovering {
+        let painter = ctx.layer_painter(egui::LayerId::new(egui::Order::Foreground, egui::Id::unique("drop target")));
+        let rect = ctx.content_rect();
+        painter.rect_filled(rect, 0.0, egui::Color32::from_black_alpha(160));
+        painter.text(
+            rect.center(),
+            egui::Align2::CENTER_CENTER,
+            t!("drop-to-open"),
+            egui::FontId::proportional(28.0),
+            egui::Color32::WHITE,
+        );
+    }
+    // Files that arrived since the last frame (the browser's chooser and drops).
+    for arrived in platform::take_arrived() {
+        match arrived {
+            Ok((name, bytes)) => open_bytes(state, &bytes, Path::new(&name)),
+            Err(why) => refuse(state, why),
+        }
+    }
+    let dropped = ctx.input(|i| i.raw.dropped_files.clone());
+    let Some(file) = dropped.first() else { return };
+    // Read now on the desktop; in the browser the bytes arrive later (see file_ui).
+    match crate::io::input_file::read_dropped(ctx, file, MAX_CODE_BYTES) {
+        Some(Ok((name, bytes))) => open_bytes(state, &bytes, Path::new(&name)),
+        Some(Err(why)) => refuse(state, why),
+        None => {}
+    }
+    if dropped.len() > 1 {
+        let extra = t!("dropped-several", count = dropped.len());
+        if let Some(Message::Info(m) | Message::Refused(m)) = &mut state.message {
+            m.push_str(&extra);
+        }
+    }
+}
