@@ -129,7 +129,7 @@ fn an_exercise_set_killed_at_any_step_is_finished_or_undone_by_the_next_run() {
         }
         killed += 1;
         // The next run (of any set) finishes the swap or throws the staging away first.
-        phonglab::io::atomic_write::recover(&out).unwrap();
+        phonglab::io::file_set::recover(&out).unwrap();
         let after = listing(&out);
         assert!(
             after == old || after == new,

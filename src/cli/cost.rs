@@ -189,12 +189,12 @@ pub fn belongs_to_a_report(name: &str) -> bool {
 }
 
 /// `phonglab cost`: the studies, their tables on stdout, and the files, written as one
-/// report ([`crate::io::atomic_write::write_set`]) after the folder was tried before the study.
+/// report ([`crate::io::file_set::write_set`]) after the folder was tried before the study.
 pub fn run(a: &CostRun) -> Result<()> {
     crate::io::atomic_write::check_folder_destination(&a.out)?;
     let pool = rayon::ThreadPoolBuilder::new().num_threads(a.threads).build()?;
     let studies = pool.install(|| studies(a))?;
-    let mut set = crate::io::atomic_write::FileSet::default();
+    let mut set = crate::io::file_set::FileSet::default();
     let mut csv = String::new();
     for (i, s) in studies.iter().enumerate() {
         println!("{}", table(s));
@@ -218,7 +218,7 @@ pub fn run(a: &CostRun) -> Result<()> {
     set.add("cost.md", tables);
     let (w, h, rgba) = chart_png(&studies, 1.5);
     set.add("cost.png", crate::io::image::encode_png(w, h, &rgba)?);
-    crate::io::atomic_write::write_set(&a.out, &set, belongs_to_a_report)?;
+    crate::io::file_set::write_set(&a.out, &set, belongs_to_a_report)?;
     eprintln!("{}", phonglab_core::t!("cost-wrote", files = set.to_string(), out = a.out.display().to_string()));
     Ok(())
 }

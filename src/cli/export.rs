@@ -9,7 +9,7 @@ use clap::{Args, ValueEnum};
 use phonglab_core::export::{Target, files};
 use phonglab_core::t;
 
-use crate::io::atomic_write::FileSet;
+use crate::io::file_set::FileSet;
 
 /// What `--to` names.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
@@ -80,7 +80,7 @@ pub fn export(a: &ExportArgs) -> Result<()> {
                 set.add(name.clone(), text.clone().into_bytes());
             }
             let names: Vec<String> = written.iter().map(|(n, _)| n.clone()).collect();
-            crate::io::atomic_write::write_set(dir, &set, |n| names.iter().any(|m| m == n))?;
+            crate::io::file_set::write_set(dir, &set, |n| names.iter().any(|m| m == n))?;
             eprintln!("{}", t!("export-written", path = dir.display().to_string()));
         }
         (Some(path), _) => {

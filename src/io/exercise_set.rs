@@ -18,7 +18,7 @@ use phonglab_core::exercise::{Exercise, Spec, generate, sheet_markdown};
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::{Document, Engine};
 
-use super::atomic_write::FileSet;
+use super::file_set::FileSet;
 use super::sheet_pdf::{Block, Pages, pdf};
 use phonglab_core::t;
 
@@ -261,11 +261,11 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
     Ok((exercises, set))
 }
 
-/// Writes the exercises as one set into the folder `dir` ([`super::atomic_write::write_set`]):
+/// Writes the exercises as one set into the folder `dir` ([`super::file_set::write_set`]):
 /// the folder ends with the new set whole, or as it was; returns them.
 pub fn write(dir: &std::path::Path, a: &Request) -> Result<Vec<Exercise>> {
     super::atomic_write::check_folder_destination(dir)?;
     let (exercises, set) = exercise_set(a)?;
-    super::atomic_write::write_set(dir, &set, belongs_to_a_set)?;
+    super::file_set::write_set(dir, &set, belongs_to_a_set)?;
     Ok(exercises)
 }

@@ -23,7 +23,7 @@
 //! | rank | group | modules |
 //! |---|---|---|
 //! | 9 | export: the student's own code, and back | `export::notebook`, `export::pyopengl`, `export::openframeworks`, `export::read_python` |
-//! | 8 | teach: for the classroom; study: what accuracy costs, the benchmark timed | [`exercise`], [`quiz`], [`shader`]; [`cost`], [`bench`] |
+//! | 8 | teach: for the classroom; study: what accuracy costs, the benchmark timed | [`exercise`], [`quiz`], [`shader`]; [`cost`], [`bench`](mod@bench) |
 //! | 7 | raster: the CPU renderer | [`render`], [`shaded`] |
 //! | 6 | specialise: only the stages a scene needs | [`plan`], [`specialised`], [`effects`] (the plan in words) |
 //! | 5 | formats: text in and out, ready-made documents | [`document`], [`library`], [`glref`], [`escape`] (user text for each language written) |

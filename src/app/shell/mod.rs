@@ -3,16 +3,20 @@
 //! desktop and in the browser.
 
 pub mod bench_ui;
+pub mod centre;
 pub mod centre_layout;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod desktop;
 pub mod files;
 pub mod frame;
+pub mod keys;
 pub mod layout;
 pub mod screenshot;
 pub mod session;
 pub mod session_loop;
 pub mod shutdown;
 pub mod state;
+pub mod top_bar;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
+pub mod windows;

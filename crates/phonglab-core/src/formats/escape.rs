@@ -175,7 +175,7 @@ pub mod markdown {
     /// strikethrough, a table cell, a heading's closing `#`.
     const INLINE: &[char] = &['\\', '`', '*', '_', '[', ']', '<', '>', '&', '$', '~', '|', '#', '!'];
 
-    /// Inline text: each character of [`INLINE`] backslash-escaped (CommonMark makes
+    /// Inline text: each character of `INLINE` backslash-escaped (CommonMark makes
     /// every such escape its literal character), and at the start a list, quote or
     /// heading marker too (`-`, `+`, `=`, `1.`); control characters written `\u{1B}`, so
     /// it stays on its line and starts no new block. Other text (`:`, `.`, accents) is
