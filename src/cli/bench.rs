@@ -15,8 +15,8 @@ use crate::platform::clock::Instant;
 use anyhow::Result;
 use clap::{Args, Subcommand};
 use phonglab_core::bench::{bench_meshes, bench_meshes_with, render_figures_of};
+use phonglab_core::lighter::Lighter;
 use phonglab_core::presets::{LightingBench, sphere_points};
-use phonglab_core::specialised::Lighter;
 use phonglab_core::{Engine, EvalOptions, Shading, Vertex};
 
 /// `phonglab bench`.
@@ -239,7 +239,7 @@ fn stage_figures(arrays: &mut LightingArrays, repeats: u32) -> Result<()> {
     println!("scene step ns_per_vertex");
     for b in LightingBench::ALL {
         let lighter = Lighter::new(&b.scene(), EvalOptions::default())?;
-        let total = |t: &phonglab_core::specialised::StageTimes| {
+        let total = |t: &phonglab_core::lighter::StageTimes| {
             t.load + t.write + t.stages.iter().map(|(_, d)| *d).sum::<std::time::Duration>()
         };
         let best = (0..repeats.max(1))

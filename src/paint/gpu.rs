@@ -328,7 +328,7 @@ pub fn read_rgba(device: &wgpu::Device, queue: &wgpu::Queue, target: &Target) ->
 /// (RGBA8, rows top to bottom): the one-shot path the tests compare with the CPU renderer.
 /// Flat shading is refused (the generator writes Gouraud and Phong).
 pub fn render(device: &wgpu::Device, queue: &wgpu::Queue, job: &Job<'_>, size: u32) -> Result<Vec<u8>, String> {
-    let shader = wgsl_for(job.scene, job.options, job.shading)?;
+    let shader = wgsl_for(job.scene, job.options, job.mode.shading())?;
     let bytes = uniform_bytes(&shader.uniforms, job.scene, &job.clip_from_object)?;
     let program = Program::new(device, &shader.vertex, bytes.len())?;
     program.write_uniforms(queue, &bytes);

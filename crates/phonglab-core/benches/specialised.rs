@@ -7,8 +7,8 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use phonglab_core::lighter::{Lighter, Lit};
 use phonglab_core::presets::{LightingBench, sphere_points};
-use phonglab_core::specialised::{Lighter, Lit};
 use phonglab_core::{Engine, EvalOptions, Vertex};
 
 const N: usize = 1_000_000;

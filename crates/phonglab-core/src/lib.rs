@@ -25,7 +25,7 @@
 //! | 9 | export: the student's own code, and back | `export::notebook`, `export::pyopengl`, `export::openframeworks`, `export::read_python` |
 //! | 8 | teach: for the classroom; study: what accuracy costs, the benchmark timed | [`exercise`], [`quiz`], [`shader`]; [`cost`], [`bench`](mod@bench) |
 //! | 7 | raster: the CPU renderer | [`render`], [`shaded`] |
-//! | 6 | specialise: only the stages a scene needs | [`plan`], [`specialised`], [`effects`] (the plan in words) |
+//! | 6 | specialise: only the stages a scene needs | [`plan`], [`lighter`], [`effects`] (the plan in words) |
 //! | 5 | formats: text in and out, ready-made documents | [`document`], [`library`], [`glref`], [`escape`] (user text for each language written) |
 //! | 4 | equation: the lighting equation and its worked calculation | [`lighting`], [`breakdown`], [`explain`], [`validate`] |
 //! | 3 | model: what is lit | [`scene`], [`rules`], [`materials`], [`camera`], [`transform`], [`view`], [`presets`], [`error`] |
@@ -51,7 +51,7 @@ pub use formats::{document, escape, glref, library};
 pub use model::{camera, error, materials, presets, rules, scene, transform, view};
 pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
 pub use raster::{render, shaded};
-pub use specialise::{effects, plan, specialised};
+pub use specialise::{effects, lighter, plan};
 pub use study::{bench, cost};
 pub use teach::{exercise, quiz, shader};
 
@@ -65,7 +65,7 @@ pub use real::{Precision, Real, Vec3Ops};
 pub use rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel};
 pub use scene::{Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Rgba, Scene, Vertex};
 pub use shaded::ShadedSetup;
-pub use view::{FlatNormal, Framing, LightingSpace, ObjectKind, Shading, View, ViewCamera};
+pub use view::{FlatNormal, Framing, LightingSpace, ObjectKind, Shading, ShadingMode, View, ViewCamera};
 
 /// What the unit tests share.
 #[cfg(test)]

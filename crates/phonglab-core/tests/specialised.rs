@@ -4,7 +4,7 @@
 mod common;
 
 use glam::{DMat4, DQuat, DVec3, DVec4, Vec3};
-use phonglab_core::specialised::{Lighter, Lit};
+use phonglab_core::lighter::{Lighter, Lit};
 use phonglab_core::{
     Engine, EvalOptions, Light, LightPlacement, Material, NormalMode, PowFn, RuleSet, Rules, Scene, SpecularModel,
     Vertex,
@@ -418,7 +418,7 @@ fn skipped_stages_never_run_for_any_key_bit() {
             let program = l.program().stages.clone();
             let (lit, trace) = l.light_batch_traced(&positions, &normals);
             // 300 vertices in chunks of CHUNK (the last one partial): the program once a chunk.
-            let chunks = positions.len().div_ceil(phonglab_core::specialised::CHUNK);
+            let chunks = positions.len().div_ceil(phonglab_core::lighter::CHUNK);
             assert_eq!(trace, program.repeat(chunks), "{name}: the evaluator runs exactly the program");
             if name != "nothing" {
                 assert!(!trace.iter().any(left_out), "{name} {model:?}: a left-out stage ran: {program:?}");

@@ -242,7 +242,7 @@ impl BenchPicture {
             }
             let shader = crate::paint::gpu::wgsl_for(job.scene, job.options, job.shading)?;
             let uniforms = crate::paint::gpu::uniform_bytes(&shader.uniforms, job.scene, &job.clip_from_object)?;
-            let picture = crate::app::panels::shaded::gpu::Picture {
+            let picture = crate::app::panels::shaded::gpu::GpuImage {
                 slot: u64::MAX,
                 wgsl: shader.vertex.into(),
                 uniforms,

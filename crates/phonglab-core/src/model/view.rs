@@ -128,6 +128,47 @@ pub enum FlatNormal {
     ScreenDerivatives,
 }
 
+/// How the renderer spreads the light over a triangle: one choice, where the view (and its
+/// scene file) keeps two, the shading and, for Flat, its normal ([`ShadingMode::of`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum ShadingMode {
+    /// Lit per vertex, the colours interpolated.
+    #[default]
+    Gouraud,
+    /// Position and normal interpolated, lit per fragment.
+    Phong,
+    /// One colour per face: lit once, at its centroid, with its geometric normal.
+    FlatFace,
+    /// The Phong demo's Flat: lit per fragment with the normal of the screen derivatives.
+    FlatDerivatives,
+}
+
+impl ShadingMode {
+    /// The mode of a view's `shading` and `flat` normal (the normal matters for Flat only).
+    pub fn of(shading: Shading, flat: FlatNormal) -> ShadingMode {
+        match (shading, flat) {
+            (Shading::Gouraud, _) => ShadingMode::Gouraud,
+            (Shading::Phong, _) => ShadingMode::Phong,
+            (Shading::Flat, FlatNormal::Face) => ShadingMode::FlatFace,
+            (Shading::Flat, FlatNormal::ScreenDerivatives) => ShadingMode::FlatDerivatives,
+        }
+    }
+
+    /// The shading it is a mode of.
+    pub fn shading(self) -> Shading {
+        match self {
+            ShadingMode::Gouraud => Shading::Gouraud,
+            ShadingMode::Phong => Shading::Phong,
+            ShadingMode::FlatFace | ShadingMode::FlatDerivatives => Shading::Flat,
+        }
+    }
+
+    /// Does it light each fragment (Phong, and the demo's Flat)?
+    pub fn per_fragment(self) -> bool {
+        matches!(self, ShadingMode::Phong | ShadingMode::FlatDerivatives)
+    }
+}
+
 /// The Phong demo's spin after `degrees` (0.5 a frame): its `mvMatrix` is
 /// `rotY(0.5 deg)^frame` in NumPy's row-major layout, uploaded with transpose `GL_FALSE`,
 /// so the shader applies its transpose: a turn by `-degrees` about y.

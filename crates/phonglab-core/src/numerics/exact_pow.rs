@@ -273,7 +273,7 @@ mod tests {
 
     #[test]
     fn the_packed_power_is_the_chunk_power_bit_for_bit() {
-        // Chunks of 16 to 128 (the evaluator's is specialised::CHUNK); densities from none
+        // Chunks of 16 to 128 (the evaluator's is lighter::CHUNK); densities from none
         // to all of the lanes above 0, with -0, NaN, +inf and tiny values among them. (On a
         // processor without AVX-512 both are the same loop.)
         fn check<const N: usize>(seed: u64) {

@@ -28,7 +28,7 @@ use crate::equation::breakdown::{SideColor, VertexLighting};
 use crate::equation::lighting::{Engine, Renormalize};
 use crate::model::error::SceneError;
 use crate::model::scene::Vertex;
-use crate::model::view::{FlatNormal, Shading};
+use crate::model::view::ShadingMode;
 use crate::raster::render::Job;
 use crate::raster::render::window::{ONE, to_window};
 
@@ -135,7 +135,7 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
             let area = area.abs();
             let side = if front || !two_sided { 0 } else { 1 };
             let ids = order.map(|k| [i0, i1, i2][k]);
-            let face_colour = (job.shading == Shading::Flat && job.flat_normal == FlatNormal::Face).then(|| {
+            let face_colour = (job.mode == ShadingMode::FlatFace).then(|| {
                 let [ea, eb, ec] = ids.map(|i| eye_pos[i]);
                 let n = plane_normal(ea, eb, ec, order != [0, 1, 2]);
                 side_of(&engine.light_eye(((ea + eb + ec) / 3.0).extend(1.0), n), side).sum()
@@ -192,9 +192,9 @@ struct Face {
 /// normal).
 fn shade(job: &Job<'_>, engine: &Engine<f64>, lit: &[VertexLighting<f64>], face: &Face, bary: [f64; 3]) -> [f64; 4] {
     let clamp = job.scene.rules.clamps_vertex_colors();
-    match (job.shading, face.flat) {
+    match (job.mode, face.flat) {
         (_, Some(c)) => c,
-        (Shading::Gouraud, None) => {
+        (ShadingMode::Gouraud, None) => {
             let mut c = [0.0; 4];
             for k in 0..3 {
                 let vc = vertex_colour(side_of(&lit[face.ids[k]], face.side), clamp);
@@ -206,7 +206,7 @@ fn shade(job: &Job<'_>, engine: &Engine<f64>, lit: &[VertexLighting<f64>], face:
         }
         _ => {
             let pos: DVec3 = (0..3).map(|k| bary[k] * lit[face.ids[k]].pos_in_eye).sum();
-            let n = if job.shading == Shading::Flat {
+            let n = if job.mode == ShadingMode::FlatDerivatives {
                 let [ea, eb, ec] = face.ids.map(|i| lit[i].pos_in_eye);
                 plane_normal(ea, eb, ec, face.swapped)
             } else {

@@ -2,6 +2,7 @@
 //! space, or the demo's object space), where the view draws the object, and the options.
 //! One setup for the app, the CLI and the cost study, so they all draw the same picture.
 
+use crate::model::view::ShadingMode;
 use crate::model::view::{Framing, LightingSpace, View};
 
 /// Everything the renderer needs to draw a document's shaded view: one setup for the app,
@@ -25,8 +26,7 @@ impl ShadedSetup {
             scene: &self.scene,
             mesh,
             clip_from_object: self.clip_from_object,
-            shading: self.view.shading,
-            flat_normal: self.view.flat_normal,
+            mode: ShadingMode::of(self.view.shading, self.view.flat_normal),
             background: self.view.background,
             cull_back: false,
             options: self.options,
@@ -86,8 +86,7 @@ pub fn bench_job<'a>(
         scene,
         mesh,
         clip_from_object: crate::model::presets::bench_projection() * scene.eye_from_object(),
-        shading,
-        flat_normal: crate::model::view::FlatNormal::Face,
+        mode: ShadingMode::of(shading, crate::model::view::FlatNormal::Face),
         background: crate::model::presets::BENCH_BACKGROUND,
         cull_back: false,
         options: crate::equation::lighting::EvalOptions::default(),

@@ -7,7 +7,7 @@
 
 #[cfg(target_arch = "x86_64")]
 use crate::numerics::cpu::{has_avx2_fma, has_avx512};
-use crate::specialise::specialised::{Lighter, Output, Probe, Source};
+use crate::specialise::lighter::{Lighter, Output, Probe, Source};
 
 impl Lighter {
     /// The chunked driver. Runs a copy compiled for AVX-512 or AVX2 and FMA when the CPU

@@ -8,7 +8,7 @@ use std::fmt;
 use super::plan::*;
 use crate::model::rules::SpecularModel;
 use crate::model::scene::NormalMode;
-use crate::specialise::specialised::CHUNK;
+use crate::specialise::lighter::CHUNK;
 
 /// An effect of the equation, and whether the specialised evaluator computes it: read off
 /// the compiled [`Program`], so it is true of what runs.

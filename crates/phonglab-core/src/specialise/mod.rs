@@ -2,5 +2,5 @@
 
 pub mod copies;
 pub mod effects;
+pub mod lighter;
 pub mod plan;
-pub mod specialised;

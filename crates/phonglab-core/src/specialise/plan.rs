@@ -3,7 +3,7 @@
 //!
 //! Mesa's fixed-function vertex program generator builds a state key and emits only the
 //! instructions it needs; phonglab does the same with a plan of array stages
-//! ([`crate::specialise::specialised`]). The key changes only when an effect switches on or off (a
+//! ([`crate::specialise::lighter`]). The key changes only when an effect switches on or off (a
 //! light becomes positional, attenuation leaves (1, 0, 0), a cutoff leaves 180,
 //! shininess reaches 0...), never when a value merely moves, so a slider move does not
 //! re-plan.

@@ -25,7 +25,7 @@ use crate::model::view::{ObjectKind, Shading, View};
 use crate::numerics::pow::PowFn;
 use crate::raster::render::{Image, Job, Renderer};
 use crate::raster::shaded::ShadedSetup;
-use crate::specialise::specialised::Lighter;
+use crate::specialise::lighter::Lighter;
 
 /// What is studied: a document's shaded view as the app and the CLI draw it (its scene, as
 /// [`crate::formats::document::Document::shaded_scene`] gives it, where the object is drawn,
@@ -58,7 +58,9 @@ impl<'a> Setup<'a> {
     where
         'a: 'm,
     {
-        Job { shading, options, background: self.background, ..self.shaded.job(mesh) }
+        let view = &self.shaded.view;
+        let mode = crate::model::view::ShadingMode::of(shading, view.flat_normal);
+        Job { mode, options, background: self.background, ..self.shaded.job(mesh) }
     }
 }
 

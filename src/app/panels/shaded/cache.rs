@@ -9,7 +9,7 @@ use phonglab_core::mesh::Mesh;
 use phonglab_core::render::Renderer;
 use phonglab_core::{Document, PowFn, Shading, View};
 
-use crate::app::panels::shaded::gpu::Picture;
+use crate::app::panels::shaded::gpu::GpuImage;
 
 /// One picture's renderer, mesh and texture, kept between frames.
 #[derive(Default)]
@@ -102,7 +102,7 @@ impl ViewCache {
 
     /// The GPU picture of `doc`'s shaded view at `px` pixels square (slot `slot`), or why
     /// it cannot be drawn on the GPU (a program the driver refused is not tried again).
-    pub(crate) fn gpu_picture(&mut self, doc: &Document, pow: PowFn, px: usize, slot: u64) -> Result<Picture, String> {
+    pub(crate) fn gpu_picture(&mut self, doc: &Document, pow: PowFn, px: usize, slot: u64) -> Result<GpuImage, String> {
         if let Some(e) = self.gpu_error.lock().unwrap_or_else(|e| e.into_inner()).take() {
             self.failed_program = self.gpu_program.take().map(|p| p.wgsl);
             return Err(format!("the GPU refused the generated program: {e}"));
@@ -120,7 +120,7 @@ impl ViewCache {
         }
         let uniforms = crate::paint::gpu::uniform_bytes(&program.uniforms, &setup.scene, &setup.clip_from_object)?;
         let wgsl = program.wgsl.clone();
-        Ok(Picture {
+        Ok(GpuImage {
             slot,
             wgsl,
             uniforms,

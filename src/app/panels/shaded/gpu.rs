@@ -102,7 +102,7 @@ pub fn why_cpu(gpu: Option<&GpuInfo>, choice: RendererChoice, doc: &Document, po
 }
 
 /// What one GPU picture needs, built each frame by the view and handed to the callback.
-pub struct Picture {
+pub struct GpuImage {
     /// Which picture (the main view, the corrected one): each keeps its own buffers.
     pub slot: u64,
     /// The generated WGSL module.
@@ -222,7 +222,7 @@ impl Resources {
     /// Brings `picture`'s slot up to date, rebuilding each part only when what it holds
     /// changed: the program (another WGSL text), the target (another size), the mesh
     /// buffers (another mesh).
-    fn update(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, p: &Picture) -> Result<&Slot, String> {
+    fn update(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, p: &GpuImage) -> Result<&Slot, String> {
         let program = || gpu::Program::new(device, &p.wgsl, p.uniforms.len());
         let slot = match self.slots.entry(p.slot) {
             std::collections::hash_map::Entry::Occupied(e) => e.into_mut(),
@@ -267,7 +267,7 @@ fn copy_bind(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, target: &gpu
     })
 }
 
-impl CallbackTrait for Picture {
+impl CallbackTrait for GpuImage {
     fn prepare(
         &self,
         device: &wgpu::Device,
@@ -305,6 +305,6 @@ impl CallbackTrait for Picture {
 }
 
 /// Adds `picture` to be drawn in `rect`.
-pub fn paint(ui: &egui::Ui, rect: egui::Rect, picture: Picture) {
+pub fn paint(ui: &egui::Ui, rect: egui::Rect, picture: GpuImage) {
     ui.painter().add(egui_wgpu::Callback::new_paint_callback(rect, picture));
 }

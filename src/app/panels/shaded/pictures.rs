@@ -7,7 +7,7 @@ use phonglab_core::{Document, t};
 
 use super::cache::{DrawnBy, ShadedCache, ViewCache};
 use super::context::{Shaded, corrected_document};
-use super::gpu::{self, Picture};
+use super::gpu::{self, GpuImage};
 use super::heat_map::heat_map_ui;
 use crate::app::model::message::Message;
 
@@ -112,7 +112,7 @@ fn prepare_picture(
     px: usize,
     slot: u64,
     name: &str,
-) -> Result<Option<Picture>, String> {
+) -> Result<Option<GpuImage>, String> {
     let pow = state.pow;
     let why = match gpu::why_cpu(state.gpu, state.view_options.renderer, doc, pow) {
         Some(why) => why,
@@ -132,7 +132,7 @@ fn prepare_picture(
 
 /// The GPU picture [`prepare_picture`] made, if any; a failure becomes the message `what:
 /// reason` (the view then shows the last picture it has).
-fn picture_or_refusal(state: &mut Shaded<'_>, r: Result<Option<Picture>, String>, what: &str) -> Option<Picture> {
+fn picture_or_refusal(state: &mut Shaded<'_>, r: Result<Option<GpuImage>, String>, what: &str) -> Option<GpuImage> {
     r.unwrap_or_else(|e| {
         *state.edit.message = Some(Message::Refused(format!("{what}: {e}")));
         None
@@ -141,7 +141,7 @@ fn picture_or_refusal(state: &mut Shaded<'_>, r: Result<Option<Picture>, String>
 
 /// The picture, `size` points: the GPU's through its paint callback, or the CPU
 /// renderer's texture.
-fn picture_ui(ui: &mut Ui, cache: &ViewCache, gpu: Option<Picture>, size: egui::Vec2, sense: Sense) -> egui::Response {
+fn picture_ui(ui: &mut Ui, cache: &ViewCache, gpu: Option<GpuImage>, size: egui::Vec2, sense: Sense) -> egui::Response {
     match (gpu, &cache.texture) {
         (Some(p), _) => {
             let (rect, resp) = ui.allocate_exact_size(size, sense);

@@ -8,14 +8,14 @@
 use glam::Vec4;
 
 use super::Job;
-use super::raster::Band;
-#[cfg(target_arch = "x86_64")]
-use super::raster::{LANES, RowPlane};
 #[cfg(target_arch = "x86_64")]
 use super::resolve::LANES as ResolveLanes;
 use super::resolve::{Attributes, BandInput, Fragments, Shaded};
 use super::setup::{RasterTri, Setup};
 use super::vertices::Vertices;
+use super::visibility::Band;
+#[cfg(target_arch = "x86_64")]
+use super::visibility::{LANES, RowPlane};
 use super::window::WindowVert;
 
 /// Each clip-space vertex of `clip` in window coordinates for a `width` x `height` image
@@ -80,13 +80,13 @@ pub fn draw_band(setup: &Setup, bin: &[u32], band: Band<'_>) -> usize {
         // SAFETY: the CPU has AVX2 and FMA (checked just above).
         return unsafe { draw_band_avx2(setup, bin, band) };
     }
-    super::raster::draw_band_any::<false>(setup, bin, band)
+    super::visibility::draw_band_any::<false>(setup, bin, band)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 pub(super) fn draw_band_avx2(setup: &Setup, bin: &[u32], band: Band<'_>) -> usize {
-    super::raster::draw_band_any::<true>(setup, bin, band)
+    super::visibility::draw_band_any::<true>(setup, bin, band)
 }
 
 /// The attributes of triangles `ts` (a chunk) into `out`, through the copy `copy` compiled
@@ -178,7 +178,7 @@ fn resolve_band_avx2(band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragm
     super::resolve::resolve_band_any::<true>(band, px, frags)
 }
 
-/// `raster::fill_span` in AVX2 registers. The blocks are aligned to multiples of [`super::raster::LANES`]
+/// `raster::fill_span` in AVX2 registers. The blocks are aligned to multiples of [`super::visibility::LANES`]
 /// pixels in the band, so that a block's loads meet earlier stores of the same block
 /// whole; lanes outside the span are masked off, and a block where no lane passes the
 /// depth test is not stored at all (a closed surface's back faces, drawn last, mostly
@@ -205,7 +205,7 @@ pub(super) fn fill_span_avx2(ti: u32, plane: RowPlane, band: &mut Band<'_>, at: 
         let (Some(d), Some(r)) = blocks else {
             // The band's last pixels, past its last whole block: one at a time.
             for k in i.max(at) - at..n {
-                super::raster::fill_one(ti, plane, band, at, k);
+                super::visibility::fill_one(ti, plane, band, at, k);
             }
             return;
         };

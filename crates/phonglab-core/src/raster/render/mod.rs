@@ -19,10 +19,10 @@
 //!    with the face's normal taken from the screen derivatives).
 
 pub mod copies;
-pub mod raster;
 pub mod resolve;
 pub mod setup;
 pub mod vertices;
+pub mod visibility;
 pub mod window;
 
 use glam::DMat4;
@@ -31,8 +31,8 @@ use crate::equation::lighting::EvalOptions;
 use crate::mesh::Mesh;
 use crate::model::error::SceneError;
 use crate::model::scene::Scene;
-use crate::model::view::{FlatNormal, Shading};
-use crate::specialise::specialised::Lighter;
+use crate::model::view::ShadingMode;
+use crate::specialise::lighter::Lighter;
 
 pub use crate::model::transform::perspective;
 
@@ -47,10 +47,8 @@ pub struct Job<'a> {
     /// scene.eye_from_object()`; the Phong demo draws with its spin alone and lights in
     /// object space, so the two are separate.
     pub clip_from_object: DMat4,
-    /// Flat, Gouraud or Phong.
-    pub shading: Shading,
-    /// Flat shading's normal: per face, or per fragment from the screen derivatives.
-    pub flat_normal: FlatNormal,
+    /// Gouraud, Phong, or Flat per face or from the screen derivatives.
+    pub mode: ShadingMode,
     /// Colour of uncovered pixels (linear, as written).
     pub background: [f32; 3],
     /// Skip triangles facing away (OpenGL's GL_CULL_FACE with GL_BACK).
@@ -172,11 +170,11 @@ impl Renderer {
         self.setup.run(job, &self.vertices, lighter, width, height);
         let t_setup = lap();
         // Binning is serial; the other thread sets up the triangles' attributes meanwhile.
-        let bands = height.div_ceil(raster::BAND);
+        let bands = height.div_ceil(visibility::BAND);
         let (setup, keep) = (&self.setup, self.keep_visibility);
         let (image, bins, vertices, scratch) = (&mut self.image, &mut self.bins, &self.vertices, &mut self.scratch);
         let ((), prepared) = rayon::join(
-            || raster::bin(setup, width, height, keep, image, bins),
+            || visibility::bin(setup, width, height, keep, image, bins),
             || resolve::prepare(job, vertices, setup, scratch, bands),
         );
         let (lit, [raster_share, resolve_share]) =
@@ -188,7 +186,7 @@ impl Renderer {
             stage_ms: [t_vertices, t_setup, t_raster, t_resolve],
             triangles: job.mesh.triangle_count(),
             rasterised: self.setup.tris.len(),
-            evaluations: evaluations + if job.shading == Shading::Gouraud { self.vertices.eye.len() } else { 0 },
+            evaluations: evaluations + if job.mode == ShadingMode::Gouraud { self.vertices.eye.len() } else { 0 },
         };
         Ok((&self.image, stats))
     }
@@ -209,8 +207,8 @@ fn draw_and_shade(
     bins: &[Vec<u32>],
 ) -> (usize, [f64; 2]) {
     use rayon::prelude::*;
-    let (width, rows) = (image.width, image.width * raster::BAND);
-    let bands = image.height.div_ceil(raster::BAND);
+    let (width, rows) = (image.width, image.width * visibility::BAND);
+    let bands = image.height.div_ceil(visibility::BAND);
     let (shared, fragments) = resolve::split(scratch);
     let mut kept: Vec<Option<&mut [u32]>> = match image.raster.is_empty() {
         true => (0..bands).map(|_| None).collect(),
@@ -225,13 +223,13 @@ fn draw_and_shade(
         .enumerate()
         .map(|(b, (((rgba, bin), frags), kept))| {
             let (px, _) = rgba.as_chunks_mut::<4>();
-            raster::with_band_buffer(px.len(), |depth, raster| {
+            visibility::with_band_buffer(px.len(), |depth, raster| {
                 let start = web_time::Instant::now();
-                let y_start = b * raster::BAND;
+                let y_start = b * visibility::BAND;
                 copies::draw_band(
                     setup,
                     bin,
-                    raster::Band { y_start: y_start as i32, width, depth, raster: &mut *raster },
+                    visibility::Band { y_start: y_start as i32, width, depth, raster: &mut *raster },
                 );
                 let drawn = web_time::Instant::now();
                 let input = resolve::BandInput {
@@ -278,11 +276,11 @@ impl Renderer {
             return None;
         }
         let r = if img.raster.is_empty() {
-            let b = y / raster::BAND;
-            let (y_start, band_rows) = (b * raster::BAND, raster::BAND.min(img.height - b * raster::BAND));
+            let b = y / visibility::BAND;
+            let (y_start, band_rows) = (b * visibility::BAND, visibility::BAND.min(img.height - b * visibility::BAND));
             let bin = self.bins.get(b)?;
-            raster::with_band_buffer(band_rows * img.width, |depth, tri| {
-                let band = raster::Band { y_start: y_start as i32, width: img.width, depth, raster: &mut *tri };
+            visibility::with_band_buffer(band_rows * img.width, |depth, tri| {
+                let band = visibility::Band { y_start: y_start as i32, width: img.width, depth, raster: &mut *tri };
                 copies::draw_band(&self.setup, bin, band);
                 tri.get((y - y_start) * img.width + x).copied()
             })?
@@ -319,6 +317,7 @@ mod tests {
     use super::*;
     use crate::mesh::{sphere, teapot};
     use crate::model::presets::bench_scene;
+    use crate::model::view::{FlatNormal, Shading};
     use crate::raster::shaded::bench_job;
 
     /// Every compiled copy of the resolve this processor can run (portable, AVX2, AVX-512)
@@ -339,7 +338,7 @@ mod tests {
         ];
         let mut copies_run = 0;
         for (scene, mesh, shading, flat_normal) in cases {
-            let job = Job { flat_normal, ..bench_job(&scene, mesh, shading) };
+            let job = Job { mode: ShadingMode::of(shading, flat_normal), ..bench_job(&scene, mesh, shading) };
             // Wide enough for a band to take more than one batch of Phong fragments; 101
             // rows, so the last band is a short one.
             let (w, h) = (211, 101);
@@ -347,17 +346,17 @@ mod tests {
             r.keep_visibility(true);
             let image = r.render(&job, w, h).unwrap().0.clone();
             let lighter = r.lighter.as_ref().unwrap();
-            let bands = h.div_ceil(raster::BAND);
+            let bands = h.div_ceil(visibility::BAND);
             let prepared = resolve::prepare(&job, &r.vertices, &r.setup, &mut r.scratch, bands);
             let (shared, fragments) = resolve::split(&mut r.scratch);
             for (b, frags) in fragments.iter_mut().enumerate().take(bands) {
-                let rows = b * raster::BAND * w..((b + 1) * raster::BAND * w).min(w * h);
+                let rows = b * visibility::BAND * w..((b + 1) * visibility::BAND * w).min(w * h);
                 let want = &image.rgba[rows.start * 4..rows.end * 4];
                 let mut shaded = Vec::new();
                 for copy in [copies::Compiled::Portable, copies::Compiled::Avx2, copies::Compiled::Avx512] {
                     let mut px = vec![[0u8; 4]; rows.len()];
                     let raster = &image.raster[rows.clone()];
-                    let y0 = b * raster::BAND;
+                    let y0 = b * visibility::BAND;
                     let input = resolve::BandInput {
                         job: &job,
                         setup: &r.setup,

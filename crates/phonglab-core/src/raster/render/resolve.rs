@@ -28,12 +28,12 @@
 use glam::Vec3;
 use rayon::prelude::*;
 
-use super::raster::{ScreenBarycentrics, barycentric_steps};
 use super::setup::{RasterTri, SUBPIXEL_BITS, Setup};
 use super::vertices::Vertices;
+use super::visibility::{ScreenBarycentrics, barycentric_steps};
 use super::{Job, NO_TRIANGLE};
-use crate::model::view::{FlatNormal, Shading};
-use crate::specialise::specialised::{EyeArrays, Lighter};
+use crate::model::view::ShadingMode;
+use crate::specialise::lighter::{EyeArrays, Lighter};
 
 /// Per-band buffers of Phong fragments, and each rasterised triangle's attributes at its
 /// three (clipped) vertices, divided by w.
@@ -119,16 +119,18 @@ pub(super) fn attributes_chunk_any(job: &Job<'_>, verts: &Vertices, ts: &[Raster
     };
     let Attributes { edges, colors, pos, nrm } = out;
     for (i, t) in ts.iter().enumerate() {
-        match job.shading {
-            Shading::Gouraud => colors[i] = ColorPlanes::new(t, color(t)),
-            Shading::Phong => {
+        match job.mode {
+            ShadingMode::Gouraud => colors[i] = ColorPlanes::new(t, color(t)),
+            ShadingMode::Phong => {
                 edges[i] = ScreenBarycentrics::new(t);
                 (pos[i], nrm[i]) = (blend3(t, &verts.eye), blend3(t, &verts.normal));
             }
-            Shading::Flat => {
+            ShadingMode::FlatDerivatives => {
                 edges[i] = ScreenBarycentrics::new(t);
                 pos[i] = blend3(t, &verts.eye);
             }
+            // One colour a face, from setup: no attributes.
+            ShadingMode::FlatFace => {}
         }
     }
 }
@@ -329,14 +331,13 @@ pub struct Prepared {
 pub fn prepare(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: &mut Scratch, bands: usize) -> Prepared {
     let bg = job.background.map(to_u8);
     // Shadings that light each pixel: Phong, and Flat with the demo's derivative normals.
-    let per_pixel = job.shading == Shading::Phong
-        || (job.shading == Shading::Flat && job.flat_normal == FlatNormal::ScreenDerivatives);
+    let per_pixel = job.mode.per_fragment();
     scratch.bands.resize_with(bands, Fragments::default);
-    if job.shading != Shading::Flat || per_pixel {
+    if job.mode != ShadingMode::FlatFace {
         triangle_attributes(job, verts, setup, scratch);
     }
     // Flat: each face's colour converted to 8 bits once.
-    let face8: [Vec<[u8; 4]>; 2] = if job.shading == Shading::Flat && !per_pixel {
+    let face8: [Vec<[u8; 4]>; 2] = if job.mode == ShadingMode::FlatFace {
         [0, 1].map(|side| setup.face_color[side].iter().map(|c| c.map(to_u8)).collect())
     } else {
         [Vec::new(), Vec::new()]
@@ -537,14 +538,11 @@ pub(super) fn resolve_band_any<const AVX2: bool>(
             covered += len;
             let t = &setup.tris[r as usize];
             let side = (t.back && two) as usize;
-            if job.shading == Shading::Flat && !per_pixel {
-                fill_px(&mut px_row[run.x..run.x + len], p.face8[side][t.orig as usize]);
-                continue;
-            }
             let r = r as usize;
-            match job.shading {
-                Shading::Gouraud => gouraud_run::<AVX2>(&tri_color[r], &run, px_row),
-                Shading::Phong => {
+            match job.mode {
+                ShadingMode::FlatFace => fill_px(&mut px_row[run.x..run.x + len], p.face8[side][t.orig as usize]),
+                ShadingMode::Gouraud => gouraud_run::<AVX2>(&tri_color[r], &run, px_row),
+                ShadingMode::Phong => {
                     let edges = shared.tri_edges[r].row(run.x, run.y);
                     let (pw, nw) = (&tri_pos[r], &tri_nrm[r]);
                     for (k0, _) in run.blocks() {
@@ -554,7 +552,7 @@ pub(super) fn resolve_band_any<const AVX2: bool>(
                     }
                     m = run.fragments(frags, m, side == 1);
                 }
-                Shading::Flat => {
+                ShadingMode::FlatDerivatives => {
                     // The demo's Flat: the face normal, from the screen derivatives.
                     // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
                     let n = setup.face_normal[t.orig as usize];
@@ -568,12 +566,12 @@ pub(super) fn resolve_band_any<const AVX2: bool>(
         // Light the fragments of the rows so far once there are enough of them, while they
         // are still in the core's nearest caches.
         if per_pixel && m >= BATCH {
-            light_fragments(job.shading, lighter, two, frags, m, px);
+            light_fragments(job.mode, lighter, two, frags, m, px);
             (lit, m) = (lit + m, 0);
         }
     }
     if per_pixel && m > 0 {
-        light_fragments(job.shading, lighter, two, frags, m, px);
+        light_fragments(job.mode, lighter, two, frags, m, px);
         lit += m;
     }
     Shaded { covered, lit }
@@ -629,7 +627,7 @@ fn flat_fragments(
 }
 
 /// Fragments lit in one batch, at least (whole rows are gathered first): enough for the
-/// lighting's chunks ([`CHUNK`](crate::specialise::specialised::CHUNK), 64) to run full, few enough
+/// lighting's chunks ([`CHUNK`](crate::specialise::lighter::CHUNK), 64) to run full, few enough
 /// that the fragments, their colours and their pixels stay in the core's nearest caches (a
 /// whole band's, at 1024², did not).
 const BATCH: usize = 1024;
@@ -638,7 +636,7 @@ const BATCH: usize = 1024;
 /// (the band's); then clears the runs, for the next batch.
 #[inline(always)]
 fn light_fragments(
-    shading: Shading,
+    mode: ShadingMode,
     lighter: &Lighter,
     two: bool,
     frags: &mut Fragments,
@@ -651,7 +649,7 @@ fn light_fragments(
     let arrays = EyeArrays { pos: frags.pos.each_ref().map(|a| &a[..m]), nrm: frags.nrm.each_ref().map(|a| &a[..m]) };
     // Phong's interpolated normals are renormalised inside (in vectorised chunks); the
     // Flat face normals are unit already.
-    lighter.light_arrays_eye_sum(arrays, shading == Shading::Phong, &mut frags.front_out[..m], back_out);
+    lighter.light_arrays_eye_sum(arrays, mode == ShadingMode::Phong, &mut frags.front_out[..m], back_out);
     // Run by run: consecutive fragments to consecutive pixels, channel by channel (a
     // loop the compiler vectorises).
     for run in &frags.runs {
@@ -687,11 +685,10 @@ impl Run {
 
 /// The lighting evaluations a frame made in the resolve stage, given the fragments lit.
 pub fn evaluations(job: &Job<'_>, fragments: usize) -> usize {
-    match job.shading {
-        Shading::Phong => fragments,
-        Shading::Flat if job.flat_normal == FlatNormal::ScreenDerivatives => fragments,
-        Shading::Flat => job.mesh.triangles.len(),
-        Shading::Gouraud => 0,
+    match job.mode {
+        ShadingMode::Phong | ShadingMode::FlatDerivatives => fragments,
+        ShadingMode::FlatFace => job.mesh.triangles.len(),
+        ShadingMode::Gouraud => 0,
     }
 }
 
@@ -718,7 +715,7 @@ mod tests {
         let (sphere, teapot) = (sphere::glu_sphere(1.0, 50, 50), teapot::glut_teapot(0.8, 7));
         let mut compared = 0;
         for (scene, mesh) in [(bench_scene(21), &sphere), (two_sided, &teapot)] {
-            for shading in [Shading::Gouraud, Shading::Phong, Shading::Flat] {
+            for shading in crate::model::view::Shading::ALL {
                 let job = bench_job(&scene, mesh, shading);
                 let mut r = super::super::Renderer::new();
                 r.render(&job, 211, 101).unwrap();

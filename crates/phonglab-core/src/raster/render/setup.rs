@@ -11,8 +11,8 @@ use rayon::prelude::*;
 
 use super::Job;
 use super::vertices::Vertices;
-use crate::model::view::{FlatNormal, Shading};
-use crate::specialise::specialised::Lighter;
+use crate::model::view::ShadingMode;
+use crate::specialise::lighter::Lighter;
 
 pub use super::window::SUBPIXEL_BITS;
 use super::window::{ONE, WindowVert, to_window};
@@ -250,14 +250,14 @@ impl Setup {
         }
         places.into_par_iter().zip(self.per_face.par_iter()).for_each(|(place, v)| place.copy_from_slice(v));
 
-        if job.shading == Shading::Flat && job.flat_normal == FlatNormal::ScreenDerivatives {
+        if job.mode == ShadingMode::FlatDerivatives {
             // Lit per fragment (resolve); here only each face's plane normal.
             self.face_normal.clear();
             self.face_normal.extend(tris.iter().map(|t| {
                 let [a, b, c] = t.map(|i| verts.eye[i as usize]);
                 face_normal(a, b, c)
             }));
-        } else if job.shading == Shading::Flat {
+        } else if job.mode == ShadingMode::FlatFace {
             // One evaluation per face: at its centroid, with its geometric normal.
             let (mut pos, mut nrm) = (Vec::with_capacity(tris.len()), Vec::with_capacity(tris.len()));
             for t in tris {

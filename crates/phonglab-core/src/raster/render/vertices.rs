@@ -7,8 +7,8 @@ use super::Job;
 use super::copies::window_vertices;
 use super::window::WindowVert;
 use crate::model::transform::NormalMatrix;
-use crate::model::view::Shading;
-use crate::specialise::specialised::{Lighter, Lit};
+use crate::model::view::ShadingMode;
+use crate::specialise::lighter::{Lighter, Lit};
 
 /// Per-vertex results of stage 1.
 #[derive(Default)]
@@ -62,7 +62,7 @@ impl Vertices {
         const GRAIN: usize = 512;
         // One pass over chunks of vertices on both threads: transforms and, for Gouraud, the
         // lighting and each side's colour (one fork and join a frame for the whole stage).
-        let gouraud = job.shading == Shading::Gouraud;
+        let gouraud = job.mode == ShadingMode::Gouraud;
         let two = job.scene.light_model.two_sided;
         let clamps = job.scene.rules.clamps_vertex_colors();
         let m = if gouraud { n } else { 0 };
