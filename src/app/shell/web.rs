@@ -240,7 +240,7 @@ impl BenchPicture {
             if let Some(e) = self.error.lock().unwrap_or_else(|e| e.into_inner()).clone() {
                 return Err(e);
             }
-            let shader = crate::paint::gpu::wgsl_for(job.scene, job.options, job.shading)?;
+            let shader = crate::paint::gpu::wgsl_for(job.scene, job.options, job.mode.shading())?;
             let uniforms = crate::paint::gpu::uniform_bytes(&shader.uniforms, job.scene, &job.clip_from_object)?;
             let picture = crate::app::panels::shaded::gpu::GpuImage {
                 slot: u64::MAX,
