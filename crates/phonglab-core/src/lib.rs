@@ -25,14 +25,15 @@
 //! | 9 | export: the student's own code, and back | `export::notebook`, `export::pyopengl`, `export::openframeworks`, `export::read_python` |
 //! | 8 | teach: for the classroom; study: what accuracy costs, the benchmark timed | [`exercise`], [`quiz`], [`shader`]; [`cost`], [`bench`](mod@bench) |
 //! | 7 | raster: the CPU renderer | [`render`], [`shaded`] |
-//! | 6 | specialise: only the stages a scene needs | [`plan`], [`lighter`], [`effects`] (the plan in words) |
+//! | 6 | specialise: only the stages a scene needs | [`plan`], [`lighter`], [`batch`] (its ways in), [`effects`] (the plan in words) |
 //! | 5 | formats: text in and out, ready-made documents | [`document`], [`library`], [`glref`], [`escape`] (user text for each language written) |
 //! | 4 | equation: the lighting equation and its worked calculation | [`lighting`], [`breakdown`], [`explain`], [`validate`] |
 //! | 3 | model: what is lit | [`scene`], [`rules`], [`materials`], [`camera`], [`transform`], [`view`], [`presets`], [`error`] |
 //! | 2 | mesh: the objects | [`mesh`] (`sphere`, `cylinder`, `teapot`, `obj`) |
-//! | 1 | numerics: where floating point needs care | [`robust`], [`real`], [`exact_pow`], [`pow`], [`strict`], [`typed_number`], `numerics::cpu` |
-//! | 0 | locale: the user's language and decimal mark | [`locale`] |
+//! | 1 | numerics: where floating point needs care | [`robust`], [`real`], [`exact_pow`], [`pow`], [`strict`], [`typed_number`] |
+//! | 0 | locale: the user's language and decimal mark; cpu: what the processor can do, as proofs | [`locale`]; [`cpu`] |
 
+pub mod cpu;
 pub mod equation;
 pub mod export;
 pub mod formats;
@@ -51,7 +52,7 @@ pub use formats::{document, escape, glref, library};
 pub use model::{camera, error, materials, presets, rules, scene, transform, view};
 pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
 pub use raster::{render, shaded};
-pub use specialise::{effects, lighter, plan};
+pub use specialise::{batch, effects, lighter, plan};
 pub use study::{bench, cost};
 pub use teach::{exercise, quiz, shader};
 

@@ -23,10 +23,16 @@
 //! `std::arch` intrinsics, inline assembly) lives in the `copies` modules, apart from the
 //! scalar code a student reads, as glam keeps its `sse2/` apart.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
-const ORDER: [(&str, u32); 11] = [
+mod support {
+    pub mod module_graph;
+}
+use support::module_graph;
+
+const ORDER: [(&str, u32); 12] = [
     ("locale", 0),
+    ("cpu", 0),
     ("numerics", 1),
     ("mesh", 2),
     ("model", 3),
@@ -166,4 +172,43 @@ fn processor_specific_code_lives_in_the_copies_modules() {
 fn the_check_sees_an_intrinsic_and_not_a_comment() {
     let text = "let a = 1;\n#[target_feature(enable = \"avx2\")]\nlet v = _mm256_setzero_ps();\n// _mm512 in a comment";
     assert_eq!(processor_specific(text), vec![2, 3]);
+}
+
+fn core_src() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
+}
+
+/// No file names a file that names it back, however far round: within a group too (the
+/// renderer's stages never call back into their SIMD copies; the copies and the driver
+/// name the stages).
+#[test]
+fn no_file_names_a_file_that_names_it_back() {
+    let g = module_graph::graph(&core_src());
+    assert!(g.len() > 60, "only {} files read", g.len());
+    let found = module_graph::file_circles(&core_src(), &g);
+    assert!(found.is_empty(), "circles between files:\n{}", found.join("\n"));
+}
+
+#[test]
+fn no_folder_names_a_folder_that_names_it_back() {
+    let found = module_graph::folder_circles(&core_src(), &module_graph::graph(&core_src()));
+    assert!(found.is_empty(), "circles between folders:\n{}", found.join("\n"));
+}
+
+/// The graph sees a circle where there is one: the renderer's driver and its copies name
+/// each other's files in a made-up crate.
+#[test]
+fn the_circle_check_sees_a_circle() {
+    let dir = std::env::temp_dir().join(format!("phonglab-layers-{}", std::process::id()));
+    let render = dir.join("raster/render");
+    std::fs::create_dir_all(&render).unwrap();
+    std::fs::write(dir.join("lib.rs"), "pub mod raster;\n").unwrap();
+    std::fs::write(dir.join("raster/mod.rs"), "pub mod render;\n").unwrap();
+    std::fs::write(render.join("mod.rs"), "mod copies;\nmod resolve;\n").unwrap();
+    std::fs::write(render.join("resolve.rs"), "use super::copies::differ8;\n").unwrap();
+    std::fs::write(render.join("copies.rs"), "fn f() { super::resolve::run(); }\n").unwrap();
+    let found = module_graph::file_circles(&dir, &module_graph::graph(&dir));
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(found[0].contains("copies.rs") && found[0].contains("resolve.rs"), "{found:?}");
 }

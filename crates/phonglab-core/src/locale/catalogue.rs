@@ -5,7 +5,7 @@ use std::sync::OnceLock;
 use fluent_bundle::concurrent::FluentBundle;
 use fluent_bundle::{FluentArgs, FluentResource, FluentValue};
 
-use super::{Lang, current};
+use super::lang::{Lang, current};
 
 /// The catalogues' text, in [`Lang::ALL`]'s order.
 const SOURCES: [&str; 3] =

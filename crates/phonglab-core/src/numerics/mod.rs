@@ -1,7 +1,6 @@
 //! Where floating point needs care: compensated sums, scaled lengths, zero-safe products, the powers.
 
 pub mod copies;
-pub mod cpu;
 pub mod exact_pow;
 pub mod pow;
 pub mod real;

@@ -7,7 +7,7 @@
 //!    drawn); for Gouraud, its colour.
 //! 2. [`setup`]: each triangle clipped (near and far planes, and x/y beyond a guard band),
 //!    its facing decided, back faces culled if asked, snapped to fixed point.
-//! 3. [`raster`]: triangles into a visibility buffer (depth, triangle), in horizontal
+//! 3. [`visibility`]: triangles into a visibility buffer (depth, triangle), in horizontal
 //!    bands on all cores, each band in a buffer of its thread's own that stays in cache;
 //!    top-left fill rule, so shared edges are drawn once; back faces hidden whole behind
 //!    the band's front faces skipped.
@@ -27,6 +27,7 @@ pub mod window;
 
 use glam::DMat4;
 
+use crate::cpu::Isa;
 use crate::equation::lighting::EvalOptions;
 use crate::mesh::Mesh;
 use crate::model::error::SceneError;
@@ -115,9 +116,10 @@ pub struct Stats {
 }
 
 /// The renderer: keeps its buffers and its specialised lighting plan from frame to frame
-/// (re-planned only when the scene's key changes).
-#[derive(Default)]
+/// (re-planned only when the scene's key changes), and runs the copies of its stages
+/// compiled for this processor ([`Isa::best`], detected once).
 pub struct Renderer {
+    isa: Isa,
     lighter: Option<Lighter>,
     vertices: vertices::Vertices,
     setup: setup::Setup,
@@ -127,10 +129,31 @@ pub struct Renderer {
     keep_visibility: bool,
 }
 
+impl Default for Renderer {
+    fn default() -> Self {
+        Self {
+            isa: Isa::best(),
+            lighter: None,
+            vertices: Default::default(),
+            setup: Default::default(),
+            image: Default::default(),
+            scratch: Default::default(),
+            bins: Vec::new(),
+            keep_visibility: false,
+        }
+    }
+}
+
 impl Renderer {
     /// A renderer with empty buffers.
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// A renderer that runs the copies `isa` (for comparing them: every copy gives the
+    /// same bits); `isa` is a proof that this processor runs them.
+    pub fn with_isa(isa: Isa) -> Self {
+        Self { isa, ..Self::default() }
     }
 
     /// Keep each frame's visibility (the triangle at every pixel) in its image, for
@@ -165,9 +188,12 @@ impl Renderer {
             clock = now;
             ms
         };
-        self.vertices.run(job, lighter, width, height);
+        let isa = self.isa;
+        self.vertices.run(job, lighter, |clip, out| copies::window_vertices(isa, clip, out, width, height));
         let t_vertices = lap();
-        self.setup.run(job, &self.vertices, lighter, width, height);
+        let verts = &self.vertices;
+        self.setup
+            .run(job, verts, lighter, |faces, out| copies::setup_faces(isa, job, verts, faces, width, height, out));
         let t_setup = lap();
         // Binning is serial; the other thread sets up the triangles' attributes meanwhile.
         let bands = height.div_ceil(visibility::BAND);
@@ -175,10 +201,15 @@ impl Renderer {
         let (image, bins, vertices, scratch) = (&mut self.image, &mut self.bins, &self.vertices, &mut self.scratch);
         let ((), prepared) = rayon::join(
             || visibility::bin(setup, width, height, keep, image, bins),
-            || resolve::prepare(job, vertices, setup, scratch, bands),
+            || {
+                let attributes = |ts: &[setup::RasterTri], out: resolve::Attributes<'_>| {
+                    copies::attributes_chunk(isa, job, vertices, ts, out)
+                };
+                resolve::prepare(job, setup, scratch, bands, attributes)
+            },
         );
         let (lit, [raster_share, resolve_share]) =
-            draw_and_shade(job, &self.setup, lighter, &prepared, &mut self.image, &mut self.scratch, &self.bins);
+            draw_and_shade(isa, job, &self.setup, lighter, &prepared, &mut self.image, &mut self.scratch, &self.bins);
         let t_bands = lap();
         let (t_raster, t_resolve) = (t_bands * raster_share, t_bands * resolve_share);
         let evaluations = resolve::evaluations(job, lit);
@@ -193,11 +224,13 @@ impl Renderer {
 }
 
 /// Stages 3 and 4, band by band on all cores: each band is drawn into its thread's own
-/// visibility buffer ([`raster::with_band_buffer`]) and then shaded at once, while the
+/// visibility buffer ([`visibility::with_band_buffer`]) and then shaded at once, while the
 /// buffer is still in the core's cache; the buffer is copied into the image only if the
 /// visibility is kept. Returns the fragments lit and the shares of the bands' time spent
 /// drawing and shading; sets the image's coverage.
+#[allow(clippy::too_many_arguments)]
 fn draw_and_shade(
+    isa: Isa,
     job: &Job<'_>,
     setup: &setup::Setup,
     lighter: &Lighter,
@@ -227,6 +260,7 @@ fn draw_and_shade(
                 let start = web_time::Instant::now();
                 let y_start = b * visibility::BAND;
                 copies::draw_band(
+                    isa,
                     setup,
                     bin,
                     visibility::Band { y_start: y_start as i32, width, depth, raster: &mut *raster },
@@ -242,7 +276,7 @@ fn draw_and_shade(
                     y0: y_start,
                     width,
                 };
-                let shaded = copies::resolve_band(&input, px, frags);
+                let shaded = copies::resolve_band(isa, &input, px, frags);
                 if let Some(kept) = kept {
                     kept.copy_from_slice(raster);
                 }
@@ -281,7 +315,7 @@ impl Renderer {
             let bin = self.bins.get(b)?;
             visibility::with_band_buffer(band_rows * img.width, |depth, tri| {
                 let band = visibility::Band { y_start: y_start as i32, width: img.width, depth, raster: &mut *tri };
-                copies::draw_band(&self.setup, bin, band);
+                copies::draw_band(self.isa, &self.setup, bin, band);
                 tri.get((y - y_start) * img.width + x).copied()
             })?
         } else {
@@ -347,13 +381,16 @@ mod tests {
             let image = r.render(&job, w, h).unwrap().0.clone();
             let lighter = r.lighter.as_ref().unwrap();
             let bands = h.div_ceil(visibility::BAND);
-            let prepared = resolve::prepare(&job, &r.vertices, &r.setup, &mut r.scratch, bands);
+            let attributes = |ts: &[setup::RasterTri], out: resolve::Attributes<'_>| {
+                copies::attributes_chunk(Isa::Portable, &job, &r.vertices, ts, out)
+            };
+            let prepared = resolve::prepare(&job, &r.setup, &mut r.scratch, bands, attributes);
             let (shared, fragments) = resolve::split(&mut r.scratch);
             for (b, frags) in fragments.iter_mut().enumerate().take(bands) {
                 let rows = b * visibility::BAND * w..((b + 1) * visibility::BAND * w).min(w * h);
                 let want = &image.rgba[rows.start * 4..rows.end * 4];
                 let mut shaded = Vec::new();
-                for copy in [copies::Compiled::Portable, copies::Compiled::Avx2, copies::Compiled::Avx512] {
+                for copy in Isa::all_here() {
                     let mut px = vec![[0u8; 4]; rows.len()];
                     let raster = &image.raster[rows.clone()];
                     let y0 = b * visibility::BAND;
@@ -367,9 +404,7 @@ mod tests {
                         y0,
                         width: w,
                     };
-                    let Some(s) = copies::resolve_band_copy(copy, &input, &mut px, frags) else {
-                        continue;
-                    };
+                    let s = copies::resolve_band(copy, &input, &mut px, frags);
                     assert_eq!(px.as_flattened(), want, "{copy:?}, {shading:?}, band {b}");
                     shaded.push(s);
                     copies_run += 1;
@@ -409,7 +444,7 @@ mod tests {
                 let t = &r.setup.tris[ri as usize];
                 let (x, y) = (i % w, i / w);
                 // Exact screen barycentrics: the integer edge functions over the area.
-                let (wf, _, _) = raster::ScreenBarycentrics::new(t).row(x, y);
+                let (wf, _, _) = visibility::ScreenBarycentrics::new(t).row(x, y);
                 let xy = |k: usize| (t.x[k] as f64, t.y[k] as f64);
                 let ((x0, y0), (x1, y1), (x2, y2)) = (xy(0), xy(1), xy(2));
                 let area = (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0);

@@ -32,6 +32,7 @@ use super::setup::{RasterTri, SUBPIXEL_BITS, Setup};
 use super::vertices::Vertices;
 use super::visibility::{ScreenBarycentrics, barycentric_steps};
 use super::{Job, NO_TRIANGLE};
+use crate::cpu::Portable;
 use crate::model::view::ShadingMode;
 use crate::specialise::lighter::{EyeArrays, Lighter};
 
@@ -66,7 +67,8 @@ fn screen_weights(inv_w: [f32; 3], l: [f32; 2]) -> ([f32; 3], f32) {
 /// computed once per triangle, so a pixel blends three values (or steps planes) instead
 /// of mapping its barycentrics back. One pass over chunks of triangles on both threads
 /// (each result depends on its triangle alone).
-fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: &mut Scratch) {
+/// `attributes` does one chunk (a copy of [`attributes_chunk_any`] for this processor).
+fn triangle_attributes(setup: &Setup, scratch: &mut Scratch, attributes: impl Fn(&[RasterTri], Attributes<'_>) + Sync) {
     const GRAIN: usize = 256;
     // Every array sized to the triangles (growing only on the first frames); only those the
     // shading reads are written.
@@ -75,7 +77,6 @@ fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: 
     scratch.tri_pos.resize(n, [Vec3::ZERO; 3]);
     scratch.tri_nrm.resize(n, [Vec3::ZERO; 3]);
     scratch.tri_edges.resize(n, ScreenBarycentrics::default());
-    let copy = super::copies::Compiled::best();
     setup
         .tris
         .par_chunks(GRAIN)
@@ -84,20 +85,20 @@ fn triangle_attributes(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: 
         .zip(scratch.tri_pos.par_chunks_mut(GRAIN))
         .zip(scratch.tri_nrm.par_chunks_mut(GRAIN))
         .for_each(|((((ts, edges), colors), pos), nrm)| {
-            super::copies::attributes_chunk(copy, job, verts, ts, Attributes { edges, colors, pos, nrm });
+            attributes(ts, Attributes { edges, colors, pos, nrm });
         });
 }
 
 /// Where one chunk of triangles' attributes go ([`triangle_attributes`]).
 pub(super) struct Attributes<'a> {
-    edges: &'a mut [ScreenBarycentrics],
-    colors: &'a mut [ColorPlanes],
-    pos: &'a mut [[Vec3; 3]],
-    nrm: &'a mut [[Vec3; 3]],
+    pub(super) edges: &'a mut [ScreenBarycentrics],
+    pub(super) colors: &'a mut [ColorPlanes],
+    pub(super) pos: &'a mut [[Vec3; 3]],
+    pub(super) nrm: &'a mut [[Vec3; 3]],
 }
 
-/// The attributes of triangles `ts` (a chunk) into `out` (run through
-/// [`super::copies::attributes_chunk`]).
+/// The attributes of triangles `ts` (a chunk) into `out`. (Written once,
+/// `#[inline(always)]`; `copies` compiles it for each processor.)
 #[inline(always)]
 pub(super) fn attributes_chunk_any(job: &Job<'_>, verts: &Vertices, ts: &[RasterTri], out: Attributes<'_>) {
     let tris = &job.mesh.triangles;
@@ -318,7 +319,7 @@ pub(crate) fn original_barycentrics(setup: &Setup, r: u32, x: usize, y: usize) -
     Some(barycentrics(setup, r, l))
 }
 
-/// What every band's resolve shares, computed once per frame ([`prepare`]).
+/// What every band's resolve shares, computed once per frame (`prepare`).
 pub struct Prepared {
     bg: [u8; 4],
     two: bool,
@@ -327,14 +328,21 @@ pub struct Prepared {
     face8: [Vec<[u8; 4]>; 2],
 }
 
-/// The frame's shared resolve state; fills the per-triangle attributes in `scratch`.
-pub fn prepare(job: &Job<'_>, verts: &Vertices, setup: &Setup, scratch: &mut Scratch, bands: usize) -> Prepared {
+/// The frame's shared resolve state; fills the per-triangle attributes in `scratch`, a
+/// chunk at a time through `attributes` (a copy of [`attributes_chunk_any`]).
+pub(super) fn prepare(
+    job: &Job<'_>,
+    setup: &Setup,
+    scratch: &mut Scratch,
+    bands: usize,
+    attributes: impl Fn(&[RasterTri], Attributes<'_>) + Sync,
+) -> Prepared {
     let bg = job.background.map(to_u8);
     // Shadings that light each pixel: Phong, and Flat with the demo's derivative normals.
     let per_pixel = job.mode.per_fragment();
     scratch.bands.resize_with(bands, Fragments::default);
     if job.mode != ShadingMode::FlatFace {
-        triangle_attributes(job, verts, setup, scratch);
+        triangle_attributes(setup, scratch, attributes);
     }
     // Flat: each face's colour converted to 8 bits once.
     let face8: [Vec<[u8; 4]>; 2] = if job.mode == ShadingMode::FlatFace {
@@ -366,19 +374,41 @@ pub struct Shared<'a> {
 }
 
 /// How many entries at the start of `row` (not empty) equal its first: eight compared at
-/// a time (one AVX2 compare and a bit scan), the rest one by one.
+/// a time (`lanes.differ8` and a bit scan), the rest one by one.
 #[inline(always)]
-fn run_length(row: &[u32]) -> usize {
+fn run_length(lanes: impl ResolveLanes, row: &[u32]) -> usize {
     let r = row[0];
     let mut n = 1;
     while let Some(block) = row.get(n..).and_then(|s| s.first_chunk::<8>()) {
-        let differ = super::copies::differ8(block, r);
+        let differ = lanes.differ8(block, r);
         if differ != 0 {
             return n + differ.trailing_zeros() as usize;
         }
         n += 8;
     }
     n + row[n..].iter().position(|&q| q != r).unwrap_or(row.len() - n)
+}
+
+/// How blocks of [`LANES`] pixels are packed to bytes and compared: the portable loops
+/// ([`Portable`]), or a copy's own instructions for the same operations (the AVX2 ones are
+/// in `copies`, for the proof of AVX2). The resolve is written once, generic over it.
+pub(super) trait ResolveLanes: Copy {
+    /// [`rgba8`]'s bytes.
+    fn rgba8(self, ch: &[[f32; LANES]; 4]) -> [u32; LANES];
+    /// One bit per entry of `block` that differs from `r`.
+    fn differ8(self, block: &[u32; 8], r: u32) -> u32;
+}
+
+impl ResolveLanes for Portable {
+    #[inline(always)]
+    fn rgba8(self, ch: &[[f32; LANES]; 4]) -> [u32; LANES] {
+        rgba8(ch)
+    }
+
+    #[inline(always)]
+    fn differ8(self, block: &[u32; 8], r: u32) -> u32 {
+        (0..8).fold(0u32, |m, j| m | (((block[j] != r) as u32) << j))
+    }
 }
 
 /// Sets every pixel of `px` to `c`, eight at a time (32-byte stores; a plain `fill` of
@@ -492,7 +522,7 @@ pub struct BandInput<'a> {
     pub setup: &'a Setup,
     /// The specialised lighting, for per-pixel shading.
     pub lighter: &'a Lighter,
-    /// What [`prepare`] set up for the frame.
+    /// What `prepare` set up for the frame.
     pub p: &'a Prepared,
     /// The per-triangle attributes ([`split`]).
     pub shared: &'a Shared<'a>,
@@ -504,11 +534,13 @@ pub struct BandInput<'a> {
     pub width: usize,
 }
 
-/// One band's pixels: runs of one triangle shaded, Phong's fragments lit (run through
-/// [`super::copies::resolve_band`]).
+/// One band's pixels: runs of one triangle shaded, Phong's fragments lit; `lanes` packs
+/// and compares blocks of pixels ([`ResolveLanes`]). (Written once, `#[inline(always)]`;
+/// `copies` compiles it for each processor.)
 #[inline(always)]
 #[allow(clippy::needless_range_loop)] // lane loops: see `blend`
-pub(super) fn resolve_band_any<const AVX2: bool>(
+pub(super) fn resolve_band_any<L: ResolveLanes>(
+    lanes: L,
     band: &BandInput<'_>,
     px: &mut [[u8; 4]],
     frags: &mut Fragments,
@@ -528,7 +560,7 @@ pub(super) fn resolve_band_any<const AVX2: bool>(
         let mut x = 0;
         while x < r_row.len() {
             let r = r_row[x];
-            let len = run_length(&r_row[x..]);
+            let len = run_length(lanes, &r_row[x..]);
             let run = Run { x, y: y0 + row, at: row * width + x, len };
             x += len;
             if r == NO_TRIANGLE {
@@ -541,7 +573,7 @@ pub(super) fn resolve_band_any<const AVX2: bool>(
             let r = r as usize;
             match job.mode {
                 ShadingMode::FlatFace => fill_px(&mut px_row[run.x..run.x + len], p.face8[side][t.orig as usize]),
-                ShadingMode::Gouraud => gouraud_run::<AVX2>(&tri_color[r], &run, px_row),
+                ShadingMode::Gouraud => gouraud_run(lanes, &tri_color[r], &run, px_row),
                 ShadingMode::Phong => {
                     let edges = shared.tri_edges[r].row(run.x, run.y);
                     let (pw, nw) = (&tri_pos[r], &tri_nrm[r]);
@@ -581,16 +613,11 @@ pub(super) fn resolve_band_any<const AVX2: bool>(
 /// [`LANES`] pixels at a time, packed to bytes, into the run's pixels of `px_row`.
 #[inline(always)]
 #[allow(clippy::needless_range_loop)] // lane loops: see `blend`
-fn gouraud_run<const AVX2: bool>(planes: &ColorPlanes, run: &Run, px_row: &mut [[u8; 4]]) {
+fn gouraud_run(lanes: impl ResolveLanes, planes: &ColorPlanes, run: &Run, px_row: &mut [[u8; 4]]) {
     let (start, step) = planes.row(run.x, run.y);
     for (k0, n) in run.blocks() {
         let ch = gouraud_block(&start, &step, k0);
-        #[cfg(target_arch = "x86_64")]
-        // SAFETY: AVX2 is only instantiated inside resolve_band_avx2 and
-        // resolve_band_avx512, which run only where the processor has AVX2.
-        let rgba = if AVX2 { unsafe { super::copies::rgba8_avx2(&ch) } } else { rgba8(&ch) };
-        #[cfg(not(target_arch = "x86_64"))]
-        let rgba = rgba8(&ch);
+        let rgba = lanes.rgba8(&ch);
         // Whole blocks where the row has room: lanes past the run land on
         // pixels of the row that later runs overwrite.
         let dst = &mut px_row[run.x + k0..];
@@ -664,7 +691,7 @@ fn light_fragments(
     frags.runs.clear();
 }
 
-/// What [`super::copies::resolve_band`] did.
+/// What a band's resolve did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Shaded {
     /// Pixels covered by the mesh.
@@ -697,46 +724,6 @@ mod tests {
     use super::super::setup::RasterTri;
     use super::*;
 
-    /// The attribute pass's AVX2 copy gives the portable copy's bits: every triangle's
-    /// colour planes, edge functions, positions and normals, for each shading, two-sided
-    /// too (the sphere and teapot of the benchmark scene, with clipped triangles among them
-    /// at 211 x 101).
-    #[test]
-    fn the_attribute_copies_agree_bit_for_bit() {
-        use crate::mesh::{sphere, teapot};
-        use crate::model::presets::bench_scene;
-        use crate::raster::shaded::bench_job;
-        #[cfg(target_arch = "x86_64")]
-        if !crate::numerics::cpu::has_avx2_fma() {
-            return;
-        }
-        let mut two_sided = bench_scene(21);
-        two_sided.light_model.two_sided = true;
-        let (sphere, teapot) = (sphere::glu_sphere(1.0, 50, 50), teapot::glut_teapot(0.8, 7));
-        let mut compared = 0;
-        for (scene, mesh) in [(bench_scene(21), &sphere), (two_sided, &teapot)] {
-            for shading in crate::model::view::Shading::ALL {
-                let job = bench_job(&scene, mesh, shading);
-                let mut r = super::super::Renderer::new();
-                r.render(&job, 211, 101).unwrap();
-                let ts = &r.setup.tris;
-                let n = ts.len();
-                use super::super::copies::{Compiled, attributes_chunk};
-                let run = |copy: Compiled| {
-                    let mut edges = vec![ScreenBarycentrics::default(); n];
-                    let mut colors = vec![ColorPlanes::default(); n];
-                    let (mut pos, mut nrm) = (vec![[Vec3::ZERO; 3]; n], vec![[Vec3::ZERO; 3]; n]);
-                    let out = Attributes { edges: &mut edges, colors: &mut colors, pos: &mut pos, nrm: &mut nrm };
-                    attributes_chunk(copy, &job, &r.vertices, ts, out);
-                    format!("{edges:?} {colors:?} {pos:?} {nrm:?}")
-                };
-                assert_eq!(run(Compiled::Portable), run(Compiled::Avx2), "{shading:?}");
-                compared += n;
-            }
-        }
-        assert!(compared > 20_000, "{compared}");
-    }
-
     /// Runs are found whole: the length of the first run of every suffix of rows with
     /// runs of every length from 1 to 40 (across the eight-wide blocks and into the tail).
     #[test]
@@ -753,7 +740,10 @@ mod tests {
             for start in 0..row.len() {
                 let s = &row[start..];
                 let naive = s.iter().position(|&q| q != s[0]).unwrap_or(s.len());
-                assert_eq!(run_length(s), naive, "{s:?}");
+                assert_eq!(run_length(Portable, s), naive, "{s:?}");
+                if let Some(avx2) = crate::cpu::Avx2::detect() {
+                    assert_eq!(run_length(avx2, s), naive, "{s:?}");
+                }
             }
         }
     }
@@ -762,8 +752,7 @@ mod tests {
     /// infinities, huge and tiny, negative, just around each rounding boundary, and random.
     #[test]
     fn avx2_bytes_are_the_portable_bytes() {
-        #[cfg(target_arch = "x86_64")]
-        if crate::numerics::cpu::has_avx2_fma() {
+        if let Some(avx2) = crate::cpu::Avx2::detect() {
             let mut values = vec![
                 f32::NAN,
                 -f32::NAN,
@@ -795,9 +784,7 @@ mod tests {
                 for (i, &v) in block.iter().enumerate() {
                     ch[i % 4][i / 4] = v;
                 }
-                // SAFETY: the CPU has AVX2 (checked above).
-                let fast = unsafe { super::super::copies::rgba8_avx2(&ch) };
-                assert_eq!(fast, rgba8(&ch), "{ch:?}");
+                assert_eq!(avx2.rgba8(&ch), rgba8(&ch), "{ch:?}");
             }
         }
     }

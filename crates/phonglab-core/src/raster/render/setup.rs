@@ -227,14 +227,22 @@ fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bo
 
 impl Setup {
     /// Clips, faces, culls and snaps every triangle of the job; lights faces for Flat.
-    pub fn run(&mut self, job: &Job<'_>, verts: &Vertices, lighter: &Lighter, width: usize, height: usize) {
+    /// `setup_faces` does a chunk of faces into a vector (a copy of `setup_faces` for this
+    /// processor and image, chosen by the caller).
+    pub fn run(
+        &mut self,
+        job: &Job<'_>,
+        verts: &Vertices,
+        lighter: &Lighter,
+        setup_faces: impl Fn(std::ops::Range<usize>, &mut Vec<RasterTri>) + Sync,
+    ) {
         let tris = &job.mesh.triangles;
         const GRAIN: usize = 256;
         let chunks = tris.len().div_ceil(GRAIN);
         self.per_face.resize_with(chunks, Vec::new);
         self.per_face.par_iter_mut().enumerate().for_each(|(k, out)| {
             let faces = k * GRAIN..(k * GRAIN + GRAIN).min(tris.len());
-            super::copies::setup_faces(job, verts, faces, width, height, out);
+            setup_faces(faces, out);
         });
         // Gathered into one array on both threads, each chunk's triangles copied to their
         // place: a serial copy (some 400 KB a frame for the teapot) left the other thread
@@ -282,7 +290,7 @@ impl Setup {
 }
 
 /// Clips, faces, culls and snaps the mesh triangles `faces` into `out` (cleared first).
-/// (Run through [`super::copies::setup_faces`].)
+/// (Written once, `#[inline(always)]`; `copies` compiles it for each processor.)
 #[inline(always)]
 pub(super) fn setup_faces(
     job: &Job<'_>,

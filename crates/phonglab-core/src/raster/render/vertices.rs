@@ -4,7 +4,6 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 use rayon::prelude::*;
 
 use super::Job;
-use super::copies::window_vertices;
 use super::window::WindowVert;
 use crate::model::transform::NormalMatrix;
 use crate::model::view::ShadingMode;
@@ -47,8 +46,15 @@ fn clamped_sum(l: &Lit) -> [f32; 4] {
 }
 
 impl Vertices {
-    /// Transforms the job's mesh for a `width` x `height` image (and lights it for Gouraud).
-    pub fn run(&mut self, job: &Job<'_>, lighter: &Lighter, width: usize, height: usize) {
+    /// Transforms the job's mesh (and lights it for Gouraud); `window_vertices` takes a
+    /// chunk of clip-space positions to the image's window coordinates (a copy of
+    /// [`super::window::window_vertices`] for this processor, chosen by the caller).
+    pub fn run(
+        &mut self,
+        job: &Job<'_>,
+        lighter: &Lighter,
+        window_vertices: impl Fn(&[Vec4], &mut [WindowVert]) + Sync,
+    ) {
         let mesh = job.mesh;
         let n = mesh.positions.len();
         let eye_from_object = job.scene.eye_from_object();
@@ -89,7 +95,7 @@ impl Vertices {
                     clip[i] = clip_from_object * p.extend(1.0);
                     normal[i] = nm * mesh.normals[base + i];
                 }
-                window_vertices(clip, window, width, height);
+                window_vertices(clip, window);
                 let Some((cf, cb)) = gouraud else { return };
                 let r = base..base + eye.len();
                 let (pos, nrm) = (&mesh.positions[r.clone()], &mesh.normals[r]);

@@ -20,6 +20,22 @@
 
 use super::setup::{RasterTri, SUBPIXEL_BITS, Setup};
 use super::{Image, NO_TRIANGLE};
+use crate::cpu::Portable;
+
+/// How a row's span of pixels is filled: the portable loop ([`Portable`]), or a copy's own
+/// instructions for the same operations (the AVX2 one is in `copies`, for the proof of
+/// AVX2). The raster is written once, generic over it.
+pub(super) trait SpanFill: Copy {
+    /// Fills pixels `at..at + n` of `band` with triangle `ti` where it passes the depth test.
+    fn fill_span(self, ti: u32, plane: RowPlane, band: &mut Band<'_>, at: usize, n: usize);
+}
+
+impl SpanFill for Portable {
+    #[inline(always)]
+    fn fill_span(self, ti: u32, plane: RowPlane, band: &mut Band<'_>, at: usize, n: usize) {
+        fill_span(ti, plane, band, at, n);
+    }
+}
 
 /// Rows per band.
 pub const BAND: usize = 16;
@@ -119,8 +135,8 @@ pub struct Band<'a> {
 }
 
 /// Clears a band and draws the triangles `bin` of `setup` into it (front faces first);
-/// returns the number of back faces skipped as hidden whole. `AVX2`: fill blocks with AVX2
-/// instructions (only ever instantiated inside the AVX2 copy, [`super::copies::draw_band`]).
+/// returns the number of back faces skipped as hidden whole. `lanes` fills each row's span
+/// ([`SpanFill`]).
 ///
 /// The front faces are drawn first ([`bin`] puts them first). Before the back faces, the
 /// band's farthest depth in each column tile is noted ([`Tiles`]), and a back face whose
@@ -128,12 +144,12 @@ pub struct Band<'a> {
 /// no pixel of it could pass the depth test (a hierarchical depth test, as GPUs make).
 /// Back faces only ever bring depths nearer, so the noted depths stay an upper bound.
 #[inline(always)]
-pub(super) fn draw_band_any<const AVX2: bool>(setup: &Setup, bin: &[u32], mut band: Band<'_>) -> usize {
+pub(super) fn draw_band_any<L: SpanFill>(lanes: L, setup: &Setup, bin: &[u32], mut band: Band<'_>) -> usize {
     band.depth.fill(1.0);
     band.raster.fill(NO_TRIANGLE);
     let front = bin.partition_point(|&ti| !setup.tris[ti as usize].back);
     for &ti in &bin[..front] {
-        draw::<AVX2>(&setup.tris[ti as usize], ti, &mut band);
+        draw(lanes, &setup.tris[ti as usize], ti, &mut band);
     }
     if front == bin.len() {
         return 0;
@@ -145,7 +161,7 @@ pub(super) fn draw_band_any<const AVX2: bool>(setup: &Setup, bin: &[u32], mut ba
         if tiles.hides(t) {
             hidden += 1;
         } else {
-            draw::<AVX2>(t, ti, &mut band);
+            draw(lanes, t, ti, &mut band);
         }
     }
     hidden
@@ -305,7 +321,7 @@ pub(super) fn fill_one(ti: u32, plane: RowPlane, band: &mut Band<'_>, at: usize,
 }
 
 #[inline(always)]
-fn draw<const AVX2: bool>(t: &RasterTri, ti: u32, band: &mut Band<'_>) {
+fn draw<L: SpanFill>(lanes: L, t: &RasterTri, ti: u32, band: &mut Band<'_>) {
     let (width, y_start) = (band.width, band.y_start);
     let y_end = y_start + (band.depth.len() / width) as i32 - 1;
     let (x, y) = (t.x, t.y);
@@ -343,16 +359,7 @@ fn draw<const AVX2: bool>(t: &RasterTri, ti: u32, band: &mut Band<'_>) {
             let l2 = ((row_w[2] + step_x[2] * lo) as f64 * inv_area) as f32;
             let plane = RowPlane { l1, l2, step1, step2, z0, dz1, dz2 };
             let (at, n) = (row + lo as usize, (hi - lo + 1) as usize);
-            if AVX2 {
-                // SAFETY: AVX2 is only instantiated inside draw_band_avx2, which runs only
-                // where the processor has AVX2.
-                #[cfg(target_arch = "x86_64")]
-                unsafe {
-                    super::copies::fill_span_avx2(ti, plane, band, at, n)
-                };
-            } else {
-                fill_span(ti, plane, band, at, n);
-            }
+            lanes.fill_span(ti, plane, band, at, n);
         }
         for k in 0..3 {
             row_w[k] += step_y[k];
@@ -468,14 +475,11 @@ mod tests {
     /// [`draw_band`] with the portable loop or (`avx2`, only where [`avx2_here`]) the AVX2
     /// one; returns the back faces skipped.
     fn draw_band_with(setup: &Setup, bin: &[u32], band: Band<'_>, avx2: bool) -> usize {
-        #[cfg(target_arch = "x86_64")]
         if avx2 {
-            assert!(avx2_here(), "the AVX2 raster asked for where it cannot run");
-            // SAFETY: the CPU has AVX2 and FMA (asserted just above).
-            return unsafe { super::super::copies::draw_band_avx2(setup, bin, band) };
+            let proof = crate::cpu::Avx2::detect().expect("the AVX2 raster asked for where it cannot run");
+            return draw_band_any(proof, setup, bin, band);
         }
-        assert!(!avx2, "the AVX2 raster asked for off x86-64");
-        draw_band_any::<false>(setup, bin, band)
+        draw_band_any(Portable, setup, bin, band)
     }
 
     /// Draws `tris` into one band of `w` x `h` with the portable loop or the AVX2 one.
@@ -490,10 +494,7 @@ mod tests {
 
     /// Can the AVX2 raster run here?
     fn avx2_here() -> bool {
-        #[cfg(target_arch = "x86_64")]
-        return crate::numerics::cpu::has_avx2_fma();
-        #[cfg(not(target_arch = "x86_64"))]
-        false
+        crate::cpu::Avx2::detect().is_some()
     }
 
     /// The band buffers start on a cache line, hold `n` entries, keep what was written
@@ -571,7 +572,7 @@ mod tests {
             band.depth.fill(1.0);
             band.raster.fill(NO_TRIANGLE);
             for &ti in &bin {
-                draw::<false>(&setup.tris[ti as usize], ti, &mut band);
+                draw(Portable, &setup.tris[ti as usize], ti, &mut band);
             }
             let bits = |d: &[f32]| d.iter().map(|z| z.to_bits()).collect::<Vec<_>>();
             for avx2 in [false, true] {
@@ -622,7 +623,7 @@ mod tests {
     #[test]
     fn the_avx2_raster_draws_what_the_portable_one_draws() {
         #[cfg(target_arch = "x86_64")]
-        if crate::numerics::cpu::has_avx2_fma() {
+        if crate::cpu::Avx2::detect().is_some() {
             let mut next = rng(0x2545f4914f6cdd1d);
             for (w, h) in [(64, 16), (61, 16), (97, 9), (8, 3), (1, 5)] {
                 let tris: Vec<RasterTri> = (0..400).filter_map(|_| random_tri(&mut next, w, h)).collect();

@@ -17,7 +17,7 @@ pub type WindowVert = (i64, i64, f32, f32);
 /// ([`to_window`], the same bits as setup's own), into `out`: once per mesh vertex, for the
 /// triangles that need no clipping, instead of once per triangle corner (a vertex of a
 /// closed mesh has about six triangles). Vertices outside the view volume get values no
-/// unclipped triangle reads. (Run through [`super::copies::window_vertices`].)
+/// unclipped triangle reads. (Written once, `#[inline(always)]`; `copies` compiles it for each processor.)
 #[inline(always)]
 pub fn window_vertices(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
     let (w, h) = (width as f32, height as f32);
@@ -27,7 +27,7 @@ pub fn window_vertices(clip: &[Vec4], out: &mut [WindowVert], width: usize, heig
 }
 
 /// `clip` divided by w and mapped to the `width` x `height` viewport. (Inline: in the
-/// AVX2 copies ([`super::copies`]) it rounds without calls.)
+/// AVX2 copies it rounds without calls.)
 #[inline(always)]
 pub fn to_window(clip: Vec4, w: f32, h: f32) -> WindowVert {
     let iw = 1.0 / clip.w;
