@@ -19,7 +19,7 @@ use std::path::{Path, PathBuf};
 #[path = "../crates/phonglab-core/tests/support/module_graph.rs"]
 mod module_graph;
 
-use module_graph::{expand, file_circles, folder_circles, graph, module_of, named_paths};
+use module_graph::{expand, file_circles, folder_circles, graph, module_of, named_paths, room_circles};
 
 fn src() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
@@ -65,6 +65,12 @@ fn no_file_names_a_file_that_names_it_back_however_far_round() {
 fn no_folder_names_a_folder_that_names_it_back() {
     let found = folder_circles(&src(), &graph(&src()));
     assert!(found.is_empty(), "circles between folders:\n{}", found.join("\n"));
+}
+
+#[test]
+fn no_two_rooms_of_a_folder_name_each_other() {
+    let found = room_circles(&src(), &graph(&src()));
+    assert!(found.is_empty(), "circles between the rooms of a folder:\n{}", found.join("\n"));
 }
 
 #[test]

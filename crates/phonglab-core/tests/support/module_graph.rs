@@ -255,3 +255,43 @@ pub fn folder_circles(src: &Path, g: &BTreeMap<PathBuf, BTreeSet<PathBuf>>) -> V
     }
     circles(&fg).iter().map(|c| c.join(" -> ")).collect()
 }
+
+/// The circles among the rooms of each folder of `g`, as a newcomer meets them one folder
+/// at a time: in folder D the rooms are D's own files and D's subfolders (each whole, its
+/// files inside), and a file names a room when it names a file in it. A subfolder is a
+/// part of its parent, so its files may use its parent's files as any of them may; what
+/// is refused is two rooms of one folder that name each other, however far round.
+pub fn room_circles(src: &Path, g: &BTreeMap<PathBuf, BTreeSet<PathBuf>>) -> Vec<String> {
+    let mut folders: BTreeSet<PathBuf> = BTreeSet::new();
+    for f in g.keys() {
+        let mut d = f.parent();
+        while let Some(p) = d {
+            if !p.starts_with(src) {
+                break;
+            }
+            folders.insert(p.to_path_buf());
+            d = p.parent();
+        }
+    }
+    let mut found = Vec::new();
+    for folder in folders {
+        let room = |f: &Path| {
+            f.strip_prefix(&folder).ok().and_then(|r| r.iter().next()).map(|c| c.to_string_lossy().into_owned())
+        };
+        let mut rooms: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+        for (file, names) in g {
+            let Some(from) = room(file) else { continue };
+            for to in names {
+                if let Some(to) = room(to)
+                    && to != from
+                {
+                    rooms.entry(from.clone()).or_default().insert(to);
+                }
+            }
+        }
+        for c in circles(&rooms) {
+            found.push(format!("in {}: {}", short(src, &folder), c.join(" -> ")));
+        }
+    }
+    found
+}

@@ -266,16 +266,7 @@ fn draw_and_shade(
                     visibility::Band { y_start: y_start as i32, width, depth, raster: &mut *raster },
                 );
                 let drawn = web_time::Instant::now();
-                let input = resolve::BandInput {
-                    job,
-                    setup,
-                    lighter,
-                    p: prepared,
-                    shared: &shared,
-                    raster,
-                    y0: y_start,
-                    width,
-                };
+                let input = resolve::BandInput { job, setup, lighter, p: prepared, shared, raster, y0: y_start, width };
                 let shaded = copies::resolve_band(isa, &input, px, frags);
                 if let Some(kept) = kept {
                     kept.copy_from_slice(raster);
@@ -399,7 +390,7 @@ mod tests {
                         setup: &r.setup,
                         lighter,
                         p: &prepared,
-                        shared: &shared,
+                        shared,
                         raster,
                         y0,
                         width: w,

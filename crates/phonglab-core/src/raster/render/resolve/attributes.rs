@@ -1,0 +1,111 @@
+//! Each rasterised triangle's attributes at its three (clipped) vertices, set up once a
+//! frame: mapped from the original triangle's through the clipped vertices' barycentrics
+//! and divided by w, so that a pixel blends three values (or, for Gouraud, steps planes)
+//! instead of mapping its barycentrics back.
+
+use glam::Vec3;
+use rayon::prelude::*;
+
+use super::gouraud::ColorPlanes;
+use crate::model::view::ShadingMode;
+use crate::raster::render::Job;
+use crate::raster::render::setup::{RasterTri, Setup};
+use crate::raster::render::vertices::Vertices;
+use crate::raster::render::visibility::ScreenBarycentrics;
+
+/// Each rasterised triangle's attributes (only those the shading reads are written).
+#[derive(Default)]
+pub struct TriangleAttributes {
+    /// Gouraud: the colours of the triangle's side times 1/w, and 1/w, as screen planes.
+    pub(super) color: Vec<ColorPlanes>,
+    /// Phong and the demo's Flat: eye-space positions at the vertices, times 1/w.
+    pub(super) pos: Vec<[Vec3; 3]>,
+    /// Phong: (unnormalised) normals at the vertices, times 1/w.
+    pub(super) nrm: Vec<[Vec3; 3]>,
+    /// Each triangle's edge functions, set up once a frame rather than once a run.
+    pub(super) edges: Vec<ScreenBarycentrics>,
+}
+
+/// Each rasterised triangle's attributes at its three vertices, mapped from the original
+/// triangle's through the clipped vertices' barycentrics and multiplied by 1/w, and (for
+/// Phong and Flat) its edge functions; for Gouraud, its colour planes ([`ColorPlanes`]):
+/// computed once per triangle, so a pixel blends three values (or steps planes) instead
+/// of mapping its barycentrics back. One pass over chunks of triangles on both threads
+/// (each result depends on its triangle alone).
+/// `attributes` does one chunk (a copy of [`attributes_chunk_any`] for this processor).
+pub(super) fn triangle_attributes(
+    setup: &Setup,
+    out: &mut TriangleAttributes,
+    attributes: impl Fn(&[RasterTri], Attributes<'_>) + Sync,
+) {
+    const GRAIN: usize = 256;
+    // Every array sized to the triangles (growing only on the first frames); only those the
+    // shading reads are written.
+    let n = setup.tris.len();
+    out.color.resize(n, ColorPlanes::default());
+    out.pos.resize(n, [Vec3::ZERO; 3]);
+    out.nrm.resize(n, [Vec3::ZERO; 3]);
+    out.edges.resize(n, ScreenBarycentrics::default());
+    setup
+        .tris
+        .par_chunks(GRAIN)
+        .zip(out.edges.par_chunks_mut(GRAIN))
+        .zip(out.color.par_chunks_mut(GRAIN))
+        .zip(out.pos.par_chunks_mut(GRAIN))
+        .zip(out.nrm.par_chunks_mut(GRAIN))
+        .for_each(|((((ts, edges), colors), pos), nrm)| {
+            attributes(ts, Attributes { edges, colors, pos, nrm });
+        });
+}
+
+/// Where one chunk of triangles' attributes go ([`triangle_attributes`]).
+pub(in crate::raster::render) struct Attributes<'a> {
+    pub(in crate::raster::render) edges: &'a mut [ScreenBarycentrics],
+    pub(in crate::raster::render) colors: &'a mut [ColorPlanes],
+    pub(in crate::raster::render) pos: &'a mut [[Vec3; 3]],
+    pub(in crate::raster::render) nrm: &'a mut [[Vec3; 3]],
+}
+
+/// The attributes of triangles `ts` (a chunk) into `out`. (Written once,
+/// `#[inline(always)]`; `copies` compiles it for each processor.)
+#[inline(always)]
+pub(in crate::raster::render) fn attributes_chunk_any(
+    job: &Job<'_>,
+    verts: &Vertices,
+    ts: &[RasterTri],
+    out: Attributes<'_>,
+) {
+    let tris = &job.mesh.triangles;
+    let two = job.scene.light_model.two_sided;
+    let blend3 = |t: &RasterTri, a: &[Vec3]| -> [Vec3; 3] {
+        let v = tris[t.orig as usize];
+        let at = [a[v[0] as usize], a[v[1] as usize], a[v[2] as usize]];
+        std::array::from_fn(|k| (at[0] * t.bary[k][0] + at[1] * t.bary[k][1] + at[2] * t.bary[k][2]) * t.inv_w[k])
+    };
+    let color = |t: &RasterTri| -> [[f32; 4]; 3] {
+        let side = (t.back && two) as usize;
+        let v = tris[t.orig as usize];
+        let vc = &verts.color[side];
+        let cs = [vc[v[0] as usize], vc[v[1] as usize], vc[v[2] as usize]];
+        std::array::from_fn(|k| {
+            let b = t.bary[k];
+            std::array::from_fn(|ch| (cs[0][ch] * b[0] + cs[1][ch] * b[1] + cs[2][ch] * b[2]) * t.inv_w[k])
+        })
+    };
+    let Attributes { edges, colors, pos, nrm } = out;
+    for (i, t) in ts.iter().enumerate() {
+        match job.mode {
+            ShadingMode::Gouraud => colors[i] = ColorPlanes::new(t, color(t)),
+            ShadingMode::Phong => {
+                edges[i] = ScreenBarycentrics::new(t);
+                (pos[i], nrm[i]) = (blend3(t, &verts.eye), blend3(t, &verts.normal));
+            }
+            ShadingMode::FlatDerivatives => {
+                edges[i] = ScreenBarycentrics::new(t);
+                pos[i] = blend3(t, &verts.eye);
+            }
+            // One colour a face, from setup: no attributes.
+            ShadingMode::FlatFace => {}
+        }
+    }
+}
