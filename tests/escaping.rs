@@ -162,7 +162,7 @@ fn python<R>(f: impl FnOnce(&mut PythonChecker) -> R) -> R {
 /// The Python sources a document exports to: the PyOpenGL program, the notebook's code
 /// cells joined, and the notebook as a script.
 fn python_sources(doc: &Document) -> Vec<(&'static str, String)> {
-    let cells = notebook::cells(doc);
+    let cells = notebook::cells(doc, &phonglab_core::export::key(doc));
     let code: Vec<&str> = cells
         .iter()
         .filter_map(|c| match c {
@@ -171,7 +171,7 @@ fn python_sources(doc: &Document) -> Vec<(&'static str, String)> {
         })
         .collect();
     vec![
-        ("the PyOpenGL program", pyopengl::program(doc).unwrap()),
+        ("the PyOpenGL program", pyopengl::program(doc, &phonglab_core::export::shaded_key(doc)).unwrap()),
         ("the notebook's code cells", code.join("\n")),
         ("the notebook as a script", notebook::script(&cells)),
     ]
@@ -194,11 +194,13 @@ fn python_shapes_match(name: &str) -> Result<(), TestCaseError> {
 }
 
 fn notebook_stays_json(name: &str) -> Result<(), TestCaseError> {
-    let ipynb = notebook::notebook(&named(name));
+    let doc = named(name);
+    let ipynb = notebook::notebook(&doc, &phonglab_core::export::key(&doc));
     let nb: serde_json::Value =
         serde_json::from_str(&ipynb).map_err(|e| TestCaseError::fail(format!("not JSON: {e}")))?;
     let title = nb["cells"][0]["source"].as_array().unwrap();
-    let reference: serde_json::Value = serde_json::from_str(&notebook::notebook(&named("x"))).unwrap();
+    let reference: serde_json::Value =
+        serde_json::from_str(&notebook::notebook(&named("x"), &phonglab_core::export::key(&named("x")))).unwrap();
     prop_assert_eq!(title.len(), reference["cells"][0]["source"].as_array().unwrap().len(), "the title's lines");
     let scene_line = title.iter().filter_map(|l| l.as_str()).find(|l| l.contains("**")).unwrap();
     prop_assert!(scene_line.contains(&escape::markdown::text(name)), "{scene_line:?}");
@@ -251,7 +253,7 @@ fn of_files(doc: &Document, tag: &str) -> (std::path::PathBuf, Vec<(String, Stri
     let n = N.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let dir = std::env::temp_dir().join(format!("phonglab-escaping-{}-{tag}-{n}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let files = openframeworks::app(doc).unwrap();
+    let files = openframeworks::app(doc, &phonglab_core::export::shaded_key(doc)).unwrap();
     for (file, text) in &files {
         std::fs::write(dir.join(file), text).unwrap();
     }

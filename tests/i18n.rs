@@ -55,6 +55,10 @@ fn ids_in_sources(sources: &[String]) -> BTreeSet<String> {
     for id in phonglab::app::panels::help::DEMO_CHOICES {
         ids.insert(id.to_string());
     }
+    // The vocabulary's labels, asked for through Quantity::label.
+    for q in phonglab_core::vocabulary::Quantity::ALL {
+        ids.extend(q.term().message.map(str::to_string));
+    }
     ids
 }
 

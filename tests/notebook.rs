@@ -106,7 +106,7 @@ fn the_exported_notebooks_print_what_explain_prints() {
     let mut paths = Vec::new();
     for (k, (_, doc)) in docs.iter().enumerate() {
         let p = dir.join(format!("{k}.ipynb"));
-        std::fs::write(&p, notebook(doc)).unwrap();
+        std::fs::write(&p, notebook(doc, &phonglab_core::export::key(doc))).unwrap();
         paths.push(p.display().to_string());
     }
     let out = Command::new(python).arg("-c").arg(RUNNER).args(&paths).output().unwrap();
@@ -202,7 +202,8 @@ fn same_explanation(what: &str, a: &Explanation, b: &Explanation) {
 fn export_then_import_gives_back_the_same_scene() {
     use phonglab_core::export::read_python::read;
     for (what, doc) in scenes_and_exercises() {
-        let imported = read(&notebook(&doc), true, "back").unwrap_or_else(|e| panic!("{what}: {e}"));
+        let imported = read(&notebook(&doc, &phonglab_core::export::key(&doc)), true, "back")
+            .unwrap_or_else(|e| panic!("{what}: {e}"));
         assert!(imported.notices.is_empty(), "{what}: {:?}", imported.notices);
         let s = &imported.doc.scene;
         assert_eq!(s.lights.len(), doc.scene.lights.len(), "{what}");

@@ -66,7 +66,7 @@ fn the_exported_openframeworks_apps_compile_against_ofs_signatures() {
     for (name, doc) in documents() {
         let dir = std::env::temp_dir().join(format!("phonglab-of-{}-{name}", std::process::id()).replace('/', "-"));
         std::fs::create_dir_all(&dir).unwrap();
-        let files = app(&doc).unwrap();
+        let files = app(&doc, &phonglab_core::export::shaded_key(&doc)).unwrap();
         assert_eq!(files.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>(), ["ofApp.h", "ofApp.cpp", "main.cpp"]);
         for (file, text) in &files {
             std::fs::write(dir.join(file), text).unwrap();
@@ -104,7 +104,7 @@ fn the_exported_openframeworks_apps_compile_against_ofs_signatures() {
 #[test]
 fn what_of_cannot_say_is_the_raw_gl_call_with_a_comment() {
     let (_, doc) = documents().pop().unwrap();
-    let files = app(&doc).unwrap();
+    let files = app(&doc, &phonglab_core::export::shaded_key(&doc)).unwrap();
     let cpp = &files[1].1;
     for call in [
         "glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_TRUE)",

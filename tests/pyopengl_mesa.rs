@@ -93,7 +93,11 @@ fn write_programs() {
     let dir = PathBuf::from(std::env::var("PHONGLAB_PYOPENGL_OUT").expect("PHONGLAB_PYOPENGL_OUT"));
     std::fs::create_dir_all(&dir).unwrap();
     for (name, doc) in cases() {
-        std::fs::write(dir.join(format!("{name}.py")), program(&doc).unwrap()).unwrap();
+        std::fs::write(
+            dir.join(format!("{name}.py")),
+            program(&doc, &phonglab_core::export::shaded_key(&doc)).unwrap(),
+        )
+        .unwrap();
     }
 }
 
@@ -105,7 +109,7 @@ fn the_pyopengl_programs_draw_under_mesa_what_phonglab_draws() {
     let cases = cases();
     assert!(cases.len() >= 20);
     for (name, doc) in &cases {
-        let text = program(doc).unwrap();
+        let text = program(doc, &phonglab_core::export::shaded_key(doc)).unwrap();
         let crc = format!("{:08x}", crc32fast::hash(text.as_bytes()));
         assert_eq!(
             crc_of.get(format!("{name}.py").as_str()).copied(),

@@ -536,7 +536,9 @@ fn the_heat_map_shows_beside_the_shaded_view() {
     let gouraud = heat.error;
     h.get_by_label("Phong").click();
     h.run_steps(2);
-    wait_for(&mut h, 60, |s| s.heat_map.heat.as_ref().is_some_and(|m| m.key.contains("Phong")));
+    wait_for(&mut h, 60, |s| {
+        s.heat_map.heat.as_ref().is_some_and(|m| m.key.view.shading == phonglab_core::Shading::Phong)
+    });
     let phong = h.state().heat_map.heat.as_ref().unwrap().error;
     assert!(phong.mean <= gouraud.mean && phong.share_over_one <= gouraud.share_over_one, "{phong:?} vs {gouraud:?}");
 }

@@ -16,6 +16,7 @@ use std::fmt::Write as _;
 use anyhow::{Context as _, Result};
 use phonglab_core::exercise::{Exercise, Spec, generate, sheet_markdown};
 use phonglab_core::explain::{Side, explain};
+use phonglab_core::vocabulary::Quantity as Q;
 use phonglab_core::{Document, Engine};
 
 use super::file_set::FileSet;
@@ -118,6 +119,11 @@ fn worksheet_sheet(set: &mut FileSet, sheets: &mut Vec<Block>, keys: &mut Vec<Bl
 }
 
 /// A vector's components for people (8 significant digits, the locale's decimal mark).
+/// Several quantities given on one line: `[atC atLin atQuad]`.
+fn names<const N: usize>(qs: [Q; N]) -> String {
+    format!("[{}]", qs.map(Q::name).join(" "))
+}
+
 fn components(v: &[f64]) -> Vec<String> {
     v.iter().map(|x| phonglab_core::locale::num(*x, 8)).collect()
 }
@@ -152,27 +158,27 @@ fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
         b.push(Heading(t!("light-tab", index = i.to_string())));
         let what = if l.position.w == 0.0 { t!("sheet-direction") } else { t!("sheet-position") };
         b.push(Vector {
-            name: "lightPos".into(),
+            name: Q::LightPos.name().into(),
             values: components(&l.position.to_array()),
             note: t!("sheet-light-world", what = what),
         });
-        b.push(vector("Lamb", colour(l.ambient)));
-        b.push(vector("Ldif", colour(l.diffuse)));
-        b.push(vector("Lspec", colour(l.specular)));
+        b.push(vector(Q::LightAmbient.name(), colour(l.ambient)));
+        b.push(vector(Q::LightDiffuse.name(), colour(l.diffuse)));
+        b.push(vector(Q::LightSpecular.name(), colour(l.specular)));
         if l.position.w != 0.0 {
-            b.push(vector("[atC atLin atQuad]", components(&l.attenuation)));
+            b.push(vector(&names([Q::AttConstant, Q::AttLinear, Q::AttQuadratic]), components(&l.attenuation)));
         }
         if l.is_spot() {
-            b.push(vector("lightSpotDir", components(&l.spot_direction.extend(0.0).to_array())));
-            b.push(vector("[spotCutoff spotCoef]", components(&[l.spot_cutoff, l.spot_exponent])));
+            b.push(vector(Q::SpotDirection.name(), components(&l.spot_direction.extend(0.0).to_array())));
+            b.push(vector(&names([Q::SpotCutoff, Q::SpotExponent]), components(&[l.spot_cutoff, l.spot_exponent])));
         }
     }
     let m = &s.material;
     b.push(Heading(t!("sheet-material", name = phonglab_core::materials::display_name(&ex.material))));
-    b.push(vector("matAmb", colour(m.ambient)));
-    b.push(vector("matDif", colour(m.diffuse)));
-    b.push(vector("matSpec", colour(m.specular)));
-    b.push(vector("ns", components(&[m.shininess])));
+    b.push(vector(Q::MatAmbient.name(), colour(m.ambient)));
+    b.push(vector(Q::MatDiffuse.name(), colour(m.diffuse)));
+    b.push(vector(Q::MatSpecular.name(), colour(m.specular)));
+    b.push(vector(Q::Shininess.name(), components(&[m.shininess])));
     let lm = &s.light_model;
     let yes_no = |on: bool| if on { t!("yes") } else { t!("no") };
     b.push(Heading(t!("sheet-light-model")));

@@ -28,7 +28,7 @@
 //! | 6 | specialise: only the stages a scene needs | [`plan`], [`lighter`], [`batch`] (its ways in), [`effects`] (the plan in words) |
 //! | 5 | formats: text in and out, ready-made documents | [`document`], [`library`], [`glref`], [`escape`] (user text for each language written) |
 //! | 4 | equation: the lighting equation and its worked calculation | [`lighting`], [`breakdown`], [`explain`], [`validate`] |
-//! | 3 | model: what is lit | [`scene`], [`rules`], [`materials`], [`camera`], [`transform`], [`view`], [`presets`], [`error`] |
+//! | 3 | model: what is lit | [`scene`], [`rules`], [`materials`], [`camera`], [`transform`], [`view`], [`presets`], [`error`], [`vocabulary`] (the worksheet's names, once) |
 //! | 2 | mesh: the objects | [`mesh`] (`sphere`, `cylinder`, `teapot`, `obj`) |
 //! | 1 | numerics: where floating point needs care | [`robust`], [`real`], [`exact_pow`], [`pow`], [`strict`], [`typed_number`] |
 //! | 0 | locale: the user's language and decimal mark; cpu: what the processor can do, as proofs | [`locale`]; [`cpu`] |
@@ -49,7 +49,7 @@ pub mod teach;
 // Each module also at the crate's root, so paths name the module, not its group.
 pub use equation::{breakdown, explain, lighting, validate};
 pub use formats::{document, escape, glref, library};
-pub use model::{camera, error, materials, presets, rules, scene, transform, view};
+pub use model::{camera, error, materials, presets, rules, scene, transform, view, vocabulary};
 pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
 pub use raster::{render, shaded};
 pub use specialise::{batch, effects, lighter, plan};

@@ -5,6 +5,7 @@ use egui::{CollapsingHeader, ComboBox, Ui};
 use glam::{DMat4, DVec3, DVec4};
 use phonglab_core::t;
 use phonglab_core::transform::{mat4_from_rows, mat4_rows};
+use phonglab_core::vocabulary::Quantity as Q;
 use phonglab_core::{
     CameraSpec, Document, Light, LightPlacement, MAX_LIGHTS, Material, NormalMode, RuleSet, SpecularModel, materials,
 };
@@ -164,14 +165,14 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut ControlsState) {
         }
     });
 
-    color_ui(ui, &t!("light-ambient"), &mut l.ambient, false);
-    color_ui(ui, &t!("light-diffuse"), &mut l.diffuse, false);
-    color_ui(ui, &t!("light-specular"), &mut l.specular, false);
+    color_ui(ui, &Q::LightAmbient.label(), &mut l.ambient, false);
+    color_ui(ui, &Q::LightDiffuse.label(), &mut l.diffuse, false);
+    color_ui(ui, &Q::LightSpecular.label(), &mut l.specular, false);
 
     ui.add_enabled_ui(!directional, |ui| {
-        slider_ui(ui, &t!("attenuation-constant"), &mut l.attenuation[0], 0.0..=10.0, true);
-        slider_ui(ui, &t!("attenuation-linear"), &mut l.attenuation[1], 0.0..=1.0, true);
-        slider_ui(ui, &t!("attenuation-quadratic"), &mut l.attenuation[2], 0.0..=0.1, true);
+        slider_ui(ui, &Q::AttConstant.label(), &mut l.attenuation[0], 0.0..=10.0, true);
+        slider_ui(ui, &Q::AttLinear.label(), &mut l.attenuation[1], 0.0..=1.0, true);
+        slider_ui(ui, &Q::AttQuadratic.label(), &mut l.attenuation[2], 0.0..=0.1, true);
     });
     if directional {
         ui.small(t!("attenuation-positional-only"));
@@ -185,18 +186,20 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut ControlsState) {
         }
     }
     if spot {
-        vec3_ui(ui, &t!("spot-direction"), &mut l.spot_direction, 0.01);
-        slider_ui(ui, &t!("spot-cutoff"), &mut l.spot_cutoff, 0.0..=90.0, false);
-        slider_ui(ui, &t!("spot-exponent"), &mut l.spot_exponent, 0.0..=128.0, false);
+        vec3_ui(ui, &Q::SpotDirection.label(), &mut l.spot_direction, 0.01);
+        slider_ui(ui, &Q::SpotCutoff.label(), &mut l.spot_cutoff, 0.0..=90.0, false);
+        slider_ui(ui, &Q::SpotExponent.label(), &mut l.spot_exponent, 0.0..=128.0, false);
     }
 }
 
 fn material_ui(ui: &mut Ui, m: &mut Material, back: bool) {
-    // "Material shininess" or "Back shininess", as one message each.
+    // "Material shininess" (the quantity's own label) or "Back shininess", as one
+    // message each.
     let label = |field: &str| {
         let side = if back { "back" } else { "material" };
         phonglab_core::locale::tr(&format!("{side}-{field}"))
     };
+    let quantity = |q: Q, field: &str| if back { label(field) } else { q.label() };
     let current = materials::name_of(m);
     let shown = current.map_or_else(|| t!("material-custom"), materials::display_name);
     ComboBox::from_label(label("preset")).selected_text(shown).show_ui(ui, |ui| {
@@ -207,11 +210,11 @@ fn material_ui(ui: &mut Ui, m: &mut Material, back: bool) {
             }
         }
     });
-    color_ui(ui, &label("ambient"), &mut m.ambient, false);
-    color_ui(ui, &label("diffuse"), &mut m.diffuse, true);
-    color_ui(ui, &label("specular"), &mut m.specular, false);
-    color_ui(ui, &label("emission"), &mut m.emission, false);
-    slider_ui(ui, &label("shininess"), &mut m.shininess, 0.0..=128.0, false);
+    color_ui(ui, &quantity(Q::MatAmbient, "ambient"), &mut m.ambient, false);
+    color_ui(ui, &quantity(Q::MatDiffuse, "diffuse"), &mut m.diffuse, true);
+    color_ui(ui, &quantity(Q::MatSpecular, "specular"), &mut m.specular, false);
+    color_ui(ui, &quantity(Q::MatEmission, "emission"), &mut m.emission, false);
+    slider_ui(ui, &quantity(Q::Shininess, "shininess"), &mut m.shininess, 0.0..=128.0, false);
 }
 
 fn material_section_ui(ui: &mut Ui, doc: &mut Document) {

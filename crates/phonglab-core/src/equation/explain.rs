@@ -8,6 +8,7 @@
 
 use std::fmt::Write as _;
 
+use crate::model::vocabulary::Quantity::{self, self as Q};
 use crate::t;
 
 use crate::equation::breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, VertexLighting};
@@ -163,12 +164,30 @@ struct Builder {
 }
 
 impl Builder {
+    /// A step finding `q` (for light `light`, its names ending in `sfx`), titled with the
+    /// quantity's label.
     fn push(
         &mut self,
         kind: StepKind,
         light: Option<usize>,
+        q: Quantity,
+        sfx: &str,
+        formula: &str,
+        value: Option<Vec<f64>>,
+    ) {
+        self.push_titled(kind, light, &q.label(), q, sfx, formula, value);
+    }
+
+    /// [`Builder::push`] with a title of its own (the worksheet reuses a given's name for
+    /// its value in eye space: `vertexPos`, `vertexNormal`, `lightPos`).
+    #[allow(clippy::too_many_arguments)]
+    fn push_titled(
+        &mut self,
+        kind: StepKind,
+        light: Option<usize>,
         title: &str,
-        name: String,
+        q: Quantity,
+        sfx: &str,
         formula: &str,
         value: Option<Vec<f64>>,
     ) {
@@ -176,7 +195,7 @@ impl Builder {
             kind,
             light,
             title: title.into(),
-            name,
+            name: format!("{}{sfx}", q.name()),
             formula: formula.into(),
             value,
             notes: Vec::new(),
@@ -244,7 +263,7 @@ fn normal_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
         (crate::model::scene::NormalMode::Rescale, true) => t!("formula-normal-ws-rescale"),
     };
     let ntitle = if back { t!("step-normal-back") } else { t!("step-normal") };
-    b.push(StepKind::Normal, None, &ntitle, "vertexNormal".into(), &nformula, Some(dir4::<S>(n_shown)));
+    b.push_titled(StepKind::Normal, None, &ntitle, Q::VertexNormal, "", &nformula, Some(dir4::<S>(n_shown)));
     limit_notes(b, lit.limits, StepKind::Normal);
     if by_m {
         // Where the worksheet's M n and OpenGL's (M^-1)^T n part: say how far M is from a
@@ -260,11 +279,12 @@ fn normal_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
 /// Step 2: the vertex in eye space.
 fn position_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>) {
     let p = lit.pos_in_eye;
-    b.push(
+    b.push_titled(
         StepKind::Position,
         None,
         &t!("step-position"),
-        "vertexPos".into(),
+        Q::VertexPos,
+        "",
         &t!("formula-position"),
         Some(vec![p.x, p.y, p.z, 1.0]),
     );
@@ -284,7 +304,7 @@ fn view_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>) {
     } else {
         t!("formula-v-infinite")
     };
-    b.push(StepKind::V, None, &t!("step-v"), "vov".into(), &vformula, Some(dir4::<S>(lit.v)));
+    b.push(StepKind::V, None, Q::V, "", &vformula, Some(dir4::<S>(lit.v)));
     limit_notes(b, lit.limits, StepKind::V);
     if rules.viewer_from_eye_plane() && !scene.light_model.local_viewer && lit.pos_in_eye.z > 0.0 {
         b.note(t!("note-vov-behind"));
@@ -314,19 +334,20 @@ fn light_vector_steps<S: Real>(b: &mut Builder, lit: &VertexLighting<S>, t: &Lig
     let i = Some(t.index);
     let sfx = light_suffix(lit, t);
     let pe = t.pos_in_eye;
-    b.push(
+    b.push_titled(
         StepKind::LightPosition,
         i,
         &t!("step-light-position"),
-        format!("lightPos{sfx}"),
+        Q::LightPos,
+        &sfx,
         &t!("formula-light-position"),
         Some(pe.to_array().to_vec()),
     );
     let lformula = if t.positional { t!("formula-l-positional") } else { t!("formula-l-directional") };
-    b.push(StepKind::L, i, &t!("step-l"), format!("vlv{sfx}"), &lformula, Some(dir4::<S>(t.l)));
+    b.push(StepKind::L, i, Q::L, &sfx, &lformula, Some(dir4::<S>(t.l)));
     limit_notes(b, t.limits, StepKind::L);
     let dval = t.distance.map(|d| vec![d.to_f64()]);
-    b.push(StepKind::Distance, i, &t!("step-distance"), format!("d{sfx}"), "d = |lightPos − vertexPos|", dval);
+    b.push(StepKind::Distance, i, Q::Distance, &sfx, "d = |lightPos − vertexPos|", dval);
     if t.distance.is_none() {
         b.note(t!("note-no-distance"));
     }
@@ -342,24 +363,24 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
     b.push(
         StepKind::Ambient,
         i,
-        &t!("step-ambient"),
-        format!("Iamb{sfx}"),
+        Q::Ambient,
+        &sfx,
         "Iamb = Lamb · matAmb   (OpenGL: a_cl · a_cm)",
         Some(dir4::<S>(st.ambient)),
     );
     b.push(
         StepKind::CosTheta,
         i,
-        "cos(θ)",
-        format!("cosTheta{sfx}"),
+        Q::CosTheta,
+        &sfx,
         &format!("cosTheta = {sign}vertexNormal · vlv   (OpenGL: {sign}n · L)"),
         Some(vec![st.n_dot_l.to_f64()]),
     );
     b.push(
         StepKind::Diffuse,
         i,
-        &t!("step-diffuse"),
-        format!("Idif{sfx}"),
+        Q::Diffuse,
+        &sfx,
         "Idif = Ldif · matDif · max(cosTheta, 0)   (OpenGL: d_cl · d_cm · max(n · L, 0))",
         Some(dir4::<S>(st.diffuse)),
     );
@@ -368,8 +389,8 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
             b.push(
                 StepKind::H,
                 i,
-                &t!("step-h"),
-                format!("H{sfx}"),
+                Q::H,
+                &sfx,
                 "H = normalize(vlv + vov)   (OpenGL: h = normalize(L + V))",
                 Some(dir4::<S>(t.h)),
             );
@@ -377,8 +398,8 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
             b.push(
                 StepKind::CosBeta,
                 i,
-                "cos(β)",
-                format!("cosBeta{sfx}"),
+                Q::CosBeta,
+                &sfx,
                 &format!("cosBeta = {sign}vertexNormal · H   (OpenGL: {sign}n · h)"),
                 Some(vec![st.spec_cos.to_f64()]),
             );
@@ -387,8 +408,8 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
             b.push(
                 StepKind::R,
                 i,
-                &t!("step-r"),
-                format!("R{sfx}"),
+                Q::R,
+                &sfx,
                 &if rules.reflect_clamped() {
                     t!("formula-r-demo")
                 } else {
@@ -396,14 +417,7 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
                 },
                 Some(dir4::<S>(t.r)),
             );
-            b.push(
-                StepKind::CosBeta,
-                i,
-                "cos(α)",
-                format!("cosAlpha{sfx}"),
-                "cosAlpha = R · vov",
-                Some(vec![st.spec_cos.to_f64()]),
-            );
+            b.push(StepKind::CosBeta, i, Q::CosAlpha, &sfx, "cosAlpha = R · vov", Some(vec![st.spec_cos.to_f64()]));
         }
     }
     let gate = match rules.specular_gate() {
@@ -414,8 +428,8 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
     b.push(
         StepKind::Specular,
         i,
-        &t!("step-specular"),
-        format!("Ispec{sfx}"),
+        Q::Specular,
+        &sfx,
         &t!(
             "formula-specular",
             gate = gate,
@@ -436,8 +450,8 @@ fn share_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
     b.push(
         StepKind::Attenuation,
         i,
-        &t!("step-attenuation"),
-        format!("at{sfx}"),
+        Q::Attenuation,
+        &sfx,
         &aformula,
         Some(vec![if at == 0.0 { f64::INFINITY } else { 1.0 / at }]),
     );
@@ -446,8 +460,8 @@ fn share_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
         b.push(
             StepKind::Spot,
             i,
-            &t!("step-spot"),
-            format!("spot{sfx}"),
+            Q::Spot,
+            &sfx,
             &t!(
                 "formula-spot",
                 cutoff = crate::locale::num(t.spot.cos_cutoff.to_f64(), 8),
@@ -456,20 +470,13 @@ fn share_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
             Some(vec![t.spot.factor.to_f64()]),
         );
     } else {
-        b.push(StepKind::Spot, i, &t!("step-spot"), format!("spot{sfx}"), &t!("formula-spot-none"), Some(vec![1.0]));
+        b.push(StepKind::Spot, i, Q::Spot, &sfx, &t!("formula-spot-none"), Some(vec![1.0]));
     }
     limit_notes(b, t.limits, StepKind::Spot);
     let sep = scene.light_model.separate_specular;
     let cformula =
         if sep { t!("formula-share-separate") } else { "Ilight = spot · (Iamb + Idif + Ispec) / at".to_string() };
-    b.push(
-        StepKind::Contribution,
-        i,
-        &t!("step-share"),
-        format!("Ilight{sfx}"),
-        &cformula,
-        Some(dir4::<S>(st.primary)),
-    );
+    b.push(StepKind::Contribution, i, Q::LightShare, &sfx, &cformula, Some(dir4::<S>(st.primary)));
 }
 
 /// The totals: the scene ambient and the emission where the rules keep them, I, the
@@ -481,36 +488,29 @@ fn total_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
         b.push(
             StepKind::SceneAmbient,
             None,
-            &t!("step-scene-ambient"),
-            "Iscene".into(),
+            Q::SceneAmbientTerm,
+            "",
             &t!("formula-scene-ambient"),
             Some(dir4::<S>(sc.scene_ambient)),
         );
     }
     if rules.emission() {
-        b.push(StepKind::Emission, None, &t!("step-emission"), "Iemi".into(), "e_cm", Some(dir4::<S>(sc.emission)));
+        b.push(StepKind::Emission, None, Q::EmissionTerm, "", "e_cm", Some(dir4::<S>(sc.emission)));
     }
     let iformula = match (rules.scene_ambient(), rules.emission()) {
         (true, true) => t!("formula-i-opengl"),
         _ => t!("formula-i-worksheet"),
     };
     let pr = sc.primary.map(S::to_f64);
-    b.push(StepKind::Primary, None, &t!("step-primary"), "I".into(), &iformula, Some(vec![pr[0], pr[1], pr[2], 0.0]));
+    b.push(StepKind::Primary, None, Q::Primary, "", &iformula, Some(vec![pr[0], pr[1], pr[2], 0.0]));
     limit_notes(b, lit.limits, StepKind::Primary);
     if scene.light_model.separate_specular {
         let s = sc.secondary.map(S::to_f64);
-        b.push(
-            StepKind::Secondary,
-            None,
-            &t!("step-secondary"),
-            "Isec".into(),
-            &t!("formula-secondary"),
-            Some(s.to_vec()),
-        );
+        b.push(StepKind::Secondary, None, Q::Secondary, "", &t!("formula-secondary"), Some(s.to_vec()));
     }
     let c = sc.sum();
     let c = [c[0], c[1], c[2], c[3]].map(|x| x.max(S::ZERO).min(S::ONE).to_f64());
-    b.push(StepKind::Clamped, None, &t!("step-clamped"), "glColor".into(), &t!("formula-clamped"), Some(c.to_vec()));
+    b.push(StepKind::Clamped, None, Q::Clamped, "", &t!("formula-clamped"), Some(c.to_vec()));
 }
 
 impl Explanation {

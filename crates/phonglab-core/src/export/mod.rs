@@ -48,10 +48,11 @@ pub type File = (String, String);
 /// why the scene cannot be written so (the engine's refusal, in the reader's language).
 pub fn files(doc: &Document, target: Target) -> Result<Vec<File>, String> {
     doc.scene.validate().map_err(|e| e.to_string())?;
+    let key = key(doc);
     Ok(match target {
-        Target::Notebook => vec![("vertex_color_calculator.ipynb".into(), notebook::notebook(doc))],
-        Target::PyOpenGl => vec![("phong_scene.py".into(), pyopengl::program(doc)?)],
-        Target::OpenFrameworks => openframeworks::app(doc).map_err(|e| e.to_string())?,
+        Target::Notebook => vec![("vertex_color_calculator.ipynb".into(), notebook::notebook(doc, &key))],
+        Target::PyOpenGl => vec![("phong_scene.py".into(), pyopengl::program(doc, &shaded_key(doc))?)],
+        Target::OpenFrameworks => openframeworks::app(doc, &shaded_key(doc)).map_err(|e| e.to_string())?,
         Target::Glsl => {
             let lang = crate::teach::shader::Lang::Glsl;
             let shading = match doc.view.shading {
@@ -64,13 +65,25 @@ pub fn files(doc: &Document, target: Target) -> Result<Vec<File>, String> {
     })
 }
 
+/// What `doc`'s scene needs, as the lighting plan decides it ([`Key`]): every exporter
+/// writes the terms the key has, as the renderer and the shaders run them.
+pub fn key(doc: &Document) -> Key {
+    Key::of(&doc.scene, crate::equation::lighting::EvalOptions::default())
+}
+
+/// The key of the scene the shaded view draws ([`Document::shaded_scene`]): what the
+/// programs that draw the object (PyOpenGL, openFrameworks) light.
+pub fn shaded_key(doc: &Document) -> Key {
+    Key::of(&doc.shaded_scene(), crate::equation::lighting::EvalOptions::default())
+}
+
 /// The text the app's Copy puts on the clipboard: the notebook as one script (to paste
 /// into a cell or a file), the openFrameworks files one after the other under their
 /// names, the others as they are.
 pub fn copy_text(doc: &Document, target: Target) -> Result<String, String> {
     if target == Target::Notebook {
         doc.scene.validate().map_err(|e| e.to_string())?;
-        return Ok(notebook::script(&notebook::cells(doc)));
+        return Ok(notebook::script(&notebook::cells(doc, &key(doc))));
     }
     let written = files(doc, target)?;
     if written.len() == 1 {
@@ -80,3 +93,4 @@ pub fn copy_text(doc: &Document, target: Target) -> Result<String, String> {
 }
 
 use crate::formats::document::Document;
+use crate::specialise::plan::Key;

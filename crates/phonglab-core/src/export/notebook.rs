@@ -10,13 +10,13 @@
 //! reflection vector, a separate specular colour, the back side of two-sided lighting.
 //! Run cell by cell, it prints the values `phonglab explain` prints, under the same names.
 
-use glam::DVec4;
-
 use super::python::{array4, colour, matrix, num, shininess, string};
 use crate::formats::document::Document;
 use crate::formats::escape;
-use crate::model::rules::{NormalTransform, RuleSet, SpecularGate, SpecularModel};
+use crate::model::rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel};
 use crate::model::scene::{Light, Material, NormalMode, Scene};
+use crate::model::vocabulary::Quantity::{self, self as Q};
+use crate::specialise::plan::Key;
 use crate::t;
 
 /// One cell of a notebook.
@@ -29,8 +29,8 @@ pub enum Cell {
 }
 
 /// The notebook as a Jupyter `.ipynb` file (nbformat 4).
-pub fn notebook(doc: &Document) -> String {
-    ipynb(&cells(doc))
+pub fn notebook(doc: &Document, key: &Key) -> String {
+    ipynb(&cells(doc, key))
 }
 
 /// Cells as an `.ipynb` document.
@@ -69,6 +69,14 @@ pub fn ipynb(cells: &[Cell]) -> String {
 struct Needs {
     /// How many lights (the worksheet has one: plain names; more: lists and loops).
     lights: usize,
+    /// The rule set and the specular model.
+    rules: Rules,
+    /// Normal handling.
+    normals: NormalMode,
+    /// Two-sided lighting: the back side's cells follow.
+    two_sided: bool,
+    /// Specular goes to the secondary colour.
+    separate_specular: bool,
     /// Some light is placed under a modelview other than `mview`.
     light_mview: bool,
     /// Some light is a spotlight.
@@ -80,15 +88,21 @@ struct Needs {
 }
 
 impl Needs {
-    fn of(scene: &Scene) -> Self {
+    /// What the cells of `scene` need: the plan's key says which terms the scene has (the
+    /// renderer's and the shader's terms come from the same key); the scene, where the
+    /// lights were placed and whether w needs dividing.
+    fn of(scene: &Scene, key: &Key) -> Self {
         let mview = scene.eye_from_object();
-        let affine = mview.row(3) == DVec4::W;
         Needs {
-            lights: scene.lights.len(),
+            lights: key.lights.len(),
+            rules: key.rules,
+            normals: key.normals,
+            two_sided: key.two_sided,
+            separate_specular: key.separate_specular,
             light_mview: scene.lights.iter().any(|l| scene.eye_from_light(l) != mview),
-            spot: scene.lights.iter().any(Light::is_spot),
-            opengl_terms: scene.rules.scene_ambient(),
-            divide_w: !affine
+            spot: key.lights.iter().any(|l| l.spot),
+            opengl_terms: key.rules.scene_ambient(),
+            divide_w: key.projective
                 || scene.vertex.position.w != 1.0
                 || scene.lights.iter().any(|l| {
                     let w = scene.light_pos_in_eye(l).w;
@@ -98,8 +112,8 @@ impl Needs {
     }
 
     /// The worksheet's own scene shape: one light, no spot, the worksheet's terms.
-    fn worksheet_shape(&self, scene: &Scene) -> bool {
-        self.lights == 1 && !self.spot && !self.opengl_terms && !scene.light_model.separate_specular
+    fn worksheet_shape(&self) -> bool {
+        self.lights == 1 && !self.spot && !self.opengl_terms && !self.separate_specular
     }
 }
 
@@ -140,24 +154,26 @@ fn print(name: &str, indexed: bool) -> String {
 
 /// The notebook's cells for `doc`'s scene (front side; the back side of two-sided
 /// lighting follows in cells of its own).
-pub fn cells(doc: &Document) -> Vec<Cell> {
+pub fn cells(doc: &Document, key: &Key) -> Vec<Cell> {
     let scene = &doc.scene;
-    let needs = Needs::of(scene);
+    let needs = Needs::of(scene, key);
     let n = needs.lights;
     let mut cells = vec![
-        Cell::Markdown(t!("nb-title", scene = escape::markdown::text(&doc.name), rules = scene.rules.to_string())),
+        Cell::Markdown(t!("nb-title", scene = escape::markdown::text(&doc.name), rules = needs.rules.to_string())),
         Cell::Markdown(t!("nb-vertex")),
         Cell::Code("import math as m\nimport numpy as np".into()),
         Cell::Code(format!(
-            "gw = 1024\ngh = 768\nvertexPos = {}\nvertexNormal = {}",
+            "gw = 1024\ngh = 768\n{} = {}\n{} = {}",
+            Q::VertexPos.name(),
             array4(scene.vertex.position),
+            Q::VertexNormal.name(),
             array4(scene.vertex.normal.extend(0.0))
         )),
         Cell::Markdown(t!("nb-light-material")),
         Cell::Code(light_positions(scene)),
-        Cell::Code(givens(scene)),
+        Cell::Code(givens(scene, &needs)),
     ];
-    if let Some(settings) = settings(scene) {
+    if let Some(settings) = settings(&needs) {
         cells.push(Cell::Markdown(t!("nb-settings")));
         cells.push(Cell::Code(settings));
     }
@@ -169,8 +185,8 @@ pub fn cells(doc: &Document) -> Vec<Cell> {
     cells.push(Cell::Code(per_light(n, &["Iamb"], &format!("Iamb[⟨i⟩] = Lamb[⟨i⟩]*matAmb\n{}", print("Iamb", true)))));
     cells.push(Cell::Markdown(t!("nb-diffuse")));
     cells.push(Cell::Code(diffuse(n, "")));
-    cells.push(Cell::Markdown(specular_markdown(scene)));
-    cells.push(Cell::Code(specular(scene, n, "")));
+    cells.push(Cell::Markdown(specular_markdown(&needs)));
+    cells.push(Cell::Code(specular(&needs, n, "")));
     cells.push(Cell::Markdown(t!("nb-attenuation")));
     cells.push(Cell::Code(attenuation(&needs)));
     if needs.spot {
@@ -179,7 +195,7 @@ pub fn cells(doc: &Document) -> Vec<Cell> {
     }
     cells.push(Cell::Markdown(t!("nb-final")));
     cells.push(Cell::Code(final_colour(scene, &needs, "")));
-    if scene.light_model.two_sided {
+    if needs.two_sided {
         cells.push(Cell::Markdown(t!("nb-back")));
         cells.push(Cell::Code(back_side(scene, &needs)));
     }
@@ -188,11 +204,12 @@ pub fn cells(doc: &Document) -> Vec<Cell> {
 
 /// `lightPos`: one array, or a list of them.
 fn light_positions(scene: &Scene) -> String {
-    per_light_given(scene, "lightPos", |l| array4(l.position))
+    per_light_given(scene, Q::LightPos, |l| array4(l.position))
 }
 
 /// A given per light: `name = value;` for one light, `name = [v0, v1]` for several.
-fn per_light_given(scene: &Scene, name: &str, value: impl Fn(&Light) -> String) -> String {
+fn per_light_given(scene: &Scene, q: Quantity, value: impl Fn(&Light) -> String) -> String {
+    let name = q.name();
     if scene.lights.len() == 1 {
         format!("{name} = {};", value(&scene.lights[0]))
     } else {
@@ -201,41 +218,43 @@ fn per_light_given(scene: &Scene, name: &str, value: impl Fn(&Light) -> String) 
 }
 
 /// The light and material cell: the worksheet's givens, and what this scene adds.
-fn givens(scene: &Scene) -> String {
+fn givens(scene: &Scene, needs: &Needs) -> String {
     let mut s = String::new();
     s.push('\n');
-    s.push_str(&per_light_given(scene, "Lamb", |l| colour(l.ambient)));
+    s.push_str(&per_light_given(scene, Q::LightAmbient, |l| colour(l.ambient)));
     s.push('\n');
-    s.push_str(&per_light_given(scene, "Ldif", |l| colour(l.diffuse)));
+    s.push_str(&per_light_given(scene, Q::LightDiffuse, |l| colour(l.diffuse)));
     s.push('\n');
-    s.push_str(&per_light_given(scene, "Lspec", |l| colour(l.specular)));
+    s.push_str(&per_light_given(scene, Q::LightSpecular, |l| colour(l.specular)));
     s.push('\n');
-    for (k, name) in ["atC", "atLin", "atQuad"].iter().enumerate() {
-        s.push_str(&per_light_given(scene, name, |l| {
+    for (k, q) in [Q::AttConstant, Q::AttLinear, Q::AttQuadratic].into_iter().enumerate() {
+        s.push_str(&per_light_given(scene, q, |l| {
             let v = num(l.attenuation[k]);
             if k == 0 && !v.contains(['.', 'e']) { format!("{v}.") } else { v }
         }));
         s.push('\n');
     }
     s.push('\n');
-    if scene.lights.iter().any(Light::is_spot) {
-        s.push_str(&per_light_given(scene, "lightSpotDir", |l| array4(l.spot_direction.extend(0.0))));
+    if needs.spot {
+        s.push_str(&per_light_given(scene, Q::SpotDirection, |l| array4(l.spot_direction.extend(0.0))));
         s.push('\n');
-        s.push_str(&per_light_given(scene, "spotCutoff", |l| num(l.spot_cutoff)));
+        s.push_str(&per_light_given(scene, Q::SpotCutoff, |l| num(l.spot_cutoff)));
         s.push('\n');
-        s.push_str(&per_light_given(scene, "spotCoef", |l| num(l.spot_exponent)));
+        s.push_str(&per_light_given(scene, Q::SpotExponent, |l| num(l.spot_exponent)));
         s.push('\n');
     } else {
-        s.push_str("#lightSpotDir = [0 0 0 0];\n#spotCutoff = 90;\n#spotCoef = 60;\n");
+        // The worksheet's own lines, commented out: no light here is a spotlight.
+        let [dir, cutoff, coef] = [Q::SpotDirection, Q::SpotCutoff, Q::SpotExponent].map(Q::name);
+        s.push_str(&format!("#{dir} = [0 0 0 0];\n#{cutoff} = 90;\n#{coef} = 60;\n"));
     }
     s.push('\n');
-    s.push_str(&material(&scene.material, "", scene.rules.emission()));
+    s.push_str(&material(&scene.material, "", needs.rules.emission()));
     if let Some(back) = &scene.back_material {
         s.push('\n');
-        s.push_str(&material(back, "Back", scene.rules.emission()));
+        s.push_str(&material(back, "Back", needs.rules.emission()));
     }
-    if scene.rules.scene_ambient() {
-        s.push_str(&format!("\nsceneAmb = {};\n", colour(scene.light_model.ambient)));
+    if needs.rules.scene_ambient() {
+        s.push_str(&format!("\n{} = {};\n", Q::SceneAmbient.name(), colour(scene.light_model.ambient)));
     }
     s.trim_end().to_string() + "\n"
 }
@@ -255,45 +274,46 @@ fn material(m: &Material, suffix: &str, emission: bool) -> String {
         Some(n) => format!("#{n}\n"),
         None => String::new(),
     };
-    s.push_str(&format!("matAmb{suffix} = {};\n", colour(m.ambient)));
-    s.push_str(&format!("matDif{suffix} = {};\n", colour(m.diffuse)));
-    s.push_str(&format!("matSpec{suffix} = {};\n", colour(m.specular)));
-    s.push_str(&format!("ns{suffix} = {};\n", shininess(m.shininess)));
+    let mut line = |q: Quantity, value: String| s.push_str(&format!("{}{suffix} = {value};\n", q.name()));
+    line(Q::MatAmbient, colour(m.ambient));
+    line(Q::MatDiffuse, colour(m.diffuse));
+    line(Q::MatSpecular, colour(m.specular));
+    line(Q::Shininess, shininess(m.shininess));
     if emission {
-        s.push_str(&format!("matEmi{suffix} = {};\n", colour(m.emission)));
+        line(Q::MatEmission, colour(m.emission));
     }
     if m.diffuse.w != 1.0 {
-        s.push_str(&format!("matAlpha{suffix} = {};\n", num(m.diffuse.w)));
+        line(Q::MatAlpha, num(m.diffuse.w));
     }
     s
 }
 
 /// The settings the worksheet does not have, as variables (written only when the scene
 /// departs from the worksheet's): what the cells below were written for.
-fn settings(scene: &Scene) -> Option<String> {
+fn settings(needs: &Needs) -> Option<String> {
     let mut lines = Vec::new();
-    let rules = match scene.rules.set {
+    let rules = match needs.rules.set {
         RuleSet::Worksheet => "worksheet",
         RuleSet::OpenGl => "opengl",
         RuleSet::PhongDemo => "phong-demo",
     };
-    if scene.rules.set != RuleSet::Worksheet {
+    if needs.rules.set != RuleSet::Worksheet {
         lines.push(format!("rules = {}", string(rules)));
     }
     let specular_default =
-        if scene.rules.set == RuleSet::PhongDemo { SpecularModel::Phong } else { SpecularModel::BlinnPhong };
-    if scene.rules.specular != specular_default {
-        let s = if scene.rules.specular == SpecularModel::Phong { "phong" } else { "blinn-phong" };
+        if needs.rules.set == RuleSet::PhongDemo { SpecularModel::Phong } else { SpecularModel::BlinnPhong };
+    if needs.rules.specular != specular_default {
+        let s = if needs.rules.specular == SpecularModel::Phong { "phong" } else { "blinn-phong" };
         lines.push(format!("specular = {}", string(s)));
     }
-    if scene.normal_mode != NormalMode::Normalize {
-        let m = if scene.normal_mode == NormalMode::AsIs { "as-is" } else { "rescale" };
+    if needs.normals != NormalMode::Normalize {
+        let m = if needs.normals == NormalMode::AsIs { "as-is" } else { "rescale" };
         lines.push(format!("normalMode = {}", string(m)));
     }
-    if scene.light_model.two_sided {
+    if needs.two_sided {
         lines.push("twoSided = True".into());
     }
-    if scene.light_model.separate_specular {
+    if needs.separate_specular {
         lines.push("separateSpecular = True".into());
     }
     (!lines.is_empty()).then(|| lines.join("\n"))
@@ -301,11 +321,11 @@ fn settings(scene: &Scene) -> Option<String> {
 
 /// `mview`, and each light's modelview where it differs.
 fn modelview(scene: &Scene, needs: &Needs) -> String {
-    let mut s = format!("mview = {};\n", matrix(&scene.eye_from_object()));
+    let mut s = format!("{} = {};\n", Q::Modelview.name(), matrix(&scene.eye_from_object()));
     if needs.light_mview {
         s.push_str(&t!("nb-light-mview-comment"));
         s.push('\n');
-        s.push_str(&per_light_given(scene, "lightMview", |l| matrix(&scene.eye_from_light(l))));
+        s.push_str(&per_light_given(scene, Q::LightModelview, |l| matrix(&scene.eye_from_light(l))));
         s.push('\n');
     }
     s.push_str("\nprint(\"modelview = \\n\", mview)");
@@ -316,7 +336,7 @@ fn modelview(scene: &Scene, needs: &Needs) -> String {
 fn vectors(scene: &Scene, needs: &Needs) -> String {
     let n = needs.lights;
     let mut s = String::new();
-    match scene.rules.normal_transform() {
+    match needs.rules.normal_transform() {
         NormalTransform::Modelview => s.push_str("vertexNormal = np.matmul(mview, vertexNormal)\n"),
         NormalTransform::InverseTranspose => {
             s.push_str(&t!("nb-normal-matrix-comment"));
@@ -352,7 +372,7 @@ fn vectors(scene: &Scene, needs: &Needs) -> String {
     }
     s.push('\n');
     let local = scene.light_model.local_viewer;
-    if scene.rules.viewer_from_eye_plane() || local {
+    if needs.rules.viewer_from_eye_plane() || local {
         s.push_str("#localViewer\n#true\n");
         s.push_str(if local { "obs = np.array([0, 0, 0, 1])\n" } else { "#obs = np.array([0, 0, 0, 1])\n" });
         s.push_str("\n#false\n");
@@ -388,14 +408,14 @@ fn diffuse(n: usize, suffix: &str) -> String {
 
 /// The specular cell: Blinn-Phong's H (the worksheet's) or Phong's R, gated as the rules
 /// say.
-fn specular(scene: &Scene, n: usize, suffix: &str) -> String {
+fn specular(needs: &Needs, n: usize, suffix: &str) -> String {
     let back = !suffix.is_empty();
     let normal = if back { "-vertexNormal" } else { "vertexNormal" };
     let mat = if back { "matSpecBack" } else { "matSpec" };
     let ns = if back { "nsBack" } else { "ns" };
     let ct = format!("cosTheta{suffix}");
     let ispec = format!("Ispec{suffix}");
-    let (vector, cos_name, cos_line, assigned) = match scene.rules.specular {
+    let (vector, cos_name, cos_line, assigned) = match needs.rules.specular {
         SpecularModel::BlinnPhong => {
             let cos = format!("cosBeta{suffix}");
             let lines = if back {
@@ -411,7 +431,7 @@ fn specular(scene: &Scene, n: usize, suffix: &str) -> String {
         }
         SpecularModel::Phong => {
             let cos = format!("cosAlpha{suffix}");
-            let dot = if scene.rules.reflect_clamped() {
+            let dot = if needs.rules.reflect_clamped() {
                 "max(np.dot(vertexNormal, vlv[⟨i⟩]), 0)"
             } else {
                 "np.dot(vertexNormal, vlv[⟨i⟩])"
@@ -429,7 +449,7 @@ fn specular(scene: &Scene, n: usize, suffix: &str) -> String {
             (lines, cos.clone(), "alpha", if back { vec![cos] } else { vec!["R".to_string(), cos] })
         }
     };
-    let power = match scene.rules.specular_gate() {
+    let power = match needs.rules.specular_gate() {
         SpecularGate::None => format!("{ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns})\n"),
         SpecularGate::LitSide => format!(
             "{}\nif ({ct}[⟨i⟩] <= 0):\n    {ispec}[⟨i⟩] = np.array([0, 0, 0, 0])\nelse:\n    {ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns})\n",
@@ -446,8 +466,8 @@ fn specular(scene: &Scene, n: usize, suffix: &str) -> String {
 }
 
 /// The specular cell's explanation for the scene's model.
-fn specular_markdown(scene: &Scene) -> String {
-    match scene.rules.specular {
+fn specular_markdown(needs: &Needs) -> String {
+    match needs.rules.specular {
         SpecularModel::BlinnPhong => t!("nb-specular-blinn"),
         SpecularModel::Phong => t!("nb-specular-phong"),
     }
@@ -482,10 +502,10 @@ fn final_colour(scene: &Scene, needs: &Needs, suffix: &str) -> String {
     let back = !suffix.is_empty();
     let n = needs.lights;
     let mut s = String::new();
-    let sep = scene.light_model.separate_specular;
+    let sep = needs.separate_specular;
     let (iamb, idif, ispec) = if back { ("IambBack", "IdifBack", "IspecBack") } else { ("Iamb", "Idif", "Ispec") };
     let (i_name, ilight, isec) = (format!("I{suffix}"), format!("Ilight{suffix}"), format!("Isec{suffix}"));
-    if needs.worksheet_shape(scene) && !back {
+    if needs.worksheet_shape() && !back {
         s.push_str("I = (Iamb + Idif + Ispec)/at\n");
     } else {
         // Without a spotlight, each light's spot factor is 1 (explain prints it so).
@@ -557,7 +577,7 @@ fn back_side(scene: &Scene, needs: &Needs) -> String {
     if scene.back_material.is_none() {
         let mut names = vec!["matAmb", "matDif", "matSpec", "ns"];
         // Written by the material cell only where the rules have emission, or the alpha is not 1.
-        if scene.rules.emission() {
+        if needs.rules.emission() {
             names.push("matEmi");
         }
         if scene.material.diffuse.w != 1.0 {
@@ -574,7 +594,7 @@ fn back_side(scene: &Scene, needs: &Needs) -> String {
     s.push('\n');
     s.push_str(&diffuse(n, "Back"));
     s.push('\n');
-    s.push_str(&specular(scene, n, "Back"));
+    s.push_str(&specular(needs, n, "Back"));
     s.push('\n');
     s.push_str(&final_colour(scene, needs, "Back"));
     s

@@ -25,6 +25,8 @@ use crate::formats::escape::cpp::comment;
 use crate::model::rules::{RuleSet, SpecularModel};
 use crate::model::scene::{LightPlacement, Material, NormalMode, Scene};
 use crate::model::view::ObjectKind;
+use crate::model::vocabulary::Quantity as Q;
+use crate::specialise::plan::Key;
 use crate::t;
 
 /// A C++ float literal: the value as a float holds it, in its shortest form.
@@ -48,10 +50,12 @@ fn vec3(v: DVec3) -> String {
 }
 
 /// The three files, named as an oF project's `src/` holds them.
-pub fn app(doc: &Document) -> Result<Vec<super::File>, TemplateError> {
+/// `key` is the plan's key of the scene the app draws ([`Document::shaded_scene`]): it
+/// says which terms the lighting has.
+pub fn app(doc: &Document, key: &Key) -> Result<Vec<super::File>, TemplateError> {
     Ok(vec![
         ("ofApp.h".into(), header(doc)?),
-        ("ofApp.cpp".into(), source(doc)?),
+        ("ofApp.cpp".into(), source(doc, key)?),
         ("main.cpp".into(), MAIN.fill(&[("renderer_comment", Fill::Text(t!("of-main-comment")))])?),
     ])
 }
@@ -88,15 +92,15 @@ fn up_for(dir: DVec3) -> DVec3 {
     if dir.normalize_or_zero().cross(DVec3::Y).length() < 1e-3 { DVec3::X } else { DVec3::Y }
 }
 
-fn source(doc: &Document) -> Result<String, TemplateError> {
+fn source(doc: &Document, key: &Key) -> Result<String, TemplateError> {
     let scene = doc.shaded_scene();
     SOURCE.fill(&[
         ("source_comment", Fill::Text(t!("of-source-comment"))),
         ("camera", Fill::Code(camera_calls(&scene))),
-        ("lights", Fill::Code(light_calls(&scene))),
+        ("lights", Fill::Code(light_calls(&scene, key))),
         ("material_comment", Fill::Text(t!("of-material-comment"))),
-        ("material", Fill::Code(material_calls("material", &scene.material, scene.rules.emission()))),
-        ("draw", Fill::Code(draw_body(doc, &scene))),
+        ("material", Fill::Code(material_calls("material", &scene.material, key.rules.emission()))),
+        ("draw", Fill::Code(draw_body(doc, &scene, key))),
     ])
 }
 
@@ -122,7 +126,7 @@ fn camera_calls(scene: &Scene) -> String {
 }
 
 /// The lights oF places: point, spot or directional, in world coordinates.
-fn light_calls(scene: &Scene) -> String {
+fn light_calls(scene: &Scene, key: &Key) -> String {
     let mut s = String::new();
     for (k, &i) in oflights(scene).iter().enumerate() {
         let l = &scene.lights[i];
@@ -141,13 +145,14 @@ fn light_calls(scene: &Scene) -> String {
             ));
         } else {
             let p = pos.truncate() / pos.w;
-            if l.is_spot() {
+            let spot = key.lights[i].spot;
+            if spot {
                 s.push_str(&format!("    {name}.setSpotlight({}, {});\n", f(l.spot_cutoff), f(l.spot_exponent)));
             } else {
                 s.push_str(&format!("    {name}.setPointLight();\n"));
             }
             s.push_str(&format!("    {name}.setPosition({}, {}, {});\n", f(p.x), f(p.y), f(p.z)));
-            if l.is_spot() {
+            if spot {
                 s.push_str(&format!(
                     "    {name}.lookAt({}, {});  // {}\n",
                     vec3(p + spot_dir),
@@ -171,13 +176,13 @@ fn light_calls(scene: &Scene) -> String {
 
 /// `draw()`: the background, the camera, the lighting model (raw GL for what oF cannot
 /// say), the lights, the material and the object.
-fn draw_body(doc: &Document, scene: &Scene) -> String {
+fn draw_body(doc: &Document, scene: &Scene, key: &Key) -> String {
     let view = &doc.view;
     let mut s = String::new();
     let bg = view.background.map(|c| f64::from(c) * 255.0);
     s.push_str(&format!("    ofBackground({}, {}, {});\n    ofEnableDepthTest();\n", f(bg[0]), f(bg[1]), f(bg[2])));
     s.push_str("    cam.begin();\n    ofEnableLighting();\n");
-    s.push_str(&lighting_model(scene));
+    s.push_str(&lighting_model(scene, key));
     for (k, _) in oflights(scene).iter().enumerate() {
         s.push_str(&format!("    light{k}.enable();\n"));
     }
@@ -185,7 +190,7 @@ fn draw_body(doc: &Document, scene: &Scene) -> String {
     s.push_str("    material.begin();\n");
     if let Some(back) = &scene.back_material {
         s.push_str(&format!("    // {}\n", comment(&t!("of-back-material-comment"))));
-        s.push_str(&raw_material("GL_BACK", back, scene.rules.emission()));
+        s.push_str(&raw_material("GL_BACK", back, key.rules.emission()));
     }
     s.push_str(&object(doc));
     s.push_str("    material.end();\n");
@@ -218,54 +223,55 @@ fn material_calls(name: &str, m: &Material, emission: bool) -> String {
 fn raw_material(face: &str, m: &Material, emission: bool) -> String {
     let e = emission_as_drawn(m, emission);
     let mut s = String::from("    {\n");
-    for (param, c) in
-        [("GL_AMBIENT", m.ambient), ("GL_DIFFUSE", m.diffuse), ("GL_SPECULAR", m.specular), ("GL_EMISSION", e)]
+    for (q, c) in
+        [(Q::MatAmbient, m.ambient), (Q::MatDiffuse, m.diffuse), (Q::MatSpecular, m.specular), (Q::MatEmission, e)]
     {
+        let param = q.term().gl;
         let var = param.trim_start_matches("GL_").to_lowercase();
         s.push_str(&format!(
             "        const GLfloat {var}[4] = {};\n        glMaterialfv({face}, {param}, {var});\n",
             gl_array(c)
         ));
     }
-    s.push_str(&format!("        glMaterialf({face}, GL_SHININESS, {});\n    }}\n", f(m.shininess)));
+    s.push_str(&format!("        glMaterialf({face}, {}, {});\n    }}\n", Q::Shininess.term().gl, f(m.shininess)));
     s
 }
 
 /// The light model: oF's global ambient, and the raw GL for what oF cannot say.
-fn lighting_model(scene: &Scene) -> String {
+fn lighting_model(scene: &Scene, key: &Key) -> String {
     let lm = &scene.light_model;
     let mut s = String::new();
-    if scene.rules.scene_ambient() {
+    if key.rules.scene_ambient() {
         s.push_str(&format!("    ofSetGlobalAmbientColor({});\n", colour(lm.ambient)));
     } else {
         s.push_str(&format!("    // {}\n", comment(&t!("of-no-scene-ambient"))));
         s.push_str("    ofSetGlobalAmbientColor(ofFloatColor(0, 0, 0, 1));\n");
     }
-    if scene.rules.set != RuleSet::OpenGl {
-        s.push_str(&format!("    // {}\n", comment(&t!("of-rules-comment", rules = scene.rules.to_string()))));
+    if key.rules.set != RuleSet::OpenGl {
+        s.push_str(&format!("    // {}\n", comment(&t!("of-rules-comment", rules = key.rules.to_string()))));
     }
-    if scene.rules.specular == SpecularModel::Phong {
+    if key.rules.specular == SpecularModel::Phong {
         s.push_str(&format!("    // {}\n", comment(&t!("of-phong-specular-comment"))));
     }
-    if lm.local_viewer {
+    if key.local_viewer {
         s.push_str(&format!(
             "    // {}\n    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_TRUE);\n",
             comment(&t!("of-local-viewer-comment"))
         ));
     }
-    if lm.two_sided {
+    if key.two_sided {
         s.push_str(&format!(
             "    // {}\n    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);\n",
             comment(&t!("of-two-sided-comment"))
         ));
     }
-    if lm.separate_specular {
+    if key.separate_specular {
         s.push_str(&format!(
             "    // {}\n    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);\n",
             comment(&t!("of-separate-specular-comment"))
         ));
     }
-    match scene.normal_mode {
+    match key.normals {
         NormalMode::Normalize => {}
         NormalMode::AsIs => {
             s.push_str(&format!("    // {}\n    glDisable(GL_NORMALIZE);\n", comment(&t!("of-normal-as-is-comment"))))
@@ -299,7 +305,8 @@ fn eye_lights(scene: &Scene) -> String {
             f(d.z)
         ));
         s.push_str("        glPopMatrix();\n");
-        for (param, c) in [("GL_AMBIENT", l.ambient), ("GL_DIFFUSE", l.diffuse), ("GL_SPECULAR", l.specular)] {
+        for (q, c) in [(Q::LightAmbient, l.ambient), (Q::LightDiffuse, l.diffuse), (Q::LightSpecular, l.specular)] {
+            let param = q.term().gl;
             let var = param.trim_start_matches("GL_").to_lowercase();
             s.push_str(&format!(
                 "        const GLfloat {var}[4] = {};\n        glLightfv({gl}, {param}, {var});\n",
@@ -311,9 +318,8 @@ fn eye_lights(scene: &Scene) -> String {
             f(l.spot_cutoff),
             f(l.spot_exponent)
         ));
-        for (k2, param) in
-            ["GL_CONSTANT_ATTENUATION", "GL_LINEAR_ATTENUATION", "GL_QUADRATIC_ATTENUATION"].iter().enumerate()
-        {
+        for (k2, q) in [Q::AttConstant, Q::AttLinear, Q::AttQuadratic].into_iter().enumerate() {
+            let param = q.term().gl;
             s.push_str(&format!("        glLightf({gl}, {param}, {});\n", f(l.attenuation[k2])));
         }
         s.push_str(&format!("        glEnable({gl});\n    }}\n"));

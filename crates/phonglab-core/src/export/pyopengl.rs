@@ -24,12 +24,16 @@ use crate::formats::escape::python::{comment, triple_quoted};
 use crate::model::rules::RuleSet;
 use crate::model::scene::{Light, LightPlacement, Scene};
 use crate::model::view::{Framing, LightingSpace, ObjectKind, Shading, View};
+use crate::model::vocabulary::Quantity as Q;
+use crate::specialise::plan::Key;
 use crate::t;
 use crate::teach::shader::{Lang, ShaderShading};
 
 /// The program's text for `doc`, or why it cannot be written (a Flat view: the generated
 /// shaders are Gouraud and Phong).
-pub fn program(doc: &Document) -> Result<String, String> {
+/// `key` is the plan's key of the scene the program draws ([`Document::shaded_scene`]):
+/// it says which terms the lighting has.
+pub fn program(doc: &Document, key: &Key) -> Result<String, String> {
     let shading = match doc.view.shading {
         Shading::Gouraud => ShaderShading::Gouraud,
         Shading::Phong => ShaderShading::Phong,
@@ -64,7 +68,7 @@ pub fn program(doc: &Document) -> Result<String, String> {
             ("uniforms_comment", text(t!("py-uniforms-comment"))),
             ("uniforms", code(uniforms.collect::<Vec<_>>().join(", "))),
             ("matrices", code(matrices(&setup))),
-            ("lighting_state", code(lighting_state(scene))),
+            ("lighting_state", code(lighting_state(scene, key))),
             ("reader_doc", text(t!("py-reader-doc"))),
             ("normal_matrix_comment", text(t!("py-normal-matrix-comment"))),
             ("object", code(object(&doc.view)?)),
@@ -144,7 +148,7 @@ fn rgba(c: glam::DVec4) -> String {
 }
 
 /// The fixed-function calls that set the scene's lighting state.
-fn lighting_state(scene: &Scene) -> String {
+fn lighting_state(scene: &Scene, key: &Key) -> String {
     let mut s = format!(
         "def set_lighting_state():\n    \"\"\"{}\"\"\"\n    glMatrixMode(GL_MODELVIEW)\n",
         triple_quoted(&t!("py-state-doc"), false)
@@ -155,22 +159,22 @@ fn lighting_state(scene: &Scene) -> String {
         s.push_str(&format!(
             "    # GL_LIGHT{i}: {placement}\n    light_modelview = {matrix}\n    glLoadMatrixf(light_modelview.T)\n"
         ));
-        s.push_str(&format!("    glLightfv({light}, GL_POSITION, {})\n", rgba(l.position)));
+        s.push_str(&format!("    glLightfv({light}, {}, {})\n", gl(Q::LightPos), rgba(l.position)));
         s.push_str(&format!(
-            "    glLightfv({light}, GL_SPOT_DIRECTION, [{}, {}, {}])\n",
+            "    glLightfv({light}, {}, [{}, {}, {}])\n",
+            gl(Q::SpotDirection),
             num(l.spot_direction.x),
             num(l.spot_direction.y),
             num(l.spot_direction.z)
         ));
-        s.push_str(&format!("    glLightfv({light}, GL_AMBIENT, {})\n", rgba(l.ambient)));
-        s.push_str(&format!("    glLightfv({light}, GL_DIFFUSE, {})\n", rgba(l.diffuse)));
-        s.push_str(&format!("    glLightfv({light}, GL_SPECULAR, {})\n", rgba(l.specular)));
-        s.push_str(&format!("    glLightf({light}, GL_SPOT_CUTOFF, {})\n", num(l.spot_cutoff)));
-        s.push_str(&format!("    glLightf({light}, GL_SPOT_EXPONENT, {})\n", num(l.spot_exponent)));
-        for (k, name) in
-            ["GL_CONSTANT_ATTENUATION", "GL_LINEAR_ATTENUATION", "GL_QUADRATIC_ATTENUATION"].iter().enumerate()
-        {
-            s.push_str(&format!("    glLightf({light}, {name}, {})\n", num(l.attenuation[k])));
+        for (q, c) in [(Q::LightAmbient, l.ambient), (Q::LightDiffuse, l.diffuse), (Q::LightSpecular, l.specular)] {
+            s.push_str(&format!("    glLightfv({light}, {}, {})\n", gl(q), rgba(c)));
+        }
+        for (q, v) in [(Q::SpotCutoff, l.spot_cutoff), (Q::SpotExponent, l.spot_exponent)] {
+            s.push_str(&format!("    glLightf({light}, {}, {})\n", gl(q), num(v)));
+        }
+        for (k, q) in [Q::AttConstant, Q::AttLinear, Q::AttQuadratic].into_iter().enumerate() {
+            s.push_str(&format!("    glLightf({light}, {}, {})\n", gl(q), num(l.attenuation[k])));
         }
         s.push_str(&format!("    glEnable({light})\n"));
     }
@@ -181,27 +185,32 @@ fn lighting_state(scene: &Scene) -> String {
     };
     for face in faces {
         let m = if *face == "GL_BACK" { scene.back() } else { &scene.material };
-        s.push_str(&format!("    glMaterialfv({face}, GL_AMBIENT, {})\n", rgba(m.ambient)));
-        s.push_str(&format!("    glMaterialfv({face}, GL_DIFFUSE, {})\n", rgba(m.diffuse)));
-        s.push_str(&format!("    glMaterialfv({face}, GL_SPECULAR, {})\n", rgba(m.specular)));
-        s.push_str(&format!("    glMaterialfv({face}, GL_EMISSION, {})\n", rgba(m.emission)));
-        s.push_str(&format!("    glMaterialf({face}, GL_SHININESS, {})\n", num(m.shininess)));
+        let colours = [
+            (Q::MatAmbient, m.ambient),
+            (Q::MatDiffuse, m.diffuse),
+            (Q::MatSpecular, m.specular),
+            (Q::MatEmission, m.emission),
+        ];
+        for (q, c) in colours {
+            s.push_str(&format!("    glMaterialfv({face}, {}, {})\n", gl(q), rgba(c)));
+        }
+        s.push_str(&format!("    glMaterialf({face}, {}, {})\n", gl(Q::Shininess), num(m.shininess)));
     }
     let lm = &scene.light_model;
-    s.push_str(&format!("    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, {})\n", rgba(lm.ambient)));
+    s.push_str(&format!("    glLightModelfv({}, {})\n", gl(Q::SceneAmbient), rgba(lm.ambient)));
     s.push_str(&format!(
         "    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, {})\n",
-        if lm.local_viewer { "GL_TRUE" } else { "GL_FALSE" }
+        if key.local_viewer { "GL_TRUE" } else { "GL_FALSE" }
     ));
     s.push_str(&format!(
         "    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, {})\n",
-        if lm.two_sided { "GL_TRUE" } else { "GL_FALSE" }
+        if key.two_sided { "GL_TRUE" } else { "GL_FALSE" }
     ));
     s.push_str(&format!(
         "    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, {})\n",
-        if lm.separate_specular { "GL_SEPARATE_SPECULAR_COLOR" } else { "GL_SINGLE_COLOR" }
+        if key.separate_specular { "GL_SEPARATE_SPECULAR_COLOR" } else { "GL_SINGLE_COLOR" }
     ));
-    let normals = match scene.normal_mode {
+    let normals = match key.normals {
         crate::model::scene::NormalMode::Normalize => "    glEnable(GL_NORMALIZE)\n",
         crate::model::scene::NormalMode::Rescale => "    glEnable(GL_RESCALE_NORMAL)\n",
         crate::model::scene::NormalMode::AsIs => "",
@@ -275,4 +284,9 @@ fn object(view: &View) -> Result<String, String> {
         }
     }
     Ok(s + "\n\n")
+}
+
+/// OpenGL's name for `q` (its `GL_` enum), from the vocabulary.
+fn gl(q: Q) -> &'static str {
+    q.term().gl
 }

@@ -30,6 +30,7 @@ use crate::formats::document::Document;
 use crate::model::camera::CameraSpec;
 use crate::model::rules::{Rules, SpecularModel};
 use crate::model::scene::{Light, LightPlacement, Material, NormalMode, Scene, Vertex};
+use crate::model::vocabulary::Quantity::{self, self as Q};
 use crate::t;
 
 /// A value as the reader evaluates it.
@@ -77,41 +78,16 @@ pub const MAX_TOTAL_ELEMENTS: usize = 1_000_000;
 /// The most bytes of strings all the names assigned hold together.
 pub const MAX_TOTAL_BYTES: usize = 16 << 20;
 
-/// The names read as givens.
-const GIVENS: [&str; 32] = [
-    "vertexPos",
-    "vertexNormal",
-    "lightPos",
-    "Lamb",
-    "Ldif",
-    "Lspec",
-    "atC",
-    "atLin",
-    "atQuad",
-    "lightSpotDir",
-    "spotCutoff",
-    "spotCoef",
-    "matAmb",
-    "matDif",
-    "matSpec",
-    "ns",
-    "mview",
-    "lightMview",
-    "matEmi",
-    "matAlpha",
-    "sceneAmb",
-    "matAmbBack",
-    "matDifBack",
-    "matSpecBack",
-    "nsBack",
-    "matEmiBack",
-    "matAlphaBack",
-    "rules",
-    "specular",
-    "normalMode",
-    "twoSided",
-    "separateSpecular",
-];
+/// phonglab's own settings a notebook may assign beside the worksheet's givens.
+const SETTINGS: [&str; 5] = ["rules", "specular", "normalMode", "twoSided", "separateSpecular"];
+
+/// Is `name` read as a given: a worksheet quantity given before the calculation (the
+/// back material's too, `matDifBack`), or one of phonglab's settings?
+fn is_given(name: &str) -> bool {
+    Quantity::givens().any(|q| q.name() == name)
+        || Quantity::MATERIAL.iter().any(|q| q.back_name() == name)
+        || SETTINGS.contains(&name)
+}
 
 /// A line of code and where it is (`line 7`, or `cell 4, line 2` in a notebook).
 struct SourceLine {
@@ -144,11 +120,11 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
         };
         if lhs == "obs" {
             // The worksheet's switch: the active `obs` line says which viewer.
-            local_viewer = !rhs.contains("vertexPos")
+            local_viewer = !rhs.contains(Q::VertexPos.name())
                 && value.as_ref().is_ok_and(|v| v.numbers() == Some(vec![0.0, 0.0, 0.0, 1.0]));
             continue;
         }
-        let is_given = GIVENS.contains(&lhs);
+        let is_given = is_given(lhs);
         match value {
             Ok(v) => {
                 if is_given && let Some(x) = v.first_not_finite() {
@@ -180,8 +156,9 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
         }
     }
     let assigned = given.keys().chain(&refused);
-    if !assigned.into_iter().any(|k| ["vertexPos", "vertexNormal", "lightPos", "matDif", "mview"].contains(&k.as_str()))
-    {
+    if !assigned.into_iter().any(|k| {
+        [Q::VertexPos, Q::VertexNormal, Q::LightPos, Q::MatDiffuse, Q::Modelview].iter().any(|q| q.name() == k.as_str())
+    }) {
         return Err(ImportError::NoGivens(t!("import-no-givens")));
     }
     let mut r = Reader { given, notices, refused };
@@ -576,7 +553,7 @@ struct Reader {
 impl Reader {
     /// How many lights: the length of a list of positions, else one.
     fn light_count(&self) -> usize {
-        match self.given.get("lightPos") {
+        match self.given.get(Q::LightPos.name()) {
             Some((Value::List(items), _)) if items.iter().all(|v| matches!(v, Value::List(_))) => items.len(),
             _ => 1,
         }
@@ -586,9 +563,9 @@ impl Reader {
     /// value per light (one nesting deeper than a single value), else the one value.
     fn per_light(&self, name: &str, i: usize, n: usize) -> Option<(Value, String)> {
         let (v, place) = self.given.get(name)?;
-        let single_depth = match name {
-            "lightMview" => 2,
-            "atC" | "atLin" | "atQuad" | "spotCutoff" | "spotCoef" => 0,
+        let single_depth = match Quantity::named(name) {
+            Some(Q::LightModelview) => 2,
+            Some(Q::AttConstant | Q::AttLinear | Q::AttQuadratic | Q::SpotCutoff | Q::SpotExponent) => 0,
             _ => 1,
         };
         match v {
@@ -679,25 +656,25 @@ impl Reader {
     }
 
     fn material(&mut self, suffix: &str, base: &Material) -> Material {
-        let g = |s: &str| format!("{s}{suffix}");
+        let g = |q: Q| format!("{}{suffix}", q.name());
         let mut m = base.clone();
-        m.ambient = self.colour(&g("matAmb"), 0, 1, base.ambient);
-        m.diffuse = self.colour(&g("matDif"), 0, 1, base.diffuse);
-        m.specular = self.colour(&g("matSpec"), 0, 1, base.specular);
-        m.shininess = self.number(&g("ns"), 0, 1, base.shininess);
-        if self.given.contains_key(&g("matEmi")) {
-            m.emission = self.colour(&g("matEmi"), 0, 1, base.emission);
+        m.ambient = self.colour(&g(Q::MatAmbient), 0, 1, base.ambient);
+        m.diffuse = self.colour(&g(Q::MatDiffuse), 0, 1, base.diffuse);
+        m.specular = self.colour(&g(Q::MatSpecular), 0, 1, base.specular);
+        m.shininess = self.number(&g(Q::Shininess), 0, 1, base.shininess);
+        if self.given.contains_key(&g(Q::MatEmission)) {
+            m.emission = self.colour(&g(Q::MatEmission), 0, 1, base.emission);
         }
-        m.diffuse.w = self.number(&g("matAlpha"), 0, 1, 1.0);
+        m.diffuse.w = self.number(&g(Q::MatAlpha), 0, 1, 1.0);
         m
     }
 
     fn document(&mut self, name: &str, local_viewer: bool) -> Document {
         let ws = crate::model::presets::worksheet(5);
-        let mview = match self.given.get("mview").cloned() {
-            Some((v, place)) => self.matrix(&v, "mview", &place).unwrap_or(ws.eye_from_world),
+        let mview = match self.given.get(Q::Modelview.name()).cloned() {
+            Some((v, place)) => self.matrix(&v, Q::Modelview.name(), &place).unwrap_or(ws.eye_from_world),
             None => {
-                self.missing("mview", "mview5".into());
+                self.missing(Q::Modelview.name(), "mview5".into());
                 ws.eye_from_world
             }
         };
@@ -721,26 +698,26 @@ impl Reader {
         let mut lights = Vec::new();
         for i in 0..n {
             let mut l = Light {
-                position: self.vec4("lightPos", i, n, ws_light.position),
-                ambient: self.colour("Lamb", i, n, ws_light.ambient),
-                diffuse: self.colour("Ldif", i, n, ws_light.diffuse),
-                specular: self.colour("Lspec", i, n, ws_light.specular),
+                position: self.vec4(Q::LightPos.name(), i, n, ws_light.position),
+                ambient: self.colour(Q::LightAmbient.name(), i, n, ws_light.ambient),
+                diffuse: self.colour(Q::LightDiffuse.name(), i, n, ws_light.diffuse),
+                specular: self.colour(Q::LightSpecular.name(), i, n, ws_light.specular),
                 attenuation: [
-                    self.number("atC", i, n, ws_light.attenuation[0]),
-                    self.number("atLin", i, n, ws_light.attenuation[1]),
-                    self.number("atQuad", i, n, ws_light.attenuation[2]),
+                    self.number(Q::AttConstant.name(), i, n, ws_light.attenuation[0]),
+                    self.number(Q::AttLinear.name(), i, n, ws_light.attenuation[1]),
+                    self.number(Q::AttQuadratic.name(), i, n, ws_light.attenuation[2]),
                 ],
                 placement: LightPlacement::World,
                 ..Light::gl_default(i)
             };
-            if self.given.contains_key("spotCutoff") {
-                l.spot_cutoff = self.number("spotCutoff", i, n, 180.0);
-                l.spot_exponent = self.number("spotCoef", i, n, 0.0);
-                let d = self.vec4("lightSpotDir", i, n, DVec4::new(0.0, 0.0, -1.0, 0.0));
+            if self.given.contains_key(Q::SpotCutoff.name()) {
+                l.spot_cutoff = self.number(Q::SpotCutoff.name(), i, n, 180.0);
+                l.spot_exponent = self.number(Q::SpotExponent.name(), i, n, 0.0);
+                let d = self.vec4(Q::SpotDirection.name(), i, n, DVec4::new(0.0, 0.0, -1.0, 0.0));
                 l.spot_direction = DVec3::new(d.x, d.y, d.z);
             }
-            if let Some((v, place)) = self.per_light("lightMview", i, n)
-                && let Some(m) = self.matrix(&v, "lightMview", &place)
+            if let Some((v, place)) = self.per_light(Q::LightModelview.name(), i, n)
+                && let Some(m) = self.matrix(&v, Q::LightModelview.name(), &place)
             {
                 l.placement = if m == mview {
                     LightPlacement::World
@@ -753,17 +730,18 @@ impl Reader {
             lights.push(l);
         }
         let material = self.material("", &ws.material);
-        let has_back =
-            ["matAmbBack", "matDifBack", "matSpecBack", "nsBack"].iter().any(|k| self.given.contains_key(*k));
+        let has_back = [Q::MatAmbient, Q::MatDiffuse, Q::MatSpecular, Q::Shininess]
+            .iter()
+            .any(|q| self.given.contains_key(&q.back_name()));
         let back_material = has_back.then(|| self.material("Back", &material));
         let mut light_model = crate::model::scene::LightModel { local_viewer, ..Default::default() };
         light_model.two_sided = self.flag("twoSided");
         light_model.separate_specular = self.flag("separateSpecular");
-        if self.given.contains_key("sceneAmb") {
-            light_model.ambient = self.colour("sceneAmb", 0, 1, light_model.ambient);
+        if self.given.contains_key(Q::SceneAmbient.name()) {
+            light_model.ambient = self.colour(Q::SceneAmbient.name(), 0, 1, light_model.ambient);
         }
-        let pos = self.vec4("vertexPos", 0, 1, ws.vertex.position);
-        let normal = self.vec4("vertexNormal", 0, 1, ws.vertex.normal.extend(0.0));
+        let pos = self.vec4(Q::VertexPos.name(), 0, 1, ws.vertex.position);
+        let normal = self.vec4(Q::VertexNormal.name(), 0, 1, ws.vertex.normal.extend(0.0));
         let scene = Scene {
             light_model,
             lights,

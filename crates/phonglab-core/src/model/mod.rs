@@ -8,3 +8,4 @@ pub mod rules;
 pub mod scene;
 pub mod transform;
 pub mod view;
+pub mod vocabulary;

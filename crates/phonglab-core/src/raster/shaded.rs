@@ -7,7 +7,7 @@ use crate::model::view::{Framing, LightingSpace, View};
 
 /// Everything the renderer needs to draw a document's shaded view: one setup for the app,
 /// the CLI and the cost study, so they all draw the same picture.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct ShadedSetup {
     /// The lighting state, with the modelview the object is lit under.
     pub scene: crate::model::scene::Scene,

@@ -26,6 +26,7 @@ use crate::model::camera::CameraSpec;
 use crate::model::materials;
 use crate::model::rules::Rules;
 use crate::model::scene::{Light, LightModel, LightPlacement, NormalMode, Scene, Vertex};
+use crate::model::vocabulary::Quantity as Q;
 use crate::specialise::plan::Key;
 
 /// An effect an exercise can be asked to use.
@@ -445,24 +446,37 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
     for (i, l) in s.lights.iter().enumerate() {
         let _ = writeln!(o, "## {}\n", crate::t!("light-tab", index = i.to_string()));
         let what = if l.position.w == 0.0 { crate::t!("sheet-direction") } else { crate::t!("sheet-position") };
-        let _ = writeln!(o, "- lightPos = {} ({})", vec4(l.position), crate::t!("sheet-light-world", what = what));
         let _ = writeln!(
             o,
-            "- Lamb = {}, Ldif = {}, Lspec = {}",
+            "- {} = {} ({})",
+            Q::LightPos.name(),
+            vec4(l.position),
+            crate::t!("sheet-light-world", what = what)
+        );
+        let _ = writeln!(
+            o,
+            "- {} = {}, {} = {}, {} = {}",
+            Q::LightAmbient.name(),
             colour4(l.ambient),
+            Q::LightDiffuse.name(),
             colour4(l.diffuse),
+            Q::LightSpecular.name(),
             colour4(l.specular)
         );
         if l.position.w != 0.0 {
             let [c, k1, k2] = l.attenuation;
-            let _ = writeln!(o, "- atC = {}, atLin = {}, atQuad = {}", num(c), num(k1), num(k2));
+            let [nc, n1, n2] = [Q::AttConstant, Q::AttLinear, Q::AttQuadratic].map(Q::name);
+            let _ = writeln!(o, "- {nc} = {}, {n1} = {}, {n2} = {}", num(c), num(k1), num(k2));
         }
         if l.is_spot() {
             let _ = writeln!(
                 o,
-                "- lightSpotDir = {}, spotCutoff = {}, spotCoef = {}",
+                "- {} = {}, {} = {}, {} = {}",
+                Q::SpotDirection.name(),
                 vec4(l.spot_direction.extend(0.0)),
+                Q::SpotCutoff.name(),
                 crate::t!("sheet-degrees", value = num(l.spot_cutoff)),
+                Q::SpotExponent.name(),
                 num(l.spot_exponent)
             );
         }
@@ -470,10 +484,10 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
     }
     let m = &s.material;
     let _ = writeln!(o, "## {}\n", crate::t!("sheet-material", name = material));
-    let _ = writeln!(o, "- matAmb = {}", colour4(m.ambient));
-    let _ = writeln!(o, "- matDif = {}", colour4(m.diffuse));
-    let _ = writeln!(o, "- matSpec = {}", colour4(m.specular));
-    let _ = writeln!(o, "- ns = {}\n", num(m.shininess));
+    let _ = writeln!(o, "- {} = {}", Q::MatAmbient.name(), colour4(m.ambient));
+    let _ = writeln!(o, "- {} = {}", Q::MatDiffuse.name(), colour4(m.diffuse));
+    let _ = writeln!(o, "- {} = {}", Q::MatSpecular.name(), colour4(m.specular));
+    let _ = writeln!(o, "- {} = {}\n", Q::Shininess.name(), num(m.shininess));
     let _ = writeln!(o, "## {}\n", crate::t!("sheet-light-model"));
     let lm = &s.light_model;
     let yes_no = |b: bool| if b { crate::t!("yes") } else { crate::t!("no") };

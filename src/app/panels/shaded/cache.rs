@@ -7,7 +7,7 @@ use std::sync::{Arc, Mutex};
 use egui::{ColorImage, TextureHandle, TextureOptions};
 use phonglab_core::mesh::Mesh;
 use phonglab_core::render::Renderer;
-use phonglab_core::{Document, PowFn, Shading, View};
+use phonglab_core::{Document, EvalOptions, PowFn, Scene, Shading, View};
 
 use crate::app::panels::shaded::gpu::GpuImage;
 
@@ -18,7 +18,7 @@ pub struct ViewCache {
     pub(crate) mesh: Option<(View, Arc<Mesh>)>,
     pub(crate) texture: Option<TextureHandle>,
     /// What the texture shows; re-rendered only when it changes.
-    key: Option<String>,
+    key: Option<PictureKey>,
     /// The last frame's render time in milliseconds (on the CPU).
     pub last_ms: f64,
     /// Who drew the last picture: the GPU (the adapter's name) or the CPU renderer (and
@@ -83,8 +83,8 @@ impl ViewCache {
         name: &str,
     ) -> Result<(), String> {
         let setup = doc.shaded_setup(pow);
-        let key = format!("{:?}|{:?}|{px}|{pow:?}", setup.scene, doc.view);
-        if self.key.as_deref() == Some(key.as_str()) && self.texture.is_some() {
+        let key = PictureKey { scene: setup.scene.clone(), view: doc.view.clone(), px, pow };
+        if self.key.as_ref() == Some(&key) && self.texture.is_some() {
             return Ok(());
         }
         let mesh = mesh_for(&mut self.mesh, &doc.view).clone();
@@ -108,7 +108,7 @@ impl ViewCache {
             return Err(format!("the GPU refused the generated program: {e}"));
         }
         let setup = doc.shaded_setup(pow);
-        let key = format!("{:?}|{:?}|{:?}", setup.scene, setup.options, doc.view.shading);
+        let key = ProgramKey { scene: setup.scene.clone(), options: setup.options, shading: doc.view.shading };
         if self.gpu_program.as_ref().is_none_or(|p| p.key != key) {
             let shader = crate::paint::gpu::wgsl_for(&setup.scene, setup.options, doc.view.shading)?;
             // WGSL keeps both entry points in one module: `vertex`.
@@ -132,11 +132,30 @@ impl ViewCache {
     }
 }
 
+/// What a picture shows (the scene as lit, the view, its size, the power function): it is
+/// drawn again only when this changes. Compared by value (`PartialEq`): a NaN anywhere
+/// never compares equal, so such a picture is simply drawn again.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct PictureKey {
+    scene: Scene,
+    view: View,
+    px: usize,
+    pow: PowFn,
+}
+
+/// What a generated program was generated for.
+#[derive(Clone, Debug, PartialEq)]
+struct ProgramKey {
+    scene: Scene,
+    options: EvalOptions,
+    shading: Shading,
+}
+
 /// A generated program kept between frames (regenerated when the scene changes; the GPU
 /// pipeline is rebuilt only when its text does).
 struct GpuProgram {
     /// The scene, options and shading it was generated for.
-    key: String,
+    key: ProgramKey,
     /// The WGSL module.
     wgsl: Arc<str>,
     /// Its uniforms, in order (as `Shader::uniforms`).

@@ -17,7 +17,7 @@ pub const APP_SIZE: usize = if crate::platform::threads::BACKGROUND { 256 } else
 /// A heat map of one view against the reference.
 pub struct HeatMap {
     /// What it was computed for (the scene, the view, the options).
-    pub key: String,
+    pub key: ShadedSetup,
     /// Its error figures.
     pub error: ErrorStats,
     /// Milliseconds per frame of the view at this size.
@@ -33,7 +33,7 @@ pub struct HeatMapState {
     pub on: bool,
     /// The last heat map.
     pub heat: Option<HeatMap>,
-    running: Option<(String, Worker<HeatMap>)>,
+    running: Option<(ShadedSetup, Worker<HeatMap>)>,
     /// Why the last one failed.
     pub error: Option<String>,
 }
@@ -61,8 +61,8 @@ impl HeatMapState {
 
     /// Makes sure a heat map of the shaded view `shaded` is on its way (or there).
     pub fn want(&mut self, shaded: &ShadedSetup) {
-        let key = format!("{shaded:?}");
-        if self.heat.as_ref().is_some_and(|h| h.key == key) || self.running.as_ref().is_some_and(|(k, _)| *k == key) {
+        let key = shaded;
+        if self.heat.as_ref().is_some_and(|h| h.key == *key) || self.running.as_ref().is_some_and(|(k, _)| k == key) {
             return;
         }
         if self.running.is_some() {
@@ -87,7 +87,7 @@ impl HeatMapState {
             let image = ColorImage::from_rgba_unmultiplied([reference.size, reference.size], &rgba);
             Ok(Some(HeatMap { key: k, error: m.error, ms: m.ms, image, texture: None }))
         });
-        self.running = Some((key, worker));
+        self.running = Some((key.clone(), worker));
     }
 }
 
