@@ -55,9 +55,11 @@ preset-worksheet = Worksheet, { $modelview }
 preset-phong-demo = Phong demo
 preset-spotlight = Spotlight
 preset-three-lights = Three lights
+preset-of-set-color = ofSetColor under lighting
 doc-phong-demo = the Phong demo
 doc-spotlight = a spotlight
 doc-three-lights = three coloured lights and a headlight
+doc-of-set-color = openFrameworks' ofSetColor under lighting
 doc-redbook-teapot = Red Book teapots: { $material }
 
 ## controls
@@ -127,6 +129,11 @@ back-specular = Back specular
 back-emission = Back emission
 back-shininess = Back shininess
 separate-back-material = Separate back material
+color-material = Colour material (GL_COLOR_MATERIAL)
+color-material-hover = The material colours it tracks follow the current colour (glColor), as openFrameworks' ofSetColor does under ofEnableLighting
+color-material-mode = Tracks
+color-material-face = Faces
+color-material-color = Current colour (glColor)
 scene-ambient = Scene ambient
 local-viewer = Local viewer
 two-sided = Two-sided lighting
@@ -281,6 +288,7 @@ step-emission = Emission
 step-primary = Vertex colour
 step-secondary = Secondary colour
 step-clamped = Colour as drawn
+note-color-material = GL_COLOR_MATERIAL ({ $mode }, { $face }): { $name } is the current colour (glColor) { $color }, not the { $set } glMaterial set
 formula-normal-gl = vertexNormal = (M^-1)^T · vertexNormal   (OpenGL's N)
 formula-normal-gl-normalize = vertexNormal = normalize((M^-1)^T · vertexNormal)   (OpenGL's N, GL_NORMALIZE)
 formula-normal-gl-rescale = vertexNormal = f · (M^-1)^T · vertexNormal, f = 1/|row 3 of M^-1|   (OpenGL's N, GL_RESCALE_NORMAL)
@@ -483,6 +491,7 @@ nb-modelview =
 
     The lookat transforms the modelview matrix: to do the calculations we need to transform the vectors and positions we use with the modelview matrix.
 nb-light-mview-comment = # each light's position is transformed by the modelview that was current when glLight(GL_POSITION) was called
+nb-color-material-comment = # GL_COLOR_MATERIAL ({ $mode }, { $face }): the material colours it tracks are the current colour, glColor = { $color }, not what glMaterial set
 nb-vectors =
     Compute the vectors needed and normalise them:
 
@@ -625,6 +634,7 @@ py-projection-orbit = phonglab's orbit camera: gluPerspective(40, 1, 0.1, 100)
 py-projection-clip = no projection at all: the picture is clip space itself (the Phong demo's)
 py-modelview-comment = the modelview the object is drawn with: the camera, then the object's turn (rows)
 py-lighting-modelview-comment = the modelview the lighting uses, where it is not the drawing's (the demo lights in object space)
+py-color-material-comment = GL_COLOR_MATERIAL: the material colours it tracks are the current colour (glColor); u_color is that colour
 py-light-eye = placed under the identity: the light moves with the eye
 py-light-object = placed under the whole modelview: the light turns with the object
 py-light-world = placed under the view matrix: the light stays put in the world
@@ -642,6 +652,7 @@ of-directional-comment = a directional light's GL_POSITION is its look direction
 of-spot-comment = the spot direction is the light's look direction
 of-material-comment = the material, bound while the object is drawn (ofSetColor under lighting would turn on glColorMaterial instead)
 of-back-material-comment = oF has one material for both sides: the back side's, raw GL
+of-color-material-comment = GL_COLOR_MATERIAL: the material colours it tracks follow the current colour, which ofSetColor sets
 of-no-scene-ambient = this scene's rules have no scene ambient: 0 here, so that GL computes the same I (oF's default is 0.2)
 of-rules-comment = phonglab computes this scene under { $rules }; fixed-function GL computes OpenGL's equation, which can differ (the normal by the inverse transpose, the specular gate)
 of-phong-specular-comment = this scene's specular is Phong's (R · V); fixed-function GL computes Blinn-Phong (N · H): the highlight differs

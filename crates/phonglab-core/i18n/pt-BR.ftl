@@ -55,9 +55,11 @@ preset-worksheet = Ficha, { $modelview }
 preset-phong-demo = Demo de Phong
 preset-spotlight = Foco
 preset-three-lights = Três luzes
+preset-of-set-color = ofSetColor com iluminação
 doc-phong-demo = a demo de Phong
 doc-spotlight = um foco
 doc-three-lights = três luzes coloridas e uma luz presa ao observador
+doc-of-set-color = ofSetColor do openFrameworks com iluminação
 doc-redbook-teapot = bules do Red Book: { $material }
 
 ## controls
@@ -127,6 +129,11 @@ back-specular = Verso: especular
 back-emission = Verso: emissão
 back-shininess = Verso: brilho (ns)
 separate-back-material = Material próprio para o verso
+color-material = Cor do material (GL_COLOR_MATERIAL)
+color-material-hover = As cores do material que acompanha seguem a cor atual (glColor), como o ofSetColor do openFrameworks faz sob ofEnableLighting
+color-material-mode = Acompanha
+color-material-face = Faces
+color-material-color = Cor atual (glColor)
 scene-ambient = Ambiente da cena
 local-viewer = Observador local
 two-sided = Iluminação das duas faces
@@ -281,6 +288,7 @@ step-emission = Emissão
 step-primary = Cor do vértice
 step-secondary = Cor secundária
 step-clamped = Cor desenhada
+note-color-material = GL_COLOR_MATERIAL ({ $mode }, { $face }): { $name } é a cor atual (glColor) { $color }, e não o { $set } definido por glMaterial
 formula-normal-gl = vertexNormal = (M^-1)^T · vertexNormal   (o N do OpenGL)
 formula-normal-gl-normalize = vertexNormal = normalize((M^-1)^T · vertexNormal)   (o N do OpenGL, GL_NORMALIZE)
 formula-normal-gl-rescale = vertexNormal = f · (M^-1)^T · vertexNormal, f = 1/|linha 3 de M^-1|   (o N do OpenGL, GL_RESCALE_NORMAL)
@@ -483,6 +491,7 @@ nb-modelview =
 
     o lookat vai transformar a matriz modelview, para fazer os cálculos precisaremos transformar os vetores e posições que utilizamos com a matriz modelview.
 nb-light-mview-comment = # a posição de cada luz é transformada pela modelview que estava ativa quando se chamou glLight(GL_POSITION)
+nb-color-material-comment = # GL_COLOR_MATERIAL ({ $mode }, { $face }): as cores do material que acompanha são a cor atual, glColor = { $color }, e não as definidas por glMaterial
 nb-vectors =
     Calcular os vetores necessários e normalizá-los:
 
@@ -625,6 +634,7 @@ py-projection-orbit = a câmera em órbita do phonglab: gluPerspective(40, 1, 0.
 py-projection-clip = nenhuma projeção: a imagem é o próprio espaço de recorte (o da demo de Phong)
 py-modelview-comment = a modelview com que o objeto é desenhado: a câmera, depois a rotação do objeto (linhas)
 py-lighting-modelview-comment = a modelview que a iluminação usa, onde não é a do desenho (a demo ilumina no espaço do objeto)
+py-color-material-comment = GL_COLOR_MATERIAL: as cores do material que acompanha são a cor atual (glColor); u_color é essa cor
 py-light-eye = colocada sob a identidade: a luz move-se com o olho
 py-light-object = colocada sob a modelview inteira: a luz gira com o objeto
 py-light-world = colocada sob a matriz de vista: a luz fica parada no mundo
@@ -642,6 +652,7 @@ of-directional-comment = o GL_POSITION de uma luz direcional é a sua direção 
 of-spot-comment = a direção do foco é a direção de olhar da luz
 of-material-comment = o material, ativo enquanto o objeto é desenhado (ofSetColor com iluminação ligaria antes o glColorMaterial)
 of-back-material-comment = o oF tem um material para os dois lados: o da face de trás, em GL direto
+of-color-material-comment = GL_COLOR_MATERIAL: as cores do material que acompanha seguem a cor atual, definida por ofSetColor
 of-no-scene-ambient = as regras desta cena não têm ambiente da cena: 0 aqui, para o GL calcular o mesmo I (o oF usa 0,2 por padrão)
 of-rules-comment = o phonglab calcula esta cena com { $rules }; o GL de pipeline fixo calcula a equação do OpenGL, que pode diferir (a normal pela inversa transposta, a condição da especular)
 of-phong-specular-comment = a especular desta cena é a de Phong (R · V); o GL de pipeline fixo calcula Blinn-Phong (N · H): o brilho difere

@@ -64,7 +64,10 @@ pub use lighting::{Engine, EvalOptions, Renormalize};
 pub use pow::PowFn;
 pub use real::{Precision, Real, Vec3Ops};
 pub use rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel};
-pub use scene::{Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Rgba, Scene, Vertex};
+pub use scene::{
+    ColorMaterial, ColorMaterialMode, Face, Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Rgba,
+    Scene, Vertex,
+};
 pub use shaded::ShadedSetup;
 pub use view::{FlatNormal, Framing, LightingSpace, ObjectKind, Shading, ShadingMode, View, ViewCamera};
 

@@ -4,6 +4,7 @@
 mod common;
 
 use glam::{DMat4, DVec3, DVec4};
+use phonglab_core::scene::{ColorMaterial, ColorMaterialMode, Face};
 use phonglab_core::view::{FlatNormal, Framing, LightingSpace, ObjectKind, Shading, View, ViewCamera};
 use phonglab_core::{
     CameraSpec, Document, DocumentError, Light, LightModel, LightPlacement, Material, NormalMode, RuleSet, Rules,
@@ -125,6 +126,7 @@ prop_compose! {
         lights in prop::collection::vec(light(), 0..=8),
         material in material(),
         back in prop::option::of(material()),
+        color_material in prop::option::of((0..3usize, 0..5usize, v4())),
         world_from_object in prop_oneof![Just(DMat4::IDENTITY), m4()],
         normal_mode in prop::sample::select(vec![NormalMode::AsIs, NormalMode::Normalize, NormalMode::Rescale]),
         set in prop::sample::select(RuleSet::ALL.to_vec()),
@@ -136,7 +138,13 @@ prop_compose! {
     ) -> Document {
         let scene = Scene {
             light_model: LightModel { ambient, local_viewer: flags.0, two_sided: flags.1, separate_specular: flags.2 },
-            lights, material, back_material: back, eye_from_world: DMat4::IDENTITY, world_from_object, normal_mode,
+            lights, material, back_material: back,
+            color_material: color_material.map(|(face, mode, color)| ColorMaterial {
+                face: [Face::Front, Face::Back, Face::FrontAndBack][face],
+                mode: ColorMaterialMode::ALL[mode],
+                color,
+            }),
+            eye_from_world: DMat4::IDENTITY, world_from_object, normal_mode,
             rules: Rules { set, specular },
             vertex: Vertex { position: vertex.0, normal: vertex.1 },
         };

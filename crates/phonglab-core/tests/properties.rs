@@ -8,6 +8,7 @@
 mod common;
 
 use glam::{DMat4, DQuat, DVec3, DVec4};
+use phonglab_core::scene::{ColorMaterial, ColorMaterialMode, Face};
 use phonglab_core::{
     Engine, Light, LightModel, LightPlacement, Material, NormalMode, Real, RuleSet, Rules, Scene, SpecularModel, Vertex,
 };
@@ -111,6 +112,7 @@ prop_compose! {
         lights in prop::collection::vec(wild_light(), 0..=8),
         material in material(-1.0, 2.0),
         back in prop::option::of(material(-1.0, 2.0)),
+        color_material in prop::option::of((0..3usize, 0..5usize, colour(-1.0, 2.0))),
         eye_from_world in wild_matrix(),
         world_from_object in wild_matrix(),
         normal_mode in normal_mode(),
@@ -119,7 +121,13 @@ prop_compose! {
         normal in wild3(),
     ) -> Scene {
         Scene {
-            light_model, lights, material, back_material: back, eye_from_world, world_from_object, normal_mode, rules,
+            light_model, lights, material, back_material: back,
+            color_material: color_material.map(|(face, mode, color)| ColorMaterial {
+                face: [Face::Front, Face::Back, Face::FrontAndBack][face],
+                mode: ColorMaterialMode::ALL[mode],
+                color,
+            }),
+            eye_from_world, world_from_object, normal_mode, rules,
             vertex: Vertex { position: position.0.extend(position.1), normal },
         }
     }
@@ -179,7 +187,8 @@ prop_compose! {
         normal in tame3(1.0),
     ) -> Scene {
         Scene {
-            light_model, lights, material, back_material: None, eye_from_world, world_from_object, normal_mode, rules,
+            light_model, lights, material, back_material: None, color_material: None,
+            eye_from_world, world_from_object, normal_mode, rules,
             vertex: Vertex { position: position.extend(1.0), normal },
         }
     }

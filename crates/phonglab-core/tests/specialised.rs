@@ -236,6 +236,7 @@ fn everything_on() -> Scene {
             ..Material::default()
         },
         back_material: Some(Material { shininess: 7.0, specular: DVec4::ONE, ..Material::default() }),
+        color_material: None,
         eye_from_world: DMat4::from_translation(DVec3::new(0.0, 0.0, -4.0)),
         world_from_object: DMat4::from_scale(DVec3::splat(1.5)),
         normal_mode: NormalMode::Normalize,

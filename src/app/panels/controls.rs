@@ -3,6 +3,7 @@
 
 use egui::{CollapsingHeader, ComboBox, Ui};
 use glam::{DMat4, DVec3, DVec4};
+use phonglab_core::scene::{ColorMaterial, ColorMaterialMode, Face};
 use phonglab_core::t;
 use phonglab_core::transform::{mat4_from_rows, mat4_rows};
 use phonglab_core::vocabulary::Quantity as Q;
@@ -219,6 +220,7 @@ fn material_ui(ui: &mut Ui, m: &mut Material, back: bool) {
 
 fn material_section_ui(ui: &mut Ui, doc: &mut Document) {
     material_ui(ui, &mut doc.scene.material, false);
+    color_material_ui(ui, doc);
     if doc.scene.light_model.two_sided {
         let mut separate = doc.scene.back_material.is_some();
         if ui.checkbox(&mut separate, t!("separate-back-material")).changed() {
@@ -228,6 +230,28 @@ fn material_section_ui(ui: &mut Ui, doc: &mut Document) {
             material_ui(ui, b, true);
         }
     }
+}
+
+/// `GL_COLOR_MATERIAL`: on or off, which colours track, on which faces, and the current
+/// colour they track.
+fn color_material_ui(ui: &mut Ui, doc: &mut Document) {
+    let cm = &mut doc.scene.color_material;
+    let mut on = cm.is_some();
+    if ui.checkbox(&mut on, t!("color-material")).on_hover_text(t!("color-material-hover")).changed() {
+        *cm = on.then(ColorMaterial::default);
+    }
+    let Some(cm) = cm else { return };
+    ComboBox::from_label(t!("color-material-mode")).selected_text(cm.mode.gl()).show_ui(ui, |ui| {
+        for m in ColorMaterialMode::ALL {
+            ui.selectable_value(&mut cm.mode, m, m.gl());
+        }
+    });
+    ComboBox::from_label(t!("color-material-face")).selected_text(cm.face.gl()).show_ui(ui, |ui| {
+        for f in [Face::Front, Face::Back, Face::FrontAndBack] {
+            ui.selectable_value(&mut cm.face, f, f.gl());
+        }
+    });
+    color_ui(ui, &t!("color-material-color"), &mut cm.color, true);
 }
 
 fn light_model_ui(ui: &mut Ui, doc: &mut Document) {

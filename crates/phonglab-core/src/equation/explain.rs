@@ -13,7 +13,7 @@ use crate::t;
 
 use crate::equation::breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, VertexLighting};
 use crate::model::rules::SpecularModel;
-use crate::model::scene::Scene;
+use crate::model::scene::{ColorMaterialMode, Scene};
 use crate::numerics::real::{Real, Vec3Ops};
 
 /// Which face side to explain.
@@ -368,6 +368,7 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
         "Iamb = Lamb · matAmb   (OpenGL: a_cl · a_cm)",
         Some(dir4::<S>(st.ambient)),
     );
+    color_material_note(b, scene, back, ColorMaterialMode::Ambient);
     b.push(
         StepKind::CosTheta,
         i,
@@ -384,6 +385,7 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
         "Idif = Ldif · matDif · max(cosTheta, 0)   (OpenGL: d_cl · d_cm · max(n · L, 0))",
         Some(dir4::<S>(st.diffuse)),
     );
+    color_material_note(b, scene, back, ColorMaterialMode::Diffuse);
     match rules.specular {
         SpecularModel::BlinnPhong => {
             b.push(
@@ -438,6 +440,30 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
         ),
         Some(dir4::<S>(st.specular)),
     );
+    color_material_note(b, scene, back, ColorMaterialMode::Specular);
+}
+
+/// Where `GL_COLOR_MATERIAL` tracks `property` on this side, a note on the step just
+/// pushed: the material colour it used is the current colour, not `glMaterial`'s.
+fn color_material_note(b: &mut Builder, scene: &Scene, back: bool, property: ColorMaterialMode) {
+    let side = usize::from(back);
+    let Some(cm) = scene.color_material.filter(|cm| cm.tracks(property, side)) else { return };
+    let set = if back { scene.back() } else { &scene.material };
+    let (q, was) = match property {
+        ColorMaterialMode::Ambient => (Q::MatAmbient, set.ambient),
+        ColorMaterialMode::Diffuse => (Q::MatDiffuse, set.diffuse),
+        ColorMaterialMode::Specular => (Q::MatSpecular, set.specular),
+        _ => (Q::MatEmission, set.emission),
+    };
+    let name = if back { q.back_name() } else { q.name().to_string() };
+    b.note(t!(
+        "note-color-material",
+        mode = cm.mode.gl(),
+        face = cm.face.gl(),
+        name = name,
+        color = fmt_value(&cm.color.to_array(), 6),
+        set = fmt_value(&was.to_array(), 6)
+    ));
 }
 
 /// Attenuation, the spot factor, and the light's share of the colour.
@@ -496,6 +522,7 @@ fn total_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
     }
     if rules.emission() {
         b.push(StepKind::Emission, None, Q::EmissionTerm, "", "e_cm", Some(dir4::<S>(sc.emission)));
+        color_material_note(b, scene, back, ColorMaterialMode::Emission);
     }
     let iformula = match (rules.scene_ambient(), rules.emission()) {
         (true, true) => t!("formula-i-opengl"),

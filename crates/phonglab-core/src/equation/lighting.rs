@@ -200,7 +200,7 @@ fn prepare_light<S: Real>(scene: &Scene, index: usize, l: &Light) -> PreparedLig
         pos,
         k: l.attenuation.map(S::from_f64),
         spot,
-        products: [product(&scene.material), product(scene.back())],
+        products: [product(&scene.lit_material(0)), product(&scene.lit_material(1))],
     }
 }
 
@@ -226,7 +226,7 @@ impl<S: Real> Engine<S> {
             normal_matrix: S::m3_from_dmat3(nm.eye_from_object),
             rescale: S::from_f64(nm.rescale),
             singular: nm.singular,
-            sides: [side_material(&scene.material, scene), side_material(scene.back(), scene)],
+            sides: [side_material(&scene.lit_material(0), scene), side_material(&scene.lit_material(1), scene)],
             lights: scene.lights.iter().enumerate().map(|(i, l)| prepare_light(scene, i, l)).collect(),
         })
     }

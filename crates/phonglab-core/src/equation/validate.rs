@@ -78,6 +78,9 @@ impl Scene {
         if let Some(b) = &self.back_material {
             fin.material("back_material", b);
         }
+        if let Some(cm) = &self.color_material {
+            fin.v4("color_material.color", cm.color);
+        }
         fin.m4("eye_from_world", &self.eye_from_world);
         fin.m4("world_from_object", &self.world_from_object);
         fin.v4("vertex.position", self.vertex.position);

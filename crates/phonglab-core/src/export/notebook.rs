@@ -11,10 +11,11 @@
 //! Run cell by cell, it prints the values `phonglab explain` prints, under the same names.
 
 use super::python::{array4, colour, matrix, num, shininess, string};
+use crate::equation::explain::fmt_value;
 use crate::formats::document::Document;
 use crate::formats::escape;
 use crate::model::rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel};
-use crate::model::scene::{Light, Material, NormalMode, Scene};
+use crate::model::scene::{Face, Light, Material, NormalMode, Scene};
 use crate::model::vocabulary::Quantity::{self, self as Q};
 use crate::specialise::plan::Key;
 use crate::t;
@@ -248,10 +249,17 @@ fn givens(scene: &Scene, needs: &Needs) -> String {
         s.push_str(&format!("#{dir} = [0 0 0 0];\n#{cutoff} = 90;\n#{coef} = 60;\n"));
     }
     s.push('\n');
-    s.push_str(&material(&scene.material, "", needs.rules.emission()));
-    if let Some(back) = &scene.back_material {
+    // The materials as lit: where GL_COLOR_MATERIAL tracks a colour, the worksheet's
+    // variable holds the current colour (the calculation has no glColor of its own).
+    if let Some(cm) = &scene.color_material {
+        let color = fmt_value(&cm.color.to_array(), 8);
+        s.push_str(&t!("nb-color-material-comment", mode = cm.mode.gl(), face = cm.face.gl(), color = color));
         s.push('\n');
-        s.push_str(&material(back, "Back", needs.rules.emission()));
+    }
+    s.push_str(&material(&scene.lit_material(0), "", needs.rules.emission()));
+    if back_written(scene) {
+        s.push('\n');
+        s.push_str(&material(&scene.lit_material(1), "Back", needs.rules.emission()));
     }
     if needs.rules.scene_ambient() {
         s.push_str(&format!("\n{} = {};\n", Q::SceneAmbient.name(), colour(scene.light_model.ambient)));
@@ -567,6 +575,13 @@ fn final_colour(scene: &Scene, needs: &Needs, suffix: &str) -> String {
     s
 }
 
+/// Does the material cell write the back side's material (`matAmbBack` ...)? Where the
+/// scene has one, or where `GL_COLOR_MATERIAL` tracks one side only (the sides then
+/// differ).
+fn back_written(scene: &Scene) -> bool {
+    scene.back_material.is_some() || scene.color_material.is_some_and(|cm| cm.face != Face::FrontAndBack)
+}
+
 /// The back side of two-sided lighting: the same terms with `-vertexNormal` and the back
 /// material, printed with `Back` after their names. The cells read the back material's
 /// names (`matAmbBack` ...) always: a scene without a back material names the front's
@@ -574,13 +589,13 @@ fn final_colour(scene: &Scene, needs: &Needs, suffix: &str) -> String {
 fn back_side(scene: &Scene, needs: &Needs) -> String {
     let n = needs.lights;
     let mut s = String::new();
-    if scene.back_material.is_none() {
+    if !back_written(scene) {
         let mut names = vec!["matAmb", "matDif", "matSpec", "ns"];
         // Written by the material cell only where the rules have emission, or the alpha is not 1.
         if needs.rules.emission() {
             names.push("matEmi");
         }
-        if scene.material.diffuse.w != 1.0 {
+        if scene.lit_material(0).diffuse.w != 1.0 {
             names.push("matAlpha");
         }
         let backs: Vec<String> = names.iter().map(|n| format!("{n}Back")).collect();

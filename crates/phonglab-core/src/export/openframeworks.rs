@@ -11,7 +11,9 @@
 //! - neither the local viewer nor two-sided lighting is set; `ofSetGlobalAmbientColor`
 //!   sets `GL_LIGHT_MODEL_AMBIENT` (0.2 by default);
 //! - `ofSetColor` under lighting with no material bound turns on `glColorMaterial`, so
-//!   the app binds an `ofMaterial` and never calls `ofSetColor` while lit.
+//!   the app binds an `ofMaterial` and calls `ofSetColor` while lit only where the scene
+//!   has `GL_COLOR_MATERIAL` on (then after `glColorMaterial` and
+//!   `glEnable(GL_COLOR_MATERIAL)`, raw, once the material is bound).
 //!
 //! What oF cannot say (the local viewer, two-sided lighting and a back material, a
 //! separate specular colour, a light fixed to the eye, a normal mode other than
@@ -188,6 +190,16 @@ fn draw_body(doc: &Document, scene: &Scene, key: &Key) -> String {
     }
     s.push_str(&eye_lights(scene));
     s.push_str("    material.begin();\n");
+    if let Some(cm) = &scene.color_material {
+        // After the material is bound: enabling it sets the tracked colours to the current one.
+        s.push_str(&format!("    // {}\n", comment(&t!("of-color-material-comment"))));
+        s.push_str(&format!(
+            "    glColorMaterial({}, {});\n    glEnable(GL_COLOR_MATERIAL);\n",
+            cm.face.gl(),
+            cm.mode.gl()
+        ));
+        s.push_str(&format!("    ofSetColor({});\n", colour(cm.color)));
+    }
     if let Some(back) = &scene.back_material {
         s.push_str(&format!("    // {}\n", comment(&t!("of-back-material-comment"))));
         s.push_str(&raw_material("GL_BACK", back, key.rules.emission()));

@@ -71,6 +71,7 @@ pub fn program(doc: &Document, key: &Key) -> Result<String, String> {
             ("lighting_state", code(lighting_state(scene, key))),
             ("reader_doc", text(t!("py-reader-doc"))),
             ("normal_matrix_comment", text(t!("py-normal-matrix-comment"))),
+            ("color_reader", code(color_reader(scene))),
             ("object", code(object(&doc.view)?)),
         ])
         .map_err(|e| e.to_string())
@@ -196,6 +197,13 @@ fn lighting_state(scene: &Scene, key: &Key) -> String {
         }
         s.push_str(&format!("    glMaterialf({face}, {}, {})\n", gl(Q::Shininess), num(m.shininess)));
     }
+    if let Some(cm) = &scene.color_material {
+        // After the glMaterial calls: enabling it sets the tracked colours to the current one.
+        s.push_str(&format!("    # {}\n", comment(&t!("py-color-material-comment"))));
+        s.push_str(&format!("    glColorMaterial({}, {})\n", cm.face.gl(), cm.mode.gl()));
+        s.push_str("    glEnable(GL_COLOR_MATERIAL)\n");
+        s.push_str(&format!("    glColor4f({})\n", cm.color.to_array().map(num).join(", ")));
+    }
     let lm = &scene.light_model;
     s.push_str(&format!("    glLightModelfv({}, {})\n", gl(Q::SceneAmbient), rgba(lm.ambient)));
     s.push_str(&format!(
@@ -284,6 +292,18 @@ fn object(view: &View) -> Result<String, String> {
         }
     }
     Ok(s + "\n\n")
+}
+
+/// Where `GL_COLOR_MATERIAL` is on, the reader's branch for `u_color`: GL's current
+/// colour (nothing otherwise, where no shader declares it).
+fn color_reader(scene: &Scene) -> String {
+    match scene.color_material {
+        Some(_) => {
+            "    if name == \"color\":\n        return np.array(glGetFloatv(GL_CURRENT_COLOR), dtype=np.float64)\n"
+                .into()
+        }
+        None => String::new(),
+    }
 }
 
 /// OpenGL's name for `q` (its `GL_` enum), from the vocabulary.

@@ -747,6 +747,7 @@ impl Reader {
             lights,
             material,
             back_material,
+            color_material: None,
             eye_from_world: mview,
             world_from_object: DMat4::IDENTITY,
             normal_mode,

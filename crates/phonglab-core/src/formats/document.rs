@@ -19,6 +19,11 @@
 //! preset = "bronze"              # optional: a classic material; the keys below override it
 //! shininess = 25.6
 //!
+//! [color_material]              # optional: GL_COLOR_MATERIAL enabled (what oF's ofSetColor sets)
+//! face = "front-and-back"        # front | back | front-and-back
+//! mode = "ambient-and-diffuse"   # ambient | diffuse | specular | emission | ambient-and-diffuse
+//! color = [1, 0.5, 0]            # the current colour, glColor
+//!
 //! [[lights]]
 //! position = [0, 0, 90, 1]
 //! ambient = [1, 1, 1]
@@ -38,7 +43,9 @@ use crate::model::camera::CameraSpec;
 use crate::model::error::SceneError;
 use crate::model::materials;
 use crate::model::rules::{RuleSet, Rules, SpecularModel};
-use crate::model::scene::{Light, LightModel, LightPlacement, Material, NormalMode, Scene, Vertex};
+use crate::model::scene::{
+    ColorMaterial, ColorMaterialMode, Face, Light, LightModel, LightPlacement, Material, NormalMode, Scene, Vertex,
+};
 use crate::model::transform::{mat4_from_rows, mat4_rows};
 use crate::model::view::View;
 use crate::numerics::strict;
@@ -217,6 +224,8 @@ struct FileV1 {
     material: MaterialFile,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     back_material: Option<MaterialFile>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    color_material: Option<ColorMaterialFile>,
     #[serde(default)]
     lights: Vec<LightFile>,
     #[serde(default)]
@@ -294,6 +303,81 @@ three_or_four_numbers!(
     Point,
     "a position has 3 or 4 numbers (xyz or xyzw)"
 );
+
+/// `[color_material]`: `GL_COLOR_MATERIAL` enabled, with `glColorMaterial(face, mode)` and
+/// the current colour (`glColor`).
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ColorMaterialFile {
+    #[serde(default)]
+    face: FaceName,
+    #[serde(default)]
+    mode: ColorMaterialModeName,
+    #[serde(default = "white")]
+    color: Color,
+}
+
+fn white() -> Color {
+    Color(DVec4::ONE)
+}
+
+#[derive(Serialize, Deserialize, Default, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum FaceName {
+    Front,
+    Back,
+    #[default]
+    FrontAndBack,
+}
+
+#[derive(Serialize, Deserialize, Default, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum ColorMaterialModeName {
+    Ambient,
+    Diffuse,
+    Specular,
+    Emission,
+    #[default]
+    AmbientAndDiffuse,
+}
+
+impl ColorMaterialFile {
+    fn into_color_material(self) -> ColorMaterial {
+        ColorMaterial {
+            face: match self.face {
+                FaceName::Front => Face::Front,
+                FaceName::Back => Face::Back,
+                FaceName::FrontAndBack => Face::FrontAndBack,
+            },
+            mode: match self.mode {
+                ColorMaterialModeName::Ambient => ColorMaterialMode::Ambient,
+                ColorMaterialModeName::Diffuse => ColorMaterialMode::Diffuse,
+                ColorMaterialModeName::Specular => ColorMaterialMode::Specular,
+                ColorMaterialModeName::Emission => ColorMaterialMode::Emission,
+                ColorMaterialModeName::AmbientAndDiffuse => ColorMaterialMode::AmbientAndDiffuse,
+            },
+            color: self.color.0,
+        }
+    }
+
+    fn of(cm: &ColorMaterial) -> Self {
+        ColorMaterialFile {
+            face: match cm.face {
+                Face::Front => FaceName::Front,
+                Face::Back => FaceName::Back,
+                Face::FrontAndBack => FaceName::FrontAndBack,
+            },
+            mode: match cm.mode {
+                ColorMaterialMode::Ambient => ColorMaterialModeName::Ambient,
+                ColorMaterialMode::Diffuse => ColorMaterialModeName::Diffuse,
+                ColorMaterialMode::Specular => ColorMaterialModeName::Specular,
+                ColorMaterialMode::Emission => ColorMaterialModeName::Emission,
+                ColorMaterialMode::AmbientAndDiffuse => ColorMaterialModeName::AmbientAndDiffuse,
+            },
+            color: Color(cm.color),
+        }
+    }
+}
 
 #[derive(Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -582,6 +666,7 @@ impl FileV1 {
             lights,
             material: self.material.into_material("material")?,
             back_material: self.back_material.map(|m| m.into_material("back_material")).transpose()?,
+            color_material: self.color_material.map(ColorMaterialFile::into_color_material),
             eye_from_world,
             world_from_object: self.object_matrix.map_or(DMat4::IDENTITY, mat4_from_rows),
             normal_mode: match self.normals {
@@ -633,6 +718,7 @@ impl FileV1 {
             object_matrix: (s.world_from_object != DMat4::IDENTITY).then(|| mat4_rows(&s.world_from_object)),
             material: MaterialFile::from_material(&s.material),
             back_material: s.back_material.as_ref().map(MaterialFile::from_material),
+            color_material: s.color_material.as_ref().map(ColorMaterialFile::of),
             lights: s
                 .lights
                 .iter()

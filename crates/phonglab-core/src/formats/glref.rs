@@ -16,7 +16,10 @@ use thiserror::Error;
 
 use crate::equation::lighting::{Engine, EvalOptions};
 use crate::model::rules::Rules;
-use crate::model::scene::{Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Scene, Vertex};
+use crate::model::scene::{
+    ColorMaterial, ColorMaterialMode, Face, Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Scene,
+    Vertex,
+};
 use crate::model::transform::mat4_from_rows;
 use crate::numerics::real::Real;
 use crate::numerics::strict;
@@ -318,6 +321,7 @@ pub const CASE_KEYS: &[&str] = &[
     "light",
     "material",
     "back_material",
+    "color_material",
     "light_model_ambient",
     "local_viewer",
     "two_sided",
@@ -426,6 +430,37 @@ fn object<'a>(v: &'a Value, field: &str) -> Result<&'a Map<String, Value>, CaseE
     v.as_object().ok_or_else(|| err(field, format!("expected an object, found {v}")))
 }
 
+/// `{"face": "GL_FRONT_AND_BACK", "mode": "GL_AMBIENT_AND_DIFFUSE", "color": [r, g, b, a]}`:
+/// `glColorMaterial(face, mode)`, `glEnable(GL_COLOR_MATERIAL)` and `glColor4f(color)`
+/// (each key optional: OpenGL's initial face and mode, white).
+fn color_material(v: &Value, field: &str) -> Result<ColorMaterial, CaseError> {
+    let o = object(v, field)?;
+    known_keys(o, &["face", "mode", "color"], field)?;
+    let mut cm = ColorMaterial::default();
+    for (k, x) in o {
+        let f = format!("{field}.{k}");
+        let name = || x.as_str().ok_or_else(|| err(&f, format!("expected a GL enum name, found {x}")));
+        match k.as_str() {
+            "face" => {
+                let n = name()?;
+                cm.face = [Face::Front, Face::Back, Face::FrontAndBack]
+                    .into_iter()
+                    .find(|c| c.gl() == n)
+                    .ok_or_else(|| err(&f, format!("{n}: GL_FRONT, GL_BACK or GL_FRONT_AND_BACK")))?;
+            }
+            "mode" => {
+                let n = name()?;
+                cm.mode = ColorMaterialMode::ALL
+                    .into_iter()
+                    .find(|c| c.gl() == n)
+                    .ok_or_else(|| err(&f, format!("{n}: not a glColorMaterial mode")))?;
+            }
+            _ => cm.color = rgba(x, &f)?,
+        }
+    }
+    Ok(cm)
+}
+
 fn material(v: &Value, field: &str) -> Result<Material, CaseError> {
     let o = object(v, field)?;
     known_keys(o, MATERIAL_KEYS, field)?;
@@ -527,6 +562,7 @@ pub fn parse_case(raw: &Value, index: usize) -> Result<Case, CaseError> {
         lights,
         material: get("material").map(|v| material(v, "material")).transpose()?.unwrap_or_default(),
         back_material: get("back_material").map(|v| material(v, "back_material")).transpose()?,
+        color_material: get("color_material").map(|v| color_material(v, "color_material")).transpose()?,
         eye_from_world: modelview,
         world_from_object: DMat4::IDENTITY,
         normal_mode,
@@ -659,6 +695,9 @@ pub fn case_json(id: &str, scene: &Scene) -> Value {
     });
     if let (Some(b), Value::Object(o)) = (&scene.back_material, &mut case) {
         o.insert("back_material".into(), material(b));
+    }
+    if let (Some(cm), Value::Object(o)) = (&scene.color_material, &mut case) {
+        o.insert("color_material".into(), json!({"face": cm.face.gl(), "mode": cm.mode.gl(), "color": v4(cm.color)}));
     }
     case
 }

@@ -123,7 +123,7 @@ pub fn localised_name(name: &str) -> String {
             }
         }
     }
-    for id in ["doc-phong-demo", "doc-spotlight", "doc-three-lights"] {
+    for id in ["doc-phong-demo", "doc-spotlight", "doc-three-lights", "doc-of-set-color"] {
         if crate::locale::Lang::ALL.iter().any(|l| crate::locale::tr_in(*l, id, &[]) == name) {
             return crate::locale::tr(id);
         }

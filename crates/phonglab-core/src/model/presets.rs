@@ -37,6 +37,7 @@ pub fn worksheet(index: usize) -> Scene {
         }],
         material: bronze(),
         back_material: None,
+        color_material: None,
         eye_from_world: view,
         world_from_object: DMat4::IDENTITY,
         // The worksheet divides M n by its length (`vertexNormal/np.linalg.norm(...)`).
@@ -87,6 +88,7 @@ pub fn phong_demo() -> Scene {
             shininess: 100.0,
         },
         back_material: None,
+        color_material: None,
         eye_from_world: phong_demo_eye_from_object(),
         world_from_object: DMat4::IDENTITY,
         normal_mode: NormalMode::AsIs,

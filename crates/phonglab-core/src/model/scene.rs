@@ -14,6 +14,138 @@ pub const MAX_LIGHTS: usize = 8;
 /// An RGBA colour (unclamped: OpenGL accepts any value, negative or above 1).
 pub type Rgba = DVec4;
 
+/// Which sides a `glMaterial` or `glColorMaterial` call sets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum Face {
+    /// `GL_FRONT`.
+    Front,
+    /// `GL_BACK`.
+    Back,
+    /// `GL_FRONT_AND_BACK` (OpenGL's initial `glColorMaterial` face).
+    #[default]
+    FrontAndBack,
+}
+
+impl Face {
+    /// Does this face include side `side` (0 front, 1 back)?
+    pub fn includes(self, side: usize) -> bool {
+        matches!((self, side), (Face::FrontAndBack, _) | (Face::Front, 0) | (Face::Back, 1))
+    }
+
+    /// The OpenGL enum.
+    pub fn gl(self) -> &'static str {
+        match self {
+            Face::Front => "GL_FRONT",
+            Face::Back => "GL_BACK",
+            Face::FrontAndBack => "GL_FRONT_AND_BACK",
+        }
+    }
+}
+
+/// Which material properties track the current colour (`glColorMaterial`'s mode).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum ColorMaterialMode {
+    /// `GL_AMBIENT`: `a_cm`.
+    Ambient,
+    /// `GL_DIFFUSE`: `d_cm` (and so the lit colour's alpha).
+    Diffuse,
+    /// `GL_SPECULAR`: `s_cm`.
+    Specular,
+    /// `GL_EMISSION`: `e_cm`.
+    Emission,
+    /// `GL_AMBIENT_AND_DIFFUSE`: both (OpenGL's initial mode, and what
+    /// openFrameworks' `ofEnableLighting` sets).
+    #[default]
+    AmbientAndDiffuse,
+}
+
+impl ColorMaterialMode {
+    /// Every mode, in OpenGL's order.
+    pub const ALL: [ColorMaterialMode; 5] = [
+        ColorMaterialMode::Ambient,
+        ColorMaterialMode::Diffuse,
+        ColorMaterialMode::Specular,
+        ColorMaterialMode::Emission,
+        ColorMaterialMode::AmbientAndDiffuse,
+    ];
+
+    /// The OpenGL enum.
+    pub fn gl(self) -> &'static str {
+        match self {
+            ColorMaterialMode::Ambient => "GL_AMBIENT",
+            ColorMaterialMode::Diffuse => "GL_DIFFUSE",
+            ColorMaterialMode::Specular => "GL_SPECULAR",
+            ColorMaterialMode::Emission => "GL_EMISSION",
+            ColorMaterialMode::AmbientAndDiffuse => "GL_AMBIENT_AND_DIFFUSE",
+        }
+    }
+
+    /// Does this mode track the material's ambient?
+    pub fn ambient(self) -> bool {
+        matches!(self, ColorMaterialMode::Ambient | ColorMaterialMode::AmbientAndDiffuse)
+    }
+
+    /// Does this mode track the material's diffuse?
+    pub fn diffuse(self) -> bool {
+        matches!(self, ColorMaterialMode::Diffuse | ColorMaterialMode::AmbientAndDiffuse)
+    }
+}
+
+/// `glEnable(GL_COLOR_MATERIAL)` with `glColorMaterial(face, mode)`: the material
+/// properties `mode` names, on the sides `face` names, are the current colour `color`
+/// (`glColor`, what openFrameworks' `ofSetColor` sets) instead of what `glMaterial` set
+/// (OpenGL 2.1, section 2.14.3). openFrameworks' `ofEnableLighting` turns it on with
+/// `GL_FRONT_AND_BACK` and `GL_AMBIENT_AND_DIFFUSE`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ColorMaterial {
+    /// The sides that track.
+    pub face: Face,
+    /// The properties that track.
+    pub mode: ColorMaterialMode,
+    /// The current colour, rgba (OpenGL's initial one is (1, 1, 1, 1)).
+    pub color: Rgba,
+}
+
+impl Default for ColorMaterial {
+    /// OpenGL's initial `glColorMaterial` state and current colour, enabled.
+    fn default() -> Self {
+        Self { face: Face::FrontAndBack, mode: ColorMaterialMode::AmbientAndDiffuse, color: DVec4::ONE }
+    }
+}
+
+impl ColorMaterial {
+    /// `m`, the material of side `side`, with the properties this tracks there replaced by
+    /// the current colour.
+    pub fn apply(&self, m: &Material, side: usize) -> Material {
+        let mut m = m.clone();
+        if !self.face.includes(side) {
+            return m;
+        }
+        if self.mode.ambient() {
+            m.ambient = self.color;
+        }
+        if self.mode.diffuse() {
+            m.diffuse = self.color;
+        }
+        match self.mode {
+            ColorMaterialMode::Specular => m.specular = self.color,
+            ColorMaterialMode::Emission => m.emission = self.color,
+            _ => {}
+        }
+        m
+    }
+
+    /// Does this track `q` (one of the material's colours) on side `side`?
+    pub fn tracks(&self, property: ColorMaterialMode, side: usize) -> bool {
+        self.face.includes(side)
+            && match property {
+                ColorMaterialMode::Ambient => self.mode.ambient(),
+                ColorMaterialMode::Diffuse => self.mode.diffuse(),
+                other => self.mode == other,
+            }
+    }
+}
+
 /// Material parameters of one face side (`glMaterial`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
@@ -185,6 +317,9 @@ pub struct Scene {
     pub material: Material,
     /// Back material for two-sided lighting; `None` means the same as the front.
     pub back_material: Option<Material>,
+    /// `GL_COLOR_MATERIAL`: material properties that track the current colour
+    /// (`glColorMaterial` and `glColor`); `None`: disabled, OpenGL's initial state.
+    pub color_material: Option<ColorMaterial>,
     /// The camera: world to eye coordinates.
     pub eye_from_world: DMat4,
     /// The object's placement: object to world coordinates.
@@ -206,6 +341,7 @@ impl Default for Scene {
             lights: vec![Light::gl_default(0)],
             material: Material::default(),
             back_material: None,
+            color_material: None,
             eye_from_world: DMat4::IDENTITY,
             world_from_object: DMat4::IDENTITY,
             normal_mode: NormalMode::default(),
@@ -245,8 +381,20 @@ impl Scene {
         self.light_pos_in_eye(l).w == 0.0
     }
 
-    /// The material lighting the back side.
+    /// The material lighting the back side, as set by `glMaterial` (before
+    /// `GL_COLOR_MATERIAL`: see [`Scene::lit_material`]).
     pub fn back(&self) -> &Material {
         self.back_material.as_ref().unwrap_or(&self.material)
+    }
+
+    /// The material side `side` (0 front, 1 back) is lit with: its `glMaterial` values, with
+    /// the properties `GL_COLOR_MATERIAL` tracks on that side replaced by the current
+    /// colour. What every engine, shader and exporter lights with.
+    pub fn lit_material(&self, side: usize) -> Material {
+        let set = if side == 0 { &self.material } else { self.back() };
+        match &self.color_material {
+            Some(cm) => cm.apply(set, side),
+            None => set.clone(),
+        }
     }
 }

@@ -10,7 +10,7 @@
 
 use crate::equation::lighting::{EvalOptions, Renormalize};
 use crate::model::rules::{Rules, SpecularModel};
-use crate::model::scene::{NormalMode, Scene};
+use crate::model::scene::{ColorMaterialMode, Face, NormalMode, Scene};
 use crate::model::transform::NormalMatrix;
 use crate::numerics::pow::PowFn;
 
@@ -52,6 +52,9 @@ pub struct Key {
     pub pow: PowFn,
     /// Shininess 0 per side (`max(cos, 0)^0 = 1`: no power to take).
     pub shininess_zero: [bool; 2],
+    /// `GL_COLOR_MATERIAL`'s face and mode: which material colours are the current
+    /// colour (a shader reads them from one uniform).
+    pub color_material: Option<(Face, ColorMaterialMode)>,
     /// Emission and scene ambient are both absent (the sum starts at 0).
     pub scene_color_zero: bool,
     /// The modelview's last row is not (0, 0, 0, 1): w varies from vertex to vertex and
@@ -66,15 +69,16 @@ pub struct Key {
 impl Key {
     /// The key of `scene` under `options`.
     pub fn of(scene: &Scene, options: EvalOptions) -> Key {
-        let back = scene.back();
+        // The materials as lit: GL_COLOR_MATERIAL's current colour where it tracks.
+        let (front, back) = (&scene.lit_material(0), &scene.lit_material(1));
         let spec_nonzero = |l: &crate::model::scene::Light| {
-            [&scene.material, back].iter().any(|m| (0..3).any(|i| m.specular[i] * l.specular[i] != 0.0))
+            [front, back].iter().any(|m| (0..3).any(|i| m.specular[i] * l.specular[i] != 0.0))
         };
         let eye_from_object = scene.eye_from_object();
         let affine = eye_from_object.row(3) == glam::DVec4::W;
         let nm = NormalMatrix::for_rules(&eye_from_object, scene.rules);
         let rules = scene.rules;
-        let scene_color_zero = [&scene.material, back].iter().all(|m| {
+        let scene_color_zero = [front, back].iter().all(|m| {
             let e = if rules.emission() { m.emission.truncate() } else { glam::DVec3::ZERO };
             let a = if rules.scene_ambient() {
                 m.ambient.truncate() * scene.light_model.ambient.truncate()
@@ -103,7 +107,8 @@ impl Key {
             rescale_is_one: nm.rescale == 1.0,
             rules,
             pow: options.pow,
-            shininess_zero: [scene.material.shininess == 0.0, back.shininess == 0.0],
+            shininess_zero: [front.shininess == 0.0, back.shininess == 0.0],
+            color_material: scene.color_material.map(|cm| (cm.face, cm.mode)),
             scene_color_zero,
             projective: !affine,
             translation: affine && glam::DMat3::from_mat4(eye_from_object) == glam::DMat3::IDENTITY,

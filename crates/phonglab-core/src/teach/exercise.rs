@@ -281,6 +281,7 @@ fn draw(rng: &mut Rng, spec: &Spec) -> (Scene, String, String) {
         lights,
         material: named.material.clone(),
         back_material: None,
+        color_material: None,
         eye_from_world: m,
         world_from_object: DMat4::IDENTITY,
         normal_mode: NormalMode::Normalize,

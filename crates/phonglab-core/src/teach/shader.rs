@@ -18,7 +18,7 @@ use std::fmt::Write as _;
 use crate::equation::explain::{Explanation, StepKind};
 use crate::equation::lighting::EvalOptions;
 use crate::model::rules::{NormalTransform, SpecularGate, SpecularModel};
-use crate::model::scene::Scene;
+use crate::model::scene::{ColorMaterialMode, Scene};
 use crate::specialise::plan::{Key, Program, SourceKind, Stage};
 
 /// The shading language.
@@ -135,6 +135,10 @@ fn lighting(
     for side in 0..body.sides() {
         let zero = format!("{}(0.0)", s.vec3());
         body.lines.push(s.var("vec3", &format!("sum{side}"), &zero));
+        if key.separate_specular {
+            // GL_SEPARATE_SPECULAR_COLOR: the specular terms go to a secondary colour of their own.
+            body.lines.push(s.var("vec3", &format!("spec{side}"), &zero));
+        }
     }
     for &stage in &program.stages {
         body.stage(stage);
@@ -178,6 +182,25 @@ impl Body<'_> {
     /// The material a side reads: `back` where the scene has a back material, else `mat`.
     fn material(&self, side: usize) -> &'static str {
         if side == 1 && self.scene.back_material.is_some() { "back" } else { "mat" }
+    }
+
+    /// A material colour of `side` (`ambient`, `diffuse` or `specular`, of GLSL type
+    /// `ty`): its uniform, or, where `GL_COLOR_MATERIAL` tracks it on that side, the
+    /// current colour's (`u_color`, as `glColor` sets it).
+    fn material_color(&mut self, side: usize, what: &str, ty: &'static str) -> String {
+        let property = match what {
+            "ambient" => ColorMaterialMode::Ambient,
+            "diffuse" => ColorMaterialMode::Diffuse,
+            _ => ColorMaterialMode::Specular,
+        };
+        if let Some(cm) = &self.scene.color_material
+            && cm.tracks(property, side)
+        {
+            let c = self.uni("color".into(), "vec4");
+            return if ty == "vec4" { c } else { format!("{c}.xyz") };
+        }
+        let m = self.material(side);
+        self.uni(format!("{m}_{what}"), ty)
     }
 
     /// The normal a side's cosines use.
@@ -311,23 +334,27 @@ impl Body<'_> {
     /// Light `i`'s share on `side`: its ambient, diffuse and specular terms, scaled by its
     /// attenuation and spot factor, added to the side's sum.
     fn sum(&mut self, i: usize, side: usize) {
-        let m = self.material(side);
         let (la, ld, ls) = (
             self.uni(format!("light{i}_ambient"), "vec3"),
             self.uni(format!("light{i}_diffuse"), "vec3"),
             self.uni(format!("light{i}_specular"), "vec3"),
         );
-        let (ma, md) = (self.uni(format!("{m}_ambient"), "vec3"), self.uni(format!("{m}_diffuse"), "vec4"));
+        let (ma, md) = (self.material_color(side, "ambient", "vec3"), self.material_color(side, "diffuse", "vec4"));
         let mut terms = format!("{la} * {ma} + {ld} * {md}.xyz * max(ndl{i}_{side}, 0.0)");
+        let mut specular = None;
         if self.key.lights[i].specular {
-            let ms = self.uni(format!("{m}_specular"), "vec3");
+            let ms = self.material_color(side, "specular", "vec3");
             // The power (or 1 at shininess 0) where the gate lets it through.
             let pf = if self.program.has(Stage::Power(i, side)) {
                 format!("pf{i}_{side}")
             } else {
                 self.s.select(&self.gate_open(i, side), "1.0", "0.0")
             };
-            terms.push_str(&format!(" + {ls} * {ms} * {pf}"));
+            if self.key.separate_specular {
+                specular = Some(format!("{ls} * {ms} * {pf}"));
+            } else {
+                terms.push_str(&format!(" + {ls} * {ms} * {pf}"));
+            }
         }
         let mut scale = String::new();
         if self.program.has(Stage::Attenuate(i)) {
@@ -343,6 +370,15 @@ impl Body<'_> {
         };
         let step = step_no(self.ex, StepKind::Contribution, Some(i));
         self.lines.push(format!("sum{side} = sum{side} + {lit}; // {step}"));
+        if let Some(spec) = specular {
+            let lit = if self.program.has(Stage::ZeroNormals) {
+                self.s.select("n_ok", &format!("{scale}({spec})"), &format!("{}(0.0)", self.s.vec3()))
+            } else {
+                format!("{scale}({spec})")
+            };
+            let step = step_no(self.ex, StepKind::Secondary, None);
+            self.lines.push(format!("spec{side} = spec{side} + {lit}; // {step} (the secondary colour)"));
+        }
     }
 
     /// Each side's colour: its sum (clamped where the rules clamp vertex colours) with the
@@ -351,8 +387,15 @@ impl Body<'_> {
         let clamp = self.scene.rules.clamps_vertex_colors();
         let (v3, v4) = (self.s.vec3(), self.s.vec4());
         for side in 0..self.sides() {
-            let md = self.uni(format!("{}_diffuse", self.material(side)), "vec4");
-            let rgb = if clamp { format!("clamp(sum{side}, {v3}(0.0), {v3}(1.0))") } else { format!("sum{side}") };
+            let md = self.material_color(side, "diffuse", "vec4");
+            let clamped = |v: &str| if clamp { format!("clamp({v}, {v3}(0.0), {v3}(1.0))") } else { v.to_string() };
+            // With a separate specular colour, each colour is clamped on its own and the two
+            // are added (OpenGL's colour sum): what the rasteriser interpolates.
+            let rgb = if self.key.separate_specular {
+                format!("{} + {}", clamped(&format!("sum{side}")), clamped(&format!("spec{side}")))
+            } else {
+                clamped(&format!("sum{side}"))
+            };
             let e = format!("{v4}({rgb}, {md}.w)");
             self.var("vec4", &format!("color{side}"), &e, StepKind::Primary, None, " (alpha: the diffuse alpha)");
         }
@@ -584,6 +627,10 @@ pub fn uniform_value(scene: &Scene, clip_from_object: &glam::DMat4, name: &str) 
     let f = |v: &[f64]| v.iter().map(|x| *x as f32).collect::<Vec<f32>>();
     let eye_from_object = scene.eye_from_object();
     let material = |m: &str| if m == "back" { scene.back() } else { &scene.material };
+    if name == "color" {
+        // GL_COLOR_MATERIAL's current colour (declared only where it tracks).
+        return scene.color_material.map(|cm| f(&cm.color.to_array()));
+    }
     if let Some(rest) = name.strip_prefix("light") {
         let (i, what) = rest.split_once('_')?;
         let l = scene.lights.get(i.parse::<usize>().ok()?)?;
@@ -623,7 +670,7 @@ pub fn uniform_value(scene: &Scene, clip_from_object: &glam::DMat4, name: &str) 
             Some(vec![crate::model::transform::NormalMatrix::for_rules(&eye_from_object, scene.rules).rescale as f32])
         }
         "scene_color" => {
-            let m = &scene.material;
+            let m = &scene.lit_material(0);
             let e = if scene.rules.emission() { m.emission.truncate() } else { glam::DVec3::ZERO };
             let a = if scene.rules.scene_ambient() {
                 m.ambient.truncate() * scene.light_model.ambient.truncate()

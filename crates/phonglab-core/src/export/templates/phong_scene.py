@@ -84,7 +84,7 @@ def state_value(name):
         emission = np.array(glGetMaterialfv(GL_FRONT, GL_EMISSION))[:3]
         ambient = np.array(glGetMaterialfv(GL_FRONT, GL_AMBIENT))[:3]
         return emission + ambient * np.array(glGetFloatv(GL_LIGHT_MODEL_AMBIENT))[:3]
-    raise KeyError(name)
+{{color_reader}}    raise KeyError(name)
 
 
 def set_uniforms(program):
