@@ -8,7 +8,7 @@
 //! and the scene file and the glref case must give the field back.
 
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT, Queryable};
 use glam::DVec4;
 use phonglab::app::{AppState, app_ui};
 use phonglab_core::explain::{Side, explain};
@@ -198,5 +198,25 @@ fn every_field_has_a_labelled_control_in_the_window() {
             "{}: no control labelled {label:?}",
             field.name
         );
+    }
+}
+
+/// Where `GL_COLOR_MATERIAL` tracks a material colour, the window greys that colour's
+/// fields (they are not what lights the vertex) and leaves the others editable.
+#[test]
+fn the_colours_colour_material_tracks_are_greyed() {
+    let mut state = AppState::worksheet();
+    state.doc = with(&FIELDS[1], |f| f.set);
+    let mut h =
+        Harness::builder().with_size([1500.0, 2400.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+    h.run_steps(3);
+    let enabled = |label: &str| -> Vec<bool> {
+        let label = phonglab_core::locale::tr(label);
+        h.query_all_by_label_contains(&label).map(|n| !n.accesskit_node().is_disabled()).collect()
+    };
+    for (label, want) in [("material-ambient", false), ("material-diffuse", false), ("material-specular", true)] {
+        let got = enabled(label);
+        assert!(!got.is_empty(), "no {label} fields");
+        assert!(got.iter().all(|e| *e == want), "{label}: enabled {got:?}, want {want}");
     }
 }

@@ -134,6 +134,7 @@ color-material-hover = The material colours it tracks follow the current colour 
 color-material-mode = Tracks
 color-material-face = Faces
 color-material-color = Current colour (glColor)
+color-material-tracked = GL_COLOR_MATERIAL makes this the current colour: what is set here returns when it is off
 scene-ambient = Scene ambient
 local-viewer = Local viewer
 two-sided = Two-sided lighting

@@ -134,6 +134,7 @@ color-material-hover = As cores do material que acompanha seguem a cor atual (gl
 color-material-mode = Acompanha
 color-material-face = Faces
 color-material-color = Cor atual (glColor)
+color-material-tracked = O GL_COLOR_MATERIAL faz desta a cor atual: o que está aqui volta quando ele for desligado
 scene-ambient = Ambiente da cena
 local-viewer = Observador local
 two-sided = Iluminação das duas faces

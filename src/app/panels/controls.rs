@@ -193,7 +193,9 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut ControlsState) {
     }
 }
 
-fn material_ui(ui: &mut Ui, m: &mut Material, back: bool) {
+/// One side's material; the colours `GL_COLOR_MATERIAL` tracks there (`tracks`) are shown
+/// but greyed, with why.
+fn material_ui(ui: &mut Ui, m: &mut Material, back: bool, tracks: impl Fn(ColorMaterialMode) -> bool) {
     // "Material shininess" (the quantity's own label) or "Back shininess", as one
     // message each.
     let label = |field: &str| {
@@ -211,15 +213,26 @@ fn material_ui(ui: &mut Ui, m: &mut Material, back: bool) {
             }
         }
     });
-    color_ui(ui, &quantity(Q::MatAmbient, "ambient"), &mut m.ambient, false);
-    color_ui(ui, &quantity(Q::MatDiffuse, "diffuse"), &mut m.diffuse, true);
-    color_ui(ui, &quantity(Q::MatSpecular, "specular"), &mut m.specular, false);
-    color_ui(ui, &quantity(Q::MatEmission, "emission"), &mut m.emission, false);
+    let colours = [
+        (ColorMaterialMode::Ambient, quantity(Q::MatAmbient, "ambient"), &mut m.ambient, false),
+        (ColorMaterialMode::Diffuse, quantity(Q::MatDiffuse, "diffuse"), &mut m.diffuse, true),
+        (ColorMaterialMode::Specular, quantity(Q::MatSpecular, "specular"), &mut m.specular, false),
+        (ColorMaterialMode::Emission, quantity(Q::MatEmission, "emission"), &mut m.emission, false),
+    ];
+    for (property, label, c, alpha) in colours {
+        let tracked = tracks(property);
+        let r = ui.add_enabled_ui(!tracked, |ui| color_ui(ui, &label, c, alpha));
+        if tracked {
+            r.response.on_disabled_hover_text(t!("color-material-tracked"));
+        }
+    }
     slider_ui(ui, &quantity(Q::Shininess, "shininess"), &mut m.shininess, 0.0..=128.0, false);
 }
 
 fn material_section_ui(ui: &mut Ui, doc: &mut Document) {
-    material_ui(ui, &mut doc.scene.material, false);
+    let cm = doc.scene.color_material;
+    let tracks = |side: usize| move |p: ColorMaterialMode| cm.is_some_and(|cm| cm.tracks(p, side));
+    material_ui(ui, &mut doc.scene.material, false, tracks(0));
     color_material_ui(ui, doc);
     if doc.scene.light_model.two_sided {
         let mut separate = doc.scene.back_material.is_some();
@@ -227,7 +240,7 @@ fn material_section_ui(ui: &mut Ui, doc: &mut Document) {
             doc.scene.back_material = separate.then(|| doc.scene.material.clone());
         }
         if let Some(b) = &mut doc.scene.back_material {
-            material_ui(ui, b, true);
+            material_ui(ui, b, true, tracks(1));
         }
     }
 }
