@@ -529,9 +529,61 @@ fn the_pdfs_are_typeset_sheets_to_hand_out_and_keys_for_the_teacher() {
     }
     assert!(values > 100, "{values} answers checked");
 
-    // In Portuguese: the lines to write on, the steps' names and the decimal comma.
+    // Exact as printed: no value below its vector's last printed digit (a rotation's
+    // 6.123234e-17 beside a 1 is 0), no -0; and one numbering: every step a sheet asks has
+    // the number the key gives it.
+    for text in [&sheets, &keys] {
+        assert!(!text.split_whitespace().any(|t| t.trim_matches(|c| c == '[' || c == ']') == "-0"), "a -0 is printed");
+    }
+    let mut vectors = 0;
+    for k in 0..=3 {
+        let key = std::fs::read_to_string(out.join(format!("exercise-{k:02}-key.md"))).unwrap();
+        let values = key.lines().filter(|l| l.starts_with("    ") && l.ends_with(']'));
+        for v in values.filter_map(|l| l.split_once(" = [").map(|(_, v)| v.trim_end_matches(']'))) {
+            let xs: Vec<f64> = v.split_whitespace().map(|x| x.parse().unwrap()).collect();
+            let largest = xs.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            for x in xs.iter().filter(|x| **x != 0.0) {
+                assert!(x.abs() >= largest * 1e-8, "exercise {k}: {x} beside {largest} is below the printed digits");
+            }
+            vectors += 1;
+        }
+    }
+    assert!(vectors > 100, "{vectors} vectors checked");
+    for k in 1..=3 {
+        let sheet = std::fs::read_to_string(out.join(format!("exercise-{k:02}.md"))).unwrap();
+        let key = std::fs::read_to_string(out.join(format!("exercise-{k:02}-key.md"))).unwrap();
+        let mut asked = 0;
+        for line in sheet.lines().filter(|l| l.ends_with("= ________")) {
+            let (number, rest) = line.split_once(". ").unwrap();
+            let title = rest.split(": `").next().unwrap();
+            let numbered = format!("{number:>2}. {title}");
+            assert!(key.contains(&numbered), "exercise {k}: the key does not number {title:?} {number}");
+            asked += 1;
+        }
+        assert!(asked > 5, "exercise {k}: {asked} steps asked");
+    }
+
+    // In Portuguese: the lines to write on, the steps' names and the decimal comma; the
+    // index in Portuguese too (the effects and the rules in words).
     let pt = out.join("pt");
-    let o = phonglab(&["exercise", "--lang", "pt-PT", "--seed", "5", "--count", "1", "--out", pt.to_str().unwrap()]);
+    let o = phonglab(&[
+        "exercise",
+        "--lang",
+        "pt-PT",
+        "--seed",
+        "5",
+        "--count",
+        "1",
+        "--level",
+        "4",
+        "--out",
+        pt.to_str().unwrap(),
+    ]);
+    let index = std::fs::read_to_string(pt.join("index.md")).unwrap();
+    for english in ["positional", "attenuation", "two-sided", "several-lights", "local-viewer", "worksheet"] {
+        assert!(!index.contains(english), "{english:?} in the Portuguese index:\n{index}");
+    }
+    assert!(index.contains("várias luzes") && index.contains("atenuação"), "{index}");
     assert!(o.status.success(), "{}", stderr(&o));
     let text = stdout(&Command::new("pdftotext").arg(pt.join("sheets.pdf")).arg("-").output().unwrap());
     for pt_text in ["Turma:", "Nome:", "Data:", "Vetor da luz", "Calcular", "exercício 1 (semente 5)"] {

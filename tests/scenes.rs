@@ -37,7 +37,7 @@ fn asset(name: &str) -> Document {
 #[test]
 fn every_scene_file_loads_and_lights_its_vertex() {
     let files = scene_files();
-    assert_eq!(files.len(), 5 + 1 + 24 + 3, "{files:?}");
+    assert_eq!(files.len(), 5 + 1 + 24 + 4, "{files:?}");
     for p in &files {
         let doc = load(p);
         assert!(!doc.name.is_empty(), "{}", p.display());

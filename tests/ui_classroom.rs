@@ -6,7 +6,7 @@ mod common;
 
 use egui::accesskit::Role;
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT, Queryable};
 use phonglab::app::panels::shaded::vector_arrows;
 use phonglab::app::shell::layout::{Beside, Theme};
 use phonglab::app::{AppState, app_ui};
@@ -112,8 +112,8 @@ fn the_vectors_are_drawn_on_the_object_after_a_click_and_point_the_right_way() {
     let image = h.get_all_by_role(Role::Image).next().unwrap().rect();
     let eval = h.state().evaluate().unwrap();
     assert!(vector_arrows(&h.state().doc, &eval, image).is_empty(), "the worksheet's vertex is not on the sphere");
-    // Click right of the sphere's centre: a vertex whose normal points right.
-    let at = image.center() + egui::vec2(image.width() * 0.25, 0.0);
+    // Click right of the teapot's centre, on its body: a vertex whose normal points right.
+    let at = image.center() + egui::vec2(image.width() * 0.15, 0.0);
     h.drag_at(at);
     h.drop_at(at);
     h.run_steps(2);
@@ -200,6 +200,42 @@ fn compare_pins_a_and_highlights_the_steps_that_differ() {
     h.get_by_label("Close compare").click();
     h.run_steps(2);
     assert!(!h.state().compare.open);
+}
+
+/// Compare's difference view on the start scene, Gouraud (A) against Phong (B): a third
+/// picture as large as the two, and a legend that says how much differs, 5 % of the teapot
+/// or more by more than 24/255.
+#[test]
+fn compare_shows_how_much_gouraud_and_phong_differ() {
+    let mut h = harness_at(1440.0, 900.0);
+    h.get_by_label("Compare").click();
+    h.run_steps(2);
+    h.get_by_label("Pin the current scene as A again").click();
+    h.run_steps(2);
+    // B: Phong (key 2).
+    h.key_press(egui::Key::Num2);
+    h.run_steps(2);
+    h.get_by_label("Difference |A − B|").click();
+    h.run_steps(3);
+    let legend = h
+        .get_by_label_contains("of the object's pixels differ by more than 24/255")
+        .accesskit_node()
+        .label()
+        .unwrap_or_default();
+    let percent: f64 = legend
+        .split(" % ")
+        .next()
+        .and_then(|head| head.rsplit(' ').next())
+        .and_then(|p| p.parse().ok())
+        .unwrap_or_else(|| panic!("no percentage in {legend:?}"));
+    assert!(percent >= 5.0, "{legend}");
+    let pics: Vec<egui::Rect> = h.state().ui.geometry.pictures.clone();
+    assert_eq!(pics.len(), 3, "A, B and the difference: {pics:?}");
+    for r in &pics {
+        assert!((r.width() - pics[0].width()).abs() < 1.0 && (r.width() - r.height()).abs() < 1.0, "{pics:?}");
+    }
+    assert!(pics[0].width() >= 240.0, "{pics:?}");
+    assert!(pics[0].right() <= pics[1].left() && pics[1].right() <= pics[2].left(), "side by side: {pics:?}");
 }
 
 /// Writes the README's screenshots (presentation mode and Compare, at 1280×720) when

@@ -42,7 +42,7 @@ pub struct ExerciseArgs {
 /// The set the arguments ask for.
 fn request_of(a: &ExerciseArgs) -> Result<Request> {
     let spec = spec_of(a)?;
-    Ok(Request { seed: a.seed, count: a.count as usize, spec, rules_name: a.rules.clone(), worksheet: a.worksheet })
+    Ok(Request { seed: a.seed, count: a.count as usize, spec, worksheet: a.worksheet })
 }
 
 fn spec_of(a: &ExerciseArgs) -> Result<Spec> {

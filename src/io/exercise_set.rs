@@ -34,8 +34,6 @@ pub struct Request {
     pub count: usize,
     /// The effects the exercises have and the rules their answers follow.
     pub spec: Spec,
-    /// The rules as the index names them (`worksheet`, `opengl`).
-    pub rules_name: String,
     /// Exercise 0: the worksheet's five modelviews on one sheet.
     pub worksheet: bool,
 }
@@ -61,7 +59,7 @@ fn answer_key_body(doc: &Document, file: &str) -> Result<String> {
     for ex in explained_sides(doc)? {
         // Inside a code block: one printable line.
         let name = phonglab_core::escape::terminal::text(&doc.name);
-        let _ = writeln!(o, "```\n{}\n{}```\n", t!("worked-calculation-of", name = name), ex.to_text(8));
+        let _ = writeln!(o, "```\n{}\n{}```\n", t!("worked-calculation-of", name = name), ex.to_handout_text(8));
     }
     Ok(o)
 }
@@ -104,12 +102,12 @@ fn worksheet_sheet(set: &mut FileSet, sheets: &mut Vec<Block>, keys: &mut Vec<Bl
         set.add(file.clone(), doc.to_toml()?);
         let rows = phonglab_core::transform::mat4_rows(&doc.scene.eye_from_world);
         let _ = writeln!(sheet, "## mview{k} ({file})\n\n```");
-        for r in rows {
-            let _ = writeln!(sheet, "[{}]", r.map(|x| phonglab_core::locale::num(x, 8)).join(" "));
+        for r in matrix_components(&rows) {
+            let _ = writeln!(sheet, "[{}]", r.join(" "));
         }
         let _ = writeln!(sheet, "```\n");
         sheets.push(Block::Heading(format!("mview{k} ({file})")));
-        sheets.push(Block::Matrix { name: format!("mview{k}"), rows: rows.iter().map(|r| components(r)).collect() });
+        sheets.push(Block::Matrix { name: format!("mview{k}"), rows: matrix_components(&rows) });
         let _ = write!(key, "## mview{k}\n\n{}", answer_key_body(&doc, &file)?);
         keys.extend(key_blocks(&doc, &file)?.into_iter().skip(1));
     }
@@ -118,14 +116,22 @@ fn worksheet_sheet(set: &mut FileSet, sheets: &mut Vec<Block>, keys: &mut Vec<Bl
     Ok(format!("- [{}](exercise-00.md) ([{}](exercise-00-key.md))\n", t!("exercise-zero-title"), t!("answers")))
 }
 
-/// A vector's components for people (8 significant digits, the locale's decimal mark).
 /// Several quantities given on one line: `[atC atLin atQuad]`.
 fn names<const N: usize>(qs: [Q; N]) -> String {
     format!("[{}]", qs.map(Q::name).join(" "))
 }
 
+/// A vector's components for people (8 significant digits, the locale's decimal mark), as
+/// printed on a handout (`explain::printed_components`: no 6.123234e-17 where 0 belongs).
 fn components(v: &[f64]) -> Vec<String> {
-    v.iter().map(|x| phonglab_core::locale::num(*x, 8)).collect()
+    phonglab_core::explain::printed_components(v, 8).iter().map(|x| phonglab_core::locale::num(*x, 8)).collect()
+}
+
+/// A matrix's rows for people, as printed on a handout: an entry below the whole matrix's
+/// last printed digit is 0.
+fn matrix_components(rows: &[[f64; 4]; 4]) -> Vec<Vec<String>> {
+    let printed = phonglab_core::explain::printed_components(rows.as_flattened(), 8);
+    printed.chunks(4).map(|r| r.iter().map(|x| phonglab_core::locale::num(*x, 8)).collect()).collect()
 }
 
 /// A colour as the worksheet writes it, `[r g b 0]`.
@@ -145,13 +151,13 @@ fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
         WriteOn(vec![t!("sheet-class"), t!("sheet-name"), t!("sheet-date")]),
         Text(format!("{} {}", t!("sheet-compute", rules = rules), t!("sheet-colours"))),
         Heading(t!("sheet-vertex")),
-        vector("vertexPos", components(&s.vertex.position.to_array())),
-        vector("vertexNormal", components(&s.vertex.normal.extend(0.0).to_array())),
+        vector(Q::VertexPos.name(), components(&s.vertex.position.to_array())),
+        vector(Q::VertexNormal.name(), components(&s.vertex.normal.extend(0.0).to_array())),
         Heading(t!("sheet-modelview")),
         Text(ex.modelview.clone()),
         Matrix {
             name: "mview".into(),
-            rows: phonglab_core::transform::mat4_rows(&s.eye_from_world).iter().map(|r| components(r)).collect(),
+            rows: matrix_components(&phonglab_core::transform::mat4_rows(&s.eye_from_world)),
         },
     ];
     for (i, l) in s.lights.iter().enumerate() {
@@ -194,10 +200,11 @@ fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
     }
     b.push(Heading(t!("sheet-compute-heading")));
     let asked = (0..ex.key.steps.len()).filter(|k| phonglab_core::quiz::asked(s, &ex.key, *k));
-    for (n, k) in asked.enumerate() {
+    // Numbered as the key numbers them: the calculation's own step numbers.
+    for k in asked {
         let st = &ex.key.steps[k];
         let cells = st.value.as_ref().map_or(1, Vec::len);
-        b.push(Answer { label: format!("{}. {}", n + 1, st.title), name: st.name.clone(), cells });
+        b.push(Answer { label: format!("{}. {}", k + 1, st.title), name: st.name.clone(), cells });
     }
     b.push(Text(t!("sheet-scene-file", file = toml).replace('`', "")));
     b
@@ -212,7 +219,7 @@ fn key_blocks(doc: &Document, file: &str) -> Result<Vec<Block>> {
         b.push(Heading(ex.heading.clone()));
         for (k, st) in ex.steps.iter().enumerate() {
             let value = match &st.value {
-                Some(v) => phonglab_core::locale::decimal(&phonglab_core::explain::fmt_value(v, 8)),
+                Some(v) => phonglab_core::locale::decimal(&phonglab_core::explain::fmt_printed(v, 8)),
                 None => t!("not-applicable"),
             };
             b.push(KeyStep {
@@ -231,12 +238,14 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
     let spec = &a.spec;
     let exercises = generate(a.seed, a.count, spec).map_err(|e| anyhow::anyhow!(e))?;
     let mut set = FileSet::default();
-    let names: Vec<&str> = spec.effects.iter().map(|e| e.name()).collect();
+    // In the reader's words: the effects' and the rules' names, not the command line's.
+    let names: Vec<String> = spec.effects.iter().map(|e| e.label()).collect();
     let effects = if names.is_empty() { t!("index-directional-only") } else { names.join(", ") };
+    let rules = phonglab_core::exercise::rules_in_words(spec.rules.set);
     let mut index = format!(
         "# {}\n\n{}\n\n",
         t!("index-title", seed = a.seed.to_string()),
-        t!("index-intro", effects = effects, rules = &a.rules_name)
+        t!("index-intro", effects = effects, rules = rules)
     );
     // To hand out, each exercise on its own paper; and the keys, for the teacher.
     let (mut sheets, mut keys) = (Vec::new(), Vec::new());

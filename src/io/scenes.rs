@@ -101,7 +101,7 @@ mod tests {
 
     #[test]
     fn every_shipped_file_is_listed_and_loads() {
-        assert_eq!(SCENE_FILES.len(), 33);
+        assert_eq!(SCENE_FILES.len(), 34);
         assert_eq!(scene_files().len(), SCENE_FILES.len(), "every shipped file loads");
         use phonglab_core::locale::{Lang, Locale, set_thread};
         set_thread(Some(Locale::of(Lang::En)));

@@ -53,7 +53,7 @@ pub use model::{camera, error, materials, presets, rules, scene, transform, view
 pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
 pub use raster::{render, shaded};
 pub use specialise::{batch, effects, lighter, plan};
-pub use study::{bench, cost};
+pub use study::{bench, cost, difference};
 pub use teach::{exercise, quiz, shader};
 
 pub use breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerms, VertexLighting};

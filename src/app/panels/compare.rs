@@ -8,6 +8,8 @@ use phonglab_core::explain::{Explanation, fmt_value};
 use phonglab_core::{Document, PowFn};
 use phonglab_core::{locale, t};
 
+use phonglab_core::difference::{Difference, GAIN, VISIBLE, difference};
+
 use crate::app::model::evaluated::{Evaluated, Precision, evaluate};
 use crate::app::panels::shaded::cache::ViewCache;
 
@@ -106,6 +108,10 @@ pub struct CompareState {
     pub a_view: ViewCache,
     /// B's shaded view.
     pub b_view: ViewCache,
+    /// Show the difference picture `|A - B|` beside them.
+    pub difference: bool,
+    /// The last difference picture, and the pictures' generations it was made from.
+    diff: Option<((u64, u64), Difference, egui::TextureHandle)>,
 }
 
 impl CompareState {
@@ -183,7 +189,42 @@ fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) -> Option
     at
 }
 
-/// The compare view, in the centre.
+/// The difference picture `|A - B|` (amplified by [`GAIN`]) with its legend: how much of
+/// the object differs visibly, and the largest difference. Made again only when either
+/// picture was; returns where it went.
+fn difference_ui(ui: &mut Ui, compare: &mut CompareState, background: [f32; 3], px: usize) -> Option<egui::Rect> {
+    let (a, b) = (&compare.a_view, &compare.b_view);
+    if a.rgba.len() != b.rgba.len() || a.rgba.is_empty() {
+        return None;
+    }
+    let generations = (a.generation, b.generation);
+    if compare.diff.as_ref().is_none_or(|(g, ..)| *g != generations) {
+        let bg = background.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+        let d = difference(&a.rgba, &b.rgba, bg);
+        let size = [a.image_px(), a.image_px()];
+        let image = egui::ColorImage::from_rgba_unmultiplied(size, &d.rgba);
+        let tex = ui.ctx().load_texture("compare-difference", image, egui::TextureOptions::LINEAR);
+        compare.diff = Some((generations, d, tex));
+    }
+    let (_, d, tex) = compare.diff.as_ref()?;
+    let mut at = None;
+    ui.vertical(|ui| {
+        ui.label(RichText::new(t!("compare-difference-view", gain = GAIN.to_string())).strong());
+        let legend = t!(
+            "compare-difference-legend",
+            full = (256 / GAIN).to_string(),
+            percent = locale::decimal(&format!("{:.1}", d.visible_percent())),
+            visible = VISIBLE.to_string(),
+            largest = d.largest.to_string()
+        );
+        let label = ui.label(legend);
+        let side = px as f32 / ui.ctx().pixels_per_point();
+        let r = ui.add(egui::Image::new((tex.id(), egui::vec2(side, side)))).labelled_by(label.id);
+        at = Some(r.rect);
+    });
+    at
+}
+
 /// The scene shown (B) and the numerics it is evaluated with.
 pub struct Current<'a> {
     /// B's document.
@@ -217,6 +258,10 @@ pub fn compare_ui(
         if ui.button(t!("compare-close")).clicked() {
             compare.open = false;
         }
+        if compare.a.is_some() {
+            ui.checkbox(&mut compare.difference, t!("compare-difference"))
+                .on_hover_text(t!("compare-difference-hover"));
+        }
     });
     let Some(a) = compare.a.clone() else {
         ui.add_space(12.0);
@@ -235,15 +280,21 @@ pub fn compare_ui(
     let avail = ui.available_size();
     // Two large squares; the steps below get what is left (at least a few lines).
     let row = ui.text_style_height(&egui::TextStyle::Body) * 4.0;
-    let side = ((avail.x - 24.0) / 2.0).min(avail.y * 0.75 - row).max(64.0);
+    let n = if compare.difference { 3.0 } else { 2.0 };
+    let side = ((avail.x - 12.0 * n) / n).min(avail.y * 0.75 - row).max(64.0);
     let px = ((side * ui.ctx().pixels_per_point()) as usize).clamp(64, 2048);
     let (doc, pow) = (current.doc.clone(), current.pow);
     let sa = Side { which: "A", what: a.describe(), doc: &a.doc, eval: &a_eval, pow: a.pow };
     let sb = Side { which: "B", what: b_pinned.describe(), doc: &doc, eval: b, pow };
-    let pictures = ui.columns(2, |cols| {
+    let pictures = ui.columns(n as usize, |cols| {
         let a = side_ui(&mut cols[0], &sa, &mut compare.a_view, px);
         let b = side_ui(&mut cols[1], &sb, &mut compare.b_view, px);
-        a.into_iter().chain(b).collect::<Vec<_>>()
+        let d = if compare.difference {
+            difference_ui(&mut cols[2], compare, current.doc.view.background, px)
+        } else {
+            None
+        };
+        a.into_iter().chain(b).chain(d).collect::<Vec<_>>()
     });
     ui.separator();
     let mut pairs = step_pairs(&a_eval.explanation, &b.explanation);

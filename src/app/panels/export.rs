@@ -56,7 +56,6 @@ pub fn exercises_zip(e: &ExportState) -> Result<Vec<u8>, String> {
         seed: u64::from(e.seed),
         count: e.count.clamp(1, 100) as usize,
         spec: Spec::level(level, phonglab_core::Rules::WORKSHEET),
-        rules_name: "worksheet".into(),
         worksheet: false,
     };
     let (_, set) = crate::io::exercise_set::exercise_set(&request).map_err(|e| format!("{e:#}"))?;

@@ -135,6 +135,20 @@ pub fn fmt_value(v: &[f64], sig: usize) -> String {
     }
 }
 
+/// `v` as printed with `sig` significant digits on a handout: a component smaller than
+/// the largest one's last printed digit (below `max |v| * 10^-sig`) is 0 there (a
+/// rotation's `cos 90° = 6.123234e-17` next to a 1), and -0 is 0.
+pub fn printed_components(v: &[f64], sig: usize) -> Vec<f64> {
+    let largest = v.iter().filter(|x| x.is_finite()).fold(0.0f64, |m, x| m.max(x.abs()));
+    let floor = largest * 10f64.powi(-(sig as i32));
+    v.iter().map(|&x| if x == 0.0 || x.abs() < floor { 0.0 } else { x }).collect()
+}
+
+/// [`fmt_value`] for handouts (exercise sheets and keys): [`printed_components`] first.
+pub fn fmt_printed(v: &[f64], sig: usize) -> String {
+    fmt_value(&printed_components(v, sig), sig)
+}
+
 /// What a modelview that is not a rotation does to the worksheet's normal (which it
 /// transforms by M itself, where OpenGL uses (M^-1)^T): the rows' angles and lengths, and
 /// how far apart the two normals point.
@@ -543,6 +557,16 @@ fn total_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
 impl Explanation {
     /// Plain text, one numbered step per two lines: title and formula, then `name = value`.
     pub fn to_text(&self, sig: usize) -> String {
+        self.text_with(sig, fmt_value)
+    }
+
+    /// [`Explanation::to_text`] for a handout: every value as printed there
+    /// ([`fmt_printed`]: no `6.123234e-17` where 0 belongs, no -0).
+    pub fn to_handout_text(&self, sig: usize) -> String {
+        self.text_with(sig, fmt_printed)
+    }
+
+    fn text_with(&self, sig: usize, fmt_value: fn(&[f64], usize) -> String) -> String {
         let mut s = String::new();
         let _ = writeln!(s, "{}", self.heading);
         for (k, st) in self.steps.iter().enumerate() {

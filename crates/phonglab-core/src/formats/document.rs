@@ -63,11 +63,18 @@ pub struct Document {
     pub view: View,
 }
 
+/// The start view's teapot tessellation (quads a patch side): see [`Document::default`].
+pub const START_TEAPOT_GRID: u32 = 3;
+/// The start view's camera distance: the whole teapot, spout included, in the picture.
+pub const START_CAMERA_DISTANCE: f64 = 2.8;
+
 impl Default for Document {
-    /// The worksheet with modelview 5, its shaded view on the Utah teapot: the teapot's
-    /// patches are coarse enough that Gouraud's highlight differs from Phong's at first sight
-    /// (up to 67/255 at 256 pixels, where a 50x50 sphere differs by 6/255), and the worked
-    /// vertex stays the worksheet's.
+    /// The worksheet with modelview 5, its shaded view on the Utah teapot tessellated
+    /// coarsely (3 quads a patch side, where glutSolidTeapot has 7): coarse enough that
+    /// Gouraud's highlight, interpolated between vertices, visibly misses Phong's (at 512
+    /// pixels, 5.4 % of the teapot's pixels differ by more than 24/255, where
+    /// glutSolidTeapot's 7 give 1.1 %), with the camera back far enough (2.8) that the
+    /// spout is in the picture. The worked vertex stays the worksheet's.
     fn default() -> Self {
         let mut d = Document::from_scene(
             &crate::t!("doc-worksheet", k = "5"),
@@ -75,6 +82,8 @@ impl Default for Document {
             crate::model::presets::worksheet(5),
         );
         d.view.object = crate::model::view::ObjectKind::Teapot;
+        d.view.teapot_grid = START_TEAPOT_GRID;
+        d.view.camera.distance = START_CAMERA_DISTANCE;
         d
     }
 }

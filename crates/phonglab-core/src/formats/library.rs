@@ -123,7 +123,9 @@ pub fn localised_name(name: &str) -> String {
             }
         }
     }
-    for id in ["doc-phong-demo", "doc-spotlight", "doc-three-lights", "doc-of-set-color"] {
+    for id in
+        ["doc-phong-demo", "doc-spotlight", "doc-three-lights", "doc-of-set-color", "doc-gouraud-misses-the-highlight"]
+    {
         if crate::locale::Lang::ALL.iter().any(|l| crate::locale::tr_in(*l, id, &[]) == name) {
             return crate::locale::tr(id);
         }

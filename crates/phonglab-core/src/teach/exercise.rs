@@ -69,6 +69,18 @@ impl Effect {
         }
     }
 
+    /// The effect in words, in the reader's language (an exercise set's index).
+    pub fn label(self) -> String {
+        match self {
+            Effect::Positional => crate::t!("exercise-effect-positional"),
+            Effect::Attenuation => crate::t!("exercise-effect-attenuation"),
+            Effect::Spot => crate::t!("exercise-effect-spot"),
+            Effect::LocalViewer => crate::t!("exercise-effect-local-viewer"),
+            Effect::TwoSided => crate::t!("exercise-effect-two-sided"),
+            Effect::SeveralLights => crate::t!("exercise-effect-several-lights"),
+        }
+    }
+
     /// The effect named `s`.
     pub fn parse(s: &str) -> Option<Effect> {
         Effect::ALL.into_iter().find(|e| e.name() == s.trim())
@@ -406,13 +418,13 @@ fn num(x: f64) -> String {
 }
 
 fn vec4(v: DVec4) -> String {
-    crate::locale::decimal(&crate::equation::explain::fmt_value(&[v.x, v.y, v.z, v.w], 8))
+    crate::locale::decimal(&crate::equation::explain::fmt_printed(&[v.x, v.y, v.z, v.w], 8))
 }
 
 /// A colour as the worksheet writes it, `[r g b 0]`: every product of two colours (Iamb,
 /// Idif, Ispec) then has 0 as its fourth component, as the key does.
 fn colour4(c: DVec4) -> String {
-    crate::locale::decimal(&crate::equation::explain::fmt_value(&[c.x, c.y, c.z, 0.0], 8))
+    crate::locale::decimal(&crate::equation::explain::fmt_printed(&[c.x, c.y, c.z, 0.0], 8))
 }
 
 /// The rules an exercise is computed under, as its sheet says them.
@@ -434,13 +446,16 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
     let _ = writeln!(o, "{}\n", crate::t!("sheet-compute", rules = rules_in_words(s.rules.set)));
     let _ = writeln!(o, "{}\n", crate::t!("sheet-colours"));
     let _ = writeln!(o, "## {}\n", crate::t!("sheet-vertex"));
-    let _ = writeln!(o, "- vertexPos = {}", vec4(s.vertex.position));
-    let _ = writeln!(o, "- vertexNormal = {}\n", vec4(s.vertex.normal.extend(0.0)));
+    let _ = writeln!(o, "- {} = {}", Q::VertexPos.name(), vec4(s.vertex.position));
+    let _ = writeln!(o, "- {} = {}\n", Q::VertexNormal.name(), vec4(s.vertex.normal.extend(0.0)));
     let _ = writeln!(o, "## {}\n", crate::t!("sheet-modelview"));
     let (words, material) = (ex.modelview.as_str(), crate::model::materials::display_name(&ex.material));
     let _ = writeln!(o, "{words}:\n\n```");
+    // As printed: an entry below the matrix's last printed digit is 0 (a rotation's
+    // cos 90°), -0 is 0.
     let rows = crate::model::transform::mat4_rows(&s.eye_from_world);
-    for r in rows {
+    let printed = crate::equation::explain::printed_components(rows.as_flattened(), 8);
+    for r in printed.chunks(4) {
         let _ = writeln!(o, "[{}]", r.iter().map(|x| format!("{:>12}", num(*x))).collect::<Vec<_>>().join(" "));
     }
     let _ = writeln!(o, "```\n");
@@ -499,9 +514,10 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
     }
     let _ = writeln!(o, "\n## {}\n", crate::t!("sheet-compute-heading"));
     let asked = (0..ex.key.steps.len()).filter(|k| crate::teach::quiz::asked(s, &ex.key, *k));
-    for (n, k) in asked.enumerate() {
+    // Numbered as the key numbers them: the calculation's own step numbers.
+    for k in asked {
         let st = &ex.key.steps[k];
-        let _ = writeln!(o, "{}. {}: `{}` = ________", n + 1, st.title, st.name);
+        let _ = writeln!(o, "{}. {}: `{}` = ________", k + 1, st.title, st.name);
     }
     o
 }

@@ -21,6 +21,11 @@ pub struct ViewCache {
     key: Option<PictureKey>,
     /// The last frame's render time in milliseconds (on the CPU).
     pub last_ms: f64,
+    /// The last picture's pixels (RGBA8, `image_px()` square), for Compare's difference.
+    pub(crate) rgba: Vec<u8>,
+    /// How many pictures this cache has drawn: a picture derived from it (the difference)
+    /// is made again when this changes.
+    pub(crate) generation: u64,
     /// Who drew the last picture: the GPU (the adapter's name) or the CPU renderer (and
     /// why not the GPU).
     pub drawn_by: DrawnBy,
@@ -92,6 +97,8 @@ impl ViewCache {
         let (img, _) = self.renderer.render(&setup.job(&mesh), px, px).map_err(|e| e.to_string())?;
         self.last_ms = t.elapsed().as_secs_f64() * 1e3;
         let image = ColorImage::from_rgba_unmultiplied([img.width, img.height], &img.rgba);
+        self.rgba.clone_from(&img.rgba);
+        self.generation += 1;
         match &mut self.texture {
             Some(tex) => tex.set(image, TextureOptions::LINEAR),
             None => self.texture = Some(ctx.load_texture(name, image, TextureOptions::LINEAR)),
