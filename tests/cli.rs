@@ -529,6 +529,42 @@ fn the_pdfs_are_typeset_sheets_to_hand_out_and_keys_for_the_teacher() {
     }
     assert!(values > 100, "{values} answers checked");
 
+    // In Portuguese: the lines to write on, the steps' names and the decimal comma.
+    let pt = out.join("pt");
+    let o = phonglab(&[
+        "exercise",
+        "--lang",
+        "pt-PT",
+        "--seed",
+        "5",
+        "--count",
+        "1",
+        "--level",
+        "4",
+        "--out",
+        pt.to_str().unwrap(),
+    ]);
+
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&Command::new("pdftotext").arg(pt.join("sheets.pdf")).arg("-").output().unwrap());
+    for pt_text in ["Turma:", "Nome:", "Data:", "Vetor da luz", "Calcular", "exercício 1 (semente 5)"] {
+        assert!(text.contains(pt_text), "{pt_text:?} in the Portuguese sheet:\n{text}");
+    }
+    let keys = stdout(&Command::new("pdftotext").arg(pt.join("keys.pdf")).arg("-").output().unwrap());
+    assert!(keys.contains("Respostas:") && keys.contains("I = [0,"), "{keys}");
+}
+
+/// The handouts print what belongs there: no value below its vector's last printed digit
+/// (a rotation's 6.123234e-17 beside a 1 is 0), no -0; one numbering (every step a sheet
+/// asks has the number the key gives it); and an index in the reader's language.
+#[test]
+fn the_handouts_are_exact_numbered_as_their_keys_and_in_the_readers_words() {
+    let out = std::env::temp_dir().join(format!("phonglab-handouts-{}", std::process::id()));
+    let args = ["exercise", "--seed", "5", "--count", "3", "--level", "4", "--worksheet", "--out"];
+    let o = phonglab(&[&args[..], &[out.to_str().unwrap()]].concat());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let pdf = |name: &str| stdout(&Command::new("pdftotext").arg(out.join(name)).arg("-").output().unwrap());
+    let (sheets, keys) = (pdf("sheets.pdf"), pdf("keys.pdf"));
     // Exact as printed: no value below its vector's last printed digit (a rotation's
     // 6.123234e-17 beside a 1 is 0), no -0; and one numbering: every step a sheet asks has
     // the number the key gives it.
@@ -563,8 +599,6 @@ fn the_pdfs_are_typeset_sheets_to_hand_out_and_keys_for_the_teacher() {
         assert!(asked > 5, "exercise {k}: {asked} steps asked");
     }
 
-    // In Portuguese: the lines to write on, the steps' names and the decimal comma; the
-    // index in Portuguese too (the effects and the rules in words).
     let pt = out.join("pt");
     let o = phonglab(&[
         "exercise",
@@ -579,18 +613,13 @@ fn the_pdfs_are_typeset_sheets_to_hand_out_and_keys_for_the_teacher() {
         "--out",
         pt.to_str().unwrap(),
     ]);
+    assert!(o.status.success(), "{}", stderr(&o));
     let index = std::fs::read_to_string(pt.join("index.md")).unwrap();
     for english in ["positional", "attenuation", "two-sided", "several-lights", "local-viewer", "worksheet"] {
         assert!(!index.contains(english), "{english:?} in the Portuguese index:\n{index}");
     }
     assert!(index.contains("várias luzes") && index.contains("atenuação"), "{index}");
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = stdout(&Command::new("pdftotext").arg(pt.join("sheets.pdf")).arg("-").output().unwrap());
-    for pt_text in ["Turma:", "Nome:", "Data:", "Vetor da luz", "Calcular", "exercício 1 (semente 5)"] {
-        assert!(text.contains(pt_text), "{pt_text:?} in the Portuguese sheet:\n{text}");
-    }
-    let keys = stdout(&Command::new("pdftotext").arg(pt.join("keys.pdf")).arg("-").output().unwrap());
-    assert!(keys.contains("Respostas:") && keys.contains("I = [0,"), "{keys}");
+    std::fs::remove_dir_all(&out).ok();
 }
 
 #[test]
