@@ -753,3 +753,22 @@ fn a_decimal_comma_is_read_and_a_number_a_float_cannot_hold_is_not_truncated() {
     type_into(&mut h, "Light z", "-40,25");
     assert_eq!(h.state().doc.scene.lights[0].position.z, -40.25);
 }
+
+/// Ctrl+C in a number field copies what is selected there: the window's clipboard works in
+/// fields as in the Copy buttons (eframe's `clipboard` feature is what hands it to the
+/// system; here, egui's output).
+#[test]
+fn ctrl_c_in_a_field_copies_its_text() {
+    let mut h = harness();
+    common::click_field(&mut h, "Light z");
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.input_mut().events.push(egui::Event::Copy);
+    h.step();
+    assert_eq!(common::copied_text(&h), ["90"], "the field's text, selected whole, copied");
+    // And the desktop hands egui's copies to the system's clipboard, and its links to the
+    // browser: eframe is built with both (without them, Copy silently copied nothing).
+    let manifest = include_str!("../Cargo.toml");
+    let eframe = manifest.lines().find(|l| l.starts_with("eframe = ")).unwrap();
+    assert!(eframe.contains("\"clipboard\"") && eframe.contains("\"links\""), "{eframe}");
+}
