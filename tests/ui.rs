@@ -772,3 +772,105 @@ fn ctrl_c_in_a_field_copies_its_text() {
     let eframe = manifest.lines().find(|l| l.starts_with("eframe = ")).unwrap();
     assert!(eframe.contains("\"clipboard\"") && eframe.contains("\"links\""), "{eframe}");
 }
+
+/// Ctrl+S and Ctrl+O right after typing a path, still in the field: they use the text
+/// typed, keys and all (not what the field held before).
+#[test]
+fn ctrl_s_and_ctrl_o_use_the_path_just_typed() {
+    let mut h = harness();
+    let p = temp_dir("typed").join("typed.toml");
+    let field = h.get_by_role_and_label(Role::TextInput, "Scene file:");
+    field.click();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.get_by_role_and_label(Role::TextInput, "Scene file:").type_text(&p.display().to_string());
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::S);
+    h.run_steps(3);
+    assert!(p.exists(), "saved at the path typed: {:?}", h.state().message);
+    let spot = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    h.get_by_role_and_label(Role::TextInput, "Scene file:").click();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.get_by_role_and_label(Role::TextInput, "Scene file:").type_text(&spot.display().to_string());
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::O);
+    h.run_steps(3);
+    assert_eq!(h.state().doc.name, "a spotlight", "{:?}", h.state().message);
+}
+
+/// Ctrl+S right after typing a number, still in its field: the file holds the number
+/// typed (the field is committed first), not the value before.
+#[test]
+fn ctrl_s_right_after_typing_a_number_saves_the_number_typed() {
+    let mut h = harness();
+    let p = temp_dir("typed-number").join("n.toml");
+    set_file_path(&mut h, &p);
+    h.key_press(egui::Key::Escape);
+    h.run_steps(1);
+    common::click_field(&mut h, "Light z");
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.get_by_role_and_label(Role::SpinButton, "Light z").type_text("300");
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::S);
+    h.run_steps(4);
+    assert_eq!(h.state().doc.scene.lights[0].position.z, 300.0, "{:?}", h.state().message);
+    let saved = phonglab_core::Document::from_toml(&std::fs::read_to_string(&p).unwrap()).unwrap();
+    assert_eq!(saved.scene.lights[0].position.z, 300.0, "the file holds the number typed");
+}
+
+/// Where no system dialog opens, Open…, Save as… and the Export menu's Save… open
+/// phonglab's own chooser, which says why, lists the folder, and opens or saves the file
+/// chosen: a click never does nothing.
+#[test]
+fn the_in_app_chooser_opens_saves_and_exports_where_no_dialog_opens() {
+    let mut state = AppState::worksheet();
+    state.files.dialogs = phonglab::app::panels::files::Dialogs::InApp;
+    let scenes = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes");
+    state.files.path = scenes.join("worksheet-mview5.toml").display().to_string();
+    let mut h =
+        Harness::builder().with_size([1280.0, 720.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+    h.run_steps(2);
+    h.get_by_label("Open…").click();
+    h.run_steps(2);
+    h.get_by_label("Choose a file");
+    assert!(h.get_all_by_label("Choose the file here.").count() >= 1, "it says why it is there");
+    // The folder's scene files are listed, its subfolders first.
+    let first = h.get_by_label("redbook-teapots/").rect();
+    let spot = h.get_by_label("spotlight.toml").rect();
+    assert!(first.max.y <= spot.min.y, "folders first: {first:?} {spot:?}");
+    h.get_by_label("spotlight.toml").click();
+    h.run_steps(1);
+    let opens: Vec<egui::Rect> = h.get_all_by_label("Open").map(|n| n.rect()).collect();
+    h.get_all_by_label("Open").last().unwrap().click();
+    h.run_steps(2);
+    assert_eq!(opens.len(), 2, "the row's Open and the chooser's");
+    assert_eq!(h.state().doc.name, "a spotlight", "{:?}", h.state().message);
+    assert!(h.state().chooser.is_none());
+    // Save as…: a new name in a temporary folder.
+    let dir = temp_dir("chooser");
+    h.get_by_label("Save as…").click();
+    h.run_steps(2);
+    h.get_by_role_and_label(Role::TextInput, "Folder:").set_text_value_accesskit(&dir.display().to_string());
+    h.get_by_role_and_label(Role::TextInput, "File name:").set_text_value_accesskit("mine.toml");
+    h.run_steps(1);
+    h.get_all_by_label("Save").last().unwrap().click();
+    h.run_steps(2);
+    let saved = std::fs::read_to_string(dir.join("mine.toml")).unwrap();
+    assert_eq!(saved, h.state().doc.to_toml().unwrap());
+    // Export → the PNG: the chooser again, offering the PNG's name.
+    h.get_by_label("Export").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Shaded view as PNG").click();
+    h.run_steps(2);
+    h.get_by_role_and_label(Role::TextInput, "Folder:").set_text_value_accesskit(&dir.display().to_string());
+    h.run_steps(1);
+    h.get_all_by_label("Save").last().unwrap().click();
+    h.run_steps(2);
+    let png = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(Result::ok)
+        .find(|e| e.path().extension().is_some_and(|x| x == "png"));
+    assert!(png.is_some(), "{:?}", h.state().message);
+}

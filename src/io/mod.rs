@@ -11,6 +11,7 @@ pub mod exercise_set;
 pub mod file_set;
 pub mod image;
 pub mod input_file;
+pub mod listing;
 pub mod reasons;
 pub mod same_file;
 pub mod save;

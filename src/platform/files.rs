@@ -14,18 +14,61 @@ pub const TYPED_PATHS: bool = cfg!(not(target_arch = "wasm32"));
 /// A file that arrived: its name and its bytes.
 pub type Arrived = (String, Vec<u8>);
 
-/// The scene file to open, or `None` when the dialog was cancelled or could not open (the
-/// desktop; the browser's chooser is [`choose_file`]).
-#[cfg(not(target_arch = "wasm32"))]
-pub fn pick_scene_to_open(start: Option<&std::path::Path>) -> Option<PathBuf> {
-    dialog(start).add_filter("Scene, mesh or worksheet", &["toml", "obj", "ipynb", "py"]).pick_file()
+/// What the system's file dialog gave.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Picked {
+    /// A file chosen.
+    Chosen(std::path::PathBuf),
+    /// The user closed the dialog.
+    Cancelled,
+    /// No dialog could open here, and why (in the user's language): phonglab's own chooser
+    /// stands in.
+    NoDialog(String),
 }
 
-/// Where to save the scene, or `None` when the dialog was cancelled or could not open.
+/// Why the system's dialog cannot open here, if it cannot: on Linux, `rfd` asks the desktop
+/// portal over the session's D-Bus, and without a session bus there is no one to ask (a lab
+/// PC with a bare window manager, a remote session).
 #[cfg(not(target_arch = "wasm32"))]
-pub fn pick_scene_to_save(start: Option<&std::path::Path>) -> Option<PathBuf> {
+fn no_dialog_why() -> Option<String> {
+    if cfg!(target_os = "linux") {
+        let bus = std::env::var_os("DBUS_SESSION_BUS_ADDRESS").is_some()
+            || std::env::var_os("XDG_RUNTIME_DIR").is_some_and(|d| std::path::Path::new(&d).join("bus").exists());
+        if !bus {
+            return Some(phonglab_core::t!("dialog-no-session-bus"));
+        }
+    }
+    None
+}
+
+/// Runs a dialog: its choice, a cancel, or (no session bus, or a dialog that came back at
+/// once, faster than anyone can cancel one: the portal did not answer) no dialog at all.
+#[cfg(not(target_arch = "wasm32"))]
+fn run_dialog(dialog: impl FnOnce() -> Option<PathBuf>) -> Picked {
+    if let Some(why) = no_dialog_why() {
+        return Picked::NoDialog(why);
+    }
+    let asked = std::time::Instant::now();
+    match dialog() {
+        Some(p) => Picked::Chosen(p),
+        None if asked.elapsed() < std::time::Duration::from_millis(150) => {
+            Picked::NoDialog(phonglab_core::t!("dialog-did-not-open"))
+        }
+        None => Picked::Cancelled,
+    }
+}
+
+/// The scene file to open (the desktop; the browser's chooser is [`choose_file`]).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn pick_scene_to_open(start: Option<&std::path::Path>) -> Picked {
+    run_dialog(|| dialog(start).add_filter("Scene, mesh or worksheet", &["toml", "obj", "ipynb", "py"]).pick_file())
+}
+
+/// Where to save the scene.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn pick_scene_to_save(start: Option<&std::path::Path>) -> Picked {
     let name = start.and_then(|p| p.file_name()).map_or("scene.toml".into(), |n| n.to_string_lossy().into_owned());
-    dialog(start).add_filter("Scene", &["toml"]).set_file_name(name).save_file()
+    run_dialog(|| dialog(start).add_filter("Scene", &["toml"]).set_file_name(name).save_file())
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -72,29 +115,31 @@ pub fn download(_name: &str, _bytes: &[u8], _mime: &str) -> Result<(), String> {
 }
 
 /// Where to save a file the user names, offering `name` (the desktop's dialog, filtered by
-/// its extension); `None` when cancelled or when no dialog could open.
+/// its extension).
 #[cfg(not(target_arch = "wasm32"))]
-pub fn pick_path_to_save(name: &str) -> Option<PathBuf> {
+pub fn pick_path_to_save(name: &str) -> Picked {
     let ext = std::path::Path::new(name).extension().map(|e| e.to_string_lossy().into_owned()).unwrap_or_default();
-    rfd::FileDialog::new().add_filter(ext.to_uppercase(), &[ext.as_str()]).set_file_name(name).save_file()
+    run_dialog(|| {
+        rfd::FileDialog::new().add_filter(ext.to_uppercase(), &[ext.as_str()]).set_file_name(name).save_file()
+    })
 }
 
 /// The browser has no dialog that returns a path: files go out as downloads ([`download`]).
 #[cfg(target_arch = "wasm32")]
-pub fn pick_path_to_save(_name: &str) -> Option<std::path::PathBuf> {
-    None
+pub fn pick_path_to_save(_name: &str) -> Picked {
+    Picked::Cancelled
 }
 
 /// The browser has no dialog that returns a path: see [`choose_file`].
 #[cfg(target_arch = "wasm32")]
-pub fn pick_scene_to_open(_start: Option<&std::path::Path>) -> Option<std::path::PathBuf> {
-    None
+pub fn pick_scene_to_open(_start: Option<&std::path::Path>) -> Picked {
+    Picked::Cancelled
 }
 
-/// The browser has no dialog that returns a path: see [`save_bytes`].
+/// The browser has no dialog that returns a path: scenes go out as downloads.
 #[cfg(target_arch = "wasm32")]
-pub fn pick_scene_to_save(_start: Option<&std::path::Path>) -> Option<std::path::PathBuf> {
-    None
+pub fn pick_scene_to_save(_start: Option<&std::path::Path>) -> Picked {
+    Picked::Cancelled
 }
 
 #[cfg(target_arch = "wasm32")]

@@ -15,7 +15,8 @@ use phonglab_core::export::Target;
 use phonglab_core::{Document, PowFn};
 
 use crate::app::model::message::Message;
-use crate::app::panels::files::FileState;
+use crate::app::panels::chooser::{Chooser, Purpose};
+use crate::app::panels::files::{Dialogs, FileState};
 
 /// The exercise set's settings, kept while the window runs.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -69,18 +70,41 @@ fn hand_out(
     bytes: Result<Vec<u8>, String>,
     mime: &str,
     doc: &Document,
-    files: &FileState,
+    files: &mut FileState,
+    chooser: &mut Option<Chooser>,
 ) -> Option<Message> {
-    let scene_file = std::path::PathBuf::from(files.path.trim());
-    let mesh = doc.view.obj.as_deref().map(std::path::Path::new);
-    let inputs: Vec<&std::path::Path> = [Some(scene_file.as_path()), mesh].into_iter().flatten().collect();
-    let saved = bytes.and_then(|b| crate::io::save::save_bytes(name, &b, mime, files.dialogs, &inputs));
-    match saved {
-        Ok(Some(_)) if !crate::platform::files::TYPED_PATHS => Some(Message::Info(t!("downloaded", name = name))),
-        Ok(Some(at)) => Some(Message::Info(t!("exported", what = name, at = at))),
-        Ok(None) => None,
+    use crate::io::save::Saved;
+    let inputs = export_inputs(doc, files);
+    let inputs: Vec<&std::path::Path> = inputs.iter().map(std::path::PathBuf::as_path).collect();
+    let system = files.dialogs == Dialogs::System;
+    let bytes = match bytes {
+        Ok(b) => b,
+        Err(e) => return Some(Message::Refused(t!("not-exported", what = name, error = e))),
+    };
+    match crate::io::save::save_bytes(name, &bytes, mime, system, &inputs) {
+        Ok(Saved::At(_)) if !crate::platform::files::TYPED_PATHS => Some(Message::Info(t!("downloaded", name = name))),
+        Ok(Saved::At(at)) => Some(Message::Info(t!("exported", what = name, at = at))),
+        Ok(Saved::Cancelled) => None,
+        Ok(Saved::Choose(why)) => {
+            if system {
+                files.dialogs = Dialogs::InApp;
+            }
+            let start = files.typed();
+            let purpose = Purpose::SaveBytes { name: name.to_string(), bytes };
+            let mut c = Chooser::new(purpose, start.as_deref(), why.clone());
+            c.name = name.to_string();
+            *chooser = Some(c);
+            Some(Message::Info(why))
+        }
         Err(e) => Some(Message::Refused(t!("not-exported", what = name, error = e))),
     }
+}
+
+/// The files an export may not overwrite: the scene file typed and the view's mesh.
+pub fn export_inputs(doc: &Document, files: &FileState) -> Vec<std::path::PathBuf> {
+    let scene_file = std::path::PathBuf::from(files.path.trim());
+    let mesh = doc.view.obj.as_deref().map(std::path::PathBuf::from);
+    [Some(scene_file), mesh].into_iter().flatten().collect()
 }
 
 /// The file `target` is saved as: one file, or for openFrameworks a zip of its `src/`.
@@ -101,7 +125,13 @@ pub fn code_file(doc: &Document, target: Target) -> Result<(String, Vec<u8>, &'s
 }
 
 /// The student's own code: for each target, Copy (to the clipboard) and Save.
-fn code_ui(ui: &mut Ui, doc: &Document, files: &FileState, message: &mut Option<Message>) {
+fn code_ui(
+    ui: &mut Ui,
+    doc: &Document,
+    files: &mut FileState,
+    chooser: &mut Option<Chooser>,
+    message: &mut Option<Message>,
+) {
     ui.label(egui::RichText::new(t!("export-code")).strong());
     egui::Grid::new("export code").num_columns(3).show(ui, |ui| {
         for target in Target::ALL {
@@ -118,7 +148,7 @@ fn code_ui(ui: &mut Ui, doc: &Document, files: &FileState, message: &mut Option<
             }
             if ui.button(t!("export-save")).on_hover_text(t!("export-save-hover")).clicked() {
                 *message = match code_file(doc, target) {
-                    Ok((name, bytes, mime)) => hand_out(&name, Ok(bytes), mime, doc, files),
+                    Ok((name, bytes, mime)) => hand_out(&name, Ok(bytes), mime, doc, files, chooser),
                     Err(e) => Some(Message::Refused(t!("not-exported", what = target.label(), error = e))),
                 };
                 ui.close();
@@ -137,16 +167,17 @@ pub fn export_menu_ui(
     export: &mut ExportState,
     doc: &Document,
     pow: PowFn,
-    files: &FileState,
+    files: &mut FileState,
+    chooser: &mut Option<Chooser>,
     message: &mut Option<Message>,
 ) {
     ui.menu_button(t!("export"), |ui| {
-        code_ui(ui, doc, files, message);
+        code_ui(ui, doc, files, chooser, message);
         ui.separator();
         if ui.button(t!("export-png", size = PNG_SIZE.to_string())).on_hover_text(t!("export-png-hover")).clicked() {
             let name = format!("phonglab-{}-{}.png", doc.view.object.key(), doc.view.shading.label().to_lowercase());
             let png = shaded_png(doc, pow);
-            *message = hand_out(&name, png, "image/png", doc, files);
+            *message = hand_out(&name, png, "image/png", doc, files, chooser);
             ui.close();
         }
         ui.separator();
@@ -168,7 +199,7 @@ pub fn export_menu_ui(
         if ui.button(t!("export-exercises-save")).on_hover_text(t!("export-exercises-hover")).clicked() {
             let name = format!("phonglab-exercises-seed{}-level{}.zip", export.seed, export.level);
             let zip = exercises_zip(export);
-            *message = hand_out(&name, zip, "application/zip", doc, files);
+            *message = hand_out(&name, zip, "application/zip", doc, files, chooser);
             ui.close();
         }
     });

@@ -8,21 +8,35 @@ use egui::Ui;
 use phonglab_core::{Document, t};
 
 use crate::app::model::message::Message;
+use crate::app::panels::chooser::{Chooser, Purpose};
 use crate::platform::files as platform;
 
-/// The scene file's row: the path typed, and whether the system's dialogs may open (the
-/// window's app; not headless tests, where a dialog would wait for a person).
+/// Which file dialogs Open…, Save as… and the Export menu's Save… use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Dialogs {
+    /// None (headless tests, where a dialog would wait for a person): no Open… or Save as…,
+    /// and the Export menu offers phonglab's own chooser.
+    #[default]
+    None,
+    /// The system's dialog (the window's app); where it cannot open, phonglab's own chooser,
+    /// saying why, and from then on the chooser.
+    System,
+    /// phonglab's own chooser.
+    InApp,
+}
+
+/// The scene file's row: the path typed, and which dialogs may open.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct FileState {
     /// The scene file path typed for Open and Save.
     pub path: String,
-    /// Open… and Save as… use the system's file dialog.
-    pub dialogs: bool,
+    /// The dialogs Open… and Save as… use.
+    pub dialogs: Dialogs,
 }
 
 impl Default for FileState {
     fn default() -> Self {
-        FileState { path: "scene.toml".into(), dialogs: false }
+        FileState { path: "scene.toml".into(), dialogs: Dialogs::None }
     }
 }
 
@@ -45,6 +59,8 @@ pub enum FileRequest {
     Open(PathBuf),
     /// Save to this file (chosen in the system's dialog).
     Save(PathBuf),
+    /// Open phonglab's own chooser (the system's dialog could not open).
+    Choose(Chooser),
 }
 
 /// The scene file's controls: on the desktop the path field with Open and Save (Enter in
@@ -74,20 +90,39 @@ pub fn file_ui(
     if ui.button(t!("save")).on_hover_text(t!("save-hover")).clicked() {
         asked = Some(FileRequest::SaveTyped);
     }
-    if files.dialogs {
+    if files.dialogs != Dialogs::None {
         let start = files.typed();
-        if ui.button(t!("open-dialog")).on_hover_text(t!("open-dialog-hover")).clicked()
-            && let Some(p) = platform::pick_scene_to_open(start.as_deref())
-        {
-            asked = Some(FileRequest::Open(p));
+        if ui.button(t!("open-dialog")).on_hover_text(t!("open-dialog-hover")).clicked() {
+            asked = pick(files, Purpose::OpenScene, start.as_deref(), platform::pick_scene_to_open);
         }
-        if ui.button(t!("save-as")).on_hover_text(t!("save-as-hover")).clicked()
-            && let Some(p) = platform::pick_scene_to_save(start.as_deref())
-        {
-            asked = Some(FileRequest::Save(p));
+        if ui.button(t!("save-as")).on_hover_text(t!("save-as-hover")).clicked() {
+            asked = pick(files, Purpose::SaveScene, start.as_deref(), platform::pick_scene_to_save);
         }
     }
     asked
+}
+
+/// Open… or Save as…: the system's dialog, or where it cannot open (now or before)
+/// phonglab's own chooser, saying why. Never nothing: a dialog that fails opens the chooser.
+fn pick(
+    files: &mut FileState,
+    purpose: Purpose,
+    start: Option<&Path>,
+    system: fn(Option<&Path>) -> platform::Picked,
+) -> Option<FileRequest> {
+    let why = match files.dialogs {
+        Dialogs::System => match system(start) {
+            platform::Picked::Chosen(p) if purpose == Purpose::OpenScene => return Some(FileRequest::Open(p)),
+            platform::Picked::Chosen(p) => return Some(FileRequest::Save(p)),
+            platform::Picked::Cancelled => return None,
+            platform::Picked::NoDialog(why) => {
+                files.dialogs = Dialogs::InApp;
+                why
+            }
+        },
+        _ => t!("dialog-in-app"),
+    };
+    Some(FileRequest::Choose(Chooser::new(purpose, start, why)))
 }
 
 /// The browser's Open… (the file chooser) and Save (a download of the scene file, named

@@ -2,6 +2,7 @@
 //! what it changed (an edited document, a message, an action for the shell).
 
 pub mod calculation;
+pub mod chooser;
 pub mod compare;
 pub mod controls;
 pub mod cost;

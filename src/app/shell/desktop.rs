@@ -32,7 +32,7 @@ impl PhongLabApp {
         // The shaded view can run the scene's generated WGSL on eframe's adapter.
         state.gpu = cc.wgpu_render_state.as_ref().map(gpu_view::install);
         state.view_options.renderer = renderer;
-        state.files.dialogs = true;
+        state.files.dialogs = crate::app::panels::files::Dialogs::System;
         // A file named on the command line wins over the restored session.
         if let Some(path) = file {
             files::open_at_start(&mut state, &path);

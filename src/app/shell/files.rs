@@ -3,7 +3,7 @@
 //! names the line and column or the field, and the current scene stays as it was; a save
 //! is written whole or not at all, so a failed save leaves the old file whole.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use phonglab_core::Document;
 use phonglab_core::t;
@@ -161,6 +161,29 @@ pub fn carry_out(state: &mut AppState, request: FileRequest) {
             state.files.path = p.display().to_string();
             save(state, &p);
         }
+        FileRequest::Choose(c) => {
+            state.message = Some(Message::Info(c.why.clone()));
+            state.chooser = Some(c);
+        }
+    }
+}
+
+/// phonglab's own file chooser, while open, and what was chosen in it carried out.
+pub fn chooser_ui(ctx: &egui::Context, state: &mut AppState) {
+    use crate::app::panels::chooser::{Chosen, chooser_ui};
+    match chooser_ui(ctx, &mut state.chooser) {
+        Some(Chosen::Open(p)) => carry_out(state, FileRequest::Open(p)),
+        Some(Chosen::Save(p)) => carry_out(state, FileRequest::Save(p)),
+        Some(Chosen::SaveBytes(p, bytes)) => {
+            let inputs = crate::app::panels::export::export_inputs(&state.doc, &state.files);
+            let inputs: Vec<&Path> = inputs.iter().map(PathBuf::as_path).collect();
+            let name = p.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+            state.message = Some(match crate::io::save::save_at(&p, &bytes, &inputs) {
+                Ok(at) => Message::Info(t!("exported", what = name, at = at)),
+                Err(e) => Message::Refused(t!("not-exported", what = name, error = e)),
+            });
+        }
+        None => {}
     }
 }
 

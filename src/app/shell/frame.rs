@@ -24,6 +24,11 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     calculation_panel_ui(ui, state, &eval, width);
     egui::CentralPanel::default().show(ui, |ui| centre::centre_ui(ui, state, &eval));
     windows::windows_ui(&ctx, state);
+    // A whole frame has passed for what was deferred: its field has committed.
+    if !state.ui.deferred.is_empty() {
+        state.ui.deferred.iter_mut().for_each(|(_, ready)| *ready = true);
+        ctx.request_repaint();
+    }
 }
 
 /// The frame's start: the theme and the language, the keys, a quit asked for, dropped
@@ -38,8 +43,27 @@ fn frame_start_ui(ui: &mut Ui, state: &mut AppState) -> Option<state::Evaluated>
     state.now = ctx.input(|i| i.time);
     // The window's language, switched at once when the menu changes it.
     phonglab_core::locale::set_thread(Some(state.ui.layout.locale()));
-    for a in crate::app::panels::help::pressed(&ctx, state.quiz.open) {
+    // Open and Save pressed while typing wait for the field to commit what was typed: the
+    // field lets the keyboard go now, commits next frame, and they run the frame after.
+    let (ready, waiting): (Vec<_>, Vec<_>) = std::mem::take(&mut state.ui.deferred).into_iter().partition(|(_, r)| *r);
+    state.ui.deferred = waiting;
+    for (a, _) in ready {
         keys::apply_action(state, a);
+    }
+    let typing = ctx.egui_wants_keyboard_input();
+    for a in crate::app::panels::help::pressed(&ctx, state.quiz.open) {
+        use crate::app::panels::help::Action;
+        if typing && matches!(a, Action::Open | Action::Save) {
+            ctx.memory_mut(|m| {
+                if let Some(id) = m.focused() {
+                    m.surrender_focus(id);
+                }
+            });
+            state.ui.deferred.push((a, false));
+            ctx.request_repaint();
+        } else {
+            keys::apply_action(state, a);
+        }
     }
     if state.ui.quit {
         // eframe then calls `on_exit`, which saves the session.

@@ -39,6 +39,9 @@ pub struct UiState {
     pub quit: bool,
     /// What the centre drew last frame.
     pub geometry: Geometry,
+    /// Open and Save pressed while a field had the keyboard: done once the field has let
+    /// it go and committed what was typed (`true`: a whole frame has passed since).
+    pub deferred: Vec<(crate::app::panels::help::Action, bool)>,
 }
 
 /// The whole app state.
@@ -56,6 +59,8 @@ pub struct AppState {
     pub orbit: Orbit,
     /// The shaded view's own: the demo's corrections shown, the renderer, the mesh path typed.
     pub view_options: crate::app::panels::shaded::ShadedOptions,
+    /// phonglab's own file chooser, while it is open (where the system's dialog cannot).
+    pub chooser: Option<crate::app::panels::chooser::Chooser>,
     /// The scene file's path and the system's dialogs.
     pub files: crate::app::panels::files::FileState,
     /// The Export menu's exercise settings.

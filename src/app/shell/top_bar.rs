@@ -69,7 +69,15 @@ pub fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         if let Some(asked) = crate::app::panels::files::file_ui(ui, &mut state.files, &state.doc, &mut state.message) {
             files::carry_out(state, asked);
         }
-        export::export_menu_ui(ui, &mut state.export, &state.doc, state.settings.pow, &state.files, &mut state.message);
+        export::export_menu_ui(
+            ui,
+            &mut state.export,
+            &state.doc,
+            state.settings.pow,
+            &mut state.files,
+            &mut state.chooser,
+            &mut state.message,
+        );
         ui.separator();
         language_menu_ui(ui, &mut state.ui.layout);
         if ui.button(t!("help-button")).clicked() {

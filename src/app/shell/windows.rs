@@ -1,5 +1,5 @@
 //! The windows over the layout: the cost study (its finished work collected first), the
-//! shader, the keys' help.
+//! shader, phonglab's own file chooser, the keys' help.
 
 use phonglab_core::t;
 
@@ -20,6 +20,7 @@ pub fn windows_ui(ctx: &egui::Context, state: &mut AppState) {
     }
     cost::cost_window_ui(ctx, &mut state.cost, &state.doc, state.settings.pow);
     shader_panel::shader_window_ui(ctx, &mut state.shader, &state.doc);
+    super::files::chooser_ui(ctx, state);
 
     if state.ui.show_help {
         let mut open = true;

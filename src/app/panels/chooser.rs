@@ -1,0 +1,178 @@
+//! phonglab's own file chooser, for where the system's dialog cannot open (no desktop
+//! portal: a lab PC with a bare window manager). It never leaves a click without an answer:
+//! it says why it is there, lists a folder (its subfolders, then the files the purpose
+//! takes), and hands back the file chosen; the shell opens or saves it.
+
+use std::path::{Path, PathBuf};
+
+use egui::Ui;
+use phonglab_core::t;
+
+use crate::io::listing::{Entry, list};
+
+/// What the file is for.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Purpose {
+    /// A scene file (or mesh, notebook, script) to open.
+    OpenScene,
+    /// Where to save the scene file.
+    SaveScene,
+    /// Where to save these bytes, offered as `name` (the Export menu's files).
+    SaveBytes {
+        /// The name offered.
+        name: String,
+        /// What to write.
+        bytes: Vec<u8>,
+    },
+}
+
+impl Purpose {
+    /// The files the chooser lists.
+    fn extensions(&self) -> Vec<String> {
+        match self {
+            Purpose::OpenScene => ["toml", "obj", "ipynb", "py"].map(String::from).to_vec(),
+            Purpose::SaveScene => vec!["toml".into()],
+            Purpose::SaveBytes { name, .. } => {
+                Path::new(name).extension().map(|e| vec![e.to_string_lossy().into_owned()]).unwrap_or_default()
+            }
+        }
+    }
+}
+
+/// The chooser's state while it is open.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Chooser {
+    /// What the file is for.
+    pub purpose: Purpose,
+    /// Why phonglab's own chooser is open (the system's dialog could not).
+    pub why: String,
+    /// The folder shown, as typed.
+    pub folder: String,
+    /// The file's name in it.
+    pub name: String,
+}
+
+/// What the chooser hands back.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Chosen {
+    /// Open this file.
+    Open(PathBuf),
+    /// Save the scene here.
+    Save(PathBuf),
+    /// Save these bytes here.
+    SaveBytes(PathBuf, Vec<u8>),
+}
+
+impl Chooser {
+    /// A chooser for `purpose`, starting where `start` (a typed path, or a name) points, saying
+    /// `why`.
+    pub fn new(purpose: Purpose, start: Option<&Path>, why: String) -> Chooser {
+        let start = start.map(|p| std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf()));
+        let folder = start
+            .as_deref()
+            .and_then(Path::parent)
+            .filter(|d| d.is_dir())
+            .map(Path::to_path_buf)
+            .or_else(|| std::env::current_dir().ok())
+            .unwrap_or_default();
+        let name = match &purpose {
+            Purpose::SaveBytes { name, .. } => name.clone(),
+            _ => {
+                start.as_deref().and_then(Path::file_name).map(|n| n.to_string_lossy().into_owned()).unwrap_or_default()
+            }
+        };
+        Chooser { purpose, why, folder: folder.display().to_string(), name }
+    }
+
+    /// The file the fields name.
+    fn path(&self) -> PathBuf {
+        Path::new(self.folder.trim()).join(self.name.trim())
+    }
+}
+
+/// The chooser's window, while `chooser` is open; closes it and returns the file chosen.
+pub fn chooser_ui(ctx: &egui::Context, chooser: &mut Option<Chooser>) -> Option<Chosen> {
+    let c = chooser.as_mut()?;
+    let (mut done, mut cancel) = (None, false);
+    egui::Window::new(t!("chooser-title"))
+        .collapsible(false)
+        .resizable(true)
+        .default_width(520.0)
+        .pivot(egui::Align2::CENTER_CENTER)
+        .default_pos(ctx.content_rect().center())
+        .show(ctx, |ui| {
+            ui.label(&c.why);
+            ui.separator();
+            (done, cancel) = chooser_body_ui(ui, c);
+        });
+    if cancel || done.is_some() {
+        *chooser = None;
+    }
+    done
+}
+
+/// The folder field, its listing, the name field and the buttons: (what was chosen,
+/// cancelled).
+fn chooser_body_ui(ui: &mut Ui, c: &mut Chooser) -> (Option<Chosen>, bool) {
+    ui.horizontal(|ui| {
+        let label = ui.label(t!("chooser-folder"));
+        ui.add(egui::TextEdit::singleline(&mut c.folder).desired_width(360.0)).labelled_by(label.id);
+        if ui.button(t!("chooser-up")).clicked()
+            && let Some(up) = Path::new(c.folder.trim()).parent()
+        {
+            c.folder = up.display().to_string();
+        }
+    });
+    let extensions = c.purpose.extensions();
+    let wanted: Vec<&str> = extensions.iter().map(String::as_str).collect();
+    let mut enter = None;
+    egui::ScrollArea::vertical().max_height(260.0).auto_shrink([false, true]).show(ui, |ui| {
+        match list(Path::new(c.folder.trim()), &wanted) {
+            Ok(entries) if entries.is_empty() => {
+                ui.weak(t!("chooser-empty"));
+            }
+            Ok(entries) => {
+                for Entry { name, folder } in entries {
+                    let shown = if folder { format!("{name}/") } else { name.clone() };
+                    if ui.selectable_label(!folder && name == c.name, shown).clicked() {
+                        if folder {
+                            enter = Some(name);
+                        } else {
+                            c.name = name;
+                        }
+                    }
+                }
+            }
+            Err(e) => {
+                ui.colored_label(crate::app::widgets::palette::ERROR, e);
+            }
+        }
+    });
+    if let Some(sub) = enter {
+        c.folder = Path::new(c.folder.trim()).join(sub).display().to_string();
+    }
+    ui.horizontal(|ui| {
+        let label = ui.label(t!("chooser-name"));
+        ui.add(egui::TextEdit::singleline(&mut c.name).desired_width(300.0)).labelled_by(label.id);
+    });
+    let mut done = None;
+    let mut cancel = false;
+    ui.horizontal(|ui| {
+        let (verb, ok) = match &c.purpose {
+            Purpose::OpenScene => (t!("open"), Path::new(&c.path()).is_file()),
+            _ => (t!("save"), !c.name.trim().is_empty()),
+        };
+        if ui.add_enabled(ok, egui::Button::new(verb)).clicked() {
+            let path = c.path();
+            done = Some(match &c.purpose {
+                Purpose::OpenScene => Chosen::Open(path),
+                Purpose::SaveScene => Chosen::Save(path),
+                Purpose::SaveBytes { bytes, .. } => Chosen::SaveBytes(path, bytes.clone()),
+            });
+        }
+        if ui.button(t!("chooser-cancel")).clicked() {
+            cancel = true;
+        }
+    });
+    (done, cancel)
+}
