@@ -6,7 +6,7 @@ mod common;
 use common::click_field;
 use egui::accesskit::Role;
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT, Queryable};
 use phonglab::app::shell::state::Message;
 use phonglab::app::{AppState, app_ui};
 
@@ -275,13 +275,16 @@ fn the_quiz_marks_say_which_check_they_passed_and_no_field_moves() {
 
     answer(&mut h, "vertexNormal", "[0 0,6 0,8 0]");
     h.get_by_label("✔ right");
-    // A wrong L (twice the unit vector): the formula and the value it gives.
+    // A wrong L (twice the unit vector): the formula and what it takes, never the key's
+    // value (the key stays hidden until the student asks for it).
     answer(&mut h, "vlv", "1.5844105 1.1177521 -0.490177 0");
-    h.get_by_label_contains("✖ wrong: vlv = normalize(lightPos − vertexPos) = [0.79220526 0.55887606 -0.2450885 0]");
-    // cos(theta) from that L: right, given the student's vlv, and the key's is said.
+    let wrong = h.get_by_label_contains("✖ wrong: vlv = normalize(lightPos − vertexPos), with");
+    let wrong = wrong.accesskit_node().label().unwrap_or_default();
+    assert!(!wrong.contains("0.79220526") && !wrong.contains('…'), "{wrong}");
+    // cos(theta) from that L: right, given the student's vlv; the key's value is not said.
     // N · L = 0.6 · 1.1177521 + 0.8 · -0.490177 = 0.27851
     answer(&mut h, "cosTheta", "0,2785096");
-    h.get_by_label("✔ right, given your vlv (the key's vlv gives cosTheta = 0.13925)");
+    h.get_by_label("✔ right, given your vlv");
     // The worksheet's own Idif is right (a value equal to the key is never wrong).
     answer(&mut h, "Idif", "[0.09942795 0.05965677 0.0252664 0.]");
     assert_eq!(h.get_all_by_label("✔ right").count(), 2);
@@ -289,17 +292,18 @@ fn the_quiz_marks_say_which_check_they_passed_and_no_field_moves() {
     answer(&mut h, "cosBeta", "0.764");
     h.get_by_label("≈ close: 0.05 % from the key; give 4 significant digits");
     h.get_by_label_contains("Score: 3 of 14 (5 answered)");
+    assert!(h.query_by_label_contains("key: ").is_none(), "no key shown");
     // No field moved while the marks appeared (relative to the list, which the student
     // scrolled to reach each field).
     let after: Vec<egui::Rect> = ["vlv", "cosTheta", "Idif", "cosBeta", "I"].iter().map(|n| field(&h, n)).collect();
     let offsets = |r: &[egui::Rect]| r.iter().map(|x| x.min - r[0].min).collect::<Vec<_>>();
     assert_eq!(offsets(&before), offsets(&after));
-    // Every Reveal button is one size, and wide enough for its word.
-    let reveals: Vec<egui::Rect> = h.get_all_by_label("Reveal").map(|n| n.rect()).collect();
+    // Every "Show the answer" button is one size, and wide enough for its words.
+    let reveals: Vec<egui::Rect> = h.get_all_by_label("Show the answer").map(|n| n.rect()).collect();
     assert_eq!(reveals.len(), 14);
     assert!(reveals.iter().all(|r| r.size() == reveals[0].size() && r.width() >= 50.0), "{reveals:?}");
     // The four buttons at the top are one size too.
-    let tops: Vec<egui::Vec2> = ["Quiz this scene", "New exercise", "Reveal all", "Clear answers"]
+    let tops: Vec<egui::Vec2> = ["Quiz this scene", "New exercise", "Show all the answers", "Clear answers"]
         .iter()
         .map(|l| h.get_by_label(l).rect().size())
         .collect();
@@ -308,6 +312,13 @@ fn the_quiz_marks_say_which_check_they_passed_and_no_field_moves() {
     answer(&mut h, "d", "six hundred");
     h.get_by_label_contains("does not read as numbers");
     h.get_by_label_contains("(5 answered)");
+    // Showing an answer shows the key's value and counts it: it no longer scores as right.
+    let vlv = field(&h, "vlv");
+    let row = |n: &egui_kittest::Node<'_>| (n.rect().center().y - vlv.center().y).abs() < 4.0;
+    h.get_all_by_label("Show the answer").find(row).unwrap().click();
+    h.run_steps(2);
+    h.get_by_label("key: vlv = [0.79220526 0.55887606 -0.2450885 0]");
+    h.get_by_label_contains("(5 answered, 1 answer shown)");
     h.get_by_label("Clear answers").click();
     h.run_steps(2);
     h.get_by_label_contains("(0 answered)");
@@ -323,7 +334,7 @@ fn presenting_in_portuguese_no_reveal_button_is_clipped_and_no_row_grows() {
     h.run_steps(2);
     h.get_by_label("Teste").click();
     h.run_steps(4);
-    let reveals: Vec<egui::Rect> = h.get_all_by_label("Revelar").map(|n| n.rect()).collect();
+    let reveals: Vec<egui::Rect> = h.get_all_by_label("Mostrar a resposta").map(|n| n.rect()).collect();
     assert!(reveals.len() >= 4, "{reveals:?}");
     let fields: Vec<egui::Rect> =
         h.query_all_by_role(Role::TextInput).filter(|n| n.rect().min.x > 1000.0).map(|n| n.rect()).collect();

@@ -236,32 +236,39 @@ help-demo-pipeline = The demo's: no projection (the picture is clip space), Phon
 
 ## quiz
 
-quiz-input-yours = { $name } = { $value } (yours)
-quiz-input-key = { $name } = { $value } (key)
+quiz-input-yours = your { $name } = { $value }
+quiz-input-key = the key's { $name } (not answered yet)
 quiz-the-givens = the givens
 quiz-right = ✔ right
-quiz-right-given = ✔ right, given your { $yours } (the key's { $yours } gives { $name } = { $key })
+quiz-right-given = ✔ right, given your { $yours }
 quiz-close-key = ≈ close: { $percent } % from the key; give { $digits } significant digits
 quiz-close-yours = ≈ close: { $percent } % from what your earlier answers give; give { $digits } significant digits
-quiz-wrong = ✖ wrong: { $formula } = { $value }, from { $inputs }
+quiz-wrong = ✖ wrong: { $formula }, with { $inputs }
 quiz-level = Level
 quiz-levels = 1 directional, 2 positional with attenuation, 3 spotlights, 4 two-sided with several lights
 quiz-this-scene = Quiz this scene
 quiz-this-scene-hover = Start over on the scene shown, every value hidden
 quiz-new-exercise = New exercise
 quiz-new-exercise-hover = A new scene of this level, screened as phonglab exercise screens
-quiz-reveal-all = Reveal all
-quiz-reveal-all-hover = Show the key's value under every step
+quiz-reveal-all = Show all the answers
+quiz-reveal-all-hover = Show the key's value under every step: none then counts as right
 quiz-clear = Clear answers
 quiz-clear-hover = Start this quiz again with no answers
 quiz-show-answers = Show the answers (teacher)
 quiz-show-answers-hover = The vertex colour, the plot's angles and every step's key
 quiz-nothing-open = Open an exercise (phonglab exercise writes them) or any scene, then press "Quiz this scene", or press New exercise.
 quiz-instructions = { $scene }: type each step's value and press Enter. Right: within { $percent } % of the value (or { $absolute } near 0). A point or a comma; a vector as 0,5; 0,3; 0,1.
-quiz-score = Score: { $right } of { $all } ({ $answered } answered)
+quiz-score = Score: { $right } of { $all } ({ $answered ->
+    [one] 1 answered
+   *[other] { $answered } answered
+}{ $shown ->
+    [0] {""}
+    [one] , 1 answer shown
+   *[other] , { $shown } answers shown
+})
 quiz-your-value = your value
-quiz-reveal = Reveal
-quiz-reveal-hover = Show the key's value for this step
+quiz-reveal = Show the answer
+quiz-reveal-hover = Show the key's value for this step: it then no longer counts as right
 quiz-not-numbers = does not read as numbers: { $error }
 quiz-key = key: { $name } = { $value }
 

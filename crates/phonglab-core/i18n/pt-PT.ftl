@@ -236,32 +236,39 @@ help-demo-pipeline = Da demo: sem projeção (a imagem é o espaço de recorte),
 
 ## quiz
 
-quiz-input-yours = { $name } = { $value } (teu)
-quiz-input-key = { $name } = { $value } (chave)
+quiz-input-yours = o teu { $name } = { $value }
+quiz-input-key = o { $name } da chave (ainda sem resposta)
 quiz-the-givens = os dados
 quiz-right = ✔ certo
-quiz-right-given = ✔ certo, dado o teu { $yours } (o { $yours } da chave dá { $name } = { $key })
+quiz-right-given = ✔ certo, dado o teu { $yours }
 quiz-close-key = ≈ perto: a { $percent } % da chave; dá { $digits } algarismos significativos
 quiz-close-yours = ≈ perto: a { $percent } % do que as tuas respostas anteriores dão; dá { $digits } algarismos significativos
-quiz-wrong = ✖ errado: { $formula } = { $value }, a partir de { $inputs }
+quiz-wrong = ✖ errado: { $formula }, com { $inputs }
 quiz-level = Nível
 quiz-levels = 1 direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
 quiz-this-scene = Testar esta cena
 quiz-this-scene-hover = Recomeçar com a cena mostrada, todos os valores escondidos
 quiz-new-exercise = Novo exercício
 quiz-new-exercise-hover = Uma cena nova deste nível, filtrada como o phonglab exercise filtra
-quiz-reveal-all = Revelar tudo
-quiz-reveal-all-hover = Mostrar o valor da chave em cada passo
+quiz-reveal-all = Mostrar todas as respostas
+quiz-reveal-all-hover = Mostrar o valor da chave em cada passo: nenhum conta então como certo
 quiz-clear = Limpar respostas
 quiz-clear-hover = Recomeçar este teste sem respostas
 quiz-show-answers = Mostrar as respostas (professor)
 quiz-show-answers-hover = A cor do vértice, os ângulos do gráfico e a chave de cada passo
 quiz-nothing-open = Abre um exercício (o phonglab exercise escreve-os) ou qualquer cena e carrega em "Testar esta cena", ou carrega em Novo exercício.
 quiz-instructions = { $scene }: escreve o valor de cada passo e prime Enter. Certo: a menos de { $percent } % do valor (ou { $absolute } perto de 0). Ponto ou vírgula; um vetor como 0,5; 0,3; 0,1.
-quiz-score = Pontuação: { $right } de { $all } ({ $answered } respondidos)
+quiz-score = Pontuação: { $right } de { $all } ({ $answered ->
+    [one] 1 respondido
+   *[other] { $answered } respondidos
+}{ $shown ->
+    [0] {""}
+    [one] , 1 resposta mostrada
+   *[other] , { $shown } respostas mostradas
+})
 quiz-your-value = o teu valor
-quiz-reveal = Revelar
-quiz-reveal-hover = Mostrar o valor da chave neste passo
+quiz-reveal = Mostrar a resposta
+quiz-reveal-hover = Mostrar o valor da chave neste passo: deixa então de contar como certo
 quiz-not-numbers = não se lê como números: { $error }
 quiz-key = chave: { $name } = { $value }
 

@@ -126,16 +126,17 @@ impl QuizState {
     }
 }
 
+/// The inputs a wrong answer's formula takes: the student's own earlier answers with their
+/// values, the key's by name only (never a value the student has not found).
 fn inputs_text(v: &Verdict) -> String {
     let list: Vec<String> = v
         .inputs
         .iter()
         .map(|(name, val, own)| {
-            let value = locale::decimal(&fmt_value(val, 8));
             if *own {
-                t!("quiz-input-yours", name = name, value = value)
+                t!("quiz-input-yours", name = name, value = locale::decimal(&fmt_value(val, 8)))
             } else {
-                t!("quiz-input-key", name = name, value = value)
+                t!("quiz-input-key", name = name)
             }
         })
         .collect();
@@ -148,13 +149,10 @@ fn worksheet_formula(formula: &str) -> &str {
 }
 
 /// What a mark says, and whether it counts as right.
-pub fn mark_text(v: &Verdict, name: &str) -> (String, bool) {
+pub fn mark_text(v: &Verdict) -> (String, bool) {
     match &v.mark {
         Mark::Right => (t!("quiz-right"), true),
-        Mark::RightGivenYours { yours, key } => {
-            let yours = yours.join(", ");
-            (t!("quiz-right-given", yours = yours, name = name, key = locale::decimal(&fmt_value(key, 5))), true)
-        }
+        Mark::RightGivenYours { yours, .. } => (t!("quiz-right-given", yours = yours.join(", ")), true),
         Mark::Close { percent, digits } => {
             let percent = locale::num(*percent, 1);
             let digits = *digits as i64;
@@ -164,15 +162,9 @@ pub fn mark_text(v: &Verdict, name: &str) -> (String, bool) {
                 (t!("quiz-close-yours", percent = percent, digits = digits), false)
             }
         }
-        Mark::Wrong => (
-            t!(
-                "quiz-wrong",
-                formula = worksheet_formula(&v.formula),
-                value = locale::decimal(&fmt_value(&v.expected, 8)),
-                inputs = inputs_text(v)
-            ),
-            false,
-        ),
+        // The formula and what it takes, never the value it gives: the key stays hidden
+        // until the student asks for it.
+        Mark::Wrong => (t!("quiz-wrong", formula = worksheet_formula(&v.formula), inputs = inputs_text(v)), false),
     }
 }
 
@@ -245,8 +237,9 @@ pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<
         percent = locale::num(100.0 * TOLERANCE.0, 2),
         absolute = locale::num(TOLERANCE.1, 2)
     ));
-    let (right, answered, all) = score(&doc.scene, &key, &quiz.parsed());
-    ui.label(RichText::new(t!("quiz-score", right = right, all = all, answered = answered)).strong());
+    let sc = score(&doc.scene, &key, &quiz.parsed(), &quiz.revealed);
+    let text = t!("quiz-score", right = sc.right, all = sc.asked, answered = sc.answered, shown = sc.shown);
+    ui.label(RichText::new(text).strong());
     ui.separator();
     // One field per step; after "Clear answers" just above, too.
     quiz.fit(key.steps.len());
@@ -294,36 +287,39 @@ fn step_ui(ui: &mut Ui, quiz: &mut QuizState, key: &Explanation, k: usize, (row_
             quiz.revealed[k] = true;
         }
     });
-    // The mark and the key take this space whether they are shown or not.
+    // The mark and the key take this space whether they are shown or not (three rows of
+    // text and the key's line), more where a mark needs more: a mark is never cut off.
     let body = ui.text_style_height(&egui::TextStyle::Body);
     let mono = ui.text_style_height(&egui::TextStyle::Monospace);
-    let h = 2.0 * body + mono + 2.0 * ui.spacing().item_spacing.y;
+    let ok = palette::ink(ui, egui::Color32::from_rgb(80, 200, 120));
+    let bad = palette::ink(ui, palette::ERROR);
+    let mark = quiz.checked[k].then(|| match parse_answer(&quiz.answers[k]) {
+        Err(e) => (t!("quiz-not-numbers", error = e), bad),
+        Ok(_) => match quiz.verdict(key, k) {
+            Some(v) => {
+                let (t, right) = mark_text(&v);
+                (t, if right { ok } else { bad })
+            }
+            None => (String::new(), ok),
+        },
+    });
+    let galley = mark.as_ref().map(|(text, colour)| {
+        let font = egui::TextStyle::Body.resolve(ui.style());
+        ui.ctx().fonts_mut(|f| f.layout(text.clone(), font, *colour, row_w))
+    });
+    let mark_h = galley.as_ref().map_or(0.0, |g| g.size().y).max((3.0 * body).ceil() + 1.0);
+    let h = mark_h + mono + 2.0 * ui.spacing().item_spacing.y;
     let (rect, _) = ui.allocate_exact_size(egui::vec2(row_w, h), egui::Sense::hover());
     // A child that draws in the reserved rect without taking more space from the panel.
     let mut child = ui.new_child(egui::UiBuilder::new().max_rect(rect).id_salt(("mark", k)));
     child.set_clip_rect(rect.intersect(ui.clip_rect()));
     let ui = &mut child;
     {
-        let ok = palette::ink(ui, egui::Color32::from_rgb(80, 200, 120));
-        let bad = palette::ink(ui, palette::ERROR);
-        if quiz.checked[k] {
-            let (text, colour) = match parse_answer(&quiz.answers[k]) {
-                Err(e) => (t!("quiz-not-numbers", error = e), bad),
-                Ok(_) => match quiz.verdict(key, k) {
-                    Some(v) => {
-                        let (t, right) = mark_text(&v, &st.name);
-                        (t, if right { ok } else { bad })
-                    }
-                    None => (String::new(), ok),
-                },
-            };
-            let font = egui::TextStyle::Body.resolve(ui.style());
-            let mut job = egui::text::LayoutJob::simple(text.clone(), font, colour, rect.width());
-            job.wrap.max_rows = 2;
-            job.wrap.overflow_character = Some('…');
-            ui.add(egui::Label::new(job)).on_hover_text(text);
-        } else {
-            ui.add_space(2.0 * body + ui.spacing().item_spacing.y);
+        match galley {
+            Some(g) => {
+                ui.add(egui::Label::new(g));
+            }
+            None => ui.add_space(mark_h),
         }
         if quiz.revealed[k] || quiz.show_answers {
             ui.label(

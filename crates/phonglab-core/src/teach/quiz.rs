@@ -297,6 +297,10 @@ pub fn check(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -> O
         };
         let yours: Vec<String> = inputs.iter().filter_map(differing).collect();
         if yours.is_empty() { Mark::Right } else { Mark::RightGivenYours { yours, key: keyed.clone() } }
+    } else if compared(got, &keyed).is_some() && within(got, &keyed, CLOSE) {
+        // Close to the key is close, whatever the earlier answers: one number gets one mark.
+        let percent = 100.0 * relative_gap(got, &keyed);
+        Mark::Close { percent, digits: digits_needed(&keyed) }
     } else if compared(got, &expected).is_some() && within(got, &expected, CLOSE) {
         let percent = 100.0 * relative_gap(got, &expected);
         Mark::Close { percent, digits: digits_needed(&expected) }
@@ -324,11 +328,31 @@ pub fn asked(scene: &Scene, key: &Explanation, k: usize) -> bool {
         }
 }
 
-/// The score: (right, answered, steps asked).
-pub fn score(scene: &Scene, key: &Explanation, answers: &Answers) -> (usize, usize, usize) {
+/// A quiz's score.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Score {
+    /// Steps answered right, their answers not shown.
+    pub right: usize,
+    /// Steps answered.
+    pub answered: usize,
+    /// Steps asked.
+    pub asked: usize,
+    /// Steps asked whose answer was shown (`shown[k]`): they never count as right.
+    pub shown: usize,
+}
+
+/// The score, where `shown[k]` says the answer of step `k` was shown to the student.
+pub fn score(scene: &Scene, key: &Explanation, answers: &Answers, shown: &[bool]) -> Score {
     let steps: Vec<usize> = (0..key.steps.len()).filter(|k| asked(scene, key, *k)).collect();
-    let verdicts: Vec<Verdict> = steps.iter().filter_map(|k| check(scene, key, answers, *k)).collect();
-    (verdicts.iter().filter(|v| v.right).count(), verdicts.len(), steps.len())
+    let was_shown = |k: usize| shown.get(k).copied().unwrap_or(false);
+    let verdicts: Vec<(usize, Verdict)> =
+        steps.iter().filter_map(|&k| check(scene, key, answers, k).map(|v| (k, v))).collect();
+    Score {
+        right: verdicts.iter().filter(|(k, v)| v.right && !was_shown(*k)).count(),
+        answered: verdicts.len(),
+        asked: steps.len(),
+        shown: steps.iter().filter(|&&k| was_shown(k)).count(),
+    }
 }
 
 #[cfg(test)]
@@ -366,8 +390,30 @@ mod tests {
                 assert!(v.right, "step {} {}: {:?} against {:?}", k + 1, e.steps[k].name, e.steps[k].value, v.expected);
             }
         }
-        let (right, answered, all) = score(&s, &e, &answers);
-        assert_eq!((right, answered), (all, all));
+        let sc = score(&s, &e, &answers, &[]);
+        assert_eq!((sc.right, sc.answered, sc.shown), (sc.asked, sc.asked, 0));
+        // A shown answer never counts as right, even answered right afterwards.
+        let mut shown = vec![false; e.steps.len()];
+        shown[3] = true;
+        let sc = score(&s, &e, &answers, &shown);
+        assert_eq!((sc.right, sc.answered, sc.shown), (sc.asked - 1, sc.asked, 1));
+    }
+
+    /// A number close to the key is marked close wherever it is typed, whatever the earlier
+    /// answers it would follow from: one number, one mark.
+    #[test]
+    fn a_number_close_to_the_key_is_close_whatever_the_earlier_answers() {
+        let (s, e) = worksheet();
+        let idx = |n: &str| e.steps.iter().position(|st| st.name == n).unwrap();
+        let mut answers: Vec<Option<Vec<f64>>> = vec![None; e.steps.len()];
+        let cos = e.steps[idx("cosTheta")].value.clone().unwrap()[0];
+        answers[idx("cosTheta")] = Some(vec![cos * 1.003]);
+        assert!(matches!(check(&s, &e, &answers, idx("cosTheta")).unwrap().mark, Mark::Close { .. }));
+        // Now with a wrong vlv before it: the same number is still close (to the key).
+        let mut vlv = e.steps[idx("vlv")].value.clone().unwrap();
+        vlv[0] += 0.3;
+        answers[idx("vlv")] = Some(vlv);
+        assert!(matches!(check(&s, &e, &answers, idx("cosTheta")).unwrap().mark, Mark::Close { .. }));
     }
 
     /// Every step worked out again from the key's own earlier values gives the key's value:
