@@ -119,12 +119,46 @@ fn the_vectors_are_drawn_on_the_object_after_a_click_and_point_the_right_way() {
     h.run_steps(2);
     let eval = h.state().evaluate().unwrap();
     let arrows = vector_arrows(&h.state().doc, &eval, image);
-    let names: Vec<&str> = arrows.iter().map(|a| a.0.as_str()).collect();
+    let names: Vec<&str> = arrows.iter().map(|a| a.name.as_str()).collect();
     assert_eq!(names, ["L", "H", "V", "N"]);
-    let n = arrows.iter().find(|a| a.0 == "N").unwrap();
-    assert!(n.3.x > n.2.x + 10.0, "N points out of the sphere's right side: {n:?}");
-    let v = arrows.iter().find(|a| a.0 == "V").unwrap();
-    assert!((v.3 - v.2).length() < (n.3 - n.2).length(), "V points at the viewer, foreshortened");
+    let n = arrows.iter().find(|a| a.name == "N").unwrap();
+    assert!(n.to.x > n.from.x + 10.0, "N points out of the teapot's right side: {n:?}");
+    let v = arrows.iter().find(|a| a.name == "V").unwrap();
+    assert!((v.to - v.from).length() < (n.to - n.from).length(), "V points at the viewer, foreshortened");
+    // What is drawn is that projection: each arrow one length in the world, projected, so
+    // their lengths on the screen differ (not one screen length for all, as before).
+    let drawn = h.state().ui.geometry.arrows.clone();
+    assert_eq!(drawn, arrows, "the arrows drawn are the projected ones");
+    let doc = h.state().doc.clone();
+    let eye_from_object = doc.shaded_scene().eye_from_object();
+    let clip_from_object = doc.view.clip_from_object();
+    let object_from_eye = eye_from_object.inverse();
+    let screen = |eye: glam::DVec3| {
+        let c = clip_from_object * (object_from_eye * eye.extend(1.0));
+        let (x, y) = (c.x / c.w, c.y / c.w);
+        image.min + egui::vec2(((x + 1.0) * 0.5) as f32 * image.width(), ((1.0 - y) * 0.5) as f32 * image.height())
+    };
+    let p = eye_from_object * doc.scene.vertex.position;
+    let at = p.truncate() / p.w;
+    let world = 0.5 * eye_from_object.transform_vector3(glam::DVec3::X).length();
+    for (a, vec) in drawn.iter().zip([eval.lights[0].l, eval.lights[0].h, eval.v, eval.n]) {
+        let want = screen(at + vec.normalize() * world) - screen(at);
+        assert!(((a.to - a.from) - want).length() < 0.5, "{}: drawn {:?}, projected {want:?}", a.name, a.to - a.from);
+        assert_eq!(a.away, vec.z < 0.0, "{}: away from the viewer", a.name);
+    }
+    let lengths: Vec<f32> = drawn.iter().map(|a| (a.to - a.from).length()).collect();
+    let (lo, hi) = lengths.iter().fold((f32::MAX, 0.0f32), |(l, h), x| (l.min(*x), h.max(*x)));
+    assert!(hi > 1.3 * lo, "lengths follow the directions: {lengths:?}");
+    assert!(!v.faded(), "V points at the viewer: drawn full");
+    // The light moved behind the teapot: L (and H) point away and into the surface, drawn
+    // faded, and a line under the picture says what that means.
+    let mut d = h.state().doc.clone();
+    d.scene.lights[0].position = glam::DVec4::new(0.0, 0.0, -90.0, 1.0);
+    assert!(h.state_mut().apply(d));
+    h.run_steps(2);
+    let l = h.state().ui.geometry.arrows.iter().find(|a| a.name == "L").unwrap().clone();
+    assert!(l.away && l.behind && l.faded(), "{l:?}");
+    h.get_by_label_contains("Faded, open head");
 }
 
 #[test]

@@ -405,6 +405,7 @@ picked-vertex = Vertex { $index } of the { $object }: the worked calculation now
 light-behind = light { $index } (behind the camera)
 light-name = light { $index }
 light-drag = Light { $index }: drag to move it
+arrows-faded = Faded, open head: the vector points away from you, or into the surface.
 renderer = Renderer
 renderer-hover = The CPU renderer is the reference; the GPU runs the scene's generated WGSL (Shader window)
 renderer-auto = Automatic (GPU if a real one)

@@ -405,6 +405,7 @@ picked-vertex = Vértice { $index } de { $object }: o cálculo passa a usá-lo, 
 light-behind = luz { $index } (atrás da câmera)
 light-name = luz { $index }
 light-drag = Luz { $index }: arraste para movê-la
+arrows-faded = Esmaecida, ponta aberta: o vetor aponta para longe de você, ou para dentro da superfície.
 renderer = Desenho
 renderer-hover = O desenho na CPU é a referência; a GPU roda o WGSL gerado para a cena (janela Shader)
 renderer-auto = Automático (GPU, se for real)

@@ -405,6 +405,7 @@ picked-vertex = Vértice { $index } de { $object }: o cálculo passa a usá-lo, 
 light-behind = luz { $index } (atrás da câmara)
 light-name = luz { $index }
 light-drag = Luz { $index }: arrasta para a mover
+arrows-faded = Esbatida, ponta aberta: o vetor aponta para longe de ti, ou para dentro da superfície.
 renderer = Desenho
 renderer-hover = O desenho no CPU é a referência; a GPU corre o WGSL gerado para a cena (janela Shader)
 renderer-auto = Automático (GPU, se for real)

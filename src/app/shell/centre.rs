@@ -43,7 +43,7 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
         if let Some(m) = notice {
             state.message = Some(Message::Info(m));
         }
-        state.ui.geometry = state::Geometry { pictures, plot: None, arrangement: None };
+        state.ui.geometry = state::Geometry { pictures, ..Default::default() };
         if !state.compare.open && matches!(&state.message, Some(Message::Info(m)) if *m == t!("compare-pinned")) {
             // Closed: its notice goes with it.
             state.message = None;
@@ -71,7 +71,7 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     let split = centre_layout::split(area, 1 + pair as usize, chrome, state.ui.layout.dividers);
     divider_ui(ui, state, area, &split);
     let show_angles = !state.quiz.hides_answers();
-    let mut geometry = state::Geometry { pictures: Vec::new(), plot: None, arrangement: Some(split.arrangement) };
+    let mut geometry = state::Geometry { arrangement: Some(split.arrangement), ..Default::default() };
     ui.scope_builder(egui::UiBuilder::new().max_rect(split.pictures).id_salt("shaded"), |ui| {
         let now = state.now;
         let mut view = shaded::Shaded {
@@ -84,6 +84,7 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
         };
         let asked = shaded::shaded_ui(ui, &mut view, &mut state.shaded, eval);
         geometry.pictures = asked.rects;
+        geometry.arrows = asked.arrows;
         if let Some(p) = asked.open_obj {
             files::open_obj(state, &p);
         }

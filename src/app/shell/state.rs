@@ -22,6 +22,8 @@ pub struct Geometry {
     pub plot: Option<crate::app::panels::vector_plot::PlotGeometry>,
     /// How the centre was arranged.
     pub arrangement: Option<crate::app::shell::centre_layout::Arrangement>,
+    /// The arrows drawn on the shaded view's picture.
+    pub arrows: Vec<crate::app::panels::shaded::ArrowOnObject>,
 }
 
 /// The shell's own choices: the window's arrangement, what the centre drew, the keys'

@@ -45,6 +45,8 @@ pub struct Asked {
     pub rects: Vec<egui::Rect>,
     /// The mesh file typed under View options, to open.
     pub open_obj: Option<std::path::PathBuf>,
+    /// The arrows drawn at the worked calculation's vertex.
+    pub arrows: Vec<super::overlay::ArrowOnObject>,
 }
 
 /// `doc` with each departure switched on in `fixes` (and present in `doc`) corrected, or

@@ -21,7 +21,7 @@ use egui::Ui;
 
 pub use cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
 pub use context::{Asked, Shaded, ShadedOptions, corrected_document};
-pub use overlay::vector_arrows;
+pub use overlay::{ArrowOnObject, vector_arrows};
 pub use pictures::drawn_caption;
 pub use toolbar::departures_ui;
 
@@ -36,6 +36,6 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut ShadedCache, e
     let open_obj = toolbar::toolbar_ui(ui, state, cache);
     let shown = pictures::pictures_ui(ui, state, cache);
     let rects = std::iter::once(shown.response.rect).chain(shown.second).collect();
-    overlay::interaction_ui(ui, state, cache, &shown, eval);
-    Asked { rects, open_obj }
+    let arrows = overlay::interaction_ui(ui, state, cache, &shown, eval);
+    Asked { rects, open_obj, arrows }
 }

@@ -14,14 +14,14 @@ use crate::app::model::evaluated::Evaluated;
 use crate::app::model::message::Message;
 
 /// What the pointer does on the picture: the vectors and lights drawn on it, a light
-/// dragged, the orbit camera turned and zoomed, a vertex picked.
+/// dragged, the orbit camera turned and zoomed, a vertex picked. Returns the arrows drawn.
 pub(super) fn interaction_ui(
     ui: &mut Ui,
     state: &mut Shaded<'_>,
     cache: &mut ShadedCache,
     shown: &Shown,
     eval: &Evaluated,
-) {
+) -> Vec<ArrowOnObject> {
     let (resp, size, px, scene) = (&shown.response, shown.size, shown.px, &shown.scene);
     let camera = state.edit.doc.view.camera;
     let overlay = Overlay {
@@ -29,7 +29,7 @@ pub(super) fn interaction_ui(
         clip_from_object: state.edit.doc.view.clip_from_object(),
         object_from_eye: scene.eye_from_object().inverse(),
     };
-    vectors_on_object_ui(ui, overlay.rect, state.edit.doc, eval);
+    let arrows = vectors_on_object_ui(ui, overlay.rect, state.edit.doc, eval);
     let dragged_light = lights_ui(ui, &overlay, state, scene);
 
     let mut cam = camera;
@@ -60,7 +60,7 @@ pub(super) fn interaction_ui(
             && let Err(e) = cache.main.render(ui.ctx(), state.edit.doc, state.pow, px, "shaded view")
         {
             *state.edit.message = Some(Message::Refused(format!("{}: {e}", t!("shaded-cannot-render"))));
-            return;
+            return arrows;
         }
         let mesh = mesh_for(&mut cache.main.mesh, &state.edit.doc.view);
         if let Some(i) = cache.main.renderer.pick(mesh, x, y) {
@@ -71,6 +71,7 @@ pub(super) fn interaction_ui(
             }
         }
     }
+    arrows
 }
 
 /// Where the shaded view's image is, and how object and eye space map onto it.
@@ -114,15 +115,38 @@ impl Overlay {
     }
 }
 
-/// N, V, and each light's L and H (or R) as arrows on the image `rect`: (name, colour,
-/// from, to), from the vertex on the object, a third of the object's size long. Empty
-/// unless the worked calculation's vertex is one the view draws (after a click on the
-/// surface, or in any scene whose frame is the view's).
-pub fn vector_arrows(
-    doc: &Document,
-    eval: &Evaluated,
-    rect: egui::Rect,
-) -> Vec<(String, Color32, egui::Pos2, egui::Pos2)> {
+/// One of N, V, L, H (or R) drawn from the worked calculation's vertex on the picture.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ArrowOnObject {
+    /// Its name (`L1` with several lights).
+    pub name: String,
+    /// Its colour (the plot's).
+    pub colour: Color32,
+    /// The vertex on the picture.
+    pub from: egui::Pos2,
+    /// Its tip on the picture: the vector, one world length long, projected (so one that
+    /// points at the viewer is foreshortened).
+    pub to: egui::Pos2,
+    /// It points away from the viewer (into the picture).
+    pub away: bool,
+    /// It points into the surface (below the tangent plane, against N).
+    pub behind: bool,
+}
+
+impl ArrowOnObject {
+    /// Drawn faded, with an open head: it points away from the viewer or into the surface.
+    pub fn faded(&self) -> bool {
+        self.away || self.behind
+    }
+}
+
+/// N, V, and each light's L and H (or R) as arrows on the image `rect`, from the vertex on
+/// the object, each the same length in the world (0.5 of the object's unit, where the
+/// demo's sphere has radius 0.5) and projected as the picture is: a vector that points
+/// at the viewer is short on the screen, one across the screen long. Empty unless the
+/// worked calculation's vertex is one the view draws (after a click on the surface, or in
+/// any scene whose frame is the view's).
+pub fn vector_arrows(doc: &Document, eval: &Evaluated, rect: egui::Rect) -> Vec<ArrowOnObject> {
     let mut out = Vec::new();
     if doc.with_vertex_as_shaded(doc.scene.vertex) != *doc || doc.scene.vertex.position.w == 0.0 {
         return out;
@@ -132,13 +156,18 @@ pub fn vector_arrows(
     let o = Overlay { rect, clip_from_object: doc.view.clip_from_object(), object_from_eye: eye_from_object.inverse() };
     let p = eye_from_object * doc.scene.vertex.position;
     let pos_in_eye = p.truncate() / p.w;
-    let len = 0.35 * eye_from_object.transform_vector3(DVec3::X).length();
+    let len = 0.5 * eye_from_object.transform_vector3(DVec3::X).length();
     let Some(from) = o.screen_from_eye(pos_in_eye).filter(|f| rect.contains(*f)) else { return out };
-    let mut add = |vec: DVec3, c: Color32, name: String| {
+    let n = eval.n.normalize_or_zero();
+    let mut add = |vec: DVec3, colour: Color32, name: String| {
         if vec.length() > 0.0
             && let Some(to) = o.screen_from_eye(pos_in_eye + vec.normalize() * len)
         {
-            out.push((name, c, from, to));
+            let unit = vec.normalize();
+            // Eye space looks down -z: a vector with z < 0 points away from the viewer.
+            let away = unit.z < -1e-9;
+            let behind = name != "N" && unit.dot(n) < -1e-9;
+            out.push(ArrowOnObject { name, colour, from, to, away, behind });
         }
     };
     let many = eval.lights.len() > 1;
@@ -155,49 +184,66 @@ pub fn vector_arrows(
     out
 }
 
-/// Draws [`vector_arrows`] on the image, every arrow the same length on screen (a fifth of
-/// the image) in the direction the view shows it, ⊙ or ⊗ for one that points at the viewer
-/// or away, in the plot's colours and styles, each letter placed clear of the others and of
-/// the arrows ([`crate::app::widgets::label_placement`]).
-fn vectors_on_object_ui(ui: &Ui, rect: egui::Rect, doc: &Document, eval: &Evaluated) {
+/// Draws [`vector_arrows`] on the image as they are projected (one world length each, so
+/// foreshortened), in the plot's colours and styles; an arrow that points away from the
+/// viewer or into the surface faded with an open head, and one seen end on (shorter than 3
+/// points) as ⊙ or ⊗; each letter placed clear of the others and of the arrows
+/// ([`crate::app::widgets::label_placement`]); a line under the picture says what the
+/// faded ones are. Returns the arrows drawn.
+fn vectors_on_object_ui(ui: &mut Ui, rect: egui::Rect, doc: &Document, eval: &Evaluated) -> Vec<ArrowOnObject> {
     use crate::app::widgets::arrows::{draw_arrow, end_on_marker, paint_labels};
     let arrows = vector_arrows(doc, eval, rect);
-    let Some((_, _, from, _)) = arrows.first() else { return };
-    let from = *from;
+    let Some(first) = arrows.first() else { return arrows };
+    let from = first.from;
     let p = ui.painter_at(rect);
-    let len = rect.width().min(rect.height()) * 0.2;
-    let width = (3.0 / ui.ctx().pixels_per_point()).max(len * 0.03);
+    let width = (3.0 / ui.ctx().pixels_per_point()).max(rect.width().min(rect.height()) * 0.006);
     let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Body) * 1.5);
     let outline = if ui.visuals().dark_mode { Color32::BLACK } else { Color32::WHITE };
     let mut lines = Vec::new();
     let mut wanted = Vec::new();
     let mut galleys = Vec::new();
     let mut end_on = 0;
-    for (name, c, _, to) in &arrows {
-        let c = crate::app::widgets::palette::ink(ui, *c);
-        let d = *to - from;
-        let dashed = name.starts_with('H') || name.starts_with('R');
+    for a in &arrows {
+        let ink = crate::app::widgets::palette::ink(ui, a.colour);
+        let c = if a.faded() { ink.gamma_multiply(0.5) } else { ink };
+        let d = a.to - from;
+        let dashed = a.name.starts_with('H') || a.name.starts_with('R');
         if d.length() < 3.0 {
-            let (line, label) = end_on_marker(&p, from, end_on, width, c, true);
+            let (line, label) = end_on_marker(&p, from, end_on, width, c, !a.away);
             end_on += 1;
             lines.push(line);
             wanted.push(label);
         } else {
-            let tip = from + d.normalized() * len;
             // A dark (or light) edge under the colour, so the arrow reads on any surface.
-            draw_arrow(&p, from, tip, width * 1.8, outline, false, false);
-            lines.push(draw_arrow(&p, from, tip, width, c, dashed, false));
+            let edge = if a.faded() { outline.gamma_multiply(0.5) } else { outline };
+            draw_arrow(&p, from, a.to, width * 1.8, edge, false, a.faded());
+            lines.push(draw_arrow(&p, from, a.to, width, c, dashed, a.faded()));
             wanted.push(crate::app::widgets::label_placement::Wanted {
-                anchor: tip,
+                anchor: a.to,
                 direction: d,
                 size: egui::Vec2::ZERO,
                 gap: width,
             });
         }
-        galleys.push(p.layout_no_wrap(name.clone(), font.clone(), c));
+        galleys.push(p.layout_no_wrap(a.name.clone(), font.clone(), c));
     }
     paint_labels(&p, wanted, galleys, &lines, rect, Some(outline.gamma_multiply(0.6)));
     p.circle_filled(from, width * 1.3, crate::app::widgets::palette::ink(ui, crate::app::widgets::palette::N));
+    if arrows.iter().any(ArrowOnObject::faded) {
+        // A label (read by screen readers and the tests) on a backdrop, at the picture's
+        // foot, drawn in a child that takes no room from the panel.
+        let strip = egui::Rect::from_min_max(rect.left_bottom() - egui::vec2(0.0, 40.0), rect.right_bottom());
+        let mut child = ui.new_child(egui::UiBuilder::new().max_rect(strip.shrink(4.0)).id_salt("arrows faded"));
+        child.set_clip_rect(rect);
+        let ink = if ui.visuals().dark_mode { Color32::from_gray(230) } else { Color32::from_gray(20) };
+        egui::Frame::new().fill(outline.gamma_multiply(0.7)).corner_radius(3.0).inner_margin(3.0).show(
+            &mut child,
+            |ui| {
+                ui.add(egui::Label::new(egui::RichText::new(t!("arrows-faded")).small().color(ink)).wrap());
+            },
+        );
+    }
+    arrows
 }
 
 /// A light outside the picture: a triangle on the picture's edge pointing towards it, and
