@@ -63,7 +63,9 @@ fn compare_with_cpu(h: &mut Harness<'static, AppState>) -> Difference {
 }
 
 fn assert_matches(d: &Difference, what: &str) {
-    assert!(d.both > 20_000, "{what}: {d}");
+    // The start camera frames the teapot whole (distance 2.8), so the sphere covers about
+    // 17 000 of the compared pixels at this window size.
+    assert!(d.both > 12_000, "{what}: {d}");
     assert!(d.only_one() as f64 <= 0.002 * d.both as f64, "{what}: coverage differs: {d}");
     assert!(d.mad.iter().all(|m| *m <= 1.0), "{what}: {d}");
 }

@@ -46,7 +46,7 @@ pub struct Asked {
     /// The mesh file typed under View options, to open.
     pub open_obj: Option<std::path::PathBuf>,
     /// The arrows drawn at the worked calculation's vertex.
-    pub arrows: Vec<super::overlay::ArrowOnObject>,
+    pub arrows: Vec<super::arrow_on_object::ArrowOnObject>,
 }
 
 /// `doc` with each departure switched on in `fixes` (and present in `doc`) corrected, or

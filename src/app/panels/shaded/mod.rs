@@ -9,6 +9,7 @@
 //! pictures (`pictures`), what the pointer does on them and what is drawn over them
 //! (`overlay`), the renderer's cache ([`cache`]) and the GPU's picture ([`gpu`]).
 
+mod arrow_on_object;
 pub mod cache;
 pub mod context;
 pub mod gpu;
@@ -19,9 +20,10 @@ mod toolbar;
 
 use egui::Ui;
 
+pub use arrow_on_object::ArrowOnObject;
 pub use cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
 pub use context::{Asked, Shaded, ShadedOptions, corrected_document};
-pub use overlay::{ArrowOnObject, vector_arrows};
+pub use overlay::vector_arrows;
 pub use pictures::drawn_caption;
 pub use toolbar::departures_ui;
 

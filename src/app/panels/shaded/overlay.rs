@@ -7,6 +7,7 @@ use glam::{DVec3, DVec4};
 use phonglab_core::t;
 use phonglab_core::{Document, Framing, Vertex};
 
+use super::arrow_on_object::ArrowOnObject;
 use super::cache::{DrawnBy, ShadedCache, mesh_for};
 use super::context::Shaded;
 use super::pictures::Shown;
@@ -112,31 +113,6 @@ impl Overlay {
         let ndc = DVec4::new(rel.x as f64 * 2.0 - 1.0, 1.0 - rel.y as f64 * 2.0, c.z / c.w, 1.0);
         let p = self.clip_from_object.inverse() * ndc;
         (p.w != 0.0 && p.is_finite()).then(|| p / p.w)
-    }
-}
-
-/// One of N, V, L, H (or R) drawn from the worked calculation's vertex on the picture.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ArrowOnObject {
-    /// Its name (`L1` with several lights).
-    pub name: String,
-    /// Its colour (the plot's).
-    pub colour: Color32,
-    /// The vertex on the picture.
-    pub from: egui::Pos2,
-    /// Its tip on the picture: the vector, one world length long, projected (so one that
-    /// points at the viewer is foreshortened).
-    pub to: egui::Pos2,
-    /// It points away from the viewer (into the picture).
-    pub away: bool,
-    /// It points into the surface (below the tangent plane, against N).
-    pub behind: bool,
-}
-
-impl ArrowOnObject {
-    /// Drawn faded, with an open head: it points away from the viewer or into the surface.
-    pub fn faded(&self) -> bool {
-        self.away || self.behind
     }
 }
 
