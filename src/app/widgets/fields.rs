@@ -11,10 +11,18 @@ use crate::app::widgets::number_field::{Accepts, NumberField, refusal_ui};
 /// A number field's width in the controls: 6 significant digits and a sign.
 const FIELD_WIDTH: f32 = 58.0;
 
-/// A slider over `range` (dragged values stay inside it) and a number field beside it
-/// whose typed values are not clamped (the document validator decides), both named `label`.
+/// `label`, then a slider over `range` (dragged values stay inside it) and a number field
+/// beside it whose typed values are not clamped (the document validator decides), both
+/// named `label`: the label before them, or above them where the panel is narrow.
 pub fn slider_ui(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::RangeInclusive<f64>, log: bool) -> bool {
     ui.horizontal_wrapped(|ui| {
+        // The label first, as every row has it (colours, vectors): before its controls
+        // where they fit beside it, above them where they do not.
+        ui.add(egui::Label::new(label).wrap_mode(egui::TextWrapMode::Extend));
+        let controls = ui.spacing().slider_width + FIELD_WIDTH + 4.0 * ui.spacing().item_spacing.x;
+        if ui.max_rect().max.x - ui.cursor().min.x < controls {
+            ui.end_row();
+        }
         let mut s = Slider::new(value, range).show_value(false).clamping(SliderClamping::Never);
         if log {
             s = s.logarithmic(true).smallest_positive(1e-6);
@@ -23,7 +31,6 @@ pub fn slider_ui(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::Ran
         ui.ctx().accesskit_node_builder(slid.id, |b| b.set_label(label.to_string()));
         landmark(ui.ctx(), label, slid.rect);
         let typed = NumberField::new(value, label).width(FIELD_WIDTH).show_in_row_ui(ui, 1);
-        ui.add(egui::Label::new(label).wrap_mode(egui::TextWrapMode::Extend));
         if let Some(why) = &typed.refused {
             ui.end_row();
             refusal_ui(ui, why);
@@ -156,9 +163,12 @@ pub fn vec4_ui(ui: &mut Ui, label: &str, v: &mut DVec4, speed: f64) -> bool {
 /// An unclamped GL colour: r, g, b (and alpha when `alpha`), after a swatch of how it shows.
 pub fn color_ui(ui: &mut Ui, label: &str, c: &mut DVec4, alpha: bool) -> bool {
     let shown = crate::app::widgets::palette::gl_to_color32([c.x, c.y, c.z]);
+    // Wider than high, rounded, with an edge in the text's colour: a colour sample, not a
+    // check box (a white square read as an unchecked one).
     let swatch = move |ui: &mut Ui| {
-        let (rect, _) = ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
-        ui.painter().rect_filled(rect, 2.0, shown);
+        let (rect, _) = ui.allocate_exact_size(egui::vec2(26.0, 14.0), egui::Sense::hover());
+        let edge = ui.visuals().text_color().gamma_multiply(0.6);
+        ui.painter().rect(rect, 7.0, shown, egui::Stroke::new(1.0, edge), egui::StrokeKind::Inside);
     };
     let DVec4 { x, y, z, w } = c;
     if alpha {
