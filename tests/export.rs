@@ -71,8 +71,8 @@ fn the_export_menu_shows_its_fields_inside_the_window() {
         .with_size([1440.0, 900.0])
         .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
     h.run_steps(3);
-    h.get_by_label("Export").click();
-    h.run_steps(3);
+    common::open_menu(&mut h, &["File", "Export"]);
+    h.run_steps(1);
     let window = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(1440.0, 900.0));
     for label in ["Seed", "Exercises", "Level"] {
         let field = h.get_by_role_and_label(Role::SpinButton, label);
@@ -115,8 +115,8 @@ fn the_export_menu_copies_each_kind_of_code_and_a_dropped_notebook_opens_as_the_
         ("GLSL shaders", "#version 330 core"),
     ];
     for (row, (label, text)) in expected.iter().enumerate() {
-        h.get_by_label("Export").click();
-        h.run_steps(3);
+        common::open_menu(&mut h, &["File", "Export"]);
+        h.run_steps(1);
         let name = h.get_by_label(label).rect();
         let copies = h.query_all_by_label("Copy").map(|n| n.rect()).collect::<Vec<_>>();
         let saves = h.query_all_by_label("Save…").map(|n| n.rect()).collect::<Vec<_>>();

@@ -9,6 +9,8 @@ use egui_kittest::kittest::{NodeT, Queryable};
 use phonglab::app::{AppState, app_ui};
 use phonglab_core::locale::{Lang, has_message, message_ids, tr_in};
 
+mod common;
+
 /// The text of every source file of the app and the core.
 fn source_texts() -> Vec<String> {
     let mut out = Vec::new();
@@ -127,10 +129,16 @@ fn the_window_in_portuguese_shows_no_english_message() {
     let english = english_only_texts();
     assert!(english.len() > 150, "{}", english.len());
     let mut seen = Vec::new();
-    // The main window, the Presets menu and its teapots, View options, the help overlay,
-    // then the quiz.
+    // The main window, the File and View menus, the Scene menu and its teapots, View
+    // options, the help overlay, then the quiz.
     seen.extend(labels(&h));
-    h.get_by_label("Cenas prontas").click();
+    for menu in ["Ficheiro", "Ver"] {
+        common::open_menu(&mut h, &[menu]);
+        seen.extend(labels(&h));
+        h.key_press(egui::Key::Escape);
+        h.run_steps(2);
+    }
+    common::open_menu(&mut h, &["Cena"]);
     h.run_steps(3);
     h.get_by_label("Bules do Red Book").hover();
     h.run_steps(3);
@@ -148,18 +156,18 @@ fn the_window_in_portuguese_shows_no_english_message() {
     h.run_steps(3);
     seen.extend(labels(&h));
     h.key_press(egui::Key::F1);
-    h.get_by_label("Teste").click();
+    common::menu_item(&mut h, &["Ver"], "Teste");
     h.run_steps(3);
     seen.extend(labels(&h));
     h.state_mut().quiz.open = false;
     // Compare, pinned and then changed (the material), and the Shader window.
-    h.get_by_label("Comparar").click();
+    common::menu_item(&mut h, &["Ver"], "Comparar");
     h.run_steps(3);
     h.key_press(egui::Key::M);
     h.run_steps(3);
     seen.extend(labels(&h));
     h.get_by_label("Fechar a comparação").click();
-    h.get_by_label("Shader").click();
+    common::menu_item(&mut h, &["Ver"], "Shader");
     h.run_steps(3);
     seen.extend(labels(&h));
     let leaks: BTreeSet<&String> = seen.iter().filter(|l| english.contains(*l)).collect();
@@ -185,15 +193,17 @@ fn switching_the_language_in_the_app_takes_effect_at_once() {
         .with_size([1500.0, 1000.0])
         .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
     h.run_steps(2);
-    h.get_by_label("Reset to worksheet");
+    h.get_by_label("File");
     h.get_by_label("en").click();
     h.run_steps(2);
     h.get_by_label("Português (Brasil)").click();
     h.run_steps(2);
     assert_eq!(h.state().ui.layout.language.as_deref(), Some("pt-BR"));
-    h.get_by_label("Voltar à ficha");
-    assert!(h.query_by_label("Reset to worksheet").is_none());
-    // Brazilian where usage differs: the Scene file field is an "Arquivo".
+    h.get_by_label("Cena");
+    assert!(h.query_by_label("File").is_none());
+    // Brazilian where usage differs: the File menu, and the Scene file field in it, are an
+    // "Arquivo".
+    common::open_menu(&mut h, &["Arquivo"]);
     h.get_by_label("Arquivo de cena:");
     // Kept across restarts with the layout.
     let back = phonglab::app::shell::layout::Layout::from_ron(Some(&h.state().ui.layout.to_ron()));

@@ -246,7 +246,7 @@ fn copy_as_markdown_puts_the_table_on_the_clipboard() {
 #[test]
 fn presets_load_the_phong_demo() {
     let mut h = harness();
-    h.get_by_label("Presets").click();
+    common::open_menu(&mut h, &["Scene"]);
     h.run_steps(2);
     h.get_by_label("Phong demo").click();
     h.run_steps(2);
@@ -266,7 +266,7 @@ fn presets_load_the_phong_demo() {
         let deg = a.dot(b).clamp(-1.0, 1.0).acos().to_degrees();
         assert!(deg > 30.0, "{what} are {deg} degrees apart");
     }
-    h.get_by_label("Reset to worksheet").click();
+    common::menu_item(&mut h, &["Scene"], "Reset to worksheet");
     h.run_steps(1);
     assert_eq!(h.state().doc, phonglab_core::Document::default());
 }
@@ -335,6 +335,9 @@ fn temp_dir(name: &str) -> std::path::PathBuf {
 }
 
 fn set_file_path(h: &mut Harness<'static, AppState>, path: &std::path::Path) {
+    if h.query_by_role_and_label(Role::TextInput, "Scene file:").is_none() {
+        common::open_menu(h, &["File"]);
+    }
     h.get_by_role_and_label(Role::TextInput, "Scene file:").set_text_value_accesskit(&path.display().to_string());
     h.run_steps(1);
 }
@@ -344,7 +347,7 @@ fn open_and_save_scene_files_by_path() {
     let mut h = harness();
     let spot = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
     set_file_path(&mut h, &spot);
-    h.get_by_label("Open").click();
+    common::menu_item(&mut h, &["File"], "Open");
     h.run_steps(2);
     assert_eq!(h.state().doc.name, "a spotlight");
     assert_eq!(h.state().doc.scene.lights[0].spot_cutoff, 25.0);
@@ -355,15 +358,15 @@ fn open_and_save_scene_files_by_path() {
     assert_eq!(h.state().doc.scene.material.shininess, 77.0);
     let saved = temp_dir("save").join("mine.toml");
     set_file_path(&mut h, &saved);
-    h.get_by_label("Save").click();
+    common::menu_item(&mut h, &["File"], "Save");
     h.run_steps(2);
     assert!(matches!(&h.state().message, Some(Message::Info(m)) if m.contains("Saved")), "{:?}", h.state().message);
     let doc = h.state().doc.clone();
-    h.get_by_label("Reset to worksheet").click();
+    common::menu_item(&mut h, &["Scene"], "Reset to worksheet");
     h.run_steps(2);
     assert_ne!(h.state().doc, doc);
     set_file_path(&mut h, &saved);
-    h.get_by_label("Open").click();
+    common::menu_item(&mut h, &["File"], "Open");
     h.run_steps(2);
     assert_eq!(h.state().doc, doc, "saved and opened: the same scene");
 }
@@ -382,7 +385,7 @@ fn a_bad_file_is_refused_with_its_line_and_the_scene_kept() {
         let p = dir.join(name);
         std::fs::write(&p, text).unwrap();
         set_file_path(&mut h, &p);
-        h.get_by_label("Open").click();
+        common::menu_item(&mut h, &["File"], "Open");
         h.run_steps(2);
         let msg = match &h.state().message {
             Some(Message::Refused(m)) => m.clone(),
@@ -393,12 +396,12 @@ fn a_bad_file_is_refused_with_its_line_and_the_scene_kept() {
         assert!(h.get_all_by_label_contains(says).count() >= 1, "{name}: the message is shown");
     }
     set_file_path(&mut h, &dir.join("missing.toml"));
-    h.get_by_label("Open").click();
+    common::menu_item(&mut h, &["File"], "Open");
     h.run_steps(2);
     assert!(matches!(&h.state().message, Some(Message::Refused(m)) if m.contains("cannot read")));
     // Saving into a folder that does not exist fails and says so; nothing is lost.
     set_file_path(&mut h, &dir.join("no/such/folder/x.toml"));
-    h.get_by_label("Save").click();
+    common::menu_item(&mut h, &["File"], "Save");
     h.run_steps(2);
     assert!(matches!(&h.state().message, Some(Message::Refused(m)) if m.contains("Not saved")));
     assert_eq!(h.state().doc, before);
@@ -478,7 +481,7 @@ fn wait_for(h: &mut Harness<'static, AppState>, secs: u64, done: impl Fn(&AppSta
 #[test]
 fn the_cost_of_accuracy_study_runs_in_the_background() {
     let mut h = sphere_harness();
-    h.get_by_label("Cost of accuracy").click();
+    common::menu_item(&mut h, &["View"], "Cost of accuracy");
     h.run_steps(2);
     h.get_by_label("Run the study").click();
     h.run_steps(2);
@@ -507,7 +510,7 @@ fn the_cost_of_accuracy_study_runs_in_the_background() {
 #[test]
 fn cancelling_or_closing_stops_the_study() {
     let mut h = harness();
-    h.get_by_label("Cost of accuracy").click();
+    common::menu_item(&mut h, &["View"], "Cost of accuracy");
     h.run_steps(2);
     h.get_by_label("Run the study").click();
     h.run_steps(2);
@@ -517,7 +520,9 @@ fn cancelling_or_closing_stops_the_study() {
     h.get_by_label("Run the study").click();
     h.run_steps(2);
     assert!(h.state().cost.running.is_some());
-    h.get_by_role_and_label(Role::Button, "Cost of accuracy").click_accesskit(); // close the window
+    // Closed from the View menu (a switch).
+    common::open_menu(&mut h, &["View"]);
+    h.get_by_role_and_label(Role::CheckBox, "Cost of accuracy").click();
     h.run_steps(2);
     assert!(h.state().cost.running.is_none(), "closing cancels");
 }
@@ -546,7 +551,7 @@ fn the_heat_map_shows_beside_the_shaded_view() {
 #[test]
 fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
     let mut h = harness();
-    h.get_by_label("Presets").click();
+    common::open_menu(&mut h, &["Scene"]);
     h.run_steps(2);
     h.get_by_label("Phong demo").click();
     h.run_steps(2);
@@ -583,7 +588,7 @@ fn the_demos_departures_are_switches_with_the_corrected_picture_beside() {
 #[test]
 fn the_presets_menu_lists_every_shipped_scene_grouped() {
     let mut h = harness();
-    h.get_by_label("Presets").click();
+    common::open_menu(&mut h, &["Scene"]);
     h.run_steps(2);
     for group in ["The worksheet", "The Phong demo", "More scenes"] {
         h.get_by_label(group);
@@ -640,7 +645,7 @@ fn an_obj_mesh_opens_from_the_path_field_and_a_bad_one_is_refused_with_its_line(
     let mut h = harness();
     let scene_before = h.state().doc.scene.clone();
     set_file_path(&mut h, &good);
-    h.get_by_label("Open").click();
+    common::menu_item(&mut h, &["File"], "Open");
     h.run_steps(2);
     assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Obj, "{:?}", h.state().message);
     assert_eq!(h.state().doc.scene, scene_before, "the scene stays; the view shows the mesh");
@@ -653,7 +658,7 @@ fn an_obj_mesh_opens_from_the_path_field_and_a_bad_one_is_refused_with_its_line(
     h.get_by_label_contains("Your mesh Gouraud");
     let view_before = h.state().doc.view.clone();
     set_file_path(&mut h, &bad);
-    h.get_by_label("Open").click();
+    common::menu_item(&mut h, &["File"], "Open");
     h.run_steps(2);
     assert!(
         matches!(&h.state().message, Some(Message::Refused(m)) if m.contains("line 4") && m.contains("out of range")),
@@ -700,7 +705,7 @@ fn view_options_open_with_a_click_and_keep_the_picture_on_screen() {
 #[test]
 fn a_new_spotlight_aims_at_the_object_so_the_demo_stays_lit() {
     let mut h = harness();
-    h.get_by_label("Presets").click();
+    common::open_menu(&mut h, &["Scene"]);
     h.run_steps(2);
     h.get_by_label("Phong demo").click();
     h.run_steps(2);
@@ -722,7 +727,7 @@ fn a_new_spotlight_aims_at_the_object_so_the_demo_stays_lit() {
 #[test]
 fn the_demos_switches_stay_where_they_are_when_one_is_clicked() {
     let mut h = harness();
-    h.get_by_label("Presets").click();
+    common::open_menu(&mut h, &["Scene"]);
     h.run_steps(2);
     h.get_by_label("Phong demo").click();
     h.run_steps(3);
@@ -779,6 +784,7 @@ fn ctrl_c_in_a_field_copies_its_text() {
 fn ctrl_s_and_ctrl_o_use_the_path_just_typed() {
     let mut h = harness();
     let p = temp_dir("typed").join("typed.toml");
+    common::open_menu(&mut h, &["File"]);
     let field = h.get_by_role_and_label(Role::TextInput, "Scene file:");
     field.click();
     h.run_steps(1);
@@ -832,8 +838,7 @@ fn the_in_app_chooser_opens_saves_and_exports_where_no_dialog_opens() {
     let mut h =
         Harness::builder().with_size([1280.0, 720.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
     h.run_steps(2);
-    h.get_by_label("Open…").click();
-    h.run_steps(2);
+    common::menu_item(&mut h, &["File"], "Open…");
     h.get_by_label("Choose a file");
     assert!(h.get_all_by_label("Choose the file here.").count() >= 1, "it says why it is there");
     // The folder's scene files are listed, its subfolders first.
@@ -845,13 +850,12 @@ fn the_in_app_chooser_opens_saves_and_exports_where_no_dialog_opens() {
     let opens: Vec<egui::Rect> = h.get_all_by_label("Open").map(|n| n.rect()).collect();
     h.get_all_by_label("Open").last().unwrap().click();
     h.run_steps(2);
-    assert_eq!(opens.len(), 2, "the row's Open and the chooser's");
+    assert_eq!(opens.len(), 1, "the chooser's (the File menu, with the row's, is closed)");
     assert_eq!(h.state().doc.name, "a spotlight", "{:?}", h.state().message);
     assert!(h.state().chooser.is_none());
     // Save as…: a new name in a temporary folder.
     let dir = temp_dir("chooser");
-    h.get_by_label("Save as…").click();
-    h.run_steps(2);
+    common::menu_item(&mut h, &["File"], "Save as…");
     h.get_by_role_and_label(Role::TextInput, "Folder:").set_text_value_accesskit(&dir.display().to_string());
     h.get_by_role_and_label(Role::TextInput, "File name:").set_text_value_accesskit("mine.toml");
     h.run_steps(1);
@@ -860,8 +864,7 @@ fn the_in_app_chooser_opens_saves_and_exports_where_no_dialog_opens() {
     let saved = std::fs::read_to_string(dir.join("mine.toml")).unwrap();
     assert_eq!(saved, h.state().doc.to_toml().unwrap());
     // Export → the PNG: the chooser again, offering the PNG's name.
-    h.get_by_label("Export").click();
-    h.run_steps(2);
+    common::open_menu(&mut h, &["File", "Export"]);
     h.get_by_label_contains("Shaded view as PNG").click();
     h.run_steps(2);
     h.get_by_role_and_label(Role::TextInput, "Folder:").set_text_value_accesskit(&dir.display().to_string());

@@ -63,14 +63,14 @@ fn ctrl_plus_minus_and_zero_zoom() {
 fn the_light_theme_for_bright_rooms() {
     let mut h = harness_at(1280.0, 720.0);
     assert!(h.ctx.global_style().visuals.dark_mode);
-    h.get_by_label("Light theme").click();
+    common::menu_item(&mut h, &["View"], "Light theme");
     h.run_steps(2);
     assert_eq!(h.state().ui.layout.theme, Theme::Light);
     let v = h.ctx.global_style().visuals.clone();
     assert!(!v.dark_mode);
     assert_eq!(v.panel_fill, egui::Color32::WHITE);
     assert_eq!(v.widgets.noninteractive.fg_stroke.color, egui::Color32::BLACK);
-    h.get_by_label("Dark theme").click();
+    common::menu_item(&mut h, &["View"], "Dark theme");
     h.run_steps(2);
     assert!(h.ctx.global_style().visuals.dark_mode);
 }
@@ -202,7 +202,7 @@ fn the_lobe_follows_the_shininess() {
 #[test]
 fn compare_pins_a_and_highlights_the_steps_that_differ() {
     let mut h = harness_at(1440.0, 900.0);
-    h.get_by_label("Compare").click();
+    common::menu_item(&mut h, &["View"], "Compare");
     h.run_steps(2);
     h.get_by_label("Pin the current scene as A again").click();
     h.run_steps(2);
@@ -242,7 +242,7 @@ fn compare_pins_a_and_highlights_the_steps_that_differ() {
 #[test]
 fn compare_shows_how_much_gouraud_and_phong_differ() {
     let mut h = harness_at(1440.0, 900.0);
-    h.get_by_label("Compare").click();
+    common::menu_item(&mut h, &["View"], "Compare");
     h.run_steps(2);
     h.get_by_label("Pin the current scene as A again").click();
     h.run_steps(2);
@@ -300,7 +300,7 @@ fn screenshots() {
     h.render().unwrap().save(dir.join("presentation.png")).unwrap();
 
     let mut h = harness_at(1280.0, 720.0);
-    h.get_by_label("Compare").click();
+    common::menu_item(&mut h, &["View"], "Compare");
     h.run_steps(2);
     h.get_by_label("Pin the current scene as A again").click();
     h.run_steps(2);
@@ -313,7 +313,7 @@ fn screenshots() {
 #[test]
 fn a_new_exercise_is_generated_shown_and_quizzed() {
     let mut h = harness_at(1440.0, 900.0);
-    h.get_by_label("Quiz").click();
+    common::menu_item(&mut h, &["View"], "Quiz");
     h.run_steps(2);
     let before = h.state().doc.clone();
     h.get_by_label("New exercise").click();
@@ -331,7 +331,7 @@ fn a_new_exercise_is_generated_shown_and_quizzed() {
 #[test]
 fn the_shader_window_shows_the_program_and_what_an_effect_adds() {
     let mut h = harness_at(1440.0, 900.0);
-    h.get_by_label("Shader").click();
+    common::menu_item(&mut h, &["View"], "Shader");
     h.run_steps(2);
     h.get_by_label_contains("vec3 L0 = toL0 / d0;");
     assert!(h.query_by_label_contains("in_cone0").is_none(), "no spotlight, no cone test");

@@ -1,5 +1,5 @@
-//! The explorer at projector sizes, driven headless: at 1024×768, 1280×720, 1440×900 and
-//! 1920×1080, in the normal layout and in presentation mode, every labelled widget lies
+//! The explorer at projector sizes, driven headless: at 1024×600 (a netbook, a small
+//! projector), 1024×768, 1280×720, 1440×900 and 1920×1080, in the normal layout and in presentation mode, every labelled widget lies
 //! inside the window (widgets in the side panels may lie below it: those panels scroll),
 //! no two labelled widgets overlap, and the shaded view keeps a floor of the window's
 //! height (the sizes a class needs, per mode and window size, are `tests/ui_pictures.rs`'s).
@@ -10,7 +10,9 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 use phonglab::app::{AppState, app_ui};
 
-const SIZES: [(f32, f32); 4] = [(1024.0, 768.0), (1280.0, 720.0), (1440.0, 900.0), (1920.0, 1080.0)];
+mod common;
+
+const SIZES: [(f32, f32); 5] = [(1024.0, 600.0), (1024.0, 768.0), (1280.0, 720.0), (1440.0, 900.0), (1920.0, 1080.0)];
 
 fn harness_at(w: f32, h: f32, presenting: bool) -> Harness<'static, AppState> {
     let mut state = AppState::worksheet();
@@ -113,7 +115,15 @@ fn problems(h: &Harness<'static, AppState>, w: f32, height: f32) -> Vec<String> 
         for b in &visible[i + 1..] {
             // A widget and its own caption (a combo box's label covers the box) are one.
             let caption = a.label == b.label && (a.role == Role::Label || b.role == Role::Label);
-            if caption || a.ancestors.contains(&b.id) || b.ancestors.contains(&a.id) {
+            // A line written on a picture (what its faded arrows mean) lies inside it whole.
+            let on_picture =
+                |p: &Widget, q: &Widget| p.role == Role::Image && q.role == Role::Label && p.rect.contains_rect(q.rect);
+            if caption
+                || on_picture(a, b)
+                || on_picture(b, a)
+                || a.ancestors.contains(&b.id)
+                || b.ancestors.contains(&a.id)
+            {
                 continue;
             }
             let o = a.rect.intersect(b.rect);
@@ -129,10 +139,21 @@ fn problems(h: &Harness<'static, AppState>, w: f32, height: f32) -> Vec<String> 
     // so the picture alone no longer takes 40 %: 22 % is the floor in the tightest case (a
     // 1024x768 normal window, both side panels open); two pictures (the demo's corrected
     // one beside its own) in that window's 360-point centre get 13 % each.
-    let share = if ws.iter().any(|x| x.role == Role::Image && x.label.starts_with("Corrected")) { 0.13 } else { 0.22 };
+    // From 1280x720 up, each picture is at least 240 points, two of them included (the
+    // centre layout's floor). At 1024 points wide, with both side panels open, two
+    // pictures share a 460-point centre with the plot: 110 points each at least (1024x600
+    // gives 116), one picture 22 % of the height.
+    let corrected = ws.iter().any(|x| x.role == Role::Image && x.label.starts_with("Corrected"));
+    let least = if w >= 1280.0 {
+        240.0
+    } else if corrected {
+        110.0
+    } else {
+        0.22 * height
+    };
     match ws.iter().find(|x| x.role == Role::Image && x.label.contains("ms per frame")) {
-        Some(img) if img.rect.height() >= share * height => {}
-        Some(img) => out.push(format!("the shaded view is {} high, under {share} of {height}", img.rect.height())),
+        Some(img) if img.rect.height() >= least => {}
+        Some(img) => out.push(format!("the shaded view is {} high, under {least}", img.rect.height())),
         None => out.push("no shaded view".into()),
     }
     out
@@ -165,7 +186,7 @@ fn set_up(w: f32, h: f32, sc: Scenario) -> Harness<'static, AppState> {
             assert!(harness.state().message.is_some(), "picked a vertex");
         }
         Scenario::Compare => {
-            harness.get_by_label("Compare").click();
+            common::menu_item(&mut harness, &["View"], "Compare");
             harness.run_steps(2);
             harness.get_by_label("Pin the current scene as A again").click();
             harness.run_steps(2);

@@ -134,7 +134,8 @@ fn ctrl_z_undoes_and_the_buttons_say_what() {
     h.run_steps(2);
     assert!(!h.state().doc.scene.light_model.local_viewer);
     assert_eq!(h.state().history.undo_label(), Some("shininess 25.6 ➡ 100"));
-    // The Undo button says what it undoes.
+    // The Undo button (in the File menu) says what it undoes.
+    common::open_menu(&mut h, &["File"]);
     h.get_by_label("⟲ Undo").hover();
     // Tooltips wait a moment before they show.
     h.run_steps(60);
@@ -176,6 +177,7 @@ fn ctrl_s_saves_from_the_path_field_and_letters_there_are_text() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("from-the-field.toml");
     let _ = std::fs::remove_file(&path);
+    common::open_menu(&mut h, &["File"]);
     let field = h.get_by_role_and_label(Role::TextInput, "Scene file:");
     field.click();
     h.run_steps(1);
@@ -199,7 +201,7 @@ fn ctrl_s_saves_from_the_path_field_and_letters_there_are_text() {
 #[test]
 fn in_the_quiz_digits_and_letters_fire_no_shortcut() {
     let mut h = harness();
-    h.get_by_label("Quiz").click();
+    common::menu_item(&mut h, &["View"], "Quiz");
     h.run_steps(3);
     let shading = h.state().doc.view.shading;
     let viewer = h.state().doc.scene.light_model.local_viewer;
@@ -244,7 +246,7 @@ fn the_quiz_hides_the_answers_unless_the_teacher_shows_them() {
     let colour = "[0.059587089  0.035759287  0.015155245  1]";
     assert_eq!(h.get_all_by_label(colour).count(), 2);
     let with_angles = labels(&h);
-    h.get_by_label("Quiz").click();
+    common::menu_item(&mut h, &["View"], "Quiz");
     h.run_steps(3);
     assert!(h.query_by_label(colour).is_none(), "the vertex colour (I) is hidden");
     h.get_by_label_contains("Hidden while the quiz is open");
@@ -260,7 +262,7 @@ fn the_quiz_hides_the_answers_unless_the_teacher_shows_them() {
 #[test]
 fn the_quiz_marks_say_which_check_they_passed_and_no_field_moves() {
     let mut h = quiz_harness();
-    h.get_by_label("Quiz").click();
+    common::menu_item(&mut h, &["View"], "Quiz");
     h.run_steps(3);
     // The tolerance, in readable type.
     h.get_by_label_contains("Right: within 0.01 % of the value (or 1e-6 near 0)");

@@ -64,3 +64,33 @@ impl egui::DroppedFile for Dropped {
         std::fs::read(&self.0).map_err(|e| e.to_string())
     }
 }
+
+/// The widgets a user clicks named `label` (not a text or a window's title that reads the
+/// same).
+fn clickable<'h>(h: &'h Harness<'static, AppState>, label: &'h str) -> Option<egui_kittest::Node<'h>> {
+    use egui_kittest::kittest::NodeT;
+    h.query_all_by_label(label)
+        .rfind(|n| !matches!(n.accesskit_node().role(), Role::Label | Role::Window | Role::TitleBar))
+}
+
+/// Opens the menus named in `path` one inside the next (`["File", "Export"]`), as a user
+/// clicks through them, and leaves the last one open.
+pub fn open_menu(h: &mut Harness<'static, AppState>, path: &[&str]) {
+    for m in path {
+        h.get_all_by_label(m).last().unwrap_or_else(|| panic!("no menu {m:?}")).click();
+        h.run_steps(2);
+    }
+}
+
+/// Clicks `item` in the menu reached through `path` (opened unless `item` is already on
+/// screen, see [`open_menu`]), then closes whatever menu is still open (Escape), as a user
+/// does after a switch in the View menu.
+pub fn menu_item(h: &mut Harness<'static, AppState>, path: &[&str], item: &str) {
+    if clickable(h, item).is_none() {
+        open_menu(h, path);
+    }
+    clickable(h, item).unwrap_or_else(|| panic!("no {item:?} in {path:?}")).click();
+    h.run_steps(2);
+    h.key_press(egui::Key::Escape);
+    h.run_steps(2);
+}

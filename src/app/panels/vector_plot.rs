@@ -174,6 +174,9 @@ pub fn legend_entry_ui(ui: &mut Ui, sample: Sample, symbol: &str, what: &str, co
 
 /// The legend, above the diagram: each symbol's line (dashed where the diagram dashes it),
 /// letter and meaning.
+/// The legend's column when it stands beside the diagram (points).
+pub const LEGEND_COLUMN: f32 = 170.0;
+
 fn legend_ui(ui: &mut Ui, entries: &[(&str, &str, Color32, bool)]) {
     ui.horizontal_wrapped(|ui| {
         ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
@@ -223,8 +226,22 @@ pub fn vector_plot_ui(
     specular: SpecularModel,
     show_angles: bool,
 ) -> PlotGeometry {
-    legend_ui(ui, &legend(eval, specular));
-    let (outer, side) = plot_area_ui(ui, orbit);
+    let entries = legend(eval, specular);
+    // A part wider than high by a legend's column has the legend beside the diagram (a
+    // diagram below two pictures), otherwise above it.
+    let (outer, side) = if ui.available_width() >= ui.available_height() + LEGEND_COLUMN {
+        ui.horizontal_top(|ui| {
+            ui.vertical(|ui| {
+                ui.set_width(LEGEND_COLUMN - ui.spacing().item_spacing.x);
+                legend_ui(ui, &entries);
+            });
+            plot_area_ui(ui, orbit)
+        })
+        .inner
+    } else {
+        legend_ui(ui, &entries);
+        plot_area_ui(ui, orbit)
+    };
     let rect = Rect::from_center_size(outer.center(), Vec2::splat(side));
     let bg = ui.visuals().panel_fill;
     let ink = |c: Color32| palette::ink_on(c, bg);

@@ -15,15 +15,17 @@ use crate::app::panels::{compare, lobe, result, shaded, vector_plot};
 fn chrome(ui: &Ui, state: &AppState) -> centre_layout::Chrome {
     let row = ui.spacing().interact_size.y + ui.spacing().item_spacing.y;
     let small = ui.text_style_height(&egui::TextStyle::Small) + ui.spacing().item_spacing.y;
-    // The toolbar's rows as they wrap in a part of the centre (object and shading; then the
-    // switches and View options in the normal window): counted from the frame's own sizes,
-    // never from the last frame's, so the split cannot chase itself from frame to frame.
-    let rows = if state.ui.layout.presenting { 2.0 } else { 3.0 };
+    // The toolbar's rows as they wrap in a part of the centre (the switches and View
+    // options in the normal window; presenting, none: the object and the shading are the
+    // top bar's): counted from the frame's own sizes, never from the last frame's, so the
+    // split cannot chase itself from frame to frame.
+    let rows = if state.ui.layout.presenting { 0.0 } else { 2.0 };
     let body = ui.text_style_height(&egui::TextStyle::Body);
     let legend = body + ui.spacing().item_spacing.y;
     centre_layout::Chrome {
-        picture: rows * row + 2.0 * small + 8.0,
+        picture: rows * row + small + 8.0,
         plot: 2.0 * row + legend + 8.0,
+        plot_wide: row + 8.0,
         min_part: 10.5 * body,
     }
 }

@@ -3,11 +3,14 @@
 //!
 //! Both want to be square and as large as they can be. Given the area, [`split`] tries both
 //! arrangements, side by side and stacked, and keeps the one whose smaller square is the
-//! larger (the plot weighted a little less than the picture). The divider between the two
+//! larger (the plot weighted a little less than the picture), among those that give each
+//! picture [`PICTURE_FLOOR`] where any does. The divider between the two
 //! can be dragged; its place is a fraction of the area, kept per arrangement across
 //! restarts. Nothing here depends on the frame: the first frame is laid out as every other.
 
 use egui::{Rect, pos2, vec2};
+
+use crate::app::panels::vector_plot::LEGEND_COLUMN;
 use serde::{Deserialize, Serialize};
 
 /// Where the shaded view's toolbar and caption, and the plot's buttons and legend, go:
@@ -18,6 +21,9 @@ pub struct Chrome {
     pub picture: f32,
     /// Above the plot: its view buttons and legend.
     pub plot: f32,
+    /// Above the plot when its legend stands beside it (a part wider than high by
+    /// [`crate::app::panels::vector_plot::LEGEND_COLUMN`]): its view buttons.
+    pub plot_wide: f32,
     /// The least width (side by side) or height (stacked) of each part, so that its widest
     /// button fits ("Vectors at the vertex", the shaded view's toolbar).
     pub min_part: f32,
@@ -84,7 +90,10 @@ fn sides(area: Rect, arrangement: Arrangement, fraction: f32, pictures: usize, c
         Arrangement::Stacked => {
             let ph = (h - DIVIDER) * fraction;
             let picture = ((w - 8.0 * (n - 1.0)) / n).min(ph - chrome.picture);
-            let plot = w.min((h - DIVIDER) * (1.0 - fraction) - chrome.plot);
+            let rest = (h - DIVIDER) * (1.0 - fraction);
+            // The legend beside the diagram where the part is wide enough, else above.
+            let legend_beside = rest - chrome.plot_wide;
+            let plot = if w >= legend_beside + LEGEND_COLUMN { legend_beside } else { w.min(rest - chrome.plot) };
             (picture.max(0.0), plot.max(0.0))
         }
     }
@@ -106,12 +115,28 @@ fn allowed(area: Rect, arrangement: Arrangement, min_part: f32) -> (f32, f32) {
     (lo, hi)
 }
 
-/// The best fraction for `arrangement`: the one whose smaller square is largest.
-fn best_fraction(area: Rect, arrangement: Arrangement, pictures: usize, chrome: Chrome) -> f32 {
+/// The least side of a picture wherever the area allows it, before the plot's share is
+/// weighed: a picture read from the back of a room (the Phong demo's two, its own and the
+/// corrected one, were 125 points each at 1280x720 with both side panels open).
+pub const PICTURE_FLOOR: f32 = 240.0;
+
+/// The fractions `arrangement` may use (see [`allowed`]), only those that give each
+/// picture [`PICTURE_FLOOR`] when `floor` holds.
+fn fractions(area: Rect, arrangement: Arrangement, pictures: usize, chrome: Chrome, floor: bool) -> Vec<f32> {
     let (lo, hi) = allowed(area, arrangement, chrome.min_part);
     (20..=85)
         .map(|k| k as f32 / 100.0)
         .filter(|f| *f >= lo && *f <= hi)
+        .filter(|f| !floor || sides(area, arrangement, *f, pictures, chrome).0 >= PICTURE_FLOOR)
+        .collect()
+}
+
+/// The best fraction for `arrangement`: the one whose smaller square is largest (among
+/// those that keep the pictures at the floor, when `floor`).
+fn best_fraction(area: Rect, arrangement: Arrangement, pictures: usize, chrome: Chrome, floor: bool) -> f32 {
+    let (lo, hi) = allowed(area, arrangement, chrome.min_part);
+    fractions(area, arrangement, pictures, chrome, floor)
+        .into_iter()
         .max_by(|a, b| {
             let (sa, sb) = (
                 score(sides(area, arrangement, *a, pictures, chrome), pictures),
@@ -122,14 +147,20 @@ fn best_fraction(area: Rect, arrangement: Arrangement, pictures: usize, chrome: 
         .unwrap_or((lo + hi) * 0.5)
 }
 
-/// Shares `area` between `pictures` pictures and the plot (see the module's rule), with
+/// Shares `area` between `pictures` pictures and the plot (see the module's rule, and
+/// [`PICTURE_FLOOR`]), with
 /// the divider where the user left it in the arrangement chosen.
 pub fn split(area: Rect, pictures: usize, chrome: Chrome, dividers: Dividers) -> Split {
+    // Where some arrangement keeps the pictures at the floor, only such ones compete.
+    let floor = [Arrangement::Beside, Arrangement::Stacked]
+        .into_iter()
+        .any(|a| !fractions(area, a, pictures, chrome, true).is_empty());
     let candidates = [Arrangement::Beside, Arrangement::Stacked].map(|a| {
-        let f = best_fraction(area, a, pictures, chrome);
+        let f = best_fraction(area, a, pictures, chrome, floor);
         let (lo, hi) = allowed(area, a, chrome.min_part);
-        // An arrangement whose parts cannot both have their least size counts for nothing.
-        let fits = lo <= hi;
+        // An arrangement whose parts cannot both have their least size (or, with the
+        // floor, its pictures theirs) counts for nothing.
+        let fits = lo <= hi && !(floor && fractions(area, a, pictures, chrome, true).is_empty());
         (a, f, if fits { score(sides(area, a, f, pictures, chrome), pictures) } else { -1.0 })
     });
     let (arrangement, best, _) = if candidates[1].2 > candidates[0].2 * 1.02 { candidates[1] } else { candidates[0] };
@@ -179,7 +210,7 @@ pub fn area(w: f32, h: f32) -> Rect {
 mod tests {
     use super::*;
 
-    const CHROME: Chrome = Chrome { picture: 60.0, plot: 70.0, min_part: 160.0 };
+    const CHROME: Chrome = Chrome { picture: 60.0, plot: 70.0, plot_wide: 36.0, min_part: 160.0 };
 
     #[test]
     fn a_wide_area_goes_side_by_side_and_a_tall_one_stacks() {
@@ -205,6 +236,20 @@ mod tests {
         // Two pictures share theirs.
         let s = split(area(880.0, 600.0), 2, CHROME, Dividers::default());
         assert!(s.sides.0 > 250.0 && s.sides.1 > 200.0, "{s:?}");
+    }
+
+    #[test]
+    fn two_pictures_keep_the_floor_where_the_area_allows_it() {
+        // 1280x720, both side panels open, the demo corrected: the centre is about 600 x 540.
+        let s = split(area(600.0, 540.0), 2, CHROME, Dividers::default());
+        assert!(s.sides.0 >= PICTURE_FLOOR, "{s:?}");
+        assert_eq!(s.arrangement, Arrangement::Stacked);
+        // Without the floor's constraint this area put them beside the plot, smaller.
+        let beside = best_fraction(area(600.0, 540.0), Arrangement::Beside, 2, CHROME, false);
+        assert!(sides(area(600.0, 540.0), Arrangement::Beside, beside, 2, CHROME).0 < PICTURE_FLOOR);
+        // Where no arrangement can, the best one is used as before.
+        let small = split(area(300.0, 300.0), 2, CHROME, Dividers::default());
+        assert!(small.sides.0 > 0.0 && small.sides.0 < PICTURE_FLOOR, "{small:?}");
     }
 
     #[test]

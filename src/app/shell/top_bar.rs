@@ -1,13 +1,19 @@
-//! The top bar: presenting, the panels shown, the theme, reset, undo and redo, the presets,
-//! Compare, the quiz, the shader, the precision and power, the cost study, the scene file's
-//! row, Export, the language and help.
+//! The top bar: what a first-time user needs, and the rest one click away. The scene (its
+//! menu of shipped scenes, and its name), the object and the shading, then the File menu
+//! (the scene file, export, undo and redo) and the View menu (the panels and windows, the
+//! theme, the arithmetic), presenting, the language and help.
 
 use egui::Ui;
+use egui::containers::menu::{MenuButton, MenuConfig};
 use phonglab_core::t;
+use phonglab_core::{ObjectKind, Shading};
 
 use super::state::{AppState, Precision};
 use super::{files, layout};
 use crate::app::panels::export;
+
+/// The longest scene name shown whole beside the Scene menu (the rest in its hover).
+const NAME_CHARS: usize = 32;
 
 /// The top bar's row (or rows, when it wraps).
 pub fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
@@ -16,74 +22,143 @@ pub fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
     ui.horizontal_wrapped(|ui| {
         ui.strong("phonglab");
         ui.separator();
+        ui.menu_button(t!("scene-menu"), |ui| scene_menu_ui(ui, state)).response.on_hover_text(t!("scene-menu-hover"));
+        scene_name_ui(ui, &state.doc.name);
+        ui.separator();
+        object_and_shading_ui(ui, state);
+        ui.separator();
+        // Menus that hold fields and switches stay open while they are used.
+        let stay = MenuConfig::new().close_behavior(egui::PopupCloseBehavior::CloseOnClickOutside);
+        MenuButton::new(t!("file-menu"))
+            .config(stay.clone())
+            .ui(ui, |ui| file_menu_ui(ui, state))
+            .0
+            .on_hover_text(t!("file-menu-hover"));
+        MenuButton::new(t!("view-menu"))
+            .config(stay)
+            .ui(ui, |ui| view_menu_ui(ui, state))
+            .0
+            .on_hover_text(t!("view-menu-hover"));
+        ui.separator();
         let layout = &mut state.ui.layout;
         let present = if layout.presenting { t!("leave-presenting") } else { t!("present") };
         if ui.selectable_label(layout.presenting, present).on_hover_text(t!("present-hover")).clicked() {
             layout.presenting = !layout.presenting;
         }
         if layout.presenting {
+            // In front of a class the controls are a drawer, opened from here in one click.
             ui.toggle_value(&mut layout.drawer_open, t!("controls-drawer")).on_hover_text(t!("controls-drawer-hover"));
-        } else {
-            ui.toggle_value(&mut layout.controls_open, t!("controls"));
-            ui.toggle_value(&mut layout.calculation_open, t!("calculation"));
         }
-        if ui.button(layout.theme.toggled().label()).on_hover_text(t!("theme-hover")).clicked() {
-            layout.theme = layout.theme.toggled();
-        }
-        ui.separator();
-        if ui.button(t!("reset-worksheet")).on_hover_text("Ctrl+R").clicked() {
-            state.reset_to_worksheet();
-        }
-        undo_buttons_ui(ui, state);
-        ui.menu_button(t!("presets"), |ui| presets_menu_ui(ui, state));
-        let was_open = state.compare.open;
-        ui.toggle_value(&mut state.compare.open, t!("compare")).on_hover_text(t!("compare-hover"));
-        if state.compare.open && !was_open && state.compare.a.is_none() {
-            // Opened: A is the scene as it is, so the first change already compares.
-            state.compare.pin(&state.doc, state.settings.precision, state.settings.pow);
-        }
-        if ui.toggle_value(&mut state.quiz.open, t!("quiz")).on_hover_text(t!("quiz-hover")).clicked()
-            && state.quiz.open
-            && state.quiz.doc.is_none()
-        {
-            state.quiz.start(state.doc.clone());
-        }
-        ui.toggle_value(&mut state.shader.open, t!("shader")).on_hover_text(t!("shader-hover"));
-        ui.separator();
-        if !state.ui.layout.presenting {
-            ui.label(t!("precision"));
-        }
-        ui.radio_value(&mut state.settings.precision, Precision::F32, "f32").on_hover_text(t!("f32-hover"));
-        ui.radio_value(&mut state.settings.precision, Precision::F64, "f64").on_hover_text(t!("f64-hover"));
-        if state.ui.layout.presenting {
-            return;
-        }
-        egui::ComboBox::from_label("pow").selected_text(state.settings.pow.label()).show_ui(ui, |ui| {
-            for p in phonglab_core::PowFn::ALL {
-                ui.selectable_value(&mut state.settings.pow, p, p.label());
-            }
-        });
-        ui.separator();
-        ui.toggle_value(&mut state.cost.open, t!("cost-of-accuracy")).on_hover_text(t!("cost-hover"));
-        ui.separator();
-        if let Some(asked) = crate::app::panels::files::file_ui(ui, &mut state.files, &state.doc, &mut state.message) {
-            files::carry_out(state, asked);
-        }
-        export::export_menu_ui(
-            ui,
-            &mut state.export,
-            &state.doc,
-            state.settings.pow,
-            &mut state.files,
-            &mut state.chooser,
-            &mut state.message,
-        );
-        ui.separator();
         language_menu_ui(ui, &mut state.ui.layout);
-        if ui.button(t!("help-button")).clicked() {
+        if ui.selectable_label(state.ui.show_help, t!("help-button")).clicked() {
             state.ui.show_help = !state.ui.show_help;
         }
-        ui.label(egui::RichText::new(phonglab_core::library::localised_name(&state.doc.name)).weak());
+    });
+}
+
+/// The scene's name, localised, cut to [`NAME_CHARS`] with the whole in its hover.
+fn scene_name_ui(ui: &mut Ui, name: &str) {
+    let name = phonglab_core::library::localised_name(name);
+    let shown: String = if name.chars().count() > NAME_CHARS {
+        name.chars().take(NAME_CHARS - 1).chain(std::iter::once('…')).collect()
+    } else {
+        name.to_string()
+    };
+    ui.label(egui::RichText::new(shown).weak()).on_hover_text(name.to_string());
+}
+
+/// The object and the shading, each a row of choices (with its key in the hover): the
+/// choices a class switches most, one click each.
+fn object_and_shading_ui(ui: &mut Ui, state: &mut AppState) {
+    let mut view = state.doc.view.clone();
+    for (k, o) in [("s", ObjectKind::Sphere), ("t", ObjectKind::Teapot), ("c", ObjectKind::Cylinder)] {
+        ui.selectable_value(&mut view.object, o, o.label()).on_hover_text(t!("key-hint", key = k));
+    }
+    if let Some(path) = &view.obj {
+        let tip = t!("mesh-tip", path = path);
+        ui.selectable_value(&mut view.object, ObjectKind::Obj, ObjectKind::Obj.label()).on_hover_text(tip);
+    }
+    ui.separator();
+    for (k, s) in [("1", Shading::Gouraud), ("2", Shading::Phong), ("3", Shading::Flat)] {
+        ui.selectable_value(&mut view.shading, s, s.label()).on_hover_text(t!("key-hint", key = k));
+    }
+    if view != state.doc.view {
+        let mut c = state.doc.clone();
+        c.view = view;
+        state.apply(c);
+    }
+}
+
+/// The Scene menu: back to the worksheet, then every shipped scene.
+fn scene_menu_ui(ui: &mut Ui, state: &mut AppState) {
+    if ui.button(t!("reset-worksheet")).on_hover_text("Ctrl+R").clicked() {
+        state.reset_to_worksheet();
+        ui.close();
+    }
+    ui.separator();
+    presets_menu_ui(ui, state);
+}
+
+/// The File menu: the scene file's row, Export, Undo and Redo.
+fn file_menu_ui(ui: &mut Ui, state: &mut AppState) {
+    ui.horizontal(|ui| {
+        if let Some(asked) = crate::app::panels::files::file_ui(ui, &mut state.files, &state.doc, &mut state.message) {
+            files::carry_out(state, asked);
+            ui.close();
+        }
+    });
+    export::export_menu_ui(
+        ui,
+        &mut state.export,
+        &state.doc,
+        state.settings.pow,
+        &mut state.files,
+        &mut state.chooser,
+        &mut state.message,
+    );
+    ui.separator();
+    ui.horizontal(|ui| undo_buttons_ui(ui, state));
+}
+
+/// The View menu: the panels and windows, the theme, the precision and the power.
+fn view_menu_ui(ui: &mut Ui, state: &mut AppState) {
+    ui.label(egui::RichText::new(t!("panels-heading")).small().strong());
+    let layout = &mut state.ui.layout;
+    if !layout.presenting {
+        // (Presenting, the controls drawer is the top bar's.)
+        ui.checkbox(&mut layout.controls_open, t!("controls"));
+        ui.checkbox(&mut layout.calculation_open, t!("calculation"));
+    }
+    let was_open = state.compare.open;
+    ui.checkbox(&mut state.compare.open, t!("compare")).on_hover_text(t!("compare-hover"));
+    if state.compare.open && !was_open && state.compare.a.is_none() {
+        // Opened: A is the scene as it is, so the first change already compares.
+        state.compare.pin(&state.doc, state.settings.precision, state.settings.pow);
+    }
+    if ui.checkbox(&mut state.quiz.open, t!("quiz")).on_hover_text(t!("quiz-hover")).clicked()
+        && state.quiz.open
+        && state.quiz.doc.is_none()
+    {
+        state.quiz.start(state.doc.clone());
+    }
+    ui.checkbox(&mut state.shader.open, t!("shader")).on_hover_text(t!("shader-hover"));
+    ui.checkbox(&mut state.cost.open, t!("cost-of-accuracy")).on_hover_text(t!("cost-hover"));
+    ui.separator();
+    let layout = &mut state.ui.layout;
+    if ui.button(layout.theme.toggled().label()).on_hover_text(t!("theme-hover")).clicked() {
+        layout.theme = layout.theme.toggled();
+    }
+    ui.separator();
+    ui.label(egui::RichText::new(t!("arithmetic-heading")).small().strong());
+    ui.horizontal(|ui| {
+        ui.label(t!("precision"));
+        ui.radio_value(&mut state.settings.precision, Precision::F32, "f32").on_hover_text(t!("f32-hover"));
+        ui.radio_value(&mut state.settings.precision, Precision::F64, "f64").on_hover_text(t!("f64-hover"));
+    });
+    ui.menu_button(format!("pow: {}", state.settings.pow.label()), |ui| {
+        for p in phonglab_core::PowFn::ALL {
+            ui.radio_value(&mut state.settings.pow, p, p.label());
+        }
     });
 }
 

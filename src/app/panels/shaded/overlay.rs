@@ -30,8 +30,9 @@ pub(super) fn interaction_ui(
         clip_from_object: state.edit.doc.view.clip_from_object(),
         object_from_eye: scene.eye_from_object().inverse(),
     };
-    let arrows = vectors_on_object_ui(ui, overlay.rect, state.edit.doc, eval);
-    let dragged_light = lights_ui(ui, &overlay, state, scene);
+    // The lights first: the arrows' letters are then placed clear of their marks and names.
+    let (dragged_light, light_marks) = lights_ui(ui, &overlay, state, scene);
+    let arrows = vectors_on_object_ui(ui, overlay.rect, state.edit.doc, eval, &light_marks);
 
     let mut cam = camera;
     if resp.dragged() && !dragged_light && state.edit.doc.view.framing == Framing::Orbit {
@@ -166,7 +167,13 @@ pub fn vector_arrows(doc: &Document, eval: &Evaluated, rect: egui::Rect) -> Vec<
 /// points) as ⊙ or ⊗; each letter placed clear of the others and of the arrows
 /// ([`crate::app::widgets::label_placement`]); a line under the picture says what the
 /// faded ones are. Returns the arrows drawn.
-fn vectors_on_object_ui(ui: &mut Ui, rect: egui::Rect, doc: &Document, eval: &Evaluated) -> Vec<ArrowOnObject> {
+fn vectors_on_object_ui(
+    ui: &mut Ui,
+    rect: egui::Rect,
+    doc: &Document,
+    eval: &Evaluated,
+    keep_clear: &[egui::Rect],
+) -> Vec<ArrowOnObject> {
     use crate::app::widgets::arrows::{draw_arrow, end_on_marker, paint_labels};
     let arrows = vector_arrows(doc, eval, rect);
     let Some(first) = arrows.first() else { return arrows };
@@ -174,13 +181,27 @@ fn vectors_on_object_ui(ui: &mut Ui, rect: egui::Rect, doc: &Document, eval: &Ev
     let p = ui.painter_at(rect);
     let width = (3.0 / ui.ctx().pixels_per_point()).max(rect.width().min(rect.height()) * 0.006);
     let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Body) * 1.5);
-    let outline = if ui.visuals().dark_mode { Color32::BLACK } else { Color32::WHITE };
-    let mut lines = Vec::new();
+    // Inks against the picture's background, not the window's: in the light theme the
+    // picture stays as dark as its scene says, and pale inks vanished on it.
+    let bg = crate::app::widgets::palette::gl_to_color32(doc.view.background.map(f64::from));
+    let dark_picture = bg.r() as u32 + bg.g() as u32 + bg.b() as u32 <= 3 * 128;
+    let on_picture = |c: Color32| crate::app::widgets::palette::ink_on(c, bg);
+    let outline = if dark_picture { Color32::BLACK } else { Color32::WHITE };
+    // What the letters keep clear of: each light's mark and name (as a thick stroke through
+    // its middle), then the arrows.
+    let mut lines: Vec<crate::app::widgets::label_placement::Segment> = keep_clear
+        .iter()
+        .map(|r| crate::app::widgets::label_placement::Segment {
+            a: r.left_center(),
+            b: r.right_center(),
+            half_width: r.height() * 0.5,
+        })
+        .collect();
     let mut wanted = Vec::new();
     let mut galleys = Vec::new();
     let mut end_on = 0;
     for a in &arrows {
-        let ink = crate::app::widgets::palette::ink(ui, a.colour);
+        let ink = on_picture(a.colour);
         let c = if a.faded() { ink.gamma_multiply(0.5) } else { ink };
         let d = a.to - from;
         let dashed = a.name.starts_with('H') || a.name.starts_with('R');
@@ -204,14 +225,14 @@ fn vectors_on_object_ui(ui: &mut Ui, rect: egui::Rect, doc: &Document, eval: &Ev
         galleys.push(p.layout_no_wrap(a.name.clone(), font.clone(), c));
     }
     paint_labels(&p, wanted, galleys, &lines, rect, Some(outline.gamma_multiply(0.6)));
-    p.circle_filled(from, width * 1.3, crate::app::widgets::palette::ink(ui, crate::app::widgets::palette::N));
+    p.circle_filled(from, width * 1.3, on_picture(crate::app::widgets::palette::N));
     if arrows.iter().any(ArrowOnObject::faded) {
         // A label (read by screen readers and the tests) on a backdrop, at the picture's
         // foot, drawn in a child that takes no room from the panel.
         let strip = egui::Rect::from_min_max(rect.left_bottom() - egui::vec2(0.0, 40.0), rect.right_bottom());
         let mut child = ui.new_child(egui::UiBuilder::new().max_rect(strip.shrink(4.0)).id_salt("arrows faded"));
         child.set_clip_rect(rect);
-        let ink = if ui.visuals().dark_mode { Color32::from_gray(230) } else { Color32::from_gray(20) };
+        let ink = if dark_picture { Color32::from_gray(230) } else { Color32::from_gray(20) };
         egui::Frame::new().fill(outline.gamma_multiply(0.7)).corner_radius(3.0).inner_margin(3.0).show(
             &mut child,
             |ui| {
@@ -224,21 +245,19 @@ fn vectors_on_object_ui(ui: &mut Ui, rect: egui::Rect, doc: &Document, eval: &Ev
 
 /// A light outside the picture: a triangle on the picture's edge pointing towards it, and
 /// its name (saying so when it is behind the camera, where no edge is nearer than another).
-fn light_off_view_ui(ui: &Ui, rect: egui::Rect, towards: egui::Vec2, i: usize, behind: bool) {
+fn light_off_view_ui(ui: &Ui, rect: egui::Rect, towards: egui::Vec2, i: usize, behind: bool) -> egui::Rect {
     let d = if towards.length() > 1e-3 { towards.normalized() } else { egui::vec2(0.0, -1.0) };
     // Where the ray from the centre along `d` leaves the picture, 14 points inside.
     let half = rect.size() * 0.5 - egui::vec2(14.0, 14.0);
     let t = (half.x / d.x.abs().max(1e-6)).min(half.y / d.y.abs().max(1e-6));
     let tip = rect.center() + d * t;
     let side = egui::vec2(-d.y, d.x) * 7.0;
-    let (fill, ink) =
-        (Color32::from_rgb(255, 230, 120), if ui.visuals().dark_mode { Color32::WHITE } else { Color32::BLACK });
+    let fill = Color32::from_rgb(255, 230, 120);
     ui.painter().add(egui::Shape::convex_polygon(
         vec![tip + d * 10.0, tip - d * 4.0 + side, tip - d * 4.0 - side],
         fill,
         egui::Stroke::new(1.5, Color32::BLACK),
     ));
-    let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
     let at = tip - d * 16.0;
     let name = if behind { t!("light-behind", index = i.to_string()) } else { t!("light-name", index = i.to_string()) };
     let align = if d.x > 0.3 {
@@ -248,7 +267,20 @@ fn light_off_view_ui(ui: &Ui, rect: egui::Rect, towards: egui::Vec2, i: usize, b
     } else {
         egui::Align2::CENTER_CENTER
     };
-    ui.painter().text(at, align, name, font, ink);
+    let name = name_on_picture(ui, at, align, name);
+    name.union(egui::Rect::from_center_size(tip, egui::vec2(20.0, 20.0)))
+}
+
+/// A light's name on the picture: light text on a dark backdrop, so that it reads on the
+/// picture's background whatever the window's theme (dark text on the dark picture did
+/// not, in the light theme). Returns where it is.
+fn name_on_picture(ui: &Ui, at: egui::Pos2, align: egui::Align2, name: String) -> egui::Rect {
+    let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
+    let galley = ui.painter().layout_no_wrap(name, font, Color32::WHITE);
+    let rect = align.anchor_size(at, galley.size());
+    ui.painter().rect_filled(rect.expand(2.0), 3.0, Color32::from_black_alpha(170));
+    ui.painter().galley(rect.min, galley, Color32::WHITE);
+    rect.expand(2.0)
 }
 
 /// A spotlight's cone as the view shows it: the rim of the cut-off circle where the cone
@@ -279,9 +311,16 @@ fn spot_cone(
 }
 
 /// Each light as a marker where the view draws it; a marker can be dragged (in the plane
-/// facing the viewer), which moves the light. Returns whether a marker is being dragged.
-fn lights_ui(ui: &mut Ui, o: &Overlay, state: &mut Shaded<'_>, scene: &phonglab_core::Scene) -> bool {
+/// facing the viewer), which moves the light. Returns whether a marker is being dragged,
+/// and where each light's mark and name are (on the picture or at its edge).
+fn lights_ui(
+    ui: &mut Ui,
+    o: &Overlay,
+    state: &mut Shaded<'_>,
+    scene: &phonglab_core::Scene,
+) -> (bool, Vec<egui::Rect>) {
     let mut dragging = false;
+    let mut marks = Vec::new();
     let mut moved = None;
     for (i, l) in state.edit.doc.scene.lights.iter().enumerate() {
         let eye = scene.light_pos_in_eye(l);
@@ -304,7 +343,7 @@ fn lights_ui(ui: &mut Ui, o: &Overlay, state: &mut Shaded<'_>, scene: &phonglab_
                         egui::vec2(e.x as f32, -e.y as f32)
                     }
                 };
-                light_off_view_ui(ui, o.rect, towards, i, seen.is_none());
+                marks.push(light_off_view_ui(ui, o.rect, towards, i, seen.is_none()));
                 continue;
             }
         };
@@ -322,15 +361,13 @@ fn lights_ui(ui: &mut Ui, o: &Overlay, state: &mut Shaded<'_>, scene: &phonglab_
         let r = r.on_hover_text(t!("light-drag", index = i.to_string()));
         let ring = if r.hovered() || r.dragged() { 3.0 } else { 1.5 };
         ui.painter().circle(pos, 7.0, Color32::from_rgb(255, 230, 120), egui::Stroke::new(ring, Color32::BLACK));
-        let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
-        let text = if ui.visuals().dark_mode { Color32::WHITE } else { Color32::BLACK };
-        ui.painter().text(
+        let name = name_on_picture(
+            ui,
             pos + egui::vec2(9.0, -9.0),
             egui::Align2::LEFT_BOTTOM,
             t!("light-name", index = i.to_string()),
-            font,
-            text,
         );
+        marks.push(hit.union(name));
         if r.dragged() {
             dragging = true;
             // The marker follows the pointer (it is small, so grabbing it off-centre
@@ -356,5 +393,5 @@ fn lights_ui(ui: &mut Ui, o: &Overlay, state: &mut Shaded<'_>, scene: &phonglab_
             state.edit.apply(c);
         }
     }
-    dragging
+    (dragging, marks)
 }

@@ -34,9 +34,9 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
     let beside = heat || corrected.is_some();
     // Leave room for the caption line above the image (and the picture beside it).
     let width = if beside { (avail.x - 8.0) / 2.0 } else { avail.x };
-    // Room for the caption above the image (up to three lines when it wraps beside another).
-    let caption_lines = if beside { 3.0 } else { 2.0 };
-    let side = width.min(avail.y - caption_lines * ui.text_style_height(&egui::TextStyle::Small) - 8.0).max(64.0);
+    // Room for the caption's one line above the image (cut to the picture's width, whole in
+    // its hover): a caption that wrapped took the picture's height.
+    let side = width.min(avail.y - ui.text_style_height(&egui::TextStyle::Small) - 8.0).max(64.0);
     let ppp = ui.ctx().pixels_per_point();
     let px = ((side * ppp) as usize).clamp(64, 1024);
     // One texel a screen pixel (no resampling), unless the view is wider than 1024 pixels.
@@ -70,7 +70,7 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
                 .vertical(|ui| {
                     // Captions wrap within the picture's width rather than widen its column.
                     ui.set_max_width(side);
-                    let label = ui.small(caption);
+                    let label = caption_ui(ui, &caption);
                     let picture = picture_ui(ui, &cache.main, main_gpu.take(), size, Sense::click_and_drag())
                         .on_hover_text(t!("picture-hover"))
                         .labelled_by(label.id);
@@ -87,7 +87,7 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
                         .filter(|(d, on)| *on && d.present_in(state.edit.doc))
                         .map(|(d, _)| d.fix_label())
                         .collect();
-                    let label = ui.small(t!("corrected", fixes = fixed.join(", ")));
+                    let label = caption_ui(ui, &t!("corrected", fixes = fixed.join(", ")));
                     let r = picture_ui(ui, &cache.corrected, corrected_gpu.take(), size, Sense::hover())
                         .labelled_by(label.id);
                     second = Some(r.rect);
@@ -99,6 +99,12 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
         })
         .inner;
     Shown { response: resp, second, size, px, scene }
+}
+
+/// A picture's caption: one small line, cut to the width with "…", the whole in its hover.
+fn caption_ui(ui: &mut Ui, text: &str) -> egui::Response {
+    let small = egui::RichText::new(text).small();
+    ui.add(egui::Label::new(small).truncate()).on_hover_text(text)
 }
 
 /// Draws `doc`'s picture for `cache`: on the GPU when the adapter, the renderer choice and

@@ -1,11 +1,11 @@
-//! The shaded view's toolbar: the object and the shading, the switches, the view's options
-//! (the renderer, the tessellation, the pipeline's choices, a mesh file) and the Phong
-//! demo's departures as switches.
+//! The shaded view's toolbar (the object and the shading are the top bar's): the switches,
+//! the view's options (the renderer, the tessellation, the pipeline's choices, a mesh file)
+//! and the Phong demo's departures as switches.
 
 use egui::Ui;
 use phonglab_core::library::DemoDeparture;
 use phonglab_core::t;
-use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, Shading, View};
+use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, View};
 
 use super::cache::{DrawnBy, ShadedCache};
 use super::context::Shaded;
@@ -97,35 +97,22 @@ fn view_options_ui(ui: &mut Ui, view: &mut View) {
     pipeline_ui(ui, view);
 }
 
-/// The view's toolbar: the object and the shading (and, not presenting, the switches and
-/// the view options); applies what changed, and turns the object when it spins.
+/// The view's toolbar: not presenting, the switches and the view options; applies what
+/// changed, and turns the object when it spins.
 /// Returns the mesh file asked for, if one was.
 pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCache) -> Option<std::path::PathBuf> {
     let mut view = state.edit.doc.view.clone();
     let presenting = state.presenting;
     let mut open_obj_requested = None;
-    ui.horizontal_wrapped(|ui| {
-        for (k, o) in [("s", ObjectKind::Sphere), ("t", ObjectKind::Teapot), ("c", ObjectKind::Cylinder)] {
-            ui.selectable_value(&mut view.object, o, o.label()).on_hover_text(t!("key-hint", key = k));
-        }
-        if let Some(path) = &view.obj {
-            let tip = t!("mesh-tip", path = path);
-            ui.selectable_value(&mut view.object, ObjectKind::Obj, ObjectKind::Obj.label()).on_hover_text(tip);
-        }
-        ui.separator();
-        for (k, s) in [("1", Shading::Gouraud), ("2", Shading::Phong), ("3", Shading::Flat)] {
-            ui.selectable_value(&mut view.shading, s, s.label()).on_hover_text(t!("key-hint", key = k));
-        }
-        if presenting {
-            // In front of a class: the object and the shading only (the rest is in the drawer
-            // and on the keys).
-            return;
-        }
-        ui.separator();
-        ui.checkbox(&mut view.auto_rotate, t!("auto-rotate")).on_hover_text(t!("auto-rotate-hover"));
-        ui.checkbox(&mut view.demo_normals, t!("demo-normals")).on_hover_text(t!("demo-normals-hover"));
-        ui.checkbox(&mut state.heat_map.on, t!("heat-map")).on_hover_text(t!("heat-map-hover"));
-    });
+    if !presenting {
+        // The object and the shading are the top bar's; presenting, the switches are in
+        // the drawer and on the keys.
+        ui.horizontal_wrapped(|ui| {
+            ui.checkbox(&mut view.auto_rotate, t!("auto-rotate")).on_hover_text(t!("auto-rotate-hover"));
+            ui.checkbox(&mut view.demo_normals, t!("demo-normals")).on_hover_text(t!("demo-normals-hover"));
+            ui.checkbox(&mut state.heat_map.on, t!("heat-map")).on_hover_text(t!("heat-map-hover"));
+        });
+    }
     if !presenting {
         // Opened, the options scroll within a part of the view's space, so the picture
         // stays on screen (smaller) rather than being pushed below the window.
