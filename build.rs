@@ -1,5 +1,6 @@
-//! Embeds every scene file under `assets/scenes/` in the binary, so the Presets menu lists
-//! them all (grouped by folder) wherever the binary runs.
+//! Embeds every scene file under `assets/scenes/` in the binary, so the Scene menu lists
+//! them all (grouped by folder) wherever the binary runs, and every experiment under
+//! `assets/experiments/` (the "Things to try" window's).
 
 use std::path::{Path, PathBuf};
 
@@ -15,21 +16,28 @@ fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
     }
 }
 
-fn main() {
-    let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").expect("cargo sets it"));
-    let scenes = root.join("assets/scenes");
-    println!("cargo:rerun-if-changed=assets/scenes");
+/// Writes `OUT_DIR/<out>`: the const `name`, every `.toml` under `dir` (relative to the
+/// crate) as (its path under `dir`, its text).
+fn embed(root: &Path, dir: &str, name: &str, out: &str) {
+    let base = root.join(dir);
+    println!("cargo:rerun-if-changed={dir}");
     let mut files = Vec::new();
-    walk(&scenes, &mut files);
+    walk(&base, &mut files);
     files.sort();
-    let mut code = String::from("/// Every scene file under assets/scenes: (path relative to it, its text).\n");
-    code.push_str("pub const SCENE_FILES: &[(&str, &str)] = &[\n");
+    let mut code = format!("/// Every file under {dir}: (path relative to it, its text).\n");
+    code.push_str(&format!("pub const {name}: &[(&str, &str)] = &[\n"));
     for f in &files {
-        let rel = f.strip_prefix(&scenes).expect("under assets/scenes").to_string_lossy().replace('\\', "/");
+        let rel = f.strip_prefix(&base).expect("under the folder").to_string_lossy().replace('\\', "/");
         println!("cargo:rerun-if-changed={}", f.display());
         code.push_str(&format!("    ({rel:?}, include_str!({:?})),\n", f.display().to_string()));
     }
     code.push_str("];\n");
-    let out = PathBuf::from(std::env::var("OUT_DIR").expect("cargo sets it")).join("scene_files.rs");
+    let out = PathBuf::from(std::env::var("OUT_DIR").expect("cargo sets it")).join(out);
     std::fs::write(out, code).expect("OUT_DIR is writable");
+}
+
+fn main() {
+    let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").expect("cargo sets it"));
+    embed(&root, "assets/scenes", "SCENE_FILES", "scene_files.rs");
+    embed(&root, "assets/experiments", "EXPERIMENT_FILES", "experiment_files.rs");
 }

@@ -334,7 +334,7 @@ fn presenting_in_portuguese_no_reveal_button_is_clipped_and_no_row_grows() {
     let mut h =
         Harness::builder().with_size([1920.0, 1080.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
     h.run_steps(2);
-    h.get_by_label("Teste").click();
+    common::menu_item(&mut h, &["Exibir"], "Teste");
     h.run_steps(4);
     let reveals: Vec<egui::Rect> = h.get_all_by_label("Mostrar a resposta").map(|n| n.rect()).collect();
     assert!(reveals.len() >= 4, "{reveals:?}");

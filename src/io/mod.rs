@@ -8,6 +8,7 @@
 pub mod atomic_write;
 pub mod budget;
 pub mod exercise_set;
+pub mod experiments;
 pub mod file_set;
 pub mod image;
 pub mod input_file;

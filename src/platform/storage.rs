@@ -21,6 +21,15 @@ pub fn storage_dir() -> Option<std::path::PathBuf> {
     var("XDG_DATA_HOME").or_else(|| var("HOME").map(|h| h.join(".local/share"))).map(|d| d.join("phonglab"))
 }
 
+/// The folder a teacher puts their own experiments in ("Things to try"): `experiments`
+/// beside the session ([`storage_dir`]); none in the browser, which has no folders.
+pub fn experiments_dir() -> Option<std::path::PathBuf> {
+    if cfg!(target_arch = "wasm32") {
+        return None;
+    }
+    storage_dir().map(|d| d.join("experiments"))
+}
+
 /// The `localStorage` key of the browser's session.
 pub const BROWSER_KEY: &str = "phonglab.session.ron";
 

@@ -14,4 +14,5 @@ pub mod quiz;
 pub mod result;
 pub mod shaded;
 pub mod shader_panel;
+pub mod things_to_try;
 pub mod vector_plot;

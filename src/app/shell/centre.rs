@@ -24,7 +24,8 @@ fn chrome(ui: &Ui, state: &AppState) -> centre_layout::Chrome {
     let legend = body + ui.spacing().item_spacing.y;
     centre_layout::Chrome {
         picture: rows * row + small + 8.0,
-        plot: 2.0 * row + legend + 8.0,
+        // The plot's buttons take three rows in large type (two in the normal window).
+        plot: if state.ui.layout.presenting { 3.0 } else { 2.0 } * row + legend + 8.0,
         plot_wide: row + 8.0,
         min_part: 10.5 * body,
     }

@@ -23,7 +23,7 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     controls_panel_ui(ui, state, width);
     calculation_panel_ui(ui, state, &eval, width);
     egui::CentralPanel::default().show(ui, |ui| centre::centre_ui(ui, state, &eval));
-    windows::windows_ui(&ctx, state);
+    windows::windows_ui(&ctx, state, &eval.explanation);
     // A whole frame has passed for what was deferred: its field has committed.
     if !state.ui.deferred.is_empty() {
         state.ui.deferred.iter_mut().for_each(|(_, ready)| *ready = true);

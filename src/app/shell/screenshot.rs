@@ -81,13 +81,26 @@ pub fn take(state: AppState, width: f32, height: f32, scale: f32) -> (usize, usi
 
 /// The share of the window that is empty: tiles of `tile` x `tile` pixels that show
 /// nothing but the panels' background (a tile with any text, line or picture in it is not
-/// empty, so the gaps between the letters of a paragraph do not count).
-pub fn empty_share(rgba: &[u8], width: usize, height: usize, background: egui::Color32, tile: usize) -> f64 {
+/// empty, so the gaps between the letters of a paragraph do not count). A tile inside one
+/// of `pictures` (rects in pixels) is the picture's, even where the scene's background is
+/// the panels' colour (the Phong demo's black on the dark theme's).
+pub fn empty_share(
+    rgba: &[u8],
+    width: usize,
+    height: usize,
+    background: egui::Color32,
+    tile: usize,
+    pictures: &[egui::Rect],
+) -> f64 {
     let bg = background.to_array();
     let (tx, ty) = (width / tile, height / tile);
     let mut empty = 0;
     for j in 0..ty {
         for i in 0..tx {
+            let centre = egui::pos2(((i * tile) as f32) + tile as f32 * 0.5, ((j * tile) as f32) + tile as f32 * 0.5);
+            if pictures.iter().any(|r| r.contains(centre)) {
+                continue;
+            }
             let all_bg = (0..tile).all(|y| {
                 let row = ((j * tile + y) * width + i * tile) * 4;
                 rgba[row..row + tile * 4].chunks_exact(4).all(|p| p[..3] == bg[..3])
@@ -122,6 +135,11 @@ pub fn run(a: &Shot) -> Result<()> {
     crate::io::image::write_png(&a.output, pw, ph, &rgba).context("the screenshot")?;
     let g = &state.ui.geometry;
     let bg = state.ui.layout.theme.visuals().panel_fill;
+    let pictures: Vec<egui::Rect> = g
+        .pictures
+        .iter()
+        .map(|r| egui::Rect::from_min_max((r.min.to_vec2() * a.scale).to_pos2(), (r.max.to_vec2() * a.scale).to_pos2()))
+        .collect();
     let sides: Vec<String> = g.pictures.iter().map(|r| format!("{:.0}", r.width().min(r.height()))).collect();
     let none = phonglab_core::t!("screenshot-none");
     eprintln!(
@@ -133,7 +151,8 @@ pub fn run(a: &Shot) -> Result<()> {
             height = ph,
             pictures = if sides.is_empty() { none.clone() } else { sides.join(" + ") },
             circle = g.plot.as_ref().map_or(none, |p| format!("{:.0}", 2.0 * p.unit)),
-            empty = format!("{:.0}", 100.0 * empty_share(&rgba, pw, ph, bg, (16.0 * a.scale).round() as usize))
+            empty =
+                format!("{:.0}", 100.0 * empty_share(&rgba, pw, ph, bg, (16.0 * a.scale).round() as usize, &pictures))
         )
     );
     Ok(())

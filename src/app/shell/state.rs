@@ -61,6 +61,8 @@ pub struct AppState {
     pub orbit: Orbit,
     /// The shaded view's own: the demo's corrections shown, the renderer, the mesh path typed.
     pub view_options: crate::app::panels::shaded::ShadedOptions,
+    /// The "Things to try" window's.
+    pub things: crate::app::panels::things_to_try::TryState,
     /// phonglab's own file chooser, while it is open (where the system's dialog cannot).
     pub chooser: Option<crate::app::panels::chooser::Chooser>,
     /// The scene file's path and the system's dialogs.

@@ -1,5 +1,6 @@
 //! The top bar: what a first-time user needs, and the rest one click away. The scene (its
-//! menu of shipped scenes, and its name), the object and the shading, then the File menu
+//! menu of shipped scenes, and its name), the object and the shading, things to try, then
+//! the File menu
 //! (the scene file, export, undo and redo) and the View menu (the panels and windows, the
 //! theme, the arithmetic), presenting, the language and help.
 
@@ -20,13 +21,32 @@ pub fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
     // Labels move to the next row whole rather than breaking across rows.
     ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
     ui.horizontal_wrapped(|ui| {
-        ui.strong("phonglab");
-        ui.separator();
-        ui.menu_button(t!("scene-menu"), |ui| scene_menu_ui(ui, state)).response.on_hover_text(t!("scene-menu-hover"));
-        scene_name_ui(ui, &state.doc.name);
+        // Presenting, in large type, the bar keeps one row: the app's and the scene's names
+        // give way (the scene's is in the Scene menu's hover). Narrower than 1150 points,
+        // the app's name gives way and the controls close up.
+        let presenting = state.ui.layout.presenting;
+        if presenting || ui.available_width() < 1150.0 {
+            ui.spacing_mut().item_spacing.x *= 0.5;
+        } else {
+            ui.strong("phonglab");
+            ui.separator();
+        }
+        let name = phonglab_core::library::localised_name(&state.doc.name);
+        let hover = if presenting { format!("{}\n{name}", t!("scene-menu-hover")) } else { t!("scene-menu-hover") };
+        ui.menu_button(t!("scene-menu"), |ui| scene_menu_ui(ui, state)).response.on_hover_text(hover);
+        if !presenting {
+            scene_name_ui(ui, &name);
+        }
         ui.separator();
         object_and_shading_ui(ui, state);
         ui.separator();
+        if ui
+            .selectable_label(state.things.open, t!("things-to-try"))
+            .on_hover_text(t!("things-to-try-hover"))
+            .clicked()
+        {
+            state.things.toggle();
+        }
         // Menus that hold fields and switches stay open while they are used.
         let stay = MenuConfig::new().close_behavior(egui::PopupCloseBehavior::CloseOnClickOutside);
         MenuButton::new(t!("file-menu"))
@@ -56,9 +76,8 @@ pub fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
     });
 }
 
-/// The scene's name, localised, cut to [`NAME_CHARS`] with the whole in its hover.
+/// The scene's name (localised), cut to [`NAME_CHARS`] with the whole in its hover.
 fn scene_name_ui(ui: &mut Ui, name: &str) {
-    let name = phonglab_core::library::localised_name(name);
     let shown: String = if name.chars().count() > NAME_CHARS {
         name.chars().take(NAME_CHARS - 1).chain(std::iter::once('…')).collect()
     } else {

@@ -1,14 +1,16 @@
 //! The windows over the layout: the cost study (its finished work collected first), the
-//! shader, phonglab's own file chooser, the keys' help.
+//! shader, phonglab's own file chooser, the things to try, the keys' help.
 
 use phonglab_core::t;
 
 use super::state::AppState;
+use crate::app::panels::things_to_try::{self, TryAsked};
 use crate::app::panels::{cost, help, shader_panel};
 
 /// The windows over the layout: the cost study (its finished work collected first), the
-/// shader, the keys.
-pub fn windows_ui(ctx: &egui::Context, state: &mut AppState) {
+/// shader, the chooser, the things to try (`explanation`: the calculation as it stands, for
+/// their answers), the keys.
+pub fn windows_ui(ctx: &egui::Context, state: &mut AppState, explanation: &phonglab_core::explain::Explanation) {
     // Finished work is collected before the window is drawn, and a frame is asked for at
     // once when something finished (the result would otherwise wait for the next input).
     let was_running = state.cost.busy() || state.heat_map.busy();
@@ -21,6 +23,17 @@ pub fn windows_ui(ctx: &egui::Context, state: &mut AppState) {
     cost::cost_window_ui(ctx, &mut state.cost, &state.doc, state.settings.pow);
     shader_panel::shader_window_ui(ctx, &mut state.shader, &state.doc);
     super::files::chooser_ui(ctx, state);
+    let lang = state.ui.layout.locale().lang;
+    match things_to_try::things_to_try_window_ui(ctx, &mut state.things, explanation, lang) {
+        Some(TryAsked::Load(doc, title)) => state.load(*doc, &title),
+        Some(TryAsked::Step(k)) => {
+            // The answer is a step of the calculation: highlighted there, and in view.
+            state.ui.layout.calculation_open = true;
+            state.ui.layout.step = Some(k);
+            state.ui.scroll_to_step = true;
+        }
+        None => {}
+    }
 
     if state.ui.show_help {
         let mut open = true;

@@ -226,11 +226,16 @@ fn vectors_on_object_ui(
     }
     paint_labels(&p, wanted, galleys, &lines, rect, Some(outline.gamma_multiply(0.6)));
     p.circle_filled(from, width * 1.3, on_picture(crate::app::widgets::palette::N));
-    if arrows.iter().any(ArrowOnObject::faded) {
+    // (A picture narrower than 180 points has no room for the line: it would cover it.)
+    if arrows.iter().any(ArrowOnObject::faded) && rect.width() >= 180.0 {
         // A label (read by screen readers and the tests) on a backdrop, at the picture's
-        // foot, drawn in a child that takes no room from the panel.
-        let strip = egui::Rect::from_min_max(rect.left_bottom() - egui::vec2(0.0, 40.0), rect.right_bottom());
-        let mut child = ui.new_child(egui::UiBuilder::new().max_rect(strip.shrink(4.0)).id_salt("arrows faded"));
+        // foot (growing upwards as it wraps, inside the picture), drawn in a child that
+        // takes no room from the panel.
+        let foot = egui::UiBuilder::new()
+            .max_rect(rect.shrink(4.0))
+            .layout(egui::Layout::bottom_up(egui::Align::LEFT))
+            .id_salt("arrows faded");
+        let mut child = ui.new_child(foot);
         child.set_clip_rect(rect);
         let ink = if dark_picture { Color32::from_gray(230) } else { Color32::from_gray(20) };
         egui::Frame::new().fill(outline.gamma_multiply(0.7)).corner_radius(3.0).inner_margin(3.0).show(

@@ -1,0 +1,157 @@
+//! "Things to try": experiments a class runs in one click ([`crate::io::experiments`]).
+//! Each sets up its scene, says what to look for, and asks a question whose answer is a
+//! step of the worked calculation, shown on request from the calculation as it stands (so
+//! after the class has moved a slider, the answer is the one for what they see).
+
+use egui::Ui;
+use phonglab_core::explain::{Explanation, fmt_value};
+use phonglab_core::locale::Lang;
+use phonglab_core::{Document, t};
+
+use crate::io::experiments::{self, Experiment};
+
+/// The window's state: open or not, the experiment chosen, whether its answer is shown,
+/// and the teacher's own experiments (read when the window opens).
+#[derive(Debug, Default)]
+pub struct TryState {
+    /// The window is open.
+    pub open: bool,
+    /// The experiment chosen (an index into [`TryState::all`]).
+    pub chosen: Option<usize>,
+    /// Its answer is shown.
+    pub answer_shown: bool,
+    /// The teacher's own experiments and the files that did not load (with why), read
+    /// from [`crate::platform::storage::experiments_dir`] when the window opened.
+    own: Option<(Vec<Experiment>, Vec<String>)>,
+}
+
+/// What the window asks the shell for.
+#[derive(Debug)]
+pub enum TryAsked {
+    /// Load this experiment's scene, under its title.
+    Load(Box<Document>, String),
+    /// Highlight this step of the worked calculation (and scroll to it).
+    Step(usize),
+}
+
+impl TryState {
+    /// The shipped experiments, then the teacher's own.
+    pub fn all(&mut self) -> Vec<Experiment> {
+        let own = self.own.get_or_insert_with(|| match crate::platform::storage::experiments_dir() {
+            Some(dir) => experiments::in_folder(&dir),
+            None => (Vec::new(), Vec::new()),
+        });
+        experiments::shipped().iter().cloned().chain(own.0.iter().cloned()).collect()
+    }
+
+    /// Opens or closes the window; opening reads the teacher's folder again.
+    pub fn toggle(&mut self) {
+        self.open = !self.open;
+        if self.open {
+            self.own = None;
+        }
+    }
+}
+
+/// The step of `ex` that answers `e`'s question: its index and its printed value.
+pub fn answer(e: &Experiment, ex: &Explanation) -> Option<(usize, String)> {
+    let k = ex.steps.iter().position(|s| s.name == e.answer && (e.light.is_none() || s.light == e.light))?;
+    let s = &ex.steps[k];
+    let value = match &s.value {
+        Some(v) => phonglab_core::locale::decimal(&fmt_value(v, 8)),
+        None => t!("not-applicable"),
+    };
+    Some((k, format!("{} = {value}", s.name)))
+}
+
+/// The window: the experiments, the one chosen with what to look for, its question and,
+/// on request, the calculation's answer; where a teacher's own go.
+pub fn things_to_try_window_ui(
+    ctx: &egui::Context,
+    state: &mut TryState,
+    ex: &Explanation,
+    lang: Lang,
+) -> Option<TryAsked> {
+    if !state.open {
+        return None;
+    }
+    let mut open = true;
+    let mut asked = None;
+    egui::Window::new(t!("things-to-try"))
+        .open(&mut open)
+        .default_width(420.0)
+        .max_height(ctx.content_rect().height() * 0.8)
+        .show(ctx, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| asked = contents_ui(ui, state, ex, lang));
+        });
+    state.open = open;
+    asked
+}
+
+fn contents_ui(ui: &mut Ui, state: &mut TryState, ex: &Explanation, lang: Lang) -> Option<TryAsked> {
+    let all = state.all();
+    let mut asked = None;
+    ui.small(t!("things-to-try-intro"));
+    for (k, e) in all.iter().enumerate() {
+        let words = e.words(lang);
+        let chosen = state.chosen == Some(k);
+        if ui.selectable_label(chosen, format!("{}. {}", k + 1, words.title)).on_hover_text(&e.source).clicked() {
+            state.chosen = Some(k);
+            state.answer_shown = false;
+            asked = Some(TryAsked::Load(Box::new(e.doc.clone()), words.title.clone()));
+        }
+        if chosen {
+            asked = chosen_ui(ui, state, e, ex, lang).or(asked);
+        }
+    }
+    ui.separator();
+    own_folder_ui(ui, state);
+    asked
+}
+
+/// The experiment chosen: what to look for, the question, and the answer on request.
+fn chosen_ui(ui: &mut Ui, state: &mut TryState, e: &Experiment, ex: &Explanation, lang: Lang) -> Option<TryAsked> {
+    let words = e.words(lang);
+    let mut asked = None;
+    egui::Frame::group(ui.style()).show(ui, |ui| {
+        ui.label(egui::RichText::new(t!("things-to-try-look")).small().strong());
+        ui.label(&words.look);
+        ui.label(egui::RichText::new(t!("things-to-try-question")).small().strong());
+        ui.label(egui::RichText::new(&words.question).strong());
+        match (state.answer_shown, answer(e, ex)) {
+            (false, _) => {
+                if ui.button(t!("things-to-try-show")).clicked() {
+                    state.answer_shown = true;
+                    if let Some((k, _)) = answer(e, ex) {
+                        asked = Some(TryAsked::Step(k));
+                    }
+                }
+            }
+            (true, Some((k, value))) => {
+                let text = t!("things-to-try-answer", step = (k + 1).to_string(), value = value);
+                ui.label(egui::RichText::new(text).monospace());
+            }
+            (true, None) => {
+                ui.label(t!("things-to-try-no-step", step = e.answer.clone()));
+            }
+        }
+    });
+    asked
+}
+
+/// Where a teacher's own experiments go, and why any of theirs did not load.
+fn own_folder_ui(ui: &mut Ui, state: &mut TryState) {
+    match crate::platform::storage::experiments_dir() {
+        Some(dir) => {
+            ui.small(t!("things-to-try-own", folder = dir.display().to_string()));
+        }
+        None => {
+            ui.small(t!("things-to-try-own-none"));
+        }
+    }
+    if let Some((_, refused)) = &state.own {
+        for why in refused {
+            ui.small(egui::RichText::new(why).color(ui.visuals().warn_fg_color));
+        }
+    }
+}
