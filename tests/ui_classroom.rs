@@ -353,3 +353,40 @@ fn the_shader_window_shows_the_program_and_what_an_effect_adds() {
     let copied = common::copied_text(&h);
     assert!(copied.iter().any(|t| t.contains("fn vs_main") && t.contains("in_cone0")), "{copied:?}");
 }
+
+/// Every slider's and combo box's label stands before it on its row or above it, in the
+/// normal window, in the presentation drawer, and at 1024x600 (labels below their sliders
+/// had the attenuation misread).
+#[test]
+fn every_label_stands_before_or_above_its_control() {
+    for (w, hgt, presenting) in [(1280.0, 720.0, false), (1280.0, 720.0, true), (1024.0, 600.0, false)] {
+        let mut state = AppState::worksheet();
+        state.ui.layout.presenting = presenting;
+        state.ui.layout.drawer_open = true;
+        let mut h = Harness::builder().with_size([w, hgt]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+        h.run_steps(3);
+        let nodes: Vec<_> = h.root().children_recursive().collect();
+        let labels: Vec<(String, egui::Rect)> = nodes
+            .iter()
+            .filter(|n| n.accesskit_node().role() == Role::Label)
+            .filter_map(|n| Some((n.accesskit_node().value()?.to_string(), n.rect())))
+            .collect();
+        let mut checked = 0;
+        for n in nodes.iter().filter(|n| matches!(n.accesskit_node().role(), Role::Slider | Role::ComboBox)) {
+            let Some(name) = n.accesskit_node().label() else { continue };
+            let r = n.rect();
+            let mine: Vec<egui::Rect> = labels.iter().filter(|(t, _)| *t == name).map(|(_, l)| *l).collect();
+            if mine.is_empty() {
+                continue;
+            }
+            let before = |l: &egui::Rect| l.max.x <= r.min.x + 1.0 && l.min.y < r.max.y && l.max.y > r.min.y;
+            let above = |l: &egui::Rect| l.max.y <= r.min.y + 1.0 && l.min.x <= r.max.x && r.min.y - l.max.y < 30.0;
+            assert!(
+                mine.iter().any(|l| before(l) || above(l)),
+                "{w}x{hgt} presenting {presenting}: {name:?} at {r:?}, its label at {mine:?}"
+            );
+            checked += 1;
+        }
+        assert!(checked >= 8, "{w}x{hgt}: {checked} controls checked");
+    }
+}

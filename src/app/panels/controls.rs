@@ -1,7 +1,8 @@
 //! The controls: lights, material, light model, vertex, camera and rules. Every widget
 //! edits a copy of the document; the caller applies it (or refuses it).
 
-use egui::{CollapsingHeader, ComboBox, Ui};
+use crate::app::widgets::fields::combo_ui;
+use egui::{CollapsingHeader, Ui};
 use glam::{DMat4, DVec3, DVec4};
 use phonglab_core::scene::{ColorMaterial, ColorMaterialMode, Face};
 use phonglab_core::t;
@@ -46,12 +47,12 @@ pub fn controls_ui(ui: &mut Ui, doc: &mut Document, state: &mut ControlsState) {
 /// Rule set and specular model.
 pub fn rules_ui(ui: &mut Ui, doc: &mut Document) {
     let rules = &mut doc.scene.rules;
-    ComboBox::from_label(t!("rule-set")).selected_text(rules.set.label()).show_ui(ui, |ui| {
+    combo_ui(ui, &t!("rule-set"), rules.set.label(), |ui| {
         for r in RuleSet::ALL {
             ui.selectable_value(&mut rules.set, r, r.label());
         }
     });
-    ComboBox::from_label(t!("specular-model")).selected_text(rules.specular.label()).show_ui(ui, |ui| {
+    combo_ui(ui, &t!("specular-model"), rules.specular.label(), |ui| {
         for m in SpecularModel::ALL {
             ui.selectable_value(&mut rules.specular, m, m.label());
         }
@@ -159,7 +160,7 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut ControlsState) {
     {
         slider_ui(ui, &name, v, -range..=range, false);
     }
-    ComboBox::from_label(t!("light-fixed-to")).selected_text(placement_label(&l.placement)).show_ui(ui, |ui| {
+    combo_ui(ui, &t!("light-fixed-to"), placement_label(&l.placement), |ui| {
         for p in [LightPlacement::Eye, LightPlacement::World, LightPlacement::Object] {
             let label = placement_label(&p);
             ui.selectable_value(&mut l.placement, p, label);
@@ -205,7 +206,7 @@ fn material_ui(ui: &mut Ui, m: &mut Material, back: bool, tracks: impl Fn(ColorM
     let quantity = |q: Q, field: &str| if back { label(field) } else { q.label() };
     let current = materials::name_of(m);
     let shown = current.map_or_else(|| t!("material-custom"), materials::display_name);
-    ComboBox::from_label(label("preset")).selected_text(shown).show_ui(ui, |ui| {
+    combo_ui(ui, &label("preset"), shown, |ui| {
         for named in materials::classic() {
             let name = materials::display_name(&named.name);
             if ui.selectable_label(current == Some(named.name.as_str()), name).clicked() {
@@ -254,12 +255,12 @@ fn color_material_ui(ui: &mut Ui, doc: &mut Document) {
         *cm = on.then(ColorMaterial::default);
     }
     let Some(cm) = cm else { return };
-    ComboBox::from_label(t!("color-material-mode")).selected_text(cm.mode.gl()).show_ui(ui, |ui| {
+    combo_ui(ui, &t!("color-material-mode"), cm.mode.gl(), |ui| {
         for m in ColorMaterialMode::ALL {
             ui.selectable_value(&mut cm.mode, m, m.gl());
         }
     });
-    ComboBox::from_label(t!("color-material-face")).selected_text(cm.face.gl()).show_ui(ui, |ui| {
+    combo_ui(ui, &t!("color-material-face"), cm.face.gl(), |ui| {
         for f in [Face::Front, Face::Back, Face::FrontAndBack] {
             ui.selectable_value(&mut cm.face, f, f.gl());
         }
@@ -279,7 +280,7 @@ fn light_model_ui(ui: &mut Ui, doc: &mut Document) {
         NormalMode::Rescale => "GL_RESCALE_NORMAL".to_string(),
     };
     let nm = &mut doc.scene.normal_mode;
-    ComboBox::from_label(t!("normals")).selected_text(label(*nm)).show_ui(ui, |ui| {
+    combo_ui(ui, &t!("normals"), label(*nm), |ui| {
         for m in [NormalMode::AsIs, NormalMode::Normalize, NormalMode::Rescale] {
             ui.selectable_value(nm, m, label(m));
         }
@@ -305,7 +306,7 @@ fn camera_ui(ui: &mut Ui, doc: &mut Document) {
         CameraSpec::Matrix(doc.scene.eye_from_world),
     ];
     let current = doc.camera.kind_label();
-    ComboBox::from_label(t!("camera")).selected_text(doc.camera.kind_name()).show_ui(ui, |ui| {
+    combo_ui(ui, &t!("camera"), doc.camera.kind_name(), |ui| {
         for k in kinds {
             if ui.selectable_label(current == k.kind_label(), k.kind_name()).clicked() && current != k.kind_label() {
                 doc.camera = k;

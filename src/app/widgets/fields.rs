@@ -177,3 +177,18 @@ pub fn color_ui(ui: &mut Ui, label: &str, c: &mut DVec4, alpha: bool) -> bool {
         components_after_ui(ui, swatch, label, &mut [("r", x), ("g", y), ("b", z)], 0.005)
     }
 }
+
+/// `label`, then a combo box showing `selected` with `contents` as its choices, named
+/// `label`: the label before its control, as every row has it (egui's own puts it after).
+pub fn combo_ui<R>(
+    ui: &mut Ui,
+    label: &str,
+    selected: impl Into<egui::WidgetText>,
+    contents: impl FnOnce(&mut Ui) -> R,
+) -> egui::Response {
+    ui.horizontal(|ui| {
+        let l = ui.label(label);
+        egui::ComboBox::from_id_salt(label).selected_text(selected).show_ui(ui, contents).response.labelled_by(l.id)
+    })
+    .inner
+}
