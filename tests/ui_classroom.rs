@@ -390,3 +390,30 @@ fn every_label_stands_before_or_above_its_control() {
         assert!(checked >= 8, "{w}x{hgt}: {checked} controls checked");
     }
 }
+
+/// Presenting, the windows and the menus are in large type too (the Shader window and the
+/// Presets menu kept egui's sizes): the Things to try window's entries, the Shader window's
+/// Copy button and the Scene menu's entries are 1.3 times as tall or more.
+#[test]
+fn presenting_the_windows_and_menus_grow_with_the_text() {
+    let heights = |presenting: bool| {
+        let mut state = AppState::worksheet();
+        state.ui.layout.presenting = presenting;
+        let mut h =
+            Harness::builder().with_size([1920.0, 1080.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+        h.run_steps(3);
+        common::open_menu(&mut h, &["Scene"]);
+        let menu = h.get_by_label("Phong demo").rect().height();
+        h.key_press(egui::Key::Escape);
+        h.state_mut().things.open = true;
+        h.state_mut().shader.open = true;
+        h.run_steps(3);
+        let entry = h.get_by_label_contains("1. The light just behind").rect().height();
+        let shader = h.get_by_label("Copy").rect().height();
+        [entry, shader, menu]
+    };
+    let (small, large) = (heights(false), heights(true));
+    for (k, what) in ["Things to try's entry", "the Shader window's Copy", "the Scene menu's entry"].iter().enumerate() {
+        assert!(large[k] >= 1.3 * small[k], "{what}: {} -> {}", small[k], large[k]);
+    }
+}

@@ -15,9 +15,7 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     let Some(eval) = frame_start_ui(ui, state) else { return };
     let ctx = ui.ctx().clone();
     keys::presentation_keys(&ctx, state, eval.explanation.steps.len());
-    if state.ui.layout.presenting {
-        layout::scale_text(ui.style_mut(), layout::PRESENTATION_TEXT_SCALE);
-    }
+    presentation_type(&ctx, ui, state.ui.layout.presenting);
     let width = ui.max_rect().width();
     egui::Panel::top("top bar").show(ui, |ui| top_bar::top_bar_ui(ui, state));
     controls_panel_ui(ui, state, width);
@@ -29,6 +27,30 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
         state.ui.deferred.iter_mut().for_each(|(_, ready)| *ready = true);
         ctx.request_repaint();
     }
+}
+
+/// Presenting, every text and control in large type, the windows (Shader, Things to try)
+/// and the menus (Scene) included: the context's style, which they read, is scaled, and
+/// this frame's root (made before) takes it too. Back to egui's sizes when not presenting.
+fn presentation_type(ctx: &egui::Context, ui: &mut Ui, presenting: bool) {
+    let base = egui::Style::default();
+    let k = if presenting { layout::PRESENTATION_TEXT_SCALE } else { 1.0 };
+    let want = base.text_styles[&egui::TextStyle::Body].size * k;
+    if (ctx.global_style().text_styles[&egui::TextStyle::Body].size - want).abs() > 1e-3 {
+        ctx.global_style_mut(|s| {
+            s.text_styles = base.text_styles.clone();
+            s.spacing.interact_size = base.spacing.interact_size;
+            s.spacing.icon_width = base.spacing.icon_width;
+            s.spacing.icon_width_inner = base.spacing.icon_width_inner;
+            layout::scale_text(s, k);
+        });
+    }
+    let now = ctx.global_style();
+    let style = ui.style_mut();
+    style.text_styles = now.text_styles.clone();
+    style.spacing.interact_size = now.spacing.interact_size;
+    style.spacing.icon_width = now.spacing.icon_width;
+    style.spacing.icon_width_inner = now.spacing.icon_width_inner;
 }
 
 /// The frame's start: the theme and the language, the keys, a quit asked for, dropped
