@@ -182,6 +182,12 @@ fn shortcuts_and_the_help_overlay() {
     h.run_steps(2);
     h.get_by_label("Keyboard shortcuts");
     h.get_by_label("toggle the local viewer");
+    // The keys of presentation too, each on its row beside what it does.
+    for (keys, what) in [("F5", "present: large type"), ("← ↑  → ↓", "walk through the calculation's steps")] {
+        let k = h.get_by_label(keys).rect();
+        let w = h.get_by_label_contains(what).rect();
+        assert!(k.max.x <= w.min.x && (k.center().y - w.center().y).abs() < 4.0, "{keys}: {k:?} {w:?}");
+    }
     h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::R);
     h.run_steps(1);
     assert_eq!(h.state().doc, phonglab_core::Document::default());

@@ -221,6 +221,10 @@ typed-too-small = { $text } is too small for single precision: it would be 0
 ## help
 
 help-help = show or hide this help
+help-present = present: large type, the controls in a drawer (F5 again to leave)
+help-walk-steps = walk through the calculation's steps, one at a time (when no field has the keyboard)
+help-zoom = zoom the whole window in, out, back to 100 %
+help-things-to-try = Things to try (top bar): experiments in one click, each with a question the calculation answers.
 help-local-viewer = toggle the local viewer
 help-next-material = next classic material
 help-previous-material = previous classic material

@@ -221,6 +221,10 @@ typed-too-small = { $text } é pequeno demais para a precisão simples: seria 0
 ## help
 
 help-help = mostrar ou esconder esta ajuda
+help-present = apresentar: letra grande, os controles em uma gaveta (F5 de novo para sair)
+help-walk-steps = percorrer os passos do cálculo, um por um (quando nenhum campo tem o teclado)
+help-zoom = ampliar, reduzir, voltar a 100 % a janela inteira
+help-things-to-try = Coisas para experimentar (barra de cima): experimentos em um clique, cada um com uma pergunta que o cálculo responde.
 help-local-viewer = ligar ou desligar o observador local
 help-next-material = material clássico seguinte
 help-previous-material = material clássico anterior

@@ -221,6 +221,10 @@ typed-too-small = { $text } é pequeno demais para a precisão simples: seria 0
 ## help
 
 help-help = mostrar ou esconder esta ajuda
+help-present = apresentar: letra grande, os controlos numa gaveta (F5 outra vez para sair)
+help-walk-steps = percorrer os passos do cálculo, um a um (quando nenhum campo tem o teclado)
+help-zoom = ampliar, reduzir, voltar a 100 % a janela toda
+help-things-to-try = Coisas a experimentar (barra de cima): experiências num clique, cada uma com uma pergunta a que o cálculo responde.
 help-local-viewer = ligar ou desligar o observador local
 help-next-material = material clássico seguinte
 help-previous-material = material clássico anterior

@@ -114,7 +114,13 @@ pub fn help_ui(ui: &mut Ui) {
             ui.label(phonglab_core::locale::tr(what));
             ui.end_row();
         }
+        for (shown, what) in PRESENTATION_KEYS {
+            ui.monospace(*shown);
+            ui.label(phonglab_core::locale::tr(what));
+            ui.end_row();
+        }
     });
+    ui.label(t!("help-things-to-try"));
     ui.separator();
     ui.label(t!("help-drop"));
     ui.label(t!("help-drag"));
@@ -126,6 +132,14 @@ pub fn help_ui(ui: &mut Ui) {
         ui.label(phonglab_core::locale::tr(id));
     }
 }
+
+/// The keys [`crate::app::shell::keys::presentation_keys`] and eframe's zoom read, shown
+/// after [`SHORTCUTS`]: (the keys, the message id of what they do).
+pub const PRESENTATION_KEYS: &[(&str, &str)] = &[
+    ("F5", "help-present"),
+    ("← ↑  → ↓", "help-walk-steps"),
+    ("Ctrl + / Ctrl − / Ctrl 0", "help-zoom"),
+];
 
 /// Where the Phong demo preset follows the demo's program rather than OpenGL (shown in the
 /// help overlay; the scene file and the README say the same).
