@@ -413,7 +413,8 @@ fn presenting_the_windows_and_menus_grow_with_the_text() {
         [entry, shader, menu]
     };
     let (small, large) = (heights(false), heights(true));
-    for (k, what) in ["Things to try's entry", "the Shader window's Copy", "the Scene menu's entry"].iter().enumerate() {
+    for (k, what) in ["Things to try's entry", "the Shader window's Copy", "the Scene menu's entry"].iter().enumerate()
+    {
         assert!(large[k] >= 1.3 * small[k], "{what}: {} -> {}", small[k], large[k]);
     }
 }

@@ -135,11 +135,8 @@ pub fn help_ui(ui: &mut Ui) {
 
 /// The keys [`crate::app::shell::keys::presentation_keys`] and eframe's zoom read, shown
 /// after [`SHORTCUTS`]: (the keys, the message id of what they do).
-pub const PRESENTATION_KEYS: &[(&str, &str)] = &[
-    ("F5", "help-present"),
-    ("← ↑  → ↓", "help-walk-steps"),
-    ("Ctrl + / Ctrl − / Ctrl 0", "help-zoom"),
-];
+pub const PRESENTATION_KEYS: &[(&str, &str)] =
+    &[("F5", "help-present"), ("← ↑  → ↓", "help-walk-steps"), ("Ctrl + / Ctrl − / Ctrl 0", "help-zoom")];
 
 /// Where the Phong demo preset follows the demo's program rather than OpenGL (shown in the
 /// help overlay; the scene file and the README say the same).

@@ -58,7 +58,8 @@ impl Shader {
     pub fn text(&self, lang: Lang) -> String {
         match lang {
             Lang::Glsl => {
-                format!("// ---- vertex shader ----\n{}\n// ---- fragment shader ----\n{}", self.vertex, self.fragment)
+                let (v, f) = (crate::t!("shader-vertex-shader"), crate::t!("shader-fragment-shader"));
+                format!("// ---- {v} ----\n{}\n// ---- {f} ----\n{}", self.vertex, self.fragment)
             }
             Lang::Wgsl => self.vertex.clone(),
         }
@@ -112,7 +113,7 @@ impl Syn {
 /// The worked calculation's number of the first step of `kind` (for `light`).
 fn step_no(ex: &Explanation, kind: StepKind, light: Option<usize>) -> String {
     match ex.steps.iter().position(|s| s.kind == kind && (light.is_none() || s.light == light)) {
-        Some(k) => format!("step {}", k + 1),
+        Some(k) => crate::t!("shader-step", n = (k + 1).to_string()),
         None => "".into(),
     }
 }
@@ -239,13 +240,14 @@ impl Body<'_> {
             }
             Stage::ZeroNormals => {
                 let n_ok = self.s.var("bool", "n_ok", "dot(N, N) > 0.0");
-                self.lines.push(format!("{n_ok} // a zero normal has no direction: no diffuse, no specular"));
+                self.lines.push(format!("{n_ok} // {}", crate::t!("shader-note-zero-normal")));
             }
             Stage::ViewVector => self.view_vector(),
             Stage::LightVector(i) => self.light_vector(i),
             Stage::LightConstant(i) => {
                 let l = self.uni(format!("light{i}_direction"), "vec3");
-                self.var("vec3", &format!("L{i}"), &l, StepKind::L, Some(i), " (directional: one L for every vertex)");
+                let note = format!(" ({})", crate::t!("shader-note-directional-l"));
+                self.var("vec3", &format!("L{i}"), &l, StepKind::L, Some(i), &note);
             }
             Stage::Attenuate(i) => {
                 let k = self.uni(format!("light{i}_attenuation"), "vec3");
@@ -264,8 +266,8 @@ impl Body<'_> {
             }
             Stage::HalfwayConstant(i) => {
                 let h = self.uni(format!("light{i}_halfway"), "vec3");
-                let note = " (one H: directional light, infinite viewer)";
-                self.var("vec3", &format!("H{i}"), &h, StepKind::H, Some(i), note);
+                let note = format!(" ({})", crate::t!("shader-note-one-h"));
+                self.var("vec3", &format!("H{i}"), &h, StepKind::H, Some(i), &note);
             }
             Stage::Reflect(i) => {
                 let dot = if self.scene.rules.reflect_clamped() {
@@ -297,7 +299,8 @@ impl Body<'_> {
                 let c = self.uni("scene_color".into(), "vec3");
                 for side in 0..self.sides() {
                     let step = step_no(self.ex, StepKind::SceneAmbient, None);
-                    self.lines.push(format!("sum{side} = sum{side} + {c}; // {step} (emission + scene ambient)"));
+                    let note = crate::t!("shader-note-emission-ambient");
+                    self.lines.push(format!("sum{side} = sum{side} + {c}; // {step} ({note})"));
                 }
             }
         }
@@ -326,9 +329,11 @@ impl Body<'_> {
         let dir = self.uni(format!("light{i}_spot_direction"), "vec3");
         let cut = self.uni(format!("light{i}_spot_cos_cutoff"), "float");
         let cos = format!("dot(-L{i}, normalize({dir}))");
-        self.var("float", &format!("spot_cos{i}"), &cos, StepKind::Spot, Some(i), " (spot cosine)");
+        let note = format!(" ({})", crate::t!("shader-note-spot-cosine"));
+        self.var("float", &format!("spot_cos{i}"), &cos, StepKind::Spot, Some(i), &note);
         let test = format!("spot_cos{i} >= {cut}");
-        self.var("bool", &format!("in_cone{i}"), &test, StepKind::Spot, Some(i), " (the cone test)");
+        let note = format!(" ({})", crate::t!("shader-note-cone-test"));
+        self.var("bool", &format!("in_cone{i}"), &test, StepKind::Spot, Some(i), &note);
     }
 
     /// Light `i`'s share on `side`: its ambient, diffuse and specular terms, scaled by its
@@ -377,7 +382,8 @@ impl Body<'_> {
                 format!("{scale}({spec})")
             };
             let step = step_no(self.ex, StepKind::Secondary, None);
-            self.lines.push(format!("spec{side} = spec{side} + {lit}; // {step} (the secondary colour)"));
+            let note = crate::t!("shader-note-secondary");
+            self.lines.push(format!("spec{side} = spec{side} + {lit}; // {step} ({note})"));
         }
     }
 
@@ -397,7 +403,8 @@ impl Body<'_> {
                 clamped(&format!("sum{side}"))
             };
             let e = format!("{v4}({rgb}, {md}.w)");
-            self.var("vec4", &format!("color{side}"), &e, StepKind::Primary, None, " (alpha: the diffuse alpha)");
+            let note = format!(" ({})", crate::t!("shader-note-alpha"));
+            self.var("vec4", &format!("color{side}"), &e, StepKind::Primary, None, &note);
         }
     }
 }
@@ -409,7 +416,7 @@ fn prologue(scene: &Scene, program: &Program, ex: &Explanation, s: &Syn, uniform
     let by_m = scene.rules.normal_transform() == NormalTransform::Modelview;
     uniforms.push(("normal_matrix".into(), "mat3"));
     let (nm, mv) = (s.u("normal_matrix"), s.u("eye_from_object"));
-    let what = if by_m { "the worksheet: M itself" } else { "(M^-1)^T" };
+    let what = if by_m { crate::t!("shader-note-normal-by-m") } else { "(M^-1)^T".to_string() };
     let n_in = if s.lang == Lang::Glsl { "a_normal" } else { "input.normal" };
     let p_in = if s.lang == Lang::Glsl { "a_position" } else { "input.position" };
     o.push(format!(
@@ -428,18 +435,20 @@ fn prologue(scene: &Scene, program: &Program, ex: &Explanation, s: &Syn, uniform
             s.var("vec4", "Ph", &format!("{mv} * {v4}({p_in}, 1.0)")),
             step_no(ex, StepKind::Position, None)
         ));
-        o.push(format!("{} // the modelview is projective: divide by w", s.var("vec3", "P", "Ph.xyz / Ph.w")));
+        o.push(format!("{} // {}", s.var("vec3", "P", "Ph.xyz / Ph.w"), crate::t!("shader-note-projective")));
     } else if program.has(Stage::TranslatePosition) {
         o.push(format!(
-            "{} // {} (the modelview is a translation: its last column)",
+            "{} // {} ({})",
             s.var("vec3", "P", &format!("{p_in} + {mv}[3].xyz")),
-            step_no(ex, StepKind::Position, None)
+            step_no(ex, StepKind::Position, None),
+            crate::t!("shader-note-translation")
         ));
     } else if program.has(Stage::TransformPosition) || program.has(Stage::ViewVector) {
         o.push(format!(
-            "{} // {} (affine modelview: w = 1, no division)",
+            "{} // {} ({})",
             s.var("vec3", "P", &format!("({mv} * {v4}({p_in}, 1.0)).xyz")),
-            step_no(ex, StepKind::Position, None)
+            step_no(ex, StepKind::Position, None),
+            crate::t!("shader-note-affine")
         ));
     }
     o
@@ -516,9 +525,8 @@ fn header(what: &str, shading: ShaderShading) -> String {
         ShaderShading::Gouraud => "Gouraud",
         ShaderShading::Phong => "Phong",
     };
-    format!(
-        "// phonglab: {what}, {name} shading, generated from the specialised plan.\n// Only the stages this scene's key calls for; comments give the worked calculation's steps.\n"
-    )
+    let head = crate::t!("shader-header", what = what, shading = name);
+    head.lines().map(|l| format!("// {l}\n")).collect()
 }
 
 /// The comment that lists a program's stages.
@@ -533,8 +541,8 @@ fn gouraud(scene: &Scene, key: &Key, ex: &Explanation, s: &Syn, mut uniforms: Ve
     let program = Program::compile(key, SourceKind::Object);
     let mut body = prologue(scene, &program, ex, s, &mut uniforms);
     body.extend(lighting(scene, key, &program, ex, s, &mut uniforms));
-    let head = header("the vertex lighting", ShaderShading::Gouraud);
-    let list = stage_list("The program", &program);
+    let head = header(&crate::t!("shader-what-vertex-lighting"), ShaderShading::Gouraud);
+    let list = stage_list(&crate::t!("shader-what-program"), &program);
     let (declared, body) = (declare(s, &uniforms), indent(&body));
     let two = key.two_sided;
     match s.lang {
@@ -577,10 +585,10 @@ fn phong(
     let program = Program::compile(key, SourceKind::EyeRaw(options.renormalize));
     let mut frag_uniforms: Vec<Uniform> = Vec::new();
     let body = indent(&lighting(scene, key, &program, ex, s, &mut frag_uniforms));
-    let list = stage_list("The program per fragment", &program);
+    let list = stage_list(&crate::t!("shader-what-program-fragment"), &program);
     uniforms.push(("normal_matrix".into(), "mat3"));
     let by_m = scene.rules.normal_transform() == NormalTransform::Modelview;
-    let what = if by_m { "the worksheet: M itself" } else { "(M^-1)^T" };
+    let what = if by_m { crate::t!("shader-note-normal-by-m") } else { "(M^-1)^T".to_string() };
     let mut all = uniforms.clone();
     for u in frag_uniforms {
         if !all.contains(&u) {
@@ -588,8 +596,8 @@ fn phong(
         }
     }
     let (vertex_head, fragment_head) = (
-        header("the per-fragment lighting's vertex stage", ShaderShading::Phong),
-        header("the per-fragment lighting", ShaderShading::Phong),
+        header(&crate::t!("shader-what-fragment-vertex-stage"), ShaderShading::Phong),
+        header(&crate::t!("shader-what-fragment-lighting"), ShaderShading::Phong),
     );
     let (position, normal) = (step_no(ex, StepKind::Position, None), step_no(ex, StepKind::Normal, None));
     let two = key.two_sided;
