@@ -418,3 +418,28 @@ fn presenting_the_windows_and_menus_grow_with_the_text() {
         assert!(large[k] >= 1.3 * small[k], "{what}: {} -> {}", small[k], large[k]);
     }
 }
+
+/// The spotlight preset shows its cone: the rim where the cone meets the teapot lies on the
+/// picture (though the light itself is above the view), inside the teapot's part of it;
+/// with the cutoff at 180 (no spotlight) there is none.
+#[test]
+fn the_spotlight_preset_shows_its_cone_on_the_picture() {
+    let mut h = harness_at(1280.0, 720.0);
+    common::open_menu(&mut h, &["Scene"]);
+    // (The controls have a "Spotlight" switch too: the menu's is a button.)
+    h.get_by_role_and_label(Role::Button, "Spotlight").click();
+    h.run_steps(3);
+    assert_eq!(h.state().doc.scene.lights[0].spot_cutoff, 12.0);
+    let g = h.state().ui.geometry.clone();
+    let picture = g.pictures[0];
+    assert_eq!(g.cones.len(), 1, "{g:?}");
+    let rim = g.cones[0];
+    assert!(picture.contains_rect(rim), "{rim:?} in {picture:?}");
+    // Smaller than the picture, larger than a dot: a cone the class can see.
+    assert!(rim.width() > 0.2 * picture.width() && rim.width() < 0.95 * picture.width(), "{rim:?}");
+    let mut doc = h.state().doc.clone();
+    doc.scene.lights[0].spot_cutoff = 180.0;
+    assert!(h.state_mut().apply(doc));
+    h.run_steps(2);
+    assert!(h.state().ui.geometry.cones.is_empty());
+}

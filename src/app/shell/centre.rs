@@ -88,6 +88,7 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
         let asked = shaded::shaded_ui(ui, &mut view, &mut state.shaded, eval);
         geometry.pictures = asked.rects;
         geometry.arrows = asked.arrows;
+        geometry.cones = asked.cones;
         if let Some(p) = asked.open_obj {
             files::open_obj(state, &p);
         }

@@ -24,6 +24,8 @@ pub struct Geometry {
     pub arrangement: Option<crate::app::shell::centre_layout::Arrangement>,
     /// The arrows drawn on the shaded view's picture.
     pub arrows: Vec<crate::app::panels::shaded::ArrowOnObject>,
+    /// The spotlights' cones drawn on it: each rim's bounds.
+    pub cones: Vec<egui::Rect>,
 }
 
 /// The shell's own choices: the window's arrangement, what the centre drew, the keys'

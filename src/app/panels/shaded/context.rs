@@ -47,6 +47,8 @@ pub struct Asked {
     pub open_obj: Option<std::path::PathBuf>,
     /// The arrows drawn at the worked calculation's vertex.
     pub arrows: Vec<super::arrow_on_object::ArrowOnObject>,
+    /// Where each spotlight's cone meets the object (its rim's bounds) on the picture.
+    pub cones: Vec<egui::Rect>,
 }
 
 /// `doc` with each departure switched on in `fixes` (and present in `doc`) corrected, or

@@ -38,6 +38,6 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut ShadedCache, e
     let open_obj = toolbar::toolbar_ui(ui, state, cache);
     let shown = pictures::pictures_ui(ui, state, cache);
     let rects = std::iter::once(shown.response.rect).chain(shown.second).collect();
-    let arrows = overlay::interaction_ui(ui, state, cache, &shown, eval);
-    Asked { rects, open_obj, arrows }
+    let (arrows, cones) = overlay::interaction_ui(ui, state, cache, &shown, eval);
+    Asked { rects, open_obj, arrows, cones }
 }

@@ -15,14 +15,15 @@ use crate::app::model::evaluated::Evaluated;
 use crate::app::model::message::Message;
 
 /// What the pointer does on the picture: the vectors and lights drawn on it, a light
-/// dragged, the orbit camera turned and zoomed, a vertex picked. Returns the arrows drawn.
+/// dragged, the orbit camera turned and zoomed, a vertex picked. Returns the arrows drawn
+/// and the bounds of each spotlight's cone drawn.
 pub(super) fn interaction_ui(
     ui: &mut Ui,
     state: &mut Shaded<'_>,
     cache: &mut ShadedCache,
     shown: &Shown,
     eval: &Evaluated,
-) -> Vec<ArrowOnObject> {
+) -> (Vec<ArrowOnObject>, Vec<egui::Rect>) {
     let (resp, size, px, scene) = (&shown.response, shown.size, shown.px, &shown.scene);
     let camera = state.edit.doc.view.camera;
     let overlay = Overlay {
@@ -31,7 +32,7 @@ pub(super) fn interaction_ui(
         object_from_eye: scene.eye_from_object().inverse(),
     };
     // The lights first: the arrows' letters are then placed clear of their marks and names.
-    let (dragged_light, light_marks) = lights_ui(ui, &overlay, state, scene);
+    let (dragged_light, light_marks, cones) = lights_ui(ui, &overlay, state, scene);
     let arrows = vectors_on_object_ui(ui, overlay.rect, state.edit.doc, eval, &light_marks);
 
     let mut cam = camera;
@@ -62,7 +63,7 @@ pub(super) fn interaction_ui(
             && let Err(e) = cache.main.render(ui.ctx(), state.edit.doc, state.pow, px, "shaded view")
         {
             *state.edit.message = Some(Message::Refused(format!("{}: {e}", t!("shaded-cannot-render"))));
-            return arrows;
+            return (arrows, cones);
         }
         let mesh = mesh_for(&mut cache.main.mesh, &state.edit.doc.view);
         if let Some(i) = cache.main.renderer.pick(mesh, x, y) {
@@ -73,7 +74,7 @@ pub(super) fn interaction_ui(
             }
         }
     }
-    arrows
+    (arrows, cones)
 }
 
 /// Where the shaded view's image is, and how object and eye space map onto it.
@@ -317,15 +318,17 @@ fn spot_cone(
 
 /// Each light as a marker where the view draws it; a marker can be dragged (in the plane
 /// facing the viewer), which moves the light. Returns whether a marker is being dragged,
-/// and where each light's mark and name are (on the picture or at its edge).
+/// where each light's mark and name are (on the picture or at its edge), and the bounds of
+/// each spotlight's cone on it.
 fn lights_ui(
     ui: &mut Ui,
     o: &Overlay,
     state: &mut Shaded<'_>,
     scene: &phonglab_core::Scene,
-) -> (bool, Vec<egui::Rect>) {
+) -> (bool, Vec<egui::Rect>, Vec<egui::Rect>) {
     let mut dragging = false;
     let mut marks = Vec::new();
+    let mut cones = Vec::new();
     let mut moved = None;
     for (i, l) in state.edit.doc.scene.lights.iter().enumerate() {
         let eye = scene.light_pos_in_eye(l);
@@ -337,6 +340,14 @@ fn lights_ui(
             in_object / in_object.w
         };
         let centre = o.rect.center();
+        // A spotlight's cone: its rim where it reaches the object, drawn even when the light
+        // itself is off the picture (the spotlight preset's is above the view).
+        let cone = spot_cone(o, scene, l, p);
+        let spot_ink = crate::app::widgets::palette::ink(ui, crate::app::widgets::palette::SPOT);
+        if let Some(rim) = &cone {
+            ui.painter_at(o.rect).add(egui::Shape::closed_line(rim.clone(), egui::Stroke::new(1.5, spot_ink)));
+            cones.push(egui::Rect::from_points(rim).intersect(o.rect));
+        }
         let pos = match o.screen_from_object(p) {
             Some(pos) if o.rect.expand(-4.0).contains(pos) => pos,
             seen => {
@@ -352,13 +363,11 @@ fn lights_ui(
                 continue;
             }
         };
-        if let Some(cone) = spot_cone(o, scene, l, p) {
-            let c = crate::app::widgets::palette::ink(ui, crate::app::widgets::palette::SPOT);
-            let stroke = egui::Stroke::new(1.5, c);
-            for q in cone.iter().step_by(6) {
-                ui.painter_at(o.rect).line_segment([pos, *q], stroke);
+        if let Some(rim) = &cone {
+            // On the picture, the cone's sides from the light to its rim.
+            for q in rim.iter().step_by(6) {
+                ui.painter_at(o.rect).line_segment([pos, *q], egui::Stroke::new(1.5, spot_ink));
             }
-            ui.painter_at(o.rect).add(egui::Shape::closed_line(cone, stroke));
         }
         let hit = egui::Rect::from_center_size(pos, egui::vec2(18.0, 18.0));
         let r = ui.interact(hit, ui.scope_id().with(("light marker", i)), Sense::drag());
@@ -398,5 +407,5 @@ fn lights_ui(
             state.edit.apply(c);
         }
     }
-    (dragging, marks)
+    (dragging, marks, cones)
 }
