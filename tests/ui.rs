@@ -356,7 +356,7 @@ fn open_and_save_scene_files_by_path() {
     common::menu_item(&mut h, &["File"], "Open");
     h.run_steps(2);
     assert_eq!(h.state().doc.name, "a spotlight");
-    assert_eq!(h.state().doc.scene.lights[0].spot_cutoff, 25.0);
+    assert_eq!(h.state().doc.scene.lights[0].spot_cutoff, 12.0);
     assert!(matches!(&h.state().message, Some(Message::Info(m)) if m.contains("spotlight.toml")));
 
     // Change something, save it elsewhere, reset, open the saved file: the change is back.

@@ -443,3 +443,29 @@ fn the_spotlight_preset_shows_its_cone_on_the_picture() {
     h.run_steps(2);
     assert!(h.state().ui.geometry.cones.is_empty());
 }
+
+/// The vertex colour reads from the back of the room: its value in large type on the
+/// title's row, and a dark vertex says so (how bright, the light's angle) on its swatch;
+/// a bright one does not.
+#[test]
+fn the_vertex_colour_is_large_and_a_dark_one_says_so() {
+    let mut h = harness_at(1280.0, 720.0);
+    // (The calculation has a step named "Vertex colour" too, further down: the centre's is
+    // the top one.)
+    let title =
+        h.get_all_by_label("Vertex colour").map(|n| n.rect()).min_by(|a, b| a.min.y.total_cmp(&b.min.y)).unwrap();
+    let value = h.get_by_label("0.06  0.04  0.02").rect();
+    assert!(value.min.x > title.max.x && (value.center().y - title.center().y).abs() < 6.0, "{title:?} {value:?}");
+    assert!(value.height() > 1.3 * title.height(), "large: {value:?} against {title:?}");
+    let swatch = h.get_by_role(Role::ColorWell).rect();
+    h.get_by_label("Vertex colour swatch: a dark vertex: 4 % as bright as white; the light meets it at 82°");
+    assert!(swatch.max.x <= title.min.x, "the swatch before the title");
+    // Light the vertex head on: bright, and nothing said.
+    let mut doc = h.state().doc.clone();
+    doc.scene.material = phonglab_core::materials::classic()[0].material.clone();
+    doc.scene.lights[0].position = glam::DVec4::new(0.0, 0.0, 1.0, 0.0);
+    doc.scene.lights[0].placement = phonglab_core::LightPlacement::Eye;
+    assert!(h.state_mut().apply(doc));
+    h.run_steps(2);
+    assert_eq!(h.get_by_role(Role::ColorWell).accesskit_node().label().as_deref(), Some("Vertex colour swatch"));
+}

@@ -12,7 +12,27 @@ fn fmt4(c: &[f64; 4]) -> String {
     format!("[{}]", s.join("  "))
 }
 
-fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool) {
+/// How bright a colour is to the eye, 0 to 1: its relative luminance (Rec. 709 weights,
+/// on the clamped values).
+pub fn luminance(c: &[f64; 4]) -> f64 {
+    0.2126 * c[0].clamp(0.0, 1.0) + 0.7152 * c[1].clamp(0.0, 1.0) + 0.0722 * c[2].clamp(0.0, 1.0)
+}
+
+/// Below this luminance the colour is called dark (a nearly black swatch beside a lit
+/// object reads as a mistake unless it is said).
+pub const DARK: f64 = 0.12;
+
+/// The clamped colour in large type (two decimals), beside the title: read from the back
+/// of the room, where the swatch alone (a dark one especially) says little.
+fn large_value_ui(ui: &mut Ui, shown: &[f64; 4]) {
+    let text: Vec<String> =
+        shown[..3].iter().map(|x| phonglab_core::locale::decimal(&format!("{:.2}", x.clamp(0.0, 1.0)))).collect();
+    let size = ui.text_style_height(&egui::TextStyle::Heading);
+    ui.label(RichText::new(text.join("  ")).font(egui::FontId::monospace(size)).strong())
+        .on_hover_text(t!("large-value-hover"));
+}
+
+fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool, dark: Option<Dark>) {
     let unclamped = fmt4(&c.primary);
     // The numbers' width, to choose between the swatch beside them and a swatch above.
     let font = egui::TextStyle::Monospace.resolve(ui.style());
@@ -20,7 +40,12 @@ fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool) {
     let labels_w = 70.0;
     let wide = ui.available_width() >= 88.0 + 16.0 + labels_w + text_w;
     let swatch = |ui: &mut Ui, size: egui::Vec2| {
-        let (rect, _) = ui.allocate_exact_size(size, egui::Sense::hover());
+        let (rect, resp) = ui.allocate_exact_size(size, egui::Sense::hover());
+        let said = dark.as_ref().map_or_else(|| format!("{title} swatch"), |d| format!("{title} swatch: {}", d.said));
+        resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::ColorWell, true, said.clone()));
+        if let Some(d) = &dark {
+            resp.on_hover_text(&d.said);
+        }
         ui.painter().rect_filled(rect, 6.0, gl_to_color32([c.shown[0], c.shown[1], c.shown[2]]));
         ui.painter().rect_stroke(
             rect,
@@ -28,6 +53,12 @@ fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool) {
             egui::Stroke::new(1.0, ui.visuals().weak_text_color()),
             egui::StrokeKind::Outside,
         );
+        // A dark colour says so on its swatch, in light ink (the whole sentence on hover).
+        if let Some(d) = dark.as_ref().filter(|_| size.y >= 40.0) {
+            let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
+            let ink = Color32::from_gray(235);
+            ui.painter().text(rect.center(), egui::Align2::CENTER_CENTER, &d.short, font, ink);
+        }
     };
     let numbers = |ui: &mut Ui, labelled: bool| {
         let rows = [
@@ -49,7 +80,10 @@ fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool) {
         ui.horizontal_top(|ui| {
             swatch(ui, egui::vec2(88.0, 64.0));
             ui.vertical(|ui| {
-                ui.label(RichText::new(title).strong());
+                ui.horizontal(|ui| {
+                    ui.label(RichText::new(title).strong());
+                    large_value_ui(ui, &c.shown);
+                });
                 numbers(ui, true);
             });
         });
@@ -59,8 +93,13 @@ fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool) {
             ui.horizontal(|ui| {
                 swatch(ui, egui::vec2(40.0, 18.0));
                 ui.label(RichText::new(title).strong());
-                ui.small(if separate { t!("rows-with-secondary") } else { t!("rows-unclamped-clamped") });
+                large_value_ui(ui, &c.shown);
             });
+            // The rows' names, or for a dark colour the note (its swatch is too small for it).
+            match &dark {
+                Some(d) => ui.small(d.short.replace('\n', " ")).on_hover_text(&d.said),
+                None => ui.small(if separate { t!("rows-with-secondary") } else { t!("rows-unclamped-clamped") }),
+            };
             numbers(ui, false);
         });
     }
@@ -82,13 +121,46 @@ pub fn result_ui(ui: &mut Ui, eval: &Evaluated, separate_specular: bool, message
             &if eval.back.is_some() { t!("front-face") } else { t!("vertex-colour") },
             &eval.front,
             separate_specular,
+            dark_note(eval, &eval.front),
         );
         if let Some(b) = &eval.back {
             ui.add_space(16.0);
-            side_ui(ui, &t!("back-face"), b, separate_specular);
+            side_ui(ui, &t!("back-face"), b, separate_specular, dark_note(eval, b));
         }
     });
     message_ui(ui, message);
+}
+
+/// What a dark colour's swatch says: a short note on it, the whole sentence in its hover.
+struct Dark {
+    /// On the swatch: "dark vertex", then how bright and the light's angle.
+    short: String,
+    /// The sentence.
+    said: String,
+}
+
+/// For a dark colour, saying so: how bright it is, and with one light the angle at which
+/// the light meets the surface (past 90 degrees it does not light it).
+fn dark_note(eval: &Evaluated, c: &SideColors) -> Option<Dark> {
+    let y = luminance(&c.shown);
+    if y >= DARK {
+        return None;
+    }
+    let percent = format!("{:.0}", 100.0 * y);
+    Some(match eval.lights.as_slice() {
+        [one] => {
+            let cos = eval.n.normalize_or_zero().dot(one.l.normalize_or_zero()).clamp(-1.0, 1.0);
+            let angle = format!("{:.0}", cos.acos().to_degrees());
+            Dark {
+                short: format!("{}\n{percent} % · θ {angle}°", t!("dark-vertex-short")),
+                said: t!("dark-vertex-angle", percent = percent, angle = angle),
+            }
+        }
+        _ => Dark {
+            short: format!("{}\n{percent} %", t!("dark-vertex-short")),
+            said: t!("dark-vertex", percent = percent),
+        },
+    })
 }
 
 /// The last message, in two lines reserved for it whether there is one or not, so that

@@ -15,11 +15,10 @@ use crate::app::panels::{compare, lobe, result, shaded, vector_plot};
 fn chrome(ui: &Ui, state: &AppState) -> centre_layout::Chrome {
     let row = ui.spacing().interact_size.y + ui.spacing().item_spacing.y;
     let small = ui.text_style_height(&egui::TextStyle::Small) + ui.spacing().item_spacing.y;
-    // The toolbar's rows as they wrap in a part of the centre (the switches and View
-    // options in the normal window; presenting, none: the object and the shading are the
-    // top bar's): counted from the frame's own sizes, never from the last frame's, so the
+    // The toolbar's rows in a part of the centre (the switches and View options, one row in
+    // the normal window; presenting, none: the object and the shading are the top bar's): counted from the frame's own sizes, never from the last frame's, so the
     // split cannot chase itself from frame to frame.
-    let rows = if state.ui.layout.presenting { 0.0 } else { 2.0 };
+    let rows = if state.ui.layout.presenting { 0.0 } else { 1.0 };
     let body = ui.text_style_height(&egui::TextStyle::Body);
     let legend = body + ui.spacing().item_spacing.y;
     centre_layout::Chrome {
@@ -58,7 +57,9 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     let mono = ui.text_style_height(&egui::TextStyle::Monospace) + ui.spacing().item_spacing.y;
     let body = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
     let rows = 3.0 + f32::from(state.doc.scene.light_model.separate_specular);
-    let strip = egui::vec2(ui.available_width(), rows * mono + 2.0 * body + 6.0);
+    // (The title's row holds the colour in large type.)
+    let large = ui.text_style_height(&egui::TextStyle::Heading) + ui.spacing().item_spacing.y;
+    let strip = egui::vec2(ui.available_width(), (rows - 1.0) * mono + large + 2.0 * body + 6.0);
     let (rect, _) = ui.allocate_exact_size(strip, egui::Sense::hover());
     ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
         ui.set_clip_rect(rect.intersect(ui.clip_rect()));

@@ -18,6 +18,8 @@ pub struct ShadedOptions {
     pub renderer: RendererChoice,
     /// The OBJ file path typed under View options.
     pub obj_path: String,
+    /// View options are open (under the toolbar).
+    pub options_open: bool,
 }
 
 /// What the shaded view reads and writes, borrowed from the shell: the document (edited

@@ -107,17 +107,22 @@ pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCach
     if !presenting {
         // The object and the shading are the top bar's; presenting, the switches are in
         // the drawer and on the keys.
+        // One row: the switches, and View options (opened below it).
         ui.horizontal_wrapped(|ui| {
             ui.checkbox(&mut view.auto_rotate, t!("auto-rotate")).on_hover_text(t!("auto-rotate-hover"));
             ui.checkbox(&mut view.demo_normals, t!("demo-normals")).on_hover_text(t!("demo-normals-hover"));
             ui.checkbox(&mut state.heat_map.on, t!("heat-map")).on_hover_text(t!("heat-map-hover"));
+            let open = &mut state.view_options.options_open;
+            if ui.selectable_label(*open, t!("view-options")).on_hover_text(t!("view-options-hover")).clicked() {
+                *open = !*open;
+            }
         });
     }
-    if !presenting {
+    if !presenting && state.view_options.options_open {
         // Opened, the options scroll within a part of the view's space, so the picture
         // stays on screen (smaller) rather than being pushed below the window.
         let most = ui.available_height() * 0.45;
-        egui::CollapsingHeader::new(t!("view-options")).id_salt("view options").show(ui, |ui| {
+        egui::Frame::group(ui.style()).show(ui, |ui| {
             egui::ScrollArea::vertical().max_height(most).show(ui, |ui| {
                 renderer_ui(ui, state, &cache.main.drawn_by);
                 view_options_ui(ui, &mut view);
