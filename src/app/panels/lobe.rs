@@ -161,6 +161,12 @@ fn legend_ui(ui: &mut Ui, curves: &[Curve]) {
     });
 }
 
+/// How far the polar plot's rays (N, L, V) reach: just past the largest curve, so that the
+/// plot's bounds are the lobe's.
+fn polar_reach(curves: &[Curve]) -> f64 {
+    1.1 * curves.iter().flat_map(|c| c.2.iter().map(|(_, r)| *r)).fold(1e-3, f64::max)
+}
+
 /// The polar plot and the plot against φ, with the legend above them.
 pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
     let Some((lobe, phi_v)) = Lobe::of(scene, eval) else {
@@ -212,7 +218,10 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
                     let xy: Vec<[f64; 2]> = pts.iter().map(|(phi, r)| [r * phi.sin(), r * phi.cos()]).collect();
                     p.line(Line::new(name.clone(), PlotPoints::from(xy)).color(*c).width(if *on { 3.0 } else { 1.5 }));
                 }
-                let ray = |a: f64| PlotPoints::from(vec![[0.0, 0.0], [a.sin() * 1.05, a.cos() * 1.05]]);
+                // N, L and V are directions: drawn just past the largest curve, so the plot
+                // scales to the lobe (rays of length 1 left a lobe of 0.3 a few pixels wide).
+                let reach = polar_reach(&curves);
+                let ray = |a: f64| PlotPoints::from(vec![[0.0, 0.0], [a.sin() * reach, a.cos() * reach]]);
                 p.line(Line::new("N", ray(0.0)).color(ink(palette::N)));
                 p.line(
                     Line::new("L", ray(-lobe.theta)).color(ink(palette::L)).style(egui_plot::LineStyle::dashed_loose()),
@@ -257,6 +266,22 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_polar_plot_reaches_just_past_the_lobe() {
+        let doc = phonglab_core::Document::default();
+        let s = crate::app::model::evaluated::Settings::default();
+        let eval = crate::app::model::evaluated::evaluate(&doc, s.precision, s.pow, s.side).unwrap();
+        let (lobe, _) = Lobe::of(&doc.scene, &eval).unwrap();
+        let top = (0..=180).map(|k| lobe.blinn((k as f64 - 90.0).to_radians())).fold(lobe.diffuse(), f64::max);
+        let curves: Vec<Curve> = vec![
+            ("d".into(), Color32::WHITE, sweep(|_| lobe.diffuse()), false),
+            ("b".into(), Color32::WHITE, sweep(|p| lobe.blinn(p)), true),
+        ];
+        let reach = polar_reach(&curves);
+        // The worksheet's lobe peaks near 0.29: the rays stop just past it, not at 1.
+        assert!(top < 0.5 && (reach - 1.1 * top).abs() < 0.02 * top, "{top} {reach}");
+    }
 
     #[test]
     fn the_lobes_peak_at_the_mirror_direction() {
