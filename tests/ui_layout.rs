@@ -256,3 +256,59 @@ fn dump() {
         println!("PROBLEM {p}");
     }
 }
+
+/// At 1024x600, presenting and not, each window and panel opened on its own lies inside
+/// the window with what it is used by (its first control) on screen: the Shader window's
+/// Copy, the cost study's Run, the first experiment, the keys' help, the quiz's first
+/// answer field, Compare's pin.
+#[test]
+fn every_window_is_usable_at_1024x600() {
+    type Open = fn(&mut AppState);
+    let cases: [(&str, Open, &str); 6] = [
+        ("shader", |s| s.shader.open = true, "Copy"),
+        ("cost", |s| s.cost.open = true, "Run the study"),
+        ("things to try", |s| s.things.open = true, "1. The light just behind the surface"),
+        ("help", |s| s.ui.show_help = true, "Keyboard shortcuts"),
+        (
+            "quiz",
+            |s| {
+                s.quiz.open = true;
+                s.quiz.start(s.doc.clone());
+            },
+            "Clear answers",
+        ),
+        (
+            "compare",
+            |s| {
+                s.compare.open = true;
+                s.compare.pin(&s.doc, s.settings.precision, s.settings.pow);
+            },
+            "Pin the current scene as A again",
+        ),
+    ];
+    let screen = Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(1024.0, 600.0));
+    let mut wrong = Vec::new();
+    for presenting in [false, true] {
+        for (what, open, control) in cases {
+            let mut state = AppState::worksheet();
+            state.ui.layout.presenting = presenting;
+            open(&mut state);
+            let mut h = Harness::builder()
+                .with_size([1024.0, 600.0])
+                .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+            h.run_steps(4);
+            for w in h.root().children_recursive().filter(|n| n.accesskit_node().role() == Role::Window) {
+                if w.accesskit_node().bounding_box().is_some() && !screen.expand(1.0).contains_rect(w.rect()) {
+                    wrong.push(format!("presenting {presenting}, {what}: a window at {:?}", w.rect()));
+                }
+            }
+            match h.query_all_by_label(control).next() {
+                Some(n) if screen.contains_rect(n.rect()) => {}
+                other => {
+                    wrong.push(format!("presenting {presenting}, {what}: {control:?} at {:?}", other.map(|n| n.rect())))
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}

@@ -41,6 +41,9 @@ pub fn windows_ui(ctx: &egui::Context, state: &mut AppState, explanation: &phong
             .open(&mut open)
             .collapsible(false)
             .resizable(false)
+            // On a small screen (1024x600) the keys scroll inside the window.
+            .max_height(ctx.content_rect().height() * 0.8)
+            .vscroll(true)
             .show(ctx, help::help_ui);
         state.ui.show_help = open;
     }
