@@ -312,3 +312,21 @@ fn every_window_is_usable_at_1024x600() {
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
+
+/// The top bar keeps one row, presenting and not, down to 1024x600: its last control stands
+/// on the Scene menu's row.
+#[test]
+fn the_top_bar_keeps_one_row() {
+    for (w, hgt, presenting) in
+        [(1024.0, 600.0, false), (1024.0, 600.0, true), (1280.0, 720.0, true), (1920.0, 1080.0, false)]
+    {
+        let harness = harness_at(w, hgt, presenting);
+        let scene = harness.get_by_label("Scene").rect();
+        let last = if presenting { if w < 1150.0 { "Controls" } else { "Help (F1)" } } else { "Help (F1)" };
+        let r = harness.get_by_label(last).rect();
+        assert!(
+            (r.center().y - scene.center().y).abs() < 3.0,
+            "{w}x{hgt} presenting {presenting}: {last} at {r:?}, Scene at {scene:?}"
+        );
+    }
+}

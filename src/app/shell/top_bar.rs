@@ -25,7 +25,14 @@ pub fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         // give way (the scene's is in the Scene menu's hover). Narrower than 1150 points,
         // the app's name gives way and the controls close up.
         let presenting = state.ui.layout.presenting;
-        if presenting || ui.available_width() < 1150.0 {
+        let narrow = ui.available_width() < 1150.0;
+        // (Presenting in a narrow window, no separators either.)
+        let separator = |ui: &mut Ui| {
+            if !(presenting && narrow) {
+                ui.separator();
+            }
+        };
+        if presenting || narrow {
             ui.spacing_mut().item_spacing.x *= 0.5;
         } else {
             ui.strong("phonglab");
@@ -37,9 +44,9 @@ pub fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
         if !presenting {
             scene_name_ui(ui, &name);
         }
-        ui.separator();
+        separator(ui);
         object_and_shading_ui(ui, state);
-        ui.separator();
+        separator(ui);
         if ui
             .selectable_label(state.things.open, t!("things-to-try"))
             .on_hover_text(t!("things-to-try-hover"))
@@ -59,19 +66,25 @@ pub fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
             .ui(ui, |ui| view_menu_ui(ui, state))
             .0
             .on_hover_text(t!("view-menu-hover"));
-        ui.separator();
+        separator(ui);
         let layout = &mut state.ui.layout;
         let present = if layout.presenting { t!("leave-presenting") } else { t!("present") };
         if ui.selectable_label(layout.presenting, present).on_hover_text(t!("present-hover")).clicked() {
             layout.presenting = !layout.presenting;
         }
         if layout.presenting {
-            // In front of a class the controls are a drawer, opened from here in one click.
-            ui.toggle_value(&mut layout.drawer_open, t!("controls-drawer")).on_hover_text(t!("controls-drawer-hover"));
+            // In front of a class the controls are a drawer, opened from here in one click
+            // (named "Controls" where the bar is narrow).
+            let name = if narrow { t!("controls") } else { t!("controls-drawer") };
+            ui.toggle_value(&mut layout.drawer_open, name).on_hover_text(t!("controls-drawer-hover"));
         }
-        language_menu_ui(ui, &mut state.ui.layout);
-        if ui.selectable_label(state.ui.show_help, t!("help-button")).clicked() {
-            state.ui.show_help = !state.ui.show_help;
+        // Presenting in a narrow window (a 1024-point projector), the language and help give
+        // way too, so the bar keeps one row (F1 still opens help).
+        if !(presenting && narrow) {
+            language_menu_ui(ui, &mut state.ui.layout);
+            if ui.selectable_label(state.ui.show_help, t!("help-button")).clicked() {
+                state.ui.show_help = !state.ui.show_help;
+            }
         }
     });
 }
