@@ -20,7 +20,7 @@ pub fn luminance(c: &[f64; 4]) -> f64 {
 
 /// Below this luminance the colour is called dark (a nearly black swatch beside a lit
 /// object reads as a mistake unless it is said).
-pub const DARK: f64 = 0.12;
+pub const DARK: f64 = 0.08;
 
 /// The clamped colour in large type (two decimals), beside the title: read from the back
 /// of the room, where the swatch alone (a dark one especially) says little.
