@@ -729,7 +729,7 @@ fn export_writes_each_kind_of_code_and_import_reads_a_notebook_back() {
     for f in ["ofApp.h", "ofApp.cpp", "main.cpp"] {
         assert!(app.join("src").join(f).is_file(), "{f}");
     }
-    assert!(std::fs::read_to_string(app.join("src/ofApp.cpp")).unwrap().contains("light0.setSpotlight(25.0f, 12.0f)"));
+    assert!(std::fs::read_to_string(app.join("src/ofApp.cpp")).unwrap().contains("light0.setSpotlight(12.0f, 8.0f)"));
     // The notebook, then back to a scene: the same worked calculation.
     let nb = dir.join("spot.ipynb");
     let o = common::phonglab(&["export", "--scene", scene, "--to", "notebook", "-o", nb.to_str().unwrap()]);
