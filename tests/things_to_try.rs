@@ -130,3 +130,25 @@ fn the_window_sets_an_experiment_up_in_one_click_and_keeps_its_answer_until_aske
     h.run_steps(2);
     assert_eq!(h.state().doc, Document::default());
 }
+
+/// Every experiment's words draw in the window, in each language (the test harness panics on
+/// a character the fonts lack: a "▸" did), and each one sets its scene up.
+#[test]
+fn every_experiment_shows_in_every_language() {
+    for lang in ["en", "pt-PT", "pt-BR"] {
+        let mut state = AppState::worksheet();
+        state.ui.layout.language = Some(lang.into());
+        state.things.open = true;
+        let mut h =
+            Harness::builder().with_size([1280.0, 720.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+        h.run_steps(2);
+        let code = phonglab_core::locale::Lang::parse(lang).unwrap();
+        for (k, e) in shipped().iter().enumerate() {
+            let title = format!("{}. {}", k + 1, e.words(code).title);
+            h.get_by_label(&title).click();
+            h.run_steps(3);
+            assert_eq!(h.state().doc, e.doc, "{lang}: {title}");
+            h.get_by_label(&e.words(code).question);
+        }
+    }
+}
