@@ -152,3 +152,31 @@ fn every_experiment_shows_in_every_language() {
         }
     }
 }
+
+/// At the start (1280x720) the band under the picture and the plot offers the experiments:
+/// below both squares, every button whole inside it; one click sets the experiment up and
+/// opens the window on it.
+#[test]
+fn the_band_under_the_squares_offers_the_experiments() {
+    let mut h = Harness::builder()
+        .with_size([1280.0, 720.0])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(3);
+    let g = h.state().ui.geometry.clone();
+    let band = g.suggestions.expect("the band is offered");
+    let squares = g.pictures[0].max.y.max(g.plot.as_ref().unwrap().rect.max.y);
+    assert!(band.min.y >= squares, "{band:?} below {squares}");
+    let lang = phonglab_core::locale::Lang::En;
+    let shown: Vec<egui::Rect> =
+        shipped().iter().filter_map(|e| h.query_by_label(&e.words(lang).title).map(|n| n.rect())).collect();
+    assert!(shown.len() >= 6, "{} offered", shown.len());
+    for r in &shown {
+        assert!(band.contains_rect(*r), "{r:?} inside {band:?}");
+    }
+    let e = &shipped()[4];
+    h.get_by_label(&e.words(lang).title).click();
+    h.run_steps(3);
+    assert_eq!(h.state().doc, e.doc);
+    assert!(h.state().things.open && h.state().things.chosen == Some(4));
+    h.get_by_label(&e.words(lang).question);
+}

@@ -21,6 +21,7 @@ view-menu = View
 view-menu-hover = Panels, windows, the theme and the arithmetic
 things-to-try = Things to try
 things-to-try-hover = Experiments in one click: each sets up a scene, says what to look for and asks a question the calculation answers
+things-to-try-band = Things to try: one click sets each up
 things-to-try-intro = Click one to set up its scene (the current one is replaced; Ctrl+Z brings it back).
 things-to-try-look = What to look for
 things-to-try-question = The question

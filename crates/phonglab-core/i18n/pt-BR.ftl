@@ -21,6 +21,7 @@ view-menu = Exibir
 view-menu-hover = Painéis, janelas, o tema e a aritmética
 things-to-try = Coisas para experimentar
 things-to-try-hover = Experimentos em um clique: cada um prepara uma cena, diz o que observar e faz uma pergunta que o cálculo responde
+things-to-try-band = Coisas para experimentar: um clique prepara cada uma
 things-to-try-intro = Clique em um para preparar a cena (a atual é substituída; Ctrl+Z a traz de volta).
 things-to-try-look = O que observar
 things-to-try-question = A pergunta

@@ -21,6 +21,7 @@ view-menu = Ver
 view-menu-hover = Painéis, janelas, o tema e a aritmética
 things-to-try = Coisas a experimentar
 things-to-try-hover = Experiências num clique: cada uma prepara uma cena, diz o que observar e faz uma pergunta a que o cálculo responde
+things-to-try-band = Coisas a experimentar: um clique prepara cada uma
 things-to-try-intro = Cliquem numa para preparar a sua cena (a atual é substituída; Ctrl+Z recupera-a).
 things-to-try-look = O que observar
 things-to-try-question = A pergunta

@@ -139,6 +139,44 @@ fn chosen_ui(ui: &mut Ui, state: &mut TryState, e: &Experiment, ex: &Explanation
     asked
 }
 
+/// The shipped experiments offered in a band of the centre (under the picture and the plot):
+/// a heading and as many as fit, whole rows only, each setting its experiment up and
+/// opening the window on it. Nothing when not even the heading and one row fit.
+pub fn suggestions_ui(ui: &mut Ui, state: &mut TryState, lang: Lang) -> Option<TryAsked> {
+    let row = ui.spacing().interact_size.y + ui.spacing().item_spacing.y;
+    let heading = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
+    let bottom = ui.max_rect().max.y;
+    if ui.max_rect().height() < heading + row {
+        return None;
+    }
+    ui.label(egui::RichText::new(t!("things-to-try-band")).strong());
+    let mut asked = None;
+    ui.horizontal_wrapped(|ui| {
+        ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
+        let right = ui.max_rect().max.x;
+        for (k, e) in experiments::shipped().iter().enumerate() {
+            // (Unnumbered: the window's list numbers them.)
+            let title = e.words(lang).title.clone();
+            let font = egui::TextStyle::Button.resolve(ui.style());
+            let w = ui.fonts_mut(|f| f.layout_no_wrap(title.clone(), font, egui::Color32::WHITE).size().x)
+                + 2.0 * ui.spacing().button_padding.x;
+            // Where this button would stand: on this row, or the next; stop before a row
+            // that does not fit whole.
+            let top = if ui.cursor().min.x + w > right { ui.cursor().min.y + row } else { ui.cursor().min.y };
+            if top + row > bottom + ui.spacing().item_spacing.y {
+                break;
+            }
+            if ui.button(&title).on_hover_text(&e.words(lang).question).clicked() {
+                state.open = true;
+                state.chosen = Some(k);
+                state.answer_shown = false;
+                asked = Some(TryAsked::Load(Box::new(e.doc.clone()), e.words(lang).title.clone()));
+            }
+        }
+    });
+    asked
+}
+
 /// Where a teacher's own experiments go, and why any of theirs did not load.
 fn own_folder_ui(ui: &mut Ui, state: &mut TryState) {
     match crate::platform::storage::experiments_dir() {

@@ -8,7 +8,7 @@ use phonglab_core::t;
 use super::state::{AppState, Message};
 use super::{centre_layout, files, layout, state};
 use crate::app::model::editor::Editor;
-use crate::app::panels::{compare, lobe, result, shaded, vector_plot};
+use crate::app::panels::{compare, lobe, result, shaded, things_to_try, vector_plot};
 
 /// How many rows of widgets stand above the shaded picture, and above the plot's diagram,
 /// as heights in points (see [`centre_layout::Chrome`]).
@@ -73,10 +73,9 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     let area = ui.available_rect_before_wrap();
     let chrome = chrome(ui, state);
     let split = centre_layout::split(area, 1 + pair as usize, chrome, state.ui.layout.dividers);
-    divider_ui(ui, state, area, &split);
     let show_angles = !state.quiz.hides_answers();
     let mut geometry = state::Geometry { arrangement: Some(split.arrangement), ..Default::default() };
-    ui.scope_builder(egui::UiBuilder::new().max_rect(split.pictures).id_salt("shaded"), |ui| {
+    let shaded_used = ui.scope_builder(egui::UiBuilder::new().max_rect(split.pictures).id_salt("shaded"), |ui| {
         let now = state.now;
         let mut view = shaded::Shaded {
             edit: Editor { doc: &mut state.doc, history: &mut state.history, message: &mut state.message, now },
@@ -94,7 +93,7 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
             files::open_obj(state, &p);
         }
     });
-    ui.scope_builder(egui::UiBuilder::new().max_rect(split.beside).id_salt("beside"), |ui| {
+    let beside_used = ui.scope_builder(egui::UiBuilder::new().max_rect(split.beside).id_salt("beside"), |ui| {
         ui.horizontal_wrapped(|ui| {
             // Each button or label moves to the next row whole rather than breaking inside.
             ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
@@ -113,6 +112,30 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
             layout::Beside::Lobe => lobe::lobe_ui(ui, &state.doc.scene, eval),
         }
     });
+    // Side by side, two squares leave a band under them (both are bound by the centre's
+    // width): the things to try stand there, where a first-time user looks for what to do.
+    let used = shaded_used.response.rect.max.y.max(beside_used.response.rect.max.y);
+    let band =
+        split.arrangement == centre_layout::Arrangement::Beside && !state.ui.layout.presenting && !state.quiz.open;
+    // The divider stands between the squares (down to the band, when there is one).
+    let mut divider = split;
+    if band {
+        divider.divider.max.y = divider.divider.max.y.min(used);
+    }
+    divider_ui(ui, state, area, &divider);
+    if band {
+        let band = egui::Rect::from_min_max(egui::pos2(area.min.x, used + 8.0), area.max);
+        let lang = state.ui.layout.locale().lang;
+        let asked = ui
+            .scope_builder(egui::UiBuilder::new().max_rect(band).id_salt("try band"), |ui| {
+                things_to_try::suggestions_ui(ui, &mut state.things, lang)
+            })
+            .inner;
+        if let Some(things_to_try::TryAsked::Load(doc, title)) = asked {
+            state.load(*doc, &title);
+        }
+        geometry.suggestions = Some(band);
+    }
     ui.advance_cursor_after_rect(area);
     state.ui.geometry = geometry;
 }

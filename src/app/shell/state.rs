@@ -26,6 +26,8 @@ pub struct Geometry {
     pub arrows: Vec<crate::app::panels::shaded::ArrowOnObject>,
     /// The spotlights' cones drawn on it: each rim's bounds.
     pub cones: Vec<egui::Rect>,
+    /// The band under the squares where the things to try were offered, if they were.
+    pub suggestions: Option<egui::Rect>,
 }
 
 /// The shell's own choices: the window's arrangement, what the centre drew, the keys'
