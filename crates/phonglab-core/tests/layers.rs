@@ -49,18 +49,6 @@ fn rank(group: &str) -> Option<u32> {
     ORDER.iter().find(|(g, _)| *g == group).map(|(_, r)| *r)
 }
 
-/// Every `.rs` file under `dir`.
-fn sources(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let p = entry.unwrap().path();
-        if p.is_dir() {
-            sources(&p, out);
-        } else if p.extension().is_some_and(|e| e == "rs") {
-            out.push(p);
-        }
-    }
-}
-
 /// The first path segment after each `crate::` in `text` (macros, `crate::t!`, left out),
 /// with its line number.
 fn crate_paths(text: &str) -> Vec<(usize, String)> {
@@ -100,7 +88,7 @@ fn every_group_uses_only_the_groups_below_it_and_names_them() {
     for group in &groups {
         let own = rank(group).unwrap();
         let mut files = Vec::new();
-        sources(&src.join(group), &mut files);
+        module_graph::sources(&src.join(group), &mut files);
         for file in files {
             let text = std::fs::read_to_string(&file).unwrap();
             let shown = file.strip_prefix(&src).unwrap().display().to_string();
@@ -152,7 +140,7 @@ fn processor_specific(text: &str) -> Vec<usize> {
 fn processor_specific_code_lives_in_the_copies_modules() {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
-    sources(&src, &mut files);
+    module_graph::sources(&src, &mut files);
     let (mut wrong, mut in_copies) = (Vec::new(), 0);
     for file in files {
         let lines = processor_specific(&std::fs::read_to_string(&file).unwrap());
