@@ -33,24 +33,12 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
 /// and the menus (Scene) included: the context's style, which they read, is scaled, and
 /// this frame's root (made before) takes it too. Back to egui's sizes when not presenting.
 fn presentation_type(ctx: &egui::Context, ui: &mut Ui, presenting: bool) {
-    let base = egui::Style::default();
     let k = if presenting { layout::PRESENTATION_TEXT_SCALE } else { 1.0 };
-    let want = base.text_styles[&egui::TextStyle::Body].size * k;
-    if (ctx.global_style().text_styles[&egui::TextStyle::Body].size - want).abs() > 1e-3 {
-        ctx.global_style_mut(|s| {
-            s.text_styles = base.text_styles.clone();
-            s.spacing.interact_size = base.spacing.interact_size;
-            s.spacing.icon_width = base.spacing.icon_width;
-            s.spacing.icon_width_inner = base.spacing.icon_width_inner;
-            layout::scale_text(s, k);
-        });
+    layout::set_text_scale(ui.style_mut(), k);
+    let body = |s: &egui::Style| s.text_styles[&egui::TextStyle::Body].size;
+    if body(&ctx.global_style()) != body(ui.style()) {
+        ctx.global_style_mut(|s| layout::set_text_scale(s, k));
     }
-    let now = ctx.global_style();
-    let style = ui.style_mut();
-    style.text_styles = now.text_styles.clone();
-    style.spacing.interact_size = now.spacing.interact_size;
-    style.spacing.icon_width = now.spacing.icon_width;
-    style.spacing.icon_width_inner = now.spacing.icon_width_inner;
 }
 
 /// The frame's start: the theme and the language, the keys, a quit asked for, dropped

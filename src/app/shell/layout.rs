@@ -162,14 +162,18 @@ impl Layout {
     }
 }
 
-/// Scales every text style of `style` by `k`.
-pub fn scale_text(style: &mut egui::Style, k: f32) {
+/// Sets `style`'s text and control sizes to egui's own times `k` (1: egui's; presenting,
+/// [`PRESENTATION_TEXT_SCALE`]). From egui's sizes, not `style`'s, so applying it twice
+/// changes nothing.
+pub fn set_text_scale(style: &mut egui::Style, k: f32) {
+    let base = egui::Style::default();
+    style.text_styles = base.text_styles;
     for font in style.text_styles.values_mut() {
         font.size *= k;
     }
-    style.spacing.interact_size *= k;
-    style.spacing.icon_width *= k;
-    style.spacing.icon_width_inner *= k;
+    style.spacing.interact_size = base.spacing.interact_size * k;
+    style.spacing.icon_width = base.spacing.icon_width * k;
+    style.spacing.icon_width_inner = base.spacing.icon_width_inner * k;
 }
 
 #[cfg(test)]
