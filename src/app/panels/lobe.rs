@@ -28,7 +28,7 @@ use crate::app::widgets::palette;
 
 /// Luminance of the product of two colours' rgb.
 fn luminance(a: glam::DVec4, b: glam::DVec4) -> f64 {
-    0.2126 * a.x * b.x + 0.7152 * a.y * b.y + 0.0722 * a.z * b.z
+    palette::linear_luminance((a * b).truncate().to_array())
 }
 
 /// The lobe of one light at one incidence, in the plane of N and L.

@@ -15,7 +15,7 @@ fn fmt4(c: &[f64; 4]) -> String {
 /// How bright a colour is to the eye, 0 to 1: its relative luminance (Rec. 709 weights,
 /// on the clamped values).
 pub fn luminance(c: &[f64; 4]) -> f64 {
-    0.2126 * c[0].clamp(0.0, 1.0) + 0.7152 * c[1].clamp(0.0, 1.0) + 0.0722 * c[2].clamp(0.0, 1.0)
+    palette::linear_luminance([c[0], c[1], c[2]].map(|x| x.clamp(0.0, 1.0)))
 }
 
 /// Below this luminance the colour is called dark (a nearly black swatch beside a lit

@@ -38,6 +38,11 @@ pub fn luminance(c: Color32) -> f32 {
     0.2126 * lin(c.r()) + 0.7152 * lin(c.g()) + 0.0722 * lin(c.b())
 }
 
+/// The relative luminance of a linear rgb (GL's values, as lit): Rec. 709's weights.
+pub fn linear_luminance([r, g, b]: [f64; 3]) -> f64 {
+    0.2126 * r + 0.7152 * g + 0.0722 * b
+}
+
 /// WCAG's contrast ratio of two colours (1 to 21).
 pub fn contrast(a: Color32, b: Color32) -> f32 {
     let (la, lb) = (luminance(a), luminance(b));
