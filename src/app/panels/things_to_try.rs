@@ -16,7 +16,7 @@ use crate::io::experiments::{self, Experiment};
 pub struct TryState {
     /// The window is open.
     pub open: bool,
-    /// The experiment chosen (an index into [`TryState::all`]).
+    /// The experiment chosen: its place among the shipped experiments, then the own.
     pub chosen: Option<usize>,
     /// Its answer is shown.
     pub answer_shown: bool,
@@ -35,13 +35,13 @@ pub enum TryAsked {
 }
 
 impl TryState {
-    /// The shipped experiments, then the teacher's own.
-    pub fn all(&mut self) -> Vec<Experiment> {
-        let own = self.own.get_or_insert_with(|| match crate::platform::storage::experiments_dir() {
+    /// The teacher's own experiments and the files that did not load, read from their
+    /// folder once per opening of the window.
+    fn own(&mut self) -> &(Vec<Experiment>, Vec<String>) {
+        self.own.get_or_insert_with(|| match crate::platform::storage::experiments_dir() {
             Some(dir) => experiments::in_folder(&dir),
             None => (Vec::new(), Vec::new()),
-        });
-        experiments::shipped().iter().cloned().chain(own.0.iter().cloned()).collect()
+        })
     }
 
     /// Opens or closes the window; opening reads the teacher's folder again.
@@ -89,28 +89,31 @@ pub fn things_to_try_window_ui(
 }
 
 fn contents_ui(ui: &mut Ui, state: &mut TryState, ex: &Explanation, lang: Lang) -> Option<TryAsked> {
-    let all = state.all();
+    state.own();
+    let TryState { chosen, answer_shown, own, .. } = state;
+    let (own, refused) = own.as_ref().expect("read just above");
     let mut asked = None;
     ui.small(t!("things-to-try-intro"));
-    for (k, e) in all.iter().enumerate() {
+    // The shipped experiments, then the teacher's own.
+    for (k, e) in experiments::shipped().iter().chain(own).enumerate() {
         let words = e.words(lang);
-        let chosen = state.chosen == Some(k);
-        if ui.selectable_label(chosen, format!("{}. {}", k + 1, words.title)).on_hover_text(&e.source).clicked() {
-            state.chosen = Some(k);
-            state.answer_shown = false;
+        let is_chosen = *chosen == Some(k);
+        if ui.selectable_label(is_chosen, format!("{}. {}", k + 1, words.title)).on_hover_text(&e.source).clicked() {
+            *chosen = Some(k);
+            *answer_shown = false;
             asked = Some(TryAsked::Load(Box::new(e.doc.clone()), words.title.clone()));
         }
-        if chosen {
-            asked = chosen_ui(ui, state, e, ex, lang).or(asked);
+        if is_chosen {
+            asked = chosen_ui(ui, answer_shown, e, ex, lang).or(asked);
         }
     }
     ui.separator();
-    own_folder_ui(ui, state);
+    own_folder_ui(ui, refused);
     asked
 }
 
 /// The experiment chosen: what to look for, the question, and the answer on request.
-fn chosen_ui(ui: &mut Ui, state: &mut TryState, e: &Experiment, ex: &Explanation, lang: Lang) -> Option<TryAsked> {
+fn chosen_ui(ui: &mut Ui, shown: &mut bool, e: &Experiment, ex: &Explanation, lang: Lang) -> Option<TryAsked> {
     let words = e.words(lang);
     let mut asked = None;
     egui::Frame::group(ui.style()).show(ui, |ui| {
@@ -118,13 +121,11 @@ fn chosen_ui(ui: &mut Ui, state: &mut TryState, e: &Experiment, ex: &Explanation
         ui.label(&words.look);
         ui.label(egui::RichText::new(t!("things-to-try-question")).small().strong());
         ui.label(egui::RichText::new(&words.question).strong());
-        match (state.answer_shown, answer(e, ex)) {
-            (false, _) => {
+        match (*shown, answer(e, ex)) {
+            (false, found) => {
                 if ui.button(t!("things-to-try-show")).clicked() {
-                    state.answer_shown = true;
-                    if let Some((k, _)) = answer(e, ex) {
-                        asked = Some(TryAsked::Step(k));
-                    }
+                    *shown = true;
+                    asked = found.map(|(k, _)| TryAsked::Step(k));
                 }
             }
             (true, Some((k, value))) => {
@@ -178,7 +179,7 @@ pub fn suggestions_ui(ui: &mut Ui, state: &mut TryState, lang: Lang) -> Option<T
 }
 
 /// Where a teacher's own experiments go, and why any of theirs did not load.
-fn own_folder_ui(ui: &mut Ui, state: &mut TryState) {
+fn own_folder_ui(ui: &mut Ui, refused: &[String]) {
     match crate::platform::storage::experiments_dir() {
         Some(dir) => {
             ui.small(t!("things-to-try-own", folder = dir.display().to_string()));
@@ -187,9 +188,7 @@ fn own_folder_ui(ui: &mut Ui, state: &mut TryState) {
             ui.small(t!("things-to-try-own-none"));
         }
     }
-    if let Some((_, refused)) = &state.own {
-        for why in refused {
-            ui.small(egui::RichText::new(why).color(ui.visuals().warn_fg_color));
-        }
+    for why in refused {
+        ui.small(egui::RichText::new(why).color(ui.visuals().warn_fg_color));
     }
 }
