@@ -11,6 +11,7 @@ pub mod exercise;
 pub mod explain;
 pub mod export;
 pub mod help;
+pub mod probe;
 pub mod render;
 pub mod screenshot;
 pub mod shader;
@@ -118,6 +119,9 @@ pub enum Command {
     Explain(explain::ExplainArgs),
     /// Render the shaded view (sphere, teapot or cylinder) to a PNG.
     Render(render::RenderArgs),
+    /// Why one pixel of the shaded view is its colour: its triangle, weights, vertices or
+    /// fragment, every term, the clamp and the 8-bit rounding.
+    Probe(probe::ProbeArgs),
     /// Write exercise sheets in the worksheet's style, with scene files and answer keys.
     Exercise(exercise::ExerciseArgs),
     /// Print the shader (GLSL 3.30 or WGSL) that draws a scene's shaded view: only the stages it needs.
@@ -157,6 +161,7 @@ pub fn run(command: Command) -> ExitCode {
         Command::Shader(a) => shader::run(&a),
         Command::Bench(b) => bench::run(&b),
         Command::Render(a) => render::run(&a),
+        Command::Probe(a) => probe::run(&a),
         Command::Case(a) => case::run(&a),
         Command::Cost(a) => cost::run_args(&a),
         // The binary hands it to the window (`crate::app`), which it draws.

@@ -4,13 +4,18 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 use clap::{Args, ValueEnum};
-use phonglab_core::{EvalOptions, ObjectKind, PowFn, Shading, library, presets, t};
+use glam::DMat4;
+use phonglab_core::channels::{self, Channel, ColourMap};
+use phonglab_core::mesh::Mesh;
+use phonglab_core::render::{Job, Renderer};
+use phonglab_core::{EvalOptions, ObjectKind, PowFn, Scene, Shading, ShadingMode, library, presets, t};
 
 use super::scene_file;
 
-/// `phonglab render`.
+/// What to draw, shared by `render` and `probe`: a scene (file, preset or the benchmark's
+/// frame), its object and shading, the picture's size.
 #[derive(Args, Debug)]
-pub struct RenderArgs {
+pub struct ShadedInput {
     /// The object (default: the scene's).
     #[arg(long, value_enum)]
     pub object: Option<ObjectKind>,
@@ -23,9 +28,6 @@ pub struct RenderArgs {
     /// Image width and height in pixels.
     #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(1..=8192))]
     pub size: u32,
-    /// The PNG to write.
-    #[arg(short, long)]
-    pub output: PathBuf,
     /// A scene file (TOML); default: the worksheet's scene.
     #[arg(long)]
     pub scene: Option<PathBuf>,
@@ -51,6 +53,30 @@ pub struct RenderArgs {
     /// light's colour), or all.
     #[arg(long, value_delimiter = ',', value_enum, conflicts_with = "bench_frame")]
     pub correct: Vec<CorrectArg>,
+}
+
+/// `phonglab render`.
+#[derive(Args, Debug)]
+pub struct RenderArgs {
+    /// What to draw.
+    #[command(flatten)]
+    pub input: ShadedInput,
+    /// The PNG to write.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Draw one term of the lighting equation in false colour instead of the picture.
+    #[arg(long, value_enum, value_name = "NAME")]
+    pub channel: Option<Channel>,
+    /// The channel's light, by its place among the enabled lights (0 the first); the
+    /// colour terms sum every light when it is left out.
+    #[arg(long, value_name = "I", requires = "channel")]
+    pub light: Option<usize>,
+    /// The false colour's map.
+    #[arg(long, value_enum, default_value = "viridis", requires = "channel")]
+    pub colour_map: ColourMap,
+    /// Also write the channel's values, unclamped, as a portable float map (PFM).
+    #[arg(long, value_name = "FILE.pfm", requires = "channel")]
+    pub raw: Option<PathBuf>,
 }
 
 /// A correction of the Phong demo (`render --correct`).
@@ -80,7 +106,7 @@ impl CorrectArg {
 }
 
 /// Refuses a render of `job` into a `size` x `size` picture past the memory budget.
-fn within_budget(job: &phonglab_core::render::Job<'_>, size: u32) -> Result<()> {
+fn within_budget(job: &Job<'_>, size: u32) -> Result<()> {
     let (vertices, triangles) = (job.mesh.positions.len() as u64, job.mesh.triangle_count() as u64);
     let what = t!(
         "budget-what-render",
@@ -94,97 +120,173 @@ fn within_budget(job: &phonglab_core::render::Job<'_>, size: u32) -> Result<()> 
         .map_err(anyhow::Error::msg)
 }
 
+/// A scene and mesh ready to draw ([`ShadedInput::load`]): owns what a [`Job`] borrows.
+pub struct Loaded {
+    scene: Scene,
+    mesh: Mesh,
+    clip_from_object: DMat4,
+    mode: ShadingMode,
+    background: [f32; 3],
+    cull_back: bool,
+    options: EvalOptions,
+    /// Notes on the mesh read (an OBJ's repairs).
+    pub notes: Vec<String>,
+}
+
+impl Loaded {
+    /// The job that draws it.
+    pub fn job(&self) -> Job<'_> {
+        Job {
+            scene: &self.scene,
+            mesh: &self.mesh,
+            clip_from_object: self.clip_from_object,
+            mode: self.mode,
+            background: self.background,
+            cull_back: self.cull_back,
+            options: self.options,
+        }
+    }
+}
+
+impl ShadedInput {
+    /// Every input file named (the scene, the OBJ), for refusing an output onto one.
+    pub fn inputs(&self) -> Vec<&Path> {
+        self.scene.iter().chain(&self.obj).map(PathBuf::as_path).collect()
+    }
+
+    /// Reads the scene and builds its mesh; refuses `outputs` that are the scene's own mesh
+    /// and a picture past the memory budget.
+    pub fn load(&self, outputs: &[&Path]) -> Result<Loaded> {
+        use phonglab_core::mesh::{sphere, teapot};
+        use phonglab_core::{Document, ObjectKind, Shading};
+        let (object, shading) = (self.object, self.shading);
+        let loaded = if let Some(frame) = self.bench_frame {
+            let object = object.unwrap_or(ObjectKind::Sphere);
+            let mesh = match object {
+                ObjectKind::Sphere => sphere::glu_sphere(1.0, 50, 50),
+                ObjectKind::Teapot => teapot::glut_teapot(0.8, 7),
+                ObjectKind::Cylinder => (phonglab_core::View { object, ..Default::default() }).mesh(),
+                ObjectKind::Obj => {
+                    bail!(t!("err-bench-frame-obj"))
+                }
+            };
+            let scene = presets::bench_scene(frame);
+            let job = phonglab_core::shaded::bench_job(&scene, &mesh, shading.unwrap_or(Shading::Gouraud));
+            let (clip_from_object, mode, background) = (job.clip_from_object, job.mode, job.background);
+            let options = EvalOptions::with_pow(self.pow);
+            Loaded { scene, mesh, clip_from_object, mode, background, cull_back: self.cull, options, notes: Vec::new() }
+        } else {
+            let mut doc = match (&self.scene, self.preset.as_deref()) {
+                (Some(p), _) => scene_file(p)?,
+                (None, Some("phong-demo")) => library::phong_demo_document(),
+                (None, Some("worksheet")) | (None, None) => Document::default(),
+                (None, Some(other)) => {
+                    bail!(t!("err-unknown-preset", value = format!("{other:?}"), names = "worksheet, phong-demo"))
+                }
+            };
+            if let Some(o) = object {
+                doc.view.object = o;
+            }
+            if let Some(obj) = &self.obj {
+                doc.view.object = ObjectKind::Obj;
+                doc.view.obj = Some(obj.display().to_string());
+            }
+            if let Some(s) = shading {
+                doc.view.shading = s;
+            }
+            if let Some(f) = self.frame {
+                doc.view.spin_degrees = 0.5 * f as f64;
+            }
+            for c in &self.correct {
+                for d in c.departures() {
+                    d.correct(&mut doc);
+                }
+            }
+            doc.validate().context(t!("err-scene-to-render"))?;
+            let mut notes = Vec::new();
+            if doc.view.object == ObjectKind::Obj {
+                // The scene's own mesh is an input too.
+                let mesh = doc.view.obj.as_deref().map(Path::new);
+                crate::io::same_file::refuse_output_onto_input(outputs, mesh.as_slice()).map_err(anyhow::Error::msg)?;
+                notes = doc.view.obj_mesh()?.notes.clone();
+            }
+            let mesh = doc.view.mesh();
+            let setup = doc.shaded_setup(self.pow);
+            let job = setup.job(&mesh);
+            let (clip_from_object, mode, background, options) =
+                (job.clip_from_object, job.mode, job.background, job.options);
+            Loaded {
+                scene: setup.scene,
+                mesh,
+                clip_from_object,
+                mode,
+                background,
+                cull_back: self.cull,
+                options,
+                notes,
+            }
+        };
+        within_budget(&loaded.job(), self.size)?;
+        Ok(loaded)
+    }
+}
+
 /// Runs `phonglab render`.
 pub fn run(a: &RenderArgs) -> Result<()> {
-    use phonglab_core::mesh::{sphere, teapot};
-    use phonglab_core::render::Renderer;
-    use phonglab_core::{Document, ObjectKind, Shading};
-    let (object, shading) = (a.object, a.shading);
-    let size = a.size as usize;
-    let inputs: Vec<&Path> = a.scene.iter().chain(&a.obj).map(PathBuf::as_path).collect();
-    crate::io::same_file::refuse_output_onto_input(&[&a.output], &inputs).map_err(anyhow::Error::msg)?;
-    crate::io::atomic_write::check_file_destination(&a.output)?;
-    let mut notes = Vec::new();
-    let bench_scene;
-    let bench_mesh;
-    let setup;
-    let doc_mesh;
-    let job = if let Some(frame) = a.bench_frame {
-        let object = object.unwrap_or(ObjectKind::Sphere);
-        bench_mesh = match object {
-            ObjectKind::Sphere => sphere::glu_sphere(1.0, 50, 50),
-            ObjectKind::Teapot => teapot::glut_teapot(0.8, 7),
-            ObjectKind::Cylinder => (phonglab_core::View { object, ..Default::default() }).mesh(),
-            ObjectKind::Obj => {
-                bail!(t!("err-bench-frame-obj"))
-            }
-        };
-        bench_scene = presets::bench_scene(frame);
-        let mut job = phonglab_core::shaded::bench_job(&bench_scene, &bench_mesh, shading.unwrap_or(Shading::Gouraud));
-        job.cull_back = a.cull;
-        job.options = EvalOptions::with_pow(a.pow);
-        job
-    } else {
-        let mut doc = match (&a.scene, a.preset.as_deref()) {
-            (Some(p), _) => scene_file(p)?,
-            (None, Some("phong-demo")) => library::phong_demo_document(),
-            (None, Some("worksheet")) | (None, None) => Document::default(),
-            (None, Some(other)) => {
-                bail!(t!("err-unknown-preset", value = format!("{other:?}"), names = "worksheet, phong-demo"))
-            }
-        };
-        if let Some(o) = object {
-            doc.view.object = o;
-        }
-        if let Some(obj) = &a.obj {
-            doc.view.object = ObjectKind::Obj;
-            doc.view.obj = Some(obj.display().to_string());
-        }
-        if let Some(s) = shading {
-            doc.view.shading = s;
-        }
-        if let Some(f) = a.frame {
-            doc.view.spin_degrees = 0.5 * f as f64;
-        }
-        for c in &a.correct {
-            for d in c.departures() {
-                d.correct(&mut doc);
-            }
-        }
-        doc.validate().context(t!("err-scene-to-render"))?;
-        if doc.view.object == ObjectKind::Obj {
-            // The scene's own mesh is an input too.
-            let mesh = doc.view.obj.as_deref().map(Path::new);
-            crate::io::same_file::refuse_output_onto_input(&[&a.output], mesh.as_slice())
-                .map_err(anyhow::Error::msg)?;
-            notes = doc.view.obj_mesh()?.notes.clone();
-        }
-        doc_mesh = doc.view.mesh();
-        setup = doc.shaded_setup(a.pow);
-        let mut job = setup.job(&doc_mesh);
-        job.cull_back = a.cull;
-        job
-    };
-    within_budget(&job, a.size)?;
+    let outputs: Vec<&Path> = std::iter::once(a.output.as_path()).chain(a.raw.as_deref()).collect();
+    crate::io::same_file::refuse_output_onto_input(&outputs, &a.input.inputs()).map_err(anyhow::Error::msg)?;
+    if let Some(raw) = &a.raw {
+        crate::io::same_file::refuse_output_onto_input(&[raw], &[&a.output]).map_err(anyhow::Error::msg)?;
+    }
+    for o in &outputs {
+        crate::io::atomic_write::check_file_destination(o)?;
+    }
+    let loaded = a.input.load(&outputs)?;
+    let job = loaded.job();
+    let size = a.input.size as usize;
     let mut r = Renderer::new();
+    r.keep_visibility(a.channel.is_some());
     let t = std::time::Instant::now();
     let (img, stats) = r.render(&job, size, size)?;
     let ms = t.elapsed().as_secs_f64() * 1e3;
-    crate::io::image::write_png(&a.output, img.width, img.height, &img.rgba)?;
+    let (width, height, coverage) = (img.width, img.height, img.coverage());
+    match a.channel {
+        None => crate::io::image::write_png(&a.output, width, height, &img.rgba)?,
+        Some(channel) => {
+            let image = channels::channel_image(&r, &job, channel, a.light)?;
+            let bg = job.background.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+            crate::io::image::write_png(&a.output, width, height, &image.false_colour(a.colour_map, bg))?;
+            if let Some(raw) = &a.raw {
+                crate::io::atomic_write::write(raw, &channels::pfm(&image))?;
+            }
+            let (lo, hi) = image.range();
+            let number = |x: f64| phonglab_core::locale::num(x, 4);
+            eprintln!(
+                "{}",
+                t!(
+                    "render-channel-summary",
+                    channel = phonglab_core::locale::tr(channel.message_id()),
+                    map = format!("{:?}", a.colour_map).to_lowercase(),
+                    low = number(lo),
+                    high = number(hi)
+                )
+            );
+        }
+    }
     eprintln!(
         "{}",
-        phonglab_core::t!(
+        t!(
             "render-summary",
             path = a.output.display().to_string(),
-            size = format!("{}x{}", img.width, img.height),
+            size = format!("{width}x{height}"),
             triangles = stats.triangles,
-            covered = phonglab_core::locale::decimal(&format!("{:.1}", 100.0 * img.coverage())),
+            covered = phonglab_core::locale::decimal(&format!("{:.1}", 100.0 * coverage)),
             evaluations = stats.evaluations,
             ms = phonglab_core::locale::decimal(&format!("{ms:.1}"))
         )
     );
-    for note in notes {
-        eprintln!("{}", phonglab_core::t!("note-line", note = note));
+    for note in &loaded.notes {
+        eprintln!("{}", t!("note-line", note = note));
     }
     Ok(())
 }

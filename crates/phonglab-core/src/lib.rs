@@ -51,7 +51,7 @@ pub use equation::{breakdown, explain, lighting, validate};
 pub use formats::{document, escape, glref, library};
 pub use model::{camera, error, materials, presets, rules, scene, transform, view, vocabulary};
 pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
-pub use raster::{render, shaded};
+pub use raster::{channels, probe, probe_report, render, shaded};
 pub use specialise::{batch, effects, lighter, plan};
 pub use study::{bench, cost, difference};
 pub use teach::{exercise, quiz, shader};

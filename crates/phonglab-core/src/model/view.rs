@@ -130,7 +130,8 @@ pub enum FlatNormal {
 
 /// How the renderer spreads the light over a triangle: one choice, where the view (and its
 /// scene file) keeps two, the shading and, for Flat, its normal ([`ShadingMode::of`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum ShadingMode {
     /// Lit per vertex, the colours interpolated.
     #[default]

@@ -165,6 +165,11 @@ impl Renderer {
         self.keep_visibility = keep;
     }
 
+    /// The last frame's width and height.
+    pub fn size(&self) -> (usize, usize) {
+        (self.image.width, self.image.height)
+    }
+
     /// The lighting plan of the last frame.
     pub fn lighter(&self) -> Option<&Lighter> {
         self.lighter.as_ref()
@@ -293,26 +298,60 @@ pub struct Surface {
 }
 
 impl Renderer {
-    /// The rasterised triangle at pixel (`x`, `y`) of the last frame, if covered: from the
-    /// kept visibility, or else by drawing the pixel's band again.
-    fn triangle_at(&self, x: usize, y: usize) -> Option<u32> {
+    /// The rasterised triangle at each pixel of row `y` of the last frame
+    /// ([`NO_TRIANGLE`] where uncovered): from the kept visibility, or else by drawing the
+    /// row's band again.
+    fn row_triangles(&self, y: usize) -> Option<Vec<u32>> {
         let img = &self.image;
-        if x >= img.width || y >= img.height {
+        if y >= img.height {
             return None;
         }
-        let r = if img.raster.is_empty() {
-            let b = y / visibility::BAND;
-            let (y_start, band_rows) = (b * visibility::BAND, visibility::BAND.min(img.height - b * visibility::BAND));
-            let bin = self.bins.get(b)?;
-            visibility::with_band_buffer(band_rows * img.width, |depth, tri| {
-                let band = visibility::Band { y_start: y_start as i32, width: img.width, depth, raster: &mut *tri };
-                copies::draw_band(self.isa, &self.setup, bin, band);
-                tri.get((y - y_start) * img.width + x).copied()
-            })?
+        let w = img.width;
+        if !img.raster.is_empty() {
+            return Some(img.raster[y * w..(y + 1) * w].to_vec());
+        }
+        let b = y / visibility::BAND;
+        let (y_start, band_rows) = (b * visibility::BAND, visibility::BAND.min(img.height - b * visibility::BAND));
+        let bin = self.bins.get(b)?;
+        visibility::with_band_buffer(band_rows * w, |depth, tri| {
+            let band = visibility::Band { y_start: y_start as i32, width: w, depth, raster: &mut *tri };
+            copies::draw_band(self.isa, &self.setup, bin, band);
+            tri.get((y - y_start) * w..(y - y_start + 1) * w).map(<[u32]>::to_vec)
+        })
+    }
+
+    /// The rasterised triangle at pixel (`x`, `y`) of the last frame, if covered.
+    fn triangle_at(&self, x: usize, y: usize) -> Option<u32> {
+        if x >= self.image.width {
+            return None;
+        }
+        let r = if self.image.raster.is_empty() {
+            *self.row_triangles(y)?.get(x)?
         } else {
-            img.raster[y * img.width + x]
+            *self.image.raster.get(y * self.image.width + x)?
         };
         (r != NO_TRIANGLE).then_some(r)
+    }
+
+    /// Pixel (`x`, `y`) of the last frame (drawn from `job`), shaded again alone by the
+    /// resolve's own arithmetic ([`resolve::PixelSample`]): its triangle, barycentrics and
+    /// the colour and bytes the frame stored there. `None` where uncovered or outside.
+    pub fn sample(&self, job: &Job<'_>, x: usize, y: usize) -> Option<resolve::PixelSample> {
+        if x >= self.image.width {
+            return None;
+        }
+        let row = self.row_triangles(y)?;
+        if row[x] == NO_TRIANGLE {
+            return None;
+        }
+        let input = resolve::PixelInput {
+            job,
+            setup: &self.setup,
+            lighter: self.lighter.as_ref()?,
+            shared: &self.scratch.tris,
+            row: &row,
+        };
+        resolve::shade_pixel(&input, x, y)
     }
 
     /// What pixel `i` (row-major, rows from the top) of the last frame shows, if covered.

@@ -59,7 +59,7 @@ impl ColorPlanes {
     /// The planes at the centre of pixel (`px`, `py`), rounded to f32, and their f32 steps
     /// per pixel along the row.
     #[inline(always)]
-    fn row(&self, px: usize, py: usize) -> ([f32; 5], [f32; 5]) {
+    pub(super) fn row(&self, px: usize, py: usize) -> ([f32; 5], [f32; 5]) {
         let (one, half) = (1i64 << SUBPIXEL_BITS, 1i64 << (SUBPIXEL_BITS - 1));
         // The pixel's offset from vertex 0, in pixels (exact: integers over 256).
         let inv_one = 1.0 / one as f64;
@@ -81,7 +81,7 @@ impl ColorPlanes {
 /// multiply-add), so the same bits.
 #[inline(always)]
 #[allow(clippy::needless_range_loop)] // lanes index several arrays; the loop vectorises
-fn gouraud_block(start: &[f32; 5], step: &[f32; 5], k0: usize) -> [[f32; LANES]; 4] {
+pub(super) fn gouraud_block(start: &[f32; 5], step: &[f32; 5], k0: usize) -> [[f32; LANES]; 4] {
     let mut kf = [0.0f32; LANES];
     let mut s = [0.0f32; LANES];
     for j in 0..LANES {

@@ -27,7 +27,7 @@
 //!
 //! The parts: `pixels` (blocks of eight pixels to bytes), `runs` (runs of one triangle and
 //! their weights), `attributes` (per triangle, once a frame), `gouraud` (colour planes),
-//! `fragments` (per-pixel lighting), `picking`; this file shades a band with them.
+//! `fragments` (per-pixel lighting), `picking`, `sample` (one pixel again, for the probe); this file shades a band with them.
 
 mod attributes;
 mod fragments;
@@ -35,6 +35,7 @@ mod gouraud;
 mod picking;
 mod pixels;
 mod runs;
+mod sample;
 
 use attributes::{TriangleAttributes, triangle_attributes};
 use fragments::{BATCH, flat_fragments, light_fragments};
@@ -49,6 +50,8 @@ pub use gouraud::ColorPlanes;
 pub(crate) use picking::original_barycentrics;
 pub use pixels::LANES;
 pub(in crate::raster::render) use pixels::ResolveLanes;
+pub use sample::PixelSample;
+pub(in crate::raster::render) use sample::{PixelInput, shade_pixel};
 
 use super::setup::{RasterTri, Setup};
 use super::{Job, NO_TRIANGLE};
@@ -60,7 +63,7 @@ use crate::specialise::lighter::Lighter;
 #[derive(Default)]
 pub struct Scratch {
     bands: Vec<Fragments>,
-    tris: TriangleAttributes,
+    pub(super) tris: TriangleAttributes,
 }
 
 /// What every band's resolve shares, computed once per frame (`prepare`).
