@@ -10,6 +10,7 @@ pub mod export;
 pub mod files;
 pub mod help;
 pub mod lobe;
+pub mod probe;
 pub mod quiz;
 pub mod result;
 pub mod shaded;

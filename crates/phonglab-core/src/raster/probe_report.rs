@@ -113,18 +113,15 @@ fn terms_lines(p: &Probe, out: &mut Vec<ReportLine>) {
     out.push(line(label, name, numbers(&p.terms.scene_ambient), 1));
     for l in &p.terms.lights {
         out.push(line(t!("probe-light", index = l.index as i64), "", String::new(), 0));
-        let scalars = format!(
-            "{} = {}, {} = {}, {} = {}, {} = {}",
-            Quantity::Attenuation.name(),
-            num(l.attenuation, 4),
-            Quantity::Spot.name(),
-            num(l.spot, 4),
-            Quantity::CosTheta.name(),
-            num(l.n_dot_l, 4),
-            Quantity::CosBeta.name(),
-            num(l.n_dot_h, 4)
-        );
-        out.push(line(tr("probe-factors"), "", scalars, 1));
+        for (qq, v) in [
+            (Quantity::Attenuation, l.attenuation),
+            (Quantity::Spot, l.spot),
+            (Quantity::CosTheta, l.n_dot_l),
+            (Quantity::CosBeta, l.n_dot_h),
+        ] {
+            let (label, name) = q(qq);
+            out.push(line(label, name, num(v, 4), 1));
+        }
         for (qq, v) in
             [(Quantity::Ambient, l.ambient), (Quantity::Diffuse, l.diffuse), (Quantity::Specular, l.specular)]
         {

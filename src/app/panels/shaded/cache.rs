@@ -9,6 +9,7 @@ use phonglab_core::mesh::Mesh;
 use phonglab_core::render::Renderer;
 use phonglab_core::{Document, EvalOptions, PowFn, Scene, Shading, View};
 
+use crate::app::panels::shaded::channel_view::ChannelView;
 use crate::app::panels::shaded::gpu::GpuImage;
 
 /// One picture's renderer, mesh and texture, kept between frames.
@@ -63,6 +64,8 @@ pub struct ShadedCache {
     pub main: ViewCache,
     /// The corrected picture (the right half of the comparison).
     pub corrected: ViewCache,
+    /// The term shown instead of the picture, when one is.
+    pub channel: ChannelView,
 }
 
 impl ShadedCache {
@@ -73,6 +76,11 @@ impl ShadedCache {
 }
 
 impl ViewCache {
+    /// The last CPU picture's pixels (RGBA8, [`ViewCache::image_px`] square).
+    pub fn rgba(&self) -> &[u8] {
+        &self.rgba
+    }
+
     /// The side of the last picture, in pixels (0 before the first).
     pub fn image_px(&self) -> usize {
         self.texture.as_ref().map_or(0, |t| t.size()[0])

@@ -20,6 +20,10 @@ pub struct ShadedOptions {
     pub obj_path: String,
     /// View options are open (under the toolbar).
     pub options_open: bool,
+    /// The pixel probe.
+    pub probe: crate::app::panels::probe::ProbeState,
+    /// The term shown instead of the picture, if one is.
+    pub channel: Option<phonglab_core::channels::Channel>,
 }
 
 /// What the shaded view reads and writes, borrowed from the shell: the document (edited

@@ -11,6 +11,7 @@
 
 mod arrow_on_object;
 pub mod cache;
+pub mod channel_view;
 pub mod context;
 pub mod gpu;
 pub mod heat_map;
@@ -39,5 +40,26 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut ShadedCache, e
     let shown = pictures::pictures_ui(ui, state, cache);
     let rects = std::iter::once(shown.response.rect).chain(shown.second).collect();
     let (arrows, cones) = overlay::interaction_ui(ui, state, cache, &shown, eval);
+    overlay::probe_ui(ui, state, cache, &shown);
+    let asked = crate::app::panels::probe::probe_window_ui(ui.ctx(), &mut state.view_options.probe);
+    if let Some(i) = asked.vertex {
+        open_vertex(state, cache, i);
+    }
     Asked { rects, open_obj, arrows, cones }
+}
+
+/// Makes mesh vertex `i` of the view the worked calculation's vertex (as a click on the
+/// surface does), saying so.
+fn open_vertex(state: &mut Shaded<'_>, cache: &mut ShadedCache, i: usize) {
+    let mesh = mesh_for(&mut cache.main.mesh, &state.edit.doc.view);
+    let (Some(p), Some(n)) = (mesh.positions.get(i), mesh.normals.get(i)) else { return };
+    let c = state.edit.doc.with_vertex_as_shaded(phonglab_core::Vertex::from_f32(*p, *n));
+    if state.edit.apply(c) {
+        let object = state.edit.doc.view.object.label().to_lowercase();
+        *state.edit.message = Some(crate::app::model::message::Message::Info(phonglab_core::t!(
+            "picked-vertex",
+            index = i.to_string(),
+            object = object
+        )));
+    }
 }

@@ -52,7 +52,9 @@ pub(super) fn interaction_ui(
         c.view.camera = cam;
         state.edit.apply(c);
     }
+    // With the probe on, a click pins the probe's pixel instead (`probe_ui`).
     if resp.clicked()
+        && !state.view_options.probe.on
         && let Some(p) = resp.interact_pointer_pos()
     {
         let rel = (p - resp.rect.min) / size;
@@ -75,6 +77,69 @@ pub(super) fn interaction_ui(
         }
     }
     (arrows, cones)
+}
+
+/// The pixel of a picture `px` pixels square, drawn `shown.size` points at
+/// `shown.response.rect`, under the screen point `p`.
+fn pixel_at(shown: &Shown, p: egui::Pos2) -> [usize; 2] {
+    let rel = (p - shown.response.rect.min) / shown.size;
+    let px = shown.px;
+    [((rel.x * px as f32) as usize).min(px - 1), ((rel.y * px as f32) as usize).min(px - 1)]
+}
+
+/// The pixel probe on the picture: the pixel under the pointer (or the one clicked, pinned)
+/// probed again whenever the picture or the pixel changes, and marked.
+pub(super) fn probe_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut ShadedCache, shown: &Shown) {
+    if !state.view_options.probe.on {
+        return;
+    }
+    let resp = &shown.response;
+    let probe = &mut state.view_options.probe;
+    if resp.clicked()
+        && let Some(p) = resp.interact_pointer_pos()
+    {
+        (probe.at, probe.pinned) = (Some((pixel_at(shown, p), shown.px)), true);
+    } else if !probe.pinned
+        && let Some(p) = resp.hover_pos()
+    {
+        probe.at = Some((pixel_at(shown, p), shown.px));
+    }
+    // A pinned pixel of a picture since drawn at another size: the same place on it.
+    if let Some((p, old)) = probe.at
+        && old != shown.px
+    {
+        let scale = |c: usize| (((c as f64 + 0.5) * shown.px as f64 / old as f64) as usize).min(shown.px - 1);
+        probe.at = Some((p.map(scale), shown.px));
+    }
+    let Some(([x, y], px)) = probe.at else { return };
+    // The probe reads the CPU renderer's last frame: drawn first when the GPU drew the
+    // picture (once for each new picture).
+    if let Err(e) = cache.main.render(ui.ctx(), state.edit.doc, state.pow, px, "shaded view") {
+        *state.edit.message = Some(Message::Refused(format!("{}: {e}", t!("shaded-cannot-render"))));
+        return;
+    }
+    let probe = &mut state.view_options.probe;
+    if probe.stale(cache.main.generation) {
+        let mesh = mesh_for(&mut cache.main.mesh, &state.edit.doc.view).clone();
+        let setup = state.edit.doc.shaded_setup(state.pow);
+        let job = setup.job(&mesh);
+        probe.lines = match phonglab_core::probe::probe(&cache.main.renderer, &job, x, y) {
+            Ok(Some(p)) => phonglab_core::probe_report::report(&p),
+            Ok(None) | Err(_) => Vec::new(),
+        };
+        probe.made_for = Some(([x, y], px, cache.main.generation));
+    }
+    // The mark: a ring around the pixel, with a cross through it.
+    let centre = resp.rect.min + egui::vec2((x as f32 + 0.5) / px as f32, (y as f32 + 0.5) / px as f32) * shown.size;
+    let painter = ui.painter_at(resp.rect);
+    for (width, colour) in [(3.0, Color32::BLACK), (1.5, Color32::WHITE)] {
+        let stroke = egui::Stroke::new(width, colour);
+        painter.circle_stroke(centre, 6.0, stroke);
+        painter.line_segment([centre - egui::vec2(11.0, 0.0), centre - egui::vec2(6.0, 0.0)], stroke);
+        painter.line_segment([centre + egui::vec2(6.0, 0.0), centre + egui::vec2(11.0, 0.0)], stroke);
+        painter.line_segment([centre - egui::vec2(0.0, 11.0), centre - egui::vec2(0.0, 6.0)], stroke);
+        painter.line_segment([centre + egui::vec2(0.0, 6.0), centre + egui::vec2(0.0, 11.0)], stroke);
+    }
 }
 
 /// Where the shaded view's image is, and how object and eye space map onto it.

@@ -5,7 +5,8 @@ use egui::{Sense, Ui};
 use phonglab_core::library::DemoDeparture;
 use phonglab_core::{Document, t};
 
-use super::cache::{DrawnBy, ShadedCache, ViewCache};
+use super::cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
+use super::channel_view::{LEGEND_HEIGHT, legend_ui};
 use super::context::{Shaded, corrected_document};
 use super::gpu::{self, GpuImage};
 use super::heat_map::heat_map_ui;
@@ -36,7 +37,9 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
     let width = if beside { (avail.x - 8.0) / 2.0 } else { avail.x };
     // Room for the caption's one line above the image (cut to the picture's width, whole in
     // its hover): a caption that wrapped took the picture's height.
-    let side = width.min(avail.y - ui.text_style_height(&egui::TextStyle::Small) - 8.0).max(64.0);
+    let channel = state.view_options.channel;
+    let legend = if channel.is_some() { LEGEND_HEIGHT } else { 0.0 };
+    let side = width.min(avail.y - ui.text_style_height(&egui::TextStyle::Small) - 8.0 - legend).max(64.0);
     let ppp = ui.ctx().pixels_per_point();
     let px = ((side * ppp) as usize).clamp(64, 1024);
     // One texel a screen pixel (no resampling), unless the view is wider than 1024 pixels.
@@ -60,9 +63,22 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
         "{} {}: {}{}",
         state.edit.doc.view.object.label(),
         state.edit.doc.view.shading.label(),
-        drawn_caption(&cache.main),
+        match channel {
+            Some(c) => t!("channel-caption", channel = phonglab_core::locale::tr(c.message_id())),
+            None => drawn_caption(&cache.main),
+        },
         if corrected.is_some() { t!("the-demos-own") } else { String::new() }
     );
+    let channel_texture = channel.and_then(|c| {
+        let mesh = mesh_for(&mut cache.main.mesh, &state.edit.doc.view).clone();
+        match cache.channel.texture(ui.ctx(), state.edit.doc, &mesh, state.pow, c) {
+            Ok(texture) => Some((c, texture.id())),
+            Err(e) => {
+                *state.edit.message = Some(Message::Refused(format!("{}: {e}", t!("shaded-cannot-render"))));
+                None
+            }
+        }
+    });
     let mut second = None;
     let resp = ui
         .horizontal_top(|ui| {
@@ -71,9 +87,15 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
                     // Captions wrap within the picture's width rather than widen its column.
                     ui.set_max_width(side);
                     let label = caption_ui(ui, &caption);
-                    let picture = picture_ui(ui, &cache.main, main_gpu.take(), size, Sense::click_and_drag())
-                        .on_hover_text(t!("picture-hover"))
-                        .labelled_by(label.id);
+                    let picture = match channel_texture {
+                        Some((_, id)) => ui.add(egui::Image::new((id, size)).sense(Sense::click_and_drag())),
+                        None => picture_ui(ui, &cache.main, main_gpu.take(), size, Sense::click_and_drag()),
+                    }
+                    .on_hover_text(t!("picture-hover"))
+                    .labelled_by(label.id);
+                    if let Some((c, _)) = channel_texture {
+                        legend_ui(ui, c, cache.channel.range, side);
+                    }
                     crate::app::widgets::fields::landmark(ui.ctx(), "shaded-picture", picture.rect);
                     picture
                 })

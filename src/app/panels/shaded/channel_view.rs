@@ -1,0 +1,98 @@
+//! One term of the lighting equation in place of the picture (`phonglab render --channel`
+//! in the window): its false-colour image, kept until the scene, the view or the channel
+//! changes, and its legend, a colour bar with the numbers at its ends and middle.
+
+use egui::{Color32, ColorImage, TextureHandle, TextureOptions, Ui};
+use phonglab_core::channels::{self, Channel, ColourMap};
+use phonglab_core::mesh::Mesh;
+use phonglab_core::render::Renderer;
+use phonglab_core::{Document, PowFn, locale, t};
+
+/// The channel image's side in pixels: enough to read a term's shape, small enough to
+/// compute on every edit (each pixel is the f64 engine's worked breakdown).
+pub const CHANNEL_PX: usize = if crate::platform::threads::BACKGROUND { 192 } else { 128 };
+
+/// The legend's height under the picture, in points.
+pub const LEGEND_HEIGHT: f32 = 30.0;
+
+/// The last channel image and what it shows.
+#[derive(Default)]
+pub struct ChannelView {
+    key: Option<(Document, PowFn, Channel)>,
+    texture: Option<TextureHandle>,
+    /// The false colour's range.
+    pub range: (f64, f64),
+    renderer: Renderer,
+}
+
+impl ChannelView {
+    /// The texture of `channel` for `doc`'s shaded view (of `mesh`, the view's), made
+    /// again when either changed.
+    pub fn texture(
+        &mut self,
+        ctx: &egui::Context,
+        doc: &Document,
+        mesh: &Mesh,
+        pow: PowFn,
+        channel: Channel,
+    ) -> Result<&TextureHandle, String> {
+        let key = (doc.clone(), pow, channel);
+        if self.key.as_ref() != Some(&key) || self.texture.is_none() {
+            let setup = doc.shaded_setup(pow);
+            let job = setup.job(mesh);
+            self.renderer.keep_visibility(true);
+            self.renderer.render(&job, CHANNEL_PX, CHANNEL_PX).map_err(|e| e.to_string())?;
+            let image = channels::channel_image(&self.renderer, &job, channel, None).map_err(|e| e.to_string())?;
+            let bg = job.background.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+            let rgba = image.false_colour(ColourMap::Viridis, bg);
+            self.range = image.range();
+            let picture = ColorImage::from_rgba_unmultiplied([CHANNEL_PX, CHANNEL_PX], &rgba);
+            match &mut self.texture {
+                Some(t) => t.set(picture, TextureOptions::LINEAR),
+                None => self.texture = Some(ctx.load_texture("term channel", picture, TextureOptions::LINEAR)),
+            }
+            self.key = Some(key);
+        }
+        Ok(self.texture.as_ref().expect("set just above"))
+    }
+}
+
+/// The legend under a channel's picture, `width` points wide: the colour bar (viridis; the
+/// normal's axes as red, green and blue) with its range's ends and middle.
+pub fn legend_ui(ui: &mut Ui, channel: Channel, range: (f64, f64), width: f32) -> egui::Response {
+    let (rect, resp) = ui.allocate_exact_size(egui::vec2(width, LEGEND_HEIGHT), egui::Sense::hover());
+    let bar = egui::Rect::from_min_size(rect.min, egui::vec2(width, 10.0));
+    let painter = ui.painter_at(rect);
+    let steps = 64;
+    for i in 0..steps {
+        let t = (i as f64 + 0.5) / steps as f64;
+        let c = if channel == Channel::Normal {
+            let v = (t * 255.0) as u8;
+            Color32::from_rgb(v, v, v)
+        } else {
+            let [r, g, b] = ColourMap::Viridis.at(t);
+            Color32::from_rgb(r, g, b)
+        };
+        let x0 = bar.left() + width * i as f32 / steps as f32;
+        let x1 = bar.left() + width * (i + 1) as f32 / steps as f32;
+        painter.rect_filled(egui::Rect::from_x_y_ranges(x0..=x1 + 0.5, bar.y_range()), 0.0, c);
+    }
+    let (lo, hi) = range;
+    let text = ui.visuals().text_color();
+    let font = egui::TextStyle::Small.resolve(ui.style());
+    let y = bar.bottom() + 2.0;
+    for (t, align) in [(0.0, egui::Align2::LEFT_TOP), (0.5, egui::Align2::CENTER_TOP), (1.0, egui::Align2::RIGHT_TOP)] {
+        let v = lo + (hi - lo) * t;
+        let x = bar.left() + width * t as f32;
+        painter.text(egui::pos2(x, y), align, locale::num(v, 3), font.clone(), text);
+    }
+    let what = match channel {
+        Channel::Normal => t!("channel-legend-normal"),
+        c if c.components() == 3 => t!("channel-legend-luminance", channel = phonglab_core::locale::tr(c.message_id())),
+        c => phonglab_core::locale::tr(c.message_id()),
+    };
+    let described =
+        t!("channel-legend-range", what = what.clone(), low = locale::num(lo, 3), high = locale::num(hi, 3));
+    resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &described));
+    resp.on_hover_text(what)
+}

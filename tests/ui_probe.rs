@@ -1,0 +1,104 @@
+//! The pixel probe and the term channels in the window, driven headless: the probe follows
+//! the pointer, a click pins it, its window tells the pixel's stored bytes (the picture's,
+//! read from the view's own pixels) and lies on screen clear of the picture; a vertex's line
+//! opens its calculation; a channel replaces the picture with its false colour and a legend
+//! of the picture's width under it.
+
+mod common;
+
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT, Queryable};
+use phonglab::app::{AppState, app_ui};
+use phonglab_core::channels::Channel;
+
+fn harness_at(w: f32, h: f32) -> Harness<'static, AppState> {
+    let mut h = Harness::builder()
+        .with_size([w, h])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(3);
+    h
+}
+
+/// The shaded picture's rect (its caption names the object and shading).
+fn picture(h: &Harness<'static, AppState>) -> egui::Rect {
+    h.state().ui.geometry.pictures[0]
+}
+
+fn probe_at(w: f32, ht: f32) {
+    let mut h = harness_at(w, ht);
+    h.get_by_role_and_label(Role::CheckBox, "Probe").click();
+    h.run_steps(3);
+    assert!(h.state().view_options.probe.on);
+    let window = h.get_by_label("Pixel probe").rect();
+    assert!(h.query_by_label("Point at the shaded picture.").is_some());
+    // Pin the pixel at the picture's centre.
+    let rect = picture(&h);
+    h.hover_at(rect.center());
+    h.run_steps(2);
+    h.event(egui::Event::PointerButton {
+        pos: rect.center(),
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: Default::default(),
+    });
+    h.event(egui::Event::PointerButton {
+        pos: rect.center(),
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: Default::default(),
+    });
+    h.run_steps(4);
+    let probe = h.state().view_options.probe.clone();
+    assert!(probe.pinned, "a click pins the pixel");
+    let ([x, y], px) = probe.at.expect("a pixel");
+    assert!(x.abs_diff(px / 2) <= 1 && y.abs_diff(px / 2) <= 1, "({x}, {y}) of {px}");
+    // The stored bytes the window shows are the picture's at that pixel.
+    let rgba = h.state().shaded.main.rgba();
+    let i = (y * px + x) * 4;
+    let want = format!("({}, {}, {}, {})", rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]);
+    let stored = h.get_by_label(&want).rect();
+    assert!(h.query_by_label("Stored, clamped and rounded to 8 bits").is_some());
+    assert!(h.query_by_label("Perspective-correct weights").is_some());
+    // The window lies on screen, to the right of the picture.
+    let window_now = h.get_by_label("Pixel probe").rect();
+    let screen = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(w, ht));
+    assert!(screen.contains_rect(window_now.expand(-1.0)) || screen.contains(window_now.min), "{window_now:?}");
+    assert!(window.left() >= rect.right() - 1.0, "the window {window:?} clear of the picture {rect:?}");
+    assert!(stored.left() > rect.right() && stored.bottom() <= ht, "{stored:?}");
+    // The pointer moving away leaves the pinned pixel.
+    h.hover_at(rect.left_top() + egui::vec2(3.0, 3.0));
+    h.run_steps(2);
+    assert_eq!(h.state().view_options.probe.at, probe.at);
+    // A vertex's line opens its calculation: the worked vertex moves to it.
+    let before = h.state().doc.scene.vertex;
+    let vertex_link =
+        h.query_all_by_role(Role::Link).find(|n| n.accesskit_node().label().is_some_and(|l| l.starts_with("vertex ")));
+    vertex_link.expect("a vertex line").click();
+    h.run_steps(3);
+    assert_ne!(h.state().doc.scene.vertex, before, "the vertex's calculation opened");
+}
+
+#[test]
+fn the_probe_pins_a_pixel_and_tells_its_bytes() {
+    probe_at(1280.0, 720.0);
+    probe_at(1920.0, 1080.0);
+}
+
+#[test]
+fn a_channel_replaces_the_picture_with_its_legend() {
+    let mut h = harness_at(1280.0, 720.0);
+    let before = picture(&h);
+    h.state_mut().view_options.channel = Some(Channel::Diffuse);
+    h.run_steps(4);
+    let rect = picture(&h);
+    assert!(h.query_by_label_contains("term Diffuse").is_some(), "the caption names the term");
+    // The legend sits under the picture, as wide as it.
+    let legend = h.get_by_label_contains("from 0 to").rect();
+    assert!((legend.top() - rect.bottom()).abs() <= 6.0, "{legend:?} under {rect:?}");
+    assert!((legend.width() - rect.width()).abs() <= 1.0, "{legend:?} {rect:?}");
+    assert!(rect.width() <= before.width() && rect.width() > before.width() - 40.0, "{before:?} -> {rect:?}");
+    let (lo, hi) = h.state().shaded.channel.range;
+    assert_eq!(lo, 0.0);
+    assert!(hi > 0.1 && hi < 2.0, "{hi}");
+}
