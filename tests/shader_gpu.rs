@@ -89,3 +89,42 @@ fn so_it_does_for_the_shipped_scenes() {
         }
     }
 }
+
+/// The probe on the GPU path: the app's probe reads the CPU renderer's frame of the same
+/// view, and at pixels both pictures cover its bytes are the GPU's within two levels (the
+/// rasterisers differ in their last bits), at every pixel the two cover of the spotlight's
+/// teapot and the three lights' sphere, Gouraud and Phong.
+#[test]
+fn the_probe_tells_the_gpu_pictures_pixels() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes");
+    let (mut probed, mut off_by_more) = (0, 0);
+    for f in ["spotlight.toml", "three-lights.toml"] {
+        let mut doc = phonglab_core::Document::from_toml(&std::fs::read_to_string(root.join(f)).unwrap()).unwrap();
+        for shading in [Shading::Gouraud, Shading::Phong] {
+            doc.view.shading = shading;
+            let setup = doc.shaded_setup(phonglab_core::PowFn::Exact);
+            let mesh = doc.view.mesh();
+            let job = setup.job(&mesh);
+            let (gpu, _, bg) = gpu_image(&job);
+            let mut r = Renderer::new();
+            r.keep_visibility(true);
+            r.render(&job, SIZE as usize, SIZE as usize).unwrap();
+            for y in (0..SIZE as usize).step_by(3) {
+                for x in (0..SIZE as usize).step_by(3) {
+                    let g = &gpu[(y * SIZE as usize + x) * 4..][..3];
+                    let Some(p) = phonglab_core::probe::probe(&r, &job, x, y).unwrap() else { continue };
+                    if g == bg {
+                        continue;
+                    }
+                    probed += 1;
+                    let most = (0..3).map(|c| p.rgba8[c].abs_diff(g[c])).max().unwrap();
+                    off_by_more += (most > 2) as usize;
+                }
+            }
+        }
+    }
+    eprintln!("{probed} pixels probed on the GPU's pictures, {off_by_more} more than 2 levels off");
+    assert!(probed > 2_000, "{probed}");
+    // Along silhouettes and shared edges the two may draw different triangles.
+    assert!(off_by_more * 100 <= probed, "{off_by_more} of {probed}");
+}
