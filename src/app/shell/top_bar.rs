@@ -174,6 +174,7 @@ fn view_menu_ui(ui: &mut Ui, state: &mut AppState) {
         state.quiz.start(state.doc.clone());
     }
     ui.checkbox(&mut state.shader.open, t!("shader")).on_hover_text(t!("shader-hover"));
+    ui.checkbox(&mut state.director.open, t!("director")).on_hover_text(t!("director-hover"));
     ui.checkbox(&mut state.cost.open, t!("cost-of-accuracy")).on_hover_text(t!("cost-hover"));
     ui.separator();
     let layout = &mut state.ui.layout;

@@ -5,7 +5,7 @@ use phonglab_core::t;
 
 use super::state::AppState;
 use crate::app::panels::things_to_try::{self, TryAsked};
-use crate::app::panels::{cost, help, shader_panel};
+use crate::app::panels::{cost, director, help, shader_panel};
 
 /// The windows over the layout: the cost study (its finished work collected first), the
 /// shader, the chooser, the things to try (`explanation`: the calculation as it stands, for
@@ -22,6 +22,9 @@ pub fn windows_ui(ctx: &egui::Context, state: &mut AppState, explanation: &phong
     }
     cost::cost_window_ui(ctx, &mut state.cost, &state.doc, state.settings.pow);
     shader_panel::shader_window_ui(ctx, &mut state.shader, &state.doc);
+    if let Some(moved) = director::director_window_ui(ctx, &mut state.director, &state.doc) {
+        state.apply(moved);
+    }
     super::files::chooser_ui(ctx, state);
     let lang = state.ui.layout.locale().lang;
     match things_to_try::things_to_try_window_ui(ctx, &mut state.things, explanation, lang) {

@@ -1,5 +1,6 @@
 //! For the classroom: generated exercises, the quiz's checks, and the shader a scene compiles to.
 
+pub mod director;
 pub mod exercise;
 pub mod quiz;
 pub mod shader;

@@ -21,7 +21,7 @@ pub struct ShadedOptions {
     /// View options are open (under the toolbar).
     pub options_open: bool,
     /// The pixel probe.
-    pub probe: crate::app::panels::probe::ProbeState,
+    pub probe: super::probe_window::ProbeState,
     /// The term shown instead of the picture, if one is.
     pub channel: Option<phonglab_core::channels::Channel>,
 }

@@ -17,6 +17,7 @@ pub mod gpu;
 pub mod heat_map;
 mod overlay;
 mod pictures;
+pub mod probe_window;
 mod toolbar;
 
 use egui::Ui;
@@ -41,7 +42,7 @@ pub fn shaded_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut ShadedCache, e
     let rects = std::iter::once(shown.response.rect).chain(shown.second).collect();
     let (arrows, cones) = overlay::interaction_ui(ui, state, cache, &shown, eval);
     overlay::probe_ui(ui, state, cache, &shown);
-    let asked = crate::app::panels::probe::probe_window_ui(ui.ctx(), &mut state.view_options.probe);
+    let asked = probe_window::probe_window_ui(ui.ctx(), &mut state.view_options.probe);
     if let Some(i) = asked.vertex {
         open_vertex(state, cache, i);
     }

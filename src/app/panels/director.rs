@@ -1,0 +1,266 @@
+//! The director's view: the scene from outside (the eye and its frustum, the lights with
+//! their rings and cones, the object, the worked vertex with N, L, V and H), in object,
+//! world or eye space. Drag the background to turn around it, scroll to zoom, drag a light
+//! to move it (the document changes, and every other view with it).
+//!
+//! The geometry is the core's ([`phonglab_core::director::stage`]); this projects it and
+//! draws it, and turns a dragged light's new place back into its own coordinates.
+
+use egui::{Color32, Pos2, Rect, Sense, Stroke, Ui};
+use glam::{DMat3, DMat4, DVec3, DVec4};
+use phonglab_core::director::{self, Kind, Space, Stage};
+use phonglab_core::transform::{of_camera_distance, perspective};
+use phonglab_core::{Document, Framing, Scene, locale, t};
+
+use crate::app::widgets::palette;
+
+/// The window's switch, the space shown, and the director's own camera.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DirectorState {
+    /// The window is open.
+    pub open: bool,
+    /// The space shown.
+    pub space: Space,
+    /// The director's camera: turned about the vertical (degrees) ...
+    pub yaw: f64,
+    /// ... and tilted (degrees).
+    pub pitch: f64,
+    /// Zoom: 1 frames the scene.
+    pub zoom: f64,
+    /// The light being dragged.
+    dragging: Option<usize>,
+}
+
+impl Default for DirectorState {
+    fn default() -> Self {
+        Self { open: false, space: Space::World, yaw: 35.0, pitch: 25.0, zoom: 1.0, dragging: None }
+    }
+}
+
+/// The scene the view shows and how: the shaded view's world (its mesh, its camera's
+/// frustum) when the worked vertex is on the shaded object, else the worked calculation's
+/// own scene under the worksheet's window (openFrameworks' 60-degree camera, 1024x768).
+pub fn scene_of(doc: &Document) -> (Scene, Option<phonglab_core::mesh::Mesh>, DMat4) {
+    let on_object = doc.with_vertex_as_shaded(doc.scene.vertex) == *doc && doc.view.framing == Framing::Orbit;
+    if on_object {
+        (doc.shaded_scene(), Some(doc.view.mesh()), phonglab_core::view::view_projection(1.0))
+    } else {
+        let d = of_camera_distance(768.0);
+        (doc.scene.clone(), None, perspective(60.0, 1024.0 / 768.0, d / 10.0, d * 10.0))
+    }
+}
+
+/// Projects the stage's space onto a square on screen: the director's camera orbiting the
+/// stage's centre.
+struct Projection {
+    rect: Rect,
+    centre: DVec3,
+    turn: DMat3,
+    distance: f64,
+    focal: f64,
+}
+
+impl Projection {
+    fn new(rect: Rect, st: &Stage, d: &DirectorState) -> Self {
+        let turn = DMat3::from_rotation_x(d.pitch.to_radians()) * DMat3::from_rotation_y(-d.yaw.to_radians());
+        let focal = 1.0 / (20.0f64).to_radians().tan();
+        Self { rect, centre: st.centre, turn, distance: st.radius * focal * 1.15 / d.zoom.max(0.05), focal }
+    }
+
+    /// A point on screen, or `None` behind the director's eye.
+    fn screen(&self, p: DVec3) -> Option<Pos2> {
+        let q = self.turn * (p - self.centre);
+        let depth = self.distance - q.z;
+        if depth <= self.distance * 1e-3 {
+            return None;
+        }
+        let s = self.focal * self.rect.width() as f64 * 0.5 / depth;
+        let c = self.rect.center();
+        Some(Pos2::new(c.x + (q.x * s) as f32, c.y - (q.y * s) as f32))
+    }
+
+    /// The point of the space shown under screen point `pos`, at the depth of `at`.
+    fn unproject(&self, pos: Pos2, at: DVec3) -> DVec3 {
+        let q = self.turn * (at - self.centre);
+        let depth = self.distance - q.z;
+        let s = self.focal * self.rect.width() as f64 * 0.5 / depth;
+        let c = self.rect.center();
+        let moved = DVec3::new((pos.x - c.x) as f64 / s, -(pos.y - c.y) as f64 / s, q.z);
+        self.turn.transpose() * moved + self.centre
+    }
+}
+
+/// Where the window draws the point `p` of stage `st` in a picture at `rect`, seen as `d`
+/// says (for tests and for placing marks).
+pub fn screen_point(rect: Rect, st: &Stage, d: &DirectorState, p: DVec3) -> Option<Pos2> {
+    Projection::new(rect, st, d).screen(p)
+}
+
+/// Colour and width of a segment of each kind.
+fn stroke_of(kind: Kind, ink: Color32) -> Stroke {
+    let light = palette::SPOT;
+    let alpha = |c: Color32, a: f64| Color32::from_rgba_unmultiplied(c.r(), c.g(), c.b(), (a * 255.0) as u8);
+    match kind {
+        Kind::Object => Stroke::new(0.6, alpha(ink, 0.25)),
+        Kind::Eye | Kind::Vertex => Stroke::new(1.5, ink),
+        Kind::Frustum => Stroke::new(1.0, alpha(ink, 0.45)),
+        Kind::Viewport => Stroke::new(1.5, alpha(palette::N, 0.9)),
+        Kind::Light(_) => Stroke::new(1.5, light),
+        Kind::Ring(_, f) => Stroke::new(1.0, alpha(light, if f >= 0.5 { 0.8 } else { 0.4 })),
+        Kind::Cone(_, s) => Stroke::new(1.0 + s as f32, alpha(light, 0.15 + 0.85 * s)),
+        Kind::Normal => Stroke::new(2.5, palette::N),
+        Kind::NaiveNormal => Stroke::new(2.0, palette::ERROR),
+        Kind::ToLight(_) => Stroke::new(2.5, palette::L),
+        Kind::ToEye => Stroke::new(2.5, palette::V),
+        Kind::Halfway(_) => Stroke::new(2.0, palette::H),
+        Kind::Patch => Stroke::new(1.5, alpha(palette::V, 0.8)),
+    }
+}
+
+/// The director's window, while open; returns the document with a dragged light moved.
+pub fn director_window_ui(ctx: &egui::Context, d: &mut DirectorState, doc: &Document) -> Option<Document> {
+    if !d.open {
+        return None;
+    }
+    let mut open = true;
+    let mut changed = None;
+    let screen = ctx.content_rect();
+    let side = (screen.height() * 0.62).clamp(220.0, 640.0);
+    egui::Window::new(t!("director"))
+        .open(&mut open)
+        .default_pos(egui::pos2(screen.center().x - side * 0.5, screen.top() + 40.0))
+        .resizable(false)
+        .show(ctx, |ui| changed = director_ui(ui, d, doc, side));
+    d.open = open;
+    changed
+}
+
+/// The switch, the picture and its legend.
+fn director_ui(ui: &mut Ui, d: &mut DirectorState, doc: &Document, side: f32) -> Option<Document> {
+    ui.horizontal(|ui| {
+        ui.label(t!("director-space"));
+        for s in Space::ALL {
+            ui.selectable_value(&mut d.space, s, locale::tr(s.message_id()));
+        }
+    });
+    let (scene, mesh, clip_from_eye) = scene_of(doc);
+    let st = match director::stage(&scene, mesh.as_ref(), clip_from_eye, d.space) {
+        Ok(st) => st,
+        Err(e) => {
+            ui.colored_label(palette::ERROR, e.to_string());
+            return None;
+        }
+    };
+    let (rect, resp) = ui.allocate_exact_size(egui::vec2(side, side), Sense::click_and_drag());
+    resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, t!("director")));
+    crate::app::widgets::fields::landmark(ui.ctx(), "director-picture", rect);
+    let bg = ui.visuals().extreme_bg_color;
+    let painter = ui.painter_at(rect);
+    painter.rect_filled(rect, 4.0, bg);
+    let proj = Projection::new(rect, &st, d);
+    let ink = ui.visuals().text_color();
+    for s in &st.segments {
+        if let (Some(a), Some(b)) = (proj.screen(s.a), proj.screen(s.b)) {
+            painter.line_segment([a, b], stroke_of(s.kind, ink));
+        }
+    }
+    let font = egui::TextStyle::Small.resolve(ui.style());
+    let mut light_marks = Vec::new();
+    for m in &st.marks {
+        let Some(at) = proj.screen(m.at) else { continue };
+        let (name, colour) = match m.kind {
+            Kind::Eye => (t!("director-eye"), ink),
+            Kind::Light(i) => {
+                light_marks.push((i, at));
+                (t!("director-light", n = i as i64), palette::SPOT)
+            }
+            _ => (t!("director-vertex"), ink),
+        };
+        painter.circle_filled(at, 5.0, colour);
+        painter.text(at + egui::vec2(7.0, -7.0), egui::Align2::LEFT_BOTTOM, name, font.clone(), colour);
+    }
+    let changed = drag_ui(ui, d, doc, &scene, &st, &proj, &resp, &light_marks);
+    legend_ui(ui, &st);
+    changed
+}
+
+/// Dragging: a light's mark moves the light (in the plane facing the director, at its
+/// depth); anywhere else turns the director's camera; scrolling zooms.
+#[allow(clippy::too_many_arguments)]
+fn drag_ui(
+    ui: &Ui,
+    d: &mut DirectorState,
+    doc: &Document,
+    scene: &Scene,
+    st: &Stage,
+    proj: &Projection,
+    resp: &egui::Response,
+    light_marks: &[(usize, Pos2)],
+) -> Option<Document> {
+    // Where the press began: the drag starts only once the pointer has moved some way.
+    if resp.drag_started()
+        && let Some(p) = ui.input(|i| i.pointer.press_origin())
+    {
+        d.dragging = light_marks.iter().find(|(_, at)| at.distance(p) <= 10.0).map(|(i, _)| *i);
+    }
+    if resp.drag_stopped() {
+        d.dragging = None;
+    }
+    if resp.hovered() {
+        let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+        if scroll != 0.0 {
+            d.zoom = (d.zoom * (scroll as f64 * 0.002).exp()).clamp(0.2, 20.0);
+        }
+    }
+    if !resp.dragged() {
+        return None;
+    }
+    let Some(i) = d.dragging else {
+        let delta = resp.drag_delta();
+        d.yaw = (d.yaw + delta.x as f64 * 0.5).rem_euclid(360.0);
+        d.pitch = (d.pitch + delta.y as f64 * 0.5).clamp(-89.0, 89.0);
+        return None;
+    };
+    let (Some(at), Some(p)) = (st.lights.get(i).copied().flatten(), resp.interact_pointer_pos()) else { return None };
+    let moved = proj.unproject(p, at);
+    // Back to the light's own coordinates: the space shown to eye space, then by the
+    // inverse of the modelview it was placed under.
+    let eye_from_display = match d.space {
+        Space::Eye => DMat4::IDENTITY,
+        Space::World => scene.eye_from_world,
+        Space::Object => scene.eye_from_object(),
+    };
+    let light = doc.scene.lights.get(i)?;
+    let own = scene.eye_from_light(&scene.lights[i]).inverse() * eye_from_display * moved.extend(1.0);
+    let own = DVec4::new(own.x / own.w, own.y / own.w, own.z / own.w, light.position.w);
+    let mut c = doc.clone();
+    c.scene.lights[i].position = own;
+    c.validate().is_ok().then_some(c)
+}
+
+/// What the colours and rings mean, with the rings' radii.
+fn legend_ui(ui: &mut Ui, st: &Stage) {
+    ui.horizontal_wrapped(|ui| {
+        for (text, colour) in [("N", palette::N), ("L", palette::L), ("V", palette::V), ("H", palette::H)] {
+            ui.colored_label(colour, text);
+        }
+        ui.small(t!("director-legend"));
+    });
+    if st.naive_normal_off_deg > 0.5 {
+        ui.colored_label(
+            palette::ERROR,
+            t!("director-naive-normal", degrees = locale::num(st.naive_normal_off_deg, 3)),
+        );
+        if st.rules_use_naive {
+            ui.small(t!("director-rules-naive"));
+        }
+    }
+    for (i, f, r) in &st.rings {
+        ui.small(t!(
+            "director-ring",
+            n = *i as i64,
+            percent = locale::num(100.0 * f, 3),
+            distance = locale::num(*r, 4)
+        ));
+    }
+}
