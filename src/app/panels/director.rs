@@ -97,8 +97,7 @@ pub fn screen_point(rect: Rect, st: &Stage, d: &DirectorState, p: DVec3) -> Opti
 }
 
 /// Colour and width of a segment of each kind.
-fn stroke_of(kind: Kind, ink: Color32) -> Stroke {
-    let light = palette::SPOT;
+fn stroke_of(kind: Kind, ink: Color32, light: Color32) -> Stroke {
     let alpha = |c: Color32, a: f64| Color32::from_rgba_unmultiplied(c.r(), c.g(), c.b(), (a * 255.0) as u8);
     match kind {
         Kind::Object => Stroke::new(0.6, alpha(ink, 0.25)),
@@ -159,9 +158,11 @@ fn director_ui(ui: &mut Ui, d: &mut DirectorState, doc: &Document, side: f32) ->
     painter.rect_filled(rect, 4.0, bg);
     let proj = Projection::new(rect, &st, d);
     let ink = ui.visuals().text_color();
+    // The lights' yellow, darkened where the theme is light.
+    let light = palette::ink(ui, palette::SPOT);
     for s in &st.segments {
         if let (Some(a), Some(b)) = (proj.screen(s.a), proj.screen(s.b)) {
-            painter.line_segment([a, b], stroke_of(s.kind, ink));
+            painter.line_segment([a, b], stroke_of(s.kind, ink, light));
         }
     }
     let font = egui::TextStyle::Small.resolve(ui.style());
@@ -172,7 +173,7 @@ fn director_ui(ui: &mut Ui, d: &mut DirectorState, doc: &Document, side: f32) ->
             Kind::Eye => (t!("director-eye"), ink),
             Kind::Light(i) => {
                 light_marks.push((i, at));
-                (t!("director-light", n = i as i64), palette::SPOT)
+                (t!("director-light", n = i as i64), light)
             }
             _ => (t!("director-vertex"), ink),
         };
@@ -248,7 +249,7 @@ fn legend_ui(ui: &mut Ui, st: &Stage) {
     });
     if st.naive_normal_off_deg > 0.5 {
         ui.colored_label(
-            palette::ERROR,
+            palette::ink(ui, palette::ERROR),
             t!("director-naive-normal", degrees = locale::num(st.naive_normal_off_deg, 3)),
         );
         if st.rules_use_naive {

@@ -119,7 +119,9 @@ fn terms_lines(p: &Probe, out: &mut Vec<ReportLine>) {
             (Quantity::CosTheta, l.n_dot_l),
             (Quantity::CosBeta, l.n_dot_h),
         ] {
+            // The factor OpenGL multiplies by (the worksheet's `at` is its denominator).
             let (label, name) = q(qq);
+            let name = if qq == Quantity::Attenuation { qq.term().gl } else { name };
             out.push(line(label, name, num(v, 4), 1));
         }
         for (qq, v) in
