@@ -21,8 +21,9 @@ pub struct ExerciseArgs {
     #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=1000))]
     pub count: u32,
     /// Difficulty: 1 directional only, 2 positional with attenuation, 3 spotlights, 4
-    /// two-sided with several lights.
-    #[arg(long, value_parser = clap::value_parser!(u8).range(1..=4), conflicts_with = "effects")]
+    /// two-sided with several lights; 5 "what is wrong with this picture?" (a picture drawn
+    /// with one mistake, its cause to pick; at most seven).
+    #[arg(long, value_parser = clap::value_parser!(u8).range(1..=5), conflicts_with = "effects")]
     pub level: Option<u8>,
     /// Exactly these effects instead of a level (comma-separated): positional,
     /// attenuation, spot, local-viewer, two-sided, several-lights.
@@ -76,6 +77,12 @@ fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
 
 /// Runs `phonglab exercise`.
 pub fn run(a: &ExerciseArgs) -> Result<()> {
+    if a.level == Some(5) {
+        let count = crate::io::misconception_set::write(&a.out, a.seed, a.count as usize)?;
+        let out = a.out.display().to_string();
+        eprintln!("{}", t!("wrong-written", count = count, out = out));
+        return Ok(());
+    }
     let ex = write(&a.out, &request_of(a)?)?;
     let redraws: usize = ex.iter().map(|e| e.redraws).sum();
     eprintln!(

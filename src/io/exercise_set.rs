@@ -64,8 +64,12 @@ fn answer_key_body(doc: &Document, file: &str) -> Result<String> {
     Ok(o)
 }
 
-/// Is `name` a file of an exercise set (so a new set in the same folder replaces it)?
+/// Is `name` a file of an exercise set, or of a set of mistakes (`--level 5`), so that a
+/// new set in the same folder replaces it?
 pub fn belongs_to_a_set(name: &str) -> bool {
+    if is_mistake_file(name) {
+        return true;
+    }
     let stem = name.strip_suffix(".md").or_else(|| name.strip_suffix(".toml"));
     match stem {
         Some("index") => name == "index.md",
@@ -80,6 +84,16 @@ pub fn belongs_to_a_set(name: &str) -> bool {
         // exercises.pdf: what a set held before the sheets and keys were apart.
         None => ["sheets.pdf", "keys.pdf", "exercises.pdf"].contains(&name),
     }
+}
+
+/// Is `name` a file of a set of mistakes ([`super::misconception_set`]: `wrong-KK.md`, `wrong-KK-key.md`, `wrong-KK.png`,
+/// `wrong-KK-right.png`)?
+fn is_mistake_file(name: &str) -> bool {
+    let Some(rest) = name.strip_prefix("wrong-") else { return false };
+    let stem = rest.strip_suffix(".md").or_else(|| rest.strip_suffix(".png"));
+    let Some(stem) = stem else { return false };
+    let number = stem.strip_suffix("-key").or_else(|| stem.strip_suffix("-right")).unwrap_or(stem);
+    number.len() == 2 && number.bytes().all(|b| b.is_ascii_digit())
 }
 
 /// The worksheet as exercise 0: its five modelviews, one sheet, with the values it prints.

@@ -13,6 +13,7 @@ pub mod file_set;
 pub mod image;
 pub mod input_file;
 pub mod listing;
+pub mod misconception_set;
 pub mod reasons;
 pub mod same_file;
 pub mod save;

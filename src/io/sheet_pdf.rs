@@ -64,7 +64,23 @@ pub enum Block {
     },
     /// Start a part on a new page: its pages' footer says this, and "page k of n".
     Section(String),
+    /// Pictures side by side, each square with its caption under it.
+    Pictures(Vec<Picture>),
 }
+
+/// A square RGBA8 picture with its caption.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Picture {
+    /// Said under it.
+    pub caption: String,
+    /// Its side in pixels.
+    pub px: usize,
+    /// `px * px * 4` bytes, rows top to bottom.
+    pub rgba: std::sync::Arc<Vec<u8>>,
+}
+
+/// The side of a picture on the page, in points: two fit across.
+const PICTURE: f32 = 200.0;
 
 /// How the parts of a document are paginated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -138,6 +154,7 @@ enum Mark {
     Text { at: (f32, f32), text: String, size: f32, mono: bool },
     Line { from: (f32, f32), to: (f32, f32), width: f32 },
     Rect { x: f32, y: f32, w: f32, h: f32 },
+    Image { x: f32, y: f32, side: f32, px: u32, rgba: std::sync::Arc<Vec<u8>> },
 }
 
 /// One laid-out page: the part it belongs to and its marks.
@@ -240,6 +257,7 @@ fn block_height(fonts: &Fonts, block: &Block, width: f32) -> f32 {
                 + 8.0
         }
         Block::Section(_) => 0.0,
+        Block::Pictures(_) => PICTURE + BODY * 2.6 + 10.0,
     }
 }
 
@@ -268,6 +286,16 @@ fn draw_block(fonts: &Fonts, block: &Block, y: f32, width: f32, page: &mut Vec<M
         Block::Answer { label, name, cells } => pen.answer(label, name, *cells, y),
         Block::KeyStep { label, formula, line } => pen.key_step(label, formula, line, y),
         Block::Section(_) => {}
+        Block::Pictures(pictures) => {
+            for (k, p) in pictures.iter().enumerate() {
+                let x = MARGIN + k as f32 * (PICTURE + 20.0);
+                let rgba = p.rgba.clone();
+                pen.page.push(Mark::Image { x, y: y + 4.0, side: PICTURE, px: p.px as u32, rgba });
+                for (i, line) in fonts.wrap(&p.caption, BODY - 1.0, PICTURE, false).iter().take(2).enumerate() {
+                    pen.text((x, y + PICTURE + 6.0 + (BODY - 1.0) * (1.0 + 1.3 * i as f32)), line, BODY - 1.0, false);
+                }
+            }
+        }
     }
 }
 
@@ -417,6 +445,14 @@ pub fn pdf(blocks: &[Block], pages: Pages) -> Result<Vec<u8>> {
                         surface.set_fill(None);
                         surface.set_stroke(Some(Stroke { width: *width, ..Default::default() }));
                         surface.draw_path(&path);
+                    }
+                }
+                Mark::Image { x, y, side, px, rgba } => {
+                    let image = krilla::image::Image::from_rgba8(rgba.to_vec(), *px, *px);
+                    if let Some(size) = krilla::geom::Size::from_wh(*side, *side) {
+                        surface.push_transform(&krilla::geom::Transform::from_translate(*x, *y));
+                        surface.draw_image(image, size);
+                        surface.pop();
                     }
                 }
                 Mark::Rect { x, y, w, h } => {

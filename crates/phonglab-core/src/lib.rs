@@ -54,7 +54,7 @@ pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
 pub use raster::{channels, probe, probe_report, render, shaded};
 pub use specialise::{batch, effects, lighter, plan};
 pub use study::{bench, cost, difference};
-pub use teach::{director, exercise, quiz, shader};
+pub use teach::{director, exercise, misconception, quiz, shader};
 
 pub use breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerms, VertexLighting};
 pub use camera::CameraSpec;

@@ -2,5 +2,6 @@
 
 pub mod director;
 pub mod exercise;
+pub mod misconception;
 pub mod quiz;
 pub mod shader;
