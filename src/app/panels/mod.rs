@@ -12,6 +12,7 @@ pub mod files;
 pub mod help;
 pub mod lobe;
 pub mod quiz;
+pub mod quiz_picture;
 pub mod result;
 pub mod shaded;
 pub mod shader_panel;

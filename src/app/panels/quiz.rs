@@ -35,6 +35,10 @@ pub struct QuizState {
     pub seed: u64,
     /// The teacher shows the answers (the vertex colour, the plot's angles, every key).
     pub show_answers: bool,
+    /// A picture question ("What is wrong with this picture?") in place of the steps.
+    pub wrong: Option<super::quiz_picture::WrongQuestion>,
+    /// How many picture questions have been asked (the next mistake shown).
+    pub wrong_asked: usize,
 }
 
 /// What is kept across restarts.
@@ -93,6 +97,8 @@ impl QuizState {
             level: 2,
             seed: 0,
             show_answers: false,
+            wrong: None,
+            wrong_asked: 0,
         })
     }
 
@@ -211,6 +217,7 @@ pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<
         (t!("quiz-new-exercise"), t!("quiz-new-exercise-hover")),
         (t!("quiz-reveal-all"), t!("quiz-reveal-all-hover")),
         (t!("quiz-clear"), t!("quiz-clear-hover")),
+        (t!("wrong-title"), t!("wrong-quiz-hover")),
     ];
     match buttons_ui(ui, &buttons) {
         Some(0) => quiz.start(current.clone()),
@@ -223,7 +230,24 @@ pub fn quiz_ui(ui: &mut Ui, quiz: &mut QuizState, current: &Document) -> Option<
             let doc = quiz.doc.clone();
             quiz.start(doc.unwrap_or_default());
         }
+        Some(4) => {
+            // Each mistake in turn, from one the seed picks.
+            let all = phonglab_core::misconception::Misconception::ALL;
+            let kind = all[(quiz.seed as usize + quiz.wrong_asked) % all.len()];
+            quiz.wrong_asked += 1;
+            quiz.wrong = super::quiz_picture::WrongQuestion::new(kind).ok();
+        }
         _ => {}
+    }
+    if let Some(q) = &mut quiz.wrong {
+        if ui.button(t!("wrong-back")).clicked() {
+            quiz.wrong = None;
+        } else {
+            egui::ScrollArea::vertical()
+                .auto_shrink(false)
+                .show(ui, |ui| super::quiz_picture::wrong_question_ui(ui, q));
+        }
+        return shown;
     }
     ui.checkbox(&mut quiz.show_answers, t!("quiz-show-answers")).on_hover_text(t!("quiz-show-answers-hover"));
     let Some(key) = quiz.key() else {

@@ -4,7 +4,7 @@
 //!
 //! | mistake | the switch | drawn with |
 //! |---|---|---|
-//! | normals by `M`, not `(M^-1)^T` | each mesh normal `n` replaced by `M^T M n`, so that the inverse transpose makes it `M n` exactly | an ellipsoid: the sphere scaled (1.8, 0.7, 1) |
+//! | normals by `M`, not `(M^-1)^T` | each mesh normal `n` replaced by `M^T M n`, so that the inverse transpose makes it `M n` exactly | an ellipsoid: the sphere scaled (1.45, 0.65, 1) |
 //! | a normal not normalised | `GL_NORMALIZE` off (`AsIs`) | a sphere of radius 2 scaled by 0.5: normals of length 2, Gouraud |
 //! | `R . V` where `N . H` was meant | the specular model | Phong shading |
 //! | Gouraud missing a highlight | Gouraud instead of Phong | a coarse sphere (8 x 8), shininess 60 |
@@ -71,7 +71,15 @@ impl Misconception {
 
     /// The cause, in the reader's language (what the student picks).
     pub fn cause(self) -> String {
-        crate::locale::tr(&format!("wrong-cause-{}", self.id()))
+        crate::locale::tr(match self {
+            Misconception::NormalsByModelview => "wrong-cause-normals-by-m",
+            Misconception::NormalNotNormalised => "wrong-cause-normal-not-normalised",
+            Misconception::ReflectionForHalfway => "wrong-cause-reflection-for-halfway",
+            Misconception::GouraudMissesHighlight => "wrong-cause-gouraud-misses-highlight",
+            Misconception::SpecularOnFacesTurnedAway => "wrong-cause-specular-facing-away",
+            Misconception::AttenuationInObjectSpace => "wrong-cause-attenuation-object-space",
+            Misconception::LightBeforeView => "wrong-cause-light-before-view",
+        })
     }
 
     /// The right formula and the mistaken one.
@@ -79,8 +87,12 @@ impl Misconception {
         match self {
             Misconception::NormalsByModelview => ("n_eye = (M^-1)^T n", "n_eye = M n"),
             Misconception::NormalNotNormalised => ("n = n_eye / |n_eye|", "n = n_eye"),
-            Misconception::ReflectionForHalfway => ("(n . H)^s_rm, H = normalize(L + V)", "(R . V)^s_rm, R = 2 (n . L) n - L"),
-            Misconception::GouraudMissesHighlight => ("lit per fragment (Phong)", "lit per vertex, interpolated (Gouraud)"),
+            Misconception::ReflectionForHalfway => {
+                ("(n . H)^s_rm, H = normalize(L + V)", "(R . V)^s_rm, R = 2 (n . L) n - L")
+            }
+            Misconception::GouraudMissesHighlight => {
+                ("lit per fragment (Phong)", "lit per vertex, interpolated (Gouraud)")
+            }
             Misconception::SpecularOnFacesTurnedAway => ("f_i = 1 only where n . L > 0", "f_i = 1 everywhere"),
             Misconception::AttenuationInObjectSpace => ("d = |P_pli - P| in eye space", "d measured in object space"),
             Misconception::LightBeforeView => {
@@ -91,7 +103,15 @@ impl Misconception {
 
     /// Why, in the reader's language (the key's explanation).
     pub fn why(self) -> String {
-        crate::locale::tr(&format!("wrong-why-{}", self.id()))
+        crate::locale::tr(match self {
+            Misconception::NormalsByModelview => "wrong-why-normals-by-m",
+            Misconception::NormalNotNormalised => "wrong-why-normal-not-normalised",
+            Misconception::ReflectionForHalfway => "wrong-why-reflection-for-halfway",
+            Misconception::GouraudMissesHighlight => "wrong-why-gouraud-misses-highlight",
+            Misconception::SpecularOnFacesTurnedAway => "wrong-why-specular-facing-away",
+            Misconception::AttenuationInObjectSpace => "wrong-why-attenuation-object-space",
+            Misconception::LightBeforeView => "wrong-why-light-before-view",
+        })
     }
 }
 
@@ -150,7 +170,8 @@ pub struct Case {
 /// The base scene: OpenGL's rules, a red plastic, one white light placed in the world above
 /// and to the right, no scene ambient and no emission, the camera on +z.
 fn base_scene(world_from_object: DMat4) -> Scene {
-    let mut s = Scene { rules: Rules::OPENGL, world_from_object, normal_mode: NormalMode::Normalize, ..Scene::default() };
+    let mut s =
+        Scene { rules: Rules::OPENGL, world_from_object, normal_mode: NormalMode::Normalize, ..Scene::default() };
     s.light_model.ambient = DVec4::new(0.0, 0.0, 0.0, 1.0);
     s.material.ambient = DVec4::new(0.6, 0.15, 0.1, 1.0);
     s.material.diffuse = DVec4::new(0.75, 0.2, 0.15, 1.0);
@@ -162,8 +183,8 @@ fn base_scene(world_from_object: DMat4) -> Scene {
     l.position = DVec4::new(2.5, 3.0, 3.0, 1.0);
     l.placement = LightPlacement::World;
     s.lights = vec![l];
-    s.eye_from_world = crate::model::transform::try_look_at(DVec3::new(0.0, 0.0, 4.5), DVec3::ZERO, DVec3::Y)
-        .expect("a valid camera");
+    s.eye_from_world =
+        crate::model::transform::try_look_at(DVec3::new(0.0, 0.0, 4.5), DVec3::ZERO, DVec3::Y).expect("a valid camera");
     s
 }
 
@@ -183,7 +204,7 @@ pub fn case(kind: Misconception) -> Case {
     let phong = ShadingMode::Phong;
     let (correct, bugged, scale) = match kind {
         Misconception::NormalsByModelview => {
-            let scene = base_scene(DMat4::from_scale(DVec3::new(1.8, 0.7, 1.0)));
+            let scene = base_scene(DMat4::from_scale(DVec3::new(1.45, 0.65, 1.0)));
             let m = DMat3::from_mat4(scene.eye_from_object());
             let mut bent = sphere();
             // With these normals the inverse transpose gives M n: the mistake, exactly.
@@ -235,12 +256,9 @@ pub fn case(kind: Misconception) -> Case {
         }
         Misconception::LightBeforeView => {
             let mut scene = base_scene(DMat4::IDENTITY);
-            scene.eye_from_world = crate::model::transform::try_look_at(
-                DVec3::new(3.5, 1.0, 2.5),
-                DVec3::ZERO,
-                DVec3::Y,
-            )
-            .expect("a valid camera");
+            scene.eye_from_world =
+                crate::model::transform::try_look_at(DVec3::new(3.5, 1.0, 2.5), DVec3::ZERO, DVec3::Y)
+                    .expect("a valid camera");
             let mut wrong = scene.clone();
             wrong.lights[0].placement = LightPlacement::Eye;
             (setup(scene, sphere(), phong), setup(wrong, sphere(), phong), 1.0)
@@ -368,10 +386,7 @@ pub fn check(case: &Case, d: &Drawn) -> Result<(), String> {
         }
         Misconception::ReflectionForHalfway => {
             // R . V falls off faster than n . H: a smaller highlight at the same exponent.
-            claim(
-                lb.n_dot_h < la.n_dot_h && luminance(lb.specular) < luminance(la.specular),
-                "R.V not below n.H",
-            )
+            claim(lb.n_dot_h < la.n_dot_h && luminance(lb.specular) < luminance(la.specular), "R.V not below n.H")
         }
         Misconception::GouraudMissesHighlight => {
             claim(luminance(lb.specular) < 0.5 * luminance(la.specular), "Gouraud keeps the highlight")
