@@ -140,7 +140,7 @@ fn a_spotlights_cone_opens_at_its_cutoff() {
 }
 
 #[test]
-fn the_window_switches_space_and_a_dragged_light_moves() {
+fn the_window_switches_space_and_a_dragged_light_or_eye_moves() {
     let mut h = Harness::builder()
         .with_size([1280.0, 720.0])
         .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
@@ -163,20 +163,35 @@ fn the_window_switches_space_and_a_dragged_light_moves() {
     let st = stage(&scene, mesh.as_ref(), clip, Space::World).unwrap();
     let before = d.scene.lights[0].position;
     let mark = light_mark_on_screen(&h, &st, picture);
-    let to = mark + egui::vec2(40.0, -20.0);
-    h.hover_at(mark);
+    drag(&mut h, mark, mark + egui::vec2(40.0, -20.0));
+    let after = h.state().doc.scene.lights[0].position;
+    assert_ne!(after, before, "the light moved");
+    assert_eq!(after.w, before.w, "still positional");
+    // Drag the eye: the camera becomes a lookAt from the new place, the document valid.
+    let d = h.state().doc.clone();
+    let (scene, mesh, clip) = scene_of(&d);
+    let st = stage(&scene, mesh.as_ref(), clip, Space::World).unwrap();
+    let eye = st.marks.iter().find(|m| m.kind == Kind::Eye).unwrap().at;
+    let at = phonglab::app::panels::director::screen_point(picture, &st, &h.state().director, eye).unwrap();
+    drag(&mut h, at, at + egui::vec2(-30.0, 25.0));
+    let moved = &h.state().doc;
+    assert!(matches!(moved.camera, phonglab_core::camera::CameraSpec::LookAt { .. }), "{:?}", moved.camera);
+    assert_ne!(moved.scene.eye_from_world, d.scene.eye_from_world);
+    assert!(moved.validate().is_ok());
+}
+
+/// A drag from `from` to `to` in four steps.
+fn drag(h: &mut Harness<'static, AppState>, from: egui::Pos2, to: egui::Pos2) {
+    h.hover_at(from);
     h.run_steps(1);
-    h.drag_at(mark);
+    h.drag_at(from);
     h.run_steps(1);
     for k in 1..=4 {
-        h.hover_at(mark + (to - mark) * (k as f32 / 4.0));
+        h.hover_at(from + (to - from) * (k as f32 / 4.0));
         h.run_steps(1);
     }
     h.drop_at(to);
     h.run_steps(3);
-    let after = h.state().doc.scene.lights[0].position;
-    assert_ne!(after, before, "the light moved");
-    assert_eq!(after.w, before.w, "still positional");
 }
 
 /// Where the window drew light 0's mark: found by its name's label is not possible (it is
@@ -184,4 +199,29 @@ fn the_window_switches_space_and_a_dragged_light_moves() {
 fn light_mark_on_screen(h: &Harness<'static, AppState>, st: &Stage, rect: egui::Rect) -> egui::Pos2 {
     let d = &h.state().director;
     phonglab::app::panels::director::screen_point(rect, st, d, st.lights[0].unwrap()).expect("in front")
+}
+
+/// On the shaded object (the worked vertex clicked on it), dragging the eye turns the
+/// orbit camera: the shaded view follows, the vertex stays the shaded view's.
+#[test]
+fn on_the_object_the_eye_drag_turns_the_orbit_camera() {
+    let mut h = Harness::builder()
+        .with_size([1280.0, 720.0])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(2);
+    let d = h.state().doc.clone();
+    let on = d.with_vertex_as_shaded(phonglab_core::Vertex::from_f32(glam::Vec3::new(0.0, 0.0, 0.5), glam::Vec3::Z));
+    h.state_mut().doc = on.clone();
+    h.state_mut().director.open = true;
+    h.run_steps(3);
+    let picture = h.get_by_role_and_label(Role::Image, "Director's view").rect();
+    let (scene, mesh, clip) = scene_of(&on);
+    assert!(mesh.is_some(), "the shaded view's world");
+    let st = stage(&scene, mesh.as_ref(), clip, Space::World).unwrap();
+    let eye = st.marks.iter().find(|m| m.kind == Kind::Eye).unwrap().at;
+    let at = phonglab::app::panels::director::screen_point(picture, &st, &h.state().director, eye).unwrap();
+    drag(&mut h, at, at + egui::vec2(35.0, 0.0));
+    let moved = h.state().doc.clone();
+    assert_ne!(moved.view.camera, on.view.camera, "the orbit camera turned");
+    assert_eq!(moved.with_vertex_as_shaded(moved.scene.vertex), moved, "the vertex is still the shaded view's");
 }

@@ -1,7 +1,7 @@
 //! The director's view: the scene from outside (the eye and its frustum, the lights with
 //! their rings and cones, the object, the worked vertex with N, L, V and H), in object,
 //! world or eye space. Drag the background to turn around it, scroll to zoom, drag a light
-//! to move it (the document changes, and every other view with it).
+//! or the eye to move it (the document changes, and every other view with it).
 //!
 //! The geometry is the core's ([`phonglab_core::director::stage`]); this projects it and
 //! draws it, and turns a dragged light's new place back into its own coordinates.
@@ -27,8 +27,17 @@ pub struct DirectorState {
     pub pitch: f64,
     /// Zoom: 1 frames the scene.
     pub zoom: f64,
-    /// The light being dragged.
-    dragging: Option<usize>,
+    /// What is being dragged.
+    dragging: Option<Dragged>,
+}
+
+/// What a drag in the director's view moves.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Dragged {
+    /// Light `i`.
+    Light(usize),
+    /// The eye.
+    Eye,
 }
 
 impl Default for DirectorState {
@@ -167,10 +176,14 @@ fn director_ui(ui: &mut Ui, d: &mut DirectorState, doc: &Document, side: f32) ->
     }
     let font = egui::TextStyle::Small.resolve(ui.style());
     let mut light_marks = Vec::new();
+    let mut eye_mark = None;
     for m in &st.marks {
         let Some(at) = proj.screen(m.at) else { continue };
         let (name, colour) = match m.kind {
-            Kind::Eye => (t!("director-eye"), ink),
+            Kind::Eye => {
+                eye_mark = Some(at);
+                (t!("director-eye"), ink)
+            }
             Kind::Light(i) => {
                 light_marks.push((i, at));
                 (t!("director-light", n = i as i64), light)
@@ -180,13 +193,21 @@ fn director_ui(ui: &mut Ui, d: &mut DirectorState, doc: &Document, side: f32) ->
         painter.circle_filled(at, 5.0, colour);
         painter.text(at + egui::vec2(7.0, -7.0), egui::Align2::LEFT_BOTTOM, name, font.clone(), colour);
     }
-    let changed = drag_ui(ui, d, doc, &scene, &st, &proj, &resp, &light_marks);
+    let marks = Marks { lights: &light_marks, eye: eye_mark };
+    let changed = drag_ui(ui, d, doc, &scene, &st, &proj, &resp, &marks);
     legend_ui(ui, &st);
     changed
 }
 
-/// Dragging: a light's mark moves the light (in the plane facing the director, at its
-/// depth); anywhere else turns the director's camera; scrolling zooms.
+/// Where the marks that can be dragged were drawn.
+struct Marks<'a> {
+    lights: &'a [(usize, Pos2)],
+    eye: Option<Pos2>,
+}
+
+/// Dragging: a light's mark moves the light, the eye's moves the eye (each in the plane
+/// facing the director, at its depth); anywhere else turns the director's camera;
+/// scrolling zooms.
 #[allow(clippy::too_many_arguments)]
 fn drag_ui(
     ui: &Ui,
@@ -196,13 +217,15 @@ fn drag_ui(
     st: &Stage,
     proj: &Projection,
     resp: &egui::Response,
-    light_marks: &[(usize, Pos2)],
+    marks: &Marks<'_>,
 ) -> Option<Document> {
     // Where the press began: the drag starts only once the pointer has moved some way.
     if resp.drag_started()
         && let Some(p) = ui.input(|i| i.pointer.press_origin())
     {
-        d.dragging = light_marks.iter().find(|(_, at)| at.distance(p) <= 10.0).map(|(i, _)| *i);
+        let light = marks.lights.iter().find(|(_, at)| at.distance(p) <= 10.0).map(|(i, _)| Dragged::Light(*i));
+        let eye = marks.eye.filter(|at| at.distance(p) <= 10.0).map(|_| Dragged::Eye);
+        d.dragging = light.or(eye);
     }
     if resp.drag_stopped() {
         d.dragging = None;
@@ -216,26 +239,66 @@ fn drag_ui(
     if !resp.dragged() {
         return None;
     }
-    let Some(i) = d.dragging else {
-        let delta = resp.drag_delta();
-        d.yaw = (d.yaw + delta.x as f64 * 0.5).rem_euclid(360.0);
-        d.pitch = (d.pitch + delta.y as f64 * 0.5).clamp(-89.0, 89.0);
-        return None;
-    };
-    let (Some(at), Some(p)) = (st.lights.get(i).copied().flatten(), resp.interact_pointer_pos()) else { return None };
-    let moved = proj.unproject(p, at);
-    // Back to the light's own coordinates: the space shown to eye space, then by the
-    // inverse of the modelview it was placed under.
     let eye_from_display = match d.space {
         Space::Eye => DMat4::IDENTITY,
         Space::World => scene.eye_from_world,
         Space::Object => scene.eye_from_object(),
     };
+    let i = match d.dragging {
+        None => {
+            let delta = resp.drag_delta();
+            d.yaw = (d.yaw + delta.x as f64 * 0.5).rem_euclid(360.0);
+            d.pitch = (d.pitch + delta.y as f64 * 0.5).clamp(-89.0, 89.0);
+            return None;
+        }
+        Some(Dragged::Eye) => {
+            let (Some(p), Some(at)) = (resp.interact_pointer_pos(), st.marks.iter().find(|m| m.kind == Kind::Eye))
+            else {
+                return None;
+            };
+            let moved = proj.unproject(p, at.at);
+            let world = scene.eye_from_world.inverse() * eye_from_display * moved.extend(1.0);
+            return moved_eye(doc, scene, world.truncate() / world.w);
+        }
+        Some(Dragged::Light(i)) => i,
+    };
+    let (Some(at), Some(p)) = (st.lights.get(i).copied().flatten(), resp.interact_pointer_pos()) else { return None };
+    let moved = proj.unproject(p, at);
+    // Back to the light's own coordinates: the space shown to eye space, then by the
+    // inverse of the modelview it was placed under.
     let light = doc.scene.lights.get(i)?;
     let own = scene.eye_from_light(&scene.lights[i]).inverse() * eye_from_display * moved.extend(1.0);
     let own = DVec4::new(own.x / own.w, own.y / own.w, own.z / own.w, light.position.w);
     let mut c = doc.clone();
     c.scene.lights[i].position = own;
+    c.validate().is_ok().then_some(c)
+}
+
+/// `doc` with the eye moved to `eye` (world coordinates), still looking at what it looked
+/// at: on the shaded object, the orbit camera's distance and angles (the worked vertex kept
+/// on the object); else a lookAt camera towards the point straight ahead at the worked
+/// vertex's distance, the same way up.
+fn moved_eye(doc: &Document, scene: &Scene, eye: DVec3) -> Option<Document> {
+    let mut c = doc.clone();
+    let (_, mesh, _) = scene_of(doc);
+    if mesh.is_some() {
+        let d = eye.length();
+        let u = eye / d.max(1e-12);
+        c.view.camera.distance = d.clamp(0.6, 20.0);
+        c.view.camera.pitch = u.y.clamp(-1.0, 1.0).asin().to_degrees().clamp(-89.0, 89.0);
+        c.view.camera.yaw = (-u.x).atan2(u.z).to_degrees().rem_euclid(360.0);
+        let c = c.with_vertex_as_shaded(c.scene.vertex);
+        return c.validate().is_ok().then_some(c);
+    }
+    let world_from_eye = scene.eye_from_world.inverse();
+    let old = world_from_eye.transform_point3(DVec3::ZERO);
+    let forward = world_from_eye.transform_vector3(-DVec3::Z).normalize_or_zero();
+    let up = world_from_eye.transform_vector3(DVec3::Y).normalize_or_zero();
+    let p = scene.vertex.position;
+    let vertex = scene.world_from_object.transform_point3(if p.w != 0.0 { p.truncate() / p.w } else { p.truncate() });
+    let centre = old + forward * (vertex - old).length().max(1e-6);
+    c.camera = phonglab_core::camera::CameraSpec::LookAt { eye, centre, up };
+    c.scene.eye_from_world = c.camera.matrix().ok()?;
     c.validate().is_ok().then_some(c)
 }
 
