@@ -15,12 +15,15 @@ probe (`phonglab_probe()`, src/web.rs):
      matches the CPU renderer's picture (`?renderer=cpu`, the reference renderer, the
      same code as the desktop's): the same coverage (within 0.5 % of the pixels, the
      edges' rasterisation) and a mean difference within 2/255 where both cover;
+  8. the director's view (`?open=director`) draws its scene: the eye, the frustum and the
+     light's rings in the light's yellow (a screenshot of it saved with --shots DIR);
   7. the benchmark scene (`?picture=bench`, frame 0 of `phonglab bench render`'s scene),
      drawn on the canvas by the GPU path and by the CPU path, matches the desktop's image
      of it (`phonglab render --bench-frame 0 --size 256`, made by scripts/test-web in
      NATIVE_DIR): the same coverage (within 0.5 %) and a mean difference within 2/255.
 It prints the time to first frame and who drew the shaded view. Exit status 0 when all
-pass. Usage: scripts/web_test.py [DIST] [--native NATIVE_DIR] [--figures] (default: dist;
+pass. Usage: scripts/web_test.py [DIST] [--native NATIVE_DIR] [--figures] [--shots DIR]
+(default: dist; --shots: the page with the director's view saved as DIR/director-browser.png;
 --native: the folder of the desktop's images `bench-OBJECT-SHADING.png` for check 7, skipped
 without it; --figures also prints ms per frame for each object, shading and renderer, for
 README's figures).
@@ -235,7 +238,8 @@ def bench_pictures_check(d, url, native_dir, failures):
 def main():
     args = sys.argv[1:]
     native_dir = args[args.index("--native") + 1] if "--native" in args else None
-    paths = [a for i, a in enumerate(args) if not a.startswith("--") and (i == 0 or args[i - 1] != "--native")]
+    paths = [a for i, a in enumerate(args)
+             if not a.startswith("--") and (i == 0 or args[i - 1] not in ("--native", "--shots"))]
     dist = paths[0] if paths else "dist"
     if not os.path.exists(os.path.join(dist, "phonglab_bg.wasm")):
         raise SystemExit(f"{dist}/ has no build: run scripts/web first")
@@ -321,6 +325,21 @@ def main():
                 if coverage > 0.005 or mean > 2.0 or both < 1000:
                     failures.append(f"{obj} {shading}: the GPU's picture differs from the CPU's: "
                                     f"coverage {coverage:.4f}, mean {mean:.2f}/255 on {both} pixels")
+            # 8. The director's view in the browser: its picture holds the scene's lines, the
+            # light's rings among them in the lights' yellow.
+            d.js("window.localStorage.clear();")
+            director, _ = picture_at(d, url + "?open=director&renderer=cpu", "director-picture")
+            colours = {px for row in director for px in row}
+            yellow = sum(1 for row in director for px in row
+                         if px[0] > 150 and 90 < px[1] < 200 and px[2] < 80)
+            print(f"director's view: {len(director[0])}x{len(director)} px, {len(colours)} colours, "
+                  f"{yellow} pixels in the lights' yellow")
+            if len(director[0]) < 200 or len(colours) < 20 or yellow < 50:
+                failures.append(f"the director's view is not drawn: {len(colours)} colours, {yellow} yellow")
+            if "--shots" in sys.argv:
+                shots = sys.argv[sys.argv.index("--shots") + 1]
+                with open(os.path.join(shots, "director-browser.png"), "wb") as f:
+                    f.write(base64.b64decode(d.s("GET", "/screenshot")))
             # 7. The benchmark scene against the desktop's image.
             if native_dir:
                 bench_pictures_check(d, url, native_dir, failures)

@@ -102,3 +102,30 @@ fn a_channel_replaces_the_picture_with_its_legend() {
     assert_eq!(lo, 0.0);
     assert!(hi > 0.1 && hi < 2.0, "{hi}");
 }
+
+/// Compare shows one term for A and B side by side, over one range (both legends say the
+/// same numbers), as the shaded view does.
+#[test]
+fn compare_shows_a_channel_for_both_over_one_range() {
+    let mut h = harness_at(1280.0, 720.0);
+    common::menu_item(&mut h, &["View"], "Compare");
+    h.run_steps(3);
+    assert!(h.state().compare.a.is_some(), "A pinned on opening");
+    // B: the light moved closer, so its diffuse term is larger.
+    let mut b = h.state().doc.clone();
+    b.scene.lights[0].position.z = 30.0;
+    assert!(h.state_mut().apply(b));
+    h.state_mut().compare.channel = Some(Channel::Diffuse);
+    h.run_steps(4);
+    let a = h.get_by_label("A: Diffuse").rect();
+    let b = h.get_by_label("B: Diffuse").rect();
+    assert!((a.top() - b.top()).abs() < 1.0 && b.left() > a.right(), "{a:?} {b:?}");
+    let legends: Vec<String> = h
+        .query_all_by_label_contains("from 0 to")
+        .filter_map(|n| n.accesskit_node().label().map(|l| l.to_string()))
+        .collect();
+    assert_eq!(legends.len(), 2, "{legends:?}");
+    assert_eq!(legends[0], legends[1], "one range for both");
+    let (ra, rb) = (h.state().compare.a_channel.range, h.state().compare.b_channel.range);
+    assert_eq!(ra, rb);
+}

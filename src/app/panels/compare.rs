@@ -11,7 +11,8 @@ use phonglab_core::{locale, t};
 use phonglab_core::difference::{Difference, GAIN, VISIBLE, difference};
 
 use crate::app::model::evaluated::{Evaluated, Precision, evaluate};
-use crate::app::panels::shaded::cache::ViewCache;
+use crate::app::panels::shaded::cache::{ViewCache, mesh_for};
+use crate::app::panels::shaded::channel_view::{self, ChannelView};
 
 /// The pinned scene A: the document and the numerics it was evaluated with.
 #[derive(Clone, Debug, PartialEq)]
@@ -110,6 +111,12 @@ pub struct CompareState {
     pub b_view: ViewCache,
     /// Show the difference picture `|A - B|` beside them.
     pub difference: bool,
+    /// One term shown in place of both pictures, over one shared range.
+    pub channel: Option<phonglab_core::channels::Channel>,
+    /// A's channel picture.
+    pub a_channel: ChannelView,
+    /// B's channel picture.
+    pub b_channel: ChannelView,
     /// The last difference picture, and the pictures' generations it was made from.
     diff: Option<((u64, u64), Difference, egui::TextureHandle)>,
 }
@@ -225,6 +232,43 @@ fn difference_ui(ui: &mut Ui, compare: &mut CompareState, background: [f32; 3], 
     at
 }
 
+/// One term in place of A's and B's pictures, both in false colour over the range that
+/// holds both, each with its legend; returns a failure to say.
+fn channels_ui(
+    ui: &mut Ui,
+    compare: &mut CompareState,
+    channel: phonglab_core::channels::Channel,
+    [(a, a_pow), (b, b_pow)]: [(&Document, PowFn); 2],
+    side: f32,
+) -> Option<String> {
+    let mut range = (f64::INFINITY, f64::NEG_INFINITY);
+    let sides = [
+        (&mut compare.a_channel, &mut compare.a_view.mesh, a, a_pow),
+        (&mut compare.b_channel, &mut compare.b_view.mesh, b, b_pow),
+    ];
+    for (view, meshes, doc, pow) in sides {
+        // Each side's mesh, kept with its picture's.
+        let mesh = mesh_for(meshes, &doc.view).clone();
+        match view.prepare(doc, &mesh, pow, channel) {
+            Ok((lo, hi)) => range = (range.0.min(lo), range.1.max(hi)),
+            Err(e) => return Some(t!("compare-cannot-render", which = "A/B", error = e)),
+        }
+    }
+    ui.columns(2, |cols| {
+        for (col, (which, view)) in cols.iter_mut().zip([("A", &mut compare.a_channel), ("B", &mut compare.b_channel)])
+        {
+            col.vertical(|ui| {
+                let label = ui.small(format!("{which}: {}", locale::tr(channel.message_id())));
+                if let Some(tex) = view.texture(ui.ctx(), range) {
+                    ui.add(egui::Image::new((tex.id(), egui::vec2(side, side)))).labelled_by(label.id);
+                }
+                channel_view::legend_ui(ui, channel, range, side);
+            });
+        }
+    });
+    None
+}
+
 /// The scene shown (B) and the numerics it is evaluated with.
 pub struct Current<'a> {
     /// B's document.
@@ -261,6 +305,7 @@ pub fn compare_ui(
         if compare.a.is_some() {
             ui.checkbox(&mut compare.difference, t!("compare-difference"))
                 .on_hover_text(t!("compare-difference-hover"));
+            channel_view::channel_ui(ui, &mut compare.channel);
         }
     });
     let Some(a) = compare.a.clone() else {
@@ -286,6 +331,9 @@ pub fn compare_ui(
     let (doc, pow) = (current.doc.clone(), current.pow);
     let sa = Side { which: "A", what: a.describe(), doc: &a.doc, eval: &a_eval, pow: a.pow };
     let sb = Side { which: "B", what: b_pinned.describe(), doc: &doc, eval: b, pow };
+    if let Some(channel) = compare.channel {
+        return (notice.or(channels_ui(ui, compare, channel, [(&a.doc, a.pow), (&doc, pow)], side)), Vec::new());
+    }
     let pictures = ui.columns(n as usize, |cols| {
         let a = side_ui(&mut cols[0], &sa, &mut compare.a_view, px);
         let b = side_ui(&mut cols[1], &sb, &mut compare.b_view, px);

@@ -64,6 +64,8 @@ impl WebApp {
         let mut state = restore(&session, notices);
         state.gpu = cc.wgpu_render_state.as_ref().map(crate::app::panels::shaded::gpu::install);
         state.view_options.renderer = renderer_asked();
+        // `?open=director`: the director's view open from the start (for its test).
+        state.director.open |= url_asks("open", "director");
         WINDOW.with(|w| *w.borrow_mut() = Some(cc.egui_ctx.clone()));
         WebApp {
             state,

@@ -223,10 +223,15 @@ impl ChannelImage {
         }
     }
 
-    /// The picture: each covered pixel in false colour (the normal as rgb), the rest
-    /// `background`; RGBA8.
+    /// The picture: each covered pixel in false colour over [`ChannelImage::range`] (the
+    /// normal as rgb), the rest `background`; RGBA8.
     pub fn false_colour(&self, map: ColourMap, background: [u8; 3]) -> Vec<u8> {
-        let (lo, hi) = self.range();
+        self.false_colour_over(map, background, self.range())
+    }
+
+    /// [`ChannelImage::false_colour`] over the range `(lo, hi)` (two pictures compared
+    /// share one).
+    pub fn false_colour_over(&self, map: ColourMap, background: [u8; 3], (lo, hi): (f64, f64)) -> Vec<u8> {
         let span = if hi > lo { hi - lo } else { 1.0 };
         let to_byte = |x: f64| ((x * 0.5 + 0.5).clamp(0.0, 1.0) * 255.0).round() as u8;
         self.values

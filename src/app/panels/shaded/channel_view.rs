@@ -3,7 +3,7 @@
 //! changes, and its legend, a colour bar with the numbers at its ends and middle.
 
 use egui::{Color32, ColorImage, TextureHandle, TextureOptions, Ui};
-use phonglab_core::channels::{self, Channel, ColourMap};
+use phonglab_core::channels::{self, Channel, ChannelImage, ColourMap};
 use phonglab_core::mesh::Mesh;
 use phonglab_core::render::Renderer;
 use phonglab_core::{Document, PowFn, locale, t};
@@ -15,46 +15,67 @@ pub const CHANNEL_PX: usize = if crate::platform::threads::BACKGROUND { 192 } el
 /// The legend's height under the picture, in points.
 pub const LEGEND_HEIGHT: f32 = 30.0;
 
-/// The last channel image and what it shows.
+/// The last channel image, what it shows, and its false-colour texture.
 #[derive(Default)]
 pub struct ChannelView {
     key: Option<(Document, PowFn, Channel)>,
+    image: Option<ChannelImage>,
     texture: Option<TextureHandle>,
-    /// The false colour's range.
+    /// The range the texture's false colour spans.
     pub range: (f64, f64),
+    coloured: Option<(f64, f64)>,
     renderer: Renderer,
 }
 
 impl ChannelView {
-    /// The texture of `channel` for `doc`'s shaded view (of `mesh`, the view's), made
-    /// again when either changed.
-    pub fn texture(
-        &mut self,
-        ctx: &egui::Context,
-        doc: &Document,
-        mesh: &Mesh,
-        pow: PowFn,
-        channel: Channel,
-    ) -> Result<&TextureHandle, String> {
+    /// Computes `channel` for `doc`'s shaded view (of `mesh`, the view's) unless it is
+    /// already there; returns its own range ([`ChannelImage::range`]).
+    pub fn prepare(&mut self, doc: &Document, mesh: &Mesh, pow: PowFn, channel: Channel) -> Result<(f64, f64), String> {
         let key = (doc.clone(), pow, channel);
-        if self.key.as_ref() != Some(&key) || self.texture.is_none() {
+        if self.key.as_ref() != Some(&key) || self.image.is_none() {
             let setup = doc.shaded_setup(pow);
             let job = setup.job(mesh);
             self.renderer.keep_visibility(true);
             self.renderer.render(&job, CHANNEL_PX, CHANNEL_PX).map_err(|e| e.to_string())?;
             let image = channels::channel_image(&self.renderer, &job, channel, None).map_err(|e| e.to_string())?;
-            let bg = job.background.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
-            let rgba = image.false_colour(ColourMap::Viridis, bg);
-            self.range = image.range();
-            let picture = ColorImage::from_rgba_unmultiplied([CHANNEL_PX, CHANNEL_PX], &rgba);
+            self.image = Some(image);
+            self.key = Some(key);
+            self.coloured = None;
+        }
+        Ok(self.image.as_ref().map_or((0.0, 1.0), ChannelImage::range))
+    }
+
+    /// The prepared channel in false colour over `range` (two pictures compared share
+    /// one), coloured again only when the channel or the range changed.
+    pub fn texture(&mut self, ctx: &egui::Context, range: (f64, f64)) -> Option<&TextureHandle> {
+        let image = self.image.as_ref()?;
+        if self.coloured != Some(range) || self.texture.is_none() {
+            let bg = self
+                .key
+                .as_ref()
+                .map_or([0; 3], |(d, ..)| d.view.background.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8));
+            let rgba = image.false_colour_over(ColourMap::Viridis, bg, range);
+            let picture = ColorImage::from_rgba_unmultiplied([image.width, image.height], &rgba);
             match &mut self.texture {
                 Some(t) => t.set(picture, TextureOptions::LINEAR),
                 None => self.texture = Some(ctx.load_texture("term channel", picture, TextureOptions::LINEAR)),
             }
-            self.key = Some(key);
+            (self.coloured, self.range) = (Some(range), range);
         }
-        Ok(self.texture.as_ref().expect("set just above"))
+        self.texture.as_ref()
     }
+}
+
+/// What the picture shows: the shaded view, or one term of the equation in false colour.
+pub fn channel_ui(ui: &mut Ui, channel: &mut Option<Channel>) {
+    let name = |c: Option<Channel>| c.map_or_else(|| t!("channel-picture"), |c| locale::tr(c.message_id()));
+    crate::app::widgets::fields::combo_ui(ui, &t!("channel-show"), name(*channel), |ui| {
+        ui.selectable_value(channel, None, name(None));
+        for c in Channel::ALL {
+            ui.selectable_value(channel, Some(c), name(Some(c)));
+        }
+    })
+    .on_hover_text(t!("channel-hover"));
 }
 
 /// The legend under a channel's picture, `width` points wide: the colour bar (viridis; the

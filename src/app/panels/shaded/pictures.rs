@@ -71,8 +71,9 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
     );
     let channel_texture = channel.and_then(|c| {
         let mesh = mesh_for(&mut cache.main.mesh, &state.edit.doc.view).clone();
-        match cache.channel.texture(ui.ctx(), state.edit.doc, &mesh, state.pow, c) {
-            Ok(texture) => Some((c, texture.id())),
+        let view = &mut cache.channel;
+        match view.prepare(state.edit.doc, &mesh, state.pow, c) {
+            Ok(range) => view.texture(ui.ctx(), range).map(|t| (c, t.id())),
             Err(e) => {
                 *state.edit.message = Some(Message::Refused(format!("{}: {e}", t!("shaded-cannot-render"))));
                 None

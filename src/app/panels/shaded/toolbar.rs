@@ -3,10 +3,9 @@
 //! and the Phong demo's departures as switches.
 
 use egui::Ui;
-use phonglab_core::channels::Channel;
 use phonglab_core::library::DemoDeparture;
+use phonglab_core::t;
 use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, View};
-use phonglab_core::{locale, t};
 
 use super::cache::{DrawnBy, ShadedCache};
 use super::context::Shaded;
@@ -114,7 +113,7 @@ pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCach
             ui.checkbox(&mut view.demo_normals, t!("demo-normals")).on_hover_text(t!("demo-normals-hover"));
             ui.checkbox(&mut state.heat_map.on, t!("heat-map")).on_hover_text(t!("heat-map-hover"));
             ui.checkbox(&mut state.view_options.probe.on, t!("probe")).on_hover_text(t!("probe-hover"));
-            channel_ui(ui, &mut state.view_options.channel);
+            super::channel_view::channel_ui(ui, &mut state.view_options.channel);
             let open = &mut state.view_options.options_open;
             if ui.selectable_label(*open, t!("view-options")).on_hover_text(t!("view-options-hover")).clicked() {
                 *open = !*open;
@@ -158,18 +157,6 @@ pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCach
         ui.ctx().request_repaint();
     }
     open_obj_requested
-}
-
-/// What the picture shows: the shaded view, or one term of the equation in false colour.
-fn channel_ui(ui: &mut Ui, channel: &mut Option<Channel>) {
-    let name = |c: Option<Channel>| c.map_or_else(|| t!("channel-picture"), |c| locale::tr(c.message_id()));
-    crate::app::widgets::fields::combo_ui(ui, &t!("channel-show"), name(*channel), |ui| {
-        ui.selectable_value(channel, None, name(None));
-        for c in Channel::ALL {
-            ui.selectable_value(channel, Some(c), name(Some(c)));
-        }
-    })
-    .on_hover_text(t!("channel-hover"));
 }
 
 /// The renderer choice, and who drew the last picture (and why not the GPU).
