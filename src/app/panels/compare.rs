@@ -305,9 +305,12 @@ pub fn compare_ui(
         if compare.a.is_some() {
             ui.checkbox(&mut compare.difference, t!("compare-difference"))
                 .on_hover_text(t!("compare-difference-hover"));
-            channel_view::channel_ui(ui, &mut compare.channel);
         }
     });
+    if compare.a.is_some() {
+        // Its own row: a narrow centre keeps it whole.
+        channel_view::channel_ui(ui, &mut compare.channel);
+    }
     let Some(a) = compare.a.clone() else {
         ui.add_space(12.0);
         for line in [t!("compare-step-1"), t!("compare-step-2"), t!("compare-step-3")] {

@@ -69,13 +69,24 @@ impl ChannelView {
 /// What the picture shows: the shaded view, or one term of the equation in false colour.
 pub fn channel_ui(ui: &mut Ui, channel: &mut Option<Channel>) {
     let name = |c: Option<Channel>| c.map_or_else(|| t!("channel-picture"), |c| locale::tr(c.message_id()));
-    crate::app::widgets::fields::combo_ui(ui, &t!("channel-show"), name(*channel), |ui| {
-        ui.selectable_value(channel, None, name(None));
-        for c in Channel::ALL {
-            ui.selectable_value(channel, Some(c), name(Some(c)));
-        }
-    })
-    .on_hover_text(t!("channel-hover"));
+    ui.horizontal(|ui| {
+        let l = ui.label(t!("channel-show"));
+        // As wide as what is left of the row, within reason: a narrow column keeps it whole.
+        let width = (ui.available_width() - 8.0).clamp(80.0, 150.0);
+        egui::ComboBox::from_id_salt("channel-show")
+            .width(width)
+            .truncate()
+            .selected_text(name(*channel))
+            .show_ui(ui, |ui| {
+                ui.selectable_value(channel, None, name(None));
+                for c in Channel::ALL {
+                    ui.selectable_value(channel, Some(c), name(Some(c)));
+                }
+            })
+            .response
+            .labelled_by(l.id)
+            .on_hover_text(t!("channel-hover"));
+    });
 }
 
 /// The legend under a channel's picture, `width` points wide: the colour bar (viridis; the

@@ -113,7 +113,6 @@ pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCach
             ui.checkbox(&mut view.demo_normals, t!("demo-normals")).on_hover_text(t!("demo-normals-hover"));
             ui.checkbox(&mut state.heat_map.on, t!("heat-map")).on_hover_text(t!("heat-map-hover"));
             ui.checkbox(&mut state.view_options.probe.on, t!("probe")).on_hover_text(t!("probe-hover"));
-            super::channel_view::channel_ui(ui, &mut state.view_options.channel);
             let open = &mut state.view_options.options_open;
             if ui.selectable_label(*open, t!("view-options")).on_hover_text(t!("view-options-hover")).clicked() {
                 *open = !*open;
@@ -126,6 +125,8 @@ pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCach
         let most = ui.available_height() * 0.45;
         egui::Frame::group(ui.style()).show(ui, |ui| {
             egui::ScrollArea::vertical().max_height(most).show(ui, |ui| {
+                // The term shown in place of the picture (Compare has its own).
+                super::channel_view::channel_ui(ui, &mut state.view_options.channel);
                 renderer_ui(ui, state, &cache.main.drawn_by);
                 view_options_ui(ui, &mut view);
                 ui.horizontal_wrapped(|ui| {
