@@ -12,7 +12,7 @@
 //! | attenuation in the wrong space | the distance measured in object space: `k1 / s`, `k2 / s^2` for a uniform scale `s` (exact) | a sphere of radius 4 scaled by 0.25 |
 //! | the light placed before the view transform | placement eye instead of world (Robins' lightposition tutor swaps the two calls) | a camera to one side |
 //!
-//! Each mistake's [`Case::check`] is the claim its key makes, tested on its pictures.
+//! Each mistake's [`check`] is the claim its key makes, tested on its pictures.
 
 use glam::{DMat3, DMat4, DVec3, DVec4};
 
