@@ -15,6 +15,8 @@ probe (`phonglab_probe()`, src/web.rs):
      matches the CPU renderer's picture (`?renderer=cpu`, the reference renderer, the
      same code as the desktop's): the same coverage (within 0.5 % of the pixels, the
      edges' rasterisation) and a mean difference within 2/255 where both cover;
+  9. a link made on the desktop (`phonglab share`, its fragment given with --fragment)
+     opens the same scene, in the language it asks for (pt-BR);
   8. the director's view (`?open=director`) draws its scene: the eye, the frustum and the
      light's rings in the light's yellow (a screenshot of it saved with --shots DIR);
   7. the benchmark scene (`?picture=bench`, frame 0 of `phonglab bench render`'s scene),
@@ -239,7 +241,8 @@ def main():
     args = sys.argv[1:]
     native_dir = args[args.index("--native") + 1] if "--native" in args else None
     paths = [a for i, a in enumerate(args)
-             if not a.startswith("--") and (i == 0 or args[i - 1] not in ("--native", "--shots"))]
+             if not a.startswith("--") and (i == 0 or args[i - 1] not in ("--native", "--shots", "--fragment"))]
+    fragment = args[args.index("--fragment") + 1] if "--fragment" in args else None
     dist = paths[0] if paths else "dist"
     if not os.path.exists(os.path.join(dist, "phonglab_bg.wasm")):
         raise SystemExit(f"{dist}/ has no build: run scripts/web first")
@@ -340,6 +343,19 @@ def main():
                 shots = sys.argv[sys.argv.index("--shots") + 1]
                 with open(os.path.join(shots, "director-browser.png"), "wb") as f:
                     f.write(base64.b64decode(d.s("GET", "/screenshot")))
+            # 9. A link made on the desktop opens the same scene, in the language it asks for.
+            if fragment:
+                d.js("window.localStorage.clear();")
+                d.go(url + "#" + fragment)
+                shared = wait_probe(d, lambda q: q["scene"] == "a spotlight", "the shared link's scene", 30)
+                print(f"shared link ({len(fragment)} characters): the scene is {shared['scene']!r}, "
+                      f"the language {shared.get('language')!r}, message {shared['message']!r}")
+                if any(abs(a - b) > 1e-8 for a, b in zip(shared["colour"], [0.54840042, 0.42136389, 0.13368278])):
+                    failures.append(f"the shared spotlight's I is {shared['colour']}, not explain's")
+                if shared.get("language") != "pt-BR":
+                    failures.append(f"the shared link did not open in pt-BR: {shared.get('language')!r}")
+            else:
+                print("check 9 skipped: no --fragment")
             # 7. The benchmark scene against the desktop's image.
             if native_dir:
                 bench_pictures_check(d, url, native_dir, failures)

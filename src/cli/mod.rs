@@ -15,6 +15,7 @@ pub mod probe;
 pub mod render;
 pub mod screenshot;
 pub mod shader;
+pub mod share;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -144,6 +145,9 @@ pub enum Command {
     Export(export::ExportArgs),
     /// Read a worksheet-style notebook (.ipynb) or Python script (.py) into a scene file.
     Import(export::ImportArgs),
+    /// A scene as a link to the browser build (the scene in the link itself), and as a QR
+    /// code for a class.
+    Share(share::ShareArgs),
 }
 
 /// Runs a subcommand; the exit code is 0 on success, 2 on input that cannot be used, 1
@@ -168,6 +172,7 @@ pub fn run(command: Command) -> ExitCode {
         Command::Screenshot(_) => Err(anyhow::anyhow!(t!("err-needs-window"))),
         Command::Export(a) => export::export(&a),
         Command::Import(a) => export::import(&a),
+        Command::Share(a) => share::run(&a),
     };
     finish(r)
 }

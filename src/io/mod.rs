@@ -14,6 +14,7 @@ pub mod image;
 pub mod input_file;
 pub mod listing;
 pub mod misconception_set;
+pub mod qr;
 pub mod reasons;
 pub mod same_file;
 pub mod save;

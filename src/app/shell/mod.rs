@@ -14,6 +14,7 @@ pub mod layout;
 pub mod screenshot;
 pub mod session;
 pub mod session_loop;
+pub mod shared_link;
 pub mod shutdown;
 pub mod state;
 pub mod top_bar;

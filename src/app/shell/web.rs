@@ -66,6 +66,11 @@ impl WebApp {
         state.view_options.renderer = renderer_asked();
         // `?open=director`: the director's view open from the start (for its test).
         state.director.open |= url_asks("open", "director");
+        // A shared link: the scene in the address's fragment (never sent to the host).
+        let hash = web_sys::window().and_then(|w| w.location().hash().ok()).unwrap_or_default();
+        if hash.len() > 1 {
+            super::shared_link::open_fragment(&mut state, &hash[1..]);
+        }
         WINDOW.with(|w| *w.borrow_mut() = Some(cc.egui_ctx.clone()));
         WebApp {
             state,
@@ -118,6 +123,8 @@ impl WebApp {
             "gpu": self.state.gpu.is_some(),
             "pixels_per_point": ctx.pixels_per_point(),
             "landmarks": landmarks,
+            "language": self.state.ui.layout.locale().lang.code(),
+            "presenting": self.state.ui.layout.presenting,
             "message": self.state.message.as_ref().map(|m| format!("{m:?}")),
         });
         PROBE.with(|p| *p.borrow_mut() = probe.to_string());

@@ -10,6 +10,7 @@ pub mod openframeworks;
 pub mod pyopengl;
 pub mod python;
 pub mod read_python;
+pub mod share;
 pub mod template;
 
 /// What `phonglab export --to` writes.

@@ -1,0 +1,124 @@
+//! A scene in a link: the document and the window's choices, compact and versioned, for the
+//! URL fragment (never sent to the host) of the browser build.
+//!
+//! A fragment is `v1.` and then the payload, deflated and base64url-encoded (no padding).
+//! The payload is a first line `phonglab-share 1`, `key = value` lines for the window's
+//! choices ([`Shared`]: language, presenting, the term shown), a blank line, and the scene
+//! file's TOML, read by the same strict rules as a scene file ([`Document::from_toml`]) and
+//! validated. Bounded: a fragment over [`MAX_FRAGMENT`] characters, or one that inflates
+//! past [`MAX_INFLATED`] bytes, is refused before it is read. Whatever is wrong, the answer
+//! is an error that says what (an old version, damage, an unknown choice, the scene's own
+//! error), never a panic.
+
+use base64::Engine as _;
+use base64::engine::general_purpose::URL_SAFE_NO_PAD;
+
+use crate::formats::document::Document;
+
+/// The version this build writes and reads.
+pub const VERSION: u32 = 1;
+/// The longest fragment read, in characters.
+pub const MAX_FRAGMENT: usize = 16 * 1024;
+/// The largest payload inflated, in bytes.
+pub const MAX_INFLATED: usize = 256 * 1024;
+
+/// What a link carries.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Shared {
+    /// The scene: the document (its scene, view, object, shading and worked vertex).
+    pub doc: Document,
+    /// The language to show it in (`en`, `pt-PT`, `pt-BR`), if set.
+    pub lang: Option<String>,
+    /// Presenting to a class.
+    pub present: bool,
+    /// The term shown in place of the picture (a channel's name), if one is.
+    pub channel: Option<String>,
+}
+
+/// Why a fragment was not opened.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ShareError {
+    /// Longer than [`MAX_FRAGMENT`].
+    #[error("{}", crate::t!("share-too-long", length = *.0 as i64, most = MAX_FRAGMENT as i64))]
+    TooLong(usize),
+    /// Not `vN.` with a version this build reads.
+    #[error("{}", crate::t!("share-version", found = .0.clone(), version = VERSION as i64))]
+    Version(String),
+    /// Not base64url, or not deflate, or inflating past the limit.
+    #[error("{}", crate::t!("share-damaged", what = .0.clone()))]
+    Damaged(String),
+    /// A header line this build does not know, or a bad value.
+    #[error("{}", crate::t!("share-choice", line = .0.clone()))]
+    Choice(String),
+    /// The scene itself is refused (the scene file's message).
+    #[error("{0}")]
+    Scene(String),
+}
+
+/// The languages a link may ask for.
+const LANGS: [&str; 3] = ["en", "pt-PT", "pt-BR"];
+
+/// The fragment (without `#`) that carries `s`.
+pub fn encode(s: &Shared) -> Result<String, ShareError> {
+    let toml = s.doc.to_toml().map_err(|e| ShareError::Scene(e.to_string()))?;
+    let mut payload = format!("phonglab-share {VERSION}\n");
+    if let Some(lang) = &s.lang {
+        payload.push_str(&format!("lang = {lang}\n"));
+    }
+    if s.present {
+        payload.push_str("present = true\n");
+    }
+    if let Some(c) = &s.channel {
+        payload.push_str(&format!("channel = {c}\n"));
+    }
+    payload.push('\n');
+    payload.push_str(&toml);
+    let deflated = miniz_oxide::deflate::compress_to_vec(payload.as_bytes(), 9);
+    Ok(format!("v{VERSION}.{}", URL_SAFE_NO_PAD.encode(deflated)))
+}
+
+/// What the fragment `fragment` (with or without its `#`) carries.
+pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
+    let fragment = fragment.strip_prefix('#').unwrap_or(fragment);
+    if fragment.len() > MAX_FRAGMENT {
+        return Err(ShareError::TooLong(fragment.len()));
+    }
+    let shown = |s: &str| crate::escape::terminal::text(&s.chars().take(12).collect::<String>());
+    let body = match fragment.split_once('.') {
+        Some((v, body)) if v == format!("v{VERSION}") => body,
+        Some((v, _)) => return Err(ShareError::Version(shown(v))),
+        None => return Err(ShareError::Version(shown(fragment))),
+    };
+    let deflated = URL_SAFE_NO_PAD.decode(body).map_err(|e| ShareError::Damaged(e.to_string()))?;
+    let bytes = miniz_oxide::inflate::decompress_to_vec_with_limit(&deflated, MAX_INFLATED)
+        .map_err(|e| ShareError::Damaged(format!("{:?}", e.status)))?;
+    let text = String::from_utf8(bytes).map_err(|_| ShareError::Damaged("not UTF-8".into()))?;
+    let (header, toml) = text.split_once("\n\n").ok_or_else(|| ShareError::Damaged("no scene".into()))?;
+    let mut lines = header.lines();
+    if lines.next() != Some(&*format!("phonglab-share {VERSION}")) {
+        return Err(ShareError::Damaged("no header".into()));
+    }
+    let mut out = Shared { doc: Document::default(), lang: None, present: false, channel: None };
+    for line in lines {
+        let bad = || ShareError::Choice(crate::escape::terminal::text(&line.chars().take(60).collect::<String>()));
+        let (key, value) = line.split_once(" = ").ok_or_else(bad)?;
+        match key {
+            "lang" if LANGS.contains(&value) => out.lang = Some(value.to_string()),
+            "present" if value == "true" => out.present = true,
+            "channel" if crate::raster::channels::Channel::ALL.iter().any(|c| c.name() == value) => {
+                out.channel = Some(value.to_string())
+            }
+            _ => return Err(bad()),
+        }
+    }
+    let doc = Document::from_toml(toml).map_err(|e| ShareError::Scene(e.to_string()))?;
+    doc.validate().map_err(|e| ShareError::Scene(e.to_string()))?;
+    out.doc = doc;
+    Ok(out)
+}
+
+/// The link: `base` (a page's address) with the fragment of `s`.
+pub fn link(base: &str, s: &Shared) -> Result<String, ShareError> {
+    let base = base.split('#').next().unwrap_or(base);
+    Ok(format!("{base}#{}", encode(s)?))
+}

@@ -1,0 +1,27 @@
+//! A shared link opened: the scene it carries and the window's choices it asks for (the
+//! language, presenting, the term shown), or, where the link is old, damaged or hostile, the
+//! scene as it was and a message that says why. (The browser reads its address's fragment;
+//! [`phonglab_core::export::share`] reads the link.)
+
+use phonglab_core::channels::Channel;
+use phonglab_core::export::share;
+use phonglab_core::t;
+
+use super::state::AppState;
+use crate::app::model::message::Message;
+
+/// Opens the link's `fragment` (after `#`) in `state`.
+pub fn open_fragment(state: &mut AppState, fragment: &str) {
+    match share::decode(fragment) {
+        Ok(s) => {
+            let name = s.doc.name.clone();
+            state.load(s.doc, &t!("share-opened", name = name));
+            if let Some(lang) = s.lang {
+                state.ui.layout.language = Some(lang);
+            }
+            state.ui.layout.presenting |= s.present;
+            state.view_options.channel = s.channel.and_then(|c| Channel::ALL.into_iter().find(|k| k.name() == c));
+        }
+        Err(e) => state.message = Some(Message::Refused(t!("share-not-opened", why = e.to_string()))),
+    }
+}
