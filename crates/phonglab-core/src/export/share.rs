@@ -83,7 +83,7 @@ pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
     if fragment.len() > MAX_FRAGMENT {
         return Err(ShareError::TooLong(fragment.len()));
     }
-    let shown = |s: &str| crate::escape::terminal::text(&s.chars().take(12).collect::<String>());
+    let shown = |s: &str| crate::formats::escape::terminal::text(&s.chars().take(12).collect::<String>());
     let body = match fragment.split_once('.') {
         Some((v, body)) if v == format!("v{VERSION}") => body,
         Some((v, _)) => return Err(ShareError::Version(shown(v))),
@@ -100,7 +100,8 @@ pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
     }
     let mut out = Shared { doc: Document::default(), lang: None, present: false, channel: None };
     for line in lines {
-        let bad = || ShareError::Choice(crate::escape::terminal::text(&line.chars().take(60).collect::<String>()));
+        let bad =
+            || ShareError::Choice(crate::formats::escape::terminal::text(&line.chars().take(60).collect::<String>()));
         let (key, value) = line.split_once(" = ").ok_or_else(bad)?;
         match key {
             "lang" if LANGS.contains(&value) => out.lang = Some(value.to_string()),
