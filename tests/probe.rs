@@ -22,23 +22,6 @@ use phonglab_core::{Document, FlatNormal, ObjectKind, PowFn, Shading};
 
 const SIZE: usize = 72;
 
-fn scene_files() -> Vec<PathBuf> {
-    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
-        for e in std::fs::read_dir(dir).unwrap() {
-            let p = e.unwrap().path();
-            if p.is_dir() {
-                walk(&p, out);
-            } else if p.extension().is_some_and(|x| x == "toml") {
-                out.push(p);
-            }
-        }
-    }
-    let mut v = Vec::new();
-    walk(&Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes"), &mut v);
-    v.sort();
-    v
-}
-
 /// A fresh directory of this test run's own.
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("phonglab-{name}-{}", std::process::id()));
@@ -67,7 +50,7 @@ const SHADINGS: [(Shading, FlatNormal); 4] = [
 /// Each shipped scene with each object and shading, as documents.
 fn every_setup() -> Vec<(String, Document)> {
     let mut out = Vec::new();
-    for file in scene_files() {
+    for file in common::scene_files() {
         let doc = Document::from_toml(&std::fs::read_to_string(&file).unwrap()).unwrap();
         for object in [ObjectKind::Sphere, ObjectKind::Teapot, ObjectKind::Cylinder] {
             for (shading, flat) in SHADINGS {

@@ -6,28 +6,11 @@
 
 mod common;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use common::phonglab;
 use phonglab_core::Document;
 use phonglab_core::export::share::{self, MAX_FRAGMENT, ShareError, Shared, decode, encode};
-
-fn scene_files() -> Vec<PathBuf> {
-    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
-        for e in std::fs::read_dir(dir).unwrap() {
-            let p = e.unwrap().path();
-            if p.is_dir() {
-                walk(&p, out);
-            } else if p.extension().is_some_and(|x| x == "toml") {
-                out.push(p);
-            }
-        }
-    }
-    let mut v = Vec::new();
-    walk(&Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes"), &mut v);
-    v.sort();
-    v
-}
 
 fn shared(doc: Document) -> Shared {
     Shared { doc, lang: Some("pt-BR".into()), present: true, channel: Some("specular".into()) }
@@ -36,7 +19,7 @@ fn shared(doc: Document) -> Shared {
 #[test]
 fn every_shipped_scene_goes_there_and_back_in_at_most_1500_characters() {
     let mut longest = 0;
-    for f in scene_files() {
+    for f in common::scene_files() {
         let doc = Document::from_toml(&std::fs::read_to_string(&f).unwrap()).unwrap();
         let s = shared(doc);
         let link = share::link("https://example.org/phonglab/", &s).unwrap();

@@ -94,3 +94,21 @@ pub fn menu_item(h: &mut Harness<'static, AppState>, path: &[&str], item: &str) 
     h.key_press(egui::Key::Escape);
     h.run_steps(2);
 }
+
+/// Every shipped scene file (`assets/scenes/`, its folders too), sorted.
+pub fn scene_files() -> Vec<std::path::PathBuf> {
+    fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+        for e in std::fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|x| x == "toml") {
+                out.push(p);
+            }
+        }
+    }
+    let mut v = Vec::new();
+    walk(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes"), &mut v);
+    v.sort();
+    v
+}

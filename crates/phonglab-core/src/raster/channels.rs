@@ -198,7 +198,7 @@ pub struct ChannelImage {
 }
 
 /// Rec. 709's luminance of a linear rgb.
-fn luminance(c: [f64; 3]) -> f64 {
+pub fn luminance(c: [f64; 3]) -> f64 {
     0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
 }
 

@@ -368,7 +368,7 @@ pub fn check(case: &Case, d: &Drawn) -> Result<(), String> {
     }
     let (a, b) = (&d.correct_probe, &d.bugged_probe);
     let (la, lb) = (&a.terms.lights[0], &b.terms.lights[0]);
-    let luminance = |c: [f64; 3]| 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+    let luminance = crate::raster::channels::luminance;
     let claim = |ok: bool, what: &str| if ok { Ok(()) } else { Err(what.to_string()) };
     match case.kind {
         Misconception::NormalsByModelview => {
