@@ -13,7 +13,7 @@ use phonglab_core::Document;
 use phonglab_core::export::share::{self, MAX_FRAGMENT, ShareError, Shared, decode, encode};
 
 fn shared(doc: Document) -> Shared {
-    Shared { doc, lang: Some("pt-BR".into()), present: true, channel: Some("specular".into()) }
+    Shared { lang: Some("pt-BR".into()), present: true, channel: Some("specular".into()), ..Shared::of(doc) }
 }
 
 #[test]
@@ -30,7 +30,7 @@ fn every_shipped_scene_goes_there_and_back_in_at_most_1500_characters() {
     }
     eprintln!("the longest link: {longest} characters");
     // Without the choices, too; the default scene.
-    let plain = Shared { doc: Document::default(), lang: None, present: false, channel: None };
+    let plain = Shared::of(Document::default());
     assert_eq!(decode(&format!("#{}", encode(&plain).unwrap())).unwrap(), plain);
 }
 
@@ -121,7 +121,7 @@ fn the_command_prints_the_link_and_writes_its_qr_code() {
     assert!(link.starts_with("http://localhost:8080/phonglab/#v1."), "{link}");
     let back = decode(link.split_once('#').unwrap().1).unwrap();
     let doc = Document::from_toml(&std::fs::read_to_string(&scene).unwrap()).unwrap();
-    assert_eq!(back, Shared { doc, lang: Some("pt-PT".into()), present: true, channel: None });
+    assert_eq!(back, Shared { lang: Some("pt-PT".into()), present: true, ..Shared::of(doc) });
     let (w, h, rgba) = phonglab::io::image::read_png(&png).unwrap();
     assert_eq!(w, h);
     assert!(w >= 8 * (21 + 8), "{w}: a module is 8 pixels, with the quiet zone");
@@ -150,10 +150,210 @@ fn the_window_opens_a_link_and_refuses_a_damaged_one() {
     open_fragment(&mut state, &fragment);
     assert_eq!(state.doc, doc);
     assert_eq!(state.ui.layout.language.as_deref(), Some("pt-BR"));
+    // Said in the link's language, not the language the window had.
+    assert!(
+        matches!(&state.message, Some(Message::Info(m)) if m.contains("link compartilhado")),
+        "{:?}",
+        state.message
+    );
     assert!(state.ui.layout.presenting);
     assert_eq!(state.view_options.channel, Some(phonglab_core::channels::Channel::Specular));
     let before = state.doc.clone();
     open_fragment(&mut state, &fragment[..fragment.len() - 9]);
     assert_eq!(state.doc, before, "a damaged link changes nothing");
     assert!(matches!(&state.message, Some(Message::Refused(m)) if m.contains("damaged")), "{:?}", state.message);
+}
+
+/// The payload a fragment carries, inflated.
+fn payload_of(fragment: &str) -> String {
+    use base64::Engine as _;
+    let body = fragment.split_once('.').unwrap().1;
+    let deflated = base64::engine::general_purpose::URL_SAFE_NO_PAD.decode(body).unwrap();
+    String::from_utf8(miniz_oxide::inflate::decompress_to_vec(&deflated).unwrap()).unwrap()
+}
+
+#[test]
+fn a_scene_with_a_mesh_names_the_file_alone_and_asks_for_it_until_it_is_opened() {
+    use phonglab::app::AppState;
+    use phonglab::app::model::message::Message;
+    use phonglab::app::shell::files::open_bytes;
+    use phonglab::app::shell::shared_link::open_fragment;
+    use phonglab_core::ObjectKind;
+    // A mesh in a folder of the sharer's: the link names the file, never the folder.
+    let dir = std::env::temp_dir().join(format!("phonglab-share-mesh-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let name = format!("tetra-{}.obj", std::process::id());
+    let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    std::fs::write(dir.join(&name), obj).unwrap();
+    let mut doc = Document::default();
+    doc.view.object = ObjectKind::Obj;
+    doc.view.obj = Some(dir.join(&name).display().to_string());
+    doc.validate().unwrap();
+    let fragment = encode(&Shared { lang: Some("en".into()), ..Shared::of(doc.clone()) }).unwrap();
+    let payload = payload_of(&fragment);
+    assert!(payload.contains(&format!("obj = \"{name}\"")), "{payload}");
+    assert!(!payload.contains(dir.to_str().unwrap()), "the sharer's folder is not in the link: {payload}");
+
+    // Opened where the mesh is not: the scene on the sphere, and the file asked for by name.
+    let back = decode(&fragment).unwrap();
+    assert_eq!(back.missing_mesh.as_deref(), Some(name.as_str()));
+    assert_eq!(back.doc.view.object, ObjectKind::Sphere);
+    assert_eq!(back.doc.scene, doc.scene, "the rest of the scene is the link's");
+    let mut state = AppState::worksheet();
+    open_fragment(&mut state, &fragment);
+    assert_eq!(state.doc.scene, doc.scene);
+    assert_eq!(state.doc.view.object, ObjectKind::Sphere);
+    assert!(
+        matches!(&state.message, Some(Message::Info(m)) if m.contains(&name) && m.contains("open or drop")),
+        "{:?}",
+        state.message
+    );
+
+    // The file given as bytes (as the browser gives it: a name, no path) is shown.
+    open_bytes(&mut state, obj.as_bytes(), Path::new(&name));
+    assert_eq!(state.doc.view.object, ObjectKind::Obj);
+    assert_eq!(state.doc.view.obj.as_deref(), Some(name.as_str()));
+    assert_eq!(state.doc.view.mesh().triangle_count(), 4);
+    assert!(
+        matches!(&state.message, Some(Message::Info(m)) if m.contains(&name) && m.contains("4 triangles")),
+        "{:?}",
+        state.message
+    );
+    // And a link naming it now opens with the mesh.
+    let mut again = AppState::worksheet();
+    open_fragment(&mut again, &fragment);
+    assert_eq!(again.doc.view.object, ObjectKind::Obj);
+    assert_eq!(again.doc.view.mesh().triangle_count(), 4);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_mesh_given_as_bytes_meets_the_desktops_limits_and_messages() {
+    use phonglab_core::mesh::obj::{load_obj, load_obj_bytes};
+    let dir = std::env::temp_dir().join(format!("phonglab-bytes-mesh-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (text, says) in [
+        ("v 0 0 0\nv 1 0 0\nf 1 2 3\n", "out of range"),
+        ("v 0 0 0\nv 1 0 x\nv 0 1 0\nf 1 2 3\n", "line 2"),
+        ("v 0 0 0\nv 1 0 0\nf 1 2\n", "line 3"),
+    ] {
+        let path = dir.join("broken.obj");
+        std::fs::write(&path, text).unwrap();
+        let from_file = load_obj(&path).unwrap_err();
+        let from_bytes = load_obj_bytes("broken.obj", text.as_bytes()).unwrap_err();
+        assert!(from_bytes.contains(says), "{from_bytes}");
+        assert_eq!(from_file.replace(&path.display().to_string(), "broken.obj"), from_bytes);
+    }
+    let e =
+        phonglab_core::mesh::obj::refuse_too_large("big.obj", phonglab_core::mesh::obj::MAX_OBJ_BYTES + 1).unwrap_err();
+    assert!(e.contains("big.obj") && e.contains("536 870 913 bytes"), "{e}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_file_packed_for_the_pages_storage_comes_back_whole_or_is_refused() {
+    let bytes: Vec<u8> = (0..200_000u32).map(|i| (i % 251) as u8 ^ (i / 997) as u8).collect();
+    let packed = share::pack_bytes(&bytes);
+    assert!(packed.len() < bytes.len(), "{} of {}", packed.len(), bytes.len());
+    assert_eq!(share::unpack_bytes(&packed, bytes.len()).unwrap(), bytes);
+    assert!(matches!(share::unpack_bytes(&packed, bytes.len() - 1), Err(ShareError::Damaged(_))));
+    assert!(matches!(share::unpack_bytes(&packed[..packed.len() / 2], 1 << 20), Err(ShareError::Damaged(_))));
+    assert!(matches!(share::unpack_bytes("not base64!", 1 << 20), Err(ShareError::Damaged(_))));
+}
+
+/// File → Share link… at a window size: the window shows the link the command line would
+/// make (the choices as ticked), copies it, and draws its QR code large, square and on
+/// screen, beside the link rather than over it.
+fn share_window_at(w: f32, ht: f32) {
+    use egui::accesskit::Role;
+    use egui_kittest::Harness;
+    use egui_kittest::kittest::Queryable;
+    use phonglab::app::model::message::Message;
+    use phonglab::app::{AppState, app_ui};
+    let mut h = Harness::builder()
+        .with_size([w, ht])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(3);
+    common::menu_item(&mut h, &["File"], "Share link…");
+    h.run_steps(3);
+    assert!(h.state().share.open);
+    let doc = h.state().doc.clone();
+    let expected =
+        share::link(share::DEFAULT_BASE, &Shared { lang: Some("en".into()), ..Shared::of(doc.clone()) }).unwrap();
+    let link = h.get_by_label(&expected).rect();
+    let qr = h.get_by_role_and_label(Role::Image, "QR code of the link").rect();
+    let screen = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(w, ht));
+    assert!((qr.width() - qr.height()).abs() < 0.5, "{qr:?}");
+    assert!(qr.width() >= 0.55 * w.min(ht), "{qr:?} at {w}x{ht}: large enough for a room");
+    assert!(screen.contains_rect(qr) && screen.contains_rect(link), "{qr:?} {link:?}");
+    assert!(!qr.intersects(link), "{qr:?} {link:?}");
+    // Copied as shown; and what is copied opens this scene.
+    h.get_by_label("Copy link").click();
+    h.run_steps(1);
+    assert_eq!(common::copied_text(&h), vec![expected.clone()]);
+    assert!(
+        matches!(&h.state().message, Some(Message::Info(m)) if m.starts_with("Link copied")),
+        "{:?}",
+        h.state().message
+    );
+    let back = decode(expected.split_once('#').unwrap().1).unwrap();
+    assert_eq!(back.doc, doc);
+    assert!(!back.present);
+    // Ticking "presenting" makes another link, which asks for it.
+    h.get_by_role_and_label(Role::CheckBox, "Open presenting to a class").click();
+    h.run_steps(2);
+    let presenting =
+        share::link(share::DEFAULT_BASE, &Shared { lang: Some("en".into()), present: true, ..Shared::of(doc) })
+            .unwrap();
+    assert_ne!(presenting, expected);
+    assert!(h.query_by_label(&presenting).is_some(), "the link follows the choices");
+    assert!(h.query_by_label(&expected).is_none());
+}
+
+#[test]
+fn the_share_window_shows_copies_and_draws_the_link_at_1280x720() {
+    share_window_at(1280.0, 720.0);
+}
+
+#[test]
+fn the_share_window_shows_copies_and_draws_the_link_at_1024x600() {
+    share_window_at(1024.0, 600.0);
+}
+
+/// `zbarimg`'s reading of the QR code in the PNG at `path` (zbar-tools, installed by
+/// scripts/test): the text, without its `QR-Code:` prefix.
+fn scanned(path: &Path) -> String {
+    let out = std::process::Command::new("zbarimg")
+        .args(["--quiet", "--raw", "-Sbinary"])
+        .arg(path)
+        .output()
+        .expect("zbarimg (Debian's zbar-tools; scripts/test installs it)");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    String::from_utf8(out.stdout).unwrap().trim_end_matches('\n').to_string()
+}
+
+#[test]
+fn a_scanner_reads_the_link_back_from_the_windows_code_and_the_commands() {
+    let dir = std::env::temp_dir().join(format!("phonglab-qr-scan-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    // The longest shipped scene's link, as the window draws it (one pixel a module, scaled
+    // here as the window scales it, error correction L) and as `share --qr` writes it (M).
+    let longest = common::scene_files()
+        .into_iter()
+        .map(|f| {
+            let doc = Document::from_toml(&std::fs::read_to_string(&f).unwrap()).unwrap();
+            share::link(share::DEFAULT_BASE, &shared(doc)).unwrap()
+        })
+        .max_by_key(String::len)
+        .unwrap();
+    let (n, rgba) = phonglab::io::qr::qr_rgba_at(&longest, 3, qrcode::EcLevel::L).unwrap();
+    let window = dir.join("window.png");
+    phonglab::io::image::write_png(&window, n, n, &rgba).unwrap();
+    assert_eq!(scanned(&window), longest);
+    let png = dir.join("cli.png");
+    let out = phonglab(&["share", "--open-in", "pt-BR", "--qr", png.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let printed = String::from_utf8(out.stdout).unwrap().trim().to_string();
+    assert_eq!(scanned(&png), printed);
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -9,8 +9,7 @@ use phonglab_core::channels::Channel;
 use phonglab_core::export::share::{Shared, link};
 use phonglab_core::t;
 
-/// Where the browser build is published (GitHub Pages; see the README).
-pub const DEFAULT_BASE: &str = "https://phonglab.github.io/phonglab/";
+use phonglab_core::export::share::DEFAULT_BASE;
 
 /// `phonglab share`.
 #[derive(Args, Debug)]
@@ -50,8 +49,12 @@ pub fn run(a: &ShareArgs) -> Result<()> {
     {
         anyhow::bail!(t!("err-share-lang", value = format!("{lang:?}")));
     }
-    let shared =
-        Shared { doc, lang: a.open_in.clone(), present: a.present, channel: a.channel.map(|c| c.name().to_string()) };
+    let shared = Shared {
+        lang: a.open_in.clone(),
+        present: a.present,
+        channel: a.channel.map(|c| c.name().to_string()),
+        ..Shared::of(doc)
+    };
     let url = link(&a.base, &shared)?;
     println!("{url}");
     eprintln!("{}", t!("share-summary", length = url.len() as i64));

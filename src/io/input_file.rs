@@ -74,16 +74,29 @@ pub fn within_cap(name: &str, size: u64, cap: u64, what: &str) -> Result<(), Str
 
 /// A file dropped on the window: its name and bytes now on the desktop (read from its path,
 /// under `cap`); in the browser `None` now, the bytes arriving later through
-/// [`crate::platform::files::take_arrived`], their size checked against `cap` first.
+/// [`crate::platform::files::take_arrived`], their size checked first: against `cap`, or
+/// for an OBJ mesh against the mesh's own limit ([`phonglab_core::mesh::obj::MAX_OBJ_BYTES`],
+/// with the desktop's message). (The desktop opens a dropped mesh at its path instead.)
 pub fn read_dropped(
     ctx: &egui::Context,
     file: &egui::DroppedFileHandle,
     cap: u64,
 ) -> Option<Result<crate::platform::files::Arrived, String>> {
     let what = t!("file-kind-scenes");
-    let check = move |name: &str, size: u64| within_cap(name, size, cap, &what);
+    let check = move |name: &str, size: u64| {
+        if is_obj_name(name) {
+            phonglab_core::mesh::obj::refuse_too_large(name, size)
+        } else {
+            within_cap(name, size, cap, &what)
+        }
+    };
     let path = crate::platform::files::dropped_path(ctx, file, check)?;
     Some(path.and_then(|p| read_capped(&p, cap, &t!("file-kind-scenes")).map(|b| (p.display().to_string(), b))))
+}
+
+/// Does the file name (or path) `name` name an OBJ mesh?
+pub fn is_obj_name(name: &str) -> bool {
+    Path::new(name).extension().is_some_and(|e| e.eq_ignore_ascii_case("obj"))
 }
 
 /// Reads and checks a scene file (a relative mesh path is taken from its folder); an error

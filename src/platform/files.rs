@@ -82,7 +82,7 @@ fn dialog(start: Option<&std::path::Path>) -> rfd::FileDialog {
 
 /// The desktop has no chooser of its own beside the dialog: nothing happens.
 #[cfg(not(target_arch = "wasm32"))]
-pub fn choose_file(_ctx: &egui::Context, _accept: &str) {}
+pub fn choose_file(_ctx: &egui::Context, _accept: &str, _check: fn(&str, u64) -> Result<(), String>) {}
 
 /// What a file dropped on the window gives at once: its path on the desktop (read then,
 /// by [`crate::io::input_file`]); in the browser nothing yet, its bytes arriving later in
@@ -169,8 +169,9 @@ mod web {
     }
 
     /// Opens the browser's file chooser for files of the types in `accept` (".toml"); the
-    /// chosen file arrives in the inbox once read.
-    pub fn choose_file(ctx: &egui::Context, accept: &str) {
+    /// chosen file arrives in the inbox once read, or `check`'s refusal of its name and size
+    /// arrives instead, before it is read.
+    pub fn choose_file(ctx: &egui::Context, accept: &str, check: fn(&str, u64) -> Result<(), String>) {
         let Some(document) = web_sys::window().and_then(|w| w.document()) else { return };
         let Ok(input) = document.create_element("input") else { return };
         let Ok(input) = input.dyn_into::<web_sys::HtmlInputElement>() else { return };
@@ -182,6 +183,10 @@ mod web {
             let Some(file) = chosen.files().and_then(|l| l.get(0)) else { return };
             wasm_bindgen_futures::spawn_local(async move {
                 let name = file.name();
+                if let Err(why) = check(&name, file.size() as u64) {
+                    arrive(&ctx, Err(why));
+                    return;
+                }
                 let read = wasm_bindgen_futures::JsFuture::from(file.array_buffer()).await;
                 let bytes = read
                     .map(|b| js_sys::Uint8Array::new(&b).to_vec())

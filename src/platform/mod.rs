@@ -10,10 +10,12 @@
 //! | [`threads`] | work on a thread of its own, rayon's pool | work on the calling thread (no cross-origin isolation needed) |
 //! | [`clock`] | `std::time::Instant` | `performance.now()`, through `web-time` |
 //! | [`language`] | `LC_ALL`, `LC_MESSAGES`, `LANG` | `navigator.language` |
+//! | [`page`] | no page: links open the published site | the page's own address, a link's base |
 
 pub mod clock;
 pub mod files;
 pub mod language;
 pub mod os;
+pub mod page;
 pub mod storage;
 pub mod threads;

@@ -1,7 +1,9 @@
 //! Where the app keeps its session: on the desktop a folder ([`storage_dir`], the session
 //! file and its lock in it: [`crate::app::shell::session`]); in the browser the page's
 //! `localStorage` (`load_browser_session`, `save_browser_session`), one entry that
-//! holds the same RON text as the desktop's `session.ron`.
+//! holds the same RON text as the desktop's `session.ron`. A mesh opened in the page (which
+//! has no path to read it from again) is kept in `sessionStorage` for the page's session
+//! ([`keep_mesh`], [`restore_meshes`]).
 
 /// The folder the app keeps its session in: `PHONGLAB_SESSION_DIR` when set, else the
 /// system's place for an application's data (`$XDG_DATA_HOME/phonglab` or
@@ -52,4 +54,62 @@ pub fn save_browser_session(text: &str) -> Result<(), String> {
 #[cfg(target_arch = "wasm32")]
 fn local_storage() -> Option<web_sys::Storage> {
     web_sys::window()?.local_storage().ok().flatten()
+}
+
+/// The `sessionStorage` key of the mesh opened in the page: its name, a line break, and
+/// the file packed ([`phonglab_core::export::share::pack_bytes`]).
+pub const MESH_KEY: &str = "phonglab.mesh";
+
+/// The most characters of a packed mesh kept: browsers keep about 5 million characters
+/// an origin in `sessionStorage`, and the session needs some of it.
+pub const MESH_KEPT_CHARS: usize = 4_000_000;
+
+/// Keeps the mesh file `bytes`, named `name`, for a reload of the page (the browser); `Err`
+/// says, in the user's language, that it is not kept and why. The desktop reads a mesh
+/// from its file, so has nothing to keep.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn keep_mesh(_name: &str, _bytes: &[u8]) -> Result<(), String> {
+    Ok(())
+}
+
+/// Keeps the mesh file `bytes`, named `name`, for a reload of the page; `Err` says, in the
+/// user's language, that it is not kept and why.
+#[cfg(target_arch = "wasm32")]
+pub fn keep_mesh(name: &str, bytes: &[u8]) -> Result<(), String> {
+    let storage = web_sys::window()
+        .and_then(|w| w.session_storage().ok().flatten())
+        .ok_or_else(|| phonglab_core::t!("mesh-not-kept", why = phonglab_core::t!("browser-no-storage")))?;
+    let packed = phonglab_core::export::share::pack_bytes(bytes);
+    if packed.len() > MESH_KEPT_CHARS {
+        let _ = storage.remove_item(MESH_KEY);
+        return Err(phonglab_core::t!(
+            "mesh-not-kept",
+            why = phonglab_core::t!("mesh-too-large-to-keep", packed = packed.len(), most = MESH_KEPT_CHARS)
+        ));
+    }
+    storage.set_item(MESH_KEY, &format!("{name}\n{packed}")).map_err(|e| {
+        let _ = storage.remove_item(MESH_KEY);
+        phonglab_core::t!("mesh-not-kept", why = format!("{e:?}"))
+    })
+}
+
+/// Holds again the mesh this page's session kept ([`keep_mesh`]), so that the session's
+/// scene, which names it, shows it: its name, or `None` when none was kept or it could not
+/// be read back (then it is forgotten).
+#[cfg(target_arch = "wasm32")]
+pub fn restore_meshes() -> Option<String> {
+    let storage = web_sys::window()?.session_storage().ok().flatten()?;
+    let kept = storage.get_item(MESH_KEY).ok().flatten()?;
+    let (name, packed) = kept.split_once('\n')?;
+    let held = phonglab_core::export::share::unpack_bytes(packed, phonglab_core::mesh::obj::MAX_OBJ_BYTES as usize)
+        .map_err(|e| e.to_string())
+        .and_then(|bytes| phonglab_core::mesh::obj::hold_obj_bytes(name, &bytes));
+    match held {
+        Ok(_) => Some(name.to_string()),
+        Err(e) => {
+            log::warn!("the kept mesh {name} was not read back: {e}");
+            let _ = storage.remove_item(MESH_KEY);
+            None
+        }
+    }
 }

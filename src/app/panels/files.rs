@@ -129,7 +129,7 @@ fn pick(
 /// after the file it came from, or `scene.toml`).
 fn browser_file_ui(ui: &mut Ui, files: &FileState, doc: &Document, message: &mut Option<Message>) {
     if ui.button(t!("open-dialog")).on_hover_text(t!("open-browser-hover")).clicked() {
-        platform::choose_file(ui.ctx(), ".toml,.ipynb,.py");
+        platform::choose_file(ui.ctx(), ".toml,.obj,.ipynb,.py", browser_check);
     }
     if ui.button(t!("save")).on_hover_text(t!("save-download-hover")).clicked() {
         let name = Path::new(files.path.trim())
@@ -142,5 +142,16 @@ fn browser_file_ui(ui: &mut Ui, files: &FileState, doc: &Document, message: &mut
             },
             Err(e) => Message::Refused(t!("not-saved", error = e)),
         });
+    }
+}
+
+/// The browser's chooser's check of a chosen file, by its name and size, before it is read:
+/// a mesh against the mesh's limit, anything else against the largest student code file
+/// ([`crate::io::student_code::MAX_CODE_BYTES`]), as a drop is.
+fn browser_check(name: &str, size: u64) -> Result<(), String> {
+    if crate::io::input_file::is_obj_name(name) {
+        phonglab_core::mesh::obj::refuse_too_large(name, size)
+    } else {
+        crate::io::input_file::within_cap(name, size, crate::io::student_code::MAX_CODE_BYTES, &t!("file-kind-scenes"))
     }
 }

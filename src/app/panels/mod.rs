@@ -16,5 +16,6 @@ pub mod quiz_picture;
 pub mod result;
 pub mod shaded;
 pub mod shader_panel;
+pub mod share;
 pub mod things_to_try;
 pub mod vector_plot;

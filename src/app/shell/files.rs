@@ -50,7 +50,7 @@ fn open_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
 
 /// Does `path` name an OBJ mesh (rather than a scene file)?
 pub fn is_obj(path: &Path) -> bool {
-    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("obj"))
+    path.to_str().is_some_and(crate::io::input_file::is_obj_name)
 }
 
 /// Shows the OBJ mesh at `path` in the shaded view (the scene stays), or says why not with
@@ -63,12 +63,18 @@ pub fn open_obj(state: &mut AppState, path: &Path) {
 
 fn open_obj_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
     let full = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+    show_obj(state, &full.display().to_string(), &path.display().to_string(), None)
+}
+
+/// Shows the mesh named `obj` (a path, or the name a mesh given as bytes is held under),
+/// saying what was done to it, as `shown`, and `kept` (whether it is kept for a reload).
+fn show_obj(state: &mut AppState, obj: &str, shown: &str, kept: Option<String>) -> Result<(), String> {
     let mut c = state.doc.clone();
     c.view.object = phonglab_core::ObjectKind::Obj;
-    c.view.obj = Some(full.display().to_string());
+    c.view.obj = Some(obj.to_string());
     let loaded = c.view.obj_mesh();
     state.apply_or_why(c)?;
-    let what = match loaded {
+    let mut what = match loaded {
         Ok(o) => t!(
             "mesh-summary",
             triangles = o.mesh.triangle_count(),
@@ -77,12 +83,26 @@ fn open_obj_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
         ),
         Err(e) => e.to_string(),
     };
-    state.message = Some(Message::Info(t!("opened-mesh", path = path.display().to_string(), what = what)));
+    if let Some(kept) = kept {
+        what.push(' ');
+        what.push_str(&kept);
+    }
+    state.message = Some(Message::Info(t!("opened-mesh", path = shown.to_string(), what = what)));
     Ok(())
 }
 
-/// Opens a scene from the bytes of the file at `path`, or says why not.
-fn open_bytes(state: &mut AppState, bytes: &[u8], path: &Path) {
+/// Shows the OBJ mesh given as `bytes` (the browser's chooser and drops: a name, no path):
+/// read with the desktop's limits and messages, held under its name for the view, and kept
+/// in the page's storage for this session where it fits.
+fn open_obj_bytes_or_why(state: &mut AppState, name: &str, bytes: &[u8]) -> Result<(), String> {
+    phonglab_core::mesh::obj::hold_obj_bytes(name, bytes)?;
+    let kept = crate::platform::storage::keep_mesh(name, bytes).err();
+    show_obj(state, name, name, kept)
+}
+
+/// Opens a scene (or a mesh, or a worksheet notebook) from the bytes of a file named `path`
+/// (the browser's files: a name and bytes), or says why not.
+pub fn open_bytes(state: &mut AppState, bytes: &[u8], path: &Path) {
     if let Err(why) = open_bytes_or_why(state, bytes, path) {
         refuse(state, why);
     }
@@ -90,7 +110,7 @@ fn open_bytes(state: &mut AppState, bytes: &[u8], path: &Path) {
 
 fn open_bytes_or_why(state: &mut AppState, bytes: &[u8], path: &Path) -> Result<(), String> {
     if is_obj(path) {
-        return open_obj_or_why(state, path);
+        return open_obj_bytes_or_why(state, &path.display().to_string(), bytes);
     }
     let Ok(text) = std::str::from_utf8(bytes) else {
         return Err(t!("not-text", path = path.display().to_string()));
@@ -212,11 +232,16 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
     }
     let dropped = ctx.input(|i| i.raw.dropped_files.clone());
     let Some(file) = dropped.first() else { return };
-    // Read now on the desktop; in the browser the bytes arrive later (see file_ui).
-    match crate::io::input_file::read_dropped(ctx, file, MAX_CODE_BYTES) {
-        Some(Ok((name, bytes))) => open_bytes(state, &bytes, Path::new(&name)),
-        Some(Err(why)) => refuse(state, why),
-        None => {}
+    // A mesh is read from its path where it has one (a mesh may be far larger than a scene).
+    if platform::TYPED_PATHS && is_obj(file.path()) {
+        open_obj(state, file.path());
+    } else {
+        // Read now on the desktop; in the browser the bytes arrive later (see file_ui).
+        match crate::io::input_file::read_dropped(ctx, file, MAX_CODE_BYTES) {
+            Some(Ok((name, bytes))) => open_bytes(state, &bytes, Path::new(&name)),
+            Some(Err(why)) => refuse(state, why),
+            None => {}
+        }
     }
     if dropped.len() > 1 {
         let extra = t!("dropped-several", count = dropped.len());

@@ -1,7 +1,8 @@
 //! A shared link opened: the scene it carries and the window's choices it asks for (the
 //! language, presenting, the term shown), or, where the link is old, damaged or hostile, the
 //! scene as it was and a message that says why. (The browser reads its address's fragment;
-//! [`phonglab_core::export::share`] reads the link.)
+//! [`phonglab_core::export::share`] reads the link.) A scene that shows a mesh opens on the
+//! sphere and asks for the mesh's file by name, unless that file was opened already.
 
 use phonglab_core::channels::Channel;
 use phonglab_core::export::share;
@@ -14,11 +15,18 @@ use crate::app::model::message::Message;
 pub fn open_fragment(state: &mut AppState, fragment: &str) {
     match share::decode(fragment) {
         Ok(s) => {
-            let name = s.doc.name.clone();
-            state.load(s.doc, &t!("share-opened", name = name));
-            if let Some(lang) = s.lang {
-                state.ui.layout.language = Some(lang);
+            // The link's language first, so that what is said of it is said in it.
+            if let Some(lang) = &s.lang {
+                state.ui.layout.language = Some(lang.clone());
             }
+            let locale = state.ui.layout.locale();
+            let name = s.doc.name.clone();
+            phonglab_core::locale::with_locale(locale, || {
+                state.load(s.doc, &t!("share-opened", name = name));
+                if let Some(mesh) = &s.missing_mesh {
+                    state.message = Some(Message::Info(t!("share-needs-mesh", name = mesh.clone())));
+                }
+            });
             state.ui.layout.presenting |= s.present;
             state.view_options.channel = s.channel.and_then(|c| Channel::ALL.into_iter().find(|k| k.name() == c));
         }

@@ -89,6 +89,8 @@ pub struct AppState {
     pub shader: crate::app::panels::shader_panel::ShaderState,
     /// The director's view: the scene from outside.
     pub director: crate::app::panels::director::DirectorState,
+    /// The Share window: the scene as a link and a QR code.
+    pub share: crate::app::panels::share::ShareState,
     /// The wgpu adapter eframe runs on, when there is one (the shaded view can then be
     /// drawn by the scene's generated WGSL).
     pub gpu: Option<crate::app::panels::shaded::gpu::GpuInfo>,

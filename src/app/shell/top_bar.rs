@@ -149,6 +149,11 @@ fn file_menu_ui(ui: &mut Ui, state: &mut AppState) {
         &mut state.message,
     );
     ui.separator();
+    if ui.button(t!("share-menu")).on_hover_text(t!("share-menu-hover")).clicked() {
+        state.share.open_with(state.ui.layout.presenting);
+        ui.close();
+    }
+    ui.separator();
     ui.horizontal(|ui| undo_buttons_ui(ui, state));
 }
 

@@ -59,6 +59,8 @@ struct WebApp {
 
 impl WebApp {
     fn new(cc: &eframe::CreationContext<'_>) -> Self {
+        // The mesh this page's session opened, before the session that names it.
+        crate::platform::storage::restore_meshes();
         let stored = crate::platform::storage::load_browser_session();
         let (session, notices) = session::Session::from_text(stored.as_deref());
         let mut state = restore(&session, notices);

@@ -5,7 +5,7 @@ use phonglab_core::t;
 
 use super::state::AppState;
 use crate::app::panels::things_to_try::{self, TryAsked};
-use crate::app::panels::{cost, director, help, shader_panel};
+use crate::app::panels::{cost, director, help, shader_panel, share};
 
 /// The windows over the layout: the cost study (its finished work collected first), the
 /// shader, the chooser, the things to try (`explanation`: the calculation as it stands, for
@@ -25,8 +25,10 @@ pub fn windows_ui(ctx: &egui::Context, state: &mut AppState, explanation: &phong
     if let Some(moved) = director::director_window_ui(ctx, &mut state.director, &state.doc) {
         state.apply(moved);
     }
-    super::files::chooser_ui(ctx, state);
     let lang = state.ui.layout.locale().lang;
+    let shown = share::Shown { lang, channel: state.view_options.channel };
+    share::share_window_ui(ctx, &mut state.share, &state.doc, &shown, &mut state.message);
+    super::files::chooser_ui(ctx, state);
     match things_to_try::things_to_try_window_ui(ctx, &mut state.things, explanation, lang) {
         Some(TryAsked::Load(doc, title)) => state.load(*doc, &title),
         Some(TryAsked::Step(k)) => {

@@ -15,6 +15,10 @@ use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 
 use crate::formats::document::Document;
 
+/// Where the browser build is published (GitHub Pages: the README says how), the page a
+/// link opens unless another is given.
+pub const DEFAULT_BASE: &str = "https://phonglab.github.io/phonglab/";
+
 /// The version this build writes and reads.
 pub const VERSION: u32 = 1;
 /// The longest fragment read, in characters.
@@ -33,6 +37,17 @@ pub struct Shared {
     pub present: bool,
     /// The term shown in place of the picture (a channel's name), if one is.
     pub channel: Option<String>,
+    /// Read from a link: the mesh file the scene shows, where it is not here to be read (a
+    /// link carries the mesh's file name, never the mesh): the scene is opened on the
+    /// sphere, and the file must be opened to show it. Not written.
+    pub missing_mesh: Option<String>,
+}
+
+impl Shared {
+    /// A link's contents: `doc` with none of the window's choices.
+    pub fn of(doc: Document) -> Shared {
+        Shared { doc, lang: None, present: false, channel: None, missing_mesh: None }
+    }
 }
 
 /// Why a fragment was not opened.
@@ -59,8 +74,15 @@ pub enum ShareError {
 const LANGS: [&str; 3] = ["en", "pt-PT", "pt-BR"];
 
 /// The fragment (without `#`) that carries `s`.
+///
+/// A mesh file is named by its file name alone: a link never carries the sharer's folders.
 pub fn encode(s: &Shared) -> Result<String, ShareError> {
-    let toml = s.doc.to_toml().map_err(|e| ShareError::Scene(e.to_string()))?;
+    let mut doc = s.doc.clone();
+    if let Some(obj) = &doc.view.obj {
+        let name = std::path::Path::new(obj).file_name().map(|n| n.to_string_lossy().into_owned());
+        doc.view.obj = Some(name.unwrap_or_default());
+    }
+    let toml = doc.to_toml().map_err(|e| ShareError::Scene(e.to_string()))?;
     let mut payload = format!("phonglab-share {VERSION}\n");
     if let Some(lang) = &s.lang {
         payload.push_str(&format!("lang = {lang}\n"));
@@ -98,7 +120,7 @@ pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
     if lines.next() != Some(&*format!("phonglab-share {VERSION}")) {
         return Err(ShareError::Damaged("no header".into()));
     }
-    let mut out = Shared { doc: Document::default(), lang: None, present: false, channel: None };
+    let mut out = Shared::of(Document::default());
     for line in lines {
         let bad =
             || ShareError::Choice(crate::formats::escape::terminal::text(&line.chars().take(60).collect::<String>()));
@@ -112,8 +134,12 @@ pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
             _ => return Err(bad()),
         }
     }
-    let doc = Document::from_toml(toml).map_err(|e| ShareError::Scene(e.to_string()))?;
+    let (doc, missing) =
+        Document::from_toml_keeping_missing_mesh(toml, None).map_err(|e| ShareError::Scene(e.to_string()))?;
     doc.validate().map_err(|e| ShareError::Scene(e.to_string()))?;
+    if missing.is_some() {
+        out.missing_mesh = doc.view.obj.clone();
+    }
     out.doc = doc;
     Ok(out)
 }
@@ -122,4 +148,17 @@ pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
 pub fn link(base: &str, s: &Shared) -> Result<String, ShareError> {
     let base = base.split('#').next().unwrap_or(base);
     Ok(format!("{base}#{}", encode(s)?))
+}
+
+/// `bytes` deflated and base64url-encoded: a file as text, for storage that keeps only text
+/// (the browser's `sessionStorage` keeps a mesh opened in the page this way).
+pub fn pack_bytes(bytes: &[u8]) -> String {
+    URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(bytes, 6))
+}
+
+/// What [`pack_bytes`] packed, refused when it is damaged or inflates past `limit` bytes.
+pub fn unpack_bytes(text: &str, limit: usize) -> Result<Vec<u8>, ShareError> {
+    let deflated = URL_SAFE_NO_PAD.decode(text).map_err(|e| ShareError::Damaged(e.to_string()))?;
+    miniz_oxide::inflate::decompress_to_vec_with_limit(&deflated, limit)
+        .map_err(|e| ShareError::Damaged(format!("{:?}", e.status)))
 }

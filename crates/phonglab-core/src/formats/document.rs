@@ -151,9 +151,7 @@ impl Document {
             && let Err(e) = doc.view.obj_mesh()
         {
             let path = doc.view.obj.clone().unwrap_or_default();
-            note = Some(format!(
-                "The mesh {path} is missing or cannot be read ({e}); the scene is kept and shown on the sphere. Open the mesh again to show it."
-            ));
+            note = Some(crate::t!("mesh-missing-kept", path = path, error = e.to_string()));
             doc.view.object = crate::model::view::ObjectKind::Sphere;
         }
         doc.validate()?;

@@ -426,19 +426,38 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     if !meta.is_file() {
         return Err(t!("obj-not-a-file", path = shown.clone()));
     }
-    if meta.len() > MAX_OBJ_BYTES {
-        return Err(t!(
-            "obj-too-large",
-            path = shown.clone(),
-            size = describe_bytes(meta.len()),
-            max = describe_bytes(MAX_OBJ_BYTES),
-            millions = (MAX_OBJ_TRIANGLES / 1_000_000).to_string()
-        ));
-    }
+    refuse_too_large(&shown, meta.len())?;
     let open = || -> Result<_, String> {
         let file = std::fs::File::open(path).map_err(cannot)?;
         Ok(std::io::BufReader::with_capacity(1 << 16, std::io::Read::take(file, MAX_OBJ_BYTES)))
     };
+    read_fitted(&shown, open)
+}
+
+/// [`load_obj`] for a file given as its bytes (the browser's chooser and drops, which have
+/// no paths): the same limits, the same messages, `name` standing for the path in them.
+pub fn load_obj_bytes(name: &str, bytes: &[u8]) -> Result<LoadedObj, String> {
+    refuse_too_large(name, bytes.len() as u64)?;
+    read_fitted(name, || Ok(bytes))
+}
+
+/// Refuses a file over [`MAX_OBJ_BYTES`], before any of it is read.
+pub fn refuse_too_large(shown: &str, len: u64) -> Result<(), String> {
+    if len > MAX_OBJ_BYTES {
+        return Err(t!(
+            "obj-too-large",
+            path = shown.to_string(),
+            size = describe_bytes(len),
+            max = describe_bytes(MAX_OBJ_BYTES),
+            millions = (MAX_OBJ_TRIANGLES / 1_000_000).to_string()
+        ));
+    }
+    Ok(())
+}
+
+/// The two passes over a source `open` gives afresh: counted, refused past the memory
+/// budget, parsed, and fitted to radius 0.5 (errors name the file as `shown`).
+fn read_fitted<R: BufRead>(shown: &str, open: impl Fn() -> Result<R, String>) -> Result<LoadedObj, String> {
     let in_file = |e: String| format!("{shown}: {e}");
     let counts = count(open()?).map_err(in_file)?;
     let budget = MEMORY_BUDGET.load(Ordering::Relaxed);
@@ -462,10 +481,39 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
 
 type ObjCache = Mutex<HashMap<PathBuf, (Option<std::time::SystemTime>, Arc<LoadedObj>)>>;
 
+/// Meshes given as bytes rather than read from a path ([`hold_obj_bytes`]), by the name a
+/// view's `obj` gives them.
+static HELD: Mutex<Vec<(String, Arc<LoadedObj>)>> = Mutex::new(Vec::new());
+
+/// Reads the OBJ file given as `bytes` ([`load_obj_bytes`]) and holds it under `name`, so
+/// that a view whose `obj` is `name` shows it: where files have no paths (the browser). A
+/// mesh held under the same name before is replaced; only the last few are kept.
+pub fn hold_obj_bytes(name: &str, bytes: &[u8]) -> Result<Arc<LoadedObj>, String> {
+    /// The meshes held at once: each can be hundreds of megabytes.
+    const KEPT: usize = 4;
+    let obj = Arc::new(load_obj_bytes(name, bytes)?);
+    let mut held = HELD.lock().unwrap_or_else(|e| e.into_inner());
+    held.retain(|(n, _)| n != name);
+    if held.len() >= KEPT {
+        held.remove(0);
+    }
+    held.push((name.to_string(), obj.clone()));
+    Ok(obj)
+}
+
+/// The mesh held under `name` ([`hold_obj_bytes`]), if any.
+pub fn held_obj(name: &str) -> Option<Arc<LoadedObj>> {
+    HELD.lock().unwrap_or_else(|e| e.into_inner()).iter().find(|(n, _)| n == name).map(|(_, o)| o.clone())
+}
+
 /// [`load_obj`], read once per file and modification time: the shaded view asks for its
-/// mesh every time the view changes.
+/// mesh every time the view changes. A mesh held under the path's name
+/// ([`hold_obj_bytes`]) is taken first.
 pub fn load_obj_cached(path: &Path) -> Result<Arc<LoadedObj>, String> {
     static CACHE: std::sync::OnceLock<ObjCache> = std::sync::OnceLock::new();
+    if let Some(held) = path.to_str().and_then(held_obj) {
+        return Ok(held);
+    }
     let cache = CACHE.get_or_init(Default::default);
     let modified = std::fs::metadata(path).and_then(|m| m.modified()).ok();
     if let Ok(c) = cache.lock()
