@@ -19,12 +19,22 @@ probe (`phonglab_probe()`, src/web.rs):
      opens the same scene, in the language it asks for (pt-BR);
   8. the director's view (`?open=director`) draws its scene: the eye, the frustum and the
      light's rings in the light's yellow (a screenshot of it saved with --shots DIR);
+  10. an OBJ mesh dropped on the page is shown (its triangles counted), is still shown
+      after a reload (kept in sessionStorage), and a link whose scene names a mesh the page
+      does not have opens on the sphere and asks for that file by name;
+  11. the page showed a progress line while the WebAssembly arrived;
+  12. the first frame with the CPU slowed four times (Chromium's DevTools protocol,
+      Emulation.setCPUThrottlingRate, the HTTP cache off), printed against the 3 s goal;
   7. the benchmark scene (`?picture=bench`, frame 0 of `phonglab bench render`'s scene),
      drawn on the canvas by the GPU path and by the CPU path, matches the desktop's image
      of it (`phonglab render --bench-frame 0 --size 256`, made by scripts/test-web in
      NATIVE_DIR): the same coverage (within 0.5 %) and a mean difference within 2/255.
-It prints the time to first frame and who drew the shaded view. Exit status 0 when all
-pass. Usage: scripts/web_test.py [DIST] [--native NATIVE_DIR] [--figures] [--shots DIR]
+Every page is served from the sub-path /phonglab/ (as GitHub Pages serves a project's
+site). It prints the time to first frame and who drew the shaded view, and with
+--native-bench FILE (what `phonglab bench render --threads 1` printed) the CPU renderer's
+ms per frame in the page beside the desktop's, and their ratio. Exit status 0 when all
+pass. Usage: scripts/web_test.py [DIST] [--native NATIVE_DIR] [--native-bench FILE]
+[--mesh-link FRAGMENT] [--figures] [--shots DIR]
 (default: dist; --shots: the page with the director's view saved as DIR/director-browser.png;
 --native: the folder of the desktop's images `bench-OBJECT-SHADING.png` for check 7, skipped
 without it; --figures also prints ms per frame for each object, shading and renderer, for
@@ -37,6 +47,7 @@ import re
 import socket
 import subprocess
 import sys
+import tempfile
 import time
 import urllib.request
 import zlib
@@ -130,6 +141,10 @@ class Driver:
                                                                     "x": 1200 - k, "y": 600, "origin": "viewport"}]}]})
             time.sleep(0.2)
 
+    def cdp(self, cmd, params=None):
+        """A command of Chromium's DevTools protocol, through chromedriver."""
+        return self.s("POST", "/goog/cdp/execute", {"cmd": cmd, "params": params or {}})
+
     def quit(self):
         try:
             self.s("DELETE", "")
@@ -213,6 +228,53 @@ def wait_probe(d, until, what, seconds=60):
     raise SystemExit(f"the page never showed {what}; last probe: {json.dumps(p)[:1500]}")
 
 
+def octahedron_obj(levels):
+    """An octahedron split `levels` times (each triangle into four) and pushed onto the
+    unit sphere, as OBJ text: 8 x 4^levels triangles, shared vertices, no normals."""
+    verts = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]
+    faces = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)]
+    index = {}
+
+    def mid(a, b):
+        key = (min(a, b), max(a, b))
+        if key not in index:
+            p = [(verts[a][k] + verts[b][k]) / 2 for k in range(3)]
+            n = sum(c * c for c in p) ** 0.5
+            verts.append(tuple(c / n for c in p))
+            index[key] = len(verts) - 1
+        return index[key]
+
+    for _ in range(levels):
+        split = []
+        for a, b, c in faces:
+            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+            split += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
+        faces = split
+    lines = [f"v {x:.6f} {y:.6f} {z:.6f}" for x, y, z in verts]
+    lines += [f"f {a + 1} {b + 1} {c + 1}" for a, b, c in faces]
+    return "\n".join(lines) + "\n"
+
+
+def browser_against_native(d, url, native_bench):
+    """The CPU renderer on the benchmark scene at 512x512, one thread, in the page
+    (`?bench=render`) beside the desktop's figures (`phonglab bench render --threads 1`)."""
+    native = {}
+    for line in open(native_bench):
+        f = line.split()
+        if len(f) >= 3 and f[0] in ("sphere", "teapot"):
+            native[(f[0], f[1].lower())] = float(f[2])
+    d.go(url + "?bench=render")
+    q = wait_probe(d, lambda q: q.get("bench"), "the benchmark's figures", 300)
+    print("CPU renderer, benchmark scene, 512x512 px, one thread: ms per frame")
+    print("| object | shading | browser (wasm) | desktop (native) | ratio |")
+    print("|---|---|---|---|---|")
+    for f in q["bench"]:
+        n = native.get((f["object"], f["shading"].lower()))
+        ratio = f"{f['ms_per_frame'] / n:.2f}" if n else "-"
+        shown = f"{n:.2f}" if n else "-"
+        print(f"| {f['object']} | {f['shading']} | {f['ms_per_frame']:.2f} | {shown} | {ratio} |")
+
+
 BENCH_PICTURES = [("teapot", "gouraud"), ("teapot", "phong"), ("sphere", "gouraud"), ("sphere", "phong")]
 
 
@@ -240,14 +302,19 @@ def bench_pictures_check(d, url, native_dir, failures):
 def main():
     args = sys.argv[1:]
     native_dir = args[args.index("--native") + 1] if "--native" in args else None
-    paths = [a for i, a in enumerate(args)
-             if not a.startswith("--") and (i == 0 or args[i - 1] not in ("--native", "--shots", "--fragment"))]
+    valued = ("--native", "--shots", "--fragment", "--native-bench", "--mesh-link")
+    paths = [a for i, a in enumerate(args) if not a.startswith("--") and (i == 0 or args[i - 1] not in valued)]
     fragment = args[args.index("--fragment") + 1] if "--fragment" in args else None
+    mesh_link = args[args.index("--mesh-link") + 1] if "--mesh-link" in args else None
+    native_bench = args[args.index("--native-bench") + 1] if "--native-bench" in args else None
     dist = paths[0] if paths else "dist"
     if not os.path.exists(os.path.join(dist, "phonglab_bg.wasm")):
         raise SystemExit(f"{dist}/ has no build: run scripts/web first")
     web_port, driver_port = free_port(), free_port()
-    server = subprocess.Popen([sys.executable, "-m", "http.server", "--bind", "127.0.0.1", "--directory", dist,
+    # The site under a sub-path, as GitHub Pages serves a project's: /phonglab/.
+    root = tempfile.mkdtemp(prefix="phonglab-site-")
+    os.symlink(os.path.abspath(dist), os.path.join(root, "phonglab"))
+    server = subprocess.Popen([sys.executable, "-m", "http.server", "--bind", "127.0.0.1", "--directory", root,
                                str(web_port)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     chromedriver = subprocess.Popen(["chromedriver", f"--port={driver_port}"], stdout=subprocess.DEVNULL,
                                     stderr=subprocess.DEVNULL)
@@ -257,7 +324,7 @@ def main():
         wait_for_port(driver_port)
         d = Driver(driver_port)
         try:
-            url = f"http://127.0.0.1:{web_port}/index.html"
+            url = f"http://127.0.0.1:{web_port}/phonglab/"
             start = time.time()
             d.go(url)
             first = wait_probe(d, lambda p: p["frames"] >= 1, "a first frame")
@@ -265,6 +332,11 @@ def main():
             p = wait_probe(d, lambda p: p["frames"] >= 1 and p["colour"], "the worksheet's colour")
             print(f"first frame: {first_frame_s:.2f} s from navigation; shaded view: {p['drawn_by']}; "
                   f"wgpu: {p['gpu']}")
+            # 11. The progress line while the WebAssembly arrived.
+            lines = d.js("return window.phonglab_loading;") or []
+            print(f"progress lines while loading: {len(lines)}, the last two {lines[-2:]}")
+            if not any(" MB" in line for line in lines) or "starting" not in lines[-1]:
+                failures.append(f"no progress line while the wasm arrived: {lines[:5]} ... {lines[-2:]}")
             # 2. The worksheet's I.
             got = p["colour"][:3]
             if any(abs(a - b) > 1e-7 for a, b in zip(got, WORKSHEET_I)):
@@ -356,6 +428,63 @@ def main():
                     failures.append(f"the shared link did not open in pt-BR: {shared.get('language')!r}")
             else:
                 print("check 9 skipped: no --fragment")
+            # 10. A mesh dropped on the page: shown, kept for a reload, and a link that names
+            # a mesh the page does not have asks for it.
+            d.js("window.localStorage.clear(); window.sessionStorage.clear();")
+            d.go(url)
+            wait_probe(d, lambda q: q["frames"] >= 1, "the worksheet for the mesh")
+            d.js("""
+                const dt = new DataTransfer();
+                dt.items.add(new File([arguments[0]], 'statue.obj', {type: 'model/obj'}));
+                const canvas = document.getElementById('phonglab');
+                for (const kind of ['dragenter', 'dragover', 'drop']) {
+                    canvas.dispatchEvent(new DragEvent(kind, {dataTransfer: dt, bubbles: true, cancelable: true}));
+                }""", octahedron_obj(4))
+            d.nudge()
+            shown = wait_probe(d, lambda q: q.get("object") == "obj", "the dropped mesh", 20)
+            want = 8 * 4 ** 4
+            print(f"dropped statue.obj: object {shown['object']!r}, {shown.get('mesh_triangles')} triangles "
+                  f"(the file has {want}); message {shown['message']!r}")
+            if shown.get("mesh_triangles") != want:
+                failures.append(f"the dropped mesh has {shown.get('mesh_triangles')} triangles, not {want}")
+            time.sleep(1.5)
+            d.go(url)
+            again = wait_probe(d, lambda q: q["frames"] >= 1, "the page reloaded with its mesh")
+            d.nudge()
+            again = d.probe()
+            print(f"after a reload: object {again.get('object')!r}, {again.get('mesh_triangles')} triangles")
+            if again.get("object") != "obj" or again.get("mesh_triangles") != want:
+                failures.append(f"the mesh was not kept for a reload: {again.get('object')!r}, "
+                                f"{again.get('mesh_triangles')} triangles, message {again['message']!r}")
+            if mesh_link:
+                d.js("window.localStorage.clear(); window.sessionStorage.clear();")
+                # (From another page: a fragment alone changing does not load the page again.)
+                d.go("about:blank")
+                d.go(url + "#" + mesh_link)
+                asked = wait_probe(d, lambda q: q["frames"] >= 1 and q["message"], "the mesh link's message", 30)
+                print(f"a link naming bust.obj: object {asked.get('object')!r}, message {asked['message']!r}")
+                if asked.get("object") != "sphere" or "bust.obj" not in (asked["message"] or ""):
+                    failures.append(f"a link naming a missing mesh did not ask for it: {asked.get('object')!r}, "
+                                    f"{asked['message']!r}")
+            else:
+                print("check 10's link skipped: no --mesh-link")
+            # 12. The first frame on a slow machine: the CPU slowed four times, no HTTP cache.
+            d.js("window.localStorage.clear(); window.sessionStorage.clear();")
+            d.go("about:blank")
+            d.cdp("Network.enable")
+            d.cdp("Network.setCacheDisabled", {"cacheDisabled": True})
+            d.cdp("Emulation.setCPUThrottlingRate", {"rate": 4})
+            start = time.time()
+            d.go(url)
+            wait_probe(d, lambda q: q["frames"] >= 1, "a first frame with the CPU slowed", 120)
+            throttled = time.time() - start
+            d.cdp("Emulation.setCPUThrottlingRate", {"rate": 1})
+            d.cdp("Network.setCacheDisabled", {"cacheDisabled": False})
+            print(f"first frame with the CPU slowed 4x (no cache): {throttled:.2f} s from navigation "
+                  f"(goal: under 3 s; unthrottled {first_frame_s:.2f} s)")
+            # The CPU renderer's ms per frame in the page beside the desktop's.
+            if native_bench:
+                browser_against_native(d, url, native_bench)
             # 7. The benchmark scene against the desktop's image.
             if native_dir:
                 bench_pictures_check(d, url, native_dir, failures)
@@ -397,6 +526,8 @@ def main():
     finally:
         chromedriver.terminate()
         server.terminate()
+        os.unlink(os.path.join(root, "phonglab"))
+        os.rmdir(root)
     for f in failures:
         print("FAIL:", f)
     if failures:

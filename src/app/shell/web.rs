@@ -126,6 +126,8 @@ impl WebApp {
             "pixels_per_point": ctx.pixels_per_point(),
             "landmarks": landmarks,
             "language": self.state.ui.layout.locale().lang.code(),
+            "object": format!("{:?}", self.state.doc.view.object).to_lowercase(),
+            "mesh_triangles": self.state.doc.view.obj.as_ref().and_then(|_| self.state.doc.view.obj_mesh().ok()).map(|o| o.mesh.triangle_count()),
             "presenting": self.state.ui.layout.presenting,
             "message": self.state.message.as_ref().map(|m| format!("{m:?}")),
         });

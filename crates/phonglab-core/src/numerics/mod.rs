@@ -2,6 +2,7 @@
 
 pub mod copies;
 pub mod exact_pow;
+pub mod fused;
 pub mod pow;
 pub mod real;
 pub mod robust;

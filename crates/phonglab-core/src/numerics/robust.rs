@@ -22,12 +22,33 @@ pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
     (s, e)
 }
 
-/// Error-free product: `a * b = p + e` exactly (with a fused multiply-add).
+/// Error-free product: `a * b = p + e` exactly (with a fused multiply-add; where there is
+/// no such instruction, WebAssembly, by Dekker's product of Veltkamp's halves, exact as
+/// well for |a|, |b| < 2^996 and no underflow, so the same bits).
 #[inline(always)]
 pub fn two_prod(a: f64, b: f64) -> (f64, f64) {
     let p = a * b;
+    #[cfg(not(target_arch = "wasm32"))]
     let e = a.mul_add(b, -p);
+    #[cfg(target_arch = "wasm32")]
+    let e = dekker_error(a, b, p);
     (p, e)
+}
+
+/// `a * b - p` exactly, for `p = a * b` rounded (Dekker 1971, with Veltkamp's split: each
+/// factor as two halves of 26 bits, whose products are exact).
+#[inline(always)]
+pub fn dekker_error(a: f64, b: f64, p: f64) -> f64 {
+    /// 2^27 + 1.
+    const SPLIT: f64 = 134_217_729.0;
+    let split = |x: f64| {
+        let t = SPLIT * x;
+        let hi = t - (t - x);
+        (hi, x - hi)
+    };
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    ((ah * bh - p) + ah * bl + al * bh) + al * bl
 }
 
 /// Dot product computed as if in twice the working precision, then rounded (Dot2).

@@ -3,6 +3,8 @@
 /// 2^52 + 2^51: adding it to a double below 2^51 in magnitude rounds to an integer held
 /// in the low mantissa bits (the classic magic-number conversion, vectorisable where a
 /// packed double-to-int64 conversion is not).
+use crate::numerics::fused::mul_add as fma;
+
 const MAGIC: f64 = 6_755_399_441_055_744.0;
 
 /// `log2(x)` for finite `x > 0`, absolute error < 2e-12: `x = m 2^k` with m in
@@ -26,11 +28,11 @@ fn log2_f64(x: f64) -> f64 {
     let f2 = f * f;
     let f4 = f2 * f2;
     let f8 = f4 * f4;
-    let a = f2.mul_add(1.0 / 3.0, 1.0);
-    let b = f2.mul_add(1.0 / 7.0, 1.0 / 5.0);
-    let c = f2.mul_add(1.0 / 11.0, 1.0 / 9.0);
-    let series = f8.mul_add(f4.mul_add(1.0 / 13.0, c), f4.mul_add(b, a));
-    (f * (2.0 / std::f64::consts::LN_2)).mul_add(series, k)
+    let a = fma(f2, 1.0 / 3.0, 1.0);
+    let b = fma(f2, 1.0 / 7.0, 1.0 / 5.0);
+    let c = fma(f2, 1.0 / 11.0, 1.0 / 9.0);
+    let series = fma(f8, fma(f4, 1.0 / 13.0, c), fma(f4, b, a));
+    fma(f * (2.0 / std::f64::consts::LN_2), series, k)
 }
 
 /// `2^t`, relative error < 1e-13: `t = n + r`, |r| <= 1/2, `e^(r ln 2)` by its Taylor series
@@ -49,11 +51,11 @@ fn exp2_f64(t: f64) -> f64 {
     let y4 = y2 * y2;
     let y8 = y4 * y4;
     let a0 = 1.0 + y;
-    let a1 = y.mul_add(1.0 / 6.0, 1.0 / 2.0);
-    let a2 = y.mul_add(1.0 / 120.0, 1.0 / 24.0);
-    let a3 = y.mul_add(1.0 / 5040.0, 1.0 / 720.0);
-    let a4 = y2.mul_add(1.0 / 3628800.0, y.mul_add(1.0 / 362880.0, 1.0 / 40320.0));
-    let p = y8.mul_add(a4, y4.mul_add(y2.mul_add(a3, a2), y2.mul_add(a1, a0)));
+    let a1 = fma(y, 1.0 / 6.0, 1.0 / 2.0);
+    let a2 = fma(y, 1.0 / 120.0, 1.0 / 24.0);
+    let a3 = fma(y, 1.0 / 5040.0, 1.0 / 720.0);
+    let a4 = fma(y2, 1.0 / 3628800.0, fma(y, 1.0 / 362880.0, 1.0 / 40320.0));
+    let p = fma(y8, a4, fma(y4, fma(y2, a3, a2), fma(y2, a1, a0)));
     let scale = f64::from_bits(((ni + 1023) as u64) << 52);
     let r = p * scale;
     let r = if t < -1022.0 { 0.0 } else { r };
