@@ -11,7 +11,7 @@ const MODULE_PX: usize = 8;
 /// The quiet zone around the code, in modules (the standard's four).
 const QUIET: usize = 4;
 
-/// The QR code of `text` as RGBA8 pixels, [`MODULE_PX`] a module, and its side.
+/// The QR code of `text` as RGBA8 pixels, 8 a module, and its side.
 pub fn qr_rgba(text: &str) -> Result<(usize, Vec<u8>)> {
     qr_rgba_at(text, MODULE_PX, qrcode::EcLevel::M)
 }

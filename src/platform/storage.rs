@@ -3,7 +3,7 @@
 //! `localStorage` (`load_browser_session`, `save_browser_session`), one entry that
 //! holds the same RON text as the desktop's `session.ron`. A mesh opened in the page (which
 //! has no path to read it from again) is kept in `sessionStorage` for the page's session
-//! ([`keep_mesh`], [`restore_meshes`]).
+//! ([`keep_mesh`], and `restore_meshes` at the page's start).
 
 /// The folder the app keeps its session in: `PHONGLAB_SESSION_DIR` when set, else the
 /// system's place for an application's data (`$XDG_DATA_HOME/phonglab` or

@@ -9,8 +9,6 @@
 //! products and sums neither overflow nor underflow (the polynomials it serves run on
 //! values near 1).
 
-use crate::numerics::robust::two_sum;
-
 /// `a * b + c` rounded once.
 #[inline(always)]
 pub fn mul_add(a: f64, b: f64, c: f64) -> f64 {
@@ -28,9 +26,34 @@ pub fn mul_add(a: f64, b: f64, c: f64) -> f64 {
 #[inline(always)]
 pub fn emulated(a: f64, b: f64, c: f64) -> f64 {
     let uh = a * b;
-    let ul = crate::numerics::robust::dekker_error(a, b, uh);
+    let ul = dekker_error(a, b, uh);
     let (th, tl) = two_sum(c, uh);
     th + add_round_to_odd(tl, ul)
+}
+
+/// Error-free sum: `a + b = s + e` exactly (Knuth's TwoSum).
+#[inline(always)]
+pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    let e = (a - (s - bb)) + (b - bb);
+    (s, e)
+}
+
+/// `a * b - p` exactly, for `p = a * b` rounded (Dekker 1971, with Veltkamp's split: each
+/// factor as two halves of 26 bits, whose products are exact).
+#[inline(always)]
+pub fn dekker_error(a: f64, b: f64, p: f64) -> f64 {
+    /// 2^27 + 1.
+    const SPLIT: f64 = 134_217_729.0;
+    let split = |x: f64| {
+        let t = SPLIT * x;
+        let hi = t - (t - x);
+        (hi, x - hi)
+    };
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    ((ah * bh - p) + ah * bl + al * bh) + al * bl
 }
 
 /// `x + y` rounded to odd: exact when it is representable, else the one of the two
@@ -79,7 +102,7 @@ mod tests {
         for t in v.chunks(2) {
             let (a, b) = (t[0], t[1]);
             let p = a * b;
-            let dekker = crate::numerics::robust::dekker_error(a, b, p);
+            let dekker = dekker_error(a, b, p);
             assert_eq!(dekker.to_bits(), a.mul_add(b, -p).to_bits(), "{a:e} {b:e}");
             let c = -(a * b);
             assert_eq!(emulated(a, b, c).to_bits(), a.mul_add(b, c).to_bits(), "{a:e} {b:e}");

@@ -13,14 +13,7 @@ use glam::{DMat4, DVec3, DVec4};
 
 use crate::numerics::real::{Real, Vec3Ops};
 
-/// Error-free sum: `a + b = s + e` exactly (Knuth's TwoSum).
-#[inline(always)]
-pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
-    let s = a + b;
-    let bb = s - a;
-    let e = (a - (s - bb)) + (b - bb);
-    (s, e)
-}
+pub use crate::numerics::fused::two_sum;
 
 /// Error-free product: `a * b = p + e` exactly (with a fused multiply-add; where there is
 /// no such instruction, WebAssembly, by Dekker's product of Veltkamp's halves, exact as
@@ -31,24 +24,8 @@ pub fn two_prod(a: f64, b: f64) -> (f64, f64) {
     #[cfg(not(target_arch = "wasm32"))]
     let e = a.mul_add(b, -p);
     #[cfg(target_arch = "wasm32")]
-    let e = dekker_error(a, b, p);
+    let e = crate::numerics::fused::dekker_error(a, b, p);
     (p, e)
-}
-
-/// `a * b - p` exactly, for `p = a * b` rounded (Dekker 1971, with Veltkamp's split: each
-/// factor as two halves of 26 bits, whose products are exact).
-#[inline(always)]
-pub fn dekker_error(a: f64, b: f64, p: f64) -> f64 {
-    /// 2^27 + 1.
-    const SPLIT: f64 = 134_217_729.0;
-    let split = |x: f64| {
-        let t = SPLIT * x;
-        let hi = t - (t - x);
-        (hi, x - hi)
-    };
-    let (ah, al) = split(a);
-    let (bh, bl) = split(b);
-    ((ah * bh - p) + ah * bl + al * bh) + al * bl
 }
 
 /// Dot product computed as if in twice the working precision, then rounded (Dot2).
