@@ -756,3 +756,41 @@ fn export_writes_each_kind_of_code_and_import_reads_a_notebook_back() {
     assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("Gouraud or Phong"), "{o:?}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The rows `bench render` printed: (object, shading, triangles, coverage, the four stages'
+/// ms), the stages each a number at least 0.
+fn bench_rows(o: &Output) -> Vec<(String, String, usize, f64, [f64; 4])> {
+    assert!(o.status.success(), "{}", stderr(o));
+    stdout(o)
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("object"))
+        .map(|l| {
+            let f: Vec<&str> = l.split_whitespace().collect();
+            let stage = |k: usize| f[k].parse::<f64>().unwrap();
+            let stages = [stage(5), stage(6), stage(7), stage(8)];
+            assert!(stages.iter().all(|s| *s >= 0.0), "{l}");
+            (f[0].into(), f[1].into(), f[3].parse().unwrap(), f[4].parse().unwrap(), stages)
+        })
+        .collect()
+}
+
+#[test]
+fn bench_render_times_a_scan_like_mesh_an_obj_file_and_a_finer_sphere() {
+    let scan = phonglab(&["bench", "render", "--scan", "3", "--frames", "1", "--size", "64", "--shading", "phong"]);
+    let rows = bench_rows(&scan);
+    assert_eq!(rows.len(), 1, "{}", stdout(&scan));
+    assert_eq!((rows[0].0.as_str(), rows[0].1.as_str(), rows[0].2), ("scan", "phong", 20 * 64));
+    // As large as the benchmark's sphere: about 40 % of the picture.
+    assert!((0.25..0.6).contains(&rows[0].3), "coverage {}", rows[0].3);
+    let sphere =
+        phonglab(&["bench", "render", "--sphere", "20", "--object", "sphere", "--frames", "1", "--size", "64"]);
+    let rows = bench_rows(&sphere);
+    assert_eq!(rows.len(), 3, "Gouraud, Phong, Flat: {}", stdout(&sphere));
+    assert!(rows.iter().all(|r| r.0 == "sphere" && r.2 == 2 * 20 * 19), "{rows:?}");
+    let obj = temp_file("bench.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    let mesh = phonglab(&["bench", "render", "--mesh", obj.to_str().unwrap(), "--frames", "1", "--size", "64"]);
+    let rows = bench_rows(&mesh);
+    assert!(rows.len() == 3 && rows.iter().all(|r| r.0 == "mesh" && r.2 == 4 && r.3 > 0.05), "{rows:?}");
+    let refused = phonglab(&["bench", "render", "--scan", "10"]);
+    assert!(!refused.status.success() && stderr(&refused).contains("levels 0 to 9"), "{}", stderr(&refused));
+}

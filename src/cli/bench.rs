@@ -68,8 +68,24 @@ pub struct RenderBench {
     pub shading: Option<String>,
     /// The sphere's slices and stacks, 3 to 1024 (the benchmark's is 50): the cost against
     /// the triangle count.
-    #[arg(long, default_value_t = 50)]
+    #[arg(long, visible_alias = "sphere", default_value_t = 50)]
     pub slices: u32,
+    /// Time this OBJ mesh (fitted to the view) instead of the sphere and the teapot.
+    #[arg(long, value_name = "FILE", conflicts_with = "scan")]
+    pub mesh: Option<std::path::PathBuf>,
+    /// Time the scan-like mesh of 20 x 4^LEVEL triangles (a bumpy, irregular subdivided
+    /// icosahedron; 8 gives 1 310 720) instead of the sphere and the teapot.
+    #[arg(long, value_name = "LEVEL")]
+    pub scan: Option<u32>,
+}
+
+/// A mesh fitted to the view (radius 0.5) made as large as the benchmark's sphere (radius
+/// 1), so that it covers about as many pixels.
+fn as_large_as_the_sphere(mut mesh: phonglab_core::mesh::Mesh) -> phonglab_core::mesh::Mesh {
+    for p in &mut mesh.positions {
+        *p *= 2.0;
+    }
+    mesh
 }
 
 /// `phonglab bench lighting`.
@@ -88,7 +104,7 @@ pub struct LightingBenchArgs {
 }
 
 fn render(a: &RenderBench) -> Result<()> {
-    for name in a.object.iter() {
+    for name in a.object.iter().filter(|_| a.mesh.is_none() && a.scan.is_none()) {
         if !bench_meshes().iter().any(|(n, _)| n == name) {
             anyhow::bail!(phonglab_core::t!("err-bench-object", value = name));
         }
@@ -111,11 +127,25 @@ fn render(a: &RenderBench) -> Result<()> {
         )
     );
     println!("object shading ms_per_frame triangles coverage vertices_ms setup_ms raster_ms resolve_ms");
+    let chosen = a.mesh.is_some() || a.scan.is_some();
     let only = |object: &str, shading: Shading| {
-        a.object.as_deref().is_none_or(|o| o == object)
+        (chosen || a.object.as_deref().is_none_or(|o| o == object))
             && a.shading.as_deref().is_none_or(|s| shading.label().eq_ignore_ascii_case(s))
     };
-    for f in render_figures_of(bench_meshes_with(a.slices), a.frames, a.size, only)? {
+    let meshes: Vec<(&'static str, phonglab_core::mesh::Mesh)> = if let Some(path) = &a.mesh {
+        vec![(
+            "mesh",
+            as_large_as_the_sphere(phonglab_core::mesh::obj::load_obj(path).map_err(anyhow::Error::msg)?.mesh),
+        )]
+    } else if let Some(level) = a.scan {
+        if level > 9 {
+            anyhow::bail!(phonglab_core::t!("err-bench-scan", value = level.to_string()));
+        }
+        vec![("scan", as_large_as_the_sphere(phonglab_core::mesh::scan::scan_like(level, 1)))]
+    } else {
+        bench_meshes_with(a.slices).into()
+    };
+    for f in render_figures_of(meshes, a.frames, a.size, only)? {
         let [v, s, r, res] = f.stage_ms;
         println!(
             "{} {} {:.3} {} {:.4} {v:.3} {s:.3} {r:.3} {res:.3}",

@@ -48,7 +48,7 @@ pub fn render_figures(
 
 /// [`render_figures`] over `meshes` (the sphere of another tessellation).
 pub fn render_figures_of(
-    meshes: [(&'static str, Mesh); 2],
+    meshes: impl IntoIterator<Item = (&'static str, Mesh)>,
     frames: u32,
     size: usize,
     only: impl Fn(&str, Shading) -> bool,
