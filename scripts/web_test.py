@@ -23,6 +23,8 @@ probe (`phonglab_probe()`, src/web.rs):
       after a reload (kept in sessionStorage), and a link whose scene names a mesh the page
       does not have opens on the sphere and asks for that file by name;
   11. the page showed a progress line while the WebAssembly arrived;
+  13. the Share window (`?open=share`) draws a QR code that a scanner (zbarimg) reads as a
+      link to this very page whose fragment holds the scene shown;
   12. the first frame with the CPU slowed four times (Chromium's DevTools protocol,
       Emulation.setCPUThrottlingRate, the HTTP cache off), printed against the 3 s goal;
   7. the benchmark scene (`?picture=bench`, frame 0 of `phonglab bench render`'s scene),
@@ -428,6 +430,30 @@ def main():
                     failures.append(f"the shared link did not open in pt-BR: {shared.get('language')!r}")
             else:
                 print("check 9 skipped: no --fragment")
+            # 13. The Share window's QR code, read by a scanner from the page's screenshot:
+            # a link to this page, holding the scene shown.
+            d.js("window.localStorage.clear(); window.sessionStorage.clear();")
+            d.go("about:blank")
+            d.go(url + "?open=share")
+            shown = wait_probe(d, lambda q: "share-qr" in q["landmarks"], "the Share window's QR code")
+            d.nudge()
+            shot = os.path.join(root, "share.png")
+            with open(shot, "wb") as f:
+                f.write(base64.b64decode(d.s("GET", "/screenshot")))
+            scan = subprocess.run(["zbarimg", "--quiet", "--raw", "-Sbinary", shot], capture_output=True, text=True)
+            link = scan.stdout.strip()
+            os.unlink(shot)
+            side = shown["landmarks"]["share-qr"][2]
+            print(f"Share window: a QR code of {side:.0f} points; the scanner reads {link[:60]!r}... "
+                  f"({len(link)} characters)")
+            # The page's own address, without the sharer's `?open=share`.
+            if not link.startswith(url + "#v1."):
+                failures.append(f"the Share window's QR code does not read as a link to this page: {link[:120]!r} "
+                                f"({scan.stderr.strip()[:200]})")
+            else:
+                payload = zlib.decompress(base64.urlsafe_b64decode(link.split("#v1.")[1] + "=="), -15).decode()
+                if "phonglab-share 1" not in payload or f'name = "{shown["scene"]}"' not in payload:
+                    failures.append(f"the QR code's link holds another scene: {payload[:200]!r}")
             # 10. A mesh dropped on the page: shown, kept for a reload, and a link that names
             # a mesh the page does not have asks for it.
             d.js("window.localStorage.clear(); window.sessionStorage.clear();")

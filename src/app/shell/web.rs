@@ -68,6 +68,10 @@ impl WebApp {
         state.view_options.renderer = renderer_asked();
         // `?open=director`: the director's view open from the start (for its test).
         state.director.open |= url_asks("open", "director");
+        // `?open=share`: the Share window open from the start (for its test).
+        if url_asks("open", "share") {
+            state.share.open_with(state.ui.layout.presenting);
+        }
         // A shared link: the scene in the address's fragment (never sent to the host).
         let hash = web_sys::window().and_then(|w| w.location().hash().ok()).unwrap_or_default();
         if hash.len() > 1 {

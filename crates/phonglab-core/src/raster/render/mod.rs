@@ -213,8 +213,16 @@ impl Renderer {
                 resolve::prepare(job, setup, scratch, bands, attributes)
             },
         );
-        let (lit, [raster_share, resolve_share]) =
-            draw_and_shade(isa, job, &self.setup, lighter, &prepared, &mut self.image, &mut self.scratch, &self.bins);
+        let (lit, [raster_share, resolve_share]) = draw_and_shade(
+            isa,
+            job,
+            &self.setup,
+            lighter,
+            &prepared,
+            &mut self.image,
+            &mut self.scratch,
+            &self.bins[..bands],
+        );
         let t_bands = lap();
         let (t_raster, t_resolve) = (t_bands * raster_share, t_bands * resolve_share);
         let evaluations = resolve::evaluations(job, lit);

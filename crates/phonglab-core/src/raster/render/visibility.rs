@@ -71,18 +71,25 @@ pub fn bin(setup: &Setup, width: usize, height: usize, keep: bool, image: &mut I
     image.rgba.resize(n * 4, 0);
 
     let bands = height.div_ceil(BAND);
-    bins.resize_with(bands, Vec::new);
+    // The bands' bins, then as many for the back faces (kept from frame to frame too; a
+    // band's bin is `bins[band]`, the rest is scratch).
+    bins.resize_with(2 * bands, Vec::new);
     for b in bins.iter_mut() {
         b.clear();
     }
     // Front faces first: a closed surface's back faces then mostly fail the depth test and
-    // write nothing (the image is the same; only exact depth ties could differ).
-    for back in [false, true] {
-        for (i, t) in setup.tris.iter().enumerate().filter(|(_, t)| t.back == back) {
-            for bin in &mut bins[t.y0 as usize / BAND..=t.y1 as usize / BAND] {
-                bin.push(i as u32);
-            }
+    // write nothing (the image is the same; only exact depth ties could differ). One pass
+    // over the triangles (each is 136 bytes: a million are read once, not twice), the back
+    // faces into bins of their own, put after the front faces' band by band.
+    let (front, back) = bins.split_at_mut(bands);
+    for (i, t) in setup.tris.iter().enumerate() {
+        let side = if t.back { &mut *back } else { &mut *front };
+        for bin in &mut side[t.y0 as usize / BAND..=t.y1 as usize / BAND] {
+            bin.push(i as u32);
         }
+    }
+    for (f, b) in front.iter_mut().zip(back.iter()) {
+        f.extend_from_slice(b);
     }
 }
 
