@@ -217,6 +217,7 @@ impl Renderer {
             isa,
             job,
             &self.setup,
+            &self.vertices,
             lighter,
             &prepared,
             &mut self.image,
@@ -246,6 +247,7 @@ fn draw_and_shade(
     isa: Isa,
     job: &Job<'_>,
     setup: &setup::Setup,
+    verts: &vertices::Vertices,
     lighter: &Lighter,
     prepared: &resolve::Prepared,
     image: &mut Image,
@@ -279,7 +281,8 @@ fn draw_and_shade(
                     visibility::Band { y_start: y_start as i32, width, depth, raster: &mut *raster },
                 );
                 let drawn = web_time::Instant::now();
-                let input = resolve::BandInput { job, setup, lighter, p: prepared, shared, raster, y0: y_start, width };
+                let input =
+                    resolve::BandInput { job, setup, lighter, p: prepared, shared, verts, raster, y0: y_start, width };
                 let shaded = copies::resolve_band(isa, &input, px, frags);
                 if let Some(kept) = kept {
                     kept.copy_from_slice(raster);
@@ -357,6 +360,7 @@ impl Renderer {
             setup: &self.setup,
             lighter: self.lighter.as_ref()?,
             shared: &self.scratch.tris,
+            verts: &self.vertices,
             row: &row,
         };
         resolve::shade_pixel(&input, x, y)
@@ -438,6 +442,7 @@ mod tests {
                         lighter,
                         p: &prepared,
                         shared,
+                        verts: &r.vertices,
                         raster,
                         y0,
                         width: w,

@@ -66,23 +66,28 @@ pub(in crate::raster::render) struct Attributes<'a> {
     pub(in crate::raster::render) nrm: &'a mut [[Vec3; 3]],
 }
 
-/// The attributes of triangles `ts` (a chunk) into `out`. (Written once,
-/// `#[inline(always)]`; `copies` compiles it for each processor.)
+/// One triangle's attributes, those the shading reads (the others left at zero).
+#[derive(Clone, Copy, Default)]
+pub(in crate::raster::render) struct OneTriangle {
+    pub(in crate::raster::render) color: ColorPlanes,
+    pub(in crate::raster::render) edges: ScreenBarycentrics,
+    pub(in crate::raster::render) pos: [Vec3; 3],
+    pub(in crate::raster::render) nrm: [Vec3; 3],
+}
+
+/// The attributes of raster triangle `t`: what [`attributes_chunk_any`] stores for a front
+/// face, and what the resolve computes where a back face wins a pixel (the same operations,
+/// so the same bits).
 #[inline(always)]
-pub(in crate::raster::render) fn attributes_chunk_any(
-    job: &Job<'_>,
-    verts: &Vertices,
-    ts: &[RasterTri],
-    out: Attributes<'_>,
-) {
+pub(in crate::raster::render) fn attributes_of(job: &Job<'_>, verts: &Vertices, t: &RasterTri) -> OneTriangle {
     let tris = &job.mesh.triangles;
     let two = job.scene.light_model.two_sided;
-    let blend3 = |t: &RasterTri, a: &[Vec3]| -> [Vec3; 3] {
+    let blend3 = |a: &[Vec3]| -> [Vec3; 3] {
         let v = tris[t.orig as usize];
         let at = [a[v[0] as usize], a[v[1] as usize], a[v[2] as usize]];
         std::array::from_fn(|k| (at[0] * t.bary[k][0] + at[1] * t.bary[k][1] + at[2] * t.bary[k][2]) * t.inv_w[k])
     };
-    let color = |t: &RasterTri| -> [[f32; 4]; 3] {
+    let color = || -> [[f32; 4]; 3] {
         let side = (t.back && two) as usize;
         let v = tris[t.orig as usize];
         let vc = &verts.color[side];
@@ -92,20 +97,67 @@ pub(in crate::raster::render) fn attributes_chunk_any(
             std::array::from_fn(|ch| (cs[0][ch] * b[0] + cs[1][ch] * b[1] + cs[2][ch] * b[2]) * t.inv_w[k])
         })
     };
+    let mut out = OneTriangle::default();
+    match job.mode {
+        ShadingMode::Gouraud => out.color = ColorPlanes::new(t, color()),
+        ShadingMode::Phong => {
+            out.edges = ScreenBarycentrics::new(t);
+            (out.pos, out.nrm) = (blend3(&verts.eye), blend3(&verts.normal));
+        }
+        ShadingMode::FlatDerivatives => {
+            out.edges = ScreenBarycentrics::new(t);
+            out.pos = blend3(&verts.eye);
+        }
+        // One colour a face, from setup: no attributes.
+        ShadingMode::FlatFace => {}
+    }
+    out
+}
+
+/// The attributes of triangles `ts` (a chunk) into `out`: the front faces'. A back face's
+/// are computed only where it wins a pixel ([`attributes_of`], by the resolve): on a closed
+/// surface, about half the triangles are back faces and almost none of them is seen.
+/// (Written once, `#[inline(always)]`; `copies` compiles it for each processor.)
+#[inline(always)]
+pub(in crate::raster::render) fn attributes_chunk_any(
+    job: &Job<'_>,
+    verts: &Vertices,
+    ts: &[RasterTri],
+    out: Attributes<'_>,
+) {
     let Attributes { edges, colors, pos, nrm } = out;
-    for (i, t) in ts.iter().enumerate() {
+    for (i, t) in ts.iter().enumerate().filter(|(_, t)| !t.back) {
+        let a = attributes_of(job, verts, t);
         match job.mode {
-            ShadingMode::Gouraud => colors[i] = ColorPlanes::new(t, color(t)),
-            ShadingMode::Phong => {
-                edges[i] = ScreenBarycentrics::new(t);
-                (pos[i], nrm[i]) = (blend3(t, &verts.eye), blend3(t, &verts.normal));
-            }
-            ShadingMode::FlatDerivatives => {
-                edges[i] = ScreenBarycentrics::new(t);
-                pos[i] = blend3(t, &verts.eye);
-            }
-            // One colour a face, from setup: no attributes.
+            ShadingMode::Gouraud => colors[i] = a.color,
+            ShadingMode::Phong => (edges[i], pos[i], nrm[i]) = (a.edges, a.pos, a.nrm),
+            ShadingMode::FlatDerivatives => (edges[i], pos[i]) = (a.edges, a.pos),
             ShadingMode::FlatFace => {}
         }
+    }
+}
+
+impl TriangleAttributes {
+    /// Raster triangle `r`'s attributes (`t`): stored for a front face, computed for a back
+    /// face ([`attributes_chunk_any`]).
+    #[inline(always)]
+    pub(in crate::raster::render) fn of(
+        &self,
+        job: &Job<'_>,
+        verts: &Vertices,
+        r: usize,
+        t: &RasterTri,
+    ) -> Option<OneTriangle> {
+        if t.back {
+            return Some(attributes_of(job, verts, t));
+        }
+        let mut a = OneTriangle::default();
+        match job.mode {
+            ShadingMode::Gouraud => a.color = *self.color.get(r)?,
+            ShadingMode::Phong => (a.edges, a.pos, a.nrm) = (*self.edges.get(r)?, *self.pos.get(r)?, *self.nrm.get(r)?),
+            ShadingMode::FlatDerivatives => (a.edges, a.pos) = (*self.edges.get(r)?, *self.pos.get(r)?),
+            ShadingMode::FlatFace => {}
+        }
+        Some(a)
     }
 }

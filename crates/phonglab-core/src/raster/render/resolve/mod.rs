@@ -44,7 +44,7 @@ use pixels::{fill_px, to_u8};
 use runs::{Run, blend_n, run_length, xyz};
 
 pub(in crate::raster::render) use attributes::Attributes;
-pub(in crate::raster::render) use attributes::attributes_chunk_any;
+pub(in crate::raster::render) use attributes::{attributes_chunk_any, attributes_of};
 pub use fragments::Fragments;
 pub use gouraud::ColorPlanes;
 pub(crate) use picking::original_barycentrics;
@@ -119,8 +119,11 @@ pub struct BandInput<'a> {
     pub lighter: &'a Lighter,
     /// What `prepare` set up for the frame.
     pub p: &'a Prepared,
-    /// The per-triangle attributes ([`split`]).
+    /// The per-triangle attributes ([`split`]): the front faces'; a back face's are
+    /// computed where it wins a pixel, from the vertices.
     pub shared: &'a TriangleAttributes,
+    /// The frame's vertices (their colours, eye-space positions and normals).
+    pub verts: &'a crate::raster::render::vertices::Vertices,
     /// The band's visibility buffer: the rasterised triangle at each pixel.
     pub raster: &'a [u32],
     /// The image row of the band's first row.
@@ -140,7 +143,7 @@ pub(super) fn resolve_band_any<L: ResolveLanes>(
     px: &mut [[u8; 4]],
     frags: &mut Fragments,
 ) -> Shaded {
-    let BandInput { job, setup, lighter, p, shared, raster, y0, width } = *band;
+    let BandInput { job, setup, lighter, p, shared, verts, raster, y0, width } = *band;
     let (two, per_pixel, bg) = (p.two, p.per_pixel, p.bg);
     let (tri_color, tri_pos, tri_nrm) = (&shared.color, &shared.pos, &shared.nrm);
     if per_pixel {
@@ -168,10 +171,15 @@ pub(super) fn resolve_band_any<L: ResolveLanes>(
             let r = r as usize;
             match job.mode {
                 ShadingMode::FlatFace => fill_px(&mut px_row[run.x..run.x + len], p.face8[side][t.orig as usize]),
+                ShadingMode::Gouraud if t.back => gouraud_run(lanes, &attributes_of(job, verts, t).color, &run, px_row),
                 ShadingMode::Gouraud => gouraud_run(lanes, &tri_color[r], &run, px_row),
                 ShadingMode::Phong => {
-                    let edges = shared.edges[r].row(run.x, run.y);
-                    let (pw, nw) = (&tri_pos[r], &tri_nrm[r]);
+                    let own = t.back.then(|| attributes_of(job, verts, t));
+                    let (edges, pw, nw) = match &own {
+                        Some(a) => (&a.edges, &a.pos, &a.nrm),
+                        None => (&shared.edges[r], &tri_pos[r], &tri_nrm[r]),
+                    };
+                    let edges = edges.row(run.x, run.y);
                     for (k0, _) in run.blocks() {
                         let wt = run.weights(&edges, t.inv_w, k0);
                         Fragments::store(&mut frags.pos, m + k0, &blend_n(&wt, &xyz(pw)));
@@ -184,8 +192,13 @@ pub(super) fn resolve_band_any<L: ResolveLanes>(
                     // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
                     let n = setup.face_normal[t.orig as usize];
                     let face = if t.back { n } else { -n };
-                    let edges = shared.edges[r].row(run.x, run.y);
-                    flat_fragments(&run, &edges, t.inv_w, &tri_pos[r], face, frags, m);
+                    let own = t.back.then(|| attributes_of(job, verts, t));
+                    let (edges, pw) = match &own {
+                        Some(a) => (&a.edges, &a.pos),
+                        None => (&shared.edges[r], &tri_pos[r]),
+                    };
+                    let edges = edges.row(run.x, run.y);
+                    flat_fragments(&run, &edges, t.inv_w, pw, face, frags, m);
                     m = run.fragments(frags, m, side == 1);
                 }
             }

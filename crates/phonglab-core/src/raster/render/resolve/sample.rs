@@ -52,13 +52,15 @@ pub(in crate::raster::render) struct PixelInput<'a> {
     pub(in crate::raster::render) setup: &'a Setup,
     pub(in crate::raster::render) lighter: &'a Lighter,
     pub(in crate::raster::render) shared: &'a TriangleAttributes,
+    /// The frame's vertices (a back face's attributes are computed from them).
+    pub(in crate::raster::render) verts: &'a crate::raster::render::vertices::Vertices,
     /// The rasterised triangle at each pixel of row `y`.
     pub(in crate::raster::render) row: &'a [u32],
 }
 
 /// Pixel (`x`, `y`), covered by rasterised triangle `row[x]`, shaded as the resolve shaded it.
 pub(in crate::raster::render) fn shade_pixel(input: &PixelInput<'_>, x: usize, y: usize) -> Option<PixelSample> {
-    let PixelInput { job, setup, lighter, shared, row } = *input;
+    let PixelInput { job, setup, lighter, shared, verts, row } = *input;
     let r = *row.get(x)?;
     let t = setup.tris.get(r as usize)?;
     let two = job.scene.light_model.two_sided;
@@ -77,12 +79,14 @@ pub(in crate::raster::render) fn shade_pixel(input: &PixelInput<'_>, x: usize, y
         normal: None,
     };
     let ri = r as usize;
+    // The triangle's attributes as the resolve took them (stored, or for a back face computed).
+    let attributes = if job.mode == ShadingMode::FlatFace { None } else { shared.of(job, verts, ri, t) };
     out.colour = match job.mode {
         ShadingMode::FlatFace => *setup.face_color[side].get(out.triangle)?,
         ShadingMode::Gouraud => {
             // The run: back along the row while the triangle stays the same.
             let start = row[..x].iter().rposition(|&q| q != r).map_or(0, |p| p + 1);
-            let (start_planes, step) = shared.color.get(ri)?.row(start, y);
+            let (start_planes, step) = attributes?.color.row(start, y);
             let k = x - start;
             let block = gouraud_block(&start_planes, &step, k - k % LANES);
             out.run_start = Some(start);
@@ -90,11 +94,12 @@ pub(in crate::raster::render) fn shade_pixel(input: &PixelInput<'_>, x: usize, y
         }
         ShadingMode::Phong | ShadingMode::FlatDerivatives => {
             let run = Run { x, y, at: 0, len: 1 };
-            let edges = shared.edges.get(ri)?.row(x, y);
+            let a = attributes?;
+            let edges = a.edges.row(x, y);
             let wt = run.weights(&edges, t.inv_w, 0);
-            let pos = blend_n(&wt, &xyz(shared.pos.get(ri)?)).map(|c| c[0]);
+            let pos = blend_n(&wt, &xyz(&a.pos)).map(|c| c[0]);
             let nrm = if job.mode == ShadingMode::Phong {
-                blend_n(&wt, &xyz(shared.nrm.get(ri)?)).map(|c| c[0])
+                blend_n(&wt, &xyz(&a.nrm)).map(|c| c[0])
             } else {
                 let n = setup.face_normal[out.triangle];
                 (if t.back { n } else { -n }).to_array()
