@@ -331,7 +331,7 @@ pub(super) fn fill_one(ti: u32, plane: RowPlane, band: &mut Band<'_>, at: usize,
 fn draw<L: SpanFill>(lanes: L, t: &RasterTri, ti: u32, band: &mut Band<'_>) {
     let (width, y_start) = (band.width, band.y_start);
     let y_end = y_start + (band.depth.len() / width) as i32 - 1;
-    let (x, y) = (t.x, t.y);
+    let (x, y) = t.xy();
     let area = edge(x[0], y[0], x[1], y[1], x[2], y[2]);
     if area <= 0 {
         return;
@@ -401,7 +401,7 @@ pub struct ScreenBarycentrics {
 /// [`ScreenBarycentrics`] and the resolve's Gouraud planes.
 #[inline(always)]
 pub(crate) fn barycentric_steps(t: &RasterTri) -> ([i64; 2], [i64; 2], f64) {
-    let (x, y) = (t.x, t.y);
+    let (x, y) = t.xy();
     let one = 1i64 << SUBPIXEL_BITS;
     let area = edge(x[0], y[0], x[1], y[1], x[2], y[2]);
     // The edges 2 -> 0 and 0 -> 1 of [`per_edge`].
@@ -413,7 +413,7 @@ pub(crate) fn barycentric_steps(t: &RasterTri) -> ([i64; 2], [i64; 2], f64) {
 impl ScreenBarycentrics {
     /// The edge functions of `t`.
     pub fn new(t: &RasterTri) -> Self {
-        let (x, y) = (t.x, t.y);
+        let (x, y) = t.xy();
         let half = 1i64 << (SUBPIXEL_BITS - 1);
         // The edges 2 -> 0 and 0 -> 1 of [`per_edge`].
         let [_, w1, w2] = per_edge(|a, b| edge(x[a], y[a], x[b], y[b], half, half));
@@ -468,8 +468,8 @@ mod tests {
         let (x0, x1) = (px(*x.iter().min()?).max(0), ((*x.iter().max()? - one / 2) >> SUBPIXEL_BITS).min(w as i64 - 1));
         let (y0, y1) = (px(*y.iter().min()?).max(0), ((*y.iter().max()? - one / 2) >> SUBPIXEL_BITS).min(h as i64 - 1));
         (x0 <= x1 && y0 <= y1).then_some(RasterTri {
-            x,
-            y,
+            x: x.map(|v| v as i32),
+            y: y.map(|v| v as i32),
             z,
             x0: x0 as i32,
             x1: x1 as i32,
@@ -543,8 +543,8 @@ mod tests {
             // level with it (within the rounding margin), some in front.
             let (x1, y1) = ((w as i64 + 1) * one, (h as i64 + 1) * one);
             let wall = |x: [i64; 3], y: [i64; 3]| RasterTri {
-                x,
-                y,
+                x: x.map(|v| v as i32),
+                y: y.map(|v| v as i32),
                 z: [0.5; 3],
                 x0: 0,
                 x1: w as i32 - 1,
@@ -658,12 +658,13 @@ mod tests {
             let Some(t) = random_tri(&mut next, w, h) else { continue };
             let (_, raster) = draw_all(std::slice::from_ref(&t), w, h, false);
             let sb = ScreenBarycentrics::new(&t);
-            let inv_area = 1.0 / edge(t.x[0], t.y[0], t.x[1], t.y[1], t.x[2], t.y[2]) as f64;
+            let (tx, ty) = t.xy();
+            let inv_area = 1.0 / edge(tx[0], ty[0], tx[1], ty[1], tx[2], ty[2]) as f64;
             for (i, _) in raster.iter().enumerate().filter(|(_, r)| **r == 0) {
                 let (px, py) = (i % w, i / w);
                 let (cx, cy) = (px as i64 * one + half, py as i64 * one + half);
-                let w1 = edge(t.x[2], t.y[2], t.x[0], t.y[0], cx, cy);
-                let w2 = edge(t.x[0], t.y[0], t.x[1], t.y[1], cx, cy);
+                let w1 = edge(tx[2], ty[2], tx[0], ty[0], cx, cy);
+                let w2 = edge(tx[0], ty[0], tx[1], ty[1], cx, cy);
                 let l = sb.at(px, py);
                 assert_eq!(l, [(w1 as f64 * inv_area) as f32, (w2 as f64 * inv_area) as f32], "pixel {px},{py}");
                 assert!(l.iter().all(|v| (0.0..=1.0).contains(v)) && l[0] + l[1] <= 1.0 + 1e-6, "{l:?}");

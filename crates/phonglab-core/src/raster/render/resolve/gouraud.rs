@@ -46,7 +46,7 @@ impl ColorPlanes {
         let ([sx1, sx2], [sy1, sy2], inv_area) = barycentric_steps(t);
         let (sx1, sx2, sy1, sy2) = (sx1 as f64, sx2 as f64, sy1 as f64, sy2 as f64);
         let value = |k: usize, c: usize| if c < 4 { colors[k][c] as f64 } else { t.inv_w[k] as f64 };
-        let mut planes = Self { origin: [t.x[0], t.y[0]], ..Self::default() };
+        let mut planes = Self { origin: [t.x[0].into(), t.y[0].into()], ..Self::default() };
         for c in 0..5 {
             let (v0, d1, d2) = (value(0, c), value(1, c) - value(0, c), value(2, c) - value(0, c));
             planes.at_origin[c] = v0;
