@@ -143,6 +143,17 @@ class Driver:
                                                                     "x": 1200 - k, "y": 600, "origin": "viewport"}]}]})
             time.sleep(0.2)
 
+    def drop_file(self, name, text, mime):
+        """Drops a file named `name` holding `text` on the canvas: the drag events the
+        browser makes when a file is dropped on it."""
+        self.js("""
+            const dt = new DataTransfer();
+            dt.items.add(new File([arguments[0]], arguments[1], {type: arguments[2]}));
+            const canvas = document.getElementById('phonglab');
+            for (const kind of ['dragenter', 'dragover', 'drop']) {
+                canvas.dispatchEvent(new DragEvent(kind, {dataTransfer: dt, bubbles: true, cancelable: true}));
+            }""", text, name, mime)
+
     def cdp(self, cmd, params=None):
         """A command of Chromium's DevTools protocol, through chromedriver."""
         return self.s("POST", "/goog/cdp/execute", {"cmd": cmd, "params": params or {}})
@@ -366,13 +377,7 @@ def main():
             # 6a. A scene file dropped on the page (a drop event with the file, as the
             # browser makes when a file is dropped on the canvas).
             spot = open(os.path.join(os.path.dirname(__file__), "..", "assets", "scenes", "spotlight.toml")).read()
-            d.js("""
-                const dt = new DataTransfer();
-                dt.items.add(new File([arguments[0]], 'spotlight.toml', {type: 'application/toml'}));
-                const canvas = document.getElementById('phonglab');
-                for (const kind of ['dragenter', 'dragover', 'drop']) {
-                    canvas.dispatchEvent(new DragEvent(kind, {dataTransfer: dt, bubbles: true, cancelable: true}));
-                }""", spot)
+            d.drop_file("spotlight.toml", spot, "application/toml")
             d.nudge()
             dropped = wait_probe(d, lambda q: q["scene"] == "a spotlight", "the dropped scene (a spotlight)", 20)
             print(f"dropped spotlight.toml: the scene is {dropped['scene']!r}, I = {dropped['colour'][:3]}")
@@ -459,13 +464,7 @@ def main():
             d.js("window.localStorage.clear(); window.sessionStorage.clear();")
             d.go(url)
             wait_probe(d, lambda q: q["frames"] >= 1, "the worksheet for the mesh")
-            d.js("""
-                const dt = new DataTransfer();
-                dt.items.add(new File([arguments[0]], 'statue.obj', {type: 'model/obj'}));
-                const canvas = document.getElementById('phonglab');
-                for (const kind of ['dragenter', 'dragover', 'drop']) {
-                    canvas.dispatchEvent(new DragEvent(kind, {dataTransfer: dt, bubbles: true, cancelable: true}));
-                }""", octahedron_obj(4))
+            d.drop_file("statue.obj", octahedron_obj(4), "model/obj")
             d.nudge()
             shown = wait_probe(d, lambda q: q.get("object") == "obj", "the dropped mesh", 20)
             want = 8 * 4 ** 4

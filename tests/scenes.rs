@@ -8,22 +8,9 @@ use phonglab::cli::case::cases_json;
 use phonglab_core::glref::{self, CaseColors};
 use phonglab_core::{Document, Engine, EvalOptions, LightPlacement, Rules, materials, presets};
 
-fn scene_files() -> Vec<PathBuf> {
-    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
-        for e in std::fs::read_dir(dir).unwrap() {
-            let p = e.unwrap().path();
-            if p.is_dir() {
-                walk(&p, out);
-            } else if p.extension().is_some_and(|x| x == "toml") {
-                out.push(p);
-            }
-        }
-    }
-    let mut v = Vec::new();
-    walk(&Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes"), &mut v);
-    v.sort();
-    v
-}
+mod common;
+
+use common::scene_files;
 
 fn load(p: &Path) -> Document {
     let text = std::fs::read_to_string(p).unwrap();

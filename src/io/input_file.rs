@@ -82,16 +82,21 @@ pub fn read_dropped(
     file: &egui::DroppedFileHandle,
     cap: u64,
 ) -> Option<Result<crate::platform::files::Arrived, String>> {
-    let what = t!("file-kind-scenes");
-    let check = move |name: &str, size: u64| {
-        if is_obj_name(name) {
-            phonglab_core::mesh::obj::refuse_too_large(name, size)
-        } else {
-            within_cap(name, size, cap, &what)
-        }
-    };
+    let check = move |name: &str, size: u64| check_arriving(name, size, cap);
     let path = crate::platform::files::dropped_path(ctx, file, check)?;
     Some(path.and_then(|p| read_capped(&p, cap, &t!("file-kind-scenes")).map(|b| (p.display().to_string(), b))))
+}
+
+/// The check of a file the browser brings (dropped or chosen), by its name and size,
+/// before it is read: a mesh against the mesh's own limit
+/// ([`phonglab_core::mesh::obj::MAX_OBJ_BYTES`], with the desktop's message), anything else
+/// against `cap`.
+pub fn check_arriving(name: &str, size: u64, cap: u64) -> Result<(), String> {
+    if is_obj_name(name) {
+        phonglab_core::mesh::obj::refuse_too_large(name, size)
+    } else {
+        within_cap(name, size, cap, &t!("file-kind-scenes"))
+    }
 }
 
 /// Does the file name (or path) `name` name an OBJ mesh?

@@ -146,12 +146,8 @@ fn browser_file_ui(ui: &mut Ui, files: &FileState, doc: &Document, message: &mut
 }
 
 /// The browser's chooser's check of a chosen file, by its name and size, before it is read:
-/// a mesh against the mesh's limit, anything else against the largest student code file
-/// ([`crate::io::student_code::MAX_CODE_BYTES`]), as a drop is.
+/// a drop's ([`crate::io::input_file::check_arriving`]) with the largest student code file
+/// ([`crate::io::student_code::MAX_CODE_BYTES`]) as the cap.
 fn browser_check(name: &str, size: u64) -> Result<(), String> {
-    if crate::io::input_file::is_obj_name(name) {
-        phonglab_core::mesh::obj::refuse_too_large(name, size)
-    } else {
-        crate::io::input_file::within_cap(name, size, crate::io::student_code::MAX_CODE_BYTES, &t!("file-kind-scenes"))
-    }
+    crate::io::input_file::check_arriving(name, size, crate::io::student_code::MAX_CODE_BYTES)
 }

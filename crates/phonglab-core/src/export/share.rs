@@ -95,8 +95,7 @@ pub fn encode(s: &Shared) -> Result<String, ShareError> {
     }
     payload.push('\n');
     payload.push_str(&toml);
-    let deflated = miniz_oxide::deflate::compress_to_vec(payload.as_bytes(), 9);
-    Ok(format!("v{VERSION}.{}", URL_SAFE_NO_PAD.encode(deflated)))
+    Ok(format!("v{VERSION}.{}", pack(payload.as_bytes(), 9)))
 }
 
 /// What the fragment `fragment` (with or without its `#`) carries.
@@ -111,9 +110,7 @@ pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
         Some((v, _)) => return Err(ShareError::Version(shown(v))),
         None => return Err(ShareError::Version(shown(fragment))),
     };
-    let deflated = URL_SAFE_NO_PAD.decode(body).map_err(|e| ShareError::Damaged(e.to_string()))?;
-    let bytes = miniz_oxide::inflate::decompress_to_vec_with_limit(&deflated, MAX_INFLATED)
-        .map_err(|e| ShareError::Damaged(format!("{:?}", e.status)))?;
+    let bytes = unpack_bytes(body, MAX_INFLATED)?;
     let text = String::from_utf8(bytes).map_err(|_| ShareError::Damaged("not UTF-8".into()))?;
     let (header, toml) = text.split_once("\n\n").ok_or_else(|| ShareError::Damaged("no scene".into()))?;
     let mut lines = header.lines();
@@ -134,9 +131,9 @@ pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
             _ => return Err(bad()),
         }
     }
+    // Read and validated as a scene file is (a mesh that is not here aside).
     let (doc, missing) =
         Document::from_toml_keeping_missing_mesh(toml, None).map_err(|e| ShareError::Scene(e.to_string()))?;
-    doc.validate().map_err(|e| ShareError::Scene(e.to_string()))?;
     if missing.is_some() {
         out.missing_mesh = doc.view.obj.clone();
     }
@@ -153,10 +150,16 @@ pub fn link(base: &str, s: &Shared) -> Result<String, ShareError> {
 /// `bytes` deflated and base64url-encoded: a file as text, for storage that keeps only text
 /// (the browser's `sessionStorage` keeps a mesh opened in the page this way).
 pub fn pack_bytes(bytes: &[u8]) -> String {
-    URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(bytes, 6))
+    pack(bytes, 6)
 }
 
-/// What [`pack_bytes`] packed, refused when it is damaged or inflates past `limit` bytes.
+/// `bytes` deflated at `level` (a link's payload takes the smallest, 9) and base64url-encoded.
+fn pack(bytes: &[u8], level: u8) -> String {
+    URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(bytes, level))
+}
+
+/// What [`pack_bytes`] (or a link's payload) packed, refused when it is damaged or inflates
+/// past `limit` bytes.
 pub fn unpack_bytes(text: &str, limit: usize) -> Result<Vec<u8>, ShareError> {
     let deflated = URL_SAFE_NO_PAD.decode(text).map_err(|e| ShareError::Damaged(e.to_string()))?;
     miniz_oxide::inflate::decompress_to_vec_with_limit(&deflated, limit)
