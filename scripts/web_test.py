@@ -43,6 +43,7 @@ without it; --figures also prints ms per frame for each object, shading and rend
 README's figures).
 """
 import base64
+import contextlib
 import json
 import os
 import re
@@ -163,6 +164,33 @@ class Driver:
             self.s("DELETE", "")
         except SystemExit:
             pass
+
+
+@contextlib.contextmanager
+def served(dist):
+    """DIST served on localhost under the sub-path /phonglab/ (as GitHub Pages serves a
+    project's site) and a Chromium driven by chromedriver: yields (the site's URL, the
+    driver), and stops both after."""
+    web_port, driver_port = free_port(), free_port()
+    root = tempfile.mkdtemp(prefix="phonglab-site-")
+    os.symlink(os.path.abspath(dist), os.path.join(root, "phonglab"))
+    server = subprocess.Popen([sys.executable, "-m", "http.server", "--bind", "127.0.0.1", "--directory", root,
+                               str(web_port)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    chromedriver = subprocess.Popen(["chromedriver", f"--port={driver_port}"], stdout=subprocess.DEVNULL,
+                                    stderr=subprocess.DEVNULL)
+    try:
+        wait_for_port(web_port)
+        wait_for_port(driver_port)
+        d = Driver(driver_port)
+        try:
+            yield f"http://127.0.0.1:{web_port}/phonglab/", d
+        finally:
+            d.quit()
+    finally:
+        chromedriver.terminate()
+        server.terminate()
+        os.unlink(os.path.join(root, "phonglab"))
+        os.rmdir(root)
 
 
 def decode_png(data):
@@ -323,236 +351,216 @@ def main():
     dist = paths[0] if paths else "dist"
     if not os.path.exists(os.path.join(dist, "phonglab_bg.wasm")):
         raise SystemExit(f"{dist}/ has no build: run scripts/web first")
-    web_port, driver_port = free_port(), free_port()
-    # The site under a sub-path, as GitHub Pages serves a project's: /phonglab/.
-    root = tempfile.mkdtemp(prefix="phonglab-site-")
-    os.symlink(os.path.abspath(dist), os.path.join(root, "phonglab"))
-    server = subprocess.Popen([sys.executable, "-m", "http.server", "--bind", "127.0.0.1", "--directory", root,
-                               str(web_port)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    chromedriver = subprocess.Popen(["chromedriver", f"--port={driver_port}"], stdout=subprocess.DEVNULL,
-                                    stderr=subprocess.DEVNULL)
     failures = []
-    try:
-        wait_for_port(web_port)
-        wait_for_port(driver_port)
-        d = Driver(driver_port)
-        try:
-            url = f"http://127.0.0.1:{web_port}/phonglab/"
-            start = time.time()
-            d.go(url)
-            first = wait_probe(d, lambda p: p["frames"] >= 1, "a first frame")
-            first_frame_s = time.time() - start
-            p = wait_probe(d, lambda p: p["frames"] >= 1 and p["colour"], "the worksheet's colour")
-            print(f"first frame: {first_frame_s:.2f} s from navigation; shaded view: {p['drawn_by']}; "
-                  f"wgpu: {p['gpu']}")
-            # 11. The progress line while the WebAssembly arrived.
-            lines = d.js("return window.phonglab_loading;") or []
-            print(f"progress lines while loading: {len(lines)}, the last two {lines[-2:]}")
-            if not any(" MB" in line for line in lines) or "starting" not in lines[-1]:
-                failures.append(f"no progress line while the wasm arrived: {lines[:5]} ... {lines[-2:]}")
-            # 2. The worksheet's I.
-            got = p["colour"][:3]
-            if any(abs(a - b) > 1e-7 for a, b in zip(got, WORKSHEET_I)):
-                failures.append(f"the colour is {got}, not the worksheet's I {WORKSHEET_I}")
-            # 3. The browser's language.
-            marks = p["landmarks"]
-            if "Luz z" not in marks:
-                failures.append(f"no 'Luz z' among the controls (the browser asked for pt-PT): {sorted(marks)[:20]}")
-            # 4. A slider moved with the pointer changes the colour.
-            else:
-                x, y, w, h = marks["Luz z"]
-                d.drag(x + w / 2, y + h / 2, -w / 3)
-                moved = wait_probe(d, lambda q: q["colour"] and q["colour"][:3] != got, "a new colour after the drag", 20)
-                print(f"dragged 'Luz z': colour {got} -> {moved['colour'][:3]}")
-            # 5. The session in localStorage, restored on reload.
-            time.sleep(1.5)
-            kept = d.js("return window.localStorage.getItem('phonglab.session.ron');")
-            if not kept or "phonglab.document.toml" not in kept:
-                failures.append(f"no session in localStorage: {str(kept)[:200]}")
-            before = d.probe()["colour"]
-            d.go(url)
-            again = wait_probe(d, lambda q: q["frames"] >= 1 and q["colour"], "the restored scene")
-            if any(abs(a - b) > 1e-12 for a, b in zip(again["colour"], before)):
-                failures.append(f"after a reload the colour is {again['colour']}, was {before}")
-            # 6a. A scene file dropped on the page (a drop event with the file, as the
-            # browser makes when a file is dropped on the canvas).
-            spot = open(os.path.join(os.path.dirname(__file__), "..", "assets", "scenes", "spotlight.toml")).read()
-            d.drop_file("spotlight.toml", spot, "application/toml")
-            d.nudge()
-            dropped = wait_probe(d, lambda q: q["scene"] == "a spotlight", "the dropped scene (a spotlight)", 20)
-            print(f"dropped spotlight.toml: the scene is {dropped['scene']!r}, I = {dropped['colour'][:3]}")
-            # What `phonglab explain assets/scenes/spotlight.toml` prints.
-            if any(abs(a - b) > 1e-8 for a, b in zip(dropped["colour"], [0.54840042, 0.42136389, 0.13368278])):
-                failures.append(f"the dropped spotlight's I is {dropped['colour']}, not explain's")
-            # 6. The generated WGSL on WebGL2 against the CPU renderer, on the worksheet's
-            # scene as the teapot in Gouraud shading and as the sphere in Phong shading (the
-            # scene is put in the page's session before it opens).
+    with served(dist) as (url, d):
+        start = time.time()
+        d.go(url)
+        first = wait_probe(d, lambda p: p["frames"] >= 1, "a first frame")
+        first_frame_s = time.time() - start
+        p = wait_probe(d, lambda p: p["frames"] >= 1 and p["colour"], "the worksheet's colour")
+        print(f"first frame: {first_frame_s:.2f} s from navigation; shaded view: {p['drawn_by']}; "
+              f"wgpu: {p['gpu']}")
+        # 11. The progress line while the WebAssembly arrived.
+        lines = d.js("return window.phonglab_loading;") or []
+        print(f"progress lines while loading: {len(lines)}, the last two {lines[-2:]}")
+        if not any(" MB" in line for line in lines) or "starting" not in lines[-1]:
+            failures.append(f"no progress line while the wasm arrived: {lines[:5]} ... {lines[-2:]}")
+        # 2. The worksheet's I.
+        got = p["colour"][:3]
+        if any(abs(a - b) > 1e-7 for a, b in zip(got, WORKSHEET_I)):
+            failures.append(f"the colour is {got}, not the worksheet's I {WORKSHEET_I}")
+        # 3. The browser's language.
+        marks = p["landmarks"]
+        if "Luz z" not in marks:
+            failures.append(f"no 'Luz z' among the controls (the browser asked for pt-PT): {sorted(marks)[:20]}")
+        # 4. A slider moved with the pointer changes the colour.
+        else:
+            x, y, w, h = marks["Luz z"]
+            d.drag(x + w / 2, y + h / 2, -w / 3)
+            moved = wait_probe(d, lambda q: q["colour"] and q["colour"][:3] != got, "a new colour after the drag", 20)
+            print(f"dragged 'Luz z': colour {got} -> {moved['colour'][:3]}")
+        # 5. The session in localStorage, restored on reload.
+        time.sleep(1.5)
+        kept = d.js("return window.localStorage.getItem('phonglab.session.ron');")
+        if not kept or "phonglab.document.toml" not in kept:
+            failures.append(f"no session in localStorage: {str(kept)[:200]}")
+        before = d.probe()["colour"]
+        d.go(url)
+        again = wait_probe(d, lambda q: q["frames"] >= 1 and q["colour"], "the restored scene")
+        if any(abs(a - b) > 1e-12 for a, b in zip(again["colour"], before)):
+            failures.append(f"after a reload the colour is {again['colour']}, was {before}")
+        # 6a. A scene file dropped on the page (a drop event with the file, as the
+        # browser makes when a file is dropped on the canvas).
+        spot = open(os.path.join(os.path.dirname(__file__), "..", "assets", "scenes", "spotlight.toml")).read()
+        d.drop_file("spotlight.toml", spot, "application/toml")
+        d.nudge()
+        dropped = wait_probe(d, lambda q: q["scene"] == "a spotlight", "the dropped scene (a spotlight)", 20)
+        print(f"dropped spotlight.toml: the scene is {dropped['scene']!r}, I = {dropped['colour'][:3]}")
+        # What `phonglab explain assets/scenes/spotlight.toml` prints.
+        if any(abs(a - b) > 1e-8 for a, b in zip(dropped["colour"], [0.54840042, 0.42136389, 0.13368278])):
+            failures.append(f"the dropped spotlight's I is {dropped['colour']}, not explain's")
+        # 6. The generated WGSL on WebGL2 against the CPU renderer, on the worksheet's
+        # scene as the teapot in Gouraud shading and as the sphere in Phong shading (the
+        # scene is put in the page's session before it opens).
+        d.js("window.localStorage.clear();")
+        d.go(url)
+        wait_probe(d, lambda q: q["frames"] >= 1, "the worksheet again")
+        time.sleep(1.5)
+        base = d.js("return window.localStorage.getItem('phonglab.session.ron');")
+        for obj, shading in [("teapot", "gouraud"), ("sphere", "phong")]:
+            text = re.sub(r'object = \\"[a-z]+\\"', f'object = \\"{obj}\\"', base)
+            text = re.sub(r'shading = \\"[a-z]+\\"', f'shading = \\"{shading}\\"', text)
+            d.js("window.localStorage.setItem('phonglab.session.ron', arguments[0]);", text)
+            cpu, cpu_by = picture_at(d, url + "?renderer=cpu")
+            gpu, gpu_by = picture_at(d, url + "?renderer=gpu")
+            coverage, mean, both = compare_pictures(cpu, gpu)
+            print(f"{obj}, {shading}, {len(cpu[0])}x{len(cpu)} px: GPU ({gpu_by}) against CPU ({cpu_by}): "
+                  f"coverage differs on {100 * coverage:.2f} % of the pixels, mean difference "
+                  f"{mean:.2f}/255 on the {both} both cover")
+            if "GPU" not in gpu_by or "CPU" not in cpu_by:
+                failures.append(f"the pictures were not drawn as asked: {gpu_by!r}, {cpu_by!r}")
+            if coverage > 0.005 or mean > 2.0 or both < 1000:
+                failures.append(f"{obj} {shading}: the GPU's picture differs from the CPU's: "
+                                f"coverage {coverage:.4f}, mean {mean:.2f}/255 on {both} pixels")
+        # 8. The director's view in the browser: its picture holds the scene's lines, the
+        # light's rings among them in the lights' yellow.
+        d.js("window.localStorage.clear();")
+        director, _ = picture_at(d, url + "?open=director&renderer=cpu", "director-picture")
+        colours = {px for row in director for px in row}
+        yellow = sum(1 for row in director for px in row
+                     if px[0] > 150 and 90 < px[1] < 200 and px[2] < 80)
+        print(f"director's view: {len(director[0])}x{len(director)} px, {len(colours)} colours, "
+              f"{yellow} pixels in the lights' yellow")
+        if len(director[0]) < 200 or len(colours) < 20 or yellow < 50:
+            failures.append(f"the director's view is not drawn: {len(colours)} colours, {yellow} yellow")
+        if "--shots" in sys.argv:
+            shots = sys.argv[sys.argv.index("--shots") + 1]
+            with open(os.path.join(shots, "director-browser.png"), "wb") as f:
+                f.write(base64.b64decode(d.s("GET", "/screenshot")))
+        # 9. A link made on the desktop opens the same scene, in the language it asks for.
+        if fragment:
             d.js("window.localStorage.clear();")
-            d.go(url)
-            wait_probe(d, lambda q: q["frames"] >= 1, "the worksheet again")
-            time.sleep(1.5)
-            base = d.js("return window.localStorage.getItem('phonglab.session.ron');")
-            for obj, shading in [("teapot", "gouraud"), ("sphere", "phong")]:
+            d.go(url + "#" + fragment)
+            shared = wait_probe(d, lambda q: q["scene"] == "a spotlight", "the shared link's scene", 30)
+            print(f"shared link ({len(fragment)} characters): the scene is {shared['scene']!r}, "
+                  f"the language {shared.get('language')!r}, message {shared['message']!r}")
+            if any(abs(a - b) > 1e-8 for a, b in zip(shared["colour"], [0.54840042, 0.42136389, 0.13368278])):
+                failures.append(f"the shared spotlight's I is {shared['colour']}, not explain's")
+            if shared.get("language") != "pt-BR":
+                failures.append(f"the shared link did not open in pt-BR: {shared.get('language')!r}")
+        else:
+            print("check 9 skipped: no --fragment")
+        # 13. The Share window's QR code, read by a scanner from the page's screenshot:
+        # a link to this page, holding the scene shown.
+        d.js("window.localStorage.clear(); window.sessionStorage.clear();")
+        d.go("about:blank")
+        d.go(url + "?open=share")
+        shown = wait_probe(d, lambda q: "share-qr" in q["landmarks"], "the Share window's QR code")
+        d.nudge()
+        shot = os.path.join(root, "share.png")
+        with open(shot, "wb") as f:
+            f.write(base64.b64decode(d.s("GET", "/screenshot")))
+        scan = subprocess.run(["zbarimg", "--quiet", "--raw", "-Sbinary", shot], capture_output=True, text=True)
+        link = scan.stdout.strip()
+        os.unlink(shot)
+        side = shown["landmarks"]["share-qr"][2]
+        print(f"Share window: a QR code of {side:.0f} points; the scanner reads {link[:60]!r}... "
+              f"({len(link)} characters)")
+        # The page's own address, without the sharer's `?open=share`.
+        if not link.startswith(url + "#v1."):
+            failures.append(f"the Share window's QR code does not read as a link to this page: {link[:120]!r} "
+                            f"({scan.stderr.strip()[:200]})")
+        else:
+            payload = zlib.decompress(base64.urlsafe_b64decode(link.split("#v1.")[1] + "=="), -15).decode()
+            if "phonglab-share 1" not in payload or f'name = "{shown["scene"]}"' not in payload:
+                failures.append(f"the QR code's link holds another scene: {payload[:200]!r}")
+        # 10. A mesh dropped on the page: shown, kept for a reload, and a link that names
+        # a mesh the page does not have asks for it.
+        d.js("window.localStorage.clear(); window.sessionStorage.clear();")
+        d.go(url)
+        wait_probe(d, lambda q: q["frames"] >= 1, "the worksheet for the mesh")
+        d.drop_file("statue.obj", octahedron_obj(4), "model/obj")
+        d.nudge()
+        shown = wait_probe(d, lambda q: q.get("object") == "obj", "the dropped mesh", 20)
+        want = 8 * 4 ** 4
+        print(f"dropped statue.obj: object {shown['object']!r}, {shown.get('mesh_triangles')} triangles "
+              f"(the file has {want}); message {shown['message']!r}")
+        if shown.get("mesh_triangles") != want:
+            failures.append(f"the dropped mesh has {shown.get('mesh_triangles')} triangles, not {want}")
+        time.sleep(1.5)
+        d.go(url)
+        again = wait_probe(d, lambda q: q["frames"] >= 1, "the page reloaded with its mesh")
+        d.nudge()
+        again = d.probe()
+        print(f"after a reload: object {again.get('object')!r}, {again.get('mesh_triangles')} triangles")
+        if again.get("object") != "obj" or again.get("mesh_triangles") != want:
+            failures.append(f"the mesh was not kept for a reload: {again.get('object')!r}, "
+                            f"{again.get('mesh_triangles')} triangles, message {again['message']!r}")
+        if mesh_link:
+            d.js("window.localStorage.clear(); window.sessionStorage.clear();")
+            # (From another page: a fragment alone changing does not load the page again.)
+            d.go("about:blank")
+            d.go(url + "#" + mesh_link)
+            asked = wait_probe(d, lambda q: q["frames"] >= 1 and q["message"], "the mesh link's message", 30)
+            print(f"a link naming bust.obj: object {asked.get('object')!r}, message {asked['message']!r}")
+            if asked.get("object") != "sphere" or "bust.obj" not in (asked["message"] or ""):
+                failures.append(f"a link naming a missing mesh did not ask for it: {asked.get('object')!r}, "
+                                f"{asked['message']!r}")
+        else:
+            print("check 10's link skipped: no --mesh-link")
+        # 12. The first frame on a slow machine: the CPU slowed four times, no HTTP cache.
+        d.js("window.localStorage.clear(); window.sessionStorage.clear();")
+        d.go("about:blank")
+        d.cdp("Network.enable")
+        d.cdp("Network.setCacheDisabled", {"cacheDisabled": True})
+        d.cdp("Emulation.setCPUThrottlingRate", {"rate": 4})
+        start = time.time()
+        d.go(url)
+        wait_probe(d, lambda q: q["frames"] >= 1, "a first frame with the CPU slowed", 120)
+        throttled = time.time() - start
+        d.cdp("Emulation.setCPUThrottlingRate", {"rate": 1})
+        d.cdp("Network.setCacheDisabled", {"cacheDisabled": False})
+        print(f"first frame with the CPU slowed 4x (no cache): {throttled:.2f} s from navigation "
+              f"(goal: under 3 s; unthrottled {first_frame_s:.2f} s)")
+        # The CPU renderer's ms per frame in the page beside the desktop's.
+        if native_bench:
+            browser_against_native(d, url, native_bench)
+        # 7. The benchmark scene against the desktop's image.
+        if native_dir:
+            bench_pictures_check(d, url, native_dir, failures)
+        else:
+            print("check 7 skipped: no --native folder of the desktop's images")
+        # Figures (no assertion): ms per frame of the whole window while the object turns
+        # (auto-rotate repaints every frame), for each object, shading and renderer.
+        if "--figures" in sys.argv:
+            d.go(url + "?bench=render")
+            q = wait_probe(d, lambda q: q.get("bench"), "the benchmark's figures", 300)
+            for f in q["bench"]:
+                print(f"figures: CPU renderer, benchmark scene, 512x512: {f['object']} {f['shading']}: "
+                      f"{f['ms_per_frame']:.2f} ms per frame (one thread)")
+            # A window large enough for a view of about 512x512 pixels.
+            d.s("POST", "/window/rect", {"width": 1650, "height": 1100})
+            for obj, shading in [("sphere", "gouraud"), ("sphere", "phong"), ("teapot", "gouraud"), ("teapot", "phong")]:
                 text = re.sub(r'object = \\"[a-z]+\\"', f'object = \\"{obj}\\"', base)
                 text = re.sub(r'shading = \\"[a-z]+\\"', f'shading = \\"{shading}\\"', text)
-                d.js("window.localStorage.setItem('phonglab.session.ron', arguments[0]);", text)
-                cpu, cpu_by = picture_at(d, url + "?renderer=cpu")
-                gpu, gpu_by = picture_at(d, url + "?renderer=gpu")
-                coverage, mean, both = compare_pictures(cpu, gpu)
-                print(f"{obj}, {shading}, {len(cpu[0])}x{len(cpu)} px: GPU ({gpu_by}) against CPU ({cpu_by}): "
-                      f"coverage differs on {100 * coverage:.2f} % of the pixels, mean difference "
-                      f"{mean:.2f}/255 on the {both} both cover")
-                if "GPU" not in gpu_by or "CPU" not in cpu_by:
-                    failures.append(f"the pictures were not drawn as asked: {gpu_by!r}, {cpu_by!r}")
-                if coverage > 0.005 or mean > 2.0 or both < 1000:
-                    failures.append(f"{obj} {shading}: the GPU's picture differs from the CPU's: "
-                                    f"coverage {coverage:.4f}, mean {mean:.2f}/255 on {both} pixels")
-            # 8. The director's view in the browser: its picture holds the scene's lines, the
-            # light's rings among them in the lights' yellow.
-            d.js("window.localStorage.clear();")
-            director, _ = picture_at(d, url + "?open=director&renderer=cpu", "director-picture")
-            colours = {px for row in director for px in row}
-            yellow = sum(1 for row in director for px in row
-                         if px[0] > 150 and 90 < px[1] < 200 and px[2] < 80)
-            print(f"director's view: {len(director[0])}x{len(director)} px, {len(colours)} colours, "
-                  f"{yellow} pixels in the lights' yellow")
-            if len(director[0]) < 200 or len(colours) < 20 or yellow < 50:
-                failures.append(f"the director's view is not drawn: {len(colours)} colours, {yellow} yellow")
-            if "--shots" in sys.argv:
-                shots = sys.argv[sys.argv.index("--shots") + 1]
-                with open(os.path.join(shots, "director-browser.png"), "wb") as f:
-                    f.write(base64.b64decode(d.s("GET", "/screenshot")))
-            # 9. A link made on the desktop opens the same scene, in the language it asks for.
-            if fragment:
-                d.js("window.localStorage.clear();")
-                d.go(url + "#" + fragment)
-                shared = wait_probe(d, lambda q: q["scene"] == "a spotlight", "the shared link's scene", 30)
-                print(f"shared link ({len(fragment)} characters): the scene is {shared['scene']!r}, "
-                      f"the language {shared.get('language')!r}, message {shared['message']!r}")
-                if any(abs(a - b) > 1e-8 for a, b in zip(shared["colour"], [0.54840042, 0.42136389, 0.13368278])):
-                    failures.append(f"the shared spotlight's I is {shared['colour']}, not explain's")
-                if shared.get("language") != "pt-BR":
-                    failures.append(f"the shared link did not open in pt-BR: {shared.get('language')!r}")
-            else:
-                print("check 9 skipped: no --fragment")
-            # 13. The Share window's QR code, read by a scanner from the page's screenshot:
-            # a link to this page, holding the scene shown.
-            d.js("window.localStorage.clear(); window.sessionStorage.clear();")
-            d.go("about:blank")
-            d.go(url + "?open=share")
-            shown = wait_probe(d, lambda q: "share-qr" in q["landmarks"], "the Share window's QR code")
-            d.nudge()
-            shot = os.path.join(root, "share.png")
-            with open(shot, "wb") as f:
-                f.write(base64.b64decode(d.s("GET", "/screenshot")))
-            scan = subprocess.run(["zbarimg", "--quiet", "--raw", "-Sbinary", shot], capture_output=True, text=True)
-            link = scan.stdout.strip()
-            os.unlink(shot)
-            side = shown["landmarks"]["share-qr"][2]
-            print(f"Share window: a QR code of {side:.0f} points; the scanner reads {link[:60]!r}... "
-                  f"({len(link)} characters)")
-            # The page's own address, without the sharer's `?open=share`.
-            if not link.startswith(url + "#v1."):
-                failures.append(f"the Share window's QR code does not read as a link to this page: {link[:120]!r} "
-                                f"({scan.stderr.strip()[:200]})")
-            else:
-                payload = zlib.decompress(base64.urlsafe_b64decode(link.split("#v1.")[1] + "=="), -15).decode()
-                if "phonglab-share 1" not in payload or f'name = "{shown["scene"]}"' not in payload:
-                    failures.append(f"the QR code's link holds another scene: {payload[:200]!r}")
-            # 10. A mesh dropped on the page: shown, kept for a reload, and a link that names
-            # a mesh the page does not have asks for it.
-            d.js("window.localStorage.clear(); window.sessionStorage.clear();")
-            d.go(url)
-            wait_probe(d, lambda q: q["frames"] >= 1, "the worksheet for the mesh")
-            d.drop_file("statue.obj", octahedron_obj(4), "model/obj")
-            d.nudge()
-            shown = wait_probe(d, lambda q: q.get("object") == "obj", "the dropped mesh", 20)
-            want = 8 * 4 ** 4
-            print(f"dropped statue.obj: object {shown['object']!r}, {shown.get('mesh_triangles')} triangles "
-                  f"(the file has {want}); message {shown['message']!r}")
-            if shown.get("mesh_triangles") != want:
-                failures.append(f"the dropped mesh has {shown.get('mesh_triangles')} triangles, not {want}")
-            time.sleep(1.5)
-            d.go(url)
-            again = wait_probe(d, lambda q: q["frames"] >= 1, "the page reloaded with its mesh")
-            d.nudge()
-            again = d.probe()
-            print(f"after a reload: object {again.get('object')!r}, {again.get('mesh_triangles')} triangles")
-            if again.get("object") != "obj" or again.get("mesh_triangles") != want:
-                failures.append(f"the mesh was not kept for a reload: {again.get('object')!r}, "
-                                f"{again.get('mesh_triangles')} triangles, message {again['message']!r}")
-            if mesh_link:
-                d.js("window.localStorage.clear(); window.sessionStorage.clear();")
-                # (From another page: a fragment alone changing does not load the page again.)
-                d.go("about:blank")
-                d.go(url + "#" + mesh_link)
-                asked = wait_probe(d, lambda q: q["frames"] >= 1 and q["message"], "the mesh link's message", 30)
-                print(f"a link naming bust.obj: object {asked.get('object')!r}, message {asked['message']!r}")
-                if asked.get("object") != "sphere" or "bust.obj" not in (asked["message"] or ""):
-                    failures.append(f"a link naming a missing mesh did not ask for it: {asked.get('object')!r}, "
-                                    f"{asked['message']!r}")
-            else:
-                print("check 10's link skipped: no --mesh-link")
-            # 12. The first frame on a slow machine: the CPU slowed four times, no HTTP cache.
-            d.js("window.localStorage.clear(); window.sessionStorage.clear();")
-            d.go("about:blank")
-            d.cdp("Network.enable")
-            d.cdp("Network.setCacheDisabled", {"cacheDisabled": True})
-            d.cdp("Emulation.setCPUThrottlingRate", {"rate": 4})
-            start = time.time()
-            d.go(url)
-            wait_probe(d, lambda q: q["frames"] >= 1, "a first frame with the CPU slowed", 120)
-            throttled = time.time() - start
-            d.cdp("Emulation.setCPUThrottlingRate", {"rate": 1})
-            d.cdp("Network.setCacheDisabled", {"cacheDisabled": False})
-            print(f"first frame with the CPU slowed 4x (no cache): {throttled:.2f} s from navigation "
-                  f"(goal: under 3 s; unthrottled {first_frame_s:.2f} s)")
-            # The CPU renderer's ms per frame in the page beside the desktop's.
-            if native_bench:
-                browser_against_native(d, url, native_bench)
-            # 7. The benchmark scene against the desktop's image.
-            if native_dir:
-                bench_pictures_check(d, url, native_dir, failures)
-            else:
-                print("check 7 skipped: no --native folder of the desktop's images")
-            # Figures (no assertion): ms per frame of the whole window while the object turns
-            # (auto-rotate repaints every frame), for each object, shading and renderer.
-            if "--figures" in sys.argv:
-                d.go(url + "?bench=render")
-                q = wait_probe(d, lambda q: q.get("bench"), "the benchmark's figures", 300)
-                for f in q["bench"]:
-                    print(f"figures: CPU renderer, benchmark scene, 512x512: {f['object']} {f['shading']}: "
-                          f"{f['ms_per_frame']:.2f} ms per frame (one thread)")
-                # A window large enough for a view of about 512x512 pixels.
-                d.s("POST", "/window/rect", {"width": 1650, "height": 1100})
-                for obj, shading in [("sphere", "gouraud"), ("sphere", "phong"), ("teapot", "gouraud"), ("teapot", "phong")]:
-                    text = re.sub(r'object = \\"[a-z]+\\"', f'object = \\"{obj}\\"', base)
-                    text = re.sub(r'shading = \\"[a-z]+\\"', f'shading = \\"{shading}\\"', text)
-                    text = text.replace('auto_rotate = false', 'auto_rotate = true')
-                    for renderer in ["gpu", "cpu"]:
-                        d.js("window.localStorage.setItem('phonglab.session.ron', arguments[0]);", text)
-                        d.go(url + "?renderer=" + renderer)
-                        q = wait_probe(d, lambda q: q["frames"] >= 10, "turning frames")
-                        d.js("return 0;")
-                        t0, f0 = time.time(), q["frames"]
-                        time.sleep(4.0)
-                        q = d.probe()
-                        ms = 1000 * (time.time() - t0) / max(q["frames"] - f0, 1)
-                        side = round(q["landmarks"]["shaded-picture"][2])
-                        print(f"figures: {obj} {shading} {renderer}: {ms:.1f} ms per frame, "
-                              f"{q['ui_ms']:.1f} ms of it in the app's own code "
-                              f"({side}x{side} px view; {q['drawn_by']})")
-            # 1. No console error, no panic.
-            for entry in d.logs():
-                if entry.get("level") == "SEVERE" or "panicked" in entry.get("message", ""):
-                    failures.append(f"console: {entry.get('message', '')[:400]}")
-        finally:
-            d.quit()
-    finally:
-        chromedriver.terminate()
-        server.terminate()
-        os.unlink(os.path.join(root, "phonglab"))
-        os.rmdir(root)
+                text = text.replace('auto_rotate = false', 'auto_rotate = true')
+                for renderer in ["gpu", "cpu"]:
+                    d.js("window.localStorage.setItem('phonglab.session.ron', arguments[0]);", text)
+                    d.go(url + "?renderer=" + renderer)
+                    q = wait_probe(d, lambda q: q["frames"] >= 10, "turning frames")
+                    d.js("return 0;")
+                    t0, f0 = time.time(), q["frames"]
+                    time.sleep(4.0)
+                    q = d.probe()
+                    ms = 1000 * (time.time() - t0) / max(q["frames"] - f0, 1)
+                    side = round(q["landmarks"]["shaded-picture"][2])
+                    print(f"figures: {obj} {shading} {renderer}: {ms:.1f} ms per frame, "
+                          f"{q['ui_ms']:.1f} ms of it in the app's own code "
+                          f"({side}x{side} px view; {q['drawn_by']})")
+        # 1. No console error, no panic.
+        for entry in d.logs():
+            if entry.get("level") == "SEVERE" or "panicked" in entry.get("message", ""):
+                failures.append(f"console: {entry.get('message', '')[:400]}")
     for f in failures:
         print("FAIL:", f)
     if failures:
