@@ -66,7 +66,7 @@ pub struct RenderBench {
     /// Only this shading: gouraud, phong or flat (default: all three).
     #[arg(long)]
     pub shading: Option<String>,
-    /// The sphere's slices and stacks, 3 to 1024 (the benchmark's is 50): the cost against
+    /// The sphere's slices and stacks, 3 to 2048 (the benchmark's is 50): the cost against
     /// the triangle count.
     #[arg(long, visible_alias = "sphere", default_value_t = 50)]
     pub slices: u32,
@@ -77,6 +77,11 @@ pub struct RenderBench {
     /// icosahedron; 8 gives 1 310 720) instead of the sphere and the teapot.
     #[arg(long, value_name = "LEVEL")]
     pub scan: Option<u32>,
+    /// Write the mesh that would be timed (`--mesh`, `--scan` or the sphere of `--slices`,
+    /// as placed in the benchmark's view) as an OBJ file, and time nothing: the very vertex
+    /// arrays for Mesa's harness (`benches/compare_llvmpipe.py`).
+    #[arg(long, value_name = "FILE.obj")]
+    pub write_mesh: Option<std::path::PathBuf>,
 }
 
 /// A mesh fitted to the view (radius 0.5) made as large as the benchmark's sphere (radius
@@ -114,24 +119,19 @@ fn render(a: &RenderBench) -> Result<()> {
             anyhow::bail!(phonglab_core::t!("err-bench-shading", value = name));
         }
     }
-    if !(3..=1024).contains(&a.slices) {
+    if !(3..=2048).contains(&a.slices) {
         anyhow::bail!(phonglab_core::t!("err-bench-slices", value = a.slices.to_string()));
     }
-    println!(
-        "# {}",
-        phonglab_core::t!(
-            "bench-render-header",
-            size = a.size.to_string(),
-            frames = a.frames.to_string(),
-            threads = rayon::current_num_threads().to_string()
-        )
-    );
-    println!("object shading ms_per_frame triangles coverage vertices_ms setup_ms raster_ms resolve_ms");
     let chosen = a.mesh.is_some() || a.scan.is_some();
     let only = |object: &str, shading: Shading| {
         (chosen || a.object.as_deref().is_none_or(|o| o == object))
             && a.shading.as_deref().is_none_or(|s| shading.label().eq_ignore_ascii_case(s))
     };
+    if let Some(out) = &a.write_mesh {
+        let inputs: Vec<&std::path::Path> = a.mesh.iter().map(|p| p.as_path()).collect();
+        crate::io::same_file::refuse_output_onto_input(&[out], &inputs).map_err(anyhow::Error::msg)?;
+        crate::io::atomic_write::check_file_destination(out)?;
+    }
     let meshes: Vec<(&'static str, phonglab_core::mesh::Mesh)> = if let Some(path) = &a.mesh {
         vec![(
             "mesh",
@@ -145,6 +145,19 @@ fn render(a: &RenderBench) -> Result<()> {
     } else {
         bench_meshes_with(a.slices).into()
     };
+    if let Some(out) = &a.write_mesh {
+        return write_mesh(out, &meshes[0].1);
+    }
+    println!(
+        "# {}",
+        phonglab_core::t!(
+            "bench-render-header",
+            size = a.size.to_string(),
+            frames = a.frames.to_string(),
+            threads = rayon::current_num_threads().to_string()
+        )
+    );
+    println!("object shading ms_per_frame triangles coverage vertices_ms setup_ms raster_ms resolve_ms");
     for f in render_figures_of(meshes, a.frames, a.size, only)? {
         let [v, s, r, res] = f.stage_ms;
         println!(
@@ -156,6 +169,22 @@ fn render(a: &RenderBench) -> Result<()> {
             f.coverage
         );
     }
+    Ok(())
+}
+
+/// `bench render --write-mesh`: the timed mesh as OBJ text, written whole or not at all.
+/// (Checked not to be the input before anything was read.)
+fn write_mesh(out: &std::path::Path, mesh: &phonglab_core::mesh::Mesh) -> Result<()> {
+    crate::io::atomic_write::write(out, phonglab_core::mesh::obj_text::obj_text(mesh).as_bytes())?;
+    println!(
+        "{}",
+        phonglab_core::t!(
+            "bench-mesh-written",
+            path = out.display().to_string(),
+            triangles = mesh.triangle_count().to_string(),
+            vertices = mesh.positions.len().to_string()
+        )
+    );
     Ok(())
 }
 

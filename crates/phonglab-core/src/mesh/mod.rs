@@ -5,6 +5,7 @@
 
 pub mod cylinder;
 pub mod obj;
+pub mod obj_text;
 pub mod scan;
 pub mod sphere;
 pub mod teapot;
