@@ -9,7 +9,7 @@ use glam::Vec4;
 
 use super::Job;
 use super::resolve::{Attributes, BandInput, Fragments, Shaded};
-use super::setup::{RasterTri, Setup};
+use super::setup::{ClippedCorners, FaceChunk, RasterTri, Setup};
 use super::vertices::Vertices;
 use super::visibility::Band;
 use super::window::WindowVert;
@@ -40,7 +40,7 @@ pub(super) fn setup_faces(
     faces: std::ops::Range<usize>,
     width: usize,
     height: usize,
-    out: &mut Vec<RasterTri>,
+    out: &mut FaceChunk,
 ) {
     #[cfg(target_arch = "x86_64")]
     if let Some(proof) = isa.avx2() {
@@ -64,13 +64,20 @@ pub fn draw_band(isa: Isa, setup: &Setup, bin: &[u32], band: Band<'_>) -> usize 
 /// The attributes of triangles `ts` (a chunk) into `out`, through the copy `isa`: the AVX2
 /// copy does the same operations, in registers of four f64 where the portable copy has
 /// SSE2's two, so the same bits (tested).
-pub(super) fn attributes_chunk(isa: Isa, job: &Job<'_>, verts: &Vertices, ts: &[RasterTri], out: Attributes<'_>) {
+pub(super) fn attributes_chunk(
+    isa: Isa,
+    job: &Job<'_>,
+    verts: &Vertices,
+    ts: &[RasterTri],
+    corners: &ClippedCorners,
+    out: Attributes<'_>,
+) {
     #[cfg(target_arch = "x86_64")]
     if let Some(proof) = isa.avx2() {
-        return x86::attributes_chunk(proof, job, verts, ts, out);
+        return x86::attributes_chunk(proof, job, verts, ts, corners, out);
     }
     let _ = isa;
-    super::resolve::attributes_chunk_any(job, verts, ts, out);
+    super::resolve::attributes_chunk_any(job, verts, ts, corners, out);
 }
 
 /// Shades one band (`band`) into `px`, its pixels, through the copy `isa`. Returns the
@@ -99,7 +106,7 @@ mod x86 {
     use crate::raster::render::resolve::{
         Attributes, BandInput, Fragments, LANES as ResolveLanes, ResolveLanes as Lanes, Shaded,
     };
-    use crate::raster::render::setup::{RasterTri, Setup};
+    use crate::raster::render::setup::{ClippedCorners, FaceChunk, RasterTri, Setup};
     use crate::raster::render::vertices::Vertices;
     use crate::raster::render::visibility::{Band, LANES, RowPlane, SpanFill};
     use crate::raster::render::window::WindowVert;
@@ -121,7 +128,7 @@ mod x86 {
         faces: std::ops::Range<usize>,
         width: usize,
         height: usize,
-        out: &mut Vec<RasterTri>,
+        out: &mut FaceChunk,
     ) {
         // SAFETY: the proof says the processor has AVX2 and FMA.
         unsafe { setup_faces_avx2(job, verts, faces, width, height, out) }
@@ -134,7 +141,7 @@ mod x86 {
         faces: std::ops::Range<usize>,
         width: usize,
         height: usize,
-        out: &mut Vec<RasterTri>,
+        out: &mut FaceChunk,
     ) {
         crate::raster::render::setup::setup_faces(job, verts, faces, width, height, out);
     }
@@ -149,14 +156,27 @@ mod x86 {
         crate::raster::render::visibility::draw_band_any(proof, setup, bin, band)
     }
 
-    pub(super) fn attributes_chunk(_: Avx2, job: &Job<'_>, verts: &Vertices, ts: &[RasterTri], out: Attributes<'_>) {
+    pub(super) fn attributes_chunk(
+        _: Avx2,
+        job: &Job<'_>,
+        verts: &Vertices,
+        ts: &[RasterTri],
+        corners: &ClippedCorners,
+        out: Attributes<'_>,
+    ) {
         // SAFETY: the proof says the processor has AVX2 and FMA.
-        unsafe { attributes_chunk_avx2(job, verts, ts, out) }
+        unsafe { attributes_chunk_avx2(job, verts, ts, corners, out) }
     }
 
     #[target_feature(enable = "avx2,fma")]
-    fn attributes_chunk_avx2(job: &Job<'_>, verts: &Vertices, ts: &[RasterTri], out: Attributes<'_>) {
-        crate::raster::render::resolve::attributes_chunk_any(job, verts, ts, out);
+    fn attributes_chunk_avx2(
+        job: &Job<'_>,
+        verts: &Vertices,
+        ts: &[RasterTri],
+        corners: &ClippedCorners,
+        out: Attributes<'_>,
+    ) {
+        crate::raster::render::resolve::attributes_chunk_any(job, verts, ts, corners, out);
     }
 
     pub(super) fn resolve_band_avx2(
@@ -371,7 +391,7 @@ mod tests {
                     let mut colors = vec![Default::default(); n];
                     let (mut pos, mut nrm) = (vec![[Vec3::ZERO; 3]; n], vec![[Vec3::ZERO; 3]; n]);
                     let out = Attributes { edges: &mut edges, colors: &mut colors, pos: &mut pos, nrm: &mut nrm };
-                    attributes_chunk(isa, &job, &r.vertices, ts, out);
+                    attributes_chunk(isa, &job, &r.vertices, ts, &r.setup.corners, out);
                     format!("{edges:?} {colors:?} {pos:?} {nrm:?}")
                 };
                 assert_eq!(run(Isa::Portable), run(Isa::Avx2(avx2)), "{shading:?}");

@@ -207,9 +207,10 @@ impl Renderer {
         let ((), prepared) = rayon::join(
             || visibility::bin(setup, width, height, keep, image, bins),
             || {
-                let attributes = |ts: &[setup::RasterTri], out: resolve::Attributes<'_>| {
-                    copies::attributes_chunk(isa, job, vertices, ts, out)
-                };
+                let attributes =
+                    |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
+                        copies::attributes_chunk(isa, job, vertices, ts, corners, out)
+                    };
                 resolve::prepare(job, setup, scratch, bands, attributes)
             },
         );
@@ -396,6 +397,63 @@ mod tests {
     use crate::model::view::{FlatNormal, Shading};
     use crate::raster::shaded::bench_job;
 
+    /// Triangles that clipping cut keep where their corners lie in their mesh triangles
+    /// (numbered per chunk of faces, then renumbered when gathered): each corner, blended
+    /// from its mesh triangle's clip-space corners with those barycentrics, lands where the
+    /// raster triangle has it, to a few 1/256 of a pixel. A floor under the eye, from behind
+    /// it to far in front, in 30 x 10 quads (600 faces, 7 coprime with it), crosses the near plane (0.5) and the guard band.
+    #[test]
+    fn clipped_triangles_point_at_their_own_corners() {
+        let mut scene = bench_scene(0);
+        scene.eye_from_world = glam::DMat4::IDENTITY;
+        let (nx, nz) = (30u32, 10u32);
+        let mut floor = crate::mesh::Mesh::default();
+        for k in 0..=nz {
+            for i in 0..=nx {
+                let (x, z) = (-3.0 + 6.0 * i as f32 / nx as f32, 2.0 - 8.0 * k as f32 / nz as f32);
+                floor.positions.push(glam::Vec3::new(x, -0.3, z));
+                floor.normals.push(glam::Vec3::Y);
+            }
+        }
+        for k in 0..nz {
+            for i in 0..nx {
+                let a = k * (nx + 1) + i;
+                let (b, c, d) = (a + 1, a + nx + 1, a + nx + 2);
+                floor.triangles.extend([[a, c, b], [b, c, d]]);
+            }
+        }
+        // Shuffled, so that the cut triangles fall in several chunks of 256 faces.
+        let n = floor.triangles.len();
+        floor.triangles = (0..n).map(|k| floor.triangles[k * 7 % n]).collect();
+        let job = bench_job(&scene, &floor, Shading::Gouraud);
+        let (w, h) = (300, 200);
+        let mut r = Renderer::new();
+        r.render(&job, w, h).unwrap();
+        let (mut cut, mut chunks) = (0, std::collections::BTreeSet::new());
+        for t in &r.setup.tris {
+            let own = t.corners == setup::Corners::default();
+            let bary = r.setup.corners.of(t);
+            if bary == [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] && own {
+                continue;
+            }
+            let v = floor.triangles[t.orig as usize].map(|i| r.vertices.clip[i as usize]);
+            for k in 0..3 {
+                let clip = v[0] * bary[k][0] + v[1] * bary[k][1] + v[2] * bary[k][2];
+                let (x, y, _, _) = window::to_window(clip, w as f32, h as f32);
+                assert!(
+                    (x - t.x[k] as i64).abs() <= 4 && (y - t.y[k] as i64).abs() <= 4,
+                    "triangle of face {}: corner {k}",
+                    t.orig
+                );
+            }
+            if bary.iter().flatten().any(|&b| b != 0.0 && b != 1.0) {
+                cut += 1;
+                chunks.insert(t.orig / 256);
+            }
+        }
+        assert!(cut > 10 && chunks.len() > 2, "{cut} cut triangles in {} chunks", chunks.len());
+    }
+
     /// Every compiled copy of the resolve this processor can run (portable, AVX2, AVX-512)
     /// shades every band of a frame into the same bytes, with the same counts, for each
     /// shading (the demo's derivative Flat included) and a two-sided scene.
@@ -423,9 +481,10 @@ mod tests {
             let image = r.render(&job, w, h).unwrap().0.clone();
             let lighter = r.lighter.as_ref().unwrap();
             let bands = h.div_ceil(visibility::BAND);
-            let attributes = |ts: &[setup::RasterTri], out: resolve::Attributes<'_>| {
-                copies::attributes_chunk(Isa::Portable, &job, &r.vertices, ts, out)
-            };
+            let attributes =
+                |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
+                    copies::attributes_chunk(Isa::Portable, &job, &r.vertices, ts, corners, out)
+                };
             let prepared = resolve::prepare(&job, &r.setup, &mut r.scratch, bands, attributes);
             let (shared, fragments) = resolve::split(&mut r.scratch);
             for (b, frags) in fragments.iter_mut().enumerate().take(bands) {
@@ -498,7 +557,8 @@ mod tests {
                 let side = (t.back && two) as usize;
                 let vc = |j: usize| r.vertices.color[side][v[j] as usize];
                 for c in 0..3 {
-                    let at = |k: usize| (0..3).map(|j| t.bary[k][j] as f64 * vc(j)[c] as f64).sum::<f64>();
+                    let at =
+                        |k: usize| (0..3).map(|j| r.setup.corners.of(t)[k][j] as f64 * vc(j)[c] as f64).sum::<f64>();
                     let exact = (0..3).map(|k| q[k] / sum * at(k)).sum::<f64>();
                     let want = (255.0 * exact.clamp(0.0, 1.0)).round() as i32;
                     let got = image.rgba[4 * i + c] as i32;

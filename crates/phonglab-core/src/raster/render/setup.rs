@@ -22,10 +22,12 @@ const GUARD: f32 = 8.0;
 /// A triangle ready to rasterise, in image space (y down), ordered so that its signed
 /// area `(x1-x0)(y2-y0) - (x2-x0)(y1-y0)` is positive.
 ///
-/// 108 bytes: a million of them are written by setup and read by binning, drawing and
+/// 76 bytes: a million of them are written by setup and read by binning, drawing and
 /// the attributes every frame, so the corners are kept in 32 bits (a corner lies within
 /// the guard band, under 5 viewports from the centre: 2^31 / 256 / 5 is over a million
-/// pixels) and widened to 64 for the edge functions' products ([`RasterTri::xy`]).
+/// pixels) and widened to 64 for the edge functions' products ([`RasterTri::xy`]), and
+/// where its corners lie in the mesh triangle is a number ([`Corners`]): the mesh
+/// triangle's own corners for all but the few triangles clipping cut.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct RasterTri {
     /// Fixed-point x and y of the three vertices.
@@ -37,7 +39,7 @@ pub struct RasterTri {
     /// 1/w, for perspective-correct interpolation.
     pub inv_w: [f32; 3],
     /// Each vertex's barycentric coordinates in the original mesh triangle.
-    pub bary: [[f32; 3]; 3],
+    pub corners: Corners,
     /// The mesh triangle.
     pub orig: u32,
     /// Faces away from the viewer (drawn with the back side's colours).
@@ -60,17 +62,65 @@ impl RasterTri {
     }
 }
 
+/// Where a raster triangle's three corners lie in its mesh triangle, as barycentric
+/// coordinates: the mesh triangle's own corners in its order (0), or with the last two
+/// swapped to turn it counter-clockwise on the screen (1), or, for a triangle that
+/// clipping cut, entry `k` of the frame's [`ClippedCorners`] (`k + 2`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Corners(u32);
+
+/// The clipped triangles' corners in their mesh triangles, for [`Corners`] to point into.
+#[derive(Default)]
+pub struct ClippedCorners(Vec<[[f32; 3]; 3]>);
+
+impl ClippedCorners {
+    /// The mesh triangle's corners, in its order.
+    const OWN: [[f32; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// The same with the last two swapped.
+    const TURNED: [[f32; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]];
+
+    /// The barycentrics of triangle `t`'s corners in its mesh triangle.
+    #[inline(always)]
+    pub fn of(&self, t: &RasterTri) -> [[f32; 3]; 3] {
+        match t.corners.0 {
+            0 => Self::OWN,
+            1 => Self::TURNED,
+            k => self.0[k as usize - 2],
+        }
+    }
+}
+
 /// Per-frame results of stage 2.
 #[derive(Default)]
 pub struct Setup {
     /// Triangles to rasterise.
     pub tris: Vec<RasterTri>,
+    /// Where the corners of the triangles clipping cut lie in their mesh triangles.
+    pub corners: ClippedCorners,
     /// Flat shading: each mesh triangle's colour (clamped sum) per side.
     pub face_color: [Vec<[f32; 4]>; 2],
     /// Flat shading from screen derivatives: each mesh triangle's unit normal in eye
     /// space, `(b - a) x (c - a)` (counter-clockwise from outside: outward).
     pub face_normal: Vec<Vec3>,
-    per_face: Vec<Vec<RasterTri>>,
+    per_face: Vec<FaceChunk>,
+}
+
+/// One chunk of mesh triangles set up ([`setup_faces`]): its raster triangles, and the
+/// corners of those clipping cut, numbered within the chunk until they are gathered.
+#[derive(Default)]
+pub struct FaceChunk {
+    tris: Vec<RasterTri>,
+    corners: Vec<[[f32; 3]; 3]>,
+    /// Which of `tris` point into `corners`.
+    cut: Vec<u32>,
+}
+
+impl FaceChunk {
+    fn clear(&mut self) {
+        self.tris.clear();
+        self.corners.clear();
+        self.cut.clear();
+    }
 }
 
 #[derive(Clone, Copy, Default)]
@@ -151,18 +201,11 @@ fn trivially_rejected(c: &[Vec4; 3]) -> bool {
     outcode(c[0]) & outcode(c[1]) & outcode(c[2]) != 0
 }
 
-/// The raster triangle of window vertices `v` (with barycentrics `bary` in the mesh
-/// triangle), turned counter-clockwise on the screen; `None` if it has no area, is a culled
-/// back face, or covers no pixel centre of the image.
+/// The raster triangle of window vertices `v`, turned counter-clockwise on the screen
+/// (its corners the mesh triangle's, in its order or turned: [`Corners`]); `None` if it
+/// has no area, is a culled back face, or covers no pixel centre of the image.
 #[inline(always)]
-fn raster_tri(
-    v: [WindowVert; 3],
-    bary: [[f32; 3]; 3],
-    orig: u32,
-    width: usize,
-    height: usize,
-    cull_back: bool,
-) -> Option<RasterTri> {
+fn raster_tri(v: [WindowVert; 3], orig: u32, width: usize, height: usize, cull_back: bool) -> Option<RasterTri> {
     let (a, b, c) = (v[0], v[1], v[2]);
     let area = (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1);
     if area == 0 {
@@ -173,7 +216,7 @@ fn raster_tri(
     if back && cull_back {
         return None;
     }
-    let (v, bary) = if area < 0 { ([v[0], v[2], v[1]], [bary[0], bary[2], bary[1]]) } else { (v, bary) };
+    let (v, corners) = if area < 0 { ([v[0], v[2], v[1]], Corners(1)) } else { (v, Corners(0)) };
     let x0 = v[0].0.min(v[1].0).min(v[2].0);
     let x1 = v[0].0.max(v[1].0).max(v[2].0);
     let y0 = v[0].1.min(v[1].1).min(v[2].1);
@@ -191,7 +234,7 @@ fn raster_tri(
         y: [v[0].1 as i32, v[1].1 as i32, v[2].1 as i32],
         z: [v[0].2, v[1].2, v[2].2],
         inv_w: [v[0].3, v[1].3, v[2].3],
-        bary,
+        corners,
         orig,
         back,
         x0: px0,
@@ -213,15 +256,15 @@ fn emit_triangle(
     cull_back: bool,
     out: &mut Vec<RasterTri>,
 ) {
-    let corners = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-    if let Some(t) = raster_tri(v, corners, orig, width, height, cull_back) {
+    if let Some(t) = raster_tri(v, orig, width, height, cull_back) {
         out.push(t);
     }
 }
 
-/// Snaps a clipped polygon (fan) to raster triangles.
+/// Snaps a clipped polygon (fan) to raster triangles, their corners' barycentrics kept
+/// in the chunk's own table.
 #[inline(always)]
-fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bool, out: &mut Vec<RasterTri>) {
+fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bool, out: &mut FaceChunk) {
     if poly.len() < 3 {
         return;
     }
@@ -232,8 +275,12 @@ fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bo
     }
     for k in 1..poly.len() - 1 {
         let idx = [0, k, k + 1];
-        if let Some(t) = raster_tri(idx.map(|i| win[i]), idx.map(|i| poly[i].bary), orig, width, height, cull_back) {
-            out.push(t);
+        if let Some(mut t) = raster_tri(idx.map(|i| win[i]), orig, width, height, cull_back) {
+            let b = idx.map(|i| poly[i].bary);
+            out.corners.push(if t.corners == Corners(1) { [b[0], b[2], b[1]] } else { b });
+            t.corners = Corners(out.corners.len() as u32 + 1);
+            out.cut.push(out.tris.len() as u32);
+            out.tris.push(t);
         }
     }
 }
@@ -247,57 +294,71 @@ impl Setup {
         job: &Job<'_>,
         verts: &Vertices,
         lighter: &Lighter,
-        setup_faces: impl Fn(std::ops::Range<usize>, &mut Vec<RasterTri>) + Sync,
+        setup_faces: impl Fn(std::ops::Range<usize>, &mut FaceChunk) + Sync,
     ) {
         let tris = &job.mesh.triangles;
         const GRAIN: usize = 256;
         let chunks = tris.len().div_ceil(GRAIN);
-        self.per_face.resize_with(chunks, Vec::new);
+        self.per_face.resize_with(chunks, FaceChunk::default);
         self.per_face.par_iter_mut().enumerate().for_each(|(k, out)| {
             let faces = k * GRAIN..(k * GRAIN + GRAIN).min(tris.len());
             setup_faces(faces, out);
         });
         // Gathered into one array on both threads, each chunk's triangles copied to their
         // place: a serial copy (some 400 KB a frame for the teapot) left the other thread
-        // idle between two parallel stages.
-        let total = self.per_face.iter().map(Vec::len).sum();
+        // idle between two parallel stages. The few clipped corners are gathered too, and
+        // the triangles that point to them renumbered.
+        let total = self.per_face.iter().map(|c| c.tris.len()).sum();
         self.tris.resize(total, RasterTri::default());
+        self.corners.0.clear();
         let mut places = Vec::with_capacity(self.per_face.len());
         let mut rest = &mut self.tris[..];
-        for v in &self.per_face {
-            let (place, after) = rest.split_at_mut(v.len());
-            places.push(place);
+        for c in &self.per_face {
+            let (place, after) = rest.split_at_mut(c.tris.len());
+            places.push((place, self.corners.0.len() as u32));
+            self.corners.0.extend_from_slice(&c.corners);
             rest = after;
         }
-        places.into_par_iter().zip(self.per_face.par_iter()).for_each(|(place, v)| place.copy_from_slice(v));
+        places.into_par_iter().zip(self.per_face.par_iter()).for_each(|((place, before), c)| {
+            place.copy_from_slice(&c.tris);
+            for &i in &c.cut {
+                place[i as usize].corners.0 += before;
+            }
+        });
 
+        // Both Flat shadings' per-face work on both threads, a chunk of faces at a time (a
+        // serial pass was most of Flat's setup at 3 million triangles).
+        let corners_of = |t: &[u32; 3]| t.map(|i| verts.eye[i as usize]);
         if job.mode == ShadingMode::FlatDerivatives {
             // Lit per fragment (resolve); here only each face's plane normal.
-            self.face_normal.clear();
-            self.face_normal.extend(tris.iter().map(|t| {
-                let [a, b, c] = t.map(|i| verts.eye[i as usize]);
-                face_normal(a, b, c)
-            }));
+            self.face_normal.resize(tris.len(), Vec3::ZERO);
+            self.face_normal.par_chunks_mut(GRAIN).zip(tris.par_chunks(GRAIN)).for_each(|(out, ts)| {
+                for (n, t) in out.iter_mut().zip(ts) {
+                    let [a, b, c] = corners_of(t);
+                    *n = face_normal(a, b, c);
+                }
+            });
         } else if job.mode == ShadingMode::FlatFace {
             // One evaluation per face: at its centroid, with its geometric normal.
-            let (mut pos, mut nrm) = (Vec::with_capacity(tris.len()), Vec::with_capacity(tris.len()));
-            for t in tris {
-                let [a, b, c] = t.map(|i| verts.eye[i as usize]);
-                pos.push((a + b + c) / 3.0);
-                nrm.push(face_normal(a, b, c));
-            }
             let two = job.scene.light_model.two_sided;
             for side in 0..2 {
                 self.face_color[side].resize(tris.len(), [0.0; 4]);
             }
             let [front, back] = &mut self.face_color;
-            front.par_chunks_mut(GRAIN).zip(back.par_chunks_mut(GRAIN)).enumerate().for_each(|(k, (f, b))| {
-                let r = k * GRAIN..k * GRAIN + f.len();
-                lighter.light_batch_eye_sum(&pos[r.clone()], &nrm[r], f, if two { Some(b) } else { None });
-                if !two {
-                    b.copy_from_slice(f);
-                }
-            });
+            front.par_chunks_mut(GRAIN).zip(back.par_chunks_mut(GRAIN)).zip(tris.par_chunks(GRAIN)).for_each(
+                |((f, b), ts)| {
+                    let (mut pos, mut nrm) = ([Vec3::ZERO; GRAIN], [Vec3::ZERO; GRAIN]);
+                    for ((p, n), t) in pos.iter_mut().zip(&mut nrm).zip(ts) {
+                        let [a, b, c] = corners_of(t);
+                        (*p, *n) = ((a + b + c) / 3.0, face_normal(a, b, c));
+                    }
+                    let k = ts.len();
+                    lighter.light_batch_eye_sum(&pos[..k], &nrm[..k], f, if two { Some(b) } else { None });
+                    if !two {
+                        b.copy_from_slice(f);
+                    }
+                },
+            );
         }
     }
 }
@@ -311,7 +372,7 @@ pub(super) fn setup_faces(
     faces: std::ops::Range<usize>,
     width: usize,
     height: usize,
-    out: &mut Vec<RasterTri>,
+    out: &mut FaceChunk,
 ) {
     out.clear();
     for j in faces {
@@ -327,7 +388,7 @@ pub(super) fn setup_faces(
             // coordinates already.
             let win = &verts.window;
             let v = [win[t[0] as usize], win[t[1] as usize], win[t[2] as usize]];
-            emit_triangle(v, j as u32, width, height, job.cull_back, out);
+            emit_triangle(v, j as u32, width, height, job.cull_back, &mut out.tris);
             continue;
         }
         // Each corner with its barycentrics in the mesh triangle: (1, 0, 0) and so on.
@@ -360,11 +421,12 @@ pub fn face_normal(a: Vec3, b: Vec3, c: Vec3) -> Vec3 {
 mod tests {
     use super::*;
 
-    /// The raster triangle stays 108 bytes (it was 136 with 64-bit corners), and a corner
-    /// at the guard band's edge of a 16 384-pixel view keeps its bits in 32.
+    /// The raster triangle stays 76 bytes (it was 136 with 64-bit corners and the
+    /// barycentrics of its corners in it), and a corner at the guard band's edge of a
+    /// 16 384-pixel view keeps its bits in 32.
     #[test]
-    fn a_raster_triangle_is_108_bytes_and_its_corners_fit() {
-        assert_eq!(std::mem::size_of::<RasterTri>(), 108);
+    fn a_raster_triangle_is_76_bytes_and_its_corners_fit() {
+        assert_eq!(std::mem::size_of::<RasterTri>(), 76);
         let (w, h) = (16_384.0, 16_384.0);
         let corner = to_window(Vec4::new(GUARD, -GUARD, 0.0, 1.0), w, h);
         assert_eq!(corner.0 as i32 as i64, corner.0);

@@ -9,7 +9,7 @@ use rayon::prelude::*;
 use super::gouraud::ColorPlanes;
 use crate::model::view::ShadingMode;
 use crate::raster::render::Job;
-use crate::raster::render::setup::{RasterTri, Setup};
+use crate::raster::render::setup::{ClippedCorners, RasterTri, Setup};
 use crate::raster::render::vertices::Vertices;
 use crate::raster::render::visibility::ScreenBarycentrics;
 
@@ -36,7 +36,7 @@ pub struct TriangleAttributes {
 pub(super) fn triangle_attributes(
     setup: &Setup,
     out: &mut TriangleAttributes,
-    attributes: impl Fn(&[RasterTri], Attributes<'_>) + Sync,
+    attributes: impl Fn(&[RasterTri], &ClippedCorners, Attributes<'_>) + Sync,
 ) {
     const GRAIN: usize = 256;
     // Every array sized to the triangles (growing only on the first frames); only those the
@@ -54,7 +54,7 @@ pub(super) fn triangle_attributes(
         .zip(out.pos.par_chunks_mut(GRAIN))
         .zip(out.nrm.par_chunks_mut(GRAIN))
         .for_each(|((((ts, edges), colors), pos), nrm)| {
-            attributes(ts, Attributes { edges, colors, pos, nrm });
+            attributes(ts, &setup.corners, Attributes { edges, colors, pos, nrm });
         });
 }
 
@@ -79,13 +79,19 @@ pub(in crate::raster::render) struct OneTriangle {
 /// face, and what the resolve computes where a back face wins a pixel (the same operations,
 /// so the same bits).
 #[inline(always)]
-pub(in crate::raster::render) fn attributes_of(job: &Job<'_>, verts: &Vertices, t: &RasterTri) -> OneTriangle {
+pub(in crate::raster::render) fn attributes_of(
+    job: &Job<'_>,
+    verts: &Vertices,
+    corners: &ClippedCorners,
+    t: &RasterTri,
+) -> OneTriangle {
     let tris = &job.mesh.triangles;
+    let bary = corners.of(t);
     let two = job.scene.light_model.two_sided;
     let blend3 = |a: &[Vec3]| -> [Vec3; 3] {
         let v = tris[t.orig as usize];
         let at = [a[v[0] as usize], a[v[1] as usize], a[v[2] as usize]];
-        std::array::from_fn(|k| (at[0] * t.bary[k][0] + at[1] * t.bary[k][1] + at[2] * t.bary[k][2]) * t.inv_w[k])
+        std::array::from_fn(|k| (at[0] * bary[k][0] + at[1] * bary[k][1] + at[2] * bary[k][2]) * t.inv_w[k])
     };
     let color = || -> [[f32; 4]; 3] {
         let side = (t.back && two) as usize;
@@ -93,7 +99,7 @@ pub(in crate::raster::render) fn attributes_of(job: &Job<'_>, verts: &Vertices, 
         let vc = &verts.color[side];
         let cs = [vc[v[0] as usize], vc[v[1] as usize], vc[v[2] as usize]];
         std::array::from_fn(|k| {
-            let b = t.bary[k];
+            let b = bary[k];
             std::array::from_fn(|ch| (cs[0][ch] * b[0] + cs[1][ch] * b[1] + cs[2][ch] * b[2]) * t.inv_w[k])
         })
     };
@@ -123,11 +129,12 @@ pub(in crate::raster::render) fn attributes_chunk_any(
     job: &Job<'_>,
     verts: &Vertices,
     ts: &[RasterTri],
+    corners: &ClippedCorners,
     out: Attributes<'_>,
 ) {
     let Attributes { edges, colors, pos, nrm } = out;
     for (i, t) in ts.iter().enumerate().filter(|(_, t)| !t.back) {
-        let a = attributes_of(job, verts, t);
+        let a = attributes_of(job, verts, corners, t);
         match job.mode {
             ShadingMode::Gouraud => colors[i] = a.color,
             ShadingMode::Phong => (edges[i], pos[i], nrm[i]) = (a.edges, a.pos, a.nrm),
@@ -145,11 +152,12 @@ impl TriangleAttributes {
         &self,
         job: &Job<'_>,
         verts: &Vertices,
+        corners: &ClippedCorners,
         r: usize,
         t: &RasterTri,
     ) -> Option<OneTriangle> {
         if t.back {
-            return Some(attributes_of(job, verts, t));
+            return Some(attributes_of(job, verts, corners, t));
         }
         let mut a = OneTriangle::default();
         match job.mode {

@@ -53,7 +53,7 @@ pub(in crate::raster::render) use pixels::ResolveLanes;
 pub use sample::PixelSample;
 pub(in crate::raster::render) use sample::{PixelInput, shade_pixel};
 
-use super::setup::{RasterTri, Setup};
+use super::setup::{ClippedCorners, RasterTri, Setup};
 use super::{Job, NO_TRIANGLE};
 use crate::model::view::ShadingMode;
 use crate::specialise::lighter::Lighter;
@@ -82,7 +82,7 @@ pub(super) fn prepare(
     setup: &Setup,
     scratch: &mut Scratch,
     bands: usize,
-    attributes: impl Fn(&[RasterTri], Attributes<'_>) + Sync,
+    attributes: impl Fn(&[RasterTri], &ClippedCorners, Attributes<'_>) + Sync,
 ) -> Prepared {
     let bg = job.background.map(to_u8);
     // Shadings that light each pixel: Phong, and Flat with the demo's derivative normals.
@@ -171,10 +171,12 @@ pub(super) fn resolve_band_any<L: ResolveLanes>(
             let r = r as usize;
             match job.mode {
                 ShadingMode::FlatFace => fill_px(&mut px_row[run.x..run.x + len], p.face8[side][t.orig as usize]),
-                ShadingMode::Gouraud if t.back => gouraud_run(lanes, &attributes_of(job, verts, t).color, &run, px_row),
+                ShadingMode::Gouraud if t.back => {
+                    gouraud_run(lanes, &attributes_of(job, verts, &setup.corners, t).color, &run, px_row)
+                }
                 ShadingMode::Gouraud => gouraud_run(lanes, &tri_color[r], &run, px_row),
                 ShadingMode::Phong => {
-                    let own = t.back.then(|| attributes_of(job, verts, t));
+                    let own = t.back.then(|| attributes_of(job, verts, &setup.corners, t));
                     let (edges, pw, nw) = match &own {
                         Some(a) => (&a.edges, &a.pos, &a.nrm),
                         None => (&shared.edges[r], &tri_pos[r], &tri_nrm[r]),
@@ -192,7 +194,7 @@ pub(super) fn resolve_band_any<L: ResolveLanes>(
                     // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
                     let n = setup.face_normal[t.orig as usize];
                     let face = if t.back { n } else { -n };
-                    let own = t.back.then(|| attributes_of(job, verts, t));
+                    let own = t.back.then(|| attributes_of(job, verts, &setup.corners, t));
                     let (edges, pw) = match &own {
                         Some(a) => (&a.edges, &a.pos),
                         None => (&shared.edges[r], &tri_pos[r]),

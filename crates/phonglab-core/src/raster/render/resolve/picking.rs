@@ -13,10 +13,10 @@ fn barycentrics(setup: &Setup, raster: u32, l: [f32; 2]) -> [f32; 3] {
     let p = [ls[0] * t.inv_w[0], ls[1] * t.inv_w[1], ls[2] * t.inv_w[2]];
     let s = 1.0 / (p[0] + p[1] + p[2]);
     let b = [p[0] * s, p[1] * s, p[2] * s];
-    let mut out = [0.0f32; 3];
+    let (mut out, bary) = ([0.0f32; 3], setup.corners.of(t));
     for (k, bk) in b.iter().enumerate() {
         for (j, o) in out.iter_mut().enumerate() {
-            *o += bk * t.bary[k][j];
+            *o += bk * bary[k][j];
         }
     }
     out
