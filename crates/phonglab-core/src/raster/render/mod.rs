@@ -437,8 +437,8 @@ mod tests {
                 continue;
             }
             let v = floor.triangles[t.orig as usize].map(|i| r.vertices.clip[i as usize]);
-            for k in 0..3 {
-                let clip = v[0] * bary[k][0] + v[1] * bary[k][1] + v[2] * bary[k][2];
+            for (k, b) in bary.iter().enumerate() {
+                let clip = v[0] * b[0] + v[1] * b[1] + v[2] * b[2];
                 let (x, y, _, _) = window::to_window(clip, w as f32, h as f32);
                 assert!(
                     (x - t.x[k] as i64).abs() <= 4 && (y - t.y[k] as i64).abs() <= 4,
