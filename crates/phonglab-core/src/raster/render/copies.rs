@@ -9,7 +9,7 @@ use glam::Vec4;
 
 use super::Job;
 use super::resolve::{Attributes, BandInput, Fragments, Shaded};
-use super::setup::{ClippedCorners, FaceChunk, RasterTri, Setup};
+use super::setup::{ChunkOut, ClippedCorners, RasterTri, Setup};
 use super::vertices::Vertices;
 use super::visibility::Band;
 use super::window::WindowVert;
@@ -30,7 +30,7 @@ pub fn window_vertices(isa: Isa, clip: &[Vec4], out: &mut [WindowVert], width: u
     super::window::window_vertices(clip, out, width, height);
 }
 
-/// Clips, faces, culls and snaps the mesh triangles `faces` into `out` (cleared first),
+/// Clips, faces, culls and snaps the mesh triangles `faces` into `out` (their slots and the rest),
 /// through the copy `isa`: the AVX2 one rounds to fixed point inline (the portable copy
 /// calls the C library's `roundf`); the arithmetic is the same, so the bits are.
 pub(super) fn setup_faces(
@@ -40,7 +40,7 @@ pub(super) fn setup_faces(
     faces: std::ops::Range<usize>,
     width: usize,
     height: usize,
-    out: &mut FaceChunk,
+    out: ChunkOut<'_>,
 ) {
     #[cfg(target_arch = "x86_64")]
     if let Some(proof) = isa.avx2() {
@@ -106,7 +106,7 @@ mod x86 {
     use crate::raster::render::resolve::{
         Attributes, BandInput, Fragments, LANES as ResolveLanes, ResolveLanes as Lanes, Shaded,
     };
-    use crate::raster::render::setup::{ClippedCorners, FaceChunk, RasterTri, Setup};
+    use crate::raster::render::setup::{ChunkOut, ClippedCorners, RasterTri, Setup};
     use crate::raster::render::vertices::Vertices;
     use crate::raster::render::visibility::{Band, LANES, RowPlane, SpanFill};
     use crate::raster::render::window::WindowVert;
@@ -128,7 +128,7 @@ mod x86 {
         faces: std::ops::Range<usize>,
         width: usize,
         height: usize,
-        out: &mut FaceChunk,
+        out: ChunkOut<'_>,
     ) {
         // SAFETY: the proof says the processor has AVX2 and FMA.
         unsafe { setup_faces_avx2(job, verts, faces, width, height, out) }
@@ -141,7 +141,7 @@ mod x86 {
         faces: std::ops::Range<usize>,
         width: usize,
         height: usize,
-        out: &mut FaceChunk,
+        out: ChunkOut<'_>,
     ) {
         crate::raster::render::setup::setup_faces(job, verts, faces, width, height, out);
     }

@@ -231,7 +231,7 @@ impl Renderer {
         let stats = Stats {
             stage_ms: [t_vertices, t_setup, t_raster, t_resolve],
             triangles: job.mesh.triangle_count(),
-            rasterised: self.setup.tris.len(),
+            rasterised: self.setup.drawn,
             evaluations: evaluations + if job.mode == ShadingMode::Gouraud { self.vertices.eye.len() } else { 0 },
         };
         Ok((&self.image, stats))

@@ -55,6 +55,28 @@ pub struct RasterTri {
 }
 
 impl RasterTri {
+    /// The slot of a mesh triangle that gives no raster triangle: an empty box of rows
+    /// (binning skips it) and a back face (the attributes skip it).
+    pub const HOLE: RasterTri = RasterTri {
+        x: [0; 3],
+        y: [0; 3],
+        z: [0.0; 3],
+        inv_w: [0.0; 3],
+        corners: Corners(0),
+        orig: 0,
+        back: true,
+        x0: 0,
+        x1: -1,
+        y0: 0,
+        y1: -1,
+    };
+
+    /// A slot with no triangle ([`RasterTri::HOLE`]).
+    #[inline(always)]
+    pub fn is_hole(&self) -> bool {
+        self.y0 > self.y1
+    }
+
     /// The corners' fixed-point x and y, widened for the edge functions' products.
     #[inline(always)]
     pub fn xy(&self) -> ([i64; 3], [i64; 3]) {
@@ -93,8 +115,14 @@ impl ClippedCorners {
 /// Per-frame results of stage 2.
 #[derive(Default)]
 pub struct Setup {
-    /// Triangles to rasterise.
+    /// Triangles to rasterise: one slot per mesh triangle, in its order (a hole where it
+    /// gives none: [`RasterTri::is_hole`]), then the further pieces of those clipping cut
+    /// into several, chunk by chunk ([`Setup::extra`] says where each chunk's are).
     pub tris: Vec<RasterTri>,
+    /// For each chunk of [`GRAIN`] mesh triangles, where its further pieces are in `tris`.
+    pub extra: Vec<std::ops::Range<u32>>,
+    /// How many triangles are not holes.
+    pub drawn: usize,
     /// Where the corners of the triangles clipping cut lie in their mesh triangles.
     pub corners: ClippedCorners,
     /// Flat shading: each mesh triangle's colour (clamped sum) per side.
@@ -105,22 +133,39 @@ pub struct Setup {
     per_face: Vec<FaceChunk>,
 }
 
-/// One chunk of mesh triangles set up ([`setup_faces`]): its raster triangles, and the
-/// corners of those clipping cut, numbered within the chunk until they are gathered.
+/// Mesh triangles set up a chunk at a time.
+pub const GRAIN: usize = 256;
+
+/// What one chunk of mesh triangles gives besides its slots ([`setup_faces`]): the further
+/// pieces of the triangles clipping cut into several, the corners of all it cut (numbered
+/// within the chunk until they are gathered), and how many slots are not holes.
 #[derive(Default)]
 pub struct FaceChunk {
     tris: Vec<RasterTri>,
     corners: Vec<[[f32; 3]; 3]>,
-    /// Which of `tris` point into `corners`.
+    /// Which triangles point into `corners`: a slot's index in the chunk, or a piece's in
+    /// `tris` with [`FaceChunk::PIECE`] set.
     cut: Vec<u32>,
+    drawn: usize,
 }
 
 impl FaceChunk {
+    const PIECE: u32 = 1 << 31;
+
     fn clear(&mut self) {
         self.tris.clear();
         self.corners.clear();
         self.cut.clear();
+        self.drawn = 0;
     }
+}
+
+/// Where one chunk of mesh triangles goes: one slot each, and the rest.
+pub struct ChunkOut<'a> {
+    /// The chunk's slots in [`Setup::tris`].
+    pub slots: &'a mut [RasterTri],
+    /// The rest.
+    pub rest: &'a mut FaceChunk,
 }
 
 #[derive(Clone, Copy, Default)]
@@ -244,27 +289,11 @@ fn raster_tri(v: [WindowVert; 3], orig: u32, width: usize, height: usize, cull_b
     })
 }
 
-/// Snaps a mesh triangle that needs no clipping (its corners `v` in window coordinates,
-/// from [`super::window::window_vertices`]) to a raster triangle: [`emit`] for a polygon of three corners,
-/// written out.
-#[inline(always)]
-fn emit_triangle(
-    v: [WindowVert; 3],
-    orig: u32,
-    width: usize,
-    height: usize,
-    cull_back: bool,
-    out: &mut Vec<RasterTri>,
-) {
-    if let Some(t) = raster_tri(v, orig, width, height, cull_back) {
-        out.push(t);
-    }
-}
-
 /// Snaps a clipped polygon (fan) to raster triangles, their corners' barycentrics kept
-/// in the chunk's own table.
+/// in the chunk's own table: the first into the mesh triangle's slot (`at` in the chunk),
+/// the others after the chunk's earlier pieces.
 #[inline(always)]
-fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bool, out: &mut FaceChunk) {
+fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bool, at: usize, out: &mut ChunkOut<'_>) {
     if poly.len() < 3 {
         return;
     }
@@ -276,16 +305,27 @@ fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bo
     for k in 1..poly.len() - 1 {
         let idx = [0, k, k + 1];
         if let Some(mut t) = raster_tri(idx.map(|i| win[i]), orig, width, height, cull_back) {
-            let b = idx.map(|i| poly[i].bary);
-            out.corners.push(if t.corners == Corners(1) { [b[0], b[2], b[1]] } else { b });
-            t.corners = Corners(out.corners.len() as u32 + 1);
-            out.cut.push(out.tris.len() as u32);
-            out.tris.push(t);
+            let (rest, b) = (&mut *out.rest, idx.map(|i| poly[i].bary));
+            rest.corners.push(if t.corners == Corners(1) { [b[0], b[2], b[1]] } else { b });
+            t.corners = Corners(rest.corners.len() as u32 + 1);
+            rest.drawn += 1;
+            if out.slots[at].is_hole() {
+                rest.cut.push(at as u32);
+                out.slots[at] = t;
+            } else {
+                rest.cut.push(FaceChunk::PIECE | rest.tris.len() as u32);
+                rest.tris.push(t);
+            }
         }
     }
 }
 
 impl Setup {
+    /// How many of `tris` are the mesh triangles' slots (the rest are further pieces).
+    pub fn slots(&self) -> usize {
+        self.extra.first().map_or(self.tris.len(), |e| e.start as usize)
+    }
+
     /// Clips, faces, culls and snaps every triangle of the job; lights faces for Flat.
     /// `setup_faces` does a chunk of faces into a vector (a copy of `setup_faces` for this
     /// processor and image, chosen by the caller).
@@ -294,37 +334,38 @@ impl Setup {
         job: &Job<'_>,
         verts: &Vertices,
         lighter: &Lighter,
-        setup_faces: impl Fn(std::ops::Range<usize>, &mut FaceChunk) + Sync,
+        setup_faces: impl Fn(std::ops::Range<usize>, ChunkOut<'_>) + Sync,
     ) {
         let tris = &job.mesh.triangles;
-        const GRAIN: usize = 256;
         let chunks = tris.len().div_ceil(GRAIN);
         self.per_face.resize_with(chunks, FaceChunk::default);
-        self.per_face.par_iter_mut().enumerate().for_each(|(k, out)| {
-            let faces = k * GRAIN..(k * GRAIN + GRAIN).min(tris.len());
-            setup_faces(faces, out);
+        // Each chunk writes its mesh triangles' slots in place: no copy of a million
+        // triangles into one array afterwards (it was a tenth of a frame).
+        self.tris.resize(tris.len(), RasterTri::HOLE);
+        self.tris.par_chunks_mut(GRAIN).zip(self.per_face.par_iter_mut()).enumerate().for_each(|(k, (slots, rest))| {
+            let faces = k * GRAIN..k * GRAIN + slots.len();
+            setup_faces(faces, ChunkOut { slots, rest });
         });
-        // Gathered into one array on both threads, each chunk's triangles copied to their
-        // place: a serial copy (some 400 KB a frame for the teapot) left the other thread
-        // idle between two parallel stages. The few clipped corners are gathered too, and
-        // the triangles that point to them renumbered.
-        let total = self.per_face.iter().map(|c| c.tris.len()).sum();
-        self.tris.resize(total, RasterTri::default());
+        // The few further pieces of clipped triangles after the slots, chunk by chunk, and
+        // the clipped corners gathered, the triangles that point to them renumbered.
         self.corners.0.clear();
-        let mut places = Vec::with_capacity(self.per_face.len());
-        let mut rest = &mut self.tris[..];
-        for c in &self.per_face {
-            let (place, after) = rest.split_at_mut(c.tris.len());
-            places.push((place, self.corners.0.len() as u32));
+        self.extra.clear();
+        self.drawn = 0;
+        for (k, c) in self.per_face.iter().enumerate() {
+            let (first, before) = (self.tris.len(), self.corners.0.len() as u32);
+            self.tris.extend_from_slice(&c.tris);
             self.corners.0.extend_from_slice(&c.corners);
-            rest = after;
-        }
-        places.into_par_iter().zip(self.per_face.par_iter()).for_each(|((place, before), c)| {
-            place.copy_from_slice(&c.tris);
+            self.extra.push(first as u32..self.tris.len() as u32);
+            self.drawn += c.drawn;
             for &i in &c.cut {
-                place[i as usize].corners.0 += before;
+                let at = if i & FaceChunk::PIECE != 0 {
+                    first + (i & !FaceChunk::PIECE) as usize
+                } else {
+                    k * GRAIN + i as usize
+                };
+                self.tris[at].corners.0 += before;
             }
-        });
+        }
 
         // Both Flat shadings' per-face work on both threads, a chunk of faces at a time (a
         // serial pass was most of Flat's setup at 3 million triangles).
@@ -363,8 +404,9 @@ impl Setup {
     }
 }
 
-/// Clips, faces, culls and snaps the mesh triangles `faces` into `out` (cleared first).
-/// (Written once, `#[inline(always)]`; `copies` compiles it for each processor.)
+/// Clips, faces, culls and snaps the mesh triangles `faces` into their slots and the rest
+/// of `out` (every slot written, a hole where a triangle gives none; the rest cleared
+/// first). (Written once, `#[inline(always)]`; `copies` compiles it for each processor.)
 #[inline(always)]
 pub(super) fn setup_faces(
     job: &Job<'_>,
@@ -372,14 +414,17 @@ pub(super) fn setup_faces(
     faces: std::ops::Range<usize>,
     width: usize,
     height: usize,
-    out: &mut FaceChunk,
+    mut out: ChunkOut<'_>,
 ) {
-    out.clear();
+    out.rest.clear();
+    let first = faces.start;
     for j in faces {
+        let at = j - first;
         let t = job.mesh.triangles[j];
         // Written out: `array::map` was left as a call, once per triangle.
         let c = [verts.clip[t[0] as usize], verts.clip[t[1] as usize], verts.clip[t[2] as usize]];
         if trivially_rejected(&c) {
+            out.slots[at] = RasterTri::HOLE;
             continue;
         }
         let (depth, guard) = planes_needed(&c);
@@ -388,7 +433,10 @@ pub(super) fn setup_faces(
             // coordinates already.
             let win = &verts.window;
             let v = [win[t[0] as usize], win[t[1] as usize], win[t[2] as usize]];
-            emit_triangle(v, j as u32, width, height, job.cull_back, &mut out.tris);
+            match raster_tri(v, j as u32, width, height, job.cull_back) {
+                Some(t) => (out.slots[at], out.rest.drawn) = (t, out.rest.drawn + 1),
+                None => out.slots[at] = RasterTri::HOLE,
+            }
             continue;
         }
         // Each corner with its barycentrics in the mesh triangle: (1, 0, 0) and so on.
@@ -408,7 +456,8 @@ pub(super) fn setup_faces(
                 poly = clip_plane(&poly, |v| GUARD * v.w - s * v.y);
             }
         }
-        emit(poly.as_slice(), j as u32, width, height, job.cull_back, out);
+        out.slots[at] = RasterTri::HOLE;
+        emit(poly.as_slice(), j as u32, width, height, job.cull_back, at, &mut out);
     }
 }
 

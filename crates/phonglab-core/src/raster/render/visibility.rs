@@ -18,7 +18,7 @@
 //! this code compiled for it, so a block is one register; the arithmetic (same operations,
 //! same order, no fused multiply-adds) gives the same bits either way.
 
-use super::setup::{RasterTri, SUBPIXEL_BITS, Setup};
+use super::setup::{GRAIN, RasterTri, SUBPIXEL_BITS, Setup};
 use super::{Image, NO_TRIANGLE};
 use crate::cpu::Portable;
 
@@ -79,13 +79,27 @@ pub fn bin(setup: &Setup, width: usize, height: usize, keep: bool, image: &mut I
     }
     // Front faces first: a closed surface's back faces then mostly fail the depth test and
     // write nothing (the image is the same; only exact depth ties could differ). One pass
-    // over the triangles (each is 136 bytes: a million are read once, not twice), the back
-    // faces into bins of their own, put after the front faces' band by band.
+    // over the triangles (each is 76 bytes: a million are read once, not twice), the back
+    // faces into bins of their own, put after the front faces' band by band. In the mesh's
+    // order: each mesh triangle's slot, then its further pieces if clipping cut it.
     let (front, back) = bins.split_at_mut(bands);
-    for (i, t) in setup.tris.iter().enumerate() {
+    let mut put = |i: usize| {
+        let t = &setup.tris[i];
         let side = if t.back { &mut *back } else { &mut *front };
         for bin in &mut side[t.y0 as usize / BAND..=t.y1 as usize / BAND] {
             bin.push(i as u32);
+        }
+    };
+    let slots = setup.slots();
+    for k in 0..slots.div_ceil(GRAIN) {
+        let mut pieces = setup.extra.get(k).cloned().unwrap_or(0..0).map(|p| p as usize).peekable();
+        for i in k * GRAIN..(k * GRAIN + GRAIN).min(slots) {
+            if !setup.tris[i].is_hole() {
+                put(i);
+            }
+            while let Some(p) = pieces.next_if(|&p| setup.tris[p].orig as usize == i) {
+                put(p);
+            }
         }
     }
     for (f, b) in front.iter_mut().zip(back.iter()) {
