@@ -56,6 +56,10 @@ pub(in crate::raster::render) use sample::{PixelInput, shade_pixel};
 use super::setup::{ClippedCorners, RasterTri, Setup};
 use super::{Job, NO_TRIANGLE};
 use crate::model::view::ShadingMode;
+use crate::numerics::copies::prefetch;
+
+/// How many pixels ahead in a row the resolve asks for a triangle's memory.
+const RESOLVE_AHEAD: usize = 12;
 use crate::specialise::lighter::Lighter;
 
 /// Per-band buffers of Phong fragments, and each rasterised triangle's attributes at its
@@ -166,6 +170,23 @@ pub(super) fn resolve_band_any<L: ResolveLanes>(
                 continue;
             }
             covered += len;
+            // The memory of the triangle some pixels ahead asked for now: on a mesh of
+            // triangles about a pixel large, each run is a new triangle's, read at random.
+            if let Some(&ahead) = r_row.get(x + RESOLVE_AHEAD)
+                && ahead != NO_TRIANGLE
+            {
+                let a = ahead as usize;
+                prefetch(std::slice::from_ref(&setup.tris[a]));
+                match job.mode {
+                    ShadingMode::Gouraud => prefetch(&tri_color[a..=a]),
+                    ShadingMode::Phong | ShadingMode::FlatDerivatives => {
+                        prefetch(&shared.edges[a..=a]);
+                        prefetch(&tri_pos[a..=a]);
+                        prefetch(&tri_nrm[a..=a]);
+                    }
+                    ShadingMode::FlatFace => {}
+                }
+            }
             let t = &setup.tris[r as usize];
             let side = (t.back && two) as usize;
             let r = r as usize;
