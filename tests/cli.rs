@@ -794,3 +794,32 @@ fn bench_render_times_a_scan_like_mesh_an_obj_file_and_a_finer_sphere() {
     let refused = phonglab(&["bench", "render", "--scan", "10"]);
     assert!(!refused.status.success() && stderr(&refused).contains("levels 0 to 9"), "{}", stderr(&refused));
 }
+
+/// `bench render --write-mesh` writes the mesh it would time, as placed in the benchmark's
+/// view (what Mesa's harness draws), times nothing, and never writes over the mesh it read.
+#[test]
+fn bench_render_writes_the_timed_mesh_for_mesa() {
+    let out = temp_file("scan2.obj", "");
+    let _ = std::fs::remove_file(&out);
+    let written = phonglab(&["bench", "render", "--scan", "2", "--write-mesh", out.to_str().unwrap()]);
+    assert!(written.status.success(), "{}", stderr(&written));
+    assert!(stdout(&written).contains("320 triangles"), "{}", stdout(&written));
+    assert!(!stdout(&written).contains("ms_per_frame"), "times nothing: {}", stdout(&written));
+    let text = std::fs::read_to_string(&out).unwrap();
+    let count = |tag: &str| text.lines().filter(|l| l.starts_with(tag)).count();
+    assert_eq!((count("v "), count("vn "), count("f ")), (162, 162, 320));
+    // Made as large as the benchmark's sphere (radius 1; the scan's bumps stand out of it):
+    // the mesh as timed, not as generated (about half that).
+    let far = text
+        .lines()
+        .filter_map(|l| l.strip_prefix("v "))
+        .map(|l| l.split_whitespace().map(|w| w.parse::<f64>().unwrap().powi(2)).sum::<f64>().sqrt())
+        .fold(0.0, f64::max);
+    assert!((1.0..1.25).contains(&far), "farthest vertex at {far}");
+    // Read back as the mesh to time: the same triangles.
+    let again = phonglab(&["bench", "render", "--mesh", out.to_str().unwrap(), "--frames", "1", "--size", "32"]);
+    assert!(bench_rows(&again).iter().all(|r| r.2 == 320));
+    let onto = phonglab(&["bench", "render", "--mesh", out.to_str().unwrap(), "--write-mesh", out.to_str().unwrap()]);
+    assert!(!onto.status.success() && stderr(&onto).contains("the same file"), "{}", stderr(&onto));
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), text, "the input is untouched");
+}

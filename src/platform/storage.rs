@@ -94,22 +94,22 @@ pub fn keep_mesh(name: &str, bytes: &[u8]) -> Result<(), String> {
 }
 
 /// Holds again the mesh this page's session kept ([`keep_mesh`]), so that the session's
-/// scene, which names it, shows it: its name, or `None` when none was kept or it could not
-/// be read back (then it is forgotten).
+/// scene, which names it, shows it. `Err` with a message for the student, in the current
+/// language, when one was kept but could not be read back (then it is forgotten).
 #[cfg(target_arch = "wasm32")]
-pub fn restore_meshes() -> Option<String> {
-    let storage = web_sys::window()?.session_storage().ok().flatten()?;
-    let kept = storage.get_item(MESH_KEY).ok().flatten()?;
-    let (name, packed) = kept.split_once('\n')?;
+pub fn restore_meshes() -> Result<(), String> {
+    let Some(storage) = web_sys::window().and_then(|w| w.session_storage().ok().flatten()) else {
+        return Ok(());
+    };
+    let Some(kept) = storage.get_item(MESH_KEY).ok().flatten() else {
+        return Ok(());
+    };
+    let (name, packed) = kept.split_once('\n').unwrap_or(("?", ""));
     let held = phonglab_core::export::share::unpack_bytes(packed, phonglab_core::mesh::obj::MAX_OBJ_BYTES as usize)
         .map_err(|e| e.to_string())
         .and_then(|bytes| phonglab_core::mesh::obj::hold_obj_bytes(name, &bytes));
-    match held {
-        Ok(_) => Some(name.to_string()),
-        Err(e) => {
-            log::warn!("the kept mesh {name} was not read back: {e}");
-            let _ = storage.remove_item(MESH_KEY);
-            None
-        }
-    }
+    held.map(|_| ()).map_err(|why| {
+        let _ = storage.remove_item(MESH_KEY);
+        phonglab_core::t!("mesh-not-restored", name = name, why = why)
+    })
 }

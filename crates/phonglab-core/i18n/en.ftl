@@ -110,6 +110,7 @@ mesh-missing-kept = The mesh { $path } is missing or cannot be read ({ $error })
 share-needs-mesh = The link's scene shows the mesh { $name }, which a link does not carry: open or drop { $name } to see it (the sphere stands in until then).
 mesh-not-kept = (Not kept for a reload of the page: { $why }; open it again after one.)
 mesh-too-large-to-keep = packed, it is { $packed } characters, and the page keeps at most { $most }
+mesh-not-restored = The mesh { $name } this page kept could not be read back ({ $why }): open it again.
 quiz = Quiz
 quiz-hover = Every value of the calculation behind a field: type them step by step
 shader = Shader

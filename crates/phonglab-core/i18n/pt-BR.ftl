@@ -110,6 +110,7 @@ mesh-missing-kept = A malha { $path } está faltando ou não pode ser lida ({ $e
 share-needs-mesh = A cena do link mostra a malha { $name }, que um link não leva: abra ou solte { $name } para vê-la (até lá, a esfera fica no lugar dela).
 mesh-not-kept = (Não fica guardada para quando a página for recarregada: { $why }; abra-a de novo depois disso.)
 mesh-too-large-to-keep = comprimida, tem { $packed } caracteres, e a página guarda no máximo { $most }
+mesh-not-restored = Não foi possível ler de novo a malha { $name } que esta página guardou ({ $why }): abra-a de novo.
 quiz = Teste
 quiz-hover = Cada valor do cálculo atrás de um campo: digite-os passo a passo
 shader = Shader

@@ -110,6 +110,7 @@ mesh-missing-kept = A malha { $path } falta ou não pode ser lida ({ $error }); 
 share-needs-mesh = A cena da ligação mostra a malha { $name }, que uma ligação não leva: abra ou largue { $name } para a ver (até lá, a esfera toma o seu lugar).
 mesh-not-kept = (Não fica guardada para quando a página for recarregada: { $why }; abra-a de novo depois disso.)
 mesh-too-large-to-keep = comprimida, tem { $packed } caracteres, e a página guarda no máximo { $most }
+mesh-not-restored = Não foi possível ler de novo a malha { $name } que esta página guardou ({ $why }): abra-a outra vez.
 quiz = Teste
 quiz-hover = Cada valor do cálculo atrás de um campo: escreve-os passo a passo
 shader = Shader

@@ -27,6 +27,19 @@ pub struct ShareState {
     pub with_channel: bool,
     /// The QR code drawn for the link last made (made again when the link changes).
     qr: Option<(String, egui::TextureHandle)>,
+    /// The link last made and what it was made of: made again only when one of them
+    /// changes, not every frame the window is open (a scene's TOML, deflated and encoded).
+    made: Option<(LinkInputs, Result<String, String>)>,
+}
+
+/// What a link is made of, to know when to make it again.
+#[derive(Clone, PartialEq)]
+struct LinkInputs {
+    doc: Document,
+    base: String,
+    choices: [bool; 3],
+    lang: phonglab_core::locale::Lang,
+    channel: Option<Channel>,
 }
 
 /// What the window shares besides the document: the window's choices as they are now.
@@ -54,6 +67,26 @@ impl ShareState {
             return typed.to_string();
         }
         crate::platform::page::own_address().unwrap_or_else(|| share::DEFAULT_BASE.to_string())
+    }
+
+    /// The link for `doc` with the choices ticked, made again only when what it is made of
+    /// has changed since the last.
+    fn link_kept(&mut self, doc: &Document, shown: &Shown) -> Result<String, String> {
+        let inputs = LinkInputs {
+            doc: doc.clone(),
+            base: self.base.clone(),
+            choices: [self.with_language, self.presenting, self.with_channel],
+            lang: shown.lang,
+            channel: shown.channel,
+        };
+        match &self.made {
+            Some((made_of, link)) if *made_of == inputs => link.clone(),
+            _ => {
+                let link = self.link(doc, shown);
+                self.made = Some((inputs, link.clone()));
+                link
+            }
+        }
     }
 
     /// The link for `doc` with the choices ticked.
@@ -127,12 +160,12 @@ fn choices_ui(ui: &mut Ui, s: &mut ShareState, shown: &Shown) {
 /// The link itself, its length, and Copy; gives the link back.
 fn link_ui(
     ui: &mut Ui,
-    s: &ShareState,
+    s: &mut ShareState,
     doc: &Document,
     shown: &Shown,
     message: &mut Option<Message>,
 ) -> Result<String, String> {
-    let link = s.link(doc, shown)?;
+    let link = s.link_kept(doc, shown)?;
     let text = egui::RichText::new(&link).monospace().small();
     let shown_link = egui::ScrollArea::vertical()
         .max_height(160.0)

@@ -60,10 +60,13 @@ struct WebApp {
 impl WebApp {
     fn new(cc: &eframe::CreationContext<'_>) -> Self {
         // The mesh this page's session opened, before the session that names it.
-        crate::platform::storage::restore_meshes();
+        let mesh_lost = crate::platform::storage::restore_meshes().err();
         let stored = crate::platform::storage::load_browser_session();
         let (session, notices) = session::Session::from_text(stored.as_deref());
         let mut state = restore(&session, notices);
+        if let Some(why) = mesh_lost {
+            state.message = Some(crate::app::model::message::Message::Refused(why));
+        }
         state.gpu = cc.wgpu_render_state.as_ref().map(crate::app::panels::shaded::gpu::install);
         state.view_options.renderer = renderer_asked();
         // `?open=director`: the director's view open from the start (for its test).
