@@ -136,7 +136,7 @@ pub struct Setup {
 /// Mesh triangles set up a chunk at a time.
 pub const GRAIN: usize = 256;
 
-/// What one chunk of mesh triangles gives besides its slots ([`setup_faces`]): the further
+/// What one chunk of mesh triangles gives besides its slots (`setup_faces`): the further
 /// pieces of the triangles clipping cut into several, the corners of all it cut (numbered
 /// within the chunk until they are gathered), and how many slots are not holes.
 #[derive(Default)]
