@@ -457,8 +457,8 @@ def main():
         d.go(url + "?open=share")
         shown = wait_probe(d, lambda q: "share-qr" in q["landmarks"], "the Share window's QR code")
         d.nudge()
-        shot = os.path.join(root, "share.png")
-        with open(shot, "wb") as f:
+        fd, shot = tempfile.mkstemp(prefix="phonglab-share-", suffix=".png")
+        with os.fdopen(fd, "wb") as f:
             f.write(base64.b64decode(d.s("GET", "/screenshot")))
         scan = subprocess.run(["zbarimg", "--quiet", "--raw", "-Sbinary", shot], capture_output=True, text=True)
         link = scan.stdout.strip()
