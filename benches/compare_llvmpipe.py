@@ -35,17 +35,23 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
 
-def phonglab(frames, size, threads, slices):
-    exe = os.path.join(ROOT, "target", "release", "phonglab")
-    cmd = [exe, "bench", "render", "--frames", str(frames), "--size", str(size), "--slices", str(slices)]
+EXE = os.path.join(ROOT, "target", "release", "phonglab")
+
+
+def bench_render_rows(frames, size, threads, chosen):
+    """The figure lines of `phonglab bench render` (split in words), `chosen` its options
+    that pick the objects."""
+    cmd = [EXE, "bench", "render", "--frames", str(frames), "--size", str(size)] + chosen
     if threads != "default":
         cmd += ["--threads", threads]
     out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+    return [line.split() for line in out.splitlines() if not line.startswith(("#", "object"))]
+
+
+def phonglab(frames, size, threads, slices):
     rows = {}
-    for line in out.splitlines():
-        if line.startswith("#") or line.startswith("object"):
-            continue
-        obj, shading, ms, tris, cov = line.split()[:5]
+    for w in bench_render_rows(frames, size, threads, ["--slices", str(slices)]):
+        obj, shading, ms = w[:3]
         rows[(obj, shading)] = float(ms)
     return rows
 
@@ -85,16 +91,8 @@ def mesh_selector(spec):
 
 def phonglab_mesh(selector, frames, size, threads):
     """{shading: (ms, triangles, setup, raster, resolve)} of `bench render` on one mesh."""
-    exe = os.path.join(ROOT, "target", "release", "phonglab")
-    cmd = [exe, "bench", "render", "--frames", str(frames), "--size", str(size)] + selector
-    if threads != "default":
-        cmd += ["--threads", threads]
-    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     rows = {}
-    for line in out.splitlines():
-        if line.startswith("#") or line.startswith("object"):
-            continue
-        w = line.split()
+    for w in bench_render_rows(frames, size, threads, selector):
         rows[w[1]] = (float(w[2]), int(w[3]), float(w[6]), float(w[7]), float(w[8]))
     return rows
 
@@ -115,13 +113,12 @@ def llvmpipe_mesh(glref, obj, frames, size, threads):
 
 def compare_meshes(a):
     """--mesh: each mesh written once, then phonglab and llvmpipe alternately, best rounds."""
-    exe = os.path.join(ROOT, "target", "release", "phonglab")
     ours, theirs = {}, {}
     with tempfile.TemporaryDirectory() as d:
         objs = []
         for k, spec in enumerate(a.mesh):
             obj = os.path.join(d, "mesh%d.obj" % k)
-            subprocess.run([exe, "bench", "render", "--write-mesh", obj] + mesh_selector(spec), check=True,
+            subprocess.run([EXE, "bench", "render", "--write-mesh", obj] + mesh_selector(spec), check=True,
                            capture_output=True)
             objs.append(obj)
         for r in range(a.rounds):

@@ -33,7 +33,6 @@ pub struct ShareState {
 }
 
 /// What a link is made of, to know when to make it again.
-#[derive(Clone, PartialEq)]
 struct LinkInputs {
     doc: Document,
     base: String,
@@ -72,21 +71,23 @@ impl ShareState {
     /// The link for `doc` with the choices ticked, made again only when what it is made of
     /// has changed since the last.
     fn link_kept(&mut self, doc: &Document, shown: &Shown) -> Result<String, String> {
-        let inputs = LinkInputs {
-            doc: doc.clone(),
-            base: self.base.clone(),
-            choices: [self.with_language, self.presenting, self.with_channel],
-            lang: shown.lang,
-            channel: shown.channel,
+        let choices = [self.with_language, self.presenting, self.with_channel];
+        let same = |m: &LinkInputs| {
+            m.doc == *doc
+                && m.base == self.base
+                && m.choices == choices
+                && m.lang == shown.lang
+                && m.channel == shown.channel
         };
-        match &self.made {
-            Some((made_of, link)) if *made_of == inputs => link.clone(),
-            _ => {
-                let link = self.link(doc, shown);
-                self.made = Some((inputs, link.clone()));
-                link
-            }
+        // Compared in place: the document is cloned only when the link is made again.
+        if let Some((_, link)) = self.made.as_ref().filter(|(m, _)| same(m)) {
+            return link.clone();
         }
+        let link = self.link(doc, shown);
+        let inputs =
+            LinkInputs { doc: doc.clone(), base: self.base.clone(), choices, lang: shown.lang, channel: shown.channel };
+        self.made = Some((inputs, link.clone()));
+        link
     }
 
     /// The link for `doc` with the choices ticked.
