@@ -23,6 +23,10 @@ arrays in llvmpipe from vertex buffers, one glDrawElements a frame, in the same 
 line per mesh and shading, with phonglab's stages:
 
   mesh triangles shading phonglab_ms llvmpipe_ms ratio setup_ms raster_ms resolve_ms
+
+`--moving light` (with `--mesh`) keeps the object still and circles the light round it in
+both, as when a student drags the light: llvmpipe draws every frame whole, phonglab keeps
+the visibility and lights and shades it again.
 """
 import argparse
 import json
@@ -89,22 +93,22 @@ def mesh_selector(spec):
     sys.exit("--mesh %r: expected sphere:N, scan:LEVEL or an OBJ file" % spec)
 
 
-def phonglab_mesh(selector, frames, size, threads):
+def phonglab_mesh(selector, frames, size, threads, moving):
     """{shading: (ms, triangles, setup, raster, resolve)} of `bench render` on one mesh."""
     rows = {}
-    for w in bench_render_rows(frames, size, threads, selector):
+    for w in bench_render_rows(frames, size, threads, selector + ["--moving", moving]):
         rows[w[1]] = (float(w[2]), int(w[3]), float(w[6]), float(w[7]), float(w[8]))
     return rows
 
 
-def llvmpipe_mesh(glref, obj, frames, size, threads):
+def llvmpipe_mesh(glref, obj, frames, size, threads, moving):
     """{shading: ms} of llvmpipe drawing OBJ's arrays (benches/llvmpipe_arrays.py)."""
     env = dict(os.environ)
     env.pop("DISPLAY", None)
     if threads != "default":
         env["LP_NUM_THREADS"] = threads
     out = subprocess.run([os.path.join(glref, ".venv", "bin", "python"), os.path.join(HERE, "llvmpipe_arrays.py"), obj,
-                          "--frames", str(frames), "--size", str(size)],
+                          "--frames", str(frames), "--size", str(size), "--moving", moving],
                          check=True, capture_output=True, text=True, env=env).stdout
     res = json.loads(out.split("RESULT ", 1)[1])
     modes = {"ff_gouraud": "gouraud", "glsl_phong": "phong"}
@@ -123,14 +127,14 @@ def compare_meshes(a):
             objs.append(obj)
         for r in range(a.rounds):
             for spec, obj in zip(a.mesh, objs):
-                for sh, row in phonglab_mesh(mesh_selector(spec), a.frames, a.size, a.threads).items():
+                for sh, row in phonglab_mesh(mesh_selector(spec), a.frames, a.size, a.threads, a.moving).items():
                     if (spec, sh) not in ours or row[0] < ours[(spec, sh)][0]:
                         ours[(spec, sh)] = row
-                for sh, ms in llvmpipe_mesh(a.glref, obj, a.frames, a.size, a.threads).items():
+                for sh, ms in llvmpipe_mesh(a.glref, obj, a.frames, a.size, a.threads, a.moving).items():
                     theirs[(spec, sh)] = min(ms, theirs.get((spec, sh), float("inf")))
             print("round %d of %d done" % (r + 1, a.rounds), file=sys.stderr)
-    print("# %dx%d, %d frames, best of %d alternating rounds, threads %s, %d cpus"
-          % (a.size, a.size, a.frames, a.rounds, a.threads, os.cpu_count()))
+    print("# %dx%d, %d frames, best of %d alternating rounds, threads %s, %d cpus, moving %s"
+          % (a.size, a.size, a.frames, a.rounds, a.threads, os.cpu_count(), a.moving))
     print("mesh triangles shading phonglab_ms llvmpipe_ms ratio setup_ms raster_ms resolve_ms")
     for spec in a.mesh:
         for sh in ("gouraud", "phong", "flat"):
@@ -151,6 +155,9 @@ def main():
     ap.add_argument("--threads", default="default", help="threads for both (default: all cores)")
     ap.add_argument("--slices", type=int, default=50, help="the sphere's slices and stacks, both renderers")
     ap.add_argument("--mesh", action="append", help="sphere:N, scan:LEVEL or FILE.obj (repeatable): large meshes")
+    ap.add_argument("--moving", choices=("object", "light"), default="object",
+                    help="with --mesh: what changes from frame to frame, in both renderers: the object turns "
+                         "(every frame drawn whole), or the light circles the standing object")
     a = ap.parse_args()
     subprocess.run(["cargo", "build", "--release", "--locked", "-q"], cwd=ROOT, check=True)
     if a.mesh:

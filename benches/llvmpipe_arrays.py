@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Mesa llvmpipe drawing a mesh's own vertex arrays in the rendering benchmark's scene.
 
-  llvmpipe_arrays.py MESH.obj [--frames 20] [--size 1024] [--png PREFIX]
+  llvmpipe_arrays.py MESH.obj [--frames 20] [--size 1024] [--png PREFIX] [--moving object|light]
 
 Run with a Python that has PyOpenGL and NumPy (glref's .venv) and LP_NUM_THREADS set for
 the thread count; benches/compare_llvmpipe.py runs it. MESH.obj is what `phonglab bench
@@ -21,6 +21,7 @@ freeglut needs an X display: an Xvfb of its own is started when DISPLAY is unset
 """
 import argparse
 import json
+import math
 import os
 import subprocess
 import sys
@@ -110,7 +111,7 @@ def start_xvfb():
     return p, ":" + num.decode().strip()
 
 
-def run(mesh, frames, size, png):
+def run(mesh, frames, size, png, moving):
     import numpy as np
     from OpenGL import GL, GLU, GLUT
     positions, normals, indices = load_arrays(mesh)
@@ -188,8 +189,16 @@ def run(mesh, frames, size, png):
         def frame(i):
             GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT)
             GL.glLoadIdentity()
+            if moving == "light":
+                # The light circles the standing object, 3 degrees a frame about the eye's y
+                # axis (set under the identity: in eye coordinates), as `bench render
+                # --moving light` moves it.
+                t = math.radians(3.0 * i)
+                x, y, z = 2.0, 3.0, 1.0
+                GL.glLightfv(GL.GL_LIGHT0, GL.GL_POSITION,
+                             (x * math.cos(t) + z * math.sin(t), y, -x * math.sin(t) + z * math.cos(t), 1.0))
             GL.glTranslatef(0.0, 0.0, -4.0)
-            GL.glRotatef(3.0 * i, 0.3, 1.0, 0.1)
+            GL.glRotatef(3.0 * i if moving == "object" else 0.0, 0.3, 1.0, 0.1)
             GL.glDrawElements(GL.GL_TRIANGLES, count, GL.GL_UNSIGNED_INT, None)
             GL.glFinish()
         GL.glBeginQuery(GL.GL_PRIMITIVES_GENERATED, q)
@@ -232,12 +241,14 @@ def main():
     ap.add_argument("--frames", type=int, default=20)
     ap.add_argument("--size", type=int, default=1024)
     ap.add_argument("--png", default=None, help="also write PREFIX_<shading>.png of the last frame")
+    ap.add_argument("--moving", choices=("object", "light"), default="object",
+                    help="what changes from frame to frame: the object turns, or the light circles it")
     a = ap.parse_args()
     xvfb = None
     if not os.environ.get("DISPLAY"):
         xvfb, os.environ["DISPLAY"] = start_xvfb()
     try:
-        run(a.mesh, a.frames, a.size, a.png)
+        run(a.mesh, a.frames, a.size, a.png, a.moving)
     finally:
         sys.stdout.flush()
         if xvfb:

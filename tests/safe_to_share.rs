@@ -172,7 +172,7 @@ fn a_size_past_the_memory_budget_is_refused_with_its_estimate_before_any_work() 
     let o = phonglab(&["--memory-budget", "100M", "render", "--obj", s(&mesh), "--size", "4096", "-o", s(&out)]);
     let e = stderr(&o);
     assert_eq!(o.status.code(), Some(2), "{e}");
-    assert!(e.contains("a 4096 x 4096 picture of one triangle needs about 201 32"), "{e}");
+    assert!(e.contains("a 4096 x 4096 picture of one triangle needs about 268 436 016 bytes"), "{e}");
     assert!(!out.exists(), "nothing written");
     // Within the budget, the same command draws.
     let o = phonglab(&["--memory-budget", "1G", "render", "--obj", s(&mesh), "--size", "64", "-o", s(&out)]);

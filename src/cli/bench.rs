@@ -2,7 +2,8 @@
 //!
 //! - `render`: docs/lighting.md's benchmark scene (512x512, gluPerspective(40, 1, 0.5, 20), the
 //!   object rotating 3 degrees a frame) for each object and shading:
-//!   `object shading ms_per_frame triangles coverage`.
+//!   `object shading ms_per_frame triangles coverage` and each stage's ms; `--moving
+//!   light` circles the light round the standing object instead.
 //! - `lighting`: the general engine against the specialised evaluator on the three scenes
 //!   of issue 5: `scene general_ns_per_vertex specialised_ns_per_vertex speedup`.
 //! - `ui`: the whole window headless with every panel open, CPU milliseconds per frame for
@@ -14,7 +15,7 @@ use crate::platform::clock::Instant;
 
 use anyhow::Result;
 use clap::{Args, Subcommand};
-use phonglab_core::bench::{bench_meshes, bench_meshes_with, render_figures_of};
+use phonglab_core::bench::{Moving, bench_meshes, bench_meshes_with, render_figures_of};
 use phonglab_core::lighter::Lighter;
 use phonglab_core::presets::{LightingBench, sphere_points};
 use phonglab_core::{Engine, EvalOptions, Shading, Vertex};
@@ -82,6 +83,11 @@ pub struct RenderBench {
     /// arrays for Mesa's harness (`benches/compare_llvmpipe.py`).
     #[arg(long, value_name = "FILE.obj")]
     pub write_mesh: Option<std::path::PathBuf>,
+    /// What changes from frame to frame: `object` (it turns 3 degrees a frame, every frame
+    /// drawn whole) or `light` (it circles the standing object, as when a student drags
+    /// it: the visibility is kept and only lighting and shading run again).
+    #[arg(long, value_name = "WHAT", default_value = "object", value_parser = ["object", "light"])]
+    pub moving: String,
 }
 
 /// A mesh fitted to the view (radius 0.5) made as large as the benchmark's sphere (radius
@@ -157,16 +163,21 @@ fn render(a: &RenderBench) -> Result<()> {
             threads = rayon::current_num_threads().to_string()
         )
     );
-    println!("object shading ms_per_frame triangles coverage vertices_ms setup_ms raster_ms resolve_ms");
-    for f in render_figures_of(meshes, a.frames, a.size, only)? {
+    println!(
+        "object shading ms_per_frame triangles coverage vertices_ms setup_ms raster_ms resolve_ms moving frames_kept"
+    );
+    let moving = if a.moving == "light" { Moving::Light } else { Moving::Object };
+    for f in render_figures_of(meshes, a.frames, a.size, moving, only)? {
         let [v, s, r, res] = f.stage_ms;
         println!(
-            "{} {} {:.3} {} {:.4} {v:.3} {s:.3} {r:.3} {res:.3}",
+            "{} {} {:.3} {} {:.4} {v:.3} {s:.3} {r:.3} {res:.3} {} {}",
             f.object,
             f.shading.label().to_lowercase(),
             f.ms_per_frame,
             f.triangles,
-            f.coverage
+            f.coverage,
+            a.moving,
+            f.frames_kept
         );
     }
     Ok(())

@@ -84,13 +84,13 @@ pub fn parse_size(text: &str) -> Result<u64, String> {
     Ok(bytes as u64)
 }
 
-/// What rendering a mesh into a `width` x `height` picture allocates: the image (RGBA, and
-/// the PNG's rows and compressed copy: 12 bytes a pixel), each vertex's eye and clip
-/// positions, window coordinates, normal and two colours (96 bytes), each triangle's
-/// raster setup, bin entry and face colours (176 bytes), and the mesh itself (24 bytes a
-/// vertex, 12 a triangle).
+/// What rendering a mesh into a `width` x `height` picture allocates: the image (RGBA, the
+/// PNG's rows and compressed copy, and the renderer's kept visibility: 16 bytes a pixel),
+/// each vertex's eye and clip positions, window coordinates, normal and two colours (96
+/// bytes), each triangle's raster setup, bin entry, face colours and the renderer's copy
+/// of its corners (188 bytes), and the mesh itself (24 bytes a vertex, 12 a triangle).
 pub fn render_bytes(width: u64, height: u64, vertices: u64, triangles: u64) -> u64 {
-    width * height * 12 + vertices * (96 + 24) + triangles * (176 + 12)
+    width * height * 16 + vertices * (96 + 24) + triangles * (188 + 12)
 }
 
 /// What painting the whole window into a picture of `width` x `height` points at `scale`

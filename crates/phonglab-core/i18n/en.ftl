@@ -1253,6 +1253,7 @@ cli-arg-bench-render-slices = The sphere's slices and stacks, 3 to 2048 (the ben
 cli-arg-bench-render-mesh = Time this OBJ mesh (fitted to the view) instead of the sphere and the teapot
 cli-arg-bench-render-scan = Time the scan-like mesh of 20 x 4^LEVEL triangles (a bumpy, irregular subdivided icosahedron; 8 gives 1 310 720) instead of the sphere and the teapot
 cli-arg-bench-render-write_mesh = Write the mesh that would be timed (--mesh, --scan or the sphere of --slices, as placed in the benchmark's view) as an OBJ file, and time nothing: the very vertex arrays for Mesa's harness (benches/compare_llvmpipe.py)
+cli-arg-bench-render-moving = What changes from frame to frame: object (it turns 3 degrees a frame, every frame drawn whole) or light (it circles the standing object, as when a student drags it: the visibility is kept and only lighting and shading run again)
 cli-arg-bench-lighting-vertices = Vertices per scene
 cli-arg-bench-lighting-repeats = Timed repetitions (the best is reported)
 cli-arg-bench-lighting-stages = Also say where the specialised lighting's time goes: ns per vertex for loading, each stage of the scene's program, and writing

@@ -1253,6 +1253,7 @@ cli-arg-bench-render-slices = As fatias e camadas da esfera, de 3 a 2048 (a de r
 cli-arg-bench-render-mesh = Medir o tempo desta malha OBJ (ajustada à vista) em vez da esfera e do bule
 cli-arg-bench-render-scan = Medir o tempo da malha tipo escaneamento de 20 x 4^NÍVEL triângulos (um icosaedro subdividido, irregular e rugoso; o 8 dá 1 310 720) em vez da esfera e do bule
 cli-arg-bench-render-write_mesh = Gravar a malha que seria cronometrada (--mesh, --scan ou a esfera de --slices, como fica na vista de referência) num arquivo OBJ, sem cronometrar nada: os mesmos arrays de vértices para o harness do Mesa (benches/compare_llvmpipe.py)
+cli-arg-bench-render-moving = O que muda de quadro para quadro: object (o objeto gira 3 graus por quadro, cada quadro desenhado por inteiro) ou light (a luz circula em volta do objeto parado, como quando um aluno a arrasta: a visibilidade é mantida e só a iluminação e o sombreamento rodam de novo)
 cli-arg-bench-lighting-vertices = Vértices por cena
 cli-arg-bench-lighting-repeats = Repetições cronometradas (diz-se a melhor)
 cli-arg-bench-lighting-stages = Dizer também onde se gasta o tempo da iluminação especializada: ns por vértice a carregar, em cada etapa do programa da cena e a escrever

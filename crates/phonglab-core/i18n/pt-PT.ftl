@@ -1253,6 +1253,7 @@ cli-arg-bench-render-slices = As fatias e camadas da esfera, de 3 a 2048 (a de r
 cli-arg-bench-render-mesh = Medir o tempo desta malha OBJ (ajustada à vista) em vez da esfera e do bule
 cli-arg-bench-render-scan = Medir o tempo da malha tipo digitalização de 20 x 4^NÍVEL triângulos (um icosaedro subdividido, irregular e rugoso; o 8 dá 1 310 720) em vez da esfera e do bule
 cli-arg-bench-render-write_mesh = Escrever a malha que seria cronometrada (--mesh, --scan ou a esfera de --slices, tal como fica na vista de referência) num ficheiro OBJ, sem cronometrar nada: os mesmos vetores de vértices para o banco de ensaio do Mesa (benches/compare_llvmpipe.py)
+cli-arg-bench-render-moving = O que muda de fotograma para fotograma: object (o objeto roda 3 graus por fotograma, cada fotograma desenhado por inteiro) ou light (a luz circula à volta do objeto parado, como quando um aluno a arrasta: a visibilidade é guardada e só a iluminação e o sombreamento correm de novo)
 cli-arg-bench-lighting-vertices = Vértices por cena
 cli-arg-bench-lighting-repeats = Repetições cronometradas (diz-se a melhor)
 cli-arg-bench-lighting-stages = Dizer também onde se gasta o tempo da iluminação especializada: ns por vértice a carregar, em cada etapa do programa da cena e a escrever

@@ -113,6 +113,10 @@ pub struct Stats {
     /// two run together, band by band (each band drawn, then shaded); the time of the pair
     /// is split between them in proportion to the time the bands spent in each.
     pub stage_ms: [f64; 4],
+    /// Only the lighting changed since the last frame (the same triangles, vertices, size,
+    /// shading and culling, bit for bit): its visibility was kept, and only the vertices'
+    /// lighting and the resolve ran (setup's Flat face colours aside).
+    pub visibility_kept: bool,
 }
 
 /// The renderer: keeps its buffers and its specialised lighting plan from frame to frame
@@ -126,7 +130,63 @@ pub struct Renderer {
     image: Image,
     scratch: resolve::Scratch,
     bins: Vec<Vec<u32>>,
+    /// The last frame's visibility: the rasterised triangle at each pixel, rows from the
+    /// top ([`NO_TRIANGLE`] where uncovered). Kept always: picking reads it, and a frame
+    /// that only lights differently shades it again without drawing.
+    kept: Vec<u32>,
+    /// What the last frame was drawn from, besides its vertices.
+    drawn: Drawn,
     keep_visibility: bool,
+}
+
+/// What a frame's visibility depends on besides its vertices' positions: the image's size,
+/// the shading (the triangles and attributes it sets up), culling, and the triangles.
+#[derive(Default)]
+struct Drawn {
+    /// Does it describe the last frame? (Not before the first, nor while one is drawn.)
+    valid: bool,
+    width: usize,
+    height: usize,
+    mode: Option<ShadingMode>,
+    cull_back: bool,
+    triangles: Vec<[u32; 3]>,
+}
+
+/// Triangles compared or copied a chunk at a time on all cores.
+const TRIANGLE_GRAIN: usize = 1 << 16;
+
+impl Drawn {
+    /// Records what `job` at this size was drawn from (its triangles copied on all cores,
+    /// into the same allocation from frame to frame).
+    fn record(&mut self, job: &Job<'_>, width: usize, height: usize) {
+        use rayon::prelude::*;
+        let from = &job.mesh.triangles;
+        self.triangles.resize(from.len(), [0; 3]);
+        self.triangles
+            .par_chunks_mut(TRIANGLE_GRAIN)
+            .zip(from.par_chunks(TRIANGLE_GRAIN))
+            .for_each(|(to, from)| to.copy_from_slice(from));
+        (self.width, self.height, self.mode, self.cull_back) = (width, height, Some(job.mode), job.cull_back);
+        self.valid = true;
+    }
+
+    /// Would `job` at this size draw the last frame's visibility (its vertices having not
+    /// moved), with `kept` pixels kept?
+    fn is_for(&self, job: &Job<'_>, width: usize, height: usize, kept: usize) -> bool {
+        use rayon::prelude::*;
+        let same_triangles = || {
+            self.triangles.len() == job.mesh.triangles.len()
+                && self
+                    .triangles
+                    .par_chunks(TRIANGLE_GRAIN)
+                    .zip(job.mesh.triangles.par_chunks(TRIANGLE_GRAIN))
+                    .all(|(a, b)| a == b)
+        };
+        self.valid
+            && (self.width, self.height, self.mode, self.cull_back) == (width, height, Some(job.mode), job.cull_back)
+            && kept == width * height
+            && same_triangles()
+    }
 }
 
 impl Default for Renderer {
@@ -139,6 +199,8 @@ impl Default for Renderer {
             image: Default::default(),
             scratch: Default::default(),
             bins: Vec::new(),
+            kept: Vec::new(),
+            drawn: Drawn::default(),
             keep_visibility: false,
         }
     }
@@ -156,11 +218,9 @@ impl Renderer {
         Self { isa, ..Self::default() }
     }
 
-    /// Keep each frame's visibility (the triangle at every pixel) in its image, for
-    /// [`Image::covered`] and for a [`Renderer::surface_at`] of every pixel. Off by default:
-    /// each band is then drawn in a buffer of its own thread, which stays in cache, and
-    /// [`Renderer::pick`] and [`Renderer::surface_at`] draw the band of the pixel asked
-    /// about again (the same triangles, the same code, so the same answer).
+    /// Put each frame's visibility (the triangle at every pixel) in its image too, for
+    /// [`Image::covered`]. Off by default (the renderer keeps its own copy either way, for
+    /// picking and for frames that only light differently).
     pub fn keep_visibility(&mut self, keep: bool) {
         self.keep_visibility = keep;
     }
@@ -194,37 +254,44 @@ impl Renderer {
             ms
         };
         let isa = self.isa;
-        self.vertices.run(job, lighter, |clip, out| copies::window_vertices(isa, clip, out, width, height));
+        let moved = self.vertices.run(job, lighter, |clip, out| copies::window_vertices(isa, clip, out, width, height));
         let t_vertices = lap();
+        let kept = !moved && self.drawn.is_for(job, width, height, self.kept.len());
+        // Until this frame is drawn whole, nothing is kept.
+        self.drawn.valid &= kept;
         let verts = &self.vertices;
-        self.setup
-            .run(job, verts, lighter, |faces, out| copies::setup_faces(isa, job, verts, faces, width, height, out));
+        if kept {
+            self.setup.light_faces(job, verts, lighter);
+        } else {
+            self.setup
+                .run(job, verts, lighter, |faces, out| copies::setup_faces(isa, job, verts, faces, width, height, out));
+        }
         let t_setup = lap();
-        // Binning is serial; the other thread sets up the triangles' attributes meanwhile.
         let bands = height.div_ceil(visibility::BAND);
-        let (setup, keep) = (&self.setup, self.keep_visibility);
-        let (image, bins, vertices, scratch) = (&mut self.image, &mut self.bins, &self.vertices, &mut self.scratch);
-        let ((), prepared) = rayon::join(
-            || visibility::bin(setup, width, height, keep, image, bins),
-            || {
-                let attributes =
-                    |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
-                        copies::attributes_chunk(isa, job, vertices, ts, corners, out)
-                    };
-                resolve::prepare(job, setup, scratch, bands, attributes)
-            },
-        );
-        let (lit, [raster_share, resolve_share]) = draw_and_shade(
-            isa,
-            job,
-            &self.setup,
-            &self.vertices,
-            lighter,
-            &prepared,
-            &mut self.image,
-            &mut self.scratch,
-            &self.bins[..bands],
-        );
+        let attributes = |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
+            copies::attributes_chunk(isa, job, verts, ts, corners, out)
+        };
+        let (lit, [raster_share, resolve_share]) = if kept {
+            let prepared = resolve::prepare(job, &self.setup, &mut self.scratch, bands, true, attributes);
+            let frame = Frame { isa, job, setup: &self.setup, verts, lighter, prepared: &prepared };
+            (shade_kept(&frame, &mut self.image, &mut self.scratch, &self.kept), [0.0, 1.0])
+        } else {
+            // Binning is serial; the other thread sets up the triangles' attributes meanwhile.
+            let (setup, image, bins, scratch) = (&self.setup, &mut self.image, &mut self.bins, &mut self.scratch);
+            let ((), prepared) = rayon::join(
+                || visibility::bin(setup, width, height, image, bins),
+                || resolve::prepare(job, setup, scratch, bands, false, attributes),
+            );
+            let frame = Frame { isa, job, setup, verts, lighter, prepared: &prepared };
+            let out = draw_and_shade(&frame, &mut self.image, &mut self.scratch, &self.bins[..bands], &mut self.kept);
+            self.drawn.record(job, width, height);
+            out
+        };
+        if self.keep_visibility {
+            self.image.raster.clone_from(&self.kept);
+        } else {
+            self.image.raster.clear();
+        }
         let t_bands = lap();
         let (t_raster, t_resolve) = (t_bands * raster_share, t_bands * resolve_share);
         let evaluations = resolve::evaluations(job, lit);
@@ -233,42 +300,44 @@ impl Renderer {
             triangles: job.mesh.triangle_count(),
             rasterised: self.setup.drawn,
             evaluations: evaluations + if job.mode == ShadingMode::Gouraud { self.vertices.eye.len() } else { 0 },
+            visibility_kept: kept,
         };
         Ok((&self.image, stats))
     }
 }
 
+/// What every band of a frame reads.
+#[derive(Clone, Copy)]
+struct Frame<'a> {
+    isa: Isa,
+    job: &'a Job<'a>,
+    setup: &'a setup::Setup,
+    verts: &'a vertices::Vertices,
+    lighter: &'a Lighter,
+    prepared: &'a resolve::Prepared,
+}
+
 /// Stages 3 and 4, band by band on all cores: each band is drawn into its thread's own
 /// visibility buffer ([`visibility::with_band_buffer`]) and then shaded at once, while the
-/// buffer is still in the core's cache; the buffer is copied into the image only if the
-/// visibility is kept. Returns the fragments lit and the shares of the bands' time spent
-/// drawing and shading; sets the image's coverage.
-#[allow(clippy::too_many_arguments)]
+/// buffer is still in the core's cache, and copied into `kept`. Returns the fragments lit
+/// and the shares of the bands' time spent drawing and shading; sets the image's coverage.
 fn draw_and_shade(
-    isa: Isa,
-    job: &Job<'_>,
-    setup: &setup::Setup,
-    verts: &vertices::Vertices,
-    lighter: &Lighter,
-    prepared: &resolve::Prepared,
+    f: &Frame<'_>,
     image: &mut Image,
     scratch: &mut resolve::Scratch,
     bins: &[Vec<u32>],
+    kept: &mut Vec<u32>,
 ) -> (usize, [f64; 2]) {
     use rayon::prelude::*;
     let (width, rows) = (image.width, image.width * visibility::BAND);
-    let bands = image.height.div_ceil(visibility::BAND);
+    kept.resize(image.width * image.height, NO_TRIANGLE);
     let (shared, fragments) = resolve::split(scratch);
-    let mut kept: Vec<Option<&mut [u32]>> = match image.raster.is_empty() {
-        true => (0..bands).map(|_| None).collect(),
-        false => image.raster.chunks_mut(rows).map(Some).collect(),
-    };
     let (covered, lit, drawing, shading) = image
         .rgba
         .par_chunks_mut(rows * 4)
         .zip(bins.par_iter())
         .zip(fragments.par_iter_mut())
-        .zip(kept.par_iter_mut())
+        .zip(kept.par_chunks_mut(rows))
         .enumerate()
         .map(|(b, (((rgba, bin), frags), kept))| {
             let (px, _) = rgba.as_chunks_mut::<4>();
@@ -276,18 +345,16 @@ fn draw_and_shade(
                 let start = web_time::Instant::now();
                 let y_start = b * visibility::BAND;
                 copies::draw_band(
-                    isa,
-                    setup,
+                    f.isa,
+                    f.setup,
                     bin,
                     visibility::Band { y_start: y_start as i32, width, depth, raster: &mut *raster },
                 );
                 let drawn = web_time::Instant::now();
-                let input =
-                    resolve::BandInput { job, setup, lighter, p: prepared, shared, verts, raster, y0: y_start, width };
-                let shaded = copies::resolve_band(isa, &input, px, frags);
-                if let Some(kept) = kept {
-                    kept.copy_from_slice(raster);
-                }
+                let (job, setup, lighter, p, verts) = (f.job, f.setup, f.lighter, f.prepared, f.verts);
+                let input = resolve::BandInput { job, setup, lighter, p, shared, verts, raster, y0: y_start, width };
+                let shaded = copies::resolve_band(f.isa, &input, px, frags);
+                kept.copy_from_slice(raster);
                 (shaded.covered, shaded.lit, (drawn - start).as_secs_f64(), drawn.elapsed().as_secs_f64())
             })
         })
@@ -296,6 +363,28 @@ fn draw_and_shade(
     let total = drawing + shading;
     let shares = if total > 0.0 { [drawing / total, shading / total] } else { [0.5, 0.5] };
     (lit, shares)
+}
+
+/// Stage 4 alone, band by band on all cores, over the last frame's visibility `kept`: a
+/// frame whose triangles all stayed where they were. Returns the fragments lit.
+fn shade_kept(f: &Frame<'_>, image: &mut Image, scratch: &mut resolve::Scratch, kept: &[u32]) -> usize {
+    use rayon::prelude::*;
+    let (width, rows) = (image.width, image.width * visibility::BAND);
+    let (shared, fragments) = resolve::split(scratch);
+    image
+        .rgba
+        .par_chunks_mut(rows * 4)
+        .zip(fragments.par_iter_mut())
+        .zip(kept.par_chunks(rows))
+        .enumerate()
+        .map(|(b, ((rgba, frags), raster))| {
+            let (px, _) = rgba.as_chunks_mut::<4>();
+            let (job, setup, lighter, p, verts) = (f.job, f.setup, f.lighter, f.prepared, f.verts);
+            let input =
+                resolve::BandInput { job, setup, lighter, p, shared, verts, raster, y0: b * visibility::BAND, width };
+            copies::resolve_band(f.isa, &input, px, frags).lit
+        })
+        .sum()
 }
 
 /// What a pixel of the last frame shows: a point of a mesh triangle.
@@ -311,25 +400,10 @@ pub struct Surface {
 
 impl Renderer {
     /// The rasterised triangle at each pixel of row `y` of the last frame
-    /// ([`NO_TRIANGLE`] where uncovered): from the kept visibility, or else by drawing the
-    /// row's band again.
-    fn row_triangles(&self, y: usize) -> Option<Vec<u32>> {
-        let img = &self.image;
-        if y >= img.height {
-            return None;
-        }
-        let w = img.width;
-        if !img.raster.is_empty() {
-            return Some(img.raster[y * w..(y + 1) * w].to_vec());
-        }
-        let b = y / visibility::BAND;
-        let (y_start, band_rows) = (b * visibility::BAND, visibility::BAND.min(img.height - b * visibility::BAND));
-        let bin = self.bins.get(b)?;
-        visibility::with_band_buffer(band_rows * w, |depth, tri| {
-            let band = visibility::Band { y_start: y_start as i32, width: w, depth, raster: &mut *tri };
-            copies::draw_band(self.isa, &self.setup, bin, band);
-            tri.get((y - y_start) * w..(y - y_start + 1) * w).map(<[u32]>::to_vec)
-        })
+    /// ([`NO_TRIANGLE`] where uncovered), from the kept visibility.
+    fn row_triangles(&self, y: usize) -> Option<&[u32]> {
+        let w = self.image.width;
+        self.kept.get(y * w..(y + 1) * w)
     }
 
     /// The rasterised triangle at pixel (`x`, `y`) of the last frame, if covered.
@@ -337,11 +411,7 @@ impl Renderer {
         if x >= self.image.width {
             return None;
         }
-        let r = if self.image.raster.is_empty() {
-            *self.row_triangles(y)?.get(x)?
-        } else {
-            *self.image.raster.get(y * self.image.width + x)?
-        };
+        let r = *self.row_triangles(y)?.get(x)?;
         (r != NO_TRIANGLE).then_some(r)
     }
 
@@ -362,13 +432,12 @@ impl Renderer {
             lighter: self.lighter.as_ref()?,
             shared: &self.scratch.tris,
             verts: &self.vertices,
-            row: &row,
+            row,
         };
         resolve::shade_pixel(&input, x, y)
     }
 
     /// What pixel `i` (row-major, rows from the top) of the last frame shows, if covered.
-    /// (For every pixel of a frame, keep its visibility first: [`Renderer::keep_visibility`].)
     pub fn surface_at(&self, i: usize) -> Option<Surface> {
         let width = self.image.width.max(1);
         let (x, y) = (i % width, i / width);
@@ -485,7 +554,7 @@ mod tests {
                 |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
                     copies::attributes_chunk(Isa::Portable, &job, &r.vertices, ts, corners, out)
                 };
-            let prepared = resolve::prepare(&job, &r.setup, &mut r.scratch, bands, attributes);
+            let prepared = resolve::prepare(&job, &r.setup, &mut r.scratch, bands, false, attributes);
             let (shared, fragments) = resolve::split(&mut r.scratch);
             for (b, frags) in fragments.iter_mut().enumerate().take(bands) {
                 let rows = b * visibility::BAND * w..((b + 1) * visibility::BAND * w).min(w * h);
@@ -573,11 +642,85 @@ mod tests {
         assert!(off * 10_000 <= pixels, "{off} of {pixels} one level off");
     }
 
-    /// Without the kept visibility, picking and `surface_at` draw the pixel's band again:
-    /// at every pixel they answer exactly as the kept visibility does; the images and the
+    /// A frame in which only the lighting changed (the light moved, its colour, the
+    /// material, two-sided lighting) shades the last frame's kept
+    /// visibility again without drawing: into the very bytes a new renderer draws from
+    /// nothing, with the same counts, in every shading. A frame in which anything drawn
+    /// changed (the object turned, one vertex moved by one bit, one triangle's corners
+    /// turned, the size, culling, the shading) is drawn whole again.
+    #[test]
+    fn a_frame_that_only_lights_differently_shades_the_kept_visibility_into_the_same_bytes() {
+        let (sphere, teapot) = (sphere::glu_sphere(1.0, 50, 50), teapot::glut_teapot(0.8, 7));
+        let light_moved = |s: &mut Scene| s.lights[0].position = glam::DVec4::new(-1.5, 2.0, 2.5, 1.0);
+        let two_sided = |s: &mut Scene| s.light_model.two_sided = true;
+        let shinier = |s: &mut Scene| s.material.shininess = 90.0;
+        let lighting: [&dyn Fn(&mut Scene); 3] = [&light_moved, &two_sided, &shinier];
+        let (w, h) = (157, 131);
+        let (mut frames_kept, mut drawn_again) = (0, 0);
+        for (mesh, shading, flat_normal) in [
+            (&sphere, Shading::Gouraud, FlatNormal::Face),
+            (&teapot, Shading::Phong, FlatNormal::Face),
+            (&teapot, Shading::Flat, FlatNormal::Face),
+            (&sphere, Shading::Flat, FlatNormal::ScreenDerivatives),
+        ] {
+            fn job_with<'a>(scene: &'a Scene, mesh: &'a Mesh, shading: Shading, flat: FlatNormal) -> Job<'a> {
+                Job { mode: ShadingMode::of(shading, flat), ..bench_job(scene, mesh, shading) }
+            }
+            let mut r = Renderer::new();
+            let mut scene = bench_scene(37);
+            assert!(
+                !r.render(&job_with(&scene, mesh, shading, flat_normal), w, h).unwrap().1.visibility_kept,
+                "the first frame is drawn"
+            );
+            for change in lighting {
+                change(&mut scene);
+                let job = job_with(&scene, mesh, shading, flat_normal);
+                let (kept, stats) = r.render(&job, w, h).map(|(i, s)| (i.clone(), s)).unwrap();
+                let (fresh, fresh_stats) = Renderer::new().render(&job, w, h).map(|(i, s)| (i.clone(), s)).unwrap();
+                assert!(stats.visibility_kept, "{shading:?}");
+                let differ = kept.rgba.iter().zip(&fresh.rgba).filter(|(a, b)| a != b).count();
+                assert_eq!((differ, kept.rgba.len()), (0, fresh.rgba.len()), "{shading:?}: bytes that differ");
+                assert_eq!(kept.coverage(), fresh.coverage());
+                assert_eq!(
+                    (stats.evaluations, stats.rasterised),
+                    (fresh_stats.evaluations, fresh_stats.rasterised),
+                    "{shading:?}"
+                );
+                frames_kept += 1;
+            }
+            // What is drawn changes: drawn again, into a fresh renderer's bytes.
+            let mut nudged = mesh.clone();
+            nudged.positions[7].x = f32::from_bits(nudged.positions[7].x.to_bits() + 1);
+            let rotated = bench_scene(38);
+            let mut turned = mesh.clone();
+            turned.triangles[3].rotate_left(1);
+            let mut culled = job_with(&scene, mesh, shading, flat_normal);
+            culled.cull_back = true;
+            let redrawn: [(Job<'_>, usize, usize); 6] = [
+                (job_with(&rotated, mesh, shading, flat_normal), w, h),
+                (job_with(&scene, &nudged, shading, flat_normal), w, h),
+                (job_with(&scene, &turned, shading, flat_normal), w, h),
+                (job_with(&scene, mesh, shading, flat_normal), w + 1, h),
+                (culled, w, h),
+                (Job { mode: ShadingMode::Phong, ..bench_job(&scene, mesh, Shading::Phong) }, w, h),
+            ];
+            for (job, w, h) in redrawn {
+                let (image, stats) = r.render(&job, w, h).map(|(i, s)| (i.clone(), s)).unwrap();
+                assert!(!stats.visibility_kept, "{shading:?}");
+                let fresh = Renderer::new().render(&job, w, h).unwrap().0.rgba.clone();
+                let differ = image.rgba.iter().zip(&fresh).filter(|(a, b)| a != b).count();
+                assert_eq!((differ, image.rgba.len()), (0, fresh.len()), "{shading:?}: bytes that differ");
+                drawn_again += 1;
+            }
+        }
+        assert_eq!((frames_kept, drawn_again), (12, 24));
+    }
+
+    /// Picking and `surface_at` read the renderer's own kept visibility: at every pixel they
+    /// answer alike whether the image keeps its visibility too or not; the images and the
     /// coverage are the same either way, and the coverage is the kept buffer's count.
     #[test]
-    fn a_band_drawn_again_answers_as_the_kept_visibility() {
+    fn picking_answers_alike_whether_the_image_keeps_the_visibility_or_not() {
         let scene = bench_scene(37);
         for (mesh, shading) in
             [(sphere::glu_sphere(1.0, 50, 50), Shading::Phong), (teapot::glut_teapot(0.8, 7), Shading::Gouraud)]

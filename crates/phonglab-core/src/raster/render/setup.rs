@@ -366,7 +366,14 @@ impl Setup {
                 self.tris[at].corners.0 += before;
             }
         }
+        self.light_faces(job, verts, lighter);
+    }
 
+    /// The Flat shadings' per-face work: the faces' plane normals (the derivative Flat) or
+    /// colours (Flat per face). Part of [`Setup::run`]; alone when only the lighting
+    /// changed and the rasterised triangles are kept.
+    pub fn light_faces(&mut self, job: &Job<'_>, verts: &Vertices, lighter: &Lighter) {
+        let tris = &job.mesh.triangles;
         // Both Flat shadings' per-face work on both threads, a chunk of faces at a time (a
         // serial pass was most of Flat's setup at 3 million triangles).
         let corners_of = |t: &[u32; 3]| t.map(|i| verts.eye[i as usize]);

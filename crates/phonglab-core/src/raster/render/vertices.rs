@@ -49,14 +49,17 @@ impl Vertices {
     /// Transforms the job's mesh (and lights it for Gouraud); `window_vertices` takes a
     /// chunk of clip-space positions to the image's window coordinates (a copy of
     /// [`super::window::window_vertices`] for this processor, chosen by the caller).
+    /// Returns whether any vertex moved: whether an eye-space position or normal or a
+    /// clip-space position differs, in any bit, from the last run's (or their count does).
     pub fn run(
         &mut self,
         job: &Job<'_>,
         lighter: &Lighter,
         window_vertices: impl Fn(&[Vec4], &mut [WindowVert]) + Sync,
-    ) {
+    ) -> bool {
         let mesh = job.mesh;
         let n = mesh.positions.len();
+        let moved = std::sync::atomic::AtomicBool::new(n != self.eye.len());
         let eye_from_object = job.scene.eye_from_object();
         let mv = eye_from_object.as_mat4();
         let clip_from_object: Mat4 = job.clip_from_object.as_mat4();
@@ -89,11 +92,19 @@ impl Vertices {
             .enumerate()
             .for_each(|(k, ((((eye, clip), normal), window), gouraud))| {
                 let base = k * GRAIN;
+                // Compared bit for bit with what is overwritten, without a branch.
+                let mut same = true;
                 for i in 0..eye.len() {
                     let p = mesh.positions[base + i];
-                    eye[i] = mv.transform_point3(p);
-                    clip[i] = clip_from_object * p.extend(1.0);
-                    normal[i] = nm * mesh.normals[base + i];
+                    let (e, c, nn) =
+                        (mv.transform_point3(p), clip_from_object * p.extend(1.0), nm * mesh.normals[base + i]);
+                    same &= bits(e.extend(0.0)) == bits(eye[i].extend(0.0))
+                        && bits(c) == bits(clip[i])
+                        && bits(nn.extend(0.0)) == bits(normal[i].extend(0.0));
+                    (eye[i], clip[i], normal[i]) = (e, c, nn);
+                }
+                if !same {
+                    moved.store(true, std::sync::atomic::Ordering::Relaxed);
                 }
                 window_vertices(clip, window);
                 let Some((cf, cb)) = gouraud else { return };
@@ -116,5 +127,12 @@ impl Vertices {
                     }
                 });
             });
+        moved.into_inner()
     }
+}
+
+/// A vector's bits, for comparing exactly (NaN equal to itself, -0 unequal to +0).
+#[inline(always)]
+fn bits(v: Vec4) -> [u32; 4] {
+    v.to_array().map(f32::to_bits)
 }

@@ -65,14 +65,12 @@ fn bias(ax: i64, ay: i64, bx: i64, by: i64) -> i64 {
     if (dy == 0 && dx > 0) || dy < 0 { 0 } else { -1 }
 }
 
-/// Sizes `image` to width x height (its triangle at each pixel only if `keep`) and sorts
+/// Sizes `image` to width x height and sorts
 /// the triangles of `setup` into the bands of rows they touch.
-pub fn bin(setup: &Setup, width: usize, height: usize, keep: bool, image: &mut Image, bins: &mut Vec<Vec<u32>>) {
-    let n = width * height;
+pub fn bin(setup: &Setup, width: usize, height: usize, image: &mut Image, bins: &mut Vec<Vec<u32>>) {
     image.width = width;
     image.height = height;
-    image.raster.resize(if keep { n } else { 0 }, NO_TRIANGLE);
-    image.rgba.resize(n * 4, 0);
+    image.rgba.resize(width * height * 4, 0);
 
     let bands = height.div_ceil(BAND);
     // The bands' bins, then as many for the back faces (kept from frame to frame too; a

@@ -80,19 +80,23 @@ pub struct Prepared {
 }
 
 /// The frame's shared resolve state; fills the per-triangle attributes in `scratch`, a
-/// chunk at a time through `attributes` (a copy of [`attributes_chunk_any`]).
+/// chunk at a time through `attributes` (a copy of [`attributes_chunk_any`]). With
+/// `geometry_kept` (the triangles, and their vertices' positions and normals, are the last
+/// frame's, bit for bit), only Gouraud's, the colours, are made again: the others read
+/// only the geometry.
 pub(super) fn prepare(
     job: &Job<'_>,
     setup: &Setup,
     scratch: &mut Scratch,
     bands: usize,
+    geometry_kept: bool,
     attributes: impl Fn(&[RasterTri], &ClippedCorners, Attributes<'_>) + Sync,
 ) -> Prepared {
     let bg = job.background.map(to_u8);
     // Shadings that light each pixel: Phong, and Flat with the demo's derivative normals.
     let per_pixel = job.mode.per_fragment();
     scratch.bands.resize_with(bands, Fragments::default);
-    if job.mode != ShadingMode::FlatFace {
+    if job.mode != ShadingMode::FlatFace && (job.mode == ShadingMode::Gouraud || !geometry_kept) {
         triangle_attributes(setup, &mut scratch.tris, attributes);
     }
     // Flat: each face's colour converted to 8 bits once.
