@@ -99,8 +99,8 @@ pub fn render_figures_of(
             let (mut stages, mut frames_kept) = ([0.0; 4], 0);
             for i in 0..frames {
                 let s = frame(i, &mut r)?;
-                for k in 0..4 {
-                    stages[k] += s.stage_ms[k] / frames.max(1) as f64;
+                for (sum, ms) in stages.iter_mut().zip(s.stage_ms) {
+                    *sum += ms / frames.max(1) as f64;
                 }
                 frames_kept += s.visibility_kept as u32;
             }
