@@ -3,6 +3,7 @@
 //! Triangles are counter-clockwise seen from outside (OpenGL's default front face);
 //! normals are unit length and point outward.
 
+pub mod coarse;
 pub mod cylinder;
 pub mod obj;
 pub mod obj_text;
