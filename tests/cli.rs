@@ -823,3 +823,33 @@ fn bench_render_writes_the_timed_mesh_for_mesa() {
     assert!(!onto.status.success() && stderr(&onto).contains("the same file"), "{}", stderr(&onto));
     assert_eq!(std::fs::read_to_string(&out).unwrap(), text, "the input is untouched");
 }
+
+/// `bench render --moving light` keeps the visibility of every timed frame (the light
+/// circles the standing object) and `--moving object` of none; `--coarse N` times the copy
+/// the app draws while the camera turns, and says how it was made.
+#[test]
+fn bench_render_times_frames_that_only_light_again_and_the_coarse_copy() {
+    let kept = |moving: &str| {
+        let o = phonglab(&[
+            "bench", "render", "--sphere", "40", "--object", "sphere", "--frames", "4", "--size", "64", "--moving",
+            moving,
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let lines: Vec<String> =
+            stdout(&o).lines().filter(|l| l.starts_with("sphere ")).map(|l| l.to_string()).collect();
+        assert_eq!(lines.len(), 3, "{}", stdout(&o));
+        lines.iter().map(|l| l.split_whitespace().nth(10).unwrap().parse::<u32>().unwrap()).collect::<Vec<_>>()
+    };
+    assert_eq!(kept("light"), [4, 4, 4]);
+    assert_eq!(kept("object"), [0, 0, 0]);
+    let o = phonglab(&[
+        "bench", "render", "--sphere", "200", "--object", "sphere", "--frames", "1", "--size", "64", "--coarse", "5000",
+    ]);
+    let out = stdout(&o);
+    let made = out.lines().find(|l| l.contains("the coarse copy has")).unwrap_or_else(|| panic!("{out}"));
+    assert!(made.contains("of 79600 triangles"), "{made}");
+    let rows = bench_rows(&o);
+    assert!(rows.iter().all(|r| (3750..=5500).contains(&r.2)), "{rows:?}");
+    let refused = phonglab(&["bench", "render", "--moving", "camera"]);
+    assert!(!refused.status.success());
+}

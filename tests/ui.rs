@@ -5,7 +5,7 @@ mod common;
 
 use egui::accesskit::Role;
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT, Queryable};
 use glam::DVec3;
 use phonglab::app::shell::state::{Message, Orbit};
 use phonglab::app::{AppState, app_ui};
@@ -882,4 +882,98 @@ fn the_in_app_chooser_opens_saves_and_exports_where_no_dialog_opens() {
         .filter_map(Result::ok)
         .find(|e| e.path().extension().is_some_and(|x| x == "png"));
     assert!(png.is_some(), "{:?}", h.state().message);
+}
+
+/// Moving the light draws the shaded view again by lighting the last picture's triangles
+/// again (nothing drawn moved): the picture is the one a new renderer draws whole, and its
+/// caption says it was only lit again. Turning the object draws it whole, and the caption
+/// drops the remark.
+#[test]
+fn moving_the_light_only_lights_the_picture_again_and_says_so() {
+    let mut h = sphere_harness();
+    assert!(!h.state().shaded.main.last_relit, "the first picture is drawn whole");
+    assert!(h.query_by_label_contains("lit again, nothing drawn moved").is_none());
+    h.state_mut().doc.scene.lights[0].position.x += 0.75;
+    h.run_steps(2);
+    let state = h.state();
+    assert!(state.shaded.main.last_relit);
+    let px = state.shaded.main.image_px();
+    let setup = state.doc.shaded_setup(state.settings.pow);
+    let mesh = state.doc.view.mesh();
+    let mut fresh = phonglab_core::render::Renderer::new();
+    let whole = fresh.render(&setup.job(&mesh), px, px).unwrap().0.rgba.clone();
+    let differ = whole.iter().zip(state.shaded.main.rgba()).filter(|(a, b)| a != b).count();
+    assert_eq!((differ, whole.len()), (0, state.shaded.main.rgba().len()), "bytes that differ");
+    let named = h.get_by_label_contains("lit again, nothing drawn moved: ");
+    assert!(named.accesskit_node().role() == Role::Image && named.rect().width() > 300.0, "{:?}", named.rect());
+    h.state_mut().doc.view.spin_degrees += 10.0;
+    h.run_steps(2);
+    assert!(!h.state().shaded.main.last_relit, "the object turned: drawn whole");
+    h.get_by_label_contains("ms per frame on the CPU");
+    assert!(h.query_by_label_contains("lit again, nothing drawn moved").is_none());
+}
+
+/// Turning the orbit camera by a drag on the picture of a mesh of more than
+/// `COARSE_ABOVE` triangles (the sphere at 400 x 400: 319 200) draws it from its coarse
+/// copy while the mouse is down, and the caption says so with both counts (and names the
+/// picture); the frame after
+/// the mouse is let go draws the whole mesh, exactly as a new renderer draws it.
+#[test]
+fn turning_the_camera_over_a_large_mesh_draws_a_coarse_copy_until_let_go() {
+    use phonglab::app::panels::shaded::cache::{COARSE_ABOVE, COARSE_TARGET};
+    let mut state = AppState::worksheet();
+    state.doc.view.object = phonglab_core::ObjectKind::Sphere;
+    (state.doc.view.sphere_slices, state.doc.view.sphere_stacks) = (400, 400);
+    let mut h =
+        Harness::builder().with_size([1500.0, 1000.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+    h.run_steps(2);
+    let whole = h.state().doc.view.mesh().triangle_count();
+    assert!(whole > COARSE_ABOVE, "{whole}");
+    assert_eq!(h.state().shaded.main.last_coarse, None, "at rest: the whole mesh");
+    let picture = h.get_all_by_role(Role::Image).next().expect("the shaded view").rect();
+    let (from, to) = (picture.center(), picture.center() + egui::vec2(90.0, 30.0));
+    let yaw = h.state().doc.view.camera.yaw;
+    h.input_mut().events.push(egui::Event::PointerMoved(from));
+    h.input_mut().events.push(egui::Event::PointerButton {
+        pos: from,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.step();
+    for k in 1..=6 {
+        h.input_mut().events.push(egui::Event::PointerMoved(from + (to - from) * (k as f32 / 6.0)));
+        h.step();
+    }
+    assert_ne!(h.state().doc.view.camera.yaw, yaw, "the drag turned the camera");
+    let (coarse, all) = h.state().shaded.main.last_coarse.expect("drawn from the coarse copy while turning");
+    assert_eq!(all, whole);
+    assert!(coarse <= COARSE_TARGET + COARSE_TARGET / 10 && coarse * 4 >= COARSE_TARGET * 3, "{coarse}");
+    let (coarse_said, whole_said) =
+        (phonglab_core::locale::grouped(coarse as u64), phonglab_core::locale::grouped(whole as u64));
+    let said = format!("a copy of {coarse_said} of the {whole_said} triangles while the camera turns: ");
+    // The caption names the picture (which is labelled by it), and the picture is where it was.
+    let named = h.get_by_label_contains(&said);
+    assert_eq!(named.accesskit_node().role(), Role::Image);
+    assert!((named.rect().min - picture.min).length() < 1.0 && named.rect().width() > 300.0, "{:?}", named.rect());
+    h.input_mut().events.push(egui::Event::PointerButton {
+        pos: to,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.run_steps(3);
+    let state = h.state();
+    assert_eq!(state.shaded.main.last_coarse, None, "let go: the whole mesh again");
+    let px = state.shaded.main.image_px();
+    let mesh = state.doc.view.mesh();
+    let fresh = phonglab_core::render::Renderer::new()
+        .render(&state.doc.shaded_setup(state.settings.pow).job(&mesh), px, px)
+        .unwrap()
+        .0
+        .rgba
+        .clone();
+    let differ = fresh.iter().zip(state.shaded.main.rgba()).filter(|(a, b)| a != b).count();
+    assert_eq!((differ, fresh.len()), (0, state.shaded.main.rgba().len()), "bytes that differ");
+    assert!(h.query_by_label_contains("while the camera turns").is_none());
 }

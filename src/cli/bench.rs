@@ -88,6 +88,11 @@ pub struct RenderBench {
     /// it: the visibility is kept and only lighting and shading run again).
     #[arg(long, value_name = "WHAT", default_value = "object", value_parser = ["object", "light"])]
     pub moving: String,
+    /// Time the coarse copy of about this many triangles instead of the mesh itself: what
+    /// the app draws while the camera turns over a very large mesh (it says how long the
+    /// copy took to make).
+    #[arg(long, value_name = "TRIANGLES")]
+    pub coarse: Option<usize>,
 }
 
 /// A mesh fitted to the view (radius 0.5) made as large as the benchmark's sphere (radius
@@ -150,6 +155,28 @@ fn render(a: &RenderBench) -> Result<()> {
         vec![("scan", as_large_as_the_sphere(phonglab_core::mesh::scan::scan_like(level, 1)))]
     } else {
         bench_meshes_with(a.slices).into()
+    };
+    let meshes = match a.coarse {
+        Some(target) => meshes
+            .into_iter()
+            .filter(|(name, _)| chosen || a.object.as_deref().is_none_or(|o| o == *name))
+            .map(|(name, mesh)| {
+                let t = Instant::now();
+                let copy = phonglab_core::mesh::coarse::clustered(&mesh, target);
+                println!(
+                    "# {}",
+                    phonglab_core::t!(
+                        "bench-coarse-made",
+                        object = name,
+                        triangles = copy.triangle_count().to_string(),
+                        all = mesh.triangle_count().to_string(),
+                        ms = format!("{:.1}", t.elapsed().as_secs_f64() * 1e3)
+                    )
+                );
+                (name, copy)
+            })
+            .collect(),
+        None => meshes,
     };
     if let Some(out) = &a.write_mesh {
         return write_mesh(out, &meshes[0].1);

@@ -172,7 +172,7 @@ fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) -> Option
         ui.label(RichText::new(format!("{which}: {}", s.what)).strong());
         swatch_ui(ui, s.eval);
         ui.label(RichText::new(locale::decimal(&fmt_value(&s.eval.front.shown, 8))).monospace());
-        match view.render(ui.ctx(), s.doc, s.pow, px, which) {
+        match view.render(ui.ctx(), s.doc, s.pow, px, which, false) {
             Ok(()) => {
                 if let Some(tex) = &view.texture {
                     let side = px as f32 / ui.ctx().pixels_per_point();

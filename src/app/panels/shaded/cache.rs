@@ -22,6 +22,18 @@ pub struct ViewCache {
     key: Option<PictureKey>,
     /// The last frame's render time in milliseconds (on the CPU).
     pub last_ms: f64,
+    /// The last CPU picture was drawn from the coarse copy of the mesh while the camera
+    /// turned: its triangles, and the whole mesh's.
+    pub last_coarse: Option<(usize, usize)>,
+    /// The orbit camera is being turned by a drag on the picture: a mesh of more than
+    /// [`COARSE_ABOVE`] triangles is drawn from its coarse copy until the drag ends.
+    pub(crate) turning: bool,
+    /// The coarse copy of the view's mesh (the mesh it was made from, and the copy).
+    coarse: Option<(Arc<Mesh>, Arc<Mesh>)>,
+    /// The last CPU picture only lit the last one's triangles again (nothing drawn had
+    /// moved: the light, the material or the colours changed), so it took a fraction of a
+    /// whole frame.
+    pub last_relit: bool,
     /// The last picture's pixels (RGBA8, `image_px()` square), for Compare's difference.
     pub(crate) rgba: Vec<u8>,
     /// How many pictures this cache has drawn: a picture derived from it (the difference)
@@ -86,7 +98,10 @@ impl ViewCache {
         self.texture.as_ref().map_or(0, |t| t.size()[0])
     }
 
-    /// Renders `doc`'s shaded view at `px` pixels square unless the texture already shows it.
+    /// Renders `doc`'s shaded view at `px` pixels square unless the texture already shows
+    /// it. With `may_be_coarse`, while the camera turns ([`ViewCache::turning`]), a mesh
+    /// of more than [`COARSE_ABOVE`] triangles is drawn from its coarse copy (the picture
+    /// shown, never the one probed or picked, which pass `false`).
     pub(crate) fn render(
         &mut self,
         ctx: &egui::Context,
@@ -94,16 +109,21 @@ impl ViewCache {
         pow: PowFn,
         px: usize,
         name: &str,
+        may_be_coarse: bool,
     ) -> Result<(), String> {
         let setup = doc.shaded_setup(pow);
-        let key = PictureKey { scene: setup.scene.clone(), view: doc.view.clone(), px, pow };
+        let whole = mesh_for(&mut self.mesh, &doc.view).clone();
+        let coarse = may_be_coarse && self.turning && whole.triangle_count() > COARSE_ABOVE;
+        let key = PictureKey { scene: setup.scene.clone(), view: doc.view.clone(), px, pow, coarse };
         if self.key.as_ref() == Some(&key) && self.texture.is_some() {
             return Ok(());
         }
-        let mesh = mesh_for(&mut self.mesh, &doc.view).clone();
+        let mesh = if coarse { self.coarse_copy(&whole) } else { whole.clone() };
         let t = crate::platform::clock::Instant::now();
-        let (img, _) = self.renderer.render(&setup.job(&mesh), px, px).map_err(|e| e.to_string())?;
+        let (img, stats) = self.renderer.render(&setup.job(&mesh), px, px).map_err(|e| e.to_string())?;
         self.last_ms = t.elapsed().as_secs_f64() * 1e3;
+        self.last_relit = stats.visibility_kept;
+        self.last_coarse = coarse.then(|| (mesh.triangle_count(), whole.triangle_count()));
         let image = ColorImage::from_rgba_unmultiplied([img.width, img.height], &img.rgba);
         self.rgba.clone_from(&img.rgba);
         self.generation += 1;
@@ -113,6 +133,18 @@ impl ViewCache {
         }
         self.key = Some(key);
         Ok(())
+    }
+
+    /// The coarse copy of `whole` (made once per mesh, on the first turn of the camera).
+    fn coarse_copy(&mut self, whole: &Arc<Mesh>) -> Arc<Mesh> {
+        match &self.coarse {
+            Some((of, copy)) if Arc::ptr_eq(of, whole) => copy.clone(),
+            _ => {
+                let copy = Arc::new(phonglab_core::mesh::coarse::clustered(whole, COARSE_TARGET));
+                self.coarse = Some((whole.clone(), copy.clone()));
+                copy
+            }
+        }
     }
 
     /// The GPU picture of `doc`'s shaded view at `px` pixels square (slot `slot`), or why
@@ -156,7 +188,17 @@ pub(crate) struct PictureKey {
     view: View,
     px: usize,
     pow: PowFn,
+    /// Drawn from the mesh's coarse copy.
+    coarse: bool,
 }
+
+/// Meshes of more triangles than this are drawn from a coarse copy while the camera turns
+/// on the CPU: a million triangles take 55-70 ms a frame at 1024² on 2 cores, a copy of
+/// [`COARSE_TARGET`] about 15 (docs/performance.md, "A million triangles").
+pub const COARSE_ABOVE: usize = 300_000;
+
+/// About how many triangles the coarse copy keeps.
+pub const COARSE_TARGET: usize = 150_000;
 
 /// What a generated program was generated for.
 #[derive(Clone, Debug, PartialEq)]

@@ -36,7 +36,16 @@ pub(super) fn interaction_ui(
     let arrows = vectors_on_object_ui(ui, overlay.rect, state.edit.doc, eval, &light_marks);
 
     let mut cam = camera;
-    if resp.dragged() && !dragged_light && state.edit.doc.view.framing == Framing::Orbit {
+    // While the camera turns, a very large mesh is drawn from its coarse copy; the frame
+    // after the drag ends draws the whole mesh again.
+    let turning = resp.dragged() && !dragged_light && state.edit.doc.view.framing == Framing::Orbit;
+    for view in [&mut cache.main, &mut cache.corrected] {
+        if view.turning && !turning {
+            ui.ctx().request_repaint();
+        }
+        view.turning = turning;
+    }
+    if turning {
         let d = resp.drag_delta();
         cam.yaw = (cam.yaw + d.x as f64 * 0.5).rem_euclid(360.0);
         cam.pitch = (cam.pitch + d.y as f64 * 0.5).clamp(-89.0, 89.0);
@@ -62,7 +71,7 @@ pub(super) fn interaction_ui(
         // Picking reads the CPU renderer's triangle buffer: after a GPU frame, the CPU
         // renderer draws the same picture first (only on a click).
         if matches!(cache.main.drawn_by, DrawnBy::Gpu { .. })
-            && let Err(e) = cache.main.render(ui.ctx(), state.edit.doc, state.pow, px, "shaded view")
+            && let Err(e) = cache.main.render(ui.ctx(), state.edit.doc, state.pow, px, "shaded view", false)
         {
             *state.edit.message = Some(Message::Refused(format!("{}: {e}", t!("shaded-cannot-render"))));
             return (arrows, cones);
@@ -114,7 +123,7 @@ pub(super) fn probe_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut ShadedCa
     let Some(([x, y], px)) = probe.at else { return };
     // The probe reads the CPU renderer's last frame: drawn first when the GPU drew the
     // picture (once for each new picture).
-    if let Err(e) = cache.main.render(ui.ctx(), state.edit.doc, state.pow, px, "shaded view") {
+    if let Err(e) = cache.main.render(ui.ctx(), state.edit.doc, state.pow, px, "shaded view", false) {
         *state.edit.message = Some(Message::Refused(format!("{}: {e}", t!("shaded-cannot-render"))));
         return;
     }

@@ -154,7 +154,7 @@ fn prepare_picture(
             (Err(e), _) => e,
         },
     };
-    cache.render(ctx, doc, pow, px, name)?;
+    cache.render(ctx, doc, pow, px, name, true)?;
     cache.drawn_by = DrawnBy::Cpu { why };
     Ok(None)
 }
@@ -187,6 +187,13 @@ fn picture_ui(ui: &mut Ui, cache: &ViewCache, gpu: Option<GpuImage>, size: egui:
 pub fn drawn_caption(cache: &ViewCache) -> String {
     match &cache.drawn_by {
         DrawnBy::Gpu { adapter } => t!("caption-gpu", adapter = adapter.to_string()),
+        _ if let Some((triangles, all)) = cache.last_coarse => t!(
+            "caption-cpu-coarse",
+            ms = fmt_ms(cache.last_ms),
+            triangles = phonglab_core::locale::grouped(triangles as u64),
+            all = phonglab_core::locale::grouped(all as u64)
+        ),
+        _ if cache.last_relit => t!("caption-cpu-relit", ms = fmt_ms(cache.last_ms)),
         _ => t!("caption-cpu", ms = fmt_ms(cache.last_ms)),
     }
 }
