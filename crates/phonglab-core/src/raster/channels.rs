@@ -249,8 +249,7 @@ impl ChannelImage {
 }
 
 /// Channel `channel` (of light `light`, by its place among the enabled ones) of the frame
-/// `renderer` last drew from `job`, which must have kept its visibility
-/// ([`Renderer::keep_visibility`]; else each pixel's band is drawn again).
+/// `renderer` last drew from `job` (read from the visibility the renderer keeps).
 pub fn channel_image(
     renderer: &Renderer,
     job: &Job<'_>,

@@ -390,7 +390,8 @@ mod tests {
                     let mut edges = vec![Default::default(); n];
                     let mut colors = vec![Default::default(); n];
                     let (mut pos, mut nrm) = (vec![[Vec3::ZERO; 3]; n], vec![[Vec3::ZERO; 3]; n]);
-                    let out = Attributes { edges: &mut edges, colors: &mut colors, pos: &mut pos, nrm: &mut nrm };
+                    let out =
+                        Attributes { edges: &mut edges, colors: &mut colors, pos: &mut pos, nrm: &mut nrm, seen: None };
                     attributes_chunk(isa, &job, &r.vertices, ts, &r.setup.corners, out);
                     format!("{edges:?} {colors:?} {pos:?} {nrm:?}")
                 };

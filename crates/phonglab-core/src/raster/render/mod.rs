@@ -17,6 +17,11 @@
 //!    Gouraud interpolates colours, Phong interpolates position and normal and lights the
 //!    pixel, Flat takes its face's colour (or, as the Phong demo does, lights the pixel
 //!    with the face's normal taken from the screen derivatives).
+//!
+//! Each band's visibility is copied out as it is shaded and kept: picking reads it, and a
+//! frame in which nothing drawn moved (no vertex, bit for bit, nor the triangles, size,
+//! shading or culling: only the lights, the material or the colours changed) skips stages
+//! 2 and 3 and shades the kept visibility again ([`Stats::visibility_kept`]).
 
 pub mod copies;
 pub mod resolve;
@@ -150,6 +155,9 @@ struct Drawn {
     mode: Option<ShadingMode>,
     cull_back: bool,
     triangles: Vec<[u32; 3]>,
+    /// A bit for each rasterised triangle the frame shows at some pixel (made on the first
+    /// frame that keeps it: [`resolve::seen_triangles`]).
+    seen: Option<Vec<u64>>,
 }
 
 /// Triangles compared or copied a chunk at a time on all cores.
@@ -167,6 +175,7 @@ impl Drawn {
             .zip(from.par_chunks(TRIANGLE_GRAIN))
             .for_each(|(to, from)| to.copy_from_slice(from));
         (self.width, self.height, self.mode, self.cull_back) = (width, height, Some(job.mode), job.cull_back);
+        self.seen = None;
         self.valid = true;
     }
 
@@ -272,7 +281,9 @@ impl Renderer {
             copies::attributes_chunk(isa, job, verts, ts, corners, out)
         };
         let (lit, [raster_share, resolve_share]) = if kept {
-            let prepared = resolve::prepare(job, &self.setup, &mut self.scratch, bands, true, attributes);
+            let (setup, kept_px) = (&self.setup, &self.kept);
+            let seen = self.drawn.seen.get_or_insert_with(|| resolve::seen_triangles(kept_px, setup.tris.len()));
+            let prepared = resolve::prepare(job, &self.setup, &mut self.scratch, bands, Some(seen), attributes);
             let frame = Frame { isa, job, setup: &self.setup, verts, lighter, prepared: &prepared };
             (shade_kept(&frame, &mut self.image, &mut self.scratch, &self.kept), [0.0, 1.0])
         } else {
@@ -280,7 +291,7 @@ impl Renderer {
             let (setup, image, bins, scratch) = (&self.setup, &mut self.image, &mut self.bins, &mut self.scratch);
             let ((), prepared) = rayon::join(
                 || visibility::bin(setup, width, height, image, bins),
-                || resolve::prepare(job, setup, scratch, bands, false, attributes),
+                || resolve::prepare(job, setup, scratch, bands, None, attributes),
             );
             let frame = Frame { isa, job, setup, verts, lighter, prepared: &prepared };
             let out = draw_and_shade(&frame, &mut self.image, &mut self.scratch, &self.bins[..bands], &mut self.kept);
@@ -554,7 +565,7 @@ mod tests {
                 |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
                     copies::attributes_chunk(Isa::Portable, &job, &r.vertices, ts, corners, out)
                 };
-            let prepared = resolve::prepare(&job, &r.setup, &mut r.scratch, bands, false, attributes);
+            let prepared = resolve::prepare(&job, &r.setup, &mut r.scratch, bands, None, attributes);
             let (shared, fragments) = resolve::split(&mut r.scratch);
             for (b, frags) in fragments.iter_mut().enumerate().take(bands) {
                 let rows = b * visibility::BAND * w..((b + 1) * visibility::BAND * w).min(w * h);

@@ -33,12 +33,14 @@ pub struct TriangleAttributes {
 /// of mapping its barycentrics back. One pass over chunks of triangles on both threads
 /// (each result depends on its triangle alone).
 /// `attributes` does one chunk (a copy of [`attributes_chunk_any`] for this processor).
+/// With `seen` (a bit a triangle, [`seen_triangles`]), only the triangles seen at some
+/// pixel are done: the others' attributes are never read.
 pub(super) fn triangle_attributes(
     setup: &Setup,
     out: &mut TriangleAttributes,
+    seen: Option<&[u64]>,
     attributes: impl Fn(&[RasterTri], &ClippedCorners, Attributes<'_>) + Sync,
 ) {
-    const GRAIN: usize = 256;
     // Every array sized to the triangles (growing only on the first frames); only those the
     // shading reads are written.
     let n = setup.tris.len();
@@ -53,9 +55,27 @@ pub(super) fn triangle_attributes(
         .zip(out.color.par_chunks_mut(GRAIN))
         .zip(out.pos.par_chunks_mut(GRAIN))
         .zip(out.nrm.par_chunks_mut(GRAIN))
-        .for_each(|((((ts, edges), colors), pos), nrm)| {
-            attributes(ts, &setup.corners, Attributes { edges, colors, pos, nrm });
+        .enumerate()
+        .for_each(|(k, ((((ts, edges), colors), pos), nrm))| {
+            let seen = seen.and_then(|s| s.get(k * GRAIN / 64..(k + 1) * GRAIN / 64));
+            attributes(ts, &setup.corners, Attributes { edges, colors, pos, nrm, seen });
         });
+}
+
+/// Triangles a chunk of the attributes takes (a multiple of 64: a chunk's bits of
+/// [`seen_triangles`] are whole words).
+const GRAIN: usize = 256;
+
+/// A bit for each of `triangles` rasterised triangles, set where `visibility` (the
+/// triangle at each pixel) shows it: whole words for every chunk of [`GRAIN`].
+pub(in crate::raster::render) fn seen_triangles(visibility: &[u32], triangles: usize) -> Vec<u64> {
+    let mut seen = vec![0u64; triangles.div_ceil(GRAIN) * GRAIN / 64];
+    for &t in visibility {
+        if let Some(w) = seen.get_mut(t as usize / 64) {
+            *w |= 1 << (t % 64);
+        }
+    }
+    seen
 }
 
 /// Where one chunk of triangles' attributes go ([`triangle_attributes`]).
@@ -64,6 +84,8 @@ pub(in crate::raster::render) struct Attributes<'a> {
     pub(in crate::raster::render) colors: &'a mut [ColorPlanes],
     pub(in crate::raster::render) pos: &'a mut [[Vec3; 3]],
     pub(in crate::raster::render) nrm: &'a mut [[Vec3; 3]],
+    /// A bit for each triangle of the chunk: only those set are done (all, if `None`).
+    pub(in crate::raster::render) seen: Option<&'a [u64]>,
 }
 
 /// One triangle's attributes, those the shading reads (the others left at zero).
@@ -132,8 +154,9 @@ pub(in crate::raster::render) fn attributes_chunk_any(
     corners: &ClippedCorners,
     out: Attributes<'_>,
 ) {
-    let Attributes { edges, colors, pos, nrm } = out;
-    for (i, t) in ts.iter().enumerate().filter(|(_, t)| !t.back) {
+    let Attributes { edges, colors, pos, nrm, seen } = out;
+    let wanted = |i: usize| seen.is_none_or(|s| s.get(i / 64).is_some_and(|w| w >> (i % 64) & 1 == 1));
+    for (i, t) in ts.iter().enumerate().filter(|(i, t)| !t.back && wanted(*i)) {
         let a = attributes_of(job, verts, corners, t);
         match job.mode {
             ShadingMode::Gouraud => colors[i] = a.color,

@@ -44,7 +44,7 @@ use pixels::{fill_px, to_u8};
 use runs::{Run, blend_n, run_length, xyz};
 
 pub(in crate::raster::render) use attributes::Attributes;
-pub(in crate::raster::render) use attributes::{attributes_chunk_any, attributes_of};
+pub(in crate::raster::render) use attributes::{attributes_chunk_any, attributes_of, seen_triangles};
 pub use fragments::Fragments;
 pub use gouraud::ColorPlanes;
 pub(crate) use picking::original_barycentrics;
@@ -81,23 +81,24 @@ pub struct Prepared {
 
 /// The frame's shared resolve state; fills the per-triangle attributes in `scratch`, a
 /// chunk at a time through `attributes` (a copy of [`attributes_chunk_any`]). With
-/// `geometry_kept` (the triangles, and their vertices' positions and normals, are the last
-/// frame's, bit for bit), only Gouraud's, the colours, are made again: the others read
-/// only the geometry.
+/// `kept_seen` (the triangles, and their vertices' positions and normals, are the last
+/// frame's, bit for bit, and so is its visibility, which shows the triangles whose bits
+/// are set: [`seen_triangles`]), only Gouraud's, the colours, are made again, and only
+/// for the triangles seen: the others read only the geometry.
 pub(super) fn prepare(
     job: &Job<'_>,
     setup: &Setup,
     scratch: &mut Scratch,
     bands: usize,
-    geometry_kept: bool,
+    kept_seen: Option<&[u64]>,
     attributes: impl Fn(&[RasterTri], &ClippedCorners, Attributes<'_>) + Sync,
 ) -> Prepared {
     let bg = job.background.map(to_u8);
     // Shadings that light each pixel: Phong, and Flat with the demo's derivative normals.
     let per_pixel = job.mode.per_fragment();
     scratch.bands.resize_with(bands, Fragments::default);
-    if job.mode != ShadingMode::FlatFace && (job.mode == ShadingMode::Gouraud || !geometry_kept) {
-        triangle_attributes(setup, &mut scratch.tris, attributes);
+    if job.mode != ShadingMode::FlatFace && (job.mode == ShadingMode::Gouraud || kept_seen.is_none()) {
+        triangle_attributes(setup, &mut scratch.tris, kept_seen, attributes);
     }
     // Flat: each face's colour converted to 8 bits once.
     let face8: [Vec<[u8; 4]>; 2] = if job.mode == ShadingMode::FlatFace {
