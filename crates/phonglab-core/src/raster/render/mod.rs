@@ -141,6 +141,8 @@ pub struct Renderer {
     kept: Vec<u32>,
     /// What the last frame was drawn from, besides its vertices.
     drawn: Drawn,
+    /// The last frame kept the visibility of the one before.
+    last_kept: bool,
     keep_visibility: bool,
 }
 
@@ -158,6 +160,8 @@ struct Drawn {
     /// A bit for each rasterised triangle the frame shows at some pixel (made on the first
     /// frame that keeps it: [`resolve::seen_triangles`]).
     seen: Option<Vec<u64>>,
+    /// A bit for each mesh vertex of those triangles (made with `seen`).
+    seen_vertices: Vec<u64>,
 }
 
 /// Triangles compared or copied a chunk at a time on all cores.
@@ -177,6 +181,29 @@ impl Drawn {
         (self.width, self.height, self.mode, self.cull_back) = (width, height, Some(job.mode), job.cull_back);
         self.seen = None;
         self.valid = true;
+    }
+
+    /// The triangles and the mesh vertices the kept visibility `kept` (of `setup`'s
+    /// triangles, drawn from `mesh`) shows, a bit each: made once per frame drawn whole.
+    fn seen(&mut self, kept: &[u32], setup: &setup::Setup, mesh: &Mesh) -> (&[u64], &[u64]) {
+        if self.seen.is_none() {
+            let seen = resolve::seen_triangles(kept, setup.tris.len());
+            let n = mesh.positions.len();
+            self.seen_vertices.clear();
+            self.seen_vertices.resize(n.div_ceil(512) * 512 / 64, 0);
+            for (w, word) in seen.iter().enumerate().filter(|(_, w)| **w != 0) {
+                for b in (0..64).filter(|b| word >> b & 1 == 1) {
+                    let Some(t) = setup.tris.get(w * 64 + b) else { continue };
+                    for v in mesh.triangles.get(t.orig as usize).into_iter().flatten() {
+                        if let Some(x) = self.seen_vertices.get_mut(*v as usize / 64) {
+                            *x |= 1 << (v % 64);
+                        }
+                    }
+                }
+            }
+            self.seen = Some(seen);
+        }
+        (self.seen.as_deref().unwrap_or(&[]), &self.seen_vertices)
     }
 
     /// Would `job` at this size draw the last frame's visibility (its vertices having not
@@ -210,6 +237,7 @@ impl Default for Renderer {
             bins: Vec::new(),
             kept: Vec::new(),
             drawn: Drawn::default(),
+            last_kept: false,
             keep_visibility: false,
         }
     }
@@ -263,11 +291,23 @@ impl Renderer {
             ms
         };
         let isa = self.isa;
-        let moved = self.vertices.run(job, lighter, |clip, out| copies::window_vertices(isa, clip, out, width, height));
-        let t_vertices = lap();
+        // After a frame that kept its visibility, Gouraud lights the vertices in a pass of
+        // their own, once it is known whether this one keeps it too: then only the vertices
+        // it shows are lit. Otherwise in the transforms' pass.
+        let apart = job.mode == ShadingMode::Gouraud && self.last_kept;
+        let window = |clip: &[glam::Vec4], out: &mut [window::WindowVert]| {
+            copies::window_vertices(isa, clip, out, width, height)
+        };
+        let moved = self.vertices.run(job, (!apart).then_some(lighter), window);
         let kept = !moved && self.drawn.is_for(job, width, height, self.kept.len());
         // Until this frame is drawn whole, nothing is kept.
         self.drawn.valid &= kept;
+        self.last_kept = kept;
+        if apart {
+            let only = kept.then(|| self.drawn.seen(&self.kept, &self.setup, job.mesh).1);
+            self.vertices.light(job, lighter, only);
+        }
+        let t_vertices = lap();
         let verts = &self.vertices;
         if kept {
             self.setup.light_faces(job, verts, lighter);
@@ -281,8 +321,7 @@ impl Renderer {
             copies::attributes_chunk(isa, job, verts, ts, corners, out)
         };
         let (lit, [raster_share, resolve_share]) = if kept {
-            let (setup, kept_px) = (&self.setup, &self.kept);
-            let seen = self.drawn.seen.get_or_insert_with(|| resolve::seen_triangles(kept_px, setup.tris.len()));
+            let seen = self.drawn.seen(&self.kept, &self.setup, job.mesh).0;
             let prepared = resolve::prepare(job, &self.setup, &mut self.scratch, bands, Some(seen), attributes);
             let frame = Frame { isa, job, setup: &self.setup, verts, lighter, prepared: &prepared };
             (shade_kept(&frame, &mut self.image, &mut self.scratch, &self.kept), [0.0, 1.0])

@@ -45,16 +45,21 @@ fn clamped_sum(l: &Lit) -> [f32; 4] {
     [c(p[0]) + c(s[0]), c(p[1]) + c(s[1]), c(p[2]) + c(s[2]), c(p[3])]
 }
 
+/// Vertices a chunk of stage 1 takes (a multiple of 64: a chunk's bits of a vertex mask
+/// are whole words).
+const GRAIN: usize = 512;
+
 impl Vertices {
-    /// Transforms the job's mesh (and lights it for Gouraud); `window_vertices` takes a
-    /// chunk of clip-space positions to the image's window coordinates (a copy of
-    /// [`super::window::window_vertices`] for this processor, chosen by the caller).
-    /// Returns whether any vertex moved: whether an eye-space position or normal or a
-    /// clip-space position differs, in any bit, from the last run's (or their count does).
+    /// Transforms the job's mesh and, given `lighter` (Gouraud), lights it in the same pass;
+    /// `window_vertices` takes a chunk of clip-space positions to the image's window
+    /// coordinates (a copy of [`super::window::window_vertices`] for this processor, chosen
+    /// by the caller). Returns whether any vertex moved: whether an eye-space position or
+    /// normal or a clip-space position differs, in any bit, from the last run's (or their
+    /// count does).
     pub fn run(
         &mut self,
         job: &Job<'_>,
-        lighter: &Lighter,
+        lighter: Option<&Lighter>,
         window_vertices: impl Fn(&[Vec4], &mut [WindowVert]) + Sync,
     ) -> bool {
         let mesh = job.mesh;
@@ -68,20 +73,11 @@ impl Vertices {
         self.clip.resize(n, Vec4::ZERO);
         self.window.resize(n, (0, 0, 0.0, 0.0));
         self.normal.resize(n, Vec3::ZERO);
-        const GRAIN: usize = 512;
         // One pass over chunks of vertices on both threads: transforms and, for Gouraud, the
         // lighting and each side's colour (one fork and join a frame for the whole stage).
-        let gouraud = job.mode == ShadingMode::Gouraud;
-        let two = job.scene.light_model.two_sided;
-        let clamps = job.scene.rules.clamps_vertex_colors();
-        let m = if gouraud { n } else { 0 };
-        for side in 0..2 {
-            self.color[side].resize(m, [0.0; 4]);
-        }
-        let [color_front, color_back] = &mut self.color;
-        // Gouraud's outputs, chunk by chunk (none otherwise: the vectors are empty).
-        let color = color_front.chunks_mut(GRAIN).zip(color_back.chunks_mut(GRAIN));
-        let mut gouraud_chunks: Vec<_> = color.map(Some).collect();
+        let lighter = lighter.filter(|_| job.mode == ShadingMode::Gouraud);
+        // Without a lighter the colours are left alone ([`Vertices::light`] makes them).
+        let mut gouraud_chunks = if lighter.is_some() { color_chunks(&mut self.color, n) } else { Vec::new() };
         gouraud_chunks.resize_with(n.div_ceil(GRAIN), || None);
         self.eye
             .par_chunks_mut(GRAIN)
@@ -107,28 +103,92 @@ impl Vertices {
                     moved.store(true, std::sync::atomic::Ordering::Relaxed);
                 }
                 window_vertices(clip, window);
-                let Some((cf, cb)) = gouraud else { return };
-                let r = base..base + eye.len();
-                let (pos, nrm) = (&mesh.positions[r.clone()], &mesh.normals[r]);
-                SCRATCH.with_borrow_mut(|[f, b]| {
-                    // The thread's scratch, sized once: no allocation or clearing per chunk.
-                    f.resize(GRAIN, Lit::default());
-                    b.resize(GRAIN, Lit::default());
-                    let (f, b) = (&mut f[..eye.len()], &mut b[..eye.len()]);
-                    lighter.light_batch(pos, nrm, f, if two { Some(&mut *b) } else { None });
-                    let sum = if clamps { clamped_sum } else { unclamped_sum };
-                    for (c, l) in cf.iter_mut().zip(f.iter()) {
-                        *c = sum(l);
-                    }
-                    // One-sided: the back side's colour is the front's.
-                    let back = if two { &*b } else { &*f };
-                    for (c, l) in cb.iter_mut().zip(back) {
-                        *c = sum(l);
-                    }
-                });
+                if let (Some((cf, cb)), Some(lighter)) = (gouraud, lighter) {
+                    light_chunk(job, lighter, base, cf, cb, None);
+                }
             });
         moved.into_inner()
     }
+
+    /// Gouraud: lights the job's mesh (a pass of its own, after [`Vertices::run`] without
+    /// a lighter), every vertex, or with `only` those whose bit is set (the vertices of the
+    /// triangles a kept visibility shows; the others' colours are left as they were, and
+    /// never read).
+    pub fn light(&mut self, job: &Job<'_>, lighter: &Lighter, only: Option<&[u64]>) {
+        let chunks = color_chunks(&mut self.color, job.mesh.positions.len());
+        chunks.into_par_iter().enumerate().for_each(|(k, c)| {
+            if let Some((cf, cb)) = c {
+                let mask = only.map(|m| m.get(k * GRAIN / 64..).unwrap_or(&[]));
+                light_chunk(job, lighter, k * GRAIN, cf, cb, mask);
+            }
+        });
+    }
+}
+
+/// Each side's colour of the vertices `base..base + cf.len()` (or, with `mask`, of those
+/// whose bit is set: gathered, lit, scattered back), as the pipeline interpolates it.
+fn light_chunk(
+    job: &Job<'_>,
+    lighter: &Lighter,
+    base: usize,
+    cf: &mut [[f32; 4]],
+    cb: &mut [[f32; 4]],
+    mask: Option<&[u64]>,
+) {
+    let two = job.scene.light_model.two_sided;
+    let sum = if job.scene.rules.clamps_vertex_colors() { clamped_sum } else { unclamped_sum };
+    let r = base..base + cf.len();
+    let (pos, nrm) = (&job.mesh.positions[r.clone()], &job.mesh.normals[r]);
+    // The masked vertices gathered (on the stack: a chunk is at most GRAIN).
+    let (mut at, mut gp, mut gn) = ([0u16; GRAIN], [Vec3::ZERO; GRAIN], [Vec3::ZERO; GRAIN]);
+    let (pos, nrm, at) = match mask {
+        None => (pos, nrm, None),
+        Some(m) => {
+            let mut k = 0;
+            for i in 0..pos.len() {
+                if m.get(i / 64).is_some_and(|w| w >> (i % 64) & 1 == 1) {
+                    (at[k], gp[k], gn[k]) = (i as u16, pos[i], nrm[i]);
+                    k += 1;
+                }
+            }
+            (&gp[..k], &gn[..k], Some(&at[..k]))
+        }
+    };
+    SCRATCH.with_borrow_mut(|[f, b]| {
+        // The thread's scratch, sized once: no allocation or clearing per chunk.
+        f.resize(GRAIN, Lit::default());
+        b.resize(GRAIN, Lit::default());
+        let (f, b) = (&mut f[..pos.len()], &mut b[..pos.len()]);
+        lighter.light_batch(pos, nrm, f, if two { Some(&mut *b) } else { None });
+        // One-sided: the back side's colour is the front's.
+        let back = if two { &*b } else { &*f };
+        match at {
+            None => {
+                for (c, l) in cf.iter_mut().zip(f.iter()) {
+                    *c = sum(l);
+                }
+                for (c, l) in cb.iter_mut().zip(back) {
+                    *c = sum(l);
+                }
+            }
+            Some(at) => {
+                for (k, &i) in at.iter().enumerate() {
+                    (cf[i as usize], cb[i as usize]) = (sum(&f[k]), sum(&back[k]));
+                }
+            }
+        }
+    });
+}
+
+/// Gouraud's colour arrays (`color`) sized to `n` vertices (emptied when `n` is 0), in
+/// chunks of [`GRAIN`].
+#[allow(clippy::type_complexity)]
+fn color_chunks(color: &mut [Vec<[f32; 4]>; 2], n: usize) -> Vec<Option<(&mut [[f32; 4]], &mut [[f32; 4]])>> {
+    for side in color.iter_mut() {
+        side.resize(n, [0.0; 4]);
+    }
+    let [front, back] = color;
+    front.chunks_mut(GRAIN).zip(back.chunks_mut(GRAIN)).map(Some).collect()
 }
 
 /// A vector's bits, for comparing exactly (NaN equal to itself, -0 unequal to +0).
