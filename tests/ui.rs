@@ -917,7 +917,8 @@ fn moving_the_light_only_lights_the_picture_again_and_says_so() {
 /// `COARSE_ABOVE` triangles (the sphere at 400 x 400: 319 200) draws it from its coarse
 /// copy while the mouse is down, and the caption says so with both counts (and names the
 /// picture); the frame after
-/// the mouse is let go draws the whole mesh, exactly as a new renderer draws it.
+/// the mouse is let go draws the whole mesh, exactly as a new renderer draws it. The same
+/// while the object spins by itself (auto-rotate).
 #[test]
 fn turning_the_camera_over_a_large_mesh_draws_a_coarse_copy_until_let_go() {
     use phonglab::app::panels::shaded::cache::{COARSE_ABOVE, COARSE_TARGET};
@@ -946,8 +947,9 @@ fn turning_the_camera_over_a_large_mesh_draws_a_coarse_copy_until_let_go() {
         h.step();
     }
     assert_ne!(h.state().doc.view.camera.yaw, yaw, "the drag turned the camera");
-    let (coarse, all) = h.state().shaded.main.last_coarse.expect("drawn from the coarse copy while turning");
-    assert_eq!(all, whole);
+    let drawn = h.state().shaded.main.last_coarse.expect("drawn from the coarse copy while turning");
+    let (coarse, all) = (drawn.triangles, drawn.of);
+    assert_eq!((all, drawn.spinning), (whole, false));
     assert!(coarse <= COARSE_TARGET + COARSE_TARGET / 10 && coarse * 4 >= COARSE_TARGET * 3, "{coarse}");
     let (coarse_said, whole_said) =
         (phonglab_core::locale::grouped(coarse as u64), phonglab_core::locale::grouped(whole as u64));
@@ -976,4 +978,13 @@ fn turning_the_camera_over_a_large_mesh_draws_a_coarse_copy_until_let_go() {
     let differ = fresh.iter().zip(state.shaded.main.rgba()).filter(|(a, b)| a != b).count();
     assert_eq!((differ, fresh.len()), (0, state.shaded.main.rgba().len()), "bytes that differ");
     assert!(h.query_by_label_contains("while the camera turns").is_none());
+    // Spinning by itself (auto-rotate): the copy, said so, until the spin is turned off.
+    h.state_mut().doc.view.auto_rotate = true;
+    h.run_steps(2);
+    let drawn = h.state().shaded.main.last_coarse.expect("drawn from the coarse copy while spinning");
+    assert_eq!((drawn.triangles, drawn.spinning), (coarse, true));
+    h.get_by_label_contains(&format!("a copy of {coarse_said} of the {whole_said} triangles while the object spins: "));
+    h.state_mut().doc.view.auto_rotate = false;
+    h.run_steps(2);
+    assert_eq!(h.state().shaded.main.last_coarse, None, "the spin stopped: the whole mesh");
 }

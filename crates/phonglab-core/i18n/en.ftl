@@ -520,6 +520,7 @@ caption-gpu = on the GPU ({ $adapter })
 caption-cpu = { $ms } ms per frame on the CPU
 caption-cpu-relit = lit again, nothing drawn moved: { $ms } ms per frame on the CPU
 caption-cpu-coarse = a copy of { $triangles } of the { $all } triangles while the camera turns: { $ms } ms per frame on the CPU
+caption-cpu-coarse-spin = a copy of { $triangles } of the { $all } triangles while the object spins: { $ms } ms per frame on the CPU
 cpu-flat = Flat shading is drawn by the CPU renderer (the generator writes Gouraud and Phong)
 cpu-approximate-pow = an approximate power function is studied on the CPU renderer (the GPU's pow is its own)
 cpu-no-adapter = no wgpu adapter here (headless, or another backend)

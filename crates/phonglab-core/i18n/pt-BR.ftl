@@ -520,6 +520,7 @@ caption-gpu = na GPU ({ $adapter })
 caption-cpu = { $ms } ms por imagem na CPU
 caption-cpu-relit = só iluminada de novo, nada do que se desenha se moveu: { $ms } ms por imagem na CPU
 caption-cpu-coarse = uma cópia com { $triangles } dos { $all } triângulos enquanto a câmera gira: { $ms } ms por imagem na CPU
+caption-cpu-coarse-spin = uma cópia com { $triangles } dos { $all } triângulos enquanto o objeto gira: { $ms } ms por imagem na CPU
 cpu-flat = o sombreamento Flat é desenhado na CPU (o gerador escreve Gouraud e Phong)
 cpu-approximate-pow = uma potência aproximada é estudada na CPU (a pow da GPU é a sua)
 cpu-no-adapter = não há adaptador wgpu aqui (sem tela, ou outro backend)

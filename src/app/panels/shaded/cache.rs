@@ -22,11 +22,12 @@ pub struct ViewCache {
     key: Option<PictureKey>,
     /// The last frame's render time in milliseconds (on the CPU).
     pub last_ms: f64,
-    /// The last CPU picture was drawn from the coarse copy of the mesh while the camera
-    /// turned: its triangles, and the whole mesh's.
-    pub last_coarse: Option<(usize, usize)>,
+    /// The last CPU picture was drawn from the coarse copy of the mesh, while the camera
+    /// turned or the object spun.
+    pub last_coarse: Option<Coarse>,
     /// The orbit camera is being turned by a drag on the picture: a mesh of more than
-    /// [`COARSE_ABOVE`] triangles is drawn from its coarse copy until the drag ends.
+    /// [`COARSE_ABOVE`] triangles is drawn from its coarse copy until the drag ends (and
+    /// while the object spins by itself).
     pub(crate) turning: bool,
     /// The coarse copy of the view's mesh (the mesh it was made from, and the copy).
     coarse: Option<(Arc<Mesh>, Arc<Mesh>)>,
@@ -48,6 +49,17 @@ pub struct ViewCache {
     /// failed (that program is not tried again).
     gpu_error: Arc<Mutex<Option<String>>>,
     failed_program: Option<Arc<str>>,
+}
+
+/// A picture drawn from the coarse copy of a large mesh.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Coarse {
+    /// The copy's triangles.
+    pub triangles: usize,
+    /// The whole mesh's.
+    pub of: usize,
+    /// The object spun by itself (auto-rotate) rather than the camera being turned.
+    pub spinning: bool,
 }
 
 /// Who drew a picture of the shaded view.
@@ -113,7 +125,8 @@ impl ViewCache {
     ) -> Result<(), String> {
         let setup = doc.shaded_setup(pow);
         let whole = mesh_for(&mut self.mesh, &doc.view).clone();
-        let coarse = may_be_coarse && self.turning && whole.triangle_count() > COARSE_ABOVE;
+        let moving = self.turning || doc.view.auto_rotate;
+        let coarse = may_be_coarse && moving && whole.triangle_count() > COARSE_ABOVE;
         let key = PictureKey { scene: setup.scene.clone(), view: doc.view.clone(), px, pow, coarse };
         if self.key.as_ref() == Some(&key) && self.texture.is_some() {
             return Ok(());
@@ -123,7 +136,11 @@ impl ViewCache {
         let (img, stats) = self.renderer.render(&setup.job(&mesh), px, px).map_err(|e| e.to_string())?;
         self.last_ms = t.elapsed().as_secs_f64() * 1e3;
         self.last_relit = stats.visibility_kept;
-        self.last_coarse = coarse.then(|| (mesh.triangle_count(), whole.triangle_count()));
+        self.last_coarse = coarse.then(|| Coarse {
+            triangles: mesh.triangle_count(),
+            of: whole.triangle_count(),
+            spinning: !self.turning,
+        });
         let image = ColorImage::from_rgba_unmultiplied([img.width, img.height], &img.rgba);
         self.rgba.clone_from(&img.rgba);
         self.generation += 1;

@@ -187,12 +187,14 @@ fn picture_ui(ui: &mut Ui, cache: &ViewCache, gpu: Option<GpuImage>, size: egui:
 pub fn drawn_caption(cache: &ViewCache) -> String {
     match &cache.drawn_by {
         DrawnBy::Gpu { adapter } => t!("caption-gpu", adapter = adapter.to_string()),
-        _ if let Some((triangles, all)) = cache.last_coarse => t!(
-            "caption-cpu-coarse",
-            ms = fmt_ms(cache.last_ms),
-            triangles = phonglab_core::locale::grouped(triangles as u64),
-            all = phonglab_core::locale::grouped(all as u64)
-        ),
+        _ if let Some(c) = cache.last_coarse => {
+            let (ms, triangles) = (fmt_ms(cache.last_ms), phonglab_core::locale::grouped(c.triangles as u64));
+            let all = phonglab_core::locale::grouped(c.of as u64);
+            match c.spinning {
+                true => t!("caption-cpu-coarse-spin", ms = ms, triangles = triangles, all = all),
+                false => t!("caption-cpu-coarse", ms = ms, triangles = triangles, all = all),
+            }
+        }
         _ if cache.last_relit => t!("caption-cpu-relit", ms = fmt_ms(cache.last_ms)),
         _ => t!("caption-cpu", ms = fmt_ms(cache.last_ms)),
     }
