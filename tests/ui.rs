@@ -934,18 +934,7 @@ fn turning_the_camera_over_a_large_mesh_draws_a_coarse_copy_until_let_go() {
     let picture = h.get_all_by_role(Role::Image).next().expect("the shaded view").rect();
     let (from, to) = (picture.center(), picture.center() + egui::vec2(90.0, 30.0));
     let yaw = h.state().doc.view.camera.yaw;
-    h.input_mut().events.push(egui::Event::PointerMoved(from));
-    h.input_mut().events.push(egui::Event::PointerButton {
-        pos: from,
-        button: egui::PointerButton::Primary,
-        pressed: true,
-        modifiers: egui::Modifiers::NONE,
-    });
-    h.step();
-    for k in 1..=6 {
-        h.input_mut().events.push(egui::Event::PointerMoved(from + (to - from) * (k as f32 / 6.0)));
-        h.step();
-    }
+    common::press_and_move(&mut h, from, to);
     assert_ne!(h.state().doc.view.camera.yaw, yaw, "the drag turned the camera");
     let drawn = h.state().shaded.main.last_coarse.expect("drawn from the coarse copy while turning");
     let (coarse, all) = (drawn.triangles, drawn.of);
@@ -958,12 +947,7 @@ fn turning_the_camera_over_a_large_mesh_draws_a_coarse_copy_until_let_go() {
     let named = h.get_by_label_contains(&said);
     assert_eq!(named.accesskit_node().role(), Role::Image);
     assert!((named.rect().min - picture.min).length() < 1.0 && named.rect().width() > 300.0, "{:?}", named.rect());
-    h.input_mut().events.push(egui::Event::PointerButton {
-        pos: to,
-        button: egui::PointerButton::Primary,
-        pressed: false,
-        modifiers: egui::Modifiers::NONE,
-    });
+    common::button(&mut h, to, false);
     h.run_steps(3);
     let state = h.state();
     assert_eq!(state.shaded.main.last_coarse, None, "let go: the whole mesh again");

@@ -4,6 +4,8 @@
 //! where it drew each picture and the plot (`state.ui.geometry`); these tests hold it to
 //! the sizes a class needs, and the plot's labels to never overlapping.
 
+mod common;
+
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use phonglab::app::shell::screenshot::{Opened as Open, state_for};
@@ -36,12 +38,7 @@ fn pick(h: &mut Harness<'static, AppState>) {
     let at = r.center();
     h.input_mut().events.push(egui::Event::PointerMoved(at));
     for pressed in [true, false] {
-        h.input_mut().events.push(egui::Event::PointerButton {
-            pos: at,
-            button: egui::PointerButton::Primary,
-            pressed,
-            modifiers: egui::Modifiers::NONE,
-        });
+        common::button(h, at, pressed);
         h.step();
     }
     h.run_steps(3);
@@ -169,24 +166,8 @@ fn the_divider_moves_the_split_and_is_kept() {
     assert!(divider.min.x >= before.max.x - 1.0, "{divider:?} {before:?}");
     let from = divider.center();
     let to = from - egui::vec2(120.0, 0.0);
-    h.input_mut().events.push(egui::Event::PointerMoved(from));
-    h.input_mut().events.push(egui::Event::PointerButton {
-        pos: from,
-        button: egui::PointerButton::Primary,
-        pressed: true,
-        modifiers: egui::Modifiers::NONE,
-    });
-    h.step();
-    for k in 1..=6 {
-        h.input_mut().events.push(egui::Event::PointerMoved(from + (to - from) * (k as f32 / 6.0)));
-        h.step();
-    }
-    h.input_mut().events.push(egui::Event::PointerButton {
-        pos: to,
-        button: egui::PointerButton::Primary,
-        pressed: false,
-        modifiers: egui::Modifiers::NONE,
-    });
+    common::press_and_move(&mut h, from, to);
+    common::button(&mut h, to, false);
     h.run_steps(3);
     let kept = h.state().ui.layout.dividers;
     assert!(kept.beside.is_some(), "{kept:?}");

@@ -112,3 +112,25 @@ pub fn scene_files() -> Vec<std::path::PathBuf> {
     v.sort();
     v
 }
+
+/// The primary button pressed (`true`) or let go at `at`, as one event.
+pub fn button(h: &mut Harness<'static, AppState>, at: egui::Pos2, pressed: bool) {
+    h.input_mut().events.push(egui::Event::PointerButton {
+        pos: at,
+        button: egui::PointerButton::Primary,
+        pressed,
+        modifiers: egui::Modifiers::NONE,
+    });
+}
+
+/// A drag as a hand makes it: pressed at `from`, moved to `to` in six steps, a frame each,
+/// the button still down (let it go with [`button`]).
+pub fn press_and_move(h: &mut Harness<'static, AppState>, from: egui::Pos2, to: egui::Pos2) {
+    h.input_mut().events.push(egui::Event::PointerMoved(from));
+    button(h, from, true);
+    h.step();
+    for k in 1..=6 {
+        h.input_mut().events.push(egui::Event::PointerMoved(from + (to - from) * (k as f32 / 6.0)));
+        h.step();
+    }
+}
