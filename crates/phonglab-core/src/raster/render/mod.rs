@@ -190,7 +190,7 @@ impl Drawn {
             let seen = resolve::seen_triangles(kept, setup.tris.len());
             let n = mesh.positions.len();
             self.seen_vertices.clear();
-            self.seen_vertices.resize(n.div_ceil(512) * 512 / 64, 0);
+            self.seen_vertices.resize(n.div_ceil(64), 0);
             for (w, word) in seen.iter().enumerate().filter(|(_, w)| **w != 0) {
                 for b in (0..64).filter(|b| word >> b & 1 == 1) {
                     let Some(t) = setup.tris.get(w * 64 + b) else { continue };
@@ -321,7 +321,11 @@ impl Renderer {
             copies::attributes_chunk(isa, job, verts, ts, corners, out)
         };
         let (lit, [raster_share, resolve_share]) = if kept {
-            let seen = self.drawn.seen(&self.kept, &self.setup, job.mesh).0;
+            // Only Gouraud makes attributes again (its colour planes), for the triangles seen.
+            let seen = match job.mode {
+                ShadingMode::Gouraud => self.drawn.seen(&self.kept, &self.setup, job.mesh).0,
+                _ => &[],
+            };
             let prepared = resolve::prepare(job, &self.setup, &mut self.scratch, bands, Some(seen), attributes);
             let frame = Frame { isa, job, setup: &self.setup, verts, lighter, prepared: &prepared };
             (shade_kept(&frame, &mut self.image, &mut self.scratch, &self.kept), [0.0, 1.0])
