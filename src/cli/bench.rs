@@ -134,9 +134,9 @@ fn render(a: &RenderBench) -> Result<()> {
         anyhow::bail!(phonglab_core::t!("err-bench-slices", value = a.slices.to_string()));
     }
     let chosen = a.mesh.is_some() || a.scan.is_some();
+    let object_chosen = |object: &str| chosen || a.object.as_deref().is_none_or(|o| o == object);
     let only = |object: &str, shading: Shading| {
-        (chosen || a.object.as_deref().is_none_or(|o| o == object))
-            && a.shading.as_deref().is_none_or(|s| shading.label().eq_ignore_ascii_case(s))
+        object_chosen(object) && a.shading.as_deref().is_none_or(|s| shading.label().eq_ignore_ascii_case(s))
     };
     if let Some(out) = &a.write_mesh {
         let inputs: Vec<&std::path::Path> = a.mesh.iter().map(|p| p.as_path()).collect();
@@ -159,7 +159,7 @@ fn render(a: &RenderBench) -> Result<()> {
     let meshes = match a.coarse {
         Some(target) => meshes
             .into_iter()
-            .filter(|(name, _)| chosen || a.object.as_deref().is_none_or(|o| o == *name))
+            .filter(|(name, _)| object_chosen(name))
             .map(|(name, mesh)| {
                 let t = Instant::now();
                 let copy = phonglab_core::mesh::coarse::clustered(&mesh, target);

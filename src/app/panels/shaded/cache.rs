@@ -124,13 +124,14 @@ impl ViewCache {
         may_be_coarse: bool,
     ) -> Result<(), String> {
         let setup = doc.shaded_setup(pow);
-        let whole = mesh_for(&mut self.mesh, &doc.view).clone();
-        let moving = self.turning || doc.view.auto_rotate;
-        let coarse = may_be_coarse && moving && whole.triangle_count() > COARSE_ABOVE;
+        // The mesh is looked at only when the picture may be the copy (its size decides).
+        let moving = may_be_coarse && (self.turning || doc.view.auto_rotate);
+        let coarse = moving && mesh_for(&mut self.mesh, &doc.view).triangle_count() > COARSE_ABOVE;
         let key = PictureKey { scene: setup.scene.clone(), view: doc.view.clone(), px, pow, coarse };
         if self.key.as_ref() == Some(&key) && self.texture.is_some() {
             return Ok(());
         }
+        let whole = mesh_for(&mut self.mesh, &doc.view).clone();
         let mesh = if coarse { self.coarse_copy(&whole) } else { whole.clone() };
         let t = crate::platform::clock::Instant::now();
         let (img, stats) = self.renderer.render(&setup.job(&mesh), px, px).map_err(|e| e.to_string())?;

@@ -24,6 +24,7 @@
 //! 2 and 3 and shades the kept visibility again ([`Stats::visibility_kept`]).
 
 pub mod copies;
+mod mask;
 pub mod resolve;
 pub mod setup;
 pub mod vertices;
@@ -191,14 +192,9 @@ impl Drawn {
             let n = mesh.positions.len();
             self.seen_vertices.clear();
             self.seen_vertices.resize(n.div_ceil(64), 0);
-            for (w, word) in seen.iter().enumerate().filter(|(_, w)| **w != 0) {
-                for b in (0..64).filter(|b| word >> b & 1 == 1) {
-                    let Some(t) = setup.tris.get(w * 64 + b) else { continue };
-                    for v in mesh.triangles.get(t.orig as usize).into_iter().flatten() {
-                        if let Some(x) = self.seen_vertices.get_mut(*v as usize / 64) {
-                            *x |= 1 << (v % 64);
-                        }
-                    }
+            for (_, t) in setup.tris.iter().enumerate().filter(|(r, _)| mask::is_set(&seen, *r)) {
+                for v in mesh.triangles.get(t.orig as usize).into_iter().flatten() {
+                    mask::set(&mut self.seen_vertices, *v as usize);
                 }
             }
             self.seen = Some(seen);

@@ -366,48 +366,57 @@ impl Setup {
                 self.tris[at].corners.0 += before;
             }
         }
+        self.face_normals(job, verts);
         self.light_faces(job, verts, lighter);
     }
 
-    /// The Flat shadings' per-face work: the faces' plane normals (the derivative Flat) or
-    /// colours (Flat per face). Part of [`Setup::run`]; alone when only the lighting
-    /// changed and the rasterised triangles are kept.
-    pub fn light_faces(&mut self, job: &Job<'_>, verts: &Vertices, lighter: &Lighter) {
-        let tris = &job.mesh.triangles;
-        // Both Flat shadings' per-face work on both threads, a chunk of faces at a time (a
-        // serial pass was most of Flat's setup at 3 million triangles).
-        let corners_of = |t: &[u32; 3]| t.map(|i| verts.eye[i as usize]);
-        if job.mode == ShadingMode::FlatDerivatives {
-            // Lit per fragment (resolve); here only each face's plane normal.
-            self.face_normal.resize(tris.len(), Vec3::ZERO);
-            self.face_normal.par_chunks_mut(GRAIN).zip(tris.par_chunks(GRAIN)).for_each(|(out, ts)| {
-                for (n, t) in out.iter_mut().zip(ts) {
-                    let [a, b, c] = corners_of(t);
-                    *n = face_normal(a, b, c);
-                }
-            });
-        } else if job.mode == ShadingMode::FlatFace {
-            // One evaluation per face: at its centroid, with its geometric normal.
-            let two = job.scene.light_model.two_sided;
-            for side in 0..2 {
-                self.face_color[side].resize(tris.len(), [0.0; 4]);
-            }
-            let [front, back] = &mut self.face_color;
-            front.par_chunks_mut(GRAIN).zip(back.par_chunks_mut(GRAIN)).zip(tris.par_chunks(GRAIN)).for_each(
-                |((f, b), ts)| {
-                    let (mut pos, mut nrm) = ([Vec3::ZERO; GRAIN], [Vec3::ZERO; GRAIN]);
-                    for ((p, n), t) in pos.iter_mut().zip(&mut nrm).zip(ts) {
-                        let [a, b, c] = corners_of(t);
-                        (*p, *n) = ((a + b + c) / 3.0, face_normal(a, b, c));
-                    }
-                    let k = ts.len();
-                    lighter.light_batch_eye_sum(&pos[..k], &nrm[..k], f, if two { Some(b) } else { None });
-                    if !two {
-                        b.copy_from_slice(f);
-                    }
-                },
-            );
+    /// The derivative Flat's per-face work: each face's plane normal (geometry alone: kept
+    /// with the rasterised triangles). Part of [`Setup::run`].
+    fn face_normals(&mut self, job: &Job<'_>, verts: &Vertices) {
+        if job.mode != ShadingMode::FlatDerivatives {
+            return;
         }
+        let tris = &job.mesh.triangles;
+        // Lit per fragment (resolve); here only each face's plane normal, on both threads.
+        self.face_normal.resize(tris.len(), Vec3::ZERO);
+        self.face_normal.par_chunks_mut(GRAIN).zip(tris.par_chunks(GRAIN)).for_each(|(out, ts)| {
+            for (n, t) in out.iter_mut().zip(ts) {
+                let [a, b, c] = t.map(|i| verts.eye[i as usize]);
+                *n = face_normal(a, b, c);
+            }
+        });
+    }
+
+    /// Flat per face's per-face work: each face's colour. Part of [`Setup::run`]; alone
+    /// when only the lighting changed and the rasterised triangles are kept.
+    pub fn light_faces(&mut self, job: &Job<'_>, verts: &Vertices, lighter: &Lighter) {
+        if job.mode != ShadingMode::FlatFace {
+            return;
+        }
+        let tris = &job.mesh.triangles;
+        let corners_of = |t: &[u32; 3]| t.map(|i| verts.eye[i as usize]);
+        // One evaluation per face: at its centroid, with its geometric normal. On both
+        // threads, a chunk of faces at a time (a serial pass was most of Flat's setup at 3
+        // million triangles).
+        let two = job.scene.light_model.two_sided;
+        for side in 0..2 {
+            self.face_color[side].resize(tris.len(), [0.0; 4]);
+        }
+        let [front, back] = &mut self.face_color;
+        front.par_chunks_mut(GRAIN).zip(back.par_chunks_mut(GRAIN)).zip(tris.par_chunks(GRAIN)).for_each(
+            |((f, b), ts)| {
+                let (mut pos, mut nrm) = ([Vec3::ZERO; GRAIN], [Vec3::ZERO; GRAIN]);
+                for ((p, n), t) in pos.iter_mut().zip(&mut nrm).zip(ts) {
+                    let [a, b, c] = corners_of(t);
+                    (*p, *n) = ((a + b + c) / 3.0, face_normal(a, b, c));
+                }
+                let k = ts.len();
+                lighter.light_batch_eye_sum(&pos[..k], &nrm[..k], f, if two { Some(b) } else { None });
+                if !two {
+                    b.copy_from_slice(f);
+                }
+            },
+        );
     }
 }
 

@@ -146,7 +146,7 @@ fn light_chunk(
         Some(m) => {
             let mut k = 0;
             for i in 0..pos.len() {
-                if m.get(i / 64).is_some_and(|w| w >> (i % 64) & 1 == 1) {
+                if super::mask::is_set(m, i) {
                     (at[k], gp[k], gn[k]) = (i as u16, pos[i], nrm[i]);
                     k += 1;
                 }

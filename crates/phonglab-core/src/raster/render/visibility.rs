@@ -65,8 +65,8 @@ fn bias(ax: i64, ay: i64, bx: i64, by: i64) -> i64 {
     if (dy == 0 && dx > 0) || dy < 0 { 0 } else { -1 }
 }
 
-/// Sizes `image` to width x height and sorts
-/// the triangles of `setup` into the bands of rows they touch.
+/// Sizes `image` to width x height and sorts the triangles of `setup` into the bands of
+/// rows they touch.
 pub fn bin(setup: &Setup, width: usize, height: usize, image: &mut Image, bins: &mut Vec<Vec<u32>>) {
     image.width = width;
     image.height = height;

@@ -71,9 +71,7 @@ const GRAIN: usize = 256;
 pub(in crate::raster::render) fn seen_triangles(visibility: &[u32], triangles: usize) -> Vec<u64> {
     let mut seen = vec![0u64; triangles.div_ceil(GRAIN) * GRAIN / 64];
     for &t in visibility {
-        if let Some(w) = seen.get_mut(t as usize / 64) {
-            *w |= 1 << (t % 64);
-        }
+        crate::raster::render::mask::set(&mut seen, t as usize);
     }
     seen
 }
@@ -155,7 +153,7 @@ pub(in crate::raster::render) fn attributes_chunk_any(
     out: Attributes<'_>,
 ) {
     let Attributes { edges, colors, pos, nrm, seen } = out;
-    let wanted = |i: usize| seen.is_none_or(|s| s.get(i / 64).is_some_and(|w| w >> (i % 64) & 1 == 1));
+    let wanted = |i: usize| seen.is_none_or(|s| crate::raster::render::mask::is_set(s, i));
     for (i, t) in ts.iter().enumerate().filter(|(i, t)| !t.back && wanted(*i)) {
         let a = attributes_of(job, verts, corners, t);
         match job.mode {
