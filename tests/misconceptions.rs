@@ -53,6 +53,15 @@ fn level_five_prints_the_pictures() {
     let text = std::process::Command::new("pdftotext").arg(out.join("sheets.pdf")).arg("-").output().unwrap();
     let text = String::from_utf8_lossy(&text.stdout);
     assert!(text.contains("What is wrong with this picture? (7)") && text.contains("Drawn with one mistake"));
+    // One page a sheet, none of them blank, each with a box to tick by each of the seven
+    // causes.
+    let pages = text.split('\u{c}').filter(|p| !p.trim().is_empty()).collect::<Vec<_>>();
+    assert_eq!(pages.len(), 7, "{text}");
+    for (k, page) in pages.iter().enumerate() {
+        assert!(page.contains(&format!("What is wrong with this picture? ({})", k + 1)), "page {}: {page}", k + 1);
+        assert!(!page.contains("blank"), "page {}: {page}", k + 1);
+        assert_eq!(tick_boxes(&out.join("sheets.pdf"), k + 1), 7, "page {}", k + 1);
+    }
     // The same seed, the same files.
     let again = std::env::temp_dir().join(format!("phonglab-wrong-again-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&again);
@@ -60,4 +69,126 @@ fn level_five_prints_the_pictures() {
     assert_eq!(std::fs::read(out.join("keys.pdf")).unwrap(), std::fs::read(again.join("keys.pdf")).unwrap());
     let _ = std::fs::remove_dir_all(&out);
     let _ = std::fs::remove_dir_all(&again);
+}
+
+/// Each mistake's scene makes the mistake visible: at the sizes the sheets (192) and the
+/// quiz (160) draw, at least 5 % of the object's pixels differ by more than 24/255 between
+/// the picture drawn right and the one with the mistake (Compare's measure of "visibly").
+#[test]
+fn every_mistake_is_visible_in_its_pictures() {
+    use phonglab_core::difference::{VISIBLE, difference};
+    let bg = misconception::BACKGROUND.map(|c| (c * 255.0).round() as u8);
+    for px in [160, 192] {
+        for kind in Misconception::ALL {
+            let drawn = misconception::case(kind).draw(px).unwrap();
+            let d = difference(&drawn.correct, &drawn.bugged, bg);
+            eprintln!(
+                "{kind:?} at {px}: {:.1} % of {} pixels differ by more than {VISIBLE}/255",
+                d.visible_percent(),
+                d.object
+            );
+            assert!(d.visible_percent() >= 5.0, "{kind:?} at {px}: {:.2} %", d.visible_percent());
+        }
+    }
+}
+
+/// The largest change of a colour term's luminance at the key's pixel, worked out here from
+/// the two probes' own terms: (its label, its worksheet name, right, wrong).
+fn largest_change(d: &misconception::Drawn) -> (String, &'static str, f64, f64) {
+    use phonglab_core::vocabulary::Quantity as Q;
+    let lum = |c: [f64; 3]| 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+    let terms = |t: &phonglab_core::probe::Terms| {
+        let mut v = vec![(Q::EmissionTerm, t.emission), (Q::SceneAmbientTerm, t.scene_ambient)];
+        for l in &t.lights {
+            v.extend([(Q::Ambient, l.ambient), (Q::Diffuse, l.diffuse), (Q::Specular, l.specular)]);
+        }
+        v
+    };
+    let (a, b) = (terms(&d.correct_probe.terms), terms(&d.bugged_probe.terms));
+    let mut best = (Q::EmissionTerm, 0.0_f64, 0.0_f64);
+    for ((q, x), (_, y)) in a.iter().zip(&b) {
+        if (lum(*y) - lum(*x)).abs() > (best.2 - best.1).abs() {
+            best = (*q, lum(*x), lum(*y));
+        }
+    }
+    (best.0.label(), best.0.name(), best.1, best.2)
+}
+
+/// The key names the term that makes the difference: for every mistake, at the quiz's and
+/// the sheets' sizes and in every set a seed orders, the term the key names is the one
+/// whose luminance changes most between the two probes at the pixel it quotes, with its
+/// two values. (Key 2 blamed the diffuse term doubling while its specular term went from
+/// 0.0018 to 1.866.)
+#[test]
+fn every_key_names_the_term_whose_change_is_largest() {
+    use phonglab_core::locale::num;
+    let line = |d: &misconception::Drawn| {
+        let (label, name, right, wrong) = largest_change(d);
+        format!(
+            "changes most at this pixel: {label} ({name}), its luminance from {} drawn right to {}",
+            num(right, 4),
+            num(wrong, 4)
+        )
+    };
+    for px in [96, 160, 192] {
+        for kind in Misconception::ALL {
+            let case = misconception::case(kind);
+            let drawn = case.draw(px).unwrap();
+            let key = misconception::key_lines(&case, &drawn).join("\n");
+            assert!(key.contains(&line(&drawn)), "{kind:?} at {px}: {key}");
+        }
+    }
+    // The normal 2 long: the specular term, not the diffuse one.
+    let case = misconception::case(Misconception::NormalNotNormalised);
+    let drawn = case.draw(192).unwrap();
+    assert_eq!(largest_change(&drawn).1, "Ispec");
+    // The sheets' keys, in the order each seed gives.
+    for seed in 0..4 {
+        let set = phonglab::io::misconception_set::misconception_set(seed, 7).unwrap();
+        for k in 1..=7 {
+            let key = String::from_utf8(set.get(&format!("wrong-{k:02}-key.md")).unwrap().to_vec()).unwrap();
+            let kind = Misconception::ALL.into_iter().find(|m| key.contains(&m.cause().replace('_', "\\_"))).unwrap();
+            let drawn = misconception::case(kind).draw(192).unwrap();
+            assert!(key.contains(&line(&drawn)), "seed {seed}, sheet {k}: {key}");
+        }
+    }
+}
+
+/// The boxes to tick on page `page` of `pdf`, counted on the page drawn at 72 dpi (one
+/// pixel a point): dark runs 6 to 12 pixels tall down the left margin's column (x = 56),
+/// below the pictures (a ruled line there is 1 pixel tall).
+fn tick_boxes(pdf: &std::path::Path, page: usize) -> usize {
+    let p = page.to_string();
+    let o = std::process::Command::new("pdftoppm")
+        .args(["-r", "72", "-gray", "-f", &p, "-l", &p])
+        .arg(pdf)
+        .output()
+        .expect("pdftoppm runs");
+    // A binary PGM: "P5\n<w> <h>\n255\n" and the bytes.
+    let bytes = o.stdout;
+    let mut fields = Vec::new();
+    let mut at = 0;
+    while fields.len() < 4 {
+        while bytes[at].is_ascii_whitespace() {
+            at += 1;
+        }
+        let start = at;
+        while !bytes[at].is_ascii_whitespace() {
+            at += 1;
+        }
+        fields.push(String::from_utf8_lossy(&bytes[start..at]).to_string());
+    }
+    let (w, h): (usize, usize) = (fields[1].parse().unwrap(), fields[2].parse().unwrap());
+    let pixels = &bytes[at + 1..];
+    let dark = |y: usize| pixels[y * w + 56] < 128;
+    let (mut boxes, mut run) = (0, 0);
+    for y in 300..h {
+        if dark(y) {
+            run += 1;
+        } else {
+            boxes += usize::from((6..=12).contains(&run));
+            run = 0;
+        }
+    }
+    boxes
 }

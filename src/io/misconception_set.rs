@@ -71,7 +71,9 @@ pub fn misconception_set(seed: u64, count: usize) -> Result<FileSet> {
         set.add(format!("{stem}.md"), sheet);
         sheets.extend([Block::Section(title.clone()), Block::Title(title.clone()), Block::Pictures(pictures.clone())]);
         sheets.push(Block::Text(t!("wrong-question")));
-        sheets.extend(choices().into_iter().map(Block::Text));
+        sheets.extend(choices().into_iter().map(Block::Tick));
+        // Room to say what in the picture shows it.
+        sheets.push(Block::Ruled(4));
         sheets.push(Block::WriteOn(vec![t!("sheet-class"), t!("sheet-name"), t!("sheet-date")]));
         // The key.
         let lines = misconception::key_lines(&case, &drawn);
@@ -87,7 +89,8 @@ pub fn misconception_set(seed: u64, count: usize) -> Result<FileSet> {
     }
     let _ = writeln!(index, "\n{}", t!("index-printable"));
     set.add("index.md", index);
-    set.add("sheets.pdf", pdf(&sheets, Pages::Duplex)?);
+    // Each sheet is one page: padded for duplex printing, every other page was blank.
+    set.add("sheets.pdf", pdf(&sheets, Pages::Plain)?);
     set.add("keys.pdf", pdf(&keys, Pages::Plain)?);
     Ok(set)
 }

@@ -26,6 +26,10 @@ pub enum Block {
     Heading(String),
     /// A paragraph (wrapped).
     Text(String),
+    /// A choice to tick: an empty box, and the choice's words beside it (wrapped).
+    Tick(String),
+    /// Ruled lines to write an answer on, this many.
+    Ruled(usize),
     /// Lines to write on: ("Class", "Name", "Date").
     WriteOn(Vec<String>),
     /// `name = [a b c d]`, the numbers in columns inside brackets, and a note after them.
@@ -148,6 +152,10 @@ const TITLE: f32 = 18.0;
 const HEADING: f32 = 13.0;
 const BODY: f32 = 10.5;
 const NUMBERS: f32 = 9.5;
+/// How far a choice's words stand right of its box.
+const TICK_INDENT: f32 = 18.0;
+/// The distance between ruled lines: room for handwriting.
+const RULED: f32 = 24.0;
 
 /// A page being drawn: its surface's draw calls are collected, then replayed on a page.
 enum Mark {
@@ -246,6 +254,8 @@ fn block_height(fonts: &Fonts, block: &Block, width: f32) -> f32 {
         Block::Title(t) => fonts.wrap(t, TITLE, width, false).len() as f32 * TITLE * 1.3 + 10.0,
         Block::Heading(_) => HEADING * 1.3 + 8.0,
         Block::Text(t) => fonts.wrap(t, BODY, width, false).len() as f32 * BODY * 1.35 + 6.0,
+        Block::Tick(t) => fonts.wrap(t, BODY, width - TICK_INDENT, false).len() as f32 * BODY * 1.35 + 6.0,
+        Block::Ruled(n) => *n as f32 * RULED + 8.0,
         Block::WriteOn(_) => BODY * 2.6 + 8.0,
         Block::Vector { .. } => NUMBERS * 1.6 + 5.0,
         Block::Matrix { rows, .. } => rows.len() as f32 * NUMBERS * 1.5 + 14.0,
@@ -280,6 +290,13 @@ fn draw_block(fonts: &Fonts, block: &Block, y: f32, width: f32, page: &mut Vec<M
             pen.page.push(Mark::Line { from: (MARGIN, rule), to: (MARGIN + width, rule), width: 0.4 });
         }
         Block::Text(t) => pen.paragraph(t, y, BODY, 1.35),
+        Block::Tick(t) => pen.tick(t, y),
+        Block::Ruled(n) => {
+            for k in 1..=*n {
+                let at = y + k as f32 * RULED;
+                pen.page.push(Mark::Line { from: (MARGIN, at), to: (MARGIN + width, at), width: 0.4 });
+            }
+        }
         Block::WriteOn(labels) => pen.write_on(labels, y),
         Block::Vector { name, values, note } => pen.vector(name, values, note, y),
         Block::Matrix { name, rows } => pen.matrix(name, rows, y),
@@ -319,6 +336,16 @@ impl Pen<'_> {
         for (i, line) in self.fonts.wrap(t, size, self.width, false).iter().enumerate() {
             self.text((self.x, y + size + i as f32 * size * leading), line, size, false);
         }
+    }
+
+    /// A box to tick, on the first line's baseline, and the words wrapped beside it.
+    fn tick(&mut self, t: &str, y: f32) {
+        let side = BODY * 0.9;
+        self.page.push(Mark::Rect { x: self.x, y: y + BODY - side + 1.0, w: side, h: side });
+        let (x, width) = (self.x, self.width);
+        (self.x, self.width) = (x + TICK_INDENT, width - TICK_INDENT);
+        self.paragraph(t, y, BODY, 1.35);
+        (self.x, self.width) = (x, width);
     }
 
     /// Each label with a line to write on; the name's line the longest.

@@ -10,7 +10,7 @@
 //! | Gouraud missing a highlight | Gouraud instead of Phong | a coarse sphere (8 x 8), shininess 60 |
 //! | specular light on faces turned away | no `f_i` gate (the Phong demo's rule, Blinn-Phong kept; no scene ambient or emission, so nothing else differs) | a light from behind, shininess 4 |
 //! | attenuation in the wrong space | the distance measured in object space: `k1 / s`, `k2 / s^2` for a uniform scale `s` (exact) | a sphere of radius 4 scaled by 0.25 |
-//! | the light placed before the view transform | placement eye instead of world (Robins' lightposition tutor swaps the two calls) | a camera to one side |
+//! | the light placed before the view transform | placement eye instead of world (Robins' lightposition tutor swaps the two calls) | the camera on the far side from the light: drawn right, half the sphere is dark |
 //!
 //! Each mistake's [`check`] is the claim its key makes, tested on its pictures.
 
@@ -256,8 +256,12 @@ pub fn case(kind: Misconception) -> Case {
         }
         Misconception::LightBeforeView => {
             let mut scene = base_scene(DMat4::IDENTITY);
+            // The camera on the other side from the light: drawn right, the light comes
+            // from the right and leaves half the sphere dark; taken in eye coordinates it
+            // sits above and behind the camera and lights the whole face (from the light's
+            // side, at (3.5, 1, 2.5), the two pictures were nearly the same).
             scene.eye_from_world =
-                crate::model::transform::try_look_at(DVec3::new(3.5, 1.0, 2.5), DVec3::ZERO, DVec3::Y)
+                crate::model::transform::try_look_at(DVec3::new(-3.5, 1.0, 2.5), DVec3::ZERO, DVec3::Y)
                     .expect("a valid camera");
             let mut wrong = scene.clone();
             wrong.lights[0].placement = LightPlacement::Eye;
@@ -319,16 +323,68 @@ impl Case {
     }
 }
 
-/// One light's terms at the probed pixel, short: `N.L`, `N.H`, attenuation, diffuse and
-/// specular (luminance-free: their rgb).
-fn light_line(p: &crate::raster::probe::Probe) -> String {
+/// A colour term at a pixel: which quantity (emission, scene ambient, or one light's
+/// ambient, diffuse or specular share, after `spot` and `1/at`), and whose light.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TermAt {
+    /// The quantity: `EmissionTerm`, `SceneAmbientTerm`, `Ambient`, `Diffuse`, `Specular`.
+    pub quantity: crate::model::vocabulary::Quantity,
+    /// The light (its place among the enabled ones) for a light's term.
+    pub light: Option<usize>,
+}
+
+/// The colour terms of a probe with their rgb (they add up to the colour before any clamp).
+pub fn colour_terms(t: &crate::raster::probe::Terms) -> Vec<(TermAt, [f64; 3])> {
+    use crate::model::vocabulary::Quantity as Q;
+    let mut out = vec![
+        (TermAt { quantity: Q::EmissionTerm, light: None }, t.emission),
+        (TermAt { quantity: Q::SceneAmbientTerm, light: None }, t.scene_ambient),
+    ];
+    for (i, l) in t.lights.iter().enumerate() {
+        for (q, v) in [(Q::Ambient, l.ambient), (Q::Diffuse, l.diffuse), (Q::Specular, l.specular)] {
+            out.push((TermAt { quantity: q, light: Some(i) }, v));
+        }
+    }
+    out
+}
+
+/// The term whose change makes the difference at the pixel a key quotes: the one whose
+/// luminance (Rec. 709, before any clamp) changes most between the two pictures' probes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Deciding {
+    /// Which term.
+    pub term: TermAt,
+    /// Its luminance drawn right.
+    pub right: f64,
+    /// And with the mistake.
+    pub wrong: f64,
+}
+
+/// The term that changes most at the probed pixel (`None` with no term at all).
+pub fn deciding_term(d: &Drawn) -> Option<Deciding> {
+    let luminance = crate::raster::channels::luminance;
+    let (a, b) = (colour_terms(&d.correct_probe.terms), colour_terms(&d.bugged_probe.terms));
+    a.iter()
+        .zip(&b)
+        .map(|((term, x), (_, y))| Deciding { term: *term, right: luminance(*x), wrong: luminance(*y) })
+        .max_by(|p, q| (p.wrong - p.right).abs().total_cmp(&(q.wrong - q.right).abs()))
+}
+
+/// One light's terms at the probed pixel, short: `N.L`, the specular cosine (`n . H`, or
+/// `R . V` under Phong's rule), `1/at`, diffuse and specular (their rgb).
+fn light_line(p: &crate::raster::probe::Probe, scene: &Scene) -> String {
     use crate::locale::num;
     use crate::raster::probe_report::numbers;
     let Some(l) = p.terms.lights.first() else { return String::new() };
+    let cosine = match scene.rules.specular {
+        SpecularModel::Phong => "R · V",
+        _ => "n · H",
+    };
     crate::t!(
         "wrong-probe-line",
         rgba = format!("({}, {}, {})", p.rgba8[0], p.rgba8[1], p.rgba8[2]),
         ndotl = num(l.n_dot_l, 4),
+        cosine = cosine,
         ndoth = num(l.n_dot_h, 4),
         att = num(l.attenuation, 4),
         diffuse = numbers(&l.diffuse),
@@ -336,8 +392,9 @@ fn light_line(p: &crate::raster::probe::Probe) -> String {
     )
 }
 
-/// The key of a drawn case: the cause, the two formulas, why, and the probe's numbers at
-/// the pixel that differs most, in the reader's language.
+/// The key of a drawn case: the cause, the two formulas, why, the probe's numbers at the
+/// pixel that differs most, and the term whose change makes the difference there, in the
+/// reader's language.
 pub fn key_lines(case: &Case, d: &Drawn) -> Vec<String> {
     let (right, wrong) = case.kind.formulas();
     let mut out = vec![
@@ -345,9 +402,18 @@ pub fn key_lines(case: &Case, d: &Drawn) -> Vec<String> {
         crate::t!("wrong-key-formulas", right = right, wrong = wrong),
         case.kind.why(),
         crate::t!("wrong-key-pixel", x = d.pixel.0 as i64, y = d.pixel.1 as i64, count = d.pixels_differing as i64),
-        crate::t!("wrong-key-right", line = light_line(&d.correct_probe)),
-        crate::t!("wrong-key-wrong", line = light_line(&d.bugged_probe)),
+        crate::t!("wrong-key-right", line = light_line(&d.correct_probe, &case.correct.scene)),
+        crate::t!("wrong-key-wrong", line = light_line(&d.bugged_probe, &case.bugged.scene)),
     ];
+    if let Some(c) = deciding_term(d) {
+        out.push(crate::t!(
+            "wrong-key-term",
+            term = c.term.quantity.label(),
+            name = c.term.quantity.name(),
+            right = crate::locale::num(c.right, 4),
+            wrong = crate::locale::num(c.wrong, 4)
+        ));
+    }
     if let (crate::raster::probe::ProbeShading::Phong(a), crate::raster::probe::ProbeShading::Phong(b)) =
         (&d.correct_probe.shading, &d.bugged_probe.shading)
     {
@@ -380,9 +446,11 @@ pub fn check(case: &Case, d: &Drawn) -> Result<(), String> {
             claim(angle > 5.0, &format!("the normals part by {angle} degrees only"))
         }
         Misconception::NormalNotNormalised => {
-            // Normals of length 2 (1 / 0.5): the diffuse term doubles where no clamp bites.
+            // Normals of length 2 (1 / 0.5): the diffuse term doubles where no clamp bites,
+            // and n . H passes 1, where the power blows the specular term up.
             let ratio = luminance(lb.diffuse) / luminance(la.diffuse);
-            claim((ratio - 2.0).abs() < 0.02, &format!("diffuse ratio {ratio}, not 2"))
+            claim((ratio - 2.0).abs() < 0.02, &format!("diffuse ratio {ratio}, not 2"))?;
+            claim(la.n_dot_h <= 1.0 && lb.n_dot_h > 1.0, &format!("n . H {} is not past 1", lb.n_dot_h))
         }
         Misconception::ReflectionForHalfway => {
             // R . V falls off faster than n . H: a smaller highlight at the same exponent.
@@ -411,7 +479,12 @@ pub fn check(case: &Case, d: &Drawn) -> Result<(), String> {
         Misconception::LightBeforeView => {
             let pa = case.correct.scene.light_pos_in_eye(&case.correct.scene.lights[0]);
             let pb = case.bugged.scene.light_pos_in_eye(&case.bugged.scene.lights[0]);
-            claim(pa.distance(pb) > 1.0 && (la.n_dot_l - lb.n_dot_l).abs() > 0.05, "the light did not move")
+            // Seen from the sphere's centre, the light comes from another side (58 degrees
+            // apart; 30 from the camera at (3.5, 1, 2.5), where the pictures looked alike).
+            let centre = case.correct.scene.eye_from_object().w_axis.truncate();
+            let turn = (pa.truncate() - centre).angle_between(pb.truncate() - centre).to_degrees();
+            claim(turn >= 45.0, &format!("the light moves by {turn:.1} degrees only"))?;
+            claim((la.n_dot_l - lb.n_dot_l).abs() > 0.05, "n . L did not change at the pixel")
         }
     }
 }
