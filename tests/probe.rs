@@ -382,3 +382,33 @@ fn render_writes_a_channel_and_its_raw_values() {
     let out = phonglab(&["render", "-o", png_s, "--raw", pfm_s]);
     assert_eq!(out.status.code(), Some(2), "--raw needs --channel");
 }
+
+/// `at` is one quantity in the probe: the worksheet's k0 + k1 d + k2 d², which divides,
+/// and the factor OpenGL multiplies by is shown as 1/at (it was labelled "Attenuation"
+/// with 0.9182 beside a calculation whose at was 1.089, and the terms "at spot Iamb").
+#[test]
+fn the_probe_shows_at_and_its_inverse_under_their_own_names() {
+    use phonglab_core::locale::num;
+    use phonglab_core::probe_report::report;
+    let doc = Document::from_toml(
+        &std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml")).unwrap(),
+    )
+    .unwrap();
+    let setup = doc.shaded_setup(PowFn::Exact);
+    let mesh = doc.view.mesh();
+    let job = setup.job(&mesh);
+    let mut r = Renderer::new();
+    r.keep_visibility(true);
+    r.render(&job, SIZE, SIZE).unwrap();
+    let p = probe::probe(&r, &job, SIZE / 2, SIZE / 2).unwrap().expect("the object at the centre");
+    let factor = p.terms.lights[0].attenuation;
+    assert!(factor < 0.99, "the scene attenuates: {factor}");
+    let lines = report(&p);
+    let named = |n: &str| lines.iter().find(|l| l.name == n).unwrap_or_else(|| panic!("no {n}: {lines:?}"));
+    assert_eq!(named("at").value, num(1.0 / factor, 4));
+    assert_eq!(named("1/at").value, num(factor, 4));
+    for term in ["Iamb", "Idif", "Ispec"] {
+        named(&format!("spot · {term} / at"));
+    }
+    assert!(lines.iter().all(|l| !l.name.contains("1 / (k") && !l.name.starts_with("at ")), "{lines:?}");
+}

@@ -129,3 +129,36 @@ fn compare_shows_a_channel_for_both_over_one_range() {
     let (ra, rb) = (h.state().compare.a_channel.range, h.state().compare.b_channel.range);
     assert_eq!(ra, rb);
 }
+
+/// Every channel's legend says what it shows, in the legend itself and in body type: the
+/// luminance of a colour term, a factor (1/at, spot), a cosine, the normal's axes, a count;
+/// whole under the picture at the projector sizes. (It said so only on hover, and its
+/// numbers were in small type; the attenuation channel said "Attenuation" for 1/at.)
+#[test]
+fn every_channel_legend_says_what_it_shows_in_body_type() {
+    use phonglab::app::panels::shaded::channel_view::meaning;
+    for (w, ht) in [(1024.0, 600.0), (1280.0, 720.0)] {
+        let mut h = harness_at(w, ht);
+        let body = h.ctx.global_style().text_styles[&egui::TextStyle::Body].size;
+        for c in Channel::ALL {
+            h.state_mut().view_options.channel = Some(c);
+            h.run_steps(4);
+            let rect = picture(&h);
+            let what = meaning(c);
+            let label = h.get_by_label(&what).rect();
+            assert!(label.top() >= rect.bottom() && label.bottom() <= ht, "{c:?} at {w}: {label:?} under {rect:?}");
+            assert!(label.left() >= rect.left() - 1.0 && label.right() <= rect.right() + 1.0, "{c:?}: {label:?}");
+            // At least one line of body type (a small label is about 10 points tall).
+            assert!(label.height() >= body, "{c:?}: {label:?} for a {body}-point font");
+            let kind = match c {
+                Channel::Attenuation => "1/at: the factor",
+                Channel::Spot => "factor",
+                Channel::NDotL | Channel::NDotH => "cosine",
+                Channel::Normal => "as a colour",
+                Channel::LightCount => "a count",
+                _ => "the luminance (Rec. 709) of a colour term",
+            };
+            assert!(what.contains(kind), "{c:?}: {what}");
+        }
+    }
+}

@@ -50,7 +50,7 @@ director-light = light { $n }
 director-legend = at the vertex, one length each (their true directions in this space); blue square: the near plane (the viewport); green square: the surface at the vertex. Drag a light or the eye to move it; drag elsewhere to turn; scroll to zoom.
 director-naive-normal = Red: M n, the normal moved as a point would be, { $degrees }° off the true normal (M^-1)^T n, which stays perpendicular to the surface.
 director-rules-naive = This scene's rules (the worksheet's) light the vertex with M n; OpenGL's use (M^-1)^T n.
-director-ring = Light { $n }: its attenuation falls to { $percent } % at distance { $distance } (a ring).
+director-ring = Light { $n }: 1/at, the attenuation factor, falls to { $percent } % at distance { $distance } (a ring).
 wrong-cause-normals-by-m = Normals transformed by M instead of its inverse transpose
 wrong-why-normals-by-m = Under a scale that differs along the axes, M moves the surface one way and its normals another: M n is no longer perpendicular to the surface, and (M^-1)^T n is.
 wrong-cause-normal-not-normalised = The normal not normalised (GL_NORMALIZE off under a scaled modelview)
@@ -427,7 +427,7 @@ formula-share-separate = Ilight = spot · (Iamb + Idif) / at   (specular goes to
 formula-scene-ambient = a_cm a_cs   (light-model ambient)
 formula-i-opengl = I = e_cm + a_cm a_cs + sum of the lights' shares
 formula-i-worksheet = I = (Iamb + Idif + Ispec) / at, summed over the lights   (the worksheet's I)
-formula-secondary = sum of att spot Ispec   (separate specular)
+formula-secondary = sum of spot · Ispec / at   (separate specular)
 formula-clamped = rgba clamped to [0, 1]; alpha = diffuse alpha
 note-demo-space = the Phong demo lights in object space with its eye at (-4, 0, -8); here eye space is object space moved by (4, 0, 8), so that eye is the origin: every vector and term is the demo's
 note-vov-behind = the worksheet's text says vov is always [0 0 1 0]; its code gives [0 0 -1 0] here, as the vertex is behind the eye (z > 0)
@@ -941,7 +941,7 @@ channel-scene-ambient = Scene ambient
 channel-ambient = Ambient
 channel-diffuse = Diffuse
 channel-specular = Specular
-channel-attenuation = Attenuation
+channel-attenuation = 1/at (attenuation factor)
 channel-spot = Spot factor
 channel-n-dot-l = N·L
 channel-n-dot-h = N·H
@@ -986,8 +986,14 @@ channel-picture = The picture
 channel-hover = One term of the lighting equation at every pixel, in false colour (viridis), with its scale
 channel-caption = term { $channel }
 channel-legend-normal = The normal as a colour: x as red, y as green, z as blue, from -1 (dark) to 1 (bright)
-channel-legend-luminance = { $channel }: its luminance (Rec. 709), before any clamp
+channel-legend-luminance = { $channel }: the luminance (Rec. 709) of a colour term, before any clamp
 channel-legend-range = { $what }, from { $low } to { $high }
+channel-legend-attenuation = 1/at: the factor this light's terms are multiplied by (at = k0 + k1 d + k2 d², the worksheet's, divides)
+channel-legend-spot = spot: the factor this light's terms are multiplied by (0 outside the cone, 1 without a spotlight)
+channel-legend-n-dot-l = N·L = cos θ: a cosine, below 0 where the surface faces away from the light
+channel-legend-n-dot-h = N·H = cos β: the specular cosine before its power (R·V under the Phong rule)
+channel-legend-light-count = How many lights reach the pixel: a count
+probe-attenuation-factor = Attenuation factor, what the terms are multiplied by
 case-rules-note = note: { $path } uses the { $rules } rules; a case always means OpenGL's
 cost-wrote = wrote { $files } in { $out }
 
@@ -1223,7 +1229,7 @@ cli-value-scene-ambient = the scene's ambient, a_cm a_cs
 cli-value-ambient = each light's ambient, after attenuation and spot
 cli-value-diffuse = each light's diffuse, after attenuation and spot
 cli-value-specular = each light's specular, after attenuation and spot
-cli-value-attenuation = one light's attenuation
+cli-value-attenuation = one light's attenuation factor, 1/at (the worksheet's at = k0 + k1 d + k2 d² divides)
 cli-value-spot = one light's spot factor
 cli-value-n-dot-l = one light's n · L
 cli-value-n-dot-h = one light's n · H

@@ -50,7 +50,7 @@ director-light = luz { $n }
 director-legend = no vértice, todos do mesmo comprimento; quadrado azul: o plano próximo (a viewport); quadrado verde: a superfície no vértice. Arraste uma luz ou o olho para movê-lo; arraste em outro lugar para girar; role para aproximar.
 director-naive-normal = Em vermelho: M n, a normal transformada como um ponto, a { $degrees }° da normal verdadeira (M^-1)^T n, que continua perpendicular à superfície.
 director-rules-naive = As regras desta cena (as da ficha) iluminam o vértice com M n; as do OpenGL usam (M^-1)^T n.
-director-ring = Luz { $n }: sua atenuação cai para { $percent } % à distância { $distance } (um anel).
+director-ring = Luz { $n }: 1/at, o fator de atenuação, cai para { $percent } % à distância { $distance } (um anel).
 wrong-cause-normals-by-m = Normais transformadas por M em vez de sua inversa transposta
 wrong-why-normals-by-m = Com uma escala diferente em cada eixo, M move a superfície de um jeito e as normais de outro: M n deixa de ser perpendicular à superfície, e (M^-1)^T n continua sendo.
 wrong-cause-normal-not-normalised = A normal não normalizada (GL_NORMALIZE desligado com uma modelview que escala)
@@ -427,7 +427,7 @@ formula-share-separate = Ilight = spot · (Iamb + Idif) / at   (a especular vai 
 formula-scene-ambient = a_cm a_cs   (ambiente do modelo de iluminação)
 formula-i-opengl = I = e_cm + a_cm a_cs + soma das partes das luzes
 formula-i-worksheet = I = (Iamb + Idif + Ispec) / at, somado sobre as luzes   (o I da ficha)
-formula-secondary = soma de att spot Ispec   (especular separada)
+formula-secondary = soma de spot · Ispec / at   (especular separada)
 formula-clamped = rgba limitado a [0, 1]; alfa = alfa da difusa
 note-demo-space = a demo de Phong ilumina no espaço do objeto com o olho em (-4, 0, -8); aqui o espaço do olho é o espaço do objeto deslocado de (4, 0, 8), para que esse olho seja a origem: cada vetor e componente é o da demo
 note-vov-behind = o texto da ficha diz que vov é sempre [0 0 1 0]; o seu código dá aqui [0 0 -1 0], porque o vértice está atrás do olho (z > 0)
@@ -941,7 +941,7 @@ channel-scene-ambient = Ambiente da cena
 channel-ambient = Ambiente
 channel-diffuse = Difusa
 channel-specular = Especular
-channel-attenuation = Atenuação
+channel-attenuation = 1/at (fator de atenuação)
 channel-spot = Fator do foco
 channel-n-dot-l = N·L
 channel-n-dot-h = N·H
@@ -986,8 +986,14 @@ channel-picture = A imagem
 channel-hover = Um termo da equação de iluminação em cada pixel, em falsa cor (viridis), com sua escala
 channel-caption = termo { $channel }
 channel-legend-normal = A normal como cor: x em vermelho, y em verde, z em azul, de -1 (escuro) a 1 (claro)
-channel-legend-luminance = { $channel }: sua luminância (Rec. 709), antes de limitar
+channel-legend-luminance = { $channel }: a luminância (Rec. 709) de um termo de cor, antes de limitar
 channel-legend-range = { $what }, de { $low } a { $high }
+channel-legend-attenuation = 1/at: o fator pelo qual os termos desta luz são multiplicados (at = k0 + k1 d + k2 d², o da lista, divide)
+channel-legend-spot = spot: o fator pelo qual os termos desta luz são multiplicados (0 fora do cone, 1 sem spot)
+channel-legend-n-dot-l = N·L = cos θ: um cosseno, abaixo de 0 onde a superfície está voltada para o lado oposto à luz
+channel-legend-n-dot-h = N·H = cos β: o cosseno especular antes da potência (R·V com a regra de Phong)
+channel-legend-light-count = Quantas luzes chegam ao pixel: uma contagem
+probe-attenuation-factor = Fator de atenuação, pelo qual os termos são multiplicados
 case-rules-note = nota: { $path } usa as regras { $rules }; um caso segue sempre as do OpenGL
 cost-wrote = gravado { $files } em { $out }
 
@@ -1223,7 +1229,7 @@ cli-value-scene-ambient = o ambiente da cena, a_cm a_cs
 cli-value-ambient = o ambiente de cada luz, após atenuação e foco
 cli-value-diffuse = a difusa de cada luz, após atenuação e foco
 cli-value-specular = a especular de cada luz, após atenuação e foco
-cli-value-attenuation = a atenuação de uma luz
+cli-value-attenuation = o fator de atenuação de uma luz, 1/at (o at da lista, k0 + k1 d + k2 d², divide)
 cli-value-spot = o fator do foco de uma luz
 cli-value-n-dot-l = o n · L de uma luz
 cli-value-n-dot-h = o n · H de uma luz

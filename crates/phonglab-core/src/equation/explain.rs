@@ -55,11 +55,11 @@ pub enum StepKind {
     CosBeta,
     /// The specular term.
     Specular,
-    /// att.
+    /// `at = k0 + k1 d + k2 d²`, the worksheet's, which divides (OpenGL's att is 1/at).
     Attenuation,
     /// spot.
     Spot,
-    /// att spot (ambient + diffuse + specular).
+    /// spot (ambient + diffuse + specular) / at.
     Contribution,
     /// a_cm a_cs.
     SceneAmbient,

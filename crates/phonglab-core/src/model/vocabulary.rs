@@ -17,7 +17,9 @@
 //! | scene ambient | `sceneAmb` | `GL_LIGHT_MODEL_AMBIENT` | a_cs |
 //! | modelview | `mview`, `lightMview` | `GL_MODELVIEW_MATRIX` | M |
 //!
-//! and the values the calculation finds, from `vov` (V) and `vlv` (L) to `glColor`.
+//! and the values the calculation finds, from `vov` (V) and `vlv` (L) to `glColor`. One of
+//! them, `at`, names one quantity everywhere: the worksheet's `k0 + k1 d + k2 d²`, which
+//! divides. OpenGL's `att_i` is its inverse; wherever that factor is shown it is `1/at`.
 
 use crate::locale::tr;
 
@@ -221,9 +223,10 @@ impl Quantity {
             R => term("R", "2 (n · L) n - L", "R", "step-r"),
             CosAlpha => Term { worksheet: "cosAlpha", gl: "R · V", symbol: "cos(α)", message: None },
             Specular => term("Ispec", "(n · h)^s_rm s_cli s_cm", "Ispec", "step-specular"),
-            Attenuation => term("at", "1 / (k_0i + k_1i d + k_2i d²)", "at", "step-attenuation"),
+            // The worksheet's `at` divides; OpenGL's att_i is its inverse, shown as 1/at.
+            Attenuation => term("at", "k_0i + k_1i d + k_2i d²", "at", "step-attenuation"),
             Spot => term("spot", "(-L · s_dli)^s_rli", "spot", "step-spot"),
-            LightShare => term("Ilight", "att_i spot_i (ambient + diffuse + specular)", "Ilight", "step-share"),
+            LightShare => term("Ilight", "spot_i (ambient + diffuse + specular) / at", "Ilight", "step-share"),
             SceneAmbientTerm => term("Iscene", "a_cm a_cs", "Iscene", "step-scene-ambient"),
             EmissionTerm => term("Iemi", "e_cm", "Iemi", "step-emission"),
             Primary => term("I", "c_pri", "I", "step-primary"),
@@ -274,6 +277,17 @@ mod tests {
         assert_eq!(Quantity::named("spotCoef"), Some(Quantity::SpotExponent));
         assert_eq!(Quantity::SpotExponent.term().gl, "GL_SPOT_EXPONENT");
         assert_eq!(Quantity::MatDiffuse.back_name(), "matDifBack");
+    }
+
+    /// `at` is one quantity: the sum that divides, never the factor that multiplies.
+    #[test]
+    fn at_is_the_sum_that_divides() {
+        let at = Quantity::Attenuation.term();
+        assert_eq!((at.worksheet, at.symbol, at.gl), ("at", "at", "k_0i + k_1i d + k_2i d²"));
+        assert!(Quantity::LightShare.term().gl.ends_with("/ at"));
+        for q in Quantity::ALL {
+            assert!(!q.term().gl.contains("1 / (k"), "{q:?}: {}", q.term().gl);
+        }
     }
 
     #[test]

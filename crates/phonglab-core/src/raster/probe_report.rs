@@ -113,22 +113,22 @@ fn terms_lines(p: &Probe, out: &mut Vec<ReportLine>) {
     out.push(line(label, name, numbers(&p.terms.scene_ambient), 1));
     for l in &p.terms.lights {
         out.push(line(t!("probe-light", index = l.index as i64), "", String::new(), 0));
-        for (qq, v) in [
-            (Quantity::Attenuation, l.attenuation),
-            (Quantity::Spot, l.spot),
-            (Quantity::CosTheta, l.n_dot_l),
-            (Quantity::CosBeta, l.n_dot_h),
-        ] {
-            // The factor OpenGL multiplies by (the worksheet's `at` is its denominator).
+        // The worksheet's `at` (it divides), then the factor OpenGL multiplies by, 1/at.
+        let (label, name) = q(Quantity::Attenuation);
+        let at = if l.attenuation == 0.0 { f64::INFINITY } else { 1.0 / l.attenuation };
+        out.push(line(label, name, num(at, 4), 1));
+        out.push(line(tr("probe-attenuation-factor"), &format!("1/{name}"), num(l.attenuation, 4), 1));
+        for (qq, v) in [(Quantity::Spot, l.spot), (Quantity::CosTheta, l.n_dot_l), (Quantity::CosBeta, l.n_dot_h)] {
             let (label, name) = q(qq);
-            let name = if qq == Quantity::Attenuation { qq.term().gl } else { name };
             out.push(line(label, name, num(v, 4), 1));
         }
+        // Each term as it reaches the colour: times the spot factor, divided by at.
+        let spot = Quantity::Spot.name();
         for (qq, v) in
             [(Quantity::Ambient, l.ambient), (Quantity::Diffuse, l.diffuse), (Quantity::Specular, l.specular)]
         {
             let (label, name) = q(qq);
-            out.push(line(label, &format!("at spot {name}"), numbers(&v), 1));
+            out.push(line(label, &format!("{spot} · {name} / {}", Quantity::Attenuation.name()), numbers(&v), 1));
         }
     }
     out.push(line(tr("probe-terms-sum"), "", numbers(&p.terms.sum()), 0));

@@ -5,7 +5,7 @@
 //! |---|---|---|
 //! | the eye | a point, its frustum (near plane = the viewport, far plane cut to the scene) | `clip_from_eye`'s inverse on the NDC cube's corners |
 //! | a directional light | parallel rays across the scene | its direction in eye space |
-//! | a positional light | a point, rings where its attenuation falls to 50 % and 10 % | `k0 + k1 d + k2 d² = 1/f` |
+//! | a positional light | a point, rings where its attenuation factor `1/at` falls to 50 % and 10 % | `at = k0 + k1 d + k2 d² = 1/f` |
 //! | a spotlight | its cone, rims at a quarter, half, three quarters and all of the cutoff, each as bright as `cos^s_rl` there | OpenGL 2.1 eq. 2.6 |
 //! | the worked vertex | N, L, V, H, all one length in the space shown (so their foreshortening is true) | the engine's breakdown |
 //! | its surface | a small square in the tangent plane, moved as points | `display_from_object` |
@@ -64,7 +64,7 @@ pub enum Kind {
     Viewport,
     /// Light `i` (its position, or a directional light's rays).
     Light(usize),
-    /// A ring of light `i` where its attenuation is `f` (0.5 or 0.1).
+    /// A ring of light `i` where its attenuation factor `1/at` is `f` (0.5 or 0.1).
     Ring(usize, f64),
     /// Light `i`'s spot cone; `strength` is `cos^s_rl` at this rim (1 on the axis).
     Cone(usize, f64),
@@ -126,7 +126,7 @@ pub struct Stage {
     pub lights: Vec<Option<DVec3>>,
 }
 
-/// Where light `i`'s attenuation `1 / (k0 + k1 d + k2 d²)` falls to `f`: the distance d >= 0
+/// Where light `i`'s attenuation factor `1/at = 1 / (k0 + k1 d + k2 d²)` falls to `f`: the distance d >= 0
 /// with `k0 + k1 d + k2 d² = 1 / f`, if there is one (none when it never falls so far, or
 /// is already there at d = 0).
 pub fn ring_radius(k: [f64; 3], f: f64) -> Option<f64> {
@@ -288,7 +288,7 @@ fn light(
     let at_eye = p.truncate() / p.w;
     let at = point(at_eye);
     st.marks.push(Mark { at, kind: Kind::Light(i) });
-    // Rings: three great circles of the sphere where the attenuation is f. The distance is
+    // Rings: three great circles of the sphere where 1/at is f. The distance is
     // the eye-space one (OpenGL attenuates there); the circles are drawn in eye space and
     // moved to the space shown, so an uneven modelview shows them as ellipses.
     for f in [0.5, 0.1] {

@@ -12,9 +12,6 @@ use phonglab_core::{Document, PowFn, locale, t};
 /// compute on every edit (each pixel is the f64 engine's worked breakdown).
 pub const CHANNEL_PX: usize = if crate::platform::threads::BACKGROUND { 192 } else { 128 };
 
-/// The legend's height under the picture, in points.
-pub const LEGEND_HEIGHT: f32 = 30.0;
-
 /// The last channel image, what it shows, and its false-colour texture.
 #[derive(Default)]
 pub struct ChannelView {
@@ -89,11 +86,46 @@ pub fn channel_ui(ui: &mut Ui, channel: &mut Option<Channel>) {
     });
 }
 
+/// What a channel shows, in words: the luminance of a colour term, a factor, a cosine, the
+/// normal's axes, a count. The legend says it under the bar.
+pub fn meaning(channel: Channel) -> String {
+    match channel {
+        Channel::Normal => t!("channel-legend-normal"),
+        c if c.components() == 3 => t!("channel-legend-luminance", channel = locale::tr(c.message_id())),
+        Channel::Attenuation => t!("channel-legend-attenuation"),
+        Channel::Spot => t!("channel-legend-spot"),
+        Channel::NDotL => t!("channel-legend-n-dot-l"),
+        Channel::NDotH => t!("channel-legend-n-dot-h"),
+        _ => t!("channel-legend-light-count"),
+    }
+}
+
+/// The colour bar's height, in points.
+const BAR: f32 = 10.0;
+
+/// The bar and its numbers' height, in points.
+fn bar_height(ui: &Ui) -> f32 {
+    BAR + 2.0 + ui.text_style_height(&egui::TextStyle::Body) + 2.0
+}
+
+/// What the legend says under the bar, laid out `width` points wide in body type.
+fn meaning_height(ui: &Ui, channel: Channel, width: f32) -> f32 {
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    ui.fonts_mut(|f| f.layout(meaning(channel), font, Color32::WHITE, width).size().y)
+}
+
+/// The legend's height under a picture `width` points wide: the bar, its numbers and what
+/// it shows (wrapped), all in body type.
+pub fn legend_height(ui: &Ui, channel: Channel, width: f32) -> f32 {
+    bar_height(ui) + meaning_height(ui, channel, width) + ui.spacing().item_spacing.y
+}
+
 /// The legend under a channel's picture, `width` points wide: the colour bar (viridis; the
-/// normal's axes as red, green and blue) with its range's ends and middle.
+/// normal's axes as red, green and blue) with its range's ends and middle, and under them
+/// what the channel shows, in body type.
 pub fn legend_ui(ui: &mut Ui, channel: Channel, range: (f64, f64), width: f32) -> egui::Response {
-    let (rect, resp) = ui.allocate_exact_size(egui::vec2(width, LEGEND_HEIGHT), egui::Sense::hover());
-    let bar = egui::Rect::from_min_size(rect.min, egui::vec2(width, 10.0));
+    let (rect, resp) = ui.allocate_exact_size(egui::vec2(width, bar_height(ui)), egui::Sense::hover());
+    let bar = egui::Rect::from_min_size(rect.min, egui::vec2(width, BAR));
     let painter = ui.painter_at(rect);
     let steps = 64;
     for i in 0..steps {
@@ -111,20 +143,21 @@ pub fn legend_ui(ui: &mut Ui, channel: Channel, range: (f64, f64), width: f32) -
     }
     let (lo, hi) = range;
     let text = ui.visuals().text_color();
-    let font = egui::TextStyle::Small.resolve(ui.style());
+    let font = egui::TextStyle::Body.resolve(ui.style());
     let y = bar.bottom() + 2.0;
     for (t, align) in [(0.0, egui::Align2::LEFT_TOP), (0.5, egui::Align2::CENTER_TOP), (1.0, egui::Align2::RIGHT_TOP)] {
         let v = lo + (hi - lo) * t;
         let x = bar.left() + width * t as f32;
         painter.text(egui::pos2(x, y), align, locale::num(v, 3), font.clone(), text);
     }
-    let what = match channel {
-        Channel::Normal => t!("channel-legend-normal"),
-        c if c.components() == 3 => t!("channel-legend-luminance", channel = phonglab_core::locale::tr(c.message_id())),
-        c => phonglab_core::locale::tr(c.message_id()),
-    };
+    let what = meaning(channel);
     let described =
         t!("channel-legend-range", what = what.clone(), low = locale::num(lo, 3), high = locale::num(hi, 3));
     resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &described));
-    resp.on_hover_text(what)
+    // What it shows, in the legend itself: wrapped to the picture's width, in body type.
+    ui.scope(|ui| {
+        ui.set_max_width(width);
+        ui.add(egui::Label::new(egui::RichText::new(&what).text_style(egui::TextStyle::Body)).wrap());
+    });
+    resp
 }

@@ -6,7 +6,7 @@ use phonglab_core::library::DemoDeparture;
 use phonglab_core::{Document, t};
 
 use super::cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
-use super::channel_view::{LEGEND_HEIGHT, legend_ui};
+use super::channel_view::{legend_height, legend_ui};
 use super::context::{Shaded, corrected_document};
 use super::gpu::{self, GpuImage};
 use super::heat_map::heat_map_ui;
@@ -38,8 +38,11 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
     // Room for the caption's one line above the image (cut to the picture's width, whole in
     // its hover): a caption that wrapped took the picture's height.
     let channel = state.view_options.channel;
-    let legend = if channel.is_some() { LEGEND_HEIGHT } else { 0.0 };
-    let side = width.min(avail.y - ui.text_style_height(&egui::TextStyle::Small) - 8.0 - legend).max(64.0);
+    let caption_room = ui.text_style_height(&egui::TextStyle::Small) + 8.0;
+    // The legend wraps to the picture's width: sized at the width, then at the side found.
+    let legend = |w: f32| channel.map_or(0.0, |c| legend_height(ui, c, w));
+    let side = width.min(avail.y - caption_room - legend(width)).max(64.0);
+    let side = width.min(avail.y - caption_room - legend(side)).max(64.0);
     let ppp = ui.ctx().pixels_per_point();
     let px = ((side * ppp) as usize).clamp(64, 1024);
     // One texel a screen pixel (no resampling), unless the view is wider than 1024 pixels.
