@@ -26,6 +26,33 @@ fn step(ex: &Explanation, name: &str) -> Vec<f64> {
     ex.steps.iter().find(|s| s.name == name).and_then(|s| s.value.clone()).unwrap_or_else(|| panic!("no {name}"))
 }
 
+/// The value of light `light`'s step `name` (printed `name[light]` with several lights).
+fn light_step(ex: &Explanation, name: &str, light: usize) -> Vec<f64> {
+    ex.steps
+        .iter()
+        .find(|s| s.light == Some(light) && (s.name == name || s.name == format!("{name}[{light}]")))
+        .and_then(|s| s.value.clone())
+        .unwrap_or_else(|| panic!("no {name} of light {light}"))
+}
+
+/// The calculation works the vertex as the picture lights it: the same modelview (the
+/// picture's camera and spin), so what it finds is what the picture shows there.
+fn assert_calculation_is_the_pictures(doc: &Document) {
+    let (calc, picture) = (doc.scene.eye_from_object(), doc.shaded_scene().eye_from_object());
+    let apart = (calc - picture).to_cols_array().iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+    assert!(apart < 1e-12, "the calculation's modelview is {apart} from the picture's");
+}
+
+/// `doc` drawn `px` square in `shading`: its RGBA bytes.
+fn picture(doc: &Document, shading: phonglab_core::Shading, px: usize) -> Vec<u8> {
+    let mut d = doc.clone();
+    d.view.shading = shading;
+    let setup = d.shaded_setup(phonglab_core::PowFn::Exact);
+    let mesh = d.view.mesh();
+    let mut r = phonglab_core::render::Renderer::new();
+    r.render(&setup.job(&mesh), px, px).unwrap().0.rgba.clone()
+}
+
 #[test]
 fn every_answer_is_a_step_of_its_own_calculation() {
     for e in shipped() {
@@ -57,11 +84,59 @@ fn the_attenuation_is_1_11_at_distance_1_and_grows_as_the_words_say() {
     }
 }
 
+/// "Gouraud on a coarse sphere": the highlight is a dim star, and the worked vertex, one of
+/// the mesh's, is the one nearest it, lit as the picture lights it: its Ispec is a fraction
+/// of the highlight's. (The calculation worked the sphere's pole from another camera, where
+/// it sat in the highlight: Ispec = 1, cosBeta = 1.)
+#[test]
+fn gouraud_on_a_coarse_sphere_works_the_vertex_nearest_a_dim_star() {
+    use phonglab_core::Shading;
+    use phonglab_core::scene::Vertex;
+    let doc = &by_name("gouraud-coarse").doc;
+    assert_eq!((doc.view.shading, doc.view.sphere_slices, doc.view.sphere_stacks), (Shading::Gouraud, 8, 6));
+    assert_eq!(doc.scene.material.shininess, 100.0, "a sharp highlight (shininess 100)");
+    assert_calculation_is_the_pictures(doc);
+    // The worked vertex is one of the mesh's.
+    let mesh = doc.view.mesh();
+    let v = doc.scene.vertex;
+    let k = (0..mesh.positions.len())
+        .find(|&i| mesh.positions[i].as_dvec3() == v.position.truncate() && mesh.normals[i].as_dvec3() == v.normal)
+        .expect("the worked vertex is a vertex of the mesh");
+    // Of all the mesh's vertices, it catches the most of the highlight, as the picture
+    // lights them; and that is a fraction of it.
+    let ispec = |d: &Document| step(&explain(d), "Ispec")[0];
+    let worked = ispec(doc);
+    for i in 0..mesh.positions.len() {
+        let other = Vertex { position: mesh.positions[i].as_dvec3().extend(1.0), normal: mesh.normals[i].as_dvec3() };
+        let there = ispec(&doc.with_vertex_as_shaded(other));
+        assert!(there <= worked + 1e-12, "vertex {i} catches {there}, more than the worked vertex {k}'s {worked}");
+    }
+    assert!(worked > 0.05 && worked < 0.5, "Ispec {worked}: not a dim share of the highlight");
+    // The picture: Gouraud's brightest white is a dim star beside Phong's full highlight.
+    let white = |rgba: &[u8]| rgba.chunks(4).map(|p| p[0].min(p[1]).min(p[2])).max().unwrap_or(0);
+    let (g, p) = (white(&picture(doc, Shading::Gouraud, 256)), white(&picture(doc, Shading::Phong, 256)));
+    assert!(p >= 240 && f64::from(g) < 0.6 * f64::from(p), "Gouraud's peak {g}, Phong's {p}");
+}
+
+/// "When the lights add up to more than 1": the worked vertex sits in the red light's
+/// highlight, in the calculation and in the picture (on the sphere, under its camera).
+#[test]
+fn the_clamping_vertex_sits_in_the_red_highlight_the_picture_shows() {
+    let doc = &by_name("clamping").doc;
+    assert_calculation_is_the_pictures(doc);
+    let p = doc.scene.vertex.position.truncate();
+    assert!((p.length() - 0.5).abs() < 1e-3, "on the sphere of radius 0.5: |P| = {}", p.length());
+    let ex = explain(doc);
+    let red = light_step(&ex, "cosBeta", 0)[0];
+    assert!(red > 0.999, "cosBeta of the red light {red}");
+    for l in 1..doc.scene.lights.len() {
+        let s = light_step(&ex, "Ispec", l)[0];
+        assert!(s < light_step(&ex, "Ispec", 0)[0], "light {l}'s specular {s} passes the red one's");
+    }
+}
+
 #[test]
 fn the_other_experiments_set_up_what_they_say() {
-    // Gouraud on the coarse sphere.
-    let g = &by_name("gouraud-coarse").doc;
-    assert_eq!((g.view.shading, g.view.sphere_slices, g.view.sphere_stacks), (phonglab_core::Shading::Gouraud, 8, 6));
     // mview3 is not a rotation: step 1 says so.
     let m = explain(&by_name("normal-matrix").doc);
     assert!(m.steps[0].notes.iter().any(|n| n.contains("not a rotation")), "{:?}", m.steps[0].notes);
@@ -179,4 +254,130 @@ fn the_band_under_the_squares_offers_the_experiments() {
     assert_eq!(h.state().doc, e.doc);
     assert!(h.state().things.open && h.state().things.chosen == Some(4));
     h.get_by_label(&e.words(lang).question);
+}
+
+/// A harness at `w` x `h` with experiment `stem` set up from the Things to try window.
+fn with_experiment(stem: &str, w: f32, ht: f32) -> Harness<'static, AppState> {
+    let mut h = Harness::builder()
+        .with_size([w, ht])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(2);
+    h.get_by_label("Things to try").click();
+    h.run_steps(3);
+    let k = shipped().iter().position(|e| e.source.contains(stem)).unwrap();
+    let title = format!("{}. {}", k + 1, shipped()[k].words(phonglab_core::locale::Lang::En).title);
+    h.get_by_label(&title).click();
+    h.run_steps(3);
+    assert_eq!(h.state().doc, shipped()[k].doc);
+    h
+}
+
+/// Presses `key` until `done` holds (at most `most` times); how many it took.
+fn press_until(
+    h: &mut Harness<'static, AppState>,
+    key: egui::Key,
+    most: usize,
+    done: impl Fn(&AppState) -> bool,
+) -> usize {
+    for n in 1..=most {
+        h.key_press(key);
+        h.run_steps(2);
+        if done(h.state()) {
+            return n;
+        }
+    }
+    panic!("{key:?} pressed {most} times did not get there");
+}
+
+/// The keys the experiments tell the class to press do what their words say, and what the
+/// calculation then shows is what they ask about: G reaches OpenGL's rules (mview3's two
+/// normals part by the note's angle; I grows by the emission and the scene ambient), L
+/// turns the local viewer on (V and H change, L does not), 2 and 1 switch Phong and
+/// Gouraud.
+#[test]
+fn the_keys_the_experiments_name_do_what_they_say() {
+    let opengl = |s: &AppState| s.doc.scene.rules.set == RuleSet::OpenGl;
+    // mview3: the worksheet's M n and OpenGL's (M^-1)^T n, as far apart as step 1 says.
+    let mut h = with_experiment("normal-matrix", 1280.0, 720.0);
+    let before = explain(&h.state().doc);
+    let note = before.steps[0].notes.join(" ");
+    press_until(&mut h, egui::Key::G, 3, opengl);
+    let after = explain(&h.state().doc);
+    let n = |ex: &Explanation| glam::DVec3::from_slice(&step(ex, "vertexNormal")[..3]);
+    let degrees = n(&before).angle_between(n(&after)).to_degrees();
+    assert!(
+        degrees > 5.0 && note.contains(&format!("{}°", phonglab_core::locale::num(degrees, 3))),
+        "{degrees} {note}"
+    );
+    // What OpenGL adds.
+    let mut h = with_experiment("what-opengl-adds", 1280.0, 720.0);
+    let before = step(&explain(&h.state().doc), "I");
+    press_until(&mut h, egui::Key::G, 3, opengl);
+    assert!(step(&explain(&h.state().doc), "I")[0] > before[0]);
+    // The local viewer: V (and so H) change, L does not.
+    let mut h = with_experiment("local-viewer", 1280.0, 720.0);
+    let off = explain(&h.state().doc);
+    press_until(&mut h, egui::Key::L, 1, |s| s.doc.scene.light_model.local_viewer);
+    let on = explain(&h.state().doc);
+    assert_ne!(step(&off, "vov"), step(&on, "vov"));
+    assert_ne!(step(&off, "H"), step(&on, "H"));
+    assert_eq!(step(&off, "vlv"), step(&on, "vlv"));
+    // Gouraud on the coarse sphere: 2 is Phong, 1 Gouraud.
+    let mut h = with_experiment("gouraud-coarse", 1280.0, 720.0);
+    press_until(&mut h, egui::Key::Num2, 1, |s| s.doc.view.shading == phonglab_core::Shading::Phong);
+    press_until(&mut h, egui::Key::Num1, 1, |s| s.doc.view.shading == phonglab_core::Shading::Gouraud);
+}
+
+/// The values the experiments tell the class to type or drag to are ones the window
+/// takes: Light z through 0 to 90 (the slider reaches it), Light y 10 and 100, the spot
+/// cutoff past the vertex's 11.6 degrees off the axis.
+#[test]
+fn the_values_the_experiments_name_are_taken() {
+    let behind = &by_name("light-behind").doc;
+    assert!(phonglab::app::panels::controls::position_range(behind) >= 90.0);
+    let mut z90 = behind.clone();
+    z90.scene.lights[0].position.z = 90.0;
+    assert!(step(&explain(&z90), "Idif")[0] > 0.0, "Idif comes back");
+    let mut state = AppState::worksheet();
+    let at = by_name("attenuation").doc.clone();
+    for y in [10.0, 100.0] {
+        let mut d = at.clone();
+        d.scene.lights[0].position.y = y;
+        assert!(state.apply(d), "Light y = {y} is taken");
+    }
+    // The vertex is between 11 and 12 degrees off the spotlight's axis.
+    let sp = &by_name("spot-cutoff").doc;
+    for (cutoff, lit) in [(10.0, false), (11.0, false), (12.0, true)] {
+        let mut d = sp.clone();
+        d.scene.lights[0].spot_cutoff = cutoff;
+        assert!(state.apply(d.clone()), "cutoff {cutoff} is taken");
+        assert_eq!(step(&explain(&d), "spot")[0] > 0.0, lit, "cutoff {cutoff}");
+    }
+}
+
+/// Where an experiment speaks of the picture, the picture says it: shininess 5 on the
+/// teapot is a broad highlight that narrows at 100 (the specular channel's bright area
+/// shrinks), and the spotlight's cone shows its rim on the picture.
+#[test]
+fn the_pictures_show_what_the_experiments_say() {
+    use phonglab_core::channels::{Channel, channel_image};
+    let bright_area = |doc: &Document| {
+        let setup = doc.shaded_setup(phonglab_core::PowFn::Exact);
+        let mesh = doc.view.mesh();
+        let job = setup.job(&mesh);
+        let mut r = phonglab_core::render::Renderer::new();
+        r.keep_visibility(true);
+        r.render(&job, 128, 128).unwrap();
+        let c = channel_image(&r, &job, Channel::Specular, None).unwrap();
+        c.values.iter().flatten().filter(|v| c.scalar(**v) >= 0.1).count()
+    };
+    let broad = by_name("shininess").doc.clone();
+    let mut sharp = broad.clone();
+    sharp.scene.material.shininess = 100.0;
+    let (b, s) = (bright_area(&broad), bright_area(&sharp));
+    assert!(b >= 3 * s && b > 100, "highlight of {b} pixels at 5, {s} at 100");
+    let h = with_experiment("spot-cutoff", 1280.0, 720.0);
+    let picture = h.state().ui.geometry.pictures[0];
+    let cones = &h.state().ui.geometry.cones;
+    assert!(!cones.is_empty() && cones.iter().all(|c| c.intersects(picture)), "{cones:?} on {picture:?}");
 }
