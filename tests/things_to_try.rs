@@ -4,7 +4,7 @@
 //! shows the question, and shows the answer from the calculation only when asked.
 
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT, Queryable};
 use phonglab::app::model::evaluated::{Settings, evaluate};
 use phonglab::app::panels::things_to_try::answer;
 use phonglab::app::{AppState, app_ui};
@@ -220,7 +220,7 @@ fn every_experiment_shows_in_every_language() {
         let code = phonglab_core::locale::Lang::parse(lang).unwrap();
         for (k, e) in shipped().iter().enumerate() {
             let title = format!("{}. {}", k + 1, e.words(code).title);
-            h.get_by_label(&title).click();
+            click_title(&mut h, &title);
             h.run_steps(3);
             assert_eq!(h.state().doc, e.doc, "{lang}: {title}");
             h.get_by_label(&e.words(code).question);
@@ -256,6 +256,14 @@ fn the_band_under_the_squares_offers_the_experiments() {
     h.get_by_label(&e.words(lang).question);
 }
 
+/// Clicks the experiment titled `title` in the window, scrolled into view first (the
+/// window's list scrolls where the chosen one's words push the rest down).
+fn click_title(h: &mut Harness<'static, AppState>, title: &str) {
+    h.get_by_label(title).scroll_to_me();
+    h.run_steps(30);
+    h.get_by_label(title).click();
+}
+
 /// A harness at `w` x `h` with experiment `stem` set up from the Things to try window.
 fn with_experiment(stem: &str, w: f32, ht: f32) -> Harness<'static, AppState> {
     let mut h = Harness::builder()
@@ -266,7 +274,7 @@ fn with_experiment(stem: &str, w: f32, ht: f32) -> Harness<'static, AppState> {
     h.run_steps(3);
     let k = shipped().iter().position(|e| e.source.contains(stem)).unwrap();
     let title = format!("{}. {}", k + 1, shipped()[k].words(phonglab_core::locale::Lang::En).title);
-    h.get_by_label(&title).click();
+    click_title(&mut h, &title);
     h.run_steps(3);
     assert_eq!(h.state().doc, shipped()[k].doc);
     h
@@ -372,6 +380,7 @@ fn the_pictures_show_what_the_experiments_say() {
         c.values.iter().flatten().filter(|v| c.scalar(**v) >= 0.1).count()
     };
     let broad = by_name("shininess").doc.clone();
+    assert_eq!(broad.view.object, phonglab_core::ObjectKind::Teapot, "on the teapot");
     let mut sharp = broad.clone();
     sharp.scene.material.shininess = 100.0;
     let (b, s) = (bright_area(&broad), bright_area(&sharp));
@@ -380,4 +389,78 @@ fn the_pictures_show_what_the_experiments_say() {
     let picture = h.state().ui.geometry.pictures[0];
     let cones = &h.state().ui.geometry.cones;
     assert!(!cones.is_empty() && cones.iter().all(|c| c.intersects(picture)), "{cones:?} on {picture:?}");
+}
+
+/// The Things to try window: its rect (the window node whose title it is).
+fn things_window(h: &Harness<'static, AppState>) -> egui::Rect {
+    h.root()
+        .children_recursive()
+        .find(|n| {
+            n.accesskit_node().role() == egui::accesskit::Role::Window
+                && n.accesskit_node().label().as_deref() == Some("Things to try")
+        })
+        .map(|n| n.rect())
+        .expect("the window")
+}
+
+/// An experiment's window never covers the control its words tell the class to move: at
+/// the projector sizes, at the desk and presenting (the drawer), the click opens the
+/// controls on it, and it lies in sight, clear of the window (which opened over the
+/// controls, on Light z). Every experiment names its control where its words name one.
+#[test]
+fn an_experiments_window_leaves_the_control_it_names_in_sight() {
+    use egui::accesskit::Role;
+    let named: Vec<&str> = shipped().iter().filter_map(|e| e.control.as_deref()).collect();
+    assert_eq!(named, ["light-z", "light-y", "material-shininess", "spot-cutoff"]);
+    for (w, ht) in [(1024.0, 600.0), (1280.0, 720.0), (1920.0, 1080.0)] {
+        for presenting in [false, true] {
+            let mut state = AppState::worksheet();
+            state.ui.layout.presenting = presenting;
+            state.ui.layout.controls_open = false;
+            state.ui.layout.drawer_open = false;
+            let mut h =
+                Harness::builder().with_size([w, ht]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+            h.run_steps(2);
+            h.state_mut().things.open = true;
+            h.run_steps(2);
+            let screen = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(w, ht));
+            for (k, e) in shipped().iter().enumerate() {
+                let Some(control) = e.control_label() else { continue };
+                let title = format!("{}. {}", k + 1, e.words(phonglab_core::locale::Lang::En).title);
+                click_title(&mut h, &title);
+                // The controls scroll to it (scrolling is animated).
+                h.run_steps(30);
+                let window = things_window(&h);
+                let at = h
+                    .query_all_by_label(&control)
+                    .filter(|n| n.accesskit_node().role() == Role::Slider)
+                    .map(|n| n.rect())
+                    .find(|r| screen.contains_rect(*r))
+                    .unwrap_or_else(|| panic!("{w}x{ht}, presenting {presenting}: {control} not in sight for {title}"));
+                assert!(!at.intersects(window), "{w}x{ht}, presenting {presenting}: {control} {at:?} under {window:?}");
+            }
+        }
+    }
+}
+
+/// Opening the next experiment lets go of the step the last one highlighted.
+#[test]
+fn the_next_experiment_clears_the_last_ones_highlighted_step() {
+    let mut h = with_experiment("light-behind", 1280.0, 720.0);
+    h.get_by_label("Show the calculation's answer").click();
+    h.run_steps(3);
+    assert!(h.state().ui.layout.step.is_some());
+    let title = format!("2. {}", shipped()[1].words(phonglab_core::locale::Lang::En).title);
+    click_title(&mut h, &title);
+    h.run_steps(3);
+    assert_eq!(h.state().ui.layout.step, None, "the last experiment's answer is no longer highlighted");
+    // The band under the squares does the same.
+    h.get_by_label("Show the calculation's answer").click();
+    h.run_steps(3);
+    assert!(h.state().ui.layout.step.is_some());
+    let band = h.state().ui.geometry.suggestions.expect("the band");
+    let third = shipped()[2].words(phonglab_core::locale::Lang::En).title.clone();
+    h.query_all_by_label(&third).find(|n| band.contains_rect(n.rect())).expect("offered in the band").click();
+    h.run_steps(3);
+    assert_eq!(h.state().ui.layout.step, None);
 }

@@ -11,6 +11,9 @@
 //!                              # beside this one ("my-scene.toml")
 //! answer = "cosTheta"          # the step's name in the worksheet (vlv, d, Idif, at, spot, I…)
 //! light = 0                    # whose step, with several lights (0 when left out)
+//! control = "light-z"          # the control the words tell the class to move, by its label's
+//!                              # catalogue id (light-x/y/z, material-shininess, spot-cutoff…):
+//!                              # the click opens the controls on it, and the window keeps clear
 //!
 //! [changes]                    # laid over the scene file: a table key by key, a list of
 //! lights = [{ position = [0, 0, -40, 1] }]   # tables item by item, anything else replaced
@@ -52,6 +55,8 @@ struct File {
     #[serde(default)]
     light: Option<usize>,
     #[serde(default)]
+    control: Option<String>,
+    #[serde(default)]
     changes: Option<toml::Table>,
     text: BTreeMap<String, Words>,
 }
@@ -67,6 +72,8 @@ pub struct Experiment {
     pub answer: String,
     /// Whose step that is, with several lights.
     pub light: Option<usize>,
+    /// The control its words tell the class to move: its label's catalogue id.
+    pub control: Option<String>,
     /// The words, by language code ("en", "pt-PT", "pt-BR").
     pub text: BTreeMap<String, Words>,
 }
@@ -79,6 +86,11 @@ impl Experiment {
         if file.text.is_empty() {
             return Err(t!("experiment-no-text"));
         }
+        if let Some(id) = &file.control
+            && !phonglab_core::locale::has_message(Lang::En, id)
+        {
+            return Err(t!("experiment-no-control", control = id.clone()));
+        }
         let base = scene_text(&file.scene).ok_or_else(|| t!("experiment-no-scene", scene = file.scene.clone()))?;
         let mut scene: toml::Value = toml::from_str::<toml::Table>(&base).map_err(|e| e.to_string())?.into();
         if let Some(changes) = &file.changes {
@@ -86,7 +98,13 @@ impl Experiment {
         }
         let merged = toml::to_string(&scene).map_err(|e| e.to_string())?;
         let doc = Document::from_toml(&merged).map_err(|e| e.to_string())?;
-        Ok(Experiment { source: String::new(), doc, answer: file.answer, light: file.light, text: file.text })
+        let (answer, light, control, text) = (file.answer, file.light, file.control, file.text);
+        Ok(Experiment { source: String::new(), doc, answer, light, control, text })
+    }
+
+    /// The label of the control its words tell the class to move, in the reader's language.
+    pub fn control_label(&self) -> Option<String> {
+        self.control.as_deref().map(phonglab_core::locale::tr)
     }
 
     /// The words in `lang`, else in English, else the first language the file has.
@@ -243,5 +261,27 @@ mod tests {
         assert!(refused.iter().any(|r| r.starts_with("b-bad.toml") && r.contains("nowhere")), "{refused:?}");
         assert!(refused.iter().any(|r| r.starts_with("c-range.toml") && r.contains("shininess")), "{refused:?}");
         let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// An experiment names the control its words tell the class to move by its label's
+    /// catalogue id: the label in the reader's language; an id the catalogue lacks is
+    /// refused with why.
+    #[test]
+    fn an_experiment_names_its_control_by_its_labels_id() {
+        let text = |control: &str| {
+            format!(
+                "scene = \"worksheet-mview1\"\nanswer = \"d\"\ncontrol = \"{control}\"\n\
+                 [text.en]\ntitle = \"x\"\nlook = \"y\"\nquestion = \"z?\"\n"
+            )
+        };
+        let e = Experiment::parse(&text("light-z"), shipped_scene).unwrap();
+        assert_eq!(e.control_label().as_deref(), Some("Light z"));
+        let why = Experiment::parse(&text("light-w"), shipped_scene).unwrap_err();
+        assert!(why.contains("light-w"), "{why}");
+        assert_eq!(by_stem("01-light-behind").control.as_deref(), Some("light-z"));
+    }
+
+    fn by_stem(stem: &str) -> &'static Experiment {
+        shipped().iter().find(|e| e.source.contains(stem)).unwrap()
     }
 }

@@ -32,6 +32,7 @@ things-to-try-own = Your own experiments: .toml files in { $folder } (see assets
 things-to-try-own-none = Your own experiments can be added in the desktop app.
 experiment-no-text = it has no [text.en], [text.pt-PT] or [text.pt-BR]
 experiment-no-scene = no scene named { $scene } (a shipped scene, or a .toml file beside the experiment)
+experiment-no-control = no control is labelled by the message “{ $control }” (give a label’s id, such as light-z or material-shininess)
 panels-heading = Panels and windows
 arithmetic-heading = Arithmetic
 file-menu-hover = The scene file, export, undo and redo

@@ -32,6 +32,7 @@ things-to-try-own = Seus próprios experimentos: arquivos .toml em { $folder } (
 things-to-try-own-none = Seus próprios experimentos podem ser adicionados no aplicativo para computador.
 experiment-no-text = não tem [text.en], [text.pt-PT] nem [text.pt-BR]
 experiment-no-scene = nenhuma cena chamada { $scene } (uma cena incluída, ou um arquivo .toml ao lado do experimento)
+experiment-no-control = nenhum controle tem como rótulo a mensagem “{ $control }” (indique o id de um rótulo, como light-z ou material-shininess)
 panels-heading = Painéis e janelas
 arithmetic-heading = Aritmética
 file-menu-hover = O arquivo da cena, exportar, desfazer e refazer

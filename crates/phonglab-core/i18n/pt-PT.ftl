@@ -32,6 +32,7 @@ things-to-try-own = As vossas experiências: ficheiros .toml em { $folder } (vej
 things-to-try-own-none = As vossas experiências podem ser juntadas na aplicação para computador.
 experiment-no-text = não tem [text.en], [text.pt-PT] nem [text.pt-BR]
 experiment-no-scene = nenhuma cena chamada { $scene } (uma cena incluída, ou um ficheiro .toml ao lado da experiência)
+experiment-no-control = nenhum controlo tem como rótulo a mensagem “{ $control }” (indique o id de um rótulo, como light-z ou material-shininess)
 panels-heading = Painéis e janelas
 arithmetic-heading = Aritmética
 file-menu-hover = O ficheiro da cena, exportar, desfazer e refazer

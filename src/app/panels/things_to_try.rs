@@ -28,8 +28,9 @@ pub struct TryState {
 /// What the window asks the shell for.
 #[derive(Debug)]
 pub enum TryAsked {
-    /// Load this experiment's scene, under its title.
-    Load(Box<Document>, String),
+    /// Load this experiment's scene, under its title; the label of the control its words
+    /// tell the class to move (asked into view), if they name one.
+    Load(Box<Document>, String, Option<String>),
     /// Highlight this step of the worked calculation (and scroll to it).
     Step(usize),
 }
@@ -65,22 +66,34 @@ pub fn answer(e: &Experiment, ex: &Explanation) -> Option<(usize, String)> {
 }
 
 /// The window: the experiments, the one chosen with what to look for, its question and,
-/// on request, the calculation's answer; where a teacher's own go.
+/// on request, the calculation's answer; where a teacher's own go. It stays right of the
+/// controls and under the top bar (`centre` is the space between the panels), so the
+/// control an experiment tells the class to move is never under it, and opens over the
+/// calculation's column, as wide as it (at least 300 points), leaving the picture, the
+/// plot and the controls above them in sight.
 pub fn things_to_try_window_ui(
     ctx: &egui::Context,
     state: &mut TryState,
     ex: &Explanation,
     lang: Lang,
+    centre: egui::Rect,
 ) -> Option<TryAsked> {
     if !state.open {
         return None;
     }
     let mut open = true;
     let mut asked = None;
+    let area = egui::Rect::from_min_max(centre.min, ctx.content_rect().max);
+    let column = area.max.x - centre.max.x;
+    let width = (column - 24.0).clamp(300.0, 420.0).min(area.width() - 16.0);
     egui::Window::new(t!("things-to-try"))
         .open(&mut open)
-        .default_width(420.0)
-        .max_height(ctx.content_rect().height() * 0.8)
+        .constrain_to(area)
+        .pivot(egui::Align2::RIGHT_TOP)
+        .default_pos(area.right_top() + egui::vec2(-8.0, 8.0))
+        .default_width(width)
+        .max_width(area.width())
+        .max_height(area.height() * 0.9)
         .show(ctx, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| asked = contents_ui(ui, state, ex, lang));
         });
@@ -101,7 +114,7 @@ fn contents_ui(ui: &mut Ui, state: &mut TryState, ex: &Explanation, lang: Lang) 
         if ui.selectable_label(is_chosen, format!("{}. {}", k + 1, words.title)).on_hover_text(&e.source).clicked() {
             *chosen = Some(k);
             *answer_shown = false;
-            asked = Some(TryAsked::Load(Box::new(e.doc.clone()), words.title.clone()));
+            asked = Some(load(ui, e, lang));
         }
         if is_chosen {
             asked = chosen_ui(ui, answer_shown, e, ex, lang).or(asked);
@@ -110,6 +123,16 @@ fn contents_ui(ui: &mut Ui, state: &mut TryState, ex: &Explanation, lang: Lang) 
     ui.separator();
     own_folder_ui(ui, refused);
     asked
+}
+
+/// What a click on `e` asks for: its scene under its title, and the control its words name
+/// brought into view (the next time the controls draw it).
+fn load(ui: &Ui, e: &Experiment, lang: Lang) -> TryAsked {
+    let control = e.control_label();
+    if let Some(label) = &control {
+        crate::app::widgets::fields::bring_into_view(ui.ctx(), label);
+    }
+    TryAsked::Load(Box::new(e.doc.clone()), e.words(lang).title.clone(), control)
 }
 
 /// The experiment chosen: what to look for, the question, and the answer on request.
@@ -171,7 +194,7 @@ pub fn suggestions_ui(ui: &mut Ui, state: &mut TryState, lang: Lang) -> Option<T
                 state.open = true;
                 state.chosen = Some(k);
                 state.answer_shown = false;
-                asked = Some(TryAsked::Load(Box::new(e.doc.clone()), e.words(lang).title.clone()));
+                asked = Some(load(ui, e, lang));
             }
         }
     });

@@ -131,8 +131,8 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
                 things_to_try::suggestions_ui(ui, &mut state.things, lang)
             })
             .inner;
-        if let Some(things_to_try::TryAsked::Load(doc, title)) = asked {
-            state.load(*doc, &title);
+        if let Some(things_to_try::TryAsked::Load(doc, title, control)) = asked {
+            state.set_up_experiment(*doc, &title, control.is_some());
         }
         geometry.suggestions = Some(band);
     }

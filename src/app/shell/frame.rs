@@ -20,8 +20,10 @@ pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
     egui::Panel::top("top bar").show(ui, |ui| top_bar::top_bar_ui(ui, state));
     controls_panel_ui(ui, state, width);
     calculation_panel_ui(ui, state, &eval, width);
+    // Between the panels: the windows keep clear of the controls on its left.
+    let centre = ui.available_rect_before_wrap();
     egui::CentralPanel::default().show(ui, |ui| centre::centre_ui(ui, state, &eval));
-    windows::windows_ui(&ctx, state, &eval.explanation);
+    windows::windows_ui(&ctx, state, &eval.explanation, centre);
     // A whole frame has passed for what was deferred: its field has committed.
     if !state.ui.deferred.is_empty() {
         state.ui.deferred.iter_mut().for_each(|(_, ready)| *ready = true);

@@ -152,6 +152,21 @@ impl AppState {
 }
 
 impl AppState {
+    /// Sets an experiment up: its scene loaded under its title, the step the last one
+    /// highlighted let go, and the controls opened (the drawer, presenting) where its words
+    /// tell the class to move one.
+    pub fn set_up_experiment(&mut self, doc: Document, title: &str, names_a_control: bool) {
+        self.load(doc, title);
+        self.ui.layout.step = None;
+        if names_a_control {
+            if self.ui.layout.presenting {
+                self.ui.layout.drawer_open = true;
+            } else {
+                self.ui.layout.controls_open = true;
+            }
+        }
+    }
+
     /// Undoes the last change of the scene, saying what was undone.
     pub fn undo(&mut self) {
         self.message = Some(Message::Info(match self.history.undo(&self.doc) {

@@ -9,8 +9,14 @@ use crate::app::panels::{cost, director, help, shader_panel, share};
 
 /// The windows over the layout: the cost study (its finished work collected first), the
 /// shader, the chooser, the things to try (`explanation`: the calculation as it stands, for
-/// their answers), the keys.
-pub fn windows_ui(ctx: &egui::Context, state: &mut AppState, explanation: &phonglab_core::explain::Explanation) {
+/// their answers; kept right of `centre`'s left edge, clear of the controls its words
+/// name), the keys.
+pub fn windows_ui(
+    ctx: &egui::Context,
+    state: &mut AppState,
+    explanation: &phonglab_core::explain::Explanation,
+    centre: egui::Rect,
+) {
     // Finished work is collected before the window is drawn, and a frame is asked for at
     // once when something finished (the result would otherwise wait for the next input).
     let was_running = state.cost.busy() || state.heat_map.busy();
@@ -29,8 +35,8 @@ pub fn windows_ui(ctx: &egui::Context, state: &mut AppState, explanation: &phong
     let shown = share::Shown { lang, channel: state.view_options.channel };
     share::share_window_ui(ctx, &mut state.share, &state.doc, &shown, &mut state.message);
     super::files::chooser_ui(ctx, state);
-    match things_to_try::things_to_try_window_ui(ctx, &mut state.things, explanation, lang) {
-        Some(TryAsked::Load(doc, title)) => state.load(*doc, &title),
+    match things_to_try::things_to_try_window_ui(ctx, &mut state.things, explanation, lang, centre) {
+        Some(TryAsked::Load(doc, title, control)) => state.set_up_experiment(*doc, &title, control.is_some()),
         Some(TryAsked::Step(k)) => {
             // The answer is a step of the calculation: highlighted there, and in view.
             state.ui.layout.calculation_open = true;

@@ -28,6 +28,9 @@ pub fn slider_ui(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::Ran
             s = s.logarithmic(true).smallest_positive(1e-6);
         }
         let slid = ui.add(s);
+        if wanted_in_view(ui.ctx(), label) {
+            slid.scroll_to_me(Some(egui::Align::Center));
+        }
         ui.ctx().accesskit_node_builder(slid.id, |b| b.set_label(label.to_string()));
         landmark(ui.ctx(), label, slid.rect);
         let typed = NumberField::new(value, label).width(FIELD_WIDTH).show_in_row_ui(ui, 1);
@@ -39,6 +42,26 @@ pub fn slider_ui(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::Ran
     })
     .inner
 }
+
+/// Asks the slider labelled `label` to scroll into view the next time it is drawn (an
+/// experiment names the control its words tell the class to move).
+pub fn bring_into_view(ctx: &egui::Context, label: &str) {
+    ctx.data_mut(|d| d.insert_temp(egui::Id::unique(WANTED_IN_VIEW), label.to_string()));
+}
+
+/// Whether the slider labelled `label` was asked into view; the request is then done.
+fn wanted_in_view(ctx: &egui::Context, label: &str) -> bool {
+    ctx.data_mut(|d| {
+        let id = egui::Id::unique(WANTED_IN_VIEW);
+        let wanted = d.get_temp::<String>(id).is_some_and(|l| l == label);
+        if wanted {
+            d.remove::<String>(id);
+        }
+        wanted
+    })
+}
+
+const WANTED_IN_VIEW: &str = "phonglab: the control asked into view";
 
 /// Notes where a named control or picture is this frame (in points), for those who drive
 /// the window from outside: the browser test reads them through the page's probe
