@@ -206,7 +206,9 @@ fn compare_pins_a_and_highlights_the_steps_that_differ() {
     h.run_steps(2);
     h.get_by_label("Pin the current scene as A again").click();
     h.run_steps(2);
-    h.get_by_label_contains("0 of");
+    // Nothing differs yet, and it says so (it said "0 of 17 steps differ: they come first").
+    h.get_by_label_contains("Nothing differs: A and B give the same value at each of the");
+    assert!(h.query_by_label_contains("0 of").is_none());
     // B: f32 and Phong shading.
     h.key_press(egui::Key::P);
     h.key_press(egui::Key::Num2);
@@ -221,7 +223,7 @@ fn compare_pins_a_and_highlights_the_steps_that_differ() {
     // Back to f64: Gouraud against Phong shades differently, but the vertex's steps agree.
     h.key_press(egui::Key::P);
     h.run_steps(2);
-    h.get_by_label_contains("0 of");
+    h.get_by_label_contains("Nothing differs");
     // Another material: the terms it enters differ, the geometry does not.
     h.key_press(egui::Key::M);
     h.run_steps(2);
@@ -263,6 +265,12 @@ fn compare_shows_how_much_gouraud_and_phong_differ() {
         .and_then(|p| p.parse().ok())
         .unwrap_or_else(|| panic!("no percentage in {legend:?}"));
     assert!(percent >= 5.0, "{legend}");
+    // The picture is each channel's difference, in colour: the legend says so (it said
+    // "white is 32/255 or more").
+    assert!(
+        legend.starts_with("Each channel's difference, times 8: a channel is at full strength from 32/255"),
+        "{legend}"
+    );
     let pics: Vec<egui::Rect> = h.state().ui.geometry.pictures.clone();
     assert_eq!(pics.len(), 3, "A, B and the difference: {pics:?}");
     for r in &pics {

@@ -219,6 +219,7 @@ fn difference_ui(ui: &mut Ui, compare: &mut CompareState, background: [f32; 3], 
         ui.label(RichText::new(t!("compare-difference-view", gain = GAIN.to_string())).strong());
         let legend = t!(
             "compare-difference-legend",
+            gain = GAIN.to_string(),
             full = (256 / GAIN).to_string(),
             percent = locale::decimal(&format!("{:.1}", d.visible_percent())),
             visible = VISIBLE.to_string(),
@@ -352,7 +353,11 @@ pub fn compare_ui(
     let differing = pairs.iter().filter(|p| p.4).count();
     // The steps that differ first, each group in the calculation's order.
     pairs.sort_by_key(|p| !p.4);
-    ui.label(t!("compare-differing", differing = differing, all = pairs.len()));
+    ui.label(if differing == 0 {
+        t!("compare-none-differ", all = pairs.len())
+    } else {
+        t!("compare-differing", differing = differing, all = pairs.len())
+    });
     let hi = if ui.visuals().dark_mode { Color32::from_rgb(90, 60, 0) } else { Color32::from_rgb(255, 224, 150) };
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
         // One step after another: its title, then A's value and B's, highlighted where they

@@ -21,6 +21,8 @@ pub struct WrongQuestion {
     pub picked: Option<usize>,
     /// The answer has been checked.
     pub checked: bool,
+    /// Check was just pressed: the verdict is brought into view once.
+    show_verdict: bool,
     key: Vec<String>,
     images: [ColorImage; 2],
     textures: Option<[TextureHandle; 2]>,
@@ -46,7 +48,7 @@ impl WrongQuestion {
         let key = misconception::key_lines(&case, &drawn);
         let image = |rgba: &[u8]| ColorImage::from_rgba_unmultiplied([PX, PX], rgba);
         let images = [image(&drawn.correct), image(&drawn.bugged)];
-        Ok(Self { kind, picked: None, checked: false, key, images, textures: None })
+        Ok(Self { kind, picked: None, checked: false, show_verdict: false, key, images, textures: None })
     }
 
     /// Is the answer picked the mistake drawn?
@@ -85,6 +87,7 @@ pub fn wrong_question_ui(ui: &mut Ui, q: &mut WrongQuestion) {
     }
     if ui.add_enabled(q.picked.is_some(), egui::Button::new(t!("wrong-check"))).clicked() {
         q.checked = true;
+        q.show_verdict = true;
     }
     if q.checked {
         let (text, colour) = if q.right() {
@@ -92,9 +95,18 @@ pub fn wrong_question_ui(ui: &mut Ui, q: &mut WrongQuestion) {
         } else {
             (t!("wrong-wrong-answer"), palette::ink(ui, palette::ERROR))
         };
-        ui.colored_label(colour, RichText::new(text).strong());
-        for line in &q.key {
-            ui.label(line);
+        let verdict = ui.colored_label(colour, RichText::new(text).strong());
+        let mut shown = verdict.rect;
+        for (k, line) in q.key.iter().enumerate() {
+            let r = ui.label(line).rect;
+            if k == 0 {
+                shown = shown.union(r);
+            }
+        }
+        // The verdict came in below the fold: scroll just enough to show it and the key's
+        // first line (the cause), once; the choices stay above as far as they fit.
+        if std::mem::take(&mut q.show_verdict) {
+            ui.scroll_to_rect(shown, None);
         }
     }
 }
