@@ -96,6 +96,8 @@ fn gouraud_on_a_coarse_sphere_works_the_vertex_nearest_a_dim_star() {
     assert_eq!((doc.view.shading, doc.view.sphere_slices, doc.view.sphere_stacks), (Shading::Gouraud, 8, 6));
     assert_eq!(doc.scene.material.shininess, 100.0, "a sharp highlight (shininess 100)");
     assert_calculation_is_the_pictures(doc);
+    // Exactly the picture's frame: the arrows stand on the sphere at the worked vertex.
+    assert_eq!(doc.with_vertex_as_shaded(doc.scene.vertex), *doc);
     // The worked vertex is one of the mesh's.
     let mesh = doc.view.mesh();
     let v = doc.scene.vertex;
