@@ -60,6 +60,8 @@ fn probe_at(w: f32, ht: f32) {
     let stored = h.get_by_label(&want).rect();
     assert!(h.query_by_label("Stored, clamped and rounded to 8 bits").is_some());
     assert!(h.query_by_label("Perspective-correct weights").is_some());
+    // The worksheet's at, and the factor OpenGL multiplies by under its own name.
+    assert!(h.query_all_by_label("Attenuation").count() >= 1 && h.query_by_label_contains("1/at = ").is_some());
     // The window lies on screen, to the right of the picture.
     let window_now = h.get_by_label("Pixel probe").rect();
     let screen = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(w, ht));

@@ -117,7 +117,7 @@ fn terms_lines(p: &Probe, out: &mut Vec<ReportLine>) {
         let (label, name) = q(Quantity::Attenuation);
         let at = if l.attenuation == 0.0 { f64::INFINITY } else { 1.0 / l.attenuation };
         out.push(line(label, name, num(at, 4), 1));
-        out.push(line(tr("probe-attenuation-factor"), &format!("1/{name}"), num(l.attenuation, 4), 1));
+        out.push(line(tr("probe-attenuation-factor"), "", format!("1/{name} = {}", num(l.attenuation, 4)), 1));
         for (qq, v) in [(Quantity::Spot, l.spot), (Quantity::CosTheta, l.n_dot_l), (Quantity::CosBeta, l.n_dot_h)] {
             let (label, name) = q(qq);
             out.push(line(label, name, num(v, 4), 1));
