@@ -121,8 +121,8 @@ f64-hover = Calcular em precisão dupla
 cost-of-accuracy = Custo da exatidão
 cost-hover = O que cada sombreamento, tesselação e aproximação custa em tempo e em erro
 help-button = Ajuda (F1)
-undo-what = Desfazer { $what } (Ctrl+Z)
-redo-what = Refazer { $what } (Ctrl+Shift+Z, Ctrl+Y)
+undo-what = Desfazer: { $what } (Ctrl+Z)
+redo-what = Refazer: { $what } (Ctrl+Shift+Z, Ctrl+Y)
 undo-button = ⟲ Desfazer
 redo-button = ⟳ Refazer
 nothing-to-undo = Nada para desfazer
@@ -285,6 +285,66 @@ history-open = abrir { $what }
 loaded = Aberto: { $what }.
 undid = Desfeito: { $what }.
 redid = Refeito: { $what }.
+history-no-change = sem alteração
+history-and-more = { $field } e mais { $count }
+history-light-added = luz { $index } adicionada
+history-light-removed = luz { $index } removida
+history-none = (nenhum)
+history-on = ligado
+history-off = desligado
+# A changed field of the scene, as the undo history names it. $field is the scene file's
+# path with dots as dashes and a light's number taken out (light-position of light $index).
+history-field = { $field ->
+    [name] nome da cena
+    [rules] { rule-set }
+    [specular] { specular-model }
+    [normals] { normals }
+    [light_model-ambient] { scene-ambient }
+    [light_model-local_viewer] { local-viewer }
+    [light_model-two_sided] { two-sided }
+    [light_model-separate_specular] { separate-specular }
+    [camera] { camera }
+    [object_matrix] { object-placement }
+    [material-preset] material
+    [material-ambient] { material-ambient }
+    [material-diffuse] { material-diffuse }
+    [material-specular] { material-specular }
+    [material-emission] { material-emission }
+    [material-shininess] { material-shininess }
+    [back_material] { separate-back-material }
+    [color_material] { color-material }
+    [light-position] luz { $index }: posição
+    [light-ambient] luz { $index }: ambiente
+    [light-diffuse] luz { $index }: difusa
+    [light-specular] luz { $index }: especular
+    [light-spot_direction] luz { $index }: direção do foco
+    [light-spot_cutoff] luz { $index }: abertura do foco
+    [light-spot_exponent] luz { $index }: expoente do foco
+    [light-attenuation] luz { $index }: coeficientes de atenuação (k0, k1, k2)
+    [light-placement] luz { $index }: presa a
+    [vertex-position] { quantity-vertex-position }
+    [vertex-normal] { quantity-vertex-normal }
+    [view-object] objeto
+    [view-obj] { mesh-file }
+    [view-shading] sombreamento
+    [view-sphere_slices] { sphere-slices }
+    [view-sphere_stacks] { sphere-stacks }
+    [view-teapot_grid] { teapot-grid }
+    [view-cylinder_slices] { cylinder-slices }
+    [view-cylinder_stacks] { cylinder-stacks }
+    [view-cylinder_caps] tampas do cilindro
+    [view-cylinder_centered] cilindro centrado
+    [view-demo_normals] { demo-normals }
+    [view-auto_rotate] { auto-rotate }
+    [view-spin_degrees] rotação
+    [view-framing] enquadramento
+    [view-lighting_space] espaço da iluminação
+    [view-flat_normal] { flat-derivatives }
+    [view-phong_renormalize] { phong-renormalises }
+    [view-background] fundo
+    [view-camera] câmera da vista
+   *[other] a cena
+}
 not-whole = { $text } não é um número inteiro
 outside-range = { $text } está fora de { $min } a { $max }
 numbers-type-one = { $count } números: digite um

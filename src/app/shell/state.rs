@@ -154,7 +154,7 @@ impl AppState {
 impl AppState {
     /// Undoes the last change of the scene, saying what was undone.
     pub fn undo(&mut self) {
-        self.message = Some(Message::Info(match self.history.undo(&self.doc) {
+        self.message = Some(Message::Info(match self.history.undo() {
             Some((doc, label)) => {
                 self.set_doc(doc);
                 phonglab_core::t!("undid", what = label)
@@ -165,7 +165,7 @@ impl AppState {
 
     /// Redoes the last undone change, saying what was redone.
     pub fn redo(&mut self) {
-        self.message = Some(Message::Info(match self.history.redo(&self.doc) {
+        self.message = Some(Message::Info(match self.history.redo() {
             Some((doc, label)) => {
                 self.set_doc(doc);
                 phonglab_core::t!("redid", what = label)
@@ -210,7 +210,7 @@ mod tests {
         // The refused edit left no step; the kept one is undone.
         s.undo();
         assert_eq!(s.doc, before);
-        assert_eq!(s.message, Some(Message::Info("Undid shininess 25.6 ➡ 100.".into())));
+        assert_eq!(s.message, Some(Message::Info("Undid: Material shininess 25.6 ➡ 100.".into())));
         s.redo();
         assert_eq!(s.doc.scene.material.shininess, 100.0);
     }
