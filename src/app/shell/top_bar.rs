@@ -106,15 +106,22 @@ fn object_and_shading_ui(ui: &mut Ui, state: &mut AppState) {
     for (k, o) in [("s", ObjectKind::Sphere), ("t", ObjectKind::Teapot), ("c", ObjectKind::Cylinder)] {
         ui.selectable_value(&mut view.object, o, o.label()).on_hover_text(t!("key-hint", key = k));
     }
+    let mut close = false;
     if let Some(path) = &view.obj {
         let tip = t!("mesh-tip", path = path);
         ui.selectable_value(&mut view.object, ObjectKind::Obj, ObjectKind::Obj.label()).on_hover_text(tip);
+        // Kept through changes of scene until closed here.
+        let x = ui.add(egui::Button::new("×").small().frame(false));
+        x.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, t!("close-mesh")));
+        close = x.on_hover_text(t!("close-mesh-hover")).clicked();
     }
     ui.separator();
     for (k, s) in [("1", Shading::Gouraud), ("2", Shading::Phong), ("3", Shading::Flat)] {
         ui.selectable_value(&mut view.shading, s, s.label()).on_hover_text(t!("key-hint", key = k));
     }
-    if view != state.doc.view {
+    if close {
+        state.close_mesh();
+    } else if view != state.doc.view {
         let mut c = state.doc.clone();
         c.view = view;
         state.apply(c);
