@@ -161,6 +161,54 @@ fn the_vectors_are_drawn_on_the_object_after_a_click_and_point_the_right_way() {
     h.get_by_label_contains("Faded, open head");
 }
 
+/// A turn of the camera keeps the arrows on the object, on the same vertex, recomputed
+/// every frame from the calculation under the turned camera: turning until N points at the
+/// viewer shortens N on the screen to nearly nothing.
+#[test]
+fn the_arrows_stay_on_the_vertex_while_the_camera_turns() {
+    let mut h = harness_at(1440.0, 900.0);
+    let image = h.get_all_by_role(Role::Image).next().unwrap().rect();
+    // The vertex on the teapot's right side: N points right, across the screen.
+    let at = image.center() + egui::vec2(image.width() * 0.15, 0.0);
+    h.drag_at(at);
+    h.drop_at(at);
+    h.run_steps(2);
+    let vertex = h.state().doc.scene.vertex;
+    let n_of = |h: &Harness<'static, AppState>| {
+        let a = h.state().ui.geometry.arrows.iter().find(|a| a.name == "N").cloned();
+        a.map(|a| (a.to - a.from).length())
+    };
+    let across = n_of(&h).expect("arrows after the click");
+    let yaw = h.state().doc.view.camera.yaw;
+    // Drag on the picture (away from the light's marker): the camera turns towards the
+    // vertex's side, in steps of a frame each, the button held.
+    let from = image.center() + egui::vec2(-image.width() * 0.3, -image.height() * 0.3);
+    common::press_and_move(&mut h, from, from + egui::vec2(-66.0, 0.0));
+    h.run_steps(1);
+    let doc = h.state().doc.clone();
+    assert_ne!(doc.view.camera.yaw, yaw, "the camera turned");
+    assert_eq!(doc.scene.vertex, vertex, "the same vertex");
+    let eval = h.state().evaluate().unwrap();
+    let arrows = vector_arrows(&doc, &eval, image);
+    let names: Vec<&str> = arrows.iter().map(|a| a.name.as_str()).collect();
+    assert_eq!(names, ["L", "H", "V", "N"], "the arrows stay through the turn");
+    assert_eq!(h.state().ui.geometry.arrows, arrows, "drawn from the calculation under the turned camera");
+    let facing = n_of(&h).unwrap();
+    assert!(eval.n.z > 0.9, "N points at the viewer now: {:?}", eval.n);
+    assert!(facing < 0.5 * across, "N foreshortened: {across} -> {facing}");
+    common::button(&mut h, from + egui::vec2(-66.0, 0.0), false);
+    h.run_steps(2);
+    assert!(!h.state().ui.geometry.arrows.is_empty(), "and after the button is let go");
+    // The object spinning (Auto-rotate) carries the vertex and its arrows with it.
+    h.state_mut().doc.view.auto_rotate = true;
+    h.run_steps(6);
+    let doc = h.state().doc.clone();
+    assert_eq!(doc.scene.vertex, vertex);
+    assert!(doc.view.spin_degrees > 0.0);
+    let eval = h.state().evaluate().unwrap();
+    assert_eq!(vector_arrows(&doc, &eval, image).len(), 4, "the arrows spin with the object");
+}
+
 #[test]
 fn dragging_the_light_marker_moves_the_light() {
     let mut h = harness_at(1440.0, 900.0);

@@ -57,8 +57,14 @@ pub(super) fn interaction_ui(
         }
     }
     if cam != camera {
+        // The vertex on the object stays the worked one, seen from the turned camera: its
+        // arrows are drawn again next frame, from the calculation made under it.
+        let on_object = vertex_on_object(state.edit.doc);
         let mut c = state.edit.doc.clone();
         c.view.camera = cam;
+        if on_object {
+            c = c.with_vertex_as_shaded(c.scene.vertex);
+        }
         state.edit.apply(c);
     }
     // With the probe on, a click pins the probe's pixel instead (`probe_ui`).
@@ -200,7 +206,7 @@ impl Overlay {
 /// any scene whose frame is the view's).
 pub fn vector_arrows(doc: &Document, eval: &Evaluated, rect: egui::Rect) -> Vec<ArrowOnObject> {
     let mut out = Vec::new();
-    if doc.with_vertex_as_shaded(doc.scene.vertex) != *doc || doc.scene.vertex.position.w == 0.0 {
+    if !vertex_on_object(doc) {
         return out;
     }
     let scene = doc.shaded_scene();
@@ -234,6 +240,13 @@ pub fn vector_arrows(doc: &Document, eval: &Evaluated, rect: egui::Rect) -> Vec<
     add(eval.v, crate::app::widgets::palette::V, "V".into());
     add(eval.n, crate::app::widgets::palette::N, "N".into());
     out
+}
+
+/// Whether the worked calculation's vertex is one the shaded view draws, as the view lights
+/// it (after a click on the surface, or in any scene whose frame is the view's): then its
+/// arrows stand on the object, and a turn of the camera or of the object keeps them there.
+pub fn vertex_on_object(doc: &Document) -> bool {
+    doc.scene.vertex.position.w != 0.0 && doc.with_vertex_as_shaded(doc.scene.vertex) == *doc
 }
 
 /// Draws [`vector_arrows`] on the image as they are projected (one world length each, so
