@@ -234,6 +234,58 @@ fn dragging_the_light_marker_moves_the_light() {
     assert_eq!(h.state().doc.view.camera, phonglab_core::Document::default().view.camera, "the view did not orbit");
 }
 
+/// At the start, light 0 sits behind the camera: its marker stands at the picture's edge,
+/// and dragging it moves the light in the plane facing the viewer (the way the pointer
+/// goes), not the camera. A light in front but off the picture comes to the pointer.
+#[test]
+fn a_light_marker_at_the_edge_drags_the_light() {
+    for (w, hgt) in [(1280.0, 720.0), (1024.0, 600.0)] {
+        let mut h = harness_at(w, hgt);
+        let in_eye = |h: &Harness<'static, AppState>| {
+            let d = &h.state().doc;
+            let s = d.shaded_scene();
+            let p = s.light_pos_in_eye(&s.lights[0]);
+            p.truncate() / p.w
+        };
+        let before = in_eye(&h);
+        assert!(before.z > 0.0, "behind the camera: {before:?}");
+        let camera = h.state().doc.view.camera;
+        let marker = h.get_by_label("light 0 marker").rect().center();
+        common::press_and_move(&mut h, marker, marker + egui::vec2(60.0, -30.0));
+        common::button(&mut h, marker + egui::vec2(60.0, -30.0), false);
+        h.run_steps(2);
+        assert_eq!(h.state().doc.view.camera, camera, "{w}x{hgt}: the camera did not turn");
+        let after = in_eye(&h);
+        assert!(
+            after.x > before.x + 1.0 && after.y > before.y + 0.5,
+            "{w}x{hgt}: right and up: {before:?} -> {after:?}"
+        );
+        assert!(
+            (after.z - before.z).abs() < 1e-6,
+            "{w}x{hgt}: in the plane facing the viewer: {before:?} -> {after:?}"
+        );
+        // One step to undo.
+        assert_eq!(h.state().history.depth(), 1);
+    }
+    // A light in front of the camera, off the picture to the right: dragged from its marker
+    // onto the picture, it comes to the pointer.
+    let mut h = harness_at(1280.0, 720.0);
+    let mut doc = h.state().doc.clone();
+    doc.scene.lights[0].position = glam::DVec4::new(6.0, 0.0, 0.0, 1.0);
+    doc.scene.lights[0].placement = phonglab_core::LightPlacement::World;
+    assert!(h.state_mut().apply(doc));
+    h.run_steps(2);
+    let image = h.get_all_by_role(Role::Image).next().unwrap().rect();
+    let marker = h.get_by_label("light 0 marker").rect();
+    assert!(marker.max.x > image.max.x - 40.0, "at the right edge: {marker:?} in {image:?}");
+    let to = image.center() + egui::vec2(image.width() * 0.25, -image.height() * 0.2);
+    common::press_and_move(&mut h, marker.center(), to);
+    common::button(&mut h, to, false);
+    h.run_steps(2);
+    let on = h.get_by_label("light 0 marker").rect().center();
+    assert!((on - to).length() < 3.0, "the marker is under the pointer: {on:?}, {to:?}");
+}
+
 #[test]
 fn the_lobe_follows_the_shininess() {
     let mut h = harness_at(1440.0, 900.0);

@@ -100,7 +100,8 @@ fn field_name(key: &str) -> String {
     let (field, index) = match (parts.next(), parts.next(), parts.next()) {
         (Some("lights"), Some(i), Some(field)) => (format!("light-{field}"), i.to_string()),
         _ => {
-            let whole = WHOLE.into_iter().find(|g| key.strip_prefix(g).is_some_and(|r| r.is_empty() || r.starts_with('.')));
+            let whole =
+                WHOLE.into_iter().find(|g| key.strip_prefix(g).is_some_and(|r| r.is_empty() || r.starts_with('.')));
             (whole.unwrap_or(key).replace('.', "-"), String::new())
         }
     };

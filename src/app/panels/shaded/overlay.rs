@@ -184,6 +184,25 @@ impl Overlay {
         self.screen_from_object(self.object_from_eye * p.extend(1.0))
     }
 
+    /// The object-space point `at` (behind the camera, where no screen point is its) moved
+    /// by `delta` points in the plane facing the viewer at its distance: as far as `delta`
+    /// would move a point that far in front, so a marker at the picture's edge drags a
+    /// light behind the camera the way the pointer goes.
+    fn moved_behind(&self, at: DVec4, delta: egui::Vec2) -> Option<DVec4> {
+        let eye = self.object_from_eye.inverse() * at;
+        let clip_from_eye = self.clip_from_object * self.object_from_eye;
+        let (sx, sy) = (clip_from_eye.x_axis.x, clip_from_eye.y_axis.y);
+        if eye.w == 0.0 || sx == 0.0 || sy == 0.0 {
+            return None;
+        }
+        let depth = (eye.z / eye.w).abs();
+        let dx = delta.x as f64 * 2.0 / self.rect.width() as f64 * depth / sx;
+        let dy = -delta.y as f64 * 2.0 / self.rect.height() as f64 * depth / sy;
+        let moved = eye / eye.w + DVec4::new(dx, dy, 0.0, 0.0);
+        let p = self.object_from_eye * moved;
+        (p.is_finite() && p.w != 0.0).then(|| p / p.w)
+    }
+
     /// The object-space point under the screen point `pos`, at the depth of the
     /// object-space point `at` (so a dragged marker stays at its distance).
     fn object_at(&self, pos: egui::Pos2, at: DVec4) -> Option<DVec4> {
@@ -376,6 +395,14 @@ fn name_on_picture(ui: &Ui, at: egui::Pos2, align: egui::Align2, name: String) -
     rect.expand(2.0)
 }
 
+/// The pointer's hold on light `i`'s marker at `hit` (on the picture, or at its edge): a
+/// drag moves the light.
+fn marker_response(ui: &Ui, hit: egui::Rect, i: usize) -> egui::Response {
+    let r = ui.interact(hit, ui.scope_id().with(("light marker", i)), Sense::drag());
+    r.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, format!("light {i} marker")));
+    r.on_hover_text(t!("light-drag", index = i.to_string()))
+}
+
 /// A spotlight's cone as the view shows it: the rim of the cut-off circle where the cone
 /// reaches the object's distance (48 points on screen), `None` for a light that is no
 /// spotlight or whose cone does not project.
@@ -403,8 +430,8 @@ fn spot_cone(
         .collect()
 }
 
-/// Each light as a marker where the view draws it; a marker can be dragged (in the plane
-/// facing the viewer), which moves the light. Returns whether a marker is being dragged,
+/// Each light as a marker where the view draws it, or at the picture's edge towards it; a
+/// marker can be dragged (in the plane facing the viewer), which moves the light. Returns whether a marker is being dragged,
 /// where each light's mark and name are (on the picture or at its edge), and the bounds of
 /// each spotlight's cone on it.
 fn lights_ui(
@@ -446,7 +473,27 @@ fn lights_ui(
                         egui::vec2(e.x as f32, -e.y as f32)
                     }
                 };
-                marks.push(light_off_view_ui(ui, o.rect, towards, i, seen.is_none()));
+                let mark = light_off_view_ui(ui, o.rect, towards, i, seen.is_none());
+                marks.push(mark);
+                // Dragged, it moves the light too, in the plane facing the viewer.
+                let r = marker_response(ui, mark, i);
+                if r.hovered() || r.dragged() {
+                    let stroke = egui::Stroke::new(2.0, Color32::from_rgb(255, 230, 120));
+                    ui.painter().rect_stroke(mark, 4.0, stroke, egui::StrokeKind::Outside);
+                }
+                if r.dragged() {
+                    dragging = true;
+                    let to = match seen {
+                        // In front: to the pointer, at the light's depth (it comes onto
+                        // the picture under the hand).
+                        Some(_) => r.interact_pointer_pos().and_then(|at| o.object_at(at, p)),
+                        // Behind the camera: by the drag, at the light's distance.
+                        None => o.moved_behind(p, r.drag_delta()),
+                    };
+                    if let Some(to) = to {
+                        moved = Some((i, to, in_object.w == 0.0));
+                    }
+                }
                 continue;
             }
         };
@@ -457,9 +504,7 @@ fn lights_ui(
             }
         }
         let hit = egui::Rect::from_center_size(pos, egui::vec2(18.0, 18.0));
-        let r = ui.interact(hit, ui.scope_id().with(("light marker", i)), Sense::drag());
-        r.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, format!("light {i} marker")));
-        let r = r.on_hover_text(t!("light-drag", index = i.to_string()));
+        let r = marker_response(ui, hit, i);
         let ring = if r.hovered() || r.dragged() { 3.0 } else { 1.5 };
         ui.painter().circle(pos, 7.0, Color32::from_rgb(255, 230, 120), egui::Stroke::new(ring, Color32::BLACK));
         let name = name_on_picture(
