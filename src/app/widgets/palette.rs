@@ -19,6 +19,9 @@ pub const V: Color32 = Color32::from_rgb(0x00, 0x9E, 0x73);
 pub const H: Color32 = Color32::from_rgb(0xCC, 0x79, 0xA7);
 /// R, the reflection of L: it takes H's place under Phong's model, so H's colour (dashed).
 pub const R: Color32 = H;
+/// M n, the normal moved as a point would be, beside the true N (Okabe-Ito sky blue, a
+/// lighter N; drawn dotted).
+pub const NAIVE_NORMAL: Color32 = Color32::from_rgb(0x56, 0xB4, 0xE9);
 /// S, the spot axis (Okabe-Ito orange; drawn dotted).
 pub const SPOT: Color32 = Color32::from_rgb(0xE6, 0x9F, 0x00);
 /// Notes where the engine took a limit.
