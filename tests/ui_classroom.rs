@@ -266,6 +266,24 @@ fn a_light_marker_at_the_edge_drags_the_light() {
         );
         // One step to undo.
         assert_eq!(h.state().history.depth(), 1);
+        // A quick hand: pressed and moved within one frame, already off the marker when
+        // the drag starts. The light moves still, not the camera.
+        let marker = h.get_by_label("light 0 marker").rect().center();
+        let before = in_eye(&h);
+        h.input_mut().events.push(egui::Event::PointerMoved(marker));
+        h.run_steps(2);
+        common::button(&mut h, marker, true);
+        h.input_mut().events.push(egui::Event::PointerMoved(marker + egui::vec2(-20.0, -40.0)));
+        h.step();
+        for k in 1..=4 {
+            h.input_mut().events.push(egui::Event::PointerMoved(marker + egui::vec2(-20.0 - 10.0 * k as f32, -40.0)));
+            h.step();
+        }
+        common::button(&mut h, marker + egui::vec2(-60.0, -40.0), false);
+        h.run_steps(2);
+        assert_eq!(h.state().doc.view.camera, camera, "{w}x{hgt}: a quick drag does not turn the camera");
+        let after = in_eye(&h);
+        assert!(after.x < before.x - 1.0, "{w}x{hgt}: left: {before:?} -> {after:?}");
     }
     // A light in front of the camera, off the picture to the right: dragged from its marker
     // onto the picture, it comes to the pointer.

@@ -7,7 +7,7 @@
 //!
 //! Its parts: what it is given ([`context`]), the toolbar and options (`toolbar`), the
 //! pictures (`pictures`), what the pointer does on them and what is drawn over them
-//! (`overlay`), the renderer's cache ([`cache`]) and the GPU's picture ([`gpu`]).
+//! (`overlay`; the lights, `light_marks`; both through `screen`), the renderer's cache ([`cache`]) and the GPU's picture ([`gpu`]).
 
 mod arrow_on_object;
 pub mod cache;
@@ -15,9 +15,11 @@ pub mod channel_view;
 pub mod context;
 pub mod gpu;
 pub mod heat_map;
+mod light_marks;
 mod overlay;
 mod pictures;
 pub mod probe_window;
+mod screen;
 mod toolbar;
 
 use egui::Ui;
