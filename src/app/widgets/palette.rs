@@ -52,13 +52,21 @@ pub fn contrast(a: Color32, b: Color32) -> f32 {
     (la.max(lb) + 0.05) / (la.min(lb) + 0.05)
 }
 
+/// The least contrast a letter keeps against what it is written on (WCAG's for text).
+pub const TEXT_CONTRAST: f32 = 4.5;
+
 /// `c` as drawn on `background`: as it is where its contrast is at least [`MIN_CONTRAST`],
 /// otherwise darkened (on a light background) or lightened (on a dark one) until it is.
 pub fn ink_on(c: Color32, background: Color32) -> Color32 {
+    ink_with_contrast(c, background, MIN_CONTRAST)
+}
+
+/// [`ink_on`] to the contrast `least` (a symbol's letter: [`TEXT_CONTRAST`]).
+pub fn ink_with_contrast(c: Color32, background: Color32, least: f32) -> Color32 {
     let light_bg = luminance(background) > 0.18;
     let mut out = c;
     for k in 1..=20 {
-        if contrast(out, background) >= MIN_CONTRAST {
+        if contrast(out, background) >= least {
             break;
         }
         let t = k as f32 / 20.0;

@@ -271,7 +271,11 @@ fn vectors_on_object_ui(
                 gap: width,
             });
         }
-        galleys.push(p.layout_no_wrap(a.name.clone(), font.clone(), c));
+        // The letter whole even where its arrow is faded, at a text's contrast on the
+        // picture (faded letters were unreadable on the demo's black picture).
+        let letter =
+            crate::app::widgets::palette::ink_with_contrast(a.colour, bg, crate::app::widgets::palette::TEXT_CONTRAST);
+        galleys.push(p.layout_no_wrap(a.name.clone(), font.clone(), letter));
     }
     paint_labels(&p, wanted, galleys, &lines, rect, Some(outline.gamma_multiply(0.6)));
     p.circle_filled(from, width * 1.3, on_picture(crate::app::widgets::palette::N));
