@@ -142,4 +142,19 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn letters_read_at_a_texts_contrast_on_any_picture() {
+        // The Phong demo's black picture, the start's dark blue one, a white one, mid grey.
+        let backgrounds = [Color32::BLACK, Color32::from_rgb(20, 24, 40), Color32::WHITE, Color32::from_gray(128)];
+        for bg in backgrounds {
+            for (name, c) in [("N", N), ("L", L), ("V", V), ("H", H), ("M n", NAIVE_NORMAL)] {
+                let k = contrast(ink_with_contrast(c, bg, TEXT_CONTRAST), bg);
+                assert!(k >= TEXT_CONTRAST, "{name} on {bg:?}: {k:.2}");
+            }
+        }
+        // N's own blue on black is under it (3.2:1): the letter is lightened.
+        assert!(contrast(N, Color32::BLACK) < TEXT_CONTRAST);
+        assert_ne!(ink_with_contrast(N, Color32::BLACK, TEXT_CONTRAST), N);
+    }
 }
