@@ -225,3 +225,44 @@ fn on_the_object_the_eye_drag_turns_the_orbit_camera() {
     assert_ne!(moved.view.camera, on.view.camera, "the orbit camera turned");
     assert_eq!(moved.with_vertex_as_shaded(moved.scene.vertex), moved, "the vertex is still the shaded view's");
 }
+
+/// The marks' names stand clear of every mark and of each other: at the start, light 0 lies
+/// far behind the eye and projects near it, and its name was drawn under the eye's dot.
+/// M n is dotted and H dashed, so neither is told from the other (nor from N, L, V) by
+/// colour alone.
+#[test]
+fn the_marks_names_keep_clear_and_no_vector_is_told_by_colour_alone() {
+    for (w, hgt) in [(1024.0, 600.0), (1280.0, 720.0), (1920.0, 1080.0)] {
+        let mut h = Harness::builder()
+            .with_size([w, hgt])
+            .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+        h.state_mut().director.open = true;
+        h.run_steps(3);
+        let picture = h.get_by_role_and_label(Role::Image, "Director's view").rect();
+        let st = stage_of(&h.state().doc, Space::World);
+        let dots: Vec<egui::Pos2> = st
+            .marks
+            .iter()
+            .filter_map(|m| phonglab::app::panels::director::screen_point(picture, &st, &h.state().director, m.at))
+            .collect();
+        assert!(dots.len() >= 3, "the eye, the light, the vertex: {dots:?}");
+        let names: Vec<egui::Rect> =
+            ["eye", "light 0", "vertex"].iter().map(|n| h.get_by_role_and_label(Role::Label, n).rect()).collect();
+        for (i, a) in names.iter().enumerate() {
+            assert!(picture.contains_rect(*a), "{w}x{hgt}: {a:?} inside {picture:?}");
+            for d in &dots {
+                let gap = egui::Rect::from_center_size(*d, egui::vec2(10.0, 10.0));
+                assert!(!a.intersects(gap), "{w}x{hgt}: name {i} at {a:?} covers the dot at {d:?}");
+            }
+            for b in &names[i + 1..] {
+                assert!(!a.intersects(*b), "{w}x{hgt}: names {a:?} and {b:?} overlap");
+            }
+        }
+    }
+    use phonglab::app::panels::director::pattern_of;
+    let (h, naive) = (pattern_of(Kind::Halfway(0)), pattern_of(Kind::NaiveNormal));
+    assert!(h.is_some() && naive.is_some() && h != naive, "{h:?} {naive:?}");
+    for solid in [Kind::Normal, Kind::ToEye, Kind::ToLight(0)] {
+        assert_eq!(pattern_of(solid), None);
+    }
+}

@@ -681,6 +681,50 @@ fn an_obj_mesh_opens_from_the_path_field_and_a_bad_one_is_refused_with_its_line(
     assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Obj);
 }
 
+/// Clicks `item` in the Scene menu (the controls have a "Spotlight" checkbox too).
+fn scene_menu_item(h: &mut Harness<'static, AppState>, item: &str) {
+    common::open_menu(h, &["Scene"]);
+    h.get_all_by_label(item).find(|n| n.accesskit_node().role() == Role::Button).unwrap().click();
+    h.run_steps(2);
+    h.key_press(egui::Key::Escape);
+    h.run_steps(2);
+}
+
+/// The user's mesh stays offered ("Your mesh" in the top bar) through changes of scene, from
+/// the Scene menu and a reset alike, until the user closes it there.
+#[test]
+fn the_users_mesh_stays_through_a_change_of_scene_until_it_is_closed() {
+    let dir = temp_dir("obj-kept");
+    let mesh = dir.join("tetra.obj");
+    std::fs::write(&mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n").unwrap();
+    let mut h = harness();
+    phonglab::app::shell::files::open_obj(h.state_mut(), &mesh);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Obj, "{:?}", h.state().message);
+    let path = h.state().doc.view.obj.clone();
+    assert!(path.is_some());
+    scene_menu_item(&mut h, "Spotlight");
+    assert_eq!(h.state().doc.name, "a spotlight", "{:?}", h.state().message);
+    assert_eq!(h.state().doc.view.obj, path, "the mesh stays offered");
+    h.get_by_label("Your mesh").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Obj, "shown under the new scene's lights");
+    assert_eq!(h.state().doc.scene.lights[0].spot_cutoff, 12.0);
+    scene_menu_item(&mut h, "Reset to worksheet");
+    assert_eq!(h.state().doc.view.obj, path, "a reset keeps it too");
+    h.get_by_label("Your mesh");
+    // Closed: the top bar offers it no more, and the next scene does not bring it back.
+    h.get_by_label("Your mesh").click();
+    h.run_steps(2);
+    h.get_by_label("Close your mesh").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.view.obj, None);
+    assert_ne!(h.state().doc.view.object, phonglab_core::ObjectKind::Obj);
+    assert!(h.query_by_label("Your mesh").is_none());
+    scene_menu_item(&mut h, "Spotlight");
+    assert!(h.query_by_label("Your mesh").is_none());
+}
+
 #[test]
 fn dropping_an_obj_file_shows_it() {
     let dir = temp_dir("drop-obj");

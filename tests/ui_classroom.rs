@@ -161,6 +161,54 @@ fn the_vectors_are_drawn_on_the_object_after_a_click_and_point_the_right_way() {
     h.get_by_label_contains("Faded, open head");
 }
 
+/// A turn of the camera keeps the arrows on the object, on the same vertex, recomputed
+/// every frame from the calculation under the turned camera: turning until N points at the
+/// viewer shortens N on the screen to nearly nothing.
+#[test]
+fn the_arrows_stay_on_the_vertex_while_the_camera_turns() {
+    let mut h = harness_at(1440.0, 900.0);
+    let image = h.get_all_by_role(Role::Image).next().unwrap().rect();
+    // The vertex on the teapot's right side: N points right, across the screen.
+    let at = image.center() + egui::vec2(image.width() * 0.15, 0.0);
+    h.drag_at(at);
+    h.drop_at(at);
+    h.run_steps(2);
+    let vertex = h.state().doc.scene.vertex;
+    let n_of = |h: &Harness<'static, AppState>| {
+        let a = h.state().ui.geometry.arrows.iter().find(|a| a.name == "N").cloned();
+        a.map(|a| (a.to - a.from).length())
+    };
+    let across = n_of(&h).expect("arrows after the click");
+    let yaw = h.state().doc.view.camera.yaw;
+    // Drag on the picture (away from the light's marker): the camera turns towards the
+    // vertex's side, in steps of a frame each, the button held.
+    let from = image.center() + egui::vec2(-image.width() * 0.3, -image.height() * 0.3);
+    common::press_and_move(&mut h, from, from + egui::vec2(-66.0, 0.0));
+    h.run_steps(1);
+    let doc = h.state().doc.clone();
+    assert_ne!(doc.view.camera.yaw, yaw, "the camera turned");
+    assert_eq!(doc.scene.vertex, vertex, "the same vertex");
+    let eval = h.state().evaluate().unwrap();
+    let arrows = vector_arrows(&doc, &eval, image);
+    let names: Vec<&str> = arrows.iter().map(|a| a.name.as_str()).collect();
+    assert_eq!(names, ["L", "H", "V", "N"], "the arrows stay through the turn");
+    assert_eq!(h.state().ui.geometry.arrows, arrows, "drawn from the calculation under the turned camera");
+    let facing = n_of(&h).unwrap();
+    assert!(eval.n.z > 0.9, "N points at the viewer now: {:?}", eval.n);
+    assert!(facing < 0.5 * across, "N foreshortened: {across} -> {facing}");
+    common::button(&mut h, from + egui::vec2(-66.0, 0.0), false);
+    h.run_steps(2);
+    assert!(!h.state().ui.geometry.arrows.is_empty(), "and after the button is let go");
+    // The object spinning (Auto-rotate) carries the vertex and its arrows with it.
+    h.state_mut().doc.view.auto_rotate = true;
+    h.run_steps(6);
+    let doc = h.state().doc.clone();
+    assert_eq!(doc.scene.vertex, vertex);
+    assert!(doc.view.spin_degrees > 0.0);
+    let eval = h.state().evaluate().unwrap();
+    assert_eq!(vector_arrows(&doc, &eval, image).len(), 4, "the arrows spin with the object");
+}
+
 #[test]
 fn dragging_the_light_marker_moves_the_light() {
     let mut h = harness_at(1440.0, 900.0);
@@ -184,6 +232,76 @@ fn dragging_the_light_marker_moves_the_light() {
     let moved = h.get_by_label("light 0 marker").rect().center();
     assert!((moved.x - marker.x - 30.0).abs() < 3.0 && (moved.y - marker.y).abs() < 3.0, "{marker:?} -> {moved:?}");
     assert_eq!(h.state().doc.view.camera, phonglab_core::Document::default().view.camera, "the view did not orbit");
+}
+
+/// At the start, light 0 sits behind the camera: its marker stands at the picture's edge,
+/// and dragging it moves the light in the plane facing the viewer (the way the pointer
+/// goes), not the camera. A light in front but off the picture comes to the pointer.
+#[test]
+fn a_light_marker_at_the_edge_drags_the_light() {
+    for (w, hgt) in [(1280.0, 720.0), (1024.0, 600.0)] {
+        let mut h = harness_at(w, hgt);
+        let in_eye = |h: &Harness<'static, AppState>| {
+            let d = &h.state().doc;
+            let s = d.shaded_scene();
+            let p = s.light_pos_in_eye(&s.lights[0]);
+            p.truncate() / p.w
+        };
+        let before = in_eye(&h);
+        assert!(before.z > 0.0, "behind the camera: {before:?}");
+        let camera = h.state().doc.view.camera;
+        let marker = h.get_by_label("light 0 marker").rect().center();
+        common::press_and_move(&mut h, marker, marker + egui::vec2(60.0, -30.0));
+        common::button(&mut h, marker + egui::vec2(60.0, -30.0), false);
+        h.run_steps(2);
+        assert_eq!(h.state().doc.view.camera, camera, "{w}x{hgt}: the camera did not turn");
+        let after = in_eye(&h);
+        assert!(
+            after.x > before.x + 1.0 && after.y > before.y + 0.5,
+            "{w}x{hgt}: right and up: {before:?} -> {after:?}"
+        );
+        assert!(
+            (after.z - before.z).abs() < 1e-6,
+            "{w}x{hgt}: in the plane facing the viewer: {before:?} -> {after:?}"
+        );
+        // One step to undo.
+        assert_eq!(h.state().history.depth(), 1);
+        // A quick hand: pressed and moved within one frame, already off the marker when
+        // the drag starts. The light moves still, not the camera.
+        let marker = h.get_by_label("light 0 marker").rect().center();
+        let before = in_eye(&h);
+        h.input_mut().events.push(egui::Event::PointerMoved(marker));
+        h.run_steps(2);
+        common::button(&mut h, marker, true);
+        h.input_mut().events.push(egui::Event::PointerMoved(marker + egui::vec2(-20.0, -40.0)));
+        h.step();
+        for k in 1..=4 {
+            h.input_mut().events.push(egui::Event::PointerMoved(marker + egui::vec2(-20.0 - 10.0 * k as f32, -40.0)));
+            h.step();
+        }
+        common::button(&mut h, marker + egui::vec2(-60.0, -40.0), false);
+        h.run_steps(2);
+        assert_eq!(h.state().doc.view.camera, camera, "{w}x{hgt}: a quick drag does not turn the camera");
+        let after = in_eye(&h);
+        assert!(after.x < before.x - 1.0, "{w}x{hgt}: left: {before:?} -> {after:?}");
+    }
+    // A light in front of the camera, off the picture to the right: dragged from its marker
+    // onto the picture, it comes to the pointer.
+    let mut h = harness_at(1280.0, 720.0);
+    let mut doc = h.state().doc.clone();
+    doc.scene.lights[0].position = glam::DVec4::new(6.0, 0.0, 0.0, 1.0);
+    doc.scene.lights[0].placement = phonglab_core::LightPlacement::World;
+    assert!(h.state_mut().apply(doc));
+    h.run_steps(2);
+    let image = h.get_all_by_role(Role::Image).next().unwrap().rect();
+    let marker = h.get_by_label("light 0 marker").rect();
+    assert!(marker.max.x > image.max.x - 40.0, "at the right edge: {marker:?} in {image:?}");
+    let to = image.center() + egui::vec2(image.width() * 0.25, -image.height() * 0.2);
+    common::press_and_move(&mut h, marker.center(), to);
+    common::button(&mut h, to, false);
+    h.run_steps(2);
+    let on = h.get_by_label("light 0 marker").rect().center();
+    assert!((on - to).length() < 3.0, "the marker is under the pointer: {on:?}, {to:?}");
 }
 
 #[test]

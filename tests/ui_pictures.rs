@@ -189,3 +189,66 @@ fn at_most_half_the_window_is_empty_in_presentation() {
         assert!(empty <= 0.5, "{open:?}: {:.0} % empty", 100.0 * empty);
     }
 }
+
+/// The height `text` needs in the body's size wrapped to `width` (the way egui lays it out).
+fn wrapped_height(h: &Harness<'static, AppState>, text: &str, width: f32) -> f32 {
+    let font = egui::TextStyle::Body.resolve(&h.ctx.global_style());
+    h.ctx.fonts_mut(|f| f.layout(text.to_string(), font, egui::Color32::WHITE, width).size().y)
+}
+
+/// The captions read from the back: in the body's size (the timing caption, "1 of 8" and
+/// the rules note were 9 points), and never cut. The mesh's caption while the camera turns
+/// ("…while the c…" at 1280x720) and the demo's two ("the demo's …", "true norm…" in the
+/// light theme) take the lines they need above their pictures; beside each other they are
+/// short, the whole in the picture's name and hover.
+#[test]
+fn captions_read_whole_in_the_bodys_size() {
+    use egui::accesskit::Role;
+    use egui_kittest::kittest::NodeT;
+    let body = egui::Style::default().text_styles[&egui::TextStyle::Body].size;
+    // A mesh of more than COARSE_ABOVE triangles turned by a drag: the long caption.
+    let mut state = state_for(phonglab_core::Document::default(), false, false, None);
+    state.doc.view.object = phonglab_core::ObjectKind::Sphere;
+    (state.doc.view.sphere_slices, state.doc.view.sphere_stacks) = (400, 400);
+    let mut h = harness(1280.0, 720.0, 1.0, state);
+    let picture = h.state().ui.geometry.pictures[0];
+    let (from, to) = (picture.center(), picture.center() + egui::vec2(60.0, 20.0));
+    common::press_and_move(&mut h, from, to);
+    let caption = h
+        .get_all_by_role(Role::Label)
+        .find(|n| n.value().is_some_and(|v| v.contains("triangles while the camera turns")))
+        .expect("the coarse copy's caption");
+    let (text, r) = (caption.value().unwrap(), caption.rect());
+    let picture = h.state().ui.geometry.pictures[0];
+    assert!(r.width() <= picture.width() + 0.5 && r.max.y <= picture.min.y + 0.5, "{r:?} above {picture:?}");
+    assert!(r.height() >= wrapped_height(&h, &text, picture.width()) - 0.5, "whole: {r:?} for {text:?}");
+    assert!(r.height() > 1.5 * body, "it wraps rather than being cut: {r:?}");
+    common::button(&mut h, to, false);
+    h.run_steps(2);
+    // The timing caption, "1 of 8" and the rules note: at least a body line high.
+    for label in ["ms per frame on the CPU", "1 of 8", "The worksheet: no scene ambient"] {
+        let n = h.get_all_by_role(Role::Label).find(|n| n.value().is_some_and(|v| v.contains(label))).unwrap();
+        assert!(n.rect().height() >= body, "{label:?}: {:?}", n.rect());
+    }
+    // The Phong demo beside its correction, in the light theme: each caption whole on its
+    // line; each picture named (and hovered) by the whole.
+    let mut state = state_for(phonglab_core::Document::default(), false, true, Some(Open::DemoFixes));
+    state.doc.view.auto_rotate = false;
+    let h = harness(1280.0, 720.0, 1.0, state);
+    let g = h.state().ui.geometry.clone();
+    assert_eq!(g.pictures.len(), 2);
+    for (shown, whole, picture) in [
+        ("Sphere Gouraud (the demo's own)", "ms per frame on the CPU (the demo's own)", g.pictures[0]),
+        (
+            "Corrected (3 of 3)",
+            "Corrected: light fixed in the world, the surface's true normals, highlight in the light's colour",
+            g.pictures[1],
+        ),
+    ] {
+        let r = h.get_by_role_and_label(Role::Label, shown).rect();
+        assert!(r.width() <= picture.width() + 0.5 && r.max.y <= picture.min.y + 0.5, "{shown}: {r:?} {picture:?}");
+        assert!(r.height() >= wrapped_height(&h, shown, picture.width()) - 0.5, "{shown}: whole");
+        let named = h.get_all_by_label_contains(whole).find(|n| n.accesskit_node().role() == Role::Image);
+        assert_eq!(named.map(|n| n.rect()), Some(picture), "{whole}");
+    }
+}

@@ -129,21 +129,21 @@ fn ctrl_z_undoes_and_the_buttons_say_what() {
     h.key_press(egui::Key::L); // the local viewer on
     h.run_steps(2);
     assert!(h.state().doc.scene.light_model.local_viewer);
-    assert_eq!(h.state().history.undo_label(), Some("light model local viewer off ➡ on"));
+    assert_eq!(h.state().history.undo_label().as_deref(), Some("Local viewer off ➡ on"));
     h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::Z);
     h.run_steps(2);
     assert!(!h.state().doc.scene.light_model.local_viewer);
-    assert_eq!(h.state().history.undo_label(), Some("shininess 25.6 ➡ 100"));
+    assert_eq!(h.state().history.undo_label().as_deref(), Some("Material shininess 25.6 ➡ 100"));
     // The Undo button (in the File menu) says what it undoes.
     common::open_menu(&mut h, &["File"]);
     h.get_by_label("⟲ Undo").hover();
     // Tooltips wait a moment before they show.
     h.run_steps(60);
-    h.get_by_label("Undo shininess 25.6 ➡ 100 (Ctrl+Z)");
+    h.get_by_label("Undo: Material shininess 25.6 ➡ 100 (Ctrl+Z)");
     h.get_by_label("⟲ Undo").click();
     h.run_steps(2);
     assert_eq!(h.state().doc.scene.material.shininess, 25.6);
-    assert_eq!(h.state().message, Some(Message::Info("Undid shininess 25.6 ➡ 100.".into())));
+    assert_eq!(h.state().message, Some(Message::Info("Undid: Material shininess 25.6 ➡ 100.".into())));
     // Redo: Ctrl+Shift+Z and Ctrl+Y.
     h.key_press_modifiers(egui::Modifiers::CTRL | egui::Modifiers::SHIFT, egui::Key::Z);
     h.run_steps(2);
@@ -151,6 +151,49 @@ fn ctrl_z_undoes_and_the_buttons_say_what() {
     h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::Y);
     h.run_steps(2);
     assert!(h.state().doc.scene.light_model.local_viewer);
+}
+
+/// Undo says what it undid in the window's language: a light removed is "luz 0 removida",
+/// not the fields of light 0 that the list's closing up changed ("light 0 ambient and 9
+/// more").
+#[test]
+fn undo_says_what_was_undone_in_the_users_language() {
+    let mut h = harness();
+    h.state_mut().ui.layout.language = Some("pt-PT".into());
+    h.run_steps(2);
+    h.get_by_label("Juntar luz").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.scene.lights.len(), 2);
+    let mut d = h.state().doc.clone();
+    d.scene.lights[1].position.x = -50.0;
+    assert!(h.state_mut().apply(d));
+    h.run_steps(1);
+    assert_eq!(h.state().history.undo_label().as_deref(), Some("luz 1: posição [1 1 1 0] ➡ [-50 1 1 0]"));
+    // Light 0 removed: light 1 moves into its place, and every field of light 0 differs.
+    h.get_by_label("Luz 0").click();
+    h.run_steps(2);
+    h.get_by_label("Remover luz").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.scene.lights.len(), 1);
+    assert_eq!(h.state().history.undo_label().as_deref(), Some("luz 0 removida"));
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::Z);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.scene.lights.len(), 2);
+    assert_eq!(h.state().message, Some(Message::Info("Desfeito: luz 0 removida.".into())));
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::Y);
+    h.run_steps(2);
+    assert_eq!(h.state().message, Some(Message::Info("Refeito: luz 0 removida.".into())));
+    // In Brazilian Portuguese, the same step in its words.
+    h.state_mut().ui.layout.language = Some("pt-BR".into());
+    h.run_steps(2);
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::Z);
+    h.run_steps(2);
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::Z);
+    h.run_steps(2);
+    assert_eq!(h.state().message, Some(Message::Info("Desfeito: luz 1: posição [1 1 1 0] ➡ [-50 1 1 0].".into())));
+    h.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::Z);
+    h.run_steps(2);
+    assert_eq!(h.state().message, Some(Message::Info("Desfeito: luz 1 adicionada.".into())));
 }
 
 #[test]

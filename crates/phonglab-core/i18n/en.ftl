@@ -49,7 +49,7 @@ director-eye = eye
 director-vertex = vertex
 director-light = light { $n }
 director-legend = at the vertex, one length each (their true directions in this space); blue square: the near plane (the viewport); green square: the surface at the vertex. Drag a light or the eye to move it; drag elsewhere to turn; scroll to zoom.
-director-naive-normal = Red: M n, the normal moved as a point would be, { $degrees }° off the true normal (M^-1)^T n, which stays perpendicular to the surface.
+director-naive-normal = Dotted, in light blue: M n, the normal moved as a point would be, { $degrees }° off the true normal (M^-1)^T n, which stays perpendicular to the surface.
 director-rules-naive = This scene's rules (the worksheet's) light the vertex with M n; OpenGL's use (M^-1)^T n.
 director-ring = Light { $n }: 1/at, the attenuation factor, falls to { $percent } % at distance { $distance } (a ring).
 wrong-cause-normals-by-m = Normals transformed by M instead of its inverse transpose
@@ -123,8 +123,8 @@ f64-hover = Evaluate in double precision
 cost-of-accuracy = Cost of accuracy
 cost-hover = What each shading, tessellation and approximation costs in time and in error
 help-button = Help (F1)
-undo-what = Undo { $what } (Ctrl+Z)
-redo-what = Redo { $what } (Ctrl+Shift+Z, Ctrl+Y)
+undo-what = Undo: { $what } (Ctrl+Z)
+redo-what = Redo: { $what } (Ctrl+Shift+Z, Ctrl+Y)
 undo-button = ⟲ Undo
 redo-button = ⟳ Redo
 nothing-to-undo = Nothing to undo
@@ -273,8 +273,6 @@ dark-vertex-short = dark vertex
 large-value-hover = The colour as drawn (clamped to [0, 1]), r g b to two decimals
 secondary = secondary
 secondary-hover = The secondary (specular) colour.
-rows-with-secondary = unclamped, clamped, secondary
-rows-unclamped-clamped = unclamped, then clamped
 vertex-colour = Vertex colour
 front-face = Front face
 back-face = Back face
@@ -285,8 +283,68 @@ history-reset = reset to the worksheet
 reset-done = Reset to the worksheet (mview5).
 history-open = open { $what }
 loaded = Loaded { $what }.
-undid = Undid { $what }.
-redid = Redid { $what }.
+undid = Undid: { $what }.
+redid = Redid: { $what }.
+history-no-change = no change
+history-and-more = { $field } and { $count } more
+history-light-added = light { $index } added
+history-light-removed = light { $index } removed
+history-none = (none)
+history-on = on
+history-off = off
+# A changed field of the scene, as the undo history names it. $field is the scene file's
+# path with dots as dashes and a light's number taken out (light-position of light $index).
+history-field = { $field ->
+    [name] scene name
+    [rules] { rule-set }
+    [specular] { specular-model }
+    [normals] { normals }
+    [light_model-ambient] { scene-ambient }
+    [light_model-local_viewer] { local-viewer }
+    [light_model-two_sided] { two-sided }
+    [light_model-separate_specular] { separate-specular }
+    [camera] { camera }
+    [object_matrix] { object-placement }
+    [material-preset] material
+    [material-ambient] { material-ambient }
+    [material-diffuse] { material-diffuse }
+    [material-specular] { material-specular }
+    [material-emission] { material-emission }
+    [material-shininess] { material-shininess }
+    [back_material] { separate-back-material }
+    [color_material] { color-material }
+    [light-position] light { $index } position
+    [light-ambient] light { $index } ambient
+    [light-diffuse] light { $index } diffuse
+    [light-specular] light { $index } specular
+    [light-spot_direction] light { $index } spot direction
+    [light-spot_cutoff] light { $index } spot cutoff
+    [light-spot_exponent] light { $index } spot exponent
+    [light-attenuation] light { $index } attenuation factors (k0, k1, k2)
+    [light-placement] light { $index } fixed to
+    [vertex-position] { quantity-vertex-position }
+    [vertex-normal] { quantity-vertex-normal }
+    [view-object] object
+    [view-obj] { mesh-file }
+    [view-shading] shading
+    [view-sphere_slices] { sphere-slices }
+    [view-sphere_stacks] { sphere-stacks }
+    [view-teapot_grid] { teapot-grid }
+    [view-cylinder_slices] { cylinder-slices }
+    [view-cylinder_stacks] { cylinder-stacks }
+    [view-cylinder_caps] cylinder caps
+    [view-cylinder_centered] cylinder centred
+    [view-demo_normals] { demo-normals }
+    [view-auto_rotate] { auto-rotate }
+    [view-spin_degrees] spin
+    [view-framing] framing
+    [view-lighting_space] lighting space
+    [view-flat_normal] { flat-derivatives }
+    [view-phong_renormalize] { phong-renormalises }
+    [view-background] background
+    [view-camera] view camera
+   *[other] the scene
+}
 not-whole = { $text } is not a whole number
 outside-range = { $text } is outside { $min } to { $max }
 numbers-type-one = { $count } numbers: type one
@@ -489,6 +547,8 @@ caps = Caps
 mesh-triangles = { $count } triangles: { $notes }
 key-hint = key { $key }
 mesh-tip = { $path } (open another under View options, or drop an .obj file)
+close-mesh = Close your mesh
+close-mesh-hover = Close your mesh: the top bar offers it no more (it stays in its file; changing scene keeps it until then)
 auto-rotate = Auto-rotate
 auto-rotate-hover = 0.5 degrees a frame, as the demo (key A)
 demo-normals = Demo's normals
@@ -505,6 +565,7 @@ corrected-cannot-render = The corrected view cannot render
 the-demos-own = {" "}(the demo's own)
 picture-hover = Drag to orbit, scroll to zoom, click the surface to make that vertex the worked calculation's
 corrected = Corrected: { $fixes }
+corrected-short = Corrected ({ $count } of { $all })
 picked-vertex = Vertex { $index } of the { $object }: the worked calculation now uses it, as the shaded view lights it.
 light-behind = light { $index } (behind the camera)
 light-name = light { $index }

@@ -49,7 +49,7 @@ director-eye = olho
 director-vertex = vértice
 director-light = luz { $n }
 director-legend = no vértice, todos do mesmo comprimento; quadrado azul: o plano próximo (a viewport); quadrado verde: a superfície no vértice. Arraste uma luz ou o olho para movê-lo; arraste em outro lugar para girar; role para aproximar.
-director-naive-normal = Em vermelho: M n, a normal transformada como um ponto, a { $degrees }° da normal verdadeira (M^-1)^T n, que continua perpendicular à superfície.
+director-naive-normal = Pontilhada, em azul-claro: M n, a normal transformada como um ponto, a { $degrees }° da normal verdadeira (M^-1)^T n, que continua perpendicular à superfície.
 director-rules-naive = As regras desta cena (as da ficha) iluminam o vértice com M n; as do OpenGL usam (M^-1)^T n.
 director-ring = Luz { $n }: 1/at, o fator de atenuação, cai para { $percent } % à distância { $distance } (um anel).
 wrong-cause-normals-by-m = Normais transformadas por M em vez de sua inversa transposta
@@ -123,8 +123,8 @@ f64-hover = Calcular em precisão dupla
 cost-of-accuracy = Custo da exatidão
 cost-hover = O que cada sombreamento, tesselação e aproximação custa em tempo e em erro
 help-button = Ajuda (F1)
-undo-what = Desfazer { $what } (Ctrl+Z)
-redo-what = Refazer { $what } (Ctrl+Shift+Z, Ctrl+Y)
+undo-what = Desfazer: { $what } (Ctrl+Z)
+redo-what = Refazer: { $what } (Ctrl+Shift+Z, Ctrl+Y)
 undo-button = ⟲ Desfazer
 redo-button = ⟳ Refazer
 nothing-to-undo = Nada para desfazer
@@ -273,8 +273,6 @@ dark-vertex-short = vértice escuro
 large-value-hover = A cor desenhada (limitada a [0, 1]), r g b com duas casas decimais
 secondary = secundária
 secondary-hover = A cor secundária (especular).
-rows-with-secondary = sem limite, limitada, secundária
-rows-unclamped-clamped = sem limite, depois limitada
 vertex-colour = Cor do vértice
 front-face = Face da frente
 back-face = Face de trás
@@ -287,6 +285,66 @@ history-open = abrir { $what }
 loaded = Aberto: { $what }.
 undid = Desfeito: { $what }.
 redid = Refeito: { $what }.
+history-no-change = sem alteração
+history-and-more = { $field } e mais { $count }
+history-light-added = luz { $index } adicionada
+history-light-removed = luz { $index } removida
+history-none = (nenhum)
+history-on = ligado
+history-off = desligado
+# A changed field of the scene, as the undo history names it. $field is the scene file's
+# path with dots as dashes and a light's number taken out (light-position of light $index).
+history-field = { $field ->
+    [name] nome da cena
+    [rules] { rule-set }
+    [specular] { specular-model }
+    [normals] { normals }
+    [light_model-ambient] { scene-ambient }
+    [light_model-local_viewer] { local-viewer }
+    [light_model-two_sided] { two-sided }
+    [light_model-separate_specular] { separate-specular }
+    [camera] { camera }
+    [object_matrix] { object-placement }
+    [material-preset] material
+    [material-ambient] { material-ambient }
+    [material-diffuse] { material-diffuse }
+    [material-specular] { material-specular }
+    [material-emission] { material-emission }
+    [material-shininess] { material-shininess }
+    [back_material] { separate-back-material }
+    [color_material] { color-material }
+    [light-position] luz { $index }: posição
+    [light-ambient] luz { $index }: ambiente
+    [light-diffuse] luz { $index }: difusa
+    [light-specular] luz { $index }: especular
+    [light-spot_direction] luz { $index }: direção do foco
+    [light-spot_cutoff] luz { $index }: abertura do foco
+    [light-spot_exponent] luz { $index }: expoente do foco
+    [light-attenuation] luz { $index }: coeficientes de atenuação (k0, k1, k2)
+    [light-placement] luz { $index }: presa a
+    [vertex-position] { quantity-vertex-position }
+    [vertex-normal] { quantity-vertex-normal }
+    [view-object] objeto
+    [view-obj] { mesh-file }
+    [view-shading] sombreamento
+    [view-sphere_slices] { sphere-slices }
+    [view-sphere_stacks] { sphere-stacks }
+    [view-teapot_grid] { teapot-grid }
+    [view-cylinder_slices] { cylinder-slices }
+    [view-cylinder_stacks] { cylinder-stacks }
+    [view-cylinder_caps] tampas do cilindro
+    [view-cylinder_centered] cilindro centrado
+    [view-demo_normals] { demo-normals }
+    [view-auto_rotate] { auto-rotate }
+    [view-spin_degrees] rotação
+    [view-framing] enquadramento
+    [view-lighting_space] espaço da iluminação
+    [view-flat_normal] { flat-derivatives }
+    [view-phong_renormalize] { phong-renormalises }
+    [view-background] fundo
+    [view-camera] câmera da vista
+   *[other] a cena
+}
 not-whole = { $text } não é um número inteiro
 outside-range = { $text } está fora de { $min } a { $max }
 numbers-type-one = { $count } números: digite um
@@ -489,6 +547,8 @@ caps = Tampas
 mesh-triangles = { $count } triângulos: { $notes }
 key-hint = tecla { $key }
 mesh-tip = { $path } (abra outra em Opções da vista, ou solte um arquivo .obj)
+close-mesh = Fechar sua malha
+close-mesh-hover = Fechar sua malha: a barra de cima deixa de oferecê-la (ela fica no arquivo; trocar de cena a mantém até lá)
 auto-rotate = Girar sozinho
 auto-rotate-hover = 0,5 graus por imagem, como a demo (tecla A)
 demo-normals = Normais da demo
@@ -505,6 +565,7 @@ corrected-cannot-render = A vista corrigida não consegue desenhar
 the-demos-own = {" "}(a da própria demo)
 picture-hover = Arraste para girar, use a roda para ampliar, clique na superfície para que esse vértice seja o do cálculo
 corrected = Corrigida: { $fixes }
+corrected-short = Corrigida ({ $count } de { $all })
 picked-vertex = Vértice { $index } de { $object }: o cálculo passa a usá-lo, tal como a vista sombreada o ilumina.
 light-behind = luz { $index } (atrás da câmera)
 light-name = luz { $index }

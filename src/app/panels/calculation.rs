@@ -16,9 +16,25 @@ const DIGITS: usize = 8;
 /// the stages it runs, in order (the same list the evaluator runs).
 fn plan_ui(ui: &mut Ui, effects: &[Effect], stages: &[Stage]) {
     let skipped = effects.iter().filter(|e| !e.on).count();
-    egui::CollapsingHeader::new(t!("plan-heading", computed = effects.len() - skipped, skipped = skipped))
-        .id_salt("plan")
-        .show(ui, |ui| {
+    let title = t!("plan-heading", computed = effects.len() - skipped, skipped = skipped);
+    // A header whose title wraps in a narrow panel (egui's collapsing header keeps one line,
+    // and widened the panel past its edge); the title opens it too.
+    let mut state = egui::collapsing_header::CollapsingState::load_with_default_open(
+        ui.ctx(),
+        ui.make_persistent_id("plan"),
+        false,
+    );
+    let toggle = ui
+        .horizontal(|ui| {
+            state.show_toggle_button(ui, egui::collapsing_header::paint_default_icon);
+            ui.add(egui::Label::new(title).wrap().sense(egui::Sense::click())).clicked()
+        })
+        .inner;
+    if toggle {
+        state.toggle(ui);
+    }
+    state.show_body_unindented(ui, |ui| {
+        ui.indent("plan body", |ui| {
             for e in effects {
                 let who = e.light.map(|i| t!("plan-light", index = i.to_string())).unwrap_or_default();
                 let text = format!("{who}{}: {}", e.name, e.why);
@@ -32,6 +48,7 @@ fn plan_ui(ui: &mut Ui, effects: &[Effect], stages: &[Stage]) {
             let list: Vec<String> = stages.iter().map(|s| format!("{s:?}")).collect();
             ui.label(RichText::new(list.join(" > ")).small().monospace());
         });
+    });
 }
 
 /// The teacher's walk through the steps: the step highlighted, and whether it just moved
@@ -55,7 +72,8 @@ pub fn calculation_ui(
     stages: &[Stage],
     walk: Walk,
 ) {
-    ui.horizontal(|ui| {
+    // (Wrapped: a narrow panel puts the button under the title rather than widen.)
+    ui.horizontal_wrapped(|ui| {
         ui.heading(t!("worked-calculation"));
         if ui.button(t!("copy-markdown")).on_hover_text(t!("copy-markdown-hover")).clicked() {
             ui.ctx().copy_text(ex.to_markdown(DIGITS));

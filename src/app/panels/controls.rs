@@ -57,7 +57,8 @@ pub fn rules_ui(ui: &mut Ui, doc: &mut Document) {
             ui.selectable_value(&mut rules.specular, m, m.label());
         }
     });
-    ui.small(match rules.set {
+    // In the body's size (a smaller type was 9 points at the projector).
+    ui.label(match rules.set {
         RuleSet::OpenGl => {
             t!("rules-opengl-summary")
         }
@@ -120,7 +121,7 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut ControlsState) {
     // The buttons come first, in their own id scope, so their ids do not move when a
     // tab is added (a click aimed at the last frame's button would miss).
     ui.push_id("light buttons", |ui| {
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             if ui.add_enabled(lights.len() < MAX_LIGHTS, egui::Button::new(t!("add-light"))).clicked() {
                 let mut l = Light::gl_default(lights.len());
                 // A visible default: a white directional light from the upper right.
@@ -135,7 +136,8 @@ fn lights_ui(ui: &mut Ui, doc: &mut Document, state: &mut ControlsState) {
                 lights.remove(i);
                 state.selected_light = i.saturating_sub(1);
             }
-            ui.small(t!("lights-of-max", count = lights.len(), max = MAX_LIGHTS.to_string()));
+            let count = t!("lights-of-max", count = lights.len(), max = MAX_LIGHTS.to_string());
+            ui.add(egui::Label::new(count).wrap_mode(egui::TextWrapMode::Extend));
         });
     });
     ui.horizontal_wrapped(|ui| {
@@ -315,7 +317,7 @@ fn camera_ui(ui: &mut Ui, doc: &mut Document) {
     });
     match &mut doc.camera {
         CameraSpec::Worksheet(i) => {
-            ui.horizontal(|ui| {
+            ui.horizontal_wrapped(|ui| {
                 for k in 1..=5u8 {
                     ui.radio_value(i, k, format!("mview{k}"));
                 }

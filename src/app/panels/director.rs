@@ -105,8 +105,20 @@ pub fn screen_point(rect: Rect, st: &Stage, d: &DirectorState, p: DVec3) -> Opti
     Projection::new(rect, st, d).screen(p)
 }
 
-/// Colour and width of a segment of each kind.
-fn stroke_of(kind: Kind, ink: Color32, light: Color32) -> Stroke {
+/// How a segment of each kind is drawn: whole, or (H, and M n beside N) in dashes or
+/// dots, so that no two vectors are told apart by colour alone, as in the vector plot.
+pub fn pattern_of(kind: Kind) -> Option<(f32, f32)> {
+    match kind {
+        Kind::Halfway(_) => Some((6.0, 4.0)),
+        Kind::NaiveNormal => Some((2.0, 3.0)),
+        _ => None,
+    }
+}
+
+/// Colour and width of a segment of each kind; the vectors' colours are the vector plot's
+/// (Okabe and Ito's), at 3:1 against the picture's background `bg`.
+fn stroke_of(kind: Kind, ink: Color32, light: Color32, bg: Color32) -> Stroke {
+    let on = |c: Color32| palette::ink_on(c, bg);
     let alpha = |c: Color32, a: f64| Color32::from_rgba_unmultiplied(c.r(), c.g(), c.b(), (a * 255.0) as u8);
     match kind {
         Kind::Object => Stroke::new(0.6, alpha(ink, 0.25)),
@@ -116,11 +128,11 @@ fn stroke_of(kind: Kind, ink: Color32, light: Color32) -> Stroke {
         Kind::Light(_) => Stroke::new(1.5, light),
         Kind::Ring(_, f) => Stroke::new(1.0, alpha(light, if f >= 0.5 { 0.8 } else { 0.4 })),
         Kind::Cone(_, s) => Stroke::new(1.0 + s as f32, alpha(light, 0.15 + 0.85 * s)),
-        Kind::Normal => Stroke::new(2.5, palette::N),
-        Kind::NaiveNormal => Stroke::new(2.0, palette::ERROR),
-        Kind::ToLight(_) => Stroke::new(2.5, palette::L),
-        Kind::ToEye => Stroke::new(2.5, palette::V),
-        Kind::Halfway(_) => Stroke::new(2.0, palette::H),
+        Kind::Normal => Stroke::new(2.5, on(palette::N)),
+        Kind::NaiveNormal => Stroke::new(2.5, on(palette::NAIVE_NORMAL)),
+        Kind::ToLight(_) => Stroke::new(2.5, on(palette::L)),
+        Kind::ToEye => Stroke::new(2.5, on(palette::V)),
+        Kind::Halfway(_) => Stroke::new(2.0, on(palette::H)),
         Kind::Patch => Stroke::new(1.5, alpha(palette::V, 0.8)),
     }
 }
@@ -171,12 +183,20 @@ fn director_ui(ui: &mut Ui, d: &mut DirectorState, doc: &Document, side: f32) ->
     let light = palette::ink(ui, palette::SPOT);
     for s in &st.segments {
         if let (Some(a), Some(b)) = (proj.screen(s.a), proj.screen(s.b)) {
-            painter.line_segment([a, b], stroke_of(s.kind, ink, light));
+            let stroke = stroke_of(s.kind, ink, light, bg);
+            match pattern_of(s.kind) {
+                Some((dash, gap)) => {
+                    painter.extend(egui::Shape::dashed_line(&[a, b], stroke, dash, gap));
+                }
+                None => {
+                    painter.line_segment([a, b], stroke);
+                }
+            }
         }
     }
-    let font = egui::TextStyle::Small.resolve(ui.style());
     let mut light_marks = Vec::new();
     let mut eye_mark = None;
+    let mut named = Vec::new();
     for m in &st.marks {
         let Some(at) = proj.screen(m.at) else { continue };
         let (name, colour) = match m.kind {
@@ -191,12 +211,32 @@ fn director_ui(ui: &mut Ui, d: &mut DirectorState, doc: &Document, side: f32) ->
             _ => (t!("director-vertex"), ink),
         };
         painter.circle_filled(at, 5.0, colour);
-        painter.text(at + egui::vec2(7.0, -7.0), egui::Align2::LEFT_BOTTOM, name, font.clone(), colour);
+        named.push((at, name, colour));
     }
+    mark_names_ui(ui, rect, &named);
     let marks = Marks { lights: &light_marks, eye: eye_mark };
     let changed = drag_ui(ui, d, doc, &scene, &st, &proj, &resp, &marks);
     legend_ui(ui, &st);
     changed
+}
+
+/// The marks' names (the eye, each light, the vertex), each beside its dot and clear of
+/// every dot and of each other (a light far behind the eye projects near it), as labels.
+fn mark_names_ui(ui: &mut Ui, rect: Rect, named: &[(Pos2, String, Color32)]) {
+    use crate::app::widgets::label_placement::{Segment, Wanted, place};
+    let font = egui::TextStyle::Small.resolve(ui.style());
+    let galleys: Vec<_> =
+        named.iter().map(|(_, name, c)| ui.painter().layout_no_wrap(name.clone(), font.clone(), *c)).collect();
+    let dots: Vec<Segment> = named.iter().map(|(at, ..)| Segment { a: *at, b: *at, half_width: 6.0 }).collect();
+    let wanted: Vec<Wanted> = named
+        .iter()
+        .zip(&galleys)
+        .map(|((at, ..), g)| Wanted { anchor: *at, direction: egui::vec2(1.0, -1.0), size: g.size(), gap: 4.0 })
+        .collect();
+    for (((_, name, c), g), r) in named.iter().zip(galleys).zip(place(&wanted, &dots, rect.shrink(2.0))) {
+        let label = egui::Label::new(egui::RichText::new(name).font(font.clone()).color(*c)).selectable(false);
+        ui.put(Rect::from_min_size(r.min, g.size()), label);
+    }
 }
 
 /// Where the marks that can be dragged were drawn.
@@ -305,16 +345,17 @@ fn moved_eye(doc: &Document, scene: &Scene, eye: DVec3) -> Option<Document> {
 /// What the colours and rings mean, with the rings' radii.
 fn legend_ui(ui: &mut Ui, st: &Stage) {
     ui.horizontal_wrapped(|ui| {
-        for (text, colour) in [("N", palette::N), ("L", palette::L), ("V", palette::V), ("H", palette::H)] {
-            ui.colored_label(colour, text);
+        // As drawn: H dashed (as in the vector plot).
+        for (text, colour) in [("N", palette::N), ("L", palette::L), ("V", palette::V), ("- - H", palette::H)] {
+            ui.colored_label(palette::ink(ui, colour), text);
         }
         ui.small(t!("director-legend"));
     });
     if st.naive_normal_off_deg > 0.5 {
-        ui.colored_label(
-            palette::ink(ui, palette::ERROR),
-            t!("director-naive-normal", degrees = locale::num(st.naive_normal_off_deg, 3)),
-        );
+        ui.horizontal_wrapped(|ui| {
+            ui.colored_label(palette::ink(ui, palette::NAIVE_NORMAL), "· · · M n");
+            ui.label(t!("director-naive-normal", degrees = locale::num(st.naive_normal_off_deg, 3)));
+        });
         if st.rules_use_naive {
             ui.small(t!("director-rules-naive"));
         }

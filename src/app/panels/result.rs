@@ -7,10 +7,15 @@ use crate::app::model::evaluated::{Evaluated, SideColors};
 use crate::app::model::message::Message;
 use crate::app::widgets::palette::{self, gl_to_color32};
 
-fn fmt4(c: &[f64; 4]) -> String {
-    let s: Vec<String> = c.iter().map(|x| phonglab_core::locale::num(*x, 8)).collect();
+fn fmt4(c: &[f64; 4], digits: usize) -> String {
+    let s: Vec<String> = c.iter().map(|x| phonglab_core::locale::num(*x, digits)).collect();
     format!("[{}]", s.join("  "))
 }
+
+/// The significant digits the rows of numbers are written with: 8 (as the worked
+/// calculation), or fewer where the centre is too narrow for them (the calculation keeps
+/// all 8): a row is never cut.
+const DIGITS: [usize; 3] = [8, 6, 4];
 
 /// How bright a colour is to the eye, 0 to 1: its relative luminance (Rec. 709 weights,
 /// on the clamped values).
@@ -33,12 +38,42 @@ fn large_value_ui(ui: &mut Ui, shown: &[f64; 4]) {
 }
 
 fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool, dark: Option<Dark>) {
-    let unclamped = fmt4(&c.primary);
-    // The numbers' width, to choose between the swatch beside them and a swatch above.
+    // The widest row of numbers with `digits`, to choose how many fit and where the swatch goes.
     let font = egui::TextStyle::Monospace.resolve(ui.style());
-    let text_w = ui.ctx().fonts_mut(|f| f.layout_no_wrap(unclamped.clone(), font, Color32::WHITE).size().x);
-    let labels_w = 70.0;
-    let wide = ui.available_width() >= 88.0 + 16.0 + labels_w + text_w;
+    let rows = |digits: usize| {
+        let mut v = vec![&c.primary, &c.shown];
+        if separate {
+            v.push(&c.secondary);
+        }
+        v.into_iter().map(|x| fmt4(x, digits)).collect::<Vec<_>>()
+    };
+    let width_of = |ui: &Ui, digits: usize| {
+        rows(digits)
+            .into_iter()
+            .map(|t| ui.ctx().fonts_mut(|f| f.layout_no_wrap(t, font.clone(), Color32::WHITE).size().x))
+            .fold(0.0, f32::max)
+    };
+    // The rows' names (small), as wide as the widest.
+    let small = egui::TextStyle::Small.resolve(ui.style());
+    let names = [t!("unclamped"), t!("clamped"), t!("secondary")];
+    let labels_w = names
+        .iter()
+        .map(|n| ui.ctx().fonts_mut(|f| f.layout_no_wrap(n.clone(), small.clone(), Color32::WHITE).size().x))
+        .fold(0.0, f32::max)
+        + 6.0
+        + ui.spacing().item_spacing.x;
+    // The swatch wide enough for its note in the small type.
+    let note_w = dark.as_ref().map_or(0.0, |d| {
+        ui.ctx().fonts_mut(|f| f.layout_no_wrap(d.short.clone(), small.clone(), Color32::WHITE).size().x)
+    });
+    let swatch_w = (note_w + 16.0).max(88.0);
+    let avail = ui.available_width();
+    let beside = |ui: &Ui, d: usize| avail >= swatch_w + 16.0 + labels_w + width_of(ui, d);
+    let under = |ui: &Ui, d: usize| avail >= labels_w + width_of(ui, d);
+    let (wide, digits) = match DIGITS.iter().find(|d| beside(ui, **d)) {
+        Some(d) => (true, *d),
+        None => (false, DIGITS.iter().copied().find(|d| under(ui, *d)).unwrap_or(4)),
+    };
     let swatch = |ui: &mut Ui, size: egui::Vec2| {
         let (rect, resp) = ui.allocate_exact_size(size, egui::Sense::hover());
         let said = dark.as_ref().map_or_else(|| format!("{title} swatch"), |d| format!("{title} swatch: {}", d.said));
@@ -60,17 +95,12 @@ fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool, dark: Optio
             ui.painter().text(rect.center(), egui::Align2::CENTER_CENTER, &d.short, font, ink);
         }
     };
-    let numbers = |ui: &mut Ui, labelled: bool| {
-        let rows = [
-            (t!("unclamped"), unclamped.clone(), t!("unclamped-hover")),
-            (t!("clamped"), fmt4(&c.shown), t!("clamped-hover")),
-        ];
-        let secondary = separate.then(|| (t!("secondary"), fmt4(&c.secondary), t!("secondary-hover")));
+    let numbers = |ui: &mut Ui| {
+        let texts = rows(digits);
+        let hovers = [t!("unclamped-hover"), t!("clamped-hover"), t!("secondary-hover")];
         egui::Grid::new(format!("{title} numbers")).num_columns(2).spacing([6.0, 2.0]).show(ui, |ui| {
-            for (name, value, why) in rows.into_iter().chain(secondary) {
-                if labelled {
-                    ui.small(&name);
-                }
+            for ((name, value), why) in names.iter().zip(texts).zip(hovers) {
+                ui.small(name);
                 ui.monospace(value).on_hover_text(why);
                 ui.end_row();
             }
@@ -78,29 +108,29 @@ fn side_ui(ui: &mut Ui, title: &str, c: &SideColors, separate: bool, dark: Optio
     };
     if wide {
         ui.horizontal_top(|ui| {
-            swatch(ui, egui::vec2(88.0, 64.0));
+            swatch(ui, egui::vec2(swatch_w, 64.0));
             ui.vertical(|ui| {
+                // (No wider than the rows below, which fit.)
                 ui.horizontal(|ui| {
                     ui.label(RichText::new(title).strong());
                     large_value_ui(ui, &c.shown);
                 });
-                numbers(ui, true);
+                numbers(ui);
             });
         });
     } else {
-        // Narrow: the swatch beside the title, the numbers below, unclamped first.
+        // Narrow: the swatch beside the title, the rows (named) below it, unclamped first,
+        // and a dark colour's note on a line of its own (its swatch is too small for it).
         ui.vertical(|ui| {
-            ui.horizontal(|ui| {
+            ui.horizontal_wrapped(|ui| {
                 swatch(ui, egui::vec2(40.0, 18.0));
                 ui.label(RichText::new(title).strong());
                 large_value_ui(ui, &c.shown);
             });
-            // The rows' names, or for a dark colour the note (its swatch is too small for it).
-            match &dark {
-                Some(d) => ui.small(d.short.replace('\n', " ")).on_hover_text(&d.said),
-                None => ui.small(if separate { t!("rows-with-secondary") } else { t!("rows-unclamped-clamped") }),
-            };
-            numbers(ui, false);
+            if let Some(d) = &dark {
+                ui.small(d.short.replace('\n', " ")).on_hover_text(&d.said);
+            }
+            numbers(ui);
         });
     }
 }

@@ -14,7 +14,7 @@ use glam::{DMat3, DVec3};
 use phonglab_core::SpecularModel;
 
 use crate::app::model::evaluated::Evaluated;
-use crate::app::widgets::arrows::{draw_arrow, draw_end_on, end_on_marker, paint_labels};
+use crate::app::widgets::arrows::{draw_arrow, draw_end_on, end_on_marker, paint_labels_fitted};
 use crate::app::widgets::label_placement::{Segment, Wanted};
 use crate::app::widgets::palette;
 
@@ -278,9 +278,7 @@ pub fn vector_plot_ui(
 
     // Every label, placed clear of every other and of every line; labels may use the whole
     // width given, beyond the square.
-    let painter = &canvas.painter;
-    let galleys: Vec<_> = marks.texts.into_iter().map(|(t, c, f)| painter.layout_no_wrap(t, f, c)).collect();
-    let boxes = paint_labels(painter, marks.wanted, galleys, &marks.lines, outer, None);
+    let boxes = paint_labels_fitted(&canvas.painter, marks.wanted, marks.texts, &marks.lines, outer, None);
     PlotGeometry { rect, unit, labels: boxes, stroke: canvas.width }
 }
 

@@ -12,9 +12,18 @@ use crate::app::panels::{compare, lobe, result, shaded, things_to_try, vector_pl
 
 /// How many rows of widgets stand above the shaded picture, and above the plot's diagram,
 /// as heights in points (see [`centre_layout::Chrome`]).
-fn chrome(ui: &Ui, state: &AppState) -> centre_layout::Chrome {
+fn chrome(ui: &Ui, state: &mut AppState, pictures: usize, area: egui::Rect) -> centre_layout::Chrome {
     let row = ui.spacing().interact_size.y + ui.spacing().item_spacing.y;
-    let small = ui.text_style_height(&egui::TextStyle::Small) + ui.spacing().item_spacing.y;
+    // The pictures' captions (wrapped), at the width two pictures keep at the least, or
+    // one about half the area's.
+    let width = if pictures > 1 {
+        centre_layout::PICTURE_FLOOR
+    } else {
+        (0.5 * area.width()).min(0.6 * area.height()).max(centre_layout::PICTURE_FLOOR)
+    };
+    let room = shaded::CaptionRoom { presenting: state.ui.layout.presenting, pair: pictures > 1 };
+    let room = shaded::caption_room(ui, &state.doc, &state.view_options, &mut state.shaded.main, width, room);
+    let caption = room + ui.spacing().item_spacing.y;
     // The toolbar's rows in a part of the centre (the switches and View options, one row in
     // the normal window; presenting, none: the object and the shading are the top bar's): counted from the frame's own sizes, never from the last frame's, so the
     // split cannot chase itself from frame to frame.
@@ -22,7 +31,7 @@ fn chrome(ui: &Ui, state: &AppState) -> centre_layout::Chrome {
     let body = ui.text_style_height(&egui::TextStyle::Body);
     let legend = body + ui.spacing().item_spacing.y;
     centre_layout::Chrome {
-        picture: rows * row + small + 8.0,
+        picture: rows * row + caption + 8.0,
         // The plot's buttons take three rows in large type (two in the normal window).
         plot: if state.ui.layout.presenting { 3.0 } else { 2.0 } * row + legend + 8.0,
         plot_wide: row + 8.0,
@@ -71,7 +80,7 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
     // Two pictures side by side (the corrected one, or the heat map) share the view's part.
     let pair = state.heat_map.on || shaded::corrected_document(&state.doc, &state.view_options.demo_fixes).is_some();
     let area = ui.available_rect_before_wrap();
-    let chrome = chrome(ui, state);
+    let chrome = chrome(ui, state, 1 + pair as usize, area);
     let split = centre_layout::split(area, 1 + pair as usize, chrome, state.ui.layout.dividers);
     let show_angles = !state.quiz.hides_answers();
     let mut geometry = state::Geometry { arrangement: Some(split.arrangement), ..Default::default() };

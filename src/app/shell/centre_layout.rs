@@ -132,17 +132,22 @@ fn fractions(area: Rect, arrangement: Arrangement, pictures: usize, chrome: Chro
 }
 
 /// The best fraction for `arrangement`: the one whose smaller square is largest (among
-/// those that keep the pictures at the floor, when `floor`).
+/// those that keep the pictures at the floor, when `floor`); among those, the one whose
+/// picture is largest: where the plot is bound by the height (its buttons and legend above
+/// it), the width it cannot use goes to the picture rather than to empty space.
 fn best_fraction(area: Rect, arrangement: Arrangement, pictures: usize, chrome: Chrome, floor: bool) -> f32 {
     let (lo, hi) = allowed(area, arrangement, chrome.min_part);
     fractions(area, arrangement, pictures, chrome, floor)
         .into_iter()
         .max_by(|a, b| {
-            let (sa, sb) = (
-                score(sides(area, arrangement, *a, pictures, chrome), pictures),
-                score(sides(area, arrangement, *b, pictures, chrome), pictures),
-            );
-            sa.total_cmp(&sb).then(b.total_cmp(a))
+            let (ta, tb) =
+                (sides(area, arrangement, *a, pictures, chrome), sides(area, arrangement, *b, pictures, chrome));
+            let (sa, sb) = (score(ta, pictures), score(tb, pictures));
+            // (Half a point is no difference.)
+            let same = (sa - sb).abs() < 0.5;
+            (if same { std::cmp::Ordering::Equal } else { sa.total_cmp(&sb) })
+                .then(ta.0.total_cmp(&tb.0))
+                .then(b.total_cmp(a))
         })
         .unwrap_or((lo + hi) * 0.5)
 }

@@ -124,23 +124,40 @@ fn controls_panel_ui(ui: &mut Ui, state: &mut AppState, width: f32) {
     } else {
         ("controls", 220.0, state.ui.layout.controls_open)
     };
+    // The centre keeps its floor, and the calculation (when it shows) its least width.
+    let calculation = if calculation_shown(state, width) { CALCULATION_MIN } else { 0.0 };
+    let most = (width - state.ui.layout.centre_floor(width) - calculation).max(min);
     egui::Panel::left(id)
         .resizable(true)
-        .default_size(layout::Layout::controls_width(width))
+        .default_size(layout::Layout::controls_width(width).min(most))
         .min_size(min)
+        .max_size(most)
         .show_collapsible(ui, &mut open, |ui| controls(ui, state));
     *(if presenting { &mut state.ui.layout.drawer_open } else { &mut state.ui.layout.controls_open }) = open;
+}
+
+/// The calculation panel's least width.
+const CALCULATION_MIN: f32 = 260.0;
+
+/// Whether the calculation's panel shows in a window `width` wide: presenting always
+/// (unless the drawer pushed it aside), else when open (Compare lists the steps of A and B
+/// itself, in its place).
+fn calculation_shown(state: &AppState, width: f32) -> bool {
+    let layout = &state.ui.layout;
+    (layout.calculation_open || layout.presenting) && !state.compare.open && !layout.drawer_pushes_calculation(width)
 }
 
 /// The worked calculation's panel (the quiz in its place while the quiz is open).
 fn calculation_panel_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated, width: f32) {
     let presenting = state.ui.layout.presenting;
-    // Compare lists the steps of A and B itself, in the calculation's place.
-    let mut open = (state.ui.layout.calculation_open || presenting) && !state.compare.open;
+    let mut open = calculation_shown(state, width);
+    // What the controls left, less the centre's floor.
+    let most = (ui.available_width() - state.ui.layout.centre_floor(width)).max(CALCULATION_MIN);
     egui::Panel::right(if presenting { "calculation (presenting)" } else { "calculation" })
         .resizable(true)
-        .default_size(layout::Layout::calculation_width(width))
-        .min_size(260.0)
+        .default_size(layout::Layout::calculation_width(width).min(most))
+        .min_size(CALCULATION_MIN)
+        .max_size(most)
         .show_collapsible(ui, &mut open, |ui| {
             if state.quiz.open {
                 if let Some(doc) = quiz::quiz_ui(ui, &mut state.quiz, &state.doc) {

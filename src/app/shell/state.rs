@@ -130,9 +130,12 @@ impl AppState {
         r
     }
 
-    /// Back to the start: the worksheet with modelview 5 (UI choices kept).
+    /// Back to the start: the worksheet with modelview 5 (UI choices kept, and the user's
+    /// mesh offered still).
     pub fn reset_to_worksheet(&mut self) {
-        let before = std::mem::take(&mut self.doc);
+        let mut start = Document::default();
+        keep_mesh(&self.doc, &mut start);
+        let before = std::mem::replace(&mut self.doc, start);
         if before != self.doc {
             self.history.record(&before, &self.doc, Some(&phonglab_core::t!("history-reset")), self.now);
         }
@@ -140,14 +143,25 @@ impl AppState {
         self.message = Some(Message::Info(phonglab_core::t!("reset-done")));
     }
 
-    /// Loads a ready-made document.
-    pub fn load(&mut self, doc: Document, what: &str) {
+    /// Loads a ready-made document. The user's mesh stays offered (the top bar's "Your
+    /// mesh") unless the document names a mesh of its own: it goes only when the user
+    /// closes it ([`Self::close_mesh`]).
+    pub fn load(&mut self, mut doc: Document, what: &str) {
+        keep_mesh(&self.doc, &mut doc);
         let before = std::mem::replace(&mut self.doc, doc);
         if before != self.doc {
             self.history.record(&before, &self.doc, Some(&phonglab_core::t!("history-open", what = what)), self.now);
         }
         self.controls.selected_light = 0;
         self.message = Some(Message::Info(phonglab_core::t!("loaded", what = what)));
+    }
+}
+
+/// `doc` offering the mesh `before` offered, when it names none of its own (the object
+/// shown stays `doc`'s).
+fn keep_mesh(before: &Document, doc: &mut Document) {
+    if doc.view.obj.is_none() {
+        doc.view.obj.clone_from(&before.view.obj);
     }
 }
 
@@ -167,9 +181,20 @@ impl AppState {
         }
     }
 
+    /// Closes the user's mesh: the top bar offers it no more, and a view that showed it
+    /// shows the default object instead (an undoable change).
+    pub fn close_mesh(&mut self) {
+        let mut c = self.doc.clone();
+        c.view.obj = None;
+        if c.view.object == phonglab_core::ObjectKind::Obj {
+            c.view.object = phonglab_core::View::default().object;
+        }
+        self.apply(c);
+    }
+
     /// Undoes the last change of the scene, saying what was undone.
     pub fn undo(&mut self) {
-        self.message = Some(Message::Info(match self.history.undo(&self.doc) {
+        self.message = Some(Message::Info(match self.history.undo() {
             Some((doc, label)) => {
                 self.set_doc(doc);
                 phonglab_core::t!("undid", what = label)
@@ -180,7 +205,7 @@ impl AppState {
 
     /// Redoes the last undone change, saying what was redone.
     pub fn redo(&mut self) {
-        self.message = Some(Message::Info(match self.history.redo(&self.doc) {
+        self.message = Some(Message::Info(match self.history.redo() {
             Some((doc, label)) => {
                 self.set_doc(doc);
                 phonglab_core::t!("redid", what = label)
@@ -225,7 +250,7 @@ mod tests {
         // The refused edit left no step; the kept one is undone.
         s.undo();
         assert_eq!(s.doc, before);
-        assert_eq!(s.message, Some(Message::Info("Undid shininess 25.6 ➡ 100.".into())));
+        assert_eq!(s.message, Some(Message::Info("Undid: Material shininess 25.6 ➡ 100.".into())));
         s.redo();
         assert_eq!(s.doc.scene.material.shininess, 100.0);
     }

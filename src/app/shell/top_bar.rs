@@ -16,77 +16,124 @@ use crate::app::panels::export;
 /// The longest scene name shown whole beside the Scene menu (the rest in its hover).
 const NAME_CHARS: usize = 32;
 
-/// The top bar's row (or rows, when it wraps).
+/// The top bar's row: one row at every window size, presenting and not, in every
+/// language. Where its items do not fit at the mode's type size, the bar's own type is
+/// made smaller until they do (down to [`SMALLEST_BAR_TEXT`] of it), rather than an item
+/// giving way; the menus it opens keep the mode's size. Only past that does it wrap.
 pub fn top_bar_ui(ui: &mut Ui, state: &mut AppState) {
     // Labels move to the next row whole rather than breaking across rows.
     ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
-    ui.horizontal_wrapped(|ui| {
-        // Presenting, in large type, the bar keeps one row: the app's and the scene's names
-        // give way (the scene's is in the Scene menu's hover). Narrower than 1150 points,
-        // the app's name gives way and the controls close up.
-        let presenting = state.ui.layout.presenting;
-        let narrow = ui.available_width() < 1150.0;
-        // (Presenting in a narrow window, no separators either.)
-        let separator = |ui: &mut Ui| {
-            if !(presenting && narrow) {
-                ui.separator();
-            }
-        };
-        if presenting || narrow {
-            ui.spacing_mut().item_spacing.x *= 0.5;
-        } else {
-            ui.strong("phonglab");
+    let width = ui.available_width();
+    // Narrower than 1150 points, the app's name gives way and the controls close up.
+    let narrow = width < 1150.0;
+    let full = if state.ui.layout.presenting { layout::PRESENTATION_TEXT_SCALE } else { 1.0 };
+    let k = fitting_scale(ui, state, full, width, narrow);
+    layout::set_text_scale(ui.style_mut(), k);
+    ui.horizontal_wrapped(|ui| bar_row_ui(ui, state, narrow));
+}
+
+/// The least the bar's type is made, as a fraction of the mode's.
+pub const SMALLEST_BAR_TEXT: f32 = 0.7;
+
+/// The text scale at which the bar's row fits `width`: `full` where it does, else the one
+/// found from the row's width measured at two scales (laid out unseen: the width is a
+/// fixed part, paddings and gaps, and a part that grows with the type), then checked.
+fn fitting_scale(ui: &mut Ui, state: &mut AppState, full: f32, width: f32, narrow: bool) -> f32 {
+    // A little room at the row's end (the panel's margin is outside `width`).
+    let room = width - 4.0;
+    let at_full = row_width(ui, state, full, narrow);
+    if at_full <= room {
+        return full;
+    }
+    let low = full * SMALLEST_BAR_TEXT;
+    let at_low = row_width(ui, state, low, narrow);
+    if at_low >= room || at_full <= at_low {
+        return low;
+    }
+    // w(k) = a + b k through the two measures.
+    let b = (at_full - at_low) / (full - low);
+    let mut k = (low + (room - at_low) / b).clamp(low, full);
+    // Text does not scale quite linearly (glyphs snap to pixels): step down until it fits.
+    for _ in 0..4 {
+        if row_width(ui, state, k, narrow) <= room {
+            break;
+        }
+        k = (k * 0.98).max(low);
+    }
+    k
+}
+
+/// The width of the bar's row at text scale `k`, laid out in an unseen child (no paint, no
+/// input, nothing for screen readers).
+fn row_width(ui: &mut Ui, state: &mut AppState, k: f32, narrow: bool) -> f32 {
+    let builder = egui::UiBuilder::new()
+        .id_salt(("top bar measured", k.to_bits()))
+        .invisible()
+        .sizing_pass()
+        .layout(egui::Layout::left_to_right(egui::Align::Center));
+    let mut child = ui.new_child(builder);
+    layout::set_text_scale(child.style_mut(), k);
+    bar_row_ui(&mut child, state, narrow);
+    child.min_rect().width()
+}
+
+/// The bar's items, in order.
+fn bar_row_ui(ui: &mut Ui, state: &mut AppState, narrow: bool) {
+    // Presenting, in large type, the app's and the scene's names give way (the scene's is
+    // in the Scene menu's hover); narrower than 1150 points, the app's name too.
+    let presenting = state.ui.layout.presenting;
+    // (Presenting in a narrow window, no separators either.)
+    let separator = |ui: &mut Ui| {
+        if !(presenting && narrow) {
             ui.separator();
         }
-        let name = phonglab_core::library::localised_name(&state.doc.name);
-        let hover = if presenting { format!("{}\n{name}", t!("scene-menu-hover")) } else { t!("scene-menu-hover") };
-        ui.menu_button(t!("scene-menu"), |ui| scene_menu_ui(ui, state)).response.on_hover_text(hover);
-        if !presenting {
-            scene_name_ui(ui, &name);
-        }
-        separator(ui);
-        object_and_shading_ui(ui, state);
-        separator(ui);
-        if ui
-            .selectable_label(state.things.open, t!("things-to-try"))
-            .on_hover_text(t!("things-to-try-hover"))
-            .clicked()
-        {
-            state.things.toggle();
-        }
-        // Menus that hold fields and switches stay open while they are used.
-        let stay = MenuConfig::new().close_behavior(egui::PopupCloseBehavior::CloseOnClickOutside);
-        MenuButton::new(t!("file-menu"))
-            .config(stay.clone())
-            .ui(ui, |ui| file_menu_ui(ui, state))
-            .0
-            .on_hover_text(t!("file-menu-hover"));
-        MenuButton::new(t!("view-menu"))
-            .config(stay)
-            .ui(ui, |ui| view_menu_ui(ui, state))
-            .0
-            .on_hover_text(t!("view-menu-hover"));
-        separator(ui);
-        let layout = &mut state.ui.layout;
-        let present = if layout.presenting { t!("leave-presenting") } else { t!("present") };
-        if ui.selectable_label(layout.presenting, present).on_hover_text(t!("present-hover")).clicked() {
-            layout.presenting = !layout.presenting;
-        }
-        if layout.presenting {
-            // In front of a class the controls are a drawer, opened from here in one click
-            // (named "Controls" where the bar is narrow).
-            let name = if narrow { t!("controls") } else { t!("controls-drawer") };
-            ui.toggle_value(&mut layout.drawer_open, name).on_hover_text(t!("controls-drawer-hover"));
-        }
-        // Presenting in a narrow window (a 1024-point projector), the language and help give
-        // way too, so the bar keeps one row (F1 still opens help).
-        if !(presenting && narrow) {
-            language_menu_ui(ui, &mut state.ui.layout);
-            if ui.selectable_label(state.ui.show_help, t!("help-button")).clicked() {
-                state.ui.show_help = !state.ui.show_help;
-            }
-        }
-    });
+    };
+    if presenting || narrow {
+        ui.spacing_mut().item_spacing.x *= 0.5;
+    } else {
+        ui.strong("phonglab");
+        ui.separator();
+    }
+    let name = phonglab_core::library::localised_name(&state.doc.name);
+    let hover = if presenting { format!("{}\n{name}", t!("scene-menu-hover")) } else { t!("scene-menu-hover") };
+    ui.menu_button(t!("scene-menu"), |ui| scene_menu_ui(ui, state)).response.on_hover_text(hover);
+    if !presenting {
+        scene_name_ui(ui, &name);
+    }
+    separator(ui);
+    object_and_shading_ui(ui, state);
+    separator(ui);
+    if ui.selectable_label(state.things.open, t!("things-to-try")).on_hover_text(t!("things-to-try-hover")).clicked() {
+        state.things.toggle();
+    }
+    // Menus that hold fields and switches stay open while they are used.
+    let stay = MenuConfig::new().close_behavior(egui::PopupCloseBehavior::CloseOnClickOutside);
+    MenuButton::new(t!("file-menu"))
+        .config(stay.clone())
+        .ui(ui, |ui| file_menu_ui(ui, state))
+        .0
+        .on_hover_text(t!("file-menu-hover"));
+    MenuButton::new(t!("view-menu"))
+        .config(stay)
+        .ui(ui, |ui| view_menu_ui(ui, state))
+        .0
+        .on_hover_text(t!("view-menu-hover"));
+    separator(ui);
+    let layout = &mut state.ui.layout;
+    let present = if layout.presenting { t!("leave-presenting") } else { t!("present") };
+    if ui.selectable_label(layout.presenting, present).on_hover_text(t!("present-hover")).clicked() {
+        layout.presenting = !layout.presenting;
+    }
+    if layout.presenting {
+        // In front of a class the controls are a drawer, opened from here in one click
+        // (named "Controls" where the bar is narrow).
+        let name = if narrow { t!("controls") } else { t!("controls-drawer") };
+        ui.toggle_value(&mut layout.drawer_open, name).on_hover_text(t!("controls-drawer-hover"));
+    }
+    language_menu_ui(ui, &mut state.ui.layout);
+    if ui.selectable_label(state.ui.show_help, t!("help-button")).clicked() {
+        state.ui.show_help = !state.ui.show_help;
+    }
 }
 
 /// The scene's name (localised), cut to [`NAME_CHARS`] with the whole in its hover.
@@ -106,15 +153,22 @@ fn object_and_shading_ui(ui: &mut Ui, state: &mut AppState) {
     for (k, o) in [("s", ObjectKind::Sphere), ("t", ObjectKind::Teapot), ("c", ObjectKind::Cylinder)] {
         ui.selectable_value(&mut view.object, o, o.label()).on_hover_text(t!("key-hint", key = k));
     }
+    let mut close = false;
     if let Some(path) = &view.obj {
         let tip = t!("mesh-tip", path = path);
         ui.selectable_value(&mut view.object, ObjectKind::Obj, ObjectKind::Obj.label()).on_hover_text(tip);
+        // Kept through changes of scene until closed here.
+        let x = ui.add(egui::Button::new("×").small().frame(false));
+        x.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, t!("close-mesh")));
+        close = x.on_hover_text(t!("close-mesh-hover")).clicked();
     }
     ui.separator();
     for (k, s) in [("1", Shading::Gouraud), ("2", Shading::Phong), ("3", Shading::Flat)] {
         ui.selectable_value(&mut view.shading, s, s.label()).on_hover_text(t!("key-hint", key = k));
     }
-    if view != state.doc.view {
+    if close {
+        state.close_mesh();
+    } else if view != state.doc.view {
         let mut c = state.doc.clone();
         c.view = view;
         state.apply(c);

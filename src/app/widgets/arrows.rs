@@ -97,3 +97,43 @@ pub fn paint_labels(
     }
     boxes
 }
+
+/// [`paint_labels`] for `texts` (each one's text, colour and font): in their fonts where
+/// every label finds a free place, else in smaller ones (down to 60 %), so a crowded
+/// diagram's labels shrink rather than cover each other (β was written over N and H in a
+/// small plot).
+pub fn paint_labels_fitted(
+    p: &egui::Painter,
+    wanted: Vec<Wanted>,
+    texts: Vec<(String, Color32, egui::FontId)>,
+    lines: &[Segment],
+    bounds: Rect,
+    backdrop: Option<Color32>,
+) -> Vec<Rect> {
+    let pad = if backdrop.is_some() { 2.0 } else { 0.0 };
+    let scales = [1.0, 0.85, 0.72, 0.6];
+    let laid = |k: f32| {
+        let galleys: Vec<_> = texts
+            .iter()
+            .map(|(t, c, f)| p.layout_no_wrap(t.clone(), egui::FontId::new(f.size * k, f.family.clone()), *c))
+            .collect();
+        let mut w = wanted.clone();
+        for (w, g) in w.iter_mut().zip(&galleys) {
+            w.size = g.size() + vec2(2.0 * pad, 0.0);
+        }
+        let boxes = label_placement::place(&w, lines, bounds);
+        (galleys, boxes)
+    };
+    let (galleys, boxes) = scales
+        .iter()
+        .map(|k| laid(*k))
+        .find(|(_, boxes)| label_placement::all_clear(boxes, lines, bounds))
+        .unwrap_or_else(|| laid(scales[scales.len() - 1]));
+    for (b, g) in boxes.iter().zip(galleys) {
+        if let Some(fill) = backdrop {
+            p.rect_filled(*b, 3.0, fill);
+        }
+        p.galley(b.min + vec2(pad, 0.0), g, Color32::PLACEHOLDER);
+    }
+    boxes
+}

@@ -97,8 +97,8 @@ struct Landmarks(std::collections::BTreeMap<String, egui::Rect>);
 
 /// A labelled number field (no clamping).
 pub fn number_ui(ui: &mut Ui, label: &str, value: &mut f64, speed: f64) -> Response {
-    ui.horizontal(|ui| {
-        ui.label(label);
+    ui.horizontal_wrapped(|ui| {
+        ui.add(egui::Label::new(label).wrap_mode(egui::TextWrapMode::Extend));
         NumberField::new(value, label).speed(speed).show_ui(ui)
     })
     .inner
@@ -209,8 +209,9 @@ pub fn combo_ui<R>(
     selected: impl Into<egui::WidgetText>,
     contents: impl FnOnce(&mut Ui) -> R,
 ) -> egui::Response {
-    ui.horizontal(|ui| {
-        let l = ui.label(label);
+    // Wrapped: in a narrow panel the box goes under its label rather than past the edge.
+    ui.horizontal_wrapped(|ui| {
+        let l = ui.add(egui::Label::new(label).wrap_mode(egui::TextWrapMode::Extend));
         egui::ComboBox::from_id_salt(label).selected_text(selected).show_ui(ui, contents).response.labelled_by(l.id)
     })
     .inner

@@ -112,6 +112,17 @@ pub fn place(wanted: &[Wanted], lines: &[Segment], bounds: Rect) -> Vec<Rect> {
     placed
 }
 
+/// Whether `boxes` (as [`place`] returned them) all lie inside `bounds`, clear of each
+/// other and of `lines`: false where some label found no free place and was put beside its
+/// anchor regardless.
+pub fn all_clear(boxes: &[Rect], lines: &[Segment], bounds: Rect) -> bool {
+    boxes.iter().enumerate().all(|(i, r)| {
+        bounds.contains_rect(*r)
+            && !boxes[i + 1..].iter().any(|q| q.intersects(*r))
+            && !lines.iter().any(|s| touches(*r, s))
+    })
+}
+
 /// The free box nearest the anchor, on a grid over `bounds`.
 fn nearest_free(w: &Wanted, placed: &[Rect], lines: &[Segment], bounds: Rect) -> Option<Rect> {
     let (sx, sy) = ((w.size.x * 0.25).max(2.0), (w.size.y * 0.5).max(2.0));

@@ -19,6 +19,9 @@ pub const V: Color32 = Color32::from_rgb(0x00, 0x9E, 0x73);
 pub const H: Color32 = Color32::from_rgb(0xCC, 0x79, 0xA7);
 /// R, the reflection of L: it takes H's place under Phong's model, so H's colour (dashed).
 pub const R: Color32 = H;
+/// M n, the normal moved as a point would be, beside the true N (Okabe-Ito sky blue, a
+/// lighter N; drawn dotted).
+pub const NAIVE_NORMAL: Color32 = Color32::from_rgb(0x56, 0xB4, 0xE9);
 /// S, the spot axis (Okabe-Ito orange; drawn dotted).
 pub const SPOT: Color32 = Color32::from_rgb(0xE6, 0x9F, 0x00);
 /// Notes where the engine took a limit.
@@ -49,13 +52,21 @@ pub fn contrast(a: Color32, b: Color32) -> f32 {
     (la.max(lb) + 0.05) / (la.min(lb) + 0.05)
 }
 
+/// The least contrast a letter keeps against what it is written on (WCAG's for text).
+pub const TEXT_CONTRAST: f32 = 4.5;
+
 /// `c` as drawn on `background`: as it is where its contrast is at least [`MIN_CONTRAST`],
 /// otherwise darkened (on a light background) or lightened (on a dark one) until it is.
 pub fn ink_on(c: Color32, background: Color32) -> Color32 {
+    ink_with_contrast(c, background, MIN_CONTRAST)
+}
+
+/// [`ink_on`] to the contrast `least` (a symbol's letter: [`TEXT_CONTRAST`]).
+pub fn ink_with_contrast(c: Color32, background: Color32, least: f32) -> Color32 {
     let light_bg = luminance(background) > 0.18;
     let mut out = c;
     for k in 1..=20 {
-        if contrast(out, background) >= MIN_CONTRAST {
+        if contrast(out, background) >= least {
             break;
         }
         let t = k as f32 / 20.0;
@@ -130,5 +141,20 @@ mod tests {
                 assert!(d > 100, "{a:?} {b:?}");
             }
         }
+    }
+
+    #[test]
+    fn letters_read_at_a_texts_contrast_on_any_picture() {
+        // The Phong demo's black picture, the start's dark blue one, a white one, mid grey.
+        let backgrounds = [Color32::BLACK, Color32::from_rgb(20, 24, 40), Color32::WHITE, Color32::from_gray(128)];
+        for bg in backgrounds {
+            for (name, c) in [("N", N), ("L", L), ("V", V), ("H", H), ("M n", NAIVE_NORMAL)] {
+                let k = contrast(ink_with_contrast(c, bg, TEXT_CONTRAST), bg);
+                assert!(k >= TEXT_CONTRAST, "{name} on {bg:?}: {k:.2}");
+            }
+        }
+        // N's own blue on black is under it (3.2:1): the letter is lightened.
+        assert!(contrast(N, Color32::BLACK) < TEXT_CONTRAST);
+        assert_ne!(ink_with_contrast(N, Color32::BLACK, TEXT_CONTRAST), N);
     }
 }

@@ -6,27 +6,30 @@
 //! worked calculation, with this view's camera and spin, so both panels show one vertex.
 //!
 //! Its parts: what it is given ([`context`]), the toolbar and options (`toolbar`), the
-//! pictures (`pictures`), what the pointer does on them and what is drawn over them
-//! (`overlay`), the renderer's cache ([`cache`]) and the GPU's picture ([`gpu`]).
+//! pictures (`pictures`, their `captions`), what the pointer does on them and what is drawn over them
+//! (`overlay`; the lights, `light_marks`; both through `screen`), the renderer's cache ([`cache`]) and the GPU's picture ([`gpu`]).
 
 mod arrow_on_object;
 pub mod cache;
+mod captions;
 pub mod channel_view;
 pub mod context;
 pub mod gpu;
 pub mod heat_map;
+mod light_marks;
 mod overlay;
 mod pictures;
 pub mod probe_window;
+mod screen;
 mod toolbar;
 
 use egui::Ui;
 
 pub use arrow_on_object::ArrowOnObject;
 pub use cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
+pub use captions::{CaptionRoom, caption_room, drawn_caption};
 pub use context::{Asked, Shaded, ShadedOptions, corrected_document};
 pub use overlay::vector_arrows;
-pub use pictures::drawn_caption;
 pub use toolbar::departures_ui;
 
 use crate::app::model::evaluated::Evaluated;

@@ -1,9 +1,9 @@
 //! What the pointer does on the shaded view's picture (a light dragged, the orbit camera
 //! turned and zoomed, a vertex picked) and what is drawn over it: N, L, V and H (or R) at
-//! the worked calculation's vertex, the lights as markers, a spotlight's cone.
+//! the worked calculation's vertex, and the lights ([`super::light_marks`]).
 
-use egui::{Color32, Sense, Ui};
-use glam::{DVec3, DVec4};
+use egui::{Color32, Ui};
+use glam::DVec3;
 use phonglab_core::t;
 use phonglab_core::{Document, Framing, Vertex};
 
@@ -11,6 +11,7 @@ use super::arrow_on_object::ArrowOnObject;
 use super::cache::{DrawnBy, ShadedCache, mesh_for};
 use super::context::Shaded;
 use super::pictures::Shown;
+use super::screen::Overlay;
 use crate::app::model::evaluated::Evaluated;
 use crate::app::model::message::Message;
 
@@ -32,8 +33,9 @@ pub(super) fn interaction_ui(
         object_from_eye: scene.eye_from_object().inverse(),
     };
     // The lights first: the arrows' letters are then placed clear of their marks and names.
-    let (dragged_light, light_marks, cones) = lights_ui(ui, &overlay, state, scene);
-    let arrows = vectors_on_object_ui(ui, overlay.rect, state.edit.doc, eval, &light_marks);
+    let lights = super::light_marks::lights_ui(ui, &overlay, resp, state, scene);
+    let (dragged_light, cones) = (lights.dragging, lights.cones);
+    let arrows = vectors_on_object_ui(ui, overlay.rect, state.edit.doc, eval, &lights.marks);
 
     let mut cam = camera;
     // While the camera turns, a very large mesh is drawn from its coarse copy; the frame
@@ -57,8 +59,14 @@ pub(super) fn interaction_ui(
         }
     }
     if cam != camera {
+        // The vertex on the object stays the worked one, seen from the turned camera: its
+        // arrows are drawn again next frame, from the calculation made under it.
+        let on_object = vertex_on_object(state.edit.doc);
         let mut c = state.edit.doc.clone();
         c.view.camera = cam;
+        if on_object {
+            c = c.with_vertex_as_shaded(c.scene.vertex);
+        }
         state.edit.apply(c);
     }
     // With the probe on, a click pins the probe's pixel instead (`probe_ui`).
@@ -151,47 +159,6 @@ pub(super) fn probe_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut ShadedCa
     }
 }
 
-/// Where the shaded view's image is, and how object and eye space map onto it.
-struct Overlay {
-    /// The image on screen.
-    rect: egui::Rect,
-    /// The view's projection of the object.
-    clip_from_object: glam::DMat4,
-    /// The inverse of the scene's modelview, as the view lights it.
-    object_from_eye: glam::DMat4,
-}
-
-impl Overlay {
-    /// An object-space point (homogeneous) on screen, or `None` behind the camera.
-    fn screen_from_object(&self, p: DVec4) -> Option<egui::Pos2> {
-        let c = self.clip_from_object * p;
-        if c.w <= 0.0 || !c.is_finite() {
-            return None;
-        }
-        let (x, y) = (c.x / c.w, c.y / c.w);
-        let size = self.rect.size();
-        Some(self.rect.min + egui::vec2(((x + 1.0) * 0.5) as f32 * size.x, ((1.0 - y) * 0.5) as f32 * size.y))
-    }
-
-    /// An eye-space point on screen.
-    fn screen_from_eye(&self, p: DVec3) -> Option<egui::Pos2> {
-        self.screen_from_object(self.object_from_eye * p.extend(1.0))
-    }
-
-    /// The object-space point under the screen point `pos`, at the depth of the
-    /// object-space point `at` (so a dragged marker stays at its distance).
-    fn object_at(&self, pos: egui::Pos2, at: DVec4) -> Option<DVec4> {
-        let c = self.clip_from_object * at;
-        if c.w <= 0.0 {
-            return None;
-        }
-        let rel = (pos - self.rect.min) / self.rect.size();
-        let ndc = DVec4::new(rel.x as f64 * 2.0 - 1.0, 1.0 - rel.y as f64 * 2.0, c.z / c.w, 1.0);
-        let p = self.clip_from_object.inverse() * ndc;
-        (p.w != 0.0 && p.is_finite()).then(|| p / p.w)
-    }
-}
-
 /// N, V, and each light's L and H (or R) as arrows on the image `rect`, from the vertex on
 /// the object, each the same length in the world (0.5 of the object's unit, where the
 /// demo's sphere has radius 0.5) and projected as the picture is: a vector that points
@@ -200,7 +167,7 @@ impl Overlay {
 /// any scene whose frame is the view's).
 pub fn vector_arrows(doc: &Document, eval: &Evaluated, rect: egui::Rect) -> Vec<ArrowOnObject> {
     let mut out = Vec::new();
-    if doc.with_vertex_as_shaded(doc.scene.vertex) != *doc || doc.scene.vertex.position.w == 0.0 {
+    if !vertex_on_object(doc) {
         return out;
     }
     let scene = doc.shaded_scene();
@@ -234,6 +201,13 @@ pub fn vector_arrows(doc: &Document, eval: &Evaluated, rect: egui::Rect) -> Vec<
     add(eval.v, crate::app::widgets::palette::V, "V".into());
     add(eval.n, crate::app::widgets::palette::N, "N".into());
     out
+}
+
+/// Whether the worked calculation's vertex is one the shaded view draws, as the view lights
+/// it (after a click on the surface, or in any scene whose frame is the view's): then its
+/// arrows stand on the object, and a turn of the camera or of the object keeps them there.
+pub fn vertex_on_object(doc: &Document) -> bool {
+    doc.scene.vertex.position.w != 0.0 && doc.with_vertex_as_shaded(doc.scene.vertex) == *doc
 }
 
 /// Draws [`vector_arrows`] on the image as they are projected (one world length each, so
@@ -297,7 +271,11 @@ fn vectors_on_object_ui(
                 gap: width,
             });
         }
-        galleys.push(p.layout_no_wrap(a.name.clone(), font.clone(), c));
+        // The letter whole even where its arrow is faded, at a text's contrast on the
+        // picture (faded letters were unreadable on the demo's black picture).
+        let letter =
+            crate::app::widgets::palette::ink_with_contrast(a.colour, bg, crate::app::widgets::palette::TEXT_CONTRAST);
+        galleys.push(p.layout_no_wrap(a.name.clone(), font.clone(), letter));
     }
     paint_labels(&p, wanted, galleys, &lines, rect, Some(outline.gamma_multiply(0.6)));
     p.circle_filled(from, width * 1.3, on_picture(crate::app::widgets::palette::N));
@@ -321,165 +299,4 @@ fn vectors_on_object_ui(
         );
     }
     arrows
-}
-
-/// A light outside the picture: a triangle on the picture's edge pointing towards it, and
-/// its name (saying so when it is behind the camera, where no edge is nearer than another).
-fn light_off_view_ui(ui: &Ui, rect: egui::Rect, towards: egui::Vec2, i: usize, behind: bool) -> egui::Rect {
-    let d = if towards.length() > 1e-3 { towards.normalized() } else { egui::vec2(0.0, -1.0) };
-    // Where the ray from the centre along `d` leaves the picture, 14 points inside.
-    let half = rect.size() * 0.5 - egui::vec2(14.0, 14.0);
-    let t = (half.x / d.x.abs().max(1e-6)).min(half.y / d.y.abs().max(1e-6));
-    let tip = rect.center() + d * t;
-    let side = egui::vec2(-d.y, d.x) * 7.0;
-    let fill = Color32::from_rgb(255, 230, 120);
-    ui.painter().add(egui::Shape::convex_polygon(
-        vec![tip + d * 10.0, tip - d * 4.0 + side, tip - d * 4.0 - side],
-        fill,
-        egui::Stroke::new(1.5, Color32::BLACK),
-    ));
-    let at = tip - d * 16.0;
-    let name = if behind { t!("light-behind", index = i.to_string()) } else { t!("light-name", index = i.to_string()) };
-    let align = if d.x > 0.3 {
-        egui::Align2::RIGHT_CENTER
-    } else if d.x < -0.3 {
-        egui::Align2::LEFT_CENTER
-    } else {
-        egui::Align2::CENTER_CENTER
-    };
-    let name = name_on_picture(ui, at, align, name);
-    name.union(egui::Rect::from_center_size(tip, egui::vec2(20.0, 20.0)))
-}
-
-/// A light's name on the picture: light text on a dark backdrop, so that it reads on the
-/// picture's background whatever the window's theme (dark text on the dark picture did
-/// not, in the light theme). Returns where it is.
-fn name_on_picture(ui: &Ui, at: egui::Pos2, align: egui::Align2, name: String) -> egui::Rect {
-    let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
-    let galley = ui.painter().layout_no_wrap(name, font, Color32::WHITE);
-    let rect = align.anchor_size(at, galley.size());
-    ui.painter().rect_filled(rect.expand(2.0), 3.0, Color32::from_black_alpha(170));
-    ui.painter().galley(rect.min, galley, Color32::WHITE);
-    rect.expand(2.0)
-}
-
-/// A spotlight's cone as the view shows it: the rim of the cut-off circle where the cone
-/// reaches the object's distance (48 points on screen), `None` for a light that is no
-/// spotlight or whose cone does not project.
-fn spot_cone(
-    o: &Overlay,
-    scene: &phonglab_core::Scene,
-    l: &phonglab_core::Light,
-    at: DVec4,
-) -> Option<Vec<egui::Pos2>> {
-    if !l.is_spot() || at.w == 0.0 {
-        return None;
-    }
-    let object_from_light = o.object_from_eye * scene.eye_from_light(l);
-    let axis = object_from_light.transform_vector3(l.spot_direction).try_normalize()?;
-    let apex = at.truncate() / at.w;
-    let reach = apex.length().max(0.5);
-    let (a, b) = axis.any_orthonormal_pair();
-    let (cos, sin) = (l.spot_cutoff.to_radians().cos(), l.spot_cutoff.to_radians().sin());
-    (0..48)
-        .map(|k| {
-            let t = k as f64 / 48.0 * std::f64::consts::TAU;
-            let dir = axis * cos + (a * t.cos() + b * t.sin()) * sin;
-            o.screen_from_object((apex + dir * reach).extend(1.0))
-        })
-        .collect()
-}
-
-/// Each light as a marker where the view draws it; a marker can be dragged (in the plane
-/// facing the viewer), which moves the light. Returns whether a marker is being dragged,
-/// where each light's mark and name are (on the picture or at its edge), and the bounds of
-/// each spotlight's cone on it.
-fn lights_ui(
-    ui: &mut Ui,
-    o: &Overlay,
-    state: &mut Shaded<'_>,
-    scene: &phonglab_core::Scene,
-) -> (bool, Vec<egui::Rect>, Vec<egui::Rect>) {
-    let mut dragging = false;
-    let mut marks = Vec::new();
-    let mut cones = Vec::new();
-    let mut moved = None;
-    for (i, l) in state.edit.doc.scene.lights.iter().enumerate() {
-        let eye = scene.light_pos_in_eye(l);
-        let in_object = o.object_from_eye * eye;
-        // A directional light is drawn in its direction, a little outside the object.
-        let p = if in_object.w == 0.0 {
-            (in_object.truncate().normalize_or_zero() * 1.2).extend(1.0)
-        } else {
-            in_object / in_object.w
-        };
-        let centre = o.rect.center();
-        // A spotlight's cone: its rim where it reaches the object, drawn even when the light
-        // itself is off the picture (the spotlight preset's is above the view).
-        let cone = spot_cone(o, scene, l, p);
-        let spot_ink = crate::app::widgets::palette::ink(ui, crate::app::widgets::palette::SPOT);
-        if let Some(rim) = &cone {
-            ui.painter_at(o.rect).add(egui::Shape::closed_line(rim.clone(), egui::Stroke::new(1.5, spot_ink)));
-            cones.push(egui::Rect::from_points(rim).intersect(o.rect));
-        }
-        let pos = match o.screen_from_object(p) {
-            Some(pos) if o.rect.expand(-4.0).contains(pos) => pos,
-            seen => {
-                // Outside the picture (or behind the camera): an arrow at the edge, towards it.
-                let towards = match seen {
-                    Some(pos) => pos - centre,
-                    None => {
-                        let e = (o.object_from_eye.inverse() * p).truncate();
-                        egui::vec2(e.x as f32, -e.y as f32)
-                    }
-                };
-                marks.push(light_off_view_ui(ui, o.rect, towards, i, seen.is_none()));
-                continue;
-            }
-        };
-        if let Some(rim) = &cone {
-            // On the picture, the cone's sides from the light to its rim.
-            for q in rim.iter().step_by(6) {
-                ui.painter_at(o.rect).line_segment([pos, *q], egui::Stroke::new(1.5, spot_ink));
-            }
-        }
-        let hit = egui::Rect::from_center_size(pos, egui::vec2(18.0, 18.0));
-        let r = ui.interact(hit, ui.scope_id().with(("light marker", i)), Sense::drag());
-        r.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, format!("light {i} marker")));
-        let r = r.on_hover_text(t!("light-drag", index = i.to_string()));
-        let ring = if r.hovered() || r.dragged() { 3.0 } else { 1.5 };
-        ui.painter().circle(pos, 7.0, Color32::from_rgb(255, 230, 120), egui::Stroke::new(ring, Color32::BLACK));
-        let name = name_on_picture(
-            ui,
-            pos + egui::vec2(9.0, -9.0),
-            egui::Align2::LEFT_BOTTOM,
-            t!("light-name", index = i.to_string()),
-        );
-        marks.push(hit.union(name));
-        if r.dragged() {
-            dragging = true;
-            // The marker follows the pointer (it is small, so grabbing it off-centre
-            // moves it by at most its radius).
-            let target = r.interact_pointer_pos().unwrap_or(pos + r.drag_delta());
-            if let Some(to) = o.object_at(target, p) {
-                moved = Some((i, to, in_object.w == 0.0));
-            }
-        }
-    }
-    if let Some((i, to, directional)) = moved {
-        let mut c = state.edit.doc.clone();
-        let l = &mut c.scene.lights[i];
-        let eye_from_object = o.object_from_eye.inverse();
-        let eye = if directional {
-            (eye_from_object * to.truncate().extend(0.0)).truncate().normalize_or_zero().extend(0.0)
-        } else {
-            eye_from_object * to
-        };
-        let light = scene.eye_from_light(l).inverse() * eye;
-        if light.is_finite() {
-            l.position = light;
-            state.edit.apply(c);
-        }
-    }
-    (dragging, marks, cones)
 }

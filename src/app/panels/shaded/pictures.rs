@@ -2,10 +2,10 @@
 //! drawn by the GPU or the CPU, and beside it the demo corrected or the error heat map.
 
 use egui::{Sense, Ui};
-use phonglab_core::library::DemoDeparture;
 use phonglab_core::{Document, t};
 
 use super::cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
+use super::captions::{Caption, CaptionRoom, caption_room, caption_ui, corrected_caption, main_caption};
 use super::channel_view::{legend_height, legend_ui};
 use super::context::{Shaded, corrected_document};
 use super::gpu::{self, GpuImage};
@@ -33,16 +33,20 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
     let avail = egui::vec2(ui.max_rect().width(), ui.available_size().y);
     let heat = state.heat_map.on;
     let beside = heat || corrected.is_some();
-    // Leave room for the caption line above the image (and the picture beside it).
+    // Leave room for the caption above the image (and the picture beside it).
     let width = if beside { (avail.x - 8.0) / 2.0 } else { avail.x };
-    // Room for the caption's one line above the image (cut to the picture's width, whole in
-    // its hover): a caption that wrapped took the picture's height.
     let channel = state.view_options.channel;
-    let caption_room = ui.text_style_height(&egui::TextStyle::Small) + 8.0;
-    // The legend wraps to the picture's width: sized at the width, then at the side found.
-    let legend = |w: f32| channel.map_or(0.0, |c| legend_height(ui, c, w));
-    let side = width.min(avail.y - caption_room - legend(width)).max(64.0);
-    let side = width.min(avail.y - caption_room - legend(side)).max(64.0);
+    // The legend wraps to the picture's width: sized at the side found so far.
+    let legend = |ui: &Ui, w: f32| channel.map_or(0.0, |c| legend_height(ui, c, w));
+    // The captions' room: as tall as the tallest caption this view may show at the
+    // picture's width, so the picture does not move when who drew it changes.
+    let room = CaptionRoom { presenting: state.presenting, pair: beside };
+    let mut side = width;
+    let mut caption_h = 0.0;
+    for _ in 0..3 {
+        caption_h = caption_room(ui, state.edit.doc, state.view_options, &mut cache.main, side, room);
+        side = width.min(avail.y - caption_h - 8.0 - legend(ui, side)).max(64.0);
+    }
     let ppp = ui.ctx().pixels_per_point();
     let px = ((side * ppp) as usize).clamp(64, 1024);
     // One texel a screen pixel (no resampling), unless the view is wider than 1024 pixels.
@@ -62,16 +66,7 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
         state.edit.doc.shaded_scene()
     };
     let size = egui::vec2(side, side);
-    let caption = format!(
-        "{} {}: {}{}",
-        state.edit.doc.view.object.label(),
-        state.edit.doc.view.shading.label(),
-        match channel {
-            Some(c) => t!("channel-caption", channel = phonglab_core::locale::tr(c.message_id())),
-            None => drawn_caption(&cache.main),
-        },
-        if corrected.is_some() { t!("the-demos-own") } else { String::new() }
-    );
+    let caption = main_caption(state.edit.doc, state.view_options, &cache.main, room);
     let channel_texture = channel.and_then(|c| {
         let mesh = mesh_for(&mut cache.main.mesh, &state.edit.doc.view).clone();
         let view = &mut cache.channel;
@@ -83,6 +78,12 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
             }
         }
     });
+    // Where the caption is short, the whole is said in the picture's hover.
+    let hover = if caption.shown == caption.whole {
+        t!("picture-hover")
+    } else {
+        format!("{}\n{}", caption.whole, t!("picture-hover"))
+    };
     let mut second = None;
     let resp = ui
         .horizontal_top(|ui| {
@@ -90,13 +91,13 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
                 .vertical(|ui| {
                     // Captions wrap within the picture's width rather than widen its column.
                     ui.set_max_width(side);
-                    let label = caption_ui(ui, &caption);
+                    let label = caption_ui(ui, &caption.shown, side, caption_h);
                     let picture = match channel_texture {
                         Some((_, id)) => ui.add(egui::Image::new((id, size)).sense(Sense::click_and_drag())),
                         None => picture_ui(ui, &cache.main, main_gpu.take(), size, Sense::click_and_drag()),
                     }
-                    .on_hover_text(t!("picture-hover"))
-                    .labelled_by(label.id);
+                    .on_hover_text(hover);
+                    let picture = named(ui, picture, &label, &caption);
                     if let Some((c, _)) = channel_texture {
                         legend_ui(ui, c, cache.channel.range, side);
                     }
@@ -107,15 +108,11 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
             if corrected.is_some() {
                 ui.vertical(|ui| {
                     ui.set_max_width(side);
-                    let fixed: Vec<String> = DemoDeparture::ALL
-                        .into_iter()
-                        .zip(state.view_options.demo_fixes)
-                        .filter(|(d, on)| *on && d.present_in(state.edit.doc))
-                        .map(|(d, _)| d.fix_label())
-                        .collect();
-                    let label = caption_ui(ui, &t!("corrected", fixes = fixed.join(", ")));
+                    let text = corrected_caption(state.edit.doc, &state.view_options.demo_fixes);
+                    let label = caption_ui(ui, &text.shown, side, caption_h);
                     let r = picture_ui(ui, &cache.corrected, corrected_gpu.take(), size, Sense::hover())
-                        .labelled_by(label.id);
+                        .on_hover_text(&text.whole);
+                    let r = named(ui, r, &label, &text);
                     second = Some(r.rect);
                 });
             } else if heat {
@@ -127,10 +124,14 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
     Shown { response: resp, second, size, px, scene }
 }
 
-/// A picture's caption: one small line, cut to the width with "…", the whole in its hover.
-fn caption_ui(ui: &mut Ui, text: &str) -> egui::Response {
-    let small = egui::RichText::new(text).small();
-    ui.add(egui::Label::new(small).truncate()).on_hover_text(text)
+/// Names a picture by its whole caption (for screen readers and the tests): by the caption
+/// `label` above it where that is whole, else by the whole text.
+fn named(ui: &Ui, picture: egui::Response, label: &egui::Response, caption: &Caption) -> egui::Response {
+    if caption.shown == caption.whole {
+        return picture.labelled_by(label.id);
+    }
+    ui.ctx().accesskit_node_builder(picture.id, |b| b.set_label(caption.whole.clone()));
+    picture
 }
 
 /// Draws `doc`'s picture for `cache`: on the GPU when the adapter, the renderer choice and
@@ -184,25 +185,4 @@ fn picture_ui(ui: &mut Ui, cache: &ViewCache, gpu: Option<GpuImage>, size: egui:
         (None, Some(tex)) => ui.add(egui::Image::new((tex.id(), size)).sense(sense)),
         (None, None) => ui.allocate_exact_size(size, sense).1,
     }
-}
-
-/// Who drew the picture, for its caption.
-pub fn drawn_caption(cache: &ViewCache) -> String {
-    match &cache.drawn_by {
-        DrawnBy::Gpu { adapter } => t!("caption-gpu", adapter = adapter.to_string()),
-        _ if let Some(c) = cache.last_coarse => {
-            let (ms, triangles) = (fmt_ms(cache.last_ms), phonglab_core::locale::grouped(c.triangles as u64));
-            let all = phonglab_core::locale::grouped(c.of as u64);
-            match c.spinning {
-                true => t!("caption-cpu-coarse-spin", ms = ms, triangles = triangles, all = all),
-                false => t!("caption-cpu-coarse", ms = ms, triangles = triangles, all = all),
-            }
-        }
-        _ if cache.last_relit => t!("caption-cpu-relit", ms = fmt_ms(cache.last_ms)),
-        _ => t!("caption-cpu", ms = fmt_ms(cache.last_ms)),
-    }
-}
-
-fn fmt_ms(ms: f64) -> String {
-    phonglab_core::locale::decimal(&format!("{ms:.1}"))
 }

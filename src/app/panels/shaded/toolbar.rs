@@ -153,8 +153,14 @@ pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCach
     }
 
     // The spin is not an edit: it stays finite and in range, and must not clear a message.
+    // A worked vertex on the object turns with it (its arrows stay on it).
     if state.edit.doc.view.auto_rotate {
-        state.edit.doc.view.spin_degrees = (state.edit.doc.view.spin_degrees + 0.5).rem_euclid(360.0);
+        let on_object = super::overlay::vertex_on_object(state.edit.doc);
+        let doc = &mut *state.edit.doc;
+        doc.view.spin_degrees = (doc.view.spin_degrees + 0.5).rem_euclid(360.0);
+        if on_object {
+            *doc = doc.with_vertex_as_shaded(doc.scene.vertex);
+        }
         ui.ctx().request_repaint();
     }
     open_obj_requested
