@@ -218,7 +218,7 @@ fn write_mesh(out: &std::path::Path, mesh: &phonglab_core::mesh::Mesh) -> Result
         "{}",
         phonglab_core::t!(
             "bench-mesh-written",
-            path = out.display().to_string(),
+            path = crate::io::reasons::shown(out),
             triangles = mesh.triangle_count().to_string(),
             vertices = mesh.positions.len().to_string()
         )

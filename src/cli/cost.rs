@@ -218,8 +218,9 @@ pub fn run(a: &CostRun) -> Result<()> {
     set.add("cost.md", tables);
     let (w, h, rgba) = chart_png(&studies, 1.5);
     set.add("cost.png", crate::io::image::encode_png(w, h, &rgba)?);
-    crate::io::file_set::write_set(&a.out, &set, belongs_to_a_report)?;
-    eprintln!("{}", phonglab_core::t!("cost-wrote", files = set.to_string(), out = a.out.display().to_string()));
+    let notices = crate::io::file_set::write_set(&a.out, &set, belongs_to_a_report)?;
+    notices.iter().for_each(|n| super::say(n));
+    super::say(&phonglab_core::t!("cost-wrote", files = set.to_string(), out = crate::io::reasons::shown(&a.out)));
     Ok(())
 }
 

@@ -64,20 +64,20 @@ pub fn eval_stream(
         let file = crate::platform::os::open_to_read(path).map_err(|e| {
             anyhow::anyhow!(t!(
                 "read-cannot",
-                path = path.display().to_string(),
+                path = crate::io::reasons::shown(path),
                 reason = crate::io::reasons::io_reason(&e)
             ))
         })?;
         let meta = file.metadata()?;
         if !meta.is_file() {
-            bail!(t!("read-not-a-file", path = path.display().to_string()));
+            bail!(t!("read-not-a-file", path = crate::io::reasons::shown(path)));
         }
-        let (shown, kind) = (path.display().to_string(), t!("file-kind-cases"));
+        let (shown, kind) = (crate::io::reasons::shown(path), t!("file-kind-cases"));
         crate::io::input_file::within_cap(&shown, meta.len(), crate::io::input_file::MAX_CASE_BYTES, &kind)
             .map_err(anyhow::Error::msg)?;
         Ok(file)
     };
-    let not_cases = || format!("{}: {}", path.display(), t!("err-not-case-file"));
+    let not_cases = || format!("{}: {}", crate::io::reasons::shown(path), t!("err-not-case-file"));
     glref::count_cases(open()?).context(not_cases())?;
     let (mut all, mut failed) = (0usize, 0usize);
     let mut write_error = None;

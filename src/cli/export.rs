@@ -80,13 +80,14 @@ pub fn export(a: &ExportArgs) -> Result<()> {
                 set.add(name.clone(), text.clone().into_bytes());
             }
             let names: Vec<String> = written.iter().map(|(n, _)| n.clone()).collect();
-            crate::io::file_set::write_set(dir, &set, |n| names.iter().any(|m| m == n))?;
-            eprintln!("{}", t!("export-written", path = dir.display().to_string()));
+            let notices = crate::io::file_set::write_set(dir, &set, |n| names.iter().any(|m| m == n))?;
+            notices.iter().for_each(|n| super::say(n));
+            super::say(&t!("export-written", path = crate::io::reasons::shown(dir)));
         }
         (Some(path), _) => {
             crate::io::atomic_write::check_file_destination(path)?;
             crate::io::atomic_write::write(path, written[0].1.as_bytes())?;
-            eprintln!("{}", t!("export-written", path = path.display().to_string()));
+            super::say(&t!("export-written", path = crate::io::reasons::shown(path)));
         }
     }
     Ok(())
@@ -133,18 +134,15 @@ pub fn import(a: &ImportArgs) -> Result<()> {
     crate::io::same_file::refuse_output_onto_input(&[&a.output], &[&a.file]).map_err(anyhow::Error::msg)?;
     let imported = read_student_code(&a.file)?;
     for notice in &imported.notices {
-        eprintln!("{}", phonglab_core::escape::terminal::lines(&format!("{}: {notice}", a.file.display())));
+        super::say(&format!("{}: {notice}", crate::io::reasons::shown(&a.file)));
     }
     crate::io::atomic_write::check_file_destination(&a.output)?;
     let text = imported.doc.to_toml().map_err(|e| anyhow::anyhow!("{e}"))?;
     crate::io::atomic_write::write(&a.output, text.as_bytes())?;
-    eprintln!(
-        "{}",
-        t!(
-            "import-written",
-            path = a.output.display().to_string(),
-            lights = t!("lights-count", count = imported.doc.scene.lights.len())
-        )
-    );
+    super::say(&t!(
+        "import-written",
+        path = crate::io::reasons::shown(&a.output),
+        lights = t!("lights-count", count = imported.doc.scene.lights.len())
+    ));
     Ok(())
 }

@@ -261,32 +261,26 @@ pub fn run(a: &RenderArgs) -> Result<()> {
             }
             let (lo, hi) = image.range();
             let number = |x: f64| phonglab_core::locale::num(x, 4);
-            eprintln!(
-                "{}",
-                t!(
+            super::say(&t!(
                     "render-channel-summary",
                     channel = phonglab_core::locale::tr(channel.message_id()),
                     map = format!("{:?}", a.colour_map).to_lowercase(),
                     low = number(lo),
                     high = number(hi)
-                )
-            );
+            ));
         }
     }
-    eprintln!(
-        "{}",
-        t!(
+    super::say(&t!(
             "render-summary",
-            path = a.output.display().to_string(),
+            path = crate::io::reasons::shown(&a.output),
             size = format!("{width}x{height}"),
             triangles = stats.triangles,
             covered = phonglab_core::locale::decimal(&format!("{:.1}", 100.0 * coverage)),
             evaluations = stats.evaluations,
             ms = phonglab_core::locale::decimal(&format!("{ms:.1}"))
-        )
-    );
+    ));
     for note in &loaded.notes {
-        eprintln!("{}", t!("note-line", note = note));
+        super::say(&t!("note-line", note = note));
     }
     Ok(())
 }

@@ -56,7 +56,8 @@ pub fn run(a: &ShareArgs) -> Result<()> {
         ..Shared::of(doc)
     };
     let url = link(&a.base, &shared)?;
-    println!("{url}");
+    // The page (`--base`) is the user's text: written visibly if it holds a control.
+    println!("{}", phonglab_core::escape::terminal::text(&url));
     eprintln!("{}", t!("share-summary", length = url.len() as i64));
     if let Some(qr) = &a.qr {
         crate::io::qr::write(qr, &url)?;

@@ -17,6 +17,7 @@ pub mod misconception_set;
 pub mod qr;
 pub mod reasons;
 pub mod same_file;
+pub mod set_journal;
 pub mod save;
 pub mod scenes;
 pub mod sheet_pdf;
