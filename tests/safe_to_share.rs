@@ -34,7 +34,7 @@ fn refused_onto_input(args: &[&str], input: &Path) {
     let out = phonglab(args);
     let e = stderr(&out);
     assert_eq!(out.status.code(), Some(2), "{args:?}: {e}");
-    assert!(e.contains("is the input") && e.contains("the same file"), "{args:?}: {e}");
+    assert!(e.contains("which this command reads") && e.contains("the same file"), "{args:?}: {e}");
     assert_eq!(std::fs::read(input).unwrap(), before, "{args:?} changed its input");
 }
 
@@ -76,6 +76,35 @@ fn an_output_that_is_an_input_is_refused_by_every_command() {
     // A different file is written as asked.
     let ok = phonglab(&["import", s(&nb), "-o", s(&dir.join("nb.toml"))]);
     assert!(ok.status.success(), "{}", stderr(&ok));
+}
+
+/// Issue 54, 1: the scene's mesh is an input of `share --qr` too, and one output of a
+/// command is never another (the PFM of `render --raw` onto its PNG), said in those words.
+#[test]
+fn an_output_onto_the_mesh_or_onto_the_other_output_is_refused_in_those_words() {
+    let dir = folder("onto-mesh");
+    let mesh = dir.join("m.obj");
+    std::fs::write(&mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    let scene = dir.join("s.toml");
+    std::fs::write(&scene, "name = \"m\"\n[material]\npreset = \"gold\"\n[view]\nobject = \"obj\"\nobj = \"m.obj\"\n")
+        .unwrap();
+    refused_onto_input(&["share", s(&scene), "--qr", s(&mesh)], &mesh);
+    let e = stderr(&phonglab(&["share", s(&scene), "--qr", s(&mesh)]));
+    assert!(e.contains("is the mesh"), "{e}");
+    // The two outputs of one render: refused before either is written, whether the file
+    // is there yet or not.
+    let pic = dir.join("pic.png");
+    for there in [false, true] {
+        if there {
+            std::fs::write(&pic, "the old picture").unwrap();
+        }
+        let o = phonglab(&["render", "--size", "8", "--channel", "diffuse", "--raw", s(&pic), "-o", s(&pic)]);
+        let e = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{e}");
+        assert!(e.contains("is the other output") && e.contains("the same file"), "{e}");
+        let now = std::fs::read(&pic).ok();
+        assert_eq!(now.as_deref(), there.then_some(b"the old picture".as_slice()), "nothing written");
+    }
 }
 
 #[test]

@@ -139,8 +139,9 @@ fn render(a: &RenderBench) -> Result<()> {
         object_chosen(object) && a.shading.as_deref().is_none_or(|s| shading.label().eq_ignore_ascii_case(s))
     };
     if let Some(out) = &a.write_mesh {
-        let inputs: Vec<&std::path::Path> = a.mesh.iter().map(|p| p.as_path()).collect();
-        crate::io::same_file::refuse_output_onto_input(&[out], &inputs).map_err(anyhow::Error::msg)?;
+        use crate::io::same_file::{Input, refuse_onto};
+        let inputs: Vec<(&std::path::Path, Input)> = a.mesh.iter().map(|p| (p.as_path(), Input::Mesh)).collect();
+        refuse_onto(&[out], &inputs).map_err(anyhow::Error::msg)?;
         crate::io::atomic_write::check_file_destination(out)?;
     }
     let meshes: Vec<(&'static str, phonglab_core::mesh::Mesh)> = if let Some(path) = &a.mesh {

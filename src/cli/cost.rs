@@ -258,6 +258,7 @@ pub fn run_args(a: &CostArgs) -> Result<()> {
         let earlier = std::fs::read_dir(&a.out).into_iter().flatten().flatten();
         names.extend(earlier.map(|e| e.file_name().to_string_lossy().into_owned()).filter(|n| belongs_to_a_report(n)));
         let names: Vec<&str> = names.iter().map(String::as_str).collect();
+        let scene = (scene.as_path(), crate::io::same_file::Input::Scene);
         crate::io::same_file::refuse_outputs_in_folder(&a.out, &names, &[scene]).map_err(anyhow::Error::msg)?;
     }
     let doc = match &a.scene {

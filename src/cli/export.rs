@@ -53,15 +53,16 @@ pub struct ExportArgs {
 /// Runs `phonglab export`.
 pub fn export(a: &ExportArgs) -> Result<()> {
     let target = Target::from(a.to);
+    use crate::io::same_file::Input;
     if let (Some(scene), Some(output)) = (&a.scene, &a.output) {
-        refuse_onto(target, output, scene)?;
+        refuse_onto(target, output, scene, Input::Scene)?;
     }
     let doc = match &a.scene {
         Some(p) => crate::io::input_file::load_scene(p).map_err(anyhow::Error::msg)?,
         None => phonglab_core::Document::default(),
     };
     if let (Some(mesh), Some(output)) = (&doc.view.obj, &a.output) {
-        refuse_onto(target, output, std::path::Path::new(mesh))?;
+        refuse_onto(target, output, std::path::Path::new(mesh), Input::Mesh)?;
     }
     let written = files(&doc, target).map_err(anyhow::Error::msg)?;
     match (&a.output, target) {
@@ -95,15 +96,20 @@ pub fn export(a: &ExportArgs) -> Result<()> {
 
 /// Refuses an export whose output (a file, or for openFrameworks the files of its `src/`)
 /// is the file `input`.
-fn refuse_onto(target: Target, output: &std::path::Path, input: &std::path::Path) -> Result<()> {
+fn refuse_onto(
+    target: Target,
+    output: &std::path::Path,
+    input: &std::path::Path,
+    kind: crate::io::same_file::Input,
+) -> Result<()> {
     let refused = if target == Target::OpenFrameworks {
         crate::io::same_file::refuse_outputs_in_folder(
             &output.join("src"),
             &["ofApp.h", "ofApp.cpp", "main.cpp"],
-            &[input],
+            &[(input, kind)],
         )
     } else {
-        crate::io::same_file::refuse_output_onto_input(&[output], &[input])
+        crate::io::same_file::refuse_onto(&[output], &[(input, kind)])
     };
     refused.map_err(anyhow::Error::msg)
 }
@@ -131,7 +137,8 @@ pub fn read_student_code(path: &std::path::Path) -> Result<phonglab_core::export
 
 /// Runs `phonglab import`.
 pub fn import(a: &ImportArgs) -> Result<()> {
-    crate::io::same_file::refuse_output_onto_input(&[&a.output], &[&a.file]).map_err(anyhow::Error::msg)?;
+    let code = crate::io::same_file::Input::Code;
+    crate::io::same_file::refuse_onto(&[&a.output], &[(&a.file, code)]).map_err(anyhow::Error::msg)?;
     let imported = read_student_code(&a.file)?;
     for notice in &imported.notices {
         super::say(&format!("{}: {notice}", crate::io::reasons::shown(&a.file)));

@@ -150,8 +150,10 @@ impl Loaded {
 
 impl ShadedInput {
     /// Every input file named (the scene, the OBJ), for refusing an output onto one.
-    pub fn inputs(&self) -> Vec<&Path> {
-        self.scene.iter().chain(&self.obj).map(PathBuf::as_path).collect()
+    pub fn inputs(&self) -> Vec<(&Path, crate::io::same_file::Input)> {
+        use crate::io::same_file::Input;
+        let scene = self.scene.iter().map(|p| (p.as_path(), Input::Scene));
+        scene.chain(self.obj.iter().map(|p| (p.as_path(), Input::Mesh))).collect()
     }
 
     /// Reads the scene and builds its mesh; refuses `outputs` that are the scene's own mesh
@@ -206,8 +208,8 @@ impl ShadedInput {
             let mut notes = Vec::new();
             if doc.view.object == ObjectKind::Obj {
                 // The scene's own mesh is an input too.
-                let mesh = doc.view.obj.as_deref().map(Path::new);
-                crate::io::same_file::refuse_output_onto_input(outputs, mesh.as_slice()).map_err(anyhow::Error::msg)?;
+                let mesh = doc.view.obj.as_deref().map(|m| (Path::new(m), crate::io::same_file::Input::Mesh));
+                crate::io::same_file::refuse_onto(outputs, mesh.as_slice()).map_err(anyhow::Error::msg)?;
                 notes = doc.view.obj_mesh()?.notes.clone();
             }
             let mesh = doc.view.mesh();
@@ -234,10 +236,8 @@ impl ShadedInput {
 /// Runs `phonglab render`.
 pub fn run(a: &RenderArgs) -> Result<()> {
     let outputs: Vec<&Path> = std::iter::once(a.output.as_path()).chain(a.raw.as_deref()).collect();
-    crate::io::same_file::refuse_output_onto_input(&outputs, &a.input.inputs()).map_err(anyhow::Error::msg)?;
-    if let Some(raw) = &a.raw {
-        crate::io::same_file::refuse_output_onto_input(&[raw], &[&a.output]).map_err(anyhow::Error::msg)?;
-    }
+    // Onto an input, or the PFM onto the PNG: refused before anything is read.
+    crate::io::same_file::refuse_onto(&outputs, &a.input.inputs()).map_err(anyhow::Error::msg)?;
     for o in &outputs {
         crate::io::atomic_write::check_file_destination(o)?;
     }

@@ -216,7 +216,7 @@ pub(crate) fn rename_no_replace(from: &Path, to: &Path) -> io::Result<()> {
 /// The file a path leads to: `path` itself, or, for a symbolic link, the file it names
 /// (a chain of links followed, the last one's target even where nothing is there yet, so a
 /// link stays a link and its file is written). Refused past 40 links (a loop).
-fn through_links(path: &Path) -> io::Result<PathBuf> {
+pub(crate) fn through_links(path: &Path) -> io::Result<PathBuf> {
     let mut p = path.to_path_buf();
     for _ in 0..40 {
         match std::fs::symlink_metadata(&p) {
