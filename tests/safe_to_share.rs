@@ -209,3 +209,17 @@ fn a_size_past_the_memory_budget_is_refused_with_its_estimate_before_any_work() 
     let o = phonglab(&["--memory-budget", "lots", "render", "--size", "64", "-o", s(&out)]);
     assert!(stderr(&o).contains("write a size such as 512M, 8G or 1.5G"), "{}", stderr(&o));
 }
+
+/// Issue 54, 4: a message quotes a line cut to about 80 characters, however long the line
+/// (a 2 MiB `ns = AAAA…` once put 4 MiB on the standard error).
+#[test]
+fn a_message_quotes_a_line_cut_short_however_long_it_is() {
+    let dir = folder("long-line");
+    let py = dir.join("long.py");
+    std::fs::write(&py, format!("{SCRIPT}ns = {}\n", "A".repeat(2 << 20))).unwrap();
+    let o = phonglab(&["import", s(&py), "-o", s(&dir.join("long.toml"))]);
+    let e = stderr(&o);
+    assert!(o.status.success(), "{e}");
+    assert!(e.len() < 2000, "{} bytes on the standard error", e.len());
+    assert!(e.contains("`ns = AAAA") && e.contains("A…`"), "{e}");
+}
