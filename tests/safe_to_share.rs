@@ -223,3 +223,50 @@ fn a_message_quotes_a_line_cut_short_however_long_it_is() {
     assert!(e.len() < 2000, "{} bytes on the standard error", e.len());
     assert!(e.contains("`ns = AAAA") && e.contains("A…`"), "{e}");
 }
+
+/// Issue 54, 5: `eval` and `cost` estimate before they allocate, and refuse past the
+/// memory budget with the estimate (a 16 MiB case took 290 MB, a study at size 32 about
+/// 700 MB, whatever the budget).
+#[test]
+fn eval_and_cost_refuse_past_the_memory_budget_before_any_work() {
+    let dir = folder("budget-eval-cost");
+    let cases = dir.join("big.json");
+    let n = 2 << 20;
+    std::fs::write(&cases, format!("{{\"cases\":[{{\"id\":\"a\",\"tags\":[{}0]}}]}}", "0,".repeat(n))).unwrap();
+    let o = phonglab(&["--memory-budget", "64M", "eval", s(&cases)]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(e.contains("lighting one case of 4 194 337 bytes") && e.contains("needs about 150 996 000 bytes"), "{e}");
+    assert!(o.stdout.is_empty(), "nothing printed");
+    assert!(phonglab(&["--memory-budget", "1G", "eval", s(&cases)]).status.code() != Some(2), "within it, it runs");
+    let out = dir.join("report");
+    let t = std::time::Instant::now();
+    let o = phonglab(&["--memory-budget", "100M", "cost", "--quick", "--size", "32", "--out", s(&out)]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(e.contains("the study of 3 objects at 32 x 32 pixels needs about"), "{e}");
+    assert!(t.elapsed().as_secs_f64() < 5.0 && !out.exists(), "refused before any work");
+}
+
+/// Issue 54, 6 and 7: `--threads` past what the machine runs, and a `--light` the scene
+/// does not have, are refused with a message (they spawned thousands of threads, and
+/// drew an empty channel with exit 0).
+#[test]
+fn too_many_threads_and_a_missing_light_are_refused() {
+    let dir = folder("threads-light");
+    let o = phonglab(&["cost", "--quick", "--size", "16", "--threads", "100000", "--out", s(&dir)]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(e.contains("--threads 100000: this machine runs at most"), "{e}");
+    let most = std::thread::available_parallelism().unwrap().get().to_string();
+    let o = phonglab(&["bench", "render", "--frames", "1", "--size", "16", "--threads", "100000"]);
+    assert!(stderr(&o).contains(&format!("at most {most} threads")), "{}", stderr(&o));
+    let pic = dir.join("x.png");
+    let o = phonglab(&["render", "--size", "8", "--channel", "specular", "--light", "99", "-o", s(&pic)]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(e.contains("--light 99: the scene has one light, number 0"), "{e}");
+    assert!(!pic.exists());
+    let o = phonglab(&["render", "--size", "8", "--channel", "specular", "--light", "0", "-o", s(&pic)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+}

@@ -359,7 +359,8 @@ fn stage_figures(arrays: &mut LightingArrays, repeats: u32) -> Result<()> {
 pub fn run(cmd: &BenchCommand) -> Result<()> {
     match cmd {
         BenchCommand::Render(a) => {
-            let pool = rayon::ThreadPoolBuilder::new().num_threads(a.threads.unwrap_or(0)).build()?;
+            let threads = crate::platform::threads::asked(a.threads).map_err(anyhow::Error::msg)?;
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build()?;
             pool.install(|| render(a))
         }
         BenchCommand::Lighting(a) => lighting(a),

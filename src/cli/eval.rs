@@ -49,9 +49,10 @@ pub fn run(a: &EvalArgs) -> Result<ExitCode> {
 /// prints): the number of cases and of failed ones.
 ///
 /// The file is read as a stream twice, never whole: once to check that it is a case file
-/// (so a broken one writes nothing), then case by case, each result written as it is
-/// lit. The memory is one case's (and the ids', to refuse a repeated one), whatever the
-/// number of cases.
+/// (so a broken one writes nothing) and to measure its largest case, which is refused past
+/// the memory budget ([`crate::io::budget::eval_bytes`]); then case by case, each result
+/// written as it is lit. The memory is one case's (and the ids', to refuse a repeated
+/// one), whatever the number of cases.
 pub fn eval_stream(
     path: &Path,
     precision: Precision,
@@ -78,7 +79,11 @@ pub fn eval_stream(
         Ok(file)
     };
     let not_cases = || format!("{}: {}", crate::io::reasons::shown(path), t!("err-not-case-file"));
-    glref::count_cases(open()?).context(not_cases())?;
+    // The first pass reads past each case without building it, measuring the largest:
+    // the second holds one case at a time, so that one is what must fit the budget.
+    let (count, largest) = glref::measure_cases(open()?).context(not_cases())?;
+    let what = t!("budget-what-eval", count = count as i64, largest = phonglab_core::mesh::obj::describe_bytes(largest));
+    crate::io::budget::check(&what, crate::io::budget::eval_bytes(largest)).map_err(anyhow::Error::msg)?;
     let (mut all, mut failed) = (0usize, 0usize);
     let mut write_error = None;
     out.write_all(b"{\n  \"results\": [")?;

@@ -233,6 +233,15 @@ impl ShadedInput {
     }
 }
 
+/// Refuses `--light light` on a scene of `count` lights (numbered from 0): a light that is
+/// not there would give an empty channel and a picture that says nothing.
+fn refuse_missing_light(light: usize, count: usize) -> Result<()> {
+    if light >= count {
+        bail!(t!("err-no-such-light", light = light, count = count, last = count.saturating_sub(1)));
+    }
+    Ok(())
+}
+
 /// Runs `phonglab render`.
 pub fn run(a: &RenderArgs) -> Result<()> {
     let outputs: Vec<&Path> = std::iter::once(a.output.as_path()).chain(a.raw.as_deref()).collect();
@@ -242,6 +251,9 @@ pub fn run(a: &RenderArgs) -> Result<()> {
         crate::io::atomic_write::check_file_destination(o)?;
     }
     let loaded = a.input.load(&outputs)?;
+    if let Some(light) = a.light {
+        refuse_missing_light(light, loaded.scene.lights.len())?;
+    }
     let job = loaded.job();
     let size = a.input.size as usize;
     let mut r = Renderer::new();

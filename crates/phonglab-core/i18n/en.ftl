@@ -745,6 +745,14 @@ budget-what-render = a { $width } x { $height } picture of { $count ->
        *[other] { $triangles } triangles
     }
 budget-what-window = the window at { $width } x { $height } pixels
+budget-what-cost = the study of { $count ->
+    [one] one object
+   *[other] { $count } objects
+} at { $size } x { $size } pixels
+budget-what-eval = lighting { $count ->
+    [one] one case of { $largest }
+   *[other] { $count } cases, one at a time, the largest { $largest }
+} of JSON
 file-kind-code = notebooks and scripts
 cli-export = Write a scene as the student's own code: the worksheet's notebook, a PyOpenGL program, an openFrameworks app, or the GLSL
 cli-import = Read a worksheet-style notebook (.ipynb) or Python script (.py) into a scene file
@@ -1074,6 +1082,12 @@ png-colour-type = { $path }: unexpected colour type { $kind }
 pdf-cannot-write = cannot write the PDF: { $error }
 err-scale = --scale { $scale }: from 0.5 to 4
 err-spin = --spin must be a finite number of degrees
+err-threads = --threads { $asked }: this machine runs at most { $most } threads at once; ask for { $most } or fewer (0: one per core)
+err-no-such-light = --light { $light }: { $count ->
+    [0] the scene has no light
+    [one] the scene has one light, number 0
+   *[other] the scene has { $count } lights, numbered 0 to { $last }
+}
 err-study-stopped = the study stopped
 err-rules = --rules { $value }: try worksheet or opengl
 err-effects = --effects: { $value } is not one of { $names }

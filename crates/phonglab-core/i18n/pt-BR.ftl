@@ -745,6 +745,14 @@ budget-what-render = uma imagem de { $width } x { $height } com { $count ->
        *[other] { $triangles } triângulos
     }
 budget-what-window = a janela a { $width } x { $height } pixels
+budget-what-cost = o estudo de { $count ->
+    [one] um objeto
+   *[other] { $count } objetos
+} em { $size } x { $size } pixels
+budget-what-eval = iluminar { $count ->
+    [one] um caso de { $largest }
+   *[other] { $count } casos, um de cada vez, o maior com { $largest }
+} de JSON
 file-kind-code = notebooks e programas
 cli-export = Escrever uma cena como o código do próprio aluno: o notebook da ficha, um programa PyOpenGL, um app openFrameworks, ou o GLSL
 cli-import = Ler um notebook (.ipynb) ou programa em Python (.py) no estilo da ficha para um arquivo de cena
@@ -1074,6 +1082,12 @@ png-colour-type = { $path }: tipo de cor inesperado { $kind }
 pdf-cannot-write = não foi possível escrever o PDF: { $error }
 err-scale = --scale { $scale }: de 0,5 a 4
 err-spin = --spin precisa ser um número finito de graus
+err-threads = --threads { $asked }: esta máquina roda no máximo { $most } threads ao mesmo tempo; peça { $most } ou menos (0: uma por núcleo)
+err-no-such-light = --light { $light }: { $count ->
+    [0] a cena não tem nenhuma luz
+    [one] a cena tem uma luz, a número 0
+   *[other] a cena tem { $count } luzes, numeradas de 0 a { $last }
+}
 err-study-stopped = o estudo parou
 err-rules = --rules { $value }: experimente worksheet ou opengl
 err-effects = --effects: { $value } não é nenhum de { $names }

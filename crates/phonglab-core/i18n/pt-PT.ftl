@@ -745,6 +745,14 @@ budget-what-render = uma imagem de { $width } x { $height } com { $count ->
        *[other] { $triangles } triângulos
     }
 budget-what-window = a janela a { $width } x { $height } píxeis
+budget-what-cost = o estudo de { $count ->
+    [one] um objeto
+   *[other] { $count } objetos
+} a { $size } x { $size } píxeis
+budget-what-eval = iluminar { $count ->
+    [one] um caso de { $largest }
+   *[other] { $count } casos, um de cada vez, o maior com { $largest }
+} de JSON
 file-kind-code = cadernos e programas
 cli-export = Escrever uma cena como o código do próprio aluno: o caderno da ficha, um programa PyOpenGL, uma app openFrameworks, ou o GLSL
 cli-import = Ler um caderno (.ipynb) ou programa em Python (.py) no estilo da ficha para um ficheiro de cena
@@ -1074,6 +1082,12 @@ png-colour-type = { $path }: tipo de cor inesperado { $kind }
 pdf-cannot-write = não foi possível escrever o PDF: { $error }
 err-scale = --scale { $scale }: de 0,5 a 4
 err-spin = --spin tem de ser um número finito de graus
+err-threads = --threads { $asked }: esta máquina corre no máximo { $most } threads ao mesmo tempo; peça { $most } ou menos (0: um por núcleo)
+err-no-such-light = --light { $light }: { $count ->
+    [0] a cena não tem nenhuma luz
+    [one] a cena tem uma luz, a número 0
+   *[other] a cena tem { $count } luzes, numeradas de 0 a { $last }
+}
 err-study-stopped = o estudo parou
 err-rules = --rules { $value }: experimente worksheet ou opengl
 err-effects = --effects: { $value } não é nenhum de { $names }
