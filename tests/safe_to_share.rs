@@ -270,3 +270,51 @@ fn too_many_threads_and_a_missing_light_are_refused() {
     let o = phonglab(&["render", "--size", "8", "--channel", "specular", "--light", "0", "-o", s(&pic)]);
     assert!(o.status.success(), "{}", stderr(&o));
 }
+
+/// Does `bytes` (a command's output) hold a control character: ESC, BEL, a C1 control,
+/// a bidirectional control or a line separator (U+202E is E2 80 AE in UTF-8)?
+fn holds_control(bytes: &[u8]) -> bool {
+    String::from_utf8_lossy(bytes).chars().any(|c| c != '\n' && c != '\t' && phonglab_core::escape::is_control(c))
+}
+
+/// Issue 54, 9: every command's success and error lines, and clap's echo of a bad value,
+/// write a file's name visibly: no OSC, CSI or right-to-left override reaches the
+/// teacher's terminal.
+#[test]
+fn every_line_on_the_terminal_writes_user_text_visibly() {
+    let dir = folder("terminal-names");
+    let evil = "x\u{1b}]0;pwned\u{7}\u{1b}[31m\u{202e}";
+    let scene = dir.join("s.toml");
+    std::fs::copy("assets/scenes/spotlight.toml", &scene).unwrap();
+    let nb = dir.join("nb.py");
+    std::fs::write(&nb, SCRIPT).unwrap();
+    let file = |ext: &str| dir.join(format!("{evil}.{ext}"));
+    let runs: Vec<Vec<String>> = vec![
+        vec!["render".into(), "--size".into(), "8".into(), "-o".into(), s(&file("png")).into()],
+        vec!["export".into(), "--to".into(), "notebook".into(), "-o".into(), s(&file("ipynb")).into()],
+        vec!["export".into(), "--to".into(), "openframeworks".into(), "-o".into(), s(&file("of")).into()],
+        vec!["import".into(), s(&nb).into(), "-o".into(), s(&file("toml")).into()],
+        vec!["exercise".into(), "--count".into(), "1".into(), "--out".into(), s(&file("sheets")).into()],
+        vec!["exercise".into(), "--level".into(), "5".into(), "--count".into(), "1".into(), "--out".into(), s(&file("wrong")).into()],
+        vec!["share".into(), s(&scene).into(), "--base".into(), format!("https://e.org/{evil}"), "--qr".into(), s(&file("svg")).into()],
+        // Refusals name the file too.
+        vec!["render".into(), "--size".into(), "8".into(), "-o".into(), s(&dir.join(evil).join("no.png")).into()],
+        vec!["import".into(), s(&file("missing.py")).into(), "-o".into(), s(&dir.join("ok.toml")).into()],
+        // clap's own refusal echoes the value.
+        vec!["render".into(), "--size".into(), evil.into(), "-o".into(), s(&dir.join("x.png")).into()],
+        vec!["render".into(), format!("--{evil}"), "-o".into(), s(&dir.join("x.png")).into()],
+    ];
+    let clap_runs = runs.len() - 2;
+    for (k, args) in runs.iter().enumerate() {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let o = phonglab(&args);
+        assert!(!holds_control(&o.stderr), "{args:?}: {:?}", stderr(&o));
+        assert!(!holds_control(&o.stdout), "{args:?}: {:?}", String::from_utf8_lossy(&o.stdout));
+        let said = format!("{}{}", stderr(&o), String::from_utf8_lossy(&o.stdout));
+        // clap takes the escape sequences out of what it echoes itself; the rest is shown.
+        let shown = if k >= clap_runs { "\\u{202E}" } else { "\\u{1B}]0;pwned\\u{7}\\u{1B}[31m\\u{202E}" };
+        assert!(said.contains(shown), "{args:?}: the name, visibly: {said}");
+    }
+    let o = phonglab(&["cost", "--quick", "--size", "16", "--object", "cylinder", "--out", s(&file("cost"))]);
+    assert!(o.status.success() && !holds_control(&o.stderr), "{:?}", stderr(&o));
+}
