@@ -318,3 +318,24 @@ fn every_line_on_the_terminal_writes_user_text_visibly() {
     let o = phonglab(&["cost", "--quick", "--size", "16", "--object", "cylinder", "--out", s(&file("cost"))]);
     assert!(o.status.success() && !holds_control(&o.stderr), "{:?}", stderr(&o));
 }
+
+/// Issue 54, 10: JSON keeps its values but writes the bidirectional and separator
+/// controls escaped (serde_json escapes only C0): `case` of a scene file whose name holds
+/// U+202E and U+2028, then `eval` of those cases.
+#[test]
+fn json_writes_bidirectional_and_separator_controls_escaped() {
+    let dir = folder("json-bidi");
+    let stem = "a\u{202e}b\u{2028}c\u{2066}";
+    let scene = dir.join(format!("{stem}.toml"));
+    std::fs::copy("assets/scenes/spotlight.toml", &scene).unwrap();
+    let o = phonglab(&["case", s(&scene)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!holds_control(&o.stdout), "{}", String::from_utf8_lossy(&o.stdout));
+    let cases = dir.join("cases.json");
+    std::fs::write(&cases, &o.stdout).unwrap();
+    let o = phonglab(&["eval", s(&cases)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!holds_control(&o.stdout), "{}", String::from_utf8_lossy(&o.stdout));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["results"][0]["id"], stem, "the id's value is unchanged");
+}

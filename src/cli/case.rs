@@ -40,6 +40,6 @@ pub fn cases_json(paths: &[PathBuf]) -> Result<serde_json::Value> {
 
 /// Runs `phonglab case`.
 pub fn run(a: &CaseArgs) -> Result<()> {
-    println!("{}", serde_json::to_string_pretty(&cases_json(&a.scenes)?)?);
+    println!("{}", phonglab_core::escape::json::text(&serde_json::to_string_pretty(&cases_json(&a.scenes)?)?));
     Ok(())
 }

@@ -92,6 +92,7 @@ pub fn eval_stream(
         failed += usize::from(r.is_err());
         // serde_json's pretty form of the whole, one result at a time.
         let result = serde_json::to_string_pretty(&glref::result_json(&id, &r)).unwrap_or_default();
+        let result = phonglab_core::escape::json::text(&result);
         let sep = if all == 0 { "\n" } else { ",\n" };
         all += 1;
         let indented = result.lines().map(|l| format!("    {l}")).collect::<Vec<_>>().join("\n");

@@ -61,7 +61,7 @@ pub fn ipynb(cells: &[Cell]) -> String {
         "nbformat": 4,
         "nbformat_minor": 5
     });
-    let mut text = serde_json::to_string_pretty(&doc).unwrap_or_default();
+    let mut text = crate::formats::escape::json::text(&serde_json::to_string_pretty(&doc).unwrap_or_default());
     text.push('\n');
     text
 }
