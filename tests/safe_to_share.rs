@@ -339,3 +339,44 @@ fn json_writes_bidirectional_and_separator_controls_escaped() {
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["results"][0]["id"], stem, "the id's value is unchanged");
 }
+
+/// Issue 54, 12: the notebook follows `explain` on every scene it is written for: where
+/// the engine takes a limit (a zero normal normalised, a vertex with w = 0, a directional
+/// light (0, 0, 0, 0), a perspective row taking the vertex to infinity, a singular
+/// modelview), the export refuses with `explain`'s note (it printed nan, or raised
+/// LinAlgError).
+#[test]
+fn the_notebook_is_refused_where_explain_takes_a_limit_saying_which() {
+    let dir = folder("notebook-limits");
+    let identity = "[[1,0,0,0],[0,1,0,0],[0,0,1,-5],[0,0,0,1]]";
+    let cases = [
+        ("zero", identity, "[0, 2, 3, 1]", "[0, 0, 0, 1]", "[0, 0, 0]", "the normal is zero"),
+        ("w0", identity, "[0, 2, 3, 1]", "[0, 0, 1, 0]", "[0, 0, 1]", "the vertex has w = 0"),
+        ("dir0", identity, "[0, 0, 0, 0]", "[0, 0, 0, 1]", "[0, 0, 1]", "direction is (0, 0, 0)"),
+        ("persp", "[[1,0,0,0],[0,1,0,0],[0,0,1,-5],[0,0,-1,0]]", "[0, 2, 3, 1]", "[0, 0, 0, 1]", "[0, 0, 1]", "w = 0"),
+        ("singular", "[[1,0,0,0],[0,1,0,0],[0,0,0,-5],[0,0,0,1]]", "[0, 2, 3, 1]", "[0, 0, 0, 1]", "[0, 0, 1]", "singular"),
+    ];
+    for (name, rows, light, vertex, normal, note) in cases {
+        let scene = dir.join(format!("{name}.toml"));
+        std::fs::write(
+            &scene,
+            format!(
+                "name = \"{name}\"\nrules = \"opengl\"\nnormals = \"normalize\"\n[camera]\nkind = \"matrix\"\nrows = {rows}\n\
+                 [material]\npreset = \"gold\"\n[[lights]]\nposition = {light}\ndiffuse = [1, 1, 1]\nplacement = \"world\"\n\
+                 [vertex]\nposition = {vertex}\nnormal = {normal}\n"
+            ),
+        )
+        .unwrap();
+        let explained = phonglab(&["explain", s(&scene)]);
+        assert!(String::from_utf8_lossy(&explained.stdout).contains(note), "{name}: explain says {note:?}");
+        let nb = dir.join(format!("{name}.ipynb"));
+        let o = phonglab(&["export", "--scene", s(&scene), "--to", "notebook", "-o", s(&nb)]);
+        let e = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{name}: {e}");
+        assert!(e.contains("the notebook is not written for this scene") && e.contains(note), "{name}: {e}");
+        assert!(!nb.exists(), "{name}");
+        let py = dir.join(format!("{name}.py"));
+        let o = phonglab(&["export", "--scene", s(&scene), "--to", "pyopengl", "-o", s(&py)]);
+        assert!(o.status.success(), "{name}: the program draws it: {}", stderr(&o));
+    }
+}

@@ -597,6 +597,7 @@ export-target-notebook = Jupyter notebook (the worksheet's)
 export-target-pyopengl = Python program (PyOpenGL + GLUT)
 export-target-openframeworks = openFrameworks app (ofApp.h, ofApp.cpp, main.cpp)
 export-target-glsl = GLSL shaders
+notebook-refused = the notebook is not written for this scene: explain takes a limit here ({ $reason }), and the notebook's NumPy would print nan or stop instead; export it as a PyOpenGL program, or change the scene
 nb-title =
     # Computing a vertex's colour with OpenGL lighting
 

@@ -597,6 +597,7 @@ export-target-notebook = Notebook Jupyter (o da ficha)
 export-target-pyopengl = Programa em Python (PyOpenGL + GLUT)
 export-target-openframeworks = App openFrameworks (ofApp.h, ofApp.cpp, main.cpp)
 export-target-glsl = Shaders GLSL
+notebook-refused = o notebook não é escrito para esta cena: o explain toma aqui um limite ({ $reason }), e o NumPy do notebook imprimiria nan ou pararia; exporte-a como programa PyOpenGL, ou mude a cena
 nb-title =
     # Cálculo da cor dos vértices com iluminação em OpenGL atual
 
