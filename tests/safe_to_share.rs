@@ -380,3 +380,15 @@ fn the_notebook_is_refused_where_explain_takes_a_limit_saying_which() {
         assert!(o.status.success(), "{name}: the program draws it: {}", stderr(&o));
     }
 }
+
+/// Issue 54, small: a refused value is said back compactly (1e300, not its 301 digits).
+#[test]
+fn an_out_of_range_value_is_said_compactly() {
+    let dir = folder("1e300");
+    let scene = dir.join("s.toml");
+    std::fs::write(&scene, "name = \"big\"\n[material]\npreset = \"gold\"\nshininess = 1e300\n").unwrap();
+    let o = phonglab(&["explain", s(&scene)]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(e.contains("material.shininess = 1e300 is out of range") && e.len() < 300, "{e}");
+}

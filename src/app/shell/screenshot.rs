@@ -114,7 +114,7 @@ pub fn empty_share(
 /// Takes the picture `shot` asks for and writes it (`phonglab screenshot`).
 pub fn run(a: &Shot) -> Result<()> {
     if !(0.5..=4.0).contains(&a.scale) {
-        bail!(phonglab_core::t!("err-scale", scale = phonglab_core::locale::decimal(&a.scale.to_string())));
+        bail!(phonglab_core::t!("err-scale", scale = phonglab_core::locale::exact(f64::from(a.scale))));
     }
     let (pw, ph) = ((a.size.0 as f32 * a.scale).round() as u32, (a.size.1 as f32 * a.scale).round() as u32);
     let needed = crate::io::budget::window_picture_bytes(u64::from(a.size.0), u64::from(a.size.1), f64::from(a.scale));
