@@ -392,3 +392,44 @@ fn an_out_of_range_value_is_said_compactly() {
     assert_eq!(o.status.code(), Some(2), "{e}");
     assert!(e.contains("material.shininess = 1e300 is out of range") && e.len() < 300, "{e}");
 }
+
+/// Issue 54's critical hole, as a classmate plants it: a journal in an output folder
+/// naming the student's files as the old set and a file elsewhere as the new, with a
+/// staging "folder" that is a link to that elsewhere. Every command that writes a set
+/// leaves all of it as it was, writes its set, and says what it left alone.
+#[test]
+fn a_planted_journal_deletes_and_moves_nothing_for_any_command() {
+    let root = folder("planted");
+    let plant = |dir: &Path, other: &Path| {
+        std::fs::create_dir_all(dir).unwrap();
+        std::fs::create_dir_all(other).unwrap();
+        std::fs::write(other.join("thesis.txt"), "someone's thesis").unwrap();
+        std::fs::write(dir.join("helper.h"), "// mine").unwrap();
+        std::fs::write(dir.join("helper.cpp"), "// mine too").unwrap();
+        let journal = r#"{"staging":".phonglab-set.9.9.tmp","new":["thesis.txt"],"old":["helper.h","helper.cpp"]}"#;
+        std::fs::write(dir.join(".phonglab-set.journal"), journal).unwrap();
+        std::os::unix::fs::symlink(other, dir.join(".phonglab-set.9.9.tmp")).unwrap();
+    };
+    let runs: [(&str, Vec<&str>); 4] = [
+        ("of", vec!["export", "--to", "openframeworks", "-o"]),
+        ("sheets", vec!["exercise", "--count", "1", "--out"]),
+        ("wrong", vec!["exercise", "--level", "5", "--count", "1", "--out"]),
+        ("cost", vec!["cost", "--quick", "--size", "16", "--object", "cylinder", "--out"]),
+    ];
+    for (name, args) in runs {
+        let (out, other) = (root.join(name), root.join(format!("{name}-other")));
+        // An openFrameworks project keeps its code in src/.
+        let dir = if name == "of" { out.join("src") } else { out.clone() };
+        plant(&dir, &other);
+        let mut args = args.clone();
+        args.push(s(&out));
+        let o = phonglab(&args);
+        let e = stderr(&o);
+        assert!(o.status.success(), "{name}: {e}");
+        assert_eq!(std::fs::read(dir.join("helper.h")).unwrap(), b"// mine", "{name}");
+        assert_eq!(std::fs::read(dir.join("helper.cpp")).unwrap(), b"// mine too", "{name}");
+        assert_eq!(std::fs::read(other.join("thesis.txt")).unwrap(), b"someone's thesis", "{name}");
+        assert!(!dir.join("thesis.txt").exists(), "{name}: nothing moved in");
+        assert!(e.contains(".phonglab-set.journal") && e.contains("was left as it is"), "{name}: {e}");
+    }
+}
