@@ -295,8 +295,23 @@ fn every_line_on_the_terminal_writes_user_text_visibly() {
         vec!["export".into(), "--to".into(), "openframeworks".into(), "-o".into(), s(&file("of")).into()],
         vec!["import".into(), s(&nb).into(), "-o".into(), s(&file("toml")).into()],
         vec!["exercise".into(), "--count".into(), "1".into(), "--out".into(), s(&file("sheets")).into()],
-        vec!["exercise".into(), "--level".into(), "5".into(), "--count".into(), "1".into(), "--out".into(), s(&file("wrong")).into()],
-        vec!["share".into(), s(&scene).into(), "--base".into(), format!("https://e.org/{evil}"), "--qr".into(), s(&file("svg")).into()],
+        vec![
+            "exercise".into(),
+            "--level".into(),
+            "5".into(),
+            "--count".into(),
+            "1".into(),
+            "--out".into(),
+            s(&file("wrong")).into(),
+        ],
+        vec![
+            "share".into(),
+            s(&scene).into(),
+            "--base".into(),
+            format!("https://e.org/{evil}"),
+            "--qr".into(),
+            s(&file("svg")).into(),
+        ],
         // Refusals name the file too.
         vec!["render".into(), "--size".into(), "8".into(), "-o".into(), s(&dir.join(evil).join("no.png")).into()],
         vec!["import".into(), s(&file("missing.py")).into(), "-o".into(), s(&dir.join("ok.toml")).into()],
@@ -354,7 +369,14 @@ fn the_notebook_is_refused_where_explain_takes_a_limit_saying_which() {
         ("w0", identity, "[0, 2, 3, 1]", "[0, 0, 1, 0]", "[0, 0, 1]", "the vertex has w = 0"),
         ("dir0", identity, "[0, 0, 0, 0]", "[0, 0, 0, 1]", "[0, 0, 1]", "direction is (0, 0, 0)"),
         ("persp", "[[1,0,0,0],[0,1,0,0],[0,0,1,-5],[0,0,-1,0]]", "[0, 2, 3, 1]", "[0, 0, 0, 1]", "[0, 0, 1]", "w = 0"),
-        ("singular", "[[1,0,0,0],[0,1,0,0],[0,0,0,-5],[0,0,0,1]]", "[0, 2, 3, 1]", "[0, 0, 0, 1]", "[0, 0, 1]", "singular"),
+        (
+            "singular",
+            "[[1,0,0,0],[0,1,0,0],[0,0,0,-5],[0,0,0,1]]",
+            "[0, 2, 3, 1]",
+            "[0, 0, 0, 1]",
+            "[0, 0, 1]",
+            "singular",
+        ),
     ];
     for (name, rows, light, vertex, normal, note) in cases {
         let scene = dir.join(format!("{name}.toml"));

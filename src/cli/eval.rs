@@ -82,7 +82,8 @@ pub fn eval_stream(
     // The first pass reads past each case without building it, measuring the largest:
     // the second holds one case at a time, so that one is what must fit the budget.
     let (count, largest) = glref::measure_cases(open()?).context(not_cases())?;
-    let what = t!("budget-what-eval", count = count as i64, largest = phonglab_core::mesh::obj::describe_bytes(largest));
+    let what =
+        t!("budget-what-eval", count = count as i64, largest = phonglab_core::mesh::obj::describe_bytes(largest));
     crate::io::budget::check(&what, crate::io::budget::eval_bytes(largest)).map_err(anyhow::Error::msg)?;
     let (mut all, mut failed) = (0usize, 0usize);
     let mut write_error = None;

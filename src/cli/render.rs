@@ -274,22 +274,22 @@ pub fn run(a: &RenderArgs) -> Result<()> {
             let (lo, hi) = image.range();
             let number = |x: f64| phonglab_core::locale::num(x, 4);
             super::say(&t!(
-                    "render-channel-summary",
-                    channel = phonglab_core::locale::tr(channel.message_id()),
-                    map = format!("{:?}", a.colour_map).to_lowercase(),
-                    low = number(lo),
-                    high = number(hi)
+                "render-channel-summary",
+                channel = phonglab_core::locale::tr(channel.message_id()),
+                map = format!("{:?}", a.colour_map).to_lowercase(),
+                low = number(lo),
+                high = number(hi)
             ));
         }
     }
     super::say(&t!(
-            "render-summary",
-            path = crate::io::reasons::shown(&a.output),
-            size = format!("{width}x{height}"),
-            triangles = stats.triangles,
-            covered = phonglab_core::locale::decimal(&format!("{:.1}", 100.0 * coverage)),
-            evaluations = stats.evaluations,
-            ms = phonglab_core::locale::decimal(&format!("{ms:.1}"))
+        "render-summary",
+        path = crate::io::reasons::shown(&a.output),
+        size = format!("{width}x{height}"),
+        triangles = stats.triangles,
+        covered = phonglab_core::locale::decimal(&format!("{:.1}", 100.0 * coverage)),
+        evaluations = stats.evaluations,
+        ms = phonglab_core::locale::decimal(&format!("{ms:.1}"))
     ));
     for note in &loaded.notes {
         super::say(&t!("note-line", note = note));

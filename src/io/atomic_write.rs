@@ -283,7 +283,8 @@ fn remove_stale_temporaries(dir: &Path, name: &str) {
 /// file left beside it are removed first.
 pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
     const KEPT: &str = "write-kept-file";
-    let resolved = through_links(path).map_err(|e| WriteError::new(path, "write-step-name", e, "write-kept-nothing"))?;
+    let resolved =
+        through_links(path).map_err(|e| WriteError::new(path, "write-step-name", e, "write-kept-nothing"))?;
     let path = resolved.as_path();
     let name = file_name_of(path).map_err(|e| WriteError::new(path, "write-step-name", e, "write-kept-nothing"))?;
     refuse_not_a_file(path, "write-kept-nothing")?;

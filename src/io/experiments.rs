@@ -236,7 +236,10 @@ pub fn in_folder(dir: &Path) -> (Vec<Experiment>, Vec<String>) {
         let left = MAX_FOLDER_BYTES.saturating_sub(read.get());
         let size = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
         if size > left {
-            return Err(t!("experiment-folder-full", most = phonglab_core::mesh::obj::describe_bytes(MAX_FOLDER_BYTES)));
+            return Err(t!(
+                "experiment-folder-full",
+                most = phonglab_core::mesh::obj::describe_bytes(MAX_FOLDER_BYTES)
+            ));
         }
         let text = crate::io::input_file::read_text_capped(path, cap, kind)?;
         read.set(read.get() + text.len() as u64);
@@ -252,8 +255,8 @@ pub fn in_folder(dir: &Path) -> (Vec<Experiment>, Vec<String>) {
             refused.push(format!("{name}: {}", t!("experiment-too-many", most = MAX_EXPERIMENTS)));
             continue;
         }
-        let parsed =
-            take(p, MAX_EXPERIMENT_BYTES, &t!("file-kind-experiments")).and_then(|text| Experiment::parse(&text, beside));
+        let parsed = take(p, MAX_EXPERIMENT_BYTES, &t!("file-kind-experiments"))
+            .and_then(|text| Experiment::parse(&text, beside));
         match parsed {
             Ok(mut e) => {
                 e.source = crate::io::reasons::shown(p);

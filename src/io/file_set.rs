@@ -31,7 +31,9 @@ use std::io;
 use std::path::Path;
 
 use super::atomic_write::{Fault, WriteError, fault, next_step, rename_no_replace, temporary_name};
-use super::set_journal::{ASIDE, Entry, Identity, JOURNAL, Journal, STAGING, entry_of, plain_name, stage, write_journal};
+use super::set_journal::{
+    ASIDE, Entry, Identity, JOURNAL, Journal, STAGING, entry_of, plain_name, stage, write_journal,
+};
 
 /// Files that belong together, written by [`write_set`]: names (no folders) and bytes.
 #[derive(Clone, Debug, Default)]
@@ -156,12 +158,15 @@ pub fn recover(dir: &Path) -> io::Result<Vec<String>> {
 }
 
 fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&str) -> bool) -> Result<(), Stop> {
-    let here = std::fs::symlink_metadata(staging).map_err(|e| WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED))?;
+    let here = std::fs::symlink_metadata(staging)
+        .map_err(|e| WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED))?;
     let mut journal = Journal { staging: Identity::of(&here), decided: false, new: Vec::new(), old: Vec::new() };
     write_journal(staging, &journal, false).map_err(|(what, e)| WriteError::new(dir, what, e, UNTOUCHED))?;
     step()?;
     for (name, bytes) in &set.files {
-        journal.new.push(stage(staging, name, bytes).map_err(|(what, e)| WriteError::new(&dir.join(name), what, e, UNTOUCHED))?);
+        journal.new.push(
+            stage(staging, name, bytes).map_err(|(what, e)| WriteError::new(&dir.join(name), what, e, UNTOUCHED))?,
+        );
         step()?;
     }
     crate::platform::os::sync_folder(staging);
@@ -192,7 +197,9 @@ fn old_set(dir: &Path, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Result<
         let Ok(name) = entry.file_name().into_string() else { continue };
         let is_file = entry.file_type().is_ok_and(|t| t.is_file());
         if is_file && plain_name(&name) && (new.iter().any(|e| e.name == name) || belongs(&name)) {
-            old.push(entry_of(dir, &name).map_err(|e| WriteError::new(&dir.join(&name), "write-step-list", e, UNTOUCHED))?);
+            old.push(
+                entry_of(dir, &name).map_err(|e| WriteError::new(&dir.join(&name), "write-step-list", e, UNTOUCHED))?,
+            );
         }
     }
     old.sort_by(|a, b| a.name.cmp(&b.name));

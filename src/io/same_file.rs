@@ -94,7 +94,12 @@ pub fn refuse_onto(outputs: &[&Path], inputs: &[(&Path, Input)]) -> Result<(), S
         let out_id = file_id(output);
         for (input, kind) in inputs {
             if out_id.is_some() && file_id(input) == out_id {
-                return Err(t!("err-output-is-input", output = shown(output), what = kind.words(), input = shown(input)));
+                return Err(t!(
+                    "err-output-is-input",
+                    output = shown(output),
+                    what = kind.words(),
+                    input = shown(input)
+                ));
             }
         }
         let Some(id) = output_id(output) else { continue };

@@ -158,8 +158,11 @@ pub fn write_journal(staging: &Path, journal: &Journal, counted: bool) -> Result
     let bytes = serde_json::to_vec(journal).map_err(|e| ("write-step-write", io::Error::other(e)))?;
     let tmp = staging.join(JOURNAL_TMP);
     super::atomic_write::write_new(&tmp, &bytes)?;
-    let renamed =
-        if counted { super::atomic_write::rename(&tmp, &staging.join(JOURNAL)) } else { std::fs::rename(&tmp, staging.join(JOURNAL)) };
+    let renamed = if counted {
+        super::atomic_write::rename(&tmp, &staging.join(JOURNAL))
+    } else {
+        std::fs::rename(&tmp, staging.join(JOURNAL))
+    };
     renamed.map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
         ("write-step-rename", e)

@@ -128,7 +128,8 @@ pub fn run(a: &Shot) -> Result<()> {
         Some(p) => crate::io::input_file::load_scene(p).map_err(anyhow::Error::msg)?,
         None => phonglab_core::Document::default(),
     };
-    let mesh: Vec<(&std::path::Path, Input)> = doc.view.obj.iter().map(|m| (std::path::Path::new(m), Input::Mesh)).collect();
+    let mesh: Vec<(&std::path::Path, Input)> =
+        doc.view.obj.iter().map(|m| (std::path::Path::new(m), Input::Mesh)).collect();
     refuse_onto(&[&a.output], &mesh).map_err(anyhow::Error::msg)?;
     let state = state_for(doc, a.present, a.light, a.open);
     let (w, h) = (a.size.0 as f32, a.size.1 as f32);

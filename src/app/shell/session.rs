@@ -488,7 +488,7 @@ mod tests {
                 std::os::unix::fs::symlink(SESSION_FILE, dir.join(SESSION_FILE)).unwrap();
             } else {
                 std::fs::write(dir.join(SESSION_FILE), "{\"k\": \"the lesson\"}").unwrap();
-                std::fs::set_permissions(dir.join(SESSION_FILE), std::fs::Permissions::from_mode(0)).unwrap();
+                std::fs::set_permissions(dir.join(SESSION_FILE), std::fs::Permissions::from_mode(0o000)).unwrap();
             }
             let (mut s, notices) = Session::open(&dir);
             let all = notices.join(" ");

@@ -150,7 +150,13 @@ enum PlantedJournal {
     Noise(Vec<u8>),
     /// Names (of the folder's files, the set's, the staging's, or anything), sizes and
     /// hashes the true ones or not, decided or not; the identities guessed.
-    Shaped { decided: bool, new: Vec<String>, old: Vec<String>, true_hashes: bool, guess: u64 },
+    Shaped {
+        decided: bool,
+        new: Vec<String>,
+        old: Vec<String>,
+        true_hashes: bool,
+        guess: u64,
+    },
 }
 
 fn name() -> impl Strategy<Value = String> {
@@ -171,7 +177,13 @@ fn name() -> impl Strategy<Value = String> {
 fn journal() -> impl Strategy<Value = PlantedJournal> {
     prop_oneof![
         proptest::collection::vec(any::<u8>(), 0..64).prop_map(PlantedJournal::Noise),
-        (any::<bool>(), proptest::collection::vec(name(), 0..4), proptest::collection::vec(name(), 0..4), any::<bool>(), any::<u64>())
+        (
+            any::<bool>(),
+            proptest::collection::vec(name(), 0..4),
+            proptest::collection::vec(name(), 0..4),
+            any::<bool>(),
+            any::<u64>()
+        )
             .prop_map(|(decided, new, old, true_hashes, guess)| PlantedJournal::Shaped {
                 decided,
                 new,
@@ -212,10 +224,12 @@ fn journal_bytes(dir: &Path, j: &PlantedJournal, old_form: bool) -> Vec<u8> {
     match j {
         PlantedJournal::Noise(b) => b.clone(),
         PlantedJournal::Shaped { new, old, .. } if old_form => {
-            serde_json::to_vec(&serde_json::json!({"staging": ".phonglab-set.9.9.tmp", "new": new, "old": old})).unwrap()
+            serde_json::to_vec(&serde_json::json!({"staging": ".phonglab-set.9.9.tmp", "new": new, "old": old}))
+                .unwrap()
         }
         PlantedJournal::Shaped { decided, new, old, true_hashes, guess } => {
-            let entries = |names: &[String]| names.iter().map(|n| planted_entry(dir, n, *true_hashes, *guess)).collect();
+            let entries =
+                |names: &[String]| names.iter().map(|n| planted_entry(dir, n, *true_hashes, *guess)).collect();
             let staging = Identity { dev: *guess, ino: guess.rotate_left(3), born: Some((*guess, 0)) };
             serde_json::to_vec(&Journal { staging, decided: *decided, new: entries(new), old: entries(old) }).unwrap()
         }

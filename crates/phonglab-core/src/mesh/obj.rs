@@ -623,7 +623,8 @@ mod tests {
     fn a_mesh_swapped_between_its_passes_is_read_from_the_one_handle() {
         let one = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
         let two = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n";
-        let swaps: [(&str, fn(&Path)); 2] = [
+        type Swap = fn(&Path);
+        let swaps: [(&str, Swap); 2] = [
             ("other", |p| std::fs::write(p, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n").unwrap()),
             ("fifo", |p| {
                 let c = std::ffi::CString::new(p.as_os_str().as_encoded_bytes()).unwrap();

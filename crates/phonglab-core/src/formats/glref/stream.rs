@@ -78,7 +78,11 @@ impl<'de, T: DeserializeOwned> Visitor<'de> for File<'_, '_, T> {
         let mut count = None;
         while let Some(key) = map.next_key::<String>()? {
             if key == "cases" && count.is_none() {
-                count = Some(map.next_value_seed(CaseList { each: &mut *self.each, shape: self.shape, case: PhantomData })?);
+                count = Some(map.next_value_seed(CaseList {
+                    each: &mut *self.each,
+                    shape: self.shape,
+                    case: PhantomData,
+                })?);
             } else {
                 map.next_value::<IgnoredAny>()?;
             }
