@@ -191,14 +191,38 @@ fn a_failed_scene_save_in_the_app_keeps_the_old_file() {
 }
 
 #[test]
-fn render_to_a_device_writes_into_it_and_leaves_it_a_device() {
-    // `-o /dev/null` (discard the picture) must write into the device: renaming a file over
-    // it would replace /dev/null with a file for every program on the machine.
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::FileTypeExt;
-        assert_eq!(run(&["render", "--size", "32", "-o", "/dev/null"]), ExitCode::SUCCESS);
-        let t = std::fs::metadata("/dev/null").unwrap().file_type();
-        assert!(t.is_char_device(), "/dev/null is still a device: {t:?}");
+#[cfg(unix)]
+fn render_to_a_device_or_a_fifo_is_refused_at_once_and_leaves_it_as_it_was() {
+    // An output is a regular file or absent: `-o fifo.png` would wait for a reader for
+    // ever, and renaming a file over /dev/null would replace the device for every program.
+    use std::os::unix::fs::FileTypeExt;
+    let dir = temp_dir("fifo");
+    let fifo = dir.join("fifo.png");
+    let c = std::ffi::CString::new(fifo.as_os_str().as_encoded_bytes()).unwrap();
+    // SAFETY: `c` is a valid NUL-terminated path for the duration of the call.
+    assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
+    for out in [fifo.as_path(), Path::new("/dev/null")] {
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_phonglab"))
+            .args(["render", "--size", "32", "-o", out.to_str().unwrap()])
+            .env("LC_ALL", "C.UTF-8")
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let start = std::time::Instant::now();
+        let status = loop {
+            if let Some(s) = child.try_wait().unwrap() {
+                break Some(s);
+            }
+            if start.elapsed().as_secs() > 60 {
+                child.kill().unwrap();
+                break None;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        };
+        let said = std::io::read_to_string(child.stderr.take().unwrap()).unwrap();
+        assert_eq!(status.and_then(|s| s.code()), Some(2), "{out:?} refused, not waited on: {said}");
+        assert!(said.contains("not a regular file"), "{said}");
     }
+    assert!(std::fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo(), "still a FIFO");
+    assert!(std::fs::metadata("/dev/null").unwrap().file_type().is_char_device(), "/dev/null still a device");
 }

@@ -139,8 +139,9 @@ fn render(a: &RenderBench) -> Result<()> {
         object_chosen(object) && a.shading.as_deref().is_none_or(|s| shading.label().eq_ignore_ascii_case(s))
     };
     if let Some(out) = &a.write_mesh {
-        let inputs: Vec<&std::path::Path> = a.mesh.iter().map(|p| p.as_path()).collect();
-        crate::io::same_file::refuse_output_onto_input(&[out], &inputs).map_err(anyhow::Error::msg)?;
+        use crate::io::same_file::{Input, refuse_onto};
+        let inputs: Vec<(&std::path::Path, Input)> = a.mesh.iter().map(|p| (p.as_path(), Input::Mesh)).collect();
+        refuse_onto(&[out], &inputs).map_err(anyhow::Error::msg)?;
         crate::io::atomic_write::check_file_destination(out)?;
     }
     let meshes: Vec<(&'static str, phonglab_core::mesh::Mesh)> = if let Some(path) = &a.mesh {
@@ -218,7 +219,7 @@ fn write_mesh(out: &std::path::Path, mesh: &phonglab_core::mesh::Mesh) -> Result
         "{}",
         phonglab_core::t!(
             "bench-mesh-written",
-            path = out.display().to_string(),
+            path = crate::io::reasons::shown(out),
             triangles = mesh.triangle_count().to_string(),
             vertices = mesh.positions.len().to_string()
         )
@@ -358,7 +359,8 @@ fn stage_figures(arrays: &mut LightingArrays, repeats: u32) -> Result<()> {
 pub fn run(cmd: &BenchCommand) -> Result<()> {
     match cmd {
         BenchCommand::Render(a) => {
-            let pool = rayon::ThreadPoolBuilder::new().num_threads(a.threads.unwrap_or(0)).build()?;
+            let threads = crate::platform::threads::asked(a.threads).map_err(anyhow::Error::msg)?;
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build()?;
             pool.install(|| render(a))
         }
         BenchCommand::Lighting(a) => lighting(a),

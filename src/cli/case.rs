@@ -23,14 +23,14 @@ pub fn cases_json(paths: &[PathBuf]) -> Result<serde_json::Value> {
     for p in paths {
         let doc = scene_file(p)?;
         if doc.scene.rules != phonglab_core::Rules::OPENGL {
-            eprintln!(
+            super::say(&format!(
                 "phonglab: {}",
                 phonglab_core::t!(
                     "case-rules-note",
-                    path = p.display().to_string(),
+                    path = crate::io::reasons::shown(p),
                     rules = doc.scene.rules.set.label()
                 )
-            );
+            ));
         }
         let id = p.file_stem().map_or_else(|| format!("case{}", cases.len()), |s| s.to_string_lossy().into_owned());
         cases.push(glref::case_json(&id, &doc.scene));
@@ -40,6 +40,6 @@ pub fn cases_json(paths: &[PathBuf]) -> Result<serde_json::Value> {
 
 /// Runs `phonglab case`.
 pub fn run(a: &CaseArgs) -> Result<()> {
-    println!("{}", serde_json::to_string_pretty(&cases_json(&a.scenes)?)?);
+    println!("{}", phonglab_core::escape::json::text(&serde_json::to_string_pretty(&cases_json(&a.scenes)?)?));
     Ok(())
 }

@@ -188,9 +188,19 @@ pub fn belongs_to_a_report(name: &str) -> bool {
     matches!(name, "cost.csv" | "cost.md" | "cost.png") || (name.starts_with("heat-") && name.ends_with(".png"))
 }
 
+/// Refuses a study past the memory budget, before anything is drawn
+/// ([`crate::io::budget::cost_bytes`]).
+fn within_budget(a: &CostRun) -> Result<()> {
+    let views: Vec<phonglab_core::View> =
+        a.objects.iter().map(|&object| phonglab_core::View { object, ..a.doc.view.clone() }).collect();
+    let what = phonglab_core::t!("budget-what-cost", count = views.len() as i64, size = a.size as i64);
+    crate::io::budget::check(&what, crate::io::budget::cost_bytes(&views, a.size as u64)).map_err(anyhow::Error::msg)
+}
+
 /// `phonglab cost`: the studies, their tables on stdout, and the files, written as one
 /// report ([`crate::io::file_set::write_set`]) after the folder was tried before the study.
 pub fn run(a: &CostRun) -> Result<()> {
+    within_budget(a)?;
     crate::io::atomic_write::check_folder_destination(&a.out)?;
     let pool = rayon::ThreadPoolBuilder::new().num_threads(a.threads).build()?;
     let studies = pool.install(|| studies(a))?;
@@ -218,8 +228,9 @@ pub fn run(a: &CostRun) -> Result<()> {
     set.add("cost.md", tables);
     let (w, h, rgba) = chart_png(&studies, 1.5);
     set.add("cost.png", crate::io::image::encode_png(w, h, &rgba)?);
-    crate::io::file_set::write_set(&a.out, &set, belongs_to_a_report)?;
-    eprintln!("{}", phonglab_core::t!("cost-wrote", files = set.to_string(), out = a.out.display().to_string()));
+    let notices = crate::io::file_set::write_set(&a.out, &set, belongs_to_a_report)?;
+    notices.iter().for_each(|n| super::say(n));
+    super::say(&phonglab_core::t!("cost-wrote", files = set.to_string(), out = crate::io::reasons::shown(&a.out)));
     Ok(())
 }
 
@@ -257,6 +268,7 @@ pub fn run_args(a: &CostArgs) -> Result<()> {
         let earlier = std::fs::read_dir(&a.out).into_iter().flatten().flatten();
         names.extend(earlier.map(|e| e.file_name().to_string_lossy().into_owned()).filter(|n| belongs_to_a_report(n)));
         let names: Vec<&str> = names.iter().map(String::as_str).collect();
+        let scene = (scene.as_path(), crate::io::same_file::Input::Scene);
         crate::io::same_file::refuse_outputs_in_folder(&a.out, &names, &[scene]).map_err(anyhow::Error::msg)?;
     }
     let doc = match &a.scene {
@@ -269,7 +281,7 @@ pub fn run_args(a: &CostArgs) -> Result<()> {
         out: a.out.clone(),
         size: a.size as usize,
         spin: a.spin,
-        threads: a.threads.unwrap_or(0),
+        threads: crate::platform::threads::asked(a.threads).map_err(anyhow::Error::msg)?,
         timing: if a.quick { phonglab_core::cost::Timing::QUICK } else { phonglab_core::cost::Timing::CAREFUL },
     })
 }

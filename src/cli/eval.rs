@@ -49,9 +49,10 @@ pub fn run(a: &EvalArgs) -> Result<ExitCode> {
 /// prints): the number of cases and of failed ones.
 ///
 /// The file is read as a stream twice, never whole: once to check that it is a case file
-/// (so a broken one writes nothing), then case by case, each result written as it is
-/// lit. The memory is one case's (and the ids', to refuse a repeated one), whatever the
-/// number of cases.
+/// (so a broken one writes nothing) and to measure its largest case, which is refused past
+/// the memory budget ([`crate::io::budget::eval_bytes`]); then case by case, each result
+/// written as it is lit. The memory is one case's (and the ids', to refuse a repeated
+/// one), whatever the number of cases.
 pub fn eval_stream(
     path: &Path,
     precision: Precision,
@@ -64,21 +65,26 @@ pub fn eval_stream(
         let file = crate::platform::os::open_to_read(path).map_err(|e| {
             anyhow::anyhow!(t!(
                 "read-cannot",
-                path = path.display().to_string(),
+                path = crate::io::reasons::shown(path),
                 reason = crate::io::reasons::io_reason(&e)
             ))
         })?;
         let meta = file.metadata()?;
         if !meta.is_file() {
-            bail!(t!("read-not-a-file", path = path.display().to_string()));
+            bail!(t!("read-not-a-file", path = crate::io::reasons::shown(path)));
         }
-        let (shown, kind) = (path.display().to_string(), t!("file-kind-cases"));
+        let (shown, kind) = (crate::io::reasons::shown(path), t!("file-kind-cases"));
         crate::io::input_file::within_cap(&shown, meta.len(), crate::io::input_file::MAX_CASE_BYTES, &kind)
             .map_err(anyhow::Error::msg)?;
         Ok(file)
     };
-    let not_cases = || format!("{}: {}", path.display(), t!("err-not-case-file"));
-    glref::count_cases(open()?).context(not_cases())?;
+    let not_cases = || format!("{}: {}", crate::io::reasons::shown(path), t!("err-not-case-file"));
+    // The first pass reads past each case without building it, measuring the largest:
+    // the second holds one case at a time, so that one is what must fit the budget.
+    let (count, largest) = glref::measure_cases(open()?).context(not_cases())?;
+    let what =
+        t!("budget-what-eval", count = count as i64, largest = phonglab_core::mesh::obj::describe_bytes(largest));
+    crate::io::budget::check(&what, crate::io::budget::eval_bytes(largest)).map_err(anyhow::Error::msg)?;
     let (mut all, mut failed) = (0usize, 0usize);
     let mut write_error = None;
     out.write_all(b"{\n  \"results\": [")?;
@@ -87,6 +93,7 @@ pub fn eval_stream(
         failed += usize::from(r.is_err());
         // serde_json's pretty form of the whole, one result at a time.
         let result = serde_json::to_string_pretty(&glref::result_json(&id, &r)).unwrap_or_default();
+        let result = phonglab_core::escape::json::text(&result);
         let sep = if all == 0 { "\n" } else { ",\n" };
         all += 1;
         let indented = result.lines().map(|l| format!("    {l}")).collect::<Vec<_>>().join("\n");

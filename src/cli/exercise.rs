@@ -78,21 +78,19 @@ fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
 /// Runs `phonglab exercise`.
 pub fn run(a: &ExerciseArgs) -> Result<()> {
     if a.level == Some(5) {
-        let count = crate::io::misconception_set::write(&a.out, a.seed, a.count as usize)?;
-        let out = a.out.display().to_string();
-        eprintln!("{}", t!("wrong-written", count = count, out = out));
+        let (count, notices) = crate::io::misconception_set::write(&a.out, a.seed, a.count as usize)?;
+        notices.iter().for_each(|n| super::say(n));
+        super::say(&t!("wrong-written", count = count, out = crate::io::reasons::shown(&a.out)));
         return Ok(());
     }
-    let ex = write(&a.out, &request_of(a)?)?;
+    let (ex, notices) = write(&a.out, &request_of(a)?)?;
+    notices.iter().for_each(|n| super::say(n));
     let redraws: usize = ex.iter().map(|e| e.redraws).sum();
-    eprintln!(
-        "{}",
-        t!(
-            "exercises-written",
-            count = ex.len() + a.worksheet as usize,
-            out = a.out.display().to_string(),
-            redraws = redraws
-        )
-    );
+    super::say(&t!(
+        "exercises-written",
+        count = ex.len() + a.worksheet as usize,
+        out = crate::io::reasons::shown(&a.out),
+        redraws = redraws
+    ));
     Ok(())
 }

@@ -53,15 +53,16 @@ pub struct ExportArgs {
 /// Runs `phonglab export`.
 pub fn export(a: &ExportArgs) -> Result<()> {
     let target = Target::from(a.to);
+    use crate::io::same_file::Input;
     if let (Some(scene), Some(output)) = (&a.scene, &a.output) {
-        refuse_onto(target, output, scene)?;
+        refuse_onto(target, output, scene, Input::Scene)?;
     }
     let doc = match &a.scene {
         Some(p) => crate::io::input_file::load_scene(p).map_err(anyhow::Error::msg)?,
         None => phonglab_core::Document::default(),
     };
     if let (Some(mesh), Some(output)) = (&doc.view.obj, &a.output) {
-        refuse_onto(target, output, std::path::Path::new(mesh))?;
+        refuse_onto(target, output, std::path::Path::new(mesh), Input::Mesh)?;
     }
     let written = files(&doc, target).map_err(anyhow::Error::msg)?;
     match (&a.output, target) {
@@ -80,13 +81,14 @@ pub fn export(a: &ExportArgs) -> Result<()> {
                 set.add(name.clone(), text.clone().into_bytes());
             }
             let names: Vec<String> = written.iter().map(|(n, _)| n.clone()).collect();
-            crate::io::file_set::write_set(dir, &set, |n| names.iter().any(|m| m == n))?;
-            eprintln!("{}", t!("export-written", path = dir.display().to_string()));
+            let notices = crate::io::file_set::write_set(dir, &set, |n| names.iter().any(|m| m == n))?;
+            notices.iter().for_each(|n| super::say(n));
+            super::say(&t!("export-written", path = crate::io::reasons::shown(dir)));
         }
         (Some(path), _) => {
             crate::io::atomic_write::check_file_destination(path)?;
             crate::io::atomic_write::write(path, written[0].1.as_bytes())?;
-            eprintln!("{}", t!("export-written", path = path.display().to_string()));
+            super::say(&t!("export-written", path = crate::io::reasons::shown(path)));
         }
     }
     Ok(())
@@ -94,15 +96,20 @@ pub fn export(a: &ExportArgs) -> Result<()> {
 
 /// Refuses an export whose output (a file, or for openFrameworks the files of its `src/`)
 /// is the file `input`.
-fn refuse_onto(target: Target, output: &std::path::Path, input: &std::path::Path) -> Result<()> {
+fn refuse_onto(
+    target: Target,
+    output: &std::path::Path,
+    input: &std::path::Path,
+    kind: crate::io::same_file::Input,
+) -> Result<()> {
     let refused = if target == Target::OpenFrameworks {
         crate::io::same_file::refuse_outputs_in_folder(
             &output.join("src"),
             &["ofApp.h", "ofApp.cpp", "main.cpp"],
-            &[input],
+            &[(input, kind)],
         )
     } else {
-        crate::io::same_file::refuse_output_onto_input(&[output], &[input])
+        crate::io::same_file::refuse_onto(&[output], &[(input, kind)])
     };
     refused.map_err(anyhow::Error::msg)
 }
@@ -130,21 +137,19 @@ pub fn read_student_code(path: &std::path::Path) -> Result<phonglab_core::export
 
 /// Runs `phonglab import`.
 pub fn import(a: &ImportArgs) -> Result<()> {
-    crate::io::same_file::refuse_output_onto_input(&[&a.output], &[&a.file]).map_err(anyhow::Error::msg)?;
+    let code = crate::io::same_file::Input::Code;
+    crate::io::same_file::refuse_onto(&[&a.output], &[(&a.file, code)]).map_err(anyhow::Error::msg)?;
     let imported = read_student_code(&a.file)?;
     for notice in &imported.notices {
-        eprintln!("{}", phonglab_core::escape::terminal::lines(&format!("{}: {notice}", a.file.display())));
+        super::say(&format!("{}: {notice}", crate::io::reasons::shown(&a.file)));
     }
     crate::io::atomic_write::check_file_destination(&a.output)?;
     let text = imported.doc.to_toml().map_err(|e| anyhow::anyhow!("{e}"))?;
     crate::io::atomic_write::write(&a.output, text.as_bytes())?;
-    eprintln!(
-        "{}",
-        t!(
-            "import-written",
-            path = a.output.display().to_string(),
-            lights = t!("lights-count", count = imported.doc.scene.lights.len())
-        )
-    );
+    super::say(&t!(
+        "import-written",
+        path = crate::io::reasons::shown(&a.output),
+        lights = t!("lights-count", count = imported.doc.scene.lights.len())
+    ));
     Ok(())
 }

@@ -70,7 +70,8 @@ impl Cli {
     /// ([`crate::cli::help`]).
     pub fn parse_localised() -> Cli {
         use clap::{CommandFactory, FromArgMatches};
-        let args: Vec<String> = std::env::args().collect();
+        // Not `std::env::args`, which stops the program on an argument that is not UTF-8.
+        let args: Vec<String> = std::env::args_os().map(|a| a.to_string_lossy().into_owned()).collect();
         let asked = args
             .iter()
             .enumerate()
@@ -82,13 +83,13 @@ impl Cli {
         let lang = asked.unwrap_or_else(phonglab_core::locale::Lang::from_env);
         phonglab_core::locale::set_default(phonglab_core::locale::Locale::of(lang));
         let mut cmd = crate::cli::help::localised(Cli::command());
-        let matches = cmd.get_matches_mut();
+        let matches = cmd.try_get_matches_from_mut(std::env::args_os()).unwrap_or_else(|e| exit_escaped(&e));
         if let Some(("help", asked)) = matches.subcommand() {
             let names = asked.get_many::<String>("command").into_iter().flatten();
             crate::cli::help::print_help_of(&mut cmd, names);
             std::process::exit(0);
         }
-        Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit())
+        Cli::from_arg_matches(&matches).unwrap_or_else(|e| exit_escaped(&e))
     }
 
     /// The locale the command line asks for: `--lang` over the system's, `--decimal` over
@@ -98,6 +99,19 @@ impl Cli {
         let lang = self.lang.unwrap_or_else(Lang::from_env);
         Locale { lang, decimal: self.decimal.unwrap_or(lang.decimal_mark()) }
     }
+}
+
+/// Ends the program on clap's error `e` as clap would (its exit code, help and version on
+/// the standard output), but with what it echoes of the command line (a bad value, an
+/// unknown option) written visibly where it holds control characters.
+fn exit_escaped(e: &clap::Error) -> ! {
+    use clap::error::ErrorKind;
+    if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
+        e.exit()
+    }
+    let text = e.render().to_string();
+    eprint!("{}", phonglab_core::escape::terminal::lines(&text));
+    std::process::exit(e.exit_code())
 }
 
 /// `--renderer`'s values.
@@ -187,6 +201,13 @@ pub fn finish(r: Result<()>) -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// Says `text` on the standard error, as every line a command says for a person: its
+/// control characters written visibly (a file's name, a quoted line), its own line breaks
+/// kept.
+pub fn say(text: &str) {
+    eprintln!("{}", phonglab_core::escape::terminal::lines(text));
 }
 
 /// Reads and checks a scene file (what several commands read).

@@ -46,7 +46,7 @@ pub fn run(a: &ProbeArgs) -> Result<()> {
             let mut v = serde_json::to_value(&p)?;
             v["covered"] = true.into();
             v["size"] = size.into();
-            println!("{}", serde_json::to_string_pretty(&v)?);
+            println!("{}", phonglab_core::escape::json::text(&serde_json::to_string_pretty(&v)?));
         }
         Some(p) => print!("{}", probe_report::text(&probe_report::report(&p))),
     }

@@ -150,8 +150,10 @@ impl Loaded {
 
 impl ShadedInput {
     /// Every input file named (the scene, the OBJ), for refusing an output onto one.
-    pub fn inputs(&self) -> Vec<&Path> {
-        self.scene.iter().chain(&self.obj).map(PathBuf::as_path).collect()
+    pub fn inputs(&self) -> Vec<(&Path, crate::io::same_file::Input)> {
+        use crate::io::same_file::Input;
+        let scene = self.scene.iter().map(|p| (p.as_path(), Input::Scene));
+        scene.chain(self.obj.iter().map(|p| (p.as_path(), Input::Mesh))).collect()
     }
 
     /// Reads the scene and builds its mesh; refuses `outputs` that are the scene's own mesh
@@ -206,8 +208,8 @@ impl ShadedInput {
             let mut notes = Vec::new();
             if doc.view.object == ObjectKind::Obj {
                 // The scene's own mesh is an input too.
-                let mesh = doc.view.obj.as_deref().map(Path::new);
-                crate::io::same_file::refuse_output_onto_input(outputs, mesh.as_slice()).map_err(anyhow::Error::msg)?;
+                let mesh = doc.view.obj.as_deref().map(|m| (Path::new(m), crate::io::same_file::Input::Mesh));
+                crate::io::same_file::refuse_onto(outputs, mesh.as_slice()).map_err(anyhow::Error::msg)?;
                 notes = doc.view.obj_mesh()?.notes.clone();
             }
             let mesh = doc.view.mesh();
@@ -231,17 +233,27 @@ impl ShadedInput {
     }
 }
 
+/// Refuses `--light light` on a scene of `count` lights (numbered from 0): a light that is
+/// not there would give an empty channel and a picture that says nothing.
+fn refuse_missing_light(light: usize, count: usize) -> Result<()> {
+    if light >= count {
+        bail!(t!("err-no-such-light", light = light, count = count, last = count.saturating_sub(1)));
+    }
+    Ok(())
+}
+
 /// Runs `phonglab render`.
 pub fn run(a: &RenderArgs) -> Result<()> {
     let outputs: Vec<&Path> = std::iter::once(a.output.as_path()).chain(a.raw.as_deref()).collect();
-    crate::io::same_file::refuse_output_onto_input(&outputs, &a.input.inputs()).map_err(anyhow::Error::msg)?;
-    if let Some(raw) = &a.raw {
-        crate::io::same_file::refuse_output_onto_input(&[raw], &[&a.output]).map_err(anyhow::Error::msg)?;
-    }
+    // Onto an input, or the PFM onto the PNG: refused before anything is read.
+    crate::io::same_file::refuse_onto(&outputs, &a.input.inputs()).map_err(anyhow::Error::msg)?;
     for o in &outputs {
         crate::io::atomic_write::check_file_destination(o)?;
     }
     let loaded = a.input.load(&outputs)?;
+    if let Some(light) = a.light {
+        refuse_missing_light(light, loaded.scene.lights.len())?;
+    }
     let job = loaded.job();
     let size = a.input.size as usize;
     let mut r = Renderer::new();
@@ -261,32 +273,26 @@ pub fn run(a: &RenderArgs) -> Result<()> {
             }
             let (lo, hi) = image.range();
             let number = |x: f64| phonglab_core::locale::num(x, 4);
-            eprintln!(
-                "{}",
-                t!(
-                    "render-channel-summary",
-                    channel = phonglab_core::locale::tr(channel.message_id()),
-                    map = format!("{:?}", a.colour_map).to_lowercase(),
-                    low = number(lo),
-                    high = number(hi)
-                )
-            );
+            super::say(&t!(
+                "render-channel-summary",
+                channel = phonglab_core::locale::tr(channel.message_id()),
+                map = format!("{:?}", a.colour_map).to_lowercase(),
+                low = number(lo),
+                high = number(hi)
+            ));
         }
     }
-    eprintln!(
-        "{}",
-        t!(
-            "render-summary",
-            path = a.output.display().to_string(),
-            size = format!("{width}x{height}"),
-            triangles = stats.triangles,
-            covered = phonglab_core::locale::decimal(&format!("{:.1}", 100.0 * coverage)),
-            evaluations = stats.evaluations,
-            ms = phonglab_core::locale::decimal(&format!("{ms:.1}"))
-        )
-    );
+    super::say(&t!(
+        "render-summary",
+        path = crate::io::reasons::shown(&a.output),
+        size = format!("{width}x{height}"),
+        triangles = stats.triangles,
+        covered = phonglab_core::locale::decimal(&format!("{:.1}", 100.0 * coverage)),
+        evaluations = stats.evaluations,
+        ms = phonglab_core::locale::decimal(&format!("{ms:.1}"))
+    ));
     for note in &loaded.notes {
-        eprintln!("{}", t!("note-line", note = note));
+        super::say(&t!("note-line", note = note));
     }
     Ok(())
 }

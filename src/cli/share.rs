@@ -35,15 +35,20 @@ pub struct ShareArgs {
 
 /// Runs `phonglab share`.
 pub fn run(a: &ShareArgs) -> Result<()> {
+    use crate::io::same_file::{Input, refuse_onto};
     if let Some(qr) = &a.qr {
-        let inputs: Vec<&Path> = a.scene.iter().map(PathBuf::as_path).collect();
-        crate::io::same_file::refuse_output_onto_input(&[qr], &inputs).map_err(anyhow::Error::msg)?;
+        let inputs: Vec<(&Path, Input)> = a.scene.iter().map(|p| (p.as_path(), Input::Scene)).collect();
+        refuse_onto(&[qr], &inputs).map_err(anyhow::Error::msg)?;
         crate::io::atomic_write::check_file_destination(qr)?;
     }
     let doc = match &a.scene {
         Some(p) => super::scene_file(p)?,
         None => phonglab_core::Document::default(),
     };
+    // The scene's mesh is an input too (the link names it; a picture over it loses it).
+    if let (Some(qr), Some(mesh)) = (&a.qr, &doc.view.obj) {
+        refuse_onto(&[qr], &[(Path::new(mesh), Input::Mesh)]).map_err(anyhow::Error::msg)?;
+    }
     if let Some(lang) = &a.open_in
         && !["en", "pt-PT", "pt-BR"].contains(&lang.as_str())
     {
@@ -56,7 +61,8 @@ pub fn run(a: &ShareArgs) -> Result<()> {
         ..Shared::of(doc)
     };
     let url = link(&a.base, &shared)?;
-    println!("{url}");
+    // The page (`--base`) is the user's text: written visibly if it holds a control.
+    println!("{}", phonglab_core::escape::terminal::text(&url));
     eprintln!("{}", t!("share-summary", length = url.len() as i64));
     if let Some(qr) = &a.qr {
         crate::io::qr::write(qr, &url)?;

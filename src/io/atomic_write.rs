@@ -43,7 +43,7 @@ impl fmt::Display for WriteError {
         use phonglab_core::locale::tr;
         f.write_str(&phonglab_core::t!(
             "write-error",
-            path = self.path.display().to_string(),
+            path = crate::io::reasons::shown(&self.path),
             what = tr(self.what),
             reason = crate::io::reasons::io_reason(&self.reason),
             kept = tr(self.kept)
@@ -187,7 +187,8 @@ pub(crate) fn write_new(tmp: &Path, bytes: &[u8]) -> Result<(), (&'static str, i
     result
 }
 
-pub(crate) fn rename(from: &Path, to: &Path) -> io::Result<()> {
+/// Counts a rename on this thread; `Err` where a test makes this one fail.
+fn rename_fault() -> io::Result<()> {
     if let Some(Fault::OnRename(n)) = fault() {
         let k = RENAMES.with(|c| {
             let k = c.get();
@@ -198,46 +199,97 @@ pub(crate) fn rename(from: &Path, to: &Path) -> io::Result<()> {
             return Err(injected("rename"));
         }
     }
+    Ok(())
+}
+
+pub(crate) fn rename(from: &Path, to: &Path) -> io::Result<()> {
+    rename_fault()?;
     std::fs::rename(from, to)
 }
 
-/// Is `path` something that is written in place rather than replaced: a device, a pipe or
-/// a socket (`-o /dev/null`, `-o /dev/stdout`)? Renaming a file over `/dev/null` would
-/// replace the device with a file for every program on the machine.
-pub fn written_in_place(path: &Path) -> bool {
-    std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir())
+/// [`rename`] only where nothing is at `to` ([`crate::platform::os::rename_no_replace`]).
+pub(crate) fn rename_no_replace(from: &Path, to: &Path) -> io::Result<()> {
+    rename_fault()?;
+    crate::platform::os::rename_no_replace(from, to)
 }
 
-/// Writes to a device or a pipe as it is (there is no old file to keep).
-fn write_in_place(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
-    const KEPT: &str = "write-kept-not-a-file";
-    let mut f =
-        File::options().write(true).open(path).map_err(|e| WriteError::new(path, "write-step-open", e, KEPT))?;
-    f.write_all(bytes).and_then(|()| f.flush()).map_err(|e| WriteError::new(path, "write-step-write", e, KEPT))?;
-    close(f).map_err(|e| WriteError::new(path, "write-step-close", e, KEPT))
+/// The file a path leads to: `path` itself, or, for a symbolic link, the file it names
+/// (a chain of links followed, the last one's target even where nothing is there yet, so a
+/// link stays a link and its file is written). Refused past 40 links (a loop).
+pub(crate) fn through_links(path: &Path) -> io::Result<PathBuf> {
+    let mut p = path.to_path_buf();
+    for _ in 0..40 {
+        match std::fs::symlink_metadata(&p) {
+            Ok(m) if m.file_type().is_symlink() => {
+                let target = std::fs::read_link(&p)?;
+                p = if target.is_absolute() { target } else { folder_of(&p).join(target) };
+            }
+            _ => return Ok(p),
+        }
+    }
+    Err(io::Error::new(io::ErrorKind::InvalidInput, "too many levels of symbolic links"))
+}
+
+/// Refuses an output that is there but is not a regular file: a folder, a device, a pipe
+/// or a socket. Writing into a FIFO waits for a reader that may never come, and renaming a
+/// file over `/dev/null` would replace the device for every program on the machine: an
+/// output is a regular file or absent.
+fn refuse_not_a_file(path: &Path, kept: &'static str) -> Result<(), WriteError> {
+    match std::fs::symlink_metadata(path) {
+        Ok(m) if m.is_dir() => {
+            let e = io::Error::new(io::ErrorKind::IsADirectory, "it is a folder");
+            Err(WriteError::new(path, "write-step-create", e, kept))
+        }
+        Ok(m) if !m.is_file() => {
+            let e = io::Error::new(io::ErrorKind::InvalidInput, phonglab_core::t!("write-not-a-regular-file"));
+            Err(WriteError::new(path, "write-step-create", e, kept))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// Is `entry` (a name in the folder of the file `name`) the temporary file of a write of
+/// `name` by another process that is no longer running (`.name.<pid>.<n>.tmp`)?
+fn stale_temporary_of(entry: &str, name: &str) -> bool {
+    let Some(rest) = entry.strip_prefix('.').and_then(|r| r.strip_prefix(name)).and_then(|r| r.strip_prefix('.'))
+    else {
+        return false;
+    };
+    let parts: Vec<&str> = rest.split('.').collect();
+    let [pid, n, "tmp"] = parts[..] else { return false };
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    let Ok(pid) = pid.parse::<u32>() else { return false };
+    digits(n) && pid != std::process::id() && !crate::platform::os::process_alive(pid)
+}
+
+/// Removes what killed writes of `name` left in `dir`: the temporary files
+/// `.name.<pid>.<n>.tmp` (regular files, not links) whose writer is no longer running.
+/// Only temporaries of the file being written now: another file's are left to its next
+/// write.
+fn remove_stale_temporaries(dir: &Path, name: &str) {
+    let Ok(entries) = std::fs::read_dir(dir) else { return };
+    for entry in entries.flatten() {
+        let stale = entry.file_name().to_str().is_some_and(|e| stale_temporary_of(e, name));
+        if stale && entry.file_type().is_ok_and(|t| t.is_file()) {
+            let _ = std::fs::remove_file(entry.path());
+        }
+    }
 }
 
 /// Writes `bytes` to `path` whole or not at all (see the module's documentation). A
-/// symbolic link is followed (the file it names is replaced, the link stays a link); a
-/// device or a pipe is written in place.
+/// symbolic link is followed (the file it names is replaced, or made where it names
+/// nothing yet; the link stays a link); anything there that is not a regular file (a
+/// device, a pipe, a folder) is refused. Temporary files that killed writes of the same
+/// file left beside it are removed first.
 pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
     const KEPT: &str = "write-kept-file";
-    if written_in_place(path) {
-        return write_in_place(path, bytes);
-    }
-    let resolved;
-    let path = if std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink()) {
-        resolved = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
-        resolved.as_path()
-    } else {
-        path
-    };
+    let resolved =
+        through_links(path).map_err(|e| WriteError::new(path, "write-step-name", e, "write-kept-nothing"))?;
+    let path = resolved.as_path();
     let name = file_name_of(path).map_err(|e| WriteError::new(path, "write-step-name", e, "write-kept-nothing"))?;
-    if path.is_dir() {
-        let e = io::Error::new(io::ErrorKind::IsADirectory, "it is a folder");
-        return Err(WriteError::new(path, "write-step-create", e, "write-kept-nothing"));
-    }
+    refuse_not_a_file(path, "write-kept-nothing")?;
     let dir = folder_of(path);
+    remove_stale_temporaries(dir, &name);
     let tmp = temporary_name(dir, &name);
     write_new(&tmp, bytes).map_err(|(what, e)| WriteError::new(path, what, e, KEPT))?;
     if let Err(e) = rename(&tmp, path) {
@@ -249,26 +301,14 @@ pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
 }
 
 /// Checks, before long work, that a file can be created in `path`'s folder (by creating
-/// and removing a temporary file there) and that `path` is not a folder.
+/// and removing a temporary file there; through a link, in the folder of the file it
+/// names) and that what is at `path` is a regular file or nothing.
 pub fn check_file_destination(path: &Path) -> Result<(), WriteError> {
     const KEPT: &str = "write-kept-nothing";
-    if written_in_place(path) {
-        return File::options()
-            .write(true)
-            .open(path)
-            .map(drop)
-            .map_err(|e| WriteError::new(path, "write-step-open", e, KEPT));
-    }
-    let name = file_name_of(path).map_err(|e| WriteError::new(path, "write-step-name", e, KEPT))?;
-    if path.is_dir() {
-        return Err(WriteError::new(
-            path,
-            "write-step-create",
-            io::Error::new(io::ErrorKind::IsADirectory, "it is a folder"),
-            KEPT,
-        ));
-    }
-    probe(folder_of(path), &name).map_err(|e| WriteError::new(path, "write-step-create", e, KEPT))
+    let resolved = through_links(path).map_err(|e| WriteError::new(path, "write-step-name", e, KEPT))?;
+    let name = file_name_of(&resolved).map_err(|e| WriteError::new(path, "write-step-name", e, KEPT))?;
+    refuse_not_a_file(&resolved, KEPT)?;
+    probe(folder_of(&resolved), &name).map_err(|e| WriteError::new(path, "write-step-create", e, KEPT))
 }
 
 /// Checks, before long work, that the folder `dir` exists or can be made, and that files
@@ -338,21 +378,65 @@ pub(crate) mod tests {
 
     #[test]
     #[cfg(unix)]
-    fn a_device_is_written_in_place_and_a_link_stays_a_link() {
-        // Renaming over /dev/null would turn it into a file for the whole machine: it is
-        // recognised as written in place (this test does not write to it).
-        assert!(written_in_place(Path::new("/dev/null")));
-        assert!(!written_in_place(Path::new("/tmp")));
+    fn a_device_or_a_pipe_is_refused_and_a_link_stays_a_link() {
+        // Renaming over /dev/null would turn it into a file for the whole machine, and a
+        // FIFO would wait for a reader: both refused, left as they are.
+        let e = write(Path::new("/dev/null"), b"x").unwrap_err();
+        assert!(e.to_string().contains("not a regular file"), "{e}");
+        assert!(check_file_destination(Path::new("/dev/null")).is_err());
         let dir = temp_dir("link");
+        let fifo = dir.join("fifo.png");
+        let c = std::ffi::CString::new(fifo.as_os_str().as_encoded_bytes()).unwrap();
+        // SAFETY: `c` is a valid NUL-terminated path for the duration of the call.
+        assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
+        assert!(write(&fifo, b"x").unwrap_err().to_string().contains("not a regular file"));
+        assert!(check_file_destination(&fifo).is_err());
+        std::fs::remove_file(&fifo).unwrap();
         let real = dir.join("real.png");
         std::fs::write(&real, b"old").unwrap();
         let link = dir.join("link.png");
         std::os::unix::fs::symlink(&real, &link).unwrap();
-        assert!(!written_in_place(&link));
         write(&link, b"new").unwrap();
         assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink(), "still a link");
         assert_eq!(std::fs::read(&real).unwrap(), b"new");
         assert_eq!(listing(&dir).len(), 2, "no temporary left: {:?}", listing(&dir));
+    }
+
+    #[test]
+    #[cfg(unix)]
+    fn a_dangling_link_stays_a_link_and_its_file_is_made() {
+        let dir = temp_dir("dangling");
+        std::fs::create_dir(dir.join("pictures")).unwrap();
+        let link = dir.join("out.png");
+        std::os::unix::fs::symlink("pictures/made.png", &link).unwrap();
+        check_file_destination(&link).unwrap();
+        write(&link, b"new").unwrap();
+        assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink(), "still a link");
+        assert_eq!(std::fs::read(dir.join("pictures/made.png")).unwrap(), b"new");
+        // A loop of links is refused, saying so.
+        std::os::unix::fs::symlink("b.png", dir.join("a.png")).unwrap();
+        std::os::unix::fs::symlink("a.png", dir.join("b.png")).unwrap();
+        assert!(write(&dir.join("a.png"), b"x").unwrap_err().to_string().contains("symbolic links"));
+    }
+
+    #[test]
+    #[cfg(unix)]
+    fn a_killed_writes_temporaries_are_removed_by_the_next_write_of_that_file() {
+        let dir = temp_dir("stale");
+        // A writer that no longer runs (the largest pid a system gives is below 2^22), one
+        // that runs (this one's parent), and this process's own.
+        let (dead, alive) = ((1 << 22) + 1, std::os::unix::process::parent_id());
+        let stale = format!(".out.png.{dead}.0.tmp");
+        let running = format!(".out.png.{alive}.3.tmp");
+        let other = format!(".other.png.{dead}.1.tmp");
+        for n in [&stale, &running, &other, &".out.png.x.1.tmp".to_string()] {
+            std::fs::write(dir.join(n), b"part").unwrap();
+        }
+        write(&dir.join("out.png"), b"new").unwrap();
+        let names: Vec<String> = listing(&dir).into_iter().map(|(n, _)| n).collect();
+        assert!(!names.contains(&stale), "{names:?}");
+        assert!(names.contains(&running) && names.contains(&other), "{names:?}");
+        assert!(names.contains(&".out.png.x.1.tmp".to_string()), "not phonglab's form: {names:?}");
     }
 
     #[test]

@@ -93,6 +93,38 @@ pub fn render_bytes(width: u64, height: u64, vertices: u64, triangles: u64) -> u
     width * height * 16 + vertices * (96 + 24) + triangles * (188 + 12)
 }
 
+/// What `eval` holds while it lights a case file whose largest case is `largest_case`
+/// bytes of JSON: that case as serde_json's values (at most 32 bytes a byte of JSON: a
+/// list of one-digit numbers, "0,", takes a 32-byte value for 2 bytes, and a list's room
+/// can double), the ids, and 16 MiB for the rest (the reading buffers, one result).
+pub fn eval_bytes(largest_case: u64) -> u64 {
+    largest_case.saturating_mul(32) + (16 << 20)
+}
+
+/// What `phonglab cost` holds at its peak for a `size` x `size` study of each of the
+/// `views` (each a view of one object, as the study draws it): for the object whose study
+/// takes most, its reference (the finest mesh lit per vertex by the general engine in f64,
+/// a full breakdown of each vertex, and per pixel its colour, depth and the kept f64 colour:
+/// 97 bytes a pixel) and a frame of that mesh drawn by the renderer ([`render_bytes`]);
+/// for every object, each variant's error map (4 bytes a pixel) and its reference image,
+/// kept to the end; and the chart painted at the end (60 bytes a pixel of 1440 x 645 an
+/// object).
+pub fn cost_bytes(views: &[phonglab_core::View], size: u64) -> u64 {
+    use phonglab_core::cost;
+    let pixels = size * size;
+    let breakdown = std::mem::size_of::<phonglab_core::VertexLighting<f64>>() as u64;
+    let mut peak = 0u64;
+    let mut kept = 0u64;
+    for view in views {
+        let mesh = cost::reference_view(view).mesh();
+        let (v, t) = (mesh.positions.len() as u64, mesh.triangle_count() as u64);
+        let reference = v * (breakdown + 64) + pixels * 97;
+        peak = peak.max(reference + render_bytes(size, size, v, t));
+        kept += pixels * (4 * cost::variants(view.object).len() as u64 + 25);
+    }
+    peak + kept + 1440 * 645 * 60 * views.len() as u64
+}
+
 /// What painting the whole window into a picture of `width` x `height` points at `scale`
 /// pixels a point allocates: the canvas (four f32 a pixel), its RGBA copy and the PNG's
 /// rows (24 bytes a pixel).

@@ -291,10 +291,11 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
 }
 
 /// Writes the exercises as one set into the folder `dir` ([`super::file_set::write_set`]):
-/// the folder ends with the new set whole, or as it was; returns them.
-pub fn write(dir: &std::path::Path, a: &Request) -> Result<Vec<Exercise>> {
+/// the folder ends with the new set whole, or as it was; returns them, and what was left
+/// as it is in the folder (see [`super::file_set::recover`]).
+pub fn write(dir: &std::path::Path, a: &Request) -> Result<(Vec<Exercise>, Vec<String>)> {
     super::atomic_write::check_folder_destination(dir)?;
     let (exercises, set) = exercise_set(a)?;
-    super::file_set::write_set(dir, &set, belongs_to_a_set)?;
-    Ok(exercises)
+    let notices = super::file_set::write_set(dir, &set, belongs_to_a_set)?;
+    Ok((exercises, notices))
 }

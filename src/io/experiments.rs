@@ -8,7 +8,7 @@
 //!
 //! ```toml
 //! scene = "worksheet-mview1"   # a shipped scene (assets/scenes/, no .toml), or a scene file
-//!                              # beside this one ("my-scene.toml")
+//!                              # beside this one ("my-scene.toml": a name, no folder)
 //! answer = "cosTheta"          # the step's name in the worksheet (vlv, d, Idif, at, spot, I…)
 //! light = 0                    # whose step, with several lights (0 when left out)
 //! control = "light-z"          # the control the words tell the class to move, by its label's
@@ -26,6 +26,8 @@
 
 use std::collections::BTreeMap;
 use std::path::Path;
+
+use phonglab_core::escape::printable;
 
 use phonglab_core::Document;
 use phonglab_core::locale::Lang;
@@ -78,28 +80,73 @@ pub struct Experiment {
     pub text: BTreeMap<String, Words>,
 }
 
+/// The most experiment files read from a teacher's folder.
+pub const MAX_EXPERIMENTS: usize = 64;
+
+/// The largest experiment file read: a shipped one is about 1.5 KB.
+pub const MAX_EXPERIMENT_BYTES: u64 = 64 << 10;
+
+/// The most bytes a teacher's folder is read for, its experiments and the scenes they name
+/// together (each scene file at most [`crate::io::input_file::MAX_SCENE_BYTES`]).
+pub const MAX_FOLDER_BYTES: u64 = 4 << 20;
+
+/// Where an experiment's scene comes from (see [`Experiment::parse`]).
+pub enum SceneText {
+    /// A scene's text, and the name it is said by in a message.
+    Found(String, String),
+    /// Nothing of that name.
+    Missing,
+    /// Refused, and why (not a shipped name nor a plain name in the folder, too large...).
+    Refused(String),
+}
+
 impl Experiment {
     /// Reads an experiment's `text`; `scene_text` finds a scene file's text by the name the
-    /// experiment gives. `Err` says what is wrong, in the reader's words.
-    pub fn parse(text: &str, scene_text: impl Fn(&str) -> Option<String>) -> Result<Experiment, String> {
-        let file: File = toml::from_str(text).map_err(|e| e.to_string())?;
+    /// experiment gives. `Err` says what is wrong, in the reader's words, quoting only the
+    /// file it names (the experiment's lines, or the scene's under the scene's name). Its
+    /// words are one line of printable text each: control characters written `\u{1B}`.
+    pub fn parse(text: &str, scene_text: impl Fn(&str) -> SceneText) -> Result<Experiment, String> {
+        use phonglab_core::document::toml_error_text;
+        let file: File = toml::from_str(text).map_err(|e| toml_error_text(text, &e))?;
         if file.text.is_empty() {
             return Err(t!("experiment-no-text"));
         }
         if let Some(id) = &file.control
             && !phonglab_core::locale::has_message(Lang::En, id)
         {
-            return Err(t!("experiment-no-control", control = id.clone()));
+            return Err(t!(
+                "experiment-no-control",
+                control = phonglab_core::numerics::strict::quoted_line(&printable(id))
+            ));
         }
-        let base = scene_text(&file.scene).ok_or_else(|| t!("experiment-no-scene", scene = file.scene.clone()))?;
-        let mut scene: toml::Value = toml::from_str::<toml::Table>(&base).map_err(|e| e.to_string())?.into();
+        let shown = phonglab_core::numerics::strict::quoted_line(&printable(&file.scene));
+        let (base, name) = match scene_text(&file.scene) {
+            SceneText::Found(text, name) => (text, name),
+            SceneText::Missing => return Err(t!("experiment-no-scene", scene = shown)),
+            SceneText::Refused(why) => return Err(t!("experiment-scene-refused", scene = shown, why = why)),
+        };
+        let in_scene = |e: String| t!("experiment-scene-error", scene = name.clone(), error = e);
+        let table = toml::from_str::<toml::Table>(&base).map_err(|e| in_scene(toml_error_text(&base, &e)))?;
+        Document::from_toml(&base).map_err(|e| in_scene(e.to_string()))?;
+        let mut scene: toml::Value = table.into();
         if let Some(changes) = &file.changes {
             merge(&mut scene, &toml::Value::Table(changes.clone()));
         }
         let merged = toml::to_string(&scene).map_err(|e| e.to_string())?;
-        let doc = Document::from_toml(&merged).map_err(|e| e.to_string())?;
-        let (answer, light, control, text) = (file.answer, file.light, file.control, file.text);
-        Ok(Experiment { source: String::new(), doc, answer, light, control, text })
+        // The changes' error: what is wrong, never a line of the merged text (it is neither
+        // file's).
+        let doc = Document::from_toml(&merged).map_err(|e| {
+            t!("experiment-changes-refused", scene = name.clone(), error = without_place(&e.to_string()))
+        })?;
+        let text = file.text.into_iter().map(|(lang, w)| (lang, w.printable())).collect();
+        Ok(Experiment {
+            source: String::new(),
+            doc,
+            answer: file.answer,
+            light: file.light,
+            control: file.control,
+            text,
+        })
     }
 
     /// The label of the control its words tell the class to move, in the reader's language.
@@ -114,6 +161,29 @@ impl Experiment {
             .or_else(|| self.text.get("en"))
             .or_else(|| self.text.values().next())
             .expect("parse refuses a file without words")
+    }
+}
+
+impl Words {
+    /// The words with every control character written visibly (`\u{1B}`): a title, what to
+    /// look for and the question are each one line of printable text.
+    fn printable(self) -> Words {
+        Words { title: printable(&self.title), look: printable(&self.look), question: printable(&self.question) }
+    }
+}
+
+/// A document error's message without its place and excerpt (the first line, after
+/// "line L, column C: "), for an error whose place is in a text no file holds.
+fn without_place(message: &str) -> String {
+    let first = message.lines().next().unwrap_or_default();
+    // "line \0, column \0" in the reader's language: the words around the numbers.
+    let pattern = t!("toml-place", line = "\u{0}", column = "\u{0}");
+    let words: Vec<&str> = pattern.split('\u{0}').collect();
+    match (first.split_once(": "), words.as_slice()) {
+        (Some((place, what)), [line, column, ..]) if place.starts_with(line) && place.contains(column) => {
+            what.to_string()
+        }
+        _ => first.to_string(),
     }
 }
 
@@ -150,6 +220,11 @@ fn shipped_scene(name: &str) -> Option<String> {
     crate::io::scenes::SCENE_FILES.iter().find(|(path, _)| *path == file).map(|(_, text)| text.to_string())
 }
 
+/// [`shipped_scene`] as an experiment's scene.
+fn shipped_as_scene(name: &str) -> SceneText {
+    shipped_scene(name).map_or(SceneText::Missing, |text| SceneText::Found(text, printable(name)))
+}
+
 /// The shipped experiments, in file order, parsed once (every one parses: a test checks).
 pub fn shipped() -> &'static [Experiment] {
     static ALL: std::sync::OnceLock<Vec<Experiment>> = std::sync::OnceLock::new();
@@ -157,7 +232,7 @@ pub fn shipped() -> &'static [Experiment] {
         EXPERIMENT_FILES
             .iter()
             .filter_map(|(path, text)| {
-                let mut e = Experiment::parse(text, shipped_scene).ok()?;
+                let mut e = Experiment::parse(text, shipped_as_scene).ok()?;
                 e.source = format!("assets/experiments/{path}");
                 Some(e)
             })
@@ -166,8 +241,11 @@ pub fn shipped() -> &'static [Experiment] {
 }
 
 /// A teacher's own experiments in `dir` (each `.toml` in it, by name), and for each file
-/// that does not load, its name and why. A scene named in one is a shipped scene or a file
-/// in `dir`.
+/// that does not load, its name and why: regular files, never read through a link. A scene
+/// named in one is a shipped scene or a regular file in `dir`, named without a folder
+/// (never `..`, an absolute path or a link).
+/// At most [`MAX_EXPERIMENTS`] files are read, each at most [`MAX_EXPERIMENT_BYTES`], and
+/// [`MAX_FOLDER_BYTES`] in all with their scenes; past that a file is refused unread.
 pub fn in_folder(dir: &Path) -> (Vec<Experiment>, Vec<String>) {
     let mut found = Vec::new();
     let mut refused = Vec::new();
@@ -175,26 +253,64 @@ pub fn in_folder(dir: &Path) -> (Vec<Experiment>, Vec<String>) {
     let mut paths: Vec<_> = entries
         .flatten()
         .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml") && p.is_file())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .filter(|p| std::fs::symlink_metadata(p).is_ok_and(|m| m.is_file()))
         .collect();
     paths.sort();
-    let cap = crate::io::input_file::MAX_SCENE_BYTES;
-    let beside = |name: &str| {
-        shipped_scene(name).or_else(|| crate::io::input_file::read_text_capped(&dir.join(name), cap, "scene").ok())
+    let read = std::cell::Cell::new(0u64);
+    // Reads a file of the folder under its own cap and what is left of the folder's.
+    let take = |path: &Path, cap: u64, kind: &str| -> Result<String, String> {
+        let left = MAX_FOLDER_BYTES.saturating_sub(read.get());
+        let size = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
+        if size > left {
+            return Err(t!(
+                "experiment-folder-full",
+                most = phonglab_core::mesh::obj::describe_bytes(MAX_FOLDER_BYTES)
+            ));
+        }
+        let text = crate::io::input_file::read_text_capped(path, cap, kind)?;
+        read.set(read.get() + text.len() as u64);
+        Ok(text)
     };
-    for p in paths {
-        let name = p.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        let parsed = crate::io::input_file::read_text_capped(&p, cap, "experiment")
+    let beside = |name: &str| match shipped_as_scene(name) {
+        SceneText::Missing => beside_scene(dir, name, &take),
+        found => found,
+    };
+    for (k, p) in paths.iter().enumerate() {
+        let name = printable(&p.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default());
+        if k >= MAX_EXPERIMENTS {
+            refused.push(format!("{name}: {}", t!("experiment-too-many", most = MAX_EXPERIMENTS)));
+            continue;
+        }
+        let parsed = take(p, MAX_EXPERIMENT_BYTES, &t!("file-kind-experiments"))
             .and_then(|text| Experiment::parse(&text, beside));
         match parsed {
             Ok(mut e) => {
-                e.source = p.display().to_string();
+                e.source = crate::io::reasons::shown(p);
                 found.push(e);
             }
             Err(why) => refused.push(format!("{name}: {why}")),
         }
     }
     (found, refused)
+}
+
+/// The scene file `name` beside the experiments in `dir`, read with `take`: only a plain
+/// file name (no folder, not `..`, not absolute) of a regular file (not a link).
+fn beside_scene(dir: &Path, name: &str, take: &dyn Fn(&Path, u64, &str) -> Result<String, String>) -> SceneText {
+    let plain = !name.is_empty() && name != "." && name != ".." && !name.contains(['/', '\\', ':']);
+    if !plain {
+        return SceneText::Refused(t!("experiment-scene-not-beside"));
+    }
+    let path = dir.join(name);
+    match std::fs::symlink_metadata(&path) {
+        Err(_) => SceneText::Missing,
+        Ok(m) if !m.is_file() => SceneText::Refused(t!("experiment-scene-not-beside")),
+        Ok(_) => match take(&path, crate::io::input_file::MAX_SCENE_BYTES, &t!("file-kind-scenes")) {
+            Ok(text) => SceneText::Found(text, printable(name)),
+            Err(why) => SceneText::Refused(why),
+        },
+    }
 }
 
 #[cfg(test)]
@@ -283,5 +399,88 @@ mod tests {
 
     fn by_stem(stem: &str) -> &'static Experiment {
         shipped().iter().find(|e| e.source.contains(stem)).unwrap()
+    }
+
+    /// An experiment in `dir` named `name` whose scene is `scene` (and whose title is
+    /// `title`).
+    fn experiment(dir: &Path, name: &str, scene: &str, title: &str) {
+        let text = format!(
+            "scene = {}\nanswer = \"d\"\n[text.en]\ntitle = {}\nlook = \"y\"\nquestion = \"z?\"\n",
+            phonglab_core::escape::toml::string(scene),
+            phonglab_core::escape::toml::string(title)
+        );
+        std::fs::write(dir.join(name), text).unwrap();
+    }
+
+    fn folder(name: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("phonglab-experiments-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    /// Issue 54, 3: an experiment names only a scene beside it or a shipped one; nothing
+    /// else is read, and no refusal quotes a line of another file.
+    #[test]
+    #[cfg(unix)]
+    fn an_experiment_reads_only_a_scene_beside_it_or_a_shipped_one() {
+        let dir = folder("outside");
+        let secret = dir.join("../phonglab-secret.txt");
+        std::fs::write(&secret, "root:x:0:0:the first line of someone's file\n").unwrap();
+        std::os::unix::fs::symlink(&secret, dir.join("link.toml")).unwrap();
+        let hostile = ["../../../../etc/passwd", "/etc/passwd", "../phonglab-secret.txt", "link.toml"];
+        for (k, scene) in hostile.iter().enumerate() {
+            experiment(&dir, &format!("e{k}.toml"), scene, "x");
+        }
+        let (found, refused) = in_folder(&dir);
+        assert!(found.is_empty(), "{found:?}");
+        let said = refused.join("\n");
+        assert!(!said.contains("root:") && !said.contains("first line"), "{said}");
+        for k in 0..4 {
+            let line = refused.iter().find(|r| r.starts_with(&format!("e{k}.toml"))).unwrap();
+            assert!(line.contains("by its name alone"), "{line}");
+        }
+        let _ = std::fs::remove_file(&secret);
+    }
+
+    /// An error quotes only the file it names: a broken scene beside the experiment is
+    /// quoted under the scene's name, and only a short piece of its line.
+    #[test]
+    fn a_broken_scene_is_quoted_under_its_own_name_and_briefly() {
+        let dir = folder("broken-scene");
+        std::fs::write(dir.join("s.toml"), format!("name = {}\n", "A".repeat(100_000))).unwrap();
+        experiment(&dir, "e.toml", "s.toml", "x");
+        std::fs::write(dir.join("f.toml"), format!("scene = \"s.toml\"\nbroken = {}\n", "B".repeat(50_000))).unwrap();
+        let (_, refused) = in_folder(&dir);
+        let e = refused.iter().find(|r| r.starts_with("e.toml")).unwrap();
+        assert!(e.contains("the scene s.toml does not load") && e.contains("AAAA"), "{e}");
+        let f = refused.iter().find(|r| r.starts_with("f.toml")).unwrap();
+        assert!(f.contains("BBBB") && !f.contains("AAAA"), "{f}");
+        assert!(refused.iter().all(|r| r.len() < 600), "no whole line quoted: {refused:?}");
+    }
+
+    /// Issue 54, 4: the folder is read for a bounded number of bounded files.
+    #[test]
+    fn a_folder_of_many_or_large_experiments_is_read_only_up_to_its_caps() {
+        let dir = folder("caps");
+        std::fs::write(dir.join("big.toml"), vec![b'#'; 1 << 20]).unwrap();
+        for k in 0..MAX_EXPERIMENTS + 5 {
+            experiment(&dir, &format!("e{k:03}.toml"), "worksheet-mview1", &format!("number {k}"));
+        }
+        let (found, refused) = in_folder(&dir);
+        assert_eq!(found.len(), MAX_EXPERIMENTS - 1, "the big file takes one place, refused unread");
+        let big = refused.iter().find(|r| r.starts_with("big.toml")).unwrap();
+        assert!(big.contains("at most 65 536 bytes"), "{big}");
+        assert_eq!(refused.iter().filter(|r| r.contains("at most 64 experiments")).count(), 6, "{refused:?}");
+    }
+
+    /// A title (and what to look for, and the question) keeps no control character.
+    #[test]
+    fn an_experiments_words_keep_no_control_character() {
+        let dir = folder("title");
+        experiment(&dir, "e.toml", "worksheet-mview1", "Look\u{1b}[2J here\u{202e}\n");
+        let (found, _) = in_folder(&dir);
+        let title = &found[0].words(Lang::En).title;
+        assert_eq!(title, "Look\\u{1B}[2J here\\u{202E}\\u{A}");
     }
 }

@@ -3,31 +3,36 @@
 //! A set of files that belong together (an exercise set, a cost report, an openFrameworks
 //! project: [`write_set`]) is swapped in so that at every instant either the old set or the new one is whole, even
 //! when the process is killed:
-//! 1. the new set is written whole into a staging folder inside the target folder, and
-//!    synced;
-//! 2. a journal, `.phonglab-set.journal`, naming the staging folder, the new set's files
-//!    and the old set's, is written whole (a temporary file renamed): from this instant the
+//! 1. a staging folder, `.phonglab-set.<pid>.<n>.tmp`, is made in the target folder, and a
+//!    journal in it (`.phonglab-set.journal`) naming the folder itself;
+//! 2. the new set is written whole into the staging folder, and synced;
+//! 3. the journal is written again, whole (a temporary file renamed), naming the new set's
+//!    files and the old set's, each with its size, hash and identity: from this instant the
 //!    new set is decided, and it is whole (in the staging folder, or already in place);
-//! 3. the old set's files are moved aside into the staging folder and the new ones renamed
-//!    into place (each rename happens or does not);
-//! 4. the journal is removed, then the staging folder.
+//! 4. the old set's files are moved aside into the staging folder and the new ones renamed
+//!    into place, where nothing is (each rename happens or does not);
+//! 5. the old files, the journal and the staging folder are removed.
 //!
-//! A failure before the journal leaves the old set untouched; a failure after it (a rename
-//! refused) moves everything back and removes the journal, so the folder is as it was. A
-//! process killed at any step leaves either no journal (the old set whole in place, and a
-//! staging folder to throw away) or the journal (the new set whole across the folder and
-//! the staging folder): the next write of a set into the folder ([`recover`], under the
-//! folder's lock) finishes the swap the journal names, or throws the stale staging away.
-//! Files of the old set that the new one lacks (`exercise-07.md` after a set of five) go
-//! with the old set; other files are never touched. Two processes never swap sets in one
-//! folder at once: each holds the folder's lock (Unix) while it writes.
+//! A failure before the journal decides leaves the old set untouched; a failure after it
+//! (a rename refused) moves everything back, so the folder is as it was. A process killed
+//! at any step leaves either a staging folder whose journal has not decided (the old set
+//! whole in place) or one whose journal has (the new set whole across the folder and the
+//! staging folder): the next write of a set into the folder ([`recover`], under the
+//! folder's lock) finishes the swap, or throws the staging folder away. Files of the old
+//! set that the new one lacks (`exercise-07.md` after a set of five) go with the old set;
+//! other files are never touched. Two processes never swap sets in one folder at once:
+//! each holds the folder's lock (Unix) while it writes.
 //!
+//! Recovery acts only on what phonglab itself wrote ([`super::set_journal`]): a journal,
+//! staging folder or link planted in the folder (an unzipped handout can carry one) is left
+//! as it is, and the messages [`write_set`] returns say so.
 use std::fmt;
 use std::io;
 use std::path::Path;
 
-use super::atomic_write::{
-    Fault, WriteError, fault, file_name_of, next_step, rename, temporary_name, write, write_new,
+use super::atomic_write::{Fault, WriteError, fault, next_step, rename_no_replace, temporary_name};
+use super::set_journal::{
+    ASIDE, Entry, Identity, JOURNAL, Journal, STAGING, entry_of, plain_name, stage, write_journal,
 };
 
 /// Files that belong together, written by [`write_set`]: names (no folders) and bytes.
@@ -47,21 +52,6 @@ impl FileSet {
     pub fn get(&self, name: &str) -> Option<&[u8]> {
         self.files.iter().find(|(n, _)| n == name).map(|(_, b)| b.as_slice())
     }
-}
-
-/// The journal of a set's swap, in the target folder (see the module's documentation).
-pub const JOURNAL: &str = ".phonglab-set.journal";
-
-/// The stem of a staging folder's name (`.phonglab-set.<pid>.<n>.tmp`).
-const STAGING: &str = "phonglab-set";
-
-/// What the journal says: the staging folder (a name in the target folder), the new set's
-/// files and the old set's.
-#[derive(Debug, serde::Serialize, serde::Deserialize)]
-struct Journal {
-    staging: String,
-    new: Vec<String>,
-    old: Vec<String>,
 }
 
 /// A set's writer killed at this step (by a test): stop here, as a dead process would.
@@ -98,21 +88,25 @@ fn killed(dir: &Path) -> WriteError {
     WriteError::new(dir, "write-step-killed", io::Error::other("killed (injected by a test)"), "write-kept-recoverable")
 }
 
+const UNTOUCHED: &str = "write-kept-folder";
+
 /// Writes `set` into the folder `dir` (created if missing) as one: the folder ends with
 /// the whole new set, or, on any failure, exactly the files it had. Files already in `dir`
 /// for which `belongs` is true are the old set: they are replaced, or removed when the new
-/// set has no file of that name. Other files in `dir` are never touched. What a killed
-/// earlier writer left in `dir` is recovered first ([`recover`]).
-pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> Result<(), WriteError> {
-    const UNTOUCHED: &str = "write-kept-folder";
+/// set has no file of that name. Other files in `dir` are never touched, and a name of the
+/// set that is not a regular file there (a link, a folder) refuses the set before anything
+/// is written. What a killed earlier writer left in `dir` is recovered first
+/// ([`recover`]); the messages returned name what was left as it is there.
+pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> Result<Vec<String>, WriteError> {
     std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED))?;
     let _lock = crate::platform::os::lock_folder(dir)
         .map_err(|e| WriteError::new(dir, "write-step-lock-folder", e, UNTOUCHED))?;
-    recover_locked(dir).map_err(|e| WriteError::new(dir, "write-step-recover", e, UNTOUCHED))?;
-    let staging = temporary_name(dir, STAGING);
-    std::fs::create_dir(&staging).map_err(|e| WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED))?;
+    let notices = super::set_journal::recover_locked(dir)
+        .map_err(|e| WriteError::new(dir, "write-step-recover", e, UNTOUCHED))?;
+    refuse_unwritable_names(dir, set)?;
+    let staging = new_staging(dir)?;
     match stage_and_swap(dir, &staging, set, &belongs) {
-        Ok(()) => Ok(()),
+        Ok(()) => Ok(notices),
         Err(Stop::Killed) => Err(killed(dir)),
         Err(Stop::Failed(e)) => {
             let _ = std::fs::remove_dir_all(&staging);
@@ -121,133 +115,102 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
     }
 }
 
-/// Finishes or throws away what a killed writer of a set left in `dir`: with a journal,
-/// the swap it names is finished (the new set is whole); without one, staging folders and
-/// a journal's temporary file are removed (the old set is whole in place). Takes the
-/// folder's lock, so a writer still at work is waited for, never disturbed.
-pub fn recover(dir: &Path) -> io::Result<()> {
-    let _lock = crate::platform::os::lock_folder(dir)?;
-    recover_locked(dir)
-}
-
-fn recover_locked(dir: &Path) -> io::Result<()> {
-    let journal = dir.join(JOURNAL);
-    match std::fs::read(&journal) {
-        Ok(bytes) => {
-            let j: Journal = serde_json::from_slice(&bytes).map_err(io::Error::other)?;
-            // A journal is read from a folder that may have come from anyone (an unzipped
-            // set): it may only name plain files and a staging folder of phonglab's.
-            let staging_ok = j.staging.starts_with(&format!(".{STAGING}.")) && j.staging.ends_with(".tmp");
-            if !plain_name(&j.staging) || !staging_ok || !j.new.iter().chain(&j.old).all(|n| plain_name(n)) {
-                return Err(io::Error::new(io::ErrorKind::InvalidData, "the journal names files outside its folder"));
-            }
-            finish_swap(dir, &j)?;
-            std::fs::remove_file(&journal)?;
-            crate::platform::os::sync_folder(dir);
-        }
-        Err(e) if e.kind() == io::ErrorKind::NotFound => {}
-        Err(e) => return Err(e),
-    }
-    // Under the lock, every staging folder and journal temporary is a dead writer's.
-    for entry in std::fs::read_dir(dir)?.flatten() {
-        let name = entry.file_name().to_string_lossy().into_owned();
-        let stale = name.ends_with(".tmp")
-            && (name.starts_with(&format!(".{STAGING}.")) || name.starts_with(&format!(".{JOURNAL}.")));
-        if stale {
-            let _ = if entry.file_type().is_ok_and(|t| t.is_dir()) {
-                std::fs::remove_dir_all(entry.path())
-            } else {
-                std::fs::remove_file(entry.path())
-            };
+/// Makes this writer's staging folder in `dir`: a name nothing has, made by `mkdir`, which
+/// fails on anything already there (a planted folder or link of the same name is passed
+/// over for the next name).
+fn new_staging(dir: &Path) -> Result<std::path::PathBuf, WriteError> {
+    let mut tries = 0;
+    loop {
+        let staging = temporary_name(dir, STAGING);
+        match std::fs::create_dir(&staging) {
+            Ok(()) => return Ok(staging),
+            Err(e) if e.kind() == io::ErrorKind::AlreadyExists && tries < 100 => tries += 1,
+            Err(e) => return Err(WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED)),
         }
     }
-    Ok(())
 }
 
-/// Rolls the swap that `j` names forward from wherever it stopped: each new file still in
-/// the staging folder is renamed into place (over the old file of its name, if any), and
-/// each old file that the new set lacks is removed. Idempotent.
-fn finish_swap(dir: &Path, j: &Journal) -> io::Result<()> {
-    let staging = dir.join(&j.staging);
-    for name in &j.new {
-        let staged = staging.join(name);
-        if staged.exists() {
-            std::fs::rename(&staged, dir.join(name))?;
-        }
-    }
-    for name in j.old.iter().filter(|n| !j.new.contains(n)) {
-        match std::fs::remove_file(dir.join(name)) {
-            Err(e) if e.kind() != io::ErrorKind::NotFound => return Err(e),
-            _ => {}
-        }
-    }
-    crate::platform::os::sync_folder(dir);
-    let _ = std::fs::remove_dir_all(&staging);
-    Ok(())
-}
-
-/// A plain file name: no folder, not `.` or `..` (a set's files live in its folder).
-fn plain_name(name: &str) -> bool {
-    !name.is_empty() && name != "." && name != ".." && !name.contains(['/', '\\'])
-}
-
-fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&str) -> bool) -> Result<(), Stop> {
-    const UNTOUCHED: &str = "write-kept-folder";
-    step()?;
-    for (name, bytes) in &set.files {
+/// Refuses a set with a name that is not a plain file name, or whose place in `dir` holds
+/// something other than a regular file (a link stays a link: a set cannot be swapped in
+/// through one).
+fn refuse_unwritable_names(dir: &Path, set: &FileSet) -> Result<(), WriteError> {
+    for (name, _) in &set.files {
         let target = dir.join(name);
         if !plain_name(name) {
             let e = io::Error::new(io::ErrorKind::InvalidFilename, "not a plain file name");
-            return Err(WriteError::new(&target, "write-step-name", e, UNTOUCHED).into());
+            return Err(WriteError::new(&target, "write-step-name", e, UNTOUCHED));
         }
-        write_new(&staging.join(name), bytes).map_err(|(what, e)| WriteError::new(&target, what, e, UNTOUCHED))?;
-        step()?;
+        if std::fs::symlink_metadata(&target).is_ok_and(|m| !m.is_file()) {
+            let e = io::Error::new(io::ErrorKind::InvalidInput, phonglab_core::t!("write-not-a-regular-file"));
+            return Err(WriteError::new(&target, "write-step-create", e, UNTOUCHED));
+        }
     }
-    crate::platform::os::sync_folder(staging);
-    let new_names: Vec<String> = set.files.iter().map(|(n, _)| n.clone()).collect();
-    let old = old_set(dir, &new_names, belongs)?;
-    step()?;
-    let journal = Journal {
-        staging: file_name_of(staging).map_err(|e| WriteError::new(staging, "write-step-name", e, UNTOUCHED))?,
-        new: new_names,
-        old,
-    };
-    let text = serde_json::to_vec(&journal)
-        .map_err(io::Error::other)
-        .map_err(|e| WriteError::new(dir, "write-step-write", e, UNTOUCHED))?;
-    write(&dir.join(JOURNAL), &text).map_err(|e| WriteError { kept: UNTOUCHED, ..e })?;
-    step()?;
-    swap(dir, staging, &journal)?;
-    std::fs::remove_file(dir.join(JOURNAL))
-        .map_err(|e| WriteError::new(dir, "write-step-remove-journal", e, "write-kept-recoverable"))?;
-    crate::platform::os::sync_folder(dir);
-    step()?;
-    let _ = std::fs::remove_dir_all(staging);
     Ok(())
 }
 
-/// The old set in `dir`: every file the new one replaces, and every other member of it.
-fn old_set(dir: &Path, new_names: &[String], belongs: &dyn Fn(&str) -> bool) -> Result<Vec<String>, WriteError> {
+/// Finishes or throws away what a killed writer of a set left in `dir` (with a journal
+/// that has decided, the swap is finished; without, the staging folder is removed), acting
+/// only on what phonglab wrote; returns a message for each thing left as it is. Takes the
+/// folder's lock, so a writer still at work is waited for, never disturbed.
+pub fn recover(dir: &Path) -> io::Result<Vec<String>> {
+    let _lock = crate::platform::os::lock_folder(dir)?;
+    super::set_journal::recover_locked(dir)
+}
+
+fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&str) -> bool) -> Result<(), Stop> {
+    let here = std::fs::symlink_metadata(staging)
+        .map_err(|e| WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED))?;
+    let mut journal = Journal { staging: Identity::of(&here), decided: false, new: Vec::new(), old: Vec::new() };
+    write_journal(staging, &journal, false).map_err(|(what, e)| WriteError::new(dir, what, e, UNTOUCHED))?;
+    step()?;
+    for (name, bytes) in &set.files {
+        journal.new.push(
+            stage(staging, name, bytes).map_err(|(what, e)| WriteError::new(&dir.join(name), what, e, UNTOUCHED))?,
+        );
+        step()?;
+    }
+    crate::platform::os::sync_folder(staging);
+    journal.old = old_set(dir, &journal.new, belongs)?;
+    step()?;
+    journal.decided = true;
+    write_journal(staging, &journal, true).map_err(|(what, e)| WriteError::new(dir, what, e, UNTOUCHED))?;
+    step()?;
+    swap(dir, staging, &journal)?;
+    // The old files first, with the journal still there: a kill now is finished by the
+    // next run, and one after leaves an empty folder, which the next run removes.
+    std::fs::remove_dir_all(staging.join(ASIDE))
+        .and_then(|()| std::fs::remove_file(staging.join(JOURNAL)))
+        .map_err(|e| WriteError::new(dir, "write-step-remove-journal", e, "write-kept-recoverable"))?;
+    step()?;
+    let _ = std::fs::remove_dir(staging);
+    crate::platform::os::sync_folder(dir);
+    Ok(())
+}
+
+/// The old set in `dir`: every regular file the new one replaces, and every other member
+/// of it, each as the journal names it.
+fn old_set(dir: &Path, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Result<Vec<Entry>, WriteError> {
     let entries =
         std::fs::read_dir(dir).map_err(|e| WriteError::new(dir, "write-step-list", e, "write-kept-folder"))?;
     let mut old = Vec::new();
     for entry in entries.flatten() {
-        let name = entry.file_name().to_string_lossy().into_owned();
+        let Ok(name) = entry.file_name().into_string() else { continue };
         let is_file = entry.file_type().is_ok_and(|t| t.is_file());
-        if is_file && name != JOURNAL && (new_names.contains(&name) || belongs(&name)) {
-            old.push(name);
+        if is_file && plain_name(&name) && (new.iter().any(|e| e.name == name) || belongs(&name)) {
+            old.push(
+                entry_of(dir, &name).map_err(|e| WriteError::new(&dir.join(&name), "write-step-list", e, UNTOUCHED))?,
+            );
         }
     }
-    old.sort();
+    old.sort_by(|a, b| a.name.cmp(&b.name));
     Ok(old)
 }
 
-/// Step 3: the old files aside (into `staging/.old`), the new ones into place. A refused
-/// rename moves everything back (the new files into the staging folder, so a journal left
-/// by a kill during the undo still finds them) and removes the journal.
+/// Step 4: the old files aside (into the staging folder's aside folder), the new ones into
+/// place, where nothing is. A refused rename moves everything back (the new files into the
+/// staging folder, so a journal left by a kill during the undo still finds them).
 fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
-    const UNTOUCHED: &str = "write-kept-folder";
-    let aside = staging.join(".old");
+    let aside = staging.join(ASIDE);
     let mut moved_aside: Vec<&str> = Vec::new();
     let mut moved_in: Vec<&str> = Vec::new();
     let undo = |moved_aside: &[&str], moved_in: &[&str]| {
@@ -255,29 +218,27 @@ fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
             let _ = std::fs::rename(dir.join(name), staging.join(name));
         }
         for name in moved_aside {
-            let _ = std::fs::rename(aside.join(name), dir.join(name));
+            let _ = crate::platform::os::rename_no_replace(&aside.join(name), &dir.join(name));
         }
-        let _ = std::fs::remove_file(dir.join(JOURNAL));
         crate::platform::os::sync_folder(dir);
     };
     if let Err(e) = std::fs::create_dir(&aside) {
-        undo(&[], &[]);
         return Err(WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED).into());
     }
-    for name in &j.old {
-        if let Err(e) = rename(&dir.join(name), &aside.join(name)) {
+    for old in &j.old {
+        if let Err(e) = rename_no_replace(&dir.join(&old.name), &aside.join(&old.name)) {
             undo(&moved_aside, &moved_in);
-            return Err(WriteError::new(&dir.join(name), "write-step-rename", e, UNTOUCHED).into());
+            return Err(WriteError::new(&dir.join(&old.name), "write-step-rename", e, UNTOUCHED).into());
         }
-        moved_aside.push(name);
+        moved_aside.push(&old.name);
         step()?;
     }
-    for name in &j.new {
-        if let Err(e) = rename(&staging.join(name), &dir.join(name)) {
+    for new in &j.new {
+        if let Err(e) = rename_no_replace(&staging.join(&new.name), &dir.join(&new.name)) {
             undo(&moved_aside, &moved_in);
-            return Err(WriteError::new(&dir.join(name), "write-step-rename", e, UNTOUCHED).into());
+            return Err(WriteError::new(&dir.join(&new.name), "write-step-rename", e, UNTOUCHED).into());
         }
-        moved_in.push(name);
+        moved_in.push(&new.name);
         step()?;
     }
     crate::platform::os::sync_folder(dir);
@@ -313,20 +274,24 @@ mod tests {
         s
     }
 
-    /// What the folder holds for a user: its files, without the staging folders and the
-    /// journal a writer works with.
+    /// What the folder holds for a user: its files, without the staging folders a writer
+    /// works with.
     fn user_files(dir: &Path) -> Vec<(String, Vec<u8>)> {
         listing(dir).into_iter().filter(|(n, _)| !n.starts_with(".phonglab-set")).collect()
     }
 
+    /// The staging folder in `dir` and its journal, if a writer left one.
+    fn journal_in(dir: &Path) -> Option<(std::path::PathBuf, Journal)> {
+        let staging = std::fs::read_dir(dir).unwrap().flatten().map(|e| e.path()).find(|p| p.is_dir())?;
+        let j = serde_json::from_slice(&std::fs::read(staging.join(JOURNAL)).ok()?).unwrap();
+        Some((staging, j))
+    }
+
     /// The new set is whole somewhere: each of its files, with its new bytes, in place or
-    /// in the staging folder the journal names.
-    fn new_set_is_whole(dir: &Path, set: &FileSet) -> bool {
-        let j: Journal = serde_json::from_slice(&std::fs::read(dir.join(JOURNAL)).unwrap()).unwrap();
+    /// in the staging folder.
+    fn new_set_is_whole(dir: &Path, staging: &Path, set: &FileSet) -> bool {
         set.files.iter().all(|(name, bytes)| {
-            [dir.join(&j.staging).join(name), dir.join(name)]
-                .iter()
-                .any(|p| std::fs::read(p).ok().as_ref() == Some(bytes))
+            [staging.join(name), dir.join(name)].iter().any(|p| std::fs::read(p).ok().as_ref() == Some(bytes))
         })
     }
 
@@ -348,17 +313,20 @@ mod tests {
                 break;
             }
             steps += 1;
-            // At the instant of death: no journal and the old set in place, or the journal
+            // At the instant of death: the old set in place, or a journal that has decided
             // and the new set whole.
             let names = |l: &[(String, Vec<u8>)]| l.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>();
-            if dir.join(JOURNAL).exists() {
-                assert!(new_set_is_whole(&dir, &new_set()), "killed at step {n}: the journal's set is whole");
-            } else {
-                let files = user_files(&dir);
-                assert!(files == old || files == new, "killed at step {n}: no journal: {:?}", names(&files));
+            match journal_in(&dir) {
+                Some((staging, j)) if j.decided => {
+                    assert!(new_set_is_whole(&dir, &staging, &new_set()), "killed at step {n}: the set is whole");
+                }
+                _ => {
+                    let files = user_files(&dir);
+                    assert!(files == old || files == new, "killed at step {n}: not decided: {:?}", names(&files));
+                }
             }
             // The next run recovers: exactly the old set or exactly the new one, nothing else.
-            recover(&dir).unwrap();
+            assert_eq!(recover(&dir).unwrap(), Vec::<String>::new(), "killed at step {n}: nothing left alone");
             let after = listing(&dir);
             assert!(after == old || after == new, "killed at step {n}, then recovered: {:?}", names(&after));
             // And a later set is written over it as usual.
@@ -369,8 +337,8 @@ mod tests {
             let names: Vec<String> = listing(&dir).into_iter().map(|(n, _)| n).collect();
             assert_eq!(names, ["mine.txt", "z.md"], "killed twice at step {n}, then a third set");
         }
-        // Staging, each of 3 files, the old set listed, the journal, 4 moves aside, 3 in,
-        // the journal removed: 13 places to die, each tried.
+        // The journal begun, each of 3 files, the old set listed, the journal decided, 3
+        // moves aside, 3 in, the old files and the journal removed: 13 places to die.
         assert_eq!(steps, 13);
     }
 
@@ -392,11 +360,15 @@ mod tests {
             let dir = temp_dir("states");
             old_set(&dir);
             let staging = dir.join(".phonglab-set.1.0.tmp");
-            std::fs::create_dir_all(staging.join(".old")).unwrap();
+            std::fs::create_dir_all(staging.join(ASIDE)).unwrap();
+            let here = Identity::of(&std::fs::symlink_metadata(&staging).unwrap());
+            let mut j = Journal { staging: here, decided: true, new: Vec::new(), old: Vec::new() };
             for (name, bytes) in &new_set().files {
-                std::fs::write(staging.join(name), bytes).unwrap();
+                j.new.push(stage(&staging, name, bytes).unwrap());
             }
-            let aside = |n: &str| std::fs::rename(dir.join(n), staging.join(".old").join(n)).unwrap();
+            j.old = ["a.md", "b.md", "c.md"].iter().map(|n| entry_of(&dir, n).unwrap()).collect();
+            write_journal(&staging, &j, false).unwrap();
+            let aside = |n: &str| std::fs::rename(dir.join(n), staging.join(ASIDE).join(n)).unwrap();
             let move_in = |n: &str| std::fs::rename(staging.join(n), dir.join(n)).unwrap();
             for (name, s) in [("a.md", a), ("b.md", b)] {
                 match s {
@@ -414,36 +386,8 @@ mod tests {
             if c == 1 {
                 aside("c.md");
             }
-            let j = Journal {
-                staging: ".phonglab-set.1.0.tmp".into(),
-                new: vec!["a.md".into(), "b.md".into(), "d.md".into()],
-                old: vec!["a.md".into(), "b.md".into(), "c.md".into()],
-            };
-            std::fs::write(dir.join(JOURNAL), serde_json::to_vec(&j).unwrap()).unwrap();
-            recover(&dir).unwrap();
+            assert_eq!(recover(&dir).unwrap(), Vec::<String>::new(), "state {state}");
             assert!(listing(&dir) == new, "state {state} ({a}, {b}, {d}, {c}): the new set, whole, and nothing else");
-        }
-    }
-
-    #[test]
-    fn a_journal_that_names_files_outside_its_folder_is_refused_and_nothing_moves() {
-        let outside = temp_dir("journal-outside");
-        std::fs::write(outside.join("precious.txt"), "mine").unwrap();
-        for (staging, old) in [
-            (".phonglab-set.1.0.tmp", "../phonglab-atomic-journal-outside-X/precious.txt"),
-            ("../phonglab-atomic-journal-outside-X", "a.md"),
-            (".phonglab-set.1.0.tmp", "/etc/passwd"),
-        ] {
-            let pid = std::process::id().to_string();
-            let (staging, old) = (staging.replace('X', &pid), old.replace('X', &pid));
-            let dir = temp_dir("journal-hostile");
-            old_set(&dir);
-            let j = Journal { staging, new: vec!["a.md".into()], old: vec![old] };
-            std::fs::write(dir.join(JOURNAL), serde_json::to_vec(&j).unwrap()).unwrap();
-            let e = write_set(&dir, &new_set(), |n| n.ends_with(".md")).unwrap_err();
-            assert_eq!(e.what, "write-step-recover");
-            assert_eq!(std::fs::read(outside.join("precious.txt")).unwrap(), b"mine");
-            assert!(dir.join("c.md").exists(), "the folder is untouched");
         }
     }
 
@@ -467,5 +411,25 @@ mod tests {
         assert_eq!(names, ["a.md", "b.md", "d.md", "mine.txt"], "c.md went with the old set; mine.txt stays");
         assert_eq!(after[1].1, b"new b");
         assert_eq!(after[3].1, b"user");
+    }
+
+    #[test]
+    #[cfg(unix)]
+    fn a_link_or_a_folder_at_a_sets_name_refuses_the_set_and_nothing_moves() {
+        let outside = temp_dir("set-link-outside");
+        std::fs::write(outside.join("thesis.txt"), "mine").unwrap();
+        let link = |p: &Path| std::os::unix::fs::symlink(outside.join("thesis.txt"), p).unwrap();
+        let folder = |p: &Path| std::fs::create_dir(p).unwrap();
+        for make in [&link as &dyn Fn(&Path), &folder] {
+            let dir = temp_dir("set-link");
+            old_set(&dir);
+            std::fs::remove_file(dir.join("b.md")).unwrap();
+            make(&dir.join("b.md"));
+            let before = listing(&dir);
+            let e = write_set(&dir, &new_set(), |n| n.ends_with(".md")).unwrap_err();
+            assert!(e.to_string().contains("b.md") && e.to_string().contains("not a regular file"), "{e}");
+            assert_eq!(listing(&dir), before);
+            assert_eq!(std::fs::read(outside.join("thesis.txt")).unwrap(), b"mine");
+        }
     }
 }

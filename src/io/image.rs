@@ -39,7 +39,9 @@ pub fn read_png(path: &Path) -> Result<(usize, usize, Vec<u8>)> {
     let rgba = match info.color_type {
         png::ColorType::Rgba => buf,
         png::ColorType::GrayscaleAlpha => buf.chunks(2).flat_map(|c| [c[0], c[0], c[0], c[1]]).collect(),
-        other => anyhow::bail!(t!("png-colour-type", path = path.display().to_string(), kind = format!("{other:?}"))),
+        other => {
+            anyhow::bail!(t!("png-colour-type", path = crate::io::reasons::shown(path), kind = format!("{other:?}")))
+        }
     };
     Ok((w, h, rgba))
 }

@@ -18,7 +18,7 @@ pub const MAX_CASE_BYTES: u64 = 256 << 20;
 /// than `cap` bytes (`what` names the kind of file in the message, in the user's language:
 /// `t!("file-kind-scenes")`). The messages are in the current language.
 pub fn read_capped(path: &Path, cap: u64, what: &str) -> Result<Vec<u8>, String> {
-    let shown = path.display().to_string();
+    let shown = crate::io::reasons::shown(path);
     read_capped_or(path, cap).map_err(|e| match e {
         Unread::Io(e) => t!("read-cannot", path = shown.clone(), reason = crate::io::reasons::io_reason(&e)),
         Unread::NotAFile => t!("read-not-a-file", path = shown.clone()),
@@ -108,14 +108,15 @@ pub fn is_obj_name(name: &str) -> bool {
 /// names the file.
 pub fn load_scene(path: &Path) -> Result<phonglab_core::Document, String> {
     let text = read_text_capped(path, MAX_SCENE_BYTES, &t!("file-kind-scenes"))?;
-    phonglab_core::Document::from_toml_in(&text, path.parent()).map_err(|e| format!("{}: {e}", path.display()))
+    phonglab_core::Document::from_toml_in(&text, path.parent())
+        .map_err(|e| format!("{}: {e}", crate::io::reasons::shown(path)))
 }
 
 /// [`read_capped`], as UTF-8 text.
 pub fn read_text_capped(path: &Path, cap: u64, what: &str) -> Result<String, String> {
     let bytes = read_capped(path, cap, what)?;
     String::from_utf8(bytes)
-        .map_err(|e| t!("read-not-utf8", path = path.display().to_string(), byte = e.utf8_error().valid_up_to()))
+        .map_err(|e| t!("read-not-utf8", path = crate::io::reasons::shown(path), byte = e.utf8_error().valid_up_to()))
 }
 
 #[cfg(test)]

@@ -95,10 +95,11 @@ pub fn misconception_set(seed: u64, count: usize) -> Result<FileSet> {
     Ok(set)
 }
 
-/// Writes the set into the folder `dir`, whole or not at all (as the other sets are).
-pub fn write(dir: &std::path::Path, seed: u64, count: usize) -> Result<usize> {
+/// Writes the set into the folder `dir`, whole or not at all (as the other sets are): how
+/// many, and what was left as it is in the folder (see [`super::file_set::recover`]).
+pub fn write(dir: &std::path::Path, seed: u64, count: usize) -> Result<(usize, Vec<String>)> {
     super::atomic_write::check_folder_destination(dir)?;
     let set = misconception_set(seed, count)?;
-    super::file_set::write_set(dir, &set, super::exercise_set::belongs_to_a_set)?;
-    Ok(count.clamp(1, Misconception::ALL.len()))
+    let notices = super::file_set::write_set(dir, &set, super::exercise_set::belongs_to_a_set)?;
+    Ok((count.clamp(1, Misconception::ALL.len()), notices))
 }

@@ -19,6 +19,7 @@ pub mod reasons;
 pub mod same_file;
 pub mod save;
 pub mod scenes;
+pub mod set_journal;
 pub mod sheet_pdf;
 pub mod student_code;
 pub mod zip;

@@ -6,6 +6,13 @@ use std::io;
 
 use phonglab_core::t;
 
+/// A path as a message shows it: its control characters (an escape sequence, a line break,
+/// a right-to-left override in a file's name) written visibly, `\u{1B}`, so that naming a
+/// file never sends anything to the terminal but its name.
+pub fn shown(path: &std::path::Path) -> String {
+    phonglab_core::escape::terminal::text(&path.display().to_string())
+}
+
 /// Why `e` happened, for a person.
 pub fn io_reason(e: &io::Error) -> String {
     use io::ErrorKind as K;

@@ -11,13 +11,16 @@ use std::path::{Path, PathBuf};
 
 use phonglab_core::t;
 
-/// What makes a file itself: its device and inode, or its canonical path.
+/// What makes a file itself: its device and inode, or its canonical path; for a file
+/// that is not there yet, its folder's canonical path and its name (two outputs may be
+/// one file before either is written).
 #[derive(Debug, PartialEq, Eq)]
 enum FileId {
     #[cfg(unix)]
     Inode(u64, u64),
     #[cfg_attr(unix, allow(dead_code))]
     Canonical(PathBuf),
+    Named(PathBuf, std::ffi::OsString),
 }
 
 /// The identity of the file `path` leads to (following symbolic links), if it exists.
@@ -34,19 +37,74 @@ fn file_id(path: &Path) -> Option<FileId> {
     }
 }
 
+/// The identity of the file an output at `path` will be: the file there, or, where none
+/// is yet, the place it will be made (through a link, the place the link names).
+fn output_id(path: &Path) -> Option<FileId> {
+    if let Some(id) = file_id(path) {
+        return Some(id);
+    }
+    let target = crate::io::atomic_write::through_links(path).ok()?;
+    let folder = match target.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    Some(FileId::Named(std::fs::canonicalize(folder).ok()?, target.file_name()?.to_os_string()))
+}
+
+/// What an input is, for the message that refuses an output onto it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Input {
+    /// A file the command reads, without a more particular name.
+    Any,
+    /// A scene file.
+    Scene,
+    /// A mesh (OBJ) that a scene or `--obj` names.
+    Mesh,
+    /// A notebook or Python script.
+    Code,
+    /// A case file (glref JSON).
+    Cases,
+}
+
+impl Input {
+    /// "the scene", "the mesh"... in the current language.
+    fn words(self) -> String {
+        match self {
+            Input::Any => t!("input-kind-input"),
+            Input::Scene => t!("input-kind-scene"),
+            Input::Mesh => t!("input-kind-mesh"),
+            Input::Code => t!("input-kind-code"),
+            Input::Cases => t!("input-kind-cases"),
+        }
+    }
+}
+
 /// Refuses when an output in `outputs` is the same file as an input in `inputs`, naming
 /// both (in the current language). Paths that do not exist are never the same file.
 pub fn refuse_output_onto_input(outputs: &[&Path], inputs: &[&Path]) -> Result<(), String> {
-    for output in outputs {
-        let Some(out_id) = file_id(output) else { continue };
-        for input in inputs {
-            if file_id(input).is_some_and(|id| id == out_id) {
+    let inputs: Vec<(&Path, Input)> = inputs.iter().map(|p| (*p, Input::Any)).collect();
+    refuse_onto(outputs, &inputs)
+}
+
+/// Refuses when an output in `outputs` is the same file as an input in `inputs` (each
+/// said as what it is: "the mesh"), or as another of the outputs ("the other output").
+pub fn refuse_onto(outputs: &[&Path], inputs: &[(&Path, Input)]) -> Result<(), String> {
+    use crate::io::reasons::shown;
+    for (k, output) in outputs.iter().enumerate() {
+        let out_id = file_id(output);
+        for (input, kind) in inputs {
+            if out_id.is_some() && file_id(input) == out_id {
                 return Err(t!(
                     "err-output-is-input",
-                    output = output.display().to_string(),
-                    input = input.display().to_string()
+                    output = shown(output),
+                    what = kind.words(),
+                    input = shown(input)
                 ));
             }
+        }
+        let Some(id) = output_id(output) else { continue };
+        if let Some(other) = outputs[..k].iter().find(|o| output_id(o).as_ref() == Some(&id)) {
+            return Err(t!("err-output-is-other-output", output = shown(output), other = shown(other)));
         }
     }
     Ok(())
@@ -54,10 +112,10 @@ pub fn refuse_output_onto_input(outputs: &[&Path], inputs: &[&Path]) -> Result<(
 
 /// [`refuse_output_onto_input`] for the files a command writes into the folder `dir`
 /// (`names`, without folders).
-pub fn refuse_outputs_in_folder(dir: &Path, names: &[&str], inputs: &[&Path]) -> Result<(), String> {
+pub fn refuse_outputs_in_folder(dir: &Path, names: &[&str], inputs: &[(&Path, Input)]) -> Result<(), String> {
     let outputs: Vec<PathBuf> = names.iter().map(|n| dir.join(n)).collect();
     let outputs: Vec<&Path> = outputs.iter().map(PathBuf::as_path).collect();
-    refuse_output_onto_input(&outputs, inputs)
+    refuse_onto(&outputs, inputs)
 }
 
 #[cfg(test)]
@@ -84,7 +142,22 @@ mod tests {
         assert!(!refused(&dir.join("new.png")), "a file that does not exist yet");
         std::fs::write(dir.join("other.toml"), "name = \"x\"").unwrap();
         assert!(!refused(&dir.join("other.toml")), "another file with the same bytes");
-        let e = refuse_outputs_in_folder(&dir, &["a.md", "in.toml"], &[input.as_path()]).unwrap_err();
-        assert!(e.contains("in.toml"), "{e}");
+        let e = refuse_outputs_in_folder(&dir, &["a.md", "in.toml"], &[(input.as_path(), Input::Scene)]).unwrap_err();
+        assert!(e.contains("in.toml") && e.contains("is the scene"), "{e}");
+    }
+
+    #[test]
+    fn two_outputs_that_are_one_file_are_refused_before_either_exists() {
+        let dir = std::env::temp_dir().join(format!("phonglab-same-output-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("sub")).unwrap();
+        let (a, b) = (dir.join("pic.png"), dir.join("sub/../pic.png"));
+        let e = refuse_onto(&[&a, &b], &[]).unwrap_err();
+        assert!(e.contains("the other output") && e.contains("the same file"), "{e}");
+        assert!(refuse_onto(&[&a, &dir.join("pic.pfm")], &[]).is_ok());
+        let mesh = dir.join("m.obj");
+        std::fs::write(&mesh, "v 0 0 0").unwrap();
+        let e = refuse_onto(&[&a, &mesh], &[(mesh.as_path(), Input::Mesh)]).unwrap_err();
+        assert!(e.contains("is the mesh"), "{e}");
     }
 }

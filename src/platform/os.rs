@@ -52,6 +52,86 @@ pub fn open_to_read(path: &Path) -> io::Result<File> {
     }
 }
 
+/// Opens `path` to read without following a symbolic link at its last component and
+/// without waiting (Unix: `O_NOFOLLOW | O_NONBLOCK`): for files phonglab itself wrote into
+/// a folder that others may have planted things in (a set's journal), where a link is never
+/// phonglab's. The caller checks what was opened through the handle.
+pub fn open_no_follow(path: &Path) -> io::Result<File> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        File::options().read(true).custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK).open(path)
+    }
+    #[cfg(not(unix))]
+    {
+        if std::fs::symlink_metadata(path)?.file_type().is_symlink() {
+            return Err(io::Error::new(io::ErrorKind::InvalidInput, "a symbolic link"));
+        }
+        File::open(path)
+    }
+}
+
+/// Renames `from` to `to` only when nothing is at `to` (not even a link): an error
+/// `AlreadyExists` otherwise, and nothing moves (Linux: `renameat2` with `RENAME_NOREPLACE`;
+/// where the file system refuses that flag, and elsewhere, a check then a rename, which
+/// only another process writing into the folder at the same instant could race).
+pub fn rename_no_replace(from: &Path, to: &Path) -> io::Result<()> {
+    #[cfg(target_os = "linux")]
+    {
+        use std::os::unix::ffi::OsStrExt;
+        let c = |p: &Path| std::ffi::CString::new(p.as_os_str().as_bytes()).map_err(io::Error::other);
+        let (f, t) = (c(from)?, c(to)?);
+        // SAFETY: both are valid NUL-terminated paths that live through the call.
+        let r =
+            unsafe { libc::renameat2(libc::AT_FDCWD, f.as_ptr(), libc::AT_FDCWD, t.as_ptr(), libc::RENAME_NOREPLACE) };
+        if r == 0 {
+            return Ok(());
+        }
+        let e = io::Error::last_os_error();
+        if !matches!(e.raw_os_error(), Some(libc::EINVAL) | Some(libc::ENOSYS)) {
+            return Err(e);
+        }
+    }
+    if std::fs::symlink_metadata(to).is_ok() {
+        return Err(io::Error::new(io::ErrorKind::AlreadyExists, "a file is already there"));
+    }
+    std::fs::rename(from, to)
+}
+
+/// What makes a file itself where the system says it: its device and inode (Unix), which a
+/// rename keeps and which no one can choose for a file they plant; `(0, 0)` elsewhere.
+pub fn file_identity(meta: &std::fs::Metadata) -> (u64, u64) {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        (meta.dev(), meta.ino())
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = meta;
+        (0, 0)
+    }
+}
+
+/// Is the process `pid` still running (on this machine)? Where the system cannot say, it
+/// is taken to be running, so its files are left alone.
+pub fn process_alive(pid: u32) -> bool {
+    #[cfg(unix)]
+    {
+        let Ok(pid) = libc::pid_t::try_from(pid) else { return true };
+        // SAFETY: signal 0 sends nothing; it only asks whether the process exists.
+        if unsafe { libc::kill(pid, 0) } == 0 {
+            return true;
+        }
+        io::Error::last_os_error().raw_os_error() != Some(libc::ESRCH)
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = pid;
+        true
+    }
+}
+
 /// The memory the system says is available to a new allocation, in bytes (Linux:
 /// `MemAvailable` in `/proc/meminfo`); `None` where it does not say.
 pub fn available_memory() -> Option<u64> {

@@ -31,6 +31,18 @@ pub fn with_pool<R: Send>(threads: usize, work: impl FnOnce() -> R + Send) -> Re
     }
 }
 
+/// The threads a `--threads` asks for, checked: at most as many as the machine runs at
+/// once (`0`, or none asked: one per core). More would only cost memory and time (a
+/// hundred thousand threads each with its stack), so they are refused, saying the most.
+pub fn asked(threads: Option<usize>) -> Result<usize, String> {
+    let most = std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get);
+    match threads {
+        Some(n) if n > most => Err(phonglab_core::t!("err-threads", asked = n, most = most)),
+        Some(n) => Ok(n),
+        None => Ok(0),
+    }
+}
+
 /// Whether work started with [`run_in_background`] runs beside the window (true on the
 /// desktop) or before the next frame (the browser).
 pub const BACKGROUND: bool = cfg!(not(target_arch = "wasm32"));

@@ -33,6 +33,13 @@ things-to-try-own-none = Your own experiments can be added in the desktop app.
 experiment-no-text = it has no [text.en], [text.pt-PT] or [text.pt-BR]
 experiment-no-scene = no scene named { $scene } (a shipped scene, or a .toml file beside the experiment)
 experiment-no-control = no control is labelled by the message “{ $control }” (give a label’s id, such as light-z or material-shininess)
+experiment-scene-refused = the scene { $scene } is not read: { $why }
+experiment-scene-not-beside = an experiment names a shipped scene (such as worksheet-mview1) or a scene file beside it by its name alone (such as my-scene.toml), not a folder, a path or a link
+experiment-scene-error = the scene { $scene } does not load: { $error }
+experiment-changes-refused = its [changes] laid over the scene { $scene } do not give a scene: { $error }
+experiment-folder-full = not read: the experiments folder is read for at most { $most } in all, its scenes included
+experiment-too-many = not read: at most { $most } experiments are read from the folder
+file-kind-experiments = experiment files
 panels-heading = Panels and windows
 arithmetic-heading = Arithmetic
 file-menu-hover = The scene file, export, undo and redo
@@ -653,6 +660,7 @@ export-target-notebook = Jupyter notebook (the worksheet's)
 export-target-pyopengl = Python program (PyOpenGL + GLUT)
 export-target-openframeworks = openFrameworks app (ofApp.h, ofApp.cpp, main.cpp)
 export-target-glsl = GLSL shaders
+notebook-refused = the notebook is not written for this scene: explain takes a limit here ({ $reason }), and the notebook's NumPy would print nan or stop instead; export it as a PyOpenGL program, or change the scene
 nb-title =
     # Computing a vertex's colour with OpenGL lighting
 
@@ -801,6 +809,14 @@ budget-what-render = a { $width } x { $height } picture of { $count ->
        *[other] { $triangles } triangles
     }
 budget-what-window = the window at { $width } x { $height } pixels
+budget-what-cost = the study of { $count ->
+    [one] one object
+   *[other] { $count } objects
+} at { $size } x { $size } pixels
+budget-what-eval = lighting { $count ->
+    [one] one case of { $largest }
+   *[other] { $count } cases, one at a time, the largest { $largest }
+} of JSON
 file-kind-code = notebooks and scripts
 cli-export = Write a scene as the student's own code: the worksheet's notebook, a PyOpenGL program, an openFrameworks app, or the GLSL
 cli-import = Read a worksheet-style notebook (.ipynb) or Python script (.py) into a scene file
@@ -930,9 +946,8 @@ session-other-window = Another phonglab window is open on this session ({ $dir }
 session-folder-unusable = The session folder { $dir } cannot be used ({ $error }): this window will not save its session.
 session-file-is-folder = The session file { $path } is a folder, so the last session cannot be read and this window will not save its session. Remove or rename that folder.
 session-unreadable-kept = The saved session could not be read ({ $why }); starting on the worksheet. The file is kept as { $kept }.
-session-unreadable-not-kept = The saved session { $path } could not be read ({ $why }) nor set aside ({ $error }); starting on the worksheet.
+session-unreadable-not-kept = The saved session { $path } could not be read ({ $why }) nor set aside ({ $error }); it is left as it is, never written over: starting on the worksheet, and this window keeps its session in { $instead }.
 session-unreadable = The saved session could not be read ({ $why }).
-session-unreadable-at = The saved session { $path } could not be read ({ $error }).
 session-not-a-file = it is not a regular file: a pipe, a device or a socket
 session-too-large = it is { $size }, and a session is at most { $cap }
 session-scene-kept = The scene is kept in { $path }.
@@ -1116,6 +1131,16 @@ write-kept-file = the file there before (if any) is unchanged
 write-kept-nothing = nothing was written
 write-kept-folder = the folder is unchanged
 write-kept-recoverable = the old set or the new one is whole, and the next run in this folder finishes what was started
+write-not-a-regular-file = not a regular file (a link to nothing, a folder, a device or a pipe): phonglab writes only a regular file or a new one
+set-left-alone = { $name } in { $dir } was left as it is: { $why }
+set-why-loose-journal = a journal phonglab did not write there (planted, or left by an older phonglab); nothing it names was touched
+set-why-not-a-folder = it is named like phonglab's staging folders but is not a folder phonglab made; nothing was followed or touched
+set-why-no-journal = a folder named like phonglab's staging folders, without phonglab's journal; nothing in it was touched
+set-untrusted-journal = its journal is not one phonglab wrote there ({ $why }); nothing was touched
+set-why-not-a-journal = it is not a journal of phonglab's
+set-why-other-folder = it names not the folder it is in
+set-why-outside = it names files outside its folder
+set-why-unfinished = a stopped run's files could not be put in place without replacing files changed or made since ({ $names }); its new files are kept in that folder
 read-cannot = cannot read { $path }: { $reason }
 read-not-a-file = { $path } is not a regular file
 read-too-large = { $path } is { $size }; phonglab reads { $what } of at most { $cap }
@@ -1128,6 +1153,12 @@ png-colour-type = { $path }: unexpected colour type { $kind }
 pdf-cannot-write = cannot write the PDF: { $error }
 err-scale = --scale { $scale }: from 0.5 to 4
 err-spin = --spin must be a finite number of degrees
+err-threads = --threads { $asked }: this machine runs at most { $most } threads at once; ask for { $most } or fewer (0: one per core)
+err-no-such-light = --light { $light }: { $count ->
+    [0] the scene has no light
+    [one] the scene has one light, number 0
+   *[other] the scene has { $count } lights, numbered 0 to { $last }
+}
 err-study-stopped = the study stopped
 err-rules = --rules { $value }: try worksheet or opengl
 err-effects = --effects: { $value } is not one of { $names }
@@ -1144,7 +1175,13 @@ err-bench-shading = --shading { $value }: the shadings are gouraud, phong and fl
 err-bench-slices = --slices { $value }: the sphere takes 3 to 2048 slices (the benchmark's is 50)
 err-bench-scan = --scan { $value }: the scan-like mesh takes levels 0 to 9 (8 gives 1 310 720 triangles)
 err-study-timeout = the study did not finish in 5 minutes
-err-output-is-input = { $output } is the input { $input } (the same file): writing it would destroy what is read; choose another output
+err-output-is-input = { $output } is { $what } { $input }, which this command reads (the same file): writing it would destroy what is read; choose another output
+err-output-is-other-output = { $output } is the other output { $other } (the same file): one would be written over the other; choose two different files
+input-kind-input = the input
+input-kind-scene = the scene
+input-kind-mesh = the mesh
+input-kind-code = the notebook or script
+input-kind-cases = the case file
 err-needs-window = this command draws the window: run it with the phonglab program
 screenshot-summary = { $path }: { $width }x{ $height } px; pictures { $pictures } points, the plot's unit circle { $circle } points across, { $empty } % empty
 screenshot-none = none

@@ -33,6 +33,13 @@ things-to-try-own-none = Seus próprios experimentos podem ser adicionados no ap
 experiment-no-text = não tem [text.en], [text.pt-PT] nem [text.pt-BR]
 experiment-no-scene = nenhuma cena chamada { $scene } (uma cena incluída, ou um arquivo .toml ao lado do experimento)
 experiment-no-control = nenhum controle tem como rótulo a mensagem “{ $control }” (indique o id de um rótulo, como light-z ou material-shininess)
+experiment-scene-refused = a cena { $scene } não é lida: { $why }
+experiment-scene-not-beside = um experimento nomeia uma cena incluída (como worksheet-mview1) ou um arquivo de cena ao lado dele só pelo nome (como minha-cena.toml), não uma pasta, um caminho ou um link
+experiment-scene-error = a cena { $scene } não carrega: { $error }
+experiment-changes-refused = as [changes] dele, postas sobre a cena { $scene }, não dão uma cena: { $error }
+experiment-folder-full = não lido: da pasta dos experimentos se lê no máximo { $most } no total, contando as cenas
+experiment-too-many = não lido: leem-se no máximo { $most } experimentos da pasta
+file-kind-experiments = arquivos de experimentos
 panels-heading = Painéis e janelas
 arithmetic-heading = Aritmética
 file-menu-hover = O arquivo da cena, exportar, desfazer e refazer
@@ -653,6 +660,7 @@ export-target-notebook = Notebook Jupyter (o da ficha)
 export-target-pyopengl = Programa em Python (PyOpenGL + GLUT)
 export-target-openframeworks = App openFrameworks (ofApp.h, ofApp.cpp, main.cpp)
 export-target-glsl = Shaders GLSL
+notebook-refused = o notebook não é escrito para esta cena: o explain toma aqui um limite ({ $reason }), e o NumPy do notebook imprimiria nan ou pararia; exporte-a como programa PyOpenGL, ou mude a cena
 nb-title =
     # Cálculo da cor dos vértices com iluminação em OpenGL atual
 
@@ -801,6 +809,14 @@ budget-what-render = uma imagem de { $width } x { $height } com { $count ->
        *[other] { $triangles } triângulos
     }
 budget-what-window = a janela a { $width } x { $height } pixels
+budget-what-cost = o estudo de { $count ->
+    [one] um objeto
+   *[other] { $count } objetos
+} em { $size } x { $size } pixels
+budget-what-eval = iluminar { $count ->
+    [one] um caso de { $largest }
+   *[other] { $count } casos, um de cada vez, o maior com { $largest }
+} de JSON
 file-kind-code = notebooks e programas
 cli-export = Escrever uma cena como o código do próprio aluno: o notebook da ficha, um programa PyOpenGL, um app openFrameworks, ou o GLSL
 cli-import = Ler um notebook (.ipynb) ou programa em Python (.py) no estilo da ficha para um arquivo de cena
@@ -930,9 +946,8 @@ session-other-window = Outra janela do phonglab está aberta nesta sessão ({ $d
 session-folder-unusable = A pasta da sessão { $dir } não pode ser usada ({ $error }): esta janela não guardará a sua sessão.
 session-file-is-folder = O arquivo da sessão { $path } é uma pasta, por isso a última sessão não pode ser lida e esta janela não salvará a sua sessão. Remova ou renomeie essa pasta.
 session-unreadable-kept = A sessão salva não pôde ser lida ({ $why }); começa-se pela ficha. O arquivo fica salvo como { $kept }.
-session-unreadable-not-kept = A sessão salva { $path } não pôde ser lida ({ $why }) nem posta de lado ({ $error }); começa-se pela ficha.
+session-unreadable-not-kept = A sessão salva { $path } não pôde ser lida ({ $why }) nem posta de lado ({ $error }); ela fica como está, sem nunca ser sobrescrita: começa-se pela ficha, e esta janela salva a sua sessão em { $instead }.
 session-unreadable = A sessão salva não pôde ser lida ({ $why }).
-session-unreadable-at = A sessão salva { $path } não pôde ser lida ({ $error }).
 session-not-a-file = não é um arquivo comum: um pipe, um dispositivo ou um socket
 session-too-large = tem { $size }, e uma sessão tem no máximo { $cap }
 session-scene-kept = A cena fica salva em { $path }.
@@ -1116,6 +1131,16 @@ write-kept-file = o arquivo que estava lá (se havia) não mudou
 write-kept-nothing = nada foi escrito
 write-kept-folder = a pasta não mudou
 write-kept-recoverable = o conjunto antigo ou o novo está completo, e a próxima execução nesta pasta termina o que foi começado
+write-not-a-regular-file = não é um arquivo comum (um link para nada, uma pasta, um dispositivo ou um pipe): o phonglab só escreve em um arquivo comum ou em um novo
+set-left-alone = { $name } em { $dir } ficou como estava: { $why }
+set-why-loose-journal = um diário que o phonglab não escreveu ali (colocado por alguém, ou deixado por uma versão antiga do phonglab); nada do que ele nomeia foi tocado
+set-why-not-a-folder = tem o nome das pastas temporárias do phonglab, mas não é uma pasta criada pelo phonglab; nada foi seguido nem tocado
+set-why-no-journal = uma pasta com o nome das pastas temporárias do phonglab, sem o diário do phonglab; nada do que ela contém foi tocado
+set-untrusted-journal = o diário dela não foi escrito ali pelo phonglab ({ $why }); nada foi tocado
+set-why-not-a-journal = não é um diário do phonglab
+set-why-other-folder = não nomeia a pasta onde está
+set-why-outside = nomeia arquivos fora da sua pasta
+set-why-unfinished = os arquivos de uma execução interrompida não puderam ser colocados no lugar sem substituir arquivos alterados ou criados depois ({ $names }); os novos ficam guardados nessa pasta
 read-cannot = não foi possível ler { $path }: { $reason }
 read-not-a-file = { $path } não é um arquivo comum
 read-too-large = { $path } tem { $size }; o phonglab lê { $what } de no máximo { $cap }
@@ -1128,6 +1153,12 @@ png-colour-type = { $path }: tipo de cor inesperado { $kind }
 pdf-cannot-write = não foi possível escrever o PDF: { $error }
 err-scale = --scale { $scale }: de 0,5 a 4
 err-spin = --spin precisa ser um número finito de graus
+err-threads = --threads { $asked }: esta máquina roda no máximo { $most } threads ao mesmo tempo; peça { $most } ou menos (0: uma por núcleo)
+err-no-such-light = --light { $light }: { $count ->
+    [0] a cena não tem nenhuma luz
+    [one] a cena tem uma luz, a número 0
+   *[other] a cena tem { $count } luzes, numeradas de 0 a { $last }
+}
 err-study-stopped = o estudo parou
 err-rules = --rules { $value }: experimente worksheet ou opengl
 err-effects = --effects: { $value } não é nenhum de { $names }
@@ -1144,7 +1175,13 @@ err-bench-shading = --shading { $value }: os sombreamentos são gouraud, phong e
 err-bench-slices = --slices { $value }: a esfera aceita de 3 a 2048 fatias (a de referência tem 50)
 err-bench-scan = --scan { $value }: a malha tipo escaneamento aceita níveis de 0 a 9 (o 8 dá 1 310 720 triângulos)
 err-study-timeout = o estudo não terminou em 5 minutos
-err-output-is-input = { $output } é a entrada { $input } (o mesmo arquivo): escrevê-lo destruiria o que é lido; escolha outra saída
+err-output-is-input = { $output } é { $what } { $input }, que este comando lê (o mesmo arquivo): escrevê-lo destruiria o que é lido; escolha outra saída
+err-output-is-other-output = { $output } é a outra saída { $other } (o mesmo arquivo): uma seria escrita por cima da outra; escolha dois arquivos diferentes
+input-kind-input = a entrada
+input-kind-scene = a cena
+input-kind-mesh = a malha
+input-kind-code = o notebook ou programa
+input-kind-cases = o arquivo de casos
 err-needs-window = este comando desenha a janela: execute-o com o programa phonglab
 screenshot-summary = { $path }: { $width }x{ $height } px; imagens de { $pictures } pontos, o círculo unitário do gráfico com { $circle } pontos de diâmetro, { $empty } % vazio
 screenshot-none = nenhum

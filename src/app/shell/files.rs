@@ -143,9 +143,9 @@ fn refuse(state: &mut AppState, why: String) {
 /// Saves the current scene, and says where (or why not).
 pub fn save(state: &mut AppState, path: &Path) {
     // The scene's mesh is read from its file: saving the scene over it would lose it.
-    let mesh: Vec<&Path> = state.doc.view.obj.iter().map(Path::new).collect();
-    let written =
-        crate::io::same_file::refuse_output_onto_input(&[path], &mesh).and_then(|()| write_document(&state.doc, path));
+    let mesh: Vec<(&Path, crate::io::same_file::Input)> =
+        state.doc.view.obj.iter().map(|m| (Path::new(m), crate::io::same_file::Input::Mesh)).collect();
+    let written = crate::io::same_file::refuse_onto(&[path], &mesh).and_then(|()| write_document(&state.doc, path));
     state.message = Some(match written {
         Ok(()) => Message::Info(t!("saved", path = path.display().to_string())),
         Err(e) => Message::Refused(t!("not-saved", error = e)),

@@ -114,21 +114,23 @@ pub fn empty_share(
 /// Takes the picture `shot` asks for and writes it (`phonglab screenshot`).
 pub fn run(a: &Shot) -> Result<()> {
     if !(0.5..=4.0).contains(&a.scale) {
-        bail!(phonglab_core::t!("err-scale", scale = phonglab_core::locale::decimal(&a.scale.to_string())));
+        bail!(phonglab_core::t!("err-scale", scale = phonglab_core::locale::exact(f64::from(a.scale))));
     }
     let (pw, ph) = ((a.size.0 as f32 * a.scale).round() as u32, (a.size.1 as f32 * a.scale).round() as u32);
     let needed = crate::io::budget::window_picture_bytes(u64::from(a.size.0), u64::from(a.size.1), f64::from(a.scale));
     crate::io::budget::check(&phonglab_core::t!("budget-what-window", width = pw, height = ph), needed)
         .map_err(anyhow::Error::msg)?;
-    let scene: Vec<&std::path::Path> = a.scene.iter().map(PathBuf::as_path).collect();
-    crate::io::same_file::refuse_output_onto_input(&[&a.output], &scene).map_err(anyhow::Error::msg)?;
+    use crate::io::same_file::{Input, refuse_onto};
+    let scene: Vec<(&std::path::Path, Input)> = a.scene.iter().map(|p| (p.as_path(), Input::Scene)).collect();
+    refuse_onto(&[&a.output], &scene).map_err(anyhow::Error::msg)?;
     crate::io::atomic_write::check_file_destination(&a.output)?;
     let doc = match &a.scene {
         Some(p) => crate::io::input_file::load_scene(p).map_err(anyhow::Error::msg)?,
         None => phonglab_core::Document::default(),
     };
-    let mesh: Vec<&std::path::Path> = doc.view.obj.iter().map(std::path::Path::new).collect();
-    crate::io::same_file::refuse_output_onto_input(&[&a.output], &mesh).map_err(anyhow::Error::msg)?;
+    let mesh: Vec<(&std::path::Path, Input)> =
+        doc.view.obj.iter().map(|m| (std::path::Path::new(m), Input::Mesh)).collect();
+    refuse_onto(&[&a.output], &mesh).map_err(anyhow::Error::msg)?;
     let state = state_for(doc, a.present, a.light, a.open);
     let (w, h) = (a.size.0 as f32, a.size.1 as f32);
     let (pw, ph, rgba, state) = take(state, w, h, a.scale);

@@ -10,10 +10,12 @@
 //! the session but never writes it, and says so.
 //!
 //! What can go wrong at the start, each said in the window and in the log:
-//! - `session.ron` does not parse, is not a regular file (a FIFO, a link to a device: it
-//!   is opened without blocking, so neither hangs the start) or is larger than
-//!   [`MAX_SESSION_BYTES`]: it is renamed `session-unreadable-<time>.ron`, and the window
-//!   starts on the worksheet;
+//! - `session.ron` does not parse, cannot be read (no permission, a loop of links), is not
+//!   a regular file (a FIFO, a link to a device: it is opened without blocking, so neither
+//!   hangs the start) or is larger than [`MAX_SESSION_BYTES`]: it is renamed
+//!   `session-unreadable-<time>.ron`, and the window starts on the worksheet; where it
+//!   cannot be renamed, it is never written over: this window keeps its session in a new
+//!   `session-<time>.ron` instead, and says so;
 //! - the scene in it does not load: the text is kept in `phonglab-unreadable-<time>.toml`;
 //! - its mesh file has moved: the scene is kept, shown on the sphere, and the message names
 //!   the missing file;
@@ -54,6 +56,9 @@ enum Owner {
 #[derive(Debug)]
 pub struct Session {
     dir: Option<PathBuf>,
+    /// The session file's name in `dir`: [`SESSION_FILE`], or another where that one could
+    /// be neither read nor set aside.
+    file: String,
     values: BTreeMap<String, String>,
     owner: Owner,
     /// The text last written or read, so an unchanged session is not written again.
@@ -75,7 +80,13 @@ fn fresh_path(dir: &Path, stem: &str, ext: &str) -> PathBuf {
 impl Session {
     /// A session that is neither read nor written (tests, and a machine with no storage).
     pub fn in_memory() -> Self {
-        Session { dir: None, values: BTreeMap::new(), owner: Owner::ReadOnly("no storage folder".into()), saved: None }
+        Session {
+            dir: None,
+            file: SESSION_FILE.into(),
+            values: BTreeMap::new(),
+            owner: Owner::ReadOnly("no storage folder".into()),
+            saved: None,
+        }
     }
 
     /// A session read from `text` (the browser's, kept in `localStorage`), with what the user
@@ -102,6 +113,7 @@ impl Session {
         let mut notices = Vec::new();
         let mut session = Session {
             dir: Some(dir.to_path_buf()),
+            file: SESSION_FILE.into(),
             values: BTreeMap::new(),
             owner: Owner::ReadOnly(String::new()),
             saved: None,
@@ -143,28 +155,38 @@ impl Session {
                 size = phonglab_core::mesh::obj::describe_bytes(size),
                 cap = phonglab_core::mesh::obj::describe_bytes(MAX_SESSION_BYTES)
             )),
-            Err(Unread::Io(e)) => {
-                notices.push(t!("session-unreadable-at", path = path.display().to_string(), error = e.to_string()));
-                None
-            }
+            // Unreadable by this user (mode 000), a loop of links...: kept, never written over.
+            Err(Unread::Io(e)) => Some(crate::io::reasons::io_reason(&e)),
         };
         if let Some(why) = unreadable {
-            notices.push(session.set_aside(&path, &why));
+            let said = session.set_aside(&path, &why);
+            notices.push(said);
         }
         (session, notices)
     }
 
     /// Moves an unreadable session file (`why`) aside as `session-unreadable-<time>.ron`,
-    /// when this window owns the session, and says so; the window starts fresh.
-    fn set_aside(&self, path: &Path, why: &str) -> String {
-        let Some(dir) = self.dir.as_deref().filter(|_| self.may_write()) else {
+    /// when this window owns the session, and says so; the window starts fresh. Where it
+    /// cannot be moved, it is left as it is and never written over: this window's session
+    /// goes to a new file, which the message names.
+    fn set_aside(&mut self, path: &Path, why: &str) -> String {
+        use crate::io::reasons::shown;
+        let Some(dir) = self.dir.clone().filter(|_| self.may_write()) else {
             return t!("session-unreadable", why = why);
         };
-        let kept = fresh_path(dir, "session-unreadable", "ron");
-        match std::fs::rename(path, &kept) {
-            Ok(()) => t!("session-unreadable-kept", why = why, kept = kept.display().to_string()),
+        let kept = fresh_path(&dir, "session-unreadable", "ron");
+        match crate::io::atomic_write::rename_no_replace(path, &kept) {
+            Ok(()) => t!("session-unreadable-kept", why = why, kept = shown(&kept)),
             Err(e) => {
-                t!("session-unreadable-not-kept", path = path.display().to_string(), why = why, error = e.to_string())
+                let instead = fresh_path(&dir, "session", "ron");
+                self.file = instead.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+                t!(
+                    "session-unreadable-not-kept",
+                    path = shown(path),
+                    why = why,
+                    error = crate::io::reasons::io_reason(&e),
+                    instead = shown(&instead)
+                )
             }
         }
     }
@@ -194,7 +216,7 @@ impl Session {
 
     /// Where the session is kept, when it is kept anywhere.
     pub fn path(&self) -> Option<PathBuf> {
-        self.dir.as_ref().map(|d| d.join(SESSION_FILE))
+        self.dir.as_ref().map(|d| d.join(&self.file))
     }
 
     /// The storage folder.
@@ -447,6 +469,55 @@ mod tests {
         s.set("k", "v".into());
         assert_eq!(s.save(), Ok(false), "not written into a folder's place");
         assert!(dir.join(SESSION_FILE).is_dir());
+    }
+
+    /// Issue 54, 2: a session this user cannot read (mode 000; as root, which reads any
+    /// mode, a loop of links stands for it) is set aside, not written over at exit.
+    #[test]
+    #[cfg(unix)]
+    fn a_session_the_system_cannot_read_is_set_aside_not_written_over() {
+        use std::os::unix::fs::PermissionsExt;
+        let mut made: Vec<&str> = vec!["loop"];
+        // SAFETY: geteuid only reads the process's user id.
+        if unsafe { libc::geteuid() } != 0 {
+            made.push("mode 000");
+        }
+        for how in made {
+            let dir = temp_dir(&format!("cannot-read-{}", how.replace(' ', "-")));
+            if how == "loop" {
+                std::os::unix::fs::symlink(SESSION_FILE, dir.join(SESSION_FILE)).unwrap();
+            } else {
+                std::fs::write(dir.join(SESSION_FILE), "{\"k\": \"the lesson\"}").unwrap();
+                std::fs::set_permissions(dir.join(SESSION_FILE), std::fs::Permissions::from_mode(0o000)).unwrap();
+            }
+            let (mut s, notices) = Session::open(&dir);
+            let all = notices.join(" ");
+            assert!(all.contains("session-unreadable-"), "{how}: {all}");
+            assert!(std::fs::symlink_metadata(dir.join(SESSION_FILE)).is_err(), "{how}: set aside");
+            let kept = files(&dir).into_iter().find(|n| n.starts_with("session-unreadable-")).unwrap();
+            assert!(std::fs::symlink_metadata(dir.join(&kept)).is_ok(), "{how}: kept");
+            s.set("k", "v".into());
+            assert_eq!(s.save(), Ok(true), "{how}");
+        }
+    }
+
+    /// Where the unreadable session cannot be set aside, it is left as it is, and the
+    /// window's session goes to another file, which the message names.
+    #[test]
+    #[cfg(unix)]
+    fn an_unreadable_session_that_cannot_be_set_aside_is_left_and_the_session_goes_elsewhere() {
+        use crate::io::atomic_write::{Fault, with_fault};
+        let dir = temp_dir("not-aside");
+        std::fs::write(dir.join(SESSION_FILE), "not ron at all {").unwrap();
+        let (mut s, notices) = with_fault(Fault::OnRename(0), || Session::open(&dir));
+        let all = notices.join(" ");
+        let instead = s.path().unwrap();
+        assert_ne!(instead, dir.join(SESSION_FILE));
+        assert!(all.contains("nor set aside") && all.contains(&instead.display().to_string()), "{all}");
+        s.set("k", "v".into());
+        assert_eq!(s.save(), Ok(true));
+        assert_eq!(std::fs::read(dir.join(SESSION_FILE)).unwrap(), b"not ron at all {", "never written over");
+        assert!(std::fs::read_to_string(&instead).unwrap().contains("\"k\""));
     }
 
     #[test]

@@ -50,6 +50,9 @@ pub type File = (String, String);
 pub fn files(doc: &Document, target: Target) -> Result<Vec<File>, String> {
     doc.scene.validate().map_err(|e| e.to_string())?;
     let key = key(doc);
+    if let Some(why) = (target == Target::Notebook).then(|| notebook::refusal(doc)).flatten() {
+        return Err(why);
+    }
     Ok(match target {
         Target::Notebook => vec![("vertex_color_calculator.ipynb".into(), notebook::notebook(doc, &key))],
         Target::PyOpenGl => vec![("phong_scene.py".into(), pyopengl::program(doc, &shaded_key(doc))?)],
@@ -84,6 +87,9 @@ pub fn shaded_key(doc: &Document) -> Key {
 pub fn copy_text(doc: &Document, target: Target) -> Result<String, String> {
     if target == Target::Notebook {
         doc.scene.validate().map_err(|e| e.to_string())?;
+        if let Some(why) = notebook::refusal(doc) {
+            return Err(why);
+        }
         return Ok(notebook::script(&notebook::cells(doc, &key(doc))));
     }
     let written = files(doc, target)?;

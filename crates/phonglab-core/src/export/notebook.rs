@@ -29,6 +29,17 @@ pub enum Cell {
     Code(String),
 }
 
+/// Why the notebook is not written for `doc`, when it is not: it prints what `explain`
+/// prints, but NumPy has no policy of its own where a value is undefined (a zero normal
+/// normalised, a vertex at infinity, a light with no direction, a singular modelview):
+/// where the engine takes a limit and `explain` says so, NumPy would print nan or raise
+/// `LinAlgError`. Such a scene is refused, with `explain`'s note as the reason.
+pub fn refusal(doc: &Document) -> Option<String> {
+    let lit = crate::equation::lighting::Engine::<f64>::light_scene_vertex(&doc.scene).ok()?;
+    let (_, limit) = lit.all_limits().into_iter().next()?;
+    Some(t!("notebook-refused", reason = limit.message()))
+}
+
 /// The notebook as a Jupyter `.ipynb` file (nbformat 4).
 pub fn notebook(doc: &Document, key: &Key) -> String {
     ipynb(&cells(doc, key))
@@ -61,7 +72,7 @@ pub fn ipynb(cells: &[Cell]) -> String {
         "nbformat": 4,
         "nbformat_minor": 5
     });
-    let mut text = serde_json::to_string_pretty(&doc).unwrap_or_default();
+    let mut text = crate::formats::escape::json::text(&serde_json::to_string_pretty(&doc).unwrap_or_default());
     text.push('\n');
     text
 }

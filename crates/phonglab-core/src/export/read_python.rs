@@ -31,6 +31,7 @@ use crate::model::camera::CameraSpec;
 use crate::model::rules::{Rules, SpecularModel};
 use crate::model::scene::{Light, LightPlacement, Material, NormalMode, Scene, Vertex};
 use crate::model::vocabulary::Quantity::{self, self as Q};
+use crate::numerics::strict::quoted_line;
 use crate::t;
 
 /// A value as the reader evaluates it.
@@ -149,7 +150,7 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
             Err(e) if is_given => notices.push(t!(
                 "import-unreadable",
                 place = line.place.clone(),
-                line = line.text.trim().to_string(),
+                line = crate::numerics::strict::quoted_line(&line.text),
                 reason = e
             )),
             Err(_) => {}
@@ -168,7 +169,7 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
 
 /// The error for a line that passed a limit: its place, its text (shortened) and why.
 fn too_large(line: &SourceLine, why: &str) -> ImportError {
-    let text = crate::numerics::strict::shortened(line.text.trim(), 60);
+    let text = crate::numerics::strict::quoted_line(&line.text);
     ImportError::TooLarge(t!("import-too-large", place = line.place.clone(), line = text, reason = why))
 }
 
@@ -325,7 +326,7 @@ fn evaluate(text: &str, env: &BTreeMap<String, Value>) -> Result<Value, Failure>
     let mut p = Parser { tokens, pos: 0, env, depth: 0 };
     let v = p.expr()?;
     if p.pos != p.tokens.len() {
-        return Err(t!("import-reason-extra", token = p.tokens[p.pos].clone()).into());
+        return Err(t!("import-reason-extra", token = quoted_line(&p.tokens[p.pos])).into());
     }
     Ok(v)
 }
@@ -401,7 +402,7 @@ impl Parser<'_> {
             self.pos += 1;
             Ok(())
         } else {
-            Err(t!("import-reason-expected", token = token, found = self.peek().unwrap_or("").to_string()).into())
+            Err(t!("import-reason-expected", token = token, found = quoted_line(self.peek().unwrap_or(""))).into())
         }
     }
 
@@ -511,10 +512,10 @@ impl Parser<'_> {
             "m.pi" | "math.pi" | "np.pi" => Ok(Value::Num(std::f64::consts::PI)),
             t if t.starts_with(['"', '\'']) => Ok(Value::Str(t[1..t.len() - 1].to_string())),
             t if t.starts_with(|c: char| c.is_ascii_digit() || c == '.') => {
-                Ok(t.parse::<f64>().map(Value::Num).map_err(|_| t!("import-reason-number", token = t.to_string()))?)
+                Ok(t.parse::<f64>().map(Value::Num).map_err(|_| t!("import-reason-number", token = quoted_line(t)))?)
             }
             // Every assigned value is within the limits, so its copy is too.
-            t => Ok(self.env.get(t).cloned().ok_or_else(|| t!("import-reason-name", name = t.to_string()))?),
+            t => Ok(self.env.get(t).cloned().ok_or_else(|| t!("import-reason-name", name = quoted_line(t)))?),
         }
     }
 }

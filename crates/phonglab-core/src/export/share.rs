@@ -120,7 +120,7 @@ pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
     let mut out = Shared::of(Document::default());
     for line in lines {
         let bad =
-            || ShareError::Choice(crate::formats::escape::terminal::text(&line.chars().take(60).collect::<String>()));
+            || ShareError::Choice(crate::formats::escape::terminal::text(&crate::numerics::strict::quoted_line(line)));
         let (key, value) = line.split_once(" = ").ok_or_else(bad)?;
         match key {
             "lang" if LANGS.contains(&value) => out.lang = Some(value.to_string()),

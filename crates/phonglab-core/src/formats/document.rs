@@ -583,13 +583,20 @@ fn syntax(msg: String) -> DocumentError {
 /// A TOML error as "line L, column C: what (did you mean ...?)" and a short excerpt of the
 /// line, however long the line is.
 fn toml_error(text: &str, e: &toml::de::Error) -> DocumentError {
+    syntax(toml_error_text(text, e))
+}
+
+/// The TOML error `e` of `text` as every reader of TOML says it: "line L, column C: what
+/// (did you mean ...?)" and a short excerpt of that line of `text` alone (never the
+/// whole line, however long), or only what, where `e` has no place.
+pub fn toml_error_text(text: &str, e: &toml::de::Error) -> String {
     let what = strict::shortened(&strict::with_suggestion(e.message().trim_end()), strict::MESSAGE_CHARS);
     match e.span() {
         Some(span) => {
             let (place, excerpt) = strict::place(text, span.start);
-            syntax(format!("{place}: {what}\n{excerpt}"))
+            format!("{place}: {what}\n{excerpt}")
         }
-        None => syntax(what),
+        None => what,
     }
 }
 

@@ -18,8 +18,12 @@
 //! | TOML string | [`toml::string`] | a basic string (the `toml` crate writes it) |
 //! | PDF text | [`pdf::text`] | only characters a font draws |
 //! | the terminal | [`terminal::text`] | no escape sequence, no line break |
+//! | JSON (as `serde_json` wrote it) | [`json::text`] | every control as `\u202e`, C0 included (serde's) |
+//! | a CSV field | [`csv::field`] | controls written `\u{202E}`, quoted where it holds `,` or `"` |
 //!
-//! The notebook's JSON is written by `serde_json`, which escapes every string itself.
+//! JSON is written by `serde_json`, which escapes the C0 controls in every string but not
+//! the others (DEL, C1, the separators, the bidirectional controls): [`json::text`]
+//! escapes those in its output.
 //!
 //! What is escaped everywhere ([`is_control`]): the C0 controls (NUL, ESC, CR, LF, tab ...),
 //! DEL, the C1 controls (U+0080-U+009F: NEL, CSI ...), the line and paragraph separators
@@ -232,6 +236,38 @@ pub mod pdf {
     }
 }
 
+/// JSON: what `serde_json` writes, made safe to show.
+pub mod json {
+    /// `json` (text `serde_json` wrote) with every control character it leaves as it is
+    /// (DEL, the C1 controls, U+2028 and U+2029, the bidirectional controls, the byte-order
+    /// mark) written as JSON's `\u202e`: they occur only inside strings, whose values are
+    /// unchanged, and a viewer or terminal showing the file shows no reordered text. The C0
+    /// controls serde_json escapes in strings itself; outside them its line breaks are the
+    /// layout's, and stay.
+    pub fn text(json: &str) -> String {
+        let mut out = String::with_capacity(json.len());
+        for c in json.chars() {
+            if super::is_control(c) && u32::from(c) >= 0x7F {
+                out.push_str(&format!("\\u{:04x}", c as u32));
+            } else {
+                out.push(c);
+            }
+        }
+        out
+    }
+}
+
+/// CSV (RFC 4180), as spreadsheets read it.
+pub mod csv {
+    /// One field: control characters written visibly (`\u{202E}`: CSV has no escapes, and
+    /// a spreadsheet shows a bidirectional control as reordered text), then quoted, with
+    /// quotes doubled, where it holds a comma or a quote.
+    pub fn field(text: &str) -> String {
+        let s = super::visible_controls(text, |_| false);
+        if s.contains([',', '"']) { format!("\"{}\"", s.replace('"', "\"\"")) } else { s }
+    }
+}
+
 /// The terminal (`phonglab explain`, every message on the standard error).
 pub mod terminal {
     /// User text on one line: control characters written `\u{1B}`, so no escape sequence
@@ -307,6 +343,19 @@ mod tests {
         assert_eq!(markdown::text("- 12. x"), r"\- 12. x");
         assert_eq!(markdown::text("12. x"), r"12\. x");
         assert_eq!(markdown::text("Exercise 1: a light (level 2)"), "Exercise 1: a light (level 2)");
+    }
+
+    #[test]
+    fn json_and_csv_keep_no_bidirectional_or_separator_control() {
+        let value = serde_json::json!({ "id": HOSTILE, "more": "\u{7f}\u{2066}x\u{2069}\u{feff}" });
+        let raw = serde_json::to_string_pretty(&value).unwrap();
+        assert!(raw.contains('\u{202e}') && raw.contains('\u{2028}'), "serde_json leaves them: {raw}");
+        let safe = json::text(&raw);
+        assert!(!safe.chars().any(|c| is_control(c) && c != '\n'), "{safe}");
+        assert_eq!(serde_json::from_str::<serde_json::Value>(&safe).unwrap(), value, "the values are unchanged");
+        assert_eq!(csv::field("a,\u{202e}b\"c"), "\"a,\\u{202E}b\"\"c\"");
+        assert_eq!(csv::field("Phong 32"), "Phong 32");
+        assert!(!csv::field(HOSTILE).chars().any(is_control));
     }
 
     #[test]

@@ -151,162 +151,25 @@ pub fn for_each_case<R: std::io::Read>(
 }
 
 /// Checks that `reader` holds a case file (JSON, a list or `{"cases": [...]}`) and counts
-/// its cases, one at a time, without keeping any.
+/// its cases, one at a time, without keeping any (nor building any: each is read past).
 pub fn count_cases<R: std::io::Read>(reader: R) -> Result<usize, FileError> {
-    stream::cases(reader, &mut |_: Value, _: usize| {})
+    measure_cases(reader).map(|(n, _)| n)
 }
 
-/// The case file's outer shape read with serde, element by element.
-mod stream {
-    use std::cell::Cell;
-    use std::fmt;
-
-    use serde::de::{self, DeserializeSeed, IgnoredAny, MapAccess, SeqAccess, Visitor};
-    use serde_json::Value;
-
-    use super::FileError;
-
-    /// What each case goes to, with its index.
-    type Each<'a> = &'a mut dyn FnMut(Value, usize);
-
-    /// Reads the file's cases into `each`; the count, or why the file is not a case file.
-    pub fn cases<R: std::io::Read>(reader: R, each: Each<'_>) -> Result<usize, FileError> {
-        let shape = Cell::new(None);
-        let mut de = serde_json::Deserializer::from_reader(std::io::BufReader::with_capacity(1 << 16, reader));
-        let r = File { each, shape: &shape }.deserialize(&mut de).and_then(|n| de.end().map(|()| n));
-        match (r, shape.get()) {
-            (_, Some(what)) => Err(FileError::Shape(what)),
-            (Ok(n), None) => Ok(n),
-            (Err(e), None) => Err(FileError::Json(e)),
-        }
-    }
-
-    /// The whole file: a list of cases, or an object whose "cases" is one.
-    struct File<'a, 'b> {
-        each: Each<'b>,
-        shape: &'a Cell<Option<&'static str>>,
-    }
-
-    impl File<'_, '_> {
-        fn wrong<E: de::Error>(&self, what: &'static str) -> Result<usize, E> {
-            self.shape.set(Some(what));
-            Err(E::custom(what))
-        }
-    }
-
-    impl<'de> DeserializeSeed<'de> for File<'_, '_> {
-        type Value = usize;
-        fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<usize, D::Error> {
-            d.deserialize_any(self)
-        }
-    }
-
-    impl<'de> Visitor<'de> for File<'_, '_> {
-        type Value = usize;
-
-        fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-            f.write_str("a list of cases or an object {\"cases\": [...]}")
-        }
-
-        fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<usize, A::Error> {
-            each_case(seq, self.each)
-        }
-
-        fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<usize, A::Error> {
-            let mut count = None;
-            while let Some(key) = map.next_key::<String>()? {
-                if key == "cases" && count.is_none() {
-                    count = Some(map.next_value_seed(CaseList { each: &mut *self.each, shape: self.shape })?);
-                } else {
-                    map.next_value::<IgnoredAny>()?;
-                }
-            }
-            match count {
-                Some(n) => Ok(n),
-                None => self.wrong("an object without \"cases\""),
-            }
-        }
-
-        fn visit_unit<E: de::Error>(self) -> Result<usize, E> {
-            self.wrong("null")
-        }
-        fn visit_bool<E: de::Error>(self, _: bool) -> Result<usize, E> {
-            self.wrong("a boolean")
-        }
-        fn visit_i64<E: de::Error>(self, _: i64) -> Result<usize, E> {
-            self.wrong("a number")
-        }
-        fn visit_u64<E: de::Error>(self, _: u64) -> Result<usize, E> {
-            self.wrong("a number")
-        }
-        fn visit_f64<E: de::Error>(self, _: f64) -> Result<usize, E> {
-            self.wrong("a number")
-        }
-        fn visit_str<E: de::Error>(self, _: &str) -> Result<usize, E> {
-            self.wrong("a string")
-        }
-    }
-
-    /// The value of "cases": it must be a list.
-    struct CaseList<'a, 'b> {
-        each: Each<'b>,
-        shape: &'a Cell<Option<&'static str>>,
-    }
-
-    impl<'de> DeserializeSeed<'de> for CaseList<'_, '_> {
-        type Value = usize;
-        fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<usize, D::Error> {
-            d.deserialize_any(self)
-        }
-    }
-
-    impl<'de> Visitor<'de> for CaseList<'_, '_> {
-        type Value = usize;
-
-        fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-            f.write_str("a list of cases")
-        }
-
-        fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<usize, A::Error> {
-            each_case(seq, self.each)
-        }
-
-        fn visit_map<A: MapAccess<'de>>(self, _: A) -> Result<usize, A::Error> {
-            self.shape.set(Some("\"cases\" that is not a list"));
-            Err(de::Error::custom("\"cases\" that is not a list"))
-        }
-
-        fn visit_unit<E: de::Error>(self) -> Result<usize, E> {
-            self.shape.set(Some("\"cases\" that is not a list"));
-            Err(E::custom("\"cases\" that is not a list"))
-        }
-        fn visit_bool<E: de::Error>(self, _: bool) -> Result<usize, E> {
-            self.visit_unit()
-        }
-        fn visit_i64<E: de::Error>(self, _: i64) -> Result<usize, E> {
-            self.visit_unit()
-        }
-        fn visit_u64<E: de::Error>(self, _: u64) -> Result<usize, E> {
-            self.visit_unit()
-        }
-        fn visit_f64<E: de::Error>(self, _: f64) -> Result<usize, E> {
-            self.visit_unit()
-        }
-        fn visit_str<E: de::Error>(self, _: &str) -> Result<usize, E> {
-            self.visit_unit()
-        }
-    }
-
-    /// Each element of the list, one at a time.
-    fn each_case<'de, A: SeqAccess<'de>>(mut seq: A, each: Each<'_>) -> Result<usize, A::Error> {
-        let mut i = 0;
-        while let Some(case) = seq.next_element::<Value>()? {
-            each(case, i);
-            i += 1;
-        }
-        Ok(i)
-    }
+/// [`count_cases`], and the bytes of the largest case (with the separator before it): what
+/// [`for_each_case`] then holds in memory at once is in proportion to it.
+pub fn measure_cases<R: std::io::Read>(reader: R) -> Result<(usize, u64), FileError> {
+    let read = std::rc::Rc::new(std::cell::Cell::new(0u64));
+    let counted = stream::Counted { inner: std::io::BufReader::with_capacity(1 << 16, reader), read: read.clone() };
+    let (mut before, mut largest) = (0u64, 0u64);
+    let n = stream::cases(counted, &mut |_: serde::de::IgnoredAny, _: usize| {
+        largest = largest.max(read.get() - before);
+        before = read.get();
+    })?;
+    Ok((n, largest))
 }
+
+mod stream;
 
 /// The keys a case may have.
 pub const CASE_KEYS: &[&str] = &[

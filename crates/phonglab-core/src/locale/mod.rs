@@ -49,6 +49,15 @@ pub fn grouped(n: u64) -> String {
     out
 }
 
+/// A value someone gave, said back exactly but compactly, in the locale's decimal mark:
+/// the shortest digits that read back as it (`0.1`, `900`), in exponent form where they
+/// would run to more than 15 places (`1e300`, not its 301 digits; `2.5e-9`).
+pub fn exact(x: f64) -> String {
+    let a = x.abs();
+    let text = if x.is_finite() && x != 0.0 && !(1e-5..1e15).contains(&a) { format!("{x:e}") } else { x.to_string() };
+    decimal(&text)
+}
+
 /// A number for people: [`fmt_sig`] in the locale's decimal mark.
 pub fn num(x: f64, sig: usize) -> String {
     decimal(&fmt_sig(x, sig))
@@ -96,6 +105,19 @@ pub fn fmt_sig(x: f64, sig: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_value_is_said_back_exactly_and_compactly() {
+        let point = Locale { lang: Lang::En, decimal: DecimalMark::Point };
+        let said = |x: f64| with_locale(point, || exact(x));
+        assert_eq!(said(1e300), "1e300");
+        assert_eq!(said(-1.5e300), "-1.5e300");
+        assert_eq!(said(2.5e-9), "2.5e-9");
+        assert_eq!(said(900.0), "900");
+        assert_eq!(said(0.1), "0.1");
+        assert_eq!(said(123456789012345.0), "123456789012345");
+        assert_eq!(with_locale(Locale::of(Lang::PtPt), || exact(1.5e300)), "1,5e300");
+    }
 
     #[test]
     fn the_language_is_read_from_the_system_locale() {

@@ -419,19 +419,69 @@ pub struct LoadedObj {
 /// Reads an OBJ file as a stream: refused (with a line number where there is one) when it
 /// is not a regular file, cannot be read, is over [`MAX_OBJ_BYTES`] or
 /// [`MAX_OBJ_TRIANGLES`], or does not parse; fitted to radius 0.5 in f64.
+///
+/// The file is opened once, without waiting (a FIFO would otherwise block the open), and
+/// checked and read through that one handle: both passes read the file that was checked,
+/// even if the path is given another file between them.
 pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
-    let shown = path.display().to_string();
+    use std::io::{Read, Seek};
+    let shown = crate::formats::escape::terminal::text(&path.display().to_string());
     let cannot = |e: std::io::Error| t!("obj-cannot-read", path = shown.clone(), error = e.to_string());
-    let meta = std::fs::metadata(path).map_err(cannot)?;
+    let file = open_to_read(path).map_err(cannot)?;
+    let meta = file.metadata().map_err(cannot)?;
     if !meta.is_file() {
         return Err(t!("obj-not-a-file", path = shown.clone()));
     }
     refuse_too_large(&shown, meta.len())?;
     let open = || -> Result<_, String> {
-        let file = std::fs::File::open(path).map_err(cannot)?;
-        Ok(std::io::BufReader::with_capacity(1 << 16, std::io::Read::take(file, MAX_OBJ_BYTES)))
+        let mut handle = &file;
+        handle.rewind().map_err(cannot)?;
+        #[cfg(test)]
+        between_passes::run();
+        Ok(std::io::BufReader::with_capacity(1 << 16, handle.take(MAX_OBJ_BYTES)))
     };
     read_fitted(&shown, open)
+}
+
+/// Opens `path` to read without waiting (Unix: `O_NONBLOCK`, which changes nothing for a
+/// regular file and keeps a FIFO with no writer from blocking the open).
+fn open_to_read(path: &Path) -> std::io::Result<std::fs::File> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        std::fs::File::options().read(true).custom_flags(libc::O_NONBLOCK).open(path)
+    }
+    #[cfg(not(unix))]
+    {
+        std::fs::File::open(path)
+    }
+}
+
+/// A test's action each time [`load_obj`] starts a pass over its file (to swap the file
+/// under it).
+#[cfg(test)]
+mod between_passes {
+    use std::cell::RefCell;
+
+    thread_local! {
+        static ACTION: RefCell<Option<Box<dyn FnMut()>>> = RefCell::new(None);
+    }
+
+    /// Runs `f` at the start of each pass while `body` runs.
+    pub fn with<R>(f: impl FnMut() + 'static, body: impl FnOnce() -> R) -> R {
+        ACTION.with(|a| *a.borrow_mut() = Some(Box::new(f)));
+        let r = body();
+        ACTION.with(|a| *a.borrow_mut() = None);
+        r
+    }
+
+    pub fn run() {
+        ACTION.with(|a| {
+            if let Some(f) = a.borrow_mut().as_mut() {
+                f();
+            }
+        });
+    }
 }
 
 /// [`load_obj`] for a file given as its bytes (the browser's chooser and drops, which have
@@ -564,6 +614,47 @@ mod tests {
         assert!(e.contains("not a regular file"), "{e}");
         let e = load_obj(&dir).unwrap_err();
         assert!(e.contains("not a regular file"), "{e}");
+    }
+
+    /// A mesh file given another file (a mesh of two triangles, or a FIFO) by its path
+    /// between the two passes: both passes read the file that was opened and checked.
+    #[test]
+    #[cfg(unix)]
+    fn a_mesh_swapped_between_its_passes_is_read_from_the_one_handle() {
+        let one = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+        let two = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n";
+        type Swap = fn(&Path);
+        let swaps: [(&str, Swap); 2] = [
+            ("other", |p| std::fs::write(p, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n").unwrap()),
+            ("fifo", |p| {
+                let c = std::ffi::CString::new(p.as_os_str().as_encoded_bytes()).unwrap();
+                // SAFETY: `c` is a valid NUL-terminated path for the duration of the call.
+                assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
+            }),
+        ];
+        assert_eq!(parse_obj(two).unwrap().triangle_count(), 2);
+        for (what, swap) in swaps {
+            let path = write(&format!("swapped-{what}.obj"), one);
+            let (tx, rx) = std::sync::mpsc::channel();
+            let p = path.clone();
+            std::thread::spawn(move || {
+                let mut passes = 0;
+                let swapped = p.clone();
+                let r = between_passes::with(
+                    move || {
+                        passes += 1;
+                        if passes == 2 {
+                            std::fs::remove_file(&swapped).unwrap();
+                            swap(&swapped);
+                        }
+                    },
+                    || load_obj(&p),
+                );
+                tx.send(r.map(|o| o.mesh.triangle_count())).ok();
+            });
+            let read = rx.recv_timeout(std::time::Duration::from_secs(20)).expect("the reading did not hang");
+            assert_eq!(read, Ok(1), "{what}: the file that was opened, whole");
+        }
     }
 
     fn write(name: &str, text: &str) -> PathBuf {

@@ -6,7 +6,7 @@ use thiserror::Error;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SceneError {
     /// A parameter OpenGL refuses with `GL_INVALID_VALUE`, or the app refuses as meaningless.
-    #[error("{}", crate::t!("error-out-of-range", field = field, value = crate::locale::decimal(&value.to_string()), allowed = allowed_in_words(allowed)))]
+    #[error("{}", crate::t!("error-out-of-range", field = field, value = crate::locale::exact(*value), allowed = allowed_in_words(allowed)))]
     OutOfRange {
         /// Where, e.g. `lights[0].spot_cutoff`.
         field: String,

@@ -69,6 +69,16 @@ fn in_words(message: &str) -> String {
     message.to_string()
 }
 
+/// The most characters of a line (or of a word from one) that a message quotes.
+pub const QUOTE_CHARS: usize = 80;
+
+/// A line of a file, or a piece of one (a name, a token), as every message quotes it:
+/// trimmed, and cut to [`QUOTE_CHARS`] characters with "…" (a line can be megabytes long,
+/// and a message is read by a person, on a terminal or in the window).
+pub fn quoted_line(line: &str) -> String {
+    shortened(line.trim(), QUOTE_CHARS)
+}
+
 /// At most `max` characters of `text`, with "…" where it was cut.
 pub fn shortened(text: &str, max: usize) -> String {
     if text.chars().count() <= max {
@@ -199,5 +209,9 @@ mod tests {
         assert_eq!(where_, "line 1, column 5");
         assert_eq!(excerpt, "    k = [1, 2]\n        ^");
         assert_eq!(shortened("abcdef", 4), "abc…");
+        let long = format!("  ns = {}  ", "A".repeat(15 << 20));
+        let q = quoted_line(&long);
+        assert_eq!(q.chars().count(), QUOTE_CHARS);
+        assert!(q.starts_with("ns = AAA") && q.ends_with('…'), "{q}");
     }
 }

@@ -590,8 +590,7 @@ pub fn to_csv(study: &Study) -> String {
     s
 }
 
-/// A CSV field (RFC 4180): quoted, with quotes doubled, when it holds a comma, a quote or
-/// a line break ("Phong 32, fast rsqrt").
+/// A CSV field ("Phong 32, fast rsqrt"): [`crate::formats::escape::csv::field`].
 fn csv_field(s: &str) -> String {
-    if s.contains([',', '"', '\n', '\r']) { format!("\"{}\"", s.replace('"', "\"\"")) } else { s.to_string() }
+    crate::formats::escape::csv::field(s)
 }

@@ -1,0 +1,318 @@
+//! The journal of a set's swap ([`super::file_set`]), and the recovery that finishes or
+//! throws away what a killed writer left: acting only on what phonglab itself wrote.
+//!
+//! A folder that receives a set may hold anything: an unzipped handout or a downloaded
+//! openFrameworks project can carry files named like phonglab's own (a journal, a staging
+//! folder, a link named like one). So what a writer leaves is made so that no planted file
+//! can pass for it:
+//! - the staging folder (`.phonglab-set.<pid>.<n>.tmp`) is created by this writer alone
+//!   (`mkdir` fails on anything already there, a link included), and the journal lives in
+//!   it (`.phonglab-set.journal`), created exclusively, never read through a link;
+//! - the journal names the staging folder by its identity (device, inode and birth time:
+//!   what a file gets when it is made, which nobody planting a file can choose) and names
+//!   only plain files of the target folder, each with its identity, size and hash
+//!   (SipHash-1-3, 128 bits): the new set's files, written in that run into the staging
+//!   folder, and the old set's files it replaces;
+//! - recovery acts on a staging folder only when its journal is there, read without
+//!   following a link, and names that very folder; it moves or removes a file only when
+//!   the file is the one the journal names (identity, size and hash), and it never renames
+//!   over a file. Anything else (a journal in another form, a link or a file named like a
+//!   staging folder, a staging folder without a journal or with a journal that is not its
+//!   own, a file changed since) is left as it is, and a message says so.
+
+use std::hash::Hasher as _;
+use std::io::{self, Read};
+use std::path::Path;
+
+use phonglab_core::t;
+use serde::{Deserialize, Serialize};
+use siphasher::sip128::{Hasher128, SipHasher13};
+
+/// The stem of a staging folder's name (`.phonglab-set.<pid>.<n>.tmp`).
+pub const STAGING: &str = "phonglab-set";
+
+/// The journal's name, inside its staging folder (and the name of the journal of earlier
+/// versions, in the target folder: left alone now).
+pub const JOURNAL: &str = ".phonglab-set.journal";
+
+/// The folder inside the staging folder that the old set's files are moved aside into.
+pub const ASIDE: &str = ".phonglab-set.old";
+
+/// The journal's temporary file, inside the staging folder, renamed into place whole.
+const JOURNAL_TMP: &str = ".phonglab-set.journal.tmp";
+
+/// The largest journal read: a set of a thousand files takes about 200 KB.
+const MAX_JOURNAL_BYTES: u64 = 1 << 20;
+
+/// What makes a file or folder itself: device, inode and birth time (seconds and
+/// nanoseconds, where the file system keeps it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Identity {
+    dev: u64,
+    ino: u64,
+    born: Option<(u64, u32)>,
+}
+
+impl Identity {
+    /// The identity of what `meta` describes.
+    pub fn of(meta: &std::fs::Metadata) -> Identity {
+        let (dev, ino) = crate::platform::os::file_identity(meta);
+        let born = meta
+            .created()
+            .ok()
+            .and_then(|t| t.duration_since(std::time::UNIX_EPOCH).ok())
+            .map(|d| (d.as_secs(), d.subsec_nanos()));
+        Identity { dev, ino, born }
+    }
+}
+
+/// One file the journal names: its name in the target folder, size, hash and identity.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Entry {
+    /// A plain file name (no folder).
+    pub name: String,
+    /// Its size in bytes.
+    pub size: u64,
+    /// Its SipHash-1-3 (128 bits), in hexadecimal.
+    pub hash: String,
+    /// Its identity.
+    pub id: Identity,
+}
+
+/// What the journal says (see the module's documentation).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Journal {
+    /// The staging folder it lives in.
+    pub staging: Identity,
+    /// The new set is whole in the staging folder and the swap is decided: a recovery
+    /// finishes it. Before that, a recovery throws the staging folder away.
+    pub decided: bool,
+    /// The new set's files, as written into the staging folder.
+    pub new: Vec<Entry>,
+    /// The old set's files, in the target folder, that the new set replaces.
+    pub old: Vec<Entry>,
+}
+
+/// The hash of `bytes` as a journal writes it.
+pub fn hash_bytes(bytes: &[u8]) -> String {
+    let mut h = SipHasher13::new();
+    h.write(bytes);
+    format!("{:032x}", h.finish128().as_u128())
+}
+
+/// The file at `path`, read without following a link: its size, hash and identity. `Err`
+/// when it is not a regular file.
+fn read_entry(path: &Path) -> io::Result<(u64, String, Identity)> {
+    let file = crate::platform::os::open_no_follow(path)?;
+    let meta = file.metadata()?;
+    if !meta.is_file() {
+        return Err(io::Error::new(io::ErrorKind::InvalidInput, "not a regular file"));
+    }
+    let mut h = SipHasher13::new();
+    let (mut buf, mut size, mut reader) = (vec![0u8; 1 << 16], 0u64, file);
+    loop {
+        let n = reader.read(&mut buf)?;
+        if n == 0 {
+            break;
+        }
+        h.write(&buf[..n]);
+        size += n as u64;
+    }
+    Ok((size, format!("{:032x}", h.finish128().as_u128()), Identity::of(&meta)))
+}
+
+/// The entry of the file `name` in `folder`, read there now.
+pub fn entry_of(folder: &Path, name: &str) -> io::Result<Entry> {
+    let (size, hash, id) = read_entry(&folder.join(name))?;
+    Ok(Entry { name: name.to_string(), size, hash, id })
+}
+
+/// Is the file at `path` exactly the one `entry` names (identity, size and hash)?
+fn is_entry(path: &Path, entry: &Entry) -> bool {
+    let Ok(meta) = std::fs::symlink_metadata(path) else { return false };
+    if !meta.is_file() || Identity::of(&meta) != entry.id || meta.len() != entry.size {
+        return false;
+    }
+    read_entry(path).is_ok_and(|(size, hash, id)| size == entry.size && hash == entry.hash && id == entry.id)
+}
+
+/// Is `name` one of phonglab's own names in a set's folder (a staging folder, a journal)?
+pub fn is_reserved(name: &str) -> bool {
+    name.starts_with(&format!(".{STAGING}"))
+}
+
+/// A plain file name a set may hold: no folder, not `.` or `..`, not one of phonglab's own.
+pub fn plain_name(name: &str) -> bool {
+    !name.is_empty() && name != "." && name != ".." && !name.contains(['/', '\\']) && !is_reserved(name)
+}
+
+/// Is `name` a staging folder's name (`.phonglab-set.<...>.tmp`)?
+fn is_staging_name(name: &str) -> bool {
+    name.starts_with(&format!(".{STAGING}.")) && name.ends_with(".tmp")
+}
+
+/// Writes `journal` into its staging folder whole: a temporary file created exclusively,
+/// synced, renamed over the journal (both in the folder this writer made). `counted`: the
+/// rename is one a test may make fail ([`super::atomic_write::Fault::OnRename`]).
+pub fn write_journal(staging: &Path, journal: &Journal, counted: bool) -> Result<(), (&'static str, io::Error)> {
+    let bytes = serde_json::to_vec(journal).map_err(|e| ("write-step-write", io::Error::other(e)))?;
+    let tmp = staging.join(JOURNAL_TMP);
+    super::atomic_write::write_new(&tmp, &bytes)?;
+    let renamed = if counted {
+        super::atomic_write::rename(&tmp, &staging.join(JOURNAL))
+    } else {
+        std::fs::rename(&tmp, staging.join(JOURNAL))
+    };
+    renamed.map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        ("write-step-rename", e)
+    })?;
+    crate::platform::os::sync_folder(staging);
+    Ok(())
+}
+
+/// Why a staging folder's journal is not trusted (in words, for the message).
+fn untrusted(why: &str) -> String {
+    t!("set-untrusted-journal", why = why)
+}
+
+/// The journal of the staging folder `staging`, when phonglab wrote it there: read without
+/// following a link, under its cap, naming that very folder and only plain files, each
+/// once. `Ok(None)`: the folder has no journal. `Err`: why it is not trusted.
+fn read_journal(staging: &Path) -> Result<Option<Journal>, String> {
+    let path = staging.join(JOURNAL);
+    let file = match crate::platform::os::open_no_follow(&path) {
+        Ok(f) => f,
+        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(None),
+        Err(e) => return Err(untrusted(&crate::io::reasons::io_reason(&e))),
+    };
+    let meta = file.metadata().map_err(|e| untrusted(&crate::io::reasons::io_reason(&e)))?;
+    if !meta.is_file() || meta.len() > MAX_JOURNAL_BYTES {
+        return Err(untrusted(&t!("set-why-not-a-journal")));
+    }
+    let mut bytes = Vec::new();
+    file.take(MAX_JOURNAL_BYTES).read_to_end(&mut bytes).map_err(|e| untrusted(&crate::io::reasons::io_reason(&e)))?;
+    let j: Journal = serde_json::from_slice(&bytes).map_err(|_| untrusted(&t!("set-why-not-a-journal")))?;
+    let here = std::fs::symlink_metadata(staging).map_err(|e| untrusted(&crate::io::reasons::io_reason(&e)))?;
+    if !here.is_dir() || Identity::of(&here) != j.staging {
+        return Err(untrusted(&t!("set-why-other-folder")));
+    }
+    if !j.new.iter().chain(&j.old).all(|e| plain_name(&e.name)) {
+        return Err(untrusted(&t!("set-why-outside")));
+    }
+    let each_once = |entries: &[Entry]| {
+        let mut n: Vec<&str> = entries.iter().map(|e| e.name.as_str()).collect();
+        n.sort_unstable();
+        n.dedup();
+        n.len() == entries.len()
+    };
+    if !each_once(&j.new) || !each_once(&j.old) {
+        return Err(untrusted(&t!("set-why-not-a-journal")));
+    }
+    Ok(Some(j))
+}
+
+/// A message about `name` in `dir`, left as it is, and why.
+fn left(dir: &Path, name: &str, why: &str) -> String {
+    use phonglab_core::escape::terminal::text;
+    t!("set-left-alone", name = text(name), dir = text(&dir.display().to_string()), why = why)
+}
+
+/// Finishes or throws away what killed writers of a set left in `dir`, acting only on
+/// what phonglab wrote (see the module's documentation); the caller holds the folder's
+/// lock, so every staging folder with a journal is a dead writer's. Returns a message for
+/// each thing left as it is.
+pub fn recover_locked(dir: &Path) -> io::Result<Vec<String>> {
+    let mut notices = Vec::new();
+    let mut names: Vec<String> =
+        std::fs::read_dir(dir)?.flatten().filter_map(|e| e.file_name().into_string().ok()).collect();
+    names.sort();
+    for name in names {
+        if name == JOURNAL {
+            notices.push(left(dir, &name, &t!("set-why-loose-journal")));
+            continue;
+        }
+        if !is_staging_name(&name) {
+            continue;
+        }
+        let staging = dir.join(&name);
+        let Ok(meta) = std::fs::symlink_metadata(&staging) else { continue };
+        if !meta.is_dir() {
+            notices.push(left(dir, &name, &t!("set-why-not-a-folder")));
+            continue;
+        }
+        match read_journal(&staging) {
+            Ok(Some(j)) if j.decided => {
+                if let Err(why) = finish(dir, &staging, &j) {
+                    notices.push(left(dir, &name, &why));
+                }
+            }
+            // Stopped before the swap was decided: the old set is whole in place, and
+            // the staging folder holds only what this writer put in it.
+            Ok(Some(_)) => std::fs::remove_dir_all(&staging)?,
+            Ok(None) => {
+                if !remove_if_empty(&staging) {
+                    notices.push(left(dir, &name, &t!("set-why-no-journal")));
+                }
+            }
+            Err(why) => notices.push(left(dir, &name, &why)),
+        }
+    }
+    crate::platform::os::sync_folder(dir);
+    Ok(notices)
+}
+
+/// Removes `staging` when it holds nothing but, at most, an empty aside folder (a writer
+/// killed after it removed its journal, or before it wrote one): no file is lost.
+fn remove_if_empty(staging: &Path) -> bool {
+    let _ = std::fs::remove_dir(staging.join(ASIDE));
+    std::fs::remove_dir(staging).is_ok()
+}
+
+/// Rolls the decided swap `j` forward from wherever it stopped: each old file still in
+/// place, and still the one the journal names, moved aside; each new file still staged,
+/// and still the one written, moved into its place where nothing is; then the staging
+/// folder removed. `Err`: the files it could not place (something else is at their name),
+/// and the staging folder is kept with them.
+fn finish(dir: &Path, staging: &Path, j: &Journal) -> Result<(), String> {
+    let aside = staging.join(ASIDE);
+    let mut stuck = Vec::new();
+    for old in &j.old {
+        if is_entry(&dir.join(&old.name), old) {
+            let _ = std::fs::create_dir(&aside);
+            if crate::platform::os::rename_no_replace(&dir.join(&old.name), &aside.join(&old.name)).is_err() {
+                stuck.push(old.name.clone());
+            }
+        }
+    }
+    for new in &j.new {
+        let (staged, target) = (staging.join(&new.name), dir.join(&new.name));
+        if is_entry(&target, new) {
+            continue;
+        }
+        if !is_entry(&staged, new) || crate::platform::os::rename_no_replace(&staged, &target).is_err() {
+            stuck.push(new.name.clone());
+        }
+    }
+    crate::platform::os::sync_folder(dir);
+    if !stuck.is_empty() {
+        stuck.sort();
+        stuck.dedup();
+        let names = phonglab_core::escape::terminal::text(&stuck.join(", "));
+        return Err(t!("set-why-unfinished", names = names));
+    }
+    let _ = std::fs::remove_dir_all(staging);
+    Ok(())
+}
+
+/// Writes `bytes` as a new file `name` in the staging folder: created exclusively (never
+/// through a link), synced; its entry for the journal (the identity read back from it).
+pub fn stage(staging: &Path, name: &str, bytes: &[u8]) -> Result<Entry, (&'static str, io::Error)> {
+    let path = staging.join(name);
+    super::atomic_write::write_new(&path, bytes)?;
+    let meta = std::fs::symlink_metadata(&path).map_err(|e| ("write-step-create", e))?;
+    Ok(Entry { name: name.to_string(), size: bytes.len() as u64, hash: hash_bytes(bytes), id: Identity::of(&meta) })
+}
+
+#[cfg(test)]
+mod tests;

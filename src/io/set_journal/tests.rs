@@ -1,0 +1,307 @@
+//! Planted files: journals, staging folders and links that phonglab did not write, put in
+//! a folder a set is written into, never make it delete, move or change a file.
+
+use std::path::{Path, PathBuf};
+
+use proptest::prelude::*;
+
+use super::*;
+use crate::io::atomic_write::tests::temp_dir;
+use crate::io::file_set::{FileSet, recover, write_set};
+
+/// What a file is, for a user: a link's target, a file's bytes, or "a folder".
+#[derive(Debug, PartialEq, Eq)]
+enum Seen {
+    Link(PathBuf),
+    File(Vec<u8>),
+    Folder,
+}
+
+/// Every file, link and folder under `dir` (its folders walked, links not followed).
+fn everything(dir: &Path) -> Vec<(PathBuf, Seen)> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap().flatten() {
+            let p = e.path();
+            let t = std::fs::symlink_metadata(&p).unwrap().file_type();
+            let seen = if t.is_symlink() {
+                Seen::Link(std::fs::read_link(&p).unwrap())
+            } else if t.is_dir() {
+                stack.push(p.clone());
+                Seen::Folder
+            } else {
+                Seen::File(std::fs::read(&p).unwrap())
+            };
+            out.push((p, seen));
+        }
+    }
+    out.sort_by(|a, b| a.0.cmp(&b.0));
+    out
+}
+
+/// Every file and link that was under `dir` before is there after, unchanged.
+fn untouched(before: &[(PathBuf, Seen)], dir: &Path, why: &str) {
+    let after = everything(dir);
+    for (p, seen) in before.iter().filter(|(_, s)| *s != Seen::Folder) {
+        let now = after.iter().find(|(q, _)| q == p).map(|(_, s)| s);
+        assert_eq!(now, Some(seen), "{why}: {} was changed, moved or removed", p.display());
+    }
+}
+
+fn of_set() -> FileSet {
+    let mut s = FileSet::default();
+    s.add("ofApp.h", "// new h");
+    s.add("ofApp.cpp", "// new cpp");
+    s.add("main.cpp", "// new main");
+    s
+}
+
+fn names_of(set: &FileSet) -> impl Fn(&str) -> bool + '_ {
+    |n| set.files.iter().any(|(m, _)| m == n)
+}
+
+/// Issue 54's attack: a journal of the old form naming the student's files as the old set
+/// and a file elsewhere as the new, with a staging "folder" that is a link to elsewhere.
+#[test]
+#[cfg(unix)]
+fn a_planted_journal_and_staging_link_delete_and_move_nothing() {
+    let other = temp_dir("planted-other");
+    std::fs::write(other.join("thesis.txt"), "someone's thesis").unwrap();
+    let dir = temp_dir("planted-src");
+    std::fs::write(dir.join("helper.h"), "// the student's helper").unwrap();
+    std::fs::write(dir.join("helper.cpp"), "// the student's helper code").unwrap();
+    std::fs::write(
+        dir.join(JOURNAL),
+        r#"{"staging":".phonglab-set.9.9.tmp","new":["thesis.txt"],"old":["helper.h","helper.cpp"]}"#,
+    )
+    .unwrap();
+    std::os::unix::fs::symlink(&other, dir.join(".phonglab-set.9.9.tmp")).unwrap();
+    let (before, before_other) = (everything(&dir), everything(&other));
+    let set = of_set();
+    let notices = write_set(&dir, &set, names_of(&set)).unwrap();
+    untouched(&before, &dir, "the folder");
+    untouched(&before_other, &other, "the other folder");
+    assert!(!dir.join("thesis.txt").exists(), "nothing moved in");
+    assert_eq!(std::fs::read(dir.join("ofApp.h")).unwrap(), b"// new h", "the set is written");
+    let said = notices.join("\n");
+    assert!(said.contains(JOURNAL) && said.contains(".phonglab-set.9.9.tmp"), "{said}");
+    assert!(said.contains("left as it is"), "{said}");
+}
+
+/// A journal of the new form, planted with its staging folder: it names the student's
+/// file with its true size and hash (its contents were known), but not the identity the
+/// unpacked folder got, so nothing it names is touched.
+#[test]
+fn a_planted_journal_with_the_right_hashes_is_still_not_phonglabs() {
+    let dir = temp_dir("planted-hashes");
+    std::fs::write(dir.join("main.cpp"), "// a well-known main.cpp").unwrap();
+    let staging = dir.join(".phonglab-set.9.9.tmp");
+    std::fs::create_dir(&staging).unwrap();
+    std::fs::write(staging.join("thesis.txt"), "moved in?").unwrap();
+    let mut old = entry_of(&dir, "main.cpp").unwrap();
+    let mut new = entry_of(&staging, "thesis.txt").unwrap();
+    // What a planter cannot know: the identities the files get when they are unpacked.
+    old.id.ino ^= 1;
+    new.id.ino ^= 1;
+    let j = Journal { staging: Identity { dev: 1, ino: 2, born: None }, decided: true, new: vec![new], old: vec![old] };
+    std::fs::write(staging.join(JOURNAL), serde_json::to_vec(&j).unwrap()).unwrap();
+    let before = everything(&dir);
+    let notices = recover(&dir).unwrap();
+    untouched(&before, &dir, "recovery");
+    assert!(notices.len() == 1 && notices[0].contains("not the folder"), "{notices:?}");
+}
+
+/// A journal phonglab really wrote, whose old file was changed by its owner after the
+/// writer died: that file is not replaced, and the staging folder keeps the new one.
+#[test]
+fn a_file_changed_since_the_journal_is_not_replaced() {
+    let dir = temp_dir("changed-since");
+    std::fs::write(dir.join("a.md"), "old").unwrap();
+    let staging = dir.join(".phonglab-set.1.0.tmp");
+    std::fs::create_dir(&staging).unwrap();
+    let here = Identity::of(&std::fs::symlink_metadata(&staging).unwrap());
+    let new = stage(&staging, "a.md", b"new").unwrap();
+    let old = entry_of(&dir, "a.md").unwrap();
+    write_journal(&staging, &Journal { staging: here, decided: true, new: vec![new], old: vec![old] }, false).unwrap();
+    std::fs::write(dir.join("a.md"), "old, edited by its owner").unwrap();
+    let notices = recover(&dir).unwrap();
+    assert_eq!(std::fs::read(dir.join("a.md")).unwrap(), b"old, edited by its owner");
+    assert_eq!(std::fs::read(staging.join("a.md")).unwrap(), b"new", "kept where it was");
+    assert!(notices.len() == 1 && notices[0].contains("a.md"), "{notices:?}");
+}
+
+/// One planted thing in the folder a set is written into.
+#[derive(Clone, Debug)]
+enum Planted {
+    /// A file of the user's, with a name drawn from phonglab's own and others.
+    File(String, Vec<u8>),
+    /// A link named like a staging folder, to the folder outside.
+    Link(String),
+    /// A folder named like a staging folder, holding a journal and files.
+    Staging { name: String, journal: PlantedJournal, files: Vec<(String, Vec<u8>)>, aside: bool },
+    /// A journal of the old form in the folder itself.
+    LooseJournal(PlantedJournal),
+}
+
+/// A journal's contents, from noise to one of phonglab's form naming real files.
+#[derive(Clone, Debug)]
+enum PlantedJournal {
+    Noise(Vec<u8>),
+    /// Names (of the folder's files, the set's, the staging's, or anything), sizes and
+    /// hashes the true ones or not, decided or not; the identities guessed.
+    Shaped {
+        decided: bool,
+        new: Vec<String>,
+        old: Vec<String>,
+        true_hashes: bool,
+        guess: u64,
+    },
+}
+
+fn name() -> impl Strategy<Value = String> {
+    prop_oneof![
+        Just("helper.h".to_string()),
+        Just("notes.md".to_string()),
+        Just("ofApp.h".to_string()),
+        Just("main.cpp".to_string()),
+        Just(JOURNAL.to_string()),
+        Just(ASIDE.to_string()),
+        Just(".phonglab-set.9.9.tmp".to_string()),
+        Just("../outside/kept.txt".to_string()),
+        "[a-z.]{1,8}",
+        "\\.phonglab-set\\.[0-9]{1,3}\\.[0-9]\\.tmp",
+    ]
+}
+
+fn journal() -> impl Strategy<Value = PlantedJournal> {
+    prop_oneof![
+        proptest::collection::vec(any::<u8>(), 0..64).prop_map(PlantedJournal::Noise),
+        (
+            any::<bool>(),
+            proptest::collection::vec(name(), 0..4),
+            proptest::collection::vec(name(), 0..4),
+            any::<bool>(),
+            any::<u64>()
+        )
+            .prop_map(|(decided, new, old, true_hashes, guess)| PlantedJournal::Shaped {
+                decided,
+                new,
+                old,
+                true_hashes,
+                guess
+            }),
+    ]
+}
+
+fn planted() -> impl Strategy<Value = Planted> {
+    let bytes = proptest::collection::vec(any::<u8>(), 0..32);
+    prop_oneof![
+        (name(), bytes.clone()).prop_map(|(n, b)| Planted::File(n, b)),
+        "\\.phonglab-set\\.[0-9]{1,3}\\.[0-9]\\.tmp".prop_map(Planted::Link),
+        (
+            "\\.phonglab-set\\.[0-9]{1,3}\\.[0-9]\\.tmp",
+            journal(),
+            proptest::collection::vec((name(), bytes), 0..3),
+            any::<bool>()
+        )
+            .prop_map(|(name, journal, files, aside)| Planted::Staging { name, journal, files, aside }),
+        journal().prop_map(Planted::LooseJournal),
+    ]
+}
+
+/// An entry for `name` as a planter writes it: the file's true size and hash where it
+/// exists in `dir` and `true_hashes`, a guessed identity always.
+fn planted_entry(dir: &Path, name: &str, true_hashes: bool, guess: u64) -> Entry {
+    let id = Identity { dev: guess, ino: guess.rotate_left(7), born: None };
+    match std::fs::read(dir.join(name)) {
+        Ok(b) if true_hashes => Entry { name: name.into(), size: b.len() as u64, hash: hash_bytes(&b), id },
+        _ => Entry { name: name.into(), size: guess % 64, hash: format!("{guess:032x}"), id },
+    }
+}
+
+fn journal_bytes(dir: &Path, j: &PlantedJournal, old_form: bool) -> Vec<u8> {
+    match j {
+        PlantedJournal::Noise(b) => b.clone(),
+        PlantedJournal::Shaped { new, old, .. } if old_form => {
+            serde_json::to_vec(&serde_json::json!({"staging": ".phonglab-set.9.9.tmp", "new": new, "old": old}))
+                .unwrap()
+        }
+        PlantedJournal::Shaped { decided, new, old, true_hashes, guess } => {
+            let entries =
+                |names: &[String]| names.iter().map(|n| planted_entry(dir, n, *true_hashes, *guess)).collect();
+            let staging = Identity { dev: *guess, ino: guess.rotate_left(3), born: Some((*guess, 0)) };
+            serde_json::to_vec(&Journal { staging, decided: *decided, new: entries(new), old: entries(old) }).unwrap()
+        }
+    }
+}
+
+/// Plants `things` in `dir` (the folder outside is `outside`); what could not be made (a
+/// name taken twice, a name with a folder in it) is skipped.
+#[cfg(unix)]
+fn plant(dir: &Path, outside: &Path, things: &[Planted]) {
+    let free = |p: &Path| std::fs::symlink_metadata(p).is_err() && p.parent() == Some(dir);
+    for thing in things {
+        match thing {
+            Planted::File(n, b) if free(&dir.join(n)) => std::fs::write(dir.join(n), b).unwrap(),
+            Planted::Link(n) if free(&dir.join(n)) => std::os::unix::fs::symlink(outside, dir.join(n)).unwrap(),
+            Planted::Staging { name, journal, files, aside } if free(&dir.join(name)) => {
+                let s = dir.join(name);
+                std::fs::create_dir(&s).unwrap();
+                for (n, b) in files.iter().filter(|(n, _)| !n.contains('/') && n != JOURNAL && n != ASIDE) {
+                    let _ = std::fs::write(s.join(n), b);
+                }
+                if *aside {
+                    std::fs::create_dir_all(s.join(ASIDE)).unwrap();
+                    std::fs::write(s.join(ASIDE).join("helper.h"), "aside").unwrap();
+                }
+                std::fs::write(s.join(JOURNAL), journal_bytes(dir, journal, false)).unwrap();
+            }
+            Planted::LooseJournal(j) if free(&dir.join(JOURNAL)) => {
+                std::fs::write(dir.join(JOURNAL), journal_bytes(dir, j, true)).unwrap();
+            }
+            _ => {}
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// Random journals (noise, or phonglab's form naming the folder's own files with their
+    /// true sizes and hashes), staging folders and links to a folder outside, and files
+    /// with phonglab's names, planted among the user's files: writing a set and recovering
+    /// never deletes, moves or changes any of them, nor anything outside.
+    #[test]
+    #[cfg(unix)]
+    fn planted_journals_staging_and_links_never_cost_a_file(things in proptest::collection::vec(planted(), 1..8)) {
+        let root = temp_dir("planted-prop");
+        let (dir, outside) = (root.join("src"), root.join("outside"));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::create_dir_all(&outside).unwrap();
+        std::fs::write(outside.join("kept.txt"), "outside").unwrap();
+        std::fs::write(dir.join("helper.h"), "// the student's").unwrap();
+        plant(&dir, &outside, &things);
+        // The set's own names are the user's to replace: planted files there are not kept.
+        let set = of_set();
+        for (n, _) in &set.files {
+            if std::fs::symlink_metadata(dir.join(n)).is_ok_and(|m| m.is_file()) {
+                std::fs::remove_file(dir.join(n)).unwrap();
+            }
+        }
+        let (before, before_outside) = (everything(&dir), everything(&outside));
+        recover(&dir).unwrap();
+        untouched(&before, &dir, "recovery");
+        match write_set(&dir, &set, names_of(&set)) {
+            Ok(_) => {
+                for (n, b) in &set.files {
+                    prop_assert_eq!(&std::fs::read(dir.join(n)).unwrap(), b);
+                }
+            }
+            // Refused: a planted link or folder holds one of the set's names.
+            Err(e) => prop_assert!(e.to_string().contains("not a regular file"), "{}", e),
+        }
+        untouched(&before, &dir, "a set written");
+        untouched(&before_outside, &outside, "outside");
+    }
+}
