@@ -16,15 +16,8 @@ use crate::model::rules::SpecularModel;
 use crate::model::scene::{ColorMaterialMode, Scene};
 use crate::numerics::real::{Real, Vec3Ops};
 
-/// Which face side to explain.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
-pub enum Side {
-    /// Front-facing (`n` as given).
-    #[default]
-    Front,
-    /// Back-facing (`-n`, the back material; only differs with two-sided lighting).
-    Back,
-}
+/// Which face side to explain (the model's side, named here too).
+pub use crate::model::scene::Side;
 
 /// What a step computes; the app colours steps and the plot's vectors by kind.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

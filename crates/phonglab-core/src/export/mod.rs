@@ -94,4 +94,4 @@ pub fn copy_text(doc: &Document, target: Target) -> Result<String, String> {
 }
 
 use crate::formats::document::Document;
-use crate::specialise::plan::Key;
+use crate::equation::plan::Key;

@@ -17,7 +17,7 @@ use crate::formats::escape;
 use crate::model::rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel};
 use crate::model::scene::{Face, Light, Material, NormalMode, Scene};
 use crate::model::vocabulary::Quantity::{self, self as Q};
-use crate::specialise::plan::Key;
+use crate::equation::plan::Key;
 use crate::t;
 
 /// One cell of a notebook.

@@ -28,7 +28,7 @@ use crate::model::rules::{RuleSet, SpecularModel};
 use crate::model::scene::{LightPlacement, Material, NormalMode, Scene};
 use crate::model::view::ObjectKind;
 use crate::model::vocabulary::Quantity as Q;
-use crate::specialise::plan::Key;
+use crate::equation::plan::Key;
 use crate::t;
 
 /// A C++ float literal: the value as a float holds it, in its shortest form.

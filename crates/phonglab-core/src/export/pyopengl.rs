@@ -25,7 +25,7 @@ use crate::model::rules::RuleSet;
 use crate::model::scene::{Light, LightPlacement, Scene};
 use crate::model::view::{Framing, LightingSpace, ObjectKind, Shading, View};
 use crate::model::vocabulary::Quantity as Q;
-use crate::specialise::plan::Key;
+use crate::equation::plan::Key;
 use crate::t;
 use crate::teach::shader::{Lang, ShaderShading};
 

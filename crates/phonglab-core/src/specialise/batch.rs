@@ -10,7 +10,7 @@ use crate::model::scene::Vertex;
 use crate::numerics::real::Vec3Ops;
 use crate::numerics::robust::transform_point;
 use crate::specialise::lighter::{EyeArrays, Lighter, Lit, Output, Probe, Source, StageTimes};
-use crate::specialise::plan::Stage;
+use crate::equation::plan::Stage;
 
 impl Lighter {
     /// Lights vertices given in object space (w = 1): `front[i]` (and `back[i]` with

@@ -1,13 +1,13 @@
 //! The plan in words: every effect of the equation, whether the specialised evaluator
 //! computes it for this scene and why ("attenuation: skipped, the light is directional"),
 //! read off the compiled program so it is true of what runs. The calculation panel lists
-//! them; the compiler itself ([`super::plan`]) holds no prose.
+//! them; the compiler itself ([`crate::equation::plan`]) holds no prose.
 
 use std::fmt;
 
-use super::plan::*;
+use crate::equation::plan::*;
 use crate::model::rules::SpecularModel;
-use crate::model::scene::NormalMode;
+use crate::model::scene::{LightId, NormalMode, Side};
 use crate::specialise::lighter::CHUNK;
 
 /// An effect of the equation, and whether the specialised evaluator computes it: read off
@@ -41,6 +41,29 @@ impl Effect {
         self.kind.step_kind(self.specular)
     }
 }
+
+impl EffectKind {
+    /// The step of the worked calculation this effect decides (for showing a skipped
+    /// step greyed with its reason).
+    pub fn step_kind(self, specular: SpecularModel) -> Option<crate::equation::explain::StepKind> {
+        use crate::equation::explain::StepKind as K;
+        Some(match self {
+            EffectKind::Normalisation => K::Normal,
+            EffectKind::Position => K::Position,
+            EffectKind::ViewVector => K::V,
+            EffectKind::LightVector => K::Distance,
+            EffectKind::Attenuation => K::Attenuation,
+            EffectKind::Spotlight => K::Spot,
+            EffectKind::HalfwayOrReflection => match specular {
+                SpecularModel::BlinnPhong => K::H,
+                SpecularModel::Phong => K::R,
+            },
+            EffectKind::SpecularPower => K::Specular,
+            EffectKind::SceneColor | EffectKind::BackSide => return None,
+        })
+    }
+}
+
 
 impl Key {
     /// Every effect with whether the program for object-space vertices runs it and why,
@@ -105,14 +128,14 @@ impl Key {
             } else {
                 e(EffectKind::SceneColor, None, false, crate::t!("why-scene-zero"))
             },
-            if program.stages.iter().any(|s| matches!(s, Stage::Sum(_, 1))) {
+            if program.stages.iter().any(|s| matches!(s, Stage::Sum(_, Side::Back))) {
                 e(EffectKind::BackSide, None, true, crate::t!("why-two-sided"))
             } else {
                 e(EffectKind::BackSide, None, false, crate::t!("why-one-sided"))
             },
         ];
-        for (i, l) in self.lights.iter().enumerate() {
-            let li = Some(i);
+        for (i, l) in LightId::all(self.lights.len()).zip(&self.lights) {
+            let li = Some(i.index());
             out.push(if has(Stage::LightVector(i)) {
                 e(EffectKind::LightVector, li, true, crate::t!("why-l-positional", chunk = CHUNK))
             } else {

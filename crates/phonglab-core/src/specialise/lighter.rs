@@ -37,11 +37,11 @@ use glam::{DVec3, Vec3};
 
 use crate::equation::lighting::{Engine, EvalOptions, LightPos, terms};
 use crate::model::error::SceneError;
-use crate::model::scene::Scene;
+use crate::model::scene::{LightId, Scene, Side};
 use crate::numerics::copies::prefetch;
 use crate::numerics::real::Vec3Ops;
 use crate::numerics::robust::mul0;
-use crate::specialise::plan::{Key, Program, SourceKind, Stage};
+use crate::equation::plan::{Key, Program, SourceKind, Stage};
 
 mod stages;
 
@@ -388,7 +388,7 @@ impl Lighter {
             .map(|(i, pl)| match pl.pos {
                 LightPos::Directional { unit, .. } => {
                     let l = unit.map(Vec3::from_dvec3);
-                    let h = match (l, key.per_vertex_halfway(i)) {
+                    let h = match (l, key.per_vertex_halfway(LightId(i))) {
                         (Some(l), false) => terms::halfway::<f32>(l, Vec3::Z),
                         _ => None,
                     };
@@ -455,15 +455,15 @@ impl Lighter {
             let r = start..start + c.n;
             match &mut out {
                 Output::Lit { front, back } => {
-                    self.write(&c, 0, scene_color, &mut front[r.clone()]);
+                    self.write(&c, Side::Front, scene_color, &mut front[r.clone()]);
                     if let Some(b) = back.as_deref_mut().filter(|_| two) {
-                        self.write(&c, 1, scene_color, &mut b[r]);
+                        self.write(&c, Side::Back, scene_color, &mut b[r]);
                     }
                 }
                 Output::Sum { front, back } => {
-                    self.write_sum(&c, 0, scene_color, &mut front[r.clone()]);
+                    self.write_sum(&c, Side::Front, scene_color, &mut front[r.clone()]);
                     if let Some(b) = back.as_deref_mut().filter(|_| two) {
-                        self.write_sum(&c, 1, scene_color, &mut b[r]);
+                        self.write_sum(&c, Side::Back, scene_color, &mut b[r]);
                     }
                 }
             }
@@ -491,7 +491,7 @@ mod tests {
         assert_eq!(plain, timed);
         let stages: Vec<Stage> = t.stages.iter().map(|(s, _)| *s).collect();
         assert_eq!(stages, l.program().stages);
-        assert!(stages.contains(&Stage::Halfway(0)));
+        assert!(stages.contains(&Stage::Halfway(LightId(0))));
         let total: Duration = t.load + t.write + t.stages.iter().map(|(_, d)| *d).sum::<Duration>();
         assert!(total > Duration::ZERO);
     }
@@ -544,6 +544,6 @@ mod tests {
         assert!(l.update(&scene, EvalOptions::default()).unwrap());
         assert_eq!(l.replans(), 2);
         assert!(!l.key().lights[0].positional);
-        assert!(!l.program().has(Stage::LightVector(0)));
+        assert!(!l.program().has(Stage::LightVector(LightId(0))));
     }
 }

@@ -27,7 +27,7 @@ use crate::model::materials;
 use crate::model::rules::Rules;
 use crate::model::scene::{Light, LightModel, LightPlacement, NormalMode, Scene, Vertex};
 use crate::model::vocabulary::Quantity as Q;
-use crate::specialise::plan::Key;
+use crate::equation::plan::Key;
 
 /// An effect an exercise can be asked to use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -89,7 +89,7 @@ impl Effect {
     /// The effects a scene uses, read off its key.
     pub fn of_key(key: &Key) -> Vec<Effect> {
         let mut out = Vec::new();
-        let any = |f: &dyn Fn(&crate::specialise::plan::LightKey) -> bool| key.lights.iter().any(f);
+        let any = |f: &dyn Fn(&crate::equation::plan::LightKey) -> bool| key.lights.iter().any(f);
         if any(&|l| l.positional) {
             out.push(Effect::Positional);
         }

@@ -7,6 +7,7 @@
 use glam::{DVec3, Vec3};
 
 use super::{CHUNK, Chunk, Lighter, Lit};
+use crate::model::scene::{LightId, Side};
 use crate::equation::lighting::{LightPos, PreparedLight, fast_rsqrt, terms};
 use crate::model::rules::{SpecularGate, SpecularModel};
 use crate::numerics::pow::PowFn;
@@ -14,7 +15,7 @@ use crate::numerics::robust::{
     mul0, normalize3, normalize3_unscaled, transform_affine_rows, transform_point_rows, translate_point,
     unscaled_is_exact,
 };
-use crate::specialise::plan::Stage;
+use crate::equation::plan::Stage;
 
 impl Lighter {
     /// Zeroes the sums that will be read: per side, the primary, and the secondary with
@@ -110,7 +111,7 @@ impl Lighter {
             Stage::LightVector(li) => self.light_vector(c, n, li),
             Stage::LightConstant(li) => self.light_constant(c, n, li),
             Stage::Attenuate(li) => {
-                let k = e.lights[li].k;
+                let k = e.lights[li.index()].k;
                 for i in 0..n {
                     c.scale[i] = terms::attenuation(k, c.d[i]);
                 }
@@ -127,7 +128,7 @@ impl Lighter {
             }
             Stage::HalfwayConstant(li) => {
                 // `SpecularCosine` reads the constant itself.
-                c.h_ok[..n].fill(self.consts[li].h.is_some());
+                c.h_ok[..n].fill(self.consts[li.index()].h.is_some());
             }
             Stage::Reflect(_) => {
                 let clamped = e.rules.reflect_clamped();
@@ -141,7 +142,7 @@ impl Lighter {
             Stage::DiffuseCosine(li, side) => self.diffuse_cosine(c, n, li, side),
             Stage::SpecularCosine(li, side) => self.specular_cosine(c, n, li, side),
             Stage::Power(_, side) => self.power(c, n, side),
-            Stage::Sum(li, side) => self.sum(c, &e.lights[li], side),
+            Stage::Sum(li, side) => self.sum(c, &e.lights[li.index()], side),
             // Added as the colours are written (`write`, `write_sum`).
             Stage::SceneColor => {}
         }
@@ -184,9 +185,9 @@ impl Lighter {
     /// A positional light's L and d at each vertex, in f64 (terms::light_direction on
     /// components), and the scale reset to 1 for `Attenuate` and `SpotPower`.
     #[inline(always)]
-    fn light_vector(&self, c: &mut Chunk, n: usize, li: usize) {
+    fn light_vector(&self, c: &mut Chunk, n: usize, li: LightId) {
         let e = &self.engine;
-        let LightPos::Positional(lp) = e.lights[li].pos else { return };
+        let LightPos::Positional(lp) = e.lights[li.index()].pos else { return };
         // terms::light_direction on components: one robust::normalize3 in f64, without
         // its scaling where that changes no bit (robust::unscaled_is_exact).
         for i in 0..n {
@@ -213,13 +214,13 @@ impl Lighter {
 
     /// A directional light's constant L (and its scale), as arrays where H or R reads them.
     #[inline(always)]
-    fn light_constant(&self, c: &mut Chunk, n: usize, li: usize) {
+    fn light_constant(&self, c: &mut Chunk, n: usize, li: LightId) {
         let e = &self.engine;
-        let k = &self.consts[li];
+        let k = &self.consts[li.index()];
         c.l_ok[..n].fill(k.l.is_some());
         c.scale[..n].fill(k.scale);
         // The cosines read the constant itself; per-vertex H or R read it as arrays.
-        let per_vertex_h_or_r = self.key.lights[li].specular
+        let per_vertex_h_or_r = self.key.lights[li.index()].specular
             && (e.rules.specular == SpecularModel::Phong || self.key.per_vertex_halfway(li));
         if per_vertex_h_or_r {
             let l = k.l.unwrap_or(Vec3::ZERO);
@@ -231,9 +232,9 @@ impl Lighter {
 
     /// The cosine of each L to the spot axis and the cone test (terms::spot_cone).
     #[inline(always)]
-    fn spot_cone(&self, c: &mut Chunk, n: usize, li: usize) {
+    fn spot_cone(&self, c: &mut Chunk, n: usize, li: LightId) {
         let e = &self.engine;
-        let Some(sp) = e.lights[li].spot else { return };
+        let Some(sp) = e.lights[li.index()].spot else { return };
         match sp.axis {
             None => c.inside[..n].fill(false),
             Some(axis) => {
@@ -250,9 +251,9 @@ impl Lighter {
     /// The spot factor (the cosine raised to the spot exponent inside the cone), folded into
     /// the scale.
     #[inline(always)]
-    fn spot_power(&self, c: &mut Chunk, n: usize, li: usize) {
+    fn spot_power(&self, c: &mut Chunk, n: usize, li: LightId) {
         let e = &self.engine;
-        let Some(sp) = e.lights[li].spot else { return };
+        let Some(sp) = e.lights[li.index()].spot else { return };
         if sp.axis.is_none() {
             c.inside[..n].fill(false);
         }
@@ -267,13 +268,16 @@ impl Lighter {
 
     /// `n_side . L` at each vertex for `side`.
     #[inline(always)]
-    fn diffuse_cosine(&self, c: &mut Chunk, n: usize, li: usize, side: usize) {
+    fn diffuse_cosine(&self, c: &mut Chunk, n: usize, li: LightId, side: Side) {
         // n_side . L with n_side = n or -n (negation is exact); a directional light's
         // L is the constant `consts[li].l`.
-        let ndl = &mut c.ndl[side];
-        let (nx, ny, nz) = if side == 0 { (&c.nx, &c.ny, &c.nz) } else { negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n) };
-        match self.consts.get(li).and_then(|k| k.l) {
-            Some(l) if !self.key.lights[li].positional => {
+        let ndl = &mut c.ndl[side.index()];
+        let (nx, ny, nz) = match side {
+            Side::Front => (&c.nx, &c.ny, &c.nz),
+            Side::Back => negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n),
+        };
+        match self.consts.get(li.index()).and_then(|k| k.l) {
+            Some(l) if !self.key.lights[li.index()].positional => {
                 for i in 0..n {
                     ndl[i] = terms::dot3(nx[i], ny[i], nz[i], l.x, l.y, l.z);
                 }
@@ -288,14 +292,16 @@ impl Lighter {
 
     /// The specular cosine for `side`: `n_side . H` (Blinn-Phong) or `R . V` (Phong).
     #[inline(always)]
-    fn specular_cosine(&self, c: &mut Chunk, n: usize, li: usize, side: usize) {
+    fn specular_cosine(&self, c: &mut Chunk, n: usize, li: LightId, side: Side) {
         let e = &self.engine;
-        let cos = &mut c.cos[side];
+        let cos = &mut c.cos[side.index()];
         match e.rules.specular {
             SpecularModel::BlinnPhong => {
-                let (nx, ny, nz) =
-                    if side == 0 { (&c.nx, &c.ny, &c.nz) } else { negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n) };
-                match self.consts.get(li).and_then(|k| k.h) {
+                let (nx, ny, nz) = match side {
+                    Side::Front => (&c.nx, &c.ny, &c.nz),
+                    Side::Back => negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n),
+                };
+                match self.consts.get(li.index()).and_then(|k| k.h) {
                     // HalfwayConstant: H is one vector.
                     Some(h) => {
                         for i in 0..n {
@@ -320,22 +326,23 @@ impl Lighter {
 
     /// The specular power for `side`, raised where `Sum` reads it.
     #[inline(always)]
-    fn power(&self, c: &mut Chunk, n: usize, side: usize) {
+    fn power(&self, c: &mut Chunk, n: usize, side: Side) {
         let e = &self.engine;
         // Raised where `Sum` reads the power (its specular is allowed there; the
         // lanes are kept for it in `Chunk::allowed`); the other lanes are raised as 0,
         // which the exact power does not compute at all (pow_f32_chunk_packed packs
         // the others together; without AVX-512 it skips blocks of 8 zeros). `Sum`
         // gives them f_i p = 0 whatever p is.
-        let shin = e.sides[side].shininess;
+        let s = side.index();
+        let shin = e.sides[s].shininess;
         let mut allowed = [false; CHUNK];
         self.specular_lanes(c, side, &mut allowed);
         let mut x = [0.0f32; CHUNK];
         for i in 0..n {
-            x[i] = keep_or_zero(allowed[i], c.cos[side][i]);
+            x[i] = keep_or_zero(allowed[i], c.cos[s][i]);
         }
-        power_loop(e.options.pow, &x, &mut c.p[side], n, shin);
-        c.allowed[side] = allowed;
+        power_loop(e.options.pow, &x, &mut c.p[s], n, shin);
+        c.allowed[s] = allowed;
     }
 
     /// Where the current light's specular is allowed on `side` (the `allowed` of
@@ -344,9 +351,9 @@ impl Lighter {
     /// by `Power` (which raises only these lanes) and `Sum`. One loop per gate (the gate is
     /// the scene's), `&` rather than `&&`, so each vectorises.
     #[inline(always)]
-    fn specular_lanes(&self, c: &Chunk, side: usize, allowed: &mut [bool; CHUNK]) {
+    fn specular_lanes(&self, c: &Chunk, side: Side, allowed: &mut [bool; CHUNK]) {
         let n = c.lanes();
-        let (ndl, cos) = (&c.ndl[side], &c.cos[side]);
+        let (ndl, cos) = (&c.ndl[side.index()], &c.cos[side.index()]);
         let (l_ok, zero, h_ok) = (&c.l_ok, &c.zero, &c.h_ok);
         macro_rules! where_gate {
             ($g:expr) => {
@@ -366,21 +373,22 @@ impl Lighter {
     /// side's sums. First which vertices the light reaches and where its specular is
     /// allowed, then one loop per channel (so each vectorises).
     #[inline(always)]
-    fn sum(&self, c: &mut Chunk, pl: &PreparedLight<f32>, side: usize) {
+    fn sum(&self, c: &mut Chunk, pl: &PreparedLight<f32>, side: Side) {
         let e = &self.engine;
         let n = c.lanes();
-        let [amb, dif, spe] = pl.products[side].map(|v| v.to_array());
+        let s = side.index();
+        let [amb, dif, spe] = pl.products[s].map(|v| v.to_array());
         let separate = e.separate_specular;
         let specular_on = self.key.lights.get(pl.index).is_some_and(|l| l.specular);
-        let (ndl, scale) = (&c.ndl[side][..n], &c.scale[..n]);
+        let (ndl, scale) = (&c.ndl[s][..n], &c.scale[..n]);
         let (l_ok, zero) = (&c.l_ok[..n], &c.zero[..n]);
         // Shininess 0 (no `Power` stage): max(cos, 0)^0 = 1.
-        let p = if self.key.shininess_zero[side] { &ONES[..n] } else { &c.p[side][..n] };
+        let p = if self.key.shininess_zero[s] { &ONES[..n] } else { &c.p[s][..n] };
         // Where the specular is allowed: as `Power` found it for this light and side (it
         // ran just before, unless the shininess is 0), or found here.
         let mut own = [false; CHUNK];
-        let allowed = if self.key.has_power(pl.index, side) {
-            &c.allowed[side]
+        let allowed = if self.key.has_power(LightId(pl.index), side) {
+            &c.allowed[s]
         } else {
             if specular_on {
                 self.specular_lanes(c, side, &mut own);
@@ -396,7 +404,7 @@ impl Lighter {
             (dn[i], fp[i]) = terms::shared_factors(ndl[i], lit, allowed[i], p[i]);
         }
         let (dn, fp) = (&dn[..n], &fp[..n]);
-        let (pri, sec) = c.acc[2 * side..2 * side + 2].split_at_mut(1);
+        let (pri, sec) = c.acc[2 * s..2 * s + 2].split_at_mut(1);
         let channel = |acc: &mut [f32], ch: usize, k: usize| {
             for i in 0..n {
                 let t = terms::channel(amb[ch], dif[ch], spe[ch], dn[i], fp[i], separate, scale[i]);
@@ -416,7 +424,8 @@ impl Lighter {
     /// `terms::finish` for the chunk, written on plain arrays: `(e_cm + a_cm a_cs) + sum`
     /// (the first term only with `SceneColor` in the program), NaN shown as 0, the alphas.
     #[inline(always)]
-    pub(super) fn write(&self, c: &Chunk, side: usize, scene_color: bool, out: &mut [Lit]) {
+    pub(super) fn write(&self, c: &Chunk, side: Side, scene_color: bool, out: &mut [Lit]) {
+        let side = side.index();
         let m = &self.engine.sides[side];
         let base = (m.emission + m.scene_ambient).to_array();
         let sep = self.key.separate_specular;
@@ -431,7 +440,8 @@ impl Lighter {
 
     /// The colour sums of the chunk: `primary + secondary` rgb of [`Lighter::write`].
     #[inline(always)]
-    pub(super) fn write_sum(&self, c: &Chunk, side: usize, scene_color: bool, out: &mut [[f32; 4]]) {
+    pub(super) fn write_sum(&self, c: &Chunk, side: Side, scene_color: bool, out: &mut [[f32; 4]]) {
+        let side = side.index();
         let m = &self.engine.sides[side];
         let base = if scene_color { (m.emission + m.scene_ambient).to_array() } else { [0.0; 3] };
         let fix = |x: f32| if x.is_nan() { 0.0 } else { x };

@@ -1,16 +1,18 @@
-//! What a scene asks of the equation: the [`Key`] the specialised evaluator is built from.
-//! Which effects it computes and which it skips, and why, in words: [`super::effects`].
+//! What a scene asks of the equation: the [`Key`], and the [`Program`] of [`Stage`]s it
+//! compiles to. Which effects it computes and which it skips, and why, in words: the
+//! specialise group's `effects`.
 //!
 //! Mesa's fixed-function vertex program generator builds a state key and emits only the
-//! instructions it needs; phonglab does the same with a plan of array stages
-//! ([`crate::specialise::lighter`]). The key changes only when an effect switches on or off (a
+//! instructions it needs; phonglab does the same with a plan of array stages, which the
+//! specialise group's `lighter` runs over arrays and every writer (the worked calculation,
+//! the shader, the exports, the quiz) walks. The key changes only when an effect switches on or off (a
 //! light becomes positional, attenuation leaves (1, 0, 0), a cutoff leaves 180,
 //! shininess reaches 0...), never when a value merely moves, so a slider move does not
 //! re-plan.
 
 use crate::equation::lighting::{EvalOptions, Renormalize};
 use crate::model::rules::{Rules, SpecularModel};
-use crate::model::scene::{ColorMaterialMode, Face, NormalMode, Scene};
+use crate::model::scene::{ColorMaterialMode, Face, LightId, NormalMode, Scene, Side};
 use crate::model::transform::NormalMatrix;
 use crate::numerics::pow::PowFn;
 
@@ -118,13 +120,13 @@ impl Key {
     /// Does light `i` raise a power on `side` (`Stage::Power(i, side)`): it has a specular
     /// term there and the side's shininess is not 0? The program compiles the stage exactly
     /// then, and `Sum` relies on it having run.
-    pub fn has_power(&self, i: usize, side: usize) -> bool {
-        self.lights.get(i).is_some_and(|l| l.specular) && !self.shininess_zero[side]
+    pub fn has_power(&self, i: LightId, side: Side) -> bool {
+        self.lights.get(i.index()).is_some_and(|l| l.specular) && !self.shininess_zero[side.index()]
     }
 
     /// Does light `i` need a per-vertex H (Blinn-Phong) or R (Phong)?
-    pub fn per_vertex_halfway(&self, i: usize) -> bool {
-        let l = &self.lights[i];
+    pub fn per_vertex_halfway(&self, i: LightId) -> bool {
+        let l = &self.lights[i.index()];
         match self.rules.specular {
             SpecularModel::BlinnPhong => l.positional || self.per_vertex_view,
             SpecularModel::Phong => true,
@@ -173,36 +175,36 @@ pub enum Stage {
     /// V per vertex: `normalize(-P)` (local viewer) or the worksheet's `(0, 0, -sign(P.z))`.
     ViewVector,
     /// L and d of positional light `i` per vertex (f64, scaled before squaring).
-    LightVector(usize),
+    LightVector(LightId),
     /// L of directional light `i`: one constant (and its spot factor, one constant).
-    LightConstant(usize),
+    LightConstant(LightId),
     /// `att = 1 / (k0 + k1 d + k2 d^2)` per vertex.
-    Attenuate(usize),
+    Attenuate(LightId),
     /// The spot cosine `-L . s` and the cone test per vertex.
-    SpotCone(usize),
+    SpotCone(LightId),
     /// The spot factor `(-L . s)^s_rl` inside the cone.
-    SpotPower(usize),
+    SpotPower(LightId),
     /// `H = normalize(L + V)` per vertex.
-    Halfway(usize),
+    Halfway(LightId),
     /// `H = normalize(L + V)`: one constant (directional light, infinite viewer).
-    HalfwayConstant(usize),
+    HalfwayConstant(LightId),
     /// `R = 2 (N . L) N - L` per vertex (Phong's specular).
-    Reflect(usize),
-    /// `n . L` on a side (0 front, 1 back: -n).
-    DiffuseCosine(usize, usize),
+    Reflect(LightId),
+    /// `n . L` on a side (the back side's with -n).
+    DiffuseCosine(LightId, Side),
     /// `n . H` (or `R . V`) on a side.
-    SpecularCosine(usize, usize),
+    SpecularCosine(LightId, Side),
     /// `max(cos, 0)^s_rm` on a side.
-    Power(usize, usize),
+    Power(LightId, Side),
     /// The light's ambient + diffuse + specular, scaled by att spot, added to the side's sums.
-    Sum(usize, usize),
+    Sum(LightId, Side),
     /// `e_cm + a_cm a_cs` added to every side's primary colour.
     SceneColor,
 }
 
 impl Stage {
     /// The light the stage belongs to.
-    pub fn light(self) -> Option<usize> {
+    pub fn light(self) -> Option<LightId> {
         match self {
             Stage::LightVector(i)
             | Stage::LightConstant(i)
@@ -217,6 +219,52 @@ impl Stage {
             | Stage::Power(i, _)
             | Stage::Sum(i, _) => Some(i),
             _ => None,
+        }
+    }
+
+    /// The side the stage lights, for the stages of one side.
+    pub fn side(self) -> Option<Side> {
+        match self {
+            Stage::DiffuseCosine(_, side) | Stage::SpecularCosine(_, side) | Stage::Power(_, side) | Stage::Sum(_, side) => {
+                Some(side)
+            }
+            _ => None,
+        }
+    }
+}
+
+/// The stage as the shader's comment and the calculation panel write it:
+/// `DiffuseCosine(0, 1)` (light 0, the back side).
+impl std::fmt::Display for Stage {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let name = match self {
+            Stage::TransformNormal => "TransformNormal",
+            Stage::RescaleNormal => "RescaleNormal",
+            Stage::NormalizeNormal => "NormalizeNormal",
+            Stage::NormalizeNormalFast => "NormalizeNormalFast",
+            Stage::TransformPosition => "TransformPosition",
+            Stage::TransformPositionProjective => "TransformPositionProjective",
+            Stage::TranslatePosition => "TranslatePosition",
+            Stage::ZeroNormals => "ZeroNormals",
+            Stage::ViewVector => "ViewVector",
+            Stage::LightVector(_) => "LightVector",
+            Stage::LightConstant(_) => "LightConstant",
+            Stage::Attenuate(_) => "Attenuate",
+            Stage::SpotCone(_) => "SpotCone",
+            Stage::SpotPower(_) => "SpotPower",
+            Stage::Halfway(_) => "Halfway",
+            Stage::HalfwayConstant(_) => "HalfwayConstant",
+            Stage::Reflect(_) => "Reflect",
+            Stage::DiffuseCosine(..) => "DiffuseCosine",
+            Stage::SpecularCosine(..) => "SpecularCosine",
+            Stage::Power(..) => "Power",
+            Stage::Sum(..) => "Sum",
+            Stage::SceneColor => "SceneColor",
+        };
+        match (self.light(), self.side()) {
+            (Some(i), Some(side)) => write!(f, "{name}({i}, {})", side.index()),
+            (Some(i), None) => write!(f, "{name}({i})"),
+            _ => f.write_str(name),
         }
     }
 }
@@ -264,8 +312,8 @@ impl Program {
         if key.per_vertex_view && !key.lights.is_empty() {
             st.push(Stage::ViewVector);
         }
-        let sides = if key.two_sided { 2 } else { 1 };
-        for (i, l) in key.lights.iter().enumerate() {
+        let sides = if key.two_sided { &Side::ALL[..] } else { &Side::ALL[..1] };
+        for (i, l) in LightId::all(key.lights.len()).zip(&key.lights) {
             if l.positional {
                 st.push(Stage::LightVector(i));
                 if l.attenuated {
@@ -285,7 +333,7 @@ impl Program {
                     SpecularModel::Phong => Stage::Reflect(i),
                 });
             }
-            for side in 0..sides {
+            for &side in sides {
                 st.push(Stage::DiffuseCosine(i, side));
                 if l.specular {
                     st.push(Stage::SpecularCosine(i, side));
@@ -352,26 +400,6 @@ impl EffectKind {
             EffectKind::SpecularPower => crate::t!("effect-specular-power"),
         }
     }
-
-    /// The step of the worked calculation this effect decides (for showing a skipped
-    /// step greyed with its reason).
-    pub fn step_kind(self, specular: SpecularModel) -> Option<crate::equation::explain::StepKind> {
-        use crate::equation::explain::StepKind as K;
-        Some(match self {
-            EffectKind::Normalisation => K::Normal,
-            EffectKind::Position => K::Position,
-            EffectKind::ViewVector => K::V,
-            EffectKind::LightVector => K::Distance,
-            EffectKind::Attenuation => K::Attenuation,
-            EffectKind::Spotlight => K::Spot,
-            EffectKind::HalfwayOrReflection => match specular {
-                SpecularModel::BlinnPhong => K::H,
-                SpecularModel::Phong => K::R,
-            },
-            EffectKind::SpecularPower => K::Specular,
-            EffectKind::SceneColor | EffectKind::BackSide => return None,
-        })
-    }
 }
 
 impl Key {
@@ -383,5 +411,26 @@ impl Key {
     /// The program of object-space vertices (what Gouraud and the vertex panel run).
     pub fn program(&self) -> Program {
         Program::compile(self, SourceKind::Object)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A stage is written as the shader's stage list has always written it: the light's
+    /// number, then the side's (0 front, 1 back).
+    #[test]
+    fn a_stage_is_written_with_its_light_and_side_numbers() {
+        let written: Vec<String> = [
+            Stage::TransformNormal,
+            Stage::LightVector(LightId(2)),
+            Stage::DiffuseCosine(LightId(0), Side::Back),
+            Stage::Sum(LightId(1), Side::Front),
+        ]
+        .iter()
+        .map(Stage::to_string)
+        .collect();
+        assert_eq!(written, ["TransformNormal", "LightVector(2)", "DiffuseCosine(0, 1)", "Sum(1, 0)"]);
     }
 }
