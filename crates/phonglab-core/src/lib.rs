@@ -63,7 +63,7 @@ pub use error::SceneError;
 pub use lighting::{Engine, EvalOptions, Renormalize};
 pub use pow::PowFn;
 pub use real::{Precision, Real, Vec3Ops};
-pub use rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel};
+pub use rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel, SpecularVector};
 pub use scene::{
     ColorMaterial, ColorMaterialMode, Face, Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Rgba,
     Scene, Vertex,

@@ -316,9 +316,9 @@ fn key_bits() -> [Bit; 13] {
                 matches!(
                     st,
                     Stage::DiffuseCosine(_, Side::Back)
-                        | Stage::SpecularCosine(_, Side::Back)
+                        | Stage::SpecularCosine(_, Side::Back, _)
                         | Stage::Power(_, Side::Back)
-                        | Stage::Sum(_, Side::Back)
+                        | Stage::Sum(_, Side::Back, _)
                 )
             },
         ),
@@ -353,7 +353,7 @@ fn key_bits() -> [Bit; 13] {
             |st| {
                 matches!(
                     st,
-                    Stage::ViewVector
+                    Stage::ViewVector(_)
                         | Stage::Halfway(_)
                         | Stage::LightVector(_)
                         | Stage::TransformPosition
@@ -393,9 +393,9 @@ fn skipped_effects_ran_nothing(name: &str, l: &Lighter, trace: &[phonglab_core::
             EffectKind::Position => {
                 matches!(st, Stage::TransformPosition | Stage::TransformPositionProjective | Stage::TranslatePosition)
             }
-            EffectKind::ViewVector => matches!(st, Stage::ViewVector),
+            EffectKind::ViewVector => matches!(st, Stage::ViewVector(_)),
             EffectKind::SceneColor => matches!(st, Stage::SceneColor),
-            EffectKind::BackSide => matches!(st, Stage::Sum(_, Side::Back)),
+            EffectKind::BackSide => matches!(st, Stage::Sum(_, Side::Back, _)),
             EffectKind::LightVector => matches!(st, Stage::LightVector(_)),
             EffectKind::Attenuation => matches!(st, Stage::Attenuate(_)),
             EffectKind::Spotlight => matches!(st, Stage::SpotCone(_) | Stage::SpotPower(_)),
@@ -430,7 +430,7 @@ fn skipped_stages_never_run_for_any_key_bit() {
             if name != "nothing" {
                 assert!(!trace.iter().any(left_out), "{name} {model:?}: a left-out stage ran: {program:?}");
             }
-            assert!(program.contains(&Stage::Sum(LightId(0), Side::Front)));
+            assert!(program.iter().any(|s| matches!(s, Stage::Sum(LightId(0), Side::Front, _))));
             position_effect_is_what_ran(name, &l, &trace, &scene);
             skipped_effects_ran_nothing(name, &l, &trace);
             // And the colours are the general engine's.

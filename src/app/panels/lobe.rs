@@ -21,7 +21,7 @@ use egui::{Color32, Ui};
 use egui_plot::{Line, Plot, PlotPoints, VLine};
 use glam::DVec3;
 use phonglab_core::lighting::terms;
-use phonglab_core::{PowFn, Scene, SpecularGate, SpecularModel};
+use phonglab_core::{PowFn, Scene, SpecularGate, SpecularVector};
 
 use crate::app::model::evaluated::Evaluated;
 use crate::app::widgets::palette;
@@ -175,7 +175,11 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
     };
     let bg = ui.visuals().panel_fill;
     let ink = |c: Color32| palette::ink_on(c, bg);
-    let chosen = scene.rules.specular;
+    // The curve of the scene's own model drawn thicker.
+    let (blinn_chosen, phong_chosen) = match scene.rules.specular.vector() {
+        SpecularVector::Halfway => (true, false),
+        SpecularVector::Reflection => (false, true),
+    };
     let light = &scene.lights[eval.lights[0].index];
     let m = &scene.material;
     let kd = coefficient("kd", (m.diffuse * light.diffuse).truncate(), lobe.kd);
@@ -196,9 +200,9 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
             "Blinn-Phong ks (N·H)^n".into(),
             ink(palette::H),
             sweep(|p| lobe.blinn(p)),
-            chosen == SpecularModel::BlinnPhong,
+            blinn_chosen,
         ),
-        ("Phong ks (R·V)^n".into(), ink(palette::SPOT), sweep(|p| lobe.phong(p)), chosen == SpecularModel::Phong),
+        ("Phong ks (R·V)^n".into(), ink(palette::SPOT), sweep(|p| lobe.phong(p)), phong_chosen),
     ];
     legend_ui(ui, &curves);
     let avail = ui.available_size();

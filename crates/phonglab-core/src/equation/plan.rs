@@ -11,7 +11,7 @@
 //! re-plan.
 
 use crate::equation::lighting::{EvalOptions, Renormalize};
-use crate::model::rules::{Rules, SpecularModel};
+use crate::model::rules::{Rules, SpecularVector};
 use crate::model::scene::{ColorMaterialMode, Face, LightId, NormalMode, Scene, Side};
 use crate::model::transform::NormalMatrix;
 use crate::numerics::pow::PowFn;
@@ -127,9 +127,9 @@ impl Key {
     /// Does light `i` need a per-vertex H (Blinn-Phong) or R (Phong)?
     pub fn per_vertex_halfway(&self, i: LightId) -> bool {
         let l = &self.lights[i.index()];
-        match self.rules.specular {
-            SpecularModel::BlinnPhong => l.positional || self.per_vertex_view,
-            SpecularModel::Phong => true,
+        match self.rules.specular.vector() {
+            SpecularVector::Halfway => l.positional || self.per_vertex_view,
+            SpecularVector::Reflection => true,
         }
     }
 }
@@ -146,6 +146,28 @@ pub enum SourceKind {
     /// Eye-space points with interpolated normals to renormalise as the options say
     /// (Phong fragments).
     EyeRaw(Renormalize),
+}
+
+/// Where the viewer is, as V is formed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Viewer {
+    /// A local viewer (`GL_LIGHT_MODEL_LOCAL_VIEWER`): `V = normalize(-P)`.
+    Local,
+    /// The worksheet's infinite viewer, `V = normalize(obs - P)` with
+    /// `obs = P (1, 1, 0, 1)`: `(0, 0, -sign(P.z))`.
+    EyePlane,
+    /// OpenGL's infinite viewer: `V = (0, 0, 1)`, one constant.
+    Infinite,
+}
+
+/// What a light's specular term is on a side, as the plan compiled it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SpecularTerm {
+    /// None to add: the light's specular times the material's is zero (the evaluator's
+    /// program leaves the term out; the worked program never does).
+    Zero,
+    /// `f max(cos, 0)^s_rm s_cm s_cl`.
+    Plain,
 }
 
 /// One stage of the specialised program: a loop over a chunk of vertices. The list a key
@@ -172,8 +194,10 @@ pub enum Stage {
     TranslatePosition,
     /// Which normals are zero (no direction: no diffuse, no specular).
     ZeroNormals,
-    /// V per vertex: `normalize(-P)` (local viewer) or the worksheet's `(0, 0, -sign(P.z))`.
-    ViewVector,
+    /// V: per vertex, `normalize(-P)` (a local viewer) or the worksheet's
+    /// `(0, 0, -sign(P.z))`; or OpenGL's infinite viewer's (0, 0, 1), which only the worked
+    /// program ([`Program::worked`]) writes out.
+    ViewVector(Viewer),
     /// L and d of positional light `i` per vertex (f64, scaled before squaring).
     LightVector(LightId),
     /// L of directional light `i`: one constant (and its spot factor, one constant).
@@ -192,12 +216,14 @@ pub enum Stage {
     Reflect(LightId),
     /// `n . L` on a side (the back side's with -n).
     DiffuseCosine(LightId, Side),
-    /// `n . H` (or `R . V`) on a side.
-    SpecularCosine(LightId, Side),
+    /// The specular cosine on a side: `n . H`, or `R . V` (the same on both sides: R is
+    /// formed with the front normal).
+    SpecularCosine(LightId, Side, SpecularVector),
     /// `max(cos, 0)^s_rm` on a side.
     Power(LightId, Side),
-    /// The light's ambient + diffuse + specular, scaled by att spot, added to the side's sums.
-    Sum(LightId, Side),
+    /// The light's ambient + diffuse + specular, scaled by att spot, added to the side's sums;
+    /// the specular term as the plan found it.
+    Sum(LightId, Side, SpecularTerm),
     /// `e_cm + a_cm a_cs` added to every side's primary colour.
     SceneColor,
 }
@@ -215,9 +241,9 @@ impl Stage {
             | Stage::HalfwayConstant(i)
             | Stage::Reflect(i)
             | Stage::DiffuseCosine(i, _)
-            | Stage::SpecularCosine(i, _)
+            | Stage::SpecularCosine(i, _, _)
             | Stage::Power(i, _)
-            | Stage::Sum(i, _) => Some(i),
+            | Stage::Sum(i, _, _) => Some(i),
             _ => None,
         }
     }
@@ -225,9 +251,10 @@ impl Stage {
     /// The side the stage lights, for the stages of one side.
     pub fn side(self) -> Option<Side> {
         match self {
-            Stage::DiffuseCosine(_, side) | Stage::SpecularCosine(_, side) | Stage::Power(_, side) | Stage::Sum(_, side) => {
-                Some(side)
-            }
+            Stage::DiffuseCosine(_, side)
+            | Stage::SpecularCosine(_, side, _)
+            | Stage::Power(_, side)
+            | Stage::Sum(_, side, _) => Some(side),
             _ => None,
         }
     }
@@ -246,7 +273,7 @@ impl std::fmt::Display for Stage {
             Stage::TransformPositionProjective => "TransformPositionProjective",
             Stage::TranslatePosition => "TranslatePosition",
             Stage::ZeroNormals => "ZeroNormals",
-            Stage::ViewVector => "ViewVector",
+            Stage::ViewVector(_) => "ViewVector",
             Stage::LightVector(_) => "LightVector",
             Stage::LightConstant(_) => "LightConstant",
             Stage::Attenuate(_) => "Attenuate",
@@ -276,20 +303,45 @@ pub struct Program {
     pub stages: Vec<Stage>,
 }
 
+/// What the compiler leaves out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Keep {
+    /// Only what must run: every stage whose result the key knows (a product by 1, a sum
+    /// with +0, a constant) is left out. The evaluator's and the shader's program.
+    Needed,
+    /// Every term of the rules' equation, as a person works it by hand (at = 1 is still
+    /// computed): the worked calculation's, the notebook's and the quiz's program.
+    Every,
+}
+
 impl Program {
     /// Compiles `key` for vertices from `source`: only the stages the key calls for.
     pub fn compile(key: &Key, source: SourceKind) -> Program {
+        Self::compile_keeping(key, source, Keep::Needed)
+    }
+
+    /// The worked program of `key`: every term of the equation its rules have, none left out
+    /// for a value the key knows (the attenuation of a light without one, the specular of
+    /// a light whose specular product is zero, the scene colour of 0, V of an infinite
+    /// viewer), for object-space vertices. What the worked calculation, the notebook and
+    /// the quiz walk.
+    pub fn worked(key: &Key) -> Program {
+        Self::compile_keeping(key, SourceKind::Object, Keep::Every)
+    }
+
+    fn compile_keeping(key: &Key, source: SourceKind, keep: Keep) -> Program {
+        let every = keep == Keep::Every;
         let mut st = Vec::new();
         match source {
             SourceKind::Object => {
                 st.push(Stage::TransformNormal);
                 match key.normals {
                     NormalMode::AsIs => {}
-                    NormalMode::Rescale if key.rescale_is_one => {}
+                    NormalMode::Rescale if key.rescale_is_one && !every => {}
                     NormalMode::Rescale => st.push(Stage::RescaleNormal),
                     NormalMode::Normalize => st.push(Stage::NormalizeNormal),
                 }
-                if key.needs_positions() {
+                if key.needs_positions() || every {
                     st.push(if key.projective {
                         Stage::TransformPositionProjective
                     } else if key.translation {
@@ -309,50 +361,72 @@ impl Program {
         if !key.lights.is_empty() {
             st.push(Stage::ZeroNormals);
         }
-        if key.per_vertex_view && !key.lights.is_empty() {
-            st.push(Stage::ViewVector);
+        let viewer = match (key.local_viewer, key.per_vertex_view) {
+            (true, _) => Viewer::Local,
+            (false, true) => Viewer::EyePlane,
+            (false, false) => Viewer::Infinite,
+        };
+        if every || (viewer != Viewer::Infinite && !key.lights.is_empty()) {
+            st.push(Stage::ViewVector(viewer));
         }
-        let sides = if key.two_sided { &Side::ALL[..] } else { &Side::ALL[..1] };
         for (i, l) in LightId::all(key.lights.len()).zip(&key.lights) {
-            if l.positional {
-                st.push(Stage::LightVector(i));
-                if l.attenuated {
-                    st.push(Stage::Attenuate(i));
-                }
-                if l.spot {
-                    st.push(Stage::SpotCone(i));
-                    st.push(Stage::SpotPower(i));
-                }
-            } else {
-                st.push(Stage::LightConstant(i));
-            }
-            if l.specular {
-                st.push(match key.rules.specular {
-                    SpecularModel::BlinnPhong if key.per_vertex_halfway(i) => Stage::Halfway(i),
-                    SpecularModel::BlinnPhong => Stage::HalfwayConstant(i),
-                    SpecularModel::Phong => Stage::Reflect(i),
-                });
-            }
-            for &side in sides {
-                st.push(Stage::DiffuseCosine(i, side));
-                if l.specular {
-                    st.push(Stage::SpecularCosine(i, side));
-                }
-                if key.has_power(i, side) {
-                    st.push(Stage::Power(i, side));
-                }
-                st.push(Stage::Sum(i, side));
-            }
+            Self::light_stages(key, i, l, keep, &mut st);
         }
-        if !key.scene_color_zero {
+        let scene_color = if every { key.rules.emission() || key.rules.scene_ambient() } else { !key.scene_color_zero };
+        if scene_color {
             st.push(Stage::SceneColor);
         }
         Program { stages: st }
     }
 
+    /// Light `i`'s stages: L, its attenuation and spot factor, H or R, then each side's
+    /// cosines, power and sum.
+    fn light_stages(key: &Key, i: LightId, l: &LightKey, keep: Keep, st: &mut Vec<Stage>) {
+        let every = keep == Keep::Every;
+        if l.positional {
+            st.push(Stage::LightVector(i));
+            if l.attenuated || every {
+                st.push(Stage::Attenuate(i));
+            }
+        } else {
+            st.push(Stage::LightConstant(i));
+        }
+        // A directional light's spot factor is a constant the evaluator folds into L's.
+        if l.spot && (l.positional || every) {
+            st.push(Stage::SpotCone(i));
+            st.push(Stage::SpotPower(i));
+        }
+        let specular = l.specular || every;
+        let vector = key.rules.specular.vector();
+        if specular {
+            st.push(match vector {
+                SpecularVector::Halfway if key.per_vertex_halfway(i) => Stage::Halfway(i),
+                SpecularVector::Halfway => Stage::HalfwayConstant(i),
+                SpecularVector::Reflection => Stage::Reflect(i),
+            });
+        }
+        let term = if specular { SpecularTerm::Plain } else { SpecularTerm::Zero };
+        let sides = if key.two_sided { &Side::ALL[..] } else { &Side::ALL[..1] };
+        for &side in sides {
+            st.push(Stage::DiffuseCosine(i, side));
+            if specular {
+                st.push(Stage::SpecularCosine(i, side, vector));
+            }
+            if key.has_power(i, side) || (every && specular) {
+                st.push(Stage::Power(i, side));
+            }
+            st.push(Stage::Sum(i, side, term));
+        }
+    }
+
     /// Does the program run `stage`?
     pub fn has(&self, stage: Stage) -> bool {
         self.stages.contains(&stage)
+    }
+
+    /// The stages of light `i`, in order.
+    pub fn of_light(&self, i: LightId) -> impl Iterator<Item = Stage> + '_ {
+        self.stages.iter().copied().filter(move |s| s.light() == Some(i))
     }
 }
 
@@ -383,7 +457,7 @@ pub enum EffectKind {
 
 impl EffectKind {
     /// The effect's name, e.g. "attenuation".
-    pub fn name(self, specular: SpecularModel) -> String {
+    pub fn name(self, vector: SpecularVector) -> String {
         match self {
             EffectKind::Normalisation => crate::t!("effect-normalisation"),
             EffectKind::Position => crate::t!("effect-position"),
@@ -393,9 +467,9 @@ impl EffectKind {
             EffectKind::LightVector => crate::t!("effect-light-vector"),
             EffectKind::Attenuation => crate::t!("effect-attenuation"),
             EffectKind::Spotlight => crate::t!("effect-spotlight"),
-            EffectKind::HalfwayOrReflection => match specular {
-                SpecularModel::BlinnPhong => crate::t!("effect-halfway"),
-                SpecularModel::Phong => crate::t!("effect-reflection"),
+            EffectKind::HalfwayOrReflection => match vector {
+                SpecularVector::Halfway => crate::t!("effect-halfway"),
+                SpecularVector::Reflection => crate::t!("effect-reflection"),
             },
             EffectKind::SpecularPower => crate::t!("effect-specular-power"),
         }
@@ -426,11 +500,60 @@ mod tests {
             Stage::TransformNormal,
             Stage::LightVector(LightId(2)),
             Stage::DiffuseCosine(LightId(0), Side::Back),
-            Stage::Sum(LightId(1), Side::Front),
+            Stage::Sum(LightId(1), Side::Front, SpecularTerm::Plain),
         ]
         .iter()
         .map(Stage::to_string)
         .collect();
         assert_eq!(written, ["TransformNormal", "LightVector(2)", "DiffuseCosine(0, 1)", "Sum(1, 0)"]);
+    }
+
+    /// The worked program keeps every term the evaluator's program leaves out for a value
+    /// the key knows, and only those: an attenuation of (1, 0, 0), V of OpenGL's infinite
+    /// viewer, the power at shininess 0, a specular of zero, a scene colour of zero.
+    #[test]
+    fn the_worked_program_keeps_the_terms_whose_value_is_known() {
+        let mut scene = crate::model::presets::worksheet(5);
+        scene.rules = Rules::OPENGL;
+        scene.material.shininess = 0.0;
+        scene.material.emission = glam::DVec4::W;
+        scene.light_model.ambient = glam::DVec4::W;
+        scene.lights[0].specular = glam::DVec4::W;
+        scene.lights[0].attenuation = [1.0, 0.0, 0.0];
+        let key = Key::of(&scene, EvalOptions::default());
+        let (needed, worked) = (key.program(), Program::worked(&key));
+        let light = LightId(0);
+        let known = [
+            Stage::ViewVector(Viewer::Infinite),
+            Stage::Attenuate(light),
+            Stage::Halfway(light),
+            Stage::SpecularCosine(light, Side::Front, SpecularVector::Halfway),
+            Stage::Power(light, Side::Front),
+            Stage::SceneColor,
+        ];
+        for stage in known {
+            assert!(worked.has(stage) && !needed.has(stage), "{stage}: {worked:?} / {needed:?}");
+        }
+        assert!(needed.has(Stage::Sum(light, Side::Front, SpecularTerm::Zero)));
+        assert!(worked.has(Stage::Sum(light, Side::Front, SpecularTerm::Plain)));
+        // Everything else is the same list, in the same order.
+        let rest: Vec<Stage> = worked.stages.iter().copied().filter(|s| !known.contains(s)).collect();
+        let needed_rest: Vec<Stage> =
+            needed.stages.iter().map(|s| if let Stage::Sum(i, side, _) = *s { Stage::Sum(i, side, SpecularTerm::Plain) } else { *s }).collect();
+        assert_eq!(rest, needed_rest);
+    }
+
+    /// A stage's forms come from the rules and the light model: Phong's R and its cosine,
+    /// the local viewer's and the worksheet's V.
+    #[test]
+    fn the_stages_carry_the_forms_of_their_terms() {
+        let demo = crate::model::presets::phong_demo();
+        let program = Key::of(&demo, EvalOptions::default()).program();
+        assert!(program.has(Stage::Reflect(LightId(0))));
+        assert!(program.has(Stage::SpecularCosine(LightId(0), Side::Front, SpecularVector::Reflection)));
+        let mut ws = crate::model::presets::worksheet(5);
+        assert!(Key::of(&ws, EvalOptions::default()).program().has(Stage::ViewVector(Viewer::EyePlane)));
+        ws.light_model.local_viewer = true;
+        assert!(Key::of(&ws, EvalOptions::default()).program().has(Stage::ViewVector(Viewer::Local)));
     }
 }

@@ -44,7 +44,7 @@ pub enum SpecularModel {
 }
 
 impl SpecularModel {
-    /// Both models, in menu order.
+    /// Every model, in menu order.
     pub const ALL: [SpecularModel; 2] = [SpecularModel::BlinnPhong, SpecularModel::Phong];
 
     /// A short name for menus and files.
@@ -54,6 +54,43 @@ impl SpecularModel {
             SpecularModel::Phong => "Phong (R.V)",
         }
     }
+
+    /// The name a notebook's `specular = "..."` setting gives it (the scene file's too).
+    pub fn name(self) -> &'static str {
+        match self {
+            SpecularModel::BlinnPhong => "blinn-phong",
+            SpecularModel::Phong => "phong",
+        }
+    }
+
+    /// The model named `name` ([`SpecularModel::name`]).
+    pub fn from_name(name: &str) -> Option<SpecularModel> {
+        SpecularModel::ALL.into_iter().find(|m| m.name() == name)
+    }
+
+    /// The next model in menu order, the last followed by the first (the window's key B).
+    pub fn next(self) -> SpecularModel {
+        let at = SpecularModel::ALL.iter().position(|m| *m == self).unwrap_or(0);
+        SpecularModel::ALL[(at + 1) % SpecularModel::ALL.len()]
+    }
+
+    /// The vector its cosine is taken with: H (Blinn-Phong) or R (Phong). The engine, the
+    /// plan and the window's vectors ask this, never which model it is.
+    pub fn vector(self) -> SpecularVector {
+        match self {
+            SpecularModel::BlinnPhong => SpecularVector::Halfway,
+            SpecularModel::Phong => SpecularVector::Reflection,
+        }
+    }
+}
+
+/// The vector a specular cosine is taken with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SpecularVector {
+    /// The halfway vector `H = normalize(L + V)`: the cosine is `n . H` (Blinn-Phong).
+    Halfway,
+    /// The reflection of L about n, `R = 2 (n . L) n - L`: the cosine is `R . V` (Phong).
+    Reflection,
 }
 
 /// When a light's specular term is allowed at all.
@@ -146,5 +183,24 @@ impl Rules {
 impl fmt::Display for Rules {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}, {}", self.set.label(), self.specular.label())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_specular_model_is_found_by_its_name_and_the_next_one_goes_round() {
+        for m in SpecularModel::ALL {
+            assert_eq!(SpecularModel::from_name(m.name()), Some(m));
+        }
+        assert_eq!(SpecularModel::from_name("blinn"), None);
+        let mut m = SpecularModel::ALL[0];
+        for _ in 0..SpecularModel::ALL.len() {
+            m = m.next();
+        }
+        assert_eq!(m, SpecularModel::ALL[0]);
+        assert_eq!(SpecularModel::BlinnPhong.next(), SpecularModel::Phong);
     }
 }

@@ -6,7 +6,7 @@
 use std::fmt;
 
 use crate::equation::plan::*;
-use crate::model::rules::SpecularModel;
+use crate::model::rules::SpecularVector;
 use crate::model::scene::{LightId, NormalMode, Side};
 use crate::specialise::lighter::CHUNK;
 
@@ -24,8 +24,8 @@ pub struct Effect {
     pub on: bool,
     /// Why, e.g. "the light is directional".
     pub why: String,
-    /// The specular model (decides whether H or R is meant).
-    specular: SpecularModel,
+    /// The specular vector (decides whether H or R is meant).
+    vector: SpecularVector,
 }
 
 impl fmt::Display for Effect {
@@ -38,14 +38,14 @@ impl fmt::Display for Effect {
 impl Effect {
     /// The step of the worked calculation this effect decides.
     pub fn step_kind(&self) -> Option<crate::equation::explain::StepKind> {
-        self.kind.step_kind(self.specular)
+        self.kind.step_kind(self.vector)
     }
 }
 
 impl EffectKind {
     /// The step of the worked calculation this effect decides (for showing a skipped
     /// step greyed with its reason).
-    pub fn step_kind(self, specular: SpecularModel) -> Option<crate::equation::explain::StepKind> {
+    pub fn step_kind(self, vector: SpecularVector) -> Option<crate::equation::explain::StepKind> {
         use crate::equation::explain::StepKind as K;
         Some(match self {
             EffectKind::Normalisation => K::Normal,
@@ -54,9 +54,9 @@ impl EffectKind {
             EffectKind::LightVector => K::Distance,
             EffectKind::Attenuation => K::Attenuation,
             EffectKind::Spotlight => K::Spot,
-            EffectKind::HalfwayOrReflection => match specular {
-                SpecularModel::BlinnPhong => K::H,
-                SpecularModel::Phong => K::R,
+            EffectKind::HalfwayOrReflection => match vector {
+                SpecularVector::Halfway => K::H,
+                SpecularVector::Reflection => K::R,
             },
             EffectKind::SpecularPower => K::Specular,
             EffectKind::SceneColor | EffectKind::BackSide => return None,
@@ -74,14 +74,14 @@ impl Key {
 
     /// Every effect with whether `program` runs it and why.
     pub fn effects_of(&self, program: &Program) -> Vec<Effect> {
-        let sp = self.rules.specular;
+        let vector = self.rules.specular.vector();
         let e = |kind: EffectKind, light, on: bool, why: String| Effect {
             kind,
             light,
-            name: kind.name(sp),
+            name: kind.name(vector),
             on,
             why,
-            specular: sp,
+            vector,
         };
         let has = |s: Stage| program.has(s);
         let normalised = has(Stage::NormalizeNormal) || has(Stage::RescaleNormal) || has(Stage::NormalizeNormalFast);
@@ -109,26 +109,20 @@ impl Key {
                 (false, false, true) => e(EffectKind::Position, None, false, crate::t!("why-position-eye")),
                 (false, false, false) => e(EffectKind::Position, None, false, crate::t!("why-position-unread")),
             },
-            if has(Stage::ViewVector) {
-                e(
-                    EffectKind::ViewVector,
-                    None,
-                    true,
-                    if self.local_viewer {
-                        crate::t!("why-v-local", chunk = CHUNK)
-                    } else {
-                        crate::t!("why-v-worksheet")
-                    },
-                )
-            } else {
-                e(EffectKind::ViewVector, None, false, crate::t!("why-v-infinite"))
+            match program.stages.iter().find_map(|s| match s {
+                Stage::ViewVector(viewer) => Some(*viewer),
+                _ => None,
+            }) {
+                Some(Viewer::Local) => e(EffectKind::ViewVector, None, true, crate::t!("why-v-local", chunk = CHUNK)),
+                Some(Viewer::EyePlane) => e(EffectKind::ViewVector, None, true, crate::t!("why-v-worksheet")),
+                Some(Viewer::Infinite) | None => e(EffectKind::ViewVector, None, false, crate::t!("why-v-infinite")),
             },
             if has(Stage::SceneColor) {
                 e(EffectKind::SceneColor, None, true, crate::t!("why-scene-added"))
             } else {
                 e(EffectKind::SceneColor, None, false, crate::t!("why-scene-zero"))
             },
-            if program.stages.iter().any(|s| matches!(s, Stage::Sum(_, Side::Back))) {
+            if program.stages.iter().any(|s| s.side() == Some(Side::Back)) {
                 e(EffectKind::BackSide, None, true, crate::t!("why-two-sided"))
             } else {
                 e(EffectKind::BackSide, None, false, crate::t!("why-one-sided"))

@@ -79,6 +79,8 @@ struct LightConsts {
     h: Option<Vec3>,
     /// The spot factor of a directional light (att = 1): its scale, constant over vertices.
     scale: f32,
+    /// A directional light's L is wanted as arrays: the program forms H or R per vertex.
+    l_arrays: bool,
 }
 
 /// Where the colours go.
@@ -325,8 +327,8 @@ impl Lighter {
     pub fn new(scene: &Scene, options: EvalOptions) -> Result<Self, SceneError> {
         let engine = Engine::<f32>::with_options(scene, options)?;
         let key = Key::of(scene, options);
-        let consts = Self::fold(&engine, &key);
         let [object, eye, eye_raw] = Self::compile(&key, options);
+        let consts = Self::fold(&engine, &object);
         Ok(Lighter { key, engine, object, eye, eye_raw, consts, replans: 1 })
     }
 
@@ -349,7 +351,7 @@ impl Lighter {
             self.key = key;
             self.replans += 1;
         }
-        self.consts = Self::fold(&engine, &self.key);
+        self.consts = Self::fold(&engine, &self.object);
         self.engine = engine;
         Ok(replan)
     }
@@ -378,22 +380,25 @@ impl Lighter {
         }
     }
 
-    /// Constants that do not depend on the vertex: a directional light's L, its H under
-    /// an infinite viewer, its spot factor.
-    fn fold(engine: &Engine<f32>, key: &Key) -> Vec<LightConsts> {
+    /// Constants that do not depend on the vertex: a directional light's L, its H where
+    /// `program` takes it as one constant (`HalfwayConstant`), its spot factor. (H and R
+    /// are the same stages whatever the source, so the object program tells for all.)
+    fn fold(engine: &Engine<f32>, program: &Program) -> Vec<LightConsts> {
         engine
             .lights
             .iter()
             .enumerate()
             .map(|(i, pl)| match pl.pos {
                 LightPos::Directional { unit, .. } => {
+                    let i = LightId(i);
                     let l = unit.map(Vec3::from_dvec3);
-                    let h = match (l, key.per_vertex_halfway(LightId(i))) {
-                        (Some(l), false) => terms::halfway::<f32>(l, Vec3::Z),
+                    let h = match (l, program.has(Stage::HalfwayConstant(i))) {
+                        (Some(l), true) => terms::halfway::<f32>(l, Vec3::Z),
                         _ => None,
                     };
                     let spot = pl.spot.map_or(1.0, |sp| terms::spot(&sp, unit, engine.options.pow).2);
-                    LightConsts { l, h, scale: mul0(1.0, spot) }
+                    let l_arrays = program.has(Stage::Halfway(i)) || program.has(Stage::Reflect(i));
+                    LightConsts { l, h, scale: mul0(1.0, spot), l_arrays }
                 }
                 LightPos::Positional(_) => LightConsts::default(),
             })

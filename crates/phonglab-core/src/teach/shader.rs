@@ -17,9 +17,9 @@ use std::fmt::Write as _;
 
 use crate::equation::explain::{Explanation, StepKind};
 use crate::equation::lighting::EvalOptions;
-use crate::model::rules::{NormalTransform, SpecularGate, SpecularModel};
+use crate::model::rules::{NormalTransform, SpecularGate, SpecularVector};
 use crate::model::scene::{ColorMaterialMode, LightId, Scene, Side};
-use crate::equation::plan::{Key, Program, SourceKind, Stage};
+use crate::equation::plan::{Key, Program, SourceKind, SpecularTerm, Stage, Viewer};
 
 /// The shading language.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -213,10 +213,10 @@ impl Body<'_> {
         }
     }
 
-    /// V in the specular cosines: the per-vertex view vector, or (0, 0, 1) for an infinite
-    /// viewer.
+    /// V in the specular cosines: the view vector where the program forms one, else the
+    /// infinite viewer's (0, 0, 1).
     fn view(&self) -> String {
-        if self.key.per_vertex_view { "V".to_string() } else { format!("{}(0.0, 0.0, 1.0)", self.s.vec3()) }
+        if has_view_vector(self.program) { "V".to_string() } else { format!("{}(0.0, 0.0, 1.0)", self.s.vec3()) }
     }
 
     /// Where the rules let the specular term through (OpenGL: the lit side; the worksheet: a
@@ -247,7 +247,7 @@ impl Body<'_> {
                 let n_ok = self.s.var("bool", "n_ok", "dot(N, N) > 0.0");
                 self.lines.push(format!("{n_ok} // {}", crate::t!("shader-note-zero-normal")));
             }
-            Stage::ViewVector => self.view_vector(),
+            Stage::ViewVector(viewer) => self.view_vector(viewer),
             Stage::LightVector(i) => self.light_vector(i),
             Stage::LightConstant(i) => {
                 let l = self.uni(format!("light{i}_direction"), "vec3");
@@ -287,10 +287,10 @@ impl Body<'_> {
                 let s = side.index();
                 self.var("float", &format!("ndl{i}_{s}"), &e, StepKind::CosTheta, Some(i), "");
             }
-            Stage::SpecularCosine(i, side) => {
-                let e = match self.scene.rules.specular {
-                    SpecularModel::BlinnPhong => format!("dot({}, H{i})", Self::normal(side)),
-                    SpecularModel::Phong => format!("dot(R{i}, {})", self.view()),
+            Stage::SpecularCosine(i, side, vector) => {
+                let e = match vector {
+                    SpecularVector::Halfway => format!("dot({}, H{i})", Self::normal(side)),
+                    SpecularVector::Reflection => format!("dot(R{i}, {})", self.view()),
                 };
                 let s = side.index();
                 self.var("float", &format!("spec_cos{i}_{s}"), &e, StepKind::CosBeta, Some(i), "");
@@ -301,7 +301,7 @@ impl Body<'_> {
                 let e = self.s.select(&self.gate_open(i, side), &format!("pow(max(spec_cos{i}_{s}, 0.0), {sh})"), "0.0");
                 self.var("float", &format!("pf{i}_{s}"), &e, StepKind::Specular, Some(i), "");
             }
-            Stage::Sum(i, side) => self.sum(i, side),
+            Stage::Sum(i, side, term) => self.sum(i, side, term),
             Stage::SceneColor => {
                 let c = self.uni("scene_color".into(), "vec3");
                 for side in self.sides() {
@@ -314,12 +314,13 @@ impl Body<'_> {
         }
     }
 
-    /// V: towards the eye from P (local viewer), or the axis for an infinite viewer.
-    fn view_vector(&mut self) {
-        let e = if self.key.local_viewer {
-            "normalize(-P)".to_string()
-        } else {
-            format!("{}(0.0, 0.0, -sign(P.z))", self.s.vec3())
+    /// V: towards the eye from P (local viewer), the worksheet's axis, or OpenGL's
+    /// infinite viewer's.
+    fn view_vector(&mut self, viewer: Viewer) {
+        let e = match viewer {
+            Viewer::Local => "normalize(-P)".to_string(),
+            Viewer::EyePlane => format!("{}(0.0, 0.0, -sign(P.z))", self.s.vec3()),
+            Viewer::Infinite => format!("{}(0.0, 0.0, 1.0)", self.s.vec3()),
         };
         self.var("vec3", "V", &e, StepKind::V, None, " (V)");
     }
@@ -346,7 +347,7 @@ impl Body<'_> {
 
     /// Light `i`'s share on `side`: its ambient, diffuse and specular terms, scaled by its
     /// attenuation and spot factor, added to the side's sum.
-    fn sum(&mut self, i: LightId, side: Side) {
+    fn sum(&mut self, i: LightId, side: Side, term: SpecularTerm) {
         let (la, ld, ls) = (
             self.uni(format!("light{i}_ambient"), "vec3"),
             self.uni(format!("light{i}_diffuse"), "vec3"),
@@ -356,7 +357,11 @@ impl Body<'_> {
         let s = side.index();
         let mut terms = format!("{la} * {ma} + {ld} * {md}.xyz * max(ndl{i}_{s}, 0.0)");
         let mut specular = None;
-        if self.key.lights[i.index()].specular {
+        let specular_on = match term {
+            SpecularTerm::Zero => false,
+            SpecularTerm::Plain => true,
+        };
+        if specular_on {
             let ms = self.material_color(side, "specular", "vec3");
             // The power (or 1 at shininess 0) where the gate lets it through.
             let pf = if self.program.has(Stage::Power(i, side)) {
@@ -453,7 +458,7 @@ fn prologue(scene: &Scene, program: &Program, ex: &Explanation, s: &Syn, uniform
             step_no(ex, StepKind::Position, None),
             crate::t!("shader-note-translation")
         ));
-    } else if program.has(Stage::TransformPosition) || program.has(Stage::ViewVector) {
+    } else if program.has(Stage::TransformPosition) || has_view_vector(program) {
         o.push(format!(
             "{} // {} ({})",
             s.var("vec3", "P", &format!("({mv} * {v4}({p_in}, 1.0)).xyz")),
@@ -462,6 +467,11 @@ fn prologue(scene: &Scene, program: &Program, ex: &Explanation, s: &Syn, uniform
         ));
     }
     o
+}
+
+/// Does `program` form V (a `V` variable the cosines read)?
+fn has_view_vector(program: &Program) -> bool {
+    program.stages.iter().any(|s| matches!(s, Stage::ViewVector(_)))
 }
 
 /// The uniform declarations.

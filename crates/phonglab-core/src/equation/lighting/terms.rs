@@ -184,8 +184,8 @@ pub struct SpecularInputs<S: Real> {
     pub v: Option<S::V3>,
     /// When the specular is allowed.
     pub gate: SpecularGate,
-    /// Blinn-Phong or Phong.
-    pub model: SpecularModel,
+    /// H (Blinn-Phong) or R (Phong).
+    pub vector: SpecularVector,
 }
 
 /// One light's terms on one side: `lit` is L where the light reaches the surface with a
@@ -208,9 +208,11 @@ pub fn side<S: Real>(
     let mut p = S::ONE;
     if let Some(l) = lit {
         st.n_dot_l = dot3(n_side.x(), n_side.y(), n_side.z(), l.x(), l.y(), l.z());
-        let cos = match spec.model {
-            SpecularModel::BlinnPhong => spec.h.map(|h| dot3(n_side.x(), n_side.y(), n_side.z(), h.x(), h.y(), h.z())),
-            SpecularModel::Phong => spec.v.zip(spec.r).map(|(v, r)| dot3(r.x(), r.y(), r.z(), v.x(), v.y(), v.z())),
+        let cos = match spec.vector {
+            SpecularVector::Halfway => spec.h.map(|h| dot3(n_side.x(), n_side.y(), n_side.z(), h.x(), h.y(), h.z())),
+            SpecularVector::Reflection => {
+                spec.v.zip(spec.r).map(|(v, r)| dot3(r.x(), r.y(), r.z(), v.x(), v.y(), v.z()))
+            }
         };
         if let Some(c) = cos {
             st.spec_cos = c;

@@ -9,13 +9,13 @@ use glam::{DVec3, Vec3};
 use super::{CHUNK, Chunk, Lighter, Lit};
 use crate::model::scene::{LightId, Side};
 use crate::equation::lighting::{LightPos, PreparedLight, fast_rsqrt, terms};
-use crate::model::rules::{SpecularGate, SpecularModel};
+use crate::model::rules::{SpecularGate, SpecularVector};
 use crate::numerics::pow::PowFn;
 use crate::numerics::robust::{
     mul0, normalize3, normalize3_unscaled, transform_affine_rows, transform_point_rows, translate_point,
     unscaled_is_exact,
 };
-use crate::equation::plan::Stage;
+use crate::equation::plan::{SpecularTerm, Stage, Viewer};
 
 impl Lighter {
     /// Zeroes the sums that will be read: per side, the primary, and the secondary with
@@ -107,7 +107,7 @@ impl Lighter {
                     c.zero[i] = terms::is_zero_normal::<f32>(Vec3::new(c.nx[i], c.ny[i], c.nz[i]));
                 }
             }
-            Stage::ViewVector => self.view_vector(c, n),
+            Stage::ViewVector(viewer) => self.view_vector(c, n, viewer),
             Stage::LightVector(li) => self.light_vector(c, n, li),
             Stage::LightConstant(li) => self.light_constant(c, n, li),
             Stage::Attenuate(li) => {
@@ -140,20 +140,24 @@ impl Lighter {
                 }
             }
             Stage::DiffuseCosine(li, side) => self.diffuse_cosine(c, n, li, side),
-            Stage::SpecularCosine(li, side) => self.specular_cosine(c, n, li, side),
+            Stage::SpecularCosine(li, side, vector) => self.specular_cosine(c, n, li, side, vector),
             Stage::Power(_, side) => self.power(c, n, side),
-            Stage::Sum(li, side) => self.sum(c, &e.lights[li.index()], side),
+            Stage::Sum(li, side, term) => self.sum(c, &e.lights[li.index()], side, term),
             // Added as the colours are written (`write`, `write_sum`).
             Stage::SceneColor => {}
         }
     }
 
     /// V at each vertex: `normalize(-P)` for a local viewer (in f64, unscaled where that
-    /// changes no bit), else the worksheet's axis `(0, 0, -sign(P.z))` (terms::view_vector
-    /// on components, so the loops vectorise).
+    /// changes no bit), the worksheet's axis `(0, 0, -sign(P.z))`, or OpenGL's infinite
+    /// viewer's (0, 0, 1) (terms::view_vector on components, so the loops vectorise).
     #[inline(always)]
-    fn view_vector(&self, c: &mut Chunk, n: usize) {
-        if self.key.local_viewer {
+    fn view_vector(&self, c: &mut Chunk, n: usize, viewer: Viewer) {
+        if viewer == Viewer::Infinite {
+            // Only a worked program writes this stage out: V is the constant every chunk
+            // starts with.
+            (c.vx[..n].fill(0.0), c.vy[..n].fill(0.0), c.vz[..n].fill(1.0), c.v_ok[..n].fill(true));
+        } else if viewer == Viewer::Local {
             // normalize(-P), in f64 (unscaled where that changes no bit), rounded to f32.
             let plain = all_unscaled_exact(&c.px, &c.py, &c.pz, n);
             macro_rules! view_vectors {
@@ -170,9 +174,7 @@ impl Lighter {
                 view_vectors!(normalize3::<f64>);
             }
         } else {
-            // The stage runs only for a local viewer or the worksheet's rule
-            // (plan::Key::per_vertex_view), so here V = (0, 0, -sign(P.z)),
-            // undefined on the plane z = 0.
+            // The worksheet's rule: V = (0, 0, -sign(P.z)), undefined on the plane z = 0.
             for i in 0..n {
                 let z = c.pz[i];
                 (c.vx[i], c.vy[i]) = (0.0, 0.0);
@@ -215,14 +217,11 @@ impl Lighter {
     /// A directional light's constant L (and its scale), as arrays where H or R reads them.
     #[inline(always)]
     fn light_constant(&self, c: &mut Chunk, n: usize, li: LightId) {
-        let e = &self.engine;
         let k = &self.consts[li.index()];
         c.l_ok[..n].fill(k.l.is_some());
         c.scale[..n].fill(k.scale);
         // The cosines read the constant itself; per-vertex H or R read it as arrays.
-        let per_vertex_h_or_r = self.key.lights[li.index()].specular
-            && (e.rules.specular == SpecularModel::Phong || self.key.per_vertex_halfway(li));
-        if per_vertex_h_or_r {
+        if k.l_arrays {
             let l = k.l.unwrap_or(Vec3::ZERO);
             c.lx[..n].fill(l.x);
             c.ly[..n].fill(l.y);
@@ -292,11 +291,10 @@ impl Lighter {
 
     /// The specular cosine for `side`: `n_side . H` (Blinn-Phong) or `R . V` (Phong).
     #[inline(always)]
-    fn specular_cosine(&self, c: &mut Chunk, n: usize, li: LightId, side: Side) {
-        let e = &self.engine;
+    fn specular_cosine(&self, c: &mut Chunk, n: usize, li: LightId, side: Side, vector: SpecularVector) {
         let cos = &mut c.cos[side.index()];
-        match e.rules.specular {
-            SpecularModel::BlinnPhong => {
+        match vector {
+            SpecularVector::Halfway => {
                 let (nx, ny, nz) = match side {
                     Side::Front => (&c.nx, &c.ny, &c.nz),
                     Side::Back => negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n),
@@ -315,7 +313,7 @@ impl Lighter {
                     }
                 }
             }
-            SpecularModel::Phong => {
+            SpecularVector::Reflection => {
                 // R . V, the same on both sides (R is formed with the front normal).
                 for i in 0..n {
                     cos[i] = terms::dot3(c.hx[i], c.hy[i], c.hz[i], c.vx[i], c.vy[i], c.vz[i]);
@@ -373,13 +371,16 @@ impl Lighter {
     /// side's sums. First which vertices the light reaches and where its specular is
     /// allowed, then one loop per channel (so each vectorises).
     #[inline(always)]
-    fn sum(&self, c: &mut Chunk, pl: &PreparedLight<f32>, side: Side) {
+    fn sum(&self, c: &mut Chunk, pl: &PreparedLight<f32>, side: Side, term: SpecularTerm) {
         let e = &self.engine;
         let n = c.lanes();
         let s = side.index();
         let [amb, dif, spe] = pl.products[s].map(|v| v.to_array());
         let separate = e.separate_specular;
-        let specular_on = self.key.lights.get(pl.index).is_some_and(|l| l.specular);
+        let specular_on = match term {
+            SpecularTerm::Zero => false,
+            SpecularTerm::Plain => true,
+        };
         let (ndl, scale) = (&c.ndl[s][..n], &c.scale[..n]);
         let (l_ok, zero) = (&c.l_ok[..n], &c.zero[..n]);
         // Shininess 0 (no `Power` stage): max(cos, 0)^0 = 1.
