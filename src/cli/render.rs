@@ -265,7 +265,7 @@ pub fn run(a: &RenderArgs) -> Result<()> {
                 "{}",
                 t!(
                     "render-channel-summary",
-                    channel = phonglab_core::locale::tr(channel.message_id()),
+                    channel = phonglab_core::locale::tr(image.message_id),
                     map = format!("{:?}", a.colour_map).to_lowercase(),
                     low = number(lo),
                     high = number(hi)

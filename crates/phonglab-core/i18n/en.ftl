@@ -944,6 +944,7 @@ channel-attenuation = Attenuation
 channel-spot = Spot factor
 channel-n-dot-l = N·L
 channel-n-dot-h = N·H
+channel-r-dot-v = R·V
 channel-normal = Normal as a colour
 channel-light-count = Lights reaching
 probe-pixel = Pixel ({ $x }, { $y }), { $shading }

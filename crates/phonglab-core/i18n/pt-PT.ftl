@@ -944,6 +944,7 @@ channel-attenuation = Atenuação
 channel-spot = Fator do foco
 channel-n-dot-l = N·L
 channel-n-dot-h = N·H
+channel-r-dot-v = R·V
 channel-normal = Normal como cor
 channel-light-count = Luzes que chegam
 probe-pixel = Píxel ({ $x }, { $y }), { $shading }

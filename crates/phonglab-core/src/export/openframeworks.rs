@@ -24,11 +24,11 @@ use glam::{DMat4, DVec3, DVec4};
 use super::template::{Fill, Language, Template, TemplateError};
 use crate::formats::document::Document;
 use crate::formats::escape::cpp::comment;
-use crate::model::rules::{RuleSet, SpecularModel};
+use crate::model::rules::RuleSet;
 use crate::model::scene::{LightPlacement, Material, NormalMode, Scene};
 use crate::model::view::ObjectKind;
 use crate::model::vocabulary::Quantity as Q;
-use crate::equation::plan::Key;
+use crate::equation::plan::{Key, Program, Stage};
 use crate::t;
 
 /// A C++ float literal: the value as a float holds it, in its shortest form.
@@ -259,11 +259,14 @@ fn lighting_model(scene: &Scene, key: &Key) -> String {
         s.push_str(&format!("    // {}\n", comment(&t!("of-no-scene-ambient"))));
         s.push_str("    ofSetGlobalAmbientColor(ofFloatColor(0, 0, 0, 1));\n");
     }
-    if key.rules.set != RuleSet::OpenGl {
-        s.push_str(&format!("    // {}\n", comment(&t!("of-rules-comment", rules = key.rules.to_string()))));
+    match key.rules.set {
+        RuleSet::OpenGl => {}
+        RuleSet::Worksheet | RuleSet::PhongDemo => {
+            s.push_str(&format!("    // {}\n", comment(&t!("of-rules-comment", rules = key.rules.to_string()))));
+        }
     }
-    if key.rules.specular == SpecularModel::Phong {
-        s.push_str(&format!("    // {}\n", comment(&t!("of-phong-specular-comment"))));
+    for said in unsaid(&Program::worked(key)) {
+        s.push_str(&format!("    // {}\n", comment(&said)));
     }
     if key.local_viewer {
         s.push_str(&format!(
@@ -294,6 +297,44 @@ fn lighting_model(scene: &Scene, key: &Key) -> String {
         )),
     }
     s
+}
+
+/// What oF's fixed-function lighting cannot compute of `program`'s terms, each said once,
+/// in the program's order.
+fn unsaid(program: &Program) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for &stage in &program.stages {
+        let said = match stage {
+            // GL computes these from the state the app sets.
+            Stage::TransformNormal
+            | Stage::RescaleNormal
+            | Stage::NormalizeNormal
+            | Stage::NormalizeNormalFast
+            | Stage::TransformPosition
+            | Stage::TransformPositionProjective
+            | Stage::TranslatePosition
+            | Stage::ZeroNormals
+            | Stage::ViewVector(_)
+            | Stage::LightVector(_)
+            | Stage::LightConstant(_)
+            | Stage::Attenuate(_)
+            | Stage::SpotCone(_)
+            | Stage::SpotPower(_)
+            | Stage::Halfway(_)
+            | Stage::HalfwayConstant(_)
+            | Stage::DiffuseCosine(..)
+            | Stage::SpecularCosine(..)
+            | Stage::Power(..)
+            | Stage::Sum(..)
+            | Stage::SceneColor => None,
+            // GL's specular is Blinn-Phong's: Phong's R has no switch.
+            Stage::Reflect(_) => Some(t!("of-phong-specular-comment")),
+        };
+        if let Some(said) = said.filter(|s| !out.contains(s)) {
+            out.push(said);
+        }
+    }
+    out
 }
 
 /// Lights fixed to the eye: raw GL, placed under the identity modelview, on the GL light

@@ -170,6 +170,27 @@ impl Rules {
         self.set != RuleSet::PhongDemo
     }
 
+    /// The rule set with the specular model it comes with (the Phong demo's Phong,
+    /// Blinn-Phong for the others).
+    pub fn of_set(set: RuleSet) -> Rules {
+        match set {
+            RuleSet::OpenGl => Rules::OPENGL,
+            RuleSet::Worksheet => Rules::WORKSHEET,
+            RuleSet::PhongDemo => Rules::PHONG_DEMO,
+        }
+    }
+
+    /// Is the specular model the one the rule set comes with ([`Rules::of_set`])?
+    pub fn specular_is_the_sets(self) -> bool {
+        self == Rules::of_set(self.set)
+    }
+
+    /// Does the worked calculation stop at the sum I, as the worksheet's does (it never
+    /// clamps, so the clamped colour is not a step of its own to ask)?
+    pub fn stops_at_sum(self) -> bool {
+        self.set == RuleSet::Worksheet
+    }
+
     /// When the specular term is allowed.
     pub fn specular_gate(self) -> SpecularGate {
         match self.set {

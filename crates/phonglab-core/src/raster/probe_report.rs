@@ -1,7 +1,10 @@
 //! The probe told as lines, in the reader's language and under the worksheet's names: what
 //! `phonglab probe` prints and the shaded view's probe shows.
 
+use crate::equation::plan::{Program, Stage};
 use crate::locale::{num, tr};
+use crate::model::rules::SpecularVector;
+use crate::model::scene::LightId;
 use crate::model::view::ShadingMode;
 use crate::model::vocabulary::Quantity;
 use crate::raster::probe::{Probe, ProbeShading};
@@ -117,7 +120,7 @@ fn terms_lines(p: &Probe, out: &mut Vec<ReportLine>) {
             (Quantity::Attenuation, l.attenuation),
             (Quantity::Spot, l.spot),
             (Quantity::CosTheta, l.n_dot_l),
-            (Quantity::CosBeta, l.n_dot_h),
+            (specular_cosine(&p.program, LightId(l.index)), l.n_dot_h),
         ] {
             // The factor OpenGL multiplies by (the worksheet's `at` is its denominator).
             let (label, name) = q(qq);
@@ -132,6 +135,44 @@ fn terms_lines(p: &Probe, out: &mut Vec<ReportLine>) {
         }
     }
     out.push(line(tr("probe-terms-sum"), "", numbers(&p.terms.sum()), 0));
+}
+
+/// The quantity light `i`'s specular cosine is, as `program` forms it: `cosBeta` (n . H)
+/// or Phong's `cosAlpha` (R . V).
+fn specular_cosine(program: &Program, i: LightId) -> Quantity {
+    let mut q = Quantity::CosBeta;
+    for stage in program.of_light(i) {
+        match stage {
+            Stage::Halfway(_) | Stage::HalfwayConstant(_) => q = Quantity::CosBeta,
+            Stage::Reflect(_) => q = Quantity::CosAlpha,
+            Stage::SpecularCosine(_, _, vector) => {
+                q = match vector {
+                    SpecularVector::Halfway => Quantity::CosBeta,
+                    SpecularVector::Reflection => Quantity::CosAlpha,
+                }
+            }
+            // Lines of their own whatever the stages (attenuation, spot, n . L, the terms).
+            Stage::TransformNormal
+            | Stage::RescaleNormal
+            | Stage::NormalizeNormal
+            | Stage::NormalizeNormalFast
+            | Stage::TransformPosition
+            | Stage::TransformPositionProjective
+            | Stage::TranslatePosition
+            | Stage::ZeroNormals
+            | Stage::ViewVector(_)
+            | Stage::LightVector(_)
+            | Stage::LightConstant(_)
+            | Stage::Attenuate(_)
+            | Stage::SpotCone(_)
+            | Stage::SpotPower(_)
+            | Stage::DiffuseCosine(..)
+            | Stage::Power(..)
+            | Stage::Sum(..)
+            | Stage::SceneColor => {}
+        }
+    }
+    q
 }
 
 /// The report as plain text, one line each, indented.
