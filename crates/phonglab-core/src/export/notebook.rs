@@ -17,7 +17,7 @@ use crate::formats::escape;
 use crate::model::rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularVector};
 use crate::model::scene::{Face, Light, Material, NormalMode, Scene};
 use crate::model::vocabulary::Quantity::{self, self as Q};
-use crate::equation::plan::{Key, Program, Stage};
+use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::t;
 
 /// One cell of a notebook.
@@ -74,6 +74,8 @@ struct Needs {
     rules: Rules,
     /// The vector the specular cosine is taken with: H or R.
     vector: SpecularVector,
+    /// The specular term's form (every light's: one loop writes them all).
+    term: SpecularTerm,
     /// Normal handling.
     normals: NormalMode,
     /// Two-sided lighting: the back side's cells follow.
@@ -100,6 +102,7 @@ impl Needs {
             lights: key.lights.len(),
             rules: key.rules,
             vector: SpecularVector::Halfway,
+            term: SpecularTerm::Plain,
             normals: key.normals,
             two_sided: key.two_sided,
             separate_specular: key.separate_specular,
@@ -138,8 +141,8 @@ impl Needs {
             | Stage::Attenuate(_)
             | Stage::DiffuseCosine(..)
             | Stage::SpecularCosine(..)
-            | Stage::Power(..)
-            | Stage::Sum(..) => {}
+            | Stage::Power(..) => {}
+            Stage::Sum(_, _, term) => self.term = term,
             // The spotlight's cell.
             Stage::SpotCone(_) | Stage::SpotPower(_) => self.spot = true,
             Stage::Halfway(_) | Stage::HalfwayConstant(_) => self.vector = SpecularVector::Halfway,
@@ -492,14 +495,18 @@ fn specular(needs: &Needs, n: usize, suffix: &str) -> String {
             (lines, cos.clone(), "alpha", if back { vec![cos] } else { vec!["R".to_string(), cos] })
         }
     };
+    // What multiplies the power, after it.
+    let scale = match needs.term {
+        SpecularTerm::Zero | SpecularTerm::Plain => String::new(),
+    };
     let power = match needs.rules.specular_gate() {
-        SpecularGate::None => format!("{ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns})\n"),
+        SpecularGate::None => format!("{ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns}){scale}\n"),
         SpecularGate::LitSide => format!(
-            "{}\nif ({ct}[⟨i⟩] <= 0):\n    {ispec}[⟨i⟩] = np.array([0, 0, 0, 0])\nelse:\n    {ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns})\n",
+            "{}\nif ({ct}[⟨i⟩] <= 0):\n    {ispec}[⟨i⟩] = np.array([0, 0, 0, 0])\nelse:\n    {ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns}){scale}\n",
             t!("nb-gate-lit-side-comment")
         ),
         SpecularGate::PositiveCosine => format!(
-            "{cos_line} = m.acos(min(max({cos_name}[⟨i⟩], -1), 1))\nif ({cos_line} > m.pi*0.5 or {cos_line} < 0):\n    {ispec}[⟨i⟩] = np.array([0, 0, 0, 0])\nelse:\n    {ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*({cos_name}[⟨i⟩]**{ns})\n"
+            "{cos_line} = m.acos(min(max({cos_name}[⟨i⟩], -1), 1))\nif ({cos_line} > m.pi*0.5 or {cos_line} < 0):\n    {ispec}[⟨i⟩] = np.array([0, 0, 0, 0])\nelse:\n    {ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*({cos_name}[⟨i⟩]**{ns}){scale}\n"
         ),
     };
     let mut names: Vec<&str> = assigned.iter().map(String::as_str).collect();

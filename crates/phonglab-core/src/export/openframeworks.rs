@@ -28,7 +28,7 @@ use crate::model::rules::RuleSet;
 use crate::model::scene::{LightPlacement, Material, NormalMode, Scene};
 use crate::model::view::ObjectKind;
 use crate::model::vocabulary::Quantity as Q;
-use crate::equation::plan::{Key, Program, Stage};
+use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::t;
 
 /// A C++ float literal: the value as a float holds it, in its shortest form.
@@ -325,8 +325,10 @@ fn unsaid(program: &Program) -> Vec<String> {
             | Stage::DiffuseCosine(..)
             | Stage::SpecularCosine(..)
             | Stage::Power(..)
-            | Stage::Sum(..)
             | Stage::SceneColor => None,
+            Stage::Sum(_, _, term) => match term {
+                SpecularTerm::Zero | SpecularTerm::Plain => None,
+            },
             // GL's specular is Blinn-Phong's: Phong's R has no switch.
             Stage::Reflect(_) => Some(t!("of-phong-specular-comment")),
         };

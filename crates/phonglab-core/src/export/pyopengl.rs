@@ -25,7 +25,7 @@ use crate::model::rules::RuleSet;
 use crate::model::scene::{Light, LightPlacement, Scene};
 use crate::model::view::{Framing, LightingSpace, ObjectKind, Shading, View};
 use crate::model::vocabulary::Quantity as Q;
-use crate::equation::plan::{Key, Program, Stage};
+use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::t;
 use crate::teach::shader::{Lang, ShaderShading};
 
@@ -258,8 +258,10 @@ fn unsaid(program: &Program) -> Vec<String> {
             | Stage::DiffuseCosine(..)
             | Stage::SpecularCosine(..)
             | Stage::Power(..)
-            | Stage::Sum(..)
             | Stage::SceneColor => None,
+            Stage::Sum(_, _, term) => match term {
+                SpecularTerm::Zero | SpecularTerm::Plain => None,
+            },
             // The rules' R: the program's RULES names them, and the shader draws with them.
             Stage::Reflect(_) => None,
         };
