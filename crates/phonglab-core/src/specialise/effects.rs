@@ -64,7 +64,6 @@ impl EffectKind {
     }
 }
 
-
 impl Key {
     /// Every effect with whether the program for object-space vertices runs it and why,
     /// lights in order.

@@ -36,12 +36,12 @@ use web_time::{Duration, Instant};
 use glam::{DVec3, Vec3};
 
 use crate::equation::lighting::{Engine, EvalOptions, LightPos, terms};
+use crate::equation::plan::{Key, Program, SourceKind, Stage};
 use crate::model::error::SceneError;
 use crate::model::scene::{LightId, Scene, Side};
 use crate::numerics::copies::prefetch;
 use crate::numerics::real::Vec3Ops;
 use crate::numerics::robust::mul0;
-use crate::equation::plan::{Key, Program, SourceKind, Stage};
 
 mod stages;
 

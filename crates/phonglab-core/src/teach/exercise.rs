@@ -21,13 +21,13 @@ use glam::{DMat4, DVec3, DVec4};
 
 use crate::equation::explain::{Explanation, Side, explain};
 use crate::equation::lighting::{Engine, EvalOptions};
+use crate::equation::plan::{Key, Stage, Viewer};
 use crate::formats::document::Document;
 use crate::model::camera::CameraSpec;
 use crate::model::materials;
 use crate::model::rules::Rules;
 use crate::model::scene::{Light, LightModel, LightPlacement, NormalMode, Scene, Vertex};
 use crate::model::vocabulary::Quantity as Q;
-use crate::equation::plan::{Key, Stage, Viewer};
 
 /// An effect an exercise can be asked to use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -127,12 +127,13 @@ impl Effect {
             Stage::LightVector(_) => Some(Effect::Positional),
             Stage::Attenuate(_) => Some(Effect::Attenuation),
             Stage::SpotCone(_) => Some(Effect::Spot),
-            Stage::DiffuseCosine(_, side) | Stage::SpecularCosine(_, side, _) | Stage::Power(_, side) | Stage::Sum(_, side, _) => {
-                match side {
-                    Side::Front => None,
-                    Side::Back => Some(Effect::TwoSided),
-                }
-            }
+            Stage::DiffuseCosine(_, side)
+            | Stage::SpecularCosine(_, side, _)
+            | Stage::Power(_, side)
+            | Stage::Sum(_, side, _) => match side {
+                Side::Front => None,
+                Side::Back => Some(Effect::TwoSided),
+            },
         };
         own.into_iter().chain(several).collect()
     }

@@ -228,9 +228,7 @@ pub fn vector_arrows(doc: &Document, eval: &Evaluated, rect: egui::Rect) -> Vec<
         add(lv.l, crate::app::widgets::palette::L, format!("L{sfx}"));
         match doc.scene.rules.specular.vector() {
             phonglab_core::SpecularVector::Halfway => add(lv.h, crate::app::widgets::palette::H, format!("H{sfx}")),
-            phonglab_core::SpecularVector::Reflection => {
-                add(lv.r, crate::app::widgets::palette::R, format!("R{sfx}"))
-            }
+            phonglab_core::SpecularVector::Reflection => add(lv.r, crate::app::widgets::palette::R, format!("R{sfx}")),
         }
     }
     add(eval.v, crate::app::widgets::palette::V, "V".into());
