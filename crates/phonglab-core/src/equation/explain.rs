@@ -525,6 +525,7 @@ fn term_steps<S: Real>(
     let f = crate::locale::num(st.f.to_f64(), 8);
     let formula = match forms.term {
         SpecularTerm::Zero | SpecularTerm::Plain => t!("formula-specular", gate = gate, f = f, cos = cos),
+        SpecularTerm::Normalised => t!("formula-specular-normalised", gate = gate, f = f, cos = cos),
     };
     b.push(StepKind::Specular, i, Q::Specular, &sfx, &formula, Some(dir4::<S>(st.specular)));
     color_material_note(b, scene, back, ColorMaterialMode::Specular);

@@ -38,7 +38,7 @@ use crate::model::scene::{Light, Material, NormalMode, Rgba, Scene, Vertex};
 use crate::model::transform::NormalMatrix;
 use crate::numerics::pow::PowFn;
 use crate::numerics::real::{Real, Vec3Ops};
-use crate::numerics::robust::{cos_deg, mul0, mul0_v, transform_point, transform_vector3, try_normalize};
+use crate::numerics::robust::{cos_deg, mul0, mul0_v, scale0, transform_point, transform_vector3, try_normalize};
 
 // The equation's per-vertex arithmetic, one function per step: `lighting/terms.rs`.
 pub mod terms;
@@ -188,10 +188,17 @@ fn prepare_light<S: Real>(scene: &Scene, index: usize, l: &Light) -> PreparedLig
         exponent: S::from_f64(l.spot_exponent),
     });
     let product = |m: &Material| {
+        let specular = mul0_v::<S>(rgb::<S>(m.specular), rgb::<S>(l.specular));
         [
             mul0_v::<S>(rgb::<S>(m.ambient), rgb::<S>(l.ambient)),
             mul0_v::<S>(rgb::<S>(m.diffuse), rgb::<S>(l.diffuse)),
-            mul0_v::<S>(rgb::<S>(m.specular), rgb::<S>(l.specular)),
+            // Energy-conserving Blinn-Phong's factor, once per side: every specular term of
+            // the side (the general engine's and the specialised lighter's) is scaled alike.
+            if scene.rules.specular.normalised() {
+                scale0::<S>(specular, S::from_f64(terms::specular_normalisation(m.shininess)))
+            } else {
+                specular
+            },
         ]
     };
     PreparedLight {
@@ -335,8 +342,13 @@ impl<S: Real> Engine<S> {
 
         let side_terms = |side: usize| -> SideTerms<S> {
             let n_side = if side == 0 { n } else { -n };
-            let sp =
-                terms::SpecularInputs { h, r, v, gate: self.rules.specular_gate(), vector: self.rules.specular.vector() };
+            let sp = terms::SpecularInputs {
+                h,
+                r,
+                v,
+                gate: self.rules.specular_gate(),
+                vector: self.rules.specular.vector(),
+            };
             terms::side::<S>(
                 pl.products[side],
                 n_side,

@@ -168,6 +168,8 @@ pub enum SpecularTerm {
     Zero,
     /// `f max(cos, 0)^s_rm s_cm s_cl`.
     Plain,
+    /// `f max(cos, 0)^s_rm s_cm s_cl (s_rm + 8) / (8 pi)`: energy-conserving Blinn-Phong's.
+    Normalised,
 }
 
 /// One stage of the specialised program: a loop over a chunk of vertices. The list a key
@@ -289,6 +291,10 @@ impl std::fmt::Display for Stage {
             Stage::SceneColor => "SceneColor",
         };
         match (self.light(), self.side()) {
+            // The normalisation shows where there is one (the stage lists before it are unchanged).
+            (Some(i), Some(side)) if matches!(self, Stage::Sum(_, _, SpecularTerm::Normalised)) => {
+                write!(f, "{name}({i}, {}, normalised)", side.index())
+            }
             (Some(i), Some(side)) => write!(f, "{name}({i}, {})", side.index()),
             (Some(i), None) => write!(f, "{name}({i})"),
             _ => f.write_str(name),
@@ -405,7 +411,11 @@ impl Program {
                 SpecularVector::Reflection => Stage::Reflect(i),
             });
         }
-        let term = if specular { SpecularTerm::Plain } else { SpecularTerm::Zero };
+        let term = match (specular, key.rules.specular.normalised()) {
+            (false, _) => SpecularTerm::Zero,
+            (true, false) => SpecularTerm::Plain,
+            (true, true) => SpecularTerm::Normalised,
+        };
         let sides = if key.two_sided { &Side::ALL[..] } else { &Side::ALL[..1] };
         for &side in sides {
             st.push(Stage::DiffuseCosine(i, side));
@@ -538,8 +548,11 @@ mod tests {
         assert!(worked.has(Stage::Sum(light, Side::Front, SpecularTerm::Plain)));
         // Everything else is the same list, in the same order.
         let rest: Vec<Stage> = worked.stages.iter().copied().filter(|s| !known.contains(s)).collect();
-        let needed_rest: Vec<Stage> =
-            needed.stages.iter().map(|s| if let Stage::Sum(i, side, _) = *s { Stage::Sum(i, side, SpecularTerm::Plain) } else { *s }).collect();
+        let needed_rest: Vec<Stage> = needed
+            .stages
+            .iter()
+            .map(|s| if let Stage::Sum(i, side, _) = *s { Stage::Sum(i, side, SpecularTerm::Plain) } else { *s })
+            .collect();
         assert_eq!(rest, needed_rest);
     }
 

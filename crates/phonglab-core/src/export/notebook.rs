@@ -12,12 +12,12 @@
 
 use super::python::{array4, colour, matrix, num, shininess, string};
 use crate::equation::explain::fmt_value;
+use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::formats::document::Document;
 use crate::formats::escape;
 use crate::model::rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularVector};
 use crate::model::scene::{Face, Light, Material, NormalMode, Scene};
 use crate::model::vocabulary::Quantity::{self, self as Q};
-use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::t;
 
 /// One cell of a notebook.
@@ -498,6 +498,8 @@ fn specular(needs: &Needs, n: usize, suffix: &str) -> String {
     // What multiplies the power, after it.
     let scale = match needs.term {
         SpecularTerm::Zero | SpecularTerm::Plain => String::new(),
+        // Energy-conserving Blinn-Phong.
+        SpecularTerm::Normalised => format!("*({ns} + 8)/(8*m.pi)"),
     };
     let power = match needs.rules.specular_gate() {
         SpecularGate::None => format!("{ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns}){scale}\n"),
@@ -517,9 +519,13 @@ fn specular(needs: &Needs, n: usize, suffix: &str) -> String {
 
 /// The specular cell's explanation for the scene's model.
 fn specular_markdown(needs: &Needs) -> String {
-    match needs.vector {
+    let model = match needs.vector {
         SpecularVector::Halfway => t!("nb-specular-blinn"),
         SpecularVector::Reflection => t!("nb-specular-phong"),
+    };
+    match needs.term {
+        SpecularTerm::Zero | SpecularTerm::Plain => model,
+        SpecularTerm::Normalised => format!("{model}\n\n{}", t!("nb-specular-normalised")),
     }
 }
 

@@ -19,13 +19,13 @@ use glam::DMat4;
 
 use super::python::{num, string};
 use super::template::{Fill, Language, Template};
+use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::formats::document::Document;
 use crate::formats::escape::python::{comment, triple_quoted};
 use crate::model::rules::RuleSet;
 use crate::model::scene::{Light, LightPlacement, Scene};
 use crate::model::view::{Framing, LightingSpace, ObjectKind, Shading, View};
 use crate::model::vocabulary::Quantity as Q;
-use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::t;
 use crate::teach::shader::{Lang, ShaderShading};
 
@@ -83,7 +83,7 @@ const PROGRAM: Template =
 
 /// A generated shader adapted to a compatibility-profile context: the attributes are GL's
 /// own vertex and normal (what GLU's and GLUT's objects send).
-fn compatibility_profile(text: &str) -> String {
+pub(super) fn compatibility_profile(text: &str) -> String {
     text.replace("#version 330 core", "#version 330 compatibility")
         .replace("layout(location = 0) in vec3 a_position;", "#define a_position (gl_Vertex.xyz / gl_Vertex.w)")
         .replace("layout(location = 1) in vec3 a_normal;", "#define a_normal gl_Normal")
@@ -261,6 +261,7 @@ fn unsaid(program: &Program) -> Vec<String> {
             | Stage::SceneColor => None,
             Stage::Sum(_, _, term) => match term {
                 SpecularTerm::Zero | SpecularTerm::Plain => None,
+                SpecularTerm::Normalised => Some(t!("py-normalised-comment")),
             },
             // The rules' R: the program's RULES names them, and the shader draws with them.
             Stage::Reflect(_) => None,

@@ -41,17 +41,22 @@ pub enum SpecularModel {
     BlinnPhong,
     /// Phong: `cos = R . V`, `R = 2 (n . L) n - L` (the reflection of L about n).
     Phong,
+    /// Energy-conserving Blinn-Phong, as modern engines light: Blinn-Phong's term times
+    /// `(s_rm + 8) / (8 pi)`, so a narrower highlight is brighter and reflects the same light.
+    BlinnPhongNormalised,
 }
 
 impl SpecularModel {
     /// Every model, in menu order.
-    pub const ALL: [SpecularModel; 2] = [SpecularModel::BlinnPhong, SpecularModel::Phong];
+    pub const ALL: [SpecularModel; 3] =
+        [SpecularModel::BlinnPhong, SpecularModel::Phong, SpecularModel::BlinnPhongNormalised];
 
-    /// A short name for menus and files.
-    pub fn label(self) -> &'static str {
+    /// A short name for menus and headings, with its symbol.
+    pub fn label(self) -> String {
         match self {
-            SpecularModel::BlinnPhong => "Blinn-Phong (n.H)",
-            SpecularModel::Phong => "Phong (R.V)",
+            SpecularModel::BlinnPhong => "Blinn-Phong (n.H)".into(),
+            SpecularModel::Phong => "Phong (R.V)".into(),
+            SpecularModel::BlinnPhongNormalised => crate::t!("specular-blinn-phong-normalised"),
         }
     }
 
@@ -60,6 +65,7 @@ impl SpecularModel {
         match self {
             SpecularModel::BlinnPhong => "blinn-phong",
             SpecularModel::Phong => "phong",
+            SpecularModel::BlinnPhongNormalised => "blinn-phong-normalised",
         }
     }
 
@@ -78,8 +84,17 @@ impl SpecularModel {
     /// plan and the window's vectors ask this, never which model it is.
     pub fn vector(self) -> SpecularVector {
         match self {
-            SpecularModel::BlinnPhong => SpecularVector::Halfway,
+            SpecularModel::BlinnPhong | SpecularModel::BlinnPhongNormalised => SpecularVector::Halfway,
             SpecularModel::Phong => SpecularVector::Reflection,
+        }
+    }
+
+    /// Is the term normalised, multiplied by `(s_rm + 8) / (8 pi)`
+    /// (`lighting::terms::specular_normalisation`)?
+    pub fn normalised(self) -> bool {
+        match self {
+            SpecularModel::BlinnPhong | SpecularModel::Phong => false,
+            SpecularModel::BlinnPhongNormalised => true,
         }
     }
 }

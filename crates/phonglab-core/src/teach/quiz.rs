@@ -323,6 +323,7 @@ fn term_step(scene: &Scene, worked: &Worked, st: &Step, keyed: &[f64], inputs: &
             let f = if allowed { crate::numerics::pow::PowFn::Exact.pow::<f64>(c.max(0.0), m.shininess) } else { 0.0 };
             let f = match worked.light(li).term {
                 SpecularTerm::Zero | SpecularTerm::Plain => f,
+                SpecularTerm::Normalised => f * terms::specular_normalisation(m.shininess),
             };
             let ls = light?.specular;
             Some((0..3).map(|i| ls[i] * m.specular[i] * f).chain([0.0]).collect())
@@ -511,7 +512,11 @@ mod tests {
         let mut bright = crate::model::presets::worksheet(5);
         bright.rules = crate::model::rules::Rules::OPENGL;
         bright.material.emission = glam::DVec4::new(1.5, 0.2, 0.2, 1.0);
-        let scenes = [crate::model::presets::worksheet(5), crate::model::presets::phong_demo(), spot, bright];
+        // Energy-conserving Blinn-Phong: the specular step takes its factor (n + 8)/(8 pi).
+        let mut normalised = crate::model::presets::worksheet(5);
+        normalised.rules.specular = crate::model::rules::SpecularModel::BlinnPhongNormalised;
+        let scenes =
+            [crate::model::presets::worksheet(5), crate::model::presets::phong_demo(), spot, bright, normalised];
         let mut carried = std::collections::BTreeSet::new();
         for (n, s) in scenes.iter().enumerate() {
             let lit = Engine::<f64>::new(s).unwrap().light(&s.vertex);

@@ -17,9 +17,9 @@ use std::fmt::Write as _;
 
 use crate::equation::explain::{Explanation, StepKind};
 use crate::equation::lighting::EvalOptions;
+use crate::equation::plan::{Key, Program, SourceKind, SpecularTerm, Stage, Viewer};
 use crate::model::rules::{NormalTransform, SpecularGate, SpecularVector};
 use crate::model::scene::{ColorMaterialMode, LightId, Scene, Side};
-use crate::equation::plan::{Key, Program, SourceKind, SpecularTerm, Stage, Viewer};
 
 /// The shading language.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -172,7 +172,8 @@ impl Body<'_> {
     /// A new variable `name = e`, with the worked calculation's step of `kind` (for `light`)
     /// and a note after it.
     fn var(&mut self, ty: &str, name: &str, e: &str, kind: StepKind, light: Option<LightId>, note: &str) {
-        let line = format!("{} // {}{note}", self.s.var(ty, name, e), step_no(self.ex, kind, light.map(LightId::index)));
+        let line =
+            format!("{} // {}{note}", self.s.var(ty, name, e), step_no(self.ex, kind, light.map(LightId::index)));
         self.lines.push(line);
     }
 
@@ -298,7 +299,8 @@ impl Body<'_> {
             Stage::Power(i, side) => {
                 let sh = self.uni(format!("{}_shininess", self.material(side)), "float");
                 let s = side.index();
-                let e = self.s.select(&self.gate_open(i, side), &format!("pow(max(spec_cos{i}_{s}, 0.0), {sh})"), "0.0");
+                let e =
+                    self.s.select(&self.gate_open(i, side), &format!("pow(max(spec_cos{i}_{s}, 0.0), {sh})"), "0.0");
                 self.var("float", &format!("pf{i}_{s}"), &e, StepKind::Specular, Some(i), "");
             }
             Stage::Sum(i, side, term) => self.sum(i, side, term),
@@ -357,11 +359,17 @@ impl Body<'_> {
         let s = side.index();
         let mut terms = format!("{la} * {ma} + {ld} * {md}.xyz * max(ndl{i}_{s}, 0.0)");
         let mut specular = None;
-        let specular_on = match term {
-            SpecularTerm::Zero => false,
-            SpecularTerm::Plain => true,
+        // What multiplies the specular term: nothing, or energy-conserving Blinn-Phong's
+        // (s + 8) / (8 pi).
+        let normalisation = match term {
+            SpecularTerm::Zero => None,
+            SpecularTerm::Plain => Some(String::new()),
+            SpecularTerm::Normalised => {
+                let sh = self.uni(format!("{}_shininess", self.material(side)), "float");
+                Some(format!(" * (({sh} + 8.0) / (8.0 * 3.14159265))"))
+            }
         };
-        if specular_on {
+        if let Some(normalisation) = normalisation {
             let ms = self.material_color(side, "specular", "vec3");
             // The power (or 1 at shininess 0) where the gate lets it through.
             let pf = if self.program.has(Stage::Power(i, side)) {
@@ -370,9 +378,9 @@ impl Body<'_> {
                 self.s.select(&self.gate_open(i, side), "1.0", "0.0")
             };
             if self.key.separate_specular {
-                specular = Some(format!("{ls} * {ms} * {pf}"));
+                specular = Some(format!("{ls} * {ms} * {pf}{normalisation}"));
             } else {
-                terms.push_str(&format!(" + {ls} * {ms} * {pf}"));
+                terms.push_str(&format!(" + {ls} * {ms} * {pf}{normalisation}"));
             }
         }
         let mut scale = String::new();

@@ -7,15 +7,15 @@
 use glam::{DVec3, Vec3};
 
 use super::{CHUNK, Chunk, Lighter, Lit};
-use crate::model::scene::{LightId, Side};
 use crate::equation::lighting::{LightPos, PreparedLight, fast_rsqrt, terms};
+use crate::equation::plan::{SpecularTerm, Stage, Viewer};
 use crate::model::rules::{SpecularGate, SpecularVector};
+use crate::model::scene::{LightId, Side};
 use crate::numerics::pow::PowFn;
 use crate::numerics::robust::{
     mul0, normalize3, normalize3_unscaled, transform_affine_rows, transform_point_rows, translate_point,
     unscaled_is_exact,
 };
-use crate::equation::plan::{SpecularTerm, Stage, Viewer};
 
 impl Lighter {
     /// Zeroes the sums that will be read: per side, the primary, and the secondary with
@@ -379,7 +379,8 @@ impl Lighter {
         let separate = e.separate_specular;
         let specular_on = match term {
             SpecularTerm::Zero => false,
-            SpecularTerm::Plain => true,
+            // The normalisation is in the specular product (`PreparedLight::products`).
+            SpecularTerm::Plain | SpecularTerm::Normalised => true,
         };
         let (ndl, scale) = (&c.ndl[s][..n], &c.scale[..n]);
         let (l_ok, zero) = (&c.l_ok[..n], &c.zero[..n]);
