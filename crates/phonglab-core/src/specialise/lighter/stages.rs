@@ -156,7 +156,10 @@ impl Lighter {
         if viewer == Viewer::Infinite {
             // Only a worked program writes this stage out: V is the constant every chunk
             // starts with.
-            (c.vx[..n].fill(0.0), c.vy[..n].fill(0.0), c.vz[..n].fill(1.0), c.v_ok[..n].fill(true));
+            c.vx[..n].fill(0.0);
+            c.vy[..n].fill(0.0);
+            c.vz[..n].fill(1.0);
+            c.v_ok[..n].fill(true);
         } else if viewer == Viewer::Local {
             // normalize(-P), in f64 (unscaled where that changes no bit), rounded to f32.
             let plain = all_unscaled_exact(&c.px, &c.py, &c.pz, n);
