@@ -6,6 +6,10 @@
 //! it is not: each place's output must differ between the two (a field one place forgot
 //! leaves that place's output unchanged, and this test names the field and the place),
 //! and the scene file and the glref case must give the field back.
+//!
+//! A term of the equation that a rule chooses (`TERMS`: energy-conserving Blinn-Phong) is
+//! held to the same places but the glref case, which is GL's state and always means
+//! OpenGL's rules; the window must name it.
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
@@ -95,6 +99,15 @@ const FIELDS: &[Field] = &[
     },
 ];
 
+/// The terms a rule chooses, each a "field" whose base is the scene under the rule without
+/// it and whose label is the term's name in the catalogue.
+const TERMS: &[Field] = &[Field {
+    name: "specular = blinn-phong-normalised",
+    base: |_| {},
+    set: |d| d.scene.rules.specular = phonglab_core::SpecularModel::BlinnPhongNormalised,
+    label: "specular-blinn-phong-normalised",
+}];
+
 /// What a place makes of a document, as text: two documents whose outputs differ give
 /// different texts.
 type Place = (&'static str, fn(&Document) -> String);
@@ -157,6 +170,38 @@ fn every_field_changes_every_place() {
         }
     }
     assert!(missing.is_empty(), "fields that miss a place:\n{}", missing.join("\n"));
+}
+
+#[test]
+fn every_term_changes_every_place_but_the_glref_case() {
+    let mut missing = Vec::new();
+    for term in TERMS {
+        let (base, set) = (with(term, |f| f.base), with(term, |f| f.set));
+        assert_ne!(base.scene, set.scene, "{}: the term is already the scene's", term.name);
+        for (place, output) in places().iter().filter(|(place, _)| *place != "the glref case") {
+            if output(&base) == output(&set) {
+                missing.push(format!("{} does not reach {place}", term.name));
+            }
+        }
+        let again = Document::from_toml(&set.to_toml().unwrap()).unwrap();
+        assert_eq!(again.scene, set.scene, "{}: the scene file loses it", term.name);
+    }
+    assert!(missing.is_empty(), "terms that miss a place:\n{}", missing.join("\n"));
+}
+
+/// The window names each term where its scene uses it (the worked calculation's heading,
+/// the rules' menu).
+#[test]
+fn every_term_is_named_in_the_window() {
+    for term in TERMS {
+        let mut state = AppState::worksheet();
+        state.doc = with(term, |f| f.set);
+        let mut h =
+            Harness::builder().with_size([1500.0, 2400.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
+        h.run_steps(3);
+        let label = phonglab_core::locale::tr(term.label);
+        assert!(h.query_all_by_label_contains(&label).next().is_some(), "{}: {label:?} nowhere", term.name);
+    }
 }
 
 #[test]

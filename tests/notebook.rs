@@ -97,6 +97,7 @@ fn the_exported_notebooks_print_what_explain_prints() {
     };
     // The shipped scenes and 50 exercises: 6 per level and rule set, 7 at level 4.
     let mut docs = shipped_scenes();
+    docs.extend(normalised_scenes());
     docs.extend(exercises(100, |level| if level == 4 { 7 } else { 6 }));
     let exercises = docs.iter().filter(|(n, _)| n.starts_with("exercise")).count();
     assert!(exercises >= 50, "{exercises} exercises");
@@ -175,9 +176,25 @@ fn exercises(seed: u64, count: impl Fn(u8) -> usize) -> Vec<(String, Document)> 
     docs
 }
 
-/// The scenes the round trips are tried on: the shipped ones and 32 generated exercises.
+/// Shipped scenes under energy-conserving Blinn-Phong (`specular = "blinn-phong-normalised"`):
+/// the worksheet's (its own rules), the spotlight and the three lights (OpenGL's, two-sided).
+fn normalised_scenes() -> Vec<(String, Document)> {
+    shipped_scenes()
+        .into_iter()
+        .filter(|(name, _)| ["worksheet-mview5", "spotlight", "three-lights"].iter().any(|s| name.contains(s)))
+        .map(|(name, mut doc)| {
+            doc.scene.rules.specular = phonglab_core::SpecularModel::BlinnPhongNormalised;
+            doc.scene.light_model.two_sided = !name.contains("worksheet");
+            (format!("{name}, normalised Blinn-Phong"), doc)
+        })
+        .collect()
+}
+
+/// The scenes the round trips are tried on: the shipped ones (and some under normalised
+/// Blinn-Phong) and 32 generated exercises.
 fn scenes_and_exercises() -> Vec<(String, Document)> {
     let mut docs = shipped_scenes();
+    docs.extend(normalised_scenes());
     docs.extend(exercises(200, |_| 4));
     docs
 }

@@ -3,7 +3,7 @@
 //! (`tests/data/of_standin/ofMain.h`), for the shipped scenes and for scenes that need
 //! every raw GL call the writer emits (the local viewer, two-sided lighting with a back
 //! material, a separate specular colour, a light fixed to the eye, each normal mode, a
-//! directional light and a spotlight). Skipped, saying so, where no C++ compiler is here;
+//! directional light and a spotlight), and for scenes whose app draws with the generated shader. Skipped, saying so, where no C++ compiler is here;
 //! CI installs Debian's g++.
 
 use std::path::Path;
@@ -56,6 +56,52 @@ fn documents() -> Vec<(String, Document)> {
     docs
 }
 
+/// Scenes under energy-conserving Blinn-Phong, which fixed-function GL cannot compute: the
+/// spotlight's (Gouraud) and the worksheet's (its rules, Phong shading).
+fn normalised() -> Vec<(String, Document)> {
+    let mut docs = Vec::new();
+    for (file, shading) in
+        [("spotlight.toml", phonglab_core::Shading::Gouraud), ("worksheet-mview5.toml", phonglab_core::Shading::Phong)]
+    {
+        let mut d = scene(file);
+        d.scene.rules.specular = phonglab_core::SpecularModel::BlinnPhongNormalised;
+        d.view.shading = shading;
+        docs.push((format!("{file}, normalised Blinn-Phong"), d));
+    }
+    docs
+}
+
+/// Where fixed-function GL cannot compute a term (energy-conserving Blinn-Phong's factor),
+/// the app says so and draws with phonglab's generated shader: compiled and linked in
+/// setup(), bound around the object in draw() with every uniform but GL's own matrices, the
+/// factor in its GLSL. The other apps draw with oF's lighting alone.
+#[test]
+fn what_gl_cannot_compute_is_drawn_by_the_generated_shader() {
+    for (name, doc) in normalised() {
+        let files = app(&doc, &phonglab_core::export::shaded_key(&doc)).unwrap();
+        let (header, cpp) = (&files[0].1, &files[1].1);
+        assert!(header.contains("    ofShader shader;\n"), "{name}");
+        assert!(cpp.contains("normalised Blinn-Phong: the specular term times (ns + 8)/(8π)"), "{name}");
+        let (setup, draw) = cpp.split_at(cpp.find("void ofApp::draw()").unwrap());
+        for line in
+            ["shader.setupShaderFromSource(GL_VERTEX_SHADER, R\"GLSL(", "GL_FRAGMENT_SHADER", "shader.linkProgram();"]
+        {
+            assert!(setup.contains(line), "{name}: {line}");
+        }
+        assert!(setup.contains("#version 330 compatibility") && setup.contains("/ (8.0 * 3.14159265)"), "{name}");
+        assert!(setup.contains("#define u_eye_from_object gl_ModelViewMatrix"), "{name}");
+        let begin = draw.find("shader.begin();").unwrap();
+        let (object, end) = (draw.find("ofDrawSphere").unwrap(), draw.find("shader.end();").unwrap());
+        assert!(begin < object && object < end, "{name}");
+        assert!(draw.contains("shader.setUniform1f(\"u_mat_shininess\", "), "{name}: {draw}");
+        assert!(!draw.contains("u_eye_from_object"), "{name}: GL's own matrices are not set");
+    }
+    for (name, doc) in documents() {
+        let files = app(&doc, &phonglab_core::export::shaded_key(&doc)).unwrap();
+        assert!(!files[0].1.contains("ofShader") && !files[1].1.contains("shader."), "{name}");
+    }
+}
+
 #[test]
 fn the_exported_openframeworks_apps_compile_against_ofs_signatures() {
     let Some(cxx) = compiler() else {
@@ -63,7 +109,7 @@ fn the_exported_openframeworks_apps_compile_against_ofs_signatures() {
         return;
     };
     let standin = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/of_standin");
-    for (name, doc) in documents() {
+    for (name, doc) in documents().into_iter().chain(normalised()) {
         let dir = std::env::temp_dir().join(format!("phonglab-of-{}-{name}", std::process::id()).replace('/', "-"));
         std::fs::create_dir_all(&dir).unwrap();
         let files = app(&doc, &phonglab_core::export::shaded_key(&doc)).unwrap();

@@ -50,7 +50,12 @@ fn scenes() -> Vec<(String, Scene)> {
     files.sort();
     for f in files {
         let doc = Document::from_toml(&std::fs::read_to_string(&f).unwrap()).unwrap();
-        out.push((f.file_name().unwrap().to_string_lossy().into_owned(), doc.scene));
+        let name = f.file_name().unwrap().to_string_lossy().into_owned();
+        // Every shipped scene under energy-conserving Blinn-Phong too.
+        let mut normalised = doc.scene.clone();
+        normalised.rules.specular = phonglab_core::SpecularModel::BlinnPhongNormalised;
+        out.push((format!("{name}, normalised Blinn-Phong"), normalised));
+        out.push((name, doc.scene));
     }
     out
 }

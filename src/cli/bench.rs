@@ -347,7 +347,7 @@ fn stage_figures(arrays: &mut LightingArrays, repeats: u32) -> Result<()> {
         let ns = |d: std::time::Duration| d.as_secs_f64() * 1e9 / vertices as f64;
         println!("{} load {:.2}", b.name(), ns(best.load));
         for (stage, d) in &best.stages {
-            println!("{} {stage:?} {:.2}", b.name(), ns(*d));
+            println!("{} {stage} {:.2}", b.name(), ns(*d));
         }
         println!("{} write {:.2}", b.name(), ns(best.write));
         println!("{} total {:.2}", b.name(), ns(total(&best)));

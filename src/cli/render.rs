@@ -275,7 +275,7 @@ pub fn run(a: &RenderArgs) -> Result<()> {
             let number = |x: f64| phonglab_core::locale::num(x, 4);
             super::say(&t!(
                 "render-channel-summary",
-                channel = phonglab_core::locale::tr(channel.message_id()),
+                channel = phonglab_core::locale::tr(image.message_id),
                 map = format!("{:?}", a.colour_map).to_lowercase(),
                 low = number(lo),
                 high = number(hi)

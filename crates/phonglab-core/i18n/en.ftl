@@ -176,6 +176,7 @@ controls-vertex = Vertex
 controls-camera = Camera (modelview)
 rule-set = Rule set
 specular-model = Specular model
+specular-blinn-phong-normalised = Normalised Blinn-Phong (n.H)·(ns+8)/8π
 rules-opengl-summary = Emission + scene ambient + every light's ambient, diffuse and specular (OpenGL 2.1, 2.14.1).
 rules-worksheet-summary = The worksheet: no scene ambient, no emission; diffuse 0 past 90 degrees, specular 0 past 90 degrees.
 rules-demo-summary = The Phong demo's shader: no scene ambient, no emission, pow(max(R.V, 0), e) with no other gate.
@@ -374,7 +375,7 @@ help-local-viewer = toggle the local viewer
 help-next-material = next classic material
 help-previous-material = previous classic material
 help-next-modelview = next worksheet modelview (mview1..5)
-help-specular-model = Blinn-Phong / Phong specular
+help-specular-model = next specular model (Blinn-Phong, Phong, normalised Blinn-Phong)
 help-next-rules = next rule set (OpenGL, worksheet, Phong demo)
 help-next-normals = next normal mode (as is, normalize, rescale)
 help-two-sided = two-sided lighting on/off
@@ -485,6 +486,7 @@ gate-lit-side = f = 1 if cosTheta > 0
 gate-positive = only where cos > 0
 gate-none = no gate
 formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate }; f = { $f }; OpenGL: s_cl · s_cm · max(n · h, 0)^s_rm)
+formula-specular-normalised = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns · (ns + 8)/(8π)   ({ $gate }; f = { $f }; energy-conserving Blinn-Phong: the narrower the highlight, the brighter, the light it reflects the same; OpenGL has no such factor)
 formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: the terms are divided by k0 + k1 d + k2 d²)
 formula-at-directional = at = 1   (directional)
 formula-spot = spot = max(-L . s, 0)^e if -L . s >= cos(cutoff) = { $cutoff }, else 0;  -L . s = { $angle }
@@ -734,6 +736,8 @@ nb-specular-phong =
     - α is the angle between R, the light's vector reflected about the normal, and the observer
     - R = 2 (N · vlv) N - vlv
 nb-gate-lit-side-comment = # OpenGL: no specular from a light behind the surface (f = 0 where N · L <= 0)
+nb-specular-normalised =
+    Normalised (energy-conserving) Blinn-Phong, as modern engines light: the term is multiplied by (ns + 8)/(8π), so a sharper highlight (a larger ns) is brighter and the light it reflects stays about the same. OpenGL's fixed-function lighting has no such factor.
 nb-attenuation =
     Computing the attenuation:
 
@@ -841,6 +845,7 @@ py-projection-clip = no projection at all: the picture is clip space itself (the
 py-modelview-comment = the modelview the object is drawn with: the camera, then the object's turn (rows)
 py-lighting-modelview-comment = the modelview the lighting uses, where it is not the drawing's (the demo lights in object space)
 py-color-material-comment = GL_COLOR_MATERIAL: the material colours it tracks are the current colour (glColor); u_color is that colour
+py-normalised-comment = normalised Blinn-Phong: the specular term times (ns + 8)/(8π); fixed-function GL has no such factor, so only the shader below computes it (GL's own lighting from this state would not)
 py-light-eye = placed under the identity: the light moves with the eye
 py-light-object = placed under the whole modelview: the light turns with the object
 py-light-world = placed under the view matrix: the light stays put in the world
@@ -859,6 +864,8 @@ of-spot-comment = the spot direction is the light's look direction
 of-material-comment = the material, bound while the object is drawn (ofSetColor under lighting would turn on glColorMaterial instead)
 of-back-material-comment = oF has one material for both sides: the back side's, raw GL
 of-color-material-comment = GL_COLOR_MATERIAL: the material colours it tracks follow the current colour, which ofSetColor sets
+of-normalised-comment = normalised Blinn-Phong: the specular term times (ns + 8)/(8π); fixed-function GL has no such factor, so the app draws with phonglab's generated shader (oF's lights and material only set GL's state)
+of-shader-comment = phonglab's generated shader (phonglab shader), for what fixed-function GL cannot compute: GL's own vertex, normal and matrices, the other uniforms set in draw()
 of-no-scene-ambient = this scene's rules have no scene ambient: 0 here, so that GL computes the same I (oF's default is 0.2)
 of-rules-comment = phonglab computes this scene under { $rules }; fixed-function GL computes OpenGL's equation, which can differ (the normal by the inverse transpose, the specular gate)
 of-phong-specular-comment = this scene's specular is Phong's (R · V); fixed-function GL computes Blinn-Phong (N · H): the highlight differs
@@ -890,6 +897,7 @@ lobe-axis = φ, degrees from N
 lobe-luminance = { $name } = { $value } (the luminance of { $colour })
 lobe-caption = Light { $light }: θ = { $theta }°, n = { $n }, { $kd }, { $ks }; the vertex's V at φ = { $phi }°
 lobe-diffuse = diffuse kd cos θ
+lobe-normalised = normalised Blinn-Phong ks (N·H)^n (n+8)/8π
 lobe-vertex-v = the vertex's V
 
 ## compare
@@ -1023,6 +1031,7 @@ channel-attenuation = 1/at (attenuation factor)
 channel-spot = Spot factor
 channel-n-dot-l = N·L
 channel-n-dot-h = N·H
+channel-r-dot-v = R·V
 channel-normal = Normal as a colour
 channel-light-count = Lights reaching
 probe-pixel = Pixel ({ $x }, { $y }), { $shading }

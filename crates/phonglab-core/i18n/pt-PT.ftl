@@ -176,6 +176,7 @@ controls-vertex = Vértice
 controls-camera = Câmara (modelview)
 rule-set = Regras de cálculo
 specular-model = Modelo especular
+specular-blinn-phong-normalised = Blinn-Phong normalizado (n.H)·(ns+8)/8π
 rules-opengl-summary = Emissão + ambiente da cena + as componentes ambiente, difusa e especular de cada luz (OpenGL 2.1, 2.14.1).
 rules-worksheet-summary = A ficha de trabalho: sem ambiente da cena nem emissão; difusa 0 além de 90 graus, especular 0 além de 90 graus.
 rules-demo-summary = O shader da demo de Phong: sem ambiente da cena nem emissão, pow(max(R.V, 0), e) sem outra condição.
@@ -374,7 +375,7 @@ help-local-viewer = ligar ou desligar o observador local
 help-next-material = material clássico seguinte
 help-previous-material = material clássico anterior
 help-next-modelview = modelview seguinte da ficha (mview1..5)
-help-specular-model = especular de Blinn-Phong / Phong
+help-specular-model = modelo especular seguinte (Blinn-Phong, Phong, Blinn-Phong normalizado)
 help-next-rules = regras seguintes (OpenGL, ficha, demo de Phong)
 help-next-normals = modo seguinte das normais (como estão, normalizar, reescalar)
 help-two-sided = iluminação das duas faces ligada/desligada
@@ -485,6 +486,7 @@ gate-lit-side = f = 1 se cosTheta > 0
 gate-positive = só onde cos > 0
 gate-none = sem condição
 formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate }; f = { $f }; OpenGL: s_cl · s_cm · max(n · h, 0)^s_rm)
+formula-specular-normalised = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns · (ns + 8)/(8π)   ({ $gate }; f = { $f }; Blinn-Phong que conserva a energia: quanto mais estreito o brilho, mais intenso, e a luz que reflete mantém-se; o OpenGL não tem este fator)
 formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: as componentes são divididas por k0 + k1 d + k2 d²)
 formula-at-directional = at = 1   (direcional)
 formula-spot = spot = max(-L . s, 0)^e se -L . s >= cos(cutoff) = { $cutoff }, senão 0;  -L . s = { $angle }
@@ -734,6 +736,8 @@ nb-specular-phong =
     - α é o ângulo entre R, o vetor da luz refletido na normal, e o observador
     - R = 2 (N · vlv) N - vlv
 nb-gate-lit-side-comment = # OpenGL: sem especular de uma luz atrás da superfície (f = 0 onde N · L <= 0)
+nb-specular-normalised =
+    Blinn-Phong normalizado (que conserva a energia), como nos motores gráficos atuais: a componente é multiplicada por (ns + 8)/(8π), de modo que um brilho mais estreito (ns maior) é mais intenso e a luz que reflete se mantém aproximadamente a mesma. A iluminação de pipeline fixo do OpenGL não tem este fator.
 nb-attenuation =
     Calculo da atenuação:
 
@@ -841,6 +845,7 @@ py-projection-clip = nenhuma projeção: a imagem é o próprio espaço de recor
 py-modelview-comment = a modelview com que o objeto é desenhado: a câmara, depois a rotação do objeto (linhas)
 py-lighting-modelview-comment = a modelview que a iluminação usa, onde não é a do desenho (a demo ilumina no espaço do objeto)
 py-color-material-comment = GL_COLOR_MATERIAL: as cores do material que acompanha são a cor corrente (glColor); u_color é essa cor
+py-normalised-comment = Blinn-Phong normalizado: a componente especular vezes (ns + 8)/(8π); o GL de pipeline fixo não tem este fator, por isso só o shader abaixo o calcula (a iluminação do próprio GL a partir deste estado não o faria)
 py-light-eye = colocada sob a identidade: a luz move-se com o olho
 py-light-object = colocada sob a modelview inteira: a luz roda com o objeto
 py-light-world = colocada sob a matriz de vista: a luz fica parada no mundo
@@ -859,6 +864,8 @@ of-spot-comment = a direção do foco é a direção de olhar da luz
 of-material-comment = o material, ativo enquanto o objeto é desenhado (ofSetColor com iluminação ligaria antes o glColorMaterial)
 of-back-material-comment = o oF tem um material para os dois lados: o da face de trás, em GL direto
 of-color-material-comment = GL_COLOR_MATERIAL: as cores do material que acompanha seguem a cor corrente, dada por ofSetColor
+of-normalised-comment = Blinn-Phong normalizado: a componente especular vezes (ns + 8)/(8π); o GL de pipeline fixo não tem este fator, por isso a aplicação desenha com o shader gerado pelo phonglab (as luzes e o material do oF só definem o estado do GL)
+of-shader-comment = o shader gerado pelo phonglab (phonglab shader), para o que o GL de pipeline fixo não calcula: o vértice, a normal e as matrizes do próprio GL, os outros uniforms definidos em draw()
 of-no-scene-ambient = as regras desta cena não têm ambiente da cena: 0 aqui, para o GL calcular o mesmo I (o oF usa 0,2 por omissão)
 of-rules-comment = o phonglab calcula esta cena com { $rules }; o GL de pipeline fixo calcula a equação do OpenGL, que pode diferir (a normal pela inversa transposta, a condição da especular)
 of-phong-specular-comment = a especular desta cena é a de Phong (R · V); o GL de pipeline fixo calcula Blinn-Phong (N · H): o brilho difere
@@ -890,6 +897,7 @@ lobe-axis = φ, graus a partir de N
 lobe-luminance = { $name } = { $value } (a luminância de { $colour })
 lobe-caption = Luz { $light }: θ = { $theta }°, n = { $n }, { $kd }, { $ks }; o V do vértice em φ = { $phi }°
 lobe-diffuse = difusa kd cos θ
+lobe-normalised = Blinn-Phong normalizado ks (N·H)^n (n+8)/8π
 lobe-vertex-v = o V do vértice
 
 ## compare
@@ -1023,6 +1031,7 @@ channel-attenuation = 1/at (fator de atenuação)
 channel-spot = Fator do foco
 channel-n-dot-l = N·L
 channel-n-dot-h = N·H
+channel-r-dot-v = R·V
 channel-normal = Normal como cor
 channel-light-count = Luzes que chegam
 probe-pixel = Píxel ({ $x }, { $y }), { $shading }

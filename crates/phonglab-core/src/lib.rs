@@ -25,9 +25,9 @@
 //! | 9 | export: the student's own code, and back | `export::notebook`, `export::pyopengl`, `export::openframeworks`, `export::read_python` |
 //! | 8 | teach: for the classroom; study: what accuracy costs, the benchmark timed | [`exercise`], [`quiz`], [`shader`]; [`cost`], [`bench`](mod@bench) |
 //! | 7 | raster: the CPU renderer | [`render`], [`shaded`] |
-//! | 6 | specialise: only the stages a scene needs | [`plan`], [`lighter`], [`batch`] (its ways in), [`effects`] (the plan in words) |
+//! | 6 | specialise: the plan's stages run over arrays | [`lighter`], [`batch`] (its ways in), [`effects`] (the plan in words) |
 //! | 5 | formats: text in and out, ready-made documents | [`document`], [`library`], [`glref`], [`escape`] (user text for each language written) |
-//! | 4 | equation: the lighting equation and its worked calculation | [`lighting`], [`breakdown`], [`explain`], [`validate`] |
+//! | 4 | equation: the lighting equation, the stage list a scene compiles to, its worked calculation | [`lighting`], [`breakdown`], [`plan`] (the stage list every writer walks), [`explain`], [`validate`] |
 //! | 3 | model: what is lit | [`scene`], [`rules`], [`materials`], [`camera`], [`transform`], [`view`], [`presets`], [`error`], [`vocabulary`] (the worksheet's names, once) |
 //! | 2 | mesh: the objects | [`mesh`] (`sphere`, `cylinder`, `teapot`, `obj`) |
 //! | 1 | numerics: where floating point needs care | [`robust`], [`real`], [`exact_pow`], [`pow`], [`strict`], [`typed_number`] |
@@ -47,12 +47,12 @@ pub mod study;
 pub mod teach;
 
 // Each module also at the crate's root, so paths name the module, not its group.
-pub use equation::{breakdown, explain, lighting, validate};
+pub use equation::{breakdown, explain, lighting, plan, validate};
 pub use formats::{document, escape, glref, library};
 pub use model::{camera, error, materials, presets, rules, scene, transform, view, vocabulary};
 pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
 pub use raster::{channels, probe, probe_report, render, shaded};
-pub use specialise::{batch, effects, lighter, plan};
+pub use specialise::{batch, effects, lighter};
 pub use study::{bench, cost, difference};
 pub use teach::{director, exercise, misconception, quiz, shader};
 
@@ -63,7 +63,7 @@ pub use error::SceneError;
 pub use lighting::{Engine, EvalOptions, Renormalize};
 pub use pow::PowFn;
 pub use real::{Precision, Real, Vec3Ops};
-pub use rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel};
+pub use rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel, SpecularVector};
 pub use scene::{
     ColorMaterial, ColorMaterialMode, Face, Light, LightModel, LightPlacement, MAX_LIGHTS, Material, NormalMode, Rgba,
     Scene, Vertex,

@@ -8,9 +8,9 @@
 //! | 1 | numerics | floating point with care, numbers as typed, the processor's features |
 //! | 2 | mesh | gluSphere, gluCylinder, the teapot, OBJ files |
 //! | 3 | model | what is lit: scene, rules, materials, camera, view, presets, errors |
-//! | 4 | equation | the lighting equation and its worked calculation |
+//! | 4 | equation | the lighting equation, the stage list a scene compiles to (`plan`, which every writer walks), its worked calculation |
 //! | 5 | formats | documents (scene files), the document library, glref cases |
-//! | 6 | specialise | the stage list a scene needs, run over arrays |
+//! | 6 | specialise | the plan's stage list run over arrays |
 //! | 7 | raster | the CPU renderer and the shaded view's setup |
 //! | 8 | teach, study | exercises, quiz, shaders; the cost of accuracy |
 //! | 9 | export | the student's own code, and back |

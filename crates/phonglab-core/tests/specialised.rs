@@ -262,6 +262,7 @@ type Bit = (&'static str, fn(&mut Scene), fn(&phonglab_core::plan::Stage) -> boo
 /// Each key bit in turn ("nothing" first, as the control).
 fn key_bits() -> [Bit; 13] {
     use phonglab_core::plan::Stage;
+    use phonglab_core::scene::Side;
     [
         ("nothing", |_| {}, |_| false),
         (
@@ -314,7 +315,10 @@ fn key_bits() -> [Bit; 13] {
             |st| {
                 matches!(
                     st,
-                    Stage::DiffuseCosine(_, 1) | Stage::SpecularCosine(_, 1) | Stage::Power(_, 1) | Stage::Sum(_, 1)
+                    Stage::DiffuseCosine(_, Side::Back)
+                        | Stage::SpecularCosine(_, Side::Back, _)
+                        | Stage::Power(_, Side::Back)
+                        | Stage::Sum(_, Side::Back, _)
                 )
             },
         ),
@@ -349,7 +353,7 @@ fn key_bits() -> [Bit; 13] {
             |st| {
                 matches!(
                     st,
-                    Stage::ViewVector
+                    Stage::ViewVector(_)
                         | Stage::Halfway(_)
                         | Stage::LightVector(_)
                         | Stage::TransformPosition
@@ -382,15 +386,16 @@ fn position_effect_is_what_ran(name: &str, l: &Lighter, trace: &[phonglab_core::
 /// What the panel says is skipped ran no stage of its kind.
 fn skipped_effects_ran_nothing(name: &str, l: &Lighter, trace: &[phonglab_core::plan::Stage]) {
     use phonglab_core::plan::{EffectKind, Stage};
+    use phonglab_core::scene::Side;
     for eff in l.key().effects().iter().filter(|e| !e.on) {
         let ran = trace.iter().any(|st| match eff.kind {
             EffectKind::Normalisation => matches!(st, Stage::NormalizeNormal | Stage::RescaleNormal),
             EffectKind::Position => {
                 matches!(st, Stage::TransformPosition | Stage::TransformPositionProjective | Stage::TranslatePosition)
             }
-            EffectKind::ViewVector => matches!(st, Stage::ViewVector),
+            EffectKind::ViewVector => matches!(st, Stage::ViewVector(_)),
             EffectKind::SceneColor => matches!(st, Stage::SceneColor),
-            EffectKind::BackSide => matches!(st, Stage::Sum(_, 1)),
+            EffectKind::BackSide => matches!(st, Stage::Sum(_, Side::Back, _)),
             EffectKind::LightVector => matches!(st, Stage::LightVector(_)),
             EffectKind::Attenuation => matches!(st, Stage::Attenuate(_)),
             EffectKind::Spotlight => matches!(st, Stage::SpotCone(_) | Stage::SpotPower(_)),
@@ -408,6 +413,7 @@ fn skipped_effects_ran_nothing(name: &str, l: &Lighter, trace: &[phonglab_core::
 #[test]
 fn skipped_stages_never_run_for_any_key_bit() {
     use phonglab_core::plan::Stage;
+    use phonglab_core::scene::{LightId, Side};
     let (positions, normals) = phonglab_core::presets::sphere_points(300);
     for (name, change, left_out) in key_bits() {
         let mut scene = everything_on();
@@ -424,7 +430,7 @@ fn skipped_stages_never_run_for_any_key_bit() {
             if name != "nothing" {
                 assert!(!trace.iter().any(left_out), "{name} {model:?}: a left-out stage ran: {program:?}");
             }
-            assert!(program.contains(&Stage::Sum(0, 0)));
+            assert!(program.iter().any(|s| matches!(s, Stage::Sum(LightId(0), Side::Front, _))));
             position_effect_is_what_ran(name, &l, &trace, &scene);
             skipped_effects_ran_nothing(name, &l, &trace);
             // And the colours are the general engine's.

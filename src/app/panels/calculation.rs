@@ -45,7 +45,7 @@ fn plan_ui(ui: &mut Ui, effects: &[Effect], stages: &[Stage]) {
                 }
             }
             ui.label(RichText::new(t!("plan-program", stages = stages.len())).small());
-            let list: Vec<String> = stages.iter().map(|s| format!("{s:?}")).collect();
+            let list: Vec<String> = stages.iter().map(Stage::to_string).collect();
             ui.label(RichText::new(list.join(" > ")).small().monospace());
         });
     });

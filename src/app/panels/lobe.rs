@@ -9,6 +9,7 @@
 //! | diffuse | kd · max(N·L, 0), the same towards every viewer |
 //! | Blinn-Phong | ks · max(N·H, 0)^n, H = normalize(L + V) |
 //! | Phong | ks · max(R·V, 0)^n, R = 2 (N·L) N − L |
+//! | normalised Blinn-Phong (drawn when it is the scene's) | Blinn-Phong's · (n + 8)/(8π) |
 //!
 //! kd and ks are the luminances (Rec. 709 weights) of the material's colour times the
 //! light's, so the curves are in the units of the vertex colour; where that product is grey
@@ -21,7 +22,7 @@ use egui::{Color32, Ui};
 use egui_plot::{Line, Plot, PlotPoints, VLine};
 use glam::DVec3;
 use phonglab_core::lighting::terms;
-use phonglab_core::{PowFn, Scene, SpecularGate, SpecularModel};
+use phonglab_core::{PowFn, Scene, SpecularGate, SpecularVector};
 
 use crate::app::model::evaluated::Evaluated;
 use crate::app::widgets::palette;
@@ -78,6 +79,12 @@ impl Lobe {
             Some(h) => self.specular(n_dot_l, n.dot(h)),
             None => 0.0,
         }
+    }
+
+    /// Energy-conserving Blinn-Phong's term towards φ: Blinn-Phong's times the engine's own
+    /// `(n + 8) / (8 pi)`.
+    pub fn blinn_normalised(&self, phi: f64) -> f64 {
+        self.blinn(phi) * terms::specular_normalisation(self.n)
     }
 
     /// The Phong specular term towards φ: the engine's R = 2 (n·L) n − L.
@@ -175,7 +182,13 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
     };
     let bg = ui.visuals().panel_fill;
     let ink = |c: Color32| palette::ink_on(c, bg);
-    let chosen = scene.rules.specular;
+    // The curve of the scene's own model drawn thicker; the normalised one drawn only
+    // where it is the scene's (its factor, up to 4 at n = 100, would rescale the others).
+    let normalised = scene.rules.specular.normalised();
+    let (blinn_chosen, phong_chosen) = match scene.rules.specular.vector() {
+        SpecularVector::Halfway => (!normalised, false),
+        SpecularVector::Reflection => (false, true),
+    };
     let light = &scene.lights[eval.lights[0].index];
     let m = &scene.material;
     let kd = coefficient("kd", (m.diffuse * light.diffuse).truncate(), lobe.kd);
@@ -190,16 +203,15 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
         ks = ks,
         phi = deg(phi_v)
     ));
-    let curves: [Curve; 3] = [
+    let mut curves: Vec<Curve> = vec![
         (phonglab_core::t!("lobe-diffuse"), ink(palette::L), sweep(|_| lobe.diffuse()), false),
-        (
-            "Blinn-Phong ks (N·H)^n".into(),
-            ink(palette::H),
-            sweep(|p| lobe.blinn(p)),
-            chosen == SpecularModel::BlinnPhong,
-        ),
-        ("Phong ks (R·V)^n".into(), ink(palette::SPOT), sweep(|p| lobe.phong(p)), chosen == SpecularModel::Phong),
+        ("Blinn-Phong ks (N·H)^n".into(), ink(palette::H), sweep(|p| lobe.blinn(p)), blinn_chosen),
+        ("Phong ks (R·V)^n".into(), ink(palette::SPOT), sweep(|p| lobe.phong(p)), phong_chosen),
     ];
+    if normalised {
+        let name = phonglab_core::t!("lobe-normalised");
+        curves.push((name, ink(palette::H), sweep(|p| lobe.blinn_normalised(p)), true));
+    }
     legend_ui(ui, &curves);
     let avail = ui.available_size();
     let wide = avail.x >= 1.6 * avail.y;

@@ -11,7 +11,7 @@
 
 use egui::{Color32, Pos2, Rect, Sense, Stroke, Ui, Vec2, vec2};
 use glam::{DMat3, DVec3};
-use phonglab_core::SpecularModel;
+use phonglab_core::{SpecularModel, SpecularVector};
 
 use crate::app::model::evaluated::Evaluated;
 use crate::app::widgets::arrows::{draw_arrow, draw_end_on, end_on_marker, paint_labels_fitted};
@@ -92,9 +92,9 @@ fn arrows(eval: &Evaluated, specular: SpecularModel, ink: &dyn Fn(Color32) -> Co
     for lv in &eval.lights {
         let tag = if many { lv.index.to_string() } else { String::new() };
         out.push(Arrow { tag: format!("L{tag}"), v: lv.l, color: ink(palette::L), dashed: false });
-        let (name, v) = match specular {
-            SpecularModel::BlinnPhong => ("H", lv.h),
-            SpecularModel::Phong => ("R", lv.r),
+        let (name, v) = match specular.vector() {
+            SpecularVector::Halfway => ("H", lv.h),
+            SpecularVector::Reflection => ("R", lv.r),
         };
         out.push(Arrow { tag: format!("{name}{tag}"), v, color: ink(palette::H), dashed: true });
         if let Some(s) = lv.spot {
@@ -112,9 +112,9 @@ fn legend(eval: &Evaluated, specular: SpecularModel) -> Vec<(&'static str, &'sta
         ("N", "vertexNormal", palette::N, false),
         ("L", "vlv", palette::L, false),
         ("V", "vov", palette::V, false),
-        match specular {
-            SpecularModel::BlinnPhong => ("H", "halfway", palette::H, true), // the worksheet's "vetor halfway" too
-            SpecularModel::Phong => ("R", "R", palette::H, true),
+        match specular.vector() {
+            SpecularVector::Halfway => ("H", "halfway", palette::H, true), // the worksheet's "vetor halfway" too
+            SpecularVector::Reflection => ("R", "R", palette::H, true),
         },
     ];
     if eval.lights.iter().any(|l| l.spot.is_some()) {
@@ -261,9 +261,9 @@ pub fn vector_plot_ui(
     canvas.arrows(&arrows(eval, specular, &ink), egui::FontId::proportional(body * 1.6), &mut marks);
     canvas.painter.circle_filled(canvas.centre, canvas.width * 1.2, ink(palette::N));
     if show_angles && let Some(lv) = eval.lights.first() {
-        let second = match specular {
-            SpecularModel::BlinnPhong => ("\u{3b2}", eval.n, lv.h),
-            SpecularModel::Phong => ("\u{3b1}", lv.r, eval.v),
+        let second = match specular.vector() {
+            SpecularVector::Halfway => ("\u{3b2}", eval.n, lv.h),
+            SpecularVector::Reflection => ("\u{3b1}", lv.r, eval.v),
         };
         let font = egui::FontId::proportional(body * 1.5);
         canvas.angle(0.3, ("\u{3b8}", eval.n, lv.l), ink(palette::L), font.clone(), &mut marks);

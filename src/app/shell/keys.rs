@@ -2,7 +2,7 @@
 //! pressed are [`crate::app::panels::help`]'s), and presentation's own keys (F5, and the
 //! arrow keys walking through the calculation's steps).
 
-use phonglab_core::{CameraSpec, NormalMode, RuleSet, SpecularModel, materials};
+use phonglab_core::{CameraSpec, NormalMode, RuleSet, materials};
 
 use super::files;
 use super::state::{AppState, Precision};
@@ -57,10 +57,7 @@ pub fn apply_action(state: &mut AppState, action: help::Action) {
             }
         }
         A::SpecularModel => {
-            c.scene.rules.specular = match c.scene.rules.specular {
-                SpecularModel::BlinnPhong => SpecularModel::Phong,
-                SpecularModel::Phong => SpecularModel::BlinnPhong,
-            }
+            c.scene.rules.specular = c.scene.rules.specular.next();
         }
         A::NextRuleSet => {
             let i = RuleSet::ALL.iter().position(|r| *r == c.scene.rules.set).unwrap_or(0);

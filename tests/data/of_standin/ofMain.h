@@ -1,9 +1,11 @@
 // A stand-in for openFrameworks 0.12's ofMain.h: the declarations the exported apps use,
-// with oF's own signatures (libs/openFrameworks: ofLight.h, ofMaterial.h, ofCamera.h,
+// with oF's own signatures (libs/openFrameworks: ofLight.h, ofMaterial.h, ofShader.h, ofCamera.h,
 // ofNode.h, ofGraphics.h, of3dGraphics.h, ofAppRunner.h, ofColor.h) and the GL 2.1 calls
 // and constants, so that tests/openframeworks.rs can compile an export as C++17 without
 // openFrameworks. Declarations only: nothing is linked.
 #pragma once
+
+#include <string>
 
 typedef float GLfloat;
 typedef int GLint;
@@ -17,6 +19,7 @@ enum : GLenum {
     GL_LIGHT_MODEL_LOCAL_VIEWER = 0x0B51, GL_LIGHT_MODEL_TWO_SIDE = 0x0B52, GL_LIGHT_MODEL_AMBIENT = 0x0B53,
     GL_LIGHT_MODEL_COLOR_CONTROL = 0x81F8, GL_SEPARATE_SPECULAR_COLOR = 0x81FA,
     GL_NORMALIZE = 0x0BA1, GL_RESCALE_NORMAL = 0x803A, GL_MODELVIEW = 0x1700, GL_TRUE = 1, GL_FALSE = 0,
+    GL_FRAGMENT_SHADER = 0x8B30, GL_VERTEX_SHADER = 0x8B31,
 };
 void glLightfv(GLenum light, GLenum pname, const GLfloat* params);
 void glLightf(GLenum light, GLenum pname, GLfloat param);
@@ -92,6 +95,17 @@ public:
     void setShininess(float nShininess);
     void begin() const;
     void end() const;
+};
+
+class ofShader {
+public:
+    bool setupShaderFromSource(GLenum type, std::string source, std::string sourceDirectoryPath = "");
+    bool linkProgram();
+    void begin() const;
+    void end() const;
+    void setUniform1f(const std::string& name, float v1) const;
+    void setUniform3f(const std::string& name, float v1, float v2, float v3) const;
+    void setUniform4f(const std::string& name, float v1, float v2, float v3, float v4) const;
 };
 
 class ofBaseApp {

@@ -12,19 +12,14 @@ use crate::model::vocabulary::Quantity::{self, self as Q};
 use crate::t;
 
 use crate::equation::breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, VertexLighting};
-use crate::model::rules::SpecularModel;
-use crate::model::scene::{ColorMaterialMode, Scene};
+use crate::equation::lighting::EvalOptions;
+use crate::equation::plan::{Key, Program, SpecularTerm, Stage, Viewer};
+use crate::model::rules::SpecularVector;
+use crate::model::scene::{ColorMaterialMode, LightId, Scene};
 use crate::numerics::real::{Real, Vec3Ops};
 
-/// Which face side to explain.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
-pub enum Side {
-    /// Front-facing (`n` as given).
-    #[default]
-    Front,
-    /// Back-facing (`-n`, the back material; only differs with two-sided lighting).
-    Back,
-}
+/// Which face side to explain (the model's side, named here too).
+pub use crate::model::scene::Side;
 
 /// What a step computes; the app colours steps and the plot's vectors by kind.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -177,6 +172,83 @@ struct Builder {
     steps: Vec<Step>,
 }
 
+/// The forms of the terms the steps write, read off the scene's worked program
+/// ([`Program::worked`], every term a person computes by hand) for the side explained: how
+/// V is formed, and each light's specular vector and term. The values come from the
+/// breakdown; which formula each step shows, from here.
+struct Forms {
+    viewer: Viewer,
+    lights: Vec<LightForms>,
+}
+
+/// One light's specular, as its stages say it.
+#[derive(Clone, Copy)]
+struct LightForms {
+    vector: SpecularVector,
+    term: SpecularTerm,
+}
+
+impl Forms {
+    /// Walks `program` for side `side`.
+    fn of(program: &Program, side: Side) -> Forms {
+        let mut forms = Forms { viewer: Viewer::Infinite, lights: Vec::new() };
+        for &stage in &program.stages {
+            forms.take(stage, side);
+        }
+        forms
+    }
+
+    fn light(&mut self, i: LightId) -> &mut LightForms {
+        if self.lights.len() <= i.index() {
+            let blank = LightForms { vector: SpecularVector::Halfway, term: SpecularTerm::Plain };
+            self.lights.resize(i.index() + 1, blank);
+        }
+        &mut self.lights[i.index()]
+    }
+
+    /// What one stage says of the steps' formulas.
+    fn take(&mut self, stage: Stage, side: Side) {
+        match stage {
+            // Their steps' formulas follow the scene (the normal's transform and mode) or
+            // the breakdown (a positional light's L and d, a spotlight's cone), or have one
+            // form (the cosines, the power, the scene's colour, which the rules keep).
+            Stage::TransformNormal
+            | Stage::RescaleNormal
+            | Stage::NormalizeNormal
+            | Stage::NormalizeNormalFast
+            | Stage::TransformPosition
+            | Stage::TransformPositionProjective
+            | Stage::TranslatePosition
+            | Stage::ZeroNormals
+            | Stage::LightVector(_)
+            | Stage::LightConstant(_)
+            | Stage::Attenuate(_)
+            | Stage::SpotCone(_)
+            | Stage::SpotPower(_)
+            | Stage::DiffuseCosine(..)
+            | Stage::SpecularCosine(..)
+            | Stage::Power(..)
+            | Stage::SceneColor => {}
+            Stage::ViewVector(viewer) => self.viewer = viewer,
+            Stage::Halfway(i) | Stage::HalfwayConstant(i) => self.light(i).vector = SpecularVector::Halfway,
+            Stage::Reflect(i) => self.light(i).vector = SpecularVector::Reflection,
+            Stage::Sum(i, on, term) => {
+                if on == side {
+                    self.light(i).term = term;
+                }
+            }
+        }
+    }
+
+    /// Light `index`'s forms (the scene's own index, as the breakdown numbers lights).
+    fn of_light(&self, index: usize) -> LightForms {
+        self.lights
+            .get(index)
+            .copied()
+            .unwrap_or(LightForms { vector: SpecularVector::Halfway, term: SpecularTerm::Plain })
+    }
+}
+
 impl Builder {
     /// A step finding `q` (for light `light`, its names ending in `sfx`), titled with the
     /// quantity's label.
@@ -227,13 +299,15 @@ impl Builder {
 pub fn explain<S: Real>(scene: &Scene, lit: &VertexLighting<S>, side: Side) -> Explanation {
     let mut b = Builder { steps: Vec::new() };
     let back = side == Side::Back && scene.light_model.two_sided;
+    let program = Program::worked(&Key::of(scene, EvalOptions::default()));
+    let forms = Forms::of(&program, Side::back_if(back));
     normal_step(&mut b, scene, lit, back);
     position_step(&mut b, scene, lit);
     if lit.lights().is_empty() {
-        view_step(&mut b, scene, lit);
+        view_step(&mut b, &forms, lit);
     }
     for (k, t) in lit.lights().iter().enumerate() {
-        light_steps(&mut b, scene, lit, t, k == 0, back);
+        light_steps(&mut b, scene, &forms, lit, t, k == 0, back);
     }
     total_steps(&mut b, scene, lit, back);
     let n = lit.lights().len();
@@ -309,18 +383,15 @@ fn position_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S
 }
 
 /// The view vector V (after the first light's distance, as the worksheet computes it).
-fn view_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>) {
-    let rules = scene.rules;
-    let vformula = if scene.light_model.local_viewer {
-        t!("formula-v-local")
-    } else if rules.viewer_from_eye_plane() {
-        t!("formula-v-worksheet")
-    } else {
-        t!("formula-v-infinite")
+fn view_step<S: Real>(b: &mut Builder, forms: &Forms, lit: &VertexLighting<S>) {
+    let vformula = match forms.viewer {
+        Viewer::Local => t!("formula-v-local"),
+        Viewer::EyePlane => t!("formula-v-worksheet"),
+        Viewer::Infinite => t!("formula-v-infinite"),
     };
     b.push(StepKind::V, None, Q::V, "", &vformula, Some(dir4::<S>(lit.v)));
     limit_notes(b, lit.limits, StepKind::V);
-    if rules.viewer_from_eye_plane() && !scene.light_model.local_viewer && lit.pos_in_eye.z > 0.0 {
+    if forms.viewer == Viewer::EyePlane && lit.pos_in_eye.z > 0.0 {
         b.note(t!("note-vov-behind"));
     }
 }
@@ -330,6 +401,7 @@ fn view_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>) {
 fn light_steps<S: Real>(
     b: &mut Builder,
     scene: &Scene,
+    forms: &Forms,
     lit: &VertexLighting<S>,
     t: &LightTerms<S>,
     first: bool,
@@ -337,9 +409,9 @@ fn light_steps<S: Real>(
 ) {
     light_vector_steps(b, lit, t);
     if first {
-        view_step(b, scene, lit);
+        view_step(b, forms, lit);
     }
-    term_steps(b, scene, lit, t, back);
+    term_steps(b, scene, forms.of_light(t.index), lit, t, back);
     share_steps(b, scene, lit, t, back);
 }
 
@@ -369,7 +441,14 @@ fn light_vector_steps<S: Real>(b: &mut Builder, lit: &VertexLighting<S>, t: &Lig
 }
 
 /// The ambient, diffuse and specular terms, with cos(θ), H or R, and the specular cosine.
-fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, t: &LightTerms<S>, back: bool) {
+fn term_steps<S: Real>(
+    b: &mut Builder,
+    scene: &Scene,
+    forms: LightForms,
+    lit: &VertexLighting<S>,
+    t: &LightTerms<S>,
+    back: bool,
+) {
     let (rules, i) = (scene.rules, Some(t.index));
     let sign = if back { "-" } else { "" };
     let sfx = light_suffix(lit, t);
@@ -400,8 +479,8 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
         Some(dir4::<S>(st.diffuse)),
     );
     color_material_note(b, scene, back, ColorMaterialMode::Diffuse);
-    match rules.specular {
-        SpecularModel::BlinnPhong => {
+    let cos = match forms.vector {
+        SpecularVector::Halfway => {
             b.push(
                 StepKind::H,
                 i,
@@ -419,8 +498,9 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
                 &format!("cosBeta = {sign}vertexNormal · H   (OpenGL: {sign}n · h)"),
                 Some(vec![st.spec_cos.to_f64()]),
             );
+            "cosBeta"
         }
-        SpecularModel::Phong => {
+        SpecularVector::Reflection => {
             b.push(
                 StepKind::R,
                 i,
@@ -434,26 +514,20 @@ fn term_steps<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>, 
                 Some(dir4::<S>(t.r)),
             );
             b.push(StepKind::CosBeta, i, Q::CosAlpha, &sfx, "cosAlpha = R · vov", Some(vec![st.spec_cos.to_f64()]));
+            "cosAlpha"
         }
-    }
+    };
     let gate = match rules.specular_gate() {
         crate::model::rules::SpecularGate::LitSide => t!("gate-lit-side"),
         crate::model::rules::SpecularGate::PositiveCosine => t!("gate-positive"),
         crate::model::rules::SpecularGate::None => t!("gate-none"),
     };
-    b.push(
-        StepKind::Specular,
-        i,
-        Q::Specular,
-        &sfx,
-        &t!(
-            "formula-specular",
-            gate = gate,
-            f = crate::locale::num(st.f.to_f64(), 8),
-            cos = if rules.specular == SpecularModel::Phong { "cosAlpha" } else { "cosBeta" }
-        ),
-        Some(dir4::<S>(st.specular)),
-    );
+    let f = crate::locale::num(st.f.to_f64(), 8);
+    let formula = match forms.term {
+        SpecularTerm::Zero | SpecularTerm::Plain => t!("formula-specular", gate = gate, f = f, cos = cos),
+        SpecularTerm::Normalised => t!("formula-specular-normalised", gate = gate, f = f, cos = cos),
+    };
+    b.push(StepKind::Specular, i, Q::Specular, &sfx, &formula, Some(dir4::<S>(st.specular)));
     color_material_note(b, scene, back, ColorMaterialMode::Specular);
 }
 

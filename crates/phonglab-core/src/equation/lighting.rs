@@ -33,12 +33,12 @@ use glam::{DMat4, DVec3, DVec4, Vec4Swizzles as _};
 
 use crate::equation::breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerms, VertexLighting};
 use crate::model::error::SceneError;
-use crate::model::rules::{Rules, SpecularGate, SpecularModel};
+use crate::model::rules::{Rules, SpecularGate, SpecularVector};
 use crate::model::scene::{Light, Material, NormalMode, Rgba, Scene, Vertex};
 use crate::model::transform::NormalMatrix;
 use crate::numerics::pow::PowFn;
 use crate::numerics::real::{Real, Vec3Ops};
-use crate::numerics::robust::{cos_deg, mul0, mul0_v, transform_point, transform_vector3, try_normalize};
+use crate::numerics::robust::{cos_deg, mul0, mul0_v, scale0, transform_point, transform_vector3, try_normalize};
 
 // The equation's per-vertex arithmetic, one function per step: `lighting/terms.rs`.
 pub mod terms;
@@ -188,10 +188,17 @@ fn prepare_light<S: Real>(scene: &Scene, index: usize, l: &Light) -> PreparedLig
         exponent: S::from_f64(l.spot_exponent),
     });
     let product = |m: &Material| {
+        let specular = mul0_v::<S>(rgb::<S>(m.specular), rgb::<S>(l.specular));
         [
             mul0_v::<S>(rgb::<S>(m.ambient), rgb::<S>(l.ambient)),
             mul0_v::<S>(rgb::<S>(m.diffuse), rgb::<S>(l.diffuse)),
-            mul0_v::<S>(rgb::<S>(m.specular), rgb::<S>(l.specular)),
+            // Energy-conserving Blinn-Phong's factor, once per side: every specular term of
+            // the side (the general engine's and the specialised lighter's) is scaled alike.
+            if scene.rules.specular.normalised() {
+                scale0::<S>(specular, S::from_f64(terms::specular_normalisation(m.shininess)))
+            } else {
+                specular
+            },
         ]
     };
     PreparedLight {
@@ -335,7 +342,13 @@ impl<S: Real> Engine<S> {
 
         let side_terms = |side: usize| -> SideTerms<S> {
             let n_side = if side == 0 { n } else { -n };
-            let sp = terms::SpecularInputs { h, r, v, gate: self.rules.specular_gate(), model: self.rules.specular };
+            let sp = terms::SpecularInputs {
+                h,
+                r,
+                v,
+                gate: self.rules.specular_gate(),
+                vector: self.rules.specular.vector(),
+            };
             terms::side::<S>(
                 pl.products[side],
                 n_side,
@@ -422,19 +435,19 @@ impl<S: Real> Engine<S> {
         }
     }
 
-    /// H, under Blinn-Phong's model where L and V have directions (`None` where L + V is
-    /// zero, noted).
+    /// H, where the specular model takes its cosine with H and L and V have directions
+    /// (`None` where L + V is zero, noted).
     #[inline(always)]
     fn halfway(&self, l: Option<S::V3>, v: Option<S::V3>, limits: &mut Limits) -> Option<S::V3> {
-        match (l, v) {
-            (Some(l), Some(v)) if self.rules.specular == SpecularModel::BlinnPhong => {
+        match (self.rules.specular.vector(), l, v) {
+            (SpecularVector::Halfway, Some(l), Some(v)) => {
                 let h = terms::halfway::<S>(l, v);
                 if h.is_none() {
                     limits.insert(Limit::HalfwayZero);
                 }
                 h
             }
-            _ => None,
+            (SpecularVector::Halfway, _, _) | (SpecularVector::Reflection, _, _) => None,
         }
     }
 }

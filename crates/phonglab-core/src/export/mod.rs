@@ -99,5 +99,5 @@ pub fn copy_text(doc: &Document, target: Target) -> Result<String, String> {
     Ok(written.iter().map(|(name, text)| format!("// ---- {name} ----\n{text}\n")).collect())
 }
 
+use crate::equation::plan::Key;
 use crate::formats::document::Document;
-use crate::specialise::plan::Key;

@@ -12,12 +12,12 @@
 
 use super::python::{array4, colour, matrix, num, shininess, string};
 use crate::equation::explain::fmt_value;
+use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::formats::document::Document;
 use crate::formats::escape;
-use crate::model::rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularModel};
+use crate::model::rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularVector};
 use crate::model::scene::{Face, Light, Material, NormalMode, Scene};
 use crate::model::vocabulary::Quantity::{self, self as Q};
-use crate::specialise::plan::Key;
 use crate::t;
 
 /// One cell of a notebook.
@@ -83,6 +83,10 @@ struct Needs {
     lights: usize,
     /// The rule set and the specular model.
     rules: Rules,
+    /// The vector the specular cosine is taken with: H or R.
+    vector: SpecularVector,
+    /// The specular term's form (every light's: one loop writes them all).
+    term: SpecularTerm,
     /// Normal handling.
     normals: NormalMode,
     /// Two-sided lighting: the back side's cells follow.
@@ -100,26 +104,62 @@ struct Needs {
 }
 
 impl Needs {
-    /// What the cells of `scene` need: the plan's key says which terms the scene has (the
-    /// renderer's and the shader's terms come from the same key); the scene, where the
-    /// lights were placed and whether w needs dividing.
+    /// What the cells of `scene` need: the terms are the stages of the key's worked program
+    /// (every term the worksheet computes, from the plan the renderer and the shader run);
+    /// the scene says where the lights were placed and whether w needs dividing.
     fn of(scene: &Scene, key: &Key) -> Self {
         let mview = scene.eye_from_object();
-        Needs {
+        let mut needs = Needs {
             lights: key.lights.len(),
             rules: key.rules,
+            vector: SpecularVector::Halfway,
+            term: SpecularTerm::Plain,
             normals: key.normals,
             two_sided: key.two_sided,
             separate_specular: key.separate_specular,
             light_mview: scene.lights.iter().any(|l| scene.eye_from_light(l) != mview),
-            spot: key.lights.iter().any(|l| l.spot),
-            opengl_terms: key.rules.scene_ambient(),
+            spot: false,
+            opengl_terms: false,
             divide_w: key.projective
                 || scene.vertex.position.w != 1.0
                 || scene.lights.iter().any(|l| {
                     let w = scene.light_pos_in_eye(l).w;
                     w != 0.0 && w != 1.0
                 }),
+        };
+        for &stage in &Program::worked(key).stages {
+            needs.take(stage);
+        }
+        needs
+    }
+
+    /// What one stage of the worked program asks of the cells.
+    fn take(&mut self, stage: Stage) {
+        match stage {
+            // The worksheet's own cells: the normal and the positions, L, d and at, the
+            // cosines and the power, each light's share (one loop over the lights).
+            Stage::TransformNormal
+            | Stage::RescaleNormal
+            | Stage::NormalizeNormal
+            | Stage::NormalizeNormalFast
+            | Stage::TransformPosition
+            | Stage::TransformPositionProjective
+            | Stage::TranslatePosition
+            | Stage::ZeroNormals
+            | Stage::ViewVector(_)
+            | Stage::LightVector(_)
+            | Stage::LightConstant(_)
+            | Stage::Attenuate(_)
+            | Stage::DiffuseCosine(..)
+            | Stage::SpecularCosine(..)
+            | Stage::Power(..) => {}
+            Stage::Sum(_, _, term) => self.term = term,
+            // The spotlight's cell.
+            Stage::SpotCone(_) | Stage::SpotPower(_) => self.spot = true,
+            Stage::Halfway(_) | Stage::HalfwayConstant(_) => self.vector = SpecularVector::Halfway,
+            Stage::Reflect(_) => self.vector = SpecularVector::Reflection,
+            // OpenGL's scene ambient and emission.
+            Stage::SceneColor => self.opengl_terms = true,
         }
     }
 
@@ -311,19 +351,17 @@ fn material(m: &Material, suffix: &str, emission: bool) -> String {
 /// departs from the worksheet's): what the cells below were written for.
 fn settings(needs: &Needs) -> Option<String> {
     let mut lines = Vec::new();
+    // The worksheet's own rules need no line.
     let rules = match needs.rules.set {
-        RuleSet::Worksheet => "worksheet",
-        RuleSet::OpenGl => "opengl",
-        RuleSet::PhongDemo => "phong-demo",
+        RuleSet::Worksheet => None,
+        RuleSet::OpenGl => Some("opengl"),
+        RuleSet::PhongDemo => Some("phong-demo"),
     };
-    if needs.rules.set != RuleSet::Worksheet {
+    if let Some(rules) = rules {
         lines.push(format!("rules = {}", string(rules)));
     }
-    let specular_default =
-        if needs.rules.set == RuleSet::PhongDemo { SpecularModel::Phong } else { SpecularModel::BlinnPhong };
-    if needs.rules.specular != specular_default {
-        let s = if needs.rules.specular == SpecularModel::Phong { "phong" } else { "blinn-phong" };
-        lines.push(format!("specular = {}", string(s)));
+    if !needs.rules.specular_is_the_sets() {
+        lines.push(format!("specular = {}", string(needs.rules.specular.name())));
     }
     if needs.normals != NormalMode::Normalize {
         let m = if needs.normals == NormalMode::AsIs { "as-is" } else { "rescale" };
@@ -434,8 +472,8 @@ fn specular(needs: &Needs, n: usize, suffix: &str) -> String {
     let ns = if back { "nsBack" } else { "ns" };
     let ct = format!("cosTheta{suffix}");
     let ispec = format!("Ispec{suffix}");
-    let (vector, cos_name, cos_line, assigned) = match needs.rules.specular {
-        SpecularModel::BlinnPhong => {
+    let (vector, cos_name, cos_line, assigned) = match needs.vector {
+        SpecularVector::Halfway => {
             let cos = format!("cosBeta{suffix}");
             let lines = if back {
                 format!("{cos}[⟨i⟩] = np.dot({normal}, H[⟨i⟩])\n{}\n", print(&cos, true))
@@ -448,7 +486,7 @@ fn specular(needs: &Needs, n: usize, suffix: &str) -> String {
             };
             (lines, cos.clone(), "beta", if back { vec![cos] } else { vec!["H".to_string(), cos] })
         }
-        SpecularModel::Phong => {
+        SpecularVector::Reflection => {
             let cos = format!("cosAlpha{suffix}");
             let dot = if needs.rules.reflect_clamped() {
                 "max(np.dot(vertexNormal, vlv[⟨i⟩]), 0)"
@@ -468,14 +506,20 @@ fn specular(needs: &Needs, n: usize, suffix: &str) -> String {
             (lines, cos.clone(), "alpha", if back { vec![cos] } else { vec!["R".to_string(), cos] })
         }
     };
+    // What multiplies the power, after it.
+    let scale = match needs.term {
+        SpecularTerm::Zero | SpecularTerm::Plain => String::new(),
+        // Energy-conserving Blinn-Phong.
+        SpecularTerm::Normalised => format!("*({ns} + 8)/(8*m.pi)"),
+    };
     let power = match needs.rules.specular_gate() {
-        SpecularGate::None => format!("{ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns})\n"),
+        SpecularGate::None => format!("{ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns}){scale}\n"),
         SpecularGate::LitSide => format!(
-            "{}\nif ({ct}[⟨i⟩] <= 0):\n    {ispec}[⟨i⟩] = np.array([0, 0, 0, 0])\nelse:\n    {ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns})\n",
+            "{}\nif ({ct}[⟨i⟩] <= 0):\n    {ispec}[⟨i⟩] = np.array([0, 0, 0, 0])\nelse:\n    {ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*(max({cos_name}[⟨i⟩], 0)**{ns}){scale}\n",
             t!("nb-gate-lit-side-comment")
         ),
         SpecularGate::PositiveCosine => format!(
-            "{cos_line} = m.acos(min(max({cos_name}[⟨i⟩], -1), 1))\nif ({cos_line} > m.pi*0.5 or {cos_line} < 0):\n    {ispec}[⟨i⟩] = np.array([0, 0, 0, 0])\nelse:\n    {ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*({cos_name}[⟨i⟩]**{ns})\n"
+            "{cos_line} = m.acos(min(max({cos_name}[⟨i⟩], -1), 1))\nif ({cos_line} > m.pi*0.5 or {cos_line} < 0):\n    {ispec}[⟨i⟩] = np.array([0, 0, 0, 0])\nelse:\n    {ispec}[⟨i⟩] = (Lspec[⟨i⟩]*{mat})*({cos_name}[⟨i⟩]**{ns}){scale}\n"
         ),
     };
     let mut names: Vec<&str> = assigned.iter().map(String::as_str).collect();
@@ -486,9 +530,13 @@ fn specular(needs: &Needs, n: usize, suffix: &str) -> String {
 
 /// The specular cell's explanation for the scene's model.
 fn specular_markdown(needs: &Needs) -> String {
-    match needs.rules.specular {
-        SpecularModel::BlinnPhong => t!("nb-specular-blinn"),
-        SpecularModel::Phong => t!("nb-specular-phong"),
+    let model = match needs.vector {
+        SpecularVector::Halfway => t!("nb-specular-blinn"),
+        SpecularVector::Reflection => t!("nb-specular-phong"),
+    };
+    match needs.term {
+        SpecularTerm::Zero | SpecularTerm::Plain => model,
+        SpecularTerm::Normalised => format!("{model}\n\n{}", t!("nb-specular-normalised")),
     }
 }
 

@@ -17,18 +17,21 @@
 //!
 //! What oF cannot say (the local viewer, two-sided lighting and a back material, a
 //! separate specular colour, a light fixed to the eye, a normal mode other than
-//! `GL_NORMALIZE`) is the raw GL call, with a comment.
+//! `GL_NORMALIZE`) is the raw GL call, with a comment. What fixed-function GL cannot
+//! compute at all is said in a comment too (Phong's R); where that is a term GL's
+//! lighting would leave out (energy-conserving Blinn-Phong's normalisation), the app
+//! draws with phonglab's generated shader instead, which reads GL's own matrices.
 
 use glam::{DMat4, DVec3, DVec4};
 
 use super::template::{Fill, Language, Template, TemplateError};
+use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::formats::document::Document;
 use crate::formats::escape::cpp::comment;
-use crate::model::rules::{RuleSet, SpecularModel};
+use crate::model::rules::RuleSet;
 use crate::model::scene::{LightPlacement, Material, NormalMode, Scene};
-use crate::model::view::ObjectKind;
+use crate::model::view::{ObjectKind, Shading};
 use crate::model::vocabulary::Quantity as Q;
-use crate::specialise::plan::Key;
 use crate::t;
 
 /// A C++ float literal: the value as a float holds it, in its shortest form.
@@ -55,9 +58,10 @@ fn vec3(v: DVec3) -> String {
 /// `key` is the plan's key of the scene the app draws ([`Document::shaded_scene`]): it
 /// says which terms the lighting has.
 pub fn app(doc: &Document, key: &Key) -> Result<Vec<super::File>, TemplateError> {
+    let shader = unsaid(&Program::worked(key)).shader.then(|| generated_shader(doc)).flatten();
     Ok(vec![
-        ("ofApp.h".into(), header(doc)?),
-        ("ofApp.cpp".into(), source(doc, key)?),
+        ("ofApp.h".into(), header(doc, shader.is_some())?),
+        ("ofApp.cpp".into(), source(doc, key, shader.as_ref())?),
         ("main.cpp".into(), MAIN.fill(&[("renderer_comment", Fill::Text(t!("of-main-comment")))])?),
     ])
 }
@@ -68,12 +72,77 @@ const SOURCE: Template =
     Template { name: "ofApp.cpp", language: Language::Cpp, text: include_str!("templates/ofApp.cpp") };
 const MAIN: Template = Template { name: "main.cpp", language: Language::Cpp, text: include_str!("templates/main.cpp") };
 
-fn header(doc: &Document) -> Result<String, TemplateError> {
+fn header(doc: &Document, shader: bool) -> Result<String, TemplateError> {
     let lights = oflights(&doc.shaded_scene());
+    let mut members: String = (0..lights.len()).map(|i| format!("    ofLight light{i};\n")).collect();
+    if shader {
+        members.push_str("    ofShader shader;\n");
+    }
     HEADER.fill(&[
         ("title", Fill::Text(t!("of-header-comment", scene = doc.name.clone()))),
-        ("lights", Fill::Code((0..lights.len()).map(|i| format!("    ofLight light{i};\n")).collect())),
+        ("members", Fill::Code(members)),
     ])
+}
+
+/// The generated shader the app draws with, where fixed-function GL cannot compute the
+/// scene's terms: the GLSL of `phonglab shader` for the view's shading (Gouraud for Flat),
+/// with its uniforms. `None` where the scene does not evaluate (the export refuses it
+/// before).
+fn generated_shader(doc: &Document) -> Option<crate::teach::shader::Shader> {
+    use crate::teach::shader::{Lang, ShaderShading, for_view};
+    let shading = match doc.view.shading {
+        Shading::Phong => ShaderShading::Phong,
+        Shading::Gouraud | Shading::Flat => ShaderShading::Gouraud,
+    };
+    for_view(doc, Lang::Glsl, shading).ok()
+}
+
+/// A generated stage as a GL 2.1 compatibility context compiles it: GL's own vertex and
+/// normal (what `ofDrawSphere` sends) and GL's own matrices, which hold oF's camera, the
+/// spin and the cylinder's turn; the normal matrix is the modelview itself under the
+/// worksheet's rules.
+fn compatibility_stage(text: &str, scene: &Scene) -> String {
+    let normal = match scene.rules.normal_transform() {
+        crate::model::rules::NormalTransform::Modelview => "mat3(gl_ModelViewMatrix)",
+        crate::model::rules::NormalTransform::InverseTranspose => "gl_NormalMatrix",
+    };
+    super::pyopengl::compatibility_profile(text)
+        .replace("uniform mat4 u_clip_from_object;", "#define u_clip_from_object gl_ModelViewProjectionMatrix")
+        .replace("uniform mat4 u_eye_from_object;", "#define u_eye_from_object gl_ModelViewMatrix")
+        .replace("uniform mat3 u_normal_matrix;", &format!("#define u_normal_matrix {normal}"))
+}
+
+/// setup()'s lines that compile and link the generated shader.
+fn shader_setup(shader: &crate::teach::shader::Shader, scene: &Scene) -> String {
+    let mut s = format!("    // {}\n", comment(&t!("of-shader-comment")));
+    for (kind, text) in [("GL_VERTEX_SHADER", &shader.vertex), ("GL_FRAGMENT_SHADER", &shader.fragment)] {
+        s.push_str(&format!(
+            "    shader.setupShaderFromSource({kind}, R\"GLSL(\n{})GLSL\");\n",
+            compatibility_stage(text, scene)
+        ));
+    }
+    s.push_str("    shader.linkProgram();\n");
+    s
+}
+
+/// draw()'s lines that bind the generated shader and give its uniforms the values phonglab
+/// computes for the view (light positions in eye space, as GL keeps them); the matrices are
+/// GL's own ([`compatibility_stage`]).
+fn shader_begin(shader: &crate::teach::shader::Shader, scene: &Scene) -> String {
+    let mut s = String::from("    shader.begin();\n");
+    for (name, ty) in &shader.uniforms {
+        let Some(v) = crate::teach::shader::uniform_value(scene, &DMat4::IDENTITY, name) else { continue };
+        let v: Vec<String> = v.iter().map(|x| f(f64::from(*x))).collect();
+        let call = match *ty {
+            "float" => "setUniform1f",
+            "vec3" => "setUniform3f",
+            "vec4" => "setUniform4f",
+            // The matrices: GL's own.
+            _ => continue,
+        };
+        s.push_str(&format!("    shader.{call}(\"u_{name}\", {});\n", v.join(", ")));
+    }
+    s
 }
 
 /// The scene's lights that oF places (every light but those fixed to the eye), with
@@ -94,7 +163,7 @@ fn up_for(dir: DVec3) -> DVec3 {
     if dir.normalize_or_zero().cross(DVec3::Y).length() < 1e-3 { DVec3::X } else { DVec3::Y }
 }
 
-fn source(doc: &Document, key: &Key) -> Result<String, TemplateError> {
+fn source(doc: &Document, key: &Key, shader: Option<&crate::teach::shader::Shader>) -> Result<String, TemplateError> {
     let scene = doc.shaded_scene();
     SOURCE.fill(&[
         ("source_comment", Fill::Text(t!("of-source-comment"))),
@@ -102,7 +171,8 @@ fn source(doc: &Document, key: &Key) -> Result<String, TemplateError> {
         ("lights", Fill::Code(light_calls(&scene, key))),
         ("material_comment", Fill::Text(t!("of-material-comment"))),
         ("material", Fill::Code(material_calls("material", &scene.material, key.rules.emission()))),
-        ("draw", Fill::Code(draw_body(doc, &scene, key))),
+        ("shader", Fill::Code(shader.map(|sh| shader_setup(sh, &scene)).unwrap_or_default())),
+        ("draw", Fill::Code(draw_body(doc, &scene, key, shader))),
     ])
 }
 
@@ -178,7 +248,7 @@ fn light_calls(scene: &Scene, key: &Key) -> String {
 
 /// `draw()`: the background, the camera, the lighting model (raw GL for what oF cannot
 /// say), the lights, the material and the object.
-fn draw_body(doc: &Document, scene: &Scene, key: &Key) -> String {
+fn draw_body(doc: &Document, scene: &Scene, key: &Key, shader: Option<&crate::teach::shader::Shader>) -> String {
     let view = &doc.view;
     let mut s = String::new();
     let bg = view.background.map(|c| f64::from(c) * 255.0);
@@ -204,7 +274,13 @@ fn draw_body(doc: &Document, scene: &Scene, key: &Key) -> String {
         s.push_str(&format!("    // {}\n", comment(&t!("of-back-material-comment"))));
         s.push_str(&raw_material("GL_BACK", back, key.rules.emission()));
     }
+    if let Some(sh) = shader {
+        s.push_str(&shader_begin(sh, scene));
+    }
     s.push_str(&object(doc));
+    if shader.is_some() {
+        s.push_str("    shader.end();\n");
+    }
     s.push_str("    material.end();\n");
     for (k, _) in oflights(scene).iter().enumerate() {
         s.push_str(&format!("    light{k}.disable();\n"));
@@ -259,11 +335,14 @@ fn lighting_model(scene: &Scene, key: &Key) -> String {
         s.push_str(&format!("    // {}\n", comment(&t!("of-no-scene-ambient"))));
         s.push_str("    ofSetGlobalAmbientColor(ofFloatColor(0, 0, 0, 1));\n");
     }
-    if key.rules.set != RuleSet::OpenGl {
-        s.push_str(&format!("    // {}\n", comment(&t!("of-rules-comment", rules = key.rules.to_string()))));
+    match key.rules.set {
+        RuleSet::OpenGl => {}
+        RuleSet::Worksheet | RuleSet::PhongDemo => {
+            s.push_str(&format!("    // {}\n", comment(&t!("of-rules-comment", rules = key.rules.to_string()))));
+        }
     }
-    if key.rules.specular == SpecularModel::Phong {
-        s.push_str(&format!("    // {}\n", comment(&t!("of-phong-specular-comment"))));
+    for said in unsaid(&Program::worked(key)).comments {
+        s.push_str(&format!("    // {}\n", comment(&said)));
     }
     if key.local_viewer {
         s.push_str(&format!(
@@ -294,6 +373,58 @@ fn lighting_model(scene: &Scene, key: &Key) -> String {
         )),
     }
     s
+}
+
+/// What oF's fixed-function lighting cannot compute of a program's terms: comments, each
+/// said once in the program's order, and whether the app must draw with the generated
+/// shader instead.
+struct Unsaid {
+    comments: Vec<String>,
+    shader: bool,
+}
+
+/// What oF's fixed-function lighting cannot compute of `program`'s terms.
+fn unsaid(program: &Program) -> Unsaid {
+    let mut out = Unsaid { comments: Vec::new(), shader: false };
+    for &stage in &program.stages {
+        let said = match stage {
+            // GL computes these from the state the app sets.
+            Stage::TransformNormal
+            | Stage::RescaleNormal
+            | Stage::NormalizeNormal
+            | Stage::NormalizeNormalFast
+            | Stage::TransformPosition
+            | Stage::TransformPositionProjective
+            | Stage::TranslatePosition
+            | Stage::ZeroNormals
+            | Stage::ViewVector(_)
+            | Stage::LightVector(_)
+            | Stage::LightConstant(_)
+            | Stage::Attenuate(_)
+            | Stage::SpotCone(_)
+            | Stage::SpotPower(_)
+            | Stage::Halfway(_)
+            | Stage::HalfwayConstant(_)
+            | Stage::DiffuseCosine(..)
+            | Stage::SpecularCosine(..)
+            | Stage::Power(..)
+            | Stage::SceneColor => None,
+            Stage::Sum(_, _, term) => match term {
+                SpecularTerm::Zero | SpecularTerm::Plain => None,
+                // GL has no such factor: the generated shader draws.
+                SpecularTerm::Normalised => {
+                    out.shader = true;
+                    Some(t!("of-normalised-comment"))
+                }
+            },
+            // GL's specular is Blinn-Phong's: Phong's R has no switch.
+            Stage::Reflect(_) => Some(t!("of-phong-specular-comment")),
+        };
+        if let Some(said) = said.filter(|s| !out.comments.contains(s)) {
+            out.comments.push(said);
+        }
+    }
+    out
 }
 
 /// Lights fixed to the eye: raw GL, placed under the identity modelview, on the GL light

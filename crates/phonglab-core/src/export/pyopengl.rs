@@ -19,13 +19,13 @@ use glam::DMat4;
 
 use super::python::{num, string};
 use super::template::{Fill, Language, Template};
+use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::formats::document::Document;
 use crate::formats::escape::python::{comment, triple_quoted};
 use crate::model::rules::RuleSet;
 use crate::model::scene::{Light, LightPlacement, Scene};
 use crate::model::view::{Framing, LightingSpace, ObjectKind, Shading, View};
 use crate::model::vocabulary::Quantity as Q;
-use crate::specialise::plan::Key;
 use crate::t;
 use crate::teach::shader::{Lang, ShaderShading};
 
@@ -83,7 +83,7 @@ const PROGRAM: Template =
 
 /// A generated shader adapted to a compatibility-profile context: the attributes are GL's
 /// own vertex and normal (what GLU's and GLUT's objects send).
-fn compatibility_profile(text: &str) -> String {
+pub(super) fn compatibility_profile(text: &str) -> String {
     text.replace("#version 330 core", "#version 330 compatibility")
         .replace("layout(location = 0) in vec3 a_position;", "#define a_position (gl_Vertex.xyz / gl_Vertex.w)")
         .replace("layout(location = 1) in vec3 a_normal;", "#define a_normal gl_Normal")
@@ -197,6 +197,9 @@ fn lighting_state(scene: &Scene, key: &Key) -> String {
         }
         s.push_str(&format!("    glMaterialf({face}, {}, {})\n", gl(Q::Shininess), num(m.shininess)));
     }
+    for said in unsaid(&Program::worked(key)) {
+        s.push_str(&format!("    # {}\n", comment(&said)));
+    }
     if let Some(cm) = &scene.color_material {
         // After the glMaterial calls: enabling it sets the tracked colours to the current one.
         s.push_str(&format!("    # {}\n", comment(&t!("py-color-material-comment"))));
@@ -226,6 +229,48 @@ fn lighting_state(scene: &Scene, key: &Key) -> String {
     s.push_str(normals);
     s.push_str("    glEnable(GL_LIGHTING)\n\n\n");
     s
+}
+
+/// What GL's fixed-function state cannot say of `program`'s terms, each said once, in the
+/// program's order: the generated shader computes every stage, but GL's own lighting, from
+/// the state above, would not.
+fn unsaid(program: &Program) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for &stage in &program.stages {
+        let said: Option<String> = match stage {
+            // GL's state says these (the shader reads them back from it).
+            Stage::TransformNormal
+            | Stage::RescaleNormal
+            | Stage::NormalizeNormal
+            | Stage::NormalizeNormalFast
+            | Stage::TransformPosition
+            | Stage::TransformPositionProjective
+            | Stage::TranslatePosition
+            | Stage::ZeroNormals
+            | Stage::ViewVector(_)
+            | Stage::LightVector(_)
+            | Stage::LightConstant(_)
+            | Stage::Attenuate(_)
+            | Stage::SpotCone(_)
+            | Stage::SpotPower(_)
+            | Stage::Halfway(_)
+            | Stage::HalfwayConstant(_)
+            | Stage::DiffuseCosine(..)
+            | Stage::SpecularCosine(..)
+            | Stage::Power(..)
+            | Stage::SceneColor => None,
+            Stage::Sum(_, _, term) => match term {
+                SpecularTerm::Zero | SpecularTerm::Plain => None,
+                SpecularTerm::Normalised => Some(t!("py-normalised-comment")),
+            },
+            // The rules' R: the program's RULES names them, and the shader draws with them.
+            Stage::Reflect(_) => None,
+        };
+        if let Some(said) = said.filter(|s| !out.contains(s)) {
+            out.push(said);
+        }
+    }
+    out
 }
 
 /// Whether the object is drawn by GLU's or GLUT's own call (else as phonglab's arrays).

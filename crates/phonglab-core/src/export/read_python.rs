@@ -684,10 +684,8 @@ impl Reader {
             Some("phong-demo") => Rules::PHONG_DEMO,
             _ => Rules::WORKSHEET,
         };
-        match self.string("specular").as_deref() {
-            Some("phong") => rules.specular = SpecularModel::Phong,
-            Some("blinn-phong") => rules.specular = SpecularModel::BlinnPhong,
-            _ => {}
+        if let Some(model) = self.string("specular").as_deref().and_then(SpecularModel::from_name) {
+            rules.specular = model;
         }
         let normal_mode = match self.string("normalMode").as_deref() {
             Some("as-is") => NormalMode::AsIs,

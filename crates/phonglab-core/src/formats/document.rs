@@ -8,7 +8,7 @@
 //! ```toml
 //! name = "the worksheet, mview5"
 //! rules = "worksheet"            # opengl | worksheet | phong-demo
-//! specular = "blinn-phong"       # blinn-phong | phong
+//! specular = "blinn-phong"       # blinn-phong | phong | blinn-phong-normalised
 //! normals = "as-is"              # as-is | normalize | rescale
 //!
 //! [camera]
@@ -256,6 +256,7 @@ enum SpecularName {
     #[default]
     BlinnPhong,
     Phong,
+    BlinnPhongNormalised,
 }
 
 #[derive(Serialize, Deserialize, Default, Clone, Copy)]
@@ -697,6 +698,7 @@ impl FileV1 {
                 specular: match self.specular {
                     SpecularName::BlinnPhong => SpecularModel::BlinnPhong,
                     SpecularName::Phong => SpecularModel::Phong,
+                    SpecularName::BlinnPhongNormalised => SpecularModel::BlinnPhongNormalised,
                 },
             },
             vertex: Vertex { position: self.vertex.position.0, normal: DVec3::from(self.vertex.normal) },
@@ -716,6 +718,7 @@ impl FileV1 {
             specular: match s.rules.specular {
                 SpecularModel::BlinnPhong => SpecularName::BlinnPhong,
                 SpecularModel::Phong => SpecularName::Phong,
+                SpecularModel::BlinnPhongNormalised => SpecularName::BlinnPhongNormalised,
             },
             normals: match s.normal_mode {
                 NormalMode::AsIs => NormalsName::AsIs,

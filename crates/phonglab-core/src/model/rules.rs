@@ -41,19 +41,71 @@ pub enum SpecularModel {
     BlinnPhong,
     /// Phong: `cos = R . V`, `R = 2 (n . L) n - L` (the reflection of L about n).
     Phong,
+    /// Energy-conserving Blinn-Phong, as modern engines light: Blinn-Phong's term times
+    /// `(s_rm + 8) / (8 pi)`, so a narrower highlight is brighter and reflects the same light.
+    BlinnPhongNormalised,
 }
 
 impl SpecularModel {
-    /// Both models, in menu order.
-    pub const ALL: [SpecularModel; 2] = [SpecularModel::BlinnPhong, SpecularModel::Phong];
+    /// Every model, in menu order.
+    pub const ALL: [SpecularModel; 3] =
+        [SpecularModel::BlinnPhong, SpecularModel::Phong, SpecularModel::BlinnPhongNormalised];
 
-    /// A short name for menus and files.
-    pub fn label(self) -> &'static str {
+    /// A short name for menus and headings, with its symbol.
+    pub fn label(self) -> String {
         match self {
-            SpecularModel::BlinnPhong => "Blinn-Phong (n.H)",
-            SpecularModel::Phong => "Phong (R.V)",
+            SpecularModel::BlinnPhong => "Blinn-Phong (n.H)".into(),
+            SpecularModel::Phong => "Phong (R.V)".into(),
+            SpecularModel::BlinnPhongNormalised => crate::t!("specular-blinn-phong-normalised"),
         }
     }
+
+    /// The name a notebook's `specular = "..."` setting gives it (the scene file's too).
+    pub fn name(self) -> &'static str {
+        match self {
+            SpecularModel::BlinnPhong => "blinn-phong",
+            SpecularModel::Phong => "phong",
+            SpecularModel::BlinnPhongNormalised => "blinn-phong-normalised",
+        }
+    }
+
+    /// The model named `name` ([`SpecularModel::name`]).
+    pub fn from_name(name: &str) -> Option<SpecularModel> {
+        SpecularModel::ALL.into_iter().find(|m| m.name() == name)
+    }
+
+    /// The next model in menu order, the last followed by the first (the window's key B).
+    pub fn next(self) -> SpecularModel {
+        let at = SpecularModel::ALL.iter().position(|m| *m == self).unwrap_or(0);
+        SpecularModel::ALL[(at + 1) % SpecularModel::ALL.len()]
+    }
+
+    /// The vector its cosine is taken with: H (Blinn-Phong) or R (Phong). The engine, the
+    /// plan and the window's vectors ask this, never which model it is.
+    pub fn vector(self) -> SpecularVector {
+        match self {
+            SpecularModel::BlinnPhong | SpecularModel::BlinnPhongNormalised => SpecularVector::Halfway,
+            SpecularModel::Phong => SpecularVector::Reflection,
+        }
+    }
+
+    /// Is the term normalised, multiplied by `(s_rm + 8) / (8 pi)`
+    /// (`lighting::terms::specular_normalisation`)?
+    pub fn normalised(self) -> bool {
+        match self {
+            SpecularModel::BlinnPhong | SpecularModel::Phong => false,
+            SpecularModel::BlinnPhongNormalised => true,
+        }
+    }
+}
+
+/// The vector a specular cosine is taken with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SpecularVector {
+    /// The halfway vector `H = normalize(L + V)`: the cosine is `n . H` (Blinn-Phong).
+    Halfway,
+    /// The reflection of L about n, `R = 2 (n . L) n - L`: the cosine is `R . V` (Phong).
+    Reflection,
 }
 
 /// When a light's specular term is allowed at all.
@@ -133,6 +185,27 @@ impl Rules {
         self.set != RuleSet::PhongDemo
     }
 
+    /// The rule set with the specular model it comes with (the Phong demo's Phong,
+    /// Blinn-Phong for the others).
+    pub fn of_set(set: RuleSet) -> Rules {
+        match set {
+            RuleSet::OpenGl => Rules::OPENGL,
+            RuleSet::Worksheet => Rules::WORKSHEET,
+            RuleSet::PhongDemo => Rules::PHONG_DEMO,
+        }
+    }
+
+    /// Is the specular model the one the rule set comes with ([`Rules::of_set`])?
+    pub fn specular_is_the_sets(self) -> bool {
+        self == Rules::of_set(self.set)
+    }
+
+    /// Does the worked calculation stop at the sum I, as the worksheet's does (it never
+    /// clamps, so the clamped colour is not a step of its own to ask)?
+    pub fn stops_at_sum(self) -> bool {
+        self.set == RuleSet::Worksheet
+    }
+
     /// When the specular term is allowed.
     pub fn specular_gate(self) -> SpecularGate {
         match self.set {
@@ -146,5 +219,24 @@ impl Rules {
 impl fmt::Display for Rules {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}, {}", self.set.label(), self.specular.label())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_specular_model_is_found_by_its_name_and_the_next_one_goes_round() {
+        for m in SpecularModel::ALL {
+            assert_eq!(SpecularModel::from_name(m.name()), Some(m));
+        }
+        assert_eq!(SpecularModel::from_name("blinn"), None);
+        let mut m = SpecularModel::ALL[0];
+        for _ in 0..SpecularModel::ALL.len() {
+            m = m.next();
+        }
+        assert_eq!(m, SpecularModel::ALL[0]);
+        assert_eq!(SpecularModel::BlinnPhong.next(), SpecularModel::Phong);
     }
 }

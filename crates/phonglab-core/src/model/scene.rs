@@ -42,6 +42,58 @@ impl Face {
     }
 }
 
+/// A face's side: which normal and material the equation lights with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum Side {
+    /// Front-facing (`n` as given).
+    #[default]
+    Front,
+    /// Back-facing (`-n`, the back material; only differs with two-sided lighting).
+    Back,
+}
+
+impl Side {
+    /// Both sides, front first.
+    pub const ALL: [Side; 2] = [Side::Front, Side::Back];
+
+    /// The side's place in per-side arrays: 0 front, 1 back.
+    pub fn index(self) -> usize {
+        match self {
+            Side::Front => 0,
+            Side::Back => 1,
+        }
+    }
+
+    /// The back side where `back`, else the front.
+    pub fn back_if(back: bool) -> Side {
+        if back { Side::Back } else { Side::Front }
+    }
+}
+
+/// A light, by its place among the scene's lights (`GL_LIGHTi`'s i): what a stage of the
+/// plan and the writers name a light by.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct LightId(pub usize);
+
+impl LightId {
+    /// The light's place in per-light arrays.
+    pub fn index(self) -> usize {
+        self.0
+    }
+
+    /// The first `count` lights, in order.
+    pub fn all(count: usize) -> impl Iterator<Item = LightId> {
+        (0..count).map(LightId)
+    }
+}
+
+/// Written as the number alone, as generated code names a light (`L0`, `light0_position`).
+impl std::fmt::Display for LightId {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.0)
+    }
+}
+
 /// Which material properties track the current colour (`glColorMaterial`'s mode).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub enum ColorMaterialMode {

@@ -12,7 +12,9 @@
 //! Rec. 709 luminance) mapped over [`ChannelImage::range`] by viridis or cividis, both
 //! readable with every common colour-vision deficiency; the normal as `n / 2 + 1/2` in rgb.
 
+use crate::equation::plan::{Key, Program, Stage};
 use crate::model::error::SceneError;
+use crate::model::rules::SpecularVector;
 use crate::raster::probe::{LightShare, Surfaces, Terms};
 use crate::raster::render::{Job, Renderer};
 
@@ -94,6 +96,46 @@ impl Channel {
             Channel::Normal => "channel-normal",
             Channel::LightCount => "channel-light-count",
         }
+    }
+
+    /// Its label's message id for a scene whose program is `program`: the specular cosine
+    /// is named as the program forms it (`N·H`, or Phong's `R·V`).
+    pub fn message_id_for(self, program: &Program) -> &'static str {
+        let mut id = self.message_id();
+        for &stage in &program.stages {
+            match stage {
+                Stage::SpecularCosine(_, _, vector) if self == Channel::NDotH => {
+                    id = match vector {
+                        SpecularVector::Halfway => "channel-n-dot-h",
+                        SpecularVector::Reflection => "channel-r-dot-v",
+                    }
+                }
+                // The other channels' terms have one name whatever their stages.
+                Stage::SpecularCosine(..)
+                | Stage::TransformNormal
+                | Stage::RescaleNormal
+                | Stage::NormalizeNormal
+                | Stage::NormalizeNormalFast
+                | Stage::TransformPosition
+                | Stage::TransformPositionProjective
+                | Stage::TranslatePosition
+                | Stage::ZeroNormals
+                | Stage::ViewVector(_)
+                | Stage::LightVector(_)
+                | Stage::LightConstant(_)
+                | Stage::Attenuate(_)
+                | Stage::SpotCone(_)
+                | Stage::SpotPower(_)
+                | Stage::Halfway(_)
+                | Stage::HalfwayConstant(_)
+                | Stage::Reflect(_)
+                | Stage::DiffuseCosine(..)
+                | Stage::Power(..)
+                | Stage::Sum(..)
+                | Stage::SceneColor => {}
+            }
+        }
+        id
     }
 
     /// An rgb value per pixel (the colour terms and the normal), else one.
@@ -195,6 +237,8 @@ pub struct ChannelImage {
     pub values: Vec<Option<[f64; 3]>>,
     /// The lights enabled (for the light count's scale).
     pub lights: usize,
+    /// The channel's label's message id for this scene ([`Channel::message_id_for`]).
+    pub message_id: &'static str,
 }
 
 /// Rec. 709's luminance of a linear rgb.
@@ -267,7 +311,8 @@ pub fn channel_image(
             channel.value(&terms, normal, light)
         }));
     }
-    Ok(ChannelImage { channel, width, height, values, lights: job.scene.lights.len() })
+    let message_id = channel.message_id_for(&Key::of(job.scene, job.options).program());
+    Ok(ChannelImage { channel, width, height, values, lights: job.scene.lights.len(), message_id })
 }
 
 /// The channel's values as a portable float map (PFM): "PF" (rgb) or "Pf" (one value), the

@@ -22,6 +22,7 @@ use glam::{DVec3, Vec3};
 
 use crate::equation::breakdown::{SideTerms, VertexLighting};
 use crate::equation::lighting::{Engine, Renormalize};
+use crate::equation::plan::{Key, Program};
 use crate::model::error::SceneError;
 use crate::model::scene::Vertex;
 use crate::model::view::ShadingMode;
@@ -209,6 +210,10 @@ pub struct Probe {
     /// How the shading made it (its fields sit beside the others in JSON).
     #[serde(flatten)]
     pub shading: ProbeShading,
+    /// The scene's worked program ([`Program::worked`]): the forms of its terms, which the
+    /// report names.
+    #[serde(skip)]
+    pub program: Program,
 }
 
 /// The lighting engine's breakdowns of a mesh's vertices, computed as they are asked for.
@@ -353,5 +358,6 @@ pub fn probe(renderer: &Renderer, job: &Job<'_>, x: usize, y: usize) -> Result<O
         rgba8: sample.rgba8,
         terms,
         shading,
+        program: Program::worked(&Key::of(job.scene, job.options)),
     }))
 }

@@ -1,7 +1,10 @@
 //! The probe told as lines, in the reader's language and under the worksheet's names: what
 //! `phonglab probe` prints and the shaded view's probe shows.
 
+use crate::equation::plan::{Program, Stage};
 use crate::locale::{num, tr};
+use crate::model::rules::SpecularVector;
+use crate::model::scene::LightId;
 use crate::model::view::ShadingMode;
 use crate::model::vocabulary::Quantity;
 use crate::raster::probe::{Probe, ProbeShading};
@@ -118,7 +121,11 @@ fn terms_lines(p: &Probe, out: &mut Vec<ReportLine>) {
         let at = if l.attenuation == 0.0 { f64::INFINITY } else { 1.0 / l.attenuation };
         out.push(line(label, name, num(at, 4), 1));
         out.push(line(tr("probe-attenuation-factor"), "", format!("1/{name} = {}", num(l.attenuation, 4)), 1));
-        for (qq, v) in [(Quantity::Spot, l.spot), (Quantity::CosTheta, l.n_dot_l), (Quantity::CosBeta, l.n_dot_h)] {
+        for (qq, v) in [
+            (Quantity::Spot, l.spot),
+            (Quantity::CosTheta, l.n_dot_l),
+            (specular_cosine(&p.program, LightId(l.index)), l.n_dot_h),
+        ] {
             let (label, name) = q(qq);
             out.push(line(label, name, num(v, 4), 1));
         }
@@ -132,6 +139,44 @@ fn terms_lines(p: &Probe, out: &mut Vec<ReportLine>) {
         }
     }
     out.push(line(tr("probe-terms-sum"), "", numbers(&p.terms.sum()), 0));
+}
+
+/// The quantity light `i`'s specular cosine is, as `program` forms it: `cosBeta` (n . H)
+/// or Phong's `cosAlpha` (R . V).
+fn specular_cosine(program: &Program, i: LightId) -> Quantity {
+    let mut q = Quantity::CosBeta;
+    for stage in program.of_light(i) {
+        match stage {
+            Stage::Halfway(_) | Stage::HalfwayConstant(_) => q = Quantity::CosBeta,
+            Stage::Reflect(_) => q = Quantity::CosAlpha,
+            Stage::SpecularCosine(_, _, vector) => {
+                q = match vector {
+                    SpecularVector::Halfway => Quantity::CosBeta,
+                    SpecularVector::Reflection => Quantity::CosAlpha,
+                }
+            }
+            // Lines of their own whatever the stages (attenuation, spot, n . L, the terms).
+            Stage::TransformNormal
+            | Stage::RescaleNormal
+            | Stage::NormalizeNormal
+            | Stage::NormalizeNormalFast
+            | Stage::TransformPosition
+            | Stage::TransformPositionProjective
+            | Stage::TranslatePosition
+            | Stage::ZeroNormals
+            | Stage::ViewVector(_)
+            | Stage::LightVector(_)
+            | Stage::LightConstant(_)
+            | Stage::Attenuate(_)
+            | Stage::SpotCone(_)
+            | Stage::SpotPower(_)
+            | Stage::DiffuseCosine(..)
+            | Stage::Power(..)
+            | Stage::Sum(..)
+            | Stage::SceneColor => {}
+        }
+    }
+    q
 }
 
 /// The report as plain text, one line each, indented.

@@ -6,11 +6,11 @@ use glam::Vec3;
 use web_time::Instant;
 
 use crate::equation::lighting::terms;
+use crate::equation::plan::Stage;
 use crate::model::scene::Vertex;
 use crate::numerics::real::Vec3Ops;
 use crate::numerics::robust::transform_point;
 use crate::specialise::lighter::{EyeArrays, Lighter, Lit, Output, Probe, Source, StageTimes};
-use crate::specialise::plan::Stage;
 
 impl Lighter {
     /// Lights vertices given in object space (w = 1): `front[i]` (and `back[i]` with

@@ -1,13 +1,13 @@
 //! The plan in words: every effect of the equation, whether the specialised evaluator
 //! computes it for this scene and why ("attenuation: skipped, the light is directional"),
 //! read off the compiled program so it is true of what runs. The calculation panel lists
-//! them; the compiler itself ([`super::plan`]) holds no prose.
+//! them; the compiler itself ([`crate::equation::plan`]) holds no prose.
 
 use std::fmt;
 
-use super::plan::*;
-use crate::model::rules::SpecularModel;
-use crate::model::scene::NormalMode;
+use crate::equation::plan::*;
+use crate::model::rules::SpecularVector;
+use crate::model::scene::{LightId, NormalMode, Side};
 use crate::specialise::lighter::CHUNK;
 
 /// An effect of the equation, and whether the specialised evaluator computes it: read off
@@ -24,8 +24,8 @@ pub struct Effect {
     pub on: bool,
     /// Why, e.g. "the light is directional".
     pub why: String,
-    /// The specular model (decides whether H or R is meant).
-    specular: SpecularModel,
+    /// The specular vector (decides whether H or R is meant).
+    vector: SpecularVector,
 }
 
 impl fmt::Display for Effect {
@@ -38,7 +38,29 @@ impl fmt::Display for Effect {
 impl Effect {
     /// The step of the worked calculation this effect decides.
     pub fn step_kind(&self) -> Option<crate::equation::explain::StepKind> {
-        self.kind.step_kind(self.specular)
+        self.kind.step_kind(self.vector)
+    }
+}
+
+impl EffectKind {
+    /// The step of the worked calculation this effect decides (for showing a skipped
+    /// step greyed with its reason).
+    pub fn step_kind(self, vector: SpecularVector) -> Option<crate::equation::explain::StepKind> {
+        use crate::equation::explain::StepKind as K;
+        Some(match self {
+            EffectKind::Normalisation => K::Normal,
+            EffectKind::Position => K::Position,
+            EffectKind::ViewVector => K::V,
+            EffectKind::LightVector => K::Distance,
+            EffectKind::Attenuation => K::Attenuation,
+            EffectKind::Spotlight => K::Spot,
+            EffectKind::HalfwayOrReflection => match vector {
+                SpecularVector::Halfway => K::H,
+                SpecularVector::Reflection => K::R,
+            },
+            EffectKind::SpecularPower => K::Specular,
+            EffectKind::SceneColor | EffectKind::BackSide => return None,
+        })
     }
 }
 
@@ -51,14 +73,14 @@ impl Key {
 
     /// Every effect with whether `program` runs it and why.
     pub fn effects_of(&self, program: &Program) -> Vec<Effect> {
-        let sp = self.rules.specular;
+        let vector = self.rules.specular.vector();
         let e = |kind: EffectKind, light, on: bool, why: String| Effect {
             kind,
             light,
-            name: kind.name(sp),
+            name: kind.name(vector),
             on,
             why,
-            specular: sp,
+            vector,
         };
         let has = |s: Stage| program.has(s);
         let normalised = has(Stage::NormalizeNormal) || has(Stage::RescaleNormal) || has(Stage::NormalizeNormalFast);
@@ -86,33 +108,27 @@ impl Key {
                 (false, false, true) => e(EffectKind::Position, None, false, crate::t!("why-position-eye")),
                 (false, false, false) => e(EffectKind::Position, None, false, crate::t!("why-position-unread")),
             },
-            if has(Stage::ViewVector) {
-                e(
-                    EffectKind::ViewVector,
-                    None,
-                    true,
-                    if self.local_viewer {
-                        crate::t!("why-v-local", chunk = CHUNK)
-                    } else {
-                        crate::t!("why-v-worksheet")
-                    },
-                )
-            } else {
-                e(EffectKind::ViewVector, None, false, crate::t!("why-v-infinite"))
+            match program.stages.iter().find_map(|s| match s {
+                Stage::ViewVector(viewer) => Some(*viewer),
+                _ => None,
+            }) {
+                Some(Viewer::Local) => e(EffectKind::ViewVector, None, true, crate::t!("why-v-local", chunk = CHUNK)),
+                Some(Viewer::EyePlane) => e(EffectKind::ViewVector, None, true, crate::t!("why-v-worksheet")),
+                Some(Viewer::Infinite) | None => e(EffectKind::ViewVector, None, false, crate::t!("why-v-infinite")),
             },
             if has(Stage::SceneColor) {
                 e(EffectKind::SceneColor, None, true, crate::t!("why-scene-added"))
             } else {
                 e(EffectKind::SceneColor, None, false, crate::t!("why-scene-zero"))
             },
-            if program.stages.iter().any(|s| matches!(s, Stage::Sum(_, 1))) {
+            if program.stages.iter().any(|s| s.side() == Some(Side::Back)) {
                 e(EffectKind::BackSide, None, true, crate::t!("why-two-sided"))
             } else {
                 e(EffectKind::BackSide, None, false, crate::t!("why-one-sided"))
             },
         ];
-        for (i, l) in self.lights.iter().enumerate() {
-            let li = Some(i);
+        for (i, l) in LightId::all(self.lights.len()).zip(&self.lights) {
+            let li = Some(i.index());
             out.push(if has(Stage::LightVector(i)) {
                 e(EffectKind::LightVector, li, true, crate::t!("why-l-positional", chunk = CHUNK))
             } else {

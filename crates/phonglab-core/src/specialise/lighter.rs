@@ -36,12 +36,12 @@ use web_time::{Duration, Instant};
 use glam::{DVec3, Vec3};
 
 use crate::equation::lighting::{Engine, EvalOptions, LightPos, terms};
+use crate::equation::plan::{Key, Program, SourceKind, Stage};
 use crate::model::error::SceneError;
-use crate::model::scene::Scene;
+use crate::model::scene::{LightId, Scene, Side};
 use crate::numerics::copies::prefetch;
 use crate::numerics::real::Vec3Ops;
 use crate::numerics::robust::mul0;
-use crate::specialise::plan::{Key, Program, SourceKind, Stage};
 
 mod stages;
 
@@ -79,6 +79,8 @@ struct LightConsts {
     h: Option<Vec3>,
     /// The spot factor of a directional light (att = 1): its scale, constant over vertices.
     scale: f32,
+    /// A directional light's L is wanted as arrays: the program forms H or R per vertex.
+    l_arrays: bool,
 }
 
 /// Where the colours go.
@@ -325,8 +327,8 @@ impl Lighter {
     pub fn new(scene: &Scene, options: EvalOptions) -> Result<Self, SceneError> {
         let engine = Engine::<f32>::with_options(scene, options)?;
         let key = Key::of(scene, options);
-        let consts = Self::fold(&engine, &key);
         let [object, eye, eye_raw] = Self::compile(&key, options);
+        let consts = Self::fold(&engine, &object);
         Ok(Lighter { key, engine, object, eye, eye_raw, consts, replans: 1 })
     }
 
@@ -349,7 +351,7 @@ impl Lighter {
             self.key = key;
             self.replans += 1;
         }
-        self.consts = Self::fold(&engine, &self.key);
+        self.consts = Self::fold(&engine, &self.object);
         self.engine = engine;
         Ok(replan)
     }
@@ -378,22 +380,25 @@ impl Lighter {
         }
     }
 
-    /// Constants that do not depend on the vertex: a directional light's L, its H under
-    /// an infinite viewer, its spot factor.
-    fn fold(engine: &Engine<f32>, key: &Key) -> Vec<LightConsts> {
+    /// Constants that do not depend on the vertex: a directional light's L, its H where
+    /// `program` takes it as one constant (`HalfwayConstant`), its spot factor. (H and R
+    /// are the same stages whatever the source, so the object program tells for all.)
+    fn fold(engine: &Engine<f32>, program: &Program) -> Vec<LightConsts> {
         engine
             .lights
             .iter()
             .enumerate()
             .map(|(i, pl)| match pl.pos {
                 LightPos::Directional { unit, .. } => {
+                    let i = LightId(i);
                     let l = unit.map(Vec3::from_dvec3);
-                    let h = match (l, key.per_vertex_halfway(i)) {
-                        (Some(l), false) => terms::halfway::<f32>(l, Vec3::Z),
+                    let h = match (l, program.has(Stage::HalfwayConstant(i))) {
+                        (Some(l), true) => terms::halfway::<f32>(l, Vec3::Z),
                         _ => None,
                     };
                     let spot = pl.spot.map_or(1.0, |sp| terms::spot(&sp, unit, engine.options.pow).2);
-                    LightConsts { l, h, scale: mul0(1.0, spot) }
+                    let l_arrays = program.has(Stage::Halfway(i)) || program.has(Stage::Reflect(i));
+                    LightConsts { l, h, scale: mul0(1.0, spot), l_arrays }
                 }
                 LightPos::Positional(_) => LightConsts::default(),
             })
@@ -455,15 +460,15 @@ impl Lighter {
             let r = start..start + c.n;
             match &mut out {
                 Output::Lit { front, back } => {
-                    self.write(&c, 0, scene_color, &mut front[r.clone()]);
+                    self.write(&c, Side::Front, scene_color, &mut front[r.clone()]);
                     if let Some(b) = back.as_deref_mut().filter(|_| two) {
-                        self.write(&c, 1, scene_color, &mut b[r]);
+                        self.write(&c, Side::Back, scene_color, &mut b[r]);
                     }
                 }
                 Output::Sum { front, back } => {
-                    self.write_sum(&c, 0, scene_color, &mut front[r.clone()]);
+                    self.write_sum(&c, Side::Front, scene_color, &mut front[r.clone()]);
                     if let Some(b) = back.as_deref_mut().filter(|_| two) {
-                        self.write_sum(&c, 1, scene_color, &mut b[r]);
+                        self.write_sum(&c, Side::Back, scene_color, &mut b[r]);
                     }
                 }
             }
@@ -491,7 +496,7 @@ mod tests {
         assert_eq!(plain, timed);
         let stages: Vec<Stage> = t.stages.iter().map(|(s, _)| *s).collect();
         assert_eq!(stages, l.program().stages);
-        assert!(stages.contains(&Stage::Halfway(0)));
+        assert!(stages.contains(&Stage::Halfway(LightId(0))));
         let total: Duration = t.load + t.write + t.stages.iter().map(|(_, d)| *d).sum::<Duration>();
         assert!(total > Duration::ZERO);
     }
@@ -544,6 +549,6 @@ mod tests {
         assert!(l.update(&scene, EvalOptions::default()).unwrap());
         assert_eq!(l.replans(), 2);
         assert!(!l.key().lights[0].positional);
-        assert!(!l.program().has(Stage::LightVector(0)));
+        assert!(!l.program().has(Stage::LightVector(LightId(0))));
     }
 }

@@ -1,7 +1,7 @@
-//! Only the stages a scene needs: the key, the stage list compiled from it, and the engine that runs it.
+//! Only the stages a scene needs, run over arrays: the engine that runs the plan's stage
+//! list (`equation::plan`), its ways in, and the plan in words.
 
 pub mod batch;
 pub mod copies;
 pub mod effects;
 pub mod lighter;
-pub mod plan;

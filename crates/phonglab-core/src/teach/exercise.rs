@@ -21,13 +21,13 @@ use glam::{DMat4, DVec3, DVec4};
 
 use crate::equation::explain::{Explanation, Side, explain};
 use crate::equation::lighting::{Engine, EvalOptions};
+use crate::equation::plan::{Key, Stage, Viewer};
 use crate::formats::document::Document;
 use crate::model::camera::CameraSpec;
 use crate::model::materials;
 use crate::model::rules::Rules;
 use crate::model::scene::{Light, LightModel, LightPlacement, NormalMode, Scene, Vertex};
 use crate::model::vocabulary::Quantity as Q;
-use crate::specialise::plan::Key;
 
 /// An effect an exercise can be asked to use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -86,29 +86,56 @@ impl Effect {
         Effect::ALL.into_iter().find(|e| e.name() == s.trim())
     }
 
-    /// The effects a scene uses, read off its key.
+    /// The effects a scene uses, read off the program its key compiles to (what the
+    /// evaluator runs), in the order of [`Effect::ALL`].
     pub fn of_key(key: &Key) -> Vec<Effect> {
         let mut out = Vec::new();
-        let any = |f: &dyn Fn(&crate::specialise::plan::LightKey) -> bool| key.lights.iter().any(f);
-        if any(&|l| l.positional) {
-            out.push(Effect::Positional);
+        for &stage in &key.program().stages {
+            for effect in Effect::of_stage(stage) {
+                if !out.contains(&effect) {
+                    out.push(effect);
+                }
+            }
         }
-        if any(&|l| l.attenuated) {
-            out.push(Effect::Attenuation);
-        }
-        if any(&|l| l.spot) {
-            out.push(Effect::Spot);
-        }
-        if key.local_viewer {
-            out.push(Effect::LocalViewer);
-        }
-        if key.two_sided {
-            out.push(Effect::TwoSided);
-        }
-        if key.lights.len() > 1 {
-            out.push(Effect::SeveralLights);
-        }
+        out.sort();
         out
+    }
+
+    /// The effects a stage of the evaluator's program shows a scene uses.
+    fn of_stage(stage: Stage) -> Vec<Effect> {
+        // A stage of a light after the first: there are several.
+        let several = stage.light().filter(|i| i.index() > 0).map(|_| Effect::SeveralLights);
+        let own = match stage {
+            Stage::TransformNormal
+            | Stage::RescaleNormal
+            | Stage::NormalizeNormal
+            | Stage::NormalizeNormalFast
+            | Stage::TransformPosition
+            | Stage::TransformPositionProjective
+            | Stage::TranslatePosition
+            | Stage::ZeroNormals
+            | Stage::LightConstant(_)
+            | Stage::SpotPower(_)
+            | Stage::Halfway(_)
+            | Stage::HalfwayConstant(_)
+            | Stage::Reflect(_)
+            | Stage::SceneColor => None,
+            Stage::ViewVector(viewer) => match viewer {
+                Viewer::Local => Some(Effect::LocalViewer),
+                Viewer::EyePlane | Viewer::Infinite => None,
+            },
+            Stage::LightVector(_) => Some(Effect::Positional),
+            Stage::Attenuate(_) => Some(Effect::Attenuation),
+            Stage::SpotCone(_) => Some(Effect::Spot),
+            Stage::DiffuseCosine(_, side)
+            | Stage::SpecularCosine(_, side, _)
+            | Stage::Power(_, side)
+            | Stage::Sum(_, side, _) => match side {
+                Side::Front => None,
+                Side::Back => Some(Effect::TwoSided),
+            },
+        };
+        own.into_iter().chain(several).collect()
     }
 }
 

@@ -15,9 +15,10 @@
 use glam::DVec3;
 
 use crate::equation::explain::{Explanation, Step, StepKind};
-use crate::equation::lighting::terms;
-use crate::model::rules::SpecularModel;
-use crate::model::scene::Scene;
+use crate::equation::lighting::{EvalOptions, terms};
+use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
+use crate::model::rules::SpecularVector;
+use crate::model::scene::{LightId, Scene};
 
 /// Reads an answer: numbers separated by spaces, commas or semicolons, with optional
 /// brackets, and a decimal point or comma, e.g. `[0.79 0.56 -0.25 0]`, `0.79, 0.56, -0.25`,
@@ -140,12 +141,86 @@ fn input(
     }
 }
 
+/// What the scene's worked program ([`Program::worked`]) says of the steps the quiz asks
+/// and works out again: which lights are positional and spotlights, each light's specular
+/// vector and term, and whether the scene's own colour is added.
+#[derive(Default)]
+struct Worked {
+    lights: Vec<WorkedLight>,
+    scene_color: bool,
+}
+
+/// One light's part of [`Worked`].
+#[derive(Clone, Copy)]
+struct WorkedLight {
+    positional: bool,
+    spot: bool,
+    vector: SpecularVector,
+    term: SpecularTerm,
+}
+
+impl Worked {
+    fn of(scene: &Scene) -> Worked {
+        let mut w = Worked::default();
+        for &stage in &Program::worked(&Key::of(scene, EvalOptions::default())).stages {
+            w.take(stage);
+        }
+        w
+    }
+
+    fn light_mut(&mut self, i: LightId) -> &mut WorkedLight {
+        if self.lights.len() <= i.index() {
+            self.lights.resize(i.index() + 1, WorkedLight::BLANK);
+        }
+        &mut self.lights[i.index()]
+    }
+
+    /// Light `index` (the explanation's numbering, the scene's own).
+    fn light(&self, index: Option<usize>) -> WorkedLight {
+        index.and_then(|i| self.lights.get(i)).copied().unwrap_or(WorkedLight::BLANK)
+    }
+
+    /// What one stage says of the quiz's steps.
+    fn take(&mut self, stage: Stage) {
+        match stage {
+            // Steps whose formula has one form (or takes the key's value as given).
+            Stage::TransformNormal
+            | Stage::RescaleNormal
+            | Stage::NormalizeNormal
+            | Stage::NormalizeNormalFast
+            | Stage::TransformPosition
+            | Stage::TransformPositionProjective
+            | Stage::TranslatePosition
+            | Stage::ZeroNormals
+            | Stage::ViewVector(_)
+            | Stage::LightConstant(_)
+            | Stage::Attenuate(_)
+            | Stage::SpotPower(_)
+            | Stage::DiffuseCosine(..)
+            | Stage::Power(..) => {}
+            Stage::LightVector(i) => self.light_mut(i).positional = true,
+            Stage::SpotCone(i) => self.light_mut(i).spot = true,
+            Stage::Halfway(i) | Stage::HalfwayConstant(i) => self.light_mut(i).vector = SpecularVector::Halfway,
+            Stage::Reflect(i) => self.light_mut(i).vector = SpecularVector::Reflection,
+            Stage::SpecularCosine(i, _, vector) => self.light_mut(i).vector = vector,
+            Stage::Sum(i, _, term) => self.light_mut(i).term = term,
+            Stage::SceneColor => self.scene_color = true,
+        }
+    }
+}
+
+impl WorkedLight {
+    const BLANK: WorkedLight =
+        WorkedLight { positional: false, spot: false, vector: SpecularVector::Halfway, term: SpecularTerm::Plain };
+}
+
 /// What step `k` should be, given the student's earlier answers, with the inputs used.
 /// `None` when the step has no value (e.g. d for a directional light).
 pub fn expected(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -> Option<(Vec<f64>, Vec<Input>)> {
     let st: &Step = key.steps.get(k)?;
     let keyed = st.value.clone()?;
     let mut inputs = Inputs { key, answers, used: Vec::new() };
+    let worked = Worked::of(scene);
     let value = match st.kind {
         StepKind::L
         | StepKind::Distance
@@ -153,8 +228,8 @@ pub fn expected(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -
         | StepKind::CosTheta
         | StepKind::H
         | StepKind::R
-        | StepKind::CosBeta => vector_step(scene, st, &mut inputs),
-        _ => term_step(scene, st, &keyed, &mut inputs),
+        | StepKind::CosBeta => vector_step(scene, &worked, st, &mut inputs),
+        _ => term_step(scene, &worked, st, &keyed, &mut inputs),
     };
     let carried = value.is_some();
     Some((value.unwrap_or(keyed), if carried { inputs.used } else { Vec::new() }))
@@ -179,7 +254,7 @@ impl Inputs<'_> {
 
 /// A vector or cosine step (L, d, V, cos θ, H, R, cos β) from the inputs it takes; `None`
 /// where it comes from the givens alone (a directional light's L, an infinite viewer's V).
-fn vector_step(scene: &Scene, st: &Step, inputs: &mut Inputs) -> Option<Vec<f64>> {
+fn vector_step(scene: &Scene, worked: &Worked, st: &Step, inputs: &mut Inputs) -> Option<Vec<f64>> {
     let li = st.light;
     let light = li.and_then(|i| scene.lights.get(i));
     let mut get = |kind: StepKind, l: Option<usize>| inputs.get(kind, l);
@@ -212,12 +287,12 @@ fn vector_step(scene: &Scene, st: &Step, inputs: &mut Inputs) -> Option<Vec<f64>
             let (n, l) = (v3(&n), v3(&l));
             Some(dir4(2.0 * n.dot(l) * n - l))
         }
-        StepKind::CosBeta => match scene.rules.specular {
-            SpecularModel::BlinnPhong => {
+        StepKind::CosBeta => match worked.light(li).vector {
+            SpecularVector::Halfway => {
                 let (n, h) = (get(StepKind::Normal, None)?, get(StepKind::H, li)?);
                 Some(vec![v3(&n).dot(v3(&h))])
             }
-            SpecularModel::Phong => {
+            SpecularVector::Reflection => {
                 let (r, v) = (get(StepKind::R, li)?, get(StepKind::V, None)?);
                 Some(vec![v3(&r).dot(v3(&v))])
             }
@@ -229,7 +304,7 @@ fn vector_step(scene: &Scene, st: &Step, inputs: &mut Inputs) -> Option<Vec<f64>
 /// A colour or factor step (the diffuse and specular terms, the attenuation, a light's
 /// share, the sum, the clamped colour) from the inputs it takes; `None` for the givens.
 /// `keyed` is the key's value (its alpha is kept).
-fn term_step(scene: &Scene, st: &Step, keyed: &[f64], inputs: &mut Inputs) -> Option<Vec<f64>> {
+fn term_step(scene: &Scene, worked: &Worked, st: &Step, keyed: &[f64], inputs: &mut Inputs) -> Option<Vec<f64>> {
     let li = st.light;
     let light = li.and_then(|i| scene.lights.get(i));
     let m = &scene.material;
@@ -246,6 +321,10 @@ fn term_step(scene: &Scene, st: &Step, keyed: &[f64], inputs: &mut Inputs) -> Op
             let n_dot_l = get(StepKind::CosTheta, li)?[0];
             let allowed = terms::specular_allowed(scene.rules.specular_gate(), n_dot_l, c);
             let f = if allowed { crate::numerics::pow::PowFn::Exact.pow::<f64>(c.max(0.0), m.shininess) } else { 0.0 };
+            let f = match worked.light(li).term {
+                SpecularTerm::Zero | SpecularTerm::Plain => f,
+                SpecularTerm::Normalised => f * terms::specular_normalisation(m.shininess),
+            };
             let ls = light?.specular;
             Some((0..3).map(|i| ls[i] * m.specular[i] * f).chain([0.0]).collect())
         }
@@ -317,15 +396,18 @@ pub fn check(scene: &Scene, key: &Explanation, answers: &Answers, k: usize) -> O
 /// (the worksheet stops at I); not a step with no value (d of a directional light).
 pub fn asked(scene: &Scene, key: &Explanation, k: usize) -> bool {
     let Some(st) = key.steps.get(k) else { return false };
-    let light = st.light.and_then(|i| scene.lights.get(i));
-    st.value.is_some()
-        && match st.kind {
-            StepKind::Spot => light.is_some_and(|l| l.is_spot()),
-            StepKind::Attenuation => light.is_some_and(|l| l.position.w != 0.0),
-            StepKind::Contribution => scene.lights.len() > 1 || scene.rules.scene_ambient() || scene.rules.emission(),
-            StepKind::Clamped => scene.rules.set != crate::model::rules::RuleSet::Worksheet,
-            _ => true,
-        }
+    if st.value.is_none() {
+        return false;
+    }
+    let worked = Worked::of(scene);
+    let light = worked.light(st.light);
+    match st.kind {
+        StepKind::Spot => light.spot,
+        StepKind::Attenuation => light.positional,
+        StepKind::Contribution => worked.lights.len() > 1 || worked.scene_color,
+        StepKind::Clamped => !scene.rules.stops_at_sum(),
+        _ => true,
+    }
 }
 
 /// A quiz's score.
@@ -430,7 +512,11 @@ mod tests {
         let mut bright = crate::model::presets::worksheet(5);
         bright.rules = crate::model::rules::Rules::OPENGL;
         bright.material.emission = glam::DVec4::new(1.5, 0.2, 0.2, 1.0);
-        let scenes = [crate::model::presets::worksheet(5), crate::model::presets::phong_demo(), spot, bright];
+        // Energy-conserving Blinn-Phong: the specular step takes its factor (n + 8)/(8 pi).
+        let mut normalised = crate::model::presets::worksheet(5);
+        normalised.rules.specular = crate::model::rules::SpecularModel::BlinnPhongNormalised;
+        let scenes =
+            [crate::model::presets::worksheet(5), crate::model::presets::phong_demo(), spot, bright, normalised];
         let mut carried = std::collections::BTreeSet::new();
         for (n, s) in scenes.iter().enumerate() {
             let lit = Engine::<f64>::new(s).unwrap().light(&s.vertex);

@@ -17,9 +17,9 @@ use std::fmt::Write as _;
 
 use crate::equation::explain::{Explanation, StepKind};
 use crate::equation::lighting::EvalOptions;
-use crate::model::rules::{NormalTransform, SpecularGate, SpecularModel};
-use crate::model::scene::{ColorMaterialMode, Scene};
-use crate::specialise::plan::{Key, Program, SourceKind, Stage};
+use crate::equation::plan::{Key, Program, SourceKind, SpecularTerm, Stage, Viewer};
+use crate::model::rules::{NormalTransform, SpecularGate, SpecularVector};
+use crate::model::scene::{ColorMaterialMode, LightId, Scene, Side};
 
 /// The shading language.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -133,7 +133,8 @@ fn lighting(
     uniforms: &mut Vec<Uniform>,
 ) -> Vec<String> {
     let mut body = Body { scene, key, program, ex, s, uniforms, lines: Vec::new() };
-    for side in 0..body.sides() {
+    for side in body.sides() {
+        let side = side.index();
         let zero = format!("{}(0.0)", s.vec3());
         body.lines.push(s.var("vec3", &format!("sum{side}"), &zero));
         if key.separate_specular {
@@ -170,32 +171,33 @@ impl Body<'_> {
 
     /// A new variable `name = e`, with the worked calculation's step of `kind` (for `light`)
     /// and a note after it.
-    fn var(&mut self, ty: &str, name: &str, e: &str, kind: StepKind, light: Option<usize>, note: &str) {
-        let line = format!("{} // {}{note}", self.s.var(ty, name, e), step_no(self.ex, kind, light));
+    fn var(&mut self, ty: &str, name: &str, e: &str, kind: StepKind, light: Option<LightId>, note: &str) {
+        let line =
+            format!("{} // {}{note}", self.s.var(ty, name, e), step_no(self.ex, kind, light.map(LightId::index)));
         self.lines.push(line);
     }
 
-    /// How many sides are lit: 2 when two-sided, else 1.
-    fn sides(&self) -> usize {
-        if self.key.two_sided { 2 } else { 1 }
+    /// The sides lit: both when two-sided, else the front.
+    fn sides(&self) -> &'static [Side] {
+        if self.key.two_sided { &Side::ALL } else { &Side::ALL[..1] }
     }
 
     /// The material a side reads: `back` where the scene has a back material, else `mat`.
-    fn material(&self, side: usize) -> &'static str {
-        if side == 1 && self.scene.back_material.is_some() { "back" } else { "mat" }
+    fn material(&self, side: Side) -> &'static str {
+        if side == Side::Back && self.scene.back_material.is_some() { "back" } else { "mat" }
     }
 
     /// A material colour of `side` (`ambient`, `diffuse` or `specular`, of GLSL type
     /// `ty`): its uniform, or, where `GL_COLOR_MATERIAL` tracks it on that side, the
     /// current colour's (`u_color`, as `glColor` sets it).
-    fn material_color(&mut self, side: usize, what: &str, ty: &'static str) -> String {
+    fn material_color(&mut self, side: Side, what: &str, ty: &'static str) -> String {
         let property = match what {
             "ambient" => ColorMaterialMode::Ambient,
             "diffuse" => ColorMaterialMode::Diffuse,
             _ => ColorMaterialMode::Specular,
         };
         if let Some(cm) = &self.scene.color_material
-            && cm.tracks(property, side)
+            && cm.tracks(property, side.index())
         {
             let c = self.uni("color".into(), "vec4");
             return if ty == "vec4" { c } else { format!("{c}.xyz") };
@@ -205,19 +207,23 @@ impl Body<'_> {
     }
 
     /// The normal a side's cosines use.
-    fn normal(side: usize) -> &'static str {
-        if side == 1 { "-N" } else { "N" }
+    fn normal(side: Side) -> &'static str {
+        match side {
+            Side::Front => "N",
+            Side::Back => "-N",
+        }
     }
 
-    /// V in the specular cosines: the per-vertex view vector, or (0, 0, 1) for an infinite
-    /// viewer.
+    /// V in the specular cosines: the view vector where the program forms one, else the
+    /// infinite viewer's (0, 0, 1).
     fn view(&self) -> String {
-        if self.key.per_vertex_view { "V".to_string() } else { format!("{}(0.0, 0.0, 1.0)", self.s.vec3()) }
+        if has_view_vector(self.program) { "V".to_string() } else { format!("{}(0.0, 0.0, 1.0)", self.s.vec3()) }
     }
 
     /// Where the rules let the specular term through (OpenGL: the lit side; the worksheet: a
     /// positive cosine; the demo: always).
-    fn gate_open(&self, i: usize, side: usize) -> String {
+    fn gate_open(&self, i: LightId, side: Side) -> String {
+        let side = side.index();
         match self.scene.rules.specular_gate() {
             SpecularGate::LitSide => format!("ndl{i}_{side} > 0.0"),
             SpecularGate::PositiveCosine => format!("spec_cos{i}_{side} > 0.0"),
@@ -242,7 +248,7 @@ impl Body<'_> {
                 let n_ok = self.s.var("bool", "n_ok", "dot(N, N) > 0.0");
                 self.lines.push(format!("{n_ok} // {}", crate::t!("shader-note-zero-normal")));
             }
-            Stage::ViewVector => self.view_vector(),
+            Stage::ViewVector(viewer) => self.view_vector(viewer),
             Stage::LightVector(i) => self.light_vector(i),
             Stage::LightConstant(i) => {
                 let l = self.uni(format!("light{i}_direction"), "vec3");
@@ -279,25 +285,29 @@ impl Body<'_> {
             }
             Stage::DiffuseCosine(i, side) => {
                 let e = format!("dot({}, L{i})", Self::normal(side));
-                self.var("float", &format!("ndl{i}_{side}"), &e, StepKind::CosTheta, Some(i), "");
+                let s = side.index();
+                self.var("float", &format!("ndl{i}_{s}"), &e, StepKind::CosTheta, Some(i), "");
             }
-            Stage::SpecularCosine(i, side) => {
-                let e = match self.scene.rules.specular {
-                    SpecularModel::BlinnPhong => format!("dot({}, H{i})", Self::normal(side)),
-                    SpecularModel::Phong => format!("dot(R{i}, {})", self.view()),
+            Stage::SpecularCosine(i, side, vector) => {
+                let e = match vector {
+                    SpecularVector::Halfway => format!("dot({}, H{i})", Self::normal(side)),
+                    SpecularVector::Reflection => format!("dot(R{i}, {})", self.view()),
                 };
-                self.var("float", &format!("spec_cos{i}_{side}"), &e, StepKind::CosBeta, Some(i), "");
+                let s = side.index();
+                self.var("float", &format!("spec_cos{i}_{s}"), &e, StepKind::CosBeta, Some(i), "");
             }
             Stage::Power(i, side) => {
                 let sh = self.uni(format!("{}_shininess", self.material(side)), "float");
+                let s = side.index();
                 let e =
-                    self.s.select(&self.gate_open(i, side), &format!("pow(max(spec_cos{i}_{side}, 0.0), {sh})"), "0.0");
-                self.var("float", &format!("pf{i}_{side}"), &e, StepKind::Specular, Some(i), "");
+                    self.s.select(&self.gate_open(i, side), &format!("pow(max(spec_cos{i}_{s}, 0.0), {sh})"), "0.0");
+                self.var("float", &format!("pf{i}_{s}"), &e, StepKind::Specular, Some(i), "");
             }
-            Stage::Sum(i, side) => self.sum(i, side),
+            Stage::Sum(i, side, term) => self.sum(i, side, term),
             Stage::SceneColor => {
                 let c = self.uni("scene_color".into(), "vec3");
-                for side in 0..self.sides() {
+                for side in self.sides() {
+                    let side = side.index();
                     let step = step_no(self.ex, StepKind::SceneAmbient, None);
                     let note = crate::t!("shader-note-emission-ambient");
                     self.lines.push(format!("sum{side} = sum{side} + {c}; // {step} ({note})"));
@@ -306,18 +316,19 @@ impl Body<'_> {
         }
     }
 
-    /// V: towards the eye from P (local viewer), or the axis for an infinite viewer.
-    fn view_vector(&mut self) {
-        let e = if self.key.local_viewer {
-            "normalize(-P)".to_string()
-        } else {
-            format!("{}(0.0, 0.0, -sign(P.z))", self.s.vec3())
+    /// V: towards the eye from P (local viewer), the worksheet's axis, or OpenGL's
+    /// infinite viewer's.
+    fn view_vector(&mut self, viewer: Viewer) {
+        let e = match viewer {
+            Viewer::Local => "normalize(-P)".to_string(),
+            Viewer::EyePlane => format!("{}(0.0, 0.0, -sign(P.z))", self.s.vec3()),
+            Viewer::Infinite => format!("{}(0.0, 0.0, 1.0)", self.s.vec3()),
         };
         self.var("vec3", "V", &e, StepKind::V, None, " (V)");
     }
 
     /// A positional light's direction: the vector to it, its length d, and L.
-    fn light_vector(&mut self, i: usize) {
+    fn light_vector(&mut self, i: LightId) {
         let p = self.uni(format!("light{i}_position"), "vec4");
         self.var("vec3", &format!("toL{i}"), &format!("{p}.xyz / {p}.w - P"), StepKind::L, Some(i), "");
         self.var("float", &format!("d{i}"), &format!("length(toL{i})"), StepKind::Distance, Some(i), " (d)");
@@ -325,7 +336,7 @@ impl Body<'_> {
     }
 
     /// A spotlight's cosine to its axis and the cone test.
-    fn spot_cone(&mut self, i: usize) {
+    fn spot_cone(&mut self, i: LightId) {
         let dir = self.uni(format!("light{i}_spot_direction"), "vec3");
         let cut = self.uni(format!("light{i}_spot_cos_cutoff"), "float");
         let cos = format!("dot(-L{i}, normalize({dir}))");
@@ -338,27 +349,38 @@ impl Body<'_> {
 
     /// Light `i`'s share on `side`: its ambient, diffuse and specular terms, scaled by its
     /// attenuation and spot factor, added to the side's sum.
-    fn sum(&mut self, i: usize, side: usize) {
+    fn sum(&mut self, i: LightId, side: Side, term: SpecularTerm) {
         let (la, ld, ls) = (
             self.uni(format!("light{i}_ambient"), "vec3"),
             self.uni(format!("light{i}_diffuse"), "vec3"),
             self.uni(format!("light{i}_specular"), "vec3"),
         );
         let (ma, md) = (self.material_color(side, "ambient", "vec3"), self.material_color(side, "diffuse", "vec4"));
-        let mut terms = format!("{la} * {ma} + {ld} * {md}.xyz * max(ndl{i}_{side}, 0.0)");
+        let s = side.index();
+        let mut terms = format!("{la} * {ma} + {ld} * {md}.xyz * max(ndl{i}_{s}, 0.0)");
         let mut specular = None;
-        if self.key.lights[i].specular {
+        // What multiplies the specular term: nothing, or energy-conserving Blinn-Phong's
+        // (s + 8) / (8 pi).
+        let normalisation = match term {
+            SpecularTerm::Zero => None,
+            SpecularTerm::Plain => Some(String::new()),
+            SpecularTerm::Normalised => {
+                let sh = self.uni(format!("{}_shininess", self.material(side)), "float");
+                Some(format!(" * (({sh} + 8.0) / (8.0 * 3.14159265))"))
+            }
+        };
+        if let Some(normalisation) = normalisation {
             let ms = self.material_color(side, "specular", "vec3");
             // The power (or 1 at shininess 0) where the gate lets it through.
             let pf = if self.program.has(Stage::Power(i, side)) {
-                format!("pf{i}_{side}")
+                format!("pf{i}_{s}")
             } else {
                 self.s.select(&self.gate_open(i, side), "1.0", "0.0")
             };
             if self.key.separate_specular {
-                specular = Some(format!("{ls} * {ms} * {pf}"));
+                specular = Some(format!("{ls} * {ms} * {pf}{normalisation}"));
             } else {
-                terms.push_str(&format!(" + {ls} * {ms} * {pf}"));
+                terms.push_str(&format!(" + {ls} * {ms} * {pf}{normalisation}"));
             }
         }
         let mut scale = String::new();
@@ -373,8 +395,8 @@ impl Body<'_> {
         } else {
             format!("{scale}({terms})")
         };
-        let step = step_no(self.ex, StepKind::Contribution, Some(i));
-        self.lines.push(format!("sum{side} = sum{side} + {lit}; // {step}"));
+        let step = step_no(self.ex, StepKind::Contribution, Some(i.index()));
+        self.lines.push(format!("sum{s} = sum{s} + {lit}; // {step}"));
         if let Some(spec) = specular {
             let lit = if self.program.has(Stage::ZeroNormals) {
                 self.s.select("n_ok", &format!("{scale}({spec})"), &format!("{}(0.0)", self.s.vec3()))
@@ -383,7 +405,7 @@ impl Body<'_> {
             };
             let step = step_no(self.ex, StepKind::Secondary, None);
             let note = crate::t!("shader-note-secondary");
-            self.lines.push(format!("spec{side} = spec{side} + {lit}; // {step} ({note})"));
+            self.lines.push(format!("spec{s} = spec{s} + {lit}; // {step} ({note})"));
         }
     }
 
@@ -392,8 +414,9 @@ impl Body<'_> {
     fn colors(&mut self) {
         let clamp = self.scene.rules.clamps_vertex_colors();
         let (v3, v4) = (self.s.vec3(), self.s.vec4());
-        for side in 0..self.sides() {
+        for &side in self.sides() {
             let md = self.material_color(side, "diffuse", "vec4");
+            let side = side.index();
             let clamped = |v: &str| if clamp { format!("clamp({v}, {v3}(0.0), {v3}(1.0))") } else { v.to_string() };
             // With a separate specular colour, each colour is clamped on its own and the two
             // are added (OpenGL's colour sum): what the rasteriser interpolates.
@@ -443,7 +466,7 @@ fn prologue(scene: &Scene, program: &Program, ex: &Explanation, s: &Syn, uniform
             step_no(ex, StepKind::Position, None),
             crate::t!("shader-note-translation")
         ));
-    } else if program.has(Stage::TransformPosition) || program.has(Stage::ViewVector) {
+    } else if program.has(Stage::TransformPosition) || has_view_vector(program) {
         o.push(format!(
             "{} // {} ({})",
             s.var("vec3", "P", &format!("({mv} * {v4}({p_in}, 1.0)).xyz")),
@@ -452,6 +475,11 @@ fn prologue(scene: &Scene, program: &Program, ex: &Explanation, s: &Syn, uniform
         ));
     }
     o
+}
+
+/// Does `program` form V (a `V` variable the cosines read)?
+fn has_view_vector(program: &Program) -> bool {
+    program.stages.iter().any(|s| matches!(s, Stage::ViewVector(_)))
 }
 
 /// The uniform declarations.
@@ -531,7 +559,7 @@ fn header(what: &str, shading: ShaderShading) -> String {
 
 /// The comment that lists a program's stages.
 fn stage_list(what: &str, program: &Program) -> String {
-    let stages: Vec<String> = program.stages.iter().map(|st| format!("{st:?}")).collect();
+    let stages: Vec<String> = program.stages.iter().map(Stage::to_string).collect();
     format!("// {what}: {}\n", stages.join(" > "))
 }
 

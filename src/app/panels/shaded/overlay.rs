@@ -193,9 +193,9 @@ pub fn vector_arrows(doc: &Document, eval: &Evaluated, rect: egui::Rect) -> Vec<
     for lv in &eval.lights {
         let sfx = if many { lv.index.to_string() } else { String::new() };
         add(lv.l, crate::app::widgets::palette::L, format!("L{sfx}"));
-        match doc.scene.rules.specular {
-            phonglab_core::SpecularModel::BlinnPhong => add(lv.h, crate::app::widgets::palette::H, format!("H{sfx}")),
-            phonglab_core::SpecularModel::Phong => add(lv.r, crate::app::widgets::palette::R, format!("R{sfx}")),
+        match doc.scene.rules.specular.vector() {
+            phonglab_core::SpecularVector::Halfway => add(lv.h, crate::app::widgets::palette::H, format!("H{sfx}")),
+            phonglab_core::SpecularVector::Reflection => add(lv.r, crate::app::widgets::palette::R, format!("R{sfx}")),
         }
     }
     add(eval.v, crate::app::widgets::palette::V, "V".into());

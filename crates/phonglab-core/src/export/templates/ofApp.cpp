@@ -3,7 +3,7 @@
 
 void ofApp::setup() {
 {{camera}}{{lights}}    // {{material_comment:comment}}
-{{material}}}
+{{material}}{{shader}}}
 
 void ofApp::draw() {
 {{draw}}}

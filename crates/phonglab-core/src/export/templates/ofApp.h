@@ -11,4 +11,4 @@ public:
 private:
     ofCamera cam;
     ofMaterial material;
-{{lights}}};
+{{members}}};

@@ -8,13 +8,14 @@ use glam::{DVec3, Vec3};
 
 use super::{CHUNK, Chunk, Lighter, Lit};
 use crate::equation::lighting::{LightPos, PreparedLight, fast_rsqrt, terms};
-use crate::model::rules::{SpecularGate, SpecularModel};
+use crate::equation::plan::{SpecularTerm, Stage, Viewer};
+use crate::model::rules::{SpecularGate, SpecularVector};
+use crate::model::scene::{LightId, Side};
 use crate::numerics::pow::PowFn;
 use crate::numerics::robust::{
     mul0, normalize3, normalize3_unscaled, transform_affine_rows, transform_point_rows, translate_point,
     unscaled_is_exact,
 };
-use crate::specialise::plan::Stage;
 
 impl Lighter {
     /// Zeroes the sums that will be read: per side, the primary, and the secondary with
@@ -106,11 +107,11 @@ impl Lighter {
                     c.zero[i] = terms::is_zero_normal::<f32>(Vec3::new(c.nx[i], c.ny[i], c.nz[i]));
                 }
             }
-            Stage::ViewVector => self.view_vector(c, n),
+            Stage::ViewVector(viewer) => self.view_vector(c, n, viewer),
             Stage::LightVector(li) => self.light_vector(c, n, li),
             Stage::LightConstant(li) => self.light_constant(c, n, li),
             Stage::Attenuate(li) => {
-                let k = e.lights[li].k;
+                let k = e.lights[li.index()].k;
                 for i in 0..n {
                     c.scale[i] = terms::attenuation(k, c.d[i]);
                 }
@@ -127,7 +128,7 @@ impl Lighter {
             }
             Stage::HalfwayConstant(li) => {
                 // `SpecularCosine` reads the constant itself.
-                c.h_ok[..n].fill(self.consts[li].h.is_some());
+                c.h_ok[..n].fill(self.consts[li.index()].h.is_some());
             }
             Stage::Reflect(_) => {
                 let clamped = e.rules.reflect_clamped();
@@ -139,20 +140,27 @@ impl Lighter {
                 }
             }
             Stage::DiffuseCosine(li, side) => self.diffuse_cosine(c, n, li, side),
-            Stage::SpecularCosine(li, side) => self.specular_cosine(c, n, li, side),
+            Stage::SpecularCosine(li, side, vector) => self.specular_cosine(c, n, li, side, vector),
             Stage::Power(_, side) => self.power(c, n, side),
-            Stage::Sum(li, side) => self.sum(c, &e.lights[li], side),
+            Stage::Sum(li, side, term) => self.sum(c, &e.lights[li.index()], side, term),
             // Added as the colours are written (`write`, `write_sum`).
             Stage::SceneColor => {}
         }
     }
 
     /// V at each vertex: `normalize(-P)` for a local viewer (in f64, unscaled where that
-    /// changes no bit), else the worksheet's axis `(0, 0, -sign(P.z))` (terms::view_vector
-    /// on components, so the loops vectorise).
+    /// changes no bit), the worksheet's axis `(0, 0, -sign(P.z))`, or OpenGL's infinite
+    /// viewer's (0, 0, 1) (terms::view_vector on components, so the loops vectorise).
     #[inline(always)]
-    fn view_vector(&self, c: &mut Chunk, n: usize) {
-        if self.key.local_viewer {
+    fn view_vector(&self, c: &mut Chunk, n: usize, viewer: Viewer) {
+        if viewer == Viewer::Infinite {
+            // Only a worked program writes this stage out: V is the constant every chunk
+            // starts with.
+            c.vx[..n].fill(0.0);
+            c.vy[..n].fill(0.0);
+            c.vz[..n].fill(1.0);
+            c.v_ok[..n].fill(true);
+        } else if viewer == Viewer::Local {
             // normalize(-P), in f64 (unscaled where that changes no bit), rounded to f32.
             let plain = all_unscaled_exact(&c.px, &c.py, &c.pz, n);
             macro_rules! view_vectors {
@@ -169,9 +177,7 @@ impl Lighter {
                 view_vectors!(normalize3::<f64>);
             }
         } else {
-            // The stage runs only for a local viewer or the worksheet's rule
-            // (plan::Key::per_vertex_view), so here V = (0, 0, -sign(P.z)),
-            // undefined on the plane z = 0.
+            // The worksheet's rule: V = (0, 0, -sign(P.z)), undefined on the plane z = 0.
             for i in 0..n {
                 let z = c.pz[i];
                 (c.vx[i], c.vy[i]) = (0.0, 0.0);
@@ -184,9 +190,9 @@ impl Lighter {
     /// A positional light's L and d at each vertex, in f64 (terms::light_direction on
     /// components), and the scale reset to 1 for `Attenuate` and `SpotPower`.
     #[inline(always)]
-    fn light_vector(&self, c: &mut Chunk, n: usize, li: usize) {
+    fn light_vector(&self, c: &mut Chunk, n: usize, li: LightId) {
         let e = &self.engine;
-        let LightPos::Positional(lp) = e.lights[li].pos else { return };
+        let LightPos::Positional(lp) = e.lights[li.index()].pos else { return };
         // terms::light_direction on components: one robust::normalize3 in f64, without
         // its scaling where that changes no bit (robust::unscaled_is_exact).
         for i in 0..n {
@@ -213,15 +219,12 @@ impl Lighter {
 
     /// A directional light's constant L (and its scale), as arrays where H or R reads them.
     #[inline(always)]
-    fn light_constant(&self, c: &mut Chunk, n: usize, li: usize) {
-        let e = &self.engine;
-        let k = &self.consts[li];
+    fn light_constant(&self, c: &mut Chunk, n: usize, li: LightId) {
+        let k = &self.consts[li.index()];
         c.l_ok[..n].fill(k.l.is_some());
         c.scale[..n].fill(k.scale);
         // The cosines read the constant itself; per-vertex H or R read it as arrays.
-        let per_vertex_h_or_r = self.key.lights[li].specular
-            && (e.rules.specular == SpecularModel::Phong || self.key.per_vertex_halfway(li));
-        if per_vertex_h_or_r {
+        if k.l_arrays {
             let l = k.l.unwrap_or(Vec3::ZERO);
             c.lx[..n].fill(l.x);
             c.ly[..n].fill(l.y);
@@ -231,9 +234,9 @@ impl Lighter {
 
     /// The cosine of each L to the spot axis and the cone test (terms::spot_cone).
     #[inline(always)]
-    fn spot_cone(&self, c: &mut Chunk, n: usize, li: usize) {
+    fn spot_cone(&self, c: &mut Chunk, n: usize, li: LightId) {
         let e = &self.engine;
-        let Some(sp) = e.lights[li].spot else { return };
+        let Some(sp) = e.lights[li.index()].spot else { return };
         match sp.axis {
             None => c.inside[..n].fill(false),
             Some(axis) => {
@@ -250,9 +253,9 @@ impl Lighter {
     /// The spot factor (the cosine raised to the spot exponent inside the cone), folded into
     /// the scale.
     #[inline(always)]
-    fn spot_power(&self, c: &mut Chunk, n: usize, li: usize) {
+    fn spot_power(&self, c: &mut Chunk, n: usize, li: LightId) {
         let e = &self.engine;
-        let Some(sp) = e.lights[li].spot else { return };
+        let Some(sp) = e.lights[li.index()].spot else { return };
         if sp.axis.is_none() {
             c.inside[..n].fill(false);
         }
@@ -267,13 +270,16 @@ impl Lighter {
 
     /// `n_side . L` at each vertex for `side`.
     #[inline(always)]
-    fn diffuse_cosine(&self, c: &mut Chunk, n: usize, li: usize, side: usize) {
+    fn diffuse_cosine(&self, c: &mut Chunk, n: usize, li: LightId, side: Side) {
         // n_side . L with n_side = n or -n (negation is exact); a directional light's
         // L is the constant `consts[li].l`.
-        let ndl = &mut c.ndl[side];
-        let (nx, ny, nz) = if side == 0 { (&c.nx, &c.ny, &c.nz) } else { negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n) };
-        match self.consts.get(li).and_then(|k| k.l) {
-            Some(l) if !self.key.lights[li].positional => {
+        let ndl = &mut c.ndl[side.index()];
+        let (nx, ny, nz) = match side {
+            Side::Front => (&c.nx, &c.ny, &c.nz),
+            Side::Back => negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n),
+        };
+        match self.consts.get(li.index()).and_then(|k| k.l) {
+            Some(l) if !self.key.lights[li.index()].positional => {
                 for i in 0..n {
                     ndl[i] = terms::dot3(nx[i], ny[i], nz[i], l.x, l.y, l.z);
                 }
@@ -288,14 +294,15 @@ impl Lighter {
 
     /// The specular cosine for `side`: `n_side . H` (Blinn-Phong) or `R . V` (Phong).
     #[inline(always)]
-    fn specular_cosine(&self, c: &mut Chunk, n: usize, li: usize, side: usize) {
-        let e = &self.engine;
-        let cos = &mut c.cos[side];
-        match e.rules.specular {
-            SpecularModel::BlinnPhong => {
-                let (nx, ny, nz) =
-                    if side == 0 { (&c.nx, &c.ny, &c.nz) } else { negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n) };
-                match self.consts.get(li).and_then(|k| k.h) {
+    fn specular_cosine(&self, c: &mut Chunk, n: usize, li: LightId, side: Side, vector: SpecularVector) {
+        let cos = &mut c.cos[side.index()];
+        match vector {
+            SpecularVector::Halfway => {
+                let (nx, ny, nz) = match side {
+                    Side::Front => (&c.nx, &c.ny, &c.nz),
+                    Side::Back => negated(&mut c.neg, &c.nx, &c.ny, &c.nz, n),
+                };
+                match self.consts.get(li.index()).and_then(|k| k.h) {
                     // HalfwayConstant: H is one vector.
                     Some(h) => {
                         for i in 0..n {
@@ -309,7 +316,7 @@ impl Lighter {
                     }
                 }
             }
-            SpecularModel::Phong => {
+            SpecularVector::Reflection => {
                 // R . V, the same on both sides (R is formed with the front normal).
                 for i in 0..n {
                     cos[i] = terms::dot3(c.hx[i], c.hy[i], c.hz[i], c.vx[i], c.vy[i], c.vz[i]);
@@ -320,22 +327,23 @@ impl Lighter {
 
     /// The specular power for `side`, raised where `Sum` reads it.
     #[inline(always)]
-    fn power(&self, c: &mut Chunk, n: usize, side: usize) {
+    fn power(&self, c: &mut Chunk, n: usize, side: Side) {
         let e = &self.engine;
         // Raised where `Sum` reads the power (its specular is allowed there; the
         // lanes are kept for it in `Chunk::allowed`); the other lanes are raised as 0,
         // which the exact power does not compute at all (pow_f32_chunk_packed packs
         // the others together; without AVX-512 it skips blocks of 8 zeros). `Sum`
         // gives them f_i p = 0 whatever p is.
-        let shin = e.sides[side].shininess;
+        let s = side.index();
+        let shin = e.sides[s].shininess;
         let mut allowed = [false; CHUNK];
         self.specular_lanes(c, side, &mut allowed);
         let mut x = [0.0f32; CHUNK];
         for i in 0..n {
-            x[i] = keep_or_zero(allowed[i], c.cos[side][i]);
+            x[i] = keep_or_zero(allowed[i], c.cos[s][i]);
         }
-        power_loop(e.options.pow, &x, &mut c.p[side], n, shin);
-        c.allowed[side] = allowed;
+        power_loop(e.options.pow, &x, &mut c.p[s], n, shin);
+        c.allowed[s] = allowed;
     }
 
     /// Where the current light's specular is allowed on `side` (the `allowed` of
@@ -344,9 +352,9 @@ impl Lighter {
     /// by `Power` (which raises only these lanes) and `Sum`. One loop per gate (the gate is
     /// the scene's), `&` rather than `&&`, so each vectorises.
     #[inline(always)]
-    fn specular_lanes(&self, c: &Chunk, side: usize, allowed: &mut [bool; CHUNK]) {
+    fn specular_lanes(&self, c: &Chunk, side: Side, allowed: &mut [bool; CHUNK]) {
         let n = c.lanes();
-        let (ndl, cos) = (&c.ndl[side], &c.cos[side]);
+        let (ndl, cos) = (&c.ndl[side.index()], &c.cos[side.index()]);
         let (l_ok, zero, h_ok) = (&c.l_ok, &c.zero, &c.h_ok);
         macro_rules! where_gate {
             ($g:expr) => {
@@ -366,21 +374,26 @@ impl Lighter {
     /// side's sums. First which vertices the light reaches and where its specular is
     /// allowed, then one loop per channel (so each vectorises).
     #[inline(always)]
-    fn sum(&self, c: &mut Chunk, pl: &PreparedLight<f32>, side: usize) {
+    fn sum(&self, c: &mut Chunk, pl: &PreparedLight<f32>, side: Side, term: SpecularTerm) {
         let e = &self.engine;
         let n = c.lanes();
-        let [amb, dif, spe] = pl.products[side].map(|v| v.to_array());
+        let s = side.index();
+        let [amb, dif, spe] = pl.products[s].map(|v| v.to_array());
         let separate = e.separate_specular;
-        let specular_on = self.key.lights.get(pl.index).is_some_and(|l| l.specular);
-        let (ndl, scale) = (&c.ndl[side][..n], &c.scale[..n]);
+        let specular_on = match term {
+            SpecularTerm::Zero => false,
+            // The normalisation is in the specular product (`PreparedLight::products`).
+            SpecularTerm::Plain | SpecularTerm::Normalised => true,
+        };
+        let (ndl, scale) = (&c.ndl[s][..n], &c.scale[..n]);
         let (l_ok, zero) = (&c.l_ok[..n], &c.zero[..n]);
         // Shininess 0 (no `Power` stage): max(cos, 0)^0 = 1.
-        let p = if self.key.shininess_zero[side] { &ONES[..n] } else { &c.p[side][..n] };
+        let p = if self.key.shininess_zero[s] { &ONES[..n] } else { &c.p[s][..n] };
         // Where the specular is allowed: as `Power` found it for this light and side (it
         // ran just before, unless the shininess is 0), or found here.
         let mut own = [false; CHUNK];
-        let allowed = if self.key.has_power(pl.index, side) {
-            &c.allowed[side]
+        let allowed = if self.key.has_power(LightId(pl.index), side) {
+            &c.allowed[s]
         } else {
             if specular_on {
                 self.specular_lanes(c, side, &mut own);
@@ -396,7 +409,7 @@ impl Lighter {
             (dn[i], fp[i]) = terms::shared_factors(ndl[i], lit, allowed[i], p[i]);
         }
         let (dn, fp) = (&dn[..n], &fp[..n]);
-        let (pri, sec) = c.acc[2 * side..2 * side + 2].split_at_mut(1);
+        let (pri, sec) = c.acc[2 * s..2 * s + 2].split_at_mut(1);
         let channel = |acc: &mut [f32], ch: usize, k: usize| {
             for i in 0..n {
                 let t = terms::channel(amb[ch], dif[ch], spe[ch], dn[i], fp[i], separate, scale[i]);
@@ -416,7 +429,8 @@ impl Lighter {
     /// `terms::finish` for the chunk, written on plain arrays: `(e_cm + a_cm a_cs) + sum`
     /// (the first term only with `SceneColor` in the program), NaN shown as 0, the alphas.
     #[inline(always)]
-    pub(super) fn write(&self, c: &Chunk, side: usize, scene_color: bool, out: &mut [Lit]) {
+    pub(super) fn write(&self, c: &Chunk, side: Side, scene_color: bool, out: &mut [Lit]) {
+        let side = side.index();
         let m = &self.engine.sides[side];
         let base = (m.emission + m.scene_ambient).to_array();
         let sep = self.key.separate_specular;
@@ -431,7 +445,8 @@ impl Lighter {
 
     /// The colour sums of the chunk: `primary + secondary` rgb of [`Lighter::write`].
     #[inline(always)]
-    pub(super) fn write_sum(&self, c: &Chunk, side: usize, scene_color: bool, out: &mut [[f32; 4]]) {
+    pub(super) fn write_sum(&self, c: &Chunk, side: Side, scene_color: bool, out: &mut [[f32; 4]]) {
+        let side = side.index();
         let m = &self.engine.sides[side];
         let base = if scene_color { (m.emission + m.scene_ambient).to_array() } else { [0.0; 3] };
         let fix = |x: f32| if x.is_nan() { 0.0 } else { x };
