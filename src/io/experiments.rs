@@ -390,9 +390,9 @@ mod tests {
                  [text.en]\ntitle = \"x\"\nlook = \"y\"\nquestion = \"z?\"\n"
             )
         };
-        let e = Experiment::parse(&text("light-z"), shipped_scene).unwrap();
+        let e = Experiment::parse(&text("light-z"), shipped_as_scene).unwrap();
         assert_eq!(e.control_label().as_deref(), Some("Light z"));
-        let why = Experiment::parse(&text("light-w"), shipped_scene).unwrap_err();
+        let why = Experiment::parse(&text("light-w"), shipped_as_scene).unwrap_err();
         assert!(why.contains("light-w"), "{why}");
         assert_eq!(by_stem("01-light-behind").control.as_deref(), Some("light-z"));
     }
