@@ -144,7 +144,7 @@ pub fn for_each_case<R: std::io::Read>(
 ) -> Result<usize, FileError> {
     let mut ids = CaseIds::default();
     let mut each = each;
-    stream::cases(reader, &mut |raw: Value, i: usize| {
+    stream::cases(std::io::BufReader::with_capacity(1 << 16, reader), &mut |raw: Value, i: usize| {
         let (id, parsed) = ids.parse(&raw, i);
         each(id, parsed);
     })
@@ -162,7 +162,7 @@ pub fn measure_cases<R: std::io::Read>(reader: R) -> Result<(usize, u64), FileEr
     let read = std::rc::Rc::new(std::cell::Cell::new(0u64));
     let counted = stream::Counted { inner: std::io::BufReader::with_capacity(1 << 16, reader), read: read.clone() };
     let (mut before, mut largest) = (0u64, 0u64);
-    let n = stream::cases(counted, &mut |_: serde::de::IgnoredAny, _: usize| {
+    let n = stream::cases(counted, &mut |_: stream::Skip, _: usize| {
         largest = largest.max(read.get() - before);
         before = read.get();
     })?;
@@ -572,6 +572,23 @@ fn nums(v: &[f64]) -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The first pass reads past each case without building it, but refuses what the
+    /// second would (nesting past 128), so a broken file prints nothing; and it measures
+    /// the largest case.
+    #[test]
+    fn the_first_pass_measures_the_largest_case_and_refuses_what_the_second_would() {
+        let nested = |depth: usize| format!("{{\"id\":\"b\",\"tags\":{}0{}}}", "[".repeat(depth), "]".repeat(depth));
+        let deep = format!("[{{\"id\":\"a\"}},{}]", nested(200));
+        assert!(count_cases(deep.as_bytes()).is_err());
+        let mut seen = 0;
+        assert!(for_each_case(deep.as_bytes(), |_, _| seen += 1).is_err() && seen == 1, "as the second pass does");
+        let fine = format!("[{{\"id\":\"a\"}}, {}]", nested(100));
+        let (n, largest) = measure_cases(fine.as_bytes()).unwrap();
+        assert_eq!(n, 2);
+        let size = nested(100).len() as u64;
+        assert!((size..size + 4).contains(&largest), "{largest} for a case of {size} bytes");
+    }
 
     #[test]
     fn a_scene_written_as_a_case_lights_the_same() {

@@ -425,7 +425,7 @@ pub struct LoadedObj {
 /// even if the path is given another file between them.
 pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     use std::io::{Read, Seek};
-    let shown = crate::formats::escape::terminal::text(&path.display().to_string());
+    let shown = path.display().to_string();
     let cannot = |e: std::io::Error| t!("obj-cannot-read", path = shown.clone(), error = e.to_string());
     let file = open_to_read(path).map_err(cannot)?;
     let meta = file.metadata().map_err(cannot)?;

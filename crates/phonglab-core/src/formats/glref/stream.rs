@@ -30,10 +30,58 @@ impl<R: std::io::Read> std::io::Read for Counted<R> {
     }
 }
 
+/// A JSON value read past without building it, refused where building it would be
+/// (serde_json's nesting limit of 128 included, which its `IgnoredAny` does not check):
+/// so a file whose first pass passes is one whose second reads whole.
+pub struct Skip;
+
+impl<'de> de::Deserialize<'de> for Skip {
+    fn deserialize<D: de::Deserializer<'de>>(d: D) -> Result<Skip, D::Error> {
+        d.deserialize_any(Skip)
+    }
+}
+
+impl<'de> Visitor<'de> for Skip {
+    type Value = Skip;
+
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("a JSON value")
+    }
+    fn visit_bool<E: de::Error>(self, _: bool) -> Result<Skip, E> {
+        Ok(Skip)
+    }
+    fn visit_i64<E: de::Error>(self, _: i64) -> Result<Skip, E> {
+        Ok(Skip)
+    }
+    fn visit_u64<E: de::Error>(self, _: u64) -> Result<Skip, E> {
+        Ok(Skip)
+    }
+    fn visit_f64<E: de::Error>(self, _: f64) -> Result<Skip, E> {
+        Ok(Skip)
+    }
+    fn visit_str<E: de::Error>(self, _: &str) -> Result<Skip, E> {
+        Ok(Skip)
+    }
+    fn visit_unit<E: de::Error>(self) -> Result<Skip, E> {
+        Ok(Skip)
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Skip, A::Error> {
+        while seq.next_element::<Skip>()?.is_some() {}
+        Ok(Skip)
+    }
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Skip, A::Error> {
+        while map.next_key::<IgnoredAny>()?.is_some() {
+            map.next_value::<Skip>()?;
+        }
+        Ok(Skip)
+    }
+}
+
 /// Reads the file's cases into `each`; the count, or why the file is not a case file.
+/// `reader` is read a byte at a time: buffer it (`BufReader`).
 pub fn cases<R: std::io::Read, T: DeserializeOwned>(reader: R, each: Each<'_, T>) -> Result<usize, FileError> {
     let shape = Cell::new(None);
-    let mut de = serde_json::Deserializer::from_reader(std::io::BufReader::with_capacity(1 << 16, reader));
+    let mut de = serde_json::Deserializer::from_reader(reader);
     let r = File { each, shape: &shape, case: PhantomData }.deserialize(&mut de).and_then(|n| de.end().map(|()| n));
     match (r, shape.get()) {
         (_, Some(what)) => Err(FileError::Shape(what)),
