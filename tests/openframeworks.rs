@@ -71,6 +71,25 @@ fn normalised() -> Vec<(String, Document)> {
     docs
 }
 
+/// The two stages in `setup`'s raw strings compile as GLSL for a compatibility context
+/// (glslangValidator, which scripts/test installs).
+fn compatibility_glsl_compiles(name: &str, setup: &str) {
+    let dir = std::env::temp_dir().join(format!("phonglab-of-glsl-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let sources: Vec<&str> = setup.split("R\"GLSL(\n").skip(1).map(|s| s.split(")GLSL\"").next().unwrap()).collect();
+    assert_eq!(sources.len(), 2, "{name}");
+    for (stage, src) in ["vert", "frag"].into_iter().zip(sources) {
+        let p = dir.join(format!("stage.{stage}"));
+        std::fs::write(&p, src).unwrap();
+        let out = Command::new("glslangValidator")
+            .arg(&p)
+            .output()
+            .expect("glslangValidator (glslang-tools) is installed by scripts/test");
+        assert!(out.status.success(), "{name}.{stage}: {}\n{src}", String::from_utf8_lossy(&out.stdout));
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 /// Where fixed-function GL cannot compute a term (energy-conserving Blinn-Phong's factor),
 /// the app says so and draws with phonglab's generated shader: compiled and linked in
 /// setup(), bound around the object in draw() with every uniform but GL's own matrices, the
@@ -95,6 +114,7 @@ fn what_gl_cannot_compute_is_drawn_by_the_generated_shader() {
         assert!(begin < object && object < end, "{name}");
         assert!(draw.contains("shader.setUniform1f(\"u_mat_shininess\", "), "{name}: {draw}");
         assert!(!draw.contains("u_eye_from_object"), "{name}: GL's own matrices are not set");
+        compatibility_glsl_compiles(&name, setup);
     }
     for (name, doc) in documents() {
         let files = app(&doc, &phonglab_core::export::shaded_key(&doc)).unwrap();

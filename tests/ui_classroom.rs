@@ -318,30 +318,49 @@ fn the_lobe_follows_the_shininess() {
 }
 
 /// Energy-conserving Blinn-Phong, reached with the key B: the lobe draws its curve (heavy,
-/// the scene's own) beside Blinn-Phong's (thin now), in the legend's row, inside the
-/// window; B once more goes back round to Blinn-Phong.
+/// the scene's own) beside Blinn-Phong's (thin now), its legend entry after Blinn-Phong's
+/// and whole in the lobe's column (left of the worked calculation), the rays' entries on a
+/// row under the curves, at 1024x600 and 1280x720; B once more goes back round to
+/// Blinn-Phong.
 #[test]
 fn the_lobe_draws_normalised_blinn_phong_when_it_is_the_scenes() {
     use phonglab_core::SpecularModel;
-    let mut h = harness_at(1440.0, 900.0);
-    h.get_by_label("Reflection lobe").click();
-    h.run_steps(2);
-    assert!(h.query_by_label_contains("normalised Blinn-Phong ks").is_none(), "only where it is the scene's");
-    for _ in 0..2 {
+    for (width, height) in [(1024.0, 600.0), (1280.0, 720.0)] {
+        let mut h = harness_at(width, height);
+        h.get_by_label("Reflection lobe").click();
+        h.run_steps(2);
+        assert!(h.query_by_label_contains("Blinn-Phong × (n+8)/8π").is_none(), "only where it is the scene's");
+        for _ in 0..2 {
+            h.key_press(egui::Key::B);
+            h.run_steps(2);
+        }
+        assert_eq!(h.state().doc.scene.rules.specular, SpecularModel::BlinnPhongNormalised);
+        let normalised = h.get_by_label_contains("Blinn-Phong × (n+8)/8π").rect();
+        let blinn = h.get_by_label_contains("\u{2500}\u{2500}Blinn-Phong ks (N·H)^n").rect();
+        assert!(normalised.width() > 100.0 && normalised.height() > 8.0, "{width}: {normalised:?}");
+        let calculation = h.get_by_label("Worked calculation").rect();
+        assert!(
+            normalised.right() <= calculation.left() && normalised.bottom() <= height,
+            "{width}: {normalised:?} {calculation:?}"
+        );
+        // After Blinn-Phong's in the legend: to its right on its row, or on a row below.
+        assert!(
+            normalised.left() > blinn.right() || normalised.top() >= blinn.bottom(),
+            "{width}: {blinn:?} {normalised:?}"
+        );
+        // The rays' entries whole in the column too, on a row under the curves.
+        for ray in ["\u{2500}\u{2500}N", "\u{254C}\u{254C}L", "\u{2500}\u{2500}V"] {
+            let r = h.get_by_label(ray).rect();
+            assert!(
+                r.right() <= calculation.left() && r.top() >= normalised.bottom(),
+                "{width} {ray}: {r:?} {normalised:?}"
+            );
+        }
         h.key_press(egui::Key::B);
         h.run_steps(2);
+        assert_eq!(h.state().doc.scene.rules.specular, SpecularModel::BlinnPhong);
+        assert!(h.query_by_label_contains("Blinn-Phong × (n+8)/8π").is_none());
     }
-    assert_eq!(h.state().doc.scene.rules.specular, SpecularModel::BlinnPhongNormalised);
-    let normalised = h.get_by_label_contains("normalised Blinn-Phong ks (N·H)^n (n+8)/8π").rect();
-    let blinn = h.get_by_label_contains("\u{2500}\u{2500}Blinn-Phong ks (N·H)^n").rect();
-    assert!(normalised.width() > 100.0 && normalised.height() > 8.0, "{normalised:?}");
-    assert!(normalised.right() <= 1440.0 && normalised.bottom() <= 900.0, "{normalised:?}");
-    // After Blinn-Phong's in the legend: to its right on its row, or on a row below.
-    assert!(normalised.left() > blinn.right() || normalised.top() >= blinn.bottom(), "{blinn:?} {normalised:?}");
-    h.key_press(egui::Key::B);
-    h.run_steps(2);
-    assert_eq!(h.state().doc.scene.rules.specular, SpecularModel::BlinnPhong);
-    assert!(h.query_by_label_contains("normalised Blinn-Phong ks").is_none());
 }
 
 #[test]

@@ -897,7 +897,7 @@ lobe-axis = φ, degrees from N
 lobe-luminance = { $name } = { $value } (the luminance of { $colour })
 lobe-caption = Light { $light }: θ = { $theta }°, n = { $n }, { $kd }, { $ks }; the vertex's V at φ = { $phi }°
 lobe-diffuse = diffuse kd cos θ
-lobe-normalised = normalised Blinn-Phong ks (N·H)^n (n+8)/8π
+lobe-normalised = Blinn-Phong × (n+8)/8π
 lobe-vertex-v = the vertex's V
 
 ## compare

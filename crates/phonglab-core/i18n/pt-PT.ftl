@@ -897,7 +897,7 @@ lobe-axis = φ, graus a partir de N
 lobe-luminance = { $name } = { $value } (a luminância de { $colour })
 lobe-caption = Luz { $light }: θ = { $theta }°, n = { $n }, { $kd }, { $ks }; o V do vértice em φ = { $phi }°
 lobe-diffuse = difusa kd cos θ
-lobe-normalised = Blinn-Phong normalizado ks (N·H)^n (n+8)/8π
+lobe-normalised = Blinn-Phong × (n+8)/8π
 lobe-vertex-v = o V do vértice
 
 ## compare

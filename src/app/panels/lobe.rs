@@ -160,6 +160,9 @@ fn legend_ui(ui: &mut Ui, curves: &[Curve]) {
         for (name, c, _, on) in curves {
             legend_entry_ui(ui, if *on { Sample::Heavy } else { Sample::Solid }, "", name, *c);
         }
+        // The rays on a row of their own: at the end of the curves' row the last one was cut
+        // by the column's edge (N, at 1024x600 with four curves).
+        ui.end_row();
         for (name, c, sample) in
             [("N", palette::N, Sample::Solid), ("L", palette::L, Sample::Dashed), ("V", palette::V, Sample::Solid)]
         {

@@ -111,7 +111,8 @@ impl Syn {
 }
 
 /// The worked calculation's number of the first step of `kind` (for `light`).
-fn step_no(ex: &Explanation, kind: StepKind, light: Option<usize>) -> String {
+fn step_no(ex: &Explanation, kind: StepKind, light: Option<LightId>) -> String {
+    let light = light.map(LightId::index);
     match ex.steps.iter().position(|s| s.kind == kind && (light.is_none() || s.light == light)) {
         Some(k) => crate::t!("shader-step", n = (k + 1).to_string()),
         None => "".into(),
@@ -172,8 +173,7 @@ impl Body<'_> {
     /// A new variable `name = e`, with the worked calculation's step of `kind` (for `light`)
     /// and a note after it.
     fn var(&mut self, ty: &str, name: &str, e: &str, kind: StepKind, light: Option<LightId>, note: &str) {
-        let line =
-            format!("{} // {}{note}", self.s.var(ty, name, e), step_no(self.ex, kind, light.map(LightId::index)));
+        let line = format!("{} // {}{note}", self.s.var(ty, name, e), step_no(self.ex, kind, light));
         self.lines.push(line);
     }
 
@@ -395,7 +395,7 @@ impl Body<'_> {
         } else {
             format!("{scale}({terms})")
         };
-        let step = step_no(self.ex, StepKind::Contribution, Some(i.index()));
+        let step = step_no(self.ex, StepKind::Contribution, Some(i));
         self.lines.push(format!("sum{s} = sum{s} + {lit}; // {step}"));
         if let Some(spec) = specular {
             let lit = if self.program.has(Stage::ZeroNormals) {
