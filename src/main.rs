@@ -48,7 +48,10 @@ fn main() -> ExitCode {
                 let error = e.to_string();
                 eprintln!(
                     "phonglab: {}",
-                    phonglab_core::locale::tr_args("app-cannot-open-window", &[("error", error.into())])
+                    phonglab_core::escape::terminal::lines(&phonglab_core::locale::tr_args(
+                        "app-cannot-open-window",
+                        &[("error", error.into())]
+                    ))
                 );
                 ExitCode::from(1)
             }

@@ -455,3 +455,66 @@ fn a_planted_journal_deletes_and_moves_nothing_for_any_command() {
         assert!(e.contains(".phonglab-set.journal") && e.contains("was left as it is"), "{name}: {e}");
     }
 }
+
+/// A file that merely has a set's kind of name is the user's: a new set replaces the files
+/// of its own names, and removes an earlier set's file it lacks only when phonglab wrote
+/// that file and it is unchanged since (the folder's list of what the last set wrote).
+#[test]
+fn a_file_named_like_a_sets_is_kept_unless_phonglab_wrote_it() {
+    let root = folder("named-like");
+    // cost: `heat-notes.png` is the user's, never written by phonglab.
+    let cost = root.join("cost");
+    std::fs::create_dir_all(&cost).unwrap();
+    std::fs::write(cost.join("heat-notes.png"), "mine").unwrap();
+    std::fs::write(cost.join("heat-.png"), "mine too").unwrap();
+    let o = phonglab(&["cost", "--quick", "--size", "16", "--object", "cylinder", "--out", s(&cost)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(std::fs::read(cost.join("heat-notes.png")).unwrap(), b"mine");
+    assert_eq!(std::fs::read(cost.join("heat-.png")).unwrap(), b"mine too");
+    // exercise: a set of three, then one; the user's exercise-99.md stays, the earlier set's
+    // exercise-02.md goes (phonglab wrote it), exercise-03.md stays (the user changed it).
+    let sheets = root.join("sheets");
+    std::fs::create_dir_all(&sheets).unwrap();
+    std::fs::write(sheets.join("exercise-99.md"), "my notes").unwrap();
+    let o = phonglab(&["exercise", "--count", "3", "--out", s(&sheets)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(sheets.join("exercise-02.md").exists() && sheets.join("exercise-03.md").exists());
+    std::fs::write(sheets.join("exercise-03.md"), "my answers").unwrap();
+    let o = phonglab(&["exercise", "--count", "1", "--out", s(&sheets)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(std::fs::read(sheets.join("exercise-99.md")).unwrap(), b"my notes");
+    assert!(!sheets.join("exercise-02.md").exists(), "phonglab's own earlier file goes");
+    assert_eq!(std::fs::read(sheets.join("exercise-03.md")).unwrap(), b"my answers");
+    assert!(sheets.join("exercise-01.md").exists());
+}
+
+/// A set's folder planted as a link (an openFrameworks project's `src` pointing elsewhere)
+/// is refused before anything is written: nothing lands outside the folder named.
+#[test]
+fn a_sets_folder_that_is_a_link_is_refused_and_nothing_is_written_through_it() {
+    let root = folder("src-link");
+    let (other, project) = (root.join("other"), root.join("a"));
+    std::fs::create_dir_all(&other).unwrap();
+    std::fs::create_dir_all(&project).unwrap();
+    std::fs::write(other.join("ofApp.h"), "old").unwrap();
+    std::os::unix::fs::symlink("../other", project.join("src")).unwrap();
+    let o = phonglab(&["export", "--to", "openframeworks", "-o", s(&project)]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("link"), "{}", stderr(&o));
+    assert_eq!(std::fs::read(other.join("ofApp.h")).unwrap(), b"old");
+    let mut names: Vec<String> =
+        std::fs::read_dir(&other).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    names.sort();
+    assert_eq!(names, ["ofApp.h"]);
+}
+
+/// `screenshot`'s success line writes the file's name visibly, as every command does.
+#[test]
+fn screenshots_line_writes_the_name_visibly() {
+    let dir = folder("screenshot-name");
+    let out = dir.join("e\u{1b}]0;PWN\u{7}\u{1b}[31m\u{202e}x.png");
+    let o = phonglab(&["screenshot", "--size", "320x200", "-o", s(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!holds_control(&o.stderr), "{:?}", stderr(&o));
+    assert!(stderr(&o).contains("\\u{1B}]0;PWN\\u{7}"), "{}", stderr(&o));
+}

@@ -19,8 +19,9 @@
 //! whole in place) or one whose journal has (the new set whole across the folder and the
 //! staging folder): the next write of a set into the folder ([`recover`], under the
 //! folder's lock) finishes the swap, or throws the staging folder away. Files of the old
-//! set that the new one lacks (`exercise-07.md` after a set of five) go with the old set;
-//! other files are never touched. Two processes never swap sets in one folder at once:
+//! set that the new one lacks (`exercise-07.md` after a set of five) go with the old set
+//! only when phonglab wrote them and they are unchanged since (the folder's list of what
+//! the last set wrote, `set_journal::WRITTEN`); other files are never touched. Two processes never swap sets in one folder at once:
 //! each holds the folder's lock (Unix) while it writes.
 //!
 //! Recovery acts only on what phonglab itself wrote ([`super::set_journal`]): a journal,
@@ -98,6 +99,12 @@ const UNTOUCHED: &str = "write-kept-folder";
 /// is written. What a killed earlier writer left in `dir` is recovered first
 /// ([`recover`]); the messages returned name what was left as it is there.
 pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> Result<Vec<String>, WriteError> {
+    // A set is written into a real folder only: one planted as a link (an oF project's
+    // `src` pointing elsewhere) would send the set, and the old set's removal, outside it.
+    if std::fs::symlink_metadata(dir).is_ok_and(|m| m.file_type().is_symlink()) {
+        let e = io::Error::new(io::ErrorKind::InvalidInput, phonglab_core::t!("set-folder-is-a-link"));
+        return Err(WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED));
+    }
     std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED))?;
     let _lock = crate::platform::os::lock_folder(dir)
         .map_err(|e| WriteError::new(dir, "write-step-lock-folder", e, UNTOUCHED))?;
@@ -183,6 +190,11 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
         .map_err(|e| WriteError::new(dir, "write-step-remove-journal", e, "write-kept-recoverable"))?;
     step()?;
     let _ = std::fs::remove_dir(staging);
+    // The list of what this set wrote, for the next one (written whole; a failure or a
+    // kill before it only leaves this set's files for the next set to keep).
+    if let Ok(list) = serde_json::to_vec(&journal.new) {
+        let _ = super::atomic_write::write(&dir.join(super::set_journal::WRITTEN), &list);
+    }
     crate::platform::os::sync_folder(dir);
     Ok(())
 }
@@ -192,11 +204,17 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
 fn old_set(dir: &Path, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Result<Vec<Entry>, WriteError> {
     let entries =
         std::fs::read_dir(dir).map_err(|e| WriteError::new(dir, "write-step-list", e, "write-kept-folder"))?;
+    // A member of the old set that the new one lacks goes only when phonglab wrote it and
+    // it is unchanged since: a file that merely has a set's kind of name is never removed.
+    let written = super::set_journal::written_list(dir);
+    let ours = |name: &str| {
+        belongs(name) && written.iter().any(|e| e.name == name && super::set_journal::is_entry(&dir.join(name), e))
+    };
     let mut old = Vec::new();
     for entry in entries.flatten() {
         let Ok(name) = entry.file_name().into_string() else { continue };
         let is_file = entry.file_type().is_ok_and(|t| t.is_file());
-        if is_file && plain_name(&name) && (new.iter().any(|e| e.name == name) || belongs(&name)) {
+        if is_file && plain_name(&name) && (new.iter().any(|e| e.name == name) || ours(&name)) {
             old.push(
                 entry_of(dir, &name).map_err(|e| WriteError::new(&dir.join(&name), "write-step-list", e, UNTOUCHED))?,
             );

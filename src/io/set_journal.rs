@@ -44,6 +44,11 @@ const JOURNAL_TMP: &str = ".phonglab-set.journal.tmp";
 /// The largest journal read: a set of a thousand files takes about 200 KB.
 const MAX_JOURNAL_BYTES: u64 = 1 << 20;
 
+/// The list of the files the last set written into a folder holds, each with its identity,
+/// size and hash (the journal's `new`): the next set removes a file it lacks only when this
+/// list names it and the file is still exactly what phonglab wrote.
+pub const WRITTEN: &str = ".phonglab-set.written";
+
 /// What makes a file or folder itself: device, inode and birth time (seconds and
 /// nanoseconds, where the file system keeps it).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -128,7 +133,7 @@ pub fn entry_of(folder: &Path, name: &str) -> io::Result<Entry> {
 }
 
 /// Is the file at `path` exactly the one `entry` names (identity, size and hash)?
-fn is_entry(path: &Path, entry: &Entry) -> bool {
+pub fn is_entry(path: &Path, entry: &Entry) -> bool {
     let Ok(meta) = std::fs::symlink_metadata(path) else { return false };
     if !meta.is_file() || Identity::of(&meta) != entry.id || meta.len() != entry.size {
         return false;
@@ -260,6 +265,23 @@ pub fn recover_locked(dir: &Path) -> io::Result<Vec<String>> {
     }
     crate::platform::os::sync_folder(dir);
     Ok(notices)
+}
+
+/// The files of the last set phonglab wrote into `dir`, as its list names them: empty when
+/// there is no list, or it is not a regular file, too large or unreadable (then nothing
+/// beyond the new set's own names is replaced).
+pub fn written_list(dir: &Path) -> Vec<Entry> {
+    let path = dir.join(WRITTEN);
+    let Ok(meta) = std::fs::symlink_metadata(&path) else { return Vec::new() };
+    if !meta.is_file() || meta.len() > MAX_JOURNAL_BYTES {
+        return Vec::new();
+    }
+    let Ok(file) = std::fs::File::open(&path) else { return Vec::new() };
+    let mut bytes = Vec::new();
+    if file.take(MAX_JOURNAL_BYTES).read_to_end(&mut bytes).is_err() {
+        return Vec::new();
+    }
+    serde_json::from_slice::<Vec<Entry>>(&bytes).unwrap_or_default()
 }
 
 /// Removes `staging` when it holds nothing but, at most, an empty aside folder (a writer

@@ -1139,6 +1139,7 @@ write-kept-nothing = nothing was written
 write-kept-folder = the folder is unchanged
 write-kept-recoverable = the old set or the new one is whole, and the next run in this folder finishes what was started
 write-not-a-regular-file = not a regular file (a link to nothing, a folder, a device or a pipe): phonglab writes only a regular file or a new one
+set-folder-is-a-link = a link to another folder: phonglab writes a set of files only into a real folder, never through a link
 set-left-alone = { $name } in { $dir } was left as it is: { $why }
 set-why-loose-journal = a journal phonglab did not write there (planted, or left by an older phonglab); nothing it names was touched
 set-why-not-a-folder = it is named like phonglab's staging folders but is not a folder phonglab made; nothing was followed or touched

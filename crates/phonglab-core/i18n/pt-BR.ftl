@@ -1139,6 +1139,7 @@ write-kept-nothing = nada foi escrito
 write-kept-folder = a pasta não mudou
 write-kept-recoverable = o conjunto antigo ou o novo está completo, e a próxima execução nesta pasta termina o que foi começado
 write-not-a-regular-file = não é um arquivo comum (um link para nada, uma pasta, um dispositivo ou um pipe): o phonglab só escreve em um arquivo comum ou em um novo
+set-folder-is-a-link = um link para outra pasta: o phonglab só grava um conjunto de arquivos em uma pasta de verdade, nunca por meio de um link
 set-left-alone = { $name } em { $dir } ficou como estava: { $why }
 set-why-loose-journal = um diário que o phonglab não escreveu ali (colocado por alguém, ou deixado por uma versão antiga do phonglab); nada do que ele nomeia foi tocado
 set-why-not-a-folder = tem o nome das pastas temporárias do phonglab, mas não é uma pasta criada pelo phonglab; nada foi seguido nem tocado

@@ -144,18 +144,19 @@ pub fn run(a: &Shot) -> Result<()> {
         .collect();
     let sides: Vec<String> = g.pictures.iter().map(|r| format!("{:.0}", r.width().min(r.height()))).collect();
     let none = phonglab_core::t!("screenshot-none");
+    // The file name is the user's: its controls written visibly, never sent to the terminal.
     eprintln!(
         "{}",
-        phonglab_core::t!(
+        phonglab_core::escape::terminal::lines(&phonglab_core::t!(
             "screenshot-summary",
-            path = a.output.display().to_string(),
+            path = crate::io::reasons::shown(&a.output),
             width = pw,
             height = ph,
             pictures = if sides.is_empty() { none.clone() } else { sides.join(" + ") },
             circle = g.plot.as_ref().map_or(none, |p| format!("{:.0}", 2.0 * p.unit)),
             empty =
                 format!("{:.0}", 100.0 * empty_share(&rgba, pw, ph, bg, (16.0 * a.scale).round() as usize, &pictures))
-        )
+        ))
     );
     Ok(())
 }
