@@ -405,6 +405,8 @@ fn read_dir_sorted(dir: &std::path::Path) -> Vec<(String, Vec<u8>)> {
         .unwrap()
         .map(|e| e.unwrap().path())
         .map(|p| (p.file_name().unwrap().to_string_lossy().into_owned(), std::fs::read(&p).unwrap()))
+        // phonglab's list of what the set wrote names identities: not the set's own bytes.
+        .filter(|(n, _)| !n.starts_with(".phonglab-set"))
         .collect();
     v.sort();
     v

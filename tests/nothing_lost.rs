@@ -26,6 +26,8 @@ fn listing(dir: &Path) -> Vec<(String, Vec<u8>)> {
             let bytes = if e.path().is_file() { std::fs::read(e.path()).unwrap() } else { b"<folder>".to_vec() };
             (e.file_name().to_string_lossy().into_owned(), bytes)
         })
+        // phonglab's list of what a set wrote names identities (inodes), not a user's bytes.
+        .filter(|(n, _)| n != ".phonglab-set.written")
         .collect();
     v.sort();
     v

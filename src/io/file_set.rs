@@ -183,6 +183,9 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
     write_journal(staging, &journal, true).map_err(|(what, e)| WriteError::new(dir, what, e, UNTOUCHED))?;
     step()?;
     swap(dir, staging, &journal)?;
+    // The list of what this set wrote, for the next one, while the journal still stands (a
+    // kill before it is finished by the recovery, which writes it too).
+    super::set_journal::write_written_list(dir, &journal.new);
     // The old files first, with the journal still there: a kill now is finished by the
     // next run, and one after leaves an empty folder, which the next run removes.
     std::fs::remove_dir_all(staging.join(ASIDE))
@@ -190,11 +193,6 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
         .map_err(|e| WriteError::new(dir, "write-step-remove-journal", e, "write-kept-recoverable"))?;
     step()?;
     let _ = std::fs::remove_dir(staging);
-    // The list of what this set wrote, for the next one (written whole; a failure or a
-    // kill before it only leaves this set's files for the next set to keep).
-    if let Ok(list) = serde_json::to_vec(&journal.new) {
-        let _ = super::atomic_write::write(&dir.join(super::set_journal::WRITTEN), &list);
-    }
     crate::platform::os::sync_folder(dir);
     Ok(())
 }
@@ -273,15 +271,23 @@ impl fmt::Display for FileSet {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::io::atomic_write::tests::{FAULTS, listing, temp_dir};
+    use crate::io::atomic_write::tests::{FAULTS, temp_dir};
     use crate::io::atomic_write::with_fault;
 
+    /// The old set, written by phonglab (so its files are the next set's to replace or
+    /// remove), and a file of the user's.
     fn old_set(dir: &Path) {
-        for (n, b) in
-            [("a.md", "old a"), ("b.md", "old b"), ("c.md", "old c, not in the new set"), ("mine.txt", "user")]
-        {
-            std::fs::write(dir.join(n), b).unwrap();
+        let mut old = FileSet::default();
+        for (n, b) in [("a.md", "old a"), ("b.md", "old b"), ("c.md", "old c, not in the new set")] {
+            old.add(n, b);
         }
+        write_set(dir, &old, |n| n.ends_with(".md")).unwrap();
+        std::fs::write(dir.join("mine.txt"), "user").unwrap();
+    }
+
+    /// The folder as a user sees it: its files, without phonglab's own records.
+    fn listing(dir: &Path) -> Vec<(String, Vec<u8>)> {
+        user_files(dir)
     }
 
     fn new_set() -> FileSet {
@@ -295,7 +301,10 @@ mod tests {
     /// What the folder holds for a user: its files, without the staging folders a writer
     /// works with.
     fn user_files(dir: &Path) -> Vec<(String, Vec<u8>)> {
-        listing(dir).into_iter().filter(|(n, _)| !n.starts_with(".phonglab-set")).collect()
+        crate::io::atomic_write::tests::listing(dir)
+            .into_iter()
+            .filter(|(n, _)| !n.starts_with(".phonglab-set"))
+            .collect()
     }
 
     /// The staging folder in `dir` and its journal, if a writer left one.

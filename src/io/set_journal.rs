@@ -324,7 +324,16 @@ fn finish(dir: &Path, staging: &Path, j: &Journal) -> Result<(), String> {
         return Err(t!("set-why-unfinished", names = names));
     }
     let _ = std::fs::remove_dir_all(staging);
+    write_written_list(dir, &j.new);
     Ok(())
+}
+
+/// Records, whole, the files a set wrote into `dir` ([`WRITTEN`]); a failure only leaves
+/// them for the next set to keep.
+pub fn write_written_list(dir: &Path, new: &[Entry]) {
+    if let Ok(list) = serde_json::to_vec(new) {
+        let _ = super::atomic_write::write(&dir.join(WRITTEN), &list);
+    }
 }
 
 /// Writes `bytes` as a new file `name` in the staging folder: created exclusively (never
