@@ -71,6 +71,10 @@ fn so_it_does_for_the_shipped_scenes() {
         let doc = phonglab_core::Document::from_toml(&std::fs::read_to_string(root.join(f)).unwrap()).unwrap();
         docs.push((f.to_string(), doc));
     }
+    // Energy-conserving Blinn-Phong (the normalised factor in the WGSL) on the spotlight.
+    let mut normalised = docs[0].1.clone();
+    normalised.scene.rules.specular = phonglab_core::SpecularModel::BlinnPhongNormalised;
+    docs.push(("spotlight, normalised Blinn-Phong".into(), normalised));
     // Two-sided lighting on the open cylinder, whose inside shows.
     let mut two = docs[0].1.clone();
     two.scene.light_model.two_sided = true;
