@@ -248,6 +248,9 @@ fn the_marks_names_keep_clear_and_no_vector_is_told_by_colour_alone() {
         assert!(dots.len() >= 3, "the eye, the light, the vertex: {dots:?}");
         let names: Vec<egui::Rect> =
             ["eye", "light 0", "vertex"].iter().map(|n| h.get_by_role_and_label(Role::Label, n).rect()).collect();
+        // The legend stays below the picture (the names are placed without moving it).
+        let legend = h.get_by_label_contains("Drag a light or the eye").rect();
+        assert!(legend.min.y >= picture.max.y - 0.5, "{w}x{hgt}: the legend {legend:?} under {picture:?}");
         for (i, a) in names.iter().enumerate() {
             assert!(picture.contains_rect(*a), "{w}x{hgt}: {a:?} inside {picture:?}");
             for d in &dots {

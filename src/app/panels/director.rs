@@ -235,7 +235,8 @@ fn mark_names_ui(ui: &mut Ui, rect: Rect, named: &[(Pos2, String, Color32)]) {
         .collect();
     for (((_, name, c), g), r) in named.iter().zip(galleys).zip(place(&wanted, &dots, rect.shrink(2.0))) {
         let label = egui::Label::new(egui::RichText::new(name).font(font.clone()).color(*c)).selectable(false);
-        ui.put(Rect::from_min_size(r.min, g.size()), label);
+        // (Placed: the cursor stays below the picture, where the legend goes.)
+        ui.place(Rect::from_min_size(r.min, g.size()), label);
     }
 }
 
