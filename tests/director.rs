@@ -232,14 +232,23 @@ fn on_the_object_the_eye_drag_turns_the_orbit_camera() {
 /// colour alone.
 #[test]
 fn the_marks_names_keep_clear_and_no_vector_is_told_by_colour_alone() {
-    for (w, hgt) in [(1024.0, 600.0), (1280.0, 720.0), (1920.0, 1080.0)] {
-        let mut h = Harness::builder()
-            .with_size([w, hgt])
-            .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
-        h.state_mut().director.open = true;
+    let worksheet = Document::default;
+    let cases = [
+        (1024.0, 600.0, worksheet(), Space::World),
+        (1280.0, 720.0, worksheet(), Space::World),
+        (1920.0, 1080.0, worksheet(), Space::World),
+        // mview3 in eye space: the light's name fell on the near plane's square.
+        (1280.0, 720.0, doc("worksheet-mview3.toml"), Space::Eye),
+    ];
+    for (w, hgt, d, space) in cases {
+        let mut state = AppState::worksheet();
+        state.doc = d;
+        state.director.open = true;
+        state.director.space = space;
+        let mut h = Harness::builder().with_size([w, hgt]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
         h.run_steps(3);
         let picture = h.get_by_role_and_label(Role::Image, "Director's view").rect();
-        let st = stage_of(&h.state().doc, Space::World);
+        let st = stage_of(&h.state().doc, space);
         let dots: Vec<egui::Pos2> = st
             .marks
             .iter()
@@ -248,8 +257,28 @@ fn the_marks_names_keep_clear_and_no_vector_is_told_by_colour_alone() {
         assert!(dots.len() >= 3, "the eye, the light, the vertex: {dots:?}");
         let names: Vec<egui::Rect> =
             ["eye", "light 0", "vertex"].iter().map(|n| h.get_by_role_and_label(Role::Label, n).rect()).collect();
+        // The legend stays below the picture (the names are placed without moving it).
+        let legend = h.get_by_label_contains("Drag a light or the eye").rect();
+        assert!(legend.min.y >= picture.max.y - 0.5, "{w}x{hgt}: the legend {legend:?} under {picture:?}");
+        // The eye's frustum and near plane, and the vectors at the vertex, as drawn.
+        let drawn: Vec<phonglab::app::widgets::label_placement::Segment> = st
+            .segments
+            .iter()
+            .filter(|s| matches!(s.kind, Kind::Frustum | Kind::Viewport | Kind::Eye | Kind::Normal | Kind::ToEye))
+            .filter_map(|s| {
+                let d = &h.state().director;
+                let at = |p| phonglab::app::panels::director::screen_point(picture, &st, d, p);
+                Some(phonglab::app::widgets::label_placement::Segment { a: at(s.a)?, b: at(s.b)?, half_width: 0.5 })
+            })
+            .collect();
         for (i, a) in names.iter().enumerate() {
             assert!(picture.contains_rect(*a), "{w}x{hgt}: {a:?} inside {picture:?}");
+            for s in &drawn {
+                assert!(
+                    !phonglab::app::widgets::label_placement::touches(*a, s),
+                    "{w}x{hgt}: name {i} at {a:?} on {s:?}"
+                );
+            }
             for d in &dots {
                 let gap = egui::Rect::from_center_size(*d, egui::vec2(10.0, 10.0));
                 assert!(!a.intersects(gap), "{w}x{hgt}: name {i} at {a:?} covers the dot at {d:?}");

@@ -12,6 +12,7 @@ use phonglab_core::director::{self, Kind, Space, Stage};
 use phonglab_core::transform::{of_camera_distance, perspective};
 use phonglab_core::{Document, Framing, Scene, locale, t};
 
+use crate::app::widgets::label_placement::Segment;
 use crate::app::widgets::palette;
 
 /// The window's switch, the space shown, and the director's own camera.
@@ -181,9 +182,16 @@ fn director_ui(ui: &mut Ui, d: &mut DirectorState, doc: &Document, side: f32) ->
     let ink = ui.visuals().text_color();
     // The lights' yellow, darkened where the theme is light.
     let light = palette::ink(ui, palette::SPOT);
+    // The lines the marks' names keep clear of: all but the object's mesh and the
+    // lights' rings and cones (too many to leave room).
+    let mut lines = Vec::new();
     for s in &st.segments {
         if let (Some(a), Some(b)) = (proj.screen(s.a), proj.screen(s.b)) {
             let stroke = stroke_of(s.kind, ink, light, bg);
+            if !matches!(s.kind, Kind::Object | Kind::Ring(..) | Kind::Cone(..)) {
+                let half_width = stroke.width * 0.5 + 1.0;
+                lines.push(crate::app::widgets::label_placement::Segment { a, b, half_width });
+            }
             match pattern_of(s.kind) {
                 Some((dash, gap)) => {
                     painter.extend(egui::Shape::dashed_line(&[a, b], stroke, dash, gap));
@@ -211,31 +219,39 @@ fn director_ui(ui: &mut Ui, d: &mut DirectorState, doc: &Document, side: f32) ->
             _ => (t!("director-vertex"), ink),
         };
         painter.circle_filled(at, 5.0, colour);
-        named.push((at, name, colour));
+        // The name at a text's contrast on the picture (the lights' yellow is a symbol's).
+        named.push((at, name, palette::ink_with_contrast(colour, bg, palette::TEXT_CONTRAST)));
     }
-    mark_names_ui(ui, rect, &named);
+    mark_names_ui(ui, rect, &named, &lines);
     let marks = Marks { lights: &light_marks, eye: eye_mark };
     let changed = drag_ui(ui, d, doc, &scene, &st, &proj, &resp, &marks);
     legend_ui(ui, &st);
     changed
 }
 
-/// The marks' names (the eye, each light, the vertex), each beside its dot and clear of
-/// every dot and of each other (a light far behind the eye projects near it), as labels.
-fn mark_names_ui(ui: &mut Ui, rect: Rect, named: &[(Pos2, String, Color32)]) {
-    use crate::app::widgets::label_placement::{Segment, Wanted, place};
+/// The marks' names (the eye, each light, the vertex), each beside its dot, clear of every
+/// dot, of the lines drawn (`lines`) and of each other (a light far behind the eye projects
+/// near it), as labels on a backdrop of the picture's colour.
+fn mark_names_ui(ui: &mut Ui, rect: Rect, named: &[(Pos2, String, Color32)], lines: &[Segment]) {
+    use crate::app::widgets::label_placement::{Wanted, place};
     let font = egui::TextStyle::Small.resolve(ui.style());
     let galleys: Vec<_> =
         named.iter().map(|(_, name, c)| ui.painter().layout_no_wrap(name.clone(), font.clone(), *c)).collect();
-    let dots: Vec<Segment> = named.iter().map(|(at, ..)| Segment { a: *at, b: *at, half_width: 6.0 }).collect();
+    let mut keep_clear: Vec<Segment> =
+        named.iter().map(|(at, ..)| Segment { a: *at, b: *at, half_width: 6.0 }).collect();
+    keep_clear.extend_from_slice(lines);
     let wanted: Vec<Wanted> = named
         .iter()
         .zip(&galleys)
         .map(|((at, ..), g)| Wanted { anchor: *at, direction: egui::vec2(1.0, -1.0), size: g.size(), gap: 4.0 })
         .collect();
-    for (((_, name, c), g), r) in named.iter().zip(galleys).zip(place(&wanted, &dots, rect.shrink(2.0))) {
+    let backdrop = ui.visuals().extreme_bg_color.gamma_multiply(0.85);
+    for (((_, name, c), g), r) in named.iter().zip(galleys).zip(place(&wanted, &keep_clear, rect.shrink(2.0))) {
+        let r = Rect::from_min_size(r.min, g.size());
+        ui.painter().rect_filled(r.expand(1.0), 2.0, backdrop);
         let label = egui::Label::new(egui::RichText::new(name).font(font.clone()).color(*c)).selectable(false);
-        ui.put(Rect::from_min_size(r.min, g.size()), label);
+        // (Placed: the cursor stays below the picture, where the legend goes.)
+        ui.place(r, label);
     }
 }
 
