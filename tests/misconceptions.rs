@@ -192,3 +192,23 @@ fn tick_boxes(pdf: &std::path::Path, page: usize) -> usize {
     }
     boxes
 }
+
+/// `--lang pt-PT exercise --level 5`: the sheets and keys are in Portuguese through and
+/// through, the mistaken formulas' words included ("lit per vertex", "everywhere",
+/// "measured in object space" were left in English).
+#[test]
+fn level_five_in_portuguese_has_no_english_words() {
+    let out = std::env::temp_dir().join(format!("phonglab-wrong-pt-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    let o = common::phonglab(&["--lang", "pt-PT", "exercise", "--level", "5", "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for pdf in ["sheets.pdf", "keys.pdf"] {
+        let text = std::process::Command::new("pdftotext").arg(out.join(pdf)).arg("-").output().unwrap();
+        let text = String::from_utf8_lossy(&text.stdout).to_string();
+        for english in ["lit per", "interpolated", "everywhere", "measured in", "object space", "eye space", "only where"] {
+            assert!(!text.contains(english), "{pdf}: {english:?} in\n{text}");
+        }
+        assert!(text.contains("espaço do objeto"), "{pdf}: {text}");
+    }
+    let _ = std::fs::remove_dir_all(&out);
+}
