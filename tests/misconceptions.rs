@@ -61,7 +61,13 @@ fn level_five_prints_the_pictures() {
         assert!(page.contains(&format!("What is wrong with this picture? ({})", k + 1)), "page {}: {page}", k + 1);
         assert!(!page.contains("blank"), "page {}: {page}", k + 1);
         assert_eq!(tick_boxes(&out.join("sheets.pdf"), k + 1), 7, "page {}", k + 1);
+        // Numbered in the document, as a viewer and a printer count (each said "page 1 of 1").
+        assert!(page.contains(&format!("page {} of 7", k + 1)), "page {}: {page}", k + 1);
     }
+    // The index says how to print what is there: one page an exercise, no blank backs, so
+    // not "on both sides".
+    let index = std::fs::read_to_string(out.join("index.md")).unwrap();
+    assert!(index.contains("printed on one side") && !index.contains("both sides"), "{index}");
     // The same seed, the same files.
     let again = std::env::temp_dir().join(format!("phonglab-wrong-again-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&again);

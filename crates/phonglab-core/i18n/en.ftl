@@ -1007,6 +1007,7 @@ exercise-effect-several-lights = several lights
 index-title = Exercises, seed { $seed }
 index-intro = Effects: { $effects }. Rules: { $rules }. Each sheet has its scene file (open it in phonglab) and its answers.
 index-printable = To print: [sheets.pdf](sheets.pdf) (to hand out: print it on both sides, and each exercise is its own sheet of paper) and [keys.pdf](keys.pdf) (the answers, for the teacher).
+index-printable-one-sided = To print: [sheets.pdf](sheets.pdf) (to hand out: one page an exercise, so printed on one side each exercise is its own sheet of paper) and [keys.pdf](keys.pdf) (the answers, for the teacher).
 
 ## pdf
 

@@ -1007,6 +1007,7 @@ exercise-effect-several-lights = várias luzes
 index-title = Exercícios, semente { $seed }
 index-intro = Efeitos: { $effects }. Regras: { $rules }. Cada ficha tem o seu ficheiro de cena (abre-o no phonglab) e as suas respostas.
 index-printable = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir: impresso frente e verso, cada exercício fica na sua própria folha) e [keys.pdf](keys.pdf) (as respostas, para o professor).
+index-printable-one-sided = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir: uma página por exercício, por isso impresso só de um lado cada exercício fica na sua própria folha) e [keys.pdf](keys.pdf) (as respostas, para o professor).
 
 ## pdf
 
