@@ -296,7 +296,7 @@ refused-kept = Refused: { $error }. The scene keeps its last valid value.
 history-reset = reset to the worksheet
 reset-done = Reset to the worksheet (mview5).
 history-open = open { $what }
-loaded = Loaded { $what }.
+loaded = Opened “{ $what }”
 undid = Undid: { $what }.
 redid = Redid: { $what }.
 history-no-change = no change
@@ -528,6 +528,7 @@ side = Side:
 not-applicable = n/a
 skipped-by-specialised = skipped by the specialised evaluator: { $why }
 plot-view = View:
+plot-legend-halfway = halfway
 plot-view-hover = Look at the { $plane } plane
 
 ## view

@@ -128,7 +128,7 @@ mesh-too-large-to-keep = comprimida, tem { $packed } caracteres, e a página gua
 mesh-not-restored = Não foi possível ler de novo a malha { $name } que esta página guardou ({ $why }): abra-a de novo.
 quiz = Teste
 quiz-hover = Cada valor do cálculo atrás de um campo: digite-os passo a passo
-shader = Shader
+shader = Programa de sombreamento (shader)
 shader-hover = O programa GLSL ou WGSL em que esta cena se compila: só as etapas de que precisa
 precision = Precisão:
 f32-hover = Calcular em precisão simples, como o OpenGL
@@ -296,7 +296,7 @@ refused-kept = Recusado: { $error }. A cena mantém o último valor válido.
 history-reset = voltar à ficha
 reset-done = De volta à ficha (mview5).
 history-open = abrir { $what }
-loaded = Aberto: { $what }.
+loaded = Aberto: “{ $what }”
 undid = Desfeito: { $what }.
 redid = Refeito: { $what }.
 history-no-change = sem alteração
@@ -528,6 +528,7 @@ side = Face:
 not-applicable = não se aplica
 skipped-by-specialised = pulado pelo avaliador especializado: { $why }
 plot-view = Vista:
+plot-legend-halfway = vetor médio
 plot-view-hover = Ver o plano { $plane }
 
 ## view

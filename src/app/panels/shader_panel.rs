@@ -179,7 +179,7 @@ pub fn shader_window_ui(ctx: &egui::Context, state: &mut ShaderState, doc: &Docu
     let mut open = state.open;
     // Over the centre and the calculation, leaving the controls free to toggle effects.
     let at = ctx.content_rect().right_top() + egui::vec2(-640.0, 70.0);
-    egui::Window::new("Shader").open(&mut open).default_size([620.0, 560.0]).default_pos(at).show(ctx, |ui| {
+    egui::Window::new(phonglab_core::t!("shader")).open(&mut open).default_size([620.0, 560.0]).default_pos(at).show(ctx, |ui| {
         ui.horizontal_wrapped(|ui| {
             let before = state.wgsl;
             ui.radio_value(&mut state.wgsl, false, "GLSL 3.30");
