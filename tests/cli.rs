@@ -508,7 +508,10 @@ fn the_pdfs_are_typeset_sheets_to_hand_out_and_keys_for_the_teacher() {
         assert!(count >= 2 && count.is_multiple_of(2), "exercise {k}: {count} pages");
         for n in 1..=count {
             let t = &pages[page + n - 1];
-            assert!(t.contains(&title) && t.contains(&format!("page {} of {}", page + n, pages.len())), "exercise {k} page {n}:\n{t}");
+            assert!(
+                t.contains(&title) && t.contains(&format!("page {} of {}", page + n, pages.len())),
+                "exercise {k} page {n}:\n{t}"
+            );
         }
     }
     assert!(pages.len().is_multiple_of(2), "{} pages", pages.len());

@@ -211,7 +211,9 @@ fn level_five_in_portuguese_has_no_english_words() {
     for pdf in ["sheets.pdf", "keys.pdf"] {
         let text = std::process::Command::new("pdftotext").arg(out.join(pdf)).arg("-").output().unwrap();
         let text = String::from_utf8_lossy(&text.stdout).to_string();
-        for english in ["lit per", "interpolated", "everywhere", "measured in", "object space", "eye space", "only where"] {
+        for english in
+            ["lit per", "interpolated", "everywhere", "measured in", "object space", "eye space", "only where"]
+        {
             assert!(!text.contains(english), "{pdf}: {english:?} in\n{text}");
         }
         assert!(text.contains("espaço do objeto"), "{pdf}: {text}");

@@ -9,7 +9,8 @@ use phonglab_core::t;
 use phonglab_core::transform::{mat4_from_rows, mat4_rows};
 use phonglab_core::vocabulary::Quantity as Q;
 use phonglab_core::{
-    CameraSpec, Document, Light, LightPlacement, MAX_LIGHTS, Material, NormalMode, RuleSet, Rules, SpecularModel, materials,
+    CameraSpec, Document, Light, LightPlacement, MAX_LIGHTS, Material, NormalMode, RuleSet, Rules, SpecularModel,
+    materials,
 };
 
 use crate::app::widgets::fields::{color_ui, number_ui, slider_ui, vec3_ui, vec4_ui};
