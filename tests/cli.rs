@@ -503,13 +503,17 @@ fn the_pdfs_are_typeset_sheets_to_hand_out_and_keys_for_the_teacher() {
         let title = format!("exercise {k} (seed 5)");
         let page = pages.iter().position(|t| t.contains(&title)).unwrap();
         assert!(pages[page].trim_start().starts_with(&title), "exercise {k} opens page {}", page + 1);
-        // Each page of it names it in the footer and counts its pages, an even number (a
-        // blank back page where needed), so that printed on both sides it is its own paper.
+        // Each page of it names it in the footer, numbered in the whole document; it has an
+        // even number of pages (a blank back page where needed), so that printed on both
+        // sides it is its own paper.
         let count = pages.iter().filter(|t| t.contains(&title)).count();
         assert!(count >= 2 && count.is_multiple_of(2), "exercise {k}: {count} pages");
         for n in 1..=count {
             let t = &pages[page + n - 1];
-            assert!(t.contains(&title) && t.contains(&format!("page {n} of {count}")), "exercise {k} page {n}:\n{t}");
+            assert!(
+                t.contains(&title) && t.contains(&format!("page {} of {}", page + n, pages.len())),
+                "exercise {k} page {n}:\n{t}"
+            );
         }
     }
     assert!(pages.len().is_multiple_of(2), "{} pages", pages.len());

@@ -167,7 +167,7 @@ fn the_window_in_portuguese_shows_no_english_message() {
     h.run_steps(3);
     seen.extend(labels(&h));
     h.get_by_label("Fechar a comparação").click();
-    common::menu_item(&mut h, &["Ver"], "Shader");
+    common::menu_item(&mut h, &["Ver"], "Programa de sombreamento (shader)");
     h.run_steps(3);
     seen.extend(labels(&h));
     let leaks: BTreeSet<&String> = seen.iter().filter(|l| english.contains(*l)).collect();
@@ -184,6 +184,9 @@ fn the_window_in_portuguese_shows_no_english_message() {
     for pt in ["Luzes", "Cor do vértice", "Pontuação: 0 de 14 (0 respondidos)", "Material: brilho (ns)"] {
         assert!(seen.iter().any(|l| l.contains(pt)), "{pt} on screen");
     }
+    // The plot's legend names H as the sheets do (it said "halfway"); the Shader window's title.
+    assert!(seen.iter().any(|l| l.ends_with("Hvetor médio")), "H's name in the legend");
+    assert!(!seen.iter().any(|l| l == "Shader" || l.ends_with("Hhalfway")), "Shader or H halfway on screen");
     // Numbers in Portuguese use the decimal comma: the shininess field shows 25,6.
     assert!(seen.iter().any(|l| l == "25,6"), "the shininess as 25,6");
 }
@@ -209,4 +212,20 @@ fn switching_the_language_in_the_app_takes_effect_at_once() {
     // Kept across restarts with the layout.
     let back = phonglab::app::shell::layout::Layout::from_ron(Some(&h.state().ui.layout.to_ron()));
     assert_eq!(back.language.as_deref(), Some("pt-BR"));
+}
+
+/// "Loaded" a title that starts with a capital and ends with a full stop read "Loaded The
+/// local viewer, on and off.." in English: the title is quoted, in each language's quotes.
+#[test]
+fn the_loaded_message_quotes_the_title() {
+    use phonglab_core::locale::Arg;
+    let what = "The local viewer, on and off.";
+    for (lang, want) in [
+        (Lang::En, "Opened “The local viewer, on and off.”"),
+        (Lang::PtPt, "Aberto: «The local viewer, on and off.»"),
+        (Lang::PtBr, "Aberto: “The local viewer, on and off.”"),
+    ] {
+        let got = tr_in(lang, "loaded", &[("what", Arg::from(what))]);
+        assert_eq!(got.replace(['\u{2068}', '\u{2069}'], ""), want, "{lang:?}");
+    }
 }

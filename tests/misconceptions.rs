@@ -61,7 +61,13 @@ fn level_five_prints_the_pictures() {
         assert!(page.contains(&format!("What is wrong with this picture? ({})", k + 1)), "page {}: {page}", k + 1);
         assert!(!page.contains("blank"), "page {}: {page}", k + 1);
         assert_eq!(tick_boxes(&out.join("sheets.pdf"), k + 1), 7, "page {}", k + 1);
+        // Numbered in the document, as a viewer and a printer count (each said "page 1 of 1").
+        assert!(page.contains(&format!("page {} of 7", k + 1)), "page {}: {page}", k + 1);
     }
+    // The index says how to print what is there: one page an exercise, no blank backs, so
+    // not "on both sides".
+    let index = std::fs::read_to_string(out.join("index.md")).unwrap();
+    assert!(index.contains("printed on one side") && !index.contains("both sides"), "{index}");
     // The same seed, the same files.
     let again = std::env::temp_dir().join(format!("phonglab-wrong-again-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&again);
@@ -191,4 +197,26 @@ fn tick_boxes(pdf: &std::path::Path, page: usize) -> usize {
         }
     }
     boxes
+}
+
+/// `--lang pt-PT exercise --level 5`: the sheets and keys are in Portuguese through and
+/// through, the mistaken formulas' words included ("lit per vertex", "everywhere",
+/// "measured in object space" were left in English).
+#[test]
+fn level_five_in_portuguese_has_no_english_words() {
+    let out = std::env::temp_dir().join(format!("phonglab-wrong-pt-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    let o = common::phonglab(&["--lang", "pt-PT", "exercise", "--level", "5", "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for pdf in ["sheets.pdf", "keys.pdf"] {
+        let text = std::process::Command::new("pdftotext").arg(out.join(pdf)).arg("-").output().unwrap();
+        let text = String::from_utf8_lossy(&text.stdout).to_string();
+        for english in
+            ["lit per", "interpolated", "everywhere", "measured in", "object space", "eye space", "only where"]
+        {
+            assert!(!text.contains(english), "{pdf}: {english:?} in\n{text}");
+        }
+        assert!(text.contains("espaço do objeto"), "{pdf}: {text}");
+    }
+    let _ = std::fs::remove_dir_all(&out);
 }

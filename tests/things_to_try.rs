@@ -299,6 +299,19 @@ fn press_until(
     panic!("{key:?} pressed {most} times did not get there");
 }
 
+/// G switches the rule set with the specular model it comes with: the Phong demo's R.V
+/// (its summary says pow(max(R.V,0),e); G left Blinn-Phong n.H shown), then Blinn-Phong
+/// again for OpenGL's.
+#[test]
+fn g_sets_the_specular_model_of_the_rule_set() {
+    use phonglab_core::rules::SpecularModel;
+    let mut h = with_experiment("what-opengl-adds", 1280.0, 720.0);
+    press_until(&mut h, egui::Key::G, 3, |s| s.doc.scene.rules.set == RuleSet::PhongDemo);
+    assert_eq!(h.state().doc.scene.rules.specular, SpecularModel::Phong);
+    press_until(&mut h, egui::Key::G, 3, |s| s.doc.scene.rules.set == RuleSet::OpenGl);
+    assert_eq!(h.state().doc.scene.rules.specular, SpecularModel::BlinnPhong);
+}
+
 /// The keys the experiments tell the class to press do what their words say, and what the
 /// calculation then shows is what they ask about: G reaches OpenGL's rules (mview3's two
 /// normals part by the note's angle; I grows by the emission and the scene ambient), L

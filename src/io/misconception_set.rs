@@ -87,9 +87,10 @@ pub fn misconception_set(seed: u64, count: usize) -> Result<FileSet> {
         keys.extend(lines.into_iter().map(Block::Text));
         let _ = writeln!(index, "- [{title}]({stem}.md) ([{}]({stem}-key.md))", t!("answers"));
     }
-    let _ = writeln!(index, "\n{}", t!("index-printable"));
+    // Each sheet is one page and is not padded (every other page was blank): printed on
+    // one side, each exercise is its own paper.
+    let _ = writeln!(index, "\n{}", t!("index-printable-one-sided"));
     set.add("index.md", index);
-    // Each sheet is one page: padded for duplex printing, every other page was blank.
     set.add("sheets.pdf", pdf(&sheets, Pages::Plain)?);
     set.add("keys.pdf", pdf(&keys, Pages::Plain)?);
     Ok(set)

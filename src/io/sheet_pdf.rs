@@ -5,8 +5,8 @@
 //!
 //! A document is a list of [`Block`]s, laid out top to bottom; a block that does not fit
 //! goes to the next page. [`Block::Section`] starts a part on a new page (one exercise, one
-//! key) and names it in the footer of each of its pages, with "page k of n" counted within
-//! the part, so a page that comes loose from its exercise still says whose it is. Sheets to
+//! key) and names it in the footer of each of its pages, so a page that comes loose from its
+//! exercise still says whose it is, beside "page k of n" counted in the whole document. Sheets to
 //! hand out give each part an even number of pages ([`Pages::Duplex`]): printed on both
 //! sides, every exercise is its own sheet(s) of paper. Nothing depends on the clock or on
 //! chance: the same blocks give the same bytes.
@@ -225,22 +225,20 @@ fn pad_to_even(fonts: &Fonts, pages: Vec<LaidOut>) -> Vec<LaidOut> {
     out
 }
 
-/// Each page's footer: its part's name on the left, "page k of n" (within the part) on the
-/// right.
+/// Each page's footer: its part's name on the left, "page k of n" (in the whole document,
+/// as a PDF viewer and a printer count) on the right.
 fn add_footers(fonts: &Fonts, pages: &mut [LaidOut], names: &[String]) {
     let size = BODY - 2.0;
     let base = PAGE.1 - MARGIN / 2.0;
-    for run in pages.chunk_by_mut(|a, b| a.part == b.part) {
-        let count = run.len();
-        let name = names.get(run[0].part).cloned().unwrap_or_default();
-        for (k, page) in run.iter_mut().enumerate() {
-            let number = phonglab_core::t!("pdf-page", page = (k + 1).to_string(), pages = count.to_string());
-            if !name.is_empty() {
-                page.marks.push(Mark::Text { at: (MARGIN, base), text: name.clone(), size, mono: false });
-            }
-            let x = PAGE.0 - MARGIN - fonts.width(&number, size, false);
-            page.marks.push(Mark::Text { at: (x, base), text: number, size, mono: false });
+    let count = pages.len();
+    for (k, page) in pages.iter_mut().enumerate() {
+        let name = names.get(page.part).cloned().unwrap_or_default();
+        let number = phonglab_core::t!("pdf-page", page = (k + 1).to_string(), pages = count.to_string());
+        if !name.is_empty() {
+            page.marks.push(Mark::Text { at: (MARGIN, base), text: name, size, mono: false });
         }
+        let x = PAGE.0 - MARGIN - fonts.width(&number, size, false);
+        page.marks.push(Mark::Text { at: (x, base), text: number, size, mono: false });
     }
 }
 

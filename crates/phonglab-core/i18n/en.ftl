@@ -76,6 +76,12 @@ wrong-why-light-before-view = glLightfv(GL_POSITION) multiplies the position by 
 wrong-probe-line = bytes { $rgba }, n · L = { $ndotl }, { $cosine } = { $ndoth }, 1/at = { $att }, diffuse { $diffuse }, specular { $specular }
 wrong-key-cause = Cause: { $cause }.
 wrong-key-formulas = Right: { $right }. The mistake: { $wrong }.
+wrong-formula-gouraud-right = lit per fragment (Phong)
+wrong-formula-gouraud-wrong = lit per vertex, interpolated (Gouraud)
+wrong-formula-facing-away-right = f_i = 1 only where n · L > 0
+wrong-formula-facing-away-wrong = f_i = 1 everywhere
+wrong-formula-attenuation-right = d = |P_pli - P| in eye space
+wrong-formula-attenuation-wrong = d measured in object space
 wrong-key-pixel = The probe at pixel ({ $x }, { $y }), where the two pictures differ most ({ $count } pixels differ):
 wrong-key-right = drawn right: { $line }
 wrong-key-wrong = with the mistake: { $line }
@@ -290,7 +296,7 @@ refused-kept = Refused: { $error }. The scene keeps its last valid value.
 history-reset = reset to the worksheet
 reset-done = Reset to the worksheet (mview5).
 history-open = open { $what }
-loaded = Loaded { $what }.
+loaded = Opened “{ $what }”
 undid = Undid: { $what }.
 redid = Redid: { $what }.
 history-no-change = no change
@@ -522,6 +528,7 @@ side = Side:
 not-applicable = n/a
 skipped-by-specialised = skipped by the specialised evaluator: { $why }
 plot-view = View:
+plot-legend-halfway = halfway
 plot-view-hover = Look at the { $plane } plane
 
 ## view
@@ -1001,6 +1008,7 @@ exercise-effect-several-lights = several lights
 index-title = Exercises, seed { $seed }
 index-intro = Effects: { $effects }. Rules: { $rules }. Each sheet has its scene file (open it in phonglab) and its answers.
 index-printable = To print: [sheets.pdf](sheets.pdf) (to hand out: print it on both sides, and each exercise is its own sheet of paper) and [keys.pdf](keys.pdf) (the answers, for the teacher).
+index-printable-one-sided = To print: [sheets.pdf](sheets.pdf) (to hand out: one page an exercise, so printed on one side each exercise is its own sheet of paper) and [keys.pdf](keys.pdf) (the answers, for the teacher).
 
 ## pdf
 

@@ -76,6 +76,12 @@ wrong-why-light-before-view = O glLightfv(GL_POSITION) multiplica a posição pe
 wrong-probe-line = bytes { $rgba }, n · L = { $ndotl }, { $cosine } = { $ndoth }, 1/at = { $att }, difusa { $diffuse }, especular { $specular }
 wrong-key-cause = Causa: { $cause }.
 wrong-key-formulas = Certo: { $right }. O erro: { $wrong }.
+wrong-formula-gouraud-right = iluminado em cada fragmento (Phong)
+wrong-formula-gouraud-wrong = iluminado em cada vértice, cores interpoladas (Gouraud)
+wrong-formula-facing-away-right = f_i = 1 só onde n · L > 0
+wrong-formula-facing-away-wrong = f_i = 1 em todo lugar
+wrong-formula-attenuation-right = d = |P_pli - P| no espaço do olho
+wrong-formula-attenuation-wrong = d medida no espaço do objeto
 wrong-key-pixel = A sonda no pixel ({ $x }, { $y }), onde as duas imagens mais diferem ({ $count } pixels diferem):
 wrong-key-right = desenhada certa: { $line }
 wrong-key-wrong = com o erro: { $line }
@@ -122,7 +128,7 @@ mesh-too-large-to-keep = comprimida, tem { $packed } caracteres, e a página gua
 mesh-not-restored = Não foi possível ler de novo a malha { $name } que esta página guardou ({ $why }): abra-a de novo.
 quiz = Teste
 quiz-hover = Cada valor do cálculo atrás de um campo: digite-os passo a passo
-shader = Shader
+shader = Programa de sombreamento (shader)
 shader-hover = O programa GLSL ou WGSL em que esta cena se compila: só as etapas de que precisa
 precision = Precisão:
 f32-hover = Calcular em precisão simples, como o OpenGL
@@ -290,7 +296,7 @@ refused-kept = Recusado: { $error }. A cena mantém o último valor válido.
 history-reset = voltar à ficha
 reset-done = De volta à ficha (mview5).
 history-open = abrir { $what }
-loaded = Aberto: { $what }.
+loaded = Aberto: “{ $what }”
 undid = Desfeito: { $what }.
 redid = Refeito: { $what }.
 history-no-change = sem alteração
@@ -522,6 +528,7 @@ side = Face:
 not-applicable = não se aplica
 skipped-by-specialised = pulado pelo avaliador especializado: { $why }
 plot-view = Vista:
+plot-legend-halfway = vetor médio
 plot-view-hover = Ver o plano { $plane }
 
 ## view
@@ -1001,6 +1008,7 @@ exercise-effect-several-lights = várias luzes
 index-title = Exercícios, semente { $seed }
 index-intro = Efeitos: { $effects }. Regras: { $rules }. Cada ficha tem o seu arquivo de cena (abra-o no phonglab) e as suas respostas.
 index-printable = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir: impresso frente e verso, cada exercício fica na sua própria folha) e [keys.pdf](keys.pdf) (as respostas, para o professor).
+index-printable-one-sided = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir: uma página por exercício, então impresso só de um lado cada exercício fica na sua própria folha) e [keys.pdf](keys.pdf) (as respostas, para o professor).
 
 ## pdf
 

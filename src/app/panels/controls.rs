@@ -9,7 +9,8 @@ use phonglab_core::t;
 use phonglab_core::transform::{mat4_from_rows, mat4_rows};
 use phonglab_core::vocabulary::Quantity as Q;
 use phonglab_core::{
-    CameraSpec, Document, Light, LightPlacement, MAX_LIGHTS, Material, NormalMode, RuleSet, SpecularModel, materials,
+    CameraSpec, Document, Light, LightPlacement, MAX_LIGHTS, Material, NormalMode, RuleSet, Rules, SpecularModel,
+    materials,
 };
 
 use crate::app::widgets::fields::{color_ui, number_ui, slider_ui, vec3_ui, vec4_ui};
@@ -49,7 +50,10 @@ pub fn rules_ui(ui: &mut Ui, doc: &mut Document) {
     let rules = &mut doc.scene.rules;
     combo_ui(ui, &t!("rule-set"), rules.set.label(), |ui| {
         for r in RuleSet::ALL {
-            ui.selectable_value(&mut rules.set, r, r.label());
+            // A rule set comes with its specular model (as the G key and its scene do).
+            if ui.selectable_label(rules.set == r, r.label()).clicked() && rules.set != r {
+                *rules = Rules::of_set(r);
+            }
         }
     });
     combo_ui(ui, &t!("specular-model"), rules.specular.label(), |ui| {

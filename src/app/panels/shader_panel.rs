@@ -179,45 +179,51 @@ pub fn shader_window_ui(ctx: &egui::Context, state: &mut ShaderState, doc: &Docu
     let mut open = state.open;
     // Over the centre and the calculation, leaving the controls free to toggle effects.
     let at = ctx.content_rect().right_top() + egui::vec2(-640.0, 70.0);
-    egui::Window::new("Shader").open(&mut open).default_size([620.0, 560.0]).default_pos(at).show(ctx, |ui| {
-        ui.horizontal_wrapped(|ui| {
-            let before = state.wgsl;
-            ui.radio_value(&mut state.wgsl, false, "GLSL 3.30");
-            ui.radio_value(&mut state.wgsl, true, "WGSL");
-            if state.wgsl != before {
-                // Another language is not a change of the program.
-                state.shown.clear();
-                state.added.clear();
-                state.removed.clear();
-            }
-            if ui.button(t!("copy")).on_hover_text(t!("copy-program-hover")).clicked() {
-                ui.ctx().copy_text(text.clone());
-            }
-            ui.small(if doc.view.shading == Shading::Phong {
-                t!("shader-stages-phong")
-            } else {
-                t!("shader-stages-vertex")
-            });
-        });
-        if !state.added.is_empty() || !state.removed.is_empty() {
-            ui.small(t!("shader-last-change", added = state.added.len(), removed = state.removed.len()));
-        }
-        egui::ScrollArea::both().auto_shrink(false).show(ui, |ui| {
-            let hi =
-                if ui.visuals().dark_mode { Color32::from_rgb(20, 70, 30) } else { Color32::from_rgb(200, 245, 205) };
-            for line in text.lines() {
-                let bg = if state.added.iter().any(|a| a == line) { hi } else { Color32::TRANSPARENT };
-                ui.add(egui::Label::new(line_job(line, ui, bg)).wrap_mode(egui::TextWrapMode::Extend));
-            }
-            if !state.removed.is_empty() {
-                ui.separator();
-                ui.label(RichText::new(t!("shader-removed")).small());
-                for line in &state.removed {
-                    ui.label(RichText::new(format!("- {line}")).monospace().small().strikethrough());
+    egui::Window::new(phonglab_core::t!("shader")).open(&mut open).default_size([620.0, 560.0]).default_pos(at).show(
+        ctx,
+        |ui| {
+            ui.horizontal_wrapped(|ui| {
+                let before = state.wgsl;
+                ui.radio_value(&mut state.wgsl, false, "GLSL 3.30");
+                ui.radio_value(&mut state.wgsl, true, "WGSL");
+                if state.wgsl != before {
+                    // Another language is not a change of the program.
+                    state.shown.clear();
+                    state.added.clear();
+                    state.removed.clear();
                 }
+                if ui.button(t!("copy")).on_hover_text(t!("copy-program-hover")).clicked() {
+                    ui.ctx().copy_text(text.clone());
+                }
+                ui.small(if doc.view.shading == Shading::Phong {
+                    t!("shader-stages-phong")
+                } else {
+                    t!("shader-stages-vertex")
+                });
+            });
+            if !state.added.is_empty() || !state.removed.is_empty() {
+                ui.small(t!("shader-last-change", added = state.added.len(), removed = state.removed.len()));
             }
-        });
-    });
+            egui::ScrollArea::both().auto_shrink(false).show(ui, |ui| {
+                let hi = if ui.visuals().dark_mode {
+                    Color32::from_rgb(20, 70, 30)
+                } else {
+                    Color32::from_rgb(200, 245, 205)
+                };
+                for line in text.lines() {
+                    let bg = if state.added.iter().any(|a| a == line) { hi } else { Color32::TRANSPARENT };
+                    ui.add(egui::Label::new(line_job(line, ui, bg)).wrap_mode(egui::TextWrapMode::Extend));
+                }
+                if !state.removed.is_empty() {
+                    ui.separator();
+                    ui.label(RichText::new(t!("shader-removed")).small());
+                    for line in &state.removed {
+                        ui.label(RichText::new(format!("- {line}")).monospace().small().strikethrough());
+                    }
+                }
+            });
+        },
+    );
     state.open = open;
 }
 

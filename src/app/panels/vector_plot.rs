@@ -107,18 +107,19 @@ fn arrows(eval: &Evaluated, specular: SpecularModel, ink: &dyn Fn(Color32) -> Co
 
 /// The legend's entries: (symbol, the worksheet's name for it, colour, dashed). The
 /// symbols are OpenGL's (N, L, V, H); the names the worksheet's code uses.
-fn legend(eval: &Evaluated, specular: SpecularModel) -> Vec<(&'static str, &'static str, Color32, bool)> {
+fn legend(eval: &Evaluated, specular: SpecularModel) -> Vec<(&'static str, String, Color32, bool)> {
     let mut v = vec![
-        ("N", "vertexNormal", palette::N, false),
-        ("L", "vlv", palette::L, false),
-        ("V", "vov", palette::V, false),
+        ("N", "vertexNormal".to_string(), palette::N, false),
+        ("L", "vlv".to_string(), palette::L, false),
+        ("V", "vov".to_string(), palette::V, false),
         match specular.vector() {
-            SpecularVector::Halfway => ("H", "halfway", palette::H, true), // the worksheet's "vetor halfway" too
-            SpecularVector::Reflection => ("R", "R", palette::H, true),
+            // In words, the reader's (the sheets' "vetor médio").
+            SpecularVector::Halfway => ("H", phonglab_core::t!("plot-legend-halfway"), palette::H, true),
+            SpecularVector::Reflection => ("R", "R".to_string(), palette::H, true),
         },
     ];
     if eval.lights.iter().any(|l| l.spot.is_some()) {
-        v.push(("S", "spot", palette::SPOT, true)); // the scene file's name
+        v.push(("S", "spot".to_string(), palette::SPOT, true)); // the scene file's name
     }
     v
 }
@@ -177,7 +178,7 @@ pub fn legend_entry_ui(ui: &mut Ui, sample: Sample, symbol: &str, what: &str, co
 /// The legend's column when it stands beside the diagram (points).
 pub const LEGEND_COLUMN: f32 = 170.0;
 
-fn legend_ui(ui: &mut Ui, entries: &[(&str, &str, Color32, bool)]) {
+fn legend_ui(ui: &mut Ui, entries: &[(&str, String, Color32, bool)]) {
     ui.horizontal_wrapped(|ui| {
         ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
         for (sym, what, c, dashed) in entries {

@@ -2,7 +2,7 @@
 //! pressed are [`crate::app::panels::help`]'s), and presentation's own keys (F5, and the
 //! arrow keys walking through the calculation's steps).
 
-use phonglab_core::{CameraSpec, NormalMode, RuleSet, materials};
+use phonglab_core::{CameraSpec, NormalMode, RuleSet, Rules, materials};
 
 use super::files;
 use super::state::{AppState, Precision};
@@ -61,7 +61,9 @@ pub fn apply_action(state: &mut AppState, action: help::Action) {
         }
         A::NextRuleSet => {
             let i = RuleSet::ALL.iter().position(|r| *r == c.scene.rules.set).unwrap_or(0);
-            c.scene.rules.set = RuleSet::ALL[(i + 1) % RuleSet::ALL.len()];
+            // A rule set comes with its specular model (the Phong demo's R.V), as when its
+            // scene is loaded: the model shown, the plot and the set's summary then agree.
+            c.scene.rules = Rules::of_set(RuleSet::ALL[(i + 1) % RuleSet::ALL.len()]);
         }
         A::Object(o) => c.view.object = o,
         A::Shading(sh) => c.view.shading = sh,

@@ -82,21 +82,26 @@ impl Misconception {
         })
     }
 
-    /// The right formula and the mistaken one.
-    pub fn formulas(self) -> (&'static str, &'static str) {
+    /// The right formula and the mistaken one, the words in them in the reader's language.
+    pub fn formulas(self) -> (String, String) {
+        let both = |r: &str, w: &str| (r.to_string(), w.to_string());
         match self {
-            Misconception::NormalsByModelview => ("n_eye = (M^-1)^T n", "n_eye = M n"),
-            Misconception::NormalNotNormalised => ("n = n_eye / |n_eye|", "n = n_eye"),
+            Misconception::NormalsByModelview => both("n_eye = (M^-1)^T n", "n_eye = M n"),
+            Misconception::NormalNotNormalised => both("n = n_eye / |n_eye|", "n = n_eye"),
             Misconception::ReflectionForHalfway => {
-                ("(n . H)^s_rm, H = normalize(L + V)", "(R . V)^s_rm, R = 2 (n . L) n - L")
+                both("(n . H)^s_rm, H = normalize(L + V)", "(R . V)^s_rm, R = 2 (n . L) n - L")
             }
             Misconception::GouraudMissesHighlight => {
-                ("lit per fragment (Phong)", "lit per vertex, interpolated (Gouraud)")
+                (crate::t!("wrong-formula-gouraud-right"), crate::t!("wrong-formula-gouraud-wrong"))
             }
-            Misconception::SpecularOnFacesTurnedAway => ("f_i = 1 only where n . L > 0", "f_i = 1 everywhere"),
-            Misconception::AttenuationInObjectSpace => ("d = |P_pli - P| in eye space", "d measured in object space"),
+            Misconception::SpecularOnFacesTurnedAway => {
+                (crate::t!("wrong-formula-facing-away-right"), crate::t!("wrong-formula-facing-away-wrong"))
+            }
+            Misconception::AttenuationInObjectSpace => {
+                (crate::t!("wrong-formula-attenuation-right"), crate::t!("wrong-formula-attenuation-wrong"))
+            }
             Misconception::LightBeforeView => {
-                ("gluLookAt(...); glLightfv(GL_POSITION, p)", "glLightfv(GL_POSITION, p); gluLookAt(...)")
+                both("gluLookAt(...); glLightfv(GL_POSITION, p)", "glLightfv(GL_POSITION, p); gluLookAt(...)")
             }
         }
     }
