@@ -181,22 +181,43 @@ fn untrusted(why: &str) -> String {
     t!("set-untrusted-journal", why = why)
 }
 
+/// Why one of phonglab's records (a journal, the list of what a set wrote) was not read.
+enum Record {
+    /// There is none.
+    Missing,
+    /// It could not be opened or read.
+    Unreadable(io::Error),
+    /// Not a regular file (a link is not followed), or past the cap.
+    NotOne,
+}
+
+/// The bytes of one of phonglab's records at `path`: opened without following a link,
+/// checked through the open handle to be a regular file of at most 1 MiB, and read whole.
+fn read_record(path: &Path) -> Result<Vec<u8>, Record> {
+    let file = match crate::platform::os::open_no_follow(path) {
+        Ok(f) => f,
+        Err(e) if e.kind() == io::ErrorKind::NotFound => return Err(Record::Missing),
+        Err(e) => return Err(Record::Unreadable(e)),
+    };
+    let meta = file.metadata().map_err(Record::Unreadable)?;
+    if !meta.is_file() || meta.len() > MAX_JOURNAL_BYTES {
+        return Err(Record::NotOne);
+    }
+    let mut bytes = Vec::new();
+    file.take(MAX_JOURNAL_BYTES).read_to_end(&mut bytes).map_err(Record::Unreadable)?;
+    Ok(bytes)
+}
+
 /// The journal of the staging folder `staging`, when phonglab wrote it there: read without
 /// following a link, under its cap, naming that very folder and only plain files, each
 /// once. `Ok(None)`: the folder has no journal. `Err`: why it is not trusted.
 fn read_journal(staging: &Path) -> Result<Option<Journal>, String> {
-    let path = staging.join(JOURNAL);
-    let file = match crate::platform::os::open_no_follow(&path) {
-        Ok(f) => f,
-        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(None),
-        Err(e) => return Err(untrusted(&crate::io::reasons::io_reason(&e))),
+    let bytes = match read_record(&staging.join(JOURNAL)) {
+        Ok(bytes) => bytes,
+        Err(Record::Missing) => return Ok(None),
+        Err(Record::Unreadable(e)) => return Err(untrusted(&crate::io::reasons::io_reason(&e))),
+        Err(Record::NotOne) => return Err(untrusted(&t!("set-why-not-a-journal"))),
     };
-    let meta = file.metadata().map_err(|e| untrusted(&crate::io::reasons::io_reason(&e)))?;
-    if !meta.is_file() || meta.len() > MAX_JOURNAL_BYTES {
-        return Err(untrusted(&t!("set-why-not-a-journal")));
-    }
-    let mut bytes = Vec::new();
-    file.take(MAX_JOURNAL_BYTES).read_to_end(&mut bytes).map_err(|e| untrusted(&crate::io::reasons::io_reason(&e)))?;
     let j: Journal = serde_json::from_slice(&bytes).map_err(|_| untrusted(&t!("set-why-not-a-journal")))?;
     let here = std::fs::symlink_metadata(staging).map_err(|e| untrusted(&crate::io::reasons::io_reason(&e)))?;
     if !here.is_dir() || Identity::of(&here) != j.staging {
@@ -268,20 +289,13 @@ pub fn recover_locked(dir: &Path) -> io::Result<Vec<String>> {
 }
 
 /// The files of the last set phonglab wrote into `dir`, as its list names them: empty when
-/// there is no list, or it is not a regular file, too large or unreadable (then nothing
+/// there is no list, or it is a link, not a regular file, too large or unreadable (then nothing
 /// beyond the new set's own names is replaced).
 pub fn written_list(dir: &Path) -> Vec<Entry> {
-    let path = dir.join(WRITTEN);
-    let Ok(meta) = std::fs::symlink_metadata(&path) else { return Vec::new() };
-    if !meta.is_file() || meta.len() > MAX_JOURNAL_BYTES {
-        return Vec::new();
-    }
-    let Ok(file) = std::fs::File::open(&path) else { return Vec::new() };
-    let mut bytes = Vec::new();
-    if file.take(MAX_JOURNAL_BYTES).read_to_end(&mut bytes).is_err() {
-        return Vec::new();
-    }
-    serde_json::from_slice::<Vec<Entry>>(&bytes).unwrap_or_default()
+    read_record(&dir.join(WRITTEN))
+        .ok()
+        .and_then(|bytes| serde_json::from_slice::<Vec<Entry>>(&bytes).ok())
+        .unwrap_or_default()
 }
 
 /// Removes `staging` when it holds nothing but, at most, an empty aside folder (a writer
