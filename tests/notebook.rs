@@ -301,3 +301,22 @@ fn what_is_not_a_worksheet_is_refused_with_a_reason() {
     assert!(read("not json", true, "x").unwrap_err().to_string().contains("not a Jupyter notebook"));
     assert!(read("print('hello')\nx = 3\n", false, "x").unwrap_err().to_string().contains("vertexPos"));
 }
+
+/// nbformat 4.5 (what the file declares) gives every cell an `id` of 1 to 64 characters
+/// from `[A-Za-z0-9_-]`, unique in the notebook: without one Jupyter warns
+/// (`MissingIDFieldWarning`), and nbformat's validator will refuse it.
+#[test]
+fn every_cell_has_the_unique_id_nbformat_4_5_asks_for() {
+    let (_, doc) = shipped_scenes().into_iter().next().unwrap();
+    let json: serde_json::Value = serde_json::from_str(&notebook(&doc, &phonglab_core::export::key(&doc))).unwrap();
+    assert_eq!((json["nbformat"].as_u64(), json["nbformat_minor"].as_u64()), (Some(4), Some(5)));
+    let cells = json["cells"].as_array().unwrap();
+    assert!(cells.len() > 5);
+    let mut seen = std::collections::BTreeSet::new();
+    for cell in cells {
+        let id = cell["id"].as_str().unwrap_or_else(|| panic!("a cell without an id: {cell}"));
+        assert!((1..=64).contains(&id.len()), "{id}");
+        assert!(id.chars().all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_'), "{id}");
+        assert!(seen.insert(id.to_string()), "{id} twice");
+    }
+}

@@ -54,13 +54,22 @@ pub fn ipynb(cells: &[Cell]) -> String {
         }
         out
     };
+    // nbformat 4.5 gives every cell an `id`; the cell's place makes it unique and the same
+    // on every export (Jupyter warns of, and later versions refuse, a 4.5 cell without one).
     let cells: Vec<serde_json::Value> = cells
         .iter()
-        .map(|c| match c {
-            Cell::Markdown(t) => serde_json::json!({"cell_type": "markdown", "metadata": {}, "source": lines(t)}),
-            Cell::Code(t) => serde_json::json!({
-                "cell_type": "code", "execution_count": null, "metadata": {}, "outputs": [], "source": lines(t)
-            }),
+        .enumerate()
+        .map(|(i, c)| {
+            let id = format!("cell-{}", i + 1);
+            match c {
+                Cell::Markdown(t) => {
+                    serde_json::json!({"cell_type": "markdown", "id": id, "metadata": {}, "source": lines(t)})
+                }
+                Cell::Code(t) => serde_json::json!({
+                    "cell_type": "code", "execution_count": null, "id": id, "metadata": {}, "outputs": [],
+                    "source": lines(t)
+                }),
+            }
         })
         .collect();
     let doc = serde_json::json!({
