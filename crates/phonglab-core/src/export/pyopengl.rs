@@ -76,14 +76,6 @@ pub fn program(doc: &Document, key: &Key) -> Result<String, String> {
 const PROGRAM: Template =
     Template { name: "phong_scene.py", language: Language::Python, text: include_str!("templates/phong_scene.py") };
 
-/// A generated shader adapted to a compatibility-profile context: the attributes are GL's
-/// own vertex and normal (what GLU's and GLUT's objects send).
-pub(super) fn compatibility_profile(text: &str) -> String {
-    text.replace("#version 330 core", "#version 330 compatibility")
-        .replace("layout(location = 0) in vec3 a_position;", "#define a_position (gl_Vertex.xyz / gl_Vertex.w)")
-        .replace("layout(location = 1) in vec3 a_normal;", "#define a_normal gl_Normal")
-}
-
 /// A matrix as a NumPy array of its rows.
 fn np_matrix(m: &DMat4) -> String {
     let rows = crate::model::transform::mat4_rows(m);
