@@ -2,7 +2,8 @@
 //! gets what OpenGL draws: each `glLight*`, `glMaterial*` and `glLightModel*` call of the
 //! program for a few shipped scenes (a spotlight in Phong and Gouraud shading, three
 //! lights, an open cylinder lit on both sides with a back material, the worksheet's
-//! rules, and `GL_COLOR_MATERIAL`) is changed to another valid value, the program is run by a real
+//! rules, `GL_COLOR_MATERIAL`, energy-conserving Blinn-Phong, and the Phong demo's
+//! rules lit in object space) is changed to another valid value, the program is run by a real
 //! OpenGL (Mesa 22.3.6, llvmpipe, freeglut, GLU), and its picture is compared with
 //! phonglab's renderer drawing the scene edited the same way, within the tolerance of
 //! `tests/pyopengl_mesa.rs` (the same coverage to 0.5 %, a mean difference within 3/255),
@@ -53,6 +54,8 @@ fn scenes() -> Vec<(&'static str, Document)> {
     two_sided.scene.back_material = Some(back);
     let mut worksheet = scene_file("worksheet-mview5.toml");
     worksheet.view.shading = Shading::Gouraud;
+    let mut normalised = scene_file("three-lights.toml");
+    normalised.scene.rules.specular = phonglab_core::SpecularModel::BlinnPhongNormalised;
     let mut colour = scene_file("of-set-color.toml");
     colour.view.shading = Shading::Phong;
     vec![
@@ -62,6 +65,8 @@ fn scenes() -> Vec<(&'static str, Document)> {
         ("two-sided-cylinder", two_sided),
         ("worksheet-rules", worksheet),
         ("color-material", colour),
+        ("normalised-specular", normalised),
+        ("phong-demo", scene_file("phong-demo.toml")),
     ]
 }
 
@@ -346,7 +351,9 @@ fn the_edited_programs_drew_under_mesa_what_phonglab_draws_of_the_edited_scenes(
     for (name, _, _) in &all {
         let row = rows.get(name.as_str()).unwrap_or_else(|| panic!("{name} was not run under Mesa"));
         let (both, only_one, mean) = (row[0], row[1], row[2]);
-        assert!(both > 500.0, "{name}: only {both} pixels covered");
+        // An edit may darken the object to the background (a spot cone that misses it),
+        // in both pictures alike.
+        assert!(both > 500.0 || only_one == 0.0, "{name}: only {both} pixels covered");
         assert!(only_one <= 0.005 * (SIZE * SIZE) as f64, "{name}: coverage differs by {only_one} pixels");
         assert!(mean <= 3.0, "{name}: mean difference {mean}/255");
         // The mean alone lets a moved highlight pass (the old export, which ignored

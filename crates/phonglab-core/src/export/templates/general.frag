@@ -12,7 +12,7 @@ void main() {
     vec3 N = lighting_normal(v_normal);
     vec4 p;
     vec3 s;
-    light_side(side_material(back, v_color), back ? -N : N, v_pos, p, s);
+    light_side(side_material(back, v_color), back ? -N : N, back, v_pos, p, s);
 #if CLAMP_VERTEX_COLORS
     p = clamp(p, 0.0, 1.0);
     s = clamp(s, 0.0, 1.0);

@@ -26,13 +26,13 @@ void main() {
     vec3 N = lighting_normal(v_normal);
     vec4 p;
     vec3 s;
-    light_side(side_material(false, gl_Color), N, v_pos, p, s);
+    light_side(side_material(false, gl_Color), N, false, v_pos, p, s);
     v_front = clamped(p);
     v_front_secondary = clamped(vec4(s, 1.0)).rgb;
     v_back = v_front;
     v_back_secondary = v_front_secondary;
     if (u_two_side != 0) {
-        light_side(side_material(true, gl_Color), -N, v_pos, p, s);
+        light_side(side_material(true, gl_Color), -N, true, v_pos, p, s);
         v_back = clamped(p);
         v_back_secondary = clamped(vec4(s, 1.0)).rgb;
     }

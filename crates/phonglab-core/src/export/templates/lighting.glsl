@@ -46,8 +46,9 @@ float power(float x, float e) {
 }
 
 // One side's colours at the eye-space point P with the side's unit normal N (the zero
-// vector where the normal has no direction): primary (rgb, alpha) and secondary.
-void light_side(Side m, vec3 N, vec3 P, out vec4 primary, out vec3 secondary) {
+// vector where the normal has no direction; -n for the back side, `back`): primary (rgb,
+// alpha) and secondary.
+void light_side(Side m, vec3 N, bool back, vec3 P, out vec4 primary, out vec3 secondary) {
     vec3 sum = vec3(0.0);
     secondary = vec3(0.0);
     bool n_ok = dot(N, N) > 0.0;
@@ -91,10 +92,13 @@ void light_side(Side m, vec3 N, vec3 P, out vec4 primary, out vec3 secondary) {
             float c = 0.0;
             bool c_ok = v_ok;
 #if SPECULAR_REFLECTION
+            // R as phonglab forms it: once per light, about the front side's normal (the
+            // same R for both sides, but where the demo's rule clamps n.L).
+            vec3 Nf = back ? -N : N;
 #if REFLECT_CLAMPED
-            vec3 R = 2.0 * max(ndl, 0.0) * N - L;
+            vec3 R = 2.0 * max(dot(Nf, L), 0.0) * Nf - L;
 #else
-            vec3 R = 2.0 * ndl * N - L;
+            vec3 R = 2.0 * dot(Nf, L) * Nf - L;
 #endif
             c = dot(R, V);
 #else
