@@ -256,7 +256,11 @@ fn every_edit_changes_the_program_as_the_edited_scene_exports() {
         let theirs: Vec<Call> = calls(&exported).into_iter().map(|(_, c)| c).collect();
         assert_eq!(ours.len(), theirs.len(), "{name}");
         for (a, b) in ours.iter().zip(&theirs) {
-            assert_eq!((&a.function, &a.target, &a.pname, &a.word), (&b.function, &b.target, &b.pname, &b.word), "{name}");
+            assert_eq!(
+                (&a.function, &a.target, &a.pname, &a.word),
+                (&b.function, &b.target, &b.pname, &b.word),
+                "{name}"
+            );
             for (x, y) in a.value.iter().zip(&b.value) {
                 assert!((x - y).abs() <= 1e-9 * x.abs().max(1.0), "{name}: {a:?} against {b:?}");
             }
