@@ -4,13 +4,13 @@
 #   scripts/pyopengl_mesa.sh PROGRAMS_DIR OUT_DIR [SIZE]
 # writes OUT_DIR/NAME.png (SIZE x SIZE, default 128) for each PROGRAMS_DIR/NAME.py and
 # OUT_DIR/programs.txt (each program's CRC-32 and name). Needs GLREF (default
-# ../shared/glref) set up by its setup.sh, and Xvfb.
+# ../shared/glref) set up by its setup.sh (or PYTHON: a Python with PyOpenGL and NumPy), and Xvfb.
 set -euo pipefail
 src=$1
 out=$2
 size=${3:-128}
 glref=${GLREF:-$(cd "$(dirname "$0")/../.." && pwd)/shared/glref}
-python=$glref/.venv/bin/python
+python=${PYTHON:-$glref/.venv/bin/python}
 display=:$((90 + RANDOM % 9))
 Xvfb "$display" -screen 0 1024x768x24 >/dev/null 2>&1 &
 xvfb=$!

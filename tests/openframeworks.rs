@@ -91,9 +91,10 @@ fn compatibility_glsl_compiles(name: &str, setup: &str) {
 }
 
 /// Where fixed-function GL cannot compute a term (energy-conserving Blinn-Phong's factor),
-/// the app says so and draws with phonglab's generated shader: compiled and linked in
-/// setup(), bound around the object in draw() with every uniform but GL's own matrices, the
-/// factor in its GLSL. The other apps draw with oF's lighting alone.
+/// the app says so and draws with the general shaders: compiled and linked in setup(),
+/// bound around the object in draw(), reading the lights and the material oF set from GL
+/// and the rest of the state with glGet (never a scene value baked in), the factor in their
+/// GLSL. The other apps draw with oF's lighting alone.
 #[test]
 fn what_gl_cannot_compute_is_drawn_by_the_generated_shader() {
     for (name, doc) in normalised() {
@@ -107,12 +108,19 @@ fn what_gl_cannot_compute_is_drawn_by_the_generated_shader() {
         {
             assert!(setup.contains(line), "{name}: {line}");
         }
-        assert!(setup.contains("#version 330 compatibility") && setup.contains("/ (8.0 * 3.14159265)"), "{name}");
+        // The general shaders: the whole of GL's lighting read from GL's state, only the
+        // rule set fixed (here the normalised specular).
+        assert!(setup.contains("#version 120") && setup.contains("#define SPECULAR_NORMALISED 1"), "{name}");
+        assert!(setup.contains("gl_LightSource[i].position") && setup.contains("gl_FrontMaterial"), "{name}");
         assert!(setup.contains("#define u_eye_from_object gl_ModelViewMatrix"), "{name}");
+        assert!(setup.contains("#define u_rescale gl_NormalScale"), "{name}");
         let begin = draw.find("shader.begin();").unwrap();
         let (object, end) = (draw.find("ofDrawSphere").unwrap(), draw.find("shader.end();").unwrap());
         assert!(begin < object && object < end, "{name}");
-        assert!(draw.contains("shader.setUniform1f(\"u_mat_shininess\", "), "{name}: {draw}");
+        // What GLSL has no variable for is read from GL, never written as the scene's value.
+        assert!(draw.contains("glGetIntegerv(GL_LIGHT_MODEL_LOCAL_VIEWER, &v);"), "{name}: {draw}");
+        assert!(draw.contains("shader.setUniform1iv(\"u_light_on\", on, 8);"), "{name}: {draw}");
+        assert!(!draw.contains("setUniform3f") && !draw.contains("setUniform1f"), "{name}: a scene value in {draw}");
         assert!(!draw.contains("u_eye_from_object"), "{name}: GL's own matrices are not set");
         compatibility_glsl_compiles(&name, setup);
     }

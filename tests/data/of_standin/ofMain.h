@@ -20,6 +20,8 @@ enum : GLenum {
     GL_LIGHT_MODEL_COLOR_CONTROL = 0x81F8, GL_SEPARATE_SPECULAR_COLOR = 0x81FA,
     GL_NORMALIZE = 0x0BA1, GL_RESCALE_NORMAL = 0x803A, GL_MODELVIEW = 0x1700, GL_TRUE = 1, GL_FALSE = 0,
     GL_FRAGMENT_SHADER = 0x8B30, GL_VERTEX_SHADER = 0x8B31,
+    GL_COLOR_MATERIAL = 0x0B57, GL_COLOR_MATERIAL_FACE = 0x0B55, GL_COLOR_MATERIAL_PARAMETER = 0x0B56,
+    GL_AMBIENT_AND_DIFFUSE = 0x1602,
 };
 void glLightfv(GLenum light, GLenum pname, const GLfloat* params);
 void glLightf(GLenum light, GLenum pname, GLfloat param);
@@ -27,6 +29,8 @@ void glLightModeli(GLenum pname, GLint param);
 void glMaterialfv(GLenum face, GLenum pname, const GLfloat* params);
 void glMaterialf(GLenum face, GLenum pname, GLfloat param);
 void glEnable(GLenum cap);
+unsigned char glIsEnabled(GLenum cap);
+void glGetIntegerv(GLenum pname, GLint* data);
 void glDisable(GLenum cap);
 void glMatrixMode(GLenum mode);
 void glPushMatrix();
@@ -103,6 +107,8 @@ public:
     bool linkProgram();
     void begin() const;
     void end() const;
+    void setUniform1i(const std::string& name, int v1) const;
+    void setUniform1iv(const std::string& name, const int* v, int count = 1) const;
     void setUniform1f(const std::string& name, float v1) const;
     void setUniform3f(const std::string& name, float v1, float v2, float v3) const;
     void setUniform4f(const std::string& name, float v1, float v2, float v3, float v4) const;

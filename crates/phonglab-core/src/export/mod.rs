@@ -5,6 +5,7 @@
 //! Each writer builds its text from the scene's state, as Mesa's `ffvertex_prog.c` builds a
 //! program from a state key: only the cells, calls and lines this scene needs.
 
+pub mod general_shader;
 pub mod notebook;
 pub mod openframeworks;
 pub mod pyopengl;

@@ -20,7 +20,10 @@
 //! `GL_NORMALIZE`) is the raw GL call, with a comment. What fixed-function GL cannot
 //! compute at all is said in a comment too (Phong's R); where that is a term GL's
 //! lighting would leave out (energy-conserving Blinn-Phong's normalisation), the app
-//! draws with phonglab's generated shader instead, which reads GL's own matrices.
+//! draws with the general shaders of [`super::general_shader`] instead: the whole of
+//! OpenGL's lighting read from GL's state (the lights and material oF set, GL's own
+//! matrices, and what GLSL has no variable for read with `glGet*` in `draw()`), so the
+//! app's calls keep deciding the picture.
 
 use glam::{DMat4, DVec3, DVec4};
 
@@ -58,7 +61,7 @@ fn vec3(v: DVec3) -> String {
 /// `key` is the plan's key of the scene the app draws ([`Document::shaded_scene`]): it
 /// says which terms the lighting has.
 pub fn app(doc: &Document, key: &Key) -> Result<Vec<super::File>, TemplateError> {
-    let shader = unsaid(&Program::worked(key)).shader.then(|| generated_shader(doc)).flatten();
+    let shader = unsaid(&Program::worked(key)).shader.then(|| general_shader(doc));
     Ok(vec![
         ("ofApp.h".into(), header(doc, shader.is_some())?),
         ("ofApp.cpp".into(), source(doc, key, shader.as_ref())?),
@@ -84,38 +87,33 @@ fn header(doc: &Document, shader: bool) -> Result<String, TemplateError> {
     ])
 }
 
-/// The generated shader the app draws with, where fixed-function GL cannot compute the
-/// scene's terms: the GLSL of `phonglab shader` for the view's shading (Gouraud for Flat),
-/// with its uniforms. `None` where the scene does not evaluate (the export refuses it
-/// before).
-fn generated_shader(doc: &Document) -> Option<crate::teach::shader::Shader> {
-    use crate::teach::shader::{Lang, ShaderShading, for_view};
-    let shading = match doc.view.shading {
-        Shading::Phong => ShaderShading::Phong,
-        Shading::Gouraud | Shading::Flat => ShaderShading::Gouraud,
-    };
-    for_view(doc, Lang::Glsl, shading).ok()
+/// The shaders the app draws with where fixed-function GL cannot compute the scene's
+/// terms: the general GLSL of [`super::general_shader`] (the whole of OpenGL's lighting,
+/// read from GL's state, so the app's oF and GL calls keep deciding the picture), for the
+/// view's shading (Gouraud for Flat): vertex and fragment stages.
+type Stages = (String, String);
+
+fn general_shader(doc: &Document) -> Stages {
+    super::general_shader::stages(doc.shaded_scene().rules, doc.view.shading == Shading::Phong)
 }
 
-/// A generated stage as a GL 2.1 compatibility context compiles it: GL's own vertex and
-/// normal (what `ofDrawSphere` sends) and GL's own matrices, which hold oF's camera, the
-/// spin and the cylinder's turn; the normal matrix is the modelview itself under the
-/// worksheet's rules.
+/// A general stage as oF compiles it: GL's own modelview, normal matrix (the modelview
+/// itself under the worksheet's rules) and rescale factor, which hold oF's camera, the
+/// spin and the cylinder's turn.
 fn compatibility_stage(text: &str, scene: &Scene) -> String {
     let normal = match scene.rules.normal_transform() {
         crate::model::rules::NormalTransform::Modelview => "mat3(gl_ModelViewMatrix)",
         crate::model::rules::NormalTransform::InverseTranspose => "gl_NormalMatrix",
     };
-    super::pyopengl::compatibility_profile(text)
-        .replace("uniform mat4 u_clip_from_object;", "#define u_clip_from_object gl_ModelViewProjectionMatrix")
-        .replace("uniform mat4 u_eye_from_object;", "#define u_eye_from_object gl_ModelViewMatrix")
+    text.replace("uniform mat4 u_eye_from_object;", "#define u_eye_from_object gl_ModelViewMatrix")
         .replace("uniform mat3 u_normal_matrix;", &format!("#define u_normal_matrix {normal}"))
+        .replace("uniform float u_rescale;", "#define u_rescale gl_NormalScale")
 }
 
-/// setup()'s lines that compile and link the generated shader.
-fn shader_setup(shader: &crate::teach::shader::Shader, scene: &Scene) -> String {
+/// setup()'s lines that compile and link the shaders.
+fn shader_setup(shader: &Stages, scene: &Scene) -> String {
     let mut s = format!("    // {}\n", comment(&t!("of-shader-comment")));
-    for (kind, text) in [("GL_VERTEX_SHADER", &shader.vertex), ("GL_FRAGMENT_SHADER", &shader.fragment)] {
+    for (kind, text) in [("GL_VERTEX_SHADER", &shader.0), ("GL_FRAGMENT_SHADER", &shader.1)] {
         s.push_str(&format!(
             "    shader.setupShaderFromSource({kind}, R\"GLSL(\n{})GLSL\");\n",
             compatibility_stage(text, scene)
@@ -125,25 +123,34 @@ fn shader_setup(shader: &crate::teach::shader::Shader, scene: &Scene) -> String 
     s
 }
 
-/// draw()'s lines that bind the generated shader and give its uniforms the values phonglab
-/// computes for the view (light positions in eye space, as GL keeps them); the matrices are
-/// GL's own ([`compatibility_stage`]).
-fn shader_begin(shader: &crate::teach::shader::Shader, scene: &Scene) -> String {
-    let mut s = String::from("    shader.begin();\n");
-    for (name, ty) in &shader.uniforms {
-        let Some(v) = crate::teach::shader::uniform_value(scene, &DMat4::IDENTITY, name) else { continue };
-        let v: Vec<String> = v.iter().map(|x| f(f64::from(*x))).collect();
-        let call = match *ty {
-            "float" => "setUniform1f",
-            "vec3" => "setUniform3f",
-            "vec4" => "setUniform4f",
-            // The matrices: GL's own.
-            _ => continue,
-        };
-        s.push_str(&format!("    shader.{call}(\"u_{name}\", {});\n", v.join(", ")));
-    }
-    s
+/// draw()'s lines that bind the shaders and give them, from GL's state, what GLSL has no
+/// variable for (the rest, lights and materials, they read themselves).
+fn shader_begin() -> String {
+    format!("    shader.begin();\n    // {}\n{}", comment(&t!("of-shader-state-comment")), SHADER_STATE)
 }
+
+/// The C++ that reads the state GLSL has no variable for and sets the shaders' uniforms.
+const SHADER_STATE: &str = r#"    {
+        GLint on[8];
+        for (int i = 0; i < 8; i++) on[i] = glIsEnabled(GL_LIGHT0 + i);
+        shader.setUniform1iv("u_light_on", on, 8);
+        GLint v = 0;
+        glGetIntegerv(GL_LIGHT_MODEL_LOCAL_VIEWER, &v);
+        shader.setUniform1i("u_local_viewer", v);
+        glGetIntegerv(GL_LIGHT_MODEL_TWO_SIDE, &v);
+        shader.setUniform1i("u_two_side", v);
+        glGetIntegerv(GL_LIGHT_MODEL_COLOR_CONTROL, &v);
+        shader.setUniform1i("u_separate_specular", v == GL_SEPARATE_SPECULAR_COLOR);
+        shader.setUniform1i("u_normal_mode", glIsEnabled(GL_NORMALIZE) ? 1 : glIsEnabled(GL_RESCALE_NORMAL) ? 2 : 0);
+        GLint mode = 0, face = 0;
+        glGetIntegerv(GL_COLOR_MATERIAL_PARAMETER, &mode);
+        glGetIntegerv(GL_COLOR_MATERIAL_FACE, &face);
+        int tracked = mode == GL_AMBIENT ? 1 : mode == GL_DIFFUSE ? 2 : mode == GL_SPECULAR ? 3
+            : mode == GL_EMISSION ? 4 : mode == GL_AMBIENT_AND_DIFFUSE ? 5 : 0;
+        shader.setUniform1i("u_color_material", glIsEnabled(GL_COLOR_MATERIAL) ? tracked : 0);
+        shader.setUniform1i("u_color_material_face", face == GL_FRONT ? 1 : face == GL_BACK ? 2 : 3);
+    }
+"#;
 
 /// The scene's lights that oF places (every light but those fixed to the eye), with
 /// their indices in the scene.
@@ -163,7 +170,7 @@ fn up_for(dir: DVec3) -> DVec3 {
     if dir.normalize_or_zero().cross(DVec3::Y).length() < 1e-3 { DVec3::X } else { DVec3::Y }
 }
 
-fn source(doc: &Document, key: &Key, shader: Option<&crate::teach::shader::Shader>) -> Result<String, TemplateError> {
+fn source(doc: &Document, key: &Key, shader: Option<&Stages>) -> Result<String, TemplateError> {
     let scene = doc.shaded_scene();
     SOURCE.fill(&[
         ("source_comment", Fill::Text(t!("of-source-comment"))),
@@ -248,7 +255,7 @@ fn light_calls(scene: &Scene, key: &Key) -> String {
 
 /// `draw()`: the background, the camera, the lighting model (raw GL for what oF cannot
 /// say), the lights, the material and the object.
-fn draw_body(doc: &Document, scene: &Scene, key: &Key, shader: Option<&crate::teach::shader::Shader>) -> String {
+fn draw_body(doc: &Document, scene: &Scene, key: &Key, shader: Option<&Stages>) -> String {
     let view = &doc.view;
     let mut s = String::new();
     let bg = view.background.map(|c| f64::from(c) * 255.0);
@@ -274,8 +281,8 @@ fn draw_body(doc: &Document, scene: &Scene, key: &Key, shader: Option<&crate::te
         s.push_str(&format!("    // {}\n", comment(&t!("of-back-material-comment"))));
         s.push_str(&raw_material("GL_BACK", back, key.rules.emission()));
     }
-    if let Some(sh) = shader {
-        s.push_str(&shader_begin(sh, scene));
+    if shader.is_some() {
+        s.push_str(&shader_begin());
     }
     s.push_str(&object(doc));
     if shader.is_some() {

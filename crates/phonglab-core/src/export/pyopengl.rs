@@ -5,11 +5,15 @@
 //! - The lighting state is set the fixed-function way: `glLightfv`, `glMaterialfv` and
 //!   `glLightModel*`, each light placed under the modelview that was current when its
 //!   `GL_POSITION` was set (so GL keeps it in eye space, as OpenGL does).
-//! - The shading is the scene's generated GLSL (`phonglab shader`), Gouraud or Phong, as
-//!   the demo draws with its own shaders. It reads the state back from GL (`glGetLightfv`,
-//!   `glGetMaterialfv`, the matrices): one state, set once, that the program's shader and a
-//!   fixed-function reader see alike. Its inputs are GL's own `gl_Vertex` and `gl_Normal`
-//!   (a compatibility-profile context), so GLU's and GLUT's objects feed it directly.
+//! - The shading is the general GLSL of [`super::general_shader`], Gouraud or Phong, as
+//!   the demo draws with its own shaders: the whole of OpenGL 2.1's lighting, reading GL's
+//!   state itself (`gl_LightSource[]`, `gl_FrontMaterial`, `gl_LightModel`, and what GLSL
+//!   has no variable for through uniforms `set_uniforms()` reads with `glGet*` each frame).
+//!   So every `glLight*`, `glMaterial*` or `glLightModel*` call a student edits changes the
+//!   picture as it would under fixed-function GL; only the rule set's departures from
+//!   OpenGL are fixed (`#define`s, and said in comments). `phonglab shader` keeps the
+//!   scene's specialised shaders. The inputs are GL's own `gl_Vertex` and `gl_Normal` (a
+//!   compatibility-profile context), so GLU's and GLUT's objects feed them directly.
 //! - The object: `gluSphere`, `glutSolidTeapot` or `gluCylinder` where phonglab builds
 //!   exactly what they draw; else (a mesh file, the demo's normals, another teapot
 //!   tessellation, capped cylinders) phonglab's triangles as arrays.
@@ -17,7 +21,7 @@
 
 use glam::DMat4;
 
-use super::python::{num, string};
+use super::python::num;
 use super::template::{Fill, Language, Template};
 use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::formats::document::Document;
@@ -27,32 +31,26 @@ use crate::model::scene::{Light, LightPlacement, Scene};
 use crate::model::view::{Framing, LightingSpace, ObjectKind, Shading, View};
 use crate::model::vocabulary::Quantity as Q;
 use crate::t;
-use crate::teach::shader::{Lang, ShaderShading};
 
 /// The program's text for `doc`, or why it cannot be written (a Flat view: the generated
 /// shaders are Gouraud and Phong).
 /// `key` is the plan's key of the scene the program draws ([`Document::shaded_scene`]):
 /// it says which terms the lighting has.
 pub fn program(doc: &Document, key: &Key) -> Result<String, String> {
-    let shading = match doc.view.shading {
-        Shading::Gouraud => ShaderShading::Gouraud,
-        Shading::Phong => ShaderShading::Phong,
+    let (per_fragment, shading_name) = match doc.view.shading {
+        Shading::Gouraud => (false, "Gouraud"),
+        Shading::Phong => (true, "Phong"),
         Shading::Flat => return Err(t!("export-flat-unsupported")),
     };
     let setup = doc.shaded_setup(crate::numerics::pow::PowFn::Exact);
-    let shader = crate::teach::shader::for_view(doc, Lang::Glsl, shading).map_err(|e| e.to_string())?;
+    let (vertex, fragment) = super::general_shader::stages(setup.scene.rules, per_fragment);
     let scene = &setup.scene;
-    let shading_name = match shading {
-        ShaderShading::Gouraud => "Gouraud",
-        ShaderShading::Phong => "Phong",
-    };
     let rules = match scene.rules.set {
         RuleSet::Worksheet => "worksheet",
         RuleSet::OpenGl => "opengl",
         RuleSet::PhongDemo => "phong-demo",
     };
     let background = doc.view.background.map(|c| num(f64::from(c))).join(", ");
-    let uniforms = shader.uniforms.iter().map(|(n, ty)| format!("({}, {})", string(n), string(ty)));
     let text = |s: String| Fill::Text(s);
     let code = |s: String| Fill::Code(s);
     PROGRAM
@@ -63,15 +61,12 @@ pub fn program(doc: &Document, key: &Key) -> Result<String, String> {
             ("rules_comment", text(t!("py-rules-comment"))),
             ("background", code(background)),
             ("shaders_comment", text(t!("py-shaders-comment"))),
-            ("vertex_shader", text(compatibility_profile(&shader.vertex))),
-            ("fragment_shader", text(compatibility_profile(&shader.fragment))),
-            ("uniforms_comment", text(t!("py-uniforms-comment"))),
-            ("uniforms", code(uniforms.collect::<Vec<_>>().join(", "))),
+            ("vertex_shader", text(vertex)),
+            ("fragment_shader", text(fragment)),
             ("matrices", code(matrices(&setup))),
             ("lighting_state", code(lighting_state(scene, key))),
             ("reader_doc", text(t!("py-reader-doc"))),
             ("normal_matrix_comment", text(t!("py-normal-matrix-comment"))),
-            ("color_reader", code(color_reader(scene))),
             ("object", code(object(&doc.view)?)),
         ])
         .map_err(|e| e.to_string())
@@ -80,14 +75,6 @@ pub fn program(doc: &Document, key: &Key) -> Result<String, String> {
 /// The program, whole, with its holes (see [`super::template`]).
 const PROGRAM: Template =
     Template { name: "phong_scene.py", language: Language::Python, text: include_str!("templates/phong_scene.py") };
-
-/// A generated shader adapted to a compatibility-profile context: the attributes are GL's
-/// own vertex and normal (what GLU's and GLUT's objects send).
-pub(super) fn compatibility_profile(text: &str) -> String {
-    text.replace("#version 330 core", "#version 330 compatibility")
-        .replace("layout(location = 0) in vec3 a_position;", "#define a_position (gl_Vertex.xyz / gl_Vertex.w)")
-        .replace("layout(location = 1) in vec3 a_normal;", "#define a_normal gl_Normal")
-}
 
 /// A matrix as a NumPy array of its rows.
 fn np_matrix(m: &DMat4) -> String {
@@ -151,8 +138,9 @@ fn rgba(c: glam::DVec4) -> String {
 /// The fixed-function calls that set the scene's lighting state.
 fn lighting_state(scene: &Scene, key: &Key) -> String {
     let mut s = format!(
-        "def set_lighting_state():\n    \"\"\"{}\"\"\"\n    glMatrixMode(GL_MODELVIEW)\n",
-        triple_quoted(&t!("py-state-doc"), false)
+        "def set_lighting_state():\n    \"\"\"{}\"\"\"\n    # {}\n    glMatrixMode(GL_MODELVIEW)\n",
+        triple_quoted(&t!("py-state-doc"), false),
+        comment(&t!("py-editable-comment"))
     );
     for (i, l) in scene.lights.iter().enumerate() {
         let light = format!("GL_LIGHT{i}");
@@ -337,18 +325,6 @@ fn object(view: &View) -> Result<String, String> {
         }
     }
     Ok(s + "\n\n")
-}
-
-/// Where `GL_COLOR_MATERIAL` is on, the reader's branch for `u_color`: GL's current
-/// colour (nothing otherwise, where no shader declares it).
-fn color_reader(scene: &Scene) -> String {
-    match scene.color_material {
-        Some(_) => {
-            "    if name == \"color\":\n        return np.array(glGetFloatv(GL_CURRENT_COLOR), dtype=np.float64)\n"
-                .into()
-        }
-        None => String::new(),
-    }
 }
 
 /// OpenGL's name for `q` (its `GL_` enum), from the vocabulary.

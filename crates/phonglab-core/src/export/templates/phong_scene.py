@@ -25,84 +25,36 @@ vertex_shader = """
 fragment_shader = """
 {{fragment_shader:block}}"""
 
-# {{uniforms_comment:comment}}
-UNIFORMS = [{{uniforms}}]
-
 {{matrices}}{{lighting_state}}def scalar(v):
     return float(np.asarray(v).reshape(-1)[0])
 
 
-def normalize(v):
-    n = np.linalg.norm(v)
-    return v / n if n > 0 else v
-
-
-def state_value(name):
+def set_uniforms(program):
     """{{reader_doc:doc}}"""
+    def location(name):
+        return glGetUniformLocation(program, name)
+
+    def flag(value):
+        return 1 if value else 0
+
     modelview = LIGHTING_MODELVIEW
     m3 = modelview[:3, :3]
-    if name.startswith("light"):
-        index, what = name[len("light"):].split("_", 1)
-        light = GL_LIGHT0 + int(index)
-        position = np.array(glGetLightfv(light, GL_POSITION), dtype=np.float64)
-        if what == "position":
-            return position
-        if what == "direction":
-            return normalize(position[:3])
-        if what == "halfway":
-            return normalize(normalize(position[:3]) + np.array([0.0, 0.0, 1.0]))
-        if what in ("ambient", "diffuse", "specular"):
-            return np.array(glGetLightfv(light, {"ambient": GL_AMBIENT, "diffuse": GL_DIFFUSE, "specular": GL_SPECULAR}[what]))[:3]
-        if what == "attenuation":
-            return np.array([scalar(glGetLightfv(light, k)) for k in (GL_CONSTANT_ATTENUATION, GL_LINEAR_ATTENUATION, GL_QUADRATIC_ATTENUATION)])
-        if what == "spot_direction":
-            return np.array(glGetLightfv(light, GL_SPOT_DIRECTION))
-        if what == "spot_cos_cutoff":
-            return np.array([math.cos(math.radians(scalar(glGetLightfv(light, GL_SPOT_CUTOFF))))])
-        if what == "spot_exponent":
-            return np.array([scalar(glGetLightfv(light, GL_SPOT_EXPONENT))])
-    if name.startswith("mat_") or name.startswith("back_"):
-        face = GL_FRONT if name.startswith("mat_") else GL_BACK
-        what = name.split("_", 1)[1]
-        key = {"ambient": GL_AMBIENT, "diffuse": GL_DIFFUSE, "specular": GL_SPECULAR, "shininess": GL_SHININESS}[what]
-        value = np.array(glGetMaterialfv(face, key), dtype=np.float64).reshape(-1)
-        return value if what == "diffuse" else value[:1] if what == "shininess" else value[:3]
-    if name == "clip_from_object":
-        projection = np.array(glGetFloatv(GL_PROJECTION_MATRIX)).T
-        drawing = np.array(glGetFloatv(GL_MODELVIEW_MATRIX)).T
-        return projection @ drawing
-    if name == "eye_from_object":
-        return modelview
-    if name == "normal_matrix":
-        # {{normal_matrix_comment:comment}}
-        return m3 if RULES == "worksheet" else np.linalg.inv(m3).T
-    if name == "rescale":
-        return np.array([1.0 / np.linalg.norm(np.linalg.inv(m3)[2])])
-    if name == "scene_color":
-        if RULES != "opengl":
-            return np.zeros(3)
-        emission = np.array(glGetMaterialfv(GL_FRONT, GL_EMISSION))[:3]
-        ambient = np.array(glGetMaterialfv(GL_FRONT, GL_AMBIENT))[:3]
-        return emission + ambient * np.array(glGetFloatv(GL_LIGHT_MODEL_AMBIENT))[:3]
-{{color_reader}}    raise KeyError(name)
-
-
-def set_uniforms(program):
-    for name, kind in UNIFORMS:
-        location = glGetUniformLocation(program, "u_" + name)
-        if location < 0:
-            continue
-        value = np.asarray(state_value(name), dtype=np.float32)
-        if kind == "mat4":
-            glUniformMatrix4fv(location, 1, GL_TRUE, value)
-        elif kind == "mat3":
-            glUniformMatrix3fv(location, 1, GL_TRUE, value)
-        elif kind == "vec4":
-            glUniform4fv(location, 1, value)
-        elif kind == "vec3":
-            glUniform3fv(location, 1, value)
-        else:
-            glUniform1f(location, float(value[0]))
+    # {{normal_matrix_comment:comment}}
+    normal_matrix = m3 if RULES == "worksheet" else np.linalg.inv(m3).T
+    glUniformMatrix4fv(location("u_eye_from_object"), 1, GL_TRUE, np.asarray(modelview, dtype=np.float32))
+    glUniformMatrix3fv(location("u_normal_matrix"), 1, GL_TRUE, np.asarray(normal_matrix, dtype=np.float32))
+    glUniform1f(location("u_rescale"), 1.0 / np.linalg.norm(np.linalg.inv(m3)[2]))
+    glUniform1iv(location("u_light_on"), 8, np.array([flag(glIsEnabled(GL_LIGHT0 + i)) for i in range(8)], dtype=np.int32))
+    glUniform1i(location("u_local_viewer"), flag(scalar(glGetIntegerv(GL_LIGHT_MODEL_LOCAL_VIEWER))))
+    glUniform1i(location("u_two_side"), flag(scalar(glGetIntegerv(GL_LIGHT_MODEL_TWO_SIDE))))
+    control = int(scalar(glGetIntegerv(GL_LIGHT_MODEL_COLOR_CONTROL)))
+    glUniform1i(location("u_separate_specular"), flag(control == GL_SEPARATE_SPECULAR_COLOR))
+    glUniform1i(location("u_normal_mode"), 1 if glIsEnabled(GL_NORMALIZE) else 2 if glIsEnabled(GL_RESCALE_NORMAL) else 0)
+    tracked = {int(GL_AMBIENT): 1, int(GL_DIFFUSE): 2, int(GL_SPECULAR): 3, int(GL_EMISSION): 4, int(GL_AMBIENT_AND_DIFFUSE): 5}
+    faces = {int(GL_FRONT): 1, int(GL_BACK): 2, int(GL_FRONT_AND_BACK): 3}
+    mode = tracked.get(int(scalar(glGetIntegerv(GL_COLOR_MATERIAL_PARAMETER))), 0)
+    glUniform1i(location("u_color_material"), mode if glIsEnabled(GL_COLOR_MATERIAL) else 0)
+    glUniform1i(location("u_color_material_face"), faces.get(int(scalar(glGetIntegerv(GL_COLOR_MATERIAL_FACE))), 3))
 
 {{object}}def draw():
     glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1.0)
