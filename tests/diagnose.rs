@@ -93,7 +93,7 @@ fn mistakes_made_in_the_scene_file_are_named_first() {
         assert_eq!(v["verdict"], "wrong", "{id}: {v:#}");
         assert_eq!(v["causes"][0]["id"], id, "{id}: {v:#}");
         let score = v["causes"][0]["score"].as_f64().unwrap();
-        assert!(score >= 0.98 && score <= 1.0, "{id}: {score}");
+        assert!((0.98..=1.0).contains(&score), "{id}: {score}");
         assert!(v["right_score"].as_f64().unwrap() < 0.99, "{id}: {v:#}");
     }
 }
@@ -133,10 +133,7 @@ fn another_scene_is_unexplained_and_its_difference_is_written_and_probed() {
     let diff = dir.join("diff.png");
     let size = SIZE.to_string();
     let args = ["diagnose", "--scene", right.to_str().unwrap(), "--image", image.to_str().unwrap()];
-    let o = phonglab_in(
-        "pt_PT.UTF-8",
-        &[&args[..], &["--size", &size, "--diff", diff.to_str().unwrap()]].concat(),
-    );
+    let o = phonglab_in("pt_PT.UTF-8", &[&args[..], &["--size", &size, "--diff", diff.to_str().unwrap()]].concat());
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(text.contains("Nenhum erro que o phonglab conheça explica esta imagem"), "{text}");

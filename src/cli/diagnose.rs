@@ -117,7 +117,10 @@ pub fn run(a: &DiagnoseArgs) -> Result<()> {
         None => None,
     };
     if a.json {
-        println!("{}", phonglab_core::escape::json::text(&serde_json::to_string_pretty(&json(&d, &image, size, probed.as_ref()))?));
+        println!(
+            "{}",
+            phonglab_core::escape::json::text(&serde_json::to_string_pretty(&json(&d, &image, size, probed.as_ref()))?)
+        );
         return Ok(());
     }
     let mut out = verdict_lines(&d);

@@ -205,7 +205,11 @@ pub const MISTAKES: [PictureMistake; 12] = [
         message: "wrong-cause-reflection-for-halfway",
         apply: reflection_for_halfway,
     },
-    PictureMistake { id: "gouraud-for-phong", message: "wrong-cause-gouraud-misses-highlight", apply: gouraud_for_phong },
+    PictureMistake {
+        id: "gouraud-for-phong",
+        message: "wrong-cause-gouraud-misses-highlight",
+        apply: gouraud_for_phong,
+    },
     PictureMistake {
         id: "specular-without-gate",
         message: "wrong-cause-specular-facing-away",
@@ -220,7 +224,11 @@ pub const MISTAKES: [PictureMistake; 12] = [
     PictureMistake { id: "viewer-swapped", message: "diagnose-viewer-swapped", apply: viewer_swapped },
     PictureMistake { id: "flipped-normals", message: "diagnose-flipped-normals", apply: flipped_normals },
     PictureMistake { id: "two-sided-off", message: "diagnose-two-sided-off", apply: two_sided_off },
-    PictureMistake { id: "attenuation-left-out", message: "diagnose-attenuation-left-out", apply: attenuation_left_out },
+    PictureMistake {
+        id: "attenuation-left-out",
+        message: "diagnose-attenuation-left-out",
+        apply: attenuation_left_out,
+    },
     PictureMistake { id: "spot-left-out", message: "diagnose-spot-left-out", apply: spot_left_out },
 ];
 
@@ -290,7 +298,8 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
     }
     let key = |t: &Tried| t.matched.map_or(-1.0, |m| m.score);
     tried.sort_by(|a, b| key(b).total_cmp(&key(a)));
-    let causes: Vec<Tried> = tried.iter().filter(|t| key(t) >= EXPLAINED_AT && key(t) >= exact.score + MARGIN).copied().collect();
+    let causes: Vec<Tried> =
+        tried.iter().filter(|t| key(t) >= EXPLAINED_AT && key(t) >= exact.score + MARGIN).copied().collect();
     let verdict = if exact.score >= RIGHT_AT {
         Verdict::Right
     } else if causes.is_empty() {
