@@ -199,3 +199,20 @@ fn mesa_pictures_are_right_and_its_gouraud_picture_is_named() {
         assert_eq!(v["causes"][0]["id"], "gouraud-for-phong", "{name}: {v:#}");
     }
 }
+
+/// The PyOpenGL export run by Mesa (`tests/data/diagnose_mesa/`, its README says how):
+/// as exported it is right; with the light's position given before the camera, or the
+/// attenuation set to none, in its GL calls, the mistake is named.
+#[test]
+fn the_pyopengl_export_under_mesa_is_right_and_its_edited_state_is_named() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let scene = root.join("assets/scenes/spotlight.toml");
+    let data = root.join("tests/data/diagnose_mesa");
+    let v = diagnose_json(&scene, &data.join("spotlight.png"));
+    assert_eq!(v["verdict"], "right", "{v:#}");
+    for id in ["light-before-view", "attenuation-left-out"] {
+        let v = diagnose_json(&scene, &data.join(format!("spotlight-{id}.png")));
+        assert_eq!(v["verdict"], "wrong", "{id}: {v:#}");
+        assert_eq!(v["causes"][0]["id"], id, "{id}: {v:#}");
+    }
+}
