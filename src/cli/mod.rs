@@ -6,6 +6,7 @@
 pub mod bench;
 pub mod case;
 pub mod cost;
+pub mod diagnose;
 pub mod eval;
 pub mod exercise;
 pub mod explain;
@@ -148,6 +149,9 @@ pub enum Command {
     /// approximations, timed and compared with a per-pixel f64 reference; writes
     /// cost.csv and cost.png.
     Cost(cost::CostArgs),
+    /// A student's picture of a scene, checked: right, which mistake made it, or none
+    /// phonglab knows; a difference image and the probe where it differs most.
+    Diagnose(diagnose::DiagnoseArgs),
     /// Measure: the renderer, the lighting.
     #[command(subcommand)]
     Bench(bench::BenchCommand),
@@ -180,6 +184,7 @@ pub fn run(command: Command) -> ExitCode {
         Command::Bench(b) => bench::run(&b),
         Command::Render(a) => render::run(&a),
         Command::Probe(a) => probe::run(&a),
+        Command::Diagnose(a) => diagnose::run(&a),
         Command::Case(a) => case::run(&a),
         Command::Cost(a) => cost::run_args(&a),
         // The binary hands it to the window (`crate::app`), which it draws.

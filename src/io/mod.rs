@@ -22,4 +22,5 @@ pub mod scenes;
 pub mod set_journal;
 pub mod sheet_pdf;
 pub mod student_code;
+pub mod student_png;
 pub mod zip;

@@ -1496,3 +1496,27 @@ material-name-green-rubber = green rubber
 material-name-red-rubber = red rubber
 material-name-white-rubber = white rubber
 material-name-yellow-rubber = yellow rubber
+
+## phonglab diagnose: a student's picture checked
+cli-diagnose = A student's picture of a scene, checked: right, which mistake made it, or none phonglab knows; a difference image and the probe where it differs most
+cli-arg-diagnose-scene = The scene the picture was made for (TOML)
+cli-arg-diagnose-image = The student's picture (PNG), made with the export's camera and size
+cli-arg-diagnose-size = The picture's width and height in pixels: the export's window is 512
+cli-arg-diagnose-diff = Write the difference image (the picture against the right one) to this PNG
+cli-arg-diagnose-json = Print JSON (for scripts and tests) instead of the report
+file-kind-pictures = pictures
+diagnose-bad-png = { $path } cannot be read as a PNG picture: { $reason }
+diagnose-wrong-size = { $path } is { $got } pixels; the picture of this scene is { $expected } (the export's window; another size with --size)
+diagnose-normalize-off = GL_NORMALIZE left off under a modelview that scales: the normals are not of length 1
+diagnose-viewer-swapped = The local and the infinite viewer swapped (GL_LIGHT_MODEL_LOCAL_VIEWER the other way)
+diagnose-flipped-normals = The normals point inwards (flipped)
+diagnose-two-sided-off = Two-sided lighting off: the back faces are lit with the front's normals
+diagnose-attenuation-left-out = The attenuation left out
+diagnose-spot-left-out = The spotlight's cone left out (cutoff 180)
+diagnose-verdict-right = Right: the right picture explains { $score } of the object's pixels.
+diagnose-verdict-wrong = Wrong. The closest mistake: { $cause } ({ $id }); the picture with that mistake explains { $score } of the object's pixels, the right picture { $right }.
+diagnose-also = It also explains the picture: { $cause } ({ $id }), { $score }.
+diagnose-verdict-unexplained = No mistake phonglab knows explains this picture: the right picture explains { $right } of the object's pixels; the closest mistake, { $cause } ({ $id }), { $score }.
+diagnose-invisible = Not tried (this scene cannot show them): { $ids }
+diagnose-diff-written = Difference image written: { $path }
+diagnose-worst = The pixel that differs most: ({ $x }, { $y }), your picture { $image } against the right one { $right }. The probe of the right picture there:

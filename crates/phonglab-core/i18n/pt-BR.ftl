@@ -1496,3 +1496,27 @@ material-name-green-rubber = borracha verde
 material-name-red-rubber = borracha vermelha
 material-name-white-rubber = borracha branca
 material-name-yellow-rubber = borracha amarela
+
+## phonglab diagnose: a imagem de um aluno conferida
+cli-diagnose = A imagem que um aluno fez de uma cena, conferida: certa, qual erro a fez, ou nenhum que o phonglab conheça; uma imagem das diferenças e a sonda onde ela mais difere
+cli-arg-diagnose-scene = A cena para a qual a imagem foi feita (TOML)
+cli-arg-diagnose-image = A imagem do aluno (PNG), feita com a câmera e o tamanho da exportação
+cli-arg-diagnose-size = A largura e a altura da imagem em pixels: a janela da exportação tem 512
+cli-arg-diagnose-diff = Gravar a imagem das diferenças (a imagem contra a certa) neste PNG
+cli-arg-diagnose-json = Imprimir JSON (para scripts e testes) em vez do relatório
+file-kind-pictures = imagens
+diagnose-bad-png = { $path } não pode ser lido como uma imagem PNG: { $reason }
+diagnose-wrong-size = { $path } tem { $got } pixels; a imagem desta cena tem { $expected } (a janela da exportação; outro tamanho com --size)
+diagnose-normalize-off = GL_NORMALIZE deixado desligado com uma modelview que escala: as normais não têm comprimento 1
+diagnose-viewer-swapped = O observador local e o observador no infinito trocados (GL_LIGHT_MODEL_LOCAL_VIEWER ao contrário)
+diagnose-flipped-normals = As normais apontam para dentro (invertidas)
+diagnose-two-sided-off = A iluminação dos dois lados desligada: as faces de trás são iluminadas com as normais da frente
+diagnose-attenuation-left-out = A atenuação esquecida
+diagnose-spot-left-out = O cone do spot esquecido (corte em 180)
+diagnose-verdict-right = Certa: a imagem certa explica { $score } dos pixels do objeto.
+diagnose-verdict-wrong = Errada. O erro mais próximo: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos pixels do objeto, a imagem certa { $right }.
+diagnose-also = Também explica a imagem: { $cause } ({ $id }), { $score }.
+diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos pixels do objeto; o erro mais próximo, { $cause } ({ $id }), { $score }.
+diagnose-invisible = Não testados (esta cena não consegue mostrá-los): { $ids }
+diagnose-diff-written = Imagem das diferenças gravada: { $path }
+diagnose-worst = O pixel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:

@@ -1,0 +1,160 @@
+//! `phonglab diagnose`'s core: each picture mistake, drawn by phonglab, shifted a pixel and
+//! with 8-bit noise, is named first; the right picture so changed is "right"; a picture of
+//! something else is "unexplained".
+
+use glam::{DMat4, DVec3, DVec4};
+use phonglab_core::mesh::Mesh;
+use phonglab_core::mesh::cylinder::glu_cylinder;
+use phonglab_core::mesh::sphere::glu_sphere;
+use phonglab_core::model::scene::{Light, LightPlacement, NormalMode, Scene};
+use phonglab_core::teach::diagnose::{Drawing, MISTAKES, Verdict, diagnose};
+use phonglab_core::{EvalOptions, Rules, ShadingMode};
+
+const SIZE: usize = 96;
+
+/// A lit scene that shows every mistake but two-sided lighting: a sphere under a
+/// non-uniform scale, a spotlight with attenuation placed in the world, the camera off to
+/// the side, Phong shading.
+fn sphere_scene() -> Drawing {
+    let scale = DVec3::new(0.75, 0.5, 0.6);
+    let mut s = Scene {
+        rules: Rules::OPENGL,
+        world_from_object: DMat4::from_scale(scale),
+        normal_mode: NormalMode::Normalize,
+        ..Scene::default()
+    };
+    s.light_model.ambient = DVec4::new(0.1, 0.1, 0.1, 1.0);
+    s.material.ambient = DVec4::new(0.5, 0.2, 0.1, 1.0);
+    s.material.diffuse = DVec4::new(0.7, 0.25, 0.15, 1.0);
+    s.material.specular = DVec4::new(0.8, 0.8, 0.8, 1.0);
+    s.material.shininess = 20.0;
+    let mut l = Light::gl_default(0);
+    l.position = DVec4::new(1.5, 2.0, 2.0, 1.0);
+    l.spot_direction = DVec3::new(-1.5, -2.0, -2.0).normalize();
+    l.spot_cutoff = 20.0;
+    l.spot_exponent = 2.0;
+    l.attenuation = [0.4, 0.2, 0.05];
+    l.placement = LightPlacement::World;
+    s.lights = vec![l];
+    s.eye_from_world =
+        phonglab_core::transform::try_look_at(DVec3::new(-1.5, 0.8, 2.5), DVec3::ZERO, DVec3::Y).expect("a camera");
+    drawing(s, glu_sphere(1.0, 16, 16))
+}
+
+/// An open cylinder seen from above, its inside lit from both sides.
+fn cylinder_scene() -> Drawing {
+    let mut d = sphere_scene();
+    d.scene.world_from_object = DMat4::IDENTITY;
+    d.scene.lights[0].spot_cutoff = 180.0;
+    d.scene.light_model.two_sided = true;
+    d.scene.eye_from_world =
+        phonglab_core::transform::try_look_at(DVec3::new(0.0, 2.5, 2.0), DVec3::ZERO, DVec3::Y).expect("a camera");
+    let mut mesh = glu_cylinder(0.6, 0.6, 1.0, 24, 2, false);
+    let lift = |p: glam::Vec3| glam::Vec3::new(p.x, p.z - 0.5, -p.y);
+    mesh.positions = mesh.positions.into_iter().map(lift).collect();
+    mesh.normals = mesh.normals.into_iter().map(|n| glam::Vec3::new(n.x, n.z, -n.y)).collect();
+    d.mesh = mesh;
+    d.clip_from_object = projection() * d.scene.eye_from_object();
+    d
+}
+
+/// The scene that shows mistake `id`: the cylinder for two-sided lighting; for
+/// `GL_NORMALIZE` the sphere lit per vertex (per fragment, the shader's own `normalize`
+/// hides it, as in OpenGL).
+fn scene_for(id: &str) -> Drawing {
+    match id {
+        "two-sided-off" => cylinder_scene(),
+        "normal-not-normalised" => Drawing { mode: ShadingMode::Gouraud, ..sphere_scene() },
+        _ => sphere_scene(),
+    }
+}
+
+fn projection() -> DMat4 {
+    phonglab_core::transform::perspective(40.0, 1.0, 0.1, 100.0)
+}
+
+fn drawing(scene: Scene, mesh: Mesh) -> Drawing {
+    Drawing {
+        clip_from_object: projection() * scene.eye_from_object(),
+        scene,
+        mesh,
+        mode: ShadingMode::Phong,
+        background: [0.1, 0.1, 0.15],
+        options: EvalOptions::default(),
+    }
+}
+
+/// `rgba` moved one pixel right and down, with noise of up to ±2 levels (a fixed sequence).
+fn shifted_and_noised(rgba: &[u8], bg: [u8; 3]) -> Vec<u8> {
+    let mut out = vec![255u8; rgba.len()];
+    let mut seed = 12345u32;
+    for y in 0..SIZE {
+        for x in 0..SIZE {
+            let o = (y * SIZE + x) * 4;
+            let from = (x > 0 && y > 0).then(|| ((y - 1) * SIZE + x - 1) * 4);
+            for c in 0..3 {
+                seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12345);
+                let noise = ((seed >> 16) % 5) as i32 - 2;
+                let v = from.map_or(bg[c], |f| rgba[f + c]) as i32 + noise;
+                out[o + c] = v.clamp(0, 255) as u8;
+            }
+        }
+    }
+    out
+}
+
+fn wrong_picture(right: &Drawing, mistake: usize) -> Vec<u8> {
+    let mut d = right.clone();
+    (MISTAKES[mistake].apply)(&mut d);
+    let (_, rgba, _) = d.draw(SIZE).expect("drawn");
+    shifted_and_noised(&rgba, right.background8())
+}
+
+#[test]
+fn each_mistake_shifted_and_noised_is_named_first() {
+    let mut report = Vec::new();
+    for (i, m) in MISTAKES.iter().enumerate() {
+        let right = scene_for(m.id);
+        let image = wrong_picture(&right, i);
+        let d = diagnose(&right, &image, SIZE).expect("diagnosed");
+        let scores: Vec<String> = d
+            .tried
+            .iter()
+            .map(|t| format!("{}={:.4}", MISTAKES[t.mistake].id, t.matched.map_or(-1.0, |x| x.score)))
+            .collect();
+        report.push(format!("{}: right {:.4}; {}", m.id, d.right.score, scores.join(" ")));
+        assert_eq!(d.verdict, Verdict::Wrong, "{}", report.join("\n"));
+        assert_eq!(MISTAKES[d.causes[0].mistake].id, m.id, "{}", report.join("\n"));
+    }
+    println!("{}", report.join("\n"));
+}
+
+#[test]
+fn the_right_picture_shifted_and_noised_is_right() {
+    for right in [sphere_scene(), cylinder_scene()] {
+        let (_, rgba, _) = right.draw(SIZE).expect("drawn");
+        let d = diagnose(&right, &shifted_and_noised(&rgba, right.background8()), SIZE).expect("diagnosed");
+        println!("right: {:?}", d.right);
+        assert_eq!(d.verdict, Verdict::Right);
+        assert!(d.right.score >= 0.999, "{:?}", d.right);
+        assert!(d.causes.is_empty());
+    }
+}
+
+#[test]
+fn a_picture_of_something_else_is_unexplained() {
+    let right = sphere_scene();
+    // Another material under another light: green, lit from the left.
+    let mut other = right.clone();
+    other.scene.material.diffuse = DVec4::new(0.1, 0.7, 0.2, 1.0);
+    other.scene.lights[0].position = DVec4::new(-2.0, 0.0, 1.0, 1.0);
+    let (_, rgba, _) = other.draw(SIZE).expect("drawn");
+    let d = diagnose(&right, &rgba, SIZE).expect("diagnosed");
+    let best = d.tried[0].matched.map_or(-1.0, |m| m.score);
+    println!("unrelated: right {:.4}, best {best:.4}", d.right.score);
+    assert_eq!(d.verdict, Verdict::Unexplained);
+    assert!(d.causes.is_empty());
+    // A flat grey square is nothing like it either.
+    let grey: Vec<u8> = (0..SIZE * SIZE).flat_map(|_| [128, 128, 128, 255]).collect();
+    assert_eq!(diagnose(&right, &grey, SIZE).expect("diagnosed").verdict, Verdict::Unexplained);
+}

@@ -1,0 +1,175 @@
+//! `phonglab diagnose`: a student's picture of a scene, compared with the right picture and
+//! with each picture mistake's ([`phonglab_core::teach::diagnose`]): the verdict, the
+//! closest mistake with its score, a difference image and the probe's numbers at the pixel
+//! that differs most.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::Result;
+use clap::Args;
+use phonglab_core::teach::diagnose::{Diagnosis, Drawing, MISTAKES, Tried, Verdict, diagnose};
+use phonglab_core::teach::picture_match::difference_image;
+use phonglab_core::{PowFn, probe, probe_report, t};
+
+use super::render::ShadedInput;
+
+/// `phonglab diagnose`.
+#[derive(Args, Debug)]
+pub struct DiagnoseArgs {
+    /// The scene the picture was made for (TOML).
+    #[arg(long)]
+    pub scene: PathBuf,
+    /// The student's picture (PNG), made with the export's camera and size.
+    #[arg(long)]
+    pub image: PathBuf,
+    /// The picture's width and height in pixels: the export's window is 512.
+    #[arg(long, default_value_t = 512, value_parser = clap::value_parser!(u32).range(8..=4096))]
+    pub size: u32,
+    /// Write the difference image (the picture against the right one) to this PNG.
+    #[arg(long, value_name = "FILE.png")]
+    pub diff: Option<PathBuf>,
+    /// Print JSON (for scripts and tests) instead of the report.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// The scene drawn as the export draws it: its shaded view at `size` pixels square.
+fn right_drawing(a: &DiagnoseArgs, outputs: &[&Path]) -> Result<Drawing> {
+    let input = ShadedInput {
+        object: None,
+        obj: None,
+        shading: None,
+        size: a.size,
+        scene: Some(a.scene.clone()),
+        preset: None,
+        bench_frame: None,
+        pow: PowFn::Exact,
+        cull: false,
+        frame: None,
+        correct: Vec::new(),
+    };
+    let loaded = input.load(outputs)?;
+    Ok(Drawing::of(&loaded.job()))
+}
+
+/// A share of pixels as a percentage in the user's decimal mark.
+fn percent(score: f64) -> String {
+    phonglab_core::locale::decimal(&format!("{:.1} %", 100.0 * score))
+}
+
+fn score_of(t: &Tried) -> f64 {
+    t.matched.map_or(0.0, |m| m.score)
+}
+
+/// The report's verdict lines.
+fn verdict_lines(d: &Diagnosis) -> Vec<String> {
+    let right = percent(d.right.score);
+    let named = |t: &Tried| (MISTAKES[t.mistake].words(), MISTAKES[t.mistake].id, percent(score_of(t)));
+    match d.verdict {
+        Verdict::Right => vec![t!("diagnose-verdict-right", score = right)],
+        Verdict::Wrong => {
+            let (cause, id, score) = named(&d.causes[0]);
+            let mut out = vec![t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right)];
+            for c in &d.causes[1..] {
+                let (cause, id, score) = named(c);
+                out.push(t!("diagnose-also", cause = cause, id = id, score = score));
+            }
+            out
+        }
+        Verdict::Unexplained => {
+            let closest = d.tried.first().filter(|t| t.matched.is_some());
+            let (cause, id, score) = closest.map(named).unwrap_or_default();
+            vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
+        }
+    }
+}
+
+/// The ids of the mistakes this scene cannot show.
+fn invisible(d: &Diagnosis) -> Vec<&'static str> {
+    d.tried.iter().filter(|t| t.matched.is_none()).map(|t| MISTAKES[t.mistake].id).collect()
+}
+
+/// The pixel's bytes as "(r, g, b)".
+fn bytes_at(rgba: &[u8], size: usize, (x, y): (usize, usize)) -> [u8; 3] {
+    let i = (y * size + x) * 4;
+    [rgba[i], rgba[i + 1], rgba[i + 2]]
+}
+
+/// Runs `phonglab diagnose`.
+pub fn run(a: &DiagnoseArgs) -> Result<()> {
+    use crate::io::same_file::Input;
+    let outputs: Vec<&Path> = a.diff.iter().map(PathBuf::as_path).collect();
+    let inputs = [(a.scene.as_path(), Input::Scene), (a.image.as_path(), Input::Any)];
+    crate::io::same_file::refuse_onto(&outputs, &inputs).map_err(anyhow::Error::msg)?;
+    for o in &outputs {
+        crate::io::atomic_write::check_file_destination(o)?;
+    }
+    let right = right_drawing(a, &outputs)?;
+    let size = a.size as usize;
+    let image = crate::io::student_png::read(&a.image, size).map_err(anyhow::Error::msg)?;
+    let d = diagnose(&right, &image, size)?;
+    if let Some(diff) = &a.diff {
+        crate::io::image::write_png(diff, size, size, &difference_image(&d.picture, &image))?;
+    }
+    let worst = (d.right.worst_levels > 0).then_some(d.right.worst);
+    let probed = match worst {
+        Some((x, y)) => probe::probe(&d.renderer, &right.job(), x, y)?,
+        None => None,
+    };
+    if a.json {
+        println!(
+            "{}",
+            phonglab_core::escape::json::text(&serde_json::to_string_pretty(&json(&d, &image, size, probed.as_ref()))?)
+        );
+        return Ok(());
+    }
+    let mut out = verdict_lines(&d);
+    let hidden = invisible(&d);
+    if !hidden.is_empty() {
+        out.push(t!("diagnose-invisible", ids = hidden.join(", ")));
+    }
+    if let Some(diff) = &a.diff {
+        out.push(t!("diagnose-diff-written", path = crate::io::reasons::shown(diff)));
+    }
+    if let Some(p) = worst {
+        let show = |b: [u8; 3]| format!("({}, {}, {})", b[0], b[1], b[2]);
+        out.push(t!(
+            "diagnose-worst",
+            x = p.0 as i64,
+            y = p.1 as i64,
+            image = show(bytes_at(&image, size, p)),
+            right = show(bytes_at(&d.picture, size, p))
+        ));
+        match &probed {
+            Some(pr) => out.push(probe_report::text(&probe_report::report(pr))),
+            None => out.push(t!("probe-uncovered", x = p.0 as i64, y = p.1 as i64)),
+        }
+    }
+    println!("{}", phonglab_core::escape::terminal::lines(&out.join("\n")));
+    Ok(())
+}
+
+/// The JSON: the verdict, the causes with their scores (best first), every mistake tried,
+/// the right picture's score and the pixel that differs most with the probe there.
+fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>) -> serde_json::Value {
+    use serde_json::json;
+    let cause = |t: &Tried| json!({ "id": MISTAKES[t.mistake].id, "score": score_of(t) });
+    let worst = (d.right.worst_levels > 0).then(|| {
+        let p = d.right.worst;
+        json!({
+            "x": p.0, "y": p.1, "levels": d.right.worst_levels,
+            "image": bytes_at(image, size, p), "right": bytes_at(&d.picture, size, p),
+            "probe": probed.and_then(|pr| serde_json::to_value(pr).ok()),
+        })
+    });
+    json!({
+        "verdict": d.verdict.name(),
+        "causes": d.causes.iter().map(cause).collect::<Vec<_>>(),
+        "right_score": d.right.score,
+        "pixels": d.right.pixels,
+        "size": size,
+        "tried": d.tried.iter().filter(|t| t.matched.is_some()).map(cause).collect::<Vec<_>>(),
+        "not_visible": invisible(d),
+        "worst": worst,
+    })
+}

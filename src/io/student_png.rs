@@ -1,0 +1,44 @@
+//! A student's picture read as hostile input: the file capped before it is read
+//! ([`crate::io::input_file::read_capped`]), its size checked against the size expected
+//! from the header alone, before any pixel is decoded, and the decoder's memory capped.
+
+use std::path::Path;
+
+use phonglab_core::t;
+
+/// The largest picture file read: a 512 x 512 RGBA PNG without compression is 1 MiB.
+pub const MAX_PICTURE_BYTES: u64 = 32 << 20;
+
+/// The most the decoder may allocate: a 4096 x 4096 RGBA picture.
+const MAX_DECODED_BYTES: usize = 64 << 20;
+
+/// Reads the PNG at `path`, which must be `size` pixels square, as RGBA8 (rows top to
+/// bottom); colour types, 16-bit channels and palettes are converted. The messages say
+/// what is wrong in the user's language: not a PNG, damaged, or the wrong size (with the
+/// size expected).
+pub fn read(path: &Path, size: usize) -> Result<Vec<u8>, String> {
+    let shown = crate::io::reasons::shown(path);
+    let bytes = crate::io::input_file::read_capped(path, MAX_PICTURE_BYTES, &t!("file-kind-pictures"))?;
+    let limits = png::Limits { bytes: MAX_DECODED_BYTES };
+    let mut decoder = png::Decoder::new_with_limits(std::io::Cursor::new(bytes.as_slice()), limits);
+    decoder.set_transformations(png::Transformations::normalize_to_color8() | png::Transformations::ALPHA);
+    let bad = |e: &dyn std::fmt::Display| t!("diagnose-bad-png", path = shown.clone(), reason = e.to_string());
+    let mut reader = decoder.read_info().map_err(|e| bad(&e))?;
+    let (w, h) = (reader.info().width as usize, reader.info().height as usize);
+    if (w, h) != (size, size) {
+        return Err(t!(
+            "diagnose-wrong-size",
+            path = shown.clone(),
+            got = format!("{w}x{h}"),
+            expected = format!("{size}x{size}")
+        ));
+    }
+    let mut buf = vec![0; reader.output_buffer_size().ok_or_else(|| bad(&"too large"))?];
+    let info = reader.next_frame(&mut buf).map_err(|e| bad(&e))?;
+    buf.truncate(info.buffer_size());
+    match info.color_type {
+        png::ColorType::Rgba => Ok(buf),
+        png::ColorType::GrayscaleAlpha => Ok(buf.chunks_exact(2).flat_map(|c| [c[0], c[0], c[0], c[1]]).collect()),
+        other => Err(bad(&format!("{other:?}"))),
+    }
+}
