@@ -312,11 +312,12 @@ fn a_frame_looks_the_shaded_mesh_up_once_and_the_director_reuses_it() {
         mesh_lookups() - before
     };
     let shaded_alone = per_frame(&mut h);
-    // The probe on, pinned on the picture, and the director open on the shaded object.
-    let on = h.state().doc.with_vertex_as_shaded(phonglab_core::Vertex::from_f32(
-        glam::Vec3::new(0.0, 0.0, 0.5),
-        glam::Vec3::Z,
-    ));
+    // The probe on, following the pointer over the picture, and the director open on the
+    // shaded object.
+    let on = h
+        .state()
+        .doc
+        .with_vertex_as_shaded(phonglab_core::Vertex::from_f32(glam::Vec3::new(0.0, 0.0, 0.5), glam::Vec3::Z));
     h.state_mut().doc = on;
     h.state_mut().view_options.probe.on = true;
     h.state_mut().director.open = true;

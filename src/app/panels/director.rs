@@ -11,8 +11,8 @@ use std::sync::Arc;
 use egui::{Color32, Pos2, Rect, Sense, Stroke, Ui};
 use glam::{DMat3, DMat4, DVec3, DVec4};
 use phonglab_core::director::{self, Kind, Space, Stage};
-use phonglab_core::transform::{of_camera_distance, perspective};
 use phonglab_core::mesh::Mesh;
+use phonglab_core::transform::{of_camera_distance, perspective};
 use phonglab_core::{Document, Framing, Scene, View, locale, t};
 
 use crate::app::panels::shaded::cache::mesh_for;

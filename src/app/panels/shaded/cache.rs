@@ -178,7 +178,13 @@ impl ViewCache {
     /// The GPU picture of the shaded view of `viewed` at `px` pixels square (slot `slot`),
     /// or why it cannot be drawn on the GPU (a program the driver refused is not tried
     /// again).
-    pub(crate) fn gpu_picture(&mut self, viewed: Viewed<'_>, pow: PowFn, px: usize, slot: u64) -> Result<GpuImage, String> {
+    pub(crate) fn gpu_picture(
+        &mut self,
+        viewed: Viewed<'_>,
+        pow: PowFn,
+        px: usize,
+        slot: u64,
+    ) -> Result<GpuImage, String> {
         let doc = viewed.doc;
         if let Some(e) = self.gpu_error.lock().unwrap_or_else(|e| e.into_inner()).take() {
             self.failed_program = self.gpu_program.take().map(|p| p.wgsl);
