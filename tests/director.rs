@@ -29,8 +29,8 @@ fn doc(name: &str) -> Document {
 }
 
 fn stage_of(d: &Document, space: Space) -> Stage {
-    let (scene, mesh, clip_from_eye) = scene_of(d);
-    stage(&scene, mesh.as_ref(), clip_from_eye, space).unwrap()
+    let (scene, mesh, clip_from_eye) = scene_of(d, &mut None);
+    stage(&scene, mesh.as_deref(), clip_from_eye, space).unwrap()
 }
 
 fn segments(st: &Stage, kind: Kind) -> Vec<(DVec3, DVec3)> {
@@ -97,7 +97,7 @@ fn in_eye_space_the_eye_is_the_origin_and_the_lights_are_the_engines() {
     let st = stage_of(&d, Space::Eye);
     let eye = st.marks.iter().find(|m| m.kind == Kind::Eye).unwrap().at;
     assert_eq!(eye, DVec3::ZERO);
-    let (scene, _, _) = scene_of(&d);
+    let (scene, _, _) = scene_of(&d, &mut None);
     let lit = Engine::<f64>::light_scene_vertex(&scene).unwrap();
     let vertex = st.marks.iter().find(|m| m.kind == Kind::Vertex).unwrap().at;
     assert!(vertex.distance(lit.pos_in_eye) < 1e-9);
@@ -120,7 +120,7 @@ fn in_eye_space_the_eye_is_the_origin_and_the_lights_are_the_engines() {
 #[test]
 fn a_spotlights_cone_opens_at_its_cutoff() {
     let d = doc("spotlight.toml");
-    let (scene, _, _) = scene_of(&d);
+    let (scene, _, _) = scene_of(&d, &mut None);
     let st = stage_of(&d, Space::Eye);
     let l = &scene.lights[0];
     let apex = st.lights[0].unwrap();
@@ -159,8 +159,8 @@ fn the_window_switches_space_and_a_dragged_light_or_eye_moves() {
     assert!(h.query_by_label_contains("1/at, the attenuation factor, falls to 50 %").is_some());
     // Drag the light's mark: the document's light moves (in its own coordinates).
     let d = h.state().doc.clone();
-    let (scene, mesh, clip) = scene_of(&d);
-    let st = stage(&scene, mesh.as_ref(), clip, Space::World).unwrap();
+    let (scene, mesh, clip) = scene_of(&d, &mut None);
+    let st = stage(&scene, mesh.as_deref(), clip, Space::World).unwrap();
     let before = d.scene.lights[0].position;
     let mark = light_mark_on_screen(&h, &st, picture);
     drag(&mut h, mark, mark + egui::vec2(40.0, -20.0));
@@ -169,8 +169,8 @@ fn the_window_switches_space_and_a_dragged_light_or_eye_moves() {
     assert_eq!(after.w, before.w, "still positional");
     // Drag the eye: the camera becomes a lookAt from the new place, the document valid.
     let d = h.state().doc.clone();
-    let (scene, mesh, clip) = scene_of(&d);
-    let st = stage(&scene, mesh.as_ref(), clip, Space::World).unwrap();
+    let (scene, mesh, clip) = scene_of(&d, &mut None);
+    let st = stage(&scene, mesh.as_deref(), clip, Space::World).unwrap();
     let eye = st.marks.iter().find(|m| m.kind == Kind::Eye).unwrap().at;
     let at = phonglab::app::panels::director::screen_point(picture, &st, &h.state().director, eye).unwrap();
     drag(&mut h, at, at + egui::vec2(-30.0, 25.0));
@@ -215,9 +215,9 @@ fn on_the_object_the_eye_drag_turns_the_orbit_camera() {
     h.state_mut().director.open = true;
     h.run_steps(3);
     let picture = h.get_by_role_and_label(Role::Image, "Director's view").rect();
-    let (scene, mesh, clip) = scene_of(&on);
+    let (scene, mesh, clip) = scene_of(&on, &mut None);
     assert!(mesh.is_some(), "the shaded view's world");
-    let st = stage(&scene, mesh.as_ref(), clip, Space::World).unwrap();
+    let st = stage(&scene, mesh.as_deref(), clip, Space::World).unwrap();
     let eye = st.marks.iter().find(|m| m.kind == Kind::Eye).unwrap().at;
     let at = phonglab::app::panels::director::screen_point(picture, &st, &h.state().director, eye).unwrap();
     drag(&mut h, at, at + egui::vec2(35.0, 0.0));
@@ -294,4 +294,48 @@ fn the_marks_names_keep_clear_and_no_vector_is_told_by_colour_alone() {
     for solid in [Kind::Normal, Kind::ToEye, Kind::ToLight(0)] {
         assert_eq!(pattern_of(solid), None);
     }
+}
+
+/// A frame of the shaded view looks its mesh up once (the pictures, the captions, the
+/// probe and the overlay are handed it), and the director's view, open beside it on the
+/// shaded object, takes the same cached mesh (one look-up) instead of building its own.
+#[test]
+fn a_frame_looks_the_shaded_mesh_up_once_and_the_director_reuses_it() {
+    use phonglab::app::panels::shaded::cache::mesh_lookups;
+    let mut h = Harness::builder()
+        .with_size([1280.0, 720.0])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(2);
+    let per_frame = |h: &mut Harness<'static, AppState>| {
+        let before = mesh_lookups();
+        h.run_steps(1);
+        mesh_lookups() - before
+    };
+    let shaded_alone = per_frame(&mut h);
+    // The probe on, following the pointer over the picture, and the director open on the
+    // shaded object.
+    let on = h
+        .state()
+        .doc
+        .with_vertex_as_shaded(phonglab_core::Vertex::from_f32(glam::Vec3::new(0.0, 0.0, 0.5), glam::Vec3::Z));
+    h.state_mut().doc = on;
+    h.state_mut().view_options.probe.on = true;
+    h.state_mut().director.open = true;
+    h.run_steps(3);
+    let picture = h.state().ui.geometry.pictures[0];
+    h.hover_at(picture.center());
+    h.run_steps(2);
+    let probe_and_director = per_frame(&mut h);
+    eprintln!(
+        "mesh look-ups a frame: {shaded_alone} (the shaded view), {probe_and_director} (with the probe and the director)"
+    );
+    // The director's scene on the object takes the cache's mesh: built once, then the same.
+    let doc = h.state().doc.clone();
+    let mut meshes = None;
+    let (_, first, _) = scene_of(&doc, &mut meshes);
+    let (_, again, _) = scene_of(&doc, &mut meshes);
+    let (first, again) = (first.expect("on the object"), again.expect("on the object"));
+    assert!(std::sync::Arc::ptr_eq(&first, &again), "the director builds no mesh of its own");
+    assert_eq!(shaded_alone, 2, "the centre's layout and the shaded view, once each");
+    assert_eq!(probe_and_director, 3, "and the director's view, once");
 }

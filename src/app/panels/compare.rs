@@ -11,7 +11,7 @@ use phonglab_core::{locale, t};
 use phonglab_core::difference::{Difference, GAIN, VISIBLE, difference};
 
 use crate::app::model::evaluated::{Evaluated, Precision, evaluate};
-use crate::app::panels::shaded::cache::{ViewCache, mesh_for};
+use crate::app::panels::shaded::cache::{ViewCache, Viewed, mesh_for};
 use crate::app::panels::shaded::channel_view::{self, ChannelView};
 
 /// The pinned scene A: the document and the numerics it was evaluated with.
@@ -172,7 +172,8 @@ fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) -> Option
         ui.label(RichText::new(format!("{which}: {}", s.what)).strong());
         swatch_ui(ui, s.eval);
         ui.label(RichText::new(locale::decimal(&fmt_value(&s.eval.front.shown, 8))).monospace());
-        match view.render(ui.ctx(), s.doc, s.pow, px, which, false) {
+        let mesh = mesh_for(&mut view.mesh, &s.doc.view).clone();
+        match view.render(ui.ctx(), Viewed { doc: s.doc, mesh: &mesh }, s.pow, px, which, false) {
             Ok(()) => {
                 if let Some(tex) = &view.texture {
                     let side = px as f32 / ui.ctx().pixels_per_point();

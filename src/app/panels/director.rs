@@ -6,12 +6,16 @@
 //! The geometry is the core's ([`phonglab_core::director::stage`]); this projects it and
 //! draws it, and turns a dragged light's new place back into its own coordinates.
 
+use std::sync::Arc;
+
 use egui::{Color32, Pos2, Rect, Sense, Stroke, Ui};
 use glam::{DMat3, DMat4, DVec3, DVec4};
 use phonglab_core::director::{self, Kind, Space, Stage};
+use phonglab_core::mesh::Mesh;
 use phonglab_core::transform::{of_camera_distance, perspective};
-use phonglab_core::{Document, Framing, Scene, locale, t};
+use phonglab_core::{Document, Framing, Scene, View, locale, t};
 
+use crate::app::panels::shaded::cache::mesh_for;
 use crate::app::widgets::label_placement::Segment;
 use crate::app::widgets::palette;
 
@@ -50,14 +54,21 @@ impl Default for DirectorState {
 /// The scene the view shows and how: the shaded view's world (its mesh, its camera's
 /// frustum) when the worked vertex is on the shaded object, else the worked calculation's
 /// own scene under the worksheet's window (openFrameworks' 60-degree camera, 1024x768).
-pub fn scene_of(doc: &Document) -> (Scene, Option<phonglab_core::mesh::Mesh>, DMat4) {
-    let on_object = doc.with_vertex_as_shaded(doc.scene.vertex) == *doc && doc.view.framing == Framing::Orbit;
-    if on_object {
-        (doc.shaded_scene(), Some(doc.view.mesh()), phonglab_core::view::view_projection(1.0))
+/// The mesh comes from `meshes`, the shaded view's cache ([`mesh_for`]): the director
+/// draws the very mesh the shaded view shows, built only when its shape changes.
+pub fn scene_of(doc: &Document, meshes: &mut Option<(View, Arc<Mesh>)>) -> (Scene, Option<Arc<Mesh>>, DMat4) {
+    if on_object(doc) {
+        let mesh = mesh_for(meshes, &doc.view).clone();
+        (doc.shaded_scene(), Some(mesh), phonglab_core::view::view_projection(1.0))
     } else {
         let d = of_camera_distance(768.0);
         (doc.scene.clone(), None, perspective(60.0, 1024.0 / 768.0, d / 10.0, d * 10.0))
     }
+}
+
+/// Is the worked vertex on the shaded object (seen by the shaded view's orbit camera)?
+fn on_object(doc: &Document) -> bool {
+    doc.with_vertex_as_shaded(doc.scene.vertex) == *doc && doc.view.framing == Framing::Orbit
 }
 
 /// Projects the stage's space onto a square on screen: the director's camera orbiting the
@@ -139,7 +150,13 @@ fn stroke_of(kind: Kind, ink: Color32, light: Color32, bg: Color32) -> Stroke {
 }
 
 /// The director's window, while open; returns the document with a dragged light moved.
-pub fn director_window_ui(ctx: &egui::Context, d: &mut DirectorState, doc: &Document) -> Option<Document> {
+/// `meshes`: the shaded view's mesh cache, whose mesh it draws on the shaded object.
+pub fn director_window_ui(
+    ctx: &egui::Context,
+    d: &mut DirectorState,
+    doc: &Document,
+    meshes: &mut Option<(View, Arc<Mesh>)>,
+) -> Option<Document> {
     if !d.open {
         return None;
     }
@@ -151,21 +168,27 @@ pub fn director_window_ui(ctx: &egui::Context, d: &mut DirectorState, doc: &Docu
         .open(&mut open)
         .default_pos(egui::pos2(screen.center().x - side * 0.5, screen.top() + 40.0))
         .resizable(false)
-        .show(ctx, |ui| changed = director_ui(ui, d, doc, side));
+        .show(ctx, |ui| changed = director_ui(ui, d, doc, meshes, side));
     d.open = open;
     changed
 }
 
 /// The switch, the picture and its legend.
-fn director_ui(ui: &mut Ui, d: &mut DirectorState, doc: &Document, side: f32) -> Option<Document> {
+fn director_ui(
+    ui: &mut Ui,
+    d: &mut DirectorState,
+    doc: &Document,
+    meshes: &mut Option<(View, Arc<Mesh>)>,
+    side: f32,
+) -> Option<Document> {
     ui.horizontal(|ui| {
         ui.label(t!("director-space"));
         for s in Space::ALL {
             ui.selectable_value(&mut d.space, s, locale::tr(s.message_id()));
         }
     });
-    let (scene, mesh, clip_from_eye) = scene_of(doc);
-    let st = match director::stage(&scene, mesh.as_ref(), clip_from_eye, d.space) {
+    let (scene, mesh, clip_from_eye) = scene_of(doc, meshes);
+    let st = match director::stage(&scene, mesh.as_deref(), clip_from_eye, d.space) {
         Ok(st) => st,
         Err(e) => {
             ui.colored_label(palette::ERROR, e.to_string());
@@ -336,8 +359,7 @@ fn drag_ui(
 /// vertex's distance, the same way up.
 fn moved_eye(doc: &Document, scene: &Scene, eye: DVec3) -> Option<Document> {
     let mut c = doc.clone();
-    let (_, mesh, _) = scene_of(doc);
-    if mesh.is_some() {
+    if on_object(doc) {
         let d = eye.length();
         let u = eye / d.max(1e-12);
         c.view.camera.distance = d.clamp(0.6, 20.0);

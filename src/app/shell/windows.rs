@@ -28,7 +28,8 @@ pub fn windows_ui(
     }
     cost::cost_window_ui(ctx, &mut state.cost, &state.doc, state.settings.pow);
     shader_panel::shader_window_ui(ctx, &mut state.shader, &state.doc);
-    if let Some(moved) = director::director_window_ui(ctx, &mut state.director, &state.doc) {
+    let meshes = &mut state.shaded.main.mesh;
+    if let Some(moved) = director::director_window_ui(ctx, &mut state.director, &state.doc, meshes) {
         state.apply(moved);
     }
     let lang = state.ui.layout.locale().lang;

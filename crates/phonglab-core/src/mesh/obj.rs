@@ -36,8 +36,8 @@ fn index(s: &str, len: usize, ln: usize, what: &str) -> Result<usize, String> {
     Ok(resolved as usize)
 }
 
-/// The most triangles an OBJ file may make: shading stays linear in them (about 0.2 µs
-/// and 1.1 KB of memory a triangle at a million).
+/// The most triangles an OBJ file may make: shading time and memory grow linearly in them
+/// (the cost a triangle: docs/performance.md, "Why the code is written so").
 pub const MAX_OBJ_TRIANGLES: usize = 4_000_000;
 
 /// The largest OBJ file read, in bytes: what [`MAX_OBJ_TRIANGLES`] take as exporters write

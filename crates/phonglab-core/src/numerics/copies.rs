@@ -2,9 +2,9 @@
 //! exact power's copies are in `exact_pow/copies.rs`.)
 
 /// Asks the processor to bring the memory of `s` into its nearest cache, one cache line
-/// at a time: a hint, which changes no result. The lighting of a large array is otherwise
-/// bound by waiting for memory (1M vertices of scene (a) took 9.5 ns a vertex, 10 000 of
-/// them, which stay in cache, 5.6).
+/// at a time: a hint, which changes no result. The lighting of a large array, and the
+/// raster's random reads of a large mesh's triangles, are otherwise bound by waiting for
+/// memory (the figures: docs/performance.md, "Why the code is written so").
 #[inline(always)]
 pub fn prefetch<T>(s: &[T]) {
     #[cfg(target_arch = "x86_64")]

@@ -68,7 +68,7 @@ pub fn transform_point(m: &DMat4, p: DVec4) -> DVec4 {
 /// [`transform_point`] with the matrix given by its rows (`rows[i]` is row i), for loops
 /// that transform many points by one matrix (the rows are taken out once). Written out
 /// rather than with `array::map`, whose closure is not inlined into the callers' AVX2 + FMA
-/// copies (Dot2's `mul_add` then becomes a library call: 20 times slower).
+/// copies (Dot2's `mul_add` then becomes a library call, many times slower).
 #[inline(always)]
 pub fn transform_point_rows(rows: &[[f64; 4]; 4], p: [f64; 4]) -> [f64; 4] {
     [dot2(&rows[0], &p), dot2(&rows[1], &p), dot2(&rows[2], &p), dot2(&rows[3], &p)]

@@ -92,8 +92,9 @@ impl Lighter {
 
     /// [`Lighter::light_batch_sum`] that also measures the time each step took over all the
     /// chunks: loading, each stage of the program, writing the sums. For
-    /// `phonglab bench lighting --stages` (reading the clock costs some 20 ns a step per
-    /// chunk of [`crate::specialise::lighter::CHUNK`] vertices, so the figures are a little high).
+    /// `phonglab bench lighting --stages` (the clock is read once a step per chunk of
+    /// [`crate::specialise::lighter::CHUNK`] vertices, and that reading is counted in the
+    /// step, so the figures are a little high).
     pub fn light_batch_timed(&self, positions: &[Vec3], normals: &[Vec3], front: &mut [[f32; 4]]) -> StageTimes {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
         let mut times = StageTimes::default();

@@ -314,8 +314,9 @@ impl Chunk {
     /// range checks that choose a way, such as `unscaled_is_exact`, choose between ways
     /// that give the same bits). A constant trip count is what lets every loop vectorise
     /// whole: with `n` the compiler kept the last 16 vertices of a chunk (it was 128
-    /// then; [`CHUNK`] is 64 now) for a scalar loop (its bound check), and the scalar lanes cost as much as the vector ones. Measured
-    /// with `phonglab bench lighting`: 11.7 -> 9.9 ns a vertex on scene (a), 102 -> 79 on (c).
+    /// then; [`CHUNK`] is 64 now) for a scalar loop (its bound check), and the scalar lanes
+    /// cost as much as the vector ones (the figures: docs/performance.md, "Why the code is
+    /// written so").
     #[inline(always)]
     fn lanes(&self) -> usize {
         CHUNK

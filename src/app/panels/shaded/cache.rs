@@ -12,6 +12,16 @@ use phonglab_core::{Document, EvalOptions, PowFn, Scene, Shading, View};
 use crate::app::panels::shaded::channel_view::ChannelView;
 use crate::app::panels::shaded::gpu::GpuImage;
 
+/// What a picture shows: a document, and its view's mesh looked up once for the frame
+/// ([`mesh_for`]) and handed to everything that draws, picks or probes it.
+#[derive(Clone, Copy)]
+pub struct Viewed<'a> {
+    /// The document.
+    pub doc: &'a Document,
+    /// Its view's mesh (the whole mesh, never the coarse copy).
+    pub mesh: &'a Arc<Mesh>,
+}
+
 /// One picture's renderer, mesh and texture, kept between frames.
 #[derive(Default)]
 pub struct ViewCache {
@@ -110,29 +120,29 @@ impl ViewCache {
         self.texture.as_ref().map_or(0, |t| t.size()[0])
     }
 
-    /// Renders `doc`'s shaded view at `px` pixels square unless the texture already shows
-    /// it. With `may_be_coarse`, while the camera turns ([`ViewCache::turning`]), a mesh
-    /// of more than [`COARSE_ABOVE`] triangles is drawn from its coarse copy (the picture
-    /// shown, never the one probed or picked, which pass `false`).
+    /// Renders the shaded view of `viewed` at `px` pixels square unless the texture
+    /// already shows it. With `may_be_coarse`, while the camera turns
+    /// ([`ViewCache::turning`]), a mesh of more than [`COARSE_ABOVE`] triangles is drawn
+    /// from its coarse copy (the picture shown, never the one probed or picked, which pass
+    /// `false`).
     pub(crate) fn render(
         &mut self,
         ctx: &egui::Context,
-        doc: &Document,
+        viewed: Viewed<'_>,
         pow: PowFn,
         px: usize,
         name: &str,
         may_be_coarse: bool,
     ) -> Result<(), String> {
+        let Viewed { doc, mesh: whole } = viewed;
         let setup = doc.shaded_setup(pow);
-        // The mesh is looked at only when the picture may be the copy (its size decides).
         let moving = may_be_coarse && (self.turning || doc.view.auto_rotate);
-        let coarse = moving && mesh_for(&mut self.mesh, &doc.view).triangle_count() > COARSE_ABOVE;
+        let coarse = moving && whole.triangle_count() > COARSE_ABOVE;
         let key = PictureKey { scene: setup.scene.clone(), view: doc.view.clone(), px, pow, coarse };
         if self.key.as_ref() == Some(&key) && self.texture.is_some() {
             return Ok(());
         }
-        let whole = mesh_for(&mut self.mesh, &doc.view).clone();
-        let mesh = if coarse { self.coarse_copy(&whole) } else { whole.clone() };
+        let mesh = if coarse { self.coarse_copy(whole) } else { whole.clone() };
         let t = crate::platform::clock::Instant::now();
         let (img, stats) = self.renderer.render(&setup.job(&mesh), px, px).map_err(|e| e.to_string())?;
         self.last_ms = t.elapsed().as_secs_f64() * 1e3;
@@ -165,9 +175,17 @@ impl ViewCache {
         }
     }
 
-    /// The GPU picture of `doc`'s shaded view at `px` pixels square (slot `slot`), or why
-    /// it cannot be drawn on the GPU (a program the driver refused is not tried again).
-    pub(crate) fn gpu_picture(&mut self, doc: &Document, pow: PowFn, px: usize, slot: u64) -> Result<GpuImage, String> {
+    /// The GPU picture of the shaded view of `viewed` at `px` pixels square (slot `slot`),
+    /// or why it cannot be drawn on the GPU (a program the driver refused is not tried
+    /// again).
+    pub(crate) fn gpu_picture(
+        &mut self,
+        viewed: Viewed<'_>,
+        pow: PowFn,
+        px: usize,
+        slot: u64,
+    ) -> Result<GpuImage, String> {
+        let doc = viewed.doc;
         if let Some(e) = self.gpu_error.lock().unwrap_or_else(|e| e.into_inner()).take() {
             self.failed_program = self.gpu_program.take().map(|p| p.wgsl);
             return Err(format!("the GPU refused the generated program: {e}"));
@@ -189,7 +207,7 @@ impl ViewCache {
             slot,
             wgsl,
             uniforms,
-            mesh: mesh_for(&mut self.mesh, &doc.view).clone(),
+            mesh: viewed.mesh.clone(),
             background: doc.view.background,
             px: px as u32,
             error: self.gpu_error.clone(),
@@ -211,8 +229,8 @@ pub(crate) struct PictureKey {
 }
 
 /// Meshes of more triangles than this are drawn from a coarse copy while the camera turns
-/// on the CPU: a million triangles take 55-70 ms a frame at 1024² on 2 cores, a copy of
-/// [`COARSE_TARGET`] about 15 (docs/performance.md, "A million triangles").
+/// on the CPU: a whole frame of a million triangles is too slow to follow the mouse, a copy
+/// of [`COARSE_TARGET`] is not (the figures: docs/performance.md, "A million triangles").
 pub const COARSE_ABOVE: usize = 300_000;
 
 /// About how many triangles the coarse copy keeps.
@@ -237,8 +255,20 @@ struct GpuProgram {
     uniforms: Vec<(String, &'static str)>,
 }
 
+thread_local! {
+    /// How many times this thread looked a view's mesh up ([`mesh_for`]).
+    static MESH_LOOKUPS: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+}
+
+/// How many times this thread has looked a view's mesh up ([`mesh_for`]): a frame's
+/// count is the difference across it (the tests hold it to one a picture).
+pub fn mesh_lookups() -> u64 {
+    MESH_LOOKUPS.with(std::cell::Cell::get)
+}
+
 /// The view's mesh, rebuilt only when what shapes it changes.
 pub fn mesh_for<'a>(cache: &'a mut Option<(View, Arc<Mesh>)>, view: &View) -> &'a Arc<Mesh> {
+    MESH_LOOKUPS.with(|n| n.set(n.get() + 1));
     let stale = cache.as_ref().is_none_or(|(v, _)| {
         let mut a = v.clone();
         let mut b = view.clone();

@@ -9,7 +9,7 @@ use egui::{Sense, Ui};
 use phonglab_core::library::DemoDeparture;
 use phonglab_core::{Document, t};
 
-use super::cache::{COARSE_ABOVE, DrawnBy, ViewCache, mesh_for};
+use super::cache::{COARSE_ABOVE, DrawnBy, ViewCache};
 use super::context::ShadedOptions;
 
 /// Where the captions stand: presenting, or over two pictures side by side (the demo and
@@ -87,12 +87,14 @@ pub(super) fn corrected_caption(doc: &Document, fixes: &[bool; 3]) -> Caption {
 /// The height the captions of `doc`'s view take, wrapped to a picture `width` wide: its
 /// main picture's as shown, whole in every way it may say who drew it, with a long time
 /// (so that neither the time's digits nor who drew it move the picture from frame to
-/// frame), and the corrected picture's when there is one.
+/// frame), and the corrected picture's when there is one. `triangles`: the view's mesh's
+/// (a very large mesh's caption may say it is drawn from a copy).
 pub fn caption_room(
     ui: &Ui,
     doc: &Document,
     options: &ShadedOptions,
-    cache: &mut ViewCache,
+    cache: &ViewCache,
+    triangles: usize,
     width: f32,
     room: CaptionRoom,
 ) -> f32 {
@@ -100,7 +102,7 @@ pub fn caption_room(
     let mut texts = if room.short() {
         vec![with_head_and_tail(doc, None, corrected)]
     } else {
-        drawn_variants(doc, cache)
+        drawn_variants(cache, triangles)
             .into_iter()
             .map(|d| with_head_and_tail(doc, Some(middle(options, d)), corrected))
             .collect()
@@ -117,14 +119,13 @@ pub fn caption_room(
 /// Every way the caption may say who drew the picture while the document stays, with a
 /// long time: who drew it last, the CPU whole or lit again (nothing drawn moved), and a
 /// very large mesh's coarse copy while it turns or spins.
-fn drawn_variants(doc: &Document, cache: &mut ViewCache) -> Vec<String> {
+fn drawn_variants(cache: &ViewCache, triangles: usize) -> Vec<String> {
     let ms = phonglab_core::locale::decimal("888.8");
     let mut out = vec![
         drawn_caption_taking(cache, &ms),
         t!("caption-cpu", ms = ms.clone()),
         t!("caption-cpu-relit", ms = ms.clone()),
     ];
-    let triangles = mesh_for(&mut cache.mesh, &doc.view).triangle_count();
     if triangles > COARSE_ABOVE {
         let (some, all) = (phonglab_core::locale::grouped(9_999_999), phonglab_core::locale::grouped(triangles as u64));
         out.push(t!("caption-cpu-coarse", ms = ms.clone(), triangles = some.clone(), all = all.clone()));

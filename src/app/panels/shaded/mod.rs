@@ -26,7 +26,7 @@ mod toolbar;
 use egui::Ui;
 
 pub use arrow_on_object::ArrowOnObject;
-pub use cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
+pub use cache::{DrawnBy, ShadedCache, ViewCache, Viewed, mesh_for};
 pub use captions::{CaptionRoom, caption_room, drawn_caption};
 pub use context::{Asked, Shaded, ShadedOptions, corrected_document};
 pub use overlay::vector_arrows;
@@ -41,21 +41,23 @@ use crate::app::model::evaluated::Evaluated;
 /// Returns where the picture (and the one beside it) was drawn, and a mesh file to open.
 pub fn shaded_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut ShadedCache, eval: &Evaluated) -> Asked {
     let open_obj = toolbar::toolbar_ui(ui, state, cache);
-    let shown = pictures::pictures_ui(ui, state, cache);
+    // The view's mesh, looked up once for the frame (after the toolbar, which may change
+    // the object), and handed to the pictures, the overlay and the probe.
+    let mesh = mesh_for(&mut cache.main.mesh, &state.edit.doc.view).clone();
+    let shown = pictures::pictures_ui(ui, state, cache, mesh);
     let rects = std::iter::once(shown.response.rect).chain(shown.second).collect();
     let (arrows, cones) = overlay::interaction_ui(ui, state, cache, &shown, eval);
     overlay::probe_ui(ui, state, cache, &shown);
     let asked = probe_window::probe_window_ui(ui.ctx(), &mut state.view_options.probe);
     if let Some(i) = asked.vertex {
-        open_vertex(state, cache, i);
+        open_vertex(state, &shown.mesh, i);
     }
     Asked { rects, open_obj, arrows, cones }
 }
 
 /// Makes mesh vertex `i` of the view the worked calculation's vertex (as a click on the
 /// surface does), saying so.
-fn open_vertex(state: &mut Shaded<'_>, cache: &mut ShadedCache, i: usize) {
-    let mesh = mesh_for(&mut cache.main.mesh, &state.edit.doc.view);
+fn open_vertex(state: &mut Shaded<'_>, mesh: &phonglab_core::mesh::Mesh, i: usize) {
     let (Some(p), Some(n)) = (mesh.positions.get(i), mesh.normals.get(i)) else { return };
     let c = state.edit.doc.with_vertex_as_shaded(phonglab_core::Vertex::from_f32(*p, *n));
     if state.edit.apply(c) {

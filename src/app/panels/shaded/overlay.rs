@@ -8,7 +8,7 @@ use phonglab_core::t;
 use phonglab_core::{Document, Framing, Vertex};
 
 use super::arrow_on_object::ArrowOnObject;
-use super::cache::{DrawnBy, ShadedCache, mesh_for};
+use super::cache::{DrawnBy, ShadedCache, Viewed};
 use super::context::Shaded;
 use super::pictures::Shown;
 use super::screen::Overlay;
@@ -79,12 +79,12 @@ pub(super) fn interaction_ui(
         // Picking reads the CPU renderer's triangle buffer: after a GPU frame, the CPU
         // renderer draws the same picture first (only on a click).
         if matches!(cache.main.drawn_by, DrawnBy::Gpu { .. })
-            && let Err(e) = cache.main.render(ui.ctx(), state.edit.doc, state.pow, px, "shaded view", false)
+            && let Err(e) = cache.main.render(ui.ctx(), viewed(state, shown), state.pow, px, "shaded view", false)
         {
             *state.edit.message = Some(Message::Refused(format!("{}: {e}", t!("shaded-cannot-render"))));
             return (arrows, cones);
         }
-        let mesh = mesh_for(&mut cache.main.mesh, &state.edit.doc.view);
+        let mesh = &shown.mesh;
         if let Some(i) = cache.main.renderer.pick(mesh, x, y) {
             let c = state.edit.doc.with_vertex_as_shaded(Vertex::from_f32(mesh.positions[i], mesh.normals[i]));
             if state.edit.apply(c) {
@@ -94,6 +94,11 @@ pub(super) fn interaction_ui(
         }
     }
     (arrows, cones)
+}
+
+/// The document as it stands, with the mesh the frame looked up for its picture.
+fn viewed<'a>(state: &'a Shaded<'_>, shown: &'a Shown) -> Viewed<'a> {
+    Viewed { doc: state.edit.doc, mesh: &shown.mesh }
 }
 
 /// The pixel of a picture `px` pixels square, drawn `shown.size` points at
@@ -131,15 +136,14 @@ pub(super) fn probe_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut ShadedCa
     let Some(([x, y], px)) = probe.at else { return };
     // The probe reads the CPU renderer's last frame: drawn first when the GPU drew the
     // picture (once for each new picture).
-    if let Err(e) = cache.main.render(ui.ctx(), state.edit.doc, state.pow, px, "shaded view", false) {
+    if let Err(e) = cache.main.render(ui.ctx(), viewed(state, shown), state.pow, px, "shaded view", false) {
         *state.edit.message = Some(Message::Refused(format!("{}: {e}", t!("shaded-cannot-render"))));
         return;
     }
     let probe = &mut state.view_options.probe;
     if probe.stale(cache.main.generation) {
-        let mesh = mesh_for(&mut cache.main.mesh, &state.edit.doc.view).clone();
         let setup = state.edit.doc.shaded_setup(state.pow);
-        let job = setup.job(&mesh);
+        let job = setup.job(&shown.mesh);
         probe.lines = match phonglab_core::probe::probe(&cache.main.renderer, &job, x, y) {
             Ok(Some(p)) => phonglab_core::probe_report::report(&p),
             Ok(None) | Err(_) => Vec::new(),

@@ -1,10 +1,13 @@
 //! The shaded view's pictures: the view sized to the space it was given (whole pixels),
 //! drawn by the GPU or the CPU, and beside it the demo corrected or the error heat map.
 
-use egui::{Sense, Ui};
-use phonglab_core::{Document, t};
+use std::sync::Arc;
 
-use super::cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
+use egui::{Sense, Ui};
+use phonglab_core::mesh::Mesh;
+use phonglab_core::t;
+
+use super::cache::{DrawnBy, ShadedCache, ViewCache, Viewed, mesh_for};
 use super::captions::{Caption, CaptionRoom, caption_room, caption_ui, corrected_caption, main_caption};
 use super::channel_view::{legend_height, legend_ui};
 use super::context::{Shaded, corrected_document};
@@ -21,11 +24,15 @@ pub(super) struct Shown {
     pub(super) size: egui::Vec2,
     pub(super) px: usize,
     pub(super) scene: phonglab_core::Scene,
+    /// The view's mesh, looked up once for the frame: what the picture shows, and what the
+    /// overlay picks and the probe probes on.
+    pub(super) mesh: Arc<Mesh>,
 }
 
 /// The pictures: the shaded view sized to the space it was given (whole pixels), drawn by
-/// the GPU or the CPU, and beside it the demo corrected or the error heat map.
-pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut ShadedCache) -> Shown {
+/// the GPU or the CPU, and beside it the demo corrected or the error heat map. `mesh`: the
+/// view's, looked up once for the frame.
+pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut ShadedCache, mesh: Arc<Mesh>) -> Shown {
     // The corrected document, when a departure the document makes is switched off.
     let corrected = corrected_document(state.edit.doc, &state.view_options.demo_fixes);
 
@@ -44,17 +51,22 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
     let mut side = width;
     let mut caption_h = 0.0;
     for _ in 0..3 {
-        caption_h = caption_room(ui, state.edit.doc, state.view_options, &mut cache.main, side, room);
+        caption_h =
+            caption_room(ui, state.edit.doc, state.view_options, &cache.main, mesh.triangle_count(), side, room);
         side = width.min(avail.y - caption_h - 8.0 - legend(ui, side)).max(64.0);
     }
     let ppp = ui.ctx().pixels_per_point();
     let px = ((side * ppp) as usize).clamp(64, 1024);
     // One texel a screen pixel (no resampling), unless the view is wider than 1024 pixels.
     let side = if (side * ppp) as usize <= 1024 { px as f32 / ppp } else { side };
-    let main = prepare_picture(ui.ctx(), state, &mut cache.main, state.edit.doc, px, 0, "shaded view");
+    let viewed = Viewed { doc: state.edit.doc, mesh: &mesh };
+    let main = prepare_picture(ui.ctx(), state, &mut cache.main, viewed, px, 0, "shaded view");
     let mut main_gpu = picture_or_refusal(state, main, &t!("shaded-cannot-render"));
     let mut corrected_gpu = corrected.as_ref().and_then(|c| {
-        let picture = prepare_picture(ui.ctx(), state, &mut cache.corrected, c, px, 1, "corrected view");
+        // The corrected picture's own cache (its document is another).
+        let mesh = mesh_for(&mut cache.corrected.mesh, &c.view).clone();
+        let viewed = Viewed { doc: c, mesh: &mesh };
+        let picture = prepare_picture(ui.ctx(), state, &mut cache.corrected, viewed, px, 1, "corrected view");
         picture_or_refusal(state, picture, &t!("corrected-cannot-render"))
     });
     // The scene as the view lights it, once: with the heat map on, from the setup it asks for.
@@ -68,7 +80,6 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
     let size = egui::vec2(side, side);
     let caption = main_caption(state.edit.doc, state.view_options, &cache.main, room);
     let channel_texture = channel.and_then(|c| {
-        let mesh = mesh_for(&mut cache.main.mesh, &state.edit.doc.view).clone();
         let view = &mut cache.channel;
         match view.prepare(state.edit.doc, &mesh, state.pow, c) {
             Ok(range) => view.texture(ui.ctx(), range).map(|t| (c, t.id())),
@@ -121,7 +132,7 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
             resp
         })
         .inner;
-    Shown { response: resp, second, size, px, scene }
+    Shown { response: resp, second, size, px, scene, mesh }
 }
 
 /// Names a picture by its whole caption (for screen readers and the tests): by the caption
@@ -134,22 +145,22 @@ fn named(ui: &Ui, picture: egui::Response, label: &egui::Response, caption: &Cap
     picture
 }
 
-/// Draws `doc`'s picture for `cache`: on the GPU when the adapter, the renderer choice and
-/// the scene allow it (the picture to paint is returned), otherwise on the CPU renderer
-/// (into `cache`'s texture). `cache.drawn_by` says which, and why not the GPU.
+/// Draws the picture of `viewed` for `cache`: on the GPU when the adapter, the renderer
+/// choice and the scene allow it (the picture to paint is returned), otherwise on the CPU
+/// renderer (into `cache`'s texture). `cache.drawn_by` says which, and why not the GPU.
 fn prepare_picture(
     ctx: &egui::Context,
     state: &Shaded<'_>,
     cache: &mut ViewCache,
-    doc: &Document,
+    viewed: Viewed<'_>,
     px: usize,
     slot: u64,
     name: &str,
 ) -> Result<Option<GpuImage>, String> {
     let pow = state.pow;
-    let why = match gpu::why_cpu(state.gpu, state.view_options.renderer, doc, pow) {
+    let why = match gpu::why_cpu(state.gpu, state.view_options.renderer, viewed.doc, pow) {
         Some(why) => why,
-        None => match (cache.gpu_picture(doc, pow, px, slot), state.gpu) {
+        None => match (cache.gpu_picture(viewed, pow, px, slot), state.gpu) {
             (Ok(p), Some(gpu)) => {
                 cache.drawn_by = DrawnBy::Gpu { adapter: format!("{}, {}", gpu.name, gpu.backend) };
                 return Ok(Some(p));
@@ -158,7 +169,7 @@ fn prepare_picture(
             (Err(e), _) => e,
         },
     };
-    cache.render(ctx, doc, pow, px, name, true)?;
+    cache.render(ctx, viewed, pow, px, name, true)?;
     cache.drawn_by = DrawnBy::Cpu { why };
     Ok(None)
 }

@@ -284,8 +284,8 @@ mod x86 {
                     _mm256_storeu_ps(d.as_mut_ptr(), _mm256_blendv_ps(old_d, z, pass));
                     // The old triangles are read by `load_opaque` so that the compiler keeps a
                     // load, blend and store: left alone it makes them a masked store
-                    // (vmaskmovps), several times slower on AMD's Zen (measured: a fifth of
-                    // the raster's time).
+                    // (vmaskmovps), which AMD's Zen runs slowly (docs/performance.md, "Why
+                    // the code is written so").
                     let old_r = load_opaque(r.as_ptr().cast());
                     let r_new = _mm256_blendv_ps(old_r, _mm256_castsi256_ps(new_r), pass);
                     _mm256_storeu_ps(r.as_mut_ptr().cast(), r_new);

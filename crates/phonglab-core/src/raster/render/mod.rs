@@ -21,12 +21,15 @@
 //! Each band's visibility is copied out as it is shaded and kept: picking reads it, and a
 //! frame in which nothing drawn moved (no vertex, bit for bit, nor the triangles, size,
 //! shading or culling: only the lights, the material or the colours changed) skips stages
-//! 2 and 3 and shades the kept visibility again ([`Stats::visibility_kept`]).
+//! 2 and 3 and shades the kept visibility again ([`Stats::visibility_kept`]); `kept` holds
+//! that visibility, what it was drawn from, and the invariants that make it safe.
 
 pub mod copies;
+mod kept;
 mod mask;
 pub mod resolve;
 pub mod setup;
+mod timing;
 pub mod vertices;
 pub mod visibility;
 pub mod window;
@@ -136,89 +139,10 @@ pub struct Renderer {
     image: Image,
     scratch: resolve::Scratch,
     bins: Vec<Vec<u32>>,
-    /// The last frame's visibility: the rasterised triangle at each pixel, rows from the
-    /// top ([`NO_TRIANGLE`] where uncovered). Kept always: picking reads it, and a frame
-    /// that only lights differently shades it again without drawing.
-    kept: Vec<u32>,
-    /// What the last frame was drawn from, besides its vertices.
-    drawn: Drawn,
-    /// The last frame kept the visibility of the one before.
-    last_kept: bool,
+    /// The last frame's visibility, kept always: picking reads it, and a frame that only
+    /// lights differently shades it again without drawing.
+    visibility: kept::KeptVisibility,
     keep_visibility: bool,
-}
-
-/// What a frame's visibility depends on besides its vertices' positions: the image's size,
-/// the shading (the triangles and attributes it sets up), culling, and the triangles.
-#[derive(Default)]
-struct Drawn {
-    /// Does it describe the last frame? (Not before the first, nor while one is drawn.)
-    valid: bool,
-    width: usize,
-    height: usize,
-    mode: Option<ShadingMode>,
-    cull_back: bool,
-    triangles: Vec<[u32; 3]>,
-    /// A bit for each rasterised triangle the frame shows at some pixel (made on the first
-    /// frame that keeps it: [`resolve::seen_triangles`]).
-    seen: Option<Vec<u64>>,
-    /// A bit for each mesh vertex of those triangles (made with `seen`).
-    seen_vertices: Vec<u64>,
-}
-
-/// Triangles compared or copied a chunk at a time on all cores.
-const TRIANGLE_GRAIN: usize = 1 << 16;
-
-impl Drawn {
-    /// Records what `job` at this size was drawn from (its triangles copied on all cores,
-    /// into the same allocation from frame to frame).
-    fn record(&mut self, job: &Job<'_>, width: usize, height: usize) {
-        use rayon::prelude::*;
-        let from = &job.mesh.triangles;
-        self.triangles.resize(from.len(), [0; 3]);
-        self.triangles
-            .par_chunks_mut(TRIANGLE_GRAIN)
-            .zip(from.par_chunks(TRIANGLE_GRAIN))
-            .for_each(|(to, from)| to.copy_from_slice(from));
-        (self.width, self.height, self.mode, self.cull_back) = (width, height, Some(job.mode), job.cull_back);
-        self.seen = None;
-        self.valid = true;
-    }
-
-    /// The triangles and the mesh vertices the kept visibility `kept` (of `setup`'s
-    /// triangles, drawn from `mesh`) shows, a bit each: made once per frame drawn whole.
-    fn seen(&mut self, kept: &[u32], setup: &setup::Setup, mesh: &Mesh) -> (&[u64], &[u64]) {
-        if self.seen.is_none() {
-            let seen = resolve::seen_triangles(kept, setup.tris.len());
-            let n = mesh.positions.len();
-            self.seen_vertices.clear();
-            self.seen_vertices.resize(n.div_ceil(64), 0);
-            for (_, t) in setup.tris.iter().enumerate().filter(|(r, _)| mask::is_set(&seen, *r)) {
-                for v in mesh.triangles.get(t.orig as usize).into_iter().flatten() {
-                    mask::set(&mut self.seen_vertices, *v as usize);
-                }
-            }
-            self.seen = Some(seen);
-        }
-        (self.seen.as_deref().unwrap_or(&[]), &self.seen_vertices)
-    }
-
-    /// Would `job` at this size draw the last frame's visibility (its vertices having not
-    /// moved), with `kept` pixels kept?
-    fn is_for(&self, job: &Job<'_>, width: usize, height: usize, kept: usize) -> bool {
-        use rayon::prelude::*;
-        let same_triangles = || {
-            self.triangles.len() == job.mesh.triangles.len()
-                && self
-                    .triangles
-                    .par_chunks(TRIANGLE_GRAIN)
-                    .zip(job.mesh.triangles.par_chunks(TRIANGLE_GRAIN))
-                    .all(|(a, b)| a == b)
-        };
-        self.valid
-            && (self.width, self.height, self.mode, self.cull_back) == (width, height, Some(job.mode), job.cull_back)
-            && kept == width * height
-            && same_triangles()
-    }
 }
 
 impl Default for Renderer {
@@ -231,9 +155,7 @@ impl Default for Renderer {
             image: Default::default(),
             scratch: Default::default(),
             bins: Vec::new(),
-            kept: Vec::new(),
-            drawn: Drawn::default(),
-            last_kept: false,
+            visibility: Default::default(),
             keep_visibility: false,
         }
     }
@@ -268,91 +190,138 @@ impl Renderer {
         self.lighter.as_ref()
     }
 
-    /// Draws `job` into a `width` x `height` image.
+    /// Draws `job` into a `width` x `height` image: the stages in their order, each
+    /// timed. A frame that keeps the last one's visibility skips setup and drawing
+    /// ([`Stats::visibility_kept`]).
     pub fn render(&mut self, job: &Job<'_>, width: usize, height: usize) -> Result<(&Image, Stats), SceneError> {
-        match &mut self.lighter {
-            Some(l) => {
-                l.update(job.scene, job.options)?;
-            }
-            None => self.lighter = Some(Lighter::new(job.scene, job.options)?),
-        }
-        let lighter = self.lighter.as_ref().expect("set just above");
-        let width = width.max(1);
-        let height = height.max(1);
-        let mut clock = web_time::Instant::now();
-        let mut lap = || {
-            let now = web_time::Instant::now();
-            let ms = (now - clock).as_secs_f64() * 1e3;
-            clock = now;
-            ms
+        let lighter = self.take_lighter(job)?;
+        let (width, height) = (width.max(1), height.max(1));
+        let mut times = timing::StageTimes::start();
+        let kept = self.vertices_stage(job, &lighter, width, height);
+        times.vertices_done();
+        self.setup_stage(job, &lighter, kept, width, height);
+        times.setup_done();
+        let (lit, shares) = if kept {
+            self.shade_kept_stage(job, &lighter, height)
+        } else {
+            self.draw_and_shade_stage(job, &lighter, width, height)
         };
+        self.expose_visibility();
+        times.bands_done(shares);
+        self.lighter = Some(lighter);
+        Ok((&self.image, self.stats(job, lit, kept, times.ms())))
+    }
+
+    /// The lighting plan for `job`'s scene, taken out of the renderer for the frame (it
+    /// goes back at the end): the last one brought up to date, or a new one.
+    fn take_lighter(&mut self, job: &Job<'_>) -> Result<Lighter, SceneError> {
+        match self.lighter.take() {
+            Some(mut lighter) => match lighter.update(job.scene, job.options) {
+                Ok(_) => Ok(lighter),
+                Err(e) => {
+                    self.lighter = Some(lighter);
+                    Err(e)
+                }
+            },
+            None => Lighter::new(job.scene, job.options),
+        }
+    }
+
+    /// Stage 1: the vertices transformed (and, for Gouraud, lit); decides whether this
+    /// frame keeps the last one's visibility, and returns that.
+    fn vertices_stage(&mut self, job: &Job<'_>, lighter: &Lighter, width: usize, height: usize) -> bool {
         let isa = self.isa;
-        // After a frame that kept its visibility, Gouraud lights the vertices in a pass of
-        // their own, once it is known whether this one keeps it too: then only the vertices
-        // it shows are lit. Otherwise in the transforms' pass.
-        let apart = job.mode == ShadingMode::Gouraud && self.last_kept;
+        let apart = self.visibility.lights_apart(job.mode);
         let window = |clip: &[glam::Vec4], out: &mut [window::WindowVert]| {
             copies::window_vertices(isa, clip, out, width, height)
         };
         let moved = self.vertices.run(job, (!apart).then_some(lighter), window);
-        let kept = !moved && self.drawn.is_for(job, width, height, self.kept.len());
-        // Until this frame is drawn whole, nothing is kept.
-        self.drawn.valid &= kept;
-        self.last_kept = kept;
+        let kept = self.visibility.decide(job, width, height, moved);
         if apart {
-            let only = kept.then(|| self.drawn.seen(&self.kept, &self.setup, job.mesh).1);
+            let only = kept.then(|| self.visibility.seen(&self.setup, job.mesh).1);
             self.vertices.light(job, lighter, only);
         }
-        let t_vertices = lap();
-        let verts = &self.vertices;
+        kept
+    }
+
+    /// Stage 2: the triangles set up, or on a kept frame only the Flat faces' colours.
+    fn setup_stage(&mut self, job: &Job<'_>, lighter: &Lighter, kept: bool, width: usize, height: usize) {
+        let (isa, verts) = (self.isa, &self.vertices);
         if kept {
             self.setup.light_faces(job, verts, lighter);
         } else {
             self.setup
                 .run(job, verts, lighter, |faces, out| copies::setup_faces(isa, job, verts, faces, width, height, out));
         }
-        let t_setup = lap();
-        let bands = height.div_ceil(visibility::BAND);
+    }
+
+    /// Stage 4 alone over the kept visibility; only Gouraud makes attributes again (its
+    /// colour planes), for the triangles seen. Returns the fragments lit and the bands'
+    /// time shares (all of it the resolve's).
+    fn shade_kept_stage(&mut self, job: &Job<'_>, lighter: &Lighter, height: usize) -> (usize, [f64; 2]) {
+        let (isa, verts) = (self.isa, &self.vertices);
         let attributes = |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
             copies::attributes_chunk(isa, job, verts, ts, corners, out)
         };
-        let (lit, [raster_share, resolve_share]) = if kept {
-            // Only Gouraud makes attributes again (its colour planes), for the triangles seen.
-            let seen = match job.mode {
-                ShadingMode::Gouraud => self.drawn.seen(&self.kept, &self.setup, job.mesh).0,
-                _ => &[],
-            };
-            let prepared = resolve::prepare(job, &self.setup, &mut self.scratch, bands, Some(seen), attributes);
-            let frame = Frame { isa, job, setup: &self.setup, verts, lighter, prepared: &prepared };
-            (shade_kept(&frame, &mut self.image, &mut self.scratch, &self.kept), [0.0, 1.0])
-        } else {
-            // Binning is serial; the other thread sets up the triangles' attributes meanwhile.
-            let (setup, image, bins, scratch) = (&self.setup, &mut self.image, &mut self.bins, &mut self.scratch);
-            let ((), prepared) = rayon::join(
-                || visibility::bin(setup, width, height, image, bins),
-                || resolve::prepare(job, setup, scratch, bands, None, attributes),
-            );
-            let frame = Frame { isa, job, setup, verts, lighter, prepared: &prepared };
-            let out = draw_and_shade(&frame, &mut self.image, &mut self.scratch, &self.bins[..bands], &mut self.kept);
-            self.drawn.record(job, width, height);
-            out
+        let seen = match job.mode {
+            ShadingMode::Gouraud => self.visibility.seen(&self.setup, job.mesh).0,
+            _ => &[],
         };
+        let bands = height.div_ceil(visibility::BAND);
+        let prepared = resolve::prepare(job, &self.setup, &mut self.scratch, bands, Some(seen), attributes);
+        let frame = Frame { isa, job, setup: &self.setup, verts, lighter, prepared: &prepared };
+        let pixels = self.visibility.pixels();
+        (shade_kept(&frame, &mut self.image, &mut self.scratch, pixels), [0.0, 1.0])
+    }
+
+    /// Stages 3 and 4: binning (serial, while the other thread sets up the triangles'
+    /// attributes), then each band drawn and shaded; records what the frame was drawn
+    /// from. Returns the fragments lit and the bands' time shares.
+    fn draw_and_shade_stage(
+        &mut self,
+        job: &Job<'_>,
+        lighter: &Lighter,
+        width: usize,
+        height: usize,
+    ) -> (usize, [f64; 2]) {
+        let (isa, verts) = (self.isa, &self.vertices);
+        let attributes = |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
+            copies::attributes_chunk(isa, job, verts, ts, corners, out)
+        };
+        let bands = height.div_ceil(visibility::BAND);
+        let (setup, image, bins, scratch) = (&self.setup, &mut self.image, &mut self.bins, &mut self.scratch);
+        let ((), prepared) = rayon::join(
+            || visibility::bin(setup, width, height, image, bins),
+            || resolve::prepare(job, setup, scratch, bands, None, attributes),
+        );
+        let frame = Frame { isa, job, setup, verts, lighter, prepared: &prepared };
+        let pixels = self.visibility.pixels_to_draw(width, height);
+        let out = draw_and_shade(&frame, &mut self.image, &mut self.scratch, &self.bins[..bands], pixels);
+        self.visibility.record(job, width, height);
+        out
+    }
+
+    /// The frame's visibility put in its image when asked ([`Renderer::keep_visibility`]).
+    fn expose_visibility(&mut self) {
         if self.keep_visibility {
-            self.image.raster.clone_from(&self.kept);
+            let pixels = self.visibility.pixels();
+            self.image.raster.clear();
+            self.image.raster.extend_from_slice(pixels);
         } else {
             self.image.raster.clear();
         }
-        let t_bands = lap();
-        let (t_raster, t_resolve) = (t_bands * raster_share, t_bands * resolve_share);
-        let evaluations = resolve::evaluations(job, lit);
-        let stats = Stats {
-            stage_ms: [t_vertices, t_setup, t_raster, t_resolve],
+    }
+
+    /// What the frame drew and cost.
+    fn stats(&self, job: &Job<'_>, lit: usize, kept: bool, stage_ms: [f64; 4]) -> Stats {
+        let gouraud_vertices = if job.mode == ShadingMode::Gouraud { self.vertices.eye.len() } else { 0 };
+        Stats {
+            stage_ms,
             triangles: job.mesh.triangle_count(),
             rasterised: self.setup.drawn,
-            evaluations: evaluations + if job.mode == ShadingMode::Gouraud { self.vertices.eye.len() } else { 0 },
+            evaluations: resolve::evaluations(job, lit) + gouraud_vertices,
             visibility_kept: kept,
-        };
-        Ok((&self.image, stats))
+        }
     }
 }
 
@@ -376,11 +345,10 @@ fn draw_and_shade(
     image: &mut Image,
     scratch: &mut resolve::Scratch,
     bins: &[Vec<u32>],
-    kept: &mut Vec<u32>,
+    kept: &mut [u32],
 ) -> (usize, [f64; 2]) {
     use rayon::prelude::*;
     let (width, rows) = (image.width, image.width * visibility::BAND);
-    kept.resize(image.width * image.height, NO_TRIANGLE);
     let (shared, fragments) = resolve::split(scratch);
     let (covered, lit, drawing, shading) = image
         .rgba
@@ -453,7 +421,7 @@ impl Renderer {
     /// ([`NO_TRIANGLE`] where uncovered), from the kept visibility.
     fn row_triangles(&self, y: usize) -> Option<&[u32]> {
         let w = self.image.width;
-        self.kept.get(y * w..(y + 1) * w)
+        self.visibility.pixels().get(y * w..(y + 1) * w)
     }
 
     /// The rasterised triangle at pixel (`x`, `y`) of the last frame, if covered.

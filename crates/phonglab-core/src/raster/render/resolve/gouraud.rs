@@ -2,10 +2,10 @@
 //! colours) interpolated perspective-correctly, written as planes. `c/w` and `1/w` are
 //! affine on the screen, so each is set up once per triangle ([`ColorPlanes`], f64,
 //! through a vertex) and stepped along a run in f32, and a pixel's colour is their
-//! quotient. Within a few f32 roundings of the exact value (tested: 7 channels in 1.5
-//! million one level off the f64 interpolation, as the barycentric blend had 6); 8 pixels'
-//! colours are 16 vector operations before the packing to bytes, where the blend took
-//! about 50 (counted in the source).
+//! quotient. Within a few f32 roundings of the exact value (tested against the f64
+//! interpolation: one level off at a handful of pixels, as the barycentric blend was), and
+//! a block of pixels costs a third of the vector operations of blending three vertices'
+//! colours (the count: docs/performance.md, "Why the code is written so").
 
 use super::pixels::{LANES, ResolveLanes};
 use super::runs::Run;

@@ -10,11 +10,8 @@
 //! - Gouraud: the vertices' colours (each clamped as OpenGL clamps vertex colours). The
 //!   same interpolation written as planes: `c/w` and `1/w` are affine on the screen, so
 //!   each is set up once per triangle ([`ColorPlanes`], f64, through a vertex) and stepped
-//!   along a run in f32, and a pixel's colour is their quotient. Within a few f32 roundings
-//!   of the exact value (tested: 7 channels in 1.5 million one level off the f64
-//!   interpolation, as the barycentric blend had 6); 8 pixels' colours are 16 vector
-//!   operations before the packing to bytes, where the blend took about 50 (counted in
-//!   the source).
+//!   along a run in f32, and a pixel's colour is their quotient (`gouraud`'s notes say
+//!   how close, and why).
 //! - Phong: position and normal, the normal renormalised, the lighting engine per pixel
 //!   (in batches through the specialised evaluator).
 //! - Flat: the face's colour; or, as the Phong demo's shader does, the pixel lit with
@@ -142,107 +139,181 @@ pub struct BandInput<'a> {
 }
 
 /// One band's pixels: runs of one triangle shaded, Phong's fragments lit; `lanes` packs
-/// and compares blocks of pixels ([`ResolveLanes`]). (Written once, `#[inline(always)]`;
-/// `copies` compiles it for each processor.)
+/// and compares blocks of pixels ([`ResolveLanes`]). (Written once, `#[inline(always)]`
+/// with all its steps; `copies` compiles it for each processor.)
 #[inline(always)]
-#[allow(clippy::needless_range_loop)] // lane loops: see `blend`
 pub(super) fn resolve_band_any<L: ResolveLanes>(
     lanes: L,
     band: &BandInput<'_>,
     px: &mut [[u8; 4]],
     frags: &mut Fragments,
 ) -> Shaded {
-    let BandInput { job, setup, lighter, p, shared, verts, raster, y0, width } = *band;
-    let (two, per_pixel, bg) = (p.two, p.per_pixel, p.bg);
-    let (tri_color, tri_pos, tri_nrm) = (&shared.color, &shared.pos, &shared.nrm);
+    let per_pixel = band.p.per_pixel;
     if per_pixel {
         frags.size(px.len());
     }
-    // Fragments written so far, pixels covered.
-    let (mut m, mut covered) = (0, 0);
-    // Fragments lit in the batches before this one.
-    let mut lit = 0;
-    for (row, r_row) in raster.chunks(width).enumerate() {
-        let px_row = &mut px[row * width..row * width + r_row.len()];
-        let mut x = 0;
-        while x < r_row.len() {
-            let r = r_row[x];
-            let len = run_length(lanes, &r_row[x..]);
-            let run = Run { x, y: y0 + row, at: row * width + x, len };
-            x += len;
-            if r == NO_TRIANGLE {
-                fill_px(&mut px_row[run.x..run.x + len], bg);
-                continue;
-            }
-            covered += len;
-            // The memory of the triangle some pixels ahead asked for now: on a mesh of
-            // triangles about a pixel large, each run is a new triangle's, read at random.
-            if let Some(&ahead) = r_row.get(x + RESOLVE_AHEAD)
-                && ahead != NO_TRIANGLE
-            {
-                let a = ahead as usize;
-                prefetch(std::slice::from_ref(&setup.tris[a]));
-                match job.mode {
-                    ShadingMode::Gouraud => prefetch(&tri_color[a..=a]),
-                    ShadingMode::Phong | ShadingMode::FlatDerivatives => {
-                        prefetch(&shared.edges[a..=a]);
-                        prefetch(&tri_pos[a..=a]);
-                        prefetch(&tri_nrm[a..=a]);
-                    }
-                    ShadingMode::FlatFace => {}
-                }
-            }
-            let t = &setup.tris[r as usize];
-            let side = (t.back && two) as usize;
-            let r = r as usize;
-            match job.mode {
-                ShadingMode::FlatFace => fill_px(&mut px_row[run.x..run.x + len], p.face8[side][t.orig as usize]),
-                ShadingMode::Gouraud if t.back => {
-                    gouraud_run(lanes, &attributes_of(job, verts, &setup.corners, t).color, &run, px_row)
-                }
-                ShadingMode::Gouraud => gouraud_run(lanes, &tri_color[r], &run, px_row),
-                ShadingMode::Phong => {
-                    let own = t.back.then(|| attributes_of(job, verts, &setup.corners, t));
-                    let (edges, pw, nw) = match &own {
-                        Some(a) => (&a.edges, &a.pos, &a.nrm),
-                        None => (&shared.edges[r], &tri_pos[r], &tri_nrm[r]),
-                    };
-                    let edges = edges.row(run.x, run.y);
-                    for (k0, _) in run.blocks() {
-                        let wt = run.weights(&edges, t.inv_w, k0);
-                        Fragments::store(&mut frags.pos, m + k0, &blend_n(&wt, &xyz(pw)));
-                        Fragments::store(&mut frags.nrm, m + k0, &blend_n(&wt, &xyz(nw)));
-                    }
-                    m = run.fragments(frags, m, side == 1);
-                }
-                ShadingMode::FlatDerivatives => {
-                    // The demo's Flat: the face normal, from the screen derivatives.
-                    // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
-                    let n = setup.face_normal[t.orig as usize];
-                    let face = if t.back { n } else { -n };
-                    let own = t.back.then(|| attributes_of(job, verts, &setup.corners, t));
-                    let (edges, pw) = match &own {
-                        Some(a) => (&a.edges, &a.pos),
-                        None => (&shared.edges[r], &tri_pos[r]),
-                    };
-                    let edges = edges.row(run.x, run.y);
-                    flat_fragments(&run, &edges, t.inv_w, pw, face, frags, m);
-                    m = run.fragments(frags, m, side == 1);
-                }
-            }
-        }
+    let mut progress = BandProgress::default();
+    for (row, row_triangles) in band.raster.chunks(band.width).enumerate() {
+        let row_start = row * band.width;
+        let row_px = &mut px[row_start..row_start + row_triangles.len()];
+        shade_row(lanes, band, row, row_triangles, row_px, frags, &mut progress);
         // Light the fragments of the rows so far once there are enough of them, while they
         // are still in the core's nearest caches.
-        if per_pixel && m >= BATCH {
-            light_fragments(job.mode, lighter, two, frags, m, px);
-            (lit, m) = (lit + m, 0);
+        if per_pixel && progress.pending >= BATCH {
+            progress.light_pending(band, frags, px);
         }
     }
-    if per_pixel && m > 0 {
-        light_fragments(job.mode, lighter, two, frags, m, px);
-        lit += m;
+    if per_pixel && progress.pending > 0 {
+        progress.light_pending(band, frags, px);
     }
-    Shaded { covered, lit }
+    Shaded { covered: progress.covered, lit: progress.lit }
+}
+
+/// Where a band's resolve stands.
+#[derive(Default)]
+struct BandProgress {
+    /// Fragments stored and not yet lit (per-pixel shadings light them in batches).
+    pending: usize,
+    /// Pixels covered so far.
+    covered: usize,
+    /// Fragments lit in the batches so far.
+    lit: usize,
+}
+
+impl BandProgress {
+    /// Lights the pending fragments into the band's pixels `px`.
+    #[inline(always)]
+    fn light_pending(&mut self, band: &BandInput<'_>, frags: &mut Fragments, px: &mut [[u8; 4]]) {
+        light_fragments(band.job.mode, band.lighter, band.p.two, frags, self.pending, px);
+        (self.lit, self.pending) = (self.lit + self.pending, 0);
+    }
+}
+
+/// Row `row` of the band (`row_triangles` its visibility, `row_px` its pixels), run by run:
+/// the background filled, each triangle's run shaded (a per-pixel shading's fragments
+/// stored, to be lit by the caller).
+#[inline(always)]
+fn shade_row<L: ResolveLanes>(
+    lanes: L,
+    band: &BandInput<'_>,
+    row: usize,
+    row_triangles: &[u32],
+    row_px: &mut [[u8; 4]],
+    frags: &mut Fragments,
+    progress: &mut BandProgress,
+) {
+    let mut x = 0;
+    while x < row_triangles.len() {
+        let triangle = row_triangles[x];
+        let len = run_length(lanes, &row_triangles[x..]);
+        let run = Run { x, y: band.y0 + row, at: row * band.width + x, len };
+        x += len;
+        if triangle == NO_TRIANGLE {
+            fill_px(&mut row_px[run.x..run.x + len], band.p.bg);
+            continue;
+        }
+        progress.covered += len;
+        // The memory of the triangle some pixels ahead asked for now: on a mesh of
+        // triangles about a pixel large, each run is a new triangle's, read at random.
+        if let Some(&ahead) = row_triangles.get(x + RESOLVE_AHEAD)
+            && ahead != NO_TRIANGLE
+        {
+            prefetch_triangle(band, ahead as usize);
+        }
+        progress.pending = shade_run(lanes, band, triangle as usize, &run, row_px, frags, progress.pending);
+    }
+}
+
+/// Asks for the memory the resolve will read of rasterised triangle `triangle`.
+#[inline(always)]
+fn prefetch_triangle(band: &BandInput<'_>, triangle: usize) {
+    let shared = band.shared;
+    prefetch(std::slice::from_ref(&band.setup.tris[triangle]));
+    match band.job.mode {
+        ShadingMode::Gouraud => prefetch(&shared.color[triangle..=triangle]),
+        ShadingMode::Phong | ShadingMode::FlatDerivatives => {
+            prefetch(&shared.edges[triangle..=triangle]);
+            prefetch(&shared.pos[triangle..=triangle]);
+            prefetch(&shared.nrm[triangle..=triangle]);
+        }
+        ShadingMode::FlatFace => {}
+    }
+}
+
+/// A run of rasterised triangle `triangle` in `row_px`: Flat and Gouraud write its
+/// pixels, the per-pixel shadings store its fragments after the `pending` ones. Returns
+/// the fragments now pending.
+#[inline(always)]
+fn shade_run<L: ResolveLanes>(
+    lanes: L,
+    band: &BandInput<'_>,
+    triangle: usize,
+    run: &Run,
+    row_px: &mut [[u8; 4]],
+    frags: &mut Fragments,
+    pending: usize,
+) -> usize {
+    let BandInput { job, setup, verts, p, shared, .. } = *band;
+    let t = &setup.tris[triangle];
+    match job.mode {
+        ShadingMode::FlatFace => {
+            let side = (t.back && p.two) as usize;
+            fill_px(&mut row_px[run.x..run.x + run.len], p.face8[side][t.orig as usize]);
+        }
+        // A back face's attributes are not shared: made here, from the vertices.
+        ShadingMode::Gouraud if t.back => {
+            gouraud_run(lanes, &attributes_of(job, verts, &setup.corners, t).color, run, row_px)
+        }
+        ShadingMode::Gouraud => gouraud_run(lanes, &shared.color[triangle], run, row_px),
+        ShadingMode::Phong => return phong_run(band, triangle, run, frags, pending),
+        ShadingMode::FlatDerivatives => return flat_derivatives_run(band, triangle, run, frags, pending),
+    }
+    pending
+}
+
+/// Phong: the run's positions and normals, perspective-correct, stored as fragments after
+/// the `pending` ones. Returns the fragments now pending.
+#[inline(always)]
+fn phong_run(band: &BandInput<'_>, triangle: usize, run: &Run, frags: &mut Fragments, pending: usize) -> usize {
+    let BandInput { job, setup, verts, p, shared, .. } = *band;
+    let t = &setup.tris[triangle];
+    let own = t.back.then(|| attributes_of(job, verts, &setup.corners, t));
+    let (edges, positions, normals) = match &own {
+        Some(a) => (&a.edges, &a.pos, &a.nrm),
+        None => (&shared.edges[triangle], &shared.pos[triangle], &shared.nrm[triangle]),
+    };
+    let edges = edges.row(run.x, run.y);
+    for (k0, _) in run.blocks() {
+        let weights = run.weights(&edges, t.inv_w, k0);
+        Fragments::store(&mut frags.pos, pending + k0, &blend_n(&weights, &xyz(positions)));
+        Fragments::store(&mut frags.nrm, pending + k0, &blend_n(&weights, &xyz(normals)));
+    }
+    run.fragments(frags, pending, t.back && p.two)
+}
+
+/// The demo's Flat: the run's positions, and the face normal from the screen derivatives,
+/// stored as fragments after the `pending` ones. Returns the fragments now pending.
+#[inline(always)]
+fn flat_derivatives_run(
+    band: &BandInput<'_>,
+    triangle: usize,
+    run: &Run,
+    frags: &mut Fragments,
+    pending: usize,
+) -> usize {
+    let BandInput { job, setup, verts, p, shared, .. } = *band;
+    let t = &setup.tris[triangle];
+    // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
+    let n = setup.face_normal[t.orig as usize];
+    let face = if t.back { n } else { -n };
+    let own = t.back.then(|| attributes_of(job, verts, &setup.corners, t));
+    let (edges, positions) = match &own {
+        Some(a) => (&a.edges, &a.pos),
+        None => (&shared.edges[triangle], &shared.pos[triangle]),
+    };
+    let edges = edges.row(run.x, run.y);
+    flat_fragments(run, &edges, t.inv_w, positions, face, frags, pending);
+    run.fragments(frags, pending, t.back && p.two)
 }
 
 /// What a band's resolve did.
