@@ -89,12 +89,12 @@ fn header(doc: &Document, shader: bool) -> Result<String, TemplateError> {
 /// with its uniforms. `None` where the scene does not evaluate (the export refuses it
 /// before).
 fn generated_shader(doc: &Document) -> Option<crate::teach::shader::Shader> {
-    use crate::teach::shader::{Lang, ShaderShading, for_view};
+    use crate::teach::shader::{ShaderShading, ShadingLanguage, for_view};
     let shading = match doc.view.shading {
         Shading::Phong => ShaderShading::Phong,
         Shading::Gouraud | Shading::Flat => ShaderShading::Gouraud,
     };
-    for_view(doc, Lang::Glsl, shading).ok()
+    for_view(doc, ShadingLanguage::Glsl, shading).ok()
 }
 
 /// A generated stage as a GL 2.1 compatibility context compiles it: GL's own vertex and

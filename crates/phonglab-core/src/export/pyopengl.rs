@@ -27,7 +27,7 @@ use crate::model::scene::{Light, LightPlacement, Scene};
 use crate::model::view::{Framing, LightingSpace, ObjectKind, Shading, View};
 use crate::model::vocabulary::Quantity as Q;
 use crate::t;
-use crate::teach::shader::{Lang, ShaderShading};
+use crate::teach::shader::{ShaderShading, ShadingLanguage};
 
 /// The program's text for `doc`, or why it cannot be written (a Flat view: the generated
 /// shaders are Gouraud and Phong).
@@ -40,7 +40,7 @@ pub fn program(doc: &Document, key: &Key) -> Result<String, String> {
         Shading::Flat => return Err(t!("export-flat-unsupported")),
     };
     let setup = doc.shaded_setup(crate::numerics::pow::PowFn::Exact);
-    let shader = crate::teach::shader::for_view(doc, Lang::Glsl, shading).map_err(|e| e.to_string())?;
+    let shader = crate::teach::shader::for_view(doc, ShadingLanguage::Glsl, shading).map_err(|e| e.to_string())?;
     let scene = &setup.scene;
     let shading_name = match shading {
         ShaderShading::Gouraud => "Gouraud",
