@@ -151,7 +151,7 @@ pub(super) fn resolve_band_any<L: ResolveLanes>(
     band: &BandInput<'_>,
     px: &mut [[u8; 4]],
     frags: &mut Fragments,
-) -> Shaded {
+) -> BandCounts {
     let BandInput { job, setup, lighter, p, shared, verts, raster, y0, width } = *band;
     let (two, per_pixel, bg) = (p.two, p.per_pixel, p.bg);
     let (tri_color, tri_pos, tri_nrm) = (&shared.color, &shared.pos, &shared.nrm);
@@ -242,12 +242,12 @@ pub(super) fn resolve_band_any<L: ResolveLanes>(
         light_fragments(job.mode, lighter, two, frags, m, px);
         lit += m;
     }
-    Shaded { covered, lit }
+    BandCounts { covered, lit }
 }
 
 /// What a band's resolve did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Shaded {
+pub struct BandCounts {
     /// Pixels covered by the mesh.
     pub covered: usize,
     /// Fragments lit (per-pixel shading), each one lighting evaluation.
