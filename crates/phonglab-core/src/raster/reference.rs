@@ -32,8 +32,8 @@ use crate::model::view::ShadingMode;
 use crate::raster::render::Job;
 use crate::raster::render::window::{ONE, to_window};
 
-/// An RGBA8 picture, rows top to bottom.
-pub struct Picture {
+/// An RGBA8 image, rows top to bottom (the fields of the fast renderer's [`crate::raster::render::Image`]).
+pub struct Image {
     /// Width in pixels.
     pub width: usize,
     /// Height in pixels.
@@ -77,7 +77,7 @@ fn top_left(a: (i64, i64), b: (i64, i64)) -> i64 {
 }
 
 /// Draws `job` at `width` x `height`.
-pub fn render(job: &Job<'_>, width: usize, height: usize) -> Result<Picture, SceneError> {
+pub fn render(job: &Job<'_>, width: usize, height: usize) -> Result<Image, SceneError> {
     let bg = job.background.map(|c| to_byte(c as f64));
     let rgba = colours(job, width, height)?
         .iter()
@@ -86,7 +86,7 @@ pub fn render(job: &Job<'_>, width: usize, height: usize) -> Result<Picture, Sce
             None => [bg[0], bg[1], bg[2], 255],
         })
         .collect();
-    Ok(Picture { width, height, rgba })
+    Ok(Image { width, height, rgba })
 }
 
 /// Each pixel's colour in f64 as it reaches the framebuffer (before the clamp to [0, 1]
