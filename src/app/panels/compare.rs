@@ -10,7 +10,7 @@ use phonglab_core::{locale, t};
 
 use phonglab_core::difference::{Difference, GAIN, VISIBLE, difference};
 
-use crate::app::model::evaluated::{Evaluated, Precision, evaluate};
+use crate::app::editing::evaluated::{Evaluated, Precision, evaluate};
 use crate::app::panels::shaded::cache::{ViewCache, mesh_for};
 use crate::app::panels::shaded::channel_view::{self, ChannelView};
 
