@@ -27,7 +27,7 @@ use glam::{DVec3, Vec4};
 use crate::equation::breakdown::{SideColor, VertexLighting};
 use crate::equation::lighting::{Engine, Renormalize};
 use crate::model::error::SceneError;
-use crate::model::scene::Vertex;
+use crate::model::scene::{Side, Vertex};
 use crate::model::view::ShadingMode;
 use crate::raster::render::Job;
 use crate::raster::render::window::{ONE, to_window};
@@ -47,9 +47,12 @@ fn to_byte(c: f64) -> u8 {
     (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
 }
 
-/// The side `side` (0 front, 1 back) of a vertex's lighting.
-fn side_of(l: &VertexLighting<f64>, side: usize) -> &SideColor<f64> {
-    if side == 0 { &l.front } else { &l.back }
+/// The side `side` of a vertex's lighting.
+fn side_of(l: &VertexLighting<f64>, side: Side) -> &SideColor<f64> {
+    match side {
+        Side::Front => &l.front,
+        Side::Back => &l.back,
+    }
 }
 
 /// A vertex colour as Gouraud interpolates it: primary plus secondary, each clamped to
@@ -133,7 +136,7 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
             let order = if area > 0 { [0, 1, 2] } else { [0, 2, 1] };
             let (a, b, c) = (p(order[0]), p(order[1]), p(order[2]));
             let area = area.abs();
-            let side = if front || !two_sided { 0 } else { 1 };
+            let side = Side::back_if(!front && two_sided);
             let ids = order.map(|k| [i0, i1, i2][k]);
             let face_colour = (job.mode == ShadingMode::FlatFace).then(|| {
                 let [ea, eb, ec] = ids.map(|i| eye_pos[i]);
@@ -182,7 +185,7 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
 struct Face {
     ids: [usize; 3],
     swapped: bool,
-    side: usize,
+    side: Side,
     flat: Option<[f64; 4]>,
 }
 

@@ -197,7 +197,7 @@ impl Body<'_> {
             _ => ColorMaterialMode::Specular,
         };
         if let Some(cm) = &self.scene.color_material
-            && cm.tracks(property, side.index())
+            && cm.tracks(property, side)
         {
             let c = self.uni("color".into(), "vec4");
             return if ty == "vec4" { c } else { format!("{c}.xyz") };
@@ -712,7 +712,7 @@ pub fn uniform_value(scene: &Scene, clip_from_object: &glam::DMat4, name: &str) 
             Some(vec![crate::model::transform::NormalMatrix::for_rules(&eye_from_object, scene.rules).rescale as f32])
         }
         "scene_color" => {
-            let m = &scene.lit_material(0);
+            let m = &scene.lit_material(Side::Front);
             let e = if scene.rules.emission() { m.emission.truncate() } else { glam::DVec3::ZERO };
             let a = if scene.rules.scene_ambient() {
                 m.ambient.truncate() * scene.light_model.ambient.truncate()
