@@ -171,7 +171,8 @@ fn every_channel_legend_says_what_it_shows_in_body_type() {
 #[test]
 fn the_channel_menu_names_the_cosine_the_rules_use() {
     use phonglab_core::rules::SpecularModel;
-    for (model, said, not_said) in [(SpecularModel::Phong, "R·V", "N·H"), (SpecularModel::BlinnPhong, "N·H", "R·V")] {
+    for (model, said, not_said) in [(SpecularModel::Phong, "R·V", "N·H"), (SpecularModel::BlinnPhong, "N·H", "R·V")]
+    {
         let mut h = harness_at(1280.0, 720.0);
         let mut doc = h.state().doc.clone();
         doc.scene.rules.specular = model;
