@@ -62,22 +62,13 @@ fn main() -> ExitCode {
 /// `phonglab screenshot`'s arguments as the window's picture request.
 #[cfg(not(target_arch = "wasm32"))]
 fn shot(a: cli::screenshot::ScreenshotArgs) -> phonglab::app::shell::screenshot::Shot {
-    use cli::screenshot::Open;
-    use phonglab::app::shell::screenshot::Opened;
     phonglab::app::shell::screenshot::Shot {
         size: a.size,
         scale: a.scale,
         present: a.present,
         light: a.light,
         scene: a.scene,
-        open: a.open.map(|o| match o {
-            Open::Compare => Opened::Compare,
-            Open::Lobe => Opened::Lobe,
-            Open::Quiz => Opened::Quiz,
-            Open::Shader => Opened::Shader,
-            Open::Cost => Opened::Cost,
-            Open::DemoFixes => Opened::DemoFixes,
-        }),
+        open: a.open,
         output: a.output,
     }
 }

@@ -18,7 +18,7 @@ use phonglab::app::{AppState, app_ui};
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::export::{key, notebook, openframeworks, pyopengl, shaded_key};
 use phonglab_core::scene::{ColorMaterial, ColorMaterialMode, Face};
-use phonglab_core::shader::{Lang, ShaderShading, for_view, uniform_value};
+use phonglab_core::shader::{ShaderShading, ShadingLanguage, for_view, uniform_value};
 use phonglab_core::{Document, Engine, PowFn, glref, presets};
 
 /// A field: its name, a scene with it at OpenGL's initial state (`base`), the same scene
@@ -130,14 +130,14 @@ fn places() -> Vec<Place> {
             openframeworks::app(d, &shaded_key(d)).unwrap().into_iter().map(|(n, t)| format!("{n}\n{t}")).collect()
         }),
         ("the shader", |d| {
-            let shader = for_view(d, Lang::Glsl, ShaderShading::Phong).unwrap();
+            let shader = for_view(d, ShadingLanguage::Glsl, ShaderShading::Phong).unwrap();
             let setup = d.shaded_setup(PowFn::Exact);
             let values: Vec<String> = shader
                 .uniforms
                 .iter()
                 .map(|(n, _)| format!("{n} = {:?}", uniform_value(&setup.scene, &setup.clip_from_object, n)))
                 .collect();
-            format!("{}\n{}", shader.text(Lang::Glsl), values.join("\n"))
+            format!("{}\n{}", shader.text(ShadingLanguage::Glsl), values.join("\n"))
         }),
         ("the CPU renderer", |d| {
             let setup = d.shaded_setup(PowFn::Exact);

@@ -85,3 +85,57 @@ fn the_reading_of_paths_is_itself_right() {
     assert!(named.contains(&vec!["io".into(), "budget".into(), "check".into()]), "{named:?}");
     assert_eq!(module_of(&src(), &src().join("x/mod.rs")), ["x"]);
 }
+
+/// The names ARCHITECTURE.md gives code: every word inside a `...` span, and every word of
+/// its fenced drawings (the layer tables).
+fn architecture_names() -> std::collections::BTreeSet<String> {
+    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("ARCHITECTURE.md")).unwrap();
+    let mut names = std::collections::BTreeSet::new();
+    let mut words = |s: &str| {
+        for w in s.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).filter(|w| !w.is_empty()) {
+            names.insert(w.to_string());
+        }
+    };
+    for (k, part) in text.split("```").enumerate() {
+        if k % 2 == 1 {
+            words(part);
+        } else {
+            part.split('`').skip(1).step_by(2).for_each(&mut words);
+        }
+    }
+    names
+}
+
+/// Every module of both crates, file or folder, by its name (`mod.rs`, `lib.rs` and
+/// `main.rs` are their folder's).
+fn module_names(dir: &Path, out: &mut Vec<(String, PathBuf)>) {
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let p = entry.unwrap().path();
+        let name = p.file_name().unwrap().to_string_lossy().into_owned();
+        if p.is_dir() {
+            // Program templates, not modules.
+            if name != "templates" {
+                out.push((name, p.clone()));
+                module_names(&p, out);
+            }
+        } else if let Some(stem) = name.strip_suffix(".rs")
+            && !matches!(stem, "mod" | "lib" | "main")
+        {
+            out.push((stem.to_string(), p));
+        }
+    }
+}
+
+/// ARCHITECTURE.md names every module of the core and the app, in code type (it did not
+/// name the probe, its report, the channels, the director or four of the app's panels).
+#[test]
+fn architecture_names_every_module() {
+    let named = architecture_names();
+    let mut modules = Vec::new();
+    module_names(&src(), &mut modules);
+    module_names(&Path::new(env!("CARGO_MANIFEST_DIR")).join("crates/phonglab-core/src"), &mut modules);
+    assert!(modules.len() > 200, "{}", modules.len());
+    let missing: Vec<String> =
+        modules.iter().filter(|(name, _)| !named.contains(name)).map(|(_, p)| p.display().to_string()).collect();
+    assert!(missing.is_empty(), "ARCHITECTURE.md does not name:\n{}", missing.join("\n"));
+}

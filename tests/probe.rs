@@ -414,3 +414,26 @@ fn the_probe_shows_at_and_its_inverse_under_their_own_names() {
     }
     assert!(lines.iter().all(|l| !l.name.contains("1 / (k") && !l.name.starts_with("at ")), "{lines:?}");
 }
+
+/// The probe names the side it lit as a `Side` and each light by its `LightId`; its JSON
+/// (`phonglab probe --json`) still writes both as numbers: the side 0 or 1, a light's
+/// `GL_LIGHTi` index.
+#[test]
+fn the_probe_writes_its_side_and_lights_as_numbers() {
+    use phonglab_core::scene::{LightId, Side};
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/three-lights.toml");
+    let doc = Document::from_toml(&std::fs::read_to_string(file).unwrap()).unwrap();
+    let setup = doc.shaded_setup(PowFn::Exact);
+    let mesh = doc.view.mesh();
+    let job = setup.job(&mesh);
+    let mut r = Renderer::new();
+    let mut p = probed(&job, &mut r, 101).swap_remove(0);
+    assert_eq!(p.side, Side::Front, "the sphere shows its front");
+    let ids: Vec<LightId> = p.terms.lights.iter().map(|l| l.index).collect();
+    assert_eq!(ids, LightId::all(4).collect::<Vec<_>>(), "the scene's four lights, in order");
+    p.side = Side::Back;
+    let v = serde_json::to_value(&p).unwrap();
+    assert_eq!(v["side"], serde_json::json!(1));
+    let written: Vec<_> = v["terms"]["lights"].as_array().unwrap().iter().map(|l| l["index"].clone()).collect();
+    assert_eq!(written, [0, 1, 2, 3].map(|i| serde_json::json!(i)));
+}

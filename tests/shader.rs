@@ -9,10 +9,10 @@ use std::process::Command;
 
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::plan::Key;
-use phonglab_core::shader::{Lang, Shader, ShaderShading, generate};
+use phonglab_core::shader::{Shader, ShaderShading, ShadingLanguage, generate};
 use phonglab_core::{Document, Engine, EvalOptions, Scene};
 
-fn shader(scene: &Scene, lang: Lang, shading: ShaderShading) -> Shader {
+fn shader(scene: &Scene, lang: ShadingLanguage, shading: ShaderShading) -> Shader {
     let lit = Engine::<f64>::new(scene).unwrap().light(&scene.vertex);
     let ex = explain(scene, &lit, Side::Front);
     generate(scene, EvalOptions::default(), &ex, lang, shading)
@@ -88,8 +88,8 @@ fn every_public_cases_shader_compiles() {
             continue; // the same key gives the same program
         }
         for shading in [ShaderShading::Gouraud, ShaderShading::Phong] {
-            validate_wgsl(&shader(scene, Lang::Wgsl, shading).vertex, &format!("{id} {shading:?} WGSL"));
-            validate_glsl(&dir, &format!("s{k}-{shading:?}"), &shader(scene, Lang::Glsl, shading));
+            validate_wgsl(&shader(scene, ShadingLanguage::Wgsl, shading).vertex, &format!("{id} {shading:?} WGSL"));
+            validate_glsl(&dir, &format!("s{k}-{shading:?}"), &shader(scene, ShadingLanguage::Glsl, shading));
         }
     }
     println!("{} scenes, {} distinct keys, each compiled as GLSL and WGSL, Gouraud and Phong", all.len(), keys.len());
@@ -100,7 +100,7 @@ fn every_public_cases_shader_compiles() {
 fn each_key_bit_adds_or_removes_its_lines() {
     let base = phonglab_core::presets::worksheet(5);
     let text = |s: &Scene| {
-        let g = shader(s, Lang::Glsl, ShaderShading::Gouraud);
+        let g = shader(s, ShadingLanguage::Glsl, ShaderShading::Gouraud);
         format!("{}{}", g.vertex, g.fragment)
     };
     let plain = text(&base);

@@ -18,7 +18,7 @@ use std::path::{Path, PathBuf};
 use phonglab::io::image::Difference;
 use phonglab_core::mesh::{Mesh, sphere};
 use phonglab_core::render::{Job, Renderer};
-use phonglab_core::shader::{Lang, ShaderShading, generate_for, uniform_value};
+use phonglab_core::shader::{ShaderShading, ShadingLanguage, generate_for, uniform_value};
 use phonglab_core::{CameraSpec, Document, EvalOptions, PowFn, Scene, Shading, library, presets};
 
 const SIZE: usize = 128;
@@ -117,7 +117,7 @@ fn write_inputs() {
     std::fs::create_dir_all(&dir).unwrap();
     for s in samples() {
         for (_, shading, word) in shadings() {
-            let shader = generate_for(&s.scene, s.options, Lang::Glsl, shading).unwrap();
+            let shader = generate_for(&s.scene, s.options, ShadingLanguage::Glsl, shading).unwrap();
             let uniforms: Vec<serde_json::Value> = shader
                 .uniforms
                 .iter()

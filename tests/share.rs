@@ -141,7 +141,7 @@ fn the_command_prints_the_link_and_writes_its_qr_code() {
 #[test]
 fn the_window_opens_a_link_and_refuses_a_damaged_one() {
     use phonglab::app::AppState;
-    use phonglab::app::model::message::Message;
+    use phonglab::app::editing::message::Message;
     use phonglab::app::shell::shared_link::open_fragment;
     let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/three-lights.toml");
     let doc = Document::from_toml(&std::fs::read_to_string(scene).unwrap()).unwrap();
@@ -175,7 +175,7 @@ fn payload_of(fragment: &str) -> String {
 #[test]
 fn a_scene_with_a_mesh_names_the_file_alone_and_asks_for_it_until_it_is_opened() {
     use phonglab::app::AppState;
-    use phonglab::app::model::message::Message;
+    use phonglab::app::editing::message::Message;
     use phonglab::app::shell::files::open_bytes;
     use phonglab::app::shell::shared_link::open_fragment;
     use phonglab_core::ObjectKind;
@@ -268,7 +268,7 @@ fn share_window_at(w: f32, ht: f32) {
     use egui::accesskit::Role;
     use egui_kittest::Harness;
     use egui_kittest::kittest::Queryable;
-    use phonglab::app::model::message::Message;
+    use phonglab::app::editing::message::Message;
     use phonglab::app::{AppState, app_ui};
     let mut h = Harness::builder()
         .with_size([w, ht])

@@ -5,7 +5,7 @@
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
-use phonglab::app::model::evaluated::{Settings, evaluate};
+use phonglab::app::editing::evaluated::{Settings, evaluate};
 use phonglab::app::panels::things_to_try::answer;
 use phonglab::app::{AppState, app_ui};
 use phonglab::io::experiments::{Experiment, shipped};

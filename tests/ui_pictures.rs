@@ -8,8 +8,9 @@ mod common;
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use phonglab::app::shell::screenshot::{Opened as Open, state_for};
+use phonglab::app::shell::screenshot::state_for;
 use phonglab::app::{AppState, app_ui};
+use phonglab::io::screenshot::Opened as Open;
 
 const SIZES: [(f32, f32, f32); 4] =
     [(1024.0, 768.0, 1.0), (1280.0, 720.0, 1.0), (1920.0, 1080.0, 1.0), (2560.0, 1440.0, 2.0)];

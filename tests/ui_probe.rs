@@ -164,3 +164,27 @@ fn every_channel_legend_says_what_it_shows_in_body_type() {
         }
     }
 }
+
+/// The Show menu names the specular cosine as the scene's rules form it, as the command
+/// line's channels do: `R·V` under Phong's rule, `N·H` under Blinn-Phong's. (It said N·H
+/// under both.) The menu's item stands on screen below its box.
+#[test]
+fn the_channel_menu_names_the_cosine_the_rules_use() {
+    use phonglab_core::rules::SpecularModel;
+    for (model, said, not_said) in [(SpecularModel::Phong, "R·V", "N·H"), (SpecularModel::BlinnPhong, "N·H", "R·V")]
+    {
+        let mut h = harness_at(1280.0, 720.0);
+        let mut doc = h.state().doc.clone();
+        doc.scene.rules.specular = model;
+        assert!(h.state_mut().apply(doc));
+        h.state_mut().view_options.options_open = true;
+        h.run_steps(3);
+        let combo = h.get_by_role_and_label(Role::ComboBox, "Show");
+        let combo_rect = combo.rect();
+        combo.click();
+        h.run_steps(3);
+        let item = h.get_by_label(said).rect();
+        assert!(h.query_by_label(not_said).is_none(), "{model:?}: {not_said} is not this scene's term");
+        assert!(item.top() >= combo_rect.bottom() - 1.0 && item.bottom() <= 720.0, "{item:?} under {combo_rect:?}");
+    }
+}

@@ -153,7 +153,7 @@ fn render(a: &RenderBench) -> Result<()> {
         if level > 9 {
             anyhow::bail!(phonglab_core::t!("err-bench-scan", value = level.to_string()));
         }
-        vec![("scan", as_large_as_the_sphere(phonglab_core::mesh::scan::scan_like(level, 1)))]
+        vec![("scan", as_large_as_the_sphere(phonglab_core::mesh::bumpy_sphere::bumpy_sphere(level, 1)))]
     } else {
         bench_meshes_with(a.slices).into()
     };

@@ -4,24 +4,9 @@
 
 use std::path::PathBuf;
 
-use clap::{Args, ValueEnum};
+use clap::Args;
 
-/// What to open before the picture is taken.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum Open {
-    /// Compare, with the scene pinned as A and B the same scene in Phong shading.
-    Compare,
-    /// The reflection lobe in the plot's place.
-    Lobe,
-    /// The quiz on the scene.
-    Quiz,
-    /// The Shader window.
-    Shader,
-    /// The Cost of accuracy window.
-    Cost,
-    /// The Phong demo's three corrections, side by side with the demo's own picture.
-    DemoFixes,
-}
+use crate::io::screenshot::Opened;
 
 /// `phonglab screenshot`.
 #[derive(Args, Debug, Clone)]
@@ -43,7 +28,7 @@ pub struct ScreenshotArgs {
     pub scene: Option<PathBuf>,
     /// Open this first.
     #[arg(long, value_enum)]
-    pub open: Option<Open>,
+    pub open: Option<Opened>,
     /// The PNG to write.
     #[arg(short, long)]
     pub output: PathBuf,

@@ -26,14 +26,14 @@ pub struct ShaderArgs {
 
 /// Runs `phonglab shader`.
 pub fn run(a: &ShaderArgs) -> Result<()> {
-    use phonglab_core::shader::{Lang, ShaderShading};
+    use phonglab_core::shader::{ShaderShading, ShadingLanguage};
     let doc = match &a.scene {
         Some(p) => scene_file(p)?,
         None => phonglab_core::Document::default(),
     };
     let lang = match a.target.as_str() {
-        "glsl" => Lang::Glsl,
-        "wgsl" => Lang::Wgsl,
+        "glsl" => ShadingLanguage::Glsl,
+        "wgsl" => ShadingLanguage::Wgsl,
         other => bail!(t!("err-target", value = format!("{other:?}"))),
     };
     let shading = match a.shading.as_str() {

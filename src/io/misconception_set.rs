@@ -14,7 +14,7 @@ use phonglab_core::misconception::{self, Misconception};
 use phonglab_core::t;
 
 use super::file_set::FileSet;
-use super::sheet_pdf::{Block, Pages, Picture, pdf};
+use super::sheet_pdf::{Block, Figure, Pages, pdf};
 
 /// The pictures' side in pixels.
 const PX: usize = 192;
@@ -55,8 +55,8 @@ pub fn misconception_set(seed: u64, count: usize) -> Result<FileSet> {
         set.add(format!("{stem}.png"), super::image::encode_png(PX, PX, &drawn.bugged)?);
         let title = t!("wrong-sheet-title", number = (k + 1) as i64);
         let pictures = vec![
-            Picture { caption: t!("wrong-drawn-right"), px: PX, rgba: Arc::new(drawn.correct.clone()) },
-            Picture { caption: t!("wrong-drawn-wrong"), px: PX, rgba: Arc::new(drawn.bugged.clone()) },
+            Figure { caption: t!("wrong-drawn-right"), px: PX, rgba: Arc::new(drawn.correct.clone()) },
+            Figure { caption: t!("wrong-drawn-wrong"), px: PX, rgba: Arc::new(drawn.bugged.clone()) },
         ];
         // The sheet.
         let mut sheet = format!(
@@ -69,7 +69,7 @@ pub fn misconception_set(seed: u64, count: usize) -> Result<FileSet> {
             let _ = writeln!(sheet, "- [ ] {c}");
         }
         set.add(format!("{stem}.md"), sheet);
-        sheets.extend([Block::Section(title.clone()), Block::Title(title.clone()), Block::Pictures(pictures.clone())]);
+        sheets.extend([Block::Section(title.clone()), Block::Title(title.clone()), Block::Figures(pictures.clone())]);
         sheets.push(Block::Text(t!("wrong-question")));
         sheets.extend(choices().into_iter().map(Block::Tick));
         // Room to say what in the picture shows it.
@@ -83,7 +83,7 @@ pub fn misconception_set(seed: u64, count: usize) -> Result<FileSet> {
             let _ = writeln!(key, "{}\n", phonglab_core::escape::markdown::text(l));
         }
         set.add(format!("{stem}-key.md"), key);
-        keys.extend([Block::Section(key_title.clone()), Block::Title(key_title), Block::Pictures(pictures)]);
+        keys.extend([Block::Section(key_title.clone()), Block::Title(key_title), Block::Figures(pictures)]);
         keys.extend(lines.into_iter().map(Block::Text));
         let _ = writeln!(index, "- [{title}]({stem}.md) ([{}]({stem}-key.md))", t!("answers"));
     }

@@ -2,7 +2,7 @@
 //! whole or not at all ([`atomic_write`]), read under a cap and without blocking
 //! ([`input_file`]), never over one of the inputs ([`same_file`]), within the memory budget
 //! ([`budget`]); PNG pictures ([`image`]), zip archives ([`zip`]), typeset PDF sheets
-//! ([`sheet_pdf`]), the shipped scenes ([`scenes`]) and the system's reasons for a failure
+//! ([`sheet_pdf`]), what a screenshot opens ([`screenshot`]), the shipped scenes ([`scenes`]) and the system's reasons for a failure
 //! in words ([`reasons`]).
 
 pub mod atomic_write;
@@ -19,6 +19,7 @@ pub mod reasons;
 pub mod same_file;
 pub mod save;
 pub mod scenes;
+pub mod screenshot;
 pub mod set_journal;
 pub mod sheet_pdf;
 pub mod student_code;

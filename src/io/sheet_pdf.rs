@@ -68,13 +68,13 @@ pub enum Block {
     },
     /// Start a part on a new page: its pages' footer says this, and "page k of n".
     Section(String),
-    /// Pictures side by side, each square with its caption under it.
-    Pictures(Vec<Picture>),
+    /// Figures side by side, each a square picture with its caption under it.
+    Figures(Vec<Figure>),
 }
 
-/// A square RGBA8 picture with its caption.
+/// A figure: a square RGBA8 picture with its caption (a renderer's pixels are an `Image`; a figure is one placed on a page).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Picture {
+pub struct Figure {
     /// Said under it.
     pub caption: String,
     /// Its side in pixels.
@@ -265,7 +265,7 @@ fn block_height(fonts: &Fonts, block: &Block, width: f32) -> f32 {
                 + 8.0
         }
         Block::Section(_) => 0.0,
-        Block::Pictures(_) => PICTURE + BODY * 2.6 + 10.0,
+        Block::Figures(_) => PICTURE + BODY * 2.6 + 10.0,
     }
 }
 
@@ -301,7 +301,7 @@ fn draw_block(fonts: &Fonts, block: &Block, y: f32, width: f32, page: &mut Vec<M
         Block::Answer { label, name, cells } => pen.answer(label, name, *cells, y),
         Block::KeyStep { label, formula, line } => pen.key_step(label, formula, line, y),
         Block::Section(_) => {}
-        Block::Pictures(pictures) => {
+        Block::Figures(pictures) => {
             for (k, p) in pictures.iter().enumerate() {
                 let x = MARGIN + k as f32 * (PICTURE + 20.0);
                 let rgba = p.rgba.clone();

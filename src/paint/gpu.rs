@@ -21,7 +21,7 @@ use eframe::wgpu;
 use eframe::wgpu::util::DeviceExt;
 use phonglab_core::mesh::Mesh;
 use phonglab_core::render::Job;
-use phonglab_core::shader::{Lang, Shader, ShaderShading, generate_for, uniform_value};
+use phonglab_core::shader::{Shader, ShaderShading, ShadingLanguage, generate_for, uniform_value};
 use phonglab_core::{EvalOptions, Scene, Shading};
 
 /// The colour target's format: 8 bits per channel, no sRGB encoding, as the CPU renderer
@@ -43,7 +43,7 @@ pub fn wgsl_for(scene: &Scene, options: EvalOptions, shading: Shading) -> Result
         Shading::Phong => ShaderShading::Phong,
         Shading::Flat => return Err("no program is generated for Flat shading".into()),
     };
-    generate_for(scene, options, Lang::Wgsl, shading).map_err(|e| e.to_string())
+    generate_for(scene, options, ShadingLanguage::Wgsl, shading).map_err(|e| e.to_string())
 }
 
 /// WGSL's uniform layout: the alignment of a member of GLSL type `ty` (a `mat3` is three

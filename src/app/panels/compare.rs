@@ -10,7 +10,7 @@ use phonglab_core::{locale, t};
 
 use phonglab_core::difference::{Difference, GAIN, VISIBLE, difference};
 
-use crate::app::model::evaluated::{Evaluated, Precision, evaluate};
+use crate::app::editing::evaluated::{Evaluated, Precision, evaluate};
 use crate::app::panels::shaded::cache::{ViewCache, Viewed, mesh_for};
 use crate::app::panels::shaded::channel_view::{self, ChannelView};
 
@@ -309,9 +309,11 @@ pub fn compare_ui(
                 .on_hover_text(t!("compare-difference-hover"));
         }
     });
-    if compare.a.is_some() {
-        // Its own row: a narrow centre keeps it whole.
-        channel_view::channel_ui(ui, &mut compare.channel);
+    if let Some(a) = &compare.a {
+        // Its own row: a narrow centre keeps it whole. Each term named as A's and B's rules
+        // form it.
+        let programs = [channel_view::program_of(&a.doc, a.pow), channel_view::program_of(current.doc, current.pow)];
+        channel_view::channel_ui(ui, &mut compare.channel, &[&programs[0], &programs[1]]);
     }
     let Some(a) = compare.a.clone() else {
         ui.add_space(12.0);

@@ -4,7 +4,7 @@
 use crate::app::widgets::fields::combo_ui;
 use egui::{CollapsingHeader, Ui};
 use glam::{DMat4, DVec3, DVec4};
-use phonglab_core::scene::{ColorMaterial, ColorMaterialMode, Face};
+use phonglab_core::scene::{ColorMaterial, ColorMaterialMode, Face, Side};
 use phonglab_core::t;
 use phonglab_core::transform::{mat4_from_rows, mat4_rows};
 use phonglab_core::vocabulary::Quantity as Q;
@@ -238,8 +238,8 @@ fn material_ui(ui: &mut Ui, m: &mut Material, back: bool, tracks: impl Fn(ColorM
 
 fn material_section_ui(ui: &mut Ui, doc: &mut Document) {
     let cm = doc.scene.color_material;
-    let tracks = |side: usize| move |p: ColorMaterialMode| cm.is_some_and(|cm| cm.tracks(p, side));
-    material_ui(ui, &mut doc.scene.material, false, tracks(0));
+    let tracks = |side: Side| move |p: ColorMaterialMode| cm.is_some_and(|cm| cm.tracks(p, side));
+    material_ui(ui, &mut doc.scene.material, false, tracks(Side::Front));
     color_material_ui(ui, doc);
     if doc.scene.light_model.two_sided {
         let mut separate = doc.scene.back_material.is_some();
@@ -247,7 +247,7 @@ fn material_section_ui(ui: &mut Ui, doc: &mut Document) {
             doc.scene.back_material = separate.then(|| doc.scene.material.clone());
         }
         if let Some(b) = &mut doc.scene.back_material {
-            material_ui(ui, b, true, tracks(1));
+            material_ui(ui, b, true, tracks(Side::Back));
         }
     }
 }

@@ -14,7 +14,7 @@ use phonglab_core::export::Target;
 
 use phonglab_core::{Document, PowFn};
 
-use crate::app::model::message::Message;
+use crate::app::editing::message::Message;
 use crate::app::panels::chooser::{Chooser, Purpose};
 use crate::app::panels::files::{Dialogs, FileState};
 

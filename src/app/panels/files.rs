@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use egui::Ui;
 use phonglab_core::{Document, t};
 
-use crate::app::model::message::Message;
+use crate::app::editing::message::Message;
 use crate::app::panels::chooser::{Chooser, Purpose};
 use crate::platform::files as platform;
 

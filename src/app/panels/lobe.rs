@@ -24,7 +24,7 @@ use glam::DVec3;
 use phonglab_core::lighting::terms;
 use phonglab_core::{PowFn, Scene, SpecularGate, SpecularVector};
 
-use crate::app::model::evaluated::Evaluated;
+use crate::app::editing::evaluated::Evaluated;
 use crate::app::widgets::palette;
 
 /// Luminance of the product of two colours' rgb.
@@ -285,8 +285,8 @@ mod tests {
     #[test]
     fn the_polar_plot_reaches_just_past_the_lobe() {
         let doc = phonglab_core::Document::default();
-        let s = crate::app::model::evaluated::Settings::default();
-        let eval = crate::app::model::evaluated::evaluate(&doc, s.precision, s.pow, s.side).unwrap();
+        let s = crate::app::editing::evaluated::Settings::default();
+        let eval = crate::app::editing::evaluated::evaluate(&doc, s.precision, s.pow, s.side).unwrap();
         let (lobe, _) = Lobe::of(&doc.scene, &eval).unwrap();
         let top = (0..=180).map(|k| lobe.blinn((k as f64 - 90.0).to_radians())).fold(lobe.diffuse(), f64::max);
         let curves: Vec<Curve> = vec![

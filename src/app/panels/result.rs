@@ -3,8 +3,8 @@
 use egui::{Color32, RichText, Ui};
 use phonglab_core::t;
 
-use crate::app::model::evaluated::{Evaluated, SideColors};
-use crate::app::model::message::Message;
+use crate::app::editing::evaluated::{Evaluated, SideColors};
+use crate::app::editing::message::Message;
 use crate::app::widgets::palette::{self, gl_to_color32};
 
 fn fmt4(c: &[f64; 4], digits: usize) -> String {

@@ -5,7 +5,7 @@
 
 use egui::text::LayoutJob;
 use egui::{Color32, FontId, RichText, TextFormat, Ui};
-use phonglab_core::shader::{Lang, ShaderShading, for_view};
+use phonglab_core::shader::{ShaderShading, ShadingLanguage, for_view};
 use phonglab_core::t;
 use phonglab_core::{Document, Shading};
 
@@ -55,7 +55,7 @@ pub fn line_diff(old: &str, new: &str) -> (Vec<String>, Vec<String>) {
 /// The program that draws `doc`'s shaded view (its shading: Phong per fragment,
 /// otherwise per vertex), as the GPU view runs it ([`phonglab_core::shader::for_view`]).
 pub fn program_text(doc: &Document, wgsl: bool) -> String {
-    let lang = if wgsl { Lang::Wgsl } else { Lang::Glsl };
+    let lang = if wgsl { ShadingLanguage::Wgsl } else { ShadingLanguage::Glsl };
     let shading = if doc.view.shading == Shading::Phong { ShaderShading::Phong } else { ShaderShading::Gouraud };
     for_view(doc, lang, shading).map(|s| s.text(lang)).unwrap_or_default()
 }

@@ -10,7 +10,7 @@ use phonglab_core::channels::Channel;
 use phonglab_core::export::share::{self, Shared};
 use phonglab_core::t;
 
-use crate::app::model::message::Message;
+use crate::app::editing::message::Message;
 
 /// The window's own state: open, the page, the choices, and the QR code drawn last.
 #[derive(Default)]

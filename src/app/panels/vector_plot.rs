@@ -13,7 +13,7 @@ use egui::{Color32, Pos2, Rect, Sense, Stroke, Ui, Vec2, vec2};
 use glam::{DMat3, DVec3};
 use phonglab_core::{SpecularModel, SpecularVector};
 
-use crate::app::model::evaluated::Evaluated;
+use crate::app::editing::evaluated::Evaluated;
 use crate::app::widgets::arrows::{draw_arrow, draw_end_on, end_on_marker, paint_labels_fitted};
 use crate::app::widgets::label_placement::{Segment, Wanted};
 use crate::app::widgets::palette;

@@ -7,7 +7,7 @@ use phonglab_core::t;
 
 use super::state::{AppState, Message};
 use super::{centre_layout, files, layout, state};
-use crate::app::model::editor::Editor;
+use crate::app::editing::editor::Editor;
 use crate::app::panels::{compare, lobe, result, shaded, things_to_try, vector_plot};
 
 /// How many rows of widgets stand above the shaded picture, and above the plot's diagram,

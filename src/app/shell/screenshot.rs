@@ -9,23 +9,7 @@ use anyhow::{Context as _, Result, bail};
 use crate::app::shell::frame::app_ui;
 use crate::app::shell::layout;
 use crate::app::shell::state::AppState;
-
-/// What to open before the picture is taken.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Opened {
-    /// Compare, with the scene pinned as A and B the same scene in Phong shading.
-    Compare,
-    /// The reflection lobe in the plot's place.
-    Lobe,
-    /// The quiz on the scene.
-    Quiz,
-    /// The Shader window.
-    Shader,
-    /// The Cost of accuracy window.
-    Cost,
-    /// The Phong demo's three corrections, side by side with the demo's own picture.
-    DemoFixes,
-}
+use crate::io::screenshot::Opened;
 
 /// The picture asked for.
 #[derive(Clone, Debug)]

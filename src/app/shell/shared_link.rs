@@ -9,7 +9,7 @@ use phonglab_core::export::share;
 use phonglab_core::t;
 
 use super::state::AppState;
-use crate::app::model::message::Message;
+use crate::app::editing::message::Message;
 
 /// Opens the link's `fragment` (after `#`) in `state`.
 pub fn open_fragment(state: &mut AppState, fragment: &str) {

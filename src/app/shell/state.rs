@@ -6,11 +6,11 @@
 
 use phonglab_core::{Document, SceneError, library};
 
-use crate::app::model::editor::Editor;
+use crate::app::editing::editor::Editor;
 
-pub use crate::app::model::evaluated::{Evaluated, LightVectors, Precision, SideColors, evaluate};
+pub use crate::app::editing::evaluated::{Evaluated, LightVectors, Precision, SideColors, evaluate};
 
-pub use crate::app::model::message::Message;
+pub use crate::app::editing::message::Message;
 pub use crate::app::panels::vector_plot::Orbit;
 
 /// What the centre drew last frame: the tests and `phonglab screenshot` check it.
@@ -58,7 +58,7 @@ pub struct AppState {
     /// The shell's own choices.
     pub ui: UiState,
     /// How the document is evaluated and explained: precision, power, side.
-    pub settings: crate::app::model::evaluated::Settings,
+    pub settings: crate::app::editing::evaluated::Settings,
     /// The controls' own: the light shown.
     pub controls: crate::app::panels::controls::ControlsState,
     /// The vector plot's orbit.
@@ -95,7 +95,7 @@ pub struct AppState {
     /// drawn by the scene's generated WGSL).
     pub gpu: Option<crate::app::panels::shaded::gpu::GpuInfo>,
     /// Undo and redo of the scene's changes.
-    pub history: crate::app::model::history::History,
+    pub history: crate::app::editing::history::History,
     /// This frame's time (seconds, egui's clock): a drag's changes within a second are one
     /// undo step.
     pub now: f64,

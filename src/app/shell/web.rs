@@ -65,7 +65,7 @@ impl WebApp {
         let (session, notices) = session::Session::from_text(stored.as_deref());
         let mut state = restore(&session, notices);
         if let Some(why) = mesh_lost {
-            state.message = Some(crate::app::model::message::Message::Refused(why));
+            state.message = Some(crate::app::editing::message::Message::Refused(why));
         }
         state.gpu = cc.wgpu_render_state.as_ref().map(crate::app::panels::shaded::gpu::install);
         state.view_options.renderer = renderer_asked();

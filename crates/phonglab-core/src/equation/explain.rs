@@ -534,7 +534,7 @@ fn term_steps<S: Real>(
 /// Where `GL_COLOR_MATERIAL` tracks `property` on this side, a note on the step just
 /// pushed: the material colour it used is the current colour, not `glMaterial`'s.
 fn color_material_note(b: &mut Builder, scene: &Scene, back: bool, property: ColorMaterialMode) {
-    let side = usize::from(back);
+    let side = Side::back_if(back);
     let Some(cm) = scene.color_material.filter(|cm| cm.tracks(property, side)) else { return };
     let set = if back { scene.back() } else { &scene.material };
     let (q, was) = match property {

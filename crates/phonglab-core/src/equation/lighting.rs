@@ -34,7 +34,7 @@ use glam::{DMat4, DVec3, DVec4, Vec4Swizzles as _};
 use crate::equation::breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerms, VertexLighting};
 use crate::model::error::SceneError;
 use crate::model::rules::{Rules, SpecularGate, SpecularVector};
-use crate::model::scene::{Light, Material, NormalMode, Rgba, Scene, Vertex};
+use crate::model::scene::{Light, Material, NormalMode, Rgba, Scene, Side, Vertex};
 use crate::model::transform::NormalMatrix;
 use crate::numerics::pow::PowFn;
 use crate::numerics::real::{Real, Vec3Ops};
@@ -207,7 +207,7 @@ fn prepare_light<S: Real>(scene: &Scene, index: usize, l: &Light) -> PreparedLig
         pos,
         k: l.attenuation.map(S::from_f64),
         spot,
-        products: [product(&scene.lit_material(0)), product(&scene.lit_material(1))],
+        products: [product(&scene.lit_material(Side::Front)), product(&scene.lit_material(Side::Back))],
     }
 }
 
@@ -233,7 +233,10 @@ impl<S: Real> Engine<S> {
             normal_matrix: S::m3_from_dmat3(nm.eye_from_object),
             rescale: S::from_f64(nm.rescale),
             singular: nm.singular,
-            sides: [side_material(&scene.lit_material(0), scene), side_material(&scene.lit_material(1), scene)],
+            sides: [
+                side_material(&scene.lit_material(Side::Front), scene),
+                side_material(&scene.lit_material(Side::Back), scene),
+            ],
             lights: scene.lights.iter().enumerate().map(|(i, l)| prepare_light(scene, i, l)).collect(),
         })
     }

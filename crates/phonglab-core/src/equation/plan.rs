@@ -72,7 +72,7 @@ impl Key {
     /// The key of `scene` under `options`.
     pub fn of(scene: &Scene, options: EvalOptions) -> Key {
         // The materials as lit: GL_COLOR_MATERIAL's current colour where it tracks.
-        let (front, back) = (&scene.lit_material(0), &scene.lit_material(1));
+        let (front, back) = (&scene.lit_material(Side::Front), &scene.lit_material(Side::Back));
         let spec_nonzero = |l: &crate::model::scene::Light| {
             [front, back].iter().any(|m| (0..3).any(|i| m.specular[i] * l.specular[i] != 0.0))
         };

@@ -59,7 +59,7 @@ pub fn files(doc: &Document, target: Target) -> Result<Vec<File>, String> {
         Target::PyOpenGl => vec![("phong_scene.py".into(), pyopengl::program(doc, &shaded_key(doc))?)],
         Target::OpenFrameworks => openframeworks::app(doc, &shaded_key(doc)).map_err(|e| e.to_string())?,
         Target::Glsl => {
-            let lang = crate::teach::shader::Lang::Glsl;
+            let lang = crate::teach::shader::ShadingLanguage::Glsl;
             let shading = match doc.view.shading {
                 crate::model::view::Shading::Phong => crate::teach::shader::ShaderShading::Phong,
                 _ => crate::teach::shader::ShaderShading::Gouraud,

@@ -16,7 +16,7 @@ use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::formats::document::Document;
 use crate::formats::escape;
 use crate::model::rules::{NormalTransform, RuleSet, Rules, SpecularGate, SpecularVector};
-use crate::model::scene::{Face, Light, Material, NormalMode, Scene};
+use crate::model::scene::{Face, Light, Material, NormalMode, Scene, Side};
 use crate::model::vocabulary::Quantity::{self, self as Q};
 use crate::t;
 
@@ -316,10 +316,10 @@ fn givens(scene: &Scene, needs: &Needs) -> String {
         s.push_str(&t!("nb-color-material-comment", mode = cm.mode.gl(), face = cm.face.gl(), color = color));
         s.push('\n');
     }
-    s.push_str(&material(&scene.lit_material(0), "", needs.rules.emission()));
+    s.push_str(&material(&scene.lit_material(Side::Front), "", needs.rules.emission()));
     if back_written(scene) {
         s.push('\n');
-        s.push_str(&material(&scene.lit_material(1), "Back", needs.rules.emission()));
+        s.push_str(&material(&scene.lit_material(Side::Back), "Back", needs.rules.emission()));
     }
     if needs.rules.scene_ambient() {
         s.push_str(&format!("\n{} = {};\n", Q::SceneAmbient.name(), colour(scene.light_model.ambient)));
@@ -663,7 +663,7 @@ fn back_side(scene: &Scene, needs: &Needs) -> String {
         if needs.rules.emission() {
             names.push("matEmi");
         }
-        if scene.lit_material(0).diffuse.w != 1.0 {
+        if scene.lit_material(Side::Front).diffuse.w != 1.0 {
             names.push("matAlpha");
         }
         let backs: Vec<String> = names.iter().map(|n| format!("{n}Back")).collect();

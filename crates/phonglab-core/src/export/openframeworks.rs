@@ -27,7 +27,7 @@
 
 use glam::{DMat4, DVec3, DVec4};
 
-use super::template::{Fill, Language, Template, TemplateError};
+use super::template::{Fill, ProgramLanguage, Template, TemplateError};
 use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::formats::document::Document;
 use crate::formats::escape::cpp::comment;
@@ -70,10 +70,12 @@ pub fn app(doc: &Document, key: &Key) -> Result<Vec<super::File>, TemplateError>
 }
 
 /// The app's files, whole, with their holes (see [`super::template`]).
-const HEADER: Template = Template { name: "ofApp.h", language: Language::Cpp, text: include_str!("templates/ofApp.h") };
+const HEADER: Template =
+    Template { name: "ofApp.h", language: ProgramLanguage::Cpp, text: include_str!("templates/ofApp.h") };
 const SOURCE: Template =
-    Template { name: "ofApp.cpp", language: Language::Cpp, text: include_str!("templates/ofApp.cpp") };
-const MAIN: Template = Template { name: "main.cpp", language: Language::Cpp, text: include_str!("templates/main.cpp") };
+    Template { name: "ofApp.cpp", language: ProgramLanguage::Cpp, text: include_str!("templates/ofApp.cpp") };
+const MAIN: Template =
+    Template { name: "main.cpp", language: ProgramLanguage::Cpp, text: include_str!("templates/main.cpp") };
 
 fn header(doc: &Document, shader: bool) -> Result<String, TemplateError> {
     let lights = oflights(&doc.shaded_scene());

@@ -22,7 +22,7 @@
 use glam::DMat4;
 
 use super::python::num;
-use super::template::{Fill, Language, Template};
+use super::template::{Fill, ProgramLanguage, Template};
 use crate::equation::plan::{Key, Program, SpecularTerm, Stage};
 use crate::formats::document::Document;
 use crate::formats::escape::python::{comment, triple_quoted};
@@ -73,8 +73,11 @@ pub fn program(doc: &Document, key: &Key) -> Result<String, String> {
 }
 
 /// The program, whole, with its holes (see [`super::template`]).
-const PROGRAM: Template =
-    Template { name: "phong_scene.py", language: Language::Python, text: include_str!("templates/phong_scene.py") };
+const PROGRAM: Template = Template {
+    name: "phong_scene.py",
+    language: ProgramLanguage::Python,
+    text: include_str!("templates/phong_scene.py"),
+};
 
 /// A matrix as a NumPy array of its rows.
 fn np_matrix(m: &DMat4) -> String {

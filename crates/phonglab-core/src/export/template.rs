@@ -17,9 +17,9 @@
 
 use crate::formats::escape;
 
-/// The language a template is written in.
+/// The programming language a template is written in (not a reader's language, `Lang`, nor a shading language, `ShadingLanguage`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Language {
+pub enum ProgramLanguage {
     /// Python 3.
     Python,
     /// C++ (the openFrameworks app).
@@ -32,7 +32,7 @@ pub struct Template {
     /// The file's name under `export/templates/`.
     pub name: &'static str,
     /// What the holes' contexts are escaped for.
-    pub language: Language,
+    pub language: ProgramLanguage,
     /// The text with its holes.
     pub text: &'static str,
 }
@@ -88,14 +88,14 @@ fn holes(text: &str) -> Result<(Vec<&str>, Vec<Hole<'_>>), String> {
 }
 
 /// `text` escaped for `context` in `language`.
-fn escaped(language: Language, context: &str, text: &str) -> Option<String> {
+fn escaped(language: ProgramLanguage, context: &str, text: &str) -> Option<String> {
     Some(match (language, context) {
-        (Language::Python, "str") => escape::python::string(text),
-        (Language::Python, "doc") => escape::python::triple_quoted(text, false),
-        (Language::Python, "block") => escape::python::triple_quoted(text, true),
-        (Language::Python, "comment") => escape::python::comment(text),
-        (Language::Cpp, "str") => escape::cpp::string(text),
-        (Language::Cpp, "comment") => escape::cpp::comment(text),
+        (ProgramLanguage::Python, "str") => escape::python::string(text),
+        (ProgramLanguage::Python, "doc") => escape::python::triple_quoted(text, false),
+        (ProgramLanguage::Python, "block") => escape::python::triple_quoted(text, true),
+        (ProgramLanguage::Python, "comment") => escape::python::comment(text),
+        (ProgramLanguage::Cpp, "str") => escape::cpp::string(text),
+        (ProgramLanguage::Cpp, "comment") => escape::cpp::comment(text),
         _ => return None,
     })
 }
@@ -143,7 +143,7 @@ mod tests {
 
     const T: Template = Template {
         name: "test.py",
-        language: Language::Python,
+        language: ProgramLanguage::Python,
         text: "\"\"\"{{title:doc}}\"\"\"\nx = {{x}}\n# {{c:comment}}\n",
     };
 
@@ -170,7 +170,7 @@ mod tests {
             T.fill(&[("title", text("t")), ("x", code("1")), ("c", text("")), ("y", code(""))]).is_err(),
             "a value without a hole"
         );
-        let bad = Template { name: "bad", language: Language::Cpp, text: "{{a:doc}}" };
+        let bad = Template { name: "bad", language: ProgramLanguage::Cpp, text: "{{a:doc}}" };
         assert!(bad.fill(&[("a", text(""))]).is_err(), "C++ has no doc context");
     }
 }

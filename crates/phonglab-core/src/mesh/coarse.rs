@@ -89,7 +89,7 @@ fn clustered_in(mesh: &Mesh, lo: Vec3, side: f32) -> Mesh {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mesh::{scan, sphere, teapot};
+    use crate::mesh::{bumpy_sphere, sphere, teapot};
 
     /// The 700² sphere (979 k triangles) and the scan-like mesh (1.3 M) come down to
     /// between 75 % and 110 % of the target; every vertex of the coarse sphere lies within
@@ -111,7 +111,7 @@ mod tests {
         assert!(
             coarse.triangles.iter().all(|t| t.iter().all(|i| *i < v) && t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
         );
-        let scan = scan::scan_like(8, 1);
+        let scan = bumpy_sphere::bumpy_sphere(8, 1);
         let n = clustered(&scan, target).triangle_count();
         assert!(n * 4 >= target * 3 && n <= target + target / 10, "scan: {n}");
     }

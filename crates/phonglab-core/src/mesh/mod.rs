@@ -3,11 +3,11 @@
 //! Triangles are counter-clockwise seen from outside (OpenGL's default front face);
 //! normals are unit length and point outward.
 
+pub mod bumpy_sphere;
 pub mod coarse;
 pub mod cylinder;
 pub mod obj;
 pub mod obj_text;
-pub mod scan;
 pub mod sphere;
 pub mod teapot;
 

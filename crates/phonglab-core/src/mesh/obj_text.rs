@@ -35,7 +35,7 @@ mod tests {
     #[test]
     fn every_number_reads_back_as_the_same_f32_either_way() {
         // The scan-like mesh: irregular positions and computed normals, every bit of them.
-        let mesh = crate::mesh::scan::scan_like(2, 7);
+        let mesh = crate::mesh::bumpy_sphere::bumpy_sphere(2, 7);
         let text = obj_text(&mesh);
         let numbers = |tag: &str| -> Vec<[(u32, u32); 3]> {
             text.lines()

@@ -27,9 +27,9 @@ pub enum Face {
 }
 
 impl Face {
-    /// Does this face include side `side` (0 front, 1 back)?
-    pub fn includes(self, side: usize) -> bool {
-        matches!((self, side), (Face::FrontAndBack, _) | (Face::Front, 0) | (Face::Back, 1))
+    /// Does this face include side `side`?
+    pub fn includes(self, side: Side) -> bool {
+        matches!((self, side), (Face::FrontAndBack, _) | (Face::Front, Side::Front) | (Face::Back, Side::Back))
     }
 
     /// The OpenGL enum.
@@ -71,8 +71,9 @@ impl Side {
 }
 
 /// A light, by its place among the scene's lights (`GL_LIGHTi`'s i): what a stage of the
-/// plan and the writers name a light by.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+/// plan and the writers name a light by. Written as its number in JSON (the probe's).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+#[serde(transparent)]
 pub struct LightId(pub usize);
 
 impl LightId {
@@ -168,7 +169,7 @@ impl Default for ColorMaterial {
 impl ColorMaterial {
     /// `m`, the material of side `side`, with the properties this tracks there replaced by
     /// the current colour.
-    pub fn apply(&self, m: &Material, side: usize) -> Material {
+    pub fn apply(&self, m: &Material, side: Side) -> Material {
         let mut m = m.clone();
         if !self.face.includes(side) {
             return m;
@@ -188,7 +189,7 @@ impl ColorMaterial {
     }
 
     /// Does this track `q` (one of the material's colours) on side `side`?
-    pub fn tracks(&self, property: ColorMaterialMode, side: usize) -> bool {
+    pub fn tracks(&self, property: ColorMaterialMode, side: Side) -> bool {
         self.face.includes(side)
             && match property {
                 ColorMaterialMode::Ambient => self.mode.ambient(),
@@ -439,11 +440,14 @@ impl Scene {
         self.back_material.as_ref().unwrap_or(&self.material)
     }
 
-    /// The material side `side` (0 front, 1 back) is lit with: its `glMaterial` values, with
+    /// The material side `side` is lit with: its `glMaterial` values, with
     /// the properties `GL_COLOR_MATERIAL` tracks on that side replaced by the current
     /// colour. What every engine, shader and exporter lights with.
-    pub fn lit_material(&self, side: usize) -> Material {
-        let set = if side == 0 { &self.material } else { self.back() };
+    pub fn lit_material(&self, side: Side) -> Material {
+        let set = match side {
+            Side::Front => &self.material,
+            Side::Back => self.back(),
+        };
         match &self.color_material {
             Some(cm) => cm.apply(set, side),
             None => set.clone(),

@@ -15,6 +15,7 @@
 use crate::equation::plan::{Key, Program, Stage};
 use crate::model::error::SceneError;
 use crate::model::rules::SpecularVector;
+use crate::model::scene::Side;
 use crate::raster::probe::{LightShare, Surfaces, Terms};
 use crate::raster::render::{Job, Renderer};
 
@@ -306,7 +307,7 @@ pub fn channel_image(
     let mut values = Vec::with_capacity(width * height);
     for i in 0..width * height {
         values.push(renderer.surface_at(i).map(|s| {
-            let side = (s.back && two) as usize;
+            let side = Side::back_if(s.back && two);
             let (terms, normal) = surfaces.terms_and_normal_at(&s, side);
             channel.value(&terms, normal, light)
         }));

@@ -24,15 +24,15 @@ use crate::equation::breakdown::{SideTerms, VertexLighting};
 use crate::equation::lighting::{Engine, Renormalize};
 use crate::equation::plan::{Key, Program};
 use crate::model::error::SceneError;
-use crate::model::scene::Vertex;
+use crate::model::scene::{LightId, Side, Vertex};
 use crate::model::view::ShadingMode;
 use crate::raster::render::{Job, Renderer, Surface};
 
 /// One light's share of a pixel, after its attenuation and spot factor.
-#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct LightShare {
     /// `GL_LIGHTi`.
-    pub index: usize,
+    pub index: LightId,
     /// `att_i`: 1 for a directional light.
     pub attenuation: f64,
     /// `spot_i`: 1 when not a spotlight.
@@ -62,16 +62,22 @@ pub struct Terms {
 
 impl Terms {
     /// The terms of one side of an engine breakdown.
-    pub fn of(lit: &VertexLighting<f64>, side: usize) -> Self {
-        let colour = if side == 1 { &lit.back } else { &lit.front };
+    pub fn of(lit: &VertexLighting<f64>, side: Side) -> Self {
+        let colour = match side {
+            Side::Front => &lit.front,
+            Side::Back => &lit.back,
+        };
         let lights = lit
             .lights()
             .iter()
             .map(|l| {
-                let st: &SideTerms<f64> = if side == 1 { &l.back } else { &l.front };
+                let st: &SideTerms<f64> = match side {
+                    Side::Front => &l.front,
+                    Side::Back => &l.back,
+                };
                 let scale = |v: DVec3| (v * l.scale).to_array();
                 LightShare {
-                    index: l.index,
+                    index: LightId(l.index),
                     attenuation: l.attenuation,
                     spot: l.spot.factor,
                     n_dot_l: st.n_dot_l,
@@ -197,8 +203,9 @@ pub struct Probe {
     pub vertices: [usize; 3],
     /// It faces away from the viewer.
     pub back: bool,
-    /// The side lit: 1 (back) only with two-sided lighting.
-    pub side: usize,
+    /// The side lit: the back only with two-sided lighting (written as its index, 0 or 1).
+    #[serde(serialize_with = "side_index")]
+    pub side: Side,
     /// `b_k`, perspective-correct, as the renderer computed them.
     pub weights: [f64; 3],
     /// The colour that reached the framebuffer, before its clamp.
@@ -214,6 +221,11 @@ pub struct Probe {
     /// report names.
     #[serde(skip)]
     pub program: Program,
+}
+
+/// A side in the probe's JSON: its index, 0 front or 1 back, as the renderer's sample has it.
+fn side_index<S: serde::Serializer>(side: &Side, out: S) -> Result<S::Ok, S::Error> {
+    out.serialize_u64(side.index() as u64)
 }
 
 /// The lighting engine's breakdowns of a mesh's vertices, computed as they are asked for.
@@ -241,13 +253,13 @@ impl<'a> Surfaces<'a> {
     /// shading computes them: interpolated from the vertices' (Gouraud), lit at the point
     /// from the interpolated position and normal (Phong), with the face's normal (the
     /// demo's Flat) or at the face's centroid (Flat).
-    pub fn terms_at(&mut self, s: &Surface, side: usize) -> Terms {
+    pub fn terms_at(&mut self, s: &Surface, side: Side) -> Terms {
         self.terms_and_normal_at(s, side).0
     }
 
     /// [`Surfaces::terms_at`], and the unit normal the point is lit with (Gouraud: the
     /// vertices' normals interpolated and normalised, for the normal channel).
-    pub fn terms_and_normal_at(&mut self, s: &Surface, side: usize) -> (Terms, [f64; 3]) {
+    pub fn terms_and_normal_at(&mut self, s: &Surface, side: Side) -> (Terms, [f64; 3]) {
         let ids = self.job.mesh.triangles[s.triangle].map(|i| i as usize);
         let w = s.barycentrics.map(f64::from);
         let lit: [VertexLighting<f64>; 3] = ids.map(|i| *self.vertex(i));
@@ -273,7 +285,10 @@ impl<'a> Surfaces<'a> {
             }
         };
         // The side shown faces the other way on the back.
-        (terms, if side == 1 { (-n).to_array() } else { n.to_array() })
+        match side {
+            Side::Front => (terms, n.to_array()),
+            Side::Back => (terms, (-n).to_array()),
+        }
     }
 }
 
@@ -291,8 +306,11 @@ fn face_normal(lit: &[VertexLighting<f64>; 3]) -> DVec3 {
 
 /// A vertex colour as Gouraud interpolates it: each of primary and secondary clamped to
 /// [0, 1] where the rules clamp vertex colours, then added.
-fn vertex_colour(lit: &VertexLighting<f64>, side: usize, clamp: bool) -> [f64; 4] {
-    let s = if side == 1 { &lit.back } else { &lit.front };
+fn vertex_colour(lit: &VertexLighting<f64>, side: Side, clamp: bool) -> [f64; 4] {
+    let s = match side {
+        Side::Front => &lit.front,
+        Side::Back => &lit.back,
+    };
     if !clamp {
         return s.sum();
     }
@@ -308,18 +326,20 @@ pub fn probe(renderer: &Renderer, job: &Job<'_>, x: usize, y: usize) -> Result<O
     };
     let mut surfaces = Surfaces::new(job)?;
     let surface = Surface { triangle: sample.triangle, barycentrics: sample.barycentrics, back: sample.back };
-    let terms = surfaces.terms_at(&surface, sample.side);
+    // The renderer's sample names the side by its index (0 front, 1 back).
+    let side = Side::back_if(sample.side == 1);
+    let terms = surfaces.terms_at(&surface, side);
     let vertices = job.mesh.triangles[sample.triangle].map(|i| i as usize);
     let weights = sample.barycentrics.map(f64::from);
     let clamp = job.scene.rules.clamps_vertex_colors();
     let lit: [VertexLighting<f64>; 3] = vertices.map(|i| *surfaces.vertex(i));
     let shading = match job.mode {
         ShadingMode::Gouraud => {
-            let vertex_colours = lit.each_ref().map(|l| vertex_colour(l, sample.side, clamp));
+            let vertex_colours = lit.each_ref().map(|l| vertex_colour(l, side, clamp));
             let weighted_sum = std::array::from_fn(|c| (0..3).map(|k| weights[k] * vertex_colours[k][c]).sum());
             ProbeShading::Gouraud(GouraudPixel {
                 vertex_colours,
-                vertex_unclamped: lit.each_ref().map(|l| vertex_colour(l, sample.side, false)),
+                vertex_unclamped: lit.each_ref().map(|l| vertex_colour(l, side, false)),
                 weighted_sum,
                 clamped: clamp,
             })
@@ -336,12 +356,12 @@ pub fn probe(renderer: &Renderer, job: &Job<'_>, x: usize, y: usize) -> Result<O
             })
         }
         ShadingMode::FlatFace => {
-            let n = face_normal(&lit) * if sample.side == 1 { -1.0 } else { 1.0 };
+            let n = face_normal(&lit) * if side == Side::Back { -1.0 } else { 1.0 };
             ProbeShading::Flat(FlatPixel {
                 centroid: ((lit[0].pos_in_eye + lit[1].pos_in_eye + lit[2].pos_in_eye) / 3.0).to_array(),
                 normal: n.to_array(),
                 provoking_vertex: vertices[2],
-                provoking_colour: vertex_colour(&lit[2], sample.side, clamp),
+                provoking_colour: vertex_colour(&lit[2], side, clamp),
             })
         }
     };
@@ -352,7 +372,7 @@ pub fn probe(renderer: &Renderer, job: &Job<'_>, x: usize, y: usize) -> Result<O
         triangle: sample.triangle,
         vertices,
         back: sample.back,
-        side: sample.side,
+        side,
         weights,
         unclamped: sample.colour.map(f64::from),
         rgba8: sample.rgba8,

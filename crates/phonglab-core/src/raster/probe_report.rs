@@ -115,7 +115,7 @@ fn terms_lines(p: &Probe, out: &mut Vec<ReportLine>) {
     let (label, name) = q(Quantity::SceneAmbientTerm);
     out.push(line(label, name, numbers(&p.terms.scene_ambient), 1));
     for l in &p.terms.lights {
-        out.push(line(t!("probe-light", index = l.index as i64), "", String::new(), 0));
+        out.push(line(t!("probe-light", index = l.index.index() as i64), "", String::new(), 0));
         // The worksheet's `at` (it divides), then the factor OpenGL multiplies by, 1/at.
         let (label, name) = q(Quantity::Attenuation);
         let at = if l.attenuation == 0.0 { f64::INFINITY } else { 1.0 / l.attenuation };
@@ -124,7 +124,7 @@ fn terms_lines(p: &Probe, out: &mut Vec<ReportLine>) {
         for (qq, v) in [
             (Quantity::Spot, l.spot),
             (Quantity::CosTheta, l.n_dot_l),
-            (specular_cosine(&p.program, LightId(l.index)), l.n_dot_h),
+            (specular_cosine(&p.program, l.index), l.n_dot_h),
         ] {
             let (label, name) = q(qq);
             out.push(line(label, name, num(v, 4), 1));

@@ -27,13 +27,13 @@ use glam::{DVec3, Vec4};
 use crate::equation::breakdown::{SideColor, VertexLighting};
 use crate::equation::lighting::{Engine, Renormalize};
 use crate::model::error::SceneError;
-use crate::model::scene::Vertex;
+use crate::model::scene::{Side, Vertex};
 use crate::model::view::ShadingMode;
 use crate::raster::render::Job;
 use crate::raster::render::window::{ONE, to_window};
 
-/// An RGBA8 picture, rows top to bottom.
-pub struct Picture {
+/// An RGBA8 image, rows top to bottom (the fields of the fast renderer's [`crate::raster::render::Image`]).
+pub struct Image {
     /// Width in pixels.
     pub width: usize,
     /// Height in pixels.
@@ -47,9 +47,12 @@ fn to_byte(c: f64) -> u8 {
     (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
 }
 
-/// The side `side` (0 front, 1 back) of a vertex's lighting.
-fn side_of(l: &VertexLighting<f64>, side: usize) -> &SideColor<f64> {
-    if side == 0 { &l.front } else { &l.back }
+/// The side `side` of a vertex's lighting.
+fn side_of(l: &VertexLighting<f64>, side: Side) -> &SideColor<f64> {
+    match side {
+        Side::Front => &l.front,
+        Side::Back => &l.back,
+    }
 }
 
 /// A vertex colour as Gouraud interpolates it: primary plus secondary, each clamped to
@@ -77,7 +80,7 @@ fn top_left(a: (i64, i64), b: (i64, i64)) -> i64 {
 }
 
 /// Draws `job` at `width` x `height`.
-pub fn render(job: &Job<'_>, width: usize, height: usize) -> Result<Picture, SceneError> {
+pub fn render(job: &Job<'_>, width: usize, height: usize) -> Result<Image, SceneError> {
     let bg = job.background.map(|c| to_byte(c as f64));
     let rgba = colours(job, width, height)?
         .iter()
@@ -86,7 +89,7 @@ pub fn render(job: &Job<'_>, width: usize, height: usize) -> Result<Picture, Sce
             None => [bg[0], bg[1], bg[2], 255],
         })
         .collect();
-    Ok(Picture { width, height, rgba })
+    Ok(Image { width, height, rgba })
 }
 
 /// Each pixel's colour in f64 as it reaches the framebuffer (before the clamp to [0, 1]
@@ -133,7 +136,7 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
             let order = if area > 0 { [0, 1, 2] } else { [0, 2, 1] };
             let (a, b, c) = (p(order[0]), p(order[1]), p(order[2]));
             let area = area.abs();
-            let side = if front || !two_sided { 0 } else { 1 };
+            let side = Side::back_if(!front && two_sided);
             let ids = order.map(|k| [i0, i1, i2][k]);
             let face_colour = (job.mode == ShadingMode::FlatFace).then(|| {
                 let [ea, eb, ec] = ids.map(|i| eye_pos[i]);
@@ -182,7 +185,7 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
 struct Face {
     ids: [usize; 3],
     swapped: bool,
-    side: usize,
+    side: Side,
     flat: Option<[f64; 4]>,
 }
 

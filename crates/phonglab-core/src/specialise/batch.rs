@@ -10,14 +10,14 @@ use crate::equation::plan::Stage;
 use crate::model::scene::Vertex;
 use crate::numerics::real::Vec3Ops;
 use crate::numerics::robust::transform_point;
-use crate::specialise::lighter::{EyeArrays, Lighter, Lit, Output, Probe, Source, StageTimes};
+use crate::specialise::lighter::{EyeArrays, Lighter, Lit, Output, Recorder, Source, StageTimes};
 
 impl Lighter {
     /// Lights vertices given in object space (w = 1): `front[i]` (and `back[i]` with
     /// two-sided lighting) receive the colours of `positions[i]`, `normals[i]`.
     pub fn light_batch(&self, positions: &[Vec3], normals: &[Vec3], front: &mut [Lit], back: Option<&mut [Lit]>) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(Source::Object { positions, normals }, Output::Lit { front, back }, Probe::None);
+        self.run(Source::Object { positions, normals }, Output::Lit { front, back }, Recorder::None);
     }
 
     /// [`Lighter::light_batch`] writing only each side's colour sum (primary + secondary
@@ -30,7 +30,7 @@ impl Lighter {
         back: Option<&mut [[f32; 4]]>,
     ) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(Source::Object { positions, normals }, Output::Sum { front, back }, Probe::None);
+        self.run(Source::Object { positions, normals }, Output::Sum { front, back }, Recorder::None);
     }
 
     /// [`Lighter::light_batch_eye_sum`] with normals not yet normalised: each is
@@ -44,7 +44,7 @@ impl Lighter {
         back: Option<&mut [[f32; 4]]>,
     ) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(Source::Eye { positions, normals, raw: true }, Output::Sum { front, back }, Probe::None);
+        self.run(Source::Eye { positions, normals, raw: true }, Output::Sum { front, back }, Recorder::None);
     }
 
     /// [`Lighter::light_batch_eye_sum`] (or, `raw_normals`,
@@ -57,7 +57,7 @@ impl Lighter {
         front: &mut [[f32; 4]],
         back: Option<&mut [[f32; 4]]>,
     ) {
-        self.run(Source::EyeArrays { arrays, raw: raw_normals }, Output::Sum { front, back }, Probe::None);
+        self.run(Source::EyeArrays { arrays, raw: raw_normals }, Output::Sum { front, back }, Recorder::None);
     }
 
     /// Lights vertices given in eye space, positions (w = 1) and the normals the equation
@@ -71,7 +71,7 @@ impl Lighter {
         back: Option<&mut [[f32; 4]]>,
     ) {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
-        self.run(Source::Eye { positions, normals, raw: false }, Output::Sum { front, back }, Probe::None);
+        self.run(Source::Eye { positions, normals, raw: false }, Output::Sum { front, back }, Recorder::None);
     }
 
     /// [`Lighter::light_batch`] that also records every stage it ran, once per chunk, in
@@ -84,7 +84,7 @@ impl Lighter {
         self.run(
             Source::Object { positions, normals },
             Output::Lit { front: &mut front, back: Some(&mut back) },
-            Probe::Trace(&mut trace),
+            Recorder::Trace(&mut trace),
         );
         let two = self.key().two_sided;
         (front.into_iter().zip(back).map(|(f, b)| [f, if two { b } else { f }]).collect(), trace)
@@ -98,7 +98,7 @@ impl Lighter {
     pub fn light_batch_timed(&self, positions: &[Vec3], normals: &[Vec3], front: &mut [[f32; 4]]) -> StageTimes {
         assert_eq!(positions.len(), normals.len(), "one normal per position");
         let mut times = StageTimes::default();
-        let probe = Probe::Time(&mut times, Instant::now());
+        let probe = Recorder::Time(&mut times, Instant::now());
         self.run(Source::Object { positions, normals }, Output::Sum { front, back: None }, probe);
         times
     }
@@ -122,7 +122,7 @@ impl Lighter {
         self.run(
             Source::One { pos: pos_h.truncate() / pos_h.w, n },
             Output::Lit { front: f, back: Some(b) },
-            Probe::None,
+            Recorder::None,
         );
         if !self.key().two_sided {
             out[1] = out[0];

@@ -8,13 +8,13 @@
 use crate::cpu::Isa;
 #[cfg(target_arch = "x86_64")]
 use crate::cpu::{Avx2, Avx512};
-use crate::specialise::lighter::{Lighter, Output, Probe, Source};
+use crate::specialise::lighter::{Lighter, Output, Recorder, Source};
 
 impl Lighter {
     /// The chunked driver. Runs a copy compiled for AVX-512 or AVX2 and FMA when the CPU
     /// has them (the same operations: FMA only replaces the library call behind `mul_add`
     /// in the exact products).
-    pub(super) fn run(&self, src: Source<'_>, out: Output<'_>, probe: Probe<'_>) {
+    pub(super) fn run(&self, src: Source<'_>, out: Output<'_>, probe: Recorder<'_>) {
         match Isa::best() {
             #[cfg(target_arch = "x86_64")]
             Isa::Avx512(proof) => self.run_avx512(proof, src, out, probe),
@@ -25,26 +25,26 @@ impl Lighter {
     }
 
     #[cfg(target_arch = "x86_64")]
-    fn run_avx512(&self, _: Avx512, src: Source<'_>, out: Output<'_>, probe: Probe<'_>) {
+    fn run_avx512(&self, _: Avx512, src: Source<'_>, out: Output<'_>, probe: Recorder<'_>) {
         // SAFETY: the proof says the processor has AVX-512F/DQ/VL, AVX2 and FMA.
         unsafe { self.run_avx512_body(src, out, probe) }
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx512f,avx512dq,avx2,fma")]
-    fn run_avx512_body(&self, src: Source<'_>, out: Output<'_>, probe: Probe<'_>) {
+    fn run_avx512_body(&self, src: Source<'_>, out: Output<'_>, probe: Recorder<'_>) {
         self.run_portable(src, out, probe);
     }
 
     #[cfg(target_arch = "x86_64")]
-    fn run_avx2_fma(&self, _: Avx2, src: Source<'_>, out: Output<'_>, probe: Probe<'_>) {
+    fn run_avx2_fma(&self, _: Avx2, src: Source<'_>, out: Output<'_>, probe: Recorder<'_>) {
         // SAFETY: the proof says the processor has AVX2 and FMA.
         unsafe { self.run_avx2_fma_body(src, out, probe) }
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    fn run_avx2_fma_body(&self, src: Source<'_>, out: Output<'_>, probe: Probe<'_>) {
+    fn run_avx2_fma_body(&self, src: Source<'_>, out: Output<'_>, probe: Recorder<'_>) {
         self.run_portable(src, out, probe);
     }
 }

@@ -206,7 +206,7 @@ impl Source<'_> {
 
 /// What a run records besides its output: nothing, the stages it ran (what the tests
 /// check the program against), or the time each step took.
-pub(super) enum Probe<'a> {
+pub(super) enum Recorder<'a> {
     None,
     Trace(&'a mut Vec<Stage>),
     /// The times so far, and when the step being timed began.
@@ -414,7 +414,7 @@ impl Lighter {
     /// The chunked driver, as the portable code has it (`specialise::copies` compiles it
     /// again for each processor, and `specialise::batch` runs the processor's copy).
     #[inline(always)]
-    pub(super) fn run_portable(&self, src: Source<'_>, mut out: Output<'_>, mut probe: Probe<'_>) {
+    pub(super) fn run_portable(&self, src: Source<'_>, mut out: Output<'_>, mut probe: Recorder<'_>) {
         let count = src.len();
         let front_len = match &out {
             Output::Lit { front, .. } => front.len(),
@@ -433,7 +433,7 @@ impl Lighter {
         let with_positions = self.key.needs_positions();
         let mut c = Chunk::new();
         let mut start = 0;
-        if let Probe::Time(t, _) = &mut probe {
+        if let Recorder::Time(t, _) = &mut probe {
             t.stages = program.stages.iter().map(|s| (*s, Duration::ZERO)).collect();
         }
         while start < count {
@@ -447,15 +447,15 @@ impl Lighter {
             }
             src.load(&mut c, start, with_positions);
             self.clear_sums(&mut c);
-            if let Probe::Time(t, at) = &mut probe {
+            if let Recorder::Time(t, at) = &mut probe {
                 t.load += lap(at);
             }
             for (k, &stage) in program.stages.iter().enumerate() {
                 self.stage(&mut c, stage);
                 match &mut probe {
-                    Probe::Trace(t) => t.push(stage),
-                    Probe::Time(t, at) => t.stages[k].1 += lap(at),
-                    Probe::None => {}
+                    Recorder::Trace(t) => t.push(stage),
+                    Recorder::Time(t, at) => t.stages[k].1 += lap(at),
+                    Recorder::None => {}
                 }
             }
             let r = start..start + c.n;
@@ -473,7 +473,7 @@ impl Lighter {
                     }
                 }
             }
-            if let Probe::Time(t, at) = &mut probe {
+            if let Recorder::Time(t, at) = &mut probe {
                 t.write += lap(at);
             }
             start += c.n;

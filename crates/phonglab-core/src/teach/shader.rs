@@ -23,7 +23,7 @@ use crate::model::scene::{ColorMaterialMode, LightId, Scene, Side};
 
 /// The shading language.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Lang {
+pub enum ShadingLanguage {
     /// GLSL `#version 330 core`.
     Glsl,
     /// WGSL (WebGPU).
@@ -55,34 +55,34 @@ pub struct Shader {
 impl Shader {
     /// Both stages, one after the other, as `phonglab shader` prints them. WGSL keeps both
     /// entry points in one module, so it is printed once.
-    pub fn text(&self, lang: Lang) -> String {
+    pub fn text(&self, lang: ShadingLanguage) -> String {
         match lang {
-            Lang::Glsl => {
+            ShadingLanguage::Glsl => {
                 let (v, f) = (crate::t!("shader-vertex-shader"), crate::t!("shader-fragment-shader"));
                 format!("// ---- {v} ----\n{}\n// ---- {f} ----\n{}", self.vertex, self.fragment)
             }
-            Lang::Wgsl => self.vertex.clone(),
+            ShadingLanguage::Wgsl => self.vertex.clone(),
         }
     }
 }
 
 /// Syntax per language.
 struct Syn {
-    lang: Lang,
+    lang: ShadingLanguage,
 }
 
 impl Syn {
     fn vec3(&self) -> &'static str {
-        if self.lang == Lang::Glsl { "vec3" } else { "vec3<f32>" }
+        if self.lang == ShadingLanguage::Glsl { "vec3" } else { "vec3<f32>" }
     }
     fn vec4(&self) -> &'static str {
-        if self.lang == Lang::Glsl { "vec4" } else { "vec4<f32>" }
+        if self.lang == ShadingLanguage::Glsl { "vec4" } else { "vec4<f32>" }
     }
     /// A new variable.
     fn var(&self, ty: &str, name: &str, e: &str) -> String {
         match self.lang {
-            Lang::Glsl => format!("{ty} {name} = {e};"),
-            Lang::Wgsl => format!("var {name}: {} = {e};", self.wty(ty)),
+            ShadingLanguage::Glsl => format!("{ty} {name} = {e};"),
+            ShadingLanguage::Wgsl => format!("var {name}: {} = {e};", self.wty(ty)),
         }
     }
     fn wty(&self, ty: &str) -> String {
@@ -97,15 +97,15 @@ impl Syn {
     /// A uniform's reference.
     fn u(&self, name: &str) -> String {
         match self.lang {
-            Lang::Glsl => format!("u_{name}"),
-            Lang::Wgsl => format!("u.{name}"),
+            ShadingLanguage::Glsl => format!("u_{name}"),
+            ShadingLanguage::Wgsl => format!("u.{name}"),
         }
     }
     /// `c ? a : b`.
     fn select(&self, c: &str, a: &str, b: &str) -> String {
         match self.lang {
-            Lang::Glsl => format!("(({c}) ? ({a}) : ({b}))"),
-            Lang::Wgsl => format!("select({b}, {a}, {c})"),
+            ShadingLanguage::Glsl => format!("(({c}) ? ({a}) : ({b}))"),
+            ShadingLanguage::Wgsl => format!("select({b}, {a}, {c})"),
         }
     }
 }
@@ -197,7 +197,7 @@ impl Body<'_> {
             _ => ColorMaterialMode::Specular,
         };
         if let Some(cm) = &self.scene.color_material
-            && cm.tracks(property, side.index())
+            && cm.tracks(property, side)
         {
             let c = self.uni("color".into(), "vec4");
             return if ty == "vec4" { c } else { format!("{c}.xyz") };
@@ -440,8 +440,8 @@ fn prologue(scene: &Scene, program: &Program, ex: &Explanation, s: &Syn, uniform
     uniforms.push(("normal_matrix".into(), "mat3"));
     let (nm, mv) = (s.u("normal_matrix"), s.u("eye_from_object"));
     let what = if by_m { crate::t!("shader-note-normal-by-m") } else { "(M^-1)^T".to_string() };
-    let n_in = if s.lang == Lang::Glsl { "a_normal" } else { "input.normal" };
-    let p_in = if s.lang == Lang::Glsl { "a_position" } else { "input.position" };
+    let n_in = if s.lang == ShadingLanguage::Glsl { "a_normal" } else { "input.normal" };
+    let p_in = if s.lang == ShadingLanguage::Glsl { "a_position" } else { "input.position" };
     o.push(format!(
         "{} // {} ({what})",
         s.var("vec3", "N", &format!("{nm} * {n_in}")),
@@ -486,12 +486,12 @@ fn has_view_vector(program: &Program) -> bool {
 fn declare(s: &Syn, uniforms: &[Uniform]) -> String {
     let mut d = String::new();
     match s.lang {
-        Lang::Glsl => {
+        ShadingLanguage::Glsl => {
             for (n, t) in uniforms {
                 let _ = writeln!(d, "uniform {t} u_{n};");
             }
         }
-        Lang::Wgsl => {
+        ShadingLanguage::Wgsl => {
             let _ = writeln!(d, "struct Uniforms {{");
             for (n, t) in uniforms {
                 let ty = match *t {
@@ -516,7 +516,7 @@ fn indent(lines: &[String]) -> String {
 pub fn generate_for(
     scene: &Scene,
     options: EvalOptions,
-    lang: Lang,
+    lang: ShadingLanguage,
     shading: ShaderShading,
 ) -> Result<Shader, crate::model::error::SceneError> {
     let lit = crate::equation::lighting::Engine::<f64>::new(scene)?.light(&scene.vertex);
@@ -529,7 +529,7 @@ pub fn generate_for(
 /// app's Shader window shows, what its GPU view runs and what `phonglab shader` prints.
 pub fn for_view(
     doc: &crate::formats::document::Document,
-    lang: Lang,
+    lang: ShadingLanguage,
     shading: ShaderShading,
 ) -> Result<Shader, crate::model::error::SceneError> {
     generate_for(&doc.shaded_scene(), doc.view.eval_options(crate::numerics::pow::PowFn::Exact), lang, shading)
@@ -537,7 +537,13 @@ pub fn for_view(
 
 /// Generates the program for `scene` (its key under `options`), with step numbers taken
 /// from `ex` (the scene's worked calculation).
-pub fn generate(scene: &Scene, options: EvalOptions, ex: &Explanation, lang: Lang, shading: ShaderShading) -> Shader {
+pub fn generate(
+    scene: &Scene,
+    options: EvalOptions,
+    ex: &Explanation,
+    lang: ShadingLanguage,
+    shading: ShaderShading,
+) -> Shader {
     let key = Key::of(scene, options);
     let s = Syn { lang };
     let uniforms: Vec<Uniform> = vec![("clip_from_object".into(), "mat4"), ("eye_from_object".into(), "mat4")];
@@ -574,7 +580,7 @@ fn gouraud(scene: &Scene, key: &Key, ex: &Explanation, s: &Syn, mut uniforms: Ve
     let (declared, body) = (declare(s, &uniforms), indent(&body));
     let two = key.two_sided;
     match s.lang {
-        Lang::Glsl => {
+        ShadingLanguage::Glsl => {
             let outs = if two { "out vec4 v_front;\nout vec4 v_back;\n" } else { "out vec4 v_front;\n" };
             let store = if two { "    v_front = color0;\n    v_back = color1;\n" } else { "    v_front = color0;\n" };
             let vertex = format!(
@@ -587,7 +593,7 @@ fn gouraud(scene: &Scene, key: &Key, ex: &Explanation, s: &Syn, mut uniforms: Ve
             );
             Shader { vertex, fragment, uniforms }
         }
-        Lang::Wgsl => {
+        ShadingLanguage::Wgsl => {
             let back = if two { "    @location(1) back: vec4<f32>,\n" } else { "" };
             let store_back = if two { "    out.back = color1;\n" } else { "" };
             let pick = if two { "select(in.back, in.front, facing)" } else { "in.front" };
@@ -630,7 +636,7 @@ fn phong(
     let (position, normal) = (step_no(ex, StepKind::Position, None), step_no(ex, StepKind::Normal, None));
     let two = key.two_sided;
     match s.lang {
-        Lang::Glsl => {
+        ShadingLanguage::Glsl => {
             let vertex = format!(
                 "#version 330 core\n{vertex_head}layout(location = 0) in vec3 a_position;\nlayout(location = 1) in vec3 a_normal;\n{}out vec3 v_pos;\nout vec3 v_normal;\n\nvoid main() {{\n    vec4 Ph = u_eye_from_object * vec4(a_position, 1.0); // {position}\n    v_pos = Ph.xyz / Ph.w;\n    v_normal = u_normal_matrix * a_normal; // {normal} ({what})\n    gl_Position = u_clip_from_object * vec4(a_position, 1.0);\n}}\n",
                 declare(s, &uniforms),
@@ -643,7 +649,7 @@ fn phong(
             );
             Shader { vertex, fragment, uniforms: all }
         }
-        Lang::Wgsl => {
+        ShadingLanguage::Wgsl => {
             let facing = if two { ", @builtin(front_facing) facing: bool" } else { "" };
             let pick = if two { "select(color1, color0, facing)" } else { "color0" };
             let module = format!(
@@ -706,7 +712,7 @@ pub fn uniform_value(scene: &Scene, clip_from_object: &glam::DMat4, name: &str) 
             Some(vec![crate::model::transform::NormalMatrix::for_rules(&eye_from_object, scene.rules).rescale as f32])
         }
         "scene_color" => {
-            let m = &scene.lit_material(0);
+            let m = &scene.lit_material(Side::Front);
             let e = if scene.rules.emission() { m.emission.truncate() } else { glam::DVec3::ZERO };
             let a = if scene.rules.scene_ambient() {
                 m.ambient.truncate() * scene.light_model.ambient.truncate()
@@ -737,7 +743,7 @@ mod tests {
         for scene in &scenes {
             let lit = crate::equation::lighting::Engine::<f64>::new(scene).unwrap().light(&scene.vertex);
             let ex = crate::equation::explain::explain(scene, &lit, crate::equation::explain::Side::Front);
-            for lang in [Lang::Glsl, Lang::Wgsl] {
+            for lang in [ShadingLanguage::Glsl, ShadingLanguage::Wgsl] {
                 for shading in [ShaderShading::Gouraud, ShaderShading::Phong] {
                     let sh = generate(scene, EvalOptions::default(), &ex, lang, shading);
                     let us = &sh.uniforms;
@@ -745,8 +751,8 @@ mod tests {
                     for (name, ty) in us {
                         // Declared in the source as listed.
                         let declared = match lang {
-                            Lang::Glsl => format!("uniform {ty} u_{name};"),
-                            Lang::Wgsl => format!("    {name}: "),
+                            ShadingLanguage::Glsl => format!("uniform {ty} u_{name};"),
+                            ShadingLanguage::Wgsl => format!("    {name}: "),
                         };
                         assert!(sh.vertex.contains(&declared) || sh.fragment.contains(&declared), "{name}");
                         let v = uniform_value(scene, &glam::DMat4::IDENTITY, name)

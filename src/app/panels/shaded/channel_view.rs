@@ -5,6 +5,7 @@
 use egui::{Color32, ColorImage, TextureHandle, TextureOptions, Ui};
 use phonglab_core::channels::{self, Channel, ChannelImage, ColourMap};
 use phonglab_core::mesh::Mesh;
+use phonglab_core::plan::{Key, Program};
 use phonglab_core::render::Renderer;
 use phonglab_core::{Document, PowFn, locale, t};
 
@@ -63,9 +64,27 @@ impl ChannelView {
     }
 }
 
-/// What the picture shows: the shaded view, or one term of the equation in false colour.
-pub fn channel_ui(ui: &mut Ui, channel: &mut Option<Channel>) {
-    let name = |c: Option<Channel>| c.map_or_else(|| t!("channel-picture"), |c| locale::tr(c.message_id()));
+/// The program the scene `doc` compiles to in the shaded view (with power function
+/// `pow`): what names its terms, as the command line's channels do.
+pub fn program_of(doc: &Document, pow: PowFn) -> Program {
+    Key::of(&doc.shaded_scene(), doc.view.eval_options(pow)).program()
+}
+
+/// A channel's name for the scenes whose programs are `programs`: the specular cosine as
+/// their rules form it (`N·H`, or Phong's `R·V`), both where two scenes differ.
+pub fn channel_name(channel: Channel, programs: &[&Program]) -> String {
+    let mut ids: Vec<&str> = programs.iter().map(|p| channel.message_id_for(p)).collect();
+    ids.dedup();
+    if ids.is_empty() {
+        ids.push(channel.message_id());
+    }
+    ids.iter().map(|id| locale::tr(id)).collect::<Vec<_>>().join(" / ")
+}
+
+/// What the picture shows: the shaded view, or one term of the equation in false colour,
+/// each term named as the rules of the scenes shown (`programs`) form it.
+pub fn channel_ui(ui: &mut Ui, channel: &mut Option<Channel>, programs: &[&Program]) {
+    let name = |c: Option<Channel>| c.map_or_else(|| t!("channel-picture"), |c| channel_name(c, programs));
     ui.horizontal(|ui| {
         let l = ui.label(t!("channel-show"));
         // As wide as what is left of the row, within reason: a narrow column keeps it whole.

@@ -6,7 +6,7 @@ use phonglab_core::{Document, PowFn};
 
 use super::gpu::{GpuInfo, RendererChoice};
 use super::heat_map::HeatMapState;
-use crate::app::model::editor::Editor;
+use crate::app::editing::editor::Editor;
 
 /// The shaded view's own choices, kept between frames.
 #[derive(Clone, Debug, Default, PartialEq)]

@@ -6,7 +6,7 @@ use phonglab_core::ShadedSetup;
 use phonglab_core::cost::{self, ErrorStats, Progress, Setup, Timing};
 use phonglab_core::{locale, t};
 
-use crate::app::model::worker::Worker;
+use crate::app::editing::worker::Worker;
 use crate::paint::cost_chart::{BACKGROUND, HEAT_FULL_SCALE};
 
 /// Image size of the app's study and heat map, in pixels (the CLI's default is larger).

@@ -32,7 +32,7 @@ pub use context::{Asked, Shaded, ShadedOptions, corrected_document};
 pub use overlay::vector_arrows;
 pub use toolbar::departures_ui;
 
-use crate::app::model::evaluated::Evaluated;
+use crate::app::editing::evaluated::Evaluated;
 
 /// The view's controls and the image (beside it, the corrected picture or the heat map),
 /// with N, L, V and H (or R) drawn at the worked calculation's vertex and the lights as
@@ -62,7 +62,7 @@ fn open_vertex(state: &mut Shaded<'_>, mesh: &phonglab_core::mesh::Mesh, i: usiz
     let c = state.edit.doc.with_vertex_as_shaded(phonglab_core::Vertex::from_f32(*p, *n));
     if state.edit.apply(c) {
         let object = state.edit.doc.view.object.label().to_lowercase();
-        *state.edit.message = Some(crate::app::model::message::Message::Info(phonglab_core::t!(
+        *state.edit.message = Some(crate::app::editing::message::Message::Info(phonglab_core::t!(
             "picked-vertex",
             index = i.to_string(),
             object = object

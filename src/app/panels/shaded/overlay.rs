@@ -12,8 +12,8 @@ use super::cache::{DrawnBy, ShadedCache, Viewed};
 use super::context::Shaded;
 use super::pictures::Shown;
 use super::screen::Overlay;
-use crate::app::model::evaluated::Evaluated;
-use crate::app::model::message::Message;
+use crate::app::editing::evaluated::Evaluated;
+use crate::app::editing::message::Message;
 
 /// What the pointer does on the picture: the vectors and lights drawn on it, a light
 /// dragged, the orbit camera turned and zoomed, a vertex picked. Returns the arrows drawn

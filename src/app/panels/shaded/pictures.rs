@@ -13,7 +13,7 @@ use super::channel_view::{legend_height, legend_ui};
 use super::context::{Shaded, corrected_document};
 use super::gpu::{self, GpuImage};
 use super::heat_map::heat_map_ui;
-use crate::app::model::message::Message;
+use crate::app::editing::message::Message;
 
 /// What [`pictures_ui`] drew: the main picture's response and size, the second picture's
 /// place (the demo corrected, or the heat map), and the scene as the view lights it.

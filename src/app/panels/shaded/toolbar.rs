@@ -126,7 +126,8 @@ pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCach
         egui::Frame::group(ui.style()).show(ui, |ui| {
             egui::ScrollArea::vertical().max_height(most).show(ui, |ui| {
                 // The term shown in place of the picture (Compare has its own).
-                super::channel_view::channel_ui(ui, &mut state.view_options.channel);
+                let program = super::channel_view::program_of(state.edit.doc, state.pow);
+                super::channel_view::channel_ui(ui, &mut state.view_options.channel, &[&program]);
                 renderer_ui(ui, state, &cache.main.drawn_by);
                 view_options_ui(ui, &mut view);
                 ui.horizontal_wrapped(|ui| {

@@ -8,7 +8,7 @@
 use glam::Vec4;
 
 use super::Job;
-use super::resolve::{Attributes, BandInput, Fragments, Shaded};
+use super::resolve::{Attributes, BandCounts, BandInput, Fragments};
 use super::setup::{ChunkOut, ClippedCorners, RasterTri, Setup};
 use super::vertices::Vertices;
 use super::visibility::Band;
@@ -84,7 +84,7 @@ pub(super) fn attributes_chunk(
 /// pixels covered and the lighting evaluations made (fragments lit). The copies do the
 /// same operations, so they give the same bits (Rust never fuses a multiply and an add by
 /// itself).
-pub fn resolve_band(isa: Isa, band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragments) -> Shaded {
+pub fn resolve_band(isa: Isa, band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragments) -> BandCounts {
     match isa {
         #[cfg(target_arch = "x86_64")]
         Isa::Avx512(proof) => x86::resolve_band_avx512(proof, band, px, frags),
@@ -104,7 +104,7 @@ mod x86 {
     use crate::cpu::{Avx2, Avx512};
     use crate::raster::render::Job;
     use crate::raster::render::resolve::{
-        Attributes, BandInput, Fragments, LANES as ResolveLanes, ResolveLanes as Lanes, Shaded,
+        Attributes, BandCounts, BandInput, Fragments, LANES as ResolveLanes, ResolveLanes as Lanes,
     };
     use crate::raster::render::setup::{ChunkOut, ClippedCorners, RasterTri, Setup};
     use crate::raster::render::vertices::Vertices;
@@ -184,13 +184,18 @@ mod x86 {
         band: &BandInput<'_>,
         px: &mut [[u8; 4]],
         frags: &mut Fragments,
-    ) -> Shaded {
+    ) -> BandCounts {
         // SAFETY: the proof says the processor has AVX2 and FMA.
         unsafe { resolve_band_avx2_body(proof, band, px, frags) }
     }
 
     #[target_feature(enable = "avx2,fma")]
-    fn resolve_band_avx2_body(proof: Avx2, band: &BandInput<'_>, px: &mut [[u8; 4]], frags: &mut Fragments) -> Shaded {
+    fn resolve_band_avx2_body(
+        proof: Avx2,
+        band: &BandInput<'_>,
+        px: &mut [[u8; 4]],
+        frags: &mut Fragments,
+    ) -> BandCounts {
         crate::raster::render::resolve::resolve_band_any(proof, band, px, frags)
     }
 
@@ -201,7 +206,7 @@ mod x86 {
         band: &BandInput<'_>,
         px: &mut [[u8; 4]],
         frags: &mut Fragments,
-    ) -> Shaded {
+    ) -> BandCounts {
         // SAFETY: the proof says the processor has AVX-512 F, DQ and VL, AVX2 and FMA.
         unsafe { resolve_band_avx512_body(proof.avx2(), band, px, frags) }
     }
@@ -212,7 +217,7 @@ mod x86 {
         band: &BandInput<'_>,
         px: &mut [[u8; 4]],
         frags: &mut Fragments,
-    ) -> Shaded {
+    ) -> BandCounts {
         crate::raster::render::resolve::resolve_band_any(proof, band, px, frags)
     }
 

@@ -147,7 +147,7 @@ pub(super) fn resolve_band_any<L: ResolveLanes>(
     band: &BandInput<'_>,
     px: &mut [[u8; 4]],
     frags: &mut Fragments,
-) -> Shaded {
+) -> BandCounts {
     let per_pixel = band.p.per_pixel;
     if per_pixel {
         frags.size(px.len());
@@ -166,7 +166,7 @@ pub(super) fn resolve_band_any<L: ResolveLanes>(
     if per_pixel && progress.pending > 0 {
         progress.light_pending(band, frags, px);
     }
-    Shaded { covered: progress.covered, lit: progress.lit }
+    BandCounts { covered: progress.covered, lit: progress.lit }
 }
 
 /// Where a band's resolve stands.
@@ -318,7 +318,7 @@ fn flat_derivatives_run(
 
 /// What a band's resolve did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Shaded {
+pub struct BandCounts {
     /// Pixels covered by the mesh.
     pub covered: usize,
     /// Fragments lit (per-pixel shading), each one lighting evaluation.

@@ -1,9 +1,10 @@
-//! A stand-in for a scanned statue, for the renderer's benchmarks: an icosahedron split
-//! `level` times (20 x 4^level triangles; level 8 is 1 310 720) whose vertices are moved
-//! along the sphere, by a seeded jitter, and out from it, by a sum of seeded waves, so the
-//! triangles are irregular in size and shape and the surface is bumpy as a scan is; the
-//! normals are the faces' area-weighted means, as a scanner's export computes them. At a
-//! million triangles on a 1024-pixel view, most triangles are smaller than a pixel.
+//! A bumpy sphere, standing in for a scanned statue in the renderer's benchmarks
+//! (`bench render --scan LEVEL`, the "scan-like" mesh): an icosahedron split `level`
+//! times (20 x 4^level triangles; level 8 is 1 310 720) whose vertices are moved along the
+//! sphere, by a seeded jitter, and out from it, by a sum of seeded waves, so the triangles
+//! are irregular in size and shape and the surface is bumpy as a scan is; the normals are
+//! the faces' area-weighted means, as a scanner's export computes them. At a million
+//! triangles on a 1024-pixel view, most triangles are smaller than a pixel.
 //! Deterministic: the same level and seed give the same bits.
 
 use std::collections::HashMap;
@@ -12,8 +13,8 @@ use glam::Vec3;
 
 use super::Mesh;
 
-/// The scan-like mesh of `20 x 4^level` triangles (level at most 9), radius about 0.5.
-pub fn scan_like(level: u32, seed: u64) -> Mesh {
+/// The bumpy sphere of `20 x 4^level` triangles (level at most 9), radius about 0.5.
+pub fn bumpy_sphere(level: u32, seed: u64) -> Mesh {
     let level = level.min(9);
     let t = (1.0 + 5f32.sqrt()) / 2.0;
     let mut positions: Vec<Vec3> = [
@@ -129,7 +130,7 @@ mod tests {
 
     #[test]
     fn the_counts_the_shape_and_the_irregularity_are_a_scans() {
-        let m = scan_like(4, 1);
+        let m = bumpy_sphere(4, 1);
         assert_eq!(m.triangle_count(), 20 * 4usize.pow(4));
         // Euler: V - E + F = 2 on a closed surface of genus 0, E = 3F/2.
         assert_eq!(m.positions.len(), 2 + m.triangle_count() / 2);
@@ -152,7 +153,7 @@ mod tests {
         // Outward: the normal agrees with the position's direction almost everywhere.
         let outward = m.positions.iter().zip(&m.normals).filter(|(p, n)| p.dot(**n) > 0.0).count();
         assert!(outward * 100 > 99 * m.positions.len(), "{outward} of {}", m.positions.len());
-        assert_eq!(scan_like(4, 1), m, "deterministic");
-        assert_ne!(scan_like(4, 2).positions, m.positions, "seeded");
+        assert_eq!(bumpy_sphere(4, 1), m, "deterministic");
+        assert_ne!(bumpy_sphere(4, 2).positions, m.positions, "seeded");
     }
 }
