@@ -25,7 +25,7 @@ pub fn cases_json(paths: &[PathBuf]) -> Result<serde_json::Value> {
         if doc.scene.rules != phonglab_core::Rules::OPENGL {
             super::say(&format!(
                 "phonglab: {}",
-                phonglab_core::t!(
+                crate::t!(
                     "case-rules-note",
                     path = crate::io::reasons::shown(p),
                     rules = doc.scene.rules.set.label()

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
 use phonglab_core::export::{Target, files};
-use phonglab_core::t;
+use crate::t;
 
 use crate::io::file_set::FileSet;
 

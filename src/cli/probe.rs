@@ -3,7 +3,8 @@
 use anyhow::{Result, bail};
 use clap::Args;
 use phonglab_core::render::Renderer;
-use phonglab_core::{probe, probe_report, t};
+use phonglab_core::{probe, probe_report};
+use crate::t;
 
 use super::render::ShadedInput;
 

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use clap::Args;
-use phonglab_core::t;
+use crate::t;
 
 use super::scene_file;
 

@@ -7,7 +7,7 @@ use anyhow::Result;
 use clap::Args;
 use phonglab_core::channels::Channel;
 use phonglab_core::export::share::{Shared, link};
-use phonglab_core::t;
+use crate::t;
 
 use phonglab_core::export::share::DEFAULT_BASE;
 

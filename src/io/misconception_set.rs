@@ -11,7 +11,7 @@ use std::sync::Arc;
 
 use anyhow::Result;
 use phonglab_core::misconception::{self, Misconception};
-use phonglab_core::t;
+use crate::t;
 
 use super::file_set::FileSet;
 use super::sheet_pdf::{Block, Pages, Picture, pdf};

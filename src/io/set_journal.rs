@@ -24,7 +24,7 @@ use std::hash::Hasher as _;
 use std::io::{self, Read};
 use std::path::Path;
 
-use phonglab_core::t;
+use crate::t;
 use serde::{Deserialize, Serialize};
 use siphasher::sip128::{Hasher128, SipHasher13};
 

@@ -6,7 +6,7 @@
 use std::path::{Path, PathBuf};
 
 use egui::Ui;
-use phonglab_core::t;
+use crate::t;
 
 use crate::io::listing::{Entry, list};
 

@@ -6,7 +6,7 @@
 use egui::{Color32, RichText, Ui};
 use phonglab_core::explain::{Explanation, fmt_value};
 use phonglab_core::{Document, PowFn};
-use phonglab_core::{locale, t};
+use crate::{locale, t};
 
 use phonglab_core::difference::{Difference, GAIN, VISIBLE, difference};
 

@@ -10,7 +10,7 @@ use std::sync::Arc;
 
 use phonglab_core::ShadedSetup;
 use phonglab_core::cost::{self, Setup, Study, Timing};
-use phonglab_core::t;
+use crate::t;
 
 use crate::app::model::worker::Worker;
 pub use crate::app::panels::shaded::heat_map::APP_SIZE;

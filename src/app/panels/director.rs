@@ -10,7 +10,8 @@ use egui::{Color32, Pos2, Rect, Sense, Stroke, Ui};
 use glam::{DMat3, DMat4, DVec3, DVec4};
 use phonglab_core::director::{self, Kind, Space, Stage};
 use phonglab_core::transform::{of_camera_distance, perspective};
-use phonglab_core::{Document, Framing, Scene, locale, t};
+use phonglab_core::{Document, Framing, Scene};
+use crate::{locale, t};
 
 use crate::app::widgets::label_placement::Segment;
 use crate::app::widgets::palette;

@@ -5,7 +5,8 @@
 use std::path::{Path, PathBuf};
 
 use egui::Ui;
-use phonglab_core::{Document, t};
+use phonglab_core::Document;
+use crate::t;
 
 use crate::app::model::message::Message;
 use crate::app::panels::chooser::{Chooser, Purpose};

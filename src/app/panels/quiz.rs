@@ -11,7 +11,7 @@ use egui::{RichText, Ui};
 use phonglab_core::explain::{Explanation, Side, explain, fmt_value};
 use phonglab_core::quiz::{Mark, TOLERANCE, Verdict, asked, check, parse_answer, score};
 use phonglab_core::{Document, Engine};
-use phonglab_core::{locale, t};
+use crate::{locale, t};
 use serde::{Deserialize, Serialize};
 
 use crate::app::widgets::palette;

@@ -5,7 +5,7 @@
 
 use egui::{ColorImage, RichText, TextureHandle, TextureOptions, Ui};
 use phonglab_core::misconception::{self, Misconception};
-use phonglab_core::t;
+use crate::t;
 
 use crate::app::widgets::palette;
 

@@ -5,8 +5,9 @@
 
 use egui::Ui;
 use phonglab_core::explain::{Explanation, fmt_value};
-use phonglab_core::locale::Lang;
-use phonglab_core::{Document, t};
+use crate::locale::Lang;
+use phonglab_core::Document;
+use crate::t;
 
 use crate::io::experiments::{self, Experiment};
 
@@ -59,7 +60,7 @@ pub fn answer(e: &Experiment, ex: &Explanation) -> Option<(usize, String)> {
     let k = ex.steps.iter().position(|s| s.name == e.answer && (e.light.is_none() || s.light == e.light))?;
     let s = &ex.steps[k];
     let value = match &s.value {
-        Some(v) => phonglab_core::locale::decimal(&fmt_value(v, 8)),
+        Some(v) => crate::locale::decimal(&fmt_value(v, 8)),
         None => t!("not-applicable"),
     };
     Some((k, format!("{} = {value}", s.name)))

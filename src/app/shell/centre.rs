@@ -3,7 +3,7 @@
 //! with a divider between them that can be dragged; with Compare on, A beside B.
 
 use egui::Ui;
-use phonglab_core::t;
+use crate::t;
 
 use super::state::{AppState, Message};
 use super::{centre_layout, files, layout, state};

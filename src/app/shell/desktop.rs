@@ -3,7 +3,7 @@
 //! termination signals that save it before the window closes ([`super::shutdown`]).
 
 use egui::Ui;
-use phonglab_core::t;
+use crate::t;
 
 use super::files;
 use super::frame::app_ui;

@@ -6,7 +6,7 @@
 use std::path::{Path, PathBuf};
 
 use phonglab_core::Document;
-use phonglab_core::t;
+use crate::t;
 
 use super::state::{AppState, Message};
 use crate::app::panels::files::FileRequest;

@@ -22,7 +22,7 @@
 //! - `session.ron` is a folder, or the storage folder cannot be made: the window works but
 //!   does not save its session.
 
-use phonglab_core::t;
+use crate::t;
 use std::collections::BTreeMap;
 use std::fs::File;
 use std::path::{Path, PathBuf};

@@ -6,7 +6,7 @@
 
 use egui::Ui;
 use egui::containers::menu::{MenuButton, MenuConfig};
-use phonglab_core::t;
+use crate::t;
 use phonglab_core::{ObjectKind, Shading};
 
 use super::state::{AppState, Precision};
@@ -256,7 +256,7 @@ fn view_menu_ui(ui: &mut Ui, state: &mut AppState) {
 
 /// The language and decimal mark menu (kept across restarts).
 fn language_menu_ui(ui: &mut Ui, layout: &mut layout::Layout) {
-    use phonglab_core::locale::{DecimalMark, Lang};
+    use crate::locale::{DecimalMark, Lang};
     let now = layout.locale();
     ui.menu_button(now.lang.code(), |ui| {
         for lang in Lang::ALL {
@@ -273,7 +273,7 @@ fn language_menu_ui(ui: &mut Ui, layout: &mut layout::Layout) {
         }
     })
     .response
-    .on_hover_text(phonglab_core::t!("language-menu-hover"));
+    .on_hover_text(crate::t!("language-menu-hover"));
 }
 
 /// Undo and Redo, each saying what it would change.

@@ -1,7 +1,7 @@
 //! The windows over the layout: the cost study (its finished work collected first), the
 //! shader, phonglab's own file chooser, the things to try, the keys' help.
 
-use phonglab_core::t;
+use crate::t;
 
 use super::state::AppState;
 use crate::app::panels::things_to_try::{self, TryAsked};

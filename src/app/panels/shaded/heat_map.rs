@@ -4,7 +4,7 @@
 use egui::{ColorImage, TextureHandle, TextureOptions, Ui};
 use phonglab_core::ShadedSetup;
 use phonglab_core::cost::{self, ErrorStats, Progress, Setup, Timing};
-use phonglab_core::{locale, t};
+use crate::{locale, t};
 
 use crate::app::model::worker::Worker;
 use crate::paint::cost_chart::{BACKGROUND, HEAT_FULL_SCALE};

@@ -5,7 +5,7 @@
 
 use egui::{Color32, Sense, Ui};
 use glam::DVec4;
-use phonglab_core::t;
+use crate::t;
 
 use super::context::Shaded;
 use super::screen::Overlay;

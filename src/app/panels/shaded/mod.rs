@@ -60,7 +60,7 @@ fn open_vertex(state: &mut Shaded<'_>, cache: &mut ShadedCache, i: usize) {
     let c = state.edit.doc.with_vertex_as_shaded(phonglab_core::Vertex::from_f32(*p, *n));
     if state.edit.apply(c) {
         let object = state.edit.doc.view.object.label().to_lowercase();
-        *state.edit.message = Some(crate::app::model::message::Message::Info(phonglab_core::t!(
+        *state.edit.message = Some(crate::app::model::message::Message::Info(crate::t!(
             "picked-vertex",
             index = i.to_string(),
             object = object

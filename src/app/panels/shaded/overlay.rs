@@ -4,7 +4,7 @@
 
 use egui::{Color32, Ui};
 use glam::DVec3;
-use phonglab_core::t;
+use crate::t;
 use phonglab_core::{Document, Framing, Vertex};
 
 use super::arrow_on_object::ArrowOnObject;

@@ -2,7 +2,8 @@
 //! drawn by the GPU or the CPU, and beside it the demo corrected or the error heat map.
 
 use egui::{Sense, Ui};
-use phonglab_core::{Document, t};
+use phonglab_core::Document;
+use crate::t;
 
 use super::cache::{DrawnBy, ShadedCache, ViewCache, mesh_for};
 use super::captions::{Caption, CaptionRoom, caption_room, caption_ui, corrected_caption, main_caption};

@@ -4,7 +4,7 @@
 
 use egui::Ui;
 use phonglab_core::library::DemoDeparture;
-use phonglab_core::t;
+use crate::t;
 use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, View};
 
 use super::cache::{DrawnBy, ShadedCache};
