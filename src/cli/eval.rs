@@ -8,6 +8,7 @@ use anyhow::{Context, Result, bail};
 use clap::Args;
 use phonglab_core::glref::{self, CaseColors};
 use phonglab_core::{EvalOptions, PowFn, Precision, Scene};
+
 use crate::t;
 
 /// `phonglab eval`.

@@ -7,9 +7,9 @@ use anyhow::{Context, Result, bail};
 use clap::Args;
 use phonglab_core::Rules;
 use phonglab_core::exercise::{Effect, Level, Spec};
-use crate::t;
 
 use crate::io::exercise_set::{Request, write};
+use crate::t;
 
 /// `phonglab exercise`.
 #[derive(Args, Debug)]

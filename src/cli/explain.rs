@@ -7,9 +7,9 @@ use anyhow::{Result, bail};
 use clap::Args;
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::{Engine, Precision, Real, Scene, presets};
-use crate::t;
 
 use super::scene_file;
+use crate::t;
 
 /// `phonglab explain`.
 #[derive(Args, Debug)]

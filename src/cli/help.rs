@@ -13,6 +13,7 @@
 
 use clap::builder::{PossibleValue, StyledStr};
 use clap::{Arg, ArgAction, Command};
+
 use crate::locale::tr;
 use crate::t;
 

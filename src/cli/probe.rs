@@ -4,9 +4,9 @@ use anyhow::{Result, bail};
 use clap::Args;
 use phonglab_core::render::Renderer;
 use phonglab_core::{probe, probe_report};
-use crate::t;
 
 use super::render::ShadedInput;
+use crate::t;
 
 /// `phonglab probe`.
 #[derive(Args, Debug)]

@@ -9,9 +9,9 @@ use phonglab_core::channels::{self, Channel, ColourMap};
 use phonglab_core::mesh::Mesh;
 use phonglab_core::render::{Job, Renderer};
 use phonglab_core::{EvalOptions, ObjectKind, PowFn, Scene, Shading, ShadingMode, library, presets};
-use crate::t;
 
 use super::scene_file;
+use crate::t;
 
 /// What to draw, shared by `render` and `probe`: a scene (file, preset or the benchmark's
 /// frame), its object and shading, the picture's size.

@@ -15,6 +15,7 @@
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use phonglab_core::mesh::obj::describe_bytes;
+
 use crate::t;
 
 /// The budget in bytes, once set (0: not set yet).

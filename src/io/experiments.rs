@@ -30,9 +30,10 @@ use std::path::Path;
 use phonglab_core::escape::printable;
 
 use phonglab_core::Document;
+use serde::Deserialize;
+
 use crate::locale::Lang;
 use crate::t;
-use serde::Deserialize;
 
 include!(concat!(env!("OUT_DIR"), "/experiment_files.rs"));
 

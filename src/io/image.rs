@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use anyhow::{Context, Result};
+
 use crate::t;
 
 /// Encodes RGBA8 pixels (rows top to bottom) as the bytes of a PNG file, every chunk

@@ -2,6 +2,7 @@
 //! the Presets menu lists them: grouped by folder, each with a title and its document.
 
 use phonglab_core::Document;
+
 use crate::locale::{current, has_message, tr, tr_args};
 use crate::t;
 

@@ -6,6 +6,7 @@ use egui::{Color32, Ui};
 use egui_plot::{Legend, Line, LineStyle, MarkerShape, Plot, PlotPoint, PlotPoints, Points, Text};
 use phonglab_core::Shading;
 use phonglab_core::cost::{self, Question, Study};
+
 use crate::{locale, t};
 
 /// The background colour of the study's images (the shaded view's).

@@ -46,9 +46,7 @@ pub fn load_browser_session() -> Option<String> {
 #[cfg(target_arch = "wasm32")]
 pub fn save_browser_session(text: &str) -> Result<(), String> {
     let storage = local_storage().ok_or_else(|| crate::t!("browser-no-storage"))?;
-    storage
-        .set_item(BROWSER_KEY, text)
-        .map_err(|e| crate::t!("browser-storage-refused", error = format!("{e:?}")))
+    storage.set_item(BROWSER_KEY, text).map_err(|e| crate::t!("browser-storage-refused", error = format!("{e:?}")))
 }
 
 #[cfg(target_arch = "wasm32")]

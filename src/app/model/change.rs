@@ -5,8 +5,9 @@
 //! than as the fields that shifted when the list closed up ("light 0 ambient and 9 more").
 
 use phonglab_core::explain::fmt_sig;
-use crate::t;
 use phonglab_core::{Document, Light};
+
+use crate::t;
 
 /// The fields that differ between two documents, as their scene files name them
 /// (`material.shininess`, `lights.0.position`): what joins a drag's steps into one.

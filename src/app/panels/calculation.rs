@@ -5,9 +5,9 @@ use egui::{RichText, Ui};
 use phonglab_core::effects::Effect;
 use phonglab_core::explain::{Explanation, Side, fmt_value};
 use phonglab_core::plan::Stage;
-use crate::t;
 
 use crate::app::widgets::palette;
+use crate::t;
 
 /// Significant digits shown.
 const DIGITS: usize = 8;

@@ -2,10 +2,10 @@
 //! edits a copy of the document; the caller applies it (or refuses it).
 
 use crate::app::widgets::fields::combo_ui;
+use crate::t;
 use egui::{CollapsingHeader, Ui};
 use glam::{DMat4, DVec3, DVec4};
 use phonglab_core::scene::{ColorMaterial, ColorMaterialMode, Face};
-use crate::t;
 use phonglab_core::transform::{mat4_from_rows, mat4_rows};
 use phonglab_core::vocabulary::Quantity as Q;
 use phonglab_core::{

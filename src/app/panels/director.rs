@@ -11,10 +11,10 @@ use glam::{DMat3, DMat4, DVec3, DVec4};
 use phonglab_core::director::{self, Kind, Space, Stage};
 use phonglab_core::transform::{of_camera_distance, perspective};
 use phonglab_core::{Document, Framing, Scene};
-use crate::{locale, t};
 
 use crate::app::widgets::label_placement::Segment;
 use crate::app::widgets::palette;
+use crate::{locale, t};
 
 /// The window's switch, the space shown, and the director's own camera.
 #[derive(Clone, Debug, PartialEq)]

@@ -8,7 +8,6 @@
 //! ([`crate::io::save::save_bytes`]).
 
 use egui::Ui;
-use crate::t;
 
 use phonglab_core::export::Target;
 
@@ -17,6 +16,7 @@ use phonglab_core::{Document, PowFn};
 use crate::app::model::message::Message;
 use crate::app::panels::chooser::{Chooser, Purpose};
 use crate::app::panels::files::{Dialogs, FileState};
+use crate::t;
 
 /// The exercise set's settings, kept while the window runs.
 #[derive(Clone, Debug, PartialEq, Eq)]

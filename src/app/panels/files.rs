@@ -6,11 +6,11 @@ use std::path::{Path, PathBuf};
 
 use egui::Ui;
 use phonglab_core::Document;
-use crate::t;
 
 use crate::app::model::message::Message;
 use crate::app::panels::chooser::{Chooser, Purpose};
 use crate::platform::files as platform;
+use crate::t;
 
 /// Which file dialogs Open…, Save as… and the Export menu's Save… use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]

@@ -1,6 +1,7 @@
 //! Keyboard shortcuts: one table for the handler and the help overlay.
 
 use egui::{Key, Modifiers, Ui};
+
 use crate::t;
 
 /// What a shortcut does.

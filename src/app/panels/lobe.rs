@@ -258,11 +258,7 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
                     let xy: Vec<[f64; 2]> = pts.iter().map(|(phi, r)| [phi.to_degrees(), *r]).collect();
                     p.line(Line::new(name.clone(), PlotPoints::from(xy)).color(*c).width(if *on { 3.0 } else { 1.5 }));
                 }
-                p.vline(
-                    VLine::new(crate::t!("lobe-vertex-v"), phi_v.to_degrees())
-                        .color(ink(palette::V))
-                        .width(2.0),
-                );
+                p.vline(VLine::new(crate::t!("lobe-vertex-v"), phi_v.to_degrees()).color(ink(palette::V)).width(2.0));
             });
     };
     egui::ScrollArea::both().auto_shrink(false).show(ui, |ui| {

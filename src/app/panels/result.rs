@@ -1,11 +1,11 @@
 //! The lit colour: a large swatch and the rgba numbers, clamped and unclamped.
 
 use egui::{Color32, RichText, Ui};
-use crate::t;
 
 use crate::app::model::evaluated::{Evaluated, SideColors};
 use crate::app::model::message::Message;
 use crate::app::widgets::palette::{self, gl_to_color32};
+use crate::t;
 
 fn fmt4(c: &[f64; 4], digits: usize) -> String {
     let s: Vec<String> = c.iter().map(|x| crate::locale::num(*x, digits)).collect();

@@ -6,8 +6,9 @@
 use egui::text::LayoutJob;
 use egui::{Color32, FontId, RichText, TextFormat, Ui};
 use phonglab_core::shader::{Lang, ShaderShading, for_view};
-use crate::t;
 use phonglab_core::{Document, Shading};
+
+use crate::t;
 
 /// The window's state.
 #[derive(Clone, Debug, Default)]

@@ -8,9 +8,9 @@ use egui::Ui;
 use phonglab_core::Document;
 use phonglab_core::channels::Channel;
 use phonglab_core::export::share::{self, Shared};
-use crate::t;
 
 use crate::app::model::message::Message;
+use crate::t;
 
 /// The window's own state: open, the page, the choices, and the QR code drawn last.
 #[derive(Default)]

@@ -4,12 +4,12 @@
 //! after the class has moved a slider, the answer is the one for what they see).
 
 use egui::Ui;
-use phonglab_core::explain::{Explanation, fmt_value};
-use crate::locale::Lang;
 use phonglab_core::Document;
-use crate::t;
+use phonglab_core::explain::{Explanation, fmt_value};
 
 use crate::io::experiments::{self, Experiment};
+use crate::locale::Lang;
+use crate::t;
 
 /// The window's state: open or not, the experiment chosen, whether its answer is shown,
 /// and the teacher's own experiments (read when the window opens).

@@ -128,11 +128,7 @@ fn legend(eval: &Evaluated, specular: SpecularModel) -> Vec<(&'static str, Strin
 pub fn view_buttons_ui(ui: &mut Ui, orbit: &mut Orbit) {
     ui.label(crate::t!("plot-view"));
     for (name, o) in [("XY", Orbit::XY), ("XZ", Orbit::XZ), ("ZY", Orbit::ZY), ("3D", Orbit::PERSPECTIVE)] {
-        if ui
-            .selectable_label(*orbit == o, name)
-            .on_hover_text(crate::t!("plot-view-hover", plane = name))
-            .clicked()
-        {
+        if ui.selectable_label(*orbit == o, name).on_hover_text(crate::t!("plot-view-hover", plane = name)).clicked() {
             *orbit = o;
         }
     }

@@ -3,12 +3,12 @@
 //! [`AppState`] and takes `&mut egui::Ui`, so tests drive it headless.
 
 use egui::Ui;
-use crate::t;
 
 use super::state::{AppState, Message};
 use super::{centre, keys, layout, state, top_bar, windows};
 use crate::app::panels::{calculation, controls, quiz};
 use crate::app::widgets::number_field;
+use crate::t;
 
 /// The whole explorer UI.
 pub fn app_ui(ui: &mut Ui, state: &mut AppState) {

@@ -6,10 +6,10 @@
 
 use phonglab_core::channels::Channel;
 use phonglab_core::export::share;
-use crate::t;
 
 use super::state::AppState;
 use crate::app::model::message::Message;
+use crate::t;
 
 /// Opens the link's `fragment` (after `#`) in `state`.
 pub fn open_fragment(state: &mut AppState, fragment: &str) {

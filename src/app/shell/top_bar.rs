@@ -6,12 +6,12 @@
 
 use egui::Ui;
 use egui::containers::menu::{MenuButton, MenuConfig};
-use crate::t;
 use phonglab_core::{ObjectKind, Shading};
 
 use super::state::{AppState, Precision};
 use super::{files, layout};
 use crate::app::panels::export;
+use crate::t;
 
 /// The longest scene name shown whole beside the Scene menu (the rest in its hover).
 const NAME_CHARS: usize = 32;

@@ -78,12 +78,7 @@ pub fn read(text: &str, accepts: Accepts) -> Result<f64, String> {
             if x.fract() != 0.0 {
                 Err(crate::t!("not-whole", text = text.trim()))
             } else if x < min as f64 || x > max as f64 {
-                Err(crate::t!(
-                    "outside-range",
-                    text = text.trim(),
-                    min = min.to_string(),
-                    max = max.to_string()
-                ))
+                Err(crate::t!("outside-range", text = text.trim(), min = min.to_string(), max = max.to_string()))
             } else {
                 Ok(x)
             }
@@ -199,10 +194,9 @@ impl<'a> NumberField<'a> {
             draft = if escape { None } else { finish(ui, id, d, accepts, n, value, &mut row, &mut changed) };
         }
         let mut response = if editing {
-            let mut d = draft.take().unwrap_or_else(|| Draft {
-                text: crate::locale::decimal(&exact_text(*value)),
-                ..Draft::default()
-            });
+            let mut d = draft
+                .take()
+                .unwrap_or_else(|| Draft { text: crate::locale::decimal(&exact_text(*value)), ..Draft::default() });
             let gained = !d.editing;
             d.editing = true;
             if gained {

@@ -6,12 +6,12 @@
 //! pictures side by side, short, the whole in the picture's hover and name.
 
 use egui::{Sense, Ui};
-use phonglab_core::library::DemoDeparture;
 use phonglab_core::Document;
-use crate::t;
+use phonglab_core::library::DemoDeparture;
 
 use super::cache::{COARSE_ABOVE, DrawnBy, ViewCache, mesh_for};
 use super::context::ShadedOptions;
+use crate::t;
 
 /// Where the captions stand: presenting, or over two pictures side by side (the demo and
 /// its correction, or the heat map), a caption says what the picture is in one short line

@@ -7,6 +7,7 @@ use phonglab_core::channels::{self, Channel, ChannelImage, ColourMap};
 use phonglab_core::mesh::Mesh;
 use phonglab_core::render::Renderer;
 use phonglab_core::{Document, PowFn};
+
 use crate::{locale, t};
 
 /// The channel image's side in pixels: enough to read a term's shape, small enough to

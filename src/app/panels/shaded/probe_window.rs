@@ -4,6 +4,7 @@
 
 use egui::{Context, RichText};
 use phonglab_core::probe_report::ReportLine;
+
 use crate::t;
 
 /// The probe's switch, the pixel it shows and its report.
