@@ -5,7 +5,7 @@
 //! |---|---|---|
 //! | 2 | `cli/`, `app/` | the layers below; never each other |
 //! | 1 | `io/`, `paint/`, `platform/` | each other, and the core |
-//! | 0 | `locale.rs` | the core (the app's words: every layer names it) |
+//! | 0 | `locale/` | the core (the app's words: every layer names it) |
 //!
 //! `main.rs` and `lib.rs` join them. And there is no circle anywhere: not between files (a
 //! file naming another, through `crate::` or `super::` paths, `use` trees included), nor

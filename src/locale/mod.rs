@@ -17,7 +17,7 @@ pub use phonglab_core::locale::*;
 
 /// The app's catalogues' text, in [`Lang::ALL`]'s order.
 pub const APP_SOURCES: [&str; 3] =
-    [include_str!("../i18n/en.ftl"), include_str!("../i18n/pt-PT.ftl"), include_str!("../i18n/pt-BR.ftl")];
+    [include_str!("../../i18n/en.ftl"), include_str!("../../i18n/pt-PT.ftl"), include_str!("../../i18n/pt-BR.ftl")];
 
 /// The app's messages and then the core's: every lookup of the app.
 pub static APP: Catalogue = Catalogue::new(&[APP_SOURCES, CORE_SOURCES]);
