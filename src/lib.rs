@@ -12,5 +12,6 @@
 pub mod app;
 pub mod cli;
 pub mod io;
+pub mod locale;
 pub mod paint;
 pub mod platform;

@@ -20,7 +20,7 @@ fn main() -> ExitCode {
     // eframe's and wgpu's warnings reach stderr (RUST_LOG=info or debug for more).
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
     let args = cli::Cli::parse_localised();
-    phonglab_core::locale::set_default(args.locale());
+    phonglab::locale::set_default(args.locale());
     phonglab::io::budget::set(args.memory_budget);
     match args.command {
         // The two commands that draw the window: the command line reads their arguments,
@@ -48,7 +48,7 @@ fn main() -> ExitCode {
                 let error = e.to_string();
                 eprintln!(
                     "phonglab: {}",
-                    phonglab_core::escape::terminal::lines(&phonglab_core::locale::tr_args(
+                    phonglab_core::escape::terminal::lines(&phonglab::locale::tr_args(
                         "app-cannot-open-window",
                         &[("error", error.into())]
                     ))

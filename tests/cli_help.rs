@@ -8,7 +8,7 @@ use std::collections::BTreeSet;
 use clap::CommandFactory;
 use phonglab::cli::Cli;
 use phonglab::cli::help::{about_message_id, command_paths, described_arguments, described_values, value_message_id};
-use phonglab_core::locale::{Lang, Locale, has_message, message_ids, set_default, tr_in};
+use phonglab::locale::{Lang, Locale, has_message, message_ids, set_default, tr_in};
 
 /// Every message id the help asks for: commands' abouts, arguments and values.
 fn ids_the_help_asks_for() -> BTreeSet<String> {

@@ -186,7 +186,7 @@ fn python_shapes_match(name: &str) -> Result<(), TestCaseError> {
         let (h_shape, strings) = parsed.map_err(|e| TestCaseError::fail(format!("{what} does not parse: {e}")))?;
         prop_assert!(x_shape == h_shape, "{what}: the tree differs from the name x's");
         if *what == "the PyOpenGL program" {
-            let title = phonglab_core::t!("py-title", scene = name, shading = "Gouraud");
+            let title = phonglab::t!("py-title", scene = name, shading = "Gouraud");
             prop_assert!(strings[0].starts_with(&title), "the docstring holds the title exactly: {:?}", strings[0]);
         }
     }

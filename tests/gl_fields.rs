@@ -199,7 +199,7 @@ fn every_term_is_named_in_the_window() {
         let mut h =
             Harness::builder().with_size([1500.0, 2400.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
         h.run_steps(3);
-        let label = phonglab_core::locale::tr(term.label);
+        let label = phonglab::locale::tr(term.label);
         assert!(h.query_all_by_label_contains(&label).next().is_some(), "{}: {label:?} nowhere", term.name);
     }
 }
@@ -237,7 +237,7 @@ fn every_field_has_a_labelled_control_in_the_window() {
         let mut h =
             Harness::builder().with_size([1500.0, 2400.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
         h.run_steps(3);
-        let label = phonglab_core::locale::tr(field.label);
+        let label = phonglab::locale::tr(field.label);
         assert!(
             h.query_all_by_label_contains(&label).next().is_some(),
             "{}: no control labelled {label:?}",
@@ -256,7 +256,7 @@ fn the_colours_colour_material_tracks_are_greyed() {
         Harness::builder().with_size([1500.0, 2400.0]).build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), state);
     h.run_steps(3);
     let enabled = |label: &str| -> Vec<bool> {
-        let label = phonglab_core::locale::tr(label);
+        let label = phonglab::locale::tr(label);
         h.query_all_by_label_contains(&label).map(|n| !n.accesskit_node().is_disabled()).collect()
     };
     for (label, want) in [("material-ambient", false), ("material-diffuse", false), ("material-specular", true)] {

@@ -1,23 +1,22 @@
-//! Every message in every language, and no English on screen in Portuguese: the source's
-//! message ids are all in the three catalogues, and the window walked in pt-PT (with
-//! egui_kittest) shows no label that is an English message.
+//! Every message in every language, each in the catalogue of the crate that uses it, and no
+//! English on screen in Portuguese: the sources' message ids are all in the three languages
+//! of their catalogues, the core's catalogue holds what the core uses and the app's what
+//! only the app uses (`scripts/split-catalogue.py` sorts them by the same reading), and the
+//! window walked in pt-PT (with egui_kittest) shows no label that is an English message.
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 use phonglab::app::{AppState, app_ui};
-use phonglab_core::locale::{Lang, has_message, message_ids, tr_in};
+use phonglab::locale::{APP_SOURCES, CORE_SOURCES, Lang, has_message, ids_of, tr_in};
 
 mod common;
 
-/// The text of every source file of the app and the core.
-fn source_texts() -> Vec<String> {
+/// The text of every source file under `dir` (a crate's `src`), one string a file.
+fn source_texts(dir: &str) -> Vec<String> {
     let mut out = Vec::new();
-    let mut stack = vec![
-        std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/src")),
-        std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/crates/phonglab-core/src")),
-    ];
+    let mut stack = vec![std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(dir)];
     while let Some(dir) = stack.pop() {
         for entry in std::fs::read_dir(&dir).unwrap() {
             let path = entry.unwrap().path();
@@ -31,8 +30,16 @@ fn source_texts() -> Vec<String> {
     out
 }
 
-/// Every `t!("id"` and `tr("id"` in `sources`, and the help table's ids.
-fn ids_in_sources(sources: &[String]) -> BTreeSet<String> {
+fn app_sources() -> Vec<String> {
+    source_texts("src")
+}
+
+fn core_sources() -> Vec<String> {
+    source_texts("crates/phonglab-core/src")
+}
+
+/// Every `t!("id"` and `tr("id"` in `sources`.
+fn ids_asked_in(sources: &[String]) -> BTreeSet<String> {
     let mut ids = BTreeSet::new();
     for text in sources {
         for open in ["t!(", "tr("] {
@@ -51,58 +58,148 @@ fn ids_in_sources(sources: &[String]) -> BTreeSet<String> {
             }
         }
     }
+    ids
+}
+
+/// The ids the app's tables name (the help's), besides its `t!`s and `tr`s.
+fn ids_in_app_tables() -> BTreeSet<String> {
+    let mut ids = BTreeSet::new();
     for (.., id) in phonglab::app::panels::help::SHORTCUTS {
         ids.insert(id.to_string());
     }
     for id in phonglab::app::panels::help::DEMO_CHOICES {
         ids.insert(id.to_string());
     }
-    // The vocabulary's labels, asked for through Quantity::label.
-    for q in phonglab_core::vocabulary::Quantity::ALL {
-        ids.extend(q.term().message.map(str::to_string));
-    }
     ids
 }
 
-#[test]
-fn every_message_the_code_asks_for_is_in_every_language() {
-    let sources = source_texts();
-    let ids = ids_in_sources(&sources);
-    assert!(ids.len() > 300, "{} ids found", ids.len());
-    for lang in Lang::ALL {
-        let missing: Vec<&String> = ids.iter().filter(|id| !has_message(lang, id)).collect();
-        assert!(missing.is_empty(), "{} lacks {missing:?}", lang.code());
+/// The ids the core's tables name: the vocabulary's labels, asked for through Quantity::label.
+fn ids_in_core_tables() -> BTreeSet<String> {
+    phonglab_core::vocabulary::Quantity::ALL.iter().filter_map(|q| q.term().message.map(str::to_string)).collect()
+}
+
+/// The messages each message of `source` names (`{ id }`), by id.
+fn named_by(source: &str) -> BTreeMap<String, BTreeSet<String>> {
+    let mut out: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    let mut current = None;
+    for line in source.lines() {
+        if line.starts_with('#') {
+            current = None;
+            continue;
+        }
+        if line.starts_with(|c: char| c.is_ascii_alphabetic()) {
+            current = line.split_once(" =").map(|(id, _)| id.trim().to_string());
+        }
+        let Some(id) = &current else { continue };
+        let named = out.entry(id.clone()).or_default();
+        for (at, _) in line.match_indices('{') {
+            let inner = line[at + 1..].split('}').next().unwrap_or("").trim();
+            if inner.starts_with(|c: char| c.is_ascii_alphabetic())
+                && inner.chars().all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
+            {
+                named.insert(inner.to_string());
+            }
+        }
     }
-    // And every message of the catalogues is asked for somewhere: by t!/tr, named in a
-    // table of ids, or built from a prefix (material-*/back-* by field name, preset-* by
-    // scene file (src/scenes.rs tests them); the command line's help by command and
-    // argument, checked in tests/cli_help.rs).
-    let all_source = sources.concat();
+    out
+}
+
+/// Does a crate whose sources are `text` use message `id`: by its string literal (a `t!`,
+/// a `tr`, a table of ids, a `message_id()` arm), or built from one of `prefixes`?
+fn uses(text: &str, prefixes: &[&str], id: &str) -> bool {
+    text.contains(&format!("\"{id}\"")) || prefixes.iter().any(|p| id.starts_with(p))
+}
+
+/// The ids the core builds from parts: a classic material's name (materials::display_name).
+const CORE_PREFIXES: [&str; 1] = ["material-name-"];
+/// The ids the app builds from parts: a material field's label by field name
+/// (`{side}-{field}`), a shipped scene's name by file (src/io/scenes.rs tests them), and
+/// the command line's help by command, argument and value (tests/cli_help.rs).
+const APP_PREFIXES: [&str; 5] = ["material-", "back-", "preset-", "cli-arg-", "cli-value-"];
+
+#[test]
+fn every_message_the_code_asks_for_is_in_every_language_of_its_catalogue() {
+    let core_asks = ids_asked_in(&core_sources()).into_iter().chain(ids_in_core_tables()).collect::<BTreeSet<_>>();
+    let app_asks = ids_asked_in(&app_sources()).into_iter().chain(ids_in_app_tables()).collect::<BTreeSet<_>>();
+    assert!(core_asks.len() > 200 && app_asks.len() > 300, "{} and {} ids found", core_asks.len(), app_asks.len());
+    for lang in Lang::ALL {
+        // The core finds only its own catalogue's messages; the app, its own and the core's.
+        let missing: Vec<&String> =
+            core_asks.iter().filter(|id| !phonglab_core::locale::has_message(lang, id)).collect();
+        assert!(missing.is_empty(), "the core's {} catalogue lacks {missing:?}", lang.code());
+        let missing: Vec<&String> = app_asks.iter().filter(|id| !has_message(lang, id)).collect();
+        assert!(missing.is_empty(), "the {} catalogues lack {missing:?}", lang.code());
+    }
+    for (name, sources) in [("core", CORE_SOURCES), ("app", APP_SOURCES)] {
+        let [en, pt_pt, pt_br] = sources.map(ids_of);
+        assert!(en.len() > 200, "the {name}'s catalogue has {} messages", en.len());
+        assert_eq!(en, pt_pt, "the {name}'s English and pt-PT catalogues have the same ids in the same order");
+        assert_eq!(en, pt_br, "the {name}'s English and pt-BR catalogues have the same ids in the same order");
+    }
+}
+
+#[test]
+fn each_catalogue_holds_the_messages_its_crate_uses_and_no_id_is_in_both() {
+    let core_text = core_sources().concat();
+    let app_text = app_sources().concat();
+    let core_ids = ids_of(CORE_SOURCES[0]);
+    let app_ids = ids_of(APP_SOURCES[0]);
+    let both: Vec<&String> = core_ids.iter().filter(|id| app_ids.contains(id)).collect();
+    assert!(both.is_empty(), "in both catalogues: {both:?}");
+    let core_named: BTreeSet<String> = named_by(CORE_SOURCES[0]).into_values().flatten().collect();
+    let app_named: BTreeSet<String> = named_by(APP_SOURCES[0]).into_values().flatten().collect();
+    // The command line's help by command (its about), as tests/cli_help.rs reads it.
     let root = <phonglab::cli::Cli as clap::CommandFactory>::command();
     let abouts: BTreeSet<String> = phonglab::cli::help::command_paths(&root)
         .iter()
         .map(|(path, _)| phonglab::cli::help::about_message_id(path))
         .collect();
-    let unused: Vec<String> = message_ids(Lang::En)
-        .into_iter()
-        .filter(|id| !ids.contains(id) && !all_source.contains(&format!("\"{id}\"")))
-        .filter(|id| !id.starts_with("material-") && !id.starts_with("back-") && !id.starts_with("preset-"))
-        .filter(|id| !id.starts_with("cli-arg-") && !id.starts_with("cli-value-") && !abouts.contains(id))
-        .collect();
-    assert!(unused.is_empty(), "messages no code asks for: {unused:?}");
+    let core_uses = |id: &str| uses(&core_text, &CORE_PREFIXES, id) || core_named.contains(id);
+    let app_uses = |id: &str| uses(&app_text, &APP_PREFIXES, id) || app_named.contains(id) || abouts.contains(id);
+    // The core's: each used by the core (the app may use it too: it reads both).
+    let unused: Vec<&String> = core_ids.iter().filter(|id| !core_uses(id)).collect();
+    assert!(unused.is_empty(), "in the core's catalogue, but the core does not use: {unused:?}");
+    // The app's: each used by the app, and not by the core, whose lookup would not find it.
+    let unused: Vec<&String> = app_ids.iter().filter(|id| !app_uses(id)).collect();
+    assert!(unused.is_empty(), "in the app's catalogue, but the app does not use: {unused:?}");
+    let cores: Vec<&String> = app_ids.iter().filter(|id| core_uses(id)).collect();
+    assert!(cores.is_empty(), "in the app's catalogue, but the core uses (run scripts/split-catalogue.py): {cores:?}");
 }
 
-/// English messages without arguments whose Portuguese differs: none may be on screen in
-/// Portuguese.
+#[test]
+fn one_lookup_finds_the_apps_messages_and_the_cores_in_every_language() {
+    // An app message ("loaded", the window's) and a core message (the local viewer's name,
+    // the exercises'), each in its own catalogue; the app's lookup finds both.
+    assert!(ids_of(APP_SOURCES[0]).contains(&"loaded".to_string()));
+    assert!(!phonglab_core::locale::has_message(Lang::En, "loaded"));
+    assert!(ids_of(CORE_SOURCES[0]).contains(&"local-viewer".to_string()));
+    for (lang, loaded, viewer) in [
+        (Lang::En, "Opened “x”", "Local viewer"),
+        (Lang::PtPt, "Aberto: «x»", "Observador local"),
+        (Lang::PtBr, "Aberto: “x”", "Observador local"),
+    ] {
+        assert_eq!(tr_in(lang, "loaded", &[("what", "x".into())]), loaded, "{lang:?}");
+        assert_eq!(tr_in(lang, "local-viewer", &[]), viewer, "{lang:?}");
+        assert_eq!(phonglab_core::locale::tr_in(lang, "local-viewer", &[]), viewer, "{lang:?}");
+        // An app message naming a core one: the undo history's name of a changed field.
+        let field = [("field", "light_model-local_viewer".into())];
+        assert_eq!(tr_in(lang, "history-field", &field), viewer, "{lang:?}");
+    }
+    // An id no catalogue has is said as itself.
+    assert_eq!(tr_in(Lang::PtBr, "no-such-message", &[]), "no-such-message");
+}
+
+/// English messages without arguments whose Portuguese differs, of both catalogues: none
+/// may be on screen in Portuguese.
 fn english_only_texts() -> BTreeSet<String> {
-    message_ids(Lang::En)
+    ids_of(APP_SOURCES[0])
         .into_iter()
+        .chain(ids_of(CORE_SOURCES[0]))
         .map(|id| (tr_in(Lang::En, &id, &[]), tr_in(Lang::PtPt, &id, &[])))
         .filter(|(en, pt)| en != pt && !en.contains('{') && en.len() > 2)
         .map(|(en, _)| en)
         .collect()
 }
-
 fn labels(h: &Harness<'_, AppState>) -> Vec<String> {
     let mut out = Vec::new();
     let root = h.root();
@@ -218,7 +315,7 @@ fn switching_the_language_in_the_app_takes_effect_at_once() {
 /// local viewer, on and off.." in English: the title is quoted, in each language's quotes.
 #[test]
 fn the_loaded_message_quotes_the_title() {
-    use phonglab_core::locale::Arg;
+    use phonglab::locale::Arg;
     let what = "The local viewer, on and off.";
     for (lang, want) in [
         (Lang::En, "Opened “The local viewer, on and off.”"),

@@ -142,7 +142,8 @@ fn a_mesh_over_the_memory_budget_is_refused_before_it_is_read() {
     let dir = folder("budget");
     let path = dir.join("soup.obj");
     sphere_obj(&path, 100, true);
-    // The message catalogues are parsed on their first use (2 MB, once per process).
+    // The core's message catalogue, whose error load_obj gives, is parsed on its first use
+    // (once per process).
     let _ = phonglab_core::t!("obj-no-faces");
     phonglab_core::mesh::obj::set_memory_budget(1 << 20);
     let (r, peak) = peak_of(|| phonglab_core::mesh::obj::load_obj(&path));

@@ -10,7 +10,7 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 use phonglab::app::shell::layout::Theme;
 use phonglab::app::{AppState, app_ui};
-use phonglab_core::locale::Lang;
+use phonglab::locale::Lang;
 
 mod common;
 
@@ -361,10 +361,10 @@ fn harness_in(w: f32, h: f32, lang: &str, theme: Theme, mode: Mode) -> Harness<'
 
 /// A message in `lang` (the test's thread speaks it for the call).
 fn said(lang: &str, id: &str) -> String {
-    use phonglab_core::locale::{Locale, set_thread};
+    use phonglab::locale::{Locale, set_thread};
     let l = Lang::parse(lang).unwrap();
     set_thread(Some(Locale { lang: l, decimal: l.decimal_mark() }));
-    let s = phonglab_core::locale::tr(id);
+    let s = phonglab::locale::tr(id);
     set_thread(None);
     s
 }

@@ -122,16 +122,16 @@ pub struct LightingBenchArgs {
 fn render(a: &RenderBench) -> Result<()> {
     for name in a.object.iter().filter(|_| a.mesh.is_none() && a.scan.is_none()) {
         if !bench_meshes().iter().any(|(n, _)| n == name) {
-            anyhow::bail!(phonglab_core::t!("err-bench-object", value = name));
+            anyhow::bail!(crate::t!("err-bench-object", value = name));
         }
     }
     for name in a.shading.iter() {
         if !Shading::ALL.iter().any(|s| s.label().eq_ignore_ascii_case(name)) {
-            anyhow::bail!(phonglab_core::t!("err-bench-shading", value = name));
+            anyhow::bail!(crate::t!("err-bench-shading", value = name));
         }
     }
     if !(3..=2048).contains(&a.slices) {
-        anyhow::bail!(phonglab_core::t!("err-bench-slices", value = a.slices.to_string()));
+        anyhow::bail!(crate::t!("err-bench-slices", value = a.slices.to_string()));
     }
     let chosen = a.mesh.is_some() || a.scan.is_some();
     let object_chosen = |object: &str| chosen || a.object.as_deref().is_none_or(|o| o == object);
@@ -151,7 +151,7 @@ fn render(a: &RenderBench) -> Result<()> {
         )]
     } else if let Some(level) = a.scan {
         if level > 9 {
-            anyhow::bail!(phonglab_core::t!("err-bench-scan", value = level.to_string()));
+            anyhow::bail!(crate::t!("err-bench-scan", value = level.to_string()));
         }
         vec![("scan", as_large_as_the_sphere(phonglab_core::mesh::bumpy_sphere::bumpy_sphere(level, 1)))]
     } else {
@@ -166,7 +166,7 @@ fn render(a: &RenderBench) -> Result<()> {
                 let copy = phonglab_core::mesh::coarse::clustered(&mesh, target);
                 println!(
                     "# {}",
-                    phonglab_core::t!(
+                    crate::t!(
                         "bench-coarse-made",
                         object = name,
                         triangles = copy.triangle_count().to_string(),
@@ -184,7 +184,7 @@ fn render(a: &RenderBench) -> Result<()> {
     }
     println!(
         "# {}",
-        phonglab_core::t!(
+        crate::t!(
             "bench-render-header",
             size = a.size.to_string(),
             frames = a.frames.to_string(),
@@ -217,7 +217,7 @@ fn write_mesh(out: &std::path::Path, mesh: &phonglab_core::mesh::Mesh) -> Result
     crate::io::atomic_write::write(out, phonglab_core::mesh::obj_text::obj_text(mesh).as_bytes())?;
     println!(
         "{}",
-        phonglab_core::t!(
+        crate::t!(
             "bench-mesh-written",
             path = crate::io::reasons::shown(out),
             triangles = mesh.triangle_count().to_string(),
@@ -281,7 +281,7 @@ fn scene_figures(arrays: &mut LightingArrays, repeats: u32) -> Result<Vec<(&'sta
 fn lighting(a: &LightingBenchArgs) -> Result<()> {
     println!(
         "# {}",
-        phonglab_core::t!("bench-lighting-header", vertices = a.vertices.to_string(), repeats = a.repeats.to_string())
+        crate::t!("bench-lighting-header", vertices = a.vertices.to_string(), repeats = a.repeats.to_string())
     );
     println!("scene general_ns_per_vertex specialised_ns_per_vertex speedup");
     let mut arrays = LightingArrays::new(a.vertices);
@@ -291,10 +291,10 @@ fn lighting(a: &LightingBenchArgs) -> Result<()> {
     let (ns, gbs) = memory_floor(&mut arrays, a.repeats);
     println!(
         "# {}",
-        phonglab_core::t!(
+        crate::t!(
             "bench-memory-floor",
-            ns = phonglab_core::locale::decimal(&format!("{ns:.2}")),
-            gbs = phonglab_core::locale::decimal(&format!("{gbs:.1}")),
+            ns = crate::locale::decimal(&format!("{ns:.2}")),
+            gbs = crate::locale::decimal(&format!("{gbs:.1}")),
             bytes = MOVED.to_string()
         )
     );
@@ -333,7 +333,7 @@ fn memory_floor(arrays: &mut LightingArrays, repeats: u32) -> (f64, f64) {
 fn stage_figures(arrays: &mut LightingArrays, repeats: u32) -> Result<()> {
     let LightingArrays { pos, nrm, out: out_buf } = arrays;
     let vertices = pos.len();
-    println!("# {}", phonglab_core::t!("bench-stages-header"));
+    println!("# {}", crate::t!("bench-stages-header"));
     println!("scene step ns_per_vertex");
     for b in LightingBench::ALL {
         let lighter = Lighter::new(&b.scene(), EvalOptions::default())?;
@@ -365,6 +365,6 @@ pub fn run(cmd: &BenchCommand) -> Result<()> {
         }
         BenchCommand::Lighting(a) => lighting(a),
         // The binary hands it to the window (`crate::app`), which it draws.
-        BenchCommand::Ui(_) => anyhow::bail!(phonglab_core::t!("err-needs-window")),
+        BenchCommand::Ui(_) => anyhow::bail!(crate::t!("err-needs-window")),
     }
 }

@@ -25,11 +25,7 @@ pub fn cases_json(paths: &[PathBuf]) -> Result<serde_json::Value> {
         if doc.scene.rules != phonglab_core::Rules::OPENGL {
             super::say(&format!(
                 "phonglab: {}",
-                phonglab_core::t!(
-                    "case-rules-note",
-                    path = crate::io::reasons::shown(p),
-                    rules = doc.scene.rules.set.label()
-                )
+                crate::t!("case-rules-note", path = crate::io::reasons::shown(p), rules = doc.scene.rules.set.label())
             ));
         }
         let id = p.file_stem().map_or_else(|| format!("case{}", cases.len()), |s| s.to_string_lossy().into_owned());

@@ -34,7 +34,7 @@ pub struct CostRun {
 /// Runs the study of every chosen object, printing progress on stderr when it is a terminal.
 pub fn studies(r: &CostRun) -> Result<Vec<Study>> {
     if !r.spin.is_finite() {
-        anyhow::bail!(phonglab_core::t!("err-spin"));
+        anyhow::bail!(crate::t!("err-spin"));
     }
     let mut out = Vec::new();
     for &object in &r.objects {
@@ -50,7 +50,7 @@ pub fn studies(r: &CostRun) -> Result<Vec<Study>> {
             }
             true
         })?
-        .context(phonglab_core::t!("err-study-stopped"))?;
+        .context(crate::t!("err-study-stopped"))?;
         if tty {
             eprintln!();
         }
@@ -61,8 +61,8 @@ pub fn studies(r: &CostRun) -> Result<Vec<Study>> {
 
 /// The table printed for one study.
 pub fn table(study: &Study) -> String {
-    use phonglab_core::locale::decimal;
-    use phonglab_core::t;
+    use crate::locale::decimal;
+    use crate::t;
     let mut s = format!(
         "# {}\n",
         t!(
@@ -170,7 +170,7 @@ pub fn chart_png(studies: &[Study], ppp: f32) -> (usize, usize, Vec<u8>) {
     let canvas = crate::paint::egui_cpu::paint_ui(w, h, ppp, |ui| {
         egui::CentralPanel::default().show(ui, |ui| {
             for s in studies {
-                ui.strong(phonglab_core::t!(
+                ui.strong(crate::t!(
                     "cost-chart-title",
                     object = s.object.label(),
                     size = s.size.to_string(),
@@ -193,7 +193,7 @@ pub fn belongs_to_a_report(name: &str) -> bool {
 fn within_budget(a: &CostRun) -> Result<()> {
     let views: Vec<phonglab_core::View> =
         a.objects.iter().map(|&object| phonglab_core::View { object, ..a.doc.view.clone() }).collect();
-    let what = phonglab_core::t!("budget-what-cost", count = views.len() as i64, size = a.size as i64);
+    let what = crate::t!("budget-what-cost", count = views.len() as i64, size = a.size as i64);
     crate::io::budget::check(&what, crate::io::budget::cost_bytes(&views, a.size as u64)).map_err(anyhow::Error::msg)
 }
 
@@ -230,7 +230,7 @@ pub fn run(a: &CostRun) -> Result<()> {
     set.add("cost.png", crate::io::image::encode_png(w, h, &rgba)?);
     let notices = crate::io::file_set::write_set(&a.out, &set, belongs_to_a_report)?;
     notices.iter().for_each(|n| super::say(n));
-    super::say(&phonglab_core::t!("cost-wrote", files = set.to_string(), out = crate::io::reasons::shown(&a.out)));
+    super::say(&crate::t!("cost-wrote", files = set.to_string(), out = crate::io::reasons::shown(&a.out)));
     Ok(())
 }
 

@@ -5,11 +5,12 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::t;
 use anyhow::Result;
 use clap::Args;
 use phonglab_core::teach::diagnose::{Diagnosis, Drawing, MISTAKES, Tried, Verdict, diagnose};
 use phonglab_core::teach::picture_match::difference_image;
-use phonglab_core::{PowFn, probe, probe_report, t};
+use phonglab_core::{PowFn, probe, probe_report};
 
 use super::render::ShadedInput;
 
@@ -54,7 +55,7 @@ fn right_drawing(a: &DiagnoseArgs, outputs: &[&Path]) -> Result<Drawing> {
 
 /// A share of pixels as a percentage in the user's decimal mark.
 fn percent(score: f64) -> String {
-    phonglab_core::locale::decimal(&format!("{:.1} %", 100.0 * score))
+    crate::locale::decimal(&format!("{:.1} %", 100.0 * score))
 }
 
 fn score_of(t: &Tried) -> f64 {

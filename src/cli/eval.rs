@@ -7,7 +7,9 @@ use std::process::ExitCode;
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use phonglab_core::glref::{self, CaseColors};
-use phonglab_core::{EvalOptions, PowFn, Precision, Scene, t};
+use phonglab_core::{EvalOptions, PowFn, Precision, Scene};
+
+use crate::t;
 
 /// `phonglab eval`.
 #[derive(Args, Debug)]

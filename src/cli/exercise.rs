@@ -7,9 +7,9 @@ use anyhow::{Context, Result, bail};
 use clap::Args;
 use phonglab_core::Rules;
 use phonglab_core::exercise::{Effect, Level, Spec};
-use phonglab_core::t;
 
 use crate::io::exercise_set::{Request, write};
+use crate::t;
 
 /// `phonglab exercise`.
 #[derive(Args, Debug)]
@@ -50,14 +50,14 @@ fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
     let rules = match a.rules.as_str() {
         "worksheet" => Rules::WORKSHEET,
         "opengl" => Rules::OPENGL,
-        other => bail!(phonglab_core::t!("err-rules", value = format!("{other:?}"))),
+        other => bail!(crate::t!("err-rules", value = format!("{other:?}"))),
     };
     if !a.effects.is_empty() {
         let mut effects = Vec::new();
         for e in &a.effects {
             let Some(x) = Effect::parse(e) else {
                 let names: Vec<&str> = Effect::ALL.iter().map(|e| e.name()).collect();
-                bail!(phonglab_core::t!("err-effects", value = format!("{e:?}"), names = names.join(", ")));
+                bail!(crate::t!("err-effects", value = format!("{e:?}"), names = names.join(", ")));
             };
             effects.push(x);
         }
@@ -71,7 +71,7 @@ fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
         effects.dedup();
         return Ok(Spec { effects, rules });
     }
-    let level = Level::from_number(a.level.unwrap_or(2)).context(phonglab_core::t!("err-level"))?;
+    let level = Level::from_number(a.level.unwrap_or(2)).context(crate::t!("err-level"))?;
     Ok(Spec::level(level, rules))
 }
 

@@ -6,9 +6,10 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use clap::Args;
 use phonglab_core::explain::{Side, explain};
-use phonglab_core::{Engine, Precision, Real, Scene, presets, t};
+use phonglab_core::{Engine, Precision, Real, Scene, presets};
 
 use super::scene_file;
+use crate::t;
 
 /// `phonglab explain`.
 #[derive(Args, Debug)]
@@ -54,7 +55,7 @@ fn explain_scene(a: &ExplainArgs) -> Result<(Scene, String)> {
         };
     }
     let n = a.worksheet.unwrap_or(5) as usize;
-    Ok((presets::worksheet(n), phonglab_core::t!("doc-worksheet", k = n.to_string())))
+    Ok((presets::worksheet(n), crate::t!("doc-worksheet", k = n.to_string())))
 }
 
 fn explain_text<S: Real>(scene: &Scene, what: &str, a: &ExplainArgs) -> Result<String> {
@@ -63,10 +64,10 @@ fn explain_text<S: Real>(scene: &Scene, what: &str, a: &ExplainArgs) -> Result<S
     let digits = a.digits as usize;
     Ok(if a.markdown {
         let name = phonglab_core::escape::markdown::text(what);
-        format!("# {}\n\n{}", phonglab_core::t!("worked-calculation-of", name = name), ex.to_markdown(digits))
+        format!("# {}\n\n{}", crate::t!("worked-calculation-of", name = name), ex.to_markdown(digits))
     } else {
         let name = phonglab_core::escape::terminal::text(what);
-        format!("{}\n{}", phonglab_core::t!("worked-calculation-of", name = name), ex.to_text(digits))
+        format!("{}\n{}", crate::t!("worked-calculation-of", name = name), ex.to_text(digits))
     })
 }
 

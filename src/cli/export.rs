@@ -7,9 +7,9 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
 use phonglab_core::export::{Target, files};
-use phonglab_core::t;
 
 use crate::io::file_set::FileSet;
+use crate::t;
 
 /// What `--to` names.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]

@@ -13,8 +13,9 @@
 
 use clap::builder::{PossibleValue, StyledStr};
 use clap::{Arg, ArgAction, Command};
-use phonglab_core::locale::tr;
-use phonglab_core::t;
+
+use crate::locale::tr;
+use crate::t;
 
 /// The path of the root command in message ids.
 pub const ROOT: &str = "app";

@@ -24,7 +24,7 @@ use std::process::ExitCode;
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 
-use phonglab_core::t;
+use crate::t;
 
 /// phonglab: OpenGL's fixed-function vertex lighting, step by step. Without a subcommand it
 /// opens the explorer window on the worksheet's scene.
@@ -45,11 +45,11 @@ pub struct Cli {
     /// The language of what phonglab says: en, pt-PT or pt-BR (default: the system's, from
     /// LC_ALL, LC_MESSAGES or LANG). JSON, CSV and scene files keep English keys.
     #[arg(long, global = true, value_parser = parse_lang)]
-    pub lang: Option<phonglab_core::locale::Lang>,
+    pub lang: Option<crate::locale::Lang>,
     /// How numbers meant for people are written: point (0.5) or comma (0,5); default: the
     /// language's (a comma in Portuguese). Typed numbers are read with either.
     #[arg(long, global = true, value_parser = parse_decimal)]
-    pub decimal: Option<phonglab_core::locale::DecimalMark>,
+    pub decimal: Option<crate::locale::DecimalMark>,
     /// The memory a command may take for what it is asked (a picture's size, a mesh):
     /// 512M, 8G, ...; default: half of what the system has available. Past it, a command
     /// says how much it needs and does not start.
@@ -57,12 +57,12 @@ pub struct Cli {
     pub memory_budget: Option<u64>,
 }
 
-fn parse_lang(s: &str) -> Result<phonglab_core::locale::Lang, String> {
-    phonglab_core::locale::Lang::parse(s).ok_or_else(|| t!("err-lang", value = format!("{s:?}")))
+fn parse_lang(s: &str) -> Result<crate::locale::Lang, String> {
+    crate::locale::Lang::parse(s).ok_or_else(|| t!("err-lang", value = format!("{s:?}")))
 }
 
-fn parse_decimal(s: &str) -> Result<phonglab_core::locale::DecimalMark, String> {
-    phonglab_core::locale::DecimalMark::parse(s).ok_or_else(|| t!("err-decimal", value = format!("{s:?}")))
+fn parse_decimal(s: &str) -> Result<crate::locale::DecimalMark, String> {
+    crate::locale::DecimalMark::parse(s).ok_or_else(|| t!("err-decimal", value = format!("{s:?}")))
 }
 
 impl Cli {
@@ -80,9 +80,9 @@ impl Cli {
                 Some(v) => Some(v.to_string()),
                 None => (a == "--lang").then(|| args.get(i + 1).cloned()).flatten(),
             })
-            .and_then(|v| phonglab_core::locale::Lang::parse(&v));
-        let lang = asked.unwrap_or_else(phonglab_core::locale::Lang::from_env);
-        phonglab_core::locale::set_default(phonglab_core::locale::Locale::of(lang));
+            .and_then(|v| crate::locale::Lang::parse(&v));
+        let lang = asked.unwrap_or_else(crate::locale::Lang::from_env);
+        crate::locale::set_default(crate::locale::Locale::of(lang));
         let mut cmd = crate::cli::help::localised(Cli::command());
         let matches = cmd.try_get_matches_from_mut(std::env::args_os()).unwrap_or_else(|e| exit_escaped(&e));
         if let Some(("help", asked)) = matches.subcommand() {
@@ -95,8 +95,8 @@ impl Cli {
 
     /// The locale the command line asks for: `--lang` over the system's, `--decimal` over
     /// the language's own mark.
-    pub fn locale(&self) -> phonglab_core::locale::Locale {
-        use phonglab_core::locale::{Lang, Locale};
+    pub fn locale(&self) -> crate::locale::Locale {
+        use crate::locale::{Lang, Locale};
         let lang = self.lang.unwrap_or_else(Lang::from_env);
         Locale { lang, decimal: self.decimal.unwrap_or(lang.decimal_mark()) }
     }

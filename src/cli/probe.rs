@@ -3,9 +3,10 @@
 use anyhow::{Result, bail};
 use clap::Args;
 use phonglab_core::render::Renderer;
-use phonglab_core::{probe, probe_report, t};
+use phonglab_core::{probe, probe_report};
 
 use super::render::ShadedInput;
+use crate::t;
 
 /// `phonglab probe`.
 #[derive(Args, Debug)]

@@ -8,9 +8,10 @@ use glam::DMat4;
 use phonglab_core::channels::{self, Channel, ColourMap};
 use phonglab_core::mesh::Mesh;
 use phonglab_core::render::{Job, Renderer};
-use phonglab_core::{EvalOptions, ObjectKind, PowFn, Scene, Shading, ShadingMode, library, presets, t};
+use phonglab_core::{EvalOptions, ObjectKind, PowFn, Scene, Shading, ShadingMode, library, presets};
 
 use super::scene_file;
+use crate::t;
 
 /// What to draw, shared by `render` and `probe`: a scene (file, preset or the benchmark's
 /// frame), its object and shading, the picture's size.
@@ -113,7 +114,7 @@ fn within_budget(job: &Job<'_>, size: u32) -> Result<()> {
         width = size,
         height = size,
         count = triangles as i64,
-        triangles = phonglab_core::locale::grouped(triangles)
+        triangles = crate::locale::grouped(triangles)
     );
     let size = u64::from(size);
     crate::io::budget::check(&what, crate::io::budget::render_bytes(size, size, vertices, triangles))
@@ -272,10 +273,10 @@ pub fn run(a: &RenderArgs) -> Result<()> {
                 crate::io::atomic_write::write(raw, &channels::pfm(&image))?;
             }
             let (lo, hi) = image.range();
-            let number = |x: f64| phonglab_core::locale::num(x, 4);
+            let number = |x: f64| crate::locale::num(x, 4);
             super::say(&t!(
                 "render-channel-summary",
-                channel = phonglab_core::locale::tr(image.message_id),
+                channel = crate::locale::tr(image.message_id),
                 map = format!("{:?}", a.colour_map).to_lowercase(),
                 low = number(lo),
                 high = number(hi)
@@ -287,9 +288,9 @@ pub fn run(a: &RenderArgs) -> Result<()> {
         path = crate::io::reasons::shown(&a.output),
         size = format!("{width}x{height}"),
         triangles = stats.triangles,
-        covered = phonglab_core::locale::decimal(&format!("{:.1}", 100.0 * coverage)),
+        covered = crate::locale::decimal(&format!("{:.1}", 100.0 * coverage)),
         evaluations = stats.evaluations,
-        ms = phonglab_core::locale::decimal(&format!("{ms:.1}"))
+        ms = crate::locale::decimal(&format!("{ms:.1}"))
     ));
     for note in &loaded.notes {
         super::say(&t!("note-line", note = note));

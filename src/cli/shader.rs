@@ -5,9 +5,9 @@ use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use clap::Args;
-use phonglab_core::t;
 
 use super::scene_file;
+use crate::t;
 
 /// `phonglab shader`.
 #[derive(Args, Debug)]

@@ -7,9 +7,10 @@ use anyhow::Result;
 use clap::Args;
 use phonglab_core::channels::Channel;
 use phonglab_core::export::share::{Shared, link};
-use phonglab_core::t;
 
 use phonglab_core::export::share::DEFAULT_BASE;
+
+use crate::t;
 
 /// `phonglab share`.
 #[derive(Args, Debug)]

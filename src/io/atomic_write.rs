@@ -40,8 +40,8 @@ pub struct WriteError {
 impl fmt::Display for WriteError {
     /// "cannot write PATH: STEP: REASON; WHAT WAS KEPT", in the current language.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        use phonglab_core::locale::tr;
-        f.write_str(&phonglab_core::t!(
+        use crate::locale::tr;
+        f.write_str(&crate::t!(
             "write-error",
             path = crate::io::reasons::shown(&self.path),
             what = tr(self.what),
@@ -241,7 +241,7 @@ fn refuse_not_a_file(path: &Path, kept: &'static str) -> Result<(), WriteError> 
             Err(WriteError::new(path, "write-step-create", e, kept))
         }
         Ok(m) if !m.is_file() => {
-            let e = io::Error::new(io::ErrorKind::InvalidInput, phonglab_core::t!("write-not-a-regular-file"));
+            let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("write-not-a-regular-file"));
             Err(WriteError::new(path, "write-step-create", e, kept))
         }
         _ => Ok(()),

@@ -15,7 +15,8 @@
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use phonglab_core::mesh::obj::describe_bytes;
-use phonglab_core::t;
+
+use crate::t;
 
 /// The budget in bytes, once set (0: not set yet).
 static BUDGET: AtomicU64 = AtomicU64::new(0);

@@ -21,7 +21,7 @@ use phonglab_core::{Document, Engine};
 
 use super::file_set::FileSet;
 use super::sheet_pdf::{Block, Pages, pdf};
-use phonglab_core::t;
+use crate::t;
 
 /// What a set is made of: the seed and the count, the effects and rules ([`Spec`]), the
 /// rules' name as the index shows it, and whether exercise 0, the worksheet itself, comes
@@ -138,14 +138,14 @@ fn names<const N: usize>(qs: [Q; N]) -> String {
 /// A vector's components for people (8 significant digits, the locale's decimal mark), as
 /// printed on a handout (`explain::printed_components`: no 6.123234e-17 where 0 belongs).
 fn components(v: &[f64]) -> Vec<String> {
-    phonglab_core::explain::printed_components(v, 8).iter().map(|x| phonglab_core::locale::num(*x, 8)).collect()
+    phonglab_core::explain::printed_components(v, 8).iter().map(|x| crate::locale::num(*x, 8)).collect()
 }
 
 /// A matrix's rows for people, as printed on a handout: an entry below the whole matrix's
 /// last printed digit is 0.
 fn matrix_components(rows: &[[f64; 4]; 4]) -> Vec<Vec<String>> {
     let printed = phonglab_core::explain::printed_components(rows.as_flattened(), 8);
-    printed.chunks(4).map(|r| r.iter().map(|x| phonglab_core::locale::num(*x, 8)).collect()).collect()
+    printed.chunks(4).map(|r| r.iter().map(|x| crate::locale::num(*x, 8)).collect()).collect()
 }
 
 /// A colour as the worksheet writes it, `[r g b 0]`.
@@ -233,7 +233,7 @@ fn key_blocks(doc: &Document, file: &str) -> Result<Vec<Block>> {
         b.push(Heading(ex.heading.clone()));
         for (k, st) in ex.steps.iter().enumerate() {
             let value = match &st.value {
-                Some(v) => phonglab_core::locale::decimal(&phonglab_core::explain::fmt_printed(v, 8)),
+                Some(v) => crate::locale::decimal(&phonglab_core::explain::fmt_printed(v, 8)),
                 None => t!("not-applicable"),
             };
             b.push(KeyStep {

@@ -30,9 +30,10 @@ use std::path::Path;
 use phonglab_core::escape::printable;
 
 use phonglab_core::Document;
-use phonglab_core::locale::Lang;
-use phonglab_core::t;
 use serde::Deserialize;
+
+use crate::locale::Lang;
+use crate::t;
 
 include!(concat!(env!("OUT_DIR"), "/experiment_files.rs"));
 
@@ -112,7 +113,7 @@ impl Experiment {
             return Err(t!("experiment-no-text"));
         }
         if let Some(id) = &file.control
-            && !phonglab_core::locale::has_message(Lang::En, id)
+            && !crate::locale::has_message(Lang::En, id)
         {
             return Err(t!(
                 "experiment-no-control",
@@ -151,7 +152,7 @@ impl Experiment {
 
     /// The label of the control its words tell the class to move, in the reader's language.
     pub fn control_label(&self) -> Option<String> {
-        self.control.as_deref().map(phonglab_core::locale::tr)
+        self.control.as_deref().map(crate::locale::tr)
     }
 
     /// The words in `lang`, else in English, else the first language the file has.

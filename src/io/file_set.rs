@@ -102,7 +102,7 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
     // A set is written into a real folder only: one planted as a link (an oF project's
     // `src` pointing elsewhere) would send the set, and the old set's removal, outside it.
     if std::fs::symlink_metadata(dir).is_ok_and(|m| m.file_type().is_symlink()) {
-        let e = io::Error::new(io::ErrorKind::InvalidInput, phonglab_core::t!("set-folder-is-a-link"));
+        let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-is-a-link"));
         return Err(WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED));
     }
     std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED))?;
@@ -148,7 +148,7 @@ fn refuse_unwritable_names(dir: &Path, set: &FileSet) -> Result<(), WriteError> 
             return Err(WriteError::new(&target, "write-step-name", e, UNTOUCHED));
         }
         if std::fs::symlink_metadata(&target).is_ok_and(|m| !m.is_file()) {
-            let e = io::Error::new(io::ErrorKind::InvalidInput, phonglab_core::t!("write-not-a-regular-file"));
+            let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("write-not-a-regular-file"));
             return Err(WriteError::new(&target, "write-step-create", e, UNTOUCHED));
         }
     }

@@ -3,7 +3,8 @@
 use std::path::Path;
 
 use anyhow::{Context, Result};
-use phonglab_core::t;
+
+use crate::t;
 
 /// Encodes RGBA8 pixels (rows top to bottom) as the bytes of a PNG file, every chunk
 /// written and the encoder finished with its errors checked (dropping it would ignore them).

@@ -6,7 +6,7 @@
 use std::io::Read;
 use std::path::Path;
 
-use phonglab_core::t;
+use crate::t;
 
 /// The largest scene file read: a scene file is a few kilobytes.
 pub const MAX_SCENE_BYTES: u64 = 1 << 20;

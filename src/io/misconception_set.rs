@@ -11,10 +11,10 @@ use std::sync::Arc;
 
 use anyhow::Result;
 use phonglab_core::misconception::{self, Misconception};
-use phonglab_core::t;
 
 use super::file_set::FileSet;
 use super::sheet_pdf::{Block, Figure, Pages, pdf};
+use crate::t;
 
 /// The pictures' side in pixels.
 const PX: usize = 192;

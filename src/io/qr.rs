@@ -22,7 +22,7 @@ pub fn qr_rgba(text: &str) -> Result<(usize, Vec<u8>)> {
 pub fn qr_rgba_at(text: &str, module_px: usize, ec: qrcode::EcLevel) -> Result<(usize, Vec<u8>)> {
     let module_px = module_px.max(1);
     let code = qrcode::QrCode::with_error_correction_level(text.as_bytes(), ec)
-        .with_context(|| phonglab_core::t!("share-qr-too-long"))?;
+        .with_context(|| crate::t!("share-qr-too-long"))?;
     let n = code.width();
     let colours = code.to_colors();
     let side = (n + 2 * QUIET) * module_px;
@@ -44,7 +44,7 @@ pub fn qr_rgba_at(text: &str, module_px: usize, ec: qrcode::EcLevel) -> Result<(
 /// Writes the QR code of `text` to `path`: SVG when its name ends in `.svg`, else PNG.
 pub fn write(path: &Path, text: &str) -> Result<()> {
     if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("svg")) {
-        let code = qrcode::QrCode::new(text.as_bytes()).with_context(|| phonglab_core::t!("share-qr-too-long"))?;
+        let code = qrcode::QrCode::new(text.as_bytes()).with_context(|| crate::t!("share-qr-too-long"))?;
         let svg = code.render::<qrcode::render::svg::Color<'_>>().min_dimensions(400, 400).quiet_zone(true).build();
         super::atomic_write::write(path, svg.as_bytes())?;
         return Ok(());

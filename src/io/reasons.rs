@@ -4,7 +4,7 @@
 
 use std::io;
 
-use phonglab_core::t;
+use crate::t;
 
 /// A path as a message shows it: its control characters (an escape sequence, a line break,
 /// a right-to-left override in a file's name) written visibly, `\u{1B}`, so that naming a
@@ -32,7 +32,7 @@ pub fn io_reason(e: &io::Error) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use phonglab_core::locale::{Lang, Locale, with_locale};
+    use crate::locale::{Lang, Locale, with_locale};
 
     #[test]
     fn common_reasons_are_said_in_the_language() {

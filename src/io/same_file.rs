@@ -9,7 +9,7 @@
 
 use std::path::{Path, PathBuf};
 
-use phonglab_core::t;
+use crate::t;
 
 /// What makes a file itself: its device and inode, or its canonical path; for a file
 /// that is not there yet, its folder's canonical path and its name (two outputs may be

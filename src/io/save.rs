@@ -26,7 +26,7 @@ pub fn save_bytes(name: &str, bytes: &[u8], mime: &str, system: bool, inputs: &[
         return files::download(name, bytes, mime).map(|()| Saved::At(name.to_string()));
     }
     if !system {
-        return Ok(Saved::Choose(phonglab_core::t!("dialog-in-app")));
+        return Ok(Saved::Choose(crate::t!("dialog-in-app")));
     }
     match files::pick_path_to_save(name) {
         files::Picked::Chosen(path) => save_at(&path, bytes, inputs).map(Saved::At),

@@ -2,8 +2,9 @@
 //! the Presets menu lists them: grouped by folder, each with a title and its document.
 
 use phonglab_core::Document;
-use phonglab_core::locale::{current, has_message, tr, tr_args};
-use phonglab_core::t;
+
+use crate::locale::{current, has_message, tr, tr_args};
+use crate::t;
 
 include!(concat!(env!("OUT_DIR"), "/scene_files.rs"));
 
@@ -103,7 +104,7 @@ mod tests {
     fn every_shipped_file_is_listed_and_loads() {
         assert_eq!(SCENE_FILES.len(), 34);
         assert_eq!(scene_files().len(), SCENE_FILES.len(), "every shipped file loads");
-        use phonglab_core::locale::{Lang, Locale, set_thread};
+        use crate::locale::{Lang, Locale, set_thread};
         set_thread(Some(Locale::of(Lang::En)));
         let titles: Vec<String> = scene_files().iter().map(|f| f.title()).collect();
         assert_eq!(titles[0], "Worksheet, mview1");

@@ -24,9 +24,10 @@ use std::hash::Hasher as _;
 use std::io::{self, Read};
 use std::path::Path;
 
-use phonglab_core::t;
 use serde::{Deserialize, Serialize};
 use siphasher::sip128::{Hasher128, SipHasher13};
+
+use crate::t;
 
 /// The stem of a staging folder's name (`.phonglab-set.<pid>.<n>.tmp`).
 pub const STAGING: &str = "phonglab-set";

@@ -214,7 +214,7 @@ fn pad_to_even(fonts: &Fonts, pages: Vec<LaidOut>) -> Vec<LaidOut> {
     for (part, len) in runs {
         out.extend(pages.by_ref().take(len));
         if len % 2 == 1 {
-            let text = phonglab_core::t!("pdf-blank-page");
+            let text = crate::t!("pdf-blank-page");
             let x = (PAGE.0 - fonts.width(&text, BODY, false)) / 2.0;
             out.push(LaidOut {
                 part,
@@ -233,7 +233,7 @@ fn add_footers(fonts: &Fonts, pages: &mut [LaidOut], names: &[String]) {
     let count = pages.len();
     for (k, page) in pages.iter_mut().enumerate() {
         let name = names.get(page.part).cloned().unwrap_or_default();
-        let number = phonglab_core::t!("pdf-page", page = (k + 1).to_string(), pages = count.to_string());
+        let number = crate::t!("pdf-page", page = (k + 1).to_string(), pages = count.to_string());
         if !name.is_empty() {
             page.marks.push(Mark::Text { at: (MARGIN, base), text: name, size, mono: false });
         }
@@ -496,5 +496,5 @@ pub fn pdf(blocks: &[Block], pages: Pages) -> Result<Vec<u8>> {
         surface.finish();
         page.finish();
     }
-    doc.finish().map_err(|e| anyhow::anyhow!(phonglab_core::t!("pdf-cannot-write", error = format!("{e:?}"))))
+    doc.finish().map_err(|e| anyhow::anyhow!(crate::t!("pdf-cannot-write", error = format!("{e:?}"))))
 }

@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-use phonglab_core::t;
+use crate::t;
 
 /// The largest picture file read: a 512 x 512 RGBA PNG without compression is 1 MiB.
 pub const MAX_PICTURE_BYTES: u64 = 32 << 20;

@@ -6,7 +6,8 @@ use egui::{Color32, Ui};
 use egui_plot::{Legend, Line, LineStyle, MarkerShape, Plot, PlotPoint, PlotPoints, Points, Text};
 use phonglab_core::Shading;
 use phonglab_core::cost::{self, Question, Study};
-use phonglab_core::{locale, t};
+
+use crate::{locale, t};
 
 /// The background colour of the study's images (the shaded view's).
 pub const BACKGROUND: [f32; 3] = [0.1, 0.1, 0.15];

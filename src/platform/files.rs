@@ -35,7 +35,7 @@ fn no_dialog_why() -> Option<String> {
         let bus = std::env::var_os("DBUS_SESSION_BUS_ADDRESS").is_some()
             || std::env::var_os("XDG_RUNTIME_DIR").is_some_and(|d| std::path::Path::new(&d).join("bus").exists());
         if !bus {
-            return Some(phonglab_core::t!("dialog-no-session-bus"));
+            return Some(crate::t!("dialog-no-session-bus"));
         }
     }
     None
@@ -52,7 +52,7 @@ fn run_dialog(dialog: impl FnOnce() -> Option<PathBuf>) -> Picked {
     match dialog() {
         Some(p) => Picked::Chosen(p),
         None if asked.elapsed() < std::time::Duration::from_millis(150) => {
-            Picked::NoDialog(phonglab_core::t!("dialog-did-not-open"))
+            Picked::NoDialog(crate::t!("dialog-did-not-open"))
         }
         None => Picked::Cancelled,
     }
@@ -95,7 +95,7 @@ pub fn dropped_path(
 ) -> Option<Result<PathBuf, String>> {
     let path = file.path().to_path_buf();
     if path.as_os_str().is_empty() {
-        return Some(Err(phonglab_core::t!("cannot-read", path = String::new(), error = "no path".to_string())));
+        return Some(Err(crate::t!("cannot-read", path = String::new(), error = "no path".to_string())));
     }
     Some(Ok(path))
 }
@@ -190,7 +190,7 @@ mod web {
                 let read = wasm_bindgen_futures::JsFuture::from(file.array_buffer()).await;
                 let bytes = read
                     .map(|b| js_sys::Uint8Array::new(&b).to_vec())
-                    .map_err(|e| phonglab_core::t!("cannot-read", path = name.clone(), error = format!("{e:?}")));
+                    .map_err(|e| crate::t!("cannot-read", path = name.clone(), error = format!("{e:?}")));
                 arrive(&ctx, bytes.map(|b| (name, b)));
             });
         });
@@ -210,7 +210,7 @@ mod web {
             let name = file.path().display().to_string();
             let read = file.bytes_async().await;
             let checked = read
-                .map_err(|e| phonglab_core::t!("cannot-read", path = name.clone(), error = e))
+                .map_err(|e| crate::t!("cannot-read", path = name.clone(), error = e))
                 .and_then(|b| check(&name, b.len() as u64).map(|()| b));
             arrive(&ctx, checked.map(|b| (name, b)));
         });
@@ -219,7 +219,7 @@ mod web {
 
     /// Offers `bytes` as a download named `name`.
     pub fn download(name: &str, bytes: &[u8], mime: &str) -> Result<(), String> {
-        let fail = |e: wasm_bindgen::JsValue| phonglab_core::t!("browser-download-failed", error = format!("{e:?}"));
+        let fail = |e: wasm_bindgen::JsValue| crate::t!("browser-download-failed", error = format!("{e:?}"));
         let array = js_sys::Uint8Array::from(bytes);
         let parts = js_sys::Array::of1(&array);
         let options = web_sys::BlobPropertyBag::new();

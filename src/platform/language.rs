@@ -2,7 +2,7 @@
 //! (`LC_ALL`, `LC_MESSAGES`, `LANG`), the browser's preferred languages on the web
 //! (`navigator.languages`, then `navigator.language`).
 
-use phonglab_core::locale::Lang;
+use crate::locale::Lang;
 
 /// The system's language, English when it is none phonglab speaks.
 pub fn system() -> Lang {

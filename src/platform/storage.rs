@@ -45,10 +45,8 @@ pub fn load_browser_session() -> Option<String> {
 /// private windows may refuse it).
 #[cfg(target_arch = "wasm32")]
 pub fn save_browser_session(text: &str) -> Result<(), String> {
-    let storage = local_storage().ok_or_else(|| phonglab_core::t!("browser-no-storage"))?;
-    storage
-        .set_item(BROWSER_KEY, text)
-        .map_err(|e| phonglab_core::t!("browser-storage-refused", error = format!("{e:?}")))
+    let storage = local_storage().ok_or_else(|| crate::t!("browser-no-storage"))?;
+    storage.set_item(BROWSER_KEY, text).map_err(|e| crate::t!("browser-storage-refused", error = format!("{e:?}")))
 }
 
 #[cfg(target_arch = "wasm32")]
@@ -78,18 +76,18 @@ pub fn keep_mesh(_name: &str, _bytes: &[u8]) -> Result<(), String> {
 pub fn keep_mesh(name: &str, bytes: &[u8]) -> Result<(), String> {
     let storage = web_sys::window()
         .and_then(|w| w.session_storage().ok().flatten())
-        .ok_or_else(|| phonglab_core::t!("mesh-not-kept", why = phonglab_core::t!("browser-no-storage")))?;
+        .ok_or_else(|| crate::t!("mesh-not-kept", why = crate::t!("browser-no-storage")))?;
     let packed = phonglab_core::export::share::pack_bytes(bytes);
     if packed.len() > MESH_KEPT_CHARS {
         let _ = storage.remove_item(MESH_KEY);
-        return Err(phonglab_core::t!(
+        return Err(crate::t!(
             "mesh-not-kept",
-            why = phonglab_core::t!("mesh-too-large-to-keep", packed = packed.len(), most = MESH_KEPT_CHARS)
+            why = crate::t!("mesh-too-large-to-keep", packed = packed.len(), most = MESH_KEPT_CHARS)
         ));
     }
     storage.set_item(MESH_KEY, &format!("{name}\n{packed}")).map_err(|e| {
         let _ = storage.remove_item(MESH_KEY);
-        phonglab_core::t!("mesh-not-kept", why = format!("{e:?}"))
+        crate::t!("mesh-not-kept", why = format!("{e:?}"))
     })
 }
 
@@ -110,6 +108,6 @@ pub fn restore_meshes() -> Result<(), String> {
         .and_then(|bytes| phonglab_core::mesh::obj::hold_obj_bytes(name, &bytes));
     held.map(|_| ()).map_err(|why| {
         let _ = storage.remove_item(MESH_KEY);
-        phonglab_core::t!("mesh-not-restored", name = name, why = why)
+        crate::t!("mesh-not-restored", name = name, why = why)
     })
 }

@@ -37,7 +37,7 @@ pub fn with_pool<R: Send>(threads: usize, work: impl FnOnce() -> R + Send) -> Re
 pub fn asked(threads: Option<usize>) -> Result<usize, String> {
     let most = std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get);
     match threads {
-        Some(n) if n > most => Err(phonglab_core::t!("err-threads", asked = n, most = most)),
+        Some(n) if n > most => Err(crate::t!("err-threads", asked = n, most = most)),
         Some(n) => Ok(n),
         None => Ok(0),
     }

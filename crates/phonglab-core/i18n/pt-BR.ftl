@@ -2,63 +2,10 @@
 
 ## app
 
-language-menu-hover = Idioma, e como se escrevem os números (0,5 ou 0.5)
-leave-presenting = Sair (F5)
 present = Apresentar (F5)
-present-hover = Letra grande; os controles numa gaveta
-controls-drawer = Gaveta dos controles
-controls-drawer-hover = Os controles da cena, numa gaveta
-controls = Controles
-calculation = Cálculo
-theme-hover = Os dois temas têm alto contraste
-theme-light = Tema claro
-theme-dark = Tema escuro
-reset-worksheet = Voltar à ficha
-scene-menu = Cena
-scene-menu-hover = As cenas incluídas, e a da lista de exercícios
-file-menu = Arquivo
-view-menu = Exibir
-view-menu-hover = Painéis, janelas, o tema e a aritmética
-things-to-try = Coisas para experimentar
-things-to-try-hover = Experimentos em um clique: cada um prepara uma cena, diz o que observar e faz uma pergunta que o cálculo responde
-things-to-try-band = Coisas para experimentar: um clique prepara cada uma
-things-to-try-intro = Clique em um para preparar a cena (a atual é substituída; Ctrl+Z a traz de volta).
-things-to-try-look = O que observar
-things-to-try-question = A pergunta
-things-to-try-show = Mostrar a resposta do cálculo
-things-to-try-answer = Passo { $step }: { $value }
-things-to-try-no-step = O cálculo não tem o passo { $step } nesta cena.
-things-to-try-own = Seus próprios experimentos: arquivos .toml em { $folder } (veja o formato em assets/experiments/).
-things-to-try-own-none = Seus próprios experimentos podem ser adicionados no aplicativo para computador.
-experiment-no-text = não tem [text.en], [text.pt-PT] nem [text.pt-BR]
-experiment-no-scene = nenhuma cena chamada { $scene } (uma cena incluída, ou um arquivo .toml ao lado do experimento)
-experiment-no-control = nenhum controle tem como rótulo a mensagem “{ $control }” (indique o id de um rótulo, como light-z ou material-shininess)
-experiment-scene-refused = a cena { $scene } não é lida: { $why }
-experiment-scene-not-beside = um experimento nomeia uma cena incluída (como worksheet-mview1) ou um arquivo de cena ao lado dele só pelo nome (como minha-cena.toml), não uma pasta, um caminho ou um link
-experiment-scene-error = a cena { $scene } não carrega: { $error }
-experiment-changes-refused = as [changes] dele, postas sobre a cena { $scene }, não dão uma cena: { $error }
-experiment-folder-full = não lido: da pasta dos experimentos se lê no máximo { $most } no total, contando as cenas
-experiment-too-many = não lido: leem-se no máximo { $most } experimentos da pasta
-file-kind-experiments = arquivos de experimentos
-panels-heading = Painéis e janelas
-arithmetic-heading = Aritmética
-file-menu-hover = O arquivo da cena, exportar, desfazer e refazer
-redbook-teapots = Bules do Red Book
-compare = Comparar
-compare-hover = Fixe a cena como A; mude o que quiser e veja A e B lado a lado
-director = Visão do diretor
-director-hover = A cena vista de fora: o olho e seu tronco de visão, as luzes com seus anéis e cones, o vértice do cálculo com N, L, V e H, no espaço do objeto, do mundo ou do olho
-director-space = Espaço
 space-object = Objeto
 space-world = Mundo
 space-eye = Olho
-director-eye = olho
-director-vertex = vértice
-director-light = luz { $n }
-director-legend = no vértice, todos do mesmo comprimento; quadrado azul: o plano próximo (a viewport); quadrado verde: a superfície no vértice. Arraste uma luz ou o olho para movê-lo; arraste em outro lugar para girar; role para aproximar.
-director-naive-normal = Pontilhada, em azul-claro: M n, a normal transformada como um ponto, a { $degrees }° da normal verdadeira (M^-1)^T n, que continua perpendicular à superfície.
-director-rules-naive = As regras desta cena (as da ficha) iluminam o vértice com M n; as do OpenGL usam (M^-1)^T n.
-director-ring = Luz { $n }: 1/at, o fator de atenuação, cai para { $percent } % à distância { $distance } (um anel).
 wrong-cause-normals-by-m = Normais transformadas por M em vez de sua inversa transposta
 wrong-why-normals-by-m = Com uma escala diferente em cada eixo, M move a superfície de um jeito e as normais de outro: M n deixa de ser perpendicular à superfície, e (M^-1)^T n continua sendo.
 wrong-cause-normal-not-normalised = A normal não normalizada (GL_NORMALIZE desligado com uma modelview que escala)
@@ -87,67 +34,12 @@ wrong-key-right = desenhada certa: { $line }
 wrong-key-wrong = com o erro: { $line }
 wrong-key-term = O termo que mais muda neste pixel: { $term } ({ $name }), com a luminância passando de { $right } na imagem certa para { $wrong } na imagem com o erro.
 wrong-key-normals = A normal do fragmento gira { $degrees }°.
-wrong-title = O que está errado nesta imagem?
-wrong-intro = Cada folha mostra uma esfera desenhada certa e desenhada com um erro. Escolha o erro; a chave o explica com os números da sonda de pixel.
-wrong-sheet-title = O que está errado nesta imagem? ({ $number })
-wrong-drawn-right = Desenhada certa
-wrong-drawn-wrong = Desenhada com um erro
-wrong-question = Que erro produz a imagem da direita? Marque-o e diga o que na imagem o mostra.
-wrong-written = { $count } imagens com um erro cada, com as chaves, em { $out }
-wrong-quiz-hover = Uma esfera desenhada certa e desenhada com um erro: escolha o erro
-wrong-check = Verificar
-wrong-right-answer = Certo.
-wrong-wrong-answer = Não é esse. A chave:
-wrong-back = Voltar ao cálculo
 share-too-long = o link tem { $length } caracteres; o phonglab lê no máximo { $most }
 share-version = o link é da versão “{ $found }”; este phonglab lê a v{ $version }
 share-damaged = o link está danificado ({ $what }): foi cortado ou alterado
 share-choice = o link pede algo que este phonglab não conhece: “{ $line }”
-share-summary = um link de { $length } caracteres: a cena vai no próprio link
-share-window = Compartilhar esta cena
-share-menu = Compartilhar link…
-share-menu-hover = A cena como link e código QR, para a turma abrir em um navegador (nada fica guardado em um servidor: a cena vai no próprio link)
-share-page = Página que o link abre
-share-page-hover = Onde a versão para o navegador está publicada (vazio: esta página, em um navegador; senão, o site do projeto)
-share-in-language = Abrir em { $lang }
-share-presenting = Abrir no modo de apresentação
-share-channel = Abrir mostrando { $term }
-share-length = { $length } caracteres: a cena vai no próprio link
-share-copy = Copiar link
-share-copy-hover = Coloca o link na área de transferência, para colar no chat ou na página da turma
-share-copied = Link copiado ({ $length } caracteres): cole-o para a turma, ou deixe que ela leia o código.
-share-qr = Código QR do link
-share-qr-too-long = O link é longo demais para um código QR; copie-o.
-err-share-lang = idioma desconhecido { $value }: en, pt-PT ou pt-BR
-share-opened = o link compartilhado ({ $name })
-share-not-opened = O link compartilhado não foi aberto: { $why }. Esta é a cena que você tinha.
 mesh-missing-kept = A malha { $path } está faltando ou não pode ser lida ({ $error }); a cena é mantida e mostrada na esfera. Abra a malha de novo para vê-la.
-share-needs-mesh = A cena do link mostra a malha { $name }, que um link não leva: abra ou solte { $name } para vê-la (até lá, a esfera fica no lugar dela).
-mesh-not-kept = (Não fica guardada para quando a página for recarregada: { $why }; abra-a de novo depois disso.)
-mesh-too-large-to-keep = comprimida, tem { $packed } caracteres, e a página guarda no máximo { $most }
-mesh-not-restored = Não foi possível ler de novo a malha { $name } que esta página guardou ({ $why }): abra-a de novo.
-quiz = Teste
-quiz-hover = Cada valor do cálculo atrás de um campo: digite-os passo a passo
 shader = Programa de sombreamento (shader)
-shader-hover = O programa GLSL ou WGSL em que esta cena se compila: só as etapas de que precisa
-precision = Precisão:
-f32-hover = Calcular em precisão simples, como o OpenGL
-f64-hover = Calcular em precisão dupla
-cost-of-accuracy = Custo da exatidão
-cost-hover = O que cada sombreamento, tesselação e aproximação custa em tempo e em erro
-help-button = Ajuda (F1)
-undo-what = Desfazer: { $what } (Ctrl+Z)
-redo-what = Refazer: { $what } (Ctrl+Shift+Z, Ctrl+Y)
-undo-button = ⟲ Desfazer
-redo-button = ⟳ Refazer
-nothing-to-undo = Nada para desfazer
-nothing-to-redo = Nada para refazer
-could-not-evaluate = Não foi possível calcular a cena ({ $error }); de volta à ficha.
-keyboard-shortcuts = Atalhos de teclado
-vectors-at-vertex = Vetores no vértice
-reflection-lobe = Lóbulo de reflexão
-session-not-saved = Não foi possível salvar a sessão: { $error }.
-no-session-folder = Não há pasta onde salvar a sessão (HOME não está definida): esta janela não guardará a sua sessão.
 
 ## names
 
@@ -156,15 +48,6 @@ doc-worksheet-preset = Ficha, mview{ $k }
 
 ## presets
 
-preset-group-worksheet = A ficha
-preset-group-phong-demo = A demo de Phong
-preset-group-more = Mais cenas
-preset-worksheet = Ficha, { $modelview }
-preset-phong-demo = Demo de Phong
-preset-spotlight = Foco
-preset-three-lights = Três luzes
-preset-of-set-color = ofSetColor com iluminação
-preset-gouraud-misses-the-highlight = Por que o Gouraud perde o brilho
 doc-phong-demo = a demo de Phong
 doc-spotlight = um foco
 doc-three-lights = três luzes coloridas e uma luz presa ao observador
@@ -174,54 +57,25 @@ doc-redbook-teapot = bules do Red Book: { $material }
 
 ## controls
 
-controls-rules = Regras
-controls-lights = Luzes
-controls-material = Material
-controls-light-model = Modelo de iluminação
-controls-vertex = Vértice
-controls-camera = Câmera (modelview)
-rule-set = Regras de cálculo
-specular-model = Modelo especular
 specular-blinn-phong-normalised = Blinn-Phong normalizado (n.H)·(ns+8)/8π
-rules-opengl-summary = Emissão + ambiente da cena + as componentes ambiente, difusa e especular de cada luz (OpenGL 2.1, 2.14.1).
-rules-worksheet-summary = A ficha de exercícios: sem ambiente da cena nem emissão; difusa 0 além de 90 graus, especular 0 além de 90 graus.
-rules-demo-summary = O shader da demo de Phong: sem ambiente da cena nem emissão, pow(max(R.V, 0), e) sem outra condição.
 ruleset-worksheet = Ficha de exercícios
 ruleset-demo = Demo de Phong
 pow-exact = pow exata
-placement-eye = o olho (move-se com a câmera)
-placement-world = o mundo
-placement-object = o objeto (gira com ele)
-placement-matrix = uma matriz digitada
-add-light = Adicionar luz
-remove-light = Remover luz
 lights-count =
     { $count ->
     [one] { $count } luz
     *[other] { $count } luzes
     }
-lights-of-max = { $count } de { $max }
 light-tab = Luz { $index }
-no-lights = Sem luzes: restam apenas a emissão e o ambiente da cena.
-directional = Direcional (w = 0)
-light-x = Luz x
-light-y = Luz y
-light-z = Luz z
-light-fixed-to = Luz presa a
 light-ambient = Luz: ambiente
 light-diffuse = Luz: difusa
 light-specular = Luz: especular
 attenuation-constant = Atenuação constante
 attenuation-linear = Atenuação linear
 attenuation-quadratic = Atenuação quadrática
-attenuation-positional-only = A atenuação só vale para luz pontual ou foco.
-spotlight = Foco
-spotlight-hover = Um foco novo aponta para o objeto da vista
 spot-direction = Direção do foco
 spot-cutoff = Abertura do foco (cutoff)
 spot-exponent = Expoente do foco
-material-custom = personalizado
-material-preset = Material predefinido
 material-ambient = Material: ambiente
 material-diffuse = Material: difusa
 material-specular = Material: especular
@@ -233,219 +87,23 @@ quantity-light-position = Posição da luz
 quantity-material-alpha = Material: alfa
 quantity-modelview = Matriz modelview
 quantity-light-modelview = Modelview quando a luz foi posicionada
-back-preset = Verso predefinido
-back-ambient = Verso: ambiente
-back-diffuse = Verso: difusa
-back-specular = Verso: especular
-back-emission = Verso: emissão
-back-shininess = Verso: brilho (ns)
-separate-back-material = Material próprio para o verso
-color-material = Cor do material (GL_COLOR_MATERIAL)
-color-material-hover = As cores do material que acompanha seguem a cor atual (glColor), como o ofSetColor do openFrameworks faz sob ofEnableLighting
-color-material-mode = Acompanha
-color-material-face = Faces
-color-material-color = Cor atual (glColor)
-color-material-tracked = O GL_COLOR_MATERIAL faz desta a cor atual: o que está aqui volta quando ele for desligado
 scene-ambient = Ambiente da cena
 local-viewer = Observador local
 two-sided = Iluminação das duas faces
-separate-specular = Cor especular separada
-normals-as-is = como transformadas
-normals = Normais
 vertex = Vértice
 normal = Normal
-normalise-normal = Normalizar a normal
 camera = Câmera
 camera-kind-worksheet = Modelview da ficha
 camera-kind-of = Câmera do openFrameworks
 camera-kind-matrix = Matriz 4x4 digitada
-camera-eye = Olho
-camera-centre = Centro
-camera-up = Cima
-window-width = Largura da janela
-window-height = Altura da janela
-of-eye-distance = Distância do olho (H/2)/tan(30 graus) = { $distance }
-object-placement = Posição do objeto (do objeto para o mundo)
-object-matrix = Objeto
-matrix-column = coluna { $column }
-matrix-row = { $name } linha { $row }
-matrix-cell = { $name } linha { $row } coluna { $column }
-mview1-what = a câmera do openFrameworks, translação em z de −665,108
-mview2-what = uma rotação em torno de x, tal como impressa (uma entrada com um algarismo a menos, −0,85749)
-mview34-what = construída com 15/17 e 8/17, tal como a ficha a imprime
-mview5-what = uma rotação 3-4-5 em torno de x e translação em z de −960
 
 ## result
 
-unclamped = sem limite
-unclamped-hover = A cor primária tal como a equação a dá.
-clamped = limitada a [0, 1]
-clamped-hover = Primária + secundária rgb, limitada a [0, 1]: o que um fragmento recebe.
-dark-vertex = um vértice escuro: { $percent } % do brilho do branco
-dark-vertex-angle = um vértice escuro: { $percent } % do brilho do branco; a luz chega nele a { $angle }°
-dark-vertex-short = vértice escuro
-large-value-hover = A cor desenhada (limitada a [0, 1]), r g b com duas casas decimais
-secondary = secundária
-secondary-hover = A cor secundária (especular).
-vertex-colour = Cor do vértice
-front-face = Face da frente
-back-face = Face de trás
-colour-hidden = Escondida enquanto o teste está aberto: é a última resposta do teste, I.
-colour-hidden-teacher = O professor pode mostrá-la com "Mostrar as respostas" no teste.
-refused-kept = Recusado: { $error }. A cena mantém o último valor válido.
-history-reset = voltar à ficha
-reset-done = De volta à ficha (mview5).
-history-open = abrir { $what }
-loaded = Aberto: “{ $what }”
-undid = Desfeito: { $what }.
-redid = Refeito: { $what }.
-history-no-change = sem alteração
-history-and-more = { $field } e mais { $count }
-history-light-added = luz { $index } adicionada
-history-light-removed = luz { $index } removida
-history-none = (nenhum)
-history-on = ligado
-history-off = desligado
-# A changed field of the scene, as the undo history names it. $field is the scene file's
-# path with dots as dashes and a light's number taken out (light-position of light $index).
-history-field = { $field ->
-    [name] nome da cena
-    [rules] { rule-set }
-    [specular] { specular-model }
-    [normals] { normals }
-    [light_model-ambient] { scene-ambient }
-    [light_model-local_viewer] { local-viewer }
-    [light_model-two_sided] { two-sided }
-    [light_model-separate_specular] { separate-specular }
-    [camera] { camera }
-    [object_matrix] { object-placement }
-    [material-preset] material
-    [material-ambient] { material-ambient }
-    [material-diffuse] { material-diffuse }
-    [material-specular] { material-specular }
-    [material-emission] { material-emission }
-    [material-shininess] { material-shininess }
-    [back_material] { separate-back-material }
-    [color_material] { color-material }
-    [light-position] luz { $index }: posição
-    [light-ambient] luz { $index }: ambiente
-    [light-diffuse] luz { $index }: difusa
-    [light-specular] luz { $index }: especular
-    [light-spot_direction] luz { $index }: direção do foco
-    [light-spot_cutoff] luz { $index }: abertura do foco
-    [light-spot_exponent] luz { $index }: expoente do foco
-    [light-attenuation] luz { $index }: coeficientes de atenuação (k0, k1, k2)
-    [light-placement] luz { $index }: presa a
-    [vertex-position] { quantity-vertex-position }
-    [vertex-normal] { quantity-vertex-normal }
-    [view-object] objeto
-    [view-obj] { mesh-file }
-    [view-shading] sombreamento
-    [view-sphere_slices] { sphere-slices }
-    [view-sphere_stacks] { sphere-stacks }
-    [view-teapot_grid] { teapot-grid }
-    [view-cylinder_slices] { cylinder-slices }
-    [view-cylinder_stacks] { cylinder-stacks }
-    [view-cylinder_caps] tampas do cilindro
-    [view-cylinder_centered] cilindro centrado
-    [view-demo_normals] { demo-normals }
-    [view-auto_rotate] { auto-rotate }
-    [view-spin_degrees] rotação
-    [view-framing] enquadramento
-    [view-lighting_space] espaço da iluminação
-    [view-flat_normal] { flat-derivatives }
-    [view-phong_renormalize] { phong-renormalises }
-    [view-background] fundo
-    [view-camera] câmera da vista
-   *[other] a cena
-}
-not-whole = { $text } não é um número inteiro
-outside-range = { $text } está fora de { $min } a { $max }
-numbers-type-one = { $count } números: digite um
-numbers-type-row = { $count } números: digite um, ou todos os { $fields } da linha
-refused-esc = { $why } (Esc: volta a { $value })
 typed-empty = nenhum valor
 typed-not-a-number = "{ $text }" não é um número
 typed-not-finite = { $text } não é um número finito
 typed-too-large = { $text } está além do alcance da precisão simples (±3,4e38)
 typed-too-small = { $text } é pequeno demais para a precisão simples: seria 0
-
-## help
-
-help-help = mostrar ou esconder esta ajuda
-help-present = apresentar: letra grande, os controles em uma gaveta (F5 de novo para sair)
-help-walk-steps = percorrer os passos do cálculo, um por um (quando nenhum campo tem o teclado)
-help-zoom = ampliar, reduzir, voltar a 100 % a janela inteira
-help-things-to-try = Coisas para experimentar (barra de cima): experimentos em um clique, cada um com uma pergunta que o cálculo responde.
-help-local-viewer = ligar ou desligar o observador local
-help-next-material = material clássico seguinte
-help-previous-material = material clássico anterior
-help-next-modelview = modelview seguinte da ficha (mview1..5)
-help-specular-model = próximo modelo especular (Blinn-Phong, Phong, Blinn-Phong normalizado)
-help-next-rules = regras seguintes (OpenGL, ficha, demo de Phong)
-help-next-normals = modo seguinte das normais (como estão, normalizar, reescalar)
-help-two-sided = iluminação das duas faces ligada/desligada
-help-precision = cálculo em f32 / f64
-help-reset = voltar à ficha
-help-open = abrir o arquivo de cena no caminho digitado
-help-save = salvar a cena no caminho digitado
-help-quit = sair (a sessão é salva)
-help-undo = desfazer a última alteração da cena
-help-redo = refazer
-help-sphere = vista sombreada: esfera (como a demo)
-help-teapot = vista sombreada: bule
-help-cylinder = vista sombreada: cilindro
-help-gouraud = sombreamento de Gouraud (como a demo)
-help-phong = sombreamento de Phong
-help-flat = sombreamento plano (Flat)
-help-auto-rotate = girar a vista sombreada sozinha
-help-drop = Solte um arquivo de cena (.toml) na janela para abri-lo.
-help-drag = Arraste o gráfico dos vetores ou a vista sombreada para girá-los; use a roda na vista sombreada para ampliar; clique na superfície para explicar esse vértice.
-help-numbers = Um campo numérico aceita ponto ou vírgula decimal e lê o que foi digitado quando se sai dele (Enter, Tab, um clique em outro lugar); um valor recusado fica em vermelho com o motivo até ser corrigido ou até Esc repor o valor.
-help-undo-keys = Ctrl+Z desfaz qualquer alteração da cena. As teclas sem Ctrl não fazem nada enquanto um campo de texto tem o teclado, nem no teste.
-help-demo-title = A cena da demo de Phong: as escolhas da demo e as do OpenGL
-help-demo-space = Da demo: iluminação no espaço do objeto, luz e olho em (-4, 0, -8), por isso a luz gira com o objeto. Do OpenGL: iluminação no espaço do olho, depois da modelview (chave: luz presa ao mundo).
-help-demo-normals = Da demo: cada normal é normalize(posição). Do OpenGL: as normais da superfície (chave: as normais verdadeiras da superfície).
-help-demo-specular = Da demo: R = 2 max(N.L, 0) N - L e pow(max(V.R, 0), 100), vezes o vermelho do objeto, por isso o brilho é vermelho. Do OpenGL: o n.H de Blinn-Phong e a cor especular da luz vezes a do material (chave: brilho da cor da luz).
-help-demo-pipeline = Da demo: sem projeção (a imagem é o espaço de recorte), Phong sem renormalizar, Flat a partir de dFdx/dFdy por fragmento, cores interpoladas sem limite. Em Pipeline, a vista sombreada oferece as escolhas do OpenGL.
-
-## quiz
-
-quiz-input-yours = o seu { $name } = { $value }
-quiz-input-key = o { $name } da chave (ainda sem resposta)
-quiz-the-givens = os dados
-quiz-right = ✔ certo
-quiz-right-given = ✔ certo, dado o seu { $yours }
-quiz-close-key = ≈ perto: a { $percent } % da chave; dê { $digits } algarismos significativos
-quiz-close-yours = ≈ perto: a { $percent } % do que as suas respostas anteriores dão; dê { $digits } algarismos significativos
-quiz-wrong = ✖ errado: { $formula }, com { $inputs }
-quiz-level = Nível
-quiz-levels = 1 direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
-quiz-this-scene = Testar esta cena
-quiz-this-scene-hover = Recomeçar com a cena mostrada, todos os valores escondidos
-quiz-new-exercise = Novo exercício
-quiz-new-exercise-hover = Uma cena nova deste nível, filtrada como o phonglab exercise filtra
-quiz-reveal-all = Mostrar todas as respostas
-quiz-reveal-all-hover = Mostrar o valor da chave em cada passo: nenhum conta então como certo
-quiz-clear = Limpar respostas
-quiz-clear-hover = Recomeçar este teste sem respostas
-quiz-show-answers = Mostrar as respostas (professor)
-quiz-show-answers-hover = A cor do vértice, os ângulos do gráfico e a chave de cada passo
-quiz-nothing-open = Abra um exercício (o phonglab exercise os escreve) ou qualquer cena e clique em "Testar esta cena", ou clique em Novo exercício.
-quiz-instructions = { $scene }: digite o valor de cada passo e pressione Enter. Certo: a menos de { $percent } % do valor (ou { $absolute } perto de 0). Ponto ou vírgula; um vetor como 0,5; 0,3; 0,1.
-quiz-score = Pontuação: { $right } de { $all } ({ $answered ->
-    [one] 1 respondido
-   *[other] { $answered } respondidos
-}{ $shown ->
-    [0] {""}
-    [one] , 1 resposta mostrada
-   *[other] , { $shown } respostas mostradas
-})
-quiz-your-value = o seu valor
-quiz-reveal = Mostrar a resposta
-quiz-reveal-hover = Mostrar o valor da chave neste passo: ele deixa então de contar como certo
-quiz-not-numbers = não se lê como números: { $error }
-quiz-key = chave: { $name } = { $value }
 
 ## explain
 
@@ -514,23 +172,6 @@ mview-note-rows = as linhas { $first } e { $second } fazem { $angle }
 mview-note-rows-square = as suas linhas fazem 90°
 mview-note-not-rotation = M não é uma rotação: { $rows } (as linhas de uma rotação fazem 90° e têm comprimento 1; estas têm comprimentos { $lengths }); { $gap }
 
-## calculation
-
-plan-heading = Plano especializado: { $computed } efeitos calculados, { $skipped } pulados
-plan-light = luz { $index }:{" "}
-plan-computed = calculado  { $what }
-plan-skipped = pulado   { $what }
-plan-program = O programa, { $stages } etapas por bloco de vértices:
-worked-calculation = Cálculo passo a passo
-copy-markdown = Copiar como Markdown
-copy-markdown-hover = Copia todos os passos como uma tabela Markdown.
-side = Face:
-not-applicable = não se aplica
-skipped-by-specialised = pulado pelo avaliador especializado: { $why }
-plot-view = Vista:
-plot-legend-halfway = vetor médio
-plot-view-hover = Ver o plano { $plane }
-
 ## view
 
 object-sphere = Esfera
@@ -545,123 +186,6 @@ fix-highlight-colour = brilho da cor da luz
 why-light-world = A demo ilumina posições e normais não transformadas, por isso a luz gira com o objeto; a correção do próprio documento as transforma pela mvMatrix (para uma rotação, a inversa transposta é ela própria), e a luz fica parada enquanto o objeto gira.
 why-true-normals = normalize(posição) só é a normal de uma esfera centrada na origem; as superfícies do bule e do cilindro apontam para outros lados, e suas normais verdadeiras as iluminam como são.
 why-highlight-colour = A demo multiplica a componente especular pelo vermelho do objeto; o OpenGL multiplica a cor especular da luz pela cor especular do material (aqui branca), por isso o brilho mostra a cor da luz.
-pipeline = Pipeline: a do OpenGL ou a da demo
-picture = Imagem
-phong-renormalises = Phong renormaliza N
-phong-renormalises-hover = Os shaders do OpenGL normalizam a normal interpolada; o da demo não
-flat-derivatives = Flat a partir de dFdx/dFdy
-flat-derivatives-hover = O Flat da demo: cada fragmento iluminado com cross(dFdy(p), dFdx(p)); senão, uma cor por face
-correct-the-demo = Corrigir a demo:
-why-demo-differs = Por que a demo difere
-why-demo-differs-intro = Cada chave ligada corrige a demo numa segunda imagem, à direita da sua.
-sphere-slices = Fatias da esfera
-sphere-stacks = Camadas da esfera
-teapot-grid = Grade do bule
-cylinder-slices = Fatias do cilindro
-cylinder-stacks = Camadas do cilindro
-caps = Tampas
-mesh-triangles = { $count } triângulos: { $notes }
-key-hint = tecla { $key }
-mesh-tip = { $path } (abra outra em Opções da vista, ou solte um arquivo .obj)
-close-mesh = Fechar sua malha
-close-mesh-hover = Fechar sua malha: a barra de cima deixa de oferecê-la (ela fica no arquivo; trocar de cena a mantém até lá)
-auto-rotate = Girar sozinho
-auto-rotate-hover = 0,5 graus por imagem, como a demo (tecla A)
-demo-normals = Normais da demo
-demo-normals-hover = normalize(posição), como a demo: erradas para o bule e o cilindro
-heat-map = Mapa de calor do erro
-heat-map-hover = Ao lado da vista: a distância de cada pixel ao Phong por pixel em f64 numa malha muito fina
-view-options = Opções da vista
-view-options-hover = O renderizador, a resolução da malha, as escolhas do pipeline, um arquivo de malha
-mesh-file = Arquivo da malha (.obj):
-show-mesh = Mostrar a malha
-show-mesh-hover = Sombrear este arquivo OBJ na vista (Enter no campo)
-shaded-cannot-render = A vista sombreada não consegue desenhar esta cena
-corrected-cannot-render = A vista corrigida não consegue desenhar
-the-demos-own = {" "}(a da própria demo)
-picture-hover = Arraste para girar, use a roda para ampliar, clique na superfície para que esse vértice seja o do cálculo
-corrected = Corrigida: { $fixes }
-corrected-short = Corrigida ({ $count } de { $all })
-picked-vertex = Vértice { $index } de { $object }: o cálculo passa a usá-lo, tal como a vista sombreada o ilumina.
-light-behind = luz { $index } (atrás da câmera)
-light-name = luz { $index }
-light-drag = Luz { $index }: arraste para movê-la
-arrows-faded = Esmaecida, ponta aberta: o vetor aponta para longe de você, ou para dentro da superfície.
-renderer = Desenho
-renderer-hover = O desenho na CPU é a referência; a GPU roda o WGSL gerado para a cena (janela Shader)
-renderer-auto = Automático (GPU, se for real)
-renderer-cpu = CPU (a referência)
-renderer-gpu = GPU (mesmo por software)
-drawn-gpu = Desenhado na GPU ({ $adapter }) pelo WGSL gerado para a cena.
-drawn-cpu = Desenhado pela CPU: { $why }.
-gpu-none = não há GPU aqui
-caption-gpu = na GPU ({ $adapter })
-caption-cpu = { $ms } ms por imagem na CPU
-caption-cpu-relit = só iluminada de novo, nada do que se desenha se moveu: { $ms } ms por imagem na CPU
-caption-cpu-coarse = uma cópia com { $triangles } dos { $all } triângulos enquanto a câmera gira: { $ms } ms por imagem na CPU
-caption-cpu-coarse-spin = uma cópia com { $triangles } dos { $all } triângulos enquanto o objeto gira: { $ms } ms por imagem na CPU
-cpu-flat = o sombreamento Flat é desenhado na CPU (o gerador escreve Gouraud e Phong)
-cpu-approximate-pow = uma potência aproximada é estudada na CPU (a pow da GPU é a sua)
-cpu-no-adapter = não há adaptador wgpu aqui (sem tela, ou outro backend)
-cpu-chosen = o desenho na CPU está escolhido em Opções da vista
-cpu-software-adapter = o adaptador ({ $adapter }) é por software, não mais rápido do que a CPU
-
-## files
-
-not-opened-worksheet = Não aberto: { $why }. Em vez disso, mostra-se a ficha.
-not-opened = Não aberto: { $why }. A cena atual não mudou.
-mesh-summary = { $triangles } triângulos, { $vertices } vértices; { $notes }
-opened-mesh = Malha aberta: { $path }: { $what }.
-not-text = { $path } não é um arquivo de texto
-saved = Salvo: { $path }.
-not-saved = Não salvo: { $error }.
-scene-file = Arquivo de cena:
-scene-file-hint = caminho/para/cena.toml
-open = Abrir
-open-hover = Abrir o arquivo de cena neste caminho (Ctrl+O)
-save = Salvar
-save-hover = Salvar a cena neste caminho (Ctrl+S)
-open-dialog = Abrir…
-open-dialog-hover = Escolher um arquivo de cena na janela de arquivos do sistema
-dialog-no-session-bus = A janela de arquivos do sistema não pode abrir aqui (não há barramento de sessão para o seu portal): escolha o arquivo no seletor do phonglab.
-dialog-did-not-open = A janela de arquivos do sistema não abriu (nenhum portal respondeu): escolha o arquivo no seletor do phonglab.
-dialog-in-app = Escolha o arquivo aqui.
-chooser-title = Escolher um arquivo
-chooser-folder = Pasta:
-chooser-up = Acima
-chooser-name = Nome do arquivo:
-chooser-cancel = Cancelar
-chooser-empty = (não há aqui pastas nem arquivos deste tipo)
-save-as = Salvar como…
-save-as-hover = Escolher onde salvar na janela de arquivos do sistema
-drop-to-open = Solte um arquivo de cena (.toml) ou uma malha (.obj) para abri-lo
-cannot-read = não é possível ler { $path }: { $error }
-dropped-several = {" "}(foram soltos { $count } arquivos; só o primeiro é aberto.)
-type-path-first = Digite primeiro o caminho do arquivo de cena.
-
-## browser
-
-browser-no-storage = este navegador não guarda dados locais para a página
-browser-storage-refused = o navegador recusou salvar a sessão ({ $error })
-browser-download-failed = o navegador não conseguiu oferecer o download ({ $error })
-open-browser-hover = Escolher neste computador um arquivo de cena (.toml), uma malha (.obj) ou um caderno ou script da ficha (.ipynb, .py)
-save-download-hover = Baixar a cena como arquivo (.toml)
-downloaded = { $name } oferecido para download.
-
-## export
-
-export = Exportar
-export-png = Vista sombreada em PNG ({ $size }×{ $size })
-export-png-hover = A vista sombreada desenhada na CPU, como o phonglab render a desenha
-export-exercises = Fichas de exercícios
-export-seed = Semente
-export-count = Exercícios
-export-level = Nível
-export-levels = 1 direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
-export-exercises-save = Salvar as fichas (.zip)
-export-exercises-hover = As fichas e as respostas, em Markdown, arquivos de cena e os dois PDF (sheets.pdf para distribuir, keys.pdf para o professor), neste idioma
-exported = Salvo { $what }: { $at }
-not-exported = { $what } não foi salvo: { $error }
 
 ## student-code
 
@@ -759,11 +283,6 @@ nb-final =
 nb-glcolor-comment = # a cor desenhada: limitada a [0, 1], o alfa vem da difusa do material
 nb-back = A face de trás (iluminação dos dois lados): os mesmos termos com a normal invertida (-vertexNormal) e o material de trás; os nomes terminam em Back.
 nb-no-spot-comment = # não é um foco (spotCutoff 180)
-err-export-folder = openframeworks escreve três arquivos: indique uma pasta com -o (vão para a sua src/)
-export-written = escrito: { $path }
-bench-mesh-written = malha gravada: { $path } ({ $triangles } triângulos, { $vertices } vértices)
-bench-coarse-made = { $object }: a cópia grosseira tem { $triangles } dos { $all } triângulos, feita em { $ms } ms
-import-written = cena escrita: { $path } ({ $lights })
 import-unreadable = { $place }: não consigo ler `{ $line }`: { $reason }; ignorada
 import-no-givens = isto não é um notebook nem um programa no estilo da ficha: não atribui nenhuma de vertexPos, vertexNormal, lightPos, matDif, mview
 import-not-notebook = não é um notebook Jupyter: { $reason }
@@ -811,35 +330,6 @@ obj-cannot-read = não é possível ler { $path }: { $error }
 obj-not-a-file = { $path } não é um arquivo comum
 obj-too-large = { $path } tem { $size }; o phonglab lê arquivos OBJ de no máximo { $max } (cerca de { $millions } milhões de triângulos)
 obj-over-budget = ler { $triangles } triângulos ocupa { $bytes }, mais do que o orçamento de memória de { $budget } (--memory-budget o aumenta)
-budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçamento de memória de { $budget } ({ $from }); --memory-budget TAMANHO o aumenta (por exemplo --memory-budget 16G)
-budget-from-option = como pede --memory-budget
-budget-from-system = metade da memória disponível
-budget-size-refused = { $value }: escreva um tamanho como 512M, 8G ou 1,5G
-budget-what-render = uma imagem de { $width } x { $height } com { $count ->
-        [one] um triângulo
-       *[other] { $triangles } triângulos
-    }
-budget-what-window = a janela a { $width } x { $height } pixels
-budget-what-cost = o estudo de { $count ->
-    [one] um objeto
-   *[other] { $count } objetos
-} em { $size } x { $size } pixels
-budget-what-eval = iluminar { $count ->
-    [one] um caso de { $largest }
-   *[other] { $count } casos, um de cada vez, o maior com { $largest }
-} de JSON
-file-kind-code = notebooks e programas
-cli-export = Escrever uma cena como o código do próprio aluno: o notebook da ficha, um programa PyOpenGL, um app openFrameworks, ou o GLSL
-cli-import = Ler um notebook (.ipynb) ou programa em Python (.py) no estilo da ficha para um arquivo de cena
-cli-arg-export-scene = Um arquivo de cena (TOML); por padrão: a cena da ficha
-cli-arg-export-to = O que escrever
-cli-arg-export-output = Onde: um arquivo (uma pasta para openframeworks: os arquivos vão para a sua src/); sem isto o texto vai para a saída padrão
-cli-arg-import-file = Um notebook (.ipynb) ou programa em Python (.py) no estilo da ficha
-cli-arg-import-output = O arquivo de cena a escrever (TOML)
-cli-value-notebook = o notebook Jupyter da ficha (.ipynb), com os valores desta cena
-cli-value-pyopengl = um programa PyOpenGL + GLUT no estilo da demo de Phong (.py)
-cli-value-openframeworks = ofApp.h, ofApp.cpp e main.cpp para openFrameworks 0.12 (uma pasta)
-cli-value-glsl = o GLSL que o `phonglab shader` imprime
 export-flat-unsupported = o programa PyOpenGL desenha com os shaders gerados para a cena, que são Gouraud ou Phong: escolha um deles para a vista sombreada, não Flat
 export-template-broken = o modelo de programa { $template } está mal preenchido ({ $problem }): é uma falha do phonglab; por favor, informe-a
 py-title = { $scene }: a vista sombreada como o phonglab a desenha (sombreamento { $shading }), escrita pelo phonglab.
@@ -886,56 +376,10 @@ of-eye-light-comment = uma luz presa ao olho (uma lanterna de cabeça): o oF col
 of-spin-comment = a rotação do objeto na vista do phonglab
 of-cylinder-comment = o gluCylinder vai ao longo de z; o cilindro do oF ao longo de y, centrado
 of-no-teapot-comment = o oF não tem bule e aqui não lê arquivos de malhas: uma esfera faz as vezes (carregue o seu modelo com ofMesh::load ou ofxAssimpModelLoader)
-export-code = O seu próprio código
-export-copy = Copiar
-export-copy-hover = Copiar para a área de transferência (o notebook como um só programa, os arquivos do openFrameworks um após o outro)
-export-save = Salvar…
-export-save-hover = Salvar como arquivo (openFrameworks: um zip da pasta src/ do projeto)
-export-copied = Copiado: { $what }
-export-nothing = nada para escrever
-export-import-hint = Para o caminho inverso, abra ou solte um notebook (.ipynb) ou programa (.py) da ficha: os seus valores passam a ser a cena.
-imported = Aberto { $path } como cena (as regras da ficha, salvo se ele disser outras).{ $notices }
 py-normal-matrix-comment = OpenGL: a inversa transposta da 3x3 da modelview; a ficha: a própria 3x3.
-
-## plots
-
-plot-drag = Arraste para girar (guinada { $yaw }°, inclinação { $pitch }°)
-lobe-no-light = Nenhuma luz com L definido neste vértice: nada a desenhar.
-lobe-axis = φ, graus a partir de N
-lobe-luminance = { $name } = { $value } (a luminância de { $colour })
-lobe-caption = Luz { $light }: θ = { $theta }°, n = { $n }, { $kd }, { $ks }; o V do vértice em φ = { $phi }°
-lobe-diffuse = difusa kd cos θ
-lobe-normalised = Blinn-Phong × (n+8)/8π
-lobe-vertex-v = o V do vértice
 
 ## compare
 
-compare-same = A e B são a mesma cena: mude qualquer coisa e B acompanha
-compare-one = B: { $setting } { $b }; A: { $a }
-compare-several = A e B diferem em { $names }
-compare-many = A e B diferem em { $count } parâmetros
-compare-view = vista sombreada de { $which }, { $ms } ms
-compare-cannot-render = a vista de { $which } não consegue desenhar: { $error }
-compare-pin-again = Fixar de novo a cena atual como A
-compare-pin = Fixar a cena atual como A
-compare-pinned = Fixada como A: agora mude qualquer coisa e B acompanha.
-compare-close = Fechar a comparação
-compare-difference = Diferença |A − B|
-compare-difference-hover = Uma terceira imagem: quanto diferem os pixels de A e de B, ampliado
-compare-difference-view = |A − B| × { $gain }
-compare-difference-legend = A diferença de cada canal, vezes { $gain }: um canal fica no máximo a partir de { $full }/255 (branco onde os três ficam, preto onde A e B coincidem). { $percent } % dos pixels do objeto diferem mais de { $visible }/255; a maior diferença é { $largest }/255.
-compare-step-1 = 1. Fixe a cena atual como A (o botão acima).
-compare-step-2 = 2. Mude qualquer coisa: o sombreamento, f32 ou f64, o material, uma luz.
-compare-step-3 = 3. A e B aparecem lado a lado, com os passos que diferem primeiro.
-compare-a-fails = A não pode ser calculada: { $error }
-compare-differing = { $differing } de { $all } passos diferem: vêm primeiro, destacados.
-compare-none-differ = Nada difere: A e B dão o mesmo valor em cada um dos { $all } passos.
-copy = Copiar
-copy-program-hover = Copiar o programa para a área de transferência
-shader-stages-phong = Sombreamento de Phong (por fragmento): só as etapas de que esta cena precisa
-shader-stages-vertex = Sombreamento por vértice: só as etapas de que esta cena precisa
-shader-last-change = A última alteração adicionou { $added } linhas (destacadas) e removeu { $removed }.
-shader-removed = Removido pela última alteração:
 shader-step = passo { $n }
 shader-note-directional-l = direcional: um só L para todos os vértices
 shader-note-one-h = um só H: luz direcional, observador no infinito
@@ -958,18 +402,6 @@ shader-what-fragment-vertex-stage = a etapa de vértices da iluminação por fra
 shader-what-fragment-lighting = a iluminação por fragmento
 shader-vertex-shader = shader de vértices
 shader-fragment-shader = shader de fragmentos
-session-other-window = Outra janela do phonglab está aberta nesta sessão ({ $dir }): esta janela mostra a última cena salva mas não salvará a sua sessão. Use Salvar para manter seu trabalho em um arquivo.
-session-folder-unusable = A pasta da sessão { $dir } não pode ser usada ({ $error }): esta janela não guardará a sua sessão.
-session-file-is-folder = O arquivo da sessão { $path } é uma pasta, por isso a última sessão não pode ser lida e esta janela não salvará a sua sessão. Remova ou renomeie essa pasta.
-session-unreadable-kept = A sessão salva não pôde ser lida ({ $why }); começa-se pela ficha. O arquivo fica salvo como { $kept }.
-session-unreadable-not-kept = A sessão salva { $path } não pôde ser lida ({ $why }) nem posta de lado ({ $error }); ela fica como está, sem nunca ser sobrescrita: começa-se pela ficha, e esta janela salva a sua sessão em { $instead }.
-session-unreadable = A sessão salva não pôde ser lida ({ $why }).
-session-not-a-file = não é um arquivo comum: um pipe, um dispositivo ou um socket
-session-too-large = tem { $size }, e uma sessão tem no máximo { $cap }
-session-scene-kept = A cena fica salva em { $path }.
-session-scene-not-kept = Não pôde ser salva ({ $error }).
-session-no-folder = Não há pasta onde salvá-la.
-session-scene-not-restored = A cena da última sessão não pôde ser reposta ({ $error }); começa-se pela ficha. { $kept }
 
 ## sheets
 
@@ -991,46 +423,15 @@ sheet-light-model = O modelo de iluminação
 yes = sim
 no = não
 sheet-compute-heading = Calcular
-sheet-scene-file = Arquivo de cena: `{ $file }`.
-key-title = Respostas: { $name }
-key-intro = Tal como `phonglab explain { $file }` as imprime (8 algarismos significativos).
-worked-calculation-of = Cálculo passo a passo: { $name }
-exercise-zero-title = Exercício 0: a ficha
-exercise-zero-name = a ficha
-exercise-zero-intro = A própria cena da ficha (bronze, a luz em (0, 0, 90), o vértice (-512, -384, 0) com normal (0, 0, 1)) com cada uma das suas cinco modelviews, `mview1` a `mview5`. Calcule todos os passos para cada uma.
-answers = respostas
-index-directional-only = só uma luz direcional
 exercise-effect-positional = uma luz pontual
 exercise-effect-attenuation = atenuação
 exercise-effect-spot = um foco
 exercise-effect-local-viewer = o observador local
 exercise-effect-two-sided = iluminação dos dois lados
 exercise-effect-several-lights = várias luzes
-index-title = Exercícios, semente { $seed }
-index-intro = Efeitos: { $effects }. Regras: { $rules }. Cada ficha tem o seu arquivo de cena (abra-o no phonglab) e as suas respostas.
-index-printable = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir: impresso frente e verso, cada exercício fica na sua própria folha) e [keys.pdf](keys.pdf) (as respostas, para o professor).
-index-printable-one-sided = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir: uma página por exercício, então impresso só de um lado cada exercício fica na sua própria folha) e [keys.pdf](keys.pdf) (as respostas, para o professor).
-
-## pdf
-
-sheet-class = Turma
-sheet-name = Nome
-sheet-date = Data
-pdf-page = página { $page } de { $pages }
-pdf-blank-page = Esta página foi deixada em branco intencionalmente.
-
-## cli
-
-exercises-written =
-    { $count ->
-    [one] 1 exercício em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
-    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
-    }
 
 ## cli-out
 
-render-summary = { $path }: { $size } px, { $triangles } triângulos, { $covered } % coberto, { $evaluations } cálculos de iluminação, { $ms } ms
-render-channel-summary = canal { $channel } em { $map }: de { $low } a { $high }
 channel-emission = Emissão
 channel-scene-ambient = Ambiente da cena
 channel-ambient = Ambiente
@@ -1066,32 +467,7 @@ probe-light = Luz { $index }
 probe-terms-sum = Soma dos termos (sem limitar)
 probe-unclamped = Cor que chegou ao framebuffer
 probe-stored = Armazenada, limitada e arredondada para 8 bits
-probe-uncovered = O pixel ({ $x }, { $y }) não mostra nenhuma superfície (é o fundo).
-err-probe-at = esperava o pixel como X,Y (dois números inteiros), recebi { $value }
-err-probe-outside = o pixel ({ $x }, { $y }) está fora da imagem de { $size }x{ $size }
-probe = Sonda
-probe-hover = Por que este pixel tem esta cor? Aponte para a imagem; clique para fixar um pixel
-probe-window = Sonda de pixel
-probe-follows = Segue o ponteiro sobre a imagem; clique para fixar um pixel.
-probe-pinned = Fixada no pixel clicado.
-probe-unpin = Voltar a seguir o ponteiro
-probe-hover-the-picture = Aponte para a imagem sombreada.
-probe-open-vertex = Abrir o cálculo do vértice { $vertex }
-channel-show = Mostrar
-channel-picture = A imagem
-channel-hover = Um termo da equação de iluminação em cada pixel, em falsa cor (viridis), com sua escala
-channel-caption = termo { $channel }
-channel-legend-normal = A normal como cor: x em vermelho, y em verde, z em azul, de -1 (escuro) a 1 (claro)
-channel-legend-luminance = { $channel }: a luminância (Rec. 709) de um termo de cor, antes de limitar
-channel-legend-range = { $what }, de { $low } a { $high }
-channel-legend-attenuation = 1/at: o fator pelo qual os termos desta luz são multiplicados (at = k0 + k1 d + k2 d², o da lista, divide)
-channel-legend-spot = spot: o fator pelo qual os termos desta luz são multiplicados (0 fora do cone, 1 sem spot)
-channel-legend-n-dot-l = N·L = cos θ: um cosseno, abaixo de 0 onde a superfície está voltada para o lado oposto à luz
-channel-legend-n-dot-h = N·H = cos β: o cosseno especular antes da potência (R·V com a regra de Phong)
-channel-legend-light-count = Quantas luzes chegam ao pixel: uma contagem
 probe-attenuation-factor = Fator de atenuação, pelo qual os termos são multiplicados
-case-rules-note = nota: { $path } usa as regras { $rules }; um caso segue sempre as do OpenGL
-cost-wrote = gravado { $files } em { $out }
 
 ## errors
 
@@ -1118,99 +494,6 @@ toml-matrix-needs-placement = { $field }: placement_matrix precisa de placement 
 toml-control-character = { $field } contém o caractere de controle { $char } (caractere { $position }): um nome ou um caminho é uma linha de texto imprimível
 toml-unknown-field-one = campo desconhecido { $field }; o campo aceito é { $known }
 
-## io-errors
-
-io-not-found = não existe
-io-permission-denied = sem permissão
-io-storage-full = o disco está cheio
-io-is-a-directory = é uma pasta
-io-not-a-directory = uma parte do caminho não é uma pasta
-io-read-only = o sistema de arquivos é somente leitura
-io-already-exists = já existe
-io-invalid-name = não é um nome de arquivo
-write-error = não foi possível escrever { $path }: { $what }: { $reason }; { $kept }
-write-step-write = escrever
-write-step-close = fechar
-write-step-sync = sincronizar com o disco
-write-step-create = criar
-write-step-rename = mudar o nome
-write-step-name = nome
-write-step-create-folder = criar a pasta
-write-step-create-file-in = criar um arquivo em
-write-step-create-staging = criar uma pasta temporária em
-write-step-list = listar
-write-step-lock-folder = bloquear a pasta
-write-step-recover = terminar o conjunto deixado por uma execução interrompida em
-write-step-remove-journal = remover o diário de
-write-step-killed = parar (morto) ao escrever
-write-kept-file = o arquivo que estava lá (se havia) não mudou
-write-kept-nothing = nada foi escrito
-write-kept-folder = a pasta não mudou
-write-kept-recoverable = o conjunto antigo ou o novo está completo, e a próxima execução nesta pasta termina o que foi começado
-write-not-a-regular-file = não é um arquivo comum (um link para nada, uma pasta, um dispositivo ou um pipe): o phonglab só escreve em um arquivo comum ou em um novo
-set-folder-is-a-link = um link para outra pasta: o phonglab só grava um conjunto de arquivos em uma pasta de verdade, nunca por meio de um link
-set-left-alone = { $name } em { $dir } ficou como estava: { $why }
-set-why-loose-journal = um diário que o phonglab não escreveu ali (colocado por alguém, ou deixado por uma versão antiga do phonglab); nada do que ele nomeia foi tocado
-set-why-not-a-folder = tem o nome das pastas temporárias do phonglab, mas não é uma pasta criada pelo phonglab; nada foi seguido nem tocado
-set-why-no-journal = uma pasta com o nome das pastas temporárias do phonglab, sem o diário do phonglab; nada do que ela contém foi tocado
-set-untrusted-journal = o diário dela não foi escrito ali pelo phonglab ({ $why }); nada foi tocado
-set-why-not-a-journal = não é um diário do phonglab
-set-why-other-folder = não nomeia a pasta onde está
-set-why-outside = nomeia arquivos fora da sua pasta
-set-why-unfinished = os arquivos de uma execução interrompida não puderam ser colocados no lugar sem substituir arquivos alterados ou criados depois ({ $names }); os novos ficam guardados nessa pasta
-read-cannot = não foi possível ler { $path }: { $reason }
-read-not-a-file = { $path } não é um arquivo comum
-read-too-large = { $path } tem { $size }; o phonglab lê { $what } de no máximo { $cap }
-read-not-utf8 = { $path } não é texto UTF-8 (byte { $byte })
-file-kind-scenes = arquivos de cena
-file-kind-cases = arquivos de casos
-png-cannot-encode = não foi possível codificar o PNG
-png-too-large = imagem grande demais
-png-colour-type = { $path }: tipo de cor inesperado { $kind }
-pdf-cannot-write = não foi possível escrever o PDF: { $error }
-err-scale = --scale { $scale }: de 0,5 a 4
-err-spin = --spin precisa ser um número finito de graus
-err-threads = --threads { $asked }: esta máquina roda no máximo { $most } threads ao mesmo tempo; peça { $most } ou menos (0: uma por núcleo)
-err-no-such-light = --light { $light }: { $count ->
-    [0] a cena não tem nenhuma luz
-    [one] a cena tem uma luz, a número 0
-   *[other] a cena tem { $count } luzes, numeradas de 0 a { $last }
-}
-err-study-stopped = o estudo parou
-err-rules = --rules { $value }: experimente worksheet ou opengl
-err-effects = --effects: { $value } não é nenhum de { $names }
-err-level = --level vai de 1 a 4
-err-target = --target { $value }: experimente glsl ou wgsl
-err-shading = --shading { $value }: experimente gouraud ou phong
-err-not-case-file = não é um arquivo de casos
-err-cases-failed = { $failed } de { $all } casos falharam (o "error" de cada um diz por quê)
-err-unknown-preset = cena pronta desconhecida { $value }: experimente { $names }
-err-bench-frame-obj = --bench-frame desenha a esfera, o bule ou o cilindro de referência; use --obj sem ele
-err-scene-to-render = a cena a desenhar
-err-bench-object = --object { $value }: os objetos de referência são sphere (esfera) e teapot (bule)
-err-bench-shading = --shading { $value }: os sombreamentos são gouraud, phong e flat
-err-bench-slices = --slices { $value }: a esfera aceita de 3 a 2048 fatias (a de referência tem 50)
-err-bench-scan = --scan { $value }: a malha tipo escaneamento aceita níveis de 0 a 9 (o 8 dá 1 310 720 triângulos)
-err-study-timeout = o estudo não terminou em 5 minutos
-err-output-is-input = { $output } é { $what } { $input }, que este comando lê (o mesmo arquivo): escrevê-lo destruiria o que é lido; escolha outra saída
-err-output-is-other-output = { $output } é a outra saída { $other } (o mesmo arquivo): uma seria escrita por cima da outra; escolha dois arquivos diferentes
-input-kind-input = a entrada
-input-kind-scene = a cena
-input-kind-mesh = a malha
-input-kind-code = o notebook ou programa
-input-kind-cases = o arquivo de casos
-err-needs-window = este comando desenha a janela: execute-o com o programa phonglab
-screenshot-summary = { $path }: { $width }x{ $height } px; imagens de { $pictures } pontos, o círculo unitário do gráfico com { $circle } pontos de diâmetro, { $empty } % vazio
-screenshot-none = nenhum
-bench-render-header = phonglab bench render: { $size }x{ $size } px, { $frames } imagens, { $threads } threads; ms médios das etapas: vértices, preparação, rasterização, resolução
-bench-lighting-header = phonglab bench lighting: { $vertices } vértices, a melhor de { $repeats }, uma thread, f32
-bench-memory-floor = limite da memória: os mesmos arrays lidos e escritos sem iluminação, { $ns } ns por vértice ({ $gbs } GB/s dos { $bytes } bytes que um vértice move)
-bench-stages-header = onde se gasta o tempo especializado (ns por vértice; ler o relógio soma ~0,2 por etapa)
-bench-ui-present-header = phonglab bench ui --present: { $width }x{ $height } pontos, modo de apresentação com a gaveta dos controles aberta, { $frames } imagens por caso; em cada imagem o z da luz move-se como o move um slider arrastado; ms de CPU (o layout inclui o cálculo da cena e o desenho da vista sombreada)
-bench-ui-header = phonglab bench ui: { $width }x{ $height } pontos, todos os painéis abertos, { $frames } imagens por caso, ms de CPU (o layout inclui o cálculo da cena e o desenho da vista sombreada quando mudou)
-err-lang = { $value }: o phonglab fala en, pt-PT e pt-BR
-err-decimal = { $value }: point (ponto) ou comma (vírgula)
-
 ## limits
 
 limit-light-at-vertex = a luz está no vértice: L não tem direção, por isso não há difusa nem especular; a sua componente ambiente fica, atenuada em d = 0
@@ -1229,201 +512,10 @@ limit-infinities-cancelled = uma componente infinita de um sinal encontrou outra
 
 ## cost
 
-cost-axis-ms = ms por imagem (log)
-cost-axis-error = erro médio, 1/255 (log)
-cost-rounding = arredondamento a 8 bits
-cost-variant = variante
-cost-triangles = triângulos
-cost-ms = ms/imagem
-cost-mean = média /255
-cost-max = máx. /255
-cost-cheapest = O mais barato com menos de 1 % dos pixels a mais de 1/255: { $variant } ({ $triangles } triângulos), { $ms } ms por imagem.
-cost-none-within = Nenhum sombreamento estudado fica a menos de 1/255 em 99 % dos pixels: a silhueta ou o brilho pedem uma malha mais fina.
-cost-precision = f32 contra f64 em { $vertices } vértices: no máximo { $apart } de diferença ({ $shown }/255 depois de limitar); o motor geral leva { $f32 } ns (f32) e { $f64 } ns (f64) por vértice, o especializado { $specialised } ns.
-cost-intro = Cada sombreamento em cinco tesselações do objeto atual, cronometrado e comparado com uma referência: Phong por pixel em f64 numa malha muito fina. Também Phong em f32 na própria malha da referência (o f64 muda algo visível?) e as aproximações mais usadas.
-cost-run = Rodar o estudo
-cancel = Cancelar
-cost-about = { $about } ({ $size }x{ $size } px, tempos medidos com a aplicação rodando)
-cost-table = Tabela
-heat-map-computing = Mapa de calor do erro: calculando a referência...
-heat-map-caption = Erro em relação à referência f64: média { $mean }/255, máximo { $max }/255, { $share } % dos pixels > 1/255 (branco: { $white }/255)
-cost-failed = O estudo falhou: { $error }
-heat-map-failed = O mapa de calor falhou: { $error }
-work-starting = começando
-work-failed = o cálculo falhou inesperadamente
-work-no-pool = sem pool de threads: { $error }
-work-stopped = o cálculo parou
-cost-table-title = { $object }: { $size }x{ $size } px, referência com { $triangles } triângulos (f64, por pixel); erros em 1/255 em relação a ela
-cost-over-column = >1/255 %
-cost-chart-title = { $object }: tempo por imagem contra erro médio ({ $size }x{ $size } px, referência: Phong por pixel em f64, { $triangles } triângulos)
 cost-approx-llvmpipe-pow = pow do llvmpipe
 cost-approx-schlick-pow = pow de Schlick
 cost-approx-fast-rsqrt = rsqrt rápida
 cost-approx-no-renormalisation = sem renormalizar
-
-## cli
-
-cli-about = Um explorador da iluminação por vértice da função fixa do OpenGL e dos sombreamentos de Gouraud, Phong e Flat
-cli-lang = O idioma do que o phonglab diz: en, pt-PT ou pt-BR (por padrão, o do sistema: LC_ALL, LC_MESSAGES ou LANG). JSON, CSV e arquivos de cena mantêm as chaves em inglês
-cli-decimal = Como se escrevem os números para pessoas: point (0.5) ou comma (0,5); por padrão, o do idioma (vírgula em português). Os números digitados são lidos com qualquer um
-cli-memory-budget = A memória que um comando pode ocupar com o que lhe é pedido (o tamanho de uma imagem, uma malha): 512M, 8G, ...; padrão: metade da que o sistema tem disponível. Acima dela, um comando diz quanto precisa e não começa
-cli-eval = Calcular casos glref (JSON) e imprimir as cores iluminadas em JSON
-cli-explain = Imprimir o cálculo da cor de um vértice, passo a passo, pela ordem da ficha
-cli-render = Desenhar a vista sombreada (esfera, bule ou cilindro) num PNG
-cli-exercise = Escrever fichas de exercícios ao estilo da ficha, com arquivos de cena e chaves de respostas
-cli-shader = Imprimir o shader (GLSL 3.30 ou WGSL) que desenha a vista sombreada de uma cena: só as etapas de que precisa
-cli-case = Escrever arquivos de cena como casos glref (JSON), para compará-los com um OpenGL real
-cli-cost = O custo da exatidão: cada sombreamento e tesselação, f32 contra f64 e as aproximações habituais, cronometrados e comparados com uma referência f64 por pixel; escreve cost.csv e cost.png
-cli-bench = Medir: o desenho, a iluminação
-cli-screenshot = Desenhar a janela inteira sem tela nem GPU em um PNG: para slides, fichas e testes
-
-## cli-args
-
-cli-usage = Uso:
-cli-heading-commands = Comandos
-cli-heading-arguments = Argumentos
-cli-heading-options = Opções
-cli-flag-help = Mostrar a ajuda
-cli-flag-version = Mostrar a versão
-cli-help-command = Mostrar esta mensagem ou a ajuda do subcomando indicado
-cli-default = [padrão: { $value }]
-cli-possible-values = [valores: { $values }]
-cli-bench-render = ms por imagem do desenho na CPU, na cena de referência
-cli-bench-lighting = ns por vértice da iluminação geral e da especializada
-cli-bench-ui = Tempo de CPU por quadro da interface inteira, sem tela, com todos os painéis abertos
-cli-arg-app-file = Um arquivo de cena (TOML) com que abrir o aplicativo; se não puder ser lido, abre a ficha e diz por quê
-cli-arg-app-renderer = Quem desenha a vista sombreada do aplicativo: a GPU quando o adaptador é uma GPU de verdade, senão o desenho na CPU
-cli-arg-eval-cases = Um arquivo JSON de casos (uma lista, ou {"{"}"cases": [...]{"}"}), como em docs/lighting.md
-cli-arg-eval-precision = A precisão do motor de cálculo
-cli-arg-eval-clamp = Limitar as cores a [0, 1], como o OpenGL faz por padrão (senão, sem limite)
-cli-arg-eval-pow = A função potência dos termos especular e do foco
-cli-arg-explain-scene = Um arquivo de cena (TOML), como o aplicativo o salva
-cli-arg-explain-worksheet = A cena da ficha com a modelview N (1-5). Sem cena indicada, a 5
-cli-arg-explain-preset = Em vez disso, uma cena pronta: "phong-demo"
-cli-arg-explain-precision = A precisão do motor de cálculo
-cli-arg-explain-back = Explicar a face de trás (iluminação de duas faces)
-cli-arg-explain-markdown = Imprimir uma tabela Markdown em vez de texto
-cli-arg-explain-digits = Algarismos significativos
-cli-arg-render-object = O objeto (por padrão, o da cena)
-cli-arg-render-obj = Sombrear esta malha Wavefront OBJ em vez do objeto da cena (ajustada ao raio 0,5)
-cli-arg-render-shading = O sombreamento (por padrão, o da cena)
-cli-arg-render-size = Largura e altura da imagem em pixels
-cli-arg-render-output = O PNG a escrever
-cli-arg-render-scene = Um arquivo de cena (TOML); por padrão, a cena da ficha
-cli-arg-render-preset = Em vez disso, uma cena pronta: "worksheet" ou "phong-demo"
-cli-arg-render-bench_frame = Em vez disso, a cena de referência de docs/lighting.md nesta imagem (esfera r 1 50x50, bule 0,8, gluPerspective(40, 1, 0.5, 20)): a imagem que o arnês do Mesa desenha
-cli-arg-render-pow = A função potência dos termos especular e do foco
-cli-arg-render-cull = Descartar as faces de trás
-cli-arg-render-frame = A imagem N da rotação da cena: N passos de 0,5 graus (a primeira imagem que a demo de Phong desenha é a 1). Por padrão, a rotação da própria cena
-cli-arg-render-correct = Corrigir os desvios da demo de Phong à iluminação do OpenGL (separados por vírgulas): light (fixa no mundo), normals (as verdadeiras da superfície), highlight (na cor da luz) ou all
-cli-arg-probe-object = O objeto (por padrão, o da cena)
-cli-arg-probe-obj = Sombrear esta malha Wavefront OBJ em vez do objeto da cena (ajustada ao raio 0,5)
-cli-arg-probe-shading = O sombreamento (por padrão, o da cena)
-cli-arg-probe-size = Largura e altura da imagem em pixels
-cli-arg-probe-scene = Um arquivo de cena (TOML); por padrão, a cena da ficha
-cli-arg-probe-preset = Em vez disso, uma cena pronta: "worksheet" ou "phong-demo"
-cli-arg-probe-bench_frame = Em vez disso, a cena de referência de docs/lighting.md nesta imagem (esfera r 1 50x50, bule 0,8, gluPerspective(40, 1, 0.5, 20)): a imagem que o arnês do Mesa desenha
-cli-arg-probe-pow = A função potência dos termos especular e do foco
-cli-arg-probe-cull = Descartar as faces de trás
-cli-arg-probe-frame = A imagem N da rotação da cena: N passos de 0,5 graus (a primeira imagem que a demo de Phong desenha é a 1). Por padrão, a rotação da própria cena
-cli-arg-probe-correct = Corrigir os desvios da demo de Phong à iluminação do OpenGL (separados por vírgulas): light (fixa no mundo), normals (as verdadeiras da superfície), highlight (na cor da luz) ou all
-cli-probe = Por que um pixel da vista sombreada tem a sua cor: o triângulo, os pesos, os vértices ou o fragmento, cada termo, o limite e o arredondamento a 8 bits
-cli-arg-probe-at = O pixel: x a partir da esquerda, y a partir do topo, desde 0
-cli-arg-probe-json = Imprimir JSON (para scripts e testes) em vez do relatório
-cli-arg-render-channel = Desenhar um termo da equação de iluminação em falsa cor em vez da imagem
-cli-arg-render-light = A luz do canal, pela sua posição entre as luzes ligadas (0 a primeira); sem ela, os termos de cor somam todas as luzes
-cli-arg-render-colour_map = O mapa da falsa cor
-cli-arg-render-raw = Escrever também os valores do canal, sem limitar, num mapa de floats portátil (PFM)
-cli-share = Uma cena como link para a versão do navegador (a cena vai no próprio link), e como código QR para uma turma
-cli-arg-share-scene = O arquivo de cena (TOML); por padrão: a cena da ficha
-cli-arg-share-base = A página que o link abre
-cli-arg-share-open_in = Abri-la neste idioma (en, pt-PT, pt-BR)
-cli-arg-share-present = Abri-la apresentando para uma turma
-cli-arg-share-channel = Abri-la mostrando este termo no lugar da imagem
-cli-arg-share-qr = Escrever também o link como código QR: ARQUIVO.png ou ARQUIVO.svg
-cli-value-emission = a emissão do material, e_cm
-cli-value-scene-ambient = o ambiente da cena, a_cm a_cs
-cli-value-ambient = o ambiente de cada luz, após atenuação e foco
-cli-value-diffuse = a difusa de cada luz, após atenuação e foco
-cli-value-specular = a especular de cada luz, após atenuação e foco
-cli-value-attenuation = o fator de atenuação de uma luz, 1/at (o at da lista, k0 + k1 d + k2 d², divide)
-cli-value-spot = o fator do foco de uma luz
-cli-value-n-dot-l = o n · L de uma luz
-cli-value-n-dot-h = o n · H de uma luz
-cli-value-normal = a normal com que o pixel é iluminado, como cor
-cli-value-light-count = quantas luzes chegam ao pixel
-cli-value-viridis = viridis (azul-escuro, verde, amarelo)
-cli-value-cividis = cividis (azul a amarelo), feito para o daltonismo vermelho-verde
-cli-arg-exercise-seed = A semente aleatória: a mesma semente dá as mesmas fichas
-cli-arg-exercise-count = Quantos exercícios
-cli-arg-exercise-level = Dificuldade: 1 só direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
-cli-arg-exercise-effects = Exatamente estes efeitos em vez de um nível (separados por vírgulas): positional, attenuation, spot, local-viewer, two-sided, several-lights
-cli-arg-exercise-rules = As regras que as respostas seguem: worksheet (as da ficha) ou opengl
-cli-arg-exercise-worksheet = Escrever também o exercício 0: a própria ficha, as suas cinco modelviews numa folha
-cli-arg-exercise-out = A pasta onde escrever (criada se não existir)
-cli-arg-shader-scene = Um arquivo de cena (por padrão, o da ficha, mview5)
-cli-arg-shader-target = glsl (3.30 core: um shader de vértices e um de fragmentos) ou wgsl (um módulo)
-cli-arg-shader-shading = gouraud (iluminado por vértice) ou phong (iluminado por fragmento)
-cli-arg-case-scenes = Arquivos de cena (TOML); cada um dá um caso, com o nome do arquivo sem extensão como id
-cli-arg-cost-object = O objeto a estudar (por padrão, os três)
-cli-arg-cost-out = Onde escrever cost.csv, cost.png e os mapas de calor
-cli-arg-cost-size = Largura e altura da imagem em pixels
-cli-arg-cost-scene = Um arquivo de cena (TOML) para a iluminação e a vista; por padrão, a cena da ficha
-cli-arg-cost-spin = Girar o objeto estes graus em torno de y (a 30, o cilindro mostra o lado)
-cli-arg-cost-threads = Threads para desenhar (por padrão, todos os núcleos)
-cli-arg-cost-quick = Tempos rápidos (3 imagens ou 0,1 s por variante) em vez de cuidadosos
-cli-arg-bench-render-frames = Imagens cronometradas por objeto e sombreamento (depois de 5 de aquecimento)
-cli-arg-bench-render-size = Tamanho da imagem em pixels (quadrada)
-cli-arg-bench-render-threads = Threads de trabalho (por padrão, uma por núcleo)
-cli-arg-bench-render-object = Só este objeto: sphere (esfera) ou teapot (bule) (por padrão, os dois)
-cli-arg-bench-render-shading = Só este sombreamento: gouraud, phong ou flat (por padrão, os três)
-cli-arg-bench-render-slices = As fatias e camadas da esfera, de 3 a 2048 (a de referência tem 50): o custo em função do número de triângulos
-cli-arg-bench-render-mesh = Medir o tempo desta malha OBJ (ajustada à vista) em vez da esfera e do bule
-cli-arg-bench-render-scan = Medir o tempo da malha tipo escaneamento de 20 x 4^NÍVEL triângulos (um icosaedro subdividido, irregular e rugoso; o 8 dá 1 310 720) em vez da esfera e do bule
-cli-arg-bench-render-write_mesh = Gravar a malha que seria cronometrada (--mesh, --scan ou a esfera de --slices, como fica na vista de referência) num arquivo OBJ, sem cronometrar nada: os mesmos arrays de vértices para o harness do Mesa (benches/compare_llvmpipe.py)
-cli-arg-bench-render-moving = O que muda de quadro para quadro: object (o objeto gira 3 graus por quadro, cada quadro desenhado por inteiro) ou light (a luz circula em volta do objeto parado, como quando um aluno a arrasta: a visibilidade é mantida e só a iluminação e o sombreamento rodam de novo)
-cli-arg-bench-render-coarse = Cronometrar a cópia grosseira de cerca de tantos triângulos em vez da própria malha: o que o aplicativo desenha enquanto a câmera gira sobre uma malha muito grande (diz quanto tempo levou para fazer a cópia)
-cli-arg-bench-lighting-vertices = Vértices por cena
-cli-arg-bench-lighting-repeats = Repetições cronometradas (diz-se a melhor)
-cli-arg-bench-lighting-stages = Dizer também onde se gasta o tempo da iluminação especializada: ns por vértice a carregar, em cada etapa do programa da cena e a escrever
-cli-arg-bench-ui-frames = Imagens cronometradas por caso
-cli-arg-bench-ui-width = Largura da janela em pontos
-cli-arg-bench-ui-height = Altura da janela em pontos
-cli-arg-bench-ui-present = Modo de apresentação (letra grande, a gaveta dos controles aberta) a 1920x1080, salvo outro tamanho: a luz é arrastada com sombreamento de Gouraud e depois de Phong
-cli-arg-screenshot-size = O tamanho da janela em pontos, LARGURAxALTURA
-cli-arg-screenshot-scale = Pixels por ponto (2 para uma tela de alta densidade)
-cli-arg-screenshot-present = Modo de apresentação (F5)
-cli-arg-screenshot-light = O tema claro (por padrão, o escuro)
-cli-arg-screenshot-scene = Um arquivo de cena (por padrão, a cena da ficha)
-cli-arg-screenshot-open = Abrir isto primeiro
-cli-arg-screenshot-output = O PNG a escrever
-cli-value-auto = a GPU quando o adaptador é uma GPU de verdade, senão a CPU
-cli-value-cpu = o desenho na CPU (a referência)
-cli-value-gpu = a GPU, mesmo um adaptador por software
-cli-value-f32 = precisão simples, como o OpenGL calcula
-cli-value-f64 = precisão dupla
-cli-value-exact = a pow exata da biblioteca
-cli-value-llvmpipe = a aproximação exp2(e log2 x) do llvmpipe do Mesa, igual bit a bit ao Mesa 22.3
-cli-value-schlick = a aproximação racional de Schlick
-cli-value-sphere = gluSphere (esfera)
-cli-value-teapot = o bule de Utah
-cli-value-cylinder = gluCylinder (cilindro)
-cli-value-gouraud = iluminação por vértice, cores interpoladas
-cli-value-phong = iluminação por pixel
-cli-value-flat = um cálculo por face
-cli-value-light = a luz fixa no mundo
-cli-value-normals = as normais verdadeiras da superfície
-cli-value-highlight = o brilho especular na cor da luz
-cli-value-all = as três
-cli-value-compare = Comparar, com a cena fixada como A e, como B, a mesma cena com sombreamento de Phong
-cli-value-lobe = o lóbulo de reflexão no lugar do gráfico
-cli-value-quiz = o teste sobre a cena
-cli-value-shader = a janela do Shader
-cli-value-cost = a janela do Custo da exatidão
-cli-value-demo-fixes = as três correções da demo de Phong, lado a lado com a imagem da própria demo
-app-cannot-open-window =
-    não é possível abrir a janela: { $error }
-    (sem tela? os subcomandos funcionam sem tela: phonglab --help)
 
 ## plan
 
@@ -1498,25 +590,10 @@ material-name-white-rubber = borracha branca
 material-name-yellow-rubber = borracha amarela
 
 ## phonglab diagnose: a imagem de um aluno conferida
-cli-diagnose = A imagem que um aluno fez de uma cena, conferida: certa, qual erro a fez, ou nenhum que o phonglab conheça; uma imagem das diferenças e a sonda onde ela mais difere
-cli-arg-diagnose-scene = A cena para a qual a imagem foi feita (TOML)
-cli-arg-diagnose-image = A imagem do aluno (PNG), feita com a câmera e o tamanho da exportação
-cli-arg-diagnose-size = A largura e a altura da imagem em pixels: a janela da exportação tem 512
-cli-arg-diagnose-diff = Gravar a imagem das diferenças (a imagem contra a certa) neste PNG
-cli-arg-diagnose-json = Imprimir JSON (para scripts e testes) em vez do relatório
-file-kind-pictures = imagens
-diagnose-bad-png = { $path } não pode ser lido como uma imagem PNG: { $reason }
-diagnose-wrong-size = { $path } tem { $got } pixels; a imagem desta cena tem { $expected } (a janela da exportação; outro tamanho com --size)
+
 diagnose-normalize-off = GL_NORMALIZE deixado desligado com uma modelview que escala: as normais não têm comprimento 1
 diagnose-viewer-swapped = O observador local e o observador no infinito trocados (GL_LIGHT_MODEL_LOCAL_VIEWER ao contrário)
 diagnose-flipped-normals = As normais apontam para dentro (invertidas)
 diagnose-two-sided-off = A iluminação dos dois lados desligada: as faces de trás são iluminadas com as normais da frente
 diagnose-attenuation-left-out = A atenuação esquecida
 diagnose-spot-left-out = O cone do spot esquecido (corte em 180)
-diagnose-verdict-right = Certa: a imagem certa explica { $score } dos pixels do objeto.
-diagnose-verdict-wrong = Errada. O erro mais próximo: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos pixels do objeto, a imagem certa { $right }.
-diagnose-also = Também explica a imagem: { $cause } ({ $id }), { $score }.
-diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos pixels do objeto; o erro mais próximo, { $cause } ({ $id }), { $score }.
-diagnose-invisible = Não testados (esta cena não consegue mostrá-los): { $ids }
-diagnose-diff-written = Imagem das diferenças gravada: { $path }
-diagnose-worst = O pixel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:

@@ -5,8 +5,9 @@
 //! than as the fields that shifted when the list closed up ("light 0 ambient and 9 more").
 
 use phonglab_core::explain::fmt_sig;
-use phonglab_core::t;
 use phonglab_core::{Document, Light};
+
+use crate::t;
 
 /// The fields that differ between two documents, as their scene files name them
 /// (`material.shininess`, `lights.0.position`): what joins a drag's steps into one.
@@ -115,7 +116,7 @@ fn value_for_people(v: Option<&str>) -> String {
         None => t!("history-none"),
         Some("on") => t!("history-on"),
         Some("off") => t!("history-off"),
-        Some(text) => phonglab_core::locale::decimal(text),
+        Some(text) => crate::locale::decimal(text),
     }
 }
 
@@ -158,7 +159,7 @@ fn value_text(v: &toml::Value) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use phonglab_core::locale::{Lang, Locale, set_thread};
+    use crate::locale::{Lang, Locale, set_thread};
 
     fn with_shininess(s: f64) -> Document {
         let mut d = Document::default();

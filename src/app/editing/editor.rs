@@ -48,7 +48,7 @@ impl Editor<'_> {
                 Ok(())
             }
             Err(e) => {
-                *self.message = Some(Message::Refused(phonglab_core::t!("refused-kept", error = e.to_string())));
+                *self.message = Some(Message::Refused(crate::t!("refused-kept", error = e.to_string())));
                 Err(e.to_string())
             }
         }

@@ -24,7 +24,7 @@ impl<T: Send + 'static> Worker<T> {
         threads: usize,
         job: impl FnOnce(&mut dyn FnMut(&Progress) -> bool) -> Result<Option<T>, String> + Send + 'static,
     ) -> Self {
-        let progress = Arc::new(Mutex::new(Progress { done: 0, total: 1, what: phonglab_core::t!("work-starting") }));
+        let progress = Arc::new(Mutex::new(Progress { done: 0, total: 1, what: crate::t!("work-starting") }));
         let cancel = Arc::new(AtomicBool::new(false));
         let (tx, rx) = std::sync::mpsc::channel();
         let (p, c) = (progress.clone(), cancel.clone());
@@ -38,10 +38,10 @@ impl<T: Send + 'static> Worker<T> {
             let run = || {
                 // A panic in the job must not take the app down: it becomes a message.
                 std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(&mut report)))
-                    .unwrap_or_else(|_| Err(phonglab_core::t!("work-failed")))
+                    .unwrap_or_else(|_| Err(crate::t!("work-failed")))
             };
             let r = crate::platform::threads::with_pool(threads, run)
-                .unwrap_or_else(|e| Err(phonglab_core::t!("work-no-pool", error = e.to_string())));
+                .unwrap_or_else(|e| Err(crate::t!("work-no-pool", error = e.to_string())));
             let _ = tx.send(r);
         });
         Self { progress, cancel, result: rx }
@@ -57,7 +57,7 @@ impl<T: Send + 'static> Worker<T> {
         match self.result.try_recv() {
             Ok(r) => Some(r),
             Err(TryRecvError::Empty) => None,
-            Err(TryRecvError::Disconnected) => Some(Err(phonglab_core::t!("work-stopped"))),
+            Err(TryRecvError::Disconnected) => Some(Err(crate::t!("work-stopped"))),
         }
     }
 }

@@ -5,9 +5,9 @@ use egui::{RichText, Ui};
 use phonglab_core::effects::Effect;
 use phonglab_core::explain::{Explanation, Side, fmt_value};
 use phonglab_core::plan::Stage;
-use phonglab_core::t;
 
 use crate::app::widgets::palette;
+use crate::t;
 
 /// Significant digits shown.
 const DIGITS: usize = 8;
@@ -122,7 +122,7 @@ fn step_ui(ui: &mut Ui, k: usize, st: &phonglab_core::explain::Step, skip: Optio
     // The formula on a line of its own, so that when it wraps it wraps under itself.
     ui.label(RichText::new(&st.formula).monospace().weak());
     let value = match &st.value {
-        Some(v) => format!("{} = {}", st.name, phonglab_core::locale::decimal(&fmt_value(v, DIGITS))),
+        Some(v) => format!("{} = {}", st.name, crate::locale::decimal(&fmt_value(v, DIGITS))),
         None => format!("{} = {}", st.name, t!("not-applicable")),
     };
     let mut text = RichText::new(value).monospace();

@@ -6,9 +6,9 @@
 use std::path::{Path, PathBuf};
 
 use egui::Ui;
-use phonglab_core::t;
 
 use crate::io::listing::{Entry, list};
+use crate::t;
 
 /// What the file is for.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -6,13 +6,13 @@
 use egui::{Color32, RichText, Ui};
 use phonglab_core::explain::{Explanation, fmt_value};
 use phonglab_core::{Document, PowFn};
-use phonglab_core::{locale, t};
 
 use phonglab_core::difference::{Difference, GAIN, VISIBLE, difference};
 
 use crate::app::editing::evaluated::{Evaluated, Precision, evaluate};
 use crate::app::panels::shaded::cache::{ViewCache, Viewed, mesh_for};
 use crate::app::panels::shaded::channel_view::{self, ChannelView};
+use crate::{locale, t};
 
 /// The pinned scene A: the document and the numerics it was evaluated with.
 #[derive(Clone, Debug, PartialEq)]

@@ -2,10 +2,10 @@
 //! edits a copy of the document; the caller applies it (or refuses it).
 
 use crate::app::widgets::fields::combo_ui;
+use crate::t;
 use egui::{CollapsingHeader, Ui};
 use glam::{DMat4, DVec3, DVec4};
 use phonglab_core::scene::{ColorMaterial, ColorMaterialMode, Face, Side};
-use phonglab_core::t;
 use phonglab_core::transform::{mat4_from_rows, mat4_rows};
 use phonglab_core::vocabulary::Quantity as Q;
 use phonglab_core::{
@@ -207,7 +207,7 @@ fn material_ui(ui: &mut Ui, m: &mut Material, back: bool, tracks: impl Fn(ColorM
     // message each.
     let label = |field: &str| {
         let side = if back { "back" } else { "material" };
-        phonglab_core::locale::tr(&format!("{side}-{field}"))
+        crate::locale::tr(&format!("{side}-{field}"))
     };
     let quantity = |q: Q, field: &str| if back { label(field) } else { q.label() };
     let current = materials::name_of(m);
@@ -337,7 +337,7 @@ fn camera_ui(ui: &mut Ui, doc: &mut Document) {
             number_ui(ui, &t!("window-width"), width, 1.0);
             number_ui(ui, &t!("window-height"), height, 1.0);
             let d = phonglab_core::transform::of_camera_distance(*height);
-            ui.small(t!("of-eye-distance", distance = phonglab_core::locale::num(d, 7)));
+            ui.small(t!("of-eye-distance", distance = crate::locale::num(d, 7)));
         }
         CameraSpec::Matrix(m) => matrix_ui(ui, m),
     }

@@ -10,11 +10,11 @@ use std::sync::Arc;
 
 use phonglab_core::ShadedSetup;
 use phonglab_core::cost::{self, Setup, Study, Timing};
-use phonglab_core::t;
 
 use crate::app::editing::worker::Worker;
 pub use crate::app::panels::shaded::heat_map::APP_SIZE;
 use crate::paint::cost_chart::{BACKGROUND, cost_chart_ui, cost_table_ui, takeaways};
+use crate::t;
 
 /// The panel's state.
 #[derive(Default)]

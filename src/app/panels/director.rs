@@ -13,11 +13,12 @@ use glam::{DMat3, DMat4, DVec3, DVec4};
 use phonglab_core::director::{self, Kind, Space, Stage};
 use phonglab_core::mesh::Mesh;
 use phonglab_core::transform::{of_camera_distance, perspective};
-use phonglab_core::{Document, Framing, Scene, View, locale, t};
+use phonglab_core::{Document, Framing, Scene, View};
 
 use crate::app::panels::shaded::cache::mesh_for;
 use crate::app::widgets::label_placement::Segment;
 use crate::app::widgets::palette;
+use crate::{locale, t};
 
 /// The window's switch, the space shown, and the director's own camera.
 #[derive(Clone, Debug, PartialEq)]

@@ -8,7 +8,6 @@
 //! ([`crate::io::save::save_bytes`]).
 
 use egui::Ui;
-use phonglab_core::t;
 
 use phonglab_core::export::Target;
 
@@ -17,6 +16,7 @@ use phonglab_core::{Document, PowFn};
 use crate::app::editing::message::Message;
 use crate::app::panels::chooser::{Chooser, Purpose};
 use crate::app::panels::files::{Dialogs, FileState};
+use crate::t;
 
 /// The exercise set's settings, kept while the window runs.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -52,7 +52,7 @@ pub fn shaded_png(doc: &Document, pow: PowFn) -> Result<Vec<u8>, String> {
 /// An exercise set as a zip file's bytes: every file `phonglab exercise` writes.
 pub fn exercises_zip(e: &ExportState) -> Result<Vec<u8>, String> {
     use phonglab_core::exercise::{Level, Spec};
-    let level = Level::from_number(e.level.clamp(1, 4) as u8).ok_or_else(|| phonglab_core::t!("err-level"))?;
+    let level = Level::from_number(e.level.clamp(1, 4) as u8).ok_or_else(|| crate::t!("err-level"))?;
     let request = crate::io::exercise_set::Request {
         seed: u64::from(e.seed),
         count: e.count.clamp(1, 100) as usize,

@@ -5,11 +5,12 @@
 use std::path::{Path, PathBuf};
 
 use egui::Ui;
-use phonglab_core::{Document, t};
+use phonglab_core::Document;
 
 use crate::app::editing::message::Message;
 use crate::app::panels::chooser::{Chooser, Purpose};
 use crate::platform::files as platform;
+use crate::t;
 
 /// Which file dialogs Open…, Save as… and the Export menu's Save… use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]

@@ -1,7 +1,8 @@
 //! Keyboard shortcuts: one table for the handler and the help overlay.
 
 use egui::{Key, Modifiers, Ui};
-use phonglab_core::t;
+
+use crate::t;
 
 /// What a shortcut does.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -111,12 +112,12 @@ pub fn help_ui(ui: &mut Ui) {
     egui::Grid::new("shortcuts").striped(true).show(ui, |ui| {
         for (_, _, shown, _, what) in SHORTCUTS {
             ui.monospace(*shown);
-            ui.label(phonglab_core::locale::tr(what));
+            ui.label(crate::locale::tr(what));
             ui.end_row();
         }
         for (shown, what) in PRESENTATION_KEYS {
             ui.monospace(*shown);
-            ui.label(phonglab_core::locale::tr(what));
+            ui.label(crate::locale::tr(what));
             ui.end_row();
         }
     });
@@ -129,7 +130,7 @@ pub fn help_ui(ui: &mut Ui) {
     ui.separator();
     ui.strong(t!("help-demo-title"));
     for id in DEMO_CHOICES {
-        ui.label(phonglab_core::locale::tr(id));
+        ui.label(crate::locale::tr(id));
     }
 }
 

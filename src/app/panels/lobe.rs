@@ -139,12 +139,12 @@ fn coefficient(name: &str, product: glam::DVec3, value: f64) -> String {
         format!("{name} = {}", fmt(value))
     } else {
         let colour = format!("[{} {} {}]", fmt(product.x), fmt(product.y), fmt(product.z));
-        phonglab_core::t!("lobe-luminance", name = name, value = fmt(value), colour = colour)
+        crate::t!("lobe-luminance", name = name, value = fmt(value), colour = colour)
     }
 }
 
 fn fmt(x: f64) -> String {
-    phonglab_core::locale::num(x, 4)
+    crate::locale::num(x, 4)
 }
 
 /// The least side of each of the two plots (points): below it they scroll, rather than
@@ -180,7 +180,7 @@ fn polar_reach(curves: &[Curve]) -> f64 {
 /// The polar plot and the plot against φ, with the legend above them.
 pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
     let Some((lobe, phi_v)) = Lobe::of(scene, eval) else {
-        ui.label(phonglab_core::t!("lobe-no-light"));
+        ui.label(crate::t!("lobe-no-light"));
         return;
     };
     let bg = ui.visuals().panel_fill;
@@ -196,23 +196,23 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
     let m = &scene.material;
     let kd = coefficient("kd", (m.diffuse * light.diffuse).truncate(), lobe.kd);
     let ks = coefficient("ks", (m.specular * light.specular).truncate(), lobe.ks);
-    let deg = |a: f64| phonglab_core::locale::decimal(&format!("{:.1}", a.to_degrees()));
-    ui.label(phonglab_core::t!(
+    let deg = |a: f64| crate::locale::decimal(&format!("{:.1}", a.to_degrees()));
+    ui.label(crate::t!(
         "lobe-caption",
         light = eval.lights[0].index.to_string(),
         theta = deg(lobe.theta),
-        n = phonglab_core::locale::num(lobe.n, 6),
+        n = crate::locale::num(lobe.n, 6),
         kd = kd,
         ks = ks,
         phi = deg(phi_v)
     ));
     let mut curves: Vec<Curve> = vec![
-        (phonglab_core::t!("lobe-diffuse"), ink(palette::L), sweep(|_| lobe.diffuse()), false),
+        (crate::t!("lobe-diffuse"), ink(palette::L), sweep(|_| lobe.diffuse()), false),
         ("Blinn-Phong ks (N·H)^n".into(), ink(palette::H), sweep(|p| lobe.blinn(p)), blinn_chosen),
         ("Phong ks (R·V)^n".into(), ink(palette::SPOT), sweep(|p| lobe.phong(p)), phong_chosen),
     ];
     if normalised {
-        let name = phonglab_core::t!("lobe-normalised");
+        let name = crate::t!("lobe-normalised");
         curves.push((name, ink(palette::H), sweep(|p| lobe.blinn_normalised(p)), true));
     }
     legend_ui(ui, &curves);
@@ -248,7 +248,7 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
         Plot::new("lobe against angle")
             .width(w)
             .height(h)
-            .x_axis_label(phonglab_core::t!("lobe-axis"))
+            .x_axis_label(crate::t!("lobe-axis"))
             .allow_drag(false)
             .allow_zoom(false)
             .allow_scroll(false)
@@ -258,11 +258,7 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
                     let xy: Vec<[f64; 2]> = pts.iter().map(|(phi, r)| [phi.to_degrees(), *r]).collect();
                     p.line(Line::new(name.clone(), PlotPoints::from(xy)).color(*c).width(if *on { 3.0 } else { 1.5 }));
                 }
-                p.vline(
-                    VLine::new(phonglab_core::t!("lobe-vertex-v"), phi_v.to_degrees())
-                        .color(ink(palette::V))
-                        .width(2.0),
-                );
+                p.vline(VLine::new(crate::t!("lobe-vertex-v"), phi_v.to_degrees()).color(ink(palette::V)).width(2.0));
             });
     };
     egui::ScrollArea::both().auto_shrink(false).show(ui, |ui| {

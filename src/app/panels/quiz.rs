@@ -11,10 +11,10 @@ use egui::{RichText, Ui};
 use phonglab_core::explain::{Explanation, Side, explain, fmt_value};
 use phonglab_core::quiz::{Mark, TOLERANCE, Verdict, asked, check, parse_answer, score};
 use phonglab_core::{Document, Engine};
-use phonglab_core::{locale, t};
 use serde::{Deserialize, Serialize};
 
 use crate::app::widgets::palette;
+use crate::{locale, t};
 
 /// The quiz: its scene and the student's work on it.
 #[derive(Clone, Debug, Default, PartialEq)]

@@ -5,9 +5,9 @@
 
 use egui::{ColorImage, RichText, TextureHandle, TextureOptions, Ui};
 use phonglab_core::misconception::{self, Misconception};
-use phonglab_core::t;
 
 use crate::app::widgets::palette;
+use crate::t;
 
 /// The pictures' side in pixels.
 const PX: usize = 160;

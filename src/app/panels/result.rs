@@ -1,14 +1,14 @@
 //! The lit colour: a large swatch and the rgba numbers, clamped and unclamped.
 
 use egui::{Color32, RichText, Ui};
-use phonglab_core::t;
 
 use crate::app::editing::evaluated::{Evaluated, SideColors};
 use crate::app::editing::message::Message;
 use crate::app::widgets::palette::{self, gl_to_color32};
+use crate::t;
 
 fn fmt4(c: &[f64; 4], digits: usize) -> String {
-    let s: Vec<String> = c.iter().map(|x| phonglab_core::locale::num(*x, digits)).collect();
+    let s: Vec<String> = c.iter().map(|x| crate::locale::num(*x, digits)).collect();
     format!("[{}]", s.join("  "))
 }
 
@@ -31,7 +31,7 @@ pub const DARK: f64 = 0.08;
 /// of the room, where the swatch alone (a dark one especially) says little.
 fn large_value_ui(ui: &mut Ui, shown: &[f64; 4]) {
     let text: Vec<String> =
-        shown[..3].iter().map(|x| phonglab_core::locale::decimal(&format!("{:.2}", x.clamp(0.0, 1.0)))).collect();
+        shown[..3].iter().map(|x| crate::locale::decimal(&format!("{:.2}", x.clamp(0.0, 1.0)))).collect();
     let size = ui.text_style_height(&egui::TextStyle::Heading);
     ui.label(RichText::new(text.join("  ")).font(egui::FontId::monospace(size)).strong())
         .on_hover_text(t!("large-value-hover"));

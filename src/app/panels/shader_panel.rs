@@ -6,8 +6,9 @@
 use egui::text::LayoutJob;
 use egui::{Color32, FontId, RichText, TextFormat, Ui};
 use phonglab_core::shader::{ShaderShading, ShadingLanguage, for_view};
-use phonglab_core::t;
 use phonglab_core::{Document, Shading};
+
+use crate::t;
 
 /// The window's state.
 #[derive(Clone, Debug, Default)]
@@ -179,7 +180,7 @@ pub fn shader_window_ui(ctx: &egui::Context, state: &mut ShaderState, doc: &Docu
     let mut open = state.open;
     // Over the centre and the calculation, leaving the controls free to toggle effects.
     let at = ctx.content_rect().right_top() + egui::vec2(-640.0, 70.0);
-    egui::Window::new(phonglab_core::t!("shader")).open(&mut open).default_size([620.0, 560.0]).default_pos(at).show(
+    egui::Window::new(crate::t!("shader")).open(&mut open).default_size([620.0, 560.0]).default_pos(at).show(
         ctx,
         |ui| {
             ui.horizontal_wrapped(|ui| {

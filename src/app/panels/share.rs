@@ -8,9 +8,9 @@ use egui::Ui;
 use phonglab_core::Document;
 use phonglab_core::channels::Channel;
 use phonglab_core::export::share::{self, Shared};
-use phonglab_core::t;
 
 use crate::app::editing::message::Message;
+use crate::t;
 
 /// The window's own state: open, the page, the choices, and the QR code drawn last.
 #[derive(Default)]
@@ -37,14 +37,14 @@ struct LinkInputs {
     doc: Document,
     base: String,
     choices: [bool; 3],
-    lang: phonglab_core::locale::Lang,
+    lang: crate::locale::Lang,
     channel: Option<Channel>,
 }
 
 /// What the window shares besides the document: the window's choices as they are now.
 pub struct Shown {
     /// The language shown.
-    pub lang: phonglab_core::locale::Lang,
+    pub lang: crate::locale::Lang,
     /// The term shown in place of the picture, if one is.
     pub channel: Option<Channel>,
 }
@@ -154,7 +154,7 @@ fn choices_ui(ui: &mut Ui, s: &mut ShareState, shown: &Shown) {
     ui.checkbox(&mut s.with_language, t!("share-in-language", lang = shown.lang.name()));
     ui.checkbox(&mut s.presenting, t!("share-presenting"));
     if let Some(c) = shown.channel {
-        ui.checkbox(&mut s.with_channel, t!("share-channel", term = phonglab_core::locale::tr(c.message_id())));
+        ui.checkbox(&mut s.with_channel, t!("share-channel", term = crate::locale::tr(c.message_id())));
     }
 }
 

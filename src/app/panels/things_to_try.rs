@@ -4,11 +4,12 @@
 //! after the class has moved a slider, the answer is the one for what they see).
 
 use egui::Ui;
+use phonglab_core::Document;
 use phonglab_core::explain::{Explanation, fmt_value};
-use phonglab_core::locale::Lang;
-use phonglab_core::{Document, t};
 
 use crate::io::experiments::{self, Experiment};
+use crate::locale::Lang;
+use crate::t;
 
 /// The window's state: open or not, the experiment chosen, whether its answer is shown,
 /// and the teacher's own experiments (read when the window opens).
@@ -59,7 +60,7 @@ pub fn answer(e: &Experiment, ex: &Explanation) -> Option<(usize, String)> {
     let k = ex.steps.iter().position(|s| s.name == e.answer && (e.light.is_none() || s.light == e.light))?;
     let s = &ex.steps[k];
     let value = match &s.value {
-        Some(v) => phonglab_core::locale::decimal(&fmt_value(v, 8)),
+        Some(v) => crate::locale::decimal(&fmt_value(v, 8)),
         None => t!("not-applicable"),
     };
     Some((k, format!("{} = {value}", s.name)))

@@ -114,7 +114,7 @@ fn legend(eval: &Evaluated, specular: SpecularModel) -> Vec<(&'static str, Strin
         ("V", "vov".to_string(), palette::V, false),
         match specular.vector() {
             // In words, the reader's (the sheets' "vetor médio").
-            SpecularVector::Halfway => ("H", phonglab_core::t!("plot-legend-halfway"), palette::H, true),
+            SpecularVector::Halfway => ("H", crate::t!("plot-legend-halfway"), palette::H, true),
             SpecularVector::Reflection => ("R", "R".to_string(), palette::H, true),
         },
     ];
@@ -126,13 +126,9 @@ fn legend(eval: &Evaluated, specular: SpecularModel) -> Vec<(&'static str, Strin
 
 /// The view buttons (XY, XZ, ZY, 3D), in the row the caller opened.
 pub fn view_buttons_ui(ui: &mut Ui, orbit: &mut Orbit) {
-    ui.label(phonglab_core::t!("plot-view"));
+    ui.label(crate::t!("plot-view"));
     for (name, o) in [("XY", Orbit::XY), ("XZ", Orbit::XZ), ("ZY", Orbit::ZY), ("3D", Orbit::PERSPECTIVE)] {
-        if ui
-            .selectable_label(*orbit == o, name)
-            .on_hover_text(phonglab_core::t!("plot-view-hover", plane = name))
-            .clicked()
-        {
+        if ui.selectable_label(*orbit == o, name).on_hover_text(crate::t!("plot-view-hover", plane = name)).clicked() {
             *orbit = o;
         }
     }
@@ -291,7 +287,7 @@ fn plot_area_ui(ui: &mut Ui, orbit: &mut Orbit) -> (Rect, f32) {
     let side = avail.x.min(avail.y).max(40.0).min(avail.x.max(1.0));
     let (outer, resp) = ui.allocate_exact_size(vec2(avail.x.max(side), side), Sense::click_and_drag());
     resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, "vector plot"));
-    let resp = resp.on_hover_text(phonglab_core::t!(
+    let resp = resp.on_hover_text(crate::t!(
         "plot-drag",
         yaw = format!("{:.0}", orbit.yaw),
         pitch = format!("{:.0}", orbit.pitch)
@@ -389,7 +385,7 @@ impl Canvas {
         let m = self.at(mid);
         let out = if (m - self.centre).length() > 1.0 { m - self.centre } else { vec2(1.0, -1.0) };
         marks.wanted.push(Wanted { anchor: m, direction: out, size: Vec2::ZERO, gap: 4.0 });
-        let text = phonglab_core::locale::decimal(&format!("{name} = {:.1}\u{b0}", angle.to_degrees()));
+        let text = crate::locale::decimal(&format!("{name} = {:.1}\u{b0}", angle.to_degrees()));
         marks.texts.push((text, color, font));
     }
 }

@@ -87,7 +87,7 @@ pub fn all_panels_open(ctx: &egui::Context, size: [f32; 2]) -> Result<AppState> 
     let start = Instant::now();
     while state.cost.study.is_none() || state.heat_map.heat.is_none() {
         if start.elapsed().as_secs() > 300 {
-            anyhow::bail!(phonglab_core::t!("err-study-timeout"));
+            anyhow::bail!(crate::t!("err-study-timeout"));
         }
         if let Some(e) = &state.cost.error {
             anyhow::bail!("{e}");
@@ -108,7 +108,7 @@ fn ui_presenting(a: &UiBench) -> Result<()> {
     let ctx = egui::Context::default();
     println!(
         "# {}",
-        phonglab_core::t!(
+        crate::t!(
             "bench-ui-present-header",
             width = size[0].to_string(),
             height = size[1].to_string(),
@@ -144,7 +144,7 @@ pub fn run(a: &UiBench) -> Result<()> {
     let mut state = all_panels_open(&ctx, size)?;
     println!(
         "# {}",
-        phonglab_core::t!(
+        crate::t!(
             "bench-ui-header",
             width = a.width.to_string(),
             height = a.height.to_string(),

@@ -3,12 +3,12 @@
 //! with a divider between them that can be dragged; with Compare on, A beside B.
 
 use egui::Ui;
-use phonglab_core::t;
 
 use super::state::{AppState, Message};
 use super::{centre_layout, files, layout, state};
 use crate::app::editing::editor::Editor;
 use crate::app::panels::{compare, lobe, result, shaded, things_to_try, vector_plot};
+use crate::t;
 
 /// How many rows of widgets stand above the shaded picture, and above the plot's diagram,
 /// as heights in points (see [`centre_layout::Chrome`]).

@@ -3,7 +3,6 @@
 //! termination signals that save it before the window closes ([`super::shutdown`]).
 
 use egui::Ui;
-use phonglab_core::t;
 
 use super::files;
 use super::frame::app_ui;
@@ -12,6 +11,7 @@ use super::session_loop::{DESKTOP_EVERY, SessionLoop, restore};
 use super::shutdown::Shutdown;
 use super::state::AppState;
 use crate::app::panels::shaded::gpu::{self as gpu_view, RendererChoice};
+use crate::t;
 
 /// The eframe application: the state, and the session it is kept in.
 pub struct PhongLabApp {

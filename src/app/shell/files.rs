@@ -6,12 +6,12 @@
 use std::path::{Path, PathBuf};
 
 use phonglab_core::Document;
-use phonglab_core::t;
 
 use super::state::{AppState, Message};
 use crate::app::panels::files::FileRequest;
 use crate::io::student_code::{MAX_CODE_BYTES, import_text, student_code};
 use crate::platform::files as platform;
+use crate::t;
 
 /// Writes `doc` to `path`, whole or not at all ([`crate::io::atomic_write::write`]).
 pub fn write_document(doc: &Document, path: &Path) -> Result<(), String> {

@@ -3,12 +3,12 @@
 //! [`AppState`] and takes `&mut egui::Ui`, so tests drive it headless.
 
 use egui::Ui;
-use phonglab_core::t;
 
 use super::state::{AppState, Message};
 use super::{centre, keys, layout, state, top_bar, windows};
 use crate::app::panels::{calculation, controls, quiz};
 use crate::app::widgets::number_field;
+use crate::t;
 
 /// The whole explorer UI.
 pub fn app_ui(ui: &mut Ui, state: &mut AppState) {
@@ -54,7 +54,7 @@ fn frame_start_ui(ui: &mut Ui, state: &mut AppState) -> Option<state::Evaluated>
     *ui.visuals_mut() = visuals;
     state.now = ctx.input(|i| i.time);
     // The window's language, switched at once when the menu changes it.
-    phonglab_core::locale::set_thread(Some(state.ui.layout.locale()));
+    crate::locale::set_thread(Some(state.ui.layout.locale()));
     // Open and Save pressed while typing wait for the field to commit what was typed: the
     // field lets the keyboard go now, commits next frame, and they run the frame after.
     let (ready, waiting): (Vec<_>, Vec<_>) = std::mem::take(&mut state.ui.deferred).into_iter().partition(|(_, r)| *r);

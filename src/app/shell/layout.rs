@@ -48,8 +48,8 @@ impl Theme {
     /// "light" or "dark".
     pub fn label(self) -> String {
         match self {
-            Theme::Light => phonglab_core::t!("theme-light"),
-            Theme::Dark => phonglab_core::t!("theme-dark"),
+            Theme::Light => crate::t!("theme-light"),
+            Theme::Dark => crate::t!("theme-dark"),
         }
     }
 }
@@ -130,8 +130,8 @@ impl Layout {
     }
 
     /// The locale the window speaks: the menu's choices over the process's default.
-    pub fn locale(&self) -> phonglab_core::locale::Locale {
-        use phonglab_core::locale::{DecimalMark, Lang, Locale, default_locale};
+    pub fn locale(&self) -> crate::locale::Locale {
+        use crate::locale::{DecimalMark, Lang, Locale, default_locale};
         let lang = self.language.as_deref().and_then(Lang::parse).unwrap_or(default_locale().lang);
         let decimal = self.decimal.as_deref().and_then(DecimalMark::parse).unwrap_or_else(|| {
             // The process's mark when the language is the process's; else the language's own.

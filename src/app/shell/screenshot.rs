@@ -98,11 +98,11 @@ pub fn empty_share(
 /// Takes the picture `shot` asks for and writes it (`phonglab screenshot`).
 pub fn run(a: &Shot) -> Result<()> {
     if !(0.5..=4.0).contains(&a.scale) {
-        bail!(phonglab_core::t!("err-scale", scale = phonglab_core::locale::exact(f64::from(a.scale))));
+        bail!(crate::t!("err-scale", scale = crate::locale::exact(f64::from(a.scale))));
     }
     let (pw, ph) = ((a.size.0 as f32 * a.scale).round() as u32, (a.size.1 as f32 * a.scale).round() as u32);
     let needed = crate::io::budget::window_picture_bytes(u64::from(a.size.0), u64::from(a.size.1), f64::from(a.scale));
-    crate::io::budget::check(&phonglab_core::t!("budget-what-window", width = pw, height = ph), needed)
+    crate::io::budget::check(&crate::t!("budget-what-window", width = pw, height = ph), needed)
         .map_err(anyhow::Error::msg)?;
     use crate::io::same_file::{Input, refuse_onto};
     let scene: Vec<(&std::path::Path, Input)> = a.scene.iter().map(|p| (p.as_path(), Input::Scene)).collect();
@@ -127,11 +127,11 @@ pub fn run(a: &Shot) -> Result<()> {
         .map(|r| egui::Rect::from_min_max((r.min.to_vec2() * a.scale).to_pos2(), (r.max.to_vec2() * a.scale).to_pos2()))
         .collect();
     let sides: Vec<String> = g.pictures.iter().map(|r| format!("{:.0}", r.width().min(r.height()))).collect();
-    let none = phonglab_core::t!("screenshot-none");
+    let none = crate::t!("screenshot-none");
     // The file name is the user's: its controls written visibly, never sent to the terminal.
     eprintln!(
         "{}",
-        phonglab_core::escape::terminal::lines(&phonglab_core::t!(
+        phonglab_core::escape::terminal::lines(&crate::t!(
             "screenshot-summary",
             path = crate::io::reasons::shown(&a.output),
             width = pw,

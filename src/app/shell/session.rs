@@ -22,12 +22,13 @@
 //! - `session.ron` is a folder, or the storage folder cannot be made: the window works but
 //!   does not save its session.
 
-use phonglab_core::t;
 use std::collections::BTreeMap;
 use std::fs::File;
 use std::path::{Path, PathBuf};
 
 use phonglab_core::Document;
+
+use crate::t;
 
 /// The key the scene is kept under (a scene file's TOML).
 pub const DOCUMENT_KEY: &str = "phonglab.document.toml";

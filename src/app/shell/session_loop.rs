@@ -127,7 +127,7 @@ impl SessionLoop {
         self.pending = false;
         if let Err(e) = self.session.save() {
             log::error!("{e}");
-            state.message = Some(Message::Refused(phonglab_core::t!("session-not-saved", error = e)));
+            state.message = Some(Message::Refused(crate::t!("session-not-saved", error = e)));
         }
     }
 }

@@ -6,10 +6,10 @@
 
 use phonglab_core::channels::Channel;
 use phonglab_core::export::share;
-use phonglab_core::t;
 
 use super::state::AppState;
 use crate::app::editing::message::Message;
+use crate::t;
 
 /// Opens the link's `fragment` (after `#`) in `state`.
 pub fn open_fragment(state: &mut AppState, fragment: &str) {
@@ -21,7 +21,7 @@ pub fn open_fragment(state: &mut AppState, fragment: &str) {
             }
             let locale = state.ui.layout.locale();
             let name = s.doc.name.clone();
-            phonglab_core::locale::with_locale(locale, || {
+            crate::locale::with_locale(locale, || {
                 state.load(s.doc, &t!("share-opened", name = name));
                 if let Some(mesh) = &s.missing_mesh {
                     state.message = Some(Message::Info(t!("share-needs-mesh", name = mesh.clone())));

@@ -137,10 +137,10 @@ impl AppState {
         keep_mesh(&self.doc, &mut start);
         let before = std::mem::replace(&mut self.doc, start);
         if before != self.doc {
-            self.history.record(&before, &self.doc, Some(&phonglab_core::t!("history-reset")), self.now);
+            self.history.record(&before, &self.doc, Some(&crate::t!("history-reset")), self.now);
         }
         self.controls.selected_light = 0;
-        self.message = Some(Message::Info(phonglab_core::t!("reset-done")));
+        self.message = Some(Message::Info(crate::t!("reset-done")));
     }
 
     /// Loads a ready-made document. The user's mesh stays offered (the top bar's "Your
@@ -150,10 +150,10 @@ impl AppState {
         keep_mesh(&self.doc, &mut doc);
         let before = std::mem::replace(&mut self.doc, doc);
         if before != self.doc {
-            self.history.record(&before, &self.doc, Some(&phonglab_core::t!("history-open", what = what)), self.now);
+            self.history.record(&before, &self.doc, Some(&crate::t!("history-open", what = what)), self.now);
         }
         self.controls.selected_light = 0;
-        self.message = Some(Message::Info(phonglab_core::t!("loaded", what = what)));
+        self.message = Some(Message::Info(crate::t!("loaded", what = what)));
     }
 }
 
@@ -197,9 +197,9 @@ impl AppState {
         self.message = Some(Message::Info(match self.history.undo() {
             Some((doc, label)) => {
                 self.set_doc(doc);
-                phonglab_core::t!("undid", what = label)
+                crate::t!("undid", what = label)
             }
-            None => phonglab_core::t!("nothing-to-undo"),
+            None => crate::t!("nothing-to-undo"),
         }));
     }
 
@@ -208,9 +208,9 @@ impl AppState {
         self.message = Some(Message::Info(match self.history.redo() {
             Some((doc, label)) => {
                 self.set_doc(doc);
-                phonglab_core::t!("redid", what = label)
+                crate::t!("redid", what = label)
             }
-            None => phonglab_core::t!("nothing-to-redo"),
+            None => crate::t!("nothing-to-redo"),
         }));
     }
 

@@ -6,12 +6,12 @@
 
 use egui::Ui;
 use egui::containers::menu::{MenuButton, MenuConfig};
-use phonglab_core::t;
 use phonglab_core::{ObjectKind, Shading};
 
 use super::state::{AppState, Precision};
 use super::{files, layout};
 use crate::app::panels::export;
+use crate::t;
 
 /// The longest scene name shown whole beside the Scene menu (the rest in its hover).
 const NAME_CHARS: usize = 32;
@@ -256,7 +256,7 @@ fn view_menu_ui(ui: &mut Ui, state: &mut AppState) {
 
 /// The language and decimal mark menu (kept across restarts).
 fn language_menu_ui(ui: &mut Ui, layout: &mut layout::Layout) {
-    use phonglab_core::locale::{DecimalMark, Lang};
+    use crate::locale::{DecimalMark, Lang};
     let now = layout.locale();
     ui.menu_button(now.lang.code(), |ui| {
         for lang in Lang::ALL {
@@ -273,7 +273,7 @@ fn language_menu_ui(ui: &mut Ui, layout: &mut layout::Layout) {
         }
     })
     .response
-    .on_hover_text(phonglab_core::t!("language-menu-hover"));
+    .on_hover_text(crate::t!("language-menu-hover"));
 }
 
 /// Undo and Redo, each saying what it would change.

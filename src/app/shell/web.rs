@@ -189,7 +189,7 @@ fn url_asks(key: &str, value: &str) -> bool {
 pub fn start() {
     eframe::WebLogger::init(log::LevelFilter::Warn).ok();
     let lang = crate::platform::language::system();
-    phonglab_core::locale::set_default(phonglab_core::locale::Locale::of(lang));
+    crate::locale::set_default(crate::locale::Locale::of(lang));
     wasm_bindgen_futures::spawn_local(async {
         let Some(document) = web_sys::window().and_then(|w| w.document()) else { return };
         let Some(canvas) =

@@ -1,11 +1,10 @@
 //! The windows over the layout: the cost study (its finished work collected first), the
 //! shader, phonglab's own file chooser, the things to try, the keys' help.
 
-use phonglab_core::t;
-
 use super::state::AppState;
 use crate::app::panels::things_to_try::{self, TryAsked};
 use crate::app::panels::{cost, director, help, shader_panel, share};
+use crate::t;
 
 /// The windows over the layout: the cost study (its finished work collected first), the
 /// shader, the chooser, the things to try (`explanation`: the calculation as it stands, for

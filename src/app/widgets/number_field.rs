@@ -58,7 +58,7 @@ fn last_commit_id() -> Id {
 
 /// The text a value shows at rest: 6 significant digits.
 pub fn shown_text(v: f64) -> String {
-    phonglab_core::locale::decimal(&fmt_sig(v, SHOWN_DIGITS))
+    crate::locale::decimal(&fmt_sig(v, SHOWN_DIGITS))
 }
 
 /// A number as the shortest decimal that reads back as the same `f64` (exponent form
@@ -76,14 +76,9 @@ pub fn read(text: &str, accepts: Accepts) -> Result<f64, String> {
         Accepts::Any => Ok(x),
         Accepts::Whole { min, max } => {
             if x.fract() != 0.0 {
-                Err(phonglab_core::t!("not-whole", text = text.trim()))
+                Err(crate::t!("not-whole", text = text.trim()))
             } else if x < min as f64 || x > max as f64 {
-                Err(phonglab_core::t!(
-                    "outside-range",
-                    text = text.trim(),
-                    min = min.to_string(),
-                    max = max.to_string()
-                ))
+                Err(crate::t!("outside-range", text = text.trim(), min = min.to_string(), max = max.to_string()))
             } else {
                 Ok(x)
             }
@@ -128,8 +123,8 @@ pub fn read_row(text: &str, accepts: Accepts, n: usize) -> Result<Typed, String>
             let text_of = |x: &f64| exact_text(*x);
             parts.iter().map(|x| read(&text_of(x), accepts)).collect::<Result<Vec<_>, _>>().map(Typed::Row)
         }
-        k if n == 1 => Err(phonglab_core::t!("numbers-type-one", count = k)),
-        k => Err(phonglab_core::t!("numbers-type-row", count = k, fields = n)),
+        k if n == 1 => Err(crate::t!("numbers-type-one", count = k)),
+        k => Err(crate::t!("numbers-type-row", count = k, fields = n)),
     }
 }
 
@@ -199,10 +194,9 @@ impl<'a> NumberField<'a> {
             draft = if escape { None } else { finish(ui, id, d, accepts, n, value, &mut row, &mut changed) };
         }
         let mut response = if editing {
-            let mut d = draft.take().unwrap_or_else(|| Draft {
-                text: phonglab_core::locale::decimal(&exact_text(*value)),
-                ..Draft::default()
-            });
+            let mut d = draft
+                .take()
+                .unwrap_or_else(|| Draft { text: crate::locale::decimal(&exact_text(*value)), ..Draft::default() });
             let gained = !d.editing;
             d.editing = true;
             if gained {
@@ -259,7 +253,7 @@ impl<'a> NumberField<'a> {
         let refused = draft
             .as_ref()
             .and_then(|d| d.refused.as_ref())
-            .map(|why| phonglab_core::t!("refused-esc", why = why, value = shown_text(*value)));
+            .map(|why| crate::t!("refused-esc", why = why, value = shown_text(*value)));
         if changed {
             response.mark_changed();
         }
@@ -312,7 +306,7 @@ fn rest_ui(ui: &mut Ui, id: Id, value: &f64, draft: Option<&Draft>, width: f32, 
     }
     response = response.on_hover_cursor(egui::CursorIcon::ResizeHorizontal);
     if !refused && shown_text(*value) != exact_text(*value) {
-        response = response.on_hover_text(phonglab_core::locale::decimal(&exact_text(*value)));
+        response = response.on_hover_text(crate::locale::decimal(&exact_text(*value)));
     }
     response
 }

@@ -1,9 +1,11 @@
 //! The user's language and how numbers are written for them.
 //!
 //! Three languages: English, Português (Portugal) and Português (Brasil). Every string a
-//! user reads comes from a Fluent catalogue (`crates/phonglab-core/i18n/*.ftl`, embedded at
-//! build time) through [`tr`] or the [`t!`](crate::t) macro; a message missing from a
-//! catalogue falls back to English (tests fail on any). Scene files, JSON and CSV keep
+//! user reads comes from a Fluent catalogue, embedded at build time: the core's messages
+//! (`crates/phonglab-core/i18n/*.ftl`) through [`tr`] or the [`t!`](crate::t) macro, the
+//! app's (`i18n/*.ftl` at the repository's root) through the app's own `t!`, which reads
+//! the core's too (a [`Catalogue`] of both); a message missing from a catalogue falls back
+//! to English (tests fail on any). Scene files, JSON and CSV keep
 //! their English keys and decimal points.
 //!
 //! The language is chosen by the system locale (`LC_ALL`, `LC_MESSAGES`, `LANG`:
@@ -17,7 +19,7 @@
 mod catalogue;
 mod lang;
 
-pub use catalogue::{Arg, has_message, message_ids, tr, tr_args, tr_in};
+pub use catalogue::{Arg, CORE, CORE_SOURCES, Catalogue, has_message, ids_of, message_ids, tr, tr_args, tr_in};
 pub use lang::{DecimalMark, Lang, Locale, current, default_locale, set_default, set_thread, with_locale};
 
 /// `text` with every decimal point between two digits written as the locale's mark

@@ -6,11 +6,12 @@
 //! pictures side by side, short, the whole in the picture's hover and name.
 
 use egui::{Sense, Ui};
+use phonglab_core::Document;
 use phonglab_core::library::DemoDeparture;
-use phonglab_core::{Document, t};
 
 use super::cache::{COARSE_ABOVE, DrawnBy, ViewCache};
 use super::context::ShadedOptions;
+use crate::t;
 
 /// Where the captions stand: presenting, or over two pictures side by side (the demo and
 /// its correction, or the heat map), a caption says what the picture is in one short line
@@ -59,7 +60,7 @@ pub(super) fn main_caption(doc: &Document, options: &ShadedOptions, cache: &View
 /// What the caption says after the object and the shading: the channel shown, or `drawn`.
 fn middle(options: &ShadedOptions, drawn: String) -> String {
     match options.channel {
-        Some(c) => t!("channel-caption", channel = phonglab_core::locale::tr(c.message_id())),
+        Some(c) => t!("channel-caption", channel = crate::locale::tr(c.message_id())),
         None => drawn,
     }
 }
@@ -120,14 +121,14 @@ pub fn caption_room(
 /// long time: who drew it last, the CPU whole or lit again (nothing drawn moved), and a
 /// very large mesh's coarse copy while it turns or spins.
 fn drawn_variants(cache: &ViewCache, triangles: usize) -> Vec<String> {
-    let ms = phonglab_core::locale::decimal("888.8");
+    let ms = crate::locale::decimal("888.8");
     let mut out = vec![
         drawn_caption_taking(cache, &ms),
         t!("caption-cpu", ms = ms.clone()),
         t!("caption-cpu-relit", ms = ms.clone()),
     ];
     if triangles > COARSE_ABOVE {
-        let (some, all) = (phonglab_core::locale::grouped(9_999_999), phonglab_core::locale::grouped(triangles as u64));
+        let (some, all) = (crate::locale::grouped(9_999_999), crate::locale::grouped(triangles as u64));
         out.push(t!("caption-cpu-coarse", ms = ms.clone(), triangles = some.clone(), all = all.clone()));
         out.push(t!("caption-cpu-coarse-spin", ms = ms, triangles = some, all = all));
     }
@@ -144,8 +145,8 @@ fn drawn_caption_taking(cache: &ViewCache, ms: &str) -> String {
     match &cache.drawn_by {
         DrawnBy::Gpu { adapter } => t!("caption-gpu", adapter = adapter.to_string()),
         _ if let Some(c) = cache.last_coarse => {
-            let triangles = phonglab_core::locale::grouped(c.triangles as u64);
-            let all = phonglab_core::locale::grouped(c.of as u64);
+            let triangles = crate::locale::grouped(c.triangles as u64);
+            let all = crate::locale::grouped(c.of as u64);
             match c.spinning {
                 true => t!("caption-cpu-coarse-spin", ms = ms, triangles = triangles, all = all),
                 false => t!("caption-cpu-coarse", ms = ms, triangles = triangles, all = all),
@@ -157,5 +158,5 @@ fn drawn_caption_taking(cache: &ViewCache, ms: &str) -> String {
 }
 
 fn fmt_ms(ms: f64) -> String {
-    phonglab_core::locale::decimal(&format!("{ms:.1}"))
+    crate::locale::decimal(&format!("{ms:.1}"))
 }

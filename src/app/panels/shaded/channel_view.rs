@@ -7,7 +7,9 @@ use phonglab_core::channels::{self, Channel, ChannelImage, ColourMap};
 use phonglab_core::mesh::Mesh;
 use phonglab_core::plan::{Key, Program};
 use phonglab_core::render::Renderer;
-use phonglab_core::{Document, PowFn, locale, t};
+use phonglab_core::{Document, PowFn};
+
+use crate::{locale, t};
 
 /// The channel image's side in pixels: enough to read a term's shape, small enough to
 /// compute on every edit (each pixel is the f64 engine's worked breakdown).

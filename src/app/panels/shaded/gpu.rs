@@ -36,9 +36,9 @@ impl RendererChoice {
     /// The menu's words.
     pub fn label(self) -> String {
         match self {
-            RendererChoice::Auto => phonglab_core::t!("renderer-auto"),
-            RendererChoice::Cpu => phonglab_core::t!("renderer-cpu"),
-            RendererChoice::Gpu => phonglab_core::t!("renderer-gpu"),
+            RendererChoice::Auto => crate::t!("renderer-auto"),
+            RendererChoice::Cpu => crate::t!("renderer-cpu"),
+            RendererChoice::Gpu => crate::t!("renderer-gpu"),
         }
     }
 }
@@ -78,10 +78,10 @@ pub fn install(render_state: &RenderState) -> GpuInfo {
 /// `None` when it can.
 pub fn cannot_draw(doc: &Document, pow: PowFn) -> Option<String> {
     if doc.view.shading == Shading::Flat {
-        return Some(phonglab_core::t!("cpu-flat"));
+        return Some(crate::t!("cpu-flat"));
     }
     if pow != PowFn::Exact {
-        return Some(phonglab_core::t!("cpu-approximate-pow"));
+        return Some(crate::t!("cpu-approximate-pow"));
     }
     None
 }
@@ -89,12 +89,12 @@ pub fn cannot_draw(doc: &Document, pow: PowFn) -> Option<String> {
 /// Why `doc`'s view is drawn by the CPU renderer, or `None` when the GPU draws it.
 pub fn why_cpu(gpu: Option<&GpuInfo>, choice: RendererChoice, doc: &Document, pow: PowFn) -> Option<String> {
     let Some(gpu) = gpu else {
-        return Some(phonglab_core::t!("cpu-no-adapter"));
+        return Some(crate::t!("cpu-no-adapter"));
     };
     match choice {
-        RendererChoice::Cpu => return Some(phonglab_core::t!("cpu-chosen")),
+        RendererChoice::Cpu => return Some(crate::t!("cpu-chosen")),
         RendererChoice::Auto if gpu.software => {
-            return Some(phonglab_core::t!("cpu-software-adapter", adapter = &gpu.name));
+            return Some(crate::t!("cpu-software-adapter", adapter = &gpu.name));
         }
         _ => {}
     }

@@ -4,10 +4,10 @@
 use egui::{ColorImage, TextureHandle, TextureOptions, Ui};
 use phonglab_core::ShadedSetup;
 use phonglab_core::cost::{self, ErrorStats, Progress, Setup, Timing};
-use phonglab_core::{locale, t};
 
 use crate::app::editing::worker::Worker;
 use crate::paint::cost_chart::{BACKGROUND, HEAT_FULL_SCALE};
+use crate::{locale, t};
 
 /// Image size of the app's study and heat map, in pixels (the CLI's default is larger).
 /// Smaller in the browser, where the study runs on the page's one thread, before the next

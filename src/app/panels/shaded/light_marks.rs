@@ -5,10 +5,10 @@
 
 use egui::{Color32, Sense, Ui};
 use glam::DVec4;
-use phonglab_core::t;
 
 use super::context::Shaded;
 use super::screen::Overlay;
+use crate::t;
 
 /// The light markers' yellow.
 const MARKER: Color32 = Color32::from_rgb(255, 230, 120);

@@ -62,7 +62,7 @@ fn open_vertex(state: &mut Shaded<'_>, mesh: &phonglab_core::mesh::Mesh, i: usiz
     let c = state.edit.doc.with_vertex_as_shaded(phonglab_core::Vertex::from_f32(*p, *n));
     if state.edit.apply(c) {
         let object = state.edit.doc.view.object.label().to_lowercase();
-        *state.edit.message = Some(crate::app::editing::message::Message::Info(phonglab_core::t!(
+        *state.edit.message = Some(crate::app::editing::message::Message::Info(crate::t!(
             "picked-vertex",
             index = i.to_string(),
             object = object

@@ -4,7 +4,6 @@
 
 use egui::{Color32, Ui};
 use glam::DVec3;
-use phonglab_core::t;
 use phonglab_core::{Document, Framing, Vertex};
 
 use super::arrow_on_object::ArrowOnObject;
@@ -14,6 +13,7 @@ use super::pictures::Shown;
 use super::screen::Overlay;
 use crate::app::editing::evaluated::Evaluated;
 use crate::app::editing::message::Message;
+use crate::t;
 
 /// What the pointer does on the picture: the vectors and lights drawn on it, a light
 /// dragged, the orbit camera turned and zoomed, a vertex picked. Returns the arrows drawn

@@ -5,7 +5,6 @@ use std::sync::Arc;
 
 use egui::{Sense, Ui};
 use phonglab_core::mesh::Mesh;
-use phonglab_core::t;
 
 use super::cache::{DrawnBy, ShadedCache, ViewCache, Viewed, mesh_for};
 use super::captions::{Caption, CaptionRoom, caption_room, caption_ui, corrected_caption, main_caption};
@@ -14,6 +13,7 @@ use super::context::{Shaded, corrected_document};
 use super::gpu::{self, GpuImage};
 use super::heat_map::heat_map_ui;
 use crate::app::editing::message::Message;
+use crate::t;
 
 /// What [`pictures_ui`] drew: the main picture's response and size, the second picture's
 /// place (the demo corrected, or the heat map), and the scene as the view lights it.

@@ -4,7 +4,8 @@
 
 use egui::{Context, RichText};
 use phonglab_core::probe_report::ReportLine;
-use phonglab_core::t;
+
+use crate::t;
 
 /// The probe's switch, the pixel it shows and its report.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -57,7 +58,7 @@ pub fn probe_window_ui(ctx: &Context, probe: &mut ProbeState) -> ProbeAsked {
         .max_width(width.max(screen.width() * 0.5))
         .resizable(true)
         .show(ctx, |ui| {
-            ui.small(phonglab_core::locale::tr(if probe.pinned { "probe-pinned" } else { "probe-follows" }));
+            ui.small(crate::locale::tr(if probe.pinned { "probe-pinned" } else { "probe-follows" }));
             if probe.pinned && ui.button(t!("probe-unpin")).clicked() {
                 probe.pinned = false;
             }

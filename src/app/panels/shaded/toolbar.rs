@@ -4,12 +4,12 @@
 
 use egui::Ui;
 use phonglab_core::library::DemoDeparture;
-use phonglab_core::t;
 use phonglab_core::{Document, FlatNormal, Framing, ObjectKind, View};
 
 use super::cache::{DrawnBy, ShadedCache};
 use super::context::Shaded;
 use super::gpu;
+use crate::t;
 
 /// The pipeline's choices where OpenGL and the Phong demo differ, and the demo's
 /// departures as switches: each flipped one is corrected in a second picture beside the

@@ -1,0 +1,959 @@
+# As mensagens da aplicação do phonglab em português de Portugal: as da janela, as da
+# linha de comandos e as dos ficheiros. As do núcleo estão em crates/phonglab-core/i18n/pt-PT.ftl.
+
+## app
+
+language-menu-hover = Língua, e como se escrevem os números (0,5 ou 0.5)
+leave-presenting = Sair (F5)
+present-hover = Letra grande; os controlos numa gaveta
+controls-drawer = Gaveta dos controlos
+controls-drawer-hover = Os controlos da cena, numa gaveta
+controls = Controlos
+calculation = Cálculo
+theme-hover = Os dois temas têm alto contraste
+theme-light = Tema claro
+theme-dark = Tema escuro
+reset-worksheet = Voltar à ficha
+scene-menu = Cena
+scene-menu-hover = As cenas incluídas, e a da ficha
+file-menu = Ficheiro
+view-menu = Ver
+view-menu-hover = Painéis, janelas, o tema e a aritmética
+things-to-try = Coisas a experimentar
+things-to-try-hover = Experiências num clique: cada uma prepara uma cena, diz o que observar e faz uma pergunta a que o cálculo responde
+things-to-try-band = Coisas a experimentar: um clique prepara cada uma
+things-to-try-intro = Cliquem numa para preparar a sua cena (a atual é substituída; Ctrl+Z recupera-a).
+things-to-try-look = O que observar
+things-to-try-question = A pergunta
+things-to-try-show = Mostrar a resposta do cálculo
+things-to-try-answer = Passo { $step }: { $value }
+things-to-try-no-step = O cálculo não tem o passo { $step } nesta cena.
+things-to-try-own = As vossas experiências: ficheiros .toml em { $folder } (vejam a forma em assets/experiments/).
+things-to-try-own-none = As vossas experiências podem ser juntadas na aplicação para computador.
+experiment-no-text = não tem [text.en], [text.pt-PT] nem [text.pt-BR]
+experiment-no-scene = nenhuma cena chamada { $scene } (uma cena incluída, ou um ficheiro .toml ao lado da experiência)
+experiment-no-control = nenhum controlo tem como rótulo a mensagem “{ $control }” (indique o id de um rótulo, como light-z ou material-shininess)
+experiment-scene-refused = a cena { $scene } não é lida: { $why }
+experiment-scene-not-beside = uma experiência nomeia uma cena incluída (como worksheet-mview1) ou um ficheiro de cena ao seu lado só pelo nome (como minha-cena.toml), não uma pasta, um caminho ou uma ligação
+experiment-scene-error = a cena { $scene } não carrega: { $error }
+experiment-changes-refused = as suas [changes] postas sobre a cena { $scene } não dão uma cena: { $error }
+experiment-folder-full = não lida: da pasta das experiências lê-se no máximo { $most } ao todo, contando as suas cenas
+experiment-too-many = não lida: leem-se no máximo { $most } experiências da pasta
+file-kind-experiments = ficheiros de experiências
+panels-heading = Painéis e janelas
+arithmetic-heading = Aritmética
+file-menu-hover = O ficheiro da cena, exportar, desfazer e refazer
+redbook-teapots = Bules do Red Book
+compare = Comparar
+compare-hover = Fixa a cena como A; muda o que quiseres e vê A e B lado a lado
+director = Vista do realizador
+director-hover = A cena vista de fora: o olho e o seu tronco de visão, as luzes com os seus anéis e cones, o vértice do cálculo com N, L, V e H, no espaço do objeto, do mundo ou do olho
+director-space = Espaço
+director-eye = olho
+director-vertex = vértice
+director-light = luz { $n }
+director-legend = no vértice, todos do mesmo comprimento; quadrado azul: o plano próximo (o viewport); quadrado verde: a superfície no vértice. Arraste uma luz ou o olho para o mover; arraste noutro sítio para rodar; role para aproximar.
+director-naive-normal = A ponteado, em azul-claro: M n, a normal transformada como um ponto, a { $degrees }° da normal verdadeira (M^-1)^T n, que continua perpendicular à superfície.
+director-rules-naive = As regras desta cena (as da ficha) iluminam o vértice com M n; as do OpenGL usam (M^-1)^T n.
+director-ring = Luz { $n }: 1/at, o fator de atenuação, cai para { $percent } % à distância { $distance } (um anel).
+wrong-title = O que está errado nesta imagem?
+wrong-intro = Cada ficha mostra uma esfera desenhada certa e desenhada com um erro. Escolha o erro; a chave explica-o com os números da sonda de píxel.
+wrong-sheet-title = O que está errado nesta imagem? ({ $number })
+wrong-drawn-right = Desenhada certa
+wrong-drawn-wrong = Desenhada com um erro
+wrong-question = Que erro produz a imagem da direita? Assinale-o e diga o que na imagem o mostra.
+wrong-written = { $count } imagens com um erro cada, com as chaves, em { $out }
+wrong-quiz-hover = Uma esfera desenhada certa e desenhada com um erro: escolha o erro
+wrong-check = Verificar
+wrong-right-answer = Certo.
+wrong-wrong-answer = Não é esse. A chave:
+wrong-back = Voltar ao cálculo
+share-summary = um link de { $length } caracteres: a cena vai no próprio link
+share-window = Partilhar esta cena
+share-menu = Partilhar ligação…
+share-menu-hover = A cena como ligação e código QR, para a turma abrir num navegador (nada fica guardado num servidor: a cena vai na própria ligação)
+share-page = Página que a ligação abre
+share-page-hover = Onde a versão para o navegador está publicada (vazio: esta página, num navegador; senão, o sítio do projeto)
+share-in-language = Abrir em { $lang }
+share-presenting = Abrir em modo de apresentação
+share-channel = Abrir a mostrar { $term }
+share-length = { $length } caracteres: a cena vai na própria ligação
+share-copy = Copiar ligação
+share-copy-hover = Põe a ligação na área de transferência, para colar no chat ou na página da turma
+share-copied = Ligação copiada ({ $length } caracteres): cole-a para a turma, ou deixe-a ler o código.
+share-qr = Código QR da ligação
+share-qr-too-long = A ligação é longa demais para um código QR; copie-a.
+err-share-lang = língua desconhecida { $value }: en, pt-PT ou pt-BR
+share-opened = o link partilhado ({ $name })
+share-not-opened = O link partilhado não foi aberto: { $why }. Esta é a cena que tinha.
+share-needs-mesh = A cena da ligação mostra a malha { $name }, que uma ligação não leva: abra ou largue { $name } para a ver (até lá, a esfera toma o seu lugar).
+mesh-not-kept = (Não fica guardada para quando a página for recarregada: { $why }; abra-a de novo depois disso.)
+mesh-too-large-to-keep = comprimida, tem { $packed } caracteres, e a página guarda no máximo { $most }
+mesh-not-restored = Não foi possível ler de novo a malha { $name } que esta página guardou ({ $why }): abra-a outra vez.
+quiz = Teste
+quiz-hover = Cada valor do cálculo atrás de um campo: escreve-os passo a passo
+shader-hover = O programa GLSL ou WGSL em que esta cena se compila: só as etapas de que precisa
+precision = Precisão:
+f32-hover = Calcular em precisão simples, como o OpenGL
+f64-hover = Calcular em precisão dupla
+cost-of-accuracy = Custo da exatidão
+cost-hover = O que cada sombreamento, tesselação e aproximação custa em tempo e em erro
+help-button = Ajuda (F1)
+undo-what = Desfazer: { $what } (Ctrl+Z)
+redo-what = Refazer: { $what } (Ctrl+Shift+Z, Ctrl+Y)
+undo-button = ⟲ Desfazer
+redo-button = ⟳ Refazer
+nothing-to-undo = Nada a desfazer
+nothing-to-redo = Nada a refazer
+could-not-evaluate = Não foi possível calcular a cena ({ $error }); de volta à ficha.
+keyboard-shortcuts = Atalhos de teclado
+vectors-at-vertex = Vetores no vértice
+reflection-lobe = Lóbulo de reflexão
+session-not-saved = Não foi possível guardar a sessão: { $error }.
+no-session-folder = Não há pasta onde guardar a sessão (HOME não está definida): esta janela não guardará a sua sessão.
+
+## presets
+
+preset-group-worksheet = A ficha
+preset-group-phong-demo = A demo de Phong
+preset-group-more = Mais cenas
+preset-worksheet = Ficha, { $modelview }
+preset-phong-demo = Demo de Phong
+preset-spotlight = Foco
+preset-three-lights = Três luzes
+preset-of-set-color = ofSetColor com iluminação
+preset-gouraud-misses-the-highlight = Porque o Gouraud falha o brilho
+
+## controls
+
+controls-rules = Regras
+controls-lights = Luzes
+controls-material = Material
+controls-light-model = Modelo de iluminação
+controls-vertex = Vértice
+controls-camera = Câmara (modelview)
+rule-set = Regras de cálculo
+specular-model = Modelo especular
+rules-opengl-summary = Emissão + ambiente da cena + as componentes ambiente, difusa e especular de cada luz (OpenGL 2.1, 2.14.1).
+rules-worksheet-summary = A ficha de trabalho: sem ambiente da cena nem emissão; difusa 0 além de 90 graus, especular 0 além de 90 graus.
+rules-demo-summary = O shader da demo de Phong: sem ambiente da cena nem emissão, pow(max(R.V, 0), e) sem outra condição.
+placement-eye = o olho (move-se com a câmara)
+placement-world = o mundo
+placement-object = o objeto (roda com ele)
+placement-matrix = uma matriz escrita
+add-light = Juntar luz
+remove-light = Remover luz
+lights-of-max = { $count } de { $max }
+no-lights = Sem luzes: restam apenas a emissão e o ambiente da cena.
+directional = Direcional (w = 0)
+light-x = Luz x
+light-y = Luz y
+light-z = Luz z
+light-fixed-to = Luz presa a
+attenuation-positional-only = A atenuação só vale para luz pontual ou foco.
+spotlight = Foco
+spotlight-hover = Um foco novo aponta para o objeto da vista
+material-custom = personalizado
+material-preset = Material pré-definido
+back-preset = Verso pré-definido
+back-ambient = Verso: ambiente
+back-diffuse = Verso: difusa
+back-specular = Verso: especular
+back-emission = Verso: emissão
+back-shininess = Verso: brilho (ns)
+separate-back-material = Material próprio para o verso
+color-material = Cor do material (GL_COLOR_MATERIAL)
+color-material-hover = As cores do material que acompanha seguem a cor corrente (glColor), como o ofSetColor do openFrameworks faz sob ofEnableLighting
+color-material-mode = Acompanha
+color-material-face = Faces
+color-material-color = Cor corrente (glColor)
+color-material-tracked = O GL_COLOR_MATERIAL faz desta a cor corrente: o que aqui está volta quando for desligado
+separate-specular = Cor especular separada
+normals-as-is = como transformadas
+normals = Normais
+normalise-normal = Normalizar a normal
+camera-eye = Olho
+camera-centre = Centro
+camera-up = Cima
+window-width = Largura da janela
+window-height = Altura da janela
+of-eye-distance = Distância do olho (H/2)/tan(30 graus) = { $distance }
+object-placement = Posição do objeto (do objeto para o mundo)
+object-matrix = Objeto
+matrix-column = coluna { $column }
+matrix-row = { $name } linha { $row }
+matrix-cell = { $name } linha { $row } coluna { $column }
+mview1-what = a câmara do openFrameworks, translação em z de −665,108
+mview2-what = uma rotação em torno de x, tal como impressa (uma entrada com menos um algarismo, −0,85749)
+mview34-what = construída com 15/17 e 8/17, tal como a ficha a imprime
+mview5-what = uma rotação 3-4-5 em torno de x e translação em z de −960
+
+## result
+
+unclamped = sem limite
+unclamped-hover = A cor primária tal como a equação a dá.
+clamped = limitada a [0, 1]
+clamped-hover = Primária + secundária rgb, limitada a [0, 1]: o que um fragmento recebe.
+dark-vertex = um vértice escuro: { $percent } % do brilho do branco
+dark-vertex-angle = um vértice escuro: { $percent } % do brilho do branco; a luz chega-lhe a { $angle }°
+dark-vertex-short = vértice escuro
+large-value-hover = A cor desenhada (limitada a [0, 1]), r g b com duas casas decimais
+secondary = secundária
+secondary-hover = A cor secundária (especular).
+vertex-colour = Cor do vértice
+front-face = Face da frente
+back-face = Face de trás
+colour-hidden = Escondida enquanto o teste está aberto: é a última resposta do teste, I.
+colour-hidden-teacher = O professor pode mostrá-la com "Mostrar as respostas" no teste.
+refused-kept = Recusado: { $error }. A cena mantém o último valor válido.
+history-reset = voltar à ficha
+reset-done = De volta à ficha (mview5).
+history-open = abrir { $what }
+loaded = Aberto: «{ $what }»
+undid = Desfeito: { $what }.
+redid = Refeito: { $what }.
+history-no-change = sem alteração
+history-and-more = { $field } e mais { $count }
+history-light-added = luz { $index } acrescentada
+history-light-removed = luz { $index } removida
+history-none = (nenhum)
+history-on = ligado
+history-off = desligado
+# A changed field of the scene, as the undo history names it. $field is the scene file's
+# path with dots as dashes and a light's number taken out (light-position of light $index).
+history-field = { $field ->
+    [name] nome da cena
+    [rules] { rule-set }
+    [specular] { specular-model }
+    [normals] { normals }
+    [light_model-ambient] { scene-ambient }
+    [light_model-local_viewer] { local-viewer }
+    [light_model-two_sided] { two-sided }
+    [light_model-separate_specular] { separate-specular }
+    [camera] { camera }
+    [object_matrix] { object-placement }
+    [material-preset] material
+    [material-ambient] { material-ambient }
+    [material-diffuse] { material-diffuse }
+    [material-specular] { material-specular }
+    [material-emission] { material-emission }
+    [material-shininess] { material-shininess }
+    [back_material] { separate-back-material }
+    [color_material] { color-material }
+    [light-position] luz { $index }: posição
+    [light-ambient] luz { $index }: ambiente
+    [light-diffuse] luz { $index }: difusa
+    [light-specular] luz { $index }: especular
+    [light-spot_direction] luz { $index }: direção do foco
+    [light-spot_cutoff] luz { $index }: abertura do foco
+    [light-spot_exponent] luz { $index }: expoente do foco
+    [light-attenuation] luz { $index }: coeficientes de atenuação (k0, k1, k2)
+    [light-placement] luz { $index }: presa a
+    [vertex-position] { quantity-vertex-position }
+    [vertex-normal] { quantity-vertex-normal }
+    [view-object] objeto
+    [view-obj] { mesh-file }
+    [view-shading] sombreamento
+    [view-sphere_slices] { sphere-slices }
+    [view-sphere_stacks] { sphere-stacks }
+    [view-teapot_grid] { teapot-grid }
+    [view-cylinder_slices] { cylinder-slices }
+    [view-cylinder_stacks] { cylinder-stacks }
+    [view-cylinder_caps] tampas do cilindro
+    [view-cylinder_centered] cilindro centrado
+    [view-demo_normals] { demo-normals }
+    [view-auto_rotate] { auto-rotate }
+    [view-spin_degrees] rotação
+    [view-framing] enquadramento
+    [view-lighting_space] espaço da iluminação
+    [view-flat_normal] { flat-derivatives }
+    [view-phong_renormalize] { phong-renormalises }
+    [view-background] fundo
+    [view-camera] câmara da vista
+   *[other] a cena
+}
+not-whole = { $text } não é um número inteiro
+outside-range = { $text } está fora de { $min } a { $max }
+numbers-type-one = { $count } números: escreve um
+numbers-type-row = { $count } números: escreve um, ou todos os { $fields } da linha
+refused-esc = { $why } (Esc: volta a { $value })
+
+## help
+
+help-help = mostrar ou esconder esta ajuda
+help-present = apresentar: letra grande, os controlos numa gaveta (F5 outra vez para sair)
+help-walk-steps = percorrer os passos do cálculo, um a um (quando nenhum campo tem o teclado)
+help-zoom = ampliar, reduzir, voltar a 100 % a janela toda
+help-things-to-try = Coisas a experimentar (barra de cima): experiências num clique, cada uma com uma pergunta a que o cálculo responde.
+help-local-viewer = ligar ou desligar o observador local
+help-next-material = material clássico seguinte
+help-previous-material = material clássico anterior
+help-next-modelview = modelview seguinte da ficha (mview1..5)
+help-specular-model = modelo especular seguinte (Blinn-Phong, Phong, Blinn-Phong normalizado)
+help-next-rules = regras seguintes (OpenGL, ficha, demo de Phong)
+help-next-normals = modo seguinte das normais (como estão, normalizar, reescalar)
+help-two-sided = iluminação das duas faces ligada/desligada
+help-precision = cálculo em f32 / f64
+help-reset = voltar à ficha
+help-open = abrir o ficheiro de cena no caminho escrito
+help-save = guardar a cena no caminho escrito
+help-quit = sair (a sessão é guardada)
+help-undo = desfazer a última alteração da cena
+help-redo = refazer
+help-sphere = vista sombreada: esfera (como a demo)
+help-teapot = vista sombreada: bule
+help-cylinder = vista sombreada: cilindro
+help-gouraud = sombreamento de Gouraud (como a demo)
+help-phong = sombreamento de Phong
+help-flat = sombreamento plano (Flat)
+help-auto-rotate = rodar a vista sombreada sozinha
+help-drop = Larga um ficheiro de cena (.toml) na janela para o abrir.
+help-drag = Arrasta o gráfico dos vetores ou a vista sombreada para os rodar; usa a roda na vista sombreada para ampliar; clica na superfície para explicar esse vértice.
+help-numbers = Um campo numérico aceita ponto ou vírgula decimal e lê o que foi escrito quando se sai dele (Enter, Tab, um clique noutro sítio); um valor recusado fica a vermelho com a razão até ser corrigido ou até Esc repor o valor.
+help-undo-keys = Ctrl+Z desfaz qualquer alteração da cena. As teclas sem Ctrl não fazem nada enquanto um campo de texto tem o teclado, nem no teste.
+help-demo-title = A cena da demo de Phong: as escolhas da demo e as do OpenGL
+help-demo-space = Da demo: iluminação no espaço do objeto, luz e olho em (-4, 0, -8), por isso a luz roda com o objeto. Do OpenGL: iluminação no espaço do olho, depois da modelview (interruptor: luz presa ao mundo).
+help-demo-normals = Da demo: cada normal é normalize(posição). Do OpenGL: as normais da superfície (interruptor: as normais verdadeiras da superfície).
+help-demo-specular = Da demo: R = 2 max(N.L, 0) N - L e pow(max(V.R, 0), 100), vezes o vermelho do objeto, por isso o brilho é vermelho. Do OpenGL: o n.H de Blinn-Phong e a cor especular da luz vezes a do material (interruptor: brilho da cor da luz).
+help-demo-pipeline = Da demo: sem projeção (a imagem é o espaço de recorte), Phong sem renormalizar, Flat a partir de dFdx/dFdy por fragmento, cores interpoladas sem limite. Em Pipeline, a vista sombreada oferece as escolhas do OpenGL.
+
+## quiz
+
+quiz-input-yours = o teu { $name } = { $value }
+quiz-input-key = o { $name } da chave (ainda sem resposta)
+quiz-the-givens = os dados
+quiz-right = ✔ certo
+quiz-right-given = ✔ certo, dado o teu { $yours }
+quiz-close-key = ≈ perto: a { $percent } % da chave; dá { $digits } algarismos significativos
+quiz-close-yours = ≈ perto: a { $percent } % do que as tuas respostas anteriores dão; dá { $digits } algarismos significativos
+quiz-wrong = ✖ errado: { $formula }, com { $inputs }
+quiz-level = Nível
+quiz-levels = 1 direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
+quiz-this-scene = Testar esta cena
+quiz-this-scene-hover = Recomeçar com a cena mostrada, todos os valores escondidos
+quiz-new-exercise = Novo exercício
+quiz-new-exercise-hover = Uma cena nova deste nível, filtrada como o phonglab exercise filtra
+quiz-reveal-all = Mostrar todas as respostas
+quiz-reveal-all-hover = Mostrar o valor da chave em cada passo: nenhum conta então como certo
+quiz-clear = Limpar respostas
+quiz-clear-hover = Recomeçar este teste sem respostas
+quiz-show-answers = Mostrar as respostas (professor)
+quiz-show-answers-hover = A cor do vértice, os ângulos do gráfico e a chave de cada passo
+quiz-nothing-open = Abre um exercício (o phonglab exercise escreve-os) ou qualquer cena e carrega em "Testar esta cena", ou carrega em Novo exercício.
+quiz-instructions = { $scene }: escreve o valor de cada passo e prime Enter. Certo: a menos de { $percent } % do valor (ou { $absolute } perto de 0). Ponto ou vírgula; um vetor como 0,5; 0,3; 0,1.
+quiz-score = Pontuação: { $right } de { $all } ({ $answered ->
+    [one] 1 respondido
+   *[other] { $answered } respondidos
+}{ $shown ->
+    [0] {""}
+    [one] , 1 resposta mostrada
+   *[other] , { $shown } respostas mostradas
+})
+quiz-your-value = o teu valor
+quiz-reveal = Mostrar a resposta
+quiz-reveal-hover = Mostrar o valor da chave neste passo: deixa então de contar como certo
+quiz-not-numbers = não se lê como números: { $error }
+quiz-key = chave: { $name } = { $value }
+
+## calculation
+
+plan-heading = Plano especializado: { $computed } efeitos calculados, { $skipped } saltados
+plan-light = luz { $index }:{" "}
+plan-computed = calculado  { $what }
+plan-skipped = saltado   { $what }
+plan-program = O programa, { $stages } etapas por bloco de vértices:
+worked-calculation = Cálculo passo a passo
+copy-markdown = Copiar como Markdown
+copy-markdown-hover = Copia todos os passos como uma tabela Markdown.
+side = Face:
+not-applicable = não se aplica
+skipped-by-specialised = saltado pelo avaliador especializado: { $why }
+plot-view = Vista:
+plot-legend-halfway = vetor médio
+plot-view-hover = Ver o plano { $plane }
+
+## view
+
+pipeline = Pipeline: a do OpenGL ou a da demo
+picture = Imagem
+phong-renormalises = Phong renormaliza N
+phong-renormalises-hover = Os shaders do OpenGL normalizam a normal interpolada; o da demo não
+flat-derivatives = Flat a partir de dFdx/dFdy
+flat-derivatives-hover = O Flat da demo: cada fragmento iluminado com cross(dFdy(p), dFdx(p)); senão, uma cor por face
+correct-the-demo = Corrigir a demo:
+why-demo-differs = Porque é que a demo difere
+why-demo-differs-intro = Cada interruptor ligado corrige a demo numa segunda imagem, à direita da sua.
+sphere-slices = Fatias da esfera
+sphere-stacks = Camadas da esfera
+teapot-grid = Grelha do bule
+cylinder-slices = Fatias do cilindro
+cylinder-stacks = Camadas do cilindro
+caps = Tampas
+mesh-triangles = { $count } triângulos: { $notes }
+key-hint = tecla { $key }
+mesh-tip = { $path } (abre outra em Opções da vista, ou larga um ficheiro .obj)
+close-mesh = Fechar a tua malha
+close-mesh-hover = Fechar a tua malha: a barra de cima deixa de a oferecer (fica no seu ficheiro; mudar de cena mantém-na até lá)
+auto-rotate = Rodar sozinho
+auto-rotate-hover = 0,5 graus por imagem, como a demo (tecla A)
+demo-normals = Normais da demo
+demo-normals-hover = normalize(posição), como a demo: erradas para o bule e o cilindro
+heat-map = Mapa de calor do erro
+heat-map-hover = Ao lado da vista: a distância de cada píxel ao Phong por píxel em f64 numa malha muito fina
+view-options = Opções da vista
+view-options-hover = O renderizador, a resolução da malha, as escolhas do pipeline, um ficheiro de malha
+mesh-file = Ficheiro da malha (.obj):
+show-mesh = Mostrar a malha
+show-mesh-hover = Sombrear este ficheiro OBJ na vista (Enter no campo)
+shaded-cannot-render = A vista sombreada não consegue desenhar esta cena
+corrected-cannot-render = A vista corrigida não consegue desenhar
+the-demos-own = {" "}(a da própria demo)
+picture-hover = Arrasta para rodar, usa a roda para ampliar, clica na superfície para que esse vértice seja o do cálculo
+corrected = Corrigida: { $fixes }
+corrected-short = Corrigida ({ $count } de { $all })
+picked-vertex = Vértice { $index } de { $object }: o cálculo passa a usá-lo, tal como a vista sombreada o ilumina.
+light-behind = luz { $index } (atrás da câmara)
+light-name = luz { $index }
+light-drag = Luz { $index }: arrasta para a mover
+arrows-faded = Esbatida, ponta aberta: o vetor aponta para longe de ti, ou para dentro da superfície.
+renderer = Desenho
+renderer-hover = O desenho no CPU é a referência; a GPU corre o WGSL gerado para a cena (janela Shader)
+renderer-auto = Automático (GPU, se for real)
+renderer-cpu = CPU (a referência)
+renderer-gpu = GPU (mesmo por software)
+drawn-gpu = Desenhado na GPU ({ $adapter }) pelo WGSL gerado para a cena.
+drawn-cpu = Desenhado pelo CPU: { $why }.
+gpu-none = não há GPU aqui
+caption-gpu = na GPU ({ $adapter })
+caption-cpu = { $ms } ms por imagem no CPU
+caption-cpu-relit = só iluminada de novo, nada do que se desenha se moveu: { $ms } ms por imagem no CPU
+caption-cpu-coarse = uma cópia com { $triangles } dos { $all } triângulos enquanto a câmara roda: { $ms } ms por imagem no CPU
+caption-cpu-coarse-spin = uma cópia com { $triangles } dos { $all } triângulos enquanto o objeto gira: { $ms } ms por imagem no CPU
+cpu-flat = o sombreamento Flat é desenhado no CPU (o gerador escreve Gouraud e Phong)
+cpu-approximate-pow = uma potência aproximada estuda-se no CPU (a pow da GPU é a sua)
+cpu-no-adapter = não há adaptador wgpu aqui (sem ecrã, ou outro backend)
+cpu-chosen = o desenho no CPU está escolhido em Opções da vista
+cpu-software-adapter = o adaptador ({ $adapter }) é por software, não mais rápido do que o CPU
+
+## files
+
+not-opened-worksheet = Não aberto: { $why }. Em vez disso, mostra-se a ficha.
+not-opened = Não aberto: { $why }. A cena atual não mudou.
+mesh-summary = { $triangles } triângulos, { $vertices } vértices; { $notes }
+opened-mesh = Malha aberta: { $path }: { $what }.
+not-text = { $path } não é um ficheiro de texto
+saved = Guardado: { $path }.
+not-saved = Não guardado: { $error }.
+scene-file = Ficheiro de cena:
+scene-file-hint = caminho/para/cena.toml
+open = Abrir
+open-hover = Abrir o ficheiro de cena neste caminho (Ctrl+O)
+save = Guardar
+save-hover = Guardar a cena neste caminho (Ctrl+S)
+open-dialog = Abrir…
+open-dialog-hover = Escolher um ficheiro de cena na janela de ficheiros do sistema
+dialog-no-session-bus = A janela de ficheiros do sistema não pode abrir aqui (não há bus de sessão para o seu portal): escolhe o ficheiro no seletor do phonglab.
+dialog-did-not-open = A janela de ficheiros do sistema não abriu (nenhum portal respondeu): escolhe o ficheiro no seletor do phonglab.
+dialog-in-app = Escolhe o ficheiro aqui.
+chooser-title = Escolher um ficheiro
+chooser-folder = Pasta:
+chooser-up = Acima
+chooser-name = Nome do ficheiro:
+chooser-cancel = Cancelar
+chooser-empty = (não há aqui pastas nem ficheiros deste tipo)
+save-as = Guardar como…
+save-as-hover = Escolher onde guardar na janela de ficheiros do sistema
+drop-to-open = Larga um ficheiro de cena (.toml) ou uma malha (.obj) para o abrir
+cannot-read = não é possível ler { $path }: { $error }
+dropped-several = {" "}(foram largados { $count } ficheiros; só se abre o primeiro.)
+type-path-first = Escreve primeiro o caminho do ficheiro de cena.
+
+## browser
+
+browser-no-storage = este navegador não guarda dados locais para a página
+browser-storage-refused = o navegador recusou guardar a sessão ({ $error })
+browser-download-failed = o navegador não conseguiu oferecer a transferência ({ $error })
+open-browser-hover = Escolher neste computador um ficheiro de cena (.toml), uma malha (.obj) ou um caderno ou programa da ficha (.ipynb, .py)
+save-download-hover = Transferir a cena como ficheiro (.toml)
+downloaded = { $name } oferecido para transferir.
+
+## export
+
+export = Exportar
+export-png = Vista sombreada em PNG ({ $size }×{ $size })
+export-png-hover = A vista sombreada desenhada no CPU, como o phonglab render a desenha
+export-exercises = Fichas de exercícios
+export-seed = Semente
+export-count = Exercícios
+export-level = Nível
+export-levels = 1 direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
+export-exercises-save = Guardar as fichas (.zip)
+export-exercises-hover = As fichas e as respostas, em Markdown, ficheiros de cena e os dois PDF (sheets.pdf para distribuir, keys.pdf para o professor), nesta língua
+exported = Guardado { $what }: { $at }
+not-exported = { $what } não foi guardado: { $error }
+
+## student-code
+
+err-export-folder = openframeworks escreve três ficheiros: indique uma pasta com -o (vão para a sua src/)
+export-written = escrito: { $path }
+bench-mesh-written = malha escrita: { $path } ({ $triangles } triângulos, { $vertices } vértices)
+bench-coarse-made = { $object }: a cópia grosseira tem { $triangles } dos { $all } triângulos, feita em { $ms } ms
+import-written = cena escrita: { $path } ({ $lights })
+budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçamento de memória de { $budget } ({ $from }); --memory-budget TAMANHO aumenta-o (por exemplo --memory-budget 16G)
+budget-from-option = como pede --memory-budget
+budget-from-system = metade da memória disponível
+budget-size-refused = { $value }: escreva um tamanho como 512M, 8G ou 1,5G
+budget-what-render = uma imagem de { $width } x { $height } com { $count ->
+        [one] um triângulo
+       *[other] { $triangles } triângulos
+    }
+budget-what-window = a janela a { $width } x { $height } píxeis
+budget-what-cost = o estudo de { $count ->
+    [one] um objeto
+   *[other] { $count } objetos
+} a { $size } x { $size } píxeis
+budget-what-eval = iluminar { $count ->
+    [one] um caso de { $largest }
+   *[other] { $count } casos, um de cada vez, o maior com { $largest }
+} de JSON
+file-kind-code = cadernos e programas
+cli-export = Escrever uma cena como o código do próprio aluno: o caderno da ficha, um programa PyOpenGL, uma app openFrameworks, ou o GLSL
+cli-import = Ler um caderno (.ipynb) ou programa em Python (.py) no estilo da ficha para um ficheiro de cena
+cli-arg-export-scene = Um ficheiro de cena (TOML); por omissão: a cena da ficha
+cli-arg-export-to = O que escrever
+cli-arg-export-output = Onde: um ficheiro (uma pasta para openframeworks: os ficheiros vão para a sua src/); sem isto o texto vai para a saída padrão
+cli-arg-import-file = Um caderno (.ipynb) ou programa em Python (.py) no estilo da ficha
+cli-arg-import-output = O ficheiro de cena a escrever (TOML)
+cli-value-notebook = o caderno Jupyter da ficha (.ipynb), com os valores desta cena
+cli-value-pyopengl = um programa PyOpenGL + GLUT no estilo da demo de Phong (.py)
+cli-value-openframeworks = ofApp.h, ofApp.cpp e main.cpp para openFrameworks 0.12 (uma pasta)
+cli-value-glsl = o GLSL que o `phonglab shader` imprime
+export-code = O seu próprio código
+export-copy = Copiar
+export-copy-hover = Copiar para a área de transferência (o caderno como um só programa, os ficheiros do openFrameworks um após o outro)
+export-save = Guardar…
+export-save-hover = Guardar como ficheiro (openFrameworks: um zip da pasta src/ do projeto)
+export-copied = Copiado: { $what }
+export-nothing = nada para escrever
+export-import-hint = Para o caminho inverso, abra ou largue um caderno (.ipynb) ou programa (.py) da ficha: os seus valores passam a ser a cena.
+imported = Aberto { $path } como cena (as regras da ficha, salvo se ele disser outras).{ $notices }
+
+## plots
+
+plot-drag = Arrasta para rodar (guinada { $yaw }°, inclinação { $pitch }°)
+lobe-no-light = Nenhuma luz com L definido neste vértice: nada a desenhar.
+lobe-axis = φ, graus a partir de N
+lobe-luminance = { $name } = { $value } (a luminância de { $colour })
+lobe-caption = Luz { $light }: θ = { $theta }°, n = { $n }, { $kd }, { $ks }; o V do vértice em φ = { $phi }°
+lobe-diffuse = difusa kd cos θ
+lobe-normalised = Blinn-Phong × (n+8)/8π
+lobe-vertex-v = o V do vértice
+
+## compare
+
+compare-same = A e B são a mesma cena: muda qualquer coisa e B acompanha
+compare-one = B: { $setting } { $b }; A: { $a }
+compare-several = A e B diferem em { $names }
+compare-many = A e B diferem em { $count } parâmetros
+compare-view = vista sombreada de { $which }, { $ms } ms
+compare-cannot-render = a vista de { $which } não consegue desenhar: { $error }
+compare-pin-again = Fixar de novo a cena atual como A
+compare-pin = Fixar a cena atual como A
+compare-pinned = Fixada como A: agora muda qualquer coisa e B acompanha.
+compare-close = Fechar a comparação
+compare-difference = Diferença |A − B|
+compare-difference-hover = Uma terceira imagem: quanto diferem os píxeis de A e de B, ampliado
+compare-difference-view = |A − B| × { $gain }
+compare-difference-legend = A diferença de cada canal, vezes { $gain }: um canal fica no máximo a partir de { $full }/255 (branco onde os três ficam, preto onde A e B coincidem). { $percent } % dos píxeis do objeto diferem mais de { $visible }/255; a maior diferença é { $largest }/255.
+compare-step-1 = 1. Fixa a cena atual como A (o botão acima).
+compare-step-2 = 2. Muda qualquer coisa: o sombreamento, f32 ou f64, o material, uma luz.
+compare-step-3 = 3. A e B aparecem lado a lado, com os passos que diferem primeiro.
+compare-a-fails = A não pode ser calculada: { $error }
+compare-differing = { $differing } de { $all } passos diferem: vêm primeiro, destacados.
+compare-none-differ = Nada difere: A e B dão o mesmo valor em cada um dos { $all } passos.
+copy = Copiar
+copy-program-hover = Copiar o programa para a área de transferência
+shader-stages-phong = Sombreamento de Phong (por fragmento): só as etapas de que esta cena precisa
+shader-stages-vertex = Sombreamento por vértice: só as etapas de que esta cena precisa
+shader-last-change = A última alteração juntou { $added } linhas (destacadas) e removeu { $removed }.
+shader-removed = Removido pela última alteração:
+session-other-window = Outra janela do phonglab está aberta nesta sessão ({ $dir }): esta janela mostra a última cena guardada mas não guardará a sua sessão. Usa Guardar para manter o teu trabalho num ficheiro.
+session-folder-unusable = A pasta da sessão { $dir } não pode ser usada ({ $error }): esta janela não guardará a sua sessão.
+session-file-is-folder = O ficheiro da sessão { $path } é uma pasta, por isso a última sessão não pode ser lida e esta janela não guardará a sua sessão. Remove ou muda o nome a essa pasta.
+session-unreadable-kept = A sessão guardada não pôde ser lida ({ $why }); começa-se pela ficha. O ficheiro fica guardado como { $kept }.
+session-unreadable-not-kept = A sessão guardada { $path } não pôde ser lida ({ $why }) nem posta de lado ({ $error }); fica como está, sem nunca ser escrita por cima: começa-se pela ficha, e esta janela guarda a sua sessão em { $instead }.
+session-unreadable = A sessão guardada não pôde ser lida ({ $why }).
+session-not-a-file = não é um ficheiro normal: um pipe, um dispositivo ou um socket
+session-too-large = tem { $size }, e uma sessão tem no máximo { $cap }
+session-scene-kept = A cena fica guardada em { $path }.
+session-scene-not-kept = Não pôde ser guardada ({ $error }).
+session-no-folder = Não há pasta onde a guardar.
+session-scene-not-restored = A cena da última sessão não pôde ser reposta ({ $error }); começa-se pela ficha. { $kept }
+
+## sheets
+
+sheet-scene-file = Ficheiro de cena: `{ $file }`.
+key-title = Respostas: { $name }
+key-intro = Tal como `phonglab explain { $file }` as imprime (8 algarismos significativos).
+worked-calculation-of = Cálculo passo a passo: { $name }
+exercise-zero-title = Exercício 0: a ficha
+exercise-zero-name = a ficha
+exercise-zero-intro = A própria cena da ficha (bronze, a luz em (0, 0, 90), o vértice (-512, -384, 0) com normal (0, 0, 1)) com cada uma das suas cinco modelviews, `mview1` a `mview5`. Calcula todos os passos para cada uma.
+answers = respostas
+index-directional-only = só uma luz direcional
+index-title = Exercícios, semente { $seed }
+index-intro = Efeitos: { $effects }. Regras: { $rules }. Cada ficha tem o seu ficheiro de cena (abre-o no phonglab) e as suas respostas.
+index-printable = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir: impresso frente e verso, cada exercício fica na sua própria folha) e [keys.pdf](keys.pdf) (as respostas, para o professor).
+index-printable-one-sided = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir: uma página por exercício, por isso impresso só de um lado cada exercício fica na sua própria folha) e [keys.pdf](keys.pdf) (as respostas, para o professor).
+
+## pdf
+
+sheet-class = Turma
+sheet-name = Nome
+sheet-date = Data
+pdf-page = página { $page } de { $pages }
+pdf-blank-page = Esta página foi deixada em branco propositadamente.
+
+## cli
+
+exercises-written =
+    { $count ->
+    [one] 1 exercício em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
+    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
+    }
+
+## cli-out
+
+render-summary = { $path }: { $size } px, { $triangles } triângulos, { $covered } % coberto, { $evaluations } cálculos de iluminação, { $ms } ms
+render-channel-summary = canal { $channel } em { $map }: de { $low } a { $high }
+probe-uncovered = O píxel ({ $x }, { $y }) não mostra nenhuma superfície (é o fundo).
+err-probe-at = esperava o píxel como X,Y (dois números inteiros), recebi { $value }
+err-probe-outside = o píxel ({ $x }, { $y }) está fora da imagem de { $size }x{ $size }
+probe = Sonda
+probe-hover = Porque é que este píxel tem esta cor? Aponte para a imagem; clique para fixar um píxel
+probe-window = Sonda de píxel
+probe-follows = Segue o ponteiro sobre a imagem; clique para fixar um píxel.
+probe-pinned = Fixada no píxel clicado.
+probe-unpin = Voltar a seguir o ponteiro
+probe-hover-the-picture = Aponte para a imagem sombreada.
+probe-open-vertex = Abrir o cálculo do vértice { $vertex }
+channel-show = Mostrar
+channel-picture = A imagem
+channel-hover = Um termo da equação de iluminação em cada píxel, em falsa cor (viridis), com a sua escala
+channel-caption = termo { $channel }
+channel-legend-normal = A normal como cor: x a vermelho, y a verde, z a azul, de -1 (escuro) a 1 (claro)
+channel-legend-luminance = { $channel }: a luminância (Rec. 709) de um termo de cor, antes de limitar
+channel-legend-range = { $what }, de { $low } a { $high }
+channel-legend-attenuation = 1/at: o fator pelo qual os termos desta luz são multiplicados (at = k0 + k1 d + k2 d², o da ficha, divide)
+channel-legend-spot = spot: o fator pelo qual os termos desta luz são multiplicados (0 fora do cone, 1 sem foco)
+channel-legend-n-dot-l = N·L = cos θ: um cosseno, abaixo de 0 onde a superfície está voltada para o lado oposto à luz
+channel-legend-n-dot-h = N·H = cos β: o cosseno especular antes da potência (R·V com a regra de Phong)
+channel-legend-light-count = Quantas luzes chegam ao píxel: uma contagem
+case-rules-note = nota: { $path } usa as regras { $rules }; um caso segue sempre as do OpenGL
+cost-wrote = escrito { $files } em { $out }
+
+## io-errors
+
+io-not-found = não existe
+io-permission-denied = sem permissão
+io-storage-full = o disco está cheio
+io-is-a-directory = é uma pasta
+io-not-a-directory = uma parte do caminho não é uma pasta
+io-read-only = o sistema de ficheiros é só de leitura
+io-already-exists = já existe
+io-invalid-name = não é um nome de ficheiro
+write-error = não foi possível escrever { $path }: { $what }: { $reason }; { $kept }
+write-step-write = escrever
+write-step-close = fechar
+write-step-sync = sincronizar com o disco
+write-step-create = criar
+write-step-rename = mudar o nome
+write-step-name = nome
+write-step-create-folder = criar a pasta
+write-step-create-file-in = criar um ficheiro em
+write-step-create-staging = criar uma pasta temporária em
+write-step-list = listar
+write-step-lock-folder = bloquear a pasta
+write-step-recover = terminar o conjunto deixado por uma execução interrompida em
+write-step-remove-journal = remover o diário de
+write-step-killed = parar (morto) ao escrever
+write-kept-file = o ficheiro que lá estava (se havia) não mudou
+write-kept-nothing = nada foi escrito
+write-kept-folder = a pasta não mudou
+write-kept-recoverable = o conjunto antigo ou o novo está completo, e a próxima execução nesta pasta termina o que foi começado
+write-not-a-regular-file = não é um ficheiro normal (uma ligação para nada, uma pasta, um dispositivo ou um pipe): o phonglab só escreve num ficheiro normal ou num novo
+set-folder-is-a-link = uma ligação para outra pasta: o phonglab só escreve um conjunto de ficheiros numa pasta verdadeira, nunca através de uma ligação
+set-left-alone = { $name } em { $dir } ficou como estava: { $why }
+set-why-loose-journal = um diário que o phonglab não escreveu ali (posto por alguém, ou deixado por uma versão antiga do phonglab); nada do que nomeia foi tocado
+set-why-not-a-folder = tem o nome das pastas temporárias do phonglab mas não é uma pasta criada pelo phonglab; nada foi seguido nem tocado
+set-why-no-journal = uma pasta com o nome das pastas temporárias do phonglab, sem o diário do phonglab; nada do que contém foi tocado
+set-untrusted-journal = o seu diário não foi escrito ali pelo phonglab ({ $why }); nada foi tocado
+set-why-not-a-journal = não é um diário do phonglab
+set-why-other-folder = não nomeia a pasta onde está
+set-why-outside = nomeia ficheiros fora da sua pasta
+set-why-unfinished = os ficheiros de uma execução interrompida não puderam ser postos no lugar sem substituir ficheiros alterados ou criados depois ({ $names }); os novos ficam guardados nessa pasta
+read-cannot = não foi possível ler { $path }: { $reason }
+read-not-a-file = { $path } não é um ficheiro normal
+read-too-large = { $path } tem { $size }; o phonglab lê { $what } de no máximo { $cap }
+read-not-utf8 = { $path } não é texto UTF-8 (byte { $byte })
+file-kind-scenes = ficheiros de cena
+file-kind-cases = ficheiros de casos
+png-cannot-encode = não foi possível codificar o PNG
+png-too-large = imagem grande demais
+png-colour-type = { $path }: tipo de cor inesperado { $kind }
+pdf-cannot-write = não foi possível escrever o PDF: { $error }
+err-scale = --scale { $scale }: de 0,5 a 4
+err-spin = --spin tem de ser um número finito de graus
+err-threads = --threads { $asked }: esta máquina corre no máximo { $most } threads ao mesmo tempo; peça { $most } ou menos (0: um por núcleo)
+err-no-such-light = --light { $light }: { $count ->
+    [0] a cena não tem nenhuma luz
+    [one] a cena tem uma luz, a número 0
+   *[other] a cena tem { $count } luzes, numeradas de 0 a { $last }
+}
+err-study-stopped = o estudo parou
+err-rules = --rules { $value }: experimente worksheet ou opengl
+err-effects = --effects: { $value } não é nenhum de { $names }
+err-level = --level vai de 1 a 4
+err-target = --target { $value }: experimente glsl ou wgsl
+err-shading = --shading { $value }: experimente gouraud ou phong
+err-not-case-file = não é um ficheiro de casos
+err-cases-failed = { $failed } de { $all } casos falharam (o seu "error" diz porquê)
+err-unknown-preset = cena pronta desconhecida { $value }: experimente { $names }
+err-bench-frame-obj = --bench-frame desenha a esfera, o bule ou o cilindro de referência; use --obj sem ele
+err-scene-to-render = a cena a desenhar
+err-bench-object = --object { $value }: os objetos de referência são sphere (esfera) e teapot (bule)
+err-bench-shading = --shading { $value }: os sombreamentos são gouraud, phong e flat
+err-bench-slices = --slices { $value }: a esfera aceita de 3 a 2048 fatias (a de referência tem 50)
+err-bench-scan = --scan { $value }: a malha tipo digitalização aceita níveis de 0 a 9 (o 8 dá 1 310 720 triângulos)
+err-study-timeout = o estudo não terminou em 5 minutos
+err-output-is-input = { $output } é { $what } { $input }, que este comando lê (o mesmo ficheiro): escrevê-lo destruiria o que é lido; escolha outra saída
+err-output-is-other-output = { $output } é a outra saída { $other } (o mesmo ficheiro): uma seria escrita por cima da outra; escolha dois ficheiros diferentes
+input-kind-input = a entrada
+input-kind-scene = a cena
+input-kind-mesh = a malha
+input-kind-code = o caderno ou programa
+input-kind-cases = o ficheiro de casos
+err-needs-window = este comando desenha a janela: execute-o com o programa phonglab
+screenshot-summary = { $path }: { $width }x{ $height } px; imagens de { $pictures } pontos, o círculo unitário do gráfico com { $circle } pontos de diâmetro, { $empty } % vazio
+screenshot-none = nenhum
+bench-render-header = phonglab bench render: { $size }x{ $size } px, { $frames } imagens, { $threads } threads; ms médios das etapas: vértices, preparação, rasterização, resolução
+bench-lighting-header = phonglab bench lighting: { $vertices } vértices, a melhor de { $repeats }, uma thread, f32
+bench-memory-floor = limite da memória: os mesmos arrays lidos e escritos sem iluminação, { $ns } ns por vértice ({ $gbs } GB/s dos { $bytes } bytes que um vértice move)
+bench-stages-header = onde se gasta o tempo especializado (ns por vértice; ler o relógio soma ~0,2 por etapa)
+bench-ui-present-header = phonglab bench ui --present: { $width }x{ $height } pontos, modo de apresentação com a gaveta dos controlos aberta, { $frames } imagens por caso; em cada imagem o z da luz move-se como o move um slider arrastado; ms de CPU (o layout inclui o cálculo da cena e o desenho da vista sombreada)
+bench-ui-header = phonglab bench ui: { $width }x{ $height } pontos, todos os painéis abertos, { $frames } imagens por caso, ms de CPU (o layout inclui o cálculo da cena e o desenho da vista sombreada quando mudou)
+err-lang = { $value }: o phonglab fala en, pt-PT e pt-BR
+err-decimal = { $value }: point (ponto) ou comma (vírgula)
+
+## cost
+
+cost-axis-ms = ms por imagem (log)
+cost-axis-error = erro médio, 1/255 (log)
+cost-rounding = arredondamento a 8 bits
+cost-variant = variante
+cost-triangles = triângulos
+cost-ms = ms/imagem
+cost-mean = média /255
+cost-max = máx. /255
+cost-cheapest = O mais barato com menos de 1 % dos píxeis a mais de 1/255: { $variant } ({ $triangles } triângulos), { $ms } ms por imagem.
+cost-none-within = Nenhum sombreamento estudado fica a menos de 1/255 em 99 % dos píxeis: a silhueta ou o brilho pedem uma malha mais fina.
+cost-precision = f32 contra f64 em { $vertices } vértices: no máximo { $apart } de diferença ({ $shown }/255 depois de limitar); o motor geral leva { $f32 } ns (f32) e { $f64 } ns (f64) por vértice, o especializado { $specialised } ns.
+cost-intro = Cada sombreamento em cinco tesselações do objeto atual, cronometrado e comparado com uma referência: Phong por píxel em f64 numa malha muito fina. Também Phong em f32 na própria malha da referência (o f64 muda algo visível?) e as aproximações mais usadas.
+cost-run = Correr o estudo
+cancel = Cancelar
+cost-about = { $about } ({ $size }x{ $size } px, tempos medidos com a aplicação a correr)
+cost-table = Tabela
+heat-map-computing = Mapa de calor do erro: a calcular a referência...
+heat-map-caption = Erro face à referência f64: média { $mean }/255, máximo { $max }/255, { $share } % dos píxeis > 1/255 (branco: { $white }/255)
+cost-failed = O estudo falhou: { $error }
+heat-map-failed = O mapa de calor falhou: { $error }
+work-starting = a começar
+work-failed = o cálculo falhou inesperadamente
+work-no-pool = sem conjunto de threads: { $error }
+work-stopped = o cálculo parou
+cost-table-title = { $object }: { $size }x{ $size } px, referência com { $triangles } triângulos (f64, por píxel); erros em 1/255 em relação a ela
+cost-over-column = >1/255 %
+cost-chart-title = { $object }: tempo por imagem contra erro médio ({ $size }x{ $size } px, referência: Phong por píxel em f64, { $triangles } triângulos)
+
+## cli
+
+cli-about = Um explorador da iluminação por vértice da função fixa do OpenGL e dos sombreamentos de Gouraud, Phong e Flat
+cli-lang = A língua do que o phonglab diz: en, pt-PT ou pt-BR (por omissão, a do sistema: LC_ALL, LC_MESSAGES ou LANG). JSON, CSV e ficheiros de cena mantêm as chaves em inglês
+cli-decimal = Como se escrevem os números para pessoas: point (0.5) ou comma (0,5); por omissão, o da língua (vírgula em português). Os números escritos leem-se com qualquer um
+cli-memory-budget = A memória que um comando pode ocupar com o que lhe é pedido (o tamanho de uma imagem, uma malha): 512M, 8G, ...; por omissão: metade da que o sistema tem disponível. Acima dela, um comando diz quanto precisa e não começa
+cli-eval = Calcular casos glref (JSON) e imprimir as cores iluminadas em JSON
+cli-explain = Imprimir o cálculo da cor de um vértice, passo a passo, pela ordem da ficha
+cli-render = Desenhar a vista sombreada (esfera, bule ou cilindro) num PNG
+cli-exercise = Escrever fichas de exercícios ao estilo da ficha, com ficheiros de cena e chaves de respostas
+cli-shader = Imprimir o shader (GLSL 3.30 ou WGSL) que desenha a vista sombreada de uma cena: só as etapas de que precisa
+cli-case = Escrever ficheiros de cena como casos glref (JSON), para os comparar com um OpenGL real
+cli-cost = O custo da exatidão: cada sombreamento e tesselação, f32 contra f64 e as aproximações habituais, cronometrados e comparados com uma referência f64 por píxel; escreve cost.csv e cost.png
+cli-bench = Medir: o desenho, a iluminação
+cli-screenshot = Desenhar a janela inteira sem ecrã nem GPU num PNG: para diapositivos, fichas e testes
+
+## cli-args
+
+cli-usage = Utilização:
+cli-heading-commands = Comandos
+cli-heading-arguments = Argumentos
+cli-heading-options = Opções
+cli-flag-help = Mostrar a ajuda
+cli-flag-version = Mostrar a versão
+cli-help-command = Mostrar esta mensagem ou a ajuda do subcomando indicado
+cli-default = [por omissão: { $value }]
+cli-possible-values = [valores: { $values }]
+cli-bench-render = ms por imagem do desenho no CPU, na cena de referência
+cli-bench-lighting = ns por vértice da iluminação geral e da especializada
+cli-bench-ui = Tempo de CPU por imagem da interface inteira, sem ecrã, com todos os painéis abertos
+cli-arg-app-file = Um ficheiro de cena (TOML) com que abrir a aplicação; se não se puder ler, abre a ficha e diz porquê
+cli-arg-app-renderer = Quem desenha a vista sombreada da aplicação: a GPU quando o adaptador é uma GPU a sério, senão o desenho no CPU
+cli-arg-eval-cases = Um ficheiro JSON de casos (uma lista, ou {"{"}"cases": [...]{"}"}), como em docs/lighting.md
+cli-arg-eval-precision = A precisão do motor de cálculo
+cli-arg-eval-clamp = Limitar as cores a [0, 1], como o OpenGL faz por omissão (senão, sem limite)
+cli-arg-eval-pow = A função potência dos termos especular e do foco
+cli-arg-explain-scene = Um ficheiro de cena (TOML), como a aplicação o guarda
+cli-arg-explain-worksheet = A cena da ficha com a modelview N (1-5). Sem cena indicada, a 5
+cli-arg-explain-preset = Em vez disso, uma cena pronta: "phong-demo"
+cli-arg-explain-precision = A precisão do motor de cálculo
+cli-arg-explain-back = Explicar a face de trás (iluminação de duas faces)
+cli-arg-explain-markdown = Imprimir uma tabela Markdown em vez de texto
+cli-arg-explain-digits = Algarismos significativos
+cli-arg-render-object = O objeto (por omissão, o da cena)
+cli-arg-render-obj = Sombrear esta malha Wavefront OBJ em vez do objeto da cena (ajustada ao raio 0,5)
+cli-arg-render-shading = O sombreamento (por omissão, o da cena)
+cli-arg-render-size = Largura e altura da imagem em píxeis
+cli-arg-render-output = O PNG a escrever
+cli-arg-render-scene = Um ficheiro de cena (TOML); por omissão, a cena da ficha
+cli-arg-render-preset = Em vez disso, uma cena pronta: "worksheet" ou "phong-demo"
+cli-arg-render-bench_frame = Em vez disso, a cena de referência de docs/lighting.md nesta imagem (esfera r 1 50x50, bule 0,8, gluPerspective(40, 1, 0.5, 20)): a imagem que o arnês do Mesa desenha
+cli-arg-render-pow = A função potência dos termos especular e do foco
+cli-arg-render-cull = Descartar as faces de trás
+cli-arg-render-frame = A imagem N da rotação da cena: N passos de 0,5 graus (a primeira imagem que a demo de Phong desenha é a 1). Por omissão, a rotação da própria cena
+cli-arg-render-correct = Corrigir os desvios da demo de Phong à iluminação do OpenGL (separados por vírgulas): light (fixa no mundo), normals (as verdadeiras da superfície), highlight (na cor da luz) ou all
+cli-arg-probe-object = O objeto (por omissão, o da cena)
+cli-arg-probe-obj = Sombrear esta malha Wavefront OBJ em vez do objeto da cena (ajustada ao raio 0,5)
+cli-arg-probe-shading = O sombreamento (por omissão, o da cena)
+cli-arg-probe-size = Largura e altura da imagem em píxeis
+cli-arg-probe-scene = Um ficheiro de cena (TOML); por omissão, a cena da ficha
+cli-arg-probe-preset = Em vez disso, uma cena pronta: "worksheet" ou "phong-demo"
+cli-arg-probe-bench_frame = Em vez disso, a cena de referência de docs/lighting.md nesta imagem (esfera r 1 50x50, bule 0,8, gluPerspective(40, 1, 0.5, 20)): a imagem que o arnês do Mesa desenha
+cli-arg-probe-pow = A função potência dos termos especular e do foco
+cli-arg-probe-cull = Descartar as faces de trás
+cli-arg-probe-frame = A imagem N da rotação da cena: N passos de 0,5 graus (a primeira imagem que a demo de Phong desenha é a 1). Por omissão, a rotação da própria cena
+cli-arg-probe-correct = Corrigir os desvios da demo de Phong à iluminação do OpenGL (separados por vírgulas): light (fixa no mundo), normals (as verdadeiras da superfície), highlight (na cor da luz) ou all
+cli-probe = Porque é que um píxel da vista sombreada tem a sua cor: o triângulo, os pesos, os vértices ou o fragmento, cada termo, o limite e o arredondamento a 8 bits
+cli-arg-probe-at = O píxel: x a partir da esquerda, y a partir do topo, desde 0
+cli-arg-probe-json = Imprimir JSON (para scripts e testes) em vez do relatório
+cli-arg-render-channel = Desenhar um termo da equação de iluminação em falsa cor em vez da imagem
+cli-arg-render-light = A luz do canal, pela sua posição entre as luzes ligadas (0 a primeira); sem ela, os termos de cor somam todas as luzes
+cli-arg-render-colour_map = O mapa da falsa cor
+cli-arg-render-raw = Escrever também os valores do canal, sem limitar, num mapa de floats portátil (PFM)
+cli-share = Uma cena como link para a versão do navegador (a cena vai no próprio link), e como código QR para uma turma
+cli-arg-share-scene = O ficheiro de cena (TOML); por omissão: a cena da ficha
+cli-arg-share-base = A página que o link abre
+cli-arg-share-open_in = Abri-la nesta língua (en, pt-PT, pt-BR)
+cli-arg-share-present = Abri-la a apresentar a uma turma
+cli-arg-share-channel = Abri-la a mostrar este termo em vez da imagem
+cli-arg-share-qr = Escrever também o link como código QR: FICHEIRO.png ou FICHEIRO.svg
+cli-value-emission = a emissão do material, e_cm
+cli-value-scene-ambient = o ambiente da cena, a_cm a_cs
+cli-value-ambient = o ambiente de cada luz, após atenuação e foco
+cli-value-diffuse = a difusa de cada luz, após atenuação e foco
+cli-value-specular = a especular de cada luz, após atenuação e foco
+cli-value-attenuation = o fator de atenuação de uma luz, 1/at (o at da ficha, k0 + k1 d + k2 d², divide)
+cli-value-spot = o fator do foco de uma luz
+cli-value-n-dot-l = o n · L de uma luz
+cli-value-n-dot-h = o n · H de uma luz
+cli-value-normal = a normal com que o píxel é iluminado, como cor
+cli-value-light-count = quantas luzes chegam ao píxel
+cli-value-viridis = viridis (azul-escuro, verde, amarelo)
+cli-value-cividis = cividis (azul a amarelo), feito para o daltonismo vermelho-verde
+cli-arg-exercise-seed = A semente aleatória: a mesma semente dá as mesmas fichas
+cli-arg-exercise-count = Quantos exercícios
+cli-arg-exercise-level = Dificuldade: 1 só direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
+cli-arg-exercise-effects = Exatamente estes efeitos em vez de um nível (separados por vírgulas): positional, attenuation, spot, local-viewer, two-sided, several-lights
+cli-arg-exercise-rules = As regras que as respostas seguem: worksheet (as da ficha) ou opengl
+cli-arg-exercise-worksheet = Escrever também o exercício 0: a própria ficha, as suas cinco modelviews numa folha
+cli-arg-exercise-out = A pasta onde escrever (criada se não existir)
+cli-arg-shader-scene = Um ficheiro de cena (por omissão, o da ficha, mview5)
+cli-arg-shader-target = glsl (3.30 core: um shader de vértices e um de fragmentos) ou wgsl (um módulo)
+cli-arg-shader-shading = gouraud (iluminado por vértice) ou phong (iluminado por fragmento)
+cli-arg-case-scenes = Ficheiros de cena (TOML); cada um dá um caso, com o nome do ficheiro sem extensão como id
+cli-arg-cost-object = O objeto a estudar (por omissão, os três)
+cli-arg-cost-out = Onde escrever cost.csv, cost.png e os mapas de calor
+cli-arg-cost-size = Largura e altura da imagem em píxeis
+cli-arg-cost-scene = Um ficheiro de cena (TOML) para a iluminação e a vista; por omissão, a cena da ficha
+cli-arg-cost-spin = Rodar o objeto estes graus em torno de y (a 30, o cilindro mostra o lado)
+cli-arg-cost-threads = Threads para desenhar (por omissão, todos os núcleos)
+cli-arg-cost-quick = Tempos rápidos (3 imagens ou 0,1 s por variante) em vez de cuidadosos
+cli-arg-bench-render-frames = Imagens cronometradas por objeto e sombreamento (depois de 5 de aquecimento)
+cli-arg-bench-render-size = Tamanho da imagem em píxeis (quadrada)
+cli-arg-bench-render-threads = Threads de trabalho (por omissão, uma por núcleo)
+cli-arg-bench-render-object = Só este objeto: sphere (esfera) ou teapot (bule) (por omissão, os dois)
+cli-arg-bench-render-shading = Só este sombreamento: gouraud, phong ou flat (por omissão, os três)
+cli-arg-bench-render-slices = As fatias e camadas da esfera, de 3 a 2048 (a de referência tem 50): o custo em função do número de triângulos
+cli-arg-bench-render-mesh = Medir o tempo desta malha OBJ (ajustada à vista) em vez da esfera e do bule
+cli-arg-bench-render-scan = Medir o tempo da malha tipo digitalização de 20 x 4^NÍVEL triângulos (um icosaedro subdividido, irregular e rugoso; o 8 dá 1 310 720) em vez da esfera e do bule
+cli-arg-bench-render-write_mesh = Escrever a malha que seria cronometrada (--mesh, --scan ou a esfera de --slices, tal como fica na vista de referência) num ficheiro OBJ, sem cronometrar nada: os mesmos vetores de vértices para o banco de ensaio do Mesa (benches/compare_llvmpipe.py)
+cli-arg-bench-render-moving = O que muda de fotograma para fotograma: object (o objeto roda 3 graus por fotograma, cada fotograma desenhado por inteiro) ou light (a luz circula à volta do objeto parado, como quando um aluno a arrasta: a visibilidade é guardada e só a iluminação e o sombreamento correm de novo)
+cli-arg-bench-render-coarse = Cronometrar a cópia grosseira de cerca de tantos triângulos em vez da própria malha: o que a aplicação desenha enquanto a câmara roda sobre uma malha muito grande (diz quanto tempo levou a fazer a cópia)
+cli-arg-bench-lighting-vertices = Vértices por cena
+cli-arg-bench-lighting-repeats = Repetições cronometradas (diz-se a melhor)
+cli-arg-bench-lighting-stages = Dizer também onde se gasta o tempo da iluminação especializada: ns por vértice a carregar, em cada etapa do programa da cena e a escrever
+cli-arg-bench-ui-frames = Imagens cronometradas por caso
+cli-arg-bench-ui-width = Largura da janela em pontos
+cli-arg-bench-ui-height = Altura da janela em pontos
+cli-arg-bench-ui-present = Modo de apresentação (letra grande, a gaveta dos controlos aberta) a 1920x1080, salvo outro tamanho: a luz é arrastada com sombreamento de Gouraud e depois de Phong
+cli-arg-screenshot-size = O tamanho da janela em pontos, LARGURAxALTURA
+cli-arg-screenshot-scale = Píxeis por ponto (2 para um ecrã de alta densidade)
+cli-arg-screenshot-present = Modo de apresentação (F5)
+cli-arg-screenshot-light = O tema claro (por omissão, o escuro)
+cli-arg-screenshot-scene = Um ficheiro de cena (por omissão, a cena da ficha)
+cli-arg-screenshot-open = Abrir isto primeiro
+cli-arg-screenshot-output = O PNG a escrever
+cli-value-auto = a GPU quando o adaptador é uma GPU a sério, senão o CPU
+cli-value-cpu = o desenho no CPU (a referência)
+cli-value-gpu = a GPU, mesmo um adaptador por software
+cli-value-f32 = precisão simples, como o OpenGL calcula
+cli-value-f64 = precisão dupla
+cli-value-exact = a pow exata da biblioteca
+cli-value-llvmpipe = a aproximação exp2(e log2 x) do llvmpipe do Mesa, igual bit a bit ao Mesa 22.3
+cli-value-schlick = a aproximação racional de Schlick
+cli-value-sphere = gluSphere (esfera)
+cli-value-teapot = o bule de Utah
+cli-value-cylinder = gluCylinder (cilindro)
+cli-value-gouraud = iluminação por vértice, cores interpoladas
+cli-value-phong = iluminação por píxel
+cli-value-flat = um cálculo por face
+cli-value-light = a luz fixa no mundo
+cli-value-normals = as normais verdadeiras da superfície
+cli-value-highlight = o brilho especular na cor da luz
+cli-value-all = as três
+cli-value-compare = Comparar, com a cena fixada como A e, como B, a mesma cena com sombreamento de Phong
+cli-value-lobe = o lóbulo de reflexão no lugar do gráfico
+cli-value-quiz = o teste sobre a cena
+cli-value-shader = a janela do Shader
+cli-value-cost = a janela do Custo da exatidão
+cli-value-demo-fixes = as três correções da demo de Phong, lado a lado com a imagem da própria demo
+app-cannot-open-window =
+    não é possível abrir a janela: { $error }
+    (sem ecrã? os subcomandos funcionam sem ecrã: phonglab --help)
+
+## phonglab diagnose: a imagem de um aluno verificada
+
+cli-diagnose = A imagem que um aluno fez de uma cena, verificada: certa, que erro a fez, ou nenhum que o phonglab conheça; uma imagem das diferenças e a sonda onde mais difere
+cli-arg-diagnose-scene = A cena para a qual a imagem foi feita (TOML)
+cli-arg-diagnose-image = A imagem do aluno (PNG), feita com a câmara e o tamanho da exportação
+cli-arg-diagnose-size = A largura e a altura da imagem em píxeis: a janela da exportação tem 512
+cli-arg-diagnose-diff = Escrever a imagem das diferenças (a imagem contra a certa) neste PNG
+cli-arg-diagnose-json = Imprimir JSON (para scripts e testes) em vez do relatório
+file-kind-pictures = imagens
+diagnose-bad-png = { $path } não pode ser lido como uma imagem PNG: { $reason }
+diagnose-wrong-size = { $path } tem { $got } píxeis; a imagem desta cena tem { $expected } (a janela da exportação; outro tamanho com --size)
+diagnose-verdict-right = Certa: a imagem certa explica { $score } dos píxeis do objeto.
+diagnose-verdict-wrong = Errada. O erro mais próximo: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos píxeis do objeto, a imagem certa { $right }.
+diagnose-also = Também explica a imagem: { $cause } ({ $id }), { $score }.
+diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos píxeis do objeto; o erro mais próximo, { $cause } ({ $id }), { $score }.
+diagnose-invisible = Não experimentados (esta cena não os pode mostrar): { $ids }
+diagnose-diff-written = Imagem das diferenças escrita: { $path }
+diagnose-worst = O píxel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:
