@@ -122,25 +122,39 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
     let given = work(assignment, None, Some(student));
     let mut steps = Vec::new();
     let mut first_wrong = None;
+    // The latest step that is not the key's: what a later value may be right given.
+    let mut last_wrong: Option<String> = None;
     for p in &student.values {
         let Some(k) = key.get(&p.name) else { continue };
         let verdict = if same(p, k) {
             Verdict::Right
-        } else if let (Some(w), Some(g)) = (first_wrong, given.get(&p.name))
+        } else if let (Some(w), Some(g)) = (last_wrong.clone(), given.get(&p.name))
             && same(p, g)
         {
-            Verdict::RightGiven(steps.get(w).map_or_else(String::new, |s: &StepCheck| s.name.clone()))
+            Verdict::RightGiven(w)
         } else if close(p, k) {
             Verdict::Rounding
         } else {
             Verdict::Wrong
         };
+        if verdict != Verdict::Right && verdict != Verdict::Rounding {
+            last_wrong = Some(p.name.clone());
+        }
         if verdict == Verdict::Wrong && first_wrong.is_none() {
             first_wrong = Some(steps.len());
         }
         steps.push(StepCheck { name: p.name.clone(), student: p.numbers.clone(), key: k.to_vec(), verdict });
     }
-    let causes = if first_wrong.is_some() || !student.errors.is_empty() { causes(own, &key, student) } else { Vec::new() };
+    let causes = if first_wrong.is_some() || !student.errors.is_empty() {
+        // On the assignment (a mistake in a typed input, `ns = 0.2`), then on what they typed.
+        let mut found = causes(assignment, &key, student);
+        if found.is_empty() && !inputs_differ.is_empty() {
+            found = causes(own, &work(own, None, None), student);
+        }
+        found
+    } else {
+        Vec::new()
+    };
     Check { rules: assignment.rules, inputs_differ, steps, first_wrong, causes }
 }
 

@@ -15,6 +15,8 @@ pub struct PrintedValue {
     pub numbers: Vec<f64>,
     /// Half a unit of each number's last printed digit.
     pub half_units: Vec<f64>,
+    /// Was each number printed in fixed notation (`0.5`, not `5e-01`)?
+    pub fixed: Vec<bool>,
 }
 
 /// What a piece of work printed.
@@ -164,15 +166,17 @@ fn numbers(name: &str, value: &str) -> Option<PrintedValue> {
     let cleaned: String = v.chars().map(|c| if matches!(c, '[' | ']' | ',' | '(' | ')') { ' ' } else { c }).collect();
     let mut numbers = Vec::new();
     let mut half_units = Vec::new();
+    let mut fixed = Vec::new();
     for token in cleaned.split_whitespace() {
         let (x, half) = number(token)?;
         numbers.push(x);
         half_units.push(half);
+        fixed.push(!token.contains(['e', 'E']));
         if numbers.len() > MAX_NUMBERS {
             return None;
         }
     }
-    (!numbers.is_empty()).then(|| PrintedValue { name: name.to_string(), numbers, half_units })
+    (!numbers.is_empty()).then(|| PrintedValue { name: name.to_string(), numbers, half_units, fixed })
 }
 
 /// One number as NumPy or Python prints it (`0.`, `-0.`, `1.5e-05`, `3`), with half a unit
@@ -198,14 +202,14 @@ fn array_precision(p: &mut Printed) {
         .values
         .iter()
         .filter(|v| v.numbers.len() > 1)
-        .flat_map(|v| v.half_units.iter().copied())
+        .flat_map(|v| v.half_units.iter().zip(&v.fixed).filter(|(_, f)| **f).map(|(h, _)| *h))
         .filter(|h| *h > 0.0)
         .fold(f64::INFINITY, f64::min);
     if !finest.is_finite() {
         return;
     }
     for v in p.values.iter_mut().filter(|v| v.numbers.len() > 1) {
-        for h in &mut v.half_units {
+        for (h, _) in v.half_units.iter_mut().zip(&v.fixed).filter(|(_, f)| **f) {
             *h = h.min(finest);
         }
     }
@@ -231,6 +235,9 @@ mod tests {
         let ispec = p.get("Ispec").unwrap();
         assert_eq!(ispec.numbers[0], 4.0551e-4);
         assert!((ispec.half_units[0] - 0.5e-8).abs() < 1e-20);
+        // An array in e notation does not make the fixed ones finer.
+        let p = printed_text("a = [8.24368169e-11 0.00000000e+00]\nb = [0.5 0.25]\n");
+        assert_eq!(p.get("b").unwrap().half_units, vec![0.5e-2, 0.5e-2]);
         assert_eq!(p.get("vlv[1]").unwrap().numbers, vec![1.0, 2.0, 3.0, 0.0]);
         assert_eq!(p.get("modelview").unwrap().numbers, vec![1.0, 0.0, 0.0, 0.8]);
         assert_eq!(p.errors, vec!["ValueError: math domain error".to_string()]);

@@ -1,0 +1,194 @@
+//! `phonglab check`: a student's work checked against the key. One notebook (with its
+//! outputs) or a script's printed text: each printed step, the first wrong one and its
+//! likely causes, in words or as JSON. A folder: the whole class, as a report (Markdown),
+//! a bar chart of the causes beside it (PNG) and the marks (CSV). Nothing the student
+//! wrote is run; every file is read through the bounded readers.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::Result;
+use clap::Args;
+use phonglab_core::scene::Scene;
+use phonglab_core::study::check::printed::{Printed, notebook_outputs, printed_text};
+use phonglab_core::study::check::{Check, check};
+use phonglab_core::t;
+
+/// `phonglab check`.
+#[derive(Args, Debug)]
+pub struct CheckArgs {
+    /// The notebook (.ipynb, saved with its outputs), or a folder of them.
+    pub work: Option<PathBuf>,
+    /// The text a script printed, instead of a notebook (`-`: the standard input).
+    #[arg(long)]
+    pub printed: Option<PathBuf>,
+    /// The assignment's scene (TOML); default: the notebook's own.
+    #[arg(long)]
+    pub scene: Option<PathBuf>,
+    /// Write the check as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// For a folder: the class report (Markdown), its chart beside it (.png).
+    #[arg(long)]
+    pub report: Option<PathBuf>,
+    /// For a folder: the marks (CSV).
+    #[arg(long)]
+    pub csv: Option<PathBuf>,
+}
+
+/// The most submissions a folder may hold for one run.
+pub const MAX_SUBMISSIONS: usize = 1000;
+/// The most time a folder's check may take, in seconds: past it the rest is reported as
+/// not read.
+pub const MAX_SECONDS: u64 = 120;
+
+/// One piece of work read: the scene it typed and what it printed.
+pub struct Work {
+    /// The scene its code typed (the worksheet's for printed text).
+    pub own: Scene,
+    /// What it printed.
+    pub printed: Printed,
+}
+
+/// Reads the notebook at `path`: its scene through `import`'s bounded reader, its outputs.
+pub fn read_notebook(path: &Path) -> Result<Work> {
+    let cap = crate::io::student_code::MAX_CODE_BYTES;
+    let text = crate::io::input_file::read_text_capped(path, cap, &t!("file-kind-code")).map_err(anyhow::Error::msg)?;
+    let notebook = crate::io::student_code::student_code(path) == Some(true);
+    let imported = crate::io::student_code::import_text(&text, notebook, path).map_err(anyhow::Error::msg)?;
+    let printed = if notebook {
+        notebook_outputs(&text).map_err(|e| anyhow::anyhow!("{}: {e}", crate::io::reasons::shown(path)))?
+    } else {
+        anyhow::bail!("{}: {}", crate::io::reasons::shown(path), t!("check-no-outputs"))
+    };
+    Ok(Work { own: imported.doc.scene, printed })
+}
+
+/// Reads a script's printed text (`-`: the standard input, as bounded as a file).
+fn read_printed(path: &Path) -> Result<Printed> {
+    let cap = crate::io::student_code::MAX_CODE_BYTES;
+    let text = if path == Path::new("-") {
+        use std::io::Read;
+        let mut bytes = Vec::new();
+        std::io::stdin().take(cap + 1).read_to_end(&mut bytes)?;
+        crate::io::input_file::within_cap("-", bytes.len() as u64, cap, &t!("file-kind-code")).map_err(anyhow::Error::msg)?;
+        String::from_utf8_lossy(&bytes).into_owned()
+    } else {
+        crate::io::input_file::read_text_capped(path, cap, &t!("file-kind-code")).map_err(anyhow::Error::msg)?
+    };
+    Ok(printed_text(&text))
+}
+
+/// Runs `phonglab check`.
+pub fn run(a: &CheckArgs) -> Result<()> {
+    let assignment = match &a.scene {
+        Some(p) => Some(super::scene_file(p)?.scene),
+        None => None,
+    };
+    if let Some(dir) = a.work.as_ref().filter(|w| w.is_dir()) {
+        return super::check_class::run(dir, assignment.as_ref(), a);
+    }
+    let work = match (&a.printed, &a.work) {
+        (Some(p), _) => {
+            let own = assignment.clone().unwrap_or_else(|| phonglab_core::presets::worksheet(5));
+            Work { own, printed: read_printed(p)? }
+        }
+        (None, Some(w)) => read_notebook(w)?,
+        (None, None) => anyhow::bail!(t!("check-nothing-printed")),
+    };
+    let key_scene = assignment.as_ref().unwrap_or(&work.own);
+    let c = check(key_scene, &work.own, &work.printed);
+    if a.json {
+        out(&format!("{}\n", serde_json::to_string_pretty(&json(&c))?));
+    } else {
+        out(&phonglab_core::escape::terminal::lines(&words(&c)));
+    }
+    Ok(())
+}
+
+/// Writes `text` to the standard output; a reader that has gone (`| head`) ends nothing.
+pub fn out(text: &str) {
+    use std::io::Write;
+    let _ = std::io::stdout().lock().write_all(text.as_bytes());
+}
+
+/// Numbers for people, in the locale's mark.
+pub fn numbers(v: &[f64]) -> String {
+    let parts: Vec<String> = v.iter().map(|x| phonglab_core::locale::num(*x, 8)).collect();
+    if parts.len() == 1 { parts[0].clone() } else { format!("[{}]", parts.join("  ")) }
+}
+
+/// The check in words, one line a finding.
+pub fn words(c: &Check) -> String {
+    let mut out = format!("{}\n", t!("check-rules", rules = c.rules.to_string()));
+    if !c.inputs_differ.is_empty() {
+        out.push_str(&format!("{}\n", t!("check-inputs-differ", names = c.inputs_differ.join(", "))));
+    }
+    if c.steps.is_empty() {
+        out.push_str(&format!("{}\n", t!("check-nothing-printed")));
+    }
+    for s in &c.steps {
+        let line = t!(
+            "check-step",
+            step = s.name.clone(),
+            student = numbers(&s.student),
+            key = numbers(&s.key),
+            verdict = s.verdict.words()
+        );
+        out.push_str(&format!("  {line}\n"));
+    }
+    match c.first_wrong.and_then(|k| c.steps.get(k)) {
+        Some(s) => out.push_str(&format!(
+            "{}\n",
+            t!("check-first-wrong", step = s.name.clone(), student = numbers(&s.student), key = numbers(&s.key))
+        )),
+        None if c.right() => out.push_str(&format!("{}\n", t!("check-all-right"))),
+        None => {}
+    }
+    for cause in &c.causes {
+        let student = c.steps.iter().find(|s| s.name == cause.step).map_or_else(String::new, |s| numbers(&s.student));
+        out.push_str(&format!(
+            "{}\n    {}\n",
+            t!(
+                "check-cause",
+                words = (cause.info.words)(),
+                id = cause.info.id,
+                step = cause.step.clone(),
+                student = student,
+                value = numbers(&cause.value)
+            ),
+            cause.info.formula
+        ));
+    }
+    if c.first_wrong.is_some() && c.causes.is_empty() {
+        out.push_str(&format!("{}\n", t!("check-no-cause")));
+    }
+    out
+}
+
+/// The check as JSON: `verdict`, `rules`, `inputs_differ`, `first_wrong`, `causes` (with
+/// their kebab-case ids), `steps`.
+pub fn json(c: &Check) -> serde_json::Value {
+    let first = c.first_wrong.and_then(|k| c.steps.get(k)).map(|s| {
+        serde_json::json!({"step": s.name, "student": s.student, "key": s.key})
+    });
+    serde_json::json!({
+        "verdict": if c.right() { "right" } else { "wrong" },
+        "rules": c.rules.to_string(),
+        "inputs_differ": c.inputs_differ,
+        "first_wrong": first,
+        "causes": c.causes.iter().map(|k| serde_json::json!({
+            "id": k.info.id,
+            "words": (k.info.words)(),
+            "formula": k.info.formula,
+            "step": k.step,
+            "value": k.value,
+        })).collect::<Vec<_>>(),
+        "steps": c.steps.iter().map(|s| serde_json::json!({
+            "step": s.name,
+            "student": s.student,
+            "key": s.key,
+            "verdict": s.verdict.id(),
+            "words": s.verdict.words(),
+        })).collect::<Vec<_>>(),
+    })
+}
