@@ -107,10 +107,12 @@ fn same(got: &PrintedValue, want: &[f64]) -> bool {
         })
 }
 
-/// Is `got` the key's to about three digits?
+/// Is `got` the key's to about three significant digits, each number? (A key of 0 is
+/// rounded only to 0: a tiny value where there should be none is a term computed that
+/// should not be.)
 fn close(got: &PrintedValue, want: &[f64]) -> bool {
     got.numbers.len() == want.len()
-        && got.numbers.iter().zip(want).all(|(g, w)| (g - w).abs() <= 1e-3 * w.abs().max(1e-2))
+        && got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| (g - w).abs() <= 1e-3 * w.abs() + h)
 }
 
 /// Checks what `student` printed against the key of `assignment`; `own` is the scene the
