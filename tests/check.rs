@@ -116,9 +116,12 @@ fn identity(mut d: Document) -> Document {
     d
 }
 
+/// A mistake's id, the assignment, and the edits (text found, its replacement).
+type Case = (&'static str, Document, Vec<(&'static str, &'static str)>);
+
 /// One catalogue mistake: its id, the assignment, and the edits that write it into the
 /// exported notebook's cells.
-fn cases() -> Vec<(&'static str, Document, Vec<(&'static str, &'static str)>)> {
+fn cases() -> Vec<Case> {
     // OpenGL's rules under a non-uniform scale (x twice), where M n and (M^-1)^T n part.
     let mut opengl_scaled = worksheet();
     opengl_scaled.scene.rules = phonglab_core::Rules::OPENGL;
@@ -141,16 +144,27 @@ fn cases() -> Vec<(&'static str, Document, Vec<(&'static str, &'static str)>)> {
             opengl_scaled,
             vec![("np.matmul(normalMatrix, vertexNormal[:3])", "np.matmul(mview[:3, :3], vertexNormal[:3])")],
         ),
-        ("normal-not-normalised", stretched.clone(), vec![("vertexNormal = vertexNormal/np.linalg.norm(vertexNormal)\n", "")]),
+        (
+            "normal-not-normalised",
+            stretched.clone(),
+            vec![("vertexNormal = vertexNormal/np.linalg.norm(vertexNormal)\n", "")],
+        ),
         ("light-not-transformed", worksheet(), vec![("lightPos = np.matmul(mview, lightPos)\n", "")]),
         (
             "light-transformed-twice",
             worksheet(),
-            vec![("lightPos = np.matmul(mview, lightPos)\n", "lightPos = np.matmul(mview, np.matmul(mview, lightPos))\n")],
+            vec![(
+                "lightPos = np.matmul(mview, lightPos)\n",
+                "lightPos = np.matmul(mview, np.matmul(mview, lightPos))\n",
+            )],
         ),
         ("vlv-reversed", worksheet(), vec![("vlv = (lightPos - vertexPos)", "vlv = (vertexPos - lightPos)")]),
         ("vlv-not-normalised", worksheet(), vec![("vlv = vlv/np.linalg.norm(vlv)\n", "")]),
-        ("directional-as-point", directional, vec![("if (lightPos[-1] == 0):", "if False:"), ("if lightPos[-1] == 0:", "if False:")]),
+        (
+            "directional-as-point",
+            directional,
+            vec![("if (lightPos[-1] == 0):", "if False:"), ("if lightPos[-1] == 0:", "if False:")],
+        ),
         (
             "viewer-swapped",
             worksheet(),
@@ -290,7 +304,14 @@ fn a_class_with_hostile_names_gets_a_report_and_marks_that_keep_them_as_data() {
     let (report, csv) = (out_dir.path().join("report.md"), out_dir.path().join("marks.csv"));
     let out = common::phonglab_in(
         "pt_PT.UTF-8",
-        &["check", class.path().to_str().unwrap(), "--report", report.to_str().unwrap(), "--csv", csv.to_str().unwrap()],
+        &[
+            "check",
+            class.path().to_str().unwrap(),
+            "--report",
+            report.to_str().unwrap(),
+            "--csv",
+            csv.to_str().unwrap(),
+        ],
     );
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let md = std::fs::read_to_string(&report).unwrap();

@@ -70,7 +70,8 @@ fn read_printed(path: &Path) -> Result<Printed> {
         use std::io::Read;
         let mut bytes = Vec::new();
         std::io::stdin().take(cap + 1).read_to_end(&mut bytes)?;
-        crate::io::input_file::within_cap("-", bytes.len() as u64, cap, &t!("file-kind-code")).map_err(anyhow::Error::msg)?;
+        crate::io::input_file::within_cap("-", bytes.len() as u64, cap, &t!("file-kind-code"))
+            .map_err(anyhow::Error::msg)?;
         String::from_utf8_lossy(&bytes).into_owned()
     } else {
         crate::io::input_file::read_text_capped(path, cap, &t!("file-kind-code")).map_err(anyhow::Error::msg)?
@@ -168,9 +169,10 @@ pub fn words(c: &Check) -> String {
 /// The check as JSON: `verdict`, `rules`, `inputs_differ`, `first_wrong`, `causes` (with
 /// their kebab-case ids), `steps`.
 pub fn json(c: &Check) -> serde_json::Value {
-    let first = c.first_wrong.and_then(|k| c.steps.get(k)).map(|s| {
-        serde_json::json!({"step": s.name, "student": s.student, "key": s.key})
-    });
+    let first = c
+        .first_wrong
+        .and_then(|k| c.steps.get(k))
+        .map(|s| serde_json::json!({"step": s.name, "student": s.student, "key": s.key}));
     serde_json::json!({
         "verdict": if c.right() { "right" } else { "wrong" },
         "rules": c.rules.to_string(),

@@ -177,7 +177,9 @@ pub fn marks_csv(marked: &[Marked]) -> String {
         let (verdict, first, why) = match &m.check {
             Err(e) => ("unread".to_string(), String::new(), e.clone()),
             Ok(c) if c.right() => ("right".to_string(), String::new(), String::new()),
-            Ok(c) => ("wrong".to_string(), first_wrong(c), c.causes.iter().map(|k| k.info.id).collect::<Vec<_>>().join(" ")),
+            Ok(c) => {
+                ("wrong".to_string(), first_wrong(c), c.causes.iter().map(|k| k.info.id).collect::<Vec<_>>().join(" "))
+            }
         };
         out.push_str(&format!("{},{},{},{}\n", f(&m.name), f(&verdict), f(&first), f(&why)));
     }
@@ -195,7 +197,8 @@ pub fn chart_png(counts: &[(String, usize)], total: usize) -> (usize, usize, Vec
             for (id, n) in counts {
                 ui.horizontal(|ui| {
                     ui.add_sized([300.0, 20.0], egui::Label::new(id.as_str()).truncate());
-                    let (rect, _) = ui.allocate_exact_size(egui::vec2(500.0 * *n as f32 / most, 18.0), egui::Sense::hover());
+                    let (rect, _) =
+                        ui.allocate_exact_size(egui::vec2(500.0 * *n as f32 / most, 18.0), egui::Sense::hover());
                     ui.painter().rect_filled(rect, 2.0, egui::Color32::from_rgb(70, 130, 200));
                     ui.label(n.to_string());
                 });

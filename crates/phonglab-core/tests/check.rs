@@ -20,7 +20,9 @@ fn scenes() -> Vec<(String, Document)> {
     let mut docs: Vec<(String, Document)> = files
         .iter()
         .filter(|f| f.extension().is_some_and(|e| e == "toml"))
-        .map(|f| (f.display().to_string(), Document::from_toml_in(&std::fs::read_to_string(f).unwrap(), f.parent()).unwrap()))
+        .map(|f| {
+            (f.display().to_string(), Document::from_toml_in(&std::fs::read_to_string(f).unwrap(), f.parent()).unwrap())
+        })
         .collect();
     for level in 1..=4u8 {
         for rules in [Rules::WORKSHEET, Rules::OPENGL] {
@@ -49,11 +51,15 @@ fn the_worked_key_gives_what_explain_gives() {
             compared += 1;
         }
         for name in ["vertexNormal", "vlv", "cosTheta", "I"] {
-            let name = if doc.scene.lights.len() > 1 && name == "vlv" { "vlv[0]".to_string() } else { name.to_string() };
+            let name =
+                if doc.scene.lights.len() > 1 && name == "vlv" { "vlv[0]".to_string() } else { name.to_string() };
             if doc.scene.lights.is_empty() && name != "vertexNormal" && name != "I" {
                 continue;
             }
-            assert!(worked.get(&name).is_some() || name == "cosTheta" && doc.scene.lights.len() > 1, "{what}: no {name}");
+            assert!(
+                worked.get(&name).is_some() || name == "cosTheta" && doc.scene.lights.len() > 1,
+                "{what}: no {name}"
+            );
         }
     }
     assert!(compared > 400, "{compared} values compared");
@@ -75,10 +81,19 @@ fn the_worksheets_own_printed_output_is_right() {
     assert!(c.right());
     // One value changed in its last digits is rounding; changed more, wrong, and what
     // follows from it is right given it.
-    let rounded = text.replace("0.79220526", "0.7922").replace("0.55887606", "0.5589").replace("-0.2450885 ", "-0.2451    ");
+    let rounded =
+        text.replace("0.79220526", "0.7922").replace("0.55887606", "0.5589").replace("-0.2450885 ", "-0.2451    ");
     let c = check(&scene, &scene, &printed_text(&rounded));
     assert_eq!(c.steps[3].verdict, Verdict::Rounding);
     assert!(c.first_wrong.is_none());
+    // vlv reversed: cosTheta from it is right given it, though worked from its 8 printed decimals.
+    let reversed = text
+        .replace("[ 0.79220526  0.55887606 -0.2450885 ", "[-0.79220526 -0.55887606  0.2450885 ")
+        .replace("cosTheta =  0.13925483139909867", "cosTheta =  -0.13925483139909867");
+    let c = check(&scene, &scene, &printed_text(&reversed));
+    assert_eq!(c.steps[c.first_wrong.unwrap()].name, "vlv");
+    assert_eq!(c.steps[6].name, "cosTheta");
+    assert_eq!(c.steps[6].verdict, Verdict::RightGiven("vlv".into()));
     let wrong = text
         .replace("cosTheta =  0.13925483139909867", "cosTheta =  0.2")
         .replace("[0.09942795 0.05965677 0.0252664  0.        ]", "[0.1428   0.08568  0.036288 0.      ]");

@@ -107,6 +107,16 @@ fn same(got: &PrintedValue, want: &[f64]) -> bool {
         })
 }
 
+/// Does `got` equal `want`, a value worked from the student's printed (so rounded) earlier
+/// values? To the printed digits, or to a millionth of the value's size: an input printed
+/// with 8 decimals carries its rounding into what follows.
+fn given_from_printed(got: &PrintedValue, want: &[f64]) -> bool {
+    let size = want.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+    same(got, want)
+        || got.numbers.len() == want.len()
+            && got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| (g - w).abs() <= 1e-6 * size + h)
+}
+
 /// Is `got` the key's to about three significant digits, each number? (A key of 0 is
 /// rounded only to 0: a tiny value where there should be none is a term computed that
 /// should not be.)
@@ -131,7 +141,7 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
         let verdict = if same(p, k) {
             Verdict::Right
         } else if let (Some(w), Some(g)) = (last_wrong.clone(), given.get(&p.name))
-            && same(p, g)
+            && given_from_printed(p, g)
         {
             Verdict::RightGiven(w)
         } else if close(p, k) {

@@ -106,7 +106,8 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
             match output["output_type"].as_str() {
                 Some("stream") => text.push_str(&joined(&output["text"])),
                 Some("error") => {
-                    let (name, value) = (output["ename"].as_str().unwrap_or(""), output["evalue"].as_str().unwrap_or(""));
+                    let (name, value) =
+                        (output["ename"].as_str().unwrap_or(""), output["evalue"].as_str().unwrap_or(""));
                     text.push_str(&format!("\n{name}: {value}\n"));
                 }
                 _ => {}
@@ -146,7 +147,9 @@ fn is_name(name: &str) -> bool {
         && base.len() <= 64
         && base.starts_with(|c: char| c.is_ascii_alphabetic())
         && base.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
-    ident && index.is_none_or(|i| i.strip_suffix(']').is_some_and(|d| !d.is_empty() && d.chars().all(|c| c.is_ascii_digit())))
+    ident
+        && index
+            .is_none_or(|i| i.strip_suffix(']').is_some_and(|d| !d.is_empty() && d.chars().all(|c| c.is_ascii_digit())))
 }
 
 /// How many brackets are still open in `s`.

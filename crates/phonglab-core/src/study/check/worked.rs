@@ -152,7 +152,9 @@ impl Walk<'_> {
             Stage::Power(..) => {}
             Stage::Sum(i, Side::Front, term) => self.light_sum(i, term),
             // The back side of two-sided lighting is not checked (its names end in Back).
-            Stage::DiffuseCosine(_, Side::Back) | Stage::SpecularCosine(_, Side::Back, _) | Stage::Sum(_, Side::Back, _) => {}
+            Stage::DiffuseCosine(_, Side::Back)
+            | Stage::SpecularCosine(_, Side::Back, _)
+            | Stage::Sum(_, Side::Back, _) => {}
             Stage::SceneColor => self.scene_color(),
         }
     }
@@ -199,7 +201,8 @@ impl Walk<'_> {
             to_eye * light.position
         };
         let pos = self.emit4(self.name("lightPos", i), pos);
-        let point = if pos.w != 0.0 && pos.w != 1.0 && !self.made(Mistake::WDivideForgotten) { pos / pos.w } else { pos };
+        let point =
+            if pos.w != 0.0 && pos.w != 1.0 && !self.made(Mistake::WDivideForgotten) { pos / pos.w } else { pos };
         let directional = pos.w == 0.0 && !self.made(Mistake::DirectionalAsPoint);
         let mut vlv = if directional { pos } else { point - self.pos };
         if self.made(Mistake::VlvReversed) {
@@ -218,7 +221,11 @@ impl Walk<'_> {
         state.pos = pos;
         state.vlv = vlv;
         state.d = d;
-        state.at = if directional { 1.0 } else { light.attenuation[0] + light.attenuation[1] * d + light.attenuation[2] * d * d };
+        state.at = if directional {
+            1.0
+        } else {
+            light.attenuation[0] + light.attenuation[1] * d + light.attenuation[2] * d * d
+        };
     }
 
     /// `d` (printed for a light with a position) and `at`.
@@ -240,7 +247,8 @@ impl Walk<'_> {
             let dir = DMat3::from_mat4(self.scene.eye_from_light(light)) * light.spot_direction;
             let dir = dir / dir.length();
             let cos_spot = (-self.lights[i].vlv.truncate()).dot(dir);
-            let cutoff = if self.made(Mistake::SpotCutoffRadians) { light.spot_cutoff } else { light.spot_cutoff.to_radians() };
+            let cutoff =
+                if self.made(Mistake::SpotCutoffRadians) { light.spot_cutoff } else { light.spot_cutoff.to_radians() };
             let inside = cos_spot >= cutoff.cos();
             spot = if inside || self.made(Mistake::SpotExponentOutsideCone) {
                 cos_spot.max(0.0).powf(light.spot_exponent)
