@@ -8,8 +8,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Result;
 use clap::Args;
-use phonglab_core::scene::Scene;
-use phonglab_core::study::check::printed::{Printed, notebook_outputs, printed_text};
+use phonglab_core::study::check::printed::{Printed, printed_text};
 use phonglab_core::study::check::{Check, check};
 use phonglab_core::t;
 
@@ -35,34 +34,6 @@ pub struct CheckArgs {
     pub csv: Option<PathBuf>,
 }
 
-/// The most submissions a folder may hold for one run.
-pub const MAX_SUBMISSIONS: usize = 1000;
-/// The most time a folder's check may take, in seconds: past it the rest is reported as
-/// not read.
-pub const MAX_SECONDS: u64 = 120;
-
-/// One piece of work read: the scene it typed and what it printed.
-pub struct Work {
-    /// The scene its code typed (the worksheet's for printed text).
-    pub own: Scene,
-    /// What it printed.
-    pub printed: Printed,
-}
-
-/// Reads the notebook at `path`: its scene through `import`'s bounded reader, its outputs.
-pub fn read_notebook(path: &Path) -> Result<Work> {
-    let cap = crate::io::student_code::MAX_CODE_BYTES;
-    let text = crate::io::input_file::read_text_capped(path, cap, &t!("file-kind-code")).map_err(anyhow::Error::msg)?;
-    let notebook = crate::io::student_code::student_code(path) == Some(true);
-    let imported = crate::io::student_code::import_text(&text, notebook, path).map_err(anyhow::Error::msg)?;
-    let printed = if notebook {
-        notebook_outputs(&text).map_err(|e| anyhow::anyhow!("{}: {e}", crate::io::reasons::shown(path)))?
-    } else {
-        anyhow::bail!("{}: {}", crate::io::reasons::shown(path), t!("check-no-outputs"))
-    };
-    Ok(Work { own: imported.doc.scene, printed })
-}
-
 /// Reads a script's printed text (`-`: the standard input, as bounded as a file).
 fn read_printed(path: &Path) -> Result<Printed> {
     let cap = crate::io::student_code::MAX_CODE_BYTES;
@@ -86,30 +57,30 @@ pub fn run(a: &CheckArgs) -> Result<()> {
         None => None,
     };
     if let Some(dir) = a.work.as_ref().filter(|w| w.is_dir()) {
-        return super::check_class::run(dir, assignment.as_ref(), a);
+        let class = super::check_class::ClassArgs {
+            scene: a.scene.clone(),
+            json: a.json,
+            report: a.report.clone(),
+            csv: a.csv.clone(),
+        };
+        return super::check_class::run(dir, assignment.as_ref(), &class);
     }
     let work = match (&a.printed, &a.work) {
         (Some(p), _) => {
             let own = assignment.clone().unwrap_or_else(|| phonglab_core::presets::worksheet(5));
-            Work { own, printed: read_printed(p)? }
+            crate::io::student_code::Work { own, printed: read_printed(p)? }
         }
-        (None, Some(w)) => read_notebook(w)?,
+        (None, Some(w)) => crate::io::student_code::read_notebook(w)?,
         (None, None) => anyhow::bail!(t!("check-nothing-printed")),
     };
     let key_scene = assignment.as_ref().unwrap_or(&work.own);
     let c = check(key_scene, &work.own, &work.printed);
     if a.json {
-        out(&format!("{}\n", serde_json::to_string_pretty(&json(&c))?));
+        super::check_class::out(&format!("{}\n", serde_json::to_string_pretty(&super::check_class::json(&c))?));
     } else {
-        out(&phonglab_core::escape::terminal::lines(&words(&c)));
+        super::check_class::out(&phonglab_core::escape::terminal::lines(&words(&c)));
     }
     Ok(())
-}
-
-/// Writes `text` to the standard output; a reader that has gone (`| head`) ends nothing.
-pub fn out(text: &str) {
-    use std::io::Write;
-    let _ = std::io::stdout().lock().write_all(text.as_bytes());
 }
 
 /// Numbers for people, in the locale's mark.
@@ -164,33 +135,4 @@ pub fn words(c: &Check) -> String {
         out.push_str(&format!("{}\n", t!("check-no-cause")));
     }
     out
-}
-
-/// The check as JSON: `verdict`, `rules`, `inputs_differ`, `first_wrong`, `causes` (with
-/// their kebab-case ids), `steps`.
-pub fn json(c: &Check) -> serde_json::Value {
-    let first = c
-        .first_wrong
-        .and_then(|k| c.steps.get(k))
-        .map(|s| serde_json::json!({"step": s.name, "student": s.student, "key": s.key}));
-    serde_json::json!({
-        "verdict": if c.right() { "right" } else { "wrong" },
-        "rules": c.rules.to_string(),
-        "inputs_differ": c.inputs_differ,
-        "first_wrong": first,
-        "causes": c.causes.iter().map(|k| serde_json::json!({
-            "id": k.info.id,
-            "words": (k.info.words)(),
-            "formula": k.info.formula,
-            "step": k.step,
-            "value": k.value,
-        })).collect::<Vec<_>>(),
-        "steps": c.steps.iter().map(|s| serde_json::json!({
-            "step": s.name,
-            "student": s.student,
-            "key": s.key,
-            "verdict": s.verdict.id(),
-            "words": s.verdict.words(),
-        })).collect::<Vec<_>>(),
-    })
 }

@@ -15,7 +15,61 @@ use phonglab_core::scene::Scene;
 use phonglab_core::study::check::{Check, check};
 use phonglab_core::t;
 
-use super::check::{CheckArgs, MAX_SECONDS, MAX_SUBMISSIONS, read_notebook};
+use crate::io::student_code::read_notebook;
+
+/// The most submissions a folder may hold for one run.
+pub const MAX_SUBMISSIONS: usize = 1000;
+/// The most time a folder's check may take, in seconds: past it the rest is reported as
+/// not read.
+pub const MAX_SECONDS: u64 = 120;
+
+/// Writes `text` to the standard output; a reader that has gone (`| head`) ends nothing.
+pub fn out(text: &str) {
+    use std::io::Write;
+    let _ = std::io::stdout().lock().write_all(text.as_bytes());
+}
+
+/// The check as JSON: `verdict`, `rules`, `inputs_differ`, `first_wrong`, `causes` (with
+/// their kebab-case ids), `steps`.
+pub fn json(c: &Check) -> serde_json::Value {
+    let first = c
+        .first_wrong
+        .and_then(|k| c.steps.get(k))
+        .map(|s| serde_json::json!({"step": s.name, "student": s.student, "key": s.key}));
+    serde_json::json!({
+        "verdict": if c.right() { "right" } else { "wrong" },
+        "rules": c.rules.to_string(),
+        "inputs_differ": c.inputs_differ,
+        "first_wrong": first,
+        "causes": c.causes.iter().map(|k| serde_json::json!({
+            "id": k.info.id,
+            "words": (k.info.words)(),
+            "formula": k.info.formula,
+            "step": k.step,
+            "value": k.value,
+        })).collect::<Vec<_>>(),
+        "steps": c.steps.iter().map(|s| serde_json::json!({
+            "step": s.name,
+            "student": s.student,
+            "key": s.key,
+            "verdict": s.verdict.id(),
+            "words": s.verdict.words(),
+        })).collect::<Vec<_>>(),
+    })
+}
+
+/// What the class's check is asked: the assignment's file (kept from being written over),
+/// and the outputs.
+pub struct ClassArgs {
+    /// The assignment's scene file.
+    pub scene: Option<PathBuf>,
+    /// Write JSON.
+    pub json: bool,
+    /// The report (Markdown; its chart beside it).
+    pub report: Option<PathBuf>,
+    /// The marks (CSV).
+    pub csv: Option<PathBuf>,
+}
 
 /// One student's result: the file's name, and the check or why it was not read.
 pub struct Marked {
@@ -60,7 +114,7 @@ pub fn mark_all(dir: &Path, assignment: Option<&Scene>, budget: Duration) -> Res
 }
 
 /// Runs the class's check: the report and the marks where asked, a summary on the terminal.
-pub fn run(dir: &Path, assignment: Option<&Scene>, a: &CheckArgs) -> Result<()> {
+pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> {
     let inputs = submissions(dir)?;
     let chart = a.report.as_ref().map(|r| r.with_extension("png"));
     let outputs: Vec<&Path> = [a.report.as_deref(), a.csv.as_deref(), chart.as_deref()].into_iter().flatten().collect();
@@ -90,14 +144,14 @@ pub fn run(dir: &Path, assignment: Option<&Scene>, a: &CheckArgs) -> Result<()> 
         let all: Vec<serde_json::Value> = marked
             .iter()
             .map(|m| match &m.check {
-                Ok(c) => serde_json::json!({"file": m.name, "check": super::check::json(c)}),
+                Ok(c) => serde_json::json!({"file": m.name, "check": json(c)}),
                 Err(e) => serde_json::json!({"file": m.name, "error": e}),
             })
             .collect();
-        super::check::out(&format!("{}\n", serde_json::to_string_pretty(&all)?));
+        out(&format!("{}\n", serde_json::to_string_pretty(&all)?));
     } else if a.report.is_none() && a.csv.is_none() {
         for m in &marked {
-            super::check::out(&format!("{}\n", escape::terminal::text(&format!("{}: {}", m.name, summary(m)))));
+            out(&format!("{}\n", escape::terminal::text(&format!("{}: {}", m.name, summary(m)))));
         }
     }
     Ok(())
