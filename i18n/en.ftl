@@ -957,3 +957,33 @@ diagnose-verdict-unexplained = No mistake phonglab knows explains this picture: 
 diagnose-invisible = Not tried (this scene cannot show them): { $ids }
 diagnose-diff-written = Difference image written: { $path }
 diagnose-worst = The pixel that differs most: ({ $x }, { $y }), your picture { $image } against the right one { $right }. The probe of the right picture there:
+
+## phonglab check: a student's work checked
+
+check-rules = rules assumed: { $rules }
+check-inputs-differ = your typed inputs differ from the assignment's: { $names }
+check-step = { $step }: yours { $student }, the key's { $key }: { $verdict }
+check-first-wrong = first wrong step: { $step } (yours { $student }, the key's { $key })
+check-all-right = all right: every step printed is the key's
+check-cause = likely cause: { $words } [{ $id }]. Evidence: at { $step } you printed { $student }, and the key with this mistake gives { $value }
+check-no-cause = no mistake in the catalogue reproduces everything you printed; look at the first wrong step
+check-nothing-printed = nothing printed that the key has: print each value as the worksheet does, print("vlv = ", vlv)
+check-report-title = Class check
+check-report-student = Student
+check-report-verdict = Verdict
+check-report-first-wrong = First wrong step
+check-report-causes = Causes
+check-report-counts = Causes in the class
+check-report-unexplained = not explained by the catalogue
+check-report-unreadable = not read: { $reason }
+check-report-written = checked { $count } submissions: { $path }
+check-chart-title = Causes in the class ({ $count } submissions)
+check-verdict-word-right = right
+check-verdict-word-wrong = wrong
+cli-check = Check a student's work: a worksheet notebook with its outputs, a script's printed text, or a folder of them; each printed step against the key, the first wrong step and its likely causes
+cli-arg-check-work = The notebook (.ipynb, saved with its outputs), or a folder of them for the whole class
+cli-arg-check-printed = The text a script printed, instead of a notebook (- for the standard input)
+cli-arg-check-scene = The assignment's scene (TOML); default: the notebook's own (the worksheet's for printed text)
+cli-arg-check-json = Write the check as JSON
+cli-arg-check-report = For a folder: the class report to write (Markdown), with its bar chart beside it (.png)
+cli-arg-check-csv = For a folder: the marks to write (CSV)

@@ -957,3 +957,33 @@ diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta 
 diagnose-invisible = Não testados (esta cena não consegue mostrá-los): { $ids }
 diagnose-diff-written = Imagem das diferenças gravada: { $path }
 diagnose-worst = O pixel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:
+
+## phonglab check: o trabalho de um aluno verificado
+
+check-rules = regras assumidas: { $rules }
+check-inputs-differ = os dados que você digitou diferem dos do enunciado: { $names }
+check-step = { $step }: o seu { $student }, o do gabarito { $key }: { $verdict }
+check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o do gabarito { $key })
+check-all-right = tudo certo: todos os passos impressos são os do gabarito
+check-cause = causa provável: { $words } [{ $id }]. Evidência: em { $step } você imprimiu { $student }, e o gabarito com esse erro dá { $value }
+check-no-cause = nenhum erro do catálogo reproduz tudo o que você imprimiu; veja o primeiro passo errado
+check-nothing-printed = nada impresso que o gabarito tenha: imprima cada valor como a ficha faz, print("vlv = ", vlv)
+check-report-title = Verificação da turma
+check-report-student = Aluno
+check-report-verdict = Veredito
+check-report-first-wrong = Primeiro passo errado
+check-report-causes = Causas
+check-report-counts = Causas na turma
+check-report-unexplained = não explicado pelo catálogo
+check-report-unreadable = não lido: { $reason }
+check-report-written = { $count } trabalhos verificados: { $path }
+check-chart-title = Causas na turma ({ $count } trabalhos)
+check-verdict-word-right = certo
+check-verdict-word-wrong = errado
+cli-check = Verificar o trabalho de um aluno: um notebook da ficha com as saídas, o texto impresso por um programa, ou uma pasta deles; cada passo impresso comparado com o gabarito, o primeiro passo errado e as causas prováveis
+cli-arg-check-work = O notebook (.ipynb, salvo com as saídas), ou uma pasta deles para a turma toda
+cli-arg-check-printed = O texto impresso por um programa, em vez de um notebook (- para a entrada padrão)
+cli-arg-check-scene = A cena do enunciado (TOML); padrão: a do próprio notebook (a da ficha para texto impresso)
+cli-arg-check-json = Escrever a verificação em JSON
+cli-arg-check-report = Para uma pasta: o relatório da turma a escrever (Markdown), com o gráfico de barras ao lado (.png)
+cli-arg-check-csv = Para uma pasta: as notas a escrever (CSV)

@@ -957,3 +957,33 @@ diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta 
 diagnose-invisible = Não experimentados (esta cena não os pode mostrar): { $ids }
 diagnose-diff-written = Imagem das diferenças escrita: { $path }
 diagnose-worst = O píxel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:
+
+## phonglab check: o trabalho de um aluno verificado
+
+check-rules = regras assumidas: { $rules }
+check-inputs-differ = os dados que escreveste diferem dos do enunciado: { $names }
+check-step = { $step }: o teu { $student }, o da solução { $key }: { $verdict }
+check-first-wrong = primeiro passo errado: { $step } (o teu { $student }, o da solução { $key })
+check-all-right = tudo certo: todos os passos impressos são os da solução
+check-cause = causa provável: { $words } [{ $id }]. Prova: em { $step } imprimiste { $student }, e a solução com este erro dá { $value }
+check-no-cause = nenhum erro do catálogo reproduz tudo o que imprimiste; olha para o primeiro passo errado
+check-nothing-printed = nada impresso que a solução tenha: imprime cada valor como a ficha faz, print("vlv = ", vlv)
+check-report-title = Verificação da turma
+check-report-student = Aluno
+check-report-verdict = Veredicto
+check-report-first-wrong = Primeiro passo errado
+check-report-causes = Causas
+check-report-counts = Causas na turma
+check-report-unexplained = não explicado pelo catálogo
+check-report-unreadable = não lido: { $reason }
+check-report-written = { $count } trabalhos verificados: { $path }
+check-chart-title = Causas na turma ({ $count } trabalhos)
+check-verdict-word-right = certo
+check-verdict-word-wrong = errado
+cli-check = Verificar o trabalho de um aluno: um caderno da ficha com os resultados, o texto impresso por um programa, ou uma pasta deles; cada passo impresso comparado com a solução, o primeiro passo errado e as causas prováveis
+cli-arg-check-work = O caderno (.ipynb, guardado com os resultados), ou uma pasta deles para a turma toda
+cli-arg-check-printed = O texto impresso por um programa, em vez de um caderno (- para a entrada padrão)
+cli-arg-check-scene = A cena do enunciado (TOML); por omissão: a do próprio caderno (a da ficha para texto impresso)
+cli-arg-check-json = Escrever a verificação em JSON
+cli-arg-check-report = Para uma pasta: o relatório da turma a escrever (Markdown), com o gráfico de barras ao lado (.png)
+cli-arg-check-csv = Para uma pasta: as notas a escrever (CSV)

@@ -5,6 +5,8 @@
 
 pub mod bench;
 pub mod case;
+pub mod check;
+pub mod check_class;
 pub mod cost;
 pub mod diagnose;
 pub mod eval;
@@ -163,6 +165,9 @@ pub enum Command {
     Export(export::ExportArgs),
     /// Read a worksheet-style notebook (.ipynb) or Python script (.py) into a scene file.
     Import(export::ImportArgs),
+    /// Check a student's work: each printed step against the key, the first wrong step and
+    /// its likely causes; a folder: the whole class.
+    Check(check::CheckArgs),
     /// A scene as a link to the browser build (the scene in the link itself), and as a QR
     /// code for a class.
     Share(share::ShareArgs),
@@ -191,6 +196,7 @@ pub fn run(command: Command) -> ExitCode {
         Command::Screenshot(_) => Err(anyhow::anyhow!(t!("err-needs-window"))),
         Command::Export(a) => export::export(&a),
         Command::Import(a) => export::import(&a),
+        Command::Check(a) => check::run(&a),
         Command::Share(a) => share::run(&a),
     };
     finish(r)

@@ -30,3 +30,27 @@ pub fn import_text(
     let name = phonglab_core::escape::printable(&stem);
     phonglab_core::export::read_python::read(text, notebook, &name).map_err(|e| format!("{}: {e}", path.display()))
 }
+
+/// One piece of work read: the scene it typed and what it printed.
+pub struct Work {
+    /// The scene its code typed (the worksheet's for printed text).
+    pub own: phonglab_core::scene::Scene,
+    /// What it printed.
+    pub printed: phonglab_core::study::check::printed::Printed,
+}
+
+/// Reads the notebook at `path`: its scene through `import`'s bounded reader, its outputs.
+pub fn read_notebook(path: &Path) -> anyhow::Result<Work> {
+    let cap = MAX_CODE_BYTES;
+    let text =
+        super::input_file::read_text_capped(path, cap, &crate::t!("file-kind-code")).map_err(anyhow::Error::msg)?;
+    let notebook = student_code(path) == Some(true);
+    let imported = import_text(&text, notebook, path).map_err(anyhow::Error::msg)?;
+    let printed = if notebook {
+        phonglab_core::study::check::printed::notebook_outputs(&text)
+            .map_err(|e| anyhow::anyhow!("{}: {e}", super::reasons::shown(path)))?
+    } else {
+        anyhow::bail!("{}: {}", super::reasons::shown(path), crate::t!("check-no-outputs"))
+    };
+    Ok(Work { own: imported.doc.scene, printed })
+}

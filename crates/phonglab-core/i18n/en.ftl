@@ -597,3 +597,29 @@ diagnose-flipped-normals = The normals point inwards (flipped)
 diagnose-two-sided-off = Two-sided lighting off: the back faces are lit with the front's normals
 diagnose-attenuation-left-out = The attenuation left out
 diagnose-spot-left-out = The spotlight's cone left out (cutoff 180)
+
+## phonglab check: a student's work checked
+
+check-no-outputs = this notebook was saved without its outputs: nothing it printed can be checked. Run it first (Jupyter: Kernel → Restart & Run All), save it, and check it again
+check-verdict-right = right
+check-verdict-right-given = right, given your { $step }
+check-verdict-rounding = rounding
+check-verdict-wrong = wrong
+check-cause-normal-by-modelview = the normal transformed by the modelview M instead of its inverse transpose (wrong under a non-uniform scale)
+check-cause-normal-not-normalised = the normal not normalised after its transform
+check-cause-light-not-transformed = the light's position not transformed by the modelview (left in object space)
+check-cause-light-transformed-twice = the light's position transformed by the modelview twice
+check-cause-vlv-reversed = vlv reversed: from the light to the vertex instead of from the vertex to the light
+check-cause-vlv-not-normalised = vlv not normalised
+check-cause-directional-as-point = a directional light (w = 0) treated as a point
+check-cause-viewer-swapped = the local and the infinite viewer swapped
+check-cause-halfway-not-normalised = H not normalised
+check-cause-specular-without-gate = specular computed where the light is behind the surface (the N·L gate left out)
+check-cause-diffuse-not-clamped = the diffuse term not clamped: negative where the angle passes 90 degrees
+check-cause-acos-past-one = acos of a cosine just past 1 (rounding): limit it to [-1, 1] first
+check-cause-spot-cutoff-radians = the spot cutoff's cosine taken of degrees as if they were radians
+check-cause-spot-exponent-outside-cone = the spot exponent applied outside the cone too
+check-cause-attenuation-multiplied = the light multiplied by the attenuation instead of divided
+check-cause-attenuation-object-distance = the attenuation's distance measured in object space
+check-cause-w-divide-forgotten = the division by w forgotten
+check-cause-shininess-fraction = the shininess as the 0–1 fraction instead of times 128

@@ -597,3 +597,29 @@ diagnose-flipped-normals = As normais apontam para dentro (invertidas)
 diagnose-two-sided-off = A iluminação dos dois lados desligada: as faces de trás são iluminadas com as normais da frente
 diagnose-attenuation-left-out = A atenuação esquecida
 diagnose-spot-left-out = O cone do spot esquecido (corte em 180)
+
+## phonglab check: o trabalho de um aluno verificado
+
+check-no-outputs = este notebook foi salvo sem as saídas: não há nada impresso para verificar. Execute-o primeiro (Jupyter: Kernel → Restart & Run All), salve e verifique de novo
+check-verdict-right = certo
+check-verdict-right-given = certo, dado o seu { $step }
+check-verdict-rounding = arredondamento
+check-verdict-wrong = errado
+check-cause-normal-by-modelview = a normal transformada pela modelview M em vez da sua inversa transposta (errado com uma escala não uniforme)
+check-cause-normal-not-normalised = a normal não normalizada depois de transformada
+check-cause-light-not-transformed = a posição da luz não transformada pela modelview (ficou no espaço do objeto)
+check-cause-light-transformed-twice = a posição da luz transformada duas vezes pela modelview
+check-cause-vlv-reversed = vlv invertido: da luz para o vértice em vez do vértice para a luz
+check-cause-vlv-not-normalised = vlv não normalizado
+check-cause-directional-as-point = uma luz direcional (w = 0) tratada como pontual
+check-cause-viewer-swapped = o observador local e o observador no infinito trocados
+check-cause-halfway-not-normalised = H não normalizado
+check-cause-specular-without-gate = especular calculada onde a luz está atrás da superfície (falta a condição N·L)
+check-cause-diffuse-not-clamped = a difusa não limitada: negativa quando o ângulo passa de 90 graus
+check-cause-acos-past-one = acos de um cosseno um pouco acima de 1 (arredondamento): limite-o antes a [-1, 1]
+check-cause-spot-cutoff-radians = o cosseno do ângulo de corte do spot calculado em graus como se fossem radianos
+check-cause-spot-exponent-outside-cone = o expoente do spot aplicado também fora do cone
+check-cause-attenuation-multiplied = a luz multiplicada pela atenuação em vez de dividida
+check-cause-attenuation-object-distance = a distância da atenuação medida no espaço do objeto
+check-cause-w-divide-forgotten = faltou a divisão por w
+check-cause-shininess-fraction = o brilho como fração de 0 a 1 em vez de multiplicado por 128

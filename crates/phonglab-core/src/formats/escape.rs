@@ -266,6 +266,13 @@ pub mod csv {
         let s = super::visible_controls(text, |_| false);
         if s.contains([',', '"']) { format!("\"{}\"", s.replace('"', "\"\"")) } else { s }
     }
+
+    /// One field of text a person typed (a file's name): as [`field`], but a text that a
+    /// spreadsheet would run as a formula (it starts with `=`, `+`, `-`, `@`, a tab or a
+    /// carriage return) gets a `'` before it, so it is shown and never computed.
+    pub fn text_field(text: &str) -> String {
+        if text.starts_with(['=', '+', '-', '@', '\t', '\r']) { field(&format!("'{text}")) } else { field(text) }
+    }
 }
 
 /// The terminal (`phonglab explain`, every message on the standard error).

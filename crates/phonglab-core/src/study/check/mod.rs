@@ -1,0 +1,252 @@
+//! A student's own work, checked: the values their notebook or script printed
+//! ([`printed`]), each against the key worked by the stages of the plan ([`worked`]),
+//! with a verdict (right; right given an earlier value of theirs; rounding; wrong), the
+//! first wrong step, and the causes from the catalogue ([`mistakes`]) that reproduce
+//! everything they printed, to the printed digits. Nothing the student wrote is run.
+
+pub mod mistakes;
+pub mod printed;
+pub mod worked;
+
+use crate::model::rules::Rules;
+use crate::model::scene::{Scene, Side};
+use mistakes::{ACOS_PAST_ONE, CATALOGUE, MistakeInfo};
+use printed::{Printed, PrintedValue};
+use worked::{Worked, work};
+
+/// How a printed step compares with the key.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// The key's value, to the printed digits.
+    Right,
+    /// Not the key's, but right computed from the student's own earlier value (named).
+    RightGiven(String),
+    /// The key's to about three digits, not to the printed ones: rounded on the way.
+    Rounding,
+    /// None of these.
+    Wrong,
+}
+
+impl Verdict {
+    /// The verdict's id in JSON and CSV: `right`, `right-given`, `rounding`, `wrong`.
+    pub fn id(&self) -> &'static str {
+        match self {
+            Verdict::Right => "right",
+            Verdict::RightGiven(_) => "right-given",
+            Verdict::Rounding => "rounding",
+            Verdict::Wrong => "wrong",
+        }
+    }
+
+    /// The verdict in the user's language.
+    pub fn words(&self) -> String {
+        match self {
+            Verdict::Right => crate::t!("check-verdict-right"),
+            Verdict::RightGiven(x) => crate::t!("check-verdict-right-given", step = x.clone()),
+            Verdict::Rounding => crate::t!("check-verdict-rounding"),
+            Verdict::Wrong => crate::t!("check-verdict-wrong"),
+        }
+    }
+}
+
+/// One printed step checked.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepCheck {
+    /// The worksheet's name (`vlv`, `vlv[1]`).
+    pub name: String,
+    /// What the student printed.
+    pub student: Vec<f64>,
+    /// The key's value.
+    pub key: Vec<f64>,
+    /// How they compare.
+    pub verdict: Verdict,
+}
+
+/// A cause named, with its evidence: the step where the student's value is the mistaken
+/// calculation's and not the key's.
+#[derive(Clone, Debug)]
+pub struct Cause {
+    /// The catalogue's entry.
+    pub info: &'static MistakeInfo,
+    /// The step shown as evidence.
+    pub step: String,
+    /// The key worked with the mistake, at that step.
+    pub value: Vec<f64>,
+}
+
+/// A piece of work checked.
+#[derive(Clone, Debug)]
+pub struct Check {
+    /// The rule set the key was worked under.
+    pub rules: Rules,
+    /// Typed inputs that differ from the assignment's (the first finding when any).
+    pub inputs_differ: Vec<String>,
+    /// Every printed step the key has, in the order printed.
+    pub steps: Vec<StepCheck>,
+    /// The first wrong step's index in `steps`.
+    pub first_wrong: Option<usize>,
+    /// The causes that reproduce everything printed (none: not explained by the catalogue).
+    pub causes: Vec<Cause>,
+}
+
+impl Check {
+    /// Is the work right: its inputs the assignment's and no step wrong?
+    pub fn right(&self) -> bool {
+        self.inputs_differ.is_empty() && self.first_wrong.is_none() && self.causes.is_empty()
+    }
+}
+
+/// A little over a rounding of f64 arithmetic done in another order (NumPy's norm, dot).
+const SLACK: f64 = 1e-12;
+
+/// Does `got`, as printed, equal `want` to the printed digits?
+fn same(got: &PrintedValue, want: &[f64]) -> bool {
+    got.numbers.len() == want.len()
+        && got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| {
+            (g.is_nan() && w.is_nan()) || (g - w).abs() <= h * (1.0 + 1e-9) + SLACK * w.abs().max(1.0)
+        })
+}
+
+/// Does `got` equal `want`, a value worked from the student's printed (so rounded) earlier
+/// values? To the printed digits, or to a millionth of the value's size: an input printed
+/// with 8 decimals carries its rounding into what follows.
+fn given_from_printed(got: &PrintedValue, want: &[f64]) -> bool {
+    let size = want.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+    same(got, want)
+        || got.numbers.len() == want.len()
+            && got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| (g - w).abs() <= 1e-6 * size + h)
+}
+
+/// Is `got` the key's to about three significant digits, each number? (A key of 0 is
+/// rounded only to 0: a tiny value where there should be none is a term computed that
+/// should not be.)
+fn close(got: &PrintedValue, want: &[f64]) -> bool {
+    got.numbers.len() == want.len()
+        && got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| (g - w).abs() <= 1e-3 * w.abs() + h)
+}
+
+/// Checks what `student` printed against the key of `assignment`; `own` is the scene the
+/// work typed (read from its code: the same as `assignment` unless the class was given
+/// one).
+pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
+    let inputs_differ = differing_inputs(assignment, own);
+    let key = work(assignment, None, None);
+    let given = work(assignment, None, Some(student));
+    let mut steps = Vec::new();
+    let mut first_wrong = None;
+    // The latest step that is not the key's: what a later value may be right given.
+    let mut last_wrong: Option<String> = None;
+    for p in &student.values {
+        let Some(k) = key.get(&p.name) else { continue };
+        let verdict = if same(p, k) {
+            Verdict::Right
+        } else if let (Some(w), Some(g)) = (last_wrong.clone(), given.get(&p.name))
+            && given_from_printed(p, g)
+        {
+            Verdict::RightGiven(w)
+        } else if close(p, k) {
+            Verdict::Rounding
+        } else {
+            Verdict::Wrong
+        };
+        if verdict != Verdict::Right && verdict != Verdict::Rounding {
+            last_wrong = Some(p.name.clone());
+        }
+        if verdict == Verdict::Wrong && first_wrong.is_none() {
+            first_wrong = Some(steps.len());
+        }
+        steps.push(StepCheck { name: p.name.clone(), student: p.numbers.clone(), key: k.to_vec(), verdict });
+    }
+    let causes = if first_wrong.is_some() || !student.errors.is_empty() {
+        // On the assignment (a mistake in a typed input, `ns = 0.2`), then on what they typed.
+        let mut found = causes(assignment, &key, student);
+        if found.is_empty() && !inputs_differ.is_empty() {
+            found = causes(own, &work(own, None, None), student);
+        }
+        found
+    } else {
+        Vec::new()
+    };
+    Check { rules: assignment.rules, inputs_differ, steps, first_wrong, causes }
+}
+
+/// The catalogue's mistakes that reproduce every value the student printed (worked on the
+/// scene they typed), and the error a run stopped with.
+fn causes(own: &Scene, key: &Worked, student: &Printed) -> Vec<Cause> {
+    let mut out = Vec::new();
+    for info in &CATALOGUE {
+        let Some(m) = info.mistake else { continue };
+        let made = work(own, Some(m), None);
+        let mut compared = 0;
+        let mut evidence = None;
+        let all = student.values.iter().all(|p| match made.get(&p.name) {
+            None => true,
+            Some(v) => {
+                compared += 1;
+                if evidence.is_none() && key.get(&p.name).is_some_and(|k| !same(p, k)) {
+                    evidence = Some((p.name.clone(), v.to_vec()));
+                }
+                same(p, v)
+            }
+        });
+        if let (true, Some((step, value))) = (all && compared > 0, evidence) {
+            out.push(Cause { info, step, value });
+        }
+    }
+    if let Some(c) = acos_past_one(student) {
+        out.push(c);
+    }
+    out
+}
+
+/// `acos` of a cosine past 1: the run stopped with Python's math domain error, and the
+/// last cosine printed before it lies past 1.
+fn acos_past_one(student: &Printed) -> Option<Cause> {
+    student.errors.iter().find(|e| e.contains("math domain error"))?;
+    let cos = student.values.iter().rev().find(|v| v.name.starts_with("cos"))?;
+    let past = cos.numbers.first().is_some_and(|c| c.abs() > 1.0);
+    let info = mistakes::info(ACOS_PAST_ONE)?;
+    past.then(|| Cause { info, step: cos.name.clone(), value: cos.numbers.clone() })
+}
+
+/// The givens a scene's notebook types, by the worksheet's names.
+fn givens(scene: &Scene) -> Vec<(String, Vec<f64>)> {
+    let mut out = vec![
+        ("vertexPos".to_string(), scene.vertex.position.to_array().to_vec()),
+        ("vertexNormal".to_string(), scene.vertex.normal.to_array().to_vec()),
+        ("mview".to_string(), scene.eye_from_object().to_cols_array().to_vec()),
+    ];
+    let m = scene.lit_material(Side::Front);
+    for (name, c) in [("matAmb", m.ambient), ("matDif", m.diffuse), ("matSpec", m.specular)] {
+        out.push((name.to_string(), c.truncate().to_array().to_vec()));
+    }
+    out.push(("ns".to_string(), vec![m.shininess]));
+    for (i, l) in scene.lights.iter().enumerate() {
+        let name = |base: &str| if scene.lights.len() == 1 { base.to_string() } else { format!("{base}[{i}]") };
+        out.push((name("lightPos"), l.position.to_array().to_vec()));
+        for (base, c) in [("Lamb", l.ambient), ("Ldif", l.diffuse), ("Lspec", l.specular)] {
+            out.push((name(base), c.truncate().to_array().to_vec()));
+        }
+        out.push((name("at"), l.attenuation.to_vec()));
+        out.push((name("spotCutoff"), vec![l.spot_cutoff, l.spot_exponent]));
+    }
+    out
+}
+
+/// The givens of `own` that are not the assignment's.
+fn differing_inputs(assignment: &Scene, own: &Scene) -> Vec<String> {
+    let (a, b) = (givens(assignment), givens(own));
+    let mut out: Vec<String> = a
+        .iter()
+        .filter(|(name, v)| b.iter().find(|(n, _)| n == name).is_none_or(|(_, w)| w != v))
+        .map(|(name, _)| name.clone())
+        .collect();
+    if assignment.lights.len() != own.lights.len() {
+        out.push("lightPos".to_string());
+    }
+    if assignment.rules != own.rules || assignment.light_model.local_viewer != own.light_model.local_viewer {
+        out.push("rules".to_string());
+    }
+    out.dedup();
+    out
+}

@@ -1,0 +1,256 @@
+//! The values a student's work printed, read back: `name = value` lines in NumPy's print
+//! formats (an array wrapped over several lines, `e` notation, `0.` and `-0.`, a list with
+//! commas, a scalar as Python writes it), from a script's printed text or from the outputs
+//! a notebook saved. Nothing is run: the text is only read.
+//!
+//! Each number keeps how precisely it was printed (half a unit of its last digit), so a
+//! value is compared "to the printed digits".
+
+/// One value printed under a name (`vlv`, or `vlv[0]` for a light of several).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PrintedValue {
+    /// The name before ` = `.
+    pub name: String,
+    /// Its numbers, in order (a matrix's rows one after the other).
+    pub numbers: Vec<f64>,
+    /// Half a unit of each number's last printed digit.
+    pub half_units: Vec<f64>,
+    /// Was each number printed in fixed notation (`0.5`, not `5e-01`)?
+    pub fixed: Vec<bool>,
+}
+
+/// What a piece of work printed.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Printed {
+    /// The values, in the order they were printed (a name printed again: the last).
+    pub values: Vec<PrintedValue>,
+    /// The errors the run stopped with (`ValueError: math domain error`).
+    pub errors: Vec<String>,
+}
+
+impl Printed {
+    /// The value printed under `name`.
+    pub fn get(&self, name: &str) -> Option<&PrintedValue> {
+        self.values.iter().find(|v| v.name == name)
+    }
+}
+
+/// Why a notebook's outputs cannot be read.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum OutputsError {
+    /// Not a notebook's JSON.
+    #[error("{0}")]
+    NotANotebook(String),
+    /// Saved without its outputs: it has to be run first.
+    #[error("{0}")]
+    NoOutputs(String),
+}
+
+/// The most values read from one piece of work (a worksheet prints about twenty; eight
+/// lights, two sides, some hundreds).
+pub const MAX_VALUES: usize = 4096;
+/// The most numbers one value holds (a matrix is 16).
+pub const MAX_NUMBERS: usize = 1024;
+
+/// The values printed in `text`, a script's standard output (or a notebook's outputs, one
+/// after the other).
+pub fn printed_text(text: &str) -> Printed {
+    let mut out = Printed::default();
+    let lines: Vec<&str> = text.lines().collect();
+    let mut k = 0;
+    while k < lines.len() && out.values.len() < MAX_VALUES {
+        let line = lines[k];
+        k += 1;
+        if let Some(error) = error_line(line) {
+            out.errors.push(error);
+            continue;
+        }
+        let Some((name, rest)) = line.split_once('=') else { continue };
+        let name = name.trim();
+        if !is_name(name) {
+            continue;
+        }
+        // An array wraps over lines until its brackets close; a matrix starts on the next.
+        let mut value = rest.trim().to_string();
+        if value.is_empty() && k < lines.len() && lines[k].trim_start().starts_with('[') {
+            value = lines[k].trim().to_string();
+            k += 1;
+        }
+        while depth(&value) > 0 && k < lines.len() && value.len() < 64 * MAX_NUMBERS {
+            value.push(' ');
+            value.push_str(lines[k].trim());
+            k += 1;
+        }
+        if let Some(v) = numbers(name, &value) {
+            out.values.retain(|old| old.name != v.name);
+            out.values.push(v);
+        }
+    }
+    array_precision(&mut out);
+    out
+}
+
+/// The values a notebook's saved outputs printed; a notebook whose code cells have no
+/// outputs at all was saved without running, and is refused saying how to run it.
+pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
+    let nb: serde_json::Value = serde_json::from_str(text)
+        .map_err(|e| OutputsError::NotANotebook(crate::t!("import-not-notebook", reason = e.to_string())))?;
+    let cells = nb["cells"].as_array().ok_or_else(|| {
+        OutputsError::NotANotebook(crate::t!("import-not-notebook", reason = crate::t!("import-no-cells")))
+    })?;
+    let mut text = String::new();
+    let mut any = false;
+    for cell in cells.iter().filter(|c| c["cell_type"] == "code") {
+        for output in cell["outputs"].as_array().map(Vec::as_slice).unwrap_or_default() {
+            any = true;
+            match output["output_type"].as_str() {
+                Some("stream") => text.push_str(&joined(&output["text"])),
+                Some("error") => {
+                    let (name, value) =
+                        (output["ename"].as_str().unwrap_or(""), output["evalue"].as_str().unwrap_or(""));
+                    text.push_str(&format!("\n{name}: {value}\n"));
+                }
+                _ => {}
+            }
+            text.push('\n');
+        }
+    }
+    if !any {
+        return Err(OutputsError::NoOutputs(crate::t!("check-no-outputs")));
+    }
+    Ok(printed_text(&text))
+}
+
+/// A notebook's multi-line text: one string, or a list of lines.
+fn joined(v: &serde_json::Value) -> String {
+    match v {
+        serde_json::Value::String(s) => s.clone(),
+        serde_json::Value::Array(parts) => parts.iter().filter_map(|p| p.as_str()).collect(),
+        _ => String::new(),
+    }
+}
+
+/// `ValueError: math domain error`, the last line of a Python traceback.
+fn error_line(line: &str) -> Option<String> {
+    let (kind, _) = line.split_once(": ")?;
+    let is_error = kind.ends_with("Error") && kind.chars().all(|c| c.is_ascii_alphanumeric() || c == '.');
+    is_error.then(|| line.trim().chars().take(200).collect())
+}
+
+/// A printed name: an identifier, with an index for a light of several (`vlv[0]`).
+fn is_name(name: &str) -> bool {
+    let (base, index) = match name.split_once('[') {
+        Some((b, rest)) => (b, Some(rest)),
+        None => (name, None),
+    };
+    let ident = !base.is_empty()
+        && base.len() <= 64
+        && base.starts_with(|c: char| c.is_ascii_alphabetic())
+        && base.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    ident
+        && index
+            .is_none_or(|i| i.strip_suffix(']').is_some_and(|d| !d.is_empty() && d.chars().all(|c| c.is_ascii_digit())))
+}
+
+/// How many brackets are still open in `s`.
+fn depth(s: &str) -> i64 {
+    s.chars().map(|c| (c == '[') as i64 - (c == ']') as i64).sum()
+}
+
+/// The numbers of one printed value, each with half a unit of its last digit; `None` when
+/// something in it is not a number.
+fn numbers(name: &str, value: &str) -> Option<PrintedValue> {
+    let mut v = value.trim();
+    for wrap in ["np.float64(", "float64(", "array(", "np.array("] {
+        if let Some(inner) = v.strip_prefix(wrap) {
+            v = inner.strip_suffix(')')?;
+        }
+    }
+    let cleaned: String = v.chars().map(|c| if matches!(c, '[' | ']' | ',' | '(' | ')') { ' ' } else { c }).collect();
+    let mut numbers = Vec::new();
+    let mut half_units = Vec::new();
+    let mut fixed = Vec::new();
+    for token in cleaned.split_whitespace() {
+        let (x, half) = number(token)?;
+        numbers.push(x);
+        half_units.push(half);
+        fixed.push(!token.contains(['e', 'E']));
+        if numbers.len() > MAX_NUMBERS {
+            return None;
+        }
+    }
+    (!numbers.is_empty()).then(|| PrintedValue { name: name.to_string(), numbers, half_units, fixed })
+}
+
+/// One number as NumPy or Python prints it (`0.`, `-0.`, `1.5e-05`, `3`), with half a unit
+/// of its last digit.
+fn number(token: &str) -> Option<(f64, f64)> {
+    let x: f64 = if token.ends_with('.') { token.trim_end_matches('.').parse().ok()? } else { token.parse().ok()? };
+    if !x.is_finite() {
+        return Some((x, 0.0));
+    }
+    let (mantissa, exp) = match token.split_once(['e', 'E']) {
+        Some((m, e)) => (m, e.parse::<i32>().ok()?),
+        None => (token, 0),
+    };
+    let decimals = mantissa.split_once('.').map_or(0, |(_, f)| f.len() as i32);
+    Some((x, 0.5 * 10f64.powi(exp - decimals)))
+}
+
+/// NumPy prints an array's elements with as many digits as the one that needs most, up to
+/// its precision, so a short element (`0.6` beside `0.`) is exact to that precision: an
+/// array's numbers in fixed notation take the finest unit printed in any array of the work.
+fn array_precision(p: &mut Printed) {
+    let finest = p
+        .values
+        .iter()
+        .filter(|v| v.numbers.len() > 1)
+        .flat_map(|v| v.half_units.iter().zip(&v.fixed).filter(|(_, f)| **f).map(|(h, _)| *h))
+        .filter(|h| *h > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    if !finest.is_finite() {
+        return;
+    }
+    for v in p.values.iter_mut().filter(|v| v.numbers.len() > 1) {
+        for (h, _) in v.half_units.iter_mut().zip(&v.fixed).filter(|(_, f)| **f) {
+            *h = h.min(finest);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numpys_formats_are_read_with_their_digits() {
+        let text = "vertexNormal =  [0.  0.6 0.8 -0. ]\nvlv =  [ 0.79220526  0.55887606\n -0.2450885   0.        ]\n\
+                    cosTheta =  0.13925483139909867\nIspec =  [4.0551e-04 2.8017e-04 1.7179e-04 0.0000e+00]\n\
+                    vlv[1] = [1, 2, 3, 0]\nmodelview = \n [[ 1.0e+00  0.0e+00]\n [ 0.0e+00  8.0e-01]]\nnot a value\n\
+                    ValueError: math domain error\n";
+        let p = printed_text(text);
+        let normal = p.get("vertexNormal").unwrap();
+        assert_eq!(normal.numbers, vec![0.0, 0.6, 0.8, 0.0]);
+        // The finest fixed-notation array digit printed (vlv's 8 decimals).
+        assert_eq!(normal.half_units[1], 0.5e-8);
+        assert_eq!(p.get("vlv").unwrap().numbers, vec![0.79220526, 0.55887606, -0.2450885, 0.0]);
+        assert_eq!(p.get("cosTheta").unwrap().numbers, vec![0.13925483139909867]);
+        let ispec = p.get("Ispec").unwrap();
+        assert_eq!(ispec.numbers[0], 4.0551e-4);
+        assert!((ispec.half_units[0] - 0.5e-8).abs() < 1e-20);
+        // An array in e notation does not make the fixed ones finer.
+        let p = printed_text("a = [8.24368169e-11 0.00000000e+00]\nb = [0.5 0.25]\n");
+        assert_eq!(p.get("b").unwrap().half_units, vec![0.5e-2, 0.5e-2]);
+        assert_eq!(p.get("vlv[1]").unwrap().numbers, vec![1.0, 2.0, 3.0, 0.0]);
+        assert_eq!(p.get("modelview").unwrap().numbers, vec![1.0, 0.0, 0.0, 0.8]);
+        assert_eq!(p.errors, vec!["ValueError: math domain error".to_string()]);
+    }
+
+    #[test]
+    fn a_notebook_saved_without_running_is_told_to_run_first() {
+        let nb = r#"{"cells": [{"cell_type": "code", "source": ["x = 1"], "outputs": []}]}"#;
+        assert!(matches!(notebook_outputs(nb), Err(OutputsError::NoOutputs(_))));
+        let ran = r#"{"cells": [{"cell_type": "code", "source": ["x = 1"], "outputs": [{"output_type": "stream", "name": "stdout", "text": ["at =  5.2\n"]}]}]}"#;
+        assert_eq!(notebook_outputs(ran).unwrap().get("at").unwrap().numbers, vec![5.2]);
+    }
+}

@@ -1,0 +1,107 @@
+//! The checker's key is the key: the worksheet's calculation worked by the plan's stages
+//! (`study::check::worked`) gives every value `explain` gives under the same name, on the
+//! shipped scenes and on generated exercises; and the worksheet's own printed output is
+//! checked right.
+
+use std::path::Path;
+
+use phonglab_core::Document;
+use phonglab_core::exercise::{Level, Spec, generate};
+use phonglab_core::explain::{Side, explain};
+use phonglab_core::study::check::printed::printed_text;
+use phonglab_core::study::check::worked::work;
+use phonglab_core::study::check::{Verdict, check};
+use phonglab_core::{Engine, Rules};
+
+fn scenes() -> Vec<(String, Document)> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/scenes");
+    let mut files: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
+    files.sort();
+    let mut docs: Vec<(String, Document)> = files
+        .iter()
+        .filter(|f| f.extension().is_some_and(|e| e == "toml"))
+        .map(|f| {
+            (f.display().to_string(), Document::from_toml_in(&std::fs::read_to_string(f).unwrap(), f.parent()).unwrap())
+        })
+        .collect();
+    for level in 1..=4u8 {
+        for rules in [Rules::WORKSHEET, Rules::OPENGL] {
+            let spec = Spec::level(Level::from_number(level).unwrap(), rules);
+            for (k, ex) in generate(70 + level as u64, 5, &spec).unwrap().into_iter().enumerate() {
+                docs.push((format!("exercise {level} {rules:?} #{k}"), ex.doc));
+            }
+        }
+    }
+    docs
+}
+
+#[test]
+fn the_worked_key_gives_what_explain_gives() {
+    let mut compared = 0;
+    for (what, doc) in scenes() {
+        let lit = Engine::<f64>::light_scene_vertex(&doc.scene).unwrap();
+        let ex = explain(&doc.scene, &lit, Side::Front);
+        let worked = work(&doc.scene, None, None);
+        for (name, value) in &worked.values {
+            let Some(want) = ex.value(name) else { continue };
+            assert_eq!(value.len(), want.len(), "{what}: {name} {value:?} vs {want:?}");
+            for (g, w) in value.iter().zip(want) {
+                assert!((g - w).abs() <= 1e-9 * w.abs().max(1e-3), "{what}: {name} = {value:?}, explain {want:?}");
+            }
+            compared += 1;
+        }
+        for name in ["vertexNormal", "vlv", "cosTheta", "I"] {
+            let name =
+                if doc.scene.lights.len() > 1 && name == "vlv" { "vlv[0]".to_string() } else { name.to_string() };
+            if doc.scene.lights.is_empty() && name != "vertexNormal" && name != "I" {
+                continue;
+            }
+            assert!(
+                worked.get(&name).is_some() || name == "cosTheta" && doc.scene.lights.len() > 1,
+                "{what}: no {name}"
+            );
+        }
+    }
+    assert!(compared > 400, "{compared} values compared");
+}
+
+#[test]
+fn the_worksheets_own_printed_output_is_right() {
+    // What the exported worksheet notebook prints, run by NumPy (its default print options).
+    let text = "vertexNormal =  [0.  0.6 0.8 0. ]\nvertexPos =  [-512.  -307.2 -729.6    1. ]\n\
+                lightPos =  [   0.   54. -888.    1.]\nvlv =  [ 0.79220526  0.55887606 -0.2450885   0.        ]\n\
+                vov =  [0. 0. 1. 0.]\nIamb =  [0.2125 0.1275 0.054  0.    ]\ncosTheta =  0.13925483139909867\n\
+                Idif =  [0.09942795 0.05965677 0.0252664  0.        ]\nH =  [0.64472529 0.45483354 0.61437427 0.        ]\n\
+                cosBeta =  0.764399545502715\nIspec =  [0.00040551 0.00028017 0.00017179 0.        ]\n\
+                d =  646.2971452822611\nat =  5.241629714528227\nI =  [0.05958709 0.03575929 0.01515525 0.        ]\n";
+    let scene = phonglab_core::presets::worksheet(5);
+    let c = check(&scene, &scene, &printed_text(text));
+    assert_eq!(c.steps.len(), 14);
+    assert!(c.steps.iter().all(|s| s.verdict == Verdict::Right), "{:?}", c.steps);
+    assert!(c.right());
+    // One value changed in its last digits is rounding; changed more, wrong, and what
+    // follows from it is right given it.
+    let rounded =
+        text.replace("0.79220526", "0.7922").replace("0.55887606", "0.5589").replace("-0.2450885 ", "-0.2451    ");
+    let c = check(&scene, &scene, &printed_text(&rounded));
+    assert_eq!(c.steps[3].verdict, Verdict::Rounding);
+    assert!(c.first_wrong.is_none());
+    // vlv reversed: cosTheta from it is right given it, though worked from its 8 printed decimals.
+    let reversed = text
+        .replace("[ 0.79220526  0.55887606 -0.2450885 ", "[-0.79220526 -0.55887606  0.2450885 ")
+        .replace("cosTheta =  0.13925483139909867", "cosTheta =  -0.13925483139909867");
+    let c = check(&scene, &scene, &printed_text(&reversed));
+    assert_eq!(c.steps[c.first_wrong.unwrap()].name, "vlv");
+    assert_eq!(c.steps[6].name, "cosTheta");
+    assert_eq!(c.steps[6].verdict, Verdict::RightGiven("vlv".into()));
+    let wrong = text
+        .replace("cosTheta =  0.13925483139909867", "cosTheta =  0.2")
+        .replace("[0.09942795 0.05965677 0.0252664  0.        ]", "[0.1428   0.08568  0.036288 0.      ]");
+    let c = check(&scene, &scene, &printed_text(&wrong));
+    let first = c.first_wrong.unwrap();
+    assert_eq!(c.steps[first].name, "cosTheta");
+    assert_eq!(c.steps[first].verdict, Verdict::Wrong);
+    // Idif from their cosTheta is 0.2 Ldif matDif: right, given it.
+    assert_eq!(c.steps[first + 1].name, "Idif");
+    assert_eq!(c.steps[first + 1].verdict, Verdict::RightGiven("cosTheta".into()));
+}

@@ -1,0 +1,138 @@
+//! `phonglab check`: a student's work checked against the key. One notebook (with its
+//! outputs) or a script's printed text: each printed step, the first wrong one and its
+//! likely causes, in words or as JSON. A folder: the whole class, as a report (Markdown),
+//! a bar chart of the causes beside it (PNG) and the marks (CSV). Nothing the student
+//! wrote is run; every file is read through the bounded readers.
+
+use std::path::{Path, PathBuf};
+
+use crate::t;
+use anyhow::Result;
+use clap::Args;
+use phonglab_core::study::check::printed::{Printed, printed_text};
+use phonglab_core::study::check::{Check, check};
+
+/// `phonglab check`.
+#[derive(Args, Debug)]
+pub struct CheckArgs {
+    /// The notebook (.ipynb, saved with its outputs), or a folder of them.
+    pub work: Option<PathBuf>,
+    /// The text a script printed, instead of a notebook (`-`: the standard input).
+    #[arg(long)]
+    pub printed: Option<PathBuf>,
+    /// The assignment's scene (TOML); default: the notebook's own.
+    #[arg(long)]
+    pub scene: Option<PathBuf>,
+    /// Write the check as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// For a folder: the class report (Markdown), its chart beside it (.png).
+    #[arg(long)]
+    pub report: Option<PathBuf>,
+    /// For a folder: the marks (CSV).
+    #[arg(long)]
+    pub csv: Option<PathBuf>,
+}
+
+/// Reads a script's printed text (`-`: the standard input, as bounded as a file).
+fn read_printed(path: &Path) -> Result<Printed> {
+    let cap = crate::io::student_code::MAX_CODE_BYTES;
+    let text = if path == Path::new("-") {
+        use std::io::Read;
+        let mut bytes = Vec::new();
+        std::io::stdin().take(cap + 1).read_to_end(&mut bytes)?;
+        crate::io::input_file::within_cap("-", bytes.len() as u64, cap, &t!("file-kind-code"))
+            .map_err(anyhow::Error::msg)?;
+        String::from_utf8_lossy(&bytes).into_owned()
+    } else {
+        crate::io::input_file::read_text_capped(path, cap, &t!("file-kind-code")).map_err(anyhow::Error::msg)?
+    };
+    Ok(printed_text(&text))
+}
+
+/// Runs `phonglab check`.
+pub fn run(a: &CheckArgs) -> Result<()> {
+    let assignment = match &a.scene {
+        Some(p) => Some(super::scene_file(p)?.scene),
+        None => None,
+    };
+    if let Some(dir) = a.work.as_ref().filter(|w| w.is_dir()) {
+        let class = super::check_class::ClassArgs {
+            scene: a.scene.clone(),
+            json: a.json,
+            report: a.report.clone(),
+            csv: a.csv.clone(),
+        };
+        return super::check_class::run(dir, assignment.as_ref(), &class);
+    }
+    let work = match (&a.printed, &a.work) {
+        (Some(p), _) => {
+            let own = assignment.clone().unwrap_or_else(|| phonglab_core::presets::worksheet(5));
+            crate::io::student_code::Work { own, printed: read_printed(p)? }
+        }
+        (None, Some(w)) => crate::io::student_code::read_notebook(w)?,
+        (None, None) => anyhow::bail!(t!("check-nothing-printed")),
+    };
+    let key_scene = assignment.as_ref().unwrap_or(&work.own);
+    let c = check(key_scene, &work.own, &work.printed);
+    if a.json {
+        super::check_class::out(&format!("{}\n", serde_json::to_string_pretty(&super::check_class::json(&c))?));
+    } else {
+        super::check_class::out(&phonglab_core::escape::terminal::lines(&words(&c)));
+    }
+    Ok(())
+}
+
+/// Numbers for people, in the locale's mark.
+pub fn numbers(v: &[f64]) -> String {
+    let parts: Vec<String> = v.iter().map(|x| crate::locale::num(*x, 8)).collect();
+    if parts.len() == 1 { parts[0].clone() } else { format!("[{}]", parts.join("  ")) }
+}
+
+/// The check in words, one line a finding.
+pub fn words(c: &Check) -> String {
+    let mut out = format!("{}\n", t!("check-rules", rules = c.rules.to_string()));
+    if !c.inputs_differ.is_empty() {
+        out.push_str(&format!("{}\n", t!("check-inputs-differ", names = c.inputs_differ.join(", "))));
+    }
+    if c.steps.is_empty() {
+        out.push_str(&format!("{}\n", t!("check-nothing-printed")));
+    }
+    for s in &c.steps {
+        let line = t!(
+            "check-step",
+            step = s.name.clone(),
+            student = numbers(&s.student),
+            key = numbers(&s.key),
+            verdict = s.verdict.words()
+        );
+        out.push_str(&format!("  {line}\n"));
+    }
+    match c.first_wrong.and_then(|k| c.steps.get(k)) {
+        Some(s) => out.push_str(&format!(
+            "{}\n",
+            t!("check-first-wrong", step = s.name.clone(), student = numbers(&s.student), key = numbers(&s.key))
+        )),
+        None if c.right() => out.push_str(&format!("{}\n", t!("check-all-right"))),
+        None => {}
+    }
+    for cause in &c.causes {
+        let student = c.steps.iter().find(|s| s.name == cause.step).map_or_else(String::new, |s| numbers(&s.student));
+        out.push_str(&format!(
+            "{}\n    {}\n",
+            t!(
+                "check-cause",
+                words = (cause.info.words)(),
+                id = cause.info.id,
+                step = cause.step.clone(),
+                student = student,
+                value = numbers(&cause.value)
+            ),
+            cause.info.formula
+        ));
+    }
+    if c.first_wrong.is_some() && c.causes.is_empty() {
+        out.push_str(&format!("{}\n", t!("check-no-cause")));
+    }
+    out
+}

@@ -1,0 +1,263 @@
+//! `phonglab check FOLDER --report report.md --csv marks.csv`: a whole class's notebooks,
+//! each student's first wrong step and causes, and the class's causes counted, with a bar
+//! chart (`report.png` beside the report) for the next lesson, in the teacher's language.
+//! Submissions are hostile input: at most [`MAX_SUBMISSIONS`] files each read through the
+//! bounded reader, the whole run capped at [`MAX_SECONDS`], names escaped for Markdown,
+//! CSV (no formula) and the terminal, and no output written over a submission.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use crate::t;
+use anyhow::Result;
+use phonglab_core::escape;
+use phonglab_core::scene::Scene;
+use phonglab_core::study::check::{Check, check};
+
+use crate::io::student_code::read_notebook;
+
+/// The most submissions a folder may hold for one run.
+pub const MAX_SUBMISSIONS: usize = 1000;
+/// The most time a folder's check may take, in seconds: past it the rest is reported as
+/// not read.
+pub const MAX_SECONDS: u64 = 120;
+
+/// Writes `text` to the standard output; a reader that has gone (`| head`) ends nothing.
+pub fn out(text: &str) {
+    use std::io::Write;
+    let _ = std::io::stdout().lock().write_all(text.as_bytes());
+}
+
+/// The check as JSON: `verdict`, `rules`, `inputs_differ`, `first_wrong`, `causes` (with
+/// their kebab-case ids), `steps`.
+pub fn json(c: &Check) -> serde_json::Value {
+    let first = c
+        .first_wrong
+        .and_then(|k| c.steps.get(k))
+        .map(|s| serde_json::json!({"step": s.name, "student": s.student, "key": s.key}));
+    serde_json::json!({
+        "verdict": if c.right() { "right" } else { "wrong" },
+        "rules": c.rules.to_string(),
+        "inputs_differ": c.inputs_differ,
+        "first_wrong": first,
+        "causes": c.causes.iter().map(|k| serde_json::json!({
+            "id": k.info.id,
+            "words": (k.info.words)(),
+            "formula": k.info.formula,
+            "step": k.step,
+            "value": k.value,
+        })).collect::<Vec<_>>(),
+        "steps": c.steps.iter().map(|s| serde_json::json!({
+            "step": s.name,
+            "student": s.student,
+            "key": s.key,
+            "verdict": s.verdict.id(),
+            "words": s.verdict.words(),
+        })).collect::<Vec<_>>(),
+    })
+}
+
+/// What the class's check is asked: the assignment's file (kept from being written over),
+/// and the outputs.
+pub struct ClassArgs {
+    /// The assignment's scene file.
+    pub scene: Option<PathBuf>,
+    /// Write JSON.
+    pub json: bool,
+    /// The report (Markdown; its chart beside it).
+    pub report: Option<PathBuf>,
+    /// The marks (CSV).
+    pub csv: Option<PathBuf>,
+}
+
+/// One student's result: the file's name, and the check or why it was not read.
+pub struct Marked {
+    /// The file's name (as it is: escaped where it is written).
+    pub name: String,
+    /// The check, or why the file was not checked.
+    pub check: Result<Check, String>,
+}
+
+/// The notebooks of `dir`, sorted, at most [`MAX_SUBMISSIONS`].
+fn submissions(dir: &Path) -> Result<Vec<PathBuf>> {
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir(dir)? {
+        let path = entry?.path();
+        if crate::io::student_code::student_code(&path) == Some(true) {
+            out.push(path);
+        }
+        if out.len() > MAX_SUBMISSIONS {
+            anyhow::bail!("{}: > {MAX_SUBMISSIONS} .ipynb", crate::io::reasons::shown(dir));
+        }
+    }
+    out.sort();
+    Ok(out)
+}
+
+/// Checks every notebook of `dir` against `assignment` (each its own scene without one).
+pub fn mark_all(dir: &Path, assignment: Option<&Scene>, budget: Duration) -> Result<Vec<Marked>> {
+    let start = Instant::now();
+    let mut out = Vec::new();
+    for path in submissions(dir)? {
+        let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let check = if start.elapsed() > budget {
+            Err(t!("check-report-unreadable", reason = format!("> {} s", budget.as_secs())))
+        } else {
+            read_notebook(&path)
+                .map(|w| check(assignment.unwrap_or(&w.own), &w.own, &w.printed))
+                .map_err(|e| t!("check-report-unreadable", reason = format!("{e:#}")))
+        };
+        out.push(Marked { name, check });
+    }
+    Ok(out)
+}
+
+/// Runs the class's check: the report and the marks where asked, a summary on the terminal.
+pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> {
+    let inputs = submissions(dir)?;
+    let chart = a.report.as_ref().map(|r| r.with_extension("png"));
+    let outputs: Vec<&Path> = [a.report.as_deref(), a.csv.as_deref(), chart.as_deref()].into_iter().flatten().collect();
+    let code = crate::io::same_file::Input::Code;
+    let mut guarded: Vec<(&Path, crate::io::same_file::Input)> = inputs.iter().map(|p| (p.as_path(), code)).collect();
+    if let Some(s) = &a.scene {
+        guarded.push((s.as_path(), crate::io::same_file::Input::Any));
+    }
+    crate::io::same_file::refuse_onto(&outputs, &guarded).map_err(anyhow::Error::msg)?;
+    for out in &outputs {
+        crate::io::atomic_write::check_file_destination(out)?;
+    }
+    let marked = mark_all(dir, assignment, Duration::from_secs(MAX_SECONDS))?;
+    let counts = cause_counts(&marked);
+    if let (Some(report), Some(chart)) = (&a.report, &chart) {
+        let chart_name = chart.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        crate::io::atomic_write::write(report, markdown(&marked, &counts, &chart_name).as_bytes())?;
+        let (w, h, rgba) = chart_png(&counts, marked.len());
+        crate::io::atomic_write::write(chart, &crate::io::image::encode_png(w, h, &rgba)?)?;
+        super::say(&t!("check-report-written", count = marked.len(), path = crate::io::reasons::shown(report)));
+    }
+    if let Some(csv) = &a.csv {
+        crate::io::atomic_write::write(csv, marks_csv(&marked).as_bytes())?;
+        super::say(&t!("check-report-written", count = marked.len(), path = crate::io::reasons::shown(csv)));
+    }
+    if a.json {
+        let all: Vec<serde_json::Value> = marked
+            .iter()
+            .map(|m| match &m.check {
+                Ok(c) => serde_json::json!({"file": m.name, "check": json(c)}),
+                Err(e) => serde_json::json!({"file": m.name, "error": e}),
+            })
+            .collect();
+        out(&format!("{}\n", serde_json::to_string_pretty(&all)?));
+    } else if a.report.is_none() && a.csv.is_none() {
+        for m in &marked {
+            out(&format!("{}\n", escape::terminal::text(&format!("{}: {}", m.name, summary(m)))));
+        }
+    }
+    Ok(())
+}
+
+/// One student in a few words: right, or the first wrong step and the causes' ids.
+fn summary(m: &Marked) -> String {
+    match &m.check {
+        Err(e) => e.clone(),
+        Ok(c) if c.right() => t!("check-verdict-word-right"),
+        Ok(c) => format!("{}: {} ({})", t!("check-verdict-word-wrong"), first_wrong(c), causes(c)),
+    }
+}
+
+fn first_wrong(c: &Check) -> String {
+    if !c.inputs_differ.is_empty() {
+        return c.inputs_differ.join(" ");
+    }
+    c.first_wrong.and_then(|k| c.steps.get(k)).map_or_else(String::new, |s| s.name.clone())
+}
+
+fn causes(c: &Check) -> String {
+    if c.causes.is_empty() && !c.right() {
+        return t!("check-report-unexplained");
+    }
+    c.causes.iter().map(|k| k.info.id).collect::<Vec<_>>().join(" ")
+}
+
+/// How many students each cause explains (by id), and how many no cause explains.
+pub fn cause_counts(marked: &[Marked]) -> Vec<(String, usize)> {
+    let mut counts: BTreeMap<String, usize> = BTreeMap::new();
+    for c in marked.iter().filter_map(|m| m.check.as_ref().ok()).filter(|c| !c.right()) {
+        if c.causes.is_empty() {
+            *counts.entry(t!("check-report-unexplained")).or_default() += 1;
+        }
+        for k in &c.causes {
+            *counts.entry(k.info.id.to_string()).or_default() += 1;
+        }
+    }
+    let mut v: Vec<(String, usize)> = counts.into_iter().collect();
+    v.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
+    v
+}
+
+/// The report in Markdown: a row per student, then the causes counted and the chart.
+pub fn markdown(marked: &[Marked], counts: &[(String, usize)], chart: &str) -> String {
+    let md = escape::markdown::text;
+    let mut out = format!("# {}\n\n", md(&t!("check-report-title")));
+    out.push_str(&format!(
+        "| {} | {} | {} | {} |\n|---|---|---|---|\n",
+        md(&t!("check-report-student")),
+        md(&t!("check-report-verdict")),
+        md(&t!("check-report-first-wrong")),
+        md(&t!("check-report-causes"))
+    ));
+    for m in marked {
+        let (verdict, first, why) = match &m.check {
+            Err(e) => (e.clone(), String::new(), String::new()),
+            Ok(c) if c.right() => (t!("check-verdict-word-right"), String::new(), String::new()),
+            Ok(c) => (t!("check-verdict-word-wrong"), first_wrong(c), causes(c)),
+        };
+        out.push_str(&format!("| {} | {} | {} | {} |\n", md(&m.name), md(&verdict), md(&first), md(&why)));
+    }
+    out.push_str(&format!("\n## {}\n\n", md(&t!("check-report-counts"))));
+    for (id, n) in counts {
+        out.push_str(&format!("- {}: {n}\n", md(id)));
+    }
+    out.push_str(&format!("\n![{}]({})\n", md(&t!("check-report-counts")), chart.replace(['(', ')', ' '], "_")));
+    out
+}
+
+/// The marks as CSV: file, verdict, first wrong step, causes (text fields neutralised).
+pub fn marks_csv(marked: &[Marked]) -> String {
+    let f = escape::csv::text_field;
+    let mut out = String::from("file,verdict,first_wrong,causes\n");
+    for m in marked {
+        let (verdict, first, why) = match &m.check {
+            Err(e) => ("unread".to_string(), String::new(), e.clone()),
+            Ok(c) if c.right() => ("right".to_string(), String::new(), String::new()),
+            Ok(c) => {
+                ("wrong".to_string(), first_wrong(c), c.causes.iter().map(|k| k.info.id).collect::<Vec<_>>().join(" "))
+            }
+        };
+        out.push_str(&format!("{},{},{},{}\n", f(&m.name), f(&verdict), f(&first), f(&why)));
+    }
+    out
+}
+
+/// The causes counted as a bar chart, painted as the window paints.
+pub fn chart_png(counts: &[(String, usize)], total: usize) -> (usize, usize, Vec<u8>) {
+    let rows = counts.len().max(1) as f32;
+    let (w, h) = (900.0, 60.0 + 28.0 * rows);
+    let most = counts.iter().map(|c| c.1).max().unwrap_or(1).max(1) as f32;
+    let canvas = crate::paint::egui_cpu::paint_ui(w, h, 1.0, |ui| {
+        egui::CentralPanel::default().show(ui, |ui| {
+            ui.strong(t!("check-chart-title", count = total));
+            for (id, n) in counts {
+                ui.horizontal(|ui| {
+                    ui.add_sized([300.0, 20.0], egui::Label::new(id.as_str()).truncate());
+                    let (rect, _) =
+                        ui.allocate_exact_size(egui::vec2(500.0 * *n as f32 / most, 18.0), egui::Sense::hover());
+                    ui.painter().rect_filled(rect, 2.0, egui::Color32::from_rgb(70, 130, 200));
+                    ui.label(n.to_string());
+                });
+            }
+        });
+    });
+    (canvas.width, canvas.height, canvas.rgba8())
+}

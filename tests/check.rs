@@ -1,0 +1,339 @@
+//! `phonglab check` on notebooks a student could have written: the exported worksheet
+//! notebook with one catalogue mistake written into its cells, run by Python with NumPy
+//! (as Jupyter runs it, its outputs saved in the notebook), then checked against the
+//! assignment: the mistake is named, and the unchanged notebook is all right. A class
+//! folder with hostile file names gives a report and marks that carry the names as data.
+//! Skipped, saying so, where Python or NumPy is missing (CI installs Debian's python3-numpy).
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use glam::{DMat4, DVec3, DVec4};
+use phonglab_core::Document;
+use phonglab_core::camera::CameraSpec;
+use phonglab_core::export::notebook::{Cell, cells, ipynb};
+use phonglab_core::study::check::mistakes::CATALOGUE;
+
+mod common;
+
+/// A folder of the test's own, removed when it ends.
+struct TempDir(PathBuf);
+
+impl TempDir {
+    fn new(name: &str) -> TempDir {
+        let p = std::env::temp_dir().join(format!("phonglab-check-{}-{name}", std::process::id()));
+        std::fs::remove_dir_all(&p).ok();
+        std::fs::create_dir_all(&p).unwrap();
+        TempDir(p)
+    }
+
+    fn path(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        std::fs::remove_dir_all(&self.0).ok();
+    }
+}
+
+/// Runs each notebook's code cells in order, in one namespace, with NumPy's default print
+/// options, and saves it with its outputs at the path given after it; an exception stops
+/// the run (as Run All does) and is saved as the cell's error output.
+const RUNNER: &str = r#"
+import io, json, sys, contextlib
+args = sys.argv[1:]
+for src, dst in zip(args[0::2], args[1::2]):
+    nb = json.load(open(src, encoding="utf-8"))
+    ns = {}
+    stopped = False
+    for cell in nb["cells"]:
+        if cell["cell_type"] != "code" or stopped:
+            continue
+        out = io.StringIO()
+        error = None
+        with contextlib.redirect_stdout(out):
+            try:
+                exec("".join(cell["source"]), ns)
+            except Exception as e:
+                error = {"output_type": "error", "ename": type(e).__name__, "evalue": str(e), "traceback": []}
+        cell["outputs"] = []
+        if out.getvalue():
+            cell["outputs"].append({"output_type": "stream", "name": "stdout", "text": out.getvalue().splitlines(True)})
+        if error:
+            cell["outputs"].append(error)
+            stopped = True
+    json.dump(nb, open(dst, "w", encoding="utf-8"))
+"#;
+
+fn python_with_numpy() -> Option<&'static str> {
+    ["/usr/bin/python3", "python3"]
+        .into_iter()
+        .find(|p| Command::new(p).args(["-c", "import numpy"]).output().is_ok_and(|o| o.status.success()))
+}
+
+fn scene(name: &str) -> Document {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes").join(name);
+    Document::from_toml_in(&std::fs::read_to_string(&path).unwrap(), path.parent()).unwrap()
+}
+
+/// The worksheet's scene (mview5, as `phonglab export` writes it).
+fn worksheet() -> Document {
+    scene("worksheet-mview5.toml")
+}
+
+/// The worksheet's scene under OpenGL's rules, the light below the surface: N.L < 0
+/// while N.H > 0.
+fn light_behind() -> Document {
+    let mut d = worksheet();
+    d.scene.rules = phonglab_core::Rules::OPENGL;
+    d.scene.lights[0].position = DVec4::new(0.0, 0.0, -90.0, 1.0);
+    d
+}
+
+/// A spotlight whose vertex lies 15 degrees off the axis, with cutoff `cutoff`.
+fn spot(cutoff: f64) -> Document {
+    let mut d = scene("spotlight.toml");
+    d.scene.vertex.position = DVec4::new(0.8, 0.0, 0.0, 1.0);
+    d.scene.lights[0].spot_cutoff = cutoff;
+    d
+}
+
+/// `d` seen through a scale by `s` after its modelview.
+fn scaled(mut d: Document, s: DVec3) -> Document {
+    let m = DMat4::from_scale(s) * d.scene.eye_from_world;
+    d.camera = CameraSpec::Matrix(m);
+    d.scene.eye_from_world = m;
+    d
+}
+
+/// The identity modelview: what the student computes is what they typed.
+fn identity(mut d: Document) -> Document {
+    d.camera = CameraSpec::Matrix(DMat4::IDENTITY);
+    d.scene.eye_from_world = DMat4::IDENTITY;
+    d.scene.world_from_object = DMat4::IDENTITY;
+    d
+}
+
+/// A mistake's id, the assignment, and the edits (text found, its replacement).
+type Case = (&'static str, Document, Vec<(&'static str, &'static str)>);
+
+/// One catalogue mistake: its id, the assignment, and the edits that write it into the
+/// exported notebook's cells.
+fn cases() -> Vec<Case> {
+    // OpenGL's rules under a non-uniform scale (x twice), where M n and (M^-1)^T n part.
+    let mut opengl_scaled = worksheet();
+    opengl_scaled.scene.rules = phonglab_core::Rules::OPENGL;
+    opengl_scaled.scene.vertex.normal = DVec3::new(0.3, 0.5, 0.8);
+    let opengl_scaled = scaled(opengl_scaled, DVec3::new(2.0, 1.0, 1.0));
+    // The worksheet's M n, 1.6 long under a scale of z by 2.
+    let stretched = scaled(worksheet(), DVec3::new(1.0, 1.0, 2.0));
+    let mut directional = worksheet();
+    directional.scene.lights[0].position = DVec4::new(0.0, 0.0, 1.0, 0.0);
+    directional.scene.lights[0].attenuation = [1.0, 0.0001, 0.00001];
+    let mut w2 = worksheet();
+    w2.scene.vertex.position = DVec4::new(-1024.0, -768.0, 0.0, 2.0);
+    let mut acos = identity(worksheet());
+    acos.scene.vertex.position = DVec4::new(0.0, 0.0, 0.0, 1.0);
+    acos.scene.vertex.normal = DVec3::new(1.0, 2.0, 1.0);
+    acos.scene.lights[0].position = DVec4::new(3.0, 6.0, 3.0, 1.0);
+    vec![
+        (
+            "normal-by-modelview",
+            opengl_scaled,
+            vec![("np.matmul(normalMatrix, vertexNormal[:3])", "np.matmul(mview[:3, :3], vertexNormal[:3])")],
+        ),
+        (
+            "normal-not-normalised",
+            stretched.clone(),
+            vec![("vertexNormal = vertexNormal/np.linalg.norm(vertexNormal)\n", "")],
+        ),
+        ("light-not-transformed", worksheet(), vec![("lightPos = np.matmul(mview, lightPos)\n", "")]),
+        (
+            "light-transformed-twice",
+            worksheet(),
+            vec![(
+                "lightPos = np.matmul(mview, lightPos)\n",
+                "lightPos = np.matmul(mview, np.matmul(mview, lightPos))\n",
+            )],
+        ),
+        ("vlv-reversed", worksheet(), vec![("vlv = (lightPos - vertexPos)", "vlv = (vertexPos - lightPos)")]),
+        ("vlv-not-normalised", worksheet(), vec![("vlv = vlv/np.linalg.norm(vlv)\n", "")]),
+        (
+            "directional-as-point",
+            directional,
+            vec![("if (lightPos[-1] == 0):", "if False:"), ("if lightPos[-1] == 0:", "if False:")],
+        ),
+        (
+            "viewer-swapped",
+            worksheet(),
+            vec![
+                ("#obs = np.array([0, 0, 0, 1])", "obs = np.array([0, 0, 0, 1])"),
+                ("obs = vertexPos*np.array([1, 1, 0, 1])", "#obs = vertexPos*np.array([1, 1, 0, 1])"),
+            ],
+        ),
+        ("halfway-not-normalised", worksheet(), vec![("H = H/np.linalg.norm(H)\n", "")]),
+        ("specular-without-gate", light_behind(), vec![("if (cosTheta <= 0):", "if False:")]),
+        ("diffuse-not-clamped", light_behind(), vec![("if (theta > m.pi*0.5):", "if False:")]),
+        ("acos-past-one", acos, vec![("m.acos(min(max(cosTheta, -1), 1))", "m.acos(cosTheta)")]),
+        ("spot-cutoff-radians", spot(25.0), vec![("m.cos(m.radians(spotCutoff))", "m.cos(spotCutoff)")]),
+        (
+            "spot-exponent-outside-cone",
+            spot(6.3),
+            vec![("    else:\n        spot = 0", "    else:\n        spot = max(cosSpot, 0)**spotCoef")],
+        ),
+        ("attenuation-multiplied", worksheet(), vec![("I = (Iamb + Idif + Ispec)/at", "I = (Iamb + Idif + Ispec)*at")]),
+        (
+            "attenuation-object-distance",
+            stretched.clone(),
+            vec![(
+                "d = np.linalg.norm(lightPos - vertexPos);",
+                "d = np.linalg.norm(np.array([0, 0, 90, 1]) - np.array([-512, -384, 0, 1]));",
+            )],
+        ),
+        ("w-divide-forgotten", w2, vec![("vertexPos = vertexPos/vertexPos[3]\n", "")]),
+        ("shininess-fraction", worksheet(), vec![("ns = 0.2*128;", "ns = 0.2;")]),
+    ]
+}
+
+/// The exported notebook of `doc` with `edits` made in its code cells (each must be found).
+fn edited(what: &str, doc: &Document, edits: &[(&str, &str)]) -> String {
+    let mut cells = cells(doc, &phonglab_core::export::key(doc));
+    for (old, new) in edits {
+        let cell = cells.iter_mut().find_map(|c| match c {
+            Cell::Code(text) if text.contains(old) => Some(text),
+            _ => None,
+        });
+        let cell = cell.unwrap_or_else(|| panic!("{what}: the notebook has no {old}"));
+        *cell = cell.replacen(old, new, 1);
+    }
+    ipynb(&cells)
+}
+
+/// Runs the notebooks in `dir` (`k.ipynb` into `k.ran.ipynb`).
+fn run_all(python: &str, dir: &Path, count: usize) -> Vec<PathBuf> {
+    let mut args = Vec::new();
+    let mut out = Vec::new();
+    for k in 0..count {
+        args.push(dir.join(format!("{k}.ipynb")));
+        args.push(dir.join(format!("{k}.ran.ipynb")));
+        out.push(dir.join(format!("{k}.ran.ipynb")));
+    }
+    let run = Command::new(python).arg("-c").arg(RUNNER).args(&args).output().unwrap();
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    out
+}
+
+fn check_json(work: &Path, scene: &Path) -> serde_json::Value {
+    let out = common::phonglab(&["check", work.to_str().unwrap(), "--scene", scene.to_str().unwrap(), "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+#[test]
+fn every_catalogue_mistake_written_into_a_notebook_is_named_and_the_unchanged_one_is_right() {
+    let Some(python) = python_with_numpy() else {
+        eprintln!("SKIPPED: no python3 with NumPy here (Debian: python3-numpy)");
+        return;
+    };
+    let dir = TempDir::new("mistakes");
+    let cases = cases();
+    // Every id of the catalogue has its notebook.
+    for info in &CATALOGUE {
+        assert!(cases.iter().any(|c| c.0 == info.id), "no notebook for {}", info.id);
+    }
+    let mut unchanged: Vec<Document> = vec![worksheet(), light_behind(), spot(25.0), spot(6.3)];
+    unchanged.dedup_by(|a, b| a.to_toml().unwrap() == b.to_toml().unwrap());
+    let n = cases.len();
+    for (k, (id, doc, edits)) in cases.iter().enumerate() {
+        std::fs::write(dir.path().join(format!("{k}.ipynb")), edited(id, doc, edits)).unwrap();
+        std::fs::write(dir.path().join(format!("{k}.toml")), doc.to_toml().unwrap()).unwrap();
+    }
+    for (j, doc) in unchanged.iter().enumerate() {
+        let k = n + j;
+        std::fs::write(dir.path().join(format!("{k}.ipynb")), edited("unchanged", doc, &[])).unwrap();
+        std::fs::write(dir.path().join(format!("{k}.toml")), doc.to_toml().unwrap()).unwrap();
+    }
+    let ran = run_all(python, dir.path(), n + unchanged.len());
+    for (k, (id, ..)) in cases.iter().enumerate() {
+        let json = check_json(&ran[k], &dir.path().join(format!("{k}.toml")));
+        assert_eq!(json["verdict"], "wrong", "{id}: {json:#}");
+        let ids: Vec<&str> = json["causes"].as_array().unwrap().iter().map(|c| c["id"].as_str().unwrap()).collect();
+        assert!(ids.contains(id), "{id}: named {ids:?}: {json:#}");
+        assert!(ids.len() <= 2, "{id}: named {ids:?}");
+    }
+    for j in 0..unchanged.len() {
+        let k = n + j;
+        let json = check_json(&ran[k], &dir.path().join(format!("{k}.toml")));
+        assert_eq!(json["verdict"], "right", "unchanged {j}: {json:#}");
+        assert!(json["first_wrong"].is_null() && json["causes"].as_array().unwrap().is_empty());
+        assert!(json["steps"].as_array().unwrap().len() >= 12, "{json:#}");
+    }
+}
+
+#[test]
+fn a_notebook_saved_without_outputs_is_told_to_run_first() {
+    let dir = TempDir::new("unrun");
+    let path = dir.path().join("never-run.ipynb");
+    std::fs::write(&path, edited("unchanged", &worksheet(), &[])).unwrap();
+    let out = common::phonglab(&["check", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("Run it first"), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+#[test]
+fn a_class_with_hostile_names_gets_a_report_and_marks_that_keep_them_as_data() {
+    let Some(python) = python_with_numpy() else {
+        eprintln!("SKIPPED: no python3 with NumPy here (Debian: python3-numpy)");
+        return;
+    };
+    let work = TempDir::new("work");
+    let right = edited("right", &worksheet(), &[]);
+    let wrong = edited("wrong", &worksheet(), &[("vlv = (lightPos - vertexPos)", "vlv = (vertexPos - lightPos)")]);
+    std::fs::write(work.path().join("0.ipynb"), &right).unwrap();
+    std::fs::write(work.path().join("1.ipynb"), &wrong).unwrap();
+    let ran = run_all(python, work.path(), 2);
+    let class = TempDir::new("class");
+    let names = ["=HYPERLINK(\"http:x\")|ana.ipynb", "-2+3 [link](x) `b`.ipynb", "@SUM(A1) *c*.ipynb"];
+    for (k, name) in names.iter().enumerate() {
+        std::fs::copy(&ran[if k == 1 { 0 } else { 1 }], class.path().join(name)).unwrap();
+    }
+    std::fs::write(class.path().join("not run.ipynb"), &right).unwrap();
+    let out_dir = TempDir::new("out");
+    let (report, csv) = (out_dir.path().join("report.md"), out_dir.path().join("marks.csv"));
+    let out = common::phonglab_in(
+        "pt_PT.UTF-8",
+        &[
+            "check",
+            class.path().to_str().unwrap(),
+            "--report",
+            report.to_str().unwrap(),
+            "--csv",
+            csv.to_str().unwrap(),
+        ],
+    );
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let md = std::fs::read_to_string(&report).unwrap();
+    assert!(md.contains("# Verificação da turma"), "{md}");
+    assert!(md.contains("- vlv-reversed: 2"), "{md}");
+    assert!(md.contains("\\[link\\](x) \\`b\\`"), "{md}");
+    assert!(!md.contains("[link](x)"), "{md}");
+    let marks = std::fs::read_to_string(&csv).unwrap();
+    let lines: Vec<&str> = marks.lines().collect();
+    assert_eq!(lines.len(), 5, "{marks}");
+    for line in &lines[1..] {
+        assert!(!line.starts_with(['=', '+', '-', '@']) && !line.starts_with("\"="), "{line}");
+    }
+    assert!(marks.contains("\"'=HYPERLINK(\"\"http:x\"\")|ana.ipynb\",wrong,vlv,vlv-reversed"), "{marks}");
+    assert!(marks.contains("'-2+3 [link](x) `b`.ipynb,right,,"), "{marks}");
+    assert!(marks.contains("not run.ipynb,unread,"), "{marks}");
+    let png = std::fs::read(out_dir.path().join("report.png")).unwrap();
+    assert!(png.starts_with(b"\x89PNG"));
+    // A report asked to go over a submission is refused, and the submission is kept.
+    let onto = class.path().join("@SUM(A1) *c*.ipynb");
+    let before = std::fs::read(&onto).unwrap();
+    let out = common::phonglab(&["check", class.path().to_str().unwrap(), "--csv", onto.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(std::fs::read(&onto).unwrap(), before);
+}
