@@ -297,7 +297,7 @@ fn a_class_with_hostile_names_gets_a_report_and_marks_that_keep_them_as_data() {
     let class = TempDir::new("class");
     let names = ["=HYPERLINK(\"http:x\")|ana.ipynb", "-2+3 [link](x) `b`.ipynb", "@SUM(A1) *c*.ipynb"];
     for (k, name) in names.iter().enumerate() {
-        std::fs::copy(&ran[if k == 1 { 0 } else { 1 }], class.path().join(name)).unwrap();
+        std::fs::copy(&ran[usize::from(k != 1)], class.path().join(name)).unwrap();
     }
     std::fs::write(class.path().join("not run.ipynb"), &right).unwrap();
     let out_dir = TempDir::new("out");

@@ -842,7 +842,7 @@ fn bench_render_times_frames_that_only_light_again_and_the_coarse_copy() {
         ]);
         assert!(o.status.success(), "{}", stderr(&o));
         let lines: Vec<String> =
-            stdout(&o).lines().filter(|l| l.starts_with("sphere ")).map(|l| l.to_string()).collect();
+            stdout(&o).lines().filter(|l| l.starts_with("sphere ")).map(std::string::ToString::to_string).collect();
         assert_eq!(lines.len(), 3, "{}", stdout(&o));
         lines.iter().map(|l| l.split_whitespace().nth(10).unwrap().parse::<u32>().unwrap()).collect::<Vec<_>>()
     };

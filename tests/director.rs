@@ -135,7 +135,7 @@ fn a_spotlights_cone_opens_at_its_cutoff() {
     // The rims brighten towards the axis: cos^s at a quarter of the cutoff is the largest.
     let strengths: Vec<f64> =
         st.segments.iter().filter_map(|s| if let Kind::Cone(0, k) = s.kind { Some(k) } else { None }).collect();
-    let most = strengths.iter().cloned().fold(0.0, f64::max);
+    let most = strengths.iter().copied().fold(0.0, f64::max);
     assert!((most - (l.spot_cutoff / 4.0).to_radians().cos().powf(l.spot_exponent)).abs() < 1e-12);
 }
 

@@ -155,7 +155,7 @@ impl PythonChecker {
 static PYTHON: Mutex<Option<PythonChecker>> = Mutex::new(None);
 
 fn python<R>(f: impl FnOnce(&mut PythonChecker) -> R) -> R {
-    let mut guard = PYTHON.lock().unwrap_or_else(|e| e.into_inner());
+    let mut guard = PYTHON.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     f(guard.get_or_insert_with(PythonChecker::start))
 }
 

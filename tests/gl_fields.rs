@@ -68,7 +68,7 @@ const FIELDS: &[Field] = &[
                 face: Face::FrontAndBack,
                 mode: ColorMaterialMode::AmbientAndDiffuse,
                 color: DVec4::new(1.0, 0.55, 0.0, 1.0),
-            })
+            });
         },
         label: "color-material",
     },
@@ -80,7 +80,7 @@ const FIELDS: &[Field] = &[
                 face: Face::Front,
                 mode: ColorMaterialMode::Specular,
                 color: DVec4::new(0.2, 0.9, 0.3, 1.0),
-            })
+            });
         },
         label: "color-material",
     },

@@ -206,10 +206,10 @@ fn labels(h: &Harness<'_, AppState>) -> Vec<String> {
     let mut stack = vec![root];
     while let Some(n) = stack.pop() {
         if let Some(l) = n.accesskit_node().label() {
-            out.push(l.to_string());
+            out.push(l.clone());
         }
         if let Some(v) = n.accesskit_node().value() {
-            out.push(v.to_string());
+            out.push(v.clone());
         }
         stack.extend(n.children());
     }

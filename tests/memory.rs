@@ -112,7 +112,7 @@ fn sphere_obj(path: &Path, n: usize, soup: bool) {
 
 #[test]
 fn reading_an_obj_file_peaks_under_400_bytes_a_triangle_soup_or_shared() {
-    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     let dir = folder("obj");
     for soup in [true, false] {
         let path = dir.join(if soup { "soup.obj" } else { "shared.obj" });
@@ -138,7 +138,7 @@ fn reading_an_obj_file_peaks_under_400_bytes_a_triangle_soup_or_shared() {
 
 #[test]
 fn a_mesh_over_the_memory_budget_is_refused_before_it_is_read() {
-    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     let dir = folder("budget");
     let path = dir.join("soup.obj");
     sphere_obj(&path, 100, true);
@@ -173,7 +173,7 @@ fn case_file(path: &Path, n: usize) {
 
 #[test]
 fn eval_takes_the_memory_of_one_case_whatever_the_number_of_cases() {
-    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     let dir = folder("eval");
     let mut peaks = Vec::new();
     for n in [2_000, 20_000] {

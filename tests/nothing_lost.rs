@@ -113,7 +113,10 @@ fn user_listing(dir: &Path) -> Vec<(String, Vec<u8>)> {
 #[test]
 fn an_exercise_set_killed_at_any_step_is_finished_or_undone_by_the_next_run() {
     let args = |seed: &'static str, out: &str| -> Vec<String> {
-        ["exercise", "--seed", seed, "--count", "1", "--out", out].iter().map(|s| s.to_string()).collect()
+        ["exercise", "--seed", seed, "--count", "1", "--out", out]
+            .iter()
+            .map(std::string::ToString::to_string)
+            .collect()
     };
     let dir = temp_dir("exercise-kill-sets");
     let (one, two) = (dir.join("one"), dir.join("two"));

@@ -143,7 +143,7 @@ fn changed(c: &Call) -> Call {
                     _ => "GL_SINGLE_COLOR",
                 }
                 .into(),
-            )
+            );
         }
         ("GL_POSITION", _) => n.value[3] = if c.value[3] == 0.0 { 1.0 } else { 0.0 },
         ("GL_SPOT_DIRECTION", _) => n.value[0] += 0.3,

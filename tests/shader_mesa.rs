@@ -126,7 +126,7 @@ fn write_inputs() {
                     serde_json::json!({ "name": format!("u_{name}"), "type": ty, "value": v })
                 })
                 .collect();
-            let flat3 = |v: &[glam::Vec3]| v.iter().flat_map(|p| p.to_array()).collect::<Vec<f32>>();
+            let flat3 = |v: &[glam::Vec3]| v.iter().flat_map(glam::Vec3::to_array).collect::<Vec<f32>>();
             let json = serde_json::json!({
                 "name": format!("{}_{word}", s.name),
                 "size": SIZE,

@@ -306,7 +306,7 @@ fn clicking_the_surface_explains_that_vertex() {
     let before = h.state().doc.scene.vertex;
     let image = h.get_by_label_contains("Sphere Gouraud").rect();
     // The image sits under its caption; click its centre (the sphere is in the middle).
-    let img = h.query_all_by_role(Role::Image).next().map(|n| n.rect()).unwrap_or(image);
+    let img = h.query_all_by_role(Role::Image).next().map_or(image, |n| n.rect());
     h.get_all_by_role(Role::Image).next().unwrap().click();
     h.run_steps(2);
     let v = h.state().doc.scene.vertex;

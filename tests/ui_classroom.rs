@@ -448,7 +448,7 @@ fn compare_shows_how_much_gouraud_and_phong_differ() {
 /// `PHONGLAB_SCREENSHOTS` names a folder: `PHONGLAB_SCREENSHOTS=docs cargo test --test
 /// ui_classroom screenshots -- --ignored`. Rendered by wgpu on the software adapter.
 #[test]
-#[ignore]
+#[ignore = "writes the guide's screenshots into PHONGLAB_SCREENSHOTS; run by hand"]
 fn screenshots() {
     let Ok(dir) = std::env::var("PHONGLAB_SCREENSHOTS") else { return };
     let dir = std::path::PathBuf::from(dir);
@@ -541,7 +541,7 @@ fn every_label_stands_before_or_above_its_control() {
         let labels: Vec<(String, egui::Rect)> = nodes
             .iter()
             .filter(|n| n.accesskit_node().role() == Role::Label)
-            .filter_map(|n| Some((n.accesskit_node().value()?.to_string(), n.rect())))
+            .filter_map(|n| Some((n.accesskit_node().value()?.clone(), n.rect())))
             .collect();
         let mut checked = 0;
         for n in nodes.iter().filter(|n| matches!(n.accesskit_node().role(), Role::Slider | Role::ComboBox)) {

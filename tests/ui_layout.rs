@@ -240,7 +240,7 @@ fn every_projector_size_fits() {
 }
 
 #[test]
-#[ignore]
+#[ignore = "prints the layout of one size (SIZE=1920...) for a person to read; run by hand"]
 fn dump() {
     let (w, h) = match std::env::var("SIZE").ok().as_deref() {
         Some("1920") => (1920.0, 1080.0),
@@ -312,7 +312,8 @@ fn every_window_is_usable_at_1024x600() {
             match h.query_all_by_label(control).next() {
                 Some(n) if screen.contains_rect(n.rect()) => {}
                 other => {
-                    wrong.push(format!("presenting {presenting}, {what}: {control:?} at {:?}", other.map(|n| n.rect())))
+                    wrong
+                        .push(format!("presenting {presenting}, {what}: {control:?} at {:?}", other.map(|n| n.rect())));
                 }
             }
         }

@@ -124,7 +124,7 @@ fn compare_shows_a_channel_for_both_over_one_range() {
     assert!((a.top() - b.top()).abs() < 1.0 && b.left() > a.right(), "{a:?} {b:?}");
     let legends: Vec<String> = h
         .query_all_by_label_contains("from 0 to")
-        .filter_map(|n| n.accesskit_node().label().map(|l| l.to_string()))
+        .filter_map(|n| n.accesskit_node().label())
         .collect();
     assert_eq!(legends.len(), 2, "{legends:?}");
     assert_eq!(legends[0], legends[1], "one range for both");

@@ -165,9 +165,9 @@ fn click_something(h: &Harness<'_, AppState>, rng: &mut Rng) -> Option<String> {
     let n = &nodes[rng.below(nodes.len())];
     let label = n.accesskit_node().label().unwrap_or_default();
     if rng.below(2) == 0 {
-        n.click()
+        n.click();
     } else {
-        n.click_accesskit()
+        n.click_accesskit();
     }
     Some(format!("click {label:?}"))
 }

@@ -125,10 +125,10 @@ fn render(a: &RenderBench) -> Result<()> {
             anyhow::bail!(crate::t!("err-bench-object", value = name));
         }
     }
-    for name in a.shading.iter() {
-        if !Shading::ALL.iter().any(|s| s.label().eq_ignore_ascii_case(name)) {
-            anyhow::bail!(crate::t!("err-bench-shading", value = name));
-        }
+    if let Some(name) = &a.shading
+        && !Shading::ALL.iter().any(|s| s.label().eq_ignore_ascii_case(name))
+    {
+        anyhow::bail!(crate::t!("err-bench-shading", value = name));
     }
     if !(3..=2048).contains(&a.slices) {
         anyhow::bail!(crate::t!("err-bench-slices", value = a.slices.to_string()));

@@ -141,7 +141,7 @@ pub fn markdown_tables(csv: &str) -> Result<String> {
         }
         let num = |i: usize| f[i].parse::<f64>().with_context(|| format!("cost.csv line {}: {:?}", n + 2, f[i]));
         if f[object] != current {
-            current = f[object].clone();
+            current.clone_from(&f[object]);
             if !out.is_empty() {
                 out.push('\n');
             }
@@ -229,7 +229,9 @@ pub fn run(a: &CostRun) -> Result<()> {
     let (w, h, rgba) = chart_png(&studies, 1.5);
     set.add("cost.png", crate::io::image::encode_png(w, h, &rgba)?);
     let notices = crate::io::file_set::write_set(&a.out, &set, belongs_to_a_report)?;
-    notices.iter().for_each(|n| super::say(n));
+    for n in &notices {
+        super::say(n);
+    }
     super::say(&crate::t!("cost-wrote", files = set.to_string(), out = crate::io::reasons::shown(&a.out)));
     Ok(())
 }

@@ -79,12 +79,16 @@ fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
 pub fn run(a: &ExerciseArgs) -> Result<()> {
     if a.level == Some(5) {
         let (count, notices) = crate::io::misconception_set::write(&a.out, a.seed, a.count as usize)?;
-        notices.iter().for_each(|n| super::say(n));
+        for n in &notices {
+            super::say(n);
+        }
         super::say(&t!("wrong-written", count = count, out = crate::io::reasons::shown(&a.out)));
         return Ok(());
     }
     let (ex, notices) = write(&a.out, &request_of(a)?)?;
-    notices.iter().for_each(|n| super::say(n));
+    for n in &notices {
+        super::say(n);
+    }
     let redraws: usize = ex.iter().map(|e| e.redraws).sum();
     super::say(&t!(
         "exercises-written",

@@ -82,7 +82,9 @@ pub fn export(a: &ExportArgs) -> Result<()> {
             }
             let names: Vec<String> = written.iter().map(|(n, _)| n.clone()).collect();
             let notices = crate::io::file_set::write_set(dir, &set, |n| names.iter().any(|m| m == n))?;
-            notices.iter().for_each(|n| super::say(n));
+            for n in &notices {
+                super::say(n);
+            }
             super::say(&t!("export-written", path = crate::io::reasons::shown(dir)));
         }
         (Some(path), _) => {

@@ -122,7 +122,7 @@ fn described(arg: Arg, message: &str, arguments: String, options: String) -> Arg
     let mut long = help.clone();
     let values = described_values(&arg);
     if !values.is_empty() {
-        let names: Vec<&str> = values.iter().map(|v| v.get_name()).collect();
+        let names: Vec<&str> = values.iter().map(clap::builder::PossibleValue::get_name).collect();
         help.push(' ');
         help.push_str(&t!("cli-possible-values", values = names.join(", ")));
         long.push('\n');

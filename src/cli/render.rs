@@ -182,7 +182,7 @@ impl ShadedInput {
             let mut doc = match (&self.scene, self.preset.as_deref()) {
                 (Some(p), _) => scene_file(p)?,
                 (None, Some("phong-demo")) => library::phong_demo_document(),
-                (None, Some("worksheet")) | (None, None) => Document::default(),
+                (None, Some("worksheet") | None) => Document::default(),
                 (None, Some(other)) => {
                     bail!(t!("err-unknown-preset", value = format!("{other:?}"), names = "worksheet, phong-demo"))
                 }
@@ -211,7 +211,7 @@ impl ShadedInput {
                 // The scene's own mesh is an input too.
                 let mesh = doc.view.obj.as_deref().map(|m| (Path::new(m), crate::io::same_file::Input::Mesh));
                 crate::io::same_file::refuse_onto(outputs, mesh.as_slice()).map_err(anyhow::Error::msg)?;
-                notes = doc.view.obj_mesh()?.notes.clone();
+                notes.clone_from(&doc.view.obj_mesh()?.notes);
             }
             let mesh = doc.view.mesh();
             let setup = doc.shaded_setup(self.pow);

@@ -156,7 +156,7 @@ fn colour(c: glam::DVec4) -> Vec<String> {
 /// An exercise's sheet, to hand out: the class, name and date lines, the givens set as
 /// vectors and a matrix, and a box for each step, sized for its value.
 fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
-    use Block::*;
+    use Block::{Answer, Heading, Matrix, Text, Title, Vector, WriteOn};
     let s = &ex.doc.scene;
     let vector = |name: &str, values: Vec<String>| Vector { name: name.into(), values, note: String::new() };
     let rules = phonglab_core::exercise::rules_in_words(s.rules.set);
@@ -227,7 +227,7 @@ fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
 /// An exercise's key, for the teacher: every step's formula and value, as explain prints
 /// them (both sides with two-sided lighting).
 fn key_blocks(doc: &Document, file: &str) -> Result<Vec<Block>> {
-    use Block::*;
+    use Block::{Heading, KeyStep, Text, Title};
     let mut b = vec![Title(t!("key-title", name = &doc.name)), Text(t!("key-intro", file = file).replace('`', ""))];
     for ex in explained_sides(doc)? {
         b.push(Heading(ex.heading.clone()));

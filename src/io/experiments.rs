@@ -262,7 +262,7 @@ pub fn in_folder(dir: &Path) -> (Vec<Experiment>, Vec<String>) {
     // Reads a file of the folder under its own cap and what is left of the folder's.
     let take = |path: &Path, cap: u64, kind: &str| -> Result<String, String> {
         let left = MAX_FOLDER_BYTES.saturating_sub(read.get());
-        let size = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
+        let size = std::fs::metadata(path).map_or(0, |m| m.len());
         if size > left {
             return Err(t!(
                 "experiment-folder-full",

@@ -106,14 +106,14 @@ mod tests {
         assert_eq!(scene_files().len(), SCENE_FILES.len(), "every shipped file loads");
         use crate::locale::{Lang, Locale, set_thread};
         set_thread(Some(Locale::of(Lang::En)));
-        let titles: Vec<String> = scene_files().iter().map(|f| f.title()).collect();
+        let titles: Vec<String> = scene_files().iter().map(super::SceneFile::title).collect();
         assert_eq!(titles[0], "Worksheet, mview1");
         for t in ["Phong demo", "Gold", "Three lights", "Yellow rubber", "Spotlight"] {
             assert!(titles.iter().any(|x| x == t), "{t} in {titles:?}");
         }
         assert_eq!(scene_files().iter().filter(|f| f.group == Group::RedbookTeapots).count(), 24);
         set_thread(Some(Locale::of(Lang::PtPt)));
-        let titles: Vec<String> = scene_files().iter().map(|f| f.title()).collect();
+        let titles: Vec<String> = scene_files().iter().map(super::SceneFile::title).collect();
         assert_eq!(titles[0], "Ficha, mview1");
         for t in ["Demo de Phong", "Ouro", "Três luzes", "Borracha amarela", "Foco"] {
             assert!(titles.iter().any(|x| x == t), "{t} in {titles:?}");

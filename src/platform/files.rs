@@ -74,7 +74,7 @@ pub fn pick_scene_to_save(start: Option<&std::path::Path>) -> Picked {
 #[cfg(not(target_arch = "wasm32"))]
 fn dialog(start: Option<&std::path::Path>) -> rfd::FileDialog {
     let d = rfd::FileDialog::new();
-    match start.and_then(|p| std::path::absolute(p).ok()).and_then(|p| p.parent().map(|d| d.to_path_buf())) {
+    match start.and_then(|p| std::path::absolute(p).ok()).and_then(|p| p.parent().map(std::path::Path::to_path_buf)) {
         Some(dir) if dir.is_dir() => d.set_directory(dir),
         _ => d,
     }

@@ -88,7 +88,7 @@ pub fn rename_no_replace(from: &Path, to: &Path) -> io::Result<()> {
             return Ok(());
         }
         let e = io::Error::last_os_error();
-        if !matches!(e.raw_os_error(), Some(libc::EINVAL) | Some(libc::ENOSYS)) {
+        if !matches!(e.raw_os_error(), Some(libc::EINVAL | libc::ENOSYS)) {
             return Err(e);
         }
     }

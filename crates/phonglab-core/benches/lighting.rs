@@ -30,7 +30,7 @@ fn one<S: Real>(c: &mut Criterion) {
     let engine = Engine::<S>::new(&scene).unwrap();
     let v = scene.vertex;
     c.bench_function(&format!("general/one_vertex/{}", S::NAME), |b| {
-        b.iter(|| black_box(engine.light(black_box(&v))).front.primary)
+        b.iter(|| black_box(engine.light(black_box(&v))).front.primary);
     });
 }
 
@@ -47,7 +47,7 @@ fn batch<S: Real>(c: &mut Criterion, vertices: &[Vertex]) {
                 sum += engine.light(v).front.primary[0];
             }
             black_box(sum)
-        })
+        });
     });
     g.finish();
 }

@@ -30,14 +30,14 @@ fn benches(c: &mut Criterion) {
                     s += engine.light(v).front.primary[0];
                 }
                 black_box(s)
-            })
+            });
         });
         let lighter = Lighter::new(&scene, EvalOptions::default()).unwrap();
         g.bench_function(BenchmarkId::new("specialised", b.name()), |bch| {
             bch.iter(|| {
                 lighter.light_batch(&pos, &nrm, &mut out, None);
                 black_box(out[N / 2].primary[0])
-            })
+            });
         });
     }
     g.finish();

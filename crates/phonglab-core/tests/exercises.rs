@@ -157,7 +157,7 @@ fn a_sheet_writes_colours_as_the_worksheet_does_so_the_products_match_the_key() 
             assert!((p - k).abs() < 1e-7, "seed {seed}: {product:?} against the key's {iamb:?}");
         }
         // Steps that do not apply are not asked: no spot factor without a spotlight.
-        let spot = ex.doc.scene.lights.iter().any(|l| l.is_spot());
+        let spot = ex.doc.scene.lights.iter().any(phonglab_core::Light::is_spot);
         assert_eq!(sheet.contains("`spot"), spot, "seed {seed}");
     }
 }

@@ -183,7 +183,7 @@ impl LongAccumulator {
         if bits >> 63 == 1 {
             // Two's complement negation.
             let mut carry = 1u128;
-            for w in add.iter_mut() {
+            for w in &mut add {
                 let v = (!*w) as u128 + carry;
                 *w = v as u64;
                 carry = v >> 64;
@@ -203,7 +203,7 @@ impl LongAccumulator {
         let mut mag = self.limbs;
         if negative {
             let mut carry = 1u128;
-            for w in mag.iter_mut() {
+            for w in &mut mag {
                 let v = (!*w) as u128 + carry;
                 *w = v as u64;
                 carry = v >> 64;

@@ -81,7 +81,7 @@ fn every_group_uses_only_the_groups_below_it_and_names_them() {
         .collect();
     groups.sort();
     let mut listed: Vec<&str> = ORDER.iter().map(|(g, _)| *g).collect();
-    listed.sort();
+    listed.sort_unstable();
     assert_eq!(groups, listed, "every group has its place in the order (this file's table)");
     let mut wrong = Vec::new();
     let mut checked = 0;
@@ -99,7 +99,7 @@ fn every_group_uses_only_the_groups_below_it_and_names_them() {
                 }
                 match rank(&name) {
                     None => {
-                        wrong.push(format!("src/{shown}:{line}: crate::{name} goes through the root: name its group"))
+                        wrong.push(format!("src/{shown}:{line}: crate::{name} goes through the root: name its group"));
                     }
                     Some(r) if r > own => wrong.push(format!(
                         "src/{shown}:{line}: {group} (rank {own}) uses {name} (rank {r}), a group above it"

@@ -134,7 +134,7 @@ fn flatten(path: &str, v: &toml::Value, out: &mut Vec<(String, String)>) {
     let join = |k: &str| if path.is_empty() { k.to_string() } else { format!("{path}.{k}") };
     match v {
         toml::Value::Table(t) => t.iter().for_each(|(k, v)| flatten(&join(k), v, out)),
-        toml::Value::Array(items) if items.iter().any(|i| i.is_table()) => {
+        toml::Value::Array(items) if items.iter().any(toml::Value::is_table) => {
             items.iter().enumerate().for_each(|(i, v)| flatten(&join(&i.to_string()), v, out));
         }
         toml::Value::Array(items) => {

@@ -41,7 +41,7 @@ impl<T: Send + 'static> Worker<T> {
                     .unwrap_or_else(|_| Err(crate::t!("work-failed")))
             };
             let r = crate::platform::threads::with_pool(threads, run)
-                .unwrap_or_else(|e| Err(crate::t!("work-no-pool", error = e.to_string())));
+                .unwrap_or_else(|e| Err(crate::t!("work-no-pool", error = e.clone())));
             let _ = tx.send(r);
         });
         Self { progress, cancel, result: rx }
@@ -49,7 +49,7 @@ impl<T: Send + 'static> Worker<T> {
 
     /// Where it is.
     pub fn progress(&self) -> Progress {
-        self.progress.lock().map(|g| g.clone()).unwrap_or(Progress { done: 0, total: 1, what: String::new() })
+        self.progress.lock().map_or(Progress { done: 0, total: 1, what: String::new() }, |g| g.clone())
     }
 
     /// The result once finished (`Ok(None)`: cancelled).

@@ -189,7 +189,7 @@ fn side_ui(ui: &mut Ui, s: &Side<'_>, view: &mut ViewCache, px: usize) -> Option
             Err(e) => {
                 ui.colored_label(
                     crate::app::widgets::palette::ERROR,
-                    t!("compare-cannot-render", which = which, error = e.to_string()),
+                    t!("compare-cannot-render", which = which, error = e.clone()),
                 );
             }
         }

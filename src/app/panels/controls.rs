@@ -112,7 +112,7 @@ pub fn nice_ceiling(x: f64) -> f64 {
 /// worksheet's vertex at -512 gets ±2000. Typed values are not bounded by it; one beyond it
 /// widens the range.
 pub fn position_range(doc: &Document) -> f64 {
-    let extent = |p: DVec4| if p.w != 0.0 { (p.truncate() / p.w).abs().max_element() } else { 0.0 };
+    let extent = |p: DVec4| if p.w == 0.0 { 0.0 } else { (p.truncate() / p.w).abs().max_element() };
     let lights = doc.scene.lights.iter().map(|l| extent(l.position)).fold(0.0, f64::max);
     let m = extent(doc.scene.vertex.position).max(lights).max(1.0);
     nice_ceiling(2.0 * m).max(5.0)

@@ -56,7 +56,7 @@ impl CostState {
             match r {
                 Ok(Some(s)) => self.study = Some((Arc::new(s), std::mem::take(&mut self.pending_about))),
                 Ok(None) => {}
-                Err(e) => self.error = Some(t!("cost-failed", error = e.to_string())),
+                Err(e) => self.error = Some(t!("cost-failed", error = e.clone())),
             }
             self.running = None;
         }

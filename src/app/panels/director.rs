@@ -374,7 +374,7 @@ fn moved_eye(doc: &Document, scene: &Scene, eye: DVec3) -> Option<Document> {
     let forward = world_from_eye.transform_vector3(-DVec3::Z).normalize_or_zero();
     let up = world_from_eye.transform_vector3(DVec3::Y).normalize_or_zero();
     let p = scene.vertex.position;
-    let vertex = scene.world_from_object.transform_point3(if p.w != 0.0 { p.truncate() / p.w } else { p.truncate() });
+    let vertex = scene.world_from_object.transform_point3(if p.w == 0.0 { p.truncate() } else { p.truncate() / p.w });
     let centre = old + forward * (vertex - old).length().max(1e-6);
     c.camera = phonglab_core::camera::CameraSpec::LookAt { eye, centre, up };
     c.scene.eye_from_world = c.camera.matrix().ok()?;

@@ -30,7 +30,7 @@ pub struct WrongQuestion {
 
 impl std::fmt::Debug for WrongQuestion {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("WrongQuestion").field("kind", &self.kind).field("picked", &self.picked).finish()
+        f.debug_struct("WrongQuestion").field("kind", &self.kind).field("picked", &self.picked).finish_non_exhaustive()
     }
 }
 

@@ -175,7 +175,7 @@ pub fn shader_window_ui(ctx: &egui::Context, state: &mut ShaderState, doc: &Docu
         if !state.shown.is_empty() {
             (state.added, state.removed) = line_diff(&state.shown, &text);
         }
-        state.shown = text.clone();
+        state.shown.clone_from(&text);
     }
     let mut open = state.open;
     // Over the centre and the calculation, leaving the controls free to toggle effects.

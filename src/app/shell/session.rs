@@ -311,7 +311,7 @@ pub fn restore_document(text: Option<&str>, dir: Option<&Path>) -> Result<Option
                 .and_then(|()| crate::io::atomic_write::write(&p, text.as_bytes()).map_err(|e| e.to_string()))
             {
                 Ok(()) => t!("session-scene-kept", path = p.display().to_string()),
-                Err(err) => t!("session-scene-not-kept", error = err.to_string()),
+                Err(err) => t!("session-scene-not-kept", error = err.clone()),
             }
         }
         None => t!("session-no-folder"),

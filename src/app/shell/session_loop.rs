@@ -114,7 +114,7 @@ impl SessionLoop {
         }
         let since = self.last_write.elapsed();
         if since < self.every {
-            ctx.request_repaint_after(self.every - since);
+            ctx.request_repaint_after(self.every.checked_sub(since).unwrap());
             return;
         }
         self.write_now(state);

@@ -667,11 +667,8 @@ impl Explanation {
         let _ = writeln!(s, "| # | step | formula | value | notes |");
         let _ = writeln!(s, "|---|---|---|---|---|");
         for (k, st) in self.steps.iter().enumerate() {
-            let v = st
-                .value
-                .as_ref()
-                .map(|v| format!("`{} = {}`", st.name, fmt_value(v, sig)))
-                .unwrap_or_else(|| "n/a".into());
+            let v =
+                st.value.as_ref().map_or_else(|| "n/a".into(), |v| format!("`{} = {}`", st.name, fmt_value(v, sig)));
             let _ = writeln!(
                 s,
                 "| {} | {} | `{}` | {} | {} |",

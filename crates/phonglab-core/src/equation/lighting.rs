@@ -174,11 +174,11 @@ fn side_material<S: Real>(m: &Material, scene: &Scene) -> SideMaterial<S> {
 fn prepare_light<S: Real>(scene: &Scene, index: usize, l: &Light) -> PreparedLight<S> {
     let eye_from_light = scene.eye_from_light(l);
     let pos_in_eye = scene.light_pos_in_eye(l);
-    let pos = if pos_in_eye.w != 0.0 {
-        LightPos::Positional(pos_in_eye.xyz() / pos_in_eye.w)
-    } else {
+    let pos = if pos_in_eye.w == 0.0 {
         let dir = pos_in_eye.xyz();
         LightPos::Directional { dir, unit: try_normalize::<f64>(dir) }
+    } else {
+        LightPos::Positional(pos_in_eye.xyz() / pos_in_eye.w)
     };
     let spot = l.is_spot().then(|| PreparedSpot {
         axis: try_normalize::<f64>(transform_vector3(&eye_from_light, l.spot_direction)),
@@ -430,7 +430,7 @@ impl<S: Real> Engine<S> {
         }
         SpotTerms {
             active: true,
-            dir_in_eye: sp.axis.map(S::V3::from_dvec3).unwrap_or(S::V3::ZERO),
+            dir_in_eye: sp.axis.map_or(S::V3::ZERO, S::V3::from_dvec3),
             cos_angle,
             cos_cutoff: S::from_f64(sp.cos_cutoff),
             inside,
@@ -450,7 +450,7 @@ impl<S: Real> Engine<S> {
                 }
                 h
             }
-            (SpecularVector::Halfway, _, _) | (SpecularVector::Reflection, _, _) => None,
+            (SpecularVector::Halfway | SpecularVector::Reflection, _, _) => None,
         }
     }
 }

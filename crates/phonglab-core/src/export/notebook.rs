@@ -628,7 +628,7 @@ fn final_colour(scene: &Scene, needs: &Needs, suffix: &str) -> String {
     s.push_str(&format!("print(\"{i_name} = \", {i_name})\n"));
     let alpha_var = if back { "matAlphaBack" } else { "matAlpha" };
     let alpha_m = if back { scene.back() } else { &scene.material };
-    let alpha = if alpha_m.diffuse.w != 1.0 { alpha_var.to_string() } else { "1".to_string() };
+    let alpha = if alpha_m.diffuse.w == 1.0 { "1".to_string() } else { alpha_var.to_string() };
     let sum = if sep {
         let isec_sum = if n == 1 { isec.clone() } else { format!("sum({isec})") };
         s.push_str(&format!("{isec} = {isec_sum}\nprint(\"{isec} = \", {isec})\n"));

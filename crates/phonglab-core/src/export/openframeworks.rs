@@ -374,7 +374,7 @@ fn lighting_model(scene: &Scene, key: &Key) -> String {
     match key.normals {
         NormalMode::Normalize => {}
         NormalMode::AsIs => {
-            s.push_str(&format!("    // {}\n    glDisable(GL_NORMALIZE);\n", comment(&t!("of-normal-as-is-comment"))))
+            s.push_str(&format!("    // {}\n    glDisable(GL_NORMALIZE);\n", comment(&t!("of-normal-as-is-comment"))));
         }
         NormalMode::Rescale => s.push_str(&format!(
             "    // {}\n    glDisable(GL_NORMALIZE);\n    glEnable(GL_RESCALE_NORMAL);\n",

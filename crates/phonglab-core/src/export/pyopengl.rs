@@ -322,7 +322,12 @@ fn object(view: &View) -> Result<String, String> {
             s.push_str(&format!("NORMALS = [{}]\n", mesh.normals.iter().map(v3).collect::<Vec<_>>().join(", ")));
             s.push_str(&format!(
                 "TRIANGLES = [{}]\n",
-                mesh.triangles.iter().flat_map(|t| t.iter()).map(|i| i.to_string()).collect::<Vec<_>>().join(", ")
+                mesh.triangles
+                    .iter()
+                    .flat_map(|t| t.iter())
+                    .map(std::string::ToString::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", ")
             ));
             return Ok(s + "\n\n");
         }

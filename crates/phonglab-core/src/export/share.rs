@@ -126,7 +126,7 @@ pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
             "lang" if LANGS.contains(&value) => out.lang = Some(value.to_string()),
             "present" if value == "true" => out.present = true,
             "channel" if crate::raster::channels::Channel::ALL.iter().any(|c| c.name() == value) => {
-                out.channel = Some(value.to_string())
+                out.channel = Some(value.to_string());
             }
             _ => return Err(bad()),
         }
@@ -135,7 +135,7 @@ pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
     let (doc, missing) =
         Document::from_toml_keeping_missing_mesh(toml, None).map_err(|e| ShareError::Scene(e.to_string()))?;
     if missing.is_some() {
-        out.missing_mesh = doc.view.obj.clone();
+        out.missing_mesh.clone_from(&doc.view.obj);
     }
     out.doc = doc;
     Ok(out)

@@ -246,7 +246,7 @@ pub fn number(v: &Value, field: &str) -> Result<f64, CaseError> {
 fn numbers(v: &Value, field: &str, lens: &[usize]) -> Result<Vec<f64>, CaseError> {
     let a = v.as_array().ok_or_else(|| err(field, format!("expected a list, found {v}")))?;
     if !lens.contains(&a.len()) {
-        let want: Vec<String> = lens.iter().map(|n| n.to_string()).collect();
+        let want: Vec<String> = lens.iter().map(std::string::ToString::to_string).collect();
         return Err(err(field, format!("expected {} numbers, found {}", want.join(" or "), a.len())));
     }
     a.iter().enumerate().map(|(i, x)| number(x, &format!("{field}[{i}]"))).collect()

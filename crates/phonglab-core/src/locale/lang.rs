@@ -146,7 +146,7 @@ pub fn set_thread(l: Option<Locale>) {
 
 /// The locale in force on this thread.
 pub fn current() -> Locale {
-    THREAD.with(|c| c.get()).unwrap_or_else(|| unpack(DEFAULT.load(Ordering::Relaxed)))
+    THREAD.with(std::cell::Cell::get).unwrap_or_else(|| unpack(DEFAULT.load(Ordering::Relaxed)))
 }
 
 /// Runs `f` with `l` as this thread's locale, then puts the old one back.

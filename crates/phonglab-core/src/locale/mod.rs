@@ -29,7 +29,7 @@ pub fn decimal(text: &str) -> String {
         return text.to_string();
     }
     let chars: Vec<char> = text.chars().collect();
-    let digit = |i: Option<&char>| i.is_some_and(|c| c.is_ascii_digit());
+    let digit = |i: Option<&char>| i.is_some_and(char::is_ascii_digit);
     chars
         .iter()
         .enumerate()
@@ -100,7 +100,7 @@ pub fn fmt_sig(x: f64, sig: usize) -> String {
         format!("{}e{}{}", trim(mant), if exp < 0 { "-" } else { "+" }, exp.abs())
     } else {
         let decimals = (sig as i32 - 1 - exp).max(0) as usize;
-        trim(&format!("{:.*}", decimals, x))
+        trim(&format!("{x:.decimals$}"))
     }
 }
 

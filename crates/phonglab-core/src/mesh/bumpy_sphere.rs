@@ -16,7 +16,7 @@ use super::Mesh;
 /// The bumpy sphere of `20 x 4^level` triangles (level at most 9), radius about 0.5.
 pub fn bumpy_sphere(level: u32, seed: u64) -> Mesh {
     let level = level.min(9);
-    let t = (1.0 + 5f32.sqrt()) / 2.0;
+    let t = f32::midpoint(1.0, 5f32.sqrt());
     let mut positions: Vec<Vec3> = [
         (-1.0, t, 0.0),
         (1.0, t, 0.0),

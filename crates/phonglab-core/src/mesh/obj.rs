@@ -542,7 +542,7 @@ pub fn hold_obj_bytes(name: &str, bytes: &[u8]) -> Result<Arc<LoadedObj>, String
     /// The meshes held at once: each can be hundreds of megabytes.
     const KEPT: usize = 4;
     let obj = Arc::new(load_obj_bytes(name, bytes)?);
-    let mut held = HELD.lock().unwrap_or_else(|e| e.into_inner());
+    let mut held = HELD.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     held.retain(|(n, _)| n != name);
     if held.len() >= KEPT {
         held.remove(0);
@@ -553,7 +553,11 @@ pub fn hold_obj_bytes(name: &str, bytes: &[u8]) -> Result<Arc<LoadedObj>, String
 
 /// The mesh held under `name` ([`hold_obj_bytes`]), if any.
 pub fn held_obj(name: &str) -> Option<Arc<LoadedObj>> {
-    HELD.lock().unwrap_or_else(|e| e.into_inner()).iter().find(|(n, _)| n == name).map(|(_, o)| o.clone())
+    HELD.lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+        .iter()
+        .find(|(n, _)| n == name)
+        .map(|(_, o)| o.clone())
 }
 
 /// [`load_obj`], read once per file and modification time: the shaded view asks for its

@@ -189,7 +189,13 @@ impl Quantity {
 
     /// How this quantity is named.
     pub fn term(self) -> Term {
-        use Quantity::*;
+        use Quantity::{
+            Ambient, AttConstant, AttLinear, AttQuadratic, Attenuation, Clamped, CosAlpha, CosBeta, CosTheta, Diffuse,
+            Distance, EmissionTerm, H, L, LightAmbient, LightDiffuse, LightModelview, LightPos, LightShare,
+            LightSpecular, MatAlpha, MatAmbient, MatDiffuse, MatEmission, MatSpecular, Modelview, Primary, R,
+            SceneAmbient, SceneAmbientTerm, Secondary, Shininess, Specular, Spot, SpotCutoff, SpotDirection,
+            SpotExponent, V, VertexNormal, VertexPos,
+        };
         match self {
             VertexPos => term("vertexPos", "glVertex", "V", "quantity-vertex-position"),
             VertexNormal => term("vertexNormal", "glNormal", "n", "quantity-vertex-normal"),
@@ -266,7 +272,7 @@ mod tests {
     #[test]
     fn every_quantity_is_listed_once_and_named_once() {
         let mut names: Vec<&str> = Quantity::ALL.iter().map(|q| q.name()).collect();
-        names.sort();
+        names.sort_unstable();
         let n = names.len();
         names.dedup();
         assert_eq!(names.len(), n, "a worksheet name given to two quantities");

@@ -523,9 +523,10 @@ mod tests {
                     let mut want = [vec![[0.0f32; 4]; n], vec![[0.0f32; 4]; n]];
                     let mut got = want.clone();
                     let [wf, wb] = &mut want;
-                    match raw {
-                        true => l.light_batch_eye_sum_normalizing(&pos, &nrm, wf, Some(wb)),
-                        false => l.light_batch_eye_sum(&pos, &nrm, wf, Some(wb)),
+                    if raw {
+                        l.light_batch_eye_sum_normalizing(&pos, &nrm, wf, Some(wb));
+                    } else {
+                        l.light_batch_eye_sum(&pos, &nrm, wf, Some(wb));
                     }
                     let [gf, gb] = &mut got;
                     l.light_arrays_eye_sum(arrays, raw, gf, Some(gb));

@@ -115,7 +115,7 @@ fn step_no(ex: &Explanation, kind: StepKind, light: Option<LightId>) -> String {
     let light = light.map(LightId::index);
     match ex.steps.iter().position(|s| s.kind == kind && (light.is_none() || s.light == light)) {
         Some(k) => crate::t!("shader-step", n = (k + 1).to_string()),
-        None => "".into(),
+        None => String::new(),
     }
 }
 

@@ -150,7 +150,7 @@ pub fn named_paths(src: &Path, file: &Path, code: &str) -> Vec<Vec<String>> {
             Some(first) if file_of(src, &[here.clone(), vec![first.to_string()]].concat()).is_some() => here.clone(),
             _ => continue,
         };
-        base.extend(segments.iter().map(|s| s.to_string()));
+        base.extend(segments.iter().map(std::string::ToString::to_string));
         out.push(base);
     }
     out

@@ -186,7 +186,7 @@ impl ViewCache {
         slot: u64,
     ) -> Result<GpuImage, String> {
         let doc = viewed.doc;
-        if let Some(e) = self.gpu_error.lock().unwrap_or_else(|e| e.into_inner()).take() {
+        if let Some(e) = self.gpu_error.lock().unwrap_or_else(std::sync::PoisonError::into_inner).take() {
             self.failed_program = self.gpu_program.take().map(|p| p.wgsl);
             return Err(format!("the GPU refused the generated program: {e}"));
         }

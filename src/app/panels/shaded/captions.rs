@@ -143,13 +143,14 @@ pub fn drawn_caption(cache: &ViewCache) -> String {
 /// [`drawn_caption`] with the time `ms` (a long one, to measure the room it takes).
 fn drawn_caption_taking(cache: &ViewCache, ms: &str) -> String {
     match &cache.drawn_by {
-        DrawnBy::Gpu { adapter } => t!("caption-gpu", adapter = adapter.to_string()),
+        DrawnBy::Gpu { adapter } => t!("caption-gpu", adapter = adapter.clone()),
         _ if let Some(c) = cache.last_coarse => {
             let triangles = crate::locale::grouped(c.triangles as u64);
             let all = crate::locale::grouped(c.of as u64);
-            match c.spinning {
-                true => t!("caption-cpu-coarse-spin", ms = ms, triangles = triangles, all = all),
-                false => t!("caption-cpu-coarse", ms = ms, triangles = triangles, all = all),
+            if c.spinning {
+                t!("caption-cpu-coarse-spin", ms = ms, triangles = triangles, all = all)
+            } else {
+                t!("caption-cpu-coarse", ms = ms, triangles = triangles, all = all)
             }
         }
         _ if cache.last_relit => t!("caption-cpu-relit", ms = ms),

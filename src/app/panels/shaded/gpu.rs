@@ -277,14 +277,15 @@ impl CallbackTrait for GpuImage {
         resources: &mut CallbackResources,
     ) -> Vec<wgpu::CommandBuffer> {
         let Some(res) = resources.get_mut::<Resources>() else {
-            *self.error.lock().unwrap_or_else(|e| e.into_inner()) = Some("the GPU view was not installed".into());
+            *self.error.lock().unwrap_or_else(std::sync::PoisonError::into_inner) =
+                Some("the GPU view was not installed".into());
             return Vec::new();
         };
         match res.update(device, queue, self) {
             Ok(slot) => gpu::draw(encoder, &slot.program, &slot.buffers, &slot.target, self.background),
             Err(e) => {
                 res.slots.remove(&self.slot);
-                *self.error.lock().unwrap_or_else(|e| e.into_inner()) = Some(e);
+                *self.error.lock().unwrap_or_else(std::sync::PoisonError::into_inner) = Some(e);
             }
         }
         Vec::new()

@@ -52,7 +52,7 @@ impl HeatMapState {
             match r {
                 Ok(Some(h)) => self.heat = Some(h),
                 Ok(None) => {}
-                Err(e) => self.error = Some(t!("heat-map-failed", error = e.to_string())),
+                Err(e) => self.error = Some(t!("heat-map-failed", error = e.clone())),
             }
             self.running = None;
         }

@@ -184,10 +184,10 @@ fn renderer_ui(ui: &mut Ui, state: &mut Shaded<'_>, drawn_by: &DrawnBy) {
     });
     match drawn_by {
         DrawnBy::Gpu { adapter } => {
-            ui.small(t!("drawn-gpu", adapter = adapter.to_string()));
+            ui.small(t!("drawn-gpu", adapter = adapter.clone()));
         }
         DrawnBy::Cpu { why } => {
-            ui.small(t!("drawn-cpu", why = why.to_string()));
+            ui.small(t!("drawn-cpu", why = why.clone()));
         }
         DrawnBy::Nothing => {}
     }

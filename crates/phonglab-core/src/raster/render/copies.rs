@@ -354,7 +354,9 @@ mod x86 {
         };
         // SAFETY: SSE2 is part of x86_64; both loads read 16 bytes within `block`.
         let equal = unsafe {
-            let p = block.as_ptr() as *const __m128i;
+            // `_mm_loadu_si128` reads unaligned: the cast to a 16-byte type aligns nothing.
+            #[allow(clippy::cast_ptr_alignment)]
+            let p = block.as_ptr().cast::<__m128i>();
             let rv = _mm_set1_epi32(r as i32);
             let lo = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(_mm_loadu_si128(p), rv)));
             let hi = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(_mm_loadu_si128(p.add(1)), rv)));

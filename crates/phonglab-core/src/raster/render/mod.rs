@@ -233,7 +233,7 @@ impl Renderer {
         let isa = self.isa;
         let apart = self.visibility.lights_apart(job.mode);
         let window = |clip: &[glam::Vec4], out: &mut [window::WindowVert]| {
-            copies::window_vertices(isa, clip, out, width, height)
+            copies::window_vertices(isa, clip, out, width, height);
         };
         let moved = self.vertices.run(job, (!apart).then_some(lighter), window);
         let kept = self.visibility.decide(job, width, height, moved);
@@ -261,7 +261,7 @@ impl Renderer {
     fn shade_kept_stage(&mut self, job: &Job<'_>, lighter: &Lighter, height: usize) -> (usize, [f64; 2]) {
         let (isa, verts) = (self.isa, &self.vertices);
         let attributes = |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
-            copies::attributes_chunk(isa, job, verts, ts, corners, out)
+            copies::attributes_chunk(isa, job, verts, ts, corners, out);
         };
         let seen = match job.mode {
             ShadingMode::Gouraud => self.visibility.seen(&self.setup, job.mesh).0,
@@ -286,7 +286,7 @@ impl Renderer {
     ) -> (usize, [f64; 2]) {
         let (isa, verts) = (self.isa, &self.vertices);
         let attributes = |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
-            copies::attributes_chunk(isa, job, verts, ts, corners, out)
+            copies::attributes_chunk(isa, job, verts, ts, corners, out);
         };
         let bands = height.div_ceil(visibility::BAND);
         let (setup, image, bins, scratch) = (&self.setup, &mut self.image, &mut self.bins, &mut self.scratch);
@@ -570,7 +570,7 @@ mod tests {
             let bands = h.div_ceil(visibility::BAND);
             let attributes =
                 |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
-                    copies::attributes_chunk(Isa::Portable, &job, &r.vertices, ts, corners, out)
+                    copies::attributes_chunk(Isa::Portable, &job, &r.vertices, ts, corners, out);
                 };
             let prepared = resolve::prepare(&job, &r.setup, &mut r.scratch, bands, None, attributes);
             let (shared, fragments) = resolve::split(&mut r.scratch);

@@ -239,8 +239,8 @@ mod tests {
         assert_eq!(ispec.numbers[0], 4.0551e-4);
         assert!((ispec.half_units[0] - 0.5e-8).abs() < 1e-20);
         // An array in e notation does not make the fixed ones finer.
-        let p = printed_text("a = [8.24368169e-11 0.00000000e+00]\nb = [0.5 0.25]\n");
-        assert_eq!(p.get("b").unwrap().half_units, vec![0.5e-2, 0.5e-2]);
+        let q = printed_text("a = [8.24368169e-11 0.00000000e+00]\nb = [0.5 0.25]\n");
+        assert_eq!(q.get("b").unwrap().half_units, vec![0.5e-2, 0.5e-2]);
         assert_eq!(p.get("vlv[1]").unwrap().numbers, vec![1.0, 2.0, 3.0, 0.0]);
         assert_eq!(p.get("modelview").unwrap().numbers, vec![1.0, 0.0, 0.0, 0.8]);
         assert_eq!(p.errors, vec!["ValueError: math domain error".to_string()]);

@@ -262,7 +262,7 @@ fn shade_run<L: ResolveLanes>(
         }
         // A back face's attributes are not shared: made here, from the vertices.
         ShadingMode::Gouraud if t.back => {
-            gouraud_run(lanes, &attributes_of(job, verts, &setup.corners, t).color, run, row_px)
+            gouraud_run(lanes, &attributes_of(job, verts, &setup.corners, t).color, run, row_px);
         }
         ShadingMode::Gouraud => gouraud_run(lanes, &shared.color[triangle], run, row_px),
         ShadingMode::Phong => return phong_run(band, triangle, run, frags, pending),
