@@ -105,3 +105,27 @@ fn the_worksheets_own_printed_output_is_right() {
     assert_eq!(c.steps[first + 1].name, "Idif");
     assert_eq!(c.steps[first + 1].verdict, Verdict::RightGiven("cosTheta".into()));
 }
+
+/// A position divided by its w early is the same point: `lightPos = [0. 27. -444. 0.5]`
+/// for the key's `[0. 54. -888. 1.]` is right (a right notebook of the blind set was
+/// marked wrong for it); a different point, or a direction's w of 0, is not.
+#[test]
+fn a_position_in_other_homogeneous_coordinates_is_the_same_point() {
+    let text = "vertexNormal =  [0.  0.6 0.8 0. ]\nvertexPos =  [-512.  -307.2 -729.6    1. ]\n\
+                lightPos =  [   0.   54. -888.    1.]\nvlv =  [ 0.79220526  0.55887606 -0.2450885   0.        ]\n";
+    let scene = phonglab_core::presets::worksheet(5);
+    let halved = text.replace("[   0.   54. -888.    1.]", "[   0.   27. -444.    0.5]");
+    let c = check(&scene, &scene, &printed_text(&halved));
+    assert_eq!(c.steps[2].name, "lightPos");
+    assert_eq!(c.steps[2].verdict, Verdict::Right, "{:?}", c.steps);
+    assert!(c.right());
+    let doubled = text.replace("[-512.  -307.2 -729.6    1. ]", "[-1024.  -614.4 -1459.2    2. ]");
+    assert!(check(&scene, &scene, &printed_text(&doubled)).right());
+    for other in ["[   0.   27. -444.    1.]", "[   0.   54. -888.    0.]", "[   0.   54. -888.    1.1]"] {
+        let c = check(&scene, &scene, &printed_text(&text.replace("[   0.   54. -888.    1.]", other)));
+        assert_eq!(c.steps[2].verdict, Verdict::Wrong, "{other}");
+    }
+    // The normal is a direction: a multiple of it is not right.
+    let c = check(&scene, &scene, &printed_text(&text.replace("[0.  0.6 0.8 0. ]", "[0.  1.2 1.6 0. ]")));
+    assert_eq!(c.steps[0].verdict, Verdict::Wrong);
+}

@@ -107,6 +107,23 @@ fn same(got: &PrintedValue, want: &[f64]) -> bool {
         })
 }
 
+/// Is `got` the point `want` in other homogeneous coordinates? A position (`lightPos`,
+/// `vertexPos`) divided by its w early prints `[1 2 -1 1]` for the key's `[2 4 -2 2]`:
+/// the same point, and what follows from it is the same. To the printed digits, carried
+/// through the divide; a direction (w = 0) has no other form.
+fn same_point(got: &PrintedValue, want: &[f64]) -> bool {
+    let homogeneous = ["lightPos", "vertexPos"].iter().any(|n| got.name.split('[').next() == Some(n));
+    let (Some(&gw), Some(&ww)) = (got.numbers.last(), want.last()) else { return false };
+    if !homogeneous || got.numbers.len() != 4 || want.len() != 4 || gw == 0.0 || ww == 0.0 {
+        return false;
+    }
+    got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| {
+        let (g, w) = (g / gw, w / ww);
+        (g - w).abs()
+            <= (h / gw.abs()) * (1.0 + 1e-9) + (got.half_units[3] / gw.abs()) * g.abs() + SLACK * w.abs().max(1.0)
+    })
+}
+
 /// Does `got` equal `want`, a value worked from the student's printed (so rounded) earlier
 /// values? To the printed digits, or to a millionth of the value's size: an input printed
 /// with 8 decimals carries its rounding into what follows.
@@ -138,7 +155,7 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
     let mut last_wrong: Option<String> = None;
     for p in &student.values {
         let Some(k) = key.get(&p.name) else { continue };
-        let verdict = if same(p, k) {
+        let verdict = if same(p, k) || same_point(p, k) {
             Verdict::Right
         } else if let (Some(w), Some(g)) = (last_wrong.clone(), given.get(&p.name))
             && given_from_printed(p, g)
