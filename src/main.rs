@@ -34,7 +34,10 @@ fn main() -> ExitCode {
                 present: a.present,
             }))
         }
-        Some(command) => cli::run(command),
+        Some(command) => {
+            phonglab::platform::os::end_quietly_on_closed_pipe();
+            cli::run(command)
+        }
         None => match phonglab::app::run(
             args.file,
             match args.renderer {

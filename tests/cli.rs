@@ -859,3 +859,26 @@ fn bench_render_times_frames_that_only_light_again_and_the_coarse_copy() {
     let refused = phonglab(&["bench", "render", "--moving", "camera"]);
     assert!(!refused.status.success());
 }
+
+/// A reader that goes away (`phonglab explain | head -1`) ends the command quietly, as Unix
+/// tools end: no panic and no backtrace on the terminal (`println!` panicked with a broken
+/// pipe before).
+#[cfg(unix)]
+#[test]
+fn a_closed_pipe_ends_a_command_without_a_panic() {
+    use std::process::Stdio;
+    for args in [&["explain"][..], &["help"][..], &["export", "--to", "notebook"][..]] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_phonglab"))
+            .args(args)
+            .env("LC_ALL", "C.UTF-8")
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        // The reader goes away before the command writes.
+        drop(child.stdout.take());
+        let out = child.wait_with_output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!err.contains("panicked") && !err.contains("Broken pipe"), "{args:?}: {err}");
+    }
+}

@@ -191,3 +191,21 @@ pub fn on_termination(handler: impl Fn(i32) + Send + 'static) -> io::Result<()> 
 pub fn on_termination(_handler: impl Fn(i32) + Send + 'static) -> io::Result<()> {
     Ok(())
 }
+
+/// A command whose reader went away (`phonglab explain | head -1`) ends quietly, as Unix
+/// tools do, instead of panicking in `println!` with a broken pipe. Rust ignores `SIGPIPE`
+/// so that a write returns the error; the command line restores the default, which ends
+/// the process at the first write to a closed pipe. (Files are written whole or not at all
+/// by `io::atomic_write`, so ending there loses nothing.) The window keeps Rust's choice.
+#[cfg(unix)]
+pub fn end_quietly_on_closed_pipe() {
+    // SAFETY: setting a signal's disposition to its default is async-signal-safe and
+    // touches no Rust state; it is done once, before any thread is started by a command.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+}
+
+/// Elsewhere a closed pipe is an error the write returns (nothing to change).
+#[cfg(not(unix))]
+pub fn end_quietly_on_closed_pipe() {}
