@@ -36,12 +36,17 @@ fn defines(rules: Rules, per_fragment: bool) -> String {
         SpecularGate::LitSide => 1,
         SpecularGate::PositiveCosine => 2,
     };
+    // Every form of the term named, so a new one makes the compiler point here.
+    let reflection = match rules.specular.vector() {
+        SpecularVector::Halfway => false,
+        SpecularVector::Reflection => true,
+    };
     let flags = [
         ("PER_FRAGMENT", per_fragment),
         ("SCENE_AMBIENT", rules.scene_ambient() && rules.emission()),
         ("CLAMP_VERTEX_COLORS", rules.clamps_vertex_colors()),
         ("VIEWER_FROM_EYE_PLANE", rules.viewer_from_eye_plane()),
-        ("SPECULAR_REFLECTION", rules.specular.vector() == SpecularVector::Reflection),
+        ("SPECULAR_REFLECTION", reflection),
         ("REFLECT_CLAMPED", rules.reflect_clamped()),
         ("SPECULAR_NORMALISED", rules.specular.normalised()),
     ];
