@@ -257,7 +257,7 @@ impl BenchPicture {
         crate::app::widgets::fields::landmark(ui.ctx(), "bench-picture", rect);
         let job = phonglab_core::shaded::bench_job(&self.scene, &self.mesh, self.shading);
         if self.gpu && gpu {
-            if let Some(e) = self.error.lock().unwrap_or_else(|e| e.into_inner()).clone() {
+            if let Some(e) = self.error.lock().unwrap_or_else(std::sync::PoisonError::into_inner).clone() {
                 return Err(e);
             }
             let shader = crate::paint::gpu::wgsl_for(job.scene, job.options, job.mode.shading())?;
