@@ -122,10 +122,8 @@ fn compare_shows_a_channel_for_both_over_one_range() {
     let a = h.get_by_label("A: Diffuse").rect();
     let b = h.get_by_label("B: Diffuse").rect();
     assert!((a.top() - b.top()).abs() < 1.0 && b.left() > a.right(), "{a:?} {b:?}");
-    let legends: Vec<String> = h
-        .query_all_by_label_contains("from 0 to")
-        .filter_map(|n| n.accesskit_node().label())
-        .collect();
+    let legends: Vec<String> =
+        h.query_all_by_label_contains("from 0 to").filter_map(|n| n.accesskit_node().label()).collect();
     assert_eq!(legends.len(), 2, "{legends:?}");
     assert_eq!(legends[0], legends[1], "one range for both");
     let (ra, rb) = (h.state().compare.a_channel.range, h.state().compare.b_channel.range);
