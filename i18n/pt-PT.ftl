@@ -961,13 +961,13 @@ diagnose-worst = O píxel que mais difere: ({ $x }, { $y }), a sua imagem { $ima
 ## phonglab check: o trabalho de um aluno verificado
 
 check-rules = regras assumidas: { $rules }
-check-inputs-differ = os dados que escreveste diferem dos do enunciado: { $names }
-check-step = { $step }: o teu { $student }, o da solução { $key }: { $verdict }
-check-first-wrong = primeiro passo errado: { $step } (o teu { $student }, o da solução { $key })
+check-inputs-differ = os dados que escreveu diferem dos do enunciado: { $names }
+check-step = { $step }: o seu { $student }, o da solução { $key }: { $verdict }
+check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o da solução { $key })
 check-all-right = tudo certo: todos os passos impressos são os da solução
-check-cause = causa provável: { $words } [{ $id }]. Prova: em { $step } imprimiste { $student }, e a solução com este erro dá { $value }
-check-no-cause = nenhum erro do catálogo reproduz tudo o que imprimiste; olha para o primeiro passo errado
-check-nothing-printed = nada impresso que a solução tenha: imprime cada valor como a ficha faz, print("vlv = ", vlv)
+check-cause = causa provável: { $words } [{ $id }]. Prova: em { $step } imprimiu { $student }, e a solução com este erro dá { $value }
+check-no-cause = nenhum erro do catálogo reproduz tudo o que imprimiu; veja o primeiro passo errado
+check-nothing-printed = nada impresso que a solução tenha: imprima cada valor como a ficha faz, print("vlv = ", vlv)
 check-report-title = Verificação da turma
 check-report-student = Aluno
 check-report-verdict = Veredicto
@@ -980,6 +980,14 @@ check-report-written = { $count } trabalhos verificados: { $path }
 check-chart-title = Causas na turma ({ $count } trabalhos)
 check-verdict-word-right = certo
 check-verdict-word-wrong = errado
+check-input-rules = as regras
+check-scene-own = cena: a do próprio caderno (os dados escritos nele são tomados como o enunciado e não podem estar errados; indique o enunciado com --scene S.toml)
+check-scene-file = cena: { $path }
+check-scene-printed = cena: a da ficha (o enunciado com --scene S.toml)
+check-report-no-scene = Não foi indicada nenhuma --scene: os dados escritos em cada caderno foram tomados como o enunciado do próprio aluno e não podem estar errados (um brilho de 0,2 em vez de 0,2*128 passa). Indique a cena do enunciado com --scene S.toml.
+check-verdict-word-unread = não lido
+check-report-unread = Não lidos
+check-report-unchecked = não verificado (nada comparado, ou a execução parou)
 cli-check = Verificar o trabalho de um aluno: um caderno da ficha com os resultados, o texto impresso por um programa, ou uma pasta deles; cada passo impresso comparado com a solução, o primeiro passo errado e as causas prováveis
 cli-arg-check-work = O caderno (.ipynb, guardado com os resultados), ou uma pasta deles para a turma toda
 cli-arg-check-printed = O texto impresso por um programa, em vez de um caderno (- para a entrada padrão)

@@ -316,7 +316,17 @@ fn a_class_with_hostile_names_gets_a_report_and_marks_that_keep_them_as_data() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let md = std::fs::read_to_string(&report).unwrap();
     assert!(md.contains("# Verificação da turma"), "{md}");
-    assert!(md.contains("- vlv-reversed: 2"), "{md}");
+    // No --scene: said at the top, before the table.
+    let note = md.find("Não foi indicada nenhuma --scene").expect("the no-scene note");
+    assert!(note < md.find("| Aluno").unwrap(), "{md}");
+    // The causes in the teacher's words, not their ids.
+    assert!(md.contains("- vlv ao contrário: da luz para o vértice em vez do vértice para a luz: 2"), "{md}");
+    assert!(!md.contains("vlv-reversed"), "{md}");
+    // The unread notebook: a short verdict in its row, the reason in the list below.
+    assert!(md.contains("| not run.ipynb | não lido |  |  |"), "{md}");
+    assert!(!md.contains("- not run.ipynb: não lido"), "{md}");
+    let unread = md.find("## Não lidos").expect("the list of notebooks not read");
+    assert!(md[unread..].contains("- not run.ipynb: ") && md[unread..].contains("Execute-o primeiro"), "{md}");
     assert!(md.contains("\\[link\\](x) \\`b\\`"), "{md}");
     assert!(!md.contains("[link](x)"), "{md}");
     let marks = std::fs::read_to_string(&csv).unwrap();
@@ -325,8 +335,12 @@ fn a_class_with_hostile_names_gets_a_report_and_marks_that_keep_them_as_data() {
     for line in &lines[1..] {
         assert!(!line.starts_with(['=', '+', '-', '@']) && !line.starts_with("\"="), "{line}");
     }
-    assert!(marks.contains("\"'=HYPERLINK(\"\"http:x\"\")|ana.ipynb\",wrong,vlv,vlv-reversed"), "{marks}");
-    assert!(marks.contains("'-2+3 [link](x) `b`.ipynb,right,,"), "{marks}");
+    assert!(lines[0] == "file,verdict,first_wrong,causes,cause_ids", "{marks}");
+    assert!(
+        marks.contains("\"'=HYPERLINK(\"\"http:x\"\")|ana.ipynb\",wrong,vlv,vlv ao contrário: da luz para o vértice em vez do vértice para a luz,vlv-reversed"),
+        "{marks}"
+    );
+    assert!(marks.contains("'-2+3 [link](x) `b`.ipynb,right,,,\n"), "{marks}");
     assert!(marks.contains("not run.ipynb,unread,"), "{marks}");
     let png = std::fs::read(out_dir.path().join("report.png")).unwrap();
     assert!(png.starts_with(b"\x89PNG"));
@@ -336,4 +350,55 @@ fn a_class_with_hostile_names_gets_a_report_and_marks_that_keep_them_as_data() {
     let out = common::phonglab(&["check", class.path().to_str().unwrap(), "--csv", onto.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(std::fs::read(&onto).unwrap(), before);
+}
+
+/// A run that checked nothing is not right: text with no step of the worksheet in it
+/// says so, and its JSON verdict is "wrong" with no first wrong step and the reason.
+#[test]
+fn printed_text_with_no_step_is_not_right() {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_phonglab"))
+        .args(["check", "--printed", "-", "--json"])
+        .env_remove("LC_MESSAGES")
+        .env_remove("LANG")
+        .env("LC_ALL", "C.UTF-8")
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(b"hello\n").unwrap();
+    let out = child.wait_with_output().unwrap();
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["verdict"], "wrong", "{json:#}");
+    assert!(json["first_wrong"].is_null());
+    assert_eq!(json["unchecked"]["id"], "nothing-compared");
+    let dir = TempDir::new("hello");
+    let path = dir.path().join("hello.txt");
+    std::fs::write(&path, "hello\nModuleNotFoundError: No module named 'numpy'\n").unwrap();
+    let out = common::phonglab(&["check", "--printed", path.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("ModuleNotFoundError: No module named 'numpy'"), "{text}");
+    assert!(!text.contains("all right") && !text.contains("nothing printed that the key has"), "{text}");
+    assert!(text.starts_with("scene: the worksheet's"), "{text}");
+}
+
+/// pt-PT speaks to the student in one register across check and diagnose (the formal,
+/// as the rest of the app: "o seu", "a sua imagem"), and pt-BR with "você".
+#[test]
+fn check_and_diagnose_use_one_register() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for (lang, informal) in [
+        ("pt-PT", &["o teu", "a tua", "imprimiste", "escreveste", "Corre-o", "olha ", "imprime cada"][..]),
+        ("pt-BR", &["o teu", "a tua", "imprimiste", "escreveste", "Corre-o"][..]),
+    ] {
+        for file in [root.join(format!("i18n/{lang}.ftl")), root.join(format!("crates/phonglab-core/i18n/{lang}.ftl"))]
+        {
+            let text = std::fs::read_to_string(&file).unwrap();
+            for line in text.lines().filter(|l| l.starts_with("check-") || l.starts_with("diagnose-")) {
+                for w in informal {
+                    assert!(!line.contains(w), "{lang}: {w:?} in {line}");
+                }
+            }
+        }
+    }
 }

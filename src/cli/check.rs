@@ -65,6 +65,11 @@ pub fn run(a: &CheckArgs) -> Result<()> {
         };
         return super::check_class::run(dir, assignment.as_ref(), &class);
     }
+    let scene_line = match (&a.scene, &a.printed) {
+        (Some(p), _) => t!("check-scene-file", path = crate::io::reasons::shown(p)),
+        (None, Some(_)) => t!("check-scene-printed"),
+        (None, None) => t!("check-scene-own"),
+    };
     let work = match (&a.printed, &a.work) {
         (Some(p), _) => {
             let own = assignment.clone().unwrap_or_else(|| phonglab_core::presets::worksheet(5));
@@ -78,7 +83,8 @@ pub fn run(a: &CheckArgs) -> Result<()> {
     if a.json {
         super::check_class::out(&format!("{}\n", serde_json::to_string_pretty(&super::check_class::json(&c))?));
     } else {
-        super::check_class::out(&phonglab_core::escape::terminal::lines(&words(&c)));
+        let text = format!("{scene_line}\n{}", words(&c));
+        super::check_class::out(&phonglab_core::escape::terminal::lines(&text));
     }
     Ok(())
 }
@@ -89,14 +95,17 @@ pub fn numbers(v: &[f64]) -> String {
     if parts.len() == 1 { parts[0].clone() } else { format!("[{}]", parts.join("  ")) }
 }
 
+/// The typed inputs that differ, by the worksheet's names (the rule set in words).
+pub fn input_names(c: &Check) -> String {
+    let name = |n: &String| if n == "rules" { t!("check-input-rules") } else { n.clone() };
+    c.inputs_differ.iter().map(name).collect::<Vec<_>>().join(", ")
+}
+
 /// The check in words, one line a finding.
 pub fn words(c: &Check) -> String {
     let mut out = format!("{}\n", t!("check-rules", rules = c.rules.to_string()));
     if !c.inputs_differ.is_empty() {
-        out.push_str(&format!("{}\n", t!("check-inputs-differ", names = c.inputs_differ.join(", "))));
-    }
-    if c.steps.is_empty() {
-        out.push_str(&format!("{}\n", t!("check-nothing-printed")));
+        out.push_str(&format!("{}\n", t!("check-inputs-differ", names = input_names(c))));
     }
     for s in &c.steps {
         let line = t!(
@@ -115,6 +124,9 @@ pub fn words(c: &Check) -> String {
         )),
         None if c.right() => out.push_str(&format!("{}\n", t!("check-all-right"))),
         None => {}
+    }
+    if let Some(why) = c.unchecked() {
+        out.push_str(&format!("{}\n", why.words()));
     }
     for cause in &c.causes {
         let student = c.steps.iter().find(|s| s.name == cause.step).map_or_else(String::new, |s| numbers(&s.student));
@@ -135,4 +147,26 @@ pub fn words(c: &Check) -> String {
         out.push_str(&format!("{}\n", t!("check-no-cause")));
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rule set is named in words where typed inputs differ, never as the id `rules`.
+    #[test]
+    fn the_rule_set_is_named_in_words_among_the_inputs_that_differ() {
+        let c = Check {
+            rules: phonglab_core::Rules::WORKSHEET,
+            inputs_differ: vec!["lightPos".into(), "rules".into()],
+            steps: Vec::new(),
+            first_wrong: None,
+            causes: Vec::new(),
+            errors: Vec::new(),
+        };
+        let names = input_names(&c);
+        assert_eq!(names, format!("lightPos, {}", t!("check-input-rules")));
+        assert!(!names.contains("rules") || t!("check-input-rules").contains("rules"));
+        assert!(words(&c).contains(&names));
+    }
 }

@@ -29,15 +29,18 @@ pub fn out(text: &str) {
     let _ = std::io::stdout().lock().write_all(text.as_bytes());
 }
 
-/// The check as JSON: `verdict`, `rules`, `inputs_differ`, `first_wrong`, `causes` (with
-/// their kebab-case ids), `steps`.
+/// The check as JSON: `verdict`, `unchecked` (why work with no wrong step is still not
+/// right: `run-stopped`, `nothing-compared`; else null), `rules`, `inputs_differ`,
+/// `first_wrong`, `causes` (with their kebab-case ids), `steps`.
 pub fn json(c: &Check) -> serde_json::Value {
     let first = c
         .first_wrong
         .and_then(|k| c.steps.get(k))
         .map(|s| serde_json::json!({"step": s.name, "student": s.student, "key": s.key}));
+    let unchecked = c.unchecked().map(|u| serde_json::json!({"id": u.id(), "words": u.words()}));
     serde_json::json!({
         "verdict": if c.right() { "right" } else { "wrong" },
+        "unchecked": unchecked,
         "rules": c.rules.to_string(),
         "inputs_differ": c.inputs_differ,
         "first_wrong": first,
@@ -75,7 +78,7 @@ pub struct ClassArgs {
 pub struct Marked {
     /// The file's name (as it is: escaped where it is written).
     pub name: String,
-    /// The check, or why the file was not checked.
+    /// The check, or why the file was not read (its reason alone).
     pub check: Result<Check, String>,
 }
 
@@ -102,11 +105,11 @@ pub fn mark_all(dir: &Path, assignment: Option<&Scene>, budget: Duration) -> Res
     for path in submissions(dir)? {
         let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
         let check = if start.elapsed() > budget {
-            Err(t!("check-report-unreadable", reason = format!("> {} s", budget.as_secs())))
+            Err(format!("> {} s", budget.as_secs()))
         } else {
             read_notebook(&path)
                 .map(|w| check(assignment.unwrap_or(&w.own), &w.own, &w.printed))
-                .map_err(|e| t!("check-report-unreadable", reason = format!("{e:#}")))
+                .map_err(|e| format!("{e:#}"))
         };
         out.push(Marked { name, check });
     }
@@ -127,11 +130,17 @@ pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> 
     for out in &outputs {
         crate::io::atomic_write::check_file_destination(out)?;
     }
+    if assignment.is_none() {
+        super::say(&t!("check-report-no-scene"));
+    }
     let marked = mark_all(dir, assignment, Duration::from_secs(MAX_SECONDS))?;
     let counts = cause_counts(&marked);
     if let (Some(report), Some(chart)) = (&a.report, &chart) {
         let chart_name = chart.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        crate::io::atomic_write::write(report, markdown(&marked, &counts, &chart_name).as_bytes())?;
+        crate::io::atomic_write::write(
+            report,
+            markdown(&marked, &counts, &chart_name, assignment.is_some()).as_bytes(),
+        )?;
         let (w, h, rgba) = chart_png(&counts, marked.len());
         crate::io::atomic_write::write(chart, &crate::io::image::encode_png(w, h, &rgba)?)?;
         super::say(&t!("check-report-written", count = marked.len(), path = crate::io::reasons::shown(report)));
@@ -160,35 +169,45 @@ pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> 
 /// One student in a few words: right, or the first wrong step and the causes' ids.
 fn summary(m: &Marked) -> String {
     match &m.check {
-        Err(e) => e.clone(),
+        Err(e) => t!("check-report-unreadable", reason = e.clone()),
         Ok(c) if c.right() => t!("check-verdict-word-right"),
-        Ok(c) => format!("{}: {} ({})", t!("check-verdict-word-wrong"), first_wrong(c), causes(c)),
+        Ok(c) => match c.unchecked().filter(|_| c.first_wrong.is_none() && c.inputs_differ.is_empty()) {
+            Some(u) => format!("{}: {}", t!("check-verdict-word-wrong"), u.words()),
+            None => format!("{}: {} ({})", t!("check-verdict-word-wrong"), first_wrong(c), causes(c)),
+        },
     }
 }
 
 fn first_wrong(c: &Check) -> String {
     if !c.inputs_differ.is_empty() {
-        return c.inputs_differ.join(" ");
+        return super::check::input_names(c);
     }
     c.first_wrong.and_then(|k| c.steps.get(k)).map_or_else(String::new, |s| s.name.clone())
 }
 
+/// The causes in the teacher's words (why not checked, where nothing was compared).
 fn causes(c: &Check) -> String {
+    if c.causes.is_empty() && c.first_wrong.is_none() && c.inputs_differ.is_empty() {
+        return c.unchecked().map_or_else(String::new, |u| u.words());
+    }
     if c.causes.is_empty() && !c.right() {
         return t!("check-report-unexplained");
     }
-    c.causes.iter().map(|k| k.info.id).collect::<Vec<_>>().join(" ")
+    c.causes.iter().map(|k| (k.info.words)()).collect::<Vec<_>>().join("; ")
 }
 
-/// How many students each cause explains (by id), and how many no cause explains.
+/// How many students each cause explains (in the teacher's words), and how many no cause
+/// explains.
 pub fn cause_counts(marked: &[Marked]) -> Vec<(String, usize)> {
     let mut counts: BTreeMap<String, usize> = BTreeMap::new();
     for c in marked.iter().filter_map(|m| m.check.as_ref().ok()).filter(|c| !c.right()) {
-        if c.causes.is_empty() {
+        if c.first_wrong.is_none() && c.inputs_differ.is_empty() && c.causes.is_empty() {
+            *counts.entry(t!("check-report-unchecked")).or_default() += 1;
+        } else if c.causes.is_empty() {
             *counts.entry(t!("check-report-unexplained")).or_default() += 1;
         }
         for k in &c.causes {
-            *counts.entry(k.info.id.to_string()).or_default() += 1;
+            *counts.entry((k.info.words)()).or_default() += 1;
         }
     }
     let mut v: Vec<(String, usize)> = counts.into_iter().collect();
@@ -197,9 +216,12 @@ pub fn cause_counts(marked: &[Marked]) -> Vec<(String, usize)> {
 }
 
 /// The report in Markdown: a row per student, then the causes counted and the chart.
-pub fn markdown(marked: &[Marked], counts: &[(String, usize)], chart: &str) -> String {
+pub fn markdown(marked: &[Marked], counts: &[(String, usize)], chart: &str, scene_given: bool) -> String {
     let md = escape::markdown::text;
     let mut out = format!("# {}\n\n", md(&t!("check-report-title")));
+    if !scene_given {
+        out.push_str(&format!("> {}\n\n", md(&t!("check-report-no-scene"))));
+    }
     out.push_str(&format!(
         "| {} | {} | {} | {} |\n|---|---|---|---|\n",
         md(&t!("check-report-student")),
@@ -209,11 +231,19 @@ pub fn markdown(marked: &[Marked], counts: &[(String, usize)], chart: &str) -> S
     ));
     for m in marked {
         let (verdict, first, why) = match &m.check {
-            Err(e) => (e.clone(), String::new(), String::new()),
+            Err(_) => (t!("check-verdict-word-unread"), String::new(), String::new()),
             Ok(c) if c.right() => (t!("check-verdict-word-right"), String::new(), String::new()),
             Ok(c) => (t!("check-verdict-word-wrong"), first_wrong(c), causes(c)),
         };
         out.push_str(&format!("| {} | {} | {} | {} |\n", md(&m.name), md(&verdict), md(&first), md(&why)));
+    }
+    let unread: Vec<(&String, &String)> =
+        marked.iter().filter_map(|m| m.check.as_ref().err().map(|e| (&m.name, e))).collect();
+    if !unread.is_empty() {
+        out.push_str(&format!("\n## {}\n\n", md(&t!("check-report-unread"))));
+        for (name, why) in unread {
+            out.push_str(&format!("- {}: {}\n", md(name), md(why)));
+        }
     }
     out.push_str(&format!("\n## {}\n\n", md(&t!("check-report-counts"))));
     for (id, n) in counts {
@@ -223,19 +253,21 @@ pub fn markdown(marked: &[Marked], counts: &[(String, usize)], chart: &str) -> S
     out
 }
 
-/// The marks as CSV: file, verdict, first wrong step, causes (text fields neutralised).
+/// The marks as CSV: file, verdict (`right`, `wrong`, `unread`), first wrong step, the
+/// causes in the teacher's words, and their ids for machines (text fields neutralised).
 pub fn marks_csv(marked: &[Marked]) -> String {
     let f = escape::csv::text_field;
-    let mut out = String::from("file,verdict,first_wrong,causes\n");
+    let mut out = String::from("file,verdict,first_wrong,causes,cause_ids\n");
     for m in marked {
-        let (verdict, first, why) = match &m.check {
-            Err(e) => ("unread".to_string(), String::new(), e.clone()),
-            Ok(c) if c.right() => ("right".to_string(), String::new(), String::new()),
+        let (verdict, first, why, ids) = match &m.check {
+            Err(e) => ("unread".to_string(), String::new(), e.clone(), String::new()),
+            Ok(c) if c.right() => ("right".to_string(), String::new(), String::new(), String::new()),
             Ok(c) => {
-                ("wrong".to_string(), first_wrong(c), c.causes.iter().map(|k| k.info.id).collect::<Vec<_>>().join(" "))
+                let ids = c.causes.iter().map(|k| k.info.id).collect::<Vec<_>>().join(" ");
+                ("wrong".to_string(), first_wrong(c), causes(c), ids)
             }
         };
-        out.push_str(&format!("{},{},{},{}\n", f(&m.name), f(&verdict), f(&first), f(&why)));
+        out.push_str(&format!("{},{},{},{},{}\n", f(&m.name), f(&verdict), f(&first), f(&why), f(&ids)));
     }
     out
 }
@@ -250,9 +282,9 @@ pub fn chart_png(counts: &[(String, usize)], total: usize) -> (usize, usize, Vec
             ui.strong(t!("check-chart-title", count = total));
             for (id, n) in counts {
                 ui.horizontal(|ui| {
-                    ui.add_sized([300.0, 20.0], egui::Label::new(id.as_str()).truncate());
+                    ui.add_sized([480.0, 20.0], egui::Label::new(id.as_str()).truncate());
                     let (rect, _) =
-                        ui.allocate_exact_size(egui::vec2(500.0 * *n as f32 / most, 18.0), egui::Sense::hover());
+                        ui.allocate_exact_size(egui::vec2(320.0 * *n as f32 / most, 18.0), egui::Sense::hover());
                     ui.painter().rect_filled(rect, 2.0, egui::Color32::from_rgb(70, 130, 200));
                     ui.label(n.to_string());
                 });

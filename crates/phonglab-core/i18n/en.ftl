@@ -623,3 +623,5 @@ check-cause-attenuation-multiplied = the light multiplied by the attenuation ins
 check-cause-attenuation-object-distance = the attenuation's distance measured in object space
 check-cause-w-divide-forgotten = the division by w forgotten
 check-cause-shininess-fraction = the shininess as the 0–1 fraction instead of times 128
+check-run-stopped = not checked: the run stopped with an error before the end: { $error }
+check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)

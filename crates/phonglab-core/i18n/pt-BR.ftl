@@ -623,3 +623,5 @@ check-cause-attenuation-multiplied = a luz multiplicada pela atenuação em vez 
 check-cause-attenuation-object-distance = a distância da atenuação medida no espaço do objeto
 check-cause-w-divide-forgotten = faltou a divisão por w
 check-cause-shininess-fraction = o brilho como fração de 0 a 1 em vez de multiplicado por 128
+check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
+check-nothing-compared = não verificado: nada do que você imprimiu é um passo da ficha; imprima cada valor como a ficha faz, print("vlv = ", vlv)

@@ -600,9 +600,9 @@ diagnose-spot-left-out = O cone do foco esquecido (corte a 180)
 
 ## phonglab check: o trabalho de um aluno verificado
 
-check-no-outputs = este caderno foi guardado sem os resultados: não há nada impresso para verificar. Corre-o primeiro (Jupyter: Kernel → Restart & Run All), guarda-o e verifica-o de novo
+check-no-outputs = este caderno foi guardado sem os resultados: não há nada impresso para verificar. Execute-o primeiro (Jupyter: Kernel → Restart & Run All), guarde-o e verifique-o de novo
 check-verdict-right = certo
-check-verdict-right-given = certo, dado o teu { $step }
+check-verdict-right-given = certo, dado o seu { $step }
 check-verdict-rounding = arredondamento
 check-verdict-wrong = errado
 check-cause-normal-by-modelview = a normal transformada pela modelview M em vez da sua inversa transposta (errado com uma escala não uniforme)
@@ -623,3 +623,5 @@ check-cause-attenuation-multiplied = a luz multiplicada pela atenuação em vez 
 check-cause-attenuation-object-distance = a distância da atenuação medida no espaço do objeto
 check-cause-w-divide-forgotten = falta a divisão por w
 check-cause-shininess-fraction = o brilho como fração de 0 a 1 em vez de multiplicado por 128
+check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
+check-nothing-compared = não verificado: nada do que imprimiu é um passo da ficha; imprima cada valor como a ficha faz, print("vlv = ", vlv)

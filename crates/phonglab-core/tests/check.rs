@@ -129,3 +129,119 @@ fn a_position_in_other_homogeneous_coordinates_is_the_same_point() {
     let c = check(&scene, &scene, &printed_text(&text.replace("[0.  0.6 0.8 0. ]", "[0.  1.2 1.6 0. ]")));
     assert_eq!(c.steps[0].verdict, Verdict::Wrong);
 }
+
+/// What a calculation worked by `work` prints, one `name = value` line each (Rust's
+/// shortest round-trip digits: the checker reads them as NumPy's).
+fn printed_of(worked: &phonglab_core::study::check::worked::Worked) -> String {
+    let mut text = String::new();
+    for (name, v) in &worked.values {
+        let numbers: Vec<String> = v.iter().map(|x| format!("{x}")).collect();
+        let value = if v.len() == 1 { numbers[0].clone() } else { format!("[{}]", numbers.join(" ")) };
+        text.push_str(&format!("{name} =  {value}\n"));
+    }
+    text
+}
+
+/// A notebook that checked nothing is not right: a run stopped by an error before it
+/// printed (`ModuleNotFoundError`), or text with no step of the worksheet in it. Each
+/// says why, and has no first wrong step.
+#[test]
+fn work_with_nothing_compared_or_a_run_stopped_is_not_right() {
+    use phonglab_core::study::check::Unchecked;
+    let scene = phonglab_core::presets::worksheet(5);
+    let c = check(&scene, &scene, &printed_text("hello\n"));
+    assert!(c.steps.is_empty());
+    assert!(!c.right());
+    assert_eq!(c.unchecked(), Some(Unchecked::NothingCompared));
+    assert!(c.first_wrong.is_none());
+    let stopped =
+        "Traceback (most recent call last):\n  File \"x\", line 1\nModuleNotFoundError: No module named 'numpy'\n";
+    let c = check(&scene, &scene, &printed_text(stopped));
+    assert!(!c.right());
+    assert_eq!(c.unchecked(), Some(Unchecked::Stopped("ModuleNotFoundError: No module named 'numpy'".into())));
+    assert_eq!(c.unchecked().unwrap().id(), "run-stopped");
+    // The whole key printed, then an error: still stopped, not right.
+    let key = printed_of(&work(&scene, None, None));
+    assert!(check(&scene, &scene, &printed_text(&key)).right());
+    let c = check(&scene, &scene, &printed_text(&format!("{key}NameError: name 'x' is not defined\n")));
+    assert!(!c.right() && c.first_wrong.is_none());
+}
+
+/// "Right, given your X" names the wrong step the value depends on, not the latest wrong
+/// one: with vlv reversed, H (from vlv and vov) is right given vlv though cosTheta and
+/// Idif, printed before it, are not the key's; with a wrong cosTheta, Idif is right given
+/// cosTheta.
+#[test]
+fn right_given_names_the_step_the_value_depends_on() {
+    use phonglab_core::study::check::mistakes::Mistake;
+    let scene = phonglab_core::presets::worksheet(5);
+    let reversed = printed_of(&work(&scene, Some(Mistake::VlvReversed), None));
+    let c = check(&scene, &scene, &printed_text(&reversed));
+    let verdict = |name: &str| c.steps.iter().find(|s| s.name == name).unwrap().verdict.clone();
+    assert_eq!(verdict("vlv"), Verdict::Wrong);
+    assert_eq!(verdict("cosTheta"), Verdict::RightGiven("vlv".into()));
+    assert_eq!(verdict("H"), Verdict::RightGiven("vlv".into()), "{:?}", c.steps);
+    assert_eq!(verdict("cosBeta"), Verdict::RightGiven("H".into()));
+    // cosTheta printed 0.2, and what follows worked from it.
+    let mut wrong_cos = work(&scene, None, Some(&printed_text("cosTheta =  0.2\n")));
+    let k = wrong_cos.values.iter().position(|(n, _)| n == "cosTheta").unwrap();
+    wrong_cos.values[k].1 = vec![0.2];
+    let c = check(&scene, &scene, &printed_text(&printed_of(&wrong_cos)));
+    let verdict = |name: &str| c.steps.iter().find(|s| s.name == name).unwrap().verdict.clone();
+    assert_eq!(verdict("cosTheta"), Verdict::Wrong);
+    assert_eq!(verdict("Idif"), Verdict::RightGiven("cosTheta".into()));
+    assert_eq!(verdict("H"), Verdict::Right);
+}
+
+/// A cause is a mistake under the rules assumed: the worksheet's rules have no N·L gate
+/// (their specular is gated by its own cosine), so work that printed OpenGL's calculation
+/// with the gate left out, checked against a worksheet assignment, is not told it left
+/// out a gate those rules do not have.
+#[test]
+fn a_cause_is_only_named_under_rules_where_it_is_a_mistake() {
+    use phonglab_core::study::check::mistakes::Mistake;
+    assert!(!Mistake::SpecularWithoutGate.applies(Rules::WORKSHEET));
+    assert!(Mistake::SpecularWithoutGate.applies(Rules::OPENGL));
+    assert!(!Mistake::NormalByModelview.applies(Rules::WORKSHEET));
+    assert!(Mistake::NormalByModelview.applies(Rules::OPENGL));
+    assert!(Mistake::VlvReversed.applies(Rules::WORKSHEET));
+    let assignment = phonglab_core::presets::worksheet(5);
+    let mut own = assignment.clone();
+    own.rules = Rules::OPENGL;
+    // The light just behind the surface, far to one side, where N.H is still positive:
+    // the gate left out prints a specular the key has not.
+    let n = own.vertex.normal;
+    let side = [glam::DVec3::X, glam::DVec3::Y, glam::DVec3::Z, -glam::DVec3::X, -glam::DVec3::Y, -glam::DVec3::Z]
+        .into_iter()
+        .map(|t| (t - n * t.dot(n)).normalize())
+        .find(|t| {
+            let mut s = own.clone();
+            s.lights[0].position = s.vertex.position + (1000.0 * *t - 10.0 * n).extend(0.0);
+            work(&s, Some(Mistake::SpecularWithoutGate), None).get("Ispec") != work(&s, None, None).get("Ispec")
+        })
+        .unwrap();
+    own.lights[0].position = own.vertex.position + (1000.0 * side - 10.0 * n).extend(0.0);
+    let made = work(&own, Some(Mistake::SpecularWithoutGate), None);
+    assert!(made.get("cosTheta").unwrap()[0] < 0.0, "the light must be behind: {made:?}");
+    let c = check(&assignment, &own, &printed_text(&printed_of(&made)));
+    assert!(!c.right());
+    assert!(c.inputs_differ.contains(&"rules".to_string()));
+    let ids: Vec<&str> = c.causes.iter().map(|k| k.info.id).collect();
+    assert!(!ids.contains(&"specular-without-gate"), "{ids:?}");
+    // Under OpenGL's rules, the same work is named.
+    let c = check(&own, &own, &printed_text(&printed_of(&made)));
+    assert!(c.causes.iter().any(|k| k.info.id == "specular-without-gate"), "{:?}", c.causes);
+}
+
+/// The catalogue's formulas are code only: their words are in the user's language
+/// elsewhere, so no English comment is left in what a Portuguese student reads.
+#[test]
+fn the_catalogues_formulas_hold_no_english_words() {
+    use phonglab_core::study::check::mistakes::CATALOGUE;
+    for info in &CATALOGUE {
+        let comment = info.formula.split_once("  #").map_or("", |c| c.1);
+        for word in ["not", "instead", "also", "where", "with", "outside", "too", "normalised"] {
+            assert!(!comment.split_whitespace().any(|w| w == word), "{}: {}", info.id, info.formula);
+        }
+    }
+}

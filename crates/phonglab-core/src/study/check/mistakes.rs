@@ -45,6 +45,19 @@ pub enum Mistake {
     ShininessFraction,
 }
 
+impl Mistake {
+    /// Is this a mistake under `rules`? One that changes nothing those rules do (no N·L
+    /// gate to leave out, the normal transformed by M already) is not offered as a cause.
+    pub fn applies(self, rules: crate::model::rules::Rules) -> bool {
+        use crate::model::rules::{NormalTransform, SpecularGate};
+        match self {
+            Mistake::SpecularWithoutGate => rules.specular_gate() == SpecularGate::LitSide,
+            Mistake::NormalByModelview => rules.normal_transform() == NormalTransform::InverseTranspose,
+            _ => true,
+        }
+    }
+}
+
 /// A mistake of the catalogue: its id, its formula as the student wrote it, its words.
 #[derive(Clone, Copy, Debug)]
 pub struct MistakeInfo {
@@ -53,7 +66,8 @@ pub struct MistakeInfo {
     /// The mistake the calculation makes; `None` for one read off an error the run
     /// stopped with rather than computed.
     pub mistake: Option<Mistake>,
-    /// What the student wrote, as code.
+    /// What the student wrote, as code (no words: those are in [`Self::words`], in the
+    /// user's language).
     pub formula: &'static str,
     /// What it means, in the user's language.
     pub words: fn() -> String,
@@ -103,7 +117,7 @@ pub const CATALOGUE: [MistakeInfo; 18] = [
     MistakeInfo {
         id: "directional-as-point",
         mistake: Some(Mistake::DirectionalAsPoint),
-        formula: "vlv = lightPos - vertexPos  # with lightPos[3] == 0",
+        formula: "vlv = lightPos - vertexPos  # lightPos[3] == 0",
         words: || t!("check-cause-directional-as-point"),
     },
     MistakeInfo {
@@ -115,19 +129,19 @@ pub const CATALOGUE: [MistakeInfo; 18] = [
     MistakeInfo {
         id: "halfway-not-normalised",
         mistake: Some(Mistake::HalfwayNotNormalised),
-        formula: "H = vlv + vov  # not normalised",
+        formula: "H = vlv + vov",
         words: || t!("check-cause-halfway-not-normalised"),
     },
     MistakeInfo {
         id: "specular-without-gate",
         mistake: Some(Mistake::SpecularWithoutGate),
-        formula: "Ispec = (Lspec*matSpec)*(max(cosBeta, 0)**ns)  # also where cosTheta <= 0",
+        formula: "Ispec = (Lspec*matSpec)*(max(cosBeta, 0)**ns)",
         words: || t!("check-cause-specular-without-gate"),
     },
     MistakeInfo {
         id: "diffuse-not-clamped",
         mistake: Some(Mistake::DiffuseNotClamped),
-        formula: "Idif = (Ldif*matDif)*cosTheta  # also where cosTheta < 0",
+        formula: "Idif = (Ldif*matDif)*cosTheta",
         words: || t!("check-cause-diffuse-not-clamped"),
     },
     MistakeInfo {
@@ -145,7 +159,7 @@ pub const CATALOGUE: [MistakeInfo; 18] = [
     MistakeInfo {
         id: "spot-exponent-outside-cone",
         mistake: Some(Mistake::SpotExponentOutsideCone),
-        formula: "spot = max(cosSpot, 0)**spotCoef  # outside the cone too",
+        formula: "spot = max(cosSpot, 0)**spotCoef",
         words: || t!("check-cause-spot-exponent-outside-cone"),
     },
     MistakeInfo {
@@ -169,7 +183,7 @@ pub const CATALOGUE: [MistakeInfo; 18] = [
     MistakeInfo {
         id: "shininess-fraction",
         mistake: Some(Mistake::ShininessFraction),
-        formula: "ns = 0.2  # instead of 0.2*128",
+        formula: "ns = 0.2",
         words: || t!("check-cause-shininess-fraction"),
     },
 ];

@@ -19,7 +19,8 @@ use worked::{Worked, work};
 pub enum Verdict {
     /// The key's value, to the printed digits.
     Right,
-    /// Not the key's, but right computed from the student's own earlier value (named).
+    /// Not the key's, but right computed from the student's own earlier wrong value(s)
+    /// that it depends on (named, the most recent first; several: joined by `, `).
     RightGiven(String),
     /// The key's to about three digits, not to the printed ones: rounded on the way.
     Rounding,
@@ -87,12 +88,55 @@ pub struct Check {
     pub first_wrong: Option<usize>,
     /// The causes that reproduce everything printed (none: not explained by the catalogue).
     pub causes: Vec<Cause>,
+    /// The errors the run stopped with (`ModuleNotFoundError: No module named 'numpy'`).
+    pub errors: Vec<String>,
+}
+
+/// Why a piece of work with no wrong step is still not right: nothing was compared.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Unchecked {
+    /// The run stopped with this error (its last line).
+    Stopped(String),
+    /// Nothing it printed is a step of the worksheet.
+    NothingCompared,
+}
+
+impl Unchecked {
+    /// The reason's id in JSON: `run-stopped`, `nothing-compared`.
+    pub fn id(&self) -> &'static str {
+        match self {
+            Unchecked::Stopped(_) => "run-stopped",
+            Unchecked::NothingCompared => "nothing-compared",
+        }
+    }
+
+    /// The reason in the user's language.
+    pub fn words(&self) -> String {
+        match self {
+            Unchecked::Stopped(e) => crate::t!("check-run-stopped", error = e.clone()),
+            Unchecked::NothingCompared => crate::t!("check-nothing-compared"),
+        }
+    }
 }
 
 impl Check {
-    /// Is the work right: its inputs the assignment's and no step wrong?
+    /// Is the work right: its inputs the assignment's, some step compared, none wrong, and
+    /// the run not stopped by an error?
     pub fn right(&self) -> bool {
-        self.inputs_differ.is_empty() && self.first_wrong.is_none() && self.causes.is_empty()
+        self.inputs_differ.is_empty()
+            && self.first_wrong.is_none()
+            && self.causes.is_empty()
+            && self.unchecked().is_none()
+    }
+
+    /// Why the work could not be found right though no step is wrong: the run stopped
+    /// with an error, or nothing was compared. `None` where a step was compared and the
+    /// run ended.
+    pub fn unchecked(&self) -> Option<Unchecked> {
+        if let Some(e) = self.errors.last() {
+            return Some(Unchecked::Stopped(e.clone()));
+        }
+        self.steps.is_empty().then_some(Unchecked::NothingCompared)
     }
 }
 
@@ -151,15 +195,13 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
     let given = work(assignment, None, Some(student));
     let mut steps = Vec::new();
     let mut first_wrong = None;
-    // The latest step that is not the key's: what a later value may be right given.
-    let mut last_wrong: Option<String> = None;
+    // The steps that are not the key's, in order: what a later value may be right given.
+    let mut wrong_so_far: Vec<&PrintedValue> = Vec::new();
     for p in &student.values {
         let Some(k) = key.get(&p.name) else { continue };
         let verdict = if same(p, k) || same_point(p, k) {
             Verdict::Right
-        } else if let (Some(w), Some(g)) = (last_wrong.clone(), given.get(&p.name))
-            && given_from_printed(p, g)
-        {
+        } else if let Some(w) = right_given(assignment, &given, &wrong_so_far, p) {
             Verdict::RightGiven(w)
         } else if close(p, k) {
             Verdict::Rounding
@@ -167,7 +209,7 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
             Verdict::Wrong
         };
         if verdict != Verdict::Right && verdict != Verdict::Rounding {
-            last_wrong = Some(p.name.clone());
+            wrong_so_far.push(p);
         }
         if verdict == Verdict::Wrong && first_wrong.is_none() {
             first_wrong = Some(steps.len());
@@ -176,23 +218,40 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
     }
     let causes = if first_wrong.is_some() || !student.errors.is_empty() {
         // On the assignment (a mistake in a typed input, `ns = 0.2`), then on what they typed.
-        let mut found = causes(assignment, &key, student);
+        // Only mistakes under the rules assumed (the assignment's) are offered.
+        let mut found = causes(assignment, &key, student, assignment.rules);
         if found.is_empty() && !inputs_differ.is_empty() {
-            found = causes(own, &work(own, None, None), student);
+            found = causes(own, &work(own, None, None), student, assignment.rules);
         }
         found
     } else {
         Vec::new()
     };
-    Check { rules: assignment.rules, inputs_differ, steps, first_wrong, causes }
+    Check { rules: assignment.rules, inputs_differ, steps, first_wrong, causes, errors: student.errors.clone() }
 }
 
-/// The catalogue's mistakes that reproduce every value the student printed (worked on the
-/// scene they typed), and the error a run stopped with.
-fn causes(own: &Scene, key: &Worked, student: &Printed) -> Vec<Cause> {
+/// The earlier wrong step(s) `p` is right given: the key worked with only one of the
+/// student's wrong values carried, the most recent first, that reproduces `p`; else all
+/// of them together (named together). `None` where none does.
+fn right_given(scene: &Scene, given: &Worked, wrong: &[&PrintedValue], p: &PrintedValue) -> Option<String> {
+    for w in wrong.iter().rev() {
+        let one = Printed { values: vec![(*w).clone()], errors: Vec::new() };
+        if work(scene, None, Some(&one)).get(&p.name).is_some_and(|g| given_from_printed(p, g)) {
+            return Some(w.name.clone());
+        }
+    }
+    if wrong.is_empty() || !given.get(&p.name).is_some_and(|g| given_from_printed(p, g)) {
+        return None;
+    }
+    Some(wrong.iter().rev().map(|w| w.name.as_str()).collect::<Vec<_>>().join(", "))
+}
+
+/// The catalogue's mistakes under the `assumed` rules that reproduce every value the
+/// student printed (worked on the scene they typed), and the error a run stopped with.
+fn causes(own: &Scene, key: &Worked, student: &Printed, assumed: Rules) -> Vec<Cause> {
     let mut out = Vec::new();
     for info in &CATALOGUE {
-        let Some(m) = info.mistake else { continue };
+        let Some(m) = info.mistake.filter(|m| m.applies(assumed)) else { continue };
         let made = work(own, Some(m), None);
         let mut compared = 0;
         let mut evidence = None;
