@@ -82,6 +82,7 @@ fn frame_start_ui(ui: &mut Ui, state: &mut AppState) -> Option<state::Evaluated>
         ctx.send_viewport_cmd(egui::ViewportCommand::Close);
     }
     super::files::dropped_files_ui(&ctx, state);
+    super::student::ask_ui(&ctx, state);
 
     let eval = match state.evaluate() {
         Ok(e) => e,
@@ -183,6 +184,7 @@ fn calculation_panel_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluat
                 &effects,
                 &program.stages,
                 walk,
+                &mut state.student,
             );
         });
     if !presenting && !state.compare.open {
