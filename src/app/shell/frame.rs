@@ -82,7 +82,9 @@ fn frame_start_ui(ui: &mut Ui, state: &mut AppState) -> Option<state::Evaluated>
         ctx.send_viewport_cmd(egui::ViewportCommand::Close);
     }
     super::files::dropped_files_ui(&ctx, state);
-    super::student::ask_ui(&ctx, state);
+    if let Some((name, bytes)) = super::student::ask_ui(&ctx, state) {
+        super::files::open_bytes(state, &bytes, std::path::Path::new(&name));
+    }
 
     let eval = match state.evaluate() {
         Ok(e) => e,

@@ -70,9 +70,10 @@ fn refuse(state: &mut AppState, why: String) {
 }
 
 /// A notebook with outputs was dropped: asks whether to open it as the scene (as a drop
-/// always did) or check it against the scene shown; carries out the answer.
-pub fn ask_ui(ctx: &egui::Context, state: &mut AppState) {
-    let Some((name, _)) = state.student_ask.as_ref() else { return };
+/// always did) or check it against the scene shown. Checks it here; returns the file
+/// (name, bytes) when it is to be opened as the scene (the shell's files open it).
+pub fn ask_ui(ctx: &egui::Context, state: &mut AppState) -> Option<(String, Vec<u8>)> {
+    let (name, _) = state.student_ask.as_ref()?;
     let shown = phonglab_core::escape::printable(name);
     let (mut open, mut check_it, mut cancel) = (false, false, false);
     egui::Window::new(t!("student-ask-title"))
@@ -89,14 +90,13 @@ pub fn ask_ui(ctx: &egui::Context, state: &mut AppState) {
             });
         });
     if !(open || check_it || cancel) {
-        return;
+        return None;
     }
-    let Some((name, bytes)) = state.student_ask.take() else { return };
-    if open {
-        super::files::open_bytes(state, &bytes, Path::new(&name));
-    } else if check_it {
+    let (name, bytes) = state.student_ask.take()?;
+    if check_it {
         check_bytes(state, &bytes, Path::new(&name));
     }
+    open.then_some((name, bytes))
 }
 
 /// File → Check a student's work…: the system's dialog, or where it cannot open (or in
