@@ -206,3 +206,56 @@ fn a_dropped_notebook_with_outputs_asks_and_printed_text_is_checked_at_once() {
     drop_file(&mut h, &txt);
     assert_eq!(h.state().student.as_ref().map(|s| s.file.as_str()), Some("printed.txt"));
 }
+
+/// A student's picture (the export's 512 pixels) of the worksheet's scene drawn with the
+/// first picture mistake this scene shows, and that mistake's id.
+fn mistaken_picture(path: &Path) -> &'static str {
+    use phonglab_core::teach::diagnose::{Drawing, MISTAKES};
+    let doc = AppState::worksheet().doc;
+    let mesh = doc.view.mesh();
+    let right = Drawing::of(&doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    let (_, good, _) = right.draw(512).unwrap();
+    for m in &MISTAKES {
+        let mut d = right.clone();
+        (m.apply)(&mut d);
+        let (_, rgba, _) = d.draw(512).unwrap();
+        let differing =
+            good.chunks(4).zip(rgba.chunks(4)).filter(|(a, b)| a.iter().zip(*b).any(|(x, y)| x.abs_diff(*y) > 8));
+        if differing.count() > 2000 {
+            phonglab::io::image::write_png(path, 512, 512, &rgba).unwrap();
+            return m.id;
+        }
+    }
+    panic!("no picture mistake shows on the worksheet's scene");
+}
+
+#[test]
+fn a_students_picture_opens_in_compare_as_b_with_the_difference_and_the_diagnosis() {
+    let dir = TempDir::new("picture");
+    let path = dir.0.join("aluno.png");
+    let id = mistaken_picture(&path);
+    let mut h = harness(1024.0, 600.0);
+    check_through_the_menu(&mut h, &path);
+    let p = h.state().compare.student.as_ref().unwrap_or_else(|| panic!("{:?}", h.state().message));
+    assert_eq!(p.verdict, "wrong", "{:?}", p.lines);
+    assert!(p.lines.iter().any(|l| l.contains(&format!("({id})"))), "{id}: {:?}", p.lines);
+    assert!(h.state().compare.open);
+    assert!(h.query_by_label("Student's picture: aluno.png").is_some());
+    assert!(h.query_by_label_contains(&format!("({id})")).is_some());
+    // A, B and the difference side by side, within the window at 1024 x 600.
+    let a = h.get_by_label("A: the right picture of this scene").rect();
+    let b = h.get_by_label("B: the student's picture").rect();
+    let d = h.get_all_by_label("Difference |A − B|").last().unwrap().rect();
+    assert!(a.right() <= b.left() && b.right() <= d.left() && d.right() <= 1024.0, "{a:?} {b:?} {d:?}");
+    h.get_by_label("Clear").click();
+    h.run_steps(2);
+    assert!(h.state().compare.student.is_none());
+
+    // A picture of another size is refused, saying the size expected; nothing changes.
+    let small = dir.0.join("small.png");
+    phonglab::io::image::write_png(&small, 64, 64, &[0; 64 * 64 * 4]).unwrap();
+    check_through_the_menu(&mut h, &small);
+    let message = format!("{:?}", h.state().message);
+    assert!(message.contains("Not checked") && message.contains("512x512"), "{message}");
+    assert!(h.state().compare.student.is_none());
+}

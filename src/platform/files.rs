@@ -67,7 +67,7 @@ pub fn pick_scene_to_open(start: Option<&std::path::Path>) -> Picked {
 /// A student's work to check: a notebook with its outputs, or a script's printed text.
 #[cfg(not(target_arch = "wasm32"))]
 pub fn pick_work_to_check(start: Option<&std::path::Path>) -> Picked {
-    run_dialog(|| dialog(start).add_filter("Notebook or printed text", &["ipynb", "txt"]).pick_file())
+    run_dialog(|| dialog(start).add_filter("Notebook, printed text or picture", &["ipynb", "txt", "png"]).pick_file())
 }
 
 /// Where to save the scene.

@@ -34,7 +34,7 @@ impl Purpose {
         match self {
             Purpose::OpenScene => ["toml", "obj", "ipynb", "py"].map(String::from).to_vec(),
             Purpose::SaveScene => vec!["toml".into()],
-            Purpose::CheckWork => vec!["ipynb".into(), "txt".into()],
+            Purpose::CheckWork => vec!["ipynb".into(), "txt".into(), "png".into()],
             Purpose::SaveBytes { name, .. } => {
                 Path::new(name).extension().map(|e| vec![e.to_string_lossy().into_owned()]).unwrap_or_default()
             }

@@ -256,7 +256,7 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
 /// outputs asks whether to open it as the scene or check it; anything else opens as before.
 fn open_or_check(state: &mut AppState, name: String, bytes: Vec<u8>) {
     let path = Path::new(&name);
-    if super::student::is_printed_text(path) {
+    if super::student::is_printed_text(path) || super::student::is_picture(path) {
         super::student::check_bytes(state, &bytes, path);
     } else if student_code(path) == Some(true) && super::student::has_outputs(&bytes) {
         state.student_ask = Some((name, bytes));

@@ -15,6 +15,11 @@ use crate::app::panels::student_column::StudentCheck;
 use crate::io::student_code::{MAX_CODE_BYTES, import_text, student_code};
 use crate::t;
 
+/// Is `path` a picture (`.png`), diagnosed in Compare?
+pub fn is_picture(path: &Path) -> bool {
+    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"))
+}
+
 /// Is `path` a script's printed text (`.txt`), checked rather than opened?
 pub fn is_printed_text(path: &Path) -> bool {
     path.extension().is_some_and(|e| e.eq_ignore_ascii_case("txt"))
@@ -28,7 +33,12 @@ pub fn has_outputs(bytes: &[u8]) -> bool {
 /// Checks the file at `path` (a notebook with outputs, or printed text), read capped as
 /// Open reads a notebook; says why not.
 pub fn check_path(state: &mut AppState, path: &Path) {
-    match crate::io::input_file::read_capped(path, MAX_CODE_BYTES, &t!("file-kind-code")) {
+    let (cap, kind) = if is_picture(path) {
+        (crate::io::student_png::MAX_PICTURE_BYTES, t!("file-kind-pictures"))
+    } else {
+        (MAX_CODE_BYTES, t!("file-kind-code"))
+    };
+    match crate::io::input_file::read_capped(path, cap, &kind) {
         Ok(bytes) => check_bytes(state, &bytes, path),
         Err(why) => refuse(state, why),
     }
@@ -36,6 +46,9 @@ pub fn check_path(state: &mut AppState, path: &Path) {
 
 /// Checks the work in `bytes`, from a file named `path`, against the scene shown.
 pub fn check_bytes(state: &mut AppState, bytes: &[u8], path: &Path) {
+    if is_picture(path) {
+        return check_picture(state, bytes, path);
+    }
     match checked(state, bytes, path) {
         Ok(c) => {
             let verdict = if c.check.right() { t!("check-all-right") } else { t!("student-checked-wrong") };
@@ -124,4 +137,35 @@ pub fn check_menu_ui(ui: &mut egui::Ui, state: &mut AppState) {
         _ => t!("student-choose-why"),
     };
     state.chooser = Some(Chooser::new(Purpose::CheckWork, state.files.typed().as_deref(), why));
+}
+
+/// The export's window, the size a student's picture is drawn at.
+pub const PICTURE_SIZE: usize = 512;
+
+/// Diagnoses the picture `bytes` (a PNG of the export's size) against the scene shown, and
+/// shows it in Compare as B beside the right picture and their difference.
+fn check_picture(state: &mut AppState, bytes: &[u8], path: &Path) {
+    use phonglab_core::teach::diagnose::{Drawing, diagnose};
+    let image = match crate::io::student_png::decode(bytes, path, PICTURE_SIZE) {
+        Ok(image) => image,
+        Err(why) => return refuse(state, why),
+    };
+    let mesh = state.doc.view.mesh();
+    let right = Drawing::of(&state.doc.shaded_setup(state.settings.pow).job(&mesh));
+    match diagnose(&right, &image, PICTURE_SIZE) {
+        Ok(d) => {
+            let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+            let picture = crate::app::panels::student_picture::StudentPicture::new(
+                phonglab_core::escape::printable(&name),
+                PICTURE_SIZE,
+                image,
+                &d,
+            );
+            let line = picture.lines.first().cloned().unwrap_or_default();
+            state.message = Some(Message::Info(t!("student-checked", file = picture.file.clone(), verdict = line)));
+            state.compare.student = Some(picture);
+            state.compare.open = true;
+        }
+        Err(e) => refuse(state, e.to_string()),
+    }
 }
