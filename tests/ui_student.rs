@@ -259,3 +259,21 @@ fn a_students_picture_opens_in_compare_as_b_with_the_difference_and_the_diagnosi
     assert!(message.contains("Not checked") && message.contains("512x512"), "{message}");
     assert!(h.state().compare.student.is_none());
 }
+
+#[test]
+fn the_check_follows_the_scene_shown() {
+    let dir = TempDir::new("follow");
+    let path = dir.0.join("right.txt");
+    std::fs::write(&path, printed(None)).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    check_through_the_menu(&mut h, &path);
+    assert!(h.state().student.as_ref().unwrap().check.right());
+    // The assignment changed: the same printed values are no longer all right.
+    let mut doc = h.state().doc.clone();
+    doc.scene.material.shininess *= 2.0;
+    h.state_mut().load(doc, "changed");
+    h.run_steps(3);
+    let s = h.state().student.as_ref().expect("kept");
+    assert!(!s.check.right(), "{:?}", s.check.first_wrong);
+    assert!(h.query_by_label_contains(": wrong").is_some());
+}

@@ -5,7 +5,9 @@
 //! The check itself is the core's ([`phonglab_core::study::check::check`]).
 
 use egui::{Color32, RichText, Ui};
-use phonglab_core::study::check::{Check, StepCheck, Verdict};
+use phonglab_core::scene::Scene;
+use phonglab_core::study::check::printed::Printed;
+use phonglab_core::study::check::{Check, StepCheck, Verdict, check};
 
 use crate::app::widgets::palette;
 use crate::t;
@@ -17,9 +19,27 @@ pub struct StudentCheck {
     pub file: String,
     /// The core's check.
     pub check: Check,
+    /// The scene the work typed, and what it printed: checked again when the scene shown
+    /// (the assignment) changes.
+    pub work: (Scene, Printed),
+    /// The scene it was checked against.
+    pub against: Scene,
 }
 
 impl StudentCheck {
+    /// `work` (the scene it typed, what it printed) from `file` checked against `assignment`.
+    pub fn new(file: String, assignment: &Scene, work: (Scene, Printed)) -> StudentCheck {
+        let check = check(assignment, &work.0, &work.1);
+        StudentCheck { file, check, work, against: assignment.clone() }
+    }
+
+    /// Checks the work again if the scene shown is no longer the one it was checked against.
+    pub fn follow(&mut self, assignment: &Scene) {
+        if &self.against != assignment {
+            *self = StudentCheck::new(std::mem::take(&mut self.file), assignment, self.work.clone());
+        }
+    }
+
     /// The student's step printed under the worksheet's `name` (`vlv`, `vlv[1]`), and
     /// whether it is the first wrong one.
     pub fn step(&self, name: &str) -> Option<(&StepCheck, bool)> {

@@ -176,6 +176,9 @@ fn calculation_panel_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluat
             );
             let program = key.program();
             let effects = key.effects_of(&program);
+            if let Some(s) = &mut state.student {
+                s.follow(&state.doc.scene);
+            }
             let walk =
                 calculation::Walk { step: state.ui.layout.step, scroll: std::mem::take(&mut state.ui.scroll_to_step) };
             calculation::calculation_ui(

@@ -7,7 +7,6 @@
 
 use std::path::Path;
 
-use phonglab_core::study::check::check;
 use phonglab_core::study::check::printed::{notebook_outputs, printed_text};
 
 use super::state::{AppState, Message};
@@ -73,9 +72,8 @@ fn checked(state: &AppState, bytes: &[u8], path: &Path) -> Result<StudentCheck, 
         _ if is_printed_text(path) => (state.doc.scene.clone(), printed_text(text)),
         _ => return Err(t!("student-not-work", path = shown)),
     };
-    let c = check(&state.doc.scene, &own, &printed);
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    Ok(StudentCheck { file: phonglab_core::escape::printable(&name), check: c })
+    Ok(StudentCheck::new(phonglab_core::escape::printable(&name), &state.doc.scene, (own, printed)))
 }
 
 fn refuse(state: &mut AppState, why: String) {
