@@ -277,3 +277,17 @@ fn the_check_follows_the_scene_shown() {
     assert!(!s.check.right(), "{:?}", s.check.first_wrong);
     assert!(h.query_by_label_contains(": wrong").is_some());
 }
+
+/// The first wrong step's red reads as text on its tinted fill, in the dark and the light
+/// theme (a projector washes colours out: text contrast, not a symbol's).
+#[test]
+fn the_first_wrong_steps_red_reads_on_its_fill_in_both_themes() {
+    use phonglab::app::panels::student_column::{wrong_fill, wrong_ink_in};
+    use phonglab::app::widgets::palette::{TEXT_CONTRAST, contrast};
+    for v in [egui::Visuals::dark(), egui::Visuals::light()] {
+        let (ink, fill) = (wrong_ink_in(&v), wrong_fill(&v));
+        assert!(contrast(ink, fill) >= TEXT_CONTRAST, "{ink:?} on {fill:?}: {}", contrast(ink, fill));
+        assert!(contrast(ink, v.panel_fill) >= TEXT_CONTRAST, "{ink:?} on {:?}", v.panel_fill);
+        assert_ne!(fill, v.panel_fill, "the row is tinted");
+    }
+}

@@ -48,16 +48,30 @@ impl StudentCheck {
     }
 }
 
-/// The first wrong step's colour (red, darkened on a light background to stay readable).
+/// The first wrong step's fill: the panel's background with a fifth of red in it (opaque,
+/// so the text's contrast on it is known).
+pub fn wrong_fill(v: &egui::Visuals) -> Color32 {
+    let (bg, red) = (v.panel_fill, palette::ERROR);
+    let mix = |b: u8, r: u8| (b as f32 * 0.8 + r as f32 * 0.2).round() as u8;
+    Color32::from_rgb(mix(bg.r(), red.r()), mix(bg.g(), red.g()), mix(bg.b(), red.b()))
+}
+
+/// The wrong steps' red: readable as text ([`palette::TEXT_CONTRAST`]) on the first wrong
+/// step's fill, so on the panel's background too, in either theme.
+pub fn wrong_ink_in(v: &egui::Visuals) -> Color32 {
+    palette::ink_with_contrast(palette::ERROR, wrong_fill(v), palette::TEXT_CONTRAST)
+}
+
+/// [`wrong_ink_in`] `ui`'s theme.
 pub fn wrong_ink(ui: &Ui) -> Color32 {
-    palette::ink(ui, palette::ERROR)
+    wrong_ink_in(ui.visuals())
 }
 
 /// The first wrong step's frame: a tinted fill and a thick red stroke, seen at a projector
 /// in either theme.
 pub fn first_wrong_frame(ui: &Ui) -> egui::Frame {
     egui::Frame::new()
-        .fill(palette::ERROR.gamma_multiply(0.18))
+        .fill(wrong_fill(ui.visuals()))
         .stroke(egui::Stroke::new(2.0, wrong_ink(ui)))
         .corner_radius(4.0)
         .inner_margin(4.0)

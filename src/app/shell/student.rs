@@ -134,7 +134,10 @@ pub fn check_menu_ui(ui: &mut egui::Ui, state: &mut AppState) {
         },
         _ => t!("student-choose-why"),
     };
-    state.chooser = Some(Chooser::new(Purpose::CheckWork, state.files.typed().as_deref(), why));
+    let mut chooser = Chooser::new(Purpose::CheckWork, state.files.typed().as_deref(), why);
+    // The scene file's folder, not its name: the student's file is another.
+    chooser.name.clear();
+    state.chooser = Some(chooser);
 }
 
 /// The export's window, the size a student's picture is drawn at.
