@@ -291,3 +291,29 @@ fn the_first_wrong_steps_red_reads_on_its_fill_in_both_themes() {
         assert_ne!(fill, v.panel_fill, "the row is tinted");
     }
 }
+
+/// The window diagnoses against the scene shown exactly as `phonglab diagnose` does against
+/// its file: the picture `phonglab render` draws of a scene opened in the window is right.
+#[test]
+fn the_picture_render_draws_of_the_scene_shown_is_right() {
+    let dir = TempDir::new("render");
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let path = dir.0.join("drawn.png");
+    let out = common::phonglab(&[
+        "render",
+        "--scene",
+        scene.to_str().unwrap(),
+        "--size",
+        "512",
+        "-o",
+        path.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let mut h = harness(1280.0, 720.0);
+    let doc = phonglab_core::Document::from_toml_in(&std::fs::read_to_string(&scene).unwrap(), scene.parent()).unwrap();
+    h.state_mut().load(doc, "spotlight");
+    h.run_steps(2);
+    check_through_the_menu(&mut h, &path);
+    let p = h.state().compare.student.as_ref().unwrap_or_else(|| panic!("{:?}", h.state().message));
+    assert_eq!(p.verdict, "right", "{:?}", p.lines);
+}

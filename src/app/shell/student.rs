@@ -152,7 +152,9 @@ fn check_picture(state: &mut AppState, bytes: &[u8], path: &Path) {
         Err(why) => return refuse(state, why),
     };
     let mesh = state.doc.view.mesh();
-    let right = Drawing::of(&state.doc.shaded_setup(state.settings.pow).job(&mesh));
+    // As `phonglab diagnose` draws it: the exact power, whatever the window's setting (the
+    // student's OpenGL computes the exact one).
+    let right = Drawing::of(&state.doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
     match diagnose(&right, &image, PICTURE_SIZE) {
         Ok(d) => {
             let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
