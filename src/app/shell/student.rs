@@ -1,8 +1,8 @@
 //! A student's work checked in the window (File → Check a student's work…, or a dropped
 //! `.txt` of printed values, or a dropped notebook with outputs, after asking): read
 //! through the same bounded reader as Open and `phonglab check`, checked by the core's
-//! [`check`](phonglab_core::study::check::check) against the scene shown (the assignment), and shown in the calculation panel
-//! ([`crate::app::panels::student_column`]). Nothing the student wrote is run; a file that
+//! [`check`](phonglab_core::study::check::check) against the scene shown (the assignment),
+//! and shown in the calculation panel ([`crate::app::panels::student_column`]). Nothing the student wrote is run; a file that
 //! cannot be read is refused with a message and the scene and any earlier check stay.
 
 use std::path::Path;
