@@ -17,10 +17,16 @@ const MAX_DECODED_BYTES: usize = 64 << 20;
 /// what is wrong in the user's language: not a PNG, damaged, or the wrong size (with the
 /// size expected).
 pub fn read(path: &Path, size: usize) -> Result<Vec<u8>, String> {
-    let shown = crate::io::reasons::shown(path);
     let bytes = crate::io::input_file::read_capped(path, MAX_PICTURE_BYTES, &t!("file-kind-pictures"))?;
+    decode(&bytes, path, size)
+}
+
+/// Decodes the PNG `bytes` of the file named `path` (read capped already: a drop), as
+/// [`read`] does.
+pub fn decode(bytes: &[u8], path: &Path, size: usize) -> Result<Vec<u8>, String> {
+    let shown = crate::io::reasons::shown(path);
     let limits = png::Limits { bytes: MAX_DECODED_BYTES };
-    let mut decoder = png::Decoder::new_with_limits(std::io::Cursor::new(bytes.as_slice()), limits);
+    let mut decoder = png::Decoder::new_with_limits(std::io::Cursor::new(bytes), limits);
     decoder.set_transformations(png::Transformations::normalize_to_color8() | png::Transformations::ALPHA);
     let bad = |e: &dyn std::fmt::Display| t!("diagnose-bad-png", path = shown.clone(), reason = e.to_string());
     let mut reader = decoder.read_info().map_err(|e| bad(&e))?;

@@ -64,6 +64,12 @@ pub fn pick_scene_to_open(start: Option<&std::path::Path>) -> Picked {
     run_dialog(|| dialog(start).add_filter("Scene, mesh or worksheet", &["toml", "obj", "ipynb", "py"]).pick_file())
 }
 
+/// A student's work to check: a notebook with its outputs, or a script's printed text.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn pick_work_to_check(start: Option<&std::path::Path>) -> Picked {
+    run_dialog(|| dialog(start).add_filter("Notebook, printed text or picture", &["ipynb", "txt", "png"]).pick_file())
+}
+
 /// Where to save the scene.
 #[cfg(not(target_arch = "wasm32"))]
 pub fn pick_scene_to_save(start: Option<&std::path::Path>) -> Picked {
@@ -133,6 +139,12 @@ pub fn pick_path_to_save(_name: &str) -> Picked {
 /// The browser has no dialog that returns a path: see [`choose_file`].
 #[cfg(target_arch = "wasm32")]
 pub fn pick_scene_to_open(_start: Option<&std::path::Path>) -> Picked {
+    Picked::Cancelled
+}
+
+/// The browser has no dialog that returns a path: a student's work is dropped on the page.
+#[cfg(target_arch = "wasm32")]
+pub fn pick_work_to_check(_start: Option<&std::path::Path>) -> Picked {
     Picked::Cancelled
 }
 

@@ -6,6 +6,7 @@ use phonglab_core::effects::Effect;
 use phonglab_core::explain::{Explanation, Side, fmt_value};
 use phonglab_core::plan::Stage;
 
+use super::student_column::{StudentCheck, first_wrong_frame, student_summary_ui, student_value_ui};
 use crate::app::widgets::palette;
 use crate::t;
 
@@ -62,7 +63,9 @@ pub struct Walk {
 }
 
 /// The steps; `side` is switchable when two-sided lighting is on. Steps the specialised
-/// evaluator skips are greyed, with the reason.
+/// evaluator skips are greyed, with the reason. A student's work checked (`student`) shows
+/// its summary above the steps and their value under each step's.
+#[allow(clippy::too_many_arguments)]
 pub fn calculation_ui(
     ui: &mut Ui,
     ex: &Explanation,
@@ -71,6 +74,7 @@ pub fn calculation_ui(
     effects: &[Effect],
     stages: &[Stage],
     walk: Walk,
+    student: &mut Option<StudentCheck>,
 ) {
     // (Wrapped: a narrow panel puts the button under the title rather than widen.)
     ui.horizontal_wrapped(|ui| {
@@ -89,11 +93,16 @@ pub fn calculation_ui(
     ui.small(&ex.heading);
     plan_ui(ui, effects, stages);
     ui.separator();
+    let student = &mut *student;
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
+        student_summary_ui(ui, student);
         for (k, st) in ex.steps.iter().enumerate() {
             let skip = effects.iter().find(|e| !e.on && e.light == st.light && e.step_kind() == Some(st.kind));
             let here = walk.step == Some(k);
-            let frame = if here {
+            let theirs = student.as_ref().and_then(|s| s.step(&st.name));
+            let frame = if theirs.is_some_and(|(_, first)| first) {
+                first_wrong_frame(ui)
+            } else if here {
                 egui::Frame::new()
                     .fill(ui.visuals().selection.bg_fill.gamma_multiply(0.45))
                     .stroke(ui.visuals().selection.stroke)
@@ -102,7 +111,7 @@ pub fn calculation_ui(
             } else {
                 egui::Frame::new().inner_margin(4.0)
             };
-            let shown = frame.show(ui, |ui| step_ui(ui, k, st, skip));
+            let shown = frame.show(ui, |ui| step_ui(ui, k, st, skip, theirs));
             if here && walk.scroll {
                 shown.response.scroll_to_me(Some(egui::Align::Center));
             }
@@ -113,7 +122,13 @@ pub fn calculation_ui(
 
 /// One step: its number, title and formula, then its value (in its symbol's colour) and
 /// the notes.
-fn step_ui(ui: &mut Ui, k: usize, st: &phonglab_core::explain::Step, skip: Option<&Effect>) {
+fn step_ui(
+    ui: &mut Ui,
+    k: usize,
+    st: &phonglab_core::explain::Step,
+    skip: Option<&Effect>,
+    theirs: Option<(&phonglab_core::study::check::StepCheck, bool)>,
+) {
     ui.horizontal(|ui| {
         ui.label(RichText::new(format!("{:>2}.", k + 1)).monospace().weak());
         let title = RichText::new(&st.title);
@@ -134,6 +149,9 @@ fn step_ui(ui: &mut Ui, k: usize, st: &phonglab_core::explain::Step, skip: Optio
     }
     ui.indent(("value", k), |ui| {
         ui.label(text);
+        if let Some((step, first)) = theirs {
+            student_value_ui(ui, step, first);
+        }
         if let Some(e) = skip {
             ui.label(RichText::new(t!("skipped-by-specialised", why = &e.why)).small().weak());
         }

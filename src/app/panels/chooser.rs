@@ -17,6 +17,8 @@ pub enum Purpose {
     OpenScene,
     /// Where to save the scene file.
     SaveScene,
+    /// A student's work to check (a notebook with outputs, or printed text).
+    CheckWork,
     /// Where to save these bytes, offered as `name` (the Export menu's files).
     SaveBytes {
         /// The name offered.
@@ -32,6 +34,7 @@ impl Purpose {
         match self {
             Purpose::OpenScene => ["toml", "obj", "ipynb", "py"].map(String::from).to_vec(),
             Purpose::SaveScene => vec!["toml".into()],
+            Purpose::CheckWork => vec!["ipynb".into(), "txt".into(), "png".into()],
             Purpose::SaveBytes { name, .. } => {
                 Path::new(name).extension().map(|e| vec![e.to_string_lossy().into_owned()]).unwrap_or_default()
             }
@@ -59,6 +62,8 @@ pub enum Chosen {
     Open(PathBuf),
     /// Save the scene here.
     Save(PathBuf),
+    /// Check this student's work.
+    Check(PathBuf),
     /// Save these bytes here.
     SaveBytes(PathBuf, Vec<u8>),
 }
@@ -160,6 +165,7 @@ fn chooser_body_ui(ui: &mut Ui, c: &mut Chooser) -> (Option<Chosen>, bool) {
     ui.horizontal(|ui| {
         let (verb, ok) = match &c.purpose {
             Purpose::OpenScene => (t!("open"), Path::new(&c.path()).is_file()),
+            Purpose::CheckWork => (t!("student-check"), Path::new(&c.path()).is_file()),
             _ => (t!("save"), !c.name.trim().is_empty()),
         };
         if ui.add_enabled(ok, egui::Button::new(verb)).clicked() {
@@ -167,6 +173,7 @@ fn chooser_body_ui(ui: &mut Ui, c: &mut Chooser) -> (Option<Chosen>, bool) {
             done = Some(match &c.purpose {
                 Purpose::OpenScene => Chosen::Open(path),
                 Purpose::SaveScene => Chosen::Save(path),
+                Purpose::CheckWork => Chosen::Check(path),
                 Purpose::SaveBytes { bytes, .. } => Chosen::SaveBytes(path, bytes.clone()),
             });
         }

@@ -117,6 +117,8 @@ pub struct CompareState {
     pub a_channel: ChannelView,
     /// B's channel picture.
     pub b_channel: ChannelView,
+    /// A student's picture diagnosed, shown as B in place of the scenes while it is there.
+    pub student: Option<super::student_picture::StudentPicture>,
     /// The last difference picture, and the pictures' generations it was made from.
     diff: Option<((u64, u64), Difference, egui::TextureHandle)>,
 }
@@ -291,6 +293,9 @@ pub fn compare_ui(
     current: &Current<'_>,
     b: &Evaluated,
 ) -> (Option<String>, Vec<egui::Rect>) {
+    if compare.student.is_some() {
+        return (None, super::student_picture::student_picture_ui(ui, &mut compare.student));
+    }
     let mut notice = None;
     let b_pinned = Pinned { doc: current.doc.clone(), precision: current.precision, pow: current.pow };
     let diffs = compare.a.as_ref().map(|a| differences(a, &b_pinned)).unwrap_or_default();

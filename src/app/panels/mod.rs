@@ -17,5 +17,7 @@ pub mod result;
 pub mod shaded;
 pub mod shader_panel;
 pub mod share;
+pub mod student_column;
+pub mod student_picture;
 pub mod things_to_try;
 pub mod vector_plot;

@@ -194,6 +194,7 @@ pub fn chooser_ui(ctx: &egui::Context, state: &mut AppState) {
     match chooser_ui(ctx, &mut state.chooser) {
         Some(Chosen::Open(p)) => carry_out(state, FileRequest::Open(p)),
         Some(Chosen::Save(p)) => carry_out(state, FileRequest::Save(p)),
+        Some(Chosen::Check(p)) => super::student::check_path(state, &p),
         Some(Chosen::SaveBytes(p, bytes)) => {
             let inputs = crate::app::panels::export::export_inputs(&state.doc, &state.files);
             let inputs: Vec<&Path> = inputs.iter().map(PathBuf::as_path).collect();
@@ -226,7 +227,7 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
     // Files that arrived since the last frame (the browser's chooser and drops).
     for arrived in platform::take_arrived() {
         match arrived {
-            Ok((name, bytes)) => open_bytes(state, &bytes, Path::new(&name)),
+            Ok((name, bytes)) => open_or_check(state, name, bytes),
             Err(why) => refuse(state, why),
         }
     }
@@ -238,7 +239,7 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
     } else {
         // Read now on the desktop; in the browser the bytes arrive later (see file_ui).
         match crate::io::input_file::read_dropped(ctx, file, MAX_CODE_BYTES) {
-            Some(Ok((name, bytes))) => open_bytes(state, &bytes, Path::new(&name)),
+            Some(Ok((name, bytes))) => open_or_check(state, name, bytes),
             Some(Err(why)) => refuse(state, why),
             None => {}
         }
@@ -248,5 +249,18 @@ pub fn dropped_files_ui(ctx: &egui::Context, state: &mut AppState) {
         if let Some(Message::Info(m) | Message::Refused(m)) = &mut state.message {
             m.push_str(&extra);
         }
+    }
+}
+
+/// A dropped file: printed text (`.txt`) is checked against the scene; a notebook with
+/// outputs asks whether to open it as the scene or check it; anything else opens as before.
+fn open_or_check(state: &mut AppState, name: String, bytes: Vec<u8>) {
+    let path = Path::new(&name);
+    if super::student::is_printed_text(path) || super::student::is_picture(path) {
+        super::student::check_bytes(state, &bytes, path);
+    } else if student_code(path) == Some(true) && super::student::has_outputs(&bytes) {
+        state.student_ask = Some((name, bytes));
+    } else {
+        open_bytes(state, &bytes, path);
     }
 }

@@ -82,6 +82,9 @@ fn frame_start_ui(ui: &mut Ui, state: &mut AppState) -> Option<state::Evaluated>
         ctx.send_viewport_cmd(egui::ViewportCommand::Close);
     }
     super::files::dropped_files_ui(&ctx, state);
+    if let Some((name, bytes)) = super::student::ask_ui(&ctx, state) {
+        super::files::open_bytes(state, &bytes, std::path::Path::new(&name));
+    }
 
     let eval = match state.evaluate() {
         Ok(e) => e,
@@ -173,6 +176,9 @@ fn calculation_panel_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluat
             );
             let program = key.program();
             let effects = key.effects_of(&program);
+            if let Some(s) = &mut state.student {
+                s.follow(&state.doc.scene);
+            }
             let walk =
                 calculation::Walk { step: state.ui.layout.step, scroll: std::mem::take(&mut state.ui.scroll_to_step) };
             calculation::calculation_ui(
@@ -183,6 +189,7 @@ fn calculation_panel_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluat
                 &effects,
                 &program.stages,
                 walk,
+                &mut state.student,
             );
         });
     if !presenting && !state.compare.open {

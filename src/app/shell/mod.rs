@@ -17,6 +17,7 @@ pub mod session_loop;
 pub mod shared_link;
 pub mod shutdown;
 pub mod state;
+pub mod student;
 pub mod top_bar;
 #[cfg(target_arch = "wasm32")]
 pub mod web;

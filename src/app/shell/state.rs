@@ -94,6 +94,11 @@ pub struct AppState {
     /// The wgpu adapter eframe runs on, when there is one (the shaded view can then be
     /// drawn by the scene's generated WGSL).
     pub gpu: Option<crate::app::panels::shaded::gpu::GpuInfo>,
+    /// A student's work checked against the scene, shown in the calculation panel.
+    pub student: Option<crate::app::panels::student_column::StudentCheck>,
+    /// A dropped notebook with outputs (its name and bytes), while the window asks whether
+    /// to open it or check it.
+    pub student_ask: Option<(String, Vec<u8>)>,
     /// Undo and redo of the scene's changes.
     pub history: crate::app::editing::history::History,
     /// This frame's time (seconds, egui's clock): a drag's changes within a second are one

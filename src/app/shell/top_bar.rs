@@ -202,6 +202,7 @@ fn file_menu_ui(ui: &mut Ui, state: &mut AppState) {
         &mut state.chooser,
         &mut state.message,
     );
+    super::student::check_menu_ui(ui, state);
     ui.separator();
     if ui.button(t!("share-menu")).on_hover_text(t!("share-menu-hover")).clicked() {
         state.share.open_with(state.ui.layout.presenting);

@@ -1,0 +1,115 @@
+//! A student's picture checked, in Compare: A the right picture of the scene shown, B the
+//! student's, and their difference ([`difference_image`]), above them the diagnosis of
+//! [`phonglab_core::teach::diagnose`] in words (the verdict, the closest cause, its score).
+
+use egui::{RichText, Ui};
+use phonglab_core::teach::diagnose::{Diagnosis, MISTAKES, Tried, Verdict};
+use phonglab_core::teach::picture_match::difference_image;
+
+use crate::t;
+
+/// A student's picture diagnosed against the scene shown.
+pub struct StudentPicture {
+    /// The file's name, as shown (printable).
+    pub file: String,
+    /// Its width and height in pixels.
+    pub size: usize,
+    /// The verdict: `right`, `wrong` or `unexplained`.
+    pub verdict: &'static str,
+    /// The diagnosis in words, one line a finding.
+    pub lines: Vec<String>,
+    /// The right picture, the student's and the difference (RGBA8).
+    pictures: [Vec<u8>; 3],
+    /// Their textures, once made.
+    textures: Option<[egui::TextureHandle; 3]>,
+}
+
+impl StudentPicture {
+    /// The picture `image` (RGBA8, `size` square) from `file`, as `d` diagnosed it.
+    pub fn new(file: String, size: usize, image: Vec<u8>, d: &Diagnosis) -> StudentPicture {
+        let diff = difference_image(&d.picture, &image);
+        StudentPicture {
+            file,
+            size,
+            verdict: d.verdict.name(),
+            lines: verdict_lines(d),
+            pictures: [d.picture.clone(), image, diff],
+            textures: None,
+        }
+    }
+}
+
+/// A share of pixels as a percentage in the user's decimal mark.
+fn percent(score: f64) -> String {
+    crate::locale::decimal(&format!("{:.1} %", 100.0 * score))
+}
+
+/// The diagnosis in words: the verdict with the closest cause and its score, the others.
+fn verdict_lines(d: &Diagnosis) -> Vec<String> {
+    let right = percent(d.right.score);
+    let named = |t: &Tried| {
+        let score = t.matched.map_or(0.0, |m| m.score);
+        (MISTAKES[t.mistake].words(), MISTAKES[t.mistake].id, percent(score))
+    };
+    match d.verdict {
+        Verdict::Right => vec![t!("diagnose-verdict-right", score = right)],
+        Verdict::Wrong => {
+            let (cause, id, score) = named(&d.causes[0]);
+            let mut out = vec![t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right)];
+            for c in &d.causes[1..] {
+                let (cause, id, score) = named(c);
+                out.push(t!("diagnose-also", cause = cause, id = id, score = score));
+            }
+            out
+        }
+        Verdict::Unexplained => {
+            let closest = d.tried.first().filter(|t| t.matched.is_some());
+            let (cause, id, score) = closest.map(named).unwrap_or_default();
+            vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
+        }
+    }
+}
+
+/// The student's picture in Compare: the diagnosis, then A, B and the difference side by
+/// side; Clear returns Compare to the scenes. Returns where the pictures went.
+pub fn student_picture_ui(ui: &mut Ui, picture: &mut Option<StudentPicture>) -> Vec<egui::Rect> {
+    let Some(p) = picture.as_mut() else { return Vec::new() };
+    let mut clear = false;
+    ui.horizontal_wrapped(|ui| {
+        ui.heading(t!("student-picture-heading", file = p.file.clone()));
+        clear = ui.button(t!("student-clear")).on_hover_text(t!("student-clear-hover")).clicked();
+    });
+    let wrong = p.verdict != "right";
+    for line in &p.lines {
+        let mut text = RichText::new(line).strong();
+        if wrong {
+            text = text.color(super::student_column::wrong_ink(ui));
+        }
+        ui.add(egui::Label::new(text).wrap());
+    }
+    let size = p.size;
+    let textures = p.textures.get_or_insert_with(|| {
+        let names = ["student-right", "student-picture", "student-difference"];
+        std::array::from_fn(|k| {
+            let image = egui::ColorImage::from_rgba_unmultiplied([size, size], &p.pictures[k]);
+            ui.ctx().load_texture(names[k], image, egui::TextureOptions::NEAREST)
+        })
+    });
+    let avail = ui.available_size();
+    let row = ui.text_style_height(&egui::TextStyle::Body) * 2.0;
+    let side = ((avail.x - 36.0) / 3.0).min(avail.y - row).max(48.0);
+    let titles = [t!("student-picture-right"), t!("student-picture-theirs"), t!("compare-difference")];
+    let rects = ui.columns(3, |cols| {
+        (0..3)
+            .map(|k| {
+                let label = cols[k].label(RichText::new(&titles[k]).strong());
+                let image = egui::Image::new((textures[k].id(), egui::vec2(side, side)));
+                cols[k].add(image).labelled_by(label.id).rect
+            })
+            .collect::<Vec<_>>()
+    });
+    if clear {
+        *picture = None;
+    }
+    rects
+}

@@ -1,0 +1,174 @@
+//! A student's work checked in the window (File → Check a student's work…, or a dropped
+//! `.txt` of printed values, or a dropped notebook with outputs, after asking): read
+//! through the same bounded reader as Open and `phonglab check`, checked by the core's
+//! [`check`](phonglab_core::study::check::check) against the scene shown (the assignment),
+//! and shown in the calculation panel ([`crate::app::panels::student_column`]). Nothing the student wrote is run; a file that
+//! cannot be read is refused with a message and the scene and any earlier check stay.
+
+use std::path::Path;
+
+use phonglab_core::study::check::printed::{notebook_outputs, printed_text};
+
+use super::state::{AppState, Message};
+use crate::app::panels::student_column::StudentCheck;
+use crate::io::student_code::{MAX_CODE_BYTES, import_text, student_code};
+use crate::t;
+
+/// Is `path` a picture (`.png`), diagnosed in Compare?
+pub fn is_picture(path: &Path) -> bool {
+    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"))
+}
+
+/// Is `path` a script's printed text (`.txt`), checked rather than opened?
+pub fn is_printed_text(path: &Path) -> bool {
+    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("txt"))
+}
+
+/// Does the notebook `bytes` hold printed outputs (then a drop asks: open it or check it)?
+pub fn has_outputs(bytes: &[u8]) -> bool {
+    std::str::from_utf8(bytes).ok().and_then(|t| notebook_outputs(t).ok()).is_some_and(|p| !p.values.is_empty())
+}
+
+/// Checks the file at `path` (a notebook with outputs, or printed text), read capped as
+/// Open reads a notebook; says why not.
+pub fn check_path(state: &mut AppState, path: &Path) {
+    let (cap, kind) = if is_picture(path) {
+        (crate::io::student_png::MAX_PICTURE_BYTES, t!("file-kind-pictures"))
+    } else {
+        (MAX_CODE_BYTES, t!("file-kind-code"))
+    };
+    match crate::io::input_file::read_capped(path, cap, &kind) {
+        Ok(bytes) => check_bytes(state, &bytes, path),
+        Err(why) => refuse(state, why),
+    }
+}
+
+/// Checks the work in `bytes`, from a file named `path`, against the scene shown.
+pub fn check_bytes(state: &mut AppState, bytes: &[u8], path: &Path) {
+    if is_picture(path) {
+        return check_picture(state, bytes, path);
+    }
+    match checked(state, bytes, path) {
+        Ok(c) => {
+            let verdict = if c.check.right() { t!("check-all-right") } else { t!("student-checked-wrong") };
+            state.message = Some(Message::Info(t!("student-checked", file = c.file.clone(), verdict = verdict)));
+            state.ui.layout.calculation_open = true;
+            state.student = Some(c);
+        }
+        Err(why) => refuse(state, why),
+    }
+}
+
+/// The work read and checked, or why not (in the user's language, naming the file).
+fn checked(state: &AppState, bytes: &[u8], path: &Path) -> Result<StudentCheck, String> {
+    let shown = crate::io::reasons::shown(path);
+    let text = std::str::from_utf8(bytes).map_err(|_| t!("not-text", path = shown.clone()))?;
+    let (own, printed) = match student_code(path) {
+        Some(true) => {
+            let imported = import_text(text, true, path)?;
+            let printed = notebook_outputs(text).map_err(|e| format!("{shown}: {e}"))?;
+            (imported.doc.scene, printed)
+        }
+        _ if is_printed_text(path) => (state.doc.scene.clone(), printed_text(text)),
+        _ => return Err(t!("student-not-work", path = shown)),
+    };
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    Ok(StudentCheck::new(phonglab_core::escape::printable(&name), &state.doc.scene, (own, printed)))
+}
+
+fn refuse(state: &mut AppState, why: String) {
+    state.message = Some(Message::Refused(t!("student-not-checked", why = why)));
+}
+
+/// A notebook with outputs was dropped: asks whether to open it as the scene (as a drop
+/// always did) or check it against the scene shown. Checks it here; returns the file
+/// (name, bytes) when it is to be opened as the scene (the shell's files open it).
+pub fn ask_ui(ctx: &egui::Context, state: &mut AppState) -> Option<(String, Vec<u8>)> {
+    let (name, _) = state.student_ask.as_ref()?;
+    let shown = phonglab_core::escape::printable(name);
+    let (mut open, mut check_it, mut cancel) = (false, false, false);
+    egui::Window::new(t!("student-ask-title"))
+        .collapsible(false)
+        .resizable(false)
+        .pivot(egui::Align2::CENTER_CENTER)
+        .default_pos(ctx.content_rect().center())
+        .show(ctx, |ui| {
+            ui.label(t!("student-ask", file = shown));
+            ui.horizontal_wrapped(|ui| {
+                check_it = ui.button(t!("student-ask-check")).clicked();
+                open = ui.button(t!("student-ask-open")).clicked();
+                cancel = ui.button(t!("chooser-cancel")).clicked();
+            });
+        });
+    if !(open || check_it || cancel) {
+        return None;
+    }
+    let (name, bytes) = state.student_ask.take()?;
+    if check_it {
+        check_bytes(state, &bytes, Path::new(&name));
+    }
+    open.then_some((name, bytes))
+}
+
+/// File → Check a student's work…: the system's dialog, or where it cannot open (or in
+/// the tests) phonglab's own chooser; the work chosen is checked. (The browser: drop it.)
+pub fn check_menu_ui(ui: &mut egui::Ui, state: &mut AppState) {
+    use crate::app::panels::chooser::{Chooser, Purpose};
+    use crate::app::panels::files::Dialogs;
+    use crate::platform::files::{self as platform, Picked};
+    if !platform::TYPED_PATHS {
+        return;
+    }
+    if !ui.button(t!("student-menu")).on_hover_text(t!("student-menu-hover")).clicked() {
+        return;
+    }
+    ui.close();
+    let why = match state.files.dialogs {
+        Dialogs::System => match platform::pick_work_to_check(state.files.typed().as_deref()) {
+            Picked::Chosen(p) => return check_path(state, &p),
+            Picked::Cancelled => return,
+            Picked::NoDialog(why) => {
+                state.files.dialogs = Dialogs::InApp;
+                why
+            }
+        },
+        _ => t!("student-choose-why"),
+    };
+    let mut chooser = Chooser::new(Purpose::CheckWork, state.files.typed().as_deref(), why);
+    // The scene file's folder, not its name: the student's file is another.
+    chooser.name.clear();
+    state.chooser = Some(chooser);
+}
+
+/// The export's window, the size a student's picture is drawn at.
+pub const PICTURE_SIZE: usize = 512;
+
+/// Diagnoses the picture `bytes` (a PNG of the export's size) against the scene shown, and
+/// shows it in Compare as B beside the right picture and their difference.
+fn check_picture(state: &mut AppState, bytes: &[u8], path: &Path) {
+    use phonglab_core::teach::diagnose::{Drawing, diagnose};
+    let image = match crate::io::student_png::decode(bytes, path, PICTURE_SIZE) {
+        Ok(image) => image,
+        Err(why) => return refuse(state, why),
+    };
+    let mesh = state.doc.view.mesh();
+    // As `phonglab diagnose` draws it: the exact power, whatever the window's setting (the
+    // student's OpenGL computes the exact one).
+    let right = Drawing::of(&state.doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    match diagnose(&right, &image, PICTURE_SIZE) {
+        Ok(d) => {
+            let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+            let picture = crate::app::panels::student_picture::StudentPicture::new(
+                phonglab_core::escape::printable(&name),
+                PICTURE_SIZE,
+                image,
+                &d,
+            );
+            let line = picture.lines.first().cloned().unwrap_or_default();
+            state.message = Some(Message::Info(t!("student-checked", file = picture.file.clone(), verdict = line)));
+            state.compare.student = Some(picture);
+            state.compare.open = true;
+        }
+        Err(e) => refuse(state, e.to_string()),
+    }
+}
