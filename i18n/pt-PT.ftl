@@ -1002,7 +1002,7 @@ student-check = Corrigir
 student-heading = Trabalho do aluno: { $file }
 student-clear = Limpar
 student-clear-hover = Esconder os valores do aluno e a correção
-student-value = o teu = { $student }: { $verdict }
+student-value = o seu = { $student }: { $verdict }
 student-first-wrong-marker = » primeiro passo errado
 student-checked = { $file } corrigido com esta cena: { $verdict }
 student-checked-wrong = nem tudo está certo; vê o cálculo
