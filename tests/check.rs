@@ -337,3 +337,60 @@ fn a_class_with_hostile_names_gets_a_report_and_marks_that_keep_them_as_data() {
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(std::fs::read(&onto).unwrap(), before);
 }
+
+#[test]
+fn a_link_in_a_class_folder_is_not_read_and_named_a_link() {
+    let root = TempDir::new("links");
+    let (class, secret) = (root.path().join("cls"), root.path().join("secret"));
+    std::fs::create_dir_all(&class).unwrap();
+    std::fs::create_dir_all(&secret).unwrap();
+    let outside = secret.join("x.ipynb");
+    std::fs::write(&outside, "{\n\"cells\": [],\napi_key = \"SECRET-42\"\n}\n").unwrap();
+    std::os::unix::fs::symlink("../secret/x.ipynb", class.join("link.ipynb")).unwrap();
+    std::os::unix::fs::symlink("/etc/passwd", class.join("passwd.ipynb")).unwrap();
+    std::fs::write(class.join("own.ipynb"), edited("unchanged", &worksheet(), &[])).unwrap();
+    let csv = root.path().join("marks.csv");
+    let out = common::phonglab(&["check", class.to_str().unwrap(), "--csv", csv.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let marks = std::fs::read_to_string(&csv).unwrap();
+    assert!(!marks.contains("SECRET-42") && !marks.contains("root:"), "{marks}");
+    assert!(marks.contains("link.ipynb,unread,,not read: a link"), "{marks}");
+    assert!(marks.contains("passwd.ipynb,unread,,not read: a link"), "{marks}");
+    assert!(marks.contains("own.ipynb,unread,") && !marks.contains("own.ipynb,unread,,not read: a link"), "{marks}");
+}
+
+#[test]
+fn a_link_planted_at_the_charts_derived_name_is_refused_and_its_file_kept() {
+    let root = TempDir::new("chartlink");
+    let (class, sub, outside) = (root.path().join("cls"), root.path().join("sub"), root.path().join("outside"));
+    for d in [&class, &sub, &outside] {
+        std::fs::create_dir_all(d).unwrap();
+    }
+    std::fs::write(class.join("a.ipynb"), edited("unchanged", &worksheet(), &[])).unwrap();
+    let notes = outside.join("notes.txt");
+    std::fs::write(&notes, "my notes").unwrap();
+    std::os::unix::fs::symlink("../outside/notes.txt", sub.join("turma.png")).unwrap();
+    let report = sub.join("turma.md");
+    let out = common::phonglab(&["check", class.to_str().unwrap(), "--report", report.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("is a link"), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(std::fs::read_to_string(&notes).unwrap(), "my notes");
+    assert!(!report.exists(), "nothing written");
+}
+
+#[test]
+fn a_class_as_json_escapes_controls_in_file_names() {
+    let class = TempDir::new("jsonnames");
+    let names = ["a\u{9b}31m.ipynb", "b\u{202e}gnp.ipynb", "c\u{2028}d.ipynb"];
+    for name in names {
+        std::fs::write(class.path().join(name), edited("unchanged", &worksheet(), &[])).unwrap();
+    }
+    let out = common::phonglab(&["check", class.path().to_str().unwrap(), "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(!text.contains(['\u{9b}', '\u{202e}', '\u{2028}']), "{text:?}");
+    assert!(text.contains("\\u202e"), "{text}");
+    let json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let files: Vec<&str> = json.as_array().unwrap().iter().map(|f| f["file"].as_str().unwrap()).collect();
+    assert_eq!(files, names);
+}

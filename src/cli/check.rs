@@ -76,7 +76,8 @@ pub fn run(a: &CheckArgs) -> Result<()> {
     let key_scene = assignment.as_ref().unwrap_or(&work.own);
     let c = check(key_scene, &work.own, &work.printed);
     if a.json {
-        super::check_class::out(&format!("{}\n", serde_json::to_string_pretty(&super::check_class::json(&c))?));
+        let json = serde_json::to_string_pretty(&super::check_class::json(&c))?;
+        super::check_class::out(&format!("{}\n", phonglab_core::escape::json::text(&json)));
     } else {
         super::check_class::out(&phonglab_core::escape::terminal::lines(&words(&c)));
     }
