@@ -394,3 +394,32 @@ fn a_class_as_json_escapes_controls_in_file_names() {
     let files: Vec<&str> = json.as_array().unwrap().iter().map(|f| f["file"].as_str().unwrap()).collect();
     assert_eq!(files, names);
 }
+
+#[test]
+fn a_step_printed_again_does_not_hide_the_earlier_wrong_one_and_junk_past_the_cap_is_refused() {
+    let dir = TempDir::new("printed");
+    let text = "vertexNormal =  [0.  0.6 0.8 0. ]\nvlv =  [9. 9. 9. 0.]\n\
+                vlv =  [ 0.79220526  0.55887606 -0.2450885   0.        ]\n";
+    let printed = dir.path().join("printed.txt");
+    std::fs::write(&printed, text).unwrap();
+    let out = common::phonglab(&["check", "--printed", printed.to_str().unwrap(), "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["verdict"], "wrong", "{json:#}");
+    assert_eq!(json["first_wrong"]["step"], "vlv", "{json:#}");
+    assert_eq!(json["printed_twice"], serde_json::json!(["vlv"]), "{json:#}");
+    let words = common::phonglab(&["check", "--printed", printed.to_str().unwrap()]);
+    let words = String::from_utf8_lossy(&words.stdout);
+    assert!(words.contains("printed more than once, with different values (each printing is checked): vlv"), "{words}");
+    // 4096 junk values first: the work is refused whole, never checked in part.
+    let mut junk: String = (0..4096).map(|k| format!("junk{k} = 1\n")).collect();
+    junk.push_str(text);
+    std::fs::write(&printed, junk).unwrap();
+    let out = common::phonglab(&["check", "--printed", printed.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stdout));
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("prints more than 4096 values"),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use crate::t;
 use anyhow::Result;
 use clap::Args;
-use phonglab_core::study::check::printed::{Printed, printed_text};
+use phonglab_core::study::check::printed::{Printed, read_printed_text};
 use phonglab_core::study::check::{Check, check};
 
 /// `phonglab check`.
@@ -47,7 +47,7 @@ fn read_printed(path: &Path) -> Result<Printed> {
     } else {
         crate::io::input_file::read_text_capped(path, cap, &t!("file-kind-code")).map_err(anyhow::Error::msg)?
     };
-    Ok(printed_text(&text))
+    read_printed_text(&text).map_err(|e| anyhow::anyhow!("{}: {e}", crate::io::reasons::shown(path)))
 }
 
 /// Runs `phonglab check`.
@@ -84,6 +84,18 @@ pub fn run(a: &CheckArgs) -> Result<()> {
     Ok(())
 }
 
+/// The steps printed more than once with different numbers (each printing is checked).
+pub fn printed_again(c: &Check) -> Vec<String> {
+    let mut names: Vec<String> = Vec::new();
+    for (k, s) in c.steps.iter().enumerate() {
+        let again = c.steps[..k].iter().any(|old| old.name == s.name && old.student != s.student);
+        if again && !names.contains(&s.name) {
+            names.push(s.name.clone());
+        }
+    }
+    names
+}
+
 /// Numbers for people, in the locale's mark.
 pub fn numbers(v: &[f64]) -> String {
     let parts: Vec<String> = v.iter().map(|x| crate::locale::num(*x, 8)).collect();
@@ -98,6 +110,10 @@ pub fn words(c: &Check) -> String {
     }
     if c.steps.is_empty() {
         out.push_str(&format!("{}\n", t!("check-nothing-printed")));
+    }
+    let again = printed_again(c);
+    if !again.is_empty() {
+        out.push_str(&format!("{}\n", t!("check-printed-twice", names = again.join(", "))));
     }
     for s in &c.steps {
         let line = t!(

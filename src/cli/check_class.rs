@@ -48,6 +48,7 @@ pub fn json(c: &Check) -> serde_json::Value {
             "step": k.step,
             "value": k.value,
         })).collect::<Vec<_>>(),
+        "printed_twice": super::check::printed_again(c),
         "steps": c.steps.iter().map(|s| serde_json::json!({
             "step": s.name,
             "student": s.student,

@@ -601,6 +601,7 @@ diagnose-spot-left-out = The spotlight's cone left out (cutoff 180)
 ## phonglab check: a student's work checked
 
 check-no-outputs = this notebook was saved without its outputs: nothing it printed can be checked. Run it first (Jupyter: Kernel → Restart & Run All), save it, and check it again
+check-too-many-values = this work prints more than { $count } values: it is refused whole rather than checked in part (print only the worksheet's steps)
 check-verdict-right = right
 check-verdict-right-given = right, given your { $step }
 check-verdict-rounding = rounding

@@ -601,6 +601,7 @@ diagnose-spot-left-out = O cone do spot esquecido (corte em 180)
 ## phonglab check: o trabalho de um aluno verificado
 
 check-no-outputs = este notebook foi salvo sem as saídas: não há nada impresso para verificar. Execute-o primeiro (Jupyter: Kernel → Restart & Run All), salve e verifique de novo
+check-too-many-values = este trabalho imprime mais de { $count } valores: ele é recusado por inteiro em vez de verificado só em parte (imprima só os passos da lista de exercícios)
 check-verdict-right = certo
 check-verdict-right-given = certo, dado o seu { $step }
 check-verdict-rounding = arredondamento

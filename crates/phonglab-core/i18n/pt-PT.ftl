@@ -601,6 +601,7 @@ diagnose-spot-left-out = O cone do foco esquecido (corte a 180)
 ## phonglab check: o trabalho de um aluno verificado
 
 check-no-outputs = este caderno foi guardado sem os resultados: não há nada impresso para verificar. Corre-o primeiro (Jupyter: Kernel → Restart & Run All), guarda-o e verifica-o de novo
+check-too-many-values = este trabalho imprime mais de { $count } valores: é recusado por inteiro em vez de verificado só em parte (imprime só os passos da ficha)
 check-verdict-right = certo
 check-verdict-right-given = certo, dado o teu { $step }
 check-verdict-rounding = arredondamento
