@@ -977,6 +977,7 @@ check-report-counts = Causes in the class
 check-report-unexplained = not explained by the catalogue
 check-report-unreadable = not read: { $reason }
 check-report-written = checked { $count } submissions: { $path }
+check-given-not-finite = not checked: a given is not a finite number ({ $givens })
 check-printed-twice = printed more than once, with different values (each printing is checked): { $names }
 check-not-read-link = a link (a submission must be a file in the folder itself)
 check-chart-link = { $path } is a link: the chart's name comes from the report's, and phonglab never writes through a link it was not given; remove the link or name another report

@@ -977,6 +977,7 @@ check-report-counts = Causas na turma
 check-report-unexplained = não explicado pelo catálogo
 check-report-unreadable = não lido: { $reason }
 check-report-written = { $count } trabalhos verificados: { $path }
+check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
 check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
 check-not-read-link = um link simbólico (um trabalho precisa ser um arquivo da própria pasta)
 check-chart-link = { $path } é um link simbólico: o nome do gráfico vem do nome do relatório, e o phonglab nunca escreve através de um link que não recebeu; apague o link ou dê outro nome ao relatório

@@ -423,3 +423,19 @@ fn a_step_printed_again_does_not_hide_the_earlier_wrong_one_and_junk_past_the_ca
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+#[test]
+fn a_given_that_is_not_finite_is_refused_by_check_naming_it() {
+    let dir = TempDir::new("notfinite");
+    let nb = serde_json::json!({"cells": [{
+        "cell_type": "code",
+        "source": ["import numpy as np\n", "vertexPos = np.array([1e999, -384, 0, 1])\n", "vertexNormal = np.array([0, 0, 1, 0])\n"],
+        "outputs": [{"output_type": "stream", "name": "stdout", "text": ["vertexNormal =  [0. 0. 1. 0.]\n"]}],
+    }]});
+    let path = dir.path().join("inf.ipynb");
+    std::fs::write(&path, nb.to_string()).unwrap();
+    let out = common::phonglab(&["check", path.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{}{err}", String::from_utf8_lossy(&out.stdout));
+    assert!(err.contains("not checked: a given is not a finite number (vertexPos (cell 1, line 2))"), "{err}");
+}

@@ -45,6 +45,10 @@ pub struct Imported {
     pub doc: Document,
     /// Lines that could not be read, and givens the file lacks.
     pub notices: Vec<String>,
+    /// The givens refused as not finite numbers, each with its place (`vertexPos (line 3)`;
+    /// their notices are among `notices`): `check` refuses such work rather than check the
+    /// worksheet's value in its place.
+    pub not_finite: Vec<String>,
 }
 
 /// Why nothing could be read at all.
@@ -92,6 +96,7 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
     let mut notices = Vec::new();
     let mut local_viewer = false;
     let mut refused = Vec::new();
+    let mut not_finite = Vec::new();
     let mut total = Size::default();
     for line in &lines {
         let Some((lhs, rhs)) = assignment(&line.text) else { continue };
@@ -118,12 +123,14 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
                 if is_given && let Some(x) = v.first_not_finite() {
                     // A given that is not a finite number is refused; later lines may still
                     // assign it.
-                    notices.push(t!(
+                    let notice = t!(
                         "import-not-finite",
                         place = line.place.clone(),
                         name = lhs,
                         value = crate::locale::num(x, 8)
-                    ));
+                    );
+                    not_finite.push(format!("{lhs} ({})", line.place));
+                    notices.push(notice);
                     given.remove(lhs);
                     refused.push(lhs.to_string());
                 } else if is_given {
@@ -151,7 +158,7 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
     }
     let mut r = Reader { given, notices, refused };
     let doc = r.document(name, local_viewer);
-    Ok(Imported { doc, notices: r.notices })
+    Ok(Imported { doc, notices: r.notices, not_finite })
 }
 
 /// The error for a line that passed a limit: its place, its text (shortened) and why.
