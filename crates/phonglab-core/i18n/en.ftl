@@ -307,6 +307,7 @@ import-too-large = { $place }: `{ $line }` { $reason }: the file is not read (a 
 import-limit-depth = nests more than { $depth } deep
 import-limit-elements = holds more than { $count } numbers, strings and lists
 import-limit-bytes = holds more than { $count } bytes of strings
+import-limit-tokens = holds more than { $count } tokens (numbers, names, operators and brackets)
 import-limit-total = brings the names assigned so far past what phonglab reads: it { $limit }
 bytes-described = { $bytes } bytes ({ $mib } MiB)
 obj-index-not-number = line { $line }: { $what } index { $index } is not a number

@@ -307,6 +307,7 @@ import-too-large = { $place }: `{ $line }` { $reason }: o ficheiro não é lido 
 import-limit-depth = aninha mais de { $depth } níveis
 import-limit-elements = contém mais de { $count } números, cadeias e listas
 import-limit-bytes = contém mais de { $count } bytes de cadeias
+import-limit-tokens = tem mais de { $count } elementos léxicos (números, nomes, operadores e parênteses)
 import-limit-total = leva os nomes atribuídos até aqui além do que o phonglab lê: { $limit }
 bytes-described = { $bytes } bytes ({ $mib } MiB)
 obj-index-not-number = linha { $line }: o índice de { $what } { $index } não é um número

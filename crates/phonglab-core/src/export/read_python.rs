@@ -36,7 +36,7 @@ use crate::t;
 mod expression;
 
 use expression::{Failure, Size, Value, evaluate};
-pub use expression::{MAX_BYTES, MAX_DEPTH, MAX_ELEMENTS};
+pub use expression::{MAX_BYTES, MAX_DEPTH, MAX_ELEMENTS, MAX_TOKENS};
 
 /// The scene read, and what the reader has to say about the file (each naming a line).
 #[derive(Clone, Debug)]
@@ -469,9 +469,9 @@ mod tests {
     fn deep_nesting_is_refused_naming_its_line_not_overflowing_the_stack() {
         for deep in [
             format!("lightPos = {}1{}", "[".repeat(10_000), "]".repeat(10_000)),
-            format!("lightPos = {}1", "-".repeat(100_000)),
+            format!("lightPos = {}1", "-".repeat(50_000)),
             format!("lightPos = {}1{}", "np.array(".repeat(5_000), ")".repeat(5_000)),
-            format!("x = 2{}", "**2".repeat(50_000)),
+            format!("x = 2{}", "**2".repeat(30_000)),
         ] {
             let text = format!("vertexPos = np.array([0, 0, 0, 1])\n{deep}\n");
             let e = script(&text).unwrap_err().to_string();
@@ -480,6 +480,24 @@ mod tests {
         // Within the limit, nesting reads as before.
         let ok = script(&format!("lightPos = {}[0, 0, 90, 1]{}\n", "(".repeat(20), ")".repeat(20))).unwrap();
         assert_eq!(ok.doc.scene.lights[0].position, DVec4::new(0.0, 0.0, 90.0, 1.0));
+    }
+
+    #[test]
+    fn a_statement_of_too_many_tokens_is_refused_before_its_tree_is_built() {
+        // `1+1+…`, `----…1` and `1**1**…` past the cap: refused while tokenizing (the work
+        // and memory bounded by MAX_TOKENS, not by the line's megabytes), naming the line.
+        let long = [
+            format!("x = {}1", "1+".repeat(MAX_TOKENS)),
+            format!("x = {}1", "-".repeat(2 * MAX_TOKENS)),
+            format!("x = {}1", "1**".repeat(MAX_TOKENS)),
+        ];
+        for line in long {
+            let e = script(&format!("vertexPos = [1, 2, 3, 1]\n{line}\n")).unwrap_err().to_string();
+            assert!(e.starts_with("line 2: ") && e.contains("tokens"), "{}", &e[..e.len().min(300)]);
+        }
+        // A value of the most numbers, signed, is within it.
+        let most = vec!["-0.5"; MAX_ELEMENTS - 1].join(", ");
+        assert!(script(&format!("vertexPos = [1, 2, 3, 1]\nx = [{most}]\n")).is_ok());
     }
 
     #[test]
