@@ -508,6 +508,7 @@ budget-what-render = a { $width } x { $height } picture of { $count ->
        *[other] { $triangles } triangles
     }
 budget-what-window = the window at { $width } x { $height } pixels
+budget-what-diagnose = comparing a { $size } x { $size } picture with { $count } drawings, one at a time
 budget-what-cost = the study of { $count ->
     [one] one object
    *[other] { $count } objects

@@ -508,6 +508,7 @@ budget-what-render = uma imagem de { $width } x { $height } com { $count ->
        *[other] { $triangles } triângulos
     }
 budget-what-window = a janela a { $width } x { $height } pixels
+budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez
 budget-what-cost = o estudo de { $count ->
     [one] um objeto
    *[other] { $count } objetos
