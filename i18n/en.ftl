@@ -977,7 +977,12 @@ check-report-causes = Causes
 check-report-counts = Causes in the class
 check-report-unexplained = not explained by the catalogue
 check-report-unreadable = not read: { $reason }
-check-report-written = checked { $count } submissions: { $path }
+check-report-written = checked { $count ->
+    [one] one submission
+   *[other] { $count } submissions
+}: { $path }
+check-printed-with-folder = --printed checks one script's printed text; a folder's notebooks are read from their own outputs: give one or the other
+check-report-needs-folder = --report and --csv are a class's: give a folder of notebooks (one notebook's check is printed, or written as --json)
 check-given-not-finite = not checked: a given is not a finite number ({ $givens })
 check-printed-twice = printed more than once, with different values (each printing is checked): { $names }
 check-not-read-link = a link (a submission must be a file in the folder itself)

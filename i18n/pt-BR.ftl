@@ -977,7 +977,12 @@ check-report-causes = Causas
 check-report-counts = Causas na turma
 check-report-unexplained = não explicado pelo catálogo
 check-report-unreadable = não lido: { $reason }
-check-report-written = { $count } trabalhos verificados: { $path }
+check-report-written = { $count ->
+    [one] um trabalho verificado
+   *[other] { $count } trabalhos verificados
+}: { $path }
+check-printed-with-folder = --printed verifica o texto impresso por um programa; os notebooks de uma pasta são lidos das próprias saídas: informe um ou outro
+check-report-needs-folder = --report e --csv são de uma turma: informe uma pasta de notebooks (a verificação de um notebook é escrita no terminal, ou com --json)
 check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
 check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
 check-not-read-link = um link simbólico (um trabalho precisa ser um arquivo da própria pasta)

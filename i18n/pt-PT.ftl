@@ -977,7 +977,12 @@ check-report-causes = Causas
 check-report-counts = Causas na turma
 check-report-unexplained = não explicado pelo catálogo
 check-report-unreadable = não lido: { $reason }
-check-report-written = { $count } trabalhos verificados: { $path }
+check-report-written = { $count ->
+    [one] um trabalho verificado
+   *[other] { $count } trabalhos verificados
+}: { $path }
+check-printed-with-folder = --printed verifica o texto impresso por um programa; os cadernos de uma pasta são lidos dos seus próprios resultados: indica um ou outro
+check-report-needs-folder = --report e --csv são de uma turma: indica uma pasta de cadernos (a verificação de um caderno é escrita no terminal, ou com --json)
 check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
 check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
 check-not-read-link = uma ligação simbólica (um trabalho tem de ser um ficheiro da própria pasta)

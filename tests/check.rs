@@ -439,3 +439,35 @@ fn a_given_that_is_not_finite_is_refused_by_check_naming_it() {
     assert_eq!(out.status.code(), Some(2), "{}{err}", String::from_utf8_lossy(&out.stdout));
     assert!(err.contains("not checked: a given is not a finite number (vertexPos (cell 1, line 2))"), "{err}");
 }
+
+#[test]
+fn a_flag_that_does_not_apply_is_refused_and_one_submission_is_singular() {
+    let dir = TempDir::new("flags");
+    let nb = dir.path().join("a.ipynb");
+    std::fs::write(&nb, edited("unchanged", &worksheet(), &[])).unwrap();
+    let printed = dir.path().join("printed.txt");
+    std::fs::write(&printed, "vlv =  [9. 9. 9. 0.]\n").unwrap();
+    let report = dir.path().join("out").join("r.md");
+    let (d, p, r) = (dir.path().to_str().unwrap(), printed.to_str().unwrap(), report.to_str().unwrap());
+    let o = common::phonglab(&["check", d, "--printed", p]);
+    assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stdout));
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("--printed checks one script"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    for flag in ["--report", "--csv"] {
+        let o = common::phonglab(&["check", nb.to_str().unwrap(), flag, r]);
+        assert_eq!(o.status.code(), Some(2), "{flag}: {}", String::from_utf8_lossy(&o.stdout));
+        assert!(String::from_utf8_lossy(&o.stderr).contains("are a class's"), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    std::fs::create_dir_all(dir.path().join("out")).unwrap();
+    std::fs::remove_file(&printed).unwrap();
+    let o = common::phonglab(&["check", d, "--report", r]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("checked one submission:"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}

@@ -56,7 +56,15 @@ pub fn run(a: &CheckArgs) -> Result<()> {
         Some(p) => Some(super::scene_file(p)?.scene),
         None => None,
     };
-    if let Some(dir) = a.work.as_ref().filter(|w| w.is_dir()) {
+    let folder = a.work.as_ref().filter(|w| w.is_dir());
+    // A flag that does not apply is refused, never silently ignored.
+    if folder.is_some() && a.printed.is_some() {
+        anyhow::bail!(t!("check-printed-with-folder"));
+    }
+    if folder.is_none() && (a.report.is_some() || a.csv.is_some()) {
+        anyhow::bail!(t!("check-report-needs-folder"));
+    }
+    if let Some(dir) = folder {
         let class = super::check_class::ClassArgs {
             scene: a.scene.clone(),
             json: a.json,
