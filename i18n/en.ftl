@@ -508,6 +508,7 @@ budget-what-render = a { $width } x { $height } picture of { $count ->
        *[other] { $triangles } triangles
     }
 budget-what-window = the window at { $width } x { $height } pixels
+budget-what-diagnose = comparing a { $size } x { $size } picture with { $count } drawings, one at a time
 budget-what-cost = the study of { $count ->
     [one] one object
    *[other] { $count } objects
@@ -976,7 +977,16 @@ check-report-causes = Causes
 check-report-counts = Causes in the class
 check-report-unexplained = not explained by the catalogue
 check-report-unreadable = not read: { $reason }
-check-report-written = checked { $count } submissions: { $path }
+check-report-written = checked { $count ->
+    [one] one submission
+   *[other] { $count } submissions
+}: { $path }
+check-printed-with-folder = --printed checks one script's printed text; a folder's notebooks are read from their own outputs: give one or the other
+check-report-needs-folder = --report and --csv are a class's: give a folder of notebooks (one notebook's check is printed, or written as --json)
+check-given-not-finite = not checked: a given is not a finite number ({ $givens })
+check-printed-twice = printed more than once, with different values (each printing is checked): { $names }
+check-not-read-link = a link (a submission must be a file in the folder itself)
+check-chart-link = { $path } is a link: the chart's name comes from the report's, and phonglab never writes through a link it was not given; remove the link or name another report
 check-chart-title = Causes in the class ({ $count } submissions)
 check-verdict-word-right = right
 check-verdict-word-wrong = wrong

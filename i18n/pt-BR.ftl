@@ -508,6 +508,7 @@ budget-what-render = uma imagem de { $width } x { $height } com { $count ->
        *[other] { $triangles } triângulos
     }
 budget-what-window = a janela a { $width } x { $height } pixels
+budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez
 budget-what-cost = o estudo de { $count ->
     [one] um objeto
    *[other] { $count } objetos
@@ -976,7 +977,16 @@ check-report-causes = Causas
 check-report-counts = Causas na turma
 check-report-unexplained = não explicado pelo catálogo
 check-report-unreadable = não lido: { $reason }
-check-report-written = { $count } trabalhos verificados: { $path }
+check-report-written = { $count ->
+    [one] um trabalho verificado
+   *[other] { $count } trabalhos verificados
+}: { $path }
+check-printed-with-folder = --printed verifica o texto impresso por um programa; os notebooks de uma pasta são lidos das próprias saídas: informe um ou outro
+check-report-needs-folder = --report e --csv são de uma turma: informe uma pasta de notebooks (a verificação de um notebook é escrita no terminal, ou com --json)
+check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
+check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
+check-not-read-link = um link simbólico (um trabalho precisa ser um arquivo da própria pasta)
+check-chart-link = { $path } é um link simbólico: o nome do gráfico vem do nome do relatório, e o phonglab nunca escreve através de um link que não recebeu; apague o link ou dê outro nome ao relatório
 check-chart-title = Causas na turma ({ $count } trabalhos)
 check-verdict-word-right = certo
 check-verdict-word-wrong = errado

@@ -508,6 +508,7 @@ budget-what-render = uma imagem de { $width } x { $height } com { $count ->
        *[other] { $triangles } triângulos
     }
 budget-what-window = a janela a { $width } x { $height } píxeis
+budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez
 budget-what-cost = o estudo de { $count ->
     [one] um objeto
    *[other] { $count } objetos
@@ -976,7 +977,16 @@ check-report-causes = Causas
 check-report-counts = Causas na turma
 check-report-unexplained = não explicado pelo catálogo
 check-report-unreadable = não lido: { $reason }
-check-report-written = { $count } trabalhos verificados: { $path }
+check-report-written = { $count ->
+    [one] um trabalho verificado
+   *[other] { $count } trabalhos verificados
+}: { $path }
+check-printed-with-folder = --printed verifica o texto impresso por um programa; os cadernos de uma pasta são lidos dos seus próprios resultados: indica um ou outro
+check-report-needs-folder = --report e --csv são de uma turma: indica uma pasta de cadernos (a verificação de um caderno é escrita no terminal, ou com --json)
+check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
+check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
+check-not-read-link = uma ligação simbólica (um trabalho tem de ser um ficheiro da própria pasta)
+check-chart-link = { $path } é uma ligação simbólica: o nome do gráfico vem do do relatório, e o phonglab nunca escreve através de uma ligação que não lhe foi dada; apague a ligação ou dê outro nome ao relatório
 check-chart-title = Causas na turma ({ $count } trabalhos)
 check-verdict-word-right = certo
 check-verdict-word-wrong = errado

@@ -402,3 +402,137 @@ fn check_and_diagnose_use_one_register() {
         }
     }
 }
+
+#[test]
+fn a_link_in_a_class_folder_is_not_read_and_named_a_link() {
+    let root = TempDir::new("links");
+    let (class, secret) = (root.path().join("cls"), root.path().join("secret"));
+    std::fs::create_dir_all(&class).unwrap();
+    std::fs::create_dir_all(&secret).unwrap();
+    let outside = secret.join("x.ipynb");
+    std::fs::write(&outside, "{\n\"cells\": [],\napi_key = \"SECRET-42\"\n}\n").unwrap();
+    std::os::unix::fs::symlink("../secret/x.ipynb", class.join("link.ipynb")).unwrap();
+    std::os::unix::fs::symlink("/etc/passwd", class.join("passwd.ipynb")).unwrap();
+    std::fs::write(class.join("own.ipynb"), edited("unchanged", &worksheet(), &[])).unwrap();
+    let csv = root.path().join("marks.csv");
+    let out = common::phonglab(&["check", class.to_str().unwrap(), "--csv", csv.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let marks = std::fs::read_to_string(&csv).unwrap();
+    assert!(!marks.contains("SECRET-42") && !marks.contains("root:"), "{marks}");
+    assert!(marks.contains("link.ipynb,unread,,not read: a link"), "{marks}");
+    assert!(marks.contains("passwd.ipynb,unread,,not read: a link"), "{marks}");
+    assert!(marks.contains("own.ipynb,unread,") && !marks.contains("own.ipynb,unread,,not read: a link"), "{marks}");
+}
+
+#[test]
+fn a_link_planted_at_the_charts_derived_name_is_refused_and_its_file_kept() {
+    let root = TempDir::new("chartlink");
+    let (class, sub, outside) = (root.path().join("cls"), root.path().join("sub"), root.path().join("outside"));
+    for d in [&class, &sub, &outside] {
+        std::fs::create_dir_all(d).unwrap();
+    }
+    std::fs::write(class.join("a.ipynb"), edited("unchanged", &worksheet(), &[])).unwrap();
+    let notes = outside.join("notes.txt");
+    std::fs::write(&notes, "my notes").unwrap();
+    std::os::unix::fs::symlink("../outside/notes.txt", sub.join("turma.png")).unwrap();
+    let report = sub.join("turma.md");
+    let out = common::phonglab(&["check", class.to_str().unwrap(), "--report", report.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("is a link"), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(std::fs::read_to_string(&notes).unwrap(), "my notes");
+    assert!(!report.exists(), "nothing written");
+}
+
+#[test]
+fn a_class_as_json_escapes_controls_in_file_names() {
+    let class = TempDir::new("jsonnames");
+    let names = ["a\u{9b}31m.ipynb", "b\u{202e}gnp.ipynb", "c\u{2028}d.ipynb"];
+    for name in names {
+        std::fs::write(class.path().join(name), edited("unchanged", &worksheet(), &[])).unwrap();
+    }
+    let out = common::phonglab(&["check", class.path().to_str().unwrap(), "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(!text.contains(['\u{9b}', '\u{202e}', '\u{2028}']), "{text:?}");
+    assert!(text.contains("\\u202e"), "{text}");
+    let json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let files: Vec<&str> = json.as_array().unwrap().iter().map(|f| f["file"].as_str().unwrap()).collect();
+    assert_eq!(files, names);
+}
+
+#[test]
+fn a_step_printed_again_does_not_hide_the_earlier_wrong_one_and_junk_past_the_cap_is_refused() {
+    let dir = TempDir::new("printed");
+    let text = "vertexNormal =  [0.  0.6 0.8 0. ]\nvlv =  [9. 9. 9. 0.]\n\
+                vlv =  [ 0.79220526  0.55887606 -0.2450885   0.        ]\n";
+    let printed = dir.path().join("printed.txt");
+    std::fs::write(&printed, text).unwrap();
+    let out = common::phonglab(&["check", "--printed", printed.to_str().unwrap(), "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["verdict"], "wrong", "{json:#}");
+    assert_eq!(json["first_wrong"]["step"], "vlv", "{json:#}");
+    assert_eq!(json["printed_twice"], serde_json::json!(["vlv"]), "{json:#}");
+    let words = common::phonglab(&["check", "--printed", printed.to_str().unwrap()]);
+    let words = String::from_utf8_lossy(&words.stdout);
+    assert!(words.contains("printed more than once, with different values (each printing is checked): vlv"), "{words}");
+    // 4096 junk values first: the work is refused whole, never checked in part.
+    let mut junk: String = (0..4096).map(|k| format!("junk{k} = 1\n")).collect();
+    junk.push_str(text);
+    std::fs::write(&printed, junk).unwrap();
+    let out = common::phonglab(&["check", "--printed", printed.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stdout));
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("prints more than 4096 values"),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn a_given_that_is_not_finite_is_refused_by_check_naming_it() {
+    let dir = TempDir::new("notfinite");
+    let nb = serde_json::json!({"cells": [{
+        "cell_type": "code",
+        "source": ["import numpy as np\n", "vertexPos = np.array([1e999, -384, 0, 1])\n", "vertexNormal = np.array([0, 0, 1, 0])\n"],
+        "outputs": [{"output_type": "stream", "name": "stdout", "text": ["vertexNormal =  [0. 0. 1. 0.]\n"]}],
+    }]});
+    let path = dir.path().join("inf.ipynb");
+    std::fs::write(&path, nb.to_string()).unwrap();
+    let out = common::phonglab(&["check", path.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{}{err}", String::from_utf8_lossy(&out.stdout));
+    assert!(err.contains("not checked: a given is not a finite number (vertexPos (cell 1, line 2))"), "{err}");
+}
+
+#[test]
+fn a_flag_that_does_not_apply_is_refused_and_one_submission_is_singular() {
+    let dir = TempDir::new("flags");
+    let nb = dir.path().join("a.ipynb");
+    std::fs::write(&nb, edited("unchanged", &worksheet(), &[])).unwrap();
+    let printed = dir.path().join("printed.txt");
+    std::fs::write(&printed, "vlv =  [9. 9. 9. 0.]\n").unwrap();
+    let report = dir.path().join("out").join("r.md");
+    let (d, p, r) = (dir.path().to_str().unwrap(), printed.to_str().unwrap(), report.to_str().unwrap());
+    let o = common::phonglab(&["check", d, "--printed", p]);
+    assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stdout));
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("--printed checks one script"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    for flag in ["--report", "--csv"] {
+        let o = common::phonglab(&["check", nb.to_str().unwrap(), flag, r]);
+        assert_eq!(o.status.code(), Some(2), "{flag}: {}", String::from_utf8_lossy(&o.stdout));
+        assert!(String::from_utf8_lossy(&o.stderr).contains("are a class's"), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    std::fs::create_dir_all(dir.path().join("out")).unwrap();
+    std::fs::remove_file(&printed).unwrap();
+    let o = common::phonglab(&["check", d, "--report", r]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("checked one submission:"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}

@@ -216,3 +216,22 @@ fn the_pyopengl_export_under_mesa_is_right_and_its_edited_state_is_named() {
         assert_eq!(v["causes"][0]["id"], id, "{id}: {v:#}");
     }
 }
+
+#[test]
+fn the_memory_estimate_covers_every_drawing_and_picture_it_holds() {
+    // 2048 x 2048 peaked at 207 MB (debug build, /usr/bin/time -f %M) and was seen at
+    // 391 MB; the estimate was 65 MiB, one render's. Under a 256 MiB budget it is refused
+    // before anything is drawn or the picture read.
+    let dir = scratch("budget");
+    let scene = write(&dir, "scene.toml", &spotlight());
+    let image = write(&dir, "never-read.png", "not a picture");
+    let args = ["diagnose", "--scene", scene.to_str().unwrap(), "--image", image.to_str().unwrap()];
+    let o = phonglab(&[&args[..], &["--size", "2048", "--memory-budget", "256M"]].concat());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("comparing a 2048 x 2048 picture with") && err.contains("more than the memory budget"),
+        "{err}"
+    );
+    assert!(!err.contains("PNG"), "{err}");
+}

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use crate::t;
 use anyhow::Result;
 use clap::Args;
-use phonglab_core::study::check::printed::{Printed, printed_text};
+use phonglab_core::study::check::printed::{Printed, read_printed_text};
 use phonglab_core::study::check::{Check, check};
 
 /// `phonglab check`.
@@ -47,7 +47,7 @@ fn read_printed(path: &Path) -> Result<Printed> {
     } else {
         crate::io::input_file::read_text_capped(path, cap, &t!("file-kind-code")).map_err(anyhow::Error::msg)?
     };
-    Ok(printed_text(&text))
+    read_printed_text(&text).map_err(|e| anyhow::anyhow!("{}: {e}", crate::io::reasons::shown(path)))
 }
 
 /// Runs `phonglab check`.
@@ -56,7 +56,15 @@ pub fn run(a: &CheckArgs) -> Result<()> {
         Some(p) => Some(super::scene_file(p)?.scene),
         None => None,
     };
-    if let Some(dir) = a.work.as_ref().filter(|w| w.is_dir()) {
+    let folder = a.work.as_ref().filter(|w| w.is_dir());
+    // A flag that does not apply is refused, never silently ignored.
+    if folder.is_some() && a.printed.is_some() {
+        anyhow::bail!(t!("check-printed-with-folder"));
+    }
+    if folder.is_none() && (a.report.is_some() || a.csv.is_some()) {
+        anyhow::bail!(t!("check-report-needs-folder"));
+    }
+    if let Some(dir) = folder {
         let class = super::check_class::ClassArgs {
             scene: a.scene.clone(),
             json: a.json,
@@ -81,12 +89,25 @@ pub fn run(a: &CheckArgs) -> Result<()> {
     let key_scene = assignment.as_ref().unwrap_or(&work.own);
     let c = check(key_scene, &work.own, &work.printed);
     if a.json {
-        super::check_class::out(&format!("{}\n", serde_json::to_string_pretty(&super::check_class::json(&c))?));
+        let json = serde_json::to_string_pretty(&super::check_class::json(&c))?;
+        super::check_class::out(&format!("{}\n", phonglab_core::escape::json::text(&json)));
     } else {
         let text = format!("{scene_line}\n{}", words(&c));
         super::check_class::out(&phonglab_core::escape::terminal::lines(&text));
     }
     Ok(())
+}
+
+/// The steps printed more than once with different numbers (each printing is checked).
+pub fn printed_again(c: &Check) -> Vec<String> {
+    let mut names: Vec<String> = Vec::new();
+    for (k, s) in c.steps.iter().enumerate() {
+        let again = c.steps[..k].iter().any(|old| old.name == s.name && old.student != s.student);
+        if again && !names.contains(&s.name) {
+            names.push(s.name.clone());
+        }
+    }
+    names
 }
 
 /// Numbers for people, in the locale's mark.
@@ -106,6 +127,10 @@ pub fn words(c: &Check) -> String {
     let mut out = format!("{}\n", t!("check-rules", rules = c.rules.to_string()));
     if !c.inputs_differ.is_empty() {
         out.push_str(&format!("{}\n", t!("check-inputs-differ", names = input_names(c))));
+    }
+    let again = printed_again(c);
+    if !again.is_empty() {
+        out.push_str(&format!("{}\n", t!("check-printed-twice", names = again.join(", "))));
     }
     for s in &c.steps {
         let line = t!(

@@ -51,6 +51,7 @@ pub fn json(c: &Check) -> serde_json::Value {
             "step": k.step,
             "value": k.value,
         })).collect::<Vec<_>>(),
+        "printed_twice": super::check::printed_again(c),
         "steps": c.steps.iter().map(|s| serde_json::json!({
             "step": s.name,
             "student": s.student,
@@ -98,13 +99,21 @@ fn submissions(dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(out)
 }
 
+/// Is `path` a link (or anything but a regular file)? A submission is a regular file in the
+/// folder itself: a link could lead out of it (`../secret.ipynb`, `/etc/passwd`).
+fn is_link(path: &Path) -> bool {
+    !std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_file())
+}
+
 /// Checks every notebook of `dir` against `assignment` (each its own scene without one).
 pub fn mark_all(dir: &Path, assignment: Option<&Scene>, budget: Duration) -> Result<Vec<Marked>> {
     let start = Instant::now();
     let mut out = Vec::new();
     for path in submissions(dir)? {
         let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        let check = if start.elapsed() > budget {
+        let check = if is_link(&path) {
+            Err(t!("check-not-read-link"))
+        } else if start.elapsed() > budget {
             Err(format!("> {} s", budget.as_secs()))
         } else {
             read_notebook(&path)
@@ -127,6 +136,12 @@ pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> 
         guarded.push((s.as_path(), crate::io::same_file::Input::Any));
     }
     crate::io::same_file::refuse_onto(&outputs, &guarded).map_err(anyhow::Error::msg)?;
+    // The chart's name is derived, not given: a link planted there is never followed.
+    if let Some(chart) =
+        chart.as_ref().filter(|c| std::fs::symlink_metadata(c).is_ok_and(|m| m.file_type().is_symlink()))
+    {
+        anyhow::bail!(t!("check-chart-link", path = crate::io::reasons::shown(chart)));
+    }
     for out in &outputs {
         crate::io::atomic_write::check_file_destination(out)?;
     }
@@ -157,7 +172,7 @@ pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> 
                 Err(e) => serde_json::json!({"file": m.name, "error": e}),
             })
             .collect();
-        out(&format!("{}\n", serde_json::to_string_pretty(&all)?));
+        out(&format!("{}\n", escape::json::text(&serde_json::to_string_pretty(&all)?)));
     } else if a.report.is_none() && a.csv.is_none() {
         for m in &marked {
             out(&format!("{}\n", escape::terminal::text(&format!("{}: {}", m.name, summary(m)))));

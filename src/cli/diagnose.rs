@@ -50,7 +50,12 @@ fn right_drawing(a: &DiagnoseArgs, outputs: &[&Path]) -> Result<Drawing> {
         correct: Vec::new(),
     };
     let loaded = input.load(outputs)?;
-    Ok(Drawing::of(&loaded.job()))
+    let job = loaded.job();
+    let (vertices, triangles) = (job.mesh.positions.len() as u64, job.mesh.triangle_count() as u64);
+    let what = t!("budget-what-diagnose", size = a.size, count = MISTAKES.len() + 1);
+    let needed = crate::io::budget::diagnose_bytes(u64::from(a.size), vertices, triangles);
+    crate::io::budget::check(&what, needed).map_err(anyhow::Error::msg)?;
+    Ok(Drawing::of(&job))
 }
 
 /// A share of pixels as a percentage in the user's decimal mark.

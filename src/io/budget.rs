@@ -94,6 +94,18 @@ pub fn render_bytes(width: u64, height: u64, vertices: u64, triangles: u64) -> u
     width * height * 16 + vertices * (96 + 24) + triangles * (188 + 12)
 }
 
+/// What `phonglab diagnose` holds at its peak for a `size` x `size` picture of a mesh of
+/// `vertices` and `triangles`: the right drawing's renderer, kept for the probe, and one
+/// mistake's renderer at a time ([`render_bytes`] each), and per pixel the right picture,
+/// the student's picture decoded, a mistake's picture, the coverage masks and the
+/// difference image, with the PNG reader's and writer's rows: 64 bytes a pixel more.
+/// Measured (`/usr/bin/time -f %M`, debug build, worksheet-mview1): 207 MB at 2048, 659 MB
+/// at 4096 (39 bytes a pixel); a heavier scene was seen at 93 bytes a pixel, so 96 are
+/// counted.
+pub fn diagnose_bytes(size: u64, vertices: u64, triangles: u64) -> u64 {
+    2 * render_bytes(size, size, vertices, triangles) + size * size * 64
+}
+
 /// What `eval` holds while it lights a case file whose largest case is `largest_case`
 /// bytes of JSON: that case as serde_json's values (at most 32 bytes a byte of JSON: a
 /// list of one-digit numbers, "0,", takes a 32-byte value for 2 bytes, and a list's room

@@ -46,6 +46,12 @@ pub fn read_notebook(path: &Path) -> anyhow::Result<Work> {
         super::input_file::read_text_capped(path, cap, &crate::t!("file-kind-code")).map_err(anyhow::Error::msg)?;
     let notebook = student_code(path) == Some(true);
     let imported = import_text(&text, notebook, path).map_err(anyhow::Error::msg)?;
+    // A given that is not a finite number is refused, named: never checked against the
+    // worksheet's value put in its place.
+    if !imported.not_finite.is_empty() {
+        let shown = super::reasons::shown(path);
+        anyhow::bail!("{shown}: {}", crate::t!("check-given-not-finite", givens = imported.not_finite.join("; ")));
+    }
     let printed = if notebook {
         phonglab_core::study::check::printed::notebook_outputs(&text)
             .map_err(|e| anyhow::anyhow!("{}: {e}", super::reasons::shown(path)))?

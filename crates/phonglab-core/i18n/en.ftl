@@ -307,6 +307,7 @@ import-too-large = { $place }: `{ $line }` { $reason }: the file is not read (a 
 import-limit-depth = nests more than { $depth } deep
 import-limit-elements = holds more than { $count } numbers, strings and lists
 import-limit-bytes = holds more than { $count } bytes of strings
+import-limit-tokens = holds more than { $count } tokens (numbers, names, operators and brackets)
 import-limit-total = brings the names assigned so far past what phonglab reads: it { $limit }
 bytes-described = { $bytes } bytes ({ $mib } MiB)
 obj-index-not-number = line { $line }: { $what } index { $index } is not a number
@@ -601,6 +602,7 @@ diagnose-spot-left-out = The spotlight's cone left out (cutoff 180)
 ## phonglab check: a student's work checked
 
 check-no-outputs = this notebook was saved without its outputs: nothing it printed can be checked. Run it first (Jupyter: Kernel → Restart & Run All), save it, and check it again
+check-too-many-values = this work prints more than { $count } values: it is refused whole rather than checked in part (print only the worksheet's steps)
 check-verdict-right = right
 check-verdict-right-given = right, given your { $step }
 check-verdict-rounding = rounding

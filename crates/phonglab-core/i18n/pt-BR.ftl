@@ -307,6 +307,7 @@ import-too-large = { $place }: `{ $line }` { $reason }: o arquivo não é lido (
 import-limit-depth = aninha mais de { $depth } níveis
 import-limit-elements = contém mais de { $count } números, strings e listas
 import-limit-bytes = contém mais de { $count } bytes de strings
+import-limit-tokens = tem mais de { $count } tokens (números, nomes, operadores e parênteses)
 import-limit-total = leva os nomes atribuídos até aqui além do que o phonglab lê: { $limit }
 bytes-described = { $bytes } bytes ({ $mib } MiB)
 obj-index-not-number = linha { $line }: o índice de { $what } { $index } não é um número
@@ -601,6 +602,7 @@ diagnose-spot-left-out = O cone do spot esquecido (corte em 180)
 ## phonglab check: o trabalho de um aluno verificado
 
 check-no-outputs = este notebook foi salvo sem as saídas: não há nada impresso para verificar. Execute-o primeiro (Jupyter: Kernel → Restart & Run All), salve e verifique de novo
+check-too-many-values = este trabalho imprime mais de { $count } valores: ele é recusado por inteiro em vez de verificado só em parte (imprima só os passos da lista de exercícios)
 check-verdict-right = certo
 check-verdict-right-given = certo, dado o seu { $step }
 check-verdict-rounding = arredondamento

@@ -307,6 +307,7 @@ import-too-large = { $place }: `{ $line }` { $reason }: o ficheiro não é lido 
 import-limit-depth = aninha mais de { $depth } níveis
 import-limit-elements = contém mais de { $count } números, cadeias e listas
 import-limit-bytes = contém mais de { $count } bytes de cadeias
+import-limit-tokens = tem mais de { $count } elementos léxicos (números, nomes, operadores e parênteses)
 import-limit-total = leva os nomes atribuídos até aqui além do que o phonglab lê: { $limit }
 bytes-described = { $bytes } bytes ({ $mib } MiB)
 obj-index-not-number = linha { $line }: o índice de { $what } { $index } não é um número
@@ -601,6 +602,7 @@ diagnose-spot-left-out = O cone do foco esquecido (corte a 180)
 ## phonglab check: o trabalho de um aluno verificado
 
 check-no-outputs = este caderno foi guardado sem os resultados: não há nada impresso para verificar. Execute-o primeiro (Jupyter: Kernel → Restart & Run All), guarde-o e verifique-o de novo
+check-too-many-values = este trabalho imprime mais de { $count } valores: é recusado por inteiro em vez de verificado só em parte (imprima só os passos da ficha)
 check-verdict-right = certo
 check-verdict-right-given = certo, dado o seu { $step }
 check-verdict-rounding = arredondamento

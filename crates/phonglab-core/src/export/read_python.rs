@@ -36,7 +36,7 @@ use crate::t;
 mod expression;
 
 use expression::{Failure, Size, Value, evaluate};
-pub use expression::{MAX_BYTES, MAX_DEPTH, MAX_ELEMENTS};
+pub use expression::{MAX_BYTES, MAX_DEPTH, MAX_ELEMENTS, MAX_TOKENS};
 
 /// The scene read, and what the reader has to say about the file (each naming a line).
 #[derive(Clone, Debug)]
@@ -45,6 +45,10 @@ pub struct Imported {
     pub doc: Document,
     /// Lines that could not be read, and givens the file lacks.
     pub notices: Vec<String>,
+    /// The givens refused as not finite numbers, each with its place (`vertexPos (line 3)`;
+    /// their notices are among `notices`): `check` refuses such work rather than check the
+    /// worksheet's value in its place.
+    pub not_finite: Vec<String>,
 }
 
 /// Why nothing could be read at all.
@@ -92,6 +96,7 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
     let mut notices = Vec::new();
     let mut local_viewer = false;
     let mut refused = Vec::new();
+    let mut not_finite = Vec::new();
     let mut total = Size::default();
     for line in &lines {
         let Some((lhs, rhs)) = assignment(&line.text) else { continue };
@@ -118,12 +123,14 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
                 if is_given && let Some(x) = v.first_not_finite() {
                     // A given that is not a finite number is refused; later lines may still
                     // assign it.
-                    notices.push(t!(
+                    let notice = t!(
                         "import-not-finite",
                         place = line.place.clone(),
                         name = lhs,
                         value = crate::locale::num(x, 8)
-                    ));
+                    );
+                    not_finite.push(format!("{lhs} ({})", line.place));
+                    notices.push(notice);
                     given.remove(lhs);
                     refused.push(lhs.to_string());
                 } else if is_given {
@@ -151,7 +158,7 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
     }
     let mut r = Reader { given, notices, refused };
     let doc = r.document(name, local_viewer);
-    Ok(Imported { doc, notices: r.notices })
+    Ok(Imported { doc, notices: r.notices, not_finite })
 }
 
 /// The error for a line that passed a limit: its place, its text (shortened) and why.
@@ -462,9 +469,9 @@ mod tests {
     fn deep_nesting_is_refused_naming_its_line_not_overflowing_the_stack() {
         for deep in [
             format!("lightPos = {}1{}", "[".repeat(10_000), "]".repeat(10_000)),
-            format!("lightPos = {}1", "-".repeat(100_000)),
+            format!("lightPos = {}1", "-".repeat(50_000)),
             format!("lightPos = {}1{}", "np.array(".repeat(5_000), ")".repeat(5_000)),
-            format!("x = 2{}", "**2".repeat(50_000)),
+            format!("x = 2{}", "**2".repeat(30_000)),
         ] {
             let text = format!("vertexPos = np.array([0, 0, 0, 1])\n{deep}\n");
             let e = script(&text).unwrap_err().to_string();
@@ -473,6 +480,24 @@ mod tests {
         // Within the limit, nesting reads as before.
         let ok = script(&format!("lightPos = {}[0, 0, 90, 1]{}\n", "(".repeat(20), ")".repeat(20))).unwrap();
         assert_eq!(ok.doc.scene.lights[0].position, DVec4::new(0.0, 0.0, 90.0, 1.0));
+    }
+
+    #[test]
+    fn a_statement_of_too_many_tokens_is_refused_before_its_tree_is_built() {
+        // `1+1+…`, `----…1` and `1**1**…` past the cap: refused while tokenizing (the work
+        // and memory bounded by MAX_TOKENS, not by the line's megabytes), naming the line.
+        let long = [
+            format!("x = {}1", "1+".repeat(MAX_TOKENS)),
+            format!("x = {}1", "-".repeat(2 * MAX_TOKENS)),
+            format!("x = {}1", "1**".repeat(MAX_TOKENS)),
+        ];
+        for line in long {
+            let e = script(&format!("vertexPos = [1, 2, 3, 1]\n{line}\n")).unwrap_err().to_string();
+            assert!(e.starts_with("line 2: ") && e.contains("tokens"), "{}", &e[..e.len().min(300)]);
+        }
+        // A value of the most numbers, signed, is within it.
+        let most = vec!["-0.5"; MAX_ELEMENTS - 1].join(", ");
+        assert!(script(&format!("vertexPos = [1, 2, 3, 1]\nx = [{most}]\n")).is_ok());
     }
 
     #[test]

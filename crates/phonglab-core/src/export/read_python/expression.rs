@@ -15,6 +15,11 @@ pub const MAX_DEPTH: usize = 32;
 pub const MAX_ELEMENTS: usize = 10_000;
 /// The most bytes of strings one value holds.
 pub const MAX_BYTES: usize = 1 << 20;
+/// The most tokens one expression holds (a value of [`MAX_ELEMENTS`] numbers, each with its
+/// sign and comma, and its brackets): refused while tokenizing, before a tree or a token
+/// more is built, so a hostile line (`1+1+…`, `----…1`, `1**1**…` of megabytes) costs
+/// memory in proportion to [`MAX_TOKENS`], not to its length.
+pub const MAX_TOKENS: usize = 8 * MAX_ELEMENTS;
 
 /// A value as the reader evaluates it.
 #[derive(Clone, Debug, PartialEq)]
@@ -113,11 +118,14 @@ pub(super) fn evaluate(text: &str, env: &BTreeMap<String, Value>) -> Result<Valu
     Ok(v)
 }
 
-fn tokenize(text: &str) -> Result<Vec<String>, String> {
+fn tokenize(text: &str) -> Result<Vec<String>, Failure> {
     let chars: Vec<char> = text.chars().collect();
     let mut out = Vec::new();
     let mut i = 0;
     while i < chars.len() {
+        if out.len() >= MAX_TOKENS {
+            return Err(Failure::Limit(t!("import-limit-tokens", count = MAX_TOKENS)));
+        }
         let c = chars[i];
         if c.is_whitespace() {
             i += 1;
@@ -149,7 +157,7 @@ fn tokenize(text: &str) -> Result<Vec<String>, String> {
                 i += 1;
             }
             if i == chars.len() {
-                return Err(t!("import-reason-string"));
+                return Err(t!("import-reason-string").into());
             }
             i += 1;
             out.push(chars[start..i].iter().collect());
@@ -160,7 +168,7 @@ fn tokenize(text: &str) -> Result<Vec<String>, String> {
             out.push(c.to_string());
             i += 1;
         } else {
-            return Err(t!("import-reason-char", char = c.to_string()));
+            return Err(t!("import-reason-char", char = c.to_string()).into());
         }
     }
     Ok(out)

@@ -22,16 +22,17 @@ pub struct PrintedValue {
 /// What a piece of work printed.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Printed {
-    /// The values, in the order they were printed (a name printed again: the last).
+    /// The values, every printing in the order printed (a name printed again is there
+    /// again: each printing is checked, a later one never hides an earlier wrong one).
     pub values: Vec<PrintedValue>,
     /// The errors the run stopped with (`ValueError: math domain error`).
     pub errors: Vec<String>,
 }
 
 impl Printed {
-    /// The value printed under `name`.
+    /// The value printed last under `name`.
     pub fn get(&self, name: &str) -> Option<&PrintedValue> {
-        self.values.iter().find(|v| v.name == name)
+        self.values.iter().rev().find(|v| v.name == name)
     }
 }
 
@@ -44,6 +45,9 @@ pub enum OutputsError {
     /// Saved without its outputs: it has to be run first.
     #[error("{0}")]
     NoOutputs(String),
+    /// It prints more values than [`MAX_VALUES`]: refused whole, never checked in part.
+    #[error("{0}")]
+    TooMany(String),
 }
 
 /// The most values read from one piece of work (a worksheet prints about twenty; eight
@@ -51,18 +55,33 @@ pub enum OutputsError {
 pub const MAX_VALUES: usize = 4096;
 /// The most numbers one value holds (a matrix is 16).
 pub const MAX_NUMBERS: usize = 1024;
+/// The most errors kept (a run stops at its first; a script's text may hold a few).
+pub const MAX_ERRORS: usize = 64;
+/// The most lines one printed value wraps over (NumPy puts at least one number on a line).
+pub const MAX_VALUE_LINES: usize = MAX_NUMBERS + 1;
+
+/// The values printed in `text`, as [`read_printed_text`]; a text printing more than
+/// [`MAX_VALUES`] values gives none, its refusal in `errors` (nothing is checked in part).
+pub fn printed_text(text: &str) -> Printed {
+    read_printed_text(text).unwrap_or_else(|e| Printed { values: Vec::new(), errors: vec![e.to_string()] })
+}
 
 /// The values printed in `text`, a script's standard output (or a notebook's outputs, one
-/// after the other).
-pub fn printed_text(text: &str) -> Printed {
+/// after the other); refused when it prints more than [`MAX_VALUES`] values (junk printed
+/// first must not push the work past a cap and out of the check). Linear in the text: a
+/// value's continuation lines are joined at most [`MAX_VALUE_LINES`] and its brackets
+/// counted as they come.
+pub fn read_printed_text(text: &str) -> Result<Printed, OutputsError> {
     let mut out = Printed::default();
-    let lines: Vec<&str> = text.lines().collect();
-    let mut k = 0;
-    while k < lines.len() && out.values.len() < MAX_VALUES {
-        let line = lines[k];
-        k += 1;
+    let mut lines = text.lines().peekable();
+    while let Some(line) = lines.next() {
+        if out.values.len() >= MAX_VALUES {
+            return Err(OutputsError::TooMany(crate::t!("check-too-many-values", count = MAX_VALUES)));
+        }
         if let Some(error) = error_line(line) {
-            out.errors.push(error);
+            if out.errors.len() < MAX_ERRORS {
+                out.errors.push(error);
+            }
             continue;
         }
         let Some((name, rest)) = line.split_once('=') else { continue };
@@ -72,22 +91,26 @@ pub fn printed_text(text: &str) -> Printed {
         }
         // An array wraps over lines until its brackets close; a matrix starts on the next.
         let mut value = rest.trim().to_string();
-        if value.is_empty() && k < lines.len() && lines[k].trim_start().starts_with('[') {
-            value = lines[k].trim().to_string();
-            k += 1;
+        if value.is_empty()
+            && let Some(next) = lines.next_if(|l| l.trim_start().starts_with('['))
+        {
+            value = next.trim().to_string();
         }
-        while depth(&value) > 0 && k < lines.len() && value.len() < 64 * MAX_NUMBERS {
+        let mut open = depth(&value);
+        let mut joined = 0;
+        while open > 0 && joined < MAX_VALUE_LINES && value.len() < 64 * MAX_NUMBERS {
+            let Some(next) = lines.next() else { break };
             value.push(' ');
-            value.push_str(lines[k].trim());
-            k += 1;
+            value.push_str(next.trim());
+            open += depth(next);
+            joined += 1;
         }
         if let Some(v) = numbers(name, &value) {
-            out.values.retain(|old| old.name != v.name);
             out.values.push(v);
         }
     }
     array_precision(&mut out);
-    out
+    Ok(out)
 }
 
 /// The values a notebook's saved outputs printed; a notebook whose code cells have no
@@ -118,7 +141,7 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
     if !any {
         return Err(OutputsError::NoOutputs(crate::t!("check-no-outputs")));
     }
-    Ok(printed_text(&text))
+    read_printed_text(&text)
 }
 
 /// A notebook's multi-line text: one string, or a list of lines.
@@ -252,5 +275,39 @@ mod tests {
         assert!(matches!(notebook_outputs(nb), Err(OutputsError::NoOutputs(_))));
         let ran = r#"{"cells": [{"cell_type": "code", "source": ["x = 1"], "outputs": [{"output_type": "stream", "name": "stdout", "text": ["at =  5.2\n"]}]}]}"#;
         assert_eq!(notebook_outputs(ran).unwrap().get("at").unwrap().numbers, vec![5.2]);
+    }
+
+    #[test]
+    fn junk_printed_past_the_cap_refuses_the_work_whole() {
+        let mut text = String::from("vlv =  [9. 9. 9. 0.]\n");
+        for k in 0..MAX_VALUES {
+            text.push_str(&format!("junk{k} = 1\n"));
+        }
+        text.push_str("vlv =  [0.1 0.2 0.3 0.]\n");
+        assert!(matches!(read_printed_text(&text), Err(OutputsError::TooMany(_))));
+        let p = printed_text(&text);
+        assert!(p.values.is_empty() && p.errors.len() == 1, "{:?}", p.errors);
+        let short: String = (0..MAX_VALUES).map(|k| format!("v{k} = {k}\n")).collect();
+        assert_eq!(read_printed_text(&short).unwrap().values.len(), MAX_VALUES);
+    }
+
+    #[test]
+    fn a_name_printed_again_keeps_every_printing() {
+        let p = printed_text("vlv =  [9. 9. 9. 0.]\nvlv =  [0.1 0.2 0.3 0.]\n");
+        let vlv: Vec<&[f64]> = p.values.iter().filter(|v| v.name == "vlv").map(|v| v.numbers.as_slice()).collect();
+        assert_eq!(vlv, vec![&[9.0, 9.0, 9.0, 0.0][..], &[0.1, 0.2, 0.3, 0.0][..]]);
+        assert_eq!(p.get("vlv").unwrap().numbers, vec![0.1, 0.2, 0.3, 0.0]);
+    }
+
+    #[test]
+    fn a_value_joins_at_most_its_cap_of_lines_and_the_reading_goes_on() {
+        let mut text = String::from("vlv =  [");
+        text.push_str(&"\n".repeat(2 * MAX_VALUE_LINES));
+        text.push_str("0]\nok = 5\n");
+        let p = printed_text(&text);
+        assert!(p.get("vlv").is_none(), "{:?}", p.get("vlv"));
+        assert_eq!(p.get("ok").unwrap().numbers, vec![5.0]);
+        let errors: String = (0..1000).map(|_| "ValueError: x\n").collect();
+        assert_eq!(printed_text(&errors).errors.len(), MAX_ERRORS);
     }
 }
