@@ -419,9 +419,9 @@ fn a_link_in_a_class_folder_is_not_read_and_named_a_link() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let marks = std::fs::read_to_string(&csv).unwrap();
     assert!(!marks.contains("SECRET-42") && !marks.contains("root:"), "{marks}");
-    assert!(marks.contains("link.ipynb,unread,,not read: a link"), "{marks}");
-    assert!(marks.contains("passwd.ipynb,unread,,not read: a link"), "{marks}");
-    assert!(marks.contains("own.ipynb,unread,") && !marks.contains("own.ipynb,unread,,not read: a link"), "{marks}");
+    assert!(marks.contains("\nlink.ipynb,unread,,a link (a submission must be"), "{marks}");
+    assert!(marks.contains("\npasswd.ipynb,unread,,a link (a submission must be"), "{marks}");
+    assert!(marks.contains("\nown.ipynb,unread,") && !marks.contains("own.ipynb,unread,,a link"), "{marks}");
 }
 
 #[test]

@@ -116,17 +116,11 @@ pub fn numbers(v: &[f64]) -> String {
     if parts.len() == 1 { parts[0].clone() } else { format!("[{}]", parts.join("  ")) }
 }
 
-/// The typed inputs that differ, by the worksheet's names (the rule set in words).
-pub fn input_names(c: &Check) -> String {
-    let name = |n: &String| if n == "rules" { t!("check-input-rules") } else { n.clone() };
-    c.inputs_differ.iter().map(name).collect::<Vec<_>>().join(", ")
-}
-
 /// The check in words, one line a finding.
 pub fn words(c: &Check) -> String {
     let mut out = format!("{}\n", t!("check-rules", rules = c.rules.to_string()));
     if !c.inputs_differ.is_empty() {
-        out.push_str(&format!("{}\n", t!("check-inputs-differ", names = input_names(c))));
+        out.push_str(&format!("{}\n", t!("check-inputs-differ", names = super::check_class::input_names(c))));
     }
     let again = printed_again(c);
     if !again.is_empty() {
@@ -189,7 +183,7 @@ mod tests {
             causes: Vec::new(),
             errors: Vec::new(),
         };
-        let names = input_names(&c);
+        let names = super::check_class::input_names(&c);
         assert_eq!(names, format!("lightPos, {}", t!("check-input-rules")));
         assert!(!names.contains("rules") || t!("check-input-rules").contains("rules"));
         assert!(words(&c).contains(&names));

@@ -195,7 +195,7 @@ fn summary(m: &Marked) -> String {
 
 fn first_wrong(c: &Check) -> String {
     if !c.inputs_differ.is_empty() {
-        return super::check::input_names(c);
+        return input_names(c);
     }
     c.first_wrong.and_then(|k| c.steps.get(k)).map_or_else(String::new, |s| s.name.clone())
 }
@@ -307,4 +307,10 @@ pub fn chart_png(counts: &[(String, usize)], total: usize) -> (usize, usize, Vec
         });
     });
     (canvas.width, canvas.height, canvas.rgba8())
+}
+
+/// The typed inputs that differ, by the worksheet's names (the rule set in words).
+pub fn input_names(c: &Check) -> String {
+    let name = |n: &String| if n == "rules" { t!("check-input-rules") } else { n.clone() };
+    c.inputs_differ.iter().map(name).collect::<Vec<_>>().join(", ")
 }
