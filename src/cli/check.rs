@@ -183,7 +183,7 @@ mod tests {
             causes: Vec::new(),
             errors: Vec::new(),
         };
-        let names = super::check_class::input_names(&c);
+        let names = crate::cli::check_class::input_names(&c);
         assert_eq!(names, format!("lightPos, {}", t!("check-input-rules")));
         assert!(!names.contains("rules") || t!("check-input-rules").contains("rules"));
         assert!(words(&c).contains(&names));
