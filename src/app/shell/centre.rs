@@ -23,7 +23,16 @@ fn chrome(ui: &Ui, state: &mut AppState, pictures: usize, area: egui::Rect) -> c
     };
     let room = shaded::CaptionRoom { presenting: state.ui.layout.presenting, pair: pictures > 1 };
     let triangles = shaded::mesh_for(&mut state.shaded.main.mesh, &state.doc.view).triangle_count();
-    let room = shaded::caption_room(ui, &state.doc, &state.view_options, &state.shaded.main, triangles, width, room);
+    let room = shaded::caption_room(
+        ui,
+        &state.doc,
+        &state.view_options,
+        state.settings.pow,
+        &state.shaded.main,
+        triangles,
+        width,
+        room,
+    );
     let caption = room + ui.spacing().item_spacing.y;
     // The toolbar's rows in a part of the centre (the switches and View options, one row in
     // the normal window; presenting, none: the object and the shading are the top bar's): counted from the frame's own sizes, never from the last frame's, so the
