@@ -146,9 +146,9 @@ formula-v-local = vov = normalize(obs − vertexPos), obs = [0 0 0 1]   (local v
 formula-v-worksheet = vov = normalize(obs − vertexPos), obs = vertexPos · [1 1 0 1]   (the worksheet's infinite viewer: (0, 0, −sign z))
 formula-v-infinite = vov = [0 0 1 0]   (infinite viewer; OpenGL: V = (0, 0, 1))
 formula-r-demo = R = 2 max(vertexNormal · vlv, 0) vertexNormal − vlv   (the demo's)
-gate-lit-side = f = 1 if cosTheta > 0
-gate-positive = only where cos > 0
-gate-none = no gate
+gate-lit-side = f = 1 if cosTheta > 0, else 0
+gate-positive = f = 1 if { $cos } > 0, else 0
+gate-none = no gate: f = 1 always
 formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate }; f = { $f }; OpenGL: s_cl · s_cm · max(n · h, 0)^s_rm)
 formula-specular-normalised = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns · (ns + 8)/(8π)   ({ $gate }; f = { $f }; energy-conserving Blinn-Phong: the narrower the highlight, the brighter, the light it reflects the same; OpenGL has no such factor)
 formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: the terms are divided by k0 + k1 d + k2 d²)

@@ -146,9 +146,9 @@ formula-v-local = vov = normalize(obs − vertexPos), obs = [0 0 0 1]   (observa
 formula-v-worksheet = vov = normalize(obs − vertexPos), obs = vertexPos · [1 1 0 1]   (o observador no infinito da ficha: (0, 0, −sinal z))
 formula-v-infinite = vov = [0 0 1 0]   (observador no infinito; OpenGL: V = (0, 0, 1))
 formula-r-demo = R = 2 max(vertexNormal · vlv, 0) vertexNormal − vlv   (o da demo)
-gate-lit-side = f = 1 se cosTheta > 0
-gate-positive = só onde cos > 0
-gate-none = sem condição
+gate-lit-side = f = 1 se cosTheta > 0, senão 0
+gate-positive = f = 1 se { $cos } > 0, senão 0
+gate-none = sem condição: f = 1 sempre
 formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate }; f = { $f }; OpenGL: s_cl · s_cm · max(n · h, 0)^s_rm)
 formula-specular-normalised = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns · (ns + 8)/(8π)   ({ $gate }; f = { $f }; Blinn-Phong que conserva a energia: quanto mais estreito o brilho, mais intenso, e a luz que reflete mantém-se; o OpenGL não tem este fator)
 formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: as componentes são divididas por k0 + k1 d + k2 d²)
