@@ -403,6 +403,7 @@ heat-map-hover = Beside the view: how far each pixel is from per-pixel Phong in 
 view-options = View options
 view-options-hover = The renderer, the mesh's resolution, the pipeline's choices, a mesh file
 mesh-file = Mesh file (.obj):
+mesh-file-hint = path/to/mesh.obj
 show-mesh = Show mesh
 show-mesh-hover = Shade this OBJ file in the view (Enter in the field)
 shaded-cannot-render = The shaded view cannot render this scene

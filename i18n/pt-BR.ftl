@@ -403,6 +403,7 @@ heat-map-hover = Ao lado da vista: a distância de cada pixel ao Phong por pixel
 view-options = Opções da vista
 view-options-hover = O renderizador, a resolução da malha, as escolhas do pipeline, um arquivo de malha
 mesh-file = Arquivo da malha (.obj):
+mesh-file-hint = pasta/da/malha.obj
 show-mesh = Mostrar a malha
 show-mesh-hover = Sombrear este arquivo OBJ na vista (Enter no campo)
 shaded-cannot-render = A vista sombreada não consegue desenhar esta cena

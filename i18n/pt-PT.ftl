@@ -403,6 +403,7 @@ heat-map-hover = Ao lado da vista: a distância de cada píxel ao Phong por píx
 view-options = Opções da vista
 view-options-hover = O renderizador, a resolução da malha, as escolhas do pipeline, um ficheiro de malha
 mesh-file = Ficheiro da malha (.obj):
+mesh-file-hint = pasta/da/malha.obj
 show-mesh = Mostrar a malha
 show-mesh-hover = Sombrear este ficheiro OBJ na vista (Enter no campo)
 shaded-cannot-render = A vista sombreada não consegue desenhar esta cena

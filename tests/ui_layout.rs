@@ -479,3 +479,35 @@ fn small_screens_keep_everything_whole() {
     }
     assert!(wrong.is_empty(), "{} problems:\n{}", wrong.len(), wrong.join("\n"));
 }
+
+/// The reflection lobe with the normalised Blinn-Phong model (its four curves, the widest
+/// legend) at 1024x600, 1280x720 and 1920x1080, both themes: the legend and both plots stand
+/// inside the part of the column on screen, clear of the calculation panel's border. (At
+/// 1280x720 and 1024x600 the plots reached under that border: the φ plot had no right
+/// edge and its curves were cut, and the legend's "(n+8)/8π" touched the border.)
+#[test]
+fn the_lobe_and_its_legend_stand_inside_their_column() {
+    use phonglab::app::shell::layout::Beside;
+    use phonglab_core::rules::SpecularModel;
+    for (w, ht) in [(1024.0, 600.0), (1280.0, 720.0), (1920.0, 1080.0)] {
+        for theme in [Theme::Dark, Theme::Light] {
+            let mut h = harness_in(w, ht, "en", theme, Mode::Normal);
+            let mut doc = h.state().doc.clone();
+            doc.scene.rules.specular = SpecularModel::BlinnPhongNormalised;
+            assert!(h.state_mut().apply(doc));
+            h.state_mut().ui.layout.beside = Beside::Lobe;
+            h.run_steps(4);
+            let g = h.state().ui.geometry.lobe.expect("the lobe is drawn");
+            // The calculation panel's border: the rightmost divider.
+            let border = h.get_all_by_label("Resize panel").map(|n| n.rect().left()).fold(f32::NEG_INFINITY, f32::max);
+            let right = g.visible.right().min(border);
+            let at = format!("{w}x{ht} {theme:?} (visible {:?})", g.visible);
+            for (what, r) in [("legend", g.legend), ("polar plot", g.polar), ("plot against φ", g.against)] {
+                assert!(r.right() <= right - 2.0, "{at}: the {what} {r:?} reaches the border at {right}");
+                assert!(r.left() >= g.visible.left() - 0.5 && r.width() >= 100.0, "{at}: the {what} {r:?}");
+            }
+            let normalised = h.get_by_label_contains("× (n+8)/8π").rect();
+            assert!(normalised.right() <= right - 2.0, "{at}: {normalised:?} touches {right}");
+        }
+    }
+}

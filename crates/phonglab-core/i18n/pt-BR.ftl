@@ -154,7 +154,7 @@ formula-specular-normalised = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns ·
 formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: as componentes são divididas por k0 + k1 d + k2 d²)
 formula-at-directional = at = 1   (direcional)
 formula-spot = spot = max(-L . s, 0)^e se -L . s >= cos(cutoff) = { $cutoff }, senão 0;  -L . s = { $angle }
-formula-spot-none = spot = 1   (cutoff 180: não é um foco)
+formula-spot-none = spot = 1   (abertura de 180°: não é um foco)
 formula-share-separate = Ilight = spot · (Iamb + Idif) / at   (a especular vai para a cor secundária)
 formula-scene-ambient = a_cm a_cs   (ambiente do modelo de iluminação)
 formula-i-opengl = I = e_cm + a_cm a_cs + soma das partes das luzes
@@ -554,7 +554,7 @@ why-attenuation-directional = a luz é direcional
 why-attenuation-one = os fatores (1, 0, 0) dão 1
 why-spot-on = teste do cone e expoente por vértice
 why-spot-directional = a luz é direcional: o fator do foco é uma constante, calculada uma vez
-why-spot-none = cutoff 180: não é um foco
+why-spot-none = abertura de 180°: não é um foco
 why-per-vertex = por vértice
 why-h-constant = luz direcional e observador no infinito: H = normalize(L + V) é uma constante
 why-specular-zero = especular da luz x especular do material é zero

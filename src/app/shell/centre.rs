@@ -128,7 +128,7 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
                 let specular = state.doc.scene.rules.specular;
                 geometry.plot = Some(vector_plot::vector_plot_ui(ui, &mut state.orbit, eval, specular, show_angles));
             }
-            layout::Beside::Lobe => lobe::lobe_ui(ui, &state.doc.scene, eval),
+            layout::Beside::Lobe => geometry.lobe = lobe::lobe_ui(ui, &state.doc.scene, eval),
         }
     });
     // Side by side, two squares leave a band under them (both are bound by the centre's

@@ -136,7 +136,7 @@ pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCach
                         .add(
                             egui::TextEdit::singleline(&mut state.view_options.obj_path)
                                 .desired_width(180.0)
-                                .hint_text("path/to/mesh.obj"),
+                                .hint_text(t!("mesh-file-hint")),
                         )
                         .labelled_by(l.id);
                     let enter = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
