@@ -210,3 +210,21 @@ fn the_specular_note_says_the_condition_of_each_rule_set() {
         }
     }
 }
+
+/// A light that is not a spotlight is said so in Portuguese too: "abertura de 180°", not
+/// the English "cutoff 180".
+#[test]
+fn the_spot_step_of_no_spotlight_is_in_the_readers_language() {
+    use phonglab_core::locale::{Lang, Locale, with_locale};
+    let scene = presets::worksheet(5);
+    let lit = Engine::<f64>::light_scene_vertex(&scene).unwrap();
+    for (lang, said) in [(Lang::En, "cutoff 180"), (Lang::PtPt, "abertura de 180°"), (Lang::PtBr, "abertura de 180°")]
+    {
+        let ex = with_locale(Locale::of(lang), || explain(&scene, &lit, Side::Front));
+        let step = ex.steps.iter().find(|s| s.name.starts_with("spot")).expect("a spot step");
+        assert!(step.formula.contains(said), "{lang:?}: {:?}", step.formula);
+        if lang != Lang::En {
+            assert!(!step.formula.contains("cutoff"), "{lang:?}: {:?}", step.formula);
+        }
+    }
+}
