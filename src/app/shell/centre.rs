@@ -25,9 +25,8 @@ fn chrome(ui: &Ui, state: &mut AppState, pictures: usize, area: egui::Rect) -> c
     let triangles = shaded::mesh_for(&mut state.shaded.main.mesh, &state.doc.view).triangle_count();
     let room = shaded::caption_room(
         ui,
-        &state.doc,
+        (&state.doc, state.settings.pow),
         &state.view_options,
-        state.settings.pow,
         &state.shaded.main,
         triangles,
         width,

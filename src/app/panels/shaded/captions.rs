@@ -96,12 +96,12 @@ pub(super) fn corrected_caption(doc: &Document, fixes: &[bool; 3]) -> Caption {
 /// main picture's as shown, whole in every way it may say who drew it, with a long time
 /// (so that neither the time's digits nor who drew it move the picture from frame to
 /// frame), and the corrected picture's when there is one. `triangles`: the view's mesh's
-/// (a very large mesh's caption may say it is drawn from a copy).
+/// (a very large mesh's caption may say it is drawn from a copy); `pow`: the power
+/// function the view draws with (the rules it forms name a term shown).
 pub fn caption_room(
     ui: &Ui,
-    doc: &Document,
+    (doc, pow): (&Document, PowFn),
     options: &ShadedOptions,
-    pow: PowFn,
     cache: &ViewCache,
     triangles: usize,
     width: f32,

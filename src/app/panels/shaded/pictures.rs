@@ -54,9 +54,8 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
     for _ in 0..3 {
         caption_h = caption_room(
             ui,
-            state.edit.doc,
+            (state.edit.doc, state.pow),
             state.view_options,
-            state.pow,
             &cache.main,
             mesh.triangle_count(),
             side,
