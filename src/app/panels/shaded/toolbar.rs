@@ -103,7 +103,7 @@ fn view_options_ui(ui: &mut Ui, view: &mut View) {
 pub const PICTURE_KEEP: f32 = 160.0;
 
 /// The opened View options' height: at most 45 % of the part's height, and no more than
-/// leaves the picture [`PICTURE_KEEP`] with a three-line caption and its legend (when a term
+/// leaves the picture [`PICTURE_KEEP`] with a four-line caption and its legend (when a term
 /// is shown); at least two rows.
 fn options_height(ui: &Ui, state: &Shaded<'_>) -> f32 {
     let body = ui.text_style_height(&egui::TextStyle::Body);
@@ -111,9 +111,10 @@ fn options_height(ui: &Ui, state: &Shaded<'_>) -> f32 {
         let id = super::channel_view::name_id(c, state.edit.doc, state.pow);
         super::channel_view::legend_height(ui, c, id, PICTURE_KEEP)
     });
-    // The caption wraps to three lines at that width ("Sphere Gouraud: 1.0 ms per frame on
-    // the CPU", seen in the real window at 1024x600).
-    let keep = PICTURE_KEEP + 3.0 * body + legend + 24.0;
+    // The caption's room is its longest variant's, four lines at that width in Portuguese
+    // ("Esfera Gouraud: 0,8 ms por imagem no CPU", seen in the real window at 1024x600),
+    // and the options' frame and spacing take about 40 points more.
+    let keep = PICTURE_KEEP + 4.0 * body + legend + 40.0;
     let avail = ui.available_height();
     (avail - keep).min(0.45 * avail).max(2.0 * ui.spacing().interact_size.y)
 }
