@@ -403,6 +403,7 @@ heat-map-hover = Beside the view: how far each pixel is from per-pixel Phong in 
 view-options = View options
 view-options-hover = The renderer, the mesh's resolution, the pipeline's choices, a mesh file
 mesh-file = Mesh file (.obj):
+mesh-file-hint = path/to/mesh.obj
 show-mesh = Show mesh
 show-mesh-hover = Shade this OBJ file in the view (Enter in the field)
 shaded-cannot-render = The shaded view cannot render this scene
@@ -648,7 +649,8 @@ channel-legend-range = { $what }, from { $low } to { $high }
 channel-legend-attenuation = 1/at: the factor this light's terms are multiplied by (at = k0 + k1 d + k2 d², the worksheet's, divides)
 channel-legend-spot = spot: the factor this light's terms are multiplied by (0 outside the cone, 1 without a spotlight)
 channel-legend-n-dot-l = N·L = cos θ: a cosine, below 0 where the surface faces away from the light
-channel-legend-n-dot-h = N·H = cos β: the specular cosine before its power (R·V under the Phong rule)
+channel-legend-n-dot-h = N·H = cos β: the specular cosine before its power (Blinn-Phong's rule; R·V under Phong)
+channel-legend-r-dot-v = R·V: the specular cosine before its power (Phong's rule; N·H under Blinn-Phong)
 channel-legend-light-count = How many lights reach the pixel: a count
 case-rules-note = note: { $path } uses the { $rules } rules; a case always means OpenGL's
 cost-wrote = wrote { $files } in { $out }

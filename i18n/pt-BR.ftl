@@ -403,6 +403,7 @@ heat-map-hover = Ao lado da vista: a distância de cada pixel ao Phong por pixel
 view-options = Opções da vista
 view-options-hover = O renderizador, a resolução da malha, as escolhas do pipeline, um arquivo de malha
 mesh-file = Arquivo da malha (.obj):
+mesh-file-hint = pasta/da/malha.obj
 show-mesh = Mostrar a malha
 show-mesh-hover = Sombrear este arquivo OBJ na vista (Enter no campo)
 shaded-cannot-render = A vista sombreada não consegue desenhar esta cena
@@ -648,7 +649,8 @@ channel-legend-range = { $what }, de { $low } a { $high }
 channel-legend-attenuation = 1/at: o fator pelo qual os termos desta luz são multiplicados (at = k0 + k1 d + k2 d², o da lista, divide)
 channel-legend-spot = spot: o fator pelo qual os termos desta luz são multiplicados (0 fora do cone, 1 sem spot)
 channel-legend-n-dot-l = N·L = cos θ: um cosseno, abaixo de 0 onde a superfície está voltada para o lado oposto à luz
-channel-legend-n-dot-h = N·H = cos β: o cosseno especular antes da potência (R·V com a regra de Phong)
+channel-legend-n-dot-h = N·H = cos β: o cosseno especular antes da potência (regra de Blinn-Phong; R·V com Phong)
+channel-legend-r-dot-v = R·V: o cosseno especular antes da potência (regra de Phong; N·H com Blinn-Phong)
 channel-legend-light-count = Quantas luzes chegam ao pixel: uma contagem
 case-rules-note = nota: { $path } usa as regras { $rules }; um caso segue sempre as do OpenGL
 cost-wrote = gravado { $files } em { $out }

@@ -112,3 +112,34 @@ fn python_parses_every_exported_program() {
     assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), paths.len().to_string());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The program's comments are true of it and readable: RULES is said to be read by the
+/// normal matrix alone; under rules without SCENE_AMBIENT the scene ambient's call says
+/// editing it changes nothing; GL_LIGHTING's says the shaders light whatever it is; the
+/// docstring names no file it cannot know (it said "python3 phong_scene.py" whatever `-o`
+/// was); and no comment line is longer than 90 characters (the edit note was one of 330).
+#[test]
+fn the_programs_comments_are_true_and_wrapped() {
+    for (name, doc) in shipped() {
+        let text = program(&doc, &phonglab_core::export::shaded_key(&doc)).unwrap();
+        let comments: Vec<&str> = text.lines().filter(|l| l.trim_start().starts_with('#')).collect();
+        // The teapot's winding note is left as Mesa ran it: `tests/pyopengl_edits.rs`'s CRC
+        // of the verified code reaches into draw_object.
+        let long: Vec<&&str> =
+            comments.iter().filter(|l| l.chars().count() > 90 && !l.contains("freeglut's teapot")).collect();
+        assert!(long.is_empty(), "{name}: comment lines over 90 characters: {long:#?}");
+        let all = comments.iter().map(|l| l.trim_start().trim_start_matches('#').trim()).collect::<Vec<_>>().join(" ");
+        assert!(!all.contains("scene's ambient follow"), "{name}: RULES said to steer the scene's ambient");
+        assert!(all.contains("Only the normal matrix in set_uniforms() reads RULES"), "{name}");
+        assert!(!text.contains("phong_scene.py"), "{name}: the docstring names a file it may not be");
+        // The scene ambient's line: said to change nothing where the shaders leave it out.
+        let ambient_off = text.contains("#define SCENE_AMBIENT 0");
+        let lines: Vec<&str> = text.lines().collect();
+        let at = lines.iter().position(|l| l.contains("glLightModelfv(GL_LIGHT_MODEL_AMBIENT")).unwrap();
+        let above = lines[..at].iter().rev().take_while(|l| l.trim_start().starts_with('#')).count();
+        let note = lines[at - above..at].join(" ");
+        assert_eq!(note.contains("changes nothing"), ambient_off, "{name}: {note:?}");
+        let at = lines.iter().position(|l| l.trim() == "glEnable(GL_LIGHTING)").unwrap();
+        assert!(lines[at - 1].trim_start().starts_with('#') && text.contains("these shaders would not"), "{name}");
+    }
+}

@@ -479,3 +479,99 @@ fn small_screens_keep_everything_whole() {
     }
     assert!(wrong.is_empty(), "{} problems:\n{}", wrong.len(), wrong.join("\n"));
 }
+
+/// The reflection lobe with the normalised Blinn-Phong model (its four curves, the widest
+/// legend) at 1024x600, 1280x720 and 1920x1080, both themes: the legend and both plots stand
+/// inside the part of the column on screen, clear of the calculation panel's border. (At
+/// 1280x720 and 1024x600 the plots reached under that border: the φ plot had no right
+/// edge and its curves were cut, and the legend's "(n+8)/8π" touched the border.)
+#[test]
+fn the_lobe_and_its_legend_stand_inside_their_column() {
+    use phonglab::app::shell::layout::Beside;
+    use phonglab_core::rules::SpecularModel;
+    for (w, ht) in [(1024.0, 600.0), (1280.0, 720.0), (1920.0, 1080.0)] {
+        for theme in [Theme::Dark, Theme::Light] {
+            let mut h = harness_in(w, ht, "en", theme, Mode::Normal);
+            let mut doc = h.state().doc.clone();
+            doc.scene.rules.specular = SpecularModel::BlinnPhongNormalised;
+            assert!(h.state_mut().apply(doc));
+            h.state_mut().ui.layout.beside = Beside::Lobe;
+            h.run_steps(4);
+            let g = h.state().ui.geometry.lobe.expect("the lobe is drawn");
+            // The calculation panel's border: the rightmost divider.
+            let border = h.get_all_by_label("Resize panel").map(|n| n.rect().left()).fold(f32::NEG_INFINITY, f32::max);
+            let right = g.visible.right().min(border);
+            let at = format!("{w}x{ht} {theme:?} (visible {:?})", g.visible);
+            for (what, r) in [("legend", g.legend), ("polar plot", g.polar), ("plot against φ", g.against)] {
+                assert!(r.right() <= right - 2.0, "{at}: the {what} {r:?} reaches the border at {right}");
+                assert!(r.left() >= g.visible.left() - 0.5 && r.width() >= 100.0, "{at}: the {what} {r:?}");
+            }
+            let normalised = h.get_by_label_contains("× (n+8)/8π").rect();
+            assert!(normalised.right() <= right - 2.0, "{at}: {normalised:?} touches {right}");
+        }
+    }
+}
+
+/// At 1024x600 with View options open, the lobe beside and a term shown (N·H), in English
+/// and Portuguese, both themes: the picture keeps a usable side, its caption stays a line or
+/// two, the light's marker label stands on the picture, the legend is whole in the window,
+/// and the options scroll rather than push the picture away (their Mesh file field can be
+/// scrolled to). (The picture shrank to 64 points, its caption wrapped over three lines,
+/// "light 0 (behind the camera)" spilled out of it and was cut, and the legend and the
+/// Mesh file field were cut.)
+#[test]
+fn view_options_open_at_1024x600_cut_nothing() {
+    use phonglab::app::shell::layout::Beside;
+    use phonglab_core::channels::Channel;
+    let cases =
+        [("en", "Mesh file (.obj):", "path/to/mesh.obj"), ("pt-PT", "Ficheiro da malha (.obj):", "pasta/da/malha.obj")];
+    for (lang, field, hint) in cases {
+        for theme in [Theme::Dark, Theme::Light] {
+            let (w, ht) = (1024.0, 600.0);
+            let mut h = harness_in(w, ht, lang, theme, Mode::Normal);
+            h.state_mut().view_options.options_open = true;
+            h.state_mut().view_options.channel = Some(Channel::NDotH);
+            h.state_mut().ui.layout.beside = Beside::Lobe;
+            h.run_steps(5);
+            let at = format!("{lang} {theme:?}");
+            let picture = h.state().ui.geometry.pictures[0];
+            assert!(picture.width() >= 120.0, "{at}: the picture is {picture:?}");
+            let body = h.ctx.global_style().text_styles[&egui::TextStyle::Body].size;
+            // The caption: at most two lines, above the picture.
+            let caption = h
+                .get_all_by_role(Role::Label)
+                .filter(|n| {
+                    let r = n.rect();
+                    let under = r.bottom() <= picture.top() + 1.0 && r.bottom() >= picture.top() - 4.0;
+                    under && r.left() >= picture.left() - 1.0 && r.right() <= picture.right() + 1.0
+                })
+                .map(|n| n.rect())
+                .next()
+                .expect("a caption above the picture");
+            assert!(
+                caption.height() <= 2.0 * (body + 6.0),
+                "{at}: the caption {caption:?} over more than two lines (picture {picture:?})"
+            );
+            // The light's marker (its arrow and its name, "light 0 (behind the camera)") on
+            // the picture.
+            let marker = h.get_by_label("light 0 marker").rect();
+            assert!(picture.expand(1.0).contains_rect(marker), "{at}: {marker:?} out of the picture {picture:?}");
+            // The legend under the picture, whole in the window.
+            let legend = h
+                .get_all_by_role(Role::Label)
+                .find(|n| n.value().is_some_and(|v| v.starts_with("N·H =")))
+                .expect("the legend")
+                .rect();
+            assert!(legend.top() >= picture.bottom() && legend.bottom() <= ht, "{at}: the legend {legend:?}");
+            assert!(legend.right() <= picture.right() + 1.0, "{at}: the legend {legend:?}");
+            // The mesh file field: labelled, whole in the view's column (left of the lobe's),
+            // and reached by scrolling the options.
+            // Its placeholder in the window's language (it stayed English).
+            let f = h.get_by_label(field);
+            assert_eq!(f.accesskit_node().placeholder(), Some(hint), "{at}");
+            let f = f.rect();
+            let beside = h.state().ui.geometry.lobe.expect("the lobe").visible;
+            assert!(f.width() >= 100.0 && f.right() <= beside.left(), "{at}: {field} {f:?}, the lobe from {beside:?}");
+        }
+    }
+}

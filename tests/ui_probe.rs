@@ -144,7 +144,7 @@ fn every_channel_legend_says_what_it_shows_in_body_type() {
             h.state_mut().view_options.channel = Some(c);
             h.run_steps(4);
             let rect = picture(&h);
-            let what = meaning(c);
+            let what = meaning(c, c.message_id());
             let label = h.get_by_label(&what).rect();
             assert!(label.top() >= rect.bottom() && label.bottom() <= ht, "{c:?} at {w}: {label:?} under {rect:?}");
             assert!(label.left() >= rect.left() - 1.0 && label.right() <= rect.right() + 1.0, "{c:?}: {label:?}");
@@ -184,5 +184,41 @@ fn the_channel_menu_names_the_cosine_the_rules_use() {
         let item = h.get_by_label(said).rect();
         assert!(h.query_by_label(not_said).is_none(), "{model:?}: {not_said} is not this scene's term");
         assert!(item.top() >= combo_rect.bottom() - 1.0 && item.bottom() <= 720.0, "{item:?} under {combo_rect:?}");
+    }
+}
+
+/// The picture's caption and its legend name the specular cosine as the Show menu does:
+/// under Phong's rule "term R·V" and the legend of R·V, in English and in Portuguese.
+/// (They said "term N·H" and "N·H = cos β … (R·V under the Phong rule)" under both.)
+#[test]
+fn the_channel_caption_and_legend_name_the_cosine_the_rules_use() {
+    use phonglab_core::rules::SpecularModel;
+    for lang in ["en", "pt-PT", "pt-BR"] {
+        for (model, said, not_said) in [(SpecularModel::Phong, "R·V", "N·H"), (SpecularModel::BlinnPhong, "N·H", "R·V")]
+        {
+            let mut h = harness_at(1280.0, 720.0);
+            h.state_mut().ui.layout.language = Some(lang.into());
+            let mut doc = h.state().doc.clone();
+            doc.scene.rules.specular = model;
+            assert!(h.state_mut().apply(doc));
+            h.state_mut().view_options.channel = Some(Channel::NDotH);
+            h.run_steps(4);
+            let rect = picture(&h);
+            let term = if lang == "en" { "term" } else { "termo" };
+            let caption = format!(": {term} {said}");
+            // The picture is named by its caption (the caption over it, or the picture itself).
+            let above = h.query_all_by_label_contains(&caption).any(|n| n.rect().top() <= rect.top() + 1.0);
+            assert!(above, "{lang} {model:?}: nothing says {caption:?} at or above {rect:?}");
+            let wrong = format!(": {term} {not_said}");
+            assert!(h.query_by_label_contains(&wrong).is_none(), "{lang} {model:?}: the caption says {wrong:?}");
+            // The legend begins with the term it explains.
+            let legend = h
+                .query_all_by_label_contains(said)
+                .filter(|n| n.accesskit_node().label().is_some_and(|l| l.starts_with(said)))
+                .map(|n| n.rect())
+                .find(|r| r.top() >= rect.bottom())
+                .unwrap_or_else(|| panic!("{lang} {model:?}: no legend of {said} under {rect:?}"));
+            assert!(legend.top() >= rect.bottom() && legend.bottom() <= 720.0, "{lang} {model:?}: {legend:?}");
+        }
     }
 }

@@ -146,9 +146,9 @@ formula-v-local = vov = normalize(obs − vertexPos), obs = [0 0 0 1]   (local v
 formula-v-worksheet = vov = normalize(obs − vertexPos), obs = vertexPos · [1 1 0 1]   (the worksheet's infinite viewer: (0, 0, −sign z))
 formula-v-infinite = vov = [0 0 1 0]   (infinite viewer; OpenGL: V = (0, 0, 1))
 formula-r-demo = R = 2 max(vertexNormal · vlv, 0) vertexNormal − vlv   (the demo's)
-gate-lit-side = f = 1 if cosTheta > 0
-gate-positive = only where cos > 0
-gate-none = no gate
+gate-lit-side = f = 1 if cosTheta > 0, else 0
+gate-positive = f = 1 if { $cos } > 0, else 0
+gate-none = no gate: f = 1 always
 formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate }; f = { $f }; OpenGL: s_cl · s_cm · max(n · h, 0)^s_rm)
 formula-specular-normalised = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns · (ns + 8)/(8π)   ({ $gate }; f = { $f }; energy-conserving Blinn-Phong: the narrower the highlight, the brighter, the light it reflects the same; OpenGL has no such factor)
 formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: the terms are divided by k0 + k1 d + k2 d²)
@@ -334,8 +334,8 @@ obj-over-budget = { $triangles } triangles take { $bytes } to read, more than th
 export-flat-unsupported = the PyOpenGL program draws with the scene's generated shaders, which are Gouraud or Phong: choose one of them for the shaded view, not Flat
 export-template-broken = the program template { $template } is filled wrongly ({ $problem }): this is a fault of phonglab's; please report it
 py-title = { $scene }: the shaded view as phonglab draws it ({ $shading } shading), written by phonglab.
-py-usage = Run: python3 phong_scene.py (a window; needs PyOpenGL, GLUT and NumPy). With --png FILE it draws one 512x512 frame (--size N: NxN), saves it to FILE and exits. The lighting state is set the fixed-function way (glLightfv, glMaterialfv, glLightModel*), and the shaders below compute the whole of OpenGL 2.1's lighting from that state, read from GL each frame: change any of those calls and the picture changes as it would under fixed-function OpenGL.
-py-rules-comment = the equation the shaders compute: "worksheet", "opengl" or "phong-demo" (the normal matrix and the scene's ambient follow it)
+py-usage = Run this file with python3 (a window; needs PyOpenGL, GLUT and NumPy). With --png FILE it draws one 512x512 frame (--size N: NxN), saves it to FILE and exits. The lighting state is set the fixed-function way (glLightfv, glMaterialfv, glLightModel*), and the shaders below compute the whole of OpenGL 2.1's lighting from that state, read from GL each frame: change any of those calls and the picture changes as it would under fixed-function OpenGL, except where a comment beside the call says otherwise.
+py-rules-comment = The rule set the shaders were written for: "worksheet", "opengl" or "phong-demo". Only the normal matrix in set_uniforms() reads RULES; the rest of the rule set (the scene's ambient and emission among it) is the shaders' #define lines.
 py-shaders-comment = The shaders: the whole of OpenGL 2.1's lighting (per vertex for Gouraud, per fragment for Phong), reading GL's own state: gl_LightSource[], gl_FrontMaterial, gl_BackMaterial, gl_LightModel, and the u_ uniforms that set_uniforms() reads with glGet*. Only the #define lines are this scene's (its rule set's departures from OpenGL); `phonglab shader` prints the scene's specialised shaders instead.
 py-projection-orbit = phonglab's orbit camera: gluPerspective(40, 1, 0.1, 100)
 py-projection-clip = no projection at all: the picture is clip space itself (the Phong demo's)
@@ -348,7 +348,9 @@ py-light-object = placed under the whole modelview: the light turns with the obj
 py-light-world = placed under the view matrix: the light stays put in the world
 py-state-doc = The scene's lighting state, set the fixed-function way. Each light's GL_POSITION and GL_SPOT_DIRECTION are transformed by the modelview current when they are set, so GL keeps them in eye space.
 py-reader-doc = Gives the shaders what GLSL has no variable for, read from GL's state each frame: the lighting modelview and the normal matrix, the enabled lights, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_COLOR_CONTROL, GL_NORMALIZE or GL_RESCALE_NORMAL, and GL_COLOR_MATERIAL.
-py-editable-comment = You may edit every call below (a glLight*, glMaterial* or glLightModel* value, glEnable or glDisable of a light, GL_NORMALIZE, GL_COLOR_MATERIAL): the shaders read this state every frame and draw what fixed-function OpenGL draws from it. RULES and the shaders' #define lines are not GL state: they stay as written.
+py-editable-comment = You may edit every call below (a glLight*, glMaterial* or glLightModel* value, glEnable or glDisable of a light, GL_NORMALIZE, GL_COLOR_MATERIAL): the shaders read this state every frame and draw what fixed-function OpenGL draws from it, except where a comment below says otherwise. RULES and the shaders' #define lines are not GL state: they stay as written.
+py-lighting-comment = The shaders light the object whether or not GL_LIGHTING is enabled: with glDisable(GL_LIGHTING), fixed-function OpenGL would draw the current colour (glColor) unlit; these shaders would not.
+py-scene-ambient-off = SCENE_AMBIENT is 0 under these rules: the shaders add neither this scene ambient nor the material's GL_EMISSION, so editing either changes nothing here (fixed-function OpenGL would add both).
 py-object-doc = The object, as phonglab builds it.
 py-arrays-comment = phonglab's triangles (positions, normals, and three vertex indices per triangle)
 py-teapot-winding = freeglut's teapot is wound clockwise: with two-sided lighting its outside would be lit as the back side

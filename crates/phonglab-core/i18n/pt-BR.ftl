@@ -146,15 +146,15 @@ formula-v-local = vov = normalize(obs − vertexPos), obs = [0 0 0 1]   (observa
 formula-v-worksheet = vov = normalize(obs − vertexPos), obs = vertexPos · [1 1 0 1]   (o observador no infinito da ficha: (0, 0, −sinal z))
 formula-v-infinite = vov = [0 0 1 0]   (observador no infinito; OpenGL: V = (0, 0, 1))
 formula-r-demo = R = 2 max(vertexNormal · vlv, 0) vertexNormal − vlv   (o da demo)
-gate-lit-side = f = 1 se cosTheta > 0
-gate-positive = só onde cos > 0
-gate-none = sem condição
+gate-lit-side = f = 1 se cosTheta > 0, senão 0
+gate-positive = f = 1 se { $cos } > 0, senão 0
+gate-none = sem condição: f = 1 sempre
 formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate }; f = { $f }; OpenGL: s_cl · s_cm · max(n · h, 0)^s_rm)
 formula-specular-normalised = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns · (ns + 8)/(8π)   ({ $gate }; f = { $f }; Blinn-Phong que conserva a energia: quanto mais estreito o brilho, mais intenso, e a luz que ele reflete se mantém; o OpenGL não tem esse fator)
 formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: as componentes são divididas por k0 + k1 d + k2 d²)
 formula-at-directional = at = 1   (direcional)
 formula-spot = spot = max(-L . s, 0)^e se -L . s >= cos(cutoff) = { $cutoff }, senão 0;  -L . s = { $angle }
-formula-spot-none = spot = 1   (cutoff 180: não é um foco)
+formula-spot-none = spot = 1   (abertura de 180°: não é um foco)
 formula-share-separate = Ilight = spot · (Iamb + Idif) / at   (a especular vai para a cor secundária)
 formula-scene-ambient = a_cm a_cs   (ambiente do modelo de iluminação)
 formula-i-opengl = I = e_cm + a_cm a_cs + soma das partes das luzes
@@ -334,8 +334,8 @@ obj-over-budget = ler { $triangles } triângulos ocupa { $bytes }, mais do que o
 export-flat-unsupported = o programa PyOpenGL desenha com os shaders gerados para a cena, que são Gouraud ou Phong: escolha um deles para a vista sombreada, não Flat
 export-template-broken = o modelo de programa { $template } está mal preenchido ({ $problem }): é uma falha do phonglab; por favor, informe-a
 py-title = { $scene }: a vista sombreada como o phonglab a desenha (sombreamento { $shading }), escrita pelo phonglab.
-py-usage = Executar: python3 phong_scene.py (uma janela; precisa de PyOpenGL, GLUT e NumPy). Com --png ARQUIVO desenha um quadro de 512x512 (--size N: NxN), salva-o em ARQUIVO e termina. O estado da iluminação é definido à maneira do pipeline fixo (glLightfv, glMaterialfv, glLightModel*), e os shaders abaixo calculam toda a iluminação do OpenGL 2.1 a partir desse estado, lido do GL a cada quadro: mude qualquer uma dessas chamadas e a imagem muda como mudaria no OpenGL de pipeline fixo.
-py-rules-comment = a equação que os shaders calculam: "worksheet", "opengl" ou "phong-demo" (a matriz das normais e a ambiente da cena seguem-na)
+py-usage = Execute este arquivo com python3 (uma janela; precisa de PyOpenGL, GLUT e NumPy). Com --png ARQUIVO desenha um quadro de 512x512 (--size N: NxN), salva-o em ARQUIVO e termina. O estado da iluminação é definido à maneira do pipeline fixo (glLightfv, glMaterialfv, glLightModel*), e os shaders abaixo calculam toda a iluminação do OpenGL 2.1 a partir desse estado, lido do GL a cada quadro: mude qualquer uma dessas chamadas e a imagem muda como mudaria no OpenGL de pipeline fixo, exceto onde um comentário junto da chamada disser o contrário.
+py-rules-comment = O conjunto de regras para o qual os shaders foram escritos: "worksheet", "opengl" ou "phong-demo". Só a matriz das normais em set_uniforms() lê o RULES; o resto do conjunto de regras (inclusive a ambiente da cena e a emissão) são as linhas #define dos shaders.
 py-shaders-comment = Os shaders: toda a iluminação do OpenGL 2.1 (por vértice no Gouraud, por fragmento no Phong), lendo o próprio estado do GL: gl_LightSource[], gl_FrontMaterial, gl_BackMaterial, gl_LightModel e os uniforms u_ que set_uniforms() lê com glGet*. Só as linhas #define são desta cena (os desvios do seu conjunto de regras em relação ao OpenGL); o `phonglab shader` imprime em vez disso os shaders especializados da cena.
 py-projection-orbit = a câmera em órbita do phonglab: gluPerspective(40, 1, 0.1, 100)
 py-projection-clip = nenhuma projeção: a imagem é o próprio espaço de recorte (o da demo de Phong)
@@ -348,7 +348,9 @@ py-light-object = colocada sob a modelview inteira: a luz gira com o objeto
 py-light-world = colocada sob a matriz de vista: a luz fica parada no mundo
 py-state-doc = O estado da iluminação da cena, definido à maneira do pipeline fixo. O GL_POSITION e o GL_SPOT_DIRECTION de cada luz são transformados pela modelview ativa quando são definidos, por isso o GL guarda-os no espaço do olho.
 py-reader-doc = Passa aos shaders o que o GLSL não tem em nenhuma variável, lido do estado do GL a cada quadro: a modelview da iluminação e a matriz das normais, as luzes ligadas, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_COLOR_CONTROL, GL_NORMALIZE ou GL_RESCALE_NORMAL, e GL_COLOR_MATERIAL.
-py-editable-comment = Você pode mudar qualquer chamada abaixo (um valor de glLight*, glMaterial* ou glLightModel*, o glEnable ou glDisable de uma luz, GL_NORMALIZE, GL_COLOR_MATERIAL): os shaders leem este estado a cada quadro e desenham o que o OpenGL de pipeline fixo desenharia a partir dele. O RULES e as linhas #define dos shaders não são estado do GL: ficam como estão escritos.
+py-editable-comment = Você pode mudar qualquer chamada abaixo (um valor de glLight*, glMaterial* ou glLightModel*, o glEnable ou glDisable de uma luz, GL_NORMALIZE, GL_COLOR_MATERIAL): os shaders leem este estado a cada quadro e desenham o que o OpenGL de pipeline fixo desenharia a partir dele, exceto onde um comentário abaixo disser o contrário. O RULES e as linhas #define dos shaders não são estado do GL: ficam como estão escritos.
+py-lighting-comment = Os shaders iluminam o objeto com ou sem GL_LIGHTING ativo: com glDisable(GL_LIGHTING), o OpenGL de pipeline fixo desenharia a cor atual (glColor) sem iluminação; estes shaders não.
+py-scene-ambient-off = SCENE_AMBIENT é 0 com estas regras: os shaders não somam nem esta ambiente da cena nem a GL_EMISSION do material, então mudar qualquer uma delas aqui não muda nada (o OpenGL de pipeline fixo somaria as duas).
 py-object-doc = O objeto, tal como o phonglab o constrói.
 py-arrays-comment = os triângulos do phonglab (posições, normais e três índices de vértices por triângulo)
 py-teapot-winding = o bule do freeglut tem os triângulos no sentido horário: com iluminação dos dois lados, o exterior seria iluminado como face de trás
@@ -555,7 +557,7 @@ why-attenuation-directional = a luz é direcional
 why-attenuation-one = os fatores (1, 0, 0) dão 1
 why-spot-on = teste do cone e expoente por vértice
 why-spot-directional = a luz é direcional: o fator do foco é uma constante, calculada uma vez
-why-spot-none = cutoff 180: não é um foco
+why-spot-none = abertura de 180°: não é um foco
 why-per-vertex = por vértice
 why-h-constant = luz direcional e observador no infinito: H = normalize(L + V) é uma constante
 why-specular-zero = especular da luz x especular do material é zero

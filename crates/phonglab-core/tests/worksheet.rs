@@ -183,3 +183,48 @@ fn opengl_rules_add_the_scene_ambient_as_mesa_does() {
     // Mesa llvmpipe with the default light-model ambient 0.2 (docs/lighting.md).
     assert_close("I", &lit.front.primary.map(|x| x as f64), &[0.102087, 0.061259, 0.025955, 1.0], 1e-6);
 }
+
+/// The specular step's note says which cosine gates it and what f is otherwise, in each
+/// rule set and language: the worksheet's specular cosine (`cosBeta`, `cosAlpha` under
+/// Phong's rule), OpenGL's `cosTheta` (n · L). (It said "only where cos > 0" under the
+/// worksheet's rules, and "f = 1 if cosTheta > 0" with no "otherwise" under OpenGL's.)
+#[test]
+fn the_specular_note_says_the_condition_of_each_rule_set() {
+    use phonglab_core::locale::{Lang, Locale, with_locale};
+    use phonglab_core::rules::SpecularModel;
+    let cases = [
+        (Rules::WORKSHEET, "cosBeta > 0"),
+        (Rules { specular: SpecularModel::Phong, ..Rules::WORKSHEET }, "cosAlpha > 0"),
+        (Rules::OPENGL, "cosTheta > 0"),
+    ];
+    let otherwise = [(Lang::En, "if", "else 0"), (Lang::PtPt, "se", "senão 0"), (Lang::PtBr, "se", "senão 0")];
+    for (rules, cond) in cases {
+        let mut scene = presets::worksheet(5);
+        scene.rules = rules;
+        let lit = Engine::<f64>::light_scene_vertex(&scene).unwrap();
+        for (lang, when, other) in otherwise {
+            let ex = with_locale(Locale::of(lang), || explain(&scene, &lit, Side::Front));
+            let step = ex.steps.iter().find(|s| s.name.starts_with("Ispec")).expect("a specular step");
+            let said = format!("f = 1 {when} {cond}, {other}");
+            assert!(step.formula.contains(&said), "{rules} {lang:?}: {:?} lacks {said:?}", step.formula);
+        }
+    }
+}
+
+/// A light that is not a spotlight is said so in Portuguese too: "abertura de 180°", not
+/// the English "cutoff 180".
+#[test]
+fn the_spot_step_of_no_spotlight_is_in_the_readers_language() {
+    use phonglab_core::locale::{Lang, Locale, with_locale};
+    let scene = presets::worksheet(5);
+    let lit = Engine::<f64>::light_scene_vertex(&scene).unwrap();
+    for (lang, said) in [(Lang::En, "cutoff 180"), (Lang::PtPt, "abertura de 180°"), (Lang::PtBr, "abertura de 180°")]
+    {
+        let ex = with_locale(Locale::of(lang), || explain(&scene, &lit, Side::Front));
+        let step = ex.steps.iter().find(|s| s.name.starts_with("spot")).expect("a spot step");
+        assert!(step.formula.contains(said), "{lang:?}: {:?}", step.formula);
+        if lang != Lang::En {
+            assert!(!step.formula.contains("cutoff"), "{lang:?}: {:?}", step.formula);
+        }
+    }
+}

@@ -262,11 +262,12 @@ fn channels_ui(
         for (col, (which, view)) in cols.iter_mut().zip([("A", &mut compare.a_channel), ("B", &mut compare.b_channel)])
         {
             col.vertical(|ui| {
-                let label = ui.small(format!("{which}: {}", locale::tr(channel.message_id())));
+                let name_id = view.name_id(channel);
+                let label = ui.small(format!("{which}: {}", locale::tr(name_id)));
                 if let Some(tex) = view.texture(ui.ctx(), range) {
                     ui.add(egui::Image::new((tex.id(), egui::vec2(side, side)))).labelled_by(label.id);
                 }
-                channel_view::legend_ui(ui, channel, range, side);
+                channel_view::legend_ui(ui, channel, name_id, range, side);
             });
         }
     });

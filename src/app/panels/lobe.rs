@@ -148,8 +148,9 @@ fn fmt(x: f64) -> String {
 }
 
 /// The least side of each of the two plots (points): below it they scroll, rather than
-/// shrink to nothing (after Ctrl + or in a small window).
-pub const MIN_PLOT: f32 = 180.0;
+/// shrink to nothing (after Ctrl + or in a small window). Under the column's width at
+/// 1024x600 (about 175 points), so that there the plots fit it whole.
+pub const MIN_PLOT: f32 = 140.0;
 
 /// The legend, above the plots rather than over the curves (the scene's own model's curve
 /// heavy, as in the plots; L dashed, as its ray is).
@@ -177,21 +178,56 @@ fn polar_reach(curves: &[Curve]) -> f64 {
     1.1 * curves.iter().flat_map(|c| c.2.iter().map(|(_, r)| *r)).fold(1e-3, f64::max)
 }
 
-/// The polar plot and the plot against φ, with the legend above them.
-pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
-    let Some((lobe, phi_v)) = Lobe::of(scene, eval) else {
-        ui.label(crate::t!("lobe-no-light"));
-        return;
-    };
-    let bg = ui.visuals().panel_fill;
-    let ink = |c: Color32| palette::ink_on(c, bg);
-    // The curve of the scene's own model drawn thicker; the normalised one drawn only
-    // where it is the scene's (its factor, up to 4 at n = 100, would rescale the others).
+/// Where the lobe was drawn (for the tests): the visible part of its column, its legend
+/// and its two plots (each the plot's frame, without its axes).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LobeGeometry {
+    /// The part of the column that is on screen.
+    pub visible: egui::Rect,
+    /// The legend above the plots.
+    pub legend: egui::Rect,
+    /// The polar plot.
+    pub polar: egui::Rect,
+    /// The plot against φ.
+    pub against: egui::Rect,
+}
+
+/// The room kept free at the column's right edge (points): a plot's frame and the legend's
+/// last letter stand clear of the panel's border.
+const RIGHT_MARGIN: f32 = 6.0;
+
+/// The diffuse curve's colour: a neutral grey, the same towards every viewer (in L's
+/// vermillion it was hard to tell from Phong's orange in the light theme, both darkened).
+const DIFFUSE: Color32 = Color32::from_gray(160);
+
+/// The normalised Blinn-Phong curve's colour (Okabe-Ito sky blue): told apart from plain
+/// Blinn-Phong's (H's reddish purple) by colour, not only by width.
+const NORMALISED: Color32 = Color32::from_rgb(0x56, 0xB4, 0xE9);
+
+/// The curves of `lobe`, each in its colour as drawn on `bg` (at a text's contrast, so the
+/// legend's swatches read in the light theme too): the diffuse, Blinn-Phong, Phong, and
+/// the normalised Blinn-Phong where it is the scene's (its factor, up to 4 at n = 100,
+/// would rescale the others). The scene's own model's curve is marked to be drawn heavy.
+fn curves_of(lobe: &Lobe, scene: &Scene, bg: Color32) -> Vec<Curve> {
+    let ink = |c: Color32| palette::ink_with_contrast(c, bg, palette::TEXT_CONTRAST);
     let normalised = scene.rules.specular.normalised();
     let (blinn_chosen, phong_chosen) = match scene.rules.specular.vector() {
         SpecularVector::Halfway => (!normalised, false),
         SpecularVector::Reflection => (false, true),
     };
+    let mut curves: Vec<Curve> = vec![
+        (crate::t!("lobe-diffuse"), ink(DIFFUSE), sweep(|_| lobe.diffuse()), false),
+        ("Blinn-Phong ks (N·H)^n".into(), ink(palette::H), sweep(|p| lobe.blinn(p)), blinn_chosen),
+        ("Phong ks (R·V)^n".into(), ink(palette::SPOT), sweep(|p| lobe.phong(p)), phong_chosen),
+    ];
+    if normalised {
+        curves.push((crate::t!("lobe-normalised"), ink(NORMALISED), sweep(|p| lobe.blinn_normalised(p)), true));
+    }
+    curves
+}
+
+/// The caption above the lobe: the light, θ, n, kd, ks and the vertex's own φ.
+fn caption_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated, lobe: &Lobe, phi_v: f64) {
     let light = &scene.lights[eval.lights[0].index];
     let m = &scene.material;
     let kd = coefficient("kd", (m.diffuse * light.diffuse).truncate(), lobe.kd);
@@ -206,21 +242,24 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
         ks = ks,
         phi = deg(phi_v)
     ));
-    let mut curves: Vec<Curve> = vec![
-        (crate::t!("lobe-diffuse"), ink(palette::L), sweep(|_| lobe.diffuse()), false),
-        ("Blinn-Phong ks (N·H)^n".into(), ink(palette::H), sweep(|p| lobe.blinn(p)), blinn_chosen),
-        ("Phong ks (R·V)^n".into(), ink(palette::SPOT), sweep(|p| lobe.phong(p)), phong_chosen),
-    ];
-    if normalised {
-        let name = crate::t!("lobe-normalised");
-        curves.push((name, ink(palette::H), sweep(|p| lobe.blinn_normalised(p)), true));
-    }
-    legend_ui(ui, &curves);
-    let avail = ui.available_size();
-    let wide = avail.x >= 1.6 * avail.y;
-    let (w, h) = if wide { (avail.x / 2.0 - 6.0, avail.y - 4.0) } else { (avail.x, avail.y / 2.0 - 6.0) };
-    let (w, h) = (w.max(MIN_PLOT), h.max(MIN_PLOT));
-    let polar = |ui: &mut Ui| {
+}
+
+/// The polar plot and the plot against φ, with the legend above them; all within the part
+/// of the column on screen (the column reached under the next panel's border, and the
+/// plots were cut at their right edge). Returns where they were drawn.
+pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) -> Option<LobeGeometry> {
+    let Some((lobe, phi_v)) = Lobe::of(scene, eval) else {
+        ui.label(crate::t!("lobe-no-light"));
+        return None;
+    };
+    let visible = ui.max_rect().intersect(ui.clip_rect());
+    ui.set_max_width((visible.right() - RIGHT_MARGIN - ui.max_rect().left()).max(1.0));
+    let bg = ui.visuals().panel_fill;
+    let ink = |c: Color32| palette::ink_with_contrast(c, bg, palette::TEXT_CONTRAST);
+    caption_ui(ui, scene, eval, &lobe, phi_v);
+    let curves = curves_of(&lobe, scene, bg);
+    let legend = ui.scope(|ui| legend_ui(ui, &curves)).response.rect;
+    let polar = |ui: &mut Ui, (w, h): (f32, f32)| {
         Plot::new("lobe polar")
             .width(w)
             .height(h)
@@ -242,9 +281,11 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
                     Line::new("L", ray(-lobe.theta)).color(ink(palette::L)).style(egui_plot::LineStyle::dashed_loose()),
                 );
                 p.line(Line::new("V", ray(phi_v)).color(ink(palette::V)));
-            });
+            })
+            .response
+            .rect
     };
-    let cartesian = |ui: &mut Ui| {
+    let cartesian = |ui: &mut Ui, (w, h): (f32, f32)| {
         Plot::new("lobe against angle")
             .width(w)
             .height(h)
@@ -259,19 +300,29 @@ pub fn lobe_ui(ui: &mut Ui, scene: &Scene, eval: &Evaluated) {
                     p.line(Line::new(name.clone(), PlotPoints::from(xy)).color(*c).width(if *on { 3.0 } else { 1.5 }));
                 }
                 p.vline(VLine::new(crate::t!("lobe-vertex-v"), phi_v.to_degrees()).color(ink(palette::V)).width(2.0));
-            });
+            })
+            .response
+            .rect
     };
-    egui::ScrollArea::both().auto_shrink(false).show(ui, |ui| {
-        if wide {
-            ui.horizontal_top(|ui| {
-                polar(ui);
-                cartesian(ui);
-            });
-        } else {
-            polar(ui);
-            cartesian(ui);
-        }
-    });
+    let (polar, against) = egui::ScrollArea::both()
+        .auto_shrink(false)
+        .show(ui, |ui| {
+            // Sized to the room inside the scroll area: a plot exactly as wide as the
+            // column outside it was wider than the room within.
+            let avail = ui.available_size();
+            let wide = avail.x >= 1.6 * avail.y;
+            let gap = ui.spacing().item_spacing;
+            let (w, h) =
+                if wide { ((avail.x - gap.x) / 2.0, avail.y - 4.0) } else { (avail.x, (avail.y - gap.y) / 2.0 - 2.0) };
+            let size = (w.max(MIN_PLOT), h.max(MIN_PLOT));
+            if wide {
+                ui.horizontal_top(|ui| (polar(ui, size), cartesian(ui, size))).inner
+            } else {
+                (polar(ui, size), cartesian(ui, size))
+            }
+        })
+        .inner;
+    Some(LobeGeometry { visible, legend, polar, against })
 }
 
 #[cfg(test)]
@@ -307,6 +358,35 @@ mod tests {
         // Light below the surface: no specular at all.
         let below = Lobe { theta: 100f64.to_radians(), ..lobe };
         assert_eq!((below.phong(0.3), below.blinn(0.3), below.diffuse()), (0.0, 0.0, 0.0));
+    }
+}
+
+#[cfg(test)]
+mod colour_tests {
+    use super::*;
+
+    /// Each curve has a colour of its own, the two Blinn-Phong curves included (they were
+    /// one colour, told apart only by width), each at a text's contrast on both themes'
+    /// panels (the legend's swatches were faint in the light theme).
+    #[test]
+    fn the_curves_have_distinct_colours_readable_in_both_themes() {
+        let lobe = Lobe { theta: 0.5, kd: 0.5, ks: 0.3, n: 25.0 };
+        let mut scene = phonglab_core::presets::worksheet(5);
+        scene.rules.specular = phonglab_core::rules::SpecularModel::BlinnPhongNormalised;
+        for bg in [egui::Visuals::dark().panel_fill, egui::Visuals::light().panel_fill] {
+            let curves = curves_of(&lobe, &scene, bg);
+            assert_eq!(curves.len(), 4);
+            for (i, a) in curves.iter().enumerate() {
+                assert!(palette::contrast(a.1, bg) >= palette::TEXT_CONTRAST, "{} on {bg:?}: {:?}", a.0, a.1);
+                for b in &curves[i + 1..] {
+                    // The channels' differences summed: vermillion and orange, both darkened
+                    // on the light panel, were 54 apart and hard to tell apart.
+                    let apart =
+                        a.1.to_array().iter().zip(b.1.to_array()).map(|(x, y)| x.abs_diff(y) as u32).sum::<u32>();
+                    assert!(apart >= 70, "{} and {} on {bg:?}: {:?} {:?}", a.0, b.0, a.1, b.1);
+                }
+            }
+        }
     }
 }
 

@@ -23,7 +23,15 @@ fn chrome(ui: &Ui, state: &mut AppState, pictures: usize, area: egui::Rect) -> c
     };
     let room = shaded::CaptionRoom { presenting: state.ui.layout.presenting, pair: pictures > 1 };
     let triangles = shaded::mesh_for(&mut state.shaded.main.mesh, &state.doc.view).triangle_count();
-    let room = shaded::caption_room(ui, &state.doc, &state.view_options, &state.shaded.main, triangles, width, room);
+    let room = shaded::caption_room(
+        ui,
+        (&state.doc, state.settings.pow),
+        &state.view_options,
+        &state.shaded.main,
+        triangles,
+        width,
+        room,
+    );
     let caption = room + ui.spacing().item_spacing.y;
     // The toolbar's rows in a part of the centre (the switches and View options, one row in
     // the normal window; presenting, none: the object and the shading are the top bar's): counted from the frame's own sizes, never from the last frame's, so the
@@ -119,7 +127,7 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
                 let specular = state.doc.scene.rules.specular;
                 geometry.plot = Some(vector_plot::vector_plot_ui(ui, &mut state.orbit, eval, specular, show_angles));
             }
-            layout::Beside::Lobe => lobe::lobe_ui(ui, &state.doc.scene, eval),
+            layout::Beside::Lobe => geometry.lobe = lobe::lobe_ui(ui, &state.doc.scene, eval),
         }
     });
     // Side by side, two squares leave a band under them (both are bound by the centre's

@@ -28,6 +28,8 @@ pub struct Geometry {
     pub cones: Vec<egui::Rect>,
     /// The band under the squares where the things to try were offered, if they were.
     pub suggestions: Option<egui::Rect>,
+    /// The reflection lobe, when it is shown: its legend's and its two plots' rects.
+    pub lobe: Option<crate::app::panels::lobe::LobeGeometry>,
 }
 
 /// The shell's own choices: the window's arrangement, what the centre drew, the keys'

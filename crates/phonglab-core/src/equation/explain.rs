@@ -519,7 +519,7 @@ fn term_steps<S: Real>(
     };
     let gate = match rules.specular_gate() {
         crate::model::rules::SpecularGate::LitSide => t!("gate-lit-side"),
-        crate::model::rules::SpecularGate::PositiveCosine => t!("gate-positive"),
+        crate::model::rules::SpecularGate::PositiveCosine => t!("gate-positive", cos = cos),
         crate::model::rules::SpecularGate::None => t!("gate-none"),
     };
     let f = crate::locale::num(st.f.to_f64(), 8);

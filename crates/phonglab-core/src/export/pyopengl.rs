@@ -58,9 +58,9 @@ pub fn program(doc: &Document, key: &Key) -> Result<String, String> {
             ("title", text(t!("py-title", scene = doc.name.clone(), shading = shading_name))),
             ("usage", text(t!("py-usage"))),
             ("rules", text(rules.into())),
-            ("rules_comment", text(t!("py-rules-comment"))),
+            ("rules_comment", code(wrapped_comment(&t!("py-rules-comment"), ""))),
             ("background", code(background)),
-            ("shaders_comment", text(t!("py-shaders-comment"))),
+            ("shaders_comment", code(wrapped_comment(&t!("py-shaders-comment"), ""))),
             ("vertex_shader", text(vertex)),
             ("fragment_shader", text(fragment)),
             ("matrices", code(matrices(&setup))),
@@ -96,9 +96,14 @@ fn matrices(setup: &crate::raster::shaded::ShadedSetup) -> String {
     let mut s = String::new();
     let projection = match view.framing {
         Framing::Orbit => {
-            format!("# {}\nPROJECTION = None  # gluPerspective(40, 1, 0.1, 100)\n", comment(&t!("py-projection-orbit")))
+            format!(
+                "{}PROJECTION = None  # gluPerspective(40, 1, 0.1, 100)\n",
+                wrapped_comment(&t!("py-projection-orbit"), "")
+            )
         }
-        Framing::ClipSpace => format!("# {}\nPROJECTION = np.identity(4)\n", comment(&t!("py-projection-clip"))),
+        Framing::ClipSpace => {
+            format!("{}PROJECTION = np.identity(4)\n", wrapped_comment(&t!("py-projection-clip"), ""))
+        }
     };
     s.push_str(&projection);
     // The drawing modelview: the camera and the object's spin (and gluCylinder moved to be
@@ -108,12 +113,12 @@ fn matrices(setup: &crate::raster::shaded::ShadedSetup) -> String {
         Framing::Orbit => view.camera.eye_from_world() * view.spin(),
         Framing::ClipSpace => view.spin(),
     } * shift;
-    s.push_str(&format!("# {}\nMODELVIEW = {}\n", comment(&t!("py-modelview-comment")), np_matrix(&drawing)));
+    s.push_str(&format!("{}MODELVIEW = {}\n", wrapped_comment(&t!("py-modelview-comment"), ""), np_matrix(&drawing)));
     let lighting = setup.scene.eye_from_object() * shift;
     if view.lighting_space == LightingSpace::Object || !lighting.abs_diff_eq(drawing, 1e-12) {
         s.push_str(&format!(
-            "# {}\nLIGHTING_MODELVIEW = {}\n",
-            comment(&t!("py-lighting-modelview-comment")),
+            "{}LIGHTING_MODELVIEW = {}\n",
+            wrapped_comment(&t!("py-lighting-modelview-comment"), ""),
             np_matrix(&lighting)
         ));
     } else {
@@ -138,18 +143,43 @@ fn rgba(c: glam::DVec4) -> String {
     format!("[{}, {}, {}, {}]", num(c.x), num(c.y), num(c.z), num(c.w))
 }
 
+/// The longest line a wrapped comment takes, its indent and `# ` included.
+const COMMENT_WIDTH: usize = 90;
+
+/// `text` as Python comment lines of at most [`COMMENT_WIDTH`] characters (a word longer
+/// than that on a line of its own), each `indent` then `# `, escaped, ending in a newline.
+fn wrapped_comment(text: &str, indent: &str) -> String {
+    let room = COMMENT_WIDTH.saturating_sub(indent.chars().count() + 2).max(1);
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for word in comment(text).split_whitespace() {
+        if !line.is_empty() && line.chars().count() + 1 + word.chars().count() > room {
+            lines.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    if !line.is_empty() {
+        lines.push(line);
+    }
+    lines.iter().map(|l| format!("{indent}# {l}\n")).collect()
+}
+
 /// The fixed-function calls that set the scene's lighting state.
 fn lighting_state(scene: &Scene, key: &Key) -> String {
     let mut s = format!(
-        "def set_lighting_state():\n    \"\"\"{}\"\"\"\n    # {}\n    glMatrixMode(GL_MODELVIEW)\n",
+        "def set_lighting_state():\n    \"\"\"{}\"\"\"\n{}    glMatrixMode(GL_MODELVIEW)\n",
         triple_quoted(&t!("py-state-doc"), false),
-        comment(&t!("py-editable-comment"))
+        wrapped_comment(&t!("py-editable-comment"), "    ")
     );
     for (i, l) in scene.lights.iter().enumerate() {
         let light = format!("GL_LIGHT{i}");
         let (matrix, placement) = light_modelview(scene, l);
         s.push_str(&format!(
-            "    # GL_LIGHT{i}: {placement}\n    light_modelview = {matrix}\n    glLoadMatrixf(light_modelview.T)\n"
+            "{}    light_modelview = {matrix}\n    glLoadMatrixf(light_modelview.T)\n",
+            wrapped_comment(&format!("GL_LIGHT{i}: {placement}"), "    ")
         ));
         s.push_str(&format!("    glLightfv({light}, {}, {})\n", gl(Q::LightPos), rgba(l.position)));
         s.push_str(&format!(
@@ -189,16 +219,21 @@ fn lighting_state(scene: &Scene, key: &Key) -> String {
         s.push_str(&format!("    glMaterialf({face}, {}, {})\n", gl(Q::Shininess), num(m.shininess)));
     }
     for said in unsaid(&Program::worked(key)) {
-        s.push_str(&format!("    # {}\n", comment(&said)));
+        s.push_str(&wrapped_comment(&said, "    "));
     }
     if let Some(cm) = &scene.color_material {
         // After the glMaterial calls: enabling it sets the tracked colours to the current one.
-        s.push_str(&format!("    # {}\n", comment(&t!("py-color-material-comment"))));
+        s.push_str(&wrapped_comment(&t!("py-color-material-comment"), "    "));
         s.push_str(&format!("    glColorMaterial({}, {})\n", cm.face.gl(), cm.mode.gl()));
         s.push_str("    glEnable(GL_COLOR_MATERIAL)\n");
         s.push_str(&format!("    glColor4f({})\n", cm.color.to_array().map(num).join(", ")));
     }
     let lm = &scene.light_model;
+    // The shaders' SCENE_AMBIENT (general_shader): without it they add neither the scene's
+    // ambient nor the material's emission, whatever GL's state says.
+    if !(scene.rules.scene_ambient() && scene.rules.emission()) {
+        s.push_str(&wrapped_comment(&t!("py-scene-ambient-off"), "    "));
+    }
     s.push_str(&format!("    glLightModelfv({}, {})\n", gl(Q::SceneAmbient), rgba(lm.ambient)));
     s.push_str(&format!(
         "    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, {})\n",
@@ -218,6 +253,7 @@ fn lighting_state(scene: &Scene, key: &Key) -> String {
         crate::model::scene::NormalMode::AsIs => "",
     };
     s.push_str(normals);
+    s.push_str(&wrapped_comment(&t!("py-lighting-comment"), "    "));
     s.push_str("    glEnable(GL_LIGHTING)\n\n\n");
     s
 }
@@ -315,8 +351,8 @@ fn object(view: &View) -> Result<String, String> {
             s.push_str("    glBegin(GL_TRIANGLES)\n    for i in TRIANGLES:\n        glNormal3fv(NORMALS[i])\n        glVertex3fv(POSITIONS[i])\n    glEnd()\n\n\n");
             let v3 = |v: &glam::Vec3| format!("({}, {}, {})", num(v.x as f64), num(v.y as f64), num(v.z as f64));
             s.push_str(&format!(
-                "# {}\nPOSITIONS = [{}]\n",
-                comment(&t!("py-arrays-comment")),
+                "{}POSITIONS = [{}]\n",
+                wrapped_comment(&t!("py-arrays-comment"), ""),
                 mesh.positions.iter().map(v3).collect::<Vec<_>>().join(", ")
             ));
             s.push_str(&format!("NORMALS = [{}]\n", mesh.normals.iter().map(v3).collect::<Vec<_>>().join(", ")));

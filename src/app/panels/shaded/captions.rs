@@ -6,8 +6,8 @@
 //! pictures side by side, short, the whole in the picture's hover and name.
 
 use egui::{Sense, Ui};
-use phonglab_core::Document;
 use phonglab_core::library::DemoDeparture;
+use phonglab_core::{Document, PowFn};
 
 use super::cache::{COARSE_ABOVE, DrawnBy, ViewCache};
 use super::context::ShadedOptions;
@@ -50,17 +50,24 @@ pub(super) fn caption_ui(ui: &mut Ui, text: &str, width: f32, height: f32) -> eg
 /// The main picture's caption: the object, the shading, who drew it in how long (or the
 /// channel shown), and "(the demo's own)" beside a corrected picture; shown short (who
 /// drew it left to the whole) where [`CaptionRoom::short`].
-pub(super) fn main_caption(doc: &Document, options: &ShadedOptions, cache: &ViewCache, room: CaptionRoom) -> Caption {
+pub(super) fn main_caption(
+    doc: &Document,
+    options: &ShadedOptions,
+    pow: PowFn,
+    cache: &ViewCache,
+    room: CaptionRoom,
+) -> Caption {
     let corrected = super::context::corrected_document(doc, &options.demo_fixes).is_some();
-    let whole = with_head_and_tail(doc, Some(middle(options, drawn_caption(cache))), corrected);
+    let whole = with_head_and_tail(doc, Some(middle(doc, options, pow, drawn_caption(cache))), corrected);
     let shown = if room.short() { with_head_and_tail(doc, None, corrected) } else { whole.clone() };
     Caption { shown, whole }
 }
 
-/// What the caption says after the object and the shading: the channel shown, or `drawn`.
-fn middle(options: &ShadedOptions, drawn: String) -> String {
+/// What the caption says after the object and the shading: the channel shown (named as
+/// the scene's rules form it: Phong's `R·V`, not `N·H`), or `drawn`.
+fn middle(doc: &Document, options: &ShadedOptions, pow: PowFn, drawn: String) -> String {
     match options.channel {
-        Some(c) => t!("channel-caption", channel = crate::locale::tr(c.message_id())),
+        Some(c) => t!("channel-caption", channel = crate::locale::tr(super::channel_view::name_id(c, doc, pow))),
         None => drawn,
     }
 }
@@ -89,10 +96,11 @@ pub(super) fn corrected_caption(doc: &Document, fixes: &[bool; 3]) -> Caption {
 /// main picture's as shown, whole in every way it may say who drew it, with a long time
 /// (so that neither the time's digits nor who drew it move the picture from frame to
 /// frame), and the corrected picture's when there is one. `triangles`: the view's mesh's
-/// (a very large mesh's caption may say it is drawn from a copy).
+/// (a very large mesh's caption may say it is drawn from a copy); `pow`: the power
+/// function the view draws with (the rules it forms name a term shown).
 pub fn caption_room(
     ui: &Ui,
-    doc: &Document,
+    (doc, pow): (&Document, PowFn),
     options: &ShadedOptions,
     cache: &ViewCache,
     triangles: usize,
@@ -105,7 +113,7 @@ pub fn caption_room(
     } else {
         drawn_variants(cache, triangles)
             .into_iter()
-            .map(|d| with_head_and_tail(doc, Some(middle(options, d)), corrected))
+            .map(|d| with_head_and_tail(doc, Some(middle(doc, options, pow, d)), corrected))
             .collect()
     };
     if corrected {

@@ -45,6 +45,12 @@ impl ChannelView {
         Ok(self.image.as_ref().map_or((0.0, 1.0), ChannelImage::range))
     }
 
+    /// The prepared channel's name's message id, as its scene's rules form it (`N·H`, or
+    /// Phong's `R·V`); `channel`'s own before one is prepared.
+    pub fn name_id(&self, channel: Channel) -> &'static str {
+        self.image.as_ref().filter(|i| i.channel == channel).map_or(channel.message_id(), |i| i.message_id)
+    }
+
     /// The prepared channel in false colour over `range` (two pictures compared share
     /// one), coloured again only when the channel or the range changed.
     pub fn texture(&mut self, ctx: &egui::Context, range: (f64, f64)) -> Option<&TextureHandle> {
@@ -70,6 +76,12 @@ impl ChannelView {
 /// `pow`): what names its terms, as the command line's channels do.
 pub fn program_of(doc: &Document, pow: PowFn) -> Program {
     Key::of(&doc.shaded_scene(), doc.view.eval_options(pow)).program()
+}
+
+/// `channel`'s name's message id in `doc`'s shaded view (with power function `pow`): the
+/// specular cosine as the scene's rules form it (`N·H`, or Phong's `R·V`).
+pub fn name_id(channel: Channel, doc: &Document, pow: PowFn) -> &'static str {
+    channel.message_id_for(&program_of(doc, pow))
 }
 
 /// A channel's name for the scenes whose programs are `programs`: the specular cosine as
@@ -108,14 +120,17 @@ pub fn channel_ui(ui: &mut Ui, channel: &mut Option<Channel>, programs: &[&Progr
 }
 
 /// What a channel shows, in words: the luminance of a colour term, a factor, a cosine, the
-/// normal's axes, a count. The legend says it under the bar.
-pub fn meaning(channel: Channel) -> String {
+/// normal's axes, a count. The legend says it under the bar. `name_id`: the channel's
+/// name's message id as the scene's rules form it ([`name_id`]): Phong's `R·V` is
+/// explained as itself, not as `N·H`.
+pub fn meaning(channel: Channel, name_id: &str) -> String {
     match channel {
         Channel::Normal => t!("channel-legend-normal"),
         c if c.components() == 3 => t!("channel-legend-luminance", channel = locale::tr(c.message_id())),
         Channel::Attenuation => t!("channel-legend-attenuation"),
         Channel::Spot => t!("channel-legend-spot"),
         Channel::NDotL => t!("channel-legend-n-dot-l"),
+        Channel::NDotH if name_id == "channel-r-dot-v" => t!("channel-legend-r-dot-v"),
         Channel::NDotH => t!("channel-legend-n-dot-h"),
         _ => t!("channel-legend-light-count"),
     }
@@ -130,21 +145,21 @@ fn bar_height(ui: &Ui) -> f32 {
 }
 
 /// What the legend says under the bar, laid out `width` points wide in body type.
-fn meaning_height(ui: &Ui, channel: Channel, width: f32) -> f32 {
+fn meaning_height(ui: &Ui, channel: Channel, name_id: &str, width: f32) -> f32 {
     let font = egui::TextStyle::Body.resolve(ui.style());
-    ui.fonts_mut(|f| f.layout(meaning(channel), font, Color32::WHITE, width).size().y)
+    ui.fonts_mut(|f| f.layout(meaning(channel, name_id), font, Color32::WHITE, width).size().y)
 }
 
 /// The legend's height under a picture `width` points wide: the bar, its numbers and what
-/// it shows (wrapped), all in body type.
-pub fn legend_height(ui: &Ui, channel: Channel, width: f32) -> f32 {
-    bar_height(ui) + meaning_height(ui, channel, width) + ui.spacing().item_spacing.y
+/// it shows (wrapped), all in body type. `name_id`: as for [`meaning`].
+pub fn legend_height(ui: &Ui, channel: Channel, name_id: &str, width: f32) -> f32 {
+    bar_height(ui) + meaning_height(ui, channel, name_id, width) + ui.spacing().item_spacing.y
 }
 
 /// The legend under a channel's picture, `width` points wide: the colour bar (viridis; the
 /// normal's axes as red, green and blue) with its range's ends and middle, and under them
-/// what the channel shows, in body type.
-pub fn legend_ui(ui: &mut Ui, channel: Channel, range: (f64, f64), width: f32) -> egui::Response {
+/// what the channel shows, in body type (`name_id`: as for [`meaning`]).
+pub fn legend_ui(ui: &mut Ui, channel: Channel, name_id: &str, range: (f64, f64), width: f32) -> egui::Response {
     let (rect, resp) = ui.allocate_exact_size(egui::vec2(width, bar_height(ui)), egui::Sense::hover());
     let bar = egui::Rect::from_min_size(rect.min, egui::vec2(width, BAR));
     let painter = ui.painter_at(rect);
@@ -171,7 +186,7 @@ pub fn legend_ui(ui: &mut Ui, channel: Channel, range: (f64, f64), width: f32) -
         let x = bar.left() + width * t as f32;
         painter.text(egui::pos2(x, y), align, locale::num(v, 3), font.clone(), text);
     }
-    let what = meaning(channel);
+    let what = meaning(channel, name_id);
     let described =
         t!("channel-legend-range", what = what.clone(), low = locale::num(lo, 3), high = locale::num(hi, 3));
     resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &described));

@@ -96,17 +96,24 @@ fn light_off_view_ui(ui: &Ui, rect: egui::Rect, towards: egui::Vec2, i: usize, b
     } else {
         egui::Align2::CENTER_CENTER
     };
-    let name = name_on_picture(ui, at, align, name);
+    let name = name_on_picture(ui, at, align, name, rect);
     name.union(egui::Rect::from_center_size(tip, egui::vec2(20.0, 20.0)))
 }
 
 /// A light's name on the picture: light text on a dark backdrop, so that it reads on the
 /// picture's background whatever the window's theme (dark text on the dark picture did
-/// not, in the light theme). Returns where it is.
-fn name_on_picture(ui: &Ui, at: egui::Pos2, align: egui::Align2, name: String) -> egui::Rect {
+/// not, in the light theme), moved onto the `picture` where it would reach past an edge
+/// (a small picture cut "light 0 (behind the camera)" at its sides). Returns where it is.
+fn name_on_picture(ui: &Ui, at: egui::Pos2, align: egui::Align2, name: String, picture: egui::Rect) -> egui::Rect {
     let font = egui::FontId::proportional(ui.text_style_height(&egui::TextStyle::Small));
     let galley = ui.painter().layout_no_wrap(name, font, Color32::WHITE);
     let rect = align.anchor_size(at, galley.size());
+    let inside = picture.shrink(3.0);
+    let dx = (inside.right() - rect.right()).min(0.0);
+    let dx = dx + (inside.left() - (rect.left() + dx)).max(0.0);
+    let dy = (inside.bottom() - rect.bottom()).min(0.0);
+    let dy = dy + (inside.top() - (rect.top() + dy)).max(0.0);
+    let rect = rect.translate(egui::vec2(dx, dy));
     ui.painter().rect_filled(rect.expand(2.0), 3.0, Color32::from_black_alpha(170));
     ui.painter().galley(rect.min, galley, Color32::WHITE);
     rect.expand(2.0)
@@ -182,7 +189,8 @@ pub(super) fn lights_ui(
                 let ring = if strong { 3.0 } else { 1.5 };
                 ui.painter().circle(pos, 7.0, MARKER, egui::Stroke::new(ring, Color32::BLACK));
                 let at = pos + egui::vec2(9.0, -9.0);
-                let name = name_on_picture(ui, at, egui::Align2::LEFT_BOTTOM, t!("light-name", index = i.to_string()));
+                let name = t!("light-name", index = i.to_string());
+                let name = name_on_picture(ui, at, egui::Align2::LEFT_BOTTOM, name, o.rect);
                 out.marks.push(hit.union(name));
                 hits.push((i, hit));
                 // The marker follows the pointer (it is small, so grabbing it off-centre

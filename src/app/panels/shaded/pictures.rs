@@ -8,7 +8,7 @@ use phonglab_core::mesh::Mesh;
 
 use super::cache::{DrawnBy, ShadedCache, ViewCache, Viewed, mesh_for};
 use super::captions::{Caption, CaptionRoom, caption_room, caption_ui, corrected_caption, main_caption};
-use super::channel_view::{legend_height, legend_ui};
+use super::channel_view::{legend_height, legend_ui, name_id};
 use super::context::{Shaded, corrected_document};
 use super::gpu::{self, GpuImage};
 use super::heat_map::heat_map_ui;
@@ -44,15 +44,23 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
     let width = if beside { (avail.x - 8.0) / 2.0 } else { avail.x };
     let channel = state.view_options.channel;
     // The legend wraps to the picture's width: sized at the side found so far.
-    let legend = |ui: &Ui, w: f32| channel.map_or(0.0, |c| legend_height(ui, c, w));
+    let channel_id = channel.map(|c| name_id(c, state.edit.doc, state.pow));
+    let legend = |ui: &Ui, w: f32| channel.zip(channel_id).map_or(0.0, |(c, id)| legend_height(ui, c, id, w));
     // The captions' room: as tall as the tallest caption this view may show at the
     // picture's width, so the picture does not move when who drew it changes.
     let room = CaptionRoom { presenting: state.presenting, pair: beside };
     let mut side = width;
     let mut caption_h = 0.0;
     for _ in 0..3 {
-        caption_h =
-            caption_room(ui, state.edit.doc, state.view_options, &cache.main, mesh.triangle_count(), side, room);
+        caption_h = caption_room(
+            ui,
+            (state.edit.doc, state.pow),
+            state.view_options,
+            &cache.main,
+            mesh.triangle_count(),
+            side,
+            room,
+        );
         side = width.min(avail.y - caption_h - 8.0 - legend(ui, side)).max(64.0);
     }
     let ppp = ui.ctx().pixels_per_point();
@@ -78,7 +86,7 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
         state.edit.doc.shaded_scene()
     };
     let size = egui::vec2(side, side);
-    let caption = main_caption(state.edit.doc, state.view_options, &cache.main, room);
+    let caption = main_caption(state.edit.doc, state.view_options, state.pow, &cache.main, room);
     let channel_texture = channel.and_then(|c| {
         let view = &mut cache.channel;
         match view.prepare(state.edit.doc, &mesh, state.pow, c) {
@@ -110,7 +118,7 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
                     .on_hover_text(hover);
                     let picture = named(ui, picture, &label, &caption);
                     if let Some((c, _)) = channel_texture {
-                        legend_ui(ui, c, cache.channel.range, side);
+                        legend_ui(ui, c, cache.channel.name_id(c), cache.channel.range, side);
                     }
                     crate::app::widgets::fields::landmark(ui.ctx(), "shaded-picture", picture.rect);
                     picture

@@ -97,6 +97,28 @@ fn view_options_ui(ui: &mut Ui, view: &mut View) {
     pipeline_ui(ui, view);
 }
 
+/// The least side the picture keeps under the opened View options (points): they scroll
+/// in what is left. (At 1024x600 with a term's legend under the picture, 45 % of the part
+/// for the options left the picture 64 points, its caption over three lines.)
+pub const PICTURE_KEEP: f32 = 160.0;
+
+/// The opened View options' height: at most 45 % of the part's height, and no more than
+/// leaves the picture [`PICTURE_KEEP`] with a four-line caption and its legend (when a term
+/// is shown); at least two rows.
+fn options_height(ui: &Ui, state: &Shaded<'_>) -> f32 {
+    let body = ui.text_style_height(&egui::TextStyle::Body);
+    let legend = state.view_options.channel.map_or(0.0, |c| {
+        let id = super::channel_view::name_id(c, state.edit.doc, state.pow);
+        super::channel_view::legend_height(ui, c, id, PICTURE_KEEP)
+    });
+    // The caption's room is its longest variant's, four lines at that width in Portuguese
+    // ("Esfera Gouraud: 0,8 ms por imagem no CPU", seen in the real window at 1024x600),
+    // and the options' frame and spacing take about 40 points more.
+    let keep = PICTURE_KEEP + 4.0 * body + legend + 40.0;
+    let avail = ui.available_height();
+    (avail - keep).min(0.45 * avail).max(2.0 * ui.spacing().interact_size.y)
+}
+
 /// The view's toolbar: not presenting, the switches and the view options; applies what
 /// changed, and turns the object when it spins.
 /// Returns the mesh file asked for, if one was.
@@ -122,7 +144,7 @@ pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCach
     if !presenting && state.view_options.options_open {
         // Opened, the options scroll within a part of the view's space, so the picture
         // stays on screen (smaller) rather than being pushed below the window.
-        let most = ui.available_height() * 0.45;
+        let most = options_height(ui, state);
         egui::Frame::group(ui.style()).show(ui, |ui| {
             egui::ScrollArea::vertical().max_height(most).show(ui, |ui| {
                 // The term shown in place of the picture (Compare has its own).
@@ -136,7 +158,7 @@ pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCach
                         .add(
                             egui::TextEdit::singleline(&mut state.view_options.obj_path)
                                 .desired_width(180.0)
-                                .hint_text("path/to/mesh.obj"),
+                                .hint_text(t!("mesh-file-hint")),
                         )
                         .labelled_by(l.id);
                     let enter = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));

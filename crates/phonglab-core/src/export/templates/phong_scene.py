@@ -14,12 +14,11 @@ from OpenGL.GLU import *
 import OpenGL.GL.shaders
 import numpy as np  # matrix manipulation
 
-RULES = {{rules:str}}  # {{rules_comment:comment}}
+{{rules_comment}}RULES = {{rules:str}}
 SIZE = 512
 BACKGROUND = ({{background}})
 
-# {{shaders_comment:comment}}
-vertex_shader = """
+{{shaders_comment}}vertex_shader = """
 {{vertex_shader:block}}"""
 
 fragment_shader = """
