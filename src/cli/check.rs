@@ -98,18 +98,6 @@ pub fn run(a: &CheckArgs) -> Result<()> {
     Ok(())
 }
 
-/// The steps printed more than once with different numbers (each printing is checked).
-pub fn printed_again(c: &Check) -> Vec<String> {
-    let mut names: Vec<String> = Vec::new();
-    for (k, s) in c.steps.iter().enumerate() {
-        let again = c.steps[..k].iter().any(|old| old.name == s.name && old.student != s.student);
-        if again && !names.contains(&s.name) {
-            names.push(s.name.clone());
-        }
-    }
-    names
-}
-
 /// Numbers for people, in the locale's mark.
 pub fn numbers(v: &[f64]) -> String {
     let parts: Vec<String> = v.iter().map(|x| crate::locale::num(*x, 8)).collect();
@@ -122,7 +110,7 @@ pub fn words(c: &Check) -> String {
     if !c.inputs_differ.is_empty() {
         out.push_str(&format!("{}\n", t!("check-inputs-differ", names = super::check_class::input_names(c))));
     }
-    let again = printed_again(c);
+    let again = super::check_class::printed_again(c);
     if !again.is_empty() {
         out.push_str(&format!("{}\n", t!("check-printed-twice", names = again.join(", "))));
     }

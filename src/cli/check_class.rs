@@ -51,7 +51,7 @@ pub fn json(c: &Check) -> serde_json::Value {
             "step": k.step,
             "value": k.value,
         })).collect::<Vec<_>>(),
-        "printed_twice": super::check::printed_again(c),
+        "printed_twice": printed_again(c),
         "steps": c.steps.iter().map(|s| serde_json::json!({
             "step": s.name,
             "student": s.student,
@@ -313,4 +313,16 @@ pub fn chart_png(counts: &[(String, usize)], total: usize) -> (usize, usize, Vec
 pub fn input_names(c: &Check) -> String {
     let name = |n: &String| if n == "rules" { t!("check-input-rules") } else { n.clone() };
     c.inputs_differ.iter().map(name).collect::<Vec<_>>().join(", ")
+}
+
+/// The steps printed more than once with different numbers (each printing is checked).
+pub fn printed_again(c: &Check) -> Vec<String> {
+    let mut names: Vec<String> = Vec::new();
+    for (k, s) in c.steps.iter().enumerate() {
+        let again = c.steps[..k].iter().any(|old| old.name == s.name && old.student != s.student);
+        if again && !names.contains(&s.name) {
+            names.push(s.name.clone());
+        }
+    }
+    names
 }
