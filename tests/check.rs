@@ -116,6 +116,28 @@ fn identity(mut d: Document) -> Document {
     d
 }
 
+/// The worksheet's vertex and light under OpenGL's rules, with a scene ambient and an
+/// emission bright enough to take red past 1: every term of OpenGL's sum is printed.
+fn opengl() -> Document {
+    let mut d = worksheet();
+    d.scene.rules = phonglab_core::Rules::OPENGL;
+    d.scene.light_model.ambient = DVec4::new(0.2, 0.2, 0.2, 1.0);
+    d.scene.material.emission = DVec4::new(1.0, 0.3, 0.1, 1.0);
+    d
+}
+
+/// A light above a surface turned away from the viewer: N.L > 0 while N.H < 0 (OpenGL's
+/// rules, shininess 2 so the unclamped cosine's power is positive and printed).
+fn turned_away() -> Document {
+    let mut d = identity(worksheet());
+    d.scene.rules = phonglab_core::Rules::OPENGL;
+    d.scene.vertex.position = DVec4::new(0.0, 0.0, 0.0, 1.0);
+    d.scene.vertex.normal = DVec3::new(0.0, 0.2, -0.98);
+    d.scene.lights[0].position = DVec4::new(0.0, 1.0, 0.0, 0.0);
+    d.scene.material.shininess = 2.0;
+    d
+}
+
 /// A mistake's id, the assignment, and the edits (text found, its replacement).
 type Case = (&'static str, Document, Vec<(&'static str, &'static str)>);
 
@@ -195,6 +217,128 @@ fn cases() -> Vec<Case> {
         ("w-divide-forgotten", w2, vec![("vertexPos = vertexPos/vertexPos[3]\n", "")]),
         ("shininess-fraction", worksheet(), vec![("ns = 0.2*128;", "ns = 0.2;")]),
     ]
+    .into_iter()
+    .chain(more_cases())
+    .collect()
+}
+
+/// The catalogue's second round: the mistakes students' notebooks were seen to make.
+fn more_cases() -> Vec<Case> {
+    const ILIGHT: &str = "Ilight = spot*(Iamb + Idif + Ispec)/at";
+    const I: &str = "I = Iemi + Iscene + Ilight\n";
+    vec![
+        (
+            "normal-matrix-with-translation",
+            opengl(),
+            vec![
+                ("normalMatrix = np.linalg.inv(mview[:3, :3]).T", "normalMatrix = np.linalg.inv(mview).T"),
+                (
+                    "vertexNormal = np.append(np.matmul(normalMatrix, vertexNormal[:3]), 0)",
+                    "vertexNormal = np.matmul(normalMatrix, vertexNormal)",
+                ),
+            ],
+        ),
+        ("normal-not-transformed", worksheet(), vec![("vertexNormal = np.matmul(mview, vertexNormal)\n", "")]),
+        ("vertex-not-transformed", worksheet(), vec![("vertexPos = np.matmul(mview, vertexPos)\n", "")]),
+        ("point-as-directional", worksheet(), vec![("if (lightPos[-1] == 0):", "if True:")]),
+        ("viewer-reversed", worksheet(), vec![("vov = (obs - vertexPos)", "vov = (vertexPos - obs)")]),
+        ("light-ambient-left-out", opengl(), vec![(ILIGHT, "Ilight = spot*(Idif + Ispec)/at")]),
+        (
+            "ambient-times-cosine",
+            worksheet(),
+            vec![("Iamb = Lamb*matAmb", "Iamb = Lamb*matAmb*np.dot(vertexNormal, vlv)")],
+        ),
+        ("colours-mixed-up", worksheet(), vec![("Idif = (Ldif*matDif)*cosTheta", "Idif = (Ldif*matSpec)*cosTheta")]),
+        (
+            "cos-theta-with-light-position",
+            worksheet(),
+            vec![("cosTheta = np.dot(vertexNormal, vlv);", "cosTheta = np.dot(vertexNormal, lightPos);")],
+        ),
+        (
+            "theta-in-degrees",
+            worksheet(),
+            vec![(
+                "theta = m.acos(min(max(cosTheta, -1), 1));",
+                "theta = m.degrees(m.acos(min(max(cosTheta, -1), 1)));",
+            )],
+        ),
+        (
+            "reflection-for-halfway",
+            worksheet(),
+            vec![("cosBeta = np.dot(vertexNormal, H)", "cosBeta = np.dot(2*cosTheta*vertexNormal - vlv, vov)")],
+        ),
+        (
+            "reflection-reversed",
+            scene("phong-demo.toml"),
+            vec![(
+                "R = 2*max(np.dot(vertexNormal, vlv), 0)*vertexNormal - vlv",
+                "R = vlv - 2*max(np.dot(vertexNormal, vlv), 0)*vertexNormal",
+            )],
+        ),
+        (
+            "specular-cosine-not-clamped",
+            turned_away(),
+            vec![("Ispec = (Lspec*matSpec)*(max(cosBeta, 0)**ns)", "Ispec = (Lspec*matSpec)*(cosBeta**ns)")],
+        ),
+        ("specular-left-out", opengl(), vec![(ILIGHT, "Ilight = spot*(Iamb + Idif)/at")]),
+        ("attenuation-left-out", opengl(), vec![(ILIGHT, "Ilight = spot*(Iamb + Idif + Ispec)")]),
+        ("ambient-not-attenuated", opengl(), vec![(ILIGHT, "Ilight = spot*(Iamb + (Idif + Ispec)/at)")]),
+        (
+            "attenuation-constant-left-out",
+            worksheet(),
+            vec![("at = atC + atLin*d + atQuad*d*d", "at = atLin*d + atQuad*d*d")],
+        ),
+        (
+            "attenuation-quadratic-not-squared",
+            worksheet(),
+            vec![("at = atC + atLin*d + atQuad*d*d", "at = atC + atLin*d + atQuad*d")],
+        ),
+        (
+            "distance-from-normalised-vlv",
+            worksheet(),
+            vec![("d = np.linalg.norm(lightPos - vertexPos);", "d = np.linalg.norm(vlv);")],
+        ),
+        (
+            "distance-squared",
+            worksheet(),
+            vec![("d = np.linalg.norm(lightPos - vertexPos);", "d = np.sum((lightPos - vertexPos)**2);")],
+        ),
+        ("spot-exponent-ignored", spot(25.0), vec![("spot = max(cosSpot, 0)**spotCoef", "spot = max(cosSpot, 0)")]),
+        (
+            "cone-test-inverted",
+            spot(25.0),
+            vec![("if cosSpot >= m.cos(m.radians(spotCutoff)):", "if cosSpot < m.cos(m.radians(spotCutoff)):")],
+        ),
+        (
+            "spot-angle-reversed",
+            spot(25.0),
+            vec![("cosSpot = np.dot(-vlv[:3], spotDir)", "cosSpot = np.dot(vlv[:3], spotDir)")],
+        ),
+        (
+            "spot-direction-untransformed",
+            spot(25.0),
+            vec![("spotDir = np.matmul(mview[:3, :3], lightSpotDir[:3])", "spotDir = lightSpotDir[:3]")],
+        ),
+        ("spot-left-out", spot(25.0), vec![(ILIGHT, "Ilight = (Iamb + Idif + Ispec)/at")]),
+        (
+            "spot-on-whole-colour",
+            spot(25.0),
+            vec![(ILIGHT, "Ilight = (Iamb + Idif + Ispec)/at"), (I, "I = spot*(Iemi + Iscene + Ilight)\n")],
+        ),
+        (
+            "light-left-out",
+            scene("three-lights.toml"),
+            vec![("I = Iemi + Iscene + sum(Ilight)", "I = Iemi + Iscene + Ilight[0] + Ilight[1] + Ilight[2]")],
+        ),
+        ("scene-ambient-left-out", opengl(), vec![(I, "I = Iemi + Ilight\n")]),
+        ("scene-ambient-without-material", opengl(), vec![("Iscene = matAmb*sceneAmb", "Iscene = sceneAmb")]),
+        ("emission-twice", opengl(), vec![(I, "I = Iemi + Iscene + Ilight + matEmi\n")]),
+        (
+            "colour-not-clamped",
+            opengl(),
+            vec![("glColor = np.append(np.clip((I)[:3], 0, 1), 1)", "glColor = np.append(I[:3], 1)")],
+        ),
+    ]
 }
 
 /// The exported notebook of `doc` with `edits` made in its code cells (each must be found).
@@ -243,7 +387,8 @@ fn every_catalogue_mistake_written_into_a_notebook_is_named_and_the_unchanged_on
     for info in &CATALOGUE {
         assert!(cases.iter().any(|c| c.0 == info.id), "no notebook for {}", info.id);
     }
-    let mut unchanged: Vec<Document> = vec![worksheet(), light_behind(), spot(25.0), spot(6.3)];
+    let mut unchanged: Vec<Document> =
+        vec![worksheet(), light_behind(), spot(25.0), spot(6.3), opengl(), turned_away(), scene("three-lights.toml")];
     unchanged.dedup_by(|a, b| a.to_toml().unwrap() == b.to_toml().unwrap());
     let n = cases.len();
     for (k, (id, doc, edits)) in cases.iter().enumerate() {
@@ -256,13 +401,17 @@ fn every_catalogue_mistake_written_into_a_notebook_is_named_and_the_unchanged_on
         std::fs::write(dir.path().join(format!("{k}.toml")), doc.to_toml().unwrap()).unwrap();
     }
     let ran = run_all(python, dir.path(), n + unchanged.len());
+    let mut failed = Vec::new();
     for (k, (id, ..)) in cases.iter().enumerate() {
         let json = check_json(&ran[k], &dir.path().join(format!("{k}.toml")));
-        assert_eq!(json["verdict"], "wrong", "{id}: {json:#}");
         let ids: Vec<&str> = json["causes"].as_array().unwrap().iter().map(|c| c["id"].as_str().unwrap()).collect();
-        assert!(ids.contains(id), "{id}: named {ids:?}: {json:#}");
-        assert!(ids.len() <= 2, "{id}: named {ids:?}");
+        // Where the printed values cannot tell mistakes apart (a spot of 0: outside the cone
+        // for any of four reasons), each is named; never the whole catalogue.
+        if json["verdict"] != "wrong" || !ids.contains(id) || ids.len() > 4 {
+            failed.push(format!("{id}: named {ids:?}: {json:#}"));
+        }
     }
+    assert!(failed.is_empty(), "{} of {n}:\n{}", failed.len(), failed.join("\n"));
     for j in 0..unchanged.len() {
         let k = n + j;
         let json = check_json(&ran[k], &dir.path().join(format!("{k}.toml")));

@@ -141,13 +141,13 @@ pub fn words(c: &Check) -> String {
             "{}\n    {}\n",
             t!(
                 "check-cause",
-                words = (cause.info.words)(),
+                words = cause.words(),
                 id = cause.info.id,
                 step = cause.step.clone(),
                 student = student,
                 value = numbers(&cause.value)
             ),
-            cause.info.formula
+            cause.formula()
         ));
     }
     if c.first_wrong.is_some() && c.causes.is_empty() {

@@ -46,8 +46,9 @@ pub fn json(c: &Check) -> serde_json::Value {
         "first_wrong": first,
         "causes": c.causes.iter().map(|k| serde_json::json!({
             "id": k.info.id,
-            "words": (k.info.words)(),
-            "formula": k.info.formula,
+            "words": k.words(),
+            "formula": k.formula(),
+            "light": k.light,
             "step": k.step,
             "value": k.value,
         })).collect::<Vec<_>>(),
@@ -208,7 +209,7 @@ fn causes(c: &Check) -> String {
     if c.causes.is_empty() && !c.right() {
         return t!("check-report-unexplained");
     }
-    c.causes.iter().map(|k| (k.info.words)()).collect::<Vec<_>>().join("; ")
+    c.causes.iter().map(|k| k.words()).collect::<Vec<_>>().join("; ")
 }
 
 /// How many students each cause explains (in the teacher's words), and how many no cause

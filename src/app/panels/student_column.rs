@@ -141,14 +141,14 @@ fn findings_ui(ui: &mut Ui, c: &Check) {
         let student = c.steps.iter().find(|s| s.name == cause.step).map_or_else(String::new, |s| numbers(&s.student));
         let line = t!(
             "check-cause",
-            words = (cause.info.words)(),
+            words = cause.words(),
             id = cause.info.id,
             step = cause.step.clone(),
             student = student,
             value = numbers(&cause.value)
         );
         ui.add(egui::Label::new(line).wrap());
-        ui.add(egui::Label::new(RichText::new(cause.info.formula).monospace().weak()).wrap());
+        ui.add(egui::Label::new(RichText::new(cause.formula()).monospace().weak()).wrap());
     }
     if c.first_wrong.is_some() && c.causes.is_empty() {
         ui.label(t!("check-no-cause"));

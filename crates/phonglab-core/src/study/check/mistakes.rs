@@ -11,8 +11,15 @@ pub enum Mistake {
     /// The normal by M where the rules take the inverse transpose (wrong under a
     /// non-uniform scale).
     NormalByModelview,
+    /// The normal by the inverse transpose of the whole 4x4 modelview: its translation
+    /// gives the normal a w that enters its length.
+    NormalMatrixWithTranslation,
+    /// The normal left as typed (not transformed at all).
+    NormalNotTransformed,
     /// The normal not normalised after its transform.
     NormalNotNormalised,
+    /// The vertex left in object space.
+    VertexNotTransformed,
     /// The light's position left in object space.
     LightNotTransformed,
     /// The light's position transformed by the modelview twice.
@@ -23,22 +30,80 @@ pub enum Mistake {
     VlvNotNormalised,
     /// A directional light (w = 0) treated as a point at its direction.
     DirectionalAsPoint,
+    /// A positional light treated as directional: `vlv` its position's direction.
+    PointAsDirectional,
     /// The local and the infinite viewer swapped.
     ViewerSwapped,
+    /// `vov` from the eye to the vertex (the local viewer's vector reversed).
+    ViewerReversed,
     /// `H = vlv + vov`, not normalised.
     HalfwayNotNormalised,
+    /// Phong's `R . V` where the rules take Blinn-Phong's `N . H`.
+    ReflectionForHalfway,
+    /// `R = L - 2 (N . L) N`: the reflection with its sign reversed.
+    ReflectionReversed,
+    /// `cosTheta` taken with the light's position instead of `vlv`.
+    CosThetaWithLightPosition,
     /// Specular where `N . L <= 0` (OpenGL's gate left out).
     SpecularWithoutGate,
+    /// The specular cosine not clamped at 0 before the power.
+    SpecularCosineNotClamped,
     /// The diffuse term not clamped: negative past 90 degrees.
     DiffuseNotClamped,
+    /// The angle in degrees compared with `pi/2` (radians): the diffuse zeroed past 1.57
+    /// degrees.
+    ThetaInDegrees,
+    /// The ambient term scaled by `N . L` like the diffuse.
+    AmbientTimesCosine,
+    /// One of a term's two colours taken from another term, or left out
+    /// ([`ColourSwap`]).
+    ColoursMixedUp,
     /// The spot cutoff's cosine taken of degrees as if they were radians.
     SpotCutoffRadians,
     /// The spot exponent applied outside the cone too (no cone test).
     SpotExponentOutsideCone,
+    /// The spot exponent left out: the spot factor is the cosine itself.
+    SpotExponentIgnored,
+    /// The cone test the wrong way round: lit outside the cone, dark inside.
+    ConeTestInverted,
+    /// The spot's angle measured with `vlv` (towards the light), not `-vlv`.
+    SpotAngleReversed,
+    /// The spot direction left in object space.
+    SpotDirectionUntransformed,
+    /// The spot factor not applied to the light's share.
+    SpotLeftOut,
+    /// The spot factor applied to the whole colour (emission and scene ambient too).
+    SpotOnWholeColour,
     /// The share multiplied by the attenuation instead of divided.
     AttenuationMultiplied,
+    /// The share not divided by the attenuation.
+    AttenuationLeftOut,
+    /// The light's ambient not divided by the attenuation (only diffuse and specular).
+    AmbientNotAttenuated,
+    /// The constant attenuation term left out.
+    AttenuationConstantLeftOut,
+    /// The quadratic term with `d` instead of `d*d`.
+    AttenuationQuadraticNotSquared,
     /// The light's distance measured in object space.
     AttenuationObjectDistance,
+    /// The distance taken from the normalised `vlv` (so 1).
+    DistanceFromNormalisedVlv,
+    /// The distance squared (no square root).
+    DistanceSquared,
+    /// The light's ambient left out of its share.
+    LightAmbientLeftOut,
+    /// The specular left out of the light's share.
+    SpecularLeftOut,
+    /// A light's share left out of the sum.
+    LightLeftOut,
+    /// The scene's ambient left out of the sum.
+    SceneAmbientLeftOut,
+    /// The scene's ambient not multiplied by the material's ambient.
+    SceneAmbientWithoutMaterial,
+    /// The emission added twice.
+    EmissionTwice,
+    /// The colour not clamped to [0, 1].
+    ColourNotClamped,
     /// The division by w forgotten.
     WDivideForgotten,
     /// Shininess as the 0-1 fraction (`0.4`) instead of `0.4*128`.
@@ -49,12 +114,161 @@ impl Mistake {
     /// Is this a mistake under `rules`? One that changes nothing those rules do (no N·L
     /// gate to leave out, the normal transformed by M already) is not offered as a cause.
     pub fn applies(self, rules: crate::model::rules::Rules) -> bool {
-        use crate::model::rules::{NormalTransform, SpecularGate};
+        use crate::model::rules::{NormalTransform, SpecularGate, SpecularVector};
         match self {
             Mistake::SpecularWithoutGate => rules.specular_gate() == SpecularGate::LitSide,
             Mistake::NormalByModelview => rules.normal_transform() == NormalTransform::InverseTranspose,
+            Mistake::ReflectionForHalfway => rules.specular.vector() == SpecularVector::Halfway,
+            Mistake::ReflectionReversed => rules.specular.vector() == SpecularVector::Reflection,
             _ => true,
         }
+    }
+
+    /// Can the mistake be made for one light alone (each light's values are its own)?
+    pub fn per_light(self) -> bool {
+        !matches!(
+            self,
+            Mistake::NormalByModelview
+                | Mistake::NormalMatrixWithTranslation
+                | Mistake::NormalNotTransformed
+                | Mistake::NormalNotNormalised
+                | Mistake::VertexNotTransformed
+                | Mistake::ViewerSwapped
+                | Mistake::ViewerReversed
+                | Mistake::SpotOnWholeColour
+                | Mistake::SceneAmbientLeftOut
+                | Mistake::SceneAmbientWithoutMaterial
+                | Mistake::EmissionTwice
+                | Mistake::ColourNotClamped
+                | Mistake::WDivideForgotten
+                | Mistake::ShininessFraction
+        )
+    }
+}
+
+/// One of the three terms a light and a material each give a colour to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Term {
+    /// `Lamb`, `matAmb`.
+    Ambient,
+    /// `Ldif`, `matDif`.
+    Diffuse,
+    /// `Lspec`, `matSpec`.
+    Specular,
+}
+
+impl Term {
+    /// The three, in the worksheet's order.
+    pub const ALL: [Term; 3] = [Term::Ambient, Term::Diffuse, Term::Specular];
+
+    /// The light's colour's name in the notebook.
+    pub fn light_name(self) -> &'static str {
+        match self {
+            Term::Ambient => "Lamb",
+            Term::Diffuse => "Ldif",
+            Term::Specular => "Lspec",
+        }
+    }
+
+    /// The material's colour's name in the notebook.
+    pub fn material_name(self) -> &'static str {
+        match self {
+            Term::Ambient => "matAmb",
+            Term::Diffuse => "matDif",
+            Term::Specular => "matSpec",
+        }
+    }
+
+    /// The term's value's name in the notebook.
+    pub fn value_name(self) -> &'static str {
+        match self {
+            Term::Ambient => "Iamb",
+            Term::Diffuse => "Idif",
+            Term::Specular => "Ispec",
+        }
+    }
+}
+
+/// [`Mistake::ColoursMixedUp`]: in `term`, the light's (`light`) or the material's colour
+/// is taken from the term `from`, or left out (`None`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ColourSwap {
+    /// The term computed with the wrong colour.
+    pub term: Term,
+    /// The light's colour (`true`) or the material's (`false`).
+    pub light: bool,
+    /// The term whose colour was taken instead; `None`: the colour left out.
+    pub from: Option<Term>,
+}
+
+impl ColourSwap {
+    /// Every swap: each term, each of its two colours, taken from each other term or left
+    /// out.
+    pub fn all() -> Vec<ColourSwap> {
+        let mut out = Vec::new();
+        for term in Term::ALL {
+            for light in [true, false] {
+                for from in Term::ALL.into_iter().filter(|&f| f != term).map(Some).chain([None]) {
+                    out.push(ColourSwap { term, light, from });
+                }
+            }
+        }
+        out
+    }
+
+    /// The product as the student wrote it: `Lspec*matDif`.
+    pub fn product(self) -> String {
+        let name = |t: Term| if self.light { t.light_name() } else { t.material_name() };
+        let taken = self.from.map(name);
+        match (self.light, taken) {
+            (true, Some(l)) => format!("{l}*{}", self.term.material_name()),
+            (true, None) => self.term.material_name().to_string(),
+            (false, Some(m)) => format!("{}*{m}", self.term.light_name()),
+            (false, None) => self.term.light_name().to_string(),
+        }
+    }
+}
+
+/// A mistake as made: for every light or one light alone, and which colours are mixed up
+/// ([`Mistake::ColoursMixedUp`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Made {
+    /// The mistake.
+    pub mistake: Mistake,
+    /// The one light it is made for (`None`: all lights).
+    pub light: Option<usize>,
+    /// The colours mixed up.
+    pub swap: Option<ColourSwap>,
+}
+
+impl Made {
+    /// `mistake` made for every light.
+    pub fn everywhere(mistake: Mistake) -> Made {
+        Made { mistake, light: None, swap: None }
+    }
+
+    /// Every way `mistake` can be made in a scene of `lights` lights: for all lights, then
+    /// (of several) for each alone; each colour swap.
+    pub fn instances(mistake: Mistake, lights: usize) -> Vec<Made> {
+        if mistake == Mistake::SpotOnWholeColour && lights != 1 {
+            return Vec::new();
+        }
+        let mut at: Vec<Option<usize>> = vec![None];
+        if mistake.per_light() && lights > 1 {
+            at.extend((0..lights).map(Some));
+        }
+        let swaps: Vec<Option<ColourSwap>> = if mistake == Mistake::ColoursMixedUp {
+            ColourSwap::all().into_iter().map(Some).collect()
+        } else {
+            vec![None]
+        };
+        let mut out = Vec::new();
+        for &swap in &swaps {
+            for &light in &at {
+                out.push(Made { mistake, light, swap });
+            }
+        }
+        out
     }
 }
 
@@ -77,7 +291,7 @@ pub struct MistakeInfo {
 pub const ACOS_PAST_ONE: &str = "acos-past-one";
 
 /// The catalogue, in the worksheet's order.
-pub const CATALOGUE: [MistakeInfo; 18] = [
+pub const CATALOGUE: [MistakeInfo; 49] = [
     MistakeInfo {
         id: "normal-by-modelview",
         mistake: Some(Mistake::NormalByModelview),
@@ -85,10 +299,28 @@ pub const CATALOGUE: [MistakeInfo; 18] = [
         words: || t!("check-cause-normal-by-modelview"),
     },
     MistakeInfo {
+        id: "normal-matrix-with-translation",
+        mistake: Some(Mistake::NormalMatrixWithTranslation),
+        formula: "normalMatrix = np.linalg.inv(mview).T  # 4x4",
+        words: || t!("check-cause-normal-matrix-with-translation"),
+    },
+    MistakeInfo {
+        id: "normal-not-transformed",
+        mistake: Some(Mistake::NormalNotTransformed),
+        formula: "# vertexNormal = np.matmul(normalMatrix, vertexNormal)",
+        words: || t!("check-cause-normal-not-transformed"),
+    },
+    MistakeInfo {
         id: "normal-not-normalised",
         mistake: Some(Mistake::NormalNotNormalised),
         formula: "# vertexNormal = vertexNormal/np.linalg.norm(vertexNormal)",
         words: || t!("check-cause-normal-not-normalised"),
+    },
+    MistakeInfo {
+        id: "vertex-not-transformed",
+        mistake: Some(Mistake::VertexNotTransformed),
+        formula: "# vertexPos = np.matmul(mview, vertexPos)",
+        words: || t!("check-cause-vertex-not-transformed"),
     },
     MistakeInfo {
         id: "light-not-transformed",
@@ -121,22 +353,46 @@ pub const CATALOGUE: [MistakeInfo; 18] = [
         words: || t!("check-cause-directional-as-point"),
     },
     MistakeInfo {
+        id: "point-as-directional",
+        mistake: Some(Mistake::PointAsDirectional),
+        formula: "vlv = lightPos  # lightPos[3] != 0",
+        words: || t!("check-cause-point-as-directional"),
+    },
+    MistakeInfo {
         id: "viewer-swapped",
         mistake: Some(Mistake::ViewerSwapped),
         formula: "obs = np.array([0, 0, 0, 1])  # <-> obs = vertexPos*np.array([1, 1, 0, 1])",
         words: || t!("check-cause-viewer-swapped"),
     },
     MistakeInfo {
-        id: "halfway-not-normalised",
-        mistake: Some(Mistake::HalfwayNotNormalised),
-        formula: "H = vlv + vov",
-        words: || t!("check-cause-halfway-not-normalised"),
+        id: "viewer-reversed",
+        mistake: Some(Mistake::ViewerReversed),
+        formula: "vov = vertexPos - obs",
+        words: || t!("check-cause-viewer-reversed"),
     },
     MistakeInfo {
-        id: "specular-without-gate",
-        mistake: Some(Mistake::SpecularWithoutGate),
-        formula: "Ispec = (Lspec*matSpec)*(max(cosBeta, 0)**ns)",
-        words: || t!("check-cause-specular-without-gate"),
+        id: "light-ambient-left-out",
+        mistake: Some(Mistake::LightAmbientLeftOut),
+        formula: "Ilight = spot*(Idif + Ispec)/at",
+        words: || t!("check-cause-light-ambient-left-out"),
+    },
+    MistakeInfo {
+        id: "ambient-times-cosine",
+        mistake: Some(Mistake::AmbientTimesCosine),
+        formula: "Iamb = (Lamb*matAmb)*cosTheta",
+        words: || t!("check-cause-ambient-times-cosine"),
+    },
+    MistakeInfo {
+        id: "colours-mixed-up",
+        mistake: Some(Mistake::ColoursMixedUp),
+        formula: "Idif = (Lspec*matDif)*cosTheta",
+        words: || t!("check-cause-colours-mixed-up"),
+    },
+    MistakeInfo {
+        id: "cos-theta-with-light-position",
+        mistake: Some(Mistake::CosThetaWithLightPosition),
+        formula: "cosTheta = np.dot(vertexNormal, lightPos)",
+        words: || t!("check-cause-cos-theta-with-light-position"),
     },
     MistakeInfo {
         id: "diffuse-not-clamped",
@@ -145,22 +401,58 @@ pub const CATALOGUE: [MistakeInfo; 18] = [
         words: || t!("check-cause-diffuse-not-clamped"),
     },
     MistakeInfo {
+        id: "theta-in-degrees",
+        mistake: Some(Mistake::ThetaInDegrees),
+        formula: "theta = m.degrees(m.acos(cosTheta)); theta > m.pi*0.5",
+        words: || t!("check-cause-theta-in-degrees"),
+    },
+    MistakeInfo {
         id: ACOS_PAST_ONE,
         mistake: None,
         formula: "theta = m.acos(cosTheta)  # cosTheta = 1.0000000000000002",
         words: || t!("check-cause-acos-past-one"),
     },
     MistakeInfo {
-        id: "spot-cutoff-radians",
-        mistake: Some(Mistake::SpotCutoffRadians),
-        formula: "cosSpot >= m.cos(spotCutoff)",
-        words: || t!("check-cause-spot-cutoff-radians"),
+        id: "halfway-not-normalised",
+        mistake: Some(Mistake::HalfwayNotNormalised),
+        formula: "H = vlv + vov",
+        words: || t!("check-cause-halfway-not-normalised"),
     },
     MistakeInfo {
-        id: "spot-exponent-outside-cone",
-        mistake: Some(Mistake::SpotExponentOutsideCone),
-        formula: "spot = max(cosSpot, 0)**spotCoef",
-        words: || t!("check-cause-spot-exponent-outside-cone"),
+        id: "reflection-for-halfway",
+        mistake: Some(Mistake::ReflectionForHalfway),
+        formula: "cosBeta = np.dot(2*cosTheta*vertexNormal - vlv, vov)",
+        words: || t!("check-cause-reflection-for-halfway"),
+    },
+    MistakeInfo {
+        id: "reflection-reversed",
+        mistake: Some(Mistake::ReflectionReversed),
+        formula: "R = vlv - 2*cosTheta*vertexNormal",
+        words: || t!("check-cause-reflection-reversed"),
+    },
+    MistakeInfo {
+        id: "specular-without-gate",
+        mistake: Some(Mistake::SpecularWithoutGate),
+        formula: "Ispec = (Lspec*matSpec)*(max(cosBeta, 0)**ns)",
+        words: || t!("check-cause-specular-without-gate"),
+    },
+    MistakeInfo {
+        id: "specular-cosine-not-clamped",
+        mistake: Some(Mistake::SpecularCosineNotClamped),
+        formula: "Ispec = (Lspec*matSpec)*(cosBeta**ns)",
+        words: || t!("check-cause-specular-cosine-not-clamped"),
+    },
+    MistakeInfo {
+        id: "specular-left-out",
+        mistake: Some(Mistake::SpecularLeftOut),
+        formula: "Ilight = spot*(Iamb + Idif)/at",
+        words: || t!("check-cause-specular-left-out"),
+    },
+    MistakeInfo {
+        id: "shininess-fraction",
+        mistake: Some(Mistake::ShininessFraction),
+        formula: "ns = 0.2",
+        words: || t!("check-cause-shininess-fraction"),
     },
     MistakeInfo {
         id: "attenuation-multiplied",
@@ -169,22 +461,130 @@ pub const CATALOGUE: [MistakeInfo; 18] = [
         words: || t!("check-cause-attenuation-multiplied"),
     },
     MistakeInfo {
+        id: "attenuation-left-out",
+        mistake: Some(Mistake::AttenuationLeftOut),
+        formula: "Ilight = spot*(Iamb + Idif + Ispec)",
+        words: || t!("check-cause-attenuation-left-out"),
+    },
+    MistakeInfo {
+        id: "ambient-not-attenuated",
+        mistake: Some(Mistake::AmbientNotAttenuated),
+        formula: "Ilight = spot*(Iamb + (Idif + Ispec)/at)",
+        words: || t!("check-cause-ambient-not-attenuated"),
+    },
+    MistakeInfo {
+        id: "attenuation-constant-left-out",
+        mistake: Some(Mistake::AttenuationConstantLeftOut),
+        formula: "at = atLin*d + atQuad*d*d",
+        words: || t!("check-cause-attenuation-constant-left-out"),
+    },
+    MistakeInfo {
+        id: "attenuation-quadratic-not-squared",
+        mistake: Some(Mistake::AttenuationQuadraticNotSquared),
+        formula: "at = atC + atLin*d + atQuad*d",
+        words: || t!("check-cause-attenuation-quadratic-not-squared"),
+    },
+    MistakeInfo {
         id: "attenuation-object-distance",
         mistake: Some(Mistake::AttenuationObjectDistance),
         formula: "d = np.linalg.norm(lightPosObject - vertexPosObject)",
         words: || t!("check-cause-attenuation-object-distance"),
     },
     MistakeInfo {
+        id: "distance-from-normalised-vlv",
+        mistake: Some(Mistake::DistanceFromNormalisedVlv),
+        formula: "d = np.linalg.norm(vlv)",
+        words: || t!("check-cause-distance-from-normalised-vlv"),
+    },
+    MistakeInfo {
+        id: "distance-squared",
+        mistake: Some(Mistake::DistanceSquared),
+        formula: "d = np.sum((lightPos - vertexPos)**2)",
+        words: || t!("check-cause-distance-squared"),
+    },
+    MistakeInfo {
+        id: "spot-cutoff-radians",
+        mistake: Some(Mistake::SpotCutoffRadians),
+        formula: "cosSpot >= m.cos(spotCutoff)",
+        words: || t!("check-cause-spot-cutoff-radians"),
+    },
+    MistakeInfo {
+        id: "spot-direction-untransformed",
+        mistake: Some(Mistake::SpotDirectionUntransformed),
+        formula: "spotDir = lightSpotDir[:3]",
+        words: || t!("check-cause-spot-direction-untransformed"),
+    },
+    MistakeInfo {
+        id: "spot-angle-reversed",
+        mistake: Some(Mistake::SpotAngleReversed),
+        formula: "cosSpot = np.dot(vlv[:3], spotDir)",
+        words: || t!("check-cause-spot-angle-reversed"),
+    },
+    MistakeInfo {
+        id: "cone-test-inverted",
+        mistake: Some(Mistake::ConeTestInverted),
+        formula: "if cosSpot <= m.cos(m.radians(spotCutoff)):",
+        words: || t!("check-cause-cone-test-inverted"),
+    },
+    MistakeInfo {
+        id: "spot-exponent-outside-cone",
+        mistake: Some(Mistake::SpotExponentOutsideCone),
+        formula: "spot = max(cosSpot, 0)**spotCoef",
+        words: || t!("check-cause-spot-exponent-outside-cone"),
+    },
+    MistakeInfo {
+        id: "spot-exponent-ignored",
+        mistake: Some(Mistake::SpotExponentIgnored),
+        formula: "spot = max(cosSpot, 0)",
+        words: || t!("check-cause-spot-exponent-ignored"),
+    },
+    MistakeInfo {
+        id: "spot-left-out",
+        mistake: Some(Mistake::SpotLeftOut),
+        formula: "Ilight = (Iamb + Idif + Ispec)/at",
+        words: || t!("check-cause-spot-left-out"),
+    },
+    MistakeInfo {
+        id: "spot-on-whole-colour",
+        mistake: Some(Mistake::SpotOnWholeColour),
+        formula: "I = spot*(Iemi + Iscene + Ilight)",
+        words: || t!("check-cause-spot-on-whole-colour"),
+    },
+    MistakeInfo {
+        id: "light-left-out",
+        mistake: Some(Mistake::LightLeftOut),
+        formula: "I = Iemi + Iscene + Ilight[0]  # + Ilight[1] ...",
+        words: || t!("check-cause-light-left-out"),
+    },
+    MistakeInfo {
+        id: "scene-ambient-left-out",
+        mistake: Some(Mistake::SceneAmbientLeftOut),
+        formula: "I = Iemi + Ilight",
+        words: || t!("check-cause-scene-ambient-left-out"),
+    },
+    MistakeInfo {
+        id: "scene-ambient-without-material",
+        mistake: Some(Mistake::SceneAmbientWithoutMaterial),
+        formula: "Iscene = sceneAmb",
+        words: || t!("check-cause-scene-ambient-without-material"),
+    },
+    MistakeInfo {
+        id: "emission-twice",
+        mistake: Some(Mistake::EmissionTwice),
+        formula: "I = Iemi + Iscene + Ilight + matEmi",
+        words: || t!("check-cause-emission-twice"),
+    },
+    MistakeInfo {
+        id: "colour-not-clamped",
+        mistake: Some(Mistake::ColourNotClamped),
+        formula: "glColor = np.append(I[:3], 1)",
+        words: || t!("check-cause-colour-not-clamped"),
+    },
+    MistakeInfo {
         id: "w-divide-forgotten",
         mistake: Some(Mistake::WDivideForgotten),
         formula: "# vertexPos = vertexPos/vertexPos[3]",
         words: || t!("check-cause-w-divide-forgotten"),
-    },
-    MistakeInfo {
-        id: "shininess-fraction",
-        mistake: Some(Mistake::ShininessFraction),
-        formula: "ns = 0.2",
-        words: || t!("check-cause-shininess-fraction"),
     },
 ];
 

@@ -10,9 +10,9 @@ pub mod worked;
 
 use crate::model::rules::Rules;
 use crate::model::scene::{Scene, Side};
-use mistakes::{ACOS_PAST_ONE, CATALOGUE, MistakeInfo};
+use mistakes::{ACOS_PAST_ONE, CATALOGUE, ColourSwap, Made, MistakeInfo};
 use printed::{Printed, PrintedValue};
-use worked::{Worked, work};
+use worked::{Worked, work, work_made};
 
 /// How a printed step compares with the key.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -73,6 +73,38 @@ pub struct Cause {
     pub step: String,
     /// The key worked with the mistake, at that step.
     pub value: Vec<f64>,
+    /// The one light the mistake was made for, of several (`None`: all of them).
+    pub light: Option<usize>,
+    /// The colours mixed up, for `colours-mixed-up`.
+    pub swap: Option<ColourSwap>,
+}
+
+impl Cause {
+    /// What the mistake means, in the user's language, with the light it was made for.
+    pub fn words(&self) -> String {
+        let words = (self.info.words)();
+        match self.light {
+            Some(i) => crate::t!("check-cause-for-light", cause = words, light = i),
+            None => words,
+        }
+    }
+
+    /// What the student wrote, as code: the catalogue's formula, or the colours mixed up.
+    pub fn formula(&self) -> String {
+        match self.swap {
+            Some(swap) => {
+                let value = swap.term.value_name();
+                let i = self.light.map(|i| format!("[{i}]")).unwrap_or_default();
+                format!(
+                    "{value}{i} = {}  # {}{i}*{}",
+                    swap.product(),
+                    swap.term.light_name(),
+                    swap.term.material_name()
+                )
+            }
+            None => self.info.formula.to_string(),
+        }
+    }
 }
 
 /// A piece of work checked.
@@ -143,12 +175,25 @@ impl Check {
 /// A little over a rounding of f64 arithmetic done in another order (NumPy's norm, dot).
 const SLACK: f64 = 1e-12;
 
+/// The part of the key's `want` that `got` prints: all of it, or a point's or a
+/// direction's x, y, z where the student works in three components (`vlv[:3]`) and the key
+/// in four with a w of 0 or 1. `None` where the sizes do not match.
+fn aligned<'a>(got: &PrintedValue, want: &'a [f64]) -> Option<&'a [f64]> {
+    match (got.numbers.len(), want.len()) {
+        (g, w) if g == w => Some(want),
+        (3, 4) if want[3] == 0.0 || want[3] == 1.0 => Some(&want[..3]),
+        _ => None,
+    }
+}
+
 /// Does `got`, as printed, equal `want` to the printed digits?
 fn same(got: &PrintedValue, want: &[f64]) -> bool {
-    got.numbers.len() == want.len()
-        && got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| {
-            (g.is_nan() && w.is_nan()) || (g - w).abs() <= h * (1.0 + 1e-9) + SLACK * w.abs().max(1.0)
-        })
+    let Some(want) = aligned(got, want) else { return false };
+    got.numbers
+        .iter()
+        .zip(&got.half_units)
+        .zip(want)
+        .all(|((g, h), w)| (g.is_nan() && w.is_nan()) || (g - w).abs() <= h * (1.0 + 1e-9) + SLACK * w.abs().max(1.0))
 }
 
 /// Is `got` the point `want` in other homogeneous coordinates? A position (`lightPos`,
@@ -173,17 +218,17 @@ fn same_point(got: &PrintedValue, want: &[f64]) -> bool {
 /// with 8 decimals carries its rounding into what follows.
 fn given_from_printed(got: &PrintedValue, want: &[f64]) -> bool {
     let size = want.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+    let Some(want) = aligned(got, want) else { return false };
     same(got, want)
-        || got.numbers.len() == want.len()
-            && got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| (g - w).abs() <= 1e-6 * size + h)
+        || got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| (g - w).abs() <= 1e-6 * size + h)
 }
 
 /// Is `got` the key's to about three significant digits, each number? (A key of 0 is
 /// rounded only to 0: a tiny value where there should be none is a term computed that
 /// should not be.)
 fn close(got: &PrintedValue, want: &[f64]) -> bool {
-    got.numbers.len() == want.len()
-        && got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| (g - w).abs() <= 1e-3 * w.abs() + h)
+    let Some(want) = aligned(got, want) else { return false };
+    got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| (g - w).abs() <= 1e-3 * w.abs() + h)
 }
 
 /// Checks what `student` printed against the key of `assignment`; `own` is the scene the
@@ -247,32 +292,43 @@ fn right_given(scene: &Scene, given: &Worked, wrong: &[&PrintedValue], p: &Print
 }
 
 /// The catalogue's mistakes under the `assumed` rules that reproduce every value the
-/// student printed (worked on the scene they typed), and the error a run stopped with.
+/// student printed (worked on the scene they typed), and the error a run stopped with. A
+/// mistake made for all lights is named before (and instead of) the same made for one.
 fn causes(own: &Scene, key: &Worked, student: &Printed, assumed: Rules) -> Vec<Cause> {
-    let mut out = Vec::new();
+    let mut out: Vec<Cause> = Vec::new();
     for info in &CATALOGUE {
         let Some(m) = info.mistake.filter(|m| m.applies(assumed)) else { continue };
-        let made = work(own, Some(m), None);
-        let mut compared = 0;
-        let mut evidence = None;
-        let all = student.values.iter().all(|p| match made.get(&p.name) {
-            None => true,
-            Some(v) => {
-                compared += 1;
-                if evidence.is_none() && key.get(&p.name).is_some_and(|k| !same(p, k)) {
-                    evidence = Some((p.name.clone(), v.to_vec()));
-                }
-                same(p, v)
+        for made in Made::instances(m, own.lights.len()) {
+            if out.iter().any(|c| c.info.id == info.id && (c.light.is_none() || c.swap != made.swap)) {
+                continue;
             }
-        });
-        if let (true, Some((step, value))) = (all && compared > 0, evidence) {
-            out.push(Cause { info, step, value });
+            if let Some((step, value)) = reproduces(&work_made(own, Some(made), None), key, student) {
+                out.push(Cause { info, step, value, light: made.light, swap: made.swap });
+            }
         }
     }
     if let Some(c) = acos_past_one(student) {
         out.push(c);
     }
     out
+}
+
+/// Does `made` (the key worked with a mistake) give every value the student printed, one
+/// of them not the key's? The first such step and the mistaken value there.
+fn reproduces(made: &Worked, key: &Worked, student: &Printed) -> Option<(String, Vec<f64>)> {
+    let mut compared = 0;
+    let mut evidence = None;
+    for p in &student.values {
+        let Some(v) = made.get(&p.name) else { continue };
+        if !same(p, v) {
+            return None;
+        }
+        compared += 1;
+        if evidence.is_none() && key.get(&p.name).is_some_and(|k| !same(p, k)) {
+            evidence = Some((p.name.clone(), v.to_vec()));
+        }
+    }
+    evidence.filter(|_| compared > 0)
 }
 
 /// `acos` of a cosine past 1: the run stopped with Python's math domain error, and the
@@ -282,7 +338,7 @@ fn acos_past_one(student: &Printed) -> Option<Cause> {
     let cos = student.values.iter().rev().find(|v| v.name.starts_with("cos"))?;
     let past = cos.numbers.first().is_some_and(|c| c.abs() > 1.0);
     let info = mistakes::info(ACOS_PAST_ONE)?;
-    past.then(|| Cause { info, step: cos.name.clone(), value: cos.numbers.clone() })
+    past.then(|| Cause { info, step: cos.name.clone(), value: cos.numbers.clone(), light: None, swap: None })
 }
 
 /// The givens a scene's notebook types, by the worksheet's names.

@@ -6,7 +6,7 @@
 
 use glam::{DMat3, DMat4, DVec4};
 
-use super::mistakes::Mistake;
+use super::mistakes::{ColourSwap, Made, Mistake, Term};
 use super::printed::Printed;
 use crate::equation::lighting::EvalOptions;
 use crate::equation::plan::{Key, Program, SpecularTerm, Stage, Viewer};
@@ -46,7 +46,7 @@ struct LightState {
 struct Walk<'a> {
     scene: &'a Scene,
     key: &'a Key,
-    mistake: Option<Mistake>,
+    made: Option<Made>,
     student: Option<&'a Printed>,
     normal: DVec4,
     pos: DVec4,
@@ -66,14 +66,20 @@ fn unit(v: DVec4) -> DVec4 {
     v / v.length()
 }
 
-/// Works `scene`'s calculation with `mistake` made (`None`: the key). With `student`, each
-/// value the student printed replaces the computed one from there on.
+/// Works `scene`'s calculation with `mistake` made for every light (`None`: the key).
+/// With `student`, each value the student printed replaces the computed one from there on.
 pub fn work(scene: &Scene, mistake: Option<Mistake>, student: Option<&Printed>) -> Worked {
+    work_made(scene, mistake.map(Made::everywhere), student)
+}
+
+/// Works `scene`'s calculation with a mistake made as `made` says (for one light alone,
+/// with which colours mixed up).
+pub fn work_made(scene: &Scene, made: Option<Made>, student: Option<&Printed>) -> Worked {
     let key = Key::of(scene, EvalOptions::default());
     let mut walk = Walk {
         scene,
         key: &key,
-        mistake,
+        made,
         student,
         normal: scene.vertex.normal.extend(0.0),
         pos: scene.vertex.position,
@@ -90,8 +96,44 @@ pub fn work(scene: &Scene, mistake: Option<Mistake>, student: Option<&Printed>) 
 }
 
 impl Walk<'_> {
+    /// Is `m` the mistake made?
     fn made(&self, m: Mistake) -> bool {
-        self.mistake == Some(m)
+        self.made.is_some_and(|x| x.mistake == m)
+    }
+
+    /// Is `m` the mistake made, and made for light `i`?
+    fn made_at(&self, m: Mistake, i: usize) -> bool {
+        self.made.is_some_and(|x| x.mistake == m && x.light.is_none_or(|l| l == i))
+    }
+
+    /// The colours mixed up for light `i`, where that is the mistake made.
+    fn swap_at(&self, i: usize) -> Option<ColourSwap> {
+        self.made.filter(|x| x.light.is_none_or(|l| l == i)).and_then(|x| x.swap)
+    }
+
+    /// Light `i`'s and the material's colours of `term`, as multiplied (with a mix-up made).
+    fn colours(&self, i: usize, term: Term) -> (DVec4, DVec4) {
+        let (light, mat) = (&self.scene.lights[i], self.scene.lit_material(Side::Front));
+        let of_light = |t: Term| {
+            rgb(match t {
+                Term::Ambient => light.ambient,
+                Term::Diffuse => light.diffuse,
+                Term::Specular => light.specular,
+            })
+        };
+        let of_material = |t: Term| {
+            rgb(match t {
+                Term::Ambient => mat.ambient,
+                Term::Diffuse => mat.diffuse,
+                Term::Specular => mat.specular,
+            })
+        };
+        let one = DVec4::new(1.0, 1.0, 1.0, 0.0);
+        match self.swap_at(i).filter(|s| s.term == term) {
+            Some(ColourSwap { light: true, from, .. }) => (from.map_or(one, of_light), of_material(term)),
+            Some(ColourSwap { light: false, from, .. }) => (of_light(term), from.map_or(one, of_material)),
+            None => (of_light(term), of_material(term)),
+        }
     }
 
     /// A light's printed name: `vlv` for the one light, `vlv[0]` of several.
@@ -102,8 +144,13 @@ impl Walk<'_> {
     /// Records `value` under `name` and returns the value the walk goes on with: the
     /// student's own, where they printed one of the same size.
     fn emit(&mut self, name: String, value: &[f64]) -> Vec<f64> {
-        let own = self.student.and_then(|p| p.get(&name)).filter(|v| v.numbers.len() == value.len());
-        let next = own.map_or_else(|| value.to_vec(), |v| v.numbers.clone());
+        // A student's x, y, z of a four-component value go on with the key's w.
+        let own = self.student.and_then(|p| p.get(&name)).and_then(|v| match (v.numbers.len(), value.len()) {
+            (g, w) if g == w => Some(v.numbers.clone()),
+            (3, 4) => Some([&v.numbers[..], &value[3..]].concat()),
+            _ => None,
+        });
+        let next = own.unwrap_or_else(|| value.to_vec());
         if self.out.get(&name).is_none() {
             self.out.values.push((name, value.to_vec()));
         }
@@ -136,7 +183,11 @@ impl Walk<'_> {
             Stage::ZeroNormals => {}
             Stage::TransformPosition | Stage::TransformPositionProjective | Stage::TranslatePosition => {
                 self.normal = self.emit4("vertexNormal".into(), self.normal);
-                let p = m * self.scene.vertex.position;
+                let p = if self.made(Mistake::VertexNotTransformed) {
+                    self.scene.vertex.position
+                } else {
+                    m * self.scene.vertex.position
+                };
                 let p = if p.w != 0.0 && p.w != 1.0 && !self.made(Mistake::WDivideForgotten) { p / p.w } else { p };
                 self.pos = self.emit4("vertexPos".into(), p);
             }
@@ -161,6 +212,13 @@ impl Walk<'_> {
 
     /// `vertexNormal = M n`, or OpenGL's inverse transpose.
     fn transform_normal(&mut self, m: &DMat4) {
+        if self.made(Mistake::NormalNotTransformed) {
+            return;
+        }
+        if self.made(Mistake::NormalMatrixWithTranslation) {
+            self.normal = m.inverse().transpose() * self.normal;
+            return;
+        }
         let by_m = match self.scene.rules.normal_transform() {
             NormalTransform::Modelview => true,
             NormalTransform::InverseTranspose => self.made(Mistake::NormalByModelview),
@@ -185,6 +243,7 @@ impl Walk<'_> {
             Viewer::EyePlane => unit(self.pos * DVec4::new(1.0, 1.0, 0.0, 1.0) - self.pos),
             Viewer::Infinite => DVec4::Z,
         };
+        let v = if self.made(Mistake::ViewerReversed) { -v } else { v };
         self.view = self.emit4("vov".into(), v);
     }
 
@@ -193,46 +252,49 @@ impl Walk<'_> {
         let i = id.index();
         let light = &self.scene.lights[i];
         let to_eye = self.scene.eye_from_light(light);
-        let pos = if self.made(Mistake::LightNotTransformed) {
+        let pos = if self.made_at(Mistake::LightNotTransformed, i) {
             light.position
-        } else if self.made(Mistake::LightTransformedTwice) {
+        } else if self.made_at(Mistake::LightTransformedTwice, i) {
             to_eye * (to_eye * light.position)
         } else {
             to_eye * light.position
         };
         let pos = self.emit4(self.name("lightPos", i), pos);
         let point =
-            if pos.w != 0.0 && pos.w != 1.0 && !self.made(Mistake::WDivideForgotten) { pos / pos.w } else { pos };
-        let directional = pos.w == 0.0 && !self.made(Mistake::DirectionalAsPoint);
-        let mut vlv = if directional { pos } else { point - self.pos };
-        if self.made(Mistake::VlvReversed) {
+            if pos.w != 0.0 && pos.w != 1.0 && !self.made_at(Mistake::WDivideForgotten, i) { pos / pos.w } else { pos };
+        let directional = pos.w == 0.0 && !self.made_at(Mistake::DirectionalAsPoint, i);
+        let mut vlv = if directional || self.made_at(Mistake::PointAsDirectional, i) { pos } else { point - self.pos };
+        if self.made_at(Mistake::VlvReversed, i) {
             vlv = -vlv;
         }
-        if !self.made(Mistake::VlvNotNormalised) {
+        if !self.made_at(Mistake::VlvNotNormalised, i) {
             vlv = unit(vlv);
         }
         let vlv = self.emit4(self.name("vlv", i), vlv);
-        let d = if self.made(Mistake::AttenuationObjectDistance) {
+        let d = if self.made_at(Mistake::AttenuationObjectDistance, i) {
             (light.position - self.scene.vertex.position).length()
+        } else if self.made_at(Mistake::DistanceFromNormalisedVlv, i) {
+            vlv.length()
+        } else if self.made_at(Mistake::DistanceSquared, i) {
+            (point - self.pos).length_squared()
         } else {
             (point - self.pos).length()
         };
+        let [c, l, q] = light.attenuation;
+        let c = if self.made_at(Mistake::AttenuationConstantLeftOut, i) { 0.0 } else { c };
+        let dd = if self.made_at(Mistake::AttenuationQuadraticNotSquared, i) { d } else { d * d };
         let state = &mut self.lights[i];
         state.pos = pos;
         state.vlv = vlv;
         state.d = d;
-        state.at = if directional {
-            1.0
-        } else {
-            light.attenuation[0] + light.attenuation[1] * d + light.attenuation[2] * d * d
-        };
+        state.at = if directional { 1.0 } else { c + l * d + q * dd };
     }
 
     /// `d` (printed for a light with a position) and `at`.
     fn attenuate(&mut self, id: LightId) {
         let i = id.index();
         let s = self.lights[i];
-        if s.pos.w != 0.0 || self.made(Mistake::DirectionalAsPoint) {
+        if s.pos.w != 0.0 || self.made_at(Mistake::DirectionalAsPoint, i) {
             self.lights[i].d = self.emit1(self.name("d", i), s.d);
         }
         self.lights[i].at = self.emit1(self.name("at", i), s.at);
@@ -244,14 +306,23 @@ impl Walk<'_> {
         let light = &self.scene.lights[i];
         let mut spot = 1.0;
         if light.is_spot() {
-            let dir = DMat3::from_mat4(self.scene.eye_from_light(light)) * light.spot_direction;
+            let dir = if self.made_at(Mistake::SpotDirectionUntransformed, i) {
+                light.spot_direction
+            } else {
+                DMat3::from_mat4(self.scene.eye_from_light(light)) * light.spot_direction
+            };
             let dir = dir / dir.length();
-            let cos_spot = (-self.lights[i].vlv.truncate()).dot(dir);
-            let cutoff =
-                if self.made(Mistake::SpotCutoffRadians) { light.spot_cutoff } else { light.spot_cutoff.to_radians() };
-            let inside = cos_spot >= cutoff.cos();
-            spot = if inside || self.made(Mistake::SpotExponentOutsideCone) {
-                cos_spot.max(0.0).powf(light.spot_exponent)
+            let towards = if self.made_at(Mistake::SpotAngleReversed, i) { 1.0 } else { -1.0 };
+            let cos_spot = (towards * self.lights[i].vlv.truncate()).dot(dir);
+            let cutoff = if self.made_at(Mistake::SpotCutoffRadians, i) {
+                light.spot_cutoff
+            } else {
+                light.spot_cutoff.to_radians()
+            };
+            let inside = (cos_spot >= cutoff.cos()) != self.made_at(Mistake::ConeTestInverted, i);
+            let exponent = if self.made_at(Mistake::SpotExponentIgnored, i) { 1.0 } else { light.spot_exponent };
+            spot = if inside || self.made_at(Mistake::SpotExponentOutsideCone, i) {
+                cos_spot.max(0.0).powf(exponent)
             } else {
                 0.0
             };
@@ -263,7 +334,7 @@ impl Walk<'_> {
     fn halfway(&mut self, id: LightId) {
         let i = id.index();
         let mut h = self.lights[i].vlv + self.view;
-        if !self.made(Mistake::HalfwayNotNormalised) {
+        if !self.made_at(Mistake::HalfwayNotNormalised, i) {
             h = unit(h);
         }
         self.lights[i].vector = self.emit4(self.name("H", i), h);
@@ -275,19 +346,28 @@ impl Walk<'_> {
         let l = self.lights[i].vlv;
         let dot = self.normal.dot(l);
         let dot = if self.scene.rules.reflect_clamped() { dot.max(0.0) } else { dot };
-        self.lights[i].vector = self.emit4(self.name("R", i), 2.0 * dot * self.normal - l);
+        let r = 2.0 * dot * self.normal - l;
+        let r = if self.made_at(Mistake::ReflectionReversed, i) { -r } else { r };
+        self.lights[i].vector = self.emit4(self.name("R", i), r);
     }
 
     /// `Iamb`, `cosTheta` and `Idif` (0 past 90 degrees).
     fn diffuse(&mut self, id: LightId) {
         let i = id.index();
-        let (light, mat) = (&self.scene.lights[i], self.scene.lit_material(Side::Front));
-        let iamb = rgb(light.ambient) * rgb(mat.ambient);
-        let ldif = rgb(light.diffuse) * rgb(mat.diffuse);
+        let (lamb, mamb) = self.colours(i, Term::Ambient);
+        let (ldif, mdif) = self.colours(i, Term::Diffuse);
+        let toward =
+            if self.made_at(Mistake::CosThetaWithLightPosition, i) { self.lights[i].pos } else { self.lights[i].vlv };
+        let cos = self.normal.dot(toward);
+        let iamb = if self.made_at(Mistake::AmbientTimesCosine, i) { lamb * mamb * cos } else { lamb * mamb };
         self.lights[i].iamb = self.emit4(self.name("Iamb", i), iamb);
-        let cos = self.normal.dot(self.lights[i].vlv);
         let cos = self.emit1(self.name("cosTheta", i), cos);
-        let idif = if cos < 0.0 && !self.made(Mistake::DiffuseNotClamped) { DVec4::ZERO } else { ldif * cos };
+        let dark = if self.made_at(Mistake::ThetaInDegrees, i) {
+            cos.clamp(-1.0, 1.0).acos().to_degrees() > std::f64::consts::FRAC_PI_2
+        } else {
+            cos < 0.0 && !self.made_at(Mistake::DiffuseNotClamped, i)
+        };
+        let idif = if dark { DVec4::ZERO } else { ldif * mdif * cos };
         self.lights[i].cos_theta = cos;
         self.lights[i].idif = self.emit4(self.name("Idif", i), idif);
     }
@@ -295,9 +375,14 @@ impl Walk<'_> {
     /// `cosBeta = N . H`, or `cosAlpha = R . V`.
     fn specular_cosine(&mut self, id: LightId, vector: SpecularVector) {
         let i = id.index();
+        let s = self.lights[i];
         let (name, cos) = match vector {
-            SpecularVector::Halfway => ("cosBeta", self.normal.dot(self.lights[i].vector)),
-            SpecularVector::Reflection => ("cosAlpha", self.lights[i].vector.dot(self.view)),
+            SpecularVector::Halfway if self.made_at(Mistake::ReflectionForHalfway, i) => {
+                let r = 2.0 * self.normal.dot(s.vlv) * self.normal - s.vlv;
+                ("cosBeta", r.dot(self.view))
+            }
+            SpecularVector::Halfway => ("cosBeta", self.normal.dot(s.vector)),
+            SpecularVector::Reflection => ("cosAlpha", s.vector.dot(self.view)),
         };
         self.lights[i].cos_spec = self.emit1(self.name(name, i), cos);
     }
@@ -305,41 +390,93 @@ impl Walk<'_> {
     /// `Ispec` as the rules gate it, then the light's share `Ilight`, added to the sum.
     fn light_sum(&mut self, id: LightId, term: SpecularTerm) {
         let i = id.index();
-        let (light, mat) = (&self.scene.lights[i], self.scene.lit_material(Side::Front));
+        let shininess = self.scene.lit_material(Side::Front).shininess;
         let s = self.lights[i];
-        let ns = if self.made(Mistake::ShininessFraction) { mat.shininess / 128.0 } else { mat.shininess };
+        let ns = if self.made(Mistake::ShininessFraction) { shininess / 128.0 } else { shininess };
         let scale = match term {
             SpecularTerm::Zero | SpecularTerm::Plain => 1.0,
             SpecularTerm::Normalised => (ns + 8.0) / (8.0 * std::f64::consts::PI),
         };
-        let lspec = rgb(light.specular) * rgb(mat.specular);
+        let (lspec, mspec) = self.colours(i, Term::Specular);
         let gated = match self.scene.rules.specular_gate() {
             SpecularGate::None => false,
-            SpecularGate::LitSide => s.cos_theta <= 0.0 && !self.made(Mistake::SpecularWithoutGate),
+            SpecularGate::LitSide => s.cos_theta <= 0.0 && !self.made_at(Mistake::SpecularWithoutGate, i),
             SpecularGate::PositiveCosine => s.cos_spec < 0.0,
         };
-        let ispec = if gated { DVec4::ZERO } else { lspec * s.cos_spec.max(0.0).powf(ns) * scale };
+        // NumPy's `max(cosBeta, 0)` keeps a NaN (a zero-length vov) where `f64::max` drops
+        // it; the worksheet's angle test leaves the cosine unclamped.
+        let unclamped = self.made_at(Mistake::SpecularCosineNotClamped, i)
+            || s.cos_spec.is_nan()
+            || self.scene.rules.specular_gate() == SpecularGate::PositiveCosine;
+        let cos = if unclamped { s.cos_spec } else { s.cos_spec.max(0.0) };
+        let ispec = if gated { DVec4::ZERO } else { lspec * mspec * cos.powf(ns) * scale };
         let ispec = self.emit4(self.name("Ispec", i), ispec);
-        // A separate specular colour leaves the specular out of the light's primary share.
-        let lit = if self.key.separate_specular { s.iamb + s.idif } else { s.iamb + s.idif + ispec };
-        let share = s.spot * lit;
-        let share = if self.made(Mistake::AttenuationMultiplied) { share * s.at } else { share / s.at };
+        let share = self.share(i, ispec);
         let share = self.emit4(self.name("Ilight", i), share);
-        self.sum += share;
+        if !self.made_at(Mistake::LightLeftOut, i) {
+            self.sum += share;
+        }
+    }
+
+    /// The light's share: `spot*(Iamb + Idif + Ispec)/at`, as the mistake made writes it.
+    fn share(&self, i: usize, ispec: DVec4) -> DVec4 {
+        let s = self.lights[i];
+        let iamb = if self.made_at(Mistake::LightAmbientLeftOut, i) { DVec4::ZERO } else { s.iamb };
+        // A separate specular colour leaves the specular out of the light's primary share.
+        let ispec =
+            if self.key.separate_specular || self.made_at(Mistake::SpecularLeftOut, i) { DVec4::ZERO } else { ispec };
+        let spot =
+            if self.made_at(Mistake::SpotLeftOut, i) || self.made(Mistake::SpotOnWholeColour) { 1.0 } else { s.spot };
+        let at = if self.made_at(Mistake::AttenuationLeftOut, i) { 1.0 } else { s.at };
+        if self.made_at(Mistake::AttenuationMultiplied, i) {
+            spot * (iamb + s.idif + ispec) * at
+        } else if self.made_at(Mistake::AmbientNotAttenuated, i) {
+            spot * (iamb + (s.idif + ispec) / at)
+        } else {
+            spot * (iamb + s.idif + ispec) / at
+        }
     }
 
     /// OpenGL's scene ambient and emission.
     fn scene_color(&mut self) {
         let mat = self.scene.lit_material(Side::Front);
-        let iscene = self.emit4("Iscene".into(), rgb(mat.ambient) * rgb(self.scene.light_model.ambient));
+        let scene_ambient = rgb(self.scene.light_model.ambient);
+        let iscene = if self.made(Mistake::SceneAmbientWithoutMaterial) {
+            scene_ambient
+        } else {
+            rgb(mat.ambient) * scene_ambient
+        };
+        let iscene = self.emit4("Iscene".into(), iscene);
         let iemi = self.emit4("Iemi".into(), rgb(mat.emission));
-        self.sum += iscene + iemi;
+        if !self.made(Mistake::SceneAmbientLeftOut) {
+            self.sum += iscene;
+        }
+        self.sum += iemi;
+        if self.made(Mistake::EmissionTwice) {
+            self.sum += iemi;
+        }
     }
 
     /// `I`, and the colour as drawn.
     fn finish(&mut self) {
+        if self.made(Mistake::SpotOnWholeColour) {
+            self.sum *= self.lights.first().map_or(1.0, |l| l.spot);
+        }
         let i = self.emit4("I".into(), self.sum);
-        let c = i.truncate().clamp(glam::DVec3::ZERO, glam::DVec3::ONE);
+        let c = if self.made(Mistake::ColourNotClamped) {
+            i.truncate()
+        } else {
+            // `np.clip`: a NaN stays NaN (`DVec3::clamp` would make it 0).
+            glam::DVec3::from_array(i.truncate().to_array().map(|x| {
+                if x < 0.0 {
+                    0.0
+                } else if x > 1.0 {
+                    1.0
+                } else {
+                    x
+                }
+            }))
+        };
         let alpha = self.scene.lit_material(Side::Front).diffuse.w;
         if !self.key.separate_specular {
             self.emit4("glColor".into(), c.extend(alpha));
