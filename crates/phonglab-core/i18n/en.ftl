@@ -659,5 +659,16 @@ check-cause-scene-ambient-left-out = the scene's global ambient left out of the 
 check-cause-scene-ambient-without-material = the scene's global ambient not multiplied by the material's ambient
 check-cause-emission-twice = the material's emission added twice
 check-cause-colour-not-clamped = the colour not clamped to [0, 1]
+check-cause-normal-matrix-not-transposed = the normal by the inverse of the modelview's 3x3 without the transpose
+check-cause-row-vectors = vectors multiplied as rows (np.matmul(v, mview)): that is the transposed modelview
+check-cause-diffuse-angle-not-cosine = the diffuse scaled by the angle theta (in radians) instead of its cosine
+check-cause-halfway-with-view-reversed = H = vlv - vov instead of vlv + vov
+check-cause-specular-angle-not-cosine = the specular power taken of the angle beta (in radians) instead of its cosine
+check-cause-attenuation-terms-swapped = the linear and quadratic attenuation coefficients swapped (atLin*d*d + atQuad*d)
+check-cause-spot-cutoff-not-cosine = the spot's cosine compared with the cutoff angle in degrees instead of the cutoff's cosine
+check-cause-spot-on-diffuse-only = the spot factor applied to the diffuse term only (OpenGL applies it to the whole contribution of the light)
+check-cause-only-last-light = only the last light's contribution in the sum (the loop's variable used after the loop)
+check-cause-emission-left-out = the material's emission left out of the sum
+check-cause-alpha-from-sum = the colour's alpha taken from the sum's fourth component (0) instead of the material's diffuse alpha
 check-run-stopped = not checked: the run stopped with an error before the end: { $error }
 check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)

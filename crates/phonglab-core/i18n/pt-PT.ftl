@@ -659,5 +659,16 @@ check-cause-scene-ambient-left-out = falta o ambiente global da cena na soma
 check-cause-scene-ambient-without-material = o ambiente global da cena não multiplicado pelo ambiente do material
 check-cause-emission-twice = a emissão do material somada duas vezes
 check-cause-colour-not-clamped = a cor não limitada a [0, 1]
+check-cause-normal-matrix-not-transposed = a normal pela inversa da 3x3 da modelview sem a transposta
+check-cause-row-vectors = vetores multiplicados como linhas (np.matmul(v, mview)): isso é a modelview transposta
+check-cause-diffuse-angle-not-cosine = a difusa multiplicada pelo ângulo theta (em radianos) em vez do seu cosseno
+check-cause-halfway-with-view-reversed = H = vlv - vov em vez de vlv + vov
+check-cause-specular-angle-not-cosine = a potência especular calculada do ângulo beta (em radianos) em vez do seu cosseno
+check-cause-attenuation-terms-swapped = os coeficientes linear e quadrático da atenuação trocados (atLin*d*d + atQuad*d)
+check-cause-spot-cutoff-not-cosine = o cosseno do foco comparado com o ângulo de corte em graus em vez do cosseno desse ângulo
+check-cause-spot-on-diffuse-only = o fator do foco aplicado só à difusa (o OpenGL aplica-o à contribuição toda da luz)
+check-cause-only-last-light = só a contribuição da última luz na soma (a variável do ciclo usada depois do ciclo)
+check-cause-emission-left-out = falta a emissão do material na soma
+check-cause-alpha-from-sum = o alfa da cor tirado da quarta componente da soma (0) em vez do alfa da difusa do material
 check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
 check-nothing-compared = não verificado: nada do que imprimiu é um passo da ficha; imprima cada valor como a ficha faz, print("vlv = ", vlv)

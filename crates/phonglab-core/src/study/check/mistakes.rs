@@ -16,6 +16,11 @@ pub enum Mistake {
     NormalMatrixWithTranslation,
     /// The normal left as typed (not transformed at all).
     NormalNotTransformed,
+    /// The normal by the inverse of the modelview's 3x3, not its transpose.
+    NormalMatrixNotTransposed,
+    /// `np.matmul(v, mview)`: points (and, written the first way, the normal) multiplied
+    /// as row vectors, so by the transposed modelview.
+    RowVectors,
     /// The normal not normalised after its transform.
     NormalNotNormalised,
     /// The vertex left in object space.
@@ -38,8 +43,11 @@ pub enum Mistake {
     ViewerReversed,
     /// `H = vlv + vov`, not normalised.
     HalfwayNotNormalised,
-    /// Phong's `R . V` where the rules take Blinn-Phong's `N . H`.
+    /// Phong's `R . V` where the rules take Blinn-Phong's `N . H` (written the second
+    /// way: `H` itself set to R).
     ReflectionForHalfway,
+    /// `H = vlv - vov`.
+    HalfwayWithViewReversed,
     /// `R = L - 2 (N . L) N`: the reflection with its sign reversed.
     ReflectionReversed,
     /// `cosTheta` taken with the light's position instead of `vlv`.
@@ -53,6 +61,10 @@ pub enum Mistake {
     /// The angle in degrees compared with `pi/2` (radians): the diffuse zeroed past 1.57
     /// degrees.
     ThetaInDegrees,
+    /// The diffuse scaled by the angle theta (radians) instead of its cosine.
+    DiffuseAngleNotCosine,
+    /// The specular's power taken of the angle beta (radians) instead of its cosine.
+    SpecularAngleNotCosine,
     /// The ambient term scaled by `N . L` like the diffuse.
     AmbientTimesCosine,
     /// One of a term's two colours taken from another term, or left out
@@ -60,6 +72,10 @@ pub enum Mistake {
     ColoursMixedUp,
     /// The spot cutoff's cosine taken of degrees as if they were radians.
     SpotCutoffRadians,
+    /// The spot's cosine compared with the cutoff in degrees itself.
+    SpotCutoffNotCosine,
+    /// The spot factor on the diffuse term alone.
+    SpotOnDiffuseOnly,
     /// The spot exponent applied outside the cone too (no cone test).
     SpotExponentOutsideCone,
     /// The spot exponent left out: the spot factor is the cosine itself.
@@ -84,6 +100,8 @@ pub enum Mistake {
     AttenuationConstantLeftOut,
     /// The quadratic term with `d` instead of `d*d`.
     AttenuationQuadraticNotSquared,
+    /// The linear and the quadratic coefficients swapped: `atLin*d*d + atQuad*d`.
+    AttenuationTermsSwapped,
     /// The light's distance measured in object space.
     AttenuationObjectDistance,
     /// The distance taken from the normalised `vlv` (so 1).
@@ -96,12 +114,19 @@ pub enum Mistake {
     SpecularLeftOut,
     /// A light's share left out of the sum.
     LightLeftOut,
+    /// Only the last light's share in the sum (the loop's variable used after the loop).
+    OnlyLastLight,
     /// The scene's ambient left out of the sum.
     SceneAmbientLeftOut,
     /// The scene's ambient not multiplied by the material's ambient.
     SceneAmbientWithoutMaterial,
     /// The emission added twice.
     EmissionTwice,
+    /// The emission left out of the sum.
+    EmissionLeftOut,
+    /// The colour's alpha taken from the sum's fourth component (0) instead of the
+    /// material's diffuse alpha.
+    AlphaFromSum,
     /// The colour not clamped to [0, 1].
     ColourNotClamped,
     /// The division by w forgotten.
@@ -131,6 +156,11 @@ impl Mistake {
             Mistake::NormalByModelview
                 | Mistake::NormalMatrixWithTranslation
                 | Mistake::NormalNotTransformed
+                | Mistake::NormalMatrixNotTransposed
+                | Mistake::RowVectors
+                | Mistake::OnlyLastLight
+                | Mistake::EmissionLeftOut
+                | Mistake::AlphaFromSum
                 | Mistake::NormalNotNormalised
                 | Mistake::VertexNotTransformed
                 | Mistake::ViewerSwapped
@@ -239,20 +269,28 @@ pub struct Made {
     pub light: Option<usize>,
     /// The colours mixed up.
     pub swap: Option<ColourSwap>,
+    /// The mistake written its second way (`H = R` for R·V; the normal left alone by
+    /// row vectors).
+    pub second_way: bool,
 }
 
 impl Made {
     /// `mistake` made for every light.
     pub fn everywhere(mistake: Mistake) -> Made {
-        Made { mistake, light: None, swap: None }
+        Made { mistake, light: None, swap: None, second_way: false }
     }
 
     /// Every way `mistake` can be made in a scene of `lights` lights: for all lights, then
     /// (of several) for each alone; each colour swap.
     pub fn instances(mistake: Mistake, lights: usize) -> Vec<Made> {
-        if mistake == Mistake::SpotOnWholeColour && lights != 1 {
+        if mistake == Mistake::SpotOnWholeColour && lights != 1 || mistake == Mistake::OnlyLastLight && lights < 2 {
             return Vec::new();
         }
+        let ways: &[bool] = if matches!(mistake, Mistake::ReflectionForHalfway | Mistake::RowVectors) {
+            &[false, true]
+        } else {
+            &[false]
+        };
         let mut at: Vec<Option<usize>> = vec![None];
         if mistake.per_light() && lights > 1 {
             at.extend((0..lights).map(Some));
@@ -263,9 +301,11 @@ impl Made {
             vec![None]
         };
         let mut out = Vec::new();
-        for &swap in &swaps {
-            for &light in &at {
-                out.push(Made { mistake, light, swap });
+        for &second_way in ways {
+            for &swap in &swaps {
+                for &light in &at {
+                    out.push(Made { mistake, light, swap, second_way });
+                }
             }
         }
         out
@@ -291,7 +331,7 @@ pub struct MistakeInfo {
 pub const ACOS_PAST_ONE: &str = "acos-past-one";
 
 /// The catalogue, in the worksheet's order.
-pub const CATALOGUE: [MistakeInfo; 49] = [
+pub const CATALOGUE: [MistakeInfo; 60] = [
     MistakeInfo {
         id: "normal-by-modelview",
         mistake: Some(Mistake::NormalByModelview),
@@ -309,6 +349,18 @@ pub const CATALOGUE: [MistakeInfo; 49] = [
         mistake: Some(Mistake::NormalNotTransformed),
         formula: "# vertexNormal = np.matmul(normalMatrix, vertexNormal)",
         words: || t!("check-cause-normal-not-transformed"),
+    },
+    MistakeInfo {
+        id: "normal-matrix-not-transposed",
+        mistake: Some(Mistake::NormalMatrixNotTransposed),
+        formula: "normalMatrix = np.linalg.inv(mview[:3, :3])",
+        words: || t!("check-cause-normal-matrix-not-transposed"),
+    },
+    MistakeInfo {
+        id: "row-vectors",
+        mistake: Some(Mistake::RowVectors),
+        formula: "vertexPos = np.matmul(vertexPos, mview)",
+        words: || t!("check-cause-row-vectors"),
     },
     MistakeInfo {
         id: "normal-not-normalised",
@@ -407,6 +459,12 @@ pub const CATALOGUE: [MistakeInfo; 49] = [
         words: || t!("check-cause-theta-in-degrees"),
     },
     MistakeInfo {
+        id: "diffuse-angle-not-cosine",
+        mistake: Some(Mistake::DiffuseAngleNotCosine),
+        formula: "Idif = (Ldif*matDif)*theta",
+        words: || t!("check-cause-diffuse-angle-not-cosine"),
+    },
+    MistakeInfo {
         id: ACOS_PAST_ONE,
         mistake: None,
         formula: "theta = m.acos(cosTheta)  # cosTheta = 1.0000000000000002",
@@ -417,6 +475,12 @@ pub const CATALOGUE: [MistakeInfo; 49] = [
         mistake: Some(Mistake::HalfwayNotNormalised),
         formula: "H = vlv + vov",
         words: || t!("check-cause-halfway-not-normalised"),
+    },
+    MistakeInfo {
+        id: "halfway-with-view-reversed",
+        mistake: Some(Mistake::HalfwayWithViewReversed),
+        formula: "H = (vlv - vov)",
+        words: || t!("check-cause-halfway-with-view-reversed"),
     },
     MistakeInfo {
         id: "reflection-for-halfway",
@@ -441,6 +505,12 @@ pub const CATALOGUE: [MistakeInfo; 49] = [
         mistake: Some(Mistake::SpecularCosineNotClamped),
         formula: "Ispec = (Lspec*matSpec)*(cosBeta**ns)",
         words: || t!("check-cause-specular-cosine-not-clamped"),
+    },
+    MistakeInfo {
+        id: "specular-angle-not-cosine",
+        mistake: Some(Mistake::SpecularAngleNotCosine),
+        formula: "Ispec = (Lspec*matSpec)*(beta**ns)",
+        words: || t!("check-cause-specular-angle-not-cosine"),
     },
     MistakeInfo {
         id: "specular-left-out",
@@ -485,6 +555,12 @@ pub const CATALOGUE: [MistakeInfo; 49] = [
         words: || t!("check-cause-attenuation-quadratic-not-squared"),
     },
     MistakeInfo {
+        id: "attenuation-terms-swapped",
+        mistake: Some(Mistake::AttenuationTermsSwapped),
+        formula: "at = atC + atLin*d*d + atQuad*d",
+        words: || t!("check-cause-attenuation-terms-swapped"),
+    },
+    MistakeInfo {
         id: "attenuation-object-distance",
         mistake: Some(Mistake::AttenuationObjectDistance),
         formula: "d = np.linalg.norm(lightPosObject - vertexPosObject)",
@@ -507,6 +583,12 @@ pub const CATALOGUE: [MistakeInfo; 49] = [
         mistake: Some(Mistake::SpotCutoffRadians),
         formula: "cosSpot >= m.cos(spotCutoff)",
         words: || t!("check-cause-spot-cutoff-radians"),
+    },
+    MistakeInfo {
+        id: "spot-cutoff-not-cosine",
+        mistake: Some(Mistake::SpotCutoffNotCosine),
+        formula: "if cosSpot >= spotCutoff:",
+        words: || t!("check-cause-spot-cutoff-not-cosine"),
     },
     MistakeInfo {
         id: "spot-direction-untransformed",
@@ -545,6 +627,12 @@ pub const CATALOGUE: [MistakeInfo; 49] = [
         words: || t!("check-cause-spot-left-out"),
     },
     MistakeInfo {
+        id: "spot-on-diffuse-only",
+        mistake: Some(Mistake::SpotOnDiffuseOnly),
+        formula: "Ilight = (Iamb + spot*Idif + Ispec)/at",
+        words: || t!("check-cause-spot-on-diffuse-only"),
+    },
+    MistakeInfo {
         id: "spot-on-whole-colour",
         mistake: Some(Mistake::SpotOnWholeColour),
         formula: "I = spot*(Iemi + Iscene + Ilight)",
@@ -555,6 +643,12 @@ pub const CATALOGUE: [MistakeInfo; 49] = [
         mistake: Some(Mistake::LightLeftOut),
         formula: "I = Iemi + Iscene + Ilight[0]  # + Ilight[1] ...",
         words: || t!("check-cause-light-left-out"),
+    },
+    MistakeInfo {
+        id: "only-last-light",
+        mistake: Some(Mistake::OnlyLastLight),
+        formula: "I = Iemi + Iscene + Ilight[i]",
+        words: || t!("check-cause-only-last-light"),
     },
     MistakeInfo {
         id: "scene-ambient-left-out",
@@ -575,10 +669,22 @@ pub const CATALOGUE: [MistakeInfo; 49] = [
         words: || t!("check-cause-emission-twice"),
     },
     MistakeInfo {
+        id: "emission-left-out",
+        mistake: Some(Mistake::EmissionLeftOut),
+        formula: "I = Iscene + Ilight",
+        words: || t!("check-cause-emission-left-out"),
+    },
+    MistakeInfo {
         id: "colour-not-clamped",
         mistake: Some(Mistake::ColourNotClamped),
         formula: "glColor = np.append(I[:3], 1)",
         words: || t!("check-cause-colour-not-clamped"),
+    },
+    MistakeInfo {
+        id: "alpha-from-sum",
+        mistake: Some(Mistake::AlphaFromSum),
+        formula: "glColor = np.append(np.clip(I[:3], 0, 1), I[3])",
+        words: || t!("check-cause-alpha-from-sum"),
     },
     MistakeInfo {
         id: "w-divide-forgotten",

@@ -48,6 +48,9 @@ struct Walk<'a> {
     key: &'a Key,
     made: Option<Made>,
     student: Option<&'a Printed>,
+    /// Do the cells divide by w (`vertexPos/vertexPos[3]`)? The export writes the divide
+    /// where the scene's vertex or a light needs it: a mistake does not add or remove it.
+    divide_w: bool,
     normal: DVec4,
     pos: DVec4,
     view: DVec4,
@@ -81,6 +84,12 @@ pub fn work_made(scene: &Scene, made: Option<Made>, student: Option<&Printed>) -
         key: &key,
         made,
         student,
+        divide_w: key.projective
+            || scene.vertex.position.w != 1.0
+            || scene.lights.iter().any(|l| {
+                let w = scene.light_pos_in_eye(l).w;
+                w != 0.0 && w != 1.0
+            }),
         normal: scene.vertex.normal.extend(0.0),
         pos: scene.vertex.position,
         view: DVec4::ZERO,
@@ -104,6 +113,18 @@ impl Walk<'_> {
     /// Is `m` the mistake made, and made for light `i`?
     fn made_at(&self, m: Mistake, i: usize) -> bool {
         self.made.is_some_and(|x| x.mistake == m && x.light.is_none_or(|l| l == i))
+    }
+
+    /// Is the mistake made written its second way?
+    fn second_way(&self) -> bool {
+        self.made.is_some_and(|x| x.second_way)
+    }
+
+    /// `m * v`, or `v` by `m` as a row vector (`np.matmul(v, m)`, the transpose) where
+    /// that is the mistake made (`all`: also for the normal and the spot direction, the
+    /// mistake written its first way).
+    fn times(&self, m: DMat4, v: DVec4, all: bool) -> DVec4 {
+        if self.made(Mistake::RowVectors) && (!all || !self.second_way()) { m.transpose() * v } else { m * v }
     }
 
     /// The colours mixed up for light `i`, where that is the mistake made.
@@ -186,9 +207,9 @@ impl Walk<'_> {
                 let p = if self.made(Mistake::VertexNotTransformed) {
                     self.scene.vertex.position
                 } else {
-                    m * self.scene.vertex.position
+                    self.times(m, self.scene.vertex.position, false)
                 };
-                let p = if p.w != 0.0 && p.w != 1.0 && !self.made(Mistake::WDivideForgotten) { p / p.w } else { p };
+                let p = if self.divide_w && !self.made(Mistake::WDivideForgotten) { p / p.w } else { p };
                 self.pos = self.emit4("vertexPos".into(), p);
             }
             Stage::ViewVector(viewer) => self.view_vector(viewer),
@@ -217,6 +238,17 @@ impl Walk<'_> {
         }
         if self.made(Mistake::NormalMatrixWithTranslation) {
             self.normal = m.inverse().transpose() * self.normal;
+            return;
+        }
+        let row = self.made(Mistake::RowVectors) && !self.second_way();
+        if self.made(Mistake::NormalMatrixNotTransposed)
+            || row && self.scene.rules.normal_transform() == NormalTransform::InverseTranspose
+        {
+            self.normal = (DMat3::from_mat4(*m).inverse() * self.normal.truncate()).extend(0.0);
+            return;
+        }
+        if row {
+            self.normal = m.transpose() * self.normal;
             return;
         }
         let by_m = match self.scene.rules.normal_transform() {
@@ -257,11 +289,14 @@ impl Walk<'_> {
         } else if self.made_at(Mistake::LightTransformedTwice, i) {
             to_eye * (to_eye * light.position)
         } else {
-            to_eye * light.position
+            self.times(to_eye, light.position, false)
         };
         let pos = self.emit4(self.name("lightPos", i), pos);
-        let point =
-            if pos.w != 0.0 && pos.w != 1.0 && !self.made_at(Mistake::WDivideForgotten, i) { pos / pos.w } else { pos };
+        let point = if self.divide_w && pos.w != 0.0 && !self.made_at(Mistake::WDivideForgotten, i) {
+            pos / pos.w
+        } else {
+            pos
+        };
         let directional = pos.w == 0.0 && !self.made_at(Mistake::DirectionalAsPoint, i);
         let mut vlv = if directional || self.made_at(Mistake::PointAsDirectional, i) { pos } else { point - self.pos };
         if self.made_at(Mistake::VlvReversed, i) {
@@ -283,11 +318,13 @@ impl Walk<'_> {
         let [c, l, q] = light.attenuation;
         let c = if self.made_at(Mistake::AttenuationConstantLeftOut, i) { 0.0 } else { c };
         let dd = if self.made_at(Mistake::AttenuationQuadraticNotSquared, i) { d } else { d * d };
+        let d_at_l = if self.made_at(Mistake::AttenuationTermsSwapped, i) { d * d } else { d };
+        let dd = if self.made_at(Mistake::AttenuationTermsSwapped, i) { d } else { dd };
         let state = &mut self.lights[i];
         state.pos = pos;
         state.vlv = vlv;
         state.d = d;
-        state.at = if directional { 1.0 } else { c + l * d + q * dd };
+        state.at = if directional { 1.0 } else { c + l * d_at_l + q * dd };
     }
 
     /// `d` (printed for a light with a position) and `at`.
@@ -309,7 +346,7 @@ impl Walk<'_> {
             let dir = if self.made_at(Mistake::SpotDirectionUntransformed, i) {
                 light.spot_direction
             } else {
-                DMat3::from_mat4(self.scene.eye_from_light(light)) * light.spot_direction
+                self.times(self.scene.eye_from_light(light), light.spot_direction.extend(0.0), true).truncate()
             };
             let dir = dir / dir.length();
             let towards = if self.made_at(Mistake::SpotAngleReversed, i) { 1.0 } else { -1.0 };
@@ -319,7 +356,8 @@ impl Walk<'_> {
             } else {
                 light.spot_cutoff.to_radians()
             };
-            let inside = (cos_spot >= cutoff.cos()) != self.made_at(Mistake::ConeTestInverted, i);
+            let limit = if self.made_at(Mistake::SpotCutoffNotCosine, i) { light.spot_cutoff } else { cutoff.cos() };
+            let inside = (cos_spot >= limit) != self.made_at(Mistake::ConeTestInverted, i);
             let exponent = if self.made_at(Mistake::SpotExponentIgnored, i) { 1.0 } else { light.spot_exponent };
             spot = if inside || self.made_at(Mistake::SpotExponentOutsideCone, i) {
                 cos_spot.max(0.0).powf(exponent)
@@ -333,7 +371,15 @@ impl Walk<'_> {
     /// `H = normalize(vlv + vov)`.
     fn halfway(&mut self, id: LightId) {
         let i = id.index();
-        let mut h = self.lights[i].vlv + self.view;
+        let mut h = if self.made_at(Mistake::HalfwayWithViewReversed, i) {
+            self.lights[i].vlv - self.view
+        } else {
+            self.lights[i].vlv + self.view
+        };
+        if self.made_at(Mistake::ReflectionForHalfway, i) && self.second_way() {
+            let l = self.lights[i].vlv;
+            h = 2.0 * self.normal.dot(l) * self.normal - l;
+        }
         if !self.made_at(Mistake::HalfwayNotNormalised, i) {
             h = unit(h);
         }
@@ -367,7 +413,8 @@ impl Walk<'_> {
         } else {
             cos < 0.0 && !self.made_at(Mistake::DiffuseNotClamped, i)
         };
-        let idif = if dark { DVec4::ZERO } else { ldif * mdif * cos };
+        let by = if self.made_at(Mistake::DiffuseAngleNotCosine, i) { cos.clamp(-1.0, 1.0).acos() } else { cos };
+        let idif = if dark { DVec4::ZERO } else { ldif * mdif * by };
         self.lights[i].cos_theta = cos;
         self.lights[i].idif = self.emit4(self.name("Idif", i), idif);
     }
@@ -377,6 +424,9 @@ impl Walk<'_> {
         let i = id.index();
         let s = self.lights[i];
         let (name, cos) = match vector {
+            SpecularVector::Halfway if self.made_at(Mistake::ReflectionForHalfway, i) && self.second_way() => {
+                ("cosBeta", self.view.dot(s.vector))
+            }
             SpecularVector::Halfway if self.made_at(Mistake::ReflectionForHalfway, i) => {
                 let r = 2.0 * self.normal.dot(s.vlv) * self.normal - s.vlv;
                 ("cosBeta", r.dot(self.view))
@@ -409,11 +459,13 @@ impl Walk<'_> {
             || s.cos_spec.is_nan()
             || self.scene.rules.specular_gate() == SpecularGate::PositiveCosine;
         let cos = if unclamped { s.cos_spec } else { s.cos_spec.max(0.0) };
+        let cos = if self.made_at(Mistake::SpecularAngleNotCosine, i) { cos.clamp(-1.0, 1.0).acos() } else { cos };
         let ispec = if gated { DVec4::ZERO } else { lspec * mspec * cos.powf(ns) * scale };
         let ispec = self.emit4(self.name("Ispec", i), ispec);
         let share = self.share(i, ispec);
         let share = self.emit4(self.name("Ilight", i), share);
-        if !self.made_at(Mistake::LightLeftOut, i) {
+        let last = i + 1 == self.lights.len();
+        if !self.made_at(Mistake::LightLeftOut, i) && (last || !self.made(Mistake::OnlyLastLight)) {
             self.sum += share;
         }
     }
@@ -428,7 +480,9 @@ impl Walk<'_> {
         let spot =
             if self.made_at(Mistake::SpotLeftOut, i) || self.made(Mistake::SpotOnWholeColour) { 1.0 } else { s.spot };
         let at = if self.made_at(Mistake::AttenuationLeftOut, i) { 1.0 } else { s.at };
-        if self.made_at(Mistake::AttenuationMultiplied, i) {
+        if self.made_at(Mistake::SpotOnDiffuseOnly, i) {
+            (iamb + s.spot * s.idif + ispec) / at
+        } else if self.made_at(Mistake::AttenuationMultiplied, i) {
             spot * (iamb + s.idif + ispec) * at
         } else if self.made_at(Mistake::AmbientNotAttenuated, i) {
             spot * (iamb + (s.idif + ispec) / at)
@@ -451,7 +505,9 @@ impl Walk<'_> {
         if !self.made(Mistake::SceneAmbientLeftOut) {
             self.sum += iscene;
         }
-        self.sum += iemi;
+        if !self.made(Mistake::EmissionLeftOut) {
+            self.sum += iemi;
+        }
         if self.made(Mistake::EmissionTwice) {
             self.sum += iemi;
         }
@@ -477,7 +533,7 @@ impl Walk<'_> {
                 }
             }))
         };
-        let alpha = self.scene.lit_material(Side::Front).diffuse.w;
+        let alpha = if self.made(Mistake::AlphaFromSum) { i.w } else { self.scene.lit_material(Side::Front).diffuse.w };
         if !self.key.separate_specular {
             self.emit4("glColor".into(), c.extend(alpha));
         }
