@@ -246,15 +246,15 @@ impl ColourSwap {
         out
     }
 
-    /// The product as the student wrote it: `Lspec*matDif`.
-    pub fn product(self) -> String {
-        let name = |t: Term| if self.light { t.light_name() } else { t.material_name() };
-        let taken = self.from.map(name);
-        match (self.light, taken) {
-            (true, Some(l)) => format!("{l}*{}", self.term.material_name()),
-            (true, None) => self.term.material_name().to_string(),
-            (false, Some(m)) => format!("{}*{m}", self.term.light_name()),
-            (false, None) => self.term.light_name().to_string(),
+    /// The product as the student wrote it: `Lspec*matDif`; `index` follows a light's
+    /// colour (`[2]`, or empty for the one light).
+    pub fn product(self, index: &str) -> String {
+        let (light, material) = (self.term.light_name(), self.term.material_name());
+        match (self.light, self.from) {
+            (true, Some(from)) => format!("{}{index}*{material}", from.light_name()),
+            (true, None) => material.to_string(),
+            (false, Some(from)) => format!("{light}{index}*{}", from.material_name()),
+            (false, None) => format!("{light}{index}"),
         }
     }
 }

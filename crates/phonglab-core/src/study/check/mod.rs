@@ -95,12 +95,8 @@ impl Cause {
             Some(swap) => {
                 let value = swap.term.value_name();
                 let i = self.light.map(|i| format!("[{i}]")).unwrap_or_default();
-                format!(
-                    "{value}{i} = {}  # {}{i}*{}",
-                    swap.product(),
-                    swap.term.light_name(),
-                    swap.term.material_name()
-                )
+                let right = format!("{}{i}*{}", swap.term.light_name(), swap.term.material_name());
+                format!("{value}{i} = ({})*...  # != {right}", swap.product(&i))
             }
             None => self.info.formula.to_string(),
         }
