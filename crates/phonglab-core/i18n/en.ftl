@@ -670,5 +670,11 @@ check-cause-spot-on-diffuse-only = the spot factor applied to the diffuse term o
 check-cause-only-last-light = only the last light's contribution in the sum (the loop's variable used after the loop)
 check-cause-emission-left-out = the material's emission left out of the sum
 check-cause-alpha-from-sum = the colour's alpha taken from the sum's fourth component (0) instead of the material's diffuse alpha
+check-cause-normal-as-point = the normal typed with w = 1 (as a point): the translation moves it
+check-cause-light-by-mview = the light transformed by the vertex's modelview mview instead of the one current when it was placed (an eye-fixed light moved with the camera)
+check-cause-spot-cutoff-halved = the cutoff taken as the cone's full angle: half of it used
+check-cause-spot-not-on-ambient = the spot factor not applied to the light's ambient term
+check-cause-attenuation-on-whole-colour = the attenuation dividing the whole colour (emission and scene ambient too)
+check-cause-attenuation-on-directional = a directional light (w = 0) attenuated: OpenGL does not attenuate it
 check-run-stopped = not checked: the run stopped with an error before the end: { $error }
 check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)

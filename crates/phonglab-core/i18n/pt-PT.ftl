@@ -670,5 +670,11 @@ check-cause-spot-on-diffuse-only = o fator do foco aplicado só à difusa (o Ope
 check-cause-only-last-light = só a contribuição da última luz na soma (a variável do ciclo usada depois do ciclo)
 check-cause-emission-left-out = falta a emissão do material na soma
 check-cause-alpha-from-sum = o alfa da cor tirado da quarta componente da soma (0) em vez do alfa da difusa do material
+check-cause-normal-as-point = a normal escrita com w = 1 (como um ponto): a translação desloca-a
+check-cause-light-by-mview = a luz transformada pela modelview do vértice, mview, em vez da que estava ativa quando foi colocada (uma luz fixa ao olho movida com a câmara)
+check-cause-spot-cutoff-halved = o ângulo de corte tomado como o ângulo total do cone: usada metade
+check-cause-spot-not-on-ambient = o fator do foco não aplicado ao termo ambiente da luz
+check-cause-attenuation-on-whole-colour = a atenuação a dividir a cor toda (também a emissão e o ambiente da cena)
+check-cause-attenuation-on-directional = uma luz direcional (w = 0) atenuada: o OpenGL não a atenua
 check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
 check-nothing-compared = não verificado: nada do que imprimiu é um passo da ficha; imprima cada valor como a ficha faz, print("vlv = ", vlv)

@@ -16,6 +16,8 @@ pub enum Mistake {
     NormalMatrixWithTranslation,
     /// The normal left as typed (not transformed at all).
     NormalNotTransformed,
+    /// The normal typed with a w of 1, so the modelview's translation moves it.
+    NormalAsPoint,
     /// The normal by the inverse of the modelview's 3x3, not its transpose.
     NormalMatrixNotTransposed,
     /// `np.matmul(v, mview)`: points (and, written the first way, the normal) multiplied
@@ -29,6 +31,9 @@ pub enum Mistake {
     LightNotTransformed,
     /// The light's position transformed by the modelview twice.
     LightTransformedTwice,
+    /// The light transformed by the vertex's modelview `mview` instead of the one current
+    /// when it was placed (an eye-fixed light moved with the camera).
+    LightByMview,
     /// `vlv = P - L`: from the light to the vertex.
     VlvReversed,
     /// `vlv` not normalised.
@@ -74,6 +79,10 @@ pub enum Mistake {
     SpotCutoffRadians,
     /// The spot's cosine compared with the cutoff in degrees itself.
     SpotCutoffNotCosine,
+    /// The cutoff taken as the cone's full angle: half of it used.
+    SpotCutoffHalved,
+    /// The spot factor not applied to the light's ambient term.
+    SpotNotOnAmbient,
     /// The spot factor on the diffuse term alone.
     SpotOnDiffuseOnly,
     /// The spot exponent applied outside the cone too (no cone test).
@@ -96,6 +105,10 @@ pub enum Mistake {
     AttenuationLeftOut,
     /// The light's ambient not divided by the attenuation (only diffuse and specular).
     AmbientNotAttenuated,
+    /// The attenuation dividing the whole colour (emission and scene ambient too).
+    AttenuationOnWholeColour,
+    /// A directional light attenuated (OpenGL's attenuation is 1 for w = 0).
+    AttenuationOnDirectional,
     /// The constant attenuation term left out.
     AttenuationConstantLeftOut,
     /// The quadratic term with `d` instead of `d*d`.
@@ -156,6 +169,8 @@ impl Mistake {
             Mistake::NormalByModelview
                 | Mistake::NormalMatrixWithTranslation
                 | Mistake::NormalNotTransformed
+                | Mistake::NormalAsPoint
+                | Mistake::AttenuationOnWholeColour
                 | Mistake::NormalMatrixNotTransposed
                 | Mistake::RowVectors
                 | Mistake::OnlyLastLight
@@ -177,7 +192,7 @@ impl Mistake {
 }
 
 /// One of the three terms a light and a material each give a colour to.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Term {
     /// `Lamb`, `matAmb`.
     Ambient,
@@ -229,6 +244,8 @@ pub struct ColourSwap {
     pub light: bool,
     /// The term whose colour was taken instead; `None`: the colour left out.
     pub from: Option<Term>,
+    /// The two terms' colours exchanged: `from` takes `term`'s too.
+    pub exchanged: bool,
 }
 
 impl ColourSwap {
@@ -239,7 +256,10 @@ impl ColourSwap {
         for term in Term::ALL {
             for light in [true, false] {
                 for from in Term::ALL.into_iter().filter(|&f| f != term).map(Some).chain([None]) {
-                    out.push(ColourSwap { term, light, from });
+                    out.push(ColourSwap { term, light, from, exchanged: false });
+                }
+                for from in Term::ALL.into_iter().filter(|&f| f > term) {
+                    out.push(ColourSwap { term, light, from: Some(from), exchanged: true });
                 }
             }
         }
@@ -269,27 +289,29 @@ pub struct Made {
     pub light: Option<usize>,
     /// The colours mixed up.
     pub swap: Option<ColourSwap>,
-    /// The mistake written its second way (`H = R` for R·V; the normal left alone by
-    /// row vectors).
-    pub second_way: bool,
+    /// Which way the mistake is written (0: the first; R·V for N·H: 1 `H = R` with
+    /// `cosBeta = vov . H`, 2 `H = R` with `cosBeta = N . H`; row vectors: 1 the normal
+    /// left alone).
+    pub way: u8,
 }
 
 impl Made {
     /// `mistake` made for every light.
     pub fn everywhere(mistake: Mistake) -> Made {
-        Made { mistake, light: None, swap: None, second_way: false }
+        Made { mistake, light: None, swap: None, way: 0 }
     }
 
     /// Every way `mistake` can be made in a scene of `lights` lights: for all lights, then
     /// (of several) for each alone; each colour swap.
     pub fn instances(mistake: Mistake, lights: usize) -> Vec<Made> {
-        if mistake == Mistake::SpotOnWholeColour && lights != 1 || mistake == Mistake::OnlyLastLight && lights < 2 {
+        let one_light_only = matches!(mistake, Mistake::SpotOnWholeColour | Mistake::AttenuationOnWholeColour);
+        if one_light_only && lights != 1 || mistake == Mistake::OnlyLastLight && lights < 2 {
             return Vec::new();
         }
-        let ways: &[bool] = if matches!(mistake, Mistake::ReflectionForHalfway | Mistake::RowVectors) {
-            &[false, true]
-        } else {
-            &[false]
+        let ways: &[u8] = match mistake {
+            Mistake::ReflectionForHalfway => &[0, 1, 2],
+            Mistake::RowVectors => &[0, 1],
+            _ => &[0],
         };
         let mut at: Vec<Option<usize>> = vec![None];
         if mistake.per_light() && lights > 1 {
@@ -301,10 +323,10 @@ impl Made {
             vec![None]
         };
         let mut out = Vec::new();
-        for &second_way in ways {
+        for &way in ways {
             for &swap in &swaps {
                 for &light in &at {
-                    out.push(Made { mistake, light, swap, second_way });
+                    out.push(Made { mistake, light, swap, way });
                 }
             }
         }
@@ -331,7 +353,7 @@ pub struct MistakeInfo {
 pub const ACOS_PAST_ONE: &str = "acos-past-one";
 
 /// The catalogue, in the worksheet's order.
-pub const CATALOGUE: [MistakeInfo; 60] = [
+pub const CATALOGUE: [MistakeInfo; 66] = [
     MistakeInfo {
         id: "normal-by-modelview",
         mistake: Some(Mistake::NormalByModelview),
@@ -349,6 +371,12 @@ pub const CATALOGUE: [MistakeInfo; 60] = [
         mistake: Some(Mistake::NormalNotTransformed),
         formula: "# vertexNormal = np.matmul(normalMatrix, vertexNormal)",
         words: || t!("check-cause-normal-not-transformed"),
+    },
+    MistakeInfo {
+        id: "normal-as-point",
+        mistake: Some(Mistake::NormalAsPoint),
+        formula: "vertexNormal = np.array([0, 0, 1, 1])",
+        words: || t!("check-cause-normal-as-point"),
     },
     MistakeInfo {
         id: "normal-matrix-not-transposed",
@@ -385,6 +413,12 @@ pub const CATALOGUE: [MistakeInfo; 60] = [
         mistake: Some(Mistake::LightTransformedTwice),
         formula: "lightPos = np.matmul(mview, np.matmul(mview, lightPos))",
         words: || t!("check-cause-light-transformed-twice"),
+    },
+    MistakeInfo {
+        id: "light-by-mview",
+        mistake: Some(Mistake::LightByMview),
+        formula: "lightPos = np.matmul(mview, lightPos)  # lightMview",
+        words: || t!("check-cause-light-by-mview"),
     },
     MistakeInfo {
         id: "vlv-reversed",
@@ -543,6 +577,18 @@ pub const CATALOGUE: [MistakeInfo; 60] = [
         words: || t!("check-cause-ambient-not-attenuated"),
     },
     MistakeInfo {
+        id: "attenuation-on-whole-colour",
+        mistake: Some(Mistake::AttenuationOnWholeColour),
+        formula: "I = (Iemi + Iscene + Ilight)/at",
+        words: || t!("check-cause-attenuation-on-whole-colour"),
+    },
+    MistakeInfo {
+        id: "attenuation-on-directional",
+        mistake: Some(Mistake::AttenuationOnDirectional),
+        formula: "at = atC + atLin*d + atQuad*d*d  # lightPos[3] == 0",
+        words: || t!("check-cause-attenuation-on-directional"),
+    },
+    MistakeInfo {
         id: "attenuation-constant-left-out",
         mistake: Some(Mistake::AttenuationConstantLeftOut),
         formula: "at = atLin*d + atQuad*d*d",
@@ -591,6 +637,12 @@ pub const CATALOGUE: [MistakeInfo; 60] = [
         words: || t!("check-cause-spot-cutoff-not-cosine"),
     },
     MistakeInfo {
+        id: "spot-cutoff-halved",
+        mistake: Some(Mistake::SpotCutoffHalved),
+        formula: "m.cos(m.radians(spotCutoff/2))",
+        words: || t!("check-cause-spot-cutoff-halved"),
+    },
+    MistakeInfo {
         id: "spot-direction-untransformed",
         mistake: Some(Mistake::SpotDirectionUntransformed),
         formula: "spotDir = lightSpotDir[:3]",
@@ -631,6 +683,12 @@ pub const CATALOGUE: [MistakeInfo; 60] = [
         mistake: Some(Mistake::SpotOnDiffuseOnly),
         formula: "Ilight = (Iamb + spot*Idif + Ispec)/at",
         words: || t!("check-cause-spot-on-diffuse-only"),
+    },
+    MistakeInfo {
+        id: "spot-not-on-ambient",
+        mistake: Some(Mistake::SpotNotOnAmbient),
+        formula: "Ilight = (Iamb + spot*(Idif + Ispec))/at",
+        words: || t!("check-cause-spot-not-on-ambient"),
     },
     MistakeInfo {
         id: "spot-on-whole-colour",

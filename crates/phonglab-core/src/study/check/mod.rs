@@ -276,7 +276,7 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
 /// of them together (named together). `None` where none does.
 fn right_given(scene: &Scene, given: &Worked, wrong: &[&PrintedValue], p: &PrintedValue) -> Option<String> {
     for w in wrong.iter().rev() {
-        let one = Printed { values: vec![(*w).clone()], errors: Vec::new() };
+        let one = Printed { values: vec![(*w).clone()], ..Printed::default() };
         if work(scene, None, Some(&one)).get(&p.name).is_some_and(|g| given_from_printed(p, g)) {
             return Some(w.name.clone());
         }
@@ -306,7 +306,38 @@ fn causes(own: &Scene, key: &Worked, student: &Printed, assumed: Rules) -> Vec<C
     if let Some(c) = acos_past_one(student) {
         out.push(c);
     }
+    // Causes the printed values cannot tell apart (a spot of 0) in the order the student's
+    // code makes likely: one whose formula is in it first (the catalogue's order kept
+    // otherwise). What is named is never chosen by the code, only its order.
+    out.sort_by_key(|c| !written(&c.formula(), &student.code));
     out
+}
+
+/// Is `formula`'s statement (before its comment) in `code`? Spaces, a light's index
+/// (`[i]`, `[2]`) and `;` are ignored on both sides.
+fn written(formula: &str, code: &str) -> bool {
+    fn plain(s: &str) -> String {
+        let mut out = String::with_capacity(s.len());
+        let mut rest = s;
+        while let Some(c) = rest.chars().next() {
+            if c == '[' {
+                if let Some(end) = rest.find(']') {
+                    let inner = &rest[1..end];
+                    if inner == "i" || !inner.is_empty() && inner.chars().all(|d| d.is_ascii_digit()) {
+                        rest = &rest[end + 1..];
+                        continue;
+                    }
+                }
+            }
+            if !c.is_whitespace() && c != ';' {
+                out.push(c);
+            }
+            rest = &rest[c.len_utf8()..];
+        }
+        out
+    }
+    let statement = plain(formula.split("  #").next().unwrap_or(formula));
+    !statement.is_empty() && !code.is_empty() && plain(code).contains(&statement)
 }
 
 /// Does `made` (the key worked with a mistake) give every value the student printed, one

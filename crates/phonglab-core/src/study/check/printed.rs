@@ -27,6 +27,9 @@ pub struct Printed {
     pub values: Vec<PrintedValue>,
     /// The errors the run stopped with (`ValueError: math domain error`).
     pub errors: Vec<String>,
+    /// A notebook's code cells as written (never run): read only to order causes whose
+    /// values the printed ones cannot tell apart, by the formula the student wrote.
+    pub code: String,
 }
 
 impl Printed {
@@ -63,7 +66,7 @@ pub const MAX_VALUE_LINES: usize = MAX_NUMBERS + 1;
 /// The values printed in `text`, as [`read_printed_text`]; a text printing more than
 /// [`MAX_VALUES`] values gives none, its refusal in `errors` (nothing is checked in part).
 pub fn printed_text(text: &str) -> Printed {
-    read_printed_text(text).unwrap_or_else(|e| Printed { values: Vec::new(), errors: vec![e.to_string()] })
+    read_printed_text(text).unwrap_or_else(|e| Printed { errors: vec![e.to_string()], ..Printed::default() })
 }
 
 /// The values printed in `text`, a script's standard output (or a notebook's outputs, one
@@ -122,8 +125,11 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
         OutputsError::NotANotebook(crate::t!("import-not-notebook", reason = crate::t!("import-no-cells")))
     })?;
     let mut text = String::new();
+    let mut code = String::new();
     let mut any = false;
     for cell in cells.iter().filter(|c| c["cell_type"] == "code") {
+        code.push_str(&joined(&cell["source"]));
+        code.push('\n');
         for output in cell["outputs"].as_array().map(Vec::as_slice).unwrap_or_default() {
             any = true;
             match output["output_type"].as_str() {
@@ -141,7 +147,7 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
     if !any {
         return Err(OutputsError::NoOutputs(crate::t!("check-no-outputs")));
     }
-    read_printed_text(&text)
+    read_printed_text(&text).map(|p| Printed { code, ..p })
 }
 
 /// A notebook's multi-line text: one string, or a list of lines.

@@ -115,16 +115,16 @@ impl Walk<'_> {
         self.made.is_some_and(|x| x.mistake == m && x.light.is_none_or(|l| l == i))
     }
 
-    /// Is the mistake made written its second way?
-    fn second_way(&self) -> bool {
-        self.made.is_some_and(|x| x.second_way)
+    /// Which way the mistake made is written ([`Made::way`]).
+    fn way(&self) -> u8 {
+        self.made.map_or(0, |x| x.way)
     }
 
     /// `m * v`, or `v` by `m` as a row vector (`np.matmul(v, m)`, the transpose) where
     /// that is the mistake made (`all`: also for the normal and the spot direction, the
     /// mistake written its first way).
     fn times(&self, m: DMat4, v: DVec4, all: bool) -> DVec4 {
-        if self.made(Mistake::RowVectors) && (!all || !self.second_way()) { m.transpose() * v } else { m * v }
+        if self.made(Mistake::RowVectors) && (!all || self.way() == 0) { m.transpose() * v } else { m * v }
     }
 
     /// The colours mixed up for light `i`, where that is the mistake made.
@@ -150,7 +150,15 @@ impl Walk<'_> {
             })
         };
         let one = DVec4::new(1.0, 1.0, 1.0, 0.0);
-        match self.swap_at(i).filter(|s| s.term == term) {
+        // An exchange: the other term takes this one's colour.
+        let swap = self.swap_at(i).and_then(|s| match s {
+            ColourSwap { exchanged: true, from: Some(f), .. } if f == term => {
+                Some(ColourSwap { term, from: Some(s.term), ..s })
+            }
+            s if s.term == term => Some(s),
+            _ => None,
+        });
+        match swap {
             Some(ColourSwap { light: true, from, .. }) => (from.map_or(one, of_light), of_material(term)),
             Some(ColourSwap { light: false, from, .. }) => (of_light(term), from.map_or(one, of_material)),
             None => (of_light(term), of_material(term)),
@@ -240,7 +248,11 @@ impl Walk<'_> {
             self.normal = m.inverse().transpose() * self.normal;
             return;
         }
-        let row = self.made(Mistake::RowVectors) && !self.second_way();
+        if self.made(Mistake::NormalAsPoint) && self.scene.rules.normal_transform() == NormalTransform::Modelview {
+            self.normal = *m * self.normal.truncate().extend(1.0);
+            return;
+        }
+        let row = self.made(Mistake::RowVectors) && self.way() == 0;
         if self.made(Mistake::NormalMatrixNotTransposed)
             || row && self.scene.rules.normal_transform() == NormalTransform::InverseTranspose
         {
@@ -288,6 +300,8 @@ impl Walk<'_> {
             light.position
         } else if self.made_at(Mistake::LightTransformedTwice, i) {
             to_eye * (to_eye * light.position)
+        } else if self.made_at(Mistake::LightByMview, i) {
+            self.times(self.scene.eye_from_object(), light.position, false)
         } else {
             self.times(to_eye, light.position, false)
         };
@@ -320,11 +334,12 @@ impl Walk<'_> {
         let dd = if self.made_at(Mistake::AttenuationQuadraticNotSquared, i) { d } else { d * d };
         let d_at_l = if self.made_at(Mistake::AttenuationTermsSwapped, i) { d * d } else { d };
         let dd = if self.made_at(Mistake::AttenuationTermsSwapped, i) { d } else { dd };
+        let attenuated = !directional || self.made_at(Mistake::AttenuationOnDirectional, i);
         let state = &mut self.lights[i];
         state.pos = pos;
         state.vlv = vlv;
         state.d = d;
-        state.at = if directional { 1.0 } else { c + l * d_at_l + q * dd };
+        state.at = if attenuated { c + l * d_at_l + q * dd } else { 1.0 };
     }
 
     /// `d` (printed for a light with a position) and `at`.
@@ -353,6 +368,8 @@ impl Walk<'_> {
             let cos_spot = (towards * self.lights[i].vlv.truncate()).dot(dir);
             let cutoff = if self.made_at(Mistake::SpotCutoffRadians, i) {
                 light.spot_cutoff
+            } else if self.made_at(Mistake::SpotCutoffHalved, i) {
+                (light.spot_cutoff / 2.0).to_radians()
             } else {
                 light.spot_cutoff.to_radians()
             };
@@ -376,7 +393,7 @@ impl Walk<'_> {
         } else {
             self.lights[i].vlv + self.view
         };
-        if self.made_at(Mistake::ReflectionForHalfway, i) && self.second_way() {
+        if self.made_at(Mistake::ReflectionForHalfway, i) && self.way() > 0 {
             let l = self.lights[i].vlv;
             h = 2.0 * self.normal.dot(l) * self.normal - l;
         }
@@ -424,10 +441,10 @@ impl Walk<'_> {
         let i = id.index();
         let s = self.lights[i];
         let (name, cos) = match vector {
-            SpecularVector::Halfway if self.made_at(Mistake::ReflectionForHalfway, i) && self.second_way() => {
+            SpecularVector::Halfway if self.made_at(Mistake::ReflectionForHalfway, i) && self.way() == 1 => {
                 ("cosBeta", self.view.dot(s.vector))
             }
-            SpecularVector::Halfway if self.made_at(Mistake::ReflectionForHalfway, i) => {
+            SpecularVector::Halfway if self.made_at(Mistake::ReflectionForHalfway, i) && self.way() == 0 => {
                 let r = 2.0 * self.normal.dot(s.vlv) * self.normal - s.vlv;
                 ("cosBeta", r.dot(self.view))
             }
@@ -479,8 +496,14 @@ impl Walk<'_> {
             if self.key.separate_specular || self.made_at(Mistake::SpecularLeftOut, i) { DVec4::ZERO } else { ispec };
         let spot =
             if self.made_at(Mistake::SpotLeftOut, i) || self.made(Mistake::SpotOnWholeColour) { 1.0 } else { s.spot };
-        let at = if self.made_at(Mistake::AttenuationLeftOut, i) { 1.0 } else { s.at };
-        if self.made_at(Mistake::SpotOnDiffuseOnly, i) {
+        let at = if self.made_at(Mistake::AttenuationLeftOut, i) || self.made(Mistake::AttenuationOnWholeColour) {
+            1.0
+        } else {
+            s.at
+        };
+        if self.made_at(Mistake::SpotNotOnAmbient, i) {
+            (iamb + s.spot * (s.idif + ispec)) / at
+        } else if self.made_at(Mistake::SpotOnDiffuseOnly, i) {
             (iamb + s.spot * s.idif + ispec) / at
         } else if self.made_at(Mistake::AttenuationMultiplied, i) {
             spot * (iamb + s.idif + ispec) * at
@@ -517,6 +540,9 @@ impl Walk<'_> {
     fn finish(&mut self) {
         if self.made(Mistake::SpotOnWholeColour) {
             self.sum *= self.lights.first().map_or(1.0, |l| l.spot);
+        }
+        if self.made(Mistake::AttenuationOnWholeColour) {
+            self.sum /= self.lights.first().map_or(1.0, |l| l.at);
         }
         let i = self.emit4("I".into(), self.sum);
         let c = if self.made(Mistake::ColourNotClamped) {
