@@ -245,3 +245,25 @@ fn the_catalogues_formulas_hold_no_english_words() {
         }
     }
 }
+
+/// "Rounding" is single precision, not three digits: a share printed 8 parts in 10^4 off
+/// the key (the spot left off the ambient, in a blind set) is wrong, and the work is not
+/// right; one off by what `float` arithmetic gives (a part in 10^6) is rounding.
+#[test]
+fn a_small_real_difference_is_wrong_and_single_precision_is_rounding() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = work(&scene, None, None);
+    let with_i = |scale: f64| {
+        let mut w = key.clone();
+        let k = w.values.iter().position(|(n, _)| n == "I").unwrap();
+        w.values[k].1.iter_mut().for_each(|x| *x *= scale);
+        w.values.retain(|(n, _)| n != "glColor");
+        check(&scene, &scene, &printed_text(&printed_of(&w)))
+    };
+    let off = with_i(1.0008);
+    assert_eq!(off.steps.iter().find(|s| s.name == "I").unwrap().verdict, Verdict::Wrong);
+    assert!(!off.right());
+    let float = with_i(1.000_001);
+    assert_eq!(float.steps.iter().find(|s| s.name == "I").unwrap().verdict, Verdict::Rounding);
+    assert!(float.right());
+}

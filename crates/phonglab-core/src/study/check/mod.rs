@@ -219,12 +219,20 @@ fn given_from_printed(got: &PrintedValue, want: &[f64]) -> bool {
         || got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| (g - w).abs() <= 1e-6 * size + h)
 }
 
-/// Is `got` the key's to about three significant digits, each number? (A key of 0 is
-/// rounded only to 0: a tiny value where there should be none is a term computed that
-/// should not be.)
+/// Is `got` the key's rounded, each number: to the digits the student's number itself
+/// shows (`0.7922` for 0.79220526; at least three significant digits), or to single
+/// precision (two parts in 10^5: a program computing in `float`, C++, GLSL or
+/// `np.float32`)? (A key of 0 is rounded only to 0: a tiny value where there should be
+/// none is a term computed that should not be.) Anything else is a mistake: the spot left
+/// off the ambient changes a share printed to 8 decimals by 8 parts in 10^4, and was once
+/// passed as "rounding" by a three-digit rule.
 fn close(got: &PrintedValue, want: &[f64]) -> bool {
     let Some(want) = aligned(got, want) else { return false };
-    got.numbers.iter().zip(&got.half_units).zip(want).all(|((g, h), w)| (g - w).abs() <= 1e-3 * w.abs() + h)
+    got.numbers.iter().zip(&got.half_units).zip(&got.own_half_units).zip(want).all(|(((g, h), own), w)| {
+        let float = (g - w).abs() <= 2e-5 * w.abs() + h;
+        let rounded = *own <= 5e-4 * w.abs() && (g - w).abs() <= own * (1.0 + 1e-9) + SLACK * w.abs().max(1.0);
+        float || rounded
+    })
 }
 
 /// Checks what `student` printed against the key of `assignment`; `own` is the scene the
@@ -249,7 +257,8 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
         } else {
             Verdict::Wrong
         };
-        if verdict != Verdict::Right && verdict != Verdict::Rounding {
+        // A rounded value is carried too: what follows from it is right given it.
+        if verdict != Verdict::Right {
             wrong_so_far.push(p);
         }
         if verdict == Verdict::Wrong && first_wrong.is_none() {

@@ -13,8 +13,12 @@ pub struct PrintedValue {
     pub name: String,
     /// Its numbers, in order (a matrix's rows one after the other).
     pub numbers: Vec<f64>,
-    /// Half a unit of each number's last printed digit.
+    /// Half a unit of each number's last printed digit (an array's finest: NumPy pads a
+    /// short element, so `0.6` beside `0.55887606` is exact to 8 decimals).
     pub half_units: Vec<f64>,
+    /// Half a unit of the last digit each number itself shows (`0.7922`: 0.00005): how
+    /// far a value the student rounded may be from the key's.
+    pub own_half_units: Vec<f64>,
     /// Was each number printed in fixed notation (`0.5`, not `5e-01`)?
     pub fixed: Vec<bool>,
 }
@@ -208,7 +212,8 @@ fn numbers(name: &str, value: &str) -> Option<PrintedValue> {
             return None;
         }
     }
-    (!numbers.is_empty()).then(|| PrintedValue { name: name.to_string(), numbers, half_units, fixed })
+    let own_half_units = half_units.clone();
+    (!numbers.is_empty()).then(|| PrintedValue { name: name.to_string(), numbers, half_units, own_half_units, fixed })
 }
 
 /// One number as NumPy or Python prints it (`0.`, `-0.`, `1.5e-05`, `3`), with half a unit
