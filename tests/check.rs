@@ -141,6 +141,21 @@ fn eye_fixed() -> Document {
     d
 }
 
+/// The worksheet's rules with the light right below the vertex (L = -N): its specular
+/// cosine N.H < 0.
+fn worksheet_behind() -> Document {
+    let mut d = worksheet();
+    d.scene.lights[0].position = DVec4::new(-512.0, -384.0, -90.0, 1.0);
+    d
+}
+
+/// The worksheet's light given as (0, 0, 180, 2): the same point, divided by its w.
+fn light_w2() -> Document {
+    let mut d = worksheet();
+    d.scene.lights[0].position = DVec4::new(0.0, 0.0, 180.0, 2.0);
+    d
+}
+
 /// The spotlight with an ambient colour: every term of its share is printed.
 fn lit_spot() -> Document {
     let mut d = spot(25.0);
@@ -433,6 +448,31 @@ fn more_cases() -> Vec<Case> {
             directional(),
             vec![("if lightPos[-1] == 0:\n    at = 1", "if False:\n    at = 1")],
         ),
+        ("vov-with-w", worksheet(), vec![("vov = (obs - vertexPos)", "vov = -vertexPos")]),
+        (
+            "specular-test-in-degrees",
+            worksheet_behind(),
+            vec![("if (beta > m.pi*0.5 or beta < 0):", "if (beta > 90 or beta < 0):")],
+        ),
+        (
+            "specular-times-cosine",
+            worksheet(),
+            vec![("Ispec = (Lspec*matSpec)*(cosBeta**ns)", "Ispec = (Lspec*matSpec)*(cosBeta**ns)*cosTheta")],
+        ),
+        (
+            "shininess-as-product",
+            worksheet(),
+            vec![("Ispec = (Lspec*matSpec)*(cosBeta**ns)", "Ispec = (Lspec*matSpec)*(cosBeta*ns)")],
+        ),
+        (
+            "distance-without-w-divide",
+            light_w2(),
+            vec![(
+                "d = np.linalg.norm(lightPos/lightPos[3] - vertexPos);",
+                "d = np.linalg.norm(lightPos - vertexPos);",
+            )],
+        ),
+        ("scene-ambient-wrong-material", opengl(), vec![("Iscene = matAmb*sceneAmb", "Iscene = matDif*sceneAmb")]),
         (
             "alpha-from-sum",
             opengl(),
@@ -500,6 +540,8 @@ fn every_catalogue_mistake_written_into_a_notebook_is_named_and_the_unchanged_on
         lit_spot(),
         eye_fixed(),
         directional(),
+        worksheet_behind(),
+        light_w2(),
         scene("three-lights.toml"),
     ];
     unchanged.dedup_by(|a, b| a.to_toml().unwrap() == b.to_toml().unwrap());

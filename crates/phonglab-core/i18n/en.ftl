@@ -676,5 +676,11 @@ check-cause-spot-cutoff-halved = the cutoff taken as the cone's full angle: half
 check-cause-spot-not-on-ambient = the spot factor not applied to the light's ambient term
 check-cause-attenuation-on-whole-colour = the attenuation dividing the whole colour (emission and scene ambient too)
 check-cause-attenuation-on-directional = a directional light (w = 0) attenuated: OpenGL does not attenuate it
+check-cause-vov-with-w = vov = -vertexPos normalised with its w (-1) in the length: the view vector is a direction, its w is 0
+check-cause-specular-test-in-degrees = the specular's angle test compares beta in radians with 90 (degrees): it never cuts the specular off
+check-cause-specular-times-cosine = the specular also multiplied by N·L (only the diffuse is)
+check-cause-shininess-as-product = the shininess as a factor (cosBeta*ns) instead of a power (cosBeta**ns)
+check-cause-distance-without-w-divide = the distance from the light's position not divided by its w (vlv is)
+check-cause-scene-ambient-wrong-material = the scene's global ambient multiplied by the material's diffuse or specular colour instead of its ambient
 check-run-stopped = not checked: the run stopped with an error before the end: { $error }
 check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)

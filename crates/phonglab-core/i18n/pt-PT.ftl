@@ -676,5 +676,11 @@ check-cause-spot-cutoff-halved = o ângulo de corte tomado como o ângulo total 
 check-cause-spot-not-on-ambient = o fator do foco não aplicado ao termo ambiente da luz
 check-cause-attenuation-on-whole-colour = a atenuação a dividir a cor toda (também a emissão e o ambiente da cena)
 check-cause-attenuation-on-directional = uma luz direcional (w = 0) atenuada: o OpenGL não a atenua
+check-cause-vov-with-w = vov = -vertexPos normalizado com o seu w (-1) no comprimento: o vetor de vista é uma direção, o seu w é 0
+check-cause-specular-test-in-degrees = o teste do ângulo especular compara beta em radianos com 90 (graus): nunca corta a especular
+check-cause-specular-times-cosine = a especular também multiplicada por N·L (só a difusa o é)
+check-cause-shininess-as-product = o brilho como fator (cosBeta*ns) em vez de potência (cosBeta**ns)
+check-cause-distance-without-w-divide = a distância calculada com a posição da luz sem dividir pelo seu w (o vlv divide)
+check-cause-scene-ambient-wrong-material = o ambiente global da cena multiplicado pela cor difusa ou especular do material em vez da ambiente
 check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
 check-nothing-compared = não verificado: nada do que imprimiu é um passo da ficha; imprima cada valor como a ficha faz, print("vlv = ", vlv)

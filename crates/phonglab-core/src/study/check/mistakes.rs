@@ -46,6 +46,8 @@ pub enum Mistake {
     ViewerSwapped,
     /// `vov` from the eye to the vertex (the local viewer's vector reversed).
     ViewerReversed,
+    /// `vov = -vertexPos` normalised with its w of -1 in the length.
+    ViewerWithW,
     /// `H = vlv + vov`, not normalised.
     HalfwayNotNormalised,
     /// Phong's `R . V` where the rules take Blinn-Phong's `N . H` (written the second
@@ -59,6 +61,13 @@ pub enum Mistake {
     CosThetaWithLightPosition,
     /// Specular where `N . L <= 0` (OpenGL's gate left out).
     SpecularWithoutGate,
+    /// The worksheet's angle test on beta in radians compared with 90 (degrees): it
+    /// never cuts the specular off.
+    SpecularTestInDegrees,
+    /// The specular also multiplied by `N . L`.
+    SpecularTimesCosine,
+    /// The shininess as a factor (`cosBeta*ns`) instead of a power.
+    ShininessAsProduct,
     /// The specular cosine not clamped at 0 before the power.
     SpecularCosineNotClamped,
     /// The diffuse term not clamped: negative past 90 degrees.
@@ -117,6 +126,8 @@ pub enum Mistake {
     AttenuationTermsSwapped,
     /// The light's distance measured in object space.
     AttenuationObjectDistance,
+    /// The distance from the light's position not divided by its w (while `vlv` is).
+    DistanceWithoutWDivide,
     /// The distance taken from the normalised `vlv` (so 1).
     DistanceFromNormalisedVlv,
     /// The distance squared (no square root).
@@ -133,6 +144,9 @@ pub enum Mistake {
     SceneAmbientLeftOut,
     /// The scene's ambient not multiplied by the material's ambient.
     SceneAmbientWithoutMaterial,
+    /// The scene's ambient multiplied by the material's diffuse (first way) or specular
+    /// colour instead of its ambient.
+    SceneAmbientWrongMaterial,
     /// The emission added twice.
     EmissionTwice,
     /// The emission left out of the sum.
@@ -155,6 +169,7 @@ impl Mistake {
         use crate::model::rules::{NormalTransform, SpecularGate, SpecularVector};
         match self {
             Mistake::SpecularWithoutGate => rules.specular_gate() == SpecularGate::LitSide,
+            Mistake::SpecularTestInDegrees => rules.specular_gate() == SpecularGate::PositiveCosine,
             Mistake::NormalByModelview => rules.normal_transform() == NormalTransform::InverseTranspose,
             Mistake::ReflectionForHalfway => rules.specular.vector() == SpecularVector::Halfway,
             Mistake::ReflectionReversed => rules.specular.vector() == SpecularVector::Reflection,
@@ -180,6 +195,8 @@ impl Mistake {
                 | Mistake::VertexNotTransformed
                 | Mistake::ViewerSwapped
                 | Mistake::ViewerReversed
+                | Mistake::ViewerWithW
+                | Mistake::SceneAmbientWrongMaterial
                 | Mistake::SpotOnWholeColour
                 | Mistake::SceneAmbientLeftOut
                 | Mistake::SceneAmbientWithoutMaterial
@@ -310,7 +327,7 @@ impl Made {
         }
         let ways: &[u8] = match mistake {
             Mistake::ReflectionForHalfway => &[0, 1, 2],
-            Mistake::RowVectors => &[0, 1],
+            Mistake::RowVectors | Mistake::SceneAmbientWrongMaterial => &[0, 1],
             _ => &[0],
         };
         let mut at: Vec<Option<usize>> = vec![None];
@@ -353,7 +370,7 @@ pub struct MistakeInfo {
 pub const ACOS_PAST_ONE: &str = "acos-past-one";
 
 /// The catalogue, in the worksheet's order.
-pub const CATALOGUE: [MistakeInfo; 66] = [
+pub const CATALOGUE: [MistakeInfo; 72] = [
     MistakeInfo {
         id: "normal-by-modelview",
         mistake: Some(Mistake::NormalByModelview),
@@ -457,6 +474,12 @@ pub const CATALOGUE: [MistakeInfo; 66] = [
         words: || t!("check-cause-viewer-reversed"),
     },
     MistakeInfo {
+        id: "vov-with-w",
+        mistake: Some(Mistake::ViewerWithW),
+        formula: "vov = -vertexPos",
+        words: || t!("check-cause-vov-with-w"),
+    },
+    MistakeInfo {
         id: "light-ambient-left-out",
         mistake: Some(Mistake::LightAmbientLeftOut),
         formula: "Ilight = spot*(Idif + Ispec)/at",
@@ -535,6 +558,18 @@ pub const CATALOGUE: [MistakeInfo; 66] = [
         words: || t!("check-cause-specular-without-gate"),
     },
     MistakeInfo {
+        id: "specular-test-in-degrees",
+        mistake: Some(Mistake::SpecularTestInDegrees),
+        formula: "if (beta > 90 or beta < 0):",
+        words: || t!("check-cause-specular-test-in-degrees"),
+    },
+    MistakeInfo {
+        id: "specular-times-cosine",
+        mistake: Some(Mistake::SpecularTimesCosine),
+        formula: "Ispec = (Lspec*matSpec)*(cosBeta**ns)*cosTheta",
+        words: || t!("check-cause-specular-times-cosine"),
+    },
+    MistakeInfo {
         id: "specular-cosine-not-clamped",
         mistake: Some(Mistake::SpecularCosineNotClamped),
         formula: "Ispec = (Lspec*matSpec)*(cosBeta**ns)",
@@ -557,6 +592,12 @@ pub const CATALOGUE: [MistakeInfo; 66] = [
         mistake: Some(Mistake::ShininessFraction),
         formula: "ns = 0.2",
         words: || t!("check-cause-shininess-fraction"),
+    },
+    MistakeInfo {
+        id: "shininess-as-product",
+        mistake: Some(Mistake::ShininessAsProduct),
+        formula: "Ispec = (Lspec*matSpec)*(cosBeta*ns)",
+        words: || t!("check-cause-shininess-as-product"),
     },
     MistakeInfo {
         id: "attenuation-multiplied",
@@ -611,6 +652,12 @@ pub const CATALOGUE: [MistakeInfo; 66] = [
         mistake: Some(Mistake::AttenuationObjectDistance),
         formula: "d = np.linalg.norm(lightPosObject - vertexPosObject)",
         words: || t!("check-cause-attenuation-object-distance"),
+    },
+    MistakeInfo {
+        id: "distance-without-w-divide",
+        mistake: Some(Mistake::DistanceWithoutWDivide),
+        formula: "d = np.linalg.norm(lightPos - vertexPos)  # lightPos[3] != 1",
+        words: || t!("check-cause-distance-without-w-divide"),
     },
     MistakeInfo {
         id: "distance-from-normalised-vlv",
@@ -719,6 +766,12 @@ pub const CATALOGUE: [MistakeInfo; 66] = [
         mistake: Some(Mistake::SceneAmbientWithoutMaterial),
         formula: "Iscene = sceneAmb",
         words: || t!("check-cause-scene-ambient-without-material"),
+    },
+    MistakeInfo {
+        id: "scene-ambient-wrong-material",
+        mistake: Some(Mistake::SceneAmbientWrongMaterial),
+        formula: "Iscene = matDif*sceneAmb",
+        words: || t!("check-cause-scene-ambient-wrong-material"),
     },
     MistakeInfo {
         id: "emission-twice",

@@ -288,6 +288,7 @@ impl Walk<'_> {
             Viewer::Infinite => DVec4::Z,
         };
         let v = if self.made(Mistake::ViewerReversed) { -v } else { v };
+        let v = if self.made(Mistake::ViewerWithW) { unit(-self.pos) } else { v };
         self.view = self.emit4("vov".into(), v);
     }
 
@@ -324,6 +325,8 @@ impl Walk<'_> {
             (light.position - self.scene.vertex.position).length()
         } else if self.made_at(Mistake::DistanceFromNormalisedVlv, i) {
             vlv.length()
+        } else if self.made_at(Mistake::DistanceWithoutWDivide, i) {
+            (pos - self.pos).length()
         } else if self.made_at(Mistake::DistanceSquared, i) {
             (point - self.pos).length_squared()
         } else {
@@ -468,7 +471,7 @@ impl Walk<'_> {
         let gated = match self.scene.rules.specular_gate() {
             SpecularGate::None => false,
             SpecularGate::LitSide => s.cos_theta <= 0.0 && !self.made_at(Mistake::SpecularWithoutGate, i),
-            SpecularGate::PositiveCosine => s.cos_spec < 0.0,
+            SpecularGate::PositiveCosine => s.cos_spec < 0.0 && !self.made_at(Mistake::SpecularTestInDegrees, i),
         };
         // NumPy's `max(cosBeta, 0)` keeps a NaN (a zero-length vov) where `f64::max` drops
         // it; the worksheet's angle test leaves the cosine unclamped.
@@ -477,7 +480,9 @@ impl Walk<'_> {
             || self.scene.rules.specular_gate() == SpecularGate::PositiveCosine;
         let cos = if unclamped { s.cos_spec } else { s.cos_spec.max(0.0) };
         let cos = if self.made_at(Mistake::SpecularAngleNotCosine, i) { cos.clamp(-1.0, 1.0).acos() } else { cos };
-        let ispec = if gated { DVec4::ZERO } else { lspec * mspec * cos.powf(ns) * scale };
+        let lobe = if self.made_at(Mistake::ShininessAsProduct, i) { cos * ns } else { cos.powf(ns) };
+        let lobe = if self.made_at(Mistake::SpecularTimesCosine, i) { lobe * s.cos_theta } else { lobe };
+        let ispec = if gated { DVec4::ZERO } else { lspec * mspec * lobe * scale };
         let ispec = self.emit4(self.name("Ispec", i), ispec);
         let share = self.share(i, ispec);
         let share = self.emit4(self.name("Ilight", i), share);
@@ -520,6 +525,8 @@ impl Walk<'_> {
         let scene_ambient = rgb(self.scene.light_model.ambient);
         let iscene = if self.made(Mistake::SceneAmbientWithoutMaterial) {
             scene_ambient
+        } else if self.made(Mistake::SceneAmbientWrongMaterial) {
+            rgb(if self.way() == 0 { mat.diffuse } else { mat.specular }) * scene_ambient
         } else {
             rgb(mat.ambient) * scene_ambient
         };
