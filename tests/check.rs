@@ -473,6 +473,8 @@ fn more_cases() -> Vec<Case> {
             )],
         ),
         ("scene-ambient-wrong-material", opengl(), vec![("Iscene = matAmb*sceneAmb", "Iscene = matDif*sceneAmb")]),
+        ("ambient-outside-share", lit_spot(), vec![(ILIGHT, "Ilight = Iamb + spot*(Idif + Ispec)/at")]),
+        ("scene-ambient-times-light", lit_spot(), vec![("Iscene = matAmb*sceneAmb", "Iscene = matAmb*sceneAmb*Lamb")]),
         (
             "alpha-from-sum",
             opengl(),

@@ -682,5 +682,7 @@ check-cause-specular-times-cosine = the specular also multiplied by N·L (only t
 check-cause-shininess-as-product = the shininess as a factor (cosBeta*ns) instead of a power (cosBeta**ns)
 check-cause-distance-without-w-divide = the distance from the light's position not divided by its w (vlv is)
 check-cause-scene-ambient-wrong-material = the scene's global ambient multiplied by the material's diffuse or specular colour instead of its ambient
+check-cause-ambient-outside-share = the light's ambient term outside both the spot factor and the attenuation
+check-cause-scene-ambient-times-light = the scene's global ambient also multiplied by the light's ambient colour
 check-run-stopped = not checked: the run stopped with an error before the end: { $error }
 check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)

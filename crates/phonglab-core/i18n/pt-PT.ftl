@@ -682,5 +682,7 @@ check-cause-specular-times-cosine = a especular também multiplicada por N·L (s
 check-cause-shininess-as-product = o brilho como fator (cosBeta*ns) em vez de potência (cosBeta**ns)
 check-cause-distance-without-w-divide = a distância calculada com a posição da luz sem dividir pelo seu w (o vlv divide)
 check-cause-scene-ambient-wrong-material = o ambiente global da cena multiplicado pela cor difusa ou especular do material em vez da ambiente
+check-cause-ambient-outside-share = o termo ambiente da luz fora do fator do foco e da atenuação
+check-cause-scene-ambient-times-light = o ambiente global da cena também multiplicado pela cor ambiente da luz
 check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
 check-nothing-compared = não verificado: nada do que imprimiu é um passo da ficha; imprima cada valor como a ficha faz, print("vlv = ", vlv)

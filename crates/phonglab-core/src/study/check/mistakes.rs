@@ -114,6 +114,8 @@ pub enum Mistake {
     AttenuationLeftOut,
     /// The light's ambient not divided by the attenuation (only diffuse and specular).
     AmbientNotAttenuated,
+    /// The light's ambient outside both the spot factor and the attenuation.
+    AmbientOutsideShare,
     /// The attenuation dividing the whole colour (emission and scene ambient too).
     AttenuationOnWholeColour,
     /// A directional light attenuated (OpenGL's attenuation is 1 for w = 0).
@@ -144,6 +146,8 @@ pub enum Mistake {
     SceneAmbientLeftOut,
     /// The scene's ambient not multiplied by the material's ambient.
     SceneAmbientWithoutMaterial,
+    /// The scene's ambient also multiplied by the (first) light's ambient.
+    SceneAmbientTimesLight,
     /// The scene's ambient multiplied by the material's diffuse (first way) or specular
     /// colour instead of its ambient.
     SceneAmbientWrongMaterial,
@@ -197,6 +201,7 @@ impl Mistake {
                 | Mistake::ViewerReversed
                 | Mistake::ViewerWithW
                 | Mistake::SceneAmbientWrongMaterial
+                | Mistake::SceneAmbientTimesLight
                 | Mistake::SpotOnWholeColour
                 | Mistake::SceneAmbientLeftOut
                 | Mistake::SceneAmbientWithoutMaterial
@@ -370,7 +375,7 @@ pub struct MistakeInfo {
 pub const ACOS_PAST_ONE: &str = "acos-past-one";
 
 /// The catalogue, in the worksheet's order.
-pub const CATALOGUE: [MistakeInfo; 72] = [
+pub const CATALOGUE: [MistakeInfo; 74] = [
     MistakeInfo {
         id: "normal-by-modelview",
         mistake: Some(Mistake::NormalByModelview),
@@ -618,6 +623,12 @@ pub const CATALOGUE: [MistakeInfo; 72] = [
         words: || t!("check-cause-ambient-not-attenuated"),
     },
     MistakeInfo {
+        id: "ambient-outside-share",
+        mistake: Some(Mistake::AmbientOutsideShare),
+        formula: "Ilight = Iamb + spot*(Idif + Ispec)/at",
+        words: || t!("check-cause-ambient-outside-share"),
+    },
+    MistakeInfo {
         id: "attenuation-on-whole-colour",
         mistake: Some(Mistake::AttenuationOnWholeColour),
         formula: "I = (Iemi + Iscene + Ilight)/at",
@@ -772,6 +783,12 @@ pub const CATALOGUE: [MistakeInfo; 72] = [
         mistake: Some(Mistake::SceneAmbientWrongMaterial),
         formula: "Iscene = matDif*sceneAmb",
         words: || t!("check-cause-scene-ambient-wrong-material"),
+    },
+    MistakeInfo {
+        id: "scene-ambient-times-light",
+        mistake: Some(Mistake::SceneAmbientTimesLight),
+        formula: "Iscene = matAmb*sceneAmb*Lamb",
+        words: || t!("check-cause-scene-ambient-times-light"),
     },
     MistakeInfo {
         id: "emission-twice",

@@ -506,7 +506,9 @@ impl Walk<'_> {
         } else {
             s.at
         };
-        if self.made_at(Mistake::SpotNotOnAmbient, i) {
+        if self.made_at(Mistake::AmbientOutsideShare, i) {
+            iamb + spot * (s.idif + ispec) / at
+        } else if self.made_at(Mistake::SpotNotOnAmbient, i) {
             (iamb + s.spot * (s.idif + ispec)) / at
         } else if self.made_at(Mistake::SpotOnDiffuseOnly, i) {
             (iamb + s.spot * s.idif + ispec) / at
@@ -525,6 +527,9 @@ impl Walk<'_> {
         let scene_ambient = rgb(self.scene.light_model.ambient);
         let iscene = if self.made(Mistake::SceneAmbientWithoutMaterial) {
             scene_ambient
+        } else if self.made(Mistake::SceneAmbientTimesLight) {
+            let light = self.scene.lights.first().map_or(DVec4::ZERO, |l| rgb(l.ambient));
+            rgb(mat.ambient) * scene_ambient * light
         } else if self.made(Mistake::SceneAmbientWrongMaterial) {
             rgb(if self.way() == 0 { mat.diffuse } else { mat.specular }) * scene_ambient
         } else {
