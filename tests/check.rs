@@ -256,10 +256,18 @@ fn cases() -> Vec<Case> {
     .collect()
 }
 
-/// The catalogue's second round: the mistakes students' notebooks were seen to make.
+/// The catalogue's later rounds: the mistakes students' notebooks were seen to make.
 fn more_cases() -> Vec<Case> {
-    const ILIGHT: &str = "Ilight = spot*(Iamb + Idif + Ispec)/at";
-    const I: &str = "I = Iemi + Iscene + Ilight\n";
+    [cases_2(), cases_3(), cases_4()].into_iter().flatten().collect()
+}
+
+/// The light's share, as the exported cells write it.
+const ILIGHT: &str = "Ilight = spot*(Iamb + Idif + Ispec)/at";
+/// The sum, as the exported cells write it.
+const I: &str = "I = Iemi + Iscene + Ilight\n";
+
+/// Catalogue mistakes, part 1 of the later rounds.
+fn cases_2() -> Vec<Case> {
     vec![
         (
             "normal-matrix-with-translation",
@@ -332,6 +340,12 @@ fn more_cases() -> Vec<Case> {
             worksheet(),
             vec![("d = np.linalg.norm(lightPos - vertexPos);", "d = np.linalg.norm(vlv);")],
         ),
+    ]
+}
+
+/// Catalogue mistakes, part 2 of the later rounds.
+fn cases_3() -> Vec<Case> {
+    vec![
         (
             "distance-squared",
             worksheet(),
@@ -407,6 +421,12 @@ fn more_cases() -> Vec<Case> {
             spot(25.0),
             vec![("if cosSpot >= m.cos(m.radians(spotCutoff)):", "if cosSpot >= spotCutoff:")],
         ),
+    ]
+}
+
+/// Catalogue mistakes, part 3 of the later rounds.
+fn cases_4() -> Vec<Case> {
+    vec![
         ("spot-on-diffuse-only", lit_spot(), vec![(ILIGHT, "Ilight = (Iamb + spot*Idif + Ispec)/at")]),
         (
             "only-last-light",

@@ -209,7 +209,7 @@ fn causes(c: &Check) -> String {
     if c.causes.is_empty() && !c.right() {
         return t!("check-report-unexplained");
     }
-    c.causes.iter().map(|k| k.words()).collect::<Vec<_>>().join("; ")
+    c.causes.iter().map(phonglab_core::study::check::Cause::words).collect::<Vec<_>>().join("; ")
 }
 
 /// How many students each cause explains (in the teacher's words), and how many no cause

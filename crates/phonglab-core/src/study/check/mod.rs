@@ -329,13 +329,13 @@ fn written(formula: &str, code: &str) -> bool {
         let mut out = String::with_capacity(s.len());
         let mut rest = s;
         while let Some(c) = rest.chars().next() {
-            if c == '[' {
-                if let Some(end) = rest.find(']') {
-                    let inner = &rest[1..end];
-                    if inner == "i" || !inner.is_empty() && inner.chars().all(|d| d.is_ascii_digit()) {
-                        rest = &rest[end + 1..];
-                        continue;
-                    }
+            if c == '['
+                && let Some(end) = rest.find(']')
+            {
+                let inner = &rest[1..end];
+                if inner == "i" || !inner.is_empty() && inner.chars().all(|d| d.is_ascii_digit()) {
+                    rest = &rest[end + 1..];
+                    continue;
                 }
             }
             if !c.is_whitespace() && c != ';' {

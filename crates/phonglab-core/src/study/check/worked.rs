@@ -560,16 +560,8 @@ impl Walk<'_> {
         let c = if self.made(Mistake::ColourNotClamped) {
             i.truncate()
         } else {
-            // `np.clip`: a NaN stays NaN (`DVec3::clamp` would make it 0).
-            glam::DVec3::from_array(i.truncate().to_array().map(|x| {
-                if x < 0.0 {
-                    0.0
-                } else if x > 1.0 {
-                    1.0
-                } else {
-                    x
-                }
-            }))
+            // `np.clip`: a NaN stays NaN (`f64::clamp` keeps it; `DVec3::clamp` would make it 0).
+            glam::DVec3::from_array(i.truncate().to_array().map(|x| x.clamp(0.0, 1.0)))
         };
         let alpha = if self.made(Mistake::AlphaFromSum) { i.w } else { self.scene.lit_material(Side::Front).diffuse.w };
         if !self.key.separate_specular {
