@@ -1030,3 +1030,4 @@ student-picture-theirs = B: a imagem do aluno
 
 # fix57b
 read-link-refused = { $path } é uma ligação simbólica: não foi lido (o trabalho de um aluno só é lido de um ficheiro, nunca através de uma ligação)
+check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)

@@ -528,6 +528,29 @@ fn a_step_printed_again_does_not_hide_the_earlier_wrong_one_and_junk_past_the_ca
 }
 
 #[test]
+fn the_class_report_names_each_students_steps_printed_twice_escaped_for_markdown() {
+    let root = TempDir::new("twice");
+    let class = root.path().join("cls");
+    std::fs::create_dir_all(&class).unwrap();
+    let printed = ["vertexNormal =  [0.  0.6 0.8 0. ]\n", "vlv =  [9. 9. 9. 0.]\n",
+        "vlv =  [ 0.79220526  0.55887606 -0.2450885   0.        ]\n"];
+    let nb = serde_json::json!({"cells": [{
+        "cell_type": "code",
+        "source": ["import numpy as np\n", "vertexNormal = np.array([0, 0.6, 0.8, 0])\n"],
+        "outputs": [{"output_type": "stream", "name": "stdout", "text": printed}],
+    }]});
+    std::fs::write(class.join("ana|*twice*.ipynb"), nb.to_string()).unwrap();
+    let report = root.path().join("turma.md");
+    let out = common::phonglab(&["check", class.to_str().unwrap(), "--report", report.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "the report was written: {}", String::from_utf8_lossy(&out.stderr));
+    let text = std::fs::read_to_string(&report).unwrap();
+    let section = "\n## Steps printed more than once with different values (each printing was checked)\n\n";
+    let at = text.find(section).unwrap_or_else(|| panic!("no section:\n{text}"));
+    let lines: Vec<&str> = text[at + section.len()..].lines().take_while(|l| !l.is_empty()).collect();
+    assert_eq!(lines, ["- ana\\|\\*twice\\*.ipynb: vlv"], "{text}");
+}
+
+#[test]
 fn a_given_that_is_not_finite_is_refused_by_check_naming_it() {
     let dir = TempDir::new("notfinite");
     let nb = serde_json::json!({"cells": [{
