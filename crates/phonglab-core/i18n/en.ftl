@@ -347,7 +347,7 @@ py-light-eye = placed under the identity: the light moves with the eye
 py-light-object = placed under the whole modelview: the light turns with the object
 py-light-world = placed under the view matrix: the light stays put in the world
 py-state-doc = The scene's lighting state, set the fixed-function way. Each light's GL_POSITION and GL_SPOT_DIRECTION are transformed by the modelview current when they are set, so GL keeps them in eye space.
-py-reader-doc = Gives the shaders what GLSL has no variable for, read from GL's state each frame: the lighting modelview and the normal matrix, the enabled lights, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_COLOR_CONTROL, GL_NORMALIZE or GL_RESCALE_NORMAL, and GL_COLOR_MATERIAL.
+py-reader-doc = Gives the shaders what GLSL has no variable for, read from GL's state each frame: the lighting modelview and the normal matrix, the enabled lights, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_COLOR_CONTROL, GL_NORMALIZE or GL_RESCALE_NORMAL, GL_COLOR_MATERIAL, and GL_SHADE_MODEL.
 py-editable-comment = You may edit every call below (a glLight*, glMaterial* or glLightModel* value, glEnable or glDisable of a light, GL_NORMALIZE, GL_COLOR_MATERIAL): the shaders read this state every frame and draw what fixed-function OpenGL draws from it, except where a comment below says otherwise. RULES and the shaders' #define lines are not GL state: they stay as written.
 py-lighting-comment = The shaders light the object whether or not GL_LIGHTING is enabled: with glDisable(GL_LIGHTING), fixed-function OpenGL would draw the current colour (glColor) unlit; these shaders would not.
 py-scene-ambient-off = SCENE_AMBIENT is 0 under these rules: the shaders add neither this scene ambient nor the material's GL_EMISSION, so editing either changes nothing here (fixed-function OpenGL would add both).
@@ -629,3 +629,7 @@ check-cause-w-divide-forgotten = the division by w forgotten
 check-cause-shininess-fraction = the shininess as the 0–1 fraction instead of times 128
 check-run-stopped = not checked: the run stopped with an error before the end: { $error }
 check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)
+
+# fix57b
+py-shade-model-comment = glShadeModel(GL_SMOOTH) draws the shading this program was written for (Gouraud: the vertices' colours interpolated; Phong: each pixel lit). With GL_FLAT the shaders draw what fixed-function OpenGL draws: each face in the colour lit at its provoking vertex (a triangle’s or a quad’s last vertex).
+py-two-side-program-comment = Lets the fragment shader’s gl_Color be the back colour on a triangle’s back side, as fixed-function GL chooses it; the shaders use it under glShadeModel(GL_FLAT).

@@ -347,7 +347,7 @@ py-light-eye = colocada sob a identidade: a luz move-se com o olho
 py-light-object = colocada sob a modelview inteira: a luz roda com o objeto
 py-light-world = colocada sob a matriz de vista: a luz fica parada no mundo
 py-state-doc = O estado da iluminação da cena, definido à maneira do pipeline fixo. O GL_POSITION e o GL_SPOT_DIRECTION de cada luz são transformados pela modelview ativa quando são definidos, por isso o GL guarda-os no espaço do olho.
-py-reader-doc = Dá aos shaders o que o GLSL não tem em variável nenhuma, lido do estado do GL em cada imagem: a modelview da iluminação e a matriz das normais, as luzes ligadas, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_COLOR_CONTROL, GL_NORMALIZE ou GL_RESCALE_NORMAL, e GL_COLOR_MATERIAL.
+py-reader-doc = Dá aos shaders o que o GLSL não tem em variável nenhuma, lido do estado do GL em cada imagem: a modelview da iluminação e a matriz das normais, as luzes ligadas, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_COLOR_CONTROL, GL_NORMALIZE ou GL_RESCALE_NORMAL, GL_COLOR_MATERIAL e GL_SHADE_MODEL.
 py-editable-comment = Pode alterar qualquer chamada abaixo (um valor de glLight*, glMaterial* ou glLightModel*, o glEnable ou glDisable de uma luz, GL_NORMALIZE, GL_COLOR_MATERIAL): os shaders leem este estado em cada imagem e desenham o que o OpenGL de pipeline fixo desenharia a partir dele, exceto onde um comentário abaixo diga o contrário. O RULES e as linhas #define dos shaders não são estado do GL: ficam como estão escritos.
 py-lighting-comment = Os shaders iluminam o objeto quer GL_LIGHTING esteja ativo quer não: com glDisable(GL_LIGHTING), o OpenGL de pipeline fixo desenharia a cor atual (glColor) sem iluminação; estes shaders não.
 py-scene-ambient-off = SCENE_AMBIENT é 0 com estas regras: os shaders não somam nem esta ambiente da cena nem a GL_EMISSION do material, por isso alterar qualquer uma delas aqui não muda nada (o OpenGL de pipeline fixo somaria as duas).
@@ -629,3 +629,7 @@ check-cause-w-divide-forgotten = falta a divisão por w
 check-cause-shininess-fraction = o brilho como fração de 0 a 1 em vez de multiplicado por 128
 check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
 check-nothing-compared = não verificado: nada do que imprimiu é um passo da ficha; imprima cada valor como a ficha faz, print("vlv = ", vlv)
+
+# fix57b
+py-shade-model-comment = glShadeModel(GL_SMOOTH) desenha o sombreamento para que este programa foi escrito (Gouraud: as cores dos vértices interpoladas; Phong: cada píxel iluminado). Com GL_FLAT, os shaders desenham o que o OpenGL de pipeline fixo desenha: cada face na cor calculada no seu vértice provocante (o último vértice de um triângulo ou de um quadrilátero).
+py-two-side-program-comment = Faz com que o gl_Color do fragment shader seja a cor de trás na face de trás de um triângulo, como o GL de pipeline fixo a escolhe; os shaders usam-no com glShadeModel(GL_FLAT).
