@@ -230,7 +230,9 @@ nb-vectors =
 
     For a directional light the vector (lightPos - vertexPos) is not needed: we use lightPos itself.
 
-    The vector (obsPos - vertexPos) is computed differently for `glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, true/false)`: when **true**, obs = [0 0 0 1]; when **false**, only the z component is kept: obs = vertexPos * [1 1 0 1], and vov always comes out as [0 0 1 0].
+    The vector (obsPos - vertexPos) is computed differently for `glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, true/false)`: when **true**, obs = [0 0 0 1]; when **false**, obs = vertexPos * [1 1 0 1], the vertex with its z set to 0, so vov = obs - vertexPos = [0 0 -z 0] before it is normalised: only its z component is left.
+
+    The worksheet says of **false**: "vov vai sempre resultar em [0 0 1 0]" (vov always comes out as [0 0 1 0]). That holds only for a vertex in front of the eye (its z in eye space < 0): for a vertex behind the eye (z > 0) this formula gives [0 0 -1 0], and at z = 0 vov has no direction to normalise (0/0). (OpenGL's infinite viewer is always V = (0, 0, 1).)
 
     More about this at <https://registry.khronos.org/OpenGL-Refpages/gl2.1/xhtml/glLightModel.xml>
 nb-normal-matrix-comment = # OpenGL transforms normals by the inverse transpose of the modelview's 3x3: (M^-1)^T n
@@ -280,7 +282,7 @@ nb-final =
     Final calculation:
 
     - I<sub>final</sub> = (I<sub>amb</sub> + I<sub>dif</sub> + I<sub>spec</sub>)/at
-nb-glcolor-comment = # the colour as drawn: clamped to [0, 1], alpha from the material's diffuse
+nb-glcolor-comment = # the colour as drawn: clamped to [0, 1], its alpha the diffuse colour's (matDif's, the current colour's where GL_COLOR_MATERIAL tracks the diffuse), as OpenGL takes it
 nb-back = The back side (two-sided lighting): the same terms with the normal reversed (-vertexNormal) and the back material; the names end in Back.
 nb-no-spot-comment = # not a spotlight (spotCutoff 180)
 import-unreadable = { $place }: cannot read `{ $line }`: { $reason }; ignored

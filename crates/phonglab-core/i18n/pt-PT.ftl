@@ -230,7 +230,9 @@ nb-vectors =
 
     No caso da luz ser direcional, o vetor (luzPos-vérticePos) é desnecessário, usamos o próprio luzPos
 
-    O vetor (obsPos - vérticePos) é calculado de forma diferente para `glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, true/false)`: quando **true**, obs = [0 0 0 1]; quando **false**, só ficamos com a componente z: obs = (vertexPos) * [1 1 0 1], e vov vai sempre resultar em [0 0 1 0].
+    O vetor (obsPos - vérticePos) é calculado de forma diferente para `glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, true/false)`: quando **true**, obs = [0 0 0 1]; quando **false**, obs = (vertexPos) * [1 1 0 1], o vértice com o z a 0, e portanto vov = obs - vertexPos = [0 0 -z 0] antes de normalizado: só fica a componente z.
+
+    A ficha diz de **false**: «vov vai sempre resultar em [0 0 1 0]». Só é assim para um vértice à frente do olho (z < 0 no espaço do olho): para um vértice atrás do olho (z > 0) esta fórmula dá [0 0 -1 0], e com z = 0 o vov não tem direção que se possa normalizar (0/0). (O observador no infinito do OpenGL é sempre V = (0, 0, 1).)
 
     mais info sobre isso em <https://registry.khronos.org/OpenGL-Refpages/gl2.1/xhtml/glLightModel.xml>
 nb-normal-matrix-comment = # o OpenGL transforma as normais pela inversa transposta da 3x3 da modelview: (M^-1)^T n
@@ -280,7 +282,7 @@ nb-final =
     Calculo final:
 
     - I<sub>final</sub> = (I<sub>amb</sub> + I<sub>dif</sub> + I<sub>spec</sub>)/at
-nb-glcolor-comment = # a cor desenhada: limitada a [0, 1], o alfa vem da difusa do material
+nb-glcolor-comment = # a cor desenhada: limitada a [0, 1], com o alfa da cor difusa (o de matDif, que é o da cor atual quando GL_COLOR_MATERIAL segue a difusa), como o OpenGL o toma
 nb-back = A face de trás (iluminação dos dois lados): os mesmos termos com a normal invertida (-vertexNormal) e o material de trás; os nomes acabam em Back.
 nb-no-spot-comment = # não é um foco (spotCutoff 180)
 import-unreadable = { $place }: não consigo ler `{ $line }`: { $reason }; ignorada
