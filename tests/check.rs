@@ -227,8 +227,8 @@ fn run_all(python: &str, dir: &Path, count: usize) -> Vec<PathBuf> {
 
 fn check_json(work: &Path, scene: &Path) -> serde_json::Value {
     let out = common::phonglab(&["check", work.to_str().unwrap(), "--scene", scene.to_str().unwrap(), "--json"]);
-    let json: serde_json::Value = serde_json::from_slice(&out.stdout)
-        .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&out.stderr)));
+    let json: serde_json::Value =
+        serde_json::from_slice(&out.stdout).unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&out.stderr)));
     // The exit code says the verdict, for scripts and autograders: 0 right, 1 wrong.
     let code = if json["verdict"] == "right" { 0 } else { 1 };
     assert_eq!(out.status.code(), Some(code), "{json:#}");
@@ -532,8 +532,11 @@ fn the_class_report_names_each_students_steps_printed_twice_escaped_for_markdown
     let root = TempDir::new("twice");
     let class = root.path().join("cls");
     std::fs::create_dir_all(&class).unwrap();
-    let printed = ["vertexNormal =  [0.  0.6 0.8 0. ]\n", "vlv =  [9. 9. 9. 0.]\n",
-        "vlv =  [ 0.79220526  0.55887606 -0.2450885   0.        ]\n"];
+    let printed = [
+        "vertexNormal =  [0.  0.6 0.8 0. ]\n",
+        "vlv =  [9. 9. 9. 0.]\n",
+        "vlv =  [ 0.79220526  0.55887606 -0.2450885   0.        ]\n",
+    ];
     let nb = serde_json::json!({"cells": [{
         "cell_type": "code",
         "source": ["import numpy as np\n", "vertexNormal = np.array([0, 0.6, 0.8, 0])\n"],

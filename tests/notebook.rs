@@ -340,7 +340,11 @@ fn the_notebooks_words_are_true_of_its_code() {
     let ws = scene("worksheet-mview5.toml");
     use phonglab_core::locale::{Lang, Locale, set_thread};
     for (lang, quote, behind) in [
-        (Lang::En, "\"vov vai sempre resultar em [0 0 1 0]\" (vov always comes out as [0 0 1 0])", "(z > 0) this formula gives [0 0 -1 0]"),
+        (
+            Lang::En,
+            "\"vov vai sempre resultar em [0 0 1 0]\" (vov always comes out as [0 0 1 0])",
+            "(z > 0) this formula gives [0 0 -1 0]",
+        ),
         (Lang::PtPt, "«vov vai sempre resultar em [0 0 1 0]»", "(z > 0) esta fórmula dá [0 0 -1 0]"),
         (Lang::PtBr, "\"vov vai sempre resultar em [0 0 1 0]\"", "(z > 0) essa fórmula dá [0 0 -1 0]"),
     ] {
@@ -366,7 +370,9 @@ fn the_notebooks_words_are_true_of_its_code() {
     std::fs::create_dir_all(&dir).unwrap();
     for (what, doc, alpha) in [("colour alpha 0.5", &colour_half, 0.5), ("material alpha 0.5", &material_half, 1.0)] {
         let text = notebook(doc, &phonglab_core::export::key(doc));
-        assert!(text.contains("its alpha the diffuse colour's (matDif's, the current colour's where GL_COLOR_MATERIAL"));
+        assert!(
+            text.contains("its alpha the diffuse colour's (matDif's, the current colour's where GL_COLOR_MATERIAL")
+        );
         let p = dir.join("alpha.ipynb");
         std::fs::write(&p, text).unwrap();
         let out = Command::new(python).arg("-c").arg(RUNNER).arg(&p).output().unwrap();

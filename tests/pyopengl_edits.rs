@@ -455,7 +455,6 @@ fn record_mesa_flat_outcome() {
     std::fs::write(flat_recorded_path(), out).unwrap();
 }
 
-
 #[test]
 fn the_programs_follow_glshademodel_flat_as_fixed_function_gl_draws_it() {
     // Mesa drew each program with `glShadeModel(GL_SMOOTH)` edited to `GL_FLAT`, and the

@@ -41,8 +41,12 @@ fn the_pictures_hint_leaves_the_things_to_try_band_uncovered() {
     let picture = landmarks(&h.ctx)["shaded-picture"];
     let heading = h.get_by_label_contains("Things to try: one click").rect();
     assert!(heading.top() > picture.bottom(), "the band is under the picture: {heading:?} {picture:?}");
-    let buttons: Vec<(String, egui::Rect)> =
-        band(&h).into_iter().filter(|(_, r)| r.top() >= heading.top() && r.left() >= heading.left() - 1.0 && r.left() < heading.left() + 600.0).collect();
+    let buttons: Vec<(String, egui::Rect)> = band(&h)
+        .into_iter()
+        .filter(|(_, r)| {
+            r.top() >= heading.top() && r.left() >= heading.left() - 1.0 && r.left() < heading.left() + 600.0
+        })
+        .collect();
     assert!(buttons.len() >= 5, "{buttons:?}");
     // The pointer rests on the picture, at its centre and low in it (the middle of a
     // 1280x720 screen is on the picture at start).
@@ -86,6 +90,9 @@ fn the_specular_models_drop_down_keeps_its_margin_around_every_item() {
     for (item, r) in items.iter().zip(&rects) {
         assert!(popup.contains_rect(*r), "{item} {r:?} outside the popup {popup:?}");
         let (left, right) = (r.left() - popup.left(), popup.right() - r.right());
-        assert!(right >= 4.0 && left >= 4.0, "{item}: {left} points from the popup's left border, {right} from its right");
+        assert!(
+            right >= 4.0 && left >= 4.0,
+            "{item}: {left} points from the popup's left border, {right} from its right"
+        );
     }
 }
