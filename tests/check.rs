@@ -230,7 +230,7 @@ fn check_json(work: &Path, scene: &Path) -> serde_json::Value {
     let json: serde_json::Value =
         serde_json::from_slice(&out.stdout).unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&out.stderr)));
     // The exit code says the verdict, for scripts and autograders: 0 right, 1 wrong.
-    let code = if json["verdict"] == "right" { 0 } else { 1 };
+    let code = i32::from(json["verdict"] != "right");
     assert_eq!(out.status.code(), Some(code), "{json:#}");
     json
 }

@@ -70,7 +70,7 @@ fn diagnose_json(scene: &Path, image: &Path) -> serde_json::Value {
     let json: serde_json::Value =
         serde_json::from_slice(&o.stdout).unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&o.stderr)));
     // The exit code says the verdict, for scripts: 0 right, 1 wrong or unexplained.
-    let code = if json["verdict"] == "right" { 0 } else { 1 };
+    let code = i32::from(json["verdict"] != "right");
     assert_eq!(o.status.code(), Some(code), "{json:#}");
     json
 }
