@@ -1,6 +1,7 @@
 //! What the window lays over itself at start (1280x720) leaves its own controls readable:
-//! the picture's hint ("Drag to orbit...") shown where the pointer rests on the picture
-//! does not cover the Things-to-try band under it (it did, drawn under the picture), and the
+//! the hints of the picture and the vector plot ("Drag to orbit...") shown where the pointer
+//! rests on them do not cover the Things-to-try band under them (they did, drawn under the
+//! picture), and the
 //! specular model's drop-down keeps its margin around its longest item, the normalised model.
 
 use egui_kittest::Harness;
@@ -51,10 +52,18 @@ fn the_pictures_hint_leaves_the_things_to_try_band_uncovered() {
     // The pointer rests on the picture, at its centre and low in it (the middle of a
     // 1280x720 screen is on the picture at start).
     let low = |f: f32| egui::pos2(picture.center().x - 0.3 * picture.width(), picture.top() + f * picture.height());
-    for at in [picture.center(), low(0.75), low(0.97)] {
+    let plot = h.get_by_label("vector plot").rect();
+    let plot_low = |f: f32| egui::pos2(plot.center().x, plot.top() + f * plot.height());
+    for (at, said) in [
+        (picture.center(), "Drag to orbit, scroll to zoom"),
+        (low(0.75), "Drag to orbit, scroll to zoom"),
+        (low(0.97), "Drag to orbit, scroll to zoom"),
+        (plot.center(), "Drag to orbit (yaw"),
+        (plot_low(0.97), "Drag to orbit (yaw"),
+    ] {
         h.hover_at(at);
         h.run_steps(60);
-        let hint = h.get_by_label_contains("Drag to orbit, scroll to zoom").rect();
+        let hint = h.get_by_label_contains(said).rect();
         assert!(hint.is_positive(), "{hint:?}");
         assert!(hint.bottom() <= at.y, "the hint {hint:?} is above the pointer {at:?}, over the picture");
         for (name, r) in &buttons {

@@ -115,7 +115,7 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
                         Some((_, id)) => ui.add(egui::Image::new((id, size)).sense(Sense::click_and_drag())),
                         None => picture_ui(ui, &cache.main, main_gpu.take(), size, Sense::click_and_drag()),
                     };
-                    hint_above_pointer(&picture, hover);
+                    crate::app::widgets::hint::above_pointer(&picture, hover);
                     let picture = named(ui, picture, &label, &caption);
                     if let Some((c, _)) = channel_texture {
                         legend_ui(ui, c, cache.channel.name_id(c), cache.channel.range, side);
@@ -204,25 +204,4 @@ fn picture_ui(ui: &mut Ui, cache: &ViewCache, gpu: Option<GpuImage>, size: egui:
         (None, Some(tex)) => ui.add(egui::Image::new((tex.id(), size)).sense(sense)),
         (None, None) => ui.allocate_exact_size(size, sense).1,
     }
-}
-
-/// The picture's hint (`text`), shown as a tooltip at the pointer and above it: over the
-/// picture, never over the band of Things to try under it, which a tooltip under the
-/// picture (or under the pointer) covered whenever the pointer rested on the picture.
-fn hint_above_pointer(picture: &egui::Response, text: String) {
-    let open = picture.enabled() && egui::Tooltip::should_show_tooltip(picture, false);
-    let width = picture.ctx.global_style().spacing.tooltip_width;
-    egui::Popup::from_response(picture)
-        .kind(egui::PopupKind::Tooltip)
-        .at_pointer()
-        .align(egui::RectAlign::TOP_START)
-        .align_alternatives(&[egui::RectAlign::TOP_END, egui::RectAlign::BOTTOM_START])
-        .gap(12.0)
-        .width(width)
-        .sense(Sense::hover())
-        .open(open)
-        .show(|ui| {
-            ui.set_max_width(width);
-            ui.label(text);
-        });
 }
