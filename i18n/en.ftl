@@ -944,7 +944,7 @@ app-cannot-open-window =
 
 ## phonglab diagnose: a student's picture checked
 
-cli-diagnose = A student's picture of a scene, checked: right, which mistake made it, or none phonglab knows; a difference image and the probe where it differs most
+cli-diagnose = A student's picture of a scene, checked: right, which mistake made it, or none phonglab knows; a difference image and the probe where it differs most. Exit code: 0 right, 1 wrong or unexplained, 2 a usage or input error
 cli-arg-diagnose-scene = The scene the picture was made for (TOML)
 cli-arg-diagnose-image = The student's picture (PNG), made with the export's camera and size
 cli-arg-diagnose-size = The picture's width and height in pixels: the export's window is 512
@@ -1000,7 +1000,7 @@ check-report-no-scene = No --scene was given: each notebook's typed inputs were 
 check-verdict-word-unread = not read
 check-report-unread = Not read
 check-report-unchecked = not checked (nothing compared, or the run stopped)
-cli-check = Check a student's work: a worksheet notebook with its outputs, a script's printed text, or a folder of them; each printed step against the key, the first wrong step and its likely causes
+cli-check = Check a student's work: a worksheet notebook with its outputs, a script's printed text, or a folder of them; each printed step against the key, the first wrong step and its likely causes. Exit code: 0 right, 1 wrong or not checked, 2 a usage or input error; for a folder, 0 once the report is written
 cli-arg-check-work = The notebook (.ipynb, saved with its outputs), or a folder of them for the whole class
 cli-arg-check-printed = The text a script printed, instead of a notebook (- for the standard input)
 cli-arg-check-scene = The assignment's scene (TOML); default: the notebook's own (the worksheet's for printed text)
@@ -1027,3 +1027,7 @@ student-ask-open = Open it as the scene
 student-picture-heading = Student's picture: { $file }
 student-picture-right = A: the right picture of this scene
 student-picture-theirs = B: the student's picture
+
+# fix57b
+read-link-refused = { $path } is a link: not read (a student’s work is read only from a file itself, never through a link)
+check-report-printed-twice = Steps printed more than once with different values (each printing was checked)

@@ -944,7 +944,7 @@ app-cannot-open-window =
 
 ## phonglab diagnose: a imagem de um aluno conferida
 
-cli-diagnose = A imagem que um aluno fez de uma cena, conferida: certa, qual erro a fez, ou nenhum que o phonglab conheça; uma imagem das diferenças e a sonda onde ela mais difere
+cli-diagnose = A imagem que um aluno fez de uma cena, conferida: certa, qual erro a fez, ou nenhum que o phonglab conheça; uma imagem das diferenças e a sonda onde ela mais difere. Código de saída: 0 certa, 1 errada ou não explicada, 2 erro de uso ou de entrada
 cli-arg-diagnose-scene = A cena para a qual a imagem foi feita (TOML)
 cli-arg-diagnose-image = A imagem do aluno (PNG), feita com a câmera e o tamanho da exportação
 cli-arg-diagnose-size = A largura e a altura da imagem em pixels: a janela da exportação tem 512
@@ -1000,7 +1000,7 @@ check-report-no-scene = Nenhuma --scene foi informada: os dados digitados em cad
 check-verdict-word-unread = não lido
 check-report-unread = Não lidos
 check-report-unchecked = não verificado (nada comparado, ou a execução parou)
-cli-check = Verificar o trabalho de um aluno: um notebook da ficha com as saídas, o texto impresso por um programa, ou uma pasta deles; cada passo impresso comparado com o gabarito, o primeiro passo errado e as causas prováveis
+cli-check = Verificar o trabalho de um aluno: um notebook da ficha com as saídas, o texto impresso por um programa, ou uma pasta deles; cada passo impresso comparado com o gabarito, o primeiro passo errado e as causas prováveis. Código de saída: 0 certo, 1 errado ou não verificado, 2 erro de uso ou de entrada; para uma pasta, 0 depois de gravado o relatório
 cli-arg-check-work = O notebook (.ipynb, salvo com as saídas), ou uma pasta deles para a turma toda
 cli-arg-check-printed = O texto impresso por um programa, em vez de um notebook (- para a entrada padrão)
 cli-arg-check-scene = A cena do enunciado (TOML); padrão: a do próprio notebook (a da ficha para texto impresso)
@@ -1027,3 +1027,7 @@ student-ask-open = Abrir como cena
 student-picture-heading = Imagem do aluno: { $file }
 student-picture-right = A: a imagem correta desta cena
 student-picture-theirs = B: a imagem do aluno
+
+# fix57b
+read-link-refused = { $path } é um link simbólico: não foi lido (o trabalho de um aluno só é lido de um arquivo, nunca por meio de um link)
+check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)

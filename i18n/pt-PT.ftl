@@ -944,7 +944,7 @@ app-cannot-open-window =
 
 ## phonglab diagnose: a imagem de um aluno verificada
 
-cli-diagnose = A imagem que um aluno fez de uma cena, verificada: certa, que erro a fez, ou nenhum que o phonglab conheça; uma imagem das diferenças e a sonda onde mais difere
+cli-diagnose = A imagem que um aluno fez de uma cena, verificada: certa, que erro a fez, ou nenhum que o phonglab conheça; uma imagem das diferenças e a sonda onde mais difere. Código de saída: 0 certa, 1 errada ou não explicada, 2 erro de utilização ou de entrada
 cli-arg-diagnose-scene = A cena para a qual a imagem foi feita (TOML)
 cli-arg-diagnose-image = A imagem do aluno (PNG), feita com a câmara e o tamanho da exportação
 cli-arg-diagnose-size = A largura e a altura da imagem em píxeis: a janela da exportação tem 512
@@ -1000,7 +1000,7 @@ check-report-no-scene = Não foi indicada nenhuma --scene: os dados escritos em 
 check-verdict-word-unread = não lido
 check-report-unread = Não lidos
 check-report-unchecked = não verificado (nada comparado, ou a execução parou)
-cli-check = Verificar o trabalho de um aluno: um caderno da ficha com os resultados, o texto impresso por um programa, ou uma pasta deles; cada passo impresso comparado com a solução, o primeiro passo errado e as causas prováveis
+cli-check = Verificar o trabalho de um aluno: um caderno da ficha com os resultados, o texto impresso por um programa, ou uma pasta deles; cada passo impresso comparado com a solução, o primeiro passo errado e as causas prováveis. Código de saída: 0 certo, 1 errado ou não verificado, 2 erro de utilização ou de entrada; para uma pasta, 0 depois de escrito o relatório
 cli-arg-check-work = O caderno (.ipynb, guardado com os resultados), ou uma pasta deles para a turma toda
 cli-arg-check-printed = O texto impresso por um programa, em vez de um caderno (- para a entrada padrão)
 cli-arg-check-scene = A cena do enunciado (TOML); por omissão: a do próprio caderno (a da ficha para texto impresso)
@@ -1027,3 +1027,7 @@ student-ask-open = Abrir como cena
 student-picture-heading = Imagem do aluno: { $file }
 student-picture-right = A: a imagem certa desta cena
 student-picture-theirs = B: a imagem do aluno
+
+# fix57b
+read-link-refused = { $path } é uma ligação simbólica: não foi lido (o trabalho de um aluno só é lido de um ficheiro, nunca através de uma ligação)
+check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)

@@ -536,8 +536,12 @@ fn run_all(python: &str, dir: &Path, count: usize) -> Vec<PathBuf> {
 
 fn check_json(work: &Path, scene: &Path) -> serde_json::Value {
     let out = common::phonglab(&["check", work.to_str().unwrap(), "--scene", scene.to_str().unwrap(), "--json"]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    serde_json::from_slice(&out.stdout).unwrap()
+    let json: serde_json::Value =
+        serde_json::from_slice(&out.stdout).unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&out.stderr)));
+    // The exit code says the verdict, for scripts and autograders: 0 right, 1 wrong.
+    let code = i32::from(json["verdict"] != "right");
+    assert_eq!(out.status.code(), Some(code), "{json:#}");
+    json
 }
 
 #[test]
@@ -697,6 +701,7 @@ fn printed_text_with_no_step_is_not_right() {
     let out = child.wait_with_output().unwrap();
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(json["verdict"], "wrong", "{json:#}");
+    assert_eq!(out.status.code(), Some(1), "unchecked work is not right: exit 1");
     assert!(json["first_wrong"].is_null());
     assert_eq!(json["unchecked"]["id"], "nothing-compared");
     let dir = TempDir::new("hello");
@@ -752,6 +757,39 @@ fn a_link_in_a_class_folder_is_not_read_and_named_a_link() {
 }
 
 #[test]
+fn a_submission_that_is_a_link_is_refused_by_the_open_itself() {
+    // The open refuses the link (O_NOFOLLOW), not a look before it: a link planted after
+    // the class folder was listed is never followed.
+    let root = TempDir::new("nofollow");
+    let own = root.path().join("own.ipynb");
+    std::fs::write(&own, edited("unchanged", &worksheet(), &[])).unwrap();
+    let link = root.path().join("link.ipynb");
+    std::os::unix::fs::symlink("own.ipynb", &link).unwrap();
+    let refused = phonglab::platform::os::open_no_follow(&link).unwrap_err();
+    assert!(phonglab::platform::os::is_link_refused(&refused), "{refused}");
+    assert!(phonglab::platform::os::open_no_follow(&own).is_ok());
+    let read = phonglab::io::student_code::read_notebook(&link).err().expect("a link read as a notebook");
+    assert!(format!("{read:#}").contains("link.ipynb is a link: not read"), "{read:#}");
+    // Each command that reads a submission: a notebook, printed text, a picture.
+    std::fs::write(root.path().join("printed.txt"), "vlv =  [9. 9. 9. 0.]\n").unwrap();
+    std::os::unix::fs::symlink("printed.txt", root.path().join("printed-link.txt")).unwrap();
+    std::fs::write(root.path().join("p.png"), b"not read").unwrap();
+    std::os::unix::fs::symlink("p.png", root.path().join("p-link.png")).unwrap();
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let (l, t, p) = (link.to_str().unwrap(), root.path().join("printed-link.txt"), root.path().join("p-link.png"));
+    for args in [
+        vec!["check", l],
+        vec!["check", "--printed", t.to_str().unwrap()],
+        vec!["diagnose", "--scene", scene.to_str().unwrap(), "--image", p.to_str().unwrap()],
+    ] {
+        let out = common::phonglab(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {}", String::from_utf8_lossy(&out.stdout));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("is a link: not read"), "{args:?}: {err}");
+    }
+}
+
+#[test]
 fn a_link_planted_at_the_charts_derived_name_is_refused_and_its_file_kept() {
     let root = TempDir::new("chartlink");
     let (class, sub, outside) = (root.path().join("cls"), root.path().join("sub"), root.path().join("outside"));
@@ -795,7 +833,7 @@ fn a_step_printed_again_does_not_hide_the_earlier_wrong_one_and_junk_past_the_ca
     let printed = dir.path().join("printed.txt");
     std::fs::write(&printed, text).unwrap();
     let out = common::phonglab(&["check", "--printed", printed.to_str().unwrap(), "--json"]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(out.status.code(), Some(1), "wrong work exits 1: {}", String::from_utf8_lossy(&out.stderr));
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(json["verdict"], "wrong", "{json:#}");
     assert_eq!(json["first_wrong"]["step"], "vlv", "{json:#}");
@@ -814,6 +852,32 @@ fn a_step_printed_again_does_not_hide_the_earlier_wrong_one_and_junk_past_the_ca
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
+}
+
+#[test]
+fn the_class_report_names_each_students_steps_printed_twice_escaped_for_markdown() {
+    let root = TempDir::new("twice");
+    let class = root.path().join("cls");
+    std::fs::create_dir_all(&class).unwrap();
+    let printed = [
+        "vertexNormal =  [0.  0.6 0.8 0. ]\n",
+        "vlv =  [9. 9. 9. 0.]\n",
+        "vlv =  [ 0.79220526  0.55887606 -0.2450885   0.        ]\n",
+    ];
+    let nb = serde_json::json!({"cells": [{
+        "cell_type": "code",
+        "source": ["import numpy as np\n", "vertexNormal = np.array([0, 0.6, 0.8, 0])\n"],
+        "outputs": [{"output_type": "stream", "name": "stdout", "text": printed}],
+    }]});
+    std::fs::write(class.join("ana|*twice*.ipynb"), nb.to_string()).unwrap();
+    let report = root.path().join("turma.md");
+    let out = common::phonglab(&["check", class.to_str().unwrap(), "--report", report.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "the report was written: {}", String::from_utf8_lossy(&out.stderr));
+    let text = std::fs::read_to_string(&report).unwrap();
+    let section = "\n## Steps printed more than once with different values (each printing was checked)\n\n";
+    let at = text.find(section).unwrap_or_else(|| panic!("no section:\n{text}"));
+    let lines: Vec<&str> = text[at + section.len()..].lines().take_while(|l| !l.is_empty()).collect();
+    assert_eq!(lines, ["- ana\\|\\*twice\\*.ipynb: vlv"], "{text}");
 }
 
 #[test]

@@ -67,8 +67,12 @@ fn diagnose_json(scene: &Path, image: &Path) -> serde_json::Value {
         &size,
         "--json",
     ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    serde_json::from_slice(&o.stdout).expect("JSON")
+    let json: serde_json::Value =
+        serde_json::from_slice(&o.stdout).unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&o.stderr)));
+    // The exit code says the verdict, for scripts: 0 right, 1 wrong or unexplained.
+    let code = i32::from(json["verdict"] != "right");
+    assert_eq!(o.status.code(), Some(code), "{json:#}");
+    json
 }
 
 #[test]
@@ -134,7 +138,7 @@ fn another_scene_is_unexplained_and_its_difference_is_written_and_probed() {
     let size = SIZE.to_string();
     let args = ["diagnose", "--scene", right.to_str().unwrap(), "--image", image.to_str().unwrap()];
     let o = phonglab_in("pt_PT.UTF-8", &[&args[..], &["--size", &size, "--diff", diff.to_str().unwrap()]].concat());
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(o.status.code(), Some(1), "unexplained exits 1: {}", String::from_utf8_lossy(&o.stderr));
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(text.contains("Nenhum erro que o phonglab conheça explica esta imagem"), "{text}");
     assert!(text.contains("O píxel que mais difere"), "{text}");

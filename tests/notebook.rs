@@ -320,3 +320,67 @@ fn every_cell_has_the_unique_id_nbformat_4_5_asks_for() {
         assert!(seen.insert(id.to_string()), "{id} twice");
     }
 }
+
+/// The notebook's words are true: the worksheet's "vov always comes out as [0 0 1 0]" is
+/// kept only as its quote, with when it fails beside it, in every language; and the
+/// comment above `glColor` says where its alpha comes from, which the code does (the
+/// diffuse colour's as lit: the current colour's where GL_COLOR_MATERIAL tracks it).
+#[test]
+fn the_notebooks_words_are_true_of_its_code() {
+    let scene = |name: &str| {
+        let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes").join(name);
+        Document::from_toml_in(&std::fs::read_to_string(&p).unwrap(), p.parent()).unwrap()
+    };
+    let markdown = |doc: &Document| -> String {
+        let nb: serde_json::Value =
+            serde_json::from_str(&notebook(doc, &phonglab_core::export::key(doc))).expect("the notebook is JSON");
+        let cells = nb["cells"].as_array().unwrap().iter().filter(|c| c["cell_type"] == "markdown");
+        cells.map(|c| c["source"].as_array().unwrap().iter().map(|l| l.as_str().unwrap()).collect::<String>()).collect()
+    };
+    let ws = scene("worksheet-mview5.toml");
+    use phonglab_core::locale::{Lang, Locale, set_thread};
+    for (lang, quote, behind) in [
+        (
+            Lang::En,
+            "\"vov vai sempre resultar em [0 0 1 0]\" (vov always comes out as [0 0 1 0])",
+            "(z > 0) this formula gives [0 0 -1 0]",
+        ),
+        (Lang::PtPt, "«vov vai sempre resultar em [0 0 1 0]»", "(z > 0) esta fórmula dá [0 0 -1 0]"),
+        (Lang::PtBr, "\"vov vai sempre resultar em [0 0 1 0]\"", "(z > 0) essa fórmula dá [0 0 -1 0]"),
+    ] {
+        set_thread(Some(Locale::of(lang)));
+        let text = markdown(&ws);
+        set_thread(None);
+        assert!(text.contains(quote) && text.contains(behind), "{lang:?}: {text}");
+        // The claim is made only inside the quote.
+        let claim = if lang == Lang::En { "always comes out as [0 0 1 0]" } else { "sempre resultar em [0 0 1 0]" };
+        assert_eq!(text.matches(claim).count(), 1, "{lang:?}: {text}");
+    }
+    let Some(python) = python_with_numpy() else {
+        eprintln!("SKIPPED: the notebooks are not run: no python3 with NumPy here (Debian: python3-numpy)");
+        return;
+    };
+    // GL_COLOR_MATERIAL tracks the diffuse: the alpha is the current colour's, whichever
+    // of the two is not 1 (the material's diffuse alone made the notebook fail on matAlpha).
+    let mut colour_half = scene("of-set-color.toml");
+    colour_half.scene.color_material.as_mut().unwrap().color.w = 0.5;
+    let mut material_half = scene("of-set-color.toml");
+    material_half.scene.material.diffuse.w = 0.5;
+    let dir = std::env::temp_dir().join(format!("phonglab-notebook-alpha-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (what, doc, alpha) in [("colour alpha 0.5", &colour_half, 0.5), ("material alpha 0.5", &material_half, 1.0)] {
+        let text = notebook(doc, &phonglab_core::export::key(doc));
+        assert!(
+            text.contains("its alpha the diffuse colour's (matDif's, the current colour's where GL_COLOR_MATERIAL")
+        );
+        let p = dir.join("alpha.ipynb");
+        std::fs::write(&p, text).unwrap();
+        let out = Command::new(python).arg("-c").arg(RUNNER).arg(&p).output().unwrap();
+        let run: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert!(run["error"].is_null(), "{what}: the notebook failed: {}", run["error"]);
+        let printed = printed_values(run["stdout"].as_str().unwrap());
+        assert_eq!(printed["glColor"][3], alpha, "{what}: {printed:?}");
+        assert!(check(what, &printed, &explanation(doc, Side::Front), None) > 10, "{what}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

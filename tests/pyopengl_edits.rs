@@ -18,8 +18,15 @@
 //! ```text
 //! PHONGLAB_EDITS_DIR=/tmp/edits cargo test --test pyopengl_edits write_edited_programs -- --ignored
 //! PYTHON=/usr/bin/python3 scripts/pyopengl_mesa.sh /tmp/edits /tmp/edits/mesa
-//! PHONGLAB_EDITS_DIR=/tmp/edits cargo test --test pyopengl_edits record_mesa_outcome -- --ignored
+//! PHONGLAB_EDITS_DIR=/tmp/edits cargo test --test pyopengl_edits record_mesa -- --ignored
 //! ```
+//!
+//! The same run draws each program with `glShadeModel(GL_SMOOTH)` edited to `GL_FLAT`,
+//! and that state drawn by fixed-function GL (`glUseProgram(0)`) where the rules are
+//! OpenGL's: `tests/data/pyopengl_flat.txt` keeps the outcome. The shaders draw exactly
+//! what GL's own GL_FLAT draws (each face the colour lit at its provoking vertex);
+//! phonglab's Flat, which lights a face at its centre with the plane's normal, is recorded
+//! beside it.
 
 use std::path::{Path, PathBuf};
 
@@ -276,6 +283,9 @@ fn write_edited_programs() {
     for (name, text, _) in edits() {
         std::fs::write(dir.join(format!("{name}.py")), text).unwrap();
     }
+    for (name, text, _) in flat_edits() {
+        std::fs::write(dir.join(format!("{name}.py")), text).unwrap();
+    }
 }
 
 /// Phonglab's picture of `doc` against Mesa's `mesa`: the difference, the mean of its
@@ -293,6 +303,20 @@ fn compare(doc: &Document, mesa: &[u8]) -> (Difference, f64, u8) {
         .unwrap_or(0);
     let mean = d.mad.iter().sum::<f64>() / 3.0;
     (d, mean, max)
+}
+
+/// Two pictures (RGBA8) of a scene with background `bg`: the difference, the mean of its
+/// channels and the largest difference of one channel of a pixel both cover.
+fn compare_pictures(a: &[u8], b: &[u8], bg: [u8; 3]) -> (Difference, f64, u8) {
+    let d = Difference::of(a, b, bg);
+    let max = a
+        .chunks_exact(4)
+        .zip(b.chunks_exact(4))
+        .filter(|(a, b)| a[..3] != bg && b[..3] != bg)
+        .flat_map(|(a, b)| (0..3).map(move |k| a[k].abs_diff(b[k])))
+        .max()
+        .unwrap_or(0);
+    (d, (d.mad.iter().sum::<f64>() / 3.0), max)
 }
 
 /// phonglab's picture of `doc` (RGBA8).
@@ -365,4 +389,109 @@ fn the_edited_programs_drew_under_mesa_what_phonglab_draws_of_the_edited_scenes(
         // the highlight): no pixel both cover may differ by more than the rounding.
         assert!(row[3] <= 8.0, "{name}: a pixel differs by {}/255", row[3]);
     }
+}
+
+/// Where `glShadeModel(GL_SMOOTH)` is edited to `GL_FLAT`: each scene's program unedited
+/// (`NAME-smooth`) and so edited (`NAME-flat`), and, where the scene's rules are OpenGL's own, the same program drawn by
+/// fixed-function GL (`NAME-flat-fixed`: `glUseProgram(0)`, the lighting state untouched),
+/// which is what the shaders must draw; with the scene drawn Flat by phonglab.
+fn flat_edits() -> Vec<(String, String, Document)> {
+    let mut out = Vec::new();
+    for (scene, doc) in scenes() {
+        let text = program(&doc, &phonglab_core::export::shaded_key(&doc)).unwrap();
+        assert_eq!(text.matches("    glShadeModel(GL_SMOOTH)\n").count(), 1, "{scene}: no glShadeModel call to edit");
+        let flat = text.replace("    glShadeModel(GL_SMOOTH)\n", "    glShadeModel(GL_FLAT)\n");
+        out.push((format!("{scene}-smooth"), text.clone(), doc.clone()));
+        let mut drawn = doc.clone();
+        drawn.view.shading = Shading::Flat;
+        if doc.scene.rules == phonglab_core::Rules::OPENGL {
+            let draw = "    glUseProgram(program)\n    set_uniforms(program)\n";
+            assert_eq!(flat.matches(draw).count(), 1);
+            let fixed = flat.replace(draw, "    glUseProgram(0)\n");
+            out.push((format!("{scene}-flat-fixed"), fixed, drawn.clone()));
+        }
+        out.push((format!("{scene}-flat"), flat, drawn));
+    }
+    out
+}
+
+fn flat_recorded_path() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/pyopengl_flat.txt")
+}
+
+#[test]
+#[ignore = "compares Mesa's pictures of the programs edited to GL_FLAT and records the outcome"]
+fn record_mesa_flat_outcome() {
+    let dir = PathBuf::from(std::env::var("PHONGLAB_EDITS_DIR").expect("PHONGLAB_EDITS_DIR")).join("mesa");
+    let mut out = format!(
+        "# tests/pyopengl_edits.rs: each program edited to glShadeModel(GL_FLAT), run by Mesa\n\
+         verified {}\n# name against: both-covered only-one mean/255 max/255 pixels-the-edit-changes\n\
+         # (fixed: fixed-function GL drawing the same program's state; render: phonglab render, Flat;\n\
+         # pixels-the-edit-changes: of the unedited program's Mesa picture)\n",
+        verified_code()
+    );
+    let read = |name: &str| {
+        let (w, h, p) = read_png(&dir.join(format!("{name}.png"))).unwrap();
+        assert_eq!((w, h), (SIZE, SIZE));
+        p
+    };
+    for (name, _, doc) in flat_edits() {
+        if !name.ends_with("-flat") {
+            continue;
+        }
+        let bg = doc.view.background.map(|c| (c * 255.0).round() as u8);
+        let flat = read(&name);
+        let smooth = read(&name.replace("-flat", "-smooth"));
+        let seen = smooth.chunks_exact(4).zip(flat.chunks_exact(4)).filter(|(a, b)| a != b).count();
+        let mut against = vec![("render", render(&doc))];
+        if doc.scene.rules == phonglab_core::Rules::OPENGL {
+            against.insert(0, ("fixed", read(&format!("{name}-fixed"))));
+        }
+        for (what, other) in against {
+            let (d, mean, max) = compare_pictures(&other, &flat, bg);
+            out.push_str(&format!("{name} {what} {} {} {mean:.3} {max} {seen}\n", d.both, d.only_one()));
+        }
+    }
+    std::fs::write(flat_recorded_path(), out).unwrap();
+}
+
+#[test]
+fn the_programs_follow_glshademodel_flat_as_fixed_function_gl_draws_it() {
+    // Mesa drew each program with `glShadeModel(GL_SMOOTH)` edited to `GL_FLAT`, and the
+    // same state drawn by fixed-function GL: the shaders must give what GL's own GL_FLAT
+    // gives (each face the colour lit at its provoking vertex). The old shaders ignored
+    // the call: the picture did not change.
+    let recorded = std::fs::read_to_string(flat_recorded_path()).unwrap();
+    let verified = recorded.lines().find_map(|l| l.strip_prefix("verified ")).unwrap();
+    assert_eq!(verified, verified_code(), "the shaders or the state reader changed since Mesa ran: run it again");
+    let rows: std::collections::BTreeMap<(&str, &str), Vec<f64>> = recorded
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("verified "))
+        .map(|l| {
+            let mut w = l.split(' ');
+            let (name, against) = (w.next().unwrap(), w.next().unwrap());
+            ((name, against), w.map(|x| x.parse().unwrap()).collect())
+        })
+        .collect();
+    let all = flat_edits();
+    let flat: Vec<&(String, String, Document)> = all.iter().filter(|(n, _, _)| n.ends_with("-flat")).collect();
+    assert_eq!(flat.len(), scenes().len());
+    let mut fixed = 0;
+    for (name, _, doc) in flat {
+        let render = rows.get(&(name.as_str(), "render")).unwrap_or_else(|| panic!("{name} was not run under Mesa"));
+        // GL_FLAT changes most of the object's pixels.
+        assert!(render[4] > 0.5 * render[0], "{name}: GL_FLAT changed only {} pixels", render[4]);
+        // phonglab's own Flat lights each face at its centre with the plane's normal, not
+        // at GL's provoking vertex: the same coverage, colours apart by the lighting's change
+        // across a face.
+        assert_eq!(render[1], 0.0, "{name}: coverage differs");
+        assert!(render[2] <= 8.0, "{name}: mean {}/255 from phonglab's Flat", render[2]);
+        if doc.scene.rules == phonglab_core::Rules::OPENGL {
+            let gl = rows.get(&(name.as_str(), "fixed")).unwrap_or_else(|| panic!("{name}: no fixed-function picture"));
+            assert_eq!(gl[1], 0.0, "{name}: coverage differs from fixed-function GL");
+            assert!(gl[3] <= 1.0, "{name}: a pixel {}/255 from fixed-function GL_FLAT", gl[3]);
+            fixed += 1;
+        }
+    }
+    assert!(fixed >= 5, "only {fixed} scenes checked against fixed-function GL");
 }

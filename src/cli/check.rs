@@ -45,13 +45,15 @@ fn read_printed(path: &Path) -> Result<Printed> {
             .map_err(anyhow::Error::msg)?;
         String::from_utf8_lossy(&bytes).into_owned()
     } else {
-        crate::io::input_file::read_text_capped(path, cap, &t!("file-kind-code")).map_err(anyhow::Error::msg)?
+        crate::io::input_file::read_text_submission(path, cap, &t!("file-kind-code")).map_err(anyhow::Error::msg)?
     };
     read_printed_text(&text).map_err(|e| anyhow::anyhow!("{}: {e}", crate::io::reasons::shown(path)))
 }
 
-/// Runs `phonglab check`.
-pub fn run(a: &CheckArgs) -> Result<()> {
+/// Runs `phonglab check`: whether the work is right (the exit code, for scripts and
+/// autograders: 0 right, 1 wrong or unchecked; [`super::judged`]); for a class folder,
+/// true once the report is written.
+pub fn run(a: &CheckArgs) -> Result<bool> {
     let assignment = match &a.scene {
         Some(p) => Some(super::scene_file(p)?.scene),
         None => None,
@@ -71,7 +73,7 @@ pub fn run(a: &CheckArgs) -> Result<()> {
             report: a.report.clone(),
             csv: a.csv.clone(),
         };
-        return super::check_class::run(dir, assignment.as_ref(), &class);
+        return super::check_class::run(dir, assignment.as_ref(), &class).map(|()| true);
     }
     let scene_line = match (&a.scene, &a.printed) {
         (Some(p), _) => t!("check-scene-file", path = crate::io::reasons::shown(p)),
@@ -95,7 +97,7 @@ pub fn run(a: &CheckArgs) -> Result<()> {
         let text = format!("{scene_line}\n{}", words(&c));
         super::check_class::out(&phonglab_core::escape::terminal::lines(&text));
     }
-    Ok(())
+    Ok(c.right())
 }
 
 /// Numbers for people, in the locale's mark.

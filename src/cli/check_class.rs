@@ -253,6 +253,7 @@ pub fn markdown(marked: &[Marked], counts: &[(String, usize)], chart: &str, scen
         };
         out.push_str(&format!("| {} | {} | {} | {} |\n", md(&m.name), md(&verdict), md(&first), md(&why)));
     }
+    out.push_str(&printed_twice_section(marked));
     let unread: Vec<(&String, &String)> =
         marked.iter().filter_map(|m| m.check.as_ref().err().map(|e| (&m.name, e))).collect();
     if !unread.is_empty() {
@@ -266,6 +267,26 @@ pub fn markdown(marked: &[Marked], counts: &[(String, usize)], chart: &str, scen
         out.push_str(&format!("- {}: {n}\n", md(id)));
     }
     out.push_str(&format!("\n![{}]({})\n", md(&t!("check-report-counts")), chart.replace(['(', ')', ' '], "_")));
+    out
+}
+
+/// The report's section of the steps each student printed more than once with different
+/// values (every printing is checked: a later right value never hid an earlier wrong
+/// one), escaped for Markdown; empty where no one did.
+fn printed_twice_section(marked: &[Marked]) -> String {
+    let md = escape::markdown::text;
+    let twice: Vec<(&String, Vec<String>)> = marked
+        .iter()
+        .filter_map(|m| m.check.as_ref().ok().map(|c| (&m.name, printed_again(c))))
+        .filter(|(_, steps)| !steps.is_empty())
+        .collect();
+    if twice.is_empty() {
+        return String::new();
+    }
+    let mut out = format!("\n## {}\n\n", md(&t!("check-report-printed-twice")));
+    for (name, steps) in twice {
+        out.push_str(&format!("- {}: {}\n", md(name), md(&steps.join(", "))));
+    }
     out
 }
 

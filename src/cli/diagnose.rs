@@ -101,8 +101,9 @@ fn bytes_at(rgba: &[u8], size: usize, (x, y): (usize, usize)) -> [u8; 3] {
     [rgba[i], rgba[i + 1], rgba[i + 2]]
 }
 
-/// Runs `phonglab diagnose`.
-pub fn run(a: &DiagnoseArgs) -> Result<()> {
+/// Runs `phonglab diagnose`: whether the picture is right (the exit code, for scripts: 0
+/// right, 1 wrong or unexplained; [`super::judged`]).
+pub fn run(a: &DiagnoseArgs) -> Result<bool> {
     use crate::io::same_file::Input;
     let outputs: Vec<&Path> = a.diff.iter().map(PathBuf::as_path).collect();
     let inputs = [(a.scene.as_path(), Input::Scene), (a.image.as_path(), Input::Any)];
@@ -114,6 +115,7 @@ pub fn run(a: &DiagnoseArgs) -> Result<()> {
     let size = a.size as usize;
     let image = crate::io::student_png::read(&a.image, size).map_err(anyhow::Error::msg)?;
     let d = diagnose(&right, &image, size)?;
+    let is_right = matches!(d.verdict, Verdict::Right);
     if let Some(diff) = &a.diff {
         crate::io::image::write_png(diff, size, size, &difference_image(&d.picture, &image))?;
     }
@@ -127,7 +129,7 @@ pub fn run(a: &DiagnoseArgs) -> Result<()> {
             "{}",
             phonglab_core::escape::json::text(&serde_json::to_string_pretty(&json(&d, &image, size, probed.as_ref()))?)
         );
-        return Ok(());
+        return Ok(is_right);
     }
     let mut out = verdict_lines(&d);
     let hidden = invisible(&d);
@@ -152,7 +154,7 @@ pub fn run(a: &DiagnoseArgs) -> Result<()> {
         }
     }
     println!("{}", phonglab_core::escape::terminal::lines(&out.join("\n")));
-    Ok(())
+    Ok(is_right)
 }
 
 /// The JSON: the verdict, the causes with their scores (best first), every mistake tried,

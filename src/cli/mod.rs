@@ -174,7 +174,8 @@ pub enum Command {
 }
 
 /// Runs a subcommand; the exit code is 0 on success, 2 on input that cannot be used, 1
-/// when `eval` evaluated a file some of whose cases failed.
+/// when `eval` evaluated a file some of whose cases failed, and when `check` or `diagnose`
+/// found the work wrong ([`judged`]).
 pub fn run(command: Command) -> ExitCode {
     let r = match command {
         Command::Eval(a) => {
@@ -189,14 +190,14 @@ pub fn run(command: Command) -> ExitCode {
         Command::Bench(b) => bench::run(&b),
         Command::Render(a) => render::run(&a),
         Command::Probe(a) => probe::run(&a),
-        Command::Diagnose(a) => diagnose::run(&a),
+        Command::Diagnose(a) => return judged(diagnose::run(&a)),
         Command::Case(a) => case::run(&a),
         Command::Cost(a) => cost::run_args(&a),
         // The binary hands it to the window (`crate::app`), which it draws.
         Command::Screenshot(_) => Err(anyhow::anyhow!(t!("err-needs-window"))),
         Command::Export(a) => export::export(&a),
         Command::Import(a) => export::import(&a),
-        Command::Check(a) => check::run(&a),
+        Command::Check(a) => return judged(check::run(&a)),
         Command::Share(a) => share::run(&a),
     };
     finish(r)
@@ -211,6 +212,17 @@ pub fn finish(r: Result<()>) -> ExitCode {
             eprintln!("phonglab: {}", phonglab_core::escape::terminal::lines(&format!("{e:#}")));
             ExitCode::from(2)
         }
+    }
+}
+
+/// The exit code of a command that judges a student's work (`check`, `diagnose`), for
+/// scripts and autograders: 0 when it is right (or a class's report was written), 1 when
+/// it is wrong, unchecked or unexplained, 2 on a usage or input error ([`finish`]).
+pub fn judged(r: Result<bool>) -> ExitCode {
+    match r {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(1),
+        Err(e) => finish(Err(e)),
     }
 }
 

@@ -40,7 +40,35 @@ pub enum Unread {
 /// [`read_capped`], with the reason as a value (for callers that treat each differently,
 /// as the session does).
 pub fn read_capped_or(path: &Path, cap: u64) -> Result<Vec<u8>, Unread> {
-    let file = crate::platform::os::open_to_read(path).map_err(Unread::Io)?;
+    read_opened(crate::platform::os::open_to_read(path).map_err(Unread::Io)?, cap)
+}
+
+/// [`read_capped`] of a student's submission, hostile input: a symbolic link at `path` is
+/// refused by the open itself ([`crate::platform::os::open_no_follow`]), so a link planted
+/// between a look at the folder and the read is never followed.
+pub fn read_submission(path: &Path, cap: u64, what: &str) -> Result<Vec<u8>, String> {
+    let shown = crate::io::reasons::shown(path);
+    let opened = crate::platform::os::open_no_follow(path).map_err(|e| {
+        if crate::platform::os::is_link_refused(&e) {
+            t!("read-link-refused", path = shown.clone())
+        } else {
+            t!("read-cannot", path = shown.clone(), reason = crate::io::reasons::io_reason(&e))
+        }
+    })?;
+    read_opened(opened, cap).map_err(|e| match e {
+        Unread::Io(e) => t!("read-cannot", path = shown.clone(), reason = crate::io::reasons::io_reason(&e)),
+        Unread::NotAFile => t!("read-not-a-file", path = shown.clone()),
+        Unread::TooLarge(size) => within_cap(&shown, size, cap, what).err().unwrap_or_default(),
+    })
+}
+
+/// [`read_submission`], as UTF-8 text.
+pub fn read_text_submission(path: &Path, cap: u64, what: &str) -> Result<String, String> {
+    utf8(read_submission(path, cap, what)?, path)
+}
+
+/// Reads the opened `file`, checked through its handle: a regular file of at most `cap` bytes.
+fn read_opened(file: std::fs::File, cap: u64) -> Result<Vec<u8>, Unread> {
     let meta = file.metadata().map_err(Unread::Io)?;
     if !meta.is_file() {
         return Err(Unread::NotAFile);
@@ -114,7 +142,11 @@ pub fn load_scene(path: &Path) -> Result<phonglab_core::Document, String> {
 
 /// [`read_capped`], as UTF-8 text.
 pub fn read_text_capped(path: &Path, cap: u64, what: &str) -> Result<String, String> {
-    let bytes = read_capped(path, cap, what)?;
+    utf8(read_capped(path, cap, what)?, path)
+}
+
+/// The bytes read from `path` as UTF-8 text, or where they are not.
+fn utf8(bytes: Vec<u8>, path: &Path) -> Result<String, String> {
     String::from_utf8(bytes)
         .map_err(|e| t!("read-not-utf8", path = crate::io::reasons::shown(path), byte = e.utf8_error().valid_up_to()))
 }

@@ -39,11 +39,12 @@ pub struct Work {
     pub printed: phonglab_core::study::check::printed::Printed,
 }
 
-/// Reads the notebook at `path`: its scene through `import`'s bounded reader, its outputs.
+/// Reads the notebook at `path`, a submission (a link is refused by the open itself): its
+/// scene through `import`'s bounded reader, its outputs.
 pub fn read_notebook(path: &Path) -> anyhow::Result<Work> {
     let cap = MAX_CODE_BYTES;
     let text =
-        super::input_file::read_text_capped(path, cap, &crate::t!("file-kind-code")).map_err(anyhow::Error::msg)?;
+        super::input_file::read_text_submission(path, cap, &crate::t!("file-kind-code")).map_err(anyhow::Error::msg)?;
     let notebook = student_code(path) == Some(true);
     let imported = import_text(&text, notebook, path).map_err(anyhow::Error::msg)?;
     // A given that is not a finite number is refused, named: never checked against the

@@ -1,5 +1,5 @@
-//! A student's picture read as hostile input: the file capped before it is read
-//! ([`crate::io::input_file::read_capped`]), its size checked against the size expected
+//! A student's picture read as hostile input: the file capped before it is read, a link
+//! refused by the open itself ([`crate::io::input_file::read_submission`]), its size checked against the size expected
 //! from the header alone, before any pixel is decoded, and the decoder's memory capped.
 
 use std::path::Path;
@@ -17,7 +17,7 @@ const MAX_DECODED_BYTES: usize = 64 << 20;
 /// what is wrong in the user's language: not a PNG, damaged, or the wrong size (with the
 /// size expected).
 pub fn read(path: &Path, size: usize) -> Result<Vec<u8>, String> {
-    let bytes = crate::io::input_file::read_capped(path, MAX_PICTURE_BYTES, &t!("file-kind-pictures"))?;
+    let bytes = crate::io::input_file::read_submission(path, MAX_PICTURE_BYTES, &t!("file-kind-pictures"))?;
     decode(&bytes, path, size)
 }
 

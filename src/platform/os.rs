@@ -53,21 +53,56 @@ pub fn open_to_read(path: &Path) -> io::Result<File> {
 }
 
 /// Opens `path` to read without following a symbolic link at its last component and
-/// without waiting (Unix: `O_NOFOLLOW | O_NONBLOCK`): for files phonglab itself wrote into
-/// a folder that others may have planted things in (a set's journal), where a link is never
-/// phonglab's. The caller checks what was opened through the handle.
+/// without waiting (Unix: `O_NOFOLLOW | O_NONBLOCK`; Windows:
+/// `FILE_FLAG_OPEN_REPARSE_POINT`, the link itself opened and then refused through its
+/// handle): for files phonglab itself wrote into a folder that others may have planted
+/// things in (a set's journal), and for a student's submission, where a link is never to be
+/// followed. The refusal is the open's own, so no link swapped in after a check is followed;
+/// [`is_link_refused`] tells it from other errors. The caller checks what was opened through
+/// the handle.
 pub fn open_no_follow(path: &Path) -> io::Result<File> {
     #[cfg(unix)]
     {
         use std::os::unix::fs::OpenOptionsExt;
         File::options().read(true).custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK).open(path)
     }
-    #[cfg(not(unix))]
+    #[cfg(windows)]
+    {
+        use std::os::windows::fs::OpenOptionsExt;
+        /// `FILE_FLAG_OPEN_REPARSE_POINT`: open a link (a reparse point) itself.
+        const OPEN_REPARSE_POINT: u32 = 0x0020_0000;
+        let file = File::options().read(true).custom_flags(OPEN_REPARSE_POINT).open(path)?;
+        if file.metadata()?.file_type().is_symlink() {
+            return Err(io::Error::from_raw_os_error(WINDOWS_LINK_REFUSED));
+        }
+        Ok(file)
+    }
+    #[cfg(not(any(unix, windows)))]
     {
         if std::fs::symlink_metadata(path)?.file_type().is_symlink() {
             return Err(io::Error::new(io::ErrorKind::InvalidInput, "a symbolic link"));
         }
         File::open(path)
+    }
+}
+
+/// The error [`open_no_follow`] gives a link on Windows: `ERROR_CANT_RESOLVE_FILENAME`.
+#[cfg(windows)]
+const WINDOWS_LINK_REFUSED: i32 = 1921;
+
+/// Is `e` [`open_no_follow`]'s refusal of a link (Unix: `ELOOP`)?
+pub fn is_link_refused(e: &io::Error) -> bool {
+    #[cfg(unix)]
+    {
+        e.raw_os_error() == Some(libc::ELOOP)
+    }
+    #[cfg(windows)]
+    {
+        e.raw_os_error() == Some(WINDOWS_LINK_REFUSED)
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        e.kind() == io::ErrorKind::InvalidInput
     }
 }
 

@@ -230,7 +230,9 @@ nb-vectors =
 
     For a directional light the vector (lightPos - vertexPos) is not needed: we use lightPos itself.
 
-    The vector (obsPos - vertexPos) is computed differently for `glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, true/false)`: when **true**, obs = [0 0 0 1]; when **false**, only the z component is kept: obs = vertexPos * [1 1 0 1], and vov always comes out as [0 0 1 0].
+    The vector (obsPos - vertexPos) is computed differently for `glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, true/false)`: when **true**, obs = [0 0 0 1]; when **false**, obs = vertexPos * [1 1 0 1], the vertex with its z set to 0, so vov = obs - vertexPos = [0 0 -z 0] before it is normalised: only its z component is left.
+
+    The worksheet says of **false**: "vov vai sempre resultar em [0 0 1 0]" (vov always comes out as [0 0 1 0]). That holds only for a vertex in front of the eye (its z in eye space < 0): for a vertex behind the eye (z > 0) this formula gives [0 0 -1 0], and at z = 0 vov has no direction to normalise (0/0). (OpenGL's infinite viewer is always V = (0, 0, 1).)
 
     More about this at <https://registry.khronos.org/OpenGL-Refpages/gl2.1/xhtml/glLightModel.xml>
 nb-normal-matrix-comment = # OpenGL transforms normals by the inverse transpose of the modelview's 3x3: (M^-1)^T n
@@ -280,7 +282,7 @@ nb-final =
     Final calculation:
 
     - I<sub>final</sub> = (I<sub>amb</sub> + I<sub>dif</sub> + I<sub>spec</sub>)/at
-nb-glcolor-comment = # the colour as drawn: clamped to [0, 1], alpha from the material's diffuse
+nb-glcolor-comment = # the colour as drawn: clamped to [0, 1], its alpha the diffuse colour's (matDif's, the current colour's where GL_COLOR_MATERIAL tracks the diffuse), as OpenGL takes it
 nb-back = The back side (two-sided lighting): the same terms with the normal reversed (-vertexNormal) and the back material; the names end in Back.
 nb-no-spot-comment = # not a spotlight (spotCutoff 180)
 import-unreadable = { $place }: cannot read `{ $line }`: { $reason }; ignored
@@ -347,7 +349,7 @@ py-light-eye = placed under the identity: the light moves with the eye
 py-light-object = placed under the whole modelview: the light turns with the object
 py-light-world = placed under the view matrix: the light stays put in the world
 py-state-doc = The scene's lighting state, set the fixed-function way. Each light's GL_POSITION and GL_SPOT_DIRECTION are transformed by the modelview current when they are set, so GL keeps them in eye space.
-py-reader-doc = Gives the shaders what GLSL has no variable for, read from GL's state each frame: the lighting modelview and the normal matrix, the enabled lights, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_COLOR_CONTROL, GL_NORMALIZE or GL_RESCALE_NORMAL, and GL_COLOR_MATERIAL.
+py-reader-doc = Gives the shaders what GLSL has no variable for, read from GL's state each frame: the lighting modelview and the normal matrix, the enabled lights, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_COLOR_CONTROL, GL_NORMALIZE or GL_RESCALE_NORMAL, GL_COLOR_MATERIAL, and GL_SHADE_MODEL.
 py-editable-comment = You may edit every call below (a glLight*, glMaterial* or glLightModel* value, glEnable or glDisable of a light, GL_NORMALIZE, GL_COLOR_MATERIAL): the shaders read this state every frame and draw what fixed-function OpenGL draws from it, except where a comment below says otherwise. RULES and the shaders' #define lines are not GL state: they stay as written.
 py-lighting-comment = The shaders light the object whether or not GL_LIGHTING is enabled: with glDisable(GL_LIGHTING), fixed-function OpenGL would draw the current colour (glColor) unlit; these shaders would not.
 py-scene-ambient-off = SCENE_AMBIENT is 0 under these rules: the shaders add neither this scene ambient nor the material's GL_EMISSION, so editing either changes nothing here (fixed-function OpenGL would add both).
@@ -686,3 +688,7 @@ check-cause-ambient-outside-share = the light's ambient term outside both the sp
 check-cause-scene-ambient-times-light = the scene's global ambient also multiplied by the light's ambient colour
 check-run-stopped = not checked: the run stopped with an error before the end: { $error }
 check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)
+
+# fix57b
+py-shade-model-comment = glShadeModel(GL_SMOOTH) draws the shading this program was written for (Gouraud: the vertices' colours interpolated; Phong: each pixel lit). With GL_FLAT the shaders draw what fixed-function OpenGL draws: each face in the colour lit at its provoking vertex (a triangle’s or a quad’s last vertex).
+py-two-side-program-comment = Lets the fragment shader’s gl_Color be the back colour on a triangle’s back side, as fixed-function GL chooses it; the shaders use it under glShadeModel(GL_FLAT).

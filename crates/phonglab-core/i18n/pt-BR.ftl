@@ -230,7 +230,9 @@ nb-vectors =
 
     No caso da luz ser direcional, o vetor (luzPos-vérticePos) é desnecessário, usamos o próprio luzPos
 
-    O vetor (obsPos - vérticePos) é calculado de forma diferente para `glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, true/false)`: quando **true**, obs = [0 0 0 1]; quando **false**, só ficamos com a componente z: obs = (vertexPos) * [1 1 0 1], e vov vai sempre resultar em [0 0 1 0].
+    O vetor (obsPos - vérticePos) é calculado de forma diferente para `glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, true/false)`: quando **true**, obs = [0 0 0 1]; quando **false**, obs = (vertexPos) * [1 1 0 1], o vértice com z igual a 0, e portanto vov = obs - vertexPos = [0 0 -z 0] antes de ser normalizado: só sobra a componente z.
+
+    A ficha diz de **false**: "vov vai sempre resultar em [0 0 1 0]". Isso só vale para um vértice na frente do olho (z < 0 no espaço do olho): para um vértice atrás do olho (z > 0) essa fórmula dá [0 0 -1 0], e com z = 0 o vov não tem direção para normalizar (0/0). (O observador no infinito do OpenGL é sempre V = (0, 0, 1).)
 
     mais info sobre isso em <https://registry.khronos.org/OpenGL-Refpages/gl2.1/xhtml/glLightModel.xml>
 nb-normal-matrix-comment = # o OpenGL transforma as normais pela inversa transposta da 3x3 da modelview: (M^-1)^T n
@@ -280,7 +282,7 @@ nb-final =
     Calculo final:
 
     - I<sub>final</sub> = (I<sub>amb</sub> + I<sub>dif</sub> + I<sub>spec</sub>)/at
-nb-glcolor-comment = # a cor desenhada: limitada a [0, 1], o alfa vem da difusa do material
+nb-glcolor-comment = # a cor desenhada: limitada a [0, 1], com o alfa da cor difusa (o de matDif, que é o da cor atual quando GL_COLOR_MATERIAL segue a difusa), como o OpenGL o toma
 nb-back = A face de trás (iluminação dos dois lados): os mesmos termos com a normal invertida (-vertexNormal) e o material de trás; os nomes terminam em Back.
 nb-no-spot-comment = # não é um foco (spotCutoff 180)
 import-unreadable = { $place }: não consigo ler `{ $line }`: { $reason }; ignorada
@@ -347,7 +349,7 @@ py-light-eye = colocada sob a identidade: a luz move-se com o olho
 py-light-object = colocada sob a modelview inteira: a luz gira com o objeto
 py-light-world = colocada sob a matriz de vista: a luz fica parada no mundo
 py-state-doc = O estado da iluminação da cena, definido à maneira do pipeline fixo. O GL_POSITION e o GL_SPOT_DIRECTION de cada luz são transformados pela modelview ativa quando são definidos, por isso o GL guarda-os no espaço do olho.
-py-reader-doc = Passa aos shaders o que o GLSL não tem em nenhuma variável, lido do estado do GL a cada quadro: a modelview da iluminação e a matriz das normais, as luzes ligadas, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_COLOR_CONTROL, GL_NORMALIZE ou GL_RESCALE_NORMAL, e GL_COLOR_MATERIAL.
+py-reader-doc = Passa aos shaders o que o GLSL não tem em nenhuma variável, lido do estado do GL a cada quadro: a modelview da iluminação e a matriz das normais, as luzes ligadas, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_COLOR_CONTROL, GL_NORMALIZE ou GL_RESCALE_NORMAL, GL_COLOR_MATERIAL e GL_SHADE_MODEL.
 py-editable-comment = Você pode mudar qualquer chamada abaixo (um valor de glLight*, glMaterial* ou glLightModel*, o glEnable ou glDisable de uma luz, GL_NORMALIZE, GL_COLOR_MATERIAL): os shaders leem este estado a cada quadro e desenham o que o OpenGL de pipeline fixo desenharia a partir dele, exceto onde um comentário abaixo disser o contrário. O RULES e as linhas #define dos shaders não são estado do GL: ficam como estão escritos.
 py-lighting-comment = Os shaders iluminam o objeto com ou sem GL_LIGHTING ativo: com glDisable(GL_LIGHTING), o OpenGL de pipeline fixo desenharia a cor atual (glColor) sem iluminação; estes shaders não.
 py-scene-ambient-off = SCENE_AMBIENT é 0 com estas regras: os shaders não somam nem esta ambiente da cena nem a GL_EMISSION do material, então mudar qualquer uma delas aqui não muda nada (o OpenGL de pipeline fixo somaria as duas).
@@ -686,3 +688,7 @@ check-cause-ambient-outside-share = o termo ambiente da luz fora do fator do foc
 check-cause-scene-ambient-times-light = o ambiente global da cena também multiplicado pela cor ambiente da luz
 check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
 check-nothing-compared = não verificado: nada do que você imprimiu é um passo da ficha; imprima cada valor como a ficha faz, print("vlv = ", vlv)
+
+# fix57b
+py-shade-model-comment = glShadeModel(GL_SMOOTH) desenha o sombreamento para o qual este programa foi escrito (Gouraud: as cores dos vértices interpoladas; Phong: cada pixel iluminado). Com GL_FLAT, os shaders desenham o que o OpenGL de pipeline fixo desenha: cada face na cor calculada no seu vértice provocante (o último vértice de um triângulo ou de um quadrilátero).
+py-two-side-program-comment = Faz o gl_Color do fragment shader ser a cor de trás na face de trás de um triângulo, como o GL de pipeline fixo a escolhe; os shaders o usam com glShadeModel(GL_FLAT).

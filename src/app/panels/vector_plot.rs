@@ -287,11 +287,10 @@ fn plot_area_ui(ui: &mut Ui, orbit: &mut Orbit) -> (Rect, f32) {
     let side = avail.x.min(avail.y).max(40.0).min(avail.x.max(1.0));
     let (outer, resp) = ui.allocate_exact_size(vec2(avail.x.max(side), side), Sense::click_and_drag());
     resp.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, "vector plot"));
-    let resp = resp.on_hover_text(crate::t!(
-        "plot-drag",
-        yaw = format!("{:.0}", orbit.yaw),
-        pitch = format!("{:.0}", orbit.pitch)
-    ));
+    crate::app::widgets::hint::above_pointer(
+        &resp,
+        crate::t!("plot-drag", yaw = format!("{:.0}", orbit.yaw), pitch = format!("{:.0}", orbit.pitch)),
+    );
     if resp.dragged() {
         let d = resp.drag_delta();
         orbit.yaw = (orbit.yaw + d.x as f64 * 0.5).rem_euclid(360.0);

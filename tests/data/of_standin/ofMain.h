@@ -22,6 +22,7 @@ enum : GLenum {
     GL_FRAGMENT_SHADER = 0x8B30, GL_VERTEX_SHADER = 0x8B31,
     GL_COLOR_MATERIAL = 0x0B57, GL_COLOR_MATERIAL_FACE = 0x0B55, GL_COLOR_MATERIAL_PARAMETER = 0x0B56,
     GL_AMBIENT_AND_DIFFUSE = 0x1602,
+    GL_SHADE_MODEL = 0x0B54, GL_FLAT = 0x1D00, GL_SMOOTH = 0x1D01, GL_VERTEX_PROGRAM_TWO_SIDE = 0x8643,
 };
 void glLightfv(GLenum light, GLenum pname, const GLfloat* params);
 void glLightf(GLenum light, GLenum pname, GLfloat param);

@@ -627,7 +627,9 @@ fn final_colour(scene: &Scene, needs: &Needs, suffix: &str) -> String {
     }
     s.push_str(&format!("print(\"{i_name} = \", {i_name})\n"));
     let alpha_var = if back { "matAlphaBack" } else { "matAlpha" };
-    let alpha_m = if back { scene.back() } else { &scene.material };
+    // OpenGL's lit alpha is the diffuse colour's as lit: the current colour's where
+    // GL_COLOR_MATERIAL tracks the diffuse (the material cell writes `matAlpha` from it).
+    let alpha_m = scene.lit_material(if back { Side::Back } else { Side::Front });
     let alpha = if alpha_m.diffuse.w == 1.0 { "1".to_string() } else { alpha_var.to_string() };
     let sum = if sep {
         let isec_sum = if n == 1 { isec.clone() } else { format!("sum({isec})") };

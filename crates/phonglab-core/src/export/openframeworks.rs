@@ -151,6 +151,9 @@ const SHADER_STATE: &str = r#"    {
             : mode == GL_EMISSION ? 4 : mode == GL_AMBIENT_AND_DIFFUSE ? 5 : 0;
         shader.setUniform1i("u_color_material", glIsEnabled(GL_COLOR_MATERIAL) ? tracked : 0);
         shader.setUniform1i("u_color_material_face", face == GL_FRONT ? 1 : face == GL_BACK ? 2 : 3);
+        glGetIntegerv(GL_SHADE_MODEL, &v);
+        shader.setUniform1i("u_flat", v == GL_FLAT);
+        glEnable(GL_VERTEX_PROGRAM_TWO_SIDE);
     }
 "#;
 

@@ -67,6 +67,7 @@ pub fn program(doc: &Document, key: &Key) -> Result<String, String> {
             ("lighting_state", code(lighting_state(scene, key))),
             ("reader_doc", text(t!("py-reader-doc"))),
             ("normal_matrix_comment", text(t!("py-normal-matrix-comment"))),
+            ("two_side_comment", code(wrapped_comment(&t!("py-two-side-program-comment"), "    "))),
             ("object", code(object(&doc.view)?)),
         ])
         .map_err(|e| e.to_string())
@@ -254,7 +255,9 @@ fn lighting_state(scene: &Scene, key: &Key) -> String {
     };
     s.push_str(normals);
     s.push_str(&wrapped_comment(&t!("py-lighting-comment"), "    "));
-    s.push_str("    glEnable(GL_LIGHTING)\n\n\n");
+    s.push_str("    glEnable(GL_LIGHTING)\n");
+    s.push_str(&wrapped_comment(&t!("py-shade-model-comment"), "    "));
+    s.push_str("    glShadeModel(GL_SMOOTH)\n\n\n");
     s
 }
 

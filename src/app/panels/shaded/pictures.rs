@@ -114,8 +114,8 @@ pub(super) fn pictures_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &mut Shade
                     let picture = match channel_texture {
                         Some((_, id)) => ui.add(egui::Image::new((id, size)).sense(Sense::click_and_drag())),
                         None => picture_ui(ui, &cache.main, main_gpu.take(), size, Sense::click_and_drag()),
-                    }
-                    .on_hover_text(hover);
+                    };
+                    crate::app::widgets::hint::above_pointer(&picture, hover);
                     let picture = named(ui, picture, &label, &caption);
                     if let Some((c, _)) = channel_texture {
                         legend_ui(ui, c, cache.channel.name_id(c), cache.channel.range, side);

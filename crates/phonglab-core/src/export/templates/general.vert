@@ -16,13 +16,10 @@ vec4 clamped(vec4 c) {
 #endif
 }
 
-void main() {
-    vec4 Ph = u_eye_from_object * vec4(gl_Vertex.xyz / gl_Vertex.w, 1.0);
-    v_pos = Ph.xyz / Ph.w;
-    v_normal = u_normal_matrix * gl_Normal;
-    v_color = gl_Color;
-    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
-#if !PER_FRAGMENT
+// The vertex's colours, front and back, in the varyings Gouraud interpolates and in GL's
+// own colour varyings, which GL gives a whole triangle from its provoking (last) vertex
+// under glShadeModel(GL_FLAT), as fixed-function OpenGL does.
+void vertex_colours() {
     vec3 N = lighting_normal(v_normal);
     vec4 p;
     vec3 s;
@@ -36,5 +33,21 @@ void main() {
         v_back = clamped(p);
         v_back_secondary = clamped(vec4(s, 1.0)).rgb;
     }
+    gl_FrontColor = v_front;
+    gl_FrontSecondaryColor = vec4(v_front_secondary, 1.0);
+    gl_BackColor = v_back;
+    gl_BackSecondaryColor = vec4(v_back_secondary, 1.0);
+}
+
+void main() {
+    vec4 Ph = u_eye_from_object * vec4(gl_Vertex.xyz / gl_Vertex.w, 1.0);
+    v_pos = Ph.xyz / Ph.w;
+    v_normal = u_normal_matrix * gl_Normal;
+    v_color = gl_Color;
+    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
+#if PER_FRAGMENT
+    if (u_flat != 0) vertex_colours();
+#else
+    vertex_colours();
 #endif
 }

@@ -10,6 +10,7 @@ uniform int u_two_side;            // GL_LIGHT_MODEL_TWO_SIDE
 uniform int u_separate_specular;   // GL_LIGHT_MODEL_COLOR_CONTROL == GL_SEPARATE_SPECULAR_COLOR
 uniform int u_color_material;      // 0: off; 1 ambient, 2 diffuse, 3 specular, 4 emission, 5 ambient and diffuse
 uniform int u_color_material_face; // 1 GL_FRONT, 2 GL_BACK, 3 GL_FRONT_AND_BACK
+uniform int u_flat;                // glGetIntegerv(GL_SHADE_MODEL) == GL_FLAT
 
 struct Side {
     vec4 ambient;

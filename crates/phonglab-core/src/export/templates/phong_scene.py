@@ -54,6 +54,7 @@ def set_uniforms(program):
     mode = tracked.get(int(scalar(glGetIntegerv(GL_COLOR_MATERIAL_PARAMETER))), 0)
     glUniform1i(location("u_color_material"), mode if glIsEnabled(GL_COLOR_MATERIAL) else 0)
     glUniform1i(location("u_color_material_face"), faces.get(int(scalar(glGetIntegerv(GL_COLOR_MATERIAL_FACE))), 3))
+    glUniform1i(location("u_flat"), flag(int(scalar(glGetIntegerv(GL_SHADE_MODEL))) == GL_FLAT))
 
 {{object}}def draw():
     glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1.0)
@@ -99,6 +100,7 @@ def main():
     glutInitWindowSize(SIZE, SIZE)
     glutCreateWindow(b"phonglab")
     glEnable(GL_DEPTH_TEST)
+{{two_side_comment}}    glEnable(GL_VERTEX_PROGRAM_TWO_SIDE)
     set_lighting_state()
     program = OpenGL.GL.shaders.compileProgram(
         OpenGL.GL.shaders.compileShader(vertex_shader, GL_VERTEX_SHADER),
