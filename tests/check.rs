@@ -927,3 +927,41 @@ fn a_flag_that_does_not_apply_is_refused_and_one_submission_is_singular() {
         String::from_utf8_lossy(&o.stderr)
     );
 }
+
+/// The back side of two-sided lighting is checked too: its values, printed with `Back`
+/// after their names, are compared; a mistake made only there makes the work wrong, with
+/// its first wrong step on the back side.
+#[test]
+fn the_back_side_of_two_sided_lighting_is_checked() {
+    let Some(python) = python_with_numpy() else {
+        eprintln!("SKIPPED: no python3 with NumPy here (Debian: python3-numpy)");
+        return;
+    };
+    let dir = TempDir::new("two-sided");
+    let mut doc = light_behind();
+    doc.scene.light_model.two_sided = true;
+    doc.scene.light_model.ambient = DVec4::new(0.2, 0.2, 0.2, 1.0);
+    doc.scene.material.emission = DVec4::new(0.1, 0.05, 0.0, 1.0);
+    let back_only = [("IBack = IemiBack + IsceneBack + IlightBack", "IBack = IsceneBack + IlightBack")];
+    for (k, edits) in [&[][..], &back_only[..]].into_iter().enumerate() {
+        std::fs::write(dir.path().join(format!("{k}.ipynb")), edited("two-sided", &doc, edits)).unwrap();
+        std::fs::write(dir.path().join(format!("{k}.toml")), doc.to_toml().unwrap()).unwrap();
+    }
+    let ran = run_all(python, dir.path(), 2);
+    let right = check_json(&ran[0], &dir.path().join("0.toml"));
+    assert_eq!(right["verdict"], "right", "{right:#}");
+    let steps: Vec<&str> = right["steps"].as_array().unwrap().iter().map(|s| s["step"].as_str().unwrap()).collect();
+    for back in ["cosThetaBack", "IdifBack", "IspecBack", "IBack", "glColorBack"] {
+        assert!(steps.contains(&back), "{back} not compared: {steps:?}");
+    }
+    let out = common::phonglab(&[
+        "check",
+        ran[1].to_str().unwrap(),
+        "--scene",
+        dir.path().join("1.toml").to_str().unwrap(),
+        "--json",
+    ]);
+    let wrong: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(wrong["verdict"], "wrong", "{wrong:#}");
+    assert_eq!(wrong["first_wrong"]["step"], "IBack", "{wrong:#}");
+}

@@ -56,6 +56,15 @@ struct Walk<'a> {
     view: DVec4,
     lights: Vec<LightState>,
     sum: DVec4,
+    /// The side being worked: the back side's values are printed with `Back` after their
+    /// names, from the normal reversed and the back material.
+    side: Side,
+    /// The other side's lights and sum, swapped in while that side is worked.
+    other_lights: Vec<LightState>,
+    other_sum: DVec4,
+    /// Has a stage of the back side been worked? Has the scene's colour (OpenGL's rules)?
+    back_seen: bool,
+    scene_colour_seen: bool,
     out: Worked,
 }
 
@@ -95,6 +104,11 @@ pub fn work_made(scene: &Scene, made: Option<Made>, student: Option<&Printed>) -
         view: DVec4::ZERO,
         lights: vec![LightState { at: 1.0, spot: 1.0, ..LightState::default() }; scene.lights.len()],
         sum: DVec4::ZERO,
+        side: Side::Front,
+        other_lights: vec![LightState { at: 1.0, spot: 1.0, ..LightState::default() }; scene.lights.len()],
+        other_sum: DVec4::ZERO,
+        back_seen: false,
+        scene_colour_seen: false,
         out: Worked::default(),
     };
     for &stage in &Program::worked(&key).stages {
@@ -134,7 +148,7 @@ impl Walk<'_> {
 
     /// Light `i`'s and the material's colours of `term`, as multiplied (with a mix-up made).
     fn colours(&self, i: usize, term: Term) -> (DVec4, DVec4) {
-        let (light, mat) = (&self.scene.lights[i], self.scene.lit_material(Side::Front));
+        let (light, mat) = (&self.scene.lights[i], self.scene.lit_material(self.side));
         let of_light = |t: Term| {
             rgb(match t {
                 Term::Ambient => light.ambient,
@@ -167,7 +181,41 @@ impl Walk<'_> {
 
     /// A light's printed name: `vlv` for the one light, `vlv[0]` of several.
     fn name(&self, base: &str, i: usize) -> String {
-        if self.lights.len() == 1 { base.to_string() } else { format!("{base}[{i}]") }
+        let base = self.named(base);
+        if self.lights.len() == 1 { base } else { format!("{base}[{i}]") }
+    }
+
+    /// A value's printed name on the side worked: `I`, or `IBack`.
+    fn named(&self, base: &str) -> String {
+        match self.side {
+            Side::Front => base.to_string(),
+            Side::Back => format!("{base}Back"),
+        }
+    }
+
+    /// Works `f` on the back side for light `id`: its geometry (`vlv`, `H`, `at`, `spot`)
+    /// the front's, its normal reversed, its own material, sum and names.
+    fn on_back(&mut self, id: LightId, f: impl FnOnce(&mut Self)) {
+        let i = id.index();
+        let front = self.lights[i];
+        let back = &mut self.other_lights[i];
+        (back.pos, back.vlv, back.d, back.at, back.spot, back.vector) =
+            (front.pos, front.vlv, front.d, front.at, front.spot, front.vector);
+        self.swap_sides();
+        f(self);
+        self.swap_sides();
+        self.back_seen = true;
+    }
+
+    /// Swaps the side worked: lights, sum, normal.
+    fn swap_sides(&mut self) {
+        std::mem::swap(&mut self.lights, &mut self.other_lights);
+        std::mem::swap(&mut self.sum, &mut self.other_sum);
+        self.normal = -self.normal;
+        self.side = match self.side {
+            Side::Front => Side::Back,
+            Side::Back => Side::Front,
+        };
     }
 
     /// Records `value` under `name` and returns the value the walk goes on with: the
@@ -231,10 +279,9 @@ impl Walk<'_> {
             Stage::SpecularCosine(i, Side::Front, vector) => self.specular_cosine(i, vector),
             Stage::Power(..) => {}
             Stage::Sum(i, Side::Front, term) => self.light_sum(i, term),
-            // The back side of two-sided lighting is not checked (its names end in Back).
-            Stage::DiffuseCosine(_, Side::Back)
-            | Stage::SpecularCosine(_, Side::Back, _)
-            | Stage::Sum(_, Side::Back, _) => {}
+            Stage::DiffuseCosine(i, Side::Back) => self.on_back(i, |w| w.diffuse(i)),
+            Stage::SpecularCosine(i, Side::Back, vector) => self.on_back(i, |w| w.specular_cosine(i, vector)),
+            Stage::Sum(i, Side::Back, term) => self.on_back(i, |w| w.light_sum(i, term)),
             Stage::SceneColor => self.scene_color(),
         }
     }
@@ -460,7 +507,7 @@ impl Walk<'_> {
     /// `Ispec` as the rules gate it, then the light's share `Ilight`, added to the sum.
     fn light_sum(&mut self, id: LightId, term: SpecularTerm) {
         let i = id.index();
-        let shininess = self.scene.lit_material(Side::Front).shininess;
+        let shininess = self.scene.lit_material(self.side).shininess;
         let s = self.lights[i];
         let ns = if self.made(Mistake::ShininessFraction) { shininess / 128.0 } else { shininess };
         let scale = match term {
@@ -523,7 +570,8 @@ impl Walk<'_> {
 
     /// OpenGL's scene ambient and emission.
     fn scene_color(&mut self) {
-        let mat = self.scene.lit_material(Side::Front);
+        self.scene_colour_seen = true;
+        let mat = self.scene.lit_material(self.side);
         let scene_ambient = rgb(self.scene.light_model.ambient);
         let iscene = if self.made(Mistake::SceneAmbientWithoutMaterial) {
             scene_ambient
@@ -535,8 +583,8 @@ impl Walk<'_> {
         } else {
             rgb(mat.ambient) * scene_ambient
         };
-        let iscene = self.emit4("Iscene".into(), iscene);
-        let iemi = self.emit4("Iemi".into(), rgb(mat.emission));
+        let iscene = self.emit4(self.named("Iscene"), iscene);
+        let iemi = self.emit4(self.named("Iemi"), rgb(mat.emission));
         if !self.made(Mistake::SceneAmbientLeftOut) {
             self.sum += iscene;
         }
@@ -548,24 +596,38 @@ impl Walk<'_> {
         }
     }
 
-    /// `I`, and the colour as drawn.
+    /// `I` and the colour as drawn, then the back side's (its scene colour, `IBack`,
+    /// `glColorBack`) where it was worked.
     fn finish(&mut self) {
+        self.finish_side();
+        if self.back_seen {
+            self.swap_sides();
+            if self.scene_colour_seen {
+                self.scene_color();
+            }
+            self.finish_side();
+            self.swap_sides();
+        }
+    }
+
+    /// `I`, and the colour as drawn, of the side worked.
+    fn finish_side(&mut self) {
         if self.made(Mistake::SpotOnWholeColour) {
             self.sum *= self.lights.first().map_or(1.0, |l| l.spot);
         }
         if self.made(Mistake::AttenuationOnWholeColour) {
             self.sum /= self.lights.first().map_or(1.0, |l| l.at);
         }
-        let i = self.emit4("I".into(), self.sum);
+        let i = self.emit4(self.named("I"), self.sum);
         let c = if self.made(Mistake::ColourNotClamped) {
             i.truncate()
         } else {
             // `np.clip`: a NaN stays NaN (`f64::clamp` keeps it; `DVec3::clamp` would make it 0).
             glam::DVec3::from_array(i.truncate().to_array().map(|x| x.clamp(0.0, 1.0)))
         };
-        let alpha = if self.made(Mistake::AlphaFromSum) { i.w } else { self.scene.lit_material(Side::Front).diffuse.w };
+        let alpha = if self.made(Mistake::AlphaFromSum) { i.w } else { self.scene.lit_material(self.side).diffuse.w };
         if !self.key.separate_specular {
-            self.emit4("glColor".into(), c.extend(alpha));
+            self.emit4(self.named("glColor"), c.extend(alpha));
         }
     }
 }
