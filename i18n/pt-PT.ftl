@@ -968,7 +968,7 @@ check-inputs-differ = os dados que escreveu diferem dos do enunciado: { $names }
 check-step = { $step }: o seu { $student }, o da solução { $key }: { $verdict }
 check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o da solução { $key })
 check-all-right = tudo certo: todos os passos impressos são os da solução
-check-cause = causa provável: { $words } [{ $id }]. Prova: em { $step } imprimiu { $student }, e a solução com este erro dá { $value }
+check-cause = causa provável: { $words } [{ $id }]. Evidência: em { $step } imprimiu { $student }, e a solução com este erro dá { $value }
 check-no-cause = nenhum erro do catálogo reproduz tudo o que imprimiu; veja o primeiro passo errado
 check-nothing-printed = nada impresso que a solução tenha: imprima cada valor como a ficha faz, print("vlv = ", vlv)
 check-report-title = Verificação da turma

@@ -17,7 +17,7 @@ fn explain_speaks_the_systems_language_or_the_one_asked_for() {
         "{pt}"
     );
     let br = run("pt_BR.UTF-8", &["explain", "--worksheet", "5"]);
-    assert!(br.contains("Ficha de exercícios") && br.contains("I = [0,059587089"), "{br}");
+    assert!(br.contains("Lista de exercícios") && br.contains("I = [0,059587089"), "{br}");
     // --lang and --decimal win over the system's.
     let en = run("pt_PT.UTF-8", &["--lang", "en", "explain", "--worksheet", "5"]);
     assert!(en.contains("Diffuse term") && en.contains("I = [0.059587089"), "{en}");

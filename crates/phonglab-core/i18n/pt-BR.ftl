@@ -43,8 +43,8 @@ shader = Programa de sombreamento (shader)
 
 ## names
 
-doc-worksheet = a ficha, mview{ $k }
-doc-worksheet-preset = Ficha, mview{ $k }
+doc-worksheet = a lista, mview{ $k }
+doc-worksheet-preset = Lista, mview{ $k }
 
 ## presets
 
@@ -58,7 +58,7 @@ doc-redbook-teapot = bules do Red Book: { $material }
 ## controls
 
 specular-blinn-phong-normalised = Blinn-Phong normalizado (n.H)·(ns+8)/8π
-ruleset-worksheet = Ficha de exercícios
+ruleset-worksheet = Lista de exercícios
 ruleset-demo = Demo de Phong
 pow-exact = pow exata
 lights-count =
@@ -93,7 +93,7 @@ two-sided = Iluminação das duas faces
 vertex = Vértice
 normal = Normal
 camera = Câmera
-camera-kind-worksheet = Modelview da ficha
+camera-kind-worksheet = Modelview da lista
 camera-kind-of = Câmera do openFrameworks
 camera-kind-matrix = Matriz 4x4 digitada
 
@@ -135,15 +135,15 @@ note-color-material = GL_COLOR_MATERIAL ({ $mode }, { $face }): { $name } é a c
 formula-normal-gl = vertexNormal = (M^-1)^T · vertexNormal   (o N do OpenGL)
 formula-normal-gl-normalize = vertexNormal = normalize((M^-1)^T · vertexNormal)   (o N do OpenGL, GL_NORMALIZE)
 formula-normal-gl-rescale = vertexNormal = f · (M^-1)^T · vertexNormal, f = 1/|linha 3 de M^-1|   (o N do OpenGL, GL_RESCALE_NORMAL)
-formula-normal-ws = vertexNormal = mview · vertexNormal   (a ficha: a própria M; OpenGL: (M^-1)^T)
-formula-normal-ws-normalize = vertexNormal = normalize(mview · vertexNormal)   (a ficha: a própria M; OpenGL: (M^-1)^T)
-formula-normal-ws-rescale = vertexNormal = f · mview · vertexNormal, f = 1/|linha 3 de M^-1|   (a M da ficha)
+formula-normal-ws = vertexNormal = mview · vertexNormal   (a lista: a própria M; OpenGL: (M^-1)^T)
+formula-normal-ws-normalize = vertexNormal = normalize(mview · vertexNormal)   (a lista: a própria M; OpenGL: (M^-1)^T)
+formula-normal-ws-rescale = vertexNormal = f · mview · vertexNormal, f = 1/|linha 3 de M^-1|   (a M da lista)
 formula-position = vertexPos = mview · vertexPos, dividido por w   (OpenGL: P = M v)
 formula-light-position = lightPos = mview · lightPos   (OpenGL: P_l, a modelview de quando a luz foi colocada vezes GL_POSITION)
 formula-l-positional = vlv = normalize(lightPos − vertexPos)   (OpenGL: L = normalize(P_l − P))
 formula-l-directional = vlv = normalize(lightPos)   (direcional, w = 0; OpenGL: L = normalize(P_l.xyz))
 formula-v-local = vov = normalize(obs − vertexPos), obs = [0 0 0 1]   (observador local; OpenGL: V = −P/|P|)
-formula-v-worksheet = vov = normalize(obs − vertexPos), obs = vertexPos · [1 1 0 1]   (o observador no infinito da ficha: (0, 0, −sinal z))
+formula-v-worksheet = vov = normalize(obs − vertexPos), obs = vertexPos · [1 1 0 1]   (o observador no infinito da lista: (0, 0, −sinal z))
 formula-v-infinite = vov = [0 0 1 0]   (observador no infinito; OpenGL: V = (0, 0, 1))
 formula-r-demo = R = 2 max(vertexNormal · vlv, 0) vertexNormal − vlv   (o da demo)
 gate-lit-side = f = 1 se cosTheta > 0, senão 0
@@ -158,13 +158,13 @@ formula-spot-none = spot = 1   (abertura de 180°: não é um foco)
 formula-share-separate = Ilight = spot · (Iamb + Idif) / at   (a especular vai para a cor secundária)
 formula-scene-ambient = a_cm a_cs   (ambiente do modelo de iluminação)
 formula-i-opengl = I = e_cm + a_cm a_cs + soma das partes das luzes
-formula-i-worksheet = I = (Iamb + Idif + Ispec) / at, somado sobre as luzes   (o I da ficha)
+formula-i-worksheet = I = (Iamb + Idif + Ispec) / at, somado sobre as luzes   (o I da lista)
 formula-secondary = soma de spot · Ispec / at   (especular separada)
 formula-clamped = rgba limitado a [0, 1]; alfa = alfa da difusa
 note-demo-space = a demo de Phong ilumina no espaço do objeto com o olho em (-4, 0, -8); aqui o espaço do olho é o espaço do objeto deslocado de (4, 0, 8), para que esse olho seja a origem: cada vetor e componente é o da demo
-note-vov-behind = o texto da ficha diz que vov é sempre [0 0 1 0]; o seu código dá aqui [0 0 -1 0], porque o vértice está atrás do olho (z > 0)
+note-vov-behind = o texto da lista diz que vov é sempre [0 0 1 0]; o seu código dá aqui [0 0 -1 0], porque o vértice está atrás do olho (z > 0)
 note-no-distance = luz direcional: sem distância
-mview-note-gap = por isso M n, a normal da ficha, aponta a { $angle } da (M^-1)^T n do OpenGL, e N e cada componente a seguir diferem dos do OpenGL
+mview-note-gap = por isso M n, a normal da lista, aponta a { $angle } da (M^-1)^T n do OpenGL, e N e cada componente a seguir diferem dos do OpenGL
 mview-note-small-gap = M n e a (M^-1)^T n do OpenGL apontam aqui a { $angle } uma da outra
 mview-note-singular = M é singular: a (M^-1)^T n do OpenGL não existe
 mview-note-rotation = M é uma rotação aos 6 algarismos com que está impressa (comprimentos das linhas { $lengths }); { $gap }
@@ -189,7 +189,7 @@ why-highlight-colour = A demo multiplica a componente especular pelo vermelho do
 
 ## student-code
 
-export-target-notebook = Notebook Jupyter (o da ficha)
+export-target-notebook = Notebook Jupyter (o da lista)
 export-target-pyopengl = Programa em Python (PyOpenGL + GLUT)
 export-target-openframeworks = App openFrameworks (ofApp.h, ofApp.cpp, main.cpp)
 export-target-glsl = Shaders GLSL
@@ -214,7 +214,7 @@ nb-light-material =
     - luz atenuação_constante, atenuação_linear, atenuação_quadrática
     - luz spot direction, spot_cutoff, spot_coefficient
     - material k_ambiente, k_difusa, k_specular, shininess_ns
-nb-settings = O que esta cena usa além da ficha (o phonglab escreveu as células seguintes para estas opções; para as mudar, mude a cena no phonglab e exporte de novo):
+nb-settings = O que esta cena usa além da lista (o phonglab escreveu as células seguintes para estas opções; para as mudar, mude a cena no phonglab e exporte de novo):
 nb-modelview =
     Inicialização da matriz modelview
 
@@ -232,7 +232,7 @@ nb-vectors =
 
     O vetor (obsPos - vérticePos) é calculado de forma diferente para `glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, true/false)`: quando **true**, obs = [0 0 0 1]; quando **false**, obs = (vertexPos) * [1 1 0 1], o vértice com z igual a 0, e portanto vov = obs - vertexPos = [0 0 -z 0] antes de ser normalizado: só sobra a componente z.
 
-    A ficha diz de **false**: "vov vai sempre resultar em [0 0 1 0]". Isso só vale para um vértice na frente do olho (z < 0 no espaço do olho): para um vértice atrás do olho (z > 0) essa fórmula dá [0 0 -1 0], e com z = 0 o vov não tem direção para normalizar (0/0). (O observador no infinito do OpenGL é sempre V = (0, 0, 1).)
+    A lista diz de **false**: "vov vai sempre resultar em [0 0 1 0]". Isso só vale para um vértice na frente do olho (z < 0 no espaço do olho): para um vértice atrás do olho (z > 0) essa fórmula dá [0 0 -1 0], e com z = 0 o vov não tem direção para normalizar (0/0). (O observador no infinito do OpenGL é sempre V = (0, 0, 1).)
 
     mais info sobre isso em <https://registry.khronos.org/OpenGL-Refpages/gl2.1/xhtml/glLightModel.xml>
 nb-normal-matrix-comment = # o OpenGL transforma as normais pela inversa transposta da 3x3 da modelview: (M^-1)^T n
@@ -286,7 +286,7 @@ nb-glcolor-comment = # a cor desenhada: limitada a [0, 1], com o alfa da cor dif
 nb-back = A face de trás (iluminação dos dois lados): os mesmos termos com a normal invertida (-vertexNormal) e o material de trás; os nomes terminam em Back.
 nb-no-spot-comment = # não é um foco (spotCutoff 180)
 import-unreadable = { $place }: não consigo ler `{ $line }`: { $reason }; ignorada
-import-no-givens = isto não é um notebook nem um programa no estilo da ficha: não atribui nenhuma de vertexPos, vertexNormal, lightPos, matDif, mview
+import-no-givens = isto não é um notebook nem um programa no estilo da lista: não atribui nenhuma de vertexPos, vertexNormal, lightPos, matDif, mview
 import-not-notebook = não é um notebook Jupyter: { $reason }
 import-no-cells = não tem células
 import-place-cell = célula { $cell }, linha { $line }
@@ -299,13 +299,13 @@ import-reason-end = a expressão acaba cedo demais
 import-reason-number = `{ $token }` não é um número
 import-reason-name = `{ $name }` não é conhecido aqui (só se leem números, arrays e nomes atribuídos antes)
 import-reason-arithmetic = `{ $op }` entre valores de formas diferentes
-import-missing = { $name } não é atribuído: usa-se o valor da ficha, { $value }
-import-malformed = { $place }: { $name } devia ser { $want }; usa-se o valor da ficha
+import-missing = { $name } não é atribuído: usa-se o valor da lista, { $value }
+import-malformed = { $place }: { $name } devia ser { $want }; usa-se o valor da lista
 import-want-vector = 4 números, [x, y, z, w]
 import-want-number = um número
 import-want-matrix = 4 linhas de 4 números
-import-not-finite = { $place }: { $name } é { $value }, não um número finito; usa-se o valor da ficha
-import-too-large = { $place }: `{ $line }` { $reason }: o arquivo não é lido (os dados de uma ficha são alguns vetores pequenos)
+import-not-finite = { $place }: { $name } é { $value }, não um número finito; usa-se o valor da lista
+import-too-large = { $place }: `{ $line }` { $reason }: o arquivo não é lido (os dados de uma lista são alguns vetores pequenos)
 import-limit-depth = aninha mais de { $depth } níveis
 import-limit-elements = contém mais de { $count } números, strings e listas
 import-limit-bytes = contém mais de { $count } bytes de strings
@@ -381,7 +381,7 @@ of-eye-light-comment = uma luz presa ao olho (uma lanterna de cabeça): o oF col
 of-spin-comment = a rotação do objeto na vista do phonglab
 of-cylinder-comment = o gluCylinder vai ao longo de z; o cilindro do oF ao longo de y, centrado
 of-no-teapot-comment = o oF não tem bule e aqui não lê arquivos de malhas: uma esfera faz as vezes (carregue o seu modelo com ofMesh::load ou ofxAssimpModelLoader)
-py-normal-matrix-comment = OpenGL: a inversa transposta da 3x3 da modelview; a ficha: a própria 3x3.
+py-normal-matrix-comment = OpenGL: a inversa transposta da 3x3 da modelview; a lista: a própria 3x3.
 
 ## compare
 
@@ -412,11 +412,11 @@ shader-fragment-shader = shader de fragmentos
 
 exercise-modelview = girar { $degrees } graus em torno de { $axis }, depois transladar { $translation }
 exercise-name = exercício { $number } (semente { $seed })
-sheet-rules-worksheet = as regras da ficha (sem ambiente da cena, sem emissão, a própria M para as normais)
+sheet-rules-worksheet = as regras da lista (sem ambiente da cena, sem emissão, a própria M para as normais)
 sheet-rules-opengl = as regras da função fixa do OpenGL 2.1
 sheet-rules-demo = as regras do shader da demo de Phong
 sheet-compute = Calcule a cor do vértice passo a passo, segundo { $rules }.
-sheet-colours = As cores são escritas como na ficha, [r g b 0], por isso cada produto de duas cores tem 0 como quarta componente, tal como na chave.
+sheet-colours = As cores são escritas como na lista, [r g b 0], por isso cada produto de duas cores tem 0 como quarta componente, tal como na chave.
 sheet-vertex = O vértice
 sheet-modelview = A modelview
 sheet-direction = direção (w = 0)
@@ -546,7 +546,7 @@ why-position-projective = P = M p / w: a modelview é projetiva, w varia de vér
 why-position-eye = os vértices chegam no espaço do olho: nada a transformar
 why-position-unread = nenhuma luz pontual e V é uma constante (observador no infinito): nada lê P
 why-v-local = observador local: V = normalize(-P) por vértice, em f64; um bloco de { $chunk } vértices cujas coordenadas estão todas entre 2^-400 e 2^400 pula a mudança de escala por potências de dois antes de elevar ao quadrado (aí não muda nenhum bit)
-why-v-worksheet = o V da ficha = normalize(obs - P), obs = P (1, 1, 0, 1): (0, 0, -sinal(P.z)) por vértice
+why-v-worksheet = o V da lista = normalize(obs - P), obs = P (1, 1, 0, 1): (0, 0, -sinal(P.z)) por vértice
 why-v-infinite = observador no infinito: V = (0, 0, 1) para todos os vértices
 why-scene-added = somado como uma constante por face
 why-scene-zero = ambos são zero (ou as regras os deixam de fora): nada é somado
@@ -687,7 +687,7 @@ check-cause-scene-ambient-wrong-material = o ambiente global da cena multiplicad
 check-cause-ambient-outside-share = o termo ambiente da luz fora do fator do foco e da atenuação
 check-cause-scene-ambient-times-light = o ambiente global da cena também multiplicado pela cor ambiente da luz
 check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
-check-nothing-compared = não verificado: nada do que você imprimiu é um passo da ficha; imprima cada valor como a ficha faz, print("vlv = ", vlv)
+check-nothing-compared = não verificado: nada do que você imprimiu é um passo da lista; imprima cada valor como a lista faz, print("vlv = ", vlv)
 
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) desenha o sombreamento para o qual este programa foi escrito (Gouraud: as cores dos vértices interpoladas; Phong: cada pixel iluminado). Com GL_FLAT, os shaders desenham o que o OpenGL de pipeline fixo desenha: cada face na cor calculada no seu vértice provocante (o último vértice de um triângulo ou de um quadrilátero).
