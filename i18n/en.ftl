@@ -971,6 +971,7 @@ check-all-right = all right: every step printed is the key's
 check-cause = likely cause: { $words } [{ $id }]. Evidence: at { $step } you printed { $student }, and the key with this mistake gives { $value }
 check-no-cause = no mistake in the catalogue reproduces everything you printed; look at the first wrong step
 check-nothing-printed = nothing printed that the key has: print each value as the worksheet does, print("vlv = ", vlv)
+check-report-scene = Assignment: { $scene }
 check-report-title = Class check
 check-report-student = Student
 check-report-verdict = Verdict
@@ -982,6 +983,10 @@ check-report-unreadable = not read: { $reason }
 check-report-written = checked { $count ->
     [one] one submission
    *[other] { $count } submissions
+}{ $unread ->
+    [0] {""}
+    [one] {", "}one not read
+   *[other] {", "}{ $unread } not read
 }: { $path }
 check-printed-with-folder = --printed checks one script's printed text; a folder's notebooks are read from their own outputs: give one or the other
 check-report-needs-folder = --report and --csv are a class's: give a folder of notebooks (one notebook's check is printed, or written as --json)

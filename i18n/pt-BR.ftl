@@ -971,6 +971,7 @@ check-all-right = tudo certo: todos os passos impressos são os do gabarito
 check-cause = causa provável: { $words } [{ $id }]. Evidência: em { $step } você imprimiu { $student }, e o gabarito com esse erro dá { $value }
 check-no-cause = nenhum erro do catálogo reproduz tudo o que você imprimiu; veja o primeiro passo errado
 check-nothing-printed = nada impresso que o gabarito tenha: imprima cada valor como a lista faz, print("vlv = ", vlv)
+check-report-scene = Enunciado: { $scene }
 check-report-title = Verificação da turma
 check-report-student = Aluno
 check-report-verdict = Veredito
@@ -982,6 +983,10 @@ check-report-unreadable = não lido: { $reason }
 check-report-written = { $count ->
     [one] um trabalho verificado
    *[other] { $count } trabalhos verificados
+}{ $unread ->
+    [0] {""}
+    [one] {", "}um não lido
+   *[other] {", "}{ $unread } não lidos
 }: { $path }
 check-printed-with-folder = --printed verifica o texto impresso por um programa; os notebooks de uma pasta são lidos das próprias saídas: informe um ou outro
 check-report-needs-folder = --report e --csv são de uma turma: informe uma pasta de notebooks (a verificação de um notebook é escrita no terminal, ou com --json)

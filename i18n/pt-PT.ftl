@@ -971,6 +971,7 @@ check-all-right = tudo certo: todos os passos impressos são os da solução
 check-cause = causa provável: { $words } [{ $id }]. Evidência: em { $step } imprimiu { $student }, e a solução com este erro dá { $value }
 check-no-cause = nenhum erro do catálogo reproduz tudo o que imprimiu; veja o primeiro passo errado
 check-nothing-printed = nada impresso que a solução tenha: imprima cada valor como a ficha faz, print("vlv = ", vlv)
+check-report-scene = Enunciado: { $scene }
 check-report-title = Verificação da turma
 check-report-student = Aluno
 check-report-verdict = Veredicto
@@ -982,6 +983,10 @@ check-report-unreadable = não lido: { $reason }
 check-report-written = { $count ->
     [one] um trabalho verificado
    *[other] { $count } trabalhos verificados
+}{ $unread ->
+    [0] {""}
+    [one] {", "}um não lido
+   *[other] {", "}{ $unread } não lidos
 }: { $path }
 check-printed-with-folder = --printed verifica o texto impresso por um programa; os cadernos de uma pasta são lidos dos seus próprios resultados: indica um ou outro
 check-report-needs-folder = --report e --csv são de uma turma: indica uma pasta de cadernos (a verificação de um caderno é escrita no terminal, ou com --json)

@@ -370,9 +370,10 @@ fn the_notebooks_words_are_true_of_its_code() {
     std::fs::create_dir_all(&dir).unwrap();
     for (what, doc, alpha) in [("colour alpha 0.5", &colour_half, 0.5), ("material alpha 0.5", &material_half, 1.0)] {
         let text = notebook(doc, &phonglab_core::export::key(doc));
-        assert!(
-            text.contains("its alpha the diffuse colour's (matDif's, the current colour's where GL_COLOR_MATERIAL")
-        );
+        // The comment names the alpha the code writes, and says matDif[3] is not it (the
+        // cells write colours [r g b 0]: a teacher's student took matDif[3] from it).
+        assert!(text.contains("its alpha is the diffuse colour's as OpenGL lights it (1, or matAlpha;"));
+        assert!(text.contains("not matDif[3]: the colours above are written [r g b 0]"));
         let p = dir.join("alpha.ipynb");
         std::fs::write(&p, text).unwrap();
         let out = Command::new(python).arg("-c").arg(RUNNER).arg(&p).output().unwrap();

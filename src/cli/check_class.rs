@@ -151,19 +151,28 @@ pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> 
     }
     let marked = mark_all(dir, assignment, Duration::from_secs(MAX_SECONDS))?;
     let counts = cause_counts(&marked);
+    // A submission not read is not counted as checked (it is listed in the report).
+    let read = marked.iter().filter(|m| m.check.is_ok()).count();
+    let unread = marked.len() - read;
+    let scene_shown = a.scene.as_deref().map(crate::io::reasons::shown);
     if let (Some(report), Some(chart)) = (&a.report, &chart) {
         let chart_name = chart.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
         crate::io::atomic_write::write(
             report,
-            markdown(&marked, &counts, &chart_name, assignment.is_some()).as_bytes(),
+            markdown(&marked, &counts, &chart_name, scene_shown.as_deref()).as_bytes(),
         )?;
-        let (w, h, rgba) = chart_png(&counts, marked.len());
+        let (w, h, rgba) = chart_png(&counts, read);
         crate::io::atomic_write::write(chart, &crate::io::image::encode_png(w, h, &rgba)?)?;
-        super::say(&t!("check-report-written", count = marked.len(), path = crate::io::reasons::shown(report)));
+        super::say(&t!(
+            "check-report-written",
+            count = read,
+            unread = unread,
+            path = crate::io::reasons::shown(report)
+        ));
     }
     if let Some(csv) = &a.csv {
         crate::io::atomic_write::write(csv, marks_csv(&marked).as_bytes())?;
-        super::say(&t!("check-report-written", count = marked.len(), path = crate::io::reasons::shown(csv)));
+        super::say(&t!("check-report-written", count = read, unread = unread, path = crate::io::reasons::shown(csv)));
     }
     if a.json {
         let all: Vec<serde_json::Value> = marked
@@ -194,11 +203,13 @@ fn summary(m: &Marked) -> String {
     }
 }
 
+/// The first wrong step, as the single check says it; the typed inputs that differ where
+/// no printed step is wrong.
 fn first_wrong(c: &Check) -> String {
-    if !c.inputs_differ.is_empty() {
-        return input_names(c);
+    match c.first_wrong.and_then(|k| c.steps.get(k)) {
+        Some(s) => s.name.clone(),
+        None => input_names(c),
     }
-    c.first_wrong.and_then(|k| c.steps.get(k)).map_or_else(String::new, |s| s.name.clone())
 }
 
 /// The causes in the teacher's words (why not checked, where nothing was compared).
@@ -206,10 +217,16 @@ fn causes(c: &Check) -> String {
     if c.causes.is_empty() && c.first_wrong.is_none() && c.inputs_differ.is_empty() {
         return c.unchecked().map_or_else(String::new, |u| u.words());
     }
-    if c.causes.is_empty() && !c.right() {
+    // A typed input that differs is the first finding, as the single check says it.
+    let mut said: Vec<String> = Vec::new();
+    if !c.inputs_differ.is_empty() {
+        said.push(t!("check-inputs-differ", names = input_names(c)));
+    }
+    if c.causes.is_empty() && !c.right() && said.is_empty() {
         return t!("check-report-unexplained");
     }
-    c.causes.iter().map(phonglab_core::study::check::Cause::words).collect::<Vec<_>>().join("; ")
+    said.extend(c.causes.iter().map(phonglab_core::study::check::Cause::words));
+    said.join("; ")
 }
 
 /// How many students each cause explains (in the teacher's words), and how many no cause
@@ -231,12 +248,14 @@ pub fn cause_counts(marked: &[Marked]) -> Vec<(String, usize)> {
     v
 }
 
-/// The report in Markdown: a row per student, then the causes counted and the chart.
-pub fn markdown(marked: &[Marked], counts: &[(String, usize)], chart: &str, scene_given: bool) -> String {
+/// The report in Markdown: the assignment (`scene`, as shown, where one was given), a row
+/// per student, then the causes counted and the chart.
+pub fn markdown(marked: &[Marked], counts: &[(String, usize)], chart: &str, scene: Option<&str>) -> String {
     let md = escape::markdown::text;
     let mut out = format!("# {}\n\n", md(&t!("check-report-title")));
-    if !scene_given {
-        out.push_str(&format!("> {}\n\n", md(&t!("check-report-no-scene"))));
+    match scene {
+        Some(s) => out.push_str(&format!("{}\n\n", md(&t!("check-report-scene", scene = s.to_string())))),
+        None => out.push_str(&format!("> {}\n\n", md(&t!("check-report-no-scene")))),
     }
     out.push_str(&format!(
         "| {} | {} | {} | {} |\n|---|---|---|---|\n",

@@ -282,7 +282,7 @@ nb-final =
     Final calculation:
 
     - I<sub>final</sub> = (I<sub>amb</sub> + I<sub>dif</sub> + I<sub>spec</sub>)/at
-nb-glcolor-comment = # the colour as drawn: clamped to [0, 1], its alpha the diffuse colour's (matDif's, the current colour's where GL_COLOR_MATERIAL tracks the diffuse), as OpenGL takes it
+nb-glcolor-comment = # the colour as drawn: clamped to [0, 1]; its alpha is the diffuse colour's as OpenGL lights it (1, or matAlpha; the current colour's where GL_COLOR_MATERIAL tracks the diffuse), not matDif[3]: the colours above are written [r g b 0]
 nb-back = The back side (two-sided lighting): the same terms with the normal reversed (-vertexNormal) and the back material; the names end in Back.
 nb-no-spot-comment = # not a spotlight (spotCutoff 180)
 import-unreadable = { $place }: cannot read `{ $line }`: { $reason }; ignored
@@ -671,7 +671,7 @@ check-cause-spot-cutoff-not-cosine = the spot's cosine compared with the cutoff 
 check-cause-spot-on-diffuse-only = the spot factor applied to the diffuse term only (OpenGL applies it to the whole contribution of the light)
 check-cause-only-last-light = only the last light's contribution in the sum (the loop's variable used after the loop)
 check-cause-emission-left-out = the material's emission left out of the sum
-check-cause-alpha-from-sum = the colour's alpha taken from the sum's fourth component (0) instead of the material's diffuse alpha
+check-cause-alpha-from-sum = the colour's alpha taken from a fourth component that is 0 in these cells (I[3], matDif[3]: the colours are written [r g b 0]) instead of the material's diffuse alpha
 check-cause-normal-as-point = the normal typed with w = 1 (as a point): the translation moves it
 check-cause-light-by-mview = the light transformed by the vertex's modelview mview instead of the one current when it was placed (an eye-fixed light moved with the camera)
 check-cause-spot-cutoff-halved = the cutoff taken as the cone's full angle: half of it used
@@ -686,6 +686,9 @@ check-cause-distance-without-w-divide = the distance from the light's position n
 check-cause-scene-ambient-wrong-material = the scene's global ambient multiplied by the material's diffuse or specular colour instead of its ambient
 check-cause-ambient-outside-share = the light's ambient term outside both the spot factor and the attenuation
 check-cause-scene-ambient-times-light = the scene's global ambient also multiplied by the light's ambient colour
+check-cause-specular-of-diffuse-cosine = the specular's power taken of the diffuse cosine (cosTheta**ns) instead of N·H
+check-cause-spot-exponent-as-factor = the spot exponent as a factor (cosSpot*spotCoef) instead of a power
+check-cause-attenuation-inverted = the attenuation inverted (at = 1/(...)) and then divided by: the light multiplied by the denominator
 check-run-stopped = not checked: the run stopped with an error before the end: { $error }
 check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)
 

@@ -282,7 +282,7 @@ nb-final =
     Calculo final:
 
     - I<sub>final</sub> = (I<sub>amb</sub> + I<sub>dif</sub> + I<sub>spec</sub>)/at
-nb-glcolor-comment = # a cor desenhada: limitada a [0, 1], com o alfa da cor difusa (o de matDif, que é o da cor atual quando GL_COLOR_MATERIAL segue a difusa), como o OpenGL o toma
+nb-glcolor-comment = # a cor desenhada: limitada a [0, 1]; o alfa é o da cor difusa tal como o OpenGL a ilumina (1, ou matAlpha; o da cor atual quando GL_COLOR_MATERIAL segue a difusa), não matDif[3]: as cores acima estão escritas [r g b 0]
 nb-back = A face de trás (iluminação dos dois lados): os mesmos termos com a normal invertida (-vertexNormal) e o material de trás; os nomes terminam em Back.
 nb-no-spot-comment = # não é um foco (spotCutoff 180)
 import-unreadable = { $place }: não consigo ler `{ $line }`: { $reason }; ignorada
@@ -671,7 +671,7 @@ check-cause-spot-cutoff-not-cosine = o cosseno do foco comparado com o ângulo d
 check-cause-spot-on-diffuse-only = o fator do foco aplicado só à difusa (o OpenGL o aplica à contribuição toda da luz)
 check-cause-only-last-light = só a contribuição da última luz na soma (a variável do laço usada depois do laço)
 check-cause-emission-left-out = faltou a emissão do material na soma
-check-cause-alpha-from-sum = o alfa da cor tirado da quarta componente da soma (0) em vez do alfa da difusa do material
+check-cause-alpha-from-sum = o alfa da cor tirado de uma quarta componente que é 0 nestas células (I[3], matDif[3]: as cores estão escritas [r g b 0]) em vez do alfa da difusa do material
 check-cause-normal-as-point = a normal escrita com w = 1 (como um ponto): a translação a desloca
 check-cause-light-by-mview = a luz transformada pela modelview do vértice, mview, em vez da que estava ativa quando foi posicionada (uma luz fixa no olho movida com a câmera)
 check-cause-spot-cutoff-halved = o ângulo de corte tomado como o ângulo total do cone: usada metade
@@ -686,6 +686,9 @@ check-cause-distance-without-w-divide = a distância calculada com a posição d
 check-cause-scene-ambient-wrong-material = o ambiente global da cena multiplicado pela cor difusa ou especular do material em vez da ambiente
 check-cause-ambient-outside-share = o termo ambiente da luz fora do fator do foco e da atenuação
 check-cause-scene-ambient-times-light = o ambiente global da cena também multiplicado pela cor ambiente da luz
+check-cause-specular-of-diffuse-cosine = a potência especular calculada do cosseno difuso (cosTheta**ns) em vez de N·H
+check-cause-spot-exponent-as-factor = o expoente do foco como fator (cosSpot*spotCoef) em vez de potência
+check-cause-attenuation-inverted = a atenuação invertida (at = 1/(...)) e depois usada dividindo: a luz multiplicada pelo denominador
 check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
 check-nothing-compared = não verificado: nada do que você imprimiu é um passo da lista; imprima cada valor como a lista faz, print("vlv = ", vlv)
 

@@ -68,6 +68,8 @@ pub enum Mistake {
     SpecularTimesCosine,
     /// The shininess as a factor (`cosBeta*ns`) instead of a power.
     ShininessAsProduct,
+    /// The specular's power taken of the diffuse cosine (`cosTheta**ns`).
+    SpecularOfDiffuseCosine,
     /// The specular cosine not clamped at 0 before the power.
     SpecularCosineNotClamped,
     /// The diffuse term not clamped: negative past 90 degrees.
@@ -98,6 +100,8 @@ pub enum Mistake {
     SpotExponentOutsideCone,
     /// The spot exponent left out: the spot factor is the cosine itself.
     SpotExponentIgnored,
+    /// The spot exponent as a factor (`cosSpot*spotCoef`) instead of a power.
+    SpotExponentAsFactor,
     /// The cone test the wrong way round: lit outside the cone, dark inside.
     ConeTestInverted,
     /// The spot's angle measured with `vlv` (towards the light), not `-vlv`.
@@ -126,6 +130,8 @@ pub enum Mistake {
     AttenuationQuadraticNotSquared,
     /// The linear and the quadratic coefficients swapped: `atLin*d*d + atQuad*d`.
     AttenuationTermsSwapped,
+    /// `at = 1/(atC + atLin*d + atQuad*d*d)`, then divided by: the attenuation inverted.
+    AttenuationInverted,
     /// The light's distance measured in object space.
     AttenuationObjectDistance,
     /// The distance from the light's position not divided by its w (while `vlv` is).
@@ -375,7 +381,7 @@ pub struct MistakeInfo {
 pub const ACOS_PAST_ONE: &str = "acos-past-one";
 
 /// The catalogue, in the worksheet's order.
-pub const CATALOGUE: [MistakeInfo; 74] = [
+pub const CATALOGUE: [MistakeInfo; 77] = [
     MistakeInfo {
         id: "normal-by-modelview",
         mistake: Some(Mistake::NormalByModelview),
@@ -605,6 +611,12 @@ pub const CATALOGUE: [MistakeInfo; 74] = [
         words: || t!("check-cause-shininess-as-product"),
     },
     MistakeInfo {
+        id: "specular-of-diffuse-cosine",
+        mistake: Some(Mistake::SpecularOfDiffuseCosine),
+        formula: "Ispec = (Lspec*matSpec)*(cosTheta**ns)",
+        words: || t!("check-cause-specular-of-diffuse-cosine"),
+    },
+    MistakeInfo {
         id: "attenuation-multiplied",
         mistake: Some(Mistake::AttenuationMultiplied),
         formula: "I = (Iamb + Idif + Ispec)*at",
@@ -657,6 +669,12 @@ pub const CATALOGUE: [MistakeInfo; 74] = [
         mistake: Some(Mistake::AttenuationTermsSwapped),
         formula: "at = atC + atLin*d*d + atQuad*d",
         words: || t!("check-cause-attenuation-terms-swapped"),
+    },
+    MistakeInfo {
+        id: "attenuation-inverted",
+        mistake: Some(Mistake::AttenuationInverted),
+        formula: "at = 1/(atC + atLin*d + atQuad*d*d)",
+        words: || t!("check-cause-attenuation-inverted"),
     },
     MistakeInfo {
         id: "attenuation-object-distance",
@@ -729,6 +747,12 @@ pub const CATALOGUE: [MistakeInfo; 74] = [
         mistake: Some(Mistake::SpotExponentIgnored),
         formula: "spot = max(cosSpot, 0)",
         words: || t!("check-cause-spot-exponent-ignored"),
+    },
+    MistakeInfo {
+        id: "spot-exponent-as-factor",
+        mistake: Some(Mistake::SpotExponentAsFactor),
+        formula: "spot = cosSpot*spotCoef",
+        words: || t!("check-cause-spot-exponent-as-factor"),
     },
     MistakeInfo {
         id: "spot-left-out",

@@ -412,8 +412,12 @@ fn differing_inputs(assignment: &Scene, own: &Scene) -> Vec<String> {
     if assignment.lights.len() != own.lights.len() {
         out.push("lightPos".to_string());
     }
-    if assignment.rules != own.rules || assignment.light_model.local_viewer != own.light_model.local_viewer {
+    if assignment.rules != own.rules {
         out.push("rules".to_string());
+    }
+    // The viewer is the notebook's `obs` switch (`#localViewer`), not a rule set.
+    if assignment.light_model.local_viewer != own.light_model.local_viewer {
+        out.push("localViewer".to_string());
     }
     out.dedup();
     out

@@ -385,11 +385,13 @@ impl Walk<'_> {
         let d_at_l = if self.made_at(Mistake::AttenuationTermsSwapped, i) { d * d } else { d };
         let dd = if self.made_at(Mistake::AttenuationTermsSwapped, i) { d } else { dd };
         let attenuated = !directional || self.made_at(Mistake::AttenuationOnDirectional, i);
+        let inverted = self.made_at(Mistake::AttenuationInverted, i);
         let state = &mut self.lights[i];
         state.pos = pos;
         state.vlv = vlv;
         state.d = d;
-        state.at = if attenuated { c + l * d_at_l + q * dd } else { 1.0 };
+        let at = if attenuated { c + l * d_at_l + q * dd } else { 1.0 };
+        state.at = if inverted { 1.0 / at } else { at };
     }
 
     /// `d` (printed for a light with a position) and `at`.
@@ -426,7 +428,10 @@ impl Walk<'_> {
             let limit = if self.made_at(Mistake::SpotCutoffNotCosine, i) { light.spot_cutoff } else { cutoff.cos() };
             let inside = (cos_spot >= limit) != self.made_at(Mistake::ConeTestInverted, i);
             let exponent = if self.made_at(Mistake::SpotExponentIgnored, i) { 1.0 } else { light.spot_exponent };
-            spot = if inside || self.made_at(Mistake::SpotExponentOutsideCone, i) {
+            let factor = self.made_at(Mistake::SpotExponentAsFactor, i);
+            spot = if factor && inside {
+                cos_spot * light.spot_exponent
+            } else if inside || self.made_at(Mistake::SpotExponentOutsideCone, i) {
                 cos_spot.max(0.0).powf(exponent)
             } else {
                 0.0
@@ -527,6 +532,7 @@ impl Walk<'_> {
             || self.scene.rules.specular_gate() == SpecularGate::PositiveCosine;
         let cos = if unclamped { s.cos_spec } else { s.cos_spec.max(0.0) };
         let cos = if self.made_at(Mistake::SpecularAngleNotCosine, i) { cos.clamp(-1.0, 1.0).acos() } else { cos };
+        let cos = if self.made_at(Mistake::SpecularOfDiffuseCosine, i) { s.cos_theta.max(0.0) } else { cos };
         let lobe = if self.made_at(Mistake::ShininessAsProduct, i) { cos * ns } else { cos.powf(ns) };
         let lobe = if self.made_at(Mistake::SpecularTimesCosine, i) { lobe * s.cos_theta } else { lobe };
         let ispec = if gated { DVec4::ZERO } else { lspec * mspec * lobe * scale };
