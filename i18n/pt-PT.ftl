@@ -308,7 +308,7 @@ help-phong = sombreamento de Phong
 help-flat = sombreamento plano (Flat)
 help-auto-rotate = rodar a vista sombreada sozinha
 help-drop = Larga um ficheiro de cena (.toml) na janela para o abrir.
-help-drag = Arrasta o gráfico dos vetores ou a vista sombreada para os rodar; usa a roda na vista sombreada para ampliar; clica na superfície para explicar esse vértice.
+help-drag = Arraste o gráfico dos vetores ou a vista sombreada para os rodar; use a roda na vista sombreada para ampliar; clique na superfície para explicar esse vértice.
 help-numbers = Um campo numérico aceita ponto ou vírgula decimal e lê o que foi escrito quando se sai dele (Enter, Tab, um clique noutro sítio); um valor recusado fica a vermelho com a razão até ser corrigido ou até Esc repor o valor.
 help-undo-keys = Ctrl+Z desfaz qualquer alteração da cena. As teclas sem Ctrl não fazem nada enquanto um campo de texto tem o teclado, nem no teste.
 help-demo-title = A cena da demo de Phong: as escolhas da demo e as do OpenGL
@@ -319,11 +319,11 @@ help-demo-pipeline = Da demo: sem projeção (a imagem é o espaço de recorte),
 
 ## quiz
 
-quiz-input-yours = o teu { $name } = { $value }
+quiz-input-yours = o seu { $name } = { $value }
 quiz-input-key = o { $name } da chave (ainda sem resposta)
 quiz-the-givens = os dados
 quiz-right = ✔ certo
-quiz-right-given = ✔ certo, dado o teu { $yours }
+quiz-right-given = ✔ certo, dado o seu { $yours }
 quiz-close-key = ≈ perto: a { $percent } % da chave; dá { $digits } algarismos significativos
 quiz-close-yours = ≈ perto: a { $percent } % do que as tuas respostas anteriores dão; dá { $digits } algarismos significativos
 quiz-wrong = ✖ errado: { $formula }, com { $inputs }
@@ -349,7 +349,7 @@ quiz-score = Pontuação: { $right } de { $all } ({ $answered ->
     [one] , 1 resposta mostrada
    *[other] , { $shown } respostas mostradas
 })
-quiz-your-value = o teu valor
+quiz-your-value = o seu valor
 quiz-reveal = Mostrar a resposta
 quiz-reveal-hover = Mostrar o valor da chave neste passo: deixa então de contar como certo
 quiz-not-numbers = não se lê como números: { $error }
@@ -392,8 +392,8 @@ caps = Tampas
 mesh-triangles = { $count } triângulos: { $notes }
 key-hint = tecla { $key }
 mesh-tip = { $path } (abre outra em Opções da vista, ou larga um ficheiro .obj)
-close-mesh = Fechar a tua malha
-close-mesh-hover = Fechar a tua malha: a barra de cima deixa de a oferecer (fica no seu ficheiro; mudar de cena mantém-na até lá)
+close-mesh = Fechar a sua malha
+close-mesh-hover = Fechar a sua malha: a barra de cima deixa de a oferecer (fica no seu ficheiro; mudar de cena mantém-na até lá)
 auto-rotate = Rodar sozinho
 auto-rotate-hover = 0,5 graus por imagem, como a demo (tecla A)
 demo-normals = Normais da demo
@@ -415,7 +415,7 @@ corrected-short = Corrigida ({ $count } de { $all })
 picked-vertex = Vértice { $index } de { $object }: o cálculo passa a usá-lo, tal como a vista sombreada o ilumina.
 light-behind = luz { $index } (atrás da câmara)
 light-name = luz { $index }
-light-drag = Luz { $index }: arrasta para a mover
+light-drag = Luz { $index }: arraste para a mover
 arrows-faded = Esbatida, ponta aberta: o vetor aponta para longe de ti, ou para dentro da superfície.
 renderer = Desenho
 renderer-hover = O desenho no CPU é a referência; a GPU corre o WGSL gerado para a cena (janela Shader)
@@ -453,9 +453,9 @@ save = Guardar
 save-hover = Guardar a cena neste caminho (Ctrl+S)
 open-dialog = Abrir…
 open-dialog-hover = Escolher um ficheiro de cena na janela de ficheiros do sistema
-dialog-no-session-bus = A janela de ficheiros do sistema não pode abrir aqui (não há bus de sessão para o seu portal): escolhe o ficheiro no seletor do phonglab.
-dialog-did-not-open = A janela de ficheiros do sistema não abriu (nenhum portal respondeu): escolhe o ficheiro no seletor do phonglab.
-dialog-in-app = Escolhe o ficheiro aqui.
+dialog-no-session-bus = A janela de ficheiros do sistema não pode abrir aqui (não há bus de sessão para o seu portal): escolha o ficheiro no seletor do phonglab.
+dialog-did-not-open = A janela de ficheiros do sistema não abriu (nenhum portal respondeu): escolha o ficheiro no seletor do phonglab.
+dialog-in-app = Escolha o ficheiro aqui.
 chooser-title = Escolher um ficheiro
 chooser-folder = Pasta:
 chooser-up = Acima
@@ -579,7 +579,7 @@ shader-stages-phong = Sombreamento de Phong (por fragmento): só as etapas de qu
 shader-stages-vertex = Sombreamento por vértice: só as etapas de que esta cena precisa
 shader-last-change = A última alteração juntou { $added } linhas (destacadas) e removeu { $removed }.
 shader-removed = Removido pela última alteração:
-session-other-window = Outra janela do phonglab está aberta nesta sessão ({ $dir }): esta janela mostra a última cena guardada mas não guardará a sua sessão. Usa Guardar para manter o teu trabalho num ficheiro.
+session-other-window = Outra janela do phonglab está aberta nesta sessão ({ $dir }): esta janela mostra a última cena guardada mas não guardará a sua sessão. Use Guardar para manter o seu trabalho num ficheiro.
 session-folder-unusable = A pasta da sessão { $dir } não pode ser usada ({ $error }): esta janela não guardará a sua sessão.
 session-file-is-folder = O ficheiro da sessão { $path } é uma pasta, por isso a última sessão não pode ser lida e esta janela não guardará a sua sessão. Remove ou muda o nome a essa pasta.
 session-unreadable-kept = A sessão guardada não pôde ser lida ({ $why }); começa-se pela ficha. O ficheiro fica guardado como { $kept }.
@@ -988,11 +988,14 @@ check-report-written = { $count ->
     [one] {", "}um não lido
    *[other] {", "}{ $unread } não lidos
 }: { $path }
-check-printed-with-folder = --printed verifica o texto impresso por um programa; os cadernos de uma pasta são lidos dos seus próprios resultados: indica um ou outro
-check-report-needs-folder = --report e --csv são de uma turma: indica uma pasta de cadernos (a verificação de um caderno é escrita no terminal, ou com --json)
+check-printed-with-folder = --printed verifica o texto impresso por um programa; os cadernos de uma pasta são lidos dos seus próprios resultados: indique um ou outro
+check-report-needs-folder = --report e --csv são de uma turma: indique uma pasta de cadernos (a verificação de um caderno é escrita no terminal, ou com --json)
 check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
+check-given-not-followed = não verificado: um dado é alterado no próprio lugar, o que a verificação não segue ({ $givens }): atribua-o inteiro numa só linha
 check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
 check-not-read-link = uma ligação simbólica (um trabalho tem de ser um ficheiro da própria pasta)
+check-not-read-folder = uma pasta (um trabalho é um ficheiro de caderno)
+check-not-read-not-a-file = não é um ficheiro normal (um FIFO ou um dispositivo: um trabalho é um ficheiro de caderno)
 check-chart-link = { $path } é uma ligação simbólica: o nome do gráfico vem do do relatório, e o phonglab nunca escreve através de uma ligação que não lhe foi dada; apague a ligação ou dê outro nome ao relatório
 check-chart-title = Causas na turma ({ $count } trabalhos)
 check-verdict-word-right = certo
@@ -1014,7 +1017,7 @@ cli-arg-check-report = Para uma pasta: o relatório da turma a escrever (Markdow
 cli-arg-check-csv = Para uma pasta: as notas a escrever (CSV)
 student-menu = Corrigir o trabalho de um aluno…
 student-menu-hover = Um caderno da ficha guardado com as saídas (.ipynb) ou o texto que um programa imprimiu (.txt), corrigido com a cena mostrada: o valor do aluno ao lado de cada passo, o primeiro passo errado e as causas prováveis; ou uma imagem que o programa dele desenhou (.png, 512 x 512), diagnosticada em Comparar. Nada do que lá está é executado.
-student-choose-why = Escolhe o caderno do aluno (guardado com as saídas) ou o texto impresso.
+student-choose-why = Escolha o caderno do aluno (guardado com as saídas) ou o texto impresso.
 student-check = Corrigir
 student-heading = Trabalho do aluno: { $file }
 student-clear = Limpar
@@ -1022,7 +1025,7 @@ student-clear-hover = Esconder os valores do aluno e a correção
 student-value = o seu = { $student }: { $verdict }
 student-first-wrong-marker = » primeiro passo errado
 student-checked = { $file } corrigido com esta cena: { $verdict }
-student-checked-wrong = nem tudo está certo; vê o cálculo
+student-checked-wrong = nem tudo está certo; veja o cálculo
 student-not-checked = Não corrigido: { $why }. A cena e o cálculo não mudaram.
 student-not-work = { $path } não é um caderno (.ipynb) nem texto impresso (.txt)
 student-ask-title = Um caderno com saídas

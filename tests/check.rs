@@ -977,3 +977,36 @@ fn the_back_side_of_two_sided_lighting_is_checked() {
     assert_eq!(wrong["verdict"], "wrong", "{wrong:#}");
     assert_eq!(wrong["first_wrong"]["step"], "IBack", "{wrong:#}");
 }
+
+/// A given changed in place is refused naming it (exit 2), never checked as a value
+/// Python did not use; in a class folder a FIFO and a folder are named for what they are.
+#[test]
+fn a_given_changed_in_place_is_refused_and_a_fifo_or_folder_is_named() {
+    let dir = TempDir::new("in-place");
+    let nb = serde_json::json!({"cells": [{
+        "cell_type": "code",
+        "source": ["import numpy as np\n", "vertexPos = np.array([-512, -384, 0, 1])\n",
+                   "lightPos = np.array([0, 0, 45, 1])\n", "lightPos[2] *= 2\n"],
+        "outputs": [{"output_type": "stream", "name": "stdout", "text": ["vov =  [0. 0. 1. 0.]\n"]}],
+    }]});
+    let path = dir.path().join("a.ipynb");
+    std::fs::write(&path, nb.to_string()).unwrap();
+    let out = common::phonglab(&["check", path.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("a given is changed in place") && err.contains("lightPos (cell 1, line 4)"), "{err}");
+    #[cfg(unix)]
+    {
+        let class = dir.path().join("class");
+        std::fs::create_dir_all(class.join("dir.ipynb")).unwrap();
+        let fifo = class.join("fifo.ipynb");
+        assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+        let csv = dir.path().join("m.csv");
+        let out = common::phonglab(&["check", class.to_str().unwrap(), "--csv", csv.to_str().unwrap()]);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let marks = std::fs::read_to_string(&csv).unwrap();
+        assert!(marks.contains("dir.ipynb,unread,,a folder"), "{marks}");
+        assert!(marks.contains("fifo.ipynb,unread,,not a regular file"), "{marks}");
+        assert!(!marks.contains("a link"), "{marks}");
+    }
+}

@@ -172,6 +172,7 @@ mod tests {
             first_wrong: None,
             causes: Vec::new(),
             errors: Vec::new(),
+            unreadable: Vec::new(),
         };
         let names = crate::cli::check_class::input_names(&c);
         assert_eq!(names, format!("lightPos, {}", t!("check-input-rules")));

@@ -100,10 +100,16 @@ fn submissions(dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(out)
 }
 
-/// Is `path` a link (or anything but a regular file)? A submission is a regular file in the
-/// folder itself: a link could lead out of it (`../secret.ipynb`, `/etc/passwd`).
-fn is_link(path: &Path) -> bool {
-    !std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_file())
+/// Why `path` is not read, where it is not a regular file of the folder itself: a link
+/// (which could lead out of it: `../secret.ipynb`, `/etc/passwd`), a folder, or anything
+/// else (a FIFO, a device). (The read opens it with links refused as well.)
+fn not_a_file(path: &Path) -> Option<String> {
+    match std::fs::symlink_metadata(path) {
+        Ok(m) if m.file_type().is_file() => None,
+        Ok(m) if m.file_type().is_symlink() => Some(t!("check-not-read-link")),
+        Ok(m) if m.is_dir() => Some(t!("check-not-read-folder")),
+        _ => Some(t!("check-not-read-not-a-file")),
+    }
 }
 
 /// Checks every notebook of `dir` against `assignment` (each its own scene without one).
@@ -112,8 +118,8 @@ pub fn mark_all(dir: &Path, assignment: Option<&Scene>, budget: Duration) -> Res
     let mut out = Vec::new();
     for path in submissions(dir)? {
         let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        let check = if is_link(&path) {
-            Err(t!("check-not-read-link"))
+        let check = if let Some(why) = not_a_file(&path) {
+            Err(why)
         } else if start.elapsed() > budget {
             Err(format!("> {} s", budget.as_secs()))
         } else {

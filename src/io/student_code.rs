@@ -53,6 +53,12 @@ pub fn read_notebook(path: &Path) -> anyhow::Result<Work> {
         let shown = super::reasons::shown(path);
         anyhow::bail!("{shown}: {}", crate::t!("check-given-not-finite", givens = imported.not_finite.join("; ")));
     }
+    // A given changed in place (`lightPos[2] *= 2`) is refused too: the reader would check
+    // a value Python never used.
+    if !imported.not_followed.is_empty() {
+        let shown = super::reasons::shown(path);
+        anyhow::bail!("{shown}: {}", crate::t!("check-given-not-followed", givens = imported.not_followed.join("; ")));
+    }
     let printed = if notebook {
         phonglab_core::study::check::printed::notebook_outputs(&text)
             .map_err(|e| anyhow::anyhow!("{}: {e}", super::reasons::shown(path)))?

@@ -286,6 +286,7 @@ nb-glcolor-comment = # the colour as drawn: clamped to [0, 1]; its alpha is the 
 nb-back = The back side (two-sided lighting): the same terms with the normal reversed (-vertexNormal) and the back material; the names end in Back.
 nb-no-spot-comment = # not a spotlight (spotCutoff 180)
 import-unreadable = { $place }: cannot read `{ $line }`: { $reason }; ignored
+import-changed-in-place = it changes a given in place (a part of it, or with +=, *=, ...), which phonglab does not follow: assign the whole value in one line
 import-no-givens = this is not a worksheet-style notebook or script: it assigns none of vertexPos, vertexNormal, lightPos, matDif, mview
 import-not-notebook = not a Jupyter notebook: { $reason }
 import-no-cells = it has no cells
@@ -691,6 +692,7 @@ check-cause-spot-exponent-as-factor = the spot exponent as a factor (cosSpot*spo
 check-cause-attenuation-inverted = the attenuation inverted (at = 1/(...)) and then divided by: the light multiplied by the denominator
 check-run-stopped = not checked: the run stopped with an error before the end: { $error }
 check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)
+check-unreadable-steps = not checked whole: these steps were printed with values that are not numbers as NumPy or Python prints them ({ $names }); print each value alone
 
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) draws the shading this program was written for (Gouraud: the vertices' colours interpolated; Phong: each pixel lit). With GL_FLAT the shaders draw what fixed-function OpenGL draws: each face in the colour lit at its provoking vertex (a triangle’s or a quad’s last vertex).

@@ -286,6 +286,7 @@ nb-glcolor-comment = # a cor desenhada: limitada a [0, 1]; o alfa é o da cor di
 nb-back = A face de trás (iluminação dos dois lados): os mesmos termos com a normal invertida (-vertexNormal) e o material de trás; os nomes terminam em Back.
 nb-no-spot-comment = # não é um foco (spotCutoff 180)
 import-unreadable = { $place }: não consigo ler `{ $line }`: { $reason }; ignorada
+import-changed-in-place = altera um dado no próprio lugar (uma parte dele, ou com +=, *=, ...), o que o phonglab não segue: atribua o valor inteiro em uma só linha
 import-no-givens = isto não é um notebook nem um programa no estilo da lista: não atribui nenhuma de vertexPos, vertexNormal, lightPos, matDif, mview
 import-not-notebook = não é um notebook Jupyter: { $reason }
 import-no-cells = não tem células
@@ -691,6 +692,7 @@ check-cause-spot-exponent-as-factor = o expoente do foco como fator (cosSpot*spo
 check-cause-attenuation-inverted = a atenuação invertida (at = 1/(...)) e depois usada dividindo: a luz multiplicada pelo denominador
 check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
 check-nothing-compared = não verificado: nada do que você imprimiu é um passo da lista; imprima cada valor como a lista faz, print("vlv = ", vlv)
+check-unreadable-steps = não verificado por inteiro: estes passos foram impressos com valores que não são números como o NumPy ou o Python os imprimem ({ $names }); imprima cada valor sozinho
 
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) desenha o sombreamento para o qual este programa foi escrito (Gouraud: as cores dos vértices interpoladas; Phong: cada pixel iluminado). Com GL_FLAT, os shaders desenham o que o OpenGL de pipeline fixo desenha: cada face na cor calculada no seu vértice provocante (o último vértice de um triângulo ou de um quadrilátero).

@@ -267,3 +267,31 @@ fn a_small_real_difference_is_wrong_and_single_precision_is_rounding() {
     assert_eq!(float.steps.iter().find(|s| s.name == "I").unwrap().verdict, Verdict::Rounding);
     assert!(float.right());
 }
+
+/// What a hostile classmate printed to pass wrong work as right: a whole number is
+/// Python's exact int (`cosTheta = 0` is not 0.139 rounded); a step printed with a value
+/// that is not a number (`0.9 rad`, a value wrapped past the cap) leaves the work not
+/// checked whole, never right.
+#[test]
+fn a_whole_number_is_exact_and_an_unreadable_step_is_never_right() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = printed_of(&work(&scene, None, None));
+    assert!(check(&scene, &scene, &printed_text(&key)).right());
+    let cos = key.lines().find(|l| l.starts_with("cosTheta")).unwrap().to_string();
+    for whole in ["cosTheta =  0", "cosTheta =  1"] {
+        let c = check(&scene, &scene, &printed_text(&key.replace(&cos, whole)));
+        assert!(!c.right(), "{whole}");
+        assert_eq!(c.steps[c.first_wrong.unwrap()].name, "cosTheta");
+    }
+    // A whole number that is the key's is right: `spot = 1`, `[0 0 0 0]`.
+    let spot = check(&scene, &scene, &printed_text("vov =  [0 0 1 0]\nIdif =  [0 0 0 0]\n"));
+    assert_eq!(spot.steps[0].verdict, Verdict::Right);
+    for junk in ["cosTheta =  0.9 rad", "cosTheta =  0.139j", "cosTheta =  0x1.1d3p-3"] {
+        let c = check(&scene, &scene, &printed_text(&key.replace(&cos, junk)));
+        assert!(!c.right(), "{junk}");
+        assert_eq!(c.unchecked().map(|u| u.id()), Some("unreadable-step"), "{junk}");
+    }
+    // A wrong vlv wrapped past the cap, then the right one: not right.
+    let wrapped = format!("vlv =  [-0.79220526\n{}-0.13925483 0.]\n{key}", " -0.59415395\n".repeat(1030));
+    assert!(!check(&scene, &scene, &printed_text(&wrapped)).right());
+}

@@ -49,6 +49,10 @@ pub struct Imported {
     /// their notices are among `notices`): `check` refuses such work rather than check the
     /// worksheet's value in its place.
     pub not_finite: Vec<String>,
+    /// The givens a line changes in a way the reader does not follow (`lightPos[2] *= 2`,
+    /// `lightPos += d`), each with its place: `check` refuses such work rather than check a
+    /// value Python never used.
+    pub not_followed: Vec<String>,
 }
 
 /// Why nothing could be read at all.
@@ -97,8 +101,19 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
     let mut local_viewer = false;
     let mut refused = Vec::new();
     let mut not_finite = Vec::new();
+    let mut not_followed = Vec::new();
     let mut total = Size::default();
     for line in &lines {
+        if let Some(name) = changed_in_place(&line.text).filter(|n| is_given(n)) {
+            not_followed.push(format!("{name} ({})", line.place));
+            notices.push(t!(
+                "import-unreadable",
+                place = line.place.clone(),
+                line = crate::numerics::strict::quoted_line(&line.text),
+                reason = t!("import-changed-in-place")
+            ));
+            continue;
+        }
         let Some((lhs, rhs)) = assignment(&line.text) else { continue };
         let value = match evaluate(rhs, &env) {
             Err(Failure::Limit(why)) => return Err(too_large(line, &why)),
@@ -158,7 +173,7 @@ pub fn read(text: &str, notebook: bool, name: &str) -> Result<Imported, ImportEr
     }
     let mut r = Reader { given, notices, refused };
     let doc = r.document(name, local_viewer);
-    Ok(Imported { doc, notices: r.notices, not_finite })
+    Ok(Imported { doc, notices: r.notices, not_finite, not_followed })
 }
 
 /// The error for a line that passed a limit: its place, its text (shortened) and why.
@@ -184,18 +199,100 @@ fn notebook_lines(text: &str) -> Result<Vec<SourceLine>, ImportError> {
             serde_json::Value::Array(parts) => parts.iter().filter_map(|p| p.as_str()).collect(),
             _ => String::new(),
         };
-        for (k, line) in source.lines().enumerate() {
-            out.push(SourceLine { text: line.to_string(), place: t!("import-place-cell", cell = c + 1, line = k + 1) });
+        for (k, line) in code_lines(&source) {
+            out.push(SourceLine { text: line, place: t!("import-place-cell", cell = c + 1, line = k + 1) });
         }
     }
     Ok(out)
 }
 
+/// The lines of `source` as Python reads their names: each in its NFKC form (Python reads
+/// `ｌｉｇｈｔＰｏｓ` as `lightPos`), with their numbers (from 0), less the lines that start
+/// inside a triple-quoted string (`"""` ... `"""` is text, not code, though it looks
+/// like an assignment).
+fn code_lines(source: &str) -> Vec<(usize, String)> {
+    let nfkc = icu_normalizer::ComposingNormalizerBorrowed::new_nfkc();
+    let mut open: Option<&str> = None;
+    let mut out = Vec::new();
+    for (k, line) in source.lines().enumerate() {
+        let starts_inside = open.is_some();
+        open = after_line(line, open);
+        if !starts_inside {
+            out.push((k, nfkc.normalize(line).into_owned()));
+        }
+    }
+    out
+}
+
+/// The triple-quoted string still open after `line`, given the one open before it.
+fn after_line(line: &str, mut open: Option<&'static str>) -> Option<&'static str> {
+    let mut rest = line;
+    loop {
+        if let Some(q) = open {
+            let Some(end) = rest.find(q) else { return open };
+            rest = &rest[end + 3..];
+            open = None;
+            continue;
+        }
+        // Outside a triple-quoted string: a comment ends the line; a one-line string is
+        // skipped to its closing quote (a backslash escapes).
+        let Some(i) = rest.find(['#', '"', '\'']) else { return None };
+        let c = rest[i..].chars().next().unwrap_or('#');
+        if c == '#' {
+            return None;
+        }
+        let tail = &rest[i..];
+        if tail.starts_with("\"\"\"") || tail.starts_with("'''") {
+            open = Some(if c == '"' { "\"\"\"" } else { "'''" });
+            rest = &tail[3..];
+            continue;
+        }
+        let mut escaped = false;
+        let close = tail[1..].char_indices().find(|&(_, ch)| {
+            let hit = ch == c && !escaped;
+            escaped = ch == '\\' && !escaped;
+            hit
+        });
+        match close {
+            Some((j, _)) => rest = &tail[1 + j + 1..],
+            None => return None,
+        }
+    }
+}
+
+/// The name a top-level line changes in place, not by `name = expression`:
+/// `lightPos[2] = 5`, `lightPos[2] *= 2`, `lightPos += d`.
+fn changed_in_place(line: &str) -> Option<&str> {
+    if line.starts_with([' ', '\t', '#']) {
+        return None;
+    }
+    let code = strip_comment(line).trim();
+    let name_end = code.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).unwrap_or(code.len());
+    let (name, rest) = code.split_at(name_end);
+    if name.is_empty() {
+        return None;
+    }
+    let rest = rest.trim_start();
+    let rest = if rest.starts_with('[') {
+        let close = rest.find(']')?;
+        let after = rest[close + 1..].trim_start();
+        // `name[i] = ...`: a subscript assigned.
+        if after.starts_with('=') && !after.starts_with("==") {
+            return Some(name);
+        }
+        after
+    } else {
+        rest
+    };
+    let ops = ["+=", "-=", "*=", "/=", "//=", "%=", "**=", "@=", "&=", "|=", "^=", ">>=", "<<="];
+    ops.iter().any(|op| rest.starts_with(op)).then_some(name)
+}
+
 /// A script's lines.
 fn script_lines(text: &str) -> Vec<SourceLine> {
-    text.lines()
-        .enumerate()
-        .map(|(k, line)| SourceLine { text: line.to_string(), place: t!("import-place-line", line = k + 1) })
+    code_lines(text)
+        .into_iter()
+        .map(|(k, line)| SourceLine { text: line, place: t!("import-place-line", line = k + 1) })
         .collect()
 }
 
@@ -463,6 +560,48 @@ mod tests {
 
     fn script(text: &str) -> Result<Imported, ImportError> {
         read(text, false, "t")
+    }
+
+    /// The light's z in the scene read from `text`.
+    fn light_z(text: &str) -> f64 {
+        script(text).unwrap().doc.scene.lights[0].position.z
+    }
+
+    /// Python reads names in their NFKC form and ignores text in triple-quoted strings:
+    /// the reader reads as Python runs (a hostile classmate's full-width `ｌｉｇｈｔＰｏｓ`
+    /// and a `"""`-quoted given passed wrong work as right).
+    #[test]
+    fn names_are_read_as_python_reads_them_and_strings_are_not_code() {
+        let base = "vertexPos = np.array([-512, -384, 0, 1])\nlightPos = np.array([0, 0, 90, 1])\n";
+        assert_eq!(light_z(base), 90.0);
+        assert_eq!(light_z(&format!("{base}ｌｉｇｈｔＰｏｓ = np.array([0, 0, 5, 1])\n")), 5.0);
+        for quote in ["\"\"\"", "'''"] {
+            let hidden = format!("{base}{quote}\nlightPos = np.array([0, 0, 7, 1])\n{quote}\n");
+            assert_eq!(light_z(&hidden), 90.0, "{quote}");
+            let after = format!("{base}x = {quote}a # b ' c{quote}\nlightPos = np.array([0, 0, 8, 1])\n");
+            assert_eq!(light_z(&after), 8.0, "a closed one-line {quote} string");
+        }
+        let f_string = format!("{base}s = f\"\"\"\nlightPos = np.array([0, 0, 9, 1])\n\"\"\"\n");
+        assert_eq!(light_z(&f_string), 90.0);
+        let in_comment = format!("{base}# \"\"\" not a string\nlightPos = np.array([0, 0, 6, 1])\n");
+        assert_eq!(light_z(&in_comment), 6.0);
+    }
+
+    /// A given changed in place is not followed: it is named, with its place, for `check`
+    /// to refuse rather than check a value Python never used.
+    #[test]
+    fn a_given_changed_in_place_is_named() {
+        let base = "vertexPos = np.array([-512, -384, 0, 1])\nlightPos = np.array([0, 0, 45, 1])\n";
+        for change in
+            ["lightPos[2] *= 2", "lightPos[2] = 90", "lightPos += np.array([0, 0, 45, 0])", "lightPos @= mview"]
+        {
+            let r = script(&format!("{base}{change}\n")).unwrap();
+            assert_eq!(r.not_followed.len(), 1, "{change}");
+            assert!(r.not_followed[0].starts_with("lightPos ("), "{:?}", r.not_followed);
+        }
+        for fine in ["lightPos = lightPos*2", "x = lightPos[2]", "vlv[0] = 1", "lightPos == 2", "    lightPos[2] = 1"] {
+            assert!(script(&format!("{base}{fine}\n")).unwrap().not_followed.is_empty(), "{fine}");
+        }
     }
 
     #[test]

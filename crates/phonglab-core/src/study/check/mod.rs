@@ -118,6 +118,8 @@ pub struct Check {
     pub causes: Vec<Cause>,
     /// The errors the run stopped with (`ModuleNotFoundError: No module named 'numpy'`).
     pub errors: Vec<String>,
+    /// Steps of the key printed with a value that could not be read (`cosTheta = 0.9 rad`).
+    pub unreadable: Vec<String>,
 }
 
 /// Why a piece of work with no wrong step is still not right: nothing was compared.
@@ -127,6 +129,8 @@ pub enum Unchecked {
     Stopped(String),
     /// Nothing it printed is a step of the worksheet.
     NothingCompared,
+    /// Steps printed with values that could not be read (named).
+    Unreadable(String),
 }
 
 impl Unchecked {
@@ -135,6 +139,7 @@ impl Unchecked {
         match self {
             Unchecked::Stopped(_) => "run-stopped",
             Unchecked::NothingCompared => "nothing-compared",
+            Unchecked::Unreadable(_) => "unreadable-step",
         }
     }
 
@@ -143,6 +148,7 @@ impl Unchecked {
         match self {
             Unchecked::Stopped(e) => crate::t!("check-run-stopped", error = e.clone()),
             Unchecked::NothingCompared => crate::t!("check-nothing-compared"),
+            Unchecked::Unreadable(names) => crate::t!("check-unreadable-steps", names = names.clone()),
         }
     }
 }
@@ -163,6 +169,9 @@ impl Check {
     pub fn unchecked(&self) -> Option<Unchecked> {
         if let Some(e) = self.errors.last() {
             return Some(Unchecked::Stopped(e.clone()));
+        }
+        if !self.unreadable.is_empty() {
+            return Some(Unchecked::Unreadable(self.unreadable.join(", ")));
         }
         self.steps.is_empty().then_some(Unchecked::NothingCompared)
     }
@@ -277,7 +286,16 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
     } else {
         Vec::new()
     };
-    Check { rules: assignment.rules, inputs_differ, steps, first_wrong, causes, errors: student.errors.clone() }
+    let unreadable = student.unread.iter().filter(|n| key.get(n).is_some()).cloned().collect();
+    Check {
+        rules: assignment.rules,
+        inputs_differ,
+        steps,
+        first_wrong,
+        causes,
+        errors: student.errors.clone(),
+        unreadable,
+    }
 }
 
 /// The earlier wrong step(s) `p` is right given: the key worked with only one of the

@@ -34,6 +34,10 @@ pub struct Printed {
     /// A notebook's code cells as written (never run): read only to order causes whose
     /// values the printed ones cannot tell apart, by the formula the student wrote.
     pub code: String,
+    /// The names printed with a value that could not be read as numbers (`cosTheta = 0.9
+    /// rad`, a value wrapped past the cap): where the key has such a step, the work is not
+    /// checked whole, so never right.
+    pub unread: Vec<String>,
 }
 
 impl Printed {
@@ -112,8 +116,12 @@ pub fn read_printed_text(text: &str) -> Result<Printed, OutputsError> {
             open += depth(next);
             joined += 1;
         }
-        if let Some(v) = numbers(name, &value) {
-            out.values.push(v);
+        match numbers(name, &value).filter(|_| open <= 0) {
+            Some(v) => out.values.push(v),
+            None if !out.unread.iter().any(|n| n == name) && out.unread.len() < MAX_ERRORS => {
+                out.unread.push(name.to_string());
+            }
+            None => {}
         }
     }
     array_precision(&mut out);
@@ -227,6 +235,10 @@ fn number(token: &str) -> Option<(f64, f64)> {
         Some((m, e)) => (m, e.parse::<i32>().ok()?),
         None => (token, 0),
     };
+    // A whole number with no point is Python's int, exact (`0` is not 0.139 rounded).
+    if !token.contains(['.', 'e', 'E']) {
+        return Some((x, 0.0));
+    }
     let decimals = mantissa.split_once('.').map_or(0, |(_, f)| f.len() as i32);
     Some((x, 0.5 * 10f64.powi(exp - decimals)))
 }
