@@ -1,22 +1,27 @@
 //! `phonglab diagnose`: which mistake made a student's picture of a scene. The scene is
 //! drawn right and with each mistake of [`MISTAKES`] (a table: each mistake a function from
-//! the drawing to the changed drawing, drawn by the same renderer), and each picture is
-//! compared with the student's image over the object's pixels ([`super::picture_match`]).
+//! the drawing to the changed drawing, made once or for each light in turn, drawn by the
+//! same renderer), and each picture is compared with the student's image over the object's
+//! pixels ([`super::picture_match`]). `emission-added`'s colour is fitted from the image
+//! first (the median lift of the object's unclamped pixels).
 //!
 //! The verdict: "right" when the right picture explains at least [`RIGHT_AT`] of the
 //! object's pixels; else "wrong" with the mistakes whose pictures explain at least
 //! [`EXPLAINED_AT`] (best first), and [`MARGIN`] more than the right picture; else
-//! "unexplained". A mistake that this scene cannot show
-//! (no scale for `GL_NORMALIZE`, no spot to leave out) draws the right picture again: it
-//! is left out of the comparison and listed as not visible.
+//! "unexplained". A mistake whose change cannot alter this scene (a light that is already
+//! directional, no colour material) is not offered; one whose picture the right picture
+//! explains all the same (no scale for `GL_NORMALIZE`, no spot to leave out) is left out of
+//! the comparison and listed as not visible.
 
-use glam::DMat3;
+mod fit;
+mod mistakes;
+
+pub use mistakes::{At, MISTAKES, PictureMistake, Scope, offered};
 
 use crate::equation::lighting::EvalOptions;
 use crate::mesh::Mesh;
 use crate::model::error::SceneError;
-use crate::model::rules::{RuleSet, SpecularModel};
-use crate::model::scene::{LightPlacement, NormalMode, Scene};
+use crate::model::scene::Scene;
 use crate::model::view::ShadingMode;
 use crate::raster::render::{Job, Renderer};
 use crate::teach::picture_match::{Match, compare};
@@ -95,143 +100,6 @@ impl Drawing {
     }
 }
 
-/// A mistake a picture can show: its id (kebab-case, the same as `phonglab check`'s where
-/// the mistake is the same), its message, and the change it makes to the drawing.
-pub struct PictureMistake {
-    /// The id in JSON and the docs.
-    pub id: &'static str,
-    /// The message id of its words.
-    pub message: &'static str,
-    /// The drawing with the mistake made.
-    pub apply: fn(&mut Drawing),
-}
-
-impl PictureMistake {
-    /// Its words in the reader's language.
-    pub fn words(&self) -> String {
-        crate::locale::tr(self.message)
-    }
-}
-
-/// Normals transformed by M: with each normal `n` replaced by `M^T M n`, the inverse
-/// transpose gives `M n` (up to length), as the misconception's picture does.
-fn normals_by_modelview(d: &mut Drawing) {
-    let m = DMat3::from_mat4(d.scene.eye_from_object());
-    for n in &mut d.mesh.normals {
-        let bent = m.transpose() * m * n.as_dvec3();
-        if bent.length() > 0.0 {
-            *n = bent.normalize().as_vec3();
-        }
-    }
-}
-
-/// `GL_NORMALIZE` (or `GL_RESCALE_NORMAL`) off.
-fn normalize_off(d: &mut Drawing) {
-    d.scene.normal_mode = NormalMode::AsIs;
-}
-
-/// `R . V` where `n . H` belongs.
-fn reflection_for_halfway(d: &mut Drawing) {
-    d.scene.rules.specular = SpecularModel::Phong;
-}
-
-/// Lit per vertex where the scene lights per fragment.
-fn gouraud_for_phong(d: &mut Drawing) {
-    if d.mode == ShadingMode::Phong {
-        d.mode = ShadingMode::Gouraud;
-    }
-}
-
-/// No `f_i` gate: the Phong demo's rules (as the misconception draws it), Blinn-Phong kept.
-fn specular_without_gate(d: &mut Drawing) {
-    d.scene.rules.set = RuleSet::PhongDemo;
-}
-
-/// The attenuation's distance in object space: `k1 / s`, `k2 / s^2` for the modelview's
-/// scale `s` (the cube root of its determinant; exact for a uniform scale).
-fn attenuation_object_distance(d: &mut Drawing) {
-    let s = DMat3::from_mat4(d.scene.eye_from_object()).determinant().abs().cbrt();
-    if s > 0.0 && s.is_finite() {
-        for l in &mut d.scene.lights {
-            l.attenuation = [l.attenuation[0], l.attenuation[1] / s, l.attenuation[2] / (s * s)];
-        }
-    }
-}
-
-/// The light's position given before `gluLookAt`: under the identity, in eye coordinates.
-fn light_before_view(d: &mut Drawing) {
-    for l in &mut d.scene.lights {
-        l.placement = LightPlacement::Eye;
-    }
-}
-
-/// `GL_LIGHT_MODEL_LOCAL_VIEWER` the other way.
-fn viewer_swapped(d: &mut Drawing) {
-    d.scene.light_model.local_viewer = !d.scene.light_model.local_viewer;
-}
-
-/// Every normal pointing inwards.
-fn flipped_normals(d: &mut Drawing) {
-    for n in &mut d.mesh.normals {
-        *n = -*n;
-    }
-}
-
-/// `GL_LIGHT_MODEL_TWO_SIDE` off.
-fn two_sided_off(d: &mut Drawing) {
-    d.scene.light_model.two_sided = false;
-}
-
-/// Attenuation left out: (1, 0, 0).
-fn attenuation_left_out(d: &mut Drawing) {
-    for l in &mut d.scene.lights {
-        l.attenuation = [1.0, 0.0, 0.0];
-    }
-}
-
-/// The spot left out: cutoff 180.
-fn spot_left_out(d: &mut Drawing) {
-    for l in &mut d.scene.lights {
-        l.spot_cutoff = 180.0;
-    }
-}
-
-/// The picture mistakes, in the order the docs list them.
-pub const MISTAKES: [PictureMistake; 12] = [
-    PictureMistake { id: "normal-by-modelview", message: "wrong-cause-normals-by-m", apply: normals_by_modelview },
-    PictureMistake { id: "normal-not-normalised", message: "diagnose-normalize-off", apply: normalize_off },
-    PictureMistake {
-        id: "reflection-for-halfway",
-        message: "wrong-cause-reflection-for-halfway",
-        apply: reflection_for_halfway,
-    },
-    PictureMistake {
-        id: "gouraud-for-phong",
-        message: "wrong-cause-gouraud-misses-highlight",
-        apply: gouraud_for_phong,
-    },
-    PictureMistake {
-        id: "specular-without-gate",
-        message: "wrong-cause-specular-facing-away",
-        apply: specular_without_gate,
-    },
-    PictureMistake {
-        id: "attenuation-object-distance",
-        message: "wrong-cause-attenuation-object-space",
-        apply: attenuation_object_distance,
-    },
-    PictureMistake { id: "light-before-view", message: "wrong-cause-light-before-view", apply: light_before_view },
-    PictureMistake { id: "viewer-swapped", message: "diagnose-viewer-swapped", apply: viewer_swapped },
-    PictureMistake { id: "flipped-normals", message: "diagnose-flipped-normals", apply: flipped_normals },
-    PictureMistake { id: "two-sided-off", message: "diagnose-two-sided-off", apply: two_sided_off },
-    PictureMistake {
-        id: "attenuation-left-out",
-        message: "diagnose-attenuation-left-out",
-        apply: attenuation_left_out,
-    },
-    PictureMistake { id: "spot-left-out", message: "diagnose-spot-left-out", apply: spot_left_out },
-];
-
 /// The verdict on an image.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Verdict {
@@ -241,6 +109,31 @@ pub enum Verdict {
     Wrong,
     /// Neither the right picture nor any mistake does.
     Unexplained,
+}
+
+impl Tried {
+    /// Its id in JSON and the docs.
+    pub fn id(&self) -> &'static str {
+        MISTAKES[self.mistake].id
+    }
+
+    /// The light it was made for, for a mistake made for each light in turn.
+    pub fn light(&self) -> Option<usize> {
+        (MISTAKES[self.mistake].scope == Scope::EachLight).then_some(self.at.light)
+    }
+
+    /// Its id with the light it was made for ("light-left-out, GL_LIGHT1"), for text.
+    pub fn label(&self) -> String {
+        match self.light() {
+            Some(n) => format!("{}, GL_LIGHT{n}", self.id()),
+            None => self.id().to_owned(),
+        }
+    }
+
+    /// Its words in the reader's language, naming the light.
+    pub fn words(&self) -> String {
+        MISTAKES[self.mistake].words_at(self.at)
+    }
 }
 
 impl Verdict {
@@ -259,6 +152,9 @@ impl Verdict {
 pub struct Tried {
     /// Its place in [`MISTAKES`].
     pub mistake: usize,
+    /// Where it was made: the light, for a mistake made for each light in turn; the
+    /// emission fitted from the image.
+    pub at: At,
     /// How its picture matches the image; `None` when this scene cannot show it (its
     /// picture is the right one).
     pub matched: Option<Match>,
@@ -280,22 +176,35 @@ pub struct Diagnosis {
     pub renderer: Renderer,
 }
 
+/// The most pictures [`diagnose`] draws for `right`: the right one and each mistake it
+/// offers (`emission-added` counted).
+pub fn drawings_at_most(right: &Drawing) -> usize {
+    offered(right, [1.0; 3]).len() + 1
+}
+
 /// Compares `image` (RGBA8, `size` pixels square) with `right` drawn right and with each
-/// mistake.
+/// mistake it offers, one picture at a time (the renderer spreads each over the thread
+/// pool; drawing several at once would hold several renderers' memory).
 pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis, SceneError> {
     let (renderer, picture, covered) = right.draw(size)?;
     let bg = right.background8();
     let exact = compare(&picture, &covered, image, bg, size);
+    let emission = fit::emission(&picture, &covered, image);
     let mut tried = Vec::new();
-    for (i, m) in MISTAKES.iter().enumerate() {
+    for (mistake, at) in offered(right, emission) {
         let mut d = right.clone();
-        (m.apply)(&mut d);
+        (MISTAKES[mistake].apply)(&mut d, at);
         let (_, wrong, wrong_covered) = d.draw(size)?;
         // A mistake whose picture the right one explains cannot be seen in this scene.
         let visible = compare(&wrong, &wrong_covered, &picture, bg, size).score < RIGHT_AT;
         let matched = visible.then(|| compare(&wrong, &wrong_covered, image, bg, size));
-        tried.push(Tried { mistake: i, matched });
+        tried.push(Tried { mistake, at, matched });
     }
+    Ok(verdict_of(exact, tried, picture, renderer))
+}
+
+/// The verdict from the right picture's match and each mistake's.
+fn verdict_of(exact: Match, mut tried: Vec<Tried>, picture: Vec<u8>, renderer: Renderer) -> Diagnosis {
     let key = |t: &Tried| t.matched.map_or(-1.0, |m| m.score);
     tried.sort_by(|a, b| key(b).total_cmp(&key(a)));
     let causes: Vec<Tried> =
@@ -308,5 +217,5 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         Verdict::Wrong
     };
     let causes = if verdict == Verdict::Wrong { causes } else { Vec::new() };
-    Ok(Diagnosis { verdict, right: exact, causes, tried, picture, renderer })
+    Diagnosis { verdict, right: exact, causes, tried, picture, renderer }
 }
