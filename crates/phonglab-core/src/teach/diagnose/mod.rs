@@ -189,7 +189,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
     let (renderer, picture, covered) = right.draw(size)?;
     let bg = right.background8();
     let exact = compare(&picture, &covered, image, bg, size);
-    let emission = fit::emission(&picture, &covered, image);
+    let emission = fit::emission(&picture, &covered, image, size);
     let mut tried = Vec::new();
     for (mistake, at) in offered(right, emission) {
         let mut d = right.clone();
