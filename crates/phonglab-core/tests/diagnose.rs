@@ -216,9 +216,13 @@ fn each_state_mistake_for_each_light_shifted_and_noised_is_named_first() {
                 report.push(format!("{name} {} {light:?}: not visible", m.id));
                 continue;
             }
-            let scores: Vec<String> =
-                found.causes.iter().map(|t| format!("{}={:.4}", t.label(), t.matched.map_or(-1.0, |x| x.score))).collect();
-            let best: Vec<String> = found.tried.iter().take(2).map(|t| format!("{}={:?}", t.label(), t.matched.map(|x| x.score))).collect();
+            let scores: Vec<String> = found
+                .causes
+                .iter()
+                .map(|t| format!("{}={:.4}", t.label(), t.matched.map_or(-1.0, |x| x.score)))
+                .collect();
+            let best: Vec<String> =
+                found.tried.iter().take(2).map(|t| format!("{}={:?}", t.label(), t.matched.map(|x| x.score))).collect();
             let line = format!(
                 "{name} {} {light:?}: right {:.4}; {} (best {best:?}, fitted {:?})",
                 m.id,
@@ -250,7 +254,11 @@ fn an_added_emission_is_fitted_from_the_picture() {
     assert!((MISTAKES[added].apply)(&mut d, At { light: 0, emission: [0.3, 0.3, 0.3] }));
     let (_, rgba, _) = d.draw(SIZE).expect("drawn");
     let found = diagnose(&right, &shifted_and_noised(&rgba, right.background8()), SIZE).expect("diagnosed");
-    let tried: Vec<String> = found.tried.iter().map(|t| format!("{}={:?} {:?}", t.label(), t.matched.map(|m| m.score), t.at.emission)).collect();
+    let tried: Vec<String> = found
+        .tried
+        .iter()
+        .map(|t| format!("{}={:?} {:?}", t.label(), t.matched.map(|m| m.score), t.at.emission))
+        .collect();
     let first = found.causes.first().unwrap_or_else(|| panic!("right {:?}: {tried:#?}", found.right));
     assert_eq!(first.id(), "emission-added");
     for c in first.at.emission {
@@ -268,7 +276,13 @@ fn an_added_emission_is_fitted_from_the_picture() {
 fn a_mistake_that_changes_nothing_is_not_offered() {
     let ids = |d: &Drawing| offered(d, [0.0; 3]).into_iter().map(|(i, _)| MISTAKES[i].id).collect::<Vec<_>>();
     let three = ids(&shipped("three-lights"));
-    for absent in ["spot-direction-untransformed", "colour-material-off", "colour-material-diffuse-only", "light-after-model", "emission-added"] {
+    for absent in [
+        "spot-direction-untransformed",
+        "colour-material-off",
+        "colour-material-diffuse-only",
+        "light-after-model",
+        "emission-added",
+    ] {
         assert!(!three.contains(&absent), "{absent}: {three:?}");
     }
     // attenuation-left-out once (all lights), not again for the one attenuated light.

@@ -40,9 +40,8 @@ fn flat(picture: &[u8], covered: &[bool], size: usize, p: usize, c: usize) -> bo
 pub fn emission(picture: &[u8], covered: &[bool], image: &[u8], size: usize) -> [f64; 3] {
     let mut out = [0.0; 3];
     for (c, value) in out.iter_mut().enumerate() {
-        let unclamped = |&p: &usize| {
-            covered[p] && UNCLAMPED.contains(&picture[p * 4 + c]) && UNCLAMPED.contains(&image[p * 4 + c])
-        };
+        let unclamped =
+            |&p: &usize| covered[p] && UNCLAMPED.contains(&picture[p * 4 + c]) && UNCLAMPED.contains(&image[p * 4 + c]);
         let inside: Vec<usize> = (0..covered.len()).filter(unclamped).collect();
         let flats: Vec<usize> = inside.iter().copied().filter(|&p| flat(picture, covered, size, p, c)).collect();
         let pixels = if flats.is_empty() { inside } else { flats };
