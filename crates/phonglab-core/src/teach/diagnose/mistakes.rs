@@ -245,10 +245,11 @@ fn spot_direction_untransformed(d: &mut Drawing, at: At) -> bool {
         return false;
     }
     // The renderer takes the direction through the light's modelview; through its inverse
-    // first, the direction arrives in eye coordinates unchanged.
-    let direction = m.inverse() * l.spot_direction;
-    let changed = (m * l.spot_direction).normalize_or_zero().distance(direction.normalize_or_zero()) > 1e-9;
-    changed && the_light(d, at, |_| true, |l| l.spot_direction = direction)
+    // first, the direction arrives in eye coordinates unchanged. It changes the picture
+    // only where the modelview turns the direction.
+    let (given, direction) = (l.spot_direction, m.inverse() * l.spot_direction);
+    let turned = (m * given).normalize_or_zero().distance(given.normalize_or_zero()) > 1e-9;
+    turned && the_light(d, at, |_| true, |l| l.spot_direction = direction)
 }
 
 /// The world-placed lights given under view * model (after the model transform) instead
@@ -345,4 +346,45 @@ pub fn offered(right: &Drawing, emission: [f64; 3]) -> Vec<(usize, At)> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::{DMat4, DVec3};
+
+    /// A world-placed spotlight pointing down -z under the view `view`.
+    fn spot_under(view: DMat4) -> Drawing {
+        let mut scene = crate::model::scene::Scene { eye_from_world: view, ..Default::default() };
+        let mut l = Light::gl_default(0);
+        (l.spot_cutoff, l.spot_direction, l.placement) = (30.0, DVec3::NEG_Z, LightPlacement::World);
+        scene.lights = vec![l];
+        Drawing {
+            scene,
+            mesh: crate::mesh::sphere::glu_sphere(1.0, 4, 4),
+            clip_from_object: DMat4::IDENTITY,
+            mode: ShadingMode::Phong,
+            background: [0.0; 3],
+            options: Default::default(),
+        }
+    }
+
+    #[test]
+    fn the_untransformed_spot_direction_is_offered_where_the_view_turns_it() {
+        // Turned half a turn about x, the view sends -z to +z: given under the identity
+        // it stays -z in the eye. (A half turn is its own inverse: comparing the turned
+        // direction with the inverse-turned one would find no change.)
+        let mut d = spot_under(DMat4::from_rotation_x(std::f64::consts::PI));
+        assert!(spot_direction_untransformed(&mut d, At::default()));
+        let l = &d.scene.lights[0];
+        let in_eye = DMat3::from_mat4(d.scene.eye_from_light(l)) * l.spot_direction;
+        assert!(in_eye.distance(DVec3::NEG_Z) < 1e-12, "{in_eye}");
+        // A view that moves but does not turn changes nothing: not offered.
+        let mut d = spot_under(DMat4::from_translation(DVec3::new(0.0, 0.0, -3.0)));
+        assert!(!spot_direction_untransformed(&mut d, At::default()));
+        // Nor is it for a light that is not a spot.
+        let mut d = spot_under(DMat4::from_rotation_x(1.0));
+        d.scene.lights[0].spot_cutoff = 180.0;
+        assert!(!spot_direction_untransformed(&mut d, At::default()));
+    }
 }
