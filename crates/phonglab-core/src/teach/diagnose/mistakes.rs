@@ -9,7 +9,7 @@ use crate::model::rules::{RuleSet, SpecularModel};
 use crate::model::scene::{ColorMaterialMode, Light, LightPlacement, Material, NormalMode};
 use crate::model::view::ShadingMode;
 
-use super::Drawing;
+use super::drawing::Drawing;
 
 /// Where a mistake is made: once for the scene, or for each light in turn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

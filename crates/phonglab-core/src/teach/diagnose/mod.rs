@@ -13,17 +13,15 @@
 //! explains all the same (no scale for `GL_NORMALIZE`, no spot to leave out) is left out of
 //! the comparison and listed as not visible.
 
+mod drawing;
 mod fit;
 mod mistakes;
 
+pub use drawing::Drawing;
 pub use mistakes::{At, MISTAKES, PictureMistake, Scope, offered};
 
-use crate::equation::lighting::EvalOptions;
-use crate::mesh::Mesh;
 use crate::model::error::SceneError;
-use crate::model::scene::Scene;
-use crate::model::view::ShadingMode;
-use crate::raster::render::{Job, Renderer};
+use crate::raster::render::Renderer;
 use crate::teach::picture_match::{Match, compare};
 
 /// The share of the object's pixels the right picture must explain for "right". Measured
@@ -40,65 +38,6 @@ pub const EXPLAINED_AT: f64 = 0.98;
 /// How much more of the object a mistake's picture must explain than the right picture
 /// does to be named: a mistake that changes only a few pixels cannot be told from noise.
 pub const MARGIN: f64 = 0.01;
-
-/// Everything a picture is drawn from, owned: the renderer's [`Job`] without the borrows.
-#[derive(Clone, Debug)]
-pub struct Drawing {
-    /// The lighting state and the modelview the object is lit under.
-    pub scene: Scene,
-    /// The mesh, object space.
-    pub mesh: Mesh,
-    /// Object to clip space.
-    pub clip_from_object: glam::DMat4,
-    /// The shading.
-    pub mode: ShadingMode,
-    /// The background colour (linear, as written).
-    pub background: [f32; 3],
-    /// Numerical options.
-    pub options: EvalOptions,
-}
-
-impl Drawing {
-    /// The drawing of `job`.
-    pub fn of(job: &Job<'_>) -> Drawing {
-        Drawing {
-            scene: job.scene.clone(),
-            mesh: job.mesh.clone(),
-            clip_from_object: job.clip_from_object,
-            mode: job.mode,
-            background: job.background,
-            options: job.options,
-        }
-    }
-
-    /// The renderer's job for it.
-    pub fn job(&self) -> Job<'_> {
-        Job {
-            scene: &self.scene,
-            mesh: &self.mesh,
-            clip_from_object: self.clip_from_object,
-            mode: self.mode,
-            background: self.background,
-            cull_back: false,
-            options: self.options,
-        }
-    }
-
-    /// Drawn `size` pixels square: the renderer (its visibility kept, for probing), the
-    /// pixels (RGBA8) and which pixels the object covers.
-    pub fn draw(&self, size: usize) -> Result<(Renderer, Vec<u8>, Vec<bool>), SceneError> {
-        let mut r = Renderer::new();
-        r.keep_visibility(true);
-        let rgba = r.render(&self.job(), size, size)?.0.rgba.clone();
-        let covered = (0..size * size).map(|i| r.surface_at(i).is_some()).collect();
-        Ok((r, rgba, covered))
-    }
-
-    /// The background as 8-bit levels.
-    pub fn background8(&self) -> [u8; 3] {
-        self.background.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8)
-    }
-}
 
 /// The verdict on an image.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
