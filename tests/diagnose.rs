@@ -19,7 +19,12 @@ fn scratch(name: &str) -> PathBuf {
 }
 
 fn spotlight() -> String {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    shipped("spotlight")
+}
+
+/// The text of `assets/scenes/NAME.toml`.
+fn shipped(name: &str) -> String {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("assets/scenes/{name}.toml"));
     std::fs::read_to_string(path).unwrap()
 }
 
@@ -100,6 +105,72 @@ fn mistakes_made_in_the_scene_file_are_named_first() {
         assert!((0.98..=1.0).contains(&score), "{id}: {score}");
         assert!(v["right_score"].as_f64().unwrap() < 0.99, "{id}: {v:#}");
     }
+}
+
+/// The state mistakes a student makes in the exported program's GL calls, made in the
+/// scene file (each light named as the JSON's `light`), are named first: a light's
+/// `glEnable` or w, the headlight's matrix, the shininess, the material's colours, the
+/// colour material, an emission (fitted from the picture).
+#[test]
+fn state_mistakes_made_in_the_scene_file_are_named_first_with_their_light() {
+    let dir = scratch("state");
+    let green_light = "[[lights]]\nposition = [3, 1, 2, 1]\nambient = [0, 0, 0]\ndiffuse = [0.1, 0.9, 0.1]\nspecular = [0.3, 1, 0.3]\nplacement = \"world\"\n";
+    let cases: [(&str, &str, &str, &str, Option<u64>); 9] = [
+        ("three-lights", green_light, "", "light-left-out", Some(1)),
+        ("three-lights", "position = [-3, 1, 2, 1]", "position = [-3, 1, 2, 0]", "point-as-directional", Some(0)),
+        ("three-lights", "placement = \"eye\"", "placement = \"world\"", "headlight-under-view", Some(3)),
+        ("three-lights", "shininess = 60", "shininess = 0.46875", "shininess-fraction", None),
+        ("three-lights", "shininess = 60", "shininess = 60\nemission = [0.25, 0.25, 0.25]", "emission-added", None),
+        ("of-set-color", "specular = [1, 1, 1]\n", "specular = [0, 0, 0]\n", "specular-left-out", None),
+        ("of-set-color", "mode = \"ambient-and-diffuse\"", "mode = \"diffuse\"", "colour-material-diffuse-only", None),
+        (
+            "of-set-color",
+            "[color_material]\nface = \"front-and-back\"\nmode = \"ambient-and-diffuse\"\ncolor = [1, 0.54901961, 0, 1]\n",
+            "",
+            "colour-material-off",
+            None,
+        ),
+        (
+            "spotlight",
+            "ambient = [0, 0, 0]\ndiffuse = [1, 0.95",
+            "ambient = [0.3, 0.3, 0.3]\ndiffuse = [1, 0.95",
+            "light-ambient-left-out",
+            Some(0),
+        ),
+    ];
+    for (scene, from, to, id, light) in cases {
+        let text = shipped(scene);
+        assert!(text.contains(from), "{scene}: {from}");
+        // The last case's right scene is the edited one (a light with an ambient colour),
+        // the student's the shipped one: the ambient left out.
+        let (right_text, wrong_text) = if id == "light-ambient-left-out" {
+            (text.replacen(from, to, 1), text.clone())
+        } else {
+            (text.clone(), text.replacen(from, to, 1))
+        };
+        let right = write(&dir, &format!("{scene}-{id}-right.toml"), &right_text);
+        let wrong = write(&dir, &format!("{scene}-{id}.toml"), &wrong_text);
+        let image = dir.join(format!("{scene}-{id}.png"));
+        student_picture(&wrong, &image);
+        let v = diagnose_json(&right, &image);
+        assert_eq!(v["verdict"], "wrong", "{id}: {v:#}");
+        assert_eq!(v["causes"][0]["id"], id, "{id}: {v:#}");
+        assert_eq!(v["causes"][0]["light"].as_u64(), light, "{id}: {v:#}");
+        assert!(v["right_score"].as_f64().unwrap() < 0.99, "{id}: {v:#}");
+        if id == "emission-added" {
+            let fitted = v["causes"][0]["emission"].as_array().expect("the fitted emission");
+            assert!(fitted.iter().all(|c| (c.as_f64().unwrap() - 0.25).abs() < 2.0 / 255.0), "{v:#}");
+        }
+    }
+    // In Portuguese, the light is named.
+    let text = shipped("three-lights");
+    let right = write(&dir, "pt-right.toml", &text);
+    let image = dir.join("three-lights-light-left-out.png");
+    let size = SIZE.to_string();
+    let args = ["diagnose", "--scene", right.to_str().unwrap(), "--image", image.to_str().unwrap(), "--size", &size];
+    let o = phonglab_in("pt_PT.UTF-8", &args);
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(said.contains("A luz 1 (GL_LIGHT1) esquecida") && said.contains("(light-left-out)"), "{said}");
 }
 
 #[test]

@@ -217,7 +217,7 @@ fn mistaken_picture(path: &Path) -> &'static str {
     let (_, good, _) = right.draw(512).unwrap();
     for m in &MISTAKES {
         let mut d = right.clone();
-        (m.apply)(&mut d);
+        (m.apply)(&mut d, phonglab_core::teach::diagnose::At::default());
         let (_, rgba, _) = d.draw(512).unwrap();
         let differing =
             good.chunks(4).zip(rgba.chunks(4)).filter(|(a, b)| a.iter().zip(*b).any(|(x, y)| x.abs_diff(*y) > 8));

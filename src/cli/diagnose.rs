@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use crate::t;
 use anyhow::Result;
 use clap::Args;
-use phonglab_core::teach::diagnose::{Diagnosis, Drawing, MISTAKES, Tried, Verdict, diagnose};
+use phonglab_core::teach::diagnose::{Diagnosis, Drawing, Tried, Verdict, diagnose, drawings_at_most};
 use phonglab_core::teach::picture_match::difference_image;
 use phonglab_core::{PowFn, probe, probe_report};
 
@@ -52,10 +52,11 @@ fn right_drawing(a: &DiagnoseArgs, outputs: &[&Path]) -> Result<Drawing> {
     let loaded = input.load(outputs)?;
     let job = loaded.job();
     let (vertices, triangles) = (job.mesh.positions.len() as u64, job.mesh.triangle_count() as u64);
-    let what = t!("budget-what-diagnose", size = a.size, count = MISTAKES.len() + 1);
+    let drawing = Drawing::of(&job);
+    let what = t!("budget-what-diagnose", size = a.size, count = drawings_at_most(&drawing));
     let needed = crate::io::budget::diagnose_bytes(u64::from(a.size), vertices, triangles);
     crate::io::budget::check(&what, needed).map_err(anyhow::Error::msg)?;
-    Ok(Drawing::of(&job))
+    Ok(drawing)
 }
 
 /// A share of pixels as a percentage in the user's decimal mark.
@@ -70,7 +71,7 @@ fn score_of(t: &Tried) -> f64 {
 /// The report's verdict lines.
 fn verdict_lines(d: &Diagnosis) -> Vec<String> {
     let right = percent(d.right.score);
-    let named = |t: &Tried| (MISTAKES[t.mistake].words(), MISTAKES[t.mistake].id, percent(score_of(t)));
+    let named = |t: &Tried| (t.words(), t.id(), percent(score_of(t)));
     match d.verdict {
         Verdict::Right => vec![t!("diagnose-verdict-right", score = right)],
         Verdict::Wrong => {
@@ -90,9 +91,9 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
     }
 }
 
-/// The ids of the mistakes this scene cannot show.
-fn invisible(d: &Diagnosis) -> Vec<&'static str> {
-    d.tried.iter().filter(|t| t.matched.is_none()).map(|t| MISTAKES[t.mistake].id).collect()
+/// The ids of the mistakes this scene cannot show (with the light, for one made per light).
+fn invisible(d: &Diagnosis) -> Vec<String> {
+    d.tried.iter().filter(|t| t.matched.is_none()).map(Tried::label).collect()
 }
 
 /// The pixel's bytes as "(r, g, b)".
@@ -157,11 +158,21 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
     Ok(is_right)
 }
 
-/// The JSON: the verdict, the causes with their scores (best first), every mistake tried,
+/// The JSON: the verdict, the causes with their scores (best first; `light` for a mistake
+/// made per light, `emission` the fitted colour for `emission-added`), every mistake tried,
 /// the right picture's score and the pixel that differs most with the probe there.
 fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>) -> serde_json::Value {
     use serde_json::json;
-    let cause = |t: &Tried| json!({ "id": MISTAKES[t.mistake].id, "score": score_of(t) });
+    let cause = |t: &Tried| {
+        let mut c = json!({ "id": t.id(), "score": score_of(t) });
+        if let Some(light) = t.light() {
+            c["light"] = json!(light);
+        }
+        if t.id() == "emission-added" {
+            c["emission"] = json!(t.at.emission);
+        }
+        c
+    };
     let worst = (d.right.worst_levels > 0).then(|| {
         let p = d.right.worst;
         json!({

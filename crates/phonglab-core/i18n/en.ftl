@@ -604,6 +604,21 @@ diagnose-two-sided-off = Two-sided lighting off: the back faces are lit with the
 diagnose-attenuation-left-out = The attenuation left out
 diagnose-spot-left-out = The spotlight's cone left out (cutoff 180)
 
+# diagnose: picture mistakes
+diagnose-shininess-fraction = The shininess given as the 0–1 value of a material table instead of that value times 128 (0.4 for 51.2): a highlight spread over the whole object
+diagnose-light-left-out = Light { $light } (GL_LIGHT{ $light }) left out: glEnable(GL_LIGHT{ $light }) missing
+diagnose-point-as-directional = Light { $light } (GL_LIGHT{ $light }) given w = 0 in GL_POSITION: a directional light instead of a point light
+diagnose-light-ambient-left-out = The ambient colour of light { $light } (GL_LIGHT{ $light }) left at OpenGL's default (0, 0, 0, 1)
+diagnose-specular-left-out = The material's specular colour left at OpenGL's default (0, 0, 0, 1): no highlight
+diagnose-diffuse-specular-swapped = The material's diffuse and specular colours exchanged
+diagnose-emission-added = An emission the scene does not have: about { $emission } added to every pixel (GL_EMISSION)
+diagnose-attenuation-left-out-light = The attenuation of light { $light } (GL_LIGHT{ $light }) left out
+diagnose-spot-direction-untransformed = The spot direction of light { $light } (GL_LIGHT{ $light }) given before the camera transform (under the identity), its position after it
+diagnose-light-after-model = The lights placed in the world given after the model transform (under view × model instead of the view): they turn with the object
+diagnose-headlight-under-view = Light { $light } (GL_LIGHT{ $light }), fixed to the eye, given under the view transform instead of the identity: placed in the world
+diagnose-colour-material-off = GL_COLOR_MATERIAL not enabled: the object is lit with the glMaterial colours, not the current colour
+diagnose-colour-material-diffuse-only = glColorMaterial tracking GL_DIFFUSE only instead of GL_AMBIENT_AND_DIFFUSE: the ambient stays the glMaterial one
+
 ## phonglab check: a student's work checked
 
 check-no-outputs = this notebook was saved without its outputs: nothing it printed can be checked. Run it first (Jupyter: Kernel → Restart & Run All), save it, and check it again

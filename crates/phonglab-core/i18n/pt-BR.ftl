@@ -604,6 +604,21 @@ diagnose-two-sided-off = A iluminação dos dois lados desligada: as faces de tr
 diagnose-attenuation-left-out = A atenuação esquecida
 diagnose-spot-left-out = O cone do spot esquecido (corte em 180)
 
+# diagnose: picture mistakes
+diagnose-shininess-fraction = O brilho dado como o valor de 0 a 1 de uma tabela de materiais em vez desse valor vezes 128 (0,4 em vez de 51,2): um brilho espalhado pelo objeto todo
+diagnose-light-left-out = A luz { $light } (GL_LIGHT{ $light }) esquecida: falta o glEnable(GL_LIGHT{ $light })
+diagnose-point-as-directional = A luz { $light } (GL_LIGHT{ $light }) com w = 0 no GL_POSITION: uma luz direcional em vez de uma luz pontual
+diagnose-light-ambient-left-out = A cor ambiente da luz { $light } (GL_LIGHT{ $light }) deixada no valor padrão do OpenGL (0, 0, 0, 1)
+diagnose-specular-left-out = A cor especular do material deixada no valor padrão do OpenGL (0, 0, 0, 1): sem brilho
+diagnose-diffuse-specular-swapped = As cores difusa e especular do material trocadas
+diagnose-emission-added = Uma emissão que a cena não tem: cerca de { $emission } somado a cada pixel (GL_EMISSION)
+diagnose-attenuation-left-out-light = A atenuação da luz { $light } (GL_LIGHT{ $light }) esquecida
+diagnose-spot-direction-untransformed = A direção do spot da luz { $light } (GL_LIGHT{ $light }) dada antes da transformação da câmera (com a identidade), e a posição dela depois
+diagnose-light-after-model = As luzes colocadas no mundo dadas depois da transformação de modelo (com visão × modelo em vez da visão): elas giram com o objeto
+diagnose-headlight-under-view = A luz { $light } (GL_LIGHT{ $light }), presa ao olho, dada com a transformação de visão em vez da identidade: fica colocada no mundo
+diagnose-colour-material-off = GL_COLOR_MATERIAL não ativado: o objeto é iluminado com as cores do glMaterial, não com a cor corrente
+diagnose-colour-material-diffuse-only = O glColorMaterial acompanhando só GL_DIFFUSE em vez de GL_AMBIENT_AND_DIFFUSE: a cor ambiente continua a do glMaterial
+
 ## phonglab check: o trabalho de um aluno verificado
 
 check-no-outputs = este notebook foi salvo sem as saídas: não há nada impresso para verificar. Execute-o primeiro (Jupyter: Kernel → Restart & Run All), salve e verifique de novo

@@ -604,6 +604,21 @@ diagnose-two-sided-off = A iluminação de dois lados desligada: as faces de tr�
 diagnose-attenuation-left-out = A atenuação esquecida
 diagnose-spot-left-out = O cone do foco esquecido (corte a 180)
 
+# diagnose: picture mistakes
+diagnose-shininess-fraction = O brilho dado como o valor de 0 a 1 de uma tabela de materiais em vez desse valor vezes 128 (0,4 em vez de 51,2): um reflexo espalhado por todo o objeto
+diagnose-light-left-out = A luz { $light } (GL_LIGHT{ $light }) esquecida: falta o glEnable(GL_LIGHT{ $light })
+diagnose-point-as-directional = A luz { $light } (GL_LIGHT{ $light }) com w = 0 no GL_POSITION: uma luz direcional em vez de uma luz pontual
+diagnose-light-ambient-left-out = A cor ambiente da luz { $light } (GL_LIGHT{ $light }) deixada no valor por omissão do OpenGL (0, 0, 0, 1)
+diagnose-specular-left-out = A cor especular do material deixada no valor por omissão do OpenGL (0, 0, 0, 1): sem reflexo
+diagnose-diffuse-specular-swapped = As cores difusa e especular do material trocadas
+diagnose-emission-added = Uma emissão que a cena não tem: cerca de { $emission } somado a cada píxel (GL_EMISSION)
+diagnose-attenuation-left-out-light = A atenuação da luz { $light } (GL_LIGHT{ $light }) esquecida
+diagnose-spot-direction-untransformed = A direção do foco da luz { $light } (GL_LIGHT{ $light }) dada antes da transformação da câmara (com a identidade), e a sua posição depois dela
+diagnose-light-after-model = As luzes colocadas no mundo dadas depois da transformação de modelo (com vista × modelo em vez da vista): rodam com o objeto
+diagnose-headlight-under-view = A luz { $light } (GL_LIGHT{ $light }), fixa ao olho, dada com a transformação de vista em vez da identidade: fica colocada no mundo
+diagnose-colour-material-off = GL_COLOR_MATERIAL não ativado: o objeto é iluminado com as cores do glMaterial, não com a cor corrente
+diagnose-colour-material-diffuse-only = O glColorMaterial a seguir só GL_DIFFUSE em vez de GL_AMBIENT_AND_DIFFUSE: a cor ambiente fica a do glMaterial
+
 ## phonglab check: o trabalho de um aluno verificado
 
 check-no-outputs = este caderno foi guardado sem os resultados: não há nada impresso para verificar. Execute-o primeiro (Jupyter: Kernel → Restart & Run All), guarde-o e verifique-o de novo

@@ -7,7 +7,8 @@ use phonglab_core::mesh::Mesh;
 use phonglab_core::mesh::cylinder::glu_cylinder;
 use phonglab_core::mesh::sphere::glu_sphere;
 use phonglab_core::model::scene::{Light, LightPlacement, NormalMode, Scene};
-use phonglab_core::teach::diagnose::{Drawing, MISTAKES, Verdict, diagnose};
+use phonglab_core::teach::diagnose::{At, Drawing, MISTAKES, RIGHT_AT, Scope, Verdict, diagnose, offered};
+use phonglab_core::teach::picture_match::compare;
 use phonglab_core::{EvalOptions, Rules, ShadingMode};
 
 const SIZE: usize = 96;
@@ -105,7 +106,7 @@ fn shifted_and_noised(rgba: &[u8], bg: [u8; 3]) -> Vec<u8> {
 
 fn wrong_picture(right: &Drawing, mistake: usize) -> Vec<u8> {
     let mut d = right.clone();
-    (MISTAKES[mistake].apply)(&mut d);
+    (MISTAKES[mistake].apply)(&mut d, At::default());
     let (_, rgba, _) = d.draw(SIZE).expect("drawn");
     shifted_and_noised(&rgba, right.background8())
 }
@@ -113,7 +114,7 @@ fn wrong_picture(right: &Drawing, mistake: usize) -> Vec<u8> {
 #[test]
 fn each_mistake_shifted_and_noised_is_named_first() {
     let mut report = Vec::new();
-    for (i, m) in MISTAKES.iter().enumerate() {
+    for (i, m) in MISTAKES.iter().enumerate().filter(|(_, m)| m.scope == Scope::Scene).take(12) {
         let right = scene_for(m.id);
         let image = wrong_picture(&right, i);
         let d = diagnose(&right, &image, SIZE).expect("diagnosed");
@@ -148,6 +149,9 @@ fn a_picture_of_something_else_is_unexplained() {
     let mut other = right.clone();
     other.scene.material.diffuse = DVec4::new(0.1, 0.7, 0.2, 1.0);
     other.scene.lights[0].position = DVec4::new(-2.0, 0.0, 1.0, 1.0);
+    // Aimed at the object: a spot that missed it would draw what no light draws, the
+    // picture of `light-left-out`.
+    other.scene.lights[0].spot_direction = DVec3::new(2.0, 0.0, -1.0).normalize();
     let (_, rgba, _) = other.draw(SIZE).expect("drawn");
     let d = diagnose(&right, &rgba, SIZE).expect("diagnosed");
     let best = d.tried[0].matched.map_or(-1.0, |m| m.score);
@@ -157,4 +161,137 @@ fn a_picture_of_something_else_is_unexplained() {
     // A flat grey square is nothing like it either.
     let grey: Vec<u8> = (0..SIZE * SIZE).flat_map(|_| [128, 128, 128, 255]).collect();
     assert_eq!(diagnose(&right, &grey, SIZE).expect("diagnosed").verdict, Verdict::Unexplained);
+}
+
+/// A shipped scene (`assets/scenes/NAME.toml`) drawn as `phonglab diagnose` draws it.
+fn shipped(name: &str) -> Drawing {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../assets/scenes/");
+    let text = std::fs::read_to_string(format!("{path}{name}.toml")).expect("a shipped scene");
+    let doc = phonglab_core::Document::from_toml(&text).expect("a scene");
+    let mesh = doc.view.mesh();
+    Drawing::of(&doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh))
+}
+
+/// The three lights with a second attenuated light (the red one), and the sphere under a
+/// model transform (turned 90 degrees about y): every per-light mistake applies.
+fn three_lights_turned() -> Drawing {
+    let mut d = shipped("three-lights");
+    d.scene.lights[0].attenuation = [1.0, 0.2, 0.0];
+    let turn = DMat4::from_rotation_y(std::f64::consts::FRAC_PI_2);
+    d.scene.world_from_object = turn;
+    d.clip_from_object *= turn;
+    d
+}
+
+/// Each mistake added after the first twelve, made on a scene where it applies (for each
+/// light in turn where it is made per light), drawn by phonglab, shifted a pixel, with
+/// 8-bit noise: the verdict is wrong and it is named first (or tied first with a mistake
+/// whose picture is the same).
+#[test]
+fn each_state_mistake_for_each_light_shifted_and_noised_is_named_first() {
+    let scenes = [
+        ("three-lights", three_lights_turned()),
+        ("spotlight", shipped("spotlight")),
+        ("of-set-color", shipped("of-set-color")),
+        ("worksheet-mview5", shipped("worksheet-mview5")),
+    ];
+    let mut named = std::collections::BTreeSet::new();
+    let mut report = Vec::new();
+    for (name, right) in &scenes {
+        // emission-added is made with a chosen colour; the diagnosis fits it from the picture.
+        for (mistake, at) in offered(right, [0.2, 0.15, 0.1]).into_iter().filter(|(i, _)| *i >= 12) {
+            let m = &MISTAKES[mistake];
+            let mut d = right.clone();
+            assert!((m.apply)(&mut d, at));
+            let (_, rgba, covered) = d.draw(SIZE).expect("drawn");
+            let image = shifted_and_noised(&rgba, right.background8());
+            let found = diagnose(right, &image, SIZE).expect("diagnosed");
+            let light = (m.scope == Scope::EachLight).then_some(at.light);
+            let mine = found.tried.iter().find(|t| t.mistake == mistake && t.light() == light);
+            let (_, plain, _) = right.draw(SIZE).expect("drawn");
+            if compare(&rgba, &covered, &plain, right.background8(), SIZE).score >= RIGHT_AT {
+                // Its picture is the right one here (the headlight's ambient on a material
+                // with none; an emission under rules without one): it is right.
+                assert_eq!(found.verdict, Verdict::Right, "{name} {}", m.id);
+                report.push(format!("{name} {} {light:?}: not visible", m.id));
+                continue;
+            }
+            let scores: Vec<String> = found
+                .causes
+                .iter()
+                .map(|t| format!("{}={:.4}", t.label(), t.matched.map_or(-1.0, |x| x.score)))
+                .collect();
+            let best: Vec<String> =
+                found.tried.iter().take(2).map(|t| format!("{}={:?}", t.label(), t.matched.map(|x| x.score))).collect();
+            let line = format!(
+                "{name} {} {light:?}: right {:.4}; {} (best {best:?}, fitted {:?})",
+                m.id,
+                found.right.score,
+                scores.join(" "),
+                mine.map(|t| t.at.emission)
+            );
+            report.push(line.clone());
+            assert_eq!(found.verdict, Verdict::Wrong, "{line}");
+            let best = found.causes[0].matched.map(|x| x.score);
+            let it = found.causes.iter().find(|t| t.mistake == mistake && t.light() == light);
+            assert!(it.is_some_and(|t| t.matched.map(|x| x.score) == best), "{line}");
+            named.insert(m.id);
+        }
+    }
+    println!("{}", report.join("\n"));
+    for m in &MISTAKES[12..] {
+        assert!(named.contains(m.id), "{} was never made", m.id);
+    }
+}
+
+/// The emission fitted from a picture is the one it was drawn with (to a level), and the
+/// picture of the mistake made with it is named: the fit is not told the answer.
+#[test]
+fn an_added_emission_is_fitted_from_the_picture() {
+    let right = shipped("spotlight");
+    let mut d = right.clone();
+    let added = MISTAKES.iter().position(|m| m.id == "emission-added").expect("in the table");
+    assert!((MISTAKES[added].apply)(&mut d, At { light: 0, emission: [0.3, 0.3, 0.3] }));
+    let (_, rgba, _) = d.draw(SIZE).expect("drawn");
+    let found = diagnose(&right, &shifted_and_noised(&rgba, right.background8()), SIZE).expect("diagnosed");
+    let tried: Vec<String> = found
+        .tried
+        .iter()
+        .map(|t| format!("{}={:?} {:?}", t.label(), t.matched.map(|m| m.score), t.at.emission))
+        .collect();
+    let first = found.causes.first().unwrap_or_else(|| panic!("right {:?}: {tried:#?}", found.right));
+    assert_eq!(first.id(), "emission-added");
+    for c in first.at.emission {
+        assert!((c - 0.3).abs() <= 1.5 / 255.0, "{:?}", first.at.emission);
+    }
+    // The right picture fits no emission: the mistake is not offered.
+    let (_, plain, _) = right.draw(SIZE).expect("drawn");
+    let found = diagnose(&right, &shifted_and_noised(&plain, right.background8()), SIZE).expect("diagnosed");
+    assert!(found.tried.iter().all(|t| t.id() != "emission-added"));
+}
+
+/// A mistake that cannot change a scene is not offered: no spot, no colour material, one
+/// attenuated light (the all-lights row draws the same), no model transform.
+#[test]
+fn a_mistake_that_changes_nothing_is_not_offered() {
+    let ids = |d: &Drawing| offered(d, [0.0; 3]).into_iter().map(|(i, _)| MISTAKES[i].id).collect::<Vec<_>>();
+    let three = ids(&shipped("three-lights"));
+    for absent in [
+        "spot-direction-untransformed",
+        "colour-material-off",
+        "colour-material-diffuse-only",
+        "light-after-model",
+        "emission-added",
+    ] {
+        assert!(!three.contains(&absent), "{absent}: {three:?}");
+    }
+    // attenuation-left-out once (all lights), not again for the one attenuated light.
+    assert_eq!(three.iter().filter(|&&id| id == "attenuation-left-out").count(), 1);
+    // Four lights left out in turn; three positional lights made directional.
+    assert_eq!(three.iter().filter(|&&id| id == "light-left-out").count(), 4);
+    assert_eq!(three.iter().filter(|&&id| id == "point-as-directional").count(), 3);
+    assert_eq!(three.iter().filter(|&&id| id == "headlight-under-view").count(), 1);
+    let of = ids(&shipped("of-set-color"));
+    assert!(of.contains(&"colour-material-off") && of.contains(&"colour-material-diffuse-only"), "{of:?}");
+    assert!(ids(&shipped("spotlight")).contains(&"spot-direction-untransformed"));
 }

@@ -3,7 +3,7 @@
 //! [`phonglab_core::teach::diagnose`] in words (the verdict, the closest cause, its score).
 
 use egui::{RichText, Ui};
-use phonglab_core::teach::diagnose::{Diagnosis, MISTAKES, Tried, Verdict};
+use phonglab_core::teach::diagnose::{Diagnosis, Tried, Verdict};
 use phonglab_core::teach::picture_match::difference_image;
 
 use crate::t;
@@ -49,7 +49,7 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
     let right = percent(d.right.score);
     let named = |t: &Tried| {
         let score = t.matched.map_or(0.0, |m| m.score);
-        (MISTAKES[t.mistake].words(), MISTAKES[t.mistake].id, percent(score))
+        (t.words(), t.id(), percent(score))
     };
     match d.verdict {
         Verdict::Right => vec![t!("diagnose-verdict-right", score = right)],

@@ -1,0 +1,390 @@
+//! The table of picture mistakes: each a change of the state a student's program sets,
+//! made to the drawing ([`Drawing`]) of the scene, for the whole scene or for each light
+//! in turn ([`Scope`]). A change that cannot alter this scene (no spot, no colour material,
+//! a light that is already directional) is not offered: its function says so.
+
+use glam::{DMat3, DVec4};
+
+use crate::model::rules::{RuleSet, SpecularModel};
+use crate::model::scene::{ColorMaterialMode, Light, LightPlacement, Material, NormalMode};
+use crate::model::view::ShadingMode;
+
+use super::drawing::Drawing;
+
+/// Where a mistake is made: once for the scene, or for each light in turn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scope {
+    /// Once, for the whole scene.
+    Scene,
+    /// For each light alone, named with the light.
+    EachLight,
+}
+
+/// What a mistake is made with: the light (for [`Scope::EachLight`]) and the emission fitted
+/// from the student's picture (for `emission-added`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct At {
+    /// The light's index (`GL_LIGHTn`); 0 for a mistake of the whole scene.
+    pub light: usize,
+    /// The emission the picture shows beyond the right one (linear RGB, 0 to 1).
+    pub emission: [f64; 3],
+}
+
+/// A mistake a picture can show: its id (kebab-case, the same as `phonglab check`'s where
+/// the mistake is the same), its message, where it is made, and the change it makes.
+pub struct PictureMistake {
+    /// The id in JSON and the docs.
+    pub id: &'static str,
+    /// The message id of its words (given `$light`, the light's number, and `$emission`).
+    pub message: &'static str,
+    /// Once for the scene, or for each light in turn.
+    pub scope: Scope,
+    /// Makes the mistake in the drawing; false when it cannot change this drawing (it is
+    /// then not offered).
+    pub apply: fn(&mut Drawing, At) -> bool,
+}
+
+impl PictureMistake {
+    /// Its words in the reader's language, for light or emission `at`.
+    pub fn words_at(&self, at: At) -> String {
+        use crate::locale::Arg;
+        let e = at.emission;
+        let emission = crate::locale::decimal(&format!("({:.2}, {:.2}, {:.2})", e[0], e[1], e[2]));
+        crate::locale::tr_args(
+            self.message,
+            &[("light", Arg::Text(at.light.to_string())), ("emission", Arg::Text(emission))],
+        )
+    }
+
+    /// Its words in the reader's language (a mistake of the whole scene).
+    pub fn words(&self) -> String {
+        self.words_at(At::default())
+    }
+}
+
+/// Normals transformed by M: with each normal `n` replaced by `M^T M n`, the inverse
+/// transpose gives `M n` (up to length), as the misconception's picture does.
+fn normals_by_modelview(d: &mut Drawing, _: At) -> bool {
+    let m = DMat3::from_mat4(d.scene.eye_from_object());
+    for n in &mut d.mesh.normals {
+        let bent = m.transpose() * m * n.as_dvec3();
+        if bent.length() > 0.0 {
+            *n = bent.normalize().as_vec3();
+        }
+    }
+    true
+}
+
+/// `GL_NORMALIZE` (or `GL_RESCALE_NORMAL`) off.
+fn normalize_off(d: &mut Drawing, _: At) -> bool {
+    d.scene.normal_mode = NormalMode::AsIs;
+    true
+}
+
+/// `R . V` where `n . H` belongs.
+fn reflection_for_halfway(d: &mut Drawing, _: At) -> bool {
+    d.scene.rules.specular = SpecularModel::Phong;
+    true
+}
+
+/// Lit per vertex where the scene lights per fragment.
+fn gouraud_for_phong(d: &mut Drawing, _: At) -> bool {
+    if d.mode == ShadingMode::Phong {
+        d.mode = ShadingMode::Gouraud;
+    }
+    true
+}
+
+/// No `f_i` gate: the Phong demo's rules (as the misconception draws it), Blinn-Phong kept.
+fn specular_without_gate(d: &mut Drawing, _: At) -> bool {
+    d.scene.rules.set = RuleSet::PhongDemo;
+    true
+}
+
+/// The attenuation's distance in object space: `k1 / s`, `k2 / s^2` for the modelview's
+/// scale `s` (the cube root of its determinant; exact for a uniform scale).
+fn attenuation_object_distance(d: &mut Drawing, _: At) -> bool {
+    let s = DMat3::from_mat4(d.scene.eye_from_object()).determinant().abs().cbrt();
+    if s > 0.0 && s.is_finite() {
+        for l in &mut d.scene.lights {
+            l.attenuation = [l.attenuation[0], l.attenuation[1] / s, l.attenuation[2] / (s * s)];
+        }
+    }
+    true
+}
+
+/// The light's position given before `gluLookAt`: under the identity, in eye coordinates.
+fn light_before_view(d: &mut Drawing, _: At) -> bool {
+    for l in &mut d.scene.lights {
+        l.placement = LightPlacement::Eye;
+    }
+    true
+}
+
+/// `GL_LIGHT_MODEL_LOCAL_VIEWER` the other way.
+fn viewer_swapped(d: &mut Drawing, _: At) -> bool {
+    d.scene.light_model.local_viewer = !d.scene.light_model.local_viewer;
+    true
+}
+
+/// Every normal pointing inwards.
+fn flipped_normals(d: &mut Drawing, _: At) -> bool {
+    for n in &mut d.mesh.normals {
+        *n = -*n;
+    }
+    true
+}
+
+/// `GL_LIGHT_MODEL_TWO_SIDE` off.
+fn two_sided_off(d: &mut Drawing, _: At) -> bool {
+    d.scene.light_model.two_sided = false;
+    true
+}
+
+/// Attenuation left out: (1, 0, 0), on every light.
+fn attenuation_left_out(d: &mut Drawing, _: At) -> bool {
+    for l in &mut d.scene.lights {
+        l.attenuation = [1.0, 0.0, 0.0];
+    }
+    true
+}
+
+/// The spot left out: cutoff 180.
+fn spot_left_out(d: &mut Drawing, _: At) -> bool {
+    for l in &mut d.scene.lights {
+        l.spot_cutoff = 180.0;
+    }
+    true
+}
+
+/// Each side's `glMaterial` values changed by `change`; false when it changed none.
+fn each_material(d: &mut Drawing, change: impl Fn(&mut Material)) -> bool {
+    let mut changed = false;
+    for m in std::iter::once(&mut d.scene.material).chain(d.scene.back_material.as_mut()) {
+        let before = m.clone();
+        change(m);
+        changed |= *m != before;
+    }
+    changed
+}
+
+/// Light `at.light` changed by `change` where `applies` holds for it.
+fn the_light(d: &mut Drawing, at: At, applies: impl Fn(&Light) -> bool, change: impl Fn(&mut Light)) -> bool {
+    match d.scene.lights.get_mut(at.light) {
+        Some(l) if applies(l) => {
+            change(l);
+            true
+        }
+        _ => false,
+    }
+}
+
+/// Shininess given as the 0-1 value of a material table (0.4) instead of `0.4 * 128`.
+fn shininess_fraction(d: &mut Drawing, _: At) -> bool {
+    each_material(d, |m| m.shininess /= 128.0)
+}
+
+/// One light not enabled.
+fn light_left_out(d: &mut Drawing, at: At) -> bool {
+    if at.light >= d.scene.lights.len() {
+        return false;
+    }
+    d.scene.lights.remove(at.light);
+    true
+}
+
+/// A point light given w = 0: a directional light from the direction of its position.
+fn point_as_directional(d: &mut Drawing, at: At) -> bool {
+    the_light(d, at, |l| !l.is_directional(), |l| l.position.w = 0.0)
+}
+
+/// A light's ambient colour left at OpenGL's default (0, 0, 0, 1).
+fn light_ambient_left_out(d: &mut Drawing, at: At) -> bool {
+    let black = DVec4::new(0.0, 0.0, 0.0, 1.0);
+    the_light(d, at, |l| l.ambient.truncate() != black.truncate(), |l| l.ambient = black)
+}
+
+/// The material's specular colour left at its default (0, 0, 0, 1): no highlight.
+fn specular_left_out(d: &mut Drawing, _: At) -> bool {
+    each_material(d, |m| m.specular = DVec4::new(0.0, 0.0, 0.0, 1.0))
+}
+
+/// The material's diffuse and specular colours exchanged.
+fn diffuse_specular_swapped(d: &mut Drawing, _: At) -> bool {
+    each_material(d, |m| std::mem::swap(&mut m.diffuse, &mut m.specular))
+}
+
+/// An emission the scene does not have: the colour fitted from the student's picture.
+fn emission_added(d: &mut Drawing, at: At) -> bool {
+    if at.emission.iter().all(|&c| c <= 0.0) {
+        return false;
+    }
+    let [r, g, b] = at.emission;
+    each_material(d, |m| m.emission += DVec4::new(r, g, b, 0.0))
+}
+
+/// How many lights are attenuated.
+fn attenuated(d: &Drawing) -> usize {
+    d.scene.lights.iter().filter(|l| l.is_attenuated()).count()
+}
+
+/// One light's attenuation left out, where several lights are attenuated (with one, the
+/// all-lights row draws the same picture).
+fn attenuation_left_out_alone(d: &mut Drawing, at: At) -> bool {
+    let several = attenuated(d) >= 2;
+    the_light(d, at, |l| several && l.is_attenuated(), |l| l.attenuation = [1.0, 0.0, 0.0])
+}
+
+/// A spotlight's direction given under the identity (before the camera transform) while
+/// its position is given where the scene gives it: the direction is taken as already in
+/// eye coordinates.
+fn spot_direction_untransformed(d: &mut Drawing, at: At) -> bool {
+    let Some(l) = d.scene.lights.get(at.light) else { return false };
+    let m = DMat3::from_mat4(d.scene.eye_from_light(l));
+    if !l.is_spot() || l.placement == LightPlacement::Eye || m.determinant().abs() < 1e-12 {
+        return false;
+    }
+    // The renderer takes the direction through the light's modelview; through its inverse
+    // first, the direction arrives in eye coordinates unchanged. It changes the picture
+    // only where the modelview turns the direction.
+    let (given, direction) = (l.spot_direction, m.inverse() * l.spot_direction);
+    let turned = (m * given).normalize_or_zero().distance(given.normalize_or_zero()) > 1e-9;
+    turned && the_light(d, at, |_| true, |l| l.spot_direction = direction)
+}
+
+/// The world-placed lights given under view * model (after the model transform) instead
+/// of the view, where the scene has a model transform.
+fn light_after_model(d: &mut Drawing, _: At) -> bool {
+    if d.scene.world_from_object == glam::DMat4::IDENTITY {
+        return false;
+    }
+    let mut changed = false;
+    for l in d.scene.lights.iter_mut().filter(|l| l.placement == LightPlacement::World) {
+        l.placement = LightPlacement::Object;
+        changed = true;
+    }
+    changed
+}
+
+/// An eye-fixed light (given under the identity) given under the view instead: placed in
+/// the world.
+fn headlight_under_view(d: &mut Drawing, at: At) -> bool {
+    let moves = d.scene.eye_from_world != glam::DMat4::IDENTITY;
+    the_light(d, at, |l| moves && l.placement == LightPlacement::Eye, |l| l.placement = LightPlacement::World)
+}
+
+/// `GL_COLOR_MATERIAL` not enabled: the `glMaterial` colours light the object.
+fn colour_material_off(d: &mut Drawing, _: At) -> bool {
+    d.scene.color_material.take().is_some()
+}
+
+/// `glColorMaterial` tracking `GL_DIFFUSE` only instead of `GL_AMBIENT_AND_DIFFUSE`.
+fn colour_material_diffuse_only(d: &mut Drawing, _: At) -> bool {
+    match &mut d.scene.color_material {
+        Some(c) if c.mode == ColorMaterialMode::AmbientAndDiffuse => {
+            c.mode = ColorMaterialMode::Diffuse;
+            true
+        }
+        _ => false,
+    }
+}
+
+/// A row of the table.
+const fn row(id: &'static str, message: &'static str, apply: fn(&mut Drawing, At) -> bool) -> PictureMistake {
+    PictureMistake { id, message, scope: Scope::Scene, apply }
+}
+
+/// A row of the table made for each light in turn.
+const fn per_light(id: &'static str, message: &'static str, apply: fn(&mut Drawing, At) -> bool) -> PictureMistake {
+    PictureMistake { id, message, scope: Scope::EachLight, apply }
+}
+
+/// The picture mistakes, in the order the docs list them.
+pub const MISTAKES: [PictureMistake; 25] = [
+    row("normal-by-modelview", "wrong-cause-normals-by-m", normals_by_modelview),
+    row("normal-not-normalised", "diagnose-normalize-off", normalize_off),
+    row("reflection-for-halfway", "wrong-cause-reflection-for-halfway", reflection_for_halfway),
+    row("gouraud-for-phong", "wrong-cause-gouraud-misses-highlight", gouraud_for_phong),
+    row("specular-without-gate", "wrong-cause-specular-facing-away", specular_without_gate),
+    row("attenuation-object-distance", "wrong-cause-attenuation-object-space", attenuation_object_distance),
+    row("light-before-view", "wrong-cause-light-before-view", light_before_view),
+    row("viewer-swapped", "diagnose-viewer-swapped", viewer_swapped),
+    row("flipped-normals", "diagnose-flipped-normals", flipped_normals),
+    row("two-sided-off", "diagnose-two-sided-off", two_sided_off),
+    row("attenuation-left-out", "diagnose-attenuation-left-out", attenuation_left_out),
+    row("spot-left-out", "diagnose-spot-left-out", spot_left_out),
+    row("shininess-fraction", "diagnose-shininess-fraction", shininess_fraction),
+    per_light("light-left-out", "diagnose-light-left-out", light_left_out),
+    per_light("point-as-directional", "diagnose-point-as-directional", point_as_directional),
+    per_light("light-ambient-left-out", "diagnose-light-ambient-left-out", light_ambient_left_out),
+    row("specular-left-out", "diagnose-specular-left-out", specular_left_out),
+    row("diffuse-specular-swapped", "diagnose-diffuse-specular-swapped", diffuse_specular_swapped),
+    row("emission-added", "diagnose-emission-added", emission_added),
+    per_light("attenuation-left-out", "diagnose-attenuation-left-out-light", attenuation_left_out_alone),
+    per_light("spot-direction-untransformed", "diagnose-spot-direction-untransformed", spot_direction_untransformed),
+    row("light-after-model", "diagnose-light-after-model", light_after_model),
+    per_light("headlight-under-view", "diagnose-headlight-under-view", headlight_under_view),
+    row("colour-material-off", "diagnose-colour-material-off", colour_material_off),
+    row("colour-material-diffuse-only", "diagnose-colour-material-diffuse-only", colour_material_diffuse_only),
+];
+
+/// Each mistake this drawing offers, with where it is made: the table's rows, the
+/// per-light ones once for each light, those that cannot change the drawing left out.
+/// `emission` is the emission fitted from the student's picture.
+pub fn offered(right: &Drawing, emission: [f64; 3]) -> Vec<(usize, At)> {
+    let mut out = Vec::new();
+    for (i, m) in MISTAKES.iter().enumerate() {
+        let lights = match m.scope {
+            Scope::Scene => 1,
+            Scope::EachLight => right.scene.lights.len(),
+        };
+        for light in 0..lights {
+            let at = At { light, emission };
+            if (m.apply)(&mut right.clone(), at) {
+                out.push((i, at));
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::{DMat4, DVec3};
+
+    /// A world-placed spotlight pointing down -z under the view `view`.
+    fn spot_under(view: DMat4) -> Drawing {
+        let mut scene = crate::model::scene::Scene { eye_from_world: view, ..Default::default() };
+        let mut l = Light::gl_default(0);
+        (l.spot_cutoff, l.spot_direction, l.placement) = (30.0, DVec3::NEG_Z, LightPlacement::World);
+        scene.lights = vec![l];
+        Drawing {
+            scene,
+            mesh: crate::mesh::sphere::glu_sphere(1.0, 4, 4),
+            clip_from_object: DMat4::IDENTITY,
+            mode: ShadingMode::Phong,
+            background: [0.0; 3],
+            options: Default::default(),
+        }
+    }
+
+    #[test]
+    fn the_untransformed_spot_direction_is_offered_where_the_view_turns_it() {
+        // Turned half a turn about x, the view sends -z to +z: given under the identity
+        // it stays -z in the eye. (A half turn is its own inverse: comparing the turned
+        // direction with the inverse-turned one would find no change.)
+        let mut d = spot_under(DMat4::from_rotation_x(std::f64::consts::PI));
+        assert!(spot_direction_untransformed(&mut d, At::default()));
+        let l = &d.scene.lights[0];
+        let in_eye = DMat3::from_mat4(d.scene.eye_from_light(l)) * l.spot_direction;
+        assert!(in_eye.distance(DVec3::NEG_Z) < 1e-12, "{in_eye}");
+        // A view that moves but does not turn changes nothing: not offered.
+        let mut d = spot_under(DMat4::from_translation(DVec3::new(0.0, 0.0, -3.0)));
+        assert!(!spot_direction_untransformed(&mut d, At::default()));
+        // Nor is it for a light that is not a spot.
+        let mut d = spot_under(DMat4::from_rotation_x(1.0));
+        d.scene.lights[0].spot_cutoff = 180.0;
+        assert!(!spot_direction_untransformed(&mut d, At::default()));
+    }
+}

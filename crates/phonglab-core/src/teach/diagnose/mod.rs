@@ -1,0 +1,160 @@
+//! `phonglab diagnose`: which mistake made a student's picture of a scene. The scene is
+//! drawn right and with each mistake of [`MISTAKES`] (a table: each mistake a function from
+//! the drawing to the changed drawing, made once or for each light in turn, drawn by the
+//! same renderer), and each picture is compared with the student's image over the object's
+//! pixels ([`super::picture_match`]). `emission-added`'s colour is fitted from the image
+//! first (the median lift of the object's unclamped pixels).
+//!
+//! The verdict: "right" when the right picture explains at least [`RIGHT_AT`] of the
+//! object's pixels; else "wrong" with the mistakes whose pictures explain at least
+//! [`EXPLAINED_AT`] (best first), and [`MARGIN`] more than the right picture; else
+//! "unexplained". A mistake whose change cannot alter this scene (a light that is already
+//! directional, no colour material) is not offered; one whose picture the right picture
+//! explains all the same (no scale for `GL_NORMALIZE`, no spot to leave out) is left out of
+//! the comparison and listed as not visible.
+
+mod drawing;
+mod fit;
+mod mistakes;
+
+pub use drawing::Drawing;
+pub use mistakes::{At, MISTAKES, PictureMistake, Scope, offered};
+
+use crate::model::error::SceneError;
+use crate::raster::render::Renderer;
+use crate::teach::picture_match::{Match, compare};
+
+/// The share of the object's pixels the right picture must explain for "right". Measured
+/// (docs/guide.md): the right picture shifted a pixel with 8-bit noise of ±2 scores 1;
+/// Mesa's pictures of shipped scenes score 0.9986 to 1; a mistake's picture scores at most
+/// 0.975 against the right one where the scene shows it at all.
+pub const RIGHT_AT: f64 = 0.99;
+
+/// The share a mistake's picture must explain to be named: each mistake's own picture,
+/// shifted and noised, scores 1; the next best mistake at most 0.975 and an unrelated
+/// picture at most 0.81.
+pub const EXPLAINED_AT: f64 = 0.98;
+
+/// How much more of the object a mistake's picture must explain than the right picture
+/// does to be named: a mistake that changes only a few pixels cannot be told from noise.
+pub const MARGIN: f64 = 0.01;
+
+/// The verdict on an image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// The right picture explains it.
+    Right,
+    /// One or more mistakes explain it.
+    Wrong,
+    /// Neither the right picture nor any mistake does.
+    Unexplained,
+}
+
+impl Tried {
+    /// Its id in JSON and the docs.
+    pub fn id(&self) -> &'static str {
+        MISTAKES[self.mistake].id
+    }
+
+    /// The light it was made for, for a mistake made for each light in turn.
+    pub fn light(&self) -> Option<usize> {
+        (MISTAKES[self.mistake].scope == Scope::EachLight).then_some(self.at.light)
+    }
+
+    /// Its id with the light it was made for ("light-left-out, GL_LIGHT1"), for text.
+    pub fn label(&self) -> String {
+        match self.light() {
+            Some(n) => format!("{}, GL_LIGHT{n}", self.id()),
+            None => self.id().to_owned(),
+        }
+    }
+
+    /// Its words in the reader's language, naming the light.
+    pub fn words(&self) -> String {
+        MISTAKES[self.mistake].words_at(self.at)
+    }
+}
+
+impl Verdict {
+    /// Its name in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Verdict::Right => "right",
+            Verdict::Wrong => "wrong",
+            Verdict::Unexplained => "unexplained",
+        }
+    }
+}
+
+/// One mistake's picture against the image.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tried {
+    /// Its place in [`MISTAKES`].
+    pub mistake: usize,
+    /// Where it was made: the light, for a mistake made for each light in turn; the
+    /// emission fitted from the image.
+    pub at: At,
+    /// How its picture matches the image; `None` when this scene cannot show it (its
+    /// picture is the right one).
+    pub matched: Option<Match>,
+}
+
+/// What `diagnose` found.
+pub struct Diagnosis {
+    /// The verdict.
+    pub verdict: Verdict,
+    /// The right picture against the image.
+    pub right: Match,
+    /// The mistakes that explain the image, best first (empty unless wrong).
+    pub causes: Vec<Tried>,
+    /// Every mistake tried, best first; those the scene cannot show last.
+    pub tried: Vec<Tried>,
+    /// The right picture (RGBA8).
+    pub picture: Vec<u8>,
+    /// The renderer that drew it, kept for probing.
+    pub renderer: Renderer,
+}
+
+/// The most pictures [`diagnose`] draws for `right`: the right one and each mistake it
+/// offers (`emission-added` counted).
+pub fn drawings_at_most(right: &Drawing) -> usize {
+    offered(right, [1.0; 3]).len() + 1
+}
+
+/// Compares `image` (RGBA8, `size` pixels square) with `right` drawn right and with each
+/// mistake it offers, one picture at a time (the renderer spreads each over the thread
+/// pool; drawing several at once would hold several renderers' memory).
+pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis, SceneError> {
+    let (renderer, picture, covered) = right.draw(size)?;
+    let bg = right.background8();
+    let exact = compare(&picture, &covered, image, bg, size);
+    let emission = fit::emission(&picture, &covered, image, size);
+    let mut tried = Vec::new();
+    for (mistake, at) in offered(right, emission) {
+        let mut d = right.clone();
+        (MISTAKES[mistake].apply)(&mut d, at);
+        let (_, wrong, wrong_covered) = d.draw(size)?;
+        // A mistake whose picture the right one explains cannot be seen in this scene.
+        let visible = compare(&wrong, &wrong_covered, &picture, bg, size).score < RIGHT_AT;
+        let matched = visible.then(|| compare(&wrong, &wrong_covered, image, bg, size));
+        tried.push(Tried { mistake, at, matched });
+    }
+    Ok(verdict_of(exact, tried, picture, renderer))
+}
+
+/// The verdict from the right picture's match and each mistake's.
+fn verdict_of(exact: Match, mut tried: Vec<Tried>, picture: Vec<u8>, renderer: Renderer) -> Diagnosis {
+    let key = |t: &Tried| t.matched.map_or(-1.0, |m| m.score);
+    tried.sort_by(|a, b| key(b).total_cmp(&key(a)));
+    let causes: Vec<Tried> =
+        tried.iter().filter(|t| key(t) >= EXPLAINED_AT && key(t) >= exact.score + MARGIN).copied().collect();
+    let verdict = if exact.score >= RIGHT_AT {
+        Verdict::Right
+    } else if causes.is_empty() {
+        Verdict::Unexplained
+    } else {
+        Verdict::Wrong
+    };
+    let causes = if verdict == Verdict::Wrong { causes } else { Vec::new() };
+    Diagnosis { verdict, right: exact, causes, tried, picture, renderer }
+}
