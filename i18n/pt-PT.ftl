@@ -1017,7 +1017,7 @@ student-clear-hover = Esconder os valores do aluno e a correção
 student-value = o seu = { $student }: { $verdict }
 student-first-wrong-marker = » primeiro passo errado
 student-checked = { $file } corrigido com esta cena: { $verdict }
-student-checked-wrong = nem tudo está certo; vê o cálculo
+student-checked-wrong = nem tudo está certo; veja o cálculo
 student-not-checked = Não corrigido: { $why }. A cena e o cálculo não mudaram.
 student-not-work = { $path } não é um caderno (.ipynb) nem texto impresso (.txt)
 student-ask-title = Um caderno com saídas
@@ -1031,3 +1031,6 @@ student-picture-theirs = B: a imagem do aluno
 # fix57b
 read-link-refused = { $path } é uma ligação simbólica: não foi lido (o trabalho de um aluno só é lido de um ficheiro, nunca através de uma ligação)
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
+
+# fixr3
+student-cause-beside = causa provável: { $words } [{ $id }] (a prova está acima dos passos)

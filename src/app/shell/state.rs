@@ -101,6 +101,9 @@ pub struct AppState {
     /// A dropped notebook with outputs (its name and bytes), while the window asks whether
     /// to open it or check it.
     pub student_ask: Option<(String, Vec<u8>)>,
+    /// The status a student's check made and what it said, while it is the status shown:
+    /// said again in the language shown when that changes ([`super::student::restate`]).
+    pub student_status: Option<(super::student::Status, Message)>,
     /// Undo and redo of the scene's changes.
     pub history: crate::app::editing::history::History,
     /// This frame's time (seconds, egui's clock): a drag's changes within a second are one
