@@ -403,7 +403,7 @@ fn the_causes_read_whole_in_the_column_and_beside_the_first_wrong_step_and_the_r
 }
 
 #[test]
-fn at_1920_in_portuguese_the_values_wrap_clear_of_the_scroll_bar() {
+fn in_portuguese_the_values_wrap_clear_of_the_scroll_bar_at_every_column_width() {
     let dir = TempDir::new("wide");
     let path = dir.0.join("vlv.txt");
     std::fs::write(&path, printed(Some(Mistake::VlvReversed))).unwrap();
@@ -412,8 +412,9 @@ fn at_1920_in_portuguese_the_values_wrap_clear_of_the_scroll_bar() {
     h.run_steps(2);
     check_through_the_menu_as(&mut h, &path, &["Ficheiro"], "Corrigir o trabalho de um aluno…", "Corrigir");
     let student = h.state().student.clone();
-    // Around 1920 wide (the column's width, so where each value wraps, moves with it).
-    for w in (1880..=1920).step_by(4).map(|w| w as f32) {
+    // The column is 27 % of the window up to 460 points (from 1704 wide on, as at 1920):
+    // where each value wraps moves with its width, so some value ends near its right edge.
+    for w in (1500..=1708).step_by(8).map(|w| w as f32) {
         let mut h = harness(w, 1080.0);
         h.state_mut().ui.layout.language = Some("pt-PT".into());
         h.state_mut().student = student.clone();
