@@ -9,7 +9,7 @@ use std::path::Path;
 
 use phonglab_core::study::check::printed::{notebook_outputs, printed_text};
 
-use super::state::{AppState, Message};
+use super::state::{AppState, Message, StudentStatus as Status};
 use crate::app::panels::student_column::StudentCheck;
 use crate::io::student_code::{MAX_CODE_BYTES, import_text, student_code};
 use crate::t;
@@ -73,16 +73,6 @@ fn checked(state: &AppState, bytes: &[u8], path: &Path) -> Result<StudentCheck, 
     };
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
     Ok(StudentCheck::new(phonglab_core::escape::printable(&name), &state.doc.scene, (own, printed)))
-}
-
-/// Which check made the status shown: the work's (the calculation panel) or the picture's
-/// (Compare).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Status {
-    /// A notebook or printed text checked.
-    Work,
-    /// A picture diagnosed.
-    Picture,
 }
 
 /// The status `which` check says now, in the language shown; `None` once it is cleared.
