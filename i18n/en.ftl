@@ -1039,3 +1039,6 @@ student-picture-theirs = B: the student's picture
 # fix57b
 read-link-refused = { $path } is a link: not read (a student’s work is read only from a file itself, never through a link)
 check-report-printed-twice = Steps printed more than once with different values (each printing was checked)
+
+# fixr3
+student-cause-beside = likely cause: { $words } [{ $id }] (the evidence is above the steps)

@@ -1039,3 +1039,6 @@ student-picture-theirs = B: a imagem do aluno
 # fix57b
 read-link-refused = { $path } é um link simbólico: não foi lido (o trabalho de um aluno só é lido de um arquivo, nunca por meio de um link)
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
+
+# fixr3
+student-cause-beside = causa provável: { $words } [{ $id }] (a evidência está acima dos passos)

@@ -1039,3 +1039,6 @@ student-picture-theirs = B: a imagem do aluno
 # fix57b
 read-link-refused = { $path } é uma ligação simbólica: não foi lido (o trabalho de um aluno só é lido de um ficheiro, nunca através de uma ligação)
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
+
+# fixr3
+student-cause-beside = causa provável: { $words } [{ $id }] (a prova está acima dos passos)

@@ -84,7 +84,8 @@ fn printed_values_checked_show_beside_each_step_with_the_first_wrong_one_framed_
         assert!(check.causes.iter().any(|c| c.info.id == "vlv-not-normalised"), "{:?}", check.causes);
         assert!(h.query_by_label("Student's work: vlv.txt").is_some());
         assert!(h.query_by_label_contains("first wrong step: vlv (yours").is_some());
-        assert!(h.query_by_label_contains("likely cause: vlv not normalised").is_some());
+        // Above the steps with its evidence, and beside the first wrong step.
+        assert_eq!(h.query_all_by_label_contains("likely cause: vlv not normalised").count(), 2);
         // The vertex's steps before vlv are right, each said so under its value.
         assert!(h.query_all_by_label_contains(": right").count() >= 2);
 
@@ -237,8 +238,8 @@ fn a_students_picture_opens_in_compare_as_b_with_the_difference_and_the_diagnosi
     let mut h = harness(1024.0, 600.0);
     check_through_the_menu(&mut h, &path);
     let p = h.state().compare.student.as_ref().unwrap_or_else(|| panic!("{:?}", h.state().message));
-    assert_eq!(p.verdict, "wrong", "{:?}", p.lines);
-    assert!(p.lines.iter().any(|l| l.contains(&format!("({id})"))), "{id}: {:?}", p.lines);
+    assert_eq!(p.verdict, "wrong", "{:?}", p.lines());
+    assert!(p.lines().iter().any(|l| l.contains(&format!("({id})"))), "{id}: {:?}", p.lines());
     assert!(h.state().compare.open);
     assert!(h.query_by_label("Student's picture: aluno.png").is_some());
     assert!(h.query_by_label_contains(&format!("({id})")).is_some());
@@ -315,5 +316,196 @@ fn the_picture_render_draws_of_the_scene_shown_is_right() {
     h.run_steps(2);
     check_through_the_menu(&mut h, &path);
     let p = h.state().compare.student.as_ref().unwrap_or_else(|| panic!("{:?}", h.state().message));
-    assert_eq!(p.verdict, "right", "{:?}", p.lines);
+    assert_eq!(p.verdict, "right", "{:?}", p.lines());
+}
+
+/// The first catalogue mistake that two causes explain on the worksheet's scene (a check
+/// that names two), as printed text.
+fn two_cause_printed() -> String {
+    use phonglab_core::study::check::{check, mistakes::CATALOGUE, printed::printed_text};
+    let scene = AppState::worksheet().doc.scene;
+    CATALOGUE
+        .iter()
+        .filter_map(|m| m.mistake)
+        .map(|m| printed(Some(m)))
+        .find(|text| check(&scene, &scene, &printed_text(text)).causes.len() >= 2)
+        .expect("a mistake two causes explain")
+}
+
+#[test]
+fn a_status_made_before_a_language_switch_is_said_again_in_the_new_language() {
+    use phonglab::app::editing::message::Message;
+    let dir = TempDir::new("restate");
+    let path = dir.0.join("vlv.txt");
+    std::fs::write(&path, printed(Some(Mistake::VlvReversed))).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    check_through_the_menu(&mut h, &path);
+    let said = Some(Message::Info("Checked vlv.txt against this scene: not all right; see the calculation".into()));
+    assert_eq!(h.state().message, said);
+    h.state_mut().ui.layout.language = Some("pt-PT".into());
+    h.run_steps(2);
+    let pt = "vlv.txt corrigido com esta cena: nem tudo está certo; veja o cálculo";
+    assert_eq!(h.state().message, Some(Message::Info(pt.into())));
+    assert!(h.query_by_label(pt).is_some(), "the status line shows it");
+    h.state_mut().ui.layout.language = Some("en".into());
+    h.run_steps(2);
+    assert_eq!(h.state().message, said);
+    // Another status replaces it for good: a later switch does not bring it back.
+    h.state_mut().message = Some(Message::Info("something else".into()));
+    h.state_mut().ui.layout.language = Some("pt-BR".into());
+    h.run_steps(2);
+    assert_eq!(h.state().message, Some(Message::Info("something else".into())));
+}
+
+#[test]
+fn the_causes_read_whole_in_the_column_and_beside_the_first_wrong_step_and_the_rules_at_body_size() {
+    use phonglab_core::study::check::{check, printed::printed_text};
+    let dir = TempDir::new("two-causes");
+    let path = dir.0.join("two.txt");
+    let text = two_cause_printed();
+    std::fs::write(&path, &text).unwrap();
+    let scene = AppState::worksheet().doc.scene;
+    let causes = check(&scene, &scene, &printed_text(&text)).causes;
+    for (w, ht) in [(1024.0, 600.0), (1280.0, 720.0)] {
+        for dark in [true, false] {
+            let mut h = harness(w, ht);
+            if !dark {
+                h.state_mut().ui.layout.theme = phonglab::app::shell::layout::Theme::Light;
+            }
+            check_through_the_menu(&mut h, &path);
+            h.run_steps(2);
+            let heading = h.get_by_label("Worked calculation").rect();
+            // The first cause's words and evidence, whole, in the visible column.
+            let words = (causes[0].info.words)();
+            let first = format!("likely cause: {words} [{}]. Evidence", causes[0].info.id);
+            let r = h.get_by_label_contains(&first).rect();
+            assert!(
+                r.left() >= heading.left() - 1.0 && r.right() <= w && r.top() >= heading.bottom() && r.bottom() <= ht,
+                "{w}x{ht}: {r:?}"
+            );
+            // The rules line at the body's size.
+            let body = h.ctx.global_style().text_styles[&egui::TextStyle::Body].size;
+            let rules = h.get_by_label_contains("rules assumed").rect();
+            assert!(rules.height() >= body, "{w}x{ht}: rules {rules:?}, body {body}");
+            // Each cause in words beside the first wrong step, inside its frame, under the
+            // marker: seen with it.
+            let marker = h.get_by_label("» first wrong step").rect();
+            let mut top = marker.bottom() - 0.5;
+            for c in &causes {
+                let beside = format!("likely cause: {} [{}] (", (c.info.words)(), c.info.id);
+                let b = h.get_by_label_contains(&beside).rect();
+                assert!(b.top() >= top && b.top() - top < 4.0 * body, "{w}x{ht}: {marker:?} {b:?}");
+                assert!(b.left() >= marker.left() - 1.0 && b.right() <= w, "{w}x{ht}: {b:?}");
+                top = b.bottom() - 0.5;
+            }
+        }
+    }
+}
+
+#[test]
+fn in_portuguese_the_values_wrap_clear_of_the_scroll_bar_at_every_column_width() {
+    let dir = TempDir::new("wide");
+    let path = dir.0.join("vlv.txt");
+    std::fs::write(&path, printed(Some(Mistake::VlvReversed))).unwrap();
+    let mut h = harness(1920.0, 1080.0);
+    h.state_mut().ui.layout.language = Some("pt-PT".into());
+    h.run_steps(2);
+    check_through_the_menu_as(&mut h, &path, &["Ficheiro"], "Corrigir o trabalho de um aluno…", "Corrigir");
+    let student = h.state().student.clone();
+    // The column is 27 % of the window up to 460 points (from 1704 wide on, as at 1920):
+    // where each value wraps moves with its width, so some value ends near its right edge.
+    for w in (1500..=1708).step_by(8).map(|w| w as f32) {
+        let mut h = harness(w, 1080.0);
+        h.state_mut().ui.layout.language = Some("pt-PT".into());
+        h.state_mut().student = student.clone();
+        h.run_steps(3);
+        let heading = h.get_by_label("Cálculo passo a passo").rect();
+        let bar = {
+            let s = &h.ctx.global_style().spacing.scroll;
+            s.bar_width + s.bar_inner_margin + s.bar_outer_margin
+        };
+        let values: Vec<egui::Rect> = h
+            .get_all_by_label_contains(" = ")
+            .map(|n| n.rect())
+            .filter(|r| r.left() >= heading.left() - 1.0 && r.top() > heading.bottom())
+            .collect();
+        assert!(values.len() > 10, "{values:?}");
+        for r in values {
+            // The column's inner edge (the panel's margin) less the scroll bar floating there.
+            assert!(r.right() <= w - 8.0 - bar + 0.5, "{w}: {r:?} past {}", w - 8.0 - bar);
+        }
+    }
+}
+
+/// [`check_through_the_menu`] in another language: the menu's path, its item and the
+/// chooser's button.
+fn check_through_the_menu_as(h: &mut Harness<'static, AppState>, path: &Path, menu: &[&str], item: &str, go: &str) {
+    common::open_menu(h, menu);
+    h.get_by_label(item).click();
+    h.run_steps(2);
+    let c = h.state_mut().chooser.as_mut().expect("the chooser opens");
+    c.folder = path.parent().unwrap().display().to_string();
+    c.name = path.file_name().unwrap().to_string_lossy().into_owned();
+    h.run_steps(2);
+    h.get_by_label(go).click();
+    h.run_steps(3);
+    assert!(h.state().student.is_some(), "{:?}", h.state().message);
+}
+
+/// A catalogue's message, by id, from `i18n/` (the app's) or the core's.
+fn message(lang: &str, id: &str) -> String {
+    ["i18n", "crates/phonglab-core/i18n"]
+        .iter()
+        .filter_map(|dir| {
+            std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(dir).join(format!("{lang}.ftl"))).ok()
+        })
+        .flat_map(|text| text.lines().map(str::to_owned).collect::<Vec<_>>())
+        .find_map(|l| l.strip_prefix(&format!("{id} = ")).map(str::to_owned))
+        .unwrap_or_else(|| panic!("{lang}: no {id}"))
+}
+
+#[test]
+fn the_halfway_vector_has_one_name_in_each_portuguese() {
+    for lang in ["pt-PT", "pt-BR"] {
+        let legend = message(lang, "plot-legend-halfway");
+        assert_eq!(legend, "vetor médio");
+        for id in ["step-h", "effect-halfway"] {
+            let m = message(lang, id).to_lowercase();
+            assert!(m.contains(&legend) && !m.contains("halfway"), "{lang} {id}: {m}");
+        }
+    }
+}
+
+#[test]
+fn the_class_chart_is_as_tall_as_its_rows_and_wraps_long_causes_right_aligned_against_their_bars() {
+    use phonglab::cli::class_chart::chart;
+    let long = "o termo ambiente multiplicado por N·L como a difusa (a luz ambiente não tem direção)";
+    let counts = |n: usize| -> Vec<(String, usize)> {
+        (0..n).map(|k| (if k == 1 { long.to_string() } else { format!("causa {k}") }, 1 + k % 4)).collect()
+    };
+    let mut heights = Vec::new();
+    for n in [3, 12] {
+        let c = chart(&counts(n), 17);
+        assert_eq!(c.rows.len(), n);
+        // The last painted row is near the bottom: no empty third.
+        let bg = &c.rgba[c.rgba.len() - 4..];
+        let last = (0..c.height)
+            .rev()
+            .find(|&y| c.rgba[y * c.width * 4..(y + 1) * c.width * 4].chunks(4).any(|p| p != bg))
+            .expect("something painted");
+        assert!(c.height - last <= 24, "{n} rows: {} tall, last painted row {last}", c.height);
+        let right = c.rows[0].label.right();
+        for r in &c.rows {
+            assert!(!r.cut, "{r:?}");
+            assert!(r.label.left() >= 0.0 && r.label.right() <= r.bar.left(), "{r:?}");
+            // Right-aligned: every label ends where the others do, just before its bar.
+            assert!((r.label.right() - right).abs() < 0.5 && r.bar.left() - r.label.right() < 16.0, "{r:?}");
+            assert!(r.bar.right() <= c.width as f32 && r.label.bottom() <= c.height as f32, "{r:?}");
+        }
+        // The long cause on two lines rather than cut.
+        let one_line = c.rows[0].label.height();
+        assert!(c.rows[1].label.height() > 1.5 * one_line, "{:?} {one_line}", c.rows[1]);
+        heights.push(c.height);
+    }
+    assert!(heights[1] > heights[0] + 9 * 18, "{heights:?}");
 }

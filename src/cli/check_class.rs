@@ -334,26 +334,11 @@ pub fn marks_csv(marked: &[Marked]) -> String {
     out
 }
 
-/// The causes counted as a bar chart, painted as the window paints.
+/// The causes counted as a bar chart, painted as the window paints
+/// ([`super::class_chart`]).
 pub fn chart_png(counts: &[(String, usize)], total: usize) -> (usize, usize, Vec<u8>) {
-    let rows = counts.len().max(1) as f32;
-    let (w, h) = (900.0, 60.0 + 28.0 * rows);
-    let most = counts.iter().map(|c| c.1).max().unwrap_or(1).max(1) as f32;
-    let canvas = crate::paint::egui_cpu::paint_ui(w, h, 1.0, |ui| {
-        egui::CentralPanel::default().show(ui, |ui| {
-            ui.strong(t!("check-chart-title", count = total));
-            for (id, n) in counts {
-                ui.horizontal(|ui| {
-                    ui.add_sized([480.0, 20.0], egui::Label::new(id.as_str()).truncate());
-                    let (rect, _) =
-                        ui.allocate_exact_size(egui::vec2(320.0 * *n as f32 / most, 18.0), egui::Sense::hover());
-                    ui.painter().rect_filled(rect, 2.0, egui::Color32::from_rgb(70, 130, 200));
-                    ui.label(n.to_string());
-                });
-            }
-        });
-    });
-    (canvas.width, canvas.height, canvas.rgba8())
+    let c = super::class_chart::chart(counts, total);
+    (c.width, c.height, c.rgba)
 }
 
 /// The typed inputs that differ, by the worksheet's names (the rule set in words).

@@ -7,6 +7,7 @@ pub mod bench;
 pub mod case;
 pub mod check;
 pub mod check_class;
+pub mod class_chart;
 pub mod cost;
 pub mod diagnose;
 pub mod eval;

@@ -95,12 +95,19 @@ pub fn calculation_ui(
     ui.separator();
     let student = &mut *student;
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
+        // Clear of the scroll bar, which floats over the column's right edge: the values
+        // wrap before it rather than end under it.
+        let bar = {
+            let s = &ui.spacing().scroll;
+            s.bar_width + s.bar_inner_margin + s.bar_outer_margin
+        };
+        ui.set_max_width((ui.available_width() - bar).max(bar));
         student_summary_ui(ui, student);
         for (k, st) in ex.steps.iter().enumerate() {
             let skip = effects.iter().find(|e| !e.on && e.light == st.light && e.step_kind() == Some(st.kind));
             let here = walk.step == Some(k);
             let theirs = student.as_ref().and_then(|s| s.step(&st.name));
-            let frame = if theirs.is_some_and(|(_, first)| first) {
+            let frame = if theirs.is_some_and(|(_, first)| first.is_some()) {
                 first_wrong_frame(ui)
             } else if here {
                 egui::Frame::new()
@@ -127,7 +134,7 @@ fn step_ui(
     k: usize,
     st: &phonglab_core::explain::Step,
     skip: Option<&Effect>,
-    theirs: Option<(&phonglab_core::study::check::StepCheck, bool)>,
+    theirs: Option<(&phonglab_core::study::check::StepCheck, Option<&phonglab_core::study::check::Check>)>,
 ) {
     ui.horizontal(|ui| {
         ui.label(RichText::new(format!("{:>2}.", k + 1)).monospace().weak());
@@ -148,7 +155,7 @@ fn step_ui(
         text = text.weak();
     }
     ui.indent(("value", k), |ui| {
-        ui.label(text);
+        ui.add(egui::Label::new(text).wrap());
         if let Some((step, first)) = theirs {
             student_value_ui(ui, step, first);
         }

@@ -41,10 +41,10 @@ impl StudentCheck {
     }
 
     /// The student's step printed under the worksheet's `name` (`vlv`, `vlv[1]`), and
-    /// whether it is the first wrong one.
-    pub fn step(&self, name: &str) -> Option<(&StepCheck, bool)> {
+    /// the check when it is the first wrong one (its causes are said beside it).
+    pub fn step(&self, name: &str) -> Option<(&StepCheck, Option<&Check>)> {
         let k = self.check.steps.iter().position(|s| s.name == name)?;
-        Some((&self.check.steps[k], self.check.first_wrong == Some(k)))
+        Some((&self.check.steps[k], (self.check.first_wrong == Some(k)).then_some(&self.check)))
     }
 }
 
@@ -84,8 +84,9 @@ fn numbers(v: &[f64]) -> String {
 }
 
 /// The student's value under the key's, with its verdict; the first wrong step's with its
-/// marker.
-pub fn student_value_ui(ui: &mut Ui, step: &StepCheck, first_wrong: bool) {
+/// marker and its likely causes in words (`first_wrong`: the check, when it is the first
+/// wrong step), so that the step and why are seen together.
+pub fn student_value_ui(ui: &mut Ui, step: &StepCheck, first_wrong: Option<&Check>) {
     let line = t!("student-value", student = numbers(&step.student), verdict = step.verdict.words());
     let mut text = RichText::new(line).monospace();
     text = match &step.verdict {
@@ -94,8 +95,12 @@ pub fn student_value_ui(ui: &mut Ui, step: &StepCheck, first_wrong: bool) {
         Verdict::Right => text.color(palette::ink(ui, palette::V)),
     };
     ui.add(egui::Label::new(text).wrap());
-    if first_wrong {
+    if let Some(c) = first_wrong {
         ui.label(RichText::new(t!("student-first-wrong-marker")).color(wrong_ink(ui)).strong());
+        for cause in &c.causes {
+            let line = t!("student-cause-beside", words = cause.words(), id = cause.info.id);
+            ui.add(egui::Label::new(line).wrap());
+        }
     }
 }
 
@@ -118,7 +123,8 @@ pub fn student_summary_ui(ui: &mut Ui, student: &mut Option<StudentCheck>) {
 
 /// The check's findings in words: rules, typed inputs, verdict, causes.
 fn findings_ui(ui: &mut Ui, c: &Check) {
-    ui.small(t!("check-rules", rules = c.rules.to_string()));
+    // At the body's size: read at a projector like the rest.
+    ui.add(egui::Label::new(t!("check-rules", rules = c.rules.to_string())).wrap());
     if !c.inputs_differ.is_empty() {
         let line = t!("check-inputs-differ", names = c.inputs_differ.join(", "));
         ui.label(RichText::new(line).color(wrong_ink(ui)));

@@ -16,8 +16,9 @@ pub struct StudentPicture {
     pub size: usize,
     /// The verdict: `right`, `wrong` or `unexplained`.
     pub verdict: &'static str,
-    /// The diagnosis in words, one line a finding.
-    pub lines: Vec<String>,
+    /// The diagnosis as found, said in words when shown ([`StudentPicture::lines`]), so in
+    /// the language shown then.
+    said: Said,
     /// The right picture, the student's and the difference (RGBA8).
     pictures: [Vec<u8>; 3],
     /// Their textures, once made.
@@ -32,10 +33,36 @@ impl StudentPicture {
             file,
             size,
             verdict: d.verdict.name(),
-            lines: verdict_lines(d),
+            said: Said::of(d),
             pictures: [d.picture.clone(), image, diff],
             textures: None,
         }
+    }
+
+    /// The diagnosis in words, one line a finding, in the language shown now.
+    pub fn lines(&self) -> Vec<String> {
+        verdict_lines(&self.said)
+    }
+}
+
+/// What a diagnosis found, kept as numbers: the verdict, the right picture's score, and
+/// the mistakes named (each with where it was made and its score): the closest first; for
+/// an unexplained picture the closest tried, if any matched.
+#[derive(Clone, Debug)]
+struct Said {
+    verdict: Verdict,
+    right: f64,
+    named: Vec<Tried>,
+}
+
+impl Said {
+    fn of(d: &Diagnosis) -> Said {
+        let named = match d.verdict {
+            Verdict::Right => Vec::new(),
+            Verdict::Wrong => d.causes.clone(),
+            Verdict::Unexplained => d.tried.first().filter(|t| t.matched.is_some()).copied().into_iter().collect(),
+        };
+        Said { verdict: d.verdict, right: d.right.score, named }
     }
 }
 
@@ -45,26 +72,25 @@ fn percent(score: f64) -> String {
 }
 
 /// The diagnosis in words: the verdict with the closest cause and its score, the others.
-fn verdict_lines(d: &Diagnosis) -> Vec<String> {
-    let right = percent(d.right.score);
-    let named = |t: &Tried| {
-        let score = t.matched.map_or(0.0, |m| m.score);
-        (t.words(), t.id(), percent(score))
-    };
+fn verdict_lines(d: &Said) -> Vec<String> {
+    let right = percent(d.right);
+    let named = |t: &Tried| (t.words(), t.label(), percent(t.matched.map_or(0.0, |m| m.score)));
     match d.verdict {
         Verdict::Right => vec![t!("diagnose-verdict-right", score = right)],
         Verdict::Wrong => {
-            let (cause, id, score) = named(&d.causes[0]);
-            let mut out = vec![t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right)];
-            for c in &d.causes[1..] {
+            let mut out = Vec::new();
+            for (n, c) in d.named.iter().enumerate() {
                 let (cause, id, score) = named(c);
-                out.push(t!("diagnose-also", cause = cause, id = id, score = score));
+                out.push(if n == 0 {
+                    t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right.clone())
+                } else {
+                    t!("diagnose-also", cause = cause, id = id, score = score)
+                });
             }
             out
         }
         Verdict::Unexplained => {
-            let closest = d.tried.first().filter(|t| t.matched.is_some());
-            let (cause, id, score) = closest.map(named).unwrap_or_default();
+            let (cause, id, score) = d.named.first().map(named).unwrap_or_default();
             vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
         }
     }
@@ -80,7 +106,7 @@ pub fn student_picture_ui(ui: &mut Ui, picture: &mut Option<StudentPicture>) -> 
         clear = ui.button(t!("student-clear")).on_hover_text(t!("student-clear-hover")).clicked();
     });
     let wrong = p.verdict != "right";
-    for line in &p.lines {
+    for line in p.lines() {
         let mut text = RichText::new(line).strong();
         if wrong {
             text = text.color(super::student_column::wrong_ink(ui));

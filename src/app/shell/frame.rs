@@ -55,6 +55,7 @@ fn frame_start_ui(ui: &mut Ui, state: &mut AppState) -> Option<state::Evaluated>
     state.now = ctx.input(|i| i.time);
     // The window's language, switched at once when the menu changes it.
     crate::locale::set_thread(Some(state.ui.layout.locale()));
+    super::student::restate(state);
     // Open and Save pressed while typing wait for the field to commit what was typed: the
     // field lets the keyboard go now, commits next frame, and they run the frame after.
     let (ready, waiting): (Vec<_>, Vec<_>) = std::mem::take(&mut state.ui.deferred).into_iter().partition(|(_, r)| *r);

@@ -101,11 +101,24 @@ pub struct AppState {
     /// A dropped notebook with outputs (its name and bytes), while the window asks whether
     /// to open it or check it.
     pub student_ask: Option<(String, Vec<u8>)>,
+    /// The status a student's check made and what it said, while it is the status shown:
+    /// said again in the language shown when that changes.
+    pub student_status: Option<(StudentStatus, Message)>,
     /// Undo and redo of the scene's changes.
     pub history: crate::app::editing::history::History,
     /// This frame's time (seconds, egui's clock): a drag's changes within a second are one
     /// undo step.
     pub now: f64,
+}
+
+/// Which check made the status shown: the work's (the calculation panel) or the picture's
+/// (Compare).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StudentStatus {
+    /// A notebook or printed text checked.
+    Work,
+    /// A picture diagnosed.
+    Picture,
 }
 
 impl AppState {

@@ -9,7 +9,7 @@ use std::path::Path;
 
 use phonglab_core::study::check::printed::{notebook_outputs, printed_text};
 
-use super::state::{AppState, Message};
+use super::state::{AppState, Message, StudentStatus as Status};
 use crate::app::panels::student_column::StudentCheck;
 use crate::io::student_code::{MAX_CODE_BYTES, import_text, student_code};
 use crate::t;
@@ -50,10 +50,9 @@ pub fn check_bytes(state: &mut AppState, bytes: &[u8], path: &Path) {
     }
     match checked(state, bytes, path) {
         Ok(c) => {
-            let verdict = if c.check.right() { t!("check-all-right") } else { t!("student-checked-wrong") };
-            state.message = Some(Message::Info(t!("student-checked", file = c.file.clone(), verdict = verdict)));
             state.ui.layout.calculation_open = true;
             state.student = Some(c);
+            say(state, Status::Work);
         }
         Err(why) => refuse(state, why),
     }
@@ -74,6 +73,44 @@ fn checked(state: &AppState, bytes: &[u8], path: &Path) -> Result<StudentCheck, 
     };
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
     Ok(StudentCheck::new(phonglab_core::escape::printable(&name), &state.doc.scene, (own, printed)))
+}
+
+/// The status `which` check says now, in the language shown; `None` once it is cleared.
+fn status(state: &AppState, which: Status) -> Option<Message> {
+    let (file, verdict) = match which {
+        Status::Work => {
+            let c = state.student.as_ref()?;
+            (c.file.clone(), if c.check.right() { t!("check-all-right") } else { t!("student-checked-wrong") })
+        }
+        Status::Picture => {
+            let p = state.compare.student.as_ref()?;
+            (p.file.clone(), p.lines().into_iter().next().unwrap_or_default())
+        }
+    };
+    Some(Message::Info(t!("student-checked", file = file, verdict = verdict)))
+}
+
+/// Shows the status of `which` check, remembered so that it is said again in another
+/// language.
+fn say(state: &mut AppState, which: Status) {
+    state.message = status(state, which);
+    state.student_status = state.message.clone().map(|m| (which, m));
+}
+
+/// Says the check's status again, in the language shown now, while it is the status shown
+/// (called each frame once the language is set: a switch of language or decimal mark
+/// re-says it; another status replaces it for good).
+pub fn restate(state: &mut AppState) {
+    let Some((which, said)) = state.student_status.clone() else { return };
+    if state.message.as_ref() != Some(&said) {
+        state.student_status = None;
+        return;
+    }
+    match status(state, which) {
+        Some(now) if now != said => say(state, which),
+        Some(_) => {}
+        None => state.student_status = None,
+    }
 }
 
 fn refuse(state: &mut AppState, why: String) {
@@ -164,10 +201,9 @@ fn check_picture(state: &mut AppState, bytes: &[u8], path: &Path) {
                 image,
                 &d,
             );
-            let line = picture.lines.first().cloned().unwrap_or_default();
-            state.message = Some(Message::Info(t!("student-checked", file = picture.file.clone(), verdict = line)));
             state.compare.student = Some(picture);
             state.compare.open = true;
+            say(state, Status::Picture);
         }
         Err(e) => refuse(state, e.to_string()),
     }
