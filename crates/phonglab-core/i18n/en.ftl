@@ -692,3 +692,9 @@ check-nothing-compared = not checked: nothing it printed is a step of the worksh
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) draws the shading this program was written for (Gouraud: the vertices' colours interpolated; Phong: each pixel lit). With GL_FLAT the shaders draw what fixed-function OpenGL draws: each face in the colour lit at its provoking vertex (a triangle’s or a quad’s last vertex).
 py-two-side-program-comment = Lets the fragment shader’s gl_Color be the back colour on a triangle’s back side, as fixed-function GL chooses it; the shaders use it under glShadeModel(GL_FLAT).
+
+# py58: the Python package (crates/phonglab-py)
+python-unknown-value = { $what }{ $value }: the values it takes are { $names }
+python-wrong-length = { $field }: { $count } numbers given, { $expected } expected
+python-no-such-light = there is no light { $light }: the scene has { $count } lights, numbered from 0
+python-wrong-shape = { $name }: an array of shape { $shape }, where (N, 3) is expected, the same N for the positions and the normals

@@ -692,3 +692,9 @@ check-nothing-compared = não verificado: nada do que você imprimiu é um passo
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) desenha o sombreamento para o qual este programa foi escrito (Gouraud: as cores dos vértices interpoladas; Phong: cada pixel iluminado). Com GL_FLAT, os shaders desenham o que o OpenGL de pipeline fixo desenha: cada face na cor calculada no seu vértice provocante (o último vértice de um triângulo ou de um quadrilátero).
 py-two-side-program-comment = Faz o gl_Color do fragment shader ser a cor de trás na face de trás de um triângulo, como o GL de pipeline fixo a escolhe; os shaders o usam com glShadeModel(GL_FLAT).
+
+# py58: the Python package (crates/phonglab-py)
+python-unknown-value = { $what }{ $value }: os valores possíveis são { $names }
+python-wrong-length = { $field }: { $count } números informados, { $expected } esperados
+python-no-such-light = não existe a luz { $light }: a cena tem { $count } luzes, numeradas a partir de 0
+python-wrong-shape = { $name }: um array de formato { $shape }, quando se espera (N, 3), com o mesmo N para as posições e as normais
