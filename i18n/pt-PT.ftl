@@ -963,13 +963,6 @@ diagnose-worst = O píxel que mais difere: ({ $x }, { $y }), a sua imagem { $ima
 
 ## phonglab check: o trabalho de um aluno verificado
 
-check-rules = regras assumidas: { $rules }
-check-inputs-differ = os dados que escreveu diferem dos do enunciado: { $names }
-check-step = { $step }: o seu { $student }, o da solução { $key }: { $verdict }
-check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o da solução { $key })
-check-all-right = tudo certo: todos os passos impressos são os da solução
-check-cause = causa provável: { $words } [{ $id }]. Prova: em { $step } imprimiu { $student }, e a solução com este erro dá { $value }
-check-no-cause = nenhum erro do catálogo reproduz tudo o que imprimiu; veja o primeiro passo errado
 check-nothing-printed = nada impresso que a solução tenha: imprima cada valor como a ficha faz, print("vlv = ", vlv)
 check-report-title = Verificação da turma
 check-report-student = Aluno
@@ -985,14 +978,11 @@ check-report-written = { $count ->
 }: { $path }
 check-printed-with-folder = --printed verifica o texto impresso por um programa; os cadernos de uma pasta são lidos dos seus próprios resultados: indica um ou outro
 check-report-needs-folder = --report e --csv são de uma turma: indica uma pasta de cadernos (a verificação de um caderno é escrita no terminal, ou com --json)
-check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
-check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
 check-not-read-link = uma ligação simbólica (um trabalho tem de ser um ficheiro da própria pasta)
 check-chart-link = { $path } é uma ligação simbólica: o nome do gráfico vem do do relatório, e o phonglab nunca escreve através de uma ligação que não lhe foi dada; apague a ligação ou dê outro nome ao relatório
 check-chart-title = Causas na turma ({ $count } trabalhos)
 check-verdict-word-right = certo
 check-verdict-word-wrong = errado
-check-input-rules = as regras
 check-scene-own = cena: a do próprio caderno (os dados escritos nele são tomados como o enunciado e não podem estar errados; indique o enunciado com --scene S.toml)
 check-scene-file = cena: { $path }
 check-scene-printed = cena: a da ficha (o enunciado com --scene S.toml)
@@ -1027,7 +1017,6 @@ student-ask-open = Abrir como cena
 student-picture-heading = Imagem do aluno: { $file }
 student-picture-right = A: a imagem certa desta cena
 student-picture-theirs = B: a imagem do aluno
-
 # fix57b
 read-link-refused = { $path } é uma ligação simbólica: não foi lido (o trabalho de um aluno só é lido de um ficheiro, nunca através de uma ligação)
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)

@@ -4,6 +4,8 @@
 //! Conversions only: every value is computed by `phonglab_core`, every message is the
 //! core's catalogue's, in the language the caller names.
 
+mod check;
+
 use glam::{DVec3, DVec4};
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::locale::{Lang, Locale, with_locale};
@@ -27,7 +29,9 @@ fn scene_error(message: impl ToString) -> PyErr {
 
 /// `what=value`: not one of `names` (`what` ends in `=`, as a Python argument): the message every refused name gets.
 fn unknown(what: &str, value: &str, names: &str) -> PyErr {
-    scene_error(phonglab_core::t!("python-unknown-value", what = what, value = format!("{value:?}"), names = names))
+    // A number as Python writes it (`size=0`), a name quoted (`object="cube"`).
+    let shown = if value.parse::<f64>().is_ok() { value.to_string() } else { format!("{value:?}") };
+    scene_error(phonglab_core::t!("python-unknown-value", what = what, value = shown, names = names))
 }
 
 /// The locale of `lang` ("en", "pt-PT", "pt-BR").
@@ -226,13 +230,17 @@ impl PyScene {
     }
 }
 
-/// One step of the worked calculation: (worksheet name, title, formula, value, light).
-type StepRow = (String, String, String, Option<Vec<f64>>, Option<usize>);
+/// One step of the worked calculation: (worksheet name, title, formula, value, light, the
+/// value as the worked calculation prints it).
+type StepRow = (String, String, String, Option<Vec<f64>>, Option<usize>, String);
 
 fn steps_of<S: Real>(scene: &Scene) -> PyResult<(Vec<StepRow>, String, String)> {
     let lit = Engine::<S>::light_scene_vertex(scene).map_err(scene_error)?;
     let ex = explain(scene, &lit, Side::Front);
-    let rows = ex.steps.iter().map(|s| (s.name.clone(), s.title.clone(), s.formula.clone(), s.value.clone(), s.light));
+    let rows = ex.steps.iter().map(|s| {
+        let shown = s.value.as_deref().map(|v| phonglab_core::explain::fmt_value(v, 8)).unwrap_or_default();
+        (s.name.clone(), s.title.clone(), s.formula.clone(), s.value.clone(), s.light, shown)
+    });
     Ok((rows.collect(), ex.to_text(8), ex.to_markdown(8)))
 }
 
@@ -395,6 +403,15 @@ fn share_link(scene: &PyScene, base: &str) -> PyResult<String> {
     link(base, &Shared::of(scene.doc.clone())).map_err(scene_error)
 }
 
+/// Checks a notebook's work as `phonglab check` does: `code` the cells run, in order (the
+/// givens are read from it, nothing is run), `printed` its values as `name = value` lines.
+/// The table in `lang`, and whether every step is right.
+#[pyfunction]
+#[pyo3(signature = (code, printed, lang="en"))]
+fn check_work(code: &str, printed: &str, lang: &str) -> PyResult<(String, bool)> {
+    with_locale(locale_of(lang)?, || check::check_work(code, printed)).map_err(scene_error)
+}
+
 /// The extension module.
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -406,5 +423,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(probe, m)?)?;
     m.add_function(wrap_pyfunction!(shader, m)?)?;
     m.add_function(wrap_pyfunction!(share_link, m)?)?;
+    m.add_function(wrap_pyfunction!(check_work, m)?)?;
     Ok(())
 }

@@ -33,6 +33,7 @@ __all__ = [
     "probe",
     "shader",
     "share_link",
+    "check",
 ]
 
 _LIGHT_FIELDS = (
@@ -206,7 +207,7 @@ class Lighting:
         self._scene, self._precision = scene, precision
         self.per_light: Dict[int, Dict[str, Optional[np.ndarray]]] = {}
         self.steps: Dict[str, Optional[np.ndarray]] = {}
-        for name, _title, _formula, value, light in rows:
+        for name, _title, _formula, value, light, _shown in rows:
             array = None if value is None else np.array(value)
             if light is not None:
                 self.per_light.setdefault(light, {}).setdefault(name, array)
@@ -235,8 +236,8 @@ class Lighting:
         cells = "".join(
             f"<tr><td>{html.escape(title)}</td><td><code>{html.escape(name)}</code></td>"
             f"<td><code>{html.escape(formula)}</code></td>"
-            f"<td>{'' if value is None else html.escape(' '.join(f'{x:.8g}' for x in value))}</td></tr>"
-            for name, title, formula, value, _light in self._rows
+            f"<td>{html.escape(shown)}</td></tr>"
+            for name, title, formula, _value, _light, shown in self._rows
         )
         return f"<table><tbody>{cells}</tbody></table>"
 
@@ -326,3 +327,39 @@ def shader(scene: Scene, target: str = "glsl", shading: str = "gouraud") -> str:
 def share_link(scene: Scene, base: Optional[str] = None) -> str:
     """The scene as a link that opens it in phonglab's browser build."""
     return _core.share_link(scene._inner) if base is None else _core.share_link(scene._inner, base)
+
+
+def _printed(namespace: Dict[str, Any]) -> str:
+    """The notebook's numeric variables as `print("name = ", name)` prints them (a list of
+    per-light arrays as `name[k] = ...`, as the worksheet's notebook prints them)."""
+    lines = []
+    for name, value in namespace.items():
+        if name.startswith("_") or not name.isidentifier():
+            continue
+        if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number, np.ndarray, list)):
+            continue
+        if isinstance(value, list) and value and all(isinstance(v, np.ndarray) for v in value):
+            lines += [f"{name}[{k}] =  {v}" for k, v in enumerate(value)]
+            continue
+        try:
+            array = np.asarray(value, dtype=np.float64)
+        except (TypeError, ValueError):
+            continue
+        if array.size == 0 or array.size > 16:
+            continue
+        lines.append(f"{name} =  {value if isinstance(value, (np.ndarray, list)) else array.item()}")
+    return "\n".join(lines)
+
+
+def check(namespace: Dict[str, Any], lang: str = "en") -> bool:
+    """The self-check cell: checks the worksheet's values this notebook holds step by step,
+    as `phonglab check` checks a saved notebook, and prints the table (each step, the
+    first wrong one and its likely cause) in lang. Call it as phonglab.check(globals()).
+
+    The givens are read from the cells run so far (IPython's `In`; nothing is run again),
+    the values from the notebook's variables. Returns True when every step is right."""
+    cells = namespace.get("In") or namespace.get("_ih") or []
+    code = "\n".join(c for c in cells if isinstance(c, str) and "phonglab.check(" not in c)
+    text, right = _core.check_work(code, _printed(namespace), lang)
+    print(text, end="")
+    return right
