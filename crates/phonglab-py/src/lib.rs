@@ -267,9 +267,10 @@ fn check_shapes(positions: &[usize], normals: &[usize]) -> PyResult<()> {
     Ok(())
 }
 
+/// Little-endian f32 triples as vectors (one pass, no copy between).
 fn vectors(bytes: &[u8]) -> Vec<glam::Vec3> {
-    let floats: Vec<f32> = bytes.chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])).collect();
-    floats.chunks_exact(3).map(|c| glam::Vec3::new(c[0], c[1], c[2])).collect()
+    let float = |b: &[u8]| f32::from_le_bytes([b[0], b[1], b[2], b[3]]);
+    bytes.chunks_exact(12).map(|c| glam::Vec3::new(float(&c[0..4]), float(&c[4..8]), float(&c[8..12]))).collect()
 }
 
 /// Lights the vertices given as little-endian f32 bytes (positions and normals, arrays of
@@ -294,12 +295,18 @@ fn light_many<'py>(
     }
     let lighter =
         phonglab_core::lighter::Lighter::new(&scene.doc.scene, EvalOptions::with_pow(PowFn::Exact)).map_err(scene_error)?;
-    let out = py.detach(move || {
+    let front = py.detach(move || {
         let mut front = vec![[0f32; 4]; p.len()];
         lighter.light_batch_sum(&p, &n, &mut front, None);
-        front.iter().flatten().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>()
+        front
     });
-    Ok(PyBytes::new(py, &out))
+    // Written straight into the bytes object Python receives.
+    PyBytes::new_with(py, front.len() * 16, |out| {
+        for (chunk, x) in out.chunks_exact_mut(4).zip(front.iter().flatten()) {
+            chunk.copy_from_slice(&x.to_le_bytes());
+        }
+        Ok(())
+    })
 }
 
 fn named<T: serde::de::DeserializeOwned>(what: &str, value: &str, names: &str) -> PyResult<T> {
