@@ -293,8 +293,8 @@ fn light_many<'py>(
             shape = format!("({}, 3)", p.len())
         )));
     }
-    let lighter =
-        phonglab_core::lighter::Lighter::new(&scene.doc.scene, EvalOptions::with_pow(PowFn::Exact)).map_err(scene_error)?;
+    let lighter = phonglab_core::lighter::Lighter::new(&scene.doc.scene, EvalOptions::with_pow(PowFn::Exact))
+        .map_err(scene_error)?;
     let front = py.detach(move || {
         let mut front = vec![[0f32; 4]; p.len()];
         lighter.light_batch_sum(&p, &n, &mut front, None);
