@@ -77,3 +77,11 @@ def test_shader_and_share_link_are_the_command_lines(cli):
     assert phonglab.share_link(scene) == cli("share").stdout.strip()
     with pytest.raises(phonglab.SceneError, match='target="hlsl"'):
         phonglab.shader(scene, target="hlsl")
+
+
+def test_a_notebook_read_back_is_the_scene_it_was_written_from(tmp_path, cli):
+    path = tmp_path / "w.ipynb"
+    cli("export", "--to", "notebook", "-o", path)
+    scene = phonglab.Scene.from_notebook(path)
+    assert list(phonglab.light(scene).I) == list(phonglab.light(phonglab.Scene.worksheet(5)).I)
+    assert list(scene.lights[0].position) == [0, 0, 90, 1]
