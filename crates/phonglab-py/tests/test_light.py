@@ -25,6 +25,8 @@ def test_every_modelview_gives_what_the_worksheets_code_prints(k, worksheet_runs
         got = getattr(lit, name)
         assert got.shape == want.shape, name
         np.testing.assert_allclose(got, want, rtol=0, atol=tol, err_msg=f"mview{k} {name}")
+    np.testing.assert_allclose(lit.at, np.atleast_1d(run["values"]["at"]), rtol=1e-7, atol=0, err_msg=f"mview{k} at")
+    assert lit.spot is not None and lit.Ilight is not None
     for name, text in run["printed"].items():
         np.testing.assert_allclose(getattr(lit, name), printed(text), rtol=0, atol=1e-8, err_msg=f"printed {name}")
 
