@@ -963,13 +963,6 @@ diagnose-worst = The pixel that differs most: ({ $x }, { $y }), your picture { $
 
 ## phonglab check: a student's work checked
 
-check-rules = rules assumed: { $rules }
-check-inputs-differ = your typed inputs differ from the assignment's: { $names }
-check-step = { $step }: yours { $student }, the key's { $key }: { $verdict }
-check-first-wrong = first wrong step: { $step } (yours { $student }, the key's { $key })
-check-all-right = all right: every step printed is the key's
-check-cause = likely cause: { $words } [{ $id }]. Evidence: at { $step } you printed { $student }, and the key with this mistake gives { $value }
-check-no-cause = no mistake in the catalogue reproduces everything you printed; look at the first wrong step
 check-nothing-printed = nothing printed that the key has: print each value as the worksheet does, print("vlv = ", vlv)
 check-report-scene = Assignment: { $scene }
 check-report-title = Class check
@@ -990,9 +983,7 @@ check-report-written = checked { $count ->
 }: { $path }
 check-printed-with-folder = --printed checks one script's printed text; a folder's notebooks are read from their own outputs: give one or the other
 check-report-needs-folder = --report and --csv are a class's: give a folder of notebooks (one notebook's check is printed, or written as --json)
-check-given-not-finite = not checked: a given is not a finite number ({ $givens })
 check-given-not-followed = not checked: a given is changed in place, which the checker does not follow ({ $givens }): assign it whole in one line
-check-printed-twice = printed more than once, with different values (each printing is checked): { $names }
 check-not-read-link = a link (a submission must be a file in the folder itself)
 check-not-read-folder = a folder (a submission is a notebook file)
 check-not-read-not-a-file = not a regular file (a FIFO or a device: a submission is a notebook file)
@@ -1000,7 +991,6 @@ check-chart-link = { $path } is a link: the chart's name comes from the report's
 check-chart-title = Causes in the class ({ $count } submissions)
 check-verdict-word-right = right
 check-verdict-word-wrong = wrong
-check-input-rules = the rule set
 check-scene-own = scene: the notebook's own (its typed inputs are taken as the assignment and cannot be wrong; give the assignment with --scene S.toml)
 check-scene-file = scene: { $path }
 check-scene-printed = scene: the worksheet's (the assignment with --scene S.toml)
@@ -1035,10 +1025,8 @@ student-ask-open = Open it as the scene
 student-picture-heading = Student's picture: { $file }
 student-picture-right = A: the right picture of this scene
 student-picture-theirs = B: the student's picture
-
 # fix57b
 read-link-refused = { $path } is a link: not read (a student’s work is read only from a file itself, never through a link)
 check-report-printed-twice = Steps printed more than once with different values (each printing was checked)
-
 # fixr3
 student-cause-beside = likely cause: { $words } [{ $id }] (the evidence is above the steps)

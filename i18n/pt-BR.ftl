@@ -963,13 +963,6 @@ diagnose-worst = O pixel que mais difere: ({ $x }, { $y }), a sua imagem { $imag
 
 ## phonglab check: o trabalho de um aluno verificado
 
-check-rules = regras assumidas: { $rules }
-check-inputs-differ = os dados que você digitou diferem dos do enunciado: { $names }
-check-step = { $step }: o seu { $student }, o do gabarito { $key }: { $verdict }
-check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o do gabarito { $key })
-check-all-right = tudo certo: todos os passos impressos são os do gabarito
-check-cause = causa provável: { $words } [{ $id }]. Evidência: em { $step } você imprimiu { $student }, e o gabarito com esse erro dá { $value }
-check-no-cause = nenhum erro do catálogo reproduz tudo o que você imprimiu; veja o primeiro passo errado
 check-nothing-printed = nada impresso que o gabarito tenha: imprima cada valor como a lista faz, print("vlv = ", vlv)
 check-report-scene = Enunciado: { $scene }
 check-report-title = Verificação da turma
@@ -990,9 +983,7 @@ check-report-written = { $count ->
 }: { $path }
 check-printed-with-folder = --printed verifica o texto impresso por um programa; os notebooks de uma pasta são lidos das próprias saídas: informe um ou outro
 check-report-needs-folder = --report e --csv são de uma turma: informe uma pasta de notebooks (a verificação de um notebook é escrita no terminal, ou com --json)
-check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
 check-given-not-followed = não verificado: um dado é alterado no próprio lugar, o que a verificação não segue ({ $givens }): atribua-o inteiro em uma só linha
-check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
 check-not-read-link = um link simbólico (um trabalho precisa ser um arquivo da própria pasta)
 check-not-read-folder = uma pasta (um trabalho é um arquivo de notebook)
 check-not-read-not-a-file = não é um arquivo comum (um FIFO ou um dispositivo: um trabalho é um arquivo de notebook)
@@ -1000,7 +991,6 @@ check-chart-link = { $path } é um link simbólico: o nome do gráfico vem do no
 check-chart-title = Causas na turma ({ $count } trabalhos)
 check-verdict-word-right = certo
 check-verdict-word-wrong = errado
-check-input-rules = as regras
 check-scene-own = cena: a do próprio notebook (os dados digitados nele são tomados como o enunciado e não podem estar errados; informe o enunciado com --scene S.toml)
 check-scene-file = cena: { $path }
 check-scene-printed = cena: a da lista (o enunciado com --scene S.toml)
@@ -1035,10 +1025,8 @@ student-ask-open = Abrir como cena
 student-picture-heading = Imagem do aluno: { $file }
 student-picture-right = A: a imagem correta desta cena
 student-picture-theirs = B: a imagem do aluno
-
 # fix57b
 read-link-refused = { $path } é um link simbólico: não foi lido (o trabalho de um aluno só é lido de um arquivo, nunca por meio de um link)
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
-
 # fixr3
 student-cause-beside = causa provável: { $words } [{ $id }] (a evidência está acima dos passos)

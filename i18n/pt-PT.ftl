@@ -963,13 +963,6 @@ diagnose-worst = O píxel que mais difere: ({ $x }, { $y }), a sua imagem { $ima
 
 ## phonglab check: o trabalho de um aluno verificado
 
-check-rules = regras assumidas: { $rules }
-check-inputs-differ = os dados que escreveu diferem dos do enunciado: { $names }
-check-step = { $step }: o seu { $student }, o da solução { $key }: { $verdict }
-check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o da solução { $key })
-check-all-right = tudo certo: todos os passos impressos são os da solução
-check-cause = causa provável: { $words } [{ $id }]. Evidência: em { $step } imprimiu { $student }, e a solução com este erro dá { $value }
-check-no-cause = nenhum erro do catálogo reproduz tudo o que imprimiu; veja o primeiro passo errado
 check-nothing-printed = nada impresso que a solução tenha: imprima cada valor como a ficha faz, print("vlv = ", vlv)
 check-report-scene = Enunciado: { $scene }
 check-report-title = Verificação da turma
@@ -990,9 +983,7 @@ check-report-written = { $count ->
 }: { $path }
 check-printed-with-folder = --printed verifica o texto impresso por um programa; os cadernos de uma pasta são lidos dos seus próprios resultados: indique um ou outro
 check-report-needs-folder = --report e --csv são de uma turma: indique uma pasta de cadernos (a verificação de um caderno é escrita no terminal, ou com --json)
-check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
 check-given-not-followed = não verificado: um dado é alterado no próprio lugar, o que a verificação não segue ({ $givens }): atribua-o inteiro numa só linha
-check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
 check-not-read-link = uma ligação simbólica (um trabalho tem de ser um ficheiro da própria pasta)
 check-not-read-folder = uma pasta (um trabalho é um ficheiro de caderno)
 check-not-read-not-a-file = não é um ficheiro normal (um FIFO ou um dispositivo: um trabalho é um ficheiro de caderno)
@@ -1000,7 +991,6 @@ check-chart-link = { $path } é uma ligação simbólica: o nome do gráfico vem
 check-chart-title = Causas na turma ({ $count } trabalhos)
 check-verdict-word-right = certo
 check-verdict-word-wrong = errado
-check-input-rules = as regras
 check-scene-own = cena: a do próprio caderno (os dados escritos nele são tomados como o enunciado e não podem estar errados; indique o enunciado com --scene S.toml)
 check-scene-file = cena: { $path }
 check-scene-printed = cena: a da ficha (o enunciado com --scene S.toml)
@@ -1035,10 +1025,8 @@ student-ask-open = Abrir como cena
 student-picture-heading = Imagem do aluno: { $file }
 student-picture-right = A: a imagem certa desta cena
 student-picture-theirs = B: a imagem do aluno
-
 # fix57b
 read-link-refused = { $path } é uma ligação simbólica: não foi lido (o trabalho de um aluno só é lido de um ficheiro, nunca através de uma ligação)
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
-
 # fixr3
 student-cause-beside = causa provável: { $words } [{ $id }] (a prova está acima dos passos)

@@ -32,6 +32,8 @@ CORE_DIR = ROOT / "crates/phonglab-core/i18n"
 APP_DIR = ROOT / "i18n"
 CORE_SRC = ROOT / "crates/phonglab-core/src"
 APP_SRC = ROOT / "src"
+# The Python package's extension module looks up the core's catalogue (phonglab_core::t!).
+PY_SRC = ROOT / "crates/phonglab-py/src"
 CORE_PREFIXES = ["material-name-"]
 APP_PREFIXES = ["preset-", "cli-", "material-", "back-"]
 APP_HEADERS = {
@@ -97,7 +99,7 @@ def used_by(text, prefixes, ident):
 
 def classify(entries):
     """Each id's catalogue: "core" or "app"."""
-    core_text, app_text = sources(CORE_SRC), sources(APP_SRC)
+    core_text, app_text = sources(CORE_SRC) + sources(PY_SRC), sources(APP_SRC)
     refs = {i: set(REF.findall("".join(x for x in lines if not x.startswith("#")))) for _, i, lines in entries}
     in_core = {i for i in refs if used_by(core_text, CORE_PREFIXES, i)}
     in_app = {i for i in refs if used_by(app_text, APP_PREFIXES, i)}

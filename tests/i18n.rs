@@ -34,8 +34,11 @@ fn app_sources() -> Vec<String> {
     source_texts("src")
 }
 
+/// The core's sources and the Python package's (its messages are the core's catalogue's).
 fn core_sources() -> Vec<String> {
-    source_texts("crates/phonglab-core/src")
+    let mut sources = source_texts("crates/phonglab-core/src");
+    sources.extend(source_texts("crates/phonglab-py/src"));
+    sources
 }
 
 /// Every `t!("id"` and `tr("id"` in `sources`.

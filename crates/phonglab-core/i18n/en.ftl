@@ -603,7 +603,6 @@ diagnose-flipped-normals = The normals point inwards (flipped)
 diagnose-two-sided-off = Two-sided lighting off: the back faces are lit with the front's normals
 diagnose-attenuation-left-out = The attenuation left out
 diagnose-spot-left-out = The spotlight's cone left out (cutoff 180)
-
 # diagnose: picture mistakes
 diagnose-shininess-fraction = The shininess given as the 0–1 value of a material table instead of that value times 128 (0.4 for 51.2): a highlight spread over the whole object
 diagnose-light-left-out = Light { $light } (GL_LIGHT{ $light }) left out: glEnable(GL_LIGHT{ $light }) missing
@@ -708,7 +707,22 @@ check-cause-attenuation-inverted = the attenuation inverted (at = 1/(...)) and t
 check-run-stopped = not checked: the run stopped with an error before the end: { $error }
 check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)
 check-unreadable-steps = not checked whole: these steps were printed with values that are not numbers as NumPy or Python prints them ({ $names }); print each value alone
-
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) draws the shading this program was written for (Gouraud: the vertices' colours interpolated; Phong: each pixel lit). With GL_FLAT the shaders draw what fixed-function OpenGL draws: each face in the colour lit at its provoking vertex (a triangle’s or a quad’s last vertex).
 py-two-side-program-comment = Lets the fragment shader’s gl_Color be the back colour on a triangle’s back side, as fixed-function GL chooses it; the shaders use it under glShadeModel(GL_FLAT).
+# phonglab-py: the Python package
+python-unknown-value = { $what }{ $value }: the values it takes are { $names }
+python-wrong-length = { $field }: { $count } numbers given, { $expected } expected
+python-no-such-light = there is no light { $light }: the scene has { $count } lights, numbered from 0
+python-wrong-shape = { $name }: an array of shape { $shape }, where (N, 3) is expected, the same N for the positions and the normals
+nb-self-check = Self-check: with the Python package phonglab installed (`pip install phonglab`), uncomment the cell below and run it after the others. It compares each value this notebook computed with the key, step by step, and names the first wrong step and its likely cause. Nothing here depends on it.
+check-rules = rules assumed: { $rules }
+check-inputs-differ = your typed inputs differ from the assignment's: { $names }
+check-step = { $step }: yours { $student }, the key's { $key }: { $verdict }
+check-first-wrong = first wrong step: { $step } (yours { $student }, the key's { $key })
+check-all-right = all right: every step printed is the key's
+check-cause = likely cause: { $words } [{ $id }]. Evidence: at { $step } you printed { $student }, and the key with this mistake gives { $value }
+check-no-cause = no mistake in the catalogue reproduces everything you printed; look at the first wrong step
+check-given-not-finite = not checked: a given is not a finite number ({ $givens })
+check-printed-twice = printed more than once, with different values (each printing is checked): { $names }
+check-input-rules = the rule set

@@ -603,7 +603,6 @@ diagnose-flipped-normals = As normais apontam para dentro (invertidas)
 diagnose-two-sided-off = A iluminação de dois lados desligada: as faces de trás são iluminadas com as normais da frente
 diagnose-attenuation-left-out = A atenuação esquecida
 diagnose-spot-left-out = O cone do foco esquecido (corte a 180)
-
 # diagnose: picture mistakes
 diagnose-shininess-fraction = O brilho dado como o valor de 0 a 1 de uma tabela de materiais em vez desse valor vezes 128 (0,4 em vez de 51,2): um reflexo espalhado por todo o objeto
 diagnose-light-left-out = A luz { $light } (GL_LIGHT{ $light }) esquecida: falta o glEnable(GL_LIGHT{ $light })
@@ -708,7 +707,22 @@ check-cause-attenuation-inverted = a atenuação invertida (at = 1/(...)) e depo
 check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
 check-nothing-compared = não verificado: nada do que imprimiu é um passo da ficha; imprima cada valor como a ficha faz, print("vlv = ", vlv)
 check-unreadable-steps = não verificado por inteiro: estes passos foram impressos com valores que não são números como o NumPy ou o Python os imprimem ({ $names }); imprima cada valor sozinho
-
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) desenha o sombreamento para que este programa foi escrito (Gouraud: as cores dos vértices interpoladas; Phong: cada píxel iluminado). Com GL_FLAT, os shaders desenham o que o OpenGL de pipeline fixo desenha: cada face na cor calculada no seu vértice provocante (o último vértice de um triângulo ou de um quadrilátero).
 py-two-side-program-comment = Faz com que o gl_Color do fragment shader seja a cor de trás na face de trás de um triângulo, como o GL de pipeline fixo a escolhe; os shaders usam-no com glShadeModel(GL_FLAT).
+# phonglab-py: the Python package
+python-unknown-value = { $what }{ $value }: os valores possíveis são { $names }
+python-wrong-length = { $field }: foram dados { $count } números, esperavam-se { $expected }
+python-no-such-light = não há luz { $light }: a cena tem { $count } luzes, numeradas a partir de 0
+python-wrong-shape = { $name }: uma matriz de forma { $shape }, quando se espera (N, 3), com o mesmo N para as posições e as normais
+nb-self-check = Autoverificação: com o pacote Python phonglab instalado (`pip install phonglab`), retire o comentário da célula abaixo e execute-a depois das outras. Compara cada valor que este caderno calculou com a solução, passo a passo, e indica o primeiro passo errado e a causa provável. Nada mais neste caderno depende dela.
+check-rules = regras assumidas: { $rules }
+check-inputs-differ = os dados que escreveu diferem dos do enunciado: { $names }
+check-step = { $step }: o seu { $student }, o da solução { $key }: { $verdict }
+check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o da solução { $key })
+check-all-right = tudo certo: todos os passos impressos são os da solução
+check-cause = causa provável: { $words } [{ $id }]. Evidência: em { $step } imprimiu { $student }, e a solução com este erro dá { $value }
+check-no-cause = nenhum erro do catálogo reproduz tudo o que imprimiu; veja o primeiro passo errado
+check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
+check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
+check-input-rules = as regras

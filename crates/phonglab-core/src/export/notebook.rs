@@ -260,7 +260,16 @@ pub fn cells(doc: &Document, key: &Key) -> Vec<Cell> {
         cells.push(Cell::Markdown(t!("nb-back")));
         cells.push(Cell::Code(back_side(scene, &needs)));
     }
+    cells.push(Cell::Markdown(t!("nb-self-check")));
+    cells.push(Cell::Code(self_check()));
     cells
+}
+
+/// The last cell, commented out: the Python package `phonglab` checks the values this
+/// notebook computed, step by step, in the language the notebook was written in.
+fn self_check() -> String {
+    let lang = crate::locale::current().lang.code();
+    format!("# import phonglab; phonglab.check(globals(), lang=\"{lang}\")")
 }
 
 /// `lightPos`: one array, or a list of them.

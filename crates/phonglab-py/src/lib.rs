@@ -1,0 +1,435 @@
+//! phonglab's core for Python: the extension module `phonglab._core` of the package
+//! `phonglab` (python/phonglab/ wraps it with NumPy arrays and Jupyter displays).
+//!
+//! Conversions only: every value is computed by `phonglab_core`, every message is the
+//! core's catalogue's, in the language the caller names.
+
+mod check;
+
+use glam::{DVec3, DVec4};
+use phonglab_core::explain::{Side, explain};
+use phonglab_core::locale::{Lang, Locale, with_locale};
+use phonglab_core::render::Renderer;
+use phonglab_core::{Document, Engine, EvalOptions, Light, Material, PowFn, Real, Scene, library, presets};
+use pyo3::create_exception;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyBytes;
+
+create_exception!(
+    _core,
+    SceneError,
+    PyValueError,
+    "A scene, or a value given for one, that phonglab refuses; the message is the command line's."
+);
+
+fn scene_error(message: impl ToString) -> PyErr {
+    SceneError::new_err(message.to_string())
+}
+
+/// `what=value`: not one of `names` (`what` ends in `=`, as a Python argument): the message every refused name gets.
+fn unknown(what: &str, value: &str, names: &str) -> PyErr {
+    // A number as Python writes it (`size=0`), a name quoted (`object="cube"`).
+    let shown = if value.parse::<f64>().is_ok() { value.to_string() } else { format!("{value:?}") };
+    scene_error(phonglab_core::t!("python-unknown-value", what = what, value = shown, names = names))
+}
+
+/// The locale of `lang` ("en", "pt-PT", "pt-BR").
+fn locale_of(lang: &str) -> PyResult<Locale> {
+    Lang::parse(lang).map(Locale::of).ok_or_else(|| unknown("lang=", lang, "en, pt-PT, pt-BR"))
+}
+
+/// A scene: the document the app holds (lighting state, camera, shaded view).
+#[pyclass(name = "Scene", module = "phonglab._core", from_py_object)]
+#[derive(Clone)]
+pub struct PyScene {
+    doc: Document,
+}
+
+/// The numbers a field path names: `light.I.FIELD`, `material.FIELD`, `vertex.FIELD`.
+enum Field<'a> {
+    Light(usize, &'a str),
+    Material(&'a str),
+    Vertex(&'a str),
+}
+
+fn parse_field(path: &str) -> PyResult<Field<'_>> {
+    let parts: Vec<&str> = path.split('.').collect();
+    match parts.as_slice() {
+        ["light", i, f] => i.parse().map(|i| Field::Light(i, f)).map_err(|_| unknown("light=", i, "0, 1, ...")),
+        ["material", f] => Ok(Field::Material(f)),
+        ["vertex", f] => Ok(Field::Vertex(f)),
+        _ => Err(unknown("field=", path, "light.I.FIELD, material.FIELD, vertex.FIELD")),
+    }
+}
+
+const LIGHT_FIELDS: &str =
+    "ambient, diffuse, specular, position, spot_direction, spot_cutoff, spot_exponent, attenuation";
+const MATERIAL_FIELDS: &str = "ambient, diffuse, specular, emission, shininess";
+
+fn v4(v: DVec4) -> Vec<f64> {
+    v.to_array().to_vec()
+}
+
+fn light_get(l: &Light, f: &str) -> PyResult<Vec<f64>> {
+    Ok(match f {
+        "ambient" => v4(l.ambient),
+        "diffuse" => v4(l.diffuse),
+        "specular" => v4(l.specular),
+        "position" => v4(l.position),
+        "spot_direction" => l.spot_direction.to_array().to_vec(),
+        "spot_cutoff" => vec![l.spot_cutoff],
+        "spot_exponent" => vec![l.spot_exponent],
+        "attenuation" => l.attenuation.to_vec(),
+        _ => return Err(unknown("light=", f, LIGHT_FIELDS)),
+    })
+}
+
+fn material_get(m: &Material, f: &str) -> PyResult<Vec<f64>> {
+    Ok(match f {
+        "ambient" => v4(m.ambient),
+        "diffuse" => v4(m.diffuse),
+        "specular" => v4(m.specular),
+        "emission" => v4(m.emission),
+        "shininess" => vec![m.shininess],
+        _ => return Err(unknown("material=", f, MATERIAL_FIELDS)),
+    })
+}
+
+/// `values` as `N` numbers, or the message naming `field`.
+fn exactly<const N: usize>(field: &str, values: &[f64]) -> PyResult<[f64; N]> {
+    values.try_into().map_err(|_| {
+        scene_error(phonglab_core::t!("python-wrong-length", field = field, count = values.len(), expected = N))
+    })
+}
+
+fn light_set(l: &mut Light, f: &str, x: &[f64]) -> PyResult<()> {
+    match f {
+        "ambient" => l.ambient = DVec4::from_array(exactly(f, x)?),
+        "diffuse" => l.diffuse = DVec4::from_array(exactly(f, x)?),
+        "specular" => l.specular = DVec4::from_array(exactly(f, x)?),
+        "position" => l.position = DVec4::from_array(exactly(f, x)?),
+        "spot_direction" => l.spot_direction = DVec3::from_array(exactly(f, x)?),
+        "spot_cutoff" => l.spot_cutoff = exactly::<1>(f, x)?[0],
+        "spot_exponent" => l.spot_exponent = exactly::<1>(f, x)?[0],
+        "attenuation" => l.attenuation = exactly(f, x)?,
+        _ => return Err(unknown("light=", f, LIGHT_FIELDS)),
+    }
+    Ok(())
+}
+
+fn material_set(m: &mut Material, f: &str, x: &[f64]) -> PyResult<()> {
+    match f {
+        "ambient" => m.ambient = DVec4::from_array(exactly(f, x)?),
+        "diffuse" => m.diffuse = DVec4::from_array(exactly(f, x)?),
+        "specular" => m.specular = DVec4::from_array(exactly(f, x)?),
+        "emission" => m.emission = DVec4::from_array(exactly(f, x)?),
+        "shininess" => m.shininess = exactly::<1>(f, x)?[0],
+        _ => return Err(unknown("material=", f, MATERIAL_FIELDS)),
+    }
+    Ok(())
+}
+
+fn light_index(scene: &Scene, i: usize) -> PyResult<usize> {
+    if i < scene.lights.len() {
+        return Ok(i);
+    }
+    Err(scene_error(phonglab_core::t!("python-no-such-light", light = i, count = scene.lights.len())))
+}
+
+#[pymethods]
+impl PyScene {
+    /// Reads a scene file's text (TOML); `folder` is where a relative mesh path is read from.
+    #[staticmethod]
+    #[pyo3(signature = (text, folder=None))]
+    fn from_toml(text: &str, folder: Option<std::path::PathBuf>) -> PyResult<Self> {
+        let doc = Document::from_toml_in(text, folder.as_deref()).map_err(scene_error)?;
+        Ok(PyScene { doc })
+    }
+
+    /// The worksheet's scene with modelview `n` (1 to 5).
+    #[staticmethod]
+    fn worksheet(n: usize) -> PyResult<Self> {
+        if !(1..=5).contains(&n) {
+            return Err(unknown("worksheet=", &n.to_string(), "1, 2, 3, 4, 5"));
+        }
+        let scene = presets::worksheet(n);
+        let name = phonglab_core::t!("doc-worksheet", k = n.to_string());
+        Ok(PyScene { doc: Document::from_scene(&name, phonglab_core::CameraSpec::Worksheet(n as u8), scene) })
+    }
+
+    /// A ready-made scene: "worksheet" (the app's start scene) or "phong-demo".
+    #[staticmethod]
+    fn preset(name: &str) -> PyResult<Self> {
+        let doc = match name {
+            "worksheet" => Document::default(),
+            "phong-demo" => library::phong_demo_document(),
+            other => return Err(unknown("preset=", other, "worksheet, phong-demo")),
+        };
+        Ok(PyScene { doc })
+    }
+
+    /// Reads the scene a notebook's text (`notebook` true: .ipynb) or a script's sets up,
+    /// as the app's Import does: (the scene, notices of lines not read).
+    #[staticmethod]
+    fn from_notebook(text: &str, notebook: bool, name: &str) -> PyResult<(Self, Vec<String>)> {
+        let imported = phonglab_core::export::read_python::read(text, notebook, name).map_err(scene_error)?;
+        Ok((PyScene { doc: imported.doc }, imported.notices))
+    }
+
+    /// The scene file's text (TOML), every value explicit.
+    fn to_toml(&self) -> PyResult<String> {
+        self.doc.to_toml().map_err(scene_error)
+    }
+
+    /// The scene's title.
+    #[getter]
+    fn name(&self) -> String {
+        self.doc.name.clone()
+    }
+
+    /// How many lights are enabled.
+    fn light_count(&self) -> usize {
+        self.doc.scene.lights.len()
+    }
+
+    /// The numbers of `path` (`light.0.position`, `material.diffuse`, `vertex.normal`).
+    fn get(&self, path: &str) -> PyResult<Vec<f64>> {
+        let s = &self.doc.scene;
+        match parse_field(path)? {
+            Field::Light(i, f) => light_get(&s.lights[light_index(s, i)?], f),
+            Field::Material(f) => material_get(&s.material, f),
+            Field::Vertex("position") => Ok(v4(s.vertex.position)),
+            Field::Vertex("normal") => Ok(s.vertex.normal.to_array().to_vec()),
+            Field::Vertex(f) => Err(unknown("vertex=", f, "position, normal")),
+        }
+    }
+
+    /// Sets `path` to `values`, checked as the app checks an edit: a refused value raises
+    /// `SceneError` and leaves the scene as it was.
+    fn set(&mut self, path: &str, values: Vec<f64>) -> PyResult<()> {
+        let mut doc = self.doc.clone();
+        let s = &mut doc.scene;
+        match parse_field(path)? {
+            Field::Light(i, f) => {
+                let i = light_index(s, i)?;
+                light_set(&mut s.lights[i], f, &values)?;
+            }
+            Field::Material(f) => material_set(&mut s.material, f, &values)?,
+            Field::Vertex("position") => s.vertex.position = DVec4::from_array(exactly("position", &values)?),
+            Field::Vertex("normal") => s.vertex.normal = DVec3::from_array(exactly("normal", &values)?),
+            Field::Vertex(f) => return Err(unknown("vertex=", f, "position, normal")),
+        }
+        doc.validate().map_err(scene_error)?;
+        self.doc = doc;
+        Ok(())
+    }
+
+    fn __repr__(&self) -> String {
+        format!("phonglab.Scene({:?})", self.doc.name)
+    }
+}
+
+/// One step of the worked calculation: (worksheet name, title, formula, value, light, the
+/// value as the worked calculation prints it).
+type StepRow = (String, String, String, Option<Vec<f64>>, Option<usize>, String);
+
+fn steps_of<S: Real>(scene: &Scene) -> PyResult<(Vec<StepRow>, String, String)> {
+    let lit = Engine::<S>::light_scene_vertex(scene).map_err(scene_error)?;
+    let ex = explain(scene, &lit, Side::Front);
+    let rows = ex.steps.iter().map(|s| {
+        let shown = s.value.as_deref().map(|v| phonglab_core::explain::fmt_value(v, 8)).unwrap_or_default();
+        (s.name.clone(), s.title.clone(), s.formula.clone(), s.value.clone(), s.light, shown)
+    });
+    Ok((rows.collect(), ex.to_text(8), ex.to_markdown(8)))
+}
+
+/// The worked calculation of the scene's vertex: its steps, as text and as Markdown, in
+/// `lang`, at `precision` ("f64" or "f32").
+#[pyfunction]
+#[pyo3(signature = (scene, precision="f64", lang="en"))]
+fn light(scene: &PyScene, precision: &str, lang: &str) -> PyResult<(Vec<StepRow>, String, String)> {
+    with_locale(locale_of(lang)?, || match precision {
+        "f64" => steps_of::<f64>(&scene.doc.scene),
+        "f32" => steps_of::<f32>(&scene.doc.scene),
+        other => Err(unknown("precision=", other, "f64, f32")),
+    })
+}
+
+/// Refuses arrays that are not (N, 3), the same N for `positions` and `normals`.
+fn check_shapes(positions: &[usize], normals: &[usize]) -> PyResult<()> {
+    for (name, shape) in [("light_many(positions)", positions), ("light_many(normals)", normals)] {
+        if shape.len() != 2 || shape[1] != 3 || shape[0] != positions[0] {
+            let shape = format!("({})", shape.iter().map(usize::to_string).collect::<Vec<_>>().join(", "));
+            return Err(scene_error(phonglab_core::t!("python-wrong-shape", name = name, shape = shape)));
+        }
+    }
+    Ok(())
+}
+
+/// Little-endian f32 triples as vectors (one pass, no copy between).
+fn vectors(bytes: &[u8]) -> Vec<glam::Vec3> {
+    let float = |b: &[u8]| f32::from_le_bytes([b[0], b[1], b[2], b[3]]);
+    bytes.chunks_exact(12).map(|c| glam::Vec3::new(float(&c[0..4]), float(&c[4..8]), float(&c[8..12]))).collect()
+}
+
+/// Lights the vertices given as little-endian f32 bytes (positions and normals, arrays of
+/// shapes `shapes`, (N, 3) each, in object space) through the specialised lighter, the GIL
+/// released: N x 4 f32 colours (primary + secondary, unclamped; alpha the diffuse's).
+#[pyfunction]
+fn light_many<'py>(
+    py: Python<'py>,
+    scene: &PyScene,
+    positions: &[u8],
+    normals: &[u8],
+    shapes: (Vec<usize>, Vec<usize>),
+) -> PyResult<Bound<'py, PyBytes>> {
+    check_shapes(&shapes.0, &shapes.1)?;
+    let (p, n) = (vectors(positions), vectors(normals));
+    if p.len() != shapes.0[0] || n.len() != p.len() {
+        return Err(scene_error(phonglab_core::t!(
+            "python-wrong-shape",
+            name = "light_many(positions)",
+            shape = format!("({}, 3)", p.len())
+        )));
+    }
+    let lighter = phonglab_core::lighter::Lighter::new(&scene.doc.scene, EvalOptions::with_pow(PowFn::Exact))
+        .map_err(scene_error)?;
+    let front = py.detach(move || {
+        let mut front = vec![[0f32; 4]; p.len()];
+        lighter.light_batch_sum(&p, &n, &mut front, None);
+        front
+    });
+    // Written straight into the bytes object Python receives.
+    PyBytes::new_with(py, front.len() * 16, |out| {
+        for (chunk, x) in out.chunks_exact_mut(4).zip(front.iter().flatten()) {
+            chunk.copy_from_slice(&x.to_le_bytes());
+        }
+        Ok(())
+    })
+}
+
+fn named<T: serde::de::DeserializeOwned>(what: &str, value: &str, names: &str) -> PyResult<T> {
+    serde_json::from_value(serde_json::Value::String(value.to_string())).map_err(|_| unknown(what, value, names))
+}
+
+/// The document drawn: the scene's, with `object` and `shading` when given.
+fn view_doc(scene: &PyScene, object: Option<&str>, shading: Option<&str>) -> PyResult<Document> {
+    let mut doc = scene.doc.clone();
+    if let Some(o) = object {
+        doc.view.object = named("object=", o, "sphere, teapot, cylinder")?;
+    }
+    if let Some(s) = shading {
+        doc.view.shading = named("shading=", s, "gouraud, phong, flat")?;
+    }
+    doc.validate().map_err(scene_error)?;
+    Ok(doc)
+}
+
+/// The shaded view as `phonglab render` draws it: (RGBA8 bytes, width, height).
+#[pyfunction]
+#[pyo3(signature = (scene, object=None, shading=None, size=512))]
+fn render<'py>(
+    py: Python<'py>,
+    scene: &PyScene,
+    object: Option<&str>,
+    shading: Option<&str>,
+    size: usize,
+) -> PyResult<(Bound<'py, PyBytes>, usize, usize)> {
+    if !(1..=8192).contains(&size) {
+        return Err(unknown("size=", &size.to_string(), "1 ... 8192"));
+    }
+    let doc = view_doc(scene, object, shading)?;
+    let image = py.detach(move || {
+        let mesh = doc.view.mesh();
+        let setup = doc.shaded_setup(PowFn::Exact);
+        let mut r = Renderer::new();
+        r.render(&setup.job(&mesh), size, size).map(|(img, _)| (img.rgba.clone(), img.width, img.height))
+    });
+    let (rgba, w, h) = image.map_err(scene_error)?;
+    Ok((PyBytes::new(py, &rgba), w, h))
+}
+
+/// Why pixel (x, y) of the shaded view is its colour: the probe's numbers as JSON text
+/// (`{"covered": false}` off the object).
+#[pyfunction]
+#[pyo3(signature = (scene, x, y, object=None, shading=None, size=512))]
+fn probe(
+    scene: &PyScene,
+    x: usize,
+    y: usize,
+    object: Option<&str>,
+    shading: Option<&str>,
+    size: usize,
+) -> PyResult<String> {
+    if !(1..=8192).contains(&size) || x >= size || y >= size {
+        return Err(unknown("x, y = ", &format!("{x}, {y}"), &format!("0 ... {}", size.saturating_sub(1))));
+    }
+    let doc = view_doc(scene, object, shading)?;
+    let mesh = doc.view.mesh();
+    let setup = doc.shaded_setup(PowFn::Exact);
+    let job = setup.job(&mesh);
+    let mut r = Renderer::new();
+    r.render(&job, size, size).map_err(scene_error)?;
+    let value = match phonglab_core::probe::probe(&r, &job, x, y).map_err(scene_error)? {
+        None => serde_json::json!({ "x": x, "y": y, "covered": false }),
+        Some(p) => {
+            let mut v = serde_json::to_value(&p).map_err(scene_error)?;
+            v["covered"] = true.into();
+            v["size"] = size.into();
+            v
+        }
+    };
+    Ok(value.to_string())
+}
+
+/// The GLSL or WGSL program that draws the scene's shaded view (`phonglab shader`).
+#[pyfunction]
+#[pyo3(signature = (scene, target="glsl", shading="gouraud"))]
+fn shader(scene: &PyScene, target: &str, shading: &str) -> PyResult<String> {
+    use phonglab_core::shader::{ShaderShading, ShadingLanguage};
+    let lang = match target {
+        "glsl" => ShadingLanguage::Glsl,
+        "wgsl" => ShadingLanguage::Wgsl,
+        other => return Err(unknown("target=", other, "glsl, wgsl")),
+    };
+    let shading = match shading {
+        "gouraud" => ShaderShading::Gouraud,
+        "phong" => ShaderShading::Phong,
+        other => return Err(unknown("shading=", other, "gouraud, phong")),
+    };
+    let s = phonglab_core::shader::for_view(&scene.doc, lang, shading).map_err(scene_error)?;
+    Ok(s.text(lang))
+}
+
+/// The scene as a link to the browser build (`phonglab share`).
+#[pyfunction]
+#[pyo3(signature = (scene, base=phonglab_core::export::share::DEFAULT_BASE))]
+fn share_link(scene: &PyScene, base: &str) -> PyResult<String> {
+    use phonglab_core::export::share::{Shared, link};
+    link(base, &Shared::of(scene.doc.clone())).map_err(scene_error)
+}
+
+/// Checks a notebook's work as `phonglab check` does: `code` the cells run, in order (the
+/// givens are read from it, nothing is run), `printed` its values as `name = value` lines.
+/// The table in `lang`, and whether every step is right.
+#[pyfunction]
+#[pyo3(signature = (code, printed, lang="en"))]
+fn check_work(code: &str, printed: &str, lang: &str) -> PyResult<(String, bool)> {
+    with_locale(locale_of(lang)?, || check::check_work(code, printed)).map_err(scene_error)
+}
+
+/// The extension module.
+#[pymodule]
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("SceneError", m.py().get_type::<SceneError>())?;
+    m.add_class::<PyScene>()?;
+    m.add_function(wrap_pyfunction!(light, m)?)?;
+    m.add_function(wrap_pyfunction!(light_many, m)?)?;
+    m.add_function(wrap_pyfunction!(render, m)?)?;
+    m.add_function(wrap_pyfunction!(probe, m)?)?;
+    m.add_function(wrap_pyfunction!(shader, m)?)?;
+    m.add_function(wrap_pyfunction!(share_link, m)?)?;
+    m.add_function(wrap_pyfunction!(check_work, m)?)?;
+    Ok(())
+}
