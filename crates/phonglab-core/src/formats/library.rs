@@ -147,7 +147,7 @@ mod tests {
         let english = with_locale(Locale::of(Lang::En), || crate::formats::document::Document::default().name);
         assert_eq!(english, "the worksheet, mview5");
         assert_eq!(with_locale(Locale::of(Lang::PtPt), || localised_name(&english)), "a ficha, mview5");
-        assert_eq!(with_locale(Locale::of(Lang::PtBr), || localised_name("Ficha, mview3")), "Ficha, mview3");
+        assert_eq!(with_locale(Locale::of(Lang::PtBr), || localised_name("Ficha, mview3")), "Lista, mview3");
         assert_eq!(with_locale(Locale::of(Lang::En), || localised_name("Ficha, mview3")), "Worksheet, mview3");
         assert_eq!(localised_name("my scene"), "my scene");
         // The shipped scene files' names (English in the files).
