@@ -183,6 +183,14 @@ fn three_lights_turned() -> Drawing {
     d
 }
 
+/// The spotlight scene with an emission (none of the shipped scenes has one): the
+/// emission's own mistakes apply.
+fn glowing_spotlight() -> Drawing {
+    let mut d = shipped("spotlight");
+    d.scene.material.emission = DVec4::new(0.15, 0.1, 0.05, 1.0);
+    d
+}
+
 /// Each mistake added after the first twelve, made on a scene where it applies (for each
 /// light in turn where it is made per light), drawn by phonglab, shifted a pixel, with
 /// 8-bit noise: the verdict is wrong and it is named first (or tied first with a mistake
@@ -194,6 +202,7 @@ fn each_state_mistake_for_each_light_shifted_and_noised_is_named_first() {
         ("spotlight", shipped("spotlight")),
         ("of-set-color", shipped("of-set-color")),
         ("worksheet-mview5", shipped("worksheet-mview5")),
+        ("glowing spotlight", glowing_spotlight()),
     ];
     let mut named = std::collections::BTreeSet::new();
     let mut report = Vec::new();
