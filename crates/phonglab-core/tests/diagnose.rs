@@ -291,6 +291,12 @@ fn a_mistake_that_changes_nothing_is_not_offered() {
         "colour-material-diffuse-only",
         "light-after-model",
         "emission-added",
+        "spot-cutoff-halved",
+        "spot-cutoff-radians",
+        "spot-exponent-ignored",
+        "spot-cutoff-exponent-swapped",
+        "spot-direction-reversed",
+        "emission-left-out",
     ] {
         assert!(!three.contains(&absent), "{absent}: {three:?}");
     }
@@ -300,6 +306,15 @@ fn a_mistake_that_changes_nothing_is_not_offered() {
     assert_eq!(three.iter().filter(|&&id| id == "light-left-out").count(), 4);
     assert_eq!(three.iter().filter(|&&id| id == "point-as-directional").count(), 3);
     assert_eq!(three.iter().filter(|&&id| id == "headlight-under-view").count(), 1);
+    // One light is directional; the three placed in the world have a modelview whose
+    // transpose differs (the headlight's identity does not): the lights' transposed
+    // modelview is offered for all of them and for each of the three alone.
+    assert_eq!(three.iter().filter(|&&id| id == "directional-as-point").count(), 1);
+    assert_eq!(three.iter().filter(|&&id| id == "row-vectors").count(), 4);
+    let spot = ids(&shipped("spotlight"));
+    for id in ["spot-cutoff-halved", "spot-cutoff-radians", "spot-direction-reversed", "row-vectors"] {
+        assert_eq!(spot.iter().filter(|&&i| i == id).count(), 1, "{id}: {spot:?}");
+    }
     let of = ids(&shipped("of-set-color"));
     assert!(of.contains(&"colour-material-off") && of.contains(&"colour-material-diffuse-only"), "{of:?}");
     assert!(ids(&shipped("spotlight")).contains(&"spot-direction-untransformed"));
