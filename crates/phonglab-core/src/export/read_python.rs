@@ -236,7 +236,7 @@ fn after_line(line: &str, mut open: Option<&'static str>) -> Option<&'static str
         }
         // Outside a triple-quoted string: a comment ends the line; a one-line string is
         // skipped to its closing quote (a backslash escapes).
-        let Some(i) = rest.find(['#', '"', '\'']) else { return None };
+        let i = rest.find(['#', '"', '\''])?;
         let c = rest[i..].chars().next().unwrap_or('#');
         if c == '#' {
             return None;
