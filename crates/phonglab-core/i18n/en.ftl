@@ -610,13 +610,35 @@ diagnose-point-as-directional = Light { $light } (GL_LIGHT{ $light }) given w = 
 diagnose-light-ambient-left-out = The ambient colour of light { $light } (GL_LIGHT{ $light }) left at OpenGL's default (0, 0, 0, 1)
 diagnose-specular-left-out = The material's specular colour left at OpenGL's default (0, 0, 0, 1): no highlight
 diagnose-diffuse-specular-swapped = The material's diffuse and specular colours exchanged
-diagnose-emission-added = An emission the scene does not have: about { $emission } added to every pixel (GL_EMISSION)
+diagnose-emission-added = A constant colour, about { $emission }, added where the object is lit or not: an emission (GL_EMISSION) the scene does not have, or more ambient
 diagnose-attenuation-left-out-light = The attenuation of light { $light } (GL_LIGHT{ $light }) left out
 diagnose-spot-direction-untransformed = The spot direction of light { $light } (GL_LIGHT{ $light }) given before the camera transform (under the identity), its position after it
 diagnose-light-after-model = The lights placed in the world given after the model transform (under view × model instead of the view): they turn with the object
 diagnose-headlight-under-view = Light { $light } (GL_LIGHT{ $light }), fixed to the eye, given under the view transform instead of the identity: placed in the world
 diagnose-colour-material-off = GL_COLOR_MATERIAL not enabled: the object is lit with the glMaterial colours, not the current colour
 diagnose-colour-material-diffuse-only = glColorMaterial tracking GL_DIFFUSE only instead of GL_AMBIENT_AND_DIFFUSE: the ambient stays the glMaterial one
+diagnose-spot-cutoff-halved = The spot cutoff of light { $light } (GL_LIGHT{ $light }) halved: the cone's full angle given where GL_SPOT_CUTOFF takes its half angle
+diagnose-spot-cutoff-radians = The spot cutoff of light { $light } (GL_LIGHT{ $light }) given in radians (math.radians): OpenGL takes GL_SPOT_CUTOFF in degrees
+diagnose-spot-exponent-ignored = The spot exponent of light { $light } (GL_LIGHT{ $light }) left out (0): a hard-edged pool of light
+diagnose-spot-cutoff-exponent-swapped = The spot cutoff and the spot exponent of light { $light } (GL_LIGHT{ $light }) exchanged
+diagnose-spot-direction-reversed = The spot direction of light { $light } (GL_LIGHT{ $light }) reversed: pointing from the target to the light
+diagnose-attenuation-terms-swapped = The linear and quadratic attenuation of light { $light } (GL_LIGHT{ $light }) exchanged
+diagnose-attenuation-constant-left-out = The constant attenuation of light { $light } (GL_LIGHT{ $light }) set to 0 (as if 0 meant no attenuation)
+diagnose-directional-as-point = Light { $light } (GL_LIGHT{ $light }) given w = 1 in GL_POSITION: a point light instead of a directional light
+diagnose-diffuse-back-only = The material's diffuse colour given for GL_BACK only: the front faces keep OpenGL's default (0.8, 0.8, 0.8)
+diagnose-ambient-back-only = The material's ambient colour given for GL_BACK only: the front faces keep OpenGL's default (0.2, 0.2, 0.2)
+diagnose-specular-back-only = The material's specular colour and shininess given for GL_BACK only: the front faces keep OpenGL's defaults (no highlight)
+diagnose-material-back-only = Every glMaterial call given for GL_BACK only: the front faces keep OpenGL's default material
+diagnose-light-colour-0-255 = The diffuse colour of light { $light } (GL_LIGHT{ $light }) given in 0..255 instead of 0..1
+diagnose-row-vectors = The lights' modelview loaded transposed (NumPy's rows given to glLoadMatrixf as columns)
+diagnose-light-ambient-from-diffuse = The ambient colour of light { $light } (GL_LIGHT{ $light }) copied from its diffuse colour
+diagnose-ambient-from-diffuse = The material's ambient given its diffuse colour (GL_AMBIENT_AND_DIFFUSE)
+diagnose-specular-from-colour = The material's specular colour given the object's colour: a coloured highlight
+diagnose-emission-left-out = The material's emission left at black (0, 0, 0, 1)
+diagnose-row-vectors-light = The modelview of light { $light } (GL_LIGHT{ $light }) loaded transposed (NumPy's rows given to glLoadMatrixf as columns)
+diagnose-emission-from-colour = The material's emission given the object's colour: the object glows in its own colour
+diagnose-ambient-diffuse-swapped = The material's ambient and diffuse colours exchanged
+diagnose-light-diffuse-left-out = The diffuse colour of light { $light } (GL_LIGHT{ $light }) never set: OpenGL's default, white for GL_LIGHT0 and black for the others
 
 ## phonglab check: a student's work checked
 

@@ -610,13 +610,35 @@ diagnose-point-as-directional = A luz { $light } (GL_LIGHT{ $light }) com w = 0 
 diagnose-light-ambient-left-out = A cor ambiente da luz { $light } (GL_LIGHT{ $light }) deixada no valor padrão do OpenGL (0, 0, 0, 1)
 diagnose-specular-left-out = A cor especular do material deixada no valor padrão do OpenGL (0, 0, 0, 1): sem brilho
 diagnose-diffuse-specular-swapped = As cores difusa e especular do material trocadas
-diagnose-emission-added = Uma emissão que a cena não tem: cerca de { $emission } somado a cada pixel (GL_EMISSION)
+diagnose-emission-added = Uma cor constante, cerca de { $emission }, somada onde o objeto está iluminado ou não: uma emissão (GL_EMISSION) que a cena não tem, ou mais luz ambiente
 diagnose-attenuation-left-out-light = A atenuação da luz { $light } (GL_LIGHT{ $light }) esquecida
 diagnose-spot-direction-untransformed = A direção do spot da luz { $light } (GL_LIGHT{ $light }) dada antes da transformação da câmera (com a identidade), e a posição dela depois
 diagnose-light-after-model = As luzes colocadas no mundo dadas depois da transformação de modelo (com visão × modelo em vez da visão): elas giram com o objeto
 diagnose-headlight-under-view = A luz { $light } (GL_LIGHT{ $light }), presa ao olho, dada com a transformação de visão em vez da identidade: fica colocada no mundo
 diagnose-colour-material-off = GL_COLOR_MATERIAL não ativado: o objeto é iluminado com as cores do glMaterial, não com a cor corrente
 diagnose-colour-material-diffuse-only = O glColorMaterial acompanhando só GL_DIFFUSE em vez de GL_AMBIENT_AND_DIFFUSE: a cor ambiente continua a do glMaterial
+diagnose-spot-cutoff-halved = O corte do spot da luz { $light } (GL_LIGHT{ $light }) pela metade: foi dado o ângulo total do cone onde GL_SPOT_CUTOFF recebe a metade dele
+diagnose-spot-cutoff-radians = O corte do spot da luz { $light } (GL_LIGHT{ $light }) dado em radianos (math.radians): o OpenGL recebe GL_SPOT_CUTOFF em graus
+diagnose-spot-exponent-ignored = O expoente do spot da luz { $light } (GL_LIGHT{ $light }) esquecido (0): um círculo de luz de borda nítida
+diagnose-spot-cutoff-exponent-swapped = O corte e o expoente do spot da luz { $light } (GL_LIGHT{ $light }) trocados
+diagnose-spot-direction-reversed = A direção do spot da luz { $light } (GL_LIGHT{ $light }) invertida: aponta do alvo para a luz
+diagnose-attenuation-terms-swapped = As atenuações linear e quadrática da luz { $light } (GL_LIGHT{ $light }) trocadas
+diagnose-attenuation-constant-left-out = A atenuação constante da luz { $light } (GL_LIGHT{ $light }) zerada (como se 0 quisesse dizer sem atenuação)
+diagnose-directional-as-point = A luz { $light } (GL_LIGHT{ $light }) com w = 1 no GL_POSITION: uma luz pontual em vez de uma luz direcional
+diagnose-diffuse-back-only = A cor difusa do material dada só para GL_BACK: as faces da frente ficam com o valor padrão do OpenGL (0,8, 0,8, 0,8)
+diagnose-ambient-back-only = A cor ambiente do material dada só para GL_BACK: as faces da frente ficam com o valor padrão do OpenGL (0,2, 0,2, 0,2)
+diagnose-specular-back-only = A cor especular e o brilho do material dados só para GL_BACK: as faces da frente ficam com os valores padrão do OpenGL (sem brilho)
+diagnose-material-back-only = Todas as chamadas glMaterial dadas só para GL_BACK: as faces da frente ficam com o material padrão do OpenGL
+diagnose-light-colour-0-255 = A cor difusa da luz { $light } (GL_LIGHT{ $light }) dada de 0 a 255 em vez de 0 a 1
+diagnose-row-vectors = A matriz modelview das luzes carregada transposta (as linhas do NumPy passadas ao glLoadMatrixf como colunas)
+diagnose-light-ambient-from-diffuse = A cor ambiente da luz { $light } (GL_LIGHT{ $light }) copiada da cor difusa dela
+diagnose-ambient-from-diffuse = A cor ambiente do material igual à cor difusa dele (GL_AMBIENT_AND_DIFFUSE)
+diagnose-specular-from-colour = A cor especular do material igual à cor do objeto: um brilho colorido
+diagnose-emission-left-out = A emissão do material deixada em preto (0, 0, 0, 1)
+diagnose-row-vectors-light = A matriz modelview da luz { $light } (GL_LIGHT{ $light }) carregada transposta (as linhas do NumPy passadas ao glLoadMatrixf como colunas)
+diagnose-emission-from-colour = A emissão do material igual à cor do objeto: o objeto brilha com a própria cor
+diagnose-ambient-diffuse-swapped = As cores ambiente e difusa do material trocadas
+diagnose-light-diffuse-left-out = A cor difusa da luz { $light } (GL_LIGHT{ $light }) nunca definida: o valor padrão do OpenGL, branco para GL_LIGHT0 e preto para as outras
 
 ## phonglab check: o trabalho de um aluno verificado
 

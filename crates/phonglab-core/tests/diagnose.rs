@@ -183,6 +183,14 @@ fn three_lights_turned() -> Drawing {
     d
 }
 
+/// The spotlight scene with an emission (none of the shipped scenes has one): the
+/// emission's own mistakes apply.
+fn glowing_spotlight() -> Drawing {
+    let mut d = shipped("spotlight");
+    d.scene.material.emission = DVec4::new(0.15, 0.1, 0.05, 1.0);
+    d
+}
+
 /// Each mistake added after the first twelve, made on a scene where it applies (for each
 /// light in turn where it is made per light), drawn by phonglab, shifted a pixel, with
 /// 8-bit noise: the verdict is wrong and it is named first (or tied first with a mistake
@@ -194,6 +202,7 @@ fn each_state_mistake_for_each_light_shifted_and_noised_is_named_first() {
         ("spotlight", shipped("spotlight")),
         ("of-set-color", shipped("of-set-color")),
         ("worksheet-mview5", shipped("worksheet-mview5")),
+        ("glowing spotlight", glowing_spotlight()),
     ];
     let mut named = std::collections::BTreeSet::new();
     let mut report = Vec::new();
@@ -282,6 +291,12 @@ fn a_mistake_that_changes_nothing_is_not_offered() {
         "colour-material-diffuse-only",
         "light-after-model",
         "emission-added",
+        "spot-cutoff-halved",
+        "spot-cutoff-radians",
+        "spot-exponent-ignored",
+        "spot-cutoff-exponent-swapped",
+        "spot-direction-reversed",
+        "emission-left-out",
     ] {
         assert!(!three.contains(&absent), "{absent}: {three:?}");
     }
@@ -291,6 +306,15 @@ fn a_mistake_that_changes_nothing_is_not_offered() {
     assert_eq!(three.iter().filter(|&&id| id == "light-left-out").count(), 4);
     assert_eq!(three.iter().filter(|&&id| id == "point-as-directional").count(), 3);
     assert_eq!(three.iter().filter(|&&id| id == "headlight-under-view").count(), 1);
+    // One light is directional; the three placed in the world have a modelview whose
+    // transpose differs (the headlight's identity does not): the lights' transposed
+    // modelview is offered for all of them and for each of the three alone.
+    assert_eq!(three.iter().filter(|&&id| id == "directional-as-point").count(), 1);
+    assert_eq!(three.iter().filter(|&&id| id == "row-vectors").count(), 4);
+    let spot = ids(&shipped("spotlight"));
+    for id in ["spot-cutoff-halved", "spot-cutoff-radians", "spot-direction-reversed", "row-vectors"] {
+        assert_eq!(spot.iter().filter(|&&i| i == id).count(), 1, "{id}: {spot:?}");
+    }
     let of = ids(&shipped("of-set-color"));
     assert!(of.contains(&"colour-material-off") && of.contains(&"colour-material-diffuse-only"), "{of:?}");
     assert!(ids(&shipped("spotlight")).contains(&"spot-direction-untransformed"));

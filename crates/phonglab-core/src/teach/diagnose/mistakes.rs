@@ -289,6 +289,177 @@ fn colour_material_diffuse_only(d: &mut Drawing, _: At) -> bool {
     }
 }
 
+/// A spotlight's cutoff halved (the cone's full angle taken for the cutoff).
+fn spot_cutoff_halved(d: &mut Drawing, at: At) -> bool {
+    the_light(d, at, Light::is_spot, |l| l.spot_cutoff /= 2.0)
+}
+
+/// A spotlight's cutoff given in radians (`math.radians(12)`: 0.21), which OpenGL takes
+/// as degrees.
+fn spot_cutoff_radians(d: &mut Drawing, at: At) -> bool {
+    the_light(d, at, |l| l.is_spot() && l.spot_cutoff > 0.0, |l| l.spot_cutoff = l.spot_cutoff.to_radians())
+}
+
+/// A spotlight's exponent left out: 0, a hard-edged pool.
+fn spot_exponent_ignored(d: &mut Drawing, at: At) -> bool {
+    the_light(d, at, |l| l.is_spot() && l.spot_exponent != 0.0, |l| l.spot_exponent = 0.0)
+}
+
+/// A spotlight's cutoff and exponent exchanged, where OpenGL takes both (a cutoff in
+/// [0, 90], an exponent in [0, 128]; otherwise the call is refused and nothing changes).
+fn spot_cutoff_exponent_swapped(d: &mut Drawing, at: At) -> bool {
+    let takes = |l: &Light| l.is_spot() && l.spot_exponent <= 90.0 && l.spot_cutoff != l.spot_exponent;
+    the_light(d, at, takes, |l| std::mem::swap(&mut l.spot_cutoff, &mut l.spot_exponent))
+}
+
+/// A spotlight's direction reversed: pointing from the target to the light.
+fn spot_direction_reversed(d: &mut Drawing, at: At) -> bool {
+    the_light(d, at, |l| l.is_spot() && l.spot_direction != glam::DVec3::ZERO, |l| l.spot_direction = -l.spot_direction)
+}
+
+/// A positional light's linear and quadratic attenuation exchanged.
+fn attenuation_terms_swapped(d: &mut Drawing, at: At) -> bool {
+    let differ = |l: &Light| !l.is_directional() && l.attenuation[1] != l.attenuation[2];
+    the_light(d, at, differ, |l| l.attenuation.swap(1, 2))
+}
+
+/// A positional light's constant attenuation 0 (thinking 0 means none), where a linear or
+/// quadratic term keeps the division finite.
+fn attenuation_constant_left_out(d: &mut Drawing, at: At) -> bool {
+    let applies = |l: &Light| {
+        let [constant, linear, quadratic] = l.attenuation;
+        !l.is_directional() && constant != 0.0 && linear + quadratic > 0.0
+    };
+    the_light(d, at, applies, |l| l.attenuation[0] = 0.0)
+}
+
+/// A directional light given w = 1: a point light at its direction.
+fn directional_as_point(d: &mut Drawing, at: At) -> bool {
+    the_light(d, at, Light::is_directional, |l| l.position.w = 1.0)
+}
+
+/// The material's properties `part` given for `GL_BACK` only: the back keeps the scene's
+/// material, the front OpenGL's defaults for them.
+fn back_only(d: &mut Drawing, part: fn(&mut Material, &Material)) -> bool {
+    let given = d.scene.material.clone();
+    let mut front = given.clone();
+    part(&mut front, &Material::default());
+    if front == given {
+        return false;
+    }
+    d.scene.back_material.get_or_insert(given);
+    d.scene.material = front;
+    true
+}
+
+/// The material's diffuse colour given for `GL_BACK` only.
+fn diffuse_back_only(d: &mut Drawing, _: At) -> bool {
+    back_only(d, |m, gl| m.diffuse = gl.diffuse)
+}
+
+/// The material's ambient colour given for `GL_BACK` only.
+fn ambient_back_only(d: &mut Drawing, _: At) -> bool {
+    back_only(d, |m, gl| m.ambient = gl.ambient)
+}
+
+/// The material's specular colour and shininess given for `GL_BACK` only.
+fn specular_back_only(d: &mut Drawing, _: At) -> bool {
+    back_only(d, |m, gl| (m.specular, m.shininess) = (gl.specular, gl.shininess))
+}
+
+/// Every `glMaterial` call given for `GL_BACK` only.
+fn material_back_only(d: &mut Drawing, _: At) -> bool {
+    back_only(d, |m, gl| *m = gl.clone())
+}
+
+/// A light's diffuse colour given in 0..255 (as `ofSetColor` takes it) instead of 0..1.
+fn light_colour_255(d: &mut Drawing, at: At) -> bool {
+    let scale = |c: &mut DVec4| *c = (c.truncate() * 255.0).extend(c.w);
+    the_light(d, at, |l| l.diffuse.truncate().max_element() > 0.0, |l| scale(&mut l.diffuse))
+}
+
+/// Light `i`'s modelview, where loading it transposed would change it.
+fn transposable(d: &Drawing, i: usize) -> Option<glam::DMat4> {
+    let m = d.scene.eye_from_light(d.scene.lights.get(i)?);
+    (m != m.transpose()).then_some(m)
+}
+
+/// Light `i` placed under its modelview's transpose; false where that changes nothing.
+fn transposed(d: &mut Drawing, i: usize) -> bool {
+    match transposable(d, i) {
+        Some(m) => {
+            d.scene.lights[i].placement = LightPlacement::Matrix(m.transpose());
+            true
+        }
+        None => false,
+    }
+}
+
+/// The lights' modelview loaded transposed (NumPy's rows given to `glLoadMatrixf` as
+/// columns): each light placed under its matrix's transpose.
+fn row_vectors(d: &mut Drawing, _: At) -> bool {
+    let mut changed = false;
+    for i in 0..d.scene.lights.len() {
+        changed |= transposed(d, i);
+    }
+    changed
+}
+
+/// One light's modelview loaded transposed, where several lights would change (with one,
+/// the all-lights row draws the same picture).
+fn row_vectors_alone(d: &mut Drawing, at: At) -> bool {
+    let several = (0..d.scene.lights.len()).filter(|&i| transposable(d, i).is_some()).count() >= 2;
+    several && transposed(d, at.light)
+}
+
+/// A light's ambient colour copied from its diffuse colour.
+fn light_ambient_from_diffuse(d: &mut Drawing, at: At) -> bool {
+    the_light(d, at, |l| l.ambient.truncate() != l.diffuse.truncate(), |l| l.ambient = l.diffuse)
+}
+
+/// The material's ambient given its diffuse colour (`GL_AMBIENT_AND_DIFFUSE`).
+fn ambient_from_diffuse(d: &mut Drawing, _: At) -> bool {
+    each_material(d, |m| m.ambient = m.diffuse)
+}
+
+/// The object's colour: the current colour where colour material tracks the diffuse,
+/// else the material's diffuse.
+fn object_colour(d: &Drawing) -> DVec4 {
+    match &d.scene.color_material {
+        Some(c) if matches!(c.mode, ColorMaterialMode::Diffuse | ColorMaterialMode::AmbientAndDiffuse) => c.color,
+        _ => d.scene.material.diffuse,
+    }
+}
+
+/// The material's specular colour given the object's colour.
+fn specular_from_colour(d: &mut Drawing, _: At) -> bool {
+    let colour = object_colour(d);
+    each_material(d, |m| m.specular = colour)
+}
+
+/// The material's emission given the object's colour.
+fn emission_from_colour(d: &mut Drawing, _: At) -> bool {
+    let colour = object_colour(d);
+    each_material(d, |m| m.emission = colour)
+}
+
+/// The material's ambient and diffuse colours exchanged.
+fn ambient_diffuse_swapped(d: &mut Drawing, _: At) -> bool {
+    each_material(d, |m| std::mem::swap(&mut m.ambient, &mut m.diffuse))
+}
+
+/// A light's diffuse colour never set: OpenGL's default, white for light 0, black for
+/// the others.
+fn light_diffuse_left_out(d: &mut Drawing, at: At) -> bool {
+    let default = Light::gl_default(at.light).diffuse;
+    the_light(d, at, |l| l.diffuse != default, |l| l.diffuse = default)
+}
+
+/// The material's emission left at black.
+fn emission_left_out(d: &mut Drawing, _: At) -> bool {
+    each_material(d, |m| m.emission = DVec4::new(0.0, 0.0, 0.0, 1.0))
+}
+
 /// A row of the table.
 const fn row(id: &'static str, message: &'static str, apply: fn(&mut Drawing, At) -> bool) -> PictureMistake {
     PictureMistake { id, message, scope: Scope::Scene, apply }
@@ -300,7 +471,7 @@ const fn per_light(id: &'static str, message: &'static str, apply: fn(&mut Drawi
 }
 
 /// The picture mistakes, in the order the docs list them.
-pub const MISTAKES: [PictureMistake; 25] = [
+pub const MISTAKES: [PictureMistake; 47] = [
     row("normal-by-modelview", "wrong-cause-normals-by-m", normals_by_modelview),
     row("normal-not-normalised", "diagnose-normalize-off", normalize_off),
     row("reflection-for-halfway", "wrong-cause-reflection-for-halfway", reflection_for_halfway),
@@ -319,13 +490,37 @@ pub const MISTAKES: [PictureMistake; 25] = [
     per_light("light-ambient-left-out", "diagnose-light-ambient-left-out", light_ambient_left_out),
     row("specular-left-out", "diagnose-specular-left-out", specular_left_out),
     row("diffuse-specular-swapped", "diagnose-diffuse-specular-swapped", diffuse_specular_swapped),
-    row("emission-added", "diagnose-emission-added", emission_added),
     per_light("attenuation-left-out", "diagnose-attenuation-left-out-light", attenuation_left_out_alone),
     per_light("spot-direction-untransformed", "diagnose-spot-direction-untransformed", spot_direction_untransformed),
     row("light-after-model", "diagnose-light-after-model", light_after_model),
     per_light("headlight-under-view", "diagnose-headlight-under-view", headlight_under_view),
     row("colour-material-off", "diagnose-colour-material-off", colour_material_off),
     row("colour-material-diffuse-only", "diagnose-colour-material-diffuse-only", colour_material_diffuse_only),
+    per_light("spot-cutoff-halved", "diagnose-spot-cutoff-halved", spot_cutoff_halved),
+    per_light("spot-cutoff-radians", "diagnose-spot-cutoff-radians", spot_cutoff_radians),
+    per_light("spot-exponent-ignored", "diagnose-spot-exponent-ignored", spot_exponent_ignored),
+    per_light("spot-cutoff-exponent-swapped", "diagnose-spot-cutoff-exponent-swapped", spot_cutoff_exponent_swapped),
+    per_light("spot-direction-reversed", "diagnose-spot-direction-reversed", spot_direction_reversed),
+    per_light("attenuation-terms-swapped", "diagnose-attenuation-terms-swapped", attenuation_terms_swapped),
+    per_light("attenuation-constant-left-out", "diagnose-attenuation-constant-left-out", attenuation_constant_left_out),
+    per_light("directional-as-point", "diagnose-directional-as-point", directional_as_point),
+    row("diffuse-back-only", "diagnose-diffuse-back-only", diffuse_back_only),
+    row("ambient-back-only", "diagnose-ambient-back-only", ambient_back_only),
+    row("specular-back-only", "diagnose-specular-back-only", specular_back_only),
+    row("material-back-only", "diagnose-material-back-only", material_back_only),
+    per_light("light-colour-0-255", "diagnose-light-colour-0-255", light_colour_255),
+    row("row-vectors", "diagnose-row-vectors", row_vectors),
+    per_light("row-vectors", "diagnose-row-vectors-light", row_vectors_alone),
+    per_light("light-ambient-from-diffuse", "diagnose-light-ambient-from-diffuse", light_ambient_from_diffuse),
+    row("ambient-from-diffuse", "diagnose-ambient-from-diffuse", ambient_from_diffuse),
+    row("specular-from-colour", "diagnose-specular-from-colour", specular_from_colour),
+    row("emission-left-out", "diagnose-emission-left-out", emission_left_out),
+    row("emission-from-colour", "diagnose-emission-from-colour", emission_from_colour),
+    row("ambient-diffuse-swapped", "diagnose-ambient-diffuse-swapped", ambient_diffuse_swapped),
+    per_light("light-diffuse-left-out", "diagnose-light-diffuse-left-out", light_diffuse_left_out),
+    // Last: its colour is fitted, so a mistake of the scene's own values that draws the
+    // same picture (the material's ambient given its diffuse) is named before it.
+    row("emission-added", "diagnose-emission-added", emission_added),
 ];
 
 /// Each mistake this drawing offers, with where it is made: the table's rows, the
