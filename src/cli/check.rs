@@ -9,8 +9,9 @@ use std::path::{Path, PathBuf};
 use crate::t;
 use anyhow::Result;
 use clap::Args;
+use phonglab_core::study::check::check;
 use phonglab_core::study::check::printed::{Printed, read_printed_text};
-use phonglab_core::study::check::{Check, check};
+use phonglab_core::study::check::said::words;
 
 /// `phonglab check`.
 #[derive(Args, Debug)]
@@ -100,67 +101,10 @@ pub fn run(a: &CheckArgs) -> Result<bool> {
     Ok(c.right())
 }
 
-/// Numbers for people, in the locale's mark.
-pub fn numbers(v: &[f64]) -> String {
-    let parts: Vec<String> = v.iter().map(|x| crate::locale::num(*x, 8)).collect();
-    if parts.len() == 1 { parts[0].clone() } else { format!("[{}]", parts.join("  ")) }
-}
-
-/// The check in words, one line a finding.
-pub fn words(c: &Check) -> String {
-    let mut out = format!("{}\n", t!("check-rules", rules = c.rules.to_string()));
-    if !c.inputs_differ.is_empty() {
-        out.push_str(&format!("{}\n", t!("check-inputs-differ", names = super::check_class::input_names(c))));
-    }
-    let again = super::check_class::printed_again(c);
-    if !again.is_empty() {
-        out.push_str(&format!("{}\n", t!("check-printed-twice", names = again.join(", "))));
-    }
-    for s in &c.steps {
-        let line = t!(
-            "check-step",
-            step = s.name.clone(),
-            student = numbers(&s.student),
-            key = numbers(&s.key),
-            verdict = s.verdict.words()
-        );
-        out.push_str(&format!("  {line}\n"));
-    }
-    match c.first_wrong.and_then(|k| c.steps.get(k)) {
-        Some(s) => out.push_str(&format!(
-            "{}\n",
-            t!("check-first-wrong", step = s.name.clone(), student = numbers(&s.student), key = numbers(&s.key))
-        )),
-        None if c.right() => out.push_str(&format!("{}\n", t!("check-all-right"))),
-        None => {}
-    }
-    if let Some(why) = c.unchecked() {
-        out.push_str(&format!("{}\n", why.words()));
-    }
-    for cause in &c.causes {
-        let student = c.steps.iter().find(|s| s.name == cause.step).map_or_else(String::new, |s| numbers(&s.student));
-        out.push_str(&format!(
-            "{}\n    {}\n",
-            t!(
-                "check-cause",
-                words = cause.words(),
-                id = cause.info.id,
-                step = cause.step.clone(),
-                student = student,
-                value = numbers(&cause.value)
-            ),
-            cause.formula()
-        ));
-    }
-    if c.first_wrong.is_some() && c.causes.is_empty() {
-        out.push_str(&format!("{}\n", t!("check-no-cause")));
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use phonglab_core::study::check::Check;
 
     /// The rule set is named in words where typed inputs differ, never as the id `rules`.
     #[test]
@@ -174,7 +118,7 @@ mod tests {
             errors: Vec::new(),
             unreadable: Vec::new(),
         };
-        let names = crate::cli::check_class::input_names(&c);
+        let names = phonglab_core::study::check::said::input_names(&c);
         assert_eq!(names, format!("lightPos, {}", t!("check-input-rules")));
         assert!(!names.contains("rules") || t!("check-input-rules").contains("rules"));
         assert!(words(&c).contains(&names));

@@ -13,6 +13,7 @@ use crate::t;
 use anyhow::Result;
 use phonglab_core::escape;
 use phonglab_core::scene::Scene;
+use phonglab_core::study::check::said::{input_names, printed_again};
 use phonglab_core::study::check::{Check, check};
 
 use crate::io::student_code::read_notebook;
@@ -339,22 +340,4 @@ pub fn marks_csv(marked: &[Marked]) -> String {
 pub fn chart_png(counts: &[(String, usize)], total: usize) -> (usize, usize, Vec<u8>) {
     let c = super::class_chart::chart(counts, total);
     (c.width, c.height, c.rgba)
-}
-
-/// The typed inputs that differ, by the worksheet's names (the rule set in words).
-pub fn input_names(c: &Check) -> String {
-    let name = |n: &String| if n == "rules" { t!("check-input-rules") } else { n.clone() };
-    c.inputs_differ.iter().map(name).collect::<Vec<_>>().join(", ")
-}
-
-/// The steps printed more than once with different numbers (each printing is checked).
-pub fn printed_again(c: &Check) -> Vec<String> {
-    let mut names: Vec<String> = Vec::new();
-    for (k, s) in c.steps.iter().enumerate() {
-        let again = c.steps[..k].iter().any(|old| old.name == s.name && old.student != s.student);
-        if again && !names.contains(&s.name) {
-            names.push(s.name.clone());
-        }
-    }
-    names
 }

@@ -7,6 +7,7 @@
 use egui::{Color32, RichText, Ui};
 use phonglab_core::scene::Scene;
 use phonglab_core::study::check::printed::Printed;
+use phonglab_core::study::check::said::{cause_line, numbers};
 use phonglab_core::study::check::{Check, StepCheck, Verdict, check};
 
 use crate::app::widgets::palette;
@@ -77,12 +78,6 @@ pub fn first_wrong_frame(ui: &Ui) -> egui::Frame {
         .inner_margin(4.0)
 }
 
-/// Numbers as the calculation shows them, in the locale's decimal mark.
-fn numbers(v: &[f64]) -> String {
-    let parts: Vec<String> = v.iter().map(|x| crate::locale::num(*x, 8)).collect();
-    if parts.len() == 1 { parts[0].clone() } else { format!("[{}]", parts.join("  ")) }
-}
-
 /// The student's value under the key's, with its verdict; the first wrong step's with its
 /// marker and its likely causes in words (`first_wrong`: the check, when it is the first
 /// wrong step), so that the step and why are seen together.
@@ -144,16 +139,7 @@ fn findings_ui(ui: &mut Ui, c: &Check) {
         None => {}
     }
     for cause in &c.causes {
-        let student = c.steps.iter().find(|s| s.name == cause.step).map_or_else(String::new, |s| numbers(&s.student));
-        let line = t!(
-            "check-cause",
-            words = cause.words(),
-            id = cause.info.id,
-            step = cause.step.clone(),
-            student = student,
-            value = numbers(&cause.value)
-        );
-        ui.add(egui::Label::new(line).wrap());
+        ui.add(egui::Label::new(cause_line(c, cause)).wrap());
         ui.add(egui::Label::new(RichText::new(cause.formula()).monospace().weak()).wrap());
     }
     if c.first_wrong.is_some() && c.causes.is_empty() {

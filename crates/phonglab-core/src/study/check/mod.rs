@@ -6,6 +6,7 @@
 
 pub mod mistakes;
 pub mod printed;
+pub mod said;
 pub mod worked;
 
 use crate::model::rules::Rules;

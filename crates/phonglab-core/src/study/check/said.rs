@@ -1,0 +1,87 @@
+//! A check in words: the table `phonglab check` prints and the notebook's self-check
+//! prints (`phonglab.check(globals())`), one line a finding, in the user's language and
+//! decimal mark. The class report and the window use its pieces.
+
+use super::{Cause, Check};
+use crate::locale::num;
+use crate::t;
+
+/// Numbers for people, in the locale's mark: one alone, several in brackets.
+pub fn numbers(v: &[f64]) -> String {
+    let parts: Vec<String> = v.iter().map(|x| num(*x, 8)).collect();
+    if parts.len() == 1 { parts[0].clone() } else { format!("[{}]", parts.join("  ")) }
+}
+
+/// The typed inputs that differ, by the worksheet's names (the rule set in words).
+pub fn input_names(c: &Check) -> String {
+    let name = |n: &String| if n == "rules" { t!("check-input-rules") } else { n.clone() };
+    c.inputs_differ.iter().map(name).collect::<Vec<_>>().join(", ")
+}
+
+/// The steps printed more than once with different numbers (each printing is checked).
+pub fn printed_again(c: &Check) -> Vec<String> {
+    let mut names: Vec<String> = Vec::new();
+    for (k, s) in c.steps.iter().enumerate() {
+        let again = c.steps[..k].iter().any(|old| old.name == s.name && old.student != s.student);
+        if again && !names.contains(&s.name) {
+            names.push(s.name.clone());
+        }
+    }
+    names
+}
+
+/// A cause in words with its evidence: what the student printed at its step, and what the
+/// key worked with the mistake gives there.
+pub fn cause_line(c: &Check, cause: &Cause) -> String {
+    let student = c.steps.iter().find(|s| s.name == cause.step).map_or_else(String::new, |s| numbers(&s.student));
+    t!(
+        "check-cause",
+        words = cause.words(),
+        id = cause.info.id,
+        step = cause.step.clone(),
+        student = student,
+        value = numbers(&cause.value)
+    )
+}
+
+/// The check in words, one line a finding: the rules, the typed inputs that differ, the
+/// steps printed twice, each step, the first wrong one (or all right), why not checked,
+/// and the causes with their formulas.
+pub fn words(c: &Check) -> String {
+    let mut out = format!("{}\n", t!("check-rules", rules = c.rules.to_string()));
+    if !c.inputs_differ.is_empty() {
+        out.push_str(&format!("{}\n", t!("check-inputs-differ", names = input_names(c))));
+    }
+    let again = printed_again(c);
+    if !again.is_empty() {
+        out.push_str(&format!("{}\n", t!("check-printed-twice", names = again.join(", "))));
+    }
+    for s in &c.steps {
+        let line = t!(
+            "check-step",
+            step = s.name.clone(),
+            student = numbers(&s.student),
+            key = numbers(&s.key),
+            verdict = s.verdict.words()
+        );
+        out.push_str(&format!("  {line}\n"));
+    }
+    match c.first_wrong.and_then(|k| c.steps.get(k)) {
+        Some(s) => out.push_str(&format!(
+            "{}\n",
+            t!("check-first-wrong", step = s.name.clone(), student = numbers(&s.student), key = numbers(&s.key))
+        )),
+        None if c.right() => out.push_str(&format!("{}\n", t!("check-all-right"))),
+        None => {}
+    }
+    if let Some(why) = c.unchecked() {
+        out.push_str(&format!("{}\n", why.words()));
+    }
+    for cause in &c.causes {
+        out.push_str(&format!("{}\n    {}\n", cause_line(c, cause), cause.formula()));
+    }
+    if c.first_wrong.is_some() && c.causes.is_empty() {
+        out.push_str(&format!("{}\n", t!("check-no-cause")));
+    }
+    out
+}
