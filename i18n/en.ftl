@@ -983,7 +983,6 @@ check-report-written = checked { $count ->
 }: { $path }
 check-printed-with-folder = --printed checks one script's printed text; a folder's notebooks are read from their own outputs: give one or the other
 check-report-needs-folder = --report and --csv are a class's: give a folder of notebooks (one notebook's check is printed, or written as --json)
-check-given-not-followed = not checked: a given is changed in place, which the checker does not follow ({ $givens }): assign it whole in one line
 check-not-read-link = a link (a submission must be a file in the folder itself)
 check-not-read-folder = a folder (a submission is a notebook file)
 check-not-read-not-a-file = not a regular file (a FIFO or a device: a submission is a notebook file)

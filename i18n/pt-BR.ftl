@@ -983,7 +983,6 @@ check-report-written = { $count ->
 }: { $path }
 check-printed-with-folder = --printed verifica o texto impresso por um programa; os notebooks de uma pasta são lidos das próprias saídas: informe um ou outro
 check-report-needs-folder = --report e --csv são de uma turma: informe uma pasta de notebooks (a verificação de um notebook é escrita no terminal, ou com --json)
-check-given-not-followed = não verificado: um dado é alterado no próprio lugar, o que a verificação não segue ({ $givens }): atribua-o inteiro em uma só linha
 check-not-read-link = um link simbólico (um trabalho precisa ser um arquivo da própria pasta)
 check-not-read-folder = uma pasta (um trabalho é um arquivo de notebook)
 check-not-read-not-a-file = não é um arquivo comum (um FIFO ou um dispositivo: um trabalho é um arquivo de notebook)

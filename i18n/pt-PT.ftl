@@ -983,7 +983,6 @@ check-report-written = { $count ->
 }: { $path }
 check-printed-with-folder = --printed verifica o texto impresso por um programa; os cadernos de uma pasta são lidos dos seus próprios resultados: indique um ou outro
 check-report-needs-folder = --report e --csv são de uma turma: indique uma pasta de cadernos (a verificação de um caderno é escrita no terminal, ou com --json)
-check-given-not-followed = não verificado: um dado é alterado no próprio lugar, o que a verificação não segue ({ $givens }): atribua-o inteiro numa só linha
 check-not-read-link = uma ligação simbólica (um trabalho tem de ser um ficheiro da própria pasta)
 check-not-read-folder = uma pasta (um trabalho é um ficheiro de caderno)
 check-not-read-not-a-file = não é um ficheiro normal (um FIFO ou um dispositivo: um trabalho é um ficheiro de caderno)

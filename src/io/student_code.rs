@@ -47,17 +47,8 @@ pub fn read_notebook(path: &Path) -> anyhow::Result<Work> {
         super::input_file::read_text_submission(path, cap, &crate::t!("file-kind-code")).map_err(anyhow::Error::msg)?;
     let notebook = student_code(path) == Some(true);
     let imported = import_text(&text, notebook, path).map_err(anyhow::Error::msg)?;
-    // A given that is not a finite number is refused, named: never checked against the
-    // worksheet's value put in its place.
-    if !imported.not_finite.is_empty() {
-        let shown = super::reasons::shown(path);
-        anyhow::bail!("{shown}: {}", crate::t!("check-given-not-finite", givens = imported.not_finite.join("; ")));
-    }
-    // A given changed in place (`lightPos[2] *= 2`) is refused too: the reader would check
-    // a value Python never used.
-    if !imported.not_followed.is_empty() {
-        let shown = super::reasons::shown(path);
-        anyhow::bail!("{shown}: {}", crate::t!("check-given-not-followed", givens = imported.not_followed.join("; ")));
+    if let Some(why) = imported.not_checkable() {
+        anyhow::bail!("{}: {why}", super::reasons::shown(path));
     }
     let printed = if notebook {
         phonglab_core::study::check::printed::notebook_outputs(&text)

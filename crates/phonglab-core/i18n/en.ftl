@@ -748,3 +748,4 @@ check-no-cause = no mistake in the catalogue reproduces everything you printed; 
 check-given-not-finite = not checked: a given is not a finite number ({ $givens })
 check-printed-twice = printed more than once, with different values (each printing is checked): { $names }
 check-input-rules = the rule set
+check-given-not-followed = not checked: a given is changed in place, which the checker does not follow ({ $givens }): assign it whole in one line

@@ -748,3 +748,4 @@ check-no-cause = nenhum erro do catálogo reproduz tudo o que imprimiu; veja o p
 check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
 check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
 check-input-rules = as regras
+check-given-not-followed = não verificado: um dado é alterado no próprio lugar, o que a verificação não segue ({ $givens }): atribua-o inteiro numa só linha

@@ -6,15 +6,14 @@ use phonglab_core::export::read_python;
 use phonglab_core::study::check::check;
 use phonglab_core::study::check::printed::read_printed_text;
 use phonglab_core::study::check::said::words;
-use phonglab_core::t;
 
 /// Checks the work whose code is `code` (the cells run, in order: the givens are read from
 /// it, nothing is run) and whose values are `printed` (`name = value` lines): the table
 /// and whether every step is right.
 pub fn check_work(code: &str, printed: &str) -> Result<(String, bool), String> {
     let imported = read_python::read(code, false, "notebook").map_err(|e| e.to_string())?;
-    if !imported.not_finite.is_empty() {
-        return Err(t!("check-given-not-finite", givens = imported.not_finite.join("; ")));
+    if let Some(why) = imported.not_checkable() {
+        return Err(why);
     }
     let mut student = read_printed_text(printed).map_err(|e| e.to_string())?;
     student.code = code.to_string();

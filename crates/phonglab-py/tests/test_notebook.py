@@ -47,3 +47,15 @@ def test_a_mistake_is_named_with_its_step_in_the_notebooks_language(cli, tmp_pat
     cells[0]["source"] = source.replace("np.dot(vertexNormal, vlv)", "np.dot(vertexNormal, 2*vlv)", 1)
     text = run(nb)
     assert "cosTheta" in text and "primeiro passo errado: cosTheta" in text, text
+
+
+def test_a_given_changed_in_place_is_refused_naming_it():
+    """As `phonglab check` refuses it: never checked as a value Python did not use."""
+    import phonglab
+
+    code = (
+        "import numpy as np\nvertexPos = np.array([-512, -384, 0, 1])\n"
+        "lightPos = np.array([0, 0, 45, 1])\nlightPos[2] *= 2\n"
+    )
+    with pytest.raises(phonglab.SceneError, match=r"changed in place.*lightPos \(line 4\)"):
+        phonglab.check({"In": [code]})

@@ -55,6 +55,18 @@ pub struct Imported {
     pub not_followed: Vec<String>,
 }
 
+impl Imported {
+    /// Why the work cannot be checked from what was read, in the user's words: a given
+    /// that is not a finite number, or one changed in place, is refused, named, never
+    /// checked as the worksheet's value put in its place or a value Python never used.
+    pub fn not_checkable(&self) -> Option<String> {
+        if !self.not_finite.is_empty() {
+            return Some(t!("check-given-not-finite", givens = self.not_finite.join("; ")));
+        }
+        (!self.not_followed.is_empty()).then(|| t!("check-given-not-followed", givens = self.not_followed.join("; ")))
+    }
+}
+
 /// Why nothing could be read at all.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum ImportError {
