@@ -37,11 +37,15 @@ pub fn glu_sphere(radius: f32, slices: u32, stacks: u32) -> Mesh {
     for i in 0..slices {
         m.triangles.push([top, r1 + i + 1, r1 + i]);
     }
+    // GLU sends each band as a quad strip from the lower ring's vertex to the upper's
+    // (b_i, a_i, b_i+1, a_i+1, ...), and OpenGL (Mesa's draw module, last-vertex convention)
+    // splits quad (b_i, a_i, a_i+1, b_i+1) along b_i to a_i+1: (b_i+1, b_i, a_i+1) and
+    // (b_i, a_i, a_i+1). The diagonal shows in Gouraud on a coarse sphere.
     for w in rings.windows(2) {
         let (a, b) = (w[0], w[1]);
         for i in 0..slices {
-            m.triangles.push([a + i, a + i + 1, b + i + 1]);
-            m.triangles.push([a + i, b + i + 1, b + i]);
+            m.triangles.push([b + i + 1, b + i, a + i + 1]);
+            m.triangles.push([b + i, a + i, a + i + 1]);
         }
     }
     let rl = *rings.last().unwrap_or(&r1);
