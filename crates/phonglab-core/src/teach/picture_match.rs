@@ -63,6 +63,25 @@ pub fn compare(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size
     Match { score, pixels, worst, worst_levels }
 }
 
+/// How far `picture` is from `image`, continuously: the mean over the object's pixels (as
+/// [`compare`] counts them) of the levels by which a pixel misses its best neighbour in the
+/// other past [`TOLERANCE`] (the way [`compare`] measures a pixel; noise within it costs
+/// nothing). A search for the value a picture shows descends on it where the share of
+/// matching pixels is flat.
+pub fn mean_miss(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> f64 {
+    let (mut pixels, mut sum) = (0usize, 0u64);
+    for p in 0..size * size {
+        let in_image = apart(&image[p * 4..p * 4 + 3], &bg) > TOLERANCE;
+        if !covered[p] && !in_image {
+            continue;
+        }
+        pixels += 1;
+        let miss = nearest(image, picture, size, p).max(nearest(picture, image, size, p));
+        sum += u64::from(miss.saturating_sub(TOLERANCE));
+    }
+    if pixels == 0 { 0.0 } else { sum as f64 / pixels as f64 }
+}
+
 /// The difference image of `picture` and `image` (RGBA8, opaque): black where they agree,
 /// each channel's difference four times brighter elsewhere.
 pub fn difference_image(picture: &[u8], image: &[u8]) -> Vec<u8> {
@@ -79,6 +98,28 @@ pub fn difference_image(picture: &[u8], image: &[u8]) -> Vec<u8> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_mean_miss_forgives_a_pixel_s_shift_and_counts_the_rest() {
+        // A bright pixel at the centre of grey, and the same moved a pixel: nothing missed.
+        let grey = |bright: usize| -> Vec<u8> {
+            (0..9).flat_map(|p| if p == bright { [200, 200, 200, 255] } else { [100, 100, 100, 255] }).collect()
+        };
+        let covered = [true; 9];
+        assert_eq!(mean_miss(&grey(4), &covered, &grey(8), [0, 0, 0], 3), 0.0);
+        // Six levels more on the left column (three pixels of nine): three past the
+        // tolerance, a mean of 1; two levels more is noise within it.
+        let flat = grey(usize::MAX);
+        let mut brighter = flat.clone();
+        for p in [0, 3, 6] {
+            brighter[p * 4 + 1] += 6;
+        }
+        assert_eq!(mean_miss(&flat, &covered, &brighter, [0, 0, 0], 3), 1.0);
+        for p in [0, 3, 6] {
+            brighter[p * 4 + 1] -= 4;
+        }
+        assert_eq!(mean_miss(&flat, &covered, &brighter, [0, 0, 0], 3), 0.0);
+    }
 
     fn square(size: usize, at: (usize, usize), colour: [u8; 3], bg: [u8; 3]) -> (Vec<u8>, Vec<bool>) {
         let mut rgba = Vec::new();

@@ -9,7 +9,9 @@ use crate::model::rules::{RuleSet, SpecularModel};
 use crate::model::scene::{ColorMaterialMode, Light, LightPlacement, Material, NormalMode};
 use crate::model::view::ShadingMode;
 
+use super::colours::{self, Colours};
 use super::drawing::Drawing;
+use super::values::{self, Values};
 
 /// Where a mistake is made: once for the scene, or for each light in turn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -28,6 +30,10 @@ pub struct At {
     pub light: usize,
     /// The emission the picture shows beyond the right one (linear RGB, 0 to 1).
     pub emission: [f64; 3],
+    /// The products of colours the picture shows, term by term (for `colours-differ`).
+    pub colours: Option<Colours>,
+    /// The single numbers the picture shows (for `spot-cutoff-differs` and its kin).
+    pub values: Values,
 }
 
 /// A mistake a picture can show: its id (kebab-case, the same as `phonglab check`'s where
@@ -50,10 +56,24 @@ impl PictureMistake {
         use crate::locale::Arg;
         let e = at.emission;
         let emission = crate::locale::decimal(&format!("({:.2}, {:.2}, {:.2})", e[0], e[1], e[2]));
-        crate::locale::tr_args(
-            self.message,
-            &[("light", Arg::Text(at.light.to_string())), ("emission", Arg::Text(emission))],
-        )
+        let mut args = vec![
+            ("light", Arg::Text(at.light.to_string())),
+            ("emission", Arg::Text(emission)),
+            ("terms", Arg::Text(at.colours.map(|c| colours::said(&c)).unwrap_or_default())),
+        ];
+        let number = |v: f64| Arg::Text(crate::locale::decimal(&values::shown(v)));
+        let own = at.values.lights.get(at.light).copied().unwrap_or_default();
+        for (k, fitted) in own.into_iter().enumerate() {
+            if let Some((picture, scene)) = fitted {
+                args.push((values::ARGS[k].0, number(picture)));
+                args.push((values::ARGS[k].1, number(scene)));
+            }
+        }
+        if let Some((picture, scene)) = at.values.shininess {
+            args.push((values::ARGS[5].0, number(picture)));
+            args.push((values::ARGS[5].1, number(scene)));
+        }
+        crate::locale::tr_args(self.message, &args)
     }
 
     /// Its words in the reader's language (a mistake of the whole scene).
@@ -456,6 +476,61 @@ fn light_diffuse_left_out(d: &mut Drawing, at: At) -> bool {
 }
 
 /// The material's emission left at black.
+/// Light number `k` set to the value fitted from the picture.
+fn light_value_fitted(d: &mut Drawing, at: At, k: usize) -> bool {
+    match (at.values.lights.get(at.light).and_then(|l| l[k]), d.scene.lights.get_mut(at.light)) {
+        (Some((picture, _)), Some(l)) => {
+            values::set_light_value(l, k, picture);
+            true
+        }
+        _ => false,
+    }
+}
+
+fn spot_cutoff_differs(d: &mut Drawing, at: At) -> bool {
+    light_value_fitted(d, at, 0)
+}
+
+fn spot_exponent_differs(d: &mut Drawing, at: At) -> bool {
+    light_value_fitted(d, at, 1)
+}
+
+fn attenuation_constant_differs(d: &mut Drawing, at: At) -> bool {
+    light_value_fitted(d, at, 2)
+}
+
+fn attenuation_linear_differs(d: &mut Drawing, at: At) -> bool {
+    light_value_fitted(d, at, 3)
+}
+
+fn attenuation_quadratic_differs(d: &mut Drawing, at: At) -> bool {
+    light_value_fitted(d, at, 4)
+}
+
+/// The shininess set to the value fitted from the picture.
+fn shininess_differs(d: &mut Drawing, at: At) -> bool {
+    match at.values.shininess {
+        Some((picture, _)) => each_material(d, |m| m.shininess = picture),
+        None => false,
+    }
+}
+
+/// The spot cutoff doubled (the cone's full angle given for its half), within 90 degrees.
+fn spot_cutoff_doubled(d: &mut Drawing, at: At) -> bool {
+    the_light(d, at, |l| l.is_spot() && l.spot_cutoff > 0.0 && l.spot_cutoff <= 45.0, |l| l.spot_cutoff *= 2.0)
+}
+
+/// Any colour the program sets: the picture drawn with the products it shows.
+fn colours_differ(d: &mut Drawing, at: At) -> bool {
+    match at.colours {
+        Some(c) if !c.differing().is_empty() => {
+            *d = colours::with_products(d, &c.fitted);
+            true
+        }
+        _ => false,
+    }
+}
+
 fn emission_left_out(d: &mut Drawing, _: At) -> bool {
     each_material(d, |m| m.emission = DVec4::new(0.0, 0.0, 0.0, 1.0))
 }
@@ -471,7 +546,7 @@ const fn per_light(id: &'static str, message: &'static str, apply: fn(&mut Drawi
 }
 
 /// The picture mistakes, in the order the docs list them.
-pub const MISTAKES: [PictureMistake; 47] = [
+pub const MISTAKES: [PictureMistake; 55] = [
     row("normal-by-modelview", "wrong-cause-normals-by-m", normals_by_modelview),
     row("normal-not-normalised", "diagnose-normalize-off", normalize_off),
     row("reflection-for-halfway", "wrong-cause-reflection-for-halfway", reflection_for_halfway),
@@ -521,12 +596,24 @@ pub const MISTAKES: [PictureMistake; 47] = [
     // Last: its colour is fitted, so a mistake of the scene's own values that draws the
     // same picture (the material's ambient given its diffuse) is named before it.
     row("emission-added", "diagnose-emission-added", emission_added),
+    per_light("spot-cutoff-doubled", "diagnose-spot-cutoff-doubled", spot_cutoff_doubled),
+    // After every row of the scene's own values: each number is fitted from the picture, so
+    // a row that names why it differs (halved, in radians, swapped) is named before.
+    per_light("spot-cutoff-differs", "diagnose-spot-cutoff-differs", spot_cutoff_differs),
+    per_light("spot-exponent-differs", "diagnose-spot-exponent-differs", spot_exponent_differs),
+    per_light("attenuation-constant-differs", "diagnose-attenuation-constant-differs", attenuation_constant_differs),
+    per_light("attenuation-linear-differs", "diagnose-attenuation-linear-differs", attenuation_linear_differs),
+    per_light("attenuation-quadratic-differs", "diagnose-attenuation-quadratic-differs", attenuation_quadratic_differs),
+    row("shininess-differs", "diagnose-shininess-differs", shininess_differs),
+    // After every row of the scene's own values: it explains any of their colour mistakes
+    // (in words less plain than theirs) and other colours besides.
+    row("colours-differ", "diagnose-colours-differ", colours_differ),
 ];
 
 /// Each mistake this drawing offers, with where it is made: the table's rows, the
 /// per-light ones once for each light, those that cannot change the drawing left out.
-/// `emission` is the emission fitted from the student's picture.
-pub fn offered(right: &Drawing, emission: [f64; 3]) -> Vec<(usize, At)> {
+/// `fitted` holds what was fitted from the student's picture (the emission, the colours).
+pub fn offered(right: &Drawing, fitted: At) -> Vec<(usize, At)> {
     let mut out = Vec::new();
     for (i, m) in MISTAKES.iter().enumerate() {
         let lights = match m.scope {
@@ -534,7 +621,7 @@ pub fn offered(right: &Drawing, emission: [f64; 3]) -> Vec<(usize, At)> {
             Scope::EachLight => right.scene.lights.len(),
         };
         for light in 0..lights {
-            let at = At { light, emission };
+            let at = At { light, ..fitted };
             if (m.apply)(&mut right.clone(), at) {
                 out.push((i, at));
             }

@@ -13,10 +13,13 @@
 //! explains all the same (no scale for `GL_NORMALIZE`, no spot to leave out) is left out of
 //! the comparison and listed as not visible.
 
+mod colours;
 mod drawing;
 mod fit;
 mod mistakes;
+mod values;
 
+pub use colours::Colours;
 pub use drawing::Drawing;
 pub use mistakes::{At, MISTAKES, PictureMistake, Scope, offered};
 
@@ -118,7 +121,20 @@ pub struct Diagnosis {
 /// The most pictures [`diagnose`] draws for `right`: the right one and each mistake it
 /// offers (`emission-added` counted).
 pub fn drawings_at_most(right: &Drawing) -> usize {
-    offered(right, [1.0; 3]).len() + 1
+    let colours = Colours {
+        lights: right.scene.lights.len(),
+        fitted: [[1.0; 3]; colours::TERMS],
+        scene: [[0.0; 3]; colours::TERMS],
+    };
+    let mut every = values::Values::default();
+    for (i, l) in right.scene.lights.iter().enumerate().take(crate::model::scene::MAX_LIGHTS) {
+        for k in 0..values::LIGHT_NAMES.len() {
+            every.lights[i][k] = Some((values::light_value(l, k) + 1.0, values::light_value(l, k)));
+        }
+    }
+    every.shininess = Some((right.scene.material.shininess + 1.0, right.scene.material.shininess));
+    let at = At { emission: [1.0; 3], colours: Some(colours), values: every, ..At::default() };
+    offered(right, at).len() + 1 + colours::drawings(right) + values::drawings(right)
 }
 
 /// Compares `image` (RGBA8, `size` pixels square) with `right` drawn right and with each
@@ -129,8 +145,10 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
     let bg = right.background8();
     let exact = compare(&picture, &covered, image, bg, size);
     let emission = fit::emission(&picture, &covered, image, size);
+    let colours = colours::fit(right, &covered, image, size)?;
+    let values = values::fit(right, image, size)?;
     let mut tried = Vec::new();
-    for (mistake, at) in offered(right, emission) {
+    for (mistake, at) in offered(right, At { light: 0, emission, colours, values }) {
         let mut d = right.clone();
         (MISTAKES[mistake].apply)(&mut d, at);
         let (_, wrong, wrong_covered) = d.draw(size)?;
