@@ -743,9 +743,17 @@ check-inputs-differ = your typed inputs differ from the assignment's: { $names }
 check-step = { $step }: yours { $student }, the key's { $key }: { $verdict }
 check-first-wrong = first wrong step: { $step } (yours { $student }, the key's { $key })
 check-all-right = all right: every step printed is the key's
-check-cause = likely cause: { $words } [{ $id }]. Evidence: at { $step } you printed { $student }, and the key with this mistake gives { $value }
+check-cause = likely cause: { $words } [{ $id }]. Evidence: you printed { $step } = { $student }, and the key with this mistake gives { $value }
 check-no-cause = no mistake in the catalogue reproduces everything you printed; look at the first wrong step
 check-given-not-finite = not checked: a given is not a finite number ({ $givens })
 check-printed-twice = printed more than once, with different values (each printing is checked): { $names }
 check-input-rules = the rule set
 check-given-not-followed = not checked: a given is changed in place, which the checker does not follow ({ $givens }): assign it whole in one line
+# py58b: the notebook's self-check, the worked calculation's table
+python-check-no-cells = phonglab.check(globals()) checks a Jupyter notebook: it reads the cells run so far from the notebook's In, and this Python has none. For a script, save what it prints and check that: python3 script.py > printed.txt, then phonglab check --printed printed.txt
+python-check-run-first = nothing to check yet: none of the worksheet's cells has run in this kernel (after a restart, too). Run the other cells first (Run All), then this one
+explain-column-step = step
+explain-column-formula = formula
+explain-column-value = value
+explain-column-notes = notes
+share-base-refused = the page a link opens must be an http:// or https:// address, without spaces, quotes or control characters: { $base }

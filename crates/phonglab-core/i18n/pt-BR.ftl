@@ -743,9 +743,17 @@ check-inputs-differ = os dados que você digitou diferem dos do enunciado: { $na
 check-step = { $step }: o seu { $student }, o do gabarito { $key }: { $verdict }
 check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o do gabarito { $key })
 check-all-right = tudo certo: todos os passos impressos são os do gabarito
-check-cause = causa provável: { $words } [{ $id }]. Evidência: em { $step } você imprimiu { $student }, e o gabarito com esse erro dá { $value }
+check-cause = causa provável: { $words } [{ $id }]. Evidência: você imprimiu { $step } = { $student }, e o gabarito com esse erro dá { $value }
 check-no-cause = nenhum erro do catálogo reproduz tudo o que você imprimiu; veja o primeiro passo errado
 check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
 check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
 check-input-rules = as regras
 check-given-not-followed = não verificado: um dado é alterado no próprio lugar, o que a verificação não segue ({ $givens }): atribua-o inteiro em uma só linha
+# py58b: the notebook's self-check, the worked calculation's table
+python-check-no-cells = phonglab.check(globals()) confere um notebook Jupyter: lê as células já executadas do In do notebook, e este Python não tem isso. Para um script, salve o que ele imprime e confira isso: python3 script.py > impresso.txt, depois phonglab check --printed impresso.txt
+python-check-run-first = ainda não há nada para conferir: nenhuma célula da lista foi executada neste kernel (também depois de reiniciá-lo). Execute antes as outras células (Run All) e depois esta
+explain-column-step = passo
+explain-column-formula = fórmula
+explain-column-value = valor
+explain-column-notes = observações
+share-base-refused = a página que um link abre precisa ser um endereço http:// ou https://, sem espaços, aspas nem caracteres de controle: { $base }

@@ -743,9 +743,17 @@ check-inputs-differ = os dados que escreveu diferem dos do enunciado: { $names }
 check-step = { $step }: o seu { $student }, o da solução { $key }: { $verdict }
 check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o da solução { $key })
 check-all-right = tudo certo: todos os passos impressos são os da solução
-check-cause = causa provável: { $words } [{ $id }]. Evidência: em { $step } imprimiu { $student }, e a solução com este erro dá { $value }
+check-cause = causa provável: { $words } [{ $id }]. Evidência: imprimiu { $step } = { $student }, e a solução com este erro dá { $value }
 check-no-cause = nenhum erro do catálogo reproduz tudo o que imprimiu; veja o primeiro passo errado
 check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
 check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
 check-input-rules = as regras
 check-given-not-followed = não verificado: um dado é alterado no próprio lugar, o que a verificação não segue ({ $givens }): atribua-o inteiro numa só linha
+# py58b: the notebook's self-check, the worked calculation's table
+python-check-no-cells = phonglab.check(globals()) verifica um caderno Jupyter: lê as células já executadas do In do caderno, e este Python não o tem. Para um programa, guarde o que ele imprime e verifique isso: python3 programa.py > impresso.txt, depois phonglab check --printed impresso.txt
+python-check-run-first = ainda não há nada para verificar: nenhuma célula da ficha foi executada neste kernel (também depois de o reiniciar). Execute primeiro as outras células (Run All) e depois esta
+explain-column-step = passo
+explain-column-formula = fórmula
+explain-column-value = valor
+explain-column-notes = notas
+share-base-refused = a página que uma ligação abre tem de ser um endereço http:// ou https://, sem espaços, aspas nem caracteres de controlo: { $base }
