@@ -1030,5 +1030,5 @@ check-report-printed-twice = Passos impressos mais de uma vez com valores difere
 # fixr3
 student-cause-beside = causa provável: { $words } [{ $id }] (a prova está acima dos passos)
 # py58b: a shared link where a scene file is taken
-scene-link-refused = a ligação { $link } não foi aberta: { $why }
-scene-link-empty = não contém nenhuma cena (a ligação de uma cena partilhada termina em #v1. e nos dados da cena): copie a ligação inteira
+scene-link-refused = { $link }: { $why }
+scene-link-empty = a ligação não contém nenhuma cena (a ligação de uma cena partilhada termina em #v1. e nos dados da cena): copie a ligação inteira

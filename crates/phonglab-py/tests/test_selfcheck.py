@@ -171,17 +171,31 @@ def test_the_evidence_line_reads_well_for_the_step_at(cells):
     assert "Evidence: you printed at = " in text, text
 
 
-def test_the_self_check_and_the_command_line_agree_on_the_saved_notebook(cli, tmp_path):
-    # py_teacher 9: vlv reversed, the check cell uncommented, run all, saved, checked.
+@pytest.mark.parametrize(
+    "scene, old, new, first",
+    [
+        # py_teacher 9: vlv reversed.
+        (None, "vlv = (lightPos - vertexPos)", "vlv = (vertexPos - lightPos)", "vlv"),
+        # Several lights: the loop prints each light's steps together, vov after them.
+        ("assets/scenes/three-lights.toml", "vov = np.array([0, 0, 1, 0])", "vov = np.array([0, 0.6, 0.8, 0])", "vov"),
+    ],
+)
+def test_the_self_check_and_the_command_line_agree_on_the_saved_notebook(cli, tmp_path, scene, old, new, first):
+    # The check cell uncommented, run all, saved, checked by the command line.
+    from conftest import ROOT
+
     nbclient = pytest.importorskip("nbclient")
     nbformat = pytest.importorskip("nbformat")
     path = tmp_path / "hw.ipynb"
-    cli("export", "--to", "notebook", "-o", path)
+    cli("export", "--to", "notebook", "-o", path, *(["--scene", ROOT / scene] if scene else []))
     nb = json.loads(path.read_text())
+    changed = 0
     for cell in nb["cells"]:
         source = "".join(cell["source"])
-        if "vlv = (lightPos - vertexPos)" in source:
-            cell["source"] = source.replace("vlv = (lightPos - vertexPos)", "vlv = (vertexPos - lightPos)")
+        if old in source:
+            cell["source"] = source.replace(old, new)
+            changed += 1
+    assert changed == 1
     last = nb["cells"][-1]
     last["source"] = "".join(last["source"])[2:]
     notebook = nbformat.reads(json.dumps(nb), as_version=4)
@@ -193,8 +207,8 @@ def test_the_self_check_and_the_command_line_agree_on_the_saved_notebook(cli, tm
         said = None
     except subprocess.CalledProcessError as e:
         said = e.stdout
-    assert said is not None, "phonglab check found the reversed vlv right"
+    assert said is not None, "phonglab check found the mistake right"
     assert "not checked whole" not in said, said
-    assert "first wrong step: vlv" in own and "first wrong step: vlv" in said, (own, said)
+    assert f"first wrong step: {first} " in own and f"first wrong step: {first} " in said, (own, said)
     # The same table, line for line, after the command line's scene line.
     assert said.split("\n", 1)[1] == own, (said, own)

@@ -115,20 +115,24 @@ def _value(namespace: Dict[str, Any], step: str) -> Optional[Any]:
 def _printing_order(cells: List[str], steps: List[str]) -> List[str]:
     """`steps` in the order the cells print them, as `phonglab check` reads them from the
     saved notebook: by the cell that prints the step's label (`"vlv = "`, `f"vlv[{i}] = "`),
-    then the light (a loop prints each light's values together), then the label's place
-    in its cell; a step no cell prints after them, in the key's order."""
+    a light's label by the loop it is printed in (`for`), then the light (the loop prints
+    each light's values together), then the label's place in its cell; a step no cell
+    prints after them, in the key's order."""
     found: Dict[str, Any] = {}
 
     def where(step: str) -> Any:
         match = _STEP.match(step)
-        base, light = (match.group(1), int(match.group(2) or 0)) if match else (step, 0)
+        base, light = (match.group(1), match.group(2)) if match else (step, None)
         if base not in found:
             label = re.compile(r"[\"']" + re.escape(base) + r"(\[[^\]]*\])?\s*=")
             found[base] = next(
-                ((k, m.start()) for k, cell in enumerate(cells) for m in [label.search(cell)] if m), None
+                ((k, cell, m.start()) for k, cell in enumerate(cells) for m in [label.search(cell)] if m), None
             )
-        at = found[base]
-        return (0, at[0], light, at[1]) if at else (1, 0, 0, 0)
+        if found[base] is None:
+            return (1, 0, 0, 0, 0)
+        k, cell, at = found[base]
+        loop = cell.rfind("for ", 0, at) if light is not None else -1
+        return (0, k, loop if loop >= 0 else at, int(light or 0), at)
 
     return sorted(steps, key=where)
 
