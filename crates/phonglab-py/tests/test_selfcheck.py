@@ -135,6 +135,26 @@ def test_a_value_that_is_not_numbers_leaves_the_work_unchecked(cells):
     right, text = run(cells, "cosTheta = 'about 0.14'\n")
     assert not right
     assert "not checked whole" in text and "cosTheta" in text, text
+    for odd in ("{'x': 1}", "np.zeros(100000)", "None", "3 + 4j", "True"):
+        right, text = run(cells, f"vlv = {odd}\n")
+        assert not right or odd == "None", (odd, text)
+
+
+def test_several_lights_are_read_from_the_per_light_lists(cli, tmp_path):
+    from conftest import ROOT
+
+    path = tmp_path / "three.ipynb"
+    cli("export", "--to", "notebook", "-o", path, "--scene", ROOT / "assets/scenes/three-lights.toml")
+    nb = json.loads(path.read_text())
+    three = ["".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code"][:-1]
+    right, text = run(three)
+    assert right, text
+    assert "vlv[2]: yours" in text
+    # A scalar where the key has one vlv a light: no vlv[k] is held (nor printed), none read.
+    right, text = run(three, "vlv = np.float64(3.0)\n")
+    assert "vlv[0]" not in text and "vertexPos: yours" in text, text
+    right, text = run(mistaken(three, "Idif[i] = (Ldif[i]*matDif)*cosTheta[i]", "Idif[i] = (Ldif[i]*matDif)*cosTheta[i]*2"))
+    assert not right and "first wrong step: Idif[0]" in text, text
 
 
 def test_steps_are_in_the_keys_order_as_the_command_line_prints_them(cells):

@@ -107,7 +107,7 @@ def _value(namespace: Dict[str, Any], step: str) -> Optional[Any]:
     if match.group(2) is None:
         return value
     k = int(match.group(2))
-    if isinstance(value, (list, tuple, np.ndarray)) and k < len(value):
+    if isinstance(value, (list, tuple, np.ndarray)) and np.ndim(value) > 0 and k < len(value):
         return value[k]
     return None
 
