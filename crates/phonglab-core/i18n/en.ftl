@@ -743,7 +743,7 @@ check-inputs-differ = your typed inputs differ from the assignment's: { $names }
 check-step = { $step }: yours { $student }, the key's { $key }: { $verdict }
 check-first-wrong = first wrong step: { $step } (yours { $student }, the key's { $key })
 check-all-right = all right: every step printed is the key's
-check-cause = likely cause: { $words } [{ $id }]. Evidence: you printed { $step } = { $student }, and the key with this mistake gives { $value }
+check-cause = likely cause: { $words } [{ $id }]. Evidence: for { $step }, you printed { $student }, and the key with this mistake gives { $value }
 check-no-cause = no mistake in the catalogue reproduces everything you printed; look at the first wrong step
 check-given-not-finite = not checked: a given is not a finite number ({ $givens })
 check-printed-twice = printed more than once, with different values (each printing is checked): { $names }

@@ -743,7 +743,7 @@ check-inputs-differ = os dados que você digitou diferem dos do enunciado: { $na
 check-step = { $step }: o seu { $student }, o do gabarito { $key }: { $verdict }
 check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o do gabarito { $key })
 check-all-right = tudo certo: todos os passos impressos são os do gabarito
-check-cause = causa provável: { $words } [{ $id }]. Evidência: você imprimiu { $step } = { $student }, e o gabarito com esse erro dá { $value }
+check-cause = causa provável: { $words } [{ $id }]. Evidência: em { $step }, você imprimiu { $student }, e o gabarito com esse erro dá { $value }
 check-no-cause = nenhum erro do catálogo reproduz tudo o que você imprimiu; veja o primeiro passo errado
 check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
 check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }

@@ -743,7 +743,7 @@ check-inputs-differ = os dados que escreveu diferem dos do enunciado: { $names }
 check-step = { $step }: o seu { $student }, o da solução { $key }: { $verdict }
 check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o da solução { $key })
 check-all-right = tudo certo: todos os passos impressos são os da solução
-check-cause = causa provável: { $words } [{ $id }]. Evidência: imprimiu { $step } = { $student }, e a solução com este erro dá { $value }
+check-cause = causa provável: { $words } [{ $id }]. Evidência: em { $step }, imprimiu { $student }, e a solução com este erro dá { $value }
 check-no-cause = nenhum erro do catálogo reproduz tudo o que imprimiu; veja o primeiro passo errado
 check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
 check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }

@@ -188,7 +188,7 @@ def test_the_evidence_line_reads_well_for_the_step_at(cells):
     right, text = run(mistaken(cells, "at = atC + atLin*d + atQuad*d*d", "at = atC + atLin*d + atQuad*d"))
     assert not right
     assert "at at" not in text
-    assert "Evidence: you printed at = " in text, text
+    assert "Evidence: for at, you printed 1.07" in text, text
 
 
 @pytest.mark.parametrize(
