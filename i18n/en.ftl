@@ -1029,3 +1029,6 @@ read-link-refused = { $path } is a link: not read (a student’s work is read on
 check-report-printed-twice = Steps printed more than once with different values (each printing was checked)
 # fixr3
 student-cause-beside = likely cause: { $words } [{ $id }] (the evidence is above the steps)
+# py58b: a shared link where a scene file is taken
+scene-link-refused = { $link }: { $why }
+scene-link-empty = the link holds no scene (a shared scene's link ends in #v1. and the scene's data): copy the whole link

@@ -1029,3 +1029,6 @@ read-link-refused = { $path } é uma ligação simbólica: não foi lido (o trab
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
 # fixr3
 student-cause-beside = causa provável: { $words } [{ $id }] (a prova está acima dos passos)
+# py58b: a shared link where a scene file is taken
+scene-link-refused = { $link }: { $why }
+scene-link-empty = a ligação não contém nenhuma cena (a ligação de uma cena partilhada termina em #v1. e nos dados da cena): copie a ligação inteira

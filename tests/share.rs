@@ -357,3 +357,53 @@ fn a_scanner_reads_the_link_back_from_the_windows_code_and_the_commands() {
     assert_eq!(scanned(&png), printed);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A link where a scene file is taken: the command line reads the scene it carries with
+/// the browser build's decoder (so `phonglab explain LINK` is the scene's calculation), and
+/// says why a cut link or one with no scene is not read; a page that is not an http(s)
+/// address is refused before a link is made.
+#[test]
+fn a_link_is_a_scene_wherever_a_scene_file_is_taken_and_its_page_is_http() {
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let out = phonglab(&["share", scene.to_str().unwrap()]);
+    let link = String::from_utf8(out.stdout).unwrap().trim().to_string();
+    let from_link = phonglab(&["explain", &link]);
+    assert!(from_link.status.success(), "{}", String::from_utf8_lossy(&from_link.stderr));
+    let from_file = phonglab(&["explain", scene.to_str().unwrap()]);
+    assert_eq!(String::from_utf8_lossy(&from_link.stdout), String::from_utf8_lossy(&from_file.stdout));
+    let cut = phonglab(&["explain", &link[..link.len() - 12]]);
+    let said = String::from_utf8_lossy(&cut.stderr);
+    assert!(!cut.status.success() && said.contains("…: the link is damaged"), "{said}");
+    assert!(!said.contains("does not exist"), "{said}");
+    let bare = phonglab(&["explain", "https://phonglab.github.io/phonglab/"]);
+    assert!(String::from_utf8_lossy(&bare.stderr).contains("holds no scene"));
+    for base in ["not a url", "javascript:alert(1)//", "https://e.org/\u{1b}[31m"] {
+        let o = phonglab(&["share", "--base", base]);
+        let said = String::from_utf8_lossy(&o.stderr);
+        assert!(!o.status.success() && said.contains("http:// or https://") && o.stdout.is_empty(), "{said}");
+    }
+}
+
+/// The desktop app started on a link (`phonglab LINK`) opens the scene and the choices it
+/// carries; a cut link opens the worksheet and says why.
+#[test]
+fn the_app_started_on_a_link_opens_its_scene_or_says_why_not() {
+    use phonglab::app::AppState;
+    use phonglab::app::shell::state::Message;
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let doc = Document::from_toml(&std::fs::read_to_string(&scene).unwrap()).unwrap();
+    let link =
+        share::link("https://example.org/phonglab/", &Shared { present: true, ..Shared::of(doc.clone()) }).unwrap();
+    let mut s = AppState::worksheet();
+    phonglab::app::shell::files::open_at_start(&mut s, Path::new(&link));
+    assert_eq!(s.doc.scene, doc.scene);
+    assert!(s.ui.layout.presenting);
+    let mut s = AppState::worksheet();
+    phonglab::app::shell::files::open_at_start(&mut s, Path::new(&link[..link.len() - 12]));
+    assert_eq!(s.doc, Document::default());
+    assert!(
+        matches!(&s.message, Some(Message::Refused(m)) if m.contains("…: the link is damaged") && m.contains("Showing the worksheet")),
+        "{:?}",
+        s.message
+    );
+}

@@ -37,8 +37,8 @@ pub struct Cli {
     /// What to do; omit to open the app.
     #[command(subcommand)]
     pub command: Option<Command>,
-    /// A scene file (TOML) to open the app on; one that cannot be read opens the worksheet
-    /// and says why.
+    /// A scene file (TOML), or a shared scene's link (https://…#v1.…), to open the app on;
+    /// one that cannot be read opens the worksheet and says why.
     pub file: Option<PathBuf>,
     /// Who draws the app's shaded view: auto (the GPU when the adapter is a real one), cpu
     /// (the reference renderer) or gpu (the scene's generated WGSL, even on a software

@@ -61,6 +61,7 @@ pub fn run(a: &ShareArgs) -> Result<()> {
         channel: a.channel.map(|c| c.name().to_string()),
         ..Shared::of(doc)
     };
+    phonglab_core::export::share::check_base(&a.base).map_err(anyhow::Error::msg)?;
     let url = link(&a.base, &shared)?;
     // The page (`--base`) is the user's text: written visibly if it holds a control.
     println!("{}", phonglab_core::escape::terminal::text(&url));

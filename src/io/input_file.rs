@@ -132,9 +132,42 @@ pub fn is_obj_name(name: &str) -> bool {
     Path::new(name).extension().is_some_and(|e| e.eq_ignore_ascii_case("obj"))
 }
 
-/// Reads and checks a scene file (a relative mesh path is taken from its folder); an error
-/// names the file.
+/// A shared scene's link given where a scene file is taken (`https://…/#v1.…`): what
+/// follows its `#` (empty where it has none). `None` for a path.
+pub fn share_fragment(path: &Path) -> Option<&str> {
+    let text = path.to_str()?;
+    let lower = text.get(..8)?.to_ascii_lowercase();
+    if !(lower.starts_with("http://") || lower.starts_with("https://")) {
+        return None;
+    }
+    Some(text.split_once('#').map_or("", |(_, f)| f))
+}
+
+/// The scene a shared link carries, decoded as the browser build decodes it (bounded:
+/// [`phonglab_core::export::share::MAX_FRAGMENT`]), or why not, naming the link.
+pub fn load_link(link: &str, fragment: &str) -> Result<phonglab_core::Document, String> {
+    read_link(link, fragment).map(|s| s.doc)
+}
+
+/// What a shared link carries (its scene and the window's choices), read as
+/// [`load_link`] reads it.
+pub fn read_link(link: &str, fragment: &str) -> Result<phonglab_core::export::share::Shared, String> {
+    // Its page and the start of its data: the whole link is kilobytes.
+    let shown: String = phonglab_core::escape::terminal::text(&link.chars().take(48).collect::<String>());
+    let shown = if link.chars().count() > 48 { format!("{shown}…") } else { shown };
+    if fragment.is_empty() {
+        return Err(t!("scene-link-refused", link = shown, why = t!("scene-link-empty")));
+    }
+    phonglab_core::export::share::decode(fragment)
+        .map_err(|e| t!("scene-link-refused", link = shown, why = e.to_string()))
+}
+
+/// Reads and checks a scene file (a relative mesh path is taken from its folder), or the
+/// scene a shared link carries ([`share_fragment`]); an error names the file or the link.
 pub fn load_scene(path: &Path) -> Result<phonglab_core::Document, String> {
+    if let Some(fragment) = share_fragment(path) {
+        return load_link(&path.to_string_lossy(), fragment);
+    }
     let text = read_text_capped(path, MAX_SCENE_BYTES, &t!("file-kind-scenes"))?;
     phonglab_core::Document::from_toml_in(&text, path.parent())
         .map_err(|e| format!("{}: {e}", crate::io::reasons::shown(path)))
@@ -154,6 +187,24 @@ fn utf8(bytes: Vec<u8>, path: &Path) -> Result<String, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_shared_link_is_read_as_the_scene_it_carries() {
+        use phonglab_core::export::share::{Shared, link};
+        let mut doc = phonglab_core::Document { name: "ruby".into(), ..Default::default() };
+        doc.scene.material.shininess = 77.0;
+        let url = link("https://example.org/phonglab/", &Shared::of(doc)).unwrap();
+        let read = load_scene(Path::new(&url)).unwrap();
+        assert_eq!((read.name.as_str(), read.scene.material.shininess), ("ruby", 77.0));
+        let e = load_scene(Path::new("https://example.org/phonglab/")).unwrap_err();
+        assert!(e.contains("holds no scene"), "{e}");
+        let cut = &url[..url.len() - 10];
+        let e = load_scene(Path::new(cut)).unwrap_err();
+        assert!(e.starts_with("https://example.org/phonglab/#v1.") && e.contains("…: the link is damaged"), "{e}");
+        let long = format!("https://example.org/#v1.{}", "A".repeat(phonglab_core::export::share::MAX_FRAGMENT));
+        assert!(load_scene(Path::new(&long)).unwrap_err().contains("characters long"));
+        assert_eq!(share_fragment(Path::new("scenes/https.toml")), None);
+    }
 
     #[test]
     fn devices_folders_and_large_files_are_refused_before_reading() {

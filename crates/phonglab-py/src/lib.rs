@@ -225,6 +225,11 @@ impl PyScene {
         Ok(())
     }
 
+    /// An independent copy, exactly this scene (no file read again).
+    fn __copy__(&self) -> Self {
+        self.clone()
+    }
+
     fn __repr__(&self) -> String {
         format!("phonglab.Scene({:?})", self.doc.name)
     }
@@ -252,6 +257,24 @@ fn light(scene: &PyScene, precision: &str, lang: &str) -> PyResult<(Vec<StepRow>
     with_locale(locale_of(lang)?, || match precision {
         "f64" => steps_of::<f64>(&scene.doc.scene),
         "f32" => steps_of::<f32>(&scene.doc.scene),
+        other => Err(unknown("precision=", other, "f64, f32")),
+    })
+}
+
+fn tables_of<S: Real>(scene: &Scene) -> PyResult<(String, String, String)> {
+    let lit = Engine::<S>::light_scene_vertex(scene).map_err(scene_error)?;
+    let ex = explain(scene, &lit, Side::Front);
+    Ok((ex.to_text(8), ex.to_markdown(8), ex.to_html(8)))
+}
+
+/// The worked calculation of the scene's vertex as text, Markdown and HTML (a notebook's
+/// display), in `lang` (its words and decimal mark), at `precision` ("f64" or "f32").
+#[pyfunction]
+#[pyo3(signature = (scene, precision="f64", lang="en"))]
+fn explain_tables(scene: &PyScene, precision: &str, lang: &str) -> PyResult<(String, String, String)> {
+    with_locale(locale_of(lang)?, || match precision {
+        "f64" => tables_of::<f64>(&scene.doc.scene),
+        "f32" => tables_of::<f32>(&scene.doc.scene),
         other => Err(unknown("precision=", other, "f64, f32")),
     })
 }
@@ -402,12 +425,37 @@ fn shader(scene: &PyScene, target: &str, shading: &str) -> PyResult<String> {
     Ok(s.text(lang))
 }
 
-/// The scene as a link to the browser build (`phonglab share`).
+/// The scene as a link to the browser build (`phonglab share`): on the page `base` (an
+/// http(s) address), opening in `open_in` (en, pt-PT, pt-BR), presenting, showing the
+/// term `channel`, as `phonglab share --base --open-in --present --channel` asks.
 #[pyfunction]
-#[pyo3(signature = (scene, base=phonglab_core::export::share::DEFAULT_BASE))]
-fn share_link(scene: &PyScene, base: &str) -> PyResult<String> {
-    use phonglab_core::export::share::{Shared, link};
-    link(base, &Shared::of(scene.doc.clone())).map_err(scene_error)
+#[pyo3(signature = (scene, base=phonglab_core::export::share::DEFAULT_BASE, open_in=None, present=false, channel=None))]
+fn share_link(
+    scene: &PyScene,
+    base: &str,
+    open_in: Option<&str>,
+    present: bool,
+    channel: Option<&str>,
+) -> PyResult<String> {
+    use phonglab_core::channels::Channel;
+    use phonglab_core::export::share::{Shared, check_base, link};
+    check_base(base).map_err(scene_error)?;
+    if let Some(lang) = open_in {
+        locale_of(lang).map_err(|_| unknown("open_in=", lang, "en, pt-PT, pt-BR"))?;
+    }
+    if let Some(c) = channel
+        && !Channel::ALL.iter().any(|k| k.name() == c)
+    {
+        let names: Vec<&str> = Channel::ALL.iter().map(|k| k.name()).collect();
+        return Err(unknown("channel=", c, &names.join(", ")));
+    }
+    let shared = Shared {
+        lang: open_in.map(str::to_string),
+        present,
+        channel: channel.map(str::to_string),
+        ..Shared::of(scene.doc.clone())
+    };
+    link(base, &shared).map_err(scene_error)
 }
 
 /// Checks a notebook's work as `phonglab check` does: `code` the cells run, in order (the
@@ -417,6 +465,27 @@ fn share_link(scene: &PyScene, base: &str) -> PyResult<String> {
 #[pyo3(signature = (code, printed, lang="en"))]
 fn check_work(code: &str, printed: &str, lang: &str) -> PyResult<(String, bool)> {
     with_locale(locale_of(lang)?, || check::check_work(code, printed)).map_err(scene_error)
+}
+
+/// The names of the steps the key of the cells `code` prints, in order (`vlv`, `vlv[0]`):
+/// the only variables the self-check reads. Refuses code that cannot be checked, as
+/// [`check_work`] does.
+#[pyfunction]
+#[pyo3(signature = (code, lang="en"))]
+fn check_steps(code: &str, lang: &str) -> PyResult<Vec<String>> {
+    with_locale(locale_of(lang)?, || check::steps(code)).map_err(scene_error)
+}
+
+/// Why the self-check cannot run, in `lang`: `no-cells` (no IPython `In`: not in
+/// Jupyter), `run-first` (none of the worksheet's cells has run in this kernel).
+#[pyfunction]
+#[pyo3(signature = (why, lang="en"))]
+fn check_refusal(why: &str, lang: &str) -> PyResult<String> {
+    with_locale(locale_of(lang)?, || match why {
+        "no-cells" => Ok(phonglab_core::t!("python-check-no-cells")),
+        "run-first" => Ok(phonglab_core::t!("python-check-run-first")),
+        other => Err(unknown("why=", other, "no-cells, run-first")),
+    })
 }
 
 /// The extension module.
@@ -431,5 +500,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(shader, m)?)?;
     m.add_function(wrap_pyfunction!(share_link, m)?)?;
     m.add_function(wrap_pyfunction!(check_work, m)?)?;
+    m.add_function(wrap_pyfunction!(check_steps, m)?)?;
+    m.add_function(wrap_pyfunction!(explain_tables, m)?)?;
+    m.add_function(wrap_pyfunction!(check_refusal, m)?)?;
     Ok(())
 }

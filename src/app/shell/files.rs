@@ -37,6 +37,13 @@ pub fn open(state: &mut AppState, path: &Path) {
 
 /// Opens a scene file (or an OBJ mesh) into the app, or returns why not (the scene stays).
 fn open_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
+    // A shared scene's link, where a file is taken: decoded as the browser build does.
+    // (Its language, presenting and term too; a damaged one says why and changes nothing.)
+    if let Some(fragment) = crate::io::input_file::share_fragment(path) {
+        let shared = crate::io::input_file::read_link(&path.to_string_lossy(), fragment)?;
+        super::shared_link::open_shared(state, shared);
+        return Ok(());
+    }
     if is_obj(path) {
         return open_obj_or_why(state, path);
     }

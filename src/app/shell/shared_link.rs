@@ -14,22 +14,26 @@ use crate::t;
 /// Opens the link's `fragment` (after `#`) in `state`.
 pub fn open_fragment(state: &mut AppState, fragment: &str) {
     match share::decode(fragment) {
-        Ok(s) => {
-            // The link's language first, so that what is said of it is said in it.
-            if let Some(lang) = &s.lang {
-                state.ui.layout.language = Some(lang.clone());
-            }
-            let locale = state.ui.layout.locale();
-            let name = s.doc.name.clone();
-            crate::locale::with_locale(locale, || {
-                state.load(s.doc, &t!("share-opened", name = name));
-                if let Some(mesh) = &s.missing_mesh {
-                    state.message = Some(Message::Info(t!("share-needs-mesh", name = mesh.clone())));
-                }
-            });
-            state.ui.layout.presenting |= s.present;
-            state.view_options.channel = s.channel.and_then(|c| Channel::ALL.into_iter().find(|k| k.name() == c));
-        }
+        Ok(s) => open_shared(state, s),
         Err(e) => state.message = Some(Message::Refused(t!("share-not-opened", why = e.to_string()))),
     }
+}
+
+/// Opens what a link carries, `s` (read by [`share::decode`]), in `state`: its scene, and
+/// the language, presenting and term it asks for.
+pub fn open_shared(state: &mut AppState, s: share::Shared) {
+    // The link's language first, so that what is said of it is said in it.
+    if let Some(lang) = &s.lang {
+        state.ui.layout.language = Some(lang.clone());
+    }
+    let locale = state.ui.layout.locale();
+    let name = s.doc.name.clone();
+    crate::locale::with_locale(locale, || {
+        state.load(s.doc, &t!("share-opened", name = name));
+        if let Some(mesh) = &s.missing_mesh {
+            state.message = Some(Message::Info(t!("share-needs-mesh", name = mesh.clone())));
+        }
+    });
+    state.ui.layout.presenting |= s.present;
+    state.view_options.channel = s.channel.and_then(|c| Channel::ALL.into_iter().find(|k| k.name() == c));
 }

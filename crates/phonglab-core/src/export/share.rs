@@ -141,6 +141,20 @@ pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
     Ok(out)
 }
 
+/// Refuses a page a link cannot open on: not an `http://` or `https://` address (a
+/// `javascript:` or `data:` one runs or carries what it holds), or one holding a control
+/// character, a space or a quote (it would not stay one address where it is pasted).
+pub fn check_base(base: &str) -> Result<(), String> {
+    let lower = base.to_ascii_lowercase();
+    let scheme = lower.starts_with("http://") || lower.starts_with("https://");
+    let plain = !base.chars().any(|c| crate::formats::escape::is_control(c) || c.is_whitespace() || c == '"');
+    if scheme && plain && base.len() > "https://".len() {
+        return Ok(());
+    }
+    let shown: String = base.chars().take(80).collect();
+    Err(crate::t!("share-base-refused", base = crate::formats::escape::terminal::text(&shown)))
+}
+
 /// The link: `base` (a page's address) with the fragment of `s`.
 pub fn link(base: &str, s: &Shared) -> Result<String, ShareError> {
     let base = base.split('#').next().unwrap_or(base);

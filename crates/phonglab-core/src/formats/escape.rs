@@ -20,6 +20,7 @@
 //! | the terminal | [`terminal::text`] | no escape sequence, no line break |
 //! | JSON (as `serde_json` wrote it) | [`json::text`] | every control as `\u202e`, C0 included (serde's) |
 //! | a CSV field | [`csv::field`] | controls written `\u{202E}`, quoted where it holds `,` or `"` |
+//! | HTML text or attribute | [`html::text`] | no tag, entity or attribute end; controls written `\u{1B}` |
 //!
 //! JSON is written by `serde_json`, which escapes the C0 controls in every string but not
 //! the others (DEL, C1, the separators, the bidirectional controls): [`json::text`]
@@ -198,6 +199,27 @@ pub mod markdown {
                 out.push('\\');
             }
             out.push(c);
+        }
+        out
+    }
+}
+
+/// HTML (a notebook's rich display).
+pub mod html {
+    /// Text in an element or a quoted attribute: `&`, `<`, `>`, `"` and `'` as entities,
+    /// control characters written `\u{1B}`, so it opens no tag and ends no attribute.
+    pub fn text(text: &str) -> String {
+        let mut out = String::with_capacity(text.len());
+        for c in text.chars() {
+            match c {
+                '&' => out.push_str("&amp;"),
+                '<' => out.push_str("&lt;"),
+                '>' => out.push_str("&gt;"),
+                '"' => out.push_str("&quot;"),
+                '\'' => out.push_str("&#39;"),
+                c if super::is_control(c) => out.push_str(&super::visible(c)),
+                c => out.push(c),
+            }
         }
         out
     }

@@ -15,16 +15,19 @@ from __future__ import annotations
 import json
 import os
 import tempfile
+import warnings
 from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
 from . import _core
 from ._core import SceneError
+from ._selfcheck import check
 
 __all__ = [
     "Scene",
     "SceneError",
+    "NotebookNotice",
     "Lighting",
     "Picture",
     "light",
@@ -35,6 +38,11 @@ __all__ = [
     "share_link",
     "check",
 ]
+
+class NotebookNotice(UserWarning):
+    """What Scene.from_notebook says of a notebook's line it could not read, or read
+    otherwise (the same notices `phonglab import` prints)."""
+
 
 _LIGHT_FIELDS = (
     "ambient",
@@ -141,11 +149,16 @@ class Scene:
     @staticmethod
     def from_notebook(path: "os.PathLike[str] | str") -> "Scene":
         """The scene a worksheet notebook (.ipynb) or script (.py) sets up, read as the
-        app's Import reads it (nothing in it is run)."""
+        app's Import reads it (nothing in it is run). What `phonglab import` says of it (a
+        line not read, a given replaced by the worksheet's value) comes as a
+        NotebookNotice warning each."""
         with open(path, encoding="utf-8") as f:
             text = f.read()
         name = os.path.basename(os.fspath(path))
-        inner, _notices = _core.Scene.from_notebook(text, name.endswith(".ipynb"), name)
+        inner, notices = _core.Scene.from_notebook(text, name.endswith(".ipynb"), name)
+        # What `phonglab import` says of the lines it could not read, or read otherwise.
+        for notice in notices:
+            warnings.warn(NotebookNotice(notice), stacklevel=2)
         return Scene(inner)
 
     def save(self, path: "os.PathLike[str] | str") -> None:
@@ -196,24 +209,39 @@ class Scene:
 
 
 class Lighting:
-    """The worked calculation of one vertex. Each step is an attribute under the
-    worksheet's name (vertexNormal, vlv, vov, H, cosTheta, cosBeta, Iamb, Idif, Ispec, at,
-    spot, I) holding a NumPy array (4 components, or 1 for a scalar), or None where the
-    step does not apply. With several lights, a light's steps are also in .per_light."""
+    """The worked calculation of one vertex, as computed when it was made (a later change
+    to the scene does not change it). Each step is an attribute under the worksheet's name
+    (vertexNormal, vlv, vov, H, cosTheta, cosBeta, Iamb, Idif, Ispec, at, spot, I)
+    holding a NumPy array (4 components, or 1 for a scalar), or None where the step does
+    not apply. With several lights, a light's step is a list with one value per light, as
+    the worksheet's notebook holds it (lit.vlv[0] is light 0's vlv), and .per_light[k]
+    holds light k's steps by their names (lit.per_light[0]["vlv"]).
 
-    def __init__(self, rows: list, text: str, markdown: str, scene: Scene, precision: str) -> None:
+    In Jupyter it shows as the calculation's table in the language given to light()
+    (lang=); explain(lang=...) gives it as text (or Markdown) in any language."""
+
+    def __init__(self, rows: list, text: str, markdown: str, scene: Scene, precision: str, lang: str = "en") -> None:
         self._rows = rows
         self._text, self._markdown = text, markdown
-        self._scene, self._precision = scene, precision
+        # The scene as it was: explain() and the displays show this calculation.
+        self._scene, self._precision, self._lang = Scene(scene._inner.__copy__()), precision, lang
         self.per_light: Dict[int, Dict[str, Optional[np.ndarray]]] = {}
-        self.steps: Dict[str, Optional[np.ndarray]] = {}
+        self.steps: Dict[str, Any] = {}
+        lights = 1 + max((light for *_, light, _shown in rows if light is not None), default=0)
         for name, _title, _formula, value, light, _shown in rows:
             array = None if value is None else np.array(value)
-            if light is not None:
-                self.per_light.setdefault(light, {}).setdefault(name, array)
             self.steps.setdefault(name, array)
+            if light is None:
+                continue
+            base = name.split("[", 1)[0]
+            self.per_light.setdefault(light, {}).setdefault(base, array)
+            if base != name:
+                # `vlv[1]`: the list `vlv`, one value per light, as the notebook holds it.
+                per = self.steps.setdefault(base, [None] * lights)
+                if isinstance(per, list) and per[light] is None:
+                    per[light] = array
 
-    def __getattr__(self, name: str) -> Optional[np.ndarray]:
+    def __getattr__(self, name: str) -> Any:
         steps = self.__dict__.get("steps", {})
         if name in steps:
             return steps[name]
@@ -223,23 +251,16 @@ class Lighting:
         return list(self.steps) + ["explain", "steps", "per_light"]
 
     def explain(self, lang: str = "en", markdown: bool = False) -> str:
-        """The worked calculation as text (or Markdown) in lang: "en", "pt-PT" or "pt-BR"."""
-        _rows, text, md = _core.light(self._scene._inner, self._precision, lang)
+        """The worked calculation as text (or Markdown) in lang: "en", "pt-PT" or "pt-BR"
+        (its words and its decimal mark)."""
+        text, md, _html = _core.explain_tables(self._scene._inner, self._precision, lang)
         return md if markdown else text
 
     def _repr_markdown_(self) -> str:
-        return self._markdown
+        return _core.explain_tables(self._scene._inner, self._precision, self._lang)[1]
 
     def _repr_html_(self) -> str:
-        import html
-
-        cells = "".join(
-            f"<tr><td>{html.escape(title)}</td><td><code>{html.escape(name)}</code></td>"
-            f"<td><code>{html.escape(formula)}</code></td>"
-            f"<td>{html.escape(shown)}</td></tr>"
-            for name, title, formula, _value, _light, shown in self._rows
-        )
-        return f"<table><tbody>{cells}</tbody></table>"
+        return _core.explain_tables(self._scene._inner, self._precision, self._lang)[2]
 
     def __repr__(self) -> str:
         return self._text
@@ -262,7 +283,7 @@ def light(
         if normal is not None:
             scene.vertex.normal = normal
     rows, text, markdown = _core.light(scene._inner, precision, lang)
-    return Lighting(rows, text, markdown, scene, precision)
+    return Lighting(rows, text, markdown, scene, precision, lang)
 
 
 def light_many(scene: Scene, positions: Any, normals: Any) -> np.ndarray:
@@ -324,42 +345,18 @@ def shader(scene: Scene, target: str = "glsl", shading: str = "gouraud") -> str:
     return _core.shader(scene._inner, target, shading)
 
 
-def share_link(scene: Scene, base: Optional[str] = None) -> str:
-    """The scene as a link that opens it in phonglab's browser build."""
-    return _core.share_link(scene._inner) if base is None else _core.share_link(scene._inner, base)
-
-
-def _printed(namespace: Dict[str, Any]) -> str:
-    """The notebook's numeric variables as `print("name = ", name)` prints them (a list of
-    per-light arrays as `name[k] = ...`, as the worksheet's notebook prints them)."""
-    lines = []
-    for name, value in namespace.items():
-        if name.startswith("_") or not name.isidentifier():
-            continue
-        if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number, np.ndarray, list)):
-            continue
-        if isinstance(value, list) and value and all(isinstance(v, np.ndarray) for v in value):
-            lines += [f"{name}[{k}] =  {v}" for k, v in enumerate(value)]
-            continue
-        try:
-            array = np.asarray(value, dtype=np.float64)
-        except (TypeError, ValueError):
-            continue
-        if array.size == 0 or array.size > 16:
-            continue
-        lines.append(f"{name} =  {value if isinstance(value, (np.ndarray, list)) else array.item()}")
-    return "\n".join(lines)
-
-
-def check(namespace: Dict[str, Any], lang: str = "en") -> bool:
-    """The self-check cell: checks the worksheet's values this notebook holds step by step,
-    as `phonglab check` checks a saved notebook, and prints the table (each step, the
-    first wrong one and its likely cause) in lang. Call it as phonglab.check(globals()).
-
-    The givens are read from the cells run so far (IPython's `In`; nothing is run again),
-    the values from the notebook's variables. Returns True when every step is right."""
-    cells = namespace.get("In") or namespace.get("_ih") or []
-    code = "\n".join(c for c in cells if isinstance(c, str) and "phonglab.check(" not in c)
-    text, right = _core.check_work(code, _printed(namespace), lang)
-    print(text, end="")
-    return right
+def share_link(
+    scene: Scene,
+    base: Optional[str] = None,
+    open_in: Optional[str] = None,
+    present: bool = False,
+    channel: Optional[str] = None,
+) -> str:
+    """The scene as a link that opens it in phonglab's browser build, as `phonglab share`
+    writes it: base, the page (an http:// or https:// address; default the published
+    build); open_in, the language it opens in ("en", "pt-PT", "pt-BR"); present, opened
+    presenting to a class; channel, the term shown in place of the picture (a name
+    `phonglab share --channel` takes). SceneError for anything else."""
+    if base is None:
+        return _core.share_link(scene._inner, open_in=open_in, present=bool(present), channel=channel)
+    return _core.share_link(scene._inner, base, open_in, bool(present), channel)

@@ -140,10 +140,16 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
     let mut code = String::new();
     let mut any = false;
     for cell in cells.iter().filter(|c| c["cell_type"] == "code") {
-        code.push_str(&joined(&cell["source"]));
+        let source = joined(&cell["source"]);
+        code.push_str(&source);
         code.push('\n');
         for output in cell["outputs"].as_array().map(Vec::as_slice).unwrap_or_default() {
             any = true;
+            // The self-check's table echoes the formulas and both values of every step
+            // (`vlv = vertexPos - lightPos`): phonglab's words, never the student's work.
+            if calls_self_check(&source) {
+                continue;
+            }
             match output["output_type"].as_str() {
                 Some("stream") => text.push_str(&joined(&output["text"])),
                 Some("error") => {
@@ -160,6 +166,15 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
         return Err(OutputsError::NoOutputs(crate::t!("check-no-outputs")));
     }
     read_printed_text(&text).map(|p| Printed { code, ..p })
+}
+
+/// Does a cell's `source` run the notebook's self-check (`phonglab.check(globals())`,
+/// outside a comment)? What it prints is the check's table, not the student's values.
+pub fn calls_self_check(source: &str) -> bool {
+    source.lines().any(|line| {
+        let code = line.split('#').next().unwrap_or("");
+        code.contains("phonglab.check(") || code.contains("check(globals()")
+    })
 }
 
 /// A notebook's multi-line text: one string, or a list of lines.
@@ -298,6 +313,29 @@ mod tests {
         assert!(matches!(notebook_outputs(nb), Err(OutputsError::NoOutputs(_))));
         let ran = r#"{"cells": [{"cell_type": "code", "source": ["x = 1"], "outputs": [{"output_type": "stream", "name": "stdout", "text": ["at =  5.2\n"]}]}]}"#;
         assert_eq!(notebook_outputs(ran).unwrap().get("at").unwrap().numbers, vec![5.2]);
+    }
+
+    #[test]
+    fn the_self_checks_own_table_is_not_read_as_the_students_values() {
+        // The vectors cell printed vlv reversed; the self-check cell, run after it, echoes
+        // the formula and the key's value under the same name.
+        let nb = r##"{"cells": [
+            {"cell_type": "code", "source": ["vlv = lightPos - vertexPos\n", "print('vlv = ', vlv)"],
+             "outputs": [{"output_type": "stream", "name": "stdout", "text": ["vlv =  [-0.79 -0.55 0.24 0.]\n"]}]},
+            {"cell_type": "code", "source": ["import phonglab; phonglab.check(globals()) # the check\n"],
+             "outputs": [{"output_type": "stream", "name": "stdout", "text": [
+                "    vlv = vertexPos - lightPos\n", "vlv: yours [-0.79 -0.55 0.24 0], the key's [0.79 0.55 -0.24 0]: wrong\n"]}]},
+            {"cell_type": "code", "source": ["# import phonglab; phonglab.check(globals())\n", "at = 2"],
+             "outputs": [{"output_type": "stream", "name": "stdout", "text": ["at =  2\n"]}]}
+        ]}"##;
+        let p = notebook_outputs(nb).unwrap();
+        let names: Vec<&str> = p.values.iter().map(|v| v.name.as_str()).collect();
+        assert_eq!(names, vec!["vlv", "at"]);
+        assert_eq!(p.get("vlv").unwrap().numbers, vec![-0.79, -0.55, 0.24, 0.0]);
+        assert!(p.unread.is_empty(), "{:?}", p.unread);
+        assert!(p.code.contains("phonglab.check(globals())"));
+        assert!(calls_self_check("phonglab.check(globals(), lang='pt-PT')"));
+        assert!(!calls_self_check("# run phonglab.check(globals()) at the end\nx = 1"));
     }
 
     #[test]
