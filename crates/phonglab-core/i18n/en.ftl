@@ -735,9 +735,21 @@ py-two-side-program-comment = Lets the fragment shader’s gl_Color be the back 
 # phonglab-py: the Python package
 python-unknown-value = { $what }{ $value }: the values it takes are { $names }
 python-wrong-length = { $field }: { $count } numbers given, { $expected } expected
-python-no-such-light = there is no light { $light }: the scene has { $count } lights, numbered from 0
+python-no-such-light = there is no light { $light }: the scene has { $count ->
+        [one] 1 light, numbered 0
+       *[other] { $count } lights, numbered from 0
+    }
+python-not-real = { $what } = { $value }: not a number. Give real numbers: an int or a float, or a list or NumPy array of them (a text, True or False, None and complex numbers are not read as numbers; in Python write 25.6, not "25,6")
+python-not-integer = { $what } = { $value }: not a whole number; give an int, such as 5
+python-not-a-scene = { $what }: { $value } is not a phonglab.Scene; make one first: phonglab.Scene.load("scene.toml"), phonglab.Scene.worksheet(5) or phonglab.Scene.preset("phong-demo")
+python-no-field-guess = { $what } has no { $value }: did you mean { $guess }? Its names: { $names }
+python-no-field = { $what } has no { $value }; its names: { $names }
+python-lights-fixed = scene.lights has no { $value }: the lights are the scene's, edited here field by field (scene.lights[0].position = ...); a light is added or removed in a scene file, which Scene.load then reads
+python-no-memory = not enough memory: { $bytes } bytes could not be had; light the vertices in smaller chunks
+python-not-finite-row = { $name }: row { $row } is { $value }: every number must be finite and within float32's range (±3.4e38)
+python-bad-base = base={ $base } is not a web address a link can start with: give one that starts with https:// (or http://) and a host, without spaces, quotes or control characters
 python-wrong-shape = { $name }: an array of shape { $shape }, where (N, 3) is expected, the same N for the positions and the normals
-nb-self-check = Self-check: with the Python package phonglab installed (`pip install phonglab`), uncomment the cell below and run it after the others. It compares each value this notebook computed with the key, step by step, and names the first wrong step and its likely cause. Nothing here depends on it.
+nb-self-check = Self-check: with the Python package phonglab installed (it is not on PyPI yet: install the wheel file, `pip install phonglab-*.whl`, which phonglab's `scripts/wheel` builds or your teacher hands out), uncomment the cell below and run it after the others. It compares each value this notebook computed with the key, step by step, and names the first wrong step and its likely cause. Nothing here depends on it.
 check-rules = rules assumed: { $rules }
 check-inputs-differ = your typed inputs differ from the assignment's: { $names }
 check-step = { $step }: yours { $student }, the key's { $key }: { $verdict }

@@ -735,9 +735,21 @@ py-two-side-program-comment = Faz o gl_Color do fragment shader ser a cor de tr�
 # phonglab-py: the Python package
 python-unknown-value = { $what }{ $value }: os valores possíveis são { $names }
 python-wrong-length = { $field }: { $count } números informados, { $expected } esperados
-python-no-such-light = não existe a luz { $light }: a cena tem { $count } luzes, numeradas a partir de 0
+python-no-such-light = não existe a luz { $light }: a cena tem { $count ->
+        [one] 1 luz, numerada 0
+       *[other] { $count } luzes, numeradas a partir de 0
+    }
+python-not-real = { $what } = { $value }: não é um número. Informe números reais: um int ou um float, ou uma lista ou array NumPy deles (um texto, True ou False, None e números complexos não são lidos como números; em Python escreva 25.6, não "25,6")
+python-not-integer = { $what } = { $value }: não é um número inteiro; informe um int, por exemplo 5
+python-not-a-scene = { $what }: { $value } não é uma phonglab.Scene; crie uma antes: phonglab.Scene.load("cena.toml"), phonglab.Scene.worksheet(5) ou phonglab.Scene.preset("phong-demo")
+python-no-field-guess = { $what } não tem { $value }: você quis dizer { $guess }? Seus nomes: { $names }
+python-no-field = { $what } não tem { $value }; seus nomes: { $names }
+python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz é adicionada ou removida em um arquivo de cena, que o Scene.load depois lê
+python-no-memory = memória insuficiente: não foi possível obter { $bytes } bytes; ilumine os vértices em blocos menores
+python-not-finite-row = { $name }: a linha { $row } é { $value }: todos os números precisam ser finitos e estar dentro do intervalo do float32 (±3,4e38)
+python-bad-base = base={ $base } não é um endereço web pelo qual um link possa começar: informe um que comece com https:// (ou http://) e um host, sem espaços, aspas nem caracteres de controle
 python-wrong-shape = { $name }: um array de formato { $shape }, quando se espera (N, 3), com o mesmo N para as posições e as normais
-nb-self-check = Autoverificação: com o pacote Python phonglab instalado (`pip install phonglab`), descomente a célula abaixo e execute-a depois das outras. Ela compara cada valor que este notebook calculou com o gabarito, passo a passo, e aponta o primeiro passo errado e a causa provável. Nada mais neste notebook depende dela.
+nb-self-check = Autoverificação: com o pacote Python phonglab instalado (ainda não está no PyPI: instale o arquivo wheel, `pip install phonglab-*.whl`, que o `scripts/wheel` do phonglab gera ou que o professor distribui), descomente a célula abaixo e execute-a depois das outras. Ela compara cada valor que este notebook calculou com o gabarito, passo a passo, e aponta o primeiro passo errado e a causa provável. Nada mais neste notebook depende dela.
 check-rules = regras assumidas: { $rules }
 check-inputs-differ = os dados que você digitou diferem dos do enunciado: { $names }
 check-step = { $step }: o seu { $student }, o do gabarito { $key }: { $verdict }

@@ -735,9 +735,21 @@ py-two-side-program-comment = Faz com que o gl_Color do fragment shader seja a c
 # phonglab-py: the Python package
 python-unknown-value = { $what }{ $value }: os valores possíveis são { $names }
 python-wrong-length = { $field }: foram dados { $count } números, esperavam-se { $expected }
-python-no-such-light = não há luz { $light }: a cena tem { $count } luzes, numeradas a partir de 0
+python-no-such-light = não há luz { $light }: a cena tem { $count ->
+        [one] 1 luz, numerada 0
+       *[other] { $count } luzes, numeradas a partir de 0
+    }
+python-not-real = { $what } = { $value }: não é um número. Dê números reais: um int ou um float, ou uma lista ou matriz NumPy deles (um texto, True ou False, None e números complexos não são lidos como números; em Python escreva 25.6, não "25,6")
+python-not-integer = { $what } = { $value }: não é um número inteiro; dê um int, por exemplo 5
+python-not-a-scene = { $what }: { $value } não é uma phonglab.Scene; crie uma primeiro: phonglab.Scene.load("cena.toml"), phonglab.Scene.worksheet(5) ou phonglab.Scene.preset("phong-demo")
+python-no-field-guess = { $what } não tem { $value }: quis dizer { $guess }? Os seus nomes: { $names }
+python-no-field = { $what } não tem { $value }; os seus nomes: { $names }
+python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz acrescenta-se ou retira-se num ficheiro de cena, que o Scene.load depois lê
+python-no-memory = memória insuficiente: não foi possível obter { $bytes } bytes; ilumine os vértices em blocos mais pequenos
+python-not-finite-row = { $name }: a linha { $row } é { $value }: todos os números têm de ser finitos e estar dentro do alcance do float32 (±3,4e38)
+python-bad-base = base={ $base } não é um endereço web por onde uma ligação possa começar: dê um que comece por https:// (ou http://) e um anfitrião, sem espaços, aspas nem caracteres de controlo
 python-wrong-shape = { $name }: uma matriz de forma { $shape }, quando se espera (N, 3), com o mesmo N para as posições e as normais
-nb-self-check = Autoverificação: com o pacote Python phonglab instalado (`pip install phonglab`), retire o comentário da célula abaixo e execute-a depois das outras. Compara cada valor que este caderno calculou com a solução, passo a passo, e indica o primeiro passo errado e a causa provável. Nada mais neste caderno depende dela.
+nb-self-check = Autoverificação: com o pacote Python phonglab instalado (ainda não está no PyPI: instale o ficheiro wheel, `pip install phonglab-*.whl`, que o `scripts/wheel` do phonglab constrói ou que o professor distribui), retire o comentário da célula abaixo e execute-a depois das outras. Compara cada valor que este caderno calculou com a solução, passo a passo, e indica o primeiro passo errado e a causa provável. Nada mais neste caderno depende dela.
 check-rules = regras assumidas: { $rules }
 check-inputs-differ = os dados que escreveu diferem dos do enunciado: { $names }
 check-step = { $step }: o seu { $student }, o da solução { $key }: { $verdict }
