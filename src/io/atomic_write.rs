@@ -121,6 +121,22 @@ pub(crate) mod tests {
     }
 
     #[test]
+    #[cfg(unix)]
+    fn a_replaced_file_keeps_its_permissions() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = temp_dir("mode");
+        let private = dir.join("private.toml");
+        std::fs::write(&private, b"old").unwrap();
+        std::fs::set_permissions(&private, std::fs::Permissions::from_mode(0o600)).unwrap();
+        write(&private, b"new").unwrap();
+        assert_eq!(std::fs::metadata(&private).unwrap().permissions().mode() & 0o777, 0o600);
+        std::fs::set_permissions(&private, std::fs::Permissions::from_mode(0o640)).unwrap();
+        write(&private, b"newer").unwrap();
+        assert_eq!(std::fs::metadata(&private).unwrap().permissions().mode() & 0o777, 0o640);
+        assert_eq!(std::fs::read(&private).unwrap(), b"newer");
+    }
+
+    #[test]
     fn the_injected_fault_names_the_failing_step() {
         let dir = temp_dir("steps");
         let t = dir.join("a.txt");

@@ -212,7 +212,7 @@ impl PyScene {
     }
 
     /// Writes the scene file at `path` as the app's Save does: whole or not at all (a
-    /// temporary file renamed over it, with the system's usual permissions), through a link
+    /// temporary file renamed over it, a file replaced keeping its permissions), through a link
     /// to the file it names, refused onto a FIFO, a device, a folder or the scene's mesh.
     fn save(&self, path: std::path::PathBuf) -> PyResult<()> {
         files::save(&self.doc, &path).map_err(scene_error)

@@ -124,12 +124,16 @@ def test_save_onto_a_fifo_or_a_device_is_refused_and_leaves_it(tmp_path):
     assert stat.S_ISCHR(os.lstat("/dev/null").st_mode)
 
 
-def test_save_keeps_the_systems_usual_permissions(tmp_path):
+def test_save_keeps_a_files_permissions_and_gives_a_new_one_the_usual_ones(tmp_path):
     old = os.umask(0o022)
     try:
         new = tmp_path / "new.toml"
         phonglab.Scene.worksheet(5).save(new)
         assert stat.S_IMODE(os.stat(new).st_mode) == 0o644
+        os.chmod(new, 0o600)
+        phonglab.Scene.worksheet(3).save(new)
+        assert stat.S_IMODE(os.stat(new).st_mode) == 0o600
+        assert phonglab.Scene.load(new).to_toml() == phonglab.Scene.worksheet(3).to_toml()
     finally:
         os.umask(old)
 

@@ -289,8 +289,8 @@ class Scene:
     @_refusals_here
     def save(self, path: "os.PathLike[str] | str") -> None:
         """Writes the scene file as the app's Save and `phonglab export -o` write one: whole
-        or not at all (a temporary file beside it, renamed over it), with the system's
-        usual permissions; through a symbolic link to the file it names (the link stays).
+        or not at all (a temporary file beside it, renamed over it), a file replaced keeping
+        its permissions; through a symbolic link to the file it names (the link stays).
         Refused, with nothing written: a folder, a FIFO, a device, the scene's own mesh."""
         self._inner.save(path)
 

@@ -285,8 +285,8 @@ fn remove_stale_temporaries(dir: &Path, name: &str) {
     }
 }
 
-/// Writes `bytes` to `path` whole or not at all (see the module's documentation). A
-/// symbolic link is followed (the file it names is replaced, or made where it names
+/// Writes `bytes` to `path` whole or not at all (see the module's documentation), the
+/// permissions of a file replaced kept (a new file gets the umask's). A symbolic link is followed (the file it names is replaced, or made where it names
 /// nothing yet; the link stays a link); anything there that is not a regular file (a
 /// device, a pipe, a folder) is refused. Temporary files that killed writes of the same
 /// file left beside it are removed first.
@@ -300,7 +300,16 @@ pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
     let dir = folder_of(path);
     remove_stale_temporaries(dir, &name);
     let tmp = temporary_name(dir, &name);
+    // The file replaced keeps its permissions (a file its owner made private stays so); a
+    // new one gets the system's usual ones (the umask).
+    let mode = std::fs::metadata(path).ok().filter(std::fs::Metadata::is_file).map(|m| m.permissions());
     write_new(&tmp, bytes).map_err(|(what, e)| WriteError::new(path, what, e, KEPT))?;
+    if let Some(mode) = mode
+        && let Err(e) = std::fs::set_permissions(&tmp, mode)
+    {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(WriteError::new(path, "write-step-create", e, KEPT));
+    }
     if let Err(e) = rename(&tmp, path) {
         let _ = std::fs::remove_file(&tmp);
         return Err(WriteError::new(path, "write-step-rename", e, KEPT));
