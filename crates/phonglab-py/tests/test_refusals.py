@@ -81,6 +81,11 @@ def test_the_vertex_position_takes_x_y_z_as_light_does():
     assert list(phonglab.light(scene).I) == list(phonglab.light(phonglab.Scene.worksheet(5), vertex=[1, 2, 3]).I)
 
 
+def test_a_vertex_at_infinity_is_explained_with_w_0():
+    lit = phonglab.light(phonglab.Scene.worksheet(5), vertex=[1, 2, 3, 0])
+    assert lit.vertexPos[3] == 0 and "vertexPos = [1 3.4 1.2 0]" in lit.explain()
+
+
 def test_numbers_given_as_text_to_light_and_the_worksheet_are_refused():
     scene = phonglab.Scene.worksheet(5)
     with pytest.raises(phonglab.SceneError, match=r"light\(vertex\) = '1, 2, 3': not a number"):
