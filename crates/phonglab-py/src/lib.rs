@@ -572,7 +572,7 @@ fn refusal(kind: &str, what: &str, value: &str, names: &str, guess: &str) -> PyR
         "lights-fixed" => phonglab_core::t!("python-lights-fixed", value = value),
         "no-light" => phonglab_core::t!(
             "python-no-such-light",
-            light = value.to_string(),
+            light = value.clone(),
             count = names.parse::<usize>().unwrap_or_default()
         ),
         other => {
