@@ -158,3 +158,14 @@ def test_a_notebooks_name_with_control_characters_is_written_visibly_and_saves_a
     assert "\x1b" not in scene.name and "\\u{1B}" in scene.name, scene.name
     scene.save(tmp_path / "w.toml")
     assert phonglab.Scene.load(tmp_path / "w.toml").name == scene.name
+
+
+@pytest.mark.parametrize("lang, words", [("en", "it is not on PyPI yet"), ("pt-PT", "ainda não está no PyPI"), ("pt-BR", "ainda não está no PyPI")])
+def test_the_exported_notebook_says_how_to_install_the_package_until_it_is_on_pypi(tmp_path, cli, lang, words):
+    import json
+
+    path = tmp_path / "w.ipynb"
+    cli("export", "--to", "notebook", "--lang", lang, "-o", path)
+    cells = json.loads(path.read_text())["cells"]
+    text = "".join("".join(c["source"]) for c in cells if c["cell_type"] == "markdown")
+    assert words in text and "`pip install phonglab-*.whl`" in text, text[-600:]
