@@ -30,11 +30,14 @@ pub fn import(path: &Path) -> Result<Imported, String> {
 }
 
 /// Writes `doc` to `path` as the app's Save and `phonglab export -o` write a file: refused
-/// onto the scene's own mesh; whole or not at all; a link followed to the file it names.
-pub fn save(doc: &Document, path: &Path) -> Result<(), String> {
-    let mesh: Vec<(&Path, same_file::Input)> =
+/// onto the scene's own mesh and onto the notebook or script it was imported from (`code`),
+/// as `phonglab import -o` refuses its input; whole or not at all; a link followed to the
+/// file it names.
+pub fn save(doc: &Document, path: &Path, code: Option<&Path>) -> Result<(), String> {
+    let mut inputs: Vec<(&Path, same_file::Input)> =
         doc.view.obj.iter().map(|m| (Path::new(m), same_file::Input::Mesh)).collect();
-    same_file::refuse_onto(&[path], &mesh)?;
+    inputs.extend(code.map(|c| (c, same_file::Input::Code)));
+    same_file::refuse_onto(&[path], &inputs)?;
     let text = doc.to_toml().map_err(|e| e.to_string())?;
     atomic_write::write(path, text.as_bytes()).map_err(|e| e.to_string())
 }

@@ -214,8 +214,10 @@ impl PyScene {
     /// Writes the scene file at `path` as the app's Save does: whole or not at all (a
     /// temporary file renamed over it, a file replaced keeping its permissions), through a link
     /// to the file it names, refused onto a FIFO, a device, a folder or the scene's mesh.
-    fn save(&self, path: std::path::PathBuf) -> PyResult<()> {
-        files::save(&self.doc, &path).map_err(scene_error)
+    /// `code`: the notebook or script the scene was imported from, never written over.
+    #[pyo3(signature = (path, code=None))]
+    fn save(&self, path: std::path::PathBuf, code: Option<std::path::PathBuf>) -> PyResult<()> {
+        files::save(&self.doc, &path, code.as_deref()).map_err(scene_error)
     }
 
     /// The modelview (object to eye), 16 numbers row by row.

@@ -169,3 +169,14 @@ def test_the_exported_notebook_says_how_to_install_the_package_until_it_is_on_py
     cells = json.loads(path.read_text())["cells"]
     text = "".join("".join(c["source"]) for c in cells if c["cell_type"] == "markdown")
     assert words in text and "`pip install phonglab-*.whl`" in text, text[-600:]
+
+
+def test_save_refuses_the_notebook_the_scene_was_imported_from(tmp_path, cli):
+    path = tmp_path / "hw.ipynb"
+    cli("export", "--to", "notebook", "-o", path)
+    before = path.read_bytes()
+    scene = phonglab.Scene.from_notebook(path)
+    with pytest.raises(phonglab.SceneError, match="is the notebook or script .*hw.ipynb, which this command reads"):
+        scene.save(path)
+    assert path.read_bytes() == before
+    scene.save(tmp_path / "hw.toml")

@@ -246,6 +246,7 @@ class Scene:
 
     def __init__(self, inner: "_core.Scene") -> None:
         self._inner = inner
+        self._code: Optional[str] = None
 
     @staticmethod
     @_refusals_here
@@ -284,15 +285,18 @@ class Scene:
         inner, notices = _core.Scene.import_file(path)
         for notice in notices:
             warnings.warn(notice, stacklevel=3)
-        return Scene(inner)
+        scene = Scene(inner)
+        scene._code = os.path.abspath(path)  # an input: save never writes over it
+        return scene
 
     @_refusals_here
     def save(self, path: "os.PathLike[str] | str") -> None:
         """Writes the scene file as the app's Save and `phonglab export -o` write one: whole
         or not at all (a temporary file beside it, renamed over it), a file replaced keeping
         its permissions; through a symbolic link to the file it names (the link stays).
-        Refused, with nothing written: a folder, a FIFO, a device, the scene's own mesh."""
-        self._inner.save(path)
+        Refused, with nothing written: a folder, a FIFO, a device, the scene's own mesh, the
+        notebook or script it was imported from."""
+        self._inner.save(path, self._code)
 
     def to_toml(self) -> str:
         """The scene file's text."""
