@@ -518,7 +518,6 @@ budget-what-eval = lighting { $count ->
     [one] one case of { $largest }
    *[other] { $count } cases, one at a time, the largest { $largest }
 } of JSON
-file-kind-code = notebooks and scripts
 cli-export = Write a scene as the student's own code: the worksheet's notebook, a PyOpenGL program, an openFrameworks app, or the GLSL
 cli-import = Read a worksheet-style notebook (.ipynb) or Python script (.py) into a scene file
 cli-arg-export-scene = A scene file (TOML); default: the worksheet's scene
@@ -657,34 +656,14 @@ cost-wrote = wrote { $files } in { $out }
 
 ## io-errors
 
-io-not-found = it does not exist
-io-permission-denied = permission denied
-io-storage-full = the disk is full
-io-is-a-directory = it is a folder
-io-not-a-directory = a part of the path is not a folder
-io-read-only = the file system is read-only
-io-already-exists = it already exists
-io-invalid-name = not a file name
-write-error = cannot write { $path }: { $what }: { $reason }; { $kept }
-write-step-write = write
-write-step-close = close
-write-step-sync = sync to the disk
-write-step-create = create
-write-step-rename = rename
-write-step-name = name
-write-step-create-folder = create the folder
-write-step-create-file-in = create a file in
 write-step-create-staging = create a staging folder in
 write-step-list = list
 write-step-lock-folder = lock the folder
 write-step-recover = finish the set a stopped run left in
 write-step-remove-journal = remove the journal of
 write-step-killed = stop (killed) while writing
-write-kept-file = the file there before (if any) is unchanged
-write-kept-nothing = nothing was written
 write-kept-folder = the folder is unchanged
 write-kept-recoverable = the old set or the new one is whole, and the next run in this folder finishes what was started
-write-not-a-regular-file = not a regular file (a link to nothing, a folder, a device or a pipe): phonglab writes only a regular file or a new one
 set-folder-is-a-link = a link to another folder: phonglab writes a set of files only into a real folder, never through a link
 set-left-alone = { $name } in { $dir } was left as it is: { $why }
 set-why-loose-journal = a journal phonglab did not write there (planted, or left by an older phonglab); nothing it names was touched
@@ -695,11 +674,6 @@ set-why-not-a-journal = it is not a journal of phonglab's
 set-why-other-folder = it names not the folder it is in
 set-why-outside = it names files outside its folder
 set-why-unfinished = a stopped run's files could not be put in place without replacing files changed or made since ({ $names }); its new files are kept in that folder
-read-cannot = cannot read { $path }: { $reason }
-read-not-a-file = { $path } is not a regular file
-read-too-large = { $path } is { $size }; phonglab reads { $what } of at most { $cap }
-read-not-utf8 = { $path } is not UTF-8 text (byte { $byte })
-file-kind-scenes = scene files
 file-kind-cases = case files
 png-cannot-encode = cannot encode the PNG
 png-too-large = image too large
@@ -729,13 +703,6 @@ err-bench-shading = --shading { $value }: the shadings are gouraud, phong and fl
 err-bench-slices = --slices { $value }: the sphere takes 3 to 2048 slices (the benchmark's is 50)
 err-bench-scan = --scan { $value }: the scan-like mesh takes levels 0 to 9 (8 gives 1 310 720 triangles)
 err-study-timeout = the study did not finish in 5 minutes
-err-output-is-input = { $output } is { $what } { $input }, which this command reads (the same file): writing it would destroy what is read; choose another output
-err-output-is-other-output = { $output } is the other output { $other } (the same file): one would be written over the other; choose two different files
-input-kind-input = the input
-input-kind-scene = the scene
-input-kind-mesh = the mesh
-input-kind-code = the notebook or script
-input-kind-cases = the case file
 err-needs-window = this command draws the window: run it with the phonglab program
 screenshot-summary = { $path }: { $width }x{ $height } px; pictures { $pictures } points, the plot's unit circle { $circle } points across, { $empty } % empty
 screenshot-none = none
@@ -1025,7 +992,6 @@ student-picture-heading = Student's picture: { $file }
 student-picture-right = A: the right picture of this scene
 student-picture-theirs = B: the student's picture
 # fix57b
-read-link-refused = { $path } is a link: not read (a student’s work is read only from a file itself, never through a link)
 check-report-printed-twice = Steps printed more than once with different values (each printing was checked)
 # fixr3
 student-cause-beside = likely cause: { $words } [{ $id }] (the evidence is above the steps)

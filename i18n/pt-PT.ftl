@@ -518,7 +518,6 @@ budget-what-eval = iluminar { $count ->
     [one] um caso de { $largest }
    *[other] { $count } casos, um de cada vez, o maior com { $largest }
 } de JSON
-file-kind-code = cadernos e programas
 cli-export = Escrever uma cena como o código do próprio aluno: o caderno da ficha, um programa PyOpenGL, uma app openFrameworks, ou o GLSL
 cli-import = Ler um caderno (.ipynb) ou programa em Python (.py) no estilo da ficha para um ficheiro de cena
 cli-arg-export-scene = Um ficheiro de cena (TOML); por omissão: a cena da ficha
@@ -657,34 +656,14 @@ cost-wrote = escrito { $files } em { $out }
 
 ## io-errors
 
-io-not-found = não existe
-io-permission-denied = sem permissão
-io-storage-full = o disco está cheio
-io-is-a-directory = é uma pasta
-io-not-a-directory = uma parte do caminho não é uma pasta
-io-read-only = o sistema de ficheiros é só de leitura
-io-already-exists = já existe
-io-invalid-name = não é um nome de ficheiro
-write-error = não foi possível escrever { $path }: { $what }: { $reason }; { $kept }
-write-step-write = escrever
-write-step-close = fechar
-write-step-sync = sincronizar com o disco
-write-step-create = criar
-write-step-rename = mudar o nome
-write-step-name = nome
-write-step-create-folder = criar a pasta
-write-step-create-file-in = criar um ficheiro em
 write-step-create-staging = criar uma pasta temporária em
 write-step-list = listar
 write-step-lock-folder = bloquear a pasta
 write-step-recover = terminar o conjunto deixado por uma execução interrompida em
 write-step-remove-journal = remover o diário de
 write-step-killed = parar (morto) ao escrever
-write-kept-file = o ficheiro que lá estava (se havia) não mudou
-write-kept-nothing = nada foi escrito
 write-kept-folder = a pasta não mudou
 write-kept-recoverable = o conjunto antigo ou o novo está completo, e a próxima execução nesta pasta termina o que foi começado
-write-not-a-regular-file = não é um ficheiro normal (uma ligação para nada, uma pasta, um dispositivo ou um pipe): o phonglab só escreve num ficheiro normal ou num novo
 set-folder-is-a-link = uma ligação para outra pasta: o phonglab só escreve um conjunto de ficheiros numa pasta verdadeira, nunca através de uma ligação
 set-left-alone = { $name } em { $dir } ficou como estava: { $why }
 set-why-loose-journal = um diário que o phonglab não escreveu ali (posto por alguém, ou deixado por uma versão antiga do phonglab); nada do que nomeia foi tocado
@@ -695,11 +674,6 @@ set-why-not-a-journal = não é um diário do phonglab
 set-why-other-folder = não nomeia a pasta onde está
 set-why-outside = nomeia ficheiros fora da sua pasta
 set-why-unfinished = os ficheiros de uma execução interrompida não puderam ser postos no lugar sem substituir ficheiros alterados ou criados depois ({ $names }); os novos ficam guardados nessa pasta
-read-cannot = não foi possível ler { $path }: { $reason }
-read-not-a-file = { $path } não é um ficheiro normal
-read-too-large = { $path } tem { $size }; o phonglab lê { $what } de no máximo { $cap }
-read-not-utf8 = { $path } não é texto UTF-8 (byte { $byte })
-file-kind-scenes = ficheiros de cena
 file-kind-cases = ficheiros de casos
 png-cannot-encode = não foi possível codificar o PNG
 png-too-large = imagem grande demais
@@ -729,13 +703,6 @@ err-bench-shading = --shading { $value }: os sombreamentos são gouraud, phong e
 err-bench-slices = --slices { $value }: a esfera aceita de 3 a 2048 fatias (a de referência tem 50)
 err-bench-scan = --scan { $value }: a malha tipo digitalização aceita níveis de 0 a 9 (o 8 dá 1 310 720 triângulos)
 err-study-timeout = o estudo não terminou em 5 minutos
-err-output-is-input = { $output } é { $what } { $input }, que este comando lê (o mesmo ficheiro): escrevê-lo destruiria o que é lido; escolha outra saída
-err-output-is-other-output = { $output } é a outra saída { $other } (o mesmo ficheiro): uma seria escrita por cima da outra; escolha dois ficheiros diferentes
-input-kind-input = a entrada
-input-kind-scene = a cena
-input-kind-mesh = a malha
-input-kind-code = o caderno ou programa
-input-kind-cases = o ficheiro de casos
 err-needs-window = este comando desenha a janela: execute-o com o programa phonglab
 screenshot-summary = { $path }: { $width }x{ $height } px; imagens de { $pictures } pontos, o círculo unitário do gráfico com { $circle } pontos de diâmetro, { $empty } % vazio
 screenshot-none = nenhum
@@ -1025,7 +992,6 @@ student-picture-heading = Imagem do aluno: { $file }
 student-picture-right = A: a imagem certa desta cena
 student-picture-theirs = B: a imagem do aluno
 # fix57b
-read-link-refused = { $path } é uma ligação simbólica: não foi lido (o trabalho de um aluno só é lido de um ficheiro, nunca através de uma ligação)
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
 # fixr3
 student-cause-beside = causa provável: { $words } [{ $id }] (a prova está acima dos passos)

@@ -1,104 +1,19 @@
-//! Reading a file a user names: a regular file, at most a size cap, checked before reading
-//! (`/dev/zero` or a stray 2 GB file is refused at once instead of filling the memory).
-//! The file is opened without blocking ([`crate::platform::os::open_to_read`]: a FIFO
-//! cannot hang the reader) and checked through the open handle, not the path.
+//! Reading a file a user names: a regular file, at most a size cap, checked before reading,
+//! opened without blocking: the core's readers ([`phonglab_core::files::read`]), which the
+//! Python package shares; here the files the window receives (dropped, or brought by the
+//! browser).
 
-use std::io::Read;
 use std::path::Path;
 
 use crate::t;
 
-/// The largest scene file read: a scene file is a few kilobytes.
-pub const MAX_SCENE_BYTES: u64 = 1 << 20;
+pub use phonglab_core::files::read::{
+    MAX_SCENE_BYTES, Unread, read_capped, read_capped_or, read_submission, read_text_capped, read_text_submission,
+    within_cap,
+};
 
 /// The largest case file (glref JSON) read: the public cases are 1.3 MB.
 pub const MAX_CASE_BYTES: u64 = 256 << 20;
-
-/// Reads the file at `path` as bytes: refused when it is not a regular file or is larger
-/// than `cap` bytes (`what` names the kind of file in the message, in the user's language:
-/// `t!("file-kind-scenes")`). The messages are in the current language.
-pub fn read_capped(path: &Path, cap: u64, what: &str) -> Result<Vec<u8>, String> {
-    let shown = crate::io::reasons::shown(path);
-    read_capped_or(path, cap).map_err(|e| match e {
-        Unread::Io(e) => t!("read-cannot", path = shown.clone(), reason = crate::io::reasons::io_reason(&e)),
-        Unread::NotAFile => t!("read-not-a-file", path = shown.clone()),
-        Unread::TooLarge(size) => within_cap(&shown, size, cap, what).err().unwrap_or_default(),
-    })
-}
-
-/// Why a file was not read.
-#[derive(Debug)]
-pub enum Unread {
-    /// The system's error (`NotFound`, ...).
-    Io(std::io::Error),
-    /// It is a folder, a device, a FIFO or a socket.
-    NotAFile,
-    /// It is larger than the cap: its size in bytes (at least).
-    TooLarge(u64),
-}
-
-/// [`read_capped`], with the reason as a value (for callers that treat each differently,
-/// as the session does).
-pub fn read_capped_or(path: &Path, cap: u64) -> Result<Vec<u8>, Unread> {
-    read_opened(crate::platform::os::open_to_read(path).map_err(Unread::Io)?, cap)
-}
-
-/// [`read_capped`] of a student's submission, hostile input: a symbolic link at `path` is
-/// refused by the open itself ([`crate::platform::os::open_no_follow`]), so a link planted
-/// between a look at the folder and the read is never followed.
-pub fn read_submission(path: &Path, cap: u64, what: &str) -> Result<Vec<u8>, String> {
-    let shown = crate::io::reasons::shown(path);
-    let opened = crate::platform::os::open_no_follow(path).map_err(|e| {
-        if crate::platform::os::is_link_refused(&e) {
-            t!("read-link-refused", path = shown.clone())
-        } else {
-            t!("read-cannot", path = shown.clone(), reason = crate::io::reasons::io_reason(&e))
-        }
-    })?;
-    read_opened(opened, cap).map_err(|e| match e {
-        Unread::Io(e) => t!("read-cannot", path = shown.clone(), reason = crate::io::reasons::io_reason(&e)),
-        Unread::NotAFile => t!("read-not-a-file", path = shown.clone()),
-        Unread::TooLarge(size) => within_cap(&shown, size, cap, what).err().unwrap_or_default(),
-    })
-}
-
-/// [`read_submission`], as UTF-8 text.
-pub fn read_text_submission(path: &Path, cap: u64, what: &str) -> Result<String, String> {
-    utf8(read_submission(path, cap, what)?, path)
-}
-
-/// Reads the opened `file`, checked through its handle: a regular file of at most `cap` bytes.
-fn read_opened(file: std::fs::File, cap: u64) -> Result<Vec<u8>, Unread> {
-    let meta = file.metadata().map_err(Unread::Io)?;
-    if !meta.is_file() {
-        return Err(Unread::NotAFile);
-    }
-    if meta.len() > cap {
-        return Err(Unread::TooLarge(meta.len()));
-    }
-    let mut bytes = Vec::with_capacity(meta.len() as usize);
-    file.take(cap + 1).read_to_end(&mut bytes).map_err(Unread::Io)?;
-    // The file may have grown since its size was read.
-    if bytes.len() as u64 > cap {
-        return Err(Unread::TooLarge(bytes.len() as u64));
-    }
-    Ok(bytes)
-}
-
-/// Refuses a file of `size` bytes larger than `cap`, naming it (`name`) and the kind of
-/// file (`what`): for files read here and for the browser's, which arrive as bytes.
-pub fn within_cap(name: &str, size: u64, cap: u64, what: &str) -> Result<(), String> {
-    if size <= cap {
-        return Ok(());
-    }
-    Err(t!(
-        "read-too-large",
-        path = name,
-        size = phonglab_core::mesh::obj::describe_bytes(size),
-        what = what,
-        cap = phonglab_core::mesh::obj::describe_bytes(cap)
-    ))
-}
 
 /// A file dropped on the window: its name and bytes now on the desktop (read from its path,
 /// under `cap`); in the browser `None` now, the bytes arriving later through
@@ -162,26 +77,14 @@ pub fn read_link(link: &str, fragment: &str) -> Result<phonglab_core::export::sh
         .map_err(|e| t!("scene-link-refused", link = shown, why = e.to_string()))
 }
 
-/// Reads and checks a scene file (a relative mesh path is taken from its folder), or the
-/// scene a shared link carries ([`share_fragment`]); an error names the file or the link.
+/// Reads and checks a scene file (a relative mesh path is taken from its folder: the
+/// core's [`phonglab_core::files::read::load_scene`]), or the scene a shared link carries
+/// ([`share_fragment`]); an error names the file or the link.
 pub fn load_scene(path: &Path) -> Result<phonglab_core::Document, String> {
     if let Some(fragment) = share_fragment(path) {
         return load_link(&path.to_string_lossy(), fragment);
     }
-    let text = read_text_capped(path, MAX_SCENE_BYTES, &t!("file-kind-scenes"))?;
-    phonglab_core::Document::from_toml_in(&text, path.parent())
-        .map_err(|e| format!("{}: {e}", crate::io::reasons::shown(path)))
-}
-
-/// [`read_capped`], as UTF-8 text.
-pub fn read_text_capped(path: &Path, cap: u64, what: &str) -> Result<String, String> {
-    utf8(read_capped(path, cap, what)?, path)
-}
-
-/// The bytes read from `path` as UTF-8 text, or where they are not.
-fn utf8(bytes: Vec<u8>, path: &Path) -> Result<String, String> {
-    String::from_utf8(bytes)
-        .map_err(|e| t!("read-not-utf8", path = crate::io::reasons::shown(path), byte = e.utf8_error().valid_up_to()))
+    phonglab_core::files::read::load_scene(path)
 }
 
 #[cfg(test)]

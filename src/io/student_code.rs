@@ -6,7 +6,7 @@
 use std::path::Path;
 
 /// The largest notebook or script opened (a notebook with its outputs is larger than a scene).
-pub const MAX_CODE_BYTES: u64 = 16 * super::input_file::MAX_SCENE_BYTES;
+pub use phonglab_core::files::read::MAX_CODE_BYTES;
 
 /// Is `path` a worksheet-style notebook (`Some(true)`) or Python script (`Some(false)`)?
 pub fn student_code(path: &Path) -> Option<bool> {

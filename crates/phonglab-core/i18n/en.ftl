@@ -748,9 +748,21 @@ py-two-side-program-comment = Lets the fragment shader’s gl_Color be the back 
 # phonglab-py: the Python package
 python-unknown-value = { $what }{ $value }: the values it takes are { $names }
 python-wrong-length = { $field }: { $count } numbers given, { $expected } expected
-python-no-such-light = there is no light { $light }: the scene has { $count } lights, numbered from 0
+python-no-such-light = there is no light { $light }: the scene has { $count ->
+        [one] 1 light, numbered 0
+       *[other] { $count } lights, numbered from 0
+    }
+python-not-real = { $what } = { $value }: not a number. Give real numbers: an int or a float, or a list or NumPy array of them (a text, True or False, None and complex numbers are not read as numbers; in Python write 25.6, not "25,6")
+python-not-integer = { $what } = { $value }: not a whole number; give an int, such as 5
+python-not-a-scene = { $what }: { $value } is not a phonglab.Scene; make one first: phonglab.Scene.load("scene.toml"), phonglab.Scene.worksheet(5) or phonglab.Scene.preset("phong-demo")
+python-no-field-guess = { $what } has no { $value }: did you mean { $guess }? Its names: { $names }
+python-no-field = { $what } has no { $value }; its names: { $names }
+python-lights-fixed = scene.lights has no { $value }: the lights are the scene's, edited here field by field (scene.lights[0].position = ...); a light is added or removed in a scene file, which Scene.load then reads
+python-no-memory = not enough memory: { $bytes } bytes could not be had; light the vertices in smaller chunks
+python-not-finite-row = { $name }: row { $row } is { $value }: every number must be finite and within float32's range (±3.4e38)
+python-bad-base = base={ $base } is not a web address a link can start with: give one that starts with https:// (or http://) and a host, without spaces, quotes or control characters
 python-wrong-shape = { $name }: an array of shape { $shape }, where (N, 3) is expected, the same N for the positions and the normals
-nb-self-check = Self-check: with the Python package phonglab installed (`pip install phonglab`), uncomment the cell below and run it after the others. It compares each value this notebook computed with the key, step by step, and names the first wrong step and its likely cause. Nothing here depends on it.
+nb-self-check = Self-check: with the Python package phonglab installed (it is not on PyPI yet: install the wheel file, `pip install phonglab-*.whl`, which phonglab's `scripts/wheel` builds or your teacher hands out), uncomment the cell below and run it after the others. It compares each value this notebook computed with the key, step by step, and names the first wrong step and its likely cause. Nothing here depends on it.
 check-rules = rules assumed: { $rules }
 check-inputs-differ = your typed inputs differ from the assignment's: { $names }
 check-step = { $step }: yours { $student }, the key's { $key }: { $verdict }
@@ -770,3 +782,39 @@ explain-column-formula = formula
 explain-column-value = value
 explain-column-notes = notes
 share-base-refused = the page a link opens must be an http:// or https:// address, without spaces, quotes or control characters: { $base }
+
+## Files read and written (formats::files): shared by the command line, the window and the Python package
+io-not-found = it does not exist
+io-permission-denied = permission denied
+io-storage-full = the disk is full
+io-is-a-directory = it is a folder
+io-not-a-directory = a part of the path is not a folder
+io-read-only = the file system is read-only
+io-already-exists = it already exists
+io-invalid-name = not a file name
+write-error = cannot write { $path }: { $what }: { $reason }; { $kept }
+write-step-write = write
+write-step-close = close
+write-step-sync = sync to the disk
+write-step-create = create
+write-step-rename = rename
+write-step-name = name
+write-step-create-folder = create the folder
+write-step-create-file-in = create a file in
+write-kept-file = the file there before (if any) is unchanged
+write-kept-nothing = nothing was written
+write-not-a-regular-file = not a regular file (a link to nothing, a folder, a device or a pipe): phonglab writes only a regular file or a new one
+read-cannot = cannot read { $path }: { $reason }
+read-not-a-file = { $path } is not a regular file
+read-too-large = { $path } is { $size }; phonglab reads { $what } of at most { $cap }
+read-not-utf8 = { $path } is not UTF-8 text (byte { $byte })
+read-link-refused = { $path } is a link: not read (a student’s work is read only from a file itself, never through a link)
+file-kind-scenes = scene files
+file-kind-code = notebooks and scripts
+err-output-is-input = { $output } is { $what } { $input }, which this command reads (the same file): writing it would destroy what is read; choose another output
+err-output-is-other-output = { $output } is the other output { $other } (the same file): one would be written over the other; choose two different files
+input-kind-input = the input
+input-kind-scene = the scene
+input-kind-mesh = the mesh
+input-kind-code = the notebook or script
+input-kind-cases = the case file

@@ -748,9 +748,21 @@ py-two-side-program-comment = Faz o gl_Color do fragment shader ser a cor de tr�
 # phonglab-py: the Python package
 python-unknown-value = { $what }{ $value }: os valores possíveis são { $names }
 python-wrong-length = { $field }: { $count } números informados, { $expected } esperados
-python-no-such-light = não existe a luz { $light }: a cena tem { $count } luzes, numeradas a partir de 0
+python-no-such-light = não existe a luz { $light }: a cena tem { $count ->
+        [one] 1 luz, numerada 0
+       *[other] { $count } luzes, numeradas a partir de 0
+    }
+python-not-real = { $what } = { $value }: não é um número. Informe números reais: um int ou um float, ou uma lista ou array NumPy deles (um texto, True ou False, None e números complexos não são lidos como números; em Python escreva 25.6, não "25,6")
+python-not-integer = { $what } = { $value }: não é um número inteiro; informe um int, por exemplo 5
+python-not-a-scene = { $what }: { $value } não é uma phonglab.Scene; crie uma antes: phonglab.Scene.load("cena.toml"), phonglab.Scene.worksheet(5) ou phonglab.Scene.preset("phong-demo")
+python-no-field-guess = { $what } não tem { $value }: você quis dizer { $guess }? Seus nomes: { $names }
+python-no-field = { $what } não tem { $value }; seus nomes: { $names }
+python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz é adicionada ou removida em um arquivo de cena, que o Scene.load depois lê
+python-no-memory = memória insuficiente: não foi possível obter { $bytes } bytes; ilumine os vértices em blocos menores
+python-not-finite-row = { $name }: a linha { $row } é { $value }: todos os números precisam ser finitos e estar dentro do intervalo do float32 (±3,4e38)
+python-bad-base = base={ $base } não é um endereço web pelo qual um link possa começar: informe um que comece com https:// (ou http://) e um host, sem espaços, aspas nem caracteres de controle
 python-wrong-shape = { $name }: um array de formato { $shape }, quando se espera (N, 3), com o mesmo N para as posições e as normais
-nb-self-check = Autoverificação: com o pacote Python phonglab instalado (`pip install phonglab`), descomente a célula abaixo e execute-a depois das outras. Ela compara cada valor que este notebook calculou com o gabarito, passo a passo, e aponta o primeiro passo errado e a causa provável. Nada mais neste notebook depende dela.
+nb-self-check = Autoverificação: com o pacote Python phonglab instalado (ainda não está no PyPI: instale o arquivo wheel, `pip install phonglab-*.whl`, que o `scripts/wheel` do phonglab gera ou que o professor distribui), descomente a célula abaixo e execute-a depois das outras. Ela compara cada valor que este notebook calculou com o gabarito, passo a passo, e aponta o primeiro passo errado e a causa provável. Nada mais neste notebook depende dela.
 check-rules = regras assumidas: { $rules }
 check-inputs-differ = os dados que você digitou diferem dos do enunciado: { $names }
 check-step = { $step }: o seu { $student }, o do gabarito { $key }: { $verdict }
@@ -770,3 +782,39 @@ explain-column-formula = fórmula
 explain-column-value = valor
 explain-column-notes = observações
 share-base-refused = a página que um link abre precisa ser um endereço http:// ou https://, sem espaços, aspas nem caracteres de controle: { $base }
+
+## Files read and written (formats::files): shared by the command line, the window and the Python package
+io-not-found = não existe
+io-permission-denied = sem permissão
+io-storage-full = o disco está cheio
+io-is-a-directory = é uma pasta
+io-not-a-directory = uma parte do caminho não é uma pasta
+io-read-only = o sistema de arquivos é somente leitura
+io-already-exists = já existe
+io-invalid-name = não é um nome de arquivo
+write-error = não foi possível escrever { $path }: { $what }: { $reason }; { $kept }
+write-step-write = escrever
+write-step-close = fechar
+write-step-sync = sincronizar com o disco
+write-step-create = criar
+write-step-rename = mudar o nome
+write-step-name = nome
+write-step-create-folder = criar a pasta
+write-step-create-file-in = criar um arquivo em
+write-kept-file = o arquivo que estava lá (se havia) não mudou
+write-kept-nothing = nada foi escrito
+write-not-a-regular-file = não é um arquivo comum (um link para nada, uma pasta, um dispositivo ou um pipe): o phonglab só escreve em um arquivo comum ou em um novo
+read-cannot = não foi possível ler { $path }: { $reason }
+read-not-a-file = { $path } não é um arquivo comum
+read-too-large = { $path } tem { $size }; o phonglab lê { $what } de no máximo { $cap }
+read-not-utf8 = { $path } não é texto UTF-8 (byte { $byte })
+read-link-refused = { $path } é um link simbólico: não foi lido (o trabalho de um aluno só é lido de um arquivo, nunca por meio de um link)
+file-kind-scenes = arquivos de cena
+file-kind-code = notebooks e programas
+err-output-is-input = { $output } é { $what } { $input }, que este comando lê (o mesmo arquivo): escrevê-lo destruiria o que é lido; escolha outra saída
+err-output-is-other-output = { $output } é a outra saída { $other } (o mesmo arquivo): uma seria escrita por cima da outra; escolha dois arquivos diferentes
+input-kind-input = a entrada
+input-kind-scene = a cena
+input-kind-mesh = a malha
+input-kind-code = o notebook ou programa
+input-kind-cases = o arquivo de casos

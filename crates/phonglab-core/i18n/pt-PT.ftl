@@ -748,9 +748,21 @@ py-two-side-program-comment = Faz com que o gl_Color do fragment shader seja a c
 # phonglab-py: the Python package
 python-unknown-value = { $what }{ $value }: os valores possíveis são { $names }
 python-wrong-length = { $field }: foram dados { $count } números, esperavam-se { $expected }
-python-no-such-light = não há luz { $light }: a cena tem { $count } luzes, numeradas a partir de 0
+python-no-such-light = não há luz { $light }: a cena tem { $count ->
+        [one] 1 luz, numerada 0
+       *[other] { $count } luzes, numeradas a partir de 0
+    }
+python-not-real = { $what } = { $value }: não é um número. Dê números reais: um int ou um float, ou uma lista ou matriz NumPy deles (um texto, True ou False, None e números complexos não são lidos como números; em Python escreva 25.6, não "25,6")
+python-not-integer = { $what } = { $value }: não é um número inteiro; dê um int, por exemplo 5
+python-not-a-scene = { $what }: { $value } não é uma phonglab.Scene; crie uma primeiro: phonglab.Scene.load("cena.toml"), phonglab.Scene.worksheet(5) ou phonglab.Scene.preset("phong-demo")
+python-no-field-guess = { $what } não tem { $value }: quis dizer { $guess }? Os seus nomes: { $names }
+python-no-field = { $what } não tem { $value }; os seus nomes: { $names }
+python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz acrescenta-se ou retira-se num ficheiro de cena, que o Scene.load depois lê
+python-no-memory = memória insuficiente: não foi possível obter { $bytes } bytes; ilumine os vértices em blocos mais pequenos
+python-not-finite-row = { $name }: a linha { $row } é { $value }: todos os números têm de ser finitos e estar dentro do alcance do float32 (±3,4e38)
+python-bad-base = base={ $base } não é um endereço web por onde uma ligação possa começar: dê um que comece por https:// (ou http://) e um anfitrião, sem espaços, aspas nem caracteres de controlo
 python-wrong-shape = { $name }: uma matriz de forma { $shape }, quando se espera (N, 3), com o mesmo N para as posições e as normais
-nb-self-check = Autoverificação: com o pacote Python phonglab instalado (`pip install phonglab`), retire o comentário da célula abaixo e execute-a depois das outras. Compara cada valor que este caderno calculou com a solução, passo a passo, e indica o primeiro passo errado e a causa provável. Nada mais neste caderno depende dela.
+nb-self-check = Autoverificação: com o pacote Python phonglab instalado (ainda não está no PyPI: instale o ficheiro wheel, `pip install phonglab-*.whl`, que o `scripts/wheel` do phonglab constrói ou que o professor distribui), retire o comentário da célula abaixo e execute-a depois das outras. Compara cada valor que este caderno calculou com a solução, passo a passo, e indica o primeiro passo errado e a causa provável. Nada mais neste caderno depende dela.
 check-rules = regras assumidas: { $rules }
 check-inputs-differ = os dados que escreveu diferem dos do enunciado: { $names }
 check-step = { $step }: o seu { $student }, o da solução { $key }: { $verdict }
@@ -770,3 +782,39 @@ explain-column-formula = fórmula
 explain-column-value = valor
 explain-column-notes = notas
 share-base-refused = a página que uma ligação abre tem de ser um endereço http:// ou https://, sem espaços, aspas nem caracteres de controlo: { $base }
+
+## Files read and written (formats::files): shared by the command line, the window and the Python package
+io-not-found = não existe
+io-permission-denied = sem permissão
+io-storage-full = o disco está cheio
+io-is-a-directory = é uma pasta
+io-not-a-directory = uma parte do caminho não é uma pasta
+io-read-only = o sistema de ficheiros é só de leitura
+io-already-exists = já existe
+io-invalid-name = não é um nome de ficheiro
+write-error = não foi possível escrever { $path }: { $what }: { $reason }; { $kept }
+write-step-write = escrever
+write-step-close = fechar
+write-step-sync = sincronizar com o disco
+write-step-create = criar
+write-step-rename = mudar o nome
+write-step-name = nome
+write-step-create-folder = criar a pasta
+write-step-create-file-in = criar um ficheiro em
+write-kept-file = o ficheiro que lá estava (se havia) não mudou
+write-kept-nothing = nada foi escrito
+write-not-a-regular-file = não é um ficheiro normal (uma ligação para nada, uma pasta, um dispositivo ou um pipe): o phonglab só escreve num ficheiro normal ou num novo
+read-cannot = não foi possível ler { $path }: { $reason }
+read-not-a-file = { $path } não é um ficheiro normal
+read-too-large = { $path } tem { $size }; o phonglab lê { $what } de no máximo { $cap }
+read-not-utf8 = { $path } não é texto UTF-8 (byte { $byte })
+read-link-refused = { $path } é uma ligação simbólica: não foi lido (o trabalho de um aluno só é lido de um ficheiro, nunca através de uma ligação)
+file-kind-scenes = ficheiros de cena
+file-kind-code = cadernos e programas
+err-output-is-input = { $output } é { $what } { $input }, que este comando lê (o mesmo ficheiro): escrevê-lo destruiria o que é lido; escolha outra saída
+err-output-is-other-output = { $output } é a outra saída { $other } (o mesmo ficheiro): uma seria escrita por cima da outra; escolha dois ficheiros diferentes
+input-kind-input = a entrada
+input-kind-scene = a cena
+input-kind-mesh = a malha
+input-kind-code = o caderno ou programa
+input-kind-cases = o ficheiro de casos

@@ -48,7 +48,7 @@ pub mod teach;
 
 // Each module also at the crate's root, so paths name the module, not its group.
 pub use equation::{breakdown, explain, lighting, plan, validate};
-pub use formats::{document, escape, glref, library};
+pub use formats::{document, escape, files, glref, library};
 pub use model::{camera, error, materials, presets, rules, scene, transform, view, vocabulary};
 pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
 pub use raster::{channels, probe, probe_report, render, shaded};

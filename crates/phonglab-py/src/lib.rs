@@ -5,6 +5,7 @@
 //! core's catalogue's, in the language the caller names.
 
 mod check;
+mod files;
 
 use glam::{DVec3, DVec4};
 use phonglab_core::explain::{Side, explain};
@@ -12,19 +13,22 @@ use phonglab_core::locale::{Lang, Locale, with_locale};
 use phonglab_core::render::Renderer;
 use phonglab_core::{Document, Engine, EvalOptions, Light, Material, PowFn, Real, Scene, library, presets};
 use pyo3::create_exception;
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyMemoryError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 
 create_exception!(
-    _core,
+    phonglab,
     SceneError,
     PyValueError,
     "A scene, or a value given for one, that phonglab refuses; the message is the command line's."
 );
 
+/// The `SceneError` that says `message`, its control characters written visibly (`\u{1B}`,
+/// as the command line writes them to the terminal): a scene file's line or a file's name
+/// quoted in a message never sends an escape sequence to the notebook or the terminal.
 fn scene_error(message: impl ToString) -> PyErr {
-    SceneError::new_err(message.to_string())
+    SceneError::new_err(phonglab_core::escape::terminal::lines(&message.to_string()))
 }
 
 /// `what=value`: not one of `names` (`what` ends in `=`, as a Python argument): the message every refused name gets.
@@ -37,6 +41,21 @@ fn unknown(what: &str, value: &str, names: &str) -> PyErr {
 /// The locale of `lang` ("en", "pt-PT", "pt-BR").
 fn locale_of(lang: &str) -> PyResult<Locale> {
     Lang::parse(lang).map(Locale::of).ok_or_else(|| unknown("lang=", lang, "en, pt-PT, pt-BR"))
+}
+
+/// Sets the language of every message phonglab gives from now on in this process (a
+/// refusal's `SceneError`, the worked calculation where no `lang=` is given): "en",
+/// "pt-PT" or "pt-BR", the command line's catalogue.
+#[pyfunction]
+fn set_language(lang: &str) -> PyResult<()> {
+    phonglab_core::locale::set_default(locale_of(lang)?);
+    Ok(())
+}
+
+/// The language messages are given in now ("en", "pt-PT" or "pt-BR").
+#[pyfunction]
+fn language() -> &'static str {
+    phonglab_core::locale::current().lang.code()
 }
 
 /// A scene: the document the app holds (lighting state, camera, shaded view).
@@ -103,28 +122,30 @@ fn exactly<const N: usize>(field: &str, values: &[f64]) -> PyResult<[f64; N]> {
     })
 }
 
-fn light_set(l: &mut Light, f: &str, x: &[f64]) -> PyResult<()> {
+/// Sets light field `f` to `x`; `name` is the field as Python names it (`lights[0].position`).
+fn light_set(l: &mut Light, f: &str, name: &str, x: &[f64]) -> PyResult<()> {
     match f {
-        "ambient" => l.ambient = DVec4::from_array(exactly(f, x)?),
-        "diffuse" => l.diffuse = DVec4::from_array(exactly(f, x)?),
-        "specular" => l.specular = DVec4::from_array(exactly(f, x)?),
-        "position" => l.position = DVec4::from_array(exactly(f, x)?),
-        "spot_direction" => l.spot_direction = DVec3::from_array(exactly(f, x)?),
-        "spot_cutoff" => l.spot_cutoff = exactly::<1>(f, x)?[0],
-        "spot_exponent" => l.spot_exponent = exactly::<1>(f, x)?[0],
-        "attenuation" => l.attenuation = exactly(f, x)?,
+        "ambient" => l.ambient = DVec4::from_array(exactly(name, x)?),
+        "diffuse" => l.diffuse = DVec4::from_array(exactly(name, x)?),
+        "specular" => l.specular = DVec4::from_array(exactly(name, x)?),
+        "position" => l.position = DVec4::from_array(exactly(name, x)?),
+        "spot_direction" => l.spot_direction = DVec3::from_array(exactly(name, x)?),
+        "spot_cutoff" => l.spot_cutoff = exactly::<1>(name, x)?[0],
+        "spot_exponent" => l.spot_exponent = exactly::<1>(name, x)?[0],
+        "attenuation" => l.attenuation = exactly(name, x)?,
         _ => return Err(unknown("light=", f, LIGHT_FIELDS)),
     }
     Ok(())
 }
 
-fn material_set(m: &mut Material, f: &str, x: &[f64]) -> PyResult<()> {
+/// Sets material field `f` to `x`; `name` is the field as Python names it.
+fn material_set(m: &mut Material, f: &str, name: &str, x: &[f64]) -> PyResult<()> {
     match f {
-        "ambient" => m.ambient = DVec4::from_array(exactly(f, x)?),
-        "diffuse" => m.diffuse = DVec4::from_array(exactly(f, x)?),
-        "specular" => m.specular = DVec4::from_array(exactly(f, x)?),
-        "emission" => m.emission = DVec4::from_array(exactly(f, x)?),
-        "shininess" => m.shininess = exactly::<1>(f, x)?[0],
+        "ambient" => m.ambient = DVec4::from_array(exactly(name, x)?),
+        "diffuse" => m.diffuse = DVec4::from_array(exactly(name, x)?),
+        "specular" => m.specular = DVec4::from_array(exactly(name, x)?),
+        "emission" => m.emission = DVec4::from_array(exactly(name, x)?),
+        "shininess" => m.shininess = exactly::<1>(name, x)?[0],
         _ => return Err(unknown("material=", f, MATERIAL_FIELDS)),
     }
     Ok(())
@@ -143,17 +164,21 @@ impl PyScene {
     #[staticmethod]
     #[pyo3(signature = (text, folder=None))]
     fn from_toml(text: &str, folder: Option<std::path::PathBuf>) -> PyResult<Self> {
+        let cap = phonglab_core::files::read::MAX_SCENE_BYTES;
+        let what = phonglab_core::t!("file-kind-scenes");
+        phonglab_core::files::read::within_cap("Scene.from_toml(text)", text.len() as u64, cap, &what)
+            .map_err(scene_error)?;
         let doc = Document::from_toml_in(text, folder.as_deref()).map_err(scene_error)?;
         Ok(PyScene { doc })
     }
 
     /// The worksheet's scene with modelview `n` (1 to 5).
     #[staticmethod]
-    fn worksheet(n: usize) -> PyResult<Self> {
+    fn worksheet(n: i64) -> PyResult<Self> {
         if !(1..=5).contains(&n) {
             return Err(unknown("worksheet=", &n.to_string(), "1, 2, 3, 4, 5"));
         }
-        let scene = presets::worksheet(n);
+        let scene = presets::worksheet(n as usize);
         let name = phonglab_core::t!("doc-worksheet", k = n.to_string());
         Ok(PyScene { doc: Document::from_scene(&name, phonglab_core::CameraSpec::Worksheet(n as u8), scene) })
     }
@@ -167,6 +192,52 @@ impl PyScene {
             other => return Err(unknown("preset=", other, "worksheet, phong-demo")),
         };
         Ok(PyScene { doc })
+    }
+
+    /// Reads a scene file as the command line does: a regular file of at most 1 MiB,
+    /// opened without waiting (a FIFO, a device or a folder refused at once), UTF-8; a
+    /// relative mesh path read from the file's folder.
+    #[staticmethod]
+    fn load(path: std::path::PathBuf) -> PyResult<Self> {
+        Ok(PyScene { doc: files::load(&path).map_err(scene_error)? })
+    }
+
+    /// Reads the worksheet-style notebook (.ipynb) or script (.py) at `path` as
+    /// `phonglab import` does (at most 16 MiB, a regular file; nothing in it is run): (the
+    /// scene, named after the file, and notices of lines not read).
+    #[staticmethod]
+    fn import_file(path: std::path::PathBuf) -> PyResult<(Self, Vec<String>)> {
+        let imported = files::import(&path).map_err(scene_error)?;
+        Ok((PyScene { doc: imported.doc }, imported.notices))
+    }
+
+    /// Writes the scene file at `path` as the app's Save does: whole or not at all (a
+    /// temporary file renamed over it, a file replaced keeping its permissions), through a link
+    /// to the file it names, refused onto a FIFO, a device, a folder or the scene's mesh.
+    /// `code`: the notebook or script the scene was imported from, never written over.
+    #[pyo3(signature = (path, code=None))]
+    fn save(&self, path: std::path::PathBuf, code: Option<std::path::PathBuf>) -> PyResult<()> {
+        files::save(&self.doc, &path, code.as_deref()).map_err(scene_error)
+    }
+
+    /// The modelview (object to eye), 16 numbers row by row.
+    fn modelview(&self) -> Vec<f64> {
+        self.doc.scene.eye_from_object().transpose().to_cols_array().to_vec()
+    }
+
+    /// Sets the modelview to the matrix given row by row (16 numbers): the camera becomes
+    /// that matrix typed in (the app's Camera → Matrix) and the object's own transform the
+    /// identity, so that the modelview is the matrix; checked as the app checks it.
+    fn set_modelview(&mut self, rows: Vec<f64>) -> PyResult<()> {
+        let rows: [f64; 16] = exactly("modelview", &rows)?;
+        let m = glam::DMat4::from_cols_array(&rows).transpose();
+        let mut doc = self.doc.clone();
+        doc.camera = phonglab_core::CameraSpec::Matrix(m);
+        doc.scene.eye_from_world = m;
+        doc.scene.world_from_object = glam::DMat4::IDENTITY;
+        doc.validate().map_err(scene_error)?;
+        self.doc = doc;
+        Ok(())
     }
 
     /// Reads the scene a notebook's text (`notebook` true: .ipynb) or a script's sets up,
@@ -213,11 +284,15 @@ impl PyScene {
         match parse_field(path)? {
             Field::Light(i, f) => {
                 let i = light_index(s, i)?;
-                light_set(&mut s.lights[i], f, &values)?;
+                light_set(&mut s.lights[i], f, &format!("lights[{i}].{f}"), &values)?;
             }
-            Field::Material(f) => material_set(&mut s.material, f, &values)?,
-            Field::Vertex("position") => s.vertex.position = DVec4::from_array(exactly("position", &values)?),
-            Field::Vertex("normal") => s.vertex.normal = DVec3::from_array(exactly("normal", &values)?),
+            Field::Material(f) => material_set(&mut s.material, f, &format!("material.{f}"), &values)?,
+            // x, y, z alone: w = 1, as `light(scene, vertex=[x, y, z])` takes it.
+            Field::Vertex("position") if values.len() == 3 => {
+                s.vertex.position = DVec4::new(values[0], values[1], values[2], 1.0);
+            }
+            Field::Vertex("position") => s.vertex.position = DVec4::from_array(exactly("vertex.position", &values)?),
+            Field::Vertex("normal") => s.vertex.normal = DVec3::from_array(exactly("vertex.normal", &values)?),
             Field::Vertex(f) => return Err(unknown("vertex=", f, "position, normal")),
         }
         doc.validate().map_err(scene_error)?;
@@ -279,26 +354,55 @@ fn explain_tables(scene: &PyScene, precision: &str, lang: &str) -> PyResult<(Str
     })
 }
 
+/// A shape as Python writes a tuple: `(3,)`, `(2, 3)`.
+fn shape_text(shape: &[usize]) -> String {
+    match shape {
+        [n] => format!("({n},)"),
+        _ => format!("({})", shape.iter().map(usize::to_string).collect::<Vec<_>>().join(", ")),
+    }
+}
+
 /// Refuses arrays that are not (N, 3), the same N for `positions` and `normals`.
 fn check_shapes(positions: &[usize], normals: &[usize]) -> PyResult<()> {
     for (name, shape) in [("light_many(positions)", positions), ("light_many(normals)", normals)] {
-        if shape.len() != 2 || shape[1] != 3 || shape[0] != positions[0] {
-            let shape = format!("({})", shape.iter().map(usize::to_string).collect::<Vec<_>>().join(", "));
-            return Err(scene_error(phonglab_core::t!("python-wrong-shape", name = name, shape = shape)));
+        if shape.len() != 2 || shape[1] != 3 || positions.first() != shape.first() {
+            return Err(scene_error(phonglab_core::t!("python-wrong-shape", name = name, shape = shape_text(shape))));
         }
     }
     Ok(())
 }
 
-/// Little-endian f32 triples as vectors (one pass, no copy between).
-fn vectors(bytes: &[u8]) -> Vec<glam::Vec3> {
+/// A vector of `n` values, or Python's `MemoryError` where the memory cannot be had (an
+/// allocation that fails ends in an exception, never in an abort of the process).
+fn try_vec<T: Clone>(n: usize, value: T) -> PyResult<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n).map_err(|_| {
+        PyMemoryError::new_err(phonglab_core::t!("python-no-memory", bytes = (n * size_of::<T>()).to_string()))
+    })?;
+    v.resize(n, value);
+    Ok(v)
+}
+
+/// Little-endian f32 triples as vectors, refused where a number is not finite (NaN, an
+/// infinity, or a float64 beyond float32's range that became one): `name` and the row.
+fn vectors(name: &str, bytes: &[u8]) -> PyResult<Vec<glam::Vec3>> {
     let float = |b: &[u8]| f32::from_le_bytes([b[0], b[1], b[2], b[3]]);
-    bytes.chunks_exact(12).map(|c| glam::Vec3::new(float(&c[0..4]), float(&c[4..8]), float(&c[8..12]))).collect()
+    let mut out = try_vec(bytes.len() / 12, glam::Vec3::ZERO)?;
+    for (row, (v, c)) in out.iter_mut().zip(bytes.chunks_exact(12)).enumerate() {
+        *v = glam::Vec3::new(float(&c[0..4]), float(&c[4..8]), float(&c[8..12]));
+        if !v.is_finite() {
+            let shown = format!("[{}, {}, {}]", v.x, v.y, v.z);
+            return Err(scene_error(phonglab_core::t!("python-not-finite-row", name = name, row = row, value = shown)));
+        }
+    }
+    Ok(out)
 }
 
 /// Lights the vertices given as little-endian f32 bytes (positions and normals, arrays of
 /// shapes `shapes`, (N, 3) each, in object space) through the specialised lighter, the GIL
 /// released: N x 4 f32 colours (primary + secondary, unclamped; alpha the diffuse's).
+/// A number that is not finite is refused, naming its row; memory that cannot be had is
+/// `MemoryError`.
 #[pyfunction]
 fn light_many<'py>(
     py: Python<'py>,
@@ -308,7 +412,7 @@ fn light_many<'py>(
     shapes: (Vec<usize>, Vec<usize>),
 ) -> PyResult<Bound<'py, PyBytes>> {
     check_shapes(&shapes.0, &shapes.1)?;
-    let (p, n) = (vectors(positions), vectors(normals));
+    let (p, n) = (vectors("light_many(positions)", positions)?, vectors("light_many(normals)", normals)?);
     if p.len() != shapes.0[0] || n.len() != p.len() {
         return Err(scene_error(phonglab_core::t!(
             "python-wrong-shape",
@@ -318,11 +422,9 @@ fn light_many<'py>(
     }
     let lighter = phonglab_core::lighter::Lighter::new(&scene.doc.scene, EvalOptions::with_pow(PowFn::Exact))
         .map_err(scene_error)?;
-    let front = py.detach(move || {
-        let mut front = vec![[0f32; 4]; p.len()];
-        lighter.light_batch_sum(&p, &n, &mut front, None);
-        front
-    });
+    let mut front = try_vec(p.len(), [0f32; 4])?;
+    py.detach(|| lighter.light_batch_sum(&p, &n, &mut front, None));
+    drop((p, n));
     // Written straight into the bytes object Python receives.
     PyBytes::new_with(py, front.len() * 16, |out| {
         for (chunk, x) in out.chunks_exact_mut(4).zip(front.iter().flatten()) {
@@ -349,19 +451,34 @@ fn view_doc(scene: &PyScene, object: Option<&str>, shading: Option<&str>) -> PyR
     Ok(doc)
 }
 
+/// A Python int as a whole number and as Python writes it (one beyond 64 bits, which
+/// no picture has, as `i64::MIN`: refused by the range it is checked against).
+fn whole(v: &Bound<'_, PyAny>) -> (i64, String) {
+    (v.extract::<i64>().unwrap_or(i64::MIN), v.to_string())
+}
+
+/// The side of a square picture, 1 to 8192 pixels (`size=`, 512 when not given), or the
+/// refusal naming it.
+fn picture_size(size: Option<&Bound<'_, PyAny>>) -> PyResult<usize> {
+    let Some(size) = size else { return Ok(512) };
+    let (n, shown) = whole(size);
+    match usize::try_from(n) {
+        Ok(s) if (1..=8192).contains(&s) => Ok(s),
+        _ => Err(unknown("size=", &shown, "1 ... 8192")),
+    }
+}
+
 /// The shaded view as `phonglab render` draws it: (RGBA8 bytes, width, height).
 #[pyfunction]
-#[pyo3(signature = (scene, object=None, shading=None, size=512))]
+#[pyo3(signature = (scene, object=None, shading=None, size=None))]
 fn render<'py>(
     py: Python<'py>,
     scene: &PyScene,
     object: Option<&str>,
     shading: Option<&str>,
-    size: usize,
+    size: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<(Bound<'py, PyBytes>, usize, usize)> {
-    if !(1..=8192).contains(&size) {
-        return Err(unknown("size=", &size.to_string(), "1 ... 8192"));
-    }
+    let size = picture_size(size)?;
     let doc = view_doc(scene, object, shading)?;
     let image = py.detach(move || {
         let mesh = doc.view.mesh();
@@ -376,18 +493,21 @@ fn render<'py>(
 /// Why pixel (x, y) of the shaded view is its colour: the probe's numbers as JSON text
 /// (`{"covered": false}` off the object).
 #[pyfunction]
-#[pyo3(signature = (scene, x, y, object=None, shading=None, size=512))]
+#[pyo3(signature = (scene, x, y, object=None, shading=None, size=None))]
 fn probe(
     scene: &PyScene,
-    x: usize,
-    y: usize,
+    x: &Bound<'_, PyAny>,
+    y: &Bound<'_, PyAny>,
     object: Option<&str>,
     shading: Option<&str>,
-    size: usize,
+    size: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<String> {
-    if !(1..=8192).contains(&size) || x >= size || y >= size {
-        return Err(unknown("x, y = ", &format!("{x}, {y}"), &format!("0 ... {}", size.saturating_sub(1))));
-    }
+    let size = picture_size(size)?;
+    let ((xn, xs), (yn, ys)) = (whole(x), whole(y));
+    let inside = |v: i64| usize::try_from(v).ok().filter(|v| *v < size);
+    let (Some(x), Some(y)) = (inside(xn), inside(yn)) else {
+        return Err(unknown("x, y = ", &format!("{xs}, {ys}"), &format!("0 ... {}", size - 1)));
+    };
     let doc = view_doc(scene, object, shading)?;
     let mesh = doc.view.mesh();
     let setup = doc.shaded_setup(PowFn::Exact);
@@ -488,10 +608,45 @@ fn check_refusal(why: &str, lang: &str) -> PyResult<String> {
     })
 }
 
+/// A refusal the package's Python side makes (a value of the wrong kind), in the current
+/// language: `kind` names the message; `what` the argument or field, `value` what was given
+/// (Python's `repr`), `names` what is taken, `guess` the likeliest name meant (or "").
+#[pyfunction]
+#[pyo3(signature = (kind, what, value, names="", guess=""))]
+fn refusal(kind: &str, what: &str, value: &str, names: &str, guess: &str) -> PyResult<String> {
+    let value = phonglab_core::escape::terminal::text(value);
+    Ok(match kind {
+        "not-real" => phonglab_core::t!("python-not-real", what = what, value = value),
+        "not-integer" => phonglab_core::t!("python-not-integer", what = what, value = value),
+        "not-a-scene" => phonglab_core::t!("python-not-a-scene", what = what, value = value),
+        "no-field" if !guess.is_empty() => {
+            phonglab_core::t!("python-no-field-guess", what = what, value = value, guess = guess, names = names)
+        }
+        "no-field" => phonglab_core::t!("python-no-field", what = what, value = value, names = names),
+        "lights-fixed" => phonglab_core::t!("python-lights-fixed", value = value),
+        "no-light" => phonglab_core::t!(
+            "python-no-such-light",
+            light = value.clone(),
+            count = names.parse::<usize>().unwrap_or_default()
+        ),
+        other => {
+            return Err(unknown(
+                "kind=",
+                other,
+                "not-real, not-integer, not-a-scene, no-field, lights-fixed, no-light",
+            ));
+        }
+    })
+}
+
 /// The extension module.
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("SceneError", m.py().get_type::<SceneError>())?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_function(wrap_pyfunction!(set_language, m)?)?;
+    m.add_function(wrap_pyfunction!(language, m)?)?;
+    m.add_function(wrap_pyfunction!(refusal, m)?)?;
     m.add_class::<PyScene>()?;
     m.add_function(wrap_pyfunction!(light, m)?)?;
     m.add_function(wrap_pyfunction!(light_many, m)?)?;

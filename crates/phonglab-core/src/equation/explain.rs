@@ -367,6 +367,8 @@ fn normal_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>,
 /// Step 2: the vertex in eye space.
 fn position_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S>) {
     let p = lit.pos_in_eye;
+    // A point at infinity (w = 0) is not divided by its w: it stays a direction, w = 0.
+    let w = if scene.vertex.position.w == 0.0 { 0.0 } else { 1.0 };
     b.push_titled(
         StepKind::Position,
         None,
@@ -374,7 +376,7 @@ fn position_step<S: Real>(b: &mut Builder, scene: &Scene, lit: &VertexLighting<S
         Q::VertexPos,
         "",
         &t!("formula-position"),
-        Some(vec![p.x, p.y, p.z, 1.0]),
+        Some(vec![p.x, p.y, p.z, w]),
     );
     limit_notes(b, lit.limits, StepKind::Position);
     if scene.eye_from_object() == crate::model::transform::phong_demo_eye_from_object() {
@@ -750,5 +752,19 @@ mod tests {
         assert_eq!(fmt_sig(123456789.0, 8), "1.2345679e+8");
         assert_eq!(fmt_sig(f64::NEG_INFINITY, 8), "-Infinity");
         assert_eq!(fmt_value(&[0.0, 0.6, 0.8, 0.0], 8), "[0 0.6 0.8 0]");
+    }
+
+    #[test]
+    fn a_vertex_at_infinity_is_shown_with_w_0_a_point_with_w_1() {
+        let vertex_pos = |w: f64| {
+            let mut scene = crate::model::presets::worksheet(5);
+            scene.vertex.position = glam::DVec4::new(1.0, 2.0, 3.0, w);
+            let lit = crate::equation::lighting::Engine::<f64>::light_scene_vertex(&scene).unwrap();
+            let ex = explain(&scene, &lit, Side::Front);
+            ex.steps.iter().find(|s| s.name == "vertexPos").and_then(|s| s.value.clone()).unwrap()
+        };
+        assert_eq!(vertex_pos(0.0)[3], 0.0);
+        assert_eq!(vertex_pos(1.0)[3], 1.0);
+        assert_eq!(vertex_pos(2.0)[3], 1.0, "divided by w");
     }
 }

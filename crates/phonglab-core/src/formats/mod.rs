@@ -1,7 +1,9 @@
-//! Text in and out: TOML scene files, the glref harness's JSON cases, and user text
-//! escaped for every language phonglab writes.
+//! Text in and out: TOML scene files, the glref harness's JSON cases, user text escaped
+//! for every language phonglab writes, and the files that hold them (read capped, written
+//! whole).
 
 pub mod document;
 pub mod escape;
+pub mod files;
 pub mod glref;
 pub mod library;

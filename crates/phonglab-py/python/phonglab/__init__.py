@@ -12,22 +12,27 @@ the command line's; this package converts them to and from NumPy arrays.
 
 from __future__ import annotations
 
+import difflib
+import functools
 import json
 import os
-import tempfile
 import warnings
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Callable, Dict, Iterator, List, Optional, Tuple, TypeVar
 
 import numpy as np
 
 from . import _core
-from ._core import SceneError
+from ._core import SceneError, __version__
 from ._selfcheck import check
 
 __all__ = [
     "Scene",
     "SceneError",
     "NotebookNotice",
+    "UnknownName",
+    "NoSuchLight",
+    "set_language",
+    "language",
     "Lighting",
     "Picture",
     "light",
@@ -58,8 +63,98 @@ _MATERIAL_FIELDS = ("ambient", "diffuse", "specular", "emission", "shininess")
 _SCALARS = ("spot_cutoff", "spot_exponent", "shininess")
 
 
-def _numbers(value: Any) -> List[float]:
-    return [float(x) for x in np.asarray(value, dtype=np.float64).reshape(-1)]
+class UnknownName(SceneError, AttributeError):
+    """A name that a scene's part, a worked calculation or the package does not have (a
+    typo such as `material.shinyness`): a SceneError that is also an AttributeError, so
+    that hasattr() and getattr()'s default work. The message says the likeliest name meant."""
+
+
+class NoSuchLight(SceneError, IndexError):
+    """A light the scene does not have (`scene.lights[1]` in a scene with one light): a
+    SceneError that is also an IndexError."""
+
+
+_F = TypeVar("_F", bound=Callable[..., Any])
+
+
+def _refusals_here(function: _F) -> _F:
+    """Raises a SceneError from `function` as if from the caller's line: the traceback ends
+    at the call the user wrote, not inside the package's wrappers (the message says what
+    was wrong; the frames of the package would only hide it)."""
+
+    @functools.wraps(function)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        try:
+            return function(*args, **kwargs)
+        except SceneError as e:
+            raise e.with_traceback(None) from None
+
+    return wrapper  # type: ignore[return-value]
+
+
+def set_language(lang: str) -> None:
+    """Sets the language of phonglab's messages from now on ("en", "pt-PT" or "pt-BR"):
+    every SceneError, and the worked calculation where no lang= is given. The messages are
+    the command line's (the same Fluent catalogue)."""
+    _core.set_language(lang)
+
+
+def language() -> str:
+    """The language of phonglab's messages now ("en" unless set_language chose another)."""
+    return _core.language()
+
+
+def _refuse(kind: str, what: str, value: Any, names: str = "", guess: str = "") -> SceneError:
+    return SceneError(_core.refusal(kind, what, repr(value), names, guess))
+
+
+def _is_real(x: Any) -> bool:
+    """Is `x` a real number as phonglab takes one: an int or a float (Python's or NumPy's),
+    not a bool, a text, a complex number or None."""
+    if isinstance(x, (bool, np.bool_)):
+        return False
+    return isinstance(x, (int, float, np.integer, np.floating))
+
+
+def _numbers(value: Any, what: str = "value") -> List[float]:
+    """The real numbers `value` holds (a number, a list or tuple of them, or a NumPy array of
+    integers or floats), flattened; refused with a SceneError naming `what` when anything in
+    it is not a real number (a text, True/False, None, a complex number, an object)."""
+    if isinstance(value, np.ndarray):
+        if value.dtype.kind not in "iuf":
+            raise _refuse("not-real", what, value)
+        return [float(x) for x in value.reshape(-1)]
+    items = list(value) if isinstance(value, (list, tuple)) else [value]
+    flat: List[Any] = []
+    for x in items:
+        if isinstance(x, (list, tuple, np.ndarray)):
+            flat += _numbers(x, what)
+        elif _is_real(x):
+            flat.append(float(x))
+        else:
+            raise _refuse("not-real", what, value)
+    return flat
+
+
+def _integer(value: Any, what: str) -> int:
+    """`value` as an int (Python's or NumPy's), refused when it is not one (a float, a text,
+    True/False)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise _refuse("not-integer", what, value)
+    return int(value)
+
+
+def _inner_of(scene: Any, what: str) -> "_core.Scene":
+    """The core's scene inside `scene`, refused when `scene` is not a phonglab.Scene (a
+    file name given where a scene is expected)."""
+    if not isinstance(scene, Scene):
+        raise _refuse("not-a-scene", what, scene)
+    return scene._inner
+
+
+def _unknown_name(owner: str, name: str, names: List[str]) -> UnknownName:
+    guesses = difflib.get_close_matches(name, names, n=1)
+    return UnknownName(_core.refusal("no-field", owner, name, ", ".join(names), guesses[0] if guesses else ""))
 
 
 class _Fields:
@@ -75,15 +170,23 @@ class _Fields:
         object.__setattr__(self, "_prefix", prefix)
 
     def __getattr__(self, name: str) -> Any:
+        if name.startswith("_"):
+            raise AttributeError(name)  # Python's own lookups (copy, pickle, NumPy)
         if name not in self._names:
-            raise AttributeError(name)
+            raise _unknown_name(self._shown(), name, list(self._names))
         values = self._scene._inner.get(self._prefix + name)
         return values[0] if name in _SCALARS else np.array(values)
 
+    @_refusals_here
     def __setattr__(self, name: str, value: Any) -> None:
         if name not in self._names:
-            raise AttributeError(name)
-        self._scene._inner.set(self._prefix + name, _numbers(value))
+            raise _unknown_name(self._shown(), name, list(self._names))
+        self._scene._inner.set(self._prefix + name, _numbers(value, f"{self._shown()}.{name}"))
+
+    def _shown(self) -> str:
+        """This part as Python names it: lights[0], material, vertex."""
+        parts = self._prefix.rstrip(".").split(".")
+        return f"lights[{parts[1]}]" if parts[0] == "light" else parts[0]
 
     def __dir__(self) -> List[str]:
         return list(self._names)
@@ -112,6 +215,37 @@ class Vertex(_Fields):
     _names = ("position", "normal")
 
 
+class _Lights:
+    """The scene's enabled lights, in order (GL_LIGHT0 first): index them, iterate, len().
+    Their number is the scene's: a light is added or removed in a scene file."""
+
+    def __init__(self, scene: "Scene") -> None:
+        self._scene = scene
+
+    def __len__(self) -> int:
+        return int(self._scene._inner.light_count())
+
+    def __getitem__(self, i: Any) -> Light:
+        if isinstance(i, slice):
+            return [self[k] for k in range(len(self))[i]]  # type: ignore[return-value]
+        k = _integer(i, "lights[i]")
+        count = len(self)
+        if not -count <= k < count:
+            raise NoSuchLight(_core.refusal("no-light", "lights", str(k), str(count)))
+        return Light(self._scene, f"light.{k % count}.")
+
+    def __iter__(self) -> Iterator[Light]:
+        return (self[k] for k in range(len(self)))
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("_"):
+            raise AttributeError(name)  # Python's own lookups (copy, pickle, NumPy)
+        raise UnknownName(_core.refusal("lights-fixed", "lights", name))
+
+    def __repr__(self) -> str:
+        return repr(list(self))
+
+
 class Scene:
     """A scene as the app holds it: lights, material, camera, the worked vertex and the
     shaded view. Make one with Scene.load, Scene.worksheet, Scene.preset or
@@ -119,62 +253,58 @@ class Scene:
 
     def __init__(self, inner: "_core.Scene") -> None:
         self._inner = inner
+        self._code: Optional[str] = None
 
     @staticmethod
+    @_refusals_here
     def load(path: "os.PathLike[str] | str") -> "Scene":
-        """Reads a scene file (TOML) as the app and the command line read it."""
-        with open(path, encoding="utf-8") as f:
-            text = f.read()
-        folder = os.path.dirname(os.path.abspath(path))
-        try:
-            return Scene(_core.Scene.from_toml(text, folder))
-        except SceneError as e:
-            raise SceneError(f"{os.fspath(path)}: {e}") from None
+        """Reads a scene file (TOML) with the command line's reader: a regular file of at
+        most 1 MiB, UTF-8, opened without waiting (a FIFO, a device or a folder is refused
+        at once); a relative mesh path is read from the file's folder. A file that cannot
+        be read or used raises SceneError naming it."""
+        return Scene(_core.Scene.load(path))
 
     @staticmethod
+    @_refusals_here
     def from_toml(text: str) -> "Scene":
-        """A scene from a scene file's text."""
+        """A scene from a scene file's text (at most 1 MiB, as a scene file)."""
         return Scene(_core.Scene.from_toml(text))
 
     @staticmethod
+    @_refusals_here
     def worksheet(n: int = 5) -> "Scene":
         """The worksheet's scene with modelview n (1 to 5)."""
-        return Scene(_core.Scene.worksheet(int(n)))
+        return Scene(_core.Scene.worksheet(_integer(n, "Scene.worksheet(n)")))
 
     @staticmethod
+    @_refusals_here
     def preset(name: str) -> "Scene":
         """A ready-made scene: "worksheet" (the app's start scene) or "phong-demo"."""
         return Scene(_core.Scene.preset(name))
 
     @staticmethod
+    @_refusals_here
     def from_notebook(path: "os.PathLike[str] | str") -> "Scene":
-        """The scene a worksheet notebook (.ipynb) or script (.py) sets up, read as the
-        app's Import reads it (nothing in it is run). What `phonglab import` says of it (a
-        line not read, a given replaced by the worksheet's value) comes as a
-        NotebookNotice warning each."""
-        with open(path, encoding="utf-8") as f:
-            text = f.read()
-        name = os.path.basename(os.fspath(path))
-        inner, notices = _core.Scene.from_notebook(text, name.endswith(".ipynb"), name)
-        # What `phonglab import` says of the lines it could not read, or read otherwise.
+        """The scene a worksheet notebook (.ipynb) or script (.py) sets up, read as
+        `phonglab import` reads it (a regular file of at most 16 MiB; nothing in it is
+        run), named after the file (its control characters written visibly). What
+        `phonglab import` says of it (a line not read, a given replaced by the worksheet's
+        value) comes as a NotebookNotice warning each."""
+        inner, notices = _core.Scene.import_file(path)
         for notice in notices:
-            warnings.warn(NotebookNotice(notice), stacklevel=2)
-        return Scene(inner)
+            warnings.warn(NotebookNotice(notice), stacklevel=3)
+        scene = Scene(inner)
+        scene._code = os.path.abspath(path)  # an input: save never writes over it
+        return scene
 
+    @_refusals_here
     def save(self, path: "os.PathLike[str] | str") -> None:
-        """Writes the scene file whole or not at all (a temporary file renamed over it)."""
-        text = self._inner.to_toml()
-        folder = os.path.dirname(os.path.abspath(path))
-        fd, tmp = tempfile.mkstemp(dir=folder, prefix=".phonglab-", suffix=".tmp")
-        try:
-            with os.fdopen(fd, "w", encoding="utf-8") as f:
-                f.write(text)
-                f.flush()
-                os.fsync(f.fileno())
-            os.replace(tmp, path)
-        except BaseException:
-            os.unlink(tmp)
-            raise
+        """Writes the scene file as the app's Save and `phonglab export -o` write one: whole
+        or not at all (a temporary file beside it, renamed over it), a file replaced keeping
+        its permissions; through a symbolic link to the file it names (the link stays).
+        Refused, with nothing written: a folder, a FIFO, a device, the scene's own mesh, the
+        notebook or script it was imported from."""
+        self._inner.save(path, self._code)
 
     def to_toml(self) -> str:
         """The scene file's text."""
@@ -190,9 +320,22 @@ class Scene:
         return self._inner.name
 
     @property
-    def lights(self) -> List[Light]:
-        """The enabled lights, in order (GL_LIGHT0 first)."""
-        return [Light(self, f"light.{i}.") for i in range(self._inner.light_count())]
+    def lights(self) -> _Lights:
+        """The enabled lights, in order (GL_LIGHT0 first): scene.lights[0], len(scene.lights)."""
+        return _Lights(self)
+
+    @property
+    def modelview(self) -> np.ndarray:
+        """The modelview (object to eye coordinates), a 4x4 array (row by row, as written
+        on paper). Assigning a 4x4 array (16 numbers, row by row) makes it the camera, typed in as the app's
+        Camera → Matrix, and the object's own transform the identity; checked as the app
+        checks it."""
+        return np.array(self._inner.modelview()).reshape(4, 4)
+
+    @modelview.setter
+    @_refusals_here
+    def modelview(self, value: Any) -> None:
+        self._inner.set_modelview(_numbers(value, "modelview"))
 
     @property
     def material(self) -> Material:
@@ -245,7 +388,7 @@ class Lighting:
         steps = self.__dict__.get("steps", {})
         if name in steps:
             return steps[name]
-        raise AttributeError(name)
+        raise _unknown_name("Lighting", name, list(steps) + ["explain", "steps", "per_light"])
 
     def __dir__(self) -> List[str]:
         return list(self.steps) + ["explain", "steps", "per_light"]
@@ -266,54 +409,79 @@ class Lighting:
         return self._text
 
 
+@_refusals_here
 def light(
     scene: Scene,
     vertex: Any = None,
     normal: Any = None,
     precision: str = "f64",
-    lang: str = "en",
+    lang: Optional[str] = None,
 ) -> Lighting:
     """Lights the scene's vertex (or vertex/normal, in object space) step by step as the
-    worksheet does; precision "f64" or "f32"."""
+    worksheet does; precision "f64" or "f32"; lang the language of its text (default: the
+    one set_language chose)."""
+    _inner_of(scene, "light(scene)")
     if vertex is not None or normal is not None:
         scene = scene.copy()
         if vertex is not None:
-            v = _numbers(vertex)
-            scene.vertex.position = v + [1.0] if len(v) == 3 else v
+            scene.vertex.position = _numbers(vertex, "light(vertex)")
         if normal is not None:
-            scene.vertex.normal = normal
+            scene.vertex.normal = _numbers(normal, "light(normal)")
+    lang = language() if lang is None else lang
     rows, text, markdown = _core.light(scene._inner, precision, lang)
     return Lighting(rows, text, markdown, scene, precision, lang)
 
 
+def _vectors(value: Any, what: str) -> np.ndarray:
+    """`value` as a C-contiguous little-endian float32 array, refused when it holds
+    anything but real numbers (texts, True/False, complex numbers, objects). A float64
+    beyond float32's range becomes an infinity here, which the core refuses by its row."""
+    array = value if isinstance(value, np.ndarray) else np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise _refuse("not-real", what, value if isinstance(value, str) else array.dtype)
+    with np.errstate(over="ignore", invalid="ignore"):
+        return np.ascontiguousarray(array, dtype="<f4")
+
+
+@_refusals_here
 def light_many(scene: Scene, positions: Any, normals: Any) -> np.ndarray:
     """Lights N vertices ((N, 3) positions and normals, object space) through phonglab's
     specialised lighter in float32, without holding the GIL: (N, 4) float32 colours
-    (primary + secondary, unclamped; alpha the material's)."""
-    p = np.ascontiguousarray(positions, dtype="<f4")
-    n = np.ascontiguousarray(normals, dtype="<f4")
-    out = _core.light_many(scene._inner, p.tobytes(), n.tobytes(), (list(p.shape), list(n.shape)))
+    (primary + secondary, unclamped; alpha the material's diffuse alpha, as OpenGL gives
+    it, where light(scene).I[3] is the fourth component of the worksheet's I, as its
+    formula gives it: 0 for the worksheet's scene). A number that is not finite (NaN, an infinity, beyond float32's range) is
+    refused with a SceneError naming its row; memory that cannot be had is MemoryError."""
+    inner = _inner_of(scene, "light_many(scene)")
+    p = _vectors(positions, "light_many(positions)")
+    n = _vectors(normals, "light_many(normals)")
+    out = _core.light_many(inner, p.tobytes(), n.tobytes(), (list(p.shape), list(n.shape)))
     return np.frombuffer(out, dtype="<f4").reshape(-1, 4).copy()
 
 
 class Picture(np.ndarray):
     """An (H, W, 4) uint8 RGBA picture that Jupyter shows as a PNG."""
 
-    def _repr_png_(self) -> bytes:
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture as a PNG: an (H, W, 4) or (H, W, 3) array of bytes as it is now
+        (a crop or a flip of one included); None for anything else (a row, a channel, a
+        transposed array), which Jupyter then shows as numbers."""
         import struct
         import zlib
 
-        h, w = self.shape[:2]
+        if self.ndim != 3 or self.shape[2] not in (3, 4) or self.dtype != np.uint8 or 0 in self.shape:
+            return None
+        h, w, channels = self.shape
         raw = b"".join(b"\x00" + self[y].tobytes() for y in range(h))
 
         def chunk(kind: bytes, data: bytes) -> bytes:
             body = kind + data
             return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body))
 
-        header = struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0)
+        header = struct.pack(">IIBBBBB", w, h, 8, 6 if channels == 4 else 2, 0, 0, 0)
         return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b"")
 
 
+@_refusals_here
 def render(
     scene: Scene,
     object: Optional[str] = None,
@@ -323,10 +491,12 @@ def render(
     """The shaded view as `phonglab render` draws it: an (H, W, 4) uint8 array.
     object: "sphere", "teapot" or "cylinder"; shading: "gouraud", "phong" or "flat"
     (default: the scene's)."""
-    rgba, w, h = _core.render(scene._inner, object, shading, int(size))
+    inner = _inner_of(scene, "render(scene)")
+    rgba, w, h = _core.render(inner, object, shading, _integer(size, "render(size=)"))
     return np.frombuffer(rgba, dtype=np.uint8).reshape(h, w, 4).copy().view(Picture)
 
 
+@_refusals_here
 def probe(
     scene: Scene,
     x: int,
@@ -337,14 +507,18 @@ def probe(
 ) -> Dict[str, Any]:
     """Why pixel (x, y) of render(scene, object, shading, size) is its colour: the numbers
     `phonglab probe --json` prints, as a dict ({"covered": False, ...} off the object)."""
-    return json.loads(_core.probe(scene._inner, int(x), int(y), object, shading, int(size)))
+    inner = _inner_of(scene, "probe(scene)")
+    x, y = _integer(x, "probe(x)"), _integer(y, "probe(y)")
+    return json.loads(_core.probe(inner, x, y, object, shading, _integer(size, "probe(size=)")))
 
 
+@_refusals_here
 def shader(scene: Scene, target: str = "glsl", shading: str = "gouraud") -> str:
     """The program ("glsl" or "wgsl"; "gouraud" or "phong") that draws the scene's view."""
-    return _core.shader(scene._inner, target, shading)
+    return _core.shader(_inner_of(scene, "shader(scene)"), target, shading)
 
 
+@_refusals_here
 def share_link(
     scene: Scene,
     base: Optional[str] = None,
@@ -357,6 +531,12 @@ def share_link(
     build); open_in, the language it opens in ("en", "pt-PT", "pt-BR"); present, opened
     presenting to a class; channel, the term shown in place of the picture (a name
     `phonglab share --channel` takes). SceneError for anything else."""
+    inner = _inner_of(scene, "share_link(scene)")
     if base is None:
-        return _core.share_link(scene._inner, open_in=open_in, present=bool(present), channel=channel)
-    return _core.share_link(scene._inner, base, open_in, bool(present), channel)
+        return _core.share_link(inner, open_in=open_in, present=bool(present), channel=channel)
+    return _core.share_link(inner, base, open_in, bool(present), channel)
+
+
+def __dir__() -> List[str]:
+    """The package's own names (not the modules it uses inside)."""
+    return sorted(__all__ + ["__version__"])

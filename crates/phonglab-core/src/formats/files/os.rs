@@ -1,0 +1,154 @@
+//! What differs between operating systems for the files phonglab reads and writes (the
+//! command line, the window and the Python package alike): opening without blocking or
+//! without following a link, closing a file with its error reported, syncing a folder,
+//! renaming without replacing, and whether a writer's process still runs.
+
+use std::fs::File;
+use std::io;
+use std::path::Path;
+
+/// Closes `file` and reports the close's own error, which `drop` ignores (NFS and some
+/// FUSE file systems report a failed write there).
+#[cfg(unix)]
+pub fn close_file(file: File) -> io::Result<()> {
+    use std::os::fd::IntoRawFd;
+    let fd = file.into_raw_fd();
+    // SAFETY: `fd` was just taken out of a `File`, so it is open and owned here alone;
+    // it is closed exactly once.
+    if unsafe { libc::close(fd) } == 0 { Ok(()) } else { Err(io::Error::last_os_error()) }
+}
+
+/// Closes `file` (where the close cannot report an error of its own).
+#[cfg(not(unix))]
+pub fn close_file(file: File) -> io::Result<()> {
+    // Dropped here: the file closes as it goes out of scope.
+    let _closed = file;
+    Ok(())
+}
+
+/// Syncs the entries of the folder `dir` (a rename in it) to the disk, where the system
+/// allows it; a failure here loses nothing that was written, so it is not reported.
+pub fn sync_folder(dir: &Path) {
+    #[cfg(unix)]
+    if let Ok(d) = File::open(dir) {
+        let _ = d.sync_all();
+    }
+    #[cfg(not(unix))]
+    let _ = dir;
+}
+
+/// Opens `path` to read without waiting: a FIFO with no writer, or a device, would
+/// otherwise block the open itself (Unix: `O_NONBLOCK`, which changes nothing for a regular
+/// file). The caller checks what was opened from the handle ([`File::metadata`]), so a
+/// file swapped between a check and the open is seen.
+pub fn open_to_read(path: &Path) -> io::Result<File> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        File::options().read(true).custom_flags(libc::O_NONBLOCK).open(path)
+    }
+    #[cfg(not(unix))]
+    {
+        File::open(path)
+    }
+}
+
+/// Opens `path` to read without following a symbolic link at its last component and
+/// without waiting (Unix: `O_NOFOLLOW | O_NONBLOCK`; Windows:
+/// `FILE_FLAG_OPEN_REPARSE_POINT`, the link itself opened and then refused through its
+/// handle): for files phonglab itself wrote into a folder that others may have planted
+/// things in (a set's journal), and for a student's submission, where a link is never to be
+/// followed. The refusal is the open's own, so no link swapped in after a check is followed;
+/// [`is_link_refused`] tells it from other errors. The caller checks what was opened through
+/// the handle.
+pub fn open_no_follow(path: &Path) -> io::Result<File> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        File::options().read(true).custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK).open(path)
+    }
+    #[cfg(windows)]
+    {
+        use std::os::windows::fs::OpenOptionsExt;
+        /// `FILE_FLAG_OPEN_REPARSE_POINT`: open a link (a reparse point) itself.
+        const OPEN_REPARSE_POINT: u32 = 0x0020_0000;
+        let file = File::options().read(true).custom_flags(OPEN_REPARSE_POINT).open(path)?;
+        if file.metadata()?.file_type().is_symlink() {
+            return Err(io::Error::from_raw_os_error(WINDOWS_LINK_REFUSED));
+        }
+        Ok(file)
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        if std::fs::symlink_metadata(path)?.file_type().is_symlink() {
+            return Err(io::Error::new(io::ErrorKind::InvalidInput, "a symbolic link"));
+        }
+        File::open(path)
+    }
+}
+
+/// The error [`open_no_follow`] gives a link on Windows: `ERROR_CANT_RESOLVE_FILENAME`.
+#[cfg(windows)]
+const WINDOWS_LINK_REFUSED: i32 = 1921;
+
+/// Is `e` [`open_no_follow`]'s refusal of a link (Unix: `ELOOP`)?
+pub fn is_link_refused(e: &io::Error) -> bool {
+    #[cfg(unix)]
+    {
+        e.raw_os_error() == Some(libc::ELOOP)
+    }
+    #[cfg(windows)]
+    {
+        e.raw_os_error() == Some(WINDOWS_LINK_REFUSED)
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        e.kind() == io::ErrorKind::InvalidInput
+    }
+}
+
+/// Renames `from` to `to` only when nothing is at `to` (not even a link): an error
+/// `AlreadyExists` otherwise, and nothing moves (Linux: `renameat2` with `RENAME_NOREPLACE`;
+/// where the file system refuses that flag, and elsewhere, a check then a rename, which
+/// only another process writing into the folder at the same instant could race).
+pub fn rename_no_replace(from: &Path, to: &Path) -> io::Result<()> {
+    #[cfg(target_os = "linux")]
+    {
+        use std::os::unix::ffi::OsStrExt;
+        let c = |p: &Path| std::ffi::CString::new(p.as_os_str().as_bytes()).map_err(io::Error::other);
+        let (f, t) = (c(from)?, c(to)?);
+        // SAFETY: both are valid NUL-terminated paths that live through the call.
+        let r =
+            unsafe { libc::renameat2(libc::AT_FDCWD, f.as_ptr(), libc::AT_FDCWD, t.as_ptr(), libc::RENAME_NOREPLACE) };
+        if r == 0 {
+            return Ok(());
+        }
+        let e = io::Error::last_os_error();
+        if !matches!(e.raw_os_error(), Some(libc::EINVAL | libc::ENOSYS)) {
+            return Err(e);
+        }
+    }
+    if std::fs::symlink_metadata(to).is_ok() {
+        return Err(io::Error::new(io::ErrorKind::AlreadyExists, "a file is already there"));
+    }
+    std::fs::rename(from, to)
+}
+
+/// Is the process `pid` still running (on this machine)? Where the system cannot say, it
+/// is taken to be running, so its files are left alone.
+pub fn process_alive(pid: u32) -> bool {
+    #[cfg(unix)]
+    {
+        let Ok(pid) = libc::pid_t::try_from(pid) else { return true };
+        // SAFETY: signal 0 sends nothing; it only asks whether the process exists.
+        if unsafe { libc::kill(pid, 0) } == 0 {
+            return true;
+        }
+        io::Error::last_os_error().raw_os_error() != Some(libc::ESRCH)
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = pid;
+        true
+    }
+}

@@ -1,0 +1,119 @@
+//! An output never overwrites an input: every command that writes a file checks, before it
+//! reads or writes anything, that none of its outputs is one of its inputs.
+//!
+//! "The same file" is decided by the file itself, not by its name: two paths name one file
+//! when they lead to the same device and inode (Unix), so a hard link, a symbolic link, a
+//! `./` or a `..` in the path are all seen through. An output that does not exist yet is
+//! no input. Where the system has no inodes (the browser has no paths at all), the
+//! canonical paths are compared.
+
+use std::path::{Path, PathBuf};
+
+use crate::t;
+
+/// What makes a file itself: its device and inode, or its canonical path; for a file
+/// that is not there yet, its folder's canonical path and its name (two outputs may be
+/// one file before either is written).
+#[derive(Debug, PartialEq, Eq)]
+enum FileId {
+    #[cfg(unix)]
+    Inode(u64, u64),
+    #[cfg_attr(unix, allow(dead_code))]
+    Canonical(PathBuf),
+    Named(PathBuf, std::ffi::OsString),
+}
+
+/// The identity of the file `path` leads to (following symbolic links), if it exists.
+fn file_id(path: &Path) -> Option<FileId> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        let m = std::fs::metadata(path).ok()?;
+        Some(FileId::Inode(m.dev(), m.ino()))
+    }
+    #[cfg(not(unix))]
+    {
+        std::fs::canonicalize(path).ok().map(FileId::Canonical)
+    }
+}
+
+/// The identity of the file an output at `path` will be: the file there, or, where none
+/// is yet, the place it will be made (through a link, the place the link names).
+fn output_id(path: &Path) -> Option<FileId> {
+    if let Some(id) = file_id(path) {
+        return Some(id);
+    }
+    let target = crate::formats::files::atomic_write::through_links(path).ok()?;
+    let folder = match target.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    Some(FileId::Named(std::fs::canonicalize(folder).ok()?, target.file_name()?.to_os_string()))
+}
+
+/// What an input is, for the message that refuses an output onto it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Input {
+    /// A file the command reads, without a more particular name.
+    Any,
+    /// A scene file.
+    Scene,
+    /// A mesh (OBJ) that a scene or `--obj` names.
+    Mesh,
+    /// A notebook or Python script.
+    Code,
+    /// A case file (glref JSON).
+    Cases,
+}
+
+impl Input {
+    /// "the scene", "the mesh"... in the current language.
+    fn words(self) -> String {
+        match self {
+            Input::Any => t!("input-kind-input"),
+            Input::Scene => t!("input-kind-scene"),
+            Input::Mesh => t!("input-kind-mesh"),
+            Input::Code => t!("input-kind-code"),
+            Input::Cases => t!("input-kind-cases"),
+        }
+    }
+}
+
+/// Refuses when an output in `outputs` is the same file as an input in `inputs`, naming
+/// both (in the current language). Paths that do not exist are never the same file.
+pub fn refuse_output_onto_input(outputs: &[&Path], inputs: &[&Path]) -> Result<(), String> {
+    let inputs: Vec<(&Path, Input)> = inputs.iter().map(|p| (*p, Input::Any)).collect();
+    refuse_onto(outputs, &inputs)
+}
+
+/// Refuses when an output in `outputs` is the same file as an input in `inputs` (each
+/// said as what it is: "the mesh"), or as another of the outputs ("the other output").
+pub fn refuse_onto(outputs: &[&Path], inputs: &[(&Path, Input)]) -> Result<(), String> {
+    use crate::formats::files::reasons::shown;
+    for (k, output) in outputs.iter().enumerate() {
+        let out_id = file_id(output);
+        for (input, kind) in inputs {
+            if out_id.is_some() && file_id(input) == out_id {
+                return Err(t!(
+                    "err-output-is-input",
+                    output = shown(output),
+                    what = kind.words(),
+                    input = shown(input)
+                ));
+            }
+        }
+        let Some(id) = output_id(output) else { continue };
+        if let Some(other) = outputs[..k].iter().find(|o| output_id(o).as_ref() == Some(&id)) {
+            return Err(t!("err-output-is-other-output", output = shown(output), other = shown(other)));
+        }
+    }
+    Ok(())
+}
+
+/// [`refuse_output_onto_input`] for the files a command writes into the folder `dir`
+/// (`names`, without folders).
+pub fn refuse_outputs_in_folder(dir: &Path, names: &[&str], inputs: &[(&Path, Input)]) -> Result<(), String> {
+    let outputs: Vec<PathBuf> = names.iter().map(|n| dir.join(n)).collect();
+    let outputs: Vec<&Path> = outputs.iter().map(PathBuf::as_path).collect();
+    refuse_onto(&outputs, inputs)
+}
