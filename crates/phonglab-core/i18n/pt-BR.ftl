@@ -760,7 +760,6 @@ python-no-field = { $what } não tem { $value }; seus nomes: { $names }
 python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz é adicionada ou removida em um arquivo de cena, que o Scene.load depois lê
 python-no-memory = memória insuficiente: não foi possível obter { $bytes } bytes; ilumine os vértices em blocos menores
 python-not-finite-row = { $name }: a linha { $row } é { $value }: todos os números precisam ser finitos e estar dentro do intervalo do float32 (±3,4e38)
-python-bad-base = base={ $base } não é um endereço web pelo qual um link possa começar: informe um que comece com https:// (ou http://) e um host, sem espaços, aspas nem caracteres de controle
 python-wrong-shape = { $name }: um array de formato { $shape }, quando se espera (N, 3), com o mesmo N para as posições e as normais
 nb-self-check = Autoverificação: com o pacote Python phonglab instalado (ainda não está no PyPI: instale o arquivo wheel, `pip install phonglab-*.whl`, que o `scripts/wheel` do phonglab gera ou que o professor distribui), descomente a célula abaixo e execute-a depois das outras. Ela compara cada valor que este notebook calculou com o gabarito, passo a passo, e aponta o primeiro passo errado e a causa provável. Nada mais neste notebook depende dela.
 check-rules = regras assumidas: { $rules }

@@ -760,7 +760,6 @@ python-no-field = { $what } não tem { $value }; os seus nomes: { $names }
 python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz acrescenta-se ou retira-se num ficheiro de cena, que o Scene.load depois lê
 python-no-memory = memória insuficiente: não foi possível obter { $bytes } bytes; ilumine os vértices em blocos mais pequenos
 python-not-finite-row = { $name }: a linha { $row } é { $value }: todos os números têm de ser finitos e estar dentro do alcance do float32 (±3,4e38)
-python-bad-base = base={ $base } não é um endereço web por onde uma ligação possa começar: dê um que comece por https:// (ou http://) e um anfitrião, sem espaços, aspas nem caracteres de controlo
 python-wrong-shape = { $name }: uma matriz de forma { $shape }, quando se espera (N, 3), com o mesmo N para as posições e as normais
 nb-self-check = Autoverificação: com o pacote Python phonglab instalado (ainda não está no PyPI: instale o ficheiro wheel, `pip install phonglab-*.whl`, que o `scripts/wheel` do phonglab constrói ou que o professor distribui), retire o comentário da célula abaixo e execute-a depois das outras. Compara cada valor que este caderno calculou com a solução, passo a passo, e indica o primeiro passo errado e a causa provável. Nada mais neste caderno depende dela.
 check-rules = regras assumidas: { $rules }
