@@ -267,6 +267,12 @@ const FITTED: [&str; 7] = [
     "shininess-differs",
 ];
 
+/// A colour mistake: its words and the change it makes to the scene.
+type Change = (&'static str, fn(&mut Scene));
+
+/// A single number's mistake: the row's id, the value and where it is set.
+type NumberCase = (&'static str, f64, fn(&mut Scene, f64));
+
 /// A mistake in any colour no row foresees (GL_LIGHT2's specular left black, GL_LIGHT0's
 /// diffuse given GL_LIGHT1's green, the scene's ambient white) is named `colours-differ`,
 /// with the products the picture was drawn with, fitted to a few hundredths: the fit is not
@@ -274,7 +280,7 @@ const FITTED: [&str; 7] = [
 #[test]
 fn any_colour_mistake_is_named_with_the_colours_the_picture_shows() {
     let right = three_lights_turned();
-    let changes: [(&str, fn(&mut Scene)); 3] = [
+    let changes: [Change; 3] = [
         ("specular of GL_LIGHT2 black", |s| s.lights[2].specular = DVec4::new(0.0, 0.0, 0.0, 1.0)),
         ("GL_LIGHT0's diffuse given GL_LIGHT1's", |s| s.lights[0].diffuse = s.lights[1].diffuse),
         ("the material's ambient grey", |s| s.material.ambient = DVec4::new(0.4, 0.4, 0.4, 1.0)),
@@ -317,7 +323,7 @@ fn any_colour_mistake_is_named_with_the_colours_the_picture_shows() {
 #[test]
 fn any_single_number_mistake_is_named_with_the_value_the_picture_shows() {
     let right = sphere_scene();
-    let cases: [(&str, f64, fn(&mut Scene, f64)); 4] = [
+    let cases: [NumberCase; 4] = [
         ("spot-cutoff-differs", 12.0, |s, v| s.lights[0].spot_cutoff = v),
         ("spot-exponent-differs", 40.0, |s, v| s.lights[0].spot_exponent = v),
         ("attenuation-quadratic-differs", 0.5, |s, v| s.lights[0].attenuation[2] = v),

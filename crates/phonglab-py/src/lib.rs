@@ -339,7 +339,7 @@ fn light(scene: &PyScene, precision: &str, lang: &str) -> PyResult<(Vec<StepRow>
 fn tables_of<S: Real>(scene: &Scene) -> PyResult<(String, String, String)> {
     let lit = Engine::<S>::light_scene_vertex(scene).map_err(scene_error)?;
     let ex = explain(scene, &lit, Side::Front);
-    Ok((ex.to_text(8), ex.to_markdown(8), ex.to_html(8)))
+    Ok((ex.to_text(8), ex.to_markdown(8), phonglab_core::formats::explain_html::explanation_html(&ex, 8)))
 }
 
 /// The worked calculation of the scene's vertex as text, Markdown and HTML (a notebook's

@@ -663,7 +663,7 @@ impl Explanation {
     }
 
     /// The table's column headers (after `#`), in the user's language.
-    fn columns() -> [String; 4] {
+    pub fn columns() -> [String; 4] {
         [
             t!("explain-column-step"),
             t!("explain-column-formula"),
@@ -694,37 +694,6 @@ impl Explanation {
                 st.notes.join("; ").replace('|', "\\|")
             );
         }
-        s
-    }
-
-    /// An HTML table of the steps (a notebook's display): the heading, the headers in the
-    /// user's language, each step's title, formula (left-aligned), value (in the
-    /// language's decimal mark, never wrapped inside a number) and notes, every text
-    /// escaped ([`crate::formats::escape::html::text`]).
-    pub fn to_html(&self, sig: usize) -> String {
-        use crate::formats::escape::html::text as h;
-        let left = "text-align:left;vertical-align:top";
-        let mut s = format!("<div class=\"phonglab-explain\"><p><strong>{}</strong></p>\n<table>\n", h(&self.heading));
-        let heads: String = Self::columns().iter().map(|c| format!("<th style=\"{left}\">{}</th>", h(c))).collect();
-        let _ = writeln!(s, "<thead><tr><th style=\"{left}\">#</th>{heads}</tr></thead>\n<tbody>");
-        for (k, st) in self.steps.iter().enumerate() {
-            let value = st.value.as_ref().map_or_else(
-                || format!("{} = n/a", st.name),
-                |v| format!("{} = {}", st.name, crate::locale::decimal(&fmt_value(v, sig))),
-            );
-            let notes: Vec<String> = st.notes.iter().map(|n| h(n)).collect();
-            let _ = writeln!(
-                s,
-                "<tr><td style=\"{left}\">{}</td><td style=\"{left}\">{}</td><td style=\"{left}\"><code>{}</code></td>\
-                 <td style=\"{left};white-space:nowrap\"><code>{}</code></td><td style=\"{left}\">{}</td></tr>",
-                k + 1,
-                h(&st.title),
-                h(&st.formula),
-                h(&value),
-                notes.join("<br>")
-            );
-        }
-        s.push_str("</tbody>\n</table></div>\n");
         s
     }
 

@@ -4,6 +4,7 @@
 
 pub mod document;
 pub mod escape;
+pub mod explain_html;
 pub mod files;
 pub mod glref;
 pub mod library;

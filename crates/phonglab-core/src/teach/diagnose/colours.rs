@@ -193,15 +193,7 @@ pub fn fit(right: &Drawing, covered: &[bool], image: &[u8], size: usize) -> Resu
     let inside = interior(covered, size);
     // The student's picture may sit a pixel off the right one (another rasteriser): each
     // pixel is fitted with the student's pixel at the shift that matches best.
-    let shift = best_shift(covered, image, right.background8(), size);
-    let moved: Vec<u8> = (0..size * size)
-        .flat_map(|p| {
-            let (x, y) = ((p % size) as i64 + shift.0, (p / size) as i64 + shift.1);
-            let inside = x >= 0 && y >= 0 && (x as usize) < size && (y as usize) < size;
-            let q = if inside { y as usize * size + x as usize } else { p };
-            [image[q * 4], image[q * 4 + 1], image[q * 4 + 2], 255]
-        })
-        .collect();
+    let moved = aligned(covered, image, right.background8(), size);
     let original = image;
     let image = &moved[..];
     let mut fitted = scene;
@@ -229,32 +221,12 @@ pub fn fit(right: &Drawing, covered: &[bool], image: &[u8], size: usize) -> Resu
                 .collect()
         };
         let target = |p: usize| if level(image, p) >= CLAMPED { 1.0 } else { f64::from(level(image, p)) / 255.0 };
-        let predicted = |p: usize, x: &[f64]| row(p).iter().zip(x).map(|(a, b)| a * b).sum::<f64>();
         // A group's first term is fitted for the group's sum: its prior is the sum.
         let mut prior: Vec<f64> = (0..terms).map(|t| scene[t][c]).collect();
         for t in (0..terms).filter(|&t| same[t]) {
             prior[first[t]] += scene[t][c];
         }
-        let mut x = least_squares(&open, &row, &target, &prior);
-        for _ in 0..3 {
-            // A clamped pixel the fit leaves under 1 pulls it up to 1; one over 1 is right.
-            let mut active: Vec<usize> = open.clone();
-            active.extend(clamped.iter().copied().filter(|&p| predicted(p, &x) < 1.0));
-            // Without the pixels it explains worst (a clamped vertex's neighbours, a pixel's
-            // edge): those whose residual passes three levels and twice the median.
-            let mut r: Vec<f64> = active.iter().map(|&p| (predicted(p, &x) - target(p)).abs()).collect();
-            if r.is_empty() {
-                break;
-            }
-            let middle = r.len() / 2;
-            let median = *r.select_nth_unstable_by(middle, f64::total_cmp).1;
-            let bound = (3.0_f64 / 255.0).max(2.0 * median);
-            active.retain(|&p| (predicted(p, &x) - target(p)).abs() <= bound);
-            if active.len() < 4 * terms {
-                break;
-            }
-            x = least_squares(&active, &row, &target, &prior);
-        }
+        let mut x = censored_fit(&open, &clamped, &row, &target, &prior);
         // The group's others keep the scene's products; its first the rest of the sum.
         for t in (0..terms).filter(|&t| same[t]) {
             x[first[t]] -= scene[t][c];
@@ -347,6 +319,52 @@ fn one_change_models(right: &Drawing, terms: usize, same: &[bool]) -> Vec<OneCha
     out
 }
 
+/// The least squares fit over the `open` pixels and those `clamped` ones the fit leaves
+/// under 1 (held at 1: a clamped pixel over 1 is right), refitted three times without the
+/// pixels it explains worst (a clamped vertex's neighbours, a pixel's edge: a residual past
+/// three levels and twice the median).
+fn censored_fit(
+    open: &[usize],
+    clamped: &[usize],
+    row: &dyn Fn(usize) -> Vec<f64>,
+    target: &dyn Fn(usize) -> f64,
+    prior: &[f64],
+) -> Vec<f64> {
+    let predicted = |p: usize, x: &[f64]| row(p).iter().zip(x).map(|(a, b)| a * b).sum::<f64>();
+    let mut x = least_squares(open, row, target, prior);
+    for _ in 0..3 {
+        let mut active: Vec<usize> = open.to_vec();
+        active.extend(clamped.iter().copied().filter(|&p| predicted(p, &x) < 1.0));
+        let mut r: Vec<f64> = active.iter().map(|&p| (predicted(p, &x) - target(p)).abs()).collect();
+        if r.is_empty() {
+            break;
+        }
+        let middle = r.len() / 2;
+        let median = *r.select_nth_unstable_by(middle, f64::total_cmp).1;
+        let bound = (3.0_f64 / 255.0).max(2.0 * median);
+        active.retain(|&p| (predicted(p, &x) - target(p)).abs() <= bound);
+        if active.len() < 4 * prior.len() {
+            break;
+        }
+        x = least_squares(&active, row, target, prior);
+    }
+    x
+}
+
+/// `image` moved by the shift [`best_shift`] finds (the pixels it would take from outside
+/// kept as they are), RGBA8 opaque.
+fn aligned(covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Vec<u8> {
+    let shift = best_shift(covered, image, bg, size);
+    (0..size * size)
+        .flat_map(|p| {
+            let (x, y) = ((p % size) as i64 + shift.0, (p / size) as i64 + shift.1);
+            let inside = x >= 0 && y >= 0 && (x as usize) < size && (y as usize) < size;
+            let q = if inside { y as usize * size + x as usize } else { p };
+            [image[q * 4], image[q * 4 + 1], image[q * 4 + 2], 255]
+        })
+        .collect()
+}
+
 /// The shift (each of x and y by -1, 0 or 1 pixel) that brings the object's outline in
 /// `image` (its pixels apart from the background `bg`) nearest `covered`: the fewest
 /// pixels covered in one and not the other. The outline, not the colours, which the
@@ -426,10 +444,11 @@ fn solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
         }
         a.swap(col, pivot);
         b.swap(col, pivot);
+        let pivot_row = a[col].clone();
         for row in col + 1..k {
-            let f = a[row][col] / a[col][col];
-            for j in col..k {
-                a[row][j] -= f * a[col][j];
+            let f = a[row][col] / pivot_row[col];
+            for (x, p) in a[row][col..].iter_mut().zip(&pivot_row[col..]) {
+                *x -= f * p;
             }
             b[row] -= f * b[col];
         }
@@ -465,9 +484,9 @@ mod drawn {
     fn shipped(name: &str) -> Drawing {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../assets/scenes/");
         let text = std::fs::read_to_string(format!("{path}{name}.toml")).expect("a shipped scene");
-        let doc = crate::Document::from_toml(&text).expect("a scene");
+        let doc = crate::formats::document::Document::from_toml(&text).expect("a scene");
         let mesh = doc.view.mesh();
-        Drawing::of(&doc.shaded_setup(crate::PowFn::Exact).job(&mesh))
+        Drawing::of(&doc.shaded_setup(crate::numerics::pow::PowFn::Exact).job(&mesh))
     }
 
     #[test]
