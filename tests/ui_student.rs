@@ -9,7 +9,7 @@ mod common;
 use std::path::{Path, PathBuf};
 
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT, Queryable};
 use phonglab::app::{AppState, app_ui};
 use phonglab_core::study::check::mistakes::Mistake;
 use phonglab_core::study::check::worked::work;
@@ -206,6 +206,33 @@ fn a_dropped_notebook_with_outputs_asks_and_printed_text_is_checked_at_once() {
     std::fs::write(&txt, printed(None)).unwrap();
     drop_file(&mut h, &txt);
     assert_eq!(h.state().student.as_ref().map(|s| s.file.as_str()), Some("printed.txt"));
+}
+
+/// A notebook worked under the worksheet's rules, checked against a scene under OpenGL's:
+/// the window says which typed inputs differ as the command line does, the rule set in
+/// words (never the raw id `rules`), and the line lies inside the student's column.
+#[test]
+fn the_inputs_that_differ_are_named_in_words_as_the_command_line_names_them() {
+    let dir = TempDir::new("inputs");
+    let nb = dir.0.join("aluno.ipynb");
+    std::fs::write(&nb, notebook_with_outputs(&printed(None))).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    let mut doc = h.state().doc.clone();
+    doc.scene.rules = phonglab_core::Rules::OPENGL;
+    h.state_mut().load(doc, "opengl");
+    h.run_steps(3);
+    drop_file(&mut h, &nb);
+    h.get_by_label("Check it against this scene").click();
+    h.run_steps(3);
+    let s = h.state().student.as_ref().expect("checked");
+    assert!(s.check.inputs_differ.iter().any(|n| n == "rules"), "{:?}", s.check.inputs_differ);
+    let line = h.get_by_label_contains("your typed inputs differ from the assignment's:");
+    let node = line.accesskit_node();
+    let text = node.label().or(node.value()).map(String::from).unwrap_or_default();
+    assert!(text.contains("the rule set"), "{text}");
+    assert!(!text.split([':', ',']).any(|part| part.trim() == "rules"), "{text}");
+    let r = line.rect();
+    assert!(r.width() > 0.0 && r.max.x <= 1280.0 && r.min.y >= 0.0 && r.max.y <= 720.0, "{r:?}");
 }
 
 /// A student's picture (the export's 512 pixels) of the worksheet's scene drawn with the

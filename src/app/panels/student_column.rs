@@ -121,7 +121,9 @@ fn findings_ui(ui: &mut Ui, c: &Check) {
     // At the body's size: read at a projector like the rest.
     ui.add(egui::Label::new(t!("check-rules", rules = c.rules.to_string())).wrap());
     if !c.inputs_differ.is_empty() {
-        let line = t!("check-inputs-differ", names = c.inputs_differ.join(", "));
+        // By the worksheet's names, the rule set in words: as the command line says them.
+        let names = phonglab_core::study::check::said::input_names(c);
+        let line = t!("check-inputs-differ", names = names);
         ui.label(RichText::new(line).color(wrong_ink(ui)));
     }
     if c.steps.is_empty() {
