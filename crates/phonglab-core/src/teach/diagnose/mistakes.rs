@@ -95,6 +95,34 @@ fn normals_by_modelview(d: &mut Drawing, _: At) -> bool {
     true
 }
 
+/// The normals given the change `m` of the modelview's 3x3 `M` in place of its inverse
+/// transpose: with each normal `n` replaced by `M^T m n`, the renderer's inverse transpose
+/// gives `m n` (up to length). False where the modelview has no inverse.
+fn normals_by(d: &mut Drawing, m: impl Fn(DMat3) -> DMat3) -> bool {
+    let mview = DMat3::from_mat4(d.scene.eye_from_object());
+    if mview.determinant().abs() < 1e-12 {
+        return false;
+    }
+    let by = mview.transpose() * m(mview);
+    for n in &mut d.mesh.normals {
+        let bent = by * n.as_dvec3();
+        if bent.length() > 0.0 {
+            *n = bent.normalize().as_vec3();
+        }
+    }
+    true
+}
+
+/// Normals by the inverse of the modelview's 3x3, not its transpose (`np.linalg.inv(m3)`).
+fn normal_matrix_not_transposed(d: &mut Drawing, _: At) -> bool {
+    normals_by(d, |m| m.inverse())
+}
+
+/// Normals left in object space (not transformed at all).
+fn normal_not_transformed(d: &mut Drawing, _: At) -> bool {
+    normals_by(d, |_| DMat3::IDENTITY)
+}
+
 /// `GL_NORMALIZE` (or `GL_RESCALE_NORMAL`) off.
 fn normalize_off(d: &mut Drawing, _: At) -> bool {
     d.scene.normal_mode = NormalMode::AsIs;
@@ -546,7 +574,7 @@ const fn per_light(id: &'static str, message: &'static str, apply: fn(&mut Drawi
 }
 
 /// The picture mistakes, in the order the docs list them.
-pub const MISTAKES: [PictureMistake; 55] = [
+pub const MISTAKES: [PictureMistake; 57] = [
     row("normal-by-modelview", "wrong-cause-normals-by-m", normals_by_modelview),
     row("normal-not-normalised", "diagnose-normalize-off", normalize_off),
     row("reflection-for-halfway", "wrong-cause-reflection-for-halfway", reflection_for_halfway),
@@ -597,6 +625,8 @@ pub const MISTAKES: [PictureMistake; 55] = [
     // same picture (the material's ambient given its diffuse) is named before it.
     row("emission-added", "diagnose-emission-added", emission_added),
     per_light("spot-cutoff-doubled", "diagnose-spot-cutoff-doubled", spot_cutoff_doubled),
+    row("normal-matrix-not-transposed", "diagnose-normal-matrix-not-transposed", normal_matrix_not_transposed),
+    row("normal-not-transformed", "diagnose-normal-not-transformed", normal_not_transformed),
     // After every row of the scene's own values: each number is fitted from the picture, so
     // a row that names why it differs (halved, in radians, swapped) is named before.
     per_light("spot-cutoff-differs", "diagnose-spot-cutoff-differs", spot_cutoff_differs),
