@@ -24,7 +24,7 @@ pub const TERMS: usize = 1 + 3 * MAX_LIGHTS;
 
 /// The colour a term is drawn with alone: half, so that a factor up to 2 (an attenuation
 /// under 1) is not clamped.
-const PROBE: f64 = 0.5;
+pub(super) const PROBE: f64 = 0.5;
 
 /// How strongly the fit is pulled toward the scene's products, relative to one pixel's
 /// squared residual: enough to fix a term no pixel shows, too little to move one they do.
@@ -35,13 +35,13 @@ const PULL: f64 = 1e-6;
 /// A product differs from the scene's by more than this (plus [`RELATIVE`] of it) in some
 /// channel for the picture to show another colour: a fit from thousands of pixels of 8-bit
 /// levels is within a few thousandths.
-const ABSOLUTE: f64 = 0.03;
+pub(super) const ABSOLUTE: f64 = 0.03;
 
 /// The share of a product by which a fitted one may differ and be the same.
-const RELATIVE: f64 = 0.06;
+pub(super) const RELATIVE: f64 = 0.06;
 
 /// Levels near which a channel may have been clamped (with noise).
-const CLAMPED: u8 = 250;
+pub(super) const CLAMPED: u8 = 250;
 
 /// The products of colours per term, fitted from the picture and the scene's own.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -353,7 +353,7 @@ fn censored_fit(
 
 /// `image` moved by the shift [`best_shift`] finds (the pixels it would take from outside
 /// kept as they are), RGBA8 opaque.
-fn aligned(covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Vec<u8> {
+pub(super) fn aligned(covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Vec<u8> {
     let shift = best_shift(covered, image, bg, size);
     (0..size * size)
         .flat_map(|p| {
@@ -392,7 +392,7 @@ fn best_shift(covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> (i64,
 
 /// The covered pixels whose eight neighbours are covered too (a pixel's shift at the
 /// silhouette is not a colour).
-fn interior(covered: &[bool], size: usize) -> Vec<usize> {
+pub(super) fn interior(covered: &[bool], size: usize) -> Vec<usize> {
     let mut out = Vec::new();
     for y in 1..size.saturating_sub(1) {
         for x in 1..size - 1 {
@@ -407,7 +407,7 @@ fn interior(covered: &[bool], size: usize) -> Vec<usize> {
 
 /// Solves `min Σ_p (row(p)·x - target(p))² + PULL n Σ_t (x_t - prior_t)²` over `pixels`
 /// (`n` of them) by its normal equations.
-fn least_squares(
+pub(super) fn least_squares(
     pixels: &[usize],
     row: &dyn Fn(usize) -> Vec<f64>,
     target: &dyn Fn(usize) -> f64,

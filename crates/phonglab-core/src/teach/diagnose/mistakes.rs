@@ -11,6 +11,7 @@ use crate::model::view::ShadingMode;
 
 use super::colours::{self, Colours};
 use super::drawing::Drawing;
+use super::sides::{self, Sides};
 use super::values::{self, Values};
 
 /// Where a mistake is made: once for the scene, or for each light in turn.
@@ -34,6 +35,8 @@ pub struct At {
     pub colours: Option<Colours>,
     /// The single numbers the picture shows (for `spot-cutoff-differs` and its kin).
     pub values: Values,
+    /// Each side's material colours the picture shows (for `materials-differ`).
+    pub sides: Option<Sides>,
 }
 
 /// A mistake a picture can show: its id (kebab-case, the same as `phonglab check`'s where
@@ -60,6 +63,7 @@ impl PictureMistake {
             ("light", Arg::Text(at.light.to_string())),
             ("emission", Arg::Text(emission)),
             ("terms", Arg::Text(at.colours.map(|c| colours::said(&c)).unwrap_or_default())),
+            ("colours", Arg::Text(at.sides.map(|s| sides::said(&s)).unwrap_or_default())),
         ];
         let number = |v: f64| Arg::Text(crate::locale::decimal(&values::shown(v)));
         let own = at.values.lights.get(at.light).copied().unwrap_or_default();
@@ -548,6 +552,18 @@ fn spot_cutoff_doubled(d: &mut Drawing, at: At) -> bool {
     the_light(d, at, |l| l.is_spot() && l.spot_cutoff > 0.0 && l.spot_cutoff <= 45.0, |l| l.spot_cutoff *= 2.0)
 }
 
+/// A side's material colours (two-sided lighting with two materials): the picture drawn
+/// with each side's colours it shows.
+fn materials_differ(d: &mut Drawing, at: At) -> bool {
+    match at.sides {
+        Some(s) if !s.differing().is_empty() => {
+            *d = sides::with_sides(d, &s.fitted);
+            true
+        }
+        _ => false,
+    }
+}
+
 /// Any colour the program sets: the picture drawn with the products it shows.
 fn colours_differ(d: &mut Drawing, at: At) -> bool {
     match at.colours {
@@ -574,7 +590,7 @@ const fn per_light(id: &'static str, message: &'static str, apply: fn(&mut Drawi
 }
 
 /// The picture mistakes, in the order the docs list them.
-pub const MISTAKES: [PictureMistake; 57] = [
+pub const MISTAKES: [PictureMistake; 58] = [
     row("normal-by-modelview", "wrong-cause-normals-by-m", normals_by_modelview),
     row("normal-not-normalised", "diagnose-normalize-off", normalize_off),
     row("reflection-for-halfway", "wrong-cause-reflection-for-halfway", reflection_for_halfway),
@@ -638,6 +654,8 @@ pub const MISTAKES: [PictureMistake; 57] = [
     // After every row of the scene's own values: it explains any of their colour mistakes
     // (in words less plain than theirs) and other colours besides.
     row("colours-differ", "diagnose-colours-differ", colours_differ),
+    // Its kin where two-sided lighting has two materials: each side's colours.
+    row("materials-differ", "diagnose-materials-differ", materials_differ),
 ];
 
 /// Each mistake this drawing offers, with where it is made: the table's rows, the

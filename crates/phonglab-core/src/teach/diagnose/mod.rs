@@ -17,10 +17,12 @@ mod colours;
 mod drawing;
 mod fit;
 mod mistakes;
+mod sides;
 mod values;
 
 pub use colours::Colours;
 pub use drawing::Drawing;
+pub use sides::Sides;
 pub use mistakes::{At, MISTAKES, PictureMistake, Scope, offered};
 
 use crate::model::error::SceneError;
@@ -133,8 +135,9 @@ pub fn drawings_at_most(right: &Drawing) -> usize {
         }
     }
     every.shininess = Some((right.scene.material.shininess + 1.0, right.scene.material.shininess));
-    let at = At { emission: [1.0; 3], colours: Some(colours), values: every, ..At::default() };
-    offered(right, at).len() + 1 + colours::drawings(right) + values::drawings(right)
+    let sides = Sides { fitted: [[[1.0; 3]; 4]; 2], scene: [[[0.0; 3]; 4]; 2] };
+    let at = At { emission: [1.0; 3], colours: Some(colours), values: every, sides: Some(sides), ..At::default() };
+    offered(right, at).len() + 1 + colours::drawings(right) + values::drawings(right) + sides::drawings(right)
 }
 
 /// Compares `image` (RGBA8, `size` pixels square) with `right` drawn right and with each
@@ -147,8 +150,9 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
     let emission = fit::emission(&picture, &covered, image, size);
     let colours = colours::fit(right, &covered, image, size)?;
     let values = values::fit(right, image, size)?;
+    let sides = sides::fit(right, &covered, image, size)?;
     let mut tried = Vec::new();
-    for (mistake, at) in offered(right, At { light: 0, emission, colours, values }) {
+    for (mistake, at) in offered(right, At { light: 0, emission, colours, values, sides }) {
         let mut d = right.clone();
         (MISTAKES[mistake].apply)(&mut d, at);
         let (_, wrong, wrong_covered) = d.draw(size)?;

@@ -1,0 +1,172 @@
+//! The materials a student's picture shows on each side: for `materials-differ`, a mistake
+//! in the front or back material of two-sided lighting (the back's calls given to
+//! `GL_FRONT`, a colour set for one side only), where the colour fit of
+//! [`super::colours`] cannot go: two materials share each light's term.
+//!
+//! With the lights' colours fixed, a side's lit colour is linear in its material's four
+//! colours (Red Book, the lighting equation): `c = e_cm + a_cm (a_cs + Σ_i a_cli α_i) +
+//! d_cm Σ_i d_cli δ_i + s_cm Σ_i s_cli σ_i`, the factors `α_i`, `δ_i`, `σ_i` those
+//! [`super::colours`] draws. Each side's four colours are fitted by least squares from the
+//! pixels that side shows, per channel.
+
+use glam::DVec4;
+
+use crate::model::error::SceneError;
+use crate::model::scene::{MAX_LIGHTS, Material, Side};
+
+use super::colours::{ABSOLUTE, CLAMPED, PROBE, RELATIVE, TERMS, aligned, interior, least_squares, with_products};
+use super::drawing::Drawing;
+
+/// A side's four colours, in the order ambient, diffuse, specular, emission; linear RGB.
+pub type Four = [[f64; 3]; 4];
+
+/// The GL names of a material's colours, in the order of [`Four`].
+pub const NAMES: [&str; 4] = ["GL_AMBIENT", "GL_DIFFUSE", "GL_SPECULAR", "GL_EMISSION"];
+
+/// Each side's material colours, fitted from the picture and the scene's own.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sides {
+    /// Front, back: as the picture shows them.
+    pub fitted: [Four; 2],
+    /// Front, back: the scene's (what it lights each side with).
+    pub scene: [Four; 2],
+}
+
+impl Sides {
+    /// The (side, colour) pairs whose fitted colour is not the scene's.
+    pub fn differing(&self) -> Vec<(usize, usize)> {
+        let mut out = Vec::new();
+        for side in 0..2 {
+            for k in 0..4 {
+                let (f, s) = (self.fitted[side][k], self.scene[side][k]);
+                if (0..3).any(|c| (f[c] - s[c]).abs() > ABSOLUTE + RELATIVE * s[c].abs()) {
+                    out.push((side, k));
+                }
+            }
+        }
+        out
+    }
+}
+
+/// A material's four colours.
+fn four(m: &Material) -> Four {
+    [m.ambient, m.diffuse, m.specular, m.emission].map(|c| c.truncate().to_array())
+}
+
+/// Does this scene light its two sides with different materials (two-sided lighting)?
+pub fn applies(d: &Drawing) -> bool {
+    let s = &d.scene;
+    !s.lights.is_empty()
+        && s.lights.len() <= MAX_LIGHTS
+        && s.light_model.two_sided
+        && s.lit_material(Side::Front) != s.lit_material(Side::Back)
+}
+
+/// The drawing with each side's colours `sides` (no colour material: the fit holds what
+/// it tracked), the shininess and alpha kept.
+pub fn with_sides(d: &Drawing, sides: &[Four; 2]) -> Drawing {
+    let mut out = d.clone();
+    let s = &mut out.scene;
+    let colour = |c: [f64; 3], w: f64| DVec4::new(c[0].max(0.0), c[1].max(0.0), c[2].max(0.0), w);
+    let lit = [s.lit_material(Side::Front), s.lit_material(Side::Back)];
+    let made: Vec<Material> = lit
+        .iter()
+        .zip(sides)
+        .map(|(m, f)| Material {
+            ambient: colour(f[0], m.ambient.w),
+            diffuse: colour(f[1], m.diffuse.w),
+            specular: colour(f[2], m.specular.w),
+            emission: colour(f[3], m.emission.w),
+            shininess: m.shininess,
+        })
+        .collect();
+    s.material = made[0].clone();
+    s.back_material = Some(made[1].clone());
+    s.color_material = None;
+    out
+}
+
+/// The pictures [`fit`] draws for `right`: one per term and the side of each pixel.
+pub fn drawings(right: &Drawing) -> usize {
+    if applies(right) { 2 + 3 * right.scene.lights.len() } else { 0 }
+}
+
+/// Each side's colours `image` (RGBA8, `size` square) shows for `right`; `None` where the
+/// scene does not light two sides differently or a side shows too few pixels.
+pub fn fit(right: &Drawing, covered: &[bool], image: &[u8], size: usize) -> Result<Option<Sides>, SceneError> {
+    if !applies(right) {
+        return Ok(None);
+    }
+    let s = &right.scene;
+    let terms = 1 + 3 * s.lights.len();
+    let mut factors: Vec<Vec<u8>> = Vec::with_capacity(terms);
+    for t in 0..terms {
+        let mut alone = [[0.0; 3]; TERMS];
+        alone[t] = [PROBE; 3];
+        factors.push(with_products(right, &alone).draw(size)?.1);
+    }
+    let (renderer, _, _) = right.draw(size)?;
+    let back: Vec<bool> = (0..size * size).map(|i| renderer.surface_at(i).is_some_and(|x| x.back)).collect();
+    let image = aligned(covered, image, right.background8(), size);
+    let scene = [four(&s.lit_material(Side::Front)), four(&s.lit_material(Side::Back))];
+    let mut fitted = scene;
+    let inside = interior(covered, size);
+    for (side, out) in fitted.iter_mut().enumerate() {
+        for c in 0..3 {
+            let level = |f: &[u8], p: usize| f[p * 4 + c];
+            let pixels: Vec<usize> = inside
+                .iter()
+                .copied()
+                .filter(|&p| back[p] == (side == 1) && level(&image, p) < CLAMPED)
+                .filter(|&p| factors.iter().all(|f| level(f, p) < CLAMPED))
+                .collect();
+            if pixels.len() < 16 {
+                continue;
+            }
+            let factor = |t: usize, p: usize| f64::from(level(&factors[t], p)) / 255.0 / PROBE;
+            let row = |p: usize| -> Vec<f64> {
+                let sum = |k: usize, colour: fn(&crate::model::scene::Light) -> DVec4| -> f64 {
+                    s.lights.iter().enumerate().map(|(i, l)| colour(l)[c] * factor(1 + 3 * i + k, p)).sum()
+                };
+                let scene_ambient = if s.rules.scene_ambient() { s.light_model.ambient[c] * factor(0, p) } else { 0.0 };
+                let emission = if s.rules.emission() { factor(0, p) } else { 0.0 };
+                vec![sum(0, |l| l.ambient) + scene_ambient, sum(1, |l| l.diffuse), sum(2, |l| l.specular), emission]
+            };
+            let target = |p: usize| f64::from(level(&image, p)) / 255.0;
+            let prior: Vec<f64> = (0..4).map(|k| scene[side][k][c]).collect();
+            let x = least_squares(&pixels, &row, &target, &prior);
+            for k in 0..4 {
+                out[k][c] = x[k];
+            }
+        }
+    }
+    Ok(Some(Sides { fitted, scene }))
+}
+
+/// The differing colours in words, in the reader's language: each side and colour, what
+/// the picture shows and the scene's ("GL_DIFFUSE of the front: (0.10, 0.10, 0.80) in the
+/// picture, (0.80, 0.60, 0.20) in the scene").
+pub fn said(sides: &Sides) -> String {
+    use crate::locale::{Arg, tr, tr_args};
+    let rgb = |v: [f64; 3]| {
+        let [r, g, b] = v.map(|x| x.max(0.0) + 0.0);
+        crate::locale::decimal(&format!("({r:.2}, {g:.2}, {b:.2})"))
+    };
+    let list: Vec<String> = sides
+        .differing()
+        .into_iter()
+        .map(|(side, k)| {
+            let where_ = tr(if side == 0 { "diagnose-side-front" } else { "diagnose-side-back" });
+            tr_args(
+                "diagnose-material-colour-differs",
+                &[
+                    ("name", Arg::Text(NAMES[k].to_owned())),
+                    ("side", Arg::Text(where_)),
+                    ("shown", Arg::Text(rgb(sides.fitted[side][k]))),
+                    ("scene", Arg::Text(rgb(sides.scene[side][k]))),
+                ],
+            )
+        })
+        .collect();
+    list.join("; ")
+}
