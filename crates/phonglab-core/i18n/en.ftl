@@ -621,6 +621,7 @@ diagnose-materials-differ = The picture's materials are other colours than the s
 diagnose-side-front = of the front
 diagnose-side-back = of the back
 diagnose-material-colour-differs = { $name } { $side }: { $shown } in the picture, { $scene } in the scene
+diagnose-material-shininess-differs = GL_SHININESS { $side }: { $shown } in the picture, { $scene } in the scene
 diagnose-spot-cutoff-doubled = The spot cutoff of light { $light } (GL_LIGHT{ $light }) doubled: the cone's full angle given where GL_SPOT_CUTOFF takes its half angle
 diagnose-normal-matrix-not-transposed = The normals transformed by the inverse of the modelview's 3x3 (np.linalg.inv(m3)) where OpenGL takes its inverse transpose: under a rotation they turn the wrong way
 diagnose-normal-not-transformed = The normals left in object space (not transformed by the modelview's normal matrix): the object is lit as if it had not turned

@@ -621,6 +621,7 @@ diagnose-materials-differ = Os materiais da imagem têm outras cores que os da c
 diagnose-side-front = da frente
 diagnose-side-back = de trás
 diagnose-material-colour-differs = { $name } { $side }: { $shown } na imagem, { $scene } na cena
+diagnose-material-shininess-differs = GL_SHININESS { $side }: { $shown } na imagem, { $scene } na cena
 diagnose-spot-cutoff-doubled = O corte do spot da luz { $light } (GL_LIGHT{ $light }) dobrado: foi dado o ângulo total do cone onde GL_SPOT_CUTOFF recebe a metade dele
 diagnose-normal-matrix-not-transposed = As normais transformadas pela inversa da 3x3 da modelview (np.linalg.inv(m3)) onde o OpenGL usa a inversa transposta: sob uma rotação elas giram para o lado errado
 diagnose-normal-not-transformed = As normais deixadas no espaço do objeto (sem a matriz das normais da modelview): o objeto é iluminado como se não tivesse girado

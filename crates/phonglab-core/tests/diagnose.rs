@@ -257,8 +257,9 @@ fn each_state_mistake_for_each_light_shifted_and_noised_is_named_first() {
 
 /// The rows whose change is fitted from the student's picture: tested with the numbers and
 /// colours they find, below.
-const FITTED: [&str; 7] = [
+const FITTED: [&str; 8] = [
     "colours-differ",
+    "materials-differ",
     "spot-cutoff-differs",
     "spot-exponent-differs",
     "attenuation-constant-differs",
@@ -315,6 +316,39 @@ fn any_colour_mistake_is_named_with_the_colours_the_picture_shows() {
         assert!(!c.differing().is_empty(), "{what}");
         println!("{what}: {}", it.words());
     }
+}
+
+/// Two-sided lighting with two materials, the back's calls given to `GL_FRONT` (a
+/// copy-paste: the front takes the back's colours and shininess, the back keeps OpenGL's
+/// defaults): named `materials-differ`, with the front's diffuse the back's.
+#[test]
+fn the_back_materials_calls_given_to_the_front_are_named_with_each_sides_colours() {
+    let mut right = cylinder_scene();
+    right.scene.back_material = Some(phonglab_core::model::scene::Material {
+        ambient: DVec4::new(0.05, 0.1, 0.2, 1.0),
+        diffuse: DVec4::new(0.2, 0.4, 0.9, 1.0),
+        specular: DVec4::new(0.3, 0.3, 0.3, 1.0),
+        emission: DVec4::new(0.0, 0.0, 0.0, 1.0),
+        shininess: 10.0,
+    });
+    let mut wrong = right.clone();
+    wrong.scene.material = right.scene.back_material.clone().expect("set");
+    wrong.scene.back_material = Some(phonglab_core::model::scene::Material::default());
+    let (_, rgba, _) = wrong.draw(SIZE).expect("drawn");
+    let found = diagnose(&right, &shifted_and_noised(&rgba, right.background8()), SIZE).expect("diagnosed");
+    let line = format!(
+        "{:?}",
+        found.tried.iter().take(3).map(|t| (t.label(), t.matched.map(|m| m.score))).collect::<Vec<_>>()
+    );
+    assert_eq!(found.verdict, Verdict::Wrong, "{line}");
+    let best = found.causes[0].matched.map(|m| m.score);
+    let it = found.causes.iter().find(|t| t.id() == "materials-differ").unwrap_or_else(|| panic!("{line}"));
+    assert_eq!(it.matched.map(|m| m.score), best, "{line}");
+    let sides = it.at.sides.expect("fitted");
+    for (c, want) in [0.2, 0.4, 0.9].into_iter().enumerate() {
+        assert!((sides.fitted[0][1][c] - want).abs() < 0.04, "front diffuse {:?}", sides.fitted[0][1]);
+    }
+    println!("{}", it.words());
 }
 
 /// A single number no row foresees (a cutoff of 31 for 20, an exponent of 40 for 2, a

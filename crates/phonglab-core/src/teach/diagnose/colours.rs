@@ -413,6 +413,19 @@ pub(super) fn least_squares(
     target: &dyn Fn(usize) -> f64,
     prior: &[f64],
 ) -> Vec<f64> {
+    least_squares_held(pixels, row, target, prior, &vec![1.0; prior.len()])
+}
+
+/// [`least_squares`] with each term pulled `hold[t]` times as hard toward its prior: where
+/// two terms draw the same picture (a material's ambient under constant ambient light,
+/// and its emission), the held one keeps its prior and the other takes the change.
+pub(super) fn least_squares_held(
+    pixels: &[usize],
+    row: &dyn Fn(usize) -> Vec<f64>,
+    target: &dyn Fn(usize) -> f64,
+    prior: &[f64],
+    hold: &[f64],
+) -> Vec<f64> {
     let k = prior.len();
     let mut a = vec![vec![0.0; k]; k];
     let mut b = vec![0.0; k];
@@ -427,7 +440,7 @@ pub(super) fn least_squares(
         }
     }
     for i in 0..k {
-        let pull = PULL * pixels.len() as f64;
+        let pull = PULL * pixels.len() as f64 * hold[i];
         a[i][i] += pull;
         b[i] += pull * prior[i];
     }

@@ -557,7 +557,7 @@ fn spot_cutoff_doubled(d: &mut Drawing, at: At) -> bool {
 fn materials_differ(d: &mut Drawing, at: At) -> bool {
     match at.sides {
         Some(s) if !s.differing().is_empty() => {
-            *d = sides::with_sides(d, &s.fitted);
+            *d = sides::with_sides(d, &s.fitted, s.shininess.map(|(shown, _)| shown));
             true
         }
         _ => false,

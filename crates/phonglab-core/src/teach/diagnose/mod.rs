@@ -22,8 +22,8 @@ mod values;
 
 pub use colours::Colours;
 pub use drawing::Drawing;
-pub use sides::Sides;
 pub use mistakes::{At, MISTAKES, PictureMistake, Scope, offered};
+pub use sides::Sides;
 
 use crate::model::error::SceneError;
 use crate::raster::render::Renderer;
@@ -135,7 +135,7 @@ pub fn drawings_at_most(right: &Drawing) -> usize {
         }
     }
     every.shininess = Some((right.scene.material.shininess + 1.0, right.scene.material.shininess));
-    let sides = Sides { fitted: [[[1.0; 3]; 4]; 2], scene: [[[0.0; 3]; 4]; 2] };
+    let sides = Sides { fitted: [[[1.0; 3]; 4]; 2], scene: [[[0.0; 3]; 4]; 2], shininess: [(0.0, 0.0); 2] };
     let at = At { emission: [1.0; 3], colours: Some(colours), values: every, sides: Some(sides), ..At::default() };
     offered(right, at).len() + 1 + colours::drawings(right) + values::drawings(right) + sides::drawings(right)
 }

@@ -14,7 +14,7 @@ use glam::DVec4;
 use crate::model::error::SceneError;
 use crate::model::scene::{MAX_LIGHTS, Material, Side};
 
-use super::colours::{ABSOLUTE, CLAMPED, PROBE, RELATIVE, TERMS, aligned, interior, least_squares, with_products};
+use super::colours::{ABSOLUTE, CLAMPED, PROBE, RELATIVE, TERMS, aligned, interior, least_squares_held, with_products};
 use super::drawing::Drawing;
 
 /// A side's four colours, in the order ambient, diffuse, specular, emission; linear RGB.
@@ -30,6 +30,9 @@ pub struct Sides {
     pub fitted: [Four; 2],
     /// Front, back: the scene's (what it lights each side with).
     pub scene: [Four; 2],
+    /// Front, back: the shininess the picture was fitted with (a side's calls given to the
+    /// other side carry its shininess too), and the scene's.
+    pub shininess: [(f64, f64); 2],
 }
 
 impl Sides {
@@ -39,7 +42,8 @@ impl Sides {
         for side in 0..2 {
             for k in 0..4 {
                 let (f, s) = (self.fitted[side][k], self.scene[side][k]);
-                if (0..3).any(|c| (f[c] - s[c]).abs() > ABSOLUTE + RELATIVE * s[c].abs()) {
+                let shiny = k == 2 && self.shininess[side].0 != self.shininess[side].1;
+                if shiny || (0..3).any(|c| (f[c] - s[c]).abs() > ABSOLUTE + RELATIVE * s[c].abs()) {
                     out.push((side, k));
                 }
             }
@@ -62,9 +66,9 @@ pub fn applies(d: &Drawing) -> bool {
         && s.lit_material(Side::Front) != s.lit_material(Side::Back)
 }
 
-/// The drawing with each side's colours `sides` (no colour material: the fit holds what
-/// it tracked), the shininess and alpha kept.
-pub fn with_sides(d: &Drawing, sides: &[Four; 2]) -> Drawing {
+/// The drawing with each side's colours `sides` and shininess (no colour material: the
+/// fit holds what it tracked), the alpha kept.
+pub fn with_sides(d: &Drawing, sides: &[Four; 2], shininess: [f64; 2]) -> Drawing {
     let mut out = d.clone();
     let s = &mut out.scene;
     let colour = |c: [f64; 3], w: f64| DVec4::new(c[0].max(0.0), c[1].max(0.0), c[2].max(0.0), w);
@@ -72,12 +76,13 @@ pub fn with_sides(d: &Drawing, sides: &[Four; 2]) -> Drawing {
     let made: Vec<Material> = lit
         .iter()
         .zip(sides)
-        .map(|(m, f)| Material {
+        .zip(shininess)
+        .map(|((m, f), shininess)| Material {
             ambient: colour(f[0], m.ambient.w),
             diffuse: colour(f[1], m.diffuse.w),
             specular: colour(f[2], m.specular.w),
             emission: colour(f[3], m.emission.w),
-            shininess: m.shininess,
+            shininess,
         })
         .collect();
     s.material = made[0].clone();
@@ -86,30 +91,67 @@ pub fn with_sides(d: &Drawing, sides: &[Four; 2]) -> Drawing {
     out
 }
 
-/// The pictures [`fit`] draws for `right`: one per term and the side of each pixel.
+/// The pictures [`fit`] draws for `right`: the side of each pixel, and one per term for
+/// each of the nine pairs of shininess tried.
 pub fn drawings(right: &Drawing) -> usize {
-    if applies(right) { 2 + 3 * right.scene.lights.len() } else { 0 }
+    if applies(right) { 1 + 9 * (1 + 3 * right.scene.lights.len()) } else { 0 }
 }
 
 /// Each side's colours `image` (RGBA8, `size` square) shows for `right`; `None` where the
-/// scene does not light two sides differently or a side shows too few pixels.
+/// scene does not light two sides differently. Each side's shininess is tried as its own,
+/// the other side's and OpenGL's default 0 (a side's calls given to the other carry it),
+/// the pair whose fit leaves the least residual kept.
 pub fn fit(right: &Drawing, covered: &[bool], image: &[u8], size: usize) -> Result<Option<Sides>, SceneError> {
     if !applies(right) {
         return Ok(None);
     }
     let s = &right.scene;
-    let terms = 1 + 3 * s.lights.len();
-    let mut factors: Vec<Vec<u8>> = Vec::with_capacity(terms);
-    for t in 0..terms {
-        let mut alone = [[0.0; 3]; TERMS];
-        alone[t] = [PROBE; 3];
-        factors.push(with_products(right, &alone).draw(size)?.1);
-    }
     let (renderer, _, _) = right.draw(size)?;
     let back: Vec<bool> = (0..size * size).map(|i| renderer.surface_at(i).is_some_and(|x| x.back)).collect();
     let image = aligned(covered, image, right.background8(), size);
     let scene = [four(&s.lit_material(Side::Front)), four(&s.lit_material(Side::Back))];
-    let mut fitted = scene;
+    let own = [s.lit_material(Side::Front).shininess, s.lit_material(Side::Back).shininess];
+    let choices = [own[0], own[1], 0.0];
+    let mut best: Option<(f64, Sides)> = None;
+    for front in choices {
+        for back_shininess in choices {
+            let shininess = [front, back_shininess];
+            let (fitted, residual) = fit_with(right, &back, covered, &image, size, shininess, &scene)?;
+            let sides = Sides { fitted, scene, shininess: [(front, own[0]), (back_shininess, own[1])] };
+            // Near ties (a side that shows no highlight: 1 % of the residual) go to the
+            // scene's own shininess, tried first.
+            if best.as_ref().is_none_or(|(r, _)| residual < r * 0.99) {
+                best = Some((residual, sides));
+            }
+        }
+    }
+    Ok(best.map(|(_, s)| s))
+}
+
+/// Each side's colours fitted with the sides' shininess `shininess`, and the residual.
+fn fit_with(
+    right: &Drawing,
+    back: &[bool],
+    covered: &[bool],
+    image: &[u8],
+    size: usize,
+    shininess: [f64; 2],
+    scene: &[Four; 2],
+) -> Result<([Four; 2], f64), SceneError> {
+    let s = &right.scene;
+    let terms = 1 + 3 * s.lights.len();
+    // Each term's factor, drawn alone with white materials of the sides' shininess.
+    let mut factors: Vec<Vec<u8>> = Vec::with_capacity(terms);
+    for t in 0..terms {
+        let mut alone = [[0.0; 3]; TERMS];
+        alone[t] = [PROBE; 3];
+        let mut d = with_products(right, &alone);
+        d.scene.material.shininess = shininess[0];
+        d.scene.back_material = Some(Material { shininess: shininess[1], ..d.scene.material.clone() });
+        factors.push(d.draw(size)?.1);
+    }
+    let mut fitted = *scene;
+    let mut residual = 0.0;
     let inside = interior(covered, size);
     for (side, out) in fitted.iter_mut().enumerate() {
         for c in 0..3 {
@@ -117,7 +159,7 @@ pub fn fit(right: &Drawing, covered: &[bool], image: &[u8], size: usize) -> Resu
             let pixels: Vec<usize> = inside
                 .iter()
                 .copied()
-                .filter(|&p| back[p] == (side == 1) && level(&image, p) < CLAMPED)
+                .filter(|&p| back[p] == (side == 1) && level(image, p) < CLAMPED)
                 .filter(|&p| factors.iter().all(|f| level(f, p) < CLAMPED))
                 .collect();
             if pixels.len() < 16 {
@@ -132,15 +174,21 @@ pub fn fit(right: &Drawing, covered: &[bool], image: &[u8], size: usize) -> Resu
                 let emission = if s.rules.emission() { factor(0, p) } else { 0.0 };
                 vec![sum(0, |l| l.ambient) + scene_ambient, sum(1, |l| l.diffuse), sum(2, |l| l.specular), emission]
             };
-            let target = |p: usize| f64::from(level(&image, p)) / 255.0;
+            let target = |p: usize| f64::from(level(image, p)) / 255.0;
             let prior: Vec<f64> = (0..4).map(|k| scene[side][k][c]).collect();
-            let x = least_squares(&pixels, &row, &target, &prior);
+            // The emission held: under near-constant ambient light a change of the ambient
+            // draws as an emission; a student sets a side's ambient far more often.
+            let x = least_squares_held(&pixels, &row, &target, &prior, &[1.0, 1.0, 1.0, 1e4]);
+            residual += pixels
+                .iter()
+                .map(|&p| (row(p).iter().zip(&x).map(|(a, b)| a * b).sum::<f64>() - target(p)).powi(2))
+                .sum::<f64>();
             for k in 0..4 {
                 out[k][c] = x[k];
             }
         }
     }
-    Ok(Some(Sides { fitted, scene }))
+    Ok((fitted, residual))
 }
 
 /// The differing colours in words, in the reader's language: each side and colour, what
@@ -157,6 +205,24 @@ pub fn said(sides: &Sides) -> String {
         .into_iter()
         .map(|(side, k)| {
             let where_ = tr(if side == 0 { "diagnose-side-front" } else { "diagnose-side-back" });
+            let (shown, own) = sides.shininess[side];
+            if k == 2 && shown != own {
+                let number = |v: f64| Arg::Text(crate::locale::decimal(&super::values::shown(v)));
+                let shiny = tr_args(
+                    "diagnose-material-shininess-differs",
+                    &[("side", Arg::Text(where_.clone())), ("shown", number(shown)), ("scene", number(own))],
+                );
+                let colour = tr_args(
+                    "diagnose-material-colour-differs",
+                    &[
+                        ("name", Arg::Text(NAMES[k].to_owned())),
+                        ("side", Arg::Text(where_)),
+                        ("shown", Arg::Text(rgb(sides.fitted[side][k]))),
+                        ("scene", Arg::Text(rgb(sides.scene[side][k]))),
+                    ],
+                );
+                return format!("{colour}; {shiny}");
+            }
             tr_args(
                 "diagnose-material-colour-differs",
                 &[
