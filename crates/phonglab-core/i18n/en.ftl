@@ -635,6 +635,7 @@ diagnose-attenuation-left-out-light = The attenuation of light { $light } (GL_LI
 diagnose-spot-direction-untransformed = The spot direction of light { $light } (GL_LIGHT{ $light }) given before the camera transform (under the identity), its position after it
 diagnose-light-after-model = The lights placed in the world given after the model transform (under view × model instead of the view): they turn with the object
 diagnose-headlight-under-view = Light { $light } (GL_LIGHT{ $light }), fixed to the eye, given under the view transform instead of the identity: placed in the world
+diagnose-light-before-view-light = Light { $light } (GL_LIGHT{ $light }) placed before the camera: its GL_POSITION given under the identity, not the view transform, so it moves with the eye
 diagnose-colour-material-off = GL_COLOR_MATERIAL not enabled: the object is lit with the glMaterial colours, not the current colour
 diagnose-colour-material-diffuse-only = glColorMaterial tracking GL_DIFFUSE only instead of GL_AMBIENT_AND_DIFFUSE: the ambient stays the glMaterial one
 diagnose-spot-cutoff-halved = The spot cutoff of light { $light } (GL_LIGHT{ $light }) halved: the cone's full angle given where GL_SPOT_CUTOFF takes its half angle

@@ -635,6 +635,7 @@ diagnose-attenuation-left-out-light = A atenuação da luz { $light } (GL_LIGHT{
 diagnose-spot-direction-untransformed = A direção do spot da luz { $light } (GL_LIGHT{ $light }) dada antes da transformação da câmera (com a identidade), e a posição dela depois
 diagnose-light-after-model = As luzes colocadas no mundo dadas depois da transformação de modelo (com visão × modelo em vez da visão): elas giram com o objeto
 diagnose-headlight-under-view = A luz { $light } (GL_LIGHT{ $light }), presa ao olho, dada com a transformação de visão em vez da identidade: fica colocada no mundo
+diagnose-light-before-view-light = A luz { $light } (GL_LIGHT{ $light }) colocada antes da câmera: o GL_POSITION dela dado com a identidade e não com a transformação de visão, por isso ela se move com o olho
 diagnose-colour-material-off = GL_COLOR_MATERIAL não ativado: o objeto é iluminado com as cores do glMaterial, não com a cor corrente
 diagnose-colour-material-diffuse-only = O glColorMaterial acompanhando só GL_DIFFUSE em vez de GL_AMBIENT_AND_DIFFUSE: a cor ambiente continua a do glMaterial
 diagnose-spot-cutoff-halved = O corte do spot da luz { $light } (GL_LIGHT{ $light }) pela metade: foi dado o ângulo total do cone onde GL_SPOT_CUTOFF recebe a metade dele

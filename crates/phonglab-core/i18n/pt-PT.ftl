@@ -635,6 +635,7 @@ diagnose-attenuation-left-out-light = A atenuação da luz { $light } (GL_LIGHT{
 diagnose-spot-direction-untransformed = A direção do foco da luz { $light } (GL_LIGHT{ $light }) dada antes da transformação da câmara (com a identidade), e a sua posição depois dela
 diagnose-light-after-model = As luzes colocadas no mundo dadas depois da transformação de modelo (com vista × modelo em vez da vista): rodam com o objeto
 diagnose-headlight-under-view = A luz { $light } (GL_LIGHT{ $light }), fixa ao olho, dada com a transformação de vista em vez da identidade: fica colocada no mundo
+diagnose-light-before-view-light = A luz { $light } (GL_LIGHT{ $light }) colocada antes da câmara: o seu GL_POSITION dado com a identidade e não com a transformação de vista, por isso move-se com o olho
 diagnose-colour-material-off = GL_COLOR_MATERIAL não ativado: o objeto é iluminado com as cores do glMaterial, não com a cor corrente
 diagnose-colour-material-diffuse-only = O glColorMaterial a seguir só GL_DIFFUSE em vez de GL_AMBIENT_AND_DIFFUSE: a cor ambiente fica a do glMaterial
 diagnose-spot-cutoff-halved = O corte do foco da luz { $light } (GL_LIGHT{ $light }) reduzido a metade: foi dado o ângulo total do cone onde GL_SPOT_CUTOFF recebe metade dele

@@ -173,6 +173,22 @@ fn light_before_view(d: &mut Drawing, _: At) -> bool {
     true
 }
 
+/// One light's position given before `gluLookAt` (under the identity), where several lights
+/// are placed in the world and the view moves them: the all-lights row draws the others
+/// too.
+fn light_before_view_alone(d: &mut Drawing, at: At) -> bool {
+    let moves = d.scene.eye_from_world != glam::DMat4::IDENTITY;
+    let in_world = d.scene.lights.iter().filter(|l| l.placement == LightPlacement::World).count();
+    the_light(
+        d,
+        at,
+        |l| moves && in_world >= 2 && l.placement == LightPlacement::World,
+        |l| {
+            l.placement = LightPlacement::Eye;
+        },
+    )
+}
+
 /// `GL_LIGHT_MODEL_LOCAL_VIEWER` the other way.
 fn viewer_swapped(d: &mut Drawing, _: At) -> bool {
     d.scene.light_model.local_viewer = !d.scene.light_model.local_viewer;
@@ -590,7 +606,7 @@ const fn per_light(id: &'static str, message: &'static str, apply: fn(&mut Drawi
 }
 
 /// The picture mistakes, in the order the docs list them.
-pub const MISTAKES: [PictureMistake; 58] = [
+pub const MISTAKES: [PictureMistake; 59] = [
     row("normal-by-modelview", "wrong-cause-normals-by-m", normals_by_modelview),
     row("normal-not-normalised", "diagnose-normalize-off", normalize_off),
     row("reflection-for-halfway", "wrong-cause-reflection-for-halfway", reflection_for_halfway),
@@ -613,6 +629,7 @@ pub const MISTAKES: [PictureMistake; 58] = [
     per_light("spot-direction-untransformed", "diagnose-spot-direction-untransformed", spot_direction_untransformed),
     row("light-after-model", "diagnose-light-after-model", light_after_model),
     per_light("headlight-under-view", "diagnose-headlight-under-view", headlight_under_view),
+    per_light("light-before-view", "diagnose-light-before-view-light", light_before_view_alone),
     row("colour-material-off", "diagnose-colour-material-off", colour_material_off),
     row("colour-material-diffuse-only", "diagnose-colour-material-diffuse-only", colour_material_diffuse_only),
     per_light("spot-cutoff-halved", "diagnose-spot-cutoff-halved", spot_cutoff_halved),
