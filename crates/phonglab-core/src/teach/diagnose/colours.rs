@@ -55,7 +55,8 @@ pub struct Colours {
 }
 
 impl Colours {
-    /// The products of colours of `d`'s scene, term by term ([`TERMS`]).
+    /// The products of colours of `d`'s scene, term by term: the scene's, then each
+    /// light's ambient, diffuse and specular.
     pub fn products(d: &Drawing) -> [[f64; 3]; TERMS] {
         scene_products(d)
     }

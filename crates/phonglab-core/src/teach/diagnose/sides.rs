@@ -210,13 +210,13 @@ pub fn said(sides: &Sides) -> String {
                 let number = |v: f64| Arg::Text(crate::locale::decimal(&super::values::shown(v)));
                 let shiny = tr_args(
                     "diagnose-material-shininess-differs",
-                    &[("side", Arg::Text(where_.clone())), ("shown", number(shown)), ("scene", number(own))],
+                    &[("which", Arg::Text(where_.clone())), ("shown", number(shown)), ("scene", number(own))],
                 );
                 let colour = tr_args(
                     "diagnose-material-colour-differs",
                     &[
                         ("name", Arg::Text(NAMES[k].to_owned())),
-                        ("side", Arg::Text(where_)),
+                        ("which", Arg::Text(where_)),
                         ("shown", Arg::Text(rgb(sides.fitted[side][k]))),
                         ("scene", Arg::Text(rgb(sides.scene[side][k]))),
                     ],
@@ -227,7 +227,7 @@ pub fn said(sides: &Sides) -> String {
                 "diagnose-material-colour-differs",
                 &[
                     ("name", Arg::Text(NAMES[k].to_owned())),
-                    ("side", Arg::Text(where_)),
+                    ("which", Arg::Text(where_)),
                     ("shown", Arg::Text(rgb(sides.fitted[side][k]))),
                     ("scene", Arg::Text(rgb(sides.scene[side][k]))),
                 ],
