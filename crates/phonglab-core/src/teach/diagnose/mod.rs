@@ -22,8 +22,8 @@ mod values;
 
 pub use colours::Colours;
 pub use drawing::Drawing;
-pub use sides::Sides;
 pub use mistakes::{At, MISTAKES, PictureMistake, Scope, offered};
+pub use sides::Sides;
 
 use crate::model::error::SceneError;
 use crate::raster::render::Renderer;
