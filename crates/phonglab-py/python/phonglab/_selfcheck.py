@@ -74,6 +74,10 @@ def _text(value: Any) -> str:
     that is not numbers) where it has none or too many."""
     if isinstance(value, (str, bytes, bool, np.bool_, complex, np.complexfloating)):
         return _UNREAD
+    # A complex array (`Idif + 1j`) is no real value: never its real part alone.
+    if isinstance(value, np.ndarray) and value.dtype.kind not in "iuf":
+        return _UNREAD
+    value = _own(value)
     size = value.size if isinstance(value, np.ndarray) else len(value) if isinstance(value, (list, tuple)) else 1
     if size > _MOST_NUMBERS:
         return _UNREAD
@@ -95,6 +99,16 @@ def _text(value: Any) -> str:
         return str(np.float32(x)) if numbers.dtype == np.float32 else repr(float(x))
     with np.printoptions(**_DEFAULT_PRINT):
         return np.array2string(numbers, max_line_width=10**6, separator=" ").replace("\n", " ")
+
+
+def _own(value: Any) -> Any:
+    """A number's own value, as it prints: a float's (or int's) subclass read as the float
+    (or int) it holds, never through a __float__ of its own that says another number."""
+    if isinstance(value, float) and not isinstance(value, np.floating):
+        return float.__float__(value)
+    if isinstance(value, int) and not isinstance(value, (bool, np.integer)):
+        return int.__int__(value)
+    return value
 
 
 def _value(namespace: Dict[str, Any], step: str) -> Optional[Any]:
