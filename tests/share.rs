@@ -381,7 +381,7 @@ fn a_link_is_a_scene_wherever_a_scene_file_is_taken_and_its_page_is_http() {
     assert!(!said.contains("does not exist"), "{said}");
     let bare = phonglab(&["explain", "https://phonglab.github.io/phonglab/"]);
     assert!(String::from_utf8_lossy(&bare.stderr).contains("holds no scene"));
-    for base in ["not a url", "javascript:alert(1)//", "https://e.org/\u{1b}[31m"] {
+    for base in ["not a url", "javascript:alert(1)//", "https://e.org/\u{1b}[31m", "https:///", "http://#x"] {
         let o = phonglab(&["share", "--base", base]);
         let said = String::from_utf8_lossy(&o.stderr);
         assert!(!o.status.success() && said.contains("http:// or https://") && o.stdout.is_empty(), "{said}");

@@ -768,6 +768,8 @@ python-no-field-guess = { $what } has no { $value }: did you mean { $guess }? It
 python-no-field = { $what } has no { $value }; its names: { $names }
 python-lights-fixed = scene.lights has no { $value }: the lights are the scene's, edited here field by field (scene.lights[0].position = ...); a light is added or removed in a scene file, which Scene.load then reads
 python-no-memory = not enough memory: { $bytes } bytes could not be had; light the vertices in smaller chunks
+python-overflow = { $step } is { $value } in { $precision }: the scene's numbers are past what { $precision } holds (float32: ±3.4e38), so the lighting overflows; nothing is returned (precision="f64" holds more)
+python-render-no-memory = not enough memory to render a { $size } x { $size } picture: it needs about { $bytes }, twice that is asked for first, and it could not be had; choose a smaller size
 python-not-finite-row = { $name }: row { $row } is { $value }: every number must be finite and within float32's range (±3.4e38)
 python-wrong-shape = { $name }: an array of shape { $shape }, where (N, 3) is expected, the same N for the positions and the normals
 nb-self-check = Self-check: with the Python package phonglab installed (it is not on PyPI yet: install the wheel file, `pip install phonglab-*.whl`, which phonglab's `scripts/wheel` builds or your teacher hands out), uncomment the cell below and run it after the others. It compares each value this notebook computed with the key, step by step, and names the first wrong step and its likely cause. Nothing here depends on it.

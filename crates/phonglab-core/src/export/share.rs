@@ -199,7 +199,9 @@ pub fn check_base(base: &str) -> Result<(), String> {
     let lower = base.to_ascii_lowercase();
     let scheme = lower.starts_with("http://") || lower.starts_with("https://");
     let plain = !base.chars().any(|c| crate::formats::escape::is_control(c) || c.is_whitespace() || c == '"');
-    if scheme && plain && base.len() > "https://".len() {
+    // A host after the scheme (`https:///` has none: no browser opens it).
+    let host = base.split_once("://").map(|(_, rest)| rest.split(['/', '?', '#']).next().unwrap_or_default());
+    if scheme && plain && host.is_some_and(|h| !h.is_empty()) {
         return Ok(());
     }
     let shown: String = base.chars().take(80).collect();
