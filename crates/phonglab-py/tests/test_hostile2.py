@@ -137,3 +137,11 @@ def test_f32_lighting_past_float32s_range_is_refused_naming_the_step_and_f64_is_
         phonglab.light_many(scene, np.array([[0.0, 0.0, 0.0]]), np.array([[0.0, 0.0, 1.0]]))
     lit = phonglab.light(scene, precision="f64")
     assert np.all(np.isfinite(lit.I)) and lit.I[0] < -1e70, lit.I
+
+
+def test_the_self_check_refuses_a_nan_given_naming_it_as_the_command_line_does(cells):  # noqa: F811
+    from test_selfcheck import mistaken
+
+    nan = mistaken(cells, "lightPos = np.array([0, 0, 90, 1])", "lightPos = np.array([0, 0, np.nan, 1])")
+    with pytest.raises(phonglab.SceneError, match=r"a given is not a finite number \(lightPos"):
+        run(nan)
