@@ -228,7 +228,7 @@ fn the_inputs_that_differ_are_named_in_words_as_the_command_line_names_them() {
     assert!(s.check.inputs_differ.iter().any(|n| n == "rules"), "{:?}", s.check.inputs_differ);
     let line = h.get_by_label_contains("your typed inputs differ from the assignment's:");
     let node = line.accesskit_node();
-    let text = node.label().or(node.value()).map(String::from).unwrap_or_default();
+    let text = node.label().or(node.value()).unwrap_or_default();
     assert!(text.contains("the rule set"), "{text}");
     assert!(!text.split([':', ',']).any(|part| part.trim() == "rules"), "{text}");
     let r = line.rect();
