@@ -768,6 +768,7 @@ python-no-field-guess = { $what } has no { $value }: did you mean { $guess }? It
 python-no-field = { $what } has no { $value }; its names: { $names }
 python-lights-fixed = scene.lights has no { $value }: the lights are the scene's, edited here field by field (scene.lights[0].position = ...); a light is added or removed in a scene file, which Scene.load then reads
 python-no-memory = not enough memory: { $bytes } bytes could not be had; light the vertices in smaller chunks
+python-check-reassigned = Note: { $name } is assigned again in a cell run after the one that prints it, so the self-check reads the value { $name } holds now, not the one printed (phonglab check reads the printed one). Use another name there, or run the cells in order again.
 python-overflow = { $step } is { $value } in { $precision }: the scene's numbers are past what { $precision } holds (float32: ±3.4e38), so the lighting overflows; nothing is returned (precision="f64" holds more)
 python-render-no-memory = not enough memory to render a { $size } x { $size } picture: it needs about { $bytes }, twice that is asked for first, and it could not be had; choose a smaller size
 python-not-finite-row = { $name }: row { $row } is { $value }: every number must be finite and within float32's range (±3.4e38)

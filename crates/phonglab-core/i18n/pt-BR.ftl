@@ -768,6 +768,7 @@ python-no-field-guess = { $what } não tem { $value }: você quis dizer { $guess
 python-no-field = { $what } não tem { $value }; seus nomes: { $names }
 python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz é adicionada ou removida em um arquivo de cena, que o Scene.load depois lê
 python-no-memory = memória insuficiente: não foi possível obter { $bytes } bytes; ilumine os vértices em blocos menores
+python-check-reassigned = Observação: { $name } é atribuído de novo em uma célula executada depois da que o imprime, então a autoverificação lê o valor que { $name } tem agora, não o impresso (o phonglab check lê o impresso). Use outro nome ali, ou execute as células em ordem de novo.
 python-overflow = { $step } dá { $value } em { $precision }: os números da cena passam do que o { $precision } guarda (float32: ±3,4e38), por isso a iluminação estoura; nada é retornado (precision="f64" guarda mais)
 python-render-no-memory = memória insuficiente para desenhar uma imagem de { $size } x { $size }: ela precisa de cerca de { $bytes }, o dobro é pedido antes, e não foi possível obtê-lo; escolha um tamanho menor
 python-not-finite-row = { $name }: a linha { $row } é { $value }: todos os números precisam ser finitos e estar dentro do intervalo do float32 (±3,4e38)

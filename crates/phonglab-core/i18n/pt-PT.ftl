@@ -768,6 +768,7 @@ python-no-field-guess = { $what } não tem { $value }: quis dizer { $guess }? Os
 python-no-field = { $what } não tem { $value }; os seus nomes: { $names }
 python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz acrescenta-se ou retira-se num ficheiro de cena, que o Scene.load depois lê
 python-no-memory = memória insuficiente: não foi possível obter { $bytes } bytes; ilumine os vértices em blocos mais pequenos
+python-check-reassigned = Nota: { $name } volta a ser atribuído numa célula corrida depois da que o imprime, por isso a autoverificação lê o valor que { $name } tem agora, não o impresso (o phonglab check lê o impresso). Use lá outro nome, ou volte a correr as células por ordem.
 python-overflow = { $step } dá { $value } em { $precision }: os números da cena passam do que o { $precision } guarda (float32: ±3,4e38), por isso a iluminação transborda; nada é devolvido (precision="f64" guarda mais)
 python-render-no-memory = memória insuficiente para desenhar uma imagem de { $size } x { $size }: precisa de cerca de { $bytes }, pede-se primeiro o dobro, e não foi possível obtê-lo; escolha um tamanho mais pequeno
 python-not-finite-row = { $name }: a linha { $row } é { $value }: todos os números têm de ser finitos e estar dentro do alcance do float32 (±3,4e38)

@@ -678,6 +678,17 @@ fn check_refusal(why: &str, lang: &str) -> PyResult<String> {
     })
 }
 
+/// A note the self-check adds under its table, in `lang`: `why` names it ("reassigned":
+/// the step `name` was assigned again after the cell that prints it).
+#[pyfunction]
+#[pyo3(signature = (why, name, lang="en"))]
+fn check_note(why: &str, name: &str, lang: &str) -> PyResult<String> {
+    with_locale(locale_of(lang)?, || match why {
+        "reassigned" => Ok(phonglab_core::t!("python-check-reassigned", name = name)),
+        other => Err(unknown("why=", other, "reassigned")),
+    })
+}
+
 /// A refusal the package's Python side makes (a value of the wrong kind), in the current
 /// language: `kind` names the message; `what` the argument or field, `value` what was given
 /// (Python's `repr`), `names` what is taken, `guess` the likeliest name meant (or "").
@@ -728,5 +739,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(check_steps, m)?)?;
     m.add_function(wrap_pyfunction!(explain_tables, m)?)?;
     m.add_function(wrap_pyfunction!(check_refusal, m)?)?;
+    m.add_function(wrap_pyfunction!(check_note, m)?)?;
     Ok(())
 }

@@ -145,3 +145,13 @@ def test_the_self_check_refuses_a_nan_given_naming_it_as_the_command_line_does(c
     nan = mistaken(cells, "lightPos = np.array([0, 0, 90, 1])", "lightPos = np.array([0, 0, np.nan, 1])")
     with pytest.raises(phonglab.SceneError, match=r"a given is not a finite number \(lightPos"):
         run(nan)
+
+
+def test_a_step_assigned_again_after_it_was_printed_is_said(cells):  # noqa: F811
+    right, text = run(cells, "for I in range(3):\n    pass\n")
+    assert "Note: I is assigned again in a cell run after the one that prints it" in text, text
+    assert "phonglab check reads the printed one" in text, text
+    right, text = run(cells, "for k in range(3):\n    J = k  # I = 1 in a comment\n")
+    assert right and "Note:" not in text, text
+    _, text = run(cells, "I = 0", lang="pt-PT")
+    assert "Nota: I volta a ser atribuído" in text, text

@@ -186,4 +186,32 @@ def check(namespace: Dict[str, Any], lang: str = "en") -> bool:
     steps = _printing_order(run, _core.check_steps(code, lang))
     text, right = _core.check_work(code, printed(namespace, steps), lang)
     print(text, end="")
+    for name in _reassigned(run, steps):
+        print(_core.check_note("reassigned", name, lang))
     return right
+
+
+def _reassigned(cells: List[str], steps: List[str]) -> List[str]:
+    """The steps' names assigned again (`I = …`, `for I in …`) in a cell run after the last
+    cell that prints them: the value read now is not the one printed, which is what
+    `phonglab check` reads from the saved notebook."""
+    names = []
+    for step in steps:
+        match = _STEP.match(step)
+        base = match.group(1) if match else step
+        if base in names:
+            continue
+        label = re.compile(r"[\"']" + re.escape(base) + r"(\[[^\]]*\])?\s*=")
+        printing = [k for k, cell in enumerate(cells) if label.search(cell)]
+        if not printing:
+            continue
+        name = re.escape(base)
+        again = re.compile(
+            r"^[ \t]*(?:for\s+(?:[\w\s,()]*?\b)?" + name + r"\b[\w\s,()]*?\bin\b|"
+            + name + r"\s*(?:\[[^\]]*\])?\s*(?:[-+*/@]|\*\*)?=(?!=))",
+            re.M,
+        )
+        later = _code(cells[printing[-1] + 1 :])
+        if again.search("\n".join(line.split("#", 1)[0] for line in later.split("\n"))):
+            names.append(base)
+    return names
