@@ -40,7 +40,7 @@ share-damaged = the link is damaged ({ $what }): it was cut or changed
 share-choice = the link asks for something this phonglab does not know: “{ $line }”
 share-too-big = it inflates past { $most } bytes, more than phonglab reads (more than any scene phonglab writes)
 share-make-too-long = the link would be { $length } characters long, and phonglab opens links of at most { $most }: shorten the scene's name
-share-mesh-folders = the link names the mesh “{ $path }” with its folders; a link carries a mesh's file name alone, and phonglab never reads a path a link names: it looks for { $name } beside you, and shows the sphere until then
+share-mesh-folders = the link names the mesh “{ $path }” with its folders; a link carries a mesh's file name alone, and phonglab never reads a path a link names: only the file name { $name } is kept (open that file to show it), and the sphere is shown until then
 mesh-missing-kept = The mesh { $path } is missing or cannot be read ({ $error }); the scene is kept and shown on the sphere. Open the mesh again to show it.
 shader = Shader
 

@@ -40,7 +40,7 @@ share-damaged = o link está danificado ({ $what }): foi cortado ou alterado
 share-choice = o link pede algo que este phonglab não conhece: “{ $line }”
 share-too-big = descompactada, passa de { $most } bytes, mais do que o phonglab lê (mais do que qualquer cena que o phonglab escreve)
 share-make-too-long = o link teria { $length } caracteres, e o phonglab abre links de no máximo { $most }: encurte o nome da cena
-share-mesh-folders = o link nomeia a malha “{ $path }” com as pastas dela; um link leva só o nome do arquivo da malha, e o phonglab nunca lê um caminho que um link nomeie: ele procura { $name } do seu lado e mostra a esfera até lá
+share-mesh-folders = o link nomeia a malha “{ $path }” com as pastas dela; um link leva só o nome do arquivo da malha, e o phonglab nunca lê um caminho que um link nomeie: fica só o nome { $name } (abra esse arquivo para vê-la), e a esfera é mostrada até lá
 mesh-missing-kept = A malha { $path } está faltando ou não pode ser lida ({ $error }); a cena é mantida e mostrada na esfera. Abra a malha de novo para vê-la.
 shader = Programa de sombreamento (shader)
 

@@ -40,7 +40,7 @@ share-damaged = o link está danificado ({ $what }): foi cortado ou alterado
 share-choice = o link pede algo que este phonglab não conhece: “{ $line }”
 share-too-big = descomprimida, passa de { $most } bytes, mais do que o phonglab lê (mais do que qualquer cena que o phonglab escreve)
 share-make-too-long = a ligação teria { $length } caracteres, e o phonglab abre ligações de no máximo { $most }: encurte o nome da cena
-share-mesh-folders = a ligação nomeia a malha “{ $path }” com as suas pastas; uma ligação leva só o nome do ficheiro da malha, e o phonglab nunca lê um caminho que uma ligação nomeie: procura { $name } do seu lado e mostra a esfera até lá
+share-mesh-folders = a ligação nomeia a malha “{ $path }” com as suas pastas; uma ligação leva só o nome do ficheiro da malha, e o phonglab nunca lê um caminho que uma ligação nomeie: fica só o nome { $name } (abra esse ficheiro para a ver), e a esfera é mostrada até lá
 mesh-missing-kept = A malha { $path } falta ou não pode ser lida ({ $error }); a cena fica e é mostrada na esfera. Abra a malha de novo para a ver.
 shader = Programa de sombreamento (shader)
 
