@@ -908,6 +908,22 @@ fn a_given_that_is_not_finite_is_refused_by_check_naming_it() {
 }
 
 #[test]
+fn a_nan_given_written_with_numpy_is_refused_by_check_naming_it() {
+    let dir = TempDir::new("nangiven");
+    let nb = serde_json::json!({"cells": [{
+        "cell_type": "code",
+        "source": ["import numpy as np\n", "lightPos = np.array([0, 0, np.nan, 1])\n"],
+        "outputs": [{"output_type": "stream", "name": "stdout", "text": ["lightPos =  [ 0.  0. nan  1.]\n"]}],
+    }]});
+    let path = dir.path().join("nan.ipynb");
+    std::fs::write(&path, nb.to_string()).unwrap();
+    let out = common::phonglab(&["check", path.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{}{err}", String::from_utf8_lossy(&out.stdout));
+    assert!(err.contains("not checked: a given is not a finite number (lightPos (cell 1, line 2))"), "{err}");
+}
+
+#[test]
 fn a_flag_that_does_not_apply_is_refused_and_one_submission_is_singular() {
     let dir = TempDir::new("flags");
     let nb = dir.path().join("a.ipynb");

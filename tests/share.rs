@@ -51,8 +51,10 @@ fn damaged_old_oversized_and_hostile_fragments_are_refused_with_a_reason() {
         ("v1.AAAAAAAA".into(), "damaged"),
         (good[..good.len() / 2].to_string(), "damaged"),
         ("v1.".to_string() + &"A".repeat(MAX_FRAGMENT), "characters"),
-        // A bomb: a megabyte of zeros deflates to about a kilobyte.
-        (fragment_of(&vec![b'0'; 1 << 20]), "damaged"),
+        // A bomb: a megabyte of zeros deflates to about a kilobyte (said as too big).
+        (fragment_of(&vec![b'0'; 1 << 20]), "inflates past 262144 bytes"),
+        // Bytes after the deflated scene: the link was changed.
+        (good.clone() + "AAAA", "damaged"),
         (fragment_of(b"phonglab-share 1\ncolour = red\n\nname = \"x\"\n"), "does not know"),
         (fragment_of(b"phonglab-share 1\nlang = klingon\n\nname = \"x\"\n"), "does not know"),
         (fragment_of(b"phonglab-share 1\n\n[material]\nshininess = 500\n"), "shininess"),
@@ -256,7 +258,9 @@ fn a_file_packed_for_the_pages_storage_comes_back_whole_or_is_refused() {
     let packed = share::pack_bytes(&bytes);
     assert!(packed.len() < bytes.len(), "{} of {}", packed.len(), bytes.len());
     assert_eq!(share::unpack_bytes(&packed, bytes.len()).unwrap(), bytes);
-    assert!(matches!(share::unpack_bytes(&packed, bytes.len() - 1), Err(ShareError::Damaged(_))));
+    let e = share::unpack_bytes(&packed, bytes.len() - 1).unwrap_err();
+    assert_eq!(e, ShareError::TooBig(bytes.len() - 1));
+    assert!(e.to_string().contains("inflates past 199999 bytes"), "{e}");
     assert!(matches!(share::unpack_bytes(&packed[..packed.len() / 2], 1 << 20), Err(ShareError::Damaged(_))));
     assert!(matches!(share::unpack_bytes("not base64!", 1 << 20), Err(ShareError::Damaged(_))));
 }
@@ -377,7 +381,7 @@ fn a_link_is_a_scene_wherever_a_scene_file_is_taken_and_its_page_is_http() {
     assert!(!said.contains("does not exist"), "{said}");
     let bare = phonglab(&["explain", "https://phonglab.github.io/phonglab/"]);
     assert!(String::from_utf8_lossy(&bare.stderr).contains("holds no scene"));
-    for base in ["not a url", "javascript:alert(1)//", "https://e.org/\u{1b}[31m"] {
+    for base in ["not a url", "javascript:alert(1)//", "https://e.org/\u{1b}[31m", "https:///", "http://#x"] {
         let o = phonglab(&["share", "--base", base]);
         let said = String::from_utf8_lossy(&o.stderr);
         assert!(!o.status.success() && said.contains("http:// or https://") && o.stdout.is_empty(), "{said}");
@@ -406,4 +410,83 @@ fn the_app_started_on_a_link_opens_its_scene_or_says_why_not() {
         "{:?}",
         s.message
     );
+}
+
+/// The scene file's text with its object the mesh file.
+fn as_obj(text: &str) -> String {
+    text.lines()
+        .map(|l| if l.starts_with("object = ") { "object = \"obj\"\n".to_string() } else { format!("{l}\n") })
+        .collect()
+}
+
+/// A link's scene showing a mesh named with folders (absolute, `..`): phonglab never reads
+/// that path (the file is there, readable); the file name alone is kept and asked for, and
+/// the command line says so, as it says which mesh is missing where a bare name is not here.
+#[test]
+fn a_link_never_makes_phonglab_read_a_path_it_names_and_says_which_mesh_is_missing() {
+    use phonglab_core::ObjectKind;
+    let dir = std::env::temp_dir().join(format!("phonglab-share-far-{}", std::process::id()));
+    std::fs::create_dir_all(dir.join("far")).unwrap();
+    std::fs::create_dir_all(dir.join("here")).unwrap();
+    let far = dir.join("far/x9.obj");
+    std::fs::write(&far, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    let toml = Document::default().to_toml().unwrap();
+    for (obj, shown) in [
+        (far.display().to_string(), far.display().to_string()),
+        ("../far/x9.obj".into(), "../far/x9.obj".into()),
+        ("..\\far\\x9.obj".into(), "..\\far\\x9.obj".into()),
+    ] {
+        let text =
+            format!("{toml}\n").replace("[view]\n", &format!("[view]\nobj = \"{}\"\n", obj.replace('\\', "\\\\")));
+        let text = as_obj(&text);
+        assert!(text.contains("object = \"obj\""), "{text}");
+        let fragment = fragment_of(format!("phonglab-share 1\n\n{text}").as_bytes());
+        let back = decode(&fragment).unwrap();
+        assert_eq!(back.doc.view.object, ObjectKind::Sphere, "{obj}");
+        assert_eq!(back.doc.view.obj.as_deref(), Some("x9.obj"), "{obj}");
+        assert_eq!(back.missing_mesh.as_deref(), Some("x9.obj"), "{obj}");
+        let note = back.mesh_note.unwrap();
+        assert!(note.contains(&shown) && note.contains("never reads a path"), "{note}");
+        // The command line, run beside the far folder: the sphere, and the words said.
+        let link = format!("https://example.org/#{fragment}");
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_phonglab"))
+            .current_dir(dir.join("here"))
+            .env("LC_ALL", "C.UTF-8")
+            .args(["explain", &link])
+            .output()
+            .unwrap();
+        let said = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success() && said.contains("never reads a path") && said.contains("x9.obj"), "{said}");
+    }
+    // A bare name that is not here (or not a regular file): the sphere, and which mesh, said.
+    let text = as_obj(&toml.replacen("[view]\n", "[view]\nobj = \"nonexistent.obj\"\n", 1));
+    let link = format!("https://example.org/#{}", fragment_of(format!("phonglab-share 1\n\n{text}").as_bytes()));
+    let out = phonglab(&["explain", &link]);
+    let said = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success() && said.contains("The mesh nonexistent.obj is missing"), "{said}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A link longer than phonglab opens is not made: the package's, the command's.
+#[test]
+fn a_link_phonglab_would_not_open_is_not_made() {
+    // Letters that do not repeat (a repeated one deflates to nothing).
+    let mut x = 1u64;
+    let mut letter = || {
+        x = x.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+        char::from(b'a' + ((x >> 33) % 26) as u8)
+    };
+    let name: String = (0..30_000).map(|_| letter()).collect();
+    let doc = Document { name, ..Default::default() };
+    let e = encode(&Shared::of(doc.clone())).unwrap_err();
+    assert!(matches!(e, ShareError::MakeTooLong(n) if n > MAX_FRAGMENT), "{e:?}");
+    assert!(e.to_string().contains(&format!("at most {MAX_FRAGMENT}")), "{e}");
+    let dir = std::env::temp_dir().join(format!("phonglab-share-long-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("long.toml");
+    std::fs::write(&f, doc.to_toml().unwrap()).unwrap();
+    let out = phonglab(&["share", f.to_str().unwrap()]);
+    let said = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success() && out.stdout.is_empty() && said.contains("shorten the scene's name"), "{said}");
+    std::fs::remove_dir_all(&dir).ok();
 }

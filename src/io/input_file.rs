@@ -82,7 +82,12 @@ pub fn read_link(link: &str, fragment: &str) -> Result<phonglab_core::export::sh
 /// ([`share_fragment`]); an error names the file or the link.
 pub fn load_scene(path: &Path) -> Result<phonglab_core::Document, String> {
     if let Some(fragment) = share_fragment(path) {
-        return load_link(&path.to_string_lossy(), fragment);
+        let shared = read_link(&path.to_string_lossy(), fragment)?;
+        // A mesh the link's scene shows and that is not read here: said, and the sphere shown.
+        if let Some(note) = &shared.mesh_note {
+            eprintln!("phonglab: {}", phonglab_core::escape::terminal::lines(note));
+        }
+        return Ok(shared.doc);
     }
     phonglab_core::files::read::load_scene(path)
 }

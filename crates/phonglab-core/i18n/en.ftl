@@ -38,6 +38,9 @@ share-too-long = the link is { $length } characters long; phonglab reads at most
 share-version = the link is of version “{ $found }”; this phonglab reads v{ $version }
 share-damaged = the link is damaged ({ $what }): it was cut or changed
 share-choice = the link asks for something this phonglab does not know: “{ $line }”
+share-too-big = it inflates past { $most } bytes, more than phonglab reads (more than any scene phonglab writes)
+share-make-too-long = the link would be { $length } characters long, and phonglab opens links of at most { $most }: shorten the scene's name
+share-mesh-folders = the link names the mesh “{ $path }” with its folders; a link carries a mesh's file name alone, and phonglab never reads a path a link names: only the file name { $name } is kept (open that file to show it), and the sphere is shown until then
 mesh-missing-kept = The mesh { $path } is missing or cannot be read ({ $error }); the scene is kept and shown on the sphere. Open the mesh again to show it.
 shader = Shader
 
@@ -767,6 +770,9 @@ python-no-field-guess = { $what } has no { $value }: did you mean { $guess }? It
 python-no-field = { $what } has no { $value }; its names: { $names }
 python-lights-fixed = scene.lights has no { $value }: the lights are the scene's, edited here field by field (scene.lights[0].position = ...); a light is added or removed in a scene file, which Scene.load then reads
 python-no-memory = not enough memory: { $bytes } bytes could not be had; light the vertices in smaller chunks
+python-check-reassigned = Note: { $name } is assigned again in a cell run after the one that prints it, so the self-check reads the value { $name } holds now, not the one printed (phonglab check reads the printed one). Use another name there, or run the cells in order again.
+python-overflow = { $step } is { $value } in { $precision }: the scene's numbers are past what { $precision } holds (float32: ±3.4e38), so the lighting overflows; nothing is returned (precision="f64" holds more)
+python-render-no-memory = not enough memory to render a { $size } x { $size } picture: it needs about { $bytes }, twice that is asked for first, and it could not be had; choose a smaller size
 python-not-finite-row = { $name }: row { $row } is { $value }: every number must be finite and within float32's range (±3.4e38)
 python-wrong-shape = { $name }: an array of shape { $shape }, where (N, 3) is expected, the same N for the positions and the normals
 nb-self-check = Self-check: with the Python package phonglab installed (it is not on PyPI yet: install the wheel file, `pip install phonglab-*.whl`, which phonglab's `scripts/wheel` builds or your teacher hands out), uncomment the cell below and run it after the others. It compares each value this notebook computed with the key, step by step, and names the first wrong step and its likely cause. Nothing here depends on it.

@@ -38,6 +38,9 @@ share-too-long = o link tem { $length } caracteres; o phonglab lê no máximo { 
 share-version = o link é da versão “{ $found }”; este phonglab lê a v{ $version }
 share-damaged = o link está danificado ({ $what }): foi cortado ou alterado
 share-choice = o link pede algo que este phonglab não conhece: “{ $line }”
+share-too-big = descompactada, passa de { $most } bytes, mais do que o phonglab lê (mais do que qualquer cena que o phonglab escreve)
+share-make-too-long = o link teria { $length } caracteres, e o phonglab abre links de no máximo { $most }: encurte o nome da cena
+share-mesh-folders = o link nomeia a malha “{ $path }” com as pastas dela; um link leva só o nome do arquivo da malha, e o phonglab nunca lê um caminho que um link nomeie: fica só o nome { $name } (abra esse arquivo para vê-la), e a esfera é mostrada até lá
 mesh-missing-kept = A malha { $path } está faltando ou não pode ser lida ({ $error }); a cena é mantida e mostrada na esfera. Abra a malha de novo para vê-la.
 shader = Programa de sombreamento (shader)
 
@@ -767,6 +770,9 @@ python-no-field-guess = { $what } não tem { $value }: você quis dizer { $guess
 python-no-field = { $what } não tem { $value }; seus nomes: { $names }
 python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz é adicionada ou removida em um arquivo de cena, que o Scene.load depois lê
 python-no-memory = memória insuficiente: não foi possível obter { $bytes } bytes; ilumine os vértices em blocos menores
+python-check-reassigned = Observação: { $name } é atribuído de novo em uma célula executada depois da que o imprime, então a autoverificação lê o valor que { $name } tem agora, não o impresso (o phonglab check lê o impresso). Use outro nome ali, ou execute as células em ordem de novo.
+python-overflow = { $step } dá { $value } em { $precision }: os números da cena passam do que o { $precision } guarda (float32: ±3,4e38), por isso a iluminação estoura; nada é retornado (precision="f64" guarda mais)
+python-render-no-memory = memória insuficiente para desenhar uma imagem de { $size } x { $size }: ela precisa de cerca de { $bytes }, o dobro é pedido antes, e não foi possível obtê-lo; escolha um tamanho menor
 python-not-finite-row = { $name }: a linha { $row } é { $value }: todos os números precisam ser finitos e estar dentro do intervalo do float32 (±3,4e38)
 python-wrong-shape = { $name }: um array de formato { $shape }, quando se espera (N, 3), com o mesmo N para as posições e as normais
 nb-self-check = Autoverificação: com o pacote Python phonglab instalado (ainda não está no PyPI: instale o arquivo wheel, `pip install phonglab-*.whl`, que o `scripts/wheel` do phonglab gera ou que o professor distribui), descomente a célula abaixo e execute-a depois das outras. Ela compara cada valor que este notebook calculou com o gabarito, passo a passo, e aponta o primeiro passo errado e a causa provável. Nada mais neste notebook depende dela.

@@ -38,6 +38,9 @@ share-too-long = o link tem { $length } caracteres; o phonglab lê no máximo { 
 share-version = o link é da versão “{ $found }”; este phonglab lê a v{ $version }
 share-damaged = o link está danificado ({ $what }): foi cortado ou alterado
 share-choice = o link pede algo que este phonglab não conhece: “{ $line }”
+share-too-big = descomprimida, passa de { $most } bytes, mais do que o phonglab lê (mais do que qualquer cena que o phonglab escreve)
+share-make-too-long = a ligação teria { $length } caracteres, e o phonglab abre ligações de no máximo { $most }: encurte o nome da cena
+share-mesh-folders = a ligação nomeia a malha “{ $path }” com as suas pastas; uma ligação leva só o nome do ficheiro da malha, e o phonglab nunca lê um caminho que uma ligação nomeie: fica só o nome { $name } (abra esse ficheiro para a ver), e a esfera é mostrada até lá
 mesh-missing-kept = A malha { $path } falta ou não pode ser lida ({ $error }); a cena fica e é mostrada na esfera. Abra a malha de novo para a ver.
 shader = Programa de sombreamento (shader)
 
@@ -767,6 +770,9 @@ python-no-field-guess = { $what } não tem { $value }: quis dizer { $guess }? Os
 python-no-field = { $what } não tem { $value }; os seus nomes: { $names }
 python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz acrescenta-se ou retira-se num ficheiro de cena, que o Scene.load depois lê
 python-no-memory = memória insuficiente: não foi possível obter { $bytes } bytes; ilumine os vértices em blocos mais pequenos
+python-check-reassigned = Nota: { $name } volta a ser atribuído numa célula corrida depois da que o imprime, por isso a autoverificação lê o valor que { $name } tem agora, não o impresso (o phonglab check lê o impresso). Use lá outro nome, ou volte a correr as células por ordem.
+python-overflow = { $step } dá { $value } em { $precision }: os números da cena passam do que o { $precision } guarda (float32: ±3,4e38), por isso a iluminação transborda; nada é devolvido (precision="f64" guarda mais)
+python-render-no-memory = memória insuficiente para desenhar uma imagem de { $size } x { $size }: precisa de cerca de { $bytes }, pede-se primeiro o dobro, e não foi possível obtê-lo; escolha um tamanho mais pequeno
 python-not-finite-row = { $name }: a linha { $row } é { $value }: todos os números têm de ser finitos e estar dentro do alcance do float32 (±3,4e38)
 python-wrong-shape = { $name }: uma matriz de forma { $shape }, quando se espera (N, 3), com o mesmo N para as posições e as normais
 nb-self-check = Autoverificação: com o pacote Python phonglab instalado (ainda não está no PyPI: instale o ficheiro wheel, `pip install phonglab-*.whl`, que o `scripts/wheel` do phonglab constrói ou que o professor distribui), retire o comentário da célula abaixo e execute-a depois das outras. Compara cada valor que este caderno calculou com a solução, passo a passo, e indica o primeiro passo errado e a causa provável. Nada mais neste caderno depende dela.

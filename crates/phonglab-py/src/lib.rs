@@ -208,7 +208,10 @@ impl PyScene {
     #[staticmethod]
     fn import_file(path: std::path::PathBuf) -> PyResult<(Self, Vec<String>)> {
         let imported = files::import(&path).map_err(scene_error)?;
-        Ok((PyScene { doc: imported.doc }, imported.notices))
+        // Said as `phonglab import` says them: a control character (an escape sequence, a
+        // bell, a direction override) quoted from the file written visibly, `\u{1B}`.
+        let notices = imported.notices.iter().map(|n| phonglab_core::escape::terminal::lines(n)).collect();
+        Ok((PyScene { doc: imported.doc }, notices))
     }
 
     /// Writes the scene file at `path` as the app's Save does: whole or not at all (a
@@ -245,7 +248,10 @@ impl PyScene {
     #[staticmethod]
     fn from_notebook(text: &str, notebook: bool, name: &str) -> PyResult<(Self, Vec<String>)> {
         let imported = phonglab_core::export::read_python::read(text, notebook, name).map_err(scene_error)?;
-        Ok((PyScene { doc: imported.doc }, imported.notices))
+        // Said as `phonglab import` says them: a control character (an escape sequence, a
+        // bell, a direction override) quoted from the file written visibly, `\u{1B}`.
+        let notices = imported.notices.iter().map(|n| phonglab_core::escape::terminal::lines(n)).collect();
+        Ok((PyScene { doc: imported.doc }, notices))
     }
 
     /// The scene file's text (TOML), every value explicit.
@@ -317,6 +323,7 @@ type StepRow = (String, String, String, Option<Vec<f64>>, Option<usize>, String)
 fn steps_of<S: Real>(scene: &Scene) -> PyResult<(Vec<StepRow>, String, String)> {
     let lit = Engine::<S>::light_scene_vertex(scene).map_err(scene_error)?;
     let ex = explain(scene, &lit, Side::Front);
+    finite_or_refused::<S>(scene, &ex)?;
     let rows = ex.steps.iter().map(|s| {
         let shown = s.value.as_deref().map(|v| phonglab_core::explain::fmt_value(v, 8)).unwrap_or_default();
         (s.name.clone(), s.title.clone(), s.formula.clone(), s.value.clone(), s.light, shown)
@@ -336,9 +343,34 @@ fn light(scene: &PyScene, precision: &str, lang: &str) -> PyResult<(Vec<StepRow>
     })
 }
 
+/// Refuses a worked calculation in f32 with a step that overflowed (a legal scene of very
+/// large colours, say, past float32's ±3.4e38): a value infinite or NaN in f32 where the
+/// same step is finite in f64 (a vertex at infinity stays explained, as in f64), the step
+/// and its value named, never an infinity handed on as a result.
+fn finite_or_refused<S>(scene: &Scene, ex: &phonglab_core::explain::Explanation) -> PyResult<()> {
+    if size_of::<S>() != 4 {
+        return Ok(());
+    }
+    let lit = Engine::<f64>::light_scene_vertex(scene).map_err(scene_error)?;
+    let wide = explain(scene, &lit, Side::Front);
+    let overflowed =
+        |narrow: &[f64], wide: &[f64]| narrow.iter().zip(wide).any(|(n, w)| !n.is_finite() && w.is_finite());
+    let bad = ex.steps.iter().zip(&wide.steps).find_map(|(s, w)| {
+        let (v, vw) = (s.value.as_deref()?, w.value.as_deref()?);
+        overflowed(v, vw).then(|| (s.name.clone(), phonglab_core::explain::fmt_value(v, 8)))
+    });
+    match bad {
+        None => Ok(()),
+        Some((step, value)) => {
+            Err(scene_error(phonglab_core::t!("python-overflow", step = step, value = value, precision = "f32")))
+        }
+    }
+}
+
 fn tables_of<S: Real>(scene: &Scene) -> PyResult<(String, String, String)> {
     let lit = Engine::<S>::light_scene_vertex(scene).map_err(scene_error)?;
     let ex = explain(scene, &lit, Side::Front);
+    finite_or_refused::<S>(scene, &ex)?;
     Ok((ex.to_text(8), ex.to_markdown(8), phonglab_core::formats::explain_html::explanation_html(&ex, 8)))
 }
 
@@ -383,6 +415,33 @@ fn try_vec<T: Clone>(n: usize, value: T) -> PyResult<Vec<T>> {
     Ok(v)
 }
 
+/// What `render` allocates at its peak for a `size` x `size` picture of `mesh`: the
+/// command line's estimate for `phonglab render` (its memory budget: 16 bytes a pixel, 120
+/// a vertex, 200 a triangle) and the picture handed to Python twice (its copy out of the
+/// renderer and the `bytes`: 8 bytes a pixel).
+fn render_bytes(size: usize, mesh: &phonglab_core::mesh::Mesh) -> u64 {
+    let (pixels, vertices, triangles) =
+        ((size * size) as u64, mesh.positions.len() as u64, mesh.triangle_count() as u64);
+    pixels * (16 + 8) + vertices * (96 + 24) + triangles * (188 + 12)
+}
+
+/// Refuses, before drawing, a render whose memory cannot be had: twice its estimate
+/// ([`render_bytes`]; the renderer's threads and the allocator's rounding come on top) is
+/// asked for and given back at once, and where it cannot be had the answer is Python's
+/// `MemoryError` with the estimate, never an abort of the process half-way.
+fn memory_for_render(size: usize, mesh: &phonglab_core::mesh::Mesh) -> PyResult<()> {
+    let needed = render_bytes(size, mesh);
+    let mut probe: Vec<u8> = Vec::new();
+    let asked = usize::try_from(needed.saturating_mul(2)).unwrap_or(usize::MAX);
+    probe.try_reserve_exact(asked).map_err(|_| {
+        PyMemoryError::new_err(phonglab_core::t!(
+            "python-render-no-memory",
+            size = size as i64,
+            bytes = phonglab_core::mesh::obj::describe_bytes(needed)
+        ))
+    })
+}
+
 /// Little-endian f32 triples as vectors, refused where a number is not finite (NaN, an
 /// infinity, or a float64 beyond float32's range that became one): `name` and the row.
 fn vectors(name: &str, bytes: &[u8]) -> PyResult<Vec<glam::Vec3>> {
@@ -425,6 +484,16 @@ fn light_many<'py>(
     let mut front = try_vec(p.len(), [0f32; 4])?;
     py.detach(|| lighter.light_batch_sum(&p, &n, &mut front, None));
     drop((p, n));
+    // A colour past float32's range (a legal scene of very large colours): refused, its row named.
+    if let Some(row) = front.iter().position(|c| c.iter().any(|x| !x.is_finite())) {
+        let value = format!("{:?}", front[row]);
+        return Err(scene_error(phonglab_core::t!(
+            "python-overflow",
+            step = format!("row {row}"),
+            value = value,
+            precision = "f32"
+        )));
+    }
     // Written straight into the bytes object Python receives.
     PyBytes::new_with(py, front.len() * 16, |out| {
         for (chunk, x) in out.chunks_exact_mut(4).zip(front.iter().flatten()) {
@@ -480,8 +549,9 @@ fn render<'py>(
 ) -> PyResult<(Bound<'py, PyBytes>, usize, usize)> {
     let size = picture_size(size)?;
     let doc = view_doc(scene, object, shading)?;
+    let mesh = doc.view.mesh();
+    memory_for_render(size, &mesh)?;
     let image = py.detach(move || {
-        let mesh = doc.view.mesh();
         let setup = doc.shaded_setup(PowFn::Exact);
         let mut r = Renderer::new();
         r.render(&setup.job(&mesh), size, size).map(|(img, _)| (img.rgba.clone(), img.width, img.height))
@@ -608,6 +678,17 @@ fn check_refusal(why: &str, lang: &str) -> PyResult<String> {
     })
 }
 
+/// A note the self-check adds under its table, in `lang`: `why` names it ("reassigned":
+/// the step `name` was assigned again after the cell that prints it).
+#[pyfunction]
+#[pyo3(signature = (why, name, lang="en"))]
+fn check_note(why: &str, name: &str, lang: &str) -> PyResult<String> {
+    with_locale(locale_of(lang)?, || match why {
+        "reassigned" => Ok(phonglab_core::t!("python-check-reassigned", name = name)),
+        other => Err(unknown("why=", other, "reassigned")),
+    })
+}
+
 /// A refusal the package's Python side makes (a value of the wrong kind), in the current
 /// language: `kind` names the message; `what` the argument or field, `value` what was given
 /// (Python's `repr`), `names` what is taken, `guess` the likeliest name meant (or "").
@@ -658,5 +739,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(check_steps, m)?)?;
     m.add_function(wrap_pyfunction!(explain_tables, m)?)?;
     m.add_function(wrap_pyfunction!(check_refusal, m)?)?;
+    m.add_function(wrap_pyfunction!(check_note, m)?)?;
     Ok(())
 }

@@ -679,6 +679,17 @@ mod tests {
     }
 
     #[test]
+    fn nan_and_infinity_as_numpy_math_and_float_write_them_are_refused_naming_the_given() {
+        let text = "lightPos = np.array([0, 0, np.nan, 1])\nmatDif = float('nan')\nvertexPos = np.array([math.inf, 0, 0, 1])\nmatAmb = np.array([float(\"0.25\"), 0, 0, 1])\n";
+        let r = script(text).unwrap();
+        let notices = r.notices.join("\n");
+        assert!(notices.contains("line 1: lightPos is NaN, not a finite number"), "{notices}");
+        assert!(notices.contains("line 2: matDif is NaN, not a finite number"), "{notices}");
+        assert!(notices.contains("line 3: vertexPos is Infinity, not a finite number"), "{notices}");
+        assert_eq!(r.doc.scene.material.ambient.x, 0.25, "float(\"0.25\") is the number");
+    }
+
+    #[test]
     fn a_given_that_is_not_finite_is_refused_naming_it() {
         let text = "vertexPos = np.array([1e999, 0, 0, 1])\nlightPos = np.array([0/0, 0, 90, 1])\nmatDif = np.array([0.5, 0.5, 0.5, 1])\nns = -1e999\n";
         let r = script(text).unwrap();

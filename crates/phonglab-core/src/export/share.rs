@@ -41,12 +41,15 @@ pub struct Shared {
     /// link carries the mesh's file name, never the mesh): the scene is opened on the
     /// sphere, and the file must be opened to show it. Not written.
     pub missing_mesh: Option<String>,
+    /// Read from a link: why [`Shared::missing_mesh`] was not read (the file not here, or a
+    /// link that named folders, which phonglab never follows). Not written.
+    pub mesh_note: Option<String>,
 }
 
 impl Shared {
     /// A link's contents: `doc` with none of the window's choices.
     pub fn of(doc: Document) -> Shared {
-        Shared { doc, lang: None, present: false, channel: None, missing_mesh: None }
+        Shared { doc, lang: None, present: false, channel: None, missing_mesh: None, mesh_note: None }
     }
 }
 
@@ -65,6 +68,12 @@ pub enum ShareError {
     /// A header line this build does not know, or a bad value.
     #[error("{}", crate::t!("share-choice", line = .0.clone()))]
     Choice(String),
+    /// Inflating past its limit ([`MAX_INFLATED`] bytes for a link's scene).
+    #[error("{}", crate::t!("share-too-big", most = *.0 as i64))]
+    TooBig(usize),
+    /// Longer than a link phonglab reads: [`MAX_FRAGMENT`] (made, never opened).
+    #[error("{}", crate::t!("share-make-too-long", length = *.0 as i64, most = MAX_FRAGMENT as i64))]
+    MakeTooLong(usize),
     /// The scene itself is refused (the scene file's message).
     #[error("{0}")]
     Scene(String),
@@ -95,7 +104,12 @@ pub fn encode(s: &Shared) -> Result<String, ShareError> {
     }
     payload.push('\n');
     payload.push_str(&toml);
-    Ok(format!("v{VERSION}.{}", pack(payload.as_bytes(), 9)))
+    let fragment = format!("v{VERSION}.{}", pack(payload.as_bytes(), 9));
+    // A link no phonglab would open is not made (a very long name, say).
+    if fragment.len() > MAX_FRAGMENT {
+        return Err(ShareError::MakeTooLong(fragment.len()));
+    }
+    Ok(fragment)
 }
 
 /// What the fragment `fragment` (with or without its `#`) carries.
@@ -131,14 +145,51 @@ pub fn decode(fragment: &str) -> Result<Shared, ShareError> {
             _ => return Err(bad()),
         }
     }
+    // A mesh named with folders is never read: only its file name is kept.
+    let (toml, folders) = mesh_by_name_alone(toml);
     // Read and validated as a scene file is (a mesh that is not here aside).
     let (doc, missing) =
-        Document::from_toml_keeping_missing_mesh(toml, None).map_err(|e| ShareError::Scene(e.to_string()))?;
-    if missing.is_some() {
+        Document::from_toml_keeping_missing_mesh(&toml, None).map_err(|e| ShareError::Scene(e.to_string()))?;
+    if let Some((path, shown_obj)) = folders {
+        if shown_obj {
+            out.missing_mesh.clone_from(&doc.view.obj);
+        }
+        let name = doc.view.obj.clone().unwrap_or_default();
+        out.mesh_note = Some(crate::t!("share-mesh-folders", path = path, name = name));
+    } else if let Some(note) = missing {
         out.missing_mesh.clone_from(&doc.view.obj);
+        out.mesh_note = Some(note);
     }
     out.doc = doc;
     Ok(out)
+}
+
+/// The scene's TOML with a mesh path that names folders (`../x.obj`, `/home/x.obj`,
+/// `a\x.obj`) cut to its file name, the object shown being the sphere if it was that
+/// mesh; and that path (printable) and whether the mesh was the object shown. A link
+/// carries a file name alone: phonglab never reads a path a link names.
+fn mesh_by_name_alone(toml: &str) -> (std::borrow::Cow<'_, str>, Option<(String, bool)>) {
+    let Ok(mut table) = toml.parse::<toml::Table>() else { return (toml.into(), None) };
+    let Some(view) = table.get_mut("view").and_then(toml::Value::as_table_mut) else { return (toml.into(), None) };
+    let Some(obj) = view.get("obj").and_then(toml::Value::as_str).map(str::to_string) else {
+        return (toml.into(), None);
+    };
+    let name = obj.rsplit(['/', '\\']).next().unwrap_or_default().to_string();
+    if name == obj && name != "." && name != ".." {
+        return (toml.into(), None);
+    }
+    let shown_obj = view.get("object").and_then(toml::Value::as_str) == Some("obj");
+    if shown_obj {
+        view.insert("object".into(), toml::Value::String("sphere".into()));
+    }
+    if name.is_empty() || name == "." || name == ".." {
+        view.remove("obj");
+    } else {
+        view.insert("obj".into(), toml::Value::String(name));
+    }
+    let text = toml::to_string(&table).unwrap_or_default();
+    let shown = crate::formats::escape::terminal::text(&obj.chars().take(120).collect::<String>());
+    (text.into(), Some((shown, shown_obj)))
 }
 
 /// Refuses a page a link cannot open on: not an `http://` or `https://` address (a
@@ -148,7 +199,9 @@ pub fn check_base(base: &str) -> Result<(), String> {
     let lower = base.to_ascii_lowercase();
     let scheme = lower.starts_with("http://") || lower.starts_with("https://");
     let plain = !base.chars().any(|c| crate::formats::escape::is_control(c) || c.is_whitespace() || c == '"');
-    if scheme && plain && base.len() > "https://".len() {
+    // A host after the scheme (`https:///` has none: no browser opens it).
+    let host = base.split_once("://").map(|(_, rest)| rest.split(['/', '?', '#']).next().unwrap_or_default());
+    if scheme && plain && host.is_some_and(|h| !h.is_empty()) {
         return Ok(());
     }
     let shown: String = base.chars().take(80).collect();
@@ -174,8 +227,23 @@ fn pack(bytes: &[u8], level: u8) -> String {
 
 /// What [`pack_bytes`] (or a link's payload) packed, refused when it is damaged or inflates
 /// past `limit` bytes.
+///
+/// Bytes after the end of the deflated stream are refused too: the link was changed.
 pub fn unpack_bytes(text: &str, limit: usize) -> Result<Vec<u8>, ShareError> {
+    use miniz_oxide::inflate::stream::{InflateState, inflate};
+    use miniz_oxide::{DataFormat, MZFlush, MZStatus};
     let deflated = URL_SAFE_NO_PAD.decode(text).map_err(|e| ShareError::Damaged(e.to_string()))?;
-    miniz_oxide::inflate::decompress_to_vec_with_limit(&deflated, limit)
-        .map_err(|e| ShareError::Damaged(format!("{:?}", e.status)))
+    let mut state = InflateState::new_boxed(DataFormat::Raw);
+    // One byte more than the limit: a payload that fills it inflates past the limit.
+    let mut out = vec![0u8; limit + 1];
+    let r = inflate(&mut state, &deflated, &mut out, MZFlush::Finish);
+    match r.status {
+        Ok(MZStatus::StreamEnd) if r.bytes_written <= limit && r.bytes_consumed == deflated.len() => {
+            out.truncate(r.bytes_written);
+            Ok(out)
+        }
+        Ok(MZStatus::StreamEnd) if r.bytes_written <= limit => Err(ShareError::Damaged("trailing data".into())),
+        _ if r.bytes_written > limit => Err(ShareError::TooBig(limit)),
+        _ => Err(ShareError::Damaged("deflate".into())),
+    }
 }

@@ -123,17 +123,39 @@ def _numbers(value: Any, what: str = "value") -> List[float]:
     if isinstance(value, np.ndarray):
         if value.dtype.kind not in "iuf":
             raise _refuse("not-real", what, value)
-        return [float(x) for x in value.reshape(-1)]
+        # A plain array of the values held (a 1x4 np.matrix, a subclass: their numbers).
+        return [float(x) for x in np.asarray(value).astype(np.float64).reshape(-1).tolist()]
     items = list(value) if isinstance(value, (list, tuple)) else [value]
     flat: List[Any] = []
     for x in items:
         if isinstance(x, (list, tuple, np.ndarray)):
             flat += _numbers(x, what)
         elif _is_real(x):
-            flat.append(float(x))
+            flat.append(_value_of(x))
         else:
             raise _refuse("not-real", what, value)
     return flat
+
+
+def _nested(value: Any) -> bool:
+    """Does `value` hold a list in a list (or an array of two dimensions or more)?"""
+    if isinstance(value, np.ndarray):
+        return value.ndim > 1
+    return isinstance(value, (list, tuple)) and any(isinstance(x, (list, tuple, np.ndarray)) for x in value)
+
+
+def _value_of(x: Any) -> float:
+    """The number `x` holds and prints, as a float: a float's (or int's) own value, never
+    what a subclass's __float__ says; an int beyond a float's range is the infinity of its
+    sign (refused as not finite by the scene's check, never an OverflowError)."""
+    if isinstance(x, float):
+        return float.__float__(x)
+    if isinstance(x, np.generic):
+        return float(np.asarray(x).astype(np.float64))
+    try:
+        return float(int.__int__(x))
+    except OverflowError:
+        return float("inf") if int.__int__(x) > 0 else float("-inf")
 
 
 def _integer(value: Any, what: str) -> int:
@@ -181,7 +203,11 @@ class _Fields:
     def __setattr__(self, name: str, value: Any) -> None:
         if name not in self._names:
             raise _unknown_name(self._shown(), name, list(self._names))
-        self._scene._inner.set(self._prefix + name, _numbers(value, f"{self._shown()}.{name}"))
+        shown = f"{self._shown()}.{name}"
+        # One number is one number: not a nested list ([[25.6]]) nor an array of several dimensions.
+        if name in _SCALARS and _nested(value):
+            raise _refuse("not-real", shown, value)
+        self._scene._inner.set(self._prefix + name, _numbers(value, shown))
 
     def _shown(self) -> str:
         """This part as Python names it: lights[0], material, vertex."""
@@ -311,8 +337,11 @@ class Scene:
         return self._inner.to_toml()
 
     def copy(self) -> "Scene":
-        """An independent copy."""
-        return Scene.from_toml(self.to_toml())
+        """An independent copy, keeping where the scene came from: its save never writes
+        over the notebook or script it was imported from either."""
+        scene = Scene(self._inner.__copy__())
+        scene._code = self._code
+        return scene
 
     @property
     def name(self) -> str:

@@ -74,6 +74,10 @@ def _text(value: Any) -> str:
     that is not numbers) where it has none or too many."""
     if isinstance(value, (str, bytes, bool, np.bool_, complex, np.complexfloating)):
         return _UNREAD
+    # A complex array (`Idif + 1j`) is no real value: never its real part alone.
+    if isinstance(value, np.ndarray) and value.dtype.kind not in "iuf":
+        return _UNREAD
+    value = _own(value)
     size = value.size if isinstance(value, np.ndarray) else len(value) if isinstance(value, (list, tuple)) else 1
     if size > _MOST_NUMBERS:
         return _UNREAD
@@ -95,6 +99,16 @@ def _text(value: Any) -> str:
         return str(np.float32(x)) if numbers.dtype == np.float32 else repr(float(x))
     with np.printoptions(**_DEFAULT_PRINT):
         return np.array2string(numbers, max_line_width=10**6, separator=" ").replace("\n", " ")
+
+
+def _own(value: Any) -> Any:
+    """A number's own value, as it prints: a float's (or int's) subclass read as the float
+    (or int) it holds, never through a __float__ of its own that says another number."""
+    if isinstance(value, float) and not isinstance(value, np.floating):
+        return float.__float__(value)
+    if isinstance(value, int) and not isinstance(value, (bool, np.integer)):
+        return int.__int__(value)
+    return value
 
 
 def _value(namespace: Dict[str, Any], step: str) -> Optional[Any]:
@@ -172,4 +186,32 @@ def check(namespace: Dict[str, Any], lang: str = "en") -> bool:
     steps = _printing_order(run, _core.check_steps(code, lang))
     text, right = _core.check_work(code, printed(namespace, steps), lang)
     print(text, end="")
+    for name in _reassigned(run, steps):
+        print(_core.check_note("reassigned", name, lang))
     return right
+
+
+def _reassigned(cells: List[str], steps: List[str]) -> List[str]:
+    """The steps' names assigned again (`I = …`, `for I in …`) in a cell run after the last
+    cell that prints them: the value read now is not the one printed, which is what
+    `phonglab check` reads from the saved notebook."""
+    names = []
+    for step in steps:
+        match = _STEP.match(step)
+        base = match.group(1) if match else step
+        if base in names:
+            continue
+        label = re.compile(r"[\"']" + re.escape(base) + r"(\[[^\]]*\])?\s*=")
+        printing = [k for k, cell in enumerate(cells) if label.search(cell)]
+        if not printing:
+            continue
+        name = re.escape(base)
+        again = re.compile(
+            r"^[ \t]*(?:for\s+(?:[\w\s,()]*?\b)?" + name + r"\b[\w\s,()]*?\bin\b|"
+            + name + r"\s*(?:\[[^\]]*\])?\s*(?:[-+*/@]|\*\*)?=(?!=))",
+            re.M,
+        )
+        later = _code(cells[printing[-1] + 1 :])
+        if again.search("\n".join(line.split("#", 1)[0] for line in later.split("\n"))):
+            names.append(base)
+    return names

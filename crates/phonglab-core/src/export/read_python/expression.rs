@@ -295,8 +295,20 @@ impl Parser<'_> {
                 self.expect("(")?;
                 let v = self.expr()?;
                 self.expect(")")?;
-                Ok(v)
+                // `float("nan")`, `float('inf')`: the number (refused later as not finite).
+                match v {
+                    Value::Str(s) if token != "np.array" && token != "numpy.array" => s
+                        .trim()
+                        .to_ascii_lowercase()
+                        .parse::<f64>()
+                        .map(Value::Num)
+                        .map_err(|_| t!("import-reason-number", token = quoted_line(&s)).into()),
+                    v => Ok(v),
+                }
             }
+            // Not a finite number: read, so that a given holding one is refused, naming it.
+            "np.nan" | "np.NaN" | "np.NAN" | "numpy.nan" | "math.nan" | "m.nan" => Ok(Value::Num(f64::NAN)),
+            "np.inf" | "np.Inf" | "np.infty" | "numpy.inf" | "math.inf" | "m.inf" => Ok(Value::Num(f64::INFINITY)),
             "True" => Ok(Value::Bool(true)),
             "False" => Ok(Value::Bool(false)),
             "m.pi" | "math.pi" | "np.pi" => Ok(Value::Num(std::f64::consts::PI)),
