@@ -95,3 +95,26 @@ fn help_in_portuguese_has_no_english_sentence() {
     let text = help("C.UTF-8", &["render", "-h"]);
     assert!(text.contains("Usage: phonglab render") && text.contains("[values: sphere, teapot, cylinder]"), "{text}");
 }
+
+/// `phonglab --version` prints the crate's version and the commit the binary was built from:
+/// the repository's HEAD where git is there (as here, when the tests run from a clone), else
+/// "unknown".
+#[test]
+fn version_names_the_version_and_the_commit() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_phonglab"))
+        .env("LC_ALL", "C.UTF-8")
+        .arg("--version")
+        .output()
+        .expect("the binary runs");
+    assert!(out.status.success(), "{out:?}");
+    let text = String::from_utf8(out.stdout).expect("UTF-8");
+    let head = std::process::Command::new("git")
+        .args(["-C", env!("CARGO_MANIFEST_DIR"), "rev-parse", "--short", "HEAD"])
+        .output()
+        .ok()
+        .filter(|o| o.status.success())
+        .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string());
+    let commit = head.unwrap_or_else(|| "unknown".to_string());
+    assert_eq!(text, format!("phonglab {} ({commit})\n", env!("CARGO_PKG_VERSION")));
+    assert_eq!(phonglab::cli::VERSION, format!("{} ({commit})", env!("CARGO_PKG_VERSION")));
+}

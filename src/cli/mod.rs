@@ -29,10 +29,14 @@ use clap::{Parser, Subcommand};
 
 use crate::t;
 
+/// What `phonglab --version` prints after the name: the crate's version and the commit it
+/// was built from (`git rev-parse --short HEAD` at build time; "unknown" without git).
+pub const VERSION: &str = concat!(env!("CARGO_PKG_VERSION"), " (", env!("PHONGLAB_COMMIT"), ")");
+
 /// phonglab: OpenGL's fixed-function vertex lighting, step by step. Without a subcommand it
 /// opens the explorer window on the worksheet's scene.
 #[derive(Parser, Debug)]
-#[command(name = "phonglab", version, about)]
+#[command(name = "phonglab", version = VERSION, about)]
 pub struct Cli {
     /// What to do; omit to open the app.
     #[command(subcommand)]

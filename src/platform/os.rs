@@ -2,6 +2,7 @@
 //! reported, syncing a folder's entries to the disk, and hearing the signals that end the
 //! process.
 
+#[cfg(unix)]
 use std::fs::File;
 use std::io;
 use std::path::Path;
