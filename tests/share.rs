@@ -384,6 +384,30 @@ fn a_link_is_a_scene_wherever_a_scene_file_is_taken_and_its_page_is_http() {
     }
 }
 
+/// A damaged link is said in the user's words, one word for "link" a language, never the
+/// decoder's own text (`Invalid last symbol`, `FailedCannotMakeProgress`).
+#[test]
+fn a_damaged_link_is_said_in_the_users_language_without_decoder_words() {
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let out = phonglab(&["share", scene.to_str().unwrap()]);
+    let link = String::from_utf8(out.stdout).unwrap().trim().to_string();
+    let garbage = "https://phonglab.github.io/phonglab/#v1.garbage".to_string();
+    for (lang, damaged) in [
+        ("en_GB.UTF-8", "the link is damaged: it was cut or changed"),
+        ("pt_PT.UTF-8", "a ligação está danificada: foi cortada ou alterada"),
+        ("pt_BR.UTF-8", "o link está danificado: foi cortado ou alterado"),
+    ] {
+        for bad in [garbage.clone(), link[..200].to_string()] {
+            let o = common::phonglab_in(lang, &["explain", &bad]);
+            let said = String::from_utf8_lossy(&o.stderr);
+            assert!(!o.status.success() && said.contains(damaged), "{lang}: {said}");
+            for jargon in ["Invalid", "symbol", "offset", "Failed", "Progress", "UTF-8", "("] {
+                assert!(!said.contains(jargon), "{lang}: {jargon} in {said}");
+            }
+        }
+    }
+}
+
 /// The desktop app started on a link (`phonglab LINK`) opens the scene and the choices it
 /// carries; a cut link opens the worksheet and says why.
 #[test]

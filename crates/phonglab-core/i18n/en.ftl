@@ -36,8 +36,10 @@ wrong-key-term = The term that changes most at this pixel: { $term } ({ $name })
 wrong-key-normals = The fragment’s normal turns by { $degrees }°.
 share-too-long = the link is { $length } characters long; phonglab reads at most { $most }
 share-version = the link is of version “{ $found }”; this phonglab reads v{ $version }
-share-damaged = the link is damaged ({ $what }): it was cut or changed
+share-damaged = the link is damaged: it was cut or changed on the way. Copy the whole link again, from its start to its last character
 share-choice = the link asks for something this phonglab does not know: “{ $line }”
+scene-link-refused = { $link }: { $why }
+scene-link-empty = the link holds no scene (a shared scene's link ends in #v1. and the scene's data): copy the whole link
 mesh-missing-kept = The mesh { $path } is missing or cannot be read ({ $error }); the scene is kept and shown on the sphere. Open the mesh again to show it.
 shader = Shader
 

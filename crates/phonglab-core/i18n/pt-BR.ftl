@@ -36,8 +36,10 @@ wrong-key-term = O termo que mais muda neste pixel: { $term } ({ $name }), com a
 wrong-key-normals = A normal do fragmento gira { $degrees }°.
 share-too-long = o link tem { $length } caracteres; o phonglab lê no máximo { $most }
 share-version = o link é da versão “{ $found }”; este phonglab lê a v{ $version }
-share-damaged = o link está danificado ({ $what }): foi cortado ou alterado
+share-damaged = o link está danificado: foi cortado ou alterado no caminho. Copie de novo o link inteiro, do início ao último caractere
 share-choice = o link pede algo que este phonglab não conhece: “{ $line }”
+scene-link-refused = { $link }: { $why }
+scene-link-empty = o link não contém nenhuma cena (o link de uma cena compartilhada termina em #v1. e nos dados da cena): copie o link inteiro
 mesh-missing-kept = A malha { $path } está faltando ou não pode ser lida ({ $error }); a cena é mantida e mostrada na esfera. Abra a malha de novo para vê-la.
 shader = Programa de sombreamento (shader)
 

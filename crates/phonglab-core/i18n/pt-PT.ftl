@@ -34,10 +34,12 @@ wrong-key-right = desenhada certa: { $line }
 wrong-key-wrong = com o erro: { $line }
 wrong-key-term = O termo que mais muda neste píxel: { $term } ({ $name }), com a luminância a passar de { $right } na imagem certa para { $wrong } na imagem com o erro.
 wrong-key-normals = A normal do fragmento roda { $degrees }°.
-share-too-long = o link tem { $length } caracteres; o phonglab lê no máximo { $most }
-share-version = o link é da versão “{ $found }”; este phonglab lê a v{ $version }
-share-damaged = o link está danificado ({ $what }): foi cortado ou alterado
-share-choice = o link pede algo que este phonglab não conhece: “{ $line }”
+share-too-long = a ligação tem { $length } caracteres; o phonglab lê no máximo { $most }
+share-version = a ligação é da versão “{ $found }”; este phonglab lê a v{ $version }
+share-damaged = a ligação está danificada: foi cortada ou alterada pelo caminho. Copie de novo a ligação inteira, do início ao último carácter
+share-choice = a ligação pede algo que este phonglab não conhece: “{ $line }”
+scene-link-refused = { $link }: { $why }
+scene-link-empty = a ligação não contém nenhuma cena (a ligação de uma cena partilhada termina em #v1. e nos dados da cena): copie a ligação inteira
 mesh-missing-kept = A malha { $path } falta ou não pode ser lida ({ $error }); a cena fica e é mostrada na esfera. Abra a malha de novo para a ver.
 shader = Programa de sombreamento (shader)
 

@@ -180,3 +180,39 @@ def test_save_refuses_the_notebook_the_scene_was_imported_from(tmp_path, cli):
         scene.save(path)
     assert path.read_bytes() == before
     scene.save(tmp_path / "hw.toml")
+
+
+def test_a_share_link_loads_as_the_scene_it_carries():
+    # N1: a link is taken wherever a scene file is, decoded as the command line decodes it.
+    s = phonglab.Scene.worksheet(5)
+    s.material.shininess = 77.0
+    link = phonglab.share_link(s)
+    read = phonglab.Scene.load(link)
+    assert read.material.shininess == 77.0
+    assert read.to_toml() == s.to_toml()
+    assert phonglab.light(read).I.tolist() == phonglab.light(s).I.tolist()
+
+
+@pytest.mark.parametrize(
+    "lang, damaged",
+    [
+        ("en", "the link is damaged: it was cut or changed"),
+        ("pt-PT", "a ligação está danificada: foi cortada ou alterada"),
+        ("pt-BR", "o link está danificado: foi cortado ou alterado"),
+    ],
+)
+def test_a_damaged_link_is_said_in_words_not_the_decoders(lang, damaged):
+    # N1, N2: a cut or garbled link says it is damaged, never "it does not exist", and
+    # carries no decoder text.
+    link = phonglab.share_link(phonglab.Scene.worksheet(5))
+    try:
+        phonglab.set_language(lang)
+        for bad in [link[:200], "https://phonglab.github.io/phonglab/#v1.garbage"]:
+            with pytest.raises(phonglab.SceneError) as e:
+                phonglab.Scene.load(bad)
+            said = str(e.value)
+            assert damaged in said, said
+            for jargon in ["does not exist", "Invalid", "offset", "Failed", "Progress", "("]:
+                assert jargon not in said, said
+    finally:
+        phonglab.set_language("en")
