@@ -669,6 +669,7 @@ check-cause-normal-by-modelview = the normal transformed by the modelview M inst
 check-cause-normal-not-normalised = the normal not normalised after its transform
 check-cause-light-not-transformed = the light's position not transformed by the modelview (left in object space)
 check-cause-light-transformed-twice = the light's position transformed by the modelview twice
+check-cause-vectors-cell-run-twice = the normal looks transformed twice, and the vertex and the light with it: the cell that transforms them was run twice. Restart & Run All (Jupyter: Kernel → Restart & Run All)
 check-cause-vlv-reversed = vlv reversed: from the light to the vertex instead of from the vertex to the light
 check-cause-vlv-not-normalised = vlv not normalised
 check-cause-directional-as-point = a directional light (w = 0) treated as a point

@@ -669,6 +669,7 @@ check-cause-normal-by-modelview = a normal transformada pela modelview M em vez 
 check-cause-normal-not-normalised = a normal não normalizada depois de transformada
 check-cause-light-not-transformed = a posição da luz não transformada pela modelview (ficou no espaço do objeto)
 check-cause-light-transformed-twice = a posição da luz transformada duas vezes pela modelview
+check-cause-vectors-cell-run-twice = a normal parece transformada duas vezes, e o vértice e a luz com ela: a célula que os transforma foi executada duas vezes. Reinicie e execute tudo (Jupyter: Kernel → Restart & Run All)
 check-cause-vlv-reversed = vlv ao contrário: da luz para o vértice em vez do vértice para a luz
 check-cause-vlv-not-normalised = vlv não normalizado
 check-cause-directional-as-point = uma luz direcional (w = 0) tratada como pontual

@@ -308,3 +308,16 @@ def test_the_mistakes_formula_is_labelled_as_a_model_not_the_students_code(cells
     formulas = [line.strip() for line in lines if line.strip().startswith(label)]
     assert formulas, text
     assert formulas[0] == label + "# vlv = vlv/np.linalg.norm(vlv)", text
+
+
+def test_the_vectors_cell_run_twice_is_named_with_what_to_do(cells):
+    # N9: a correct notebook whose vectors cell ran twice: named, with Restart & Run All.
+    k = next(i for i, c in enumerate(cells) if VECTORS in c)
+    right, text = run(cells[: k + 1] + [cells[k]] + cells[k + 1 :])
+    assert not right
+    assert "likely cause: the normal looks transformed twice" in text, text
+    assert "[vectors-cell-run-twice]" in text and "Restart & Run All" in text, text
+    assert "no mistake in the catalogue" not in text, text
+    # A normal transformed twice alone (not the whole cell) is not this cause.
+    right, text = run(mistaken(cells, "vertexNormal = np.matmul(mview, vertexNormal)", "vertexNormal = np.matmul(mview, np.matmul(mview, vertexNormal))"))
+    assert not right and "[vectors-cell-run-twice]" not in text, text
