@@ -494,6 +494,11 @@ toml-unknown-field = unknown field { $field }, expected one of { $known }
 toml-did-you-mean = did you mean { $field }?
 toml-missing-field = missing field { $field }
 toml-invalid-type = invalid type: { $found }, expected { $expected }
+toml-kind-number = a number
+toml-kind-number-value = the number { $value }
+toml-kind-text = the text { $value }
+toml-kind-a-text = a text (in quotes)
+toml-kind-boolean = true or false
 toml-camera-takes = { $field }: a camera of kind = "{ $kind }" takes { $keys }
 toml-camera-needs = camera: kind = "{ $kind }" needs { $keys }
 toml-unknown-material = { $field }: unknown material { $name }; the classic materials are { $names }
@@ -771,6 +776,7 @@ python-not-integer = { $what } = { $value }: not a whole number; give an int, su
 python-not-a-scene = { $what }: { $value } is not a phonglab.Scene; make one first: phonglab.Scene.load("scene.toml"), phonglab.Scene.worksheet(5) or phonglab.Scene.preset("phong-demo")
 python-not-a-name = { $what } = { $value }: not a text; give a str, such as scene.name = "mview3's camera"
 python-edit-fields = { $what } is not replaced whole: edit its fields one by one, as { $example }
+python-load-notebook = { $path } is a notebook or a script, not a scene file: read the scene it sets up with phonglab.Scene.from_notebook(path)
 python-no-field-guess = { $what } has no { $value }: did you mean { $guess }? Its names: { $names }
 python-no-field = { $what } has no { $value }; its names: { $names }
 python-lights-fixed = scene.lights has no { $value }: the lights are the scene's, edited here field by field (scene.lights[0].position = ...); a light is added or removed in a scene file, which Scene.load then reads

@@ -494,6 +494,11 @@ toml-unknown-field = campo desconhecido { $field }; os campos aceitos são { $kn
 toml-did-you-mean = você quis dizer { $field }?
 toml-missing-field = falta o campo { $field }
 toml-invalid-type = tipo inválido: { $found }, esperava-se { $expected }
+toml-kind-number = um número
+toml-kind-number-value = o número { $value }
+toml-kind-text = o texto { $value }
+toml-kind-a-text = um texto (entre aspas)
+toml-kind-boolean = true ou false
 toml-camera-takes = { $field }: uma câmera do tipo kind = "{ $kind }" aceita { $keys }
 toml-camera-needs = camera: kind = "{ $kind }" precisa de { $keys }
 toml-unknown-material = { $field }: material desconhecido { $name }; os materiais clássicos são { $names }
@@ -771,6 +776,7 @@ python-not-integer = { $what } = { $value }: não é um número inteiro; informe
 python-not-a-scene = { $what }: { $value } não é uma phonglab.Scene; crie uma antes: phonglab.Scene.load("cena.toml"), phonglab.Scene.worksheet(5) ou phonglab.Scene.preset("phong-demo")
 python-not-a-name = { $what } = { $value }: não é um texto; passe uma str, como scene.name = "câmera da mview3"
 python-edit-fields = { $what } não é substituído por inteiro: edite os campos dele um por um, como { $example }
+python-load-notebook = { $path } é um notebook ou um script, não um arquivo de cena: leia a cena que ele define com phonglab.Scene.from_notebook(caminho)
 python-no-field-guess = { $what } não tem { $value }: você quis dizer { $guess }? Seus nomes: { $names }
 python-no-field = { $what } não tem { $value }; seus nomes: { $names }
 python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz é adicionada ou removida em um arquivo de cena, que o Scene.load depois lê

@@ -494,6 +494,11 @@ toml-unknown-field = campo desconhecido { $field }; os campos aceites são { $kn
 toml-did-you-mean = queria dizer { $field }?
 toml-missing-field = falta o campo { $field }
 toml-invalid-type = tipo inválido: { $found }, esperava-se { $expected }
+toml-kind-number = um número
+toml-kind-number-value = o número { $value }
+toml-kind-text = o texto { $value }
+toml-kind-a-text = um texto (entre aspas)
+toml-kind-boolean = true ou false
 toml-camera-takes = { $field }: uma câmara do tipo kind = "{ $kind }" aceita { $keys }
 toml-camera-needs = camera: kind = "{ $kind }" precisa de { $keys }
 toml-unknown-material = { $field }: material desconhecido { $name }; os materiais clássicos são { $names }
@@ -771,6 +776,7 @@ python-not-integer = { $what } = { $value }: não é um número inteiro; dê um 
 python-not-a-scene = { $what }: { $value } não é uma phonglab.Scene; crie uma primeiro: phonglab.Scene.load("cena.toml"), phonglab.Scene.worksheet(5) ou phonglab.Scene.preset("phong-demo")
 python-not-a-name = { $what } = { $value }: não é um texto; dê uma str, como scene.name = "câmara da mview3"
 python-edit-fields = { $what } não se substitui por inteiro: edite os seus campos um a um, como { $example }
+python-load-notebook = { $path } é um caderno ou um script, não um ficheiro de cena: leia a cena que ele define com phonglab.Scene.from_notebook(caminho)
 python-no-field-guess = { $what } não tem { $value }: quis dizer { $guess }? Os seus nomes: { $names }
 python-no-field = { $what } não tem { $value }; os seus nomes: { $names }
 python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz acrescenta-se ou retira-se num ficheiro de cena, que o Scene.load depois lê

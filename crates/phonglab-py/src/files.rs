@@ -17,6 +17,10 @@ pub fn load(path: &Path) -> Result<Document, String> {
     if let Some(link) = path.to_str().filter(|p| phonglab_core::export::share::link_fragment(p).is_some()) {
         return phonglab_core::export::share::read_link(link).map(|s| s.doc);
     }
+    // A notebook or a script is not TOML: said so, never as the TOML parser's complaint.
+    if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("ipynb") || e.eq_ignore_ascii_case("py")) {
+        return Err(phonglab_core::t!("python-load-notebook", path = reasons::shown(path)));
+    }
     let text = read::read_text_capped(path, read::MAX_SCENE_BYTES, &phonglab_core::t!("file-kind-scenes"))?;
     // The mesh a scene names is found from the scene's folder, made absolute: a notebook
     // may change its working folder before it renders the mesh.

@@ -132,7 +132,13 @@ fn wrong_length(field: &str, count: usize, expected: &str) -> PyErr {
         "position" | "light(vertex=)" => phonglab_core::t!("python-hint-vertex"),
         _ => String::new(),
     };
-    scene_error(phonglab_core::t!("python-wrong-length", field = field, count = count, expected = expected, hint = hint))
+    scene_error(phonglab_core::t!(
+        "python-wrong-length",
+        field = field,
+        count = count,
+        expected = expected,
+        hint = hint
+    ))
 }
 
 /// "3 or 4", in the current language: what a vertex position takes.

@@ -216,3 +216,29 @@ def test_a_damaged_link_is_said_in_words_not_the_decoders(lang, damaged):
                 assert jargon not in said, said
     finally:
         phonglab.set_language("en")
+
+
+def test_english_left_in_portuguese_messages_is_gone(tmp_path):
+    # N4: a notebook given to Scene.load; a text where a number is; an infinity.
+    notebook = tmp_path / "hw.ipynb"
+    notebook.write_text('{"cells": []}')
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[material]\nshininess = "abc"\n')
+    try:
+        phonglab.set_language("pt-PT")
+        with pytest.raises(phonglab.SceneError) as e:
+            phonglab.Scene.load(notebook)
+        said = str(e.value)
+        assert "é um caderno ou um script, não um ficheiro de cena" in said and "Scene.from_notebook" in said, said
+        assert "invalid" not in said and "expected" not in said, said
+        with pytest.raises(phonglab.SceneError) as e:
+            phonglab.Scene.load(bad)
+        said = str(e.value)
+        assert 'tipo inválido: o texto "abc", esperava-se um número' in said, said
+        assert "f64" not in said and "string" not in said, said
+    finally:
+        phonglab.set_language("en")
+    lit = phonglab.light(phonglab.Scene.worksheet(5), vertex=[1, 2, 3, 0], lang="pt-BR")
+    for shown in (lit.explain(), lit._repr_html_(), lit._repr_markdown_()):
+        assert "Infinity" not in shown
+    assert "d = inf" in lit.explain(), lit.explain()
