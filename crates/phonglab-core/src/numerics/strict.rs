@@ -75,7 +75,11 @@ fn kind_in_words(kind: &str) -> String {
     let numbers = ["f64", "f32", "i64", "i32", "u64", "u32", "u16", "u8", "usize", "a number"];
     if numbers.contains(&kind) || kind.starts_with("integer `") || kind.starts_with("floating point `") {
         let value = kind.split('`').nth(1).unwrap_or("");
-        return if value.is_empty() { crate::t!("toml-kind-number") } else { crate::t!("toml-kind-number-value", value = value) };
+        return if value.is_empty() {
+            crate::t!("toml-kind-number")
+        } else {
+            crate::t!("toml-kind-number-value", value = value)
+        };
     }
     if let Some(text) = kind.strip_prefix("string ") {
         return crate::t!("toml-kind-text", value = text);
@@ -211,8 +215,14 @@ mod tests {
         );
         assert_eq!(pt("missing field `kind`"), "falta o campo `kind`");
         // serde's Rust words (`f64`, `string`) said as kinds a student knows.
-        assert_eq!(pt("invalid type: string \"a\", expected f64"), "tipo inválido: o texto \"a\", esperava-se um número");
-        assert_eq!(pt("invalid type: boolean `true`, expected a string"), "tipo inválido: true ou false, esperava-se um texto (entre aspas)");
+        assert_eq!(
+            pt("invalid type: string \"a\", expected f64"),
+            "tipo inválido: o texto \"a\", esperava-se um número"
+        );
+        assert_eq!(
+            pt("invalid type: boolean `true`, expected a string"),
+            "tipo inválido: true ou false, esperava-se um texto (entre aspas)"
+        );
         assert_eq!(with_locale(Locale::of(Lang::PtBr), || place("a\nbc", 3).0), "linha 2, coluna 2");
     }
 

@@ -78,9 +78,12 @@ _F = TypeVar("_F", bound=Callable[..., Any])
 
 
 def _refusals_here(function: _F) -> _F:
-    """Raises a SceneError from `function` as if from the caller's line: the traceback ends
-    at the call the user wrote, not inside the package's wrappers (the message says what
-    was wrong; the frames of the package would only hide it)."""
+    """Raises a SceneError from `function` with the package's inner frames cut: the
+    traceback shows the call the user wrote, then this wrapper's one line, never the
+    frames inside (the message says what was wrong; they would only hide it). The line of
+    this wrapper stays: Python records every Python frame an exception leaves, the one
+    that raises it included, so only a function written in C (or Rust) could raise with
+    no frame of its own; IPython's `__tracebackhide__` never hides the last frame either."""
 
     @functools.wraps(function)
     def wrapper(*args: Any, **kwargs: Any) -> Any:
@@ -382,8 +385,9 @@ class Lighting:
     """The worked calculation of one vertex, as computed when it was made (a later change
     to the scene does not change it). Each step is an attribute under the worksheet's name
     (vertexNormal, vlv, vov, H, cosTheta, cosBeta, Iamb, Idif, Ispec, at, spot, I)
-    holding a NumPy array (4 components, or 1 for a scalar), or None where the step does
-    not apply. With several lights, a light's step is a list with one value per light, as
+    holding a NumPy array of 4 components, or a NumPy float64 for a scalar step (cosTheta,
+    cosBeta, d, at, spot: printed as the worksheet prints it, 0.13925483), or None where
+    the step does not apply. With several lights, a light's step is a list with one value per light, as
     the worksheet's notebook holds it (lit.vlv[0] is light 0's vlv), and .per_light[k]
     holds light k's steps by their names (lit.per_light[0]["vlv"]).
 
@@ -395,11 +399,12 @@ class Lighting:
         self._text, self._markdown = text, markdown
         # The scene as it was: explain() and the displays show this calculation.
         self._scene, self._precision, self._lang = Scene(scene._inner.__copy__()), precision, lang
-        self.per_light: Dict[int, Dict[str, Optional[np.ndarray]]] = {}
+        self.per_light: Dict[int, Dict[str, Any]] = {}
         self.steps: Dict[str, Any] = {}
         lights = 1 + max((light for *_, light, _shown in rows if light is not None), default=0)
         for name, _title, _formula, value, light, _shown in rows:
-            array = None if value is None else np.array(value)
+            # A scalar step (cosTheta, d, at, spot) as the worksheet prints it: a float64.
+            array = None if value is None else np.float64(value[0]) if len(value) == 1 else np.array(value)
             self.steps.setdefault(name, array)
             if light is None:
                 continue
