@@ -408,6 +408,32 @@ fn a_damaged_link_is_said_in_the_users_language_without_decoder_words() {
     }
 }
 
+/// `phonglab screenshot --scene LINK` draws the window as started on the link: its
+/// language and presenting taken, not only its scene (N11).
+#[test]
+fn a_screenshot_of_a_link_takes_its_language_and_presenting() {
+    use phonglab::app::shell::screenshot::{Shot, state_of};
+    let doc = Document { name: "ruby".into(), ..Default::default() };
+    let shared = Shared { lang: Some("pt-PT".into()), present: true, ..Shared::of(doc) };
+    let url = share::link("https://example.org/phonglab/", &shared).unwrap();
+    let shot = |scene: &str| Shot {
+        size: (1024, 600),
+        scale: 1.0,
+        present: false,
+        light: false,
+        scene: Some(scene.into()),
+        open: None,
+        output: "unused.png".into(),
+    };
+    let state = state_of(&shot(&url)).unwrap();
+    assert_eq!(state.doc.name, "ruby");
+    assert_eq!(state.ui.layout.language.as_deref(), Some("pt-PT"));
+    assert!(state.ui.layout.presenting);
+    let plain = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let state = state_of(&shot(plain.to_str().unwrap())).unwrap();
+    assert!(!state.ui.layout.presenting && state.ui.layout.language.is_none());
+}
+
 /// The desktop app started on a link (`phonglab LINK`) opens the scene and the choices it
 /// carries; a cut link opens the worksheet and says why.
 #[test]
