@@ -995,6 +995,3 @@ student-picture-theirs = B: the student's picture
 check-report-printed-twice = Steps printed more than once with different values (each printing was checked)
 # fixr3
 student-cause-beside = likely cause: { $words } [{ $id }] (the evidence is above the steps)
-# py58b: a shared link where a scene file is taken
-scene-link-refused = { $link }: { $why }
-scene-link-empty = the link holds no scene (a shared scene's link ends in #v1. and the scene's data): copy the whole link

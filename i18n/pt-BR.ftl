@@ -995,6 +995,3 @@ student-picture-theirs = B: a imagem do aluno
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
 # fixr3
 student-cause-beside = causa provável: { $words } [{ $id }] (a evidência está acima dos passos)
-# py58b: a shared link where a scene file is taken
-scene-link-refused = { $link }: { $why }
-scene-link-empty = o link não contém nenhuma cena (o link de uma cena compartilhada termina em #v1. e nos dados da cena): copie o link inteiro

@@ -214,6 +214,24 @@ fn cases() -> Vec<Case> {
                 "lightPos = np.matmul(mview, np.matmul(mview, lightPos))\n",
             )],
         ),
+        (
+            "vectors-cell-run-twice",
+            worksheet(),
+            vec![
+                (
+                    "vertexNormal = np.matmul(mview, vertexNormal)\n",
+                    "vertexNormal = np.matmul(mview, np.matmul(mview, vertexNormal))\n",
+                ),
+                (
+                    "vertexPos = np.matmul(mview, vertexPos)\n",
+                    "vertexPos = np.matmul(mview, np.matmul(mview, vertexPos))\n",
+                ),
+                (
+                    "lightPos = np.matmul(mview, lightPos)\n",
+                    "lightPos = np.matmul(mview, np.matmul(mview, lightPos))\n",
+                ),
+            ],
+        ),
         ("vlv-reversed", worksheet(), vec![("vlv = (lightPos - vertexPos)", "vlv = (vertexPos - lightPos)")]),
         ("vlv-not-normalised", worksheet(), vec![("vlv = vlv/np.linalg.norm(vlv)\n", "")]),
         (

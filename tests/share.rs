@@ -388,6 +388,56 @@ fn a_link_is_a_scene_wherever_a_scene_file_is_taken_and_its_page_is_http() {
     }
 }
 
+/// A damaged link is said in the user's words, one word for "link" a language, never the
+/// decoder's own text (`Invalid last symbol`, `FailedCannotMakeProgress`).
+#[test]
+fn a_damaged_link_is_said_in_the_users_language_without_decoder_words() {
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let out = phonglab(&["share", scene.to_str().unwrap()]);
+    let link = String::from_utf8(out.stdout).unwrap().trim().to_string();
+    let garbage = "https://phonglab.github.io/phonglab/#v1.garbage".to_string();
+    for (lang, damaged) in [
+        ("en_GB.UTF-8", "the link is damaged: it was cut or changed"),
+        ("pt_PT.UTF-8", "a ligação está danificada: foi cortada ou alterada"),
+        ("pt_BR.UTF-8", "o link está danificado: foi cortado ou alterado"),
+    ] {
+        for bad in [garbage.clone(), link[..200].to_string()] {
+            let o = common::phonglab_in(lang, &["explain", &bad]);
+            let said = String::from_utf8_lossy(&o.stderr);
+            assert!(!o.status.success() && said.contains(damaged), "{lang}: {said}");
+            for jargon in ["Invalid", "symbol", "offset", "Failed", "Progress", "UTF-8", "("] {
+                assert!(!said.contains(jargon), "{lang}: {jargon} in {said}");
+            }
+        }
+    }
+}
+
+/// `phonglab screenshot --scene LINK` draws the window as started on the link: its
+/// language and presenting taken, not only its scene (N11).
+#[test]
+fn a_screenshot_of_a_link_takes_its_language_and_presenting() {
+    use phonglab::app::shell::screenshot::{Shot, state_of};
+    let doc = Document { name: "ruby".into(), ..Default::default() };
+    let shared = Shared { lang: Some("pt-PT".into()), present: true, ..Shared::of(doc) };
+    let url = share::link("https://example.org/phonglab/", &shared).unwrap();
+    let shot = |scene: &str| Shot {
+        size: (1024, 600),
+        scale: 1.0,
+        present: false,
+        light: false,
+        scene: Some(scene.into()),
+        open: None,
+        output: "unused.png".into(),
+    };
+    let state = state_of(&shot(&url)).unwrap();
+    assert_eq!(state.doc.name, "ruby");
+    assert_eq!(state.ui.layout.language.as_deref(), Some("pt-PT"));
+    assert!(state.ui.layout.presenting);
+    let plain = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let state = state_of(&shot(plain.to_str().unwrap())).unwrap();
+    assert!(!state.ui.layout.presenting && state.ui.layout.language.is_none());
+}
+
 /// The desktop app started on a link (`phonglab LINK`) opens the scene and the choices it
 /// carries; a cut link opens the worksheet and says why.
 #[test]

@@ -117,6 +117,7 @@ mod tests {
             causes: Vec::new(),
             errors: Vec::new(),
             unreadable: Vec::new(),
+            missing: Vec::new(),
         };
         let names = phonglab_core::study::check::said::input_names(&c);
         assert_eq!(names, format!("lightPos, {}", t!("check-input-rules")));

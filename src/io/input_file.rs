@@ -48,41 +48,30 @@ pub fn is_obj_name(name: &str) -> bool {
 }
 
 /// A shared scene's link given where a scene file is taken (`https://…/#v1.…`): what
-/// follows its `#` (empty where it has none). `None` for a path.
+/// follows its `#` (empty where it has none). `None` for a path. The core's
+/// [`phonglab_core::export::share::link_fragment`].
 pub fn share_fragment(path: &Path) -> Option<&str> {
-    let text = path.to_str()?;
-    let lower = text.get(..8)?.to_ascii_lowercase();
-    if !(lower.starts_with("http://") || lower.starts_with("https://")) {
-        return None;
-    }
-    Some(text.split_once('#').map_or("", |(_, f)| f))
+    phonglab_core::export::share::link_fragment(path.to_str()?)
 }
 
 /// The scene a shared link carries, decoded as the browser build decodes it (bounded:
 /// [`phonglab_core::export::share::MAX_FRAGMENT`]), or why not, naming the link.
-pub fn load_link(link: &str, fragment: &str) -> Result<phonglab_core::Document, String> {
-    read_link(link, fragment).map(|s| s.doc)
+pub fn load_link(link: &str) -> Result<phonglab_core::Document, String> {
+    read_link(link).map(|s| s.doc)
 }
 
-/// What a shared link carries (its scene and the window's choices), read as
-/// [`load_link`] reads it.
-pub fn read_link(link: &str, fragment: &str) -> Result<phonglab_core::export::share::Shared, String> {
-    // Its page and the start of its data: the whole link is kilobytes.
-    let shown: String = phonglab_core::escape::terminal::text(&link.chars().take(48).collect::<String>());
-    let shown = if link.chars().count() > 48 { format!("{shown}…") } else { shown };
-    if fragment.is_empty() {
-        return Err(t!("scene-link-refused", link = shown, why = t!("scene-link-empty")));
-    }
-    phonglab_core::export::share::decode(fragment)
-        .map_err(|e| t!("scene-link-refused", link = shown, why = e.to_string()))
+/// What a shared link carries (its scene and the window's choices), read as the core's
+/// [`phonglab_core::export::share::read_link`] reads it (the Python package too).
+pub fn read_link(link: &str) -> Result<phonglab_core::export::share::Shared, String> {
+    phonglab_core::export::share::read_link(link)
 }
 
 /// Reads and checks a scene file (a relative mesh path is taken from its folder: the
 /// core's [`phonglab_core::files::read::load_scene`]), or the scene a shared link carries
 /// ([`share_fragment`]); an error names the file or the link.
 pub fn load_scene(path: &Path) -> Result<phonglab_core::Document, String> {
-    if let Some(fragment) = share_fragment(path) {
-        let shared = read_link(&path.to_string_lossy(), fragment)?;
+    if share_fragment(path).is_some() {
+        let shared = read_link(&path.to_string_lossy())?;
         // A mesh the link's scene shows and that is not read here: said, and the sphere shown.
         if let Some(note) = &shared.mesh_note {
             eprintln!("phonglab: {}", phonglab_core::escape::terminal::lines(note));

@@ -36,8 +36,10 @@ wrong-key-term = The term that changes most at this pixel: { $term } ({ $name })
 wrong-key-normals = The fragment’s normal turns by { $degrees }°.
 share-too-long = the link is { $length } characters long; phonglab reads at most { $most }
 share-version = the link is of version “{ $found }”; this phonglab reads v{ $version }
-share-damaged = the link is damaged ({ $what }): it was cut or changed
+share-damaged = the link is damaged: it was cut or changed on the way. Copy the whole link again, from its start to its last character
 share-choice = the link asks for something this phonglab does not know: “{ $line }”
+scene-link-refused = { $link }: { $why }
+scene-link-empty = the link holds no scene (a shared scene's link ends in #v1. and the scene's data): copy the whole link
 share-too-big = it inflates past { $most } bytes, more than phonglab reads (more than any scene phonglab writes)
 share-make-too-long = the link would be { $length } characters long, and phonglab opens links of at most { $most }: shorten the scene's name
 share-mesh-folders = the link names the mesh “{ $path }” with its folders; a link carries a mesh's file name alone, and phonglab never reads a path a link names: only the file name { $name } is kept (open that file to show it), and the sphere is shown until then
@@ -495,6 +497,11 @@ toml-unknown-field = unknown field { $field }, expected one of { $known }
 toml-did-you-mean = did you mean { $field }?
 toml-missing-field = missing field { $field }
 toml-invalid-type = invalid type: { $found }, expected { $expected }
+toml-kind-number = a number
+toml-kind-number-value = the number { $value }
+toml-kind-text = the text { $value }
+toml-kind-a-text = a text (in quotes)
+toml-kind-boolean = true or false
 toml-camera-takes = { $field }: a camera of kind = "{ $kind }" takes { $keys }
 toml-camera-needs = camera: kind = "{ $kind }" needs { $keys }
 toml-unknown-material = { $field }: unknown material { $name }; the classic materials are { $names }
@@ -676,6 +683,7 @@ check-cause-normal-by-modelview = the normal transformed by the modelview M inst
 check-cause-normal-not-normalised = the normal not normalised after its transform
 check-cause-light-not-transformed = the light's position not transformed by the modelview (left in object space)
 check-cause-light-transformed-twice = the light's position transformed by the modelview twice
+check-cause-vectors-cell-run-twice = the normal looks transformed twice, and the vertex and the light with it: the cell that transforms them was run twice. Restart & Run All (Jupyter: Kernel → Restart & Run All)
 check-cause-vlv-reversed = vlv reversed: from the light to the vertex instead of from the vertex to the light
 check-cause-vlv-not-normalised = vlv not normalised
 check-cause-directional-as-point = a directional light (w = 0) treated as a point
@@ -753,12 +761,21 @@ check-cause-attenuation-inverted = the attenuation inverted (at = 1/(...)) and t
 check-run-stopped = not checked: the run stopped with an error before the end: { $error }
 check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)
 check-unreadable-steps = not checked whole: these steps were printed with values that are not numbers as NumPy or Python prints them ({ $names }); print each value alone
+check-missing-steps = not checked: the notebook holds no value for { $names }: a cell was skipped or stopped with an error. Run every cell (Jupyter: Kernel → Restart & Run All), then this one
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) draws the shading this program was written for (Gouraud: the vertices' colours interpolated; Phong: each pixel lit). With GL_FLAT the shaders draw what fixed-function OpenGL draws: each face in the colour lit at its provoking vertex (a triangle’s or a quad’s last vertex).
 py-two-side-program-comment = Lets the fragment shader’s gl_Color be the back colour on a triangle’s back side, as fixed-function GL chooses it; the shaders use it under glShadeModel(GL_FLAT).
 # phonglab-py: the Python package
 python-unknown-value = { $what }{ $value }: the values it takes are { $names }
-python-wrong-length = { $field }: { $count } numbers given, { $expected } expected
+python-wrong-length = { $field }: { $count ->
+        [one] 1 number given
+       *[other] { $count } numbers given
+    }, { $expected } expected{ $hint }
+python-hint-alpha = ; a colour is r, g, b, a: add its alpha, as [0.8, 0.2, 0.2, 1]
+python-hint-w = ; a light's position is x, y, z, w: w = 1 for a light at a point, 0 for a light far away in that direction, as [0, 0, 90, 1]
+python-hint-normal = ; a normal is a direction: x, y, z, or the worksheet's x, y, z, 0 (its w is 0)
+python-hint-vertex = ; a vertex is x, y, z (its w is then 1) or x, y, z, w
+python-either-3-or-4 = 3 or 4
 python-no-such-light = there is no light { $light }: the scene has { $count ->
         [one] 1 light, numbered 0
        *[other] { $count } lights, numbered from 0
@@ -766,6 +783,9 @@ python-no-such-light = there is no light { $light }: the scene has { $count ->
 python-not-real = { $what } = { $value }: not a number. Give real numbers: an int or a float, or a list or NumPy array of them (a text, True or False, None and complex numbers are not read as numbers; in Python write 25.6, not "25,6")
 python-not-integer = { $what } = { $value }: not a whole number; give an int, such as 5
 python-not-a-scene = { $what }: { $value } is not a phonglab.Scene; make one first: phonglab.Scene.load("scene.toml"), phonglab.Scene.worksheet(5) or phonglab.Scene.preset("phong-demo")
+python-not-a-name = { $what } = { $value }: not a text; give a str, such as scene.name = "mview3's camera"
+python-edit-fields = { $what } is not replaced whole: edit its fields one by one, as { $example }
+python-load-notebook = { $path } is a notebook or a script, not a scene file: read the scene it sets up with phonglab.Scene.from_notebook(path)
 python-no-field-guess = { $what } has no { $value }: did you mean { $guess }? Its names: { $names }
 python-no-field = { $what } has no { $value }; its names: { $names }
 python-lights-fixed = scene.lights has no { $value }: the lights are the scene's, edited here field by field (scene.lights[0].position = ...); a light is added or removed in a scene file, which Scene.load then reads
@@ -782,6 +802,7 @@ check-step = { $step }: yours { $student }, the key's { $key }: { $verdict }
 check-first-wrong = first wrong step: { $step } (yours { $student }, the key's { $key })
 check-all-right = all right: every step printed is the key's
 check-cause = likely cause: { $words } [{ $id }]. Evidence: for { $step }, you printed { $student }, and the key with this mistake gives { $value }
+check-cause-formula = the formula with this mistake (a model of it, not your code): { $formula }
 check-no-cause = no mistake in the catalogue reproduces everything you printed; look at the first wrong step
 check-given-not-finite = not checked: a given is not a finite number ({ $givens })
 check-printed-twice = printed more than once, with different values (each printing is checked): { $names }
@@ -790,6 +811,7 @@ check-given-not-followed = not checked: a given is changed in place, which the c
 # py58b: the notebook's self-check, the worked calculation's table
 python-check-no-cells = phonglab.check(globals()) checks a Jupyter notebook: it reads the cells run so far from the notebook's In, and this Python has none. For a script, save what it prints and check that: python3 script.py > printed.txt, then phonglab check --printed printed.txt
 python-check-run-first = nothing to check yet: none of the worksheet's cells has run in this kernel (after a restart, too). Run the other cells first (Run All), then this one
+python-check-not-globals = phonglab.check reads the notebook's variables: pass globals(), with its brackets: phonglab.check(globals())
 explain-column-step = step
 explain-column-formula = formula
 explain-column-value = value

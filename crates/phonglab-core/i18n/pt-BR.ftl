@@ -36,8 +36,10 @@ wrong-key-term = O termo que mais muda neste pixel: { $term } ({ $name }), com a
 wrong-key-normals = A normal do fragmento gira { $degrees }°.
 share-too-long = o link tem { $length } caracteres; o phonglab lê no máximo { $most }
 share-version = o link é da versão “{ $found }”; este phonglab lê a v{ $version }
-share-damaged = o link está danificado ({ $what }): foi cortado ou alterado
+share-damaged = o link está danificado: foi cortado ou alterado no caminho. Copie de novo o link inteiro, do início ao último caractere
 share-choice = o link pede algo que este phonglab não conhece: “{ $line }”
+scene-link-refused = { $link }: { $why }
+scene-link-empty = o link não contém nenhuma cena (o link de uma cena compartilhada termina em #v1. e nos dados da cena): copie o link inteiro
 share-too-big = descompactada, passa de { $most } bytes, mais do que o phonglab lê (mais do que qualquer cena que o phonglab escreve)
 share-make-too-long = o link teria { $length } caracteres, e o phonglab abre links de no máximo { $most }: encurte o nome da cena
 share-mesh-folders = o link nomeia a malha “{ $path }” com as pastas dela; um link leva só o nome do arquivo da malha, e o phonglab nunca lê um caminho que um link nomeie: fica só o nome { $name } (abra esse arquivo para vê-la), e a esfera é mostrada até lá
@@ -495,6 +497,11 @@ toml-unknown-field = campo desconhecido { $field }; os campos aceitos são { $kn
 toml-did-you-mean = você quis dizer { $field }?
 toml-missing-field = falta o campo { $field }
 toml-invalid-type = tipo inválido: { $found }, esperava-se { $expected }
+toml-kind-number = um número
+toml-kind-number-value = o número { $value }
+toml-kind-text = o texto { $value }
+toml-kind-a-text = um texto (entre aspas)
+toml-kind-boolean = true ou false
 toml-camera-takes = { $field }: uma câmera do tipo kind = "{ $kind }" aceita { $keys }
 toml-camera-needs = camera: kind = "{ $kind }" precisa de { $keys }
 toml-unknown-material = { $field }: material desconhecido { $name }; os materiais clássicos são { $names }
@@ -676,6 +683,7 @@ check-cause-normal-by-modelview = a normal transformada pela modelview M em vez 
 check-cause-normal-not-normalised = a normal não normalizada depois de transformada
 check-cause-light-not-transformed = a posição da luz não transformada pela modelview (ficou no espaço do objeto)
 check-cause-light-transformed-twice = a posição da luz transformada duas vezes pela modelview
+check-cause-vectors-cell-run-twice = a normal parece transformada duas vezes, e o vértice e a luz junto: a célula que os transforma foi executada duas vezes. Reinicie e execute tudo (Jupyter: Kernel → Restart & Run All)
 check-cause-vlv-reversed = vlv invertido: da luz para o vértice em vez do vértice para a luz
 check-cause-vlv-not-normalised = vlv não normalizado
 check-cause-directional-as-point = uma luz direcional (w = 0) tratada como pontual
@@ -753,12 +761,21 @@ check-cause-attenuation-inverted = a atenuação invertida (at = 1/(...)) e depo
 check-run-stopped = não verificado: a execução parou com um erro antes do fim: { $error }
 check-nothing-compared = não verificado: nada do que você imprimiu é um passo da lista; imprima cada valor como a lista faz, print("vlv = ", vlv)
 check-unreadable-steps = não verificado por inteiro: estes passos foram impressos com valores que não são números como o NumPy ou o Python os imprimem ({ $names }); imprima cada valor sozinho
+check-missing-steps = não verificado: o notebook não tem valor para { $names }: uma célula não foi executada ou parou com um erro. Execute todas as células (Jupyter: Kernel → Restart & Run All) e depois esta
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) desenha o sombreamento para o qual este programa foi escrito (Gouraud: as cores dos vértices interpoladas; Phong: cada pixel iluminado). Com GL_FLAT, os shaders desenham o que o OpenGL de pipeline fixo desenha: cada face na cor calculada no seu vértice provocante (o último vértice de um triângulo ou de um quadrilátero).
 py-two-side-program-comment = Faz o gl_Color do fragment shader ser a cor de trás na face de trás de um triângulo, como o GL de pipeline fixo a escolhe; os shaders o usam com glShadeModel(GL_FLAT).
 # phonglab-py: the Python package
 python-unknown-value = { $what }{ $value }: os valores possíveis são { $names }
-python-wrong-length = { $field }: { $count } números informados, { $expected } esperados
+python-wrong-length = { $field }: { $count ->
+        [one] 1 número informado
+       *[other] { $count } números informados
+    }, { $expected } esperados{ $hint }
+python-hint-alpha = ; uma cor é r, g, b, a: acrescente o alfa, como [0.8, 0.2, 0.2, 1]
+python-hint-w = ; a posição de uma luz é x, y, z, w: w = 1 para uma luz em um ponto, 0 para uma luz muito distante nessa direção, como [0, 0, 90, 1]
+python-hint-normal = ; uma normal é uma direção: x, y, z, ou x, y, z, 0 como na lista (o w dela é 0)
+python-hint-vertex = ; um vértice é x, y, z (o w fica 1) ou x, y, z, w
+python-either-3-or-4 = 3 ou 4
 python-no-such-light = não existe a luz { $light }: a cena tem { $count ->
         [one] 1 luz, numerada 0
        *[other] { $count } luzes, numeradas a partir de 0
@@ -766,6 +783,9 @@ python-no-such-light = não existe a luz { $light }: a cena tem { $count ->
 python-not-real = { $what } = { $value }: não é um número. Informe números reais: um int ou um float, ou uma lista ou array NumPy deles (um texto, True ou False, None e números complexos não são lidos como números; em Python escreva 25.6, não "25,6")
 python-not-integer = { $what } = { $value }: não é um número inteiro; informe um int, por exemplo 5
 python-not-a-scene = { $what }: { $value } não é uma phonglab.Scene; crie uma antes: phonglab.Scene.load("cena.toml"), phonglab.Scene.worksheet(5) ou phonglab.Scene.preset("phong-demo")
+python-not-a-name = { $what } = { $value }: não é um texto; passe uma str, como scene.name = "câmera da mview3"
+python-edit-fields = { $what } não é substituído por inteiro: edite os campos dele um por um, como { $example }
+python-load-notebook = { $path } é um notebook ou um script, não um arquivo de cena: leia a cena que ele define com phonglab.Scene.from_notebook(caminho)
 python-no-field-guess = { $what } não tem { $value }: você quis dizer { $guess }? Seus nomes: { $names }
 python-no-field = { $what } não tem { $value }; seus nomes: { $names }
 python-lights-fixed = scene.lights não tem { $value }: as luzes são as da cena, editadas aqui campo a campo (scene.lights[0].position = ...); uma luz é adicionada ou removida em um arquivo de cena, que o Scene.load depois lê
@@ -782,6 +802,7 @@ check-step = { $step }: o seu { $student }, o do gabarito { $key }: { $verdict }
 check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o do gabarito { $key })
 check-all-right = tudo certo: todos os passos impressos são os do gabarito
 check-cause = causa provável: { $words } [{ $id }]. Evidência: em { $step }, você imprimiu { $student }, e o gabarito com esse erro dá { $value }
+check-cause-formula = a fórmula com esse erro (um modelo dele, não o seu código): { $formula }
 check-no-cause = nenhum erro do catálogo reproduz tudo o que você imprimiu; veja o primeiro passo errado
 check-given-not-finite = não verificado: um dado não é um número finito ({ $givens })
 check-printed-twice = impresso mais de uma vez, com valores diferentes (cada impressão é verificada): { $names }
@@ -790,6 +811,7 @@ check-given-not-followed = não verificado: um dado é alterado no próprio luga
 # py58b: the notebook's self-check, the worked calculation's table
 python-check-no-cells = phonglab.check(globals()) confere um notebook Jupyter: lê as células já executadas do In do notebook, e este Python não tem isso. Para um script, salve o que ele imprime e confira isso: python3 script.py > impresso.txt, depois phonglab check --printed impresso.txt
 python-check-run-first = ainda não há nada para conferir: nenhuma célula da lista foi executada neste kernel (também depois de reiniciá-lo). Execute antes as outras células (Run All) e depois esta
+python-check-not-globals = o phonglab.check lê as variáveis do notebook: passe globals(), com os parênteses: phonglab.check(globals())
 explain-column-step = passo
 explain-column-formula = fórmula
 explain-column-value = valor

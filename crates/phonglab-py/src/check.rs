@@ -32,11 +32,13 @@ pub fn steps(code: &str) -> Result<Vec<String>, String> {
 
 /// Checks the work whose code is `code` (the cells run, in order: the givens are read from
 /// it, nothing is run) and whose values are `printed` (`name = value` lines): the table
-/// and whether every step is right.
-pub fn check_work(code: &str, printed: &str) -> Result<(String, bool), String> {
+/// and whether every step is right. `missing` names the key's steps the notebook holds no
+/// value for (a cell skipped): then it is "not checked", never right.
+pub fn check_work(code: &str, printed: &str, missing: Vec<String>) -> Result<(String, bool), String> {
     let own = own_scene(code)?;
     let mut student = read_printed_text(printed).map_err(|e| e.to_string())?;
     student.code = code.to_string();
+    student.missing = missing;
     let c = check(&own, &own, &student);
     Ok((words(&c), c.right()))
 }

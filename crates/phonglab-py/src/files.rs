@@ -10,8 +10,17 @@ use phonglab_core::export::read_python::{self, Imported};
 use phonglab_core::files::{atomic_write, read, reasons, same_file};
 
 /// Reads the scene file at `path` as `phonglab explain FILE` does (a relative mesh path
-/// from its folder); an error names the file.
+/// from its folder), or the scene a shared link (`https://…/#v1.…`) given in its place
+/// carries, decoded by the core's bounded decoder as the command line decodes it; an error
+/// names the file or the link.
 pub fn load(path: &Path) -> Result<Document, String> {
+    if let Some(link) = path.to_str().filter(|p| phonglab_core::export::share::link_fragment(p).is_some()) {
+        return phonglab_core::export::share::read_link(link).map(|s| s.doc);
+    }
+    // A notebook or a script is not TOML: said so, never as the TOML parser's complaint.
+    if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("ipynb") || e.eq_ignore_ascii_case("py")) {
+        return Err(phonglab_core::t!("python-load-notebook", path = reasons::shown(path)));
+    }
     let text = read::read_text_capped(path, read::MAX_SCENE_BYTES, &phonglab_core::t!("file-kind-scenes"))?;
     // The mesh a scene names is found from the scene's folder, made absolute: a notebook
     // may change its working folder before it renders the mesh.

@@ -115,11 +115,35 @@ fn material_get(m: &Material, f: &str) -> PyResult<Vec<f64>> {
     })
 }
 
-/// `values` as `N` numbers, or the message naming `field`.
+/// `values` as `N` numbers, or the message naming `field`, with what such a field holds
+/// where one is often given short: a colour's alpha, a light position's w.
 fn exactly<const N: usize>(field: &str, values: &[f64]) -> PyResult<[f64; N]> {
-    values.try_into().map_err(|_| {
-        scene_error(phonglab_core::t!("python-wrong-length", field = field, count = values.len(), expected = N))
-    })
+    values.try_into().map_err(|_| wrong_length(field, values.len(), &N.to_string()))
+}
+
+/// `field`: `count` numbers given where `expected` are: the message, with a hint by the
+/// field's kind (a colour's alpha, a light position's w, a normal's or a vertex's parts).
+fn wrong_length(field: &str, count: usize, expected: &str) -> PyErr {
+    let part = field.rsplit('.').next().unwrap_or(field);
+    let hint = match part {
+        "ambient" | "diffuse" | "specular" | "emission" if count == 3 => phonglab_core::t!("python-hint-alpha"),
+        "position" if field.starts_with("lights") => phonglab_core::t!("python-hint-w"),
+        "normal" | "light(normal=)" => phonglab_core::t!("python-hint-normal"),
+        "position" | "light(vertex=)" => phonglab_core::t!("python-hint-vertex"),
+        _ => String::new(),
+    };
+    scene_error(phonglab_core::t!(
+        "python-wrong-length",
+        field = field,
+        count = count,
+        expected = expected,
+        hint = hint
+    ))
+}
+
+/// "3 or 4", in the current language: what a vertex position takes.
+fn either_3_or_4() -> String {
+    phonglab_core::t!("python-either-3-or-4")
 }
 
 /// Sets light field `f` to `x`; `name` is the field as Python names it (`lights[0].position`).
@@ -265,6 +289,17 @@ impl PyScene {
         self.doc.name.clone()
     }
 
+    /// Renames the scene (its title in explain, the window and a share link), checked as
+    /// a scene file's name is.
+    #[setter]
+    fn set_name(&mut self, name: &str) -> PyResult<()> {
+        let mut doc = self.doc.clone();
+        doc.name = name.to_string();
+        doc.validate().map_err(scene_error)?;
+        self.doc = doc;
+        Ok(())
+    }
+
     /// How many lights are enabled.
     fn light_count(&self) -> usize {
         self.doc.scene.lights.len()
@@ -283,8 +318,10 @@ impl PyScene {
     }
 
     /// Sets `path` to `values`, checked as the app checks an edit: a refused value raises
-    /// `SceneError` and leaves the scene as it was.
-    fn set(&mut self, path: &str, values: Vec<f64>) -> PyResult<()> {
+    /// `SceneError` and leaves the scene as it was. `shown` names the value in a message
+    /// where the user gave it otherwise (`light(normal=)`).
+    #[pyo3(signature = (path, values, shown=None))]
+    fn set(&mut self, path: &str, values: Vec<f64>, shown: Option<&str>) -> PyResult<()> {
         let mut doc = self.doc.clone();
         let s = &mut doc.scene;
         match parse_field(path)? {
@@ -294,11 +331,20 @@ impl PyScene {
             }
             Field::Material(f) => material_set(&mut s.material, f, &format!("material.{f}"), &values)?,
             // x, y, z alone: w = 1, as `light(scene, vertex=[x, y, z])` takes it.
-            Field::Vertex("position") if values.len() == 3 => {
-                s.vertex.position = DVec4::new(values[0], values[1], values[2], 1.0);
+            Field::Vertex("position") => {
+                s.vertex.position = match values[..] {
+                    [x, y, z] => DVec4::new(x, y, z, 1.0),
+                    [x, y, z, w] => DVec4::new(x, y, z, w),
+                    _ => return Err(wrong_length(shown.unwrap_or("vertex.position"), values.len(), &either_3_or_4())),
+                }
             }
-            Field::Vertex("position") => s.vertex.position = DVec4::from_array(exactly("vertex.position", &values)?),
-            Field::Vertex("normal") => s.vertex.normal = DVec3::from_array(exactly("vertex.normal", &values)?),
+            // The worksheet writes a normal as a direction, (x, y, z, 0): its w of 0 dropped.
+            Field::Vertex("normal") => {
+                s.vertex.normal = match values[..] {
+                    [x, y, z] | [x, y, z, 0.0] => DVec3::new(x, y, z),
+                    _ => return Err(wrong_length(shown.unwrap_or("vertex.normal"), values.len(), "3")),
+                }
+            }
             Field::Vertex(f) => return Err(unknown("vertex=", f, "position, normal")),
         }
         doc.validate().map_err(scene_error)?;
@@ -650,11 +696,12 @@ fn share_link(
 
 /// Checks a notebook's work as `phonglab check` does: `code` the cells run, in order (the
 /// givens are read from it, nothing is run), `printed` its values as `name = value` lines.
-/// The table in `lang`, and whether every step is right.
+/// `missing` the key's steps the notebook holds no value for. The table in `lang`, and
+/// whether every step is right.
 #[pyfunction]
-#[pyo3(signature = (code, printed, lang="en"))]
-fn check_work(code: &str, printed: &str, lang: &str) -> PyResult<(String, bool)> {
-    with_locale(locale_of(lang)?, || check::check_work(code, printed)).map_err(scene_error)
+#[pyo3(signature = (code, printed, missing, lang="en"))]
+fn check_work(code: &str, printed: &str, missing: Vec<String>, lang: &str) -> PyResult<(String, bool)> {
+    with_locale(locale_of(lang)?, || check::check_work(code, printed, missing)).map_err(scene_error)
 }
 
 /// The names of the steps the key of the cells `code` prints, in order (`vlv`, `vlv[0]`):
@@ -667,14 +714,16 @@ fn check_steps(code: &str, lang: &str) -> PyResult<Vec<String>> {
 }
 
 /// Why the self-check cannot run, in `lang`: `no-cells` (no IPython `In`: not in
-/// Jupyter), `run-first` (none of the worksheet's cells has run in this kernel).
+/// Jupyter), `run-first` (none of the worksheet's cells has run in this kernel),
+/// `not-globals` (given `globals` or a text where `globals()` is meant).
 #[pyfunction]
 #[pyo3(signature = (why, lang="en"))]
 fn check_refusal(why: &str, lang: &str) -> PyResult<String> {
     with_locale(locale_of(lang)?, || match why {
         "no-cells" => Ok(phonglab_core::t!("python-check-no-cells")),
         "run-first" => Ok(phonglab_core::t!("python-check-run-first")),
-        other => Err(unknown("why=", other, "no-cells, run-first")),
+        "not-globals" => Ok(phonglab_core::t!("python-check-not-globals")),
+        other => Err(unknown("why=", other, "no-cells, run-first, not-globals")),
     })
 }
 
@@ -700,6 +749,8 @@ fn refusal(kind: &str, what: &str, value: &str, names: &str, guess: &str) -> PyR
         "not-real" => phonglab_core::t!("python-not-real", what = what, value = value),
         "not-integer" => phonglab_core::t!("python-not-integer", what = what, value = value),
         "not-a-scene" => phonglab_core::t!("python-not-a-scene", what = what, value = value),
+        "not-a-name" => phonglab_core::t!("python-not-a-name", what = what, value = value),
+        "edit-fields" => phonglab_core::t!("python-edit-fields", what = what, example = names),
         "no-field" if !guess.is_empty() => {
             phonglab_core::t!("python-no-field-guess", what = what, value = value, guess = guess, names = names)
         }
@@ -714,7 +765,7 @@ fn refusal(kind: &str, what: &str, value: &str, names: &str, guess: &str) -> PyR
             return Err(unknown(
                 "kind=",
                 other,
-                "not-real, not-integer, not-a-scene, no-field, lights-fixed, no-light",
+                "not-real, not-integer, not-a-scene, not-a-name, edit-fields, no-field, lights-fixed, no-light",
             ));
         }
     })

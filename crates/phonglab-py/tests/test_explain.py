@@ -113,3 +113,14 @@ def test_share_link_refuses_a_page_that_is_not_http_and_takes_the_command_lines_
             "--present", "--channel", "diffuse",
         ).stdout.strip()
     assert same == link
+
+
+def test_explain_without_lang_speaks_the_language_set():
+    # N3: print(lit.explain()) after set_language("pt-PT").
+    lit = phonglab.light(phonglab.Scene.worksheet(5), lang="en")
+    try:
+        phonglab.set_language("pt-PT")
+        assert lit.explain() == lit.explain(lang="pt-PT")
+        assert lit.explain() != lit.explain(lang="en")
+    finally:
+        phonglab.set_language("en")

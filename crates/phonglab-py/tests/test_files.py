@@ -180,3 +180,65 @@ def test_save_refuses_the_notebook_the_scene_was_imported_from(tmp_path, cli):
         scene.save(path)
     assert path.read_bytes() == before
     scene.save(tmp_path / "hw.toml")
+
+
+def test_a_share_link_loads_as_the_scene_it_carries():
+    # N1: a link is taken wherever a scene file is, decoded as the command line decodes it.
+    s = phonglab.Scene.worksheet(5)
+    s.material.shininess = 77.0
+    link = phonglab.share_link(s)
+    read = phonglab.Scene.load(link)
+    assert read.material.shininess == 77.0
+    assert read.to_toml() == s.to_toml()
+    assert phonglab.light(read).I.tolist() == phonglab.light(s).I.tolist()
+
+
+@pytest.mark.parametrize(
+    "lang, damaged",
+    [
+        ("en", "the link is damaged: it was cut or changed"),
+        ("pt-PT", "a ligação está danificada: foi cortada ou alterada"),
+        ("pt-BR", "o link está danificado: foi cortado ou alterado"),
+    ],
+)
+def test_a_damaged_link_is_said_in_words_not_the_decoders(lang, damaged):
+    # N1, N2: a cut or garbled link says it is damaged, never "it does not exist", and
+    # carries no decoder text.
+    link = phonglab.share_link(phonglab.Scene.worksheet(5))
+    try:
+        phonglab.set_language(lang)
+        for bad in [link[:200], "https://phonglab.github.io/phonglab/#v1.garbage"]:
+            with pytest.raises(phonglab.SceneError) as e:
+                phonglab.Scene.load(bad)
+            said = str(e.value)
+            assert damaged in said, said
+            for jargon in ["does not exist", "Invalid", "offset", "Failed", "Progress", "("]:
+                assert jargon not in said, said
+    finally:
+        phonglab.set_language("en")
+
+
+def test_english_left_in_portuguese_messages_is_gone(tmp_path):
+    # N4: a notebook given to Scene.load; a text where a number is; an infinity.
+    notebook = tmp_path / "hw.ipynb"
+    notebook.write_text('{"cells": []}')
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[material]\nshininess = "abc"\n')
+    try:
+        phonglab.set_language("pt-PT")
+        with pytest.raises(phonglab.SceneError) as e:
+            phonglab.Scene.load(notebook)
+        said = str(e.value)
+        assert "é um caderno ou um script, não um ficheiro de cena" in said and "Scene.from_notebook" in said, said
+        assert "invalid" not in said and "expected" not in said, said
+        with pytest.raises(phonglab.SceneError) as e:
+            phonglab.Scene.load(bad)
+        said = str(e.value)
+        assert 'tipo inválido: o texto "abc", esperava-se um número' in said, said
+        assert "f64" not in said and "string" not in said, said
+    finally:
+        phonglab.set_language("en")
+    lit = phonglab.light(phonglab.Scene.worksheet(5), vertex=[1, 2, 3, 0], lang="pt-BR")
+    for shown in (lit.explain(), lit._repr_html_(), lit._repr_markdown_()):
+        assert "Infinity" not in shown
+    assert "d = inf" in lit.explain(), lit.explain()

@@ -20,8 +20,8 @@ def test_every_modelview_gives_what_the_worksheets_code_prints(k, worksheet_runs
     run = next(r for r in worksheet_runs if r["mview"] == k)
     lit = phonglab.light(phonglab.Scene.worksheet(k))
     for name in STEPS:
-        want = np.atleast_1d(np.array(run["values"][name], dtype=float))
-        tol = 1e-7 * want[0] if name == "d" else 1e-7
+        want = np.array(run["values"][name], dtype=float)  # a scalar step is a scalar
+        tol = 1e-7 * float(want) if name == "d" else 1e-7
         got = getattr(lit, name)
         assert got.shape == want.shape, name
         np.testing.assert_allclose(got, want, rtol=0, atol=tol, err_msg=f"mview{k} {name}")
@@ -46,7 +46,7 @@ def test_the_numbers_are_the_command_lines_explain_exactly(k, precision, cli):
     lit = phonglab.light(phonglab.Scene.worksheet(k), precision=precision)
     assert set(want) >= {"vertexNormal", "vlv", "H", "I"}
     for name, values in want.items():
-        assert list(getattr(lit, name)) == values, name
+        assert np.atleast_1d(getattr(lit, name)).tolist() == values, name
 
 
 def test_explain_speaks_the_language_asked_and_jupyter_shows_the_table():
@@ -82,3 +82,13 @@ def test_light_many_is_the_engines_colour_in_f32():
     for i in range(0, 50, 7):
         one = phonglab.light(scene, vertex=p[i].astype(np.float32), normal=n[i].astype(np.float32), precision="f32")
         np.testing.assert_allclose(many[i, :3], one.I[:3], rtol=0, atol=2e-6)
+
+
+def test_scalar_steps_are_scalars_as_the_worksheet_prints_them():
+    # N11: cosTheta, d, at print as the worksheet's 0.13925483, not [0.13925483].
+    lit = phonglab.light(phonglab.Scene.worksheet(5))
+    for name in ["cosTheta", "cosBeta", "d", "at"]:
+        value = getattr(lit, name)
+        assert isinstance(value, np.float64) and np.ndim(value) == 0, (name, value)
+    assert str(lit.cosTheta) == "0.13925483139909867"
+    assert lit.I.shape == (4,)

@@ -59,3 +59,14 @@ def test_a_given_changed_in_place_is_refused_naming_it():
     )
     with pytest.raises(phonglab.SceneError, match=r"changed in place.*lightPos \(line 4\)"):
         phonglab.check({"In": [code]})
+
+
+def test_the_check_cell_shows_its_table_and_no_bare_true_or_false(cli, tmp_path):
+    # N11: the cell's `;` keeps Jupyter from showing check()'s return value under the table.
+    nb = uncommented(exported(cli, tmp_path, "en"))
+    assert "".join(nb["cells"][-1]["source"]).rstrip().endswith(";")
+    notebook = nbformat.reads(json.dumps(nb), as_version=4)
+    nbclient.NotebookClient(notebook, timeout=120, kernel_name="python3").execute()
+    kinds = [o.get("output_type") for o in notebook.cells[-1].outputs]
+    assert kinds == ["stream"], notebook.cells[-1].outputs
+

@@ -88,7 +88,7 @@ def test_a_vertex_at_infinity_is_explained_with_w_0():
 
 def test_numbers_given_as_text_to_light_and_the_worksheet_are_refused():
     scene = phonglab.Scene.worksheet(5)
-    with pytest.raises(phonglab.SceneError, match=r"light\(vertex\) = '1, 2, 3': not a number"):
+    with pytest.raises(phonglab.SceneError, match=r"light\(vertex=\) = '1, 2, 3': not a number"):
         phonglab.light(scene, vertex="1, 2, 3")
     with pytest.raises(phonglab.SceneError, match=r"Scene.worksheet\(n\) = 'five': not a whole number"):
         phonglab.Scene.worksheet("five")
@@ -251,3 +251,35 @@ def test_the_package_shows_its_own_names_and_a_version():
     assert "Scene" in names and "light_many" in names and "__version__" in names
     assert not {"np", "json", "os", "tempfile", "Any", "Dict"} & set(names)
     assert phonglab.__version__ == "0.1.0"
+
+
+def test_vector_lengths_take_what_the_worksheet_writes_and_hint_the_rest():
+    # N5: normals as the worksheet writes them, (x, y, z, 0); the hints a short value needs.
+    s = phonglab.Scene.worksheet(5)
+    s.vertex.normal = [0, 0, 1, 0]
+    assert s.vertex.normal.tolist() == [0.0, 0.0, 1.0]
+    lit = phonglab.light(s, normal=[0, 1, 0, 0])
+    assert lit.explain() != phonglab.light(s).explain()
+    cases = [
+        (lambda: setattr(s.vertex, "normal", [0, 0, 1, 1]), "vertex.normal: 4 numbers given, 3 expected; a normal is a direction"),
+        (lambda: phonglab.light(s, normal=[0, 0, 1, 1]), "light(normal=): 4 numbers given, 3 expected; a normal is a direction"),
+        (lambda: setattr(s.lights[0], "position", [0, 0, 90]), "lights[0].position: 3 numbers given, 4 expected; a light's position is x, y, z, w: w = 1"),
+        (lambda: setattr(s.material, "diffuse", [0.8, 0.2, 0.2]), "material.diffuse: 3 numbers given, 4 expected; a colour is r, g, b, a: add its alpha"),
+        (lambda: phonglab.light(s, vertex=[1, 2]), "light(vertex=): 2 numbers given, 3 or 4 expected; a vertex is x, y, z"),
+        (lambda: setattr(s.lights[0], "diffuse", 0.5), "lights[0].diffuse: 1 number given, 4 expected"),
+        (lambda: setattr(s, "material", None), "scene.material is not replaced whole: edit its fields one by one"),
+        (lambda: s.lights.__setitem__(0, None), "scene.lights[i] is not replaced whole: edit its fields one by one"),
+    ]
+    before = s.to_toml()
+    for act, said in cases:
+        with pytest.raises(phonglab.SceneError) as e:
+            act()
+        assert said in str(e.value), str(e.value)
+    assert s.to_toml() == before
+    try:
+        phonglab.set_language("pt-PT")
+        with pytest.raises(phonglab.SceneError) as e:
+            s.lights[0].diffuse = 0.5
+        assert "lights[0].diffuse: foi dado 1 número, esperavam-se 4" in str(e.value), str(e.value)
+    finally:
+        phonglab.set_language("en")

@@ -85,3 +85,18 @@ def test_a_notebook_read_back_is_the_scene_it_was_written_from(tmp_path, cli):
     scene = phonglab.Scene.from_notebook(path)
     assert list(phonglab.light(scene).I) == list(phonglab.light(phonglab.Scene.worksheet(5)).I)
     assert list(scene.lights[0].position) == [0, 0, 90, 1]
+
+
+def test_a_scene_can_be_renamed_for_what_it_is_now():
+    # N6: a worksheet scene given another modelview keeps its name until renamed.
+    s = phonglab.Scene.worksheet(5)
+    s.modelview = phonglab.Scene.worksheet(3).modelview
+    assert s.name == phonglab.Scene.worksheet(5).name
+    s.name = "mview3's camera"
+    assert s.name == "mview3's camera"
+    assert repr(s) == "phonglab.Scene(\"mview3's camera\")"
+    assert phonglab.Scene.load(phonglab.share_link(s)).name == "mview3's camera"
+    assert "mview3's camera" in s.to_toml()
+    with pytest.raises(phonglab.SceneError, match="not a text"):
+        s.name = 3
+    assert s.name == "mview3's camera"

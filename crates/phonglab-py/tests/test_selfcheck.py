@@ -180,7 +180,7 @@ def test_outside_jupyter_it_says_what_to_use_instead():
     with pytest.raises(phonglab.SceneError, match=r"checks a Jupyter notebook.*phonglab check --printed"):
         phonglab.check(ns)
     with pytest.raises(phonglab.SceneError, match="verifica um caderno Jupyter"):
-        phonglab.check("globals", lang="pt-PT")
+        phonglab.check(None, lang="pt-PT")
 
 
 def test_the_evidence_line_reads_well_for_the_step_at(cells):
@@ -232,3 +232,92 @@ def test_the_self_check_and_the_command_line_agree_on_the_saved_notebook(cli, tm
     assert f"first wrong step: {first} " in own and f"first wrong step: {first} " in said, (own, said)
     # The same table, line for line, after the command line's scene line.
     assert said.split("\n", 1)[1] == own, (said, own)
+
+
+def run_skipping(cells, skipped):
+    """Runs `cells` as Jupyter does, except the cell that starts with `skipped`: a cell
+    that then stops with an error (a NameError) is in In, as Jupyter keeps it."""
+    ns = {"In": [""]}
+    left = [c for c in cells if not c.startswith(skipped)]
+    assert len(left) == len(cells) - 1, skipped
+    for cell in left:
+        ns["In"].append(cell)
+        try:
+            exec(cell, ns)
+        except NameError:
+            pass
+    return ns
+
+
+def test_a_skipped_cell_is_not_checked_and_names_what_is_missing(cells):
+    # N7: the Iamb cell skipped; the I cell stops with NameError: never "all right".
+    ns = run_skipping(cells, "Iamb = ")
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        right = phonglab.check(ns, lang="en")
+    text = out.getvalue()
+    assert right is False, text
+    assert "all right" not in text, text
+    assert "not checked: the notebook holds no value for Iamb, I, glColor" in text, text
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        assert phonglab.check(ns, lang="pt-PT") is False
+    assert "não verificado: o caderno não tem valor para Iamb, I, glColor" in out.getvalue()
+
+
+def test_the_self_check_speaks_the_language_set(cells):
+    # N3: set_language is the default of check() and of its refusals.
+    try:
+        phonglab.set_language("pt-BR")
+        ns = {"In": [""]}
+        for cell in cells:
+            ns["In"].append(cell)
+            exec(cell, ns)
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            assert phonglab.check(ns) is True
+        assert "tudo certo: todos os passos impressos são os do gabarito" in out.getvalue(), out.getvalue()
+        with pytest.raises(phonglab.SceneError, match="nenhuma célula da lista"):
+            phonglab.check({"In": [""]})
+    finally:
+        phonglab.set_language("en")
+
+
+@pytest.mark.parametrize("given", [globals, "globals", "globals()"])
+def test_globals_not_called_is_told_to_pass_globals_call(given):
+    # N8: phonglab.check(globals) or check("globals") in Jupyter.
+    with pytest.raises(phonglab.SceneError) as e:
+        phonglab.check(given)
+    assert "pass globals(), with its brackets: phonglab.check(globals())" in str(e.value)
+    assert "this Python has none" not in str(e.value)
+
+
+@pytest.mark.parametrize(
+    "lang, label",
+    [
+        ("en", "the formula with this mistake (a model of it, not your code): "),
+        ("pt-PT", "a fórmula com este erro (um modelo dele, não o seu código): "),
+        ("pt-BR", "a fórmula com esse erro (um modelo dele, não o seu código): "),
+    ],
+)
+def test_the_mistakes_formula_is_labelled_as_a_model_not_the_students_code(cells, lang, label):
+    # N10: the line under "likely cause" is the catalogue's formula, said so.
+    right, text = run(mistaken(cells, VECTORS, "pass"), lang=lang)
+    assert not right
+    lines = text.splitlines()
+    formulas = [line.strip() for line in lines if line.strip().startswith(label)]
+    assert formulas, text
+    assert formulas[0] == label + "# vlv = vlv/np.linalg.norm(vlv)", text
+
+
+def test_the_vectors_cell_run_twice_is_named_with_what_to_do(cells):
+    # N9: a correct notebook whose vectors cell ran twice: named, with Restart & Run All.
+    k = next(i for i, c in enumerate(cells) if VECTORS in c)
+    right, text = run(cells[: k + 1] + [cells[k]] + cells[k + 1 :])
+    assert not right
+    assert "likely cause: the normal looks transformed twice" in text, text
+    assert "[vectors-cell-run-twice]" in text and "Restart & Run All" in text, text
+    assert "no mistake in the catalogue" not in text, text
+    # A normal transformed twice alone (not the whole cell) is not this cause.
+    right, text = run(mistaken(cells, "vertexNormal = np.matmul(mview, vertexNormal)", "vertexNormal = np.matmul(mview, np.matmul(mview, vertexNormal))"))
+    assert not right and "[vectors-cell-run-twice]" not in text, text

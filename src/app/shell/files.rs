@@ -39,8 +39,8 @@ pub fn open(state: &mut AppState, path: &Path) {
 fn open_or_why(state: &mut AppState, path: &Path) -> Result<(), String> {
     // A shared scene's link, where a file is taken: decoded as the browser build does.
     // (Its language, presenting and term too; a damaged one says why and changes nothing.)
-    if let Some(fragment) = crate::io::input_file::share_fragment(path) {
-        let shared = crate::io::input_file::read_link(&path.to_string_lossy(), fragment)?;
+    if crate::io::input_file::share_fragment(path).is_some() {
+        let shared = crate::io::input_file::read_link(&path.to_string_lossy())?;
         super::shared_link::open_shared(state, shared);
         return Ok(());
     }

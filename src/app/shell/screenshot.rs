@@ -95,6 +95,27 @@ pub fn empty_share(
     empty as f64 / (tx * ty).max(1) as f64
 }
 
+/// The window `shot` asks for: its scene file's scene, or a share link's scene with the
+/// choices the link carries (its language, presenting, the term shown), as the window
+/// started on that link takes them.
+pub fn state_of(a: &Shot) -> Result<AppState> {
+    let link = a.scene.as_deref().filter(|p| crate::io::input_file::share_fragment(p).is_some());
+    let shared = match link {
+        Some(p) => Some(crate::io::input_file::read_link(&p.to_string_lossy()).map_err(anyhow::Error::msg)?),
+        None => None,
+    };
+    let doc = match (&shared, &a.scene) {
+        (Some(s), _) => s.doc.clone(),
+        (None, Some(p)) => crate::io::input_file::load_scene(p).map_err(anyhow::Error::msg)?,
+        (None, None) => phonglab_core::Document::default(),
+    };
+    let mut state = state_for(doc, a.present, a.light, a.open);
+    if let Some(s) = &shared {
+        super::shared_link::take_choices(&mut state, s);
+    }
+    Ok(state)
+}
+
 /// Takes the picture `shot` asks for and writes it (`phonglab screenshot`).
 pub fn run(a: &Shot) -> Result<()> {
     if !(0.5..=4.0).contains(&a.scale) {
@@ -108,14 +129,10 @@ pub fn run(a: &Shot) -> Result<()> {
     let scene: Vec<(&std::path::Path, Input)> = a.scene.iter().map(|p| (p.as_path(), Input::Scene)).collect();
     refuse_onto(&[&a.output], &scene).map_err(anyhow::Error::msg)?;
     crate::io::atomic_write::check_file_destination(&a.output)?;
-    let doc = match &a.scene {
-        Some(p) => crate::io::input_file::load_scene(p).map_err(anyhow::Error::msg)?,
-        None => phonglab_core::Document::default(),
-    };
+    let state = state_of(a)?;
     let mesh: Vec<(&std::path::Path, Input)> =
-        doc.view.obj.iter().map(|m| (std::path::Path::new(m), Input::Mesh)).collect();
+        state.doc.view.obj.iter().map(|m| (std::path::Path::new(m), Input::Mesh)).collect();
     refuse_onto(&[&a.output], &mesh).map_err(anyhow::Error::msg)?;
-    let state = state_for(doc, a.present, a.light, a.open);
     let (w, h) = (a.size.0 as f32, a.size.1 as f32);
     let (pw, ph, rgba, state) = take(state, w, h, a.scale);
     crate::io::image::write_png(&a.output, pw, ph, &rgba).context("the screenshot")?;

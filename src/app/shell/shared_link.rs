@@ -37,3 +37,13 @@ pub fn open_shared(state: &mut AppState, s: share::Shared) {
     state.ui.layout.presenting |= s.present;
     state.view_options.channel = s.channel.and_then(|c| Channel::ALL.into_iter().find(|k| k.name() == c));
 }
+
+/// The window's choices a link carries (its language, presenting, the term shown), taken
+/// by `state` without opening its scene again (`phonglab screenshot --scene LINK`).
+pub fn take_choices(state: &mut AppState, s: &share::Shared) {
+    if let Some(lang) = &s.lang {
+        state.ui.layout.language = Some(lang.clone());
+    }
+    state.ui.layout.presenting |= s.present;
+    state.view_options.channel = s.channel.as_deref().and_then(|c| Channel::ALL.into_iter().find(|k| k.name() == c));
+}

@@ -120,12 +120,19 @@ fn dir4<S: Real>(v: S::V3) -> Vec<f64> {
 
 pub use crate::locale::fmt_sig;
 
-/// Formats a value worksheet-style: a scalar alone, a vector as `[a b c d]`.
+/// Formats a value worksheet-style: a scalar alone, a vector as `[a b c d]`; a value that
+/// is not finite as NumPy prints it (`inf`, `-inf`, `nan`: code, the same in every
+/// language, never the English word `Infinity`).
 pub fn fmt_value(v: &[f64], sig: usize) -> String {
+    let one = |x: f64| match x {
+        x if x.is_nan() => "nan".to_string(),
+        x if x.is_infinite() => if x > 0.0 { "inf" } else { "-inf" }.to_string(),
+        x => fmt_sig(x, sig),
+    };
     if v.len() == 1 {
-        fmt_sig(v[0], sig)
+        one(v[0])
     } else {
-        let parts: Vec<String> = v.iter().map(|x| fmt_sig(*x, sig)).collect();
+        let parts: Vec<String> = v.iter().map(|x| one(*x)).collect();
         format!("[{}]", parts.join(" "))
     }
 }

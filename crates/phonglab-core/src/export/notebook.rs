@@ -266,10 +266,11 @@ pub fn cells(doc: &Document, key: &Key) -> Vec<Cell> {
 }
 
 /// The last cell, commented out: the Python package `phonglab` checks the values this
-/// notebook computed, step by step, in the language the notebook was written in.
+/// notebook computed, step by step, in the language the notebook was written in. The `;`
+/// keeps Jupyter from showing its True or False under the table it prints.
 fn self_check() -> String {
     let lang = crate::locale::current().lang.code();
-    format!("# import phonglab; phonglab.check(globals(), lang=\"{lang}\")")
+    format!("# import phonglab; phonglab.check(globals(), lang=\"{lang}\");")
 }
 
 /// `lightPos`: one array, or a list of them.

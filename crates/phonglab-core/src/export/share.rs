@@ -192,6 +192,31 @@ fn mesh_by_name_alone(toml: &str) -> (std::borrow::Cow<'_, str>, Option<(String,
     (text.into(), Some((shown, shown_obj)))
 }
 
+/// A shared scene's link given where a scene file is taken (`https://…/#v1.…`): what
+/// follows its `#` (empty where it has none). `None` for anything else (a file's path).
+pub fn link_fragment(text: &str) -> Option<&str> {
+    let lower = text.get(..8)?.to_ascii_lowercase();
+    if !(lower.starts_with("http://") || lower.starts_with("https://")) {
+        return None;
+    }
+    Some(text.split_once('#').map_or("", |(_, f)| f))
+}
+
+/// What the shared link `link` carries (its scene and the window's choices), decoded by
+/// [`decode`] (bounded: [`MAX_FRAGMENT`]), or why not, naming the link by its start (its
+/// control characters written visibly): what the app, the command line and the Python
+/// package read where a scene file is taken.
+pub fn read_link(link: &str) -> Result<Shared, String> {
+    let fragment = link_fragment(link).unwrap_or("");
+    // Its page and the start of its data: the whole link is kilobytes.
+    let shown = crate::formats::escape::terminal::text(&link.chars().take(48).collect::<String>());
+    let shown = if link.chars().count() > 48 { format!("{shown}…") } else { shown };
+    if fragment.is_empty() {
+        return Err(crate::t!("scene-link-refused", link = shown, why = crate::t!("scene-link-empty")));
+    }
+    decode(fragment).map_err(|e| crate::t!("scene-link-refused", link = shown, why = e.to_string()))
+}
+
 /// Refuses a page a link cannot open on: not an `http://` or `https://` address (a
 /// `javascript:` or `data:` one runs or carries what it holds), or one holding a control
 /// character, a space or a quote (it would not stay one address where it is pasted).

@@ -64,9 +64,32 @@ fn in_words(message: &str) -> String {
     if let Some(rest) = message.strip_prefix("invalid type: ")
         && let Some((found, expected)) = rest.split_once(", expected ")
     {
-        return crate::t!("toml-invalid-type", found = found, expected = expected);
+        return crate::t!("toml-invalid-type", found = kind_in_words(found), expected = kind_in_words(expected));
     }
     message.to_string()
+}
+
+/// A kind serde names in Rust's words (`f64`, `string "abc"`, `a boolean`) in the user's:
+/// "a number", "the text \"abc\"", "true or false"; any other as serde says it.
+fn kind_in_words(kind: &str) -> String {
+    let numbers = ["f64", "f32", "i64", "i32", "u64", "u32", "u16", "u8", "usize", "a number"];
+    if numbers.contains(&kind) || kind.starts_with("integer `") || kind.starts_with("floating point `") {
+        let value = kind.split('`').nth(1).unwrap_or("");
+        return if value.is_empty() {
+            crate::t!("toml-kind-number")
+        } else {
+            crate::t!("toml-kind-number-value", value = value)
+        };
+    }
+    if let Some(text) = kind.strip_prefix("string ") {
+        return crate::t!("toml-kind-text", value = text);
+    }
+    match kind {
+        "a string" | "string" => crate::t!("toml-kind-a-text"),
+        "a boolean" | "bool" => crate::t!("toml-kind-boolean"),
+        _ if kind.starts_with("boolean `") => crate::t!("toml-kind-boolean"),
+        _ => kind.to_string(),
+    }
 }
 
 /// The most characters of a line (or of a word from one) that a message quotes.
@@ -191,7 +214,15 @@ mod tests {
             "campo desconhecido `shinyness`; os campos aceites são `preset`, `shininess`; queria dizer `shininess`?"
         );
         assert_eq!(pt("missing field `kind`"), "falta o campo `kind`");
-        assert_eq!(pt("invalid type: string \"a\", expected f64"), "tipo inválido: string \"a\", esperava-se f64");
+        // serde's Rust words (`f64`, `string`) said as kinds a student knows.
+        assert_eq!(
+            pt("invalid type: string \"a\", expected f64"),
+            "tipo inválido: o texto \"a\", esperava-se um número"
+        );
+        assert_eq!(
+            pt("invalid type: boolean `true`, expected a string"),
+            "tipo inválido: true ou false, esperava-se um texto (entre aspas)"
+        );
         assert_eq!(with_locale(Locale::of(Lang::PtBr), || place("a\nbc", 3).0), "linha 2, coluna 2");
     }
 

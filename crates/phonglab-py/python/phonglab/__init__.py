@@ -78,9 +78,12 @@ _F = TypeVar("_F", bound=Callable[..., Any])
 
 
 def _refusals_here(function: _F) -> _F:
-    """Raises a SceneError from `function` as if from the caller's line: the traceback ends
-    at the call the user wrote, not inside the package's wrappers (the message says what
-    was wrong; the frames of the package would only hide it)."""
+    """Raises a SceneError from `function` with the package's inner frames cut: the
+    traceback shows the call the user wrote, then this wrapper's one line, never the
+    frames inside (the message says what was wrong; they would only hide it). The line of
+    this wrapper stays: Python records every Python frame an exception leaves, the one
+    that raises it included, so only a function written in C (or Rust) could raise with
+    no frame of its own; IPython's `__tracebackhide__` never hides the last frame either."""
 
     @functools.wraps(function)
     def wrapper(*args: Any, **kwargs: Any) -> Any:
@@ -236,7 +239,8 @@ class Material(_Fields):
 
 
 class Vertex(_Fields):
-    """The worked vertex: position (x, y, z, w) and normal (x, y, z), in object space."""
+    """The worked vertex: position (x, y, z, w; x, y, z alone takes w = 1) and normal
+    (x, y, z; the worksheet's x, y, z, 0 is taken too), in object space."""
 
     _names = ("position", "normal")
 
@@ -263,6 +267,10 @@ class _Lights:
     def __iter__(self) -> Iterator[Light]:
         return (self[k] for k in range(len(self)))
 
+    @_refusals_here
+    def __setitem__(self, i: Any, value: Any) -> None:
+        raise _refuse("edit-fields", "scene.lights[i]", value, "scene.lights[0].position = [0, 0, 90, 1]")
+
     def __getattr__(self, name: str) -> Any:
         if name.startswith("_"):
             raise AttributeError(name)  # Python's own lookups (copy, pickle, NumPy)
@@ -286,8 +294,10 @@ class Scene:
     def load(path: "os.PathLike[str] | str") -> "Scene":
         """Reads a scene file (TOML) with the command line's reader: a regular file of at
         most 1 MiB, UTF-8, opened without waiting (a FIFO, a device or a folder is refused
-        at once); a relative mesh path is read from the file's folder. A file that cannot
-        be read or used raises SceneError naming it."""
+        at once); a relative mesh path is read from the file's folder. A scene's share
+        link (https://…/#v1.…, as share_link writes it) is read in its place, decoded as
+        the command line decodes it. A file or link that cannot be read or used raises
+        SceneError naming it."""
         return Scene(_core.Scene.load(path))
 
     @staticmethod
@@ -345,8 +355,18 @@ class Scene:
 
     @property
     def name(self) -> str:
-        """The scene's title."""
+        """The scene's title, shown by explain, the window and a share link. Settable:
+        assigning a modelview keeps the name (Scene.worksheet(5) stays "the worksheet,
+        mview5"), so name what the scene is now: scene.name = "mview3's camera". A name
+        that is not a str raises SceneError."""
         return self._inner.name
+
+    @name.setter
+    @_refusals_here
+    def name(self, value: str) -> None:
+        if not isinstance(value, str):
+            raise _refuse("not-a-name", "name", value)
+        self._inner.name = value
 
     @property
     def lights(self) -> _Lights:
@@ -368,13 +388,23 @@ class Scene:
 
     @property
     def material(self) -> Material:
-        """The front material."""
+        """The front material (edited field by field: scene.material.diffuse = ...)."""
         return Material(self, "material.")
+
+    @material.setter
+    @_refusals_here
+    def material(self, value: Any) -> None:
+        raise _refuse("edit-fields", "scene.material", value, "scene.material.diffuse = [0.8, 0.2, 0.2, 1]")
 
     @property
     def vertex(self) -> Vertex:
-        """The worked vertex."""
+        """The worked vertex (edited field by field: scene.vertex.normal = ...)."""
         return Vertex(self, "vertex.")
+
+    @vertex.setter
+    @_refusals_here
+    def vertex(self, value: Any) -> None:
+        raise _refuse("edit-fields", "scene.vertex", value, "scene.vertex.normal = [0, 0, 1]")
 
     def __repr__(self) -> str:
         return f"phonglab.Scene({self.name!r})"
@@ -384,8 +414,9 @@ class Lighting:
     """The worked calculation of one vertex, as computed when it was made (a later change
     to the scene does not change it). Each step is an attribute under the worksheet's name
     (vertexNormal, vlv, vov, H, cosTheta, cosBeta, Iamb, Idif, Ispec, at, spot, I)
-    holding a NumPy array (4 components, or 1 for a scalar), or None where the step does
-    not apply. With several lights, a light's step is a list with one value per light, as
+    holding a NumPy array of 4 components, or a NumPy float64 for a scalar step (cosTheta,
+    cosBeta, d, at, spot: printed as the worksheet prints it, 0.13925483), or None where
+    the step does not apply. With several lights, a light's step is a list with one value per light, as
     the worksheet's notebook holds it (lit.vlv[0] is light 0's vlv), and .per_light[k]
     holds light k's steps by their names (lit.per_light[0]["vlv"]).
 
@@ -397,11 +428,12 @@ class Lighting:
         self._text, self._markdown = text, markdown
         # The scene as it was: explain() and the displays show this calculation.
         self._scene, self._precision, self._lang = Scene(scene._inner.__copy__()), precision, lang
-        self.per_light: Dict[int, Dict[str, Optional[np.ndarray]]] = {}
+        self.per_light: Dict[int, Dict[str, Any]] = {}
         self.steps: Dict[str, Any] = {}
         lights = 1 + max((light for *_, light, _shown in rows if light is not None), default=0)
         for name, _title, _formula, value, light, _shown in rows:
-            array = None if value is None else np.array(value)
+            # A scalar step (cosTheta, d, at, spot) as the worksheet prints it: a float64.
+            array = None if value is None else np.float64(value[0]) if len(value) == 1 else np.array(value)
             self.steps.setdefault(name, array)
             if light is None:
                 continue
@@ -422,9 +454,10 @@ class Lighting:
     def __dir__(self) -> List[str]:
         return list(self.steps) + ["explain", "steps", "per_light"]
 
-    def explain(self, lang: str = "en", markdown: bool = False) -> str:
+    def explain(self, lang: Optional[str] = None, markdown: bool = False) -> str:
         """The worked calculation as text (or Markdown) in lang: "en", "pt-PT" or "pt-BR"
-        (its words and its decimal mark)."""
+        (its words and its decimal mark); default, the language set_language chose."""
+        lang = language() if lang is None else lang
         text, md, _html = _core.explain_tables(self._scene._inner, self._precision, lang)
         return md if markdown else text
 
@@ -447,15 +480,16 @@ def light(
     lang: Optional[str] = None,
 ) -> Lighting:
     """Lights the scene's vertex (or vertex/normal, in object space) step by step as the
-    worksheet does; precision "f64" or "f32"; lang the language of its text (default: the
+    worksheet does (vertex: x, y, z with w = 1, or x, y, z, w; normal: x, y, z, or the
+    worksheet's x, y, z, 0); precision "f64" or "f32"; lang the language of its text (default: the
     one set_language chose)."""
     _inner_of(scene, "light(scene)")
     if vertex is not None or normal is not None:
         scene = scene.copy()
         if vertex is not None:
-            scene.vertex.position = _numbers(vertex, "light(vertex)")
+            scene._inner.set("vertex.position", _numbers(vertex, "light(vertex=)"), "light(vertex=)")
         if normal is not None:
-            scene.vertex.normal = _numbers(normal, "light(normal)")
+            scene._inner.set("vertex.normal", _numbers(normal, "light(normal=)"), "light(normal=)")
     lang = language() if lang is None else lang
     rows, text, markdown = _core.light(scene._inner, precision, lang)
     return Lighting(rows, text, markdown, scene, precision, lang)

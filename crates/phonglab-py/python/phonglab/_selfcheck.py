@@ -162,18 +162,36 @@ def printed(namespace: Dict[str, Any], steps: List[str]) -> str:
     return "\n".join(lines)
 
 
-def check(namespace: Dict[str, Any], lang: str = "en") -> bool:
+def _missing(code: str, namespace: Dict[str, Any], key: List[str]) -> List[str]:
+    """The key's steps (in its order) whose name the notebook does not hold though its cells
+    name them (outside comments: `I = (Iamb + ...)` names Iamb), or the key's last, the colour:
+    a cell skipped, or stopped by an error. A step the cells never name (`Ilight`, which
+    the worksheet does not print) is not asked."""
+    named = set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", "\n".join(line.split("#", 1)[0] for line in code.split("\n"))))
+    return [
+        step
+        for k, step in enumerate(key)
+        if _STEP.sub(r"\1", step) not in namespace and (_STEP.sub(r"\1", step) in named or k == len(key) - 1)
+    ]
+
+
+def check(namespace: Dict[str, Any], lang: Optional[str] = None) -> bool:
     """The self-check cell: checks the worksheet's values this notebook holds step by step,
     as `phonglab check` checks a saved notebook, and prints the table (each step, the
-    first wrong one and its likely cause) in lang. Call it as phonglab.check(globals()).
+    first wrong one and its likely cause) in lang (default: the language set_language
+    chose). Call it as phonglab.check(globals()).
 
     The givens are read from the cells run so far (IPython's `In`; nothing is run again),
     the values from the numbers of the notebook's variables (never from how they print).
-    Returns True when every step is right. Raises SceneError outside Jupyter (use
-    `phonglab check --printed` for a script's output) and before the worksheet's cells
-    have run in this kernel."""
+    A step of the key the notebook holds no value for (a cell skipped, or stopped by an
+    error) makes it "not checked", as `phonglab check` says of the saved notebook.
+    Returns True when every step is right. Raises SceneError given anything but
+    globals(), outside Jupyter (use `phonglab check --printed` for a script's output) and
+    before the worksheet's cells have run in this kernel."""
+    lang = _core.language() if lang is None else lang
     if not isinstance(namespace, dict):
-        raise SceneError(_core.check_refusal("no-cells", lang))
+        why = "not-globals" if namespace is globals or isinstance(namespace, str) else "no-cells"
+        raise SceneError(_core.check_refusal(why, lang))
     cells = namespace.get("In")
     if not isinstance(cells, list):
         cells = namespace.get("_ih")
@@ -184,7 +202,8 @@ def check(namespace: Dict[str, Any], lang: str = "en") -> bool:
         raise SceneError(_core.check_refusal("run-first", lang))
     run = [c for c in cells if isinstance(c, str)]
     steps = _printing_order(run, _core.check_steps(code, lang))
-    text, right = _core.check_work(code, printed(namespace, steps), lang)
+    missing = _missing(code, namespace, _core.check_steps(code, lang))
+    text, right = _core.check_work(code, printed(namespace, steps), missing, lang)
     print(text, end="")
     for name in _reassigned(run, steps):
         print(_core.check_note("reassigned", name, lang))

@@ -31,6 +31,9 @@ pub enum Mistake {
     LightNotTransformed,
     /// The light's position transformed by the modelview twice.
     LightTransformedTwice,
+    /// The vectors cell run twice: the normal, the vertex and the light transformed by
+    /// the modelview twice each (a notebook's cell run again, not a formula).
+    VectorsCellRunTwice,
     /// The light transformed by the vertex's modelview `mview` instead of the one current
     /// when it was placed (an eye-fixed light moved with the camera).
     LightByMview,
@@ -197,6 +200,7 @@ impl Mistake {
                 | Mistake::NormalAsPoint
                 | Mistake::AttenuationOnWholeColour
                 | Mistake::NormalMatrixNotTransposed
+                | Mistake::VectorsCellRunTwice
                 | Mistake::RowVectors
                 | Mistake::OnlyLastLight
                 | Mistake::EmissionLeftOut
@@ -381,7 +385,7 @@ pub struct MistakeInfo {
 pub const ACOS_PAST_ONE: &str = "acos-past-one";
 
 /// The catalogue, in the worksheet's order.
-pub const CATALOGUE: [MistakeInfo; 77] = [
+pub const CATALOGUE: [MistakeInfo; 78] = [
     MistakeInfo {
         id: "normal-by-modelview",
         mistake: Some(Mistake::NormalByModelview),
@@ -441,6 +445,12 @@ pub const CATALOGUE: [MistakeInfo; 77] = [
         mistake: Some(Mistake::LightTransformedTwice),
         formula: "lightPos = np.matmul(mview, np.matmul(mview, lightPos))",
         words: || t!("check-cause-light-transformed-twice"),
+    },
+    MistakeInfo {
+        id: "vectors-cell-run-twice",
+        mistake: Some(Mistake::VectorsCellRunTwice),
+        formula: "vertexNormal = np.matmul(mview, np.matmul(mview, vertexNormal))  # vertexPos, lightPos",
+        words: || t!("check-cause-vectors-cell-run-twice"),
     },
     MistakeInfo {
         id: "light-by-mview",

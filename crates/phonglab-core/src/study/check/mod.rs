@@ -121,6 +121,8 @@ pub struct Check {
     pub errors: Vec<String>,
     /// Steps of the key printed with a value that could not be read (`cosTheta = 0.9 rad`).
     pub unreadable: Vec<String>,
+    /// Steps of the key the work holds no value for (a notebook's cell not run).
+    pub missing: Vec<String>,
 }
 
 /// Why a piece of work with no wrong step is still not right: nothing was compared.
@@ -132,6 +134,8 @@ pub enum Unchecked {
     NothingCompared,
     /// Steps printed with values that could not be read (named).
     Unreadable(String),
+    /// Steps of the key the work holds no value for (named): a cell skipped or stopped.
+    Missing(String),
 }
 
 impl Unchecked {
@@ -141,6 +145,7 @@ impl Unchecked {
             Unchecked::Stopped(_) => "run-stopped",
             Unchecked::NothingCompared => "nothing-compared",
             Unchecked::Unreadable(_) => "unreadable-step",
+            Unchecked::Missing(_) => "missing-steps",
         }
     }
 
@@ -150,6 +155,7 @@ impl Unchecked {
             Unchecked::Stopped(e) => crate::t!("check-run-stopped", error = e.clone()),
             Unchecked::NothingCompared => crate::t!("check-nothing-compared"),
             Unchecked::Unreadable(names) => crate::t!("check-unreadable-steps", names = names.clone()),
+            Unchecked::Missing(names) => crate::t!("check-missing-steps", names = names.clone()),
         }
     }
 }
@@ -170,6 +176,9 @@ impl Check {
     pub fn unchecked(&self) -> Option<Unchecked> {
         if let Some(e) = self.errors.last() {
             return Some(Unchecked::Stopped(e.clone()));
+        }
+        if !self.missing.is_empty() {
+            return Some(Unchecked::Missing(self.missing.join(", ")));
         }
         if !self.unreadable.is_empty() {
             return Some(Unchecked::Unreadable(self.unreadable.join(", ")));
@@ -288,6 +297,7 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
         Vec::new()
     };
     let unreadable = student.unread.iter().filter(|n| key.get(n).is_some()).cloned().collect();
+    let missing = student.missing.iter().filter(|n| key.get(n).is_some()).cloned().collect();
     Check {
         rules: assignment.rules,
         inputs_differ,
@@ -296,6 +306,7 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
         causes,
         errors: student.errors.clone(),
         unreadable,
+        missing,
     }
 }
 

@@ -38,6 +38,10 @@ pub struct Printed {
     /// rad`, a value wrapped past the cap): where the key has such a step, the work is not
     /// checked whole, so never right.
     pub unread: Vec<String>,
+    /// Steps of the key the work holds no value for where it should (the self-check in a
+    /// notebook: a cell skipped, or stopped by an error): the work is not checked whole,
+    /// so never right. Empty for printed text, whose steps not printed are not asked.
+    pub missing: Vec<String>,
 }
 
 impl Printed {

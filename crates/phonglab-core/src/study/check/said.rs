@@ -78,7 +78,9 @@ pub fn words(c: &Check) -> String {
         out.push_str(&format!("{}\n", why.words()));
     }
     for cause in &c.causes {
-        out.push_str(&format!("{}\n    {}\n", cause_line(c, cause), cause.formula()));
+        // Labelled: the catalogue's formula with the mistake, never the student's own line.
+        let formula = t!("check-cause-formula", formula = cause.formula());
+        out.push_str(&format!("{}\n    {formula}\n", cause_line(c, cause)));
     }
     if c.first_wrong.is_some() && c.causes.is_empty() {
         out.push_str(&format!("{}\n", t!("check-no-cause")));

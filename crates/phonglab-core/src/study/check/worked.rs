@@ -247,7 +247,14 @@ impl Walk<'_> {
     fn stage(&mut self, stage: Stage) {
         let m = self.scene.eye_from_object();
         match stage {
-            Stage::TransformNormal => self.transform_normal(&m),
+            Stage::TransformNormal => {
+                self.transform_normal(&m);
+                // The cell run again: its normal (normalised the first time) once more.
+                if self.made(Mistake::VectorsCellRunTwice) {
+                    self.normal = unit(self.normal);
+                    self.transform_normal(&m);
+                }
+            }
             Stage::RescaleNormal => {
                 let f = DMat3::from_mat4(m).inverse().row(2).length();
                 self.normal /= f;
@@ -262,6 +269,8 @@ impl Walk<'_> {
                 self.normal = self.emit4("vertexNormal".into(), self.normal);
                 let p = if self.made(Mistake::VertexNotTransformed) {
                     self.scene.vertex.position
+                } else if self.made(Mistake::VectorsCellRunTwice) {
+                    self.times(m, self.times(m, self.scene.vertex.position, false), false)
                 } else {
                     self.times(m, self.scene.vertex.position, false)
                 };
@@ -346,7 +355,7 @@ impl Walk<'_> {
         let to_eye = self.scene.eye_from_light(light);
         let pos = if self.made_at(Mistake::LightNotTransformed, i) {
             light.position
-        } else if self.made_at(Mistake::LightTransformedTwice, i) {
+        } else if self.made_at(Mistake::LightTransformedTwice, i) || self.made(Mistake::VectorsCellRunTwice) {
             to_eye * (to_eye * light.position)
         } else if self.made_at(Mistake::LightByMview, i) {
             self.times(self.scene.eye_from_object(), light.position, false)
