@@ -221,7 +221,9 @@ pub fn said(sides: &Sides) -> String {
                         ("scene", Arg::Text(rgb(sides.scene[side][k]))),
                     ],
                 );
-                return format!("{colour}; {shiny}");
+                let (f, s) = (sides.fitted[side][k], sides.scene[side][k]);
+                let colour_differs = (0..3).any(|c| (f[c] - s[c]).abs() > ABSOLUTE + RELATIVE * s[c].abs());
+                return if colour_differs { format!("{colour}; {shiny}") } else { shiny };
             }
             tr_args(
                 "diagnose-material-colour-differs",
