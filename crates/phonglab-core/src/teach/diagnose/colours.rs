@@ -63,15 +63,36 @@ impl Colours {
 
     /// The terms whose fitted product is not the scene's.
     pub fn differing(&self) -> Vec<usize> {
-        (0..1 + 3 * self.lights)
-            .filter(|&t| {
-                (0..3).any(|c| {
-                    let (f, s) = (self.fitted[t][c], self.scene[t][c]);
-                    (f - s).abs() > ABSOLUTE + RELATIVE * s.abs()
-                })
-            })
-            .collect()
+        (0..1 + 3 * self.lights).filter(|&t| differs(self.fitted[t], self.scene[t])).collect()
     }
+}
+
+/// Does a fitted colour differ from the scene's in some channel, by more than a fit's
+/// noise ([`ABSOLUTE`] and [`RELATIVE`] of it)?
+pub(super) fn differs(fitted: [f64; 3], scene: [f64; 3]) -> bool {
+    (0..3).any(|c| (fitted[c] - scene[c]).abs() > ABSOLUTE + RELATIVE * scene[c].abs())
+}
+
+/// A fitted colour as words show it: two decimals in the reader's decimal mark, never
+/// negative (a colour is not: a fit a little under 0 is 0).
+pub(super) fn rgb_said(v: [f64; 3]) -> String {
+    let [r, g, b] = v.map(|x| x.max(0.0) + 0.0);
+    crate::locale::decimal(&format!("({r:.2}, {g:.2}, {b:.2})"))
+}
+
+/// Each term's factor: `right` drawn `size` square with that term's products alone set to
+/// [`PROBE`] ([`with_products`]), `adjust` then made to the drawing (RGBA8 each).
+pub(super) fn factors(right: &Drawing, size: usize, adjust: impl Fn(&mut Drawing)) -> Result<Vec<Vec<u8>>, SceneError> {
+    let terms = 1 + 3 * right.scene.lights.len();
+    let mut out = Vec::with_capacity(terms);
+    for t in 0..terms {
+        let mut alone = [[0.0; 3]; TERMS];
+        alone[t] = [PROBE; 3];
+        let mut d = with_products(right, &alone);
+        adjust(&mut d);
+        out.push(d.draw(size)?.1);
+    }
+    Ok(out)
 }
 
 /// The differing terms in words, in the reader's language: each term, the product the
@@ -79,11 +100,6 @@ impl Colours {
 /// (0.00, 0.80, 0.00) in the scene").
 pub fn said(c: &Colours) -> String {
     use crate::locale::{Arg, tr, tr_args};
-    // A product is never negative: a fit a little under 0 is 0.
-    let rgb = |v: [f64; 3]| {
-        let [r, g, b] = v.map(|x| x.max(0.0) + 0.0);
-        crate::locale::decimal(&format!("({r:.2}, {g:.2}, {b:.2})"))
-    };
     let list: Vec<String> = c
         .differing()
         .into_iter()
@@ -98,8 +114,8 @@ pub fn said(c: &Colours) -> String {
                 "diagnose-term-differs",
                 &[
                     ("term", Arg::Text(term)),
-                    ("shown", Arg::Text(rgb(c.fitted[t]))),
-                    ("scene", Arg::Text(rgb(c.scene[t]))),
+                    ("shown", Arg::Text(rgb_said(c.fitted[t]))),
+                    ("scene", Arg::Text(rgb_said(c.scene[t]))),
                 ],
             )
         })
@@ -180,12 +196,7 @@ pub fn fit(right: &Drawing, covered: &[bool], image: &[u8], size: usize) -> Resu
     let terms = 1 + 3 * lights;
     let scene = scene_products(right);
     // Each term's factor, drawn alone.
-    let mut factors: Vec<Vec<u8>> = Vec::with_capacity(terms);
-    for t in 0..terms {
-        let mut alone = [[0.0; 3]; TERMS];
-        alone[t] = [PROBE; 3];
-        factors.push(with_products(right, &alone).draw(size)?.1);
-    }
+    let factors = factors(right, size, |_| ())?;
     // Terms whose factors are the same picture (the scene's ambient and the ambient of each
     // light neither attenuated nor a spot: 1 everywhere) cannot be told apart: the first
     // of each such group is fitted for all, the others keep the scene's products.

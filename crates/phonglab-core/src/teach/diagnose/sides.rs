@@ -14,7 +14,7 @@ use glam::DVec4;
 use crate::model::error::SceneError;
 use crate::model::scene::{MAX_LIGHTS, Material, Side};
 
-use super::colours::{ABSOLUTE, CLAMPED, PROBE, RELATIVE, TERMS, aligned, interior, least_squares_held, with_products};
+use super::colours::{CLAMPED, PROBE, aligned, differs, factors, interior, least_squares_held, rgb_said};
 use super::drawing::Drawing;
 
 /// A side's four colours, in the order ambient, diffuse, specular, emission; linear RGB.
@@ -41,9 +41,8 @@ impl Sides {
         let mut out = Vec::new();
         for side in 0..2 {
             for k in 0..4 {
-                let (f, s) = (self.fitted[side][k], self.scene[side][k]);
                 let shiny = k == 2 && self.shininess[side].0 != self.shininess[side].1;
-                if shiny || (0..3).any(|c| (f[c] - s[c]).abs() > ABSOLUTE + RELATIVE * s[c].abs()) {
+                if shiny || differs(self.fitted[side][k], self.scene[side][k]) {
                     out.push((side, k));
                 }
             }
@@ -139,17 +138,11 @@ fn fit_with(
     scene: &[Four; 2],
 ) -> Result<([Four; 2], f64), SceneError> {
     let s = &right.scene;
-    let terms = 1 + 3 * s.lights.len();
     // Each term's factor, drawn alone with white materials of the sides' shininess.
-    let mut factors: Vec<Vec<u8>> = Vec::with_capacity(terms);
-    for t in 0..terms {
-        let mut alone = [[0.0; 3]; TERMS];
-        alone[t] = [PROBE; 3];
-        let mut d = with_products(right, &alone);
+    let factors = factors(right, size, |d| {
         d.scene.material.shininess = shininess[0];
         d.scene.back_material = Some(Material { shininess: shininess[1], ..d.scene.material.clone() });
-        factors.push(d.draw(size)?.1);
-    }
+    })?;
     let mut fitted = *scene;
     let mut residual = 0.0;
     let inside = interior(covered, size);
@@ -196,44 +189,31 @@ fn fit_with(
 /// picture, (0.80, 0.60, 0.20) in the scene").
 pub fn said(sides: &Sides) -> String {
     use crate::locale::{Arg, tr, tr_args};
-    let rgb = |v: [f64; 3]| {
-        let [r, g, b] = v.map(|x| x.max(0.0) + 0.0);
-        crate::locale::decimal(&format!("({r:.2}, {g:.2}, {b:.2})"))
-    };
     let list: Vec<String> = sides
         .differing()
         .into_iter()
         .map(|(side, k)| {
-            let where_ = tr(if side == 0 { "diagnose-side-front" } else { "diagnose-side-back" });
-            let (shown, own) = sides.shininess[side];
-            if k == 2 && shown != own {
-                let number = |v: f64| Arg::Text(crate::locale::decimal(&super::values::shown(v)));
-                let shiny = tr_args(
-                    "diagnose-material-shininess-differs",
-                    &[("which", Arg::Text(where_.clone())), ("shown", number(shown)), ("scene", number(own))],
-                );
-                let colour = tr_args(
-                    "diagnose-material-colour-differs",
-                    &[
-                        ("name", Arg::Text(NAMES[k].to_owned())),
-                        ("which", Arg::Text(where_)),
-                        ("shown", Arg::Text(rgb(sides.fitted[side][k]))),
-                        ("scene", Arg::Text(rgb(sides.scene[side][k]))),
-                    ],
-                );
-                let (f, s) = (sides.fitted[side][k], sides.scene[side][k]);
-                let colour_differs = (0..3).any(|c| (f[c] - s[c]).abs() > ABSOLUTE + RELATIVE * s[c].abs());
-                return if colour_differs { format!("{colour}; {shiny}") } else { shiny };
-            }
-            tr_args(
+            let which = tr(if side == 0 { "diagnose-side-front" } else { "diagnose-side-back" });
+            let (fitted, scene) = (sides.fitted[side][k], sides.scene[side][k]);
+            let colour = tr_args(
                 "diagnose-material-colour-differs",
                 &[
                     ("name", Arg::Text(NAMES[k].to_owned())),
-                    ("which", Arg::Text(where_)),
-                    ("shown", Arg::Text(rgb(sides.fitted[side][k]))),
-                    ("scene", Arg::Text(rgb(sides.scene[side][k]))),
+                    ("which", Arg::Text(which.clone())),
+                    ("shown", Arg::Text(rgb_said(fitted))),
+                    ("scene", Arg::Text(rgb_said(scene))),
                 ],
-            )
+            );
+            let (shown, own) = sides.shininess[side];
+            if k != 2 || shown == own {
+                return colour;
+            }
+            let number = |v: f64| Arg::Text(crate::locale::decimal(&super::values::shown(v)));
+            let shiny = tr_args(
+                "diagnose-material-shininess-differs",
+                &[("which", Arg::Text(which)), ("shown", number(shown)), ("scene", number(own))],
+            );
+            if differs(fitted, scene) { format!("{colour}; {shiny}") } else { shiny }
         })
         .collect();
     list.join("; ")
