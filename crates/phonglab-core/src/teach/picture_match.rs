@@ -17,6 +17,10 @@ pub struct Match {
     pub worst: (usize, usize),
     /// How much it differs there: levels past the best neighbour, the largest channel.
     pub worst_levels: u8,
+    /// How far it is, continuously: the mean over the object's pixels of the levels by which
+    /// a pixel misses its best neighbour past [`TOLERANCE`] (noise within it costs nothing).
+    /// A search for the value a picture shows descends on it where `score` is flat.
+    pub miss: f64,
 }
 
 /// The largest channel difference of two RGBA8 pixels.
@@ -46,6 +50,7 @@ fn nearest(a: &[u8], b: &[u8], size: usize, p: usize) -> u8 {
 /// RGBA8, `size` x `size`.
 pub fn compare(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Match {
     let (mut pixels, mut matching, mut worst, mut worst_levels) = (0usize, 0usize, (0, 0), 0u8);
+    let mut missed = 0u64;
     for p in 0..size * size {
         let in_image = apart(&image[p * 4..p * 4 + 3], &bg) > TOLERANCE;
         if !covered[p] && !in_image {
@@ -53,33 +58,16 @@ pub fn compare(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size
         }
         pixels += 1;
         let levels = nearest(image, picture, size, p).max(nearest(picture, image, size, p));
+        missed += u64::from(levels.saturating_sub(TOLERANCE));
         if levels <= TOLERANCE {
             matching += 1;
         } else if levels > worst_levels {
             (worst, worst_levels) = ((p % size, p / size), levels);
         }
     }
-    let score = if pixels == 0 { 1.0 } else { matching as f64 / pixels as f64 };
-    Match { score, pixels, worst, worst_levels }
-}
-
-/// How far `picture` is from `image`, continuously: the mean over the object's pixels (as
-/// [`compare`] counts them) of the levels by which a pixel misses its best neighbour in the
-/// other past [`TOLERANCE`] (the way [`compare`] measures a pixel; noise within it costs
-/// nothing). A search for the value a picture shows descends on it where the share of
-/// matching pixels is flat.
-pub fn mean_miss(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> f64 {
-    let (mut pixels, mut sum) = (0usize, 0u64);
-    for p in 0..size * size {
-        let in_image = apart(&image[p * 4..p * 4 + 3], &bg) > TOLERANCE;
-        if !covered[p] && !in_image {
-            continue;
-        }
-        pixels += 1;
-        let miss = nearest(image, picture, size, p).max(nearest(picture, image, size, p));
-        sum += u64::from(miss.saturating_sub(TOLERANCE));
-    }
-    if pixels == 0 { 0.0 } else { sum as f64 / pixels as f64 }
+    let (score, miss) =
+        if pixels == 0 { (1.0, 0.0) } else { (matching as f64 / pixels as f64, missed as f64 / pixels as f64) };
+    Match { score, pixels, worst, worst_levels, miss }
 }
 
 /// The difference image of `picture` and `image` (RGBA8, opaque): black where they agree,
@@ -106,7 +94,7 @@ mod tests {
             (0..9).flat_map(|p| if p == bright { [200, 200, 200, 255] } else { [100, 100, 100, 255] }).collect()
         };
         let covered = [true; 9];
-        assert_eq!(mean_miss(&grey(4), &covered, &grey(8), [0, 0, 0], 3), 0.0);
+        assert_eq!(compare(&grey(4), &covered, &grey(8), [0, 0, 0], 3).miss, 0.0);
         // Six levels more on the left column (three pixels of nine): three past the
         // tolerance, a mean of 1; two levels more is noise within it.
         let flat = grey(usize::MAX);
@@ -114,11 +102,11 @@ mod tests {
         for p in [0, 3, 6] {
             brighter[p * 4 + 1] += 6;
         }
-        assert_eq!(mean_miss(&flat, &covered, &brighter, [0, 0, 0], 3), 1.0);
+        assert_eq!(compare(&flat, &covered, &brighter, [0, 0, 0], 3).miss, 1.0);
         for p in [0, 3, 6] {
             brighter[p * 4 + 1] -= 4;
         }
-        assert_eq!(mean_miss(&flat, &covered, &brighter, [0, 0, 0], 3), 0.0);
+        assert_eq!(compare(&flat, &covered, &brighter, [0, 0, 0], 3).miss, 0.0);
     }
 
     fn square(size: usize, at: (usize, usize), colour: [u8; 3], bg: [u8; 3]) -> (Vec<u8>, Vec<bool>) {

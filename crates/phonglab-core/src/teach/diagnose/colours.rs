@@ -279,7 +279,7 @@ pub fn fit(right: &Drawing, covered: &[bool], image: &[u8], size: usize) -> Resu
         let bg = right.background8();
         let miss = |products: &[[f64; 3]; TERMS]| -> Result<f64, SceneError> {
             let (_, drawn, drawn_covered) = with_products(right, products).draw(size)?;
-            Ok(crate::teach::picture_match::mean_miss(&drawn, &drawn_covered, original, bg, size))
+            Ok(crate::teach::picture_match::compare(&drawn, &drawn_covered, original, bg, size).miss)
         };
         if miss(&one_change[b])? <= miss(&fitted)? {
             fitted = one_change[b];

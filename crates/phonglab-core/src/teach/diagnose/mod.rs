@@ -27,7 +27,7 @@ pub use sides::Sides;
 
 use crate::model::error::SceneError;
 use crate::raster::render::Renderer;
-use crate::teach::picture_match::{Match, compare, mean_miss};
+use crate::teach::picture_match::{Match, compare};
 
 /// The share of the object's pixels the right picture must explain for "right". Measured
 /// (docs/guide.md): the right picture shifted a pixel with 8-bit noise of ±2 scores 1;
@@ -102,9 +102,6 @@ pub struct Tried {
     /// How its picture matches the image; `None` when this scene cannot show it (its
     /// picture is the right one).
     pub matched: Option<Match>,
-    /// The mean levels its picture's pixels miss the image's by past the tolerance
-    /// ([`mean_miss`]): the order of mistakes whose pictures explain the same share.
-    pub miss: f64,
 }
 
 /// What `diagnose` found.
@@ -162,9 +159,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         // A mistake whose picture the right one explains cannot be seen in this scene.
         let visible = compare(&wrong, &wrong_covered, &picture, bg, size).score < RIGHT_AT;
         let matched = visible.then(|| compare(&wrong, &wrong_covered, image, bg, size));
-        // Among mistakes that explain the same share, the one whose pixels miss by least.
-        let miss = if visible { mean_miss(&wrong, &wrong_covered, image, bg, size) } else { f64::INFINITY };
-        tried.push(Tried { mistake, at, matched, miss });
+        tried.push(Tried { mistake, at, matched });
     }
     Ok(verdict_of(exact, tried, picture, renderer))
 }
@@ -172,7 +167,9 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
 /// The verdict from the right picture's match and each mistake's.
 fn verdict_of(exact: Match, mut tried: Vec<Tried>, picture: Vec<u8>, renderer: Renderer) -> Diagnosis {
     let key = |t: &Tried| t.matched.map_or(-1.0, |m| m.score);
-    tried.sort_by(|a, b| key(b).total_cmp(&key(a)).then(a.miss.total_cmp(&b.miss)));
+    // Among mistakes that explain the same share, the one whose pixels miss by least first.
+    let miss = |t: &Tried| t.matched.map_or(f64::INFINITY, |m| m.miss);
+    tried.sort_by(|a, b| key(b).total_cmp(&key(a)).then(miss(a).total_cmp(&miss(b))));
     let causes: Vec<Tried> =
         tried.iter().filter(|t| key(t) >= EXPLAINED_AT && key(t) >= exact.score + MARGIN).copied().collect();
     let verdict = if exact.score >= RIGHT_AT {

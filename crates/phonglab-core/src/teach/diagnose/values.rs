@@ -7,12 +7,12 @@
 //! Each number the scene uses is tried over a grid of the values a program could give it
 //! ([`grid`]), then refined between the best value's neighbours by golden-section search,
 //! the picture drawn at each and measured against the student's by the mean levels its
-//! pixels miss by, a pixel's shift allowed ([`mean_miss`]). A value is kept when its picture is closer than the
+//! pixels miss by, a pixel's shift allowed (`picture_match::Match::miss`). A value is kept when its picture is closer than the
 //! scene's own by [`CLOSER`]; it is then drawn and scored as every mistake is.
 
 use crate::model::error::SceneError;
 use crate::model::scene::{Light, MAX_LIGHTS};
-use crate::teach::picture_match::mean_miss;
+use crate::teach::picture_match::compare;
 
 use super::drawing::Drawing;
 
@@ -127,7 +127,7 @@ fn fit_one(
         let mut d = right.clone();
         set(&mut d, v);
         let (_, picture, covered) = d.draw(size)?;
-        Ok(mean_miss(&picture, &covered, image, bg, size))
+        Ok(compare(&picture, &covered, image, bg, size).miss)
     };
     let own_distance = measure(own)?;
     let mut tried: Vec<(f64, f64)> = Vec::with_capacity(grid.len());
