@@ -7,7 +7,7 @@ use phonglab_core::mesh::Mesh;
 use phonglab_core::mesh::cylinder::glu_cylinder;
 use phonglab_core::mesh::sphere::glu_sphere;
 use phonglab_core::model::scene::{Light, LightPlacement, NormalMode, Scene};
-use phonglab_core::teach::diagnose::{At, Drawing, MISTAKES, RIGHT_AT, Scope, Verdict, diagnose, offered};
+use phonglab_core::teach::diagnose::{At, Drawing, MISTAKES, RIGHT_AT, Scope, Tried, Verdict, diagnose, offered};
 use phonglab_core::teach::picture_match::compare;
 use phonglab_core::{EvalOptions, Rules, ShadingMode};
 
@@ -268,6 +268,23 @@ const FITTED: [&str; 8] = [
     "shininess-differs",
 ];
 
+/// `wrong` drawn, moved a pixel with noise and diagnosed against `right`: the verdict is
+/// wrong and mistake `id` is named first (or tied first). Its cause; `what` names the case
+/// in a failure, with the three best causes.
+fn named_first(right: &Drawing, wrong: &Drawing, id: &str, what: &str) -> Tried {
+    let (_, rgba, _) = wrong.draw(SIZE).expect("drawn");
+    let found = diagnose(right, &shifted_and_noised(&rgba, right.background8()), SIZE).expect("diagnosed");
+    let line = format!(
+        "{what}: {:?}",
+        found.tried.iter().take(3).map(|t| (t.label(), t.matched.map(|m| m.score))).collect::<Vec<_>>()
+    );
+    assert_eq!(found.verdict, Verdict::Wrong, "{line}");
+    let best = found.causes[0].matched.map(|m| m.score);
+    let it = *found.causes.iter().find(|t| t.id() == id).unwrap_or_else(|| panic!("{line}"));
+    assert_eq!(it.matched.map(|m| m.score), best, "{line}");
+    it
+}
+
 /// A colour mistake: its words and the change it makes to the scene.
 type Change = (&'static str, fn(&mut Scene));
 
@@ -289,16 +306,7 @@ fn any_colour_mistake_is_named_with_the_colours_the_picture_shows() {
     for (what, change) in changes {
         let mut d = right.clone();
         change(&mut d.scene);
-        let (_, rgba, _) = d.draw(SIZE).expect("drawn");
-        let found = diagnose(&right, &shifted_and_noised(&rgba, right.background8()), SIZE).expect("diagnosed");
-        let line = format!(
-            "{what}: {:?}",
-            found.tried.iter().take(3).map(|t| (t.label(), t.matched.map(|m| m.score))).collect::<Vec<_>>()
-        );
-        assert_eq!(found.verdict, Verdict::Wrong, "{line}");
-        let best = found.causes[0].matched.map(|m| m.score);
-        let it = found.causes.iter().find(|t| t.id() == "colours-differ").unwrap_or_else(|| panic!("{line}"));
-        assert_eq!(it.matched.map(|m| m.score), best, "{line}");
+        let it = named_first(&right, &d, "colours-differ", what);
         let c = it.at.colours.expect("fitted");
         // Each product the picture shows is the changed scene's, where the picture shows it.
         let wrong = phonglab_core::teach::diagnose::Drawing { scene: d.scene.clone(), ..right.clone() };
@@ -334,16 +342,7 @@ fn the_back_materials_calls_given_to_the_front_are_named_with_each_sides_colours
     let mut wrong = right.clone();
     wrong.scene.material = right.scene.back_material.clone().expect("set");
     wrong.scene.back_material = Some(phonglab_core::model::scene::Material::default());
-    let (_, rgba, _) = wrong.draw(SIZE).expect("drawn");
-    let found = diagnose(&right, &shifted_and_noised(&rgba, right.background8()), SIZE).expect("diagnosed");
-    let line = format!(
-        "{:?}",
-        found.tried.iter().take(3).map(|t| (t.label(), t.matched.map(|m| m.score))).collect::<Vec<_>>()
-    );
-    assert_eq!(found.verdict, Verdict::Wrong, "{line}");
-    let best = found.causes[0].matched.map(|m| m.score);
-    let it = found.causes.iter().find(|t| t.id() == "materials-differ").unwrap_or_else(|| panic!("{line}"));
-    assert_eq!(it.matched.map(|m| m.score), best, "{line}");
+    let it = named_first(&right, &wrong, "materials-differ", "the back's calls given to GL_FRONT");
     let sides = it.at.sides.expect("fitted");
     for (c, want) in [0.2, 0.4, 0.9].into_iter().enumerate() {
         assert!((sides.fitted[0][1][c] - want).abs() < 0.04, "front diffuse {:?}", sides.fitted[0][1]);
@@ -366,16 +365,7 @@ fn any_single_number_mistake_is_named_with_the_value_the_picture_shows() {
     for (id, value, change) in cases {
         let mut d = right.clone();
         change(&mut d.scene, value);
-        let (_, rgba, _) = d.draw(SIZE).expect("drawn");
-        let found = diagnose(&right, &shifted_and_noised(&rgba, right.background8()), SIZE).expect("diagnosed");
-        let line = format!(
-            "{id}: {:?}",
-            found.tried.iter().take(3).map(|t| (t.label(), t.matched.map(|m| m.score))).collect::<Vec<_>>()
-        );
-        assert_eq!(found.verdict, Verdict::Wrong, "{line}");
-        let best = found.causes[0].matched.map(|m| m.score);
-        let it = found.causes.iter().find(|t| t.id() == id).unwrap_or_else(|| panic!("{line}"));
-        assert_eq!(it.matched.map(|m| m.score), best, "{line}");
+        let it = named_first(&right, &d, id, id);
         let fitted = match id {
             "shininess-differs" => it.at.values.shininess,
             "spot-cutoff-differs" => it.at.values.lights[0][0],
