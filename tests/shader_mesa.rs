@@ -54,6 +54,7 @@ impl Sample {
             mode: phonglab_core::ShadingMode::of(shading, Default::default()),
             background: self.background,
             cull_back: false,
+            depth_test: true,
             options: self.options,
         }
     }

@@ -52,7 +52,8 @@ fn right_drawing(a: &DiagnoseArgs, outputs: &[&Path]) -> Result<Drawing> {
     let loaded = input.load(outputs)?;
     let job = loaded.job();
     let (vertices, triangles) = (job.mesh.positions.len() as u64, job.mesh.triangle_count() as u64);
-    let drawing = Drawing::of(&job);
+    let mut drawing = Drawing::of(&job);
+    drawing.inside.clone_from(&loaded.inside);
     let what = t!("budget-what-diagnose", size = a.size, count = drawings_at_most(&drawing));
     let needed = crate::io::budget::diagnose_bytes(u64::from(a.size), vertices, triangles);
     crate::io::budget::check(&what, needed).map_err(anyhow::Error::msg)?;

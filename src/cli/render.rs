@@ -132,6 +132,9 @@ pub struct Loaded {
     options: EvalOptions,
     /// Notes on the mesh read (an OBJ's repairs).
     pub notes: Vec<String>,
+    /// The mesh as GLU draws it inside out, where the object is a GLU quadric (for
+    /// `diagnose`'s `quadric-inside`).
+    pub inside: Option<Mesh>,
 }
 
 impl Loaded {
@@ -144,6 +147,7 @@ impl Loaded {
             mode: self.mode,
             background: self.background,
             cull_back: self.cull_back,
+            depth_test: true,
             options: self.options,
         }
     }
@@ -177,7 +181,17 @@ impl ShadedInput {
             let job = phonglab_core::shaded::bench_job(&scene, &mesh, shading.unwrap_or(Shading::Gouraud));
             let (clip_from_object, mode, background) = (job.clip_from_object, job.mode, job.background);
             let options = EvalOptions::with_pow(self.pow);
-            Loaded { scene, mesh, clip_from_object, mode, background, cull_back: self.cull, options, notes: Vec::new() }
+            Loaded {
+                scene,
+                mesh,
+                clip_from_object,
+                mode,
+                background,
+                cull_back: self.cull,
+                options,
+                notes: Vec::new(),
+                inside: None,
+            }
         } else {
             let mut doc = match (&self.scene, self.preset.as_deref()) {
                 (Some(p), _) => scene_file(p)?,
@@ -227,6 +241,7 @@ impl ShadedInput {
                 cull_back: self.cull,
                 options,
                 notes,
+                inside: doc.view.mesh_inside(),
             }
         };
         within_budget(&loaded.job(), self.size)?;

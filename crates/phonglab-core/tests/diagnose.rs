@@ -5,7 +5,7 @@
 use glam::{DMat4, DVec3, DVec4};
 use phonglab_core::mesh::Mesh;
 use phonglab_core::mesh::cylinder::glu_cylinder;
-use phonglab_core::mesh::sphere::glu_sphere;
+use phonglab_core::mesh::sphere::{glu_sphere, glu_sphere_inside};
 use phonglab_core::model::scene::{Light, LightPlacement, NormalMode, Scene};
 use phonglab_core::teach::diagnose::{At, Drawing, MISTAKES, RIGHT_AT, Scope, Tried, Verdict, diagnose, offered};
 use phonglab_core::teach::picture_match::compare;
@@ -39,7 +39,7 @@ fn sphere_scene() -> Drawing {
     s.lights = vec![l];
     s.eye_from_world =
         phonglab_core::transform::try_look_at(DVec3::new(-1.5, 0.8, 2.5), DVec3::ZERO, DVec3::Y).expect("a camera");
-    drawing(s, glu_sphere(1.0, 16, 16))
+    Drawing { inside: Some(glu_sphere_inside(1.0, 16, 16)), ..drawing(s, glu_sphere(1.0, 16, 16)) }
 }
 
 /// An open cylinder seen from above, its inside lit from both sides.
@@ -82,6 +82,8 @@ fn drawing(scene: Scene, mesh: Mesh) -> Drawing {
         mode: ShadingMode::Phong,
         background: [0.1, 0.1, 0.15],
         options: EvalOptions::default(),
+        depth_test: true,
+        inside: None,
     }
 }
 
@@ -169,7 +171,9 @@ fn shipped(name: &str) -> Drawing {
     let text = std::fs::read_to_string(format!("{path}{name}.toml")).expect("a shipped scene");
     let doc = phonglab_core::Document::from_toml(&text).expect("a scene");
     let mesh = doc.view.mesh();
-    Drawing::of(&doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh))
+    let mut d = Drawing::of(&doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    d.inside = doc.view.mesh_inside();
+    d
 }
 
 /// The three lights with a second attenuated light (the red one), and the sphere under a

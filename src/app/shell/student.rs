@@ -191,7 +191,8 @@ fn check_picture(state: &mut AppState, bytes: &[u8], path: &Path) {
     let mesh = state.doc.view.mesh();
     // As `phonglab diagnose` draws it: the exact power, whatever the window's setting (the
     // student's OpenGL computes the exact one).
-    let right = Drawing::of(&state.doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    let mut right = Drawing::of(&state.doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    right.inside = state.doc.view.mesh_inside();
     match diagnose(&right, &image, PICTURE_SIZE) {
         Ok(d) => {
             let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();

@@ -8,6 +8,25 @@ use super::Mesh;
 /// A cylinder with radii `base` (z = 0) and `top` (z = height); `2 slices stacks`
 /// triangles, plus `2 slices` with caps.
 pub fn glu_cylinder(base: f32, top: f32, height: f32, slices: u32, stacks: u32, caps: bool) -> Mesh {
+    glu_cylinder_oriented(base, top, height, [slices, stacks], caps, false)
+}
+
+/// The cylinder as gluCylinder (and gluDisk for the caps) draws it after
+/// `gluQuadricOrientation(q, GLU_INSIDE)`: the same vertices, each normal pointing inwards,
+/// each quad strip sent with its pairs the other way round (each quad split along its other
+/// diagonal) and each triangle wound the other way.
+pub fn glu_cylinder_inside(base: f32, top: f32, height: f32, slices: u32, stacks: u32, caps: bool) -> Mesh {
+    glu_cylinder_oriented(base, top, height, [slices, stacks], caps, true)
+}
+
+fn glu_cylinder_oriented(
+    base: f32,
+    top: f32,
+    height: f32,
+    [slices, stacks]: [u32; 2],
+    caps: bool,
+    inside: bool,
+) -> Mesh {
     let slices = slices.max(3);
     let stacks = stacks.max(1);
     let mut m = Mesh::default();
@@ -28,7 +47,9 @@ pub fn glu_cylinder(base: f32, top: f32, height: f32, slices: u32, stacks: u32, 
         }
     }
     for w in rows.windows(2) {
-        let (a, b) = (w[0], w[1]);
+        // GLU_INSIDE sends each pair of the strip the other way round: the quads' corners
+        // with the two rows exchanged.
+        let (a, b) = if inside { (w[1], w[0]) } else { (w[0], w[1]) };
         for i in 0..slices {
             m.triangles.push([a + i + 1, a + i, b + i]);
             m.triangles.push([a + i + 1, b + i, b + i + 1]);
@@ -43,12 +64,17 @@ pub fn glu_cylinder(base: f32, top: f32, height: f32, slices: u32, stacks: u32, 
                 m.push_vertex(Vec3::new(r * s as f32, r * c as f32, z), n);
             }
             for i in 0..slices {
-                if n.z > 0.0 {
+                if (n.z > 0.0) != inside {
                     m.triangles.push([centre, first + i + 1, first + i]);
                 } else {
                     m.triangles.push([centre, first + i, first + i + 1]);
                 }
             }
+        }
+    }
+    if inside {
+        for n in &mut m.normals {
+            *n = -*n;
         }
     }
     m

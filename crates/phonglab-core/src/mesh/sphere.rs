@@ -12,6 +12,18 @@ use super::Mesh;
 
 /// A sphere of `radius` about the origin (slices >= 3, stacks >= 2).
 pub fn glu_sphere(radius: f32, slices: u32, stacks: u32) -> Mesh {
+    glu_sphere_oriented(radius, slices, stacks, false)
+}
+
+/// The sphere as gluSphere draws it after `gluQuadricOrientation(q, GLU_INSIDE)`: the same
+/// vertices, each normal pointing inwards, each quad strip sent with its pairs of vertices
+/// the other way round (so each quad is split along its other diagonal) and each triangle
+/// wound the other way (facing inwards).
+pub fn glu_sphere_inside(radius: f32, slices: u32, stacks: u32) -> Mesh {
+    glu_sphere_oriented(radius, slices, stacks, true)
+}
+
+fn glu_sphere_oriented(radius: f32, slices: u32, stacks: u32, inside: bool) -> Mesh {
     let slices = slices.max(3);
     let stacks = stacks.max(2);
     let mut m = Mesh::default();
@@ -35,14 +47,15 @@ pub fn glu_sphere(radius: f32, slices: u32, stacks: u32) -> Mesh {
     // With theta increasing, (sin, cos) turns clockwise seen from +z; so (top, i+1, i) is CCW from outside.
     let r1 = rings[0];
     for i in 0..slices {
-        m.triangles.push([top, r1 + i + 1, r1 + i]);
+        m.triangles.push(if inside { [top, r1 + i, r1 + i + 1] } else { [top, r1 + i + 1, r1 + i] });
     }
     // GLU sends each band as a quad strip from the lower ring's vertex to the upper's
     // (b_i, a_i, b_i+1, a_i+1, ...), and OpenGL (Mesa's draw module, last-vertex convention)
     // splits quad (b_i, a_i, a_i+1, b_i+1) along b_i to a_i+1: (b_i+1, b_i, a_i+1) and
-    // (b_i, a_i, a_i+1). The diagonal shows in Gouraud on a coarse sphere.
+    // (b_i, a_i, a_i+1). The diagonal shows in Gouraud on a coarse sphere. GLU_INSIDE sends
+    // each pair the other way round (a_i, b_i, ...): the same split with the rings exchanged.
     for w in rings.windows(2) {
-        let (a, b) = (w[0], w[1]);
+        let (a, b) = if inside { (w[1], w[0]) } else { (w[0], w[1]) };
         for i in 0..slices {
             m.triangles.push([b + i + 1, b + i, a + i + 1]);
             m.triangles.push([b + i, a + i, a + i + 1]);
@@ -50,7 +63,12 @@ pub fn glu_sphere(radius: f32, slices: u32, stacks: u32) -> Mesh {
     }
     let rl = *rings.last().unwrap_or(&r1);
     for i in 0..slices {
-        m.triangles.push([bottom, rl + i, rl + i + 1]);
+        m.triangles.push(if inside { [bottom, rl + i + 1, rl + i] } else { [bottom, rl + i, rl + i + 1] });
+    }
+    if inside {
+        for n in &mut m.normals {
+            *n = -*n;
+        }
     }
     m
 }

@@ -295,30 +295,48 @@ impl View {
     /// teapot 0.5, cylinder r 0.3 h 0.5, centred), tessellated as the view says.
     pub fn mesh(&self) -> crate::mesh::Mesh {
         let m = match self.object {
-            ObjectKind::Sphere => crate::mesh::sphere::glu_sphere(0.5, self.sphere_slices, self.sphere_stacks),
+            ObjectKind::Sphere | ObjectKind::Cylinder => self.quadric(false).unwrap_or_default(),
             ObjectKind::Teapot => crate::mesh::teapot::glut_teapot(0.5, self.teapot_grid),
+            // Validated when the view was accepted; a file that went away since shows
+            // nothing rather than failing.
+            ObjectKind::Obj => self.obj_mesh().map(|o| o.mesh.clone()).unwrap_or_default(),
+        };
+        if self.demo_normals { m.with_position_normals() } else { m }
+    }
+
+    /// The mesh as GLU draws it after `gluQuadricOrientation(q, GLU_INSIDE)` (normals
+    /// inwards, quads split along their other diagonal, triangles wound the other way);
+    /// `None` for an object that is not a GLU quadric (the teapot, an OBJ file).
+    pub fn mesh_inside(&self) -> Option<crate::mesh::Mesh> {
+        let m = self.quadric(true)?;
+        Some(if self.demo_normals { m.with_position_normals() } else { m })
+    }
+
+    /// The sphere or the cylinder, facing out or (`inside`) in; `None` for other objects.
+    fn quadric(&self, inside: bool) -> Option<crate::mesh::Mesh> {
+        use crate::mesh::{cylinder, sphere};
+        match self.object {
+            ObjectKind::Sphere if inside => {
+                Some(sphere::glu_sphere_inside(0.5, self.sphere_slices, self.sphere_stacks))
+            }
+            ObjectKind::Sphere => Some(sphere::glu_sphere(0.5, self.sphere_slices, self.sphere_stacks)),
             ObjectKind::Cylinder => {
-                let mut c = crate::mesh::cylinder::glu_cylinder(
-                    0.3,
-                    0.3,
-                    0.5,
-                    self.cylinder_slices,
-                    self.cylinder_stacks,
-                    self.cylinder_caps,
-                );
+                let (slices, stacks, caps) = (self.cylinder_slices, self.cylinder_stacks, self.cylinder_caps);
+                let mut c = if inside {
+                    cylinder::glu_cylinder_inside(0.3, 0.3, 0.5, slices, stacks, caps)
+                } else {
+                    cylinder::glu_cylinder(0.3, 0.3, 0.5, slices, stacks, caps)
+                };
                 // gluCylinder runs from z = 0 to z = h; centred unless drawn as the demo does.
                 if self.cylinder_centered {
                     for p in &mut c.positions {
                         p.z -= 0.25;
                     }
                 }
-                c
+                Some(c)
             }
-            // Validated when the view was accepted; a file that went away since shows
-            // nothing rather than failing.
-            ObjectKind::Obj => self.obj_mesh().map(|o| o.mesh.clone()).unwrap_or_default(),
-        };
-        if self.demo_normals { m.with_position_normals() } else { m }
+            ObjectKind::Teapot | ObjectKind::Obj => None,
+        }
     }
 
     /// The OBJ file's mesh and notes (read once per modification), or why it cannot be used.

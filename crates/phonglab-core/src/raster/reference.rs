@@ -113,8 +113,10 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
         .collect();
     let eye_pos: Vec<DVec3> = lit.iter().map(|l| l.pos_in_eye).collect();
 
-    // Front faces first, then back faces (as the fast renderer draws them), each in mesh order.
-    for pass_front in [true, false] {
+    // Front faces first, then back faces (as the fast renderer draws them), each in mesh
+    // order; without the depth test, every triangle in mesh order, the last drawn kept.
+    let passes: &[Option<bool>] = if job.depth_test { &[Some(true), Some(false)] } else { &[None] };
+    for &pass_front in passes {
         for tri in &mesh.triangles {
             let [i0, i1, i2] = tri.map(|i| i as usize);
             // Left out whole if a corner is behind the eye or beyond the near or far plane.
@@ -129,7 +131,7 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
             }
             // y grows down the image, so OpenGL's counter-clockwise is negative here.
             let front = area < 0;
-            if front != pass_front || (job.cull_back && !front) {
+            if pass_front.is_some_and(|f| f != front) || (job.cull_back && !front) {
                 continue;
             }
             // Ordered so that the area is positive: the edge functions are then >= 0 inside.
@@ -161,10 +163,12 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
                     let screen = e.map(|e| e as f64 / area as f64);
                     let z: f64 = (0..3).map(|k| screen[k] * v[order[k]].2 as f64).sum();
                     let at = py as usize * width + px as usize;
-                    if z >= depth[at] {
-                        continue;
+                    if job.depth_test {
+                        if z >= depth[at] {
+                            continue;
+                        }
+                        depth[at] = z;
                     }
-                    depth[at] = z;
                     // Perspective-correct: each weight over its corner's w, renormalised.
                     let over_w: [f64; 3] = [0, 1, 2].map(|k| screen[k] * v[order[k]].3 as f64);
                     let sum: f64 = over_w.iter().sum();

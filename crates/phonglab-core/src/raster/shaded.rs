@@ -29,6 +29,7 @@ impl ShadedSetup {
             mode: ShadingMode::of(self.view.shading, self.view.flat_normal),
             background: self.view.background,
             cull_back: false,
+            depth_test: true,
             options: self.options,
         }
     }
@@ -89,6 +90,7 @@ pub fn bench_job<'a>(
         mode: ShadingMode::of(shading, crate::model::view::FlatNormal::Face),
         background: crate::model::presets::BENCH_BACKGROUND,
         cull_back: false,
+        depth_test: true,
         options: crate::equation::lighting::EvalOptions::default(),
     }
 }

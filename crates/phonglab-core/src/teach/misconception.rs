@@ -146,6 +146,7 @@ impl Setup {
             mode: self.mode,
             background: BACKGROUND,
             cull_back: false,
+            depth_test: true,
             options: EvalOptions::default(),
         }
     }

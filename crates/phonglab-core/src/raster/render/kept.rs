@@ -55,6 +55,7 @@ struct Drawn {
     height: usize,
     mode: Option<ShadingMode>,
     cull_back: bool,
+    depth_test: bool,
     triangles: Vec<[u32; 3]>,
     /// A bit for each rasterised triangle the frame shows at some pixel (made on the first
     /// frame that needs it: [`resolve::seen_triangles`]).
@@ -116,7 +117,8 @@ impl Drawn {
             .par_chunks_mut(TRIANGLE_GRAIN)
             .zip(from.par_chunks(TRIANGLE_GRAIN))
             .for_each(|(to, from)| to.copy_from_slice(from));
-        (self.width, self.height, self.mode, self.cull_back) = (width, height, Some(job.mode), job.cull_back);
+        (self.width, self.height, self.mode, self.cull_back, self.depth_test) =
+            (width, height, Some(job.mode), job.cull_back, job.depth_test);
         self.seen = None;
         self.valid = true;
     }
@@ -152,7 +154,8 @@ impl Drawn {
                     .all(|(a, b)| a == b)
         };
         self.valid
-            && (self.width, self.height, self.mode, self.cull_back) == (width, height, Some(job.mode), job.cull_back)
+            && (self.width, self.height, self.mode, self.cull_back, self.depth_test)
+                == (width, height, Some(job.mode), job.cull_back, job.depth_test)
             && kept == width * height
             && same_triangles()
     }
@@ -192,6 +195,7 @@ mod tests {
             (job, true, "a vertex moved"),
             (bench_job(&scene, &turned, Shading::Gouraud), false, "a triangle's corners turned"),
             (Job { cull_back: true, ..job }, false, "culling"),
+            (Job { depth_test: false, ..job }, false, "the depth test"),
             (bench_job(&scene, &mesh, Shading::Phong), false, "the shading"),
         ];
         for (other, moved, what) in others {

@@ -63,6 +63,9 @@ pub struct Job<'a> {
     pub background: [f32; 3],
     /// Skip triangles facing away (OpenGL's GL_CULL_FACE with GL_BACK).
     pub cull_back: bool,
+    /// Keep the nearest triangle at each pixel (`GL_DEPTH_TEST`); without it, the last one
+    /// drawn (in mesh order) covers the ones before, as OpenGL draws with the test off.
+    pub depth_test: bool,
     /// The power function and other numerical choices.
     pub options: EvalOptions,
 }

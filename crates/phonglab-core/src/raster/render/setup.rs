@@ -246,11 +246,34 @@ fn trivially_rejected(c: &[Vec4; 3]) -> bool {
     outcode(c[0]) & outcode(c[1]) & outcode(c[2]) != 0
 }
 
+/// Which triangles a pixel can show: the back faces culled or not, and the depth test
+/// (`GL_DEPTH_TEST`) on or off.
+#[derive(Clone, Copy, Debug)]
+struct Seen {
+    cull_back: bool,
+    depth_test: bool,
+}
+
+impl Seen {
+    fn of(job: &Job<'_>) -> Seen {
+        Seen { cull_back: job.cull_back, depth_test: job.depth_test }
+    }
+}
+
+/// Without the depth test, the depth that lets each triangle cover the ones drawn before it
+/// whatever their depth: flat, and strictly decreasing in the mesh's order (`1 - (i + 1)
+/// 2^-23`, exact in f32 and above 0 for the first 2^23 - 1 triangles), so the depth buffer's
+/// "less than" keeps the last drawn, as OpenGL does with the test off, in whatever order
+/// the bands meet them.
+fn depth_in_drawing_order(orig: u32) -> f32 {
+    1.0 - (orig.min((1 << 23) - 2) as f32 + 1.0) * f32::EPSILON
+}
+
 /// The raster triangle of window vertices `v`, turned counter-clockwise on the screen
 /// (its corners the mesh triangle's, in its order or turned: [`Corners`]); `None` if it
 /// has no area, is a culled back face, or covers no pixel centre of the image.
 #[inline(always)]
-fn raster_tri(v: [WindowVert; 3], orig: u32, width: usize, height: usize, cull_back: bool) -> Option<RasterTri> {
+fn raster_tri(v: [WindowVert; 3], orig: u32, width: usize, height: usize, seen: Seen) -> Option<RasterTri> {
     let (a, b, c) = (v[0], v[1], v[2]);
     let area = (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1);
     if area == 0 {
@@ -258,7 +281,7 @@ fn raster_tri(v: [WindowVert; 3], orig: u32, width: usize, height: usize, cull_b
     }
     // OpenGL's counter-clockwise front faces (y up) have negative area with y down.
     let back = area > 0;
-    if back && cull_back {
+    if back && seen.cull_back {
         return None;
     }
     let (v, corners) = if area < 0 { ([v[0], v[2], v[1]], Corners(1)) } else { (v, Corners(0)) };
@@ -277,7 +300,7 @@ fn raster_tri(v: [WindowVert; 3], orig: u32, width: usize, height: usize, cull_b
     Some(RasterTri {
         x: [v[0].0 as i32, v[1].0 as i32, v[2].0 as i32],
         y: [v[0].1 as i32, v[1].1 as i32, v[2].1 as i32],
-        z: [v[0].2, v[1].2, v[2].2],
+        z: if seen.depth_test { [v[0].2, v[1].2, v[2].2] } else { [depth_in_drawing_order(orig); 3] },
         inv_w: [v[0].3, v[1].3, v[2].3],
         corners,
         orig,
@@ -293,7 +316,7 @@ fn raster_tri(v: [WindowVert; 3], orig: u32, width: usize, height: usize, cull_b
 /// in the chunk's own table: the first into the mesh triangle's slot (`at` in the chunk),
 /// the others after the chunk's earlier pieces.
 #[inline(always)]
-fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bool, at: usize, out: &mut ChunkOut<'_>) {
+fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, seen: Seen, at: usize, out: &mut ChunkOut<'_>) {
     if poly.len() < 3 {
         return;
     }
@@ -304,7 +327,7 @@ fn emit(poly: &[ClipVert], orig: u32, width: usize, height: usize, cull_back: bo
     }
     for k in 1..poly.len() - 1 {
         let idx = [0, k, k + 1];
-        if let Some(mut t) = raster_tri(idx.map(|i| win[i]), orig, width, height, cull_back) {
+        if let Some(mut t) = raster_tri(idx.map(|i| win[i]), orig, width, height, seen) {
             let (rest, b) = (&mut *out.rest, idx.map(|i| poly[i].bary));
             rest.corners.push(if t.corners == Corners(1) { [b[0], b[2], b[1]] } else { b });
             t.corners = Corners(rest.corners.len() as u32 + 1);
@@ -449,7 +472,7 @@ pub(super) fn setup_faces(
             // coordinates already.
             let win = &verts.window;
             let v = [win[t[0] as usize], win[t[1] as usize], win[t[2] as usize]];
-            match raster_tri(v, j as u32, width, height, job.cull_back) {
+            match raster_tri(v, j as u32, width, height, Seen::of(job)) {
                 Some(t) => (out.slots[at], out.rest.drawn) = (t, out.rest.drawn + 1),
                 None => out.slots[at] = RasterTri::HOLE,
             }
@@ -473,7 +496,7 @@ pub(super) fn setup_faces(
             }
         }
         out.slots[at] = RasterTri::HOLE;
-        emit(poly.as_slice(), j as u32, width, height, job.cull_back, at, &mut out);
+        emit(poly.as_slice(), j as u32, width, height, Seen::of(job), at, &mut out);
     }
 }
 

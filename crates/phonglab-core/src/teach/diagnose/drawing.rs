@@ -23,6 +23,11 @@ pub struct Drawing {
     pub background: [f32; 3],
     /// Numerical options.
     pub options: EvalOptions,
+    /// `GL_DEPTH_TEST` on (the export enables it).
+    pub depth_test: bool,
+    /// The mesh as GLU draws it turned inside out (`GLU_INSIDE`), where the object is a
+    /// GLU quadric ([`crate::model::view::View::mesh_inside`]); `None` otherwise.
+    pub inside: Option<Mesh>,
 }
 
 impl Drawing {
@@ -35,6 +40,8 @@ impl Drawing {
             mode: job.mode,
             background: job.background,
             options: job.options,
+            depth_test: job.depth_test,
+            inside: None,
         }
     }
 
@@ -47,6 +54,7 @@ impl Drawing {
             mode: self.mode,
             background: self.background,
             cull_back: false,
+            depth_test: self.depth_test,
             options: self.options,
         }
     }

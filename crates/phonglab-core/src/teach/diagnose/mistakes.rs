@@ -203,6 +203,18 @@ fn flipped_normals(d: &mut Drawing, _: At) -> bool {
     true
 }
 
+/// `gluQuadricOrientation(q, GLU_INSIDE)`: the quadric's normals inwards, and its faces
+/// wound inwards, its quads split along their other diagonal, as GLU then draws it.
+fn quadric_inside(d: &mut Drawing, _: At) -> bool {
+    match d.inside.take() {
+        Some(inside) => {
+            d.mesh = inside;
+            true
+        }
+        None => false,
+    }
+}
+
 /// `GL_LIGHT_MODEL_TWO_SIDE` off.
 fn two_sided_off(d: &mut Drawing, _: At) -> bool {
     d.scene.light_model.two_sided = false;
@@ -595,6 +607,33 @@ fn emission_left_out(d: &mut Drawing, _: At) -> bool {
     each_material(d, |m| m.emission = DVec4::new(0.0, 0.0, 0.0, 1.0))
 }
 
+/// `glEnable(GL_DEPTH_TEST)` left out: each triangle covers the ones drawn before it, the
+/// far side of the object over the near one wherever it comes later.
+fn depth_test_off(d: &mut Drawing, _: At) -> bool {
+    std::mem::replace(&mut d.depth_test, false)
+}
+
+/// One light given under the modelview the object is drawn with (view × model) instead of
+/// its own (the identity for a light fixed to the eye, the view for one in the world): it
+/// moves with the object. Only under a model transform (without one, an eye-fixed light's
+/// is `headlight-under-view`); the world's lights alone where the scene has several (the
+/// all-lights row draws one alone).
+fn light_after_model_alone(d: &mut Drawing, at: At) -> bool {
+    let s = &d.scene;
+    let in_world = s.lights.iter().filter(|l| l.placement == LightPlacement::World).count();
+    let model_moves = s.world_from_object != glam::DMat4::IDENTITY;
+    the_light(
+        d,
+        at,
+        |l| match l.placement {
+            LightPlacement::Eye => model_moves,
+            LightPlacement::World => model_moves && in_world >= 2,
+            _ => false,
+        },
+        |l| l.placement = LightPlacement::Object,
+    )
+}
+
 /// A row of the table.
 const fn row(id: &'static str, message: &'static str, apply: fn(&mut Drawing, At) -> bool) -> PictureMistake {
     PictureMistake { id, message, scope: Scope::Scene, apply }
@@ -606,7 +645,7 @@ const fn per_light(id: &'static str, message: &'static str, apply: fn(&mut Drawi
 }
 
 /// The picture mistakes, in the order the docs list them.
-pub const MISTAKES: [PictureMistake; 59] = [
+pub const MISTAKES: [PictureMistake; 62] = [
     row("normal-by-modelview", "wrong-cause-normals-by-m", normals_by_modelview),
     row("normal-not-normalised", "diagnose-normalize-off", normalize_off),
     row("reflection-for-halfway", "wrong-cause-reflection-for-halfway", reflection_for_halfway),
@@ -660,6 +699,9 @@ pub const MISTAKES: [PictureMistake; 59] = [
     per_light("spot-cutoff-doubled", "diagnose-spot-cutoff-doubled", spot_cutoff_doubled),
     row("normal-matrix-not-transposed", "diagnose-normal-matrix-not-transposed", normal_matrix_not_transposed),
     row("normal-not-transformed", "diagnose-normal-not-transformed", normal_not_transformed),
+    row("depth-test-off", "diagnose-depth-test-off", depth_test_off),
+    row("quadric-inside", "diagnose-quadric-inside", quadric_inside),
+    per_light("light-after-model", "diagnose-light-after-model-light", light_after_model_alone),
     // After every row of the scene's own values: each number is fitted from the picture, so
     // a row that names why it differs (halved, in radians, swapped) is named before.
     per_light("spot-cutoff-differs", "diagnose-spot-cutoff-differs", spot_cutoff_differs),
@@ -713,6 +755,8 @@ mod tests {
             mode: ShadingMode::Phong,
             background: [0.0; 3],
             options: Default::default(),
+            depth_test: true,
+            inside: None,
         }
     }
 
