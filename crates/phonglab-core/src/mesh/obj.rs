@@ -14,7 +14,9 @@
 //! soup (three vertices of its own each, as STL conversions write) or a shared mesh alike:
 //! the file's vertices in f64 (to fit any finite coordinates), a remap from the file's
 //! vertices to the mesh's (no hash map, but for a vertex met with several normals), and
-//! the mesh itself.
+//! the mesh itself. A soup's repeated corners are welded as they are read
+//! ([`super::weld`]: its hash map is counted in the estimate), so it keeps what its shared
+//! mesh keeps.
 
 use std::collections::HashMap;
 use std::io::BufRead;
