@@ -155,3 +155,20 @@ fn obj_files_load_with_or_without_normals() {
     assert!(e.contains("line 2") && e.contains("out of range"), "{e}");
     assert!(obj::parse_obj("v 0 0 x\n").unwrap_err().contains("line 1"));
 }
+
+/// A triangle soup (each triangle its own three corners, as STL conversions write) is read
+/// as the shared mesh of the same surface: its repeated corners welded (the same bytes
+/// only), so it takes the shared mesh's memory and its computed normals are the shared
+/// mesh's, smooth across the edge the two triangles share.
+#[test]
+fn a_soup_is_read_as_its_shared_mesh() {
+    let soup = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nv 1 0 0\nv 1 1 0.5\nv 0 1 0\nf 4 5 6\n";
+    let shared = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0.5\nf 1 2 3\nf 2 4 3\n";
+    let (a, b) =
+        (phonglab_core::mesh::obj::parse_obj(soup).unwrap(), phonglab_core::mesh::obj::parse_obj(shared).unwrap());
+    assert_eq!(a.positions.len(), 4);
+    assert_eq!(a, b);
+    // Nothing merely close is merged: a corner moved by one unit in the last place stays apart.
+    let near = soup.replace("v 1 0 0\nv 1 1", "v 1.0000000000000002 0 0\nv 1 1");
+    assert_eq!(phonglab_core::mesh::obj::parse_obj(&near).unwrap().positions.len(), 5);
+}

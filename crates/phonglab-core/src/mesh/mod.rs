@@ -10,6 +10,7 @@ pub mod obj;
 pub mod obj_text;
 pub mod sphere;
 pub mod teapot;
+pub mod weld;
 
 use glam::Vec3;
 

@@ -14,7 +14,9 @@
 //! soup (three vertices of its own each, as STL conversions write) or a shared mesh alike:
 //! the file's vertices in f64 (to fit any finite coordinates), a remap from the file's
 //! vertices to the mesh's (no hash map, but for a vertex met with several normals), and
-//! the mesh itself.
+//! the mesh itself. A soup's repeated corners are welded as they are read
+//! ([`super::weld`]: its hash map is counted in the estimate), so it keeps what its shared
+//! mesh keeps.
 
 use std::collections::HashMap;
 use std::io::BufRead;
@@ -25,6 +27,7 @@ use std::sync::{Arc, Mutex};
 use glam::{DVec3, Vec3};
 
 use super::Mesh;
+use super::weld::Welder;
 use crate::t;
 
 fn index(s: &str, len: usize, ln: usize, what: &str) -> Result<usize, String> {
@@ -104,7 +107,8 @@ impl Counts {
             (self.vertices as u64, self.normals as u64, self.mesh_vertices() as u64, self.triangles as u64);
         let file = v * (24 + 8) + vn * 12;
         let mesh = mv * (12 + 12 + 4) + tris * 12;
-        file + mesh + mv * 12
+        let weld = if Welder::wanted(self.vertices, self.triangles) { Welder::peak_bytes(v) } else { 0 };
+        file + mesh + mv * 12 + weld
     }
 
     /// The memory the mesh itself keeps once read: positions, normals, triangles.
@@ -215,9 +219,12 @@ impl Remap {
 
 /// The second pass, into arrays of the sizes `counts` gives.
 fn parse<R: BufRead>(reader: R, counts: &Counts) -> Result<Parsed, String> {
-    let mesh_vertices = counts.mesh_vertices();
+    // A soup's repeated corners are welded as they are read: its arrays then grow to the
+    // distinct vertices rather than being sized for every line.
+    let mut welder = Welder::wanted(counts.vertices, counts.triangles).then(Welder::default);
+    let (lines, mesh_vertices) = if welder.is_some() { (0, 0) } else { (counts.vertices, counts.mesh_vertices()) };
     let mut out = Parsed {
-        file_positions: Vec::with_capacity(counts.vertices),
+        file_positions: Vec::with_capacity(lines),
         file_vertex: Vec::with_capacity(mesh_vertices),
         normals: Vec::with_capacity(mesh_vertices),
         triangles: Vec::with_capacity(counts.triangles),
@@ -241,7 +248,17 @@ fn parse<R: BufRead>(reader: R, counts: &Counts) -> Result<Parsed, String> {
                 if v.len() < 3 || v[..3].iter().any(|x| !x.is_finite()) {
                     return Err(t!("obj-vertex-needs", line = ln));
                 }
-                out.file_positions.push(DVec3::new(v[0], v[1], v[2]));
+                let p = DVec3::new(v[0], v[1], v[2]);
+                let positions = &mut out.file_positions;
+                match welder.as_mut() {
+                    Some(w) => {
+                        w.add(p, |p| {
+                            positions.push(p);
+                            (positions.len() - 1) as u32
+                        });
+                    }
+                    None => positions.push(p),
+                }
             }
             "vn" => {
                 let v = nums(it)?;
@@ -258,7 +275,9 @@ fn parse<R: BufRead>(reader: R, counts: &Counts) -> Result<Parsed, String> {
                 face.clear();
                 for c in it {
                     let mut parts = c.split('/');
-                    let v = index(parts.next().unwrap_or(""), out.file_positions.len(), ln, &t!("obj-what-vertex"))?;
+                    let lines = welder.as_ref().map_or(out.file_positions.len(), Welder::lines);
+                    let v = index(parts.next().unwrap_or(""), lines, ln, &t!("obj-what-vertex"))?;
+                    let v = welder.as_ref().map_or(v, |w| w.distinct(v));
                     if let Some(tc) = parts.next().filter(|tc| !tc.is_empty()) {
                         index(tc, vts, ln, &t!("obj-what-texture"))?;
                     }

@@ -37,29 +37,48 @@ pub struct TriangleAttributes {
 /// pixel are done: the others' attributes are never read.
 pub(super) fn triangle_attributes(
     setup: &Setup,
+    mode: ShadingMode,
     out: &mut TriangleAttributes,
     seen: Option<&[u64]>,
     attributes: impl Fn(&[RasterTri], &ClippedCorners, Attributes<'_>) + Sync,
 ) {
-    // Every array sized to the triangles (growing only on the first frames); only those the
-    // shading reads are written.
+    // The arrays the shading reads sized to the triangles (their capacity kept from frame
+    // to frame), the others empty: Gouraud's colour planes alone are 136 bytes a triangle
+    // of the 280 all four would take.
     let n = setup.tris.len();
-    out.color.resize(n, ColorPlanes::default());
-    out.pos.resize(n, [Vec3::ZERO; 3]);
-    out.nrm.resize(n, [Vec3::ZERO; 3]);
-    out.edges.resize(n, ScreenBarycentrics::default());
+    let [color, edges, pos, nrm] = match mode {
+        ShadingMode::Gouraud => [n, 0, 0, 0],
+        ShadingMode::Phong => [0, n, n, n],
+        ShadingMode::FlatDerivatives => [0, n, n, 0],
+        ShadingMode::FlatFace => [0; 4],
+    };
+    out.color.resize(color, ColorPlanes::default());
+    out.edges.resize(edges, ScreenBarycentrics::default());
+    out.pos.resize(pos, [Vec3::ZERO; 3]);
+    out.nrm.resize(nrm, [Vec3::ZERO; 3]);
+    let chunks = n.div_ceil(GRAIN);
     setup
         .tris
         .par_chunks(GRAIN)
-        .zip(out.edges.par_chunks_mut(GRAIN))
-        .zip(out.color.par_chunks_mut(GRAIN))
-        .zip(out.pos.par_chunks_mut(GRAIN))
-        .zip(out.nrm.par_chunks_mut(GRAIN))
+        .zip(chunks_or_empty(&mut out.edges, chunks))
+        .zip(chunks_or_empty(&mut out.color, chunks))
+        .zip(chunks_or_empty(&mut out.pos, chunks))
+        .zip(chunks_or_empty(&mut out.nrm, chunks))
         .enumerate()
         .for_each(|(k, ((((ts, edges), colors), pos), nrm))| {
             let seen = seen.and_then(|s| s.get(k * GRAIN / 64..(k + 1) * GRAIN / 64));
             attributes(ts, &setup.corners, Attributes { edges, colors, pos, nrm, seen });
         });
+}
+
+/// `v` in chunks of [`GRAIN`], or `chunks` empty slices where the shading does not read
+/// it (left empty): the zip of every array then still meets each chunk of triangles.
+fn chunks_or_empty<T: Send>(v: &mut [T], chunks: usize) -> impl IndexedParallelIterator<Item = &mut [T]> {
+    if v.is_empty() {
+        rayon::iter::Either::Left(rayon::iter::repeat_n((), chunks).map(|()| <&mut [T]>::default()))
+    } else {
+        rayon::iter::Either::Right(v.par_chunks_mut(GRAIN))
+    }
 }
 
 /// Triangles a chunk of the attributes takes (a multiple of 64: a chunk's bits of

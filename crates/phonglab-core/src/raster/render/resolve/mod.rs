@@ -95,7 +95,7 @@ pub(super) fn prepare(
     let per_pixel = job.mode.per_fragment();
     scratch.bands.resize_with(bands, Fragments::default);
     if job.mode != ShadingMode::FlatFace && (job.mode == ShadingMode::Gouraud || kept_seen.is_none()) {
-        triangle_attributes(setup, &mut scratch.tris, kept_seen, attributes);
+        triangle_attributes(setup, job.mode, &mut scratch.tris, kept_seen, attributes);
     }
     // Flat: each face's colour converted to 8 bits once.
     let face8: [Vec<[u8; 4]>; 2] = if job.mode == ShadingMode::FlatFace {
@@ -231,10 +231,15 @@ fn prefetch_triangle(band: &BandInput<'_>, triangle: usize) {
     prefetch(std::slice::from_ref(&band.setup.tris[triangle]));
     match band.job.mode {
         ShadingMode::Gouraud => prefetch(&shared.color[triangle..=triangle]),
-        ShadingMode::Phong | ShadingMode::FlatDerivatives => {
+        ShadingMode::Phong => {
             prefetch(&shared.edges[triangle..=triangle]);
             prefetch(&shared.pos[triangle..=triangle]);
             prefetch(&shared.nrm[triangle..=triangle]);
+        }
+        // The demo's Flat reads no normals (they come from the screen derivatives).
+        ShadingMode::FlatDerivatives => {
+            prefetch(&shared.edges[triangle..=triangle]);
+            prefetch(&shared.pos[triangle..=triangle]);
         }
         ShadingMode::FlatFace => {}
     }
