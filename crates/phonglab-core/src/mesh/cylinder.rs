@@ -64,10 +64,11 @@ fn glu_cylinder_oriented(
                 m.push_vertex(Vec3::new(r * s as f32, r * c as f32, z), n);
             }
             for i in 0..slices {
-                if (n.z > 0.0) != inside {
-                    m.triangles.push([centre, first + i + 1, first + i]);
-                } else {
+                // Facing +z (the top, from outside; the bottom turned inside out): (i+1, i).
+                if (n.z > 0.0) == inside {
                     m.triangles.push([centre, first + i, first + i + 1]);
+                } else {
+                    m.triangles.push([centre, first + i + 1, first + i]);
                 }
             }
         }
