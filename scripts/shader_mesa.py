@@ -2,7 +2,7 @@
 glref harness's EGL-surfaceless context) and writes each picture as a PNG.
 
 Usage:
-    PHONGLAB_MESA_INPUTS=/tmp/glsl-in cargo test --test shader_mesa write_inputs -- --ignored
+    PHONGLAB_MESA_INPUTS=/tmp/glsl-in cargo test --test all shader_mesa::write_inputs -- --ignored
     $GLREF/.venv/bin/python scripts/shader_mesa.py /tmp/glsl-in tests/data/mesa_glsl
 
 GLREF is the glref harness's directory (docs/lighting.md says what it is); its venv has

@@ -19,7 +19,7 @@ each message keeps its section (`## name`), in the order the sections first appe
 - a `{ id }` reference from a message that lives in that crate's catalogue.
 
 Run it after merging a branch that added messages to either catalogue, then
-`cargo test --test i18n catalogue`.
+`cargo test --test all i18n::`.
 """
 
 import pathlib

@@ -1,6 +1,6 @@
 //! The phonglab app and command line, as a library so tests drive them headless.
 //!
-//! The crate is in layers; each names only the layers below it, and `tests/layers.rs`
+//! The crate is in layers; each names only the layers below it, and `tests/all/layers.rs`
 //! fails on a path against the order (ARCHITECTURE.md says what each holds):
 //!
 //! | layer | modules | what it is |

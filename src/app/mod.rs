@@ -1,4 +1,4 @@
-//! The explorer window, in layers (each names only the ones below it; `tests/layers.rs`
+//! The explorer window, in layers (each names only the ones below it; `tests/all/layers.rs`
 //! keeps them):
 //!
 //! | layer | folder | what it holds |

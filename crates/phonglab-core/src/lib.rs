@@ -15,7 +15,7 @@
 //! The modules, by group, each group a directory (`src/model/`, `src/equation/`, ...).
 //! The groups form one order, from the bottom up: each uses only the groups below it,
 //! and inside the crate modules name each other by group (`crate::equation::lighting`);
-//! `tests/layers.rs` fails on a path against the order. For users every module is also
+//! `tests/all/layers.rs` fails on a path against the order. For users every module is also
 //! re-exported at the crate's root, so `phonglab_core::scene` and
 //! `phonglab_core::model::scene` name the same module (ARCHITECTURE.md says how data flows
 //! between them):

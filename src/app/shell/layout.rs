@@ -3,7 +3,7 @@
 //! restarts (the panels' widths are kept by egui's own memory).
 //!
 //! Sizes are chosen from the window so that the four projector sizes (1024×768, 1280×720,
-//! 1440×900, 1920×1080) fit without clipping; `tests/ui_layout.rs` checks it.
+//! 1440×900, 1920×1080) fit without clipping; `tests/all/ui_layout.rs` checks it.
 
 use serde::{Deserialize, Serialize};
 

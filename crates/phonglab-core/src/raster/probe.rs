@@ -15,7 +15,7 @@
 //! beside it ([`Terms`]) are the lighting engine's worked breakdown in f64 at the same
 //! point: for Phong at the fragment, for Gouraud each vertex's terms interpolated with the
 //! same weights, for Flat at the face's centroid. They add up to the colour before any
-//! clamp (`tests/probe.rs`); the term channels (`channels.rs`) are
+//! clamp (`tests/all/probe.rs`); the term channels (`channels.rs`) are
 //! these terms at every pixel.
 
 use glam::{DVec3, Vec3};

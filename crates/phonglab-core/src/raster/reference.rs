@@ -17,7 +17,7 @@
 //!    with its plane's normal (Flat).
 //!
 //! The fast renderer ([`crate::raster::render`]) computes the same picture in bands, on
-//! threads, with the lighting run over arrays in f32; `tests/reference_renderer.rs` holds
+//! threads, with the lighting run over arrays in f32; `tests/all/reference_renderer.rs` holds
 //! the two to the same coverage and colours within 1/255. Triangles are not clipped here: one
 //! with a corner behind the eye or beyond the far plane is left out whole (the fast renderer
 //! clips it), so the scenes compared stay inside the view volume.

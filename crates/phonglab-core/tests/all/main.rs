@@ -1,0 +1,28 @@
+//! The core's integration tests, all in one test binary: each file here is a module, built
+//! and linked once instead of once a file. One file's tests:
+//! `cargo test -p phonglab-core --test all diagnose::`.
+//!
+//! The tests of all files share one process and run on parallel threads: a test changes
+//! nothing process-wide.
+
+mod common;
+/// What the layer tests share with the app's (`tests/all/layers.rs` there).
+mod support {
+    pub mod module_graph;
+}
+
+mod check;
+mod cost;
+mod diagnose;
+mod documents;
+mod exercises;
+mod hard_cases;
+mod layers;
+mod llvmpipe_pow;
+mod mesa_ordinary;
+mod meshes;
+mod normalised_blinn_phong;
+mod properties;
+mod reference_renderer;
+mod specialised;
+mod worksheet;

@@ -1,0 +1,538 @@
+//! A student's work checked in the window (issue 57, item 5): File → Check a student's
+//! work… (phonglab's own chooser in the tests), a dropped `.txt` of printed values, a
+//! dropped notebook with outputs (which asks). The calculation panel shows the student's
+//! value under each step's, the first wrong step framed and marked, the causes in words,
+//! and Clear; bad files are refused and lose nothing.
+
+use crate::common;
+
+use std::path::{Path, PathBuf};
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT, Queryable};
+use phonglab::app::{AppState, app_ui};
+use phonglab_core::study::check::mistakes::Mistake;
+use phonglab_core::study::check::worked::work;
+
+/// A folder of its own, removed afterwards.
+struct TempDir(PathBuf);
+
+impl TempDir {
+    fn new(name: &str) -> TempDir {
+        let p = std::env::temp_dir().join(format!("phonglab-ui-student-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&p);
+        std::fs::create_dir_all(&p).unwrap();
+        TempDir(p)
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// What a script computing the worksheet's scene with `mistake` prints, NumPy-style, to
+/// 8 decimals.
+fn printed(mistake: Option<Mistake>) -> String {
+    let scene = AppState::worksheet().doc.scene;
+    let mut out = String::new();
+    for (name, v) in work(&scene, mistake, None).values {
+        let nums: Vec<String> = v.iter().map(|x| format!("{x:.8}")).collect();
+        if nums.len() == 1 {
+            out.push_str(&format!("{name} = {}\n", nums[0]));
+        } else {
+            out.push_str(&format!("{name} = [{}]\n", nums.join(" ")));
+        }
+    }
+    out
+}
+
+fn harness(w: f32, h: f32) -> Harness<'static, AppState> {
+    let mut h = Harness::builder()
+        .with_size([w, h])
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(2);
+    h
+}
+
+/// Checks `path` as a teacher does: File → Check a student's work…, the file named in
+/// phonglab's own chooser, Check.
+fn check_through_the_menu(h: &mut Harness<'static, AppState>, path: &Path) {
+    common::open_menu(h, &["File"]);
+    h.get_by_label("Check a student's work…").click();
+    h.run_steps(2);
+    let c = h.state_mut().chooser.as_mut().expect("the chooser opens");
+    c.folder = path.parent().unwrap().display().to_string();
+    c.name = path.file_name().unwrap().to_string_lossy().into_owned();
+    h.run_steps(2);
+    h.get_by_label("Check").click();
+    h.run_steps(3);
+}
+
+#[test]
+fn printed_values_checked_show_beside_each_step_with_the_first_wrong_one_framed_and_its_cause() {
+    let dir = TempDir::new("menu");
+    let path = dir.0.join("vlv.txt");
+    std::fs::write(&path, printed(Some(Mistake::VlvNotNormalised))).unwrap();
+    for (w, ht) in [(1024.0, 600.0), (1280.0, 720.0)] {
+        let mut h = harness(w, ht);
+        check_through_the_menu(&mut h, &path);
+        let check = h.state().student.as_ref().expect("checked").check.clone();
+        let first = &check.steps[check.first_wrong.expect("a wrong step")];
+        assert_eq!(first.name, "vlv");
+        assert!(check.causes.iter().any(|c| c.info.id == "vlv-not-normalised"), "{:?}", check.causes);
+        assert!(h.query_by_label("Student's work: vlv.txt").is_some());
+        assert!(h.query_by_label_contains("first wrong step: vlv (yours").is_some());
+        // Above the steps with its evidence, and beside the first wrong step.
+        assert_eq!(h.query_all_by_label_contains("likely cause: vlv not normalised").count(), 2);
+        // The vertex's steps before vlv are right, each said so under its value.
+        assert!(h.query_all_by_label_contains(": right").count() >= 2);
+
+        // The marker is in the first wrong step's row: below its title, above the next's.
+        let ex = h.state().evaluate().unwrap().explanation;
+        let k = ex.steps.iter().position(|s| s.name == "vlv").unwrap();
+        let title = h.get_all_by_label(&ex.steps[k].title).next().unwrap().rect();
+        let next = h.get_all_by_label(&ex.steps[k + 1].title).next().unwrap().rect();
+        let marker = h.get_by_label("» first wrong step").rect();
+        assert!(marker.top() > title.bottom() && marker.bottom() < next.top(), "{title:?} {marker:?} {next:?}");
+        assert!(marker.right() <= w);
+        // The student's line is under the key's value and above the marker, inside the
+        // panel, not over the key's value.
+        let heading = h.get_by_label("Worked calculation").rect();
+        let key = h.get_by_label_contains("vlv = [").rect();
+        let theirs: Vec<egui::Rect> = h
+            .get_all_by_label_contains("yours = [")
+            .map(|n| n.rect())
+            .filter(|r| r.top() >= key.bottom() - 0.5 && r.bottom() <= marker.top() + 0.5)
+            .collect();
+        assert_eq!(theirs.len(), 1, "{key:?} {marker:?} {theirs:?}");
+        let theirs = theirs[0];
+        assert!(!theirs.intersects(key.shrink(0.5)), "{key:?} {theirs:?}");
+        assert!(theirs.left() >= heading.left() - 1.0 && theirs.right() <= w, "{heading:?} {theirs:?}");
+        // The summary fits the window's width.
+        let summary = h.get_by_label_contains("first wrong step: vlv").rect();
+        assert!(summary.left() >= heading.left() - 1.0 && summary.right() <= w, "{summary:?}");
+    }
+}
+
+#[test]
+fn clear_hides_the_students_values() {
+    let dir = TempDir::new("clear");
+    let path = dir.0.join("right.txt");
+    std::fs::write(&path, printed(None)).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    check_through_the_menu(&mut h, &path);
+    assert!(h.state().student.as_ref().expect("checked").check.right());
+    assert!(h.query_by_label("all right: every step printed is the key's").is_some());
+    assert!(h.query_by_label_contains(": wrong").is_none());
+    h.get_by_label("Clear").click();
+    h.run_steps(2);
+    assert!(h.state().student.is_none());
+    assert!(h.query_by_label_contains("yours = ").is_none());
+}
+
+#[test]
+fn a_bad_file_is_refused_and_loses_nothing() {
+    let dir = TempDir::new("bad");
+    let good = dir.0.join("vlv.txt");
+    std::fs::write(&good, printed(Some(Mistake::VlvNotNormalised))).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    check_through_the_menu(&mut h, &good);
+    let before = h.state().doc.clone();
+    for (name, bytes) in [
+        ("binary.txt", vec![0xff, 0xfe, 0x00, 0x80]),
+        ("broken.ipynb", b"{ not json".to_vec()),
+        ("no-outputs.ipynb", phonglab_core::export::notebook::ipynb(&[]).into_bytes()),
+    ] {
+        let bad = dir.0.join(name);
+        std::fs::write(&bad, &bytes).unwrap();
+        check_through_the_menu(&mut h, &bad);
+        let message = format!("{:?}", h.state().message);
+        assert!(message.contains("Refused") && message.contains("Not checked"), "{name}: {message}");
+        assert_eq!(h.state().doc, before, "{name}");
+        assert_eq!(h.state().student.as_ref().map(|s| s.file.as_str()), Some("vlv.txt"), "{name}");
+        assert_eq!(std::fs::read(&bad).unwrap(), bytes, "{name}: the file is left as it was");
+    }
+}
+
+/// A notebook of the worksheet's scene whose last code cell printed `text`.
+fn notebook_with_outputs(text: &str) -> String {
+    let doc = AppState::worksheet().doc;
+    let cells = phonglab_core::export::notebook::cells(&doc, &phonglab_core::export::key(&doc));
+    let mut nb: serde_json::Value = serde_json::from_str(&phonglab_core::export::notebook::ipynb(&cells)).unwrap();
+    let code = nb["cells"].as_array_mut().unwrap().iter_mut().rfind(|c| c["cell_type"] == "code").unwrap();
+    code["outputs"] = serde_json::json!([{"output_type": "stream", "name": "stdout", "text": text}]);
+    nb.to_string()
+}
+
+fn drop_file(h: &mut Harness<'static, AppState>, path: &Path) {
+    h.input_mut().dropped_files.push(std::sync::Arc::new(common::Dropped(path.to_path_buf())));
+    h.run_steps(3);
+}
+
+#[test]
+fn a_dropped_notebook_with_outputs_asks_and_printed_text_is_checked_at_once() {
+    let dir = TempDir::new("drop");
+    let nb = dir.0.join("aluno.ipynb");
+    std::fs::write(&nb, notebook_with_outputs(&printed(Some(Mistake::VlvNotNormalised)))).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    drop_file(&mut h, &nb);
+    assert!(h.state().student_ask.is_some(), "{:?}", h.state().message);
+    assert!(h.state().student.is_none());
+    h.get_by_label("Check it against this scene").click();
+    h.run_steps(3);
+    let s = h.state().student.as_ref().expect("checked");
+    assert_eq!(s.file, "aluno.ipynb");
+    assert_eq!(s.check.first_wrong.map(|k| s.check.steps[k].name.as_str()), Some("vlv"));
+
+    // Asked again, Open opens it as the scene, as a drop always did.
+    drop_file(&mut h, &nb);
+    h.get_by_label("Open it as the scene").click();
+    h.run_steps(3);
+    assert!(h.state().files.path.ends_with("aluno.toml"), "{}", h.state().files.path);
+
+    // A notebook without outputs opens as a scene without asking.
+    let plain = dir.0.join("plain.ipynb");
+    let doc = AppState::worksheet().doc;
+    let cells = phonglab_core::export::notebook::cells(&doc, &phonglab_core::export::key(&doc));
+    std::fs::write(&plain, phonglab_core::export::notebook::ipynb(&cells)).unwrap();
+    drop_file(&mut h, &plain);
+    assert!(h.state().student_ask.is_none());
+    assert!(h.state().files.path.ends_with("plain.toml"), "{}", h.state().files.path);
+
+    // Printed text is checked at once.
+    let txt = dir.0.join("printed.txt");
+    std::fs::write(&txt, printed(None)).unwrap();
+    drop_file(&mut h, &txt);
+    assert_eq!(h.state().student.as_ref().map(|s| s.file.as_str()), Some("printed.txt"));
+}
+
+/// A notebook worked under the worksheet's rules, checked against a scene under OpenGL's:
+/// the window says which typed inputs differ as the command line does, the rule set in
+/// words (never the raw id `rules`), and the line lies inside the student's column.
+#[test]
+fn the_inputs_that_differ_are_named_in_words_as_the_command_line_names_them() {
+    let dir = TempDir::new("inputs");
+    let nb = dir.0.join("aluno.ipynb");
+    std::fs::write(&nb, notebook_with_outputs(&printed(None))).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    let mut doc = h.state().doc.clone();
+    doc.scene.rules = phonglab_core::Rules::OPENGL;
+    h.state_mut().load(doc, "opengl");
+    h.run_steps(3);
+    drop_file(&mut h, &nb);
+    h.get_by_label("Check it against this scene").click();
+    h.run_steps(3);
+    let s = h.state().student.as_ref().expect("checked");
+    assert!(s.check.inputs_differ.iter().any(|n| n == "rules"), "{:?}", s.check.inputs_differ);
+    let line = h.get_by_label_contains("your typed inputs differ from the assignment's:");
+    let node = line.accesskit_node();
+    let text = node.label().or(node.value()).unwrap_or_default();
+    assert!(text.contains("the rule set"), "{text}");
+    assert!(!text.split([':', ',']).any(|part| part.trim() == "rules"), "{text}");
+    let r = line.rect();
+    assert!(r.width() > 0.0 && r.max.x <= 1280.0 && r.min.y >= 0.0 && r.max.y <= 720.0, "{r:?}");
+}
+
+/// A student's picture (the export's 512 pixels) of the worksheet's scene drawn with the
+/// first picture mistake this scene shows, and that mistake's id.
+fn mistaken_picture(path: &Path) -> &'static str {
+    use phonglab_core::teach::diagnose::{Drawing, MISTAKES};
+    let doc = AppState::worksheet().doc;
+    let mesh = doc.view.mesh();
+    let right = Drawing::of(&doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    let (_, good, _) = right.draw(512).unwrap();
+    for m in &MISTAKES {
+        let mut d = right.clone();
+        (m.apply)(&mut d, phonglab_core::teach::diagnose::At::default());
+        let (_, rgba, _) = d.draw(512).unwrap();
+        let differing =
+            good.chunks(4).zip(rgba.chunks(4)).filter(|(a, b)| a.iter().zip(*b).any(|(x, y)| x.abs_diff(*y) > 8));
+        if differing.count() > 2000 {
+            phonglab::io::image::write_png(path, 512, 512, &rgba).unwrap();
+            return m.id;
+        }
+    }
+    panic!("no picture mistake shows on the worksheet's scene");
+}
+
+#[test]
+fn a_students_picture_opens_in_compare_as_b_with_the_difference_and_the_diagnosis() {
+    let dir = TempDir::new("picture");
+    let path = dir.0.join("aluno.png");
+    let id = mistaken_picture(&path);
+    let mut h = harness(1024.0, 600.0);
+    check_through_the_menu(&mut h, &path);
+    let p = h.state().compare.student.as_ref().unwrap_or_else(|| panic!("{:?}", h.state().message));
+    assert_eq!(p.verdict, "wrong", "{:?}", p.lines());
+    assert!(p.lines().iter().any(|l| l.contains(&format!("({id})"))), "{id}: {:?}", p.lines());
+    assert!(h.state().compare.open);
+    assert!(h.query_by_label("Student's picture: aluno.png").is_some());
+    assert!(h.query_by_label_contains(&format!("({id})")).is_some());
+    // A, B and the difference side by side, within the window at 1024 x 600.
+    let a = h.get_by_label("A: the right picture of this scene").rect();
+    let b = h.get_by_label("B: the student's picture").rect();
+    let d = h.get_all_by_label("Difference |A − B|").last().unwrap().rect();
+    assert!(a.right() <= b.left() && b.right() <= d.left() && d.right() <= 1024.0, "{a:?} {b:?} {d:?}");
+    h.get_by_label("Clear").click();
+    h.run_steps(2);
+    assert!(h.state().compare.student.is_none());
+
+    // A picture of another size is refused, saying the size expected; nothing changes.
+    let small = dir.0.join("small.png");
+    phonglab::io::image::write_png(&small, 64, 64, &[0; 64 * 64 * 4]).unwrap();
+    check_through_the_menu(&mut h, &small);
+    let message = format!("{:?}", h.state().message);
+    assert!(message.contains("Not checked") && message.contains("512x512"), "{message}");
+    assert!(h.state().compare.student.is_none());
+}
+
+#[test]
+fn the_check_follows_the_scene_shown() {
+    let dir = TempDir::new("follow");
+    let path = dir.0.join("right.txt");
+    std::fs::write(&path, printed(None)).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    check_through_the_menu(&mut h, &path);
+    assert!(h.state().student.as_ref().unwrap().check.right());
+    // The assignment changed: the same printed values are no longer all right.
+    let mut doc = h.state().doc.clone();
+    doc.scene.material.shininess *= 2.0;
+    h.state_mut().load(doc, "changed");
+    h.run_steps(3);
+    let s = h.state().student.as_ref().expect("kept");
+    assert!(!s.check.right(), "{:?}", s.check.first_wrong);
+    assert!(h.query_by_label_contains(": wrong").is_some());
+}
+
+/// The first wrong step's red reads as text on its tinted fill, in the dark and the light
+/// theme (a projector washes colours out: text contrast, not a symbol's).
+#[test]
+fn the_first_wrong_steps_red_reads_on_its_fill_in_both_themes() {
+    use phonglab::app::panels::student_column::{wrong_fill, wrong_ink_in};
+    use phonglab::app::widgets::palette::{TEXT_CONTRAST, contrast};
+    for v in [egui::Visuals::dark(), egui::Visuals::light()] {
+        let (ink, fill) = (wrong_ink_in(&v), wrong_fill(&v));
+        assert!(contrast(ink, fill) >= TEXT_CONTRAST, "{ink:?} on {fill:?}: {}", contrast(ink, fill));
+        assert!(contrast(ink, v.panel_fill) >= TEXT_CONTRAST, "{ink:?} on {:?}", v.panel_fill);
+        assert_ne!(fill, v.panel_fill, "the row is tinted");
+    }
+}
+
+/// The window diagnoses against the scene shown exactly as `phonglab diagnose` does against
+/// its file: the picture `phonglab render` draws of a scene opened in the window is right.
+#[test]
+fn the_picture_render_draws_of_the_scene_shown_is_right() {
+    let dir = TempDir::new("render");
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let path = dir.0.join("drawn.png");
+    let out = common::phonglab(&[
+        "render",
+        "--scene",
+        scene.to_str().unwrap(),
+        "--size",
+        "512",
+        "-o",
+        path.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let mut h = harness(1280.0, 720.0);
+    let doc = phonglab_core::Document::from_toml_in(&std::fs::read_to_string(&scene).unwrap(), scene.parent()).unwrap();
+    h.state_mut().load(doc, "spotlight");
+    h.run_steps(2);
+    check_through_the_menu(&mut h, &path);
+    let p = h.state().compare.student.as_ref().unwrap_or_else(|| panic!("{:?}", h.state().message));
+    assert_eq!(p.verdict, "right", "{:?}", p.lines());
+}
+
+/// The first catalogue mistake that two causes explain on the worksheet's scene (a check
+/// that names two), as printed text.
+fn two_cause_printed() -> String {
+    use phonglab_core::study::check::{check, mistakes::CATALOGUE, printed::printed_text};
+    let scene = AppState::worksheet().doc.scene;
+    CATALOGUE
+        .iter()
+        .filter_map(|m| m.mistake)
+        .map(|m| printed(Some(m)))
+        .find(|text| check(&scene, &scene, &printed_text(text)).causes.len() >= 2)
+        .expect("a mistake two causes explain")
+}
+
+#[test]
+fn a_status_made_before_a_language_switch_is_said_again_in_the_new_language() {
+    use phonglab::app::editing::message::Message;
+    let dir = TempDir::new("restate");
+    let path = dir.0.join("vlv.txt");
+    std::fs::write(&path, printed(Some(Mistake::VlvReversed))).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    check_through_the_menu(&mut h, &path);
+    let said = Some(Message::Info("Checked vlv.txt against this scene: not all right; see the calculation".into()));
+    assert_eq!(h.state().message, said);
+    h.state_mut().ui.layout.language = Some("pt-PT".into());
+    h.run_steps(2);
+    let pt = "vlv.txt corrigido com esta cena: nem tudo está certo; veja o cálculo";
+    assert_eq!(h.state().message, Some(Message::Info(pt.into())));
+    assert!(h.query_by_label(pt).is_some(), "the status line shows it");
+    h.state_mut().ui.layout.language = Some("en".into());
+    h.run_steps(2);
+    assert_eq!(h.state().message, said);
+    // Another status replaces it for good: a later switch does not bring it back.
+    h.state_mut().message = Some(Message::Info("something else".into()));
+    h.state_mut().ui.layout.language = Some("pt-BR".into());
+    h.run_steps(2);
+    assert_eq!(h.state().message, Some(Message::Info("something else".into())));
+}
+
+#[test]
+fn the_causes_read_whole_in_the_column_and_beside_the_first_wrong_step_and_the_rules_at_body_size() {
+    use phonglab_core::study::check::{check, printed::printed_text};
+    let dir = TempDir::new("two-causes");
+    let path = dir.0.join("two.txt");
+    let text = two_cause_printed();
+    std::fs::write(&path, &text).unwrap();
+    let scene = AppState::worksheet().doc.scene;
+    let causes = check(&scene, &scene, &printed_text(&text)).causes;
+    for (w, ht) in [(1024.0, 600.0), (1280.0, 720.0)] {
+        for dark in [true, false] {
+            let mut h = harness(w, ht);
+            if !dark {
+                h.state_mut().ui.layout.theme = phonglab::app::shell::layout::Theme::Light;
+            }
+            check_through_the_menu(&mut h, &path);
+            h.run_steps(2);
+            let heading = h.get_by_label("Worked calculation").rect();
+            // The first cause's words and evidence, whole, in the visible column.
+            let words = (causes[0].info.words)();
+            let first = format!("likely cause: {words} [{}]. Evidence", causes[0].info.id);
+            let r = h.get_by_label_contains(&first).rect();
+            assert!(
+                r.left() >= heading.left() - 1.0 && r.right() <= w && r.top() >= heading.bottom() && r.bottom() <= ht,
+                "{w}x{ht}: {r:?}"
+            );
+            // The rules line at the body's size.
+            let body = h.ctx.global_style().text_styles[&egui::TextStyle::Body].size;
+            let rules = h.get_by_label_contains("rules assumed").rect();
+            assert!(rules.height() >= body, "{w}x{ht}: rules {rules:?}, body {body}");
+            // Each cause in words beside the first wrong step, inside its frame, under the
+            // marker: seen with it.
+            let marker = h.get_by_label("» first wrong step").rect();
+            let mut top = marker.bottom() - 0.5;
+            for c in &causes {
+                let beside = format!("likely cause: {} [{}] (", (c.info.words)(), c.info.id);
+                let b = h.get_by_label_contains(&beside).rect();
+                assert!(b.top() >= top && b.top() - top < 4.0 * body, "{w}x{ht}: {marker:?} {b:?}");
+                assert!(b.left() >= marker.left() - 1.0 && b.right() <= w, "{w}x{ht}: {b:?}");
+                top = b.bottom() - 0.5;
+            }
+        }
+    }
+}
+
+#[test]
+fn in_portuguese_the_values_wrap_clear_of_the_scroll_bar_at_every_column_width() {
+    let dir = TempDir::new("wide");
+    let path = dir.0.join("vlv.txt");
+    std::fs::write(&path, printed(Some(Mistake::VlvReversed))).unwrap();
+    let mut h = harness(1920.0, 1080.0);
+    h.state_mut().ui.layout.language = Some("pt-PT".into());
+    h.run_steps(2);
+    check_through_the_menu_as(&mut h, &path, &["Ficheiro"], "Corrigir o trabalho de um aluno…", "Corrigir");
+    let student = h.state().student.clone();
+    // The column is 27 % of the window up to 460 points (from 1704 wide on, as at 1920):
+    // where each value wraps moves with its width, so some value ends near its right edge.
+    for w in (1500..=1708).step_by(8).map(|w| w as f32) {
+        let mut h = harness(w, 1080.0);
+        h.state_mut().ui.layout.language = Some("pt-PT".into());
+        h.state_mut().student = student.clone();
+        h.run_steps(3);
+        let heading = h.get_by_label("Cálculo passo a passo").rect();
+        let bar = {
+            let s = &h.ctx.global_style().spacing.scroll;
+            s.bar_width + s.bar_inner_margin + s.bar_outer_margin
+        };
+        let values: Vec<egui::Rect> = h
+            .get_all_by_label_contains(" = ")
+            .map(|n| n.rect())
+            .filter(|r| r.left() >= heading.left() - 1.0 && r.top() > heading.bottom())
+            .collect();
+        assert!(values.len() > 10, "{values:?}");
+        for r in values {
+            // The column's inner edge (the panel's margin) less the scroll bar floating there.
+            assert!(r.right() <= w - 8.0 - bar + 0.5, "{w}: {r:?} past {}", w - 8.0 - bar);
+        }
+    }
+}
+
+/// [`check_through_the_menu`] in another language: the menu's path, its item and the
+/// chooser's button.
+fn check_through_the_menu_as(h: &mut Harness<'static, AppState>, path: &Path, menu: &[&str], item: &str, go: &str) {
+    common::open_menu(h, menu);
+    h.get_by_label(item).click();
+    h.run_steps(2);
+    let c = h.state_mut().chooser.as_mut().expect("the chooser opens");
+    c.folder = path.parent().unwrap().display().to_string();
+    c.name = path.file_name().unwrap().to_string_lossy().into_owned();
+    h.run_steps(2);
+    h.get_by_label(go).click();
+    h.run_steps(3);
+    assert!(h.state().student.is_some(), "{:?}", h.state().message);
+}
+
+/// A catalogue's message, by id, from `i18n/` (the app's) or the core's.
+fn message(lang: &str, id: &str) -> String {
+    ["i18n", "crates/phonglab-core/i18n"]
+        .iter()
+        .filter_map(|dir| {
+            std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(dir).join(format!("{lang}.ftl"))).ok()
+        })
+        .flat_map(|text| text.lines().map(str::to_owned).collect::<Vec<_>>())
+        .find_map(|l| l.strip_prefix(&format!("{id} = ")).map(str::to_owned))
+        .unwrap_or_else(|| panic!("{lang}: no {id}"))
+}
+
+#[test]
+fn the_halfway_vector_has_one_name_in_each_portuguese() {
+    for lang in ["pt-PT", "pt-BR"] {
+        let legend = message(lang, "plot-legend-halfway");
+        assert_eq!(legend, "vetor médio");
+        for id in ["step-h", "effect-halfway"] {
+            let m = message(lang, id).to_lowercase();
+            assert!(m.contains(&legend) && !m.contains("halfway"), "{lang} {id}: {m}");
+        }
+    }
+}
+
+#[test]
+fn the_class_chart_is_as_tall_as_its_rows_and_wraps_long_causes_right_aligned_against_their_bars() {
+    use phonglab::cli::class_chart::chart;
+    let long = "o termo ambiente multiplicado por N·L como a difusa (a luz ambiente não tem direção)";
+    let counts = |n: usize| -> Vec<(String, usize)> {
+        (0..n).map(|k| (if k == 1 { long.to_string() } else { format!("causa {k}") }, 1 + k % 4)).collect()
+    };
+    let mut heights = Vec::new();
+    for n in [3, 12] {
+        let c = chart(&counts(n), 17);
+        assert_eq!(c.rows.len(), n);
+        // The last painted row is near the bottom: no empty third.
+        let bg = &c.rgba[c.rgba.len() - 4..];
+        let last = (0..c.height)
+            .rev()
+            .find(|&y| c.rgba[y * c.width * 4..(y + 1) * c.width * 4].chunks(4).any(|p| p != bg))
+            .expect("something painted");
+        assert!(c.height - last <= 24, "{n} rows: {} tall, last painted row {last}", c.height);
+        let right = c.rows[0].label.right();
+        for r in &c.rows {
+            assert!(!r.cut, "{r:?}");
+            assert!(r.label.left() >= 0.0 && r.label.right() <= r.bar.left(), "{r:?}");
+            // Right-aligned: every label ends where the others do, just before its bar.
+            assert!((r.label.right() - right).abs() < 0.5 && r.bar.left() - r.label.right() < 16.0, "{r:?}");
+            assert!(r.bar.right() <= c.width as f32 && r.label.bottom() <= c.height as f32, "{r:?}");
+        }
+        // The long cause on two lines rather than cut.
+        let one_line = c.rows[0].label.height();
+        assert!(c.rows[1].label.height() > 1.5 * one_line, "{:?} {one_line}", c.rows[1]);
+        heights.push(c.height);
+    }
+    assert!(heights[1] > heights[0] + 9 * 18, "{heights:?}");
+}
