@@ -99,7 +99,7 @@ fn an_obj_mesh_too() {
 fn without_the_depth_test_the_last_triangle_drawn_is_kept() {
     for object in [ObjectKind::Sphere, ObjectKind::Teapot, ObjectKind::Cylinder] {
         for shading in [Shading::Gouraud, Shading::Phong] {
-            let mut doc = Document::from_toml(include_str!("../../../assets/scenes/spotlight.toml")).unwrap();
+            let mut doc = Document::from_toml(include_str!("../../../../assets/scenes/spotlight.toml")).unwrap();
             (doc.view.object, doc.view.shading) = (object, shading);
             compare_with(&format!("{object:?} {shading:?} without the depth test"), &doc, false);
             let setup = doc.shaded_setup(phonglab_core::PowFn::Exact);
