@@ -1,6 +1,6 @@
 //! The app's integration tests, all in one test binary: each file here is a module, so
 //! egui, wgpu and krilla are linked once instead of once a file (41 binaries of about
-//! 100 MB each took minutes of every CI run to link). One file's tests:
+//! 100 MB each before). One file's tests:
 //! `cargo test --test all ui_student::`; one test: `cargo test --test all ui_student::name`.
 //!
 //! `tests/memory.rs` stays a binary of its own: it counts every byte the process allocates
