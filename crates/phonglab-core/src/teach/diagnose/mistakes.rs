@@ -12,6 +12,7 @@ use crate::model::view::ShadingMode;
 use super::colours::{self, Colours};
 use super::drawing::Drawing;
 use super::sides::{self, Sides};
+use super::slips;
 use super::values::{self, Values};
 
 /// Where a mistake is made: once for the scene, or for each light in turn.
@@ -606,7 +607,7 @@ const fn per_light(id: &'static str, message: &'static str, apply: fn(&mut Drawi
 }
 
 /// The picture mistakes, in the order the docs list them.
-pub const MISTAKES: [PictureMistake; 59] = [
+pub const MISTAKES: [PictureMistake; 66] = [
     row("normal-by-modelview", "wrong-cause-normals-by-m", normals_by_modelview),
     row("normal-not-normalised", "diagnose-normalize-off", normalize_off),
     row("reflection-for-halfway", "wrong-cause-reflection-for-halfway", reflection_for_halfway),
@@ -654,6 +655,14 @@ pub const MISTAKES: [PictureMistake; 59] = [
     row("emission-from-colour", "diagnose-emission-from-colour", emission_from_colour),
     row("ambient-diffuse-swapped", "diagnose-ambient-diffuse-swapped", ambient_diffuse_swapped),
     per_light("light-diffuse-left-out", "diagnose-light-diffuse-left-out", light_diffuse_left_out),
+    // Edits of the exported shader's formula, the ids `phonglab check`'s for the same slip.
+    row("diffuse-not-clamped", "diagnose-diffuse-not-clamped", slips::diffuse_not_clamped),
+    row("vlv-reversed", "diagnose-vlv-reversed", slips::light_reversed),
+    row("viewer-reversed", "diagnose-viewer-reversed", slips::viewer_reversed),
+    row("halfway-not-normalised", "diagnose-halfway-not-normalised", slips::halfway_not_normalised),
+    row("flat-shade-model", "diagnose-flat-shade-model", slips::flat_shade_model),
+    row("view-order-reversed", "diagnose-view-order-reversed", slips::view_order_reversed),
+    row("view-order-reversed", "diagnose-view-order-reversed-lights", slips::view_order_reversed_with_lights),
     // Last: its colour is fitted, so a mistake of the scene's own values that draws the
     // same picture (the material's ambient given its diffuse) is named before it.
     row("emission-added", "diagnose-emission-added", emission_added),
