@@ -28,13 +28,16 @@ pub fn glu_cylinder(base: f32, top: f32, height: f32, slices: u32, stacks: u32, 
         }
     }
     // GLU sends each stack as a quad strip (a_i, b_i, a_i+1, b_i+1, ...): GL_FLAT colours
-    // both triangles of a quad with its last vertex, b_i+1.
+    // both triangles of a quad with its last vertex, b_i+1. With caps the export draws
+    // phonglab's own triangles (gluCylinder has none): each its last corner.
     for w in rows.windows(2) {
         let (a, b) = (w[0], w[1]);
         for i in 0..slices {
             m.triangles.push([a + i + 1, a + i, b + i]);
             m.triangles.push([a + i + 1, b + i, b + i + 1]);
-            m.provoking.extend([b + i + 1, b + i + 1]);
+            if !caps {
+                m.provoking.extend([b + i + 1, b + i + 1]);
+            }
         }
     }
     if caps {
@@ -51,7 +54,6 @@ pub fn glu_cylinder(base: f32, top: f32, height: f32, slices: u32, stacks: u32, 
                 } else {
                     m.triangles.push([centre, first + i, first + i + 1]);
                 }
-                m.provoking.push(m.triangles[m.triangles.len() - 1][2]);
             }
         }
     }

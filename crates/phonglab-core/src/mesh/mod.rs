@@ -58,6 +58,9 @@ impl Mesh {
         for (n, p) in self.normals.iter_mut().zip(&self.positions) {
             *n = p.try_normalize().unwrap_or(Vec3::Z);
         }
+        // Drawn as phonglab's own triangles (the export sends its arrays): each triangle's
+        // last corner provokes.
+        self.provoking.clear();
         self
     }
 
