@@ -369,9 +369,10 @@ fn gl_flat_draws_what_mesa_draws_and_is_named() {
         assert_eq!(v["verdict"], "wrong", "{picture}: {v:#}");
         assert_eq!(v["causes"][0]["id"], "flat-shade-model", "{picture}: {v:#}");
     }
-    for (scene, picture) in
-        [("tests/data/diagnose_mesa/flat-tube.toml", "flat-tube.png"), ("assets/scenes/redbook-teapots/11-gold.toml", "flat-teapot.png")]
-    {
+    for (scene, picture) in [
+        ("tests/data/diagnose_mesa/flat-tube.toml", "flat-tube.png"),
+        ("assets/scenes/redbook-teapots/11-gold.toml", "flat-teapot.png"),
+    ] {
         let (last, last_covered, bg) = drawn_in(scene, ShadingMode::FlatProvoking, true);
         let (_, _, mesa) = phonglab::io::image::read_png(&data.join(picture)).unwrap();
         let m = compare(&last, &last_covered, &mesa, bg, SIZE);

@@ -6,9 +6,9 @@
 //! `mul_add` in the exact products), so they give the same bits (tested).
 
 use crate::cpu::Isa;
-use crate::equation::lighting::FormulaSlip;
 #[cfg(target_arch = "x86_64")]
 use crate::cpu::{Avx2, Avx512};
+use crate::equation::lighting::FormulaSlip;
 use crate::specialise::lighter::{Lighter, Output, Recorder, Source};
 
 impl Lighter {

@@ -31,7 +31,10 @@ impl Lighter {
         let e = self.engine();
         let renormalize = e.options().renormalize;
         let eye = |p: Vec3, n: Vec3, raw: bool| {
-            e.light_eye(DVec4::new(f64::from(p.x), f64::from(p.y), f64::from(p.z), 1.0), if raw { renormalised(renormalize, n) } else { n })
+            e.light_eye(
+                DVec4::new(f64::from(p.x), f64::from(p.y), f64::from(p.z), 1.0),
+                if raw { renormalised(renormalize, n) } else { n },
+            )
         };
         let count = src.len();
         for i in 0..count {
@@ -47,7 +50,10 @@ impl Lighter {
             let sides = [&lit.front, &lit.back];
             match &mut out {
                 Output::Lit { front, back } => {
-                    let as_lit = |s: &crate::equation::breakdown::SideColor<f32>| Lit { primary: s.primary, secondary: s.secondary };
+                    let as_lit = |s: &crate::equation::breakdown::SideColor<f32>| Lit {
+                        primary: s.primary,
+                        secondary: s.secondary,
+                    };
                     front[i] = as_lit(sides[0]);
                     if let Some(b) = back.as_deref_mut() {
                         b[i] = as_lit(sides[1]);

@@ -428,9 +428,10 @@ impl Setup {
         let mesh = job.mesh;
         for (side, colours) in self.face_color.iter_mut().enumerate() {
             colours.clear();
-            colours.extend((0..mesh.triangles.len()).map(|t| {
-                verts.color[side].get(mesh.provoking_vertex(t) as usize).copied().unwrap_or_default()
-            }));
+            colours.extend(
+                (0..mesh.triangles.len())
+                    .map(|t| verts.color[side].get(mesh.provoking_vertex(t) as usize).copied().unwrap_or_default()),
+            );
         }
     }
 }

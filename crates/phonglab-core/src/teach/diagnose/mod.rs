@@ -196,10 +196,12 @@ impl Pictures {
         let same: Vec<Tried> = causes
             .iter()
             .filter(|t| (score(t) - score(top)).abs() < 0.0005)
-            .filter(|t| picture_of(t).is_some_and(|(rgba, covered)| {
-                compare(rgba, covered, first, bg, size).score >= RIGHT_AT
-                    && compare(first, first_covered, rgba, bg, size).score >= RIGHT_AT
-            }))
+            .filter(|t| {
+                picture_of(t).is_some_and(|(rgba, covered)| {
+                    compare(rgba, covered, first, bg, size).score >= RIGHT_AT
+                        && compare(first, first_covered, rgba, bg, size).score >= RIGHT_AT
+                })
+            })
             .copied()
             .collect();
         let mut same = same;

@@ -80,8 +80,7 @@ pub(in crate::raster::render) fn shade_pixel(input: &PixelInput<'_>, x: usize, y
     };
     let ri = r as usize;
     // The triangle's attributes as the resolve took them (stored, or for a back face computed).
-    let attributes =
-        if job.mode.per_face() { None } else { shared.of(job, verts, &setup.corners, ri, t) };
+    let attributes = if job.mode.per_face() { None } else { shared.of(job, verts, &setup.corners, ri, t) };
     out.colour = match job.mode {
         ShadingMode::FlatFace | ShadingMode::FlatProvoking => *setup.face_color[side].get(out.triangle)?,
         ShadingMode::Gouraud => {
