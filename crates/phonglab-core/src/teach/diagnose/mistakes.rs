@@ -656,13 +656,13 @@ pub const MISTAKES: [PictureMistake; 66] = [
     row("ambient-diffuse-swapped", "diagnose-ambient-diffuse-swapped", ambient_diffuse_swapped),
     per_light("light-diffuse-left-out", "diagnose-light-diffuse-left-out", light_diffuse_left_out),
     // Edits of the exported shader's formula, the ids `phonglab check`'s for the same slip.
-    row("diffuse-not-clamped", "diagnose-diffuse-not-clamped", slips::diffuse_not_clamped),
-    row("vlv-reversed", "diagnose-vlv-reversed", slips::light_reversed),
-    row("viewer-reversed", "diagnose-viewer-reversed", slips::viewer_reversed),
-    row("halfway-not-normalised", "diagnose-halfway-not-normalised", slips::halfway_not_normalised),
-    row("flat-shade-model", "diagnose-flat-shade-model", slips::flat_shade_model),
-    row("view-order-reversed", "diagnose-view-order-reversed", slips::view_order_reversed),
-    row("view-order-reversed", "diagnose-view-order-reversed-lights", slips::view_order_reversed_with_lights),
+    row("diffuse-not-clamped", "diagnose-diffuse-not-clamped", |d, _| slips::diffuse_not_clamped(d)),
+    row("vlv-reversed", "diagnose-vlv-reversed", |d, _| slips::light_reversed(d)),
+    row("viewer-reversed", "diagnose-viewer-reversed", |d, _| slips::viewer_reversed(d)),
+    row("halfway-not-normalised", "diagnose-halfway-not-normalised", |d, _| slips::halfway_not_normalised(d)),
+    row("flat-shade-model", "diagnose-flat-shade-model", |d, _| slips::flat_shade_model(d)),
+    row("view-order-reversed", "diagnose-view-order-reversed", |d, _| slips::view_order_reversed(d)),
+    row("view-order-reversed", "diagnose-view-order-reversed-lights", |d, _| slips::view_order_reversed_with_lights(d)),
     // Last: its colour is fitted, so a mistake of the scene's own values that draws the
     // same picture (the material's ambient given its diffuse) is named before it.
     row("emission-added", "diagnose-emission-added", emission_added),

@@ -11,7 +11,6 @@ use crate::model::scene::LightPlacement;
 use crate::model::view::ShadingMode;
 
 use super::drawing::Drawing;
-use super::mistakes::At;
 
 /// The drawing lit with formula slip `slip`.
 fn slipped(d: &mut Drawing, slip: FormulaSlip) -> bool {
@@ -20,28 +19,28 @@ fn slipped(d: &mut Drawing, slip: FormulaSlip) -> bool {
 }
 
 /// The diffuse term's `max(n . L, 0)` written `n . L`.
-pub(super) fn diffuse_not_clamped(d: &mut Drawing, _: At) -> bool {
+pub(super) fn diffuse_not_clamped(d: &mut Drawing) -> bool {
     slipped(d, FormulaSlip::DiffuseNotClamped)
 }
 
 /// A positional light's L from the light to the point (`P - P_l`); only where a light is
 /// positional.
-pub(super) fn light_reversed(d: &mut Drawing, _: At) -> bool {
+pub(super) fn light_reversed(d: &mut Drawing) -> bool {
     d.scene.lights.iter().any(|l| !l.is_directional()) && slipped(d, FormulaSlip::LightReversed)
 }
 
 /// The local viewer's V from the eye to the point (`normalize(P)`); only with a local viewer.
-pub(super) fn viewer_reversed(d: &mut Drawing, _: At) -> bool {
+pub(super) fn viewer_reversed(d: &mut Drawing) -> bool {
     d.scene.light_model.local_viewer && slipped(d, FormulaSlip::ViewerReversed)
 }
 
 /// `n . (L + V)`, H not normalised; only where the specular takes H.
-pub(super) fn halfway_not_normalised(d: &mut Drawing, _: At) -> bool {
+pub(super) fn halfway_not_normalised(d: &mut Drawing) -> bool {
     d.scene.rules.specular.vector() == SpecularVector::Halfway && slipped(d, FormulaSlip::HalfwayNotNormalised)
 }
 
 /// `glShadeModel(GL_FLAT)`: each face its provoking vertex's colour.
-pub(super) fn flat_shade_model(d: &mut Drawing, _: At) -> bool {
+pub(super) fn flat_shade_model(d: &mut Drawing) -> bool {
     let was = d.mode;
     d.mode = ShadingMode::FlatProvoking;
     was != d.mode
@@ -76,7 +75,7 @@ fn drawn_under(d: &mut Drawing, eye_from_object: DMat4) -> bool {
 /// The object's modelview built as the rotation times the translation (`R @ T`, not
 /// `T @ R`): the object moves off its place and is lit there; the lights stay where the
 /// scene puts them.
-pub(super) fn view_order_reversed(d: &mut Drawing, _: At) -> bool {
+pub(super) fn view_order_reversed(d: &mut Drawing) -> bool {
     match reordered(d.scene.eye_from_object()) {
         Some(m) => drawn_under(d, m),
         None => false,
@@ -85,7 +84,7 @@ pub(super) fn view_order_reversed(d: &mut Drawing, _: At) -> bool {
 
 /// The camera's view built as the rotation times the translation, for the object and for
 /// the lights placed under it (the same matrix given to both).
-pub(super) fn view_order_reversed_with_lights(d: &mut Drawing, _: At) -> bool {
+pub(super) fn view_order_reversed_with_lights(d: &mut Drawing) -> bool {
     let in_world = d.scene.lights.iter().any(|l| l.placement == LightPlacement::World);
     let (Some(view), Some(m)) = (reordered(d.scene.eye_from_world), reordered(d.scene.eye_from_object())) else {
         return false;
