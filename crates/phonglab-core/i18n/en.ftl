@@ -677,6 +677,7 @@ diagnose-halfway-not-normalised = In the shader, the halfway vector L + V is not
 diagnose-flat-shade-model = glShadeModel(GL_FLAT) instead of GL_SMOOTH: each face has one colour, the colour lit at its last vertex
 diagnose-view-order-reversed = The object's modelview multiplied in the wrong order (rotation × translation instead of translation × rotation): the object is drawn and lit away from its place
 diagnose-view-order-reversed-lights = The view matrix multiplied in the wrong order (rotation × translation instead of translation × rotation), for the object and the lights placed under it
+diagnose-view-order-reversed-lights-only = The lights' view matrix multiplied in the wrong order (rotation × translation instead of translation × rotation): the lights placed in the world are placed wrongly; the object is drawn right
 diagnose-same-picture = { $ids } draw the same picture: it cannot tell them apart, and they are listed in the table's order (one changed value before a value fitted from the picture). Check which one the program holds.
 
 ## phonglab check: a student's work checked

@@ -677,6 +677,7 @@ diagnose-halfway-not-normalised = No shader, o vetor médio L + V não é normal
 diagnose-flat-shade-model = glShadeModel(GL_FLAT) em vez de GL_SMOOTH: cada face tem uma cor só, a cor calculada no seu último vértice
 diagnose-view-order-reversed = A modelview do objeto multiplicada na ordem errada (rotação × translação em vez de translação × rotação): o objeto é desenhado e iluminado fora do lugar
 diagnose-view-order-reversed-lights = A matriz de visualização multiplicada na ordem errada (rotação × translação em vez de translação × rotação), para o objeto e para as luzes posicionadas com ela
+diagnose-view-order-reversed-lights-only = A matriz de visualização das luzes multiplicada na ordem errada (rotação × translação em vez de translação × rotação): as luzes posicionadas no mundo ficam no lugar errado; o objeto é desenhado certo
 diagnose-same-picture = { $ids } desenham a mesma imagem: não dá para distingui-los por ela, e eles aparecem na ordem da tabela (um valor alterado antes de um valor ajustado à imagem). Confira qual deles está no programa.
 
 ## phonglab check: o trabalho de um aluno verificado

@@ -677,6 +677,7 @@ diagnose-halfway-not-normalised = No shader, o vetor médio L + V não é normal
 diagnose-flat-shade-model = glShadeModel(GL_FLAT) em vez de GL_SMOOTH: cada face tem uma só cor, a cor calculada no seu último vértice
 diagnose-view-order-reversed = A modelview do objeto multiplicada pela ordem errada (rotação × translação em vez de translação × rotação): o objeto é desenhado e iluminado fora do seu lugar
 diagnose-view-order-reversed-lights = A matriz de vista multiplicada pela ordem errada (rotação × translação em vez de translação × rotação), para o objeto e para as luzes colocadas com ela
+diagnose-view-order-reversed-lights-only = A matriz de vista das luzes multiplicada pela ordem errada (rotação × translação em vez de translação × rotação): as luzes colocadas no mundo ficam no sítio errado; o objeto é desenhado bem
 diagnose-same-picture = { $ids } desenham a mesma imagem: não é possível distingui-los por ela, e aparecem pela ordem da tabela (um valor alterado antes de um valor ajustado à imagem). Verifique qual deles está no programa.
 
 ## phonglab check: o trabalho de um aluno verificado

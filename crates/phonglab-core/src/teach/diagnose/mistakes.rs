@@ -607,7 +607,7 @@ const fn per_light(id: &'static str, message: &'static str, apply: fn(&mut Drawi
 }
 
 /// The picture mistakes, in the order the docs list them.
-pub const MISTAKES: [PictureMistake; 66] = [
+pub const MISTAKES: [PictureMistake; 67] = [
     row("normal-by-modelview", "wrong-cause-normals-by-m", normals_by_modelview),
     row("normal-not-normalised", "diagnose-normalize-off", normalize_off),
     row("reflection-for-halfway", "wrong-cause-reflection-for-halfway", reflection_for_halfway),
@@ -663,6 +663,9 @@ pub const MISTAKES: [PictureMistake; 66] = [
     row("flat-shade-model", "diagnose-flat-shade-model", |d, _| slips::flat_shade_model(d)),
     row("view-order-reversed", "diagnose-view-order-reversed", |d, _| slips::view_order_reversed(d)),
     row("view-order-reversed", "diagnose-view-order-reversed-lights", |d, _| slips::view_order_reversed_with_lights(d)),
+    row("view-order-reversed", "diagnose-view-order-reversed-lights-only", |d, _| {
+        slips::view_order_reversed_for_lights(d)
+    }),
     // Last: its colour is fitted, so a mistake of the scene's own values that draws the
     // same picture (the material's ambient given its diffuse) is named before it.
     row("emission-added", "diagnose-emission-added", emission_added),

@@ -97,3 +97,16 @@ pub(super) fn view_order_reversed_with_lights(d: &mut Drawing) -> bool {
     d.scene.world_from_object = world_from_object;
     true
 }
+
+/// The view built as the rotation times the translation for the lights alone (their own
+/// modelview, `light_modelview`, so built; the object's drawn right): each light placed in
+/// the world is placed under that matrix.
+pub(super) fn view_order_reversed_for_lights(d: &mut Drawing) -> bool {
+    let Some(view) = reordered(d.scene.eye_from_world) else { return false };
+    let mut changed = false;
+    for l in d.scene.lights.iter_mut().filter(|l| l.placement == LightPlacement::World) {
+        l.placement = LightPlacement::Matrix(view);
+        changed = true;
+    }
+    changed
+}
