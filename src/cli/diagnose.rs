@@ -82,6 +82,7 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
                 let (cause, id, score) = named(c);
                 out.push(t!("diagnose-also", cause = cause, id = id, score = score));
             }
+            out.extend(d.same_picture_words());
             out
         }
         Verdict::Unexplained => {
@@ -160,7 +161,8 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
 }
 
 /// The JSON: the verdict, the causes with their scores (best first; `light` for a mistake
-/// made per light, `emission` the fitted colour for `emission-added`), every mistake tried,
+/// made per light, `emission` the fitted colour for `emission-added`), the first causes
+/// when they draw the same picture (`same_picture`, else empty), every mistake tried,
 /// the right picture's score and the pixel that differs most with the probe there.
 fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>) -> serde_json::Value {
     use serde_json::json;
@@ -185,6 +187,7 @@ fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>)
     json!({
         "verdict": d.verdict.name(),
         "causes": d.causes.iter().map(cause).collect::<Vec<_>>(),
+        "same_picture": d.same_picture.iter().map(cause).collect::<Vec<_>>(),
         "right_score": d.right.score,
         "pixels": d.right.pixels,
         "size": size,

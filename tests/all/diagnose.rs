@@ -292,6 +292,94 @@ fn the_pyopengl_export_under_mesa_is_right_and_its_edited_state_is_named() {
     }
 }
 
+/// `scene` (a path from the repository's root) drawn as `diagnose` draws it, in `mode`, at
+/// SIZE; with `last_corner`, each triangle's colour taken from its last corner instead of
+/// the provoking vertex GLU sends. Its pixels and coverage.
+fn drawn_in(scene: &str, mode: phonglab_core::ShadingMode, last_corner: bool) -> (Vec<u8>, Vec<bool>, [u8; 3]) {
+    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(scene)).unwrap();
+    let doc = phonglab_core::Document::from_toml(&text).unwrap();
+    let mesh = doc.view.mesh();
+    let mut d = phonglab_core::teach::diagnose::Drawing::of(&doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    d.mode = mode;
+    if last_corner {
+        d.mesh.provoking.clear();
+    }
+    let (_, rgba, covered) = d.draw(SIZE).unwrap();
+    (rgba, covered, d.background8())
+}
+
+/// `glShadeModel(GL_FLAT)` in the PyOpenGL export, drawn by Mesa (`tests/data/diagnose_mesa/`
+/// `flat-sphere.png`, `flat-tube.png`, `flat-teapot.png`; the README says how): phonglab's GL_FLAT mode draws
+/// the same picture, each face its provoking vertex's colour (gluSphere's fans and quad
+/// strips; gluCylinder's quads, whose last vertex one of phonglab's two triangles lacks;
+/// freeglut's teapot triangles, whose last vertex is phonglab's middle corner),
+/// within 1 level in every channel where both cover the pixel. Flat per face (lit at the
+/// centroid) does not, nor does taking every triangle's last corner on the tube. And
+/// `diagnose` names it.
+#[test]
+fn gl_flat_draws_what_mesa_draws_and_is_named() {
+    use phonglab_core::ShadingMode;
+    use phonglab_core::teach::diagnose::RIGHT_AT;
+    use phonglab_core::teach::picture_match::compare;
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let data = root.join("tests/data/diagnose_mesa");
+    for (scene, picture) in [
+        ("assets/scenes/gouraud-misses-the-highlight.toml", "flat-sphere.png"),
+        ("tests/data/diagnose_mesa/flat-tube.toml", "flat-tube.png"),
+        ("assets/scenes/redbook-teapots/11-gold.toml", "flat-teapot.png"),
+    ] {
+        let (w, h, mesa) = phonglab::io::image::read_png(&data.join(picture)).unwrap();
+        assert_eq!((w, h), (SIZE, SIZE));
+        let (ours, covered, bg) = drawn_in(scene, ShadingMode::FlatProvoking, false);
+        let m = compare(&ours, &covered, &mesa, bg, SIZE);
+        assert!(m.score >= RIGHT_AT, "{picture}: {m:?}");
+        // Where both cover a pixel (away from the outline), the same colour to a level.
+        let is_bg = |p: &[u8]| p[..3] == bg;
+        let mut worst = 0;
+        let mut both = 0;
+        for i in 0..SIZE * SIZE {
+            let (a, b) = (&ours[i * 4..i * 4 + 3], &mesa[i * 4..i * 4 + 3]);
+            let (x, y) = (i % SIZE, i / SIZE);
+            let inside = |img: &[u8]| {
+                [(0i64, 0i64), (1, 0), (-1, 0), (0, 1), (0, -1)].iter().all(|(dx, dy)| {
+                    let (u, v) = (x as i64 + dx, y as i64 + dy);
+                    (0..SIZE as i64).contains(&u)
+                        && (0..SIZE as i64).contains(&v)
+                        && !is_bg(&img[(v as usize * SIZE + u as usize) * 4..])
+                })
+            };
+            // A pixel on a face's edge may take the neighbour's colour: compare the faces' insides.
+            let same_face = |img: &[u8]| {
+                [(1i64, 0i64), (-1, 0), (0, 1), (0, -1)].iter().all(|(dx, dy)| {
+                    let j = ((y as i64 + dy) as usize * SIZE + (x as i64 + dx) as usize) * 4;
+                    img[j..j + 3] == img[i * 4..i * 4 + 3]
+                })
+            };
+            if inside(&ours) && inside(&mesa) && same_face(&mesa) {
+                both += 1;
+                worst = worst.max(a.iter().zip(b).map(|(p, q)| p.abs_diff(*q)).max().unwrap_or(0));
+            }
+        }
+        assert!(both > SIZE * SIZE / 50, "{picture}: {both} pixels compared");
+        assert!(worst <= 1, "{picture}: {worst} levels apart");
+        let (face, face_covered, _) = drawn_in(scene, ShadingMode::FlatFace, false);
+        let m = compare(&face, &face_covered, &mesa, bg, SIZE);
+        assert!(m.score < RIGHT_AT, "{picture}: lit at the centroid {m:?}");
+        let v = diagnose_json(&root.join(scene), &data.join(picture));
+        assert_eq!(v["verdict"], "wrong", "{picture}: {v:#}");
+        assert_eq!(v["causes"][0]["id"], "flat-shade-model", "{picture}: {v:#}");
+    }
+    for (scene, picture) in [
+        ("tests/data/diagnose_mesa/flat-tube.toml", "flat-tube.png"),
+        ("assets/scenes/redbook-teapots/11-gold.toml", "flat-teapot.png"),
+    ] {
+        let (last, last_covered, bg) = drawn_in(scene, ShadingMode::FlatProvoking, true);
+        let (_, _, mesa) = phonglab::io::image::read_png(&data.join(picture)).unwrap();
+        let m = compare(&last, &last_covered, &mesa, bg, SIZE);
+        assert!(m.score < RIGHT_AT, "{picture}, each triangle's last corner: {m:?}");
+    }
+}
+
 #[test]
 fn the_memory_estimate_covers_every_drawing_and_picture_it_holds() {
     // 2048 x 2048 peaked at 207 MB (debug build, /usr/bin/time -f %M) and was seen at

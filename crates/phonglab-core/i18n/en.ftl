@@ -673,6 +673,15 @@ diagnose-row-vectors-light = The modelview of light { $light } (GL_LIGHT{ $light
 diagnose-emission-from-colour = The material's emission given the object's colour: the object glows in its own colour
 diagnose-ambient-diffuse-swapped = The material's ambient and diffuse colours exchanged
 diagnose-light-diffuse-left-out = The diffuse colour of light { $light } (GL_LIGHT{ $light }) never set: OpenGL's default, white for GL_LIGHT0 and black for the others
+diagnose-diffuse-not-clamped = In the shader, the diffuse term takes N·L without max(N·L, 0): where the light is behind the surface it subtracts light
+diagnose-vlv-reversed = In the shader, the light vector L points from the light to the surface (P − light position) instead of from the surface to the light
+diagnose-viewer-reversed = In the shader, the local viewer's V points from the eye to the point (normalize(P)) instead of towards the eye (normalize(−P))
+diagnose-halfway-not-normalised = In the shader, the halfway vector L + V is not normalised before its dot product with N
+diagnose-flat-shade-model = glShadeModel(GL_FLAT) instead of GL_SMOOTH: each face has one colour, the colour lit at its last vertex
+diagnose-view-order-reversed = The object's modelview multiplied in the wrong order (rotation × translation instead of translation × rotation): the object is drawn and lit away from its place
+diagnose-view-order-reversed-lights = The view matrix multiplied in the wrong order (rotation × translation instead of translation × rotation), for the object and the lights placed under it
+diagnose-view-order-reversed-lights-only = The lights' view matrix multiplied in the wrong order (rotation × translation instead of translation × rotation): the lights placed in the world are placed wrongly; the object is drawn right
+diagnose-same-picture = { $ids } draw the same picture: it cannot tell them apart, and they are listed in the table's order (one changed value before a value fitted from the picture). Check which one the program holds.
 
 ## phonglab check: a student's work checked
 

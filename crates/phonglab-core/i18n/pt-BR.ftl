@@ -673,6 +673,15 @@ diagnose-row-vectors-light = A matriz modelview da luz { $light } (GL_LIGHT{ $li
 diagnose-emission-from-colour = A emissão do material igual à cor do objeto: o objeto brilha com a própria cor
 diagnose-ambient-diffuse-swapped = As cores ambiente e difusa do material trocadas
 diagnose-light-diffuse-left-out = A cor difusa da luz { $light } (GL_LIGHT{ $light }) nunca definida: o valor padrão do OpenGL, branco para GL_LIGHT0 e preto para as outras
+diagnose-diffuse-not-clamped = No shader, o termo difuso usa N·L sem max(N·L, 0): onde a luz está atrás da superfície, ele subtrai luz
+diagnose-vlv-reversed = No shader, o vetor da luz L aponta da luz para a superfície (P − posição da luz) em vez de apontar da superfície para a luz
+diagnose-viewer-reversed = No shader, o V do observador local aponta do olho para o ponto (normalize(P)) em vez de apontar para o olho (normalize(−P))
+diagnose-halfway-not-normalised = No shader, o vetor médio L + V não é normalizado antes do produto escalar com N
+diagnose-flat-shade-model = glShadeModel(GL_FLAT) em vez de GL_SMOOTH: cada face tem uma cor só, a cor calculada no seu último vértice
+diagnose-view-order-reversed = A modelview do objeto multiplicada na ordem errada (rotação × translação em vez de translação × rotação): o objeto é desenhado e iluminado fora do lugar
+diagnose-view-order-reversed-lights = A matriz de visualização multiplicada na ordem errada (rotação × translação em vez de translação × rotação), para o objeto e para as luzes posicionadas com ela
+diagnose-view-order-reversed-lights-only = A matriz de visualização das luzes multiplicada na ordem errada (rotação × translação em vez de translação × rotação): as luzes posicionadas no mundo ficam no lugar errado; o objeto é desenhado certo
+diagnose-same-picture = { $ids } desenham a mesma imagem: não dá para distingui-los por ela, e eles aparecem na ordem da tabela (um valor alterado antes de um valor ajustado à imagem). Confira qual deles está no programa.
 
 ## phonglab check: o trabalho de um aluno verificado
 

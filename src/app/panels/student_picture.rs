@@ -3,7 +3,7 @@
 //! [`phonglab_core::teach::diagnose`] in words (the verdict, the closest cause, its score).
 
 use egui::{RichText, Ui};
-use phonglab_core::teach::diagnose::{Diagnosis, Tried, Verdict};
+use phonglab_core::teach::diagnose::{Diagnosis, Tried, Verdict, same_picture_said};
 use phonglab_core::teach::picture_match::difference_image;
 
 use crate::t;
@@ -53,6 +53,8 @@ struct Said {
     verdict: Verdict,
     right: f64,
     named: Vec<Tried>,
+    /// The first causes when they draw the same picture.
+    same: Vec<Tried>,
 }
 
 impl Said {
@@ -62,7 +64,7 @@ impl Said {
             Verdict::Wrong => d.causes.clone(),
             Verdict::Unexplained => d.tried.first().filter(|t| t.matched.is_some()).copied().into_iter().collect(),
         };
-        Said { verdict: d.verdict, right: d.right.score, named }
+        Said { verdict: d.verdict, right: d.right.score, named, same: d.same_picture.clone() }
     }
 }
 
@@ -87,6 +89,7 @@ fn verdict_lines(d: &Said) -> Vec<String> {
                     t!("diagnose-also", cause = cause, id = id, score = score)
                 });
             }
+            out.extend(same_picture_said(&d.same));
             out
         }
         Verdict::Unexplained => {

@@ -104,6 +104,29 @@ pub struct EvalOptions {
     pub pow: PowFn,
     /// How per-pixel (Phong) shading renormalises its interpolated normals.
     pub renormalize: Renormalize,
+    /// A slip in one step of the formula (none by default): drawn by the general engine
+    /// only, never by the specialised lighter's program.
+    pub slip: FormulaSlip,
+}
+
+/// A slip in one step of the lighting formula, as a student makes it by editing a line of
+/// the exported shader (`templates/lighting.glsl`), which lights per vertex or per fragment
+/// as the scene says: the engine makes it at the same step, wherever it lights. What
+/// `phonglab diagnose` draws to name such an edit; not OpenGL, and never chosen otherwise.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum FormulaSlip {
+    /// The formula as OpenGL has it.
+    #[default]
+    None,
+    /// The diffuse term's `max(n . L, 0)` written `n . L`: negative where the light is behind.
+    DiffuseNotClamped,
+    /// A positional light's `L` from the light to the vertex (`P - P_l`, normalised): the
+    /// diffuse, the specular and the spot cone all take it so.
+    LightReversed,
+    /// The local viewer's `V` from the eye to the vertex (`normalize(P)`).
+    ViewerReversed,
+    /// The specular cosine `n . (L + V)`, the halfway vector not normalised.
+    HalfwayNotNormalised,
 }
 
 impl EvalOptions {
@@ -290,6 +313,7 @@ impl<S: Real> Engine<S> {
 
         // V: towards the viewer.
         let v = terms::view_vector::<S>(self.local_viewer, self.rules.viewer_from_eye_plane(), pos);
+        let v = if self.local_viewer && self.options.slip == FormulaSlip::ViewerReversed { v.map(|v| -v) } else { v };
         if v.is_none() {
             out.limits.insert(Limit::VertexAtEye);
         }
@@ -334,6 +358,8 @@ impl<S: Real> Engine<S> {
     ) -> LightTerms<S> {
         let mut limits = Limits::NONE;
         let (l64, distance, attenuation) = Self::light_vector(pl, pos, at_infinity, &mut limits);
+        let reversed = self.options.slip == FormulaSlip::LightReversed && matches!(pl.pos, LightPos::Positional(_));
+        let l64 = if reversed { l64.map(|l| -l) } else { l64 };
         let l: Option<S::V3> = l64.map(S::V3::from_dvec3);
         let spot = self.spot_terms(pl, l64, &mut limits);
         let scale = mul0(attenuation, spot.factor);
@@ -351,6 +377,7 @@ impl<S: Real> Engine<S> {
                 v,
                 gate: self.rules.specular_gate(),
                 vector: self.rules.specular.vector(),
+                clamp_diffuse: self.options.slip != FormulaSlip::DiffuseNotClamped,
             };
             terms::side::<S>(
                 pl.products[side],
@@ -443,6 +470,9 @@ impl<S: Real> Engine<S> {
     #[inline(always)]
     fn halfway(&self, l: Option<S::V3>, v: Option<S::V3>, limits: &mut Limits) -> Option<S::V3> {
         match (self.rules.specular.vector(), l, v) {
+            (SpecularVector::Halfway, Some(l), Some(v)) if self.options.slip == FormulaSlip::HalfwayNotNormalised => {
+                Some(l + v)
+            }
             (SpecularVector::Halfway, Some(l), Some(v)) => {
                 let h = terms::halfway::<S>(l, v);
                 if h.is_none() {
@@ -464,6 +494,7 @@ struct Accum<S: Real> {
 impl crate::model::view::View {
     /// The numerical options of the shaded view with power function `pow`.
     pub fn eval_options(&self, pow: crate::numerics::pow::PowFn) -> EvalOptions {
-        EvalOptions { pow, renormalize: if self.phong_renormalize { Renormalize::Exact } else { Renormalize::Skip } }
+        let renormalize = if self.phong_renormalize { Renormalize::Exact } else { Renormalize::Skip };
+        EvalOptions { pow, renormalize, ..EvalOptions::default() }
     }
 }

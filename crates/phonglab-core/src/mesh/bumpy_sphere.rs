@@ -99,7 +99,7 @@ pub fn bumpy_sphere(level: u32, seed: u64) -> Mesh {
         }
     }
     let normals = normals.into_iter().map(|n| n.normalize_or(Vec3::Z)).collect();
-    Mesh { positions, normals, triangles }
+    Mesh { positions, normals, triangles, provoking: Vec::new() }
 }
 
 /// A small xorshift generator (the mesh needs no better).

@@ -46,6 +46,9 @@ fn glu_cylinder_oriented(
             m.push_vertex(Vec3::new((r * s) as f32, (r * c) as f32, z), n);
         }
     }
+    // GLU sends each stack as a quad strip (a_i, b_i, a_i+1, b_i+1, ...): GL_FLAT colours
+    // both triangles of a quad with its last vertex, b_i+1. With caps the export draws
+    // phonglab's own triangles (gluCylinder has none): each its last corner.
     for w in rows.windows(2) {
         // GLU_INSIDE sends each pair of the strip the other way round: the quads' corners
         // with the two rows exchanged.
@@ -53,6 +56,9 @@ fn glu_cylinder_oriented(
         for i in 0..slices {
             m.triangles.push([a + i + 1, a + i, b + i]);
             m.triangles.push([a + i + 1, b + i, b + i + 1]);
+            if !caps {
+                m.provoking.extend([b + i + 1, b + i + 1]);
+            }
         }
     }
     if caps {

@@ -23,12 +23,27 @@ pub struct Mesh {
     pub normals: Vec<Vec3>,
     /// Triangles as vertex indices, counter-clockwise from outside.
     pub triangles: Vec<[u32; 3]>,
+    /// Each triangle's provoking vertex, where OpenGL's `glShadeModel(GL_FLAT)` takes the
+    /// colour for the whole triangle from another vertex than its last corner: the last
+    /// vertex of the primitive as GLU or GLUT sends it (a quad strip's quad gives both its
+    /// triangles its fourth vertex, which one of them may not have as a corner). Empty:
+    /// every triangle's last corner ([`Mesh::provoking_vertex`]).
+    pub provoking: Vec<u32>,
 }
 
 impl Mesh {
     /// Number of triangles.
     pub fn triangle_count(&self) -> usize {
         self.triangles.len()
+    }
+
+    /// Triangle `t`'s provoking vertex: the one whose colour `GL_FLAT` gives it.
+    pub fn provoking_vertex(&self, t: usize) -> u32 {
+        match (self.provoking.get(t), self.triangles.get(t)) {
+            (Some(&v), _) if (v as usize) < self.positions.len() => v,
+            (_, Some(tri)) => tri[2],
+            _ => 0,
+        }
     }
 
     /// Appends a vertex, returning its index.
@@ -44,6 +59,9 @@ impl Mesh {
         for (n, p) in self.normals.iter_mut().zip(&self.positions) {
             *n = p.try_normalize().unwrap_or(Vec3::Z);
         }
+        // Drawn as phonglab's own triangles (the export sends its arrays): each triangle's
+        // last corner provokes.
+        self.provoking.clear();
         self
     }
 

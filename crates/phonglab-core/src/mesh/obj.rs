@@ -383,7 +383,7 @@ fn into_mesh(parsed: Parsed, place: impl Fn(DVec3) -> DVec3, notes: &mut Vec<Str
     let positions: Vec<Vec3> = file_vertex.iter().map(|&v| place(file_positions[v as usize]).as_vec3()).collect();
     drop(file_positions);
     drop(file_vertex);
-    let mut mesh = Mesh { positions, normals, triangles };
+    let mut mesh = Mesh { positions, normals, triangles, provoking: Vec::new() };
     if let Some(ln) = polygon_line {
         notes.push(t!("obj-note-fanned", line = ln));
     }

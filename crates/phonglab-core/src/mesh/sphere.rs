@@ -10,7 +10,9 @@ use glam::Vec3;
 
 use super::Mesh;
 
-/// A sphere of `radius` about the origin (slices >= 3, stacks >= 2).
+/// A sphere of `radius` about the origin (slices >= 3, stacks >= 2). Each triangle's last
+/// corner is the vertex GL sends last for it (the fans' last, the quad's fourth), the
+/// provoking vertex `GL_FLAT` takes its colour from: the mesh leaves `provoking` empty.
 pub fn glu_sphere(radius: f32, slices: u32, stacks: u32) -> Mesh {
     glu_sphere_oriented(radius, slices, stacks, false)
 }

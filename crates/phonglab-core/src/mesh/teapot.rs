@@ -157,6 +157,14 @@ pub fn glut_teapot(size: f32, grid: u32) -> Mesh {
                 // (u, v) -> (i, j): du x dv outward means (i,j), (i+1,j), (i+1,j+1) is CCW from outside.
                 m.triangles.push([idx(i, j), idx(i + 1, j), idx(i + 1, j + 1)]);
                 m.triangles.push([idx(i, j), idx(i + 1, j + 1), idx(i, j + 1)]);
+                // freeglut sends the same two triangles (its u and v the other way round,
+                // wound clockwise) as GL_TRIANGLES, each ending at what is here the middle
+                // corner: GL_FLAT's provoking vertex (checked against Mesa in
+                // tests/diagnose.rs). Where phonglab's own arrays are drawn instead (another
+                // grid than glutSolidTeapot's 7), each triangle's last corner.
+                if grid == 7 {
+                    m.provoking.extend([idx(i + 1, j), idx(i + 1, j + 1)]);
+                }
             }
         }
     }

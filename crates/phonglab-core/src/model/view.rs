@@ -142,6 +142,10 @@ pub enum ShadingMode {
     FlatFace,
     /// The Phong demo's Flat: lit per fragment with the normal of the screen derivatives.
     FlatDerivatives,
+    /// OpenGL's `glShadeModel(GL_FLAT)`: each face the colour lit (per vertex, with the
+    /// vertex's normal) at its provoking vertex ([`crate::mesh::Mesh::provoking_vertex`]).
+    /// No view chooses it; `phonglab diagnose` draws it.
+    FlatProvoking,
 }
 
 impl ShadingMode {
@@ -160,8 +164,18 @@ impl ShadingMode {
         match self {
             ShadingMode::Gouraud => Shading::Gouraud,
             ShadingMode::Phong => Shading::Phong,
-            ShadingMode::FlatFace | ShadingMode::FlatDerivatives => Shading::Flat,
+            ShadingMode::FlatFace | ShadingMode::FlatDerivatives | ShadingMode::FlatProvoking => Shading::Flat,
         }
+    }
+
+    /// Does it give each face one colour, made in setup (Flat per face, GL_FLAT)?
+    pub fn per_face(self) -> bool {
+        matches!(self, ShadingMode::FlatFace | ShadingMode::FlatProvoking)
+    }
+
+    /// Does it light each vertex (Gouraud, and GL_FLAT's provoking vertices)?
+    pub fn per_vertex(self) -> bool {
+        matches!(self, ShadingMode::Gouraud | ShadingMode::FlatProvoking)
     }
 
     /// Does it light each fragment (Phong, and the demo's Flat)?

@@ -278,6 +278,10 @@ impl<'a> Surfaces<'a> {
                 let n = face_normal(&lit) * if s.back { 1.0 } else { -1.0 };
                 (Terms::of(&self.engine.light_eye(pos.extend(1.0), n), side), n)
             }
+            ShadingMode::FlatProvoking => {
+                let at = *self.vertex(self.job.mesh.provoking_vertex(s.triangle) as usize);
+                (Terms::of(&at, side), at.normal_in_eye.normalize_or_zero())
+            }
             ShadingMode::FlatFace => {
                 let centroid = (lit[0].pos_in_eye + lit[1].pos_in_eye + lit[2].pos_in_eye) / 3.0;
                 let n = face_normal(&lit);
@@ -362,6 +366,17 @@ pub fn probe(renderer: &Renderer, job: &Job<'_>, x: usize, y: usize) -> Result<O
                 normal: n.to_array(),
                 provoking_vertex: vertices[2],
                 provoking_colour: vertex_colour(&lit[2], side, clamp),
+            })
+        }
+        ShadingMode::FlatProvoking => {
+            let provoking = job.mesh.provoking_vertex(sample.triangle) as usize;
+            let at = *surfaces.vertex(provoking);
+            let n = at.normal_in_eye.normalize_or_zero() * if side == Side::Back { -1.0 } else { 1.0 };
+            ProbeShading::Flat(FlatPixel {
+                centroid: at.pos_in_eye.to_array(),
+                normal: n.to_array(),
+                provoking_vertex: provoking,
+                provoking_colour: vertex_colour(&at, side, clamp),
             })
         }
     };

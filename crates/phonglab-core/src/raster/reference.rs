@@ -117,7 +117,7 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
     // order; without the depth test, every triangle in mesh order, the last drawn kept.
     let passes: &[Option<bool>] = if job.depth_test { &[Some(true), Some(false)] } else { &[None] };
     for &pass_front in passes {
-        for tri in &mesh.triangles {
+        for (t, tri) in mesh.triangles.iter().enumerate() {
             let [i0, i1, i2] = tri.map(|i| i as usize);
             // Left out whole if a corner is behind the eye or beyond the near or far plane.
             if [i0, i1, i2].iter().any(|&i| clip[i].w <= 0.0 || clip[i].z.abs() > clip[i].w) {
@@ -140,11 +140,19 @@ pub fn colours(job: &Job<'_>, width: usize, height: usize) -> Result<Vec<Option<
             let area = area.abs();
             let side = Side::back_if(!front && two_sided);
             let ids = order.map(|k| [i0, i1, i2][k]);
-            let face_colour = (job.mode == ShadingMode::FlatFace).then(|| {
-                let [ea, eb, ec] = ids.map(|i| eye_pos[i]);
-                let n = plane_normal(ea, eb, ec, order != [0, 1, 2]);
-                side_of(&engine.light_eye(((ea + eb + ec) / 3.0).extend(1.0), n), side).sum()
-            });
+            let face_colour = match job.mode {
+                ShadingMode::FlatFace => {
+                    let [ea, eb, ec] = ids.map(|i| eye_pos[i]);
+                    let n = plane_normal(ea, eb, ec, order != [0, 1, 2]);
+                    Some(side_of(&engine.light_eye(((ea + eb + ec) / 3.0).extend(1.0), n), side).sum())
+                }
+                // GL_FLAT: the provoking vertex's colour, as Gouraud gives a vertex.
+                ShadingMode::FlatProvoking => {
+                    let lit_at = &lit[mesh.provoking_vertex(t) as usize];
+                    Some(vertex_colour(side_of(lit_at, side), scene.rules.clamps_vertex_colors()))
+                }
+                _ => None,
+            };
             // The top-left rule's bias of each edge (b -> c, c -> a, a -> b), for the triangle.
             let bias = [top_left(b, c), top_left(c, a), top_left(a, b)];
 

@@ -8,13 +8,18 @@
 use crate::cpu::Isa;
 #[cfg(target_arch = "x86_64")]
 use crate::cpu::{Avx2, Avx512};
+use crate::equation::lighting::FormulaSlip;
 use crate::specialise::lighter::{Lighter, Output, Recorder, Source};
 
 impl Lighter {
     /// The chunked driver. Runs a copy compiled for AVX-512 or AVX2 and FMA when the CPU
     /// has them (the same operations: FMA only replaces the library call behind `mul_add`
-    /// in the exact products).
+    /// in the exact products). A lighter made with a formula slip runs none of them: the
+    /// general engine lights each vertex (`specialise::slipped`).
     pub(super) fn run(&self, src: Source<'_>, out: Output<'_>, probe: Recorder<'_>) {
+        if self.engine().options().slip != FormulaSlip::None {
+            return self.run_general(src, out);
+        }
         match Isa::best() {
             #[cfg(target_arch = "x86_64")]
             Isa::Avx512(proof) => self.run_avx512(proof, src, out, probe),

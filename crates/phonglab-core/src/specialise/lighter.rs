@@ -130,7 +130,7 @@ impl EyeArrays<'_> {
 }
 
 impl Source<'_> {
-    fn len(&self) -> usize {
+    pub(super) fn len(&self) -> usize {
         match self {
             Source::Object { positions, .. } | Source::Eye { positions, .. } => positions.len(),
             Source::EyeArrays { arrays, .. } => arrays.len(),

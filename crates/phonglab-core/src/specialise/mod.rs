@@ -5,3 +5,4 @@ pub mod batch;
 pub mod copies;
 pub mod effects;
 pub mod lighter;
+pub mod slipped;

@@ -182,7 +182,7 @@ pub fn channel<S: Real>(amb: S, dif: S, spe: S, dn: S, fp: S, separate: bool, sc
     (diffuse, specular, mul0(pri, scale), if separate { mul0(specular, scale) } else { S::ZERO })
 }
 
-/// What the specular term needs besides n and L.
+/// What the specular term needs besides n and L, and whether the diffuse cosine is clamped.
 pub struct SpecularInputs<S: Real> {
     /// H, for Blinn-Phong (`None`: undefined, or not Blinn-Phong).
     pub h: Option<S::V3>,
@@ -194,6 +194,9 @@ pub struct SpecularInputs<S: Real> {
     pub gate: SpecularGate,
     /// H (Blinn-Phong) or R (Phong).
     pub vector: SpecularVector,
+    /// `max(n . L, 0)` in the diffuse term, as OpenGL has it; false for the formula slip
+    /// that leaves it `n . L` ([`super::FormulaSlip::DiffuseNotClamped`]).
+    pub clamp_diffuse: bool,
 }
 
 /// One light's terms on one side: `lit` is L where the light reaches the surface with a
@@ -232,6 +235,7 @@ pub fn side<S: Real>(
         }
     }
     let (dn, fp) = shared_factors(st.n_dot_l, lit.is_some(), allowed, p);
+    let dn = if spec.clamp_diffuse || lit.is_none() { dn } else { st.n_dot_l };
     let ch = |k: usize| {
         let pick = |v: S::V3| [v.x(), v.y(), v.z()][k];
         channel(pick(amb), pick(dif), pick(spe), dn, fp, separate, scale)

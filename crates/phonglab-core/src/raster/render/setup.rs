@@ -413,6 +413,9 @@ impl Setup {
     /// Flat per face's per-face work: each face's colour. Part of [`Setup::run`]; alone
     /// when only the lighting changed and the rasterised triangles are kept.
     pub fn light_faces(&mut self, job: &Job<'_>, verts: &Vertices, lighter: &Lighter) {
+        if job.mode == ShadingMode::FlatProvoking {
+            return self.provoking_faces(job, verts);
+        }
         if job.mode != ShadingMode::FlatFace {
             return;
         }
@@ -440,6 +443,19 @@ impl Setup {
                 }
             },
         );
+    }
+
+    /// `GL_FLAT`'s per-face work: each face the colour of its provoking vertex, lit per
+    /// vertex as Gouraud lights it (clamped as the pipeline clamps it), both sides.
+    fn provoking_faces(&mut self, job: &Job<'_>, verts: &Vertices) {
+        let mesh = job.mesh;
+        for (side, colours) in self.face_color.iter_mut().enumerate() {
+            colours.clear();
+            colours.extend(
+                (0..mesh.triangles.len())
+                    .map(|t| verts.color[side].get(mesh.provoking_vertex(t) as usize).copied().unwrap_or_default()),
+            );
+        }
     }
 }
 

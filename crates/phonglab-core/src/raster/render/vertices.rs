@@ -6,7 +6,6 @@ use rayon::prelude::*;
 use super::Job;
 use super::window::WindowVert;
 use crate::model::transform::NormalMatrix;
-use crate::model::view::ShadingMode;
 use crate::specialise::lighter::{Lighter, Lit};
 
 /// Per-vertex results of stage 1.
@@ -75,7 +74,7 @@ impl Vertices {
         self.normal.resize(n, Vec3::ZERO);
         // One pass over chunks of vertices on both threads: transforms and, for Gouraud, the
         // lighting and each side's colour (one fork and join a frame for the whole stage).
-        let lighter = lighter.filter(|_| job.mode == ShadingMode::Gouraud);
+        let lighter = lighter.filter(|_| job.mode.per_vertex());
         // Without a lighter the colours are left alone ([`Vertices::light`] makes them).
         let mut gouraud_chunks = if lighter.is_some() { color_chunks(&mut self.color, n) } else { Vec::new() };
         gouraud_chunks.resize_with(n.div_ceil(GRAIN), || None);

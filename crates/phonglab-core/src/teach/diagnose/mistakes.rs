@@ -12,6 +12,7 @@ use crate::model::view::ShadingMode;
 use super::colours::{self, Colours};
 use super::drawing::Drawing;
 use super::sides::{self, Sides};
+use super::slips;
 use super::values::{self, Values};
 
 /// Where a mistake is made: once for the scene, or for each light in turn.
@@ -645,7 +646,7 @@ const fn per_light(id: &'static str, message: &'static str, apply: fn(&mut Drawi
 }
 
 /// The picture mistakes, in the order the docs list them.
-pub const MISTAKES: [PictureMistake; 62] = [
+pub const MISTAKES: [PictureMistake; 70] = [
     row("normal-by-modelview", "wrong-cause-normals-by-m", normals_by_modelview),
     row("normal-not-normalised", "diagnose-normalize-off", normalize_off),
     row("reflection-for-halfway", "wrong-cause-reflection-for-halfway", reflection_for_halfway),
@@ -693,6 +694,17 @@ pub const MISTAKES: [PictureMistake; 62] = [
     row("emission-from-colour", "diagnose-emission-from-colour", emission_from_colour),
     row("ambient-diffuse-swapped", "diagnose-ambient-diffuse-swapped", ambient_diffuse_swapped),
     per_light("light-diffuse-left-out", "diagnose-light-diffuse-left-out", light_diffuse_left_out),
+    // Edits of the exported shader's formula, the ids `phonglab check`'s for the same slip.
+    row("diffuse-not-clamped", "diagnose-diffuse-not-clamped", |d, _| slips::diffuse_not_clamped(d)),
+    row("vlv-reversed", "diagnose-vlv-reversed", |d, _| slips::light_reversed(d)),
+    row("viewer-reversed", "diagnose-viewer-reversed", |d, _| slips::viewer_reversed(d)),
+    row("halfway-not-normalised", "diagnose-halfway-not-normalised", |d, _| slips::halfway_not_normalised(d)),
+    row("flat-shade-model", "diagnose-flat-shade-model", |d, _| slips::flat_shade_model(d)),
+    row("view-order-reversed", "diagnose-view-order-reversed", |d, _| slips::view_order_reversed(d)),
+    row("view-order-reversed", "diagnose-view-order-reversed-lights", |d, _| slips::view_order_reversed_with_lights(d)),
+    row("view-order-reversed", "diagnose-view-order-reversed-lights-only", |d, _| {
+        slips::view_order_reversed_for_lights(d)
+    }),
     // Last: its colour is fitted, so a mistake of the scene's own values that draws the
     // same picture (the material's ambient given its diffuse) is named before it.
     row("emission-added", "diagnose-emission-added", emission_added),

@@ -18,6 +18,7 @@ mod drawing;
 mod fit;
 mod mistakes;
 mod sides;
+mod slips;
 mod values;
 
 pub use colours::Colours;
@@ -114,6 +115,9 @@ pub struct Diagnosis {
     pub causes: Vec<Tried>,
     /// Every mistake tried, best first; those the scene cannot show last.
     pub tried: Vec<Tried>,
+    /// The causes whose pictures are the first cause's picture (it among them): the image
+    /// cannot tell them apart. Empty when the first cause draws a picture of its own.
+    pub same_picture: Vec<Tried>,
     /// The right picture (RGBA8).
     pub picture: Vec<u8>,
     /// The renderer that drew it, kept for probing.
@@ -152,6 +156,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
     let values = values::fit(right, image, size)?;
     let sides = sides::fit(right, &covered, image, size)?;
     let mut tried = Vec::new();
+    let mut pictures = Pictures::default();
     for (mistake, at) in offered(right, At { light: 0, emission, colours, values, sides }) {
         let mut d = right.clone();
         (MISTAKES[mistake].apply)(&mut d, at);
@@ -159,9 +164,66 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         // A mistake whose picture the right one explains cannot be seen in this scene.
         let visible = compare(&wrong, &wrong_covered, &picture, bg, size).score < RIGHT_AT;
         let matched = visible.then(|| compare(&wrong, &wrong_covered, image, bg, size));
-        tried.push(Tried { mistake, at, matched });
+        let t = Tried { mistake, at, matched };
+        if matched.is_some_and(|m| m.score >= EXPLAINED_AT) {
+            pictures.0.push((t, wrong, wrong_covered));
+        }
+        tried.push(t);
     }
-    Ok(verdict_of(exact, tried, picture, renderer))
+    let mut d = verdict_of(exact, tried, picture, renderer);
+    d.same_picture = pictures.same_as_first(&d.causes, bg, size);
+    // The image cannot rank causes that draw the same picture: they go first in the
+    // table's order, the other causes after them as scored.
+    let rest: Vec<Tried> = d.causes.iter().filter(|t| !d.same_picture.contains(t)).copied().collect();
+    d.causes = d.same_picture.iter().chain(&rest).copied().collect();
+    Ok(d)
+}
+
+/// The pictures of the mistakes that may be named, kept to tell which draw the same.
+#[derive(Default)]
+struct Pictures(Vec<(Tried, Vec<u8>, Vec<bool>)>);
+
+impl Pictures {
+    /// The causes named with the first cause's score (to the 0.1 % the report shows) whose
+    /// pictures and the first cause's explain each other as the right picture explains its
+    /// own copy ([`RIGHT_AT`]), the first among them, in the table's order; empty when none
+    /// but the first.
+    fn same_as_first(&self, causes: &[Tried], bg: [u8; 3], size: usize) -> Vec<Tried> {
+        let picture_of = |t: &Tried| self.0.iter().find(|(p, ..)| p == t).map(|(_, rgba, covered)| (rgba, covered));
+        let score = |t: &Tried| t.matched.map_or(0.0, |m| m.score);
+        let Some(top) = causes.first() else { return Vec::new() };
+        let Some((first, first_covered)) = picture_of(top) else { return Vec::new() };
+        let same: Vec<Tried> = causes
+            .iter()
+            .filter(|t| (score(t) - score(top)).abs() < 0.0005)
+            .filter(|t| {
+                picture_of(t).is_some_and(|(rgba, covered)| {
+                    compare(rgba, covered, first, bg, size).score >= RIGHT_AT
+                        && compare(first, first_covered, rgba, bg, size).score >= RIGHT_AT
+                })
+            })
+            .copied()
+            .collect();
+        let mut same = same;
+        same.sort_by_key(|t| (t.mistake, t.at.light));
+        if same.len() >= 2 { same } else { Vec::new() }
+    }
+}
+
+impl Diagnosis {
+    /// In words, when the first causes draw the same picture: that the image cannot tell
+    /// them apart, and the order they are listed in.
+    pub fn same_picture_words(&self) -> Option<String> {
+        same_picture_said(&self.same_picture)
+    }
+}
+
+/// [`Diagnosis::same_picture_words`] of the causes `same` (none when it is empty).
+pub fn same_picture_said(same: &[Tried]) -> Option<String> {
+    (!same.is_empty()).then(|| {
+        let ids = same.iter().map(Tried::label).collect::<Vec<_>>().join(", ");
+        crate::locale::tr_args("diagnose-same-picture", &[("ids", crate::locale::Arg::Text(ids))])
+    })
 }
 
 /// The verdict from the right picture's match and each mistake's.
@@ -180,5 +242,5 @@ fn verdict_of(exact: Match, mut tried: Vec<Tried>, picture: Vec<u8>, renderer: R
         Verdict::Wrong
     };
     let causes = if verdict == Verdict::Wrong { causes } else { Vec::new() };
-    Diagnosis { verdict, right: exact, causes, tried, picture, renderer }
+    Diagnosis { verdict, right: exact, causes, tried, same_picture: Vec::new(), picture, renderer }
 }

@@ -154,7 +154,7 @@ pub(in crate::raster::render) fn attributes_of(
             out.pos = blend3(&verts.eye);
         }
         // One colour a face, from setup: no attributes.
-        ShadingMode::FlatFace => {}
+        ShadingMode::FlatFace | ShadingMode::FlatProvoking => {}
     }
     out
 }
@@ -179,7 +179,7 @@ pub(in crate::raster::render) fn attributes_chunk_any(
             ShadingMode::Gouraud => colors[i] = a.color,
             ShadingMode::Phong => (edges[i], pos[i], nrm[i]) = (a.edges, a.pos, a.nrm),
             ShadingMode::FlatDerivatives => (edges[i], pos[i]) = (a.edges, a.pos),
-            ShadingMode::FlatFace => {}
+            ShadingMode::FlatFace | ShadingMode::FlatProvoking => {}
         }
     }
 }
@@ -204,7 +204,7 @@ impl TriangleAttributes {
             ShadingMode::Gouraud => a.color = *self.color.get(r)?,
             ShadingMode::Phong => (a.edges, a.pos, a.nrm) = (*self.edges.get(r)?, *self.pos.get(r)?, *self.nrm.get(r)?),
             ShadingMode::FlatDerivatives => (a.edges, a.pos) = (*self.edges.get(r)?, *self.pos.get(r)?),
-            ShadingMode::FlatFace => {}
+            ShadingMode::FlatFace | ShadingMode::FlatProvoking => {}
         }
         Some(a)
     }

@@ -94,11 +94,11 @@ pub(super) fn prepare(
     // Shadings that light each pixel: Phong, and Flat with the demo's derivative normals.
     let per_pixel = job.mode.per_fragment();
     scratch.bands.resize_with(bands, Fragments::default);
-    if job.mode != ShadingMode::FlatFace && (job.mode == ShadingMode::Gouraud || kept_seen.is_none()) {
+    if !job.mode.per_face() && (job.mode == ShadingMode::Gouraud || kept_seen.is_none()) {
         triangle_attributes(setup, job.mode, &mut scratch.tris, kept_seen, attributes);
     }
     // Flat: each face's colour converted to 8 bits once.
-    let face8: [Vec<[u8; 4]>; 2] = if job.mode == ShadingMode::FlatFace {
+    let face8: [Vec<[u8; 4]>; 2] = if job.mode.per_face() {
         [0, 1].map(|side| setup.face_color[side].iter().map(|c| c.map(to_u8)).collect())
     } else {
         [Vec::new(), Vec::new()]
@@ -241,7 +241,7 @@ fn prefetch_triangle(band: &BandInput<'_>, triangle: usize) {
             prefetch(&shared.edges[triangle..=triangle]);
             prefetch(&shared.pos[triangle..=triangle]);
         }
-        ShadingMode::FlatFace => {}
+        ShadingMode::FlatFace | ShadingMode::FlatProvoking => {}
     }
 }
 
@@ -261,7 +261,7 @@ fn shade_run<L: ResolveLanes>(
     let BandInput { job, setup, verts, p, shared, .. } = *band;
     let t = &setup.tris[triangle];
     match job.mode {
-        ShadingMode::FlatFace => {
+        ShadingMode::FlatFace | ShadingMode::FlatProvoking => {
             let side = (t.back && p.two) as usize;
             fill_px(&mut row_px[run.x..run.x + run.len], p.face8[side][t.orig as usize]);
         }
@@ -335,6 +335,6 @@ pub fn evaluations(job: &Job<'_>, fragments: usize) -> usize {
     match job.mode {
         ShadingMode::Phong | ShadingMode::FlatDerivatives => fragments,
         ShadingMode::FlatFace => job.mesh.triangles.len(),
-        ShadingMode::Gouraud => 0,
+        ShadingMode::Gouraud | ShadingMode::FlatProvoking => 0,
     }
 }

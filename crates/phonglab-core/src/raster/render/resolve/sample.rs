@@ -80,10 +80,9 @@ pub(in crate::raster::render) fn shade_pixel(input: &PixelInput<'_>, x: usize, y
     };
     let ri = r as usize;
     // The triangle's attributes as the resolve took them (stored, or for a back face computed).
-    let attributes =
-        if job.mode == ShadingMode::FlatFace { None } else { shared.of(job, verts, &setup.corners, ri, t) };
+    let attributes = if job.mode.per_face() { None } else { shared.of(job, verts, &setup.corners, ri, t) };
     out.colour = match job.mode {
-        ShadingMode::FlatFace => *setup.face_color[side].get(out.triangle)?,
+        ShadingMode::FlatFace | ShadingMode::FlatProvoking => *setup.face_color[side].get(out.triangle)?,
         ShadingMode::Gouraud => {
             // The run: back along the row while the triangle stays the same.
             let start = row[..x].iter().rposition(|&q| q != r).map_or(0, |p| p + 1);
