@@ -50,7 +50,7 @@ pub(super) fn triangle_attributes(
         ShadingMode::Gouraud => [n, 0, 0, 0],
         ShadingMode::Phong => [0, n, n, n],
         ShadingMode::FlatDerivatives => [0, n, n, 0],
-        ShadingMode::FlatFace => [0; 4],
+        ShadingMode::FlatFace | ShadingMode::FlatProvoking => [0; 4],
     };
     out.color.resize(color, ColorPlanes::default());
     out.edges.resize(edges, ScreenBarycentrics::default());
