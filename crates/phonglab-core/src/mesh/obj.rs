@@ -427,7 +427,14 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     use std::io::{Read, Seek};
     let shown = path.display().to_string();
     let cannot = |e: std::io::Error| t!("obj-cannot-read", path = shown.clone(), error = e.to_string());
-    let file = open_to_read(path).map_err(cannot)?;
+    let file = match open_to_read(path) {
+        Ok(f) => f,
+        // Windows cannot open a folder as a file (access denied): said as what it is.
+        Err(_) if std::fs::metadata(path).is_ok_and(|m| m.is_dir()) => {
+            return Err(t!("obj-not-a-file", path = shown.clone()));
+        }
+        Err(e) => return Err(cannot(e)),
+    };
     let meta = file.metadata().map_err(cannot)?;
     if !meta.is_file() {
         return Err(t!("obj-not-a-file", path = shown.clone()));
