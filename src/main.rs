@@ -1,5 +1,9 @@
 //! phonglab: a desktop explorer for OpenGL's fixed-function vertex lighting, and a CLI;
 //! built for the browser (`scripts/web`), the same explorer on a web page.
+// Windows: a GUI program, so no console window opens beside the explorer when a student
+// double-clicks it; a command typed in a terminal attaches to that terminal to print
+// (`platform::os::attach_to_terminal`).
+#![cfg_attr(windows, windows_subsystem = "windows")]
 
 #[cfg(not(target_arch = "wasm32"))]
 use std::process::ExitCode;
@@ -17,6 +21,7 @@ fn main() {
 
 #[cfg(not(target_arch = "wasm32"))]
 fn main() -> ExitCode {
+    phonglab::platform::os::attach_to_terminal();
     // eframe's and wgpu's warnings reach stderr (RUST_LOG=info or debug for more).
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
     let args = cli::Cli::parse_localised();

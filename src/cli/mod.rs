@@ -88,7 +88,7 @@ impl Cli {
                 None => (a == "--lang").then(|| args.get(i + 1).cloned()).flatten(),
             })
             .and_then(|v| crate::locale::Lang::parse(&v));
-        let lang = asked.unwrap_or_else(crate::locale::Lang::from_env);
+        let lang = asked.unwrap_or_else(crate::platform::language::system);
         crate::locale::set_default(crate::locale::Locale::of(lang));
         let mut cmd = crate::cli::help::localised(Cli::command());
         let matches = cmd.try_get_matches_from_mut(std::env::args_os()).unwrap_or_else(|e| exit_escaped(&e));
@@ -103,8 +103,8 @@ impl Cli {
     /// The locale the command line asks for: `--lang` over the system's, `--decimal` over
     /// the language's own mark.
     pub fn locale(&self) -> crate::locale::Locale {
-        use crate::locale::{Lang, Locale};
-        let lang = self.lang.unwrap_or_else(Lang::from_env);
+        use crate::locale::Locale;
+        let lang = self.lang.unwrap_or_else(crate::platform::language::system);
         Locale { lang, decimal: self.decimal.unwrap_or(lang.decimal_mark()) }
     }
 }

@@ -1,6 +1,7 @@
 //! What differs between operating systems on the desktop: closing a file with its error
-//! reported, syncing a folder's entries to the disk, and hearing the signals that end the
-//! process.
+//! reported, syncing a folder's entries to the disk, a file's identity, the memory
+//! available, hearing the signals (Windows: the console's events) that end the process,
+//! and a Windows command's terminal.
 
 #[cfg(unix)]
 use std::fs::File;
@@ -29,7 +30,8 @@ pub fn file_identity(meta: &std::fs::Metadata) -> (u64, u64) {
 }
 
 /// The memory the system says is available to a new allocation, in bytes (Linux:
-/// `MemAvailable` in `/proc/meminfo`); `None` where it does not say.
+/// `MemAvailable` in `/proc/meminfo`; Windows: the available physical memory of
+/// `GlobalMemoryStatusEx`); `None` where it does not say.
 pub fn available_memory() -> Option<u64> {
     #[cfg(target_os = "linux")]
     {
@@ -38,7 +40,16 @@ pub fn available_memory() -> Option<u64> {
         let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
         Some(kib * 1024)
     }
-    #[cfg(not(target_os = "linux"))]
+    #[cfg(windows)]
+    {
+        use windows_sys::Win32::System::SystemInformation::{GlobalMemoryStatusEx, MEMORYSTATUSEX};
+        let mut status = MEMORYSTATUSEX { dwLength: size_of::<MEMORYSTATUSEX>() as u32, ..Default::default() };
+        // SAFETY: `status` is a MEMORYSTATUSEX with its length set, as the call requires; it
+        // writes only into it.
+        let ok = unsafe { GlobalMemoryStatusEx(&mut status) };
+        (ok != 0).then_some(status.ullAvailPhys)
+    }
+    #[cfg(not(any(target_os = "linux", windows)))]
     {
         None
     }
@@ -71,7 +82,7 @@ pub fn lock_folder(dir: &Path) -> io::Result<FolderLock> {
 /// Calls `handler` with the signal's number, on a thread of its own, each time the process
 /// is asked to end (SIGTERM, SIGINT, SIGHUP: a logout, Ctrl+C in the terminal, `kill`).
 #[cfg(unix)]
-pub fn on_termination(handler: impl Fn(i32) + Send + 'static) -> io::Result<()> {
+pub fn on_termination(handler: impl Fn(i32) + Send + Sync + 'static) -> io::Result<()> {
     use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
     let mut signals = signal_hook::iterator::Signals::new([SIGTERM, SIGINT, SIGHUP])?;
     std::thread::Builder::new().name("phonglab signals".into()).spawn(move || {
@@ -82,10 +93,63 @@ pub fn on_termination(handler: impl Fn(i32) + Send + 'static) -> io::Result<()> 
     Ok(())
 }
 
-/// Where the system sends no such signals, nothing is installed.
-#[cfg(not(unix))]
-pub fn on_termination(_handler: impl Fn(i32) + Send + 'static) -> io::Result<()> {
+/// Calls `handler` with the console event's number (0 Ctrl+C, 1 Ctrl+Break, 2 the console
+/// closed, 5 logoff, 6 shutdown) each time Windows asks the process to end through its
+/// console. The handler runs before the call returns: for a closed console, a logoff or a
+/// shutdown Windows ends the process as soon as the handler routine returns (and after 5 s
+/// at most), so the session is written inside it, not on another thread afterwards (the
+/// `ctrlc` crate's handler returns at once and would race that end). A program started
+/// without a console (the window, double-clicked) has no console events: closing it, or a
+/// logoff's WM_CLOSE, goes through the window's own exit, which saves.
+#[cfg(windows)]
+pub fn on_termination(handler: impl Fn(i32) + Send + Sync + 'static) -> io::Result<()> {
+    use windows_sys::Win32::System::Console::SetConsoleCtrlHandler;
+    if CONSOLE_HANDLER.set(Box::new(handler)).is_err() {
+        return Err(io::Error::new(io::ErrorKind::AlreadyExists, "a termination handler is already installed"));
+    }
+    // SAFETY: `console_event` is a handler routine of the signature Windows calls, for the
+    // life of the process (a plain function; it reads a static set once above).
+    if unsafe { SetConsoleCtrlHandler(Some(console_event), 1) } == 0 {
+        return Err(io::Error::last_os_error());
+    }
     Ok(())
+}
+
+/// The handler [`on_termination`] installed.
+#[cfg(windows)]
+static CONSOLE_HANDLER: std::sync::OnceLock<Box<dyn Fn(i32) + Send + Sync>> = std::sync::OnceLock::new();
+
+/// The handler routine Windows calls, on a thread of its own, for each console event: the
+/// handler runs to its end before it returns TRUE (handled).
+#[cfg(windows)]
+unsafe extern "system" fn console_event(event: u32) -> windows_sys::core::BOOL {
+    if let Some(h) = CONSOLE_HANDLER.get() {
+        h(event as i32);
+    }
+    1
+}
+
+/// Where the system sends no such signals, nothing is installed.
+#[cfg(not(any(unix, windows)))]
+pub fn on_termination(_handler: impl Fn(i32) + Send + Sync + 'static) -> io::Result<()> {
+    Ok(())
+}
+
+/// Windows: phonglab is a GUI program (no console window opens when it is double-clicked),
+/// so a command typed in a terminal has no console of its own: this attaches to the
+/// terminal's (the parent's), so that what the command prints appears there. Output already
+/// redirected to a file or a pipe keeps its handle (Windows passes it at the start).
+/// Elsewhere nothing to do.
+pub fn attach_to_terminal() {
+    #[cfg(windows)]
+    {
+        use windows_sys::Win32::System::Console::{ATTACH_PARENT_PROCESS, AttachConsole};
+        // SAFETY: no arguments but a constant; it fails harmlessly where there is no parent
+        // console (double-clicked) or one is attached already.
+        unsafe {
+            AttachConsole(ATTACH_PARENT_PROCESS);
+        }
+    }
 }
 
 /// A command whose reader went away (`phonglab explain | head -1`) ends quietly, as Unix
@@ -105,3 +169,36 @@ pub fn end_quietly_on_closed_pipe() {
 /// Elsewhere a closed pipe is an error the write returns (nothing to change).
 #[cfg(not(unix))]
 pub fn end_quietly_on_closed_pipe() {}
+
+#[cfg(test)]
+mod tests {
+    /// The memory the budget divides: the system's figure where it gives one (Linux's
+    /// /proc/meminfo, Windows' GlobalMemoryStatusEx), a plausible amount of it.
+    #[test]
+    #[cfg(any(target_os = "linux", windows))]
+    fn the_available_memory_is_the_systems() {
+        let bytes = super::available_memory().expect("the system says");
+        assert!(bytes > 64 << 20 && bytes < 1 << 50, "{bytes}");
+    }
+
+    /// Windows: a console event (here a closed console, as Windows sends it: the routine
+    /// called on a thread of its own) reaches the handler, which has run by the time the
+    /// routine returns, as a closed console or a logoff needs. (Wine's consoles refuse
+    /// GenerateConsoleCtrlEvent to a test runner, so the routine is called as Windows does.)
+    #[test]
+    #[cfg(windows)]
+    fn a_console_event_reaches_the_termination_handler_before_the_routine_returns() {
+        use windows_sys::Win32::System::Console::CTRL_CLOSE_EVENT;
+        let (tx, rx) = std::sync::mpsc::channel();
+        let tx = std::sync::Mutex::new(tx);
+        super::on_termination(move |event| {
+            std::thread::sleep(std::time::Duration::from_millis(200));
+            let _ = tx.lock().map(|t| t.send(event));
+        })
+        .unwrap();
+        // SAFETY: the routine as Windows calls it, with an event it sends.
+        let handled = std::thread::spawn(|| unsafe { super::console_event(CTRL_CLOSE_EVENT) }).join().unwrap();
+        assert_eq!(handled, 1);
+        assert_eq!(rx.try_recv(), Ok(CTRL_CLOSE_EVENT as i32), "the handler ran before the routine returned");
+    }
+}

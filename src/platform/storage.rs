@@ -111,3 +111,20 @@ pub fn restore_meshes() -> Result<(), String> {
         crate::t!("mesh-not-restored", name = name, why = why)
     })
 }
+
+#[cfg(test)]
+mod tests {
+    /// Windows: the session lives in the user's roaming application data (`%APPDATA%`,
+    /// `C:\Users\João\AppData\Roaming`), which follows the student from one lab PC to
+    /// another where the school roams profiles.
+    #[test]
+    #[cfg(windows)]
+    fn the_windows_session_is_in_appdata() {
+        if std::env::var_os("PHONGLAB_SESSION_DIR").is_some() {
+            return;
+        }
+        let appdata = std::path::PathBuf::from(std::env::var_os("APPDATA").expect("Windows sets APPDATA"));
+        assert_eq!(super::storage_dir(), Some(appdata.join("phonglab").join("data")));
+        assert!(appdata.is_dir(), "{}", appdata.display());
+    }
+}

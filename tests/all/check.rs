@@ -765,6 +765,7 @@ fn check_and_diagnose_use_one_register() {
 }
 
 #[test]
+#[cfg(unix)] // symbolic links (Windows makes them only with a privilege)
 fn a_link_in_a_class_folder_is_not_read_and_named_a_link() {
     let root = TempDir::new("links");
     let (class, secret) = (root.path().join("cls"), root.path().join("secret"));
@@ -786,6 +787,7 @@ fn a_link_in_a_class_folder_is_not_read_and_named_a_link() {
 }
 
 #[test]
+#[cfg(unix)] // symbolic links (Windows makes them only with a privilege)
 fn a_submission_that_is_a_link_is_refused_by_the_open_itself() {
     // The open refuses the link (O_NOFOLLOW), not a look before it: a link planted after
     // the class folder was listed is never followed.
@@ -819,6 +821,7 @@ fn a_submission_that_is_a_link_is_refused_by_the_open_itself() {
 }
 
 #[test]
+#[cfg(unix)] // symbolic links (Windows makes them only with a privilege)
 fn a_link_planted_at_the_charts_derived_name_is_refused_and_its_file_kept() {
     let root = TempDir::new("chartlink");
     let (class, sub, outside) = (root.path().join("cls"), root.path().join("sub"), root.path().join("outside"));

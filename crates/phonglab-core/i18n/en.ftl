@@ -834,6 +834,7 @@ share-base-refused = the page a link opens must be an http:// or https:// addres
 io-not-found = it does not exist
 io-permission-denied = permission denied
 io-storage-full = the disk is full
+io-open-elsewhere = another program has it open (close it there, then try again)
 io-is-a-directory = it is a folder
 io-not-a-directory = a part of the path is not a folder
 io-read-only = the file system is read-only

@@ -834,6 +834,7 @@ share-base-refused = a página que um link abre precisa ser um endereço http://
 io-not-found = não existe
 io-permission-denied = sem permissão
 io-storage-full = o disco está cheio
+io-open-elsewhere = outro programa está com ele aberto (feche-o lá e tente de novo)
 io-is-a-directory = é uma pasta
 io-not-a-directory = uma parte do caminho não é uma pasta
 io-read-only = o sistema de arquivos é somente leitura

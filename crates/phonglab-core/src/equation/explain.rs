@@ -16,6 +16,7 @@ use crate::equation::lighting::EvalOptions;
 use crate::equation::plan::{Key, Program, SpecularTerm, Stage, Viewer};
 use crate::model::rules::SpecularVector;
 use crate::model::scene::{ColorMaterialMode, LightId, Scene};
+use crate::numerics::elementary;
 use crate::numerics::real::{Real, Vec3Ops};
 
 /// Which face side to explain (the model's side, named here too).
@@ -142,7 +143,7 @@ pub fn fmt_value(v: &[f64], sig: usize) -> String {
 /// rotation's `cos 90° = 6.123234e-17` next to a 1), and -0 is 0.
 pub fn printed_components(v: &[f64], sig: usize) -> Vec<f64> {
     let largest = v.iter().filter(|x| x.is_finite()).fold(0.0f64, |m, x| m.max(x.abs()));
-    let floor = largest * 10f64.powi(-(sig as i32));
+    let floor = largest * elementary::powi(10.0, -(sig as i32));
     v.iter().map(|&x| if x == 0.0 || x.abs() < floor { 0.0 } else { x }).collect()
 }
 

@@ -36,6 +36,7 @@ use crate::model::error::SceneError;
 use crate::model::rules::{Rules, SpecularGate, SpecularVector};
 use crate::model::scene::{Light, Material, NormalMode, Rgba, Scene, Side, Vertex};
 use crate::model::transform::NormalMatrix;
+use crate::numerics::elementary;
 use crate::numerics::pow::PowFn;
 use crate::numerics::real::{Real, Vec3Ops};
 use crate::numerics::robust::{cos_deg, mul0, mul0_v, scale0, transform_point, transform_vector3, try_normalize};
@@ -207,7 +208,7 @@ fn prepare_light<S: Real>(scene: &Scene, index: usize, l: &Light) -> PreparedLig
         axis: try_normalize::<f64>(transform_vector3(&eye_from_light, l.spot_direction)),
         cutoff: l.spot_cutoff,
         cos_cutoff: cos_deg(l.spot_cutoff),
-        sin_cutoff: if l.spot_cutoff == 0.0 { 0.0 } else { l.spot_cutoff.to_radians().sin() },
+        sin_cutoff: if l.spot_cutoff == 0.0 { 0.0 } else { elementary::sin(l.spot_cutoff.to_radians()) },
         exponent: S::from_f64(l.spot_exponent),
     });
     let product = |m: &Material| {

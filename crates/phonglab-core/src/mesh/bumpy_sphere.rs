@@ -11,6 +11,8 @@ use std::collections::HashMap;
 
 use glam::Vec3;
 
+use crate::numerics::elementary;
+
 use super::Mesh;
 
 /// The bumpy sphere of `20 x 4^level` triangles (level at most 9), radius about 0.5.
@@ -86,7 +88,7 @@ pub fn bumpy_sphere(level: u32, seed: u64) -> Mesh {
         let tangent_a = p.any_orthonormal_vector();
         let tangent_b = p.cross(tangent_a);
         let moved = (*p + (tangent_a * random.signed() + tangent_b * random.signed()) * 0.4 * edge).normalize();
-        let bump: f32 = waves.iter().map(|(d, f, a, phase)| a * (f * moved.dot(*d) + phase).sin()).sum();
+        let bump: f32 = waves.iter().map(|(d, f, a, phase)| a * elementary::sin_f32(f * moved.dot(*d) + phase)).sum();
         *p = moved * 0.5 * (1.0 + bump);
     }
     let mut normals = vec![Vec3::ZERO; positions.len()];

@@ -3,6 +3,8 @@
 
 use glam::Vec3;
 
+use crate::numerics::elementary;
+
 use super::Mesh;
 
 /// A cylinder with radii `base` (z = 0) and `top` (z = height); `2 slices stacks`
@@ -31,8 +33,8 @@ fn glu_cylinder_oriented(
     let stacks = stacks.max(1);
     let mut m = Mesh::default();
     // GLU's normal: the side's slope tilts it by atan((base - top) / height).
-    let slope = ((base - top) as f64).atan2(height as f64);
-    let (sin_s, cos_s) = slope.sin_cos();
+    let slope = elementary::atan2((base - top) as f64, height as f64);
+    let (sin_s, cos_s) = elementary::sin_cos(slope);
     let angle = |i: u32| 2.0 * std::f64::consts::PI * (i % slices) as f64 / slices as f64;
     let mut rows = Vec::new();
     for j in 0..=stacks {
@@ -41,7 +43,7 @@ fn glu_cylinder_oriented(
         let z = (height as f64 * t) as f32;
         rows.push(m.positions.len() as u32);
         for i in 0..=slices {
-            let (s, c) = angle(i).sin_cos();
+            let (s, c) = elementary::sin_cos(angle(i));
             let n = Vec3::new((s * cos_s) as f32, (c * cos_s) as f32, sin_s as f32);
             m.push_vertex(Vec3::new((r * s) as f32, (r * c) as f32, z), n);
         }
@@ -66,7 +68,7 @@ fn glu_cylinder_oriented(
             let centre = m.push_vertex(Vec3::new(0.0, 0.0, z), n);
             let first = m.positions.len() as u32;
             for i in 0..=slices {
-                let (s, c) = angle(i).sin_cos();
+                let (s, c) = elementary::sin_cos(angle(i));
                 m.push_vertex(Vec3::new(r * s as f32, r * c as f32, z), n);
             }
             for i in 0..slices {

@@ -446,7 +446,14 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     use std::io::{Read, Seek};
     let shown = path.display().to_string();
     let cannot = |e: std::io::Error| t!("obj-cannot-read", path = shown.clone(), error = e.to_string());
-    let file = open_to_read(path).map_err(cannot)?;
+    let file = match open_to_read(path) {
+        Ok(f) => f,
+        // Windows cannot open a folder as a file (access denied): said as what it is.
+        Err(_) if std::fs::metadata(path).is_ok_and(|m| m.is_dir()) => {
+            return Err(t!("obj-not-a-file", path = shown.clone()));
+        }
+        Err(e) => return Err(cannot(e)),
+    };
     let meta = file.metadata().map_err(cannot)?;
     if !meta.is_file() {
         return Err(t!("obj-not-a-file", path = shown.clone()));
@@ -633,8 +640,19 @@ mod tests {
         assert!(e.contains("is 536 870 913 bytes (512.0 MiB)") && e.contains("at most 536 870 912 bytes"), "{e}");
         let e = load_obj(&dir.join("missing.obj")).unwrap_err();
         assert!(e.contains("cannot read"), "{e}");
-        let e = load_obj(Path::new("/dev/zero")).unwrap_err();
-        assert!(e.contains("not a regular file"), "{e}");
+        // A device: refused, never read. /dev/zero is "not a regular file"; Windows' NUL
+        // device has no file information to check (Wine: "Invalid parameter"), which
+        // refuses it as unreadable.
+        #[cfg(unix)]
+        {
+            let e = load_obj(Path::new("/dev/zero")).unwrap_err();
+            assert!(e.contains("not a regular file"), "{e}");
+        }
+        #[cfg(windows)]
+        {
+            let e = load_obj(Path::new(r"\\.\NUL")).unwrap_err();
+            assert!(e.contains(r"\\.\NUL") && (e.contains("not a regular file") || e.contains("cannot read")), "{e}");
+        }
         let e = load_obj(&dir).unwrap_err();
         assert!(e.contains("not a regular file"), "{e}");
     }

@@ -8,6 +8,8 @@
 
 use glam::Vec3;
 
+use crate::numerics::elementary;
+
 use super::Mesh;
 
 /// A sphere of `radius` about the origin (slices >= 3, stacks >= 2). Each triangle's last
@@ -32,7 +34,8 @@ fn glu_sphere_oriented(radius: f32, slices: u32, stacks: u32, inside: bool) -> M
     let dir = |i: u32, j: u32| {
         let theta = 2.0 * std::f64::consts::PI * (i % slices) as f64 / slices as f64;
         let rho = std::f64::consts::PI * j as f64 / stacks as f64;
-        Vec3::new((theta.sin() * rho.sin()) as f32, (theta.cos() * rho.sin()) as f32, rho.cos() as f32)
+        let ((st, ct), (sr, cr)) = (elementary::sin_cos(theta), elementary::sin_cos(rho));
+        Vec3::new((st * sr) as f32, (ct * sr) as f32, cr as f32)
     };
     let top = m.push_vertex(Vec3::new(0.0, 0.0, radius), Vec3::Z);
     let bottom = m.push_vertex(Vec3::new(0.0, 0.0, -radius), -Vec3::Z);

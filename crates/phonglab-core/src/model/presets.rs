@@ -6,6 +6,7 @@ use crate::model::materials;
 use crate::model::rules::Rules;
 use crate::model::scene::{Light, LightModel, LightPlacement, Material, NormalMode, Scene, Vertex};
 use crate::model::transform::{phong_demo_eye_from_object, worksheet_modelview};
+use crate::numerics::elementary;
 
 /// The worksheet's vertex, in the 1024x768 window's centre-relative coordinates.
 pub const WORKSHEET_VERTEX: DVec4 = DVec4::new(-512.0, -384.0, 0.0, 1.0);
@@ -146,7 +147,7 @@ impl LightingBench {
                 s.lights = (0..8)
                     .map(|i| {
                         let a = i as f64 / 8.0 * std::f64::consts::TAU;
-                        let p = DVec3::new(3.0 * a.cos(), 2.0, 3.0 * a.sin());
+                        let p = DVec3::new(3.0 * elementary::cos(a), 2.0, 3.0 * elementary::sin(a));
                         Light {
                             diffuse: DVec4::new(0.3, 0.3, 0.3, 1.0),
                             specular: DVec4::new(0.3, 0.3, 0.3, 1.0),
@@ -172,7 +173,7 @@ pub fn sphere_points(n: usize) -> (Vec<glam::Vec3>, Vec<glam::Vec3>) {
             let y = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
             let r = (1.0 - y * y).sqrt();
             let t = golden * i as f64;
-            let p = DVec3::new(r * t.cos(), y, r * t.sin()).as_vec3();
+            let p = DVec3::new(r * elementary::cos(t), y, r * elementary::sin(t)).as_vec3();
             (p, p)
         })
         .unzip()

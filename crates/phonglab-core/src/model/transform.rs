@@ -2,6 +2,8 @@
 
 use glam::{DMat3, DMat4, DVec3};
 
+use crate::numerics::elementary;
+
 /// Builds a matrix from rows (the layout matrices are written in: numpy, the worksheet, JSON).
 pub fn mat4_from_rows(rows: [[f64; 4]; 4]) -> DMat4 {
     DMat4::from_cols_array_2d(&rows).transpose()
@@ -35,7 +37,7 @@ pub fn try_look_at(eye: DVec3, centre: DVec3, up: DVec3) -> Option<DMat4> {
 /// `height` pixels high: `(height/2) / tan(30 deg)` (a 60 degree vertical field of view).
 /// 665.10751 for 768.
 pub fn of_camera_distance(height: f64) -> f64 {
-    (height / 2.0) / 30f64.to_radians().tan()
+    (height / 2.0) / elementary::tan(30f64.to_radians())
 }
 
 /// openFrameworks' default camera for a `width` x `height` window, as the worksheet uses
@@ -137,7 +139,7 @@ impl NormalMatrix {
 
 /// `gluPerspective(fovy, aspect, near, far)`: eye to clip space.
 pub fn perspective(fovy_deg: f64, aspect: f64, near: f64, far: f64) -> DMat4 {
-    let f = 1.0 / (fovy_deg.to_radians() / 2.0).tan();
+    let f = 1.0 / elementary::tan(fovy_deg.to_radians() / 2.0);
     mat4_from_rows([
         [f / aspect, 0.0, 0.0, 0.0],
         [0.0, f, 0.0, 0.0],

@@ -3,6 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::model::error::SceneError;
+use crate::numerics::elementary;
 
 /// The objects of the Phong demo.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
@@ -188,7 +189,7 @@ impl ShadingMode {
 /// `rotY(0.5 deg)^frame` in NumPy's row-major layout, uploaded with transpose `GL_FALSE`,
 /// so the shader applies its transpose: a turn by `-degrees` about y.
 pub fn demo_spin(degrees: f64) -> glam::DMat4 {
-    glam::DMat4::from_rotation_y(-degrees.to_radians())
+    elementary::rotation_y(-degrees.to_radians())
 }
 
 /// The shaded view's orbit camera: it looks at the origin from `distance` away, turned by
@@ -214,8 +215,8 @@ impl ViewCamera {
     /// World to eye.
     pub fn eye_from_world(&self) -> glam::DMat4 {
         glam::DMat4::from_translation(glam::DVec3::new(0.0, 0.0, -self.distance))
-            * glam::DMat4::from_rotation_x(self.pitch.to_radians())
-            * glam::DMat4::from_rotation_y(self.yaw.to_radians())
+            * elementary::rotation_x(self.pitch.to_radians())
+            * elementary::rotation_y(self.yaw.to_radians())
     }
 }
 

@@ -1,6 +1,7 @@
 //! Where floating point needs care: compensated sums, scaled lengths, zero-safe products, the powers.
 
 pub mod copies;
+pub mod elementary;
 pub mod exact_pow;
 pub mod fused;
 pub mod pow;

@@ -132,7 +132,7 @@ macro_rules! impl_real {
         crate::numerics::exact_pow::pow_f32($x, $e)
     };
     (@pow f64, $x:expr, $e:expr) => {
-        <f64>::powf($x, $e)
+        crate::numerics::elementary::pow($x, $e)
     };
     // 2^(bias - e) for the biased exponent e of m: biased exponent 2 bias - e, or the
     // subnormal 2^-(bias) when that is 0 (m in the top binade). Branch-free.

@@ -215,7 +215,7 @@ pub fn cos_deg(deg: f64) -> f64 {
     } else if r == 180.0 {
         -1.0
     } else {
-        deg.to_radians().cos()
+        crate::numerics::elementary::cos(deg.to_radians())
     }
 }
 

@@ -28,6 +28,7 @@ use crate::model::materials;
 use crate::model::rules::Rules;
 use crate::model::scene::{Light, LightModel, LightPlacement, NormalMode, Scene, Vertex};
 use crate::model::vocabulary::Quantity as Q;
+use crate::numerics::elementary;
 
 /// An effect an exercise can be asked to use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -252,9 +253,9 @@ pub struct Exercise {
 fn modelview(axis: usize, degrees: i64, t: DVec3) -> DMat4 {
     let a = (degrees as f64).to_radians();
     let r = match axis {
-        0 => DMat4::from_rotation_x(a),
-        1 => DMat4::from_rotation_y(a),
-        _ => DMat4::from_rotation_z(a),
+        0 => elementary::rotation_x(a),
+        1 => elementary::rotation_y(a),
+        _ => elementary::rotation_z(a),
     };
     DMat4::from_translation(t) * r
 }
@@ -394,10 +395,10 @@ pub fn screen(scene: &Scene, spec: &Spec) -> Option<String> {
         if l.is_spot() && lp.w != 0.0 {
             let dir = (scene.eye_from_light(l).transform_vector3(l.spot_direction)).normalize();
             let to_vertex = (p - lp.truncate() / lp.w).normalize();
-            if (dir.dot(to_vertex) - l.spot_cutoff.to_radians().cos()).abs() < 1e-3 {
+            if (dir.dot(to_vertex) - elementary::cos(l.spot_cutoff.to_radians())).abs() < 1e-3 {
                 return Some("the vertex within 1e-3 of the cone's edge".into());
             }
-            if dir.dot(to_vertex) < l.spot_cutoff.to_radians().cos() {
+            if dir.dot(to_vertex) < elementary::cos(l.spot_cutoff.to_radians()) {
                 return Some("the vertex outside the cone (no light to compute)".into());
             }
         }

@@ -686,7 +686,7 @@ pub fn uniform_value(scene: &Scene, clip_from_object: &glam::DMat4, name: &str) 
             "specular" => Some(f(&l.specular.truncate().to_array())),
             "attenuation" => Some(f(&l.attenuation)),
             "spot_direction" => Some(f(&scene.eye_from_light(l).transform_vector3(l.spot_direction).to_array())),
-            "spot_cos_cutoff" => Some(vec![l.spot_cutoff.to_radians().cos() as f32]),
+            "spot_cos_cutoff" => Some(vec![crate::numerics::elementary::cos(l.spot_cutoff.to_radians()) as f32]),
             "spot_exponent" => Some(vec![l.spot_exponent as f32]),
             _ => None,
         };

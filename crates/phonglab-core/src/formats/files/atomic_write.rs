@@ -211,7 +211,7 @@ fn rename_fault() -> io::Result<()> {
 #[doc(hidden)]
 pub fn rename(from: &Path, to: &Path) -> io::Result<()> {
     rename_fault()?;
-    std::fs::rename(from, to)
+    crate::formats::files::os::replace(from, to)
 }
 
 /// [`rename`] only where nothing is at `to` ([`crate::formats::files::os::rename_no_replace`]).

@@ -134,6 +134,41 @@ pub fn rename_no_replace(from: &Path, to: &Path) -> io::Result<()> {
     std::fs::rename(from, to)
 }
 
+/// Replaces the file `to` with `from` by a rename. On Windows a file another program holds
+/// open without sharing its deletion (an image viewer showing the PNG, a virus scanner or
+/// the search indexer reading it) cannot be replaced: the rename (`MoveFileExW`, through
+/// std) is tried again every 50 ms for 2 s, which outlasts a scanner's look; past that it
+/// fails as [`io::ErrorKind::ResourceBusy`] (said "another program has it open"), and the
+/// writer removes its temporary file: the file there is left as it was. A read-only file
+/// is refused at once (permission denied), as elsewhere.
+pub fn replace(from: &Path, to: &Path) -> io::Result<()> {
+    let mut tries = 0;
+    loop {
+        match std::fs::rename(from, to) {
+            Err(e) if held_open(&e, to) => {
+                if tries == 40 {
+                    return Err(io::Error::new(io::ErrorKind::ResourceBusy, e));
+                }
+                tries += 1;
+                std::thread::sleep(std::time::Duration::from_millis(50));
+            }
+            done => return done,
+        }
+    }
+}
+
+/// Is `e`, from replacing `to`, Windows' refusal of a file another program holds open
+/// (`ERROR_ACCESS_DENIED` where `to` is not read-only, `ERROR_SHARING_VIOLATION`,
+/// `ERROR_LOCK_VIOLATION`)? Never elsewhere.
+fn held_open(e: &io::Error, to: &Path) -> bool {
+    cfg!(windows)
+        && match e.raw_os_error() {
+            Some(5) => std::fs::metadata(to).is_ok_and(|m| !m.permissions().readonly()),
+            Some(32 | 33) => true,
+            _ => false,
+        }
+}
+
 /// Is the process `pid` still running (on this machine)? Where the system cannot say, it
 /// is taken to be running, so its files are left alone.
 pub fn process_alive(pid: u32) -> bool {
@@ -150,5 +185,68 @@ pub fn process_alive(pid: u32) -> bool {
     {
         let _ = pid;
         true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::formats::files::atomic_write;
+
+    fn folder(name: &str) -> std::path::PathBuf {
+        let d =
+            std::env::temp_dir().join(format!("phonglab-os {name} {}", std::process::id())).join("Exercícios de CG");
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    /// The names in `dir`, sorted.
+    fn names(dir: &Path) -> Vec<String> {
+        let mut v: Vec<String> =
+            std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        v.sort();
+        v
+    }
+
+    #[test]
+    fn a_file_is_replaced_whole_in_a_folder_with_accents_and_spaces() {
+        let dir = folder("replace");
+        let p = dir.join("esfera à luz.png");
+        atomic_write::write(&p, b"first").unwrap();
+        atomic_write::write(&p, b"second").unwrap();
+        assert_eq!(std::fs::read(&p).unwrap(), b"second");
+        assert_eq!(names(&dir), ["esfera à luz.png"]);
+        std::fs::remove_dir_all(dir.parent().unwrap()).unwrap();
+    }
+
+    /// Windows: a file another program holds open (sharing reading only, as an image viewer
+    /// does) is not replaced: the write says so in words and leaves the file and the folder
+    /// as they were; one that the other program lets go of within the retries is replaced.
+    #[test]
+    #[cfg(windows)]
+    fn a_file_held_open_elsewhere_is_left_as_it_was_or_replaced_once_let_go() {
+        use std::os::windows::fs::OpenOptionsExt;
+        /// `FILE_SHARE_READ` alone: no writing, no deleting, no renaming over it.
+        const SHARE_READ: u32 = 1;
+        let dir = folder("held");
+        let p = dir.join("cena da aula.png");
+        std::fs::write(&p, b"old").unwrap();
+        let held = File::options().read(true).share_mode(SHARE_READ).open(&p).unwrap();
+        let e = atomic_write::write(&p, b"new").unwrap_err();
+        assert_eq!(e.reason.kind(), io::ErrorKind::ResourceBusy, "{e}");
+        let said = crate::locale::with_locale(crate::locale::Locale::of(crate::locale::Lang::PtPt), || e.to_string());
+        assert!(said.contains("outro programa tem-no aberto"), "{said}");
+        assert_eq!(std::fs::read(&p).unwrap(), b"old");
+        assert_eq!(names(&dir), ["cena da aula.png"]);
+        // Let go of after 300 ms: the retries outlast it.
+        let letting_go = std::thread::spawn(move || {
+            std::thread::sleep(std::time::Duration::from_millis(300));
+            drop(held);
+        });
+        atomic_write::write(&p, b"new").unwrap();
+        letting_go.join().unwrap();
+        assert_eq!(std::fs::read(&p).unwrap(), b"new");
+        assert_eq!(names(&dir), ["cena da aula.png"]);
+        std::fs::remove_dir_all(dir.parent().unwrap()).unwrap();
     }
 }

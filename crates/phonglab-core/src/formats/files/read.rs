@@ -43,7 +43,12 @@ pub enum Unread {
 /// [`read_capped`], with the reason as a value (for callers that treat each differently,
 /// as the session does).
 pub fn read_capped_or(path: &Path, cap: u64) -> Result<Vec<u8>, Unread> {
-    read_opened(crate::formats::files::os::open_to_read(path).map_err(Unread::Io)?, cap)
+    // Windows cannot open a folder as a file (access denied): said as what it is.
+    let refused = |e: std::io::Error| match std::fs::metadata(path) {
+        Ok(m) if m.is_dir() => Unread::NotAFile,
+        _ => Unread::Io(e),
+    };
+    read_opened(crate::formats::files::os::open_to_read(path).map_err(refused)?, cap)
 }
 
 /// [`read_capped`] of a student's submission, hostile input: a symbolic link at `path` is

@@ -25,6 +25,7 @@ pub fn io_reason(e: &io::Error) -> String {
         K::ReadOnlyFilesystem => t!("io-read-only"),
         K::AlreadyExists => t!("io-already-exists"),
         K::InvalidFilename => t!("io-invalid-name"),
+        K::ResourceBusy => t!("io-open-elsewhere"),
         _ => e.to_string(),
     }
 }

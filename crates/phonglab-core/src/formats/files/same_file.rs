@@ -2,10 +2,10 @@
 //! reads or writes anything, that none of its outputs is one of its inputs.
 //!
 //! "The same file" is decided by the file itself, not by its name: two paths name one file
-//! when they lead to the same device and inode (Unix), so a hard link, a symbolic link, a
-//! `./` or a `..` in the path are all seen through. An output that does not exist yet is
-//! no input. Where the system has no inodes (the browser has no paths at all), the
-//! canonical paths are compared.
+//! when they lead to the same device and inode (Unix), or the same volume serial number and
+//! file index (Windows), so a hard link, a symbolic link, a `./` or a `..` in the path are
+//! all seen through. An output that does not exist yet is no input. Where the system has
+//! neither (the browser has no paths at all), the canonical paths are compared.
 
 use std::path::{Path, PathBuf};
 
@@ -18,7 +18,11 @@ use crate::t;
 enum FileId {
     #[cfg(unix)]
     Inode(u64, u64),
-    #[cfg_attr(unix, allow(dead_code))]
+    /// Windows: the file opened, compared by its volume's serial number and its file index
+    /// (the `same-file` crate), which a hard link shares and a link's target gives.
+    #[cfg(windows)]
+    Handle(same_file::Handle),
+    #[cfg_attr(any(unix, windows), allow(dead_code))]
     Canonical(PathBuf),
     Named(PathBuf, std::ffi::OsString),
 }
@@ -31,7 +35,11 @@ fn file_id(path: &Path) -> Option<FileId> {
         let m = std::fs::metadata(path).ok()?;
         Some(FileId::Inode(m.dev(), m.ino()))
     }
-    #[cfg(not(unix))]
+    #[cfg(windows)]
+    {
+        same_file::Handle::from_path(path).ok().map(FileId::Handle)
+    }
+    #[cfg(not(any(unix, windows)))]
     {
         std::fs::canonicalize(path).ok().map(FileId::Canonical)
     }
@@ -116,4 +124,37 @@ pub fn refuse_outputs_in_folder(dir: &Path, names: &[&str], inputs: &[(&Path, In
     let outputs: Vec<PathBuf> = names.iter().map(|n| dir.join(n)).collect();
     let outputs: Vec<&Path> = outputs.iter().map(PathBuf::as_path).collect();
     refuse_onto(&outputs, inputs)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A hard link is the same file under another name (on Windows: the same volume serial
+    /// number and file index), in a folder with an accent and a space as on a student's PC.
+    #[test]
+    fn an_output_onto_a_hard_link_of_an_input_is_refused() {
+        let dir =
+            std::env::temp_dir().join(format!("phonglab-same-file {}", std::process::id())).join("Exercícios de CG");
+        std::fs::create_dir_all(&dir).unwrap();
+        let scene = dir.join("cena da aula.toml");
+        std::fs::write(&scene, "name = \"x\"\n").unwrap();
+        let link = dir.join("outra cena.toml");
+        let _ = std::fs::remove_file(&link);
+        std::fs::hard_link(&scene, &link).unwrap();
+        let e = refuse_output_onto_input(&[&link], &[&scene]).unwrap_err();
+        assert!(e.contains("outra cena.toml") && e.contains("cena da aula.toml"), "{e}");
+        // Through `..` and `.` in the path, too.
+        let roundabout = dir.join("..").join("Exercícios de CG").join(".").join("cena da aula.toml");
+        assert!(refuse_output_onto_input(&[&roundabout], &[&scene]).is_err());
+        // A copy is another file; a file not there yet is no input.
+        let copy = dir.join("cópia.toml");
+        std::fs::copy(&scene, &copy).unwrap();
+        assert_eq!(refuse_output_onto_input(&[&copy], &[&scene]), Ok(()));
+        assert_eq!(refuse_output_onto_input(&[&dir.join("nova.png")], &[&scene]), Ok(()));
+        // Two outputs that will be one file.
+        let again = dir.join(".").join("nova.png");
+        assert!(refuse_onto(&[&dir.join("nova.png"), &again], &[]).is_err());
+        std::fs::remove_dir_all(dir.parent().unwrap()).unwrap();
+    }
 }

@@ -259,7 +259,7 @@ fn number(token: &str) -> Option<(f64, f64)> {
         return Some((x, 0.0));
     }
     let decimals = mantissa.split_once('.').map_or(0, |(_, f)| f.len() as i32);
-    Some((x, 0.5 * 10f64.powi(exp - decimals)))
+    Some((x, 0.5 * crate::numerics::elementary::powi(10.0, exp - decimals)))
 }
 
 /// NumPy prints an array's elements with as many digits as the one that needs most, up to
