@@ -441,6 +441,27 @@ exercise-effect-local-viewer = the local viewer
 exercise-effect-two-sided = two-sided lighting
 exercise-effect-several-lights = several lights
 
+## moodle-exam
+
+exam-modelview = rotate about { $axis } by the angle whose cosine is { $cos } and sine { $sin }, then translate { $translation }
+exam-name = exam exercise { $number } (seed { $seed })
+exam-material = the exam's own
+exam-no-calculator = No calculator. Every value works out by hand: round each to four significant digits.
+exam-key-exact = exact
+exam-key-rounded = rounded to four significant digits
+moodle-digits-quiz = Each field asks for the significant digits in brackets; an answer within 0.01 % of the value (or 0.000001 near 0) is right.
+moodle-digits-exam = Give each value rounded to { $digits } significant digits.
+moodle-decimal-mark = Numbers may be typed with a decimal comma or a decimal point: Moodle accepts both.
+moodle-part-digits = { $digits } significant digits
+moodle-right = Right: { $name } = { $formula }
+moodle-wrong = Not right: { $name } = { $formula }, which takes { $inputs }. Check those values first.
+moodle-takes-givens = the givens
+moodle-general-feedback = The worked calculation is in the exercise's key (phonglab explain on its scene file).
+moodle-picture-right = Drawn right
+moodle-picture-wrong = Drawn with one mistake
+moodle-picture-question = Which one mistake makes the right-hand picture?
+moodle-choice-not = Not this one. This mistake would show so: { $why }
+
 ## cli-out
 
 channel-emission = Emission

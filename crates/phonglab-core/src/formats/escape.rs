@@ -21,6 +21,11 @@
 //! | JSON (as `serde_json` wrote it) | [`json::text`] | every control as `\u202e`, C0 included (serde's) |
 //! | a CSV field | [`csv::field`] | controls written `\u{202E}`, quoted where it holds `,` or `"` |
 //! | HTML text or attribute | [`html::text`] | no tag, entity or attribute end; controls written `\u{1B}` |
+//! | Moodle XML text | [`moodle_xml::text`] | as HTML's: entities, no control XML 1.0 refuses |
+//! | Moodle XML CDATA | [`moodle_xml::cdata`] | a section that no `]]>` closes early |
+//! | a Cloze part, its feedback | [`moodle_xml::cloze_part`] | `} # ~ / \\` escaped, no brace: the part stays whole |
+//! | Cloze question text (HTML) | [`moodle_xml::cloze_html`] | no brace, so no text reads as a part |
+//! | GIFT text | [`gift::text`] | `~ = # { } :` and `\\` escaped, one line, HTML-safe |
 //!
 //! JSON is written by `serde_json`, which escapes the C0 controls in every string but not
 //! the others (DEL, C1, the separators, the bidirectional controls): [`json::text`]
@@ -61,6 +66,20 @@ fn visible_controls(text: &str, also: impl Fn(char) -> bool) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
         if is_control(c) || also(c) {
+            out.push_str(&visible(c));
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// `text` with every control character but the line feed and the tab written visibly
+/// (`\u{1B}`): phonglab's own HTML, whose lines are its own.
+fn kept_lines(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if is_control(c) && c != '\n' && c != '\t' {
             out.push_str(&visible(c));
         } else {
             out.push(c);
@@ -218,6 +237,94 @@ pub mod html {
                 '"' => out.push_str("&quot;"),
                 '\'' => out.push_str("&#39;"),
                 c if super::is_control(c) => out.push_str(&super::visible(c)),
+                c => out.push(c),
+            }
+        }
+        out
+    }
+}
+
+/// Moodle XML, the question bank's import format (`question/format/xml/format.php`).
+pub mod moodle_xml {
+    /// Text in an element or a quoted attribute: `&`, `<`, `>`, `"` and `'` as entities,
+    /// control characters written `\u{1B}` (XML 1.0 allows no C0 control but tab, line
+    /// feed and carriage return, not even as an entity), so it opens no tag and ends no
+    /// attribute or line.
+    pub fn text(text: &str) -> String {
+        super::html::text(text)
+    }
+
+    /// The inside of a `<![CDATA[ ... ]]>` section whose value is `html`: every `]]>`
+    /// split across two sections (`]]]]><![CDATA[>`, as Moodle's own export writes it),
+    /// and control characters other than tab and line feed written `\u{1B}`.
+    pub fn cdata(html: &str) -> String {
+        super::kept_lines(html).replace("]]>", "]]]]><![CDATA[>")
+    }
+
+    /// Text inside an embedded answer (Cloze) part's braces: a part's feedback. Moodle's
+    /// import (`qtype_multianswer_extract_question`) ends a feedback at the first `~` or
+    /// `}` not after a backslash and then decodes its HTML entities once
+    /// (`html_entity_decode`), so the text is HTML-escaped twice, with `{`, `}`, `~` and
+    /// `\\` as numeric entities: the part holds no character that ends it, and after
+    /// Moodle's one decoding the feedback is HTML text that shows `text` and opens no tag.
+    pub fn cloze_part(text: &str) -> String {
+        let once = super::html::text(text);
+        let mut out = String::with_capacity(once.len() * 2);
+        for c in once.chars() {
+            match c {
+                '&' => out.push_str("&amp;"),
+                '{' => out.push_str("&amp;#123;"),
+                '}' => out.push_str("&amp;#125;"),
+                '~' => out.push_str("&amp;#126;"),
+                '\\' => out.push_str("&amp;#92;"),
+                c => out.push(c),
+            }
+        }
+        out
+    }
+
+    /// HTML that phonglab wrote (tags kept, text already escaped) put in a Cloze
+    /// question's text outside its parts: `{` and `}` as entities, so no text can be read
+    /// as a part (`{1:NUMERICAL:...}`).
+    pub fn cloze_html(html: &str) -> String {
+        html.replace('{', "&#123;").replace('}', "&#125;")
+    }
+}
+
+/// GIFT, Moodle's plain-text question format (`question/format/gift/format.php`).
+pub mod gift {
+    /// Text in a question's name, text, answer or feedback: GIFT's special characters
+    /// `~ = # { } :` and the backslash after a backslash (as Moodle's GIFT export writes
+    /// them), every control character (a line break too, which would end the question at
+    /// a blank line) written `\u{1B}`; then HTML's `<` and `&` as entities, since phonglab
+    /// writes every GIFT text as `[html]`.
+    pub fn text(text: &str) -> String {
+        let html = super::html::text(text);
+        let mut out = String::with_capacity(html.len());
+        for c in html.chars() {
+            match c {
+                '~' | '=' | '#' | '{' | '}' | ':' | '\\' => {
+                    out.push('\\');
+                    out.push(c);
+                }
+                c => out.push(c),
+            }
+        }
+        out
+    }
+
+    /// HTML that phonglab wrote itself (tags kept): GIFT's special characters after a
+    /// backslash, and control characters (a line feed too) written visibly: the writer
+    /// joins its lines first.
+    pub fn html(html: &str) -> String {
+        let kept = super::visible_controls(html, |_| false);
+        let mut out = String::with_capacity(kept.len());
+        for c in kept.chars() {
+            match c {
+                '~' | '=' | '#' | '{' | '}' | ':' | '\\' => {
+                    out.push('\\');
+                    out.push(c);
+                }
                 c => out.push(c),
             }
         }

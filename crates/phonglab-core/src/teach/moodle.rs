@@ -1,0 +1,249 @@
+//! Exercises as questions for Moodle's question bank ([`crate::formats::question`]): an
+//! exercise's sheet as one statement with a numerical part for each value the sheet asks,
+//! and "What is wrong with this picture?" as a multiple choice with its two pictures.
+//!
+//! A part is right within the quiz's rule ([`crate::teach::quiz::TOLERANCE`]: 1e-4 of the
+//! value, or 1e-6 near 0), and its label asks for the significant digits that rule needs
+//! ([`crate::teach::quiz::digits_needed`]); an exam's part ([`Rounding::Exam`]) asks for
+//! four significant digits and takes half a unit of the fourth. Each part's feedback is
+//! the step's formula and, for a wrong answer, the values it takes: never the key's value,
+//! which Moodle shows only where the quiz's review options show the right answer.
+
+use std::fmt::Write as _;
+
+use crate::equation::explain::{Explanation, StepKind, printed_components};
+use crate::formats::escape::html::text as esc;
+use crate::formats::question::{Body, Choice, File, Part, Question};
+use crate::model::vocabulary::Quantity as Q;
+use crate::teach::exercise::{Exercise, rules_in_words};
+use crate::teach::misconception::Misconception;
+use crate::teach::quiz;
+
+/// The digits a part asks for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rounding {
+    /// As many as the quiz's rule needs for the value.
+    Quiz,
+    /// Four significant digits: an exam without a calculator.
+    Exam,
+}
+
+/// The significant digits of an exam's answers.
+pub const EXAM_DIGITS: usize = 4;
+
+impl Rounding {
+    /// The digits asked for `x` and the tolerance of the part.
+    pub fn of(self, x: f64) -> (usize, f64) {
+        let (rel, abs) = quiz::TOLERANCE;
+        let quiz_tolerance = (rel * x.abs()).max(abs);
+        match self {
+            Rounding::Quiz => (quiz::digits_needed(&[x]), quiz_tolerance),
+            Rounding::Exam => {
+                let half_unit = if x == 0.0 { 0.0 } else { half_unit(x, EXAM_DIGITS) };
+                (EXAM_DIGITS, quiz_tolerance.max(half_unit))
+            }
+        }
+    }
+}
+
+/// Half a unit of `x`'s last digit when it is written to `digits` significant digits.
+pub fn half_unit(x: f64, digits: usize) -> f64 {
+    let exponent = x.abs().log10().floor() as i32;
+    0.5 * 10f64.powi(exponent + 1 - digits as i32)
+}
+
+/// A vector or colour as the sheet writes it, in the reader's decimal mark: `[0,6 0,8 0 1]`.
+fn vector(v: &[f64]) -> String {
+    let parts: Vec<String> = printed_components(v, 8).iter().map(|x| crate::locale::num(*x, 8)).collect();
+    format!("[{}]", parts.join(" "))
+}
+
+fn colour(c: glam::DVec4) -> String {
+    vector(&[c.x, c.y, c.z, 0.0])
+}
+
+fn item(o: &mut String, name: &str, value: &str) {
+    let _ = writeln!(o, "<li><code>{}</code> = {}</li>", esc(name), esc(value));
+}
+
+/// The givens of an exercise as HTML, in the sheet's order and words.
+pub fn givens_html(ex: &Exercise) -> String {
+    let s = &ex.doc.scene;
+    let mut o = String::new();
+    let _ = writeln!(o, "<h4>{}</h4>\n<ul>", esc(&crate::t!("sheet-vertex")));
+    item(&mut o, Q::VertexPos.name(), &vector(&s.vertex.position.to_array()));
+    item(&mut o, Q::VertexNormal.name(), &vector(&s.vertex.normal.extend(0.0).to_array()));
+    let _ = writeln!(o, "</ul>\n<h4>{}</h4>\n<p>{}:</p>\n<pre>", esc(&crate::t!("sheet-modelview")), esc(&ex.modelview));
+    let rows = crate::model::transform::mat4_rows(&s.eye_from_world);
+    let printed = printed_components(rows.as_flattened(), 8);
+    for r in printed.chunks(4) {
+        let row: Vec<String> = r.iter().map(|x| format!("{:>12}", crate::locale::num(*x, 8))).collect();
+        let _ = writeln!(o, "[{}]", esc(&row.join(" ")));
+    }
+    o.push_str("</pre>\n");
+    for (i, l) in s.lights.iter().enumerate() {
+        let _ = writeln!(o, "<h4>{}</h4>\n<ul>", esc(&crate::t!("light-tab", index = i.to_string())));
+        let what = if l.position.w == 0.0 { crate::t!("sheet-direction") } else { crate::t!("sheet-position") };
+        let note = crate::t!("sheet-light-world", what = what);
+        item(&mut o, Q::LightPos.name(), &format!("{} ({note})", vector(&l.position.to_array())));
+        item(&mut o, Q::LightAmbient.name(), &colour(l.ambient));
+        item(&mut o, Q::LightDiffuse.name(), &colour(l.diffuse));
+        item(&mut o, Q::LightSpecular.name(), &colour(l.specular));
+        if l.position.w != 0.0 {
+            for (q, v) in [Q::AttConstant, Q::AttLinear, Q::AttQuadratic].into_iter().zip(l.attenuation) {
+                item(&mut o, q.name(), &crate::locale::num(v, 8));
+            }
+        }
+        if l.is_spot() {
+            item(&mut o, Q::SpotDirection.name(), &vector(&l.spot_direction.extend(0.0).to_array()));
+            let cutoff = crate::t!("sheet-degrees", value = crate::locale::num(l.spot_cutoff, 8));
+            item(&mut o, Q::SpotCutoff.name(), &cutoff);
+            item(&mut o, Q::SpotExponent.name(), &crate::locale::num(l.spot_exponent, 8));
+        }
+        o.push_str("</ul>\n");
+    }
+    let m = &s.material;
+    let material = crate::model::materials::display_name(&ex.material);
+    let _ = writeln!(o, "<h4>{}</h4>\n<ul>", esc(&crate::t!("sheet-material", name = material)));
+    item(&mut o, Q::MatAmbient.name(), &colour(m.ambient));
+    item(&mut o, Q::MatDiffuse.name(), &colour(m.diffuse));
+    item(&mut o, Q::MatSpecular.name(), &colour(m.specular));
+    item(&mut o, Q::Shininess.name(), &crate::locale::num(m.shininess, 8));
+    let lm = &s.light_model;
+    let yes_no = |b: bool| if b { crate::t!("yes") } else { crate::t!("no") };
+    let _ = writeln!(o, "</ul>\n<h4>{}</h4>\n<ul>", esc(&crate::t!("sheet-light-model")));
+    let _ = writeln!(o, "<li>{}: {}</li>", esc(&crate::t!("local-viewer")), esc(&yes_no(lm.local_viewer)));
+    let _ = writeln!(o, "<li>{}: {}</li>", esc(&crate::t!("two-sided")), esc(&yes_no(lm.two_sided)));
+    if s.rules.scene_ambient() {
+        item(&mut o, &crate::t!("scene-ambient"), &colour(lm.ambient));
+    }
+    o.push_str("</ul>\n");
+    o
+}
+
+/// The statement before the parts: what to do, under which rules, the decimal mark, the
+/// givens.
+fn statement_html(ex: &Exercise, rounding: Rounding) -> String {
+    let s = &ex.doc.scene;
+    let mut o = String::new();
+    if rounding == Rounding::Exam {
+        let _ = writeln!(o, "<p><strong>{}</strong></p>", esc(&crate::t!("exam-no-calculator")));
+    }
+    let compute = crate::t!("sheet-compute", rules = rules_in_words(s.rules.set));
+    let _ = writeln!(o, "<p>{} {}</p>", esc(&compute), esc(&crate::t!("sheet-colours")));
+    let digits = match rounding {
+        Rounding::Quiz => crate::t!("moodle-digits-quiz"),
+        Rounding::Exam => crate::t!("moodle-digits-exam", digits = EXAM_DIGITS.to_string()),
+    };
+    let _ = writeln!(o, "<p>{} {}</p>", esc(&digits), esc(&crate::t!("moodle-decimal-mark")));
+    o.push_str(&givens_html(ex));
+    let _ = writeln!(o, "<h4>{}</h4>", esc(&crate::t!("sheet-compute-heading")));
+    o
+}
+
+/// The names of a step's components: x, y, z for a vector or point, r, g, b (and a) for a
+/// colour.
+fn component_names(kind: StepKind) -> [&'static str; 4] {
+    match kind {
+        StepKind::Normal
+        | StepKind::Position
+        | StepKind::LightPosition
+        | StepKind::L
+        | StepKind::V
+        | StepKind::H
+        | StepKind::R => ["x", "y", "z", "w"],
+        _ => ["r", "g", "b", "a"],
+    }
+}
+
+/// How many of a value's components a part asks: all of a number or of the drawn colour
+/// (its alpha is OpenGL's own), three of a 4-component vector or colour (the fourth, 0 or 1,
+/// is the worksheet's convention and given).
+fn asked_components(kind: StepKind, value: &[f64]) -> usize {
+    if value.len() == 4 && kind != StepKind::Clamped { 3 } else { value.len() }
+}
+
+/// The feedback of step `k`'s parts: (right, wrong).
+fn feedback(ex: &Exercise, key: &Explanation, k: usize) -> (String, String) {
+    let st = &key.steps[k];
+    let right = crate::t!("moodle-right", name = st.name.clone(), formula = st.formula.clone());
+    let blank: Vec<Option<Vec<f64>>> = vec![None; key.steps.len()];
+    let inputs = quiz::expected(&ex.doc.scene, key, &blank, k).map(|(_, i)| i).unwrap_or_default();
+    let names: Vec<String> = inputs.into_iter().map(|(name, _, _)| name).collect();
+    let takes = if names.is_empty() { crate::t!("moodle-takes-givens") } else { names.join(", ") };
+    let wrong = crate::t!("moodle-wrong", name = st.name.clone(), formula = st.formula.clone(), inputs = takes);
+    (right, wrong)
+}
+
+/// The parts of an exercise: one per component of every step the sheet asks, numbered as
+/// the key numbers its steps.
+pub fn parts(ex: &Exercise, rounding: Rounding) -> Vec<Part> {
+    let key = &ex.key;
+    let mut out = Vec::new();
+    for k in (0..key.steps.len()).filter(|&k| quiz::asked(&ex.doc.scene, key, k)) {
+        let st = &key.steps[k];
+        let Some(value) = &st.value else { continue };
+        let (right, wrong) = feedback(ex, key, k);
+        let n = asked_components(st.kind, value);
+        for (i, &x) in value.iter().take(n).enumerate() {
+            let (digits, tolerance) = rounding.of(x);
+            let component = if value.len() > 1 { format!(" ({})", component_names(st.kind)[i]) } else { String::new() };
+            let asked = crate::t!("moodle-part-digits", digits = digits.to_string());
+            let label_html = format!(
+                "{}. {}: <code>{}</code>{} <small>({})</small>",
+                k + 1,
+                esc(&st.title),
+                esc(&st.name),
+                esc(&component),
+                esc(&asked)
+            );
+            out.push(Part { label_html, answer: x, tolerance, right_feedback: right.clone(), wrong_feedback: wrong.clone() });
+        }
+    }
+    out
+}
+
+/// An exercise as a question named `name`.
+pub fn exercise_question(ex: &Exercise, name: &str, rounding: Rounding) -> Question {
+    Question {
+        name: name.to_string(),
+        body: Body::Numbers { statement_html: statement_html(ex, rounding), parts: parts(ex, rounding) },
+        general_feedback_html: format!("<p>{}</p>", esc(&crate::t!("moodle-general-feedback"))),
+    }
+}
+
+/// "What is wrong with this picture?" for `kind` as a question named `name`: the picture
+/// drawn right and the one drawn with the mistake (PNG bytes), and the seven causes to
+/// choose from, each with its mistaken formula.
+pub fn misconception_question(kind: Misconception, name: &str, right_png: Vec<u8>, wrong_png: Vec<u8>) -> Question {
+    let (right_file, wrong_file) = (format!("{}-right.png", kind.id()), format!("{}-wrong.png", kind.id()));
+    let figure = |file: &str, caption: String| {
+        format!(
+            "<figure style=\"display:inline-block;margin:0 1em 0 0\"><img src=\"@@PLUGINFILE@@/{file}\" alt=\"{c}\" width=\"192\" height=\"192\"><figcaption>{c}</figcaption></figure>",
+            c = esc(&caption)
+        )
+    };
+    let statement_html = format!(
+        "<p>{}{}</p>\n<p>{}</p>",
+        figure(&right_file, crate::t!("moodle-picture-right")),
+        figure(&wrong_file, crate::t!("moodle-picture-wrong")),
+        esc(&crate::t!("moodle-picture-question"))
+    );
+    let choices = Misconception::ALL
+        .iter()
+        .map(|&m| Choice {
+            text: format!("{} ({})", m.cause(), m.formulas().1),
+            right: m == kind,
+            feedback: if m == kind { m.why() } else { crate::t!("moodle-choice-not", why = m.why()) },
+        })
+        .collect();
+    Question {
+        name: name.to_string(),
+        body: Body::Choice {
+            statement_html,
+            files: vec![File { name: right_file, bytes: right_png }, File { name: wrong_file, bytes: wrong_png }],
+            choices,
+        },
+        general_feedback_html: format!("<p>{}</p>", esc(&kind.formulas().0)),
+    }
+}
