@@ -62,6 +62,23 @@ wrong-sheet-title = What is wrong with this picture? ({ $number })
 wrong-drawn-right = Drawn right
 wrong-drawn-wrong = Drawn with one mistake
 wrong-question = Which one mistake makes the right-hand picture? Tick it, and say what in the picture shows it.
+
+## moodle-exam
+
+exam-key-heading = Each value exact and rounded
+moodle-category-exercise = exercise { $number }
+moodle-question-name = { $exercise }, variant { $variant } (seed { $seed })
+moodle-category-default = phonglab
+moodle-written = { $file } in { $out }: { $questions } questions in { $categories ->
+    [one] one category
+   *[other] { $categories } categories
+}. In Moodle: Question bank → Import → { $format }.
+moodle-format-xml = Moodle XML format
+moodle-format-gift = GIFT format
+exam-key-exact = exact
+exam-key-rounded = rounded to four significant digits
+err-exam-level-5 = --exam makes exercises of levels 1 to 4; level 5 has pictures, not numbers.
+
 wrong-written = { $count } pictures with one mistake each, with their keys, in { $out }
 wrong-quiz-hover = A sphere drawn right and drawn with one mistake: pick the mistake
 wrong-check = Check

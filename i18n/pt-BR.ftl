@@ -62,6 +62,23 @@ wrong-sheet-title = O que está errado nesta imagem? ({ $number })
 wrong-drawn-right = Desenhada certa
 wrong-drawn-wrong = Desenhada com um erro
 wrong-question = Que erro produz a imagem da direita? Marque-o e diga o que na imagem o mostra.
+
+## moodle-exam
+
+exam-key-heading = Cada valor exato e arredondado
+moodle-category-exercise = exercício { $number }
+moodle-question-name = { $exercise }, variante { $variant } (semente { $seed })
+moodle-category-default = phonglab
+moodle-written = { $file } em { $out }: { $questions } questões em { $categories ->
+    [one] uma categoria
+   *[other] { $categories } categorias
+}. No Moodle: Banco de questões → Importar → { $format }.
+moodle-format-xml = Formato Moodle XML
+moodle-format-gift = Formato GIFT
+exam-key-exact = exato
+exam-key-rounded = arredondado para quatro algarismos significativos
+err-exam-level-5 = --exam gera exercícios dos níveis 1 a 4; o nível 5 tem imagens, não números.
+
 wrong-written = { $count } imagens com um erro cada, com as chaves, em { $out }
 wrong-quiz-hover = Uma esfera desenhada certa e desenhada com um erro: escolha o erro
 wrong-check = Verificar

@@ -447,14 +447,15 @@ exam-modelview = rotate about { $axis } by the angle whose cosine is { $cos } an
 exam-name = exam exercise { $number } (seed { $seed })
 exam-material = the exam's own
 exam-no-calculator = No calculator. Every value works out by hand: round each to four significant digits.
-exam-key-exact = exact
-exam-key-rounded = rounded to four significant digits
 moodle-digits-quiz = Each field asks for the significant digits in brackets; an answer within 0.01 % of the value (or 0.000001 near 0) is right.
 moodle-digits-exam = Give each value rounded to { $digits } significant digits.
 moodle-decimal-mark = Numbers may be typed with a decimal comma or a decimal point: Moodle accepts both.
-moodle-part-digits = { $digits } significant digits
-moodle-right = Right: { $name } = { $formula }
-moodle-wrong = Not right: { $name } = { $formula }, which takes { $inputs }. Check those values first.
+moodle-part-digits = { $digits ->
+    [one] one significant digit
+   *[other] { $digits } significant digits
+}
+moodle-right = Right: { $formula }
+moodle-wrong = Not right. { $formula }: it takes { $inputs }; check those values first.
 moodle-takes-givens = the givens
 moodle-general-feedback = The worked calculation is in the exercise's key (phonglab explain on its scene file).
 moodle-picture-right = Drawn right

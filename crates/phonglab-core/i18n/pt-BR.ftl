@@ -447,14 +447,15 @@ exam-modelview = girar em torno de { $axis } pelo ângulo de cosseno { $cos } e 
 exam-name = exercício de prova { $number } (semente { $seed })
 exam-material = o da prova
 exam-no-calculator = Sem calculadora. Todos os valores se calculam à mão: arredonde cada um para quatro algarismos significativos.
-exam-key-exact = exato
-exam-key-rounded = arredondado para quatro algarismos significativos
 moodle-digits-quiz = Cada campo pede os algarismos significativos entre parênteses; uma resposta a menos de 0,01 % do valor (ou 0,000001 perto de 0) está certa.
 moodle-digits-exam = Informe cada valor arredondado para { $digits } algarismos significativos.
 moodle-decimal-mark = Os números podem ser digitados com vírgula ou com ponto decimal: o Moodle aceita os dois.
-moodle-part-digits = { $digits } algarismos significativos
-moodle-right = Certo: { $name } = { $formula }
-moodle-wrong = Não está certo: { $name } = { $formula }, que usa { $inputs }. Confira esses valores primeiro.
+moodle-part-digits = { $digits ->
+    [one] um algarismo significativo
+   *[other] { $digits } algarismos significativos
+}
+moodle-right = Certo: { $formula }
+moodle-wrong = Não está certo. { $formula }: usa { $inputs }; confira esses valores primeiro.
 moodle-takes-givens = os dados
 moodle-general-feedback = O cálculo completo está no gabarito do exercício (phonglab explain sobre o arquivo da cena).
 moodle-picture-right = Desenhada certa

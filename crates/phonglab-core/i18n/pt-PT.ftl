@@ -447,14 +447,15 @@ exam-modelview = rodar em torno de { $axis } pelo ângulo de cosseno { $cos } e 
 exam-name = exercício de exame { $number } (semente { $seed })
 exam-material = o do exame
 exam-no-calculator = Sem calculadora. Todos os valores se calculam à mão: arredonde cada um a quatro algarismos significativos.
-exam-key-exact = exato
-exam-key-rounded = arredondado a quatro algarismos significativos
 moodle-digits-quiz = Cada campo pede os algarismos significativos entre parênteses; uma resposta a menos de 0,01 % do valor (ou 0,000001 perto de 0) está certa.
 moodle-digits-exam = Indique cada valor arredondado a { $digits } algarismos significativos.
 moodle-decimal-mark = Os números podem ser escritos com vírgula ou com ponto decimal: o Moodle aceita ambos.
-moodle-part-digits = { $digits } algarismos significativos
-moodle-right = Certo: { $name } = { $formula }
-moodle-wrong = Não está certo: { $name } = { $formula }, que usa { $inputs }. Verifique primeiro esses valores.
+moodle-part-digits = { $digits ->
+    [one] um algarismo significativo
+   *[other] { $digits } algarismos significativos
+}
+moodle-right = Certo: { $formula }
+moodle-wrong = Não está certo. { $formula }: usa { $inputs }; verifique primeiro esses valores.
 moodle-takes-givens = os dados
 moodle-general-feedback = O cálculo completo está na chave do exercício (phonglab explain sobre o seu ficheiro de cena).
 moodle-picture-right = Desenhada certa

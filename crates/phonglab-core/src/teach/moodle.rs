@@ -125,7 +125,7 @@ pub fn givens_html(ex: &Exercise) -> String {
 /// givens.
 fn statement_html(ex: &Exercise, rounding: Rounding) -> String {
     let s = &ex.doc.scene;
-    let mut o = String::new();
+    let mut o = format!("<h3>{}</h3>\n", esc(&ex.doc.name));
     if rounding == Rounding::Exam {
         let _ = writeln!(o, "<p><strong>{}</strong></p>", esc(&crate::t!("exam-no-calculator")));
     }
@@ -166,12 +166,12 @@ fn asked_components(kind: StepKind, value: &[f64]) -> usize {
 /// The feedback of step `k`'s parts: (right, wrong).
 fn feedback(ex: &Exercise, key: &Explanation, k: usize) -> (String, String) {
     let st = &key.steps[k];
-    let right = crate::t!("moodle-right", name = st.name.clone(), formula = st.formula.clone());
+    let right = crate::t!("moodle-right", formula = st.formula.clone());
     let blank: Vec<Option<Vec<f64>>> = vec![None; key.steps.len()];
     let inputs = quiz::expected(&ex.doc.scene, key, &blank, k).map(|(_, i)| i).unwrap_or_default();
     let names: Vec<String> = inputs.into_iter().map(|(name, _, _)| name).collect();
     let takes = if names.is_empty() { crate::t!("moodle-takes-givens") } else { names.join(", ") };
-    let wrong = crate::t!("moodle-wrong", name = st.name.clone(), formula = st.formula.clone(), inputs = takes);
+    let wrong = crate::t!("moodle-wrong", formula = st.formula.clone(), inputs = takes);
     (right, wrong)
 }
 
@@ -188,7 +188,7 @@ pub fn parts(ex: &Exercise, rounding: Rounding) -> Vec<Part> {
         for (i, &x) in value.iter().take(n).enumerate() {
             let (digits, tolerance) = rounding.of(x);
             let component = if value.len() > 1 { format!(" ({})", component_names(st.kind)[i]) } else { String::new() };
-            let asked = crate::t!("moodle-part-digits", digits = digits.to_string());
+            let asked = crate::t!("moodle-part-digits", digits = digits as i64);
             let label_html = format!(
                 "{}. {}: <code>{}</code>{} <small>({})</small>",
                 k + 1,
@@ -203,10 +203,10 @@ pub fn parts(ex: &Exercise, rounding: Rounding) -> Vec<Part> {
     out
 }
 
-/// An exercise as a question named `name`.
-pub fn exercise_question(ex: &Exercise, name: &str, rounding: Rounding) -> Question {
+/// An exercise as a question, named as its scene is.
+pub fn exercise_question(ex: &Exercise, rounding: Rounding) -> Question {
     Question {
-        name: name.to_string(),
+        name: ex.doc.name.clone(),
         body: Body::Numbers { statement_html: statement_html(ex, rounding), parts: parts(ex, rounding) },
         general_feedback_html: format!("<p>{}</p>", esc(&crate::t!("moodle-general-feedback"))),
     }
@@ -224,7 +224,7 @@ pub fn misconception_question(kind: Misconception, name: &str, right_png: Vec<u8
         )
     };
     let statement_html = format!(
-        "<p>{}{}</p>\n<p>{}</p>",
+        "<div>{}{}</div>\n<p>{}</p>",
         figure(&right_file, crate::t!("moodle-picture-right")),
         figure(&wrong_file, crate::t!("moodle-picture-wrong")),
         esc(&crate::t!("moodle-picture-question"))
@@ -244,6 +244,6 @@ pub fn misconception_question(kind: Misconception, name: &str, right_png: Vec<u8
             files: vec![File { name: right_file, bytes: right_png }, File { name: wrong_file, bytes: wrong_png }],
             choices,
         },
-        general_feedback_html: format!("<p>{}</p>", esc(&kind.formulas().0)),
+        general_feedback_html: format!("<p>{}</p>", esc(&crate::t!("moodle-right", formula = kind.formulas().0))),
     }
 }
