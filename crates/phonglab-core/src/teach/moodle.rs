@@ -163,15 +163,26 @@ fn asked_components(kind: StepKind, value: &[f64]) -> usize {
     if value.len() == 4 && kind != StepKind::Clamped { 3 } else { value.len() }
 }
 
+/// A step's formula without the values the key computed: the spotlight's formula ends with
+/// its cosine `-L . s = 0.768` (after a `;`), which with an exponent of 1 is the step's
+/// own value.
+fn formula_without_values(kind: StepKind, formula: &str) -> String {
+    match kind {
+        StepKind::Spot => formula.split(';').next().unwrap_or(formula).trim_end().to_string(),
+        _ => formula.to_string(),
+    }
+}
+
 /// The feedback of step `k`'s parts: (right, wrong).
 fn feedback(ex: &Exercise, key: &Explanation, k: usize) -> (String, String) {
     let st = &key.steps[k];
-    let right = crate::t!("moodle-right", formula = st.formula.clone());
+    let formula = formula_without_values(st.kind, &st.formula);
+    let right = crate::t!("moodle-right", formula = formula.clone());
     let blank: Vec<Option<Vec<f64>>> = vec![None; key.steps.len()];
     let inputs = quiz::expected(&ex.doc.scene, key, &blank, k).map(|(_, i)| i).unwrap_or_default();
     let names: Vec<String> = inputs.into_iter().map(|(name, _, _)| name).collect();
     let takes = if names.is_empty() { crate::t!("moodle-takes-givens") } else { names.join(", ") };
-    let wrong = crate::t!("moodle-wrong", formula = st.formula.clone(), inputs = takes);
+    let wrong = crate::t!("moodle-wrong", formula = formula, inputs = takes);
     (right, wrong)
 }
 
