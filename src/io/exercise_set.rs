@@ -68,10 +68,13 @@ fn answer_key_body(doc: &Document, file: &str) -> Result<String> {
     Ok(o)
 }
 
+/// The files for Moodle's question bank ([`super::moodle_set`]): Moodle XML and GIFT.
+pub const MOODLE_FILES: [&str; 2] = ["questions.xml", "questions.gift.txt"];
+
 /// Is `name` a file of an exercise set, of a set of mistakes (`--level 5`) or a Moodle
-/// file ([`super::moodle_set`]), so that a new set in the same folder replaces it?
+/// file ([`MOODLE_FILES`]), so that a new set in the same folder replaces it?
 pub fn belongs_to_a_set(name: &str) -> bool {
-    if is_mistake_file(name) || super::moodle_set::is_moodle_file(name) {
+    if is_mistake_file(name) || MOODLE_FILES.contains(&name) {
         return true;
     }
     let stem = name.strip_suffix(".md").or_else(|| name.strip_suffix(".toml"));

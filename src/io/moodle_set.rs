@@ -13,7 +13,7 @@ use phonglab_core::misconception::{self, Misconception};
 use phonglab_core::moodle::{Rounding, exercise_question, misconception_question};
 use phonglab_core::question::{Bank, Category};
 
-use super::exercise_set::Request;
+use super::exercise_set::{MOODLE_FILES, Request};
 use super::file_set::FileSet;
 use crate::t;
 
@@ -30,8 +30,8 @@ impl Format {
     /// The file it writes.
     pub fn file_name(self) -> &'static str {
         match self {
-            Format::MoodleXml => "questions.xml",
-            Format::Gift => "questions.gift.txt",
+            Format::MoodleXml => MOODLE_FILES[0],
+            Format::Gift => MOODLE_FILES[1],
         }
     }
 
@@ -107,11 +107,6 @@ fn picture_question(kind: Misconception, number: usize) -> Result<phonglab_core:
     let wrong = super::image::encode_png(px, px, &drawn.bugged)?;
     let name = t!("wrong-sheet-title", number = number as i64);
     Ok(misconception_question(kind, &name, right, wrong))
-}
-
-/// Is `name` a file this module writes (so a new one in the same folder replaces it)?
-pub fn is_moodle_file(name: &str) -> bool {
-    [Format::MoodleXml, Format::Gift].iter().any(|f| f.file_name() == name)
 }
 
 /// Writes `bank` as `format` into the folder `dir`, whole or not at all: the file's name,
