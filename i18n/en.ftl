@@ -69,7 +69,10 @@ exam-key-heading = Each value exact and rounded
 moodle-category-exercise = exercise { $number }
 moodle-question-name = { $exercise }, variant { $variant } (seed { $seed })
 moodle-category-default = phonglab
-moodle-written = { $file } in { $out }: { $questions } questions in { $categories ->
+moodle-written = { $file } in { $out }: { $questions ->
+    [one] one question
+   *[other] { $questions } questions
+} in { $categories ->
     [one] one category
    *[other] { $categories } categories
 }. In Moodle: Question bank → Import → { $format }.

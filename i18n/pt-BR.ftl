@@ -69,7 +69,10 @@ exam-key-heading = Cada valor exato e arredondado
 moodle-category-exercise = exercício { $number }
 moodle-question-name = { $exercise }, variante { $variant } (semente { $seed })
 moodle-category-default = phonglab
-moodle-written = { $file } em { $out }: { $questions } questões em { $categories ->
+moodle-written = { $file } em { $out }: { $questions ->
+    [one] uma questão
+   *[other] { $questions } questões
+} em { $categories ->
     [one] uma categoria
    *[other] { $categories } categorias
 }. No Moodle: Banco de questões → Importar → { $format }.

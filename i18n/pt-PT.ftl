@@ -69,9 +69,12 @@ exam-key-heading = Cada valor exato e arredondado
 moodle-category-exercise = exercício { $number }
 moodle-question-name = { $exercise }, variante { $variant } (semente { $seed })
 moodle-category-default = phonglab
-moodle-written = { $file } em { $out }: { $questions } perguntas em { $categories ->
-    [one] uma categoria
-   *[other] { $categories } categorias
+moodle-written = { $file } em { $out }: { $questions ->
+    [one] uma pergunta
+   *[other] { $questions } perguntas
+} { $categories ->
+    [one] numa categoria
+   *[other] em { $categories } categorias
 }. No Moodle: Banco de questões → Importar → { $format }.
 moodle-format-xml = Formato Moodle XML
 moodle-format-gift = Formato GIFT

@@ -119,7 +119,16 @@ fn run_moodle(a: &ExerciseArgs, format: Format) -> Result<()> {
     for n in &notices {
         super::say(n);
     }
-    let questions: usize = bank.categories.iter().map(|c| c.questions.len()).sum();
+    // GIFT writes each part of a statement as a question of its own.
+    let questions: usize = bank
+        .categories
+        .iter()
+        .flat_map(|c| &c.questions)
+        .map(|q| match (&q.body, format) {
+            (phonglab_core::question::Body::Numbers { parts, .. }, Format::Gift) => parts.len(),
+            _ => 1,
+        })
+        .sum();
     let format_name = match format {
         Format::MoodleXml => t!("moodle-format-xml"),
         Format::Gift => t!("moodle-format-gift"),

@@ -293,10 +293,13 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
         set.add(format!("{stem}-key.md"), key);
         sheets.extend(sheet_blocks(ex, &toml));
         keys.push(Block::Section(t!("key-title", name = &ex.doc.name)));
+        let mut key_pages = key_blocks(&ex.doc, &toml)?;
         if a.exam {
-            keys.extend(super::exam_key::blocks(ex));
+            // After the title and the key's introduction, before the worked calculation.
+            let at = key_pages.len().min(2);
+            key_pages.splice(at..at, super::exam_key::blocks(ex));
         }
-        keys.extend(key_blocks(&ex.doc, &toml)?);
+        keys.extend(key_pages);
         let name = phonglab_core::escape::markdown::text(&ex.doc.name);
         let _ = writeln!(index, "- [{name}]({stem}.md) ([{}]({stem}-key.md))", t!("answers"));
     }

@@ -66,7 +66,7 @@ fn numerical(o: &mut String, name: &str, statement_html: &str, p: &Part, general
         "::{}::[html]{} <p>{}</p>{{#\n\t={}:{}#{}\n\t####{} {}\n}}\n",
         text(name),
         gift_html(statement_html),
-        gift_html(&p.label_html),
+        gift_html(&format!("{} {}", p.row_html, p.label_html)),
         number(p.answer),
         number(p.tolerance),
         text(&p.right_feedback),

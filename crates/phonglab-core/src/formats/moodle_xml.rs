@@ -79,11 +79,21 @@ fn question(o: &mut String, q: &Question) {
     let _ = writeln!(o, "  </question>");
 }
 
-/// The statement, then each part on its own line, its label and its field.
+/// The statement, then the parts, a paragraph for each row: the row's label, then each
+/// part's label and field.
 pub fn cloze_statement(statement_html: &str, parts: &[Part]) -> String {
     let mut h = cloze_html(statement_html);
-    for p in parts {
-        let _ = write!(h, "\n<p>{} {}</p>", cloze_html(&p.label_html), cloze_field(p));
+    for (i, p) in parts.iter().enumerate() {
+        if i == 0 || parts[i - 1].row_html != p.row_html {
+            if i > 0 {
+                h.push_str("</p>");
+            }
+            let _ = write!(h, "\n<p>{}", cloze_html(&p.row_html));
+        }
+        let _ = write!(h, " {} {}", cloze_html(&p.label_html), cloze_field(p));
+    }
+    if !parts.is_empty() {
+        h.push_str("</p>");
     }
     h
 }

@@ -39,7 +39,7 @@ pub struct Question {
 /// What a question asks.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Body {
-    /// A statement, then parts that each take a number.
+    /// A statement, then parts that each take a number, in rows.
     Numbers {
         /// The statement (HTML).
         statement_html: String,
@@ -60,7 +60,10 @@ pub enum Body {
 /// A part that takes a number.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Part {
-    /// What it asks, before its field (HTML).
+    /// The row it is on: what the row asks (HTML), shared by the parts of one row (a
+    /// vector's components), in order.
+    pub row_html: String,
+    /// Its own label on the row, before its field (HTML; `x`, `r`, or empty).
     pub label_html: String,
     /// The right value.
     pub answer: f64,

@@ -196,19 +196,21 @@ pub fn parts(ex: &Exercise, rounding: Rounding) -> Vec<Part> {
         let Some(value) = &st.value else { continue };
         let (right, wrong) = feedback(ex, key, k);
         let n = asked_components(st.kind, value);
-        for (i, &x) in value.iter().take(n).enumerate() {
-            let (digits, tolerance) = rounding.of(x);
-            let component = if value.len() > 1 { format!(" ({})", component_names(st.kind)[i]) } else { String::new() };
-            let asked = crate::t!("moodle-part-digits", digits = digits as i64);
-            let label_html = format!(
-                "{}. {}: <code>{}</code>{} <small>({})</small>",
-                k + 1,
-                esc(&st.title),
-                esc(&st.name),
-                esc(&component),
-                esc(&asked)
-            );
-            out.push(Part { label_html, answer: x, tolerance, right_feedback: right.clone(), wrong_feedback: wrong.clone() });
+        let asked: Vec<(usize, f64)> = value.iter().take(n).map(|&x| rounding.of(x)).collect();
+        let digits = asked.iter().map(|(d, _)| *d).max().unwrap_or(1);
+        let hint = crate::t!("moodle-part-digits", digits = digits as i64);
+        let row_html =
+            format!("{}. {}: <code>{}</code> <small>({})</small>", k + 1, esc(&st.title), esc(&st.name), esc(&hint));
+        for (i, (&x, (_, tolerance))) in value.iter().zip(asked).enumerate() {
+            let label_html = if n > 1 { esc(component_names(st.kind)[i]) } else { String::new() };
+            out.push(Part {
+                row_html: row_html.clone(),
+                label_html,
+                answer: x,
+                tolerance,
+                right_feedback: right.clone(),
+                wrong_feedback: wrong.clone(),
+            });
         }
     }
     out
