@@ -446,6 +446,10 @@ mod tests {
             toml::string(HOSTILE),
             pdf::text(HOSTILE),
             terminal::text(HOSTILE),
+            moodle_xml::text(HOSTILE),
+            moodle_xml::cloze_part(HOSTILE),
+            gift::text(HOSTILE),
+            gift::html(HOSTILE),
         ];
         for out in outputs {
             assert!(!out.chars().any(is_control), "{out:?}");
@@ -500,5 +504,24 @@ mod tests {
             let doc: ::toml::Table = ::toml::from_str(&format!("k = {}", toml::string(s))).unwrap();
             assert_eq!(doc["k"].as_str(), Some(s));
         }
+    }
+
+    #[test]
+    fn moodle_xml_ends_no_element_cdata_or_cloze_part() {
+        assert_eq!(moodle_xml::text("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
+        assert_eq!(moodle_xml::cdata("x]]>y\n\t\u{1b}"), "x]]]]><![CDATA[>y\n\t\\u{1B}");
+        // Moodle ends a part's feedback at `~` or `}` and decodes its entities once.
+        let part = moodle_xml::cloze_part("}~{\\<b>&");
+        assert!(!part.contains(['}', '~', '{', '\\', '<']), "{part}");
+        assert_eq!(part, "&amp;#125;&amp;#126;&amp;#123;&amp;#92;&amp;lt;b&amp;gt;&amp;amp;");
+        assert_eq!(moodle_xml::cloze_html("<p>{1:NUMERICAL:=1}</p>"), "<p>&#123;1:NUMERICAL:=1&#125;</p>");
+    }
+
+    #[test]
+    fn gift_escapes_its_own_characters_on_one_line() {
+        assert_eq!(gift::text("a~b=c#d{e}f:g\\h"), "a\\~b\\=c\\#d\\{e\\}f\\:g\\\\h");
+        // The line break written visibly, `\u{A}`, and that escaped in turn: GIFT reads `\u{A}`.
+        assert_eq!(gift::text("<i>\n"), r"&lt;i&gt;\\u\{A\}");
+        assert_eq!(gift::html("<p>x = 1:</p>"), "<p>x \\= 1\\:</p>");
     }
 }

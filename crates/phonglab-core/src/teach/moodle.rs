@@ -260,3 +260,32 @@ pub fn misconception_question(kind: Misconception, name: &str, right_png: Vec<u8
         general_feedback_html: format!("<p>{}</p>", esc(&crate::t!("moodle-right", formula = kind.formulas().0))),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_part_takes_the_quizs_tolerance_or_half_a_unit_of_the_fourth_digit() {
+        assert_eq!(Rounding::Quiz.of(0.5), (1, 5e-5));
+        assert_eq!(Rounding::Quiz.of(0.0), (1, 1e-6));
+        let (digits, tolerance) = Rounding::Quiz.of(0.79220526);
+        assert_eq!(digits, 4, "0.7922 is within 1e-4 of it");
+        assert!((tolerance - 0.79220526e-4).abs() < 1e-15);
+        let (digits, tolerance) = Rounding::Exam.of(38.2);
+        assert_eq!(digits, 4);
+        assert!((tolerance - 0.005).abs() < 1e-15, "half a unit of 38.20's last digit: {tolerance}");
+        // 0.12345 rounds to 0.1235 (or 0.1234): half a unit takes both, the quiz's rule neither.
+        let (_, tolerance) = Rounding::Exam.of(0.12345);
+        assert!((0.1235f64 - 0.12345).abs() <= tolerance + 1e-15 && tolerance < 6e-5);
+    }
+
+    #[test]
+    fn numbers_are_written_with_a_point_and_no_exponent() {
+        use crate::formats::question::number;
+        assert_eq!(number(-0.25), "-0.25");
+        assert_eq!(number(3.7386036e-26), "0");
+        assert_eq!(number(1.5e-9), "0.0000000015");
+        assert_eq!(number(f64::NAN), "0");
+    }
+}
