@@ -164,7 +164,8 @@ fn moodle_xml_of_levels_1_to_4_holds_one_cloze_per_variant_in_one_category_per_e
     for level in 1..=4u8 {
         let dir = out_dir(&format!("xml-{level}"));
         let args = ["exercise", "--format", "moodle-xml", "--seed", "5", "--count", "2", "--variants", "3"];
-        let said = run_ok(phonglab(&[&args[..], &["--level", &level.to_string(), "--out", dir.to_str().unwrap()]].concat()));
+        let said =
+            run_ok(phonglab(&[&args[..], &["--level", &level.to_string(), "--out", dir.to_str().unwrap()]].concat()));
         assert!(said.contains("Question bank → Import → Moodle XML format"), "{said}");
         let qs = read_xml(&dir.join("questions.xml"));
         let types: Vec<&str> = qs.iter().map(|q| q["type"].as_str().unwrap()).collect();
@@ -186,7 +187,17 @@ fn moodle_xml_of_levels_1_to_4_holds_one_cloze_per_variant_in_one_category_per_e
 #[test]
 fn the_picture_level_is_a_multiple_choice_with_both_pictures_embedded() {
     let dir = out_dir("xml-5");
-    run_ok(phonglab(&["exercise", "--format", "moodle-xml", "--level", "5", "--count", "7", "--out", dir.to_str().unwrap()]));
+    run_ok(phonglab(&[
+        "exercise",
+        "--format",
+        "moodle-xml",
+        "--level",
+        "5",
+        "--count",
+        "7",
+        "--out",
+        dir.to_str().unwrap(),
+    ]));
     let qs = read_xml(&dir.join("questions.xml"));
     assert_eq!(qs[0]["type"], "category");
     assert_eq!(qs.len(), 8, "seven questions in one category");
@@ -228,7 +239,19 @@ fn an_exam_asks_four_significant_digits_and_takes_the_rounded_value() {
 #[test]
 fn gift_parses_with_gift_pegjs_and_every_answer_is_the_keys_value() {
     let dir = out_dir("gift");
-    run_ok(phonglab(&["exercise", "--format", "gift", "--seed", "5", "--count", "2", "--level", "3", "--out", dir.to_str().unwrap()]));
+    run_ok(phonglab(&[
+        "exercise",
+        "--format",
+        "gift",
+        "--seed",
+        "5",
+        "--count",
+        "2",
+        "--level",
+        "3",
+        "--out",
+        dir.to_str().unwrap(),
+    ]));
     let qs = read_gift(&dir.join("questions.gift.txt"));
     let spec = Spec::level(Level::Spotlight, phonglab_core::Rules::WORKSHEET);
     let want: Vec<f64> = generate(5, 2, &spec).unwrap().iter().flat_map(key_values).collect();
@@ -243,7 +266,17 @@ fn gift_parses_with_gift_pegjs_and_every_answer_is_the_keys_value() {
         assert_eq!(q["stem"]["format"], "html");
     }
     let pictures = out_dir("gift-5");
-    run_ok(phonglab(&["exercise", "--format", "gift", "--level", "5", "--count", "2", "--out", pictures.to_str().unwrap()]));
+    run_ok(phonglab(&[
+        "exercise",
+        "--format",
+        "gift",
+        "--level",
+        "5",
+        "--count",
+        "2",
+        "--out",
+        pictures.to_str().unwrap(),
+    ]));
     let qs = read_gift(&pictures.join("questions.gift.txt"));
     let mc: Vec<&Value> = qs.iter().filter(|q| q["type"] == "MC").collect();
     assert_eq!(mc.len(), 2);
@@ -301,14 +334,38 @@ fn a_hostile_name_leaves_every_question_whole() {
 #[test]
 fn a_hostile_category_on_the_command_line_leaves_the_file_whole() {
     let dir = out_dir("hostile-cli");
-    let args = ["exercise", "--format", "moodle-xml", "--level", "1", "--count", "1", "--variants", "2", "--category", HOSTILE];
+    let args = [
+        "exercise",
+        "--format",
+        "moodle-xml",
+        "--level",
+        "1",
+        "--count",
+        "1",
+        "--variants",
+        "2",
+        "--category",
+        HOSTILE,
+    ];
     run_ok(phonglab(&[&args[..], &["--out", dir.to_str().unwrap()]].concat()));
     let qs = read_xml(&dir.join("questions.xml"));
     let segment = phonglab_core::escape::printable(HOSTILE).replace('/', "//");
     assert_eq!(qs[0]["category"], format!("$course$/top/{segment}/exercise 1"));
     assert_eq!(qs.iter().filter(|q| q["type"] == "cloze").count(), 2);
     let gift = out_dir("hostile-cli-gift");
-    run_ok(phonglab(&["exercise", "--format", "gift", "--level", "1", "--count", "1", "--category", HOSTILE, "--out", gift.to_str().unwrap()]));
+    run_ok(phonglab(&[
+        "exercise",
+        "--format",
+        "gift",
+        "--level",
+        "1",
+        "--count",
+        "1",
+        "--category",
+        HOSTILE,
+        "--out",
+        gift.to_str().unwrap(),
+    ]));
     let g = read_gift(&gift.join("questions.gift.txt"));
     assert_eq!(g[0]["type"], "Category");
     assert!(g[1..].iter().all(|q| q["type"] == "Numerical"), "{g:?}");
@@ -318,7 +375,10 @@ fn a_hostile_category_on_the_command_line_leaves_the_file_whole() {
 fn the_same_seed_writes_the_same_bytes_and_portuguese_uses_the_decimal_comma() {
     let (a, b) = (out_dir("same-a"), out_dir("same-b"));
     for d in [&a, &b] {
-        run_ok(phonglab_in("pt_PT.UTF-8", &["exercise", "--format", "moodle-xml", "--level", "2", "--count", "1", "--out", d.to_str().unwrap()]));
+        run_ok(phonglab_in(
+            "pt_PT.UTF-8",
+            &["exercise", "--format", "moodle-xml", "--level", "2", "--count", "1", "--out", d.to_str().unwrap()],
+        ));
     }
     let (x, y) = (std::fs::read(a.join("questions.xml")).unwrap(), std::fs::read(b.join("questions.xml")).unwrap());
     assert_eq!(x, y);
@@ -338,7 +398,10 @@ fn an_exam_sheet_says_no_calculator_at_the_top_and_its_key_exact_and_rounded() {
     let key = std::fs::read_to_string(dir.join("exercise-01-key.md")).unwrap();
     assert!(key.contains("(exact) ≈") && key.contains("(rounded to four significant digits)"), "{key}");
     let pt = out_dir("exam-sheets-pt");
-    run_ok(phonglab_in("pt_BR.UTF-8", &["exercise", "--exam", "--level", "1", "--count", "1", "--out", pt.to_str().unwrap()]));
+    run_ok(phonglab_in(
+        "pt_BR.UTF-8",
+        &["exercise", "--exam", "--level", "1", "--count", "1", "--out", pt.to_str().unwrap()],
+    ));
     let text = Command::new("pdftotext").arg(pt.join("sheets.pdf")).arg("-").output().expect("pdftotext");
     assert!(String::from_utf8_lossy(&text.stdout).trim_start().starts_with("Sem calculadora"));
 }

@@ -14,10 +14,8 @@ use crate::t;
 fn rows(ex: &Exercise) -> Vec<(String, String, String, String)> {
     let key = &ex.key;
     let printed = |v: &[f64], digits: usize| {
-        let parts: Vec<String> = phonglab_core::explain::printed_components(v, 12)
-            .iter()
-            .map(|x| crate::locale::num(*x, digits))
-            .collect();
+        let parts: Vec<String> =
+            phonglab_core::explain::printed_components(v, 12).iter().map(|x| crate::locale::num(*x, digits)).collect();
         if parts.len() == 1 { parts.concat() } else { format!("[{}]", parts.join(" ")) }
     };
     (0..key.steps.len())
@@ -45,7 +43,11 @@ pub fn blocks(ex: &Exercise) -> Vec<Block> {
     let (exact, rounded) = (t!("exam-key-exact"), t!("exam-key-rounded"));
     let mut b = vec![Block::Heading(t!("exam-key-heading"))];
     for (label, name, x, r) in rows(ex) {
-        b.push(Block::KeyStep { label, formula: format!("{name} = {x} ({exact})"), line: format!("{name} ≈ {r} ({rounded})") });
+        b.push(Block::KeyStep {
+            label,
+            formula: format!("{name} = {x} ({exact})"),
+            line: format!("{name} ≈ {r} ({rounded})"),
+        });
     }
     b
 }

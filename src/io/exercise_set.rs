@@ -257,7 +257,8 @@ fn key_blocks(doc: &Document, file: &str) -> Result<Vec<Block>> {
 /// and the two PDFs, `sheets.pdf` and `keys.pdf` (nothing is written).
 pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
     let spec = &a.spec;
-    let exercises = if a.exam { phonglab_core::exam::generate(a.seed, a.count, spec) } else { generate(a.seed, a.count, spec) };
+    let exercises =
+        if a.exam { phonglab_core::exam::generate(a.seed, a.count, spec) } else { generate(a.seed, a.count, spec) };
     let exercises = exercises.map_err(|e| anyhow::anyhow!(e))?;
     let mut set = FileSet::default();
     // In the reader's words: the effects' and the rules' names, not the command line's.

@@ -69,7 +69,11 @@ fn question(o: &mut String, q: &Question) {
             let _ = writeln!(o, "      <text><![CDATA[{}]]></text>", cdata(statement_html));
             for f in files {
                 let name = text(&super::question::file_name(&f.name));
-                let _ = writeln!(o, "      <file name=\"{name}\" path=\"/\" encoding=\"base64\">{}</file>", STANDARD.encode(&f.bytes));
+                let _ = writeln!(
+                    o,
+                    "      <file name=\"{name}\" path=\"/\" encoding=\"base64\">{}</file>",
+                    STANDARD.encode(&f.bytes)
+                );
             }
             let _ = writeln!(o, "    </questiontext>");
             html_text(o, "generalfeedback", &q.general_feedback_html, "    ");
@@ -114,7 +118,10 @@ fn choice_options(o: &mut String, choices: &[Choice]) {
     let _ = writeln!(o, "    <defaultgrade>1</defaultgrade>\n    <penalty>{PENALTY}</penalty>");
     let _ = writeln!(o, "    <hidden>0</hidden>\n    <idnumber></idnumber>");
     let _ = writeln!(o, "    <single>true</single>\n    <shuffleanswers>true</shuffleanswers>");
-    let _ = writeln!(o, "    <answernumbering>ABCD</answernumbering>\n    <showstandardinstruction>0</showstandardinstruction>");
+    let _ = writeln!(
+        o,
+        "    <answernumbering>ABCD</answernumbering>\n    <showstandardinstruction>0</showstandardinstruction>"
+    );
     for tag in ["correctfeedback", "partiallycorrectfeedback", "incorrectfeedback"] {
         html_text(o, tag, "", "    ");
     }

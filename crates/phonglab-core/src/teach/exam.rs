@@ -111,7 +111,8 @@ struct Turn {
 fn turn(rng: &mut Rng, translation: &str) -> Turn {
     let axis = rng.int(0, 2) as usize;
     // (cos, sin, den): whole quarters, and the 3-4-5 angles.
-    let (c, s, den) = rng.pick(&[(1, 0, 1), (0, 1, 1), (-1, 0, 1), (0, -1, 1), (4, 3, 5), (3, 4, 5), (4, -3, 5), (3, -4, 5)]);
+    let (c, s, den) =
+        rng.pick(&[(1, 0, 1), (0, 1, 1), (-1, 0, 1), (0, -1, 1), (4, 3, 5), (3, 4, 5), (4, -3, 5), (3, -4, 5)]);
     let rows = match axis {
         0 => [[den, 0, 0], [0, c, -s], [0, s, c]],
         1 => [[c, 0, s], [0, den, 0], [-s, 0, c]],
@@ -205,7 +206,8 @@ fn aim(rng: &mut Rng, all: &[Unit], n: Unit, v: Unit) -> Option<Aim> {
 /// at most three decimals.
 fn attenuation(rng: &mut Rng, d: i64) -> Option<[f64; 3]> {
     // In thousandths.
-    let options = [(1000, 10, 0), (1000, 20, 0), (1000, 40, 0), (1000, 50, 0), (500, 20, 0), (500, 10, 0), (1000, 0, 1)];
+    let options =
+        [(1000, 10, 0), (1000, 20, 0), (1000, 40, 0), (1000, 50, 0), (500, 20, 0), (500, 10, 0), (1000, 0, 1)];
     let start = rng.int(0, options.len() as i64 - 1) as usize;
     (0..options.len()).map(|i| options[(start + i) % options.len()]).find_map(|(k0, k1, k2)| {
         let sum = k0 + k1 * d + k2 * d * d;
@@ -303,7 +305,8 @@ fn draw(rng: &mut Rng, all: &[Unit], spec: &Spec) -> Option<(Scene, String)> {
     let decimals = aims.iter().map(|a| a.cos_beta_decimals).max().unwrap_or(0);
     let shininess: Vec<f64> = [1.0, 2.0, 4.0].into_iter().filter(|s| *s as u32 * decimals <= MAX_DECIMALS).collect();
     let shininess = rng.pick(&shininess);
-    let lights: Vec<Light> = aims.iter().enumerate().map(|(i, a)| light(rng, all, i, *a, p, spec)).collect::<Option<_>>()?;
+    let lights: Vec<Light> =
+        aims.iter().enumerate().map(|(i, a)| light(rng, all, i, *a, p, spec)).collect::<Option<_>>()?;
     let scene = Scene {
         light_model: LightModel {
             ambient: DVec4::new(0.2, 0.2, 0.2, 1.0),
@@ -366,7 +369,10 @@ pub fn generate(seed: u64, count: usize, spec: &Spec) -> Result<Vec<Exercise>, S
             }
             redraws += 1;
             if redraws >= MAX_DRAWS {
-                return Err(format!("exam exercise {k}: no scene with {:?} passed the screen in {MAX_DRAWS} draws", spec.effects));
+                return Err(format!(
+                    "exam exercise {k}: no scene with {:?} passed the screen in {MAX_DRAWS} draws",
+                    spec.effects
+                ));
             }
         }
     }

@@ -73,7 +73,8 @@ pub fn givens_html(ex: &Exercise) -> String {
     let _ = writeln!(o, "<h4>{}</h4>\n<ul>", esc(&crate::t!("sheet-vertex")));
     item(&mut o, Q::VertexPos.name(), &vector(&s.vertex.position.to_array()));
     item(&mut o, Q::VertexNormal.name(), &vector(&s.vertex.normal.extend(0.0).to_array()));
-    let _ = writeln!(o, "</ul>\n<h4>{}</h4>\n<p>{}:</p>\n<pre>", esc(&crate::t!("sheet-modelview")), esc(&ex.modelview));
+    let _ =
+        writeln!(o, "</ul>\n<h4>{}</h4>\n<p>{}:</p>\n<pre>", esc(&crate::t!("sheet-modelview")), esc(&ex.modelview));
     let rows = crate::model::transform::mat4_rows(&s.eye_from_world);
     let printed = printed_components(rows.as_flattened(), 8);
     for r in printed.chunks(4) {
