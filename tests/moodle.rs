@@ -82,7 +82,7 @@ static GIFT_INSTALL: Mutex<()> = Mutex::new(());
 /// The folder holding gift-pegjs, installed from the npm registry at the first run.
 fn gift_pegjs() -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("gift-pegjs-1.0.2");
-    let _held = GIFT_INSTALL.lock().unwrap_or_else(|e| e.into_inner());
+    let _held = GIFT_INSTALL.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     if !dir.join("node_modules/gift-pegjs/package.json").exists() {
         let out = Command::new("npm")
             .args(["install", "--no-audit", "--no-fund", "--loglevel=error", "--prefix"])

@@ -54,7 +54,7 @@ fn a_thousand_seeds_give_numbers_for_a_pencil() {
                     assert!(pencil_number(x), "seed {seed}, level {level:?}: {} = {x} is no pencil number", st.name);
                     match st.kind {
                         StepKind::CosTheta | StepKind::CosBeta => {
-                            assert!(ends_within(x, 4), "seed {seed}: {} = {x} is not exact in four decimals", st.name)
+                            assert!(ends_within(x, 4), "seed {seed}: {} = {x} is not exact in four decimals", st.name);
                         }
                         StepKind::Distance => assert!(ends_within(x, 0), "seed {seed}: d = {x}"),
                         _ => {}
