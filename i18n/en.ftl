@@ -81,6 +81,7 @@ moodle-format-gift = GIFT format
 exam-key-exact = exact
 exam-key-rounded = rounded to four significant digits
 err-exam-level-5 = --exam makes exercises of levels 1 to 4; level 5 has pictures, not numbers.
+err-moodle-only = --variants and --category are for a file for Moodle (--format moodle-xml or gift); sheets take --count.
 
 wrong-written = { $count } pictures with one mistake each, with their keys, in { $out }
 wrong-quiz-hover = A sphere drawn right and drawn with one mistake: pick the mistake

@@ -81,6 +81,7 @@ moodle-format-gift = Formato GIFT
 exam-key-exact = exato
 exam-key-rounded = arredondado a quatro algarismos significativos
 err-exam-level-5 = --exam gera exercícios dos níveis 1 a 4; o nível 5 tem imagens, não números.
+err-moodle-only = --variants e --category servem para um ficheiro para o Moodle (--format moodle-xml ou gift); as fichas usam --count.
 
 wrong-written = { $count } imagens com um erro cada, com as chaves, em { $out }
 wrong-quiz-hover = Uma esfera desenhada certa e desenhada com um erro: escolha o erro

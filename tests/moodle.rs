@@ -405,3 +405,15 @@ fn an_exam_sheet_says_no_calculator_at_the_top_and_its_key_exact_and_rounded() {
     let text = Command::new("pdftotext").arg(pt.join("sheets.pdf")).arg("-").output().expect("pdftotext");
     assert!(String::from_utf8_lossy(&text.stdout).trim_start().starts_with("Sem calculadora"));
 }
+
+#[test]
+fn variants_and_a_category_are_refused_for_sheets_and_an_exam_for_pictures() {
+    let dir = out_dir("refused");
+    let out = phonglab(&["exercise", "--variants", "3", "--out", dir.to_str().unwrap()]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--format moodle-xml or gift"));
+    let out = phonglab(&["exercise", "--exam", "--level", "5", "--format", "gift", "--out", dir.to_str().unwrap()]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("level 5 has pictures"));
+    assert!(!dir.exists(), "nothing written");
+}

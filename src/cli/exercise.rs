@@ -147,6 +147,7 @@ fn run_moodle(a: &ExerciseArgs, format: Format) -> Result<()> {
 /// Runs `phonglab exercise`.
 pub fn run(a: &ExerciseArgs) -> Result<()> {
     match a.format {
+        OutputFormat::Sheets if a.variants > 1 || a.category.is_some() => bail!(t!("err-moodle-only")),
         OutputFormat::Sheets => {}
         OutputFormat::MoodleXml => return run_moodle(a, Format::MoodleXml),
         OutputFormat::Gift => return run_moodle(a, Format::Gift),
