@@ -206,6 +206,8 @@ fn the_picture_level_is_a_multiple_choice_with_both_pictures_embedded() {
         assert_eq!(q["single"], "true");
         let files = q["files"].as_array().unwrap();
         assert_eq!(files.len(), 2, "the picture drawn right and the one drawn wrong");
+        let names: Vec<&str> = files.iter().map(|f| f["name"].as_str().unwrap()).collect();
+        assert_eq!(names, ["picture-1.png", "picture-2.png"], "names that do not say the mistake");
         for file in files {
             assert_eq!((&file["path"], &file["encoding"]), (&"/".into(), &"base64".into()));
             assert_eq!((&file["png"], &file["shown"]), (&true.into(), &true.into()), "{file}");

@@ -226,11 +226,17 @@ pub fn exercise_question(ex: &Exercise, rounding: Rounding) -> Question {
     }
 }
 
+/// The file names of a picture question's two pictures: the one drawn right, the one drawn
+/// with the mistake. Neutral, the same in every question (Moodle keeps each question's
+/// files apart).
+pub const PICTURE_FILES: [&str; 2] = ["picture-1.png", "picture-2.png"];
+
 /// "What is wrong with this picture?" for `kind` as a question named `name`: the picture
 /// drawn right and the one drawn with the mistake (PNG bytes), and the seven causes to
 /// choose from, each with its mistaken formula.
 pub fn misconception_question(kind: Misconception, name: &str, right_png: Vec<u8>, wrong_png: Vec<u8>) -> Question {
-    let (right_file, wrong_file) = (format!("{}-right.png", kind.id()), format!("{}-wrong.png", kind.id()));
+    // Names that say nothing of the mistake: a student sees them by hovering a picture.
+    let (right_file, wrong_file) = (PICTURE_FILES[0].to_string(), PICTURE_FILES[1].to_string());
     let figure = |file: &str, caption: String| {
         format!(
             "<figure style=\"display:inline-block;margin:0 1em 0 0\"><img src=\"@@PLUGINFILE@@/{file}\" alt=\"{c}\" width=\"192\" height=\"192\"><figcaption>{c}</figcaption></figure>",
