@@ -181,6 +181,17 @@ fn moodle_xml_of_levels_1_to_4_holds_one_cloze_per_variant_in_one_category_per_e
             check_cloze(q, ex, quiz_tolerance);
         }
         assert!(qs[1]["name"].as_str().unwrap().contains("variant 1"), "{}", qs[1]["name"]);
+        // What students see holds no seed; the name (teachers only) says which sheet of
+        // `--seed 5 --count 6` is each variant's key: exercise 2, variant 3 is sheet 06.
+        for q in qs.iter().filter(|q| q["type"] == "cloze") {
+            let text = q["text"].as_str().unwrap().to_lowercase();
+            assert!(!text.contains("seed") && !text.contains("--count"), "the statement shows no seed");
+            assert!(!q["general"].as_str().unwrap().contains('5'), "nor does the general feedback");
+        }
+        assert_eq!(
+            qs[7]["name"],
+            "exercise 2, variant 3: key exercise-06-key.md of phonglab exercise --seed 5 --count 6 and this file's --level or --effects"
+        );
     }
 }
 

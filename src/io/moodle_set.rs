@@ -69,25 +69,40 @@ pub fn exercise_bank(b: &Bundle) -> Result<Bank> {
     let all = exercises(b)?;
     let rounding = if b.exam { Rounding::Exam } else { Rounding::Quiz };
     let mut bank = Bank::default();
+    let total = all.len();
     for (k, group) in all.chunks(b.variants.max(1)).enumerate() {
         let exercise = t!("moodle-category-exercise", number = (k + 1) as i64);
         let questions = group
             .iter()
             .enumerate()
             .map(|(v, ex)| {
+                // The statement's heading, which students see: no seed, which would let
+                // them write the key.
                 let mut ex = ex.clone();
-                ex.doc.name = t!(
-                    "moodle-question-name",
-                    exercise = exercise.clone(),
-                    variant = (v + 1) as i64,
-                    seed = b.request.seed.to_string()
-                );
-                exercise_question(&ex, rounding)
+                ex.doc.name = exercise.clone();
+                let mut q = exercise_question(&ex, rounding);
+                q.name = teacher_name(b, &exercise, v + 1, k * b.variants.max(1) + v + 1, total);
+                q
             })
             .collect();
         bank.categories.push(Category { path: vec![b.category.clone(), exercise], questions });
     }
     Ok(bank)
+}
+
+/// A question's name in the bank, which Moodle shows to teachers only: the exercise, the
+/// variant, and where its worked key is: sheet `sheet` of the same request written as
+/// sheets, `--count total` (exercise k's variants are sheets (k − 1) × variants + 1 on).
+fn teacher_name(b: &Bundle, exercise: &str, variant: usize, sheet: usize, total: usize) -> String {
+    t!(
+        "moodle-question-name",
+        exercise = exercise.to_string(),
+        variant = variant as i64,
+        sheet = format!("{sheet:02}"),
+        seed = b.request.seed.to_string(),
+        count = total as i64,
+        exam = if b.exam { " --exam" } else { "" }
+    )
 }
 
 /// The bank of "What is wrong with this picture?": the mistakes in the seed's order, one
