@@ -178,6 +178,7 @@ fn moodle_xml_of_levels_1_to_4_holds_one_cloze_per_variant_in_one_category_per_e
         for (q, ex) in clozes.zip(&exercises) {
             assert_eq!(q["format"], "html");
             assert!(q["text"].as_str().unwrap().contains("Moodle accepts both"));
+            assert!(q["text"].as_str().unwrap().contains("into the next step as you computed it, not rounded"));
             check_cloze(q, ex, quiz_tolerance);
         }
         assert!(qs[1]["name"].as_str().unwrap().contains("variant 1"), "{}", qs[1]["name"]);
@@ -241,7 +242,8 @@ fn an_exam_asks_four_significant_digits_and_takes_the_rounded_value() {
     let half_unit = |x: f64| if x == 0.0 { 0.0 } else { 0.5 * 10f64.powi(x.abs().log10().floor() as i32 - 3) };
     for (q, ex) in qs.iter().filter(|q| q["type"] == "cloze").zip(&exercises) {
         assert!(q["text"].as_str().unwrap().contains("No calculator"));
-        check_cloze(q, ex, |x| quiz_tolerance(x).max(half_unit(x)));
+        check_cloze(q, ex, |x| quiz_tolerance(x).max(1.01 * half_unit(x)));
+        assert!(q["text"].as_str().unwrap().contains("carry it exact into the next step"));
         for (p, w) in q["parts"].as_array().unwrap().iter().zip(key_values(ex)) {
             let rounded: f64 = phonglab_core::locale::fmt_sig(w, 4).parse().unwrap();
             assert!((rounded - f(&p["answer"])).abs() <= f(&p["tolerance"]), "{w} rounded, {rounded}, is right");
@@ -410,6 +412,14 @@ fn an_exam_sheet_says_no_calculator_at_the_top_and_its_key_exact_and_rounded() {
     assert!(text.trim_start().starts_with("No calculator"), "{}", &text[..200.min(text.len())]);
     let key = std::fs::read_to_string(dir.join("exercise-01-key.md")).unwrap();
     assert!(key.contains("(exact) ≈") && key.contains("(rounded to four significant digits)"), "{key}");
+    // Four significant digits written as four, trailing zeros kept: 0.1360, not 0.136.
+    for line in key.lines().filter(|l| l.contains("(exact) ≈")) {
+        let rounded = line.split(" ≈ ").nth(1).unwrap().split(" (").next().unwrap();
+        for x in rounded.trim_matches(|c| c == '[' || c == ']').split(' ').filter(|x| *x != "0") {
+            let digits = x.trim_start_matches('-').trim_start_matches(['0', '.']).replace('.', "");
+            assert!(digits.len() >= 4, "{x} in {line:?} is not four significant digits");
+        }
+    }
     let pt = out_dir("exam-sheets-pt");
     run_ok(phonglab_in(
         "pt_BR.UTF-8",
@@ -417,6 +427,17 @@ fn an_exam_sheet_says_no_calculator_at_the_top_and_its_key_exact_and_rounded() {
     ));
     let text = Command::new("pdftotext").arg(pt.join("sheets.pdf")).arg("-").output().expect("pdftotext");
     assert!(String::from_utf8_lossy(&text.stdout).trim_start().starts_with("Sem calculadora"));
+    // The instructions wrapped on the page, none cut at its edge.
+    for (lang, end) in [("pt_PT.UTF-8", "algarismos significativos."), ("pt_BR.UTF-8", "algarismos significativos.")] {
+        let dir = out_dir(&format!("exam-sheets-{lang}"));
+        run_ok(phonglab_in(
+            lang,
+            &["exercise", "--exam", "--level", "2", "--count", "1", "--out", dir.to_str().unwrap()],
+        ));
+        let text = Command::new("pdftotext").arg(dir.join("sheets.pdf")).arg("-").output().expect("pdftotext");
+        let text = String::from_utf8_lossy(&text.stdout).split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(text.contains(end), "{lang}: {}", &text[..300.min(text.len())]);
+    }
 }
 
 #[test]

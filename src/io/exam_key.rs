@@ -13,9 +13,14 @@ use crate::t;
 /// Each asked step: (label, name, exact, rounded).
 fn rows(ex: &Exercise) -> Vec<(String, String, String, String)> {
     let key = &ex.key;
-    let printed = |v: &[f64], digits: usize| {
-        let parts: Vec<String> =
-            phonglab_core::explain::printed_components(v, 12).iter().map(|x| crate::locale::num(*x, digits)).collect();
+    let printed = |v: &[f64], digits: Option<usize>| {
+        let parts: Vec<String> = phonglab_core::explain::printed_components(v, 12)
+            .iter()
+            .map(|x| match digits {
+                Some(d) => phonglab_core::locale::decimal(&significant(*x, d)),
+                None => crate::locale::num(*x, 12),
+            })
+            .collect();
         if parts.len() == 1 { parts.concat() } else { format!("[{}]", parts.join(" ")) }
     };
     (0..key.steps.len())
@@ -23,9 +28,22 @@ fn rows(ex: &Exercise) -> Vec<(String, String, String, String)> {
         .filter_map(|k| {
             let st = &key.steps[k];
             let v = st.value.as_ref()?;
-            Some((format!("{}. {}", k + 1, st.title), st.name.clone(), printed(v, 12), printed(v, EXAM_DIGITS)))
+            Some((format!("{}. {}", k + 1, st.title), st.name.clone(), printed(v, None), printed(v, Some(EXAM_DIGITS))))
         })
         .collect()
+}
+
+/// `x` to `digits` significant digits as the student writes it, its trailing zeros kept
+/// (0.1360, 38.20; 0 as `0`), with a point.
+pub fn significant(x: f64, digits: usize) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return phonglab_core::locale::fmt_sig(x, digits);
+    }
+    // The exponent after rounding: 9.99996 to four digits is 10.00.
+    let sci = format!("{:.*e}", digits.max(1) - 1, x);
+    let exponent: i32 = sci.split_once('e').and_then(|(_, e)| e.parse().ok()).unwrap_or(0);
+    let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
+    format!("{x:.decimals$}")
 }
 
 /// The rows as a Markdown section of the key.
@@ -50,4 +68,20 @@ pub fn blocks(ex: &Exercise) -> Vec<Block> {
         });
     }
     b
+}
+
+#[cfg(test)]
+mod tests {
+    use super::significant;
+
+    #[test]
+    fn a_rounded_value_keeps_its_trailing_zeros() {
+        assert_eq!(significant(0.1360384, 4), "0.1360");
+        assert_eq!(significant(0.212992, 4), "0.2130");
+        assert_eq!(significant(38.2, 4), "38.20");
+        assert_eq!(significant(9.99996, 4), "10.00");
+        assert_eq!(significant(-0.6, 4), "-0.6000");
+        assert_eq!(significant(12345.0, 4), "12345");
+        assert_eq!(significant(0.0, 4), "0");
+    }
 }

@@ -281,7 +281,11 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
         let stem = format!("exercise-{:02}", i + 1);
         let toml = format!("{stem}.toml");
         set.add(toml.clone(), ex.doc.to_toml()?);
-        let banner = if a.exam { format!("**{}**\n\n", t!("exam-no-calculator")) } else { String::new() };
+        let banner = if a.exam {
+            format!("**{}** {}\n\n", t!("exam-no-calculator"), exam_instructions())
+        } else {
+            String::new()
+        };
         let sheet = format!("{banner}{}\n{}\n", sheet_markdown(ex), t!("sheet-scene-file", file = &toml));
         set.add(format!("{stem}.md"), sheet.clone());
         let mut key = answer_key(&ex.doc, &toml)?;
@@ -289,6 +293,7 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
         if a.exam {
             // At the top of the page, before the title.
             sheets.push(Block::Heading(t!("exam-no-calculator")));
+            sheets.push(Block::Text(exam_instructions()));
             key.push_str(&super::exam_key::markdown(ex));
         }
         set.add(format!("{stem}-key.md"), key);
@@ -320,4 +325,11 @@ pub fn write(dir: &std::path::Path, a: &Request) -> Result<(Vec<Exercise>, Vec<S
     let (exercises, set) = exercise_set(a)?;
     let notices = super::file_set::write_set(dir, &set, belongs_to_a_set)?;
     Ok((exercises, notices))
+}
+
+/// What an exam sheet says under "No calculator": work exactly, round what is written
+/// down to four significant digits (a paragraph, wrapped on the PDF's page).
+fn exam_instructions() -> String {
+    let digits = phonglab_core::moodle::EXAM_DIGITS.to_string();
+    format!("{} {}", t!("exam-by-hand"), t!("moodle-digits-exam", digits = digits))
 }

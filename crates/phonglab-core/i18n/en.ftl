@@ -446,9 +446,11 @@ exercise-effect-several-lights = several lights
 exam-modelview = rotate about { $axis } by the angle whose cosine is { $cos } and sine { $sin }, then translate { $translation }
 exam-name = exam exercise { $number } (seed { $seed })
 exam-material = the exam's own
-exam-no-calculator = No calculator. Every value works out by hand: round each to four significant digits.
+exam-no-calculator = No calculator.
+exam-by-hand = Every value works out by hand and exactly: carry it exact into the next step, and round only the value you write down.
 moodle-digits-quiz = Each field asks for the significant digits in brackets; an answer within 0.01 % of the value (or 0.000001 near 0) is right.
 moodle-digits-exam = Give each value rounded to { $digits } significant digits.
+moodle-carry = Carry each value into the next step as you computed it, not rounded: round only what you type in a field.
 moodle-decimal-mark = Numbers may be typed with a decimal comma or a decimal point: Moodle accepts both.
 moodle-part-digits = { $digits ->
     [one] one significant digit

@@ -446,9 +446,11 @@ exercise-effect-several-lights = várias luzes
 exam-modelview = girar em torno de { $axis } pelo ângulo de cosseno { $cos } e seno { $sin }, depois transladar { $translation }
 exam-name = exercício de prova { $number } (semente { $seed })
 exam-material = o da prova
-exam-no-calculator = Sem calculadora. Todos os valores se calculam à mão: arredonde cada um para quatro algarismos significativos.
+exam-no-calculator = Sem calculadora.
+exam-by-hand = Todos os valores se calculam à mão e de forma exata: use cada um exato no passo seguinte e arredonde só o valor que você escreve.
 moodle-digits-quiz = Cada campo pede os algarismos significativos entre parênteses; uma resposta a menos de 0,01 % do valor (ou 0,000001 perto de 0) está certa.
 moodle-digits-exam = Informe cada valor arredondado para { $digits } algarismos significativos.
+moodle-carry = Use cada valor no passo seguinte do jeito que você calculou, sem arredondar: arredonde só o que você digita num campo.
 moodle-decimal-mark = Os números podem ser digitados com vírgula ou com ponto decimal: o Moodle aceita os dois.
 moodle-part-digits = { $digits ->
     [one] um algarismo significativo

@@ -446,9 +446,11 @@ exercise-effect-several-lights = várias luzes
 exam-modelview = rodar em torno de { $axis } pelo ângulo de cosseno { $cos } e seno { $sin }, depois transladar { $translation }
 exam-name = exercício de exame { $number } (semente { $seed })
 exam-material = o do exame
-exam-no-calculator = Sem calculadora. Todos os valores se calculam à mão: arredonde cada um a quatro algarismos significativos.
+exam-no-calculator = Sem calculadora.
+exam-by-hand = Todos os valores se calculam à mão e de forma exata: use cada um exato no passo seguinte e arredonde só o valor que escreve.
 moodle-digits-quiz = Cada campo pede os algarismos significativos entre parênteses; uma resposta a menos de 0,01 % do valor (ou 0,000001 perto de 0) está certa.
 moodle-digits-exam = Indique cada valor arredondado a { $digits } algarismos significativos.
+moodle-carry = Use cada valor no passo seguinte tal como o calculou, sem arredondar: arredonde só o que escreve num campo.
 moodle-decimal-mark = Os números podem ser escritos com vírgula ou com ponto decimal: o Moodle aceita ambos.
 moodle-part-digits = { $digits ->
     [one] um algarismo significativo

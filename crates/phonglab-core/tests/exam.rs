@@ -84,3 +84,71 @@ fn the_pencil_test_refuses_a_notebook_number() {
     assert!(!pencil_number(2f64.sqrt()));
     assert!(!ends_within(0.12345, 4));
 }
+
+/// The four-significant-digit roundings a student may write of `x`, a decimal of at most
+/// eight decimals: the nearest, or both neighbours of a tie (0.14625: 0.1462 and 0.1463),
+/// as decimal text, computed in integers (no float rounding decides a tie).
+fn roundings(x: f64) -> Vec<String> {
+    let units = (x * 1e8).round() as i128; // x in 1e-8
+    let exponent = x.abs().log10().floor() as i32;
+    let decimals = 3 - exponent; // of the fourth significant digit
+    if decimals >= 8 {
+        return vec![format!("{:.8}", units as f64 / 1e8)];
+    }
+    let step = 10i128.pow((8 - decimals) as u32);
+    let (q, r) = (units.div_euclid(step), units.rem_euclid(step));
+    let candidates = if 2 * r == step {
+        vec![q, q + 1]
+    } else if 2 * r < step {
+        vec![q]
+    } else {
+        vec![q + 1]
+    };
+    let show = |k: i128| {
+        if decimals <= 0 {
+            format!("{}", k * 10i128.pow((-decimals) as u32))
+        } else {
+            format!("{:.*}", decimals as usize, k as f64 / 10f64.powi(decimals))
+        }
+    };
+    candidates.into_iter().map(show).collect()
+}
+
+/// Moodle's numerical comparison (`qtype_numerical_answer::within_tolerance`, nominal):
+/// `answer - tol <= x <= answer + tol`, in floating point.
+fn moodle_accepts(answer: f64, tolerance: f64, typed: &str) -> bool {
+    let x: f64 = typed.parse().unwrap();
+    answer - tolerance <= x && x <= answer + tolerance
+}
+
+/// Every rounding a student may make of an exam value, both neighbours of a tie, is right in
+/// Moodle, over 1 000 seeds; a value two units of the fourth digit off is not (one unit off
+/// may be within the quiz's 0.01 %, which an exam's part keeps: 0.09676 for 0.096768); every
+/// answer is written as its exact decimal (no float noise).
+#[test]
+fn every_rounding_of_an_exam_value_is_right_and_two_units_off_is_not() {
+    use phonglab_core::moodle::{Rounding, parts};
+    use phonglab_core::question::number;
+    let mut ties = 0;
+    for seed in 0..1000u64 {
+        let level = Level::from_number((seed % 4) as u8 + 1).unwrap();
+        let ex = &generate(seed, 1, &Spec::level(level, Rules::WORKSHEET)).unwrap()[0];
+        for p in parts(ex, Rounding::Exam) {
+            let written = number(p.answer);
+            assert!(written.trim_start_matches('-').len() <= 14, "seed {seed}: {written} is no exact decimal");
+            if p.answer == 0.0 {
+                continue;
+            }
+            let all = roundings(p.answer);
+            ties += usize::from(all.len() == 2);
+            for r in &all {
+                assert!(moodle_accepts(p.answer, p.tolerance, r), "seed {seed}: {r} refused for {written}");
+            }
+            let unit = 4.0 * phonglab_core::moodle::half_unit(p.answer, 4);
+            let off: f64 = all[0].parse::<f64>().unwrap() + unit * if p.answer > 0.0 { -1.0 } else { 1.0 };
+            let off = format!("{off:.10}");
+            assert!(!moodle_accepts(p.answer, p.tolerance, &off), "seed {seed}: {off} taken for {written}");
+        }
+    }
+    assert!(ties > 0, "the seeds hold ties, such as 0.14625");
+}

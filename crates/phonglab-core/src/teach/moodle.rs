@@ -40,11 +40,31 @@ impl Rounding {
             Rounding::Quiz => (quiz::digits_needed(&[x]), quiz_tolerance),
             Rounding::Exam => {
                 let half_unit = if x == 0.0 { 0.0 } else { half_unit(x, EXAM_DIGITS) };
-                (EXAM_DIGITS, quiz_tolerance.max(half_unit))
+                (EXAM_DIGITS, quiz_tolerance.max(half_unit * TIE_MARGIN))
+            }
+        }
+    }
+
+    /// The answer a part holds for `x`: an exam's value as the exact decimal it is (it ends
+    /// in at most [`crate::teach::exam::MAX_DECIMALS`] decimals: `-0.6`, not the
+    /// `-0.6000000000000001` the engine's arithmetic leaves), a quiz's as computed.
+    pub fn answer(self, x: f64) -> f64 {
+        match self {
+            Rounding::Quiz => x,
+            Rounding::Exam => {
+                let scale = 10f64.powi(crate::teach::exam::MAX_DECIMALS as i32);
+                let exact = (x * scale).round() / scale;
+                if exact == 0.0 { 0.0 } else { exact }
             }
         }
     }
 }
+
+/// An exam's tolerance is this many half units of the fourth digit: a value on a tie
+/// (0.14625) rounds to either neighbour (0.1462 or 0.1463), each exactly half a unit away,
+/// which Moodle's float comparison (`answer - tol <= x <= answer + tol`) may refuse by a
+/// hair; 1 % more takes both and no other four-digit number.
+pub const TIE_MARGIN: f64 = 1.01;
 
 /// Half a unit of `x`'s last digit when it is written to `digits` significant digits.
 pub fn half_unit(x: f64, digits: usize) -> f64 {
@@ -128,12 +148,19 @@ fn statement_html(ex: &Exercise, rounding: Rounding) -> String {
     let s = &ex.doc.scene;
     let mut o = format!("<h3>{}</h3>\n", esc(&ex.doc.name));
     if rounding == Rounding::Exam {
-        let _ = writeln!(o, "<p><strong>{}</strong></p>", esc(&crate::t!("exam-no-calculator")));
+        let _ = writeln!(
+            o,
+            "<p><strong>{}</strong> {}</p>",
+            esc(&crate::t!("exam-no-calculator")),
+            esc(&crate::t!("exam-by-hand"))
+        );
     }
     let compute = crate::t!("sheet-compute", rules = rules_in_words(s.rules.set));
     let _ = writeln!(o, "<p>{} {}</p>", esc(&compute), esc(&crate::t!("sheet-colours")));
+    // Each value carried unrounded into the next step: a value carried with only the asked
+    // digits can land outside the next field's tolerance.
     let digits = match rounding {
-        Rounding::Quiz => crate::t!("moodle-digits-quiz"),
+        Rounding::Quiz => format!("{} {}", crate::t!("moodle-digits-quiz"), crate::t!("moodle-carry")),
         Rounding::Exam => crate::t!("moodle-digits-exam", digits = EXAM_DIGITS.to_string()),
     };
     let _ = writeln!(o, "<p>{} {}</p>", esc(&digits), esc(&crate::t!("moodle-decimal-mark")));
@@ -207,7 +234,7 @@ pub fn parts(ex: &Exercise, rounding: Rounding) -> Vec<Part> {
             out.push(Part {
                 row_html: row_html.clone(),
                 label_html,
-                answer: x,
+                answer: rounding.answer(x),
                 tolerance,
                 right_feedback: right.clone(),
                 wrong_feedback: wrong.clone(),
@@ -285,6 +312,8 @@ mod tests {
         // 0.12345 rounds to 0.1235 (or 0.1234): half a unit takes both, the quiz's rule neither.
         let (_, tolerance) = Rounding::Exam.of(0.12345);
         assert!((0.1235f64 - 0.12345).abs() <= tolerance + 1e-15 && tolerance < 6e-5);
+        assert_eq!(Rounding::Exam.answer(0.8 * 0.5 - 1.0), -0.6, "the exact decimal, not -0.6000000000000001");
+        assert_eq!(Rounding::Exam.answer(0.42024960000000006), 0.4202496);
     }
 
     #[test]
