@@ -279,6 +279,16 @@ fn gift_parses_with_gift_pegjs_and_every_answer_is_the_keys_value() {
         let (a, t) = (f(&answer["number"]), f(&answer["range"]));
         assert!((a - w).abs() <= t && (t - quiz_tolerance(*w)).abs() <= 1e-12 * t, "{a} ± {t} for {w}");
         assert_eq!(q["stem"]["format"], "html");
+        // Each answer's own feedback: the right one's, the catch-all's; none in the
+        // general feedback, which every student sees.
+        assert_eq!(q["choices"][0]["feedback"]["text"].as_str().unwrap().get(..6), Some("Right:"));
+        assert_eq!((&q["choices"][1]["isCorrect"], &q["choices"][1]["text"]["text"]), (&false.into(), &"*".into()));
+        assert!(q["choices"][1]["feedback"]["text"].as_str().unwrap().starts_with("Not right."));
+        assert!(!q["globalFeedback"]["text"].as_str().unwrap().contains("Not right"), "{}", q["globalFeedback"]);
+        // The modelview's rows each on its own line, as in the Moodle XML.
+        let stem = q["stem"]["text"].as_str().unwrap();
+        let pre = &stem[stem.find("<pre>").unwrap()..stem.find("</pre>").unwrap()];
+        assert_eq!(pre.matches("]\n").count(), 4, "{pre}");
     }
     let pictures = out_dir("gift-5");
     run_ok(phonglab(&[

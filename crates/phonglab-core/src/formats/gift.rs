@@ -1,7 +1,7 @@
 //! A [`Bank`] as GIFT, Moodle's plain-text question format (Question bank → Import →
 //! "GIFT format"; `question/format/gift/format.php`). GIFT has no question of several
 //! parts, so each part of a statement is its own numerical question
-//! (`::NAME::[html]STATEMENT PART{#=ANSWER:TOLERANCE#right####general}`), and a choice is
+//! (`::NAME::[html]STATEMENT PART{#=ANSWER:TOLERANCE#right ~#wrong ####general}`), and a choice is
 //! `{=right#feedback ~wrong#feedback}`. GIFT embeds no file: a picture is a `data:` URI in
 //! the statement's `<img>`. Each category is a `$CATEGORY:` line before its questions;
 //! every text is escaped by [`super::escape::gift`], so no name breaks a question.
@@ -32,9 +32,12 @@ fn one_line(s: &str) -> String {
     crate::formats::escape::printable(s)
 }
 
-/// Phonglab's HTML on one line (a blank line would end the question), escaped for GIFT.
+/// Phonglab's HTML on one line (a blank line would end the question), escaped for GIFT:
+/// each line break written `\n`, which Moodle's import reads back as a line break
+/// (`escapedchar_post`), so a `<pre>` matrix keeps its rows.
 fn gift_html(h: &str) -> String {
-    html(&h.replace(['\n', '\r'], " "))
+    let lines: Vec<String> = h.split('\n').map(|l| html(l.trim_end_matches('\r'))).collect();
+    lines.join("\\n")
 }
 
 fn question(o: &mut String, q: &Question) {
@@ -60,18 +63,21 @@ fn question(o: &mut String, q: &Question) {
     }
 }
 
+/// One numerical question, as Moodle's GIFT export writes one
+/// (`{#` `=ANSWER:TOLERANCE#right feedback`, `~#feedback for any other answer`,
+/// `####general feedback` `}`): each answer's feedback its own.
 fn numerical(o: &mut String, name: &str, statement_html: &str, p: &Part, general: &str) {
     let _ = writeln!(
         o,
-        "::{}::[html]{} <p>{}</p>{{#\n\t={}:{}#{}\n\t####{} {}\n}}\n",
+        "::{}::[html]{} <p>{}</p>{{#\n\t={}:{}#{}\n\t~#{}\n\t####{}\n}}\n",
         text(name),
         gift_html(statement_html),
         gift_html(&format!("{} {}", p.row_html, p.label_html)),
         number(p.answer),
         number(p.tolerance),
         text(&p.right_feedback),
-        gift_html(general),
-        text(&p.wrong_feedback)
+        text(&p.wrong_feedback),
+        gift_html(general)
     );
 }
 
