@@ -82,6 +82,8 @@ exam-key-exact = exact
 exam-key-rounded = rounded to four significant digits
 err-exam-level-5 = --exam makes exercises of levels 1 to 4; level 5 has pictures, not numbers.
 err-moodle-only = --variants and --category are for a file for Moodle (--format moodle-xml or gift); sheets take --count.
+err-level-5-variants = --variants is for levels 1 to 4: level 5 has one picture per mistake, seven in all, none drawn twice; use --count (1 to 7).
+level-5-count = Level 5 has { $all } mistakes, one question each: { $all } questions, not { $count }.
 
 wrong-written = { $count } pictures with one mistake each, with their keys, in { $out }
 wrong-quiz-hover = A sphere drawn right and drawn with one mistake: pick the mistake
@@ -861,7 +863,7 @@ cli-value-viridis = viridis (dark blue, green, yellow)
 cli-value-cividis = cividis (blue to yellow), made for red-green colour blindness
 cli-arg-exercise-seed = The random seed: the same seed gives the same sheets
 cli-arg-exercise-count = How many exercises
-cli-arg-exercise-level = Difficulty: 1 directional only, 2 positional with attenuation, 3 spotlights, 4 two-sided with several lights
+cli-arg-exercise-level = Difficulty: 1 directional only, 2 positional with attenuation, 3 spotlights, 4 two-sided with several lights; 5 "what is wrong with this picture?" (one picture per mistake, seven at most)
 cli-arg-exercise-effects = Exactly these effects instead of a level (comma-separated): positional, attenuation, spot, local-viewer, two-sided, several-lights
 cli-arg-exercise-rules = The rules the answers follow: worksheet or opengl
 cli-arg-exercise-worksheet = Also write exercise 0: the worksheet itself, its five modelviews on one sheet

@@ -82,6 +82,8 @@ exam-key-exact = exato
 exam-key-rounded = arredondado a quatro algarismos significativos
 err-exam-level-5 = --exam gera exercícios dos níveis 1 a 4; o nível 5 tem imagens, não números.
 err-moodle-only = --variants e --category servem para um ficheiro para o Moodle (--format moodle-xml ou gift); as fichas usam --count.
+err-level-5-variants = --variants é para os níveis 1 a 4: o nível 5 tem uma imagem por erro, sete ao todo, nenhuma desenhada duas vezes; use --count (1 a 7).
+level-5-count = O nível 5 tem { $all } erros, uma pergunta cada: { $all } perguntas, não { $count }.
 
 wrong-written = { $count } imagens com um erro cada, com as chaves, em { $out }
 wrong-quiz-hover = Uma esfera desenhada certa e desenhada com um erro: escolha o erro
@@ -861,7 +863,7 @@ cli-value-viridis = viridis (azul-escuro, verde, amarelo)
 cli-value-cividis = cividis (azul a amarelo), feito para o daltonismo vermelho-verde
 cli-arg-exercise-seed = A semente aleatória: a mesma semente dá as mesmas fichas
 cli-arg-exercise-count = Quantos exercícios
-cli-arg-exercise-level = Dificuldade: 1 só direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
+cli-arg-exercise-level = Dificuldade: 1 só direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes; 5 "o que está errado nesta imagem?" (uma imagem por erro, sete no máximo)
 cli-arg-exercise-effects = Exatamente estes efeitos em vez de um nível (separados por vírgulas): positional, attenuation, spot, local-viewer, two-sided, several-lights
 cli-arg-exercise-rules = As regras que as respostas seguem: worksheet (as da ficha) ou opengl
 cli-arg-exercise-worksheet = Escrever também o exercício 0: a própria ficha, as suas cinco modelviews numa folha

@@ -461,3 +461,56 @@ fn variants_and_a_category_are_refused_for_sheets_and_an_exam_for_pictures() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("level 5 has pictures"));
     assert!(!dir.exists(), "nothing written");
 }
+
+#[test]
+fn level_5_refuses_variants_says_its_seven_and_help_lists_it() {
+    let dir = out_dir("level-5-variants");
+    let out =
+        phonglab(&["exercise", "--level", "5", "--format", "gift", "--variants", "5", "--out", dir.to_str().unwrap()]);
+    assert!(!out.status.success(), "--variants is not silently ignored");
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--variants is for levels 1 to 4"));
+    assert!(!dir.exists(), "nothing written");
+    let out = phonglab_in(
+        "pt_PT.UTF-8",
+        &["exercise", "--level", "5", "--format", "moodle-xml", "--count", "12", "--out", dir.to_str().unwrap()],
+    );
+    let said = run_ok(out);
+    assert!(said.contains("O nível 5 tem 7 erros, uma pergunta cada: 7 perguntas, não 12."), "{said}");
+    let qs = read_xml(&dir.join("questions.xml"));
+    for q in &qs[1..] {
+        let general = q["general"].as_str().unwrap();
+        assert!(general.contains("A imagem da esquerda está desenhada com"), "{general}");
+        for a in q["answers"].as_array().unwrap() {
+            assert!(!a["text"].as_str().unwrap().contains("(("), "no doubled parentheses: {}", a["text"]);
+            assert!(!a["text"].as_str().unwrap().contains(" . "), "one dot-product notation: {}", a["text"]);
+        }
+    }
+    let help = run_ok(phonglab(&["exercise", "--help"]));
+    assert!(help.contains("5 \"what is wrong with this picture?\""), "{help}");
+}
+
+#[test]
+fn the_general_feedback_names_only_what_exists() {
+    let dir = out_dir("general-feedback");
+    run_ok(phonglab(&[
+        "exercise",
+        "--format",
+        "moodle-xml",
+        "--level",
+        "1",
+        "--count",
+        "1",
+        "--out",
+        dir.to_str().unwrap(),
+    ]));
+    let written: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| !n.starts_with('.'))
+        .collect();
+    assert_eq!(written, ["questions.xml"], "no key and no scene file beside it");
+    let qs = read_xml(&dir.join("questions.xml"));
+    let general = qs[1]["general"].as_str().unwrap();
+    assert!(!general.contains("scene file") && !general.contains("phonglab explain"), "{general}");
+    assert!(general.contains("your teacher&#39;s key to this variant"), "{general}");
+}

@@ -11,6 +11,7 @@ use phonglab_core::exercise::{Effect, Level, Spec};
 use crate::io::exercise_set::{Request, write};
 use crate::io::moodle_set::{Bundle, Format, exercise_bank, misconception_bank};
 use crate::t;
+use phonglab_core::misconception::Misconception;
 
 /// `phonglab exercise`.
 #[derive(Args, Debug)]
@@ -110,6 +111,10 @@ fn run_moodle(a: &ExerciseArgs, format: Format) -> Result<()> {
         if a.exam {
             bail!(t!("err-exam-level-5"));
         }
+        // Seven pictures, one per mistake: no variants to draw from a category.
+        if a.variants > 1 {
+            bail!(t!("err-level-5-variants"));
+        }
         misconception_bank(a.seed, a.count as usize, &category)?
     } else {
         let bundle = Bundle { request: request_of(a)?, variants: a.variants as usize, category, exam: a.exam };
@@ -133,6 +138,10 @@ fn run_moodle(a: &ExerciseArgs, format: Format) -> Result<()> {
         Format::MoodleXml => t!("moodle-format-xml"),
         Format::Gift => t!("moodle-format-gift"),
     };
+    if a.level == Some(5) && a.count as usize > Misconception::ALL.len() {
+        let all = Misconception::ALL.len() as i64;
+        super::say(&t!("level-5-count", count = a.count as i64, all = all));
+    }
     super::say(&t!(
         "moodle-written",
         file = file,

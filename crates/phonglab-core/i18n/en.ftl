@@ -457,9 +457,10 @@ moodle-part-digits = { $digits ->
    *[other] { $digits } significant digits
 }
 moodle-right = Right: { $formula }
+moodle-picture-feedback = The picture on the left is drawn with { $right }; the one on the right with { $wrong }.
 moodle-wrong = Not right. { $formula }: it takes { $inputs }; check those values first.
 moodle-takes-givens = the givens
-moodle-general-feedback = The worked calculation is in the exercise's key (phonglab explain on its scene file).
+moodle-general-feedback = Each field's feedback gives its step's formula; the worked calculation of every step is in your teacher's key to this variant.
 moodle-picture-right = Drawn right
 moodle-picture-wrong = Drawn with one mistake
 moodle-picture-question = Which one mistake makes the right-hand picture?

@@ -457,9 +457,10 @@ moodle-part-digits = { $digits ->
    *[other] { $digits } algarismos significativos
 }
 moodle-right = Certo: { $formula }
+moodle-picture-feedback = A imagem da esquerda está desenhada com { $right }; a da direita com { $wrong }.
 moodle-wrong = Não está certo. { $formula }: usa { $inputs }; confira esses valores primeiro.
 moodle-takes-givens = os dados
-moodle-general-feedback = O cálculo completo está no gabarito do exercício (phonglab explain sobre o arquivo da cena).
+moodle-general-feedback = O feedback de cada campo dá a fórmula do seu passo; o cálculo completo de cada passo está no gabarito desta variante, que o professor tem.
 moodle-picture-right = Desenhada certa
 moodle-picture-wrong = Desenhada com um erro
 moodle-picture-question = Que erro produz a imagem da direita?

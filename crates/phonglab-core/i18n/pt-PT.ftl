@@ -457,9 +457,10 @@ moodle-part-digits = { $digits ->
    *[other] { $digits } algarismos significativos
 }
 moodle-right = Certo: { $formula }
+moodle-picture-feedback = A imagem da esquerda está desenhada com { $right }; a da direita com { $wrong }.
 moodle-wrong = Não está certo. { $formula }: usa { $inputs }; verifique primeiro esses valores.
 moodle-takes-givens = os dados
-moodle-general-feedback = O cálculo completo está na chave do exercício (phonglab explain sobre o seu ficheiro de cena).
+moodle-general-feedback = O feedback de cada campo dá a fórmula do seu passo; o cálculo completo de cada passo está na chave desta variante, que o professor tem.
 moodle-picture-right = Desenhada certa
 moodle-picture-wrong = Desenhada com um erro
 moodle-picture-question = Que erro produz a imagem da direita?

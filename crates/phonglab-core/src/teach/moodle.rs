@@ -204,7 +204,7 @@ fn formula_without_values(kind: StepKind, formula: &str) -> String {
 /// The feedback of step `k`'s parts: (right, wrong).
 fn feedback(ex: &Exercise, key: &Explanation, k: usize) -> (String, String) {
     let st = &key.steps[k];
-    let formula = formula_without_values(st.kind, &st.formula);
+    let formula = dot(&formula_without_values(st.kind, &st.formula));
     let right = crate::t!("moodle-right", formula = formula.clone());
     let blank: Vec<Option<Vec<f64>>> = vec![None; key.steps.len()];
     let inputs = quiz::expected(&ex.doc.scene, key, &blank, k).map(|(_, i)| i).unwrap_or_default();
@@ -279,7 +279,7 @@ pub fn misconception_question(kind: Misconception, name: &str, right_png: Vec<u8
     let choices = Misconception::ALL
         .iter()
         .map(|&m| Choice {
-            text: format!("{} ({})", m.cause(), m.formulas().1),
+            text: format!("{}: {}", m.cause(), dot(&m.formulas().1)),
             right: m == kind,
             feedback: if m == kind { m.why() } else { crate::t!("moodle-choice-not", why = m.why()) },
         })
@@ -291,8 +291,20 @@ pub fn misconception_question(kind: Misconception, name: &str, right_png: Vec<u8
             files: vec![File { name: right_file, bytes: right_png }, File { name: wrong_file, bytes: wrong_png }],
             choices,
         },
-        general_feedback_html: format!("<p>{}</p>", esc(&crate::t!("moodle-right", formula = kind.formulas().0))),
+        general_feedback_html: format!("<p>{}</p>", esc(&picture_feedback(kind))),
     }
+}
+
+/// A picture question's general feedback: how each picture is drawn (not "Right: ...",
+/// which would read as naming the right choice).
+fn picture_feedback(kind: Misconception) -> String {
+    let (right, wrong) = kind.formulas();
+    crate::t!("moodle-picture-feedback", right = dot(&right), wrong = dot(&wrong))
+}
+
+/// A formula with the dot product written `·`, as the statements write it (`R . V` → `R · V`).
+fn dot(formula: &str) -> String {
+    formula.replace(" . ", " · ")
 }
 
 #[cfg(test)]
