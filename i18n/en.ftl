@@ -642,8 +642,8 @@ pdf-blank-page = This page is left blank on purpose.
 
 exercises-written =
     { $count ->
-    [one] 1 exercise in { $out } ({ $redraws } draws set aside by the screen)
-    *[other] { $count } exercises in { $out } ({ $redraws } draws set aside by the screen)
+    [one] 1 exercise in { $out } ({ $redraws } draws rejected: they lacked an asked effect or hit an edge case)
+    *[other] { $count } exercises in { $out } ({ $redraws } draws rejected: they lacked an asked effect or hit an edge case)
     }
 
 ## cli-out

@@ -57,7 +57,7 @@ director-naive-normal = Pontilhada, em azul-claro: M n, a normal transformada co
 director-rules-naive = As regras desta cena (as da lista) iluminam o vértice com M n; as do OpenGL usam (M^-1)^T n.
 director-ring = Luz { $n }: 1/at, o fator de atenuação, cai para { $percent } % à distância { $distance } (um anel).
 wrong-title = O que está errado nesta imagem?
-wrong-intro = Cada folha mostra uma esfera desenhada certa e desenhada com um erro. Escolha o erro; a chave o explica com os números da sonda de pixel.
+wrong-intro = Cada folha mostra uma esfera desenhada certa e desenhada com um erro. Escolha o erro; o gabarito o explica com os números da sonda de pixel.
 wrong-sheet-title = O que está errado nesta imagem? ({ $number })
 wrong-drawn-right = Desenhada certa
 wrong-drawn-wrong = Desenhada com um erro
@@ -85,11 +85,11 @@ err-moodle-only = --variants e --category servem para um arquivo para o Moodle (
 err-level-5-variants = --variants é para os níveis 1 a 4: o nível 5 tem uma imagem por erro, sete ao todo, nenhuma desenhada duas vezes; use --count (1 a 7).
 level-5-count = O nível 5 tem { $all } erros, uma questão cada: { $all } questões, não { $count }.
 
-wrong-written = { $count } imagens com um erro cada, com as chaves, em { $out }
+wrong-written = { $count } imagens com um erro cada, com os gabaritos, em { $out }
 wrong-quiz-hover = Uma esfera desenhada certa e desenhada com um erro: escolha o erro
 wrong-check = Verificar
 wrong-right-answer = Certo.
-wrong-wrong-answer = Não é esse. A chave:
+wrong-wrong-answer = Não é esse. O gabarito:
 wrong-back = Voltar ao cálculo
 share-summary = um link de { $length } caracteres: a cena vai no próprio link
 share-window = Compartilhar esta cena
@@ -343,11 +343,11 @@ help-demo-pipeline = Da demo: sem projeção (a imagem é o espaço de recorte),
 ## quiz
 
 quiz-input-yours = o seu { $name } = { $value }
-quiz-input-key = o { $name } da chave (ainda sem resposta)
+quiz-input-key = o { $name } do gabarito (ainda sem resposta)
 quiz-the-givens = os dados
 quiz-right = ✔ certo
 quiz-right-given = ✔ certo, dado o seu { $yours }
-quiz-close-key = ≈ perto: a { $percent } % da chave; dê { $digits } algarismos significativos
+quiz-close-key = ≈ perto: a { $percent } % do gabarito; dê { $digits } algarismos significativos
 quiz-close-yours = ≈ perto: a { $percent } % do que as suas respostas anteriores dão; dê { $digits } algarismos significativos
 quiz-wrong = ✖ errado: { $formula }, com { $inputs }
 quiz-level = Nível
@@ -642,8 +642,8 @@ pdf-blank-page = Esta página foi deixada em branco intencionalmente.
 
 exercises-written =
     { $count ->
-    [one] 1 exercício em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
-    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
+    [one] 1 exercício em { $out } ({ $redraws } sorteios rejeitados: faltava um efeito pedido ou caíam em um caso-limite)
+    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios rejeitados: faltava um efeito pedido ou caíam em um caso-limite)
     }
 
 ## cli-out

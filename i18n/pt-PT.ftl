@@ -642,8 +642,8 @@ pdf-blank-page = Esta página foi deixada em branco propositadamente.
 
 exercises-written =
     { $count ->
-    [one] 1 exercício em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
-    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
+    [one] 1 exercício em { $out } ({ $redraws } sorteios rejeitados: faltava-lhes um efeito pedido ou caíam num caso-limite)
+    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios rejeitados: faltava-lhes um efeito pedido ou caíam num caso-limite)
     }
 
 ## cli-out

@@ -411,6 +411,15 @@ fn the_same_seed_writes_the_same_bytes_and_portuguese_uses_the_decimal_comma() {
     assert!(text.contains("o Moodle aceita ambos"), "the sentence in European Portuguese");
     assert!(text.contains("<code>atLin</code> = 0,01"), "the givens with a decimal comma");
     assert!(text.contains("Banco de questões") || !text.contains("Question bank"));
+    // One register, the worksheet's ("modifique"): "Calcule", "transforme-a", "verifique".
+    assert!(text.contains("Calcule a cor") && text.contains("transforme-a") && !text.contains("Calcula a cor"));
+    let br = out_dir("same-br");
+    run_ok(phonglab_in(
+        "pt_BR.UTF-8",
+        &["exercise", "--format", "moodle-xml", "--level", "3", "--count", "1", "--out", br.to_str().unwrap()],
+    ));
+    let text = std::fs::read_to_string(br.join("questions.xml")).unwrap();
+    assert!(text.contains("gabarito") && !text.contains("chave"), "pt-BR says gabarito");
 }
 
 #[test]
@@ -513,4 +522,43 @@ fn the_general_feedback_names_only_what_exists() {
     let general = qs[1]["general"].as_str().unwrap();
     assert!(!general.contains("scene file") && !general.contains("phonglab explain"), "{general}");
     assert!(general.contains("your teacher&#39;s key to this variant"), "{general}");
+}
+
+/// Rows numbered as the question asks them; feedback naming only what the question shows
+/// (a given, or a step it asks: never `Ilight`, which no field asks); level 4 saying which
+/// side to compute; the spot direction, like the light's position, to be transformed.
+#[test]
+fn a_question_names_only_what_it_shows() {
+    for level in 1..=4u8 {
+        let spec = Spec::level(Level::from_number(level).unwrap(), phonglab_core::Rules::WORKSHEET);
+        for ex in generate(5, 3, &spec).unwrap() {
+            let q = phonglab_core::moodle::exercise_question(&ex, phonglab_core::moodle::Rounding::Quiz);
+            let phonglab_core::question::Body::Numbers { statement_html, parts } = &q.body else { panic!() };
+            let steps: Vec<&str> = ex.key.steps.iter().map(|s| s.name.as_str()).collect();
+            let asked: Vec<&str> = (0..steps.len())
+                .filter(|&k| phonglab_core::quiz::asked(&ex.doc.scene, &ex.key, k))
+                .map(|k| steps[k])
+                .collect();
+            let mut rows: Vec<&str> = parts.iter().map(|p| p.row_html.as_str()).collect();
+            rows.dedup();
+            for (i, row) in rows.iter().enumerate() {
+                assert!(row.starts_with(&format!("{}. ", i + 1)), "level {level}: row {i} is {row}");
+            }
+            for p in parts {
+                let said = p.wrong_feedback.split("depends on ").nth(1).unwrap().split(';').next().unwrap();
+                for name in said.split(", ").filter(|n| steps.contains(n)) {
+                    assert!(
+                        asked.contains(&name),
+                        "level {level}: {:?} names {name}, which no field asks",
+                        p.wrong_feedback
+                    );
+                }
+            }
+            assert_eq!(statement_html.contains("compute the front side"), level == 4, "level {level}");
+            if ex.doc.scene.lights.iter().any(|l| l.is_spot()) {
+                let spot = statement_html.lines().find(|l| l.contains("<code>lightSpotDir</code>")).unwrap();
+                assert!(spot.contains("transform it by the modelview"), "{spot}");
+            }
+        }
+    }
 }

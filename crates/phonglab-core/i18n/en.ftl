@@ -445,7 +445,7 @@ exercise-effect-several-lights = several lights
 
 exam-modelview = rotate about { $axis } by the angle whose cosine is { $cos } and sine { $sin }, then translate { $translation }
 exam-name = exam exercise { $number } (seed { $seed })
-exam-material = the exam's own
+exam-material = chosen for this exam
 exam-no-calculator = No calculator.
 exam-by-hand = Every value works out by hand and exactly: carry it exact into the next step, and round only the value you write down.
 moodle-digits-quiz = Each field asks for the significant digits in brackets; an answer within 0.01 % of the value (or 0.000001 near 0) is right.
@@ -458,13 +458,14 @@ moodle-part-digits = { $digits ->
 }
 moodle-right = Right: { $formula }
 moodle-picture-feedback = The picture on the left is drawn with { $right }; the one on the right with { $wrong }.
-moodle-wrong = Not right. { $formula }: it takes { $inputs }; check those values first.
+moodle-wrong = Not right. { $formula }: it depends on { $inputs }; check those values first.
+moodle-front-side = Lighting is two-sided: compute the front side, the one the vertex normal faces (the back side takes -n).
 moodle-takes-givens = the givens
 moodle-general-feedback = Each field's feedback gives its step's formula; the worked calculation of every step is in your teacher's key to this variant.
 moodle-picture-right = Drawn right
 moodle-picture-wrong = Drawn with one mistake
 moodle-picture-question = Which one mistake makes the right-hand picture?
-moodle-choice-not = Not this one. This mistake would show so: { $why }
+moodle-choice-not = Not this one. With this mistake the picture would look like this: { $why }
 
 ## cli-out
 

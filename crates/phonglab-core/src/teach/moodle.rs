@@ -116,7 +116,9 @@ pub fn givens_html(ex: &Exercise) -> String {
             }
         }
         if l.is_spot() {
-            item(&mut o, Q::SpotDirection.name(), &vector(&l.spot_direction.extend(0.0).to_array()));
+            let note = crate::t!("sheet-light-world", what = crate::t!("sheet-direction"));
+            let direction = vector(&l.spot_direction.extend(0.0).to_array());
+            item(&mut o, Q::SpotDirection.name(), &format!("{direction} ({note})"));
             let cutoff = crate::t!("sheet-degrees", value = crate::locale::num(l.spot_cutoff, 8));
             item(&mut o, Q::SpotCutoff.name(), &cutoff);
             item(&mut o, Q::SpotExponent.name(), &crate::locale::num(l.spot_exponent, 8));
@@ -157,6 +159,9 @@ fn statement_html(ex: &Exercise, rounding: Rounding) -> String {
     }
     let compute = crate::t!("sheet-compute", rules = rules_in_words(s.rules.set));
     let _ = writeln!(o, "<p>{} {}</p>", esc(&compute), esc(&crate::t!("sheet-colours")));
+    if s.light_model.two_sided {
+        let _ = writeln!(o, "<p>{}</p>", esc(&crate::t!("moodle-front-side")));
+    }
     // Each value carried unrounded into the next step: a value carried with only the asked
     // digits can land outside the next field's tolerance.
     let digits = match rounding {
@@ -201,25 +206,47 @@ fn formula_without_values(kind: StepKind, formula: &str) -> String {
     }
 }
 
+/// The values step `k` takes that the question shows: a given or an asked step by its
+/// name; a step the question does not ask (`Ilight`) by what it takes in turn, `depth`
+/// steps down at most.
+fn asked_inputs(ex: &Exercise, key: &Explanation, k: usize, depth: usize) -> Vec<String> {
+    let blank: Vec<Option<Vec<f64>>> = vec![None; key.steps.len()];
+    let inputs = quiz::expected(&ex.doc.scene, key, &blank, k).map(|(_, i)| i).unwrap_or_default();
+    let mut names = Vec::new();
+    for (name, _, _) in inputs {
+        let step = key.steps.iter().position(|s| s.name == name);
+        match step {
+            Some(j) if depth > 0 && j != k && !quiz::asked(&ex.doc.scene, key, j) => {
+                names.extend(asked_inputs(ex, key, j, depth - 1));
+            }
+            _ => names.push(name),
+        }
+    }
+    let mut seen = std::collections::HashSet::new();
+    names.retain(|n| seen.insert(n.clone()));
+    names
+}
+
 /// The feedback of step `k`'s parts: (right, wrong).
 fn feedback(ex: &Exercise, key: &Explanation, k: usize) -> (String, String) {
     let st = &key.steps[k];
     let formula = dot(&formula_without_values(st.kind, &st.formula));
     let right = crate::t!("moodle-right", formula = formula.clone());
-    let blank: Vec<Option<Vec<f64>>> = vec![None; key.steps.len()];
-    let inputs = quiz::expected(&ex.doc.scene, key, &blank, k).map(|(_, i)| i).unwrap_or_default();
-    let names: Vec<String> = inputs.into_iter().map(|(name, _, _)| name).collect();
+    let names = asked_inputs(ex, key, k, 4);
     let takes = if names.is_empty() { crate::t!("moodle-takes-givens") } else { names.join(", ") };
     let wrong = crate::t!("moodle-wrong", formula = formula, inputs = takes);
     (right, wrong)
 }
 
 /// The parts of an exercise: one per component of every step the sheet asks, numbered as
-/// the key numbers its steps.
+/// consecutive numbers.
 pub fn parts(ex: &Exercise, rounding: Rounding) -> Vec<Part> {
     let key = &ex.key;
     let mut out = Vec::new();
-    for k in (0..key.steps.len()).filter(|&k| quiz::asked(&ex.doc.scene, key, k)) {
+    let asked = (0..key.steps.len()).filter(|&k| quiz::asked(&ex.doc.scene, key, k));
+    // Rows numbered 1, 2, 3 … as the question asks them (the key's numbers skip the steps
+    // it does not ask).
+    for (row, k) in asked.enumerate() {
         let st = &key.steps[k];
         let Some(value) = &st.value else { continue };
         let (right, wrong) = feedback(ex, key, k);
@@ -228,7 +255,7 @@ pub fn parts(ex: &Exercise, rounding: Rounding) -> Vec<Part> {
         let digits = asked.iter().map(|(d, _)| *d).max().unwrap_or(1);
         let hint = crate::t!("moodle-part-digits", digits = digits as i64);
         let row_html =
-            format!("{}. {}: <code>{}</code> <small>({})</small>", k + 1, esc(&st.title), esc(&st.name), esc(&hint));
+            format!("{}. {}: <code>{}</code> <small>({})</small>", row + 1, esc(&st.title), esc(&st.name), esc(&hint));
         for (i, (&x, (_, tolerance))) in value.iter().zip(asked).enumerate() {
             let label_html = if n > 1 { esc(component_names(st.kind)[i]) } else { String::new() };
             out.push(Part {
