@@ -555,7 +555,7 @@ fn a_question_names_only_what_it_shows() {
                 }
             }
             assert_eq!(statement_html.contains("compute the front side"), level == 4, "level {level}");
-            if ex.doc.scene.lights.iter().any(|l| l.is_spot()) {
+            if ex.doc.scene.lights.iter().any(phonglab_core::Light::is_spot) {
                 let spot = statement_html.lines().find(|l| l.contains("<code>lightSpotDir</code>")).unwrap();
                 assert!(spot.contains("transform it by the modelview"), "{spot}");
             }
