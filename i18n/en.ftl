@@ -62,6 +62,29 @@ wrong-sheet-title = What is wrong with this picture? ({ $number })
 wrong-drawn-right = Drawn right
 wrong-drawn-wrong = Drawn with one mistake
 wrong-question = Which one mistake makes the right-hand picture? Tick it, and say what in the picture shows it.
+
+## moodle-exam
+
+exam-key-heading = Each value exact and rounded
+moodle-category-exercise = exercise { $number }
+moodle-question-name = { $exercise }, variant { $variant }: key exercise-{ $sheet }-key.md of phonglab exercise --seed { $seed } --count { $count }{ $exam } and this file's --level or --effects
+moodle-category-default = phonglab
+moodle-written = { $file } in { $out }: { $questions ->
+    [one] one question
+   *[other] { $questions } questions
+} in { $categories ->
+    [one] one category
+   *[other] { $categories } categories
+}. In Moodle: Question bank → Import → { $format }.
+moodle-format-xml = Moodle XML format
+moodle-format-gift = GIFT format
+exam-key-exact = exact
+exam-key-rounded = rounded to four significant digits
+err-exam-level-5 = --exam makes exercises of levels 1 to 4; level 5 has pictures, not numbers.
+err-moodle-only = --variants and --category are for a file for Moodle (--format moodle-xml or gift); sheets take --count.
+err-level-5-variants = --variants is for levels 1 to 4: level 5 has one picture per mistake, seven in all, none drawn twice; use --count (1 to 7).
+level-5-count = Level 5 has { $all } mistakes, one question each: { $all } questions, not { $count }.
+
 wrong-written = { $count } pictures with one mistake each, with their keys, in { $out }
 wrong-quiz-hover = A sphere drawn right and drawn with one mistake: pick the mistake
 wrong-check = Check
@@ -619,8 +642,8 @@ pdf-blank-page = This page is left blank on purpose.
 
 exercises-written =
     { $count ->
-    [one] 1 exercise in { $out } ({ $redraws } draws set aside by the screen)
-    *[other] { $count } exercises in { $out } ({ $redraws } draws set aside by the screen)
+    [one] 1 exercise in { $out } ({ $redraws } draws rejected: they lacked an asked effect or hit an edge case)
+    *[other] { $count } exercises in { $out } ({ $redraws } draws rejected: they lacked an asked effect or hit an edge case)
     }
 
 ## cli-out
@@ -840,11 +863,18 @@ cli-value-viridis = viridis (dark blue, green, yellow)
 cli-value-cividis = cividis (blue to yellow), made for red-green colour blindness
 cli-arg-exercise-seed = The random seed: the same seed gives the same sheets
 cli-arg-exercise-count = How many exercises
-cli-arg-exercise-level = Difficulty: 1 directional only, 2 positional with attenuation, 3 spotlights, 4 two-sided with several lights
+cli-arg-exercise-level = Difficulty: 1 directional only, 2 positional with attenuation, 3 spotlights, 4 two-sided with several lights; 5 "what is wrong with this picture?" (one picture per mistake, seven at most)
 cli-arg-exercise-effects = Exactly these effects instead of a level (comma-separated): positional, attenuation, spot, local-viewer, two-sided, several-lights
 cli-arg-exercise-rules = The rules the answers follow: worksheet or opengl
 cli-arg-exercise-worksheet = Also write exercise 0: the worksheet itself, its five modelviews on one sheet
 cli-arg-exercise-out = The folder to write to (created if missing)
+cli-arg-exercise-format = What to write: the sheets, keys and PDFs; or a file for Moodle's question bank
+cli-arg-exercise-variants = With a Moodle format: this many seeded variants of each exercise, one category per exercise, for a quiz's random question
+cli-arg-exercise-category = With a Moodle format: the name of the top category (phonglab by default)
+cli-arg-exercise-exam = Exam exercises, worked without a calculator: Pythagorean unit vectors, whole distances, shininess 1, 2 or 4, four significant digits by hand
+cli-value-sheets = sheets, keys, scene files and the two PDFs
+cli-value-moodle-xml = questions.xml in Moodle XML: one Cloze question per exercise, pictures embedded
+cli-value-gift = questions.gift.txt in GIFT: one numerical question per value
 cli-arg-shader-scene = A scene file (default: the worksheet's, mview5)
 cli-arg-shader-target = glsl (3.30 core: a vertex and a fragment shader) or wgsl (one module)
 cli-arg-shader-shading = gouraud (lit per vertex) or phong (lit per fragment)

@@ -57,16 +57,39 @@ director-naive-normal = Pontilhada, em azul-claro: M n, a normal transformada co
 director-rules-naive = As regras desta cena (as da lista) iluminam o vértice com M n; as do OpenGL usam (M^-1)^T n.
 director-ring = Luz { $n }: 1/at, o fator de atenuação, cai para { $percent } % à distância { $distance } (um anel).
 wrong-title = O que está errado nesta imagem?
-wrong-intro = Cada folha mostra uma esfera desenhada certa e desenhada com um erro. Escolha o erro; a chave o explica com os números da sonda de pixel.
+wrong-intro = Cada folha mostra uma esfera desenhada certa e desenhada com um erro. Escolha o erro; o gabarito o explica com os números da sonda de pixel.
 wrong-sheet-title = O que está errado nesta imagem? ({ $number })
 wrong-drawn-right = Desenhada certa
 wrong-drawn-wrong = Desenhada com um erro
 wrong-question = Que erro produz a imagem da direita? Marque-o e diga o que na imagem o mostra.
-wrong-written = { $count } imagens com um erro cada, com as chaves, em { $out }
+
+## moodle-exam
+
+exam-key-heading = Cada valor exato e arredondado
+moodle-category-exercise = exercício { $number }
+moodle-question-name = { $exercise }, variante { $variant }: gabarito exercise-{ $sheet }-key.md de phonglab exercise --seed { $seed } --count { $count }{ $exam } e o --level ou --effects deste arquivo
+moodle-category-default = phonglab
+moodle-written = { $file } em { $out }: { $questions ->
+    [one] uma questão
+   *[other] { $questions } questões
+} em { $categories ->
+    [one] uma categoria
+   *[other] { $categories } categorias
+}. No Moodle: Banco de questões → Importar → { $format }.
+moodle-format-xml = Formato Moodle XML
+moodle-format-gift = Formato GIFT
+exam-key-exact = exato
+exam-key-rounded = arredondado para quatro algarismos significativos
+err-exam-level-5 = --exam gera exercícios dos níveis 1 a 4; o nível 5 tem imagens, não números.
+err-moodle-only = --variants e --category servem para um arquivo para o Moodle (--format moodle-xml ou gift); as listas usam --count.
+err-level-5-variants = --variants é para os níveis 1 a 4: o nível 5 tem uma imagem por erro, sete ao todo, nenhuma desenhada duas vezes; use --count (1 a 7).
+level-5-count = O nível 5 tem { $all } erros, uma questão cada: { $all } questões, não { $count }.
+
+wrong-written = { $count } imagens com um erro cada, com os gabaritos, em { $out }
 wrong-quiz-hover = Uma esfera desenhada certa e desenhada com um erro: escolha o erro
 wrong-check = Verificar
 wrong-right-answer = Certo.
-wrong-wrong-answer = Não é esse. A chave:
+wrong-wrong-answer = Não é esse. O gabarito:
 wrong-back = Voltar ao cálculo
 share-summary = um link de { $length } caracteres: a cena vai no próprio link
 share-window = Compartilhar esta cena
@@ -320,11 +343,11 @@ help-demo-pipeline = Da demo: sem projeção (a imagem é o espaço de recorte),
 ## quiz
 
 quiz-input-yours = o seu { $name } = { $value }
-quiz-input-key = o { $name } da chave (ainda sem resposta)
+quiz-input-key = o { $name } do gabarito (ainda sem resposta)
 quiz-the-givens = os dados
 quiz-right = ✔ certo
 quiz-right-given = ✔ certo, dado o seu { $yours }
-quiz-close-key = ≈ perto: a { $percent } % da chave; dê { $digits } algarismos significativos
+quiz-close-key = ≈ perto: a { $percent } % do gabarito; dê { $digits } algarismos significativos
 quiz-close-yours = ≈ perto: a { $percent } % do que as suas respostas anteriores dão; dê { $digits } algarismos significativos
 quiz-wrong = ✖ errado: { $formula }, com { $inputs }
 quiz-level = Nível
@@ -619,8 +642,8 @@ pdf-blank-page = Esta página foi deixada em branco intencionalmente.
 
 exercises-written =
     { $count ->
-    [one] 1 exercício em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
-    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
+    [one] 1 exercício em { $out } ({ $redraws } sorteios rejeitados: faltava um efeito pedido ou caíam em um caso-limite)
+    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios rejeitados: faltava um efeito pedido ou caíam em um caso-limite)
     }
 
 ## cli-out
@@ -840,11 +863,18 @@ cli-value-viridis = viridis (azul-escuro, verde, amarelo)
 cli-value-cividis = cividis (azul a amarelo), feito para o daltonismo vermelho-verde
 cli-arg-exercise-seed = A semente aleatória: a mesma semente dá as mesmas listas
 cli-arg-exercise-count = Quantos exercícios
-cli-arg-exercise-level = Dificuldade: 1 só direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
+cli-arg-exercise-level = Dificuldade: 1 só direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes; 5 "o que está errado nesta imagem?" (uma imagem por erro, sete no máximo)
 cli-arg-exercise-effects = Exatamente estes efeitos em vez de um nível (separados por vírgulas): positional, attenuation, spot, local-viewer, two-sided, several-lights
 cli-arg-exercise-rules = As regras que as respostas seguem: worksheet (as da lista) ou opengl
 cli-arg-exercise-worksheet = Escrever também o exercício 0: a própria lista, as suas cinco modelviews numa folha
 cli-arg-exercise-out = A pasta onde escrever (criada se não existir)
+cli-arg-exercise-format = O que escrever: as listas, os gabaritos e os PDFs; ou um arquivo para o banco de questões do Moodle
+cli-arg-exercise-variants = Com um formato do Moodle: este número de variantes de cada exercício, tiradas da semente, uma categoria por exercício, para a questão aleatória de um questionário
+cli-arg-exercise-category = Com um formato do Moodle: o nome da categoria do topo (phonglab por padrão)
+cli-arg-exercise-exam = Exercícios de prova, resolvidos sem calculadora: vetores unitários pitagóricos, distâncias inteiras, brilho 1, 2 ou 4, quatro algarismos significativos à mão
+cli-value-sheets = listas, gabaritos, arquivos de cena e os dois PDFs
+cli-value-moodle-xml = questions.xml em Moodle XML: uma questão Cloze por exercício, imagens incluídas
+cli-value-gift = questions.gift.txt em GIFT: uma questão numérica por valor
 cli-arg-shader-scene = Um arquivo de cena (por padrão, o da lista, mview5)
 cli-arg-shader-target = glsl (3.30 core: um shader de vértices e um de fragmentos) ou wgsl (um módulo)
 cli-arg-shader-shading = gouraud (iluminado por vértice) ou phong (iluminado por fragmento)

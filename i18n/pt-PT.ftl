@@ -62,6 +62,29 @@ wrong-sheet-title = O que está errado nesta imagem? ({ $number })
 wrong-drawn-right = Desenhada certa
 wrong-drawn-wrong = Desenhada com um erro
 wrong-question = Que erro produz a imagem da direita? Assinale-o e diga o que na imagem o mostra.
+
+## moodle-exam
+
+exam-key-heading = Cada valor exato e arredondado
+moodle-category-exercise = exercício { $number }
+moodle-question-name = { $exercise }, variante { $variant }: chave exercise-{ $sheet }-key.md de phonglab exercise --seed { $seed } --count { $count }{ $exam } e o --level ou --effects deste ficheiro
+moodle-category-default = phonglab
+moodle-written = { $file } em { $out }: { $questions ->
+    [one] uma pergunta
+   *[other] { $questions } perguntas
+} { $categories ->
+    [one] numa categoria
+   *[other] em { $categories } categorias
+}. No Moodle: Banco de questões → Importar → { $format }.
+moodle-format-xml = Formato Moodle XML
+moodle-format-gift = Formato GIFT
+exam-key-exact = exato
+exam-key-rounded = arredondado a quatro algarismos significativos
+err-exam-level-5 = --exam gera exercícios dos níveis 1 a 4; o nível 5 tem imagens, não números.
+err-moodle-only = --variants e --category servem para um ficheiro para o Moodle (--format moodle-xml ou gift); as fichas usam --count.
+err-level-5-variants = --variants é para os níveis 1 a 4: o nível 5 tem uma imagem por erro, sete ao todo, nenhuma desenhada duas vezes; use --count (1 a 7).
+level-5-count = O nível 5 tem { $all } erros, uma pergunta cada: { $all } perguntas, não { $count }.
+
 wrong-written = { $count } imagens com um erro cada, com as chaves, em { $out }
 wrong-quiz-hover = Uma esfera desenhada certa e desenhada com um erro: escolha o erro
 wrong-check = Verificar
@@ -619,8 +642,8 @@ pdf-blank-page = Esta página foi deixada em branco propositadamente.
 
 exercises-written =
     { $count ->
-    [one] 1 exercício em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
-    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios postos de lado pelo filtro)
+    [one] 1 exercício em { $out } ({ $redraws } sorteios rejeitados: faltava-lhes um efeito pedido ou caíam num caso-limite)
+    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios rejeitados: faltava-lhes um efeito pedido ou caíam num caso-limite)
     }
 
 ## cli-out
@@ -840,11 +863,18 @@ cli-value-viridis = viridis (azul-escuro, verde, amarelo)
 cli-value-cividis = cividis (azul a amarelo), feito para o daltonismo vermelho-verde
 cli-arg-exercise-seed = A semente aleatória: a mesma semente dá as mesmas fichas
 cli-arg-exercise-count = Quantos exercícios
-cli-arg-exercise-level = Dificuldade: 1 só direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
+cli-arg-exercise-level = Dificuldade: 1 só direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes; 5 "o que está errado nesta imagem?" (uma imagem por erro, sete no máximo)
 cli-arg-exercise-effects = Exatamente estes efeitos em vez de um nível (separados por vírgulas): positional, attenuation, spot, local-viewer, two-sided, several-lights
 cli-arg-exercise-rules = As regras que as respostas seguem: worksheet (as da ficha) ou opengl
 cli-arg-exercise-worksheet = Escrever também o exercício 0: a própria ficha, as suas cinco modelviews numa folha
 cli-arg-exercise-out = A pasta onde escrever (criada se não existir)
+cli-arg-exercise-format = O que escrever: as fichas, as chaves e os PDF; ou um ficheiro para o banco de questões do Moodle
+cli-arg-exercise-variants = Com um formato do Moodle: este número de variantes de cada exercício, tiradas da semente, uma categoria por exercício, para a pergunta aleatória de um teste
+cli-arg-exercise-category = Com um formato do Moodle: o nome da categoria de topo (phonglab por omissão)
+cli-arg-exercise-exam = Exercícios de exame, resolvidos sem calculadora: vetores unitários pitagóricos, distâncias inteiras, brilho 1, 2 ou 4, quatro algarismos significativos à mão
+cli-value-sheets = fichas, chaves, ficheiros de cena e os dois PDF
+cli-value-moodle-xml = questions.xml em Moodle XML: uma pergunta Cloze por exercício, imagens incluídas
+cli-value-gift = questions.gift.txt em GIFT: uma pergunta numérica por valor
 cli-arg-shader-scene = Um ficheiro de cena (por omissão, o da ficha, mview5)
 cli-arg-shader-target = glsl (3.30 core: um shader de vértices e um de fragmentos) ou wgsl (um módulo)
 cli-arg-shader-shading = gouraud (iluminado por vértice) ou phong (iluminado por fragmento)

@@ -9,7 +9,9 @@ use phonglab_core::Rules;
 use phonglab_core::exercise::{Effect, Level, Spec};
 
 use crate::io::exercise_set::{Request, write};
+use crate::io::moodle_set::{Bundle, Format, exercise_bank, misconception_bank};
 use crate::t;
+use phonglab_core::misconception::Misconception;
 
 /// `phonglab exercise`.
 #[derive(Args, Debug)]
@@ -38,12 +40,39 @@ pub struct ExerciseArgs {
     /// The folder to write to (created if missing).
     #[arg(long, default_value = "sheets")]
     pub out: PathBuf,
+    /// What to write: the sheets, keys and PDFs; or a file for Moodle's question bank,
+    /// `questions.xml` (Moodle XML: one Cloze question per exercise) or
+    /// `questions.gift.txt` (GIFT: one numerical question per value).
+    #[arg(long, value_enum, default_value_t = OutputFormat::Sheets)]
+    pub format: OutputFormat,
+    /// With a Moodle format: this many seeded variants of each exercise, in one category
+    /// per exercise, for a quiz's "random question" from it.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=100))]
+    pub variants: u32,
+    /// With a Moodle format: the name of the top category (default "phonglab").
+    #[arg(long)]
+    pub category: Option<String>,
+    /// Exam exercises, to be worked without a calculator: rational unit vectors, whole
+    /// distances, shininess 1, 2 or 4, every value four significant digits by hand.
+    #[arg(long, conflicts_with = "worksheet")]
+    pub exam: bool,
+}
+
+/// What `phonglab exercise` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum OutputFormat {
+    /// Sheets, keys, scene files and the two PDFs.
+    Sheets,
+    /// Moodle XML (`questions.xml`).
+    MoodleXml,
+    /// GIFT (`questions.gift.txt`).
+    Gift,
 }
 
 /// The set the arguments ask for.
 fn request_of(a: &ExerciseArgs) -> Result<Request> {
     let spec = spec_of(a)?;
-    Ok(Request { seed: a.seed, count: a.count as usize, spec, worksheet: a.worksheet })
+    Ok(Request { seed: a.seed, count: a.count as usize, spec, worksheet: a.worksheet, exam: a.exam })
 }
 
 fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
@@ -75,9 +104,67 @@ fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
     Ok(Spec::level(level, rules))
 }
 
+/// Writes the file for Moodle that `a` asks for, and says where and how to import it.
+fn run_moodle(a: &ExerciseArgs, format: Format) -> Result<()> {
+    let category = a.category.clone().unwrap_or_else(|| t!("moodle-category-default"));
+    let bank = if a.level == Some(5) {
+        if a.exam {
+            bail!(t!("err-exam-level-5"));
+        }
+        // Seven pictures, one per mistake: no variants to draw from a category.
+        if a.variants > 1 {
+            bail!(t!("err-level-5-variants"));
+        }
+        misconception_bank(a.seed, a.count as usize, &category)?
+    } else {
+        let bundle = Bundle { request: request_of(a)?, variants: a.variants as usize, category, exam: a.exam };
+        exercise_bank(&bundle)?
+    };
+    let (file, notices) = crate::io::moodle_set::write(&a.out, &bank, format)?;
+    for n in &notices {
+        super::say(n);
+    }
+    // GIFT writes each part of a statement as a question of its own.
+    let questions: usize = bank
+        .categories
+        .iter()
+        .flat_map(|c| &c.questions)
+        .map(|q| match (&q.body, format) {
+            (phonglab_core::question::Body::Numbers { parts, .. }, Format::Gift) => parts.len(),
+            _ => 1,
+        })
+        .sum();
+    let format_name = match format {
+        Format::MoodleXml => t!("moodle-format-xml"),
+        Format::Gift => t!("moodle-format-gift"),
+    };
+    if a.level == Some(5) && a.count as usize > Misconception::ALL.len() {
+        let all = Misconception::ALL.len() as i64;
+        super::say(&t!("level-5-count", count = a.count as i64, all = all));
+    }
+    super::say(&t!(
+        "moodle-written",
+        file = file,
+        out = crate::io::reasons::shown(&a.out),
+        questions = questions,
+        categories = bank.categories.len(),
+        format = format_name
+    ));
+    Ok(())
+}
+
 /// Runs `phonglab exercise`.
 pub fn run(a: &ExerciseArgs) -> Result<()> {
+    match a.format {
+        OutputFormat::Sheets if a.variants > 1 || a.category.is_some() => bail!(t!("err-moodle-only")),
+        OutputFormat::Sheets => {}
+        OutputFormat::MoodleXml => return run_moodle(a, Format::MoodleXml),
+        OutputFormat::Gift => return run_moodle(a, Format::Gift),
+    }
     if a.level == Some(5) {
+        if a.exam {
+            bail!(t!("err-exam-level-5"));
+        }
         let (count, notices) = crate::io::misconception_set::write(&a.out, a.seed, a.count as usize)?;
         for n in &notices {
             super::say(n);

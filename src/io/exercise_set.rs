@@ -36,6 +36,10 @@ pub struct Request {
     pub spec: Spec,
     /// Exercise 0: the worksheet's five modelviews on one sheet.
     pub worksheet: bool,
+    /// Exam exercises ([`phonglab_core::exam`]): numbers for a pencil, "no calculator" at
+    /// the top of each sheet, and a key with each value exact and rounded to four
+    /// significant digits.
+    pub exam: bool,
 }
 
 /// The answer key: what `phonglab explain FILE` prints (and `--back` with two-sided
@@ -64,10 +68,13 @@ fn answer_key_body(doc: &Document, file: &str) -> Result<String> {
     Ok(o)
 }
 
-/// Is `name` a file of an exercise set, or of a set of mistakes (`--level 5`), so that a
-/// new set in the same folder replaces it?
+/// The files for Moodle's question bank ([`super::moodle_set`]): Moodle XML and GIFT.
+pub const MOODLE_FILES: [&str; 2] = ["questions.xml", "questions.gift.txt"];
+
+/// Is `name` a file of an exercise set, of a set of mistakes (`--level 5`) or a Moodle
+/// file ([`MOODLE_FILES`]), so that a new set in the same folder replaces it?
 pub fn belongs_to_a_set(name: &str) -> bool {
-    if is_mistake_file(name) {
+    if is_mistake_file(name) || MOODLE_FILES.contains(&name) {
         return true;
     }
     let stem = name.strip_suffix(".md").or_else(|| name.strip_suffix(".toml"));
@@ -250,7 +257,9 @@ fn key_blocks(doc: &Document, file: &str) -> Result<Vec<Block>> {
 /// and the two PDFs, `sheets.pdf` and `keys.pdf` (nothing is written).
 pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
     let spec = &a.spec;
-    let exercises = generate(a.seed, a.count, spec).map_err(|e| anyhow::anyhow!(e))?;
+    let exercises =
+        if a.exam { phonglab_core::exam::generate(a.seed, a.count, spec) } else { generate(a.seed, a.count, spec) };
+    let exercises = exercises.map_err(|e| anyhow::anyhow!(e))?;
     let mut set = FileSet::default();
     // In the reader's words: the effects' and the rules' names, not the command line's.
     let names: Vec<String> = spec.effects.iter().map(|e| e.label()).collect();
@@ -272,13 +281,31 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
         let stem = format!("exercise-{:02}", i + 1);
         let toml = format!("{stem}.toml");
         set.add(toml.clone(), ex.doc.to_toml()?);
-        let sheet = format!("{}\n{}\n", sheet_markdown(ex), t!("sheet-scene-file", file = &toml));
+        let banner = if a.exam {
+            format!("**{}** {}\n\n", t!("exam-no-calculator"), exam_instructions())
+        } else {
+            String::new()
+        };
+        let sheet = format!("{banner}{}\n{}\n", sheet_markdown(ex), t!("sheet-scene-file", file = &toml));
         set.add(format!("{stem}.md"), sheet.clone());
-        set.add(format!("{stem}-key.md"), answer_key(&ex.doc, &toml)?);
+        let mut key = answer_key(&ex.doc, &toml)?;
         sheets.push(Block::Section(ex.doc.name.clone()));
+        if a.exam {
+            // At the top of the page, before the title.
+            sheets.push(Block::Heading(t!("exam-no-calculator")));
+            sheets.push(Block::Text(exam_instructions()));
+            key.push_str(&super::exam_key::markdown(ex));
+        }
+        set.add(format!("{stem}-key.md"), key);
         sheets.extend(sheet_blocks(ex, &toml));
         keys.push(Block::Section(t!("key-title", name = &ex.doc.name)));
-        keys.extend(key_blocks(&ex.doc, &toml)?);
+        let mut key_pages = key_blocks(&ex.doc, &toml)?;
+        if a.exam {
+            // After the title and the key's introduction, before the worked calculation.
+            let at = key_pages.len().min(2);
+            key_pages.splice(at..at, super::exam_key::blocks(ex));
+        }
+        keys.extend(key_pages);
         let name = phonglab_core::escape::markdown::text(&ex.doc.name);
         let _ = writeln!(index, "- [{name}]({stem}.md) ([{}]({stem}-key.md))", t!("answers"));
     }
@@ -298,4 +325,11 @@ pub fn write(dir: &std::path::Path, a: &Request) -> Result<(Vec<Exercise>, Vec<S
     let (exercises, set) = exercise_set(a)?;
     let notices = super::file_set::write_set(dir, &set, belongs_to_a_set)?;
     Ok((exercises, notices))
+}
+
+/// What an exam sheet says under "No calculator": work exactly, round what is written
+/// down to four significant digits (a paragraph, wrapped on the PDF's page).
+fn exam_instructions() -> String {
+    let digits = phonglab_core::moodle::EXAM_DIGITS.to_string();
+    format!("{} {}", t!("exam-by-hand"), t!("moodle-digits-exam", digits = digits))
 }

@@ -17,10 +17,10 @@ use super::sheet_pdf::{Block, Figure, Pages, pdf};
 use crate::t;
 
 /// The pictures' side in pixels.
-const PX: usize = 192;
+pub(crate) const PX: usize = 192;
 
 /// The mistakes in the seed's order, `count` of them (at most seven).
-fn chosen(seed: u64, count: usize) -> Vec<Misconception> {
+pub(crate) fn chosen(seed: u64, count: usize) -> Vec<Misconception> {
     let mut all = Misconception::ALL.to_vec();
     let mut s = seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1;
     for i in (1..all.len()).rev() {

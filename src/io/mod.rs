@@ -7,6 +7,7 @@
 
 pub mod atomic_write;
 pub mod budget;
+pub mod exam_key;
 pub mod exercise_set;
 pub mod experiments;
 pub mod file_set;
@@ -14,6 +15,7 @@ pub mod image;
 pub mod input_file;
 pub mod listing;
 pub mod misconception_set;
+pub mod moodle_set;
 pub mod qr;
 pub mod reasons;
 pub mod same_file;

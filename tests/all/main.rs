@@ -23,6 +23,7 @@ mod gl_fields;
 mod i18n;
 mod layers;
 mod misconceptions;
+mod moodle;
 mod notebook;
 mod nothing_lost;
 mod openframeworks;

@@ -441,6 +441,32 @@ exercise-effect-local-viewer = the local viewer
 exercise-effect-two-sided = two-sided lighting
 exercise-effect-several-lights = several lights
 
+## moodle-exam
+
+exam-modelview = rotate about { $axis } by the angle whose cosine is { $cos } and sine { $sin }, then translate { $translation }
+exam-name = exam exercise { $number } (seed { $seed })
+exam-material = chosen for this exam
+exam-no-calculator = No calculator.
+exam-by-hand = Every value works out by hand and exactly: carry it exact into the next step, and round only the value you write down.
+moodle-digits-quiz = Each field asks for the significant digits in brackets; an answer within 0.01 % of the value (or 0.000001 near 0) is right.
+moodle-digits-exam = Give each value rounded to { $digits } significant digits.
+moodle-carry = Carry each value into the next step as you computed it, not rounded: round only what you type in a field.
+moodle-decimal-mark = Numbers may be typed with a decimal comma or a decimal point: Moodle accepts both.
+moodle-part-digits = { $digits ->
+    [one] one significant digit
+   *[other] { $digits } significant digits
+}
+moodle-right = Right: { $formula }
+moodle-picture-feedback = The picture on the left is drawn with { $right }; the one on the right with { $wrong }.
+moodle-wrong = Not right. { $formula }: it depends on { $inputs }; check those values first.
+moodle-front-side = Lighting is two-sided: compute the front side, the one the vertex normal faces (the back side takes -n).
+moodle-takes-givens = the givens
+moodle-general-feedback = Each field's feedback gives its step's formula; the worked calculation of every step is in your teacher's key to this variant.
+moodle-picture-right = Drawn right
+moodle-picture-wrong = Drawn with one mistake
+moodle-picture-question = Which one mistake makes the right-hand picture?
+moodle-choice-not = Not this one. With this mistake the picture would look like this: { $why }
+
 ## cli-out
 
 channel-emission = Emission

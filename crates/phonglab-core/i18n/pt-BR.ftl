@@ -405,7 +405,7 @@ shader-note-translation = a modelview é uma translação: sua última coluna
 shader-note-affine = modelview afim: w = 1, sem divisão
 shader-note-normal-by-m = a lista: a própria M
 shader-header = phonglab: { $what }, sombreamento de { $shading }, gerado a partir do plano especializado.
-    Só as etapas que a chave desta cena pede; os comentários dão os passos do cálculo.
+    Só as etapas que o gabarito desta cena pede; os comentários dão os passos do cálculo.
 shader-what-vertex-lighting = a iluminação por vértice
 shader-what-program = O programa
 shader-what-program-fragment = O programa por fragmento
@@ -422,7 +422,7 @@ sheet-rules-worksheet = as regras da lista (sem ambiente da cena, sem emissão, 
 sheet-rules-opengl = as regras da função fixa do OpenGL 2.1
 sheet-rules-demo = as regras do shader da demo de Phong
 sheet-compute = Calcule a cor do vértice passo a passo, segundo { $rules }.
-sheet-colours = As cores são escritas como na lista, [r g b 0], por isso cada produto de duas cores tem 0 como quarta componente, tal como na chave.
+sheet-colours = As cores são escritas como na lista, [r g b 0], por isso cada produto de duas cores tem 0 como quarta componente, tal como no gabarito.
 sheet-vertex = O vértice
 sheet-modelview = A modelview
 sheet-direction = direção (w = 0)
@@ -440,6 +440,32 @@ exercise-effect-spot = um foco
 exercise-effect-local-viewer = o observador local
 exercise-effect-two-sided = iluminação dos dois lados
 exercise-effect-several-lights = várias luzes
+
+## moodle-exam
+
+exam-modelview = girar em torno de { $axis } pelo ângulo de cosseno { $cos } e seno { $sin }, depois transladar { $translation }
+exam-name = exercício de prova { $number } (semente { $seed })
+exam-material = escolhido para esta prova
+exam-no-calculator = Sem calculadora.
+exam-by-hand = Todos os valores se calculam à mão e de forma exata: use cada um exato no passo seguinte e arredonde só o valor que você escreve.
+moodle-digits-quiz = Cada campo pede os algarismos significativos entre parênteses; uma resposta a menos de 0,01 % do valor (ou 0,000001 perto de 0) está certa.
+moodle-digits-exam = Informe cada valor arredondado para { $digits } algarismos significativos.
+moodle-carry = Use cada valor no passo seguinte do jeito que você calculou, sem arredondar: arredonde só o que você digita num campo.
+moodle-decimal-mark = Os números podem ser digitados com vírgula ou com ponto decimal: o Moodle aceita os dois.
+moodle-part-digits = { $digits ->
+    [one] um algarismo significativo
+   *[other] { $digits } algarismos significativos
+}
+moodle-right = Certo: { $formula }
+moodle-picture-feedback = A imagem da esquerda está desenhada com { $right }; a da direita com { $wrong }.
+moodle-wrong = Não está certo. { $formula }: depende de { $inputs }; confira esses valores primeiro.
+moodle-front-side = A iluminação é dos dois lados: calcule o lado da frente, aquele para onde aponta a normal do vértice (o de trás usa -n).
+moodle-takes-givens = os dados
+moodle-general-feedback = O feedback de cada campo dá a fórmula do seu passo; o cálculo completo de cada passo está no gabarito desta variante, que o professor tem.
+moodle-picture-right = Desenhada certa
+moodle-picture-wrong = Desenhada com um erro
+moodle-picture-question = Que erro produz a imagem da direita?
+moodle-choice-not = Não é este. Com este erro, a imagem ficaria assim: { $why }
 
 ## cli-out
 

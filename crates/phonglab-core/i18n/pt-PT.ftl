@@ -421,13 +421,13 @@ exercise-name = exercício { $number } (semente { $seed })
 sheet-rules-worksheet = as regras da ficha (sem ambiente da cena, sem emissão, a própria M para as normais)
 sheet-rules-opengl = as regras da função fixa do OpenGL 2.1
 sheet-rules-demo = as regras do shader da demo de Phong
-sheet-compute = Calcula a cor do vértice passo a passo, segundo { $rules }.
+sheet-compute = Calcule a cor do vértice passo a passo, segundo { $rules }.
 sheet-colours = As cores escrevem-se como na ficha, [r g b 0], por isso cada produto de duas cores tem 0 como quarta componente, tal como na chave.
 sheet-vertex = O vértice
 sheet-modelview = A modelview
 sheet-direction = direção (w = 0)
 sheet-position = posição
-sheet-light-world = { $what }, em coordenadas do mundo: transforma-a pela modelview
+sheet-light-world = { $what }, em coordenadas do mundo: transforme-a pela modelview
 sheet-degrees = { $value } graus
 sheet-material = Material: { $name }
 sheet-light-model = O modelo de iluminação
@@ -440,6 +440,32 @@ exercise-effect-spot = um foco
 exercise-effect-local-viewer = o observador local
 exercise-effect-two-sided = iluminação dos dois lados
 exercise-effect-several-lights = várias luzes
+
+## moodle-exam
+
+exam-modelview = rodar em torno de { $axis } pelo ângulo de cosseno { $cos } e seno { $sin }, depois transladar { $translation }
+exam-name = exercício de exame { $number } (semente { $seed })
+exam-material = escolhido para este exame
+exam-no-calculator = Sem calculadora.
+exam-by-hand = Todos os valores se calculam à mão e de forma exata: use cada um exato no passo seguinte e arredonde só o valor que escreve.
+moodle-digits-quiz = Cada campo pede os algarismos significativos entre parênteses; uma resposta a menos de 0,01 % do valor (ou 0,000001 perto de 0) está certa.
+moodle-digits-exam = Indique cada valor arredondado a { $digits } algarismos significativos.
+moodle-carry = Use cada valor no passo seguinte tal como o calculou, sem arredondar: arredonde só o que escreve num campo.
+moodle-decimal-mark = Os números podem ser escritos com vírgula ou com ponto decimal: o Moodle aceita ambos.
+moodle-part-digits = { $digits ->
+    [one] um algarismo significativo
+   *[other] { $digits } algarismos significativos
+}
+moodle-right = Certo: { $formula }
+moodle-picture-feedback = A imagem da esquerda está desenhada com { $right }; a da direita com { $wrong }.
+moodle-wrong = Não está certo. { $formula }: depende de { $inputs }; verifique primeiro esses valores.
+moodle-front-side = A iluminação é dos dois lados: calcule o lado da frente, aquele para onde aponta a normal do vértice (o de trás usa -n).
+moodle-takes-givens = os dados
+moodle-general-feedback = O feedback de cada campo dá a fórmula do seu passo; o cálculo completo de cada passo está na chave desta variante, que o professor tem.
+moodle-picture-right = Desenhada certa
+moodle-picture-wrong = Desenhada com um erro
+moodle-picture-question = Que erro produz a imagem da direita?
+moodle-choice-not = Não é este. Com este erro, a imagem ficaria assim: { $why }
 
 ## cli-out
 

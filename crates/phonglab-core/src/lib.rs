@@ -48,13 +48,13 @@ pub mod teach;
 
 // Each module also at the crate's root, so paths name the module, not its group.
 pub use equation::{breakdown, explain, lighting, plan, validate};
-pub use formats::{document, escape, files, glref, library};
+pub use formats::{document, escape, files, gift, glref, library, moodle_xml, question};
 pub use model::{camera, error, materials, presets, rules, scene, transform, view, vocabulary};
 pub use numerics::{exact_pow, pow, real, robust, strict, typed_number};
 pub use raster::{channels, probe, probe_report, render, shaded};
 pub use specialise::{batch, effects, lighter};
 pub use study::{bench, cost, difference};
-pub use teach::{director, exercise, misconception, quiz, shader};
+pub use teach::{director, exam, exercise, misconception, moodle, quiz, shader};
 
 pub use breakdown::{LightTerms, Limit, Limits, SideColor, SideTerms, SpotTerms, VertexLighting};
 pub use camera::CameraSpec;

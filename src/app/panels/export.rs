@@ -58,6 +58,7 @@ pub fn exercises_zip(e: &ExportState) -> Result<Vec<u8>, String> {
         count: e.count.clamp(1, 100) as usize,
         spec: Spec::level(level, phonglab_core::Rules::WORKSHEET),
         worksheet: false,
+        exam: false,
     };
     let (_, set) = crate::io::exercise_set::exercise_set(&request).map_err(|e| format!("{e:#}"))?;
     Ok(crate::io::zip::zip_stored(&set.files))

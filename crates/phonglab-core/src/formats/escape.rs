@@ -21,6 +21,11 @@
 //! | JSON (as `serde_json` wrote it) | [`json::text`] | every control as `\u202e`, C0 included (serde's) |
 //! | a CSV field | [`csv::field`] | controls written `\u{202E}`, quoted where it holds `,` or `"` |
 //! | HTML text or attribute | [`html::text`] | no tag, entity or attribute end; controls written `\u{1B}` |
+//! | Moodle XML text | [`moodle_xml::text`] | as HTML's: entities, no control XML 1.0 refuses |
+//! | Moodle XML CDATA | [`moodle_xml::cdata`] | a section that no `]]>` closes early |
+//! | a Cloze part, its feedback | [`moodle_xml::cloze_part`] | `} # ~ / \\` escaped, no brace: the part stays whole |
+//! | Cloze question text (HTML) | [`moodle_xml::cloze_html`] | no brace, so no text reads as a part |
+//! | GIFT text | [`gift::text`] | `~ = # { } :` and `\\` escaped, one line, HTML-safe |
 //!
 //! JSON is written by `serde_json`, which escapes the C0 controls in every string but not
 //! the others (DEL, C1, the separators, the bidirectional controls): [`json::text`]
@@ -61,6 +66,20 @@ fn visible_controls(text: &str, also: impl Fn(char) -> bool) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
         if is_control(c) || also(c) {
+            out.push_str(&visible(c));
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// `text` with every control character but the line feed and the tab written visibly
+/// (`\u{1B}`): phonglab's own HTML, whose lines are its own.
+fn kept_lines(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if is_control(c) && c != '\n' && c != '\t' {
             out.push_str(&visible(c));
         } else {
             out.push(c);
@@ -225,6 +244,94 @@ pub mod html {
     }
 }
 
+/// Moodle XML, the question bank's import format (`question/format/xml/format.php`).
+pub mod moodle_xml {
+    /// Text in an element or a quoted attribute: `&`, `<`, `>`, `"` and `'` as entities,
+    /// control characters written `\u{1B}` (XML 1.0 allows no C0 control but tab, line
+    /// feed and carriage return, not even as an entity), so it opens no tag and ends no
+    /// attribute or line.
+    pub fn text(text: &str) -> String {
+        super::html::text(text)
+    }
+
+    /// The inside of a `<![CDATA[ ... ]]>` section whose value is `html`: every `]]>`
+    /// split across two sections (`]]]]><![CDATA[>`, as Moodle's own export writes it),
+    /// and control characters other than tab and line feed written `\u{1B}`.
+    pub fn cdata(html: &str) -> String {
+        super::kept_lines(html).replace("]]>", "]]]]><![CDATA[>")
+    }
+
+    /// Text inside an embedded answer (Cloze) part's braces: a part's feedback. Moodle's
+    /// import (`qtype_multianswer_extract_question`) ends a feedback at the first `~` or
+    /// `}` not after a backslash and then decodes its HTML entities once
+    /// (`html_entity_decode`), so the text is HTML-escaped twice, with `{`, `}`, `~` and
+    /// `\\` as numeric entities: the part holds no character that ends it, and after
+    /// Moodle's one decoding the feedback is HTML text that shows `text` and opens no tag.
+    pub fn cloze_part(text: &str) -> String {
+        let once = super::html::text(text);
+        let mut out = String::with_capacity(once.len() * 2);
+        for c in once.chars() {
+            match c {
+                '&' => out.push_str("&amp;"),
+                '{' => out.push_str("&amp;#123;"),
+                '}' => out.push_str("&amp;#125;"),
+                '~' => out.push_str("&amp;#126;"),
+                '\\' => out.push_str("&amp;#92;"),
+                c => out.push(c),
+            }
+        }
+        out
+    }
+
+    /// HTML that phonglab wrote (tags kept, text already escaped) put in a Cloze
+    /// question's text outside its parts: `{` and `}` as entities, so no text can be read
+    /// as a part (`{1:NUMERICAL:...}`).
+    pub fn cloze_html(html: &str) -> String {
+        html.replace('{', "&#123;").replace('}', "&#125;")
+    }
+}
+
+/// GIFT, Moodle's plain-text question format (`question/format/gift/format.php`).
+pub mod gift {
+    /// Text in a question's name, text, answer or feedback: GIFT's special characters
+    /// `~ = # { } :` and the backslash after a backslash (as Moodle's GIFT export writes
+    /// them), every control character (a line break too, which would end the question at
+    /// a blank line) written `\u{1B}`; then HTML's `<` and `&` as entities, since phonglab
+    /// writes every GIFT text as `[html]`.
+    pub fn text(text: &str) -> String {
+        let html = super::html::text(text);
+        let mut out = String::with_capacity(html.len());
+        for c in html.chars() {
+            match c {
+                '~' | '=' | '#' | '{' | '}' | ':' | '\\' => {
+                    out.push('\\');
+                    out.push(c);
+                }
+                c => out.push(c),
+            }
+        }
+        out
+    }
+
+    /// HTML that phonglab wrote itself (tags kept): GIFT's special characters after a
+    /// backslash, and control characters (a line feed too) written visibly: the writer
+    /// joins its lines first.
+    pub fn html(html: &str) -> String {
+        let kept = super::visible_controls(html, |_| false);
+        let mut out = String::with_capacity(kept.len());
+        for c in kept.chars() {
+            match c {
+                '~' | '=' | '#' | '{' | '}' | ':' | '\\' => {
+                    out.push('\\');
+                    out.push(c);
+                }
+                c => out.push(c),
+            }
+        }
+        out
+    }
+}
+
 /// TOML.
 pub mod toml {
     /// A TOML basic string whose value is `text`, on one line: the quote and the backslash
@@ -339,6 +446,10 @@ mod tests {
             toml::string(HOSTILE),
             pdf::text(HOSTILE),
             terminal::text(HOSTILE),
+            moodle_xml::text(HOSTILE),
+            moodle_xml::cloze_part(HOSTILE),
+            gift::text(HOSTILE),
+            gift::html(HOSTILE),
         ];
         for out in outputs {
             assert!(!out.chars().any(is_control), "{out:?}");
@@ -393,5 +504,24 @@ mod tests {
             let doc: ::toml::Table = ::toml::from_str(&format!("k = {}", toml::string(s))).unwrap();
             assert_eq!(doc["k"].as_str(), Some(s));
         }
+    }
+
+    #[test]
+    fn moodle_xml_ends_no_element_cdata_or_cloze_part() {
+        assert_eq!(moodle_xml::text("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
+        assert_eq!(moodle_xml::cdata("x]]>y\n\t\u{1b}"), "x]]]]><![CDATA[>y\n\t\\u{1B}");
+        // Moodle ends a part's feedback at `~` or `}` and decodes its entities once.
+        let part = moodle_xml::cloze_part("}~{\\<b>&");
+        assert!(!part.contains(['}', '~', '{', '\\', '<']), "{part}");
+        assert_eq!(part, "&amp;#125;&amp;#126;&amp;#123;&amp;#92;&amp;lt;b&amp;gt;&amp;amp;");
+        assert_eq!(moodle_xml::cloze_html("<p>{1:NUMERICAL:=1}</p>"), "<p>&#123;1:NUMERICAL:=1&#125;</p>");
+    }
+
+    #[test]
+    fn gift_escapes_its_own_characters_on_one_line() {
+        assert_eq!(gift::text("a~b=c#d{e}f:g\\h"), "a\\~b\\=c\\#d\\{e\\}f\\:g\\\\h");
+        // The line break written visibly, `\u{A}`, and that escaped in turn: GIFT reads `\u{A}`.
+        assert_eq!(gift::text("<i>\n"), r"&lt;i&gt;\\u\{A\}");
+        assert_eq!(gift::html("<p>x = 1:</p>"), "<p>x \\= 1\\:</p>");
     }
 }

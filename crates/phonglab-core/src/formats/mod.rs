@@ -6,5 +6,8 @@ pub mod document;
 pub mod escape;
 pub mod explain_html;
 pub mod files;
+pub mod gift;
 pub mod glref;
 pub mod library;
+pub mod moodle_xml;
+pub mod question;

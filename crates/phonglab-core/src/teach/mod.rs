@@ -2,8 +2,10 @@
 
 pub mod diagnose;
 pub mod director;
+pub mod exam;
 pub mod exercise;
 pub mod misconception;
+pub mod moodle;
 pub mod picture_match;
 pub mod quiz;
 pub mod shader;

@@ -15,6 +15,7 @@ mod check;
 mod cost;
 mod diagnose;
 mod documents;
+mod exam;
 mod exercises;
 mod hard_cases;
 mod layers;

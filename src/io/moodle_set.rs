@@ -1,0 +1,135 @@
+//! Exercises as a file for Moodle's question bank (`phonglab exercise --format
+//! moodle-xml` or `gift`): `questions.xml` (Moodle XML) or `questions.gift.txt` (GIFT),
+//! written by the core's writers ([`phonglab_core::moodle_xml`], [`phonglab_core::gift`])
+//! from its questions ([`phonglab_core::moodle`]). Each exercise of the request is one
+//! category holding its `variants` seeded variants, so that a quiz's "random question"
+//! from the category gives each student their own; level 5 is one category of
+//! multiple-choice questions with both pictures embedded. The file is written as a set of
+//! one, as the sheets are ([`super::file_set`]); the same seed gives the same bytes.
+
+use anyhow::Result;
+use phonglab_core::exercise::{Exercise, generate};
+use phonglab_core::misconception::{self, Misconception};
+use phonglab_core::moodle::{Rounding, exercise_question, misconception_question};
+use phonglab_core::question::{Bank, Category};
+
+use super::exercise_set::{MOODLE_FILES, Request};
+use super::file_set::FileSet;
+use crate::t;
+
+/// Which of Moodle's import formats.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// "Moodle XML format": Cloze questions, pictures as files.
+    MoodleXml,
+    /// "GIFT format": one numerical question per value, pictures as `data:` URIs.
+    Gift,
+}
+
+impl Format {
+    /// The file it writes.
+    pub fn file_name(self) -> &'static str {
+        match self {
+            Format::MoodleXml => MOODLE_FILES[0],
+            Format::Gift => MOODLE_FILES[1],
+        }
+    }
+
+    /// The bank in this format.
+    pub fn write(self, bank: &Bank) -> String {
+        match self {
+            Format::MoodleXml => phonglab_core::moodle_xml::write(bank),
+            Format::Gift => phonglab_core::gift::write(bank),
+        }
+    }
+}
+
+/// What to put in the bank beside the exercises' request.
+#[derive(Clone, Debug)]
+pub struct Bundle {
+    /// The exercises (their seed, count, effects, rules).
+    pub request: Request,
+    /// How many variants of each exercise.
+    pub variants: usize,
+    /// The category's name, the top of every category written.
+    pub category: String,
+    /// Exam exercises, to be worked without a calculator.
+    pub exam: bool,
+}
+
+/// The exercises of `b`: `count × variants` of them, exercise k's variants together.
+fn exercises(b: &Bundle) -> Result<Vec<Exercise>> {
+    let (r, n) = (&b.request, b.request.count * b.variants);
+    let all = if b.exam { phonglab_core::exam::generate(r.seed, n, &r.spec) } else { generate(r.seed, n, &r.spec) };
+    all.map_err(anyhow::Error::msg)
+}
+
+/// The bank of exercises (levels 1 to 4, or chosen effects).
+pub fn exercise_bank(b: &Bundle) -> Result<Bank> {
+    let all = exercises(b)?;
+    let rounding = if b.exam { Rounding::Exam } else { Rounding::Quiz };
+    let mut bank = Bank::default();
+    let total = all.len();
+    for (k, group) in all.chunks(b.variants.max(1)).enumerate() {
+        let exercise = t!("moodle-category-exercise", number = (k + 1) as i64);
+        let questions = group
+            .iter()
+            .enumerate()
+            .map(|(v, ex)| {
+                // The statement's heading, which students see: no seed, which would let
+                // them write the key.
+                let mut ex = ex.clone();
+                ex.doc.name.clone_from(&exercise);
+                let mut q = exercise_question(&ex, rounding);
+                q.name = teacher_name(b, &exercise, v + 1, k * b.variants.max(1) + v + 1, total);
+                q
+            })
+            .collect();
+        bank.categories.push(Category { path: vec![b.category.clone(), exercise], questions });
+    }
+    Ok(bank)
+}
+
+/// A question's name in the bank, which Moodle shows to teachers only: the exercise, the
+/// variant, and where its worked key is: sheet `sheet` of the same request written as
+/// sheets, `--count total` (exercise k's variants are sheets (k − 1) × variants + 1 on).
+fn teacher_name(b: &Bundle, exercise: &str, variant: usize, sheet: usize, total: usize) -> String {
+    t!(
+        "moodle-question-name",
+        exercise = exercise.to_string(),
+        variant = variant as i64,
+        sheet = format!("{sheet:02}"),
+        seed = b.request.seed.to_string(),
+        count = total as i64,
+        exam = if b.exam { " --exam" } else { "" }
+    )
+}
+
+/// The bank of "What is wrong with this picture?": the mistakes in the seed's order, one
+/// category, each question with its two pictures.
+pub fn misconception_bank(seed: u64, count: usize, category: &str) -> Result<Bank> {
+    let mut questions = Vec::new();
+    for (k, kind) in super::misconception_set::chosen(seed, count).into_iter().enumerate() {
+        questions.push(picture_question(kind, k + 1)?);
+    }
+    Ok(Bank { categories: vec![Category { path: vec![category.to_string()], questions }] })
+}
+
+fn picture_question(kind: Misconception, number: usize) -> Result<phonglab_core::question::Question> {
+    let px = super::misconception_set::PX;
+    let drawn = misconception::case(kind).draw(px).map_err(anyhow::Error::msg)?;
+    let right = super::image::encode_png(px, px, &drawn.correct)?;
+    let wrong = super::image::encode_png(px, px, &drawn.bugged)?;
+    let name = t!("wrong-sheet-title", number = number as i64);
+    Ok(misconception_question(kind, &name, right, wrong))
+}
+
+/// Writes `bank` as `format` into the folder `dir`, whole or not at all: the file's name,
+/// and what was left as it is in the folder (see [`super::file_set::recover`]).
+pub fn write(dir: &std::path::Path, bank: &Bank, format: Format) -> Result<(String, Vec<String>)> {
+    super::atomic_write::check_folder_destination(dir)?;
+    let mut set = FileSet::default();
+    set.add(format.file_name(), format.write(bank));
+    let notices = super::file_set::write_set(dir, &set, super::exercise_set::belongs_to_a_set)?;
+    Ok((format.file_name().to_string(), notices))
+}
