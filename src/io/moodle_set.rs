@@ -79,7 +79,7 @@ pub fn exercise_bank(b: &Bundle) -> Result<Bank> {
                 // The statement's heading, which students see: no seed, which would let
                 // them write the key.
                 let mut ex = ex.clone();
-                ex.doc.name = exercise.clone();
+                ex.doc.name.clone_from(&exercise);
                 let mut q = exercise_question(&ex, rounding);
                 q.name = teacher_name(b, &exercise, v + 1, k * b.variants.max(1) + v + 1, total);
                 q
