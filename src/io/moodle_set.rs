@@ -126,8 +126,9 @@ fn picture_question(kind: Misconception, number: usize) -> Result<phonglab_core:
 
 /// Writes `bank` as `format` into the folder `dir`, whole or not at all: the file's name,
 /// and what was left as it is in the folder (see [`super::file_set::recover`]). The file
-/// replaces only its own earlier self as phonglab wrote it ([`refuse_foreign`]); every
-/// other file in the folder (the sheets and keys, the other format's file) is left alone.
+/// replaces only its own earlier self as phonglab wrote it (named, unchanged, in the
+/// folder's list of what phonglab wrote); every other file in the folder (the sheets and
+/// keys, the other format's file) is left alone.
 pub fn write(dir: &std::path::Path, bank: &Bank, format: Format) -> Result<(String, Vec<String>)> {
     super::atomic_write::check_folder_destination(dir)?;
     refuse_foreign(dir, format.file_name())?;
