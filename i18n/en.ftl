@@ -1025,3 +1025,10 @@ student-picture-theirs = B: the student's picture
 check-report-printed-twice = Steps printed more than once with different values (each printing was checked)
 # fixr3
 student-cause-beside = likely cause: { $words } [{ $id }] (the evidence is above the steps)
+# fix60b
+moodle-not-ours = { $path } was not written by phonglab, or has changed since: phonglab does not replace it. Move it away, or choose another --out.
+err-category-blank = --category needs a name: it is empty or only spaces.
+err-category-slash = --category cannot start or end with "/": Moodle would read the category's path wrongly.
+err-category-long = --category is { $length } characters long; Moodle keeps a category's name in at most { $max }.
+err-worksheet-moodle = --worksheet writes exercise 0 into the sheets only; a file for Moodle takes --level or --effects.
+budget-what-moodle = a file for Moodle of { $count } exercises (about { $size } on disk)

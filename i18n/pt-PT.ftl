@@ -1025,3 +1025,10 @@ student-picture-theirs = B: a imagem do aluno
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
 # fixr3
 student-cause-beside = causa provável: { $words } [{ $id }] (a prova está acima dos passos)
+# fix60b
+moodle-not-ours = { $path } não foi escrito pelo phonglab, ou foi alterado desde então: o phonglab não o substitui. Mova-o para outro lado, ou escolha outro --out.
+err-category-blank = --category precisa de um nome: está vazio ou só tem espaços.
+err-category-slash = --category não pode começar nem acabar em "/": o Moodle leria mal o caminho da categoria.
+err-category-long = --category tem { $length } caracteres; o Moodle guarda o nome de uma categoria em { $max }, no máximo.
+err-worksheet-moodle = --worksheet escreve o exercício 0 só nas fichas; um ficheiro para o Moodle usa --level ou --effects.
+budget-what-moodle = um ficheiro para o Moodle com { $count } exercícios (cerca de { $size } em disco)

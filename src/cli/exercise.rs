@@ -106,7 +106,11 @@ fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
 
 /// Writes the file for Moodle that `a` asks for, and says where and how to import it.
 fn run_moodle(a: &ExerciseArgs, format: Format) -> Result<()> {
+    if a.worksheet {
+        bail!(t!("err-worksheet-moodle"));
+    }
     let category = a.category.clone().unwrap_or_else(|| t!("moodle-category-default"));
+    crate::io::moodle_checks::check_category(&category)?;
     let bank = if a.level == Some(5) {
         if a.exam {
             bail!(t!("err-exam-level-5"));
@@ -118,6 +122,7 @@ fn run_moodle(a: &ExerciseArgs, format: Format) -> Result<()> {
         misconception_bank(a.seed, a.count as usize, &category)?
     } else {
         let bundle = Bundle { request: request_of(a)?, variants: a.variants as usize, category, exam: a.exam };
+        crate::io::moodle_checks::check_budget(&bundle, format)?;
         exercise_bank(&bundle)?
     };
     let (file, notices) = crate::io::moodle_set::write(&a.out, &bank, format)?;

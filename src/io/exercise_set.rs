@@ -71,10 +71,11 @@ fn answer_key_body(doc: &Document, file: &str) -> Result<String> {
 /// The files for Moodle's question bank ([`super::moodle_set`]): Moodle XML and GIFT.
 pub const MOODLE_FILES: [&str; 2] = ["questions.xml", "questions.gift.txt"];
 
-/// Is `name` a file of an exercise set, of a set of mistakes (`--level 5`) or a Moodle
-/// file ([`MOODLE_FILES`]), so that a new set in the same folder replaces it?
+/// Is `name` a file of an exercise set or of a set of mistakes (`--level 5`), so that a
+/// new set in the same folder replaces it? A Moodle file ([`MOODLE_FILES`]) is not: sheets
+/// leave the questions alone, and a Moodle file replaces only itself.
 pub fn belongs_to_a_set(name: &str) -> bool {
-    if is_mistake_file(name) || MOODLE_FILES.contains(&name) {
+    if is_mistake_file(name) {
         return true;
     }
     let stem = name.strip_suffix(".md").or_else(|| name.strip_suffix(".toml"));

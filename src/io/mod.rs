@@ -15,6 +15,7 @@ pub mod image;
 pub mod input_file;
 pub mod listing;
 pub mod misconception_set;
+pub mod moodle_checks;
 pub mod moodle_set;
 pub mod qr;
 pub mod reasons;

@@ -125,11 +125,32 @@ fn picture_question(kind: Misconception, number: usize) -> Result<phonglab_core:
 }
 
 /// Writes `bank` as `format` into the folder `dir`, whole or not at all: the file's name,
-/// and what was left as it is in the folder (see [`super::file_set::recover`]).
+/// and what was left as it is in the folder (see [`super::file_set::recover`]). The file
+/// replaces only its own earlier self as phonglab wrote it (named, unchanged, in the
+/// folder's list of what phonglab wrote); every other file in the folder (the sheets and
+/// keys, the other format's file) is left alone.
 pub fn write(dir: &std::path::Path, bank: &Bank, format: Format) -> Result<(String, Vec<String>)> {
     super::atomic_write::check_folder_destination(dir)?;
+    refuse_foreign(dir, format.file_name())?;
     let mut set = FileSet::default();
     set.add(format.file_name(), format.write(bank));
-    let notices = super::file_set::write_set(dir, &set, super::exercise_set::belongs_to_a_set)?;
+    let name = format.file_name();
+    let notices = super::file_set::write_set(dir, &set, |n| n == name)?;
     Ok((format.file_name().to_string(), notices))
+}
+
+/// Refuses to write `name` into `dir` over a regular file of that name that phonglab did
+/// not write there, or that was changed since (a teacher's own questions, an edited
+/// export): the folder's list of what phonglab wrote ([`super::set_journal::WRITTEN`])
+/// must name it, unchanged. A link or anything else at the name is refused by the writer.
+fn refuse_foreign(dir: &std::path::Path, name: &str) -> Result<()> {
+    let path = dir.join(name);
+    if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+        return Ok(());
+    }
+    let written = super::set_journal::written_list(dir);
+    if written.iter().any(|e| e.name == name && super::set_journal::is_entry(&path, e)) {
+        return Ok(());
+    }
+    anyhow::bail!(t!("moodle-not-ours", path = super::reasons::shown(&path)))
 }

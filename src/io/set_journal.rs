@@ -343,10 +343,18 @@ fn finish(dir: &Path, staging: &Path, j: &Journal) -> Result<(), String> {
     Ok(())
 }
 
-/// Records, whole, the files a set wrote into `dir` ([`WRITTEN`]); a failure only leaves
-/// them for the next set to keep.
+/// Records, whole, the files a set wrote into `dir` ([`WRITTEN`]), with those the list
+/// named before that are still there exactly as phonglab wrote them (another kind of set's
+/// files: the sheets beside a Moodle file, which the Moodle file leaves in place, stay
+/// phonglab's to replace); a failure only leaves them for the next set to keep.
 pub fn write_written_list(dir: &Path, new: &[Entry]) {
-    if let Ok(list) = serde_json::to_vec(new) {
+    let mut all = new.to_vec();
+    for earlier in written_list(dir) {
+        if !all.iter().any(|e| e.name == earlier.name) && is_entry(&dir.join(&earlier.name), &earlier) {
+            all.push(earlier);
+        }
+    }
+    if let Ok(list) = serde_json::to_vec(&all) {
         let _ = super::atomic_write::write(&dir.join(WRITTEN), &list);
     }
 }

@@ -24,6 +24,7 @@ mod i18n;
 mod layers;
 mod misconceptions;
 mod moodle;
+mod moodle_checks;
 mod notebook;
 mod nothing_lost;
 mod openframeworks;
