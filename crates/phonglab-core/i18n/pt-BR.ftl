@@ -458,7 +458,7 @@ moodle-part-digits = { $digits ->
 }
 moodle-right = Certo: { $formula }
 moodle-picture-feedback = A imagem da esquerda está desenhada com { $right }; a da direita com { $wrong }.
-moodle-wrong = Não está certo. { $formula }: depende de { $inputs }; confira esses valores primeiro.
+moodle-wrong = Não está certo. { $formula }; o que entra no cálculo: { $inputs }; confira esses valores primeiro.
 moodle-front-side = A iluminação é dos dois lados: calcule o lado da frente, aquele para onde aponta a normal do vértice (o de trás usa -n).
 moodle-takes-givens = os dados
 moodle-general-feedback = O feedback de cada campo dá a fórmula do seu passo; o cálculo completo de cada passo está no gabarito desta variante, que o professor tem.
