@@ -300,17 +300,7 @@ pub mod gift {
     /// writes every GIFT text as `[html]`.
     pub fn text(text: &str) -> String {
         let html = super::html::text(text);
-        let mut out = String::with_capacity(html.len());
-        for c in html.chars() {
-            match c {
-                '~' | '=' | '#' | '{' | '}' | ':' | '\\' => {
-                    out.push('\\');
-                    out.push(c);
-                }
-                c => out.push(c),
-            }
-        }
-        out
+        specials(&html)
     }
 
     /// HTML that phonglab wrote itself (tags kept): GIFT's special characters after a
@@ -318,15 +308,17 @@ pub mod gift {
     /// joins its lines first.
     pub fn html(html: &str) -> String {
         let kept = super::visible_controls(html, |_| false);
-        let mut out = String::with_capacity(kept.len());
-        for c in kept.chars() {
-            match c {
-                '~' | '=' | '#' | '{' | '}' | ':' | '\\' => {
-                    out.push('\\');
-                    out.push(c);
-                }
-                c => out.push(c),
+        specials(&kept)
+    }
+
+    /// GIFT's special characters (`~ = # { } :` and the backslash) after a backslash.
+    fn specials(text: &str) -> String {
+        let mut out = String::with_capacity(text.len());
+        for c in text.chars() {
+            if matches!(c, '~' | '=' | '#' | '{' | '}' | ':' | '\\') {
+                out.push('\\');
             }
+            out.push(c);
         }
         out
     }
