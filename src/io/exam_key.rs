@@ -34,16 +34,11 @@ fn rows(ex: &Exercise) -> Vec<(String, String, String, String)> {
 }
 
 /// `x` to `digits` significant digits as the student writes it, its trailing zeros kept
-/// (0.1360, 38.20; 0 as `0`), with a point.
+/// (0.1360, 38.20; 0 as `0`), with a point: a tie rounded half away from zero on the
+/// decimal the key shows, as students are taught (1.5875 is 1.588;
+/// [`phonglab_core::moodle::round_by_hand`]).
 pub fn significant(x: f64, digits: usize) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return phonglab_core::locale::fmt_sig(x, digits);
-    }
-    // The exponent after rounding: 9.99996 to four digits is 10.00.
-    let sci = format!("{:.*e}", digits.max(1) - 1, x);
-    let exponent: i32 = sci.split_once('e').and_then(|(_, e)| e.parse().ok()).unwrap_or(0);
-    let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
-    format!("{x:.decimals$}")
+    phonglab_core::moodle::round_by_hand(x, digits)
 }
 
 /// The rows as a Markdown section of the key.
@@ -83,5 +78,7 @@ mod tests {
         assert_eq!(significant(-0.6, 4), "-0.6000");
         assert_eq!(significant(12345.0, 4), "12345");
         assert_eq!(significant(0.0, 4), "0");
+        // A tie, as a student rounds it: half up, not by the double's binary digits.
+        assert_eq!(significant(1.5875, 4), "1.588");
     }
 }

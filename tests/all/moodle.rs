@@ -159,6 +159,22 @@ fn check_cloze(q: &Value, ex: &Exercise, tolerance: impl Fn(f64) -> f64) {
     }
 }
 
+/// Every answer and tolerance of a Moodle file is its shortest decimal, at most a double's
+/// 15 significant digits: no `0.00006400000000000001`.
+fn no_float_noise(text: &str) {
+    let mut seen = 0;
+    for field in text.split("NUMERICAL:=").skip(1) {
+        let numbers = field.split('#').next().unwrap();
+        for x in numbers.split(':') {
+            let digits = x.trim_start_matches('-').replace('.', "");
+            let significant = digits.trim_start_matches('0').trim_end_matches('0');
+            assert!(significant.len() <= 15, "{x} is float noise");
+            seen += 1;
+        }
+    }
+    assert!(seen > 0);
+}
+
 #[test]
 fn moodle_xml_of_levels_1_to_4_holds_one_cloze_per_variant_in_one_category_per_exercise() {
     for level in 1..=4u8 {
@@ -168,6 +184,7 @@ fn moodle_xml_of_levels_1_to_4_holds_one_cloze_per_variant_in_one_category_per_e
             run_ok(phonglab(&[&args[..], &["--level", &level.to_string(), "--out", dir.to_str().unwrap()]].concat()));
         assert!(said.contains("Question bank → Import → Moodle XML format"), "{said}");
         let qs = read_xml(&dir.join("questions.xml"));
+        no_float_noise(&std::fs::read_to_string(dir.join("questions.xml")).unwrap());
         let types: Vec<&str> = qs.iter().map(|q| q["type"].as_str().unwrap()).collect();
         assert_eq!(types, ["category", "cloze", "cloze", "cloze", "category", "cloze", "cloze", "cloze"]);
         assert_eq!(qs[0]["category"], "$course$/top/phonglab/exercise 1");

@@ -102,20 +102,61 @@ pub struct File {
     pub bytes: Vec<u8>,
 }
 
-/// `x` as both formats read a number: with a point and no exponent (GIFT reads none),
-/// the shortest text that reads back as `x`, or, where that is longer than 24 characters
-/// (3.7e-26), `x` to 15 decimals; `inf` and `NaN` are written `0`.
+/// The most significant digits a number phonglab writes holds: a double's 15, past
+/// which its digits are the arithmetic's noise (`0.00006400000000000001` is `0.000064`).
+pub const SIGNIFICANT: usize = 15;
+
+/// `x`'s shortest decimal: its sign, its significant digits (no trailing zeros; `[0]` for
+/// 0) and the exponent of the first one (`0.0625`: `6`, `2`, `5` and -2). The fewest
+/// digits, up to [`SIGNIFICANT`], that read back as `x`; where none do (the noise of a
+/// double's arithmetic), `x` to [`SIGNIFICANT`] digits.
+pub fn shortest_decimal(x: f64) -> (bool, Vec<u8>, i32) {
+    if x == 0.0 || !x.is_finite() {
+        return (false, vec![0], 0);
+    }
+    let sci = |p: usize| format!("{:.*e}", p - 1, x.abs());
+    let p = (1..=SIGNIFICANT).find(|&p| sci(p).parse::<f64>() == Ok(x.abs())).unwrap_or(SIGNIFICANT);
+    let text = sci(p);
+    let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+    let mut digits: Vec<u8> = mantissa.bytes().filter(u8::is_ascii_digit).map(|b| b - b'0').collect();
+    while digits.len() > 1 && digits.last() == Some(&0) {
+        digits.pop();
+    }
+    (x < 0.0, digits, exponent.parse().unwrap_or(0))
+}
+
+/// Digits (the first at `exponent`) written with a point and no exponent: `-0.000064`.
+pub fn positional(negative: bool, digits: &[u8], exponent: i32) -> String {
+    let mut out = String::from(if negative { "-" } else { "" });
+    let digit =
+        |k: i32| if k >= 0 && (k as usize) < digits.len() { char::from(b'0' + digits[k as usize]) } else { '0' };
+    // Places from the first digit's (or the units', if larger) down to the last digit's.
+    let last = exponent - digits.len() as i32 + 1;
+    for place in (last.min(0)..=exponent.max(0)).rev() {
+        out.push(digit(exponent - place));
+        if place == 0 && last < 0 {
+            out.push('.');
+        }
+    }
+    out
+}
+
+/// `x` as both formats read a number: with a point and no exponent (GIFT reads none), its
+/// shortest decimal ([`shortest_decimal`]: no float noise), or, where that is longer than
+/// 24 characters (3.7e-26), `x` to 15 decimals (`0`); `inf` and `NaN` are written `0`.
 pub fn number(x: f64) -> String {
     if !x.is_finite() {
         return "0".into();
     }
-    let s = format!("{x}");
-    if s.len() <= 24 {
+    let (negative, digits, exponent) = shortest_decimal(x);
+    let s = positional(negative, &digits, exponent);
+    if s.len() <= 24 || x.abs() >= 1.0 {
         return s;
     }
+    // A value that small to 15 decimals: at most 17 characters once shortest.
     let fixed = format!("{x:.15}");
     let trimmed = fixed.trim_end_matches('0').trim_end_matches('.');
-    if trimmed == "-0" || trimmed.is_empty() { "0".into() } else { trimmed.into() }
+    if trimmed == "-0" || trimmed.is_empty() { "0".into() } else { number(trimmed.parse().unwrap_or(0.0)) }
 }
 
 /// `name` kept to the characters a file name in a question may hold.

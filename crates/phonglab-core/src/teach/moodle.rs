@@ -60,6 +60,46 @@ impl Rounding {
     }
 }
 
+/// `x` to `digits` significant digits as a student rounds it by hand: half away from zero
+/// on the decimal the key shows (its shortest, [`crate::formats::question::shortest_decimal`]),
+/// so 1.5875 is 1.588 and -0.14625 is -0.1463, where rounding the double (a hair below
+/// 1.5875) gives 1.587. Its trailing zeros kept (0.1360, -0.6000); a whole number keeps
+/// every digit (12345); 0 is `0`; with a point.
+pub fn round_by_hand(x: f64, digits: usize) -> String {
+    use crate::formats::question::{positional, shortest_decimal};
+    if x == 0.0 || !x.is_finite() {
+        return "0".into();
+    }
+    let (negative, mut d, mut exponent) = shortest_decimal(x);
+    // The digits kept: as asked, or every digit of the whole part.
+    let keep = digits.max(1).max((exponent + 1).max(0) as usize);
+    if d.len() > keep {
+        let up = d[keep] >= 5;
+        d.truncate(keep);
+        if up {
+            let mut k = keep;
+            loop {
+                if k == 0 {
+                    // 9.99996 to four digits: 10.00.
+                    d.insert(0, 1);
+                    d.truncate(keep.max((exponent + 2).max(0) as usize));
+                    exponent += 1;
+                    break;
+                }
+                k -= 1;
+                if d[k] == 9 {
+                    d[k] = 0;
+                } else {
+                    d[k] += 1;
+                    break;
+                }
+            }
+        }
+    }
+    d.resize(keep.max(d.len()), 0);
+    positional(negative, &d, exponent)
+}
+
 /// An exam's tolerance is this many half units of the fourth digit: a value on a tie
 /// (0.14625) rounds to either neighbour (0.1462 or 0.1463), each exactly half a unit away,
 /// which Moodle's float comparison (`answer - tol <= x <= answer + tol`) may refuse by a
@@ -356,7 +396,29 @@ mod tests {
     }
 
     #[test]
+    fn a_tie_rounds_half_away_from_zero_on_the_decimal_the_key_shows() {
+        // The double nearest 1.5875 is 1.58749999999999991...: binary rounding gives 1.587.
+        assert_eq!(round_by_hand(1.5875, 4), "1.588");
+        assert_eq!(round_by_hand(0.14625, 4), "0.1463");
+        assert_eq!(round_by_hand(-0.14625, 4), "-0.1463");
+        assert_eq!(round_by_hand(0.8 * 0.5 - 1.0, 4), "-0.6000", "-0.6000000000000001 is -0.6");
+        assert_eq!(round_by_hand(0.1360384, 4), "0.1360");
+        assert_eq!(round_by_hand(0.212992, 4), "0.2130");
+        assert_eq!(round_by_hand(38.2, 4), "38.20");
+        assert_eq!(round_by_hand(9.99996, 4), "10.00");
+        assert_eq!(round_by_hand(99.996, 4), "100.0");
+        assert_eq!(round_by_hand(0.099996, 4), "0.1000");
+        assert_eq!(round_by_hand(12345.0, 4), "12345");
+        assert_eq!(round_by_hand(0.0, 4), "0");
+        assert_eq!(round_by_hand(0.00012344999, 4), "0.0001234");
+    }
+
+    #[test]
     fn numbers_are_written_with_a_point_and_no_exponent() {
+        assert_eq!(crate::formats::question::number(0.64 * 1e-4), "0.000064", "not 0.00006400000000000001");
+        assert_eq!(crate::formats::question::number(-0.8 * 0.5 - 0.2), "-0.6");
+        assert_eq!(crate::formats::question::number(12345.0), "12345");
+        assert_eq!(crate::formats::question::number(1200.0), "1200");
         use crate::formats::question::number;
         assert_eq!(number(-0.25), "-0.25");
         assert_eq!(number(3.7386036e-26), "0");
