@@ -369,8 +369,27 @@ fn a_hostile_name_leaves_every_question_whole() {
     assert_eq!(kinds.iter().filter(|k| **k == "Numerical").count(), parts);
     assert_eq!(kinds.iter().filter(|k| **k == "MC").count(), 1);
     assert_eq!(kinds.len(), parts + 2, "a category, the parts, the choice: {kinds:?}");
-    let html = phonglab_core::escape::html::text(HOSTILE);
-    assert_eq!(g[parts + 1]["title"], html.as_str(), "GIFT keeps the name (as HTML text)");
+    assert_eq!(g[parts + 1]["title"], printable.as_str(), "GIFT keeps the name, plain text, its controls shown");
+}
+
+/// A title is plain text in GIFT (only the question's text is `[html]`): every character a
+/// teacher may type survives as written, not as `&#39;` or `&amp;`.
+#[test]
+fn a_gift_title_keeps_every_character_as_written() {
+    let title = "O'Neil \"x\" & <b> {y} #1 ~z =w :v \\u";
+    let (mut bank, parts) = hostile_bank();
+    for q in &mut bank.categories[0].questions {
+        q.name = title.to_string();
+    }
+    let dir = out_dir("gift-title");
+    std::fs::create_dir_all(&dir).unwrap();
+    let gift = dir.join("q.gift.txt");
+    std::fs::write(&gift, phonglab_core::gift::write(&bank)).unwrap();
+    let g = read_gift(&gift);
+    assert_eq!(g[1]["title"], format!("{title} (1)").as_str(), "a part's title");
+    assert_eq!(g[parts + 1]["title"], title, "the picture question's title");
+    let text = std::fs::read_to_string(&gift).unwrap();
+    assert!(text.contains("::O'Neil \"x\" & <b> \\{y\\} \\#1"), "the title as written, GIFT's escapes only");
 }
 
 #[test]

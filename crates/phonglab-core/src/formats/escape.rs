@@ -26,6 +26,7 @@
 //! | a Cloze part, its feedback | [`moodle_xml::cloze_part`] | `} # ~ / \\` escaped, no brace: the part stays whole |
 //! | Cloze question text (HTML) | [`moodle_xml::cloze_html`] | no brace, so no text reads as a part |
 //! | GIFT text | [`gift::text`] | `~ = # { } :` and `\\` escaped, one line, HTML-safe |
+//! | GIFT title (plain text) | [`gift::plain`] | `~ = # { } :` and `\\` escaped, one line, nothing else |
 //!
 //! JSON is written by `serde_json`, which escapes the C0 controls in every string but not
 //! the others (DEL, C1, the separators, the bidirectional controls): [`json::text`]
@@ -301,6 +302,13 @@ pub mod gift {
     pub fn text(text: &str) -> String {
         let html = super::html::text(text);
         specials(&html)
+    }
+
+    /// A question's name (its title, `::NAME::`), which GIFT reads as plain text, not
+    /// HTML: GIFT's special characters after a backslash and every control character
+    /// written `\u{1B}` (one line), nothing else: `O'Neil & <b>` stays `O'Neil & <b>`.
+    pub fn plain(text: &str) -> String {
+        specials(&super::visible_controls(text, |_| false))
     }
 
     /// HTML that phonglab wrote itself (tags kept): GIFT's special characters after a

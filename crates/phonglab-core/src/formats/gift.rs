@@ -4,14 +4,15 @@
 //! (`::NAME::[html]STATEMENT PART{#=ANSWER:TOLERANCE#right ~#wrong ####general}`), and a choice is
 //! `{=right#feedback ~wrong#feedback}`. GIFT embeds no file: a picture is a `data:` URI in
 //! the statement's `<img>`. Each category is a `$CATEGORY:` line before its questions;
-//! every text is escaped by [`super::escape::gift`], so no name breaks a question.
+//! every text is escaped by [`super::escape::gift`], so no name breaks a question: a
+//! question's name as the plain text GIFT reads it, the rest as the `[html]` it is.
 
 use std::fmt::Write as _;
 
 use base64::Engine as _;
 use base64::engine::general_purpose::STANDARD;
 
-use super::escape::gift::{html, text};
+use super::escape::gift::{html, plain, text};
 use super::question::{Bank, Body, Choice, Part, Question, number};
 
 /// The bank as a GIFT file.
@@ -54,7 +55,7 @@ fn question(o: &mut String, q: &Question) {
                 let at = format!("@@PLUGINFILE@@/{}", super::question::file_name(&f.name));
                 h = h.replace(&at, &format!("data:image/png;base64,{}", STANDARD.encode(&f.bytes)));
             }
-            let _ = writeln!(o, "::{}::[html]{}{{", text(&q.name), gift_html(&h));
+            let _ = writeln!(o, "::{}::[html]{}{{", plain(&q.name), gift_html(&h));
             for c in choices {
                 choice(o, c);
             }
@@ -70,7 +71,7 @@ fn numerical(o: &mut String, name: &str, statement_html: &str, p: &Part, general
     let _ = writeln!(
         o,
         "::{}::[html]{} <p>{}</p>{{#\n\t={}:{}#{}\n\t~#{}\n\t####{}\n}}\n",
-        text(name),
+        plain(name),
         gift_html(statement_html),
         gift_html(&format!("{} {}", p.row_html, p.label_html)),
         number(p.answer),
