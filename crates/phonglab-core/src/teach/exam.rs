@@ -20,7 +20,7 @@ use crate::equation::lighting::Engine;
 use crate::formats::document::Document;
 use crate::model::camera::CameraSpec;
 use crate::model::scene::{Light, LightModel, LightPlacement, Material, NormalMode, Scene, Vertex};
-use crate::teach::exercise::{Effect, Exercise, MAX_DRAWS, Rng, Spec, screen};
+use crate::teach::exercise::{Effect, Exercise, Rng, Spec, draw_each, screen};
 
 /// The most decimals a value of an exam's key has.
 pub const MAX_DECIMALS: u32 = 8;
@@ -349,32 +349,19 @@ pub fn pencil_ready(scene: &Scene) -> bool {
     })
 }
 
-/// `count` exam exercises from `seed`, numbered from 1.
+/// `count` exam exercises from `seed`, numbered from 1: drawn, screened as every exercise
+/// is and by their key ([`pencil_ready`]), by the draw loop of every exercise
+/// (`exercise::draw_each`).
 pub fn generate(seed: u64, count: usize, spec: &Spec) -> Result<Vec<Exercise>, String> {
-    let mut rng = Rng::new(seed);
     let all = units();
-    let mut out = Vec::new();
-    for k in 1..=count {
-        let mut redraws = 0;
-        loop {
-            if let Some((scene, words)) = draw(&mut rng, &all, spec)
-                && screen(&scene, spec).is_none()
-                && pencil_ready(&scene)
-            {
-                let name = crate::t!("exam-name", number = k.to_string(), seed = seed.to_string());
-                let doc = Document::from_scene(&name, CameraSpec::Matrix(scene.eye_from_world), scene);
-                let key = keys(&doc.scene)?.swap_remove(0);
-                out.push(Exercise { doc, modelview: words, material: crate::t!("exam-material"), key, redraws });
-                break;
-            }
-            redraws += 1;
-            if redraws >= MAX_DRAWS {
-                return Err(format!(
-                    "exam exercise {k}: no scene with {:?} passed the screen in {MAX_DRAWS} draws",
-                    spec.effects
-                ));
-            }
+    draw_each(seed, count, spec, "exam exercise", |rng, k| {
+        let Some((scene, words)) = draw(rng, &all, spec) else { return Ok(None) };
+        if screen(&scene, spec).is_some() || !pencil_ready(&scene) {
+            return Ok(None);
         }
-    }
-    Ok(out)
+        let name = crate::t!("exam-name", number = k.to_string(), seed = seed.to_string());
+        let doc = Document::from_scene(&name, CameraSpec::Matrix(scene.eye_from_world), scene);
+        let key = keys(&doc.scene)?.swap_remove(0);
+        Ok(Some(Exercise { doc, modelview: words, material: crate::t!("exam-material"), key, redraws: 0 }))
+    })
 }

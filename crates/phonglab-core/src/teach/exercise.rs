@@ -411,27 +411,47 @@ pub const MAX_DRAWS: usize = 10_000;
 
 /// `count` exercises from `seed`, numbered from 1.
 pub fn generate(seed: u64, count: usize, spec: &Spec) -> Result<Vec<Exercise>, String> {
+    draw_each(seed, count, spec, "exercise", |rng, k| {
+        let (scene, words, material) = draw(rng, spec);
+        if screen(&scene, spec).is_some() {
+            return Ok(None);
+        }
+        let doc = Document::from_scene(
+            &crate::t!("exercise-name", number = k.to_string(), seed = seed.to_string()),
+            CameraSpec::Matrix(scene.eye_from_world),
+            scene,
+        );
+        let lit = Engine::<f64>::new(&doc.scene).map_err(|e| e.to_string())?.light(&doc.scene.vertex);
+        let key = explain(&doc.scene, &lit, Side::Front);
+        Ok(Some(Exercise { doc, modelview: words, material, key, redraws: 0 }))
+    })
+}
+
+/// The draw loop every kind of exercise shares: for exercise k (from 1) of `count`, one
+/// random stream from `seed`, `attempt` draws a scene and screens it, giving the exercise
+/// or `None` to set the draw aside; the draws set aside are counted into its `redraws`,
+/// and after [`MAX_DRAWS`] of them the set is given up, naming the `kind` of exercise.
+pub(crate) fn draw_each(
+    seed: u64,
+    count: usize,
+    spec: &Spec,
+    kind: &str,
+    mut attempt: impl FnMut(&mut Rng, usize) -> Result<Option<Exercise>, String>,
+) -> Result<Vec<Exercise>, String> {
     let mut rng = Rng::new(seed);
     let mut out = Vec::new();
     for k in 1..=count {
         let mut redraws = 0;
         loop {
-            let (scene, words, material) = draw(&mut rng, spec);
-            if screen(&scene, spec).is_none() {
-                let doc = Document::from_scene(
-                    &crate::t!("exercise-name", number = k.to_string(), seed = seed.to_string()),
-                    CameraSpec::Matrix(scene.eye_from_world),
-                    scene,
-                );
-                let lit = Engine::<f64>::new(&doc.scene).map_err(|e| e.to_string())?.light(&doc.scene.vertex);
-                let key = explain(&doc.scene, &lit, Side::Front);
-                out.push(Exercise { doc, modelview: words, material, key, redraws });
+            if let Some(mut ex) = attempt(&mut rng, k)? {
+                ex.redraws = redraws;
+                out.push(ex);
                 break;
             }
             redraws += 1;
             if redraws >= MAX_DRAWS {
                 return Err(format!(
-                    "exercise {k}: no scene with {:?} passed the screen in {MAX_DRAWS} draws",
+                    "{kind} {k}: no scene with {:?} passed the screen in {MAX_DRAWS} draws",
                     spec.effects
                 ));
             }
