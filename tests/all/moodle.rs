@@ -598,3 +598,75 @@ fn a_question_names_only_what_it_shows() {
         }
     }
 }
+
+/// Level 5's feedback reads as a sentence in each language: "drawn with lighting per
+/// fragment", never "drawn with lit per fragment" ("desenhada com iluminado ..."), nor
+/// "drawn with gluLookAt(...); glLightfv(...); the one on the right with ...".
+#[test]
+fn the_picture_levels_feedback_is_a_sentence_in_every_language() {
+    use phonglab_core::locale::{Lang, Locale, with_locale};
+    use phonglab_core::misconception::Misconception;
+    for lang in Lang::ALL {
+        with_locale(Locale::of(lang), || {
+            for kind in Misconception::ALL {
+                let q = phonglab_core::moodle::misconception_question(kind, "q", Vec::new(), Vec::new());
+                let said = q.general_feedback_html;
+                for participle in ["with lit ", "with interpolated", "com iluminado", "com interpolad"] {
+                    assert!(!said.contains(participle), "{lang:?} {kind:?}: {said}");
+                }
+                // One `;`, the one between the two pictures: no formula with its own
+                // (`gluLookAt(...); glLightfv(...)`) to split the sentence.
+                let plain = said.replace("&gt;", ">").replace("&lt;", "<").replace("&amp;", "&");
+                assert_eq!(plain.matches(';').count(), 1, "{lang:?} {kind:?}: {plain}");
+                let phonglab_core::question::Body::Choice { choices, .. } = &q.body else { panic!() };
+                assert_eq!(choices.len(), 7);
+            }
+        });
+    }
+}
+
+/// The numbers of an exam key's "exact" column, in order (`[0,6 0,8 0]` gives three).
+fn exact_values(key: &str) -> Vec<f64> {
+    let mut out = Vec::new();
+    for line in key.lines().filter(|l| l.contains(") ≈ ")) {
+        let exact = line.split("` = ").nth(1).unwrap().split(" (").next().unwrap();
+        for x in exact.trim_matches(|c| c == '[' || c == ']').split(' ') {
+            out.push(x.replace(',', ".").parse::<f64>().unwrap_or_else(|_| panic!("{x} in {line}")));
+        }
+    }
+    out
+}
+
+/// A question's name says how to write its key: run that command (its level, rules, exam,
+/// language) and the key it names holds every answer of the question; and it is the very
+/// key of the same request written as sheets.
+#[test]
+fn following_a_questions_pointer_writes_the_key_it_was_made_from() {
+    let dir = out_dir("pointer");
+    let args = ["--lang", "pt-PT", "exercise", "--format", "moodle-xml", "--seed", "7", "--count", "2"];
+    let more = ["--variants", "2", "--level", "3", "--rules", "opengl", "--exam", "--out", dir.to_str().unwrap()];
+    run_ok(phonglab(&[&args[..], &more[..]].concat()));
+    let qs = read_xml(&dir.join("questions.xml"));
+    let clozes: Vec<&Value> = qs.iter().filter(|q| q["type"] == "cloze").collect();
+    assert_eq!(clozes.len(), 4);
+    let own = out_dir("pointer-own");
+    let same = ["--lang", "pt-PT", "exercise", "--seed", "7", "--count", "4", "--level", "3", "--rules", "opengl"];
+    run_ok(phonglab(&[&same[..], &["--exam", "--out", own.to_str().unwrap()]].concat()));
+    for q in clozes {
+        let name = q["name"].as_str().unwrap();
+        let (_, command) = name.split_once(" de phonglab ").unwrap_or_else(|| panic!("{name}"));
+        let sheet = name.split("chave ").nth(1).unwrap().split(' ').next().unwrap();
+        let words: Vec<&str> = command.split(' ').collect();
+        assert!(words.contains(&"opengl") && words.contains(&"--exam") && words.contains(&"3"), "{name}");
+        let followed = out_dir(&format!("pointer-{sheet}"));
+        run_ok(phonglab(&[&words[..], &["--out", followed.to_str().unwrap()]].concat()));
+        let key = std::fs::read_to_string(followed.join(sheet)).unwrap();
+        let exact = exact_values(&key);
+        for part in q["parts"].as_array().unwrap() {
+            let answer = f(&part["answer"]);
+            assert!(exact.iter().any(|x| (x - answer).abs() < 1e-9), "{name}: {answer} not in the key {exact:?}");
+        }
+        // The same key as the request's own, written as sheets.
+        assert_eq!(std::fs::read_to_string(own.join(sheet)).unwrap(), key, "{name}");
+    }
+}

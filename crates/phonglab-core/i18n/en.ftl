@@ -23,12 +23,14 @@ wrong-why-light-before-view = glLightfv(GL_POSITION) multiplies the position by 
 wrong-probe-line = bytes { $rgba }, n · L = { $ndotl }, { $cosine } = { $ndoth }, 1/at = { $att }, diffuse { $diffuse }, specular { $specular }
 wrong-key-cause = Cause: { $cause }.
 wrong-key-formulas = Right: { $right }. The mistake: { $wrong }.
-wrong-formula-gouraud-right = lit per fragment (Phong)
-wrong-formula-gouraud-wrong = lit per vertex, interpolated (Gouraud)
+wrong-formula-gouraud-right = lighting per fragment (Phong)
+wrong-formula-gouraud-wrong = lighting per vertex, its colours interpolated (Gouraud)
 wrong-formula-facing-away-right = f_i = 1 only where n · L > 0
 wrong-formula-facing-away-wrong = f_i = 1 everywhere
 wrong-formula-attenuation-right = d = |P_pli - P| in eye space
 wrong-formula-attenuation-wrong = d measured in object space
+wrong-formula-light-right = gluLookAt(...), then glLightfv(GL_POSITION, p)
+wrong-formula-light-wrong = glLightfv(GL_POSITION, p), then gluLookAt(...)
 wrong-key-pixel = The probe at pixel ({ $x }, { $y }), where the two pictures differ most ({ $count } pixels differ):
 wrong-key-right = drawn right: { $line }
 wrong-key-wrong = with the mistake: { $line }

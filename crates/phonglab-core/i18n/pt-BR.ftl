@@ -23,12 +23,14 @@ wrong-why-light-before-view = O glLightfv(GL_POSITION) multiplica a posição pe
 wrong-probe-line = bytes { $rgba }, n · L = { $ndotl }, { $cosine } = { $ndoth }, 1/at = { $att }, difusa { $diffuse }, especular { $specular }
 wrong-key-cause = Causa: { $cause }.
 wrong-key-formulas = Certo: { $right }. O erro: { $wrong }.
-wrong-formula-gouraud-right = iluminado em cada fragmento (Phong)
-wrong-formula-gouraud-wrong = iluminado em cada vértice, cores interpoladas (Gouraud)
+wrong-formula-gouraud-right = iluminação em cada fragmento (Phong)
+wrong-formula-gouraud-wrong = iluminação em cada vértice e cores interpoladas (Gouraud)
 wrong-formula-facing-away-right = f_i = 1 só onde n · L > 0
 wrong-formula-facing-away-wrong = f_i = 1 em todo lugar
 wrong-formula-attenuation-right = d = |P_pli - P| no espaço do olho
 wrong-formula-attenuation-wrong = d medida no espaço do objeto
+wrong-formula-light-right = gluLookAt(...) e depois glLightfv(GL_POSITION, p)
+wrong-formula-light-wrong = glLightfv(GL_POSITION, p) e depois gluLookAt(...)
 wrong-key-pixel = A sonda no pixel ({ $x }, { $y }), onde as duas imagens mais diferem ({ $count } pixels diferem):
 wrong-key-right = desenhada certa: { $line }
 wrong-key-wrong = com o erro: { $line }

@@ -100,8 +100,9 @@ impl Misconception {
             Misconception::AttenuationInObjectSpace => {
                 (crate::t!("wrong-formula-attenuation-right"), crate::t!("wrong-formula-attenuation-wrong"))
             }
+            // In words, not `a; b`: the feedback's sentence joins its two halves with a `;`.
             Misconception::LightBeforeView => {
-                both("gluLookAt(...); glLightfv(GL_POSITION, p)", "glLightfv(GL_POSITION, p); gluLookAt(...)")
+                (crate::t!("wrong-formula-light-right"), crate::t!("wrong-formula-light-wrong"))
             }
         }
     }
