@@ -67,7 +67,7 @@ wrong-question = Which one mistake makes the right-hand picture? Tick it, and sa
 
 exam-key-heading = Each value exact and rounded
 moodle-category-exercise = exercise { $number }
-moodle-question-name = { $exercise }, variant { $variant }: key exercise-{ $sheet }-key.md of phonglab exercise --seed { $seed } --count { $count }{ $exam } and this file's --level or --effects
+moodle-question-name = { $exercise }, variant { $variant }: key exercise-{ $sheet }-key.md of { $command }
 moodle-category-default = phonglab
 moodle-written = { $file } in { $out }: { $questions ->
     [one] one question

@@ -67,7 +67,7 @@ wrong-question = Que erro produz a imagem da direita? Marque-o e diga o que na i
 
 exam-key-heading = Cada valor exato e arredondado
 moodle-category-exercise = exercício { $number }
-moodle-question-name = { $exercise }, variante { $variant }: gabarito exercise-{ $sheet }-key.md de phonglab exercise --seed { $seed } --count { $count }{ $exam } e o --level ou --effects deste arquivo
+moodle-question-name = { $exercise }, variante { $variant }: gabarito exercise-{ $sheet }-key.md de { $command }
 moodle-category-default = phonglab
 moodle-written = { $file } em { $out }: { $questions ->
     [one] uma questão

@@ -67,7 +67,7 @@ wrong-question = Que erro produz a imagem da direita? Assinale-o e diga o que na
 
 exam-key-heading = Cada valor exato e arredondado
 moodle-category-exercise = exercício { $number }
-moodle-question-name = { $exercise }, variante { $variant }: chave exercise-{ $sheet }-key.md de phonglab exercise --seed { $seed } --count { $count }{ $exam } e o --level ou --effects deste ficheiro
+moodle-question-name = { $exercise }, variante { $variant }: chave exercise-{ $sheet }-key.md de { $command }
 moodle-category-default = phonglab
 moodle-written = { $file } em { $out }: { $questions ->
     [one] uma pergunta

@@ -92,17 +92,60 @@ pub fn exercise_bank(b: &Bundle) -> Result<Bank> {
 
 /// A question's name in the bank, which Moodle shows to teachers only: the exercise, the
 /// variant, and where its worked key is: sheet `sheet` of the same request written as
-/// sheets, `--count total` (exercise k's variants are sheets (k − 1) × variants + 1 on).
+/// sheets, `--count total` (exercise k's variants are sheets (k − 1) × variants + 1 on),
+/// by the command that writes it ([`sheets_command`]).
 fn teacher_name(b: &Bundle, exercise: &str, variant: usize, sheet: usize, total: usize) -> String {
     t!(
         "moodle-question-name",
         exercise = exercise.to_string(),
         variant = variant as i64,
         sheet = format!("{sheet:02}"),
-        seed = b.request.seed.to_string(),
-        count = total as i64,
-        exam = if b.exam { " --exam" } else { "" }
+        command = sheets_command(b, total)
     )
+}
+
+/// The command that writes `b`'s exercises as sheets, `total` of them, with their keys:
+/// everything that changes a key (the seed, the count, the level or effects, the rules,
+/// an exam; the language and decimal mark its words and numbers are written in), so that
+/// following it gives the very key the question was made from.
+pub fn sheets_command(b: &Bundle, total: usize) -> String {
+    use phonglab_core::exercise::Level;
+    let spec = &b.request.spec;
+    let mut effects = spec.effects.clone();
+    effects.sort();
+    let level = (1..=4u8).find(|&n| {
+        Level::from_number(n).is_some_and(|l| {
+            let mut e = l.effects();
+            e.sort();
+            e == effects
+        })
+    });
+    let what = match level {
+        Some(n) => format!("--level {n}"),
+        None => {
+            let names: Vec<&str> = effects.iter().map(|e| e.name()).collect();
+            format!("--effects {}", names.join(","))
+        }
+    };
+    let rules = match spec.rules.set {
+        phonglab_core::rules::RuleSet::OpenGl => "opengl",
+        _ => "worksheet",
+    };
+    let locale = crate::locale::current();
+    let mut command = format!(
+        "phonglab exercise --seed {} --count {total} {what} --rules {rules}{} --lang {}",
+        b.request.seed,
+        if b.exam { " --exam" } else { "" },
+        locale.lang.code()
+    );
+    if locale.decimal != locale.lang.decimal_mark() {
+        let mark = match locale.decimal {
+            crate::locale::DecimalMark::Point => "point",
+            crate::locale::DecimalMark::Comma => "comma",
+        };
+        command.push_str(&format!(" --decimal {mark}"));
+    }
+    command
 }
 
 /// The bank of "What is wrong with this picture?": the mistakes in the seed's order, one
