@@ -66,6 +66,7 @@ wrong-question = Which one mistake makes the right-hand picture? Tick it, and sa
 ## moodle-exam
 
 exam-key-heading = Each value exact and rounded
+exam-sheet-name = exam exercise { $number }
 moodle-category-exercise = exercise { $number }
 moodle-question-name = { $exercise }, variant { $variant }: key exercise-{ $sheet }-key.md of { $command }
 moodle-category-default = phonglab

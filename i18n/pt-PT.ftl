@@ -66,6 +66,7 @@ wrong-question = Que erro produz a imagem da direita? Assinale-o e diga o que na
 ## moodle-exam
 
 exam-key-heading = Cada valor exato e arredondado
+exam-sheet-name = exercício de exame { $number }
 moodle-category-exercise = exercício { $number }
 moodle-question-name = { $exercise }, variante { $variant }: chave exercise-{ $sheet }-key.md de { $command }
 moodle-category-default = phonglab

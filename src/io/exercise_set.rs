@@ -287,10 +287,11 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
         } else {
             String::new()
         };
-        let sheet = format!("{banner}{}\n{}\n", sheet_markdown(ex), t!("sheet-scene-file", file = &toml));
+        let handed_out = handed_out(ex, i + 1, a.exam);
+        let sheet = format!("{banner}{}\n{}\n", sheet_markdown(&handed_out), t!("sheet-scene-file", file = &toml));
         set.add(format!("{stem}.md"), sheet.clone());
         let mut key = answer_key(&ex.doc, &toml)?;
-        sheets.push(Block::Section(ex.doc.name.clone()));
+        sheets.push(Block::Section(handed_out.doc.name.clone()));
         if a.exam {
             // At the top of the page, before the title.
             sheets.push(Block::Heading(t!("exam-no-calculator")));
@@ -298,7 +299,7 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
             key.push_str(&super::exam_key::markdown(ex));
         }
         set.add(format!("{stem}-key.md"), key);
-        sheets.extend(sheet_blocks(ex, &toml));
+        sheets.extend(sheet_blocks(&handed_out, &toml));
         keys.push(Block::Section(t!("key-title", name = &ex.doc.name)));
         let mut key_pages = key_blocks(&ex.doc, &toml)?;
         if a.exam {
@@ -316,6 +317,17 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
     set.add("sheets.pdf", pdf(&sheets, Pages::Duplex)?);
     set.add("keys.pdf", pdf(&keys, Pages::Plain)?);
     Ok((exercises, set))
+}
+
+/// Exercise `number` as its sheet shows it to students: an exam's without its seed, which
+/// reproduces the key ("exam exercise 3"); the key, the scene file and the index keep it.
+fn handed_out(ex: &Exercise, number: usize, exam: bool) -> std::borrow::Cow<'_, Exercise> {
+    if !exam {
+        return std::borrow::Cow::Borrowed(ex);
+    }
+    let mut sheet = ex.clone();
+    sheet.doc.name = t!("exam-sheet-name", number = number as i64);
+    std::borrow::Cow::Owned(sheet)
 }
 
 /// Writes the exercises as one set into the folder `dir` ([`super::file_set::write_set`]):

@@ -465,6 +465,13 @@ fn an_exam_sheet_says_no_calculator_at_the_top_and_its_key_exact_and_rounded() {
     let text = String::from_utf8_lossy(&text.stdout);
     assert!(text.trim_start().starts_with("No calculator"), "{}", &text[..200.min(text.len())]);
     let key = std::fs::read_to_string(dir.join("exercise-01-key.md")).unwrap();
+    // No seed on what students get (it reproduces the key): the sheet says "exam exercise
+    // 1"; the key, the teacher's, keeps it.
+    assert!(!text.contains("seed") && text.contains("exam exercise 1"), "{text}");
+    let sheet = std::fs::read_to_string(dir.join("exercise-01.md")).unwrap();
+    assert!(!sheet.contains("seed"), "{sheet}");
+    let keys = Command::new("pdftotext").arg(dir.join("keys.pdf")).arg("-").output().expect("pdftotext");
+    assert!(String::from_utf8_lossy(&keys.stdout).contains("(seed 1)"));
     assert!(key.contains("(exact) ≈") && key.contains("(rounded to four significant digits)"), "{key}");
     // Four significant digits written as four, trailing zeros kept: 0.1360, not 0.136.
     for line in key.lines().filter(|l| l.contains("(exact) ≈")) {
