@@ -1021,6 +1021,7 @@ student-ask-check = Check it against this scene
 student-ask-open = Open it as the scene
 student-picture-heading = Student's picture: { $file }
 student-picture-right = A: the right picture of this scene
+set-not-ours = { $path } was not written by phonglab, or was edited since it wrote it: phonglab does not replace it, and wrote nothing. To write the set here, move that file away (it keeps your edits), or choose another folder.
 student-picture-theirs = B: the student's picture
 # fix57b
 check-report-printed-twice = Steps printed more than once with different values (each printing was checked)

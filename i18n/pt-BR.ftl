@@ -1021,6 +1021,7 @@ student-ask-check = Corrigir com esta cena
 student-ask-open = Abrir como cena
 student-picture-heading = Imagem do aluno: { $file }
 student-picture-right = A: a imagem correta desta cena
+set-not-ours = { $path } não foi escrito pelo phonglab, ou foi editado depois que ele o escreveu: o phonglab não o substitui, e não escreveu nada. Para escrever as listas aqui, mova esse arquivo para outro lugar (ele guarda suas alterações) ou escolha outra pasta.
 student-picture-theirs = B: a imagem do aluno
 # fix57b
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)

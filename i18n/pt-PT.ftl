@@ -1021,6 +1021,7 @@ student-ask-check = Corrigir com esta cena
 student-ask-open = Abrir como cena
 student-picture-heading = Imagem do aluno: { $file }
 student-picture-right = A: a imagem certa desta cena
+set-not-ours = { $path } não foi escrito pelo phonglab, ou foi editado depois de ele o escrever: o phonglab não o substitui, e não escreveu nada. Para escrever as fichas aqui, mova esse ficheiro para outro lado (guarda as suas alterações), ou escolha outra pasta.
 student-picture-theirs = B: a imagem do aluno
 # fix57b
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)

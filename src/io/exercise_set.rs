@@ -332,12 +332,24 @@ fn handed_out(ex: &Exercise, number: usize, exam: bool) -> std::borrow::Cow<'_, 
 
 /// Writes the exercises as one set into the folder `dir` ([`super::file_set::write_set`]):
 /// the folder ends with the new set whole, or as it was; returns them, and what was left
-/// as it is in the folder (see [`super::file_set::recover`]).
+/// as it is in the folder (see [`super::file_set::recover`]). A file of the set that
+/// phonglab did not write there as it is now (a key edited since) refuses the set
+/// ([`refuse_foreign`]).
 pub fn write(dir: &std::path::Path, a: &Request) -> Result<(Vec<Exercise>, Vec<String>)> {
     super::atomic_write::check_folder_destination(dir)?;
     let (exercises, set) = exercise_set(a)?;
+    refuse_foreign(dir, &set)?;
     let notices = super::file_set::write_set(dir, &set, belongs_to_a_set)?;
     Ok((exercises, notices))
+}
+
+/// Refuses to write `set` into `dir` over a file phonglab did not write there as it is now
+/// ([`super::file_set::foreign_file`]: a key the teacher edited since), which it keeps.
+pub fn refuse_foreign(dir: &std::path::Path, set: &FileSet) -> Result<()> {
+    match super::file_set::foreign_file(dir, set) {
+        Some(path) => anyhow::bail!(t!("set-not-ours", path = super::reasons::shown(&path))),
+        None => Ok(()),
+    }
 }
 
 /// What an exam sheet says under "No calculator": work exactly, round what is written

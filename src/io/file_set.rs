@@ -127,6 +127,22 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
 /// over for the next name).
 fn new_staging(dir: &Path) -> Result<std::path::PathBuf, WriteError> {
     let mut tries = 0;
+/// The first file of `set` that `dir` holds as a regular file that phonglab did not write
+/// there as it is now (named, unchanged, in the folder's list of what it wrote,
+/// [`super::set_journal::WRITTEN`]) and whose bytes differ from the new one's: a key the
+/// teacher edited, a file of theirs with a set's name. A set replaces only its own earlier
+/// files, so its writer refuses before anything is written.
+pub fn foreign_file(dir: &Path, set: &FileSet) -> Option<std::path::PathBuf> {
+    let written = super::set_journal::written_list(dir);
+    set.files.iter().find_map(|(name, bytes)| {
+        let path = dir.join(name);
+        let is_file = std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file());
+        let ours = written.iter().any(|e| e.name == *name && super::set_journal::is_entry(&path, e));
+        let same = || std::fs::read(&path).is_ok_and(|old| old == *bytes);
+        (is_file && !ours && !same()).then_some(path)
+    })
+}
+
     loop {
         let staging = temporary_name(dir, STAGING);
         match std::fs::create_dir(&staging) {

@@ -101,6 +101,7 @@ pub fn misconception_set(seed: u64, count: usize) -> Result<FileSet> {
 pub fn write(dir: &std::path::Path, seed: u64, count: usize) -> Result<(usize, Vec<String>)> {
     super::atomic_write::check_folder_destination(dir)?;
     let set = misconception_set(seed, count)?;
+    super::exercise_set::refuse_foreign(dir, &set)?;
     let notices = super::file_set::write_set(dir, &set, super::exercise_set::belongs_to_a_set)?;
     Ok((count.clamp(1, Misconception::ALL.len()), notices))
 }
