@@ -680,14 +680,6 @@ cost-wrote = wrote { $files } in { $out }
 
 ## io-errors
 
-write-step-create-staging = create a staging folder in
-write-step-list = list
-write-step-lock-folder = lock the folder
-write-step-recover = finish the set a stopped run left in
-write-step-remove-journal = remove the journal of
-write-step-killed = stop (killed) while writing
-write-kept-folder = the folder is unchanged
-write-kept-recoverable = the old set or the new one is whole, and the next run in this folder finishes what was started
 set-folder-is-a-link = a link to another folder: phonglab writes a set of files only into a real folder, never through a link
 set-left-alone = { $name } in { $dir } was left as it is: { $why }
 set-why-loose-journal = a journal phonglab did not write there (planted, or left by an older phonglab); nothing it names was touched

@@ -680,14 +680,6 @@ cost-wrote = gravado { $files } em { $out }
 
 ## io-errors
 
-write-step-create-staging = criar uma pasta temporária em
-write-step-list = listar
-write-step-lock-folder = bloquear a pasta
-write-step-recover = terminar o conjunto deixado por uma execução interrompida em
-write-step-remove-journal = remover o diário de
-write-step-killed = parar (morto) ao escrever
-write-kept-folder = a pasta não mudou
-write-kept-recoverable = o conjunto antigo ou o novo está completo, e a próxima execução nesta pasta termina o que foi começado
 set-folder-is-a-link = um link para outra pasta: o phonglab só grava um conjunto de arquivos em uma pasta de verdade, nunca por meio de um link
 set-left-alone = { $name } em { $dir } ficou como estava: { $why }
 set-why-loose-journal = um diário que o phonglab não escreveu ali (colocado por alguém, ou deixado por uma versão antiga do phonglab); nada do que ele nomeia foi tocado

@@ -31,7 +31,7 @@ use std::fmt;
 use std::io;
 use std::path::Path;
 
-use super::atomic_write::{Fault, WriteError, fault, next_step, rename_no_replace, temporary_name};
+use super::atomic_write::{Fault, WriteError, fault, next_step, rename_no_replace, set_steps, temporary_name};
 use super::set_journal::{
     ASIDE, Entry, Identity, JOURNAL, Journal, STAGING, entry_of, plain_name, stage, write_journal,
 };
@@ -86,10 +86,15 @@ impl From<WriteError> for Stop {
 
 /// The killed writer's error, for tests: the step's name says it.
 fn killed(dir: &Path) -> WriteError {
-    WriteError::new(dir, "write-step-killed", io::Error::other("killed (injected by a test)"), "write-kept-recoverable")
+    WriteError::new(
+        dir,
+        set_steps::KILLED,
+        io::Error::other("killed (injected by a test)"),
+        set_steps::KEPT_RECOVERABLE,
+    )
 }
 
-const UNTOUCHED: &str = "write-kept-folder";
+const UNTOUCHED: &str = set_steps::KEPT_FOLDER;
 
 /// Writes `set` into the folder `dir` (created if missing) as one: the folder ends with
 /// the whole new set, or, on any failure, exactly the files it had. Files already in `dir`
@@ -107,9 +112,9 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
     }
     std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED))?;
     let _lock = crate::platform::os::lock_folder(dir)
-        .map_err(|e| WriteError::new(dir, "write-step-lock-folder", e, UNTOUCHED))?;
-    let notices = super::set_journal::recover_locked(dir)
-        .map_err(|e| WriteError::new(dir, "write-step-recover", e, UNTOUCHED))?;
+        .map_err(|e| WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED))?;
+    let notices =
+        super::set_journal::recover_locked(dir).map_err(|e| WriteError::new(dir, set_steps::RECOVER, e, UNTOUCHED))?;
     refuse_unwritable_names(dir, set)?;
     let staging = new_staging(dir)?;
     match stage_and_swap(dir, &staging, set, &belongs) {
@@ -122,11 +127,6 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
     }
 }
 
-/// Makes this writer's staging folder in `dir`: a name nothing has, made by `mkdir`, which
-/// fails on anything already there (a planted folder or link of the same name is passed
-/// over for the next name).
-fn new_staging(dir: &Path) -> Result<std::path::PathBuf, WriteError> {
-    let mut tries = 0;
 /// The first file of `set` that `dir` holds as a regular file that phonglab did not write
 /// there as it is now (named, unchanged, in the folder's list of what it wrote,
 /// [`super::set_journal::WRITTEN`]) and whose bytes differ from the new one's: a key the
@@ -143,12 +143,17 @@ pub fn foreign_file(dir: &Path, set: &FileSet) -> Option<std::path::PathBuf> {
     })
 }
 
+/// Makes this writer's staging folder in `dir`: a name nothing has, made by `mkdir`, which
+/// fails on anything already there (a planted folder or link of the same name is passed
+/// over for the next name).
+fn new_staging(dir: &Path) -> Result<std::path::PathBuf, WriteError> {
+    let mut tries = 0;
     loop {
         let staging = temporary_name(dir, STAGING);
         match std::fs::create_dir(&staging) {
             Ok(()) => return Ok(staging),
             Err(e) if e.kind() == io::ErrorKind::AlreadyExists && tries < 100 => tries += 1,
-            Err(e) => return Err(WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED)),
+            Err(e) => return Err(WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED)),
         }
     }
 }
@@ -182,7 +187,7 @@ pub fn recover(dir: &Path) -> io::Result<Vec<String>> {
 
 fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&str) -> bool) -> Result<(), Stop> {
     let here = std::fs::symlink_metadata(staging)
-        .map_err(|e| WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED))?;
+        .map_err(|e| WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED))?;
     let mut journal = Journal { staging: Identity::of(&here), decided: false, new: Vec::new(), old: Vec::new() };
     write_journal(staging, &journal, false).map_err(|(what, e)| WriteError::new(dir, what, e, UNTOUCHED))?;
     step()?;
@@ -206,7 +211,7 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
     // next run, and one after leaves an empty folder, which the next run removes.
     std::fs::remove_dir_all(staging.join(ASIDE))
         .and_then(|()| std::fs::remove_file(staging.join(JOURNAL)))
-        .map_err(|e| WriteError::new(dir, "write-step-remove-journal", e, "write-kept-recoverable"))?;
+        .map_err(|e| WriteError::new(dir, set_steps::REMOVE_JOURNAL, e, set_steps::KEPT_RECOVERABLE))?;
     step()?;
     let _ = std::fs::remove_dir(staging);
     crate::platform::os::sync_folder(dir);
@@ -217,7 +222,7 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
 /// of it, each as the journal names it.
 fn old_set(dir: &Path, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Result<Vec<Entry>, WriteError> {
     let entries =
-        std::fs::read_dir(dir).map_err(|e| WriteError::new(dir, "write-step-list", e, "write-kept-folder"))?;
+        std::fs::read_dir(dir).map_err(|e| WriteError::new(dir, set_steps::LIST, e, set_steps::KEPT_FOLDER))?;
     // A member of the old set that the new one lacks goes only when phonglab wrote it and
     // it is unchanged since: a file that merely has a set's kind of name is never removed.
     let written = super::set_journal::written_list(dir);
@@ -230,7 +235,7 @@ fn old_set(dir: &Path, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Result<
         let is_file = entry.file_type().is_ok_and(|t| t.is_file());
         if is_file && plain_name(&name) && (new.iter().any(|e| e.name == name) || ours(&name)) {
             old.push(
-                entry_of(dir, &name).map_err(|e| WriteError::new(&dir.join(&name), "write-step-list", e, UNTOUCHED))?,
+                entry_of(dir, &name).map_err(|e| WriteError::new(&dir.join(&name), set_steps::LIST, e, UNTOUCHED))?,
             );
         }
     }
@@ -255,7 +260,7 @@ fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
         crate::platform::os::sync_folder(dir);
     };
     if let Err(e) = std::fs::create_dir(&aside) {
-        return Err(WriteError::new(dir, "write-step-create-staging", e, UNTOUCHED).into());
+        return Err(WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED).into());
     }
     for old in &j.old {
         if let Err(e) = rename_no_replace(&dir.join(&old.name), &aside.join(&old.name)) {

@@ -508,6 +508,17 @@ probe-unclamped = Colour that reached the framebuffer
 probe-stored = Stored, clamped and rounded to 8 bits
 probe-attenuation-factor = Attenuation factor, what the terms are multiplied by
 
+## io-errors
+
+write-step-create-staging = create a staging folder in
+write-step-list = list
+write-step-lock-folder = lock the folder
+write-step-recover = finish the set a stopped run left in
+write-step-remove-journal = remove the journal of
+write-step-killed = stop (killed) while writing
+write-kept-folder = the folder is unchanged
+write-kept-recoverable = the old set or the new one is whole, and the next run in this folder finishes what was started
+
 ## errors
 
 error-out-of-range = { $field } = { $value } is out of range: allowed { $allowed }
@@ -859,6 +870,7 @@ explain-column-notes = notes
 share-base-refused = the page a link opens must be an http:// or https:// address, without spaces, quotes or control characters: { $base }
 
 ## Files read and written (formats::files): shared by the command line, the window and the Python package
+
 io-not-found = it does not exist
 io-permission-denied = permission denied
 io-storage-full = the disk is full

@@ -508,6 +508,17 @@ probe-unclamped = Cor que chegou ao framebuffer
 probe-stored = Armazenada, limitada e arredondada para 8 bits
 probe-attenuation-factor = Fator de atenuação, pelo qual os termos são multiplicados
 
+## io-errors
+
+write-step-create-staging = criar uma pasta temporária em
+write-step-list = listar
+write-step-lock-folder = bloquear a pasta
+write-step-recover = terminar o conjunto deixado por uma execução interrompida em
+write-step-remove-journal = remover o diário de
+write-step-killed = parar (morto) ao escrever
+write-kept-folder = a pasta não mudou
+write-kept-recoverable = o conjunto antigo ou o novo está completo, e a próxima execução nesta pasta termina o que foi começado
+
 ## errors
 
 error-out-of-range = { $field } = { $value } está fora do intervalo: permitido { $allowed }
@@ -859,6 +870,7 @@ explain-column-notes = observações
 share-base-refused = a página que um link abre precisa ser um endereço http:// ou https://, sem espaços, aspas nem caracteres de controle: { $base }
 
 ## Files read and written (formats::files): shared by the command line, the window and the Python package
+
 io-not-found = não existe
 io-permission-denied = sem permissão
 io-storage-full = o disco está cheio

@@ -51,6 +51,29 @@ impl fmt::Display for WriteError {
     }
 }
 
+/// The steps and outcomes of writing a set of files as one (the app's `io::file_set`), as
+/// message ids: [`WriteError`]'s text looks its ids up in the core's catalogue, so these
+/// are the core's messages whoever builds the error (an id the core lacked would be said
+/// as it is: "…; write-kept-folder").
+pub mod set_steps {
+    /// Making the staging folder.
+    pub const CREATE_STAGING: &str = "write-step-create-staging";
+    /// Listing the folder.
+    pub const LIST: &str = "write-step-list";
+    /// Locking the folder.
+    pub const LOCK_FOLDER: &str = "write-step-lock-folder";
+    /// Finishing what a stopped run left.
+    pub const RECOVER: &str = "write-step-recover";
+    /// Removing the journal.
+    pub const REMOVE_JOURNAL: &str = "write-step-remove-journal";
+    /// Killed by a test.
+    pub const KILLED: &str = "write-step-killed";
+    /// The folder is as it was.
+    pub const KEPT_FOLDER: &str = "write-kept-folder";
+    /// The old set or the new one is whole; the next run finishes.
+    pub const KEPT_RECOVERABLE: &str = "write-kept-recoverable";
+}
+
 impl WriteError {
     #[doc(hidden)]
     pub fn new(path: &Path, what: &'static str, source: io::Error, kept: &'static str) -> Self {
