@@ -527,6 +527,7 @@ import-written = scene written: { $path } ({ $lights })
 budget-over = { $what } needs about { $needed }, more than the memory budget of { $budget } ({ $from }); --memory-budget SIZE raises it (e.g. --memory-budget 16G)
 budget-from-option = as --memory-budget asks
 budget-from-system = half of the memory available
+budget-from-limit = half of the address space left under this process's limit, ulimit -v
 budget-size-refused = { $value }: write a size such as 512M, 8G or 1.5G
 budget-what-render = a { $width } x { $height } picture of { $count ->
         [one] one triangle

@@ -527,6 +527,7 @@ import-written = cena escrita: { $path } ({ $lights })
 budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçamento de memória de { $budget } ({ $from }); --memory-budget TAMANHO o aumenta (por exemplo --memory-budget 16G)
 budget-from-option = como pede --memory-budget
 budget-from-system = metade da memória disponível
+budget-from-limit = metade do espaço de endereçamento que resta abaixo do limite deste processo, ulimit -v
 budget-size-refused = { $value }: escreva um tamanho como 512M, 8G ou 1,5G
 budget-what-render = uma imagem de { $width } x { $height } com { $count ->
         [one] um triângulo

@@ -4,8 +4,9 @@
 //! or exhausting the machine.
 //!
 //! The budget is `--memory-budget SIZE` where given (`512M`, `8G`, `1.5GiB`, or bytes),
-//! else half the memory the system says is available at the start
-//! ([`crate::platform::os::available_memory`]), else 4 GiB. The core's OBJ reader gets the
+//! else the smaller of half the memory the system says is available at the start
+//! ([`crate::platform::os::available_memory`]) and half the address space left under the
+//! process's limit (`ulimit -v`: [`crate::platform::os::address_space_limit`]), else 4 GiB. The core's OBJ reader gets the
 //! same budget ([`phonglab_core::mesh::obj::set_memory_budget`]).
 //!
 //! The estimates are upper bounds of what phonglab itself allocates, from its arrays'
@@ -21,8 +22,9 @@ use crate::t;
 /// The budget in bytes, once set (0: not set yet).
 static BUDGET: AtomicU64 = AtomicU64::new(0);
 
-/// Where the budget came from, for the message.
-static FROM_OPTION: AtomicU64 = AtomicU64::new(0);
+/// Where the budget came from, for the message: 0 the memory available, 1
+/// `--memory-budget`, 2 the address-space limit (`ulimit -v`).
+static FROM: AtomicU64 = AtomicU64::new(0);
 
 /// When the system does not say how much memory is available.
 const FALLBACK: u64 = 4 << 30;
@@ -30,34 +32,63 @@ const FALLBACK: u64 = 4 << 30;
 /// Sets the budget: `asked` (`--memory-budget`) or the default, for this process and for
 /// the core's OBJ reader.
 pub fn set(asked: Option<u64>) {
-    let bytes = asked.unwrap_or_else(default_budget);
+    let (bytes, from) = asked.map_or_else(default_budget, |b| (b, 1));
     BUDGET.store(bytes, Ordering::Relaxed);
-    FROM_OPTION.store(u64::from(asked.is_some()), Ordering::Relaxed);
+    FROM.store(from, Ordering::Relaxed);
     phonglab_core::mesh::obj::set_memory_budget(bytes);
 }
 
-/// Half the memory available now, or [`FALLBACK`].
-fn default_budget() -> u64 {
-    crate::platform::os::available_memory().map_or(FALLBACK, |a| a / 2)
+/// The default budget, and where it came from (1: `--memory-budget`, 0: the memory
+/// available, 2: the address-space limit): [`budget_of`] the system's numbers now.
+fn default_budget() -> (u64, u64) {
+    use crate::platform::os;
+    budget_of(os::available_memory(), os::address_space_limit(), os::address_space_in_use())
+}
+
+/// The smaller of half the memory `available` and half the address space left under the
+/// process's `limit` (`ulimit -v`) once what it takes (`in_use`) is counted, or
+/// [`FALLBACK`] where the system says neither, with where it came from (0: the memory, 2:
+/// the limit). Half of each: an allocation that grows can hold its old block and its new
+/// one at once, and the allocator reserves more address space than it fills.
+pub fn budget_of(available: Option<u64>, limit: Option<u64>, in_use: Option<u64>) -> (u64, u64) {
+    let memory = available.map(|a| a / 2);
+    let room = limit.map(|l| l.saturating_sub(in_use.unwrap_or(0)) / 2);
+    match (memory, room) {
+        (Some(m), Some(r)) if r < m => (r, 2),
+        (None, Some(r)) => (r, 2),
+        (Some(m), _) => (m, 0),
+        (None, None) => (FALLBACK, 0),
+    }
 }
 
 /// The budget in bytes (the default until [`set`] is called).
 pub fn bytes() -> u64 {
+    from_and_bytes().1
+}
+
+/// Where the budget came from (see [`FROM`]) and its bytes.
+fn from_and_bytes() -> (u64, u64) {
     match BUDGET.load(Ordering::Relaxed) {
-        0 => default_budget(),
-        b => b,
+        0 => {
+            let (bytes, from) = default_budget();
+            (from, bytes)
+        }
+        b => (FROM.load(Ordering::Relaxed), b),
     }
 }
 
 /// Refuses `what` (in words, in the user's language) when its estimate `needed` is over
 /// the budget; the message gives both and how to raise the budget.
 pub fn check(what: &str, needed: u64) -> Result<(), String> {
-    let budget = bytes();
+    let (from, budget) = from_and_bytes();
     if needed <= budget {
         return Ok(());
     }
-    let from =
-        if FROM_OPTION.load(Ordering::Relaxed) == 1 { t!("budget-from-option") } else { t!("budget-from-system") };
+    let from = match from {
+        1 => t!("budget-from-option"),
+        2 => t!("budget-from-limit"),
+        _ => t!("budget-from-system"),
+    };
     Err(t!("budget-over", what = what, needed = describe_bytes(needed), budget = describe_bytes(budget), from = from))
 }
 
@@ -160,6 +191,19 @@ mod tests {
         for bad in ["", "G", "-1G", "0", "12X", "1e30T", "nan"] {
             assert!(parse_size(bad).is_err(), "{bad:?}");
         }
+    }
+
+    /// Under `ulimit -v` the budget is half the address space left, where that is less
+    /// than half the memory available (a run that went past it aborted on an allocation).
+    #[test]
+    fn the_default_budget_is_the_smaller_of_the_memory_and_the_address_space_limit() {
+        let g = 1u64 << 30;
+        assert_eq!(budget_of(Some(16 * g), None, Some(g)), (8 * g, 0));
+        assert_eq!(budget_of(Some(16 * g), Some(4 * g), Some(g)), (3 * g / 2, 2));
+        assert_eq!(budget_of(Some(2 * g), Some(40 * g), Some(g)), (g, 0));
+        assert_eq!(budget_of(None, Some(4 * g), None), (2 * g, 2));
+        assert_eq!(budget_of(None, None, None), (FALLBACK, 0));
+        assert_eq!(budget_of(Some(16 * g), Some(g), Some(2 * g)), (0, 2), "a limit already reached");
     }
 
     #[test]

@@ -55,6 +55,39 @@ pub fn available_memory() -> Option<u64> {
     }
 }
 
+/// The most address space this process may take, in bytes (Unix: the soft `RLIMIT_AS`
+/// that `ulimit -v` sets, read by `getrlimit`); `None` where none is set, or elsewhere.
+pub fn address_space_limit() -> Option<u64> {
+    #[cfg(unix)]
+    {
+        let mut limit = libc::rlimit { rlim_cur: 0, rlim_max: 0 };
+        // SAFETY: getrlimit writes only into `limit`, a valid rlimit it is given.
+        let ok = unsafe { libc::getrlimit(libc::RLIMIT_AS, &mut limit) } == 0;
+        (ok && limit.rlim_cur != libc::RLIM_INFINITY).then_some(limit.rlim_cur as u64)
+    }
+    #[cfg(not(unix))]
+    {
+        None
+    }
+}
+
+/// The address space this process takes now, in bytes (Linux: the first field of
+/// `/proc/self/statm`, in pages); `None` where the system does not say.
+pub fn address_space_in_use() -> Option<u64> {
+    #[cfg(target_os = "linux")]
+    {
+        let text = std::fs::read_to_string("/proc/self/statm").ok()?;
+        let pages: u64 = text.split_whitespace().next()?.parse().ok()?;
+        // SAFETY: sysconf reads a constant of the system.
+        let page = unsafe { libc::sysconf(libc::_SC_PAGESIZE) };
+        Some(pages * u64::try_from(page).ok()?)
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        None
+    }
+}
+
 /// A folder held by this process until the value is dropped (see [`lock_folder`]).
 #[derive(Debug)]
 pub struct FolderLock {
@@ -179,6 +212,17 @@ mod tests {
     fn the_available_memory_is_the_systems() {
         let bytes = super::available_memory().expect("the system says");
         assert!(bytes > 64 << 20 && bytes < 1 << 50, "{bytes}");
+    }
+
+    /// `ulimit -v` is read back as the process's limit, and the process takes less.
+    #[test]
+    #[cfg(target_os = "linux")]
+    fn the_address_space_limit_is_getrlimits() {
+        let in_use = super::address_space_in_use().expect("Linux says");
+        assert!(in_use > 1 << 20, "{in_use}");
+        if let Some(limit) = super::address_space_limit() {
+            assert!(limit >= in_use, "{limit} < {in_use}");
+        }
     }
 
     /// Windows: a console event (here a closed console, as Windows sends it: the routine
