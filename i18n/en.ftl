@@ -1014,7 +1014,6 @@ student-ask-check = Check it against this scene
 student-ask-open = Open it as the scene
 student-picture-heading = Student's picture: { $file }
 student-picture-right = A: the right picture of this scene
-set-not-ours = { $path } was not written by phonglab, or was edited since it wrote it: phonglab does not replace it, and wrote nothing. To write the set here, move that file away (it keeps your edits), or choose another folder.
 student-picture-theirs = B: the student's picture
 # fix57b
 check-report-printed-twice = Steps printed more than once with different values (each printing was checked)
@@ -1022,6 +1021,7 @@ check-report-printed-twice = Steps printed more than once with different values 
 student-cause-beside = likely cause: { $words } [{ $id }] (the evidence is above the steps)
 # fix60b
 moodle-not-ours = { $path } was not written by phonglab, or has changed since: phonglab does not replace it. Move it away, or choose another --out.
+set-not-ours = { $path } was not written by phonglab, or was edited since it wrote it: phonglab does not replace it, and wrote nothing. To write the set here, move that file away (it keeps your edits), or choose another folder.
 err-category-blank = --category needs a name: it is empty or only spaces.
 err-category-slash = --category cannot start or end with "/": Moodle would read the category's path wrongly.
 err-category-long = --category is { $length } characters long; Moodle keeps a category's name in at most { $max }.

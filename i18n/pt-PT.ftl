@@ -1014,7 +1014,6 @@ student-ask-check = Corrigir com esta cena
 student-ask-open = Abrir como cena
 student-picture-heading = Imagem do aluno: { $file }
 student-picture-right = A: a imagem certa desta cena
-set-not-ours = { $path } não foi escrito pelo phonglab, ou foi editado depois de ele o escrever: o phonglab não o substitui, e não escreveu nada. Para escrever as fichas aqui, mova esse ficheiro para outro lado (guarda as suas alterações), ou escolha outra pasta.
 student-picture-theirs = B: a imagem do aluno
 # fix57b
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
@@ -1022,6 +1021,7 @@ check-report-printed-twice = Passos impressos mais de uma vez com valores difere
 student-cause-beside = causa provável: { $words } [{ $id }] (a prova está acima dos passos)
 # fix60b
 moodle-not-ours = { $path } não foi escrito pelo phonglab, ou foi alterado desde então: o phonglab não o substitui. Mova-o para outro lado, ou escolha outro --out.
+set-not-ours = { $path } não foi escrito pelo phonglab, ou foi editado depois de ele o escrever: o phonglab não o substitui, e não escreveu nada. Para escrever as fichas aqui, mova esse ficheiro para outro lado (guarda as suas alterações), ou escolha outra pasta.
 err-category-blank = --category precisa de um nome: está vazio ou só tem espaços.
 err-category-slash = --category não pode começar nem acabar em "/": o Moodle leria mal o caminho da categoria.
 err-category-long = --category tem { $length } caracteres; o Moodle guarda o nome de uma categoria em { $max }, no máximo.

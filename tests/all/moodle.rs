@@ -209,6 +209,7 @@ fn moodle_xml_of_levels_1_to_4_holds_one_cloze_per_variant_in_one_category_per_e
         let name = format!(
             "exercise 2, variant 3: key exercise-06-key.md of phonglab exercise --seed 5 --count 6 --level {level} --rules worksheet --lang en"
         );
+        assert_eq!(qs[7]["name"], name.as_str());
     }
 }
 
@@ -464,7 +465,6 @@ fn an_exam_sheet_says_no_calculator_at_the_top_and_its_key_exact_and_rounded() {
     let text = Command::new("pdftotext").arg(dir.join("sheets.pdf")).arg("-").output().expect("pdftotext");
     let text = String::from_utf8_lossy(&text.stdout);
     assert!(text.trim_start().starts_with("No calculator"), "{}", &text[..200.min(text.len())]);
-    let key = std::fs::read_to_string(dir.join("exercise-01-key.md")).unwrap();
     // No seed on what students get (it reproduces the key): the sheet says "exam exercise
     // 1"; the key, the teacher's, keeps it.
     assert!(!text.contains("seed") && text.contains("exam exercise 1"), "{text}");
@@ -472,6 +472,7 @@ fn an_exam_sheet_says_no_calculator_at_the_top_and_its_key_exact_and_rounded() {
     assert!(!sheet.contains("seed"), "{sheet}");
     let keys = Command::new("pdftotext").arg(dir.join("keys.pdf")).arg("-").output().expect("pdftotext");
     assert!(String::from_utf8_lossy(&keys.stdout).contains("(seed 1)"));
+    let key = std::fs::read_to_string(dir.join("exercise-01-key.md")).unwrap();
     assert!(key.contains("(exact) ≈") && key.contains("(rounded to four significant digits)"), "{key}");
     // Four significant digits written as four, trailing zeros kept: 0.1360, not 0.136.
     for line in key.lines().filter(|l| l.contains("(exact) ≈")) {
