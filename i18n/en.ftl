@@ -1027,3 +1027,18 @@ err-category-slash = --category cannot start or end with "/": Moodle would read 
 err-category-long = --category is { $length } characters long; Moodle keeps a category's name in at most { $max }.
 err-worksheet-moodle = --worksheet writes exercise 0 into the sheets only; a file for Moodle takes --level or --effects.
 budget-what-moodle = a file for Moodle of { $count } exercises (about { $size } on disk)
+
+## arg-errors
+
+arg-error-invalid-value = { $arg } does not take { $value }: it takes { $values }.
+arg-error-missing-value = { $arg } needs a value.
+arg-error-out-of-range = { $arg } takes a whole number from { $low } to { $high }, not { $value }.
+arg-error-not-whole = { $arg } takes a whole number, not { $value }.
+arg-error-not-number = { $arg } takes a number, not { $value }.
+arg-error-refused-value = { $arg } does not take { $value }: { $reason }
+arg-error-unknown = phonglab has no option { $arg }.
+arg-error-did-you-mean = Did you mean { $suggestion }?
+arg-error-unknown-command = phonglab has no command { $name }.
+arg-error-missing = Missing: { $args }.
+arg-error-conflict = The option { $arg } cannot be used with { $other }.
+arg-error-more = See { $help }.

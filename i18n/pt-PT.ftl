@@ -1027,3 +1027,18 @@ err-category-slash = --category não pode começar nem acabar em "/": o Moodle l
 err-category-long = --category tem { $length } caracteres; o Moodle guarda o nome de uma categoria em { $max }, no máximo.
 err-worksheet-moodle = --worksheet escreve o exercício 0 só nas fichas; um ficheiro para o Moodle usa --level ou --effects.
 budget-what-moodle = um ficheiro para o Moodle com { $count } exercícios (cerca de { $size } em disco)
+
+## arg-errors
+
+arg-error-invalid-value = { $arg } não aceita { $value }: aceita { $values }.
+arg-error-missing-value = { $arg } precisa de um valor.
+arg-error-out-of-range = { $arg } aceita um número inteiro de { $low } a { $high }, não { $value }.
+arg-error-not-whole = { $arg } aceita um número inteiro, não { $value }.
+arg-error-not-number = { $arg } aceita um número, não { $value }.
+arg-error-refused-value = { $arg } não aceita { $value }: { $reason }
+arg-error-unknown = O phonglab não tem a opção { $arg }.
+arg-error-did-you-mean = Queria dizer { $suggestion }?
+arg-error-unknown-command = O phonglab não tem o comando { $name }.
+arg-error-missing = Falta indicar { $args }.
+arg-error-conflict = A opção { $arg } não pode ser usada com { $other }.
+arg-error-more = Veja { $help }.

@@ -3,6 +3,7 @@
 //! The doc comments below describe the arguments to readers of the code; what a user reads
 //! in `--help` comes from the message catalogue, in their language ([`crate::cli::help`]).
 
+pub mod arg_errors;
 pub mod bench;
 pub mod case;
 pub mod check;
@@ -91,13 +92,16 @@ impl Cli {
         let lang = asked.unwrap_or_else(crate::platform::language::system);
         crate::locale::set_default(crate::locale::Locale::of(lang));
         let mut cmd = crate::cli::help::localised(Cli::command());
-        let matches = cmd.try_get_matches_from_mut(std::env::args_os()).unwrap_or_else(|e| exit_escaped(&e));
+        // The command the line names, for where its help is.
+        let command = args.iter().skip(1).find(|a| cmd.get_subcommands().any(|s| s.get_name() == a.as_str())).cloned();
+        let command = command.as_deref();
+        let matches = cmd.try_get_matches_from_mut(std::env::args_os()).unwrap_or_else(|e| exit_escaped(&e, command));
         if let Some(("help", asked)) = matches.subcommand() {
             let names = asked.get_many::<String>("command").into_iter().flatten();
             crate::cli::help::print_help_of(&mut cmd, names);
             std::process::exit(0);
         }
-        Cli::from_arg_matches(&matches).unwrap_or_else(|e| exit_escaped(&e))
+        Cli::from_arg_matches(&matches).unwrap_or_else(|e| exit_escaped(&e, command))
     }
 
     /// The locale the command line asks for: `--lang` over the system's, `--decimal` over
@@ -110,15 +114,18 @@ impl Cli {
 }
 
 /// Ends the program on clap's error `e` as clap would (its exit code, help and version on
-/// the standard output), but with what it echoes of the command line (a bad value, an
-/// unknown option) written visibly where it holds control characters.
-fn exit_escaped(e: &clap::Error) -> ! {
+/// the standard output), but said in the catalogue's words where its kind is a common one
+/// ([`arg_errors`]), and otherwise with what it echoes of the command line (a bad value,
+/// an unknown option) written visibly where it holds control characters.
+fn exit_escaped(e: &clap::Error, command: Option<&str>) -> ! {
     use clap::error::ErrorKind;
     if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
         e.exit()
     }
-    let text = e.render().to_string();
-    eprint!("{}", phonglab_core::escape::terminal::lines(&text));
+    match arg_errors::message(e, command) {
+        Some(said) => eprint!("{said}"),
+        None => eprint!("{}", phonglab_core::escape::terminal::lines(&e.render().to_string())),
+    }
     std::process::exit(e.exit_code())
 }
 

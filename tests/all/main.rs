@@ -14,6 +14,7 @@ mod common;
 
 mod check;
 mod cli;
+mod cli_errors;
 mod cli_help;
 mod diagnose;
 mod director;

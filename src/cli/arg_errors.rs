@@ -1,0 +1,144 @@
+//! The command line's own errors (a value out of range, a missing value, an unknown
+//! option...) in the catalogue's words, in the language asked for: clap writes them in
+//! English, so its error's kind and context (the argument, the value, the values it takes)
+//! are said again through the catalogue. Kinds not said here keep clap's text. The exit
+//! code stays clap's (2).
+
+use clap::error::{ContextKind, ContextValue, ErrorKind};
+
+use crate::t;
+
+/// The message for clap's error `e` in the current language, ending with where the help
+/// is (`phonglab exercise --help`, `command` being the subcommand the line named); `None`
+/// for a kind said by clap itself.
+pub fn message(e: &clap::Error, command: Option<&str>) -> Option<String> {
+    let said = match e.kind() {
+        ErrorKind::InvalidValue => invalid_value(e),
+        ErrorKind::ValueValidation => refused_value(e),
+        ErrorKind::UnknownArgument => unknown_argument(e),
+        ErrorKind::InvalidSubcommand => {
+            let name = shown(&string(e, ContextKind::InvalidSubcommand)?);
+            Some(with_suggestion(t!("arg-error-unknown-command", name = name), e, ContextKind::SuggestedSubcommand))
+        }
+        ErrorKind::MissingRequiredArgument => {
+            let args: Vec<String> = strings(e, ContextKind::InvalidArg).iter().map(|a| arg_name(a)).collect();
+            (!args.is_empty()).then(|| t!("arg-error-missing", args = args.join(", ")))
+        }
+        ErrorKind::ArgumentConflict => {
+            let arg = arg_name(&string(e, ContextKind::InvalidArg)?);
+            let other: Vec<String> = strings(e, ContextKind::PriorArg).iter().map(|a| arg_name(a)).collect();
+            Some(t!("arg-error-conflict", arg = arg, other = other.join(", ")))
+        }
+        ErrorKind::NoEquals | ErrorKind::TooFewValues | ErrorKind::WrongNumberOfValues => {
+            Some(t!("arg-error-missing-value", arg = arg_name(&string(e, ContextKind::InvalidArg)?)))
+        }
+        _ => None,
+    }?;
+    let help = match command {
+        Some(c) => format!("phonglab {c} --help"),
+        None => "phonglab --help".to_string(),
+    };
+    Some(format!("phonglab: {said}\n{}\n", t!("arg-error-more", help = help)))
+}
+
+/// A value not among those the argument takes, or no value at all.
+fn invalid_value(e: &clap::Error) -> Option<String> {
+    let arg = arg_name(&string(e, ContextKind::InvalidArg)?);
+    let value = string(e, ContextKind::InvalidValue).unwrap_or_default();
+    if value.is_empty() {
+        return Some(t!("arg-error-missing-value", arg = arg));
+    }
+    let values = strings(e, ContextKind::ValidValue).join(", ");
+    let said = t!("arg-error-invalid-value", arg = arg, value = shown(&value), values = values);
+    Some(with_suggestion(said, e, ContextKind::SuggestedValue))
+}
+
+/// A value its parser refused: out of range, not a number, or refused by phonglab's own
+/// parser, whose reason is already in the catalogue's words.
+fn refused_value(e: &clap::Error) -> Option<String> {
+    let arg = arg_name(&string(e, ContextKind::InvalidArg)?);
+    let value = string(e, ContextKind::InvalidValue).unwrap_or_default();
+    let source = std::error::Error::source(e)?;
+    if source.downcast_ref::<std::num::ParseIntError>().is_some() {
+        return Some(t!("arg-error-not-whole", arg = arg, value = shown(&value)));
+    }
+    if source.downcast_ref::<std::num::ParseFloatError>().is_some() {
+        return Some(t!("arg-error-not-number", arg = arg, value = shown(&value)));
+    }
+    let reason = source.to_string();
+    if let Some((low, high)) = range_of(&reason) {
+        return Some(t!("arg-error-out-of-range", arg = arg, low = low, high = high, value = shown(&value)));
+    }
+    Some(t!("arg-error-refused-value", arg = arg, value = shown(&value), reason = reason))
+}
+
+/// The bounds of clap's range refusal, "0 is not in 1..=100" (or `1..101`, an upper bound
+/// left out): (1, 100).
+fn range_of(reason: &str) -> Option<(String, String)> {
+    let (_, bounds) = reason.split_once(" is not in ")?;
+    let (low, high) = bounds.split_once("..")?;
+    let low: i128 = low.trim().parse().ok()?;
+    let high: i128 = match high.strip_prefix('=') {
+        Some(h) => h.trim().parse().ok()?,
+        None => high.trim().parse::<i128>().ok()? - 1,
+    };
+    Some((low.to_string(), high.to_string()))
+}
+
+fn unknown_argument(e: &clap::Error) -> Option<String> {
+    let arg = shown(&string(e, ContextKind::InvalidArg)?);
+    Some(with_suggestion(t!("arg-error-unknown", arg = arg), e, ContextKind::SuggestedArg))
+}
+
+/// `said`, then "Did you mean X?" where clap has a suggestion of that kind.
+fn with_suggestion(said: String, e: &clap::Error, kind: ContextKind) -> String {
+    match strings(e, kind).first() {
+        Some(s) => format!("{said} {}", t!("arg-error-did-you-mean", suggestion = arg_name(s))),
+        None => said,
+    }
+}
+
+/// One text of the error's context.
+fn string(e: &clap::Error, kind: ContextKind) -> Option<String> {
+    match e.get(kind)? {
+        ContextValue::String(s) => Some(s.clone()),
+        ContextValue::Strings(s) => s.first().cloned(),
+        ContextValue::StyledStr(s) => Some(s.to_string()),
+        _ => None,
+    }
+}
+
+/// The texts of the error's context.
+fn strings(e: &clap::Error, kind: ContextKind) -> Vec<String> {
+    match e.get(kind) {
+        Some(ContextValue::String(s)) => vec![s.clone()],
+        Some(ContextValue::Strings(s)) => s.clone(),
+        Some(ContextValue::StyledStr(s)) => vec![s.to_string()],
+        Some(ContextValue::StyledStrs(s)) => s.iter().map(ToString::to_string).collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// An argument as people type it: `--variants`, not clap's `--variants <VARIANTS>` (a
+/// positional one keeps its `<NAME>`).
+fn arg_name(arg: &str) -> String {
+    let name = if arg.starts_with('-') { arg.split(' ').next().unwrap_or(arg) } else { arg };
+    phonglab_core::escape::terminal::text(name)
+}
+
+/// What the user typed, quoted, as the terminal may show it (no escape sequence).
+fn shown(value: &str) -> String {
+    format!("\"{}\"", phonglab_core::escape::terminal::text(value))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::range_of;
+
+    #[test]
+    fn clap_ranges_are_read_inclusive() {
+        assert_eq!(range_of("0 is not in 1..=100"), Some(("1".into(), "100".into())));
+        assert_eq!(range_of("9 is not in 1..6"), Some(("1".into(), "5".into())));
+        assert_eq!(range_of("invalid digit found in string"), None);
+    }
+}
