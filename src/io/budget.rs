@@ -50,7 +50,7 @@ fn default_budget() -> (u64, u64) {
 /// [`FALLBACK`] where the system says neither, with where it came from (0: the memory, 2:
 /// the limit). Half of each: an allocation that grows can hold its old block and its new
 /// one at once, and the allocator reserves more address space than it fills.
-pub fn budget_of(available: Option<u64>, limit: Option<u64>, in_use: Option<u64>) -> (u64, u64) {
+fn budget_of(available: Option<u64>, limit: Option<u64>, in_use: Option<u64>) -> (u64, u64) {
     let memory = available.map(|a| a / 2);
     let room = limit.map(|l| l.saturating_sub(in_use.unwrap_or(0)) / 2);
     match (memory, room) {
