@@ -13,6 +13,7 @@
 //! explains all the same (no scale for `GL_NORMALIZE`, no spot to leave out) is left out of
 //! the comparison and listed as not visible.
 
+mod calls;
 mod colours;
 mod drawing;
 mod fit;
