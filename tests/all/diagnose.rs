@@ -310,7 +310,7 @@ fn each_new_rows_mistake_in_a_mesa_export_is_named_first() {
         (custom("cor.toml"), "cor", "colour-material-ambient-and-diffuse"),
         (custom("palco.toml"), "palco", "spot-cutoff-cosine"),
         (shipped("redbook-teapots/09-chrome.toml"), "09-chrome", "material-colour-0-255"),
-        (custom("cor.toml"), "cor", "light-not-normalised"),
+        (custom("cor.toml"), "cor", "vlv-not-normalised"),
         (custom("direcional.toml"), "direcional", "light-diffuse-on-previous"),
         (shipped("phong-demo.toml"), "phong-demo", "positions-as-normals"),
         (shipped("gouraud-misses-the-highlight.toml"), "gouraud-misses-the-highlight", "scene-ambient-default"),

@@ -2,14 +2,14 @@
 //! (the scene's ambient, a light's specular), given to the wrong light, face or side, on
 //! the wrong scale (0..255), refused by OpenGL (a shininess over 128), reversed (a
 //! directional light's direction), or the wrong data given (positions as normals). Rows of
-//! [`super::MISTAKES`], each a change of the drawing as in `mistakes.rs`.
+//! [`super::MISTAKES`], each a change of the drawing.
 
 use glam::{DMat3, DVec4};
 
 use crate::model::scene::{ColorMaterialMode, Face, Light, Material, NormalMode};
 
+use super::change::{At, back_only, each_material, the_light};
 use super::drawing::Drawing;
-use super::mistakes::{At, back_only, each_material, the_light};
 
 /// A light's specular colour never set: OpenGL's default, white for light 0, black for
 /// the others.

@@ -6,7 +6,7 @@
 use glam::{DMat3, DVec4};
 
 use crate::model::rules::{RuleSet, SpecularModel};
-use crate::model::scene::{ColorMaterialMode, Light, LightPlacement, Material, NormalMode};
+use crate::model::scene::{ColorMaterialMode, Light, LightPlacement, NormalMode};
 use crate::model::view::ShadingMode;
 
 use super::calls::{
@@ -15,14 +15,12 @@ use super::calls::{
     material_colours_255, material_diffuse_255, material_front_only, positions_as_normals, rescale_for_normalize,
     scene_ambient_default, shininess_refused, spot_cutoff_cosine,
 };
-use super::colours::{self, Colours};
+use super::change::{At, back_only, each_material, the_light};
+use super::colours;
 use super::drawing::Drawing;
-use super::sides::{self, Sides};
+use super::sides;
 use super::slips;
-use super::values::{
-    self, Values, attenuation_constant_differs, attenuation_linear_differs, attenuation_quadratic_differs,
-    shininess_differs, spot_cutoff_differs, spot_exponent_differs,
-};
+use super::values;
 
 /// Where a mistake is made: once for the scene, or for each light in turn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -31,22 +29,6 @@ pub enum Scope {
     Scene,
     /// For each light alone, named with the light.
     EachLight,
-}
-
-/// What a mistake is made with: the light (for [`Scope::EachLight`]) and the emission fitted
-/// from the student's picture (for `emission-added`).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct At {
-    /// The light's index (`GL_LIGHTn`); 0 for a mistake of the whole scene.
-    pub light: usize,
-    /// The emission the picture shows beyond the right one (linear RGB, 0 to 1).
-    pub emission: [f64; 3],
-    /// The products of colours the picture shows, term by term (for `colours-differ`).
-    pub colours: Option<Colours>,
-    /// The single numbers the picture shows (for `spot-cutoff-differs` and its kin).
-    pub values: Values,
-    /// Each side's material colours the picture shows (for `materials-differ`).
-    pub sides: Option<Sides>,
 }
 
 /// A mistake a picture can show: its id (kebab-case, the same as `phonglab check`'s where
@@ -248,33 +230,6 @@ fn spot_left_out(d: &mut Drawing, _: At) -> bool {
     true
 }
 
-/// Each side's `glMaterial` values changed by `change`; false when it changed none.
-pub(super) fn each_material(d: &mut Drawing, change: impl Fn(&mut Material)) -> bool {
-    let mut changed = false;
-    for m in std::iter::once(&mut d.scene.material).chain(d.scene.back_material.as_mut()) {
-        let before = m.clone();
-        change(m);
-        changed |= *m != before;
-    }
-    changed
-}
-
-/// Light `at.light` changed by `change` where `applies` holds for it.
-pub(super) fn the_light(
-    d: &mut Drawing,
-    at: At,
-    applies: impl Fn(&Light) -> bool,
-    change: impl Fn(&mut Light),
-) -> bool {
-    match d.scene.lights.get_mut(at.light) {
-        Some(l) if applies(l) => {
-            change(l);
-            true
-        }
-        _ => false,
-    }
-}
-
 /// Shininess given as the 0-1 value of a material table (0.4) instead of `0.4 * 128`.
 fn shininess_fraction(d: &mut Drawing, _: At) -> bool {
     each_material(d, |m| m.shininess /= 128.0)
@@ -434,20 +389,6 @@ fn directional_as_point(d: &mut Drawing, at: At) -> bool {
     the_light(d, at, Light::is_directional, |l| l.position.w = 1.0)
 }
 
-/// The material's properties `part` given for `GL_BACK` only: the back keeps the scene's
-/// material, the front OpenGL's defaults for them.
-pub(super) fn back_only(d: &mut Drawing, part: fn(&mut Material, &Material)) -> bool {
-    let given = d.scene.material.clone();
-    let mut front = given.clone();
-    part(&mut front, &Material::default());
-    if front == given {
-        return false;
-    }
-    d.scene.back_material.get_or_insert(given);
-    d.scene.material = front;
-    true
-}
-
 /// The material's diffuse colour given for `GL_BACK` only.
 fn diffuse_back_only(d: &mut Drawing, _: At) -> bool {
     back_only(d, |m, gl| m.diffuse = gl.diffuse)
@@ -549,6 +490,45 @@ fn ambient_diffuse_swapped(d: &mut Drawing, _: At) -> bool {
 fn light_diffuse_left_out(d: &mut Drawing, at: At) -> bool {
     let default = Light::gl_default(at.light).diffuse;
     the_light(d, at, |l| l.diffuse != default, |l| l.diffuse = default)
+}
+
+/// Light number `k` set to the value fitted from the picture.
+fn light_value_fitted(d: &mut Drawing, at: At, k: usize) -> bool {
+    match (at.values.lights.get(at.light).and_then(|l| l[k]), d.scene.lights.get_mut(at.light)) {
+        (Some((picture, _)), Some(l)) => {
+            values::set_light_value(l, k, picture);
+            true
+        }
+        _ => false,
+    }
+}
+
+fn spot_cutoff_differs(d: &mut Drawing, at: At) -> bool {
+    light_value_fitted(d, at, 0)
+}
+
+fn spot_exponent_differs(d: &mut Drawing, at: At) -> bool {
+    light_value_fitted(d, at, 1)
+}
+
+fn attenuation_constant_differs(d: &mut Drawing, at: At) -> bool {
+    light_value_fitted(d, at, 2)
+}
+
+fn attenuation_linear_differs(d: &mut Drawing, at: At) -> bool {
+    light_value_fitted(d, at, 3)
+}
+
+fn attenuation_quadratic_differs(d: &mut Drawing, at: At) -> bool {
+    light_value_fitted(d, at, 4)
+}
+
+/// The shininess set to the value fitted from the picture.
+fn shininess_differs(d: &mut Drawing, at: At) -> bool {
+    match at.values.shininess {
+        Some((picture, _)) => each_material(d, |m| m.shininess = picture),
+        None => false,
+    }
 }
 
 /// The spot cutoff doubled (the cone's full angle given for its half), within 90 degrees.
@@ -695,7 +675,7 @@ pub const MISTAKES: [PictureMistake; 88] = [
     row("vlv-reversed", "diagnose-vlv-reversed", |d, _| slips::light_reversed(d)),
     row("viewer-reversed", "diagnose-viewer-reversed", |d, _| slips::viewer_reversed(d)),
     row("halfway-not-normalised", "diagnose-halfway-not-normalised", |d, _| slips::halfway_not_normalised(d)),
-    row("light-not-normalised", "diagnose-light-not-normalised", |d, _| slips::light_not_normalised(d)),
+    row("vlv-not-normalised", "diagnose-light-not-normalised", |d, _| slips::light_not_normalised(d)),
     row("reflection-reversed", "diagnose-reflection-reversed", |d, _| slips::reflection_reversed(d)),
     row("flat-shade-model", "diagnose-flat-shade-model", |d, _| slips::flat_shade_model(d)),
     row("view-order-reversed", "diagnose-view-order-reversed", |d, _| slips::view_order_reversed(d)),

@@ -14,6 +14,7 @@
 //! the comparison and listed as not visible.
 
 mod calls;
+mod change;
 mod colours;
 mod drawing;
 mod fit;
@@ -22,9 +23,10 @@ mod sides;
 mod slips;
 mod values;
 
+pub use change::At;
 pub use colours::Colours;
 pub use drawing::Drawing;
-pub use mistakes::{At, MISTAKES, PictureMistake, Scope, offered};
+pub use mistakes::{MISTAKES, PictureMistake, Scope, offered};
 pub use sides::Sides;
 
 use crate::model::error::SceneError;

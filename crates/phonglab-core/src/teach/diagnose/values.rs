@@ -15,7 +15,6 @@ use crate::model::scene::{Light, MAX_LIGHTS};
 use crate::teach::picture_match::compare;
 
 use super::drawing::Drawing;
-use super::mistakes::At;
 
 /// The numbers of a light, in the order of [`Values::lights`].
 pub const LIGHT_NAMES: [&str; 5] = [
@@ -186,47 +185,6 @@ pub fn drawings(right: &Drawing) -> usize {
     let lights: usize =
         right.scene.lights.iter().map(|l| (0..LIGHT_NAMES.len()).filter(|&k| used(l, k)).map(per).sum::<usize>()).sum();
     lights + per(5)
-}
-
-// The rows of the table that set a fitted number.
-
-/// Light number `k` set to the value fitted from the picture.
-fn light_value_fitted(d: &mut Drawing, at: At, k: usize) -> bool {
-    match (at.values.lights.get(at.light).and_then(|l| l[k]), d.scene.lights.get_mut(at.light)) {
-        (Some((picture, _)), Some(l)) => {
-            set_light_value(l, k, picture);
-            true
-        }
-        _ => false,
-    }
-}
-
-pub(super) fn spot_cutoff_differs(d: &mut Drawing, at: At) -> bool {
-    light_value_fitted(d, at, 0)
-}
-
-pub(super) fn spot_exponent_differs(d: &mut Drawing, at: At) -> bool {
-    light_value_fitted(d, at, 1)
-}
-
-pub(super) fn attenuation_constant_differs(d: &mut Drawing, at: At) -> bool {
-    light_value_fitted(d, at, 2)
-}
-
-pub(super) fn attenuation_linear_differs(d: &mut Drawing, at: At) -> bool {
-    light_value_fitted(d, at, 3)
-}
-
-pub(super) fn attenuation_quadratic_differs(d: &mut Drawing, at: At) -> bool {
-    light_value_fitted(d, at, 4)
-}
-
-/// The shininess set to the value fitted from the picture.
-pub(super) fn shininess_differs(d: &mut Drawing, at: At) -> bool {
-    match at.values.shininess {
-        Some((picture, _)) => super::mistakes::each_material(d, |m| m.shininess = picture),
-        None => false,
-    }
 }
 
 #[cfg(test)]
