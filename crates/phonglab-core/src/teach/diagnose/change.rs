@@ -9,7 +9,7 @@ use super::drawing::Drawing;
 use super::sides::Sides;
 use super::values::Values;
 
-/// What a mistake is made with: the light (for [`Scope::EachLight`]) and the emission fitted
+/// What a mistake is made with: the light (for [`super::Scope::EachLight`]) and the emission fitted
 /// from the student's picture (for `emission-added`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct At {
