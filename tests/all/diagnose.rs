@@ -292,6 +292,43 @@ fn the_pyopengl_export_under_mesa_is_right_and_its_edited_state_is_named() {
     }
 }
 
+/// Each mistake that blind10 found no row for, and the other rows of one call's mistake,
+/// in a PyOpenGL export run by Mesa (`tests/data/diagnose_mesa/SCENE-ID.png`; the README
+/// says which edit drew each): named first, or among the first causes that draw the same
+/// picture (`same_picture`, the table's order).
+#[test]
+fn each_new_rows_mistake_in_a_mesa_export_is_named_first() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let data = root.join("tests/data/diagnose_mesa");
+    let shipped = |name: &str| root.join("assets/scenes").join(name);
+    let custom = |name: &str| data.join(name);
+    let cases = [
+        (custom("direcional.toml"), "direcional", "directional-reversed"),
+        (custom("cor.toml"), "cor", "colour-material-ambient-and-diffuse"),
+        (custom("palco.toml"), "palco", "spot-cutoff-cosine"),
+        (shipped("redbook-teapots/09-chrome.toml"), "09-chrome", "material-colour-0-255"),
+        (custom("cor.toml"), "cor", "vlv-not-normalised"),
+        (custom("direcional.toml"), "direcional", "light-diffuse-on-previous"),
+        (shipped("phong-demo.toml"), "phong-demo", "positions-as-normals"),
+        (shipped("gouraud-misses-the-highlight.toml"), "gouraud-misses-the-highlight", "scene-ambient-default"),
+        (shipped("three-lights.toml"), "three-lights", "light-specular-left-out"),
+        (shipped("redbook-teapots/09-chrome.toml"), "09-chrome", "light-ambient-diffuse-swapped"),
+        (shipped("of-set-color.toml"), "of-set-color", "colour-material-wrong-face"),
+        (shipped("three-lights.toml"), "three-lights", "shininess-refused"),
+        (shipped("three-lights.toml"), "three-lights", "light-specular-on-previous"),
+        (custom("tubo.toml"), "tubo", "material-front-only"),
+        (custom("palco.toml"), "palco", "emission-back-only"),
+        (shipped("phong-demo.toml"), "phong-demo", "reflection-reversed"),
+    ];
+    for (scene, name, id) in cases {
+        let v = diagnose_json(&scene, &data.join(format!("{name}-{id}.png")));
+        assert_eq!(v["verdict"], "wrong", "{name} {id}: {v:#}");
+        let first = v["causes"][0]["id"] == id;
+        let tied = v["same_picture"].as_array().is_some_and(|same| same.iter().any(|c| c["id"] == id));
+        assert!(first || tied, "{name} {id}: {v:#}");
+    }
+}
+
 /// `scene` (a path from the repository's root) drawn as `diagnose` draws it, in `mode`, at
 /// SIZE; with `last_corner`, each triangle's colour taken from its last corner instead of
 /// the provoking vertex GLU sends. Its pixels and coverage.

@@ -720,6 +720,24 @@ diagnose-flat-shade-model = glShadeModel(GL_FLAT) instead of GL_SMOOTH: each fac
 diagnose-view-order-reversed = The object's modelview multiplied in the wrong order (rotation × translation instead of translation × rotation): the object is drawn and lit away from its place
 diagnose-view-order-reversed-lights = The view matrix multiplied in the wrong order (rotation × translation instead of translation × rotation), for the object and the lights placed under it
 diagnose-view-order-reversed-lights-only = The lights' view matrix multiplied in the wrong order (rotation × translation instead of translation × rotation): the lights placed in the world are placed wrongly; the object is drawn right
+diagnose-shininess-refused = GL_SHININESS given over 128 (a 0–1 value multiplied by 128 twice, or a 0–1000 scale): OpenGL refuses the call (GL_INVALID_VALUE) and the shininess stays at its default, 0: the specular colour spread over the whole lit side
+diagnose-directional-reversed = The direction of light { $light } (GL_LIGHT{ $light }) reversed: GL_POSITION (x, y, z, 0) given as the direction the light travels instead of the direction towards the light, so the object is lit from the opposite side
+diagnose-scene-ambient-default = The scene's ambient light (glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ...)) never set: OpenGL's default (0.2, 0.2, 0.2, 1)
+diagnose-light-specular-left-out = The specular colour of light { $light } (GL_LIGHT{ $light }) never set: OpenGL's default, white for GL_LIGHT0 and black for the others
+diagnose-light-ambient-diffuse-swapped = The ambient and diffuse colours of light { $light } (GL_LIGHT{ $light }) swapped
+diagnose-light-diffuse-on-previous = The diffuse colour of light { $light } given to GL_LIGHT{ $previous } (a copied block whose light number was not changed): GL_LIGHT{ $previous } takes it and GL_LIGHT{ $light } keeps OpenGL's default
+diagnose-light-specular-on-previous = The specular colour of light { $light } given to GL_LIGHT{ $previous } (a copied block whose light number was not changed): GL_LIGHT{ $previous } takes it and GL_LIGHT{ $light } keeps OpenGL's default
+diagnose-positions-as-normals = The vertex positions given as normals (glNormal3fv(position)): each normal points from the object's centre and its length is the point's distance (the radius, on a sphere), which lights it wrongly without GL_NORMALIZE
+diagnose-colour-material-ambient-and-diffuse = glColorMaterial tracking GL_AMBIENT_AND_DIFFUSE instead of GL_DIFFUSE only: the current colour replaces the material's ambient too
+diagnose-colour-material-wrong-face = glColorMaterial given the wrong face (GL_BACK for GL_FRONT, or the other way round): the faces seen keep the glMaterial colours instead of the current colour
+diagnose-spot-cutoff-cosine = The spot cutoff of light { $light } (GL_LIGHT{ $light }) given as its cosine (math.cos(math.radians(…)), about 0.99): OpenGL takes GL_SPOT_CUTOFF in degrees, so the cone is less than one degree wide
+diagnose-material-front-only = Two-sided lighting with the glMaterial calls given for GL_FRONT only: the back faces keep OpenGL's default material
+diagnose-emission-back-only = The material's emission given for GL_BACK only: the front faces keep OpenGL's default, black
+diagnose-material-diffuse-0-255 = The material's diffuse colour given in 0..255 instead of 0..1 (102 for 0.4): the diffuse term saturates wherever the light reaches
+diagnose-material-colours-0-255 = The material's colours (ambient, diffuse, specular) given in 0..255 instead of 0..1: the object saturates
+diagnose-light-not-normalised = In the shader, a positional light's L is not normalised (L = light − P without dividing by its length d): N·L and the spot's cosine grow with the distance
+diagnose-reflection-reversed = In the shader, R reflected the wrong way (reflect(L, N) instead of reflect(-L, N)): the highlight appears on the opposite side from where it belongs
+diagnose-rescale-for-normalize = GL_RESCALE_NORMAL enabled where GL_NORMALIZE is needed: under a scale that is not uniform the normals are rescaled but not made unit length
 diagnose-same-picture = { $ids } draw the same picture: it cannot tell them apart, and they are listed in the table's order (one changed value before a value fitted from the picture). Check which one the program holds.
 
 ## phonglab check: a student's work checked

@@ -720,6 +720,24 @@ diagnose-flat-shade-model = glShadeModel(GL_FLAT) em vez de GL_SMOOTH: cada face
 diagnose-view-order-reversed = A modelview do objeto multiplicada pela ordem errada (rotação × translação em vez de translação × rotação): o objeto é desenhado e iluminado fora do seu lugar
 diagnose-view-order-reversed-lights = A matriz de vista multiplicada pela ordem errada (rotação × translação em vez de translação × rotação), para o objeto e para as luzes colocadas com ela
 diagnose-view-order-reversed-lights-only = A matriz de vista das luzes multiplicada pela ordem errada (rotação × translação em vez de translação × rotação): as luzes colocadas no mundo ficam no sítio errado; o objeto é desenhado bem
+diagnose-shininess-refused = GL_SHININESS dado acima de 128 (um valor de 0 a 1 multiplicado por 128 duas vezes, ou numa escala de 0 a 1000): o OpenGL recusa a chamada (GL_INVALID_VALUE) e o brilho fica no valor por omissão, 0: a cor especular espalhada por todo o lado iluminado
+diagnose-directional-reversed = A direção da luz { $light } (GL_LIGHT{ $light }) invertida: o GL_POSITION (x, y, z, 0) dado como a direção em que a luz segue em vez da direção que aponta para a luz, por isso o objeto é iluminado do lado oposto
+diagnose-scene-ambient-default = A luz ambiente da cena (glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ...)) nunca definida: o valor por omissão do OpenGL (0,2, 0,2, 0,2, 1)
+diagnose-light-specular-left-out = A cor especular da luz { $light } (GL_LIGHT{ $light }) nunca definida: o valor por omissão do OpenGL, branco para GL_LIGHT0 e preto para as outras
+diagnose-light-ambient-diffuse-swapped = As cores ambiente e difusa da luz { $light } (GL_LIGHT{ $light }) trocadas
+diagnose-light-diffuse-on-previous = A cor difusa da luz { $light } dada a GL_LIGHT{ $previous } (um bloco copiado em que o número da luz não foi mudado): GL_LIGHT{ $previous } fica com ela e GL_LIGHT{ $light } fica com o valor por omissão do OpenGL
+diagnose-light-specular-on-previous = A cor especular da luz { $light } dada a GL_LIGHT{ $previous } (um bloco copiado em que o número da luz não foi mudado): GL_LIGHT{ $previous } fica com ela e GL_LIGHT{ $light } fica com o valor por omissão do OpenGL
+diagnose-positions-as-normals = As posições dos vértices dadas como normais (glNormal3fv(posição)): cada normal aponta a partir do centro do objeto e tem por comprimento a distância do ponto (o raio, numa esfera), o que o ilumina mal sem GL_NORMALIZE
+diagnose-colour-material-ambient-and-diffuse = O glColorMaterial a seguir GL_AMBIENT_AND_DIFFUSE em vez de só GL_DIFFUSE: a cor corrente substitui também a cor ambiente do material
+diagnose-colour-material-wrong-face = O glColorMaterial dado para a face errada (GL_BACK em vez de GL_FRONT, ou o contrário): as faces que se veem ficam com as cores do glMaterial em vez da cor corrente
+diagnose-spot-cutoff-cosine = O corte do foco da luz { $light } (GL_LIGHT{ $light }) dado como o seu cosseno (math.cos(math.radians(…)), cerca de 0,99): o OpenGL recebe GL_SPOT_CUTOFF em graus, por isso o cone tem menos de um grau
+diagnose-material-front-only = Iluminação dos dois lados com as chamadas glMaterial dadas só para GL_FRONT: as faces de trás ficam com o material por omissão do OpenGL
+diagnose-emission-back-only = A emissão do material dada só para GL_BACK: as faces da frente ficam com o valor por omissão do OpenGL, preto
+diagnose-material-diffuse-0-255 = A cor difusa do material dada de 0 a 255 em vez de 0 a 1 (102 em vez de 0,4): o termo difuso satura onde quer que a luz chegue
+diagnose-material-colours-0-255 = As cores do material (ambiente, difusa, especular) dadas de 0 a 255 em vez de 0 a 1: o objeto satura
+diagnose-light-not-normalised = No shader, o L de uma luz pontual não é normalizado (L = luz − P sem dividir pelo seu comprimento d): N·L e o cosseno do foco crescem com a distância
+diagnose-reflection-reversed = No shader, R refletido ao contrário (reflect(L, N) em vez de reflect(-L, N)): o reflexo aparece do lado oposto àquele onde devia estar
+diagnose-rescale-for-normalize = GL_RESCALE_NORMAL ativado onde é preciso GL_NORMALIZE: com uma escala não uniforme as normais são reescaladas mas não ficam com comprimento 1
 diagnose-same-picture = { $ids } desenham a mesma imagem: não é possível distingui-los por ela, e aparecem pela ordem da tabela (um valor alterado antes de um valor ajustado à imagem). Verifique qual deles está no programa.
 
 ## phonglab check: o trabalho de um aluno verificado

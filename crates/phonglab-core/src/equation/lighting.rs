@@ -128,6 +128,14 @@ pub enum FormulaSlip {
     ViewerReversed,
     /// The specular cosine `n . (L + V)`, the halfway vector not normalised.
     HalfwayNotNormalised,
+    /// A positional light's `L` left unnormalised (`toL` for `toL / d`: its length the
+    /// distance): the diffuse `n . L`, the spot's cosine and its cone test, R (and so
+    /// `R . V`) and H's direction all take it so; the attenuation keeps the distance.
+    LightNotNormalised,
+    /// R reflected the wrong way (GLSL's `reflect(L, N)` for `reflect(-L, N)`): `L - 2 (n . L)
+    /// n`, OpenGL's R turned round (unclamped, whatever the rules' R), where the specular
+    /// takes `R . V`.
+    ReflectionReversed,
 }
 
 impl EvalOptions {
@@ -361,6 +369,13 @@ impl<S: Real> Engine<S> {
         let (l64, distance, attenuation) = Self::light_vector(pl, pos, at_infinity, &mut limits);
         let reversed = self.options.slip == FormulaSlip::LightReversed && matches!(pl.pos, LightPos::Positional(_));
         let l64 = if reversed { l64.map(|l| -l) } else { l64 };
+        let long = match pl.pos {
+            LightPos::Positional(lp) if self.options.slip == FormulaSlip::LightNotNormalised && !at_infinity => {
+                Some(lp - pos)
+            }
+            _ => None,
+        };
+        let l64 = if long.is_some() { l64.and(long) } else { l64 };
         let l: Option<S::V3> = l64.map(S::V3::from_dvec3);
         let spot = self.spot_terms(pl, l64, &mut limits);
         let scale = mul0(attenuation, spot.factor);
@@ -369,6 +384,12 @@ impl<S: Real> Engine<S> {
         let lit = l.filter(|_| !zero_normal);
         let h = self.halfway(l, v, &mut limits);
         let r = lit.map(|l| terms::reflect::<S>(n, l, self.rules.reflect_clamped()));
+        // GLSL's `reflect(L, N)`: `L - 2 (n . L) n`, unclamped whatever the rules' R.
+        let r = if self.options.slip == FormulaSlip::ReflectionReversed {
+            lit.map(|l| -terms::reflect::<S>(n, l, false))
+        } else {
+            r
+        };
 
         let side_terms = |side: usize| -> SideTerms<S> {
             let n_side = if side == 0 { n } else { -n };
@@ -451,6 +472,15 @@ impl<S: Real> Engine<S> {
             return SpotTerms { active: false, factor: S::ONE, ..Default::default() };
         };
         let (cos_angle, inside, factor) = terms::spot(sp, l64, self.options.pow);
+        // The shader's cone test on an unnormalised L: `dot(-L, s) >= cos(cutoff)`, the
+        // cosine scaled by the distance.
+        let (inside, factor) = match (self.options.slip, pl.pos, sp.axis) {
+            (FormulaSlip::LightNotNormalised, LightPos::Positional(_), Some(_)) if l64.is_some() => {
+                let inside = cos_angle.to_f64() >= sp.cos_cutoff;
+                (inside, terms::spot_power(cos_angle, inside, sp.exponent, self.options.pow))
+            }
+            _ => (inside, factor),
+        };
         match (sp.axis, l64) {
             (None, _) => limits.insert(Limit::SpotDirectionZero),
             (Some(_), None) if matches!(pl.pos, LightPos::Positional(_)) => limits.insert(Limit::SpotAtVertex),

@@ -76,11 +76,12 @@ mod tests {
     use crate::equation::lighting::{Engine, EvalOptions, FormulaSlip};
     use crate::model::presets;
 
-    const SLIPS: [FormulaSlip; 4] = [
+    const SLIPS: [FormulaSlip; 5] = [
         FormulaSlip::DiffuseNotClamped,
         FormulaSlip::LightReversed,
         FormulaSlip::ViewerReversed,
         FormulaSlip::HalfwayNotNormalised,
+        FormulaSlip::LightNotNormalised,
     ];
 
     /// A lighter made with a slip runs no stage of its program: each vertex is the general
@@ -132,6 +133,31 @@ mod tests {
             let long = light(FormulaSlip::HalfwayNotNormalised, &v);
             let h = r.l + right.v;
             assert!((long.lights()[0].front.spec_cos - right.normal_in_eye.dot(h)).abs() < 1e-12);
+            // L unnormalised: its length the distance, n . L scaled by it, the attenuation kept.
+            let unnormalised = light(FormulaSlip::LightNotNormalised, &v);
+            let (u, d) = (&unnormalised.lights()[0], r.distance.expect("a positional light"));
+            assert!((u.l - r.l * d).length() < 1e-9 * d, "{:?} {:?} {d}", u.l, r.l);
+            assert!((u.front.n_dot_l - r.front.n_dot_l * d).abs() < 1e-9 * d);
+            assert_eq!(u.attenuation, r.attenuation);
+        }
+    }
+
+    /// `reflect(L, N)` for `reflect(-L, N)`: R turned round, where the specular takes R . V
+    /// (the Phong demo's rules); its cosine negated.
+    #[test]
+    fn the_reversed_reflection_turns_r_round() {
+        let mut scene = presets::LightingBench::PositionalLocal.scene();
+        scene.rules.specular = crate::model::rules::SpecularModel::Phong;
+        let light = |slip, v: &Vertex| {
+            Engine::<f64>::with_options(&scene, EvalOptions { slip, ..EvalOptions::default() }).unwrap().light(v)
+        };
+        let (pos, nrm) = presets::sphere_points(100);
+        for (p, n) in pos.iter().zip(&nrm) {
+            let v = Vertex::from_f32(*p, *n);
+            let (right, slipped) = (light(FormulaSlip::None, &v), light(FormulaSlip::ReflectionReversed, &v));
+            let (r, s) = (&right.lights()[0], &slipped.lights()[0]);
+            assert!((s.r + r.r).length() < 1e-12, "{:?} {:?}", s.r, r.r);
+            assert!((s.front.spec_cos + r.front.spec_cos).abs() < 1e-12);
         }
     }
 }

@@ -6,14 +6,21 @@
 use glam::{DMat3, DVec4};
 
 use crate::model::rules::{RuleSet, SpecularModel};
-use crate::model::scene::{ColorMaterialMode, Light, LightPlacement, Material, NormalMode};
+use crate::model::scene::{ColorMaterialMode, Light, LightPlacement, NormalMode};
 use crate::model::view::ShadingMode;
 
-use super::colours::{self, Colours};
+use super::calls::{
+    colour_material_ambient_and_diffuse, colour_material_wrong_face, directional_reversed, emission_back_only,
+    light_ambient_diffuse_swapped, light_diffuse_on_previous, light_specular_left_out, light_specular_on_previous,
+    material_colours_255, material_diffuse_255, material_front_only, positions_as_normals, rescale_for_normalize,
+    scene_ambient_default, shininess_refused, spot_cutoff_cosine,
+};
+use super::change::{At, back_only, each_material, the_light};
+use super::colours;
 use super::drawing::Drawing;
-use super::sides::{self, Sides};
+use super::sides;
 use super::slips;
-use super::values::{self, Values};
+use super::values;
 
 /// Where a mistake is made: once for the scene, or for each light in turn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -22,22 +29,6 @@ pub enum Scope {
     Scene,
     /// For each light alone, named with the light.
     EachLight,
-}
-
-/// What a mistake is made with: the light (for [`Scope::EachLight`]) and the emission fitted
-/// from the student's picture (for `emission-added`).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct At {
-    /// The light's index (`GL_LIGHTn`); 0 for a mistake of the whole scene.
-    pub light: usize,
-    /// The emission the picture shows beyond the right one (linear RGB, 0 to 1).
-    pub emission: [f64; 3],
-    /// The products of colours the picture shows, term by term (for `colours-differ`).
-    pub colours: Option<Colours>,
-    /// The single numbers the picture shows (for `spot-cutoff-differs` and its kin).
-    pub values: Values,
-    /// Each side's material colours the picture shows (for `materials-differ`).
-    pub sides: Option<Sides>,
 }
 
 /// A mistake a picture can show: its id (kebab-case, the same as `phonglab check`'s where
@@ -62,6 +53,7 @@ impl PictureMistake {
         let emission = crate::locale::decimal(&format!("({:.2}, {:.2}, {:.2})", e[0], e[1], e[2]));
         let mut args = vec![
             ("light", Arg::Text(at.light.to_string())),
+            ("previous", Arg::Text(at.light.saturating_sub(1).to_string())),
             ("emission", Arg::Text(emission)),
             ("terms", Arg::Text(at.colours.map(|c| colours::said(&c)).unwrap_or_default())),
             ("colours", Arg::Text(at.sides.map(|s| sides::said(&s)).unwrap_or_default())),
@@ -238,28 +230,6 @@ fn spot_left_out(d: &mut Drawing, _: At) -> bool {
     true
 }
 
-/// Each side's `glMaterial` values changed by `change`; false when it changed none.
-fn each_material(d: &mut Drawing, change: impl Fn(&mut Material)) -> bool {
-    let mut changed = false;
-    for m in std::iter::once(&mut d.scene.material).chain(d.scene.back_material.as_mut()) {
-        let before = m.clone();
-        change(m);
-        changed |= *m != before;
-    }
-    changed
-}
-
-/// Light `at.light` changed by `change` where `applies` holds for it.
-fn the_light(d: &mut Drawing, at: At, applies: impl Fn(&Light) -> bool, change: impl Fn(&mut Light)) -> bool {
-    match d.scene.lights.get_mut(at.light) {
-        Some(l) if applies(l) => {
-            change(l);
-            true
-        }
-        _ => false,
-    }
-}
-
 /// Shininess given as the 0-1 value of a material table (0.4) instead of `0.4 * 128`.
 fn shininess_fraction(d: &mut Drawing, _: At) -> bool {
     each_material(d, |m| m.shininess /= 128.0)
@@ -419,20 +389,6 @@ fn directional_as_point(d: &mut Drawing, at: At) -> bool {
     the_light(d, at, Light::is_directional, |l| l.position.w = 1.0)
 }
 
-/// The material's properties `part` given for `GL_BACK` only: the back keeps the scene's
-/// material, the front OpenGL's defaults for them.
-fn back_only(d: &mut Drawing, part: fn(&mut Material, &Material)) -> bool {
-    let given = d.scene.material.clone();
-    let mut front = given.clone();
-    part(&mut front, &Material::default());
-    if front == given {
-        return false;
-    }
-    d.scene.back_material.get_or_insert(given);
-    d.scene.material = front;
-    true
-}
-
 /// The material's diffuse colour given for `GL_BACK` only.
 fn diffuse_back_only(d: &mut Drawing, _: At) -> bool {
     back_only(d, |m, gl| m.diffuse = gl.diffuse)
@@ -536,7 +492,6 @@ fn light_diffuse_left_out(d: &mut Drawing, at: At) -> bool {
     the_light(d, at, |l| l.diffuse != default, |l| l.diffuse = default)
 }
 
-/// The material's emission left at black.
 /// Light number `k` set to the value fitted from the picture.
 fn light_value_fitted(d: &mut Drawing, at: At, k: usize) -> bool {
     match (at.values.lights.get(at.light).and_then(|l| l[k]), d.scene.lights.get_mut(at.light)) {
@@ -646,7 +601,7 @@ const fn per_light(id: &'static str, message: &'static str, apply: fn(&mut Drawi
 }
 
 /// The picture mistakes, in the order the docs list them.
-pub const MISTAKES: [PictureMistake; 70] = [
+pub const MISTAKES: [PictureMistake; 88] = [
     row("normal-by-modelview", "wrong-cause-normals-by-m", normals_by_modelview),
     row("normal-not-normalised", "diagnose-normalize-off", normalize_off),
     row("reflection-for-halfway", "wrong-cause-reflection-for-halfway", reflection_for_halfway),
@@ -660,9 +615,17 @@ pub const MISTAKES: [PictureMistake; 70] = [
     row("attenuation-left-out", "diagnose-attenuation-left-out", attenuation_left_out),
     row("spot-left-out", "diagnose-spot-left-out", spot_left_out),
     row("shininess-fraction", "diagnose-shininess-fraction", shininess_fraction),
+    row("shininess-refused", "diagnose-shininess-refused", shininess_refused),
     per_light("light-left-out", "diagnose-light-left-out", light_left_out),
     per_light("point-as-directional", "diagnose-point-as-directional", point_as_directional),
+    per_light("directional-reversed", "diagnose-directional-reversed", directional_reversed),
     per_light("light-ambient-left-out", "diagnose-light-ambient-left-out", light_ambient_left_out),
+    row("scene-ambient-default", "diagnose-scene-ambient-default", scene_ambient_default),
+    per_light("light-specular-left-out", "diagnose-light-specular-left-out", light_specular_left_out),
+    per_light("light-ambient-diffuse-swapped", "diagnose-light-ambient-diffuse-swapped", light_ambient_diffuse_swapped),
+    per_light("light-diffuse-on-previous", "diagnose-light-diffuse-on-previous", light_diffuse_on_previous),
+    per_light("light-specular-on-previous", "diagnose-light-specular-on-previous", light_specular_on_previous),
+    row("positions-as-normals", "diagnose-positions-as-normals", positions_as_normals),
     row("specular-left-out", "diagnose-specular-left-out", specular_left_out),
     row("diffuse-specular-swapped", "diagnose-diffuse-specular-swapped", diffuse_specular_swapped),
     per_light("attenuation-left-out", "diagnose-attenuation-left-out-light", attenuation_left_out_alone),
@@ -672,8 +635,15 @@ pub const MISTAKES: [PictureMistake; 70] = [
     per_light("light-before-view", "diagnose-light-before-view-light", light_before_view_alone),
     row("colour-material-off", "diagnose-colour-material-off", colour_material_off),
     row("colour-material-diffuse-only", "diagnose-colour-material-diffuse-only", colour_material_diffuse_only),
+    row(
+        "colour-material-ambient-and-diffuse",
+        "diagnose-colour-material-ambient-and-diffuse",
+        colour_material_ambient_and_diffuse,
+    ),
+    row("colour-material-wrong-face", "diagnose-colour-material-wrong-face", colour_material_wrong_face),
     per_light("spot-cutoff-halved", "diagnose-spot-cutoff-halved", spot_cutoff_halved),
     per_light("spot-cutoff-radians", "diagnose-spot-cutoff-radians", spot_cutoff_radians),
+    per_light("spot-cutoff-cosine", "diagnose-spot-cutoff-cosine", spot_cutoff_cosine),
     per_light("spot-exponent-ignored", "diagnose-spot-exponent-ignored", spot_exponent_ignored),
     per_light("spot-cutoff-exponent-swapped", "diagnose-spot-cutoff-exponent-swapped", spot_cutoff_exponent_swapped),
     per_light("spot-direction-reversed", "diagnose-spot-direction-reversed", spot_direction_reversed),
@@ -684,6 +654,11 @@ pub const MISTAKES: [PictureMistake; 70] = [
     row("ambient-back-only", "diagnose-ambient-back-only", ambient_back_only),
     row("specular-back-only", "diagnose-specular-back-only", specular_back_only),
     row("material-back-only", "diagnose-material-back-only", material_back_only),
+    row("material-front-only", "diagnose-material-front-only", material_front_only),
+    // The material's colours on 0..255 before a light's: the more common, and with one
+    // light the two draw the same picture.
+    row("material-colour-0-255", "diagnose-material-diffuse-0-255", material_diffuse_255),
+    row("material-colour-0-255", "diagnose-material-colours-0-255", material_colours_255),
     per_light("light-colour-0-255", "diagnose-light-colour-0-255", light_colour_255),
     row("row-vectors", "diagnose-row-vectors", row_vectors),
     per_light("row-vectors", "diagnose-row-vectors-light", row_vectors_alone),
@@ -691,6 +666,7 @@ pub const MISTAKES: [PictureMistake; 70] = [
     row("ambient-from-diffuse", "diagnose-ambient-from-diffuse", ambient_from_diffuse),
     row("specular-from-colour", "diagnose-specular-from-colour", specular_from_colour),
     row("emission-left-out", "diagnose-emission-left-out", emission_left_out),
+    row("emission-back-only", "diagnose-emission-back-only", emission_back_only),
     row("emission-from-colour", "diagnose-emission-from-colour", emission_from_colour),
     row("ambient-diffuse-swapped", "diagnose-ambient-diffuse-swapped", ambient_diffuse_swapped),
     per_light("light-diffuse-left-out", "diagnose-light-diffuse-left-out", light_diffuse_left_out),
@@ -699,6 +675,8 @@ pub const MISTAKES: [PictureMistake; 70] = [
     row("vlv-reversed", "diagnose-vlv-reversed", |d, _| slips::light_reversed(d)),
     row("viewer-reversed", "diagnose-viewer-reversed", |d, _| slips::viewer_reversed(d)),
     row("halfway-not-normalised", "diagnose-halfway-not-normalised", |d, _| slips::halfway_not_normalised(d)),
+    row("vlv-not-normalised", "diagnose-light-not-normalised", |d, _| slips::light_not_normalised(d)),
+    row("reflection-reversed", "diagnose-reflection-reversed", |d, _| slips::reflection_reversed(d)),
     row("flat-shade-model", "diagnose-flat-shade-model", |d, _| slips::flat_shade_model(d)),
     row("view-order-reversed", "diagnose-view-order-reversed", |d, _| slips::view_order_reversed(d)),
     row("view-order-reversed", "diagnose-view-order-reversed-lights", |d, _| slips::view_order_reversed_with_lights(d)),
@@ -713,6 +691,7 @@ pub const MISTAKES: [PictureMistake; 70] = [
     row("normal-not-transformed", "diagnose-normal-not-transformed", normal_not_transformed),
     row("depth-test-off", "diagnose-depth-test-off", depth_test_off),
     row("quadric-inside", "diagnose-quadric-inside", quadric_inside),
+    row("rescale-for-normalize", "diagnose-rescale-for-normalize", rescale_for_normalize),
     per_light("light-after-model", "diagnose-light-after-model-light", light_after_model_alone),
     // After every row of the scene's own values: each number is fitted from the picture, so
     // a row that names why it differs (halved, in radians, swapped) is named before.

@@ -13,6 +13,8 @@
 //! explains all the same (no scale for `GL_NORMALIZE`, no spot to leave out) is left out of
 //! the comparison and listed as not visible.
 
+mod calls;
+mod change;
 mod colours;
 mod drawing;
 mod fit;
@@ -21,9 +23,10 @@ mod sides;
 mod slips;
 mod values;
 
+pub use change::At;
 pub use colours::Colours;
 pub use drawing::Drawing;
-pub use mistakes::{At, MISTAKES, PictureMistake, Scope, offered};
+pub use mistakes::{MISTAKES, PictureMistake, Scope, offered};
 pub use sides::Sides;
 
 use crate::model::error::SceneError;

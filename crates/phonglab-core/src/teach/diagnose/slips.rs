@@ -39,6 +39,17 @@ pub(super) fn halfway_not_normalised(d: &mut Drawing) -> bool {
     d.scene.rules.specular.vector() == SpecularVector::Halfway && slipped(d, FormulaSlip::HalfwayNotNormalised)
 }
 
+/// A positional light's L not normalised (`toL` for `toL / d`); only where a light is
+/// positional.
+pub(super) fn light_not_normalised(d: &mut Drawing) -> bool {
+    d.scene.lights.iter().any(|l| !l.is_directional()) && slipped(d, FormulaSlip::LightNotNormalised)
+}
+
+/// `reflect(L, N)` for `reflect(-L, N)`: R reversed; only where the specular takes R . V.
+pub(super) fn reflection_reversed(d: &mut Drawing) -> bool {
+    d.scene.rules.specular.vector() == SpecularVector::Reflection && slipped(d, FormulaSlip::ReflectionReversed)
+}
+
 /// `glShadeModel(GL_FLAT)`: each face its provoking vertex's colour.
 pub(super) fn flat_shade_model(d: &mut Drawing) -> bool {
     let was = d.mode;
