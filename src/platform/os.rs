@@ -3,7 +3,6 @@
 //! available, hearing the signals (Windows: the console's events) that end the process,
 //! and a Windows command's terminal.
 
-#[cfg(unix)]
 use std::fs::File;
 use std::io;
 use std::path::Path;
@@ -14,18 +13,59 @@ pub use phonglab_core::files::os::{
     close_file, is_link_refused, open_no_follow, open_to_read, process_alive, rename_no_replace, sync_folder,
 };
 
-/// What makes a file itself where the system says it: its device and inode (Unix), which a
-/// rename keeps and which no one can choose for a file they plant; `(0, 0)` elsewhere.
-pub fn file_identity(meta: &std::fs::Metadata) -> (u64, u64) {
+/// What makes a file or folder itself where the system says it, which a rename keeps and
+/// which no one can choose for a file they plant: Unix its device and inode; Windows its
+/// volume's serial number and its file index (`GetFileInformationByHandle`); `(0, 0)`
+/// elsewhere. Read through `file`, an open handle, with its metadata.
+pub fn file_identity(file: &File) -> io::Result<(std::fs::Metadata, (u64, u64))> {
+    let meta = file.metadata()?;
     #[cfg(unix)]
     {
         use std::os::unix::fs::MetadataExt;
-        (meta.dev(), meta.ino())
+        let id = (meta.dev(), meta.ino());
+        Ok((meta, id))
     }
-    #[cfg(not(unix))]
+    #[cfg(windows)]
     {
-        let _ = meta;
-        (0, 0)
+        let info = winapi_util::file::information(file)?;
+        Ok((meta, (info.volume_serial_number(), info.file_index())))
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        Ok((meta, (0, 0)))
+    }
+}
+
+/// [`file_identity`] of the file or folder at `path` itself: a link is not followed (its
+/// own identity is given). Unix: `lstat`. Windows: a handle opened for its attributes only,
+/// sharing everything (a rename or a delete by anyone else goes on), with
+/// `FILE_FLAG_BACKUP_SEMANTICS` so that a folder opens too and
+/// `FILE_FLAG_OPEN_REPARSE_POINT` so that a link (a reparse point) is opened itself.
+pub fn identity_at(path: &Path) -> io::Result<(std::fs::Metadata, (u64, u64))> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        let meta = std::fs::symlink_metadata(path)?;
+        let id = (meta.dev(), meta.ino());
+        Ok((meta, id))
+    }
+    #[cfg(windows)]
+    {
+        use std::os::windows::fs::OpenOptionsExt;
+        /// `FILE_FLAG_BACKUP_SEMANTICS` (a folder opens) and `FILE_FLAG_OPEN_REPARSE_POINT`.
+        const FOLDER_OR_LINK_ITSELF: u32 = 0x0200_0000 | 0x0020_0000;
+        /// `FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE`.
+        const SHARE_ALL: u32 = 7;
+        let file = File::options()
+            .access_mode(0)
+            .share_mode(SHARE_ALL)
+            .custom_flags(FOLDER_OR_LINK_ITSELF)
+            .open(path)?;
+        file_identity(&file)
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        Ok((std::fs::symlink_metadata(path)?, (0, 0)))
     }
 }
 
