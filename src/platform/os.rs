@@ -10,7 +10,8 @@ use std::path::Path;
 // Opening, closing, syncing and renaming files: the core's, which the Python package
 // shares (one implementation for every reader and writer of files).
 pub use phonglab_core::files::os::{
-    close_file, is_link_refused, open_no_follow, open_to_read, process_alive, rename_no_replace, sync_folder,
+    close_file, is_link_refused, open_no_follow, open_to_read, process_alive, regular_file_metadata, rename_no_replace,
+    sync_folder,
 };
 
 /// What makes a file or folder itself where the system says it, which a rename keeps and
@@ -56,11 +57,8 @@ pub fn identity_at(path: &Path) -> io::Result<(std::fs::Metadata, (u64, u64))> {
         const FOLDER_OR_LINK_ITSELF: u32 = 0x0200_0000 | 0x0020_0000;
         /// `FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE`.
         const SHARE_ALL: u32 = 7;
-        let file = File::options()
-            .access_mode(0)
-            .share_mode(SHARE_ALL)
-            .custom_flags(FOLDER_OR_LINK_ITSELF)
-            .open(path)?;
+        let file =
+            File::options().access_mode(0).share_mode(SHARE_ALL).custom_flags(FOLDER_OR_LINK_ITSELF).open(path)?;
         file_identity(&file)
     }
     #[cfg(not(any(unix, windows)))]
@@ -158,7 +156,9 @@ fn take_folder_lock(dir: &Path, wait: bool) -> io::Result<Option<FolderLock>> {
 /// Windows: the folder's named mutex (see [`lock_folder`]), waited for or tried.
 #[cfg(windows)]
 fn windows_folder_lock(dir: &Path, wait: bool) -> io::Result<Option<FolderLock>> {
-    use windows_sys::Win32::Foundation::{CloseHandle, ERROR_ACCESS_DENIED, WAIT_ABANDONED, WAIT_OBJECT_0, WAIT_TIMEOUT};
+    use windows_sys::Win32::Foundation::{
+        CloseHandle, ERROR_ACCESS_DENIED, WAIT_ABANDONED, WAIT_OBJECT_0, WAIT_TIMEOUT,
+    };
     use windows_sys::Win32::System::Threading::{CreateMutexW, INFINITE, WaitForSingleObject};
     // The folder itself, a link followed: the folder the set goes into.
     let info = winapi_util::file::information(winapi_util::Handle::from_path_any(dir)?)?;
