@@ -130,7 +130,8 @@ fn a_journal_naming_another_folders_identity_is_refused_and_its_own_finished() {
     assert_ne!(here, there, "two folders, two identities");
     let new = stage(&staging, "main.cpp", b"// the new main").unwrap();
     let old = entry_of(&dir, "main.cpp").unwrap();
-    let journal = |staging_id| Journal { staging: staging_id, decided: true, new: vec![new.clone()], old: vec![old.clone()] };
+    let journal =
+        |staging_id| Journal { staging: staging_id, decided: true, new: vec![new.clone()], old: vec![old.clone()] };
     write_journal(&staging, &journal(there), false).unwrap();
     let before = everything(&dir);
     let notices = recover(&dir).unwrap();
