@@ -53,7 +53,7 @@ pub const WRITTEN: &str = ".phonglab-set.written";
 
 /// What makes a file or folder itself: device (Windows: the volume's serial number), inode
 /// (Windows: the file index) and birth time (seconds and nanoseconds, where the file system
-/// keeps it, on Unix: see [`born`]).
+/// keeps it: on Unix only, see the private `born`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Identity {
     dev: u64,
