@@ -71,10 +71,9 @@ pub fn eval_stream(
                 reason = crate::io::reasons::io_reason(&e)
             ))
         })?;
-        let meta = file.metadata()?;
-        if !meta.is_file() {
+        let Some(meta) = crate::platform::os::regular_file_metadata(&file)? else {
             bail!(t!("read-not-a-file", path = crate::io::reasons::shown(path)));
-        }
+        };
         let (shown, kind) = (crate::io::reasons::shown(path), t!("file-kind-cases"));
         crate::io::input_file::within_cap(&shown, meta.len(), crate::io::input_file::MAX_CASE_BYTES, &kind)
             .map_err(anyhow::Error::msg)?;

@@ -186,9 +186,8 @@ pub fn recover(dir: &Path) -> io::Result<Vec<String>> {
 }
 
 fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&str) -> bool) -> Result<(), Stop> {
-    let here = std::fs::symlink_metadata(staging)
-        .map_err(|e| WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED))?;
-    let mut journal = Journal { staging: Identity::of(&here), decided: false, new: Vec::new(), old: Vec::new() };
+    let (_, here) = Identity::at(staging).map_err(|e| WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED))?;
+    let mut journal = Journal { staging: here, decided: false, new: Vec::new(), old: Vec::new() };
     write_journal(staging, &journal, false).map_err(|(what, e)| WriteError::new(dir, what, e, UNTOUCHED))?;
     step()?;
     for (name, bytes) in &set.files {
@@ -409,7 +408,7 @@ mod tests {
             old_set(&dir);
             let staging = dir.join(".phonglab-set.1.0.tmp");
             std::fs::create_dir_all(staging.join(ASIDE)).unwrap();
-            let here = Identity::of(&std::fs::symlink_metadata(&staging).unwrap());
+            let (_, here) = Identity::at(&staging).unwrap();
             let mut j = Journal { staging: here, decided: true, new: Vec::new(), old: Vec::new() };
             for (name, bytes) in &new_set().files {
                 j.new.push(stage(&staging, name, bytes).unwrap());

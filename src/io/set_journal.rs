@@ -8,8 +8,9 @@
 //! - the staging folder (`.phonglab-set.<pid>.<n>.tmp`) is created by this writer alone
 //!   (`mkdir` fails on anything already there, a link included), and the journal lives in
 //!   it (`.phonglab-set.journal`), created exclusively, never read through a link;
-//! - the journal names the staging folder by its identity (device, inode and birth time:
-//!   what a file gets when it is made, which nobody planting a file can choose) and names
+//! - the journal names the staging folder by its identity (Unix: device, inode and birth
+//!   time; Windows: the volume's serial number and the file index; what a file gets when it
+//!   is made, which nobody planting a file can choose) and names
 //!   only plain files of the target folder, each with its identity, size and hash
 //!   (SipHash-1-3, 128 bits): the new set's files, written in that run into the staging
 //!   folder, and the old set's files it replaces;
@@ -50,8 +51,9 @@ const MAX_JOURNAL_BYTES: u64 = 1 << 20;
 /// list names it and the file is still exactly what phonglab wrote.
 pub const WRITTEN: &str = ".phonglab-set.written";
 
-/// What makes a file or folder itself: device, inode and birth time (seconds and
-/// nanoseconds, where the file system keeps it).
+/// What makes a file or folder itself: device (Windows: the volume's serial number), inode
+/// (Windows: the file index) and birth time (seconds and nanoseconds, where the file system
+/// keeps it: on Unix only, see the private `born`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Identity {
     dev: u64,
@@ -60,16 +62,33 @@ pub struct Identity {
 }
 
 impl Identity {
-    /// The identity of what `meta` describes.
-    pub fn of(meta: &std::fs::Metadata) -> Identity {
-        let (dev, ino) = crate::platform::os::file_identity(meta);
-        let born = meta
-            .created()
-            .ok()
-            .and_then(|t| t.duration_since(std::time::UNIX_EPOCH).ok())
-            .map(|d| (d.as_secs(), d.subsec_nanos()));
-        Identity { dev, ino, born }
+    /// The identity of the file or folder at `path` itself (a link is not followed), with
+    /// its metadata.
+    pub fn at(path: &Path) -> io::Result<(std::fs::Metadata, Identity)> {
+        let (meta, (dev, ino)) = crate::platform::os::identity_at(path)?;
+        let born = born(&meta);
+        Ok((meta, Identity { dev, ino, born }))
     }
+
+    /// The identity of the open file `file`, with its metadata.
+    pub fn of_file(file: &std::fs::File) -> io::Result<(std::fs::Metadata, Identity)> {
+        let (meta, (dev, ino)) = crate::platform::os::file_identity(file)?;
+        let born = born(&meta);
+        Ok((meta, Identity { dev, ino, born }))
+    }
+}
+
+/// A file's birth time, part of its identity where it tells files apart: on Unix an inode
+/// number freed by a deletion is given to the next file made, and the birth time tells the
+/// two apart. Not on Windows: there the file index already does (NTFS's carries a sequence
+/// number that changes each time its record is used again), and Wine gives the last write
+/// time as the creation time, so a folder's "birth" moves each time a file is added to it.
+fn born(meta: &std::fs::Metadata) -> Option<(u64, u32)> {
+    if cfg!(windows) {
+        return None;
+    }
+    let since = meta.created().ok()?.duration_since(std::time::UNIX_EPOCH).ok()?;
+    Some((since.as_secs(), since.subsec_nanos()))
 }
 
 /// One file the journal names: its name in the target folder, size, hash and identity.
@@ -110,7 +129,7 @@ pub fn hash_bytes(bytes: &[u8]) -> String {
 /// when it is not a regular file.
 fn read_entry(path: &Path) -> io::Result<(u64, String, Identity)> {
     let file = crate::platform::os::open_no_follow(path)?;
-    let meta = file.metadata()?;
+    let (meta, id) = Identity::of_file(&file)?;
     if !meta.is_file() {
         return Err(io::Error::new(io::ErrorKind::InvalidInput, "not a regular file"));
     }
@@ -124,7 +143,7 @@ fn read_entry(path: &Path) -> io::Result<(u64, String, Identity)> {
         h.write(&buf[..n]);
         size += n as u64;
     }
-    Ok((size, format!("{:032x}", h.finish128().as_u128()), Identity::of(&meta)))
+    Ok((size, format!("{:032x}", h.finish128().as_u128()), id))
 }
 
 /// The entry of the file `name` in `folder`, read there now.
@@ -135,8 +154,8 @@ pub fn entry_of(folder: &Path, name: &str) -> io::Result<Entry> {
 
 /// Is the file at `path` exactly the one `entry` names (identity, size and hash)?
 pub fn is_entry(path: &Path, entry: &Entry) -> bool {
-    let Ok(meta) = std::fs::symlink_metadata(path) else { return false };
-    if !meta.is_file() || Identity::of(&meta) != entry.id || meta.len() != entry.size {
+    let Ok((meta, id)) = Identity::at(path) else { return false };
+    if !meta.is_file() || id != entry.id || meta.len() != entry.size {
         return false;
     }
     read_entry(path).is_ok_and(|(size, hash, id)| size == entry.size && hash == entry.hash && id == entry.id)
@@ -220,8 +239,8 @@ fn read_journal(staging: &Path) -> Result<Option<Journal>, String> {
         Err(Record::NotOne) => return Err(untrusted(&t!("set-why-not-a-journal"))),
     };
     let j: Journal = serde_json::from_slice(&bytes).map_err(|_| untrusted(&t!("set-why-not-a-journal")))?;
-    let here = std::fs::symlink_metadata(staging).map_err(|e| untrusted(&crate::io::reasons::io_reason(&e)))?;
-    if !here.is_dir() || Identity::of(&here) != j.staging {
+    let (here, id) = Identity::at(staging).map_err(|e| untrusted(&crate::io::reasons::io_reason(&e)))?;
+    if !here.is_dir() || id != j.staging {
         return Err(untrusted(&t!("set-why-other-folder")));
     }
     if !j.new.iter().chain(&j.old).all(|e| plain_name(&e.name)) {
@@ -364,8 +383,8 @@ pub fn write_written_list(dir: &Path, new: &[Entry]) {
 pub fn stage(staging: &Path, name: &str, bytes: &[u8]) -> Result<Entry, (&'static str, io::Error)> {
     let path = staging.join(name);
     super::atomic_write::write_new(&path, bytes)?;
-    let meta = std::fs::symlink_metadata(&path).map_err(|e| ("write-step-create", e))?;
-    Ok(Entry { name: name.to_string(), size: bytes.len() as u64, hash: hash_bytes(bytes), id: Identity::of(&meta) })
+    let (_, id) = Identity::at(&path).map_err(|e| ("write-step-create", e))?;
+    Ok(Entry { name: name.to_string(), size: bytes.len() as u64, hash: hash_bytes(bytes), id })
 }
 
 #[cfg(test)]

@@ -3,7 +3,6 @@
 //! available, hearing the signals (Windows: the console's events) that end the process,
 //! and a Windows command's terminal.
 
-#[cfg(unix)]
 use std::fs::File;
 use std::io;
 use std::path::Path;
@@ -11,21 +10,60 @@ use std::path::Path;
 // Opening, closing, syncing and renaming files: the core's, which the Python package
 // shares (one implementation for every reader and writer of files).
 pub use phonglab_core::files::os::{
-    close_file, is_link_refused, open_no_follow, open_to_read, process_alive, rename_no_replace, sync_folder,
+    close_file, is_link_refused, open_no_follow, open_to_read, process_alive, regular_file_metadata, rename_no_replace,
+    sync_folder,
 };
 
-/// What makes a file itself where the system says it: its device and inode (Unix), which a
-/// rename keeps and which no one can choose for a file they plant; `(0, 0)` elsewhere.
-pub fn file_identity(meta: &std::fs::Metadata) -> (u64, u64) {
+/// What makes a file or folder itself where the system says it, which a rename keeps and
+/// which no one can choose for a file they plant: Unix its device and inode; Windows its
+/// volume's serial number and its file index (`GetFileInformationByHandle`); `(0, 0)`
+/// elsewhere. Read through `file`, an open handle, with its metadata.
+pub fn file_identity(file: &File) -> io::Result<(std::fs::Metadata, (u64, u64))> {
+    let meta = file.metadata()?;
     #[cfg(unix)]
     {
         use std::os::unix::fs::MetadataExt;
-        (meta.dev(), meta.ino())
+        let id = (meta.dev(), meta.ino());
+        Ok((meta, id))
     }
-    #[cfg(not(unix))]
+    #[cfg(windows)]
     {
-        let _ = meta;
-        (0, 0)
+        let info = winapi_util::file::information(file)?;
+        Ok((meta, (info.volume_serial_number(), info.file_index())))
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        Ok((meta, (0, 0)))
+    }
+}
+
+/// [`file_identity`] of the file or folder at `path` itself: a link is not followed (its
+/// own identity is given). Unix: `lstat`. Windows: a handle opened for its attributes only,
+/// sharing everything (a rename or a delete by anyone else goes on), with
+/// `FILE_FLAG_BACKUP_SEMANTICS` so that a folder opens too and
+/// `FILE_FLAG_OPEN_REPARSE_POINT` so that a link (a reparse point) is opened itself.
+pub fn identity_at(path: &Path) -> io::Result<(std::fs::Metadata, (u64, u64))> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        let meta = std::fs::symlink_metadata(path)?;
+        let id = (meta.dev(), meta.ino());
+        Ok((meta, id))
+    }
+    #[cfg(windows)]
+    {
+        use std::os::windows::fs::OpenOptionsExt;
+        /// `FILE_FLAG_BACKUP_SEMANTICS` (a folder opens) and `FILE_FLAG_OPEN_REPARSE_POINT`.
+        const FOLDER_OR_LINK_ITSELF: u32 = 0x0200_0000 | 0x0020_0000;
+        /// `FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE`.
+        const SHARE_ALL: u32 = 7;
+        let file =
+            File::options().access_mode(0).share_mode(SHARE_ALL).custom_flags(FOLDER_OR_LINK_ITSELF).open(path)?;
+        file_identity(&file)
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        Ok((std::fs::symlink_metadata(path)?, (0, 0)))
     }
 }
 
@@ -96,22 +134,107 @@ pub fn address_space_in_use() -> Option<u64> {
 pub struct FolderLock {
     #[cfg(unix)]
     _folder: File,
+    /// The named mutex this thread owns (see [`lock_folder`]); a raw handle, so the lock
+    /// stays on the thread that took it, as a mutex must be released by its owner.
+    #[cfg(windows)]
+    mutex: windows_sys::Win32::Foundation::HANDLE,
 }
 
-/// Waits for, then holds, the exclusive lock of the folder `dir` (Unix: `flock` on the
-/// folder itself, so no lock file is left behind; released by the system however the
-/// process ends). Elsewhere a no-op: the browser writes no folders.
+/// Waits for, then holds, the exclusive lock of the folder `dir`, released when the value
+/// is dropped and by the system however the process ends (killed, crashed): two phonglab
+/// processes never write sets into one folder at once.
+/// - Unix: `flock` on the folder itself, so no lock file is left behind.
+/// - Windows: a named mutex, `Global\phonglab-folder-<volume serial>-<file index>`, named by
+///   the folder's identity (so every path to the folder, through a link or another
+///   spelling, names one mutex) and waited on. Windows releases a mutex whose owner ended
+///   without releasing it, and the next waiter gets it "abandoned": that counts as
+///   acquired (the dead writer's staging folder is then recovered, as on Unix). A file
+///   lock (`LockFileEx`) would need a lock file, left in the student's folder, and cannot
+///   be waited on; a folder cannot be locked itself. `Global\` reaches every session of the
+///   machine (a lab's shared terminal server); where Windows refuses it (another user's
+///   mutex, a sandbox), the session's own (`Local\`).
+/// - Elsewhere a no-op: the browser writes no folders.
 pub fn lock_folder(dir: &Path) -> io::Result<FolderLock> {
+    take_folder_lock(dir, true)?.ok_or_else(|| io::Error::other("the folder's lock was not taken"))
+}
+
+/// [`lock_folder`] without waiting: `None` when another process holds the folder.
+pub fn try_lock_folder(dir: &Path) -> io::Result<Option<FolderLock>> {
+    take_folder_lock(dir, false)
+}
+
+/// [`lock_folder`] (`wait`) or [`try_lock_folder`].
+fn take_folder_lock(dir: &Path, wait: bool) -> io::Result<Option<FolderLock>> {
     #[cfg(unix)]
     {
         let folder = File::open(dir)?;
-        folder.lock()?;
-        Ok(FolderLock { _folder: folder })
+        if wait {
+            folder.lock()?;
+        } else if let Err(e) = folder.try_lock() {
+            return match e {
+                std::fs::TryLockError::WouldBlock => Ok(None),
+                std::fs::TryLockError::Error(e) => Err(e),
+            };
+        }
+        Ok(Some(FolderLock { _folder: folder }))
     }
-    #[cfg(not(unix))]
+    #[cfg(windows)]
     {
-        let _ = dir;
-        Ok(FolderLock {})
+        windows_folder_lock(dir, wait)
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        let _ = (dir, wait);
+        Ok(Some(FolderLock {}))
+    }
+}
+
+/// Windows: the folder's named mutex (see [`lock_folder`]), waited for or tried.
+#[cfg(windows)]
+fn windows_folder_lock(dir: &Path, wait: bool) -> io::Result<Option<FolderLock>> {
+    use windows_sys::Win32::Foundation::{
+        CloseHandle, ERROR_ACCESS_DENIED, WAIT_ABANDONED, WAIT_OBJECT_0, WAIT_TIMEOUT,
+    };
+    use windows_sys::Win32::System::Threading::{CreateMutexW, INFINITE, WaitForSingleObject};
+    // The folder itself, a link followed: the folder the set goes into.
+    let info = winapi_util::file::information(winapi_util::Handle::from_path_any(dir)?)?;
+    let name = |space: &str| {
+        let n = format!("{space}\\phonglab-folder-{:08x}-{:016x}", info.volume_serial_number(), info.file_index());
+        n.encode_utf16().chain([0]).collect::<Vec<u16>>()
+    };
+    let create = |wide: &[u16]| {
+        // SAFETY: `wide` is a NUL-terminated UTF-16 name that lives through the call; no
+        // security attributes (the default), not owned at creation.
+        let h = unsafe { CreateMutexW(std::ptr::null(), 0, wide.as_ptr()) };
+        if h.is_null() { Err(io::Error::last_os_error()) } else { Ok(h) }
+    };
+    let mutex = match create(&name("Global")) {
+        Err(e) if e.raw_os_error() == Some(ERROR_ACCESS_DENIED as i32) => create(&name("Local"))?,
+        other => other?,
+    };
+    // SAFETY: `mutex` is the handle just opened, owned here.
+    match unsafe { WaitForSingleObject(mutex, if wait { INFINITE } else { 0 }) } {
+        WAIT_OBJECT_0 | WAIT_ABANDONED => Ok(Some(FolderLock { mutex })),
+        r => {
+            let e = if r == WAIT_TIMEOUT { None } else { Some(io::Error::last_os_error()) };
+            // SAFETY: closed once, not owned (the wait did not take it).
+            unsafe { CloseHandle(mutex) };
+            e.map_or(Ok(None), Err)
+        }
+    }
+}
+
+#[cfg(windows)]
+impl Drop for FolderLock {
+    fn drop(&mut self) {
+        use windows_sys::Win32::Foundation::CloseHandle;
+        use windows_sys::Win32::System::Threading::ReleaseMutex;
+        // SAFETY: the mutex this thread took (the handle cannot leave the thread: a raw
+        // handle is not `Send`), released and closed once.
+        unsafe {
+            ReleaseMutex(self.mutex);
+            CloseHandle(self.mutex);
+        }
     }
 }
 
@@ -226,6 +349,109 @@ mod tests {
         if let Some(limit) = super::address_space_limit() {
             assert!(limit >= in_use, "{limit} < {in_use}");
         }
+    }
+
+    /// The folder's lock, held by another process, is not taken here; it is once that
+    /// process lets go of it, and once that process ends without letting go (killed: on
+    /// Windows an abandoned mutex), and a process waiting for it gets it when it is let go
+    /// of. The other process is this test binary again, running [`folder_lock_holder`],
+    /// which says each step on its standard output.
+    #[test]
+    #[cfg(any(unix, windows))]
+    fn a_folder_locked_by_another_process_is_not_taken_until_let_go_or_the_process_ends() {
+        use super::{lock_folder, try_lock_folder};
+        let dir = std::env::temp_dir().join(format!("phonglab-lock {}", std::process::id())).join("Exercícios de CG");
+        std::fs::create_dir_all(&dir).unwrap();
+        let mut other = Holder::start(&dir);
+        other.ask("lock", "held");
+        assert!(try_lock_folder(&dir).unwrap().is_none(), "held by the other process");
+        other.ask("release", "released");
+        let mine = try_lock_folder(&dir).unwrap().expect("let go of: taken");
+        other.say("lock");
+        other.hear("waiting");
+        drop(mine);
+        other.hear("held");
+        assert!(try_lock_folder(&dir).unwrap().is_none(), "the waiting process has it");
+        other.child.kill().unwrap();
+        other.child.wait().unwrap();
+        assert!(try_lock_folder(&dir).unwrap().is_some(), "its holder killed: taken");
+        drop(lock_folder(&dir).unwrap());
+        std::fs::remove_dir_all(dir.parent().unwrap()).unwrap();
+    }
+
+    /// The other process of the test above: this test binary, running [`folder_lock_holder`].
+    struct Holder {
+        child: std::process::Child,
+        out: std::io::Lines<std::io::BufReader<std::process::ChildStdout>>,
+    }
+
+    impl Holder {
+        fn start(dir: &std::path::Path) -> Holder {
+            let mut child = std::process::Command::new(std::env::current_exe().unwrap())
+                .args(["--exact", "platform::os::tests::folder_lock_holder", "--nocapture", "--test-threads=1"])
+                .env(HOLDER_DIR, dir)
+                .stdin(std::process::Stdio::piped())
+                .stdout(std::process::Stdio::piped())
+                .spawn()
+                .unwrap();
+            let out = std::io::BufRead::lines(std::io::BufReader::new(child.stdout.take().unwrap()));
+            Holder { child, out }
+        }
+
+        fn say(&mut self, what: &str) {
+            use std::io::Write;
+            let stdin = self.child.stdin.as_mut().unwrap();
+            writeln!(stdin, "{what}").and_then(|()| stdin.flush()).unwrap();
+        }
+
+        /// Reads the holder's output until it says `what` (libtest's own lines skipped).
+        fn hear(&mut self, what: &str) {
+            let said = format!("lock holder: {what}");
+            for line in self.out.by_ref() {
+                if line.unwrap().trim_end() == said {
+                    return;
+                }
+            }
+            panic!("the holder ended before saying {what:?}");
+        }
+
+        fn ask(&mut self, what: &str, answer: &str) {
+            self.say(what);
+            self.hear(answer);
+        }
+    }
+
+    /// The folder the holder locks (set only for the holder's process).
+    const HOLDER_DIR: &str = "PHONGLAB_TEST_LOCK_HOLDER_DIR";
+
+    /// Not a test of its own (it does nothing without [`HOLDER_DIR`]): the process that
+    /// holds the folder's lock for the test above, one standard-input line at a time
+    /// (`lock`: waits for it; `release`), saying each step.
+    #[test]
+    #[cfg(any(unix, windows))]
+    fn folder_lock_holder() {
+        let Some(dir) = std::env::var_os(HOLDER_DIR) else { return };
+        let say = |what: &str| {
+            use std::io::Write;
+            let mut out = std::io::stdout().lock();
+            writeln!(out, "lock holder: {what}").and_then(|()| out.flush()).unwrap();
+        };
+        let mut held = None;
+        for line in std::io::stdin().lines() {
+            match line.unwrap().trim() {
+                "lock" => {
+                    say("waiting");
+                    held = Some(super::lock_folder(std::path::Path::new(&dir)).unwrap());
+                    say("held");
+                }
+                "release" => {
+                    held = None;
+                    say("released");
+                }
+                _ => {}
+            }
+        }
+        drop(held);
     }
 
     /// Windows: a console event (here a closed console, as Windows sends it: the routine

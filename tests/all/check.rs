@@ -901,7 +901,13 @@ fn the_class_report_names_each_students_steps_printed_twice_escaped_for_markdown
         "source": ["import numpy as np\n", "vertexNormal = np.array([0, 0.6, 0.8, 0])\n"],
         "outputs": [{"output_type": "stream", "name": "stdout", "text": printed}],
     }]});
-    std::fs::write(class.join("ana|*twice*.ipynb"), nb.to_string()).unwrap();
+    // A name with Markdown's specials (Windows refuses `|` and `*` in a name: others there).
+    let (name, shown) = if cfg!(windows) {
+        ("ana_[twice]_.ipynb", r"ana\_\[twice\]\_.ipynb")
+    } else {
+        ("ana|*twice*.ipynb", r"ana\|\*twice\*.ipynb")
+    };
+    std::fs::write(class.join(name), nb.to_string()).unwrap();
     let report = root.path().join("turma.md");
     let out = common::phonglab(&["check", class.to_str().unwrap(), "--report", report.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(0), "the report was written: {}", String::from_utf8_lossy(&out.stderr));
@@ -909,7 +915,7 @@ fn the_class_report_names_each_students_steps_printed_twice_escaped_for_markdown
     let section = "\n## Steps printed more than once with different values (each printing was checked)\n\n";
     let at = text.find(section).unwrap_or_else(|| panic!("no section:\n{text}"));
     let lines: Vec<&str> = text[at + section.len()..].lines().take_while(|l| !l.is_empty()).collect();
-    assert_eq!(lines, ["- ana\\|\\*twice\\*.ipynb: vlv"], "{text}");
+    assert_eq!(lines, [format!("- {shown}: vlv")], "{text}");
 }
 
 #[test]

@@ -177,7 +177,7 @@ fn scene_files_are_strict_and_their_errors_short() {
     assert!(stderr(&o).len() < 600, "{} bytes: {}", stderr(&o).len(), stderr(&o));
     assert!(stderr(&o).contains("line 3"), "{}", stderr(&o));
     // Not a regular file: refused at once rather than read until the memory runs out.
-    let o = phonglab(&["explain", "/dev/zero"]);
+    let o = phonglab(&["explain", ENDLESS_DEVICE]);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("not a regular file"), "{}", stderr(&o));
     // A name alone is a scene with OpenGL's defaults.
@@ -457,8 +457,27 @@ fn exercise_sheets_are_reproducible_and_their_keys_are_what_explain_prints() {
     assert!(!o.status.success() && stderr(&o).contains("sparkles"), "{}", stderr(&o));
 }
 
+/// A device that reads without end (Unix's /dev/zero; Windows' NUL reads as empty, but is
+/// a device all the same), which every reader refuses as not a regular file.
+const ENDLESS_DEVICE: &str = if cfg!(windows) { "NUL" } else { "/dev/zero" };
+
+/// Poppler's `pdftotext` and `pdftoppm` read the PDFs back: scripts/test installs them, and
+/// elsewhere than Windows their absence fails the tests. On Windows they are rarely there
+/// (and never on Wine's side of this machine): the tests that need them say SKIPPED there
+/// and end (the PDFs' bytes are compared with the Linux binary's by scripts/test-windows).
+fn poppler_missing_on_windows() -> bool {
+    let missing = cfg!(windows) && Command::new("pdftotext").arg("-v").output().is_err();
+    if missing {
+        eprintln!("SKIPPED: no pdftotext (poppler) on this Windows");
+    }
+    missing
+}
+
 #[test]
 fn the_pdfs_are_typeset_sheets_to_hand_out_and_keys_for_the_teacher() {
+    if poppler_missing_on_windows() {
+        return;
+    }
     let out = std::env::temp_dir().join(format!("phonglab-expdf-{}", std::process::id()));
     let o = phonglab(&[
         "exercise",
@@ -565,6 +584,9 @@ fn the_pdfs_are_typeset_sheets_to_hand_out_and_keys_for_the_teacher() {
 /// asks has the number the key gives it); and an index in the reader's language.
 #[test]
 fn the_handouts_are_exact_numbered_as_their_keys_and_in_the_readers_words() {
+    if poppler_missing_on_windows() {
+        return;
+    }
     let out = std::env::temp_dir().join(format!("phonglab-handouts-{}", std::process::id()));
     let args = ["exercise", "--seed", "5", "--count", "3", "--level", "4", "--worksheet", "--out"];
     let o = phonglab(&[&args[..], &[out.to_str().unwrap()]].concat());
@@ -689,8 +711,8 @@ fn errors_tables_and_file_names_in_portuguese_data_in_english() {
     // the system's reason too.
     let o = phonglab_in("pt_PT.UTF-8", &["eval", "/no/such/cases.json"]);
     assert_eq!(stderr(&o).trim(), "phonglab: não foi possível ler /no/such/cases.json: não existe");
-    let o = phonglab_in("pt_BR.UTF-8", &["explain", "/dev/zero"]);
-    assert_eq!(stderr(&o).trim(), "phonglab: /dev/zero não é um arquivo comum");
+    let o = phonglab_in("pt_BR.UTF-8", &["explain", ENDLESS_DEVICE]);
+    assert_eq!(stderr(&o).trim(), format!("phonglab: {ENDLESS_DEVICE} não é um arquivo comum"));
     let o = phonglab_in("pt_PT.UTF-8", &["render", "-o", "/no/such/folder/x.png"]);
     assert!(
         stderr(&o).contains("não foi possível escrever /no/such/folder/x.png: criar: não existe; nada foi escrito"),

@@ -112,6 +112,37 @@ fn a_planted_journal_with_the_right_hashes_is_still_not_phonglabs() {
     assert!(notices.len() == 1 && notices[0].contains("not the folder"), "{notices:?}");
 }
 
+/// A journal phonglab wrote for another staging folder (the staged file and the old one
+/// named truly): it names that folder's identity, not this one's, so recovery moves
+/// nothing. The same journal naming this folder's identity is finished: only the identity
+/// refused it. (Windows: the volume's serial number and the file index; the folder's
+/// creation time alone, under Wine its last write time, did not hold as files were staged.)
+#[test]
+fn a_journal_naming_another_folders_identity_is_refused_and_its_own_finished() {
+    let dir = temp_dir("other-identity");
+    std::fs::write(dir.join("main.cpp"), "// the student's main").unwrap();
+    let other = temp_dir("other-identity-elsewhere").join(".phonglab-set.1.0.tmp");
+    std::fs::create_dir(&other).unwrap();
+    let (_, there) = Identity::at(&other).unwrap();
+    let staging = dir.join(".phonglab-set.1.0.tmp");
+    std::fs::create_dir(&staging).unwrap();
+    let (_, here) = Identity::at(&staging).unwrap();
+    assert_ne!(here, there, "two folders, two identities");
+    let new = stage(&staging, "main.cpp", b"// the new main").unwrap();
+    let old = entry_of(&dir, "main.cpp").unwrap();
+    let journal =
+        |staging_id| Journal { staging: staging_id, decided: true, new: vec![new.clone()], old: vec![old.clone()] };
+    write_journal(&staging, &journal(there), false).unwrap();
+    let before = everything(&dir);
+    let notices = recover(&dir).unwrap();
+    untouched(&before, &dir, "recovery");
+    assert!(notices.len() == 1 && notices[0].contains("not the folder"), "{notices:?}");
+    write_journal(&staging, &journal(here), false).unwrap();
+    assert_eq!(recover(&dir).unwrap(), Vec::<String>::new());
+    assert_eq!(std::fs::read(dir.join("main.cpp")).unwrap(), b"// the new main");
+    assert!(!staging.exists(), "the staging folder removed");
+}
+
 /// A journal phonglab really wrote, whose old file was changed by its owner after the
 /// writer died: that file is not replaced, and the staging folder keeps the new one.
 #[test]
@@ -120,7 +151,7 @@ fn a_file_changed_since_the_journal_is_not_replaced() {
     std::fs::write(dir.join("a.md"), "old").unwrap();
     let staging = dir.join(".phonglab-set.1.0.tmp");
     std::fs::create_dir(&staging).unwrap();
-    let here = Identity::of(&std::fs::symlink_metadata(&staging).unwrap());
+    let (_, here) = Identity::at(&staging).unwrap();
     let new = stage(&staging, "a.md", b"new").unwrap();
     let old = entry_of(&dir, "a.md").unwrap();
     write_journal(&staging, &Journal { staging: here, decided: true, new: vec![new], old: vec![old] }, false).unwrap();

@@ -134,3 +134,25 @@ pub fn press_and_move(h: &mut Harness<'static, AppState>, from: egui::Pos2, to: 
         h.step();
     }
 }
+
+/// Makes `link` a symbolic link to `target`. The tests that plant one are not run on
+/// Windows (`ignore`d there): making a link takes a privilege (an administrator, or
+/// Developer Mode) that a lab PC's student account and a test runner lack, and Wine 8 makes
+/// none (`CreateSymbolicLinkW` answers yes and leaves nothing). phonglab's refusal of links
+/// on Windows is `open_no_follow`'s (`FILE_FLAG_OPEN_REPARSE_POINT`, the link itself
+/// refused through its handle). On Windows a folder link where `target` is a folder.
+pub fn symlink(target: impl AsRef<std::path::Path>, link: impl AsRef<std::path::Path>) -> std::io::Result<()> {
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::symlink(target, link)
+    }
+    #[cfg(windows)]
+    {
+        let resolved = link.as_ref().parent().map(|p| p.join(target.as_ref())).unwrap_or_default();
+        if resolved.is_dir() {
+            std::os::windows::fs::symlink_dir(target, link)
+        } else {
+            std::os::windows::fs::symlink_file(target, link)
+        }
+    }
+}

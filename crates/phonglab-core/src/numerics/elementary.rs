@@ -13,9 +13,10 @@
 //! The fused multiply-add is special: inside the copies compiled for FMA it is one
 //! instruction, exactly rounded by definition, and must stay one. Elsewhere LLVM calls the
 //! C library's `fma`, which on glibc is exactly rounded but on mingw rounds twice (through
-//! x87's 80 bits). On Windows with the GNU toolchain this module defines that `fma` itself
-//! (the linker takes it before mingw's), as the `libm` crate's, which is exactly rounded
-//! (and the instruction where the processor has it). [`fma`] is the same, callable.
+//! x87's 80 bits), and mingw's `fmaf` (`f32::mul_add`) is not fused at all. On Windows
+//! with the GNU toolchain this module defines that `fma` and `fmaf` itself (the linker takes
+//! them before mingw's), as the `libm` crate's, which are exactly rounded (and the
+//! instruction where the processor has it). [`fma`] is the same, callable.
 
 use glam::{DMat4, DVec4};
 
@@ -128,6 +129,16 @@ pub fn rotation_z(angle: f64) -> DMat4 {
 #[unsafe(export_name = "fma")]
 pub extern "C" fn fma_for_mingw(x: f64, y: f64, z: f64) -> f64 {
     libm::fma(x, y, z)
+}
+
+/// The C library's `fmaf`, which LLVM calls for `f32::mul_add` outside the FMA copies (the
+/// llvmpipe `pow` model's polynomials), defined here where mingw's does not give the fused
+/// result (under Wine, 258 of 540 of Mesa's `pow` probes off by an ulp or more, and the
+/// specialised lighters apart from the general engine).
+#[cfg(all(windows, target_env = "gnu"))]
+#[unsafe(export_name = "fmaf")]
+pub extern "C" fn fmaf_for_mingw(x: f32, y: f32, z: f32) -> f32 {
+    libm::fmaf(x, y, z)
 }
 
 #[cfg(test)]

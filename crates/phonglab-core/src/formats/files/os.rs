@@ -53,6 +53,19 @@ pub fn open_to_read(path: &Path) -> io::Result<File> {
     }
 }
 
+/// The metadata of the opened `file` where it is a regular file, `None` where it is
+/// anything else (a folder, a device, a FIFO, a socket). Windows: a device (`NUL`, `CON`)
+/// or a pipe has no file information to read (`GetFileInformationByHandle` fails, "Invalid
+/// function"), so its type (`GetFileType`: a file on a disk, or not) is asked first.
+pub fn regular_file_metadata(file: &File) -> io::Result<Option<std::fs::Metadata>> {
+    #[cfg(windows)]
+    if !winapi_util::file::typ(file)?.is_disk() {
+        return Ok(None);
+    }
+    let meta = file.metadata()?;
+    Ok(meta.is_file().then_some(meta))
+}
+
 /// Opens `path` to read without following a symbolic link at its last component and
 /// without waiting (Unix: `O_NOFOLLOW | O_NONBLOCK`; Windows:
 /// `FILE_FLAG_OPEN_REPARSE_POINT`, the link itself opened and then refused through its

@@ -79,10 +79,9 @@ pub fn read_text_submission(path: &Path, cap: u64, what: &str) -> Result<String,
 
 /// Reads the opened `file`, checked through its handle: a regular file of at most `cap` bytes.
 fn read_opened(file: std::fs::File, cap: u64) -> Result<Vec<u8>, Unread> {
-    let meta = file.metadata().map_err(Unread::Io)?;
-    if !meta.is_file() {
+    let Some(meta) = crate::formats::files::os::regular_file_metadata(&file).map_err(Unread::Io)? else {
         return Err(Unread::NotAFile);
-    }
+    };
     if meta.len() > cap {
         return Err(Unread::TooLarge(meta.len()));
     }

@@ -182,7 +182,11 @@ pub fn graph(src: &Path) -> BTreeMap<PathBuf, BTreeSet<PathBuf>> {
 
 /// `p` from `src`.
 pub fn short(src: &Path, p: &Path) -> String {
-    p.strip_prefix(src).unwrap().display().to_string()
+    // Its folders joined by `/` on every system (Windows writes `\`), as the messages and
+    // the tests' expectations name them.
+    let parts: Vec<String> =
+        p.strip_prefix(src).unwrap().components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
+    parts.join("/")
 }
 
 /// The strongly connected parts of `g` with more than one member (Tarjan's algorithm).
