@@ -100,17 +100,28 @@ pub struct FolderLock {
 
 /// Waits for, then holds, the exclusive lock of the folder `dir` (Unix: `flock` on the
 /// folder itself, so no lock file is left behind; released by the system however the
-/// process ends). Elsewhere a no-op: the browser writes no folders.
-pub fn lock_folder(dir: &Path) -> io::Result<FolderLock> {
+/// process ends). The folder is opened without following a link (a link swapped in for it
+/// is refused, not locked through). Where another process holds the lock, `waiting` is
+/// called once before the wait, so that the user hears why nothing happens. Elsewhere a
+/// no-op: the browser writes no folders.
+pub fn lock_folder(dir: &Path, waiting: impl FnOnce()) -> io::Result<FolderLock> {
     #[cfg(unix)]
     {
-        let folder = File::open(dir)?;
-        folder.lock()?;
+        use std::os::unix::fs::OpenOptionsExt;
+        let folder = File::options().read(true).custom_flags(libc::O_NOFOLLOW | libc::O_DIRECTORY).open(dir)?;
+        match folder.try_lock() {
+            Ok(()) => {}
+            Err(std::fs::TryLockError::WouldBlock) => {
+                waiting();
+                folder.lock()?;
+            }
+            Err(std::fs::TryLockError::Error(e)) => return Err(e),
+        }
         Ok(FolderLock { _folder: folder })
     }
     #[cfg(not(unix))]
     {
-        let _ = dir;
+        let _ = (dir, waiting);
         Ok(FolderLock {})
     }
 }
