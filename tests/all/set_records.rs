@@ -234,3 +234,26 @@ fn a_run_that_waits_for_the_folders_lock_says_so_once() {
     let o = exercise("sheets", &dir, &["--seed", "4"]);
     assert!(o.status.success() && !stderr(&o).contains("another phonglab"), "{}", stderr(&o));
 }
+
+/// The rule of docs/security.md: the folder named with `--out`, and everything phonglab
+/// makes or enters inside it, is never a link (`--out linkdir` is refused, nothing lands
+/// where it points); a link above it is the user's own path (a home folder that is a
+/// link, macOS's `/tmp`): `--out linkdir/sub` writes into `sub` where `linkdir` leads, and
+/// the folder the link names gains `sub` alone.
+#[cfg(unix)]
+#[test]
+fn a_link_above_the_output_folder_is_the_users_path() {
+    let r = root("above");
+    let real = r.join("real");
+    std::fs::create_dir(&real).unwrap();
+    std::fs::write(real.join("notes.txt"), "mine").unwrap();
+    std::os::unix::fs::symlink("real", r.join("linkdir")).unwrap();
+    let o = exercise("sheets", &r.join("linkdir"), &[]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("never through a link"), "{}", stderr(&o));
+    assert_eq!(names(&real), ["notes.txt"], "nothing written through the link");
+    ok(exercise("sheets", &r.join("linkdir/sub"), &[]));
+    assert_eq!(names(&real), ["notes.txt", "sub"]);
+    assert!(real.join("sub/exercise-01-key.md").is_file() && real.join("sub/index.md").is_file());
+    assert!(std::fs::symlink_metadata(r.join("linkdir")).unwrap().file_type().is_symlink(), "still a link");
+}
