@@ -31,7 +31,7 @@ const FALLBACK: u64 = 4 << 30;
 
 /// Sets the budget: `asked` (`--memory-budget`) or the default, for this process and for
 /// the core's OBJ reader. Refuses, in words, a budget larger than the address space the
-/// process's limit (`ulimit -v`) still leaves ([`over_the_limit`]): past the limit an
+/// process's limit (`ulimit -v`) still leaves: past the limit an
 /// allocation aborts the process, so such a budget would let a run start that cannot end.
 pub fn set(asked: Option<u64>) -> Result<(), String> {
     use crate::platform::os;

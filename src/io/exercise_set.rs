@@ -355,7 +355,7 @@ const HELD_PER_FILE_BYTE: u64 = 4;
 
 /// Refuses, in words and before anything is written, a set whose making would take more
 /// than the memory budget ([`super::budget`]; under `ulimit -v`, what the limit leaves):
-/// the files of a sample of [`SAMPLE`] exercises are made, and their bytes (the PDFs' fonts
+/// the files of a sample of four exercises are made, and their bytes (the PDFs' fonts
 /// counted in each, a margin) scaled to the count asked for. A set no larger than the
 /// sample is not estimated: making it is as cheap as the estimate.
 pub fn check_budget(a: &Request) -> Result<()> {
