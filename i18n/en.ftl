@@ -528,6 +528,7 @@ budget-over = { $what } needs about { $needed }, more than the memory budget of 
 budget-from-option = as --memory-budget asks
 budget-from-system = half of the memory available
 budget-from-limit = half of the address space left under this process's limit, ulimit -v
+budget-over-limit = --memory-budget { $budget } is more than this process may still take under its limit, ulimit -v ({ $room } left): a run past it would stop half-way. Lower --memory-budget, or raise the limit (ulimit -v)
 budget-size-refused = { $value }: write a size such as 512M, 8G or 1.5G
 budget-what-render = a { $width } x { $height } picture of { $count ->
         [one] one triangle
@@ -682,6 +683,8 @@ cost-wrote = wrote { $files } in { $out }
 ## io-errors
 
 set-folder-is-a-link = a link to another folder: phonglab writes a set of files only into a real folder, never through a link
+set-record-not-one = a link, or not a regular file phonglab can have written (a pipe, a device, a folder, or a file over 1 MiB), where phonglab keeps its list of the files it wrote in this folder: phonglab never reads or writes through it. Remove it, or choose another folder
+set-waiting-for-lock = waiting: another phonglab is writing into { $dir }; this one goes on when it has finished
 set-left-alone = { $name } in { $dir } was left as it is: { $why }
 set-why-loose-journal = a journal phonglab did not write there (planted, or left by an older phonglab); nothing it names was touched
 set-why-not-a-folder = it is named like phonglab's staging folders but is not a folder phonglab made; nothing was followed or touched
@@ -1027,6 +1030,7 @@ err-category-slash = --category cannot start or end with "/": Moodle would read 
 err-category-long = --category is { $length } characters long; Moodle keeps a category's name in at most { $max }.
 err-worksheet-moodle = --worksheet writes exercise 0 into the sheets only; a file for Moodle takes --level or --effects.
 budget-what-moodle = a file for Moodle of { $count } exercises (about { $size } on disk)
+budget-what-sheets = { $count } exercise sheets with their keys and the two PDFs (about { $size } on disk)
 
 ## arg-errors
 

@@ -528,6 +528,7 @@ budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçament
 budget-from-option = como pede --memory-budget
 budget-from-system = metade da memória disponível
 budget-from-limit = metade do espaço de endereçamento que resta abaixo do limite deste processo, ulimit -v
+budget-over-limit = --memory-budget { $budget } é mais do que este processo ainda pode ocupar sob o seu limite, ulimit -v (restam { $room }): uma execução que o ultrapasse pararia no meio. Diminua --memory-budget ou aumente o limite (ulimit -v)
 budget-size-refused = { $value }: escreva um tamanho como 512M, 8G ou 1,5G
 budget-what-render = uma imagem de { $width } x { $height } com { $count ->
         [one] um triângulo
@@ -682,6 +683,8 @@ cost-wrote = gravado { $files } em { $out }
 ## io-errors
 
 set-folder-is-a-link = um link para outra pasta: o phonglab só grava um conjunto de arquivos em uma pasta de verdade, nunca por meio de um link
+set-record-not-one = um link, ou algo que não é um arquivo comum que o phonglab possa ter gravado (um pipe, um dispositivo, uma pasta, ou um arquivo com mais de 1 MiB), onde o phonglab guarda a lista dos arquivos que gravou nesta pasta: o phonglab nunca lê nem grava por meio dele. Remova-o ou escolha outra pasta
+set-waiting-for-lock = aguardando: outro phonglab está gravando em { $dir }; este continua quando ele terminar
 set-left-alone = { $name } em { $dir } ficou como estava: { $why }
 set-why-loose-journal = um diário que o phonglab não escreveu ali (colocado por alguém, ou deixado por uma versão antiga do phonglab); nada do que ele nomeia foi tocado
 set-why-not-a-folder = tem o nome das pastas temporárias do phonglab, mas não é uma pasta criada pelo phonglab; nada foi seguido nem tocado
@@ -1027,6 +1030,7 @@ err-category-slash = --category não pode começar nem terminar com "/": o Moodl
 err-category-long = --category tem { $length } caracteres; o Moodle guarda o nome de uma categoria em no máximo { $max }.
 err-worksheet-moodle = --worksheet escreve o exercício 0 só nas listas; um arquivo para o Moodle usa --level ou --effects.
 budget-what-moodle = um arquivo para o Moodle com { $count } exercícios (cerca de { $size } em disco)
+budget-what-sheets = { $count } folhas de exercícios com as respostas e os dois PDFs (cerca de { $size } em disco)
 
 ## arg-errors
 

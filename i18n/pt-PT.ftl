@@ -528,6 +528,7 @@ budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçament
 budget-from-option = como pede --memory-budget
 budget-from-system = metade da memória disponível
 budget-from-limit = metade do espaço de endereçamento que resta sob o limite deste processo, ulimit -v
+budget-over-limit = --memory-budget { $budget } é mais do que este processo ainda pode ocupar sob o seu limite, ulimit -v (restam { $room }): uma execução que o ultrapasse pararia a meio. Baixe --memory-budget, ou aumente o limite (ulimit -v)
 budget-size-refused = { $value }: escreva um tamanho como 512M, 8G ou 1,5G
 budget-what-render = uma imagem de { $width } x { $height } com { $count ->
         [one] um triângulo
@@ -682,6 +683,8 @@ cost-wrote = escrito { $files } em { $out }
 ## io-errors
 
 set-folder-is-a-link = uma ligação para outra pasta: o phonglab só escreve um conjunto de ficheiros numa pasta verdadeira, nunca através de uma ligação
+set-record-not-one = uma ligação, ou algo que não é um ficheiro normal que o phonglab possa ter escrito (um pipe, um dispositivo, uma pasta, ou um ficheiro com mais de 1 MiB), onde o phonglab guarda a lista dos ficheiros que escreveu nesta pasta: o phonglab nunca lê nem escreve através dela. Remova-a, ou escolha outra pasta
+set-waiting-for-lock = à espera: outro phonglab está a escrever em { $dir }; este continua quando ele terminar
 set-left-alone = { $name } em { $dir } ficou como estava: { $why }
 set-why-loose-journal = um diário que o phonglab não escreveu ali (posto por alguém, ou deixado por uma versão antiga do phonglab); nada do que nomeia foi tocado
 set-why-not-a-folder = tem o nome das pastas temporárias do phonglab mas não é uma pasta criada pelo phonglab; nada foi seguido nem tocado
@@ -1027,6 +1030,7 @@ err-category-slash = --category não pode começar nem acabar em "/": o Moodle l
 err-category-long = --category tem { $length } caracteres; o Moodle guarda o nome de uma categoria em { $max }, no máximo.
 err-worksheet-moodle = --worksheet escreve o exercício 0 só nas fichas; um ficheiro para o Moodle usa --level ou --effects.
 budget-what-moodle = um ficheiro para o Moodle com { $count } exercícios (cerca de { $size } em disco)
+budget-what-sheets = { $count } fichas de exercícios com as respostas e os dois PDF (cerca de { $size } em disco)
 
 ## arg-errors
 

@@ -26,7 +26,9 @@ fn main() -> ExitCode {
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
     let args = cli::Cli::parse_localised();
     phonglab::locale::set_default(args.locale());
-    phonglab::io::budget::set(args.memory_budget);
+    if let Err(e) = phonglab::io::budget::set(args.memory_budget) {
+        return cli::finish(Err(anyhow::Error::msg(e)));
+    }
     match args.command {
         // The two commands that draw the window: the command line reads their arguments,
         // the window draws them (the two layers never name each other; this file joins them).

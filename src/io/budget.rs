@@ -30,12 +30,29 @@ static FROM: AtomicU64 = AtomicU64::new(0);
 const FALLBACK: u64 = 4 << 30;
 
 /// Sets the budget: `asked` (`--memory-budget`) or the default, for this process and for
-/// the core's OBJ reader.
-pub fn set(asked: Option<u64>) {
+/// the core's OBJ reader. Refuses, in words, a budget larger than the address space the
+/// process's limit (`ulimit -v`) still leaves: past the limit an
+/// allocation aborts the process, so such a budget would let a run start that cannot end.
+pub fn set(asked: Option<u64>) -> Result<(), String> {
+    use crate::platform::os;
+    if let Some(asked) = asked
+        && let Some(room) = over_the_limit(asked, os::address_space_limit(), os::address_space_in_use())
+    {
+        return Err(t!("budget-over-limit", budget = describe_bytes(asked), room = describe_bytes(room)));
+    }
     let (bytes, from) = asked.map_or_else(default_budget, |b| (b, 1));
     BUDGET.store(bytes, Ordering::Relaxed);
     FROM.store(from, Ordering::Relaxed);
     phonglab_core::mesh::obj::set_memory_budget(bytes);
+    Ok(())
+}
+
+/// The address space left under the process's `limit` (`ulimit -v`) once what it takes
+/// (`in_use`) is counted, when a budget of `asked` bytes is more than that; `None` when it
+/// fits, or no limit is set.
+fn over_the_limit(asked: u64, limit: Option<u64>, in_use: Option<u64>) -> Option<u64> {
+    let room = limit?.saturating_sub(in_use.unwrap_or(0));
+    (asked > room).then_some(room)
 }
 
 /// The default budget, and where it came from (1: `--memory-budget`, 0: the memory
@@ -206,9 +223,20 @@ mod tests {
         assert_eq!(budget_of(Some(16 * g), Some(g), Some(2 * g)), (0, 2), "a limit already reached");
     }
 
+    /// A `--memory-budget` past what `ulimit -v` leaves is refused (a run under it
+    /// aborted on an allocation); one within it, or without a limit, is taken.
+    #[test]
+    fn a_budget_past_the_address_space_limit_is_refused() {
+        let g = 1u64 << 30;
+        assert_eq!(over_the_limit(16 * g, Some(3 * g), Some(g)), Some(2 * g));
+        assert_eq!(over_the_limit(g, Some(3 * g), Some(g)), None);
+        assert_eq!(over_the_limit(16 * g, None, Some(g)), None);
+        assert_eq!(over_the_limit(g, Some(g / 2), Some(g)), Some(0), "a limit already reached");
+    }
+
     #[test]
     fn over_the_budget_says_the_estimate_and_the_option() {
-        set(Some(1 << 30));
+        set(Some(1 << 30)).unwrap();
         assert!(check("a picture", 1 << 29).is_ok());
         let e = check("a picture of 32768 x 32768 pixels", 24 << 30).unwrap_err();
         assert!(e.contains("a picture of 32768 x 32768 pixels needs about 25 769 803 776 bytes"), "{e}");

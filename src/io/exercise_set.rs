@@ -336,6 +336,7 @@ fn handed_out(ex: &Exercise, number: usize, exam: bool) -> std::borrow::Cow<'_, 
 /// phonglab did not write there as it is now (a key edited since) refuses the set
 /// ([`refuse_foreign`]).
 pub fn write(dir: &std::path::Path, a: &Request) -> Result<(Vec<Exercise>, Vec<String>)> {
+    check_budget(a)?;
     super::atomic_write::check_folder_destination(dir)?;
     let (exercises, set) = exercise_set(a)?;
     refuse_foreign(dir, &set)?;
@@ -343,9 +344,40 @@ pub fn write(dir: &std::path::Path, a: &Request) -> Result<(Vec<Exercise>, Vec<S
     Ok((exercises, notices))
 }
 
+/// How many exercises the estimate of a set's size makes (the request's first ones).
+const SAMPLE: usize = 4;
+
+/// While it makes a set, phonglab holds all its files (sheets, keys, scene files, the two
+/// PDFs) and what made them. Measured (`VmPeak` in `/proc`, the address space `ulimit -v`
+/// limits; debug build, level 4): 95 MB for one exercise, 100 MB for 40, so about 125 KB
+/// an exercise for 34 KB of files: under 4 times the files' bytes.
+const HELD_PER_FILE_BYTE: u64 = 4;
+
+/// Refuses, in words and before anything is written, a set whose making would take more
+/// than the memory budget ([`super::budget`]; under `ulimit -v`, what the limit leaves):
+/// the files of a sample of four exercises are made, and their bytes (the PDFs' fonts
+/// counted in each, a margin) scaled to the count asked for. A set no larger than the
+/// sample is not estimated: making it is as cheap as the estimate.
+pub fn check_budget(a: &Request) -> Result<()> {
+    if a.count <= SAMPLE {
+        return Ok(());
+    }
+    let sample = Request { count: SAMPLE, worksheet: false, ..a.clone() };
+    let (_, set) = exercise_set(&sample)?;
+    let bytes: u64 = set.files.iter().map(|(_, b)| b.len() as u64).sum();
+    let files = bytes / SAMPLE as u64 * a.count as u64;
+    let what = t!(
+        "budget-what-sheets",
+        count = phonglab_core::locale::grouped(a.count as u64),
+        size = phonglab_core::mesh::obj::describe_bytes(files)
+    );
+    super::budget::check(&what, files.saturating_mul(HELD_PER_FILE_BYTE)).map_err(anyhow::Error::msg)
+}
+
 /// Refuses to write `set` into `dir` over a file phonglab did not write there as it is now
 /// ([`super::file_set::foreign_file`]: a key the teacher edited since), which it keeps.
 pub fn refuse_foreign(dir: &std::path::Path, set: &FileSet) -> Result<()> {
+    super::set_journal::check_records(dir)?;
     match super::file_set::foreign_file(dir, set) {
         Some(path) => anyhow::bail!(t!("set-not-ours", path = super::reasons::shown(&path))),
         None => Ok(()),

@@ -111,8 +111,9 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
         return Err(WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED));
     }
     std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED))?;
-    let _lock = crate::platform::os::lock_folder(dir)
+    let _lock = crate::platform::os::lock_folder(dir, || say_waiting(dir))
         .map_err(|e| WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED))?;
+    super::set_journal::check_records(dir)?;
     let notices =
         super::set_journal::recover_locked(dir).map_err(|e| WriteError::new(dir, set_steps::RECOVER, e, UNTOUCHED))?;
     refuse_unwritable_names(dir, set)?;
@@ -127,19 +128,23 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
     }
 }
 
-/// The first file of `set` that `dir` holds as a regular file that phonglab did not write
-/// there as it is now (named, unchanged, in the folder's list of what it wrote,
-/// [`super::set_journal::WRITTEN`]) and whose bytes differ from the new one's: a key the
-/// teacher edited, a file of theirs with a set's name. A set replaces only its own earlier
-/// files, so its writer refuses before anything is written.
+/// The first file of `set` that `dir` holds as a regular file whose bytes are neither what
+/// phonglab wrote there (named with its size and hash in the folder's list of what it
+/// wrote, [`super::set_journal::WRITTEN`]; see [`super::set_journal::written_as_is`]) nor
+/// the new one's: a key the teacher edited, a file of theirs with a set's name. A set
+/// replaces only its own earlier files, so its writer refuses before anything is written.
+/// Each file is read without following a link (a link is refused by [`write_set`]).
 pub fn foreign_file(dir: &Path, set: &FileSet) -> Option<std::path::PathBuf> {
+    use super::set_journal::{hash_bytes, written_as_is};
     let written = super::set_journal::written_list(dir);
     set.files.iter().find_map(|(name, bytes)| {
         let path = dir.join(name);
-        let is_file = std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file());
-        let ours = written.iter().any(|e| e.name == *name && super::set_journal::is_entry(&path, e));
-        let same = || std::fs::read(&path).is_ok_and(|old| old == *bytes);
-        (is_file && !ours && !same()).then_some(path)
+        if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+            return None;
+        }
+        let Ok(now) = entry_of(dir, name) else { return Some(path) };
+        let same = now.size == bytes.len() as u64 && now.hash == hash_bytes(bytes);
+        (!written_as_is(&written, &now) && !same).then_some(path)
     })
 }
 
@@ -176,12 +181,19 @@ fn refuse_unwritable_names(dir: &Path, set: &FileSet) -> Result<(), WriteError> 
     Ok(())
 }
 
+/// Says once, on the terminal, that this run waits for another phonglab writing into `dir`
+/// (which holds the folder's lock): a wait with nothing said looks like a hang.
+fn say_waiting(dir: &Path) {
+    let dir = super::reasons::shown(dir);
+    eprintln!("{}", phonglab_core::escape::terminal::lines(&crate::t!("set-waiting-for-lock", dir = dir)));
+}
+
 /// Finishes or throws away what a killed writer of a set left in `dir` (with a journal
 /// that has decided, the swap is finished; without, the staging folder is removed), acting
 /// only on what phonglab wrote; returns a message for each thing left as it is. Takes the
 /// folder's lock, so a writer still at work is waited for, never disturbed.
 pub fn recover(dir: &Path) -> io::Result<Vec<String>> {
-    let _lock = crate::platform::os::lock_folder(dir)?;
+    let _lock = crate::platform::os::lock_folder(dir, || say_waiting(dir))?;
     super::set_journal::recover_locked(dir)
 }
 
@@ -205,7 +217,7 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
     swap(dir, staging, &journal)?;
     // The list of what this set wrote, for the next one, while the journal still stands (a
     // kill before it is finished by the recovery, which writes it too).
-    super::set_journal::write_written_list(dir, &journal.new);
+    super::set_journal::write_written_list(dir, staging, &journal.new);
     // The old files first, with the journal still there: a kill now is finished by the
     // next run, and one after leaves an empty folder, which the next run removes.
     std::fs::remove_dir_all(staging.join(ASIDE))

@@ -185,14 +185,18 @@ pub fn write(dir: &std::path::Path, bank: &Bank, format: Format) -> Result<(Stri
 /// Refuses to write `name` into `dir` over a regular file of that name that phonglab did
 /// not write there, or that was changed since (a teacher's own questions, an edited
 /// export): the folder's list of what phonglab wrote ([`super::set_journal::WRITTEN`])
-/// must name it, unchanged. A link or anything else at the name is refused by the writer.
+/// must name it with its bytes as they are (a copied folder's file, with the same bytes,
+/// is still phonglab's: [`super::set_journal::written_as_is`]). A list that is a link or
+/// not a regular file refuses the folder ([`super::set_journal::check_records`]). A link or anything else at the name is refused by the writer.
 fn refuse_foreign(dir: &std::path::Path, name: &str) -> Result<()> {
+    super::set_journal::check_records(dir)?;
     let path = dir.join(name);
     if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
         return Ok(());
     }
     let written = super::set_journal::written_list(dir);
-    if written.iter().any(|e| e.name == name && super::set_journal::is_entry(&path, e)) {
+    let now = super::set_journal::entry_of(dir, name);
+    if now.is_ok_and(|now| super::set_journal::written_as_is(&written, &now)) {
         return Ok(());
     }
     anyhow::bail!(t!("moodle-not-ours", path = super::reasons::shown(&path)))

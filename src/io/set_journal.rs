@@ -161,6 +161,15 @@ pub fn is_entry(path: &Path, entry: &Entry) -> bool {
     read_entry(path).is_ok_and(|(size, hash, id)| size == entry.size && hash == entry.hash && id == entry.id)
 }
 
+/// Is the file `now` (its entry, read in the folder now) one that the folder's list of
+/// what phonglab wrote (`written`) names with these very bytes (name, size and hash)? Its
+/// identity is not asked: a folder copied whole (`cp -a`), or a file rewritten with the
+/// same bytes, still holds what phonglab wrote, not the teacher's work. (Removing a file
+/// asks its identity too: [`is_entry`].)
+pub fn written_as_is(written: &[Entry], now: &Entry) -> bool {
+    written.iter().any(|e| e.name == now.name && e.size == now.size && e.hash == now.hash)
+}
+
 /// Is `name` one of phonglab's own names in a set's folder (a staging folder, a journal)?
 pub fn is_reserved(name: &str) -> bool {
     name.starts_with(&format!(".{STAGING}"))
@@ -308,9 +317,27 @@ pub fn recover_locked(dir: &Path) -> io::Result<Vec<String>> {
     Ok(notices)
 }
 
+/// Refuses the folder `dir` when its list of what phonglab wrote ([`WRITTEN`]) is there but
+/// is not one phonglab can have written: a link (dangling or not), a pipe, a device, a
+/// folder, or a file past 1 MiB. Such a thing is never followed, read or replaced: a planted
+/// link would send the list (its temporary file and its rename) to the file it names, and
+/// a planted pipe would pass for an empty list, so that the teacher's files were blamed for
+/// it. Called before anything is written, and again under the folder's lock.
+pub fn check_records(dir: &Path) -> Result<(), super::atomic_write::WriteError> {
+    use super::atomic_write::{WriteError, set_steps};
+    let path = dir.join(WRITTEN);
+    let refused = |e| Err(WriteError::new(&path, "write-step-name", e, set_steps::KEPT_FOLDER));
+    match read_record(&path) {
+        Ok(_) | Err(Record::Missing) => Ok(()),
+        Err(Record::Unreadable(e)) if !crate::platform::os::is_link_refused(&e) => refused(e),
+        Err(_) => refused(io::Error::new(io::ErrorKind::InvalidInput, t!("set-record-not-one"))),
+    }
+}
+
 /// The files of the last set phonglab wrote into `dir`, as its list names them: empty when
 /// there is no list, or it is a link, not a regular file, too large or unreadable (then nothing
-/// beyond the new set's own names is replaced).
+/// beyond the new set's own names is replaced; a writer refuses such a list first,
+/// [`check_records`]).
 pub fn written_list(dir: &Path) -> Vec<Entry> {
     read_record(&dir.join(WRITTEN))
         .ok()
@@ -357,24 +384,31 @@ fn finish(dir: &Path, staging: &Path, j: &Journal) -> Result<(), String> {
         let names = phonglab_core::escape::terminal::text(&stuck.join(", "));
         return Err(t!("set-why-unfinished", names = names));
     }
+    write_written_list(dir, staging, &j.new);
     let _ = std::fs::remove_dir_all(staging);
-    write_written_list(dir, &j.new);
     Ok(())
 }
 
 /// Records, whole, the files a set wrote into `dir` ([`WRITTEN`]), with those the list
 /// named before that are still there exactly as phonglab wrote them (another kind of set's
 /// files: the sheets beside a Moodle file, which the Moodle file leaves in place, stay
-/// phonglab's to replace); a failure only leaves them for the next set to keep.
-pub fn write_written_list(dir: &Path, new: &[Entry]) {
+/// phonglab's to replace); a failure only leaves them for the next set to keep. The list is
+/// written in the set's staging folder (made by this writer) and renamed over the name in
+/// `dir`: a rename replaces a name, never follows it, so a link planted there since
+/// [`check_records`] is replaced itself, and nothing is written where it points.
+pub fn write_written_list(dir: &Path, staging: &Path, new: &[Entry]) {
     let mut all = new.to_vec();
     for earlier in written_list(dir) {
         if !all.iter().any(|e| e.name == earlier.name) && is_entry(&dir.join(&earlier.name), &earlier) {
             all.push(earlier);
         }
     }
-    if let Ok(list) = serde_json::to_vec(&all) {
-        let _ = super::atomic_write::write(&dir.join(WRITTEN), &list);
+    let Ok(list) = serde_json::to_vec(&all) else { return };
+    let tmp = staging.join(WRITTEN);
+    // One a killed writer left in its own staging folder (the journal said it is one).
+    let _ = std::fs::remove_file(&tmp);
+    if super::atomic_write::write_new(&tmp, &list).is_ok() && std::fs::rename(&tmp, dir.join(WRITTEN)).is_err() {
+        let _ = std::fs::remove_file(&tmp);
     }
 }
 

@@ -154,7 +154,15 @@ pub struct FolderLock {
 ///   machine (a lab's shared terminal server); where Windows refuses it (another user's
 ///   mutex, a sandbox), the session's own (`Local\`).
 /// - Elsewhere a no-op: the browser writes no folders.
-pub fn lock_folder(dir: &Path) -> io::Result<FolderLock> {
+///
+/// The folder is opened without following a link (Unix: a link swapped in for it is
+/// refused, not locked through). Where another process holds the lock, `waiting` is called
+/// once before the wait, so that the user hears why nothing happens.
+pub fn lock_folder(dir: &Path, waiting: impl FnOnce()) -> io::Result<FolderLock> {
+    if let Some(lock) = take_folder_lock(dir, false)? {
+        return Ok(lock);
+    }
+    waiting();
     take_folder_lock(dir, true)?.ok_or_else(|| io::Error::other("the folder's lock was not taken"))
 }
 
@@ -167,7 +175,8 @@ pub fn try_lock_folder(dir: &Path) -> io::Result<Option<FolderLock>> {
 fn take_folder_lock(dir: &Path, wait: bool) -> io::Result<Option<FolderLock>> {
     #[cfg(unix)]
     {
-        let folder = File::open(dir)?;
+        use std::os::unix::fs::OpenOptionsExt;
+        let folder = File::options().read(true).custom_flags(libc::O_NOFOLLOW | libc::O_DIRECTORY).open(dir)?;
         if wait {
             folder.lock()?;
         } else if let Err(e) = folder.try_lock() {
@@ -375,7 +384,7 @@ mod tests {
         other.child.kill().unwrap();
         other.child.wait().unwrap();
         assert!(try_lock_folder(&dir).unwrap().is_some(), "its holder killed: taken");
-        drop(lock_folder(&dir).unwrap());
+        drop(lock_folder(&dir, || {}).unwrap());
         std::fs::remove_dir_all(dir.parent().unwrap()).unwrap();
     }
 
@@ -441,7 +450,7 @@ mod tests {
             match line.unwrap().trim() {
                 "lock" => {
                     say("waiting");
-                    held = Some(super::lock_folder(std::path::Path::new(&dir)).unwrap());
+                    held = Some(super::lock_folder(std::path::Path::new(&dir), || {}).unwrap());
                     say("held");
                 }
                 "release" => {

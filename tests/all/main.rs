@@ -37,6 +37,7 @@ mod pyopengl_mesa;
 mod render_vs_mesa;
 mod safe_to_share;
 mod scenes;
+mod set_records;
 mod shader;
 mod shader_gpu;
 mod shader_mesa;

@@ -432,6 +432,19 @@ fn a_hostile_category_on_the_command_line_leaves_the_file_whole() {
     assert!(g[1..].iter().all(|q| q["type"] == "Numerical"), "{g:?}");
 }
 
+/// Issue 60: a category holding code points XML 1.0 refuses (U+FFFE, U+FFFF) or tells
+/// documents to avoid (U+FDD0, U+1FFFF) leaves questions.xml well-formed: each is written
+/// visibly, as a control character is.
+#[test]
+fn a_category_with_non_characters_leaves_the_xml_well_formed() {
+    let dir = out_dir("non-characters");
+    let category = "a\u{FFFE}b\u{FFFF}c\u{FDD0}d\u{1FFFF}e";
+    let args = ["exercise", "--format", "moodle-xml", "--level", "1", "--count", "1", "--category", category];
+    run_ok(phonglab(&[&args[..], &["--out", dir.to_str().unwrap()]].concat()));
+    let qs = read_xml(&dir.join("questions.xml"));
+    assert_eq!(qs[0]["category"], "$course$/top/a\\u{FFFE}b\\u{FFFF}c\\u{FDD0}d\\u{1FFFF}e/exercise 1");
+}
+
 #[test]
 fn the_same_seed_writes_the_same_bytes_and_portuguese_uses_the_decimal_comma() {
     let (a, b) = (out_dir("same-a"), out_dir("same-b"));

@@ -215,6 +215,43 @@ fn a_size_past_the_memory_budget_is_refused_with_its_estimate_before_any_work() 
     assert!(stderr(&o).contains("write a size such as 512M, 8G or 1.5G"), "{}", stderr(&o));
 }
 
+/// Runs the binary with `args` under `ulimit -v KB` (in English).
+#[cfg(target_os = "linux")]
+fn under_ulimit(kb: u64, args: &str) -> Output {
+    std::process::Command::new("/bin/sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {kb} && exec \"$0\" {args}"))
+        .arg(env!("CARGO_BIN_EXE_phonglab"))
+        .env("LC_ALL", "C.UTF-8")
+        .output()
+        .unwrap()
+}
+
+/// Issue 60: under `ulimit -v`, a `--memory-budget` past what the limit leaves is refused
+/// in words (the run went on and aborted on an allocation, SIGABRT and a backtrace), and
+/// a set of sheets past the budget is refused before anything is written (the sheets were
+/// not budgeted: 1000 of them aborted under 150 MB).
+#[test]
+#[cfg(target_os = "linux")]
+fn a_budget_or_sheets_past_the_address_space_limit_are_refused_in_words() {
+    let dir = folder("ulimit");
+    let (bank, sheets) = (dir.join("b"), dir.join("u"));
+    let o = under_ulimit(
+        3_000_000,
+        &format!("exercise --format gift --count 100 --variants 100 --level 4 --memory-budget 16G --out {}", s(&bank)),
+    );
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "refused, not aborted: {e}");
+    assert!(e.contains("--memory-budget 17 179 869 184 bytes") && e.contains("ulimit -v"), "{e}");
+    assert!(!e.contains("backtrace") && !bank.exists(), "{e}");
+    let o = under_ulimit(150_000, &format!("exercise --count 1000 --level 4 --out {}", s(&sheets)));
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "refused, not aborted: {e}");
+    assert!(e.contains("1 000 exercise sheets with their keys and the two PDFs"), "{e}");
+    assert!(e.contains("memory budget") && e.contains("ulimit -v") && !e.contains("backtrace"), "{e}");
+    assert!(!sheets.exists(), "nothing written, not even the folder");
+}
+
 /// Issue 54, 4: a message quotes a line cut to about 80 characters, however long the line
 /// (a 2 MiB `ns = AAAA…` once put 4 MiB on the standard error).
 #[test]

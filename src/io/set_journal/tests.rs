@@ -173,6 +173,8 @@ enum Planted {
     Staging { name: String, journal: PlantedJournal, files: Vec<(String, Vec<u8>)>, aside: bool },
     /// A journal of the old form in the folder itself.
     LooseJournal(PlantedJournal),
+    /// The list of what phonglab wrote, as a link to a file outside (or to nothing there).
+    ListLink(bool),
 }
 
 /// A journal's contents, from noise to one of phonglab's form naming real files.
@@ -238,6 +240,7 @@ fn planted() -> impl Strategy<Value = Planted> {
         )
             .prop_map(|(name, journal, files, aside)| Planted::Staging { name, journal, files, aside }),
         journal().prop_map(Planted::LooseJournal),
+        any::<bool>().prop_map(Planted::ListLink),
     ]
 }
 
@@ -288,6 +291,10 @@ fn plant(dir: &Path, outside: &Path, things: &[Planted]) {
                 }
                 std::fs::write(s.join(JOURNAL), journal_bytes(dir, journal, false)).unwrap();
             }
+            Planted::ListLink(dangling) if free(&dir.join(WRITTEN)) => {
+                let target = outside.join(if *dangling { "made.txt" } else { "kept.txt" });
+                std::os::unix::fs::symlink(target, dir.join(WRITTEN)).unwrap();
+            }
             Planted::LooseJournal(j) if free(&dir.join(JOURNAL)) => {
                 std::fs::write(dir.join(JOURNAL), journal_bytes(dir, j, true)).unwrap();
             }
@@ -329,9 +336,10 @@ proptest! {
                     prop_assert_eq!(&std::fs::read(dir.join(n)).unwrap(), b);
                 }
             }
-            // Refused: a planted link or folder holds one of the set's names.
-            Err(e) => prop_assert!(e.to_string().contains("not a regular file"), "{}", e),
+            // Refused: a planted link or folder holds one of the set's names, or the list's.
+            Err(e) => prop_assert!(e.to_string().contains("not a regular file") || e.to_string().contains(WRITTEN), "{}", e),
         }
+        prop_assert!(!outside.join("made.txt").exists(), "nothing made through a link");
         untouched(&before, &dir, "a set written");
         untouched(&before_outside, &outside, "outside");
     }

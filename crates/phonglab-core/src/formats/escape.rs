@@ -21,7 +21,7 @@
 //! | JSON (as `serde_json` wrote it) | [`json::text`] | every control as `\u202e`, C0 included (serde's) |
 //! | a CSV field | [`csv::field`] | controls written `\u{202E}`, quoted where it holds `,` or `"` |
 //! | HTML text or attribute | [`html::text`] | no tag, entity or attribute end; controls written `\u{1B}` |
-//! | Moodle XML text | [`moodle_xml::text`] | as HTML's: entities, no control XML 1.0 refuses |
+//! | Moodle XML text | [`moodle_xml::text`] | as HTML's: entities, no control or non-character XML 1.0 refuses (U+FFFE) |
 //! | Moodle XML CDATA | [`moodle_xml::cdata`] | a section that no `]]>` closes early |
 //! | a Cloze part, its feedback | [`moodle_xml::cloze_part`] | `} # ~ / \\` escaped, no brace: the part stays whole |
 //! | Cloze question text (HTML) | [`moodle_xml::cloze_html`] | no brace, so no text reads as a part |
@@ -47,6 +47,25 @@ pub fn is_control(c: char) -> bool {
         | '\u{2028}' | '\u{2029}'
         | '\u{61C}' | '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}'
         | '\u{FEFF}')
+}
+
+/// Is `c` a non-character that XML 1.0 refuses (U+FFFE and U+FFFF: outside its `Char`
+/// production, so no parser reads a document holding one, not even as an entity) or tells
+/// documents to avoid (§2.2: U+FDD0-U+FDEF and the last two code points of every plane,
+/// U+1FFFE ... U+10FFFF)? The rest of what XML 1.0 refuses is a control ([`is_control`]:
+/// the C0 controls but tab, line feed and carriage return) or a surrogate, which a Rust
+/// string cannot hold.
+pub fn is_noncharacter(c: char) -> bool {
+    let n = c as u32;
+    (0xFDD0..=0xFDEF).contains(&n) || n & 0xFFFE == 0xFFFE
+}
+
+/// `text` with every non-character ([`is_noncharacter`]) written visibly (`\u{FFFE}`).
+fn visible_noncharacters(text: &str) -> std::borrow::Cow<'_, str> {
+    if !text.chars().any(is_noncharacter) {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    text.chars().map(|c| if is_noncharacter(c) { visible(c) } else { c.to_string() }).collect::<String>().into()
 }
 
 /// Text from outside made a name that a scene file keeps (a notebook's file name becomes
@@ -249,17 +268,19 @@ pub mod html {
 pub mod moodle_xml {
     /// Text in an element or a quoted attribute: `&`, `<`, `>`, `"` and `'` as entities,
     /// control characters written `\u{1B}` (XML 1.0 allows no C0 control but tab, line
-    /// feed and carriage return, not even as an entity), so it opens no tag and ends no
-    /// attribute or line.
+    /// feed and carriage return, not even as an entity) and non-characters too
+    /// (`\u{FFFE}`: [`super::is_noncharacter`]), so it opens no tag, ends no attribute or
+    /// line, and leaves the document well-formed.
     pub fn text(text: &str) -> String {
-        super::html::text(text)
+        super::html::text(&super::visible_noncharacters(text))
     }
 
     /// The inside of a `<![CDATA[ ... ]]>` section whose value is `html`: every `]]>`
     /// split across two sections (`]]]]><![CDATA[>`, as Moodle's own export writes it),
-    /// and control characters other than tab and line feed written `\u{1B}`.
+    /// and control characters other than tab and line feed, and non-characters, written
+    /// `\u{1B}` (a CDATA section holds only what XML 1.0 allows in a document).
     pub fn cdata(html: &str) -> String {
-        super::kept_lines(html).replace("]]>", "]]]]><![CDATA[>")
+        super::kept_lines(&super::visible_noncharacters(html)).replace("]]>", "]]]]><![CDATA[>")
     }
 
     /// Text inside an embedded answer (Cloze) part's braces: a part's feedback. Moodle's
@@ -515,6 +536,42 @@ mod tests {
         assert!(!part.contains(['}', '~', '{', '\\', '<']), "{part}");
         assert_eq!(part, "&amp;#125;&amp;#126;&amp;#123;&amp;#92;&amp;lt;b&amp;gt;&amp;amp;");
         assert_eq!(moodle_xml::cloze_html("<p>{1:NUMERICAL:=1}</p>"), "<p>&#123;1:NUMERICAL:=1&#125;</p>");
+    }
+
+    /// XML 1.0's `Char`: what a well-formed document may hold.
+    fn xml_char(c: char) -> bool {
+        matches!(c as u32, 0x9 | 0xA | 0xD | 0x20..=0xD7FF | 0xE000..=0xFFFD | 0x10000..=0x10FFFF)
+    }
+
+    /// Every class of code point XML 1.0 refuses (the C0 controls but tab, line feed and
+    /// carriage return; U+FFFE and U+FFFF) and those it tells documents to avoid (the C1
+    /// controls, U+FDD0-U+FDEF, the last two of every plane) is written visibly by the
+    /// element's and the CDATA section's escapers, so the document stays well-formed.
+    #[test]
+    fn moodle_xml_writes_no_code_point_xml_refuses() {
+        let mut refused: Vec<char> = ('\u{0}'..='\u{1F}').filter(|c| !matches!(c, '\t' | '\n' | '\r')).collect();
+        refused.extend(['\u{FFFE}', '\u{FFFF}']);
+        let mut avoided: Vec<char> = ('\u{7F}'..='\u{9F}').chain('\u{FDD0}'..='\u{FDEF}').collect();
+        avoided.extend(
+            (1..=16u32).flat_map(|plane| [plane << 16 | 0xFFFE, plane << 16 | 0xFFFF]).filter_map(char::from_u32),
+        );
+        for c in refused.iter().chain(&avoided) {
+            let within = format!("a{c}b");
+            for (which, out) in [("text", moodle_xml::text(&within)), ("cdata", moodle_xml::cdata(&within))] {
+                assert!(
+                    out.chars().all(|o| xml_char(o) && !is_noncharacter(o)),
+                    "{which} of U+{:04X}: {out:?}",
+                    *c as u32
+                );
+                assert!(out.contains(&format!("\\u{{{:X}}}", *c as u32)), "{which} of U+{:04X}: {out:?}", *c as u32);
+            }
+        }
+        assert!(refused.iter().all(|&c| !xml_char(c)), "the refused are XML's own");
+        // What XML allows is kept: the last characters before each refused range.
+        for c in ['\u{D7FF}', '\u{E000}', '\u{FFFD}', '\u{10000}', '\u{10FFFD}', 'é'] {
+            assert_eq!(moodle_xml::text(&c.to_string()), c.to_string());
+            assert_eq!(moodle_xml::cdata(&c.to_string()), c.to_string());
+        }
     }
 
     #[test]
