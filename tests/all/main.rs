@@ -41,6 +41,7 @@ mod shader;
 mod shader_gpu;
 mod shader_mesa;
 mod share;
+mod sheet_margins;
 mod things_to_try;
 mod ui;
 mod ui_classroom;
