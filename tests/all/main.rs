@@ -19,6 +19,7 @@ mod cli_help;
 mod diagnose;
 mod director;
 mod escaping;
+mod exam_sheets;
 mod export;
 mod gl_fields;
 mod i18n;
