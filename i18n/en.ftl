@@ -1045,4 +1045,6 @@ arg-error-did-you-mean = Did you mean { $suggestion }?
 arg-error-unknown-command = phonglab has no command { $name }.
 arg-error-missing = Missing: { $args }.
 arg-error-conflict = The option { $arg } cannot be used with { $other }.
+arg-error-twice = { $arg } is given twice: give it once.
+arg-error-unexpected = phonglab did not expect { $arg } here: it is no option, nor the value of one.
 arg-error-more = See { $help }.

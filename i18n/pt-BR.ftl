@@ -1045,4 +1045,6 @@ arg-error-did-you-mean = Você quis dizer { $suggestion }?
 arg-error-unknown-command = O phonglab não tem o comando { $name }.
 arg-error-missing = Falta informar { $args }.
 arg-error-conflict = A opção { $arg } não pode ser usada com { $other }.
+arg-error-twice = { $arg } foi informada duas vezes: informe-a uma vez só.
+arg-error-unexpected = O phonglab não esperava { $arg } aqui: não é uma opção nem o valor de uma.
 arg-error-more = Veja { $help }.

@@ -1045,4 +1045,6 @@ arg-error-did-you-mean = Queria dizer { $suggestion }?
 arg-error-unknown-command = O phonglab não tem o comando { $name }.
 arg-error-missing = Falta indicar { $args }.
 arg-error-conflict = A opção { $arg } não pode ser usada com { $other }.
+arg-error-twice = { $arg } foi indicada duas vezes: indique-a uma só vez.
+arg-error-unexpected = O phonglab não esperava { $arg } aqui: não é uma opção nem o valor de uma.
 arg-error-more = Veja { $help }.

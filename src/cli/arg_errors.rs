@@ -27,6 +27,10 @@ pub fn message(e: &clap::Error, command: Option<&str>) -> Option<String> {
         ErrorKind::ArgumentConflict => {
             let arg = arg_name(&string(e, ContextKind::InvalidArg)?);
             let other: Vec<String> = strings(e, ContextKind::PriorArg).iter().map(|a| arg_name(a)).collect();
+            // `--level 3 --level 4`: clap calls an option given twice a conflict with itself.
+            if other == [arg.clone()] {
+                return Some(finish(t!("arg-error-twice", arg = arg), command));
+            }
             Some(t!("arg-error-conflict", arg = arg, other = other.join(", ")))
         }
         ErrorKind::NoEquals | ErrorKind::TooFewValues | ErrorKind::WrongNumberOfValues => {
@@ -34,11 +38,16 @@ pub fn message(e: &clap::Error, command: Option<&str>) -> Option<String> {
         }
         _ => None,
     }?;
+    Some(finish(said, command))
+}
+
+/// `said` as the refusal prints it, then where the help is.
+fn finish(said: String, command: Option<&str>) -> String {
     let help = match command {
         Some(c) => format!("phonglab {c} --help"),
         None => "phonglab --help".to_string(),
     };
-    Some(format!("phonglab: {said}\n{}\n", t!("arg-error-more", help = help)))
+    format!("phonglab: {said}\n{}\n", t!("arg-error-more", help = help))
 }
 
 /// A value not among those the argument takes, or no value at all.
@@ -65,7 +74,10 @@ fn refused_value(e: &clap::Error) -> Option<String> {
     if source.downcast_ref::<std::num::ParseFloatError>().is_some() {
         return Some(t!("arg-error-not-number", arg = arg, value = shown(&value)));
     }
+    // phonglab's parsers start their reason with the value ("\"virgula\": point or
+    // comma"), which the message says already.
     let reason = source.to_string();
+    let reason = reason.strip_prefix(&format!("{}: ", shown(&value))).map_or(reason.clone(), str::to_string);
     if let Some((low, high)) = range_of(&reason) {
         return Some(t!("arg-error-out-of-range", arg = arg, low = low, high = high, value = shown(&value)));
     }
@@ -86,7 +98,12 @@ fn range_of(reason: &str) -> Option<(String, String)> {
 }
 
 fn unknown_argument(e: &clap::Error) -> Option<String> {
-    let arg = shown(&string(e, ContextKind::InvalidArg)?);
+    let typed = string(e, ContextKind::InvalidArg)?;
+    let arg = shown(&typed);
+    // A word that is no option (`exercise extra`): an argument the command does not take.
+    if !typed.starts_with('-') {
+        return Some(t!("arg-error-unexpected", arg = arg));
+    }
     Some(with_suggestion(t!("arg-error-unknown", arg = arg), e, ContextKind::SuggestedArg))
 }
 

@@ -10,7 +10,8 @@ use phonglab_core::moodle::EXAM_DIGITS;
 use super::sheet_pdf::Block;
 use crate::t;
 
-/// Each asked step: (label, name, exact, rounded).
+/// Each asked step: (label, name, exact, rounded), numbered 1, 2, 3 … as the exam's sheet
+/// numbers them ([`phonglab_core::exercise::Numbering::Own`]).
 fn rows(ex: &Exercise) -> Vec<(String, String, String, String)> {
     let key = &ex.key;
     let printed = |v: &[f64], digits: Option<usize>| {
@@ -25,10 +26,12 @@ fn rows(ex: &Exercise) -> Vec<(String, String, String, String)> {
     };
     (0..key.steps.len())
         .filter(|&k| phonglab_core::quiz::asked(&ex.doc.scene, key, k))
-        .filter_map(|k| {
+        .enumerate()
+        .filter_map(|(row, k)| {
             let st = &key.steps[k];
             let v = st.value.as_ref()?;
-            Some((format!("{}. {}", k + 1, st.title), st.name.clone(), printed(v, None), printed(v, Some(EXAM_DIGITS))))
+            let label = format!("{}. {}", row + 1, st.title);
+            Some((label, st.name.clone(), printed(v, None), printed(v, Some(EXAM_DIGITS))))
         })
         .collect()
 }

@@ -14,7 +14,7 @@
 use std::fmt::Write as _;
 
 use anyhow::{Context as _, Result};
-use phonglab_core::exercise::{Exercise, Spec, generate, sheet_markdown};
+use phonglab_core::exercise::{Exercise, Numbering, Spec, generate, sheet_markdown_numbered};
 use phonglab_core::explain::{Side, explain};
 use phonglab_core::vocabulary::Quantity as Q;
 use phonglab_core::{Document, Engine};
@@ -162,8 +162,10 @@ fn colour(c: glam::DVec4) -> Vec<String> {
 }
 
 /// An exercise's sheet, to hand out: the class, name and date lines, the givens set as
-/// vectors and a matrix, and a box for each step, sized for its value.
-fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
+/// vectors and a matrix, and a box for each step, sized for its value; then the scene
+/// file's name, which an exam's sheet (`toml` = `None`) leaves off, and whose steps it
+/// numbers 1, 2, 3 … ([`Numbering::Own`]), as its key does.
+fn sheet_blocks(ex: &Exercise, toml: Option<&str>) -> Vec<Block> {
     use Block::{Answer, Heading, Matrix, Text, Title, Vector, WriteOn};
     let s = &ex.doc.scene;
     let vector = |name: &str, values: Vec<String>| Vector { name: name.into(), values, note: String::new() };
@@ -172,6 +174,12 @@ fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
         Title(ex.doc.name.clone()),
         WriteOn(vec![t!("sheet-class"), t!("sheet-name"), t!("sheet-date")]),
         Text(format!("{} {}", t!("sheet-compute", rules = rules), t!("sheet-colours"))),
+    ];
+    if s.light_model.two_sided {
+        // Which side to compute, as the Markdown sheet and the Moodle question say.
+        b.push(Text(t!("moodle-front-side")));
+    }
+    b.extend([
         Heading(t!("sheet-vertex")),
         vector(Q::VertexPos.name(), components(&s.vertex.position.to_array())),
         vector(Q::VertexNormal.name(), components(&s.vertex.normal.extend(0.0).to_array())),
@@ -181,7 +189,7 @@ fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
             name: "mview".into(),
             rows: matrix_components(&phonglab_core::transform::mat4_rows(&s.eye_from_world)),
         },
-    ];
+    ]);
     for (i, l) in s.lights.iter().enumerate() {
         b.push(Heading(t!("light-tab", index = i.to_string())));
         let what = if l.position.w == 0.0 { t!("sheet-direction") } else { t!("sheet-position") };
@@ -197,7 +205,11 @@ fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
             b.push(vector(&names([Q::AttConstant, Q::AttLinear, Q::AttQuadratic]), components(&l.attenuation)));
         }
         if l.is_spot() {
-            b.push(vector(Q::SpotDirection.name(), components(&l.spot_direction.extend(0.0).to_array())));
+            b.push(Vector {
+                name: Q::SpotDirection.name().into(),
+                values: components(&l.spot_direction.extend(0.0).to_array()),
+                note: t!("sheet-light-world", what = t!("sheet-direction")),
+            });
             b.push(vector(&names([Q::SpotCutoff, Q::SpotExponent]), components(&[l.spot_cutoff, l.spot_exponent])));
         }
     }
@@ -222,13 +234,16 @@ fn sheet_blocks(ex: &Exercise, toml: &str) -> Vec<Block> {
     }
     b.push(Heading(t!("sheet-compute-heading")));
     let asked = (0..ex.key.steps.len()).filter(|k| phonglab_core::quiz::asked(s, &ex.key, *k));
-    // Numbered as the key numbers them: the calculation's own step numbers.
-    for k in asked {
+    // Numbered as the key numbers them: the calculation's own step numbers; an exam's 1, 2, 3 ….
+    for (row, k) in asked.enumerate() {
         let st = &ex.key.steps[k];
         let cells = st.value.as_ref().map_or(1, Vec::len);
-        b.push(Answer { label: format!("{}. {}", k + 1, st.title), name: st.name.clone(), cells });
+        let number = if toml.is_some() { k + 1 } else { row + 1 };
+        b.push(Answer { label: format!("{number}. {}", st.title), name: st.name.clone(), cells });
     }
-    b.push(Text(t!("sheet-scene-file", file = toml).replace('`', "")));
+    if let Some(toml) = toml {
+        b.push(Text(t!("sheet-scene-file", file = toml).replace('`', "")));
+    }
     b
 }
 
@@ -288,7 +303,14 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
             String::new()
         };
         let handed_out = handed_out(ex, i + 1, a.exam);
-        let sheet = format!("{banner}{}\n{}\n", sheet_markdown(&handed_out), t!("sheet-scene-file", file = &toml));
+        // An exam's sheet numbers its steps 1, 2, 3 … (as its key does) and leaves the scene
+        // file, which holds the seed, off.
+        let sheet = if a.exam {
+            format!("{banner}{}", sheet_markdown_numbered(&handed_out, Numbering::Own))
+        } else {
+            let file = t!("sheet-scene-file", file = &toml);
+            format!("{}\n{file}\n", sheet_markdown_numbered(&handed_out, Numbering::Key))
+        };
         set.add(format!("{stem}.md"), sheet.clone());
         let mut key = answer_key(&ex.doc, &toml)?;
         sheets.push(Block::Section(handed_out.doc.name.clone()));
@@ -299,7 +321,7 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
             key.push_str(&super::exam_key::markdown(ex));
         }
         set.add(format!("{stem}-key.md"), key);
-        sheets.extend(sheet_blocks(&handed_out, &toml));
+        sheets.extend(sheet_blocks(&handed_out, (!a.exam).then_some(toml.as_str())));
         keys.push(Block::Section(t!("key-title", name = &ex.doc.name)));
         let mut key_pages = key_blocks(&ex.doc, &toml)?;
         if a.exam {

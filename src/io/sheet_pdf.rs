@@ -128,11 +128,14 @@ impl Fonts {
         units * size / f32::from(face.units_per_em())
     }
 
-    /// `text` broken into lines no wider than `width`.
+    /// `text` broken into lines no wider than `width`: at spaces, and a word wider than the
+    /// width (a long name) between its characters.
     fn wrap(&self, text: &str, size: f32, width: f32, mono: bool) -> Vec<String> {
         let mut lines = Vec::new();
         let mut line = String::new();
-        for word in text.split_whitespace() {
+        let words = text.split_whitespace().flat_map(|w| self.split_word(w, size, width, mono));
+        for word in words {
+            let word = word.as_str();
             let candidate = if line.is_empty() { word.to_string() } else { format!("{line} {word}") };
             if self.width(&candidate, size, mono) > width && !line.is_empty() {
                 lines.push(std::mem::replace(&mut line, word.to_string()));
@@ -144,6 +147,48 @@ impl Fonts {
             lines.push(line);
         }
         lines
+    }
+
+    /// `word` as pieces no wider than `width` (itself, if it fits).
+    fn split_word(&self, word: &str, size: f32, width: f32, mono: bool) -> Vec<String> {
+        let mut pieces = vec![String::new()];
+        for c in word.chars() {
+            let last = pieces.last_mut().expect("a piece");
+            last.push(c);
+            if self.width(last, size, mono) > width && last.chars().count() > 1 {
+                last.pop();
+                pieces.push(c.to_string());
+            }
+        }
+        pieces
+    }
+
+    /// `text` cut to `width`, ending in "…" where it was cut.
+    fn cut(&self, text: &str, size: f32, width: f32) -> String {
+        if self.width(text, size, false) <= width {
+            return text.to_string();
+        }
+        let mut out = String::new();
+        for c in text.chars() {
+            if self.width(&format!("{out}{c}…"), size, false) > width {
+                break;
+            }
+            out.push(c);
+        }
+        format!("{out}…")
+    }
+
+    /// Where a vector's note starts, right of its brackets, and its lines: beside the
+    /// brackets where it fits in what is left of `width`, else under them, wrapped.
+    fn vector_note(&self, name: &str, values: &[String], note: &str, width: f32) -> (f32, Vec<String>) {
+        if note.is_empty() {
+            return (0.0, Vec::new());
+        }
+        let col = column_width(self, &values.iter().collect::<Vec<_>>());
+        let left = self.width(&format!("{name} ="), NUMBERS, true) + 8.0;
+        let beside = left + 8.0 + values.len() as f32 * col + 10.0;
+        let (x, room) = if width - beside >= 120.0 { (beside, width - beside) } else { (0.0, width) };
+        (x, self.wrap(note, BODY - 1.0, room, false))
     }
 }
 
@@ -234,12 +279,19 @@ fn add_footers(fonts: &Fonts, pages: &mut [LaidOut], names: &[String]) {
     for (k, page) in pages.iter_mut().enumerate() {
         let name = names.get(page.part).cloned().unwrap_or_default();
         let number = crate::t!("pdf-page", page = (k + 1).to_string(), pages = count.to_string());
+        let x = PAGE.0 - MARGIN - fonts.width(&number, size, false);
         if !name.is_empty() {
+            // Cut where it would reach the page number.
+            let name = fonts.cut(&phonglab_core::escape::pdf::text(&name), size, x - MARGIN - 12.0);
             page.marks.push(Mark::Text { at: (MARGIN, base), text: name, size, mono: false });
         }
-        let x = PAGE.0 - MARGIN - fonts.width(&number, size, false);
         page.marks.push(Mark::Text { at: (x, base), text: number, size, mono: false });
     }
+}
+
+/// The height of a step's label, wrapped: `BODY * 1.4` for one line.
+fn label_height(fonts: &Fonts, label: &str, width: f32) -> f32 {
+    fonts.wrap(label, BODY, width, false).len().max(1) as f32 * BODY * 1.35 + BODY * 0.05
 }
 
 /// The rows of a vector's or a matrix's numbers: the widest number sets every column.
@@ -250,18 +302,23 @@ fn column_width(fonts: &Fonts, values: &[&String]) -> f32 {
 fn block_height(fonts: &Fonts, block: &Block, width: f32) -> f32 {
     match block {
         Block::Title(t) => fonts.wrap(t, TITLE, width, false).len() as f32 * TITLE * 1.3 + 10.0,
-        Block::Heading(_) => HEADING * 1.3 + 8.0,
+        Block::Heading(h) => fonts.wrap(h, HEADING, width, false).len().max(1) as f32 * HEADING * 1.3 + 8.0,
         Block::Text(t) => fonts.wrap(t, BODY, width, false).len() as f32 * BODY * 1.35 + 6.0,
         Block::Tick(t) => fonts.wrap(t, BODY, width - TICK_INDENT, false).len() as f32 * BODY * 1.35 + 6.0,
         Block::Ruled(n) => *n as f32 * RULED + 8.0,
         Block::WriteOn(_) => BODY * 2.6 + 8.0,
-        Block::Vector { .. } => NUMBERS * 1.6 + 5.0,
+        Block::Vector { name, values, note } => {
+            let (x, lines) = fonts.vector_note(name, values, note, width);
+            // Under the brackets (x = 0), each line of the note takes a line more.
+            let under = if x == 0.0 { lines.len() } else { lines.len().saturating_sub(1) };
+            NUMBERS * 1.6 + 5.0 + under as f32 * (BODY - 1.0) * 1.3
+        }
         Block::Matrix { rows, .. } => rows.len() as f32 * NUMBERS * 1.5 + 14.0,
-        Block::Answer { .. } => BODY * 1.4 + 30.0,
-        Block::KeyStep { formula, .. } => {
-            BODY * 1.4
+        Block::Answer { label, .. } => label_height(fonts, label, width) + 30.0,
+        Block::KeyStep { label, formula, line } => {
+            label_height(fonts, label, width)
                 + fonts.wrap(formula, NUMBERS - 1.0, width - 14.0, true).len() as f32 * NUMBERS * 1.3
-                + NUMBERS * 1.5
+                + fonts.wrap(line, NUMBERS, width - 14.0, true).len().max(1) as f32 * NUMBERS * 1.5
                 + 8.0
         }
         Block::Section(_) => 0.0,
@@ -283,8 +340,11 @@ fn draw_block(fonts: &Fonts, block: &Block, y: f32, width: f32, page: &mut Vec<M
     match block {
         Block::Title(t) => pen.paragraph(t, y, TITLE, 1.3),
         Block::Heading(h) => {
-            pen.text((MARGIN, y + 6.0 + HEADING), h, HEADING, false);
-            let rule = y + 10.0 + HEADING;
+            let lines = fonts.wrap(h, HEADING, width, false);
+            for (i, line) in lines.iter().enumerate() {
+                pen.text((MARGIN, y + 6.0 + HEADING + i as f32 * HEADING * 1.3), line, HEADING, false);
+            }
+            let rule = y + 10.0 + HEADING + lines.len().saturating_sub(1) as f32 * HEADING * 1.3;
             pen.page.push(Mark::Line { from: (MARGIN, rule), to: (MARGIN + width, rule), width: 0.4 });
         }
         Block::Text(t) => pen.paragraph(t, y, BODY, 1.35),
@@ -375,8 +435,11 @@ impl Pen<'_> {
         }
         let end = left + 8.0 + values.len() as f32 * col;
         bracket(self.page, end, top, bottom, false);
-        if !note.is_empty() {
-            self.text((end + 10.0, base), note, BODY - 1.0, false);
+        let (x, lines) = self.fonts.vector_note(name, values, note, self.width);
+        // Beside the brackets, on their baseline; or under them.
+        let first = if x == 0.0 { base + NUMBERS * 0.35 + (BODY - 1.0) * 1.3 } else { base };
+        for (i, line) in lines.iter().enumerate() {
+            self.text((self.x + x, first + i as f32 * (BODY - 1.0) * 1.3), line, BODY - 1.0, false);
         }
     }
 
@@ -406,8 +469,8 @@ impl Pen<'_> {
     /// A step to answer: its label, `name =` and a box of `cells` cells to write in.
     fn answer(&mut self, label: &str, name: &str, cells: usize, y: f32) {
         let x = self.x;
-        self.text((x, y + BODY), label, BODY, false);
-        let base = y + BODY * 1.4 + 17.0;
+        self.paragraph(label, y, BODY, 1.35);
+        let base = y + label_height(self.fonts, label, self.width) + 17.0;
         let lead = format!("{name} =");
         self.text((x + 14.0, base), &lead, NUMBERS, true);
         // Every box starts in one column (past the longest name, vertexNormal).
@@ -425,13 +488,16 @@ impl Pen<'_> {
     /// A step of the key: its label, its formula wrapped, and its value.
     fn key_step(&mut self, label: &str, formula: &str, line: &str, y: f32) {
         let x = self.x;
-        self.text((x, y + BODY), label, BODY, false);
-        let mut at = y + BODY * 1.4;
+        self.paragraph(label, y, BODY, 1.35);
+        let mut at = y + label_height(self.fonts, label, self.width);
         for f in self.fonts.wrap(formula, NUMBERS - 1.0, self.width - 14.0, true) {
             at += NUMBERS * 1.3;
             self.text((x + 14.0, at), &f, NUMBERS - 1.0, true);
         }
-        self.text((x + 14.0, at + NUMBERS * 1.5), line, NUMBERS, true);
+        for l in self.fonts.wrap(line, NUMBERS, self.width - 14.0, true) {
+            at += NUMBERS * 1.5;
+            self.text((x + 14.0, at), &l, NUMBERS, true);
+        }
     }
 }
 

@@ -187,3 +187,24 @@ fn a_run_past_the_address_space_limit_is_refused_in_words() {
     assert!(said.contains("memory budget") && said.contains("ulimit -v"), "{said}");
     assert!(!dir.join("questions.gift.txt").exists());
 }
+
+/// A refusal says the value once, calls an option given twice so, and a stray word an
+/// unexpected argument (not an option), in every language.
+#[test]
+fn a_refusal_says_the_value_once_and_names_what_went_wrong() {
+    let twice = [("en", "given twice"), ("pt-PT", "indicada duas vezes"), ("pt-BR", "informada duas vezes")];
+    let unexpected =
+        [("en", "did not expect \"extra\""), ("pt-PT", "não esperava \"extra\""), ("pt-BR", "não esperava \"extra\"")];
+    for ((lang, twice), (_, stray)) in twice.into_iter().zip(unexpected) {
+        for (args, value) in [(["--decimal", "virgula"], "\"virgula\""), (["--memory-budget", "1Q"], "\"1Q\"")] {
+            let (code, said) = refused(lang, &[&["exercise"][..], &args[..]].concat());
+            assert_eq!(code, 2);
+            assert_eq!(said.matches(value).count(), 1, "{lang}: {said}");
+        }
+        let (_, said) = refused(lang, &["exercise", "--level", "3", "--level", "4"]);
+        assert!(said.contains(twice) && !said.contains("--level cannot"), "{lang}: {said}");
+        let (_, said) = refused(lang, &["exercise", "extra"]);
+        assert!(said.contains(stray), "{lang}: {said}");
+        assert!(!said.contains("has no option") && !said.contains("não tem a opção"), "{lang}: {said}");
+    }
+}

@@ -690,3 +690,44 @@ fn following_a_questions_pointer_writes_the_key_it_was_made_from() {
         assert_eq!(std::fs::read_to_string(own.join(sheet)).unwrap(), key, "{name}");
     }
 }
+
+/// The numbers of a Moodle file: every `=ANSWER:TOLERANCE` of a numerical part (Cloze or GIFT).
+fn answers_and_tolerances(text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for field in text.split('=').skip(1) {
+        let Some((answer, rest)) = field.split_once(':') else { continue };
+        let tolerance: String = rest.chars().take_while(|c| c.is_ascii_digit() || *c == '.').collect();
+        let is_number = |s: &str| !s.is_empty() && s.trim_start_matches('-').parse::<f64>().is_ok();
+        if is_number(answer) && is_number(&tolerance) && !answer.contains('e') {
+            out.extend([answer.to_string(), tolerance]);
+        }
+    }
+    out
+}
+
+#[test]
+fn every_number_of_an_exam_file_is_a_short_decimal_without_float_noise() {
+    // Seed 11's exercise 2 asked Ispec = 0.8 to 0.0000800000000000001 (the tolerance taken
+    // from the engine's 0.8000000000000007, not from the exact answer).
+    let mut seen = 0;
+    for level in 1..=4u8 {
+        for (format, file) in [("moodle-xml", "questions.xml"), ("gift", "questions.gift.txt")] {
+            let dir = out_dir(&format!("short-{level}-{format}"));
+            let (level, out) = (level.to_string(), dir.to_str().unwrap());
+            let args = ["exercise", "--exam", "--level", &level, "--count", "2", "--seed", "11", "--format", format];
+            run_ok(phonglab_in("pt_PT.UTF-8", &[&args[..], &["--variants", "2", "--out", out]].concat()));
+            let text = std::fs::read_to_string(dir.join(file)).unwrap();
+            for x in answers_and_tolerances(&text) {
+                let digits = x.trim_start_matches('-').replace('.', "");
+                let significant = digits.trim_start_matches('0').trim_end_matches('0');
+                // An exam's answers end in at most 8 decimals; its tolerances have 3 or 8 digits.
+                assert!(significant.len() <= 10, "level {level} {format}: {x} is float noise");
+                assert!(!significant.contains("00000") && !significant.contains("99999"), "{x}: float noise");
+                let shortest = format!("{}", x.parse::<f64>().unwrap());
+                assert_eq!(x, shortest, "{x} is not its shortest decimal");
+                seen += 1;
+            }
+        }
+    }
+    assert!(seen > 500, "{seen} numbers");
+}

@@ -424,7 +424,7 @@ sheet-rules-worksheet = the worksheet's rules (no scene ambient, no emission, M 
 sheet-rules-opengl = the rules of OpenGL 2.1's fixed function
 sheet-rules-demo = the rules of the Phong demo's shader
 sheet-compute = Compute the colour of the vertex step by step, under { $rules }.
-sheet-colours = Colours are written as the worksheet writes them, [r g b 0], so every product of two colours has 0 as its fourth component, as in the key.
+sheet-colours = Colours are written as the worksheet writes them, [r g b 0], so every product of two colours has 0 as its fourth component.
 sheet-vertex = The vertex
 sheet-modelview = The modelview
 sheet-direction = direction (w = 0)

@@ -424,7 +424,7 @@ sheet-rules-worksheet = as regras da ficha (sem ambiente da cena, sem emissão, 
 sheet-rules-opengl = as regras da função fixa do OpenGL 2.1
 sheet-rules-demo = as regras do shader da demo de Phong
 sheet-compute = Calcule a cor do vértice passo a passo, segundo { $rules }.
-sheet-colours = As cores escrevem-se como na ficha, [r g b 0], por isso cada produto de duas cores tem 0 como quarta componente, tal como na chave.
+sheet-colours = As cores escrevem-se como na ficha, [r g b 0], por isso cada produto de duas cores tem 0 como quarta componente.
 sheet-vertex = O vértice
 sheet-modelview = A modelview
 sheet-direction = direção (w = 0)

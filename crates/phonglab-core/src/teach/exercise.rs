@@ -484,15 +484,35 @@ pub fn rules_in_words(set: crate::model::rules::RuleSet) -> String {
     }
 }
 
+/// How a sheet numbers the steps it asks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Numbering {
+    /// As the key's worked calculation numbers them (its own step numbers: 1, 2, 5, 9 …),
+    /// so a sheet's step is found in the key by its number.
+    Key,
+    /// 1, 2, 3 … as the sheet asks them: an exam's, whose key lists the asked steps in the
+    /// same numbers (as a Moodle question numbers its rows).
+    Own,
+}
+
 /// The exercise sheet, in the worksheet's style: the givens under the worksheet's names,
-/// then the steps to compute, each with a blank.
+/// then the steps to compute, each with a blank, numbered as the key numbers them.
 pub fn sheet_markdown(ex: &Exercise) -> String {
+    sheet_markdown_numbered(ex, Numbering::Key)
+}
+
+/// [`sheet_markdown`], its steps numbered as `numbering` says.
+pub fn sheet_markdown_numbered(ex: &Exercise, numbering: Numbering) -> String {
     use std::fmt::Write as _;
     let s = &ex.doc.scene;
     let mut o = String::new();
     let _ = writeln!(o, "# {}\n", crate::formats::escape::markdown::text(&ex.doc.name));
     let _ = writeln!(o, "{}\n", crate::t!("sheet-compute", rules = rules_in_words(s.rules.set)));
     let _ = writeln!(o, "{}\n", crate::t!("sheet-colours"));
+    if s.light_model.two_sided {
+        // Which side to compute: the key's first, the one a Moodle question asks.
+        let _ = writeln!(o, "{}\n", crate::t!("moodle-front-side"));
+    }
     let _ = writeln!(o, "## {}\n", crate::t!("sheet-vertex"));
     let _ = writeln!(o, "- {} = {}", Q::VertexPos.name(), vec4(s.vertex.position));
     let _ = writeln!(o, "- {} = {}\n", Q::VertexNormal.name(), vec4(s.vertex.normal.extend(0.0)));
@@ -507,6 +527,38 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
         let _ = writeln!(o, "[{}]", r.iter().map(|x| format!("{:>12}", num(*x))).collect::<Vec<_>>().join(" "));
     }
     let _ = writeln!(o, "```\n");
+    lights_markdown(&mut o, s);
+    let m = &s.material;
+    let _ = writeln!(o, "## {}\n", crate::t!("sheet-material", name = material));
+    let _ = writeln!(o, "- {} = {}", Q::MatAmbient.name(), colour4(m.ambient));
+    let _ = writeln!(o, "- {} = {}", Q::MatDiffuse.name(), colour4(m.diffuse));
+    let _ = writeln!(o, "- {} = {}", Q::MatSpecular.name(), colour4(m.specular));
+    let _ = writeln!(o, "- {} = {}\n", Q::Shininess.name(), num(m.shininess));
+    let _ = writeln!(o, "## {}\n", crate::t!("sheet-light-model"));
+    let lm = &s.light_model;
+    let yes_no = |b: bool| if b { crate::t!("yes") } else { crate::t!("no") };
+    let _ = writeln!(o, "- {}: {}", crate::t!("local-viewer"), yes_no(lm.local_viewer));
+    let _ = writeln!(o, "- {}: {}", crate::t!("two-sided"), yes_no(lm.two_sided));
+    if s.rules.scene_ambient() {
+        let _ = writeln!(o, "- {} = {}", crate::t!("scene-ambient"), colour4(lm.ambient));
+    }
+    let _ = writeln!(o, "\n## {}\n", crate::t!("sheet-compute-heading"));
+    let asked = (0..ex.key.steps.len()).filter(|k| crate::teach::quiz::asked(s, &ex.key, *k));
+    for (row, k) in asked.enumerate() {
+        let st = &ex.key.steps[k];
+        let number = match numbering {
+            Numbering::Key => k + 1,
+            Numbering::Own => row + 1,
+        };
+        let _ = writeln!(o, "{number}. {}: `{}` = ________", st.title, st.name);
+    }
+    o
+}
+
+/// The lights of a sheet: each one's position or direction and the spotlight's direction,
+/// with the note that they are in world coordinates, its colours, attenuation and cone.
+fn lights_markdown(o: &mut String, s: &crate::model::scene::Scene) {
+    use std::fmt::Write as _;
     for (i, l) in s.lights.iter().enumerate() {
         let _ = writeln!(o, "## {}\n", crate::t!("light-tab", index = i.to_string()));
         let what = if l.position.w == 0.0 { crate::t!("sheet-direction") } else { crate::t!("sheet-position") };
@@ -533,11 +585,12 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
             let _ = writeln!(o, "- {nc} = {}, {n1} = {}, {n2} = {}", num(c), num(k1), num(k2));
         }
         if l.is_spot() {
+            let note = crate::t!("sheet-light-world", what = crate::t!("sheet-direction"));
+            let direction = vec4(l.spot_direction.extend(0.0));
+            let _ = writeln!(o, "- {} = {direction} ({note})", Q::SpotDirection.name());
             let _ = writeln!(
                 o,
-                "- {} = {}, {} = {}, {} = {}",
-                Q::SpotDirection.name(),
-                vec4(l.spot_direction.extend(0.0)),
+                "- {} = {}, {} = {}",
                 Q::SpotCutoff.name(),
                 crate::t!("sheet-degrees", value = num(l.spot_cutoff)),
                 Q::SpotExponent.name(),
@@ -546,26 +599,4 @@ pub fn sheet_markdown(ex: &Exercise) -> String {
         }
         let _ = writeln!(o);
     }
-    let m = &s.material;
-    let _ = writeln!(o, "## {}\n", crate::t!("sheet-material", name = material));
-    let _ = writeln!(o, "- {} = {}", Q::MatAmbient.name(), colour4(m.ambient));
-    let _ = writeln!(o, "- {} = {}", Q::MatDiffuse.name(), colour4(m.diffuse));
-    let _ = writeln!(o, "- {} = {}", Q::MatSpecular.name(), colour4(m.specular));
-    let _ = writeln!(o, "- {} = {}\n", Q::Shininess.name(), num(m.shininess));
-    let _ = writeln!(o, "## {}\n", crate::t!("sheet-light-model"));
-    let lm = &s.light_model;
-    let yes_no = |b: bool| if b { crate::t!("yes") } else { crate::t!("no") };
-    let _ = writeln!(o, "- {}: {}", crate::t!("local-viewer"), yes_no(lm.local_viewer));
-    let _ = writeln!(o, "- {}: {}", crate::t!("two-sided"), yes_no(lm.two_sided));
-    if s.rules.scene_ambient() {
-        let _ = writeln!(o, "- {} = {}", crate::t!("scene-ambient"), colour4(lm.ambient));
-    }
-    let _ = writeln!(o, "\n## {}\n", crate::t!("sheet-compute-heading"));
-    let asked = (0..ex.key.steps.len()).filter(|k| crate::teach::quiz::asked(s, &ex.key, *k));
-    // Numbered as the key numbers them: the calculation's own step numbers.
-    for k in asked {
-        let st = &ex.key.steps[k];
-        let _ = writeln!(o, "{}. {}: `{}` = ________", k + 1, st.title, st.name);
-    }
-    o
 }

@@ -32,15 +32,20 @@ pub enum Rounding {
 pub const EXAM_DIGITS: usize = 4;
 
 impl Rounding {
-    /// The digits asked for `x` and the tolerance of the part.
+    /// The digits asked for `x` and the tolerance of the part: a quiz's the quiz's rule on
+    /// the value as computed; an exam's taken from the exact answer ([`Rounding::answer`]),
+    /// not from the engine's `0.8000000000000007`, and rounded to [`TOLERANCE_DIGITS`]
+    /// significant digits, so that the product's last-bit noise (`0.8 * 1e-4` is
+    /// `8.000000000000001e-5`) is not written into the file.
     pub fn of(self, x: f64) -> (usize, f64) {
         let (rel, abs) = quiz::TOLERANCE;
-        let quiz_tolerance = (rel * x.abs()).max(abs);
+        let quiz_tolerance = |x: f64| (rel * x.abs()).max(abs);
         match self {
-            Rounding::Quiz => (quiz::digits_needed(&[x]), quiz_tolerance),
+            Rounding::Quiz => (quiz::digits_needed(&[x]), quiz_tolerance(x)),
             Rounding::Exam => {
+                let x = self.answer(x);
                 let half_unit = if x == 0.0 { 0.0 } else { half_unit(x, EXAM_DIGITS) };
-                (EXAM_DIGITS, quiz_tolerance.max(half_unit * TIE_MARGIN))
+                (EXAM_DIGITS, to_significant(quiz_tolerance(x).max(half_unit * TIE_MARGIN), TOLERANCE_DIGITS))
             }
         }
     }
@@ -98,6 +103,20 @@ pub fn round_by_hand(x: f64, digits: usize) -> String {
     }
     d.resize(keep.max(d.len()), 0);
     positional(negative, &d, exponent)
+}
+
+/// The significant digits a tolerance is written with: far more than any rule asks for (the
+/// quiz's 1e-4 of a value with eight, an exam's 1.01 half units), far fewer than a double's
+/// 17, whose last ones are the arithmetic's noise.
+pub const TOLERANCE_DIGITS: usize = 12;
+
+/// `x` rounded to `digits` significant digits (to nearest), as a double: `8.000000000000001e-5`
+/// to 12 is `8e-5`.
+pub fn to_significant(x: f64, digits: usize) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    format!("{:.*e}", digits.max(1) - 1, x).parse().unwrap_or(x)
 }
 
 /// An exam's tolerance is this many half units of the fourth digit: a value on a tie
