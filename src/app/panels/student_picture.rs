@@ -109,13 +109,26 @@ pub fn student_picture_ui(ui: &mut Ui, picture: &mut Option<StudentPicture>) -> 
         clear = ui.button(t!("student-clear")).on_hover_text(t!("student-clear-hover")).clicked();
     });
     let wrong = p.verdict != "right";
-    for line in p.lines() {
-        let mut text = RichText::new(line).strong();
-        if wrong {
-            text = text.color(super::student_column::wrong_ink(ui));
-        }
-        ui.add(egui::Label::new(text).wrap());
-    }
+    // The pictures first get their width's share, down to a floor; the diagnosis the
+    // height left above them, scrolling when it is longer (its first line at the top).
+    let avail = ui.available_size();
+    let body = ui.text_style_height(&egui::TextStyle::Body);
+    let row = body * 2.0;
+    let side_w = ((avail.x - 36.0) / 3.0).max(48.0);
+    let floor = side_w.min((avail.y - row) * 0.6).max(48.0);
+    let text_max = (avail.y - row - floor - 2.0 * ui.spacing().item_spacing.y).max(body * 3.0);
+    egui::ScrollArea::vertical().id_salt("student-diagnosis").max_height(text_max).auto_shrink([false, true]).show(
+        ui,
+        |ui| {
+            for line in p.lines() {
+                let mut text = RichText::new(line).strong();
+                if wrong {
+                    text = text.color(super::student_column::wrong_ink(ui));
+                }
+                ui.add(egui::Label::new(text).wrap());
+            }
+        },
+    );
     let size = p.size;
     let textures = p.textures.get_or_insert_with(|| {
         let names = ["student-right", "student-picture", "student-difference"];
@@ -124,9 +137,7 @@ pub fn student_picture_ui(ui: &mut Ui, picture: &mut Option<StudentPicture>) -> 
             ui.ctx().load_texture(names[k], image, egui::TextureOptions::NEAREST)
         })
     });
-    let avail = ui.available_size();
-    let row = ui.text_style_height(&egui::TextStyle::Body) * 2.0;
-    let side = ((avail.x - 36.0) / 3.0).min(avail.y - row).max(48.0);
+    let side = side_w.min(ui.available_height() - row).max(48.0);
     let titles = [t!("student-picture-right"), t!("student-picture-theirs"), t!("compare-difference")];
     let rects = ui.columns(3, |cols| {
         (0..3)
