@@ -592,3 +592,31 @@ fn a_long_diagnosis_scrolls_and_the_three_pictures_keep_their_size_within_the_wi
         assert!(shown.top() >= 0.0 && shown.bottom() < pictures[0].top(), "{shown:?} {pictures:?}");
     }
 }
+
+#[test]
+fn a_refused_picture_clears_the_last_verdict_and_says_why_in_compare() {
+    let dir = TempDir::new("refused");
+    let path = dir.0.join("aluno.png");
+    let id = mistaken_picture(&path);
+    let mut h = harness(1024.0, 600.0);
+    check_through_the_menu(&mut h, &path);
+    assert!(h.query_by_label_contains(&format!("({id})")).is_some());
+    // A picture of another size: its refusal in Compare, whole, and the old verdict gone.
+    let wide = dir.0.join("largo.png");
+    phonglab::io::image::write_png(&wide, 768, 256, &vec![0; 768 * 256 * 4]).unwrap();
+    check_through_the_menu(&mut h, &wide);
+    assert!(h.state().compare.student.is_none());
+    assert!(h.state().compare.open);
+    assert!(h.query_by_label_contains(&format!("({id})")).is_none(), "the last verdict stays");
+    assert!(h.query_by_label("Student's picture: largo.png").is_some());
+    // Under the heading, not only in the status line at the window's foot.
+    let heading = h.get_by_label("Student's picture: largo.png").rect();
+    let why: Vec<egui::Rect> = h.get_all_by_label_contains("512x512").map(|n| n.rect()).collect();
+    assert!(
+        why.iter().any(|r| r.top() >= heading.bottom() - 1.0 && r.top() < heading.bottom() + 40.0 && r.right() <= 1024.0),
+        "{heading:?} {why:?}"
+    );
+    h.get_by_label("Clear").click();
+    h.run_steps(2);
+    assert!(h.state().compare.refused.is_none());
+}

@@ -153,3 +153,18 @@ pub fn student_picture_ui(ui: &mut Ui, picture: &mut Option<StudentPicture>) -> 
     }
     rects
 }
+
+/// A student's picture refused, in Compare: its name, why (in the error's ink), and Clear.
+pub fn refused_picture_ui(ui: &mut Ui, refused: &mut Option<(String, String)>) {
+    let Some((file, why)) = refused.as_ref() else { return };
+    let mut clear = false;
+    ui.horizontal_wrapped(|ui| {
+        ui.heading(t!("student-picture-heading", file = file.clone()));
+        clear = ui.button(t!("student-clear")).on_hover_text(t!("student-clear-hover")).clicked();
+    });
+    let text = RichText::new(why).strong().color(super::student_column::wrong_ink(ui));
+    ui.add(egui::Label::new(text).wrap());
+    if clear {
+        *refused = None;
+    }
+}
