@@ -3,7 +3,7 @@
 //! [`phonglab_core::teach::diagnose`] in words (the verdict, the closest cause, its score).
 
 use egui::{RichText, Ui};
-use phonglab_core::teach::diagnose::{Diagnosis, Tried, Verdict, same_picture_said};
+use phonglab_core::teach::diagnose::{Diagnosis, Tried, Verdict, most_common_first, picture_shows, same_picture_said};
 use phonglab_core::teach::picture_match::difference_image;
 
 use crate::t;
@@ -80,16 +80,18 @@ fn verdict_lines(d: &Said) -> Vec<String> {
     match d.verdict {
         Verdict::Right => vec![t!("diagnose-verdict-right", score = right)],
         Verdict::Wrong => {
-            let mut out = Vec::new();
-            for (n, c) in d.named.iter().enumerate() {
-                let (cause, id, score) = named(c);
-                out.push(if n == 0 {
-                    t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right.clone())
-                } else {
-                    t!("diagnose-also", cause = cause, id = id, score = score)
-                });
-            }
+            // As `phonglab diagnose` says it: what a picture that several causes draw
+            // shows, the most common named, the others in one line, then the rest.
+            let tie = most_common_first(&d.same);
+            let mut out: Vec<String> = picture_shows(&tie).into_iter().collect();
+            let Some(first) = tie.first().or(d.named.first()) else { return out };
+            let (cause, id, score) = named(first);
+            out.push(t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right.clone()));
             out.extend(same_picture_said(&d.same));
+            for c in d.named.iter().filter(|c| *c != first && !tie.contains(c)) {
+                let (cause, id, score) = named(c);
+                out.push(t!("diagnose-also", cause = cause, id = id, score = score));
+            }
             out
         }
         Verdict::Unexplained => {
