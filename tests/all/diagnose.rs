@@ -231,6 +231,13 @@ fn hostile_and_wrong_pictures_get_a_clear_message_and_nothing_is_overwritten() {
     // Not a PNG.
     let text = write(&dir, "text.png", "not a picture");
     assert!(run(&text, &[]).contains("cannot be read as a PNG picture"));
+    // The decoder's English never reaches a reader: its reason in the catalogue's words.
+    let script = write(&dir, "mk.py", "import numpy\n");
+    let args = ["--lang", "pt-BR", "diagnose", "--scene", scene.to_str().unwrap(), "--image", script.to_str().unwrap()];
+    let o = phonglab(&args);
+    let said = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert!(said.contains("não pode ser lido como uma imagem PNG: não é um arquivo PNG"), "{said}");
+    assert!(!said.contains("Invalid") && !said.contains("signature"), "{said}");
     // A header that claims 100000 x 100000 pixels: refused from the header, nothing decoded.
     let mut bomb = phonglab::io::image::encode_png(1, 1, &[0, 0, 0, 255]).unwrap();
     bomb[16..20].copy_from_slice(&100_000u32.to_be_bytes());

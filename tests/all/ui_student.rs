@@ -613,7 +613,8 @@ fn a_refused_picture_clears_the_last_verdict_and_says_why_in_compare() {
     let heading = h.get_by_label("Student's picture: largo.png").rect();
     let why: Vec<egui::Rect> = h.get_all_by_label_contains("512x512").map(|n| n.rect()).collect();
     assert!(
-        why.iter().any(|r| r.top() >= heading.bottom() - 1.0 && r.top() < heading.bottom() + 40.0 && r.right() <= 1024.0),
+        why.iter()
+            .any(|r| r.top() >= heading.bottom() - 1.0 && r.top() < heading.bottom() + 40.0 && r.right() <= 1024.0),
         "{heading:?} {why:?}"
     );
     h.get_by_label("Clear").click();
