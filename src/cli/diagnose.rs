@@ -8,7 +8,9 @@ use std::path::{Path, PathBuf};
 use crate::t;
 use anyhow::Result;
 use clap::Args;
-use phonglab_core::teach::diagnose::{Diagnosis, Drawing, Tried, Verdict, diagnose, drawings_at_most};
+use phonglab_core::teach::diagnose::{
+    Diagnosis, Drawing, Tried, Verdict, diagnose, drawings_at_most, listed, most_common_first, picture_shows,
+};
 use phonglab_core::teach::picture_match::difference_image;
 use phonglab_core::{PowFn, probe, probe_report};
 
@@ -76,13 +78,18 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
     match d.verdict {
         Verdict::Right => vec![t!("diagnose-verdict-right", score = right)],
         Verdict::Wrong => {
-            let (cause, id, score) = named(&d.causes[0]);
-            let mut out = vec![t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right)];
-            for c in &d.causes[1..] {
+            // Causes that draw the same picture: what it shows, the most common named, the
+            // others in one line; then each cause with a picture of its own.
+            let tie = most_common_first(&d.same_picture);
+            let mut out: Vec<String> = picture_shows(&tie).into_iter().collect();
+            let first = tie.first().unwrap_or(&d.causes[0]);
+            let (cause, id, score) = named(first);
+            out.push(t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right));
+            out.extend(d.same_picture_words());
+            for c in d.causes.iter().filter(|c| *c != first && !tie.contains(c)) {
                 let (cause, id, score) = named(c);
                 out.push(t!("diagnose-also", cause = cause, id = id, score = score));
             }
-            out.extend(d.same_picture_words());
             out
         }
         Verdict::Unexplained => {
@@ -135,9 +142,11 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
         return Ok(is_right);
     }
     let mut out = verdict_lines(&d);
-    let hidden = invisible(&d);
+    // Each once, its light in brackets; never a fitted one (its picture is the scene's
+    // only because the picture showed the scene's values).
+    let hidden: Vec<Tried> = d.tried.iter().filter(|t| t.matched.is_none() && !t.fitted()).copied().collect();
     if !hidden.is_empty() {
-        out.push(t!("diagnose-invisible", ids = hidden.join(", ")));
+        out.push(t!("diagnose-invisible", ids = listed(&hidden)));
     }
     if let Some(diff) = &a.diff {
         out.push(t!("diagnose-diff-written", path = crate::io::reasons::shown(diff)));

@@ -28,8 +28,8 @@ pub fn decode(bytes: &[u8], path: &Path, size: usize) -> Result<Vec<u8>, String>
     let limits = png::Limits { bytes: MAX_DECODED_BYTES };
     let mut decoder = png::Decoder::new_with_limits(std::io::Cursor::new(bytes), limits);
     decoder.set_transformations(png::Transformations::normalize_to_color8() | png::Transformations::ALPHA);
-    let bad = |e: &dyn std::fmt::Display| t!("diagnose-bad-png", path = shown.clone(), reason = e.to_string());
-    let mut reader = decoder.read_info().map_err(|e| bad(&e))?;
+    let bad = |reason: String| t!("diagnose-bad-png", path = shown.clone(), reason = reason);
+    let mut reader = decoder.read_info().map_err(|e| bad(png_reason(bytes, &e)))?;
     let (w, h) = (reader.info().width as usize, reader.info().height as usize);
     if (w, h) != (size, size) {
         return Err(t!(
@@ -39,12 +39,25 @@ pub fn decode(bytes: &[u8], path: &Path, size: usize) -> Result<Vec<u8>, String>
             expected = format!("{size}x{size}")
         ));
     }
-    let mut buf = vec![0; reader.output_buffer_size().ok_or_else(|| bad(&"too large"))?];
-    let info = reader.next_frame(&mut buf).map_err(|e| bad(&e))?;
+    let mut buf = vec![0; reader.output_buffer_size().ok_or_else(|| bad(t!("png-reason-too-large")))?];
+    let info = reader.next_frame(&mut buf).map_err(|e| bad(png_reason(bytes, &e)))?;
     buf.truncate(info.buffer_size());
     match info.color_type {
         png::ColorType::Rgba => Ok(buf),
         png::ColorType::GrayscaleAlpha => Ok(buf.chunks_exact(2).flat_map(|c| [c[0], c[0], c[0], c[1]]).collect()),
-        other => Err(bad(&format!("{other:?}"))),
+        other => Err(bad(t!("png-reason-colours", kind = format!("{other:?}")))),
+    }
+}
+
+/// Why the decoder refused `bytes`, in the catalogue's words (the decoder's own are
+/// English): not a PNG at all, too large to decode, or a PNG damaged or cut short.
+fn png_reason(bytes: &[u8], e: &png::DecodingError) -> String {
+    const SIGNATURE: [u8; 8] = [137, 80, 78, 71, 13, 10, 26, 10];
+    if !bytes.starts_with(&SIGNATURE) {
+        t!("png-reason-not-png")
+    } else if matches!(e, png::DecodingError::LimitsExceeded) {
+        t!("png-reason-too-large")
+    } else {
+        t!("png-reason-damaged")
     }
 }

@@ -231,6 +231,13 @@ fn hostile_and_wrong_pictures_get_a_clear_message_and_nothing_is_overwritten() {
     // Not a PNG.
     let text = write(&dir, "text.png", "not a picture");
     assert!(run(&text, &[]).contains("cannot be read as a PNG picture"));
+    // The decoder's English never reaches a reader: its reason in the catalogue's words.
+    let script = write(&dir, "mk.py", "import numpy\n");
+    let args = ["--lang", "pt-BR", "diagnose", "--scene", scene.to_str().unwrap(), "--image", script.to_str().unwrap()];
+    let o = phonglab(&args);
+    let said = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert!(said.contains("não pode ser lido como uma imagem PNG: não é um arquivo PNG"), "{said}");
+    assert!(!said.contains("Invalid") && !said.contains("signature"), "{said}");
     // A header that claims 100000 x 100000 pixels: refused from the header, nothing decoded.
     let mut bomb = phonglab::io::image::encode_png(1, 1, &[0, 0, 0, 255]).unwrap();
     bomb[16..20].copy_from_slice(&100_000u32.to_be_bytes());
@@ -434,4 +441,40 @@ fn the_memory_estimate_covers_every_drawing_and_picture_it_holds() {
         "{err}"
     );
     assert!(!err.contains("PNG"), "{err}");
+}
+
+/// The spot's cutoff given in radians: nothing of the light reaches the object and many
+/// causes draw that picture. The report says so first, names the most common cause, the
+/// others in one line with each light in brackets; "Not tried" lists each id once and
+/// never a value fitted from the picture.
+#[test]
+fn a_light_that_reaches_nothing_is_said_first_and_the_lists_keep_each_light_with_its_id() {
+    let dir = scratch("unseen");
+    let right = write(&dir, "right.toml", &spotlight());
+    let text = spotlight();
+    assert!(text.contains("spot_cutoff = 12\n"));
+    let wrong = write(&dir, "radians.toml", &text.replacen("spot_cutoff = 12\n", "spot_cutoff = 0.2094\n", 1));
+    let image = dir.join("radians.png");
+    student_picture(&wrong, &image);
+    let size = SIZE.to_string();
+    let (r, i) = (right.to_str().unwrap(), image.to_str().unwrap());
+    let o = phonglab(&["--lang", "en", "diagnose", "--scene", r, "--image", i, "--size", &size]);
+    let out = String::from_utf8_lossy(&o.stdout).into_owned();
+    let lines: Vec<&str> = out.lines().collect();
+    assert!(lines[0].starts_with("Nothing of light 0 (GL_LIGHT0) reaches the object"), "{out}");
+    assert!(lines[1].starts_with("Wrong. The closest mistake: Light 0 (GL_LIGHT0) left out"), "{out}");
+    assert!(lines[2].contains("the most common first"), "{out}");
+    assert!(lines[2].contains(": light-left-out (GL_LIGHT0), spot-cutoff-radians (GL_LIGHT0), "), "{out}");
+    assert!(lines.iter().filter(|l| l.starts_with("It also explains")).count() <= 3, "{out}");
+    let not_tried = lines.iter().find(|l| l.starts_with("Not tried")).expect("not tried");
+    for l in [lines[2], not_tried] {
+        assert!(!l.contains(", GL_LIGHT"), "a light split from its id: {l}");
+    }
+    assert!(!not_tried.contains("colours-differ") && !not_tried.contains("-differs"), "{not_tried}");
+    let ids: Vec<&str> = not_tried.split(": ").nth(1).unwrap().split(", ").collect();
+    let unique: std::collections::BTreeSet<&str> = ids.iter().copied().collect();
+    assert_eq!(ids.len(), unique.len(), "{not_tried}");
+    // The JSON's causes are as they were: the light left out among the same picture's.
+    let v = diagnose_json(&right, &image);
+    assert!(v["same_picture"].as_array().unwrap().iter().any(|c| c["id"] == "light-left-out"), "{v:#}");
 }

@@ -536,3 +536,88 @@ fn the_class_chart_is_as_tall_as_its_rows_and_wraps_long_causes_right_aligned_ag
     }
     assert!(heights[1] > heights[0] + 9 * 18, "{heights:?}");
 }
+
+/// The shipped spotlight scene.
+fn spotlight() -> phonglab_core::document::Document {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    phonglab_core::document::Document::from_toml_in(&text, path.parent()).unwrap()
+}
+
+/// A student's picture of `doc` drawn with the mistake `id` (made for light 0).
+fn picture_with(doc: &phonglab_core::document::Document, path: &Path, id: &str) {
+    use phonglab_core::teach::diagnose::{Drawing, MISTAKES};
+    let mesh = doc.view.mesh();
+    let mut d = Drawing::of(&doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    d.inside = doc.view.mesh_inside();
+    let m = MISTAKES.iter().find(|m| m.id == id).unwrap();
+    (m.apply)(&mut d, phonglab_core::teach::diagnose::At::default());
+    let (_, rgba, _) = d.draw(512).unwrap();
+    phonglab::io::image::write_png(path, 512, 512, &rgba).unwrap();
+}
+
+#[test]
+fn a_long_diagnosis_scrolls_and_the_three_pictures_keep_their_size_within_the_window() {
+    // The spot's cutoff in radians: nothing of light 0 reaches the object, many mistakes
+    // draw that picture, and the diagnosis runs long (longest in Portuguese).
+    let dir = TempDir::new("long");
+    let path = dir.0.join("foco.png");
+    let doc = spotlight();
+    picture_with(&doc, &path, "spot-cutoff-radians");
+    for (w, h_px) in [(1024.0, 600.0), (1280.0, 720.0)] {
+        let mut h = harness(w, h_px);
+        h.state_mut().ui.layout.language = Some("pt-PT".into());
+        h.state_mut().load(doc.clone(), "foco");
+        h.run_steps(2);
+        common::open_menu(&mut h, &["Ficheiro"]);
+        h.get_by_label("Corrigir o trabalho de um aluno…").click();
+        h.run_steps(2);
+        let c = h.state_mut().chooser.as_mut().expect("the chooser opens");
+        c.folder = dir.0.display().to_string();
+        c.name = "foco.png".into();
+        h.run_steps(2);
+        h.get_by_label("Corrigir").click();
+        h.run_steps(3);
+        let p = h.state().compare.student.as_ref().unwrap_or_else(|| panic!("{:?}", h.state().message));
+        let lines = p.lines();
+        assert!(lines.len() >= 3, "{lines:?}");
+        let pictures = h.state().ui.geometry.pictures.clone();
+        assert_eq!(pictures.len(), 3);
+        for r in &pictures {
+            assert!(r.height() >= 150.0, "{w}x{h_px}: a picture {r:?} shrank");
+            assert!(r.bottom() <= h_px && r.right() <= w, "{w}x{h_px}: a picture {r:?} leaves the window");
+        }
+        // The verdict's first line is shown whole, at the top of the text, above them.
+        let shown = h.get_by_label(&lines[0]).rect();
+        assert!(shown.top() >= 0.0 && shown.bottom() < pictures[0].top(), "{shown:?} {pictures:?}");
+    }
+}
+
+#[test]
+fn a_refused_picture_clears_the_last_verdict_and_says_why_in_compare() {
+    let dir = TempDir::new("refused");
+    let path = dir.0.join("aluno.png");
+    let id = mistaken_picture(&path);
+    let mut h = harness(1024.0, 600.0);
+    check_through_the_menu(&mut h, &path);
+    assert!(h.query_by_label_contains(&format!("({id})")).is_some());
+    // A picture of another size: its refusal in Compare, whole, and the old verdict gone.
+    let wide = dir.0.join("largo.png");
+    phonglab::io::image::write_png(&wide, 768, 256, &vec![0; 768 * 256 * 4]).unwrap();
+    check_through_the_menu(&mut h, &wide);
+    assert!(h.state().compare.student.is_none());
+    assert!(h.state().compare.open);
+    assert!(h.query_by_label_contains(&format!("({id})")).is_none(), "the last verdict stays");
+    assert!(h.query_by_label("Student's picture: largo.png").is_some());
+    // Under the heading, not only in the status line at the window's foot.
+    let heading = h.get_by_label("Student's picture: largo.png").rect();
+    let why: Vec<egui::Rect> = h.get_all_by_label_contains("512x512").map(|n| n.rect()).collect();
+    assert!(
+        why.iter()
+            .any(|r| r.top() >= heading.bottom() - 1.0 && r.top() < heading.bottom() + 40.0 && r.right() <= 1024.0),
+        "{heading:?} {why:?}"
+    );
+    h.get_by_label("Clear").click();
+    h.run_steps(2);
+    assert!(h.state().compare.refused.is_none());
+}

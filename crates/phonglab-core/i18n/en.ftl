@@ -738,7 +738,9 @@ diagnose-material-colours-0-255 = The material's colours (ambient, diffuse, spec
 diagnose-light-not-normalised = In the shader, a positional light's L is not normalised (L = light − P without dividing by its length d): N·L and the spot's cosine grow with the distance
 diagnose-reflection-reversed = In the shader, R reflected the wrong way (reflect(L, N) instead of reflect(-L, N)): the highlight appears on the opposite side from where it belongs
 diagnose-rescale-for-normalize = GL_RESCALE_NORMAL enabled where GL_NORMALIZE is needed: under a scale that is not uniform the normals are rescaled but not made unit length
-diagnose-same-picture = { $ids } draw the same picture: it cannot tell them apart, and they are listed in the table's order (one changed value before a value fitted from the picture). Check which one the program holds.
+diagnose-same-picture = These causes draw the same picture, so it cannot tell them apart (the most common first): { $ids }. Check which one the program holds.
+diagnose-same-picture-fitted = These causes draw the same picture, so it cannot tell them apart (the most common first, a changed value before a value fitted from the picture): { $ids }. Check which one the program holds.
+diagnose-light-unseen = Nothing of light { $light } (GL_LIGHT{ $light }) reaches the object: the picture is the scene lit without it.
 
 ## phonglab check: a student's work checked
 

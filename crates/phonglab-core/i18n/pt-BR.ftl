@@ -738,7 +738,9 @@ diagnose-material-colours-0-255 = As cores do material (ambiente, difusa, especu
 diagnose-light-not-normalised = No shader, o L de uma luz pontual não é normalizado (L = luz − P sem dividir pelo seu comprimento d): N·L e o cosseno do spot crescem com a distância
 diagnose-reflection-reversed = No shader, R refletido ao contrário (reflect(L, N) em vez de reflect(-L, N)): o brilho aparece do lado oposto ao certo
 diagnose-rescale-for-normalize = GL_RESCALE_NORMAL ativado onde é necessário GL_NORMALIZE: com uma escala não uniforme as normais são reescaladas mas não ficam com comprimento 1
-diagnose-same-picture = { $ids } desenham a mesma imagem: não dá para distingui-los por ela, e eles aparecem na ordem da tabela (um valor alterado antes de um valor ajustado à imagem). Confira qual deles está no programa.
+diagnose-same-picture = Estas causas desenham a mesma imagem, então não dá para distingui-las por ela (as mais comuns primeiro): { $ids }. Confira qual delas está no programa.
+diagnose-same-picture-fitted = Estas causas desenham a mesma imagem, então não dá para distingui-las por ela (as mais comuns primeiro, um valor alterado antes de um valor ajustado à imagem): { $ids }. Confira qual delas está no programa.
+diagnose-light-unseen = Nada da luz { $light } (GL_LIGHT{ $light }) chega ao objeto: a imagem é a cena iluminada sem ela.
 
 ## phonglab check: o trabalho de um aluno verificado
 

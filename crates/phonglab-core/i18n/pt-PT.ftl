@@ -738,7 +738,9 @@ diagnose-material-colours-0-255 = As cores do material (ambiente, difusa, especu
 diagnose-light-not-normalised = No shader, o L de uma luz pontual não é normalizado (L = luz − P sem dividir pelo seu comprimento d): N·L e o cosseno do foco crescem com a distância
 diagnose-reflection-reversed = No shader, R refletido ao contrário (reflect(L, N) em vez de reflect(-L, N)): o reflexo aparece do lado oposto àquele onde devia estar
 diagnose-rescale-for-normalize = GL_RESCALE_NORMAL ativado onde é preciso GL_NORMALIZE: com uma escala não uniforme as normais são reescaladas mas não ficam com comprimento 1
-diagnose-same-picture = { $ids } desenham a mesma imagem: não é possível distingui-los por ela, e aparecem pela ordem da tabela (um valor alterado antes de um valor ajustado à imagem). Verifique qual deles está no programa.
+diagnose-same-picture = Estas causas desenham a mesma imagem, por isso ela não permite distingui-las (as mais comuns primeiro): { $ids }. Verifique qual delas está no programa.
+diagnose-same-picture-fitted = Estas causas desenham a mesma imagem, por isso ela não permite distingui-las (as mais comuns primeiro, um valor alterado antes de um valor ajustado à imagem): { $ids }. Verifique qual delas está no programa.
+diagnose-light-unseen = Nada da luz { $light } (GL_LIGHT{ $light }) chega ao objeto: a imagem é a cena iluminada sem ela.
 
 ## phonglab check: o trabalho de um aluno verificado
 

@@ -119,6 +119,8 @@ pub struct CompareState {
     pub b_channel: ChannelView,
     /// A student's picture diagnosed, shown as B in place of the scenes while it is there.
     pub student: Option<super::student_picture::StudentPicture>,
+    /// A student's picture refused: its name and why, shown in place of the scenes.
+    pub refused: Option<(String, String)>,
     /// The last difference picture, and the pictures' generations it was made from.
     diff: Option<((u64, u64), Difference, egui::TextureHandle)>,
 }
@@ -296,6 +298,10 @@ pub fn compare_ui(
 ) -> (Option<String>, Vec<egui::Rect>) {
     if compare.student.is_some() {
         return (None, super::student_picture::student_picture_ui(ui, &mut compare.student));
+    }
+    if compare.refused.is_some() {
+        super::student_picture::refused_picture_ui(ui, &mut compare.refused);
+        return (None, Vec::new());
     }
     let mut notice = None;
     let b_pinned = Pinned { doc: current.doc.clone(), precision: current.precision, pow: current.pow };

@@ -3,7 +3,7 @@
 //! [`phonglab_core::teach::diagnose`] in words (the verdict, the closest cause, its score).
 
 use egui::{RichText, Ui};
-use phonglab_core::teach::diagnose::{Diagnosis, Tried, Verdict, same_picture_said};
+use phonglab_core::teach::diagnose::{Diagnosis, Tried, Verdict, most_common_first, picture_shows, same_picture_said};
 use phonglab_core::teach::picture_match::difference_image;
 
 use crate::t;
@@ -80,16 +80,18 @@ fn verdict_lines(d: &Said) -> Vec<String> {
     match d.verdict {
         Verdict::Right => vec![t!("diagnose-verdict-right", score = right)],
         Verdict::Wrong => {
-            let mut out = Vec::new();
-            for (n, c) in d.named.iter().enumerate() {
-                let (cause, id, score) = named(c);
-                out.push(if n == 0 {
-                    t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right.clone())
-                } else {
-                    t!("diagnose-also", cause = cause, id = id, score = score)
-                });
-            }
+            // As `phonglab diagnose` says it: what a picture that several causes draw
+            // shows, the most common named, the others in one line, then the rest.
+            let tie = most_common_first(&d.same);
+            let mut out: Vec<String> = picture_shows(&tie).into_iter().collect();
+            let Some(first) = tie.first().or(d.named.first()) else { return out };
+            let (cause, id, score) = named(first);
+            out.push(t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right.clone()));
             out.extend(same_picture_said(&d.same));
+            for c in d.named.iter().filter(|c| *c != first && !tie.contains(c)) {
+                let (cause, id, score) = named(c);
+                out.push(t!("diagnose-also", cause = cause, id = id, score = score));
+            }
             out
         }
         Verdict::Unexplained => {
@@ -109,13 +111,26 @@ pub fn student_picture_ui(ui: &mut Ui, picture: &mut Option<StudentPicture>) -> 
         clear = ui.button(t!("student-clear")).on_hover_text(t!("student-clear-hover")).clicked();
     });
     let wrong = p.verdict != "right";
-    for line in p.lines() {
-        let mut text = RichText::new(line).strong();
-        if wrong {
-            text = text.color(super::student_column::wrong_ink(ui));
-        }
-        ui.add(egui::Label::new(text).wrap());
-    }
+    // The pictures first get their width's share, down to a floor; the diagnosis the
+    // height left above them, scrolling when it is longer (its first line at the top).
+    let avail = ui.available_size();
+    let body = ui.text_style_height(&egui::TextStyle::Body);
+    let row = body * 2.0;
+    let side_w = ((avail.x - 36.0) / 3.0).max(48.0);
+    let floor = side_w.min((avail.y - row) * 0.6).max(48.0);
+    let text_max = (avail.y - row - floor - 2.0 * ui.spacing().item_spacing.y).max(body * 3.0);
+    egui::ScrollArea::vertical().id_salt("student-diagnosis").max_height(text_max).auto_shrink([false, true]).show(
+        ui,
+        |ui| {
+            for line in p.lines() {
+                let mut text = RichText::new(line).strong();
+                if wrong {
+                    text = text.color(super::student_column::wrong_ink(ui));
+                }
+                ui.add(egui::Label::new(text).wrap());
+            }
+        },
+    );
     let size = p.size;
     let textures = p.textures.get_or_insert_with(|| {
         let names = ["student-right", "student-picture", "student-difference"];
@@ -124,9 +139,7 @@ pub fn student_picture_ui(ui: &mut Ui, picture: &mut Option<StudentPicture>) -> 
             ui.ctx().load_texture(names[k], image, egui::TextureOptions::NEAREST)
         })
     });
-    let avail = ui.available_size();
-    let row = ui.text_style_height(&egui::TextStyle::Body) * 2.0;
-    let side = ((avail.x - 36.0) / 3.0).min(avail.y - row).max(48.0);
+    let side = side_w.min(ui.available_height() - row).max(48.0);
     let titles = [t!("student-picture-right"), t!("student-picture-theirs"), t!("compare-difference")];
     let rects = ui.columns(3, |cols| {
         (0..3)
@@ -141,4 +154,19 @@ pub fn student_picture_ui(ui: &mut Ui, picture: &mut Option<StudentPicture>) -> 
         *picture = None;
     }
     rects
+}
+
+/// A student's picture refused, in Compare: its name, why (in the error's ink), and Clear.
+pub fn refused_picture_ui(ui: &mut Ui, refused: &mut Option<(String, String)>) {
+    let Some((file, why)) = refused.as_ref() else { return };
+    let mut clear = false;
+    ui.horizontal_wrapped(|ui| {
+        ui.heading(t!("student-picture-heading", file = file.clone()));
+        clear = ui.button(t!("student-clear")).on_hover_text(t!("student-clear-hover")).clicked();
+    });
+    let text = RichText::new(why).strong().color(super::student_column::wrong_ink(ui));
+    ui.add(egui::Label::new(text).wrap());
+    if clear {
+        *refused = None;
+    }
 }

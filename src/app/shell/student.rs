@@ -39,6 +39,7 @@ pub fn check_path(state: &mut AppState, path: &Path) {
     };
     match crate::io::input_file::read_capped(path, cap, &kind) {
         Ok(bytes) => check_bytes(state, &bytes, path),
+        Err(why) if is_picture(path) => refuse_picture(state, path, why),
         Err(why) => refuse(state, why),
     }
 }
@@ -117,6 +118,17 @@ fn refuse(state: &mut AppState, why: String) {
     state.message = Some(Message::Refused(t!("student-not-checked", why = why)));
 }
 
+/// Refuses a picture: says why in the status line and in Compare, in place of the last
+/// picture's diagnosis (which is not this file's).
+fn refuse_picture(state: &mut AppState, path: &Path, why: String) {
+    let said = t!("student-not-checked", why = why.clone());
+    refuse(state, why);
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    state.compare.student = None;
+    state.compare.refused = Some((phonglab_core::escape::printable(&name), said));
+    state.compare.open = true;
+}
+
 /// A notebook with outputs was dropped: asks whether to open it as the scene (as a drop
 /// always did) or check it against the scene shown. Checks it here; returns the file
 /// (name, bytes) when it is to be opened as the scene (the shell's files open it).
@@ -186,7 +198,7 @@ fn check_picture(state: &mut AppState, bytes: &[u8], path: &Path) {
     use phonglab_core::teach::diagnose::{Drawing, diagnose};
     let image = match crate::io::student_png::decode(bytes, path, PICTURE_SIZE) {
         Ok(image) => image,
-        Err(why) => return refuse(state, why),
+        Err(why) => return refuse_picture(state, path, why),
     };
     let mesh = state.doc.view.mesh();
     // As `phonglab diagnose` draws it: the exact power, whatever the window's setting (the
@@ -203,9 +215,10 @@ fn check_picture(state: &mut AppState, bytes: &[u8], path: &Path) {
                 &d,
             );
             state.compare.student = Some(picture);
+            state.compare.refused = None;
             state.compare.open = true;
             say(state, Status::Picture);
         }
-        Err(e) => refuse(state, e.to_string()),
+        Err(e) => refuse_picture(state, path, e.to_string()),
     }
 }

@@ -522,3 +522,44 @@ fn two_mistakes_that_draw_the_same_picture_are_named_together_in_the_tables_orde
     assert_eq!(found.causes[0].id(), "flat-shade-model");
     assert!(found.same_picture.is_empty() && found.same_picture_words().is_none());
 }
+
+/// Nothing of the spot reaches the object (its direction reversed): many causes draw that
+/// picture. The words say first what it shows, then the causes in one line, the most
+/// common first, each once with its light in brackets, and the rule between changed and
+/// fitted values only when both are among them.
+#[test]
+fn a_light_that_reaches_nothing_is_said_first_and_its_tied_causes_in_one_line() {
+    use phonglab_core::teach::diagnose::{most_common_first, picture_shows};
+    let right = shipped("spotlight");
+    let mut wrong = right.clone();
+    wrong.scene.lights[0].spot_direction = -wrong.scene.lights[0].spot_direction;
+    let (_, rgba, _) = wrong.draw(SIZE).expect("drawn");
+    let found = diagnose(&right, &shifted_and_noised(&rgba, right.background8()), SIZE).expect("diagnosed");
+    let shows = picture_shows(&found.same_picture).expect("what the picture shows");
+    assert!(shows.contains("Nothing of light 0 (GL_LIGHT0) reaches the object"), "{shows}");
+    assert_eq!(most_common_first(&found.same_picture)[0].id(), "light-left-out");
+    let words = found.same_picture_words().expect("said");
+    assert!(words.contains(": light-left-out (GL_LIGHT0), spot-cutoff-radians (GL_LIGHT0), "), "{words}");
+    assert!(words.contains("spot-direction-reversed (GL_LIGHT0)"), "{words}");
+    assert!(!words.contains(", GL_LIGHT"), "a light split from its id: {words}");
+    let ids: Vec<&str> = words.split(": ").nth(1).unwrap().split(". ").next().unwrap().split(", ").collect();
+    let mut unique = ids.clone();
+    unique.dedup();
+    assert_eq!(ids, unique, "{words}");
+    let fitted = found.same_picture.iter().filter(|t| t.fitted()).count();
+    let mixed = fitted > 0 && fitted < found.same_picture.len();
+    assert_eq!(words.contains("fitted from the picture"), mixed, "{words}");
+}
+
+/// Two causes of one picture, neither fitted from it: the words say nothing of fitting.
+#[test]
+fn the_rule_for_fitted_values_is_said_only_when_one_is_fitted() {
+    use phonglab_core::teach::diagnose::same_picture_said;
+    let t = |id: &str| Tried {
+        mistake: MISTAKES.iter().position(|m| m.id == id).unwrap(),
+        at: At::default(),
+        matched: None,
+    };
+    let plain = same_picture_said(&[t("flipped-normals"), t("two-sided-off")]).unwrap();
+    assert!(!plain.contains("fitted"), "{plain}");
+}

@@ -76,8 +76,18 @@ pub(super) fn differs(fitted: [f64; 3], scene: [f64; 3]) -> bool {
 /// A fitted colour as words show it: two decimals in the reader's decimal mark, never
 /// negative (a colour is not: a fit a little under 0 is 0).
 pub(super) fn rgb_said(v: [f64; 3]) -> String {
-    let [r, g, b] = v.map(|x| x.max(0.0) + 0.0);
-    crate::locale::decimal(&format!("({r:.2}, {g:.2}, {b:.2})"))
+    triple_said(v.map(|x| x.max(0.0) + 0.0))
+}
+
+/// Three numbers to two decimals for people: "(0.05, 0.06, 0.49)", or with the decimal
+/// comma "(0,05; 0,06; 0,49)", as the probe writes them (a comma between components would
+/// read as a decimal mark).
+pub(super) fn triple_said([r, g, b]: [f64; 3]) -> String {
+    let text = crate::locale::decimal(&format!("({r:.2}, {g:.2}, {b:.2})"));
+    match crate::locale::current().decimal {
+        crate::locale::DecimalMark::Point => text,
+        crate::locale::DecimalMark::Comma => text.replace(", ", "; "),
+    }
 }
 
 /// Each term's factor: `right` drawn `size` square with that term's products alone set to
@@ -489,6 +499,15 @@ fn solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn colours_keep_their_components_apart_with_the_decimal_comma() {
+        use crate::locale::{Lang, Locale, with_locale};
+        let v = [0.05, 0.06, 0.49];
+        assert_eq!(with_locale(Locale::of(Lang::PtPt), || rgb_said(v)), "(0,05; 0,06; 0,49)");
+        assert_eq!(with_locale(Locale::of(Lang::PtBr), || rgb_said(v)), "(0,05; 0,06; 0,49)");
+        assert_eq!(with_locale(Locale::of(Lang::En), || rgb_said(v)), "(0.05, 0.06, 0.49)");
+    }
 
     #[test]
     fn gaussian_elimination_solves_a_small_system() {

@@ -50,7 +50,7 @@ impl PictureMistake {
     pub fn words_at(&self, at: At) -> String {
         use crate::locale::Arg;
         let e = at.emission;
-        let emission = crate::locale::decimal(&format!("({:.2}, {:.2}, {:.2})", e[0], e[1], e[2]));
+        let emission = colours::triple_said(e);
         let mut args = vec![
             ("light", Arg::Text(at.light.to_string())),
             ("previous", Arg::Text(at.light.saturating_sub(1).to_string())),

@@ -78,6 +78,22 @@ impl Tried {
         }
     }
 
+    /// Its id with the light it was made for in brackets ("light-left-out (GL_LIGHT1)"),
+    /// for lists of ids, as the window names a cause.
+    pub fn listed(&self) -> String {
+        match self.light() {
+            Some(n) => format!("{} (GL_LIGHT{n})", self.id()),
+            None => self.id().to_owned(),
+        }
+    }
+
+    /// Whether a value of it was fitted from the picture (a `-differs` value, the colours,
+    /// the materials, the emission added), rather than one changed value of the scene.
+    pub fn fitted(&self) -> bool {
+        let id = self.id();
+        id.ends_with("-differs") || ["colours-differ", "materials-differ", "emission-added"].contains(&id)
+    }
+
     /// Its words in the reader's language, naming the light.
     pub fn words(&self) -> String {
         MISTAKES[self.mistake].words_at(self.at)
@@ -221,11 +237,58 @@ impl Diagnosis {
     }
 }
 
-/// [`Diagnosis::same_picture_words`] of the causes `same` (none when it is empty).
+/// The mistakes students make most often, in that order: among causes that draw the same
+/// picture these are listed first; the others follow in the table's order, those with a
+/// value fitted from the picture last.
+const MOST_COMMON: [&str; 8] = [
+    "light-left-out",
+    "spot-cutoff-radians",
+    "spot-direction-reversed",
+    "light-before-view",
+    "row-vectors",
+    "vlv-reversed",
+    "spot-cutoff-cosine",
+    "flipped-normals",
+];
+
+/// The causes `same` (which draw the same picture) the most common first.
+pub fn most_common_first(same: &[Tried]) -> Vec<Tried> {
+    let rank = |t: &Tried| (t.fitted(), MOST_COMMON.iter().position(|&id| id == t.id()).unwrap_or(MOST_COMMON.len()));
+    let mut out = same.to_vec();
+    out.sort_by_key(|t| rank(t));
+    out
+}
+
+/// The ids of `tried` as a list for people: each once, its light in brackets.
+pub fn listed(tried: &[Tried]) -> String {
+    let mut seen: Vec<String> = Vec::new();
+    for t in tried {
+        let l = t.listed();
+        if !seen.contains(&l) {
+            seen.push(l);
+        }
+    }
+    seen.join(", ")
+}
+
+/// What the picture shows, in one sentence, when the causes `same` that draw it include a
+/// light left out: nothing of that light reaches the object.
+pub fn picture_shows(same: &[Tried]) -> Option<String> {
+    let off = same.iter().find(|t| t.id() == "light-left-out")?;
+    let light = crate::locale::Arg::Text(off.at.light.to_string());
+    Some(crate::locale::tr_args("diagnose-light-unseen", &[("light", light)]))
+}
+
+/// [`Diagnosis::same_picture_words`] of the causes `same` (none when it is empty): one
+/// line, the ids the most common first, each once; the order's rule said only when some
+/// are fitted from the picture and some are not.
 pub fn same_picture_said(same: &[Tried]) -> Option<String> {
     (!same.is_empty()).then(|| {
-        let ids = same.iter().map(Tried::label).collect::<Vec<_>>().join(", ");
-        crate::locale::tr_args("diagnose-same-picture", &[("ids", crate::locale::Arg::Text(ids))])
+        let ordered = most_common_first(same);
+        let ids = crate::locale::Arg::Text(listed(&ordered));
+        let mixed = ordered.iter().any(Tried::fitted) && !ordered.iter().all(Tried::fitted);
+        let id = if mixed { "diagnose-same-picture-fitted" } else { "diagnose-same-picture" };
+        crate::locale::tr_args(id, &[("ids", ids)])
     })
 }
 
