@@ -3,7 +3,9 @@
 //! chart (`report.png` beside the report) for the next lesson, in the teacher's language.
 //! Submissions are hostile input: at most [`MAX_SUBMISSIONS`] files each read through the
 //! bounded reader, the whole run capped at [`MAX_SECONDS`], names escaped for Markdown,
-//! CSV (no formula) and the terminal, and no output written over a submission.
+//! CSV (no formula) and the terminal, and no output written over a submission, through a
+//! link, over a file phonglab did not write, or named like a submission in the folder
+//! ([`crate::io::work_output`]).
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -17,6 +19,13 @@ use phonglab_core::study::check::said::{input_names, printed_again};
 use phonglab_core::study::check::{Check, check};
 
 use crate::io::student_code::read_notebook;
+use crate::io::work_output::{Kind, MARKS_HEADER};
+
+/// Writes the class's output `path` of this `kind` by [`crate::io::work_output`]'s rule
+/// (`dir`: the folder checked).
+fn write(path: &Path, kind: Kind, dir: &Path, bytes: &[u8]) -> Result<()> {
+    crate::io::work_output::write(path, kind, Some(dir), bytes).map_err(anyhow::Error::msg)
+}
 
 /// The most submissions a folder may hold for one run.
 pub const MAX_SUBMISSIONS: usize = 1000;
@@ -144,15 +153,11 @@ pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> 
         guarded.push((s.as_path(), crate::io::same_file::Input::Any));
     }
     crate::io::same_file::refuse_onto(&outputs, &guarded).map_err(anyhow::Error::msg)?;
-    // The chart's name is derived, not given: a link planted there is never followed.
-    if let Some(chart) =
-        chart.as_ref().filter(|c| std::fs::symlink_metadata(c).is_ok_and(|m| m.file_type().is_symlink()))
-    {
-        anyhow::bail!(t!("check-chart-link", path = crate::io::reasons::shown(chart)));
-    }
-    for out in &outputs {
-        crate::io::atomic_write::check_file_destination(out)?;
-    }
+    // No link followed, no file phonglab did not write replaced, no phantom submission
+    // made in the folder (`io::work_output`).
+    let kinds = [(a.report.as_deref(), Kind::Report), (chart.as_deref(), Kind::Chart), (a.csv.as_deref(), Kind::Marks)];
+    let work_outputs: Vec<(&Path, Kind)> = kinds.into_iter().filter_map(|(p, k)| p.map(|p| (p, k))).collect();
+    crate::io::work_output::refuse(&work_outputs, Some(dir)).map_err(anyhow::Error::msg)?;
     if assignment.is_none() {
         super::say(&t!("check-report-no-scene"));
     }
@@ -164,12 +169,10 @@ pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> 
     let scene_shown = a.scene.as_deref().map(crate::io::reasons::shown);
     if let (Some(report), Some(chart)) = (&a.report, &chart) {
         let chart_name = chart.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        crate::io::atomic_write::write(
-            report,
-            markdown(&marked, &counts, &chart_name, scene_shown.as_deref()).as_bytes(),
-        )?;
+        let text = markdown(&marked, &counts, &chart_name, scene_shown.as_deref());
+        write(report, Kind::Report, dir, text.as_bytes())?;
         let (w, h, rgba) = chart_png(&counts, read);
-        crate::io::atomic_write::write(chart, &crate::io::image::encode_png(w, h, &rgba)?)?;
+        write(chart, Kind::Chart, dir, &crate::io::image::encode_png_signed(w, h, &rgba, Kind::Chart.png_text())?)?;
         super::say(&t!(
             "check-report-written",
             count = read,
@@ -178,7 +181,7 @@ pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> 
         ));
     }
     if let Some(csv) = &a.csv {
-        crate::io::atomic_write::write(csv, marks_csv(&marked).as_bytes())?;
+        write(csv, Kind::Marks, dir, marks_csv(&marked).as_bytes())?;
         super::say(&t!("check-report-written", count = read, unread = unread, path = crate::io::reasons::shown(csv)));
     }
     if a.json {
@@ -320,7 +323,7 @@ fn printed_twice_section(marked: &[Marked]) -> String {
 /// causes in the teacher's words, and their ids for machines (text fields neutralised).
 pub fn marks_csv(marked: &[Marked]) -> String {
     let f = escape::csv::text_field;
-    let mut out = String::from("file,verdict,first_wrong,causes,cause_ids\n");
+    let mut out = format!("{MARKS_HEADER}\n");
     for m in marked {
         let (verdict, first, why, ids) = match &m.check {
             Err(e) => ("unread".to_string(), String::new(), e.clone(), String::new()),

@@ -15,6 +15,7 @@ use phonglab_core::teach::picture_match::difference_image;
 use phonglab_core::{PowFn, probe, probe_report};
 
 use super::render::ShadedInput;
+use crate::io::work_output::Kind;
 
 /// `phonglab diagnose`.
 #[derive(Args, Debug)]
@@ -118,16 +119,18 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
     let outputs: Vec<&Path> = a.diff.iter().map(PathBuf::as_path).collect();
     let inputs = [(a.scene.as_path(), Input::Scene), (a.image.as_path(), Input::Any)];
     crate::io::same_file::refuse_onto(&outputs, &inputs).map_err(anyhow::Error::msg)?;
-    for o in &outputs {
-        crate::io::atomic_write::check_file_destination(o)?;
-    }
+    // Never through a link, nor over a file phonglab did not write (`io::work_output`).
+    let kinds: Vec<(&Path, Kind)> = outputs.iter().map(|&o| (o, Kind::Difference)).collect();
+    crate::io::work_output::refuse(&kinds, None).map_err(anyhow::Error::msg)?;
     let right = right_drawing(a, &outputs)?;
     let size = a.size as usize;
     let image = crate::io::student_png::read(&a.image, size).map_err(anyhow::Error::msg)?;
     let d = diagnose(&right, &image, size)?;
     let is_right = matches!(d.verdict, Verdict::Right);
     if let Some(diff) = &a.diff {
-        crate::io::image::write_png(diff, size, size, &difference_image(&d.picture, &image))?;
+        let signed = Kind::Difference.png_text();
+        let png = crate::io::image::encode_png_signed(size, size, &difference_image(&d.picture, &image), signed)?;
+        crate::io::work_output::write(diff, Kind::Difference, None, &png).map_err(anyhow::Error::msg)?;
     }
     let worst = (d.right.worst_levels > 0).then_some(d.right.worst);
     let probed = match worst {

@@ -102,6 +102,27 @@ pub(crate) mod tests {
 
     #[test]
     #[cfg(unix)]
+    fn write_here_never_writes_through_a_link() {
+        let dir = temp_dir("here");
+        let real = dir.join("bashrc");
+        std::fs::write(&real, b"mine").unwrap();
+        let (link, dangling) = (dir.join("report.md"), dir.join("marks.csv"));
+        std::os::unix::fs::symlink("bashrc", &link).unwrap();
+        std::os::unix::fs::symlink("made.csv", &dangling).unwrap();
+        for l in [&link, &dangling] {
+            assert!(write_here(l, b"new").unwrap_err().to_string().contains("not a regular file"));
+            assert!(std::fs::symlink_metadata(l).unwrap().file_type().is_symlink(), "left as it was");
+        }
+        assert_eq!(std::fs::read(&real).unwrap(), b"mine");
+        assert!(!dir.join("made.csv").exists());
+        assert_eq!(listing(&dir).len(), 3, "no temporary left: {:?}", listing(&dir));
+        write_here(&dir.join("plain.md"), b"new").unwrap();
+        write_here(&dir.join("plain.md"), b"newer").unwrap();
+        assert_eq!(std::fs::read(dir.join("plain.md")).unwrap(), b"newer");
+    }
+
+    #[test]
+    #[cfg(unix)]
     fn a_killed_writes_temporaries_are_removed_by_the_next_write_of_that_file() {
         let dir = temp_dir("stale");
         // A writer that no longer runs (the largest pid a system gives is below 2^22), one

@@ -6,13 +6,27 @@ use anyhow::{Context, Result};
 
 use crate::t;
 
+/// The keyword of the text chunk that says which program wrote a PNG (PNG's own
+/// registered keyword for it).
+pub const PNG_SIGNATURE_KEYWORD: &str = "Software";
+
 /// Encodes RGBA8 pixels (rows top to bottom) as the bytes of a PNG file, every chunk
 /// written and the encoder finished with its errors checked (dropping it would ignore them).
 pub fn encode_png(width: usize, height: usize, rgba: &[u8]) -> Result<Vec<u8>> {
+    encode_png_signed(width, height, rgba, None)
+}
+
+/// [`encode_png`] with a `Software` text chunk saying which output of phonglab it is
+/// (`signed`, ASCII), by which phonglab knows its own earlier output again
+/// ([`crate::io::work_output`]).
+pub fn encode_png_signed(width: usize, height: usize, rgba: &[u8], signed: Option<&str>) -> Result<Vec<u8>> {
     let mut bytes = Vec::new();
     let mut enc = png::Encoder::new(&mut bytes, width as u32, height as u32);
     enc.set_color(png::ColorType::Rgba);
     enc.set_depth(png::BitDepth::Eight);
+    if let Some(text) = signed {
+        enc.add_text_chunk(PNG_SIGNATURE_KEYWORD.to_string(), text.to_string()).context(t!("png-cannot-encode"))?;
+    }
     let mut w = enc.write_header().context(t!("png-cannot-encode"))?;
     w.write_image_data(rgba).context(t!("png-cannot-encode"))?;
     w.finish().context(t!("png-cannot-encode"))?;

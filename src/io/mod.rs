@@ -1,7 +1,8 @@
 //! Files in and out, the same for the command line and the window: every file is written
 //! whole or not at all ([`atomic_write`]), read under a cap and without blocking
 //! ([`input_file`]), never over one of the inputs ([`same_file`]), within the memory budget
-//! ([`budget`]); PNG pictures ([`image`]), zip archives ([`zip`]), typeset PDF sheets
+//! ([`budget`]), never through a link nor over a file phonglab did not write where it reads
+//! students' work ([`work_output`]); PNG pictures ([`image`]), zip archives ([`zip`]), typeset PDF sheets
 //! ([`sheet_pdf`]), what a screenshot opens ([`screenshot`]), the shipped scenes ([`scenes`]) and the system's reasons for a failure
 //! in words ([`reasons`]).
 
@@ -27,4 +28,5 @@ pub mod set_journal;
 pub mod sheet_pdf;
 pub mod student_code;
 pub mod student_png;
+pub mod work_output;
 pub mod zip;

@@ -57,3 +57,4 @@ mod ui_random;
 mod ui_student;
 mod ui_typing;
 mod vocabulary;
+mod work_outputs;

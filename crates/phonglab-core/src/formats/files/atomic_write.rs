@@ -314,10 +314,17 @@ fn remove_stale_temporaries(dir: &Path, name: &str) {
 /// device, a pipe, a folder) is refused. Temporary files that killed writes of the same
 /// file left beside it are removed first.
 pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
-    const KEPT: &str = "write-kept-file";
     let resolved =
         through_links(path).map_err(|e| WriteError::new(path, "write-step-name", e, "write-kept-nothing"))?;
-    let path = resolved.as_path();
+    write_here(&resolved, bytes)
+}
+
+/// [`write()`] at the name `path` itself, following no link: a symbolic link there is
+/// refused as not a regular file, and one planted after that look is replaced by the
+/// new file, never written through (the outputs of the commands that read students'
+/// work, where a link at an output's name may be a student's).
+pub fn write_here(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
+    const KEPT: &str = "write-kept-file";
     let name = file_name_of(path).map_err(|e| WriteError::new(path, "write-step-name", e, "write-kept-nothing"))?;
     refuse_not_a_file(path, "write-kept-nothing")?;
     let dir = folder_of(path);

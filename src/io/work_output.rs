@@ -1,0 +1,215 @@
+//! The outputs of the commands that read students' work: `check FOLDER`'s report, the
+//! chart beside it and the marks, and `diagnose`'s difference image. A class folder is
+//! unzipped from a learning platform, and a picture sits among the other students', so
+//! anything at an output's name may be a student's. One rule for all of them, kept here:
+//!
+//! - a symbolic link at the output's name is refused, never written through (a planted
+//!   `report.md -> ../../.bashrc` would replace the teacher's file; a dangling link would
+//!   make its target);
+//! - a file already there is replaced only where it is phonglab's own earlier output of the
+//!   same kind, known by its bytes ([`Kind::is_own`]: the report's title line, the marks'
+//!   header, the PNG's `Software` text); anything else (another student's picture, the
+//!   teacher's notes) is refused, named, and left as it is;
+//! - inside the checked folder, a name that `check` reads as a submission (`.ipynb`), or a
+//!   student's script (`.py`), is refused: the next check would count it as a student.
+//!
+//! What passes is written whole, at the name itself, following no link
+//! ([`crate::io::atomic_write::write_here`]), and the look is taken again just before the
+//! write (a folder's check takes seconds). The window writes none of these outputs.
+
+use std::io::Read;
+use std::path::Path;
+
+use crate::t;
+
+/// Which output it is: how phonglab knows its own earlier one, and what it is called.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// `check FOLDER --report R.md`.
+    Report,
+    /// `check FOLDER --csv M.csv`.
+    Marks,
+    /// The bar chart beside the report (`R.png`).
+    Chart,
+    /// `diagnose --diff D.png`.
+    Difference,
+}
+
+/// The marks' first line, the header of `check FOLDER --csv`.
+pub const MARKS_HEADER: &str = "file,verdict,first_wrong,causes,cause_ids";
+
+/// The most bytes read of a file at an output's name to know whether phonglab wrote it.
+const HEAD_BYTES: u64 = 4096;
+
+impl Kind {
+    /// The `Software` text of this kind's PNG (`None`: not a picture).
+    pub fn png_text(self) -> Option<&'static str> {
+        match self {
+            Kind::Chart => Some("phonglab check --report (the causes' chart)"),
+            Kind::Difference => Some("phonglab diagnose --diff"),
+            Kind::Report | Kind::Marks => None,
+        }
+    }
+
+    /// The output in the user's words.
+    fn words(self) -> String {
+        match self {
+            Kind::Report => t!("work-output-kind-report"),
+            Kind::Marks => t!("work-output-kind-marks"),
+            Kind::Chart => t!("work-output-kind-chart"),
+            Kind::Difference => t!("work-output-kind-difference"),
+        }
+    }
+
+    /// The extension a name for it takes (suggested in place of a submission's).
+    fn extension(self) -> &'static str {
+        match self {
+            Kind::Report => "md",
+            Kind::Marks => "csv",
+            Kind::Chart | Kind::Difference => "png",
+        }
+    }
+
+    /// Whether `head`, the first bytes of a file, are this kind of phonglab's output: the
+    /// report's first line is its title in one of phonglab's languages (a teacher re-runs
+    /// in another), the marks' is their header, a picture holds this kind's `Software`
+    /// text before its pixels. (Anyone can write these bytes: a student who does makes
+    /// only their own file replaceable.)
+    pub fn is_own(self, head: &[u8]) -> bool {
+        let first_line = || {
+            let line = head.split(|&b| b == b'\n').next().unwrap_or_default();
+            String::from_utf8_lossy(line.strip_suffix(b"\r").unwrap_or(line)).into_owned()
+        };
+        match self {
+            Kind::Report => phonglab_core::locale::Lang::ALL.iter().any(|&lang| {
+                let title = crate::locale::tr_in(lang, "check-report-title", &[]);
+                first_line() == format!("# {}", phonglab_core::escape::markdown::text(&title))
+            }),
+            Kind::Marks => first_line() == MARKS_HEADER,
+            Kind::Chart | Kind::Difference => self.png_text().is_some_and(|text| png_says(head, text)),
+        }
+    }
+}
+
+/// Whether the PNG whose first bytes are `head` holds the text chunk `Software` = `text`
+/// before its pixels (where phonglab's encoder writes it, right after the header).
+fn png_says(head: &[u8], text: &str) -> bool {
+    let want = [crate::io::image::PNG_SIGNATURE_KEYWORD.as_bytes(), &[0], text.as_bytes()].concat();
+    let Some(mut rest) = head.strip_prefix(b"\x89PNG\r\n\x1a\n".as_slice()) else { return false };
+    while let (Some(len), Some(kind)) = (rest.get(0..4), rest.get(4..8)) {
+        let len = u32::from_be_bytes([len[0], len[1], len[2], len[3]]) as usize;
+        if kind == b"IDAT" {
+            return false;
+        }
+        let Some(data) = rest.get(8..8 + len) else { return false };
+        if kind == b"tEXt" && data == want.as_slice() {
+            return true;
+        }
+        rest = rest.get(8 + len + 4..).unwrap_or_default();
+    }
+    false
+}
+
+/// The first bytes of the regular file at `path`, opened following no link.
+fn head_of(path: &Path) -> std::io::Result<Vec<u8>> {
+    let mut head = Vec::new();
+    crate::platform::os::open_no_follow(path)?.take(HEAD_BYTES).read_to_end(&mut head)?;
+    Ok(head)
+}
+
+/// Whether `path`'s folder is the folder `dir` (by any path to it).
+fn in_folder(path: &Path, dir: &Path) -> bool {
+    let parent = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    match (std::fs::canonicalize(parent), std::fs::canonicalize(dir)) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
+    }
+}
+
+/// Why the output `path` of this `kind` may not be written, if it may not (see the
+/// module's rule); `checked`: the folder `check` reads, where there is one. A file name in
+/// the words is written visibly for the terminal.
+fn refusal(path: &Path, kind: Kind, checked: Option<&Path>) -> Option<String> {
+    let shown = crate::io::reasons::shown(path);
+    match std::fs::symlink_metadata(path) {
+        // The chart's name is derived from the report's, not given: said so.
+        Ok(m) if m.file_type().is_symlink() && kind == Kind::Chart => {
+            return Some(t!("check-chart-link", path = shown));
+        }
+        Ok(m) if m.file_type().is_symlink() => return Some(t!("work-output-link", path = shown)),
+        Ok(m) if m.is_file() => {
+            let own = match head_of(path) {
+                Ok(head) => kind.is_own(&head),
+                Err(e) if crate::platform::os::is_link_refused(&e) => {
+                    return Some(t!("work-output-link", path = shown));
+                }
+                Err(_) => false,
+            };
+            if !own {
+                return Some(t!("work-output-not-ours", path = shown, kind = kind.words()));
+            }
+        }
+        // Nothing there; anything else there (a folder, a device) the write refuses.
+        _ => {}
+    }
+    let submission = crate::io::student_code::student_code(path).is_some();
+    if submission && checked.is_some_and(|dir| in_folder(path, dir)) {
+        let name = path.with_extension(kind.extension());
+        let suggested = name.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let suggested = phonglab_core::escape::terminal::text(&suggested);
+        return Some(t!("work-output-submission", path = shown, suggested = suggested));
+    }
+    None
+}
+
+/// Refuses, before any work, the outputs the rule forbids (the first one's reason), and
+/// tries each destination ([`crate::io::atomic_write::check_file_destination`]).
+pub fn refuse(outputs: &[(&Path, Kind)], checked: Option<&Path>) -> Result<(), String> {
+    for &(path, kind) in outputs {
+        if let Some(why) = refusal(path, kind, checked) {
+            return Err(why);
+        }
+        crate::io::atomic_write::check_file_destination(path).map_err(|e| e.to_string())?;
+    }
+    Ok(())
+}
+
+/// Writes the output `path` of this `kind` whole, at the name itself, after looking again
+/// ([`refuse`]'s rule; nothing written where it refuses).
+pub fn write(path: &Path, kind: Kind, checked: Option<&Path>, bytes: &[u8]) -> Result<(), String> {
+    if let Some(why) = refusal(path, kind, checked) {
+        return Err(why);
+    }
+    crate::io::atomic_write::write_here(path, bytes).map_err(|e| e.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_kind_knows_its_own_bytes_and_no_other() {
+        let pixels = [9u8; 4 * 4 * 4];
+        let png = |signed| crate::io::image::encode_png_signed(4, 4, &pixels, signed).unwrap();
+        let (chart, diff, plain) = (png(Kind::Chart.png_text()), png(Kind::Difference.png_text()), png(None));
+        assert!(Kind::Chart.is_own(&chart) && !Kind::Difference.is_own(&chart));
+        assert!(Kind::Difference.is_own(&diff) && !Kind::Chart.is_own(&diff));
+        assert!(!Kind::Chart.is_own(&plain) && !Kind::Difference.is_own(&plain), "a render is not an output");
+        // The pixels decode as before.
+        let dir = crate::io::atomic_write::tests::temp_dir("signed");
+        std::fs::write(dir.join("d.png"), &diff).unwrap();
+        assert_eq!(crate::io::image::read_png(&dir.join("d.png")).unwrap(), (4, 4, pixels.to_vec()));
+        // The text after the pixels, or cut short, is not phonglab's.
+        assert!(!Kind::Difference.is_own(&diff[..30]));
+        assert!(Kind::Marks.is_own(format!("{MARKS_HEADER}\r\na,right,,,\n").as_bytes()));
+        assert!(!Kind::Marks.is_own(b"file,verdict\n"));
+        for lang in phonglab_core::locale::Lang::ALL {
+            let title = crate::locale::tr_in(lang, "check-report-title", &[]);
+            assert!(Kind::Report.is_own(format!("# {title}\n\nrest").as_bytes()), "{lang:?}");
+        }
+        assert!(!Kind::Report.is_own(b"# My notes\n") && !Kind::Report.is_own(b""));
+    }
+}

@@ -1,0 +1,241 @@
+//! The outputs of the commands that read students' work (`check FOLDER --report --csv`, the
+//! chart beside the report, `diagnose --diff`), where a class folder unzipped from Moodle
+//! may hold anything: a link at an output's name is refused, never written through; a file
+//! there that phonglab did not write (another student's picture, the teacher's notes) is
+//! never replaced, while phonglab's own earlier output is (a teacher's re-run works); and an
+//! output inside the checked folder named like a submission is refused, so that the next
+//! check never counts a phantom student.
+
+use std::path::{Path, PathBuf};
+
+use crate::common::{self, phonglab, phonglab_in};
+
+/// A folder of the test's own, removed when it ends.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(name: &str) -> Scratch {
+        let p = std::env::temp_dir().join(format!("phonglab-work-outputs-{}-{name}", std::process::id()));
+        std::fs::remove_dir_all(&p).ok();
+        std::fs::create_dir_all(&p).unwrap();
+        Scratch(p)
+    }
+
+    fn join(&self, name: &str) -> PathBuf {
+        self.0.join(name)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        std::fs::remove_dir_all(&self.0).ok();
+    }
+}
+
+/// A notebook check reads (saved without outputs: listed, "not read", as a student's).
+const NOTEBOOK: &str = r#"{"cells": [{"cell_type": "code", "source": ["import numpy as np\n"], "outputs": []}]}"#;
+
+/// A class folder `cls` in `root` with the students `names`.
+fn class(root: &Scratch, names: &[&str]) -> PathBuf {
+    let dir = root.join("cls");
+    std::fs::create_dir_all(&dir).unwrap();
+    for n in names {
+        std::fs::write(dir.join(n), NOTEBOOK).unwrap();
+    }
+    dir
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+fn stderr(o: &std::process::Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// The shipped spotlight scene, copied into `root`.
+fn scene(root: &Scratch) -> PathBuf {
+    let from = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let to = root.join("spotlight.toml");
+    std::fs::copy(from, &to).unwrap();
+    to
+}
+
+/// `phonglab diagnose` of `image` (64 pixels) for `scene`, its difference image at `diff`.
+fn diagnose(scene: &Path, image: &Path, diff: &Path) -> std::process::Output {
+    phonglab(&["diagnose", "--scene", s(scene), "--image", s(image), "--size", "64", "--diff", s(diff)])
+}
+
+/// A student's picture of `scene`, 64 pixels, as `phonglab render` draws it.
+fn picture(scene: &Path, out: &Path) {
+    let o = phonglab(&["render", "--scene", s(scene), "--size", "64", "-o", s(out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+}
+
+/// The files of the class as the marks list them, in order.
+fn listed(csv: &Path) -> Vec<String> {
+    let text = std::fs::read_to_string(csv).unwrap();
+    text.lines().skip(1).map(|l| l.split(',').next().unwrap().to_string()).collect()
+}
+
+#[test]
+#[cfg(unix)] // symbolic links (Windows makes them only with a privilege)
+fn a_link_at_an_output_of_check_or_diagnose_is_refused_and_its_target_kept() {
+    let root = Scratch::new("links");
+    let cls = class(&root, &["a.ipynb"]);
+    let bashrc = root.join("bashrc");
+    std::fs::write(&bashrc, "alias ls='ls --color'\n").unwrap();
+    // A link planted in the class folder at the report's, the marks' and the picture's
+    // names, to the teacher's file, and a dangling one, whose target must not be made.
+    let scene = scene(&root);
+    let image = root.join("student.png");
+    picture(&scene, &image);
+    for name in ["report.md", "marks.csv", "diff.png"] {
+        for (target, made) in [("../bashrc", false), ("../made-by-phonglab", true)] {
+            let link = cls.join(name);
+            std::fs::remove_file(&link).ok();
+            common::symlink(target, &link).unwrap();
+            let o = match name {
+                "report.md" => phonglab(&["check", s(&cls), "--report", s(&link)]),
+                "marks.csv" => phonglab(&["check", s(&cls), "--csv", s(&link)]),
+                _ => diagnose(&scene, &image, &link),
+            };
+            assert_eq!(o.status.code(), Some(2), "{name} -> {target}: {}", stderr(&o));
+            assert!(stderr(&o).contains(&format!("{} is a link", link.display())), "{}", stderr(&o));
+            assert!(stderr(&o).contains("never write"), "{}", stderr(&o));
+            assert_eq!(std::fs::read_to_string(&bashrc).unwrap(), "alias ls='ls --color'\n", "{name}");
+            assert!(!root.join("made-by-phonglab").exists() || !made, "{name}: a dangling link's target made");
+            assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink(), "the link left as it was");
+        }
+    }
+    assert!(!cls.join("report.png").exists(), "nothing written");
+    let names: Vec<_> = std::fs::read_dir(&cls).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(names.len(), 4, "no temporary left: {names:?}");
+}
+
+#[test]
+fn diagnose_never_replaces_another_students_picture() {
+    let root = Scratch::new("other-student");
+    let scene = scene(&root);
+    let cls = root.join("cls");
+    std::fs::create_dir_all(&cls).unwrap();
+    let (a, b) = (cls.join("a.png"), cls.join("b.png"));
+    picture(&scene, &a);
+    picture(&scene, &b);
+    let before = std::fs::read(&b).unwrap();
+    let o = diagnose(&scene, &a, &b);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let said = stderr(&o);
+    assert!(said.contains(&format!("{} is already there and phonglab did not write it", b.display())), "{said}");
+    assert!(said.contains("never replace"), "{said}");
+    assert_eq!(std::fs::read(&b).unwrap(), before, "b.png untouched");
+    // The teacher's ordinary re-run: the difference image phonglab wrote is replaced.
+    let diff = root.join("diff.png");
+    for run in 0..2 {
+        let o = diagnose(&scene, &a, &diff);
+        assert_eq!(o.status.code(), Some(0), "run {run}: {}", stderr(&o));
+        let (w, h, _) = phonglab::io::image::read_png(&diff).unwrap();
+        assert_eq!((w, h), (64, 64));
+    }
+    // Its kind is its own: the marks of a class are not a difference image.
+    let other = Scratch::new("other-kind");
+    let cls2 = class(&other, &["a.ipynb"]);
+    let marks = root.join("marks.csv");
+    assert!(phonglab(&["check", s(&cls2), "--csv", s(&marks)]).status.success());
+    let marks_before = std::fs::read(&marks).unwrap();
+    let o = diagnose(&scene, &a, &marks);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&marks).unwrap(), marks_before);
+}
+
+#[test]
+fn check_never_replaces_a_file_it_did_not_write_and_replaces_its_own() {
+    let root = Scratch::new("not-ours");
+    let cls = class(&root, &["a.ipynb", "b.ipynb"]);
+    let out = root.join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    let (report, chart, csv) = (out.join("turma.md"), out.join("turma.png"), out.join("notas.csv"));
+    let run = |lang: &str| phonglab_in(lang, &["check", s(&cls), "--report", s(&report), "--csv", s(&csv)]);
+    // A teacher's run, and the same again (in another language): phonglab's own replaced.
+    for lang in ["pt_PT.UTF-8", "en_GB.UTF-8", "pt_BR.UTF-8"] {
+        let o = run(lang);
+        assert_eq!(o.status.code(), Some(0), "{lang}: {}", stderr(&o));
+        assert_eq!(listed(&csv), ["a.ipynb", "b.ipynb"]);
+    }
+    assert!(std::fs::read_to_string(&report).unwrap().starts_with("# Verificação da turma"));
+    // A file of the teacher's own at each name: never replaced, named, exit 2.
+    for (at, theirs) in [(&report, "# My notes\n"), (&csv, "name,mark\nana,18\n"), (&chart, "\u{89}PNG not ours")] {
+        let before = std::fs::read(at).unwrap();
+        std::fs::write(at, theirs).unwrap();
+        let o = run("en_GB.UTF-8");
+        assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+        assert!(stderr(&o).contains(&format!("{} is already there and phonglab did not write it", at.display())));
+        assert_eq!(std::fs::read_to_string(at).unwrap(), theirs, "untouched");
+        std::fs::write(at, before).unwrap();
+    }
+    // A report is not marks.
+    let o = phonglab(&["check", s(&cls), "--csv", s(&report)]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(run("en_GB.UTF-8").status.success(), "all phonglab's own again");
+}
+
+#[test]
+fn an_output_named_like_a_submission_inside_the_checked_folder_is_refused() {
+    let root = Scratch::new("phantom");
+    let cls = class(&root, &["ana.ipynb", "rui.ipynb"]);
+    for (flag, name, suggested) in
+        [("--csv", "x.ipynb", "x.csv"), ("--report", "y.py", "y.md"), ("--csv", "Z.IPYNB", "Z.csv")]
+    {
+        let o = phonglab(&["check", s(&cls), flag, s(&cls.join(name))]);
+        assert_eq!(o.status.code(), Some(2), "{name}: {}", stderr(&o));
+        let said = stderr(&o);
+        assert!(said.contains("inside the checked folder") && said.contains(suggested), "{said}");
+        assert!(!cls.join(name).exists(), "{name} not written");
+    }
+    // Through another path to the same folder too.
+    let o = phonglab(&["check", s(&cls), "--csv", &format!("{}/../cls/x.ipynb", s(&cls))]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    // Other names inside the folder are allowed, and never read as submissions.
+    let (marks, report) = (cls.join("marks.csv"), cls.join("report.md"));
+    for _ in 0..2 {
+        let o = phonglab(&["check", s(&cls), "--csv", s(&marks), "--report", s(&report)]);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        assert_eq!(listed(&marks), ["ana.ipynb", "rui.ipynb"], "exactly the real students");
+    }
+    assert!(cls.join("report.png").exists());
+    // Outside the folder, the name is the teacher's to choose.
+    let o = phonglab(&["check", s(&cls), "--csv", s(&root.join("marks.ipynb"))]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}
+
+#[test]
+#[cfg(unix)] // a file name with controls, and symbolic links
+fn the_refusals_are_said_in_portuguese_with_the_name_written_visibly() {
+    let root = Scratch::new("words");
+    let cls = class(&root, &["a.ipynb"]);
+    let link = cls.join("r\u{1b}]0;x\u{7}\u{202e}.md");
+    common::symlink("../elsewhere.md", &link).unwrap();
+    let theirs = root.join("notas\u{1b}[31m.csv");
+    std::fs::write(&theirs, "nome,nota\n").unwrap();
+    let phantom = cls.join("x.ipynb");
+    let cases: [(&str, &[&str], &[&str]); 6] = [
+        ("pt_PT.UTF-8", &["--report", s(&link)], &["é uma ligação simbólica", "nunca escrevem"]),
+        ("pt_BR.UTF-8", &["--report", s(&link)], &["é um link simbólico", "nunca escrevem"]),
+        ("pt_PT.UTF-8", &["--csv", s(&theirs)], &["já existe e não foi o phonglab que o escreveu"]),
+        ("pt_BR.UTF-8", &["--csv", s(&theirs)], &["já existe e não foi o phonglab que o escreveu"]),
+        ("pt_PT.UTF-8", &["--csv", s(&phantom)], &["dentro da pasta verificada", "lê-lo-ia", "x.csv"]),
+        ("pt_BR.UTF-8", &["--csv", s(&phantom)], &["dentro da pasta verificada", "o leria", "x.csv"]),
+    ];
+    for (lang, args, words) in cases {
+        let o = phonglab_in(lang, &[&["check", s(&cls)][..], args].concat());
+        assert_eq!(o.status.code(), Some(2), "{lang}: {}", stderr(&o));
+        let said = stderr(&o);
+        for w in words {
+            assert!(said.contains(w), "{lang}: {w:?} in {said}");
+        }
+        assert!(!said.contains(['\u{1b}', '\u{7}', '\u{202e}']), "{said:?}");
+    }
+    let said = stderr(&phonglab(&["check", s(&cls), "--report", s(&link)]));
+    assert!(said.contains("r\\u{1B}]0;x\\u{7}\\u{202E}.md is a link"), "{said}");
+    assert_eq!(std::fs::read_to_string(&theirs).unwrap(), "nome,nota\n");
+}
