@@ -211,5 +211,14 @@ mod tests {
             assert!(Kind::Report.is_own(format!("# {title}\n\nrest").as_bytes()), "{lang:?}");
         }
         assert!(!Kind::Report.is_own(b"# My notes\n") && !Kind::Report.is_own(b""));
+        // What check writes is what is known again, in each language.
+        for lang in phonglab_core::locale::Lang::ALL {
+            phonglab_core::locale::with_locale(phonglab_core::locale::Locale::of(lang), || {
+                let report = crate::cli::check_class::markdown(&[], &[], "r.png", None);
+                assert!(Kind::Report.is_own(report.as_bytes()), "{lang:?}: {report}");
+                assert!(Kind::Marks.is_own(crate::cli::check_class::marks_csv(&[]).as_bytes()));
+                assert!(!Kind::Marks.is_own(report.as_bytes()) && !Kind::Report.is_own(MARKS_HEADER.as_bytes()));
+            });
+        }
     }
 }
