@@ -208,3 +208,71 @@ fn a_refusal_says_the_value_once_and_names_what_went_wrong() {
         assert!(!said.contains("has no option") && !said.contains("não tem a opção"), "{lang}: {said}");
     }
 }
+
+/// A number out of its range is refused with the range in words, whatever is wrong with
+/// it: negative (`--seed -1` was "no option -1"), past the type (`--count` with twenty
+/// digits), or not whole (`--variants 1e20`), in every language.
+#[test]
+fn a_number_out_of_range_is_refused_with_its_range() {
+    let cases: [(&[&str], &str, &str); 4] = [
+        (&["--seed", "-1"], "--seed takes a whole number from 0 to 18 446 744 073 709 551 615, not \"-1\"", "--seed aceita um número inteiro de 0 a 18 446 744 073 709 551 615, não \"-1\""),
+        (&["--count", "99999999999999999999"], "--count takes a whole number from 1 to 1 000, not", "--count aceita um número inteiro de 1 a 1 000, não"),
+        (&["--count", "-3"], "--count takes a whole number from 1 to 1 000, not \"-3\"", "--count aceita um número inteiro de 1 a 1 000, não \"-3\""),
+        (&["--variants", "1e20", "--format", "gift"], "--variants takes a whole number from 1 to 100, not \"1e20\"", "--variants aceita um número inteiro de 1 a 100, não \"1e20\""),
+    ];
+    for (args, en, pt) in cases {
+        let line = [&["exercise"][..], args].concat();
+        let (code, said) = refused("en", &line);
+        assert_eq!(code, 2, "{args:?}: {said}");
+        assert!(said.contains(en), "{args:?}: {said}");
+        for lang in ["pt-PT", "pt-BR"] {
+            let (_, said) = refused(lang, &line);
+            assert!(said.contains(pt), "{lang} {args:?}: {said}");
+        }
+    }
+    // The same seed as a number in range still writes.
+    let dir = out_dir("seed-max");
+    let max = u64::MAX.to_string();
+    let out = phonglab(&["exercise", "--seed", &max, "--count", "1", "--out", dir.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+/// `--out` naming a file: the refusal says it is a file, not a folder (it said "create
+/// the folder: it already exists"), and the file is left as it was.
+#[test]
+fn an_out_that_is_a_file_is_called_a_file() {
+    let dir = out_dir("out-file");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("afile");
+    std::fs::write(&file, "mine").unwrap();
+    let words = [("en", "it is a file, not a folder"), ("pt-PT", "é um ficheiro, não uma pasta"), ("pt-BR", "é um arquivo, não uma pasta")];
+    for format in ["sheets", "gift", "moodle-xml"] {
+        for (lang, words) in words {
+            let (_, said) = refused(lang, &["exercise", "--format", format, "--out", file.to_str().unwrap()]);
+            assert!(said.contains(words), "{lang} {format}: {said}");
+            assert!(!said.contains("already exists") && !said.contains("já existe"), "{lang} {format}: {said}");
+        }
+    }
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "mine");
+}
+
+/// An argument that is not UTF-8 is refused in the catalogue's words (it was clap's
+/// English "invalid UTF-8 was detected"), with clap's exit code 2.
+#[test]
+#[cfg(unix)]
+fn an_argument_not_in_utf8_is_refused_in_the_language_asked_for() {
+    use std::os::unix::ffi::OsStrExt;
+    let bad = std::ffi::OsStr::from_bytes(b"a\xffb");
+    let words = [("en", "is not text in UTF-8"), ("pt-PT", "não é texto em UTF-8"), ("pt-BR", "não é texto em UTF-8")];
+    for (lang, words) in words {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_phonglab"))
+            .env("LC_ALL", "C.UTF-8")
+            .args(["--lang", lang, "exercise", "--rules"])
+            .arg(bad)
+            .output()
+            .unwrap();
+        let said = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{said}");
+        assert!(said.contains(words) && !said.contains("invalid UTF-8 was detected"), "{lang}: {said}");
+    }
+}
