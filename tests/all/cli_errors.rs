@@ -276,3 +276,62 @@ fn an_argument_not_in_utf8_is_refused_in_the_language_asked_for() {
         assert!(said.contains(words) && !said.contains("invalid UTF-8 was detected"), "{lang}: {said}");
     }
 }
+
+/// Issue 60: what `phonglab exercise` says of its draws counts right in every language:
+/// nothing when none was rejected ("0 draws rejected: they lacked…"), one in the singular
+/// (Fluent's plural selector), and one picture in the singular.
+#[test]
+fn the_summary_says_no_zero_and_counts_in_the_singular_and_plural() {
+    use phonglab::locale::{Lang, tr_in};
+    for lang in [Lang::En, Lang::PtPt, Lang::PtBr] {
+        let said = |redraws: usize| tr_in(lang, "exercises-written", &[("count", 3usize.into()), ("out", "s".into()), ("redraws", redraws.into())]);
+        let none = said(0);
+        assert!(!none.contains('(') && !none.contains('0'), "{lang:?}: {none}");
+        let (one, many) = (said(1), said(5));
+        for (text, words) in [(&one, ["1 draw rejected: it", "1 sorteio rejeitado", "1 sorteio rejeitado"]), (&many, ["5 draws rejected: they", "5 sorteios rejeitados", "5 sorteios rejeitados"])] {
+            let i = [Lang::En, Lang::PtPt, Lang::PtBr].iter().position(|l| *l == lang).unwrap();
+            assert!(text.contains(words[i]), "{lang:?}: {text}");
+        }
+        let one_picture = tr_in(lang, "wrong-written", &[("count", 1usize.into()), ("out", "s".into())]);
+        assert!(!one_picture.contains("pictures") && !one_picture.contains("imagens"), "{lang:?}: {one_picture}");
+    }
+    let out = phonglab(&["exercise", "--count", "1", "--level", "1", "--out", out_dir("summary").to_str().unwrap()]);
+    let said = String::from_utf8_lossy(&out.stdout);
+    assert!(!said.contains("0 draws"), "{said}");
+}
+
+/// Issue 60: the catalogues' wording as the reviews asked: "not one of: a, b"; pt-PT says
+/// você throughout (no "abre-o", "Arrasta", "as tuas"); pt-BR says gabarito, never chave,
+/// for an answer key; one term for two-sided lighting, "das duas faces"; the picture drawn
+/// right is "Desenhada corretamente".
+#[test]
+fn the_catalogues_keep_one_register_and_one_term() {
+    use phonglab::locale::{Lang, message_ids, tr_in};
+    let (_, said) = refused("en", &["exercise", "--effects", "foo"]);
+    assert!(said.contains("--effects: \"foo\" is not one of: positional, attenuation"), "{said}");
+    let (_, said) = refused("pt-PT", &["exercise", "--effects", "foo"]);
+    assert!(said.contains("--effects: \"foo\" não é um destes: positional"), "{said}");
+    let texts = |lang: Lang| -> Vec<(String, String)> {
+        let mut ids = message_ids(lang);
+        ids.extend(phonglab_core::locale::message_ids(lang));
+        ids.into_iter().map(|id| { let t = tr_in(lang, &id, &[]); (id, t) }).collect()
+    };
+    for (id, text) in texts(Lang::PtPt) {
+        for tu in ["abre-o", "Arrasta ", "as tuas", "quiseres", "Abre um", "carrega em", "larga um", "usa a roda"] {
+            assert!(!text.contains(tu), "pt-PT {id} says tu ({tu}): {text}");
+        }
+    }
+    for lang in [Lang::PtPt, Lang::PtBr] {
+        for (id, text) in texts(lang) {
+            assert!(!text.contains("dois lados") && !text.contains("Desenhada certa"), "{lang:?} {id}: {text}");
+        }
+        assert_eq!(tr_in(lang, "moodle-picture-right", &[]), "Desenhada corretamente");
+        assert_eq!(tr_in(lang, "wrong-drawn-right", &[]), "Desenhada corretamente");
+    }
+    for (id, text) in texts(Lang::PtBr) {
+        // "chave" is also a switch (the demo's corrections) and a JSON key.
+        if !id.starts_with("help-demo-") && id != "why-demo-differs-intro" && id != "cli-lang" {
+            assert!(!text.contains("chave"), "pt-BR {id} says chave, not gabarito: {text}");
+        }
+    }
+}
