@@ -114,7 +114,9 @@ impl std::error::Error for NotInRange {}
 /// whole (`--variants 1e20`). Give the argument `allow_negative_numbers` too, so that
 /// `--seed -1` is this value refused, not an unknown option `-1`.
 pub fn whole(low: u64, high: u64) -> impl Fn(&str) -> Result<u64, NotInRange> + Clone + Send + Sync + 'static {
-    move |text: &str| text.trim().parse::<u64>().ok().filter(|n| (low..=high).contains(n)).ok_or(NotInRange { low, high })
+    move |text: &str| {
+        text.trim().parse::<u64>().ok().filter(|n| (low..=high).contains(n)).ok_or(NotInRange { low, high })
+    }
 }
 
 /// The bounds of clap's range refusal, "0 is not in 1..=100" (or `1..101`, an upper bound

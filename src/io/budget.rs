@@ -122,11 +122,7 @@ pub fn suggested_budget(needed: u64) -> String {
     const G: u64 = 1 << 30;
     const QUARTER: u64 = 256 << 20;
     let quarters = needed.div_ceil(QUARTER).max(1);
-    if quarters * QUARTER < G {
-        format!("{}M", quarters * 256)
-    } else {
-        format!("{}G", needed.div_ceil(G))
-    }
+    if quarters * QUARTER < G { format!("{}M", quarters * 256) } else { format!("{}G", needed.div_ceil(G)) }
 }
 
 /// Reads a size: a number of bytes with an optional unit, K, M, G or T (powers of 1024;

@@ -99,8 +99,8 @@ fn claps_common_errors_are_said_in_the_language_asked_for() {
         (&["exercise", "--seed"], "--seed needs a value", "--seed precisa de um valor"),
         (
             &["exercise", "--seed", "x"],
-            "--seed takes a whole number, not \"x\"",
-            "--seed aceita um número inteiro, não \"x\"",
+            "--seed takes a whole number from 0 to 18 446 744 073 709 551 615, not \"x\"",
+            "--seed aceita um número inteiro de 0 a 18 446 744 073 709 551 615, não \"x\"",
         ),
         (
             &["exercise", "--variant", "2"],
@@ -215,10 +215,26 @@ fn a_refusal_says_the_value_once_and_names_what_went_wrong() {
 #[test]
 fn a_number_out_of_range_is_refused_with_its_range() {
     let cases: [(&[&str], &str, &str); 4] = [
-        (&["--seed", "-1"], "--seed takes a whole number from 0 to 18 446 744 073 709 551 615, not \"-1\"", "--seed aceita um número inteiro de 0 a 18 446 744 073 709 551 615, não \"-1\""),
-        (&["--count", "99999999999999999999"], "--count takes a whole number from 1 to 1 000, not", "--count aceita um número inteiro de 1 a 1 000, não"),
-        (&["--count", "-3"], "--count takes a whole number from 1 to 1 000, not \"-3\"", "--count aceita um número inteiro de 1 a 1 000, não \"-3\""),
-        (&["--variants", "1e20", "--format", "gift"], "--variants takes a whole number from 1 to 100, not \"1e20\"", "--variants aceita um número inteiro de 1 a 100, não \"1e20\""),
+        (
+            &["--seed", "-1"],
+            "--seed takes a whole number from 0 to 18 446 744 073 709 551 615, not \"-1\"",
+            "--seed aceita um número inteiro de 0 a 18 446 744 073 709 551 615, não \"-1\"",
+        ),
+        (
+            &["--count", "99999999999999999999"],
+            "--count takes a whole number from 1 to 1 000, not",
+            "--count aceita um número inteiro de 1 a 1 000, não",
+        ),
+        (
+            &["--count", "-3"],
+            "--count takes a whole number from 1 to 1 000, not \"-3\"",
+            "--count aceita um número inteiro de 1 a 1 000, não \"-3\"",
+        ),
+        (
+            &["--variants", "1e20", "--format", "gift"],
+            "--variants takes a whole number from 1 to 100, not \"1e20\"",
+            "--variants aceita um número inteiro de 1 a 100, não \"1e20\"",
+        ),
     ];
     for (args, en, pt) in cases {
         let line = [&["exercise"][..], args].concat();
@@ -245,7 +261,11 @@ fn an_out_that_is_a_file_is_called_a_file() {
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("afile");
     std::fs::write(&file, "mine").unwrap();
-    let words = [("en", "it is a file, not a folder"), ("pt-PT", "é um ficheiro, não uma pasta"), ("pt-BR", "é um arquivo, não uma pasta")];
+    let words = [
+        ("en", "it is a file, not a folder"),
+        ("pt-PT", "é um ficheiro, não uma pasta"),
+        ("pt-BR", "é um arquivo, não uma pasta"),
+    ];
     for format in ["sheets", "gift", "moodle-xml"] {
         for (lang, words) in words {
             let (_, said) = refused(lang, &["exercise", "--format", format, "--out", file.to_str().unwrap()]);
@@ -284,11 +304,20 @@ fn an_argument_not_in_utf8_is_refused_in_the_language_asked_for() {
 fn the_summary_says_no_zero_and_counts_in_the_singular_and_plural() {
     use phonglab::locale::{Lang, tr_in};
     for lang in [Lang::En, Lang::PtPt, Lang::PtBr] {
-        let said = |redraws: usize| tr_in(lang, "exercises-written", &[("count", 3usize.into()), ("out", "s".into()), ("redraws", redraws.into())]);
+        let said = |redraws: usize| {
+            tr_in(
+                lang,
+                "exercises-written",
+                &[("count", 3usize.into()), ("out", "s".into()), ("redraws", redraws.into())],
+            )
+        };
         let none = said(0);
         assert!(!none.contains('(') && !none.contains('0'), "{lang:?}: {none}");
         let (one, many) = (said(1), said(5));
-        for (text, words) in [(&one, ["1 draw rejected: it", "1 sorteio rejeitado", "1 sorteio rejeitado"]), (&many, ["5 draws rejected: they", "5 sorteios rejeitados", "5 sorteios rejeitados"])] {
+        for (text, words) in [
+            (&one, ["1 draw rejected: it", "1 sorteio rejeitado", "1 sorteio rejeitado"]),
+            (&many, ["5 draws rejected: they", "5 sorteios rejeitados", "5 sorteios rejeitados"]),
+        ] {
             let i = [Lang::En, Lang::PtPt, Lang::PtBr].iter().position(|l| *l == lang).unwrap();
             assert!(text.contains(words[i]), "{lang:?}: {text}");
         }
@@ -314,7 +343,12 @@ fn the_catalogues_keep_one_register_and_one_term() {
     let texts = |lang: Lang| -> Vec<(String, String)> {
         let mut ids = message_ids(lang);
         ids.extend(phonglab_core::locale::message_ids(lang));
-        ids.into_iter().map(|id| { let t = tr_in(lang, &id, &[]); (id, t) }).collect()
+        ids.into_iter()
+            .map(|id| {
+                let t = tr_in(lang, &id, &[]);
+                (id, t)
+            })
+            .collect()
     };
     for (id, text) in texts(Lang::PtPt) {
         for tu in ["abre-o", "Arrasta ", "as tuas", "quiseres", "Abre um", "carrega em", "larga um", "usa a roda"] {

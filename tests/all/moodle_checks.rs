@@ -135,7 +135,8 @@ fn the_refusal_suggests_a_budget_the_run_fits() {
     let args = ["exercise", "--format", "gift", "--level", "4", "--count", "1000", "--variants", "100"];
     let e = refused(phonglab(&[&args[..], &["--memory-budget", "1G", "--out", dir.to_str().unwrap()]].concat()));
     let needed = sizes_said(&e)[1];
-    let suggested = e.split("needs --memory-budget ").nth(1).and_then(|t| t.split(' ').next()).unwrap_or_else(|| panic!("{e}"));
+    let suggested =
+        e.split("needs --memory-budget ").nth(1).and_then(|t| t.split(' ').next()).unwrap_or_else(|| panic!("{e}"));
     let gib: u64 = suggested.strip_suffix('G').and_then(|g| g.parse().ok()).unwrap_or_else(|| panic!("{e}"));
     assert!(gib << 30 >= needed && (gib - 1) << 30 < needed, "{suggested} for {needed} bytes: {e}");
 }
@@ -146,9 +147,11 @@ fn the_refusal_suggests_a_budget_the_run_fits() {
 #[test]
 fn the_estimated_file_size_is_at_most_30_percent_above_the_file() {
     let dir = out_dir("estimate");
-    for (format, level, count, variants, file) in
-        [("moodle-xml", "4", "10", "10", "questions.xml"), ("gift", "2", "4", "12", "questions.gift.txt"), ("gift", "4", "3", "16", "questions.gift.txt")]
-    {
+    for (format, level, count, variants, file) in [
+        ("moodle-xml", "4", "10", "10", "questions.xml"),
+        ("gift", "2", "4", "12", "questions.gift.txt"),
+        ("gift", "4", "3", "16", "questions.gift.txt"),
+    ] {
         let args = ["exercise", "--format", format, "--level", level, "--count", count, "--variants", variants];
         let e = refused(phonglab(&[&args[..], &["--memory-budget", "1", "--out", dir.to_str().unwrap()]].concat()));
         let said = sizes_said(&e)[0];
