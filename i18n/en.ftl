@@ -599,7 +599,10 @@ compare-step-1 = 1. Pin the current scene as A (the button above).
 compare-step-2 = 2. Change anything: the shading, f32 or f64, the material, a light.
 compare-step-3 = 3. A and B show side by side, with the steps that differ first.
 compare-a-fails = A cannot be evaluated: { $error }
-compare-differing = { $differing } of { $all } steps differ: they come first, highlighted.
+compare-differing = { $differing ->
+    [one] 1 of { $all } steps differs: it comes first, highlighted.
+   *[other] { $differing } of { $all } steps differ: they come first, highlighted.
+}
 compare-none-differ = Nothing differs: A and B give the same value at each of the { $all } steps.
 copy = Copy
 copy-program-hover = Copy the program to the clipboard

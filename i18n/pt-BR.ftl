@@ -599,7 +599,10 @@ compare-step-1 = 1. Fixe a cena atual como A (o botão acima).
 compare-step-2 = 2. Mude qualquer coisa: o sombreamento, f32 ou f64, o material, uma luz.
 compare-step-3 = 3. A e B aparecem lado a lado, com os passos que diferem primeiro.
 compare-a-fails = A não pode ser calculada: { $error }
-compare-differing = { $differing } de { $all } passos diferem: vêm primeiro, destacados.
+compare-differing = { $differing ->
+    [one] 1 de { $all } passos difere: vem primeiro, destacado.
+   *[other] { $differing } de { $all } passos diferem: vêm primeiro, destacados.
+}
 compare-none-differ = Nada difere: A e B dão o mesmo valor em cada um dos { $all } passos.
 copy = Copiar
 copy-program-hover = Copiar o programa para a área de transferência

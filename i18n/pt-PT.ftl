@@ -367,7 +367,7 @@ quiz-clear-hover = Recomeçar este teste sem respostas
 quiz-show-answers = Mostrar as respostas (professor)
 quiz-show-answers-hover = A cor do vértice, os ângulos do gráfico e a chave de cada passo
 quiz-nothing-open = Abra um exercício (o phonglab exercise escreve-os) ou qualquer cena e carregue em "Testar esta cena", ou carregue em Novo exercício.
-quiz-instructions = { $scene }: escreve o valor de cada passo e prime Enter. Certo: a menos de { $percent } % do valor (ou { $absolute } perto de 0). Ponto ou vírgula; um vetor como 0,5; 0,3; 0,1.
+quiz-instructions = { $scene }: escreva o valor de cada passo e prima Enter. Certo: a menos de { $percent } % do valor (ou { $absolute } perto de 0). Ponto ou vírgula; um vetor como 0,5; 0,3; 0,1.
 quiz-score = Pontuação: { $right } de { $all } ({ $answered ->
     [one] 1 respondido
    *[other] { $answered } respondidos
@@ -599,7 +599,10 @@ compare-step-1 = 1. Fixa a cena atual como A (o botão acima).
 compare-step-2 = 2. Muda qualquer coisa: o sombreamento, f32 ou f64, o material, uma luz.
 compare-step-3 = 3. A e B aparecem lado a lado, com os passos que diferem primeiro.
 compare-a-fails = A não pode ser calculada: { $error }
-compare-differing = { $differing } de { $all } passos diferem: vêm primeiro, destacados.
+compare-differing = { $differing ->
+    [one] 1 de { $all } passos difere: vem primeiro, destacado.
+   *[other] { $differing } de { $all } passos diferem: vêm primeiro, destacados.
+}
 compare-none-differ = Nada difere: A e B dão o mesmo valor em cada um dos { $all } passos.
 copy = Copiar
 copy-program-hover = Copiar o programa para a área de transferência

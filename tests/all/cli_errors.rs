@@ -321,6 +321,8 @@ fn the_summary_says_no_zero_and_counts_in_the_singular_and_plural() {
             let i = [Lang::En, Lang::PtPt, Lang::PtBr].iter().position(|l| *l == lang).unwrap();
             assert!(text.contains(words[i]), "{lang:?}: {text}");
         }
+        let one_step = tr_in(lang, "compare-differing", &[("differing", 1usize.into()), ("all", 17usize.into())]);
+        assert!(!one_step.contains(" differ:") && !one_step.contains("diferem"), "{lang:?}: {one_step}");
         let one_picture = tr_in(lang, "wrong-written", &[("count", 1usize.into()), ("out", "s".into())]);
         assert!(!one_picture.contains("pictures") && !one_picture.contains("imagens"), "{lang:?}: {one_picture}");
     }
@@ -351,7 +353,17 @@ fn the_catalogues_keep_one_register_and_one_term() {
             .collect()
     };
     for (id, text) in texts(Lang::PtPt) {
-        for tu in ["abre-o", "Arrasta ", "as tuas", "quiseres", "Abre um", "carrega em", "larga um", "usa a roda"] {
+        for tu in [
+            "abre-o",
+            "Arrasta ",
+            "as tuas",
+            "quiseres",
+            "Abre um",
+            "carrega em",
+            "larga um",
+            "usa a roda",
+            "prime Enter",
+        ] {
             assert!(!text.contains(tu), "pt-PT {id} says tu ({tu}): {text}");
         }
     }

@@ -571,6 +571,16 @@ fn the_tolerance_sentence_follows_the_decimal_mark() {
         let text = std::fs::read_to_string(dir.join("questions.xml")).unwrap();
         assert!(text.contains(&format!("a menos de {percent} do valor (ou {near_zero} de 0)")), "{decimal}: {text}");
     }
+    // Level 5's explanations too: "escala por 0,5" with --decimal point.
+    use phonglab_core::locale::{DecimalMark, Lang, Locale, with_locale};
+    use phonglab_core::misconception::Misconception;
+    for (decimal, half, quarter) in [(DecimalMark::Point, "0.5", "0.25"), (DecimalMark::Comma, "0,5", "0,25")] {
+        let (a, b) = with_locale(Locale { lang: Lang::PtPt, decimal }, || {
+            (Misconception::NormalNotNormalised.why(), Misconception::AttenuationInObjectSpace.why())
+        });
+        assert!(a.contains(&format!("escala por {half} ")), "{a}");
+        assert!(b.contains(&format!("escala por {quarter},")), "{b}");
+    }
 }
 
 #[test]

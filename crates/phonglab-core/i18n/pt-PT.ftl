@@ -9,7 +9,7 @@ space-eye = Olho
 wrong-cause-normals-by-m = Normais transformadas por M em vez da sua inversa transposta
 wrong-why-normals-by-m = Com uma escala diferente em cada eixo, M move a superfície de uma maneira e as normais de outra: M n deixa de ser perpendicular à superfície, e (M^-1)^T n continua a sê-lo.
 wrong-cause-normal-not-normalised = A normal não normalizada (GL_NORMALIZE desligado com uma modelview que escala)
-wrong-why-normal-not-normalised = Uma modelview que escala por 0,5 torna a normal transformada de comprimento 2, e nada a traz de volta a 1: n · L duplica, e com ele o termo difuso; perto do brilho, n · H passa de 1, e a potência s_rm faz explodir o termo especular numa mancha branca.
+wrong-why-normal-not-normalised = Uma modelview que escala por { $scale } torna a normal transformada de comprimento 2, e nada a traz de volta a 1: n · L duplica, e com ele o termo difuso; perto do brilho, n · H passa de 1, e a potência s_rm faz explodir o termo especular numa mancha branca.
 wrong-cause-reflection-for-halfway = O vetor refletido (R · V) usado onde cabe o vetor médio (n · H)
 wrong-why-reflection-for-halfway = O ângulo entre R e V é cerca do dobro do ângulo entre n e H, por isso R · V cai mais depressa: com o mesmo expoente o brilho é menor.
 wrong-cause-gouraud-misses-highlight = Sombreamento de Gouraud: iluminado só nos vértices, e um brilho entre eles perde-se
@@ -17,7 +17,7 @@ wrong-why-gouraud-misses-highlight = O brilho cai entre os vértices da esfera g
 wrong-cause-specular-facing-away = Luz especular em faces voltadas para o lado oposto à luz (sem f_i)
 wrong-why-specular-facing-away = O OpenGL multiplica o termo especular por f_i, que só vale 1 onde n · L > 0. Sem ele, n · H ainda pode ser positivo no lado escuro: brilha onde a luz não chega.
 wrong-cause-attenuation-object-space = Atenuação calculada com a distância no espaço do objeto
-wrong-why-attenuation-object-space = O modelo escala por 0,25, por isso as distâncias no espaço do objeto são 4 vezes as do espaço do olho: at = k0 + k1 d + k2 d² cresce, cada termo é dividido por mais, e a luz apaga-se cedo demais. O OpenGL mede d no espaço do olho.
+wrong-why-attenuation-object-space = O modelo escala por { $scale }, por isso as distâncias no espaço do objeto são 4 vezes as do espaço do olho: at = k0 + k1 d + k2 d² cresce, cada termo é dividido por mais, e a luz apaga-se cedo demais. O OpenGL mede d no espaço do olho.
 wrong-cause-light-before-view = A posição da luz dada antes da transformação de vista
 wrong-why-light-before-view = O glLightfv(GL_POSITION) multiplica a posição pela modelview corrente nesse momento. Dada antes do gluLookAt, é tomada em coordenadas do olho: a luz anda com a câmara em vez de ficar no mundo.
 wrong-probe-line = bytes { $rgba }, n · L = { $ndotl }, { $cosine } = { $ndoth }, 1/at = { $att }, difusa { $diffuse }, especular { $specular }

@@ -374,7 +374,7 @@ pub fn misconception_question(kind: Misconception, name: &str, right_png: Vec<u8
     let choices = Misconception::ALL
         .iter()
         .map(|&m| Choice {
-            text: choice_text(m),
+            text: m.choice(),
             right: m == kind,
             feedback: if m == kind { m.why() } else { crate::t!("moodle-choice-not", why = m.why()) },
         })
@@ -387,16 +387,6 @@ pub fn misconception_question(kind: Misconception, name: &str, right_png: Vec<u8
             choices,
         },
         general_feedback_html: format!("<p>{}</p>", esc(&picture_feedback(kind))),
-    }
-}
-
-/// A choice of a picture question: the cause and its mistaken formula; Gouraud's only the
-/// cause, whose "formula" is words that say the cause again ("Gouraud shading: lit only at
-/// the vertices…: lighting per vertex… (Gouraud)").
-fn choice_text(m: Misconception) -> String {
-    match m {
-        Misconception::GouraudMissesHighlight => m.cause(),
-        _ => format!("{}: {}", m.cause(), dot(&m.formulas().1)),
     }
 }
 
