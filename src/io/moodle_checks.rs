@@ -34,16 +34,18 @@ pub fn check_category(name: &str) -> Result<()> {
 
 /// How many exercises the estimate writes to measure one: the bank's first ones (fewer
 /// where the bank has fewer), which the whole bank starts with.
-const SAMPLE: usize = 32;
+pub const SAMPLE: usize = 32;
 
 /// What phonglab holds while it writes, besides the file's text: the exercises and the
 /// bank's questions, 2.2 to 2.5 times the bank written as Moodle XML (measured with
 /// `/usr/bin/time -v` over levels 1 to 4, both formats, 100 to 10 000 exercises:
 /// docs/performance.md, "A file for Moodle"), counted as 2.6 times the sample's mean, and
 /// 5 % more for a sample's mean below the bank's (at level 4 an exercise's size varies by
-/// 15 %, so the mean of 32 by under 3 %); and the process's fixed part (40 MB measured).
-const HELD_PER_XML_BYTE: f64 = 2.6 * 1.05;
-const FIXED: u64 = 48 << 20;
+/// 15 %, so the mean of 32 by under 3 %).
+pub const HELD_PER_XML_BYTE: f64 = 2.6 * 1.05;
+
+/// The process's fixed part: the code, the catalogues (40 MB measured, a debug build).
+pub const FIXED: u64 = 48 << 20;
 
 /// The estimated size of the file `b` asks for in `format`, and the memory writing it
 /// takes, from a sample of its exercises each written alone ([`SAMPLE`]). The file: the
