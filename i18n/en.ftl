@@ -86,7 +86,10 @@ err-moodle-only = --variants and --category are for a file for Moodle (--format 
 err-level-5-variants = --variants is for levels 1 to 4: level 5 has one picture per mistake, seven in all, none drawn twice; use --count (1 to 7).
 level-5-count = Level 5 has { $all } mistakes, one question each: { $all } questions, not { $count }.
 
-wrong-written = { $count } pictures with one mistake each, with their keys, in { $out }
+wrong-written = { $count ->
+    [one] 1 picture with one mistake, with its key,
+   *[other] { $count } pictures with one mistake each, with their keys,
+} in { $out }
 wrong-quiz-hover = A sphere drawn right and drawn with one mistake: pick the mistake
 wrong-check = Check
 wrong-right-answer = Right.
@@ -524,7 +527,7 @@ export-written = written: { $path }
 bench-mesh-written = mesh written: { $path } ({ $triangles } triangles, { $vertices } vertices)
 bench-coarse-made = { $object }: the coarse copy has { $triangles } of { $all } triangles, made in { $ms } ms
 import-written = scene written: { $path } ({ $lights })
-budget-over = { $what } needs about { $needed }, more than the memory budget of { $budget } ({ $from }); --memory-budget SIZE raises it (e.g. --memory-budget 16G)
+budget-over = { $what } needs about { $needed }, more than the memory budget of { $budget } ({ $from }); --memory-budget SIZE raises it: this run needs --memory-budget { $suggest } or more
 budget-from-option = as --memory-budget asks
 budget-from-system = half of the memory available
 budget-from-limit = half of the address space left under this process's limit, ulimit -v
@@ -596,7 +599,10 @@ compare-step-1 = 1. Pin the current scene as A (the button above).
 compare-step-2 = 2. Change anything: the shading, f32 or f64, the material, a light.
 compare-step-3 = 3. A and B show side by side, with the steps that differ first.
 compare-a-fails = A cannot be evaluated: { $error }
-compare-differing = { $differing } of { $all } steps differ: they come first, highlighted.
+compare-differing = { $differing ->
+    [one] 1 of { $all } steps differs: it comes first, highlighted.
+   *[other] { $differing } of { $all } steps differ: they come first, highlighted.
+}
 compare-none-differ = Nothing differs: A and B give the same value at each of the { $all } steps.
 copy = Copy
 copy-program-hover = Copy the program to the clipboard
@@ -645,8 +651,12 @@ pdf-blank-page = This page is left blank on purpose.
 
 exercises-written =
     { $count ->
-    [one] 1 exercise in { $out } ({ $redraws } draws rejected: they lacked an asked effect or hit an edge case)
-    *[other] { $count } exercises in { $out } ({ $redraws } draws rejected: they lacked an asked effect or hit an edge case)
+        [one] 1 exercise
+       *[other] { $count } exercises
+    } in { $out }{ $redraws ->
+        [0] {""}
+        [one] {" "}(1 draw rejected: it lacked an asked effect or hit an edge case)
+       *[other] {" "}({ $redraws } draws rejected: they lacked an asked effect or hit an edge case)
     }
 
 ## cli-out
@@ -709,7 +719,7 @@ err-no-such-light = --light { $light }: { $count ->
 }
 err-study-stopped = the study stopped
 err-rules = --rules { $value }: try worksheet or opengl
-err-effects = --effects: { $value } is not one of { $names }
+err-effects = --effects: { $value } is not one of: { $names }
 err-level = --level is 1 to 4
 err-target = --target { $value }: try glsl or wgsl
 err-shading = --shading { $value }: try gouraud or phong
@@ -1050,6 +1060,7 @@ arg-error-missing-value = { $arg } needs a value.
 arg-error-out-of-range = { $arg } takes a whole number from { $low } to { $high }, not { $value }.
 arg-error-not-whole = { $arg } takes a whole number, not { $value }.
 arg-error-not-number = { $arg } takes a number, not { $value }.
+arg-error-invalid-utf8 = One of the arguments is not text in UTF-8: only a file's or a folder's name may hold other bytes. Write the others in UTF-8.
 arg-error-refused-value = { $arg } does not take { $value }: { $reason }
 arg-error-unknown = phonglab has no option { $arg }.
 arg-error-did-you-mean = Did you mean { $suggestion }?

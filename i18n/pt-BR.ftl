@@ -57,9 +57,9 @@ director-naive-normal = Pontilhada, em azul-claro: M n, a normal transformada co
 director-rules-naive = As regras desta cena (as da lista) iluminam o vértice com M n; as do OpenGL usam (M^-1)^T n.
 director-ring = Luz { $n }: 1/at, o fator de atenuação, cai para { $percent } % à distância { $distance } (um anel).
 wrong-title = O que está errado nesta imagem?
-wrong-intro = Cada folha mostra uma esfera desenhada certa e desenhada com um erro. Escolha o erro; o gabarito o explica com os números da sonda de pixel.
+wrong-intro = Cada folha mostra uma esfera desenhada corretamente e desenhada com um erro. Escolha o erro; o gabarito o explica com os números da sonda de pixel.
 wrong-sheet-title = O que está errado nesta imagem? ({ $number })
-wrong-drawn-right = Desenhada certa
+wrong-drawn-right = Desenhada corretamente
 wrong-drawn-wrong = Desenhada com um erro
 wrong-question = Que erro produz a imagem da direita? Marque-o e diga o que na imagem o mostra.
 
@@ -86,8 +86,11 @@ err-moodle-only = --variants e --category servem para um arquivo para o Moodle (
 err-level-5-variants = --variants é para os níveis 1 a 4: o nível 5 tem uma imagem por erro, sete ao todo, nenhuma desenhada duas vezes; use --count (1 a 7).
 level-5-count = O nível 5 tem { $all } erros, uma questão cada: { $all } questões, não { $count }.
 
-wrong-written = { $count } imagens com um erro cada, com os gabaritos, em { $out }
-wrong-quiz-hover = Uma esfera desenhada certa e desenhada com um erro: escolha o erro
+wrong-written = { $count ->
+    [one] 1 imagem com um erro, com o seu gabarito,
+   *[other] { $count } imagens com um erro cada, com os gabaritos,
+} em { $out }
+wrong-quiz-hover = Uma esfera desenhada corretamente e desenhada com um erro: escolha o erro
 wrong-check = Verificar
 wrong-right-answer = Certo.
 wrong-wrong-answer = Não é esse. O gabarito:
@@ -358,11 +361,11 @@ quiz-this-scene-hover = Recomeçar com a cena mostrada, todos os valores escondi
 quiz-new-exercise = Novo exercício
 quiz-new-exercise-hover = Uma cena nova deste nível, filtrada como o phonglab exercise filtra
 quiz-reveal-all = Mostrar todas as respostas
-quiz-reveal-all-hover = Mostrar o valor da chave em cada passo: nenhum conta então como certo
+quiz-reveal-all-hover = Mostrar o valor do gabarito em cada passo: nenhum conta então como certo
 quiz-clear = Limpar respostas
 quiz-clear-hover = Recomeçar este teste sem respostas
 quiz-show-answers = Mostrar as respostas (professor)
-quiz-show-answers-hover = A cor do vértice, os ângulos do gráfico e a chave de cada passo
+quiz-show-answers-hover = A cor do vértice, os ângulos do gráfico e o gabarito de cada passo
 quiz-nothing-open = Abra um exercício (o phonglab exercise os escreve) ou qualquer cena e clique em "Testar esta cena", ou clique em Novo exercício.
 quiz-instructions = { $scene }: digite o valor de cada passo e pressione Enter. Certo: a menos de { $percent } % do valor (ou { $absolute } perto de 0). Ponto ou vírgula; um vetor como 0,5; 0,3; 0,1.
 quiz-score = Pontuação: { $right } de { $all } ({ $answered ->
@@ -375,9 +378,9 @@ quiz-score = Pontuação: { $right } de { $all } ({ $answered ->
 })
 quiz-your-value = o seu valor
 quiz-reveal = Mostrar a resposta
-quiz-reveal-hover = Mostrar o valor da chave neste passo: ele deixa então de contar como certo
+quiz-reveal-hover = Mostrar o valor do gabarito neste passo: ele deixa então de contar como certo
 quiz-not-numbers = não se lê como números: { $error }
-quiz-key = chave: { $name } = { $value }
+quiz-key = gabarito: { $name } = { $value }
 
 ## calculation
 
@@ -524,7 +527,7 @@ export-written = escrito: { $path }
 bench-mesh-written = malha gravada: { $path } ({ $triangles } triângulos, { $vertices } vértices)
 bench-coarse-made = { $object }: a cópia grosseira tem { $triangles } dos { $all } triângulos, feita em { $ms } ms
 import-written = cena escrita: { $path } ({ $lights })
-budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçamento de memória de { $budget } ({ $from }); --memory-budget TAMANHO o aumenta (por exemplo --memory-budget 16G)
+budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçamento de memória de { $budget } ({ $from }); --memory-budget TAMANHO o aumenta: esta execução precisa de --memory-budget { $suggest } ou mais
 budget-from-option = como pede --memory-budget
 budget-from-system = metade da memória disponível
 budget-from-limit = metade do espaço de endereçamento que resta abaixo do limite deste processo, ulimit -v
@@ -596,7 +599,10 @@ compare-step-1 = 1. Fixe a cena atual como A (o botão acima).
 compare-step-2 = 2. Mude qualquer coisa: o sombreamento, f32 ou f64, o material, uma luz.
 compare-step-3 = 3. A e B aparecem lado a lado, com os passos que diferem primeiro.
 compare-a-fails = A não pode ser calculada: { $error }
-compare-differing = { $differing } de { $all } passos diferem: vêm primeiro, destacados.
+compare-differing = { $differing ->
+    [one] 1 de { $all } passos difere: vem primeiro, destacado.
+   *[other] { $differing } de { $all } passos diferem: vêm primeiro, destacados.
+}
 compare-none-differ = Nada difere: A e B dão o mesmo valor em cada um dos { $all } passos.
 copy = Copiar
 copy-program-hover = Copiar o programa para a área de transferência
@@ -645,8 +651,12 @@ pdf-blank-page = Esta página foi deixada em branco intencionalmente.
 
 exercises-written =
     { $count ->
-    [one] 1 exercício em { $out } ({ $redraws } sorteios rejeitados: faltava um efeito pedido ou caíam em um caso-limite)
-    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios rejeitados: faltava um efeito pedido ou caíam em um caso-limite)
+        [one] 1 exercício
+       *[other] { $count } exercícios
+    } em { $out }{ $redraws ->
+        [0] {""}
+        [one] {" "}(1 sorteio rejeitado: faltava um efeito pedido ou caía em um caso-limite)
+       *[other] {" "}({ $redraws } sorteios rejeitados: faltava um efeito pedido ou caíam em um caso-limite)
     }
 
 ## cli-out
@@ -709,7 +719,7 @@ err-no-such-light = --light { $light }: { $count ->
 }
 err-study-stopped = o estudo parou
 err-rules = --rules { $value }: experimente worksheet ou opengl
-err-effects = --effects: { $value } não é nenhum de { $names }
+err-effects = --effects: { $value } não é um destes: { $names }
 err-level = --level vai de 1 a 4
 err-target = --target { $value }: experimente glsl ou wgsl
 err-shading = --shading { $value }: experimente gouraud ou phong
@@ -774,7 +784,7 @@ cli-memory-budget = A memória que um comando pode ocupar com o que lhe é pedid
 cli-eval = Calcular casos glref (JSON) e imprimir as cores iluminadas em JSON
 cli-explain = Imprimir o cálculo da cor de um vértice, passo a passo, pela ordem da lista
 cli-render = Desenhar a vista sombreada (esfera, bule ou cilindro) num PNG
-cli-exercise = Escrever listas de exercícios ao estilo da lista, com arquivos de cena e chaves de respostas
+cli-exercise = Escrever listas de exercícios ao estilo da lista, com arquivos de cena e gabaritos
 cli-shader = Imprimir o shader (GLSL 3.30 ou WGSL) que desenha a vista sombreada de uma cena: só as etapas de que precisa
 cli-case = Escrever arquivos de cena como casos glref (JSON), para compará-los com um OpenGL real
 cli-cost = O custo da exatidão: cada sombreamento e tesselação, f32 contra f64 e as aproximações habituais, cronometrados e comparados com uma referência f64 por pixel; escreve cost.csv e cost.png
@@ -805,7 +815,7 @@ cli-arg-explain-scene = Um arquivo de cena (TOML), como o aplicativo o salva
 cli-arg-explain-worksheet = A cena da lista com a modelview N (1-5). Sem cena indicada, a 5
 cli-arg-explain-preset = Em vez disso, uma cena pronta: "phong-demo"
 cli-arg-explain-precision = A precisão do motor de cálculo
-cli-arg-explain-back = Explicar a face de trás (iluminação de duas faces)
+cli-arg-explain-back = Explicar a face de trás (iluminação das duas faces)
 cli-arg-explain-markdown = Imprimir uma tabela Markdown em vez de texto
 cli-arg-explain-digits = Algarismos significativos
 cli-arg-render-object = O objeto (por padrão, o da cena)
@@ -1050,6 +1060,7 @@ arg-error-missing-value = { $arg } precisa de um valor.
 arg-error-out-of-range = { $arg } aceita um número inteiro de { $low } a { $high }, não { $value }.
 arg-error-not-whole = { $arg } aceita um número inteiro, não { $value }.
 arg-error-not-number = { $arg } aceita um número, não { $value }.
+arg-error-invalid-utf8 = Um dos argumentos não é texto em UTF-8: só o nome de um arquivo ou de uma pasta pode ter outros bytes. Escreva os demais em UTF-8.
 arg-error-refused-value = { $arg } não aceita { $value }: { $reason }
 arg-error-unknown = O phonglab não tem a opção { $arg }.
 arg-error-did-you-mean = Você quis dizer { $suggestion }?

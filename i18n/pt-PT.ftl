@@ -45,7 +45,7 @@ arithmetic-heading = Aritmética
 file-menu-hover = O ficheiro da cena, exportar, desfazer e refazer
 redbook-teapots = Bules do Red Book
 compare = Comparar
-compare-hover = Fixa a cena como A; muda o que quiseres e vê A e B lado a lado
+compare-hover = Fixa a cena como A: mude o que quiser e veja A e B lado a lado
 director = Vista do realizador
 director-hover = A cena vista de fora: o olho e o seu tronco de visão, as luzes com os seus anéis e cones, o vértice do cálculo com N, L, V e H, no espaço do objeto, do mundo ou do olho
 director-space = Espaço
@@ -57,9 +57,9 @@ director-naive-normal = A ponteado, em azul-claro: M n, a normal transformada co
 director-rules-naive = As regras desta cena (as da ficha) iluminam o vértice com M n; as do OpenGL usam (M^-1)^T n.
 director-ring = Luz { $n }: 1/at, o fator de atenuação, cai para { $percent } % à distância { $distance } (um anel).
 wrong-title = O que está errado nesta imagem?
-wrong-intro = Cada ficha mostra uma esfera desenhada certa e desenhada com um erro. Escolha o erro; a chave explica-o com os números da sonda de píxel.
+wrong-intro = Cada ficha mostra uma esfera desenhada corretamente e desenhada com um erro. Escolha o erro; a chave explica-o com os números da sonda de píxel.
 wrong-sheet-title = O que está errado nesta imagem? ({ $number })
-wrong-drawn-right = Desenhada certa
+wrong-drawn-right = Desenhada corretamente
 wrong-drawn-wrong = Desenhada com um erro
 wrong-question = Que erro produz a imagem da direita? Assinale-o e diga o que na imagem o mostra.
 
@@ -86,8 +86,11 @@ err-moodle-only = --variants e --category servem para um ficheiro para o Moodle 
 err-level-5-variants = --variants é para os níveis 1 a 4: o nível 5 tem uma imagem por erro, sete ao todo, nenhuma desenhada duas vezes; use --count (1 a 7).
 level-5-count = O nível 5 tem { $all } erros, uma pergunta cada: { $all } perguntas, não { $count }.
 
-wrong-written = { $count } imagens com um erro cada, com as chaves, em { $out }
-wrong-quiz-hover = Uma esfera desenhada certa e desenhada com um erro: escolha o erro
+wrong-written = { $count ->
+    [one] 1 imagem com um erro, com a sua chave,
+   *[other] { $count } imagens com um erro cada, com as chaves,
+} em { $out }
+wrong-quiz-hover = Uma esfera desenhada corretamente e desenhada com um erro: escolha o erro
 wrong-check = Verificar
 wrong-right-answer = Certo.
 wrong-wrong-answer = Não é esse. A chave:
@@ -349,7 +352,7 @@ quiz-the-givens = os dados
 quiz-right = ✔ certo
 quiz-right-given = ✔ certo, dado o seu { $yours }
 quiz-close-key = ≈ perto: a { $percent } % da chave; dá { $digits } algarismos significativos
-quiz-close-yours = ≈ perto: a { $percent } % do que as tuas respostas anteriores dão; dá { $digits } algarismos significativos
+quiz-close-yours = ≈ perto: a { $percent } % do que as suas respostas anteriores dão; dê { $digits } algarismos significativos
 quiz-wrong = ✖ errado: { $formula }, com { $inputs }
 quiz-level = Nível
 quiz-levels = 1 direcional, 2 pontual com atenuação, 3 focos, 4 duas faces com várias luzes
@@ -363,8 +366,8 @@ quiz-clear = Limpar respostas
 quiz-clear-hover = Recomeçar este teste sem respostas
 quiz-show-answers = Mostrar as respostas (professor)
 quiz-show-answers-hover = A cor do vértice, os ângulos do gráfico e a chave de cada passo
-quiz-nothing-open = Abre um exercício (o phonglab exercise escreve-os) ou qualquer cena e carrega em "Testar esta cena", ou carrega em Novo exercício.
-quiz-instructions = { $scene }: escreve o valor de cada passo e prime Enter. Certo: a menos de { $percent } % do valor (ou { $absolute } perto de 0). Ponto ou vírgula; um vetor como 0,5; 0,3; 0,1.
+quiz-nothing-open = Abra um exercício (o phonglab exercise escreve-os) ou qualquer cena e carregue em "Testar esta cena", ou carregue em Novo exercício.
+quiz-instructions = { $scene }: escreva o valor de cada passo e prima Enter. Certo: a menos de { $percent } % do valor (ou { $absolute } perto de 0). Ponto ou vírgula; um vetor como 0,5; 0,3; 0,1.
 quiz-score = Pontuação: { $right } de { $all } ({ $answered ->
     [one] 1 respondido
    *[other] { $answered } respondidos
@@ -415,7 +418,7 @@ cylinder-stacks = Camadas do cilindro
 caps = Tampas
 mesh-triangles = { $count } triângulos: { $notes }
 key-hint = tecla { $key }
-mesh-tip = { $path } (abre outra em Opções da vista, ou larga um ficheiro .obj)
+mesh-tip = { $path } (abra outra em Opções da vista, ou largue um ficheiro .obj)
 close-mesh = Fechar a sua malha
 close-mesh-hover = Fechar a sua malha: a barra de cima deixa de a oferecer (fica no seu ficheiro; mudar de cena mantém-na até lá)
 auto-rotate = Rodar sozinho
@@ -433,7 +436,7 @@ show-mesh-hover = Sombrear este ficheiro OBJ na vista (Enter no campo)
 shaded-cannot-render = A vista sombreada não consegue desenhar esta cena
 corrected-cannot-render = A vista corrigida não consegue desenhar
 the-demos-own = {" "}(a da própria demo)
-picture-hover = Arrasta para rodar, usa a roda para ampliar, clica na superfície para que esse vértice seja o do cálculo
+picture-hover = Arraste para rodar, use a roda para ampliar, clique na superfície para que esse vértice seja o do cálculo
 corrected = Corrigida: { $fixes }
 corrected-short = Corrigida ({ $count } de { $all })
 picked-vertex = Vértice { $index } de { $object }: o cálculo passa a usá-lo, tal como a vista sombreada o ilumina.
@@ -524,7 +527,7 @@ export-written = escrito: { $path }
 bench-mesh-written = malha escrita: { $path } ({ $triangles } triângulos, { $vertices } vértices)
 bench-coarse-made = { $object }: a cópia grosseira tem { $triangles } dos { $all } triângulos, feita em { $ms } ms
 import-written = cena escrita: { $path } ({ $lights })
-budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçamento de memória de { $budget } ({ $from }); --memory-budget TAMANHO aumenta-o (por exemplo --memory-budget 16G)
+budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçamento de memória de { $budget } ({ $from }); --memory-budget TAMANHO aumenta-o: esta execução precisa de --memory-budget { $suggest } ou mais
 budget-from-option = como pede --memory-budget
 budget-from-system = metade da memória disponível
 budget-from-limit = metade do espaço de endereçamento que resta sob o limite deste processo, ulimit -v
@@ -567,7 +570,7 @@ imported = Aberto { $path } como cena (as regras da ficha, salvo se ele disser o
 
 ## plots
 
-plot-drag = Arrasta para rodar (guinada { $yaw }°, inclinação { $pitch }°)
+plot-drag = Arraste para rodar (guinada { $yaw }°, inclinação { $pitch }°)
 lobe-no-light = Nenhuma luz com L definido neste vértice: nada a desenhar.
 lobe-axis = φ, graus a partir de N
 lobe-luminance = { $name } = { $value } (a luminância de { $colour })
@@ -596,7 +599,10 @@ compare-step-1 = 1. Fixa a cena atual como A (o botão acima).
 compare-step-2 = 2. Muda qualquer coisa: o sombreamento, f32 ou f64, o material, uma luz.
 compare-step-3 = 3. A e B aparecem lado a lado, com os passos que diferem primeiro.
 compare-a-fails = A não pode ser calculada: { $error }
-compare-differing = { $differing } de { $all } passos diferem: vêm primeiro, destacados.
+compare-differing = { $differing ->
+    [one] 1 de { $all } passos difere: vem primeiro, destacado.
+   *[other] { $differing } de { $all } passos diferem: vêm primeiro, destacados.
+}
 compare-none-differ = Nada difere: A e B dão o mesmo valor em cada um dos { $all } passos.
 copy = Copiar
 copy-program-hover = Copiar o programa para a área de transferência
@@ -629,7 +635,7 @@ exercise-zero-intro = A própria cena da ficha (bronze, a luz em (0, 0, 90), o v
 answers = respostas
 index-directional-only = só uma luz direcional
 index-title = Exercícios, semente { $seed }
-index-intro = Efeitos: { $effects }. Regras: { $rules }. Cada ficha tem o seu ficheiro de cena (abre-o no phonglab) e as suas respostas.
+index-intro = Efeitos: { $effects }. Regras: { $rules }. Cada ficha tem o seu ficheiro de cena (abra-o no phonglab) e as suas respostas.
 index-printable = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir: impresso frente e verso, cada exercício fica na sua própria folha) e [keys.pdf](keys.pdf) (as respostas, para o professor).
 index-printable-one-sided = Para imprimir: [sheets.pdf](sheets.pdf) (para distribuir: uma página por exercício, por isso impresso só de um lado cada exercício fica na sua própria folha) e [keys.pdf](keys.pdf) (as respostas, para o professor).
 
@@ -645,8 +651,12 @@ pdf-blank-page = Esta página foi deixada em branco propositadamente.
 
 exercises-written =
     { $count ->
-    [one] 1 exercício em { $out } ({ $redraws } sorteios rejeitados: faltava-lhes um efeito pedido ou caíam num caso-limite)
-    *[other] { $count } exercícios em { $out } ({ $redraws } sorteios rejeitados: faltava-lhes um efeito pedido ou caíam num caso-limite)
+        [one] 1 exercício
+       *[other] { $count } exercícios
+    } em { $out }{ $redraws ->
+        [0] {""}
+        [one] {" "}(1 sorteio rejeitado: faltava-lhe um efeito pedido ou caía num caso-limite)
+       *[other] {" "}({ $redraws } sorteios rejeitados: faltava-lhes um efeito pedido ou caíam num caso-limite)
     }
 
 ## cli-out
@@ -709,7 +719,7 @@ err-no-such-light = --light { $light }: { $count ->
 }
 err-study-stopped = o estudo parou
 err-rules = --rules { $value }: experimente worksheet ou opengl
-err-effects = --effects: { $value } não é nenhum de { $names }
+err-effects = --effects: { $value } não é um destes: { $names }
 err-level = --level vai de 1 a 4
 err-target = --target { $value }: experimente glsl ou wgsl
 err-shading = --shading { $value }: experimente gouraud ou phong
@@ -805,7 +815,7 @@ cli-arg-explain-scene = Um ficheiro de cena (TOML), como a aplicação o guarda
 cli-arg-explain-worksheet = A cena da ficha com a modelview N (1-5). Sem cena indicada, a 5
 cli-arg-explain-preset = Em vez disso, uma cena pronta: "phong-demo"
 cli-arg-explain-precision = A precisão do motor de cálculo
-cli-arg-explain-back = Explicar a face de trás (iluminação de duas faces)
+cli-arg-explain-back = Explicar a face de trás (iluminação das duas faces)
 cli-arg-explain-markdown = Imprimir uma tabela Markdown em vez de texto
 cli-arg-explain-digits = Algarismos significativos
 cli-arg-render-object = O objeto (por omissão, o da cena)
@@ -1050,6 +1060,7 @@ arg-error-missing-value = { $arg } precisa de um valor.
 arg-error-out-of-range = { $arg } aceita um número inteiro de { $low } a { $high }, não { $value }.
 arg-error-not-whole = { $arg } aceita um número inteiro, não { $value }.
 arg-error-not-number = { $arg } aceita um número, não { $value }.
+arg-error-invalid-utf8 = Um dos argumentos não é texto em UTF-8: só o nome de um ficheiro ou de uma pasta pode ter outros bytes. Escreva os outros em UTF-8.
 arg-error-refused-value = { $arg } não aceita { $value }: { $reason }
 arg-error-unknown = O phonglab não tem a opção { $arg }.
 arg-error-did-you-mean = Queria dizer { $suggestion }?

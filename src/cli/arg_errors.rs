@@ -16,6 +16,8 @@ pub fn message(e: &clap::Error, command: Option<&str>) -> Option<String> {
         ErrorKind::InvalidValue => invalid_value(e),
         ErrorKind::ValueValidation => refused_value(e),
         ErrorKind::UnknownArgument => unknown_argument(e),
+        // clap names neither the argument nor the bytes.
+        ErrorKind::InvalidUtf8 => Some(t!("arg-error-invalid-utf8")),
         ErrorKind::InvalidSubcommand => {
             let name = shown(&string(e, ContextKind::InvalidSubcommand)?);
             Some(with_suggestion(t!("arg-error-unknown-command", name = name), e, ContextKind::SuggestedSubcommand))
@@ -68,6 +70,10 @@ fn refused_value(e: &clap::Error) -> Option<String> {
     let arg = arg_name(&string(e, ContextKind::InvalidArg)?);
     let value = string(e, ContextKind::InvalidValue).unwrap_or_default();
     let source = std::error::Error::source(e)?;
+    if let Some(w) = source.downcast_ref::<NotInRange>() {
+        let (low, high) = (phonglab_core::locale::grouped(w.low), phonglab_core::locale::grouped(w.high));
+        return Some(t!("arg-error-out-of-range", arg = arg, low = low, high = high, value = shown(&value)));
+    }
     if source.downcast_ref::<std::num::ParseIntError>().is_some() {
         return Some(t!("arg-error-not-whole", arg = arg, value = shown(&value)));
     }
@@ -82,6 +88,35 @@ fn refused_value(e: &clap::Error) -> Option<String> {
         return Some(t!("arg-error-out-of-range", arg = arg, low = low, high = high, value = shown(&value)));
     }
     Some(t!("arg-error-refused-value", arg = arg, value = shown(&value), reason = reason))
+}
+
+/// A value that is not a whole number from `low` to `high` ([`whole`]): the refusal says
+/// the range in words, whatever was wrong with the value (`-1`, `1e20`, twenty digits).
+#[derive(Debug)]
+pub struct NotInRange {
+    /// The smallest value taken.
+    pub low: u64,
+    /// The largest value taken.
+    pub high: u64,
+}
+
+impl std::fmt::Display for NotInRange {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "not a whole number from {} to {}", self.low, self.high)
+    }
+}
+
+impl std::error::Error for NotInRange {}
+
+/// A value parser for a whole number from `low` to `high`, refusing anything else
+/// ([`NotInRange`]) so that the refusal names the range: clap's own says only "a whole
+/// number" for a value past the type's range (`--count 99999999999999999999`) or not
+/// whole (`--variants 1e20`). Give the argument `allow_negative_numbers` too, so that
+/// `--seed -1` is this value refused, not an unknown option `-1`.
+pub fn whole(low: u64, high: u64) -> impl Fn(&str) -> Result<u64, NotInRange> + Clone + Send + Sync + 'static {
+    move |text: &str| {
+        text.trim().parse::<u64>().ok().filter(|n| (low..=high).contains(n)).ok_or(NotInRange { low, high })
+    }
 }
 
 /// The bounds of clap's range refusal, "0 is not in 1..=100" (or `1..101`, an upper bound
@@ -151,6 +186,17 @@ fn shown(value: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::range_of;
+
+    #[test]
+    fn whole_numbers_are_taken_only_in_their_range() {
+        let count = super::whole(1, 1000);
+        assert_eq!(count("7").ok(), Some(7));
+        assert_eq!(count("1000").ok(), Some(1000));
+        for bad in ["0", "1001", "-1", "1e20", "99999999999999999999", "x", ""] {
+            assert!(count(bad).is_err(), "{bad:?}");
+        }
+        assert_eq!(super::whole(0, u64::MAX)(&u64::MAX.to_string()).ok(), Some(u64::MAX));
+    }
 
     #[test]
     fn clap_ranges_are_read_inclusive() {

@@ -17,11 +17,15 @@ use phonglab_core::misconception::Misconception;
 #[derive(Args, Debug)]
 pub struct ExerciseArgs {
     /// The random seed: the same seed gives the same sheets.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_negative_numbers = true, value_parser = super::arg_errors::whole(0, u64::MAX))]
     pub seed: u64,
     /// How many exercises.
-    #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=1000))]
-    pub count: u32,
+    #[arg(long, default_value_t = 10, allow_negative_numbers = true, value_parser = super::arg_errors::whole(1, 1000))]
+    pub count: u64,
+    /// Whether `--count` was given (not its default): level 5 says it wrote fewer
+    /// questions only to a teacher who asked for more.
+    #[arg(skip)]
+    pub count_given: bool,
     /// Difficulty: 1 directional only, 2 positional with attenuation, 3 spotlights, 4
     /// two-sided with several lights; 5 "what is wrong with this picture?" (a picture drawn
     /// with one mistake, its cause to pick; at most seven).
@@ -47,8 +51,8 @@ pub struct ExerciseArgs {
     pub format: OutputFormat,
     /// With a Moodle format: this many seeded variants of each exercise, in one category
     /// per exercise, for a quiz's "random question" from it.
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=100))]
-    pub variants: u32,
+    #[arg(long, default_value_t = 1, allow_negative_numbers = true, value_parser = super::arg_errors::whole(1, 100))]
+    pub variants: u64,
     /// With a Moodle format: the name of the top category (default "phonglab").
     #[arg(long)]
     pub category: Option<String>,
@@ -143,7 +147,7 @@ fn run_moodle(a: &ExerciseArgs, format: Format) -> Result<()> {
         Format::MoodleXml => t!("moodle-format-xml"),
         Format::Gift => t!("moodle-format-gift"),
     };
-    if a.level == Some(5) && a.count as usize > Misconception::ALL.len() {
+    if a.level == Some(5) && a.count_given && a.count as usize > Misconception::ALL.len() {
         let all = Misconception::ALL.len() as i64;
         super::say(&t!("level-5-count", count = a.count as i64, all = all));
     }

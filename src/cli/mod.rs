@@ -101,7 +101,11 @@ impl Cli {
             crate::cli::help::print_help_of(&mut cmd, names);
             std::process::exit(0);
         }
-        Cli::from_arg_matches(&matches).unwrap_or_else(|e| exit_escaped(&e, command))
+        let mut cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| exit_escaped(&e, command));
+        if let (Some(Command::Exercise(a)), Some(("exercise", m))) = (&mut cli.command, matches.subcommand()) {
+            a.count_given = m.value_source("count") == Some(clap::parser::ValueSource::CommandLine);
+        }
+        cli
     }
 
     /// The locale the command line asks for: `--lang` over the system's, `--decimal` over

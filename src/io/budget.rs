@@ -106,7 +106,23 @@ pub fn check(what: &str, needed: u64) -> Result<(), String> {
         2 => t!("budget-from-limit"),
         _ => t!("budget-from-system"),
     };
-    Err(t!("budget-over", what = what, needed = describe_bytes(needed), budget = describe_bytes(budget), from = from))
+    Err(t!(
+        "budget-over",
+        what = what,
+        needed = describe_bytes(needed),
+        budget = describe_bytes(budget),
+        from = from,
+        suggest = suggested_budget(needed)
+    ))
+}
+
+/// A `--memory-budget` that lets a run needing `needed` bytes go, as people write it:
+/// rounded up to a whole number of GiB (`68G`), or of 256 MiB under 1 GiB (`768M`).
+pub fn suggested_budget(needed: u64) -> String {
+    const G: u64 = 1 << 30;
+    const QUARTER: u64 = 256 << 20;
+    let quarters = needed.div_ceil(QUARTER).max(1);
+    if quarters * QUARTER < G { format!("{}M", quarters * 256) } else { format!("{}G", needed.div_ceil(G)) }
 }
 
 /// Reads a size: a number of bytes with an optional unit, K, M, G or T (powers of 1024;
@@ -234,6 +250,23 @@ mod tests {
         assert_eq!(over_the_limit(g, Some(g / 2), Some(g)), Some(0), "a limit already reached");
     }
 
+    /// The suggested budget is never below what the run needs (it said "16G" for a run
+    /// needing 68 GiB).
+    #[test]
+    fn the_suggested_budget_covers_the_need() {
+        let g = 1u64 << 30;
+        assert_eq!(suggested_budget(1), "256M");
+        assert_eq!(suggested_budget(256 << 20), "256M");
+        assert_eq!(suggested_budget((256 << 20) + 1), "512M");
+        assert_eq!(suggested_budget(g - 1), "1G");
+        assert_eq!(suggested_budget(g), "1G");
+        assert_eq!(suggested_budget(g + 1), "2G");
+        assert_eq!(suggested_budget(72_021_287_500), "68G");
+        for needed in [1, 300 << 20, g - 1, 5 * g / 2, 67 * g + 12345, 1 << 45] {
+            assert!(parse_size(&suggested_budget(needed)).unwrap() >= needed, "{needed}");
+        }
+    }
+
     #[test]
     fn over_the_budget_says_the_estimate_and_the_option() {
         set(Some(1 << 30)).unwrap();
@@ -241,5 +274,6 @@ mod tests {
         let e = check("a picture of 32768 x 32768 pixels", 24 << 30).unwrap_err();
         assert!(e.contains("a picture of 32768 x 32768 pixels needs about 25 769 803 776 bytes"), "{e}");
         assert!(e.contains("the memory budget of 1 073 741 824 bytes") && e.contains("--memory-budget"), "{e}");
+        assert!(e.contains("--memory-budget 24G"), "the suggestion covers the need: {e}");
     }
 }

@@ -110,6 +110,11 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
         let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-is-a-link"));
         return Err(WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED));
     }
+    // A file of that name: `create_dir_all` would say only "it already exists".
+    if std::fs::metadata(dir).is_ok_and(|m| !m.is_dir()) {
+        let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-is-a-file"));
+        return Err(WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED));
+    }
     std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED))?;
     let _lock = crate::platform::os::lock_folder(dir, || say_waiting(dir))
         .map_err(|e| WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED))?;

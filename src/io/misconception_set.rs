@@ -38,7 +38,7 @@ fn choices() -> Vec<String> {
     Misconception::ALL
         .iter()
         .enumerate()
-        .map(|(i, m)| format!("{}. {} ({})", (b'A' + i as u8) as char, m.cause(), m.formulas().1))
+        .map(|(i, m)| format!("{}. {}", (b'A' + i as u8) as char, m.choice()))
         .collect()
 }
 

@@ -4,6 +4,8 @@
 
 use anyhow::{Result, bail};
 
+use phonglab_core::question::{Bank, Category};
+
 use super::moodle_set::{Bundle, Format, exercise_bank};
 use crate::t;
 
@@ -30,34 +32,46 @@ pub fn check_category(name: &str) -> Result<()> {
     Ok(())
 }
 
-/// How many exercises the estimate writes to measure one: the first exercise's first
-/// variants (fewer where the bank has fewer).
-const SAMPLE: usize = 8;
+/// How many exercises the estimate writes to measure one: the bank's first ones (fewer
+/// where the bank has fewer), which the whole bank starts with.
+pub const SAMPLE: usize = 32;
 
-/// How much larger than the sample's mean the whole file's exercises may be, on average:
-/// measured at level 4, `--count 20 --variants 20`, the sample's mean times the exercises
-/// came within 4 % of the file (Moodle XML 10 436 765 bytes, GIFT 82 246 236); 1.5 leaves
-/// room for the exercises with more lights.
-const MARGIN: f64 = 1.5;
+/// What phonglab holds while it writes, besides the file's text: the exercises and the
+/// bank's questions, 2.2 to 2.5 times the bank written as Moodle XML (measured with
+/// `/usr/bin/time -v` over levels 1 to 4, both formats, 100 to 10 000 exercises:
+/// docs/performance.md, "A file for Moodle"), counted as 2.6 times the sample's mean, and
+/// 5 % more for a sample's mean below the bank's (at level 4 an exercise's size varies by
+/// 15 %, so the mean of 32 by under 3 %).
+pub const HELD_PER_XML_BYTE: f64 = 2.6 * 1.05;
 
-/// While it writes, phonglab holds the exercises, the bank's questions and the file's
-/// text: measured (`/usr/bin/time -f %M`, the same two files), a peak of 64 MB for the
-/// Moodle XML and 136 MB for the GIFT, the process's fixed part included: under twice the
-/// file's size, with 4 KiB an exercise counted besides.
-const HELD_PER_FILE_BYTE: u64 = 2;
-const HELD_PER_EXERCISE: u64 = 4 << 10;
+/// The process's fixed part: the code, the catalogues (40 MB measured, a debug build).
+pub const FIXED: u64 = 48 << 20;
 
 /// The estimated size of the file `b` asks for in `format`, and the memory writing it
-/// takes: the mean of a sample of its exercises, written, times the exercises asked for
-/// (`count × variants`), with a margin.
+/// takes, from a sample of its exercises each written alone ([`SAMPLE`]). The file: the
+/// largest of them times the exercises asked for (`count × variants`), so never below
+/// the file (an exercise written alone carries the file's header and a category; the
+/// largest is at most 1.2 times the mean at level 4, 1.03 at levels 1 to 3). The memory:
+/// the file, what the bank holds ([`HELD_PER_XML_BYTE`] times the sample's mean in
+/// Moodle XML, times the exercises) and [`FIXED`].
 pub fn estimate(b: &Bundle, format: Format) -> Result<(u64, u64)> {
-    let total = b.request.count * b.variants.max(1);
+    let total = (b.request.count * b.variants.max(1)) as u64;
     let mut sample = b.clone();
     sample.request.count = 1;
-    sample.variants = total.min(SAMPLE);
-    let bytes = format.write(&exercise_bank(&sample)?).len() as f64;
-    let file = (bytes / sample.variants as f64 * MARGIN * total as f64) as u64;
-    Ok((file, file.saturating_mul(HELD_PER_FILE_BYTE) + total as u64 * HELD_PER_EXERCISE))
+    sample.variants = (total as usize).min(SAMPLE);
+    let bank = exercise_bank(&sample)?;
+    let (mut largest, mut xml, mut written) = (0u64, 0u64, 0u64);
+    for category in &bank.categories {
+        for q in &category.questions {
+            let alone = Bank { categories: vec![Category { path: category.path.clone(), questions: vec![q.clone()] }] };
+            largest = largest.max(format.write(&alone).len() as u64);
+            xml += Format::MoodleXml.write(&alone).len() as u64;
+            written += 1;
+        }
+    }
+    let file = largest.saturating_mul(total);
+    let held = xml as f64 / written.max(1) as f64 * HELD_PER_XML_BYTE * total as f64;
+    Ok((file, file.saturating_add(held as u64).saturating_add(FIXED)))
 }
 
 /// Refuses the file `b` asks for when writing it would take more than the memory budget

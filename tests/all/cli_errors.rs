@@ -99,8 +99,8 @@ fn claps_common_errors_are_said_in_the_language_asked_for() {
         (&["exercise", "--seed"], "--seed needs a value", "--seed precisa de um valor"),
         (
             &["exercise", "--seed", "x"],
-            "--seed takes a whole number, not \"x\"",
-            "--seed aceita um número inteiro, não \"x\"",
+            "--seed takes a whole number from 0 to 18 446 744 073 709 551 615, not \"x\"",
+            "--seed aceita um número inteiro de 0 a 18 446 744 073 709 551 615, não \"x\"",
         ),
         (
             &["exercise", "--variant", "2"],
@@ -206,5 +206,178 @@ fn a_refusal_says_the_value_once_and_names_what_went_wrong() {
         let (_, said) = refused(lang, &["exercise", "extra"]);
         assert!(said.contains(stray), "{lang}: {said}");
         assert!(!said.contains("has no option") && !said.contains("não tem a opção"), "{lang}: {said}");
+    }
+}
+
+/// A number out of its range is refused with the range in words, whatever is wrong with
+/// it: negative (`--seed -1` was "no option -1"), past the type (`--count` with twenty
+/// digits), or not whole (`--variants 1e20`), in every language.
+#[test]
+fn a_number_out_of_range_is_refused_with_its_range() {
+    let cases: [(&[&str], &str, &str); 4] = [
+        (
+            &["--seed", "-1"],
+            "--seed takes a whole number from 0 to 18 446 744 073 709 551 615, not \"-1\"",
+            "--seed aceita um número inteiro de 0 a 18 446 744 073 709 551 615, não \"-1\"",
+        ),
+        (
+            &["--count", "99999999999999999999"],
+            "--count takes a whole number from 1 to 1 000, not",
+            "--count aceita um número inteiro de 1 a 1 000, não",
+        ),
+        (
+            &["--count", "-3"],
+            "--count takes a whole number from 1 to 1 000, not \"-3\"",
+            "--count aceita um número inteiro de 1 a 1 000, não \"-3\"",
+        ),
+        (
+            &["--variants", "1e20", "--format", "gift"],
+            "--variants takes a whole number from 1 to 100, not \"1e20\"",
+            "--variants aceita um número inteiro de 1 a 100, não \"1e20\"",
+        ),
+    ];
+    for (args, en, pt) in cases {
+        let line = [&["exercise"][..], args].concat();
+        let (code, said) = refused("en", &line);
+        assert_eq!(code, 2, "{args:?}: {said}");
+        assert!(said.contains(en), "{args:?}: {said}");
+        for lang in ["pt-PT", "pt-BR"] {
+            let (_, said) = refused(lang, &line);
+            assert!(said.contains(pt), "{lang} {args:?}: {said}");
+        }
+    }
+    // The same seed as a number in range still writes.
+    let dir = out_dir("seed-max");
+    let max = u64::MAX.to_string();
+    let out = phonglab(&["exercise", "--seed", &max, "--count", "1", "--out", dir.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+/// `--out` naming a file: the refusal says it is a file, not a folder (it said "create
+/// the folder: it already exists"), and the file is left as it was.
+#[test]
+fn an_out_that_is_a_file_is_called_a_file() {
+    let dir = out_dir("out-file");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("afile");
+    std::fs::write(&file, "mine").unwrap();
+    let words = [
+        ("en", "it is a file, not a folder"),
+        ("pt-PT", "é um ficheiro, não uma pasta"),
+        ("pt-BR", "é um arquivo, não uma pasta"),
+    ];
+    for format in ["sheets", "gift", "moodle-xml"] {
+        for (lang, words) in words {
+            let (_, said) = refused(lang, &["exercise", "--format", format, "--out", file.to_str().unwrap()]);
+            assert!(said.contains(words), "{lang} {format}: {said}");
+            assert!(!said.contains("already exists") && !said.contains("já existe"), "{lang} {format}: {said}");
+        }
+    }
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "mine");
+}
+
+/// An argument that is not UTF-8 is refused in the catalogue's words (it was clap's
+/// English "invalid UTF-8 was detected"), with clap's exit code 2.
+#[test]
+#[cfg(unix)]
+fn an_argument_not_in_utf8_is_refused_in_the_language_asked_for() {
+    use std::os::unix::ffi::OsStrExt;
+    let bad = std::ffi::OsStr::from_bytes(b"a\xffb");
+    let words = [("en", "is not text in UTF-8"), ("pt-PT", "não é texto em UTF-8"), ("pt-BR", "não é texto em UTF-8")];
+    for (lang, words) in words {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_phonglab"))
+            .env("LC_ALL", "C.UTF-8")
+            .args(["--lang", lang, "exercise", "--rules"])
+            .arg(bad)
+            .output()
+            .unwrap();
+        let said = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{said}");
+        assert!(said.contains(words) && !said.contains("invalid UTF-8 was detected"), "{lang}: {said}");
+    }
+}
+
+/// Issue 60: what `phonglab exercise` says of its draws counts right in every language:
+/// nothing when none was rejected ("0 draws rejected: they lacked…"), one in the singular
+/// (Fluent's plural selector), and one picture in the singular.
+#[test]
+fn the_summary_says_no_zero_and_counts_in_the_singular_and_plural() {
+    use phonglab::locale::{Lang, tr_in};
+    for lang in [Lang::En, Lang::PtPt, Lang::PtBr] {
+        let said = |redraws: usize| {
+            tr_in(
+                lang,
+                "exercises-written",
+                &[("count", 3usize.into()), ("out", "s".into()), ("redraws", redraws.into())],
+            )
+        };
+        let none = said(0);
+        assert!(!none.contains('(') && !none.contains('0'), "{lang:?}: {none}");
+        let (one, many) = (said(1), said(5));
+        for (text, words) in [
+            (&one, ["1 draw rejected: it", "1 sorteio rejeitado", "1 sorteio rejeitado"]),
+            (&many, ["5 draws rejected: they", "5 sorteios rejeitados", "5 sorteios rejeitados"]),
+        ] {
+            let i = [Lang::En, Lang::PtPt, Lang::PtBr].iter().position(|l| *l == lang).unwrap();
+            assert!(text.contains(words[i]), "{lang:?}: {text}");
+        }
+        let one_step = tr_in(lang, "compare-differing", &[("differing", 1usize.into()), ("all", 17usize.into())]);
+        assert!(!one_step.contains(" differ:") && !one_step.contains("diferem"), "{lang:?}: {one_step}");
+        let one_picture = tr_in(lang, "wrong-written", &[("count", 1usize.into()), ("out", "s".into())]);
+        assert!(!one_picture.contains("pictures") && !one_picture.contains("imagens"), "{lang:?}: {one_picture}");
+    }
+    let out = phonglab(&["exercise", "--count", "1", "--level", "1", "--out", out_dir("summary").to_str().unwrap()]);
+    let said = String::from_utf8_lossy(&out.stdout);
+    assert!(!said.contains("0 draws"), "{said}");
+}
+
+/// Issue 60: the catalogues' wording as the reviews asked: "not one of: a, b"; pt-PT says
+/// você throughout (no "abre-o", "Arrasta", "as tuas"); pt-BR says gabarito, never chave,
+/// for an answer key; one term for two-sided lighting, "das duas faces"; the picture drawn
+/// right is "Desenhada corretamente".
+#[test]
+fn the_catalogues_keep_one_register_and_one_term() {
+    use phonglab::locale::{Lang, message_ids, tr_in};
+    let (_, said) = refused("en", &["exercise", "--effects", "foo"]);
+    assert!(said.contains("--effects: \"foo\" is not one of: positional, attenuation"), "{said}");
+    let (_, said) = refused("pt-PT", &["exercise", "--effects", "foo"]);
+    assert!(said.contains("--effects: \"foo\" não é um destes: positional"), "{said}");
+    let texts = |lang: Lang| -> Vec<(String, String)> {
+        let mut ids = message_ids(lang);
+        ids.extend(phonglab_core::locale::message_ids(lang));
+        ids.into_iter()
+            .map(|id| {
+                let t = tr_in(lang, &id, &[]);
+                (id, t)
+            })
+            .collect()
+    };
+    for (id, text) in texts(Lang::PtPt) {
+        for tu in [
+            "abre-o",
+            "Arrasta ",
+            "as tuas",
+            "quiseres",
+            "Abre um",
+            "carrega em",
+            "larga um",
+            "usa a roda",
+            "prime Enter",
+        ] {
+            assert!(!text.contains(tu), "pt-PT {id} says tu ({tu}): {text}");
+        }
+    }
+    for lang in [Lang::PtPt, Lang::PtBr] {
+        for (id, text) in texts(lang) {
+            assert!(!text.contains("dois lados") && !text.contains("Desenhada certa"), "{lang:?} {id}: {text}");
+        }
+        assert_eq!(tr_in(lang, "moodle-picture-right", &[]), "Desenhada corretamente");
+        assert_eq!(tr_in(lang, "wrong-drawn-right", &[]), "Desenhada corretamente");
+    }
+    for (id, text) in texts(Lang::PtBr) {
+        // "chave" is also a switch (the demo's corrections) and a JSON key.
+        if !id.starts_with("help-demo-") && id != "why-demo-differs-intro" && id != "cli-lang" {
+            assert!(!text.contains("chave"), "pt-BR {id} says chave, not gabarito: {text}");
+        }
     }
 }

@@ -69,7 +69,7 @@ fn an_exam_sheet_says_the_spotlights_note_and_the_side_to_compute_as_moodle_does
     }
     let front = [
         ("en", "compute the front side, the one the vertex normal faces"),
-        ("pt-BR", "calcule o lado da frente, aquele para onde aponta a normal do vértice"),
+        ("pt-BR", "calcule a face da frente, aquela para onde aponta a normal do vértice"),
     ];
     for (lang, sentence) in front {
         let (md, pdf, _, moodle) = exam(lang, "4");

@@ -220,3 +220,34 @@ fn level_five_in_portuguese_has_no_english_words() {
     }
     let _ = std::fs::remove_dir_all(&out);
 }
+
+/// Issue 60: each choice of a level-5 sheet says its cause and its mistaken formula once,
+/// as Moodle and the window's quiz write it: Gouraud's repeated itself ("…perde-se
+/// (iluminação em cada vértice e cores interpoladas (Gouraud))"), and formulas in
+/// parentheses after a cause ending in one doubled them ("(n · H) ((R . V)^s_rm").
+#[test]
+fn a_sheets_choices_say_each_cause_once_without_doubled_parentheses() {
+    let out = std::env::temp_dir().join(format!("phonglab-wrong-choices-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    for lang in ["en", "pt-PT", "pt-BR"] {
+        let o = common::phonglab(&[
+            "--lang",
+            lang,
+            "exercise",
+            "--level",
+            "5",
+            "--count",
+            "1",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let sheet = std::fs::read_to_string(out.join("wrong-01.md")).unwrap();
+        let choices: Vec<&str> = sheet.lines().filter(|l| l.starts_with("- [ ] ")).collect();
+        assert_eq!(choices.len(), 7, "{sheet}");
+        for c in choices {
+            assert!(c.matches(": ").count() <= 1 && !c.contains("((") && !c.contains(" . "), "{lang}: {c}");
+        }
+    }
+    let _ = std::fs::remove_dir_all(&out);
+}

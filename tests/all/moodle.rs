@@ -552,6 +552,35 @@ fn level_5_refuses_variants_says_its_seven_and_help_lists_it() {
     }
     let help = run_ok(phonglab(&["exercise", "--help"]));
     assert!(help.contains("5 \"what is wrong with this picture?\""), "{help}");
+    // Without --count (10 by default) the teacher asked for no number: nothing to correct.
+    for format in ["gift", "sheets"] {
+        let said = run_ok(phonglab(&["exercise", "--level", "5", "--format", format, "--out", dir.to_str().unwrap()]));
+        assert!(!said.contains("not 10"), "{format}: {said}");
+    }
+}
+
+/// Issue 60: the tolerance sentence follows `--decimal` (`--decimal point --lang pt-PT`
+/// wrote "0,01 %" beside givens written with a point).
+#[test]
+fn the_tolerance_sentence_follows_the_decimal_mark() {
+    let dir = out_dir("decimal-point");
+    for (decimal, percent, near_zero) in [("point", "0.01 %", "0.000001 perto"), ("comma", "0,01 %", "0,000001 perto")]
+    {
+        let args = ["--lang", "pt-PT", "--decimal", decimal, "exercise", "--format", "moodle-xml", "--count", "1"];
+        run_ok(phonglab(&[&args[..], &["--out", dir.to_str().unwrap()]].concat()));
+        let text = std::fs::read_to_string(dir.join("questions.xml")).unwrap();
+        assert!(text.contains(&format!("a menos de {percent} do valor (ou {near_zero} de 0)")), "{decimal}: {text}");
+    }
+    // Level 5's explanations too: "escala por 0,5" with --decimal point.
+    use phonglab_core::locale::{DecimalMark, Lang, Locale, with_locale};
+    use phonglab_core::misconception::Misconception;
+    for (decimal, half, quarter) in [(DecimalMark::Point, "0.5", "0.25"), (DecimalMark::Comma, "0,5", "0,25")] {
+        let (a, b) = with_locale(Locale { lang: Lang::PtPt, decimal }, || {
+            (Misconception::NormalNotNormalised.why(), Misconception::AttenuationInObjectSpace.why())
+        });
+        assert!(a.contains(&format!("escala por {half} ")), "{a}");
+        assert!(b.contains(&format!("escala por {quarter},")), "{b}");
+    }
 }
 
 #[test]
@@ -640,6 +669,11 @@ fn the_picture_levels_feedback_is_a_sentence_in_every_language() {
                 assert_eq!(plain.matches(';').count(), 1, "{lang:?} {kind:?}: {plain}");
                 let phonglab_core::question::Body::Choice { choices, .. } = &q.body else { panic!() };
                 assert_eq!(choices.len(), 7);
+                // A choice says its cause, then its formula, once: Gouraud's repeated
+                // itself after a second colon ("…lost: lighting per vertex… (Gouraud)").
+                for c in choices {
+                    assert!(c.text.matches(": ").count() <= 1, "{lang:?}: {}", c.text);
+                }
             }
         });
     }

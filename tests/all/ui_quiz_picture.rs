@@ -25,13 +25,13 @@ fn a_picture_question_is_asked_and_checked() {
     assert!(wrong.right() <= 1280.0);
     // A wrong cause first.
     let other = phonglab_core::misconception::Misconception::ALL.iter().find(|m| **m != kind).unwrap();
-    h.get_by_role_and_label(Role::RadioButton, &format!("{} ({})", other.cause(), other.formulas().1)).click();
+    h.get_by_role_and_label(Role::RadioButton, &other.choice()).click();
     h.run_steps(2);
     h.get_by_label("Check").click();
     h.run_steps(2);
     assert!(h.query_by_label("Not that one. The key:").is_some());
     // The verdict scrolled into view; the student scrolls back up to the causes.
-    let right = format!("{} ({})", kind.cause(), kind.formulas().1);
+    let right = kind.choice();
     h.get_by_role_and_label(Role::RadioButton, &right).scroll_to_me();
     h.run_steps(30);
     h.get_by_role_and_label(Role::RadioButton, &right).click();
@@ -62,7 +62,7 @@ fn the_verdict_comes_into_view_after_check() {
         h.run_steps(3);
         let kind = h.state().quiz.wrong.as_ref().expect("a question").kind;
         let other = phonglab_core::misconception::Misconception::ALL.iter().find(|m| **m != kind).unwrap();
-        let choice = format!("{} ({})", other.cause(), other.formulas().1);
+        let choice = other.choice();
         h.get_by_role_and_label(Role::RadioButton, &choice).scroll_to_me();
         h.run_steps(30);
         h.get_by_role_and_label(Role::RadioButton, &choice).click();

@@ -9,7 +9,7 @@ space-eye = Eye
 wrong-cause-normals-by-m = Normals transformed by M instead of its inverse transpose
 wrong-why-normals-by-m = Under a scale that differs along the axes, M moves the surface one way and its normals another: M n is no longer perpendicular to the surface, and (M^-1)^T n is.
 wrong-cause-normal-not-normalised = The normal not normalised (GL_NORMALIZE off under a scaled modelview)
-wrong-why-normal-not-normalised = A modelview that scales by 0.5 makes the transformed normal 2 long, and nothing brings it back to 1: n · L doubles, and with it the diffuse term; near the highlight n · H passes 1, and the power s_rm blows the specular term up into a white patch.
+wrong-why-normal-not-normalised = A modelview that scales by { $scale } makes the transformed normal 2 long, and nothing brings it back to 1: n · L doubles, and with it the diffuse term; near the highlight n · H passes 1, and the power s_rm blows the specular term up into a white patch.
 wrong-cause-reflection-for-halfway = The reflection vector (R · V) used where the halfway vector (n · H) belongs
 wrong-why-reflection-for-halfway = The angle between R and V is about twice the angle between n and H, so R · V falls off faster: at the same exponent the highlight is smaller.
 wrong-cause-gouraud-misses-highlight = Gouraud shading: lit only at the vertices, so a highlight between them is lost
@@ -17,7 +17,7 @@ wrong-why-gouraud-misses-highlight = The highlight falls between the coarse sphe
 wrong-cause-specular-facing-away = Specular light on faces turned away from the light (no f_i)
 wrong-why-specular-facing-away = OpenGL multiplies the specular term by f_i, 1 only where n · L > 0. Without it n · H can still be positive on the dark side: a highlight glows where no light reaches.
 wrong-cause-attenuation-object-space = Attenuation computed with the distance in object space
-wrong-why-attenuation-object-space = The model scales by 0.25, so distances in object space are 4 times those in eye space: at = k0 + k1 d + k2 d² grows, every term is divided by more, and the light fades too soon. OpenGL measures d in eye space.
+wrong-why-attenuation-object-space = The model scales by { $scale }, so distances in object space are 4 times those in eye space: at = k0 + k1 d + k2 d² grows, every term is divided by more, and the light fades too soon. OpenGL measures d in eye space.
 wrong-cause-light-before-view = The light’s position given before the view transform
 wrong-why-light-before-view = glLightfv(GL_POSITION) multiplies the position by the modelview current at that moment. Given before gluLookAt, it is taken in eye coordinates: the light rides with the camera instead of staying in the world.
 wrong-probe-line = bytes { $rgba }, n · L = { $ndotl }, { $cosine } = { $ndoth }, 1/at = { $att }, diffuse { $diffuse }, specular { $specular }
@@ -450,7 +450,7 @@ exam-name = exam exercise { $number } (seed { $seed })
 exam-material = chosen for this exam
 exam-no-calculator = No calculator.
 exam-by-hand = Every value works out by hand and exactly: carry it exact into the next step, and round only the value you write down.
-moodle-digits-quiz = Each field asks for the significant digits in brackets; an answer within 0.01 % of the value (or 0.000001 near 0) is right.
+moodle-digits-quiz = Each field asks for the significant digits in brackets; an answer within { $percent } % of the value (or { $near_zero } near 0) is right.
 moodle-digits-exam = Give each value rounded to { $digits } significant digits.
 moodle-carry = Carry each value into the next step as you computed it, not rounded: round only what you type in a field.
 moodle-decimal-mark = Numbers may be typed with a decimal comma or a decimal point: Moodle accepts both.
@@ -908,6 +908,7 @@ write-step-create = create
 write-step-rename = rename
 write-step-name = name
 write-step-create-folder = create the folder
+set-folder-is-a-file = it is a file, not a folder: phonglab writes a set of files into a folder; give a folder, or the name of a new one
 write-step-create-file-in = create a file in
 write-kept-file = the file there before (if any) is unchanged
 write-kept-nothing = nothing was written

@@ -80,7 +80,7 @@ pub fn wrong_question_ui(ui: &mut Ui, q: &mut WrongQuestion) {
     });
     ui.label(t!("wrong-question"));
     for (i, m) in Misconception::ALL.iter().enumerate() {
-        let text = format!("{} ({})", m.cause(), m.formulas().1);
+        let text = m.choice();
         if ui.radio(q.picked == Some(i), text).clicked() {
             (q.picked, q.checked) = (Some(i), false);
         }

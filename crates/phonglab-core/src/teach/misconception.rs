@@ -107,9 +107,35 @@ impl Misconception {
         }
     }
 
-    /// Why, in the reader's language (the key's explanation).
+    /// The choice to pick, as the sheet, the window's quiz and Moodle write it: the cause,
+    /// then the mistaken formula (the dot product written `·`); Gouraud's only the cause,
+    /// whose "formula" is words that say the cause again ("Gouraud shading: lit only at
+    /// the vertices…: lighting per vertex… (Gouraud)"), after a second colon.
+    pub fn choice(self) -> String {
+        match self {
+            Misconception::GouraudMissesHighlight => self.cause(),
+            _ => format!("{}: {}", self.cause(), self.formulas().1.replace(" . ", " · ")),
+        }
+    }
+
+    /// Why, in the reader's language (the key's explanation), its numbers in the reader's
+    /// decimal mark (`--decimal point` in Portuguese: "0.5", not "0,5").
     pub fn why(self) -> String {
-        crate::locale::tr(match self {
+        // The scale the mistake's scene draws with (the table at the top of this file).
+        let scale = match self {
+            Misconception::NormalNotNormalised => Some("0.5"),
+            Misconception::AttenuationInObjectSpace => Some("0.25"),
+            _ => None,
+        };
+        let id = self.why_id();
+        match scale {
+            Some(s) => crate::locale::tr_args(id, &[("scale", crate::locale::decimal(s).into())]),
+            None => crate::locale::tr(id),
+        }
+    }
+
+    fn why_id(self) -> &'static str {
+        match self {
             Misconception::NormalsByModelview => "wrong-why-normals-by-m",
             Misconception::NormalNotNormalised => "wrong-why-normal-not-normalised",
             Misconception::ReflectionForHalfway => "wrong-why-reflection-for-halfway",
@@ -117,7 +143,7 @@ impl Misconception {
             Misconception::SpecularOnFacesTurnedAway => "wrong-why-specular-facing-away",
             Misconception::AttenuationInObjectSpace => "wrong-why-attenuation-object-space",
             Misconception::LightBeforeView => "wrong-why-light-before-view",
-        })
+        }
     }
 }
 

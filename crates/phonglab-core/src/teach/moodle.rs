@@ -224,13 +224,22 @@ fn statement_html(ex: &Exercise, rounding: Rounding) -> String {
     // Each value carried unrounded into the next step: a value carried with only the asked
     // digits can land outside the next field's tolerance.
     let digits = match rounding {
-        Rounding::Quiz => format!("{} {}", crate::t!("moodle-digits-quiz"), crate::t!("moodle-carry")),
+        Rounding::Quiz => format!("{} {}", quiz_tolerance_sentence(), crate::t!("moodle-carry")),
         Rounding::Exam => crate::t!("moodle-digits-exam", digits = EXAM_DIGITS.to_string()),
     };
     let _ = writeln!(o, "<p>{} {}</p>", esc(&digits), esc(&crate::t!("moodle-decimal-mark")));
     o.push_str(&givens_html(ex));
     let _ = writeln!(o, "<h4>{}</h4>", esc(&crate::t!("sheet-compute-heading")));
     o
+}
+
+/// What a quiz's field takes as right ([`quiz::TOLERANCE`]), its numbers in the reader's
+/// decimal mark (`--decimal point` in Portuguese: `0.01 %`, not `0,01 %`).
+fn quiz_tolerance_sentence() -> String {
+    let (rel, abs) = quiz::TOLERANCE;
+    let percent = crate::locale::decimal(&format!("{}", (rel * 1e6).round() / 1e4));
+    let near_zero = crate::locale::decimal(&format!("{abs:.6}"));
+    crate::t!("moodle-digits-quiz", percent = percent, near_zero = near_zero)
 }
 
 /// The names of a step's components: x, y, z for a vector or point, r, g, b (and a) for a
@@ -365,7 +374,7 @@ pub fn misconception_question(kind: Misconception, name: &str, right_png: Vec<u8
     let choices = Misconception::ALL
         .iter()
         .map(|&m| Choice {
-            text: format!("{}: {}", m.cause(), dot(&m.formulas().1)),
+            text: m.choice(),
             right: m == kind,
             feedback: if m == kind { m.why() } else { crate::t!("moodle-choice-not", why = m.why()) },
         })

@@ -363,6 +363,12 @@ pub fn check_file_destination(path: &Path) -> Result<(), WriteError> {
 /// can be created in it.
 pub fn check_folder_destination(dir: &Path) -> Result<(), WriteError> {
     const KEPT: &str = "write-kept-nothing";
+    // A file of that name (or a link to one): `create_dir_all` would say only "it already
+    // exists", as though the folder were the trouble.
+    if std::fs::metadata(dir).is_ok_and(|m| !m.is_dir()) {
+        let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-is-a-file"));
+        return Err(WriteError::new(dir, "write-step-create-folder", e, KEPT));
+    }
     std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, KEPT))?;
     probe(dir, "writable").map_err(|e| WriteError::new(dir, "write-step-create-file-in", e, KEPT))
 }
