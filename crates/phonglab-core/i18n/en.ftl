@@ -741,6 +741,10 @@ diagnose-rescale-for-normalize = GL_RESCALE_NORMAL enabled where GL_NORMALIZE is
 diagnose-same-picture = These causes draw the same picture, so it cannot tell them apart (the most common first): { $ids }. Check which one the program holds.
 diagnose-same-picture-fitted = These causes draw the same picture, so it cannot tell them apart (the most common first, a changed value before a value fitted from the picture): { $ids }. Check which one the program holds.
 diagnose-light-unseen = Nothing of light { $light } (GL_LIGHT{ $light }) reaches the object: the picture is the scene lit without it.
+diagnose-nothing-drawn = Nothing of the object is drawn: the picture is only the background. Check the draw call (glutSolidTeapot, gluSphere…) and that it runs, and the camera (gluLookAt, gluPerspective): the object may be behind it or outside its view.
+diagnose-outline-differs = The object's outline is not this scene's ({ $share } of it differs, beyond a pixel): is this the picture of this scene? Check --scene, and the program's object and camera.
+diagnose-region-differs = A region of { $pixels } pixels around ({ $x }, { $y }) differs from the right picture, although the right picture explains { $score } of the object's pixels: something is drawn over the object there, or that part of it is wrong.
+diagnose-verdict-right-lossy = Right, as saved lossily (JPEG): the right picture explains { $score } of the object's pixels within { $levels } levels ({ $strict } within { $tolerance }), and its differences are noise, not a change of the picture.
 
 ## phonglab check: a student's work checked
 

@@ -741,6 +741,10 @@ diagnose-rescale-for-normalize = GL_RESCALE_NORMAL ativado onde é necessário G
 diagnose-same-picture = Estas causas desenham a mesma imagem, então não dá para distingui-las por ela (as mais comuns primeiro): { $ids }. Confira qual delas está no programa.
 diagnose-same-picture-fitted = Estas causas desenham a mesma imagem, então não dá para distingui-las por ela (as mais comuns primeiro, um valor alterado antes de um valor ajustado à imagem): { $ids }. Confira qual delas está no programa.
 diagnose-light-unseen = Nada da luz { $light } (GL_LIGHT{ $light }) chega ao objeto: a imagem é a cena iluminada sem ela.
+diagnose-nothing-drawn = Nada do objeto está desenhado: a imagem é só o fundo. Verifique a chamada que o desenha (glutSolidTeapot, gluSphere…) e se ela é executada, e a câmera (gluLookAt, gluPerspective): o objeto pode estar atrás dela ou fora do seu campo de visão.
+diagnose-outline-differs = O contorno do objeto não é o desta cena ({ $share } dele difere, além de um pixel): esta é a imagem desta cena? Verifique --scene, e o objeto e a câmera do programa.
+diagnose-region-differs = Uma região de { $pixels } pixels em torno de ({ $x }, { $y }) difere da imagem certa, embora a imagem certa explique { $score } dos pixels do objeto: há algo desenhado sobre o objeto ali, ou essa parte dele está errada.
+diagnose-verdict-right-lossy = Certa, do jeito que foi salva com perdas (JPEG): a imagem certa explica { $score } dos pixels do objeto a menos de { $levels } níveis ({ $strict } a menos de { $tolerance }), e as diferenças são ruído, não uma mudança da imagem.
 
 ## phonglab check: o trabalho de um aluno verificado
 

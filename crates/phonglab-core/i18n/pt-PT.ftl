@@ -741,6 +741,10 @@ diagnose-rescale-for-normalize = GL_RESCALE_NORMAL ativado onde é preciso GL_NO
 diagnose-same-picture = Estas causas desenham a mesma imagem, por isso ela não permite distingui-las (as mais comuns primeiro): { $ids }. Verifique qual delas está no programa.
 diagnose-same-picture-fitted = Estas causas desenham a mesma imagem, por isso ela não permite distingui-las (as mais comuns primeiro, um valor alterado antes de um valor ajustado à imagem): { $ids }. Verifique qual delas está no programa.
 diagnose-light-unseen = Nada da luz { $light } (GL_LIGHT{ $light }) chega ao objeto: a imagem é a cena iluminada sem ela.
+diagnose-nothing-drawn = Nada do objeto está desenhado: a imagem é só o fundo. Verifique a chamada que o desenha (glutSolidTeapot, gluSphere…) e que ela corre, e a câmara (gluLookAt, gluPerspective): o objeto pode estar atrás dela ou fora do seu campo de visão.
+diagnose-outline-differs = O contorno do objeto não é o desta cena ({ $share } dele difere, para além de um píxel): é esta a imagem desta cena? Verifique --scene, e o objeto e a câmara do programa.
+diagnose-region-differs = Uma região de { $pixels } píxeis em torno de ({ $x }, { $y }) difere da imagem certa, embora a imagem certa explique { $score } dos píxeis do objeto: há algo desenhado por cima do objeto ali, ou essa parte dele está errada.
+diagnose-verdict-right-lossy = Certa, tal como foi guardada com perdas (JPEG): a imagem certa explica { $score } dos píxeis do objeto a menos de { $levels } níveis ({ $strict } a menos de { $tolerance }), e as diferenças são ruído, não uma alteração da imagem.
 
 ## phonglab check: o trabalho de um aluno verificado
 
