@@ -101,9 +101,14 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
     }
 }
 
-/// The ids of the mistakes this scene cannot show (with the light, for one made per light).
-fn invisible(d: &Diagnosis) -> Vec<String> {
-    d.tried.iter().filter(|t| t.matched.is_none()).map(Tried::label).collect()
+/// The mistakes this scene cannot show, for JSON: each its id, and `light` for one made per
+/// light (separate fields, so that a script reads the id as the table's).
+fn invisible(d: &Diagnosis) -> Vec<serde_json::Value> {
+    let entry = |t: &Tried| match t.light() {
+        Some(light) => serde_json::json!({ "id": t.id(), "light": light }),
+        None => serde_json::json!({ "id": t.id() }),
+    };
+    d.tried.iter().filter(|t| t.matched.is_none()).map(entry).collect()
 }
 
 /// The pixel's bytes as "(r, g, b)".

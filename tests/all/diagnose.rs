@@ -504,3 +504,24 @@ fn a_right_picture_saved_as_jpeg_is_right_and_a_mistakes_or_a_tone_curve_is_not(
     assert_ne!(v["verdict"], "right", "{v:#}");
     assert!(v["causes"].as_array().unwrap().iter().all(|c| c["id"] != "emission-added"), "{v:#}");
 }
+
+#[test]
+fn the_jsons_rows_not_visible_give_the_id_and_the_light_apart() {
+    let dir = scratch("not-visible");
+    let right = write(&dir, "right.toml", &shipped("three-lights"));
+    let image = dir.join("right.png");
+    student_picture(&right, &image);
+    let v = diagnose_json(&right, &image);
+    let hidden = v["not_visible"].as_array().unwrap();
+    assert!(hidden.iter().any(|h| h["light"].as_u64().is_some()), "{v:#}");
+    assert!(hidden.iter().any(|h| h["light"].is_null()), "{v:#}");
+    for h in hidden {
+        let id = h["id"].as_str().unwrap();
+        // The table's own id, nothing appended.
+        assert!(phonglab_core::teach::diagnose::MISTAKES.iter().any(|m| m.id == id), "{h}");
+        let per_light = phonglab_core::teach::diagnose::MISTAKES
+            .iter()
+            .any(|m| m.id == id && m.scope == phonglab_core::teach::diagnose::Scope::EachLight);
+        assert_eq!(h["light"].as_u64().is_some(), per_light, "{h}");
+    }
+}

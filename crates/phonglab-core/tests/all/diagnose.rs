@@ -653,3 +653,31 @@ fn a_tone_curve_is_not_an_emission() {
     let emission = d.tried.iter().find(|t| t.id() == "emission-added");
     assert!(emission.is_none_or(|t| t.at.emission == [0.0; 3]), "{emission:?}");
 }
+
+#[test]
+fn a_light_made_negligible_is_quoted_as_a_least_value_and_the_rows_quote_the_scenes_own_numbers() {
+    // The spotlight scene with its own shininess and diffuse colour, its spot turned away:
+    // nothing of the light reaches the teapot, which any attenuation large enough draws.
+    let mut right = shipped("spotlight");
+    right.scene.material.shininess = 20.0;
+    right.scene.material.diffuse = DVec4::new(0.5, 0.25, 0.1, 1.0);
+    let mut wrong = right.clone();
+    wrong.scene.lights[0].spot_direction = -wrong.scene.lights[0].spot_direction;
+    let (_, rgba, _) = wrong.draw(SIZE).expect("drawn");
+    let found = diagnose(&right, &shifted_and_noised(&rgba, right.background8()), SIZE).expect("diagnosed");
+    let attenuations: Vec<&Tried> = found
+        .tried
+        .iter()
+        .filter(|t| t.id().starts_with("attenuation-") && t.id().ends_with("-differs"))
+        .filter(|t| t.matched.is_some_and(|m| m.score >= RIGHT_AT))
+        .collect();
+    assert!(!attenuations.is_empty(), "{:?}", found.tried);
+    for t in attenuations {
+        let words = t.words();
+        assert!(words.contains(" or more (the light is negligible"), "{words}");
+    }
+    let words = |id: &str| found.tried.iter().find(|t| t.id() == id).map(Tried::words).expect(id);
+    assert!(words("shininess-fraction").contains("(0.156 for 20)"), "{}", words("shininess-fraction"));
+    let diffuse = words("material-colour-0-255");
+    assert!(diffuse.contains("((128, 64, 26) for (0.50, 0.25, 0.10))"), "{diffuse}");
+}

@@ -24,7 +24,7 @@ mod sides;
 mod slips;
 mod values;
 
-pub use change::At;
+pub use change::{At, Given};
 pub use colours::Colours;
 pub use drawing::Drawing;
 pub use mistakes::{MISTAKES, PictureMistake, Scope, offered};
@@ -231,7 +231,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         apart: outline::apart(&outline::mask(&picture, Some(&covered), bg, size), &outline, size),
         drawn: true,
     };
-    for (mistake, at) in offered(right, At { light: 0, emission, colours, values, sides }) {
+    for (mistake, at) in offered(right, At { light: 0, emission, colours, values, sides, given: Given::of(right) }) {
         let mut d = right.clone();
         (MISTAKES[mistake].apply)(&mut d, at);
         let (_, wrong, wrong_covered) = d.draw(size)?;
