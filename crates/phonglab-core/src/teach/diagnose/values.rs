@@ -58,10 +58,10 @@ pub struct Values {
 /// An attenuation coefficient so large that nothing of its light reaches the object.
 const NEGLIGIBLE: f64 = 1e6;
 
-/// Has a picture at this distance from the image the same as the light made negligible
-/// (`huge`): within a hundredth of a level on the mean, or 1 %?
-fn as_close(distance: f64, huge: f64) -> bool {
-    distance <= huge + 0.01 + 0.01 * huge
+/// Is a picture at `distance` from the image as close as one at `best`: within a
+/// hundredth of a level on the mean, or 1 %?
+fn as_close(distance: f64, best: f64) -> bool {
+    distance <= best + 0.01 + 0.01 * best
 }
 
 /// A fitted number as text: three significant digits at most, no trailing zeros.
@@ -145,6 +145,10 @@ fn fit_one(
         Ok(compare(&picture, &covered, image, bg, size).miss)
     };
     let own_distance = measure(own)?;
+    // Nothing comes closer than a picture that misses by nothing.
+    if own_distance == 0.0 {
+        return Ok(None);
+    }
     let mut tried: Vec<(f64, f64)> = Vec::with_capacity(grid.len());
     for &v in grid {
         tried.push((v, measure(v)?));
@@ -169,7 +173,7 @@ fn fit_one(
     }
     // An attenuation whose picture is the light's absence tells only a least value: the
     // grid's least whose picture is as close.
-    if let Some(huge) = huge.map(measure).transpose()?.filter(|&h| as_close(at, h)) {
+    if let Some(huge) = huge.map(measure).transpose()?.filter(|&h| as_close(h, at)) {
         let least =
             tried.iter().filter(|&&(v, d)| v >= own && as_close(d, huge)).map(|&(v, _)| v).fold(value, f64::min);
         return Ok(Some((least, true)));
