@@ -20,7 +20,7 @@ pub const OUTLINE_AT: f64 = 0.15;
 /// region: more than a JPEG of quality 90 moves a pixel of a right picture (at most 11).
 const REGION_LEVELS: u8 = 16;
 
-/// The least solid region (pixels differing by [`REGION_LEVELS`] with their 8 neighbours)
+/// The least solid region (pixels differing by 16 levels with their 8 neighbours)
 /// taken as a defect: a square of 6 x 6 pixels painted on the object. Measured
 /// (docs/guide.md): on right pictures shifted a pixel, noised, resized, saved as JPEG of
 /// quality 90 or 95, and Mesa's (8 of a blind set), there is none; JPEG of quality 75 makes
