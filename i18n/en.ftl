@@ -532,6 +532,7 @@ budget-from-option = as --memory-budget asks
 budget-from-system = half of the memory available
 budget-from-limit = half of the address space left under this process's limit, ulimit -v
 budget-over-limit = --memory-budget { $budget } is more than this process may still take under its limit, ulimit -v ({ $room } left): a run past it would stop half-way. Lower --memory-budget, or raise the limit (ulimit -v)
+budget-size-negative = { $value }: a size cannot be negative; write a size such as 512M, 8G or 1.5G
 budget-size-refused = { $value }: write a size such as 512M, 8G or 1.5G
 budget-what-render = a { $width } x { $height } picture of { $count ->
         [one] one triangle

@@ -532,6 +532,7 @@ budget-from-option = como pede --memory-budget
 budget-from-system = metade da memória disponível
 budget-from-limit = metade do espaço de endereçamento que resta abaixo do limite deste processo, ulimit -v
 budget-over-limit = --memory-budget { $budget } é mais do que este processo ainda pode ocupar sob o seu limite, ulimit -v (restam { $room }): uma execução que o ultrapasse pararia no meio. Diminua --memory-budget ou aumente o limite (ulimit -v)
+budget-size-negative = { $value }: um tamanho não pode ser negativo; escreva um tamanho como 512M, 8G ou 1,5G
 budget-size-refused = { $value }: escreva um tamanho como 512M, 8G ou 1,5G
 budget-what-render = uma imagem de { $width } x { $height } com { $count ->
         [one] um triângulo

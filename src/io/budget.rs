@@ -143,6 +143,9 @@ pub fn parse_size(text: &str) -> Result<u64, String> {
         _ => return Err(refused()),
     };
     let bytes = number * (1u64 << shift) as f64;
+    if bytes < 0.0 {
+        return Err(t!("budget-size-negative", value = format!("{text:?}")));
+    }
     if !(bytes.is_finite() && bytes >= 1.0 && bytes < u64::MAX as f64) {
         return Err(refused());
     }

@@ -209,6 +209,22 @@ fn a_refusal_says_the_value_once_and_names_what_went_wrong() {
     }
 }
 
+/// A negative memory budget is a value refused as no size (it was "has no option -1"),
+/// in every language.
+#[test]
+fn a_negative_memory_budget_is_said_to_be_negative() {
+    for (lang, want) in
+        [("en", "cannot be negative"), ("pt-PT", "não pode ser negativo"), ("pt-BR", "não pode ser negativo")]
+    {
+        for value in ["-1G", "-1"] {
+            let (code, said) = refused(lang, &["exercise", "--memory-budget", value]);
+            assert_eq!(code, 2);
+            assert!(said.contains(want) && said.contains(&format!("\"{value}\"")), "{lang}: {said}");
+            assert!(!said.contains("has no option") && !said.contains("não tem a opção"), "{lang}: {said}");
+        }
+    }
+}
+
 /// A number out of its range is refused with the range in words, whatever is wrong with
 /// it: negative (`--seed -1` was "no option -1"), past the type (`--count` with twenty
 /// digits), or not whole (`--variants 1e20`), in every language.

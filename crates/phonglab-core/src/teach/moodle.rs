@@ -43,9 +43,19 @@ impl Rounding {
         match self {
             Rounding::Quiz => (quiz::digits_needed(&[x]), quiz_tolerance(x)),
             Rounding::Exam => {
+                // Exactly half a unit of the last digit the key shows (every digit of a
+                // whole part): the honest roundings with Moodle's slack ([`MOODLE_SLACK`]),
+                // never the quiz's 0.01 %, which above 5.05 in the leading digits takes a
+                // neighbour (0.7839 for 0.78384). 0 takes half a unit of the eighth decimal,
+                // below any other exam value.
                 let x = self.answer(x);
-                let half_unit = if x == 0.0 { 0.0 } else { half_unit(x, EXAM_DIGITS) };
-                (EXAM_DIGITS, to_significant(quiz_tolerance(x).max(half_unit * TIE_MARGIN), TOLERANCE_DIGITS))
+                let shown = EXAM_DIGITS.max(whole_digits(x));
+                let tolerance = if x == 0.0 {
+                    0.5 * 10f64.powi(-(crate::teach::exam::MAX_DECIMALS as i32))
+                } else {
+                    half_unit(x, shown)
+                };
+                (EXAM_DIGITS, to_significant(tolerance, TOLERANCE_DIGITS))
             }
         }
     }
@@ -119,11 +129,18 @@ pub fn to_significant(x: f64, digits: usize) -> f64 {
     format!("{:.*e}", digits.max(1) - 1, x).parse().unwrap_or(x)
 }
 
-/// An exam's tolerance is this many half units of the fourth digit: a value on a tie
-/// (0.14625) rounds to either neighbour (0.1462 or 0.1463), each exactly half a unit away,
-/// which Moodle's float comparison (`answer - tol <= x <= answer + tol`) may refuse by a
-/// hair; 1 % more takes both and no other four-digit number.
-pub const TIE_MARGIN: f64 = 1.01;
+/// Moodle's own slack on a nominal tolerance (`qtype_numerical_answer::get_tolerance_interval`:
+/// the tolerance grows by 1e-14, PHP's `precision`, of the larger of itself and the
+/// answer). It makes an exam's tolerance of exactly half a unit take both neighbours of a
+/// tie (0.14625: 0.1462 and 0.1463, half-up or as the double rounds), which a bare float
+/// comparison may refuse by a hair, and still no other four-digit number: an exam value ends
+/// in at most eight decimals, so any other is at least half a unit and 1e-8 away.
+pub const MOODLE_SLACK: f64 = 1e-14;
+
+/// The digits of `x`'s whole part (0 for |x| < 1): a key shows them all (12345).
+fn whole_digits(x: f64) -> usize {
+    if x.abs() < 1.0 { 0 } else { (x.abs().log10().floor() as i64 + 1).max(0) as usize }
+}
 
 /// Half a unit of `x`'s last digit when it is written to `digits` significant digits.
 pub fn half_unit(x: f64, digits: usize) -> f64 {
@@ -407,7 +424,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_part_takes_the_quizs_tolerance_or_a_hair_over_half_a_unit_of_the_fourth_digit() {
+    fn a_part_takes_the_quizs_tolerance_or_half_a_unit_of_the_fourth_digit() {
         assert_eq!(Rounding::Quiz.of(0.5), (1, 5e-5));
         assert_eq!(Rounding::Quiz.of(0.0), (1, 1e-6));
         let (digits, tolerance) = Rounding::Quiz.of(0.79220526);
@@ -415,7 +432,7 @@ mod tests {
         assert!((tolerance - 0.79220526e-4).abs() < 1e-15);
         let (digits, tolerance) = Rounding::Exam.of(38.2);
         assert_eq!(digits, 4);
-        assert!((tolerance - 0.005 * TIE_MARGIN).abs() < 1e-15, "1.01 half units of 38.20's last digit: {tolerance}");
+        assert_eq!(tolerance, 0.005, "half a unit of 38.20's last digit: {tolerance}");
         // 0.12345 rounds to 0.1235 (or 0.1234): half a unit takes both, the quiz's rule neither.
         let (_, tolerance) = Rounding::Exam.of(0.12345);
         assert!((0.1235f64 - 0.12345).abs() <= tolerance + 1e-15 && tolerance < 6e-5);
