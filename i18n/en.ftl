@@ -721,6 +721,8 @@ err-no-such-light = --light { $light }: { $count ->
 err-study-stopped = the study stopped
 err-rules = --rules { $value }: try worksheet or opengl
 err-effects = --effects: { $value } is not one of: { $names }
+err-effects-empty = --effects has an empty name (a comma with nothing after it or before it): write the names from { $names }, separated by commas.
+err-out-is-a-file = --out { $out } is a file, and phonglab exercise writes its files into a folder: give a folder, or the name of a new one (nothing was written).
 err-level = --level is 1 to 4
 err-target = --target { $value }: try glsl or wgsl
 err-shading = --shading { $value }: try gouraud or phong
@@ -1049,10 +1051,15 @@ moodle-not-ours = { $path } was not written by phonglab, or has changed since: p
 set-not-ours = { $path } was not written by phonglab, or was edited since it wrote it: phonglab does not replace it, and wrote nothing. To write the set here, move that file away (it keeps your edits), or choose another folder.
 err-category-blank = --category needs a name: it is empty or only spaces.
 err-category-slash = --category cannot start or end with "/": Moodle would read the category's path wrongly.
+err-category-control = --category has a control character, { $character }: a category's name is one line of text, without line breaks or tabs.
 err-category-long = --category is { $length } characters long; Moodle keeps a category's name in at most { $max }.
 err-worksheet-moodle = --worksheet writes exercise 0 into the sheets only; a file for Moodle takes --level or --effects.
 budget-what-moodle = a file for Moodle of { $count } exercises (about { $size } on disk)
-budget-what-sheets = { $count } exercise sheets with their keys and the two PDFs (about { $size } on disk)
+budget-what-sheets = a set of { $count } exercise sheets with their keys and the two PDFs (about { $size } on disk)
+budget-what-wrong = a set of { $count ->
+    [one] one picture
+   *[other] { $count } pictures
+} with one mistake each
 
 ## arg-errors
 
@@ -1069,5 +1076,5 @@ arg-error-unknown-command = phonglab has no command { $name }.
 arg-error-missing = Missing: { $args }.
 arg-error-conflict = The option { $arg } cannot be used with { $other }.
 arg-error-twice = { $arg } is given twice: give it once.
-arg-error-unexpected = phonglab did not expect { $arg } here: it is no option, nor the value of one.
+arg-error-unexpected = phonglab did not expect { $arg } here: it is not an option, nor the value of one.
 arg-error-more = See { $help }.

@@ -721,6 +721,8 @@ err-no-such-light = --light { $light }: { $count ->
 err-study-stopped = o estudo parou
 err-rules = --rules { $value }: experimente worksheet ou opengl
 err-effects = --effects: { $value } não é um destes: { $names }
+err-effects-empty = --effects tem um nome vazio (uma vírgula sem nada depois ou antes dela): escreva os nomes dentre { $names }, separados por vírgulas.
+err-out-is-a-file = --out { $out } é um arquivo, e o phonglab exercise grava os seus arquivos em uma pasta: indique uma pasta, ou o nome de uma pasta nova (nada foi gravado).
 err-level = --level vai de 1 a 4
 err-target = --target { $value }: experimente glsl ou wgsl
 err-shading = --shading { $value }: experimente gouraud ou phong
@@ -1049,10 +1051,15 @@ moodle-not-ours = { $path } não foi escrito pelo phonglab, ou foi alterado depo
 set-not-ours = { $path } não foi escrito pelo phonglab, ou foi editado depois que ele o escreveu: o phonglab não o substitui, e não escreveu nada. Para escrever as listas aqui, mova esse arquivo para outro lugar (ele guarda suas alterações) ou escolha outra pasta.
 err-category-blank = --category precisa de um nome: está vazio ou só tem espaços.
 err-category-slash = --category não pode começar nem terminar com "/": o Moodle leria errado o caminho da categoria.
+err-category-control = --category tem um caractere de controle, { $character }: o nome de uma categoria é uma só linha de texto, sem quebras de linha nem tabulações.
 err-category-long = --category tem { $length } caracteres; o Moodle guarda o nome de uma categoria em no máximo { $max }.
 err-worksheet-moodle = --worksheet escreve o exercício 0 só nas listas; um arquivo para o Moodle usa --level ou --effects.
 budget-what-moodle = um arquivo para o Moodle com { $count } exercícios (cerca de { $size } em disco)
-budget-what-sheets = { $count } folhas de exercícios com as respostas e os dois PDFs (cerca de { $size } em disco)
+budget-what-sheets = um conjunto de { $count } listas de exercícios com os gabaritos e os dois PDFs (cerca de { $size } em disco)
+budget-what-wrong = um conjunto de { $count ->
+    [one] uma imagem
+   *[other] { $count } imagens
+} com um erro cada
 
 ## arg-errors
 

@@ -721,6 +721,8 @@ err-no-such-light = --light { $light }: { $count ->
 err-study-stopped = o estudo parou
 err-rules = --rules { $value }: experimente worksheet ou opengl
 err-effects = --effects: { $value } não é um destes: { $names }
+err-effects-empty = --effects tem um nome vazio (uma vírgula sem nada depois ou antes dela): escreva os nomes de entre { $names }, separados por vírgulas.
+err-out-is-a-file = --out { $out } é um ficheiro, e o phonglab exercise escreve os seus ficheiros numa pasta: indique uma pasta, ou o nome de uma pasta nova (nada foi escrito).
 err-level = --level vai de 1 a 4
 err-target = --target { $value }: experimente glsl ou wgsl
 err-shading = --shading { $value }: experimente gouraud ou phong
@@ -1049,10 +1051,15 @@ moodle-not-ours = { $path } não foi escrito pelo phonglab, ou foi alterado desd
 set-not-ours = { $path } não foi escrito pelo phonglab, ou foi editado depois de ele o escrever: o phonglab não o substitui, e não escreveu nada. Para escrever as fichas aqui, mova esse ficheiro para outro lado (guarda as suas alterações), ou escolha outra pasta.
 err-category-blank = --category precisa de um nome: está vazio ou só tem espaços.
 err-category-slash = --category não pode começar nem acabar em "/": o Moodle leria mal o caminho da categoria.
+err-category-control = --category tem um carácter de controlo, { $character }: o nome de uma categoria é uma só linha de texto, sem quebras de linha nem tabulações.
 err-category-long = --category tem { $length } caracteres; o Moodle guarda o nome de uma categoria em { $max }, no máximo.
 err-worksheet-moodle = --worksheet escreve o exercício 0 só nas fichas; um ficheiro para o Moodle usa --level ou --effects.
 budget-what-moodle = um ficheiro para o Moodle com { $count } exercícios (cerca de { $size } em disco)
-budget-what-sheets = { $count } fichas de exercícios com as respostas e os dois PDF (cerca de { $size } em disco)
+budget-what-sheets = um conjunto de { $count } fichas de exercícios com as chaves e os dois PDF (cerca de { $size } em disco)
+budget-what-wrong = um conjunto de { $count ->
+    [one] uma imagem
+   *[other] { $count } imagens
+} com um erro cada
 
 ## arg-errors
 

@@ -26,6 +26,12 @@ static BUDGET: AtomicU64 = AtomicU64::new(0);
 /// `--memory-budget`, 2 the address-space limit (`ulimit -v`).
 static FROM: AtomicU64 = AtomicU64::new(0);
 
+/// The process's own part, besides what a command allocates for what it is asked: the
+/// code, the catalogues, the fonts. `phonglab --version` peaks at 27 MB resident (debug
+/// build, `/usr/bin/time -v`); a command that writes files, at up to 40 MB before its
+/// first exercise. Every estimate that says "never below" what a run takes counts it.
+pub const PROCESS: u64 = 48 << 20;
+
 /// When the system does not say how much memory is available.
 const FALLBACK: u64 = 4 << 30;
 

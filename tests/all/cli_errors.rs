@@ -278,9 +278,10 @@ fn an_out_that_is_a_file_is_called_a_file() {
     let file = dir.join("afile");
     std::fs::write(&file, "mine").unwrap();
     let words = [
-        ("en", "it is a file, not a folder"),
-        ("pt-PT", "é um ficheiro, não uma pasta"),
-        ("pt-BR", "é um arquivo, não uma pasta"),
+        // One sentence (issue 60: it was "cannot write afile: create the folder: it is a file…").
+        ("en", "is a file, and phonglab exercise writes its files into a folder"),
+        ("pt-PT", "é um ficheiro, e o phonglab exercise escreve os seus ficheiros numa pasta"),
+        ("pt-BR", "é um arquivo, e o phonglab exercise grava os seus arquivos em uma pasta"),
     ];
     for format in ["sheets", "gift", "moodle-xml"] {
         for (lang, words) in words {

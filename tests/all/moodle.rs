@@ -397,6 +397,12 @@ fn a_gift_title_keeps_every_character_as_written() {
 #[test]
 fn a_hostile_category_on_the_command_line_leaves_the_file_whole() {
     let dir = out_dir("hostile-cli");
+    // Issue 60: a control character (a line break) in a category is refused; the rest of
+    // the hostile name is written whole.
+    let e = phonglab(&["exercise", "--format", "gift", "--category", HOSTILE, "--out", dir.to_str().unwrap()]);
+    assert!(!e.status.success() && String::from_utf8_lossy(&e.stderr).contains("control character"));
+    let hostile: String = HOSTILE.chars().filter(|c| !c.is_control()).collect();
+    let hostile = hostile.as_str();
     let args = [
         "exercise",
         "--format",
@@ -408,11 +414,11 @@ fn a_hostile_category_on_the_command_line_leaves_the_file_whole() {
         "--variants",
         "2",
         "--category",
-        HOSTILE,
+        hostile,
     ];
     run_ok(phonglab(&[&args[..], &["--out", dir.to_str().unwrap()]].concat()));
     let qs = read_xml(&dir.join("questions.xml"));
-    let segment = phonglab_core::escape::printable(HOSTILE).replace('/', "//");
+    let segment = phonglab_core::escape::printable(hostile).replace('/', "//");
     assert_eq!(qs[0]["category"], format!("$course$/top/{segment}/exercise 1"));
     assert_eq!(qs.iter().filter(|q| q["type"] == "cloze").count(), 2);
     let gift = out_dir("hostile-cli-gift");
@@ -425,7 +431,7 @@ fn a_hostile_category_on_the_command_line_leaves_the_file_whole() {
         "--count",
         "1",
         "--category",
-        HOSTILE,
+        hostile,
         "--out",
         gift.to_str().unwrap(),
     ]));

@@ -160,7 +160,7 @@ formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate };
 formula-specular-normalised = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns · (ns + 8)/(8π)   ({ $gate }; f = { $f }; energy-conserving Blinn-Phong: the narrower the highlight, the brighter, the light it reflects the same; OpenGL has no such factor)
 formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: the terms are divided by k0 + k1 d + k2 d²)
 formula-at-directional = at = 1   (directional)
-formula-spot = spot = max(-L . s, 0)^e if -L . s >= cos(cutoff) = { $cutoff }, else 0;  -L . s = { $angle }
+formula-spot = spot = max(−L · s, 0)^e if −L · s >= cos(cutoff) = { $cutoff }, else 0;  −L · s = { $angle }
 formula-spot-none = spot = 1   (cutoff 180: not a spotlight)
 formula-share-separate = Ilight = spot · (Iamb + Idif) / at   (specular goes to the secondary colour)
 formula-scene-ambient = a_cm a_cs   (light-model ambient)
@@ -467,7 +467,7 @@ moodle-general-feedback = Each field's feedback gives its step's formula; the wo
 moodle-picture-right = Drawn right
 moodle-picture-wrong = Drawn with one mistake
 moodle-picture-question = Which one mistake makes the right-hand picture?
-moodle-choice-not = Not this one. With this mistake the picture would look like this: { $why }
+moodle-choice-not = Not this one. This mistake would change the picture in another way: { $why }
 
 ## cli-out
 

@@ -160,7 +160,7 @@ formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate };
 formula-specular-normalised = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns · (ns + 8)/(8π)   ({ $gate }; f = { $f }; Blinn-Phong que conserva a energia: quanto mais estreito o brilho, mais intenso, e a luz que ele reflete se mantém; o OpenGL não tem esse fator)
 formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: as componentes são divididas por k0 + k1 d + k2 d²)
 formula-at-directional = at = 1   (direcional)
-formula-spot = spot = max(-L . s, 0)^e se -L . s >= cos(cutoff) = { $cutoff }, senão 0;  -L . s = { $angle }
+formula-spot = spot = max(−L · s, 0)^e se −L · s >= cos(cutoff) = { $cutoff }, senão 0;  −L · s = { $angle }
 formula-spot-none = spot = 1   (abertura de 180°: não é um foco)
 formula-share-separate = Ilight = spot · (Iamb + Idif) / at   (a especular vai para a cor secundária)
 formula-scene-ambient = a_cm a_cs   (ambiente do modelo de iluminação)
@@ -467,7 +467,7 @@ moodle-general-feedback = O feedback de cada campo dá a fórmula do seu passo; 
 moodle-picture-right = Desenhada corretamente
 moodle-picture-wrong = Desenhada com um erro
 moodle-picture-question = Que erro produz a imagem da direita?
-moodle-choice-not = Não é este. Com este erro, a imagem ficaria assim: { $why }
+moodle-choice-not = Não é este. Esse erro mudaria a imagem de outro jeito: { $why }
 
 ## cli-out
 

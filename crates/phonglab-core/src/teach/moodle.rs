@@ -323,6 +323,22 @@ fn feedback(ex: &Exercise, key: &Explanation, k: usize) -> (String, String) {
     (right, wrong)
 }
 
+/// The significant digits of the key's worked calculation (`phonglab explain`, the
+/// sheets' keys).
+pub const KEY_DIGITS: usize = 8;
+
+/// A step's value as the key prints it ([`crate::equation::explain::printed_components`]):
+/// a component below the largest one's last printed digit, or below a millionth of the
+/// quiz's absolute tolerance (a value alone), is 0, and -0 is 0; so the engine's
+/// `-0.000000000000001` next to a 2 is the key's 0, never written as an answer.
+pub fn as_the_key_prints(value: &[f64]) -> Vec<f64> {
+    let resolution = quiz::TOLERANCE.1 * 1e-6;
+    crate::equation::explain::printed_components(value, KEY_DIGITS)
+        .into_iter()
+        .map(|x| if x.abs() < resolution { 0.0 } else { x })
+        .collect()
+}
+
 /// The parts of an exercise: one per component of every step the sheet asks, numbered as
 /// consecutive numbers.
 pub fn parts(ex: &Exercise, rounding: Rounding) -> Vec<Part> {
@@ -335,6 +351,7 @@ pub fn parts(ex: &Exercise, rounding: Rounding) -> Vec<Part> {
         let st = &key.steps[k];
         let Some(value) = &st.value else { continue };
         let (right, wrong) = feedback(ex, key, k);
+        let value = &as_the_key_prints(value);
         let n = asked_components(st.kind, value);
         let asked: Vec<(usize, f64)> = value.iter().take(n).map(|&x| rounding.of(x)).collect();
         let digits = asked.iter().map(|(d, _)| *d).max().unwrap_or(1);
@@ -438,6 +455,17 @@ mod tests {
         assert!((0.1235f64 - 0.12345).abs() <= tolerance + 1e-15 && tolerance < 6e-5);
         assert_eq!(Rounding::Exam.answer(0.8 * 0.5 - 1.0), -0.6, "the exact decimal, not -0.6000000000000001");
         assert_eq!(Rounding::Exam.answer(0.42024960000000006), 0.4202496);
+    }
+
+    /// Issue 60: `-0.000000000000001` (level 1's vertexPos x) was written as the right
+    /// answer where the key says 0.
+    #[test]
+    fn float_noise_is_the_keys_zero_never_minus_zero() {
+        assert_eq!(as_the_key_prints(&[-1e-15, 2.0, -3.5]), vec![0.0, 2.0, -3.5]);
+        assert!(as_the_key_prints(&[-1e-15, 2.0])[0].is_sign_positive(), "never -0");
+        assert!(as_the_key_prints(&[-0.0])[0].is_sign_positive(), "never -0");
+        assert_eq!(as_the_key_prints(&[-1e-15]), vec![0.0], "a value alone");
+        assert_eq!(as_the_key_prints(&[1e-5, 0.5]), vec![1e-5, 0.5], "a small value the key prints is kept");
     }
 
     #[test]
