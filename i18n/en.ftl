@@ -778,7 +778,7 @@ cost-chart-title = { $object }: time per frame against mean error ({ $size }x{ $
 ## cli
 
 cli-about = An explorer for OpenGL's fixed-function vertex lighting and Gouraud/Phong/Flat shading
-cli-lang = The language of what phonglab says: en, pt-PT or pt-BR (default: the system's, from LC_ALL, LC_MESSAGES or LANG). JSON, CSV and scene files keep English keys
+cli-lang = The language of what phonglab says: en, pt-PT or pt-BR (default: the system's: LC_ALL, LC_MESSAGES or LANG where one is set, else on Windows the user's display language and on macOS their preferred language). JSON, CSV and scene files keep English keys
 cli-decimal = How numbers meant for people are written: point (0.5) or comma (0,5); default: the language's (a comma in Portuguese). Typed numbers are read with either
 cli-memory-budget = The memory a command may take for what it is asked (a picture's size, a mesh): 512M, 8G, ...; default: half of what the system has available. Past it, a command says how much it needs and does not start
 cli-eval = Evaluate glref cases (JSON) and print the lit colours as JSON

@@ -778,7 +778,7 @@ cost-chart-title = { $object }: tempo por imagem contra erro médio ({ $size }x{
 ## cli
 
 cli-about = Um explorador da iluminação por vértice da função fixa do OpenGL e dos sombreamentos de Gouraud, Phong e Flat
-cli-lang = A língua do que o phonglab diz: en, pt-PT ou pt-BR (por omissão, a do sistema: LC_ALL, LC_MESSAGES ou LANG). JSON, CSV e ficheiros de cena mantêm as chaves em inglês
+cli-lang = A língua do que o phonglab diz: en, pt-PT ou pt-BR (por omissão, a do sistema: LC_ALL, LC_MESSAGES ou LANG, se alguma estiver definida; senão, no Windows, a língua de apresentação do utilizador e, no macOS, a sua língua preferida). JSON, CSV e ficheiros de cena mantêm as chaves em inglês
 cli-decimal = Como se escrevem os números para pessoas: point (0.5) ou comma (0,5); por omissão, o da língua (vírgula em português). Os números escritos leem-se com qualquer um
 cli-memory-budget = A memória que um comando pode ocupar com o que lhe é pedido (o tamanho de uma imagem, uma malha): 512M, 8G, ...; por omissão: metade da que o sistema tem disponível. Acima dela, um comando diz quanto precisa e não começa
 cli-eval = Calcular casos glref (JSON) e imprimir as cores iluminadas em JSON
