@@ -384,7 +384,10 @@ quiz-key = key: { $name } = { $value }
 
 ## calculation
 
-plan-heading = Specialised plan: { $computed } effects computed, { $skipped } skipped
+plan-heading = Specialised plan: { $computed ->
+        [one] 1 effect computed
+       *[other] { $computed } effects computed
+    }, { $skipped } skipped
 plan-light = light { $index }:{" "}
 plan-computed = computed  { $what }
 plan-skipped = skipped   { $what }
@@ -416,7 +419,11 @@ teapot-grid = Teapot grid
 cylinder-slices = Cylinder slices
 cylinder-stacks = Cylinder stacks
 caps = Caps
-mesh-triangles = { $count } triangles: { $notes }
+mesh-triangles =
+    { $count ->
+        [one] 1 triangle
+       *[other] { $count } triangles
+    }: { $notes }
 key-hint = key { $key }
 mesh-tip = { $path } (open another under View options, or drop an .obj file)
 close-mesh = Close your mesh
@@ -467,7 +474,11 @@ cpu-software-adapter = the adapter ({ $adapter }) is a software one, no faster t
 
 not-opened-worksheet = Not opened: { $why }. Showing the worksheet instead.
 not-opened = Not opened: { $why }. The current scene is unchanged.
-mesh-summary = { $triangles } triangles, { $vertices } vertices; { $notes }
+mesh-summary =
+    { $triangles ->
+        [one] 1 triangle
+       *[other] { $triangles } triangles
+    }, { $vertices } vertices; { $notes }
 opened-mesh = Opened the mesh { $path }: { $what }.
 not-text = { $path } is not a text file
 saved = Saved { $path }.
@@ -608,7 +619,10 @@ copy = Copy
 copy-program-hover = Copy the program to the clipboard
 shader-stages-phong = Phong (per fragment) shading: only the stages this scene needs
 shader-stages-vertex = per vertex shading: only the stages this scene needs
-shader-last-change = The last change added { $added } lines (highlighted) and removed { $removed }.
+shader-last-change = The last change added { $added ->
+        [one] 1 line
+       *[other] { $added } lines
+    } (highlighted) and removed { $removed }.
 shader-removed = Removed by the last change:
 session-other-window = Another phonglab window is open on this session ({ $dir }): this window shows its last saved scene but will not save its session. Use Save to keep your work in a file.
 session-folder-unusable = The session folder { $dir } cannot be used ({ $error }): this window will not save its session.
