@@ -353,8 +353,13 @@ fn counts_take_the_number_their_language_gives_them() {
     }
     assert_eq!(said(Lang::PtBr, "mesh-triangles", &[("count", 1)]).split(':').next(), Some("1 triângulo"));
     assert_eq!(said(Lang::PtBr, "mesh-triangles", &[("count", 0)]).split(':').next(), Some("0 triângulos"));
-    assert!(said(Lang::PtPt, "shader-last-change", &[("added", 1), ("removed", 2)]).contains("juntou 1 linha (destacada)"));
-    assert!(said(Lang::PtBr, "quiz-score", &[("right", 0), ("all", 5), ("answered", 0), ("shown", 0)]).contains("0 respondidos"));
+    assert!(
+        said(Lang::PtPt, "shader-last-change", &[("added", 1), ("removed", 2)]).contains("juntou 1 linha (destacada)")
+    );
+    assert!(
+        said(Lang::PtBr, "quiz-score", &[("right", 0), ("all", 5), ("answered", 0), ("shown", 0)])
+            .contains("0 respondidos")
+    );
 }
 
 /// Every pt-BR selector with a [one] variant names [0] right before it: CLDR's pt rule

@@ -184,5 +184,8 @@ fn save_suggests_the_name_a_double_click_opens() {
         .and_then(|rest| rest.split('"').next())
         .expect("a glob in the MIME type");
     assert_eq!(ending, ".phonglab.toml");
-    assert!(SUGGESTED_SCENE_NAME.ends_with(ending) && SUGGESTED_SCENE_NAME.len() > ending.len(), "{SUGGESTED_SCENE_NAME}");
+    assert!(
+        SUGGESTED_SCENE_NAME.ends_with(ending) && SUGGESTED_SCENE_NAME.len() > ending.len(),
+        "{SUGGESTED_SCENE_NAME}"
+    );
 }
