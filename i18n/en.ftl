@@ -384,7 +384,10 @@ quiz-key = key: { $name } = { $value }
 
 ## calculation
 
-plan-heading = Specialised plan: { $computed } effects computed, { $skipped } skipped
+plan-heading = Specialised plan: { $computed ->
+        [one] 1 effect computed
+       *[other] { $computed } effects computed
+    }, { $skipped } skipped
 plan-light = light { $index }:{" "}
 plan-computed = computed  { $what }
 plan-skipped = skipped   { $what }
@@ -416,7 +419,11 @@ teapot-grid = Teapot grid
 cylinder-slices = Cylinder slices
 cylinder-stacks = Cylinder stacks
 caps = Caps
-mesh-triangles = { $count } triangles: { $notes }
+mesh-triangles =
+    { $count ->
+        [one] 1 triangle
+       *[other] { $count } triangles
+    }: { $notes }
 key-hint = key { $key }
 mesh-tip = { $path } (open another under View options, or drop an .obj file)
 close-mesh = Close your mesh
@@ -467,7 +474,11 @@ cpu-software-adapter = the adapter ({ $adapter }) is a software one, no faster t
 
 not-opened-worksheet = Not opened: { $why }. Showing the worksheet instead.
 not-opened = Not opened: { $why }. The current scene is unchanged.
-mesh-summary = { $triangles } triangles, { $vertices } vertices; { $notes }
+mesh-summary =
+    { $triangles ->
+        [one] 1 triangle
+       *[other] { $triangles } triangles
+    }, { $vertices } vertices; { $notes }
 opened-mesh = Opened the mesh { $path }: { $what }.
 not-text = { $path } is not a text file
 saved = Saved { $path }.
@@ -609,7 +620,10 @@ copy = Copy
 copy-program-hover = Copy the program to the clipboard
 shader-stages-phong = Phong (per fragment) shading: only the stages this scene needs
 shader-stages-vertex = per vertex shading: only the stages this scene needs
-shader-last-change = The last change added { $added } lines (highlighted) and removed { $removed }.
+shader-last-change = The last change added { $added ->
+        [one] 1 line
+       *[other] { $added } lines
+    } (highlighted) and removed { $removed }.
 shader-removed = Removed by the last change:
 session-other-window = Another phonglab window is open on this session ({ $dir }): this window shows its last saved scene but will not save its session. Use Save to keep your work in a file.
 session-folder-unusable = The session folder { $dir } cannot be used ({ $error }): this window will not save its session.
@@ -781,7 +795,7 @@ cost-chart-title = { $object }: time per frame against mean error ({ $size }x{ $
 ## cli
 
 cli-about = An explorer for OpenGL's fixed-function vertex lighting and Gouraud/Phong/Flat shading
-cli-lang = The language of what phonglab says: en, pt-PT or pt-BR (default: the system's, from LC_ALL, LC_MESSAGES or LANG). JSON, CSV and scene files keep English keys
+cli-lang = The language of what phonglab says: en, pt-PT or pt-BR (default: the system's: LC_ALL, LC_MESSAGES or LANG where one is set, else on Windows the user's display language and on macOS their preferred language). JSON, CSV and scene files keep English keys
 cli-decimal = How numbers meant for people are written: point (0.5) or comma (0,5); default: the language's (a comma in Portuguese). Typed numbers are read with either
 cli-memory-budget = The memory a command may take for what it is asked (a picture's size, a mesh): 512M, 8G, ...; default: half of what the system has available. Past it, a command says how much it needs and does not start
 cli-eval = Evaluate glref cases (JSON) and print the lit colours as JSON

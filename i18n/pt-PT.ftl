@@ -384,7 +384,13 @@ quiz-key = chave: { $name } = { $value }
 
 ## calculation
 
-plan-heading = Plano especializado: { $computed } efeitos calculados, { $skipped } saltados
+plan-heading = Plano especializado: { $computed ->
+        [one] 1 efeito calculado
+       *[other] { $computed } efeitos calculados
+    }, { $skipped ->
+        [one] 1 saltado
+       *[other] { $skipped } saltados
+    }
 plan-light = luz { $index }:{" "}
 plan-computed = calculado  { $what }
 plan-skipped = saltado   { $what }
@@ -416,7 +422,11 @@ teapot-grid = Grelha do bule
 cylinder-slices = Fatias do cilindro
 cylinder-stacks = Camadas do cilindro
 caps = Tampas
-mesh-triangles = { $count } triângulos: { $notes }
+mesh-triangles =
+    { $count ->
+        [one] 1 triângulo
+       *[other] { $count } triângulos
+    }: { $notes }
 key-hint = tecla { $key }
 mesh-tip = { $path } (abra outra em Opções da vista, ou largue um ficheiro .obj)
 close-mesh = Fechar a sua malha
@@ -467,7 +477,11 @@ cpu-software-adapter = o adaptador ({ $adapter }) é por software, não mais rá
 
 not-opened-worksheet = Não aberto: { $why }. Em vez disso, mostra-se a ficha.
 not-opened = Não aberto: { $why }. A cena atual não mudou.
-mesh-summary = { $triangles } triângulos, { $vertices } vértices; { $notes }
+mesh-summary =
+    { $triangles ->
+        [one] 1 triângulo
+       *[other] { $triangles } triângulos
+    }, { $vertices } vértices; { $notes }
 opened-mesh = Malha aberta: { $path }: { $what }.
 not-text = { $path } não é um ficheiro de texto
 saved = Guardado: { $path }.
@@ -609,7 +623,10 @@ copy = Copiar
 copy-program-hover = Copiar o programa para a área de transferência
 shader-stages-phong = Sombreamento de Phong (por fragmento): só as etapas de que esta cena precisa
 shader-stages-vertex = Sombreamento por vértice: só as etapas de que esta cena precisa
-shader-last-change = A última alteração juntou { $added } linhas (destacadas) e removeu { $removed }.
+shader-last-change = A última alteração juntou { $added ->
+        [one] 1 linha (destacada)
+       *[other] { $added } linhas (destacadas)
+    } e removeu { $removed }.
 shader-removed = Removido pela última alteração:
 session-other-window = Outra janela do phonglab está aberta nesta sessão ({ $dir }): esta janela mostra a última cena guardada mas não guardará a sua sessão. Use Guardar para manter o seu trabalho num ficheiro.
 session-folder-unusable = A pasta da sessão { $dir } não pode ser usada ({ $error }): esta janela não guardará a sua sessão.
@@ -781,7 +798,7 @@ cost-chart-title = { $object }: tempo por imagem contra erro médio ({ $size }x{
 ## cli
 
 cli-about = Um explorador da iluminação por vértice da função fixa do OpenGL e dos sombreamentos de Gouraud, Phong e Flat
-cli-lang = A língua do que o phonglab diz: en, pt-PT ou pt-BR (por omissão, a do sistema: LC_ALL, LC_MESSAGES ou LANG). JSON, CSV e ficheiros de cena mantêm as chaves em inglês
+cli-lang = A língua do que o phonglab diz: en, pt-PT ou pt-BR (por omissão, a do sistema: LC_ALL, LC_MESSAGES ou LANG, se alguma estiver definida; senão, no Windows, a língua de apresentação do utilizador e, no macOS, a sua língua preferida). JSON, CSV e ficheiros de cena mantêm as chaves em inglês
 cli-decimal = Como se escrevem os números para pessoas: point (0.5) ou comma (0,5); por omissão, o da língua (vírgula em português). Os números escritos leem-se com qualquer um
 cli-memory-budget = A memória que um comando pode ocupar com o que lhe é pedido (o tamanho de uma imagem, uma malha): 512M, 8G, ...; por omissão: metade da que o sistema tem disponível. Acima dela, um comando diz quanto precisa e não começa
 cli-eval = Calcular casos glref (JSON) e imprimir as cores iluminadas em JSON

@@ -50,8 +50,10 @@ pub struct Cli {
     /// adapter).
     #[arg(long, value_enum, default_value_t = RendererArg::Auto)]
     pub renderer: RendererArg,
-    /// The language of what phonglab says: en, pt-PT or pt-BR (default: the system's, from
-    /// LC_ALL, LC_MESSAGES or LANG). JSON, CSV and scene files keep English keys.
+    /// The language of what phonglab says: en, pt-PT or pt-BR (default: the system's:
+    /// LC_ALL, LC_MESSAGES or LANG where one is set, else on Windows the user's display
+    /// language and on macOS their preferred language). JSON, CSV and scene files keep
+    /// English keys.
     #[arg(long, global = true, value_parser = parse_lang)]
     pub lang: Option<crate::locale::Lang>,
     /// How numbers meant for people are written: point (0.5) or comma (0,5); default: the

@@ -853,6 +853,7 @@ python-hint-normal = ; a normal is a direction: x, y, z, or the worksheet's x, y
 python-hint-vertex = ; a vertex is x, y, z (its w is then 1) or x, y, z, w
 python-either-3-or-4 = 3 or 4
 python-no-such-light = there is no light { $light }: the scene has { $count ->
+        [0] no lights
         [one] 1 light, numbered 0
        *[other] { $count } lights, numbered from 0
     }

@@ -70,6 +70,7 @@ ruleset-demo = Demo de Phong
 pow-exact = pow exata
 lights-count =
     { $count ->
+    [0] { $count } luzes
     [one] { $count } luz
     *[other] { $count } luzes
     }
@@ -455,6 +456,7 @@ moodle-digits-exam = Informe cada valor arredondado para { $digits } algarismos 
 moodle-carry = Use cada valor no passo seguinte do jeito que você calculou, sem arredondar: arredonde só o que você digita num campo.
 moodle-decimal-mark = Os números podem ser digitados com vírgula ou com ponto decimal: o Moodle aceita os dois.
 moodle-part-digits = { $digits ->
+    [0] { $digits } algarismos significativos
     [one] um algarismo significativo
    *[other] { $digits } algarismos significativos
 }
@@ -844,6 +846,7 @@ py-two-side-program-comment = Faz o gl_Color do fragment shader ser a cor de tr�
 # phonglab-py: the Python package
 python-unknown-value = { $what }{ $value }: os valores possíveis são { $names }
 python-wrong-length = { $field }: { $count ->
+        [0] { $count } números informados
         [one] 1 número informado
        *[other] { $count } números informados
     }, { $expected } esperados{ $hint }
@@ -853,6 +856,7 @@ python-hint-normal = ; uma normal é uma direção: x, y, z, ou x, y, z, 0 como 
 python-hint-vertex = ; um vértice é x, y, z (o w fica 1) ou x, y, z, w
 python-either-3-or-4 = 3 ou 4
 python-no-such-light = não existe a luz { $light }: a cena tem { $count ->
+        [0] nenhuma luz
         [one] 1 luz, numerada 0
        *[other] { $count } luzes, numeradas a partir de 0
     }

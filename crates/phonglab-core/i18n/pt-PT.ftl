@@ -853,6 +853,7 @@ python-hint-normal = ; uma normal é uma direção: x, y, z, ou x, y, z, 0 como 
 python-hint-vertex = ; um vértice é x, y, z (o w fica 1) ou x, y, z, w
 python-either-3-or-4 = 3 ou 4
 python-no-such-light = não há luz { $light }: a cena tem { $count ->
+        [0] nenhuma luz
         [one] 1 luz, numerada 0
        *[other] { $count } luzes, numeradas a partir de 0
     }
