@@ -1089,6 +1089,7 @@ err-worksheet-moodle = --worksheet escreve o exercício 0 só nas listas; um arq
 budget-what-moodle = um arquivo para o Moodle com { $count } exercícios (cerca de { $size } em disco)
 budget-what-sheets = um conjunto de { $count } listas de exercícios com os gabaritos e os dois PDFs (cerca de { $size } em disco)
 budget-what-wrong = um conjunto de { $count ->
+    [0] { $count } imagens
     [one] uma imagem
    *[other] { $count } imagens
 } com um erro cada

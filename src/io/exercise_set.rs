@@ -387,9 +387,9 @@ const SMALL_SET_PER_EXERCISE: u64 = 2 << 20;
 /// than the memory budget ([`super::budget`]; under `ulimit -v`, what the limit leaves):
 /// the files of a sample of four exercises are made, and their bytes (the PDFs' fonts
 /// counted in each, a margin) scaled to the count asked for, times
-/// [`HELD_PER_FILE_BYTE`], and the process's own part ([`super::budget::PROCESS`]). A set
+/// `HELD_PER_FILE_BYTE`, and the process's own part ([`super::budget::PROCESS`]). A set
 /// no larger than the sample is not sampled (making it is as cheap as the estimate): it
-/// is counted [`SMALL_SET_PER_EXERCISE`] an exercise.
+/// is counted `SMALL_SET_PER_EXERCISE` (2 MiB) an exercise.
 pub fn check_budget(a: &Request) -> Result<()> {
     let (files, held) = if a.count <= SAMPLE {
         let held = (a.count + a.worksheet as usize) as u64 * SMALL_SET_PER_EXERCISE;
