@@ -377,3 +377,37 @@ fn every_brazilian_one_has_its_zero() {
         assert!(lacking.is_empty(), "{path}: [one] without [0] before it: {lacking:?}");
     }
 }
+
+/// European Portuguese speaks to the reader as "você" (or impersonally), as most of its
+/// messages do ("Escolha", "Indique", "Execute"): no clause starts with a "tu" imperative
+/// ("Calcula todos os passos", "Escreve primeiro", "2. Muda qualquer coisa", "escreve-os").
+/// The verbs listed are those whose "tu" imperative was found; a message that describes
+/// (a button's "Copia todos os passos", "Põe a ligação…") is third person, not listed, and
+/// so are the two whose described subject says the same verb ("…; escreve cost.csv", the
+/// program's "Dá aos shaders…").
+#[test]
+fn european_portuguese_never_says_tu_where_it_says_voce() {
+    const TU: [&str; 20] = [
+        "calcula", "escolhe", "abre", "guarda", "usa", "escreve", "corre", "vê", "tenta", "experimenta", "larga",
+        "fixa", "muda", "remove", "limita", "define", "dá", "clica", "carrega", "arrasta",
+    ];
+    const DESCRIBING: [&str; 2] = ["cli-cost = ", "py-reader-doc = "];
+    for path in ["i18n/pt-PT.ftl", "crates/phonglab-core/i18n/pt-PT.ftl"] {
+        let text = std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(path)).expect(path);
+        let mut found = Vec::new();
+        for line in text.lines().filter(|l| !l.starts_with('#') && !DESCRIBING.iter().any(|d| l.starts_with(d))) {
+            let value = line.split_once(" = ").map_or(line, |(_, v)| v);
+            let clauses = value.split(". ").flat_map(|s| s.split(": ")).flat_map(|s| s.split("; "));
+            for clause in clauses {
+                let clause = clause.trim_start().trim_start_matches(|c: char| c.is_ascii_digit() || c == '.').trim_start();
+                let word = clause.split([' ', ',']).next().unwrap_or("").to_lowercase();
+                // "usa-se" is impersonal; "escreve-os" is "tu".
+                let verb = word.split_once('-').map_or(word.as_str(), |(v, p)| if p == "se" { "" } else { v });
+                if TU.contains(&verb) {
+                    found.push(line.chars().take(100).collect::<String>());
+                }
+            }
+        }
+        assert!(found.is_empty(), "{path}: \"tu\" where the catalogue says \"você\":\n{}", found.join("\n"));
+    }
+}

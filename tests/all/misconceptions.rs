@@ -251,3 +251,29 @@ fn a_sheets_choices_say_each_cause_once_without_doubled_parentheses() {
     }
     let _ = std::fs::remove_dir_all(&out);
 }
+
+/// The words of `text` of two letters or more, in lower case (a formula's symbols left
+/// out: `f_i`, `R · V`).
+fn words_of(text: &str) -> Vec<String> {
+    text.split(|c: char| !c.is_alphabetic()).filter(|w| w.chars().count() >= 2).map(str::to_lowercase).collect()
+}
+
+/// Issue 60: "Attenuation computed with the distance in object space: d measured in object
+/// space" said its cause twice. No choice's formula repeats two words in a row of its
+/// cause, in the three languages.
+#[test]
+fn no_choice_says_its_cause_again_after_it() {
+    use phonglab::locale::{Lang, Locale, with_locale};
+    for lang in Lang::ALL {
+        with_locale(Locale::of(lang), || {
+            for kind in Misconception::ALL {
+                let (cause, choice) = (kind.cause(), kind.choice());
+                let after = choice.strip_prefix(&cause).unwrap_or_else(|| panic!("{choice:?} starts with {cause:?}"));
+                let said = words_of(&cause);
+                for pair in words_of(after).windows(2) {
+                    assert!(!said.windows(2).any(|p| p == pair), "{}: {choice:?} says {pair:?} twice", lang.code());
+                }
+            }
+        });
+    }
+}

@@ -524,7 +524,7 @@ write-kept-recoverable = o conjunto antigo ou o novo está completo, e a próxim
 error-out-of-range = { $field } = { $value } está fora do intervalo: permitido { $allowed }
 error-not-finite = { $field } tem de ser um número finito, não { $value }
 error-too-many-lights = { $count } luzes: o OpenGL tem no máximo { $max }
-error-camera-mismatch = a matriz de vista da cena não é a que a sua câmara dá ({ $camera }): define a câmara, ou dá a matriz como câmara escrita
+error-camera-mismatch = a matriz de vista da cena não é a que a sua câmara dá ({ $camera }): defina a câmara, ou dê a matriz como câmara escrita
 error-zero-attenuation = { $field }: as atenuações constante, linear e quadrática são todas 0, por isso a luz seria infinitamente brilhante; torna pelo menos uma positiva
 allowed-spot-cutoff = [0, 90], ou 180 para não haver foco
 allowed-float = um float: 0, ou 1,2e-38 <= |x| <= 3,4e38
@@ -767,7 +767,7 @@ check-cause-viewer-swapped = o observador local e o observador no infinito troca
 check-cause-halfway-not-normalised = H não normalizado
 check-cause-specular-without-gate = especular calculada onde a luz está atrás da superfície (falta a condição N·L)
 check-cause-diffuse-not-clamped = a difusa não limitada: negativa quando o ângulo passa os 90 graus
-check-cause-acos-past-one = acos de um cosseno ligeiramente acima de 1 (arredondamento): limita-o primeiro a [-1, 1]
+check-cause-acos-past-one = acos de um cosseno ligeiramente acima de 1 (arredondamento): limite-o primeiro a [-1, 1]
 check-cause-spot-cutoff-radians = o cosseno do ângulo de corte do foco calculado em graus como se fossem radianos
 check-cause-spot-exponent-outside-cone = o expoente do foco aplicado também fora do cone
 check-cause-attenuation-multiplied = a luz multiplicada pela atenuação em vez de dividida

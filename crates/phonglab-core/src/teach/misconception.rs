@@ -108,12 +108,13 @@ impl Misconception {
     }
 
     /// The choice to pick, as the sheet, the window's quiz and Moodle write it: the cause,
-    /// then the mistaken formula (the dot product written `·`); Gouraud's only the cause,
-    /// whose "formula" is words that say the cause again ("Gouraud shading: lit only at
-    /// the vertices…: lighting per vertex… (Gouraud)"), after a second colon.
+    /// then the mistaken formula (the dot product written `·`); Gouraud's and the
+    /// attenuation's only the cause, whose "formula" is words that say the cause again
+    /// ("Gouraud shading: lit only at the vertices…: lighting per vertex… (Gouraud)",
+    /// "…the distance in object space: d measured in object space").
     pub fn choice(self) -> String {
         match self {
-            Misconception::GouraudMissesHighlight => self.cause(),
+            Misconception::GouraudMissesHighlight | Misconception::AttenuationInObjectSpace => self.cause(),
             _ => format!("{}: {}", self.cause(), self.formulas().1.replace(" . ", " · ")),
         }
     }
