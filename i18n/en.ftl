@@ -1068,8 +1068,14 @@ err-category-slash = --category cannot start or end with "/": Moodle would read 
 err-category-control = --category has a control character, { $character }: a category's name is one line of text, without line breaks or tabs.
 err-category-long = --category is { $length } characters long; Moodle keeps a category's name in at most { $max }.
 err-worksheet-moodle = --worksheet writes exercise 0 into the sheets only; a file for Moodle takes --level or --effects.
-budget-what-moodle = a file for Moodle of { $count } exercises (about { $size } on disk)
-budget-what-sheets = a set of { $count } exercise sheets with their keys and the two PDFs (about { $size } on disk)
+budget-what-moodle = a file for Moodle of { $count ->
+        [one] { $shown } exercise
+       *[other] { $shown } exercises
+    } (about { $size } on disk)
+budget-what-sheets = a set of { $count ->
+        [one] { $shown } exercise sheet with its key
+       *[other] { $shown } exercise sheets with their keys
+    } and the two PDFs (about { $size } on disk)
 budget-what-wrong = a set of { $count ->
     [one] one picture
    *[other] { $count } pictures
@@ -1084,11 +1090,11 @@ arg-error-not-whole = { $arg } takes a whole number, not { $value }.
 arg-error-not-number = { $arg } takes a number, not { $value }.
 arg-error-invalid-utf8 = One of the arguments is not text in UTF-8: only a file's or a folder's name may hold other bytes. Write the others in UTF-8.
 arg-error-refused-value = { $arg } does not take { $value }: { $reason }
-arg-error-unknown = phonglab has no option { $arg }.
+arg-error-unknown = There is no option { $arg }.
 arg-error-did-you-mean = Did you mean { $suggestion }?
-arg-error-unknown-command = phonglab has no command { $name }.
+arg-error-unknown-command = There is no command { $name }.
 arg-error-missing = Missing: { $args }.
 arg-error-conflict = The option { $arg } cannot be used with { $other }.
 arg-error-twice = { $arg } is given twice: give it once.
-arg-error-unexpected = phonglab did not expect { $arg } here: it is not an option, nor the value of one.
+arg-error-unexpected = { $arg } was not expected here: it is not an option, nor the value of one.
 arg-error-more = See { $help }.

@@ -1086,8 +1086,16 @@ err-category-slash = --category não pode começar nem terminar com "/": o Moodl
 err-category-control = --category tem um caractere de controle, { $character }: o nome de uma categoria é uma só linha de texto, sem quebras de linha nem tabulações.
 err-category-long = --category tem { $length } caracteres; o Moodle guarda o nome de uma categoria em no máximo { $max }.
 err-worksheet-moodle = --worksheet escreve o exercício 0 só nas listas; um arquivo para o Moodle usa --level ou --effects.
-budget-what-moodle = um arquivo para o Moodle com { $count } exercícios (cerca de { $size } em disco)
-budget-what-sheets = um conjunto de { $count } listas de exercícios com os gabaritos e os dois PDFs (cerca de { $size } em disco)
+budget-what-moodle = um arquivo para o Moodle com { $count ->
+        [0] { $shown } exercícios
+        [one] { $shown } exercício
+       *[other] { $shown } exercícios
+    } (cerca de { $size } em disco)
+budget-what-sheets = um conjunto de { $count ->
+        [0] { $shown } listas de exercícios com os gabaritos
+        [one] { $shown } lista de exercícios com o gabarito
+       *[other] { $shown } listas de exercícios com os gabaritos
+    } e os dois PDFs (cerca de { $size } em disco)
 budget-what-wrong = um conjunto de { $count ->
     [0] { $count } imagens
     [one] uma imagem
@@ -1103,11 +1111,11 @@ arg-error-not-whole = { $arg } aceita um número inteiro, não { $value }.
 arg-error-not-number = { $arg } aceita um número, não { $value }.
 arg-error-invalid-utf8 = Um dos argumentos não é texto em UTF-8: só o nome de um arquivo ou de uma pasta pode ter outros bytes. Escreva os demais em UTF-8.
 arg-error-refused-value = { $arg } não aceita { $value }: { $reason }
-arg-error-unknown = O phonglab não tem a opção { $arg }.
+arg-error-unknown = Não existe a opção { $arg }.
 arg-error-did-you-mean = Você quis dizer { $suggestion }?
-arg-error-unknown-command = O phonglab não tem o comando { $name }.
+arg-error-unknown-command = Não existe o comando { $name }.
 arg-error-missing = Falta informar { $args }.
 arg-error-conflict = A opção { $arg } não pode ser usada com { $other }.
 arg-error-twice = { $arg } foi informada duas vezes: informe-a uma vez só.
-arg-error-unexpected = O phonglab não esperava { $arg } aqui: não é uma opção nem o valor de uma.
+arg-error-unexpected = Não se esperava { $arg } aqui: não é uma opção nem o valor de uma.
 arg-error-more = Veja { $help }.

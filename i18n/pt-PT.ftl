@@ -1071,8 +1071,14 @@ err-category-slash = --category não pode começar nem acabar em "/": o Moodle l
 err-category-control = --category tem um carácter de controlo, { $character }: o nome de uma categoria é uma só linha de texto, sem quebras de linha nem tabulações.
 err-category-long = --category tem { $length } caracteres; o Moodle guarda o nome de uma categoria em { $max }, no máximo.
 err-worksheet-moodle = --worksheet escreve o exercício 0 só nas fichas; um ficheiro para o Moodle usa --level ou --effects.
-budget-what-moodle = um ficheiro para o Moodle com { $count } exercícios (cerca de { $size } em disco)
-budget-what-sheets = um conjunto de { $count } fichas de exercícios com as chaves e os dois PDF (cerca de { $size } em disco)
+budget-what-moodle = um ficheiro para o Moodle com { $count ->
+        [one] { $shown } exercício
+       *[other] { $shown } exercícios
+    } (cerca de { $size } em disco)
+budget-what-sheets = um conjunto de { $count ->
+        [one] { $shown } ficha de exercícios com a sua chave
+       *[other] { $shown } fichas de exercícios com as chaves
+    } e os dois PDF (cerca de { $size } em disco)
 budget-what-wrong = um conjunto de { $count ->
     [one] uma imagem
    *[other] { $count } imagens
@@ -1087,11 +1093,11 @@ arg-error-not-whole = { $arg } aceita um número inteiro, não { $value }.
 arg-error-not-number = { $arg } aceita um número, não { $value }.
 arg-error-invalid-utf8 = Um dos argumentos não é texto em UTF-8: só o nome de um ficheiro ou de uma pasta pode ter outros bytes. Escreva os outros em UTF-8.
 arg-error-refused-value = { $arg } não aceita { $value }: { $reason }
-arg-error-unknown = O phonglab não tem a opção { $arg }.
+arg-error-unknown = Não existe a opção { $arg }.
 arg-error-did-you-mean = Queria dizer { $suggestion }?
-arg-error-unknown-command = O phonglab não tem o comando { $name }.
+arg-error-unknown-command = Não existe o comando { $name }.
 arg-error-missing = Falta indicar { $args }.
 arg-error-conflict = A opção { $arg } não pode ser usada com { $other }.
 arg-error-twice = { $arg } foi indicada duas vezes: indique-a uma só vez.
-arg-error-unexpected = O phonglab não esperava { $arg } aqui: não é uma opção nem o valor de uma.
+arg-error-unexpected = Não se esperava { $arg } aqui: não é uma opção nem o valor de uma.
 arg-error-more = Veja { $help }.

@@ -294,7 +294,7 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
         index.push_str(&worksheet_sheet(&mut set, &mut sheets, &mut keys)?);
     }
     for (i, ex) in exercises.iter().enumerate() {
-        let stem = format!("exercise-{:02}", i + 1);
+        let stem = format!("exercise-{}", padded(i + 1, exercises.len()));
         let toml = format!("{stem}.toml");
         set.add(toml.clone(), ex.doc.to_toml()?);
         let banner = if a.exam {
@@ -339,6 +339,14 @@ pub fn exercise_set(a: &Request) -> Result<(Vec<Exercise>, FileSet)> {
     set.add("sheets.pdf", pdf(&sheets, Pages::Duplex)?);
     set.add("keys.pdf", pdf(&keys, Pages::Plain)?);
     Ok((exercises, set))
+}
+
+/// `number` as the set's file names write it, padded with zeros to the width of `largest`,
+/// the set's last number, and to two digits at least (`07` of 9 or 99, `007` of 300), so
+/// that a file browser lists `exercise-099` before `exercise-100`.
+pub fn padded(number: usize, largest: usize) -> String {
+    let width = largest.max(number).to_string().len().max(2);
+    format!("{number:0width$}")
 }
 
 /// Exercise `number` as its sheet shows it to students: an exam's without its seed, which
@@ -403,7 +411,8 @@ pub fn check_budget(a: &Request) -> Result<()> {
     };
     let what = t!(
         "budget-what-sheets",
-        count = phonglab_core::locale::grouped(a.count as u64),
+        count = a.count,
+        shown = phonglab_core::locale::grouped(a.count as u64),
         size = phonglab_core::mesh::obj::describe_bytes(files)
     );
     super::budget::check(&what, held.saturating_add(super::budget::PROCESS)).map_err(anyhow::Error::msg)

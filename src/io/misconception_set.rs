@@ -63,8 +63,9 @@ pub fn misconception_set(seed: u64, count: usize) -> Result<FileSet> {
     let mut set = FileSet::default();
     let mut index = format!("# {}\n\n{}\n\n", t!("wrong-title"), t!("wrong-intro"));
     let (mut sheets, mut keys) = (Vec::new(), Vec::new());
-    for (k, kind) in chosen(seed, count).into_iter().enumerate() {
-        let stem = format!("wrong-{:02}", k + 1);
+    let kinds = chosen(seed, count);
+    for (k, kind) in kinds.iter().copied().enumerate() {
+        let stem = format!("wrong-{}", super::exercise_set::padded(k + 1, kinds.len()));
         let case = misconception::case(kind);
         let drawn = case.draw(PX).map_err(anyhow::Error::msg)?;
         set.add(format!("{stem}-right.png"), super::image::encode_png(PX, PX, &drawn.correct)?);

@@ -87,7 +87,8 @@ pub fn check_budget(b: &Bundle, format: Format) -> Result<()> {
     let (file, memory) = estimate(b, format)?;
     let what = t!(
         "budget-what-moodle",
-        count = phonglab_core::locale::grouped((b.request.count * b.variants.max(1)) as u64),
+        count = b.request.count * b.variants.max(1),
+        shown = phonglab_core::locale::grouped((b.request.count * b.variants.max(1)) as u64),
         size = phonglab_core::mesh::obj::describe_bytes(file)
     );
     super::budget::check(&what, memory).map_err(anyhow::Error::msg)

@@ -99,7 +99,7 @@ fn teacher_name(b: &Bundle, exercise: &str, variant: usize, sheet: usize, total:
         "moodle-question-name",
         exercise = exercise.to_string(),
         variant = variant as i64,
-        sheet = format!("{sheet:02}"),
+        sheet = super::exercise_set::padded(sheet, total),
         command = sheets_command(b, total)
     )
 }

@@ -104,8 +104,8 @@ fn claps_common_errors_are_said_in_the_language_asked_for() {
         ),
         (
             &["exercise", "--variant", "2"],
-            "phonglab has no option \"--variant\". Did you mean --variants?",
-            "O phonglab não tem a opção \"--variant\".",
+            "There is no option \"--variant\". Did you mean --variants?",
+            "Não existe a opção \"--variant\".",
         ),
         (
             &["exercise", "--format", "pdf"],
@@ -194,7 +194,7 @@ fn a_run_past_the_address_space_limit_is_refused_in_words() {
 fn a_refusal_says_the_value_once_and_names_what_went_wrong() {
     let twice = [("en", "given twice"), ("pt-PT", "indicada duas vezes"), ("pt-BR", "informada duas vezes")];
     let unexpected =
-        [("en", "did not expect \"extra\""), ("pt-PT", "não esperava \"extra\""), ("pt-BR", "não esperava \"extra\"")];
+        [("en", "\"extra\" was not expected"), ("pt-PT", "Não se esperava \"extra\""), ("pt-BR", "Não se esperava \"extra\"")];
     for ((lang, twice), (_, stray)) in twice.into_iter().zip(unexpected) {
         for (args, value) in [(["--decimal", "virgula"], "\"virgula\""), (["--memory-budget", "1Q"], "\"1Q\"")] {
             let (code, said) = refused(lang, &[&["exercise"][..], &args[..]].concat());
@@ -205,7 +205,7 @@ fn a_refusal_says_the_value_once_and_names_what_went_wrong() {
         assert!(said.contains(twice) && !said.contains("--level cannot"), "{lang}: {said}");
         let (_, said) = refused(lang, &["exercise", "extra"]);
         assert!(said.contains(stray), "{lang}: {said}");
-        assert!(!said.contains("has no option") && !said.contains("não tem a opção"), "{lang}: {said}");
+        assert!(!said.contains("no option") && !said.contains("não existe a opção"), "{lang}: {said}");
     }
 }
 
@@ -220,7 +220,7 @@ fn a_negative_memory_budget_is_said_to_be_negative() {
             let (code, said) = refused(lang, &["exercise", "--memory-budget", value]);
             assert_eq!(code, 2);
             assert!(said.contains(want) && said.contains(&format!("\"{value}\"")), "{lang}: {said}");
-            assert!(!said.contains("has no option") && !said.contains("não tem a opção"), "{lang}: {said}");
+            assert!(!said.contains("no option") && !said.contains("não existe a opção"), "{lang}: {said}");
         }
     }
 }

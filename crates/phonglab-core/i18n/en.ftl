@@ -319,7 +319,10 @@ import-limit-elements = holds more than { $count } numbers, strings and lists
 import-limit-bytes = holds more than { $count } bytes of strings
 import-limit-tokens = holds more than { $count } tokens (numbers, names, operators and brackets)
 import-limit-total = brings the names assigned so far past what phonglab reads: it { $limit }
-bytes-described = { $bytes } bytes ({ $mib } MiB)
+bytes-described = { $count ->
+        [one] { $bytes } byte
+       *[other] { $bytes } bytes
+    } ({ $mib } MiB)
 obj-index-not-number = line { $line }: { $what } index { $index } is not a number
 obj-index-out-of-range = line { $line }: { $what } index { $index } is out of range (there are { $count })
 obj-what-vertex = vertex
@@ -340,7 +343,10 @@ obj-beyond-single = coordinates beyond single precision's range: load the file t
 obj-cannot-read = cannot read { $path }: { $error }
 obj-not-a-file = { $path } is not a regular file
 obj-too-large = { $path } is { $size }; phonglab reads OBJ files of at most { $max } (about { $millions } million triangles)
-obj-over-budget = { $triangles } triangles take { $bytes } to read, more than the memory budget of { $budget } (--memory-budget raises it)
+obj-over-budget = { $count ->
+        [one] { $triangles } triangle takes
+       *[other] { $triangles } triangles take
+    } { $bytes } to read, more than the memory budget of { $budget } (--memory-budget raises it)
 export-flat-unsupported = the PyOpenGL program draws with the scene's generated shaders, which are Gouraud or Phong: choose one of them for the shaded view, not Flat
 export-template-broken = the program template { $template } is filled wrongly ({ $problem }): this is a fault of phonglab's; please report it
 py-title = { $scene }: the shaded view as phonglab draws it ({ $shading } shading), written by phonglab.
@@ -915,6 +921,7 @@ write-step-rename = rename
 write-step-name = name
 write-step-create-folder = create the folder
 set-folder-is-a-file = it is a file, not a folder: phonglab writes a set of files into a folder; give a folder, or the name of a new one
+folder-link-dangling = it is a link whose target does not exist, and phonglab makes no folder through a link
 write-step-create-file-in = create a file in
 write-kept-file = the file there before (if any) is unchanged
 write-kept-nothing = nothing was written

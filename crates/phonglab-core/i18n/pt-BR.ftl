@@ -320,7 +320,11 @@ import-limit-elements = contém mais de { $count } números, strings e listas
 import-limit-bytes = contém mais de { $count } bytes de strings
 import-limit-tokens = tem mais de { $count } tokens (números, nomes, operadores e parênteses)
 import-limit-total = leva os nomes atribuídos até aqui além do que o phonglab lê: { $limit }
-bytes-described = { $bytes } bytes ({ $mib } MiB)
+bytes-described = { $count ->
+        [0] { $bytes } bytes
+        [one] { $bytes } byte
+       *[other] { $bytes } bytes
+    } ({ $mib } MiB)
 obj-index-not-number = linha { $line }: o índice de { $what } { $index } não é um número
 obj-index-out-of-range = linha { $line }: o índice de { $what } { $index } está fora do intervalo (há { $count })
 obj-what-vertex = vértice
@@ -341,7 +345,11 @@ obj-beyond-single = coordenadas fora do alcance da precisão simples: abra o arq
 obj-cannot-read = não é possível ler { $path }: { $error }
 obj-not-a-file = { $path } não é um arquivo comum
 obj-too-large = { $path } tem { $size }; o phonglab lê arquivos OBJ de no máximo { $max } (cerca de { $millions } milhões de triângulos)
-obj-over-budget = ler { $triangles } triângulos ocupa { $bytes }, mais do que o orçamento de memória de { $budget } (--memory-budget o aumenta)
+obj-over-budget = ler { $count ->
+        [0] { $triangles } triângulos
+        [one] { $triangles } triângulo
+       *[other] { $triangles } triângulos
+    } ocupa { $bytes }, mais do que o orçamento de memória de { $budget } (--memory-budget o aumenta)
 export-flat-unsupported = o programa PyOpenGL desenha com os shaders gerados para a cena, que são Gouraud ou Phong: escolha um deles para a vista sombreada, não Flat
 export-template-broken = o modelo de programa { $template } está mal preenchido ({ $problem }): é uma falha do phonglab; por favor, informe-a
 py-title = { $scene }: a vista sombreada como o phonglab a desenha (sombreamento { $shading }), escrita pelo phonglab.
@@ -918,6 +926,7 @@ write-step-rename = mudar o nome
 write-step-name = nome
 write-step-create-folder = criar a pasta
 set-folder-is-a-file = é um arquivo, não uma pasta: o phonglab grava um conjunto de arquivos em uma pasta; informe uma pasta, ou o nome de uma pasta nova
+folder-link-dangling = é um link cujo destino não existe, e o phonglab não cria pastas por meio de um link
 write-step-create-file-in = criar um arquivo em
 write-kept-file = o arquivo que estava lá (se havia) não mudou
 write-kept-nothing = nada foi escrito

@@ -319,7 +319,10 @@ import-limit-elements = contém mais de { $count } números, cadeias e listas
 import-limit-bytes = contém mais de { $count } bytes de cadeias
 import-limit-tokens = tem mais de { $count } elementos léxicos (números, nomes, operadores e parênteses)
 import-limit-total = leva os nomes atribuídos até aqui além do que o phonglab lê: { $limit }
-bytes-described = { $bytes } bytes ({ $mib } MiB)
+bytes-described = { $count ->
+        [one] { $bytes } byte
+       *[other] { $bytes } bytes
+    } ({ $mib } MiB)
 obj-index-not-number = linha { $line }: o índice de { $what } { $index } não é um número
 obj-index-out-of-range = linha { $line }: o índice de { $what } { $index } está fora do intervalo (há { $count })
 obj-what-vertex = vértice
@@ -340,7 +343,10 @@ obj-beyond-single = coordenadas fora do alcance da precisão simples: abra o fic
 obj-cannot-read = não é possível ler { $path }: { $error }
 obj-not-a-file = { $path } não é um ficheiro normal
 obj-too-large = { $path } tem { $size }; o phonglab lê ficheiros OBJ de no máximo { $max } (cerca de { $millions } milhões de triângulos)
-obj-over-budget = ler { $triangles } triângulos ocupa { $bytes }, mais do que o orçamento de memória de { $budget } (--memory-budget aumenta-o)
+obj-over-budget = ler { $count ->
+        [one] { $triangles } triângulo
+       *[other] { $triangles } triângulos
+    } ocupa { $bytes }, mais do que o orçamento de memória de { $budget } (--memory-budget aumenta-o)
 export-flat-unsupported = o programa PyOpenGL desenha com os shaders gerados para a cena, que são Gouraud ou Phong: escolha um deles para a vista sombreada, não Flat
 export-template-broken = o modelo de programa { $template } está mal preenchido ({ $problem }): é uma falha do phonglab; por favor comunique-a
 py-title = { $scene }: a vista sombreada como o phonglab a desenha (sombreamento { $shading }), escrita pelo phonglab.
@@ -915,6 +921,7 @@ write-step-rename = mudar o nome
 write-step-name = nome
 write-step-create-folder = criar a pasta
 set-folder-is-a-file = é um ficheiro, não uma pasta: o phonglab escreve um conjunto de ficheiros numa pasta; indique uma pasta, ou o nome de uma pasta nova
+folder-link-dangling = é uma ligação cujo destino não existe, e o phonglab não cria pastas através de uma ligação
 write-step-create-file-in = criar um ficheiro em
 write-kept-file = o ficheiro que lá estava (se havia) não mudou
 write-kept-nothing = nada foi escrito

@@ -64,7 +64,8 @@ pub fn set_memory_budget(bytes: u64) {
 /// A file size in words: "536 870 913 bytes (512.0 MiB)".
 pub fn describe_bytes(n: u64) -> String {
     let mib = format!("{:.1}", n as f64 / (1u64 << 20) as f64);
-    t!("bytes-described", bytes = crate::locale::grouped(n), mib = crate::locale::decimal(&mib))
+    let count = i64::try_from(n).unwrap_or(i64::MAX);
+    t!("bytes-described", count = count, bytes = crate::locale::grouped(n), mib = crate::locale::decimal(&mib))
 }
 
 /// At most 40 characters of a word, for a message.
@@ -551,6 +552,7 @@ fn read_fitted<R: BufRead>(shown: &str, open: impl Fn() -> Result<R, String>) ->
     if counts.load_bytes() > budget {
         return Err(in_file(t!(
             "obj-over-budget",
+            count = counts.triangles,
             triangles = crate::locale::grouped(counts.triangles as u64),
             bytes = describe_bytes(counts.load_bytes()),
             budget = describe_bytes(budget)

@@ -369,8 +369,22 @@ pub fn check_folder_destination(dir: &Path) -> Result<(), WriteError> {
         let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-is-a-file"));
         return Err(WriteError::new(dir, "write-step-create-folder", e, KEPT));
     }
+    // A link to nothing, at `dir` or above it: `create_dir_all` would say "it already
+    // exists" of the link. Nothing is made where it points.
+    if let Some(link) = dangling_link_at_or_above(dir) {
+        let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("folder-link-dangling"));
+        return Err(WriteError::new(&link, "write-step-create-folder", e, KEPT));
+    }
     std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, KEPT))?;
     probe(dir, "writable").map_err(|e| WriteError::new(dir, "write-step-create-file-in", e, KEPT))
+}
+
+/// The nearest of `dir` and the folders above it that is something, when that is a link
+/// whose target does not exist.
+fn dangling_link_at_or_above(dir: &Path) -> Option<std::path::PathBuf> {
+    let nearest = dir.ancestors().filter(|a| !a.as_os_str().is_empty()).find(|a| std::fs::symlink_metadata(a).is_ok())?;
+    let is_link = std::fs::symlink_metadata(nearest).is_ok_and(|m| m.file_type().is_symlink());
+    (is_link && std::fs::metadata(nearest).is_err()).then(|| nearest.to_path_buf())
 }
 
 fn probe(dir: &Path, name: &str) -> io::Result<()> {
