@@ -398,3 +398,18 @@ fn the_catalogues_keep_one_register_and_one_term() {
         }
     }
 }
+
+/// Issue 60: "phonglab: phonglab did not expect…": every refusal starts with the
+/// program's name, so its sentence does not say it again, in every language.
+#[test]
+fn a_refusal_names_the_program_once() {
+    for lang in ["en", "pt-PT", "pt-BR"] {
+        for args in [&["exercise", "extra"][..], &["exercise", "--variant", "2"], &["exercise", "--count", "x"]] {
+            let (code, said) = refused(lang, args);
+            assert_eq!(code, 2);
+            let first = said.lines().next().unwrap_or_default();
+            let sentence = first.strip_prefix("phonglab: ").unwrap_or_else(|| panic!("{lang}: {said}"));
+            assert!(!sentence.contains("phonglab"), "{lang} {args:?}: {said}");
+        }
+    }
+}

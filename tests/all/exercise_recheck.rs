@@ -32,12 +32,13 @@ fn needed(e: &str) -> u64 {
     digits.parse().unwrap_or_else(|_| panic!("{e}"))
 }
 
-/// Starts its first argument with the rest, waits for it, and prints the child's peak
-/// resident set (`ru_maxrss`, KiB) and its own (`VmHWM`, KiB): run from a fresh, small
+/// Starts its first argument with the rest (its output to /dev/null), waits for it, and
+/// prints the child's peak resident set (`ru_maxrss`, KiB) and its own (`VmHWM`, KiB): run from a fresh, small
 /// process, so that the child's number is its own (see [`peak_of`]).
 const PEAK_PY: &str = r#"
 import os, sys
-pid = os.posix_spawn(sys.argv[1], sys.argv[1:], os.environ)
+quiet = [(os.POSIX_SPAWN_OPEN, 1, os.devnull, os.O_WRONLY, 0)]
+pid = os.posix_spawn(sys.argv[1], sys.argv[1:], os.environ, file_actions=quiet)
 _, status, usage = os.wait4(pid, 0)
 own = next(int(l.split()[1]) for l in open("/proc/self/status") if l.startswith("VmHWM:"))
 print(usage.ru_maxrss, own)
@@ -86,7 +87,10 @@ fn the_peak_measured_is_the_childs_own() {
 
 /// Issue 60: the sheets' estimate was 2.1 MiB for a run that took 23.6 MB (the process's
 /// own part was not counted); level 5 had none. Each estimate (what the refusal says it
-/// needs) is now at least the peak the same run takes.
+/// needs) is now at least the peak the same run takes, and at most three times it
+/// (1.05 to 1.29 times, debug build, 2026-11-28). Inside the whole suite it once read a
+/// peak of 84.8 MB for the 43 MB run `l1`: the test binary's own resident set, which
+/// [`peak_of`] now leaves out.
 #[cfg(target_os = "linux")]
 #[test]
 fn the_sheets_estimate_is_never_below_what_the_run_takes() {
@@ -101,6 +105,7 @@ fn the_sheets_estimate_is_never_below_what_the_run_takes() {
         let said = needed(&refused(phonglab(&[args, &out, &["--memory-budget", "1"]].concat())));
         assert!(!dir.exists(), "{name}: nothing written");
         let peak = peak_of(&[args, &out].concat());
+        eprintln!("{name}: estimate {said}, peak {peak}: {:.2} times", said as f64 / peak as f64);
         assert!(said >= peak, "{name}: the estimate {said} is below the peak {peak}");
         assert!(said <= 3 * peak, "{name}: the estimate {said} is far above the peak {peak}");
     }
@@ -272,4 +277,111 @@ fn the_refusals_say_what_is_wrong_in_one_sentence() {
     let wrong = out_dir("wording-5");
     let said = run_ok(phonglab(&["exercise", "--level", "5", "--count", "9", "--out", wrong.to_str().unwrap()]));
     assert!(said.contains("7 questions, not 9"), "{said}");
+}
+
+/// Issue 60: "a file for Moodle of 1 exercises", "a set of 1 exercise sheets…", "the memory
+/// budget of 1 bytes": the count was handed to the catalogue as grouped digits, which no
+/// plural can select on. Each now says one in the singular and two in the plural, in the
+/// three languages, its digits still grouped (`100 000`, tested in `moodle_checks`).
+#[test]
+fn a_refusal_says_one_in_the_singular() {
+    let dir = out_dir("singular");
+    let out = dir.to_str().unwrap();
+    let gift = |n: &'static str| ["exercise", "--format", "gift", "--count", n, "--variants", "1", "--memory-budget", "1"];
+    let sheets = |n: &'static str| ["exercise", "--count", n, "--memory-budget", "1"];
+    for (lang, one_question, two_questions, one_sheet, two_sheets, one_byte) in [
+        (
+            "en",
+            "a file for Moodle of 1 exercise (about",
+            "a file for Moodle of 2 exercises (about",
+            "a set of 1 exercise sheet with its key and the two PDFs",
+            "a set of 2 exercise sheets with their keys and the two PDFs",
+            "of 1 byte (",
+        ),
+        (
+            "pt-PT",
+            "um ficheiro para o Moodle com 1 exercício (cerca",
+            "um ficheiro para o Moodle com 2 exercícios (cerca",
+            "um conjunto de 1 ficha de exercícios com a sua chave e os dois PDF",
+            "um conjunto de 2 fichas de exercícios com as chaves e os dois PDF",
+            "de 1 byte (",
+        ),
+        (
+            "pt-BR",
+            "um arquivo para o Moodle com 1 exercício (cerca",
+            "um arquivo para o Moodle com 2 exercícios (cerca",
+            "um conjunto de 1 lista de exercícios com o gabarito e os dois PDFs",
+            "um conjunto de 2 listas de exercícios com os gabaritos e os dois PDFs",
+            "de 1 byte (",
+        ),
+    ] {
+        let said = |args: &[&str]| refused(phonglab(&[&["--lang", lang][..], args, &["--out", out]].concat()));
+        for (args, want) in [
+            (&gift("1")[..], one_question),
+            (&gift("2")[..], two_questions),
+            (&sheets("1")[..], one_sheet),
+            (&sheets("2")[..], two_sheets),
+        ] {
+            let e = said(args);
+            assert!(e.contains(want) && e.contains(one_byte), "{lang} {args:?}: {e}");
+        }
+        assert!(!dir.exists(), "{lang}: nothing written");
+    }
+}
+
+/// Issue 60: `--out` naming a link to nothing said "create the folder: it already exists".
+/// It says the name is a link, whose target does not exist, for the link itself or a
+/// folder under it, in every format; nothing is made where the link points.
+#[cfg(unix)]
+#[test]
+fn a_dangling_out_link_is_said_to_be_a_link() {
+    let dir = out_dir("dangling");
+    std::fs::create_dir_all(&dir).unwrap();
+    let (link, target) = (dir.join("out"), dir.join("nowhere"));
+    std::os::unix::fs::symlink(&target, &link).unwrap();
+    for out in [link.clone(), link.join("deeper")] {
+        for format in ["sheets", "gift", "moodle-xml"] {
+            let args = ["exercise", "--format", format, "--count", "1", "--out", out.to_str().unwrap()];
+            let e = refused(phonglab(&args));
+            assert!(e.contains("is a link whose target does not exist") && !e.contains("already exists"), "{e}");
+            assert!(e.contains(&format!("cannot write {}:", link.display())), "the link is named: {e}");
+            assert!(!target.exists(), "{format}: nothing made through the link");
+            assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink(), "the link is left as it was");
+        }
+    }
+    let e = refused(phonglab_in("pt_PT.UTF-8", &["exercise", "--out", link.to_str().unwrap()]));
+    assert!(e.contains("é uma ligação cujo destino não existe"), "{e}");
+    let e = refused(phonglab_in("pt_BR.UTF-8", &["exercise", "--out", link.to_str().unwrap()]));
+    assert!(e.contains("é um link cujo destino não existe"), "{e}");
+}
+
+/// Issue 60: `--count 300` named the sheets exercise-01 … exercise-300, which a file
+/// browser lists out of order (exercise-100 before exercise-11). The numbers are padded to
+/// the width of the last: 001 … 100 for 100 sheets, and the Moodle questions of the same
+/// request name the keys by those names. Below 100 the names stay as they were (`01`).
+#[test]
+fn a_hundred_sheets_are_named_to_sort_and_moodle_names_their_keys() {
+    use phonglab::io::exercise_set::padded;
+    assert_eq!((padded(1, 9), padded(7, 99), padded(99, 99)), ("01".into(), "07".into(), "99".into()));
+    assert_eq!((padded(1, 100), padded(42, 300), padded(300, 300)), ("001".into(), "042".into(), "300".into()));
+    assert_eq!(padded(1, 1000), "0001");
+    let (sheets, bank) = (out_dir("hundred-sheets"), out_dir("hundred-gift"));
+    let request = ["exercise", "--level", "1", "--seed", "3", "--count", "100"];
+    run_ok(phonglab(&[&request[..], &["--out", sheets.to_str().unwrap()]].concat()));
+    let mut names: Vec<String> =
+        std::fs::read_dir(&sheets).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    names.retain(|n| n.starts_with("exercise-") && n.ends_with(".md") && !n.ends_with("-key.md"));
+    names.sort();
+    let want: Vec<String> = (1..=100).map(|k| format!("exercise-{k:03}.md")).collect();
+    assert_eq!(names, want, "sorted by name, the sheets are in order");
+    let index = std::fs::read_to_string(sheets.join("index.md")).unwrap();
+    assert!(index.contains("(exercise-007.md)") && index.contains("(exercise-100-key.md)"), "{index}");
+    let gift = ["--format", "gift", "--variants", "1", "--out", bank.to_str().unwrap()];
+    run_ok(phonglab(&[&request[..], &gift].concat()));
+    let text = std::fs::read_to_string(bank.join("questions.gift.txt")).unwrap();
+    for k in [1, 7, 100] {
+        let key = format!("exercise-{k:03}-key.md");
+        assert!(text.contains(&format!("key {key} of phonglab exercise --seed 3 --count 100 ")), "{key}");
+        assert!(sheets.join(&key).is_file(), "{key} is the sheets' own");
+    }
 }
