@@ -193,8 +193,11 @@ fn a_run_past_the_address_space_limit_is_refused_in_words() {
 #[test]
 fn a_refusal_says_the_value_once_and_names_what_went_wrong() {
     let twice = [("en", "given twice"), ("pt-PT", "indicada duas vezes"), ("pt-BR", "informada duas vezes")];
-    let unexpected =
-        [("en", "\"extra\" was not expected"), ("pt-PT", "Não se esperava \"extra\""), ("pt-BR", "Não se esperava \"extra\"")];
+    let unexpected = [
+        ("en", "\"extra\" was not expected"),
+        ("pt-PT", "Não se esperava \"extra\""),
+        ("pt-BR", "Não se esperava \"extra\""),
+    ];
     for ((lang, twice), (_, stray)) in twice.into_iter().zip(unexpected) {
         for (args, value) in [(["--decimal", "virgula"], "\"virgula\""), (["--memory-budget", "1Q"], "\"1Q\"")] {
             let (code, said) = refused(lang, &[&["exercise"][..], &args[..]].concat());

@@ -287,7 +287,8 @@ fn the_refusals_say_what_is_wrong_in_one_sentence() {
 fn a_refusal_says_one_in_the_singular() {
     let dir = out_dir("singular");
     let out = dir.to_str().unwrap();
-    let gift = |n: &'static str| ["exercise", "--format", "gift", "--count", n, "--variants", "1", "--memory-budget", "1"];
+    let gift =
+        |n: &'static str| ["exercise", "--format", "gift", "--count", n, "--variants", "1", "--memory-budget", "1"];
     let sheets = |n: &'static str| ["exercise", "--count", n, "--memory-budget", "1"];
     for (lang, one_question, two_questions, one_sheet, two_sheets, one_byte) in [
         (

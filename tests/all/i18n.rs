@@ -388,8 +388,26 @@ fn every_brazilian_one_has_its_zero() {
 #[test]
 fn european_portuguese_never_says_tu_where_it_says_voce() {
     const TU: [&str; 20] = [
-        "calcula", "escolhe", "abre", "guarda", "usa", "escreve", "corre", "vê", "tenta", "experimenta", "larga",
-        "fixa", "muda", "remove", "limita", "define", "dá", "clica", "carrega", "arrasta",
+        "calcula",
+        "escolhe",
+        "abre",
+        "guarda",
+        "usa",
+        "escreve",
+        "corre",
+        "vê",
+        "tenta",
+        "experimenta",
+        "larga",
+        "fixa",
+        "muda",
+        "remove",
+        "limita",
+        "define",
+        "dá",
+        "clica",
+        "carrega",
+        "arrasta",
     ];
     const DESCRIBING: [&str; 2] = ["cli-cost = ", "py-reader-doc = "];
     for path in ["i18n/pt-PT.ftl", "crates/phonglab-core/i18n/pt-PT.ftl"] {
@@ -399,7 +417,8 @@ fn european_portuguese_never_says_tu_where_it_says_voce() {
             let value = line.split_once(" = ").map_or(line, |(_, v)| v);
             let clauses = value.split(". ").flat_map(|s| s.split(": ")).flat_map(|s| s.split("; "));
             for clause in clauses {
-                let clause = clause.trim_start().trim_start_matches(|c: char| c.is_ascii_digit() || c == '.').trim_start();
+                let clause =
+                    clause.trim_start().trim_start_matches(|c: char| c.is_ascii_digit() || c == '.').trim_start();
                 let word = clause.split([' ', ',']).next().unwrap_or("").to_lowercase();
                 // "usa-se" is impersonal; "escreve-os" is "tu".
                 let verb = word.split_once('-').map_or(word.as_str(), |(v, p)| if p == "se" { "" } else { v });

@@ -382,7 +382,8 @@ pub fn check_folder_destination(dir: &Path) -> Result<(), WriteError> {
 /// The nearest of `dir` and the folders above it that is something, when that is a link
 /// whose target does not exist.
 fn dangling_link_at_or_above(dir: &Path) -> Option<std::path::PathBuf> {
-    let nearest = dir.ancestors().filter(|a| !a.as_os_str().is_empty()).find(|a| std::fs::symlink_metadata(a).is_ok())?;
+    let nearest =
+        dir.ancestors().filter(|a| !a.as_os_str().is_empty()).find(|a| std::fs::symlink_metadata(a).is_ok())?;
     let is_link = std::fs::symlink_metadata(nearest).is_ok_and(|m| m.file_type().is_symlink());
     (is_link && std::fs::metadata(nearest).is_err()).then(|| nearest.to_path_buf())
 }
