@@ -621,3 +621,41 @@ fn a_refused_picture_clears_the_last_verdict_and_says_why_in_compare() {
     h.run_steps(2);
     assert!(h.state().compare.refused.is_none());
 }
+
+#[test]
+fn a_pictures_verdict_is_hidden_once_the_scene_shown_changes_and_checked_again_on_asking() {
+    let dir = TempDir::new("stale");
+    let path = dir.0.join("aluno.png");
+    let id = mistaken_picture(&path);
+    let mut h = harness(1280.0, 720.0);
+    check_through_the_menu(&mut h, &path);
+    assert!(h.query_by_label_contains(&format!("({id})")).is_some());
+    assert!(h.query_by_label("A: the right picture of this scene").is_some());
+    // Another object: the verdict was the teapot's, so neither it nor A (the teapot) stays.
+    h.get_by_label("Sphere").click();
+    h.run_steps(3);
+    assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Sphere);
+    assert!(h.query_by_label_contains(&format!("({id})")).is_none(), "the teapot's verdict stays");
+    assert!(h.query_by_label("A: the right picture of this scene").is_none(), "the teapot's A stays");
+    assert!(h.state().ui.geometry.pictures.is_empty());
+    assert!(h.query_by_label_contains("aluno.png was checked against the scene as it was").is_some());
+    // Nor in the status line.
+    let message = format!("{:?}", h.state().message);
+    assert!(!message.contains(id) && message.contains("has changed since"), "{message}");
+    // Checked again on asking: against the sphere now, A is the sphere's picture.
+    h.get_by_label("Check it against this scene").click();
+    h.run_steps(3);
+    let p = h.state().compare.student.as_ref().expect("checked again");
+    assert!(!p.stale(&h.state().doc));
+    assert!(h.query_by_label("A: the right picture of this scene").is_some());
+    assert_eq!(h.state().ui.geometry.pictures.len(), 3);
+    // Other rules are another scene too.
+    let mut doc = h.state().doc.clone();
+    doc.scene.rules = phonglab_core::Rules::default();
+    if doc.scene.rules == h.state().doc.scene.rules {
+        doc.scene.material.shininess *= 2.0;
+    }
+    h.state_mut().load(doc, "changed");
+    h.run_steps(3);
+    assert!(h.query_by_label("A: the right picture of this scene").is_none());
+}

@@ -6,9 +6,13 @@ use egui::{RichText, Ui};
 use phonglab_core::teach::diagnose::{Diagnosis, Tried, Verdict, most_common_first, picture_shows, same_picture_said};
 use phonglab_core::teach::picture_match::difference_image;
 
+use phonglab_core::Document;
+use phonglab_core::raster::shaded::ShadedSetup;
+
 use crate::t;
 
-/// A student's picture diagnosed against the scene shown.
+/// A student's picture diagnosed against the scene shown when it was opened (or checked
+/// again); while the scene shown is another, its verdict is hidden ([`StudentPicture::stale`]).
 pub struct StudentPicture {
     /// The file's name, as shown (printable).
     pub file: String,
@@ -23,11 +27,22 @@ pub struct StudentPicture {
     pictures: [Vec<u8>; 3],
     /// Their textures, once made.
     textures: Option<[egui::TextureHandle; 3]>,
+    /// The right picture's setup it was diagnosed against ([`picture_setup`]).
+    checked: ShadedSetup,
+}
+
+/// What the right picture of `doc` is drawn from, as the diagnosis draws it (the exact
+/// power), the worked calculation's vertex left out (it draws nothing).
+pub fn picture_setup(doc: &Document) -> ShadedSetup {
+    let mut s = doc.shaded_setup(phonglab_core::PowFn::Exact);
+    s.scene.vertex = Document::default().scene.vertex;
+    s
 }
 
 impl StudentPicture {
     /// The picture `image` (RGBA8, `size` square) from `file`, as `d` diagnosed it.
-    pub fn new(file: String, size: usize, image: Vec<u8>, d: &Diagnosis) -> StudentPicture {
+    /// `doc` is the scene it was diagnosed against.
+    pub fn new(file: String, size: usize, image: Vec<u8>, d: &Diagnosis, doc: &Document) -> StudentPicture {
         let diff = difference_image(&d.picture, &image);
         StudentPicture {
             file,
@@ -36,7 +51,24 @@ impl StudentPicture {
             said: Said::of(d),
             pictures: [d.picture.clone(), image, diff],
             textures: None,
+            checked: picture_setup(doc),
         }
+    }
+
+    /// Was it diagnosed against another scene than `doc` (another object, other rules, a
+    /// changed light...)? Then its verdict is not this scene's.
+    pub fn stale(&self, doc: &Document) -> bool {
+        picture_setup(doc) != self.checked
+    }
+
+    /// The student's picture (RGBA8), to diagnose again.
+    pub fn image(&self) -> &[u8] {
+        &self.pictures[1]
+    }
+
+    /// Why no verdict is shown while the scene shown is not the one it was checked against.
+    pub fn stale_note(&self) -> String {
+        t!("student-picture-stale", file = self.file.clone())
     }
 
     /// The diagnosis in words, one line a finding, in the language shown now.
@@ -102,14 +134,29 @@ fn verdict_lines(d: &Said) -> Vec<String> {
 }
 
 /// The student's picture in Compare: the diagnosis, then A, B and the difference side by
-/// side; Clear returns Compare to the scenes. Returns where the pictures went.
-pub fn student_picture_ui(ui: &mut Ui, picture: &mut Option<StudentPicture>) -> Vec<egui::Rect> {
+/// side; Clear returns Compare to the scenes. While the scene shown (`doc`) is not the one
+/// it was checked against, a note says so in place of all that, with a button that sets
+/// `recheck`. Returns where the pictures went.
+pub fn student_picture_ui(
+    ui: &mut Ui,
+    picture: &mut Option<StudentPicture>,
+    doc: &Document,
+    recheck: &mut bool,
+) -> Vec<egui::Rect> {
     let Some(p) = picture.as_mut() else { return Vec::new() };
     let mut clear = false;
     ui.horizontal_wrapped(|ui| {
         ui.heading(t!("student-picture-heading", file = p.file.clone()));
         clear = ui.button(t!("student-clear")).on_hover_text(t!("student-clear-hover")).clicked();
     });
+    if p.stale(doc) {
+        ui.add(egui::Label::new(RichText::new(p.stale_note()).strong()).wrap());
+        *recheck = ui.button(t!("student-picture-recheck")).clicked();
+        if clear {
+            *picture = None;
+        }
+        return Vec::new();
+    }
     let wrong = p.verdict != "right";
     // The pictures first get their width's share, down to a floor; the diagnosis the
     // height left above them, scrolling when it is longer (its first line at the top).
