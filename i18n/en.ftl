@@ -1041,6 +1041,7 @@ student-picture-right = A: the right picture of this scene
 student-picture-theirs = B: the student's picture
 student-picture-stale = { $file } was checked against the scene as it was when it was opened; the scene shown has changed since, so that verdict is not this scene's.
 student-picture-recheck = Check it against this scene
+student-picture-more = The diagnosis goes on below: scroll it with the bar on its right.
 # fix57b
 check-report-printed-twice = Steps printed more than once with different values (each printing was checked)
 # fixr3

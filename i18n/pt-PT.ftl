@@ -1041,6 +1041,7 @@ student-picture-right = A: a imagem certa desta cena
 student-picture-theirs = B: a imagem do aluno
 student-picture-stale = { $file } foi corrigido com a cena tal como estava quando foi aberto; a cena mostrada mudou desde então, por isso esse veredicto não é o desta cena.
 student-picture-recheck = Corrigir com esta cena
+student-picture-more = O diagnóstico continua abaixo: desloque-o com a barra à direita.
 # fix57b
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
 # fixr3

@@ -659,3 +659,33 @@ fn a_pictures_verdict_is_hidden_once_the_scene_shown_changes_and_checked_again_o
     h.run_steps(3);
     assert!(h.query_by_label("A: the right picture of this scene").is_none());
 }
+
+#[test]
+fn presenting_the_long_diagnosis_shows_whole_above_the_pictures_within_the_window() {
+    // The spot's cutoff in radians: the longest diagnosis (in Portuguese), at a projector
+    // (F5), where no hover shows a scroll bar: its last line is above the pictures.
+    let dir = TempDir::new("present");
+    let path = dir.0.join("foco.png");
+    let doc = spotlight();
+    picture_with(&doc, &path, "spot-cutoff-radians");
+    for (w, h_px) in [(1024.0, 600.0), (1280.0, 720.0), (1920.0, 1080.0)] {
+        let mut h = harness(w, h_px);
+        h.state_mut().ui.layout.language = Some("pt-PT".into());
+        h.state_mut().load(doc.clone(), "foco");
+        h.run_steps(2);
+        phonglab::app::shell::student::check_path(h.state_mut(), &path);
+        h.state_mut().ui.layout.presenting = true;
+        h.run_steps(4);
+        let lines = h.state().compare.student.as_ref().expect("diagnosed").lines();
+        assert!(lines.len() >= 4, "{lines:?}");
+        let pictures = h.state().ui.geometry.pictures.clone();
+        assert_eq!(pictures.len(), 3, "{w}x{h_px}");
+        let last = h.get_by_label(lines.last().unwrap()).rect();
+        assert!(last.bottom() <= pictures[0].top(), "{w}x{h_px}: the last line {last:?} is hidden above {pictures:?}");
+        for r in &pictures {
+            assert!(r.height() >= 150.0, "{w}x{h_px}: a picture {r:?} shrank");
+            assert!(r.bottom() <= h_px && r.right() <= w, "{w}x{h_px}: a picture {r:?} leaves the window");
+        }
+        assert!(h.query_by_label_contains("O diagnóstico continua abaixo").is_none(), "{w}x{h_px}: {pictures:?} {last:?}");
+    }
+}

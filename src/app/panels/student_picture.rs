@@ -158,26 +158,20 @@ pub fn student_picture_ui(
         return Vec::new();
     }
     let wrong = p.verdict != "right";
-    // The pictures first get their width's share, down to a floor; the diagnosis the
-    // height left above them, scrolling when it is longer (its first line at the top).
+    let ink = wrong.then(|| super::student_column::wrong_ink(ui));
+    let texts: Vec<RichText> = p
+        .lines()
+        .into_iter()
+        .map(|line| {
+            let text = RichText::new(line).strong();
+            if let Some(ink) = ink { text.color(ink) } else { text }
+        })
+        .collect();
     let avail = ui.available_size();
-    let body = ui.text_style_height(&egui::TextStyle::Body);
-    let row = body * 2.0;
+    let row = ui.text_style_height(&egui::TextStyle::Body) * 2.0;
     let side_w = ((avail.x - 36.0) / 3.0).max(48.0);
-    let floor = side_w.min((avail.y - row) * 0.6).max(48.0);
-    let text_max = (avail.y - row - floor - 2.0 * ui.spacing().item_spacing.y).max(body * 3.0);
-    egui::ScrollArea::vertical().id_salt("student-diagnosis").max_height(text_max).auto_shrink([false, true]).show(
-        ui,
-        |ui| {
-            for line in p.lines() {
-                let mut text = RichText::new(line).strong();
-                if wrong {
-                    text = text.color(super::student_column::wrong_ink(ui));
-                }
-                ui.add(egui::Label::new(text).wrap());
-            }
-        },
-    );
+    let (text_max, whole) = diagnosis_height(ui, &texts, avail, side_w, row);
+    diagnosis_ui(ui, texts, text_max, whole);
     let size = p.size;
     let textures = p.textures.get_or_insert_with(|| {
         let names = ["student-right", "student-picture", "student-difference"];
@@ -201,6 +195,48 @@ pub fn student_picture_ui(
         *picture = None;
     }
     rects
+}
+
+/// The height the diagnosis `texts` take above the pictures, and whether that is all of
+/// them: the whole text when the pictures keep at least their floor below it (their width's
+/// share, down to three tenths of the height), else what leaves them that floor (the text
+/// then scrolls, its bar always shown and a cue under it).
+fn diagnosis_height(ui: &Ui, texts: &[RichText], avail: egui::Vec2, side_w: f32, row: f32) -> (f32, bool) {
+    let gap = ui.spacing().item_spacing.y;
+    let needed: f32 = texts
+        .iter()
+        .map(|t| {
+            let text = egui::WidgetText::from(t.clone());
+            text.into_galley(ui, Some(egui::TextWrapMode::Wrap), avail.x, egui::TextStyle::Body).size().y + gap
+        })
+        .sum();
+    let floor = side_w.min((avail.y - row) * 0.3).max(48.0);
+    let room = (avail.y - row - floor - 2.0 * gap).max(ui.text_style_height(&egui::TextStyle::Body) * 3.0);
+    if needed <= room { (needed, true) } else { (room, false) }
+}
+
+/// The diagnosis, `text_max` high; when it is not `whole`, in a scroll area whose bar is
+/// always shown (a projector shows no hover), with a cue under it that more is below.
+fn diagnosis_ui(ui: &mut Ui, texts: Vec<RichText>, text_max: f32, whole: bool) {
+    let lines = |ui: &mut Ui| {
+        for text in texts {
+            ui.add(egui::Label::new(text).wrap());
+        }
+    };
+    if whole {
+        return lines(ui);
+    }
+    let cue = ui.text_style_height(&egui::TextStyle::Small) + ui.spacing().item_spacing.y;
+    ui.scope(|ui| {
+        ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
+        egui::ScrollArea::vertical()
+            .id_salt("student-diagnosis")
+            .max_height(text_max - cue)
+            .auto_shrink([false, true])
+            .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
+            .show(ui, lines);
+    });
+    ui.small(t!("student-picture-more"));
 }
 
 /// A student's picture refused, in Compare: its name, why (in the error's ink), and Clear.
