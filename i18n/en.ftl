@@ -966,7 +966,7 @@ diagnose-verdict-wrong = Wrong. The closest mistake: { $cause } ({ $id }); the p
 diagnose-also = It also explains the picture: { $cause } ({ $id }), { $score }.
 diagnose-verdict-unexplained = No mistake phonglab knows explains this picture: the right picture explains { $right } of the object's pixels; the closest mistake, { $cause } ({ $id }), { $score }.
 diagnose-invisible = Not tried (this scene cannot show them): { $ids }
-diagnose-diff-written = Difference image written: { $path }
+diagnose-diff-written = Difference image written (|A − B| × { $gain }, the largest difference near white): { $path }
 diagnose-worst = The pixel that differs most: ({ $x }, { $y }), your picture { $image } against the right one { $right }. The probe of the right picture there:
 
 ## phonglab check: a student's work checked
@@ -1042,6 +1042,7 @@ student-picture-theirs = B: the student's picture
 student-picture-stale = { $file } was checked against the scene as it was when it was opened; the scene shown has changed since, so that verdict is not this scene's.
 student-picture-recheck = Check it against this scene
 student-picture-more = The diagnosis goes on below: scroll it with the bar on its right.
+student-picture-difference = Difference |A − B| × { $gain }
 # fix57b
 check-report-printed-twice = Steps printed more than once with different values (each printing was checked)
 # fixr3

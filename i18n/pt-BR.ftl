@@ -966,7 +966,7 @@ diagnose-verdict-wrong = Errada. O erro mais próximo: { $cause } ({ $id }); a i
 diagnose-also = Também explica a imagem: { $cause } ({ $id }), { $score }.
 diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos pixels do objeto; o erro mais próximo, { $cause } ({ $id }), { $score }.
 diagnose-invisible = Não testados (esta cena não consegue mostrá-los): { $ids }
-diagnose-diff-written = Imagem das diferenças gravada: { $path }
+diagnose-diff-written = Imagem das diferenças gravada (|A − B| × { $gain }, a maior diferença quase branca): { $path }
 diagnose-worst = O pixel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:
 
 ## phonglab check: o trabalho de um aluno verificado
@@ -1042,6 +1042,7 @@ student-picture-theirs = B: a imagem do aluno
 student-picture-stale = { $file } foi corrigido com a cena como ela estava quando foi aberto; a cena mostrada mudou desde então, então esse veredito não é o desta cena.
 student-picture-recheck = Corrigir com esta cena
 student-picture-more = O diagnóstico continua abaixo: role-o com a barra à direita.
+student-picture-difference = Diferença |A − B| × { $gain }
 # fix57b
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
 # fixr3

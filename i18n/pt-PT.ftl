@@ -966,7 +966,7 @@ diagnose-verdict-wrong = Errada. O erro mais próximo: { $cause } ({ $id }); a i
 diagnose-also = Também explica a imagem: { $cause } ({ $id }), { $score }.
 diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos píxeis do objeto; o erro mais próximo, { $cause } ({ $id }), { $score }.
 diagnose-invisible = Não experimentados (esta cena não os pode mostrar): { $ids }
-diagnose-diff-written = Imagem das diferenças escrita: { $path }
+diagnose-diff-written = Imagem das diferenças escrita (|A − B| × { $gain }, a maior diferença quase branca): { $path }
 diagnose-worst = O píxel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:
 
 ## phonglab check: o trabalho de um aluno verificado
@@ -1042,6 +1042,7 @@ student-picture-theirs = B: a imagem do aluno
 student-picture-stale = { $file } foi corrigido com a cena tal como estava quando foi aberto; a cena mostrada mudou desde então, por isso esse veredicto não é o desta cena.
 student-picture-recheck = Corrigir com esta cena
 student-picture-more = O diagnóstico continua abaixo: desloque-o com a barra à direita.
+student-picture-difference = Diferença |A − B| × { $gain }
 # fix57b
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
 # fixr3

@@ -127,9 +127,10 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
     let image = crate::io::student_png::read(&a.image, size).map_err(anyhow::Error::msg)?;
     let d = diagnose(&right, &image, size)?;
     let is_right = matches!(d.verdict, Verdict::Right);
+    let (difference, gain) = difference_image(&d.picture, &image);
     if let Some(diff) = &a.diff {
         let signed = Kind::Difference.png_text();
-        let png = crate::io::image::encode_png_signed(size, size, &difference_image(&d.picture, &image), signed)?;
+        let png = crate::io::image::encode_png_signed(size, size, &difference, signed)?;
         crate::io::work_output::write(diff, Kind::Difference, None, &png).map_err(anyhow::Error::msg)?;
     }
     let worst = (d.right.worst_levels > 0).then_some(d.right.worst);
@@ -152,7 +153,7 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
         out.push(t!("diagnose-invisible", ids = listed(&hidden)));
     }
     if let Some(diff) = &a.diff {
-        out.push(t!("diagnose-diff-written", path = crate::io::reasons::shown(diff)));
+        out.push(t!("diagnose-diff-written", path = crate::io::reasons::shown(diff), gain = gain.to_string()));
     }
     if let Some(p) = worst {
         let show = |b: [u8; 3]| format!("({}, {}, {})", b[0], b[1], b[2]);

@@ -273,8 +273,11 @@ fn a_students_picture_opens_in_compare_as_b_with_the_difference_and_the_diagnosi
     // A, B and the difference side by side, within the window at 1024 x 600.
     let a = h.get_by_label("A: the right picture of this scene").rect();
     let b = h.get_by_label("B: the student's picture").rect();
-    let d = h.get_all_by_label("Difference |A − B|").last().unwrap().rect();
+    let d = h.get_all_by_label_contains("Difference |A − B| ×").last().unwrap().rect();
     assert!(a.right() <= b.left() && b.right() <= d.left() && d.right() <= 1024.0, "{a:?} {b:?} {d:?}");
+    // The difference's caption says its gain.
+    let gain = h.state().compare.student.as_ref().unwrap().gain;
+    assert!(h.query_by_label(&format!("Difference |A − B| × {gain}")).is_some());
     h.get_by_label("Clear").click();
     h.run_steps(2);
     assert!(h.state().compare.student.is_none());

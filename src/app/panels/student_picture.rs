@@ -27,6 +27,8 @@ pub struct StudentPicture {
     pictures: [Vec<u8>; 3],
     /// Their textures, once made.
     textures: Option<[egui::TextureHandle; 3]>,
+    /// The gain the difference is shown at (its largest near white).
+    pub gain: u32,
     /// The right picture's setup it was diagnosed against ([`picture_setup`]).
     checked: ShadedSetup,
 }
@@ -43,7 +45,7 @@ impl StudentPicture {
     /// The picture `image` (RGBA8, `size` square) from `file`, as `d` diagnosed it.
     /// `doc` is the scene it was diagnosed against.
     pub fn new(file: String, size: usize, image: Vec<u8>, d: &Diagnosis, doc: &Document) -> StudentPicture {
-        let diff = difference_image(&d.picture, &image);
+        let (diff, gain) = difference_image(&d.picture, &image);
         StudentPicture {
             file,
             size,
@@ -52,6 +54,7 @@ impl StudentPicture {
             pictures: [d.picture.clone(), image, diff],
             textures: None,
             checked: picture_setup(doc),
+            gain,
         }
     }
 
@@ -181,7 +184,7 @@ pub fn student_picture_ui(
         })
     });
     let side = side_w.min(ui.available_height() - row).max(48.0);
-    let titles = [t!("student-picture-right"), t!("student-picture-theirs"), t!("compare-difference")];
+    let titles = [t!("student-picture-right"), t!("student-picture-theirs"), t!("student-picture-difference", gain = p.gain.to_string())];
     let rects = ui.columns(3, |cols| {
         (0..3)
             .map(|k| {
