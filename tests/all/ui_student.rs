@@ -692,3 +692,20 @@ fn presenting_the_long_diagnosis_shows_whole_above_the_pictures_within_the_windo
         assert!(h.query_by_label_contains("O diagnóstico continua abaixo").is_none(), "{w}x{h_px}: {pictures:?} {last:?}");
     }
 }
+
+#[test]
+fn the_chooser_names_notebooks_printed_text_and_pictures_and_starts_where_the_last_work_was() {
+    let dir = TempDir::new("chooser");
+    let path = dir.0.join("right.txt");
+    std::fs::write(&path, printed(None)).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    check_through_the_menu(&mut h, &path);
+    common::open_menu(&mut h, &["File"]);
+    h.get_by_label("Check a student's work…").click();
+    h.run_steps(2);
+    let c = h.state().chooser.as_ref().expect("the chooser opens");
+    assert_eq!(Path::new(&c.folder), dir.0.as_path(), "not the last work's folder");
+    assert!(c.name.is_empty());
+    let prompt = "Choose the student's notebook (saved with its outputs, .ipynb), printed text (.txt) or picture (.png, 512 x 512).";
+    assert!(h.query_by_label(prompt).is_some());
+}

@@ -32,6 +32,7 @@ pub fn has_outputs(bytes: &[u8]) -> bool {
 /// Checks the file at `path` (a notebook with outputs, or printed text), read capped as
 /// Open reads a notebook; says why not.
 pub fn check_path(state: &mut AppState, path: &Path) {
+    state.student_last = Some(path.to_path_buf());
     let (cap, kind) = if is_picture(path) {
         (crate::io::student_png::MAX_PICTURE_BYTES, t!("file-kind-pictures"))
     } else {
@@ -175,8 +176,14 @@ pub fn check_menu_ui(ui: &mut egui::Ui, state: &mut AppState) {
         return;
     }
     ui.close();
+    // The folder of the last work checked, else the scene's.
+    let start = state.student_last.clone().or_else(|| state.files.typed());
     let why = match state.files.dialogs {
-        Dialogs::System => match platform::pick_work_to_check(state.files.typed().as_deref()) {
+        Dialogs::System => match platform::pick_work_to_check(
+            start.as_deref(),
+            &t!("student-choose-why"),
+            &t!("student-choose-filter"),
+        ) {
             Picked::Chosen(p) => return check_path(state, &p),
             Picked::Cancelled => return,
             Picked::NoDialog(why) => {
@@ -186,7 +193,7 @@ pub fn check_menu_ui(ui: &mut egui::Ui, state: &mut AppState) {
         },
         _ => t!("student-choose-why"),
     };
-    let mut chooser = Chooser::new(Purpose::CheckWork, state.files.typed().as_deref(), why);
+    let mut chooser = Chooser::new(Purpose::CheckWork, start.as_deref(), why);
     // The scene file's folder, not its name: the student's file is another.
     chooser.name.clear();
     state.chooser = Some(chooser);
