@@ -95,8 +95,12 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
         }
         Verdict::Unexplained => {
             let closest = d.tried.first().filter(|t| t.matched.is_some());
-            let (cause, id, score) = closest.map(named).unwrap_or_default();
-            vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
+            match closest.map(named) {
+                Some((cause, id, score)) => {
+                    vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
+                }
+                None => vec![t!("diagnose-verdict-unexplained-none", right = right)],
+            }
         }
     }
 }

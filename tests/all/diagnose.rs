@@ -462,7 +462,7 @@ fn a_light_that_reaches_nothing_is_said_first_and_the_lists_keep_each_light_with
     let out = String::from_utf8_lossy(&o.stdout).into_owned();
     let lines: Vec<&str> = out.lines().collect();
     assert!(lines[0].starts_with("Nothing of light 0 (GL_LIGHT0) reaches the object"), "{out}");
-    assert!(lines[1].starts_with("Wrong. The closest mistake: Light 0 (GL_LIGHT0) left out"), "{out}");
+    assert!(lines[1].starts_with("Wrong. The cause: Light 0 (GL_LIGHT0) left out"), "{out}");
     assert!(lines[2].contains("the most common first"), "{out}");
     assert!(lines[2].contains(": light-left-out (GL_LIGHT0), spot-cutoff-radians (GL_LIGHT0), "), "{out}");
     assert!(lines.iter().filter(|l| l.starts_with("It also explains")).count() <= 3, "{out}");

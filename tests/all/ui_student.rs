@@ -689,7 +689,10 @@ fn presenting_the_long_diagnosis_shows_whole_above_the_pictures_within_the_windo
             assert!(r.height() >= 150.0, "{w}x{h_px}: a picture {r:?} shrank");
             assert!(r.bottom() <= h_px && r.right() <= w, "{w}x{h_px}: a picture {r:?} leaves the window");
         }
-        assert!(h.query_by_label_contains("O diagnóstico continua abaixo").is_none(), "{w}x{h_px}: {pictures:?} {last:?}");
+        assert!(
+            h.query_by_label_contains("O diagnóstico continua abaixo").is_none(),
+            "{w}x{h_px}: {pictures:?} {last:?}"
+        );
     }
 }
 
@@ -708,4 +711,46 @@ fn the_chooser_names_notebooks_printed_text_and_pictures_and_starts_where_the_la
     assert!(c.name.is_empty());
     let prompt = "Choose the student's notebook (saved with its outputs, .ipynb), printed text (.txt) or picture (.png, 512 x 512).";
     assert!(h.query_by_label(prompt).is_some());
+}
+
+#[test]
+fn a_named_cause_is_the_cause_and_the_unexplained_verdict_reads_as_one_sentence() {
+    // "Wrong. The cause: X" for a named cause; "closest" is the unexplained verdict's word.
+    for (lang, wrong) in [("en", "Wrong. The cause: "), ("pt-PT", "Errada. A causa: "), ("pt-BR", "Errada. A causa: ")]
+    {
+        assert!(message(lang, "diagnose-verdict-wrong").starts_with(wrong), "{lang}");
+    }
+    // pt-BR: one term for the right picture, the window's and the command line's.
+    for id in ["student-picture-right", "diagnose-verdict-right", "diagnose-verdict-wrong", "diagnose-worst"] {
+        let m = message("pt-BR", id);
+        assert!(!m.contains("correta"), "{id}: {m}");
+    }
+    assert!(message("pt-BR", "student-picture-right").contains("a imagem certa"));
+    // Another material's picture (jade for gold): unexplained; its closest mistake's words
+    // (which begin with a capital) are not run into the sentence after a comma.
+    let dir = TempDir::new("unexplained");
+    let path = dir.0.join("jade.png");
+    let doc = spotlight();
+    let mut jade = doc.clone();
+    jade.scene.material = phonglab_core::materials::by_name("jade").expect("jade").clone();
+    let mesh = jade.view.mesh();
+    let mut d = phonglab_core::teach::diagnose::Drawing::of(&jade.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    d.inside = jade.view.mesh_inside();
+    let (_, rgba, _) = d.draw(512).unwrap();
+    phonglab::io::image::write_png(&path, 512, 512, &rgba).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    h.state_mut().load(doc, "foco");
+    h.run_steps(2);
+    phonglab::app::shell::student::check_path(h.state_mut(), &path);
+    h.run_steps(2);
+    let p = h.state().compare.student.as_ref().unwrap_or_else(|| panic!("{:?}", h.state().message));
+    let lines = p.lines();
+    assert_eq!(p.verdict, "unexplained", "{lines:?}");
+    let capital_after_comma = |l: &str| {
+        l.as_bytes()
+            .windows(4)
+            .any(|w| w[0] == b',' && w[1] == b' ' && w[2].is_ascii_uppercase() && w[3].is_ascii_lowercase())
+    };
+    assert!(lines.iter().all(|l| !capital_after_comma(l)), "{lines:?}");
+    assert!(lines[0].contains(". The closest mistake, not named as the cause ("), "{lines:?}");
 }

@@ -299,7 +299,8 @@ pub fn compare_ui(
     b: &Evaluated,
 ) -> (Option<String>, Vec<egui::Rect>) {
     if compare.student.is_some() {
-        let rects = super::student_picture::student_picture_ui(ui, &mut compare.student, current.doc, &mut compare.recheck);
+        let rects =
+            super::student_picture::student_picture_ui(ui, &mut compare.student, current.doc, &mut compare.recheck);
         return (None, rects);
     }
     if compare.refused.is_some() {

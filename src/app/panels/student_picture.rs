@@ -129,10 +129,12 @@ fn verdict_lines(d: &Said) -> Vec<String> {
             }
             out
         }
-        Verdict::Unexplained => {
-            let (cause, id, score) = d.named.first().map(named).unwrap_or_default();
-            vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
-        }
+        Verdict::Unexplained => match d.named.first().map(named) {
+            Some((cause, id, score)) => {
+                vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
+            }
+            None => vec![t!("diagnose-verdict-unexplained-none", right = right)],
+        },
     }
 }
 
@@ -184,7 +186,11 @@ pub fn student_picture_ui(
         })
     });
     let side = side_w.min(ui.available_height() - row).max(48.0);
-    let titles = [t!("student-picture-right"), t!("student-picture-theirs"), t!("student-picture-difference", gain = p.gain.to_string())];
+    let titles = [
+        t!("student-picture-right"),
+        t!("student-picture-theirs"),
+        t!("student-picture-difference", gain = p.gain.to_string()),
+    ];
     let rects = ui.columns(3, |cols| {
         (0..3)
             .map(|k| {

@@ -232,13 +232,8 @@ fn diagnose_picture(state: &mut AppState, image: Vec<u8>, file: String, path: &P
     right.inside = state.doc.view.mesh_inside();
     match diagnose(&right, &image, PICTURE_SIZE) {
         Ok(d) => {
-            let picture = crate::app::panels::student_picture::StudentPicture::new(
-                file,
-                PICTURE_SIZE,
-                image,
-                &d,
-                &state.doc,
-            );
+            let picture =
+                crate::app::panels::student_picture::StudentPicture::new(file, PICTURE_SIZE, image, &d, &state.doc);
             state.compare.student = Some(picture);
             state.compare.refused = None;
             state.compare.open = true;
