@@ -188,7 +188,8 @@ pub fn check_menu_ui(ui: &mut egui::Ui, state: &mut AppState) {
             Picked::Cancelled => return,
             Picked::NoDialog(why) => {
                 state.files.dialogs = Dialogs::InApp;
-                why
+                // Why phonglab's own chooser, then what to choose in it.
+                format!("{why} {}", t!("student-choose-why"))
             }
         },
         _ => t!("student-choose-why"),
