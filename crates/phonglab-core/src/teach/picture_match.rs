@@ -82,7 +82,7 @@ pub fn difference_image(picture: &[u8], image: &[u8]) -> (Vec<u8>, u32) {
     let pixels = || picture.chunks_exact(4).zip(image.chunks_exact(4));
     let largest = pixels().map(|(a, b)| u32::from(apart(a, b))).max().unwrap_or(0);
     // Equal pictures: nothing to amplify.
-    let gain = if largest == 0 { 1 } else { (255 / largest).clamp(1, MAX_DIFFERENCE_GAIN) };
+    let gain = 255u32.checked_div(largest).map_or(1, |g| g.clamp(1, MAX_DIFFERENCE_GAIN));
     let rgba = pixels()
         .flat_map(|(a, b)| {
             let d = |c: usize| (u32::from(a[c].abs_diff(b[c])) * gain).min(255) as u8;
