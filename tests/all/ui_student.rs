@@ -685,9 +685,19 @@ fn presenting_the_long_diagnosis_shows_whole_above_the_pictures_within_the_windo
         assert_eq!(pictures.len(), 3, "{w}x{h_px}");
         let last = h.get_by_label(lines.last().unwrap()).rect();
         assert!(last.bottom() <= pictures[0].top(), "{w}x{h_px}: the last line {last:?} is hidden above {pictures:?}");
+        assert!(last.right() <= w, "{w}x{h_px}: the last line {last:?} leaves the window");
         for r in &pictures {
             assert!(r.height() >= 150.0, "{w}x{h_px}: a picture {r:?} shrank");
             assert!(r.bottom() <= h_px && r.right() <= w, "{w}x{h_px}: a picture {r:?} leaves the window");
+            // They take the height left (at 1920x1080 the bottom quarter was empty).
+            assert!(r.bottom() >= 0.85 * h_px, "{w}x{h_px}: a picture {r:?} leaves the foot empty");
+        }
+        // The text shrinks only where the whole would not fit (1024x600: 18 pixels a row;
+        // 1.45 times egui's, 22, where it fits), never below egui's own size.
+        let one_row = h.get_by_label(&lines[0]).rect().height();
+        assert!(one_row >= 17.0, "{w}x{h_px}: {one_row}");
+        if w >= 1280.0 {
+            assert!(one_row >= 21.0, "{w}x{h_px}: smaller than presenting's type ({one_row})");
         }
         assert!(
             h.query_by_label_contains("O diagnóstico continua abaixo").is_none(),

@@ -178,19 +178,21 @@ pub fn student_picture_ui(
     }
     let wrong = p.verdict != "right";
     let ink = wrong.then(|| super::student_column::wrong_ink(ui));
-    let texts: Vec<RichText> = p
-        .lines()
-        .into_iter()
-        .map(|line| {
-            let text = RichText::new(line).strong();
-            if let Some(ink) = ink { text.color(ink) } else { text }
-        })
-        .collect();
+    let lines = p.lines();
+    let texts = |size: f32| -> Vec<RichText> {
+        lines
+            .iter()
+            .map(|line| {
+                let text = RichText::new(line).strong().size(size);
+                if let Some(ink) = ink { text.color(ink) } else { text }
+            })
+            .collect()
+    };
     let avail = ui.available_size();
     let row = ui.text_style_height(&egui::TextStyle::Body) * 2.0;
     let side_w = ((avail.x - 36.0) / 3.0).max(48.0);
-    let (text_max, whole) = diagnosis_height(ui, &texts, avail, side_w, row);
-    diagnosis_ui(ui, texts, text_max, whole);
+    let fit = diagnosis_fit(ui, &texts, avail, side_w, row);
+    diagnosis_ui(ui, texts(fit.size), fit.height, fit.whole);
     let size = p.size;
     let textures = p.textures.get_or_insert_with(|| {
         let names = ["student-right", "student-picture", "student-difference"];
@@ -220,22 +222,48 @@ pub fn student_picture_ui(
     rects
 }
 
-/// The height the diagnosis `texts` take above the pictures, and whether that is all of
-/// them: the whole text when the pictures keep at least their floor below it (their width's
-/// share, down to three tenths of the height), else what leaves them that floor (the text
-/// then scrolls, its bar always shown and a cue under it).
-fn diagnosis_height(ui: &Ui, texts: &[RichText], avail: egui::Vec2, side_w: f32, row: f32) -> (f32, bool) {
+/// How the diagnosis is shown above the pictures: its text's size, its height, and
+/// whether that is all of it.
+struct Fit {
+    size: f32,
+    height: f32,
+    whole: bool,
+}
+
+/// How the diagnosis (`texts` at a size) fits above the pictures. Whole when the pictures
+/// keep at least their floor below it (their width's share, down to a third of the height):
+/// at the style's size if it fits, else in smaller type, never below egui's own size (the
+/// window's when not presenting). At 1024x600, presenting, the longest diagnosis is 414
+/// pixels high at 1.45 times, and three pictures 150 high with their titles need 185 of the
+/// 514 left: beside the text they would need 555, or leave the text 690 wide (585 high).
+/// Only when it does not fit at the least size does it scroll, leaving the pictures their
+/// floor (its bar always shown and a cue under it).
+fn diagnosis_fit(ui: &Ui, texts: &dyn Fn(f32) -> Vec<RichText>, avail: egui::Vec2, side_w: f32, row: f32) -> Fit {
     let gap = ui.spacing().item_spacing.y;
-    let needed: f32 = texts
-        .iter()
-        .map(|t| {
-            let text = egui::WidgetText::from(t.clone());
-            text.into_galley(ui, Some(egui::TextWrapMode::Wrap), avail.x, egui::TextStyle::Body).size().y + gap
-        })
-        .sum();
-    let floor = side_w.min((avail.y - row) * 0.3).max(48.0);
+    let height = |size: f32| -> f32 {
+        texts(size)
+            .into_iter()
+            .map(|t| {
+                let text = egui::WidgetText::from(t);
+                text.into_galley(ui, Some(egui::TextWrapMode::Wrap), avail.x, egui::TextStyle::Body).size().y + gap
+            })
+            .sum()
+    };
+    let body = egui::TextStyle::Body.resolve(ui.style()).size;
+    let least = egui::TextStyle::Body.resolve(&egui::Style::default()).size.min(body);
+    let floor = side_w.min((avail.y - row) / 3.0).max(48.0);
     let room = (avail.y - row - floor - 2.0 * gap).max(ui.text_style_height(&egui::TextStyle::Body) * 3.0);
-    if needed <= room { (needed, true) } else { (room, false) }
+    let mut size = body;
+    loop {
+        let needed = height(size);
+        if needed <= room {
+            return Fit { size, height: needed, whole: true };
+        }
+        if size <= least {
+            return Fit { size, height: room, whole: false };
+        }
+        size = (size * 0.95).max(least);
+    }
 }
 
 /// The diagnosis, `text_max` high; when it is not `whole`, in a scroll area whose bar is
