@@ -979,11 +979,12 @@ png-reason-damaged = the file is damaged or cut short
 png-reason-colours = its colours are stored as { $kind }, which phonglab does not read
 diagnose-wrong-size = { $path } is { $got } pixels; the picture of this scene is { $expected } (the export's window; another size with --size)
 diagnose-verdict-right = Right: the right picture explains { $score } of the object's pixels.
-diagnose-verdict-wrong = Wrong. The closest mistake: { $cause } ({ $id }); the picture with that mistake explains { $score } of the object's pixels, the right picture { $right }.
+diagnose-verdict-wrong = Wrong. The cause: { $cause } ({ $id }); the picture with that mistake explains { $score } of the object's pixels, the right picture { $right }.
 diagnose-also = It also explains the picture: { $cause } ({ $id }), { $score }.
-diagnose-verdict-unexplained = No mistake phonglab knows explains this picture: the right picture explains { $right } of the object's pixels; the closest mistake, { $cause } ({ $id }), { $score }.
+diagnose-verdict-unexplained = No mistake phonglab knows explains this picture: the right picture explains { $right } of the object's pixels. The closest mistake, not named as the cause ({ $id }, { $score }): { $cause }.
+diagnose-verdict-unexplained-none = No mistake phonglab knows explains this picture: the right picture explains { $right } of the object's pixels.
 diagnose-invisible = Not tried (this scene cannot show them): { $ids }
-diagnose-diff-written = Difference image written: { $path }
+diagnose-diff-written = Difference image written (|A − B| × { $gain }, the largest difference near white): { $path }
 diagnose-worst = The pixel that differs most: ({ $x }, { $y }), your picture { $image } against the right one { $right }. The probe of the right picture there:
 
 ## phonglab check: a student's work checked
@@ -1038,7 +1039,8 @@ cli-arg-check-report = For a folder: the class report to write (Markdown), with 
 cli-arg-check-csv = For a folder: the marks to write (CSV)
 student-menu = Check a student's work…
 student-menu-hover = A worksheet notebook saved with its outputs (.ipynb) or the text a script printed (.txt), checked against the scene shown: the student's value beside each step, the first wrong step and its likely causes; or a picture their program drew (.png, 512 x 512), diagnosed in Compare. Nothing in it is run.
-student-choose-why = Choose the student's notebook (saved with its outputs) or printed text.
+student-choose-why = Choose the student's notebook (saved with its outputs, .ipynb), printed text (.txt) or picture (.png, 512 x 512).
+student-choose-filter = Notebook, printed text or picture
 student-check = Check
 student-heading = Student's work: { $file }
 student-clear = Clear
@@ -1056,6 +1058,10 @@ student-ask-open = Open it as the scene
 student-picture-heading = Student's picture: { $file }
 student-picture-right = A: the right picture of this scene
 student-picture-theirs = B: the student's picture
+student-picture-stale = { $file } was checked against the scene as it was when it was opened; the scene shown has changed since, so that verdict is not this scene's.
+student-picture-recheck = Check it against this scene
+student-picture-more = The diagnosis goes on below: scroll it with the bar on its right.
+student-picture-difference = Difference |A − B| × { $gain }
 # fix57b
 check-report-printed-twice = Steps printed more than once with different values (each printing was checked)
 # fixr3

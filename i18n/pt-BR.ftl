@@ -996,11 +996,12 @@ png-reason-damaged = o arquivo está danificado ou incompleto
 png-reason-colours = as cores dele estão gravadas como { $kind }, que o phonglab não lê
 diagnose-wrong-size = { $path } tem { $got } pixels; a imagem desta cena tem { $expected } (a janela da exportação; outro tamanho com --size)
 diagnose-verdict-right = Certa: a imagem certa explica { $score } dos pixels do objeto.
-diagnose-verdict-wrong = Errada. O erro mais próximo: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos pixels do objeto, a imagem certa { $right }.
+diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos pixels do objeto, a imagem certa { $right }.
 diagnose-also = Também explica a imagem: { $cause } ({ $id }), { $score }.
-diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos pixels do objeto; o erro mais próximo, { $cause } ({ $id }), { $score }.
+diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos pixels do objeto. O erro mais próximo, que não é apontado como a causa ({ $id }, { $score }): { $cause }.
+diagnose-verdict-unexplained-none = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos pixels do objeto.
 diagnose-invisible = Não testados (esta cena não consegue mostrá-los): { $ids }
-diagnose-diff-written = Imagem das diferenças gravada: { $path }
+diagnose-diff-written = Imagem das diferenças gravada (|A − B| × { $gain }, a maior diferença quase branca): { $path }
 diagnose-worst = O pixel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:
 
 ## phonglab check: o trabalho de um aluno verificado
@@ -1056,7 +1057,8 @@ cli-arg-check-report = Para uma pasta: o relatório da turma a escrever (Markdow
 cli-arg-check-csv = Para uma pasta: as notas a escrever (CSV)
 student-menu = Corrigir o trabalho de um aluno…
 student-menu-hover = Um notebook da lista salvo com as saídas (.ipynb) ou o texto que um programa imprimiu (.txt), corrigido com a cena mostrada: o valor do aluno ao lado de cada passo, o primeiro passo errado e as causas prováveis; ou uma imagem que o programa dele desenhou (.png, 512 x 512), diagnosticada em Comparar. Nada do que está nele é executado.
-student-choose-why = Escolha o notebook do aluno (salvo com as saídas) ou o texto impresso.
+student-choose-why = Escolha o notebook do aluno (salvo com as saídas, .ipynb), o texto impresso (.txt) ou a imagem (.png, 512 x 512).
+student-choose-filter = Notebook, texto impresso ou imagem
 student-check = Corrigir
 student-heading = Trabalho do aluno: { $file }
 student-clear = Limpar
@@ -1072,8 +1074,12 @@ student-ask = { $file } tem valores impressos. Corrigi-los com esta cena, ou abr
 student-ask-check = Corrigir com esta cena
 student-ask-open = Abrir como cena
 student-picture-heading = Imagem do aluno: { $file }
-student-picture-right = A: a imagem correta desta cena
+student-picture-right = A: a imagem certa desta cena
 student-picture-theirs = B: a imagem do aluno
+student-picture-stale = { $file } foi corrigido com a cena como ela estava quando foi aberto; a cena mostrada mudou desde então, então esse veredito não é o desta cena.
+student-picture-recheck = Corrigir com esta cena
+student-picture-more = O diagnóstico continua abaixo: role-o com a barra à direita.
+student-picture-difference = Diferença |A − B| × { $gain }
 # fix57b
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
 # fixr3

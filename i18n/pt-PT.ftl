@@ -982,11 +982,12 @@ png-reason-damaged = o ficheiro está danificado ou incompleto
 png-reason-colours = as suas cores estão guardadas como { $kind }, que o phonglab não lê
 diagnose-wrong-size = { $path } tem { $got } píxeis; a imagem desta cena tem { $expected } (a janela da exportação; outro tamanho com --size)
 diagnose-verdict-right = Certa: a imagem certa explica { $score } dos píxeis do objeto.
-diagnose-verdict-wrong = Errada. O erro mais próximo: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos píxeis do objeto, a imagem certa { $right }.
+diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos píxeis do objeto, a imagem certa { $right }.
 diagnose-also = Também explica a imagem: { $cause } ({ $id }), { $score }.
-diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos píxeis do objeto; o erro mais próximo, { $cause } ({ $id }), { $score }.
+diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos píxeis do objeto. O erro mais próximo, que não é dado como a causa ({ $id }, { $score }): { $cause }.
+diagnose-verdict-unexplained-none = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos píxeis do objeto.
 diagnose-invisible = Não experimentados (esta cena não os pode mostrar): { $ids }
-diagnose-diff-written = Imagem das diferenças escrita: { $path }
+diagnose-diff-written = Imagem das diferenças escrita (|A − B| × { $gain }, a maior diferença quase branca): { $path }
 diagnose-worst = O píxel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:
 
 ## phonglab check: o trabalho de um aluno verificado
@@ -1041,7 +1042,8 @@ cli-arg-check-report = Para uma pasta: o relatório da turma a escrever (Markdow
 cli-arg-check-csv = Para uma pasta: as notas a escrever (CSV)
 student-menu = Corrigir o trabalho de um aluno…
 student-menu-hover = Um caderno da ficha guardado com as saídas (.ipynb) ou o texto que um programa imprimiu (.txt), corrigido com a cena mostrada: o valor do aluno ao lado de cada passo, o primeiro passo errado e as causas prováveis; ou uma imagem que o programa dele desenhou (.png, 512 x 512), diagnosticada em Comparar. Nada do que lá está é executado.
-student-choose-why = Escolha o caderno do aluno (guardado com as saídas) ou o texto impresso.
+student-choose-why = Escolha o caderno do aluno (guardado com as saídas, .ipynb), o texto impresso (.txt) ou a imagem (.png, 512 x 512).
+student-choose-filter = Caderno, texto impresso ou imagem
 student-check = Corrigir
 student-heading = Trabalho do aluno: { $file }
 student-clear = Limpar
@@ -1059,6 +1061,10 @@ student-ask-open = Abrir como cena
 student-picture-heading = Imagem do aluno: { $file }
 student-picture-right = A: a imagem certa desta cena
 student-picture-theirs = B: a imagem do aluno
+student-picture-stale = { $file } foi corrigido com a cena tal como estava quando foi aberto; a cena mostrada mudou desde então, por isso esse veredicto não é o desta cena.
+student-picture-recheck = Corrigir com esta cena
+student-picture-more = O diagnóstico continua abaixo: desloque-o com a barra à direita.
+student-picture-difference = Diferença |A − B| × { $gain }
 # fix57b
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
 # fixr3

@@ -96,8 +96,12 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
         Verdict::Unexplained if d.shape.is_some() => d.shape.iter().map(|s| s.words(d.right.score)).collect(),
         Verdict::Unexplained => {
             let closest = d.tried.first().filter(|t| t.matched.is_some());
-            let (cause, id, score) = closest.map(named).unwrap_or_default();
-            vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
+            match closest.map(named) {
+                Some((cause, id, score)) => {
+                    vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
+                }
+                None => vec![t!("diagnose-verdict-unexplained-none", right = right)],
+            }
         }
     }
 }
@@ -133,9 +137,10 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
     let image = crate::io::student_png::read(&a.image, size).map_err(anyhow::Error::msg)?;
     let d = diagnose(&right, &image, size)?;
     let is_right = matches!(d.verdict, Verdict::Right);
+    let (difference, gain) = difference_image(&d.picture, &image);
     if let Some(diff) = &a.diff {
         let signed = Kind::Difference.png_text();
-        let png = crate::io::image::encode_png_signed(size, size, &difference_image(&d.picture, &image), signed)?;
+        let png = crate::io::image::encode_png_signed(size, size, &difference, signed)?;
         crate::io::work_output::write(diff, Kind::Difference, None, &png).map_err(anyhow::Error::msg)?;
     }
     let worst = (d.right.worst_levels > 0).then_some(d.right.worst);
@@ -158,7 +163,7 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
         out.push(t!("diagnose-invisible", ids = listed(&hidden)));
     }
     if let Some(diff) = &a.diff {
-        out.push(t!("diagnose-diff-written", path = crate::io::reasons::shown(diff)));
+        out.push(t!("diagnose-diff-written", path = crate::io::reasons::shown(diff), gain = gain.to_string()));
     }
     if let Some(p) = worst {
         let show = |b: [u8; 3]| format!("({}, {}, {})", b[0], b[1], b[2]);

@@ -66,8 +66,8 @@ pub fn pick_scene_to_open(start: Option<&std::path::Path>) -> Picked {
 
 /// A student's work to check: a notebook with its outputs, or a script's printed text.
 #[cfg(not(target_arch = "wasm32"))]
-pub fn pick_work_to_check(start: Option<&std::path::Path>) -> Picked {
-    run_dialog(|| dialog(start).add_filter("Notebook, printed text or picture", &["ipynb", "txt", "png"]).pick_file())
+pub fn pick_work_to_check(start: Option<&std::path::Path>, title: &str, filter: &str) -> Picked {
+    run_dialog(|| dialog(start).set_title(title).add_filter(filter, &["ipynb", "txt", "png"]).pick_file())
 }
 
 /// Where to save the scene.
@@ -144,7 +144,7 @@ pub fn pick_scene_to_open(_start: Option<&std::path::Path>) -> Picked {
 
 /// The browser has no dialog that returns a path: a student's work is dropped on the page.
 #[cfg(target_arch = "wasm32")]
-pub fn pick_work_to_check(_start: Option<&std::path::Path>) -> Picked {
+pub fn pick_work_to_check(_start: Option<&std::path::Path>, _title: &str, _filter: &str) -> Picked {
     Picked::Cancelled
 }
 

@@ -462,7 +462,7 @@ fn a_light_that_reaches_nothing_is_said_first_and_the_lists_keep_each_light_with
     let out = String::from_utf8_lossy(&o.stdout).into_owned();
     let lines: Vec<&str> = out.lines().collect();
     assert!(lines[0].starts_with("Nothing of light 0 (GL_LIGHT0) reaches the object"), "{out}");
-    assert!(lines[1].starts_with("Wrong. The closest mistake: Light 0 (GL_LIGHT0) left out"), "{out}");
+    assert!(lines[1].starts_with("Wrong. The cause: Light 0 (GL_LIGHT0) left out"), "{out}");
     assert!(lines[2].contains("the most common first"), "{out}");
     assert!(lines[2].contains(": light-left-out (GL_LIGHT0), spot-cutoff-radians (GL_LIGHT0), "), "{out}");
     assert!(lines.iter().filter(|l| l.starts_with("It also explains")).count() <= 3, "{out}");
@@ -477,6 +477,33 @@ fn a_light_that_reaches_nothing_is_said_first_and_the_lists_keep_each_light_with
     // The JSON's causes are as they were: the light left out among the same picture's.
     let v = diagnose_json(&right, &image);
     assert!(v["same_picture"].as_array().unwrap().iter().any(|c| c["id"] == "light-left-out"), "{v:#}");
+}
+
+#[test]
+fn a_small_difference_is_written_amplified_to_show_and_its_gain_said() {
+    // The right picture with red 6 levels more everywhere (a colour a little off): the
+    // difference, × 4, was 24/255 (black on a projector); now the largest shows near white.
+    let dir = scratch("small-diff");
+    let scene = write(&dir, "scene.toml", &spotlight());
+    let drawn = dir.join("drawn.png");
+    let size = SIZE.to_string();
+    let o = phonglab(&["render", "--scene", scene.to_str().unwrap(), "--size", &size, "-o", drawn.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (_, _, mut rgba) = phonglab::io::image::read_png(&drawn).unwrap();
+    for p in rgba.chunks_mut(4) {
+        p[0] = p[0].min(249) + 6;
+    }
+    let image = dir.join("student.png");
+    phonglab::io::image::write_png(&image, SIZE, SIZE, &rgba).unwrap();
+    let diff = dir.join("diff.png");
+    let args = ["diagnose", "--scene", scene.to_str().unwrap(), "--image", image.to_str().unwrap(), "--size", &size];
+    let o = phonglab(&[&args[..], &["--diff", diff.to_str().unwrap()]].concat());
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("|A − B| × 42"), "{text}");
+    let (_, _, d) = phonglab::io::image::read_png(&diff).unwrap();
+    let reds: Vec<u8> = d.chunks(4).map(|p| p[0]).collect();
+    assert!(reds.iter().filter(|&&r| r == 252).count() > SIZE * SIZE / 2, "{:?}", &reds[..8]);
+    assert!(d.chunks(4).all(|p| p[1] == 0 && p[2] == 0));
 }
 
 /// `phonglab diagnose --json` of `tests/data/diagnose_lossy/NAME` against the spotlight

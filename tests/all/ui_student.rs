@@ -273,8 +273,11 @@ fn a_students_picture_opens_in_compare_as_b_with_the_difference_and_the_diagnosi
     // A, B and the difference side by side, within the window at 1024 x 600.
     let a = h.get_by_label("A: the right picture of this scene").rect();
     let b = h.get_by_label("B: the student's picture").rect();
-    let d = h.get_all_by_label("Difference |A − B|").last().unwrap().rect();
+    let d = h.get_all_by_label_contains("Difference |A − B| ×").last().unwrap().rect();
     assert!(a.right() <= b.left() && b.right() <= d.left() && d.right() <= 1024.0, "{a:?} {b:?} {d:?}");
+    // The difference's caption says its gain.
+    let gain = h.state().compare.student.as_ref().unwrap().gain;
+    assert!(h.query_by_label(&format!("Difference |A − B| × {gain}")).is_some());
     h.get_by_label("Clear").click();
     h.run_steps(2);
     assert!(h.state().compare.student.is_none());
@@ -620,4 +623,144 @@ fn a_refused_picture_clears_the_last_verdict_and_says_why_in_compare() {
     h.get_by_label("Clear").click();
     h.run_steps(2);
     assert!(h.state().compare.refused.is_none());
+}
+
+#[test]
+fn a_pictures_verdict_is_hidden_once_the_scene_shown_changes_and_checked_again_on_asking() {
+    let dir = TempDir::new("stale");
+    let path = dir.0.join("aluno.png");
+    let id = mistaken_picture(&path);
+    let mut h = harness(1280.0, 720.0);
+    check_through_the_menu(&mut h, &path);
+    assert!(h.query_by_label_contains(&format!("({id})")).is_some());
+    assert!(h.query_by_label("A: the right picture of this scene").is_some());
+    // Another object: the verdict was the teapot's, so neither it nor A (the teapot) stays.
+    h.get_by_label("Sphere").click();
+    h.run_steps(3);
+    assert_eq!(h.state().doc.view.object, phonglab_core::ObjectKind::Sphere);
+    assert!(h.query_by_label_contains(&format!("({id})")).is_none(), "the teapot's verdict stays");
+    assert!(h.query_by_label("A: the right picture of this scene").is_none(), "the teapot's A stays");
+    assert!(h.state().ui.geometry.pictures.is_empty());
+    assert!(h.query_by_label_contains("aluno.png was checked against the scene as it was").is_some());
+    // Nor in the status line.
+    let message = format!("{:?}", h.state().message);
+    assert!(!message.contains(id) && message.contains("has changed since"), "{message}");
+    // Checked again on asking: against the sphere now, A is the sphere's picture.
+    h.get_by_label("Check it against this scene").click();
+    h.run_steps(3);
+    let p = h.state().compare.student.as_ref().expect("checked again");
+    assert!(!p.stale(&h.state().doc));
+    assert!(h.query_by_label("A: the right picture of this scene").is_some());
+    assert_eq!(h.state().ui.geometry.pictures.len(), 3);
+    // Other rules are another scene too.
+    let mut doc = h.state().doc.clone();
+    doc.scene.rules = phonglab_core::Rules::default();
+    if doc.scene.rules == h.state().doc.scene.rules {
+        doc.scene.material.shininess *= 2.0;
+    }
+    h.state_mut().load(doc, "changed");
+    h.run_steps(3);
+    assert!(h.query_by_label("A: the right picture of this scene").is_none());
+}
+
+#[test]
+fn presenting_the_long_diagnosis_shows_whole_above_the_pictures_within_the_window() {
+    // The spot's cutoff in radians: the longest diagnosis (in Portuguese), at a projector
+    // (F5), where no hover shows a scroll bar: its last line is above the pictures.
+    let dir = TempDir::new("present");
+    let path = dir.0.join("foco.png");
+    let doc = spotlight();
+    picture_with(&doc, &path, "spot-cutoff-radians");
+    for (w, h_px) in [(1024.0, 600.0), (1280.0, 720.0), (1920.0, 1080.0)] {
+        let mut h = harness(w, h_px);
+        h.state_mut().ui.layout.language = Some("pt-PT".into());
+        h.state_mut().load(doc.clone(), "foco");
+        h.run_steps(2);
+        phonglab::app::shell::student::check_path(h.state_mut(), &path);
+        h.state_mut().ui.layout.presenting = true;
+        h.run_steps(4);
+        let lines = h.state().compare.student.as_ref().expect("diagnosed").lines();
+        assert!(lines.len() >= 4, "{lines:?}");
+        let pictures = h.state().ui.geometry.pictures.clone();
+        assert_eq!(pictures.len(), 3, "{w}x{h_px}");
+        let last = h.get_by_label(lines.last().unwrap()).rect();
+        assert!(last.bottom() <= pictures[0].top(), "{w}x{h_px}: the last line {last:?} is hidden above {pictures:?}");
+        assert!(last.right() <= w, "{w}x{h_px}: the last line {last:?} leaves the window");
+        for r in &pictures {
+            assert!(r.height() >= 150.0, "{w}x{h_px}: a picture {r:?} shrank");
+            assert!(r.bottom() <= h_px && r.right() <= w, "{w}x{h_px}: a picture {r:?} leaves the window");
+            // They take the height left (at 1920x1080 the bottom quarter was empty).
+            assert!(r.bottom() >= 0.85 * h_px, "{w}x{h_px}: a picture {r:?} leaves the foot empty");
+        }
+        // The text shrinks only where the whole would not fit (1024x600: 18 pixels a row;
+        // 1.45 times egui's, 22, where it fits), never below egui's own size.
+        let one_row = h.get_by_label(&lines[0]).rect().height();
+        assert!(one_row >= 17.0, "{w}x{h_px}: {one_row}");
+        if w >= 1280.0 {
+            assert!(one_row >= 21.0, "{w}x{h_px}: smaller than presenting's type ({one_row})");
+        }
+        assert!(
+            h.query_by_label_contains("O diagnóstico continua abaixo").is_none(),
+            "{w}x{h_px}: {pictures:?} {last:?}"
+        );
+    }
+}
+
+#[test]
+fn the_chooser_names_notebooks_printed_text_and_pictures_and_starts_where_the_last_work_was() {
+    let dir = TempDir::new("chooser");
+    let path = dir.0.join("right.txt");
+    std::fs::write(&path, printed(None)).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    check_through_the_menu(&mut h, &path);
+    common::open_menu(&mut h, &["File"]);
+    h.get_by_label("Check a student's work…").click();
+    h.run_steps(2);
+    let c = h.state().chooser.as_ref().expect("the chooser opens");
+    assert_eq!(Path::new(&c.folder), dir.0.as_path(), "not the last work's folder");
+    assert!(c.name.is_empty());
+    let prompt = "Choose the student's notebook (saved with its outputs, .ipynb), printed text (.txt) or picture (.png, 512 x 512).";
+    assert!(h.query_by_label(prompt).is_some());
+}
+
+#[test]
+fn a_named_cause_is_the_cause_and_the_unexplained_verdict_reads_as_one_sentence() {
+    // "Wrong. The cause: X" for a named cause; "closest" is the unexplained verdict's word.
+    for (lang, wrong) in [("en", "Wrong. The cause: "), ("pt-PT", "Errada. A causa: "), ("pt-BR", "Errada. A causa: ")]
+    {
+        assert!(message(lang, "diagnose-verdict-wrong").starts_with(wrong), "{lang}");
+    }
+    // pt-BR: one term for the right picture, the window's and the command line's.
+    for id in ["student-picture-right", "diagnose-verdict-right", "diagnose-verdict-wrong", "diagnose-worst"] {
+        let m = message("pt-BR", id);
+        assert!(!m.contains("correta"), "{id}: {m}");
+    }
+    assert!(message("pt-BR", "student-picture-right").contains("a imagem certa"));
+    // Another material's picture (jade for gold): unexplained; its closest mistake's words
+    // (which begin with a capital) are not run into the sentence after a comma.
+    let dir = TempDir::new("unexplained");
+    let path = dir.0.join("jade.png");
+    let doc = spotlight();
+    let mut jade = doc.clone();
+    jade.scene.material = phonglab_core::materials::by_name("jade").expect("jade").clone();
+    let mesh = jade.view.mesh();
+    let mut d = phonglab_core::teach::diagnose::Drawing::of(&jade.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    d.inside = jade.view.mesh_inside();
+    let (_, rgba, _) = d.draw(512).unwrap();
+    phonglab::io::image::write_png(&path, 512, 512, &rgba).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    h.state_mut().load(doc, "foco");
+    h.run_steps(2);
+    phonglab::app::shell::student::check_path(h.state_mut(), &path);
+    h.run_steps(2);
+    let p = h.state().compare.student.as_ref().unwrap_or_else(|| panic!("{:?}", h.state().message));
+    let lines = p.lines();
+    assert_eq!(p.verdict, "unexplained", "{lines:?}");
+    let capital_after_comma = |l: &str| {
+        l.as_bytes()
+            .windows(4)
+            .any(|w| w[0] == b',' && w[1] == b' ' && w[2].is_ascii_uppercase() && w[3].is_ascii_lowercase())
+    };
+    assert!(lines.iter().all(|l| !capital_after_comma(l)), "{lines:?}");
+    assert!(lines[0].contains(". The closest mistake, not named as the cause ("), "{lines:?}");
 }

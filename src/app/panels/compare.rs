@@ -121,6 +121,8 @@ pub struct CompareState {
     pub student: Option<super::student_picture::StudentPicture>,
     /// A student's picture refused: its name and why, shown in place of the scenes.
     pub refused: Option<(String, String)>,
+    /// Asked to diagnose the student's picture again, against the scene shown now.
+    pub recheck: bool,
     /// The last difference picture, and the pictures' generations it was made from.
     diff: Option<((u64, u64), Difference, egui::TextureHandle)>,
 }
@@ -297,7 +299,9 @@ pub fn compare_ui(
     b: &Evaluated,
 ) -> (Option<String>, Vec<egui::Rect>) {
     if compare.student.is_some() {
-        return (None, super::student_picture::student_picture_ui(ui, &mut compare.student));
+        let rects =
+            super::student_picture::student_picture_ui(ui, &mut compare.student, current.doc, &mut compare.recheck);
+        return (None, rects);
     }
     if compare.refused.is_some() {
         super::student_picture::refused_picture_ui(ui, &mut compare.refused);

@@ -6,9 +6,13 @@ use egui::{RichText, Ui};
 use phonglab_core::teach::diagnose::{Diagnosis, Tried, Verdict, most_common_first, picture_shows, same_picture_said};
 use phonglab_core::teach::picture_match::difference_image;
 
+use phonglab_core::Document;
+use phonglab_core::raster::shaded::ShadedSetup;
+
 use crate::t;
 
-/// A student's picture diagnosed against the scene shown.
+/// A student's picture diagnosed against the scene shown when it was opened (or checked
+/// again); while the scene shown is another, its verdict is hidden ([`StudentPicture::stale`]).
 pub struct StudentPicture {
     /// The file's name, as shown (printable).
     pub file: String,
@@ -23,12 +27,25 @@ pub struct StudentPicture {
     pictures: [Vec<u8>; 3],
     /// Their textures, once made.
     textures: Option<[egui::TextureHandle; 3]>,
+    /// The gain the difference is shown at (its largest near white).
+    pub gain: u32,
+    /// The right picture's setup it was diagnosed against ([`picture_setup`]).
+    checked: ShadedSetup,
+}
+
+/// What the right picture of `doc` is drawn from, as the diagnosis draws it (the exact
+/// power), the worked calculation's vertex left out (it draws nothing).
+pub fn picture_setup(doc: &Document) -> ShadedSetup {
+    let mut s = doc.shaded_setup(phonglab_core::PowFn::Exact);
+    s.scene.vertex = Document::default().scene.vertex;
+    s
 }
 
 impl StudentPicture {
     /// The picture `image` (RGBA8, `size` square) from `file`, as `d` diagnosed it.
-    pub fn new(file: String, size: usize, image: Vec<u8>, d: &Diagnosis) -> StudentPicture {
-        let diff = difference_image(&d.picture, &image);
+    /// `doc` is the scene it was diagnosed against.
+    pub fn new(file: String, size: usize, image: Vec<u8>, d: &Diagnosis, doc: &Document) -> StudentPicture {
+        let (diff, gain) = difference_image(&d.picture, &image);
         StudentPicture {
             file,
             size,
@@ -36,7 +53,25 @@ impl StudentPicture {
             said: Said::of(d),
             pictures: [d.picture.clone(), image, diff],
             textures: None,
+            checked: picture_setup(doc),
+            gain,
         }
+    }
+
+    /// Was it diagnosed against another scene than `doc` (another object, other rules, a
+    /// changed light...)? Then its verdict is not this scene's.
+    pub fn stale(&self, doc: &Document) -> bool {
+        picture_setup(doc) != self.checked
+    }
+
+    /// The student's picture (RGBA8), to diagnose again.
+    pub fn image(&self) -> &[u8] {
+        &self.pictures[1]
+    }
+
+    /// Why no verdict is shown while the scene shown is not the one it was checked against.
+    pub fn stale_note(&self) -> String {
+        t!("student-picture-stale", file = self.file.clone())
     }
 
     /// The diagnosis in words, one line a finding, in the language shown now.
@@ -108,43 +143,56 @@ fn verdict_lines(d: &Said) -> Vec<String> {
             out
         }
         Verdict::Unexplained if d.shape.is_some() => d.shape.iter().cloned().collect(),
-        Verdict::Unexplained => {
-            let (cause, id, score) = d.named.first().map(named).unwrap_or_default();
-            vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
-        }
+        Verdict::Unexplained => match d.named.first().map(named) {
+            Some((cause, id, score)) => {
+                vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
+            }
+            None => vec![t!("diagnose-verdict-unexplained-none", right = right)],
+        },
     }
 }
 
 /// The student's picture in Compare: the diagnosis, then A, B and the difference side by
-/// side; Clear returns Compare to the scenes. Returns where the pictures went.
-pub fn student_picture_ui(ui: &mut Ui, picture: &mut Option<StudentPicture>) -> Vec<egui::Rect> {
+/// side; Clear returns Compare to the scenes. While the scene shown (`doc`) is not the one
+/// it was checked against, a note says so in place of all that, with a button that sets
+/// `recheck`. Returns where the pictures went.
+pub fn student_picture_ui(
+    ui: &mut Ui,
+    picture: &mut Option<StudentPicture>,
+    doc: &Document,
+    recheck: &mut bool,
+) -> Vec<egui::Rect> {
     let Some(p) = picture.as_mut() else { return Vec::new() };
     let mut clear = false;
     ui.horizontal_wrapped(|ui| {
         ui.heading(t!("student-picture-heading", file = p.file.clone()));
         clear = ui.button(t!("student-clear")).on_hover_text(t!("student-clear-hover")).clicked();
     });
+    if p.stale(doc) {
+        ui.add(egui::Label::new(RichText::new(p.stale_note()).strong()).wrap());
+        *recheck = ui.button(t!("student-picture-recheck")).clicked();
+        if clear {
+            *picture = None;
+        }
+        return Vec::new();
+    }
     let wrong = p.verdict != "right";
-    // The pictures first get their width's share, down to a floor; the diagnosis the
-    // height left above them, scrolling when it is longer (its first line at the top).
+    let ink = wrong.then(|| super::student_column::wrong_ink(ui));
+    let lines = p.lines();
+    let texts = |size: f32| -> Vec<RichText> {
+        lines
+            .iter()
+            .map(|line| {
+                let text = RichText::new(line).strong().size(size);
+                if let Some(ink) = ink { text.color(ink) } else { text }
+            })
+            .collect()
+    };
     let avail = ui.available_size();
-    let body = ui.text_style_height(&egui::TextStyle::Body);
-    let row = body * 2.0;
+    let row = ui.text_style_height(&egui::TextStyle::Body) * 2.0;
     let side_w = ((avail.x - 36.0) / 3.0).max(48.0);
-    let floor = side_w.min((avail.y - row) * 0.6).max(48.0);
-    let text_max = (avail.y - row - floor - 2.0 * ui.spacing().item_spacing.y).max(body * 3.0);
-    egui::ScrollArea::vertical().id_salt("student-diagnosis").max_height(text_max).auto_shrink([false, true]).show(
-        ui,
-        |ui| {
-            for line in p.lines() {
-                let mut text = RichText::new(line).strong();
-                if wrong {
-                    text = text.color(super::student_column::wrong_ink(ui));
-                }
-                ui.add(egui::Label::new(text).wrap());
-            }
-        },
-    );
+    let fit = diagnosis_fit(ui, &texts, avail, side_w, row);
+    diagnosis_ui(ui, texts(fit.size), fit.height, fit.whole);
     let size = p.size;
     let textures = p.textures.get_or_insert_with(|| {
         let names = ["student-right", "student-picture", "student-difference"];
@@ -154,7 +202,11 @@ pub fn student_picture_ui(ui: &mut Ui, picture: &mut Option<StudentPicture>) -> 
         })
     });
     let side = side_w.min(ui.available_height() - row).max(48.0);
-    let titles = [t!("student-picture-right"), t!("student-picture-theirs"), t!("compare-difference")];
+    let titles = [
+        t!("student-picture-right"),
+        t!("student-picture-theirs"),
+        t!("student-picture-difference", gain = p.gain.to_string()),
+    ];
     let rects = ui.columns(3, |cols| {
         (0..3)
             .map(|k| {
@@ -168,6 +220,74 @@ pub fn student_picture_ui(ui: &mut Ui, picture: &mut Option<StudentPicture>) -> 
         *picture = None;
     }
     rects
+}
+
+/// How the diagnosis is shown above the pictures: its text's size, its height, and
+/// whether that is all of it.
+struct Fit {
+    size: f32,
+    height: f32,
+    whole: bool,
+}
+
+/// How the diagnosis (`texts` at a size) fits above the pictures. Whole when the pictures
+/// keep at least their floor below it (their width's share, down to a third of the height):
+/// at the style's size if it fits, else in smaller type, never below egui's own size (the
+/// window's when not presenting). At 1024x600, presenting, the longest diagnosis is 414
+/// pixels high at 1.45 times, and three pictures 150 high with their titles need 185 of the
+/// 514 left: beside the text they would need 555, or leave the text 690 wide (585 high).
+/// Only when it does not fit at the least size does it scroll, leaving the pictures their
+/// floor (its bar always shown and a cue under it).
+fn diagnosis_fit(ui: &Ui, texts: &dyn Fn(f32) -> Vec<RichText>, avail: egui::Vec2, side_w: f32, row: f32) -> Fit {
+    let gap = ui.spacing().item_spacing.y;
+    let height = |size: f32| -> f32 {
+        texts(size)
+            .into_iter()
+            .map(|t| {
+                let text = egui::WidgetText::from(t);
+                text.into_galley(ui, Some(egui::TextWrapMode::Wrap), avail.x, egui::TextStyle::Body).size().y + gap
+            })
+            .sum()
+    };
+    let body = egui::TextStyle::Body.resolve(ui.style()).size;
+    let least = egui::TextStyle::Body.resolve(&egui::Style::default()).size.min(body);
+    let floor = side_w.min((avail.y - row) / 3.0).max(48.0);
+    let room = (avail.y - row - floor - 2.0 * gap).max(ui.text_style_height(&egui::TextStyle::Body) * 3.0);
+    let mut size = body;
+    loop {
+        let needed = height(size);
+        if needed <= room {
+            return Fit { size, height: needed, whole: true };
+        }
+        if size <= least {
+            return Fit { size, height: room, whole: false };
+        }
+        size = (size * 0.95).max(least);
+    }
+}
+
+/// The diagnosis, `text_max` high; when it is not `whole`, in a scroll area whose bar is
+/// always shown (a projector shows no hover), with a cue under it that more is below.
+fn diagnosis_ui(ui: &mut Ui, texts: Vec<RichText>, text_max: f32, whole: bool) {
+    let lines = |ui: &mut Ui| {
+        for text in texts {
+            ui.add(egui::Label::new(text).wrap());
+        }
+    };
+    if whole {
+        return lines(ui);
+    }
+    let cue = ui.text_style_height(&egui::TextStyle::Small) + ui.spacing().item_spacing.y;
+    ui.scope(|ui| {
+        ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
+        egui::ScrollArea::vertical()
+            .id_salt("student-diagnosis")
+            .max_height(text_max - cue)
+            .auto_shrink([false, true])
+            .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
+            .show(ui, lines);
+    });
+    ui.small(t!("student-picture-more"));
 }
 
 /// A student's picture refused, in Compare: its name, why (in the error's ink), and Clear.

@@ -64,6 +64,9 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
             state.message = Some(Message::Info(m));
         }
         state.ui.geometry = state::Geometry { pictures, ..Default::default() };
+        if std::mem::take(&mut state.compare.recheck) {
+            super::student::recheck_picture(state);
+        }
         if !state.compare.open && matches!(&state.message, Some(Message::Info(m)) if *m == t!("compare-pinned")) {
             // Closed: its notice goes with it.
             state.message = None;

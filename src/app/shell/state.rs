@@ -101,6 +101,9 @@ pub struct AppState {
     /// A dropped notebook with outputs (its name and bytes), while the window asks whether
     /// to open it or check it.
     pub student_ask: Option<(String, Vec<u8>)>,
+    /// The last student's file checked through File → Check a student's work…: the next
+    /// one is chosen from its folder.
+    pub student_last: Option<std::path::PathBuf>,
     /// The status a student's check made and what it said, while it is the status shown:
     /// said again in the language shown when that changes.
     pub student_status: Option<(StudentStatus, Message)>,

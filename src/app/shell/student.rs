@@ -32,6 +32,7 @@ pub fn has_outputs(bytes: &[u8]) -> bool {
 /// Checks the file at `path` (a notebook with outputs, or printed text), read capped as
 /// Open reads a notebook; says why not.
 pub fn check_path(state: &mut AppState, path: &Path) {
+    state.student_last = Some(path.to_path_buf());
     let (cap, kind) = if is_picture(path) {
         (crate::io::student_png::MAX_PICTURE_BYTES, t!("file-kind-pictures"))
     } else {
@@ -85,6 +86,9 @@ fn status(state: &AppState, which: Status) -> Option<Message> {
         }
         Status::Picture => {
             let p = state.compare.student.as_ref()?;
+            if p.stale(&state.doc) {
+                return Some(Message::Info(p.stale_note()));
+            }
             (p.file.clone(), p.lines().into_iter().next().unwrap_or_default())
         }
     };
@@ -172,18 +176,25 @@ pub fn check_menu_ui(ui: &mut egui::Ui, state: &mut AppState) {
         return;
     }
     ui.close();
+    // The folder of the last work checked, else the scene's.
+    let start = state.student_last.clone().or_else(|| state.files.typed());
     let why = match state.files.dialogs {
-        Dialogs::System => match platform::pick_work_to_check(state.files.typed().as_deref()) {
+        Dialogs::System => match platform::pick_work_to_check(
+            start.as_deref(),
+            &t!("student-choose-why"),
+            &t!("student-choose-filter"),
+        ) {
             Picked::Chosen(p) => return check_path(state, &p),
             Picked::Cancelled => return,
             Picked::NoDialog(why) => {
                 state.files.dialogs = Dialogs::InApp;
-                why
+                // Why phonglab's own chooser, then what to choose in it.
+                format!("{why} {}", t!("student-choose-why"))
             }
         },
         _ => t!("student-choose-why"),
     };
-    let mut chooser = Chooser::new(Purpose::CheckWork, state.files.typed().as_deref(), why);
+    let mut chooser = Chooser::new(Purpose::CheckWork, start.as_deref(), why);
     // The scene file's folder, not its name: the student's file is another.
     chooser.name.clear();
     state.chooser = Some(chooser);
@@ -195,11 +206,26 @@ pub const PICTURE_SIZE: usize = 512;
 /// Diagnoses the picture `bytes` (a PNG of the export's size) against the scene shown, and
 /// shows it in Compare as B beside the right picture and their difference.
 fn check_picture(state: &mut AppState, bytes: &[u8], path: &Path) {
-    use phonglab_core::teach::diagnose::{Drawing, diagnose};
     let image = match crate::io::student_png::decode(bytes, path, PICTURE_SIZE) {
         Ok(image) => image,
         Err(why) => return refuse_picture(state, path, why),
     };
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    diagnose_picture(state, image, phonglab_core::escape::printable(&name), path);
+}
+
+/// Diagnoses the student's picture in Compare again, against the scene shown now (the
+/// scene changed since it was checked).
+pub fn recheck_picture(state: &mut AppState) {
+    let Some(p) = state.compare.student.as_ref() else { return };
+    let (image, file) = (p.image().to_vec(), p.file.clone());
+    diagnose_picture(state, image, file.clone(), Path::new(&file));
+}
+
+/// Diagnoses `image` (RGBA8, the export's size) from the file shown as `file` (at `path`)
+/// against the scene shown.
+fn diagnose_picture(state: &mut AppState, image: Vec<u8>, file: String, path: &Path) {
+    use phonglab_core::teach::diagnose::{Drawing, diagnose};
     let mesh = state.doc.view.mesh();
     // As `phonglab diagnose` draws it: the exact power, whatever the window's setting (the
     // student's OpenGL computes the exact one).
@@ -207,13 +233,8 @@ fn check_picture(state: &mut AppState, bytes: &[u8], path: &Path) {
     right.inside = state.doc.view.mesh_inside();
     match diagnose(&right, &image, PICTURE_SIZE) {
         Ok(d) => {
-            let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-            let picture = crate::app::panels::student_picture::StudentPicture::new(
-                phonglab_core::escape::printable(&name),
-                PICTURE_SIZE,
-                image,
-                &d,
-            );
+            let picture =
+                crate::app::panels::student_picture::StudentPicture::new(file, PICTURE_SIZE, image, &d, &state.doc);
             state.compare.student = Some(picture);
             state.compare.refused = None;
             state.compare.open = true;

@@ -97,22 +97,47 @@ pub fn compare_within(
     Match { score, pixels, worst, worst_levels, miss }
 }
 
-/// The difference image of `picture` and `image` (RGBA8, opaque): black where they agree,
-/// each channel's difference four times brighter elsewhere.
-pub fn difference_image(picture: &[u8], image: &[u8]) -> Vec<u8> {
-    picture
-        .chunks_exact(4)
-        .zip(image.chunks_exact(4))
+/// The most a difference image amplifies: past it, the 8-bit rounding's one level would
+/// look like a difference.
+pub const MAX_DIFFERENCE_GAIN: u32 = 64;
+
+/// The difference image of `picture` and `image` (RGBA8, opaque), and the gain it shows
+/// each channel's difference at: black where they agree; elsewhere amplified so that the
+/// largest difference shows near white (`255 / largest`, from 1 to
+/// [`MAX_DIFFERENCE_GAIN`]): a picture at most 6 levels off is shown × 42, not black.
+pub fn difference_image(picture: &[u8], image: &[u8]) -> (Vec<u8>, u32) {
+    let pixels = || picture.chunks_exact(4).zip(image.chunks_exact(4));
+    let largest = pixels().map(|(a, b)| u32::from(apart(a, b))).max().unwrap_or(0);
+    // Equal pictures: nothing to amplify.
+    let gain = 255u32.checked_div(largest).map_or(1, |g| g.clamp(1, MAX_DIFFERENCE_GAIN));
+    let rgba = pixels()
         .flat_map(|(a, b)| {
-            let d = |c: usize| (a[c].abs_diff(b[c]) as u32 * 4).min(255) as u8;
+            let d = |c: usize| (u32::from(a[c].abs_diff(b[c])) * gain).min(255) as u8;
             [d(0), d(1), d(2), 255]
         })
-        .collect()
+        .collect();
+    (rgba, gain)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_small_difference_is_amplified_to_show_and_a_large_one_is_not() {
+        // Six levels at most: × 42, the largest near white, the agreeing pixel black.
+        let a = [100, 100, 100, 255, 50, 50, 50, 255];
+        let b = [106, 103, 100, 255, 50, 50, 50, 255];
+        let (d, gain) = difference_image(&a, &b);
+        assert_eq!(gain, 42);
+        assert_eq!(d, vec![252, 126, 0, 255, 0, 0, 0, 255]);
+        // A difference of 200 levels: as it is.
+        let (d, gain) = difference_image(&a, &[255, 100, 100, 255, 50, 50, 250, 255]);
+        assert_eq!((gain, &d[..4]), (1, &[155, 0, 0, 255][..]));
+        // One level (the 8-bit rounding) is not made white; the same pictures stay black.
+        assert_eq!(difference_image(&a, &[101, 100, 100, 255, 50, 50, 50, 255]).1, MAX_DIFFERENCE_GAIN);
+        assert_eq!(difference_image(&a, &a), (vec![0, 0, 0, 255, 0, 0, 0, 255], 1));
+    }
 
     #[test]
     fn the_mean_miss_forgives_a_pixel_s_shift_and_counts_the_rest() {
