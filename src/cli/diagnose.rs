@@ -209,7 +209,7 @@ fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>)
             Shape::OtherOutline(share) => j["share"] = json!(share),
             Shape::Region(r) => j["region"] = json!({ "pixels": r.pixels, "x": r.centre.0, "y": r.centre.1 }),
             Shape::Marks(m) => {
-                j["marks"] = json!({ "pixels": m.pixels, "from": [m.from.0, m.from.1], "to": [m.to.0, m.to.1] })
+                j["marks"] = json!({ "pixels": m.pixels, "from": [m.from.0, m.from.1], "to": [m.to.0, m.to.1] });
             }
             Shape::NothingDrawn => {}
         }
