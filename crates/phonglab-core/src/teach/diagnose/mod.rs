@@ -12,9 +12,9 @@
 //! directional, no colour material) is not offered; one whose picture the right picture
 //! explains all the same (no scale for `GL_NORMALIZE`, no spot to leave out) is left out of
 //! the comparison and listed as not visible, unless the image shows it where it differs
-//! from the right picture ([`footprint`]): then a "right" picture is wrong, that cause.
+//! from the right picture ([`Footprint`]): then a "right" picture is wrong, that cause.
 //! A picture the right one otherwise explains is not right either when a solid region or
-//! thin marks of it differ ([`outline`]).
+//! thin marks of it differ ([`Region`], [`Marks`]).
 
 mod calls;
 mod change;
