@@ -86,6 +86,7 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
             let first = tie.first().unwrap_or(&d.causes[0]);
             let (cause, id, score) = named(first);
             out.push(t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right));
+            out.extend(d.footprint_words());
             out.extend(d.same_picture_words());
             for c in d.causes.iter().filter(|c| *c != first && !tie.contains(c)) {
                 let (cause, id, score) = named(c);
@@ -212,6 +213,9 @@ fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>)
         match s {
             Shape::OtherOutline(share) => j["share"] = json!(share),
             Shape::Region(r) => j["region"] = json!({ "pixels": r.pixels, "x": r.centre.0, "y": r.centre.1 }),
+            Shape::Marks(m) => {
+                j["marks"] = json!({ "pixels": m.pixels, "from": [m.from.0, m.from.1], "to": [m.to.0, m.to.1] });
+            }
             Shape::NothingDrawn => {}
         }
         j
@@ -223,6 +227,9 @@ fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>)
         "same_picture": d.same_picture.iter().map(cause).collect::<Vec<_>>(),
         "right_score": d.right.score,
         "lossy_score": d.lossy.map(|m| m.score),
+        "footprint": d.footprint.map(|f| json!({
+            "pixels": f.pixels, "x": f.centre.0, "y": f.centre.1, "right": f.right, "mistake": f.mistake,
+        })),
         "pixels": d.right.pixels,
         "size": size,
         "tried": d.tried.iter().filter(|t| t.matched.is_some()).map(cause).collect::<Vec<_>>(),

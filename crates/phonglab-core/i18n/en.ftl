@@ -751,6 +751,8 @@ diagnose-light-unseen = Nothing of light { $light } (GL_LIGHT{ $light }) reaches
 diagnose-nothing-drawn = Nothing of the object is drawn: the picture is only the background. Check the draw call (glutSolidTeapot, gluSphere…) and that it runs, and the camera (gluLookAt, gluPerspective): the object may be behind it or outside its view.
 diagnose-outline-differs = The object's outline is not this scene's ({ $share } of it differs, beyond a pixel): is this the picture of this scene? Check --scene, and the program's object and camera.
 diagnose-region-differs = A region of { $pixels } pixels around ({ $x }, { $y }) differs from the right picture, although the right picture explains { $score } of the object's pixels: something is drawn over the object there, or that part of it is wrong.
+diagnose-marks-differ = Thin marks of { $pixels } pixels, from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 }), differ from the right picture, although the right picture explains { $score } of the object's pixels: lines or marks are drawn over the object there.
+diagnose-footprint = This mistake changes only { $pixels } pixels of the right picture, around ({ $x }, { $y }), too few for the share to show it; there your picture is the mistake's: it is { $mistake } levels from the mistake's picture on average, and { $right } from the right one.
 diagnose-verdict-right-lossy = Right, as saved lossily (JPEG): the right picture explains { $score } of the object's pixels within { $levels } levels ({ $strict } within { $tolerance }), and its differences are noise, not a change of the picture.
 
 ## phonglab check: a student's work checked

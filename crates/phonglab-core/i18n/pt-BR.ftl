@@ -755,6 +755,8 @@ diagnose-light-unseen = Nada da luz { $light } (GL_LIGHT{ $light }) chega ao obj
 diagnose-nothing-drawn = Nada do objeto está desenhado: a imagem é só o fundo. Verifique a chamada que o desenha (glutSolidTeapot, gluSphere…) e se ela é executada, e a câmera (gluLookAt, gluPerspective): o objeto pode estar atrás dela ou fora do seu campo de visão.
 diagnose-outline-differs = O contorno do objeto não é o desta cena ({ $share } dele difere, além de um pixel): esta é a imagem desta cena? Verifique --scene, e o objeto e a câmera do programa.
 diagnose-region-differs = Uma região de { $pixels } pixels em torno de ({ $x }, { $y }) difere da imagem certa, embora a imagem certa explique { $score } dos pixels do objeto: há algo desenhado sobre o objeto ali, ou essa parte dele está errada.
+diagnose-marks-differ = Marcas finas de { $pixels } pixels, de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }), diferem da imagem certa, embora a imagem certa explique { $score } dos pixels do objeto: há linhas ou marcas desenhadas sobre o objeto ali.
+diagnose-footprint = Esse erro muda só { $pixels } pixels da imagem certa, em torno de ({ $x }, { $y }), poucos demais para a porcentagem mostrá-lo; ali a sua imagem é a do erro: ela está, em média, a { $mistake } níveis da imagem com o erro e a { $right } da imagem certa.
 diagnose-verdict-right-lossy = Certa, do jeito que foi salva com perdas (JPEG): a imagem certa explica { $score } dos pixels do objeto a menos de { $levels } níveis ({ $strict } a menos de { $tolerance }), e as diferenças são ruído, não uma mudança da imagem.
 
 ## phonglab check: o trabalho de um aluno verificado

@@ -751,6 +751,8 @@ diagnose-light-unseen = Nada da luz { $light } (GL_LIGHT{ $light }) chega ao obj
 diagnose-nothing-drawn = Nada do objeto está desenhado: a imagem é só o fundo. Verifique a chamada que o desenha (glutSolidTeapot, gluSphere…) e que ela corre, e a câmara (gluLookAt, gluPerspective): o objeto pode estar atrás dela ou fora do seu campo de visão.
 diagnose-outline-differs = O contorno do objeto não é o desta cena ({ $share } dele difere, para além de um píxel): é esta a imagem desta cena? Verifique --scene, e o objeto e a câmara do programa.
 diagnose-region-differs = Uma região de { $pixels } píxeis em torno de ({ $x }, { $y }) difere da imagem certa, embora a imagem certa explique { $score } dos píxeis do objeto: há algo desenhado por cima do objeto ali, ou essa parte dele está errada.
+diagnose-marks-differ = Marcas finas de { $pixels } píxeis, de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }), diferem da imagem certa, embora a imagem certa explique { $score } dos píxeis do objeto: há linhas ou marcas desenhadas por cima do objeto ali.
+diagnose-footprint = Este erro altera apenas { $pixels } píxeis da imagem certa, em torno de ({ $x }, { $y }), demasiado poucos para a percentagem o mostrar; ali a sua imagem é a do erro: está, em média, a { $mistake } níveis da imagem com o erro e a { $right } da imagem certa.
 diagnose-verdict-right-lossy = Certa, tal como foi guardada com perdas (JPEG): a imagem certa explica { $score } dos píxeis do objeto a menos de { $levels } níveis ({ $strict } a menos de { $tolerance }), e as diferenças são ruído, não uma alteração da imagem.
 
 ## phonglab check: o trabalho de um aluno verificado

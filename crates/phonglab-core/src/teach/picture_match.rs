@@ -24,12 +24,12 @@ pub struct Match {
 }
 
 /// The largest channel difference of two RGBA8 pixels.
-fn apart(a: &[u8], b: &[u8]) -> u8 {
+pub(crate) fn apart(a: &[u8], b: &[u8]) -> u8 {
     (0..3).map(|c| a[c].abs_diff(b[c])).max().unwrap_or(0)
 }
 
 /// The smallest difference between pixel `p` of `a` and the 3 x 3 around it in `b`.
-fn nearest(a: &[u8], b: &[u8], size: usize, p: usize) -> u8 {
+pub(crate) fn nearest(a: &[u8], b: &[u8], size: usize, p: usize) -> u8 {
     let (x, y) = ((p % size) as i64, (p / size) as i64);
     let mut best = u8::MAX;
     for dy in -1..=1 {

@@ -8,7 +8,8 @@ use phonglab_core::mesh::cylinder::glu_cylinder;
 use phonglab_core::mesh::sphere::{glu_sphere, glu_sphere_inside};
 use phonglab_core::model::scene::{Light, LightPlacement, NormalMode, Scene};
 use phonglab_core::teach::diagnose::{
-    At, Drawing, MISTAKES, OUTLINE_AT, RIGHT_AT, Scope, Shape, Tried, Verdict, diagnose, offered,
+    At, CLEARLY, Drawing, FOOTPRINT_AT, MARKS_AT, MISTAKES, OUTLINE_AT, RIGHT_AT, Scope, Shape, Tried, Verdict,
+    diagnose, offered,
 };
 use phonglab_core::teach::picture_match::compare;
 use phonglab_core::{EvalOptions, Rules, ShadingMode};
@@ -680,4 +681,92 @@ fn a_light_made_negligible_is_quoted_as_a_least_value_and_the_rows_quote_the_sce
     assert!(words("shininess-fraction").contains("(0.156 for 20)"), "{}", words("shininess-fraction"));
     let diffuse = words("material-colour-0-255");
     assert!(diffuse.contains("((128, 64, 26) for (0.50, 0.25, 0.10))"), "{diffuse}");
+}
+
+/// `rgba` (`size` square) with noise of up to ±`amount` levels on each channel (a fixed
+/// sequence).
+fn noised(rgba: &[u8], amount: i32) -> Vec<u8> {
+    let mut seed = 99u32;
+    rgba.iter()
+        .enumerate()
+        .map(|(i, &v)| {
+            if i % 4 == 3 {
+                return v;
+            }
+            seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12345);
+            (i32::from(v) + ((seed >> 16) % (2 * amount as u32 + 1)) as i32 - amount).clamp(0, 255) as u8
+        })
+        .collect()
+}
+
+#[test]
+fn a_spot_exponent_changed_a_little_is_wrong_though_the_share_calls_it_right() {
+    // The spotlight's exponent 10 or 6 for 8: a smooth ring of the pool a few levels off,
+    // all of one sign. At the export's 512 pixels the right picture explains more than
+    // RIGHT_AT of the object; over the ring the picture is the fitted exponent's.
+    let (right, size) = (shipped("spotlight"), 512);
+    for exponent in [10.0, 6.0] {
+        let mut d = right.clone();
+        d.scene.lights[0].spot_exponent = exponent;
+        let (_, rgba, _) = d.draw(size).expect("drawn");
+        let found = diagnose(&right, &rgba, size).expect("diagnosed");
+        assert!(found.right.score >= RIGHT_AT, "{exponent}: {:?}", found.right);
+        assert_eq!(found.verdict, Verdict::Wrong, "{exponent}");
+        let first = found.causes[0];
+        assert_eq!(first.id(), "spot-exponent-differs", "{exponent}: {:?}", found.causes);
+        let (fitted, scene) = first.at.values.lights[0][1].expect("fitted");
+        assert!((fitted - exponent).abs() <= 0.05 * exponent, "{exponent}: fitted {fitted}");
+        assert_eq!(scene, 8.0);
+        let f = found.footprint.expect("the verdict rests on the footprint");
+        assert!(f.pixels >= FOOTPRINT_AT && f.mistake <= CLEARLY * f.right, "{f:?}");
+        let words = found.footprint_words().expect("words");
+        assert!(words.contains(&f.pixels.to_string()), "{words}");
+        println!("exponent {exponent}: right {:.4}, {f:?}, {}", found.right.score, first.words());
+    }
+    // The right picture with noise of ±3, and moved a pixel, stays right.
+    let (_, rgba, _) = right.draw(size).expect("drawn");
+    for image in [noised(&rgba, 3), shifted_and_noised_at(&rgba, right.background8(), size)] {
+        let found = diagnose(&right, &image, size).expect("diagnosed");
+        assert_eq!((found.verdict, found.footprint, found.shape), (Verdict::Right, None, None));
+    }
+}
+
+/// `rgba` (`size` square) moved one pixel right and down, with noise of up to ±2 levels.
+fn shifted_and_noised_at(rgba: &[u8], bg: [u8; 3], size: usize) -> Vec<u8> {
+    let mut out: Vec<u8> = (0..size * size).flat_map(|_| [bg[0], bg[1], bg[2], 255]).collect();
+    for y in 1..size {
+        for x in 1..size {
+            let (to, from) = ((y * size + x) * 4, ((y - 1) * size + x - 1) * 4);
+            out[to..to + 3].copy_from_slice(&rgba[from..from + 3]);
+        }
+    }
+    noised(&out, 2)
+}
+
+#[test]
+fn white_lines_of_a_pixel_drawn_across_the_right_picture_are_marks_not_right() {
+    // At 256 pixels a line of one pixel across the teapot and another down it change
+    // less than 1 % of the object's pixels: the share alone calls the picture right.
+    let (right, size) = (shipped("spotlight"), 256);
+    let (_, mut rgba, covered) = right.draw(size).expect("drawn");
+    let n = covered.iter().filter(|&&c| c).count();
+    let (cx, cy) = (0..size * size).filter(|&p| covered[p]).fold((0, 0), |s, p| (s.0 + p % size, s.1 + p / size));
+    let (cx, cy) = (cx / n, cy / n);
+    for x in cx - 50..cx + 50 {
+        rgba[(cy * size + x) * 4..(cy * size + x) * 4 + 3].copy_from_slice(&[255, 255, 255]);
+    }
+    for y in cy - 30..cy + 30 {
+        rgba[(y * size + cx) * 4..(y * size + cx) * 4 + 3].copy_from_slice(&[255, 255, 255]);
+    }
+    let found = diagnose(&right, &rgba, size).expect("diagnosed");
+    assert!(found.right.score >= RIGHT_AT, "{:?}", found.right);
+    assert_eq!(found.verdict, Verdict::Unexplained);
+    assert!(found.causes.is_empty());
+    let Some(Shape::Marks(m)) = found.shape else { panic!("{:?}", found.shape) };
+    assert!(m.pixels >= MARKS_AT, "{m:?}");
+    // Where the lines lie on the object (the teapot's rim may hide their ends).
+    assert!(m.from.0 >= cx - 50 && m.to.0 < cx + 50 && m.from.1 >= cy - 30 && m.to.1 < cy + 30, "{m:?}");
+    assert!(m.from.0 < cx && m.to.0 > cx && m.from.1 < cy && m.to.1 > cy, "{m:?} ({cx}, {cy})");
+    let words = found.shape.expect("a shape").words(found.right.score);
+    assert!(words.contains(&format!("({}, {})", m.from.0, m.from.1)), "{words}");
 }

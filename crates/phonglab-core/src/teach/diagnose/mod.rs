@@ -11,13 +11,17 @@
 //! "unexplained". A mistake whose change cannot alter this scene (a light that is already
 //! directional, no colour material) is not offered; one whose picture the right picture
 //! explains all the same (no scale for `GL_NORMALIZE`, no spot to leave out) is left out of
-//! the comparison and listed as not visible.
+//! the comparison and listed as not visible, unless the image shows it where it differs
+//! from the right picture ([`Footprint`]): then a "right" picture is wrong, that cause.
+//! A picture the right one otherwise explains is not right either when a solid region or
+//! thin marks of it differ ([`Region`], [`Marks`]).
 
 mod calls;
 mod change;
 mod colours;
 mod drawing;
 mod fit;
+mod footprint;
 mod mistakes;
 mod outline;
 mod sides;
@@ -27,8 +31,9 @@ mod values;
 pub use change::{At, Given};
 pub use colours::Colours;
 pub use drawing::Drawing;
+pub use footprint::{CLEARLY, FOOTPRINT_AT, Footprint};
 pub use mistakes::{MISTAKES, PictureMistake, Scope, offered};
-pub use outline::{OUTLINE_AT, REGION_AT, Region};
+pub use outline::{MARKS_AT, Marks, OUTLINE_AT, REGION_AT, Region};
 pub use sides::Sides;
 
 use crate::model::error::SceneError;
@@ -149,6 +154,10 @@ pub struct Diagnosis {
     /// The right picture's match within [`LOSSY`] levels when the verdict "right" rests on
     /// it: the picture differs from the right one as a lossy saving (JPEG) does.
     pub lossy: Option<Match>,
+    /// Where the first cause's picture differs from the right one, when the verdict
+    /// "wrong" rests on it: the right picture explains the share [`RIGHT_AT`] asks, but
+    /// over these pixels the picture is the mistake's ([`Footprint::shows_mistake`]).
+    pub footprint: Option<Footprint>,
 }
 
 /// What a picture's shape shows that no mistake's colours explain.
@@ -161,6 +170,9 @@ pub enum Shape {
     OtherOutline(f64),
     /// A solid region differs from a picture the right one otherwise explains.
     Region(Region),
+    /// Thin marks (lines drawn over the object) differ from a picture the right one
+    /// otherwise explains.
+    Marks(Marks),
 }
 
 impl Shape {
@@ -170,6 +182,7 @@ impl Shape {
             Shape::NothingDrawn => "nothing-drawn",
             Shape::OtherOutline(_) => "outline-differs",
             Shape::Region(_) => "region-differs",
+            Shape::Marks(_) => "marks-differ",
         }
     }
 
@@ -186,6 +199,17 @@ impl Shape {
                     ("pixels", Arg::Text(r.pixels.to_string())),
                     ("x", Arg::Text(r.centre.0.to_string())),
                     ("y", Arg::Text(r.centre.1.to_string())),
+                    ("score", percent(right)),
+                ],
+            ),
+            Shape::Marks(m) => tr_args(
+                "diagnose-marks-differ",
+                &[
+                    ("pixels", Arg::Text(m.pixels.to_string())),
+                    ("x0", Arg::Text(m.from.0.to_string())),
+                    ("y0", Arg::Text(m.from.1.to_string())),
+                    ("x1", Arg::Text(m.to.0.to_string())),
+                    ("y1", Arg::Text(m.to.1.to_string())),
                     ("score", percent(right)),
                 ],
             ),
@@ -231,6 +255,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         apart: outline::apart(&outline::mask(&picture, Some(&covered), bg, size), &outline, size),
         drawn: true,
     };
+    let mut subtle: Vec<(Tried, Footprint)> = Vec::new();
     for (mistake, at) in offered(right, At { light: 0, emission, colours, values, sides, given: Given::of(right) }) {
         let mut d = right.clone();
         (MISTAKES[mistake].apply)(&mut d, at);
@@ -239,10 +264,18 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         if !(Tried { mistake, at, matched: None }).fitted() {
             outlines.add(&outline::mask(&wrong, Some(&wrong_covered), bg, size), &outline, size);
         }
-        // A mistake whose picture the right one explains cannot be seen in this scene.
+        // A mistake whose picture the right one explains cannot be seen in this scene,
+        // unless the image is the mistake's where the two differ.
         let visible = compare(&wrong, &wrong_covered, &picture, bg, size).score < RIGHT_AT;
-        let matched = visible.then(|| compare(&wrong, &wrong_covered, image, bg, size));
+        let shown = if visible {
+            None
+        } else {
+            footprint::footprint((&picture, &covered), (&wrong, &wrong_covered), image, size)
+                .filter(Footprint::shows_mistake)
+        };
+        let matched = (visible || shown.is_some()).then(|| compare(&wrong, &wrong_covered, image, bg, size));
         let t = Tried { mistake, at, matched };
+        subtle.extend(shown.map(|f| (t, f)));
         if matched.is_some_and(|m| m.score >= EXPLAINED_AT) {
             pictures.0.push((t, wrong, wrong_covered));
         }
@@ -257,8 +290,15 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         }
     }
     if d.shape.is_none() && d.verdict == Verdict::Right {
+        shown_subtly(&mut d, subtle);
+    }
+    if d.shape.is_none() && d.verdict == Verdict::Right {
         let region = outline::largest_region(&d.picture, &covered, image, bg, size);
         d.shape = region.filter(|r| r.pixels >= REGION_AT).map(Shape::Region);
+    }
+    if d.shape.is_none() && d.verdict == Verdict::Right {
+        let marks = outline::largest_marks(&d.picture, &covered, image, bg, size);
+        d.shape = marks.filter(|m| m.pixels >= MARKS_AT).map(Shape::Marks);
     }
     if d.shape.is_some() {
         (d.verdict, d.causes, d.lossy) = (Verdict::Unexplained, Vec::new(), None);
@@ -282,6 +322,18 @@ fn lossy_right(d: &Diagnosis, covered: &[bool], image: &[u8], bg: [u8; 3], size:
     let closest = d.tried.iter().filter_map(|t| t.matched).map(|m| m.miss).fold(f64::INFINITY, f64::min);
     let unbiased = fit::lifts(&d.picture, covered, image, size).iter().all(|(all, _)| all.abs() <= 1);
     (loose.score >= RIGHT_AT && d.right.miss < closest && unbiased).then_some(loose)
+}
+
+/// A "right" verdict made "wrong" by the mistakes the image shows over their footprints
+/// (`subtle`), those it is nearest first (the mean levels it misses the mistake's picture
+/// by, as a share of those it misses the right one's by).
+fn shown_subtly(d: &mut Diagnosis, mut subtle: Vec<(Tried, Footprint)>) {
+    let nearer = |f: &Footprint| f.mistake / f.right.max(f64::MIN_POSITIVE);
+    subtle.sort_by(|a, b| nearer(&a.1).total_cmp(&nearer(&b.1)).then(a.0.mistake.cmp(&b.0.mistake)));
+    let Some(&(_, first)) = subtle.first() else { return };
+    d.verdict = Verdict::Wrong;
+    d.causes = subtle.iter().map(|(t, _)| *t).collect();
+    (d.lossy, d.footprint) = (None, Some(first));
 }
 
 /// How the image's outline agrees with the pictures drawn: the least share apart, and
@@ -357,6 +409,26 @@ impl Diagnosis {
                     ("levels", Arg::Text(LOSSY.to_string())),
                     ("strict", percent(self.right.score)),
                     ("tolerance", Arg::Text(TOLERANCE.to_string())),
+                ],
+            )
+        })
+    }
+
+    /// In words, when the verdict "wrong" rests on where the first cause's picture differs
+    /// from the right one ([`Diagnosis::footprint`]): how few pixels, where, and how near
+    /// the picture is to each there.
+    pub fn footprint_words(&self) -> Option<String> {
+        use crate::locale::{Arg, decimal, tr_args};
+        let levels = |v: f64| Arg::Text(decimal(&format!("{v:.1}")));
+        self.footprint.map(|f| {
+            tr_args(
+                "diagnose-footprint",
+                &[
+                    ("pixels", Arg::Text(f.pixels.to_string())),
+                    ("x", Arg::Text(f.centre.0.to_string())),
+                    ("y", Arg::Text(f.centre.1.to_string())),
+                    ("mistake", levels(f.mistake)),
+                    ("right", levels(f.right)),
                 ],
             )
         })
@@ -450,5 +522,6 @@ fn verdict_of(exact: Match, mut tried: Vec<Tried>, picture: Vec<u8>, renderer: R
         renderer,
         shape: None,
         lossy: None,
+        footprint: None,
     }
 }
