@@ -764,3 +764,37 @@ fn a_named_cause_is_the_cause_and_the_unexplained_verdict_reads_as_one_sentence(
     assert!(lines.iter().all(|l| !capital_after_comma(l)), "{lines:?}");
     assert!(lines[0].contains(". The closest mistake, not named as the cause ("), "{lines:?}");
 }
+
+#[test]
+fn a_mistake_of_few_pixels_is_shown_wrong_with_where_it_shows_as_the_command_line_says() {
+    // The spotlight drawn with its exponent 10 for 8: the share alone would call it right;
+    // the window says wrong, the fitted exponent, and the sentence of the mistake's footprint.
+    let dir = TempDir::new("footprint");
+    let path = dir.0.join("exp10.png");
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let text = std::fs::read_to_string(&scene).unwrap();
+    let changed = text.replace("spot_exponent = 8", "spot_exponent = 10");
+    assert_ne!(changed, text);
+    let student = phonglab_core::document::Document::from_toml_in(&changed, scene.parent()).unwrap();
+    let mesh = student.view.mesh();
+    let mut d =
+        phonglab_core::teach::diagnose::Drawing::of(&student.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    d.inside = student.view.mesh_inside();
+    let (_, rgba, _) = d.draw(512).unwrap();
+    phonglab::io::image::write_png(&path, 512, 512, &rgba).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    h.state_mut().load(spotlight(), "spotlight");
+    h.run_steps(2);
+    check_through_the_menu(&mut h, &path);
+    let p = h.state().compare.student.as_ref().unwrap_or_else(|| panic!("{:?}", h.state().message));
+    let lines = p.lines();
+    assert_eq!(p.verdict, "wrong", "{lines:?}");
+    assert!(lines.iter().any(|l| l.contains("(spot-exponent-differs, GL_LIGHT0)")), "{lines:?}");
+    let footprint =
+        lines.iter().find(|l| l.starts_with("This mistake changes only")).unwrap_or_else(|| panic!("{lines:?}"));
+    // Shown whole above the three pictures.
+    let shown = h.get_by_label(footprint).rect();
+    let pictures = h.state().ui.geometry.pictures.clone();
+    assert_eq!(pictures.len(), 3);
+    assert!(shown.bottom() <= pictures[0].top() && shown.right() <= 1280.0, "{shown:?} {pictures:?}");
+}

@@ -94,6 +94,8 @@ struct Said {
     shape: Option<String>,
     /// The verdict "right" in words when it allows for a lossy saving.
     lossy: Option<String>,
+    /// Where a mistake that changes few pixels shows, when the verdict rests on it.
+    footprint: Option<String>,
 }
 
 impl Said {
@@ -112,6 +114,7 @@ impl Said {
             same: d.same_picture.clone(),
             shape,
             lossy: d.lossy_words(),
+            footprint: d.footprint_words(),
         }
     }
 }
@@ -135,6 +138,7 @@ fn verdict_lines(d: &Said) -> Vec<String> {
             let Some(first) = tie.first().or(d.named.first()) else { return out };
             let (cause, id, score) = named(first);
             out.push(t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right.clone()));
+            out.extend(d.footprint.clone());
             out.extend(same_picture_said(&d.same));
             for c in d.named.iter().filter(|c| *c != first && !tie.contains(c)) {
                 let (cause, id, score) = named(c);
