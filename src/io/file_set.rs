@@ -106,7 +106,8 @@ const UNTOUCHED: &str = set_steps::KEPT_FOLDER;
 pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> Result<Vec<String>, WriteError> {
     // A set is written into a real folder only: one planted as a link (an oF project's
     // `src` pointing elsewhere) would send the set, and the old set's removal, outside it.
-    if std::fs::symlink_metadata(dir).is_ok_and(|m| m.file_type().is_symlink()) {
+    // (Windows: a folder reached under another name than its own, `platform::links`.)
+    if crate::platform::links::reached_through_link(dir) {
         let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-is-a-link"));
         return Err(WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED));
     }
@@ -144,7 +145,8 @@ pub fn foreign_file(dir: &Path, set: &FileSet) -> Option<std::path::PathBuf> {
     let written = super::set_journal::written_list(dir);
     set.files.iter().find_map(|(name, bytes)| {
         let path = dir.join(name);
-        if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+        if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) || crate::platform::links::reached_through_link(&path)
+        {
             return None;
         }
         let Ok(now) = entry_of(dir, name) else { return Some(path) };
@@ -178,7 +180,9 @@ fn refuse_unwritable_names(dir: &Path, set: &FileSet) -> Result<(), WriteError> 
             let e = io::Error::new(io::ErrorKind::InvalidFilename, "not a plain file name");
             return Err(WriteError::new(&target, "write-step-name", e, UNTOUCHED));
         }
-        if std::fs::symlink_metadata(&target).is_ok_and(|m| !m.is_file()) {
+        if std::fs::symlink_metadata(&target).is_ok_and(|m| !m.is_file())
+            || crate::platform::links::reached_through_link(&target)
+        {
             let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("write-not-a-regular-file"));
             return Err(WriteError::new(&target, "write-step-create", e, UNTOUCHED));
         }
@@ -248,7 +252,8 @@ fn old_set(dir: &Path, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Result<
     let mut old = Vec::new();
     for entry in entries.flatten() {
         let Ok(name) = entry.file_name().into_string() else { continue };
-        let is_file = entry.file_type().is_ok_and(|t| t.is_file());
+        let is_file = entry.file_type().is_ok_and(|t| t.is_file())
+            && !crate::platform::links::reached_through_link(&dir.join(&name));
         if is_file && plain_name(&name) && (new.iter().any(|e| e.name == name) || ours(&name)) {
             old.push(
                 entry_of(dir, &name).map_err(|e| WriteError::new(&dir.join(&name), set_steps::LIST, e, UNTOUCHED))?,
