@@ -45,7 +45,8 @@ mod windows {
     pub fn reached_through_link(path: &Path) -> bool {
         let Ok(path) = std::path::absolute(path) else { return false };
         let (Some(parent), Some(name)) = (path.parent(), path.file_name()) else { return false };
-        let open = |p: &Path, flags: u32| File::options().access_mode(0).share_mode(SHARE_ALL).custom_flags(flags).open(p);
+        let open =
+            |p: &Path, flags: u32| File::options().access_mode(0).share_mode(SHARE_ALL).custom_flags(flags).open(p);
         let Ok(file) = open(&path, FOLDER | ITSELF) else { return false };
         if file.metadata().is_ok_and(|m| m.file_attributes() & REPARSE_POINT != 0) {
             return true;
