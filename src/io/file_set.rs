@@ -537,8 +537,8 @@ mod tests {
         use std::os::windows::fs::OpenOptionsExt;
         let dir = temp_dir("set-held");
         old_set(&dir);
-        let held = std::fs::File::options().read(true).share_mode(0).open(dir.join("a.md")).unwrap();
         let before = listing(&dir);
+        let held = std::fs::File::options().read(true).share_mode(0).open(dir.join("a.md")).unwrap();
         let e = crate::io::exercise_set::refuse_foreign(&dir, &new_set()).unwrap_err().to_string();
         assert!(e.contains("a.md") && e.contains("another program has it open"), "{e}");
         assert!(!e.contains("not written by phonglab"), "{e}");
