@@ -384,7 +384,10 @@ quiz-key = key: { $name } = { $value }
 
 ## calculation
 
-plan-heading = Specialised plan: { $computed } effects computed, { $skipped } skipped
+plan-heading = Specialised plan: { $computed ->
+        [one] 1 effect computed
+       *[other] { $computed } effects computed
+    }, { $skipped } skipped
 plan-light = light { $index }:{" "}
 plan-computed = computed  { $what }
 plan-skipped = skipped   { $what }
@@ -416,7 +419,11 @@ teapot-grid = Teapot grid
 cylinder-slices = Cylinder slices
 cylinder-stacks = Cylinder stacks
 caps = Caps
-mesh-triangles = { $count } triangles: { $notes }
+mesh-triangles =
+    { $count ->
+        [one] 1 triangle
+       *[other] { $count } triangles
+    }: { $notes }
 key-hint = key { $key }
 mesh-tip = { $path } (open another under View options, or drop an .obj file)
 close-mesh = Close your mesh
@@ -467,7 +474,11 @@ cpu-software-adapter = the adapter ({ $adapter }) is a software one, no faster t
 
 not-opened-worksheet = Not opened: { $why }. Showing the worksheet instead.
 not-opened = Not opened: { $why }. The current scene is unchanged.
-mesh-summary = { $triangles } triangles, { $vertices } vertices; { $notes }
+mesh-summary =
+    { $triangles ->
+        [one] 1 triangle
+       *[other] { $triangles } triangles
+    }, { $vertices } vertices; { $notes }
 opened-mesh = Opened the mesh { $path }: { $what }.
 not-text = { $path } is not a text file
 saved = Saved { $path }.
@@ -532,6 +543,7 @@ budget-from-option = as --memory-budget asks
 budget-from-system = half of the memory available
 budget-from-limit = half of the address space left under this process's limit, ulimit -v
 budget-over-limit = --memory-budget { $budget } is more than this process may still take under its limit, ulimit -v ({ $room } left): a run past it would stop half-way. Lower --memory-budget, or raise the limit (ulimit -v)
+budget-size-negative = { $value }: a size cannot be negative; write a size such as 512M, 8G or 1.5G
 budget-size-refused = { $value }: write a size such as 512M, 8G or 1.5G
 budget-what-render = a { $width } x { $height } picture of { $count ->
         [one] one triangle
@@ -608,7 +620,10 @@ copy = Copy
 copy-program-hover = Copy the program to the clipboard
 shader-stages-phong = Phong (per fragment) shading: only the stages this scene needs
 shader-stages-vertex = per vertex shading: only the stages this scene needs
-shader-last-change = The last change added { $added } lines (highlighted) and removed { $removed }.
+shader-last-change = The last change added { $added ->
+        [one] 1 line
+       *[other] { $added } lines
+    } (highlighted) and removed { $removed }.
 shader-removed = Removed by the last change:
 session-other-window = Another phonglab window is open on this session ({ $dir }): this window shows its last saved scene but will not save its session. Use Save to keep your work in a file.
 session-folder-unusable = The session folder { $dir } cannot be used ({ $error }): this window will not save its session.
@@ -720,6 +735,8 @@ err-no-such-light = --light { $light }: { $count ->
 err-study-stopped = the study stopped
 err-rules = --rules { $value }: try worksheet or opengl
 err-effects = --effects: { $value } is not one of: { $names }
+err-effects-empty = --effects has an empty name (a comma with nothing after it or before it): write the names from { $names }, separated by commas.
+err-out-is-a-file = --out { $out } is a file, and phonglab exercise writes its files into a folder: give a folder, or the name of a new one (nothing was written).
 err-level = --level is 1 to 4
 err-target = --target { $value }: try glsl or wgsl
 err-shading = --shading { $value }: try gouraud or phong
@@ -778,7 +795,7 @@ cost-chart-title = { $object }: time per frame against mean error ({ $size }x{ $
 ## cli
 
 cli-about = An explorer for OpenGL's fixed-function vertex lighting and Gouraud/Phong/Flat shading
-cli-lang = The language of what phonglab says: en, pt-PT or pt-BR (default: the system's, from LC_ALL, LC_MESSAGES or LANG). JSON, CSV and scene files keep English keys
+cli-lang = The language of what phonglab says: en, pt-PT or pt-BR (default: the system's: LC_ALL, LC_MESSAGES or LANG where one is set, else on Windows the user's display language and on macOS their preferred language). JSON, CSV and scene files keep English keys
 cli-decimal = How numbers meant for people are written: point (0.5) or comma (0,5); default: the language's (a comma in Portuguese). Typed numbers are read with either
 cli-memory-budget = The memory a command may take for what it is asked (a picture's size, a mesh): 512M, 8G, ...; default: half of what the system has available. Past it, a command says how much it needs and does not start
 cli-eval = Evaluate glref cases (JSON) and print the lit colours as JSON
@@ -1048,10 +1065,15 @@ moodle-not-ours = { $path } was not written by phonglab, or has changed since: p
 set-not-ours = { $path } was not written by phonglab, or was edited since it wrote it: phonglab does not replace it, and wrote nothing. To write the set here, move that file away (it keeps your edits), or choose another folder.
 err-category-blank = --category needs a name: it is empty or only spaces.
 err-category-slash = --category cannot start or end with "/": Moodle would read the category's path wrongly.
+err-category-control = --category has a control character, { $character }: a category's name is one line of text, without line breaks or tabs.
 err-category-long = --category is { $length } characters long; Moodle keeps a category's name in at most { $max }.
 err-worksheet-moodle = --worksheet writes exercise 0 into the sheets only; a file for Moodle takes --level or --effects.
 budget-what-moodle = a file for Moodle of { $count } exercises (about { $size } on disk)
-budget-what-sheets = { $count } exercise sheets with their keys and the two PDFs (about { $size } on disk)
+budget-what-sheets = a set of { $count } exercise sheets with their keys and the two PDFs (about { $size } on disk)
+budget-what-wrong = a set of { $count ->
+    [one] one picture
+   *[other] { $count } pictures
+} with one mistake each
 
 ## arg-errors
 
@@ -1068,5 +1090,5 @@ arg-error-unknown-command = phonglab has no command { $name }.
 arg-error-missing = Missing: { $args }.
 arg-error-conflict = The option { $arg } cannot be used with { $other }.
 arg-error-twice = { $arg } is given twice: give it once.
-arg-error-unexpected = phonglab did not expect { $arg } here: it is no option, nor the value of one.
+arg-error-unexpected = phonglab did not expect { $arg } here: it is not an option, nor the value of one.
 arg-error-more = See { $help }.

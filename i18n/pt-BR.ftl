@@ -71,9 +71,11 @@ moodle-category-exercise = exercício { $number }
 moodle-question-name = { $exercise }, variante { $variant }: gabarito exercise-{ $sheet }-key.md de { $command }
 moodle-category-default = phonglab
 moodle-written = { $file } em { $out }: { $questions ->
+    [0] { $questions } questões
     [one] uma questão
    *[other] { $questions } questões
 } em { $categories ->
+    [0] { $categories } categorias
     [one] uma categoria
    *[other] { $categories } categorias
 }. No Moodle: Banco de questões → Importar → { $format }.
@@ -87,6 +89,7 @@ err-level-5-variants = --variants é para os níveis 1 a 4: o nível 5 tem uma i
 level-5-count = O nível 5 tem { $all } erros, uma questão cada: { $all } questões, não { $count }.
 
 wrong-written = { $count ->
+    [0] { $count } imagens com um erro cada, com os gabaritos,
     [one] 1 imagem com um erro, com o seu gabarito,
    *[other] { $count } imagens com um erro cada, com os gabaritos,
 } em { $out }
@@ -369,6 +372,7 @@ quiz-show-answers-hover = A cor do vértice, os ângulos do gráfico e o gabarit
 quiz-nothing-open = Abra um exercício (o phonglab exercise os escreve) ou qualquer cena e clique em "Testar esta cena", ou clique em Novo exercício.
 quiz-instructions = { $scene }: digite o valor de cada passo e pressione Enter. Certo: a menos de { $percent } % do valor (ou { $absolute } perto de 0). Ponto ou vírgula; um vetor como 0,5; 0,3; 0,1.
 quiz-score = Pontuação: { $right } de { $all } ({ $answered ->
+    [0] { $answered } respondidos
     [one] 1 respondido
    *[other] { $answered } respondidos
 }{ $shown ->
@@ -384,7 +388,15 @@ quiz-key = gabarito: { $name } = { $value }
 
 ## calculation
 
-plan-heading = Plano especializado: { $computed } efeitos calculados, { $skipped } pulados
+plan-heading = Plano especializado: { $computed ->
+        [0] 0 efeitos calculados
+        [one] 1 efeito calculado
+       *[other] { $computed } efeitos calculados
+    }, { $skipped ->
+        [0] 0 pulados
+        [one] 1 pulado
+       *[other] { $skipped } pulados
+    }
 plan-light = luz { $index }:{" "}
 plan-computed = calculado  { $what }
 plan-skipped = pulado   { $what }
@@ -416,7 +428,12 @@ teapot-grid = Grade do bule
 cylinder-slices = Fatias do cilindro
 cylinder-stacks = Camadas do cilindro
 caps = Tampas
-mesh-triangles = { $count } triângulos: { $notes }
+mesh-triangles =
+    { $count ->
+        [0] 0 triângulos
+        [one] 1 triângulo
+       *[other] { $count } triângulos
+    }: { $notes }
 key-hint = tecla { $key }
 mesh-tip = { $path } (abra outra em Opções da vista, ou solte um arquivo .obj)
 close-mesh = Fechar sua malha
@@ -467,7 +484,12 @@ cpu-software-adapter = o adaptador ({ $adapter }) é por software, não mais rá
 
 not-opened-worksheet = Não aberto: { $why }. Em vez disso, mostra-se a lista.
 not-opened = Não aberto: { $why }. A cena atual não mudou.
-mesh-summary = { $triangles } triângulos, { $vertices } vértices; { $notes }
+mesh-summary =
+    { $triangles ->
+        [0] 0 triângulos
+        [one] 1 triângulo
+       *[other] { $triangles } triângulos
+    }, { $vertices } vértices; { $notes }
 opened-mesh = Malha aberta: { $path }: { $what }.
 not-text = { $path } não é um arquivo de texto
 saved = Salvo: { $path }.
@@ -532,18 +554,22 @@ budget-from-option = como pede --memory-budget
 budget-from-system = metade da memória disponível
 budget-from-limit = metade do espaço de endereçamento que resta abaixo do limite deste processo, ulimit -v
 budget-over-limit = --memory-budget { $budget } é mais do que este processo ainda pode ocupar sob o seu limite, ulimit -v (restam { $room }): uma execução que o ultrapasse pararia no meio. Diminua --memory-budget ou aumente o limite (ulimit -v)
+budget-size-negative = { $value }: um tamanho não pode ser negativo; escreva um tamanho como 512M, 8G ou 1,5G
 budget-size-refused = { $value }: escreva um tamanho como 512M, 8G ou 1,5G
 budget-what-render = uma imagem de { $width } x { $height } com { $count ->
+        [0] { $triangles } triângulos
         [one] um triângulo
        *[other] { $triangles } triângulos
     }
 budget-what-window = a janela a { $width } x { $height } pixels
 budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez
 budget-what-cost = o estudo de { $count ->
+    [0] { $count } objetos
     [one] um objeto
    *[other] { $count } objetos
 } em { $size } x { $size } pixels
 budget-what-eval = iluminar { $count ->
+    [0] { $count } casos, um de cada vez, o maior com { $largest }
     [one] um caso de { $largest }
    *[other] { $count } casos, um de cada vez, o maior com { $largest }
 } de JSON
@@ -600,6 +626,7 @@ compare-step-2 = 2. Mude qualquer coisa: o sombreamento, f32 ou f64, o material,
 compare-step-3 = 3. A e B aparecem lado a lado, com os passos que diferem primeiro.
 compare-a-fails = A não pode ser calculada: { $error }
 compare-differing = { $differing ->
+    [0] { $differing } de { $all } passos diferem: vêm primeiro, destacados.
     [one] 1 de { $all } passos difere: vem primeiro, destacado.
    *[other] { $differing } de { $all } passos diferem: vêm primeiro, destacados.
 }
@@ -608,7 +635,11 @@ copy = Copiar
 copy-program-hover = Copiar o programa para a área de transferência
 shader-stages-phong = Sombreamento de Phong (por fragmento): só as etapas de que esta cena precisa
 shader-stages-vertex = Sombreamento por vértice: só as etapas de que esta cena precisa
-shader-last-change = A última alteração adicionou { $added } linhas (destacadas) e removeu { $removed }.
+shader-last-change = A última alteração adicionou { $added ->
+        [0] 0 linhas (destacadas)
+        [one] 1 linha (destacada)
+       *[other] { $added } linhas (destacadas)
+    } e removeu { $removed }.
 shader-removed = Removido pela última alteração:
 session-other-window = Outra janela do phonglab está aberta nesta sessão ({ $dir }): esta janela mostra a última cena salva mas não salvará a sua sessão. Use Salvar para manter seu trabalho em um arquivo.
 session-folder-unusable = A pasta da sessão { $dir } não pode ser usada ({ $error }): esta janela não guardará a sua sessão.
@@ -651,6 +682,7 @@ pdf-blank-page = Esta página foi deixada em branco intencionalmente.
 
 exercises-written =
     { $count ->
+        [0] { $count } exercícios
         [one] 1 exercício
        *[other] { $count } exercícios
     } em { $out }{ $redraws ->
@@ -720,6 +752,8 @@ err-no-such-light = --light { $light }: { $count ->
 err-study-stopped = o estudo parou
 err-rules = --rules { $value }: experimente worksheet ou opengl
 err-effects = --effects: { $value } não é um destes: { $names }
+err-effects-empty = --effects tem um nome vazio (uma vírgula sem nada depois ou antes dela): escreva os nomes dentre { $names }, separados por vírgulas.
+err-out-is-a-file = --out { $out } é um arquivo, e o phonglab exercise grava os seus arquivos em uma pasta: indique uma pasta, ou o nome de uma pasta nova (nada foi gravado).
 err-level = --level vai de 1 a 4
 err-target = --target { $value }: experimente glsl ou wgsl
 err-shading = --shading { $value }: experimente gouraud ou phong
@@ -778,7 +812,7 @@ cost-chart-title = { $object }: tempo por imagem contra erro médio ({ $size }x{
 ## cli
 
 cli-about = Um explorador da iluminação por vértice da função fixa do OpenGL e dos sombreamentos de Gouraud, Phong e Flat
-cli-lang = O idioma do que o phonglab diz: en, pt-PT ou pt-BR (por padrão, o do sistema: LC_ALL, LC_MESSAGES ou LANG). JSON, CSV e arquivos de cena mantêm as chaves em inglês
+cli-lang = O idioma do que o phonglab diz: en, pt-PT ou pt-BR (por padrão, o do sistema: LC_ALL, LC_MESSAGES ou LANG, se alguma estiver definida; senão, no Windows, o idioma de exibição do usuário e, no macOS, o seu idioma preferido). JSON, CSV e arquivos de cena mantêm as chaves em inglês
 cli-decimal = Como se escrevem os números para pessoas: point (0.5) ou comma (0,5); por padrão, o do idioma (vírgula em português). Os números digitados são lidos com qualquer um
 cli-memory-budget = A memória que um comando pode ocupar com o que lhe é pedido (o tamanho de uma imagem, uma malha): 512M, 8G, ...; padrão: metade da que o sistema tem disponível. Acima dela, um comando diz quanto precisa e não começa
 cli-eval = Calcular casos glref (JSON) e imprimir as cores iluminadas em JSON
@@ -982,6 +1016,7 @@ check-report-counts = Causas na turma
 check-report-unexplained = não explicado pelo catálogo
 check-report-unreadable = não lido: { $reason }
 check-report-written = { $count ->
+    [0] { $count } trabalhos verificados
     [one] um trabalho verificado
    *[other] { $count } trabalhos verificados
 }{ $unread ->
@@ -1048,10 +1083,16 @@ moodle-not-ours = { $path } não foi escrito pelo phonglab, ou foi alterado depo
 set-not-ours = { $path } não foi escrito pelo phonglab, ou foi editado depois que ele o escreveu: o phonglab não o substitui, e não escreveu nada. Para escrever as listas aqui, mova esse arquivo para outro lugar (ele guarda suas alterações) ou escolha outra pasta.
 err-category-blank = --category precisa de um nome: está vazio ou só tem espaços.
 err-category-slash = --category não pode começar nem terminar com "/": o Moodle leria errado o caminho da categoria.
+err-category-control = --category tem um caractere de controle, { $character }: o nome de uma categoria é uma só linha de texto, sem quebras de linha nem tabulações.
 err-category-long = --category tem { $length } caracteres; o Moodle guarda o nome de uma categoria em no máximo { $max }.
 err-worksheet-moodle = --worksheet escreve o exercício 0 só nas listas; um arquivo para o Moodle usa --level ou --effects.
 budget-what-moodle = um arquivo para o Moodle com { $count } exercícios (cerca de { $size } em disco)
-budget-what-sheets = { $count } folhas de exercícios com as respostas e os dois PDFs (cerca de { $size } em disco)
+budget-what-sheets = um conjunto de { $count } listas de exercícios com os gabaritos e os dois PDFs (cerca de { $size } em disco)
+budget-what-wrong = um conjunto de { $count ->
+    [0] { $count } imagens
+    [one] uma imagem
+   *[other] { $count } imagens
+} com um erro cada
 
 ## arg-errors
 

@@ -384,7 +384,13 @@ quiz-key = chave: { $name } = { $value }
 
 ## calculation
 
-plan-heading = Plano especializado: { $computed } efeitos calculados, { $skipped } saltados
+plan-heading = Plano especializado: { $computed ->
+        [one] 1 efeito calculado
+       *[other] { $computed } efeitos calculados
+    }, { $skipped ->
+        [one] 1 saltado
+       *[other] { $skipped } saltados
+    }
 plan-light = luz { $index }:{" "}
 plan-computed = calculado  { $what }
 plan-skipped = saltado   { $what }
@@ -416,7 +422,11 @@ teapot-grid = Grelha do bule
 cylinder-slices = Fatias do cilindro
 cylinder-stacks = Camadas do cilindro
 caps = Tampas
-mesh-triangles = { $count } triângulos: { $notes }
+mesh-triangles =
+    { $count ->
+        [one] 1 triângulo
+       *[other] { $count } triângulos
+    }: { $notes }
 key-hint = tecla { $key }
 mesh-tip = { $path } (abra outra em Opções da vista, ou largue um ficheiro .obj)
 close-mesh = Fechar a sua malha
@@ -467,7 +477,11 @@ cpu-software-adapter = o adaptador ({ $adapter }) é por software, não mais rá
 
 not-opened-worksheet = Não aberto: { $why }. Em vez disso, mostra-se a ficha.
 not-opened = Não aberto: { $why }. A cena atual não mudou.
-mesh-summary = { $triangles } triângulos, { $vertices } vértices; { $notes }
+mesh-summary =
+    { $triangles ->
+        [one] 1 triângulo
+       *[other] { $triangles } triângulos
+    }, { $vertices } vértices; { $notes }
 opened-mesh = Malha aberta: { $path }: { $what }.
 not-text = { $path } não é um ficheiro de texto
 saved = Guardado: { $path }.
@@ -532,6 +546,7 @@ budget-from-option = como pede --memory-budget
 budget-from-system = metade da memória disponível
 budget-from-limit = metade do espaço de endereçamento que resta sob o limite deste processo, ulimit -v
 budget-over-limit = --memory-budget { $budget } é mais do que este processo ainda pode ocupar sob o seu limite, ulimit -v (restam { $room }): uma execução que o ultrapasse pararia a meio. Baixe --memory-budget, ou aumente o limite (ulimit -v)
+budget-size-negative = { $value }: um tamanho não pode ser negativo; escreva um tamanho como 512M, 8G ou 1,5G
 budget-size-refused = { $value }: escreva um tamanho como 512M, 8G ou 1,5G
 budget-what-render = uma imagem de { $width } x { $height } com { $count ->
         [one] um triângulo
@@ -608,7 +623,10 @@ copy = Copiar
 copy-program-hover = Copiar o programa para a área de transferência
 shader-stages-phong = Sombreamento de Phong (por fragmento): só as etapas de que esta cena precisa
 shader-stages-vertex = Sombreamento por vértice: só as etapas de que esta cena precisa
-shader-last-change = A última alteração juntou { $added } linhas (destacadas) e removeu { $removed }.
+shader-last-change = A última alteração juntou { $added ->
+        [one] 1 linha (destacada)
+       *[other] { $added } linhas (destacadas)
+    } e removeu { $removed }.
 shader-removed = Removido pela última alteração:
 session-other-window = Outra janela do phonglab está aberta nesta sessão ({ $dir }): esta janela mostra a última cena guardada mas não guardará a sua sessão. Use Guardar para manter o seu trabalho num ficheiro.
 session-folder-unusable = A pasta da sessão { $dir } não pode ser usada ({ $error }): esta janela não guardará a sua sessão.
@@ -720,6 +738,8 @@ err-no-such-light = --light { $light }: { $count ->
 err-study-stopped = o estudo parou
 err-rules = --rules { $value }: experimente worksheet ou opengl
 err-effects = --effects: { $value } não é um destes: { $names }
+err-effects-empty = --effects tem um nome vazio (uma vírgula sem nada depois ou antes dela): escreva os nomes de entre { $names }, separados por vírgulas.
+err-out-is-a-file = --out { $out } é um ficheiro, e o phonglab exercise escreve os seus ficheiros numa pasta: indique uma pasta, ou o nome de uma pasta nova (nada foi escrito).
 err-level = --level vai de 1 a 4
 err-target = --target { $value }: experimente glsl ou wgsl
 err-shading = --shading { $value }: experimente gouraud ou phong
@@ -778,7 +798,7 @@ cost-chart-title = { $object }: tempo por imagem contra erro médio ({ $size }x{
 ## cli
 
 cli-about = Um explorador da iluminação por vértice da função fixa do OpenGL e dos sombreamentos de Gouraud, Phong e Flat
-cli-lang = A língua do que o phonglab diz: en, pt-PT ou pt-BR (por omissão, a do sistema: LC_ALL, LC_MESSAGES ou LANG). JSON, CSV e ficheiros de cena mantêm as chaves em inglês
+cli-lang = A língua do que o phonglab diz: en, pt-PT ou pt-BR (por omissão, a do sistema: LC_ALL, LC_MESSAGES ou LANG, se alguma estiver definida; senão, no Windows, a língua de apresentação do utilizador e, no macOS, a sua língua preferida). JSON, CSV e ficheiros de cena mantêm as chaves em inglês
 cli-decimal = Como se escrevem os números para pessoas: point (0.5) ou comma (0,5); por omissão, o da língua (vírgula em português). Os números escritos leem-se com qualquer um
 cli-memory-budget = A memória que um comando pode ocupar com o que lhe é pedido (o tamanho de uma imagem, uma malha): 512M, 8G, ...; por omissão: metade da que o sistema tem disponível. Acima dela, um comando diz quanto precisa e não começa
 cli-eval = Calcular casos glref (JSON) e imprimir as cores iluminadas em JSON
@@ -1048,10 +1068,15 @@ moodle-not-ours = { $path } não foi escrito pelo phonglab, ou foi alterado desd
 set-not-ours = { $path } não foi escrito pelo phonglab, ou foi editado depois de ele o escrever: o phonglab não o substitui, e não escreveu nada. Para escrever as fichas aqui, mova esse ficheiro para outro lado (guarda as suas alterações), ou escolha outra pasta.
 err-category-blank = --category precisa de um nome: está vazio ou só tem espaços.
 err-category-slash = --category não pode começar nem acabar em "/": o Moodle leria mal o caminho da categoria.
+err-category-control = --category tem um carácter de controlo, { $character }: o nome de uma categoria é uma só linha de texto, sem quebras de linha nem tabulações.
 err-category-long = --category tem { $length } caracteres; o Moodle guarda o nome de uma categoria em { $max }, no máximo.
 err-worksheet-moodle = --worksheet escreve o exercício 0 só nas fichas; um ficheiro para o Moodle usa --level ou --effects.
 budget-what-moodle = um ficheiro para o Moodle com { $count } exercícios (cerca de { $size } em disco)
-budget-what-sheets = { $count } fichas de exercícios com as respostas e os dois PDF (cerca de { $size } em disco)
+budget-what-sheets = um conjunto de { $count } fichas de exercícios com as chaves e os dois PDF (cerca de { $size } em disco)
+budget-what-wrong = um conjunto de { $count ->
+    [one] uma imagem
+   *[other] { $count } imagens
+} com um erro cada
 
 ## arg-errors
 

@@ -9,7 +9,7 @@ use crate::t;
 use anyhow::Result;
 use clap::Args;
 use phonglab_core::teach::diagnose::{
-    Diagnosis, Drawing, Tried, Verdict, diagnose, drawings_at_most, listed, most_common_first, picture_shows,
+    Diagnosis, Drawing, Shape, Tried, Verdict, diagnose, drawings_at_most, listed, most_common_first, picture_shows,
 };
 use phonglab_core::teach::picture_match::difference_image;
 use phonglab_core::{PowFn, probe, probe_report};
@@ -77,7 +77,7 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
     let right = percent(d.right.score);
     let named = |t: &Tried| (t.words(), t.id(), percent(score_of(t)));
     match d.verdict {
-        Verdict::Right => vec![t!("diagnose-verdict-right", score = right)],
+        Verdict::Right => vec![d.lossy_words().unwrap_or_else(|| t!("diagnose-verdict-right", score = right))],
         Verdict::Wrong => {
             // Causes that draw the same picture: what it shows, the most common named, the
             // others in one line; then each cause with a picture of its own.
@@ -93,6 +93,7 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
             }
             out
         }
+        Verdict::Unexplained if d.shape.is_some() => d.shape.iter().map(|s| s.words(d.right.score)).collect(),
         Verdict::Unexplained => {
             let closest = d.tried.first().filter(|t| t.matched.is_some());
             let (cause, id, score) = closest.map(named).unwrap_or_default();
@@ -101,9 +102,14 @@ fn verdict_lines(d: &Diagnosis) -> Vec<String> {
     }
 }
 
-/// The ids of the mistakes this scene cannot show (with the light, for one made per light).
-fn invisible(d: &Diagnosis) -> Vec<String> {
-    d.tried.iter().filter(|t| t.matched.is_none()).map(Tried::label).collect()
+/// The mistakes this scene cannot show, for JSON: each its id, and `light` for one made per
+/// light (separate fields, so that a script reads the id as the table's).
+fn invisible(d: &Diagnosis) -> Vec<serde_json::Value> {
+    let entry = |t: &Tried| match t.light() {
+        Some(light) => serde_json::json!({ "id": t.id(), "light": light }),
+        None => serde_json::json!({ "id": t.id() }),
+    };
+    d.tried.iter().filter(|t| t.matched.is_none()).map(entry).collect()
 }
 
 /// The pixel's bytes as "(r, g, b)".
@@ -196,11 +202,22 @@ fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>)
             "probe": probed.and_then(|pr| serde_json::to_value(pr).ok()),
         })
     });
+    let shape = d.shape.map(|s| {
+        let mut j = json!({ "id": s.id() });
+        match s {
+            Shape::OtherOutline(share) => j["share"] = json!(share),
+            Shape::Region(r) => j["region"] = json!({ "pixels": r.pixels, "x": r.centre.0, "y": r.centre.1 }),
+            Shape::NothingDrawn => {}
+        }
+        j
+    });
     json!({
         "verdict": d.verdict.name(),
+        "shape": shape,
         "causes": d.causes.iter().map(cause).collect::<Vec<_>>(),
         "same_picture": d.same_picture.iter().map(cause).collect::<Vec<_>>(),
         "right_score": d.right.score,
+        "lossy_score": d.lossy.map(|m| m.score),
         "pixels": d.right.pixels,
         "size": size,
         "tried": d.tried.iter().filter(|t| t.matched.is_some()).map(cause).collect::<Vec<_>>(),

@@ -33,7 +33,7 @@ pub struct ExerciseArgs {
     pub level: Option<u8>,
     /// Exactly these effects instead of a level (comma-separated): positional,
     /// attenuation, spot, local-viewer, two-sided, several-lights.
-    #[arg(long, value_delimiter = ',')]
+    #[arg(long, value_delimiter = ',', action = clap::ArgAction::Set, num_args = 1)]
     pub effects: Vec<String>,
     /// The rules the answers follow: worksheet or opengl.
     #[arg(long, default_value = "worksheet")]
@@ -87,9 +87,13 @@ fn spec_of(a: &ExerciseArgs) -> Result<Spec> {
     };
     if !a.effects.is_empty() {
         let mut effects = Vec::new();
+        let names: Vec<&str> = Effect::ALL.iter().map(|e| e.name()).collect();
         for e in &a.effects {
+            // `--effects spot,`: a comma with no name after it (or before it).
+            if e.trim().is_empty() {
+                bail!(crate::t!("err-effects-empty", names = names.join(", ")));
+            }
             let Some(x) = Effect::parse(e) else {
-                let names: Vec<&str> = Effect::ALL.iter().map(|e| e.name()).collect();
                 bail!(crate::t!("err-effects", value = format!("{e:?}"), names = names.join(", ")));
             };
             effects.push(x);
@@ -115,7 +119,8 @@ fn run_moodle(a: &ExerciseArgs, format: Format) -> Result<()> {
     }
     let category = a.category.clone().unwrap_or_else(|| t!("moodle-category-default"));
     crate::io::moodle_checks::check_category(&category)?;
-    let bank = if a.level == Some(5) {
+    let level_5 = a.level == Some(5);
+    let bundle = if level_5 {
         if a.exam {
             bail!(t!("err-exam-level-5"));
         }
@@ -123,13 +128,19 @@ fn run_moodle(a: &ExerciseArgs, format: Format) -> Result<()> {
         if a.variants > 1 {
             bail!(t!("err-level-5-variants"));
         }
-        misconception_bank(a.seed, a.count as usize, &category)?
+        crate::io::misconception_set::check_budget(a.count as usize)?;
+        None
     } else {
-        let bundle = Bundle { request: request_of(a)?, variants: a.variants as usize, category, exam: a.exam };
+        let bundle =
+            Bundle { request: request_of(a)?, variants: a.variants as usize, category: category.clone(), exam: a.exam };
         crate::io::moodle_checks::check_budget(&bundle, format)?;
-        exercise_bank(&bundle)?
+        Some(bundle)
     };
-    let (file, notices) = crate::io::moodle_set::write(&a.out, &bank, format)?;
+    let make_bank = || match &bundle {
+        Some(bundle) => exercise_bank(bundle),
+        None => misconception_bank(a.seed, a.count as usize, &category),
+    };
+    let (file, bank, notices) = crate::io::moodle_set::write(&a.out, format, make_bank)?;
     for n in &notices {
         super::say(n);
     }
@@ -147,10 +158,7 @@ fn run_moodle(a: &ExerciseArgs, format: Format) -> Result<()> {
         Format::MoodleXml => t!("moodle-format-xml"),
         Format::Gift => t!("moodle-format-gift"),
     };
-    if a.level == Some(5) && a.count_given && a.count as usize > Misconception::ALL.len() {
-        let all = Misconception::ALL.len() as i64;
-        super::say(&t!("level-5-count", count = a.count as i64, all = all));
-    }
+    say_level_5_count(a);
     super::say(&t!(
         "moodle-written",
         file = file,
@@ -162,8 +170,22 @@ fn run_moodle(a: &ExerciseArgs, format: Format) -> Result<()> {
     Ok(())
 }
 
+/// Says, to a teacher who asked level 5 for more questions than its seven mistakes, that
+/// it wrote seven ("7, not 9"), for the sheets as for Moodle.
+fn say_level_5_count(a: &ExerciseArgs) {
+    if a.level == Some(5) && a.count_given && a.count as usize > Misconception::ALL.len() {
+        let all = Misconception::ALL.len() as i64;
+        super::say(&t!("level-5-count", count = a.count as i64, all = all));
+    }
+}
+
 /// Runs `phonglab exercise`.
 pub fn run(a: &ExerciseArgs) -> Result<()> {
+    // Said in one sentence (the writer's own error chains its step and reason: "cannot
+    // write afile: create the folder: it is a file…").
+    if std::fs::metadata(&a.out).is_ok_and(|m| !m.is_dir()) {
+        bail!(t!("err-out-is-a-file", out = crate::io::reasons::shown(&a.out)));
+    }
     match a.format {
         OutputFormat::Sheets if a.variants > 1 || a.category.is_some() => bail!(t!("err-moodle-only")),
         OutputFormat::Sheets => {}
@@ -178,6 +200,7 @@ pub fn run(a: &ExerciseArgs) -> Result<()> {
         for n in &notices {
             super::say(n);
         }
+        say_level_5_count(a);
         super::say(&t!("wrong-written", count = count, out = crate::io::reasons::shown(&a.out)));
         return Ok(());
     }

@@ -50,8 +50,10 @@ pub struct Cli {
     /// adapter).
     #[arg(long, value_enum, default_value_t = RendererArg::Auto)]
     pub renderer: RendererArg,
-    /// The language of what phonglab says: en, pt-PT or pt-BR (default: the system's, from
-    /// LC_ALL, LC_MESSAGES or LANG). JSON, CSV and scene files keep English keys.
+    /// The language of what phonglab says: en, pt-PT or pt-BR (default: the system's:
+    /// LC_ALL, LC_MESSAGES or LANG where one is set, else on Windows the user's display
+    /// language and on macOS their preferred language). JSON, CSV and scene files keep
+    /// English keys.
     #[arg(long, global = true, value_parser = parse_lang)]
     pub lang: Option<crate::locale::Lang>,
     /// How numbers meant for people are written: point (0.5) or comma (0,5); default: the
@@ -61,7 +63,7 @@ pub struct Cli {
     /// The memory a command may take for what it is asked (a picture's size, a mesh):
     /// 512M, 8G, ...; default: half of what the system has available. Past it, a command
     /// says how much it needs and does not start.
-    #[arg(long, global = true, value_name = "SIZE", value_parser = crate::io::budget::parse_size)]
+    #[arg(long, global = true, value_name = "SIZE", allow_hyphen_values = true, value_parser = crate::io::budget::parse_size)]
     pub memory_budget: Option<u64>,
 }
 

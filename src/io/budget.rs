@@ -26,6 +26,12 @@ static BUDGET: AtomicU64 = AtomicU64::new(0);
 /// `--memory-budget`, 2 the address-space limit (`ulimit -v`).
 static FROM: AtomicU64 = AtomicU64::new(0);
 
+/// The process's own part, besides what a command allocates for what it is asked: the
+/// code, the catalogues, the fonts. `phonglab --version` peaks at 27 MB resident (debug
+/// build, `/usr/bin/time -v`); a command that writes files, at up to 40 MB before its
+/// first exercise. Every estimate that says "never below" what a run takes counts it.
+pub const PROCESS: u64 = 48 << 20;
+
 /// When the system does not say how much memory is available.
 const FALLBACK: u64 = 4 << 30;
 
@@ -143,6 +149,9 @@ pub fn parse_size(text: &str) -> Result<u64, String> {
         _ => return Err(refused()),
     };
     let bytes = number * (1u64 << shift) as f64;
+    if bytes < 0.0 {
+        return Err(t!("budget-size-negative", value = format!("{text:?}")));
+    }
     if !(bytes.is_finite() && bytes >= 1.0 && bytes < u64::MAX as f64) {
         return Err(refused());
     }

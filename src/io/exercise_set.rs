@@ -356,13 +356,16 @@ fn handed_out(ex: &Exercise, number: usize, exam: bool) -> std::borrow::Cow<'_, 
 /// the folder ends with the new set whole, or as it was; returns them, and what was left
 /// as it is in the folder (see [`super::file_set::recover`]). A file of the set that
 /// phonglab did not write there as it is now (a key edited since) refuses the set
-/// ([`refuse_foreign`]).
+/// ([`refuse_foreign`]). The folder's lock is taken before the set is made and held
+/// through the check and the write: a second run into the folder waits for this one, then
+/// sees the folder as this one left it.
 pub fn write(dir: &std::path::Path, a: &Request) -> Result<(Vec<Exercise>, Vec<String>)> {
     check_budget(a)?;
     super::atomic_write::check_folder_destination(dir)?;
+    let held = super::file_set::hold_folder(dir)?;
     let (exercises, set) = exercise_set(a)?;
     refuse_foreign(dir, &set)?;
-    let notices = super::file_set::write_set(dir, &set, belongs_to_a_set)?;
+    let notices = super::file_set::write_set_held(&held, &set, belongs_to_a_set)?;
     Ok((exercises, notices))
 }
 
@@ -375,25 +378,35 @@ const SAMPLE: usize = 4;
 /// an exercise for 34 KB of files: under 4 times the files' bytes.
 const HELD_PER_FILE_BYTE: u64 = 4;
 
+/// What a set of at most [`SAMPLE`] exercises is counted a sheet, besides the process's
+/// own part, without making a sample: the PDFs' fonts and pages (one exercise's files are
+/// 0.3 to 0.5 MB, a set of four 1.5 MB at level 4).
+const SMALL_SET_PER_EXERCISE: u64 = 2 << 20;
+
 /// Refuses, in words and before anything is written, a set whose making would take more
 /// than the memory budget ([`super::budget`]; under `ulimit -v`, what the limit leaves):
 /// the files of a sample of four exercises are made, and their bytes (the PDFs' fonts
-/// counted in each, a margin) scaled to the count asked for. A set no larger than the
-/// sample is not estimated: making it is as cheap as the estimate.
+/// counted in each, a margin) scaled to the count asked for, times
+/// `HELD_PER_FILE_BYTE`, and the process's own part ([`super::budget::PROCESS`]). A set
+/// no larger than the sample is not sampled (making it is as cheap as the estimate): it
+/// is counted `SMALL_SET_PER_EXERCISE` (2 MiB) an exercise.
 pub fn check_budget(a: &Request) -> Result<()> {
-    if a.count <= SAMPLE {
-        return Ok(());
-    }
-    let sample = Request { count: SAMPLE, worksheet: false, ..a.clone() };
-    let (_, set) = exercise_set(&sample)?;
-    let bytes: u64 = set.files.iter().map(|(_, b)| b.len() as u64).sum();
-    let files = bytes / SAMPLE as u64 * a.count as u64;
+    let (files, held) = if a.count <= SAMPLE {
+        let held = (a.count + a.worksheet as usize) as u64 * SMALL_SET_PER_EXERCISE;
+        (held / HELD_PER_FILE_BYTE, held)
+    } else {
+        let sample = Request { count: SAMPLE, worksheet: false, ..a.clone() };
+        let (_, set) = exercise_set(&sample)?;
+        let bytes: u64 = set.files.iter().map(|(_, b)| b.len() as u64).sum();
+        let files = bytes / SAMPLE as u64 * a.count as u64;
+        (files, files.saturating_mul(HELD_PER_FILE_BYTE))
+    };
     let what = t!(
         "budget-what-sheets",
         count = phonglab_core::locale::grouped(a.count as u64),
         size = phonglab_core::mesh::obj::describe_bytes(files)
     );
-    super::budget::check(&what, files.saturating_mul(HELD_PER_FILE_BYTE)).map_err(anyhow::Error::msg)
+    super::budget::check(&what, held.saturating_add(super::budget::PROCESS)).map_err(anyhow::Error::msg)
 }
 
 /// Refuses to write `set` into `dir` over a file phonglab did not write there as it is now

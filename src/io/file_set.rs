@@ -104,6 +104,30 @@ const UNTOUCHED: &str = set_steps::KEPT_FOLDER;
 /// is written. What a killed earlier writer left in `dir` is recovered first
 /// ([`recover`]); the messages returned name what was left as it is there.
 pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> Result<Vec<String>, WriteError> {
+    let held = hold_folder(dir)?;
+    write_set_held(&held, set, belongs)
+}
+
+/// The folder `dir`, made if missing and locked against every other phonglab writing into
+/// it ([`crate::platform::os::lock_folder`]) until this is dropped: a writer that checks
+/// what the folder holds (a file it did not write) and then writes takes it before the
+/// check, so that no other run changes the folder between the two ([`write_set_held`]).
+pub struct HeldFolder {
+    dir: std::path::PathBuf,
+    _lock: crate::platform::os::FolderLock,
+}
+
+impl HeldFolder {
+    /// The folder held.
+    pub fn dir(&self) -> &Path {
+        &self.dir
+    }
+}
+
+/// Makes the folder `dir` if missing and takes its lock ([`HeldFolder`]), saying once on
+/// the terminal that it waits where another phonglab holds it. Refuses a link or a file
+/// at `dir`.
+pub fn hold_folder(dir: &Path) -> Result<HeldFolder, WriteError> {
     // A set is written into a real folder only: one planted as a link (an oF project's
     // `src` pointing elsewhere) would send the set, and the old set's removal, outside it.
     // (Windows: a folder reached under another name than its own, `platform::links`.)
@@ -117,8 +141,18 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
         return Err(WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED));
     }
     std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED))?;
-    let _lock = crate::platform::os::lock_folder(dir, || say_waiting(dir))
+    let lock = crate::platform::os::lock_folder(dir, || say_waiting(dir))
         .map_err(|e| WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED))?;
+    Ok(HeldFolder { dir: dir.to_path_buf(), _lock: lock })
+}
+
+/// [`write_set`] into a folder this process already holds ([`hold_folder`]).
+pub fn write_set_held(
+    held: &HeldFolder,
+    set: &FileSet,
+    belongs: impl Fn(&str) -> bool,
+) -> Result<Vec<String>, WriteError> {
+    let dir = held.dir();
     super::set_journal::check_records(dir)?;
     let notices =
         super::set_journal::recover_locked(dir).map_err(|e| WriteError::new(dir, set_steps::RECOVER, e, UNTOUCHED))?;
@@ -220,7 +254,7 @@ fn refuse_unwritable_names(dir: &Path, set: &FileSet) -> Result<(), WriteError> 
 /// (which holds the folder's lock): a wait with nothing said looks like a hang.
 fn say_waiting(dir: &Path) {
     let dir = super::reasons::shown(dir);
-    eprintln!("{}", phonglab_core::escape::terminal::lines(&crate::t!("set-waiting-for-lock", dir = dir)));
+    eprintln!("phonglab: {}", phonglab_core::escape::terminal::lines(&crate::t!("set-waiting-for-lock", dir = dir)));
 }
 
 /// Finishes or throws away what a killed writer of a set left in `dir` (with a journal

@@ -42,6 +42,22 @@ fn choices() -> Vec<String> {
         .collect()
 }
 
+/// What making `count` pictures with one mistake each (the set, or its questions for
+/// Moodle) holds at its peak, besides the process's own part ([`super::budget::PROCESS`]):
+/// per picture its two drawings, their PNGs and the PDFs' copies. Measured
+/// (`/usr/bin/time -v`, debug build): the sheets 43 MB for one picture, 63 MB for seven
+/// (3.3 MB a picture more); GIFT 35 and 54 MB. Counted: 4 MiB a picture.
+pub const PICTURE_BYTES: u64 = 4 << 20;
+
+/// Refuses, in words and before anything is made, `count` pictures with one mistake
+/// (at most the seven mistakes) past the memory budget ([`super::budget`]).
+pub fn check_budget(count: usize) -> Result<()> {
+    let pictures = count.clamp(1, Misconception::ALL.len()) as u64;
+    let what = t!("budget-what-wrong", count = pictures as i64);
+    let needed = super::budget::PROCESS + pictures * PICTURE_BYTES;
+    super::budget::check(&what, needed).map_err(anyhow::Error::msg)
+}
+
 /// The set's files (nothing is written).
 pub fn misconception_set(seed: u64, count: usize) -> Result<FileSet> {
     let mut set = FileSet::default();
@@ -99,9 +115,12 @@ pub fn misconception_set(seed: u64, count: usize) -> Result<FileSet> {
 /// Writes the set into the folder `dir`, whole or not at all (as the other sets are): how
 /// many, and what was left as it is in the folder (see [`super::file_set::recover`]).
 pub fn write(dir: &std::path::Path, seed: u64, count: usize) -> Result<(usize, Vec<String>)> {
+    check_budget(count)?;
     super::atomic_write::check_folder_destination(dir)?;
+    // Held from before the set is made to its end: see `exercise_set::write`.
+    let held = super::file_set::hold_folder(dir)?;
     let set = misconception_set(seed, count)?;
     super::exercise_set::refuse_foreign(dir, &set)?;
-    let notices = super::file_set::write_set(dir, &set, super::exercise_set::belongs_to_a_set)?;
+    let notices = super::file_set::write_set_held(&held, &set, super::exercise_set::belongs_to_a_set)?;
     Ok((count.clamp(1, Misconception::ALL.len()), notices))
 }

@@ -16,11 +16,16 @@ pub const CATEGORY_MAX: usize = 255;
 /// Refuses a category Moodle would not read back as one name: empty or only spaces (the
 /// path would get an empty level, `top//exercise 1`), starting or ending with `/` (its
 /// doubled `/` would run into the path's separators: `top////exercise 1`), or longer than
-/// [`CATEGORY_MAX`] characters as written (a control character is written visibly, as
-/// `\u{1B}`).
+/// [`CATEGORY_MAX`] characters, or with a control character (a line break, a tab, an
+/// escape).
 pub fn check_category(name: &str) -> Result<()> {
     if name.trim().is_empty() {
         bail!(t!("err-category-blank"));
+    }
+    // A line break or another control character would be written into the category's
+    // path as it is (`$course$/top/a\u{A}b`): Moodle's names are one line of text.
+    if let Some(c) = name.chars().find(|c| c.is_control()) {
+        bail!(t!("err-category-control", character = phonglab_core::escape::printable(&c.to_string())));
     }
     if name.starts_with('/') || name.ends_with('/') {
         bail!(t!("err-category-slash"));
@@ -44,8 +49,9 @@ pub const SAMPLE: usize = 32;
 /// 15 %, so the mean of 32 by under 3 %).
 pub const HELD_PER_XML_BYTE: f64 = 2.6 * 1.05;
 
-/// The process's fixed part: the code, the catalogues (40 MB measured, a debug build).
-pub const FIXED: u64 = 48 << 20;
+/// The process's fixed part: the code, the catalogues (40 MB measured, a debug build;
+/// [`super::budget::PROCESS`]).
+pub const FIXED: u64 = super::budget::PROCESS;
 
 /// The estimated size of the file `b` asks for in `format`, and the memory writing it
 /// takes, from a sample of its exercises each written alone ([`SAMPLE`]). The file: the

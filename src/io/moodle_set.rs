@@ -167,19 +167,29 @@ fn picture_question(kind: Misconception, number: usize) -> Result<phonglab_core:
     Ok(misconception_question(kind, &name, right, wrong))
 }
 
-/// Writes `bank` as `format` into the folder `dir`, whole or not at all: the file's name,
+/// Writes the bank `make_bank` makes as `format` into the folder `dir`, whole or not at all: the file's name, the bank,
 /// and what was left as it is in the folder (see [`super::file_set::recover`]). The file
 /// replaces only its own earlier self as phonglab wrote it (named, unchanged, in the
 /// folder's list of what phonglab wrote); every other file in the folder (the sheets and
 /// keys, the other format's file) is left alone.
-pub fn write(dir: &std::path::Path, bank: &Bank, format: Format) -> Result<(String, Vec<String>)> {
+///
+/// The folder is held ([`super::file_set::hold_folder`]) from before the bank is made
+/// (`make_bank`) to the end of the write, so that a second run into it waits for this one
+/// and then checks the folder as this one left it.
+pub fn write(
+    dir: &std::path::Path,
+    format: Format,
+    make_bank: impl FnOnce() -> Result<Bank>,
+) -> Result<(String, Bank, Vec<String>)> {
     super::atomic_write::check_folder_destination(dir)?;
+    let held = super::file_set::hold_folder(dir)?;
+    let bank = make_bank()?;
     refuse_foreign(dir, format.file_name())?;
     let mut set = FileSet::default();
-    set.add(format.file_name(), format.write(bank));
+    set.add(format.file_name(), format.write(&bank));
     let name = format.file_name();
-    let notices = super::file_set::write_set(dir, &set, |n| n == name)?;
-    Ok((format.file_name().to_string(), notices))
+    let notices = super::file_set::write_set_held(&held, &set, |n| n == name)?;
+    Ok((format.file_name().to_string(), bank, notices))
 }
 
 /// Refuses to write `name` into `dir` over a regular file of that name that phonglab did

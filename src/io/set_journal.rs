@@ -394,7 +394,8 @@ fn finish(dir: &Path, staging: &Path, j: &Journal) -> Result<(), String> {
 }
 
 /// Records, whole, the files a set wrote into `dir` ([`WRITTEN`]), with those the list
-/// named before that are still there exactly as phonglab wrote them (another kind of set's
+/// named before that are still there with the bytes phonglab wrote (in a copied folder
+/// too: their entries kept as they were, so they stay phonglab's to replace; another kind of set's
 /// files: the sheets beside a Moodle file, which the Moodle file leaves in place, stay
 /// phonglab's to replace); a failure only leaves them for the next set to keep. The list is
 /// written in the set's staging folder (made by this writer) and renamed over the name in
@@ -403,7 +404,11 @@ fn finish(dir: &Path, staging: &Path, j: &Journal) -> Result<(), String> {
 pub fn write_written_list(dir: &Path, staging: &Path, new: &[Entry]) {
     let mut all = new.to_vec();
     for earlier in written_list(dir) {
-        if !all.iter().any(|e| e.name == earlier.name) && is_entry(&dir.join(&earlier.name), &earlier) {
+        // Still there with the bytes phonglab wrote, as [`written_as_is`] recognises it (a
+        // folder copied whole has new identities): kept as the list named it.
+        let unchanged =
+            || entry_of(dir, &earlier.name).is_ok_and(|now| written_as_is(std::slice::from_ref(&earlier), &now));
+        if !all.iter().any(|e| e.name == earlier.name) && unchanged() {
             all.push(earlier);
         }
     }

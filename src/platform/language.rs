@@ -1,8 +1,9 @@
 //! The user's language as the system says it: the POSIX variables on the desktop
 //! (`LC_ALL`, `LC_MESSAGES`, `LANG`); on Windows and macOS, where those are seldom set
 //! (a program started from the Start menu or the Finder has none), the language of the
-//! user's settings (`sys-locale`: `GetUserDefaultLocaleName`, `CFLocale`) when none of
-//! them is; the browser's preferred languages on the web (`navigator.languages`, then
+//! user's settings when none of them is (`sys-locale`: on Windows the display language,
+//! `GetUserPreferredUILanguages`, not the regional format; on macOS the first preferred
+//! language, `CFLocaleCopyPreferredLanguages`); the browser's preferred languages on the web (`navigator.languages`, then
 //! `navigator.language`).
 
 use crate::locale::Lang;

@@ -209,6 +209,22 @@ fn a_refusal_says_the_value_once_and_names_what_went_wrong() {
     }
 }
 
+/// A negative memory budget is a value refused as no size (it was "has no option -1"),
+/// in every language.
+#[test]
+fn a_negative_memory_budget_is_said_to_be_negative() {
+    for (lang, want) in
+        [("en", "cannot be negative"), ("pt-PT", "não pode ser negativo"), ("pt-BR", "não pode ser negativo")]
+    {
+        for value in ["-1G", "-1"] {
+            let (code, said) = refused(lang, &["exercise", "--memory-budget", value]);
+            assert_eq!(code, 2);
+            assert!(said.contains(want) && said.contains(&format!("\"{value}\"")), "{lang}: {said}");
+            assert!(!said.contains("has no option") && !said.contains("não tem a opção"), "{lang}: {said}");
+        }
+    }
+}
+
 /// A number out of its range is refused with the range in words, whatever is wrong with
 /// it: negative (`--seed -1` was "no option -1"), past the type (`--count` with twenty
 /// digits), or not whole (`--variants 1e20`), in every language.
@@ -262,9 +278,10 @@ fn an_out_that_is_a_file_is_called_a_file() {
     let file = dir.join("afile");
     std::fs::write(&file, "mine").unwrap();
     let words = [
-        ("en", "it is a file, not a folder"),
-        ("pt-PT", "é um ficheiro, não uma pasta"),
-        ("pt-BR", "é um arquivo, não uma pasta"),
+        // One sentence (issue 60: it was "cannot write afile: create the folder: it is a file…").
+        ("en", "is a file, and phonglab exercise writes its files into a folder"),
+        ("pt-PT", "é um ficheiro, e o phonglab exercise escreve os seus ficheiros numa pasta"),
+        ("pt-BR", "é um arquivo, e o phonglab exercise grava os seus arquivos em uma pasta"),
     ];
     for format in ["sheets", "gift", "moodle-xml"] {
         for (lang, words) in words {

@@ -99,6 +99,23 @@ fn help_in_portuguese_has_no_english_sentence() {
     );
 }
 
+/// `--lang`'s help says where the default comes from on each system, in every language:
+/// the variables where one is set, else Windows' display language or macOS's preferred one
+/// (`platform::language`), not the variables alone.
+#[test]
+fn lang_help_says_where_the_default_comes_from_on_each_system() {
+    for (lang, words) in [
+        ("C.UTF-8", ["LC_ALL", "Windows", "display", "macOS", "preferred"]),
+        ("pt_PT.UTF-8", ["LC_ALL", "Windows", "apresentação", "macOS", "preferida"]),
+        ("pt_BR.UTF-8", ["LC_ALL", "Windows", "exibição", "macOS", "preferido"]),
+    ] {
+        let text = help(lang, &["help", "export"]);
+        for word in words {
+            assert!(text.contains(word), "{lang}: no {word:?} in:\n{text}");
+        }
+    }
+}
+
 /// `phonglab --version` prints the crate's version and the commit the binary was built from:
 /// the repository's HEAD where git is there (as here, when the tests run from a clone), else
 /// "unknown".

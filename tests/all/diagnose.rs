@@ -478,3 +478,50 @@ fn a_light_that_reaches_nothing_is_said_first_and_the_lists_keep_each_light_with
     let v = diagnose_json(&right, &image);
     assert!(v["same_picture"].as_array().unwrap().iter().any(|c| c["id"] == "light-left-out"), "{v:#}");
 }
+
+/// `phonglab diagnose --json` of `tests/data/diagnose_lossy/NAME` against the spotlight
+/// scene, at the export's 512 pixels.
+fn lossy_json(name: &str) -> serde_json::Value {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let scene = root.join("assets/scenes/spotlight.toml");
+    let image = root.join("tests/data/diagnose_lossy").join(name);
+    let o = phonglab(&["diagnose", "--scene", scene.to_str().unwrap(), "--image", image.to_str().unwrap(), "--json"]);
+    serde_json::from_slice(&o.stdout).unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&o.stderr)))
+}
+
+#[test]
+fn a_right_picture_saved_as_jpeg_is_right_and_a_mistakes_or_a_tone_curve_is_not() {
+    let v = lossy_json("spotlight-q90.png");
+    assert_eq!(v["verdict"], "right", "{v:#}");
+    assert!(v["right_score"].as_f64().unwrap() < 0.99, "within 3 levels it is not: {v:#}");
+    assert!(v["lossy_score"].as_f64().unwrap() >= 0.99, "{v:#}");
+    // A mistake's picture saved the same way is never right.
+    let v = lossy_json("spotlight-exponent-0-q90.png");
+    assert_ne!(v["verdict"], "right", "{v:#}");
+    assert!(v["lossy_score"].is_null(), "{v:#}");
+    // A tone curve is neither right nor an emission.
+    let v = lossy_json("spotlight-gamma-1.05.png");
+    assert_ne!(v["verdict"], "right", "{v:#}");
+    assert!(v["causes"].as_array().unwrap().iter().all(|c| c["id"] != "emission-added"), "{v:#}");
+}
+
+#[test]
+fn the_jsons_rows_not_visible_give_the_id_and_the_light_apart() {
+    let dir = scratch("not-visible");
+    let right = write(&dir, "right.toml", &shipped("three-lights"));
+    let image = dir.join("right.png");
+    student_picture(&right, &image);
+    let v = diagnose_json(&right, &image);
+    let hidden = v["not_visible"].as_array().unwrap();
+    assert!(hidden.iter().any(|h| h["light"].as_u64().is_some()), "{v:#}");
+    assert!(hidden.iter().any(|h| h["light"].is_null()), "{v:#}");
+    for h in hidden {
+        let id = h["id"].as_str().unwrap();
+        // The table's own id, nothing appended.
+        assert!(phonglab_core::teach::diagnose::MISTAKES.iter().any(|m| m.id == id), "{h}");
+        let per_light = phonglab_core::teach::diagnose::MISTAKES
+            .iter()
+            .any(|m| m.id == id && m.scope == phonglab_core::teach::diagnose::Scope::EachLight);
+        assert_eq!(h["light"].as_u64().is_some(), per_light, "{h}");
+    }
+}

@@ -329,3 +329,51 @@ fn the_loaded_message_quotes_the_title() {
         assert_eq!(got.replace(['\u{2068}', '\u{2069}'], ""), want, "{lang:?}");
     }
 }
+
+/// A count takes the noun's number its language gives it: one thing is singular, none is
+/// plural in both Portuguese ("0 luzes"), though CLDR's rule for pt (Brazil) puts 0 in
+/// "one" (so pt-BR's selectors name [0] first).
+#[test]
+fn counts_take_the_number_their_language_gives_them() {
+    use phonglab::locale::Arg;
+    let said = |lang, id, args: &[(&str, usize)]| {
+        let args: Vec<(&str, Arg)> = args.iter().map(|&(k, n)| (k, Arg::from(n))).collect();
+        tr_in(lang, id, &args).replace(['\u{2068}', '\u{2069}'], "")
+    };
+    let plan = [("computed", 1), ("skipped", 0)];
+    assert_eq!(said(Lang::En, "plan-heading", &plan), "Specialised plan: 1 effect computed, 0 skipped");
+    assert_eq!(said(Lang::PtPt, "plan-heading", &plan), "Plano especializado: 1 efeito calculado, 0 saltados");
+    assert_eq!(said(Lang::PtBr, "plan-heading", &plan), "Plano especializado: 1 efeito calculado, 0 pulados");
+    let plan = [("computed", 0), ("skipped", 1)];
+    assert_eq!(said(Lang::PtBr, "plan-heading", &plan), "Plano especializado: 0 efeitos calculados, 1 pulado");
+    for lang in [Lang::PtPt, Lang::PtBr] {
+        assert_eq!(said(lang, "lights-count", &[("count", 0)]), "0 luzes", "{lang:?}");
+        assert_eq!(said(lang, "lights-count", &[("count", 1)]), "1 luz", "{lang:?}");
+        assert_eq!(said(lang, "lights-count", &[("count", 2)]), "2 luzes", "{lang:?}");
+    }
+    assert_eq!(said(Lang::PtBr, "mesh-triangles", &[("count", 1)]).split(':').next(), Some("1 triângulo"));
+    assert_eq!(said(Lang::PtBr, "mesh-triangles", &[("count", 0)]).split(':').next(), Some("0 triângulos"));
+    assert!(
+        said(Lang::PtPt, "shader-last-change", &[("added", 1), ("removed", 2)]).contains("juntou 1 linha (destacada)")
+    );
+    assert!(
+        said(Lang::PtBr, "quiz-score", &[("right", 0), ("all", 5), ("answered", 0), ("shown", 0)])
+            .contains("0 respondidos")
+    );
+}
+
+/// Every pt-BR selector with a [one] variant names [0] right before it: CLDR's pt rule
+/// (i = 0..1) would otherwise print "0 luz" or "1 respondido" for none.
+#[test]
+fn every_brazilian_one_has_its_zero() {
+    for path in ["i18n/pt-BR.ftl", "crates/phonglab-core/i18n/pt-BR.ftl"] {
+        let text = std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(path)).expect(path);
+        let lines: Vec<&str> = text.lines().collect();
+        let lacking: Vec<&str> = lines
+            .windows(2)
+            .filter(|w| w[1].trim_start().starts_with("[one]") && !w[0].trim_start().starts_with("[0]"))
+            .map(|w| w[1].trim())
+            .collect();
+        assert!(lacking.is_empty(), "{path}: [one] without [0] before it: {lacking:?}");
+    }
+}

@@ -20,6 +20,7 @@ mod diagnose;
 mod director;
 mod escaping;
 mod exam_sheets;
+mod exercise_recheck;
 mod export;
 mod gl_fields;
 mod i18n;

@@ -169,3 +169,23 @@ fn color_material_lights_as_mesa_does() {
     // (no specular there: 2 cases); everywhere else it does.
     assert_eq!(tracked_differently, 48, "cases where the colour material changed a colour");
 }
+
+/// Save's first suggestion has the ending the .deb's MIME type claims, so a scene saved as
+/// suggested opens with a double click (a plain `scene.toml` is any TOML file there).
+#[test]
+fn save_suggests_the_name_a_double_click_opens() {
+    use phonglab::app::panels::files::{FileState, SUGGESTED_SCENE_NAME};
+    assert_eq!(FileState::default().path, SUGGESTED_SCENE_NAME);
+    let mime = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("packaging/linux/phonglab.xml"))
+        .expect("the MIME type file");
+    let ending = mime
+        .split("<glob pattern=\"*")
+        .nth(1)
+        .and_then(|rest| rest.split('"').next())
+        .expect("a glob in the MIME type");
+    assert_eq!(ending, ".phonglab.toml");
+    assert!(
+        SUGGESTED_SCENE_NAME.ends_with(ending) && SUGGESTED_SCENE_NAME.len() > ending.len(),
+        "{SUGGESTED_SCENE_NAME}"
+    );
+}

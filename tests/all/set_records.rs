@@ -188,6 +188,27 @@ fn a_copied_folders_extra_files_are_not_deleted() {
     assert!(!a.join("exercise-02-key.md").exists(), "phonglab's own, unchanged: removed");
 }
 
+/// In a copied folder, the sheets rewritten keep the record of the Moodle file beside them
+/// (unchanged, but no longer the file phonglab made: a copy), so the Moodle file is still
+/// phonglab's to replace, as in the folder it was copied from.
+#[test]
+fn rewriting_one_output_of_a_copied_folder_keeps_the_others_record() {
+    let r = root("copied-other");
+    let (a, b) = (r.join("a"), r.join("b"));
+    ok(exercise("sheets", &a, &[]));
+    ok(exercise("moodle-xml", &a, &[]));
+    copy_folder(&a, &b);
+    let old = std::fs::read(b.join("questions.xml")).unwrap();
+    ok(exercise("sheets", &b, &["--seed", "5"]));
+    let list = std::fs::read_to_string(b.join(LIST)).unwrap();
+    assert!(list.contains("\"questions.xml\""), "the Moodle file's entry kept: {list}");
+    let o = exercise("moodle-xml", &b, &["--seed", "5"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("not written by phonglab"), "{}", stderr(&o));
+    assert_ne!(std::fs::read(b.join("questions.xml")).unwrap(), old, "the copy's Moodle file replaced");
+    assert!(b.join("exercise-02-key.md").exists(), "the sheets stay: {:?}", names(&b));
+}
+
 /// A second run into a folder another phonglab is writing into (here: its lock held)
 /// says so once, in the user's language, then writes when the lock is let go.
 #[cfg(unix)]

@@ -160,7 +160,7 @@ formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate };
 formula-specular-normalised = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns · (ns + 8)/(8π)   ({ $gate }; f = { $f }; energy-conserving Blinn-Phong: the narrower the highlight, the brighter, the light it reflects the same; OpenGL has no such factor)
 formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: the terms are divided by k0 + k1 d + k2 d²)
 formula-at-directional = at = 1   (directional)
-formula-spot = spot = max(-L . s, 0)^e if -L . s >= cos(cutoff) = { $cutoff }, else 0;  -L . s = { $angle }
+formula-spot = spot = max(−L · s, 0)^e if −L · s >= cos(cutoff) = { $cutoff }, else 0;  −L · s = { $angle }
 formula-spot-none = spot = 1   (cutoff 180: not a spotlight)
 formula-share-separate = Ilight = spot · (Iamb + Idif) / at   (specular goes to the secondary colour)
 formula-scene-ambient = a_cm a_cs   (light-model ambient)
@@ -467,7 +467,7 @@ moodle-general-feedback = Each field's feedback gives its step's formula; the wo
 moodle-picture-right = Drawn right
 moodle-picture-wrong = Drawn with one mistake
 moodle-picture-question = Which one mistake makes the right-hand picture?
-moodle-choice-not = Not this one. With this mistake the picture would look like this: { $why }
+moodle-choice-not = Not this one. This mistake would change the picture in another way: { $why }
 
 ## cli-out
 
@@ -653,7 +653,7 @@ diagnose-two-sided-off = Two-sided lighting off: the back faces are lit with the
 diagnose-attenuation-left-out = The attenuation left out
 diagnose-spot-left-out = The spotlight's cone left out (cutoff 180)
 # diagnose: picture mistakes
-diagnose-shininess-fraction = The shininess given as the 0–1 value of a material table instead of that value times 128 (0.4 for 51.2): a highlight spread over the whole object
+diagnose-shininess-fraction = The shininess given as the 0–1 value of a material table instead of that value times 128 ({ $fraction } for { $shininess-given }): a highlight spread over the whole object
 diagnose-light-left-out = Light { $light } (GL_LIGHT{ $light }) left out: glEnable(GL_LIGHT{ $light }) missing
 diagnose-point-as-directional = Light { $light } (GL_LIGHT{ $light }) given w = 0 in GL_POSITION: a directional light instead of a point light
 diagnose-light-ambient-left-out = The ambient colour of light { $light } (GL_LIGHT{ $light }) left at OpenGL's default (0, 0, 0, 1)
@@ -683,6 +683,7 @@ diagnose-attenuation-constant-differs = The constant attenuation of light { $lig
 diagnose-attenuation-linear-differs = The linear attenuation of light { $light } (GL_LIGHT{ $light }, GL_LINEAR_ATTENUATION) looks like { $linear } in the picture; the scene gives { $linear-scene }
 diagnose-attenuation-quadratic-differs = The quadratic attenuation of light { $light } (GL_LIGHT{ $light }, GL_QUADRATIC_ATTENUATION) looks like { $quadratic } in the picture; the scene gives { $quadratic-scene }
 diagnose-shininess-differs = The shininess (GL_SHININESS) looks like { $shininess } in the picture; the scene gives { $shininess-scene }
+diagnose-value-negligible = { $least } or more (the light is negligible: nothing of it reaches the object)
 diagnose-attenuation-left-out-light = The attenuation of light { $light } (GL_LIGHT{ $light }) left out
 diagnose-spot-direction-untransformed = The spot direction of light { $light } (GL_LIGHT{ $light }) given before the camera transform (under the identity), its position after it
 diagnose-light-after-model = The lights placed in the world given after the model transform (under view × model instead of the view): they turn with the object
@@ -733,7 +734,7 @@ diagnose-colour-material-wrong-face = glColorMaterial given the wrong face (GL_B
 diagnose-spot-cutoff-cosine = The spot cutoff of light { $light } (GL_LIGHT{ $light }) given as its cosine (math.cos(math.radians(…)), about 0.99): OpenGL takes GL_SPOT_CUTOFF in degrees, so the cone is less than one degree wide
 diagnose-material-front-only = Two-sided lighting with the glMaterial calls given for GL_FRONT only: the back faces keep OpenGL's default material
 diagnose-emission-back-only = The material's emission given for GL_BACK only: the front faces keep OpenGL's default, black
-diagnose-material-diffuse-0-255 = The material's diffuse colour given in 0..255 instead of 0..1 (102 for 0.4): the diffuse term saturates wherever the light reaches
+diagnose-material-diffuse-0-255 = The material's diffuse colour given in 0..255 instead of 0..1 ({ $diffuse-levels } for { $diffuse-given }): the diffuse term saturates wherever the light reaches
 diagnose-material-colours-0-255 = The material's colours (ambient, diffuse, specular) given in 0..255 instead of 0..1: the object saturates
 diagnose-light-not-normalised = In the shader, a positional light's L is not normalised (L = light − P without dividing by its length d): N·L and the spot's cosine grow with the distance
 diagnose-reflection-reversed = In the shader, R reflected the wrong way (reflect(L, N) instead of reflect(-L, N)): the highlight appears on the opposite side from where it belongs
@@ -741,6 +742,10 @@ diagnose-rescale-for-normalize = GL_RESCALE_NORMAL enabled where GL_NORMALIZE is
 diagnose-same-picture = These causes draw the same picture, so it cannot tell them apart (the most common first): { $ids }. Check which one the program holds.
 diagnose-same-picture-fitted = These causes draw the same picture, so it cannot tell them apart (the most common first, a changed value before a value fitted from the picture): { $ids }. Check which one the program holds.
 diagnose-light-unseen = Nothing of light { $light } (GL_LIGHT{ $light }) reaches the object: the picture is the scene lit without it.
+diagnose-nothing-drawn = Nothing of the object is drawn: the picture is only the background. Check the draw call (glutSolidTeapot, gluSphere…) and that it runs, and the camera (gluLookAt, gluPerspective): the object may be behind it or outside its view.
+diagnose-outline-differs = The object's outline is not this scene's ({ $share } of it differs, beyond a pixel): is this the picture of this scene? Check --scene, and the program's object and camera.
+diagnose-region-differs = A region of { $pixels } pixels around ({ $x }, { $y }) differs from the right picture, although the right picture explains { $score } of the object's pixels: something is drawn over the object there, or that part of it is wrong.
+diagnose-verdict-right-lossy = Right, as saved lossily (JPEG): the right picture explains { $score } of the object's pixels within { $levels } levels ({ $strict } within { $tolerance }), and its differences are noise, not a change of the picture.
 
 ## phonglab check: a student's work checked
 
@@ -848,6 +853,7 @@ python-hint-normal = ; a normal is a direction: x, y, z, or the worksheet's x, y
 python-hint-vertex = ; a vertex is x, y, z (its w is then 1) or x, y, z, w
 python-either-3-or-4 = 3 or 4
 python-no-such-light = there is no light { $light }: the scene has { $count ->
+        [0] no lights
         [one] 1 light, numbered 0
        *[other] { $count } lights, numbered from 0
     }

@@ -70,6 +70,7 @@ ruleset-demo = Demo de Phong
 pow-exact = pow exata
 lights-count =
     { $count ->
+    [0] { $count } luzes
     [one] { $count } luz
     *[other] { $count } luzes
     }
@@ -160,7 +161,7 @@ formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate };
 formula-specular-normalised = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns · (ns + 8)/(8π)   ({ $gate }; f = { $f }; Blinn-Phong que conserva a energia: quanto mais estreito o brilho, mais intenso, e a luz que ele reflete se mantém; o OpenGL não tem esse fator)
 formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: as componentes são divididas por k0 + k1 d + k2 d²)
 formula-at-directional = at = 1   (direcional)
-formula-spot = spot = max(-L . s, 0)^e se -L . s >= cos(cutoff) = { $cutoff }, senão 0;  -L . s = { $angle }
+formula-spot = spot = max(−L · s, 0)^e se −L · s >= cos(cutoff) = { $cutoff }, senão 0;  −L · s = { $angle }
 formula-spot-none = spot = 1   (abertura de 180°: não é um foco)
 formula-share-separate = Ilight = spot · (Iamb + Idif) / at   (a especular vai para a cor secundária)
 formula-scene-ambient = a_cm a_cs   (ambiente do modelo de iluminação)
@@ -455,6 +456,7 @@ moodle-digits-exam = Informe cada valor arredondado para { $digits } algarismos 
 moodle-carry = Use cada valor no passo seguinte do jeito que você calculou, sem arredondar: arredonde só o que você digita num campo.
 moodle-decimal-mark = Os números podem ser digitados com vírgula ou com ponto decimal: o Moodle aceita os dois.
 moodle-part-digits = { $digits ->
+    [0] { $digits } algarismos significativos
     [one] um algarismo significativo
    *[other] { $digits } algarismos significativos
 }
@@ -467,7 +469,7 @@ moodle-general-feedback = O feedback de cada campo dá a fórmula do seu passo; 
 moodle-picture-right = Desenhada corretamente
 moodle-picture-wrong = Desenhada com um erro
 moodle-picture-question = Que erro produz a imagem da direita?
-moodle-choice-not = Não é este. Com este erro, a imagem ficaria assim: { $why }
+moodle-choice-not = Não é este. Esse erro mudaria a imagem de outro jeito: { $why }
 
 ## cli-out
 
@@ -653,7 +655,7 @@ diagnose-two-sided-off = A iluminação das duas faces desligada: as faces de tr
 diagnose-attenuation-left-out = A atenuação esquecida
 diagnose-spot-left-out = O cone do spot esquecido (corte em 180)
 # diagnose: picture mistakes
-diagnose-shininess-fraction = O brilho dado como o valor de 0 a 1 de uma tabela de materiais em vez desse valor vezes 128 (0,4 em vez de 51,2): um brilho espalhado pelo objeto todo
+diagnose-shininess-fraction = O brilho dado como o valor de 0 a 1 de uma tabela de materiais em vez desse valor vezes 128 ({ $fraction } em vez de { $shininess-given }): um brilho espalhado pelo objeto todo
 diagnose-light-left-out = A luz { $light } (GL_LIGHT{ $light }) esquecida: falta o glEnable(GL_LIGHT{ $light })
 diagnose-point-as-directional = A luz { $light } (GL_LIGHT{ $light }) com w = 0 no GL_POSITION: uma luz direcional em vez de uma luz pontual
 diagnose-light-ambient-left-out = A cor ambiente da luz { $light } (GL_LIGHT{ $light }) deixada no valor padrão do OpenGL (0, 0, 0, 1)
@@ -683,6 +685,7 @@ diagnose-attenuation-constant-differs = A atenuação constante da luz { $light 
 diagnose-attenuation-linear-differs = A atenuação linear da luz { $light } (GL_LIGHT{ $light }, GL_LINEAR_ATTENUATION) parece ser { $linear } na imagem; a cena dá { $linear-scene }
 diagnose-attenuation-quadratic-differs = A atenuação quadrática da luz { $light } (GL_LIGHT{ $light }, GL_QUADRATIC_ATTENUATION) parece ser { $quadratic } na imagem; a cena dá { $quadratic-scene }
 diagnose-shininess-differs = O brilho (GL_SHININESS) parece ser { $shininess } na imagem; a cena dá { $shininess-scene }
+diagnose-value-negligible = { $least } ou mais (a luz é desprezível: nada dela chega ao objeto)
 diagnose-attenuation-left-out-light = A atenuação da luz { $light } (GL_LIGHT{ $light }) esquecida
 diagnose-spot-direction-untransformed = A direção do spot da luz { $light } (GL_LIGHT{ $light }) dada antes da transformação da câmera (com a identidade), e a posição dela depois
 diagnose-light-after-model = As luzes colocadas no mundo dadas depois da transformação de modelo (com visão × modelo em vez da visão): elas giram com o objeto
@@ -733,7 +736,7 @@ diagnose-colour-material-wrong-face = O glColorMaterial dado para a face errada 
 diagnose-spot-cutoff-cosine = O corte do spot da luz { $light } (GL_LIGHT{ $light }) dado como seu cosseno (math.cos(math.radians(…)), cerca de 0,99): o OpenGL recebe GL_SPOT_CUTOFF em graus, então o cone tem menos de um grau
 diagnose-material-front-only = Iluminação das duas faces com as chamadas glMaterial dadas só para GL_FRONT: as faces de trás ficam com o material padrão do OpenGL
 diagnose-emission-back-only = A emissão do material dada só para GL_BACK: as faces da frente ficam com o valor padrão do OpenGL, preto
-diagnose-material-diffuse-0-255 = A cor difusa do material dada de 0 a 255 em vez de 0 a 1 (102 em vez de 0,4): o termo difuso satura onde quer que a luz chegue
+diagnose-material-diffuse-0-255 = A cor difusa do material dada de 0 a 255 em vez de 0 a 1 ({ $diffuse-levels } em vez de { $diffuse-given }): o termo difuso satura onde quer que a luz chegue
 diagnose-material-colours-0-255 = As cores do material (ambiente, difusa, especular) dadas de 0 a 255 em vez de 0 a 1: o objeto satura
 diagnose-light-not-normalised = No shader, o L de uma luz pontual não é normalizado (L = luz − P sem dividir pelo seu comprimento d): N·L e o cosseno do spot crescem com a distância
 diagnose-reflection-reversed = No shader, R refletido ao contrário (reflect(L, N) em vez de reflect(-L, N)): o brilho aparece do lado oposto ao certo
@@ -741,6 +744,10 @@ diagnose-rescale-for-normalize = GL_RESCALE_NORMAL ativado onde é necessário G
 diagnose-same-picture = Estas causas desenham a mesma imagem, então não dá para distingui-las por ela (as mais comuns primeiro): { $ids }. Confira qual delas está no programa.
 diagnose-same-picture-fitted = Estas causas desenham a mesma imagem, então não dá para distingui-las por ela (as mais comuns primeiro, um valor alterado antes de um valor ajustado à imagem): { $ids }. Confira qual delas está no programa.
 diagnose-light-unseen = Nada da luz { $light } (GL_LIGHT{ $light }) chega ao objeto: a imagem é a cena iluminada sem ela.
+diagnose-nothing-drawn = Nada do objeto está desenhado: a imagem é só o fundo. Verifique a chamada que o desenha (glutSolidTeapot, gluSphere…) e se ela é executada, e a câmera (gluLookAt, gluPerspective): o objeto pode estar atrás dela ou fora do seu campo de visão.
+diagnose-outline-differs = O contorno do objeto não é o desta cena ({ $share } dele difere, além de um pixel): esta é a imagem desta cena? Verifique --scene, e o objeto e a câmera do programa.
+diagnose-region-differs = Uma região de { $pixels } pixels em torno de ({ $x }, { $y }) difere da imagem certa, embora a imagem certa explique { $score } dos pixels do objeto: há algo desenhado sobre o objeto ali, ou essa parte dele está errada.
+diagnose-verdict-right-lossy = Certa, do jeito que foi salva com perdas (JPEG): a imagem certa explica { $score } dos pixels do objeto a menos de { $levels } níveis ({ $strict } a menos de { $tolerance }), e as diferenças são ruído, não uma mudança da imagem.
 
 ## phonglab check: o trabalho de um aluno verificado
 
@@ -839,6 +846,7 @@ py-two-side-program-comment = Faz o gl_Color do fragment shader ser a cor de tr�
 # phonglab-py: the Python package
 python-unknown-value = { $what }{ $value }: os valores possíveis são { $names }
 python-wrong-length = { $field }: { $count ->
+        [0] { $count } números informados
         [one] 1 número informado
        *[other] { $count } números informados
     }, { $expected } esperados{ $hint }
@@ -848,6 +856,7 @@ python-hint-normal = ; uma normal é uma direção: x, y, z, ou x, y, z, 0 como 
 python-hint-vertex = ; um vértice é x, y, z (o w fica 1) ou x, y, z, w
 python-either-3-or-4 = 3 ou 4
 python-no-such-light = não existe a luz { $light }: a cena tem { $count ->
+        [0] nenhuma luz
         [one] 1 luz, numerada 0
        *[other] { $count } luzes, numeradas a partir de 0
     }

@@ -160,7 +160,7 @@ formula-specular = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns   ({ $gate };
 formula-specular-normalised = Ispec = Lspec · matSpec · max({ $cos }, 0)^ns · (ns + 8)/(8π)   ({ $gate }; f = { $f }; Blinn-Phong que conserva a energia: quanto mais estreito o brilho, mais intenso, e a luz que reflete mantém-se; o OpenGL não tem este fator)
 formula-at = at = atC + atLin · d + atQuad · d²   (OpenGL: as componentes são divididas por k0 + k1 d + k2 d²)
 formula-at-directional = at = 1   (direcional)
-formula-spot = spot = max(-L . s, 0)^e se -L . s >= cos(cutoff) = { $cutoff }, senão 0;  -L . s = { $angle }
+formula-spot = spot = max(−L · s, 0)^e se −L · s >= cos(cutoff) = { $cutoff }, senão 0;  −L · s = { $angle }
 formula-spot-none = spot = 1   (abertura de 180°: não é um foco)
 formula-share-separate = Ilight = spot · (Iamb + Idif) / at   (a especular vai para a cor secundária)
 formula-scene-ambient = a_cm a_cs   (ambiente do modelo de iluminação)
@@ -467,7 +467,7 @@ moodle-general-feedback = O feedback de cada campo dá a fórmula do seu passo; 
 moodle-picture-right = Desenhada corretamente
 moodle-picture-wrong = Desenhada com um erro
 moodle-picture-question = Que erro produz a imagem da direita?
-moodle-choice-not = Não é este. Com este erro, a imagem ficaria assim: { $why }
+moodle-choice-not = Não é este. Este erro mudaria a imagem de outra maneira: { $why }
 
 ## cli-out
 
@@ -653,7 +653,7 @@ diagnose-two-sided-off = A iluminação das duas faces desligada: as faces de tr
 diagnose-attenuation-left-out = A atenuação esquecida
 diagnose-spot-left-out = O cone do foco esquecido (corte a 180)
 # diagnose: picture mistakes
-diagnose-shininess-fraction = O brilho dado como o valor de 0 a 1 de uma tabela de materiais em vez desse valor vezes 128 (0,4 em vez de 51,2): um reflexo espalhado por todo o objeto
+diagnose-shininess-fraction = O brilho dado como o valor de 0 a 1 de uma tabela de materiais em vez desse valor vezes 128 ({ $fraction } em vez de { $shininess-given }): um reflexo espalhado por todo o objeto
 diagnose-light-left-out = A luz { $light } (GL_LIGHT{ $light }) esquecida: falta o glEnable(GL_LIGHT{ $light })
 diagnose-point-as-directional = A luz { $light } (GL_LIGHT{ $light }) com w = 0 no GL_POSITION: uma luz direcional em vez de uma luz pontual
 diagnose-light-ambient-left-out = A cor ambiente da luz { $light } (GL_LIGHT{ $light }) deixada no valor por omissão do OpenGL (0, 0, 0, 1)
@@ -683,6 +683,7 @@ diagnose-attenuation-constant-differs = A atenuação constante da luz { $light 
 diagnose-attenuation-linear-differs = A atenuação linear da luz { $light } (GL_LIGHT{ $light }, GL_LINEAR_ATTENUATION) parece ser { $linear } na imagem; a cena dá { $linear-scene }
 diagnose-attenuation-quadratic-differs = A atenuação quadrática da luz { $light } (GL_LIGHT{ $light }, GL_QUADRATIC_ATTENUATION) parece ser { $quadratic } na imagem; a cena dá { $quadratic-scene }
 diagnose-shininess-differs = O brilho (GL_SHININESS) parece ser { $shininess } na imagem; a cena dá { $shininess-scene }
+diagnose-value-negligible = { $least } ou mais (a luz é desprezável: nada dela chega ao objeto)
 diagnose-attenuation-left-out-light = A atenuação da luz { $light } (GL_LIGHT{ $light }) esquecida
 diagnose-spot-direction-untransformed = A direção do foco da luz { $light } (GL_LIGHT{ $light }) dada antes da transformação da câmara (com a identidade), e a sua posição depois dela
 diagnose-light-after-model = As luzes colocadas no mundo dadas depois da transformação de modelo (com vista × modelo em vez da vista): rodam com o objeto
@@ -733,7 +734,7 @@ diagnose-colour-material-wrong-face = O glColorMaterial dado para a face errada 
 diagnose-spot-cutoff-cosine = O corte do foco da luz { $light } (GL_LIGHT{ $light }) dado como o seu cosseno (math.cos(math.radians(…)), cerca de 0,99): o OpenGL recebe GL_SPOT_CUTOFF em graus, por isso o cone tem menos de um grau
 diagnose-material-front-only = Iluminação das duas faces com as chamadas glMaterial dadas só para GL_FRONT: as faces de trás ficam com o material por omissão do OpenGL
 diagnose-emission-back-only = A emissão do material dada só para GL_BACK: as faces da frente ficam com o valor por omissão do OpenGL, preto
-diagnose-material-diffuse-0-255 = A cor difusa do material dada de 0 a 255 em vez de 0 a 1 (102 em vez de 0,4): o termo difuso satura onde quer que a luz chegue
+diagnose-material-diffuse-0-255 = A cor difusa do material dada de 0 a 255 em vez de 0 a 1 ({ $diffuse-levels } em vez de { $diffuse-given }): o termo difuso satura onde quer que a luz chegue
 diagnose-material-colours-0-255 = As cores do material (ambiente, difusa, especular) dadas de 0 a 255 em vez de 0 a 1: o objeto satura
 diagnose-light-not-normalised = No shader, o L de uma luz pontual não é normalizado (L = luz − P sem dividir pelo seu comprimento d): N·L e o cosseno do foco crescem com a distância
 diagnose-reflection-reversed = No shader, R refletido ao contrário (reflect(L, N) em vez de reflect(-L, N)): o reflexo aparece do lado oposto àquele onde devia estar
@@ -741,6 +742,10 @@ diagnose-rescale-for-normalize = GL_RESCALE_NORMAL ativado onde é preciso GL_NO
 diagnose-same-picture = Estas causas desenham a mesma imagem, por isso ela não permite distingui-las (as mais comuns primeiro): { $ids }. Verifique qual delas está no programa.
 diagnose-same-picture-fitted = Estas causas desenham a mesma imagem, por isso ela não permite distingui-las (as mais comuns primeiro, um valor alterado antes de um valor ajustado à imagem): { $ids }. Verifique qual delas está no programa.
 diagnose-light-unseen = Nada da luz { $light } (GL_LIGHT{ $light }) chega ao objeto: a imagem é a cena iluminada sem ela.
+diagnose-nothing-drawn = Nada do objeto está desenhado: a imagem é só o fundo. Verifique a chamada que o desenha (glutSolidTeapot, gluSphere…) e que ela corre, e a câmara (gluLookAt, gluPerspective): o objeto pode estar atrás dela ou fora do seu campo de visão.
+diagnose-outline-differs = O contorno do objeto não é o desta cena ({ $share } dele difere, para além de um píxel): é esta a imagem desta cena? Verifique --scene, e o objeto e a câmara do programa.
+diagnose-region-differs = Uma região de { $pixels } píxeis em torno de ({ $x }, { $y }) difere da imagem certa, embora a imagem certa explique { $score } dos píxeis do objeto: há algo desenhado por cima do objeto ali, ou essa parte dele está errada.
+diagnose-verdict-right-lossy = Certa, tal como foi guardada com perdas (JPEG): a imagem certa explica { $score } dos píxeis do objeto a menos de { $levels } níveis ({ $strict } a menos de { $tolerance }), e as diferenças são ruído, não uma alteração da imagem.
 
 ## phonglab check: o trabalho de um aluno verificado
 
@@ -848,6 +853,7 @@ python-hint-normal = ; uma normal é uma direção: x, y, z, ou x, y, z, 0 como 
 python-hint-vertex = ; um vértice é x, y, z (o w fica 1) ou x, y, z, w
 python-either-3-or-4 = 3 ou 4
 python-no-such-light = não há luz { $light }: a cena tem { $count ->
+        [0] nenhuma luz
         [one] 1 luz, numerada 0
        *[other] { $count } luzes, numeradas a partir de 0
     }

@@ -35,9 +35,14 @@ pub struct FileState {
     pub dialogs: Dialogs,
 }
 
+/// The name Save suggests before any file is opened or typed: with the ending the Linux
+/// package's MIME type claims (`*.phonglab.toml`, packaging/linux/phonglab.xml), so the
+/// saved scene opens in phonglab with a double click.
+pub const SUGGESTED_SCENE_NAME: &str = "scene.phonglab.toml";
+
 impl Default for FileState {
     fn default() -> Self {
-        FileState { path: "scene.toml".into(), dialogs: Dialogs::None }
+        FileState { path: SUGGESTED_SCENE_NAME.into(), dialogs: Dialogs::None }
     }
 }
 
@@ -127,7 +132,7 @@ fn pick(
 }
 
 /// The browser's Open… (the file chooser) and Save (a download of the scene file, named
-/// after the file it came from, or `scene.toml`).
+/// after the file it came from, or [`SUGGESTED_SCENE_NAME`]).
 fn browser_file_ui(ui: &mut Ui, files: &FileState, doc: &Document, message: &mut Option<Message>) {
     if ui.button(t!("open-dialog")).on_hover_text(t!("open-browser-hover")).clicked() {
         platform::choose_file(ui.ctx(), ".toml,.obj,.ipynb,.py", browser_check);
@@ -135,7 +140,7 @@ fn browser_file_ui(ui: &mut Ui, files: &FileState, doc: &Document, message: &mut
     if ui.button(t!("save")).on_hover_text(t!("save-download-hover")).clicked() {
         let name = Path::new(files.path.trim())
             .file_name()
-            .map_or("scene.toml".to_string(), |n| n.to_string_lossy().into_owned());
+            .map_or(SUGGESTED_SCENE_NAME.to_string(), |n| n.to_string_lossy().into_owned());
         *message = Some(match doc.to_toml().map_err(|e| e.to_string()) {
             Ok(text) => match platform::download(&name, text.as_bytes(), "application/toml") {
                 Ok(()) => Message::Info(t!("downloaded", name = name)),

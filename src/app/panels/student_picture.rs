@@ -55,6 +55,10 @@ struct Said {
     named: Vec<Tried>,
     /// The first causes when they draw the same picture.
     same: Vec<Tried>,
+    /// What the picture's shape shows, in words, when it is not the scene's picture.
+    shape: Option<String>,
+    /// The verdict "right" in words when it allows for a lossy saving.
+    lossy: Option<String>,
 }
 
 impl Said {
@@ -64,7 +68,16 @@ impl Said {
             Verdict::Wrong => d.causes.clone(),
             Verdict::Unexplained => d.tried.first().filter(|t| t.matched.is_some()).copied().into_iter().collect(),
         };
-        Said { verdict: d.verdict, right: d.right.score, named, same: d.same_picture.clone() }
+        let shape = d.shape.map(|s| s.words(d.right.score));
+        let named = if shape.is_some() { Vec::new() } else { named };
+        Said {
+            verdict: d.verdict,
+            right: d.right.score,
+            named,
+            same: d.same_picture.clone(),
+            shape,
+            lossy: d.lossy_words(),
+        }
     }
 }
 
@@ -78,7 +91,7 @@ fn verdict_lines(d: &Said) -> Vec<String> {
     let right = percent(d.right);
     let named = |t: &Tried| (t.words(), t.label(), percent(t.matched.map_or(0.0, |m| m.score)));
     match d.verdict {
-        Verdict::Right => vec![t!("diagnose-verdict-right", score = right)],
+        Verdict::Right => vec![d.lossy.clone().unwrap_or_else(|| t!("diagnose-verdict-right", score = right))],
         Verdict::Wrong => {
             // As `phonglab diagnose` says it: what a picture that several causes draw
             // shows, the most common named, the others in one line, then the rest.
@@ -94,6 +107,7 @@ fn verdict_lines(d: &Said) -> Vec<String> {
             }
             out
         }
+        Verdict::Unexplained if d.shape.is_some() => d.shape.iter().cloned().collect(),
         Verdict::Unexplained => {
             let (cause, id, score) = d.named.first().map(named).unwrap_or_default();
             vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]

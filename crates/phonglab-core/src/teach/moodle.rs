@@ -43,9 +43,19 @@ impl Rounding {
         match self {
             Rounding::Quiz => (quiz::digits_needed(&[x]), quiz_tolerance(x)),
             Rounding::Exam => {
+                // Exactly half a unit of the last digit the key shows (every digit of a
+                // whole part): the honest roundings with Moodle's slack ([`MOODLE_SLACK`]),
+                // never the quiz's 0.01 %, which above 5.05 in the leading digits takes a
+                // neighbour (0.7839 for 0.78384). 0 takes half a unit of the eighth decimal,
+                // below any other exam value.
                 let x = self.answer(x);
-                let half_unit = if x == 0.0 { 0.0 } else { half_unit(x, EXAM_DIGITS) };
-                (EXAM_DIGITS, to_significant(quiz_tolerance(x).max(half_unit * TIE_MARGIN), TOLERANCE_DIGITS))
+                let shown = EXAM_DIGITS.max(whole_digits(x));
+                let tolerance = if x == 0.0 {
+                    0.5 * 10f64.powi(-(crate::teach::exam::MAX_DECIMALS as i32))
+                } else {
+                    half_unit(x, shown)
+                };
+                (EXAM_DIGITS, to_significant(tolerance, TOLERANCE_DIGITS))
             }
         }
     }
@@ -119,11 +129,18 @@ pub fn to_significant(x: f64, digits: usize) -> f64 {
     format!("{:.*e}", digits.max(1) - 1, x).parse().unwrap_or(x)
 }
 
-/// An exam's tolerance is this many half units of the fourth digit: a value on a tie
-/// (0.14625) rounds to either neighbour (0.1462 or 0.1463), each exactly half a unit away,
-/// which Moodle's float comparison (`answer - tol <= x <= answer + tol`) may refuse by a
-/// hair; 1 % more takes both and no other four-digit number.
-pub const TIE_MARGIN: f64 = 1.01;
+/// Moodle's own slack on a nominal tolerance (`qtype_numerical_answer::get_tolerance_interval`:
+/// the tolerance grows by 1e-14, PHP's `precision`, of the larger of itself and the
+/// answer). It makes an exam's tolerance of exactly half a unit take both neighbours of a
+/// tie (0.14625: 0.1462 and 0.1463, half-up or as the double rounds), which a bare float
+/// comparison may refuse by a hair, and still no other four-digit number: an exam value ends
+/// in at most eight decimals, so any other is at least half a unit and 1e-8 away.
+pub const MOODLE_SLACK: f64 = 1e-14;
+
+/// The digits of `x`'s whole part (0 for |x| < 1): a key shows them all (12345).
+fn whole_digits(x: f64) -> usize {
+    if x.abs() < 1.0 { 0 } else { (x.abs().log10().floor() as i64 + 1).max(0) as usize }
+}
 
 /// Half a unit of `x`'s last digit when it is written to `digits` significant digits.
 pub fn half_unit(x: f64, digits: usize) -> f64 {
@@ -306,6 +323,22 @@ fn feedback(ex: &Exercise, key: &Explanation, k: usize) -> (String, String) {
     (right, wrong)
 }
 
+/// The significant digits of the key's worked calculation (`phonglab explain`, the
+/// sheets' keys).
+pub const KEY_DIGITS: usize = 8;
+
+/// A step's value as the key prints it ([`crate::equation::explain::printed_components`]):
+/// a component below the largest one's last printed digit, or below a millionth of the
+/// quiz's absolute tolerance (a value alone), is 0, and -0 is 0; so the engine's
+/// `-0.000000000000001` next to a 2 is the key's 0, never written as an answer.
+pub fn as_the_key_prints(value: &[f64]) -> Vec<f64> {
+    let resolution = quiz::TOLERANCE.1 * 1e-6;
+    crate::equation::explain::printed_components(value, KEY_DIGITS)
+        .into_iter()
+        .map(|x| if x.abs() < resolution { 0.0 } else { x })
+        .collect()
+}
+
 /// The parts of an exercise: one per component of every step the sheet asks, numbered as
 /// consecutive numbers.
 pub fn parts(ex: &Exercise, rounding: Rounding) -> Vec<Part> {
@@ -318,6 +351,7 @@ pub fn parts(ex: &Exercise, rounding: Rounding) -> Vec<Part> {
         let st = &key.steps[k];
         let Some(value) = &st.value else { continue };
         let (right, wrong) = feedback(ex, key, k);
+        let value = &as_the_key_prints(value);
         let n = asked_components(st.kind, value);
         let asked: Vec<(usize, f64)> = value.iter().take(n).map(|&x| rounding.of(x)).collect();
         let digits = asked.iter().map(|(d, _)| *d).max().unwrap_or(1);
@@ -407,7 +441,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_part_takes_the_quizs_tolerance_or_a_hair_over_half_a_unit_of_the_fourth_digit() {
+    fn a_part_takes_the_quizs_tolerance_or_half_a_unit_of_the_fourth_digit() {
         assert_eq!(Rounding::Quiz.of(0.5), (1, 5e-5));
         assert_eq!(Rounding::Quiz.of(0.0), (1, 1e-6));
         let (digits, tolerance) = Rounding::Quiz.of(0.79220526);
@@ -415,12 +449,23 @@ mod tests {
         assert!((tolerance - 0.79220526e-4).abs() < 1e-15);
         let (digits, tolerance) = Rounding::Exam.of(38.2);
         assert_eq!(digits, 4);
-        assert!((tolerance - 0.005 * TIE_MARGIN).abs() < 1e-15, "1.01 half units of 38.20's last digit: {tolerance}");
+        assert_eq!(tolerance, 0.005, "half a unit of 38.20's last digit: {tolerance}");
         // 0.12345 rounds to 0.1235 (or 0.1234): half a unit takes both, the quiz's rule neither.
         let (_, tolerance) = Rounding::Exam.of(0.12345);
         assert!((0.1235f64 - 0.12345).abs() <= tolerance + 1e-15 && tolerance < 6e-5);
         assert_eq!(Rounding::Exam.answer(0.8 * 0.5 - 1.0), -0.6, "the exact decimal, not -0.6000000000000001");
         assert_eq!(Rounding::Exam.answer(0.42024960000000006), 0.4202496);
+    }
+
+    /// Issue 60: `-0.000000000000001` (level 1's vertexPos x) was written as the right
+    /// answer where the key says 0.
+    #[test]
+    fn float_noise_is_the_keys_zero_never_minus_zero() {
+        assert_eq!(as_the_key_prints(&[-1e-15, 2.0, -3.5]), vec![0.0, 2.0, -3.5]);
+        assert!(as_the_key_prints(&[-1e-15, 2.0])[0].is_sign_positive(), "never -0");
+        assert!(as_the_key_prints(&[-0.0])[0].is_sign_positive(), "never -0");
+        assert_eq!(as_the_key_prints(&[-1e-15]), vec![0.0], "a value alone");
+        assert_eq!(as_the_key_prints(&[1e-5, 0.5]), vec![1e-5, 0.5], "a small value the key prints is kept");
     }
 
     #[test]

@@ -7,7 +7,9 @@ use phonglab_core::mesh::Mesh;
 use phonglab_core::mesh::cylinder::glu_cylinder;
 use phonglab_core::mesh::sphere::{glu_sphere, glu_sphere_inside};
 use phonglab_core::model::scene::{Light, LightPlacement, NormalMode, Scene};
-use phonglab_core::teach::diagnose::{At, Drawing, MISTAKES, RIGHT_AT, Scope, Tried, Verdict, diagnose, offered};
+use phonglab_core::teach::diagnose::{
+    At, Drawing, MISTAKES, OUTLINE_AT, RIGHT_AT, Scope, Shape, Tried, Verdict, diagnose, offered,
+};
 use phonglab_core::teach::picture_match::compare;
 use phonglab_core::{EvalOptions, Rules, ShadingMode};
 
@@ -562,4 +564,120 @@ fn the_rule_for_fitted_values_is_said_only_when_one_is_fitted() {
     };
     let plain = same_picture_said(&[t("flipped-normals"), t("two-sided-off")]).unwrap();
     assert!(!plain.contains("fitted"), "{plain}");
+}
+
+/// The right picture of the sphere scene at `size`, and where the object is drawn at its
+/// centre.
+fn right_picture(size: usize) -> (Drawing, Vec<u8>, (usize, usize)) {
+    let right = sphere_scene();
+    let (_, rgba, covered) = right.draw(size).expect("drawn");
+    let n = covered.iter().filter(|&&c| c).count();
+    let sum = (0..size * size).filter(|&p| covered[p]).fold((0, 0), |s, p| (s.0 + p % size, s.1 + p / size));
+    (right, rgba, (sum.0 / n, sum.1 / n))
+}
+
+/// `rgba` (`size` square) with a red square of `side` pixels from (`x`, `y`).
+fn painted(mut rgba: Vec<u8>, size: usize, (x, y): (usize, usize), side: usize) -> Vec<u8> {
+    for qy in y..y + side {
+        for qx in x..x + side {
+            rgba[(qy * size + qx) * 4..(qy * size + qx) * 4 + 3].copy_from_slice(&[255, 0, 0]);
+        }
+    }
+    rgba
+}
+
+#[test]
+fn a_small_solid_square_painted_on_the_right_picture_is_not_right() {
+    // At 256 pixels the object covers some 16 000: a 10 x 10 red square at its centre
+    // leaves the right picture explaining more than RIGHT_AT of them.
+    let size = 256;
+    let (right, rgba, (cx, cy)) = right_picture(size);
+    let d = diagnose(&right, &painted(rgba.clone(), size, (cx - 5, cy - 5), 10), size).expect("diagnosed");
+    assert!(d.right.score >= RIGHT_AT, "{:?}", d.right);
+    assert_eq!(d.verdict, Verdict::Unexplained);
+    assert!(d.causes.is_empty());
+    let Some(Shape::Region(r)) = d.shape else { panic!("{:?}", d.shape) };
+    // Solid: the 8 x 8 inside the square (its rim's neighbours match), around its centre.
+    assert_eq!(r.pixels, 64, "{r:?}");
+    assert!(r.centre.0.abs_diff(cx) <= 1 && r.centre.1.abs_diff(cy) <= 1, "{r:?} ({cx}, {cy})");
+    assert!(d.shape.expect("a shape").words(d.right.score).contains(&format!("({}, {})", r.centre.0, r.centre.1)));
+    // A 3 x 3 square is within what a pixel's shift may leave: still right.
+    let d = diagnose(&right, &painted(rgba, size, (cx, cy), 3), size).expect("diagnosed");
+    assert_eq!((d.verdict, d.shape), (Verdict::Right, None));
+}
+
+#[test]
+fn only_the_background_is_nothing_drawn_and_no_colour_is_fitted() {
+    let right = sphere_scene();
+    let bg = right.background8();
+    let image: Vec<u8> = (0..SIZE * SIZE).flat_map(|_| [bg[0], bg[1], bg[2], 255]).collect();
+    let d = diagnose(&right, &image, SIZE).expect("diagnosed");
+    assert_eq!(d.verdict, Verdict::Unexplained);
+    assert_eq!(d.shape, Some(Shape::NothingDrawn));
+    assert!(d.causes.is_empty(), "{:?}", d.causes);
+}
+
+#[test]
+fn another_objects_picture_says_its_outline_differs_and_names_no_cause() {
+    let right = sphere_scene();
+    let (_, cylinder, _) = cylinder_scene().draw(SIZE).expect("drawn");
+    let d = diagnose(&right, &cylinder, SIZE).expect("diagnosed");
+    assert_eq!(d.verdict, Verdict::Unexplained);
+    assert!(d.causes.is_empty());
+    let Some(Shape::OtherOutline(share)) = d.shape else { panic!("{:?}", d.shape) };
+    assert!(share > OUTLINE_AT, "{share}");
+    // Each mistake's picture of the scene has the scene's outline: none says so.
+    for (i, m) in MISTAKES.iter().enumerate().filter(|(_, m)| m.scope == Scope::Scene).take(12) {
+        let right = scene_for(m.id);
+        let d = diagnose(&right, &wrong_picture(&right, i), SIZE).expect("diagnosed");
+        assert_eq!(d.shape, None, "{}", m.id);
+    }
+}
+
+#[test]
+fn a_tone_curve_is_not_an_emission() {
+    // The right picture through a gamma of 1.05 (each level v to 255 (v / 255)^(1 / 1.05)):
+    // the middle levels lifted by 4, the dark ones by 1 or less.
+    // The spotlight scene's teapot: its lit side mid levels, its unlit side dark.
+    let (right, size) = (shipped("spotlight"), 256);
+    let (_, image, _) = right.draw(size).expect("drawn");
+    let curved: Vec<u8> = image
+        .chunks_exact(4)
+        .flat_map(|p| {
+            let g = |v: u8| (255.0 * (f64::from(v) / 255.0).powf(1.0 / 1.05)).round() as u8;
+            [g(p[0]), g(p[1]), g(p[2]), 255]
+        })
+        .collect();
+    let d = diagnose(&right, &curved, size).expect("diagnosed");
+    assert!(d.causes.iter().all(|t| t.id() != "emission-added"), "{:?}", d.causes);
+    let emission = d.tried.iter().find(|t| t.id() == "emission-added");
+    assert!(emission.is_none_or(|t| t.at.emission == [0.0; 3]), "{emission:?}");
+}
+
+#[test]
+fn a_light_made_negligible_is_quoted_as_a_least_value_and_the_rows_quote_the_scenes_own_numbers() {
+    // The spotlight scene with its own shininess and diffuse colour, its spot turned away:
+    // nothing of the light reaches the teapot, which any attenuation large enough draws.
+    let mut right = shipped("spotlight");
+    right.scene.material.shininess = 20.0;
+    right.scene.material.diffuse = DVec4::new(0.5, 0.25, 0.1, 1.0);
+    let mut wrong = right.clone();
+    wrong.scene.lights[0].spot_direction = -wrong.scene.lights[0].spot_direction;
+    let (_, rgba, _) = wrong.draw(SIZE).expect("drawn");
+    let found = diagnose(&right, &shifted_and_noised(&rgba, right.background8()), SIZE).expect("diagnosed");
+    let attenuations: Vec<&Tried> = found
+        .tried
+        .iter()
+        .filter(|t| t.id().starts_with("attenuation-") && t.id().ends_with("-differs"))
+        .filter(|t| t.matched.is_some_and(|m| m.score >= RIGHT_AT))
+        .collect();
+    assert!(!attenuations.is_empty(), "{:?}", found.tried);
+    for t in attenuations {
+        let words = t.words();
+        assert!(words.contains(" or more (the light is negligible"), "{words}");
+    }
+    let words = |id: &str| found.tried.iter().find(|t| t.id() == id).map(Tried::words).expect(id);
+    assert!(words("shininess-fraction").contains("(0.156 for 20)"), "{}", words("shininess-fraction"));
+    let diffuse = words("material-colour-0-255");
+    assert!(diffuse.contains("((128, 64, 26) for (0.50, 0.25, 0.10))"), "{diffuse}");
 }

@@ -23,6 +23,25 @@ pub struct At {
     pub values: Values,
     /// Each side's material colours the picture shows (for `materials-differ`).
     pub sides: Option<Sides>,
+    /// The scene's own values its rows' words quote.
+    pub given: Given,
+}
+
+/// The scene's own values a row's words quote ("0.4 for 51.2" is the scene's shininess).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Given {
+    /// The front material's diffuse colour (RGB, 0 to 1).
+    pub diffuse: [f64; 3],
+    /// The front material's shininess.
+    pub shininess: f64,
+}
+
+impl Given {
+    /// The values of `d`'s scene.
+    pub fn of(d: &Drawing) -> Given {
+        let m = &d.scene.material;
+        Given { diffuse: m.diffuse.truncate().to_array(), shininess: m.shininess }
+    }
 }
 
 /// Each side's `glMaterial` values changed by `change`; false when it changed none.

@@ -32,29 +32,57 @@ fn flat(picture: &[u8], covered: &[bool], size: usize, p: usize, c: usize) -> bo
     high - low <= FLAT
 }
 
-/// The median, per channel, of the student's level less the right picture's, over the
-/// pixels the object covers where neither is clamped ([`UNCLAMPED`]) in that channel and the
-/// right picture is flat around (so that a picture moved by a pixel does not bias it; all
-/// such pixels where none is flat), in linear units (0 to 1); 0 for a channel with no such
-/// pixel or a median under [`LEAST`] levels. `picture`, `covered` and `image` are `size` square.
-pub fn emission(picture: &[u8], covered: &[bool], image: &[u8], size: usize) -> [f64; 3] {
-    let mut out = [0.0; 3];
+/// Levels of the right picture below which a pixel is dark: there a tone curve (a gamma,
+/// a colour profile) moves a level by a fraction of what it moves the middle levels by,
+/// while an emission adds the same everywhere.
+const DARK: u8 = 24;
+
+/// The least share of the pixels measured that must be dark for the dark ones to decide
+/// whether a lift is the same everywhere.
+const DARK_SHARE: usize = 50;
+
+/// The median of `differences` (0 when empty).
+fn median(mut differences: Vec<i16>) -> i16 {
+    if differences.is_empty() {
+        return 0;
+    }
+    let middle = differences.len() / 2;
+    *differences.select_nth_unstable(middle).1
+}
+
+/// The median, per channel, of the student's level less the right picture's (levels), over
+/// the pixels the object covers where neither is clamped ([`UNCLAMPED`]) in that channel and
+/// the right picture is flat around (so that a picture moved by a pixel does not bias it;
+/// all such pixels where none is flat); with the same median over the dark ones ([`DARK`])
+/// among them, `None` where fewer than one in [`DARK_SHARE`] is dark.
+pub fn lifts(picture: &[u8], covered: &[bool], image: &[u8], size: usize) -> [(i16, Option<i16>); 3] {
+    let mut out = [(0, None); 3];
     for (c, value) in out.iter_mut().enumerate() {
         let unclamped =
             |&p: &usize| covered[p] && UNCLAMPED.contains(&picture[p * 4 + c]) && UNCLAMPED.contains(&image[p * 4 + c]);
         let inside: Vec<usize> = (0..covered.len()).filter(unclamped).collect();
         let flats: Vec<usize> = inside.iter().copied().filter(|&p| flat(picture, covered, size, p, c)).collect();
         let pixels = if flats.is_empty() { inside } else { flats };
-        let mut differences: Vec<i16> =
-            pixels.iter().map(|&p| i16::from(image[p * 4 + c]) - i16::from(picture[p * 4 + c])).collect();
-        if differences.is_empty() {
-            continue;
-        }
-        let middle = differences.len() / 2;
-        let (_, median, _) = differences.select_nth_unstable(middle);
-        *value = if *median >= LEAST { f64::from(*median) / 255.0 } else { 0.0 };
+        let lift = |p: &usize| i16::from(image[p * 4 + c]) - i16::from(picture[p * 4 + c]);
+        let dark: Vec<i16> = pixels.iter().filter(|&&p| picture[p * 4 + c] < DARK).map(lift).collect();
+        let enough = dark.len() * DARK_SHARE >= pixels.len() && !dark.is_empty();
+        *value = (median(pixels.iter().map(lift).collect()), enough.then(|| median(dark)));
     }
     out
+}
+
+/// The emission the picture shows, per channel, in linear units (0 to 1): the median lift
+/// ([`lifts`]); 0 for a channel whose median is under [`LEAST`] levels, and for every
+/// channel when the dark pixels of a channel are lifted by less than half its median: a
+/// tone curve (a gamma, a colour profile), not a colour added alike everywhere.
+/// `picture`, `covered` and `image` are `size` square.
+pub fn emission(picture: &[u8], covered: &[bool], image: &[u8], size: usize) -> [f64; 3] {
+    let lifts = lifts(picture, covered, image, size);
+    let curved = lifts.iter().any(|&(all, dark)| all >= LEAST && dark.is_some_and(|d| 2 * d < all));
+    if curved {
+        return [0.0; 3];
+    }
+    lifts.map(|(all, _)| if all >= LEAST { f64::from(all) / 255.0 } else { 0.0 })
 }
 
 #[cfg(test)]
@@ -94,5 +122,26 @@ mod tests {
         }
         let covered = vec![true; size * size];
         assert_eq!(emission(&picture, &covered, &image, size)[0], 10.0 / 255.0);
+    }
+
+    #[test]
+    fn a_tone_curve_that_spares_the_dark_pixels_is_no_emission() {
+        // 4 x 4 rows of pixels (no pixel is flat around at this size, so all count): half
+        // dark at 10, half at 120. The dark ones lifted by 1 and the others by 5 is a
+        // gamma's shape; both lifted by 5 is an emission.
+        let size = 4;
+        let level = |p: usize| if p < 8 { 10u8 } else { 120 };
+        let picture: Vec<u8> = (0..16).flat_map(|p| [level(p), level(p), level(p), 255]).collect();
+        let covered = vec![true; 16];
+        let lifted = |dark: u8| -> Vec<u8> {
+            (0..16)
+                .flat_map(|p| {
+                    let l = level(p) + if p < 8 { dark } else { 5 };
+                    [l, l, l, 255]
+                })
+                .collect()
+        };
+        assert_eq!(emission(&picture, &covered, &lifted(1), size), [0.0; 3]);
+        assert_eq!(emission(&picture, &covered, &lifted(5), size), [5.0 / 255.0; 3]);
     }
 }

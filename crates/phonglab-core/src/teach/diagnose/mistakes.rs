@@ -59,10 +59,25 @@ impl PictureMistake {
             ("colours", Arg::Text(at.sides.map(|s| sides::said(&s)).unwrap_or_default())),
         ];
         let number = |v: f64| Arg::Text(crate::locale::decimal(&values::shown(v)));
+        let g = at.given;
+        let levels = g.diffuse.map(|v| format!("{}", (v * 255.0).round()));
+        args.extend([
+            ("shininess-given", number(g.shininess)),
+            ("fraction", number(g.shininess / 128.0)),
+            ("diffuse-given", Arg::Text(colours::triple_said(g.diffuse))),
+            ("diffuse-levels", Arg::Text(format!("({})", levels.join(", ")))),
+        ]);
         let own = at.values.lights.get(at.light).copied().unwrap_or_default();
+        let negligible = at.values.negligible.get(at.light).copied().unwrap_or_default();
         for (k, fitted) in own.into_iter().enumerate() {
             if let Some((picture, scene)) = fitted {
-                args.push((values::ARGS[k].0, number(picture)));
+                let least = Arg::Text(crate::locale::decimal(&values::shown(picture)));
+                let shown = if negligible[k] {
+                    Arg::Text(crate::locale::tr_args("diagnose-value-negligible", &[("least", least)]))
+                } else {
+                    number(picture)
+                };
+                args.push((values::ARGS[k].0, shown));
                 args.push((values::ARGS[k].1, number(scene)));
             }
         }

@@ -19,19 +19,21 @@ mod colours;
 mod drawing;
 mod fit;
 mod mistakes;
+mod outline;
 mod sides;
 mod slips;
 mod values;
 
-pub use change::At;
+pub use change::{At, Given};
 pub use colours::Colours;
 pub use drawing::Drawing;
 pub use mistakes::{MISTAKES, PictureMistake, Scope, offered};
+pub use outline::{OUTLINE_AT, REGION_AT, Region};
 pub use sides::Sides;
 
 use crate::model::error::SceneError;
 use crate::raster::render::Renderer;
-use crate::teach::picture_match::{Match, compare};
+use crate::teach::picture_match::{LOSSY, Match, compare, compare_within};
 
 /// The share of the object's pixels the right picture must explain for "right". Measured
 /// (docs/guide.md): the right picture shifted a pixel with 8-bit noise of ±2 scores 1;
@@ -141,6 +143,54 @@ pub struct Diagnosis {
     pub picture: Vec<u8>,
     /// The renderer that drew it, kept for probing.
     pub renderer: Renderer,
+    /// What the picture's shape shows before its colours, when it is not the scene's
+    /// picture or holds a defect (the verdict is then unexplained).
+    pub shape: Option<Shape>,
+    /// The right picture's match within [`LOSSY`] levels when the verdict "right" rests on
+    /// it: the picture differs from the right one as a lossy saving (JPEG) does.
+    pub lossy: Option<Match>,
+}
+
+/// What a picture's shape shows that no mistake's colours explain.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Shape {
+    /// Only the background: nothing of the object is drawn.
+    NothingDrawn,
+    /// The object's outline is not that of the scene's picture nor of any mistake's: the
+    /// share of the outlines that differs (beyond a pixel's shift).
+    OtherOutline(f64),
+    /// A solid region differs from a picture the right one otherwise explains.
+    Region(Region),
+}
+
+impl Shape {
+    /// Its id in JSON.
+    pub fn id(&self) -> &'static str {
+        match self {
+            Shape::NothingDrawn => "nothing-drawn",
+            Shape::OtherOutline(_) => "outline-differs",
+            Shape::Region(_) => "region-differs",
+        }
+    }
+
+    /// In words, given the right picture's score.
+    pub fn words(&self, right: f64) -> String {
+        use crate::locale::{Arg, decimal, tr_args};
+        let percent = |v: f64| Arg::Text(decimal(&format!("{:.1} %", 100.0 * v)));
+        match *self {
+            Shape::NothingDrawn => tr_args("diagnose-nothing-drawn", &[]),
+            Shape::OtherOutline(share) => tr_args("diagnose-outline-differs", &[("share", percent(share))]),
+            Shape::Region(r) => tr_args(
+                "diagnose-region-differs",
+                &[
+                    ("pixels", Arg::Text(r.pixels.to_string())),
+                    ("x", Arg::Text(r.centre.0.to_string())),
+                    ("y", Arg::Text(r.centre.1.to_string())),
+                    ("score", percent(right)),
+                ],
+            ),
+        }
+    }
 }
 
 /// The most pictures [`diagnose`] draws for `right`: the right one and each mistake it
@@ -176,10 +226,19 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
     let sides = sides::fit(right, &covered, image, size)?;
     let mut tried = Vec::new();
     let mut pictures = Pictures::default();
-    for (mistake, at) in offered(right, At { light: 0, emission, colours, values, sides }) {
+    let outline = outline::mask(image, None, bg, size);
+    let mut outlines = Outlines {
+        apart: outline::apart(&outline::mask(&picture, Some(&covered), bg, size), &outline, size),
+        drawn: true,
+    };
+    for (mistake, at) in offered(right, At { light: 0, emission, colours, values, sides, given: Given::of(right) }) {
         let mut d = right.clone();
         (MISTAKES[mistake].apply)(&mut d, at);
         let (_, wrong, wrong_covered) = d.draw(size)?;
+        // A colour fitted from the picture may draw the object in the background's colour.
+        if !(Tried { mistake, at, matched: None }).fitted() {
+            outlines.add(&outline::mask(&wrong, Some(&wrong_covered), bg, size), &outline, size);
+        }
         // A mistake whose picture the right one explains cannot be seen in this scene.
         let visible = compare(&wrong, &wrong_covered, &picture, bg, size).score < RIGHT_AT;
         let matched = visible.then(|| compare(&wrong, &wrong_covered, image, bg, size));
@@ -190,12 +249,67 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         tried.push(t);
     }
     let mut d = verdict_of(exact, tried, picture, renderer);
+    d.shape = outlines.shape(&outline);
+    if d.shape.is_none() && d.verdict == Verdict::Unexplained {
+        d.lossy = lossy_right(&d, &covered, image, bg, size);
+        if d.lossy.is_some() {
+            d.verdict = Verdict::Right;
+        }
+    }
+    if d.shape.is_none() && d.verdict == Verdict::Right {
+        let region = outline::largest_region(&d.picture, &covered, image, bg, size);
+        d.shape = region.filter(|r| r.pixels >= REGION_AT).map(Shape::Region);
+    }
+    if d.shape.is_some() {
+        (d.verdict, d.causes, d.lossy) = (Verdict::Unexplained, Vec::new(), None);
+    }
     d.same_picture = pictures.same_as_first(&d.causes, bg, size);
     // The image cannot rank causes that draw the same picture: they go first in the
     // table's order, the other causes after them as scored.
     let rest: Vec<Tried> = d.causes.iter().filter(|t| !d.same_picture.contains(t)).copied().collect();
     d.causes = d.same_picture.iter().chain(&rest).copied().collect();
     Ok(d)
+}
+
+/// The right picture's match within [`LOSSY`] levels when it explains `image` as a picture
+/// saved lossily (JPEG) explains its original: at least [`RIGHT_AT`] of the object's pixels
+/// within [`LOSSY`] levels, and the right picture missing by less, on the mean, than every
+/// mistake's picture that the scene shows (noise adds to each alike; a mistake adds its own
+/// difference to the right picture's), with no level lifted or lowered on the median by
+/// more than 1 (lossy saving adds noise, not a bias: a tone curve is not taken for it).
+fn lossy_right(d: &Diagnosis, covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Option<Match> {
+    let loose = compare_within(&d.picture, covered, image, bg, size, LOSSY);
+    let closest = d.tried.iter().filter_map(|t| t.matched).map(|m| m.miss).fold(f64::INFINITY, f64::min);
+    let unbiased = fit::lifts(&d.picture, covered, image, size).iter().all(|(all, _)| all.abs() <= 1);
+    (loose.score >= RIGHT_AT && d.right.miss < closest && unbiased).then_some(loose)
+}
+
+/// How the image's outline agrees with the pictures drawn: the least share apart, and
+/// whether every picture draws something.
+struct Outlines {
+    apart: f64,
+    drawn: bool,
+}
+
+impl Outlines {
+    /// Takes in a mistake's picture's outline `mask` against the image's `image`.
+    fn add(&mut self, mask: &[bool], image: &[bool], size: usize) {
+        self.apart = self.apart.min(outline::apart(mask, image, size));
+        self.drawn &= mask.contains(&true);
+    }
+
+    /// What the image's outline `image` shows when no picture's outline is within
+    /// [`OUTLINE_AT`] of it: nothing drawn where the image has no outline (and every
+    /// picture has one), else another outline.
+    fn shape(&self, image: &[bool]) -> Option<Shape> {
+        if self.apart <= OUTLINE_AT {
+            None
+        } else if self.drawn && !image.contains(&true) {
+            Some(Shape::NothingDrawn)
+        } else {
+            Some(Shape::OtherOutline(self.apart))
+        }
+    }
 }
 
 /// The pictures of the mistakes that may be named, kept to tell which draw the same.
@@ -230,6 +344,24 @@ impl Pictures {
 }
 
 impl Diagnosis {
+    /// The verdict "right" in words when it rests on a lossy saving ([`Diagnosis::lossy`]).
+    pub fn lossy_words(&self) -> Option<String> {
+        use crate::locale::{Arg, decimal, tr_args};
+        use crate::teach::picture_match::TOLERANCE;
+        let percent = |v: f64| Arg::Text(decimal(&format!("{:.1} %", 100.0 * v)));
+        self.lossy.map(|m| {
+            tr_args(
+                "diagnose-verdict-right-lossy",
+                &[
+                    ("score", percent(m.score)),
+                    ("levels", Arg::Text(LOSSY.to_string())),
+                    ("strict", percent(self.right.score)),
+                    ("tolerance", Arg::Text(TOLERANCE.to_string())),
+                ],
+            )
+        })
+    }
+
     /// In words, when the first causes draw the same picture: that the image cannot tell
     /// them apart, and the order they are listed in.
     pub fn same_picture_words(&self) -> Option<String> {
@@ -308,5 +440,15 @@ fn verdict_of(exact: Match, mut tried: Vec<Tried>, picture: Vec<u8>, renderer: R
         Verdict::Wrong
     };
     let causes = if verdict == Verdict::Wrong { causes } else { Vec::new() };
-    Diagnosis { verdict, right: exact, causes, tried, same_picture: Vec::new(), picture, renderer }
+    Diagnosis {
+        verdict,
+        right: exact,
+        causes,
+        tried,
+        same_picture: Vec::new(),
+        picture,
+        renderer,
+        shape: None,
+        lossy: None,
+    }
 }

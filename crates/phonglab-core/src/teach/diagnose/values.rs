@@ -50,6 +50,18 @@ pub struct Values {
     pub lights: [[Option<(f64, f64)>; 5]; MAX_LIGHTS],
     /// The material's shininess (both sides).
     pub shininess: Option<(f64, f64)>,
+    /// Per light and number: the picture shows the light negligible, and the value is the
+    /// least of the grid's that makes it so ("≥ value"), not a value the picture tells.
+    pub negligible: [[bool; 5]; MAX_LIGHTS],
+}
+
+/// An attenuation coefficient so large that nothing of its light reaches the object.
+const NEGLIGIBLE: f64 = 1e6;
+
+/// Is a picture at `distance` from the image as close as one at `best`: within a
+/// hundredth of a level on the mean, or 1 %?
+fn as_close(distance: f64, best: f64) -> bool {
+    distance <= best + 0.01 + 0.01 * best
 }
 
 /// A fitted number as text: three significant digits at most, no trailing zeros.
@@ -113,15 +125,18 @@ fn grid(k: usize) -> Vec<f64> {
 
 /// The number the picture shows for one setting: `set` puts a value in a drawing; the
 /// grid is searched, then refined. `None` unless a value's picture is closer than the
-/// scene's own (`own`) by [`CLOSER`].
+/// scene's own (`own`) by [`CLOSER`]; with `true` when the picture at `huge` (the light
+/// made negligible) is as close, the value then the least of the grid's that is.
+#[allow(clippy::too_many_arguments)]
 fn fit_one(
     right: &Drawing,
     set: &dyn Fn(&mut Drawing, f64),
     grid: &[f64],
     own: f64,
+    huge: Option<f64>,
     image: &[u8],
     size: usize,
-) -> Result<Option<f64>, SceneError> {
+) -> Result<Option<(f64, bool)>, SceneError> {
     let bg = right.background8();
     let measure = |v: f64| -> Result<f64, SceneError> {
         let mut d = right.clone();
@@ -130,6 +145,10 @@ fn fit_one(
         Ok(compare(&picture, &covered, image, bg, size).miss)
     };
     let own_distance = measure(own)?;
+    // Nothing comes closer than a picture that misses by nothing.
+    if own_distance == 0.0 {
+        return Ok(None);
+    }
     let mut tried: Vec<(f64, f64)> = Vec::with_capacity(grid.len());
     for &v in grid {
         tried.push((v, measure(v)?));
@@ -149,7 +168,17 @@ fn fit_one(
         if da < db { high = b } else { low = a }
     }
     let differs = (value - own).abs() > 0.02 * own.abs().max(1e-3);
-    Ok((differs && at < CLOSER * own_distance).then_some(value))
+    if !(differs && at < CLOSER * own_distance) {
+        return Ok(None);
+    }
+    // An attenuation whose picture is the light's absence tells only a least value: the
+    // grid's least whose picture is as close.
+    if let Some(huge) = huge.map(measure).transpose()?.filter(|&h| as_close(h, at)) {
+        let least =
+            tried.iter().filter(|&&(v, d)| v >= own && as_close(d, huge)).map(|&(v, _)| v).fold(value, f64::min);
+        return Ok(Some((least, true)));
+    }
+    Ok(Some((value, false)))
 }
 
 /// The numbers `image` (RGBA8, `size` square) shows for `right`'s lights and material.
@@ -162,7 +191,10 @@ pub fn fit(right: &Drawing, image: &[u8], size: usize) -> Result<Values, SceneEr
             }
             let set = |d: &mut Drawing, v: f64| set_light_value(&mut d.scene.lights[i], k, v);
             let own = light_value(l, k);
-            out.lights[i][k] = fit_one(right, &set, &grid(k), own, image, size)?.map(|v| (v, own));
+            let huge = (k >= 2).then_some(NEGLIGIBLE);
+            let fitted = fit_one(right, &set, &grid(k), own, huge, image, size)?;
+            out.lights[i][k] = fitted.map(|(v, _)| (v, own));
+            out.negligible[i][k] = fitted.is_some_and(|(_, n)| n);
         }
     }
     let shiny = right.scene.material.specular.truncate().max_element() > 0.0;
@@ -174,14 +206,14 @@ pub fn fit(right: &Drawing, image: &[u8], size: usize) -> Result<Values, SceneEr
             }
         };
         let own = right.scene.material.shininess;
-        out.shininess = fit_one(right, &set, &grid(5), own, image, size)?.map(|v| (v, own));
+        out.shininess = fit_one(right, &set, &grid(5), own, None, image, size)?.map(|(v, _)| (v, own));
     }
     Ok(out)
 }
 
 /// The pictures [`fit`] draws for `right`, at most.
 pub fn drawings(right: &Drawing) -> usize {
-    let per = |k: usize| grid(k).len() + 1 + 2 * REFINE;
+    let per = |k: usize| grid(k).len() + 2 + 2 * REFINE;
     let lights: usize =
         right.scene.lights.iter().map(|l| (0..LIGHT_NAMES.len()).filter(|&k| used(l, k)).map(per).sum::<usize>()).sum();
     lights + per(5)

@@ -1,0 +1,183 @@
+//! What the shape of a student's picture says before any colour is compared: nothing of the
+//! object drawn (only the background), an outline that is not the scene's (another object,
+//! camera or scene), or a solid region of the object that differs from the right picture
+//! (a defect no pixel's shift, 8-bit noise or lossy saving makes).
+
+use crate::teach::picture_match::TOLERANCE;
+
+/// Levels (largest channel) by which a pixel must differ from the background to count in
+/// an outline: well past the noise and the ringing of a lossy saving around the edges.
+const OUTLINE_LEVELS: u8 = 12;
+
+/// The share of the outlines' union that may differ (beyond a pixel's shift) for the
+/// image to be of the scene. Measured (docs/guide.md): the right picture of the spotlight
+/// scene shifted a pixel, noised or saved as JPEG of quality 75 and more differs by at most
+/// 0.5 %, in grey 5.3 %; the 40 pictures of a blind set of Mesa's (right and mistaken) by 0;
+/// a sphere for the spotlight's teapot by 30 %, a cylinder by 77 %.
+pub const OUTLINE_AT: f64 = 0.15;
+
+/// Levels (largest channel, past the best neighbour) by which a pixel must differ for a
+/// region: more than a JPEG of quality 90 moves a pixel of a right picture (at most 11).
+const REGION_LEVELS: u8 = 16;
+
+/// The least solid region (pixels differing by 16 levels with their 8 neighbours)
+/// taken as a defect: a square of 6 x 6 pixels painted on the object. Measured
+/// (docs/guide.md): on right pictures shifted a pixel, noised, resized, saved as JPEG of
+/// quality 90 or 95, and Mesa's (8 of a blind set), there is none; JPEG of quality 75 makes
+/// one of 22 (and is not taken as right); a 10 x 10 square painted on the object has 64.
+pub const REGION_AT: usize = 16;
+
+/// A solid region of the object that differs from the right picture.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Region {
+    /// Its pixels: those differing with all 8 neighbours.
+    pub pixels: usize,
+    /// Its centre (x from the left, y from the top).
+    pub centre: (usize, usize),
+}
+
+/// Is pixel `p` of `rgba` more than `levels` from `bg` in a channel?
+fn unlike(rgba: &[u8], p: usize, bg: [u8; 3], levels: u8) -> bool {
+    (0..3).any(|c| rgba[p * 4 + c].abs_diff(bg[c]) > levels)
+}
+
+/// The outline of `rgba` (`size` square): the pixels unlike the background `bg`, within
+/// `covered` when given.
+pub fn mask(rgba: &[u8], covered: Option<&[bool]>, bg: [u8; 3], size: usize) -> Vec<bool> {
+    (0..size * size).map(|p| covered.is_none_or(|c| c[p]) && unlike(rgba, p, bg, OUTLINE_LEVELS)).collect()
+}
+
+/// Is a pixel of `mask` set in the 3 x 3 around pixel `p`?
+fn near(mask: &[bool], size: usize, p: usize) -> bool {
+    let (x, y) = (p % size, p / size);
+    (y.saturating_sub(1)..=(y + 1).min(size - 1))
+        .any(|qy| (x.saturating_sub(1)..=(x + 1).min(size - 1)).any(|qx| mask[qy * size + qx]))
+}
+
+/// The share of the union of outlines `a` and `b` (`size` square) set in one with nothing of
+/// the other within a pixel; 0 when both are empty.
+pub fn apart(a: &[bool], b: &[bool], size: usize) -> f64 {
+    let (mut union, mut alone) = (0usize, 0usize);
+    for p in 0..size * size {
+        if !a[p] && !b[p] {
+            continue;
+        }
+        union += 1;
+        if (a[p] && !near(b, size, p)) || (b[p] && !near(a, size, p)) {
+            alone += 1;
+        }
+    }
+    if union == 0 { 0.0 } else { alone as f64 / union as f64 }
+}
+
+/// The largest channel difference of pixel `p` of `a` from the 3 x 3 around it in `b`, the
+/// best neighbour's.
+fn nearest(a: &[u8], b: &[u8], size: usize, p: usize) -> u8 {
+    let (x, y) = (p % size, p / size);
+    let mut best = u8::MAX;
+    for qy in y.saturating_sub(1)..=(y + 1).min(size - 1) {
+        for qx in x.saturating_sub(1)..=(x + 1).min(size - 1) {
+            let q = qy * size + qx;
+            best = best.min((0..3).map(|c| a[p * 4 + c].abs_diff(b[q * 4 + c])).max().unwrap_or(0));
+        }
+    }
+    best
+}
+
+/// The largest solid region where `image` differs from `picture` (both RGBA8, `size`
+/// square) over the object (`covered` in the picture, or unlike `bg` in the image): the
+/// pixels that differ by more than [`REGION_LEVELS`] from their best neighbour (either way),
+/// kept where all 8 neighbours differ too (so that an edge a pixel out, or a thin line, is
+/// no region), joined 8-connected. `None` when no pixel is solid.
+pub fn largest_region(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Option<Region> {
+    let object = |p: usize| covered[p] || unlike(image, p, bg, TOLERANCE);
+    let differs: Vec<bool> = (0..size * size)
+        .map(|p| object(p) && nearest(image, picture, size, p).max(nearest(picture, image, size, p)) > REGION_LEVELS)
+        .collect();
+    let solid: Vec<bool> = (0..size * size)
+        .map(|p| {
+            let (x, y) = (p % size, p / size);
+            x > 0
+                && y > 0
+                && x + 1 < size
+                && y + 1 < size
+                && (0..9).all(|i| differs[(y + i / 3 - 1) * size + x + i % 3 - 1])
+        })
+        .collect();
+    regions(&solid, size).into_iter().max_by_key(|r| r.pixels)
+}
+
+/// The 8-connected regions of `set` (`size` square).
+fn regions(set: &[bool], size: usize) -> Vec<Region> {
+    let mut seen = vec![false; set.len()];
+    let mut out = Vec::new();
+    for start in 0..set.len() {
+        if !set[start] || seen[start] {
+            continue;
+        }
+        seen[start] = true;
+        let (mut stack, mut pixels, mut sum) = (vec![start], 0usize, (0usize, 0usize));
+        while let Some(p) = stack.pop() {
+            let (x, y) = (p % size, p / size);
+            pixels += 1;
+            sum = (sum.0 + x, sum.1 + y);
+            for qy in y.saturating_sub(1)..=(y + 1).min(size - 1) {
+                for qx in x.saturating_sub(1)..=(x + 1).min(size - 1) {
+                    let q = qy * size + qx;
+                    if set[q] && !seen[q] {
+                        seen[q] = true;
+                        stack.push(q);
+                    }
+                }
+            }
+        }
+        out.push(Region { pixels, centre: (sum.0 / pixels, sum.1 / pixels) });
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn grey(size: usize) -> Vec<u8> {
+        (0..size * size).flat_map(|_| [100, 100, 100, 255]).collect()
+    }
+
+    #[test]
+    fn a_painted_square_is_a_region_and_a_line_or_speckles_are_not() {
+        let size = 40;
+        let picture = grey(size);
+        let covered = vec![true; size * size];
+        let mut image = picture.clone();
+        // A line two pixels wide and scattered pixels: no pixel differs with all neighbours.
+        for x in 0..size {
+            for y in [5, 6] {
+                image[(y * size + x) * 4] = 255;
+            }
+        }
+        for p in (0..size * size).step_by(7) {
+            image[p * 4 + 1] = 0;
+        }
+        assert_eq!(largest_region(&picture, &covered, &image, [0, 0, 0], size), None);
+        // A 10 x 10 square at (20, 20): 8 x 8 solid (its rim has neighbours outside).
+        for y in 20..30 {
+            for x in 20..30 {
+                image[(y * size + x) * 4..(y * size + x) * 4 + 3].copy_from_slice(&[255, 0, 0]);
+            }
+        }
+        let r = largest_region(&picture, &covered, &image, [0, 0, 0], size).expect("a region");
+        assert_eq!(r, Region { pixels: 64, centre: (24, 24) });
+    }
+
+    #[test]
+    fn outlines_a_pixel_apart_agree_and_other_shapes_do_not() {
+        let size = 20;
+        let disc = |cx: f64, r: f64| -> Vec<bool> {
+            (0..size * size).map(|p| ((p % size) as f64 - cx).hypot((p / size) as f64 - 10.0) < r).collect()
+        };
+        assert_eq!(apart(&disc(10.0, 6.0), &disc(11.0, 6.0), size), 0.0);
+        assert!(apart(&disc(10.0, 6.0), &disc(10.0, 3.0), size) > 0.5);
+        assert_eq!(apart(&vec![false; size * size], &vec![false; size * size], size), 0.0);
+    }
+}
