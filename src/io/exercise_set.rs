@@ -422,8 +422,14 @@ pub fn check_budget(a: &Request) -> Result<()> {
 /// ([`super::file_set::foreign_file`]: a key the teacher edited since), which it keeps.
 pub fn refuse_foreign(dir: &std::path::Path, set: &FileSet) -> Result<()> {
     super::set_journal::check_records(dir)?;
+    use super::file_set::Foreign;
     match super::file_set::foreign_file(dir, set) {
-        Some(path) => anyhow::bail!(t!("set-not-ours", path = super::reasons::shown(&path))),
+        Some(Foreign::NotOurs(path)) => anyhow::bail!(t!("set-not-ours", path = super::reasons::shown(&path))),
+        Some(Foreign::Unreadable(path, e)) => anyhow::bail!(t!(
+            "read-cannot",
+            path = super::reasons::shown(&path),
+            reason = phonglab_core::files::reasons::io_reason(&e)
+        )),
         None => Ok(()),
     }
 }

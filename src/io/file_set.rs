@@ -130,7 +130,8 @@ impl HeldFolder {
 pub fn hold_folder(dir: &Path) -> Result<HeldFolder, WriteError> {
     // A set is written into a real folder only: one planted as a link (an oF project's
     // `src` pointing elsewhere) would send the set, and the old set's removal, outside it.
-    if std::fs::symlink_metadata(dir).is_ok_and(|m| m.file_type().is_symlink()) {
+    // (Windows: a folder reached under another name than its own, `platform::links`.)
+    if crate::platform::links::reached_through_link(dir) {
         let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-is-a-link"));
         return Err(WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED));
     }
@@ -172,19 +173,46 @@ pub fn write_set_held(
 /// wrote, [`super::set_journal::WRITTEN`]; see [`super::set_journal::written_as_is`]) nor
 /// the new one's: a key the teacher edited, a file of theirs with a set's name. A set
 /// replaces only its own earlier files, so its writer refuses before anything is written.
-/// Each file is read without following a link (a link is refused by [`write_set`]).
-pub fn foreign_file(dir: &Path, set: &FileSet) -> Option<std::path::PathBuf> {
+/// Each file is read without following a link (a link is refused by [`write_set`]); one
+/// that cannot be read is said with why ([`Foreign::Unreadable`]: another program holds
+/// it open, on Windows), never taken for a file phonglab did not write.
+pub fn foreign_file(dir: &Path, set: &FileSet) -> Option<Foreign> {
     use super::set_journal::{hash_bytes, written_as_is};
     let written = super::set_journal::written_list(dir);
     set.files.iter().find_map(|(name, bytes)| {
         let path = dir.join(name);
-        if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+        if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file())
+            || crate::platform::links::reached_through_link(&path)
+        {
             return None;
         }
-        let Ok(now) = entry_of(dir, name) else { return Some(path) };
+        let now = match entry_of(dir, name) {
+            Ok(now) => now,
+            Err(e) => return Some(Foreign::Unreadable(path, held_open(e))),
+        };
         let same = now.size == bytes.len() as u64 && now.hash == hash_bytes(bytes);
-        (!written_as_is(&written, &now) && !same).then_some(path)
+        (!written_as_is(&written, &now) && !same).then_some(Foreign::NotOurs(path))
     })
+}
+
+/// A file of a set in the way of a new one ([`foreign_file`]).
+#[derive(Debug)]
+pub enum Foreign {
+    /// Neither what phonglab wrote there nor the new set's bytes.
+    NotOurs(std::path::PathBuf),
+    /// Not read, for this reason.
+    Unreadable(std::path::PathBuf, io::Error),
+}
+
+/// `e`, as [`io::ErrorKind::ResourceBusy`] where it is Windows' refusal of a file another
+/// program holds open without sharing it (`ERROR_SHARING_VIOLATION`, `ERROR_LOCK_VIOLATION`),
+/// so that it is said as the replace of a single file says it.
+fn held_open(e: io::Error) -> io::Error {
+    if cfg!(windows) && matches!(e.raw_os_error(), Some(32 | 33)) {
+        io::Error::new(io::ErrorKind::ResourceBusy, e)
+    } else {
+        e
+    }
 }
 
 /// Makes this writer's staging folder in `dir`: a name nothing has, made by `mkdir`, which
@@ -212,7 +240,9 @@ fn refuse_unwritable_names(dir: &Path, set: &FileSet) -> Result<(), WriteError> 
             let e = io::Error::new(io::ErrorKind::InvalidFilename, "not a plain file name");
             return Err(WriteError::new(&target, "write-step-name", e, UNTOUCHED));
         }
-        if std::fs::symlink_metadata(&target).is_ok_and(|m| !m.is_file()) {
+        if std::fs::symlink_metadata(&target).is_ok_and(|m| !m.is_file())
+            || crate::platform::links::reached_through_link(&target)
+        {
             let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("write-not-a-regular-file"));
             return Err(WriteError::new(&target, "write-step-create", e, UNTOUCHED));
         }
@@ -282,7 +312,8 @@ fn old_set(dir: &Path, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Result<
     let mut old = Vec::new();
     for entry in entries.flatten() {
         let Ok(name) = entry.file_name().into_string() else { continue };
-        let is_file = entry.file_type().is_ok_and(|t| t.is_file());
+        let is_file = entry.file_type().is_ok_and(|t| t.is_file())
+            && !crate::platform::links::reached_through_link(&dir.join(&name));
         if is_file && plain_name(&name) && (new.iter().any(|e| e.name == name) || ours(&name)) {
             old.push(
                 entry_of(dir, &name).map_err(|e| WriteError::new(&dir.join(&name), set_steps::LIST, e, UNTOUCHED))?,
@@ -529,5 +560,23 @@ mod tests {
             assert_eq!(listing(&dir), before);
             assert_eq!(std::fs::read(outside.join("thesis.txt")).unwrap(), b"mine");
         }
+    }
+
+    /// Issue 59 F7: a file of the set that another program holds open without sharing it
+    /// (share mode 0) is said so, as a single file's replace says it, and not as a file
+    /// phonglab did not write (untrue); nothing is written.
+    #[test]
+    #[cfg(windows)]
+    fn a_sets_file_held_open_elsewhere_is_said_so_and_nothing_is_written() {
+        use std::os::windows::fs::OpenOptionsExt;
+        let dir = temp_dir("set-held");
+        old_set(&dir);
+        let before = listing(&dir);
+        let held = std::fs::File::options().read(true).share_mode(0).open(dir.join("a.md")).unwrap();
+        let e = crate::io::exercise_set::refuse_foreign(&dir, &new_set()).unwrap_err().to_string();
+        assert!(e.contains("a.md") && e.contains("another program has it open"), "{e}");
+        assert!(!e.contains("not written by phonglab"), "{e}");
+        drop(held);
+        assert_eq!(listing(&dir), before);
     }
 }

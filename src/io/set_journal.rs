@@ -223,6 +223,10 @@ enum Record {
 /// The bytes of one of phonglab's records at `path`: opened without following a link,
 /// checked through the open handle to be a regular file of at most 1 MiB, and read whole.
 fn read_record(path: &Path) -> Result<Vec<u8>, Record> {
+    // Windows (Wine): a link may open as the file it points to, so it is asked first.
+    if crate::platform::links::reached_through_link(path) {
+        return Err(Record::NotOne);
+    }
     let file = match crate::platform::os::open_no_follow(path) {
         Ok(f) => f,
         Err(e) if e.kind() == io::ErrorKind::NotFound => return Err(Record::Missing),

@@ -58,6 +58,7 @@ pub fn zip_stored(files: &[(String, Vec<u8>)]) -> Vec<u8> {
 
 #[cfg(test)]
 mod tests {
+    #[cfg(unix)]
     use super::*;
 
     #[test]

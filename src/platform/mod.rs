@@ -10,11 +10,13 @@
 //! | [`threads`] | work on a thread of its own, rayon's pool | work on the calling thread (no cross-origin isolation needed) |
 //! | [`clock`] | `std::time::Instant` | `performance.now()`, through `web-time` |
 //! | [`language`] | `LC_ALL`, `LC_MESSAGES`, `LANG` | `navigator.language` |
+//! | [`links`] | whether a file is reached through a link (Windows: a reparse point, or a final path under another name) | (not used) |
 //! | [`page`] | no page: links open the published site | the page's own address, a link's base |
 
 pub mod clock;
 pub mod files;
 pub mod language;
+pub mod links;
 pub mod os;
 pub mod page;
 pub mod storage;

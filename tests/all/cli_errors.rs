@@ -5,6 +5,7 @@
 
 use crate::common;
 
+#[cfg(unix)]
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
@@ -17,6 +18,7 @@ fn out_dir(name: &str) -> PathBuf {
 }
 
 /// Every message id of both catalogues, in every language.
+#[cfg(unix)] // its one test plants links
 fn catalogue_ids() -> BTreeSet<String> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut ids = BTreeSet::new();
@@ -31,6 +33,7 @@ fn catalogue_ids() -> BTreeSet<String> {
 
 /// The kebab-case words of `text` that are message ids (a word with a `-` inside, not an
 /// option's `--name` nor a value the command line takes, such as `local-viewer`).
+#[cfg(unix)]
 fn bare_ids(text: &str, ids: &BTreeSet<String>) -> Vec<String> {
     let values: Vec<&str> = phonglab_core::exercise::Effect::ALL.iter().map(|e| e.name()).collect();
     text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))

@@ -39,6 +39,7 @@ mod pyopengl_mesa;
 mod render_vs_mesa;
 mod safe_to_share;
 mod scenes;
+mod set_links;
 mod set_records;
 mod shader;
 mod shader_gpu;

@@ -48,6 +48,7 @@ fn names(dir: &Path) -> Vec<String> {
 }
 
 /// Refused, with the list named and said to be never followed, and nothing written.
+#[cfg(unix)] // its tests plant links
 fn refused_for_the_list(o: &std::process::Output, dir: &Path) {
     let e = stderr(o);
     assert_eq!(o.status.code(), Some(2), "{e}");

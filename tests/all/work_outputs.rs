@@ -8,7 +8,9 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::common::{self, phonglab, phonglab_in};
+#[cfg(unix)] // its tests of links
+use crate::common;
+use crate::common::{phonglab, phonglab_in};
 
 /// A folder of the test's own, removed when it ends.
 struct Scratch(PathBuf);

@@ -413,6 +413,7 @@ mod tests {
 
     /// Opens the session in `dir` on a thread of its own: a start that hangs fails the test
     /// instead of the test run.
+    #[cfg(unix)] // its tests are Unix's
     fn open_within_seconds(dir: &Path) -> (Session, Vec<String>) {
         let (tx, rx) = std::sync::mpsc::channel();
         let d = dir.to_path_buf();

@@ -505,7 +505,9 @@ mod between_passes {
         static ACTION: RefCell<Option<Box<dyn FnMut()>>> = RefCell::new(None);
     }
 
-    /// Runs `f` at the start of each pass while `body` runs.
+    /// Runs `f` at the start of each pass while `body` runs (its one test swaps in a FIFO:
+    /// Unix only).
+    #[cfg(unix)]
     pub fn with<R>(f: impl FnMut() + 'static, body: impl FnOnce() -> R) -> R {
         ACTION.with(|a| *a.borrow_mut() = Some(Box::new(f)));
         let r = body();

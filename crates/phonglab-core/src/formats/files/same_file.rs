@@ -56,8 +56,21 @@ fn output_id(path: &Path) -> Option<FileId> {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
     };
-    Some(FileId::Named(std::fs::canonicalize(folder).ok()?, target.file_name()?.to_os_string()))
+    Some(FileId::Named(std::fs::canonicalize(folder).ok()?, name_on_disk(target.file_name()?)))
 }
+
+/// A file name as the disk tells names apart: Windows and macOS (case-insensitive by
+/// default) take `r.md` and `R.MD` for one file, so the name is compared in lower case
+/// there; elsewhere as it is.
+fn name_on_disk(name: &std::ffi::OsStr) -> std::ffi::OsString {
+    match name.to_str() {
+        Some(s) if CASE_INSENSITIVE => s.to_lowercase().into(),
+        _ => name.to_os_string(),
+    }
+}
+
+/// Does the system's disk (by default) take names that differ only in case for one file?
+const CASE_INSENSITIVE: bool = cfg!(any(windows, target_os = "macos"));
 
 /// What an input is, for the message that refuses an output onto it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -155,6 +168,25 @@ mod tests {
         // Two outputs that will be one file.
         let again = dir.join(".").join("nova.png");
         assert!(refuse_onto(&[&dir.join("nova.png"), &again], &[]).is_err());
+        std::fs::remove_dir_all(dir.parent().unwrap()).unwrap();
+    }
+
+    /// Issue 59 F6: on Windows (and macOS) a report `r.md` and marks `R.MD`, neither there
+    /// yet, are one file: refused as the other output (before, the marks were written over
+    /// the report); on Linux they are two files.
+    #[test]
+    fn two_outputs_differing_only_in_case_are_one_file_where_the_disk_ignores_case() {
+        let dir = std::env::temp_dir().join(format!("phonglab-same-case {}", std::process::id())).join("Relatório");
+        std::fs::create_dir_all(&dir).unwrap();
+        let (report, marks) = (dir.join("relatório.md"), dir.join("RELATÓRIO.MD"));
+        let e = refuse_onto(&[&report, &marks], &[]);
+        if CASE_INSENSITIVE {
+            let e = e.unwrap_err();
+            assert!(e.contains("the other output") && e.contains(".MD"), "{e}");
+        } else {
+            assert_eq!(e, Ok(()));
+        }
+        assert_eq!(refuse_onto(&[&report, &dir.join("relatório.csv")], &[]), Ok(()), "two names, two files");
         std::fs::remove_dir_all(dir.parent().unwrap()).unwrap();
     }
 }

@@ -1,0 +1,130 @@
+//! Whether a file or folder is reached through a link at its own name: what a set's writer
+//! asks of its folder, its files and its records before it writes, moves or deletes one.
+//!
+//! Unix: the entry is a symbolic link (`lstat`). Windows: the entry, opened itself
+//! (`FILE_FLAG_OPEN_REPARSE_POINT | FILE_FLAG_BACKUP_SEMANTICS`), is a reparse point (a
+//! symbolic link, a junction), or the handle's final path (`GetFinalPathNameByHandleW`) is
+//! not its folder's final path joined with the name asked for (compared without case): the
+//! file was reached under another name than its own. Wine shows a Unix symbolic link as a
+//! plain file with no reparse point, and a handle opened through it is the target's, so
+//! only the second test sees it there; on Windows it also catches a link that a filter
+//! driver hides.
+
+use std::path::Path;
+
+/// Is `path` a link (or reached through one at its last component)? `false` where nothing
+/// is there or it cannot be opened to ask.
+pub fn reached_through_link(path: &Path) -> bool {
+    #[cfg(windows)]
+    {
+        windows::reached_through_link(path)
+    }
+    #[cfg(not(windows))]
+    {
+        std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink())
+    }
+}
+
+#[cfg(windows)]
+mod windows {
+    use std::fs::File;
+    use std::os::windows::ffi::OsStringExt;
+    use std::os::windows::fs::{MetadataExt, OpenOptionsExt};
+    use std::os::windows::io::AsRawHandle;
+    use std::path::{Path, PathBuf};
+
+    /// `FILE_FLAG_BACKUP_SEMANTICS` (a folder opens).
+    const FOLDER: u32 = 0x0200_0000;
+    /// `FILE_FLAG_OPEN_REPARSE_POINT` (a link is opened itself).
+    const ITSELF: u32 = 0x0020_0000;
+    /// `FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE`.
+    const SHARE_ALL: u32 = 7;
+    /// `FILE_ATTRIBUTE_REPARSE_POINT`.
+    const REPARSE_POINT: u32 = 0x400;
+
+    pub fn reached_through_link(path: &Path) -> bool {
+        let Ok(path) = std::path::absolute(path) else { return false };
+        let (Some(parent), Some(name)) = (path.parent(), path.file_name()) else { return false };
+        let open =
+            |p: &Path, flags: u32| File::options().access_mode(0).share_mode(SHARE_ALL).custom_flags(flags).open(p);
+        let Ok(file) = open(&path, FOLDER | ITSELF) else { return false };
+        if file.metadata().is_ok_and(|m| m.file_attributes() & REPARSE_POINT != 0) {
+            return true;
+        }
+        let Ok(folder) = open(parent, FOLDER) else { return false };
+        match (final_path(&file), final_path(&folder)) {
+            (Some(at), Some(folder)) => !same_name(&at, &folder.join(name)),
+            _ => false,
+        }
+    }
+
+    /// The path the system gives the open `file` (links and junctions resolved).
+    fn final_path(file: &File) -> Option<PathBuf> {
+        use windows_sys::Win32::Storage::FileSystem::GetFinalPathNameByHandleW;
+        let mut buf = vec![0u16; 1024];
+        loop {
+            let len = u32::try_from(buf.len()).ok()?;
+            // SAFETY: the handle is open for the call; `buf` holds `len` u16s.
+            let n = unsafe { GetFinalPathNameByHandleW(file.as_raw_handle(), buf.as_mut_ptr(), len, 0) };
+            let n = n as usize;
+            if n == 0 {
+                return None;
+            }
+            if n < buf.len() {
+                buf.truncate(n);
+                return Some(PathBuf::from(std::ffi::OsString::from_wide(&buf)));
+            }
+            buf.resize(n + 1, 0);
+        }
+    }
+
+    /// Do `a` and `b` name the same place, without case and the `\\?\` prefix?
+    fn same_name(a: &Path, b: &Path) -> bool {
+        let plain = |p: &Path| {
+            let s = p.to_string_lossy().replace('/', "\\").to_lowercase();
+            s.trim_start_matches(r"\\?\").trim_end_matches('\\').to_string()
+        };
+        plain(a) == plain(b)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::reached_through_link;
+    use std::path::PathBuf;
+
+    /// The links of `scripts/wine/plant-links.sh`: planted here on Unix; under Wine the
+    /// folder `scripts/test-windows` planted on the Linux side (`PHONGLAB_PLANTED_LINKS`).
+    /// `None` on a Windows without it (no link can be made there without a privilege).
+    pub fn planted(name: &str) -> Option<PathBuf> {
+        if let Some(d) = std::env::var_os("PHONGLAB_PLANTED_LINKS") {
+            return Some(PathBuf::from(d));
+        }
+        if cfg!(windows) {
+            eprintln!("no PHONGLAB_PLANTED_LINKS (scripts/test-windows plants them): nothing to test");
+            return None;
+        }
+        let d = std::env::temp_dir().join(format!("phonglab-links {name} {}", std::process::id()));
+        let script = concat!(env!("CARGO_MANIFEST_DIR"), "/scripts/wine/plant-links.sh");
+        let ok = std::process::Command::new("bash").arg(script).arg(&d).status().is_ok_and(|s| s.success());
+        assert!(ok, "the links are planted");
+        Some(d)
+    }
+
+    /// Each planted link is seen as one (on Wine a Unix link is a plain file with no reparse
+    /// point: only its final path tells it), and a file, a folder and a missing name are not.
+    #[test]
+    fn links_to_files_and_folders_are_seen_and_plain_ones_are_not() {
+        let Some(d) = planted("seen") else { return };
+        for link in ["f1/p/src/ofApp.h", "f2/ew/exercise-01.md", "f3/lw", "f4/ofw/src", "f5/ew/.phonglab-set.written"] {
+            assert!(reached_through_link(&d.join(link)), "{link} is a link");
+        }
+        for plain in ["plain/file.txt", "plain/folder", "plain", "f3/v3", "f3/v3/notes.txt", "plain/missing"] {
+            assert!(!reached_through_link(&d.join(plain)), "{plain} is not a link");
+        }
+        // A file reached through a linked folder above it is under its own name in the
+        // folder it is in (the folder is the link); a path with a dot is the same path.
+        assert!(!reached_through_link(&d.join("f3/lw/notes.txt")), "a file in a linked folder is itself");
+        assert!(reached_through_link(&d.join("f3/./lw")), "a path with a dot");
+    }
+}
