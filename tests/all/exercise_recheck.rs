@@ -36,6 +36,7 @@ fn needed(e: &str) -> u64 {
 /// Starts its first argument with the rest (its output to /dev/null), waits for it, and
 /// prints the child's peak resident set (`ru_maxrss`, KiB) and its own (`VmHWM`, KiB): run from a fresh, small
 /// process, so that the child's number is its own (see [`peak_of`]).
+#[cfg(target_os = "linux")]
 const PEAK_PY: &str = r#"
 import os, sys
 quiet = [(os.POSIX_SPAWN_OPEN, 1, os.devnull, os.O_WRONLY, 0)]
