@@ -150,7 +150,7 @@ pub fn markdown_tables(csv: &str) -> Result<String> {
             out.push_str("|---|---|---|---|---|---|\n");
         }
         out.push_str(&format!(
-            "| {} | {} | {:.2} | {:.2} | {:.1} | {:.1} % |\n",
+            "| {} | {} | {:.2} | {:.2} | {:.1} | {:.1}\u{a0}% |\n",
             f[variant],
             f[tris],
             num(ms)?,

@@ -63,9 +63,15 @@ fn right_drawing(a: &DiagnoseArgs, outputs: &[&Path]) -> Result<Drawing> {
     Ok(drawing)
 }
 
+/// Whether `path`'s name ends in `.png` (any case): a difference image under another name
+/// (`.ipynb`, `.py`, `.txt`) in a class's folder would be read by `check` as a submission.
+fn named_png(path: &Path) -> bool {
+    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"))
+}
+
 /// A share of pixels as a percentage in the user's decimal mark.
 fn percent(score: f64) -> String {
-    crate::locale::decimal(&format!("{:.1} %", 100.0 * score))
+    crate::locale::percent(score, 1)
 }
 
 fn score_of(t: &Tried) -> f64 {
@@ -127,6 +133,9 @@ fn bytes_at(rgba: &[u8], size: usize, (x, y): (usize, usize)) -> [u8; 3] {
 /// right, 1 wrong or unexplained; [`super::judged`]).
 pub fn run(a: &DiagnoseArgs) -> Result<bool> {
     use crate::io::same_file::Input;
+    if let Some(diff) = a.diff.as_deref().filter(|d| !named_png(d)) {
+        anyhow::bail!(t!("diagnose-diff-not-png", path = crate::io::reasons::shown(diff)));
+    }
     let outputs: Vec<&Path> = a.diff.iter().map(PathBuf::as_path).collect();
     let inputs = [(a.scene.as_path(), Input::Scene), (a.image.as_path(), Input::Any)];
     crate::io::same_file::refuse_onto(&outputs, &inputs).map_err(anyhow::Error::msg)?;
@@ -227,8 +236,12 @@ fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>)
         "same_picture": d.same_picture.iter().map(cause).collect::<Vec<_>>(),
         "right_score": d.right.score,
         "lossy_score": d.lossy.map(|m| m.score),
-        "footprint": d.footprint.map(|f| json!({
+        "footprint": d.footprint.as_ref().map(|f| json!({
             "pixels": f.pixels, "x": f.centre.0, "y": f.centre.1, "right": f.right, "mistake": f.mistake,
+            "most": f.most,
+            "groups": f.groups.iter().map(|g| json!({
+                "pixels": g.pixels, "from": [g.from.0, g.from.1], "to": [g.to.0, g.to.1],
+            })).collect::<Vec<_>>(),
         })),
         "pixels": d.right.pixels,
         "size": size,

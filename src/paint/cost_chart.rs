@@ -120,7 +120,7 @@ pub fn cost_table_ui(ui: &mut Ui, study: &Study) {
             ui.monospace(locale::decimal(&format!("{:.2}", p.ms)));
             ui.monospace(locale::decimal(&format!("{:.2}", p.error.mean)));
             ui.monospace(locale::decimal(&format!("{:.1}", p.error.max)));
-            ui.monospace(locale::decimal(&format!("{:.1} %", 100.0 * p.error.share_over_one)));
+            ui.monospace(locale::percent(p.error.share_over_one, 1));
             ui.end_row();
         }
     });

@@ -582,8 +582,18 @@ fn a_spot_exponent_a_little_off_or_lines_drawn_over_the_teapot_are_not_right() {
     let f = &v["footprint"];
     let (right, mistake) = (f["right"].as_f64().unwrap(), f["mistake"].as_f64().unwrap());
     assert!(f["pixels"].as_u64().unwrap() >= 64 && mistake <= 0.5 * right, "{f:#}");
+    // Each group with its box, the largest first: the handle's on the left, the spout's on
+    // the right; x and y are the largest group's centre, not a mean of the two.
+    let groups = f["groups"].as_array().unwrap();
+    assert!(groups.len() >= 2, "{f:#}");
+    let sum: u64 = groups.iter().map(|g| g["pixels"].as_u64().unwrap()).sum();
+    assert_eq!(Some(sum), f["pixels"].as_u64(), "{f:#}");
+    assert!(groups[0]["to"][0].as_u64().unwrap() < 200 && groups[1]["from"][0].as_u64().unwrap() > 300, "{f:#}");
+    assert!(f["x"].as_u64().unwrap() < 200, "{f:#}");
     let (said, _) = diagnose_at_512(&scene, &image, &["--lang", "pt-PT"]);
-    assert!(said.contains("Este erro altera apenas") && said.contains("parece ser 10"), "{said}");
+    let first = format!("{} de ({}, {}) a", groups[0]["pixels"], groups[0]["from"][0], groups[0]["from"][1]);
+    assert!(said.contains("Este erro altera a imagem certa em") && said.contains(&first), "{said}");
+    assert!(said.contains("parece ser 10"), "{said}");
     // The right picture with white lines of a pixel drawn across the teapot.
     let right = dir.join("right.png");
     let o = phonglab(&["render", "--scene", scene.to_str().unwrap(), "-o", right.to_str().unwrap()]);
@@ -604,4 +614,46 @@ fn a_spot_exponent_a_little_off_or_lines_drawn_over_the_teapot_are_not_right() {
     assert_eq!((marks["from"][1].as_u64(), marks["to"][1].as_u64()), (Some(270), Some(270)), "{marks:#}");
     let (said, _) = diagnose_at_512(&scene, &lined, &["--lang", "en"]);
     assert!(said.contains("Thin marks of") && said.contains(", 270) to ("), "{said}");
+}
+
+#[test]
+fn a_difference_image_named_as_a_submission_is_refused_and_nothing_is_written() {
+    // `check` reads .ipynb, .py and .txt as submissions: a PNG written under such a name in
+    // a class's folder would be a phantom student's.
+    let dir = scratch("diff-name");
+    let scene = write(&dir, "spotlight.toml", &spotlight());
+    let image = dir.join("right.png");
+    let o = phonglab(&["render", "--scene", scene.to_str().unwrap(), "-o", image.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for name in ["ana.ipynb", "ana.py", "ana.txt", "ana", "ana.png.txt"] {
+        let diff = dir.join(name);
+        let o = phonglab(&[
+            "diagnose",
+            "--lang",
+            "en",
+            "--scene",
+            scene.to_str().unwrap(),
+            "--image",
+            image.to_str().unwrap(),
+            "--diff",
+            diff.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{name}: {err}");
+        assert!(err.contains("must end in .png") && err.contains(name), "{name}: {err}");
+        assert!(!diff.exists(), "{name} written");
+    }
+    // Any case of .png is a PNG's name.
+    let diff = dir.join("ana.PNG");
+    let o = phonglab(&[
+        "diagnose",
+        "--scene",
+        scene.to_str().unwrap(),
+        "--image",
+        image.to_str().unwrap(),
+        "--diff",
+        diff.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(diff.exists());
 }

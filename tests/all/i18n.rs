@@ -430,3 +430,31 @@ fn european_portuguese_never_says_tu_where_it_says_voce() {
         assert!(found.is_empty(), "{path}: \"tu\" where the catalogue says \"você\":\n{}", found.join("\n"));
     }
 }
+
+#[test]
+fn a_percent_sign_is_never_left_alone_at_the_start_of_a_line() {
+    // A share wrapped at a projector's 1024x600 left "%." alone on a line: every `%` after a
+    // number or a placeable is bound to it by a no-break space, in the catalogues and in
+    // the code's own formats, and the one helper writes it so.
+    let loose = |text: &str| {
+        text.lines()
+            .filter(|l| !l.trim_start().starts_with('#') && !l.trim_start().starts_with("//"))
+            .filter(|l| l.contains(" %") || l.contains("} %") || l.contains("}%"))
+            .map(str::to_string)
+            .collect::<Vec<_>>()
+    };
+    for source in APP_SOURCES.iter().chain(CORE_SOURCES.iter()) {
+        assert_eq!(loose(source), Vec::<String>::new());
+    }
+    let formats: Vec<String> = app_sources()
+        .iter()
+        .chain(core_sources().iter())
+        .flat_map(|s| {
+            s.lines().filter(|l| l.contains("} %\"") || l.contains("} %\\n")).map(str::to_string).collect::<Vec<_>>()
+        })
+        .collect();
+    assert_eq!(formats, Vec::<String>::new());
+    phonglab::locale::with_locale(phonglab::locale::Locale::of(Lang::PtPt), || {
+        assert_eq!(phonglab::locale::percent(0.9937, 1), "99,4\u{a0}%");
+    });
+}

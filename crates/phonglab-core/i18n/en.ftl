@@ -456,7 +456,7 @@ exam-name = exam exercise { $number } (seed { $seed })
 exam-material = chosen for this exam
 exam-no-calculator = No calculator.
 exam-by-hand = Every value works out by hand and exactly: carry it exact into the next step, and round only the value you write down.
-moodle-digits-quiz = Each field asks for the significant digits in brackets; an answer within { $percent } % of the value (or { $near_zero } near 0) is right.
+moodle-digits-quiz = Each field asks for the significant digits in brackets; an answer within { $percent } % of the value (or { $near_zero } near 0) is right.
 moodle-digits-exam = Give each value rounded to { $digits } significant digits.
 moodle-carry = Carry each value into the next step as you computed it, not rounded: round only what you type in a field.
 moodle-decimal-mark = Numbers may be typed with a decimal comma or a decimal point: Moodle accepts both.
@@ -752,7 +752,10 @@ diagnose-nothing-drawn = Nothing of the object is drawn: the picture is only the
 diagnose-outline-differs = The object's outline is not this scene's ({ $share } of it differs, beyond a pixel): is this the picture of this scene? Check --scene, and the program's object and camera.
 diagnose-region-differs = A region of { $pixels } pixels around ({ $x }, { $y }) differs from the right picture, although the right picture explains { $score } of the object's pixels: something is drawn over the object there, or that part of it is wrong.
 diagnose-marks-differ = Thin marks of { $pixels } pixels, from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 }), differ from the right picture, although the right picture explains { $score } of the object's pixels: lines or marks are drawn over the object there.
-diagnose-footprint = This mistake changes only { $pixels } pixels of the right picture, around ({ $x }, { $y }), too few for the share to show it; there your picture is the mistake's: it is { $mistake } levels from the mistake's picture on average, and { $right } from the right one.
+diagnose-footprint = This mistake changes the right picture by at most { $most } levels; by more than { $tolerance } levels, past a pixel's shift, only in { $pixels } pixels: { $groups }. That is too few for the share to show it; there your picture is the mistake's: it is { $mistake } levels from the mistake's picture on average, and { $right } from the right one.
+diagnose-footprint-group = { $count } from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 })
+diagnose-footprint-rest = { $count } elsewhere
+diagnose-footprint-and = and
 diagnose-verdict-right-lossy = Right, as saved lossily (JPEG): the right picture explains { $score } of the object's pixels within { $levels } levels ({ $strict } within { $tolerance }), and its differences are noise, not a change of the picture.
 
 ## phonglab check: a student's work checked

@@ -459,7 +459,7 @@ exam-name = exercício de prova { $number } (semente { $seed })
 exam-material = escolhido para esta prova
 exam-no-calculator = Sem calculadora.
 exam-by-hand = Todos os valores se calculam à mão e de forma exata: use cada um exato no passo seguinte e arredonde só o valor que você escreve.
-moodle-digits-quiz = Cada campo pede os algarismos significativos entre parênteses; uma resposta a menos de { $percent } % do valor (ou { $near_zero } perto de 0) está certa.
+moodle-digits-quiz = Cada campo pede os algarismos significativos entre parênteses; uma resposta a menos de { $percent } % do valor (ou { $near_zero } perto de 0) está certa.
 moodle-digits-exam = Informe cada valor arredondado para { $digits } algarismos significativos.
 moodle-carry = Use cada valor no passo seguinte do jeito que você calculou, sem arredondar: arredonde só o que você digita num campo.
 moodle-decimal-mark = Os números podem ser digitados com vírgula ou com ponto decimal: o Moodle aceita os dois.
@@ -756,7 +756,10 @@ diagnose-nothing-drawn = Nada do objeto está desenhado: a imagem é só o fundo
 diagnose-outline-differs = O contorno do objeto não é o desta cena ({ $share } dele difere, além de um pixel): esta é a imagem desta cena? Verifique --scene, e o objeto e a câmera do programa.
 diagnose-region-differs = Uma região de { $pixels } pixels em torno de ({ $x }, { $y }) difere da imagem certa, embora a imagem certa explique { $score } dos pixels do objeto: há algo desenhado sobre o objeto ali, ou essa parte dele está errada.
 diagnose-marks-differ = Marcas finas de { $pixels } pixels, de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }), diferem da imagem certa, embora a imagem certa explique { $score } dos pixels do objeto: há linhas ou marcas desenhadas sobre o objeto ali.
-diagnose-footprint = Esse erro muda só { $pixels } pixels da imagem certa, em torno de ({ $x }, { $y }), poucos demais para a porcentagem mostrá-lo; ali a sua imagem é a do erro: ela está, em média, a { $mistake } níveis da imagem com o erro e a { $right } da imagem certa.
+diagnose-footprint = Esse erro muda a imagem certa em no máximo { $most } níveis; em mais de { $tolerance } níveis, além do deslocamento de um pixel, só em { $pixels } pixels: { $groups }. São poucos demais para a porcentagem mostrá-lo; ali a sua imagem é a do erro: ela está, em média, a { $mistake } níveis da imagem com o erro e a { $right } da imagem certa.
+diagnose-footprint-group = { $count } de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 })
+diagnose-footprint-rest = { $count } em outros lugares
+diagnose-footprint-and = e
 diagnose-verdict-right-lossy = Certa, do jeito que foi salva com perdas (JPEG): a imagem certa explica { $score } dos pixels do objeto a menos de { $levels } níveis ({ $strict } a menos de { $tolerance }), e as diferenças são ruído, não uma mudança da imagem.
 
 ## phonglab check: o trabalho de um aluno verificado

@@ -456,7 +456,7 @@ exam-name = exercício de exame { $number } (semente { $seed })
 exam-material = escolhido para este exame
 exam-no-calculator = Sem calculadora.
 exam-by-hand = Todos os valores se calculam à mão e de forma exata: use cada um exato no passo seguinte e arredonde só o valor que escreve.
-moodle-digits-quiz = Cada campo pede os algarismos significativos entre parênteses; uma resposta a menos de { $percent } % do valor (ou { $near_zero } perto de 0) está certa.
+moodle-digits-quiz = Cada campo pede os algarismos significativos entre parênteses; uma resposta a menos de { $percent } % do valor (ou { $near_zero } perto de 0) está certa.
 moodle-digits-exam = Indique cada valor arredondado a { $digits } algarismos significativos.
 moodle-carry = Use cada valor no passo seguinte tal como o calculou, sem arredondar: arredonde só o que escreve num campo.
 moodle-decimal-mark = Os números podem ser escritos com vírgula ou com ponto decimal: o Moodle aceita ambos.
@@ -752,7 +752,10 @@ diagnose-nothing-drawn = Nada do objeto está desenhado: a imagem é só o fundo
 diagnose-outline-differs = O contorno do objeto não é o desta cena ({ $share } dele difere, para além de um píxel): é esta a imagem desta cena? Verifique --scene, e o objeto e a câmara do programa.
 diagnose-region-differs = Uma região de { $pixels } píxeis em torno de ({ $x }, { $y }) difere da imagem certa, embora a imagem certa explique { $score } dos píxeis do objeto: há algo desenhado por cima do objeto ali, ou essa parte dele está errada.
 diagnose-marks-differ = Marcas finas de { $pixels } píxeis, de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }), diferem da imagem certa, embora a imagem certa explique { $score } dos píxeis do objeto: há linhas ou marcas desenhadas por cima do objeto ali.
-diagnose-footprint = Este erro altera apenas { $pixels } píxeis da imagem certa, em torno de ({ $x }, { $y }), demasiado poucos para a percentagem o mostrar; ali a sua imagem é a do erro: está, em média, a { $mistake } níveis da imagem com o erro e a { $right } da imagem certa.
+diagnose-footprint = Este erro altera a imagem certa em { $most } níveis, no máximo; em mais de { $tolerance } níveis, além do deslocamento de um píxel, apenas em { $pixels } píxeis: { $groups }. São demasiado poucos para a percentagem o mostrar; ali a sua imagem é a do erro: está, em média, a { $mistake } níveis da imagem com o erro e a { $right } da imagem certa.
+diagnose-footprint-group = { $count } de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 })
+diagnose-footprint-rest = { $count } noutros sítios
+diagnose-footprint-and = e
 diagnose-verdict-right-lossy = Certa, tal como foi guardada com perdas (JPEG): a imagem certa explica { $score } dos píxeis do objeto a menos de { $levels } níveis ({ $strict } a menos de { $tolerance }), e as diferenças são ruído, não uma alteração da imagem.
 
 ## phonglab check: o trabalho de um aluno verificado

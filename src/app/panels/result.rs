@@ -182,12 +182,12 @@ fn dark_note(eval: &Evaluated, c: &SideColors) -> Option<Dark> {
             let cos = eval.n.normalize_or_zero().dot(one.l.normalize_or_zero()).clamp(-1.0, 1.0);
             let angle = format!("{:.0}", cos.acos().to_degrees());
             Dark {
-                short: format!("{}\n{percent} % · θ {angle}°", t!("dark-vertex-short")),
+                short: format!("{}\n{percent}\u{a0}% · θ {angle}°", t!("dark-vertex-short")),
                 said: t!("dark-vertex-angle", percent = percent, angle = angle),
             }
         }
         _ => Dark {
-            short: format!("{}\n{percent} %", t!("dark-vertex-short")),
+            short: format!("{}\n{percent}\u{a0}%", t!("dark-vertex-short")),
             said: t!("dark-vertex", percent = percent),
         },
     })

@@ -121,7 +121,7 @@ impl Said {
 
 /// A share of pixels as a percentage in the user's decimal mark.
 fn percent(score: f64) -> String {
-    crate::locale::decimal(&format!("{:.1} %", 100.0 * score))
+    crate::locale::percent(score, 1)
 }
 
 /// The diagnosis in words: the verdict with the closest cause and its score, the others.

@@ -19,6 +19,16 @@
 mod catalogue;
 mod lang;
 
+/// The no-break space phonglab writes between a number and its `%` (in code and in the
+/// catalogues), so that a line never breaks between them and leaves `%` alone.
+pub const BEFORE_PERCENT: char = '\u{a0}';
+
+/// A share (0 to 1) as a percentage with `digits` decimals in the user's decimal mark, a
+/// no-break space before the `%` (`99,4 %`): the one way phonglab writes a share.
+pub fn percent(share: f64, digits: usize) -> String {
+    decimal(&format!("{:.digits$}{BEFORE_PERCENT}%", 100.0 * share))
+}
+
 pub use catalogue::{Arg, CORE, CORE_SOURCES, Catalogue, has_message, ids_of, message_ids, tr, tr_args, tr_in};
 pub use lang::{DecimalMark, Lang, Locale, current, default_locale, set_default, set_thread, with_locale};
 

@@ -717,10 +717,22 @@ fn a_spot_exponent_changed_a_little_is_wrong_though_the_share_calls_it_right() {
         let (fitted, scene) = first.at.values.lights[0][1].expect("fitted");
         assert!((fitted - exponent).abs() <= 0.05 * exponent, "{exponent}: fitted {fitted}");
         assert_eq!(scene, 8.0);
-        let f = found.footprint.expect("the verdict rests on the footprint");
+        let f = found.footprint.clone().expect("the verdict rests on the footprint");
         assert!(f.pixels >= FOOTPRINT_AT && f.mistake <= CLEARLY * f.right, "{f:?}");
+        // Two groups apart, the handle's (left) and the spout's (right), each told; no
+        // mean point between them, which falls on the body where nothing differs.
+        assert!(f.groups.len() >= 2, "{f:?}");
+        let (handle, spout) = (f.groups[0], f.groups[1]);
+        assert!(handle.to.0 < 200 && spout.from.0 > 300, "{f:?}");
+        assert!(handle.pixels + spout.pixels >= f.pixels * 9 / 10, "{f:?}");
+        assert_eq!(f.centre, handle.centre());
+        assert!((7..=12).contains(&f.most), "{f:?}");
         let words = found.footprint_words().expect("words");
-        assert!(words.contains(&f.pixels.to_string()), "{words}");
+        for g in [handle, spout] {
+            let said = format!("{} from ({}, {}) to ({}, {})", g.pixels, g.from.0, g.from.1, g.to.0, g.to.1);
+            assert!(words.contains(&said), "{words}");
+        }
+        assert!(words.contains(&format!("at most {} levels", f.most)), "{words}");
         println!("exponent {exponent}: right {:.4}, {f:?}, {}", found.right.score, first.words());
     }
     // The right picture with noise of ±3, and moved a pixel, stays right.

@@ -31,7 +31,7 @@ mod values;
 pub use change::{At, Given};
 pub use colours::Colours;
 pub use drawing::Drawing;
-pub use footprint::{CLEARLY, FOOTPRINT_AT, Footprint};
+pub use footprint::{CLEARLY, FOOTPRINT_AT, Footprint, Group};
 pub use mistakes::{MISTAKES, PictureMistake, Scope, offered};
 pub use outline::{MARKS_AT, Marks, OUTLINE_AT, REGION_AT, Region};
 pub use sides::Sides;
@@ -188,8 +188,8 @@ impl Shape {
 
     /// In words, given the right picture's score.
     pub fn words(&self, right: f64) -> String {
-        use crate::locale::{Arg, decimal, tr_args};
-        let percent = |v: f64| Arg::Text(decimal(&format!("{:.1} %", 100.0 * v)));
+        use crate::locale::{Arg, tr_args};
+        let percent = |v: f64| Arg::Text(crate::locale::percent(v, 1));
         match *self {
             Shape::NothingDrawn => tr_args("diagnose-nothing-drawn", &[]),
             Shape::OtherOutline(share) => tr_args("diagnose-outline-differs", &[("share", percent(share))]),
@@ -330,7 +330,7 @@ fn lossy_right(d: &Diagnosis, covered: &[bool], image: &[u8], bg: [u8; 3], size:
 fn shown_subtly(d: &mut Diagnosis, mut subtle: Vec<(Tried, Footprint)>) {
     let nearer = |f: &Footprint| f.mistake / f.right.max(f64::MIN_POSITIVE);
     subtle.sort_by(|a, b| nearer(&a.1).total_cmp(&nearer(&b.1)).then(a.0.mistake.cmp(&b.0.mistake)));
-    let Some(&(_, first)) = subtle.first() else { return };
+    let Some((_, first)) = subtle.first().cloned() else { return };
     d.verdict = Verdict::Wrong;
     d.causes = subtle.iter().map(|(t, _)| *t).collect();
     (d.lossy, d.footprint) = (None, Some(first));
@@ -398,9 +398,9 @@ impl Pictures {
 impl Diagnosis {
     /// The verdict "right" in words when it rests on a lossy saving ([`Diagnosis::lossy`]).
     pub fn lossy_words(&self) -> Option<String> {
-        use crate::locale::{Arg, decimal, tr_args};
+        use crate::locale::{Arg, tr_args};
         use crate::teach::picture_match::TOLERANCE;
-        let percent = |v: f64| Arg::Text(decimal(&format!("{:.1} %", 100.0 * v)));
+        let percent = |v: f64| Arg::Text(crate::locale::percent(v, 1));
         self.lossy.map(|m| {
             tr_args(
                 "diagnose-verdict-right-lossy",
@@ -419,14 +419,16 @@ impl Diagnosis {
     /// the picture is to each there.
     pub fn footprint_words(&self) -> Option<String> {
         use crate::locale::{Arg, decimal, tr_args};
+        use crate::teach::picture_match::TOLERANCE;
         let levels = |v: f64| Arg::Text(decimal(&format!("{v:.1}")));
-        self.footprint.map(|f| {
+        self.footprint.as_ref().map(|f| {
             tr_args(
                 "diagnose-footprint",
                 &[
+                    ("most", Arg::Text(f.most.to_string())),
+                    ("tolerance", Arg::Text(TOLERANCE.to_string())),
                     ("pixels", Arg::Text(f.pixels.to_string())),
-                    ("x", Arg::Text(f.centre.0.to_string())),
-                    ("y", Arg::Text(f.centre.1.to_string())),
+                    ("groups", Arg::Text(groups_said(&f.groups))),
                     ("mistake", levels(f.mistake)),
                     ("right", levels(f.right)),
                 ],
@@ -525,3 +527,39 @@ fn verdict_of(exact: Match, mut tried: Vec<Tried>, picture: Vec<u8>, renderer: R
         footprint: None,
     }
 }
+
+/// A footprint's groups in words: the largest [`GROUPS_SAID`], each with its pixels and
+/// box, then how many pixels the rest hold.
+fn groups_said(groups: &[Group]) -> String {
+    use crate::locale::{Arg, tr, tr_args};
+    let mut said: Vec<String> = groups
+        .iter()
+        .take(GROUPS_SAID)
+        .map(|g| {
+            let at = |name: &'static str, v: usize| (name, Arg::Text(v.to_string()));
+            tr_args(
+                "diagnose-footprint-group",
+                &[
+                    ("count", Arg::Text(g.pixels.to_string())),
+                    at("x0", g.from.0),
+                    at("y0", g.from.1),
+                    at("x1", g.to.0),
+                    at("y1", g.to.1),
+                ],
+            )
+        })
+        .collect();
+    let rest: usize = groups.iter().skip(GROUPS_SAID).map(|g| g.pixels).sum();
+    if rest > 0 {
+        said.push(tr_args("diagnose-footprint-rest", &[("count", Arg::Text(rest.to_string()))]));
+    }
+    match said.split_last() {
+        Some((last, first)) if !first.is_empty() => {
+            format!("{} {} {last}", first.join(", "), tr("diagnose-footprint-and"))
+        }
+        _ => said.concat(),
+    }
+}
+
+/// How many of a footprint's groups are told one by one.
+const GROUPS_SAID: usize = 3;
