@@ -55,7 +55,7 @@ pub struct Group {
 impl Group {
     /// The box's centre.
     pub fn centre(&self) -> (usize, usize) {
-        ((self.from.0 + self.to.0) / 2, (self.from.1 + self.to.1) / 2)
+        (self.from.0.midpoint(self.to.0), self.from.1.midpoint(self.to.1))
     }
 }
 
