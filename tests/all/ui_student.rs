@@ -790,8 +790,17 @@ fn a_mistake_of_few_pixels_is_shown_wrong_with_where_it_shows_as_the_command_lin
     let lines = p.lines();
     assert_eq!(p.verdict, "wrong", "{lines:?}");
     assert!(lines.iter().any(|l| l.contains("(spot-exponent-differs, GL_LIGHT0)")), "{lines:?}");
-    let footprint =
-        lines.iter().find(|l| l.starts_with("This mistake changes only")).unwrap_or_else(|| panic!("{lines:?}"));
+    let footprint = lines
+        .iter()
+        .find(|l| l.starts_with("This mistake changes the right picture by at most 9 levels"))
+        .unwrap_or_else(|| panic!("{lines:?}"));
+    // Each group where it is, the handle's and the spout's, not the mean between them.
+    assert!(
+        footprint.contains("422 pixels: 282 from (71, 207) to (135, 313) and 140 from (399, 247) to (438, 290)."),
+        "{footprint}"
+    );
+    // Every share bound to its % by a no-break space, so that a wrap never leaves % alone.
+    assert!(lines.iter().any(|l| l.contains("99.4\u{a0}%")) && !lines.iter().any(|l| l.contains(" %")), "{lines:?}");
     // Shown whole above the three pictures.
     let shown = h.get_by_label(footprint).rect();
     let pictures = h.state().ui.geometry.pictures.clone();
