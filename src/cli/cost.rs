@@ -149,8 +149,10 @@ pub fn markdown_tables(csv: &str) -> Result<String> {
             out.push_str("| variant | triangles | ms/frame | mean error | max error | pixels off > 1/255 |\n");
             out.push_str("|---|---|---|---|---|---|\n");
         }
+        // A plain space before `%`: these tables are a committed record (docs/performance.md,
+        // compared by a test) and Markdown a program reads, not a sentence that wraps.
         out.push_str(&format!(
-            "| {} | {} | {:.2} | {:.2} | {:.1} | {:.1}\u{a0}% |\n",
+            "| {} | {} | {:.2} | {:.2} | {:.1} | {:.1} % |\n",
             f[variant],
             f[tris],
             num(ms)?,

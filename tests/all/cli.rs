@@ -395,7 +395,7 @@ fn render_obj_shades_a_users_mesh_and_refuses_a_bad_one_with_its_line() {
         let o = phonglab(&["render", "--obj", f.to_str().unwrap(), "--output", png.to_str().unwrap(), "--size", "64"]);
         assert!(o.status.success(), "{}", stderr(&o));
         let covered: f64 =
-            stderr(&o).split(" % covered").next().and_then(|s| s.rsplit(", ").next()).unwrap().parse().unwrap();
+            stderr(&o).split("\u{a0}% covered").next().and_then(|s| s.rsplit(", ").next()).unwrap().parse().unwrap();
         assert!(covered > 5.0, "{name}: {}", stderr(&o));
     }
 }

@@ -156,7 +156,7 @@ fn the_window_switches_space_and_a_dragged_light_or_eye_moves() {
         h.run_steps(2);
     }
     assert_eq!(h.state().director.space, Space::World);
-    assert!(h.query_by_label_contains("1/at, the attenuation factor, falls to 50 %").is_some());
+    assert!(h.query_by_label_contains("1/at, the attenuation factor, falls to 50\u{a0}%").is_some());
     // Drag the light's mark: the document's light moves (in its own coordinates).
     let d = h.state().doc.clone();
     let (scene, mesh, clip) = scene_of(&d, &mut None);

@@ -423,7 +423,7 @@ fn compare_shows_how_much_gouraud_and_phong_differ() {
         .label()
         .unwrap_or_default();
     let percent: f64 = legend
-        .split(" % ")
+        .split("\u{a0}% ")
         .next()
         .and_then(|head| head.rsplit(' ').next())
         .and_then(|p| p.parse().ok())
@@ -630,7 +630,7 @@ fn the_vertex_colour_is_large_and_a_dark_one_says_so() {
     assert!(value.min.x > title.max.x && (value.center().y - title.center().y).abs() < 6.0, "{title:?} {value:?}");
     assert!(value.height() > 1.3 * title.height(), "large: {value:?} against {title:?}");
     let swatch = h.get_by_role(Role::ColorWell).rect();
-    h.get_by_label("Vertex colour swatch: a dark vertex: 4 % as bright as white; the light meets it at 82°");
+    h.get_by_label("Vertex colour swatch: a dark vertex: 4\u{a0}% as bright as white; the light meets it at 82°");
     assert!(swatch.max.x <= title.min.x, "the swatch before the title");
     // Light the vertex head on: bright, and nothing said.
     let mut doc = h.state().doc.clone();

@@ -308,7 +308,7 @@ fn the_quiz_marks_say_which_check_they_passed_and_no_field_moves() {
     common::menu_item(&mut h, &["View"], "Quiz");
     h.run_steps(3);
     // The tolerance, in readable type.
-    h.get_by_label_contains("Right: within 0.01 % of the value (or 1e-6 near 0)");
+    h.get_by_label_contains("Right: within 0.01\u{a0}% of the value (or 1e-6 near 0)");
     // Steps that do not apply to one light with no spotlight, under the worksheet's rules.
     for name in ["spot =", "Ilight =", "glColor ="] {
         assert!(h.query_by_label(name).is_none(), "{name} is asked");
@@ -335,7 +335,7 @@ fn the_quiz_marks_say_which_check_they_passed_and_no_field_moves() {
     assert_eq!(h.get_all_by_label("✔ right").count(), 2);
     // Rounded too far: close, with the digits it needs.
     answer(&mut h, "cosBeta", "0.764");
-    h.get_by_label("≈ close: 0.05 % from the key; give 4 significant digits");
+    h.get_by_label("≈ close: 0.05\u{a0}% from the key; give 4 significant digits");
     h.get_by_label_contains("Score: 3 of 14 (5 answered)");
     assert!(h.query_by_label_contains("key: ").is_none(), "no key shown");
     // No field moved while the marks appeared (relative to the list, which the student
