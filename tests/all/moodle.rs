@@ -572,7 +572,8 @@ fn level_5_refuses_variants_says_its_seven_and_help_lists_it() {
 #[test]
 fn the_tolerance_sentence_follows_the_decimal_mark() {
     let dir = out_dir("decimal-point");
-    for (decimal, percent, near_zero) in [("point", "0.01\u{a0}%", "0.000001 perto"), ("comma", "0,01\u{a0}%", "0,000001 perto")]
+    for (decimal, percent, near_zero) in
+        [("point", "0.01\u{a0}%", "0.000001 perto"), ("comma", "0,01\u{a0}%", "0,000001 perto")]
     {
         let args = ["--lang", "pt-PT", "--decimal", decimal, "exercise", "--format", "moodle-xml", "--count", "1"];
         run_ok(phonglab(&[&args[..], &["--out", dir.to_str().unwrap()]].concat()));
