@@ -122,13 +122,26 @@ pub fn check(what: &str, needed: u64) -> Result<(), String> {
     ))
 }
 
-/// A `--memory-budget` that lets a run needing `needed` bytes go, as people write it:
-/// rounded up to a whole number of GiB (`68G`), or of 256 MiB under 1 GiB (`768M`).
+/// A `--memory-budget` that lets a run needing `needed` bytes go, as people write it, just
+/// above the need and never below it: whole KiB under 1 MiB (`5K`), whole MiB under 1 GiB
+/// (`5M` for 4.8 MiB), tenths of a GiB under 10 GiB (`1.1G`), whole GiB above (`68G`). (It
+/// was 256 MiB at the least: "needs 4.8 MiB ... --memory-budget 256M".)
 pub fn suggested_budget(needed: u64) -> String {
+    const K: u64 = 1 << 10;
+    const M: u64 = 1 << 20;
     const G: u64 = 1 << 30;
-    const QUARTER: u64 = 256 << 20;
-    let quarters = needed.div_ceil(QUARTER).max(1);
-    if quarters * QUARTER < G { format!("{}M", quarters * 256) } else { format!("{}G", needed.div_ceil(G)) }
+    let (unit, letter) = if needed < M {
+        (K, 'K')
+    } else if needed < G {
+        (M, 'M')
+    } else {
+        (G, 'G')
+    };
+    let tenths = (u128::from(needed) * 10).div_ceil(u128::from(unit));
+    if letter == 'G' && tenths < 100 && tenths % 10 != 0 {
+        return format!("{}.{}G", tenths / 10, tenths % 10);
+    }
+    format!("{}{letter}", needed.div_ceil(unit).max(1))
 }
 
 /// Reads a size: a number of bytes with an optional unit, K, M, G or T (powers of 1024;
@@ -264,15 +277,26 @@ mod tests {
     #[test]
     fn the_suggested_budget_covers_the_need() {
         let g = 1u64 << 30;
-        assert_eq!(suggested_budget(1), "256M");
-        assert_eq!(suggested_budget(256 << 20), "256M");
-        assert_eq!(suggested_budget((256 << 20) + 1), "512M");
-        assert_eq!(suggested_budget(g - 1), "1G");
+        let m = 1u64 << 20;
+        assert_eq!(suggested_budget(1), "1K");
+        assert_eq!(suggested_budget(4900), "5K");
+        // Issue 57: a run needing 4.8 MiB was told to use 256M.
+        assert_eq!(suggested_budget(48 * m / 10), "5M");
+        assert_eq!(suggested_budget(256 * m), "256M");
+        assert_eq!(suggested_budget(256 * m + 1), "257M");
+        assert_eq!(suggested_budget(g - 1), "1024M");
         assert_eq!(suggested_budget(g), "1G");
-        assert_eq!(suggested_budget(g + 1), "2G");
+        assert_eq!(suggested_budget(g + 1), "1.1G");
+        assert_eq!(suggested_budget(5 * g / 2), "2.5G");
+        assert_eq!(suggested_budget(10 * g - 1), "10G");
         assert_eq!(suggested_budget(72_021_287_500), "68G");
-        for needed in [1, 300 << 20, g - 1, 5 * g / 2, 67 * g + 12345, 1 << 45] {
-            assert!(parse_size(&suggested_budget(needed)).unwrap() >= needed, "{needed}");
+        let mut needs = vec![1, 1023, 1025, m - 1, m + 1, 300 * m, g - 1, 5 * g / 2, 67 * g + 12345, 1 << 45];
+        needs.extend((1..200u64).map(|k| k * 48_271_813 + 7));
+        for needed in needs {
+            let said = parse_size(&suggested_budget(needed)).unwrap();
+            // Never below the need, and just above it (within a tenth, or a MiB).
+            assert!(said >= needed, "{needed}: {}", suggested_budget(needed));
+            assert!(said <= needed + (needed / 10).max(1 << 20), "{needed}: {}", suggested_budget(needed));
         }
     }
 
