@@ -118,6 +118,9 @@ mod tests {
             errors: Vec::new(),
             unreadable: Vec::new(),
             missing: Vec::new(),
+            not_printed: Vec::new(),
+            stale: None,
+            after_error: Vec::new(),
         };
         let names = phonglab_core::study::check::said::input_names(&c);
         assert_eq!(names, format!("lightPos, {}", t!("check-input-rules")));

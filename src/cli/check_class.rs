@@ -16,7 +16,7 @@ use anyhow::Result;
 use phonglab_core::escape;
 use phonglab_core::scene::Scene;
 use phonglab_core::study::check::said::{input_names, printed_again};
-use phonglab_core::study::check::{Check, check};
+use phonglab_core::study::check::{Check, Overall, check};
 
 use crate::io::student_code::read_notebook;
 use crate::io::work_output::{Kind, MARKS_HEADER};
@@ -39,8 +39,10 @@ pub fn out(text: &str) {
     let _ = std::io::stdout().lock().write_all(text.as_bytes());
 }
 
-/// The check as JSON: `verdict`, `unchecked` (why work with no wrong step is still not
-/// right: `run-stopped`, `nothing-compared`; else null), `rules`, `inputs_differ`,
+/// The check as JSON: `verdict` (`right`, `wrong`, `incomplete`), `unchecked` (why work
+/// with no wrong step is still not right: `run-stopped`, `stale-outputs`,
+/// `missing-steps`, `unreadable-step`, `nothing-compared`; else null), `missing` (the
+/// steps asked for and not printed, in order), `after_error`, `rules`, `inputs_differ`,
 /// `first_wrong`, `causes` (with their kebab-case ids), `steps`.
 pub fn json(c: &Check) -> serde_json::Value {
     let first = c
@@ -49,8 +51,10 @@ pub fn json(c: &Check) -> serde_json::Value {
         .map(|s| serde_json::json!({"step": s.name, "student": s.student, "key": s.key}));
     let unchecked = c.unchecked().map(|u| serde_json::json!({"id": u.id(), "words": u.words()}));
     serde_json::json!({
-        "verdict": if c.right() { "right" } else { "wrong" },
+        "verdict": c.overall().id(),
         "unchecked": unchecked,
+        "missing": c.all_missing(),
+        "after_error": c.after_error,
         "rules": c.rules.to_string(),
         "inputs_differ": c.inputs_differ,
         "first_wrong": first,
@@ -205,11 +209,20 @@ pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> 
 fn summary(m: &Marked) -> String {
     match &m.check {
         Err(e) => t!("check-report-unreadable", reason = e.clone()),
-        Ok(c) if c.right() => t!("check-verdict-word-right"),
-        Ok(c) => match c.unchecked().filter(|_| c.first_wrong.is_none() && c.inputs_differ.is_empty()) {
-            Some(u) => format!("{}: {}", t!("check-verdict-word-wrong"), u.words()),
-            None => format!("{}: {} ({})", t!("check-verdict-word-wrong"), first_wrong(c), causes(c)),
+        Ok(c) => match c.overall() {
+            Overall::Right => t!("check-verdict-word-right"),
+            Overall::Incomplete => format!("{}: {}", verdict_word(c), causes(c)),
+            Overall::Wrong => format!("{}: {} ({})", verdict_word(c), first_wrong(c), causes(c)),
         },
+    }
+}
+
+/// The verdict in the teacher's words: right, wrong or incomplete.
+fn verdict_word(c: &Check) -> String {
+    match c.overall() {
+        Overall::Right => t!("check-verdict-word-right"),
+        Overall::Wrong => t!("check-verdict-word-wrong"),
+        Overall::Incomplete => t!("check-verdict-word-incomplete"),
     }
 }
 
@@ -225,7 +238,10 @@ fn first_wrong(c: &Check) -> String {
 /// The causes in the teacher's words (why not checked, where nothing was compared).
 fn causes(c: &Check) -> String {
     if c.causes.is_empty() && c.first_wrong.is_none() && c.inputs_differ.is_empty() {
-        return c.unchecked().map_or_else(String::new, |u| u.words());
+        // Why it is incomplete, and the steps the worksheet asks for not printed.
+        let why = c.unchecked();
+        let not_printed = c.not_printed_reason().filter(|n| why.as_ref() != Some(n));
+        return why.iter().chain(&not_printed).map(|u| u.words()).collect::<Vec<_>>().join("; ");
     }
     // A typed input that differs is the first finding, as the single check says it.
     let mut said: Vec<String> = Vec::new();
@@ -278,7 +294,7 @@ pub fn markdown(marked: &[Marked], counts: &[(String, usize)], chart: &str, scen
         let (verdict, first, why) = match &m.check {
             Err(_) => (t!("check-verdict-word-unread"), String::new(), String::new()),
             Ok(c) if c.right() => (t!("check-verdict-word-right"), String::new(), String::new()),
-            Ok(c) => (t!("check-verdict-word-wrong"), first_wrong(c), causes(c)),
+            Ok(c) => (verdict_word(c), first_wrong(c), causes(c)),
         };
         out.push_str(&format!("| {} | {} | {} | {} |\n", md(&m.name), md(&verdict), md(&first), md(&why)));
     }
@@ -319,8 +335,9 @@ fn printed_twice_section(marked: &[Marked]) -> String {
     out
 }
 
-/// The marks as CSV: file, verdict (`right`, `wrong`, `unread`), first wrong step, the
-/// causes in the teacher's words, and their ids for machines (text fields neutralised).
+/// The marks as CSV: file, verdict (`right`, `wrong`, `incomplete`, `unread`), first
+/// wrong step, the causes in the teacher's words (for incomplete work, why: the steps
+/// not printed, the first named), and their ids for machines (text fields neutralised).
 pub fn marks_csv(marked: &[Marked]) -> String {
     let f = escape::csv::text_field;
     let mut out = format!("{MARKS_HEADER}\n");
@@ -330,7 +347,7 @@ pub fn marks_csv(marked: &[Marked]) -> String {
             Ok(c) if c.right() => ("right".to_string(), String::new(), String::new(), String::new()),
             Ok(c) => {
                 let ids = c.causes.iter().map(|k| k.info.id).collect::<Vec<_>>().join(" ");
-                ("wrong".to_string(), first_wrong(c), causes(c), ids)
+                (c.overall().id().to_string(), first_wrong(c), causes(c), ids)
             }
         };
         out.push_str(&format!("{},{},{},{},{}\n", f(&m.name), f(&verdict), f(&first), f(&why), f(&ids)));

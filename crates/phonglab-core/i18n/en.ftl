@@ -849,6 +849,12 @@ check-run-stopped = not checked: the run stopped with an error before the end: {
 check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)
 check-unreadable-steps = not checked whole: these steps were printed with values that are not numbers as NumPy or Python prints them ({ $names }); print each value alone
 check-missing-steps = not checked: the notebook holds no value for { $names }: a cell was skipped or stopped with an error. Run every cell (Jupyter: Kernel → Restart & Run All), then this one
+check-incomplete = incomplete: the worksheet asks for { $count ->
+        [one] a step
+       *[other] { $count } steps
+    } this work does not print, the first { $first }: { $names }. Run every cell (Jupyter: Kernel → Restart & Run All), print each step as the worksheet does (print("vlv = ", vlv)), and check it again
+check-stale-outputs = not checked whole: the outputs are not from one run in order (a cell numbered [{ $later }] below one numbered [{ $earlier }]: a cell was run again, or out of order). Run every cell again (Jupyter: Kernel → Restart & Run All), save, and check it again
+check-after-error = printed after the error, so by an earlier run (Run All stops at an error), and not checked: { $names }
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) draws the shading this program was written for (Gouraud: the vertices' colours interpolated; Phong: each pixel lit). With GL_FLAT the shaders draw what fixed-function OpenGL draws: each face in the colour lit at its provoking vertex (a triangle’s or a quad’s last vertex).
 py-two-side-program-comment = Lets the fragment shader’s gl_Color be the back colour on a triangle’s back side, as fixed-function GL chooses it; the shaders use it under glShadeModel(GL_FLAT).

@@ -853,6 +853,12 @@ check-run-stopped = não verificado: a execução parou com um erro antes do fim
 check-nothing-compared = não verificado: nada do que você imprimiu é um passo da lista; imprima cada valor como a lista faz, print("vlv = ", vlv)
 check-unreadable-steps = não verificado por inteiro: estes passos foram impressos com valores que não são números como o NumPy ou o Python os imprimem ({ $names }); imprima cada valor sozinho
 check-missing-steps = não verificado: o notebook não tem valor para { $names }: uma célula não foi executada ou parou com um erro. Execute todas as células (Jupyter: Kernel → Restart & Run All) e depois esta
+check-incomplete = incompleto: a lista pede { $count ->
+        [one] um passo
+       *[other] { $count } passos
+    } que este trabalho não imprime, o primeiro { $first }: { $names }. Execute todas as células (Jupyter: Kernel → Restart & Run All), imprima cada passo como a lista faz (print("vlv = ", vlv)) e verifique de novo
+check-stale-outputs = não verificado por inteiro: as saídas não são de uma única execução, em ordem (uma célula numerada [{ $later }] abaixo de uma numerada [{ $earlier }]: uma célula foi executada de novo, ou fora de ordem). Execute de novo todas as células (Jupyter: Kernel → Restart & Run All), salve e verifique de novo
+check-after-error = impresso depois do erro, portanto por uma execução anterior (o Run All para em um erro), e não verificado: { $names }
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) desenha o sombreamento para o qual este programa foi escrito (Gouraud: as cores dos vértices interpoladas; Phong: cada pixel iluminado). Com GL_FLAT, os shaders desenham o que o OpenGL de pipeline fixo desenha: cada face na cor calculada no seu vértice provocante (o último vértice de um triângulo ou de um quadrilátero).
 py-two-side-program-comment = Faz o gl_Color do fragment shader ser a cor de trás na face de trás de um triângulo, como o GL de pipeline fixo a escolhe; os shaders o usam com glShadeModel(GL_FLAT).

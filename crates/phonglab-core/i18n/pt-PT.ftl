@@ -849,6 +849,12 @@ check-run-stopped = não verificado: a execução parou com um erro antes do fim
 check-nothing-compared = não verificado: nada do que imprimiu é um passo da ficha; imprima cada valor como a ficha faz, print("vlv = ", vlv)
 check-unreadable-steps = não verificado por inteiro: estes passos foram impressos com valores que não são números como o NumPy ou o Python os imprimem ({ $names }); imprima cada valor sozinho
 check-missing-steps = não verificado: o caderno não tem valor para { $names }: uma célula não foi executada ou parou com um erro. Execute todas as células (Jupyter: Kernel → Restart & Run All) e depois esta
+check-incomplete = incompleto: a ficha pede { $count ->
+        [one] um passo
+       *[other] { $count } passos
+    } que este trabalho não imprime, o primeiro { $first }: { $names }. Execute todas as células (Jupyter: Kernel → Restart & Run All), imprima cada passo como a ficha faz (print("vlv = ", vlv)) e verifique-o de novo
+check-stale-outputs = não verificado por inteiro: as saídas não são de uma só execução, por ordem (uma célula numerada [{ $later }] abaixo de uma numerada [{ $earlier }]: uma célula foi executada de novo, ou fora de ordem). Execute de novo todas as células (Jupyter: Kernel → Restart & Run All), guarde e verifique-o de novo
+check-after-error = impresso depois do erro, portanto por uma execução anterior (o Run All para num erro), e não verificado: { $names }
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) desenha o sombreamento para que este programa foi escrito (Gouraud: as cores dos vértices interpoladas; Phong: cada píxel iluminado). Com GL_FLAT, os shaders desenham o que o OpenGL de pipeline fixo desenha: cada face na cor calculada no seu vértice provocante (o último vértice de um triângulo ou de um quadrilátero).
 py-two-side-program-comment = Faz com que o gl_Color do fragment shader seja a cor de trás na face de trás de um triângulo, como o GL de pipeline fixo a escolhe; os shaders usam-no com glShadeModel(GL_FLAT).

@@ -140,6 +140,13 @@ fn findings_ui(ui: &mut Ui, c: &Check) {
         }
         None => {}
     }
+    // Why the work is not whole (the run stopped, outputs out of order), and the steps the
+    // worksheet asks for that it does not print: incomplete, never right.
+    let why = c.unchecked().filter(|_| !c.steps.is_empty());
+    let not_printed = c.not_printed_reason().filter(|n| why.as_ref() != Some(n));
+    for u in why.iter().chain(&not_printed) {
+        ui.add(egui::Label::new(RichText::new(u.words()).color(wrong_ink(ui))).wrap());
+    }
     for cause in &c.causes {
         ui.add(egui::Label::new(cause_line(c, cause)).wrap());
         ui.add(egui::Label::new(RichText::new(cause.formula()).monospace().weak()).wrap());

@@ -118,9 +118,11 @@ fn a_position_in_other_homogeneous_coordinates_is_the_same_point() {
     let c = check(&scene, &scene, &printed_text(&halved));
     assert_eq!(c.steps[2].name, "lightPos");
     assert_eq!(c.steps[2].verdict, Verdict::Right, "{:?}", c.steps);
-    assert!(c.right());
+    // Nothing wrong (the text prints only four steps: incomplete, issue 57).
+    let nothing_wrong = |c: &phonglab_core::study::check::Check| c.first_wrong.is_none() && c.causes.is_empty();
+    assert!(nothing_wrong(&c));
     let doubled = text.replace("[-512.  -307.2 -729.6    1. ]", "[-1024.  -614.4 -1459.2    2. ]");
-    assert!(check(&scene, &scene, &printed_text(&doubled)).right());
+    assert!(nothing_wrong(&check(&scene, &scene, &printed_text(&doubled))));
     for other in ["[   0.   27. -444.    1.]", "[   0.   54. -888.    0.]", "[   0.   54. -888.    1.1]"] {
         let c = check(&scene, &scene, &printed_text(&text.replace("[   0.   54. -888.    1.]", other)));
         assert_eq!(c.steps[2].verdict, Verdict::Wrong, "{other}");

@@ -12,6 +12,7 @@ mod support {
 }
 
 mod check;
+mod check_whole;
 mod cost;
 mod diagnose;
 mod documents;

@@ -121,8 +121,60 @@ pub struct Check {
     pub errors: Vec<String>,
     /// Steps of the key printed with a value that could not be read (`cosTheta = 0.9 rad`).
     pub unreadable: Vec<String>,
-    /// Steps of the key the work holds no value for (a notebook's cell not run).
+    /// Steps of the key the work holds no value for (a notebook's cell not run), from the
+    /// notebook's self-check ([`Printed::missing`]).
     pub missing: Vec<String>,
+    /// Steps the worksheet asks for ([`asked`]) that the work does not print, in the
+    /// key's order: a cell not run, or its output cleared. Never right.
+    pub not_printed: Vec<String>,
+    /// A notebook's outputs not from one run in order: two execution counts, the earlier
+    /// cell's and the later cell's ([`Printed::stale`]).
+    pub stale: Option<(i64, i64)>,
+    /// The values printed after a cell's error output, from an earlier run: not checked
+    /// ([`Printed::after_error`]).
+    pub after_error: Vec<String>,
+}
+
+/// The steps the worksheet's notebook prints under every rule set (its `print` lines,
+/// the modelview aside): the normal, `vlv`, `vov`, `Iamb`, `Idif`, `Ispec` and `I`. Each
+/// is asked of a student's work, for each light; the steps only some rule sets or scenes
+/// print (`H` or `R`, `d`, `spot`, `Iscene`, the back side, `glColor`) and those phonglab's
+/// own notebook adds (`cosTheta`, `Ilight`) are checked where printed, never asked.
+pub const ASKED: [&str; 7] = ["vertexNormal", "vlv", "vov", "Iamb", "Idif", "Ispec", "I"];
+
+/// The steps of `key` the worksheet asks the work to print ([`ASKED`]), in the
+/// worksheet's order (`vlv[0]`, `vlv[1]` for a light of several, then `vov`).
+pub fn asked(key: &Worked) -> Vec<String> {
+    let rank = |n: &str| ASKED.iter().position(|a| *a == n.split('[').next().unwrap_or(n));
+    let mut out: Vec<(usize, String)> =
+        key.values.iter().filter_map(|(n, _)| rank(n).map(|r| (r, n.clone()))).collect();
+    out.sort_by_key(|(r, _)| *r);
+    out.into_iter().map(|(_, n)| n).collect()
+}
+
+/// A piece of work as a whole: right, wrong (a wrong step, a typed input that differs, or
+/// a cause named), or incomplete (nothing wrong, but not checked whole: a step the
+/// worksheet asks for not printed, a run that stopped, outputs out of order, a step that
+/// could not be read, nothing compared).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Overall {
+    /// Every step printed is the key's, and the work is whole.
+    Right,
+    /// Something is wrong.
+    Wrong,
+    /// Nothing is wrong, but the work is not whole.
+    Incomplete,
+}
+
+impl Overall {
+    /// The verdict's id in JSON and CSV: `right`, `wrong`, `incomplete`.
+    pub fn id(self) -> &'static str {
+        match self {
+            Overall::Right => "right",
+            Overall::Wrong => "wrong",
+            Overall::Incomplete => "incomplete",
+        }
+    }
 }
 
 /// Why a piece of work with no wrong step is still not right: nothing was compared.
@@ -136,6 +188,11 @@ pub enum Unchecked {
     Unreadable(String),
     /// Steps of the key the work holds no value for (named): a cell skipped or stopped.
     Missing(String),
+    /// A notebook's outputs not from one run in order (two execution counts, the earlier
+    /// cell's and the later's).
+    Stale(i64, i64),
+    /// Steps the worksheet asks for not printed: how many, the first, all (named).
+    NotPrinted(usize, String, String),
 }
 
 impl Unchecked {
@@ -145,7 +202,8 @@ impl Unchecked {
             Unchecked::Stopped(_) => "run-stopped",
             Unchecked::NothingCompared => "nothing-compared",
             Unchecked::Unreadable(_) => "unreadable-step",
-            Unchecked::Missing(_) => "missing-steps",
+            Unchecked::Missing(_) | Unchecked::NotPrinted(..) => "missing-steps",
+            Unchecked::Stale(..) => "stale-outputs",
         }
     }
 
@@ -156,6 +214,10 @@ impl Unchecked {
             Unchecked::NothingCompared => crate::t!("check-nothing-compared"),
             Unchecked::Unreadable(names) => crate::t!("check-unreadable-steps", names = names.clone()),
             Unchecked::Missing(names) => crate::t!("check-missing-steps", names = names.clone()),
+            Unchecked::Stale(earlier, later) => crate::t!("check-stale-outputs", earlier = *earlier, later = *later),
+            Unchecked::NotPrinted(count, first, names) => {
+                crate::t!("check-incomplete", count = *count, first = first.clone(), names = names.clone())
+            }
         }
     }
 }
@@ -170,12 +232,34 @@ impl Check {
             && self.unchecked().is_none()
     }
 
+    /// The work as a whole: right, wrong, or incomplete ([`Overall`]).
+    pub fn overall(&self) -> Overall {
+        if self.right() {
+            Overall::Right
+        } else if !self.inputs_differ.is_empty() || self.first_wrong.is_some() || !self.causes.is_empty() {
+            Overall::Wrong
+        } else {
+            Overall::Incomplete
+        }
+    }
+
+    /// Every step of the key the work holds no value for, in the key's order: those the
+    /// self-check found missing, and those the worksheet asks for not printed.
+    pub fn all_missing(&self) -> Vec<String> {
+        let mut out = self.missing.clone();
+        out.extend(self.not_printed.iter().filter(|n| !self.missing.contains(n)).cloned());
+        out
+    }
+
     /// Why the work could not be found right though no step is wrong: the run stopped
-    /// with an error, or nothing was compared. `None` where a step was compared and the
-    /// run ended.
+    /// with an error, its outputs are out of order, a step is missing or unreadable, or
+    /// nothing was compared. `None` where the work is whole.
     pub fn unchecked(&self) -> Option<Unchecked> {
         if let Some(e) = self.errors.last() {
             return Some(Unchecked::Stopped(e.clone()));
+        }
+        if let Some((earlier, later)) = self.stale {
+            return Some(Unchecked::Stale(earlier, later));
         }
         if !self.missing.is_empty() {
             return Some(Unchecked::Missing(self.missing.join(", ")));
@@ -183,7 +267,16 @@ impl Check {
         if !self.unreadable.is_empty() {
             return Some(Unchecked::Unreadable(self.unreadable.join(", ")));
         }
-        self.steps.is_empty().then_some(Unchecked::NothingCompared)
+        if self.steps.is_empty() {
+            return Some(Unchecked::NothingCompared);
+        }
+        self.not_printed_reason()
+    }
+
+    /// The steps the worksheet asks for that the work does not print, as a reason.
+    pub fn not_printed_reason(&self) -> Option<Unchecked> {
+        let first = self.not_printed.first()?;
+        Some(Unchecked::NotPrinted(self.not_printed.len(), first.clone(), self.not_printed.join(", ")))
     }
 }
 
@@ -298,6 +391,8 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
     };
     let unreadable = student.unread.iter().filter(|n| key.get(n).is_some()).cloned().collect();
     let missing = student.missing.iter().filter(|n| key.get(n).is_some()).cloned().collect();
+    let not_printed =
+        asked(&key).into_iter().filter(|n| student.get(n).is_none() && !student.unread.contains(n)).collect();
     Check {
         rules: assignment.rules,
         inputs_differ,
@@ -307,6 +402,9 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
         errors: student.errors.clone(),
         unreadable,
         missing,
+        not_printed,
+        stale: student.stale,
+        after_error: student.after_error.clone(),
     }
 }
 

@@ -42,6 +42,13 @@ pub struct Printed {
     /// notebook: a cell skipped, or stopped by an error): the work is not checked whole,
     /// so never right. Empty for printed text, whose steps not printed are not asked.
     pub missing: Vec<String>,
+    /// A notebook's outputs not from one run in order: the first two code cells whose
+    /// execution counts go back (the earlier cell's, then the later cell's: `[5]` above
+    /// `[3]`), a cell run again after those below it. Never right.
+    pub stale: Option<(i64, i64)>,
+    /// The values a notebook's cells printed after a cell's error output: Run All stops
+    /// at an error, so they are from an earlier run, and are never checked (named).
+    pub after_error: Vec<String>,
 }
 
 impl Printed {
@@ -141,12 +148,17 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
         OutputsError::NotANotebook(crate::t!("import-not-notebook", reason = crate::t!("import-no-cells")))
     })?;
     let mut text = String::new();
+    let mut after = String::new();
     let mut code = String::new();
     let mut any = false;
+    // The cell errors (any `ename`: `KeyboardInterrupt`, `Exception` too), in order.
+    let mut errors: Vec<String> = Vec::new();
+    let mut counts: Vec<i64> = Vec::new();
     for cell in cells.iter().filter(|c| c["cell_type"] == "code") {
         let source = joined(&cell["source"]);
         code.push_str(&source);
         code.push('\n');
+        counts.extend(cell["execution_count"].as_i64());
         for output in cell["outputs"].as_array().map(Vec::as_slice).unwrap_or_default() {
             any = true;
             // The self-check's table echoes the formulas and both values of every step
@@ -154,22 +166,39 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
             if calls_self_check(&source) {
                 continue;
             }
+            // After an error, Run All runs nothing more: what follows is from an earlier run.
+            let into = if errors.is_empty() { &mut text } else { &mut after };
             match output["output_type"].as_str() {
-                Some("stream") => text.push_str(&joined(&output["text"])),
-                Some("error") => {
-                    let (name, value) =
-                        (output["ename"].as_str().unwrap_or(""), output["evalue"].as_str().unwrap_or(""));
-                    text.push_str(&format!("\n{name}: {value}\n"));
-                }
+                Some("stream") => into.push_str(&joined(&output["text"])),
+                Some("error") if errors.len() < MAX_ERRORS => errors.push(cell_error(output)),
                 _ => {}
             }
-            text.push('\n');
+            into.push('\n');
         }
     }
     if !any {
         return Err(OutputsError::NoOutputs(crate::t!("check-no-outputs")));
     }
-    read_printed_text(&text).map(|p| Printed { code, ..p })
+    let mut p = read_printed_text(&text)?;
+    p.errors.extend(errors);
+    p.errors.truncate(MAX_ERRORS);
+    let mut after_error: Vec<String> = Vec::new();
+    for v in read_printed_text(&after)?.values {
+        if !after_error.contains(&v.name) {
+            after_error.push(v.name);
+        }
+    }
+    let stale = counts.windows(2).find(|w| w[1] <= w[0]).map(|w| (w[0], w[1]));
+    Ok(Printed { code, stale, after_error, ..p })
+}
+
+/// A cell's error output as one line, `ename: evalue` (the value's first line), whatever
+/// its name (`KeyboardInterrupt`, `Exception`, `LinAlgError`).
+fn cell_error(output: &serde_json::Value) -> String {
+    let name = output["ename"].as_str().unwrap_or("");
+    let value = output["evalue"].as_str().unwrap_or("").lines().next().unwrap_or("");
+    let name = if name.is_empty() { "Error" } else { name };
+    format!("{name}: {value}").trim().chars().take(200).collect()
 }
 
 /// Does a cell's `source` run the notebook's self-check (`phonglab.check(globals())`,

@@ -74,8 +74,17 @@ pub fn words(c: &Check) -> String {
         None if c.right() => out.push_str(&format!("{}\n", t!("check-all-right"))),
         None => {}
     }
-    if let Some(why) = c.unchecked() {
+    // Why it is not whole, and every step the worksheet asks for that it does not print
+    // (incomplete, the first named), even beside a wrong step or another reason.
+    let why = c.unchecked();
+    if let Some(why) = &why {
         out.push_str(&format!("{}\n", why.words()));
+    }
+    if !c.after_error.is_empty() {
+        out.push_str(&format!("{}\n", t!("check-after-error", names = c.after_error.join(", "))));
+    }
+    if let Some(not_printed) = c.not_printed_reason().filter(|n| why.as_ref() != Some(n)) {
+        out.push_str(&format!("{}\n", not_printed.words()));
     }
     for cause in &c.causes {
         // Labelled: the catalogue's formula with the mistake, never the student's own line.

@@ -1,0 +1,182 @@
+//! Issue 57: work is right only when it is whole. Every step the worksheet asks for (its
+//! `print` lines: the normal, `vlv`, `vov`, `Iamb`, `Idif`, `Ispec`, `I`, for each light)
+//! that the work does not print makes it incomplete, never right, the first named; the
+//! steps only some rule sets print are never asked; and a notebook's outputs that are not
+//! one run's (after an error, out of order, a cell's error of any name) are said.
+
+use std::path::Path;
+
+use phonglab_core::Document;
+use phonglab_core::scene::Scene;
+use phonglab_core::study::check::printed::{notebook_outputs, printed_text};
+use phonglab_core::study::check::worked::{Worked, work};
+use phonglab_core::study::check::{ASKED, Overall, Verdict, asked, check};
+
+fn scene_file(name: &str) -> Scene {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/scenes").join(name);
+    Document::from_toml_in(&std::fs::read_to_string(&path).unwrap(), path.parent()).unwrap().scene
+}
+
+/// The `name = value` lines of `names` (every step of `worked` where `None`), in the key's
+/// order, with Rust's round-trip digits.
+fn printed_of(worked: &Worked, names: Option<&[String]>) -> String {
+    let mut text = String::new();
+    for (name, v) in &worked.values {
+        if names.is_some_and(|n| !n.contains(name)) {
+            continue;
+        }
+        let numbers: Vec<String> = v.iter().map(|x| format!("{x}")).collect();
+        let value = if v.len() == 1 { numbers[0].clone() } else { format!("[{}]", numbers.join(" ")) };
+        text.push_str(&format!("{name} =  {value}\n"));
+    }
+    text
+}
+
+/// A notebook of code cells, each `(execution_count, outputs)`.
+fn notebook(cells: &[(Option<i64>, serde_json::Value)]) -> String {
+    let cells: Vec<serde_json::Value> = cells
+        .iter()
+        .map(|(n, outputs)| {
+            serde_json::json!({"cell_type": "code", "execution_count": n, "source": ["x = 1\n"], "outputs": outputs})
+        })
+        .collect();
+    serde_json::json!({"cells": cells}).to_string()
+}
+
+fn stream(text: &str) -> serde_json::Value {
+    serde_json::json!([{"output_type": "stream", "name": "stdout", "text": text}])
+}
+
+#[test]
+fn a_step_the_worksheet_asks_for_not_printed_makes_the_work_incomplete_naming_the_first() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = work(&scene, None, None);
+    let whole = printed_of(&key, None);
+    assert_eq!(check(&scene, &scene, &printed_text(&whole)).overall(), Overall::Right);
+    // The outputs cleared from Ispec on (the first wrong step of a hostile notebook).
+    let cut = whole.find("\nIspec =").unwrap_or_else(|| panic!("{whole}"));
+    let c = check(&scene, &scene, &printed_text(&whole[..=cut]));
+    assert!(!c.right());
+    assert_eq!(c.overall(), Overall::Incomplete);
+    assert!(c.first_wrong.is_none() && c.causes.is_empty());
+    assert_eq!(c.not_printed, ["Ispec", "I"]);
+    assert_eq!(c.unchecked().unwrap().id(), "missing-steps");
+    let words = phonglab_core::study::check::said::words(&c);
+    assert!(words.contains("incomplete: the worksheet asks for 2 steps this work does not print, the first Ispec: Ispec, I"), "{words}");
+    assert!(!words.contains("all right"), "{words}");
+    // One right line: incomplete, every other step named in the worksheet's order.
+    let one = check(&scene, &scene, &printed_text("vlv =  [ 0.79220526  0.55887606 -0.2450885   0.        ]\n"));
+    assert_eq!(one.steps[0].verdict, Verdict::Right);
+    assert_eq!(one.overall(), Overall::Incomplete);
+    assert_eq!(one.not_printed, ["vertexNormal", "vov", "Iamb", "Idif", "Ispec", "I"]);
+    // A wrong step is wrong, whole or not, and the steps not printed are still named.
+    let wrong = check(&scene, &scene, &printed_text("vlv =  [ 0.5  0.55887606 -0.2450885   0.        ]\n"));
+    assert_eq!(wrong.overall(), Overall::Wrong);
+    assert_eq!(wrong.not_printed.len(), 6);
+}
+
+/// The worksheet's own `print` lines are all a work must print, under every rule set and
+/// scene: `H`, `d`, `spot`, `Iscene`, `glColor` or the back side are checked where printed,
+/// never asked; a light of several is asked for each light.
+#[test]
+fn only_the_worksheets_printed_steps_are_asked_under_every_rule_set() {
+    let mut scenes = vec![phonglab_core::presets::worksheet(5)];
+    for name in ["spotlight.toml", "three-lights.toml", "phong-demo.toml", "worksheet-mview1.toml", "of-set-color.toml"]
+    {
+        scenes.push(scene_file(name));
+    }
+    let mut two_sided = scene_file("spotlight.toml");
+    two_sided.light_model.two_sided = true;
+    scenes.push(two_sided);
+    for scene in &scenes {
+        let key = work(scene, None, None);
+        let names = asked(&key);
+        for n in &names {
+            assert!(ASKED.contains(&n.split('[').next().unwrap()), "{n}");
+        }
+        for base in ["vertexNormal", "I"] {
+            assert!(names.iter().any(|n| n == base), "{base} asked: {names:?}");
+        }
+        let per_light = names.iter().filter(|n| n.starts_with("vlv")).count();
+        assert_eq!(per_light, scene.lights.len(), "{names:?}");
+        // Printing just those is whole and right; the key's every step too.
+        let c = check(scene, scene, &printed_text(&printed_of(&key, Some(&names))));
+        assert!(c.right(), "{names:?}: {:?} {:?}", c.unchecked(), c.steps);
+        assert!(check(scene, scene, &printed_text(&printed_of(&key, None))).right());
+        // Without the last asked step: incomplete, that step named.
+        let fewer = &names[..names.len() - 1];
+        let c = check(scene, scene, &printed_text(&printed_of(&key, Some(fewer))));
+        assert_eq!(c.overall(), Overall::Incomplete, "{names:?}");
+        assert_eq!(c.not_printed, [names.last().unwrap().clone()]);
+    }
+}
+
+/// A step printed with the wrong number of components is wrong, never right or rounding.
+#[test]
+fn a_step_printed_with_the_wrong_length_is_wrong() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = printed_of(&work(&scene, None, None), None);
+    for short in ["vlv =  [0.79220526 0.55887606]", "vlv =  0.79220526", "vlv =  [0.79220526 0.55887606 -0.2450885 0. 0.]"] {
+        let line = key.lines().find(|l| l.starts_with("vlv =")).unwrap();
+        let c = check(&scene, &scene, &printed_text(&key.replace(line, short)));
+        assert_eq!(c.overall(), Overall::Wrong, "{short}");
+        assert_eq!(c.steps[c.first_wrong.unwrap()].name, "vlv", "{short}");
+    }
+}
+
+/// A cell's error output stops the run whatever its name (`KeyboardInterrupt`,
+/// `Exception`), and what the cells after it printed is from an earlier run: named, and
+/// never checked, so the steps it held are not printed.
+#[test]
+fn outputs_after_a_cells_error_are_not_checked_and_any_error_stops_the_run() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = work(&scene, None, None);
+    let asked = asked(&key);
+    let before: Vec<String> = asked.iter().take(3).cloned().collect();
+    let after: Vec<String> = asked.iter().skip(3).cloned().collect();
+    for ename in ["KeyboardInterrupt", "Exception", "NameError"] {
+        let error = serde_json::json!([{"output_type": "error", "ename": ename, "evalue": "stop\nmore", "traceback": []}]);
+        let nb = notebook(&[
+            (Some(1), stream(&printed_of(&key, Some(&before)))),
+            (Some(2), error),
+            (Some(3), stream(&printed_of(&key, Some(&after)))),
+        ]);
+        let p = notebook_outputs(&nb).unwrap();
+        assert_eq!(p.errors, [format!("{ename}: stop")]);
+        assert_eq!(p.after_error, after, "{ename}");
+        assert!(p.values.iter().all(|v| before.contains(&v.name)), "{ename}: {:?}", p.values);
+        let c = check(&scene, &scene, &p);
+        assert_eq!(c.overall(), Overall::Incomplete, "{ename}");
+        assert_eq!(c.unchecked().unwrap().id(), "run-stopped");
+        assert_eq!(c.not_printed, after);
+        let words = phonglab_core::study::check::said::words(&c);
+        assert!(words.contains("printed after the error, so by an earlier run"), "{words}");
+        assert!(words.contains(&format!("the first {}", after[0])), "{words}");
+    }
+}
+
+/// Outputs whose execution counts go back are not one run's (a cell run again after the
+/// cells below it): said, never right; counts left null (a notebook written by a program)
+/// say nothing.
+#[test]
+fn outputs_out_of_order_are_not_right() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = work(&scene, None, None);
+    let names = asked(&key);
+    let (a, b) = names.split_at(3);
+    let cells = |first: Option<i64>, second: Option<i64>| {
+        notebook(&[(first, stream(&printed_of(&key, Some(a)))), (second, stream(&printed_of(&key, Some(b))))])
+    };
+    let p = notebook_outputs(&cells(Some(5), Some(3))).unwrap();
+    assert_eq!(p.stale, Some((5, 3)));
+    let c = check(&scene, &scene, &p);
+    assert_eq!(c.overall(), Overall::Incomplete);
+    assert_eq!(c.unchecked().unwrap().id(), "stale-outputs");
+    assert!(phonglab_core::study::check::said::words(&c).contains("a cell numbered [3] below one numbered [5]"));
+    for (x, y) in [(Some(1), Some(2)), (None, None), (Some(4), None)] {
+        let p = notebook_outputs(&cells(x, y)).unwrap();
+        assert_eq!(p.stale, None, "{x:?} {y:?}");
+        assert!(check(&scene, &scene, &p).right(), "{x:?} {y:?}");
+    }
+    assert_eq!(notebook_outputs(&cells(Some(2), Some(2))).unwrap().stale, Some((2, 2)));
+}
