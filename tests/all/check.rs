@@ -713,7 +713,8 @@ fn a_class_with_hostile_names_gets_a_report_and_marks_that_keep_them_as_data() {
 }
 
 /// A run that checked nothing is not right: text with no step of the worksheet in it
-/// says so, and its JSON verdict is "wrong" with no first wrong step and the reason.
+/// says so, and its JSON verdict is "incomplete" (issue 57; it was "wrong") with no first
+/// wrong step and the reason.
 #[test]
 fn printed_text_with_no_step_is_not_right() {
     use std::io::Write;
@@ -729,7 +730,7 @@ fn printed_text_with_no_step_is_not_right() {
     child.stdin.take().unwrap().write_all(b"hello\n").unwrap();
     let out = child.wait_with_output().unwrap();
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert_eq!(json["verdict"], "wrong", "{json:#}");
+    assert_eq!(json["verdict"], "incomplete", "{json:#}");
     assert_eq!(out.status.code(), Some(1), "unchecked work is not right: exit 1");
     assert!(json["first_wrong"].is_null());
     assert_eq!(json["unchecked"]["id"], "nothing-compared");
@@ -1052,4 +1053,103 @@ fn a_given_changed_in_place_is_refused_and_a_fifo_or_folder_is_named() {
         assert!(marks.contains("fifo.ipynb,unread,,not a regular file"), "{marks}");
         assert!(!marks.contains("a link"), "{marks}");
     }
+}
+
+/// The exported worksheet notebook with H's mistake, run, and its outputs cleared from the
+/// cell of H on (a hostile classmate's way to pass it): incomplete, never right, in the
+/// terminal, the JSON, the report and the marks, the first step not printed named.
+#[test]
+fn a_notebook_cleared_from_its_first_wrong_step_on_is_incomplete_everywhere() {
+    let Some(python) = python_with_numpy() else {
+        eprintln!("SKIPPED: no python3 with NumPy here (Debian: python3-numpy)");
+        return;
+    };
+    let dir = TempDir::new("cleared");
+    let doc = worksheet();
+    std::fs::write(dir.path().join("0.ipynb"), edited("H", &doc, &[("H = (vlv + vov)", "H = (vlv - vov)")])).unwrap();
+    let ran = run_all(python, dir.path(), 1);
+    let mut nb: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&ran[0]).unwrap()).unwrap();
+    let mut cleared = false;
+    for cell in nb["cells"].as_array_mut().unwrap() {
+        let source: String = cell["source"].as_array().unwrap().iter().map(|l| l.as_str().unwrap()).collect();
+        cleared |= source.contains("H = (vlv - vov)");
+        if cleared {
+            cell["outputs"] = serde_json::json!([]);
+        }
+    }
+    assert!(cleared, "the notebook has H's cell");
+    let class = dir.path().join("class");
+    std::fs::create_dir_all(&class).unwrap();
+    let work = class.join("cleared.ipynb");
+    std::fs::write(&work, nb.to_string()).unwrap();
+    let toml = dir.path().join("scene.toml");
+    std::fs::write(&toml, doc.to_toml().unwrap()).unwrap();
+    let json = check_json(&work, &toml);
+    assert_eq!(json["verdict"], "incomplete", "{json:#}");
+    assert_eq!(json["missing"], serde_json::json!(["Ispec", "I"]), "{json:#}");
+    assert!(json["first_wrong"].is_null() && json["causes"].as_array().unwrap().is_empty(), "{json:#}");
+    assert_eq!(json["unchecked"]["id"], "missing-steps", "{json:#}");
+    let out = common::phonglab(&["check", work.to_str().unwrap(), "--scene", toml.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("incomplete: the worksheet asks for 2 steps this work does not print, the first Ispec: Ispec, I"), "{text}");
+    assert!(!text.contains("all right"), "{text}");
+    let pt = common::phonglab_in("pt_PT.UTF-8", &["check", work.to_str().unwrap()]);
+    let pt = String::from_utf8_lossy(&pt.stdout);
+    assert!(pt.contains("incompleto: a ficha pede 2 passos que este trabalho não imprime, o primeiro Ispec"), "{pt}");
+    // The class: the marks and the report say incomplete, and why.
+    let (report, csv) = (dir.path().join("turma.md"), dir.path().join("notas.csv"));
+    let out = common::phonglab(&[
+        "check",
+        class.to_str().unwrap(),
+        "--scene",
+        toml.to_str().unwrap(),
+        "--report",
+        report.to_str().unwrap(),
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let marks = std::fs::read_to_string(&csv).unwrap();
+    let row = marks.lines().nth(1).unwrap();
+    assert!(row.starts_with("cleared.ipynb,incomplete,,") && row.contains("the first Ispec: Ispec, I"), "{marks}");
+    let md = std::fs::read_to_string(&report).unwrap();
+    assert!(md.contains("| cleared.ipynb | incomplete |  | incomplete: the worksheet asks for 2 steps"), "{md}");
+    assert!(md.contains("- incomplete (a step not printed"), "{md}");
+}
+
+/// `check --printed -` given one right line is incomplete, every other step the worksheet
+/// asks for named, and exits 1; the whole of what the worksheet prints is right.
+#[test]
+fn printed_text_of_one_right_line_is_incomplete() {
+    use std::io::Write;
+    let run = |text: &str| {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_phonglab"))
+            .args(["check", "--printed", "-", "--json"])
+            .env_remove("LC_MESSAGES")
+            .env_remove("LANG")
+            .env("LC_ALL", "C.UTF-8")
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        child.stdin.take().unwrap().write_all(text.as_bytes()).unwrap();
+        let out = child.wait_with_output().unwrap();
+        (serde_json::from_slice::<serde_json::Value>(&out.stdout).unwrap(), out.status.code())
+    };
+    let vlv = "vlv =  [ 0.79220526  0.55887606 -0.2450885   0.        ]\n";
+    let (json, code) = run(vlv);
+    assert_eq!((json["verdict"].as_str(), code), (Some("incomplete"), Some(1)), "{json:#}");
+    assert_eq!(json["missing"], serde_json::json!(["vertexNormal", "vov", "Iamb", "Idif", "Ispec", "I"]));
+    assert_eq!(json["steps"][0]["verdict"], "right");
+    // The worksheet's own printed output (its seven print lines) is whole and right.
+    let sheet = "modelview = \n[[ 1.0e+00  0.0e+00  0.0e+00  0.0e+00]\n [ 0.0e+00  8.0e-01  6.0e-01  0.0e+00]\n \
+                 [ 0.0e+00 -6.0e-01  8.0e-01 -9.6e+02]\n [ 0.0e+00  0.0e+00  0.0e+00  1.0e+00]]\n\
+                 vertexNormal = [0.  0.6 0.8 0. ]\nvlv = [ 0.79220526  0.55887606 -0.2450885   0.      ]\n\
+                 vov = [0. 0. 1. 0.]\nIamb = [0.2125 0.1275 0.054 0.      ]\n\
+                 Idif = [0.09942795 0.05965677 0.0252664 0.]\nIspec = [0.00040551 0.00028017 0.00017179 0.]\n\
+                 I = [0.05958709 0.03575929 0.01515525 0.          ]\n";
+    let (json, code) = run(sheet);
+    assert_eq!((json["verdict"].as_str(), code), (Some("right"), Some(0)), "{json:#}");
+    assert_eq!(json["missing"], serde_json::json!([]));
 }
