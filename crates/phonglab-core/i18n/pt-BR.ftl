@@ -854,6 +854,7 @@ check-nothing-compared = não verificado: nada do que você imprimiu é um passo
 check-unreadable-steps = não verificado por inteiro: estes passos foram impressos com valores que não são números como o NumPy ou o Python os imprimem ({ $names }); imprima cada valor sozinho
 check-missing-steps = não verificado: o notebook não tem valor para { $names }: uma célula não foi executada ou parou com um erro. Execute todas as células (Jupyter: Kernel → Restart & Run All) e depois esta
 check-incomplete = incompleto: a lista pede { $count ->
+        [0] nenhum passo
         [one] um passo
        *[other] { $count } passos
     } que este trabalho não imprime, o primeiro { $first }: { $names }. Execute todas as células (Jupyter: Kernel → Restart & Run All), imprima cada passo como a lista faz (print("vlv = ", vlv)) e verifique de novo
