@@ -807,3 +807,27 @@ fn a_mistake_of_few_pixels_is_shown_wrong_with_where_it_shows_as_the_command_lin
     assert_eq!(pictures.len(), 3);
     assert!(shown.bottom() <= pictures[0].top() && shown.right() <= 1280.0, "{shown:?} {pictures:?}");
 }
+
+/// Issue 57: work that does not print every step the worksheet asks for is not "all
+/// right" in the window either: the steps not printed are said, the first named, inside
+/// the window at the smallest size.
+#[test]
+fn work_missing_a_step_is_said_incomplete_in_the_window() {
+    let dir = TempDir::new("incomplete");
+    let path = dir.0.join("cut.txt");
+    let whole = printed(None);
+    let cut = whole.find("\nIspec =").expect("Ispec printed");
+    std::fs::write(&path, &whole[..=cut]).unwrap();
+    for (w, ht) in [(1024.0, 600.0), (1280.0, 720.0)] {
+        let mut h = harness(w, ht);
+        check_through_the_menu(&mut h, &path);
+        let check = h.state().student.as_ref().expect("checked").check.clone();
+        assert!(!check.right() && check.first_wrong.is_none());
+        assert_eq!(check.not_printed, ["Ispec", "I"]);
+        assert!(h.query_by_label("all right: every step printed is the key's").is_none());
+        let line = h.get_by_label_contains("incomplete: the worksheet asks for 2 steps").rect();
+        let heading = h.get_by_label("Worked calculation").rect();
+        assert!(line.left() >= heading.left() - 1.0 && line.right() <= w, "{heading:?} {line:?}");
+        assert!(h.query_by_label_contains("the first Ispec: Ispec, I").is_some());
+    }
+}

@@ -852,8 +852,8 @@ check-missing-steps = not checked: the notebook holds no value for { $names }: a
 check-incomplete = incomplete: the worksheet asks for { $count ->
         [one] a step
        *[other] { $count } steps
-    } this work does not print, the first { $first }: { $names }. Run every cell (Jupyter: Kernel → Restart & Run All), print each step as the worksheet does (print("vlv = ", vlv)), and check it again
-check-stale-outputs = not checked whole: the outputs are not from one run in order (a cell numbered [{ $later }] below one numbered [{ $earlier }]: a cell was run again, or out of order). Run every cell again (Jupyter: Kernel → Restart & Run All), save, and check it again
+    } this work does not print, the first { $first }: { $names }. Run every cell (Jupyter: Restart & Run All, in the Kernel menu), print each step as the worksheet does (print("vlv = ", vlv)), and check it again
+check-stale-outputs = not checked whole: the outputs are not from one run in order (a cell numbered [{ $later }] below one numbered [{ $earlier }]: a cell was run again, or out of order). Run every cell again (Jupyter: Restart & Run All, in the Kernel menu), save, and check it again
 check-after-error = printed after the error, so by an earlier run (Run All stops at an error), and not checked: { $names }
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) draws the shading this program was written for (Gouraud: the vertices' colours interpolated; Phong: each pixel lit). With GL_FLAT the shaders draw what fixed-function OpenGL draws: each face in the colour lit at its provoking vertex (a triangle’s or a quad’s last vertex).

@@ -857,8 +857,8 @@ check-incomplete = incompleto: a lista pede { $count ->
         [0] nenhum passo
         [one] um passo
        *[other] { $count } passos
-    } que este trabalho não imprime, o primeiro { $first }: { $names }. Execute todas as células (Jupyter: Kernel → Restart & Run All), imprima cada passo como a lista faz (print("vlv = ", vlv)) e verifique de novo
-check-stale-outputs = não verificado por inteiro: as saídas não são de uma única execução, em ordem (uma célula numerada [{ $later }] abaixo de uma numerada [{ $earlier }]: uma célula foi executada de novo, ou fora de ordem). Execute de novo todas as células (Jupyter: Kernel → Restart & Run All), salve e verifique de novo
+    } que este trabalho não imprime, o primeiro { $first }: { $names }. Execute todas as células (Jupyter: Restart & Run All, no menu Kernel), imprima cada passo como a lista faz (print("vlv = ", vlv)) e verifique de novo
+check-stale-outputs = não verificado por inteiro: as saídas não são de uma única execução, em ordem (uma célula numerada [{ $later }] abaixo de uma numerada [{ $earlier }]: uma célula foi executada de novo, ou fora de ordem). Execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel), salve e verifique de novo
 check-after-error = impresso depois do erro, portanto por uma execução anterior (o Run All para em um erro), e não verificado: { $names }
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) desenha o sombreamento para o qual este programa foi escrito (Gouraud: as cores dos vértices interpoladas; Phong: cada pixel iluminado). Com GL_FLAT, os shaders desenham o que o OpenGL de pipeline fixo desenha: cada face na cor calculada no seu vértice provocante (o último vértice de um triângulo ou de um quadrilátero).

@@ -852,8 +852,8 @@ check-missing-steps = não verificado: o caderno não tem valor para { $names }:
 check-incomplete = incompleto: a ficha pede { $count ->
         [one] um passo
        *[other] { $count } passos
-    } que este trabalho não imprime, o primeiro { $first }: { $names }. Execute todas as células (Jupyter: Kernel → Restart & Run All), imprima cada passo como a ficha faz (print("vlv = ", vlv)) e verifique-o de novo
-check-stale-outputs = não verificado por inteiro: as saídas não são de uma só execução, por ordem (uma célula numerada [{ $later }] abaixo de uma numerada [{ $earlier }]: uma célula foi executada de novo, ou fora de ordem). Execute de novo todas as células (Jupyter: Kernel → Restart & Run All), guarde e verifique-o de novo
+    } que este trabalho não imprime, o primeiro { $first }: { $names }. Execute todas as células (Jupyter: Restart & Run All, no menu Kernel), imprima cada passo como a ficha faz (print("vlv = ", vlv)) e verifique-o de novo
+check-stale-outputs = não verificado por inteiro: as saídas não são de uma só execução, por ordem (uma célula numerada [{ $later }] abaixo de uma numerada [{ $earlier }]: uma célula foi executada de novo, ou fora de ordem). Execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel), guarde e verifique-o de novo
 check-after-error = impresso depois do erro, portanto por uma execução anterior (o Run All para num erro), e não verificado: { $names }
 # fix57b
 py-shade-model-comment = glShadeModel(GL_SMOOTH) desenha o sombreamento para que este programa foi escrito (Gouraud: as cores dos vértices interpoladas; Phong: cada píxel iluminado). Com GL_FLAT, os shaders desenham o que o OpenGL de pipeline fixo desenha: cada face na cor calculada no seu vértice provocante (o último vértice de um triângulo ou de um quadrilátero).
