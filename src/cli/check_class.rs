@@ -241,7 +241,12 @@ fn causes(c: &Check) -> String {
         // Why it is incomplete, and the steps the worksheet asks for not printed.
         let why = c.unchecked();
         let not_printed = c.not_printed_reason().filter(|n| why.as_ref() != Some(n));
-        return why.iter().chain(&not_printed).map(|u| u.words()).collect::<Vec<_>>().join("; ");
+        return why
+            .iter()
+            .chain(&not_printed)
+            .map(phonglab_core::study::check::Unchecked::words)
+            .collect::<Vec<_>>()
+            .join("; ");
     }
     // A typed input that differs is the first finding, as the single check says it.
     let mut said: Vec<String> = Vec::new();

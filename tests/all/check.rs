@@ -1092,7 +1092,10 @@ fn a_notebook_cleared_from_its_first_wrong_step_on_is_incomplete_everywhere() {
     let out = common::phonglab(&["check", work.to_str().unwrap(), "--scene", toml.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(1));
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(text.contains("incomplete: the worksheet asks for 2 steps this work does not print, the first Ispec: Ispec, I"), "{text}");
+    assert!(
+        text.contains("incomplete: the worksheet asks for 2 steps this work does not print, the first Ispec: Ispec, I"),
+        "{text}"
+    );
     assert!(!text.contains("all right"), "{text}");
     let pt = common::phonglab_in("pt_PT.UTF-8", &["check", work.to_str().unwrap()]);
     let pt = String::from_utf8_lossy(&pt.stdout);

@@ -62,7 +62,11 @@ fn a_step_the_worksheet_asks_for_not_printed_makes_the_work_incomplete_naming_th
     assert_eq!(c.not_printed, ["Ispec", "I"]);
     assert_eq!(c.unchecked().unwrap().id(), "missing-steps");
     let words = phonglab_core::study::check::said::words(&c);
-    assert!(words.contains("incomplete: the worksheet asks for 2 steps this work does not print, the first Ispec: Ispec, I"), "{words}");
+    assert!(
+        words
+            .contains("incomplete: the worksheet asks for 2 steps this work does not print, the first Ispec: Ispec, I"),
+        "{words}"
+    );
     assert!(!words.contains("all right"), "{words}");
     // One right line: incomplete, every other step named in the worksheet's order.
     let one = check(&scene, &scene, &printed_text("vlv =  [ 0.79220526  0.55887606 -0.2450885   0.        ]\n"));
@@ -116,7 +120,9 @@ fn only_the_worksheets_printed_steps_are_asked_under_every_rule_set() {
 fn a_step_printed_with_the_wrong_length_is_wrong() {
     let scene = phonglab_core::presets::worksheet(5);
     let key = printed_of(&work(&scene, None, None), None);
-    for short in ["vlv =  [0.79220526 0.55887606]", "vlv =  0.79220526", "vlv =  [0.79220526 0.55887606 -0.2450885 0. 0.]"] {
+    for short in
+        ["vlv =  [0.79220526 0.55887606]", "vlv =  0.79220526", "vlv =  [0.79220526 0.55887606 -0.2450885 0. 0.]"]
+    {
         let line = key.lines().find(|l| l.starts_with("vlv =")).unwrap();
         let c = check(&scene, &scene, &printed_text(&key.replace(line, short)));
         assert_eq!(c.overall(), Overall::Wrong, "{short}");
@@ -135,7 +141,8 @@ fn outputs_after_a_cells_error_are_not_checked_and_any_error_stops_the_run() {
     let before: Vec<String> = asked.iter().take(3).cloned().collect();
     let after: Vec<String> = asked.iter().skip(3).cloned().collect();
     for ename in ["KeyboardInterrupt", "Exception", "NameError"] {
-        let error = serde_json::json!([{"output_type": "error", "ename": ename, "evalue": "stop\nmore", "traceback": []}]);
+        let error =
+            serde_json::json!([{"output_type": "error", "ename": ename, "evalue": "stop\nmore", "traceback": []}]);
         let nb = notebook(&[
             (Some(1), stream(&printed_of(&key, Some(&before)))),
             (Some(2), error),
