@@ -187,3 +187,20 @@ fn outputs_out_of_order_are_not_right() {
     }
     assert_eq!(notebook_outputs(&cells(Some(2), Some(2))).unwrap().stale, Some((2, 2)));
 }
+
+/// The notebook's self-check names the steps it holds no value for; they are said once
+/// (not again as not printed), and the work is incomplete.
+#[test]
+fn steps_the_self_check_found_missing_are_said_once() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = work(&scene, None, None);
+    let names: Vec<String> = asked(&key).into_iter().filter(|n| n != "Iamb" && n != "I").collect();
+    let mut p = printed_text(&printed_of(&key, Some(&names)));
+    p.missing = vec!["Iamb".into(), "I".into()];
+    let c = check(&scene, &scene, &p);
+    assert_eq!(c.overall(), Overall::Incomplete);
+    assert!(c.not_printed.is_empty(), "{:?}", c.not_printed);
+    assert_eq!(c.all_missing(), ["Iamb", "I"]);
+    let words = phonglab_core::study::check::said::words(&c);
+    assert!(words.contains("holds no value for Iamb, I") && !words.contains("incomplete:"), "{words}");
+}

@@ -391,8 +391,11 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
     };
     let unreadable = student.unread.iter().filter(|n| key.get(n).is_some()).cloned().collect();
     let missing = student.missing.iter().filter(|n| key.get(n).is_some()).cloned().collect();
-    let not_printed =
-        asked(&key).into_iter().filter(|n| student.get(n).is_none() && !student.unread.contains(n)).collect();
+    // Asked and not printed; what the self-check already found missing is said once, there.
+    let not_printed = asked(&key)
+        .into_iter()
+        .filter(|n| student.get(n).is_none() && !student.unread.contains(n) && !student.missing.contains(n))
+        .collect();
     Check {
         rules: assignment.rules,
         inputs_differ,
