@@ -52,7 +52,7 @@ fn read_printed(path: &Path) -> Result<Printed> {
 }
 
 /// Runs `phonglab check`: whether the work is right (the exit code, for scripts and
-/// autograders: 0 right, 1 wrong or unchecked; [`super::judged`]); for a class folder,
+/// autograders: 0 right, 1 wrong or incomplete; [`super::judged`]); for a class folder,
 /// true once the report is written.
 pub fn run(a: &CheckArgs) -> Result<bool> {
     let assignment = match &a.scene {

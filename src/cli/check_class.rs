@@ -211,7 +211,12 @@ fn summary(m: &Marked) -> String {
         Err(e) => t!("check-report-unreadable", reason = e.clone()),
         Ok(c) => match c.overall() {
             Overall::Right => t!("check-verdict-word-right"),
-            Overall::Incomplete => format!("{}: {}", verdict_word(c), causes(c)),
+            // The reason may itself open with the verdict ("incomplete: the worksheet asks ..."):
+            // said once.
+            Overall::Incomplete => {
+                let (word, why) = (verdict_word(c), causes(c));
+                if why.starts_with(&format!("{word}:")) { why } else { format!("{word}: {why}") }
+            }
             Overall::Wrong => format!("{}: {} ({})", verdict_word(c), first_wrong(c), causes(c)),
         },
     }

@@ -1119,6 +1119,11 @@ fn a_notebook_cleared_from_its_first_wrong_step_on_is_incomplete_everywhere() {
     let md = std::fs::read_to_string(&report).unwrap();
     assert!(md.contains("| cleared.ipynb | incomplete |  | incomplete: the worksheet asks for 2 steps"), "{md}");
     assert!(md.contains("- incomplete (a step not printed"), "{md}");
+    // On the terminal, one line a student, the verdict said once.
+    let out = common::phonglab(&["check", class.to_str().unwrap(), "--scene", toml.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.starts_with("cleared.ipynb: incomplete: the worksheet asks for 2 steps"), "{text}");
+    assert!(!text.contains("incomplete: incomplete"), "{text}");
 }
 
 /// `check --printed -` given one right line is incomplete, every other step the worksheet
