@@ -471,6 +471,44 @@ mod tests {
         assert_eq!(steps, 13);
     }
 
+    /// Issue 59, #70: a writer killed mid-swap, then a file of the half-placed new set
+    /// edited by the teacher, then a smaller set: the recovery cannot place the edited
+    /// name (and says so), but records the new files it did place, so the smaller set
+    /// removes them; the folder ends with the smaller set, the edited file and the user's.
+    #[test]
+    fn a_stopped_set_with_an_edited_file_leaves_nothing_unrecorded_behind_the_next_set() {
+        let belongs = |n: &str| n.ends_with(".md");
+        let mut edited_once = false;
+        for n in 0.. {
+            let dir = temp_dir("stopped-edited");
+            old_set(&dir);
+            if with_fault(Fault::KilledAtStep(n), || write_set(&dir, &new_set(), belongs)).is_ok() {
+                break;
+            }
+            // The new a.md in place while the swap is not finished: the teacher edits it.
+            let placed = std::fs::read(dir.join("a.md")).is_ok_and(|b| b == vec![b'A'; 5000]);
+            let unfinished = journal_in(&dir).is_some_and(|(_, j)| j.decided);
+            let edited = placed && unfinished;
+            if edited {
+                std::fs::write(dir.join("a.md"), "the teacher's edit").unwrap();
+                edited_once = true;
+            }
+            let mut small = FileSet::default();
+            small.add("z.md", "small");
+            for _ in 0..2 {
+                let notices = write_set(&dir, &small, belongs).unwrap();
+                assert_eq!(notices.len(), usize::from(edited), "killed at step {n}: {notices:?}");
+            }
+            let names: Vec<String> = listing(&dir).into_iter().map(|(n, _)| n).collect();
+            let want: &[&str] = if edited { &["a.md", "mine.txt", "z.md"] } else { &["mine.txt", "z.md"] };
+            assert_eq!(names, want, "killed at step {n} (edited: {edited})");
+            if edited {
+                assert_eq!(std::fs::read(dir.join("a.md")).unwrap(), b"the teacher's edit");
+            }
+        }
+        assert!(edited_once, "some step leaves the new a.md in place, unfinished");
+    }
+
     /// Every state a swap or its undo can be in when the process dies (each file of either
     /// set in place or in the staging folder, one rename at a time), with the journal:
     /// recovery gives the new set, whole.
