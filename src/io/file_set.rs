@@ -143,6 +143,8 @@ pub fn hold_folder(dir: &Path) -> Result<HeldFolder, WriteError> {
         let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-is-a-link"));
         return Err(WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED));
     }
+    // A name Windows cannot keep (`set ` made `set`, then failed, leaving it: #53).
+    super::atomic_write::refuse_unkept(dir)?;
     // A file of that name: `create_dir_all` would say only "it already exists".
     if std::fs::metadata(dir).is_ok_and(|m| !m.is_dir()) {
         let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-is-a-file"));

@@ -325,6 +325,7 @@ pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
 /// work, where a link at an output's name may be a student's).
 pub fn write_here(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
     const KEPT: &str = "write-kept-file";
+    refuse_unkept(path)?;
     let name = file_name_of(path).map_err(|e| WriteError::new(path, "write-step-name", e, "write-kept-nothing"))?;
     refuse_not_a_file(path, "write-kept-nothing")?;
     let dir = folder_of(path);
@@ -348,11 +349,22 @@ pub fn write_here(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
     Ok(())
 }
 
+/// Refuses `path` where Windows cannot keep its name, or a folder's above it that is not
+/// there yet (a device's name, a dot or a space at the end:
+/// [`super::same_file::refuse_unkept_name`]), before anything is made.
+pub fn refuse_unkept(path: &Path) -> Result<(), WriteError> {
+    super::same_file::refuse_unkept_name(path).map_err(|why| {
+        let e = io::Error::new(io::ErrorKind::InvalidInput, why);
+        WriteError::new(path, "write-step-name", e, "write-kept-nothing")
+    })
+}
+
 /// Checks, before long work, that a file can be created in `path`'s folder (by creating
 /// and removing a temporary file there; through a link, in the folder of the file it
 /// names) and that what is at `path` is a regular file or nothing.
 pub fn check_file_destination(path: &Path) -> Result<(), WriteError> {
     const KEPT: &str = "write-kept-nothing";
+    refuse_unkept(path)?;
     let resolved = through_links(path).map_err(|e| WriteError::new(path, "write-step-name", e, KEPT))?;
     let name = file_name_of(&resolved).map_err(|e| WriteError::new(path, "write-step-name", e, KEPT))?;
     refuse_not_a_file(&resolved, KEPT)?;
@@ -363,6 +375,7 @@ pub fn check_file_destination(path: &Path) -> Result<(), WriteError> {
 /// can be created in it.
 pub fn check_folder_destination(dir: &Path) -> Result<(), WriteError> {
     const KEPT: &str = "write-kept-nothing";
+    refuse_unkept(dir)?;
     // A file of that name (or a link to one): `create_dir_all` would say only "it already
     // exists", as though the folder were the trouble.
     if std::fs::metadata(dir).is_ok_and(|m| !m.is_dir()) {
