@@ -278,7 +278,12 @@ pub fn recover(dir: &Path) -> io::Result<Vec<String>> {
     super::set_journal::recover_locked(dir)
 }
 
-fn stage_and_swap(held: &HeldFolder, staging: &Path, set: &FileSet, belongs: &dyn Fn(&str) -> bool) -> Result<(), Stop> {
+fn stage_and_swap(
+    held: &HeldFolder,
+    staging: &Path,
+    set: &FileSet,
+    belongs: &dyn Fn(&str) -> bool,
+) -> Result<(), Stop> {
     let dir = held.dir();
     let (_, here) = Identity::at(staging).map_err(|e| WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED))?;
     let mut journal = Journal { staging: here, decided: false, new: Vec::new(), old: Vec::new() };
