@@ -107,74 +107,16 @@ pub fn refuse_output_onto_input(outputs: &[&Path], inputs: &[&Path]) -> Result<(
     refuse_onto(outputs, &inputs)
 }
 
-/// Why Windows cannot keep a file's or folder's name as it is given ([`unkept_name`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Unkept {
-    /// A name Windows keeps for a device (`CON`, `NUL`, `AUX`, `PRN`, `COM1`-`COM9`,
-    /// `LPT1`-`LPT9`, with any extension: `con.png`, `nul.txt`): opening it opens the device.
-    Device,
-    /// A name ending in a dot or a space, which Windows drops (`rep.md.` is `rep.md`,
-    /// `set ` is `set`): another file than the one named.
-    DroppedEnd,
-}
-
-/// The names Windows keeps for devices (compared without case, before any extension).
-const DEVICES: [&str; 32] = [
-    "CON", "PRN", "AUX", "NUL", "COM0", "COM1", "COM2", "COM3", "COM4", "COM5", "COM6", "COM7", "COM8", "COM9", "COM¹",
-    "COM²", "COM³", "LPT0", "LPT1", "LPT2", "LPT3", "LPT4", "LPT5", "LPT6", "LPT7", "LPT8", "LPT9", "LPT¹", "LPT²",
-    "LPT³", "CONIN$", "CONOUT$",
-];
-
-/// Why Windows cannot keep the file or folder name `name` as it is, if it cannot: a
-/// device's name, or a dot or space at its end. Asked on every system, since a set or a
-/// picture written on Linux is opened on the lab's Windows PCs (docs/security.md).
-pub fn unkept_name(name: &std::ffi::OsStr) -> Option<Unkept> {
-    let name = name.to_string_lossy();
-    if name == "." || name == ".." {
-        return None;
-    }
-    if name.ends_with(['.', ' ']) {
-        return Some(Unkept::DroppedEnd);
-    }
-    let stem = name.split('.').next().unwrap_or_default().trim_end_matches(' ').to_uppercase();
-    DEVICES.contains(&stem.as_str()).then_some(Unkept::Device)
-}
-
-/// Refuses the output `path` when its name, or the name of a folder above it that is not
-/// there yet (one phonglab would make), is one Windows cannot keep ([`unkept_name`]): said
-/// before anything is written, with the name and why.
-pub fn refuse_unkept_name(path: &Path) -> Result<(), String> {
-    use crate::formats::escape::terminal::text;
-    let mut at = Some(path);
-    let mut last = true;
-    while let Some(here) = at {
-        let Some(name) = here.file_name() else { break };
-        if !last && std::fs::symlink_metadata(here).is_ok() {
-            break;
-        }
-        let shown_name = text(&name.to_string_lossy());
-        match unkept_name(name) {
-            Some(Unkept::Device) => return Err(t!("err-name-windows-device", name = shown_name)),
-            Some(Unkept::DroppedEnd) => {
-                let kept = text(name.to_string_lossy().trim_end_matches(['.', ' ']));
-                return Err(t!("err-name-windows-end", name = shown_name, kept = kept));
-            }
-            None => {}
-        }
-        last = false;
-        at = here.parent();
-    }
-    Ok(())
-}
-
 /// Refuses when an output in `outputs` is the same file as an input in `inputs` (each
 /// said as what it is: "the mesh"), or as another of the outputs ("the other output"),
-/// or has a name Windows cannot keep ([`refuse_unkept_name`]: `rep.md.` beside `rep.md`
+/// or has a name Windows cannot keep
+/// ([`refuse_unkept_name`](crate::formats::files::atomic_write::refuse_unkept_name): `rep.md.` beside `rep.md`
 /// is one file there).
 pub fn refuse_onto(outputs: &[&Path], inputs: &[(&Path, Input)]) -> Result<(), String> {
     use crate::formats::files::reasons::shown;
     for output in outputs {
-        refuse_unkept_name(output).map_err(|why| format!("{}: {why}", shown(output)))?;
+        crate::formats::files::atomic_write::refuse_unkept_name(output)
+            .map_err(|why| format!("{}: {why}", shown(output)))?;
     }
     for (k, output) in outputs.iter().enumerate() {
         let out_id = file_id(output);
@@ -260,6 +202,7 @@ mod tests {
     /// written; `rep.md.` beside `rep.md` was one file on Windows, written twice.
     #[test]
     fn names_windows_cannot_keep_are_refused_as_outputs_everywhere() {
+        use crate::formats::files::atomic_write::{Unkept, refuse_unkept_name, unkept_name};
         use std::ffi::OsStr;
         for device in ["CON", "nul", "Aux", "prn", "COM1", "lpt9", "con.png", "NUL.txt", "con .txt", "com¹"] {
             assert_eq!(unkept_name(OsStr::new(device)), Some(Unkept::Device), "{device}");
@@ -280,8 +223,9 @@ mod tests {
         // A folder phonglab would make, not one that is there (a Linux folder named aux).
         let e = refuse_unkept_name(&dir.join("set ").join("a.md")).unwrap_err();
         assert!(e.contains("set "), "{e}");
-        std::fs::create_dir_all(dir.join("aux")).unwrap();
+        // (Windows cannot make one: `aux` opens the device.)
         if !cfg!(windows) {
+            std::fs::create_dir_all(dir.join("aux")).unwrap();
             assert_eq!(refuse_unkept_name(&dir.join("aux").join("a.md")), Ok(()), "a folder already there");
         }
         assert_eq!(refuse_onto(&[&report, &dir.join("rep.csv")], &[]), Ok(()));
