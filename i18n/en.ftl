@@ -708,6 +708,7 @@ cost-wrote = wrote { $files } in { $out }
 ## io-errors
 
 set-folder-is-a-link = a link to another folder: phonglab writes a set of files only into a real folder, never through a link
+set-folder-replaced = moved or replaced (by a link or another folder) while phonglab was writing the set: nothing was written through it; the set was not written, and the next set in the folder that was there throws away what this one began
 set-record-not-one = a link, or not a regular file phonglab can have written (a pipe, a device, a folder, or a file over 1 MiB), where phonglab keeps its list of the files it wrote in this folder: phonglab never reads or writes through it. Remove it, or choose another folder
 set-waiting-for-lock = waiting: another phonglab is writing into { $dir }; this one goes on when it has finished
 set-left-alone = { $name } in { $dir } was left as it is: { $why }

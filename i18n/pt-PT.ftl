@@ -711,6 +711,7 @@ cost-wrote = escrito { $files } em { $out }
 ## io-errors
 
 set-folder-is-a-link = uma ligação para outra pasta: o phonglab só escreve um conjunto de ficheiros numa pasta verdadeira, nunca através de uma ligação
+set-folder-replaced = movida ou substituída (por uma ligação ou outra pasta) enquanto o phonglab escrevia o conjunto: nada foi escrito através dela; o conjunto não foi escrito, e o próximo conjunto na pasta que lá estava deita fora o que este começou
 set-record-not-one = uma ligação, ou algo que não é um ficheiro normal que o phonglab possa ter escrito (um pipe, um dispositivo, uma pasta, ou um ficheiro com mais de 1 MiB), onde o phonglab guarda a lista dos ficheiros que escreveu nesta pasta: o phonglab nunca lê nem escreve através dela. Remova-a, ou escolha outra pasta
 set-waiting-for-lock = à espera: outro phonglab está a escrever em { $dir }; este continua quando ele terminar
 set-left-alone = { $name } em { $dir } ficou como estava: { $why }

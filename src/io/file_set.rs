@@ -6,12 +6,14 @@
 //! 1. a staging folder, `.phonglab-set.<pid>.<n>.tmp`, is made in the target folder, and a
 //!    journal in it (`.phonglab-set.journal`) naming the folder itself;
 //! 2. the new set is written whole into the staging folder, and synced;
-//! 3. the journal is written again, whole (a temporary file renamed), naming the new set's
+//! 3. the folder is checked to be still the one held at the start (its identity, and no
+//!    link at its name): one moved away and replaced by a link meanwhile refuses the set;
+//! 4. the journal is written again, whole (a temporary file renamed), naming the new set's
 //!    files and the old set's, each with its size, hash and identity: from this instant the
 //!    new set is decided, and it is whole (in the staging folder, or already in place);
-//! 4. the old set's files are moved aside into the staging folder and the new ones renamed
+//! 5. the old set's files are moved aside into the staging folder and the new ones renamed
 //!    into place, where nothing is (each rename happens or does not);
-//! 5. the old files, the journal and the staging folder are removed.
+//! 6. the old files, the journal and the staging folder are removed.
 //!
 //! A failure before the journal decides leaves the old set untouched; a failure after it
 //! (a rename refused) moves everything back, so the folder is as it was. A process killed
@@ -70,6 +72,10 @@ fn step() -> Result<(), Killed> {
 enum Stop {
     Failed(WriteError),
     Killed,
+    /// The folder is no longer the one held (moved, or replaced by a link): refused with
+    /// no clean-up, since the staging folder's path now leads elsewhere; the staging folder
+    /// stays, undecided, in the folder held, whose next set throws it away.
+    Moved(WriteError),
 }
 
 impl From<Killed> for Stop {
@@ -114,6 +120,8 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
 /// check, so that no other run changes the folder between the two ([`write_set_held`]).
 pub struct HeldFolder {
     dir: std::path::PathBuf,
+    /// The folder's identity when it was held: checked again just before the swap.
+    id: Identity,
     _lock: crate::platform::os::FolderLock,
 }
 
@@ -135,6 +143,8 @@ pub fn hold_folder(dir: &Path) -> Result<HeldFolder, WriteError> {
         let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-is-a-link"));
         return Err(WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED));
     }
+    // A name Windows cannot keep (`set ` made `set`, then failed, leaving it: #53).
+    super::atomic_write::refuse_unkept(dir)?;
     // A file of that name: `create_dir_all` would say only "it already exists".
     if std::fs::metadata(dir).is_ok_and(|m| !m.is_dir()) {
         let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-is-a-file"));
@@ -143,7 +153,8 @@ pub fn hold_folder(dir: &Path) -> Result<HeldFolder, WriteError> {
     std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED))?;
     let lock = crate::platform::os::lock_folder(dir, || say_waiting(dir))
         .map_err(|e| WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED))?;
-    Ok(HeldFolder { dir: dir.to_path_buf(), _lock: lock })
+    let (_, id) = Identity::at(dir).map_err(|e| WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED))?;
+    Ok(HeldFolder { dir: dir.to_path_buf(), id, _lock: lock })
 }
 
 /// [`write_set`] into a folder this process already holds ([`hold_folder`]).
@@ -158,9 +169,10 @@ pub fn write_set_held(
         super::set_journal::recover_locked(dir).map_err(|e| WriteError::new(dir, set_steps::RECOVER, e, UNTOUCHED))?;
     refuse_unwritable_names(dir, set)?;
     let staging = new_staging(dir)?;
-    match stage_and_swap(dir, &staging, set, &belongs) {
+    match stage_and_swap(held, &staging, set, &belongs) {
         Ok(()) => Ok(notices),
         Err(Stop::Killed) => Err(killed(dir)),
+        Err(Stop::Moved(e)) => Err(e),
         Err(Stop::Failed(e)) => {
             let _ = std::fs::remove_dir_all(&staging);
             Err(e)
@@ -266,7 +278,13 @@ pub fn recover(dir: &Path) -> io::Result<Vec<String>> {
     super::set_journal::recover_locked(dir)
 }
 
-fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&str) -> bool) -> Result<(), Stop> {
+fn stage_and_swap(
+    held: &HeldFolder,
+    staging: &Path,
+    set: &FileSet,
+    belongs: &dyn Fn(&str) -> bool,
+) -> Result<(), Stop> {
+    let dir = held.dir();
     let (_, here) = Identity::at(staging).map_err(|e| WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED))?;
     let mut journal = Journal { staging: here, decided: false, new: Vec::new(), old: Vec::new() };
     write_journal(staging, &journal, false).map_err(|(what, e)| WriteError::new(dir, what, e, UNTOUCHED))?;
@@ -280,6 +298,7 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
     crate::platform::os::sync_folder(staging);
     journal.old = old_set(dir, &journal.new, belongs)?;
     step()?;
+    refuse_moved_folder(held)?;
     journal.decided = true;
     write_journal(staging, &journal, true).map_err(|(what, e)| WriteError::new(dir, what, e, UNTOUCHED))?;
     step()?;
@@ -296,6 +315,19 @@ fn stage_and_swap(dir: &Path, staging: &Path, set: &FileSet, belongs: &dyn Fn(&s
     let _ = std::fs::remove_dir(staging);
     crate::platform::os::sync_folder(dir);
     Ok(())
+}
+
+/// Refuses the swap when the folder at the held folder's path is no longer the folder held
+/// (its identity, or a link there): moved and replaced by a link to another set's folder
+/// while the set was written (issue 59, #27), the new set would go through the link.
+fn refuse_moved_folder(held: &HeldFolder) -> Result<(), Stop> {
+    let dir = held.dir();
+    let same = Identity::at(dir).is_ok_and(|(meta, id)| meta.is_dir() && id == held.id);
+    if same && !crate::platform::links::reached_through_link(dir) {
+        return Ok(());
+    }
+    let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-replaced"));
+    Err(Stop::Moved(WriteError::new(dir, set_steps::LIST, e, set_steps::KEPT_FOLDER)))
 }
 
 /// The old set in `dir`: every regular file the new one replaces, and every other member
@@ -471,6 +503,44 @@ mod tests {
         assert_eq!(steps, 13);
     }
 
+    /// Issue 59, #70: a writer killed mid-swap, then a file of the half-placed new set
+    /// edited by the teacher, then a smaller set: the recovery cannot place the edited
+    /// name (and says so), but records the new files it did place, so the smaller set
+    /// removes them; the folder ends with the smaller set, the edited file and the user's.
+    #[test]
+    fn a_stopped_set_with_an_edited_file_leaves_nothing_unrecorded_behind_the_next_set() {
+        let belongs = |n: &str| n.ends_with(".md");
+        let mut edited_once = false;
+        for n in 0.. {
+            let dir = temp_dir("stopped-edited");
+            old_set(&dir);
+            if with_fault(Fault::KilledAtStep(n), || write_set(&dir, &new_set(), belongs)).is_ok() {
+                break;
+            }
+            // The new a.md in place while the swap is not finished: the teacher edits it.
+            let placed = std::fs::read(dir.join("a.md")).is_ok_and(|b| b == vec![b'A'; 5000]);
+            let unfinished = journal_in(&dir).is_some_and(|(_, j)| j.decided);
+            let edited = placed && unfinished;
+            if edited {
+                std::fs::write(dir.join("a.md"), "the teacher's edit").unwrap();
+                edited_once = true;
+            }
+            let mut small = FileSet::default();
+            small.add("z.md", "small");
+            for _ in 0..2 {
+                let notices = write_set(&dir, &small, belongs).unwrap();
+                assert_eq!(notices.len(), usize::from(edited), "killed at step {n}: {notices:?}");
+            }
+            let names: Vec<String> = listing(&dir).into_iter().map(|(n, _)| n).collect();
+            let want: &[&str] = if edited { &["a.md", "mine.txt", "z.md"] } else { &["mine.txt", "z.md"] };
+            assert_eq!(names, want, "killed at step {n} (edited: {edited})");
+            if edited {
+                assert_eq!(std::fs::read(dir.join("a.md")).unwrap(), b"the teacher's edit");
+            }
+        }
+        assert!(edited_once, "some step leaves the new a.md in place, unfinished");
+    }
+
     /// Every state a swap or its undo can be in when the process dies (each file of either
     /// set in place or in the staging folder, one rename at a time), with the journal:
     /// recovery gives the new set, whole.
@@ -560,6 +630,42 @@ mod tests {
             assert_eq!(listing(&dir), before);
             assert_eq!(std::fs::read(outside.join("thesis.txt")).unwrap(), b"mine");
         }
+    }
+
+    /// Issue 59, #27: the folder moved away and replaced by a link to another set's folder
+    /// while the set is written (here when the old set is listed, just before the swap):
+    /// refused, nothing written through the link, the other folder's set untouched.
+    #[test]
+    #[cfg(unix)]
+    fn a_folder_replaced_by_a_link_during_the_write_is_refused_before_the_swap() {
+        let other = temp_dir("moved-other");
+        old_set(&other);
+        let theirs = listing(&other);
+        let dir = temp_dir("moved");
+        old_set(&dir);
+        let away = dir.with_extension("away");
+        let _ = std::fs::remove_dir_all(&away);
+        let swapped = std::cell::Cell::new(false);
+        let belongs = |n: &str| {
+            if !swapped.replace(true) {
+                std::fs::rename(&dir, &away).unwrap();
+                std::os::unix::fs::symlink(&other, &dir).unwrap();
+            }
+            n.ends_with(".md")
+        };
+        let e = write_set(&dir, &new_set(), belongs).unwrap_err().to_string();
+        assert!(swapped.get());
+        assert!(e.contains("moved or replaced"), "{e}");
+        assert_eq!(listing(&other), theirs, "nothing written through the link");
+        // The folder that was held keeps its old set; its staging folder is thrown away by
+        // its next set.
+        std::fs::remove_file(&dir).unwrap();
+        std::fs::rename(&away, &dir).unwrap();
+        write_set(&dir, &new_set(), |n| n.ends_with(".md")).unwrap();
+        let mut names: Vec<String> =
+            std::fs::read_dir(&dir).unwrap().flatten().map(|e| e.file_name().to_string_lossy().into_owned()).collect();
+        names.sort();
+        assert_eq!(names, [".phonglab-set.written", "a.md", "b.md", "d.md", "mine.txt"], "no staging folder left");
     }
 
     /// Issue 59 F7: a file of the set that another program holds open without sharing it

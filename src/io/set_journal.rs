@@ -383,6 +383,12 @@ fn finish(dir: &Path, staging: &Path, j: &Journal) -> Result<(), String> {
     }
     crate::platform::os::sync_folder(dir);
     if !stuck.is_empty() {
+        // The new files now in place, exactly as written, are recorded as phonglab's, so
+        // that the next set removes those it lacks (issue 59, #70: a stopped set of 40
+        // whose file the teacher edited stayed beside the next set of 2, named by no
+        // record); what could not be placed is named to the user, and kept.
+        let placed: Vec<Entry> = j.new.iter().filter(|e| is_entry(&dir.join(&e.name), e)).cloned().collect();
+        write_written_list(dir, staging, &placed);
         stuck.sort();
         stuck.dedup();
         let names = phonglab_core::escape::terminal::text(&stuck.join(", "));

@@ -5,7 +5,9 @@
 //! (`FILE_FLAG_OPEN_REPARSE_POINT | FILE_FLAG_BACKUP_SEMANTICS`), is a reparse point (a
 //! symbolic link, a junction), or the handle's final path (`GetFinalPathNameByHandleW`) is
 //! not its folder's final path joined with the name asked for (compared without case): the
-//! file was reached under another name than its own. Wine shows a Unix symbolic link as a
+//! file was reached under another name than its own. The name asked for is first made
+//! long (`GetLongPathNameW`): a real folder given by its 8.3 short name (`FICHAS~1`,
+//! Wine's `PHON~0IC`) is itself, while a link's long name is still the link's own. Wine shows a Unix symbolic link as a
 //! plain file with no reparse point, and a handle opened through it is the target's, so
 //! only the second test sees it there; on Windows it also catches a link that a filter
 //! driver hides.
@@ -52,9 +54,34 @@ mod windows {
             return true;
         }
         let Ok(folder) = open(parent, FOLDER) else { return false };
+        // The entry's long name: a short name (`PHON~0IC`) names the same entry.
+        let long = long_path(&path);
+        let name = long.as_deref().and_then(Path::file_name).unwrap_or(name);
         match (final_path(&file), final_path(&folder)) {
             (Some(at), Some(folder)) => !same_name(&at, &folder.join(name)),
             _ => false,
+        }
+    }
+
+    /// `path` with each 8.3 short name in it made long (`GetLongPathNameW`): names, not
+    /// links, are resolved. `None` where the system cannot say.
+    pub(super) fn long_path(path: &Path) -> Option<PathBuf> {
+        use std::os::windows::ffi::OsStrExt;
+        use windows_sys::Win32::Storage::FileSystem::GetLongPathNameW;
+        let wide: Vec<u16> = path.as_os_str().encode_wide().chain([0]).collect();
+        let mut buf = vec![0u16; 1024];
+        loop {
+            let len = u32::try_from(buf.len()).ok()?;
+            // SAFETY: `wide` ends with a 0; `buf` holds `len` u16s.
+            let n = unsafe { GetLongPathNameW(wide.as_ptr(), buf.as_mut_ptr(), len) } as usize;
+            if n == 0 {
+                return None;
+            }
+            if n < buf.len() {
+                buf.truncate(n);
+                return Some(PathBuf::from(std::ffi::OsString::from_wide(&buf)));
+            }
+            buf.resize(n + 1, 0);
         }
     }
 
@@ -126,5 +153,28 @@ mod tests {
         // folder it is in (the folder is the link); a path with a dot is the same path.
         assert!(!reached_through_link(&d.join("f3/lw/notes.txt")), "a file in a linked folder is itself");
         assert!(reached_through_link(&d.join("f3/./lw")), "a path with a dot");
+    }
+
+    /// Issue 59, #59: a real folder given by its 8.3 short name (Wine makes `PHON~0IC`) is
+    /// not a link: before, it was refused as "a link to another folder".
+    #[test]
+    #[cfg(windows)]
+    fn a_real_folder_named_by_its_short_name_is_not_a_link() {
+        use std::os::windows::ffi::{OsStrExt, OsStringExt};
+        use windows_sys::Win32::Storage::FileSystem::GetShortPathNameW;
+        let long = std::env::temp_dir().join(format!("phonglab folder with a long name {}", std::process::id()));
+        std::fs::create_dir_all(&long).unwrap();
+        let wide: Vec<u16> = long.as_os_str().encode_wide().chain([0]).collect();
+        let mut buf = vec![0u16; 1024];
+        // SAFETY: `wide` ends with a 0; `buf` holds 1024 u16s.
+        let n = unsafe { GetShortPathNameW(wide.as_ptr(), buf.as_mut_ptr(), 1024) } as usize;
+        assert!(n > 0 && n < buf.len(), "the system gives a short name");
+        buf.truncate(n);
+        let short = PathBuf::from(std::ffi::OsString::from_wide(&buf));
+        let short_name = short.file_name().unwrap().to_string_lossy().into_owned();
+        assert!(short_name.contains('~'), "{short_name} is a short name");
+        assert!(!reached_through_link(&short), "{} is the folder itself", short.display());
+        assert!(!reached_through_link(&short.join(".")), "and with a dot");
+        std::fs::remove_dir_all(&long).unwrap();
     }
 }

@@ -59,4 +59,5 @@ mod ui_random;
 mod ui_student;
 mod ui_typing;
 mod vocabulary;
+mod windows_names;
 mod work_outputs;

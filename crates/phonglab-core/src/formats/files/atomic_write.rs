@@ -325,6 +325,7 @@ pub fn write(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
 /// work, where a link at an output's name may be a student's).
 pub fn write_here(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
     const KEPT: &str = "write-kept-file";
+    refuse_unkept(path)?;
     let name = file_name_of(path).map_err(|e| WriteError::new(path, "write-step-name", e, "write-kept-nothing"))?;
     refuse_not_a_file(path, "write-kept-nothing")?;
     let dir = folder_of(path);
@@ -348,11 +349,82 @@ pub fn write_here(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
     Ok(())
 }
 
+/// Why Windows cannot keep a file's or folder's name as it is given ([`unkept_name`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unkept {
+    /// A name Windows keeps for a device (`CON`, `NUL`, `AUX`, `PRN`, `COM1`-`COM9`,
+    /// `LPT1`-`LPT9`, with any extension: `con.png`, `nul.txt`): opening it opens the device.
+    Device,
+    /// A name ending in a dot or a space, which Windows drops (`rep.md.` is `rep.md`,
+    /// `set ` is `set`): another file than the one named.
+    DroppedEnd,
+}
+
+/// The names Windows keeps for devices (compared without case, before any extension).
+const DEVICES: [&str; 32] = [
+    "CON", "PRN", "AUX", "NUL", "COM0", "COM1", "COM2", "COM3", "COM4", "COM5", "COM6", "COM7", "COM8", "COM9", "COM¹",
+    "COM²", "COM³", "LPT0", "LPT1", "LPT2", "LPT3", "LPT4", "LPT5", "LPT6", "LPT7", "LPT8", "LPT9", "LPT¹", "LPT²",
+    "LPT³", "CONIN$", "CONOUT$",
+];
+
+/// Why Windows cannot keep the file or folder name `name` as it is, if it cannot: a
+/// device's name, or a dot or space at its end. Asked on every system, since a set or a
+/// picture written on Linux is opened on the lab's Windows PCs (docs/security.md).
+pub fn unkept_name(name: &std::ffi::OsStr) -> Option<Unkept> {
+    let name = name.to_string_lossy();
+    if name == "." || name == ".." {
+        return None;
+    }
+    if name.ends_with(['.', ' ']) {
+        return Some(Unkept::DroppedEnd);
+    }
+    let stem = name.split('.').next().unwrap_or_default().trim_end_matches(' ').to_uppercase();
+    DEVICES.contains(&stem.as_str()).then_some(Unkept::Device)
+}
+
+/// Refuses the output `path` when its name, or the name of a folder above it that is not
+/// there yet (one phonglab would make), is one Windows cannot keep ([`unkept_name`]): said
+/// before anything is written, with the name and why.
+pub fn refuse_unkept_name(path: &Path) -> Result<(), String> {
+    use crate::formats::escape::terminal::text;
+    let mut at = Some(path);
+    let mut last = true;
+    while let Some(here) = at {
+        let Some(name) = here.file_name() else { break };
+        if !last && std::fs::symlink_metadata(here).is_ok() {
+            break;
+        }
+        let shown_name = text(&name.to_string_lossy());
+        match unkept_name(name) {
+            Some(Unkept::Device) => return Err(crate::t!("err-name-windows-device", name = shown_name)),
+            Some(Unkept::DroppedEnd) => {
+                let kept = text(name.to_string_lossy().trim_end_matches(['.', ' ']));
+                return Err(crate::t!("err-name-windows-end", name = shown_name, kept = kept));
+            }
+            None => {}
+        }
+        last = false;
+        at = here.parent();
+    }
+    Ok(())
+}
+
+/// Refuses `path` where Windows cannot keep its name, or a folder's above it that is not
+/// there yet (a device's name, a dot or a space at the end:
+/// [`refuse_unkept_name`]), before anything is made.
+pub fn refuse_unkept(path: &Path) -> Result<(), WriteError> {
+    refuse_unkept_name(path).map_err(|why| {
+        let e = io::Error::new(io::ErrorKind::InvalidInput, why);
+        WriteError::new(path, "write-step-name", e, "write-kept-nothing")
+    })
+}
+
 /// Checks, before long work, that a file can be created in `path`'s folder (by creating
 /// and removing a temporary file there; through a link, in the folder of the file it
 /// names) and that what is at `path` is a regular file or nothing.
 pub fn check_file_destination(path: &Path) -> Result<(), WriteError> {
     const KEPT: &str = "write-kept-nothing";
+    refuse_unkept(path)?;
     let resolved = through_links(path).map_err(|e| WriteError::new(path, "write-step-name", e, KEPT))?;
     let name = file_name_of(&resolved).map_err(|e| WriteError::new(path, "write-step-name", e, KEPT))?;
     refuse_not_a_file(&resolved, KEPT)?;
@@ -363,6 +435,7 @@ pub fn check_file_destination(path: &Path) -> Result<(), WriteError> {
 /// can be created in it.
 pub fn check_folder_destination(dir: &Path) -> Result<(), WriteError> {
     const KEPT: &str = "write-kept-nothing";
+    refuse_unkept(dir)?;
     // A file of that name (or a link to one): `create_dir_all` would say only "it already
     // exists", as though the folder were the trouble.
     if std::fs::metadata(dir).is_ok_and(|m| !m.is_dir()) {

@@ -108,9 +108,16 @@ pub fn refuse_output_onto_input(outputs: &[&Path], inputs: &[&Path]) -> Result<(
 }
 
 /// Refuses when an output in `outputs` is the same file as an input in `inputs` (each
-/// said as what it is: "the mesh"), or as another of the outputs ("the other output").
+/// said as what it is: "the mesh"), or as another of the outputs ("the other output"),
+/// or has a name Windows cannot keep
+/// ([`refuse_unkept_name`](crate::formats::files::atomic_write::refuse_unkept_name): `rep.md.` beside `rep.md`
+/// is one file there).
 pub fn refuse_onto(outputs: &[&Path], inputs: &[(&Path, Input)]) -> Result<(), String> {
     use crate::formats::files::reasons::shown;
+    for output in outputs {
+        crate::formats::files::atomic_write::refuse_unkept_name(output)
+            .map_err(|why| format!("{}: {why}", shown(output)))?;
+    }
     for (k, output) in outputs.iter().enumerate() {
         let out_id = file_id(output);
         for (input, kind) in inputs {
@@ -188,5 +195,40 @@ mod tests {
         }
         assert_eq!(refuse_onto(&[&report, &dir.join("relatório.csv")], &[]), Ok(()), "two names, two files");
         std::fs::remove_dir_all(dir.parent().unwrap()).unwrap();
+    }
+
+    /// Issue 59, #40, #49, #50, #53: names Windows cannot keep (a device's, a dot or a
+    /// space at the end) are refused as outputs on every system, before anything is
+    /// written; `rep.md.` beside `rep.md` was one file on Windows, written twice.
+    #[test]
+    fn names_windows_cannot_keep_are_refused_as_outputs_everywhere() {
+        use crate::formats::files::atomic_write::{Unkept, refuse_unkept_name, unkept_name};
+        use std::ffi::OsStr;
+        for device in ["CON", "nul", "Aux", "prn", "COM1", "lpt9", "con.png", "NUL.txt", "con .txt", "com¹"] {
+            assert_eq!(unkept_name(OsStr::new(device)), Some(Unkept::Device), "{device}");
+        }
+        for end in ["rep.md.", "set ", "a. ", "x..."] {
+            assert_eq!(unkept_name(OsStr::new(end)), Some(Unkept::DroppedEnd), "{end}");
+        }
+        for fine in ["console.png", "nully.txt", "com10", "lpt", "aux_files", ".", "..", "con-sheet.md", ".hidden"] {
+            assert_eq!(unkept_name(OsStr::new(fine)), None, "{fine}");
+        }
+        let dir = std::env::temp_dir().join(format!("phonglab-unkept {}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let (report, marks) = (dir.join("rep.md"), dir.join("rep.md."));
+        let e = refuse_onto(&[&report, &marks], &[]).unwrap_err();
+        assert!(e.contains("rep.md.") && e.contains("Windows drops") && e.contains("rep.md"), "{e}");
+        let e = refuse_onto(&[&dir.join("con.png")], &[]).unwrap_err();
+        assert!(e.contains("con.png") && e.contains("a name Windows keeps for a device; choose another"), "{e}");
+        // A folder phonglab would make, not one that is there (a Linux folder named aux).
+        let e = refuse_unkept_name(&dir.join("set ").join("a.md")).unwrap_err();
+        assert!(e.contains("set "), "{e}");
+        // (Windows cannot make one: `aux` opens the device.)
+        if !cfg!(windows) {
+            std::fs::create_dir_all(dir.join("aux")).unwrap();
+            assert_eq!(refuse_unkept_name(&dir.join("aux").join("a.md")), Ok(()), "a folder already there");
+        }
+        assert_eq!(refuse_onto(&[&report, &dir.join("rep.csv")], &[]), Ok(()));
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }
