@@ -14,6 +14,7 @@ mod support {
 mod check;
 mod cost;
 mod diagnose;
+mod diagnose_cause;
 mod documents;
 mod exam;
 mod exercises;
