@@ -130,5 +130,9 @@ fn a_blank_picture_fits_no_value_from_the_picture() {
     let d = diagnose(&right, &image, SIZE).expect("diagnosed");
     assert_eq!(d.verdict, Verdict::Unexplained);
     assert!(d.shape.is_some(), "{}", said(&d));
-    assert!(d.tried.iter().all(|t| !t.fitted()), "{:?}", d.tried.iter().filter(|t| t.fitted()).map(|t| t.label()).collect::<Vec<_>>());
+    assert!(
+        d.tried.iter().all(|t| !t.fitted()),
+        "{:?}",
+        d.tried.iter().filter(|t| t.fitted()).map(|t| t.label()).collect::<Vec<_>>()
+    );
 }

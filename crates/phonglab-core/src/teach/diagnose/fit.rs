@@ -16,7 +16,7 @@ const FLAT: u8 = 2;
 
 /// Is channel `c` of `picture` (`size` pixels square) flat around pixel `p`: the 3 x 3
 /// around it covered, within [`FLAT`] levels of each other?
-pub(super) fn flat(picture: &[u8], covered: &[bool], size: usize, p: usize, c: usize) -> bool {
+fn flat(picture: &[u8], covered: &[bool], size: usize, p: usize, c: usize) -> bool {
     let (x, y) = (p % size, p / size);
     if x == 0 || y == 0 || x + 1 >= size || y + 1 >= size {
         return false;

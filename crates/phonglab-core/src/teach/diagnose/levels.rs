@@ -27,14 +27,15 @@ const CLEARLY: f64 = super::CLEARLY;
 /// A change of the whole picture's levels that explains the student's picture.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Levels {
-    /// The mean change over the object's pixels, in levels (negative: darker).
+    /// The mean change over the object's pixels, in levels (negative: darker), where
+    /// neither the right level nor the changed one is clamped.
     pub shift: f64,
     /// The gamma fitted (`None`: an offset).
     pub gamma: Option<f64>,
     /// The changed right picture against the student's.
     pub matched: Match,
     /// The mean levels (per pixel, the three channels summed) by which the changed right
-    /// picture misses the student's over the object's flat pixels, in place.
+    /// picture misses the student's over the object's inner pixels, in place.
     pub distance: f64,
 }
 
@@ -55,11 +56,18 @@ impl Curve {
     }
 }
 
-/// The object's pixels where the right picture is flat around (each channel within 2
-/// levels over the 3 x 3, all covered): there a picture moved by a pixel differs from it by
-/// its colours alone.
-pub fn flat_pixels(picture: &[u8], covered: &[bool], size: usize) -> Vec<usize> {
-    (0..size * size).filter(|&p| (0..3).all(|c| super::fit::flat(picture, covered, size, p, c))).collect()
+/// The object's inner pixels (the 3 x 3 around each covered): there a picture moved by a
+/// pixel differs from the right one by a pixel's gradient at most, never by the background.
+pub fn inner_pixels(covered: &[bool], size: usize) -> Vec<usize> {
+    let inner = |p: usize| {
+        let (x, y) = (p % size, p / size);
+        x > 0
+            && y > 0
+            && x + 1 < size
+            && y + 1 < size
+            && (y - 1..=y + 1).all(|qy| (x - 1..=x + 1).all(|qx| covered[qy * size + qx]))
+    };
+    (0..size * size).filter(|&p| inner(p)).collect()
 }
 
 /// The mean over the pixels `at` of the levels (the three channels summed) by which
@@ -68,7 +76,8 @@ pub fn distance(picture: &[u8], image: &[u8], at: &[usize]) -> f64 {
     if at.is_empty() {
         return 0.0;
     }
-    let sum: u64 = at.iter().map(|&p| (0..3).map(|c| u64::from(picture[p * 4 + c].abs_diff(image[p * 4 + c]))).sum::<u64>()).sum();
+    let sum: u64 =
+        at.iter().map(|&p| (0..3).map(|c| u64::from(picture[p * 4 + c].abs_diff(image[p * 4 + c]))).sum::<u64>()).sum();
     sum as f64 / at.len() as f64
 }
 
@@ -93,7 +102,8 @@ fn best_curve(picture: &[u8], image: &[u8], flat: &[usize], bg: [u8; 3], backgro
         .map(|(k, &n)| ((k / 256) as u8, (k % 256) as u8, f64::from(n)))
         .collect();
     let cost = |curve: Curve| -> f64 {
-        used.iter().map(|&(r, i, n)| n * (f64::from(curve.level(r)) - f64::from(i)).powi(2)).sum()
+        let table: Vec<f64> = (0..=255u8).map(|v| f64::from(curve.level(v))).collect();
+        used.iter().map(|&(r, i, n)| n * (table[usize::from(r)] - f64::from(i)).powi(2)).sum()
     };
     let gammas = GAMMAS.map(|k| Curve::Gamma(2f64.powf(f64::from(k) / 139.0)));
     let offsets = OFFSETS.map(Curve::Offset);
@@ -117,7 +127,11 @@ impl Background {
             (-1..=1).any(|dy| {
                 (-1..=1).any(|dx| {
                     let (qx, qy) = (x + dx, y + dy);
-                    qx >= 0 && qy >= 0 && qx < size as i64 && qy < size as i64 && covered[qy as usize * size + qx as usize]
+                    qx >= 0
+                        && qy >= 0
+                        && qx < size as i64
+                        && qy < size as i64
+                        && covered[qy as usize * size + qx as usize]
                 })
             })
         };
@@ -139,24 +153,31 @@ impl Background {
 }
 
 /// The change of levels that explains `image` (RGBA8, `size` square), given the right
-/// picture `picture` with `covered` on the background `bg` and its flat pixels `flat`
-/// ([`flat_pixels`]): `None` when the best curve leaves the right picture within
+/// picture `picture` with `covered` on the background `bg` and its inner pixels `flat`
+/// ([`inner_pixels`]): `None` when the best curve leaves the right picture within
 /// [`TOLERANCE`] of itself, or none keeps the background the student's picture shows.
 pub fn fit(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], flat: &[usize], size: usize) -> Option<Levels> {
     let curve = best_curve(picture, image, flat, bg, &Background::of(covered, image, size))?;
-    let moves = flat.iter().any(|&p| (0..3).any(|c| curve.level(picture[p * 4 + c]).abs_diff(picture[p * 4 + c]) > TOLERANCE));
+    let moves =
+        flat.iter().any(|&p| (0..3).any(|c| curve.level(picture[p * 4 + c]).abs_diff(picture[p * 4 + c]) > TOLERANCE));
     if !moves {
         return None;
     }
     let changed_bg = bg.map(|v| curve.level(v));
-    let changed: Vec<u8> =
-        picture.chunks_exact(4).flat_map(|px| [curve.level(px[0]), curve.level(px[1]), curve.level(px[2]), px[3]]).collect();
-    let covered_levels: Vec<i64> = (0..size * size)
-        .filter(|&p| covered[p])
-        .flat_map(|p| (0..3).map(move |c| (p, c)))
-        .map(|(p, c)| i64::from(changed[p * 4 + c]) - i64::from(picture[p * 4 + c]))
+    let changed: Vec<u8> = picture
+        .chunks_exact(4)
+        .flat_map(|px| [curve.level(px[0]), curve.level(px[1]), curve.level(px[2]), px[3]])
         .collect();
-    let shift = covered_levels.iter().sum::<i64>() as f64 / covered_levels.len().max(1) as f64;
+    // The change where neither level is clamped (a level taken to 0 says only that it
+    // went down by as much as it was).
+    let unclamped = |v: u8| (1..=254).contains(&v);
+    let moved: Vec<i64> = (0..size * size)
+        .filter(|&p| covered[p])
+        .flat_map(|p| (0..3).map(move |c| p * 4 + c))
+        .filter(|&k| unclamped(picture[k]) && unclamped(changed[k]))
+        .map(|k| i64::from(changed[k]) - i64::from(picture[k]))
+        .collect();
+    let shift = moved.iter().sum::<i64>() as f64 / moved.len().max(1) as f64;
     Some(Levels {
         shift,
         gamma: match curve {
@@ -201,7 +222,12 @@ mod tests {
         let (picture, covered) = ramp();
         // Flat enough: the ramp moves 16 levels a column, so take every covered pixel.
         let flat: Vec<usize> = (0..256).filter(|&p| covered[p]).collect();
-        let gamma: Vec<u8> = picture.chunks_exact(4).flat_map(|px| [Curve::Gamma(0.9).level(px[0]), Curve::Gamma(0.9).level(px[1]), Curve::Gamma(0.9).level(px[2]), 255]).collect();
+        let gamma: Vec<u8> = picture
+            .chunks_exact(4)
+            .flat_map(|px| {
+                [Curve::Gamma(0.9).level(px[0]), Curve::Gamma(0.9).level(px[1]), Curve::Gamma(0.9).level(px[2]), 255]
+            })
+            .collect();
         let levels = fit(&picture, &covered, &gamma, [0; 3], &flat, 16).expect("a gamma");
         assert!(levels.gamma.is_some_and(|g| (g - 0.9).abs() < 0.01), "{levels:?}");
         assert!(levels.shift > 3.0 && levels.matched.score == 1.0, "{levels:?}");
@@ -217,7 +243,8 @@ mod tests {
         let levels = fit(&picture, &covered, &lifted, [0; 3], &flat, 16);
         assert!(levels.is_none_or(|l| l.matched.score < 0.9), "{levels:?}");
         // Four levels darker, the black background kept black (clamped): an offset.
-        let darker: Vec<u8> = picture.iter().enumerate().map(|(k, &v)| if k % 4 == 3 { v } else { v.saturating_sub(4) }).collect();
+        let darker: Vec<u8> =
+            picture.iter().enumerate().map(|(k, &v)| if k % 4 == 3 { v } else { v.saturating_sub(4) }).collect();
         let levels = fit(&picture, &covered, &darker, [0; 3], &flat, 16).expect("an offset");
         assert_eq!((levels.gamma, levels.shift.round()), (None, -4.0));
         // The right picture itself is no change.

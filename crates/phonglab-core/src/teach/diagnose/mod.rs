@@ -393,16 +393,12 @@ fn levels_changed(
     bg: [u8; 3],
     size: usize,
 ) -> Option<Levels> {
-    let flat = levels::flat_pixels(&d.picture, covered, size);
+    let flat = levels::inner_pixels(covered, size);
     let changed = levels::fit(&d.picture, covered, image, bg, &flat, size)?;
     let first = d.causes.first().and_then(|t| pictures.0.iter().find(|(p, ..)| p == t));
     let closer = first.is_some_and(|(t, rgba, _)| {
         t.matched.is_some_and(|m| levels::clearly_closer(m, levels::distance(rgba, image, &flat), &changed))
     });
-    if std::env::var_os("PHONGLAB_DEBUG_LEVELS").is_some() {
-        let dist = first.map(|(t, rgba, _)| (t.id(), t.matched.map(|m| m.score), levels::distance(rgba, image, &flat)));
-        eprintln!("levels {changed:?} first {dist:?} closer {closer}");
-    }
     (changed.matched.score >= EXPLAINED_AT && !closer).then_some(changed)
 }
 
