@@ -7,7 +7,7 @@
 
 use glam::{DMat3, DVec4};
 use phonglab_core::model::scene::LightPlacement;
-use phonglab_core::teach::diagnose::{ALSO_WITHIN, Diagnosis, Drawing, Shape, Verdict, diagnose};
+use phonglab_core::teach::diagnose::{ALSO_WITHIN, Diagnosis, Drawing, Shape, Tried, Verdict, diagnose};
 
 const SIZE: usize = 256;
 
@@ -83,7 +83,7 @@ fn also_explains_lists_only_causes_about_as_good_as_the_first() {
     let mut wrong = right.clone();
     wrong.scene.material.shininess /= 128.0;
     let d = diagnose(&right, &picture(&wrong), SIZE).expect("diagnosed");
-    assert_eq!(d.causes.first().map(|t| t.id()), Some("shininess-fraction"), "{}", said(&d));
+    assert_eq!(d.causes.first().map(Tried::id), Some("shininess-fraction"), "{}", said(&d));
     let best = d.causes.iter().filter_map(|t| t.matched).map(|m| m.score).fold(0.0, f64::max);
     assert!(d.causes.iter().all(|t| t.matched.is_some_and(|m| m.score >= best - ALSO_WITHIN)), "{}", said(&d));
     // Tried, and behind by more: not named.
@@ -133,6 +133,6 @@ fn a_blank_picture_fits_no_value_from_the_picture() {
     assert!(
         d.tried.iter().all(|t| !t.fitted()),
         "{:?}",
-        d.tried.iter().filter(|t| t.fitted()).map(|t| t.label()).collect::<Vec<_>>()
+        d.tried.iter().filter(|t| t.fitted()).map(Tried::label).collect::<Vec<_>>()
     );
 }
