@@ -10,6 +10,10 @@
 
 use crate::teach::picture_match::{Match, TOLERANCE, compare};
 
+// How much closer (in mean levels, the share of the change's) a mistake's picture must be
+// to the student's to be named rather than the change of levels: as the footprint asks.
+use super::footprint::CLEARLY;
+
 /// The gammas tried: from 1/2 to 2, in steps of half a percent.
 const GAMMAS: std::ops::RangeInclusive<i32> = -139..=139;
 
@@ -18,11 +22,6 @@ const OFFSETS: std::ops::RangeInclusive<i16> = -48..=48;
 
 /// The share of the background that must keep the changed picture's background colour.
 const BACKGROUND_KEPT: f64 = 0.99;
-
-/// How much closer (in mean levels, the share of the change's) a mistake's picture must be
-/// to the student's to be named rather than the change of levels: as the footprint asks
-/// ([`super::CLEARLY`]).
-const CLEARLY: f64 = super::CLEARLY;
 
 /// A change of the whole picture's levels that explains the student's picture.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -191,9 +190,9 @@ pub fn fit(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], flat: &[
 
 /// Is a mistake's picture, missing the student's by `distance` ([`distance`]) and matching
 /// as `matched`, clearly closer to it than the change of levels `levels`: a larger share
-/// by [`super::MARGIN`], or at most [`CLEARLY`] of its distance?
-pub fn clearly_closer(matched: Match, distance: f64, levels: &Levels) -> bool {
-    matched.score >= levels.matched.score + super::MARGIN || distance <= CLEARLY * levels.distance
+/// by `margin` (the diagnosis's `MARGIN`), or at most [`CLEARLY`] of its distance?
+pub fn clearly_closer(matched: Match, distance: f64, levels: &Levels, margin: f64) -> bool {
+    matched.score >= levels.matched.score + margin || distance <= CLEARLY * levels.distance
 }
 
 #[cfg(test)]

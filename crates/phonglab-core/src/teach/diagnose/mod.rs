@@ -397,7 +397,7 @@ fn levels_changed(
     let changed = levels::fit(&d.picture, covered, image, bg, &flat, size)?;
     let first = d.causes.first().and_then(|t| pictures.0.iter().find(|(p, ..)| p == t));
     let closer = first.is_some_and(|(t, rgba, _)| {
-        t.matched.is_some_and(|m| levels::clearly_closer(m, levels::distance(rgba, image, &flat), &changed))
+        t.matched.is_some_and(|m| levels::clearly_closer(m, levels::distance(rgba, image, &flat), &changed, MARGIN))
     });
     (changed.matched.score >= EXPLAINED_AT && !closer).then_some(changed)
 }
