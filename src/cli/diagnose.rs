@@ -225,6 +225,9 @@ fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>)
             Shape::Marks(m) => {
                 j["marks"] = json!({ "pixels": m.pixels, "from": [m.from.0, m.from.1], "to": [m.to.0, m.to.1] });
             }
+            Shape::Levels(l) => {
+                j["levels"] = json!({ "shift": l.shift, "gamma": l.gamma, "score": l.matched.score });
+            }
             Shape::NothingDrawn => {}
         }
         j

@@ -15,6 +15,7 @@ mod check;
 mod check_whole;
 mod cost;
 mod diagnose;
+mod diagnose_cause;
 mod documents;
 mod exam;
 mod exercises;

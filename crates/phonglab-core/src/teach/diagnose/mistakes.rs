@@ -181,18 +181,25 @@ fn light_before_view(d: &mut Drawing, _: At) -> bool {
     true
 }
 
-/// One light's position given before `gluLookAt` (under the identity), where several lights
-/// are placed in the world and the view moves them: the all-lights row draws the others
-/// too.
+/// One light's `GL_POSITION` given before `gluLookAt` (under the identity), where several
+/// lights are placed in the world and the view moves them (the all-lights row draws the
+/// others too), or where the light is a spotlight: its `GL_SPOT_DIRECTION`, given after the
+/// camera as the exported program gives it, still turns with the view, so the position
+/// alone is fixed to the eye (the all-lights row fixes the direction too).
 fn light_before_view_alone(d: &mut Drawing, at: At) -> bool {
     let moves = d.scene.eye_from_world != glam::DMat4::IDENTITY;
     let in_world = d.scene.lights.iter().filter(|l| l.placement == LightPlacement::World).count();
+    let Some(l) = d.scene.lights.get(at.light) else { return false };
+    let turned = DMat3::from_mat4(d.scene.eye_from_light(l)) * l.spot_direction;
     the_light(
         d,
         at,
-        |l| moves && in_world >= 2 && l.placement == LightPlacement::World,
+        |l| moves && (in_world >= 2 || l.is_spot()) && l.placement == LightPlacement::World,
         |l| {
             l.placement = LightPlacement::Eye;
+            if l.is_spot() {
+                l.spot_direction = turned;
+            }
         },
     )
 }
