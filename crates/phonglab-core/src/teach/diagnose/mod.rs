@@ -23,18 +23,24 @@ mod drawing;
 mod fit;
 mod footprint;
 mod mistakes;
+mod offset;
 mod outline;
+pub mod said;
 mod sides;
 mod slips;
 mod values;
+mod within;
 
 pub use change::{At, Given};
 pub use colours::Colours;
 pub use drawing::Drawing;
 pub use footprint::{CLEARLY, FOOTPRINT_AT, Footprint, Group};
 pub use mistakes::{MISTAKES, PictureMistake, Scope, offered};
+pub use offset::{BLOCK, OFFSET_AT, Offset};
 pub use outline::{MARKS_AT, Marks, OUTLINE_AT, REGION_AT, Region};
+pub use said::Said;
 pub use sides::Sides;
+pub use within::{ROUNDING, Within};
 
 use crate::model::error::SceneError;
 use crate::raster::render::Renderer;
@@ -158,6 +164,10 @@ pub struct Diagnosis {
     /// "wrong" rests on it: the right picture explains the share [`RIGHT_AT`] asks, but
     /// over these pixels the picture is the mistake's ([`Footprint::shows_mistake`]).
     pub footprint: Option<Footprint>,
+    /// How far the image is from the right picture inside the object, in place, when the
+    /// verdict is "right": unless [`Within::exact`], it is right only within what a
+    /// picture can tell.
+    pub within: Option<Within>,
 }
 
 /// What a picture's shape shows that no mistake's colours explain.
@@ -173,6 +183,9 @@ pub enum Shape {
     /// Thin marks (lines drawn over the object) differ from a picture the right one
     /// otherwise explains.
     Marks(Marks),
+    /// A square of [`BLOCK`] pixels is evenly lighter or darker than in a picture the
+    /// right one otherwise explains ([`Offset`]).
+    Offset(Offset),
 }
 
 impl Shape {
@@ -183,6 +196,7 @@ impl Shape {
             Shape::OtherOutline(_) => "outline-differs",
             Shape::Region(_) => "region-differs",
             Shape::Marks(_) => "marks-differ",
+            Shape::Offset(_) => "offset-differs",
         }
     }
 
@@ -210,6 +224,19 @@ impl Shape {
                     ("y0", Arg::Text(m.from.1.to_string())),
                     ("x1", Arg::Text(m.to.0.to_string())),
                     ("y1", Arg::Text(m.to.1.to_string())),
+                    ("score", percent(right)),
+                ],
+            ),
+            Shape::Offset(o) => tr_args(
+                if o.levels < 0.0 { "diagnose-offset-darker" } else { "diagnose-offset-lighter" },
+                &[
+                    ("pixels", Arg::Text(o.pixels.to_string())),
+                    ("x0", Arg::Text(o.from.0.to_string())),
+                    ("y0", Arg::Text(o.from.1.to_string())),
+                    ("x1", Arg::Text(o.to.0.to_string())),
+                    ("y1", Arg::Text(o.to.1.to_string())),
+                    ("levels", Arg::Text(crate::locale::decimal(&format!("{:.1}", o.levels.abs())))),
+                    ("least", Arg::Text(crate::locale::decimal(&format!("{OFFSET_AT:.1}")))),
                     ("score", percent(right)),
                 ],
             ),
@@ -256,6 +283,9 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         drawn: true,
     };
     let mut subtle: Vec<(Tried, Footprint)> = Vec::new();
+    // The footprints of the mistakes the scene shows that the image shows too: a lossy
+    // saving's noise may hide them from the share, never from their footprint.
+    let mut seen: Vec<(Tried, Footprint)> = Vec::new();
     for (mistake, at) in offered(right, At { light: 0, emission, colours, values, sides, given: Given::of(right) }) {
         let mut d = right.clone();
         (MISTAKES[mistake].apply)(&mut d, at);
@@ -267,15 +297,15 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         // A mistake whose picture the right one explains cannot be seen in this scene,
         // unless the image is the mistake's where the two differ.
         let visible = compare(&wrong, &wrong_covered, &picture, bg, size).score < RIGHT_AT;
-        let shown = if visible {
-            None
-        } else {
-            footprint::footprint((&picture, &covered), (&wrong, &wrong_covered), image, size)
-                .filter(Footprint::shows_mistake)
-        };
+        let fp = footprint::footprint((&picture, &covered), (&wrong, &wrong_covered), image, size);
+        let shown = fp.filter(Footprint::shows_mistake);
         let matched = (visible || shown.is_some()).then(|| compare(&wrong, &wrong_covered, image, bg, size));
         let t = Tried { mistake, at, matched };
-        subtle.extend(shown.map(|f| (t, f)));
+        if visible {
+            seen.extend(shown.map(|f| (t, f)));
+        } else {
+            subtle.extend(shown.map(|f| (t, f)));
+        }
         if matched.is_some_and(|m| m.score >= EXPLAINED_AT) {
             pictures.0.push((t, wrong, wrong_covered));
         }
@@ -287,6 +317,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         d.lossy = lossy_right(&d, &covered, image, bg, size);
         if d.lossy.is_some() {
             d.verdict = Verdict::Right;
+            subtle.append(&mut seen);
         }
     }
     if d.shape.is_none() && d.verdict == Verdict::Right {
@@ -300,8 +331,15 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         let marks = outline::largest_marks(&d.picture, &covered, image, bg, size);
         d.shape = marks.filter(|m| m.pixels >= MARKS_AT).map(Shape::Marks);
     }
+    if d.shape.is_none() && d.verdict == Verdict::Right {
+        let off = offset::largest_offset(&d.picture, &covered, image, size);
+        d.shape = off.filter(|o| o.levels.abs() >= OFFSET_AT).map(Shape::Offset);
+    }
     if d.shape.is_some() {
         (d.verdict, d.causes, d.lossy) = (Verdict::Unexplained, Vec::new(), None);
+    }
+    if d.verdict == Verdict::Right {
+        d.within = Some(within::within(&d.picture, &covered, image, size));
     }
     d.same_picture = pictures.same_as_first(&d.causes, bg, size);
     // The image cannot rank causes that draw the same picture: they go first in the
@@ -396,44 +434,21 @@ impl Pictures {
 }
 
 impl Diagnosis {
+    /// In words, one finding a line, in the language set now ([`Said::lines`]).
+    pub fn lines(&self) -> Vec<String> {
+        Said::of(self).lines()
+    }
+
     /// The verdict "right" in words when it rests on a lossy saving ([`Diagnosis::lossy`]).
     pub fn lossy_words(&self) -> Option<String> {
-        use crate::locale::{Arg, tr_args};
-        use crate::teach::picture_match::TOLERANCE;
-        let percent = |v: f64| Arg::Text(crate::locale::percent(v, 1));
-        self.lossy.map(|m| {
-            tr_args(
-                "diagnose-verdict-right-lossy",
-                &[
-                    ("score", percent(m.score)),
-                    ("levels", Arg::Text(LOSSY.to_string())),
-                    ("strict", percent(self.right.score)),
-                    ("tolerance", Arg::Text(TOLERANCE.to_string())),
-                ],
-            )
-        })
+        self.lossy.and_then(|_| self.lines().into_iter().next())
     }
 
     /// In words, when the verdict "wrong" rests on where the first cause's picture differs
     /// from the right one ([`Diagnosis::footprint`]): how few pixels, where, and how near
     /// the picture is to each there.
     pub fn footprint_words(&self) -> Option<String> {
-        use crate::locale::{Arg, decimal, tr_args};
-        use crate::teach::picture_match::TOLERANCE;
-        let levels = |v: f64| Arg::Text(decimal(&format!("{v:.1}")));
-        self.footprint.as_ref().map(|f| {
-            tr_args(
-                "diagnose-footprint",
-                &[
-                    ("most", Arg::Text(f.most.to_string())),
-                    ("tolerance", Arg::Text(TOLERANCE.to_string())),
-                    ("pixels", Arg::Text(f.pixels.to_string())),
-                    ("groups", Arg::Text(groups_said(&f.groups))),
-                    ("mistake", levels(f.mistake)),
-                    ("right", levels(f.right)),
-                ],
-            )
-        })
+        self.footprint.as_ref().map(footprint_said)
     }
 
     /// In words, when the first causes draw the same picture: that the image cannot tell
@@ -441,6 +456,24 @@ impl Diagnosis {
     pub fn same_picture_words(&self) -> Option<String> {
         same_picture_said(&self.same_picture)
     }
+}
+
+/// [`Diagnosis::footprint_words`] of the footprint `f`.
+fn footprint_said(f: &Footprint) -> String {
+    use crate::locale::{Arg, decimal, tr_args};
+    use crate::teach::picture_match::TOLERANCE;
+    let levels = |v: f64| Arg::Text(decimal(&format!("{v:.1}")));
+    tr_args(
+        "diagnose-footprint",
+        &[
+            ("most", Arg::Text(f.most.to_string())),
+            ("tolerance", Arg::Text(TOLERANCE.to_string())),
+            ("pixels", Arg::Text(f.pixels.to_string())),
+            ("groups", Arg::Text(groups_said(&f.groups))),
+            ("mistake", levels(f.mistake)),
+            ("right", levels(f.right)),
+        ],
+    )
 }
 
 /// The mistakes students make most often, in that order: among causes that draw the same
@@ -525,6 +558,7 @@ fn verdict_of(exact: Match, mut tried: Vec<Tried>, picture: Vec<u8>, renderer: R
         shape: None,
         lossy: None,
         footprint: None,
+        within: None,
     }
 }
 
