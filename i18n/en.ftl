@@ -63,82 +63,6 @@ wrong-drawn-right = Drawn right
 wrong-drawn-wrong = Drawn with one mistake
 wrong-question = Which one mistake makes the right-hand picture? Tick it, and say what in the picture shows it.
 
-## moodle-exam
-
-exam-key-heading = Each value exact and rounded
-exam-sheet-name = exam exercise { $number }
-moodle-category-exercise = exercise { $number }
-moodle-question-name = { $exercise }, variant { $variant }: key exercise-{ $sheet }-key.md of { $command }
-moodle-category-default = phonglab
-moodle-written = { $file } in { $out }: { $questions ->
-    [one] one question
-   *[other] { $questions } questions
-} in { $categories ->
-    [one] one category
-   *[other] { $categories } categories
-}. In Moodle: Question bank → Import → { $format }.
-moodle-format-xml = Moodle XML format
-moodle-format-gift = GIFT format
-exam-key-exact = exact
-exam-key-rounded = rounded to four significant digits
-err-exam-level-5 = --exam makes exercises of levels 1 to 4; level 5 has pictures, not numbers.
-err-moodle-only = --variants and --category are for a file for Moodle (--format moodle-xml or gift); sheets take --count.
-err-level-5-variants = --variants is for levels 1 to 4: level 5 has one picture per mistake, seven in all, none drawn twice; use --count (1 to 7).
-level-5-count = Level 5 has { $all } mistakes, one question each: { $all } questions, not { $count }.
-
-wrong-written = { $count ->
-    [one] 1 picture with one mistake, with its key,
-   *[other] { $count } pictures with one mistake each, with their keys,
-} in { $out }
-wrong-quiz-hover = A sphere drawn right and drawn with one mistake: pick the mistake
-wrong-check = Check
-wrong-right-answer = Right.
-wrong-wrong-answer = Not that one. The key:
-wrong-back = Back to the calculation
-share-summary = a link of { $length } characters: the scene is in the link itself
-share-window = Share this scene
-share-menu = Share link…
-share-menu-hover = The scene as a link and a QR code, for the class to open in a browser (nothing is stored on a server: the scene is in the link)
-share-page = Page the link opens
-share-page-hover = Where the browser build is published (empty: this page in a browser, else the project's site)
-share-in-language = Open in { $lang }
-share-presenting = Open presenting to a class
-share-channel = Open showing { $term }
-share-length = { $length } characters: the scene is in the link itself
-share-copy = Copy link
-share-copy-hover = Puts the link on the clipboard, to paste in the class's chat or page
-share-copied = Link copied ({ $length } characters): paste it for the class, or let them scan the code.
-share-qr = QR code of the link
-share-qr-too-long = The link is too long for a QR code; copy it instead.
-err-share-lang = unknown language { $value }: en, pt-PT or pt-BR
-share-opened = the shared link ({ $name })
-share-not-opened = The shared link was not opened: { $why }. This is the scene you had.
-share-needs-mesh = The link's scene shows the mesh { $name }, which a link does not carry: open or drop { $name } to see it (the sphere stands in until then).
-mesh-not-kept = (Not kept for a reload of the page: { $why }; open it again after one.)
-mesh-too-large-to-keep = packed, it is { $packed } characters, and the page keeps at most { $most }
-mesh-not-restored = The mesh { $name } this page kept could not be read back ({ $why }): open it again.
-quiz = Quiz
-quiz-hover = Every value of the calculation behind a field: type them step by step
-shader-hover = The GLSL or WGSL program this scene compiles to: only the stages it needs
-precision = Precision:
-f32-hover = Evaluate in single precision, as OpenGL does
-f64-hover = Evaluate in double precision
-cost-of-accuracy = Cost of accuracy
-cost-hover = What each shading, tessellation and approximation costs in time and in error
-help-button = Help (F1)
-undo-what = Undo: { $what } (Ctrl+Z)
-redo-what = Redo: { $what } (Ctrl+Shift+Z, Ctrl+Y)
-undo-button = ⟲ Undo
-redo-button = ⟳ Redo
-nothing-to-undo = Nothing to undo
-nothing-to-redo = Nothing to redo
-could-not-evaluate = Could not evaluate the scene ({ $error }); back to the worksheet.
-keyboard-shortcuts = Keyboard shortcuts
-vectors-at-vertex = Vectors at the vertex
-reflection-lobe = Reflection lobe
-session-not-saved = The session could not be saved: { $error }.
-no-session-folder = There is no folder to keep the session in (HOME is not set): this window will not save its session.
-
 ## presets
 
 preset-group-worksheet = The worksheet
@@ -674,6 +598,81 @@ exercises-written =
        *[other] {" "}({ $redraws } draws rejected: they lacked an asked effect or hit an edge case)
     }
 
+## moodle-exam
+
+exam-key-heading = Each value exact and rounded
+exam-sheet-name = exam exercise { $number }
+moodle-category-exercise = exercise { $number }
+moodle-question-name = { $exercise }, variant { $variant }: key exercise-{ $sheet }-key.md of { $command }
+moodle-category-default = phonglab
+moodle-written = { $file } in { $out }: { $questions ->
+    [one] one question
+   *[other] { $questions } questions
+} in { $categories ->
+    [one] one category
+   *[other] { $categories } categories
+}. In Moodle: Question bank → Import → { $format }.
+moodle-format-xml = Moodle XML format
+moodle-format-gift = GIFT format
+exam-key-exact = exact
+exam-key-rounded = rounded to four significant digits
+err-exam-level-5 = --exam makes exercises of levels 1 to 4; level 5 has pictures, not numbers.
+err-moodle-only = --variants and --category are for a file for Moodle (--format moodle-xml or gift); sheets take --count.
+err-level-5-variants = --variants is for levels 1 to 4: level 5 has one picture per mistake, seven in all, none drawn twice; use --count (1 to 7).
+level-5-count = Level 5 has { $all } mistakes, one question each: { $all } questions, not { $count }.
+wrong-written = { $count ->
+    [one] 1 picture with one mistake, with its key,
+   *[other] { $count } pictures with one mistake each, with their keys,
+} in { $out }
+wrong-quiz-hover = A sphere drawn right and drawn with one mistake: pick the mistake
+wrong-check = Check
+wrong-right-answer = Right.
+wrong-wrong-answer = Not that one. The key:
+wrong-back = Back to the calculation
+share-summary = a link of { $length } characters: the scene is in the link itself
+share-window = Share this scene
+share-menu = Share link…
+share-menu-hover = The scene as a link and a QR code, for the class to open in a browser (nothing is stored on a server: the scene is in the link)
+share-page = Page the link opens
+share-page-hover = Where the browser build is published (empty: this page in a browser, else the project's site)
+share-in-language = Open in { $lang }
+share-presenting = Open presenting to a class
+share-channel = Open showing { $term }
+share-length = { $length } characters: the scene is in the link itself
+share-copy = Copy link
+share-copy-hover = Puts the link on the clipboard, to paste in the class's chat or page
+share-copied = Link copied ({ $length } characters): paste it for the class, or let them scan the code.
+share-qr = QR code of the link
+share-qr-too-long = The link is too long for a QR code; copy it instead.
+err-share-lang = unknown language { $value }: en, pt-PT or pt-BR
+share-opened = the shared link ({ $name })
+share-not-opened = The shared link was not opened: { $why }. This is the scene you had.
+share-needs-mesh = The link's scene shows the mesh { $name }, which a link does not carry: open or drop { $name } to see it (the sphere stands in until then).
+mesh-not-kept = (Not kept for a reload of the page: { $why }; open it again after one.)
+mesh-too-large-to-keep = packed, it is { $packed } characters, and the page keeps at most { $most }
+mesh-not-restored = The mesh { $name } this page kept could not be read back ({ $why }): open it again.
+quiz = Quiz
+quiz-hover = Every value of the calculation behind a field: type them step by step
+shader-hover = The GLSL or WGSL program this scene compiles to: only the stages it needs
+precision = Precision:
+f32-hover = Evaluate in single precision, as OpenGL does
+f64-hover = Evaluate in double precision
+cost-of-accuracy = Cost of accuracy
+cost-hover = What each shading, tessellation and approximation costs in time and in error
+help-button = Help (F1)
+undo-what = Undo: { $what } (Ctrl+Z)
+redo-what = Redo: { $what } (Ctrl+Shift+Z, Ctrl+Y)
+undo-button = ⟲ Undo
+redo-button = ⟳ Redo
+nothing-to-undo = Nothing to undo
+nothing-to-redo = Nothing to redo
+could-not-evaluate = Could not evaluate the scene ({ $error }); back to the worksheet.
+keyboard-shortcuts = Keyboard shortcuts
+vectors-at-vertex = Vectors at the vertex
+reflection-lobe = Reflection lobe
+session-not-saved = The session could not be saved: { $error }.
+no-session-folder = There is no folder to keep the session in (HOME is not set): this window will not save its session.
+
 ## cli-out
 
 render-summary = { $path }: { $size } px, { $triangles } triangles, { $covered } % covered, { $evaluations } lighting evaluations, { $ms } ms
@@ -974,16 +973,12 @@ cli-arg-diagnose-diff = Write the difference image (the picture against the righ
 cli-arg-diagnose-json = Print JSON (for scripts and tests) instead of the report
 file-kind-pictures = pictures
 diagnose-bad-png = { $path } cannot be read as a PNG picture: { $reason }
+diagnose-transparent = { $path } has { $count } transparent or see-through pixels (alpha below 255): what they show depends on what lies behind them, so phonglab does not judge it. Save the picture opaque, as the export and a screenshot of the window save it.
 png-reason-not-png = it is not a PNG file (it does not start as one does)
 png-reason-too-large = it is too large to decode
 png-reason-damaged = the file is damaged or cut short
 png-reason-colours = its colours are stored as { $kind }, which phonglab does not read
 diagnose-wrong-size = { $path } is { $got } pixels; the picture of this scene is { $expected } (the export's window; another size with --size)
-diagnose-verdict-right = Right: the right picture explains { $score } of the object's pixels.
-diagnose-verdict-wrong = Wrong. The cause: { $cause } ({ $id }); the picture with that mistake explains { $score } of the object's pixels, the right picture { $right }.
-diagnose-also = It also explains the picture: { $cause } ({ $id }), { $score }.
-diagnose-verdict-unexplained = No mistake phonglab knows explains this picture: the right picture explains { $right } of the object's pixels. The closest mistake, not named as the cause ({ $id }, { $score }): { $cause }.
-diagnose-verdict-unexplained-none = No mistake phonglab knows explains this picture: the right picture explains { $right } of the object's pixels.
 diagnose-invisible = Not tried (this scene cannot show them): { $ids }
 diagnose-diff-written = Difference image written (|A − B| × { $gain }, the largest difference near white): { $path }
 diagnose-diff-not-png = --diff { $path }: a difference image is a PNG, and its name must end in .png (check would read a name ending in .ipynb, .py or .txt as a student's work); nothing was written.

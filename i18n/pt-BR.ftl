@@ -63,85 +63,6 @@ wrong-drawn-right = Desenhada corretamente
 wrong-drawn-wrong = Desenhada com um erro
 wrong-question = Que erro produz a imagem da direita? Marque-o e diga o que na imagem o mostra.
 
-## moodle-exam
-
-exam-key-heading = Cada valor exato e arredondado
-exam-sheet-name = exercício de prova { $number }
-moodle-category-exercise = exercício { $number }
-moodle-question-name = { $exercise }, variante { $variant }: gabarito exercise-{ $sheet }-key.md de { $command }
-moodle-category-default = phonglab
-moodle-written = { $file } em { $out }: { $questions ->
-    [0] { $questions } questões
-    [one] uma questão
-   *[other] { $questions } questões
-} em { $categories ->
-    [0] { $categories } categorias
-    [one] uma categoria
-   *[other] { $categories } categorias
-}. No Moodle: Banco de questões → Importar → { $format }.
-moodle-format-xml = Formato Moodle XML
-moodle-format-gift = Formato GIFT
-exam-key-exact = exato
-exam-key-rounded = arredondado para quatro algarismos significativos
-err-exam-level-5 = --exam gera exercícios dos níveis 1 a 4; o nível 5 tem imagens, não números.
-err-moodle-only = --variants e --category servem para um arquivo para o Moodle (--format moodle-xml ou gift); as listas usam --count.
-err-level-5-variants = --variants é para os níveis 1 a 4: o nível 5 tem uma imagem por erro, sete ao todo, nenhuma desenhada duas vezes; use --count (1 a 7).
-level-5-count = O nível 5 tem { $all } erros, uma questão cada: { $all } questões, não { $count }.
-
-wrong-written = { $count ->
-    [0] { $count } imagens com um erro cada, com os gabaritos,
-    [one] 1 imagem com um erro, com o seu gabarito,
-   *[other] { $count } imagens com um erro cada, com os gabaritos,
-} em { $out }
-wrong-quiz-hover = Uma esfera desenhada corretamente e desenhada com um erro: escolha o erro
-wrong-check = Verificar
-wrong-right-answer = Certo.
-wrong-wrong-answer = Não é esse. O gabarito:
-wrong-back = Voltar ao cálculo
-share-summary = um link de { $length } caracteres: a cena vai no próprio link
-share-window = Compartilhar esta cena
-share-menu = Compartilhar link…
-share-menu-hover = A cena como link e código QR, para a turma abrir em um navegador (nada fica guardado em um servidor: a cena vai no próprio link)
-share-page = Página que o link abre
-share-page-hover = Onde a versão para o navegador está publicada (vazio: esta página, em um navegador; senão, o site do projeto)
-share-in-language = Abrir em { $lang }
-share-presenting = Abrir no modo de apresentação
-share-channel = Abrir mostrando { $term }
-share-length = { $length } caracteres: a cena vai no próprio link
-share-copy = Copiar link
-share-copy-hover = Coloca o link na área de transferência, para colar no chat ou na página da turma
-share-copied = Link copiado ({ $length } caracteres): cole-o para a turma, ou deixe que ela leia o código.
-share-qr = Código QR do link
-share-qr-too-long = O link é longo demais para um código QR; copie-o.
-err-share-lang = idioma desconhecido { $value }: en, pt-PT ou pt-BR
-share-opened = o link compartilhado ({ $name })
-share-not-opened = O link compartilhado não foi aberto: { $why }. Esta é a cena que você tinha.
-share-needs-mesh = A cena do link mostra a malha { $name }, que um link não leva: abra ou solte { $name } para vê-la (até lá, a esfera fica no lugar dela).
-mesh-not-kept = (Não fica guardada para quando a página for recarregada: { $why }; abra-a de novo depois disso.)
-mesh-too-large-to-keep = comprimida, tem { $packed } caracteres, e a página guarda no máximo { $most }
-mesh-not-restored = Não foi possível ler de novo a malha { $name } que esta página guardou ({ $why }): abra-a de novo.
-quiz = Teste
-quiz-hover = Cada valor do cálculo atrás de um campo: digite-os passo a passo
-shader-hover = O programa GLSL ou WGSL em que esta cena se compila: só as etapas de que precisa
-precision = Precisão:
-f32-hover = Calcular em precisão simples, como o OpenGL
-f64-hover = Calcular em precisão dupla
-cost-of-accuracy = Custo da exatidão
-cost-hover = O que cada sombreamento, tesselação e aproximação custa em tempo e em erro
-help-button = Ajuda (F1)
-undo-what = Desfazer: { $what } (Ctrl+Z)
-redo-what = Refazer: { $what } (Ctrl+Shift+Z, Ctrl+Y)
-undo-button = ⟲ Desfazer
-redo-button = ⟳ Refazer
-nothing-to-undo = Nada para desfazer
-nothing-to-redo = Nada para refazer
-could-not-evaluate = Não foi possível calcular a cena ({ $error }); de volta à lista.
-keyboard-shortcuts = Atalhos de teclado
-vectors-at-vertex = Vetores no vértice
-reflection-lobe = Lóbulo de reflexão
-session-not-saved = Não foi possível salvar a sessão: { $error }.
-no-session-folder = Não há pasta onde salvar a sessão (HOME não está definida): esta janela não guardará a sua sessão.
-
 ## presets
 
 preset-group-worksheet = A lista
@@ -691,6 +612,84 @@ exercises-written =
        *[other] {" "}({ $redraws } sorteios rejeitados: faltava um efeito pedido ou caíam em um caso-limite)
     }
 
+## moodle-exam
+
+exam-key-heading = Cada valor exato e arredondado
+exam-sheet-name = exercício de prova { $number }
+moodle-category-exercise = exercício { $number }
+moodle-question-name = { $exercise }, variante { $variant }: gabarito exercise-{ $sheet }-key.md de { $command }
+moodle-category-default = phonglab
+moodle-written = { $file } em { $out }: { $questions ->
+    [0] { $questions } questões
+    [one] uma questão
+   *[other] { $questions } questões
+} em { $categories ->
+    [0] { $categories } categorias
+    [one] uma categoria
+   *[other] { $categories } categorias
+}. No Moodle: Banco de questões → Importar → { $format }.
+moodle-format-xml = Formato Moodle XML
+moodle-format-gift = Formato GIFT
+exam-key-exact = exato
+exam-key-rounded = arredondado para quatro algarismos significativos
+err-exam-level-5 = --exam gera exercícios dos níveis 1 a 4; o nível 5 tem imagens, não números.
+err-moodle-only = --variants e --category servem para um arquivo para o Moodle (--format moodle-xml ou gift); as listas usam --count.
+err-level-5-variants = --variants é para os níveis 1 a 4: o nível 5 tem uma imagem por erro, sete ao todo, nenhuma desenhada duas vezes; use --count (1 a 7).
+level-5-count = O nível 5 tem { $all } erros, uma questão cada: { $all } questões, não { $count }.
+wrong-written = { $count ->
+    [0] { $count } imagens com um erro cada, com os gabaritos,
+    [one] 1 imagem com um erro, com o seu gabarito,
+   *[other] { $count } imagens com um erro cada, com os gabaritos,
+} em { $out }
+wrong-quiz-hover = Uma esfera desenhada corretamente e desenhada com um erro: escolha o erro
+wrong-check = Verificar
+wrong-right-answer = Certo.
+wrong-wrong-answer = Não é esse. O gabarito:
+wrong-back = Voltar ao cálculo
+share-summary = um link de { $length } caracteres: a cena vai no próprio link
+share-window = Compartilhar esta cena
+share-menu = Compartilhar link…
+share-menu-hover = A cena como link e código QR, para a turma abrir em um navegador (nada fica guardado em um servidor: a cena vai no próprio link)
+share-page = Página que o link abre
+share-page-hover = Onde a versão para o navegador está publicada (vazio: esta página, em um navegador; senão, o site do projeto)
+share-in-language = Abrir em { $lang }
+share-presenting = Abrir no modo de apresentação
+share-channel = Abrir mostrando { $term }
+share-length = { $length } caracteres: a cena vai no próprio link
+share-copy = Copiar link
+share-copy-hover = Coloca o link na área de transferência, para colar no chat ou na página da turma
+share-copied = Link copiado ({ $length } caracteres): cole-o para a turma, ou deixe que ela leia o código.
+share-qr = Código QR do link
+share-qr-too-long = O link é longo demais para um código QR; copie-o.
+err-share-lang = idioma desconhecido { $value }: en, pt-PT ou pt-BR
+share-opened = o link compartilhado ({ $name })
+share-not-opened = O link compartilhado não foi aberto: { $why }. Esta é a cena que você tinha.
+share-needs-mesh = A cena do link mostra a malha { $name }, que um link não leva: abra ou solte { $name } para vê-la (até lá, a esfera fica no lugar dela).
+mesh-not-kept = (Não fica guardada para quando a página for recarregada: { $why }; abra-a de novo depois disso.)
+mesh-too-large-to-keep = comprimida, tem { $packed } caracteres, e a página guarda no máximo { $most }
+mesh-not-restored = Não foi possível ler de novo a malha { $name } que esta página guardou ({ $why }): abra-a de novo.
+quiz = Teste
+quiz-hover = Cada valor do cálculo atrás de um campo: digite-os passo a passo
+shader-hover = O programa GLSL ou WGSL em que esta cena se compila: só as etapas de que precisa
+precision = Precisão:
+f32-hover = Calcular em precisão simples, como o OpenGL
+f64-hover = Calcular em precisão dupla
+cost-of-accuracy = Custo da exatidão
+cost-hover = O que cada sombreamento, tesselação e aproximação custa em tempo e em erro
+help-button = Ajuda (F1)
+undo-what = Desfazer: { $what } (Ctrl+Z)
+redo-what = Refazer: { $what } (Ctrl+Shift+Z, Ctrl+Y)
+undo-button = ⟲ Desfazer
+redo-button = ⟳ Refazer
+nothing-to-undo = Nada para desfazer
+nothing-to-redo = Nada para refazer
+could-not-evaluate = Não foi possível calcular a cena ({ $error }); de volta à lista.
+keyboard-shortcuts = Atalhos de teclado
+vectors-at-vertex = Vetores no vértice
+reflection-lobe = Lóbulo de reflexão
+session-not-saved = Não foi possível salvar a sessão: { $error }.
+no-session-folder = Não há pasta onde salvar a sessão (HOME não está definida): esta janela não guardará a sua sessão.
+
 ## cli-out
 
 render-summary = { $path }: { $size } px, { $triangles } triângulos, { $covered } % coberto, { $evaluations } cálculos de iluminação, { $ms } ms
@@ -991,16 +990,12 @@ cli-arg-diagnose-diff = Gravar a imagem das diferenças (a imagem contra a certa
 cli-arg-diagnose-json = Imprimir JSON (para scripts e testes) em vez do relatório
 file-kind-pictures = imagens
 diagnose-bad-png = { $path } não pode ser lido como uma imagem PNG: { $reason }
+diagnose-transparent = { $path } tem { $count } pixels transparentes ou translúcidos (alfa abaixo de 255): o que mostram depende do que está por trás, por isso o phonglab não a avalia. Salve a imagem opaca, como a exportação e uma captura de tela da janela a salvam.
 png-reason-not-png = não é um arquivo PNG (não começa como um começa)
 png-reason-too-large = é grande demais para decodificar
 png-reason-damaged = o arquivo está danificado ou incompleto
 png-reason-colours = as cores dele estão gravadas como { $kind }, que o phonglab não lê
 diagnose-wrong-size = { $path } tem { $got } pixels; a imagem desta cena tem { $expected } (a janela da exportação; outro tamanho com --size)
-diagnose-verdict-right = Certa: a imagem certa explica { $score } dos pixels do objeto.
-diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos pixels do objeto, a imagem certa { $right }.
-diagnose-also = Também explica a imagem: { $cause } ({ $id }), { $score }.
-diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos pixels do objeto. O erro mais próximo, que não é apontado como a causa ({ $id }, { $score }): { $cause }.
-diagnose-verdict-unexplained-none = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos pixels do objeto.
 diagnose-invisible = Não testados (esta cena não consegue mostrá-los): { $ids }
 diagnose-diff-written = Imagem das diferenças gravada (|A − B| × { $gain }, a maior diferença quase branca): { $path }
 diagnose-diff-not-png = --diff { $path }: a imagem da diferença é um PNG e o nome dela precisa terminar em .png (o check leria um nome terminado em .ipynb, .py ou .txt como um trabalho de aluno); nada foi escrito.

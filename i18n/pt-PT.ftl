@@ -63,82 +63,6 @@ wrong-drawn-right = Desenhada corretamente
 wrong-drawn-wrong = Desenhada com um erro
 wrong-question = Que erro produz a imagem da direita? Assinale-o e diga o que na imagem o mostra.
 
-## moodle-exam
-
-exam-key-heading = Cada valor exato e arredondado
-exam-sheet-name = exercício de exame { $number }
-moodle-category-exercise = exercício { $number }
-moodle-question-name = { $exercise }, variante { $variant }: chave exercise-{ $sheet }-key.md de { $command }
-moodle-category-default = phonglab
-moodle-written = { $file } em { $out }: { $questions ->
-    [one] uma pergunta
-   *[other] { $questions } perguntas
-} { $categories ->
-    [one] numa categoria
-   *[other] em { $categories } categorias
-}. No Moodle: Banco de questões → Importar → { $format }.
-moodle-format-xml = Formato Moodle XML
-moodle-format-gift = Formato GIFT
-exam-key-exact = exato
-exam-key-rounded = arredondado a quatro algarismos significativos
-err-exam-level-5 = --exam gera exercícios dos níveis 1 a 4; o nível 5 tem imagens, não números.
-err-moodle-only = --variants e --category servem para um ficheiro para o Moodle (--format moodle-xml ou gift); as fichas usam --count.
-err-level-5-variants = --variants é para os níveis 1 a 4: o nível 5 tem uma imagem por erro, sete ao todo, nenhuma desenhada duas vezes; use --count (1 a 7).
-level-5-count = O nível 5 tem { $all } erros, uma pergunta cada: { $all } perguntas, não { $count }.
-
-wrong-written = { $count ->
-    [one] 1 imagem com um erro, com a sua chave,
-   *[other] { $count } imagens com um erro cada, com as chaves,
-} em { $out }
-wrong-quiz-hover = Uma esfera desenhada corretamente e desenhada com um erro: escolha o erro
-wrong-check = Verificar
-wrong-right-answer = Certo.
-wrong-wrong-answer = Não é esse. A chave:
-wrong-back = Voltar ao cálculo
-share-summary = uma ligação de { $length } caracteres: a cena vai na própria ligação
-share-window = Partilhar esta cena
-share-menu = Partilhar ligação…
-share-menu-hover = A cena como ligação e código QR, para a turma abrir num navegador (nada fica guardado num servidor: a cena vai na própria ligação)
-share-page = Página que a ligação abre
-share-page-hover = Onde a versão para o navegador está publicada (vazio: esta página, num navegador; senão, o sítio do projeto)
-share-in-language = Abrir em { $lang }
-share-presenting = Abrir em modo de apresentação
-share-channel = Abrir a mostrar { $term }
-share-length = { $length } caracteres: a cena vai na própria ligação
-share-copy = Copiar ligação
-share-copy-hover = Põe a ligação na área de transferência, para colar no chat ou na página da turma
-share-copied = Ligação copiada ({ $length } caracteres): cole-a para a turma, ou deixe-a ler o código.
-share-qr = Código QR da ligação
-share-qr-too-long = A ligação é longa demais para um código QR; copie-a.
-err-share-lang = língua desconhecida { $value }: en, pt-PT ou pt-BR
-share-opened = a ligação partilhada ({ $name })
-share-not-opened = A ligação partilhada não foi aberta: { $why }. Esta é a cena que tinha.
-share-needs-mesh = A cena da ligação mostra a malha { $name }, que uma ligação não leva: abra ou largue { $name } para a ver (até lá, a esfera toma o seu lugar).
-mesh-not-kept = (Não fica guardada para quando a página for recarregada: { $why }; abra-a de novo depois disso.)
-mesh-too-large-to-keep = comprimida, tem { $packed } caracteres, e a página guarda no máximo { $most }
-mesh-not-restored = Não foi possível ler de novo a malha { $name } que esta página guardou ({ $why }): abra-a outra vez.
-quiz = Teste
-quiz-hover = Cada valor do cálculo atrás de um campo: escreva-os passo a passo
-shader-hover = O programa GLSL ou WGSL em que esta cena se compila: só as etapas de que precisa
-precision = Precisão:
-f32-hover = Calcular em precisão simples, como o OpenGL
-f64-hover = Calcular em precisão dupla
-cost-of-accuracy = Custo da exatidão
-cost-hover = O que cada sombreamento, tesselação e aproximação custa em tempo e em erro
-help-button = Ajuda (F1)
-undo-what = Desfazer: { $what } (Ctrl+Z)
-redo-what = Refazer: { $what } (Ctrl+Shift+Z, Ctrl+Y)
-undo-button = ⟲ Desfazer
-redo-button = ⟳ Refazer
-nothing-to-undo = Nada a desfazer
-nothing-to-redo = Nada a refazer
-could-not-evaluate = Não foi possível calcular a cena ({ $error }); de volta à ficha.
-keyboard-shortcuts = Atalhos de teclado
-vectors-at-vertex = Vetores no vértice
-reflection-lobe = Lóbulo de reflexão
-session-not-saved = Não foi possível guardar a sessão: { $error }.
-no-session-folder = Não há pasta onde guardar a sessão (HOME não está definida): esta janela não guardará a sua sessão.
-
 ## presets
 
 preset-group-worksheet = A ficha
@@ -677,6 +601,81 @@ exercises-written =
        *[other] {" "}({ $redraws } sorteios rejeitados: faltava-lhes um efeito pedido ou caíam num caso-limite)
     }
 
+## moodle-exam
+
+exam-key-heading = Cada valor exato e arredondado
+exam-sheet-name = exercício de exame { $number }
+moodle-category-exercise = exercício { $number }
+moodle-question-name = { $exercise }, variante { $variant }: chave exercise-{ $sheet }-key.md de { $command }
+moodle-category-default = phonglab
+moodle-written = { $file } em { $out }: { $questions ->
+    [one] uma pergunta
+   *[other] { $questions } perguntas
+} { $categories ->
+    [one] numa categoria
+   *[other] em { $categories } categorias
+}. No Moodle: Banco de questões → Importar → { $format }.
+moodle-format-xml = Formato Moodle XML
+moodle-format-gift = Formato GIFT
+exam-key-exact = exato
+exam-key-rounded = arredondado a quatro algarismos significativos
+err-exam-level-5 = --exam gera exercícios dos níveis 1 a 4; o nível 5 tem imagens, não números.
+err-moodle-only = --variants e --category servem para um ficheiro para o Moodle (--format moodle-xml ou gift); as fichas usam --count.
+err-level-5-variants = --variants é para os níveis 1 a 4: o nível 5 tem uma imagem por erro, sete ao todo, nenhuma desenhada duas vezes; use --count (1 a 7).
+level-5-count = O nível 5 tem { $all } erros, uma pergunta cada: { $all } perguntas, não { $count }.
+wrong-written = { $count ->
+    [one] 1 imagem com um erro, com a sua chave,
+   *[other] { $count } imagens com um erro cada, com as chaves,
+} em { $out }
+wrong-quiz-hover = Uma esfera desenhada corretamente e desenhada com um erro: escolha o erro
+wrong-check = Verificar
+wrong-right-answer = Certo.
+wrong-wrong-answer = Não é esse. A chave:
+wrong-back = Voltar ao cálculo
+share-summary = uma ligação de { $length } caracteres: a cena vai na própria ligação
+share-window = Partilhar esta cena
+share-menu = Partilhar ligação…
+share-menu-hover = A cena como ligação e código QR, para a turma abrir num navegador (nada fica guardado num servidor: a cena vai na própria ligação)
+share-page = Página que a ligação abre
+share-page-hover = Onde a versão para o navegador está publicada (vazio: esta página, num navegador; senão, o sítio do projeto)
+share-in-language = Abrir em { $lang }
+share-presenting = Abrir em modo de apresentação
+share-channel = Abrir a mostrar { $term }
+share-length = { $length } caracteres: a cena vai na própria ligação
+share-copy = Copiar ligação
+share-copy-hover = Põe a ligação na área de transferência, para colar no chat ou na página da turma
+share-copied = Ligação copiada ({ $length } caracteres): cole-a para a turma, ou deixe-a ler o código.
+share-qr = Código QR da ligação
+share-qr-too-long = A ligação é longa demais para um código QR; copie-a.
+err-share-lang = língua desconhecida { $value }: en, pt-PT ou pt-BR
+share-opened = a ligação partilhada ({ $name })
+share-not-opened = A ligação partilhada não foi aberta: { $why }. Esta é a cena que tinha.
+share-needs-mesh = A cena da ligação mostra a malha { $name }, que uma ligação não leva: abra ou largue { $name } para a ver (até lá, a esfera toma o seu lugar).
+mesh-not-kept = (Não fica guardada para quando a página for recarregada: { $why }; abra-a de novo depois disso.)
+mesh-too-large-to-keep = comprimida, tem { $packed } caracteres, e a página guarda no máximo { $most }
+mesh-not-restored = Não foi possível ler de novo a malha { $name } que esta página guardou ({ $why }): abra-a outra vez.
+quiz = Teste
+quiz-hover = Cada valor do cálculo atrás de um campo: escreva-os passo a passo
+shader-hover = O programa GLSL ou WGSL em que esta cena se compila: só as etapas de que precisa
+precision = Precisão:
+f32-hover = Calcular em precisão simples, como o OpenGL
+f64-hover = Calcular em precisão dupla
+cost-of-accuracy = Custo da exatidão
+cost-hover = O que cada sombreamento, tesselação e aproximação custa em tempo e em erro
+help-button = Ajuda (F1)
+undo-what = Desfazer: { $what } (Ctrl+Z)
+redo-what = Refazer: { $what } (Ctrl+Shift+Z, Ctrl+Y)
+undo-button = ⟲ Desfazer
+redo-button = ⟳ Refazer
+nothing-to-undo = Nada a desfazer
+nothing-to-redo = Nada a refazer
+could-not-evaluate = Não foi possível calcular a cena ({ $error }); de volta à ficha.
+keyboard-shortcuts = Atalhos de teclado
+vectors-at-vertex = Vetores no vértice
+reflection-lobe = Lóbulo de reflexão
+session-not-saved = Não foi possível guardar a sessão: { $error }.
+no-session-folder = Não há pasta onde guardar a sessão (HOME não está definida): esta janela não guardará a sua sessão.
+
 ## cli-out
 
 render-summary = { $path }: { $size } px, { $triangles } triângulos, { $covered } % coberto, { $evaluations } cálculos de iluminação, { $ms } ms
@@ -977,16 +976,12 @@ cli-arg-diagnose-diff = Escrever a imagem das diferenças (a imagem contra a cer
 cli-arg-diagnose-json = Imprimir JSON (para scripts e testes) em vez do relatório
 file-kind-pictures = imagens
 diagnose-bad-png = { $path } não pode ser lido como uma imagem PNG: { $reason }
+diagnose-transparent = { $path } tem { $count } píxeis transparentes ou translúcidos (alfa abaixo de 255): o que mostram depende do que está por trás, por isso o phonglab não a avalia. Guarde a imagem opaca, como a guardam a exportação e uma captura de ecrã da janela.
 png-reason-not-png = não é um ficheiro PNG (não começa como um começa)
 png-reason-too-large = é demasiado grande para descodificar
 png-reason-damaged = o ficheiro está danificado ou incompleto
 png-reason-colours = as suas cores estão guardadas como { $kind }, que o phonglab não lê
 diagnose-wrong-size = { $path } tem { $got } píxeis; a imagem desta cena tem { $expected } (a janela da exportação; outro tamanho com --size)
-diagnose-verdict-right = Certa: a imagem certa explica { $score } dos píxeis do objeto.
-diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos píxeis do objeto, a imagem certa { $right }.
-diagnose-also = Também explica a imagem: { $cause } ({ $id }), { $score }.
-diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos píxeis do objeto. O erro mais próximo, que não é dado como a causa ({ $id }, { $score }): { $cause }.
-diagnose-verdict-unexplained-none = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos píxeis do objeto.
 diagnose-invisible = Não experimentados (esta cena não os pode mostrar): { $ids }
 diagnose-diff-written = Imagem das diferenças escrita (|A − B| × { $gain }, a maior diferença quase branca): { $path }
 diagnose-diff-not-png = --diff { $path }: a imagem da diferença é um PNG e o seu nome tem de terminar em .png (o check leria um nome terminado em .ipynb, .py ou .txt como um trabalho de um aluno); nada foi escrito.

@@ -9,7 +9,7 @@ use crate::t;
 use anyhow::Result;
 use clap::Args;
 use phonglab_core::teach::diagnose::{
-    Diagnosis, Drawing, Shape, Tried, Verdict, diagnose, drawings_at_most, listed, most_common_first, picture_shows,
+    Diagnosis, Drawing, Said, Shape, Tried, Verdict, diagnose, drawings_at_most, listed, said,
 };
 use phonglab_core::teach::picture_match::difference_image;
 use phonglab_core::{PowFn, probe, probe_report};
@@ -69,48 +69,8 @@ fn named_png(path: &Path) -> bool {
     path.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"))
 }
 
-/// A share of pixels as a percentage in the user's decimal mark.
-fn percent(score: f64) -> String {
-    crate::locale::percent(score, 1)
-}
-
 fn score_of(t: &Tried) -> f64 {
     t.matched.map_or(0.0, |m| m.score)
-}
-
-/// The report's verdict lines.
-fn verdict_lines(d: &Diagnosis) -> Vec<String> {
-    let right = percent(d.right.score);
-    let named = |t: &Tried| (t.words(), t.id(), percent(score_of(t)));
-    match d.verdict {
-        Verdict::Right => vec![d.lossy_words().unwrap_or_else(|| t!("diagnose-verdict-right", score = right))],
-        Verdict::Wrong => {
-            // Causes that draw the same picture: what it shows, the most common named, the
-            // others in one line; then each cause with a picture of its own.
-            let tie = most_common_first(&d.same_picture);
-            let mut out: Vec<String> = picture_shows(&tie).into_iter().collect();
-            let first = tie.first().unwrap_or(&d.causes[0]);
-            let (cause, id, score) = named(first);
-            out.push(t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right));
-            out.extend(d.footprint_words());
-            out.extend(d.same_picture_words());
-            for c in d.causes.iter().filter(|c| *c != first && !tie.contains(c)) {
-                let (cause, id, score) = named(c);
-                out.push(t!("diagnose-also", cause = cause, id = id, score = score));
-            }
-            out
-        }
-        Verdict::Unexplained if d.shape.is_some() => d.shape.iter().map(|s| s.words(d.right.score)).collect(),
-        Verdict::Unexplained => {
-            let closest = d.tried.first().filter(|t| t.matched.is_some());
-            match closest.map(named) {
-                Some((cause, id, score)) => {
-                    vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
-                }
-                None => vec![t!("diagnose-verdict-unexplained-none", right = right)],
-            }
-        }
-    }
 }
 
 /// The mistakes this scene cannot show, for JSON: each its id, and `light` for one made per
@@ -165,7 +125,7 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
         );
         return Ok(is_right);
     }
-    let mut out = verdict_lines(&d);
+    let mut out = d.lines();
     // Each once, its light in brackets; never a fitted one (its picture is the scene's
     // only because the picture showed the scene's values).
     let hidden: Vec<Tried> = d.tried.iter().filter(|t| t.matched.is_none() && !t.fitted()).copied().collect();
@@ -228,12 +188,17 @@ fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>)
             Shape::Levels(l) => {
                 j["levels"] = json!({ "shift": l.shift, "gamma": l.gamma, "score": l.matched.score });
             }
+            Shape::Offset(o) => {
+                j["offset"] = json!({ "levels": o.levels, "pixels": o.pixels, "from": [o.from.0, o.from.1], "to": [o.to.0, o.to.1] });
+            }
             Shape::NothingDrawn => {}
         }
         j
     });
     json!({
         "verdict": d.verdict.name(),
+        "finding": said::finding(&Said::of(d)),
+        "within": d.within.map(|w| json!({ "most": w.most, "pixels": w.pixels, "inside": w.inside })),
         "shape": shape,
         "causes": d.causes.iter().map(cause).collect::<Vec<_>>(),
         "same_picture": d.same_picture.iter().map(cause).collect::<Vec<_>>(),

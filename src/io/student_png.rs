@@ -42,11 +42,23 @@ pub fn decode(bytes: &[u8], path: &Path, size: usize) -> Result<Vec<u8>, String>
     let mut buf = vec![0; reader.output_buffer_size().ok_or_else(|| bad(t!("png-reason-too-large")))?];
     let info = reader.next_frame(&mut buf).map_err(|e| bad(png_reason(bytes, &e)))?;
     buf.truncate(info.buffer_size());
-    match info.color_type {
-        png::ColorType::Rgba => Ok(buf),
-        png::ColorType::GrayscaleAlpha => Ok(buf.chunks_exact(2).flat_map(|c| [c[0], c[0], c[0], c[1]]).collect()),
-        other => Err(bad(t!("png-reason-colours", kind = format!("{other:?}")))),
+    let rgba = match info.color_type {
+        png::ColorType::Rgba => buf,
+        png::ColorType::GrayscaleAlpha => buf.chunks_exact(2).flat_map(|c| [c[0], c[0], c[0], c[1]]).collect(),
+        other => return Err(bad(t!("png-reason-colours", kind = format!("{other:?}")))),
+    };
+    opaque(rgba, &shown)
+}
+
+/// `rgba` when every pixel is opaque, else why it is refused: a transparent or see-through
+/// pixel shows whatever lies behind it (a page's white, a viewer's checkerboard), so no
+/// verdict on its colour would be true of what the student saw. The file shown as `shown`.
+fn opaque(rgba: Vec<u8>, shown: &str) -> Result<Vec<u8>, String> {
+    let clear = rgba.chunks_exact(4).filter(|p| p[3] < 255).count();
+    if clear == 0 {
+        return Ok(rgba);
     }
+    Err(t!("diagnose-transparent", path = shown.to_owned(), count = clear.to_string()))
 }
 
 /// Why the decoder refused `bytes`, in the catalogue's words (the decoder's own are

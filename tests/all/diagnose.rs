@@ -657,3 +657,121 @@ fn a_difference_image_named_as_a_submission_is_refused_and_nothing_is_written() 
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(diff.exists());
 }
+
+/// `phonglab render` of the shipped scene `name` with `from` replaced by `to`, at the
+/// export's 512 pixels, read back (RGBA8), with noise of up to ±`noise` levels (a fixed
+/// sequence).
+fn rendered_with(dir: &Path, name: &str, from: &str, to: &str, noise: i32) -> Vec<u8> {
+    let text = shipped(name).replacen(from, to, 1);
+    assert!(from == to || text != shipped(name), "{from}");
+    let scene = write(dir, &format!("{name}-changed.toml"), &text);
+    let png = dir.join(format!("{name}-changed.png"));
+    let o = phonglab(&["render", "--scene", scene.to_str().unwrap(), "-o", png.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (_, _, mut rgba) = phonglab::io::image::read_png(&png).unwrap();
+    let mut seed = 5u32;
+    for (i, v) in rgba.iter_mut().enumerate().filter(|(i, _)| i % 4 != 3) {
+        seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12345 + i as u32 % 3);
+        let n = ((seed >> 16) % (2 * noise as u32 + 1)) as i32 - noise;
+        *v = (i32::from(*v) + n).clamp(0, 255) as u8;
+    }
+    rgba
+}
+
+/// `phonglab diagnose --json` at 512 of the picture `rgba` against the shipped scene `name`.
+fn judged_512(dir: &Path, name: &str, rgba: &[u8]) -> serde_json::Value {
+    let image = dir.join(format!("{name}-student.png"));
+    phonglab::io::image::write_png(&image, 512, 512, rgba).unwrap();
+    let scene = write(dir, &format!("{name}.toml"), &shipped(name));
+    let (out, code) = diagnose_at_512(&scene, &image, &["--json"]);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}"));
+    assert_eq!(code, Some(i32::from(v["verdict"] != "right")), "{v:#}");
+    v
+}
+
+#[test]
+fn a_shininess_a_little_off_is_right_only_within_what_a_picture_can_tell_and_says_how_far() {
+    let dir = scratch("within");
+    // The right picture drawn by phonglab: the right one to the rounding.
+    let v = judged_512(&dir, "three-lights", &rendered_with(&dir, "three-lights", "shininess", "shininess", 0));
+    assert_eq!((v["verdict"].as_str(), v["finding"].as_str()), (Some("right"), Some("right")), "{v:#}");
+    assert_eq!(v["within"]["pixels"], 0, "{v:#}");
+    // Spot exponent 9 for 8 on the spotlight: every pixel within 3 levels past a pixel's
+    // shift, so the share explains it; inside the object it differs by a few levels.
+    let changed = rendered_with(&dir, "spotlight", "spot_exponent = 8", "spot_exponent = 9", 0);
+    let v = judged_512(&dir, "spotlight", &changed);
+    assert_eq!(v["verdict"], "right", "{v:#}");
+    assert_eq!(v["finding"], "right-within-picture", "{v:#}");
+    let most = v["within"]["most"].as_u64().unwrap();
+    assert!((2..=12).contains(&most) && v["within"]["pixels"].as_u64().unwrap() > 100, "{v:#}");
+    // Said so, with how far, in both commands' words.
+    let image = dir.join("spotlight-student.png");
+    let scene = dir.join("spotlight.toml");
+    let (said, _) = diagnose_at_512(&scene, &image, &["--lang", "pt-PT"]);
+    assert!(said.contains("Certa, tanto quanto uma imagem permite dizer"), "{said}");
+    assert!(said.contains(&format!("até {most} níveis")), "{said}");
+    let (said, _) = diagnose_at_512(&scene, &image, &["--lang", "en"]);
+    assert!(said.contains(&format!("by up to {most} levels")) && !said.starts_with("Right:"), "{said}");
+}
+
+#[test]
+fn a_wrong_picture_saved_with_noise_or_a_dark_square_painted_on_is_never_right() {
+    let dir = scratch("offset");
+    // The blue light's linear attenuation 0.12 for 0.1, with noise of ±5 (as a lossy
+    // saving leaves): was "right, as saved lossily".
+    let changed = rendered_with(&dir, "three-lights", "attenuation = [1, 0.1, 0]", "attenuation = [1, 0.12, 0]", 5);
+    let v = judged_512(&dir, "three-lights", &changed);
+    assert_ne!(v["verdict"], "right", "{v:#}");
+    // The right picture with the same noise stays right.
+    let right = rendered_with(&dir, "three-lights", "shininess", "shininess", 5);
+    let v = judged_512(&dir, "three-lights", &right);
+    assert_eq!(v["verdict"], "right", "{v:#}");
+    // A 16 x 16 square 12 levels darker on the teapot: a consistent offset, where it is.
+    let mut painted = right.clone();
+    for y in 240..256 {
+        for x in 240..256 {
+            for c in 0..3 {
+                painted[(y * 512 + x) * 4 + c] = painted[(y * 512 + x) * 4 + c].saturating_sub(12);
+            }
+        }
+    }
+    let v = judged_512(&dir, "three-lights", &painted);
+    assert_eq!(
+        (v["verdict"].as_str(), v["shape"]["id"].as_str()),
+        (Some("unexplained"), Some("offset-differs")),
+        "{v:#}"
+    );
+    let o = &v["shape"]["offset"];
+    assert!(o["levels"].as_f64().unwrap() <= -3.5, "{o:#}");
+    assert_eq!((o["from"][0].as_u64(), o["from"][1].as_u64()), (Some(240), Some(240)), "{o:#}");
+}
+
+#[test]
+fn a_transparent_picture_is_refused_and_an_opaque_one_is_judged() {
+    let dir = scratch("alpha");
+    let scene = write(&dir, "spotlight.toml", &spotlight());
+    let drawn = dir.join("right.png");
+    let o = phonglab(&["render", "--scene", scene.to_str().unwrap(), "-o", drawn.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (w, _, rgba) = phonglab::io::image::read_png(&drawn).unwrap();
+    for (alpha, expected) in [(255u8, Some(0)), (128, Some(2)), (0, Some(2))] {
+        let with: Vec<u8> = rgba.iter().enumerate().map(|(i, &v)| if i % 4 == 3 { alpha } else { v }).collect();
+        let image = dir.join(format!("alpha{alpha}.png"));
+        phonglab::io::image::write_png(&image, w, w, &with).unwrap();
+        let o = phonglab(&[
+            "diagnose",
+            "--scene",
+            scene.to_str().unwrap(),
+            "--image",
+            image.to_str().unwrap(),
+            "--lang",
+            "en",
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), expected, "alpha {alpha}: {err}");
+        if alpha < 255 {
+            assert!(err.contains(&format!("{} transparent or see-through pixels", w * w)), "{err}");
+            assert!(o.stdout.is_empty());
+        }
+    }
+}

@@ -751,6 +751,8 @@ diagnose-light-unseen = Nothing of light { $light } (GL_LIGHT{ $light }) reaches
 diagnose-nothing-drawn = Nothing of the object is drawn: the picture is only the background. Check the draw call (glutSolidTeapot, gluSphere…) and that it runs, and the camera (gluLookAt, gluPerspective): the object may be behind it or outside its view.
 diagnose-outline-differs = The object's outline is not this scene's ({ $share } of it differs, beyond a pixel): is this the picture of this scene? Check --scene, and the program's object and camera.
 diagnose-region-differs = A region of { $pixels } pixels around ({ $x }, { $y }) differs from the right picture, although the right picture explains { $score } of the object's pixels: something is drawn over the object there, or that part of it is wrong.
+diagnose-offset-darker = The { $pixels } pixels of the object from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 }) are evenly darker than in the right picture, by { $levels } levels on average (noise, a lossy saving or a pixel's shift leave less than { $least }), although the right picture explains { $score } of the object's pixels: something is painted over the object there, or its light or material is a little off.
+diagnose-offset-lighter = The { $pixels } pixels of the object from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 }) are evenly lighter than in the right picture, by { $levels } levels on average (noise, a lossy saving or a pixel's shift leave less than { $least }), although the right picture explains { $score } of the object's pixels: something is painted over the object there, or its light or material is a little off.
 diagnose-marks-differ = Thin marks of { $pixels } pixels, from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 }), differ from the right picture, although the right picture explains { $score } of the object's pixels: lines or marks are drawn over the object there.
 diagnose-levels-darker = The whole picture is { $levels } levels darker on the mean than the right one, as a change of the saved picture's gamma, brightness or colour profile makes (that change of the right picture explains { $score } of the object's pixels): not a mistake in the lighting. Save the picture as the program draws it, without editing it, and check it again.
 diagnose-levels-lighter = The whole picture is { $levels } levels lighter on the mean than the right one, as a change of the saved picture's gamma, brightness or colour profile makes (that change of the right picture explains { $score } of the object's pixels): not a mistake in the lighting. Save the picture as the program draws it, without editing it, and check it again.
@@ -759,6 +761,12 @@ diagnose-footprint-group = { $count } from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1
 diagnose-footprint-rest = { $count } elsewhere
 diagnose-footprint-and = and
 diagnose-verdict-right-lossy = Right, as saved lossily (JPEG): the right picture explains { $score } of the object's pixels within { $levels } levels ({ $strict } within { $tolerance }), and its differences are noise, not a change of the picture.
+diagnose-verdict-right-within = Right within what a picture can tell: the right picture explains { $score } of the object's pixels (a pixel's shift and { $tolerance } levels allowed), but inside the object your picture differs from it by up to { $most } levels, { $pixels } pixels by more than { $rounding }. A mistake that changes the picture by no more than that (a shininess or a colour a little off) looks the same: this verdict cannot rule it out, the program's numbers can.
+diagnose-verdict-right = Right: the right picture explains { $score } of the object's pixels.
+diagnose-verdict-wrong = Wrong. The cause: { $cause } ({ $id }); the picture with that mistake explains { $score } of the object's pixels, the right picture { $right }.
+diagnose-also = It also explains the picture: { $cause } ({ $id }), { $score }.
+diagnose-verdict-unexplained = No mistake phonglab knows explains this picture: the right picture explains { $right } of the object's pixels. The closest mistake, not named as the cause ({ $id }, { $score }): { $cause }.
+diagnose-verdict-unexplained-none = No mistake phonglab knows explains this picture: the right picture explains { $right } of the object's pixels.
 
 ## phonglab check: a student's work checked
 

@@ -755,6 +755,8 @@ diagnose-light-unseen = Nada da luz { $light } (GL_LIGHT{ $light }) chega ao obj
 diagnose-nothing-drawn = Nada do objeto está desenhado: a imagem é só o fundo. Verifique a chamada que o desenha (glutSolidTeapot, gluSphere…) e se ela é executada, e a câmera (gluLookAt, gluPerspective): o objeto pode estar atrás dela ou fora do seu campo de visão.
 diagnose-outline-differs = O contorno do objeto não é o desta cena ({ $share } dele difere, além de um pixel): esta é a imagem desta cena? Verifique --scene, e o objeto e a câmera do programa.
 diagnose-region-differs = Uma região de { $pixels } pixels em torno de ({ $x }, { $y }) difere da imagem certa, embora a imagem certa explique { $score } dos pixels do objeto: há algo desenhado sobre o objeto ali, ou essa parte dele está errada.
+diagnose-offset-darker = Os { $pixels } pixels do objeto de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }) estão uniformemente mais escuros do que na imagem certa, { $levels } níveis em média (o ruído, um salvamento com perdas ou um pixel de deslocamento deixam menos de { $least }), embora a imagem certa explique { $score } dos pixels do objeto: algo foi pintado sobre o objeto ali, ou a luz ou o material dele estão um pouco errados.
+diagnose-offset-lighter = Os { $pixels } pixels do objeto de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }) estão uniformemente mais claros do que na imagem certa, { $levels } níveis em média (o ruído, um salvamento com perdas ou um pixel de deslocamento deixam menos de { $least }), embora a imagem certa explique { $score } dos pixels do objeto: algo foi pintado sobre o objeto ali, ou a luz ou o material dele estão um pouco errados.
 diagnose-marks-differ = Marcas finas de { $pixels } pixels, de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }), diferem da imagem certa, embora a imagem certa explique { $score } dos pixels do objeto: há linhas ou marcas desenhadas sobre o objeto ali.
 diagnose-levels-darker = A imagem inteira está, em média, { $levels } níveis mais escura que a certa, como acontece quando se muda o gama, o brilho ou o perfil de cor da imagem salva (essa mudança da imagem certa explica { $score } dos pixels do objeto): não é um erro na iluminação. Salve a imagem do jeito que o programa a desenha, sem editá-la, e verifique-a de novo.
 diagnose-levels-lighter = A imagem inteira está, em média, { $levels } níveis mais clara que a certa, como acontece quando se muda o gama, o brilho ou o perfil de cor da imagem salva (essa mudança da imagem certa explica { $score } dos pixels do objeto): não é um erro na iluminação. Salve a imagem do jeito que o programa a desenha, sem editá-la, e verifique-a de novo.
@@ -763,6 +765,12 @@ diagnose-footprint-group = { $count } de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } em outros lugares
 diagnose-footprint-and = e
 diagnose-verdict-right-lossy = Certa, do jeito que foi salva com perdas (JPEG): a imagem certa explica { $score } dos pixels do objeto a menos de { $levels } níveis ({ $strict } a menos de { $tolerance }), e as diferenças são ruído, não uma mudança da imagem.
+diagnose-verdict-right-within = Certa, até onde uma imagem permite dizer: a imagem certa explica { $score } dos pixels do objeto (com um pixel de deslocamento e { $tolerance } níveis de tolerância), mas dentro do objeto a sua imagem difere dela em até { $most } níveis, { $pixels } pixels em mais de { $rounding }. Um erro que não mude a imagem mais do que isso (um brilho ou uma cor um pouco diferentes) tem a mesma aparência: este veredito não o descarta, os números do programa sim.
+diagnose-verdict-right = Certa: a imagem certa explica { $score } dos pixels do objeto.
+diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos pixels do objeto, a imagem certa { $right }.
+diagnose-also = Também explica a imagem: { $cause } ({ $id }), { $score }.
+diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos pixels do objeto. O erro mais próximo, que não é apontado como a causa ({ $id }, { $score }): { $cause }.
+diagnose-verdict-unexplained-none = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos pixels do objeto.
 
 ## phonglab check: o trabalho de um aluno verificado
 

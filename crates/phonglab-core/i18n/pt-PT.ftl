@@ -751,6 +751,8 @@ diagnose-light-unseen = Nada da luz { $light } (GL_LIGHT{ $light }) chega ao obj
 diagnose-nothing-drawn = Nada do objeto está desenhado: a imagem é só o fundo. Verifique a chamada que o desenha (glutSolidTeapot, gluSphere…) e que ela corre, e a câmara (gluLookAt, gluPerspective): o objeto pode estar atrás dela ou fora do seu campo de visão.
 diagnose-outline-differs = O contorno do objeto não é o desta cena ({ $share } dele difere, para além de um píxel): é esta a imagem desta cena? Verifique --scene, e o objeto e a câmara do programa.
 diagnose-region-differs = Uma região de { $pixels } píxeis em torno de ({ $x }, { $y }) difere da imagem certa, embora a imagem certa explique { $score } dos píxeis do objeto: há algo desenhado por cima do objeto ali, ou essa parte dele está errada.
+diagnose-offset-darker = Os { $pixels } píxeis do objeto de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }) estão uniformemente mais escuros do que na imagem certa, { $levels } níveis em média (o ruído, uma gravação com perdas ou um píxel de desvio deixam menos de { $least }), embora a imagem certa explique { $score } dos píxeis do objeto: algo foi pintado sobre o objeto aí, ou a sua luz ou o seu material estão ligeiramente errados.
+diagnose-offset-lighter = Os { $pixels } píxeis do objeto de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }) estão uniformemente mais claros do que na imagem certa, { $levels } níveis em média (o ruído, uma gravação com perdas ou um píxel de desvio deixam menos de { $least }), embora a imagem certa explique { $score } dos píxeis do objeto: algo foi pintado sobre o objeto aí, ou a sua luz ou o seu material estão ligeiramente errados.
 diagnose-marks-differ = Marcas finas de { $pixels } píxeis, de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }), diferem da imagem certa, embora a imagem certa explique { $score } dos píxeis do objeto: há linhas ou marcas desenhadas por cima do objeto ali.
 diagnose-levels-darker = A imagem inteira está, em média, { $levels } níveis mais escura do que a certa, como fica quando se muda o gama, o brilho ou o perfil de cor da imagem guardada (essa mudança da imagem certa explica { $score } dos píxeis do objeto): não é um erro na iluminação. Guarde a imagem tal como o programa a desenha, sem a editar, e verifique-a de novo.
 diagnose-levels-lighter = A imagem inteira está, em média, { $levels } níveis mais clara do que a certa, como fica quando se muda o gama, o brilho ou o perfil de cor da imagem guardada (essa mudança da imagem certa explica { $score } dos píxeis do objeto): não é um erro na iluminação. Guarde a imagem tal como o programa a desenha, sem a editar, e verifique-a de novo.
@@ -759,6 +761,12 @@ diagnose-footprint-group = { $count } de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } noutros sítios
 diagnose-footprint-and = e
 diagnose-verdict-right-lossy = Certa, tal como foi guardada com perdas (JPEG): a imagem certa explica { $score } dos píxeis do objeto a menos de { $levels } níveis ({ $strict } a menos de { $tolerance }), e as diferenças são ruído, não uma alteração da imagem.
+diagnose-verdict-right-within = Certa, tanto quanto uma imagem permite dizer: a imagem certa explica { $score } dos píxeis do objeto (com um píxel de desvio e { $tolerance } níveis de tolerância), mas dentro do objeto a sua imagem difere dela até { $most } níveis, { $pixels } píxeis em mais de { $rounding }. Um erro que não altere a imagem mais do que isso (um brilho ou uma cor ligeiramente diferentes) tem o mesmo aspeto: este veredicto não o exclui, os números do programa sim.
+diagnose-verdict-right = Certa: a imagem certa explica { $score } dos píxeis do objeto.
+diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos píxeis do objeto, a imagem certa { $right }.
+diagnose-also = Também explica a imagem: { $cause } ({ $id }), { $score }.
+diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos píxeis do objeto. O erro mais próximo, que não é dado como a causa ({ $id }, { $score }): { $cause }.
+diagnose-verdict-unexplained-none = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos píxeis do objeto.
 
 ## phonglab check: o trabalho de um aluno verificado
 

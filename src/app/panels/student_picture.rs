@@ -3,7 +3,7 @@
 //! [`phonglab_core::teach::diagnose`] in words (the verdict, the closest cause, its score).
 
 use egui::{RichText, Ui};
-use phonglab_core::teach::diagnose::{Diagnosis, Tried, Verdict, most_common_first, picture_shows, same_picture_said};
+use phonglab_core::teach::diagnose::{Diagnosis, Said};
 use phonglab_core::teach::picture_match::difference_image;
 
 use phonglab_core::Document;
@@ -74,85 +74,10 @@ impl StudentPicture {
         t!("student-picture-stale", file = self.file.clone())
     }
 
-    /// The diagnosis in words, one line a finding, in the language shown now.
+    /// The diagnosis in words, one line a finding, in the language shown now: as
+    /// `phonglab diagnose` says it ([`Said::lines`]).
     pub fn lines(&self) -> Vec<String> {
-        verdict_lines(&self.said)
-    }
-}
-
-/// What a diagnosis found, kept as numbers: the verdict, the right picture's score, and
-/// the mistakes named (each with where it was made and its score): the closest first; for
-/// an unexplained picture the closest tried, if any matched.
-#[derive(Clone, Debug)]
-struct Said {
-    verdict: Verdict,
-    right: f64,
-    named: Vec<Tried>,
-    /// The first causes when they draw the same picture.
-    same: Vec<Tried>,
-    /// What the picture's shape shows, in words, when it is not the scene's picture.
-    shape: Option<String>,
-    /// The verdict "right" in words when it allows for a lossy saving.
-    lossy: Option<String>,
-    /// Where a mistake that changes few pixels shows, when the verdict rests on it.
-    footprint: Option<String>,
-}
-
-impl Said {
-    fn of(d: &Diagnosis) -> Said {
-        let named = match d.verdict {
-            Verdict::Right => Vec::new(),
-            Verdict::Wrong => d.causes.clone(),
-            Verdict::Unexplained => d.tried.first().filter(|t| t.matched.is_some()).copied().into_iter().collect(),
-        };
-        let shape = d.shape.map(|s| s.words(d.right.score));
-        let named = if shape.is_some() { Vec::new() } else { named };
-        Said {
-            verdict: d.verdict,
-            right: d.right.score,
-            named,
-            same: d.same_picture.clone(),
-            shape,
-            lossy: d.lossy_words(),
-            footprint: d.footprint_words(),
-        }
-    }
-}
-
-/// A share of pixels as a percentage in the user's decimal mark.
-fn percent(score: f64) -> String {
-    crate::locale::percent(score, 1)
-}
-
-/// The diagnosis in words: the verdict with the closest cause and its score, the others.
-fn verdict_lines(d: &Said) -> Vec<String> {
-    let right = percent(d.right);
-    let named = |t: &Tried| (t.words(), t.label(), percent(t.matched.map_or(0.0, |m| m.score)));
-    match d.verdict {
-        Verdict::Right => vec![d.lossy.clone().unwrap_or_else(|| t!("diagnose-verdict-right", score = right))],
-        Verdict::Wrong => {
-            // As `phonglab diagnose` says it: what a picture that several causes draw
-            // shows, the most common named, the others in one line, then the rest.
-            let tie = most_common_first(&d.same);
-            let mut out: Vec<String> = picture_shows(&tie).into_iter().collect();
-            let Some(first) = tie.first().or(d.named.first()) else { return out };
-            let (cause, id, score) = named(first);
-            out.push(t!("diagnose-verdict-wrong", cause = cause, id = id, score = score, right = right.clone()));
-            out.extend(d.footprint.clone());
-            out.extend(same_picture_said(&d.same));
-            for c in d.named.iter().filter(|c| *c != first && !tie.contains(c)) {
-                let (cause, id, score) = named(c);
-                out.push(t!("diagnose-also", cause = cause, id = id, score = score));
-            }
-            out
-        }
-        Verdict::Unexplained if d.shape.is_some() => d.shape.iter().cloned().collect(),
-        Verdict::Unexplained => match d.named.first().map(named) {
-            Some((cause, id, score)) => {
-                vec![t!("diagnose-verdict-unexplained", right = right, cause = cause, id = id, score = score)]
-            }
-            None => vec![t!("diagnose-verdict-unexplained-none", right = right)],
-        },
+        self.said.lines()
     }
 }
 

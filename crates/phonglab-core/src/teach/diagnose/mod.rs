@@ -24,10 +24,13 @@ mod fit;
 mod footprint;
 mod levels;
 mod mistakes;
+mod offset;
 mod outline;
+pub mod said;
 mod sides;
 mod slips;
 mod values;
+mod within;
 
 pub use change::{At, Given};
 pub use colours::Colours;
@@ -35,8 +38,11 @@ pub use drawing::Drawing;
 pub use footprint::{CLEARLY, FOOTPRINT_AT, Footprint, Group};
 pub use levels::Levels;
 pub use mistakes::{MISTAKES, PictureMistake, Scope, offered};
+pub use offset::{BLOCK, OFFSET_AT, Offset};
 pub use outline::{MARKS_AT, Marks, OUTLINE_AT, REGION_AT, Region};
+pub use said::Said;
 pub use sides::Sides;
+pub use within::{ROUNDING, Within};
 
 use crate::model::error::SceneError;
 use crate::raster::render::Renderer;
@@ -167,6 +173,10 @@ pub struct Diagnosis {
     /// "wrong" rests on it: the right picture explains the share [`RIGHT_AT`] asks, but
     /// over these pixels the picture is the mistake's ([`Footprint::shows_mistake`]).
     pub footprint: Option<Footprint>,
+    /// How far the image is from the right picture inside the object, in place, when the
+    /// verdict is "right": unless [`Within::exact`], it is right only within what a
+    /// picture can tell.
+    pub within: Option<Within>,
 }
 
 /// What a picture's shape shows that no mistake's colours explain.
@@ -185,6 +195,9 @@ pub enum Shape {
     /// The whole picture's levels changed (a gamma, a brightness), which explains it at
     /// least as well as any mistake does.
     Levels(Levels),
+    /// A square of [`BLOCK`] pixels is evenly lighter or darker than in a picture the
+    /// right one otherwise explains ([`Offset`]).
+    Offset(Offset),
 }
 
 impl Shape {
@@ -196,6 +209,7 @@ impl Shape {
             Shape::Region(_) => "region-differs",
             Shape::Marks(_) => "marks-differ",
             Shape::Levels(_) => "levels-changed",
+            Shape::Offset(_) => "offset-differs",
         }
     }
 
@@ -231,6 +245,19 @@ impl Shape {
                 &[
                     ("levels", Arg::Text(crate::locale::decimal(&format!("{:.1}", l.shift.abs())))),
                     ("score", percent(l.matched.score)),
+                ],
+            ),
+            Shape::Offset(o) => tr_args(
+                if o.levels < 0.0 { "diagnose-offset-darker" } else { "diagnose-offset-lighter" },
+                &[
+                    ("pixels", Arg::Text(o.pixels.to_string())),
+                    ("x0", Arg::Text(o.from.0.to_string())),
+                    ("y0", Arg::Text(o.from.1.to_string())),
+                    ("x1", Arg::Text(o.to.0.to_string())),
+                    ("y1", Arg::Text(o.to.1.to_string())),
+                    ("levels", Arg::Text(crate::locale::decimal(&format!("{:.1}", o.levels.abs())))),
+                    ("least", Arg::Text(crate::locale::decimal(&format!("{OFFSET_AT:.1}")))),
+                    ("score", percent(right)),
                 ],
             ),
         }
@@ -296,7 +323,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
     }
     // In the table's order, as the mistakes are offered.
     found.tried.sort_by_key(|t| (t.mistake, t.at.light));
-    let Found { tried, subtle, pictures } = found;
+    let Found { tried, mut subtle, mut seen, pictures } = found;
     let mut d = verdict_of(exact, tried, picture, renderer);
     d.shape = outlines.shape(&outline);
     if d.shape.is_none() && d.verdict != Verdict::Right {
@@ -306,6 +333,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         d.lossy = lossy_right(&d, &covered, image, bg, size);
         if d.lossy.is_some() {
             d.verdict = Verdict::Right;
+            subtle.append(&mut seen);
         }
     }
     if d.shape.is_none() && d.verdict == Verdict::Right {
@@ -319,8 +347,15 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         let marks = outline::largest_marks(&d.picture, &covered, image, bg, size);
         d.shape = marks.filter(|m| m.pixels >= MARKS_AT).map(Shape::Marks);
     }
+    if d.shape.is_none() && d.verdict == Verdict::Right {
+        let off = offset::largest_offset(&d.picture, &covered, image, size);
+        d.shape = off.filter(|o| o.levels.abs() >= OFFSET_AT).map(Shape::Offset);
+    }
     if d.shape.is_some() {
         (d.verdict, d.causes, d.lossy) = (Verdict::Unexplained, Vec::new(), None);
+    }
+    if d.verdict == Verdict::Right {
+        d.within = Some(within::within(&d.picture, &covered, image, size));
     }
     d.same_picture = pictures.same_as_first(&d.causes, bg, size);
     // The image cannot rank causes that draw the same picture: they go first in the
@@ -339,7 +374,11 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
 #[derive(Default)]
 struct Found {
     tried: Vec<Tried>,
+    /// The footprints of mistakes the right picture explains that the image shows.
     subtle: Vec<(Tried, Footprint)>,
+    /// The footprints of the mistakes the scene shows that the image shows too: a lossy
+    /// saving's noise may hide them from the share, never from their footprint.
+    seen: Vec<(Tried, Footprint)>,
     pictures: Pictures,
 }
 
@@ -364,15 +403,15 @@ impl Found {
         // A mistake whose picture the right one explains cannot be seen in this scene,
         // unless the image is the mistake's where the two differ.
         let visible = compare(&wrong, &wrong_covered, picture, bg, size).score < RIGHT_AT;
-        let shown = if visible {
-            None
-        } else {
-            footprint::footprint((picture, covered), (&wrong, &wrong_covered), image, size)
-                .filter(Footprint::shows_mistake)
-        };
+        let shown = footprint::footprint((picture, covered), (&wrong, &wrong_covered), image, size)
+            .filter(Footprint::shows_mistake);
         let matched = (visible || shown.is_some()).then(|| compare(&wrong, &wrong_covered, image, bg, size));
         let t = Tried { mistake, at, matched };
-        self.subtle.extend(shown.map(|f| (t, f)));
+        if visible {
+            self.seen.extend(shown.map(|f| (t, f)));
+        } else {
+            self.subtle.extend(shown.map(|f| (t, f)));
+        }
         if matched.is_some_and(|m| m.score >= EXPLAINED_AT) {
             self.pictures.0.push((t, wrong.clone(), wrong_covered.clone()));
         }
@@ -487,44 +526,21 @@ impl Pictures {
 }
 
 impl Diagnosis {
+    /// In words, one finding a line, in the language set now ([`Said::lines`]).
+    pub fn lines(&self) -> Vec<String> {
+        Said::of(self).lines()
+    }
+
     /// The verdict "right" in words when it rests on a lossy saving ([`Diagnosis::lossy`]).
     pub fn lossy_words(&self) -> Option<String> {
-        use crate::locale::{Arg, tr_args};
-        use crate::teach::picture_match::TOLERANCE;
-        let percent = |v: f64| Arg::Text(crate::locale::percent(v, 1));
-        self.lossy.map(|m| {
-            tr_args(
-                "diagnose-verdict-right-lossy",
-                &[
-                    ("score", percent(m.score)),
-                    ("levels", Arg::Text(LOSSY.to_string())),
-                    ("strict", percent(self.right.score)),
-                    ("tolerance", Arg::Text(TOLERANCE.to_string())),
-                ],
-            )
-        })
+        self.lossy.and_then(|_| self.lines().into_iter().next())
     }
 
     /// In words, when the verdict "wrong" rests on where the first cause's picture differs
     /// from the right one ([`Diagnosis::footprint`]): how few pixels, where, and how near
     /// the picture is to each there.
     pub fn footprint_words(&self) -> Option<String> {
-        use crate::locale::{Arg, decimal, tr_args};
-        use crate::teach::picture_match::TOLERANCE;
-        let levels = |v: f64| Arg::Text(decimal(&format!("{v:.1}")));
-        self.footprint.as_ref().map(|f| {
-            tr_args(
-                "diagnose-footprint",
-                &[
-                    ("most", Arg::Text(f.most.to_string())),
-                    ("tolerance", Arg::Text(TOLERANCE.to_string())),
-                    ("pixels", Arg::Text(f.pixels.to_string())),
-                    ("groups", Arg::Text(groups_said(&f.groups))),
-                    ("mistake", levels(f.mistake)),
-                    ("right", levels(f.right)),
-                ],
-            )
-        })
+        self.footprint.as_ref().map(footprint_said)
     }
 
     /// In words, when the first causes draw the same picture: that the image cannot tell
@@ -532,6 +548,24 @@ impl Diagnosis {
     pub fn same_picture_words(&self) -> Option<String> {
         same_picture_said(&self.same_picture)
     }
+}
+
+/// [`Diagnosis::footprint_words`] of the footprint `f`.
+fn footprint_said(f: &Footprint) -> String {
+    use crate::locale::{Arg, decimal, tr_args};
+    use crate::teach::picture_match::TOLERANCE;
+    let levels = |v: f64| Arg::Text(decimal(&format!("{v:.1}")));
+    tr_args(
+        "diagnose-footprint",
+        &[
+            ("most", Arg::Text(f.most.to_string())),
+            ("tolerance", Arg::Text(TOLERANCE.to_string())),
+            ("pixels", Arg::Text(f.pixels.to_string())),
+            ("groups", Arg::Text(groups_said(&f.groups))),
+            ("mistake", levels(f.mistake)),
+            ("right", levels(f.right)),
+        ],
+    )
 }
 
 /// The mistakes students make most often, in that order: among causes that draw the same
@@ -616,6 +650,7 @@ fn verdict_of(exact: Match, mut tried: Vec<Tried>, picture: Vec<u8>, renderer: R
         shape: None,
         lossy: None,
         footprint: None,
+        within: None,
     }
 }
 
