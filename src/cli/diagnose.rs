@@ -9,7 +9,7 @@ use crate::t;
 use anyhow::Result;
 use clap::Args;
 use phonglab_core::teach::diagnose::{
-    Diagnosis, Drawing, Said, Shape, Tried, Verdict, diagnose, drawings_at_most, listed, said,
+    Diagnosis, Drawing, Shape, Tried, Verdict, diagnose, drawings_at_most, listed, said, said::Said,
 };
 use phonglab_core::teach::picture_match::difference_image;
 use phonglab_core::{PowFn, probe, probe_report};

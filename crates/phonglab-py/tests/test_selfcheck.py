@@ -150,9 +150,11 @@ def test_several_lights_are_read_from_the_per_light_lists(cli, tmp_path):
     right, text = run(three)
     assert right, text
     assert "vlv[2]: yours" in text
-    # A scalar where the key has one vlv a light: no vlv[k] is held (nor printed), none read.
+    # A scalar where the key has one vlv a light: no vlv[k] is held (nor printed), none read,
+    # so the work is incomplete, naming the steps it lacks (never right).
     right, text = run(three, "vlv = np.float64(3.0)\n")
-    assert "vlv[0]" not in text and "vertexPos: yours" in text, text
+    assert "vlv[0]: yours" not in text and "vertexPos: yours" in text, text
+    assert not right and "incomplete:" in text and "the first vlv[0]" in text, text
     right, text = run(mistaken(three, "Idif[i] = (Ldif[i]*matDif)*cosTheta[i]", "Idif[i] = (Ldif[i]*matDif)*cosTheta[i]*2"))
     assert not right and "first wrong step: Idif[0]" in text, text
 

@@ -3,7 +3,8 @@
 //! [`phonglab_core::teach::diagnose`] in words (the verdict, the closest cause, its score).
 
 use egui::{RichText, Ui};
-use phonglab_core::teach::diagnose::{Diagnosis, Said};
+use phonglab_core::teach::diagnose::Diagnosis;
+use phonglab_core::teach::diagnose::said::Said;
 use phonglab_core::teach::picture_match::difference_image;
 
 use phonglab_core::Document;

@@ -40,7 +40,6 @@ pub use levels::Levels;
 pub use mistakes::{MISTAKES, PictureMistake, Scope, offered};
 pub use offset::{BLOCK, OFFSET_AT, Offset};
 pub use outline::{MARKS_AT, Marks, OUTLINE_AT, REGION_AT, Region};
-pub use said::Said;
 pub use sides::Sides;
 pub use within::{ROUNDING, Within};
 
@@ -526,11 +525,6 @@ impl Pictures {
 }
 
 impl Diagnosis {
-    /// In words, one finding a line, in the language set now ([`Said::lines`]).
-    pub fn lines(&self) -> Vec<String> {
-        Said::of(self).lines()
-    }
-
     /// The verdict "right" in words when it rests on a lossy saving ([`Diagnosis::lossy`]).
     pub fn lossy_words(&self) -> Option<String> {
         self.lossy.and_then(|_| self.lines().into_iter().next())

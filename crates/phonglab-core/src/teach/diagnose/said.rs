@@ -142,3 +142,10 @@ fn percent(share: f64) -> Arg {
 fn named(t: &Tried) -> (Arg, Arg, Arg) {
     (Arg::Text(t.words()), Arg::Text(t.id().to_owned()), percent(t.matched.map_or(0.0, |m| m.score)))
 }
+
+impl Diagnosis {
+    /// In words, one finding a line, in the language set now ([`Said::lines`]).
+    pub fn lines(&self) -> Vec<String> {
+        Said::of(self).lines()
+    }
+}
