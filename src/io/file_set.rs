@@ -118,10 +118,14 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
 /// it ([`crate::platform::os::lock_folder`]) until this is dropped: a writer that checks
 /// what the folder holds (a file it did not write) and then writes takes it before the
 /// check, so that no other run changes the folder between the two ([`write_set_held`]).
+/// What a stopped writer left in it is finished or undone when it is held ([`recover`]),
+/// so that the check judges the folder's files as they are after that.
 pub struct HeldFolder {
     dir: std::path::PathBuf,
     /// The folder's identity when it was held: checked again just before the swap.
     id: Identity,
+    /// What the recovery left as it is, said by [`write_set_held`].
+    recovered: Vec<String>,
     _lock: crate::platform::os::FolderLock,
 }
 
@@ -133,8 +137,12 @@ impl HeldFolder {
 }
 
 /// Makes the folder `dir` if missing and takes its lock ([`HeldFolder`]), saying once on
-/// the terminal that it waits where another phonglab holds it. Refuses a link or a file
-/// at `dir`.
+/// the terminal that it waits where another phonglab holds it, then finishes or undoes
+/// what a stopped writer left there (issue 59: a set stopped after its swap was decided
+/// left the new set in place and the list of what phonglab wrote naming the old one, so a
+/// check made before the recovery blamed the teacher for phonglab's own files). Refuses a
+/// link or a file at `dir`, and records that are not phonglab's
+/// ([`super::set_journal::check_records`]).
 pub fn hold_folder(dir: &Path) -> Result<HeldFolder, WriteError> {
     // A set is written into a real folder only: one planted as a link (an oF project's
     // `src` pointing elsewhere) would send the set, and the old set's removal, outside it.
@@ -154,7 +162,10 @@ pub fn hold_folder(dir: &Path) -> Result<HeldFolder, WriteError> {
     let lock = crate::platform::os::lock_folder(dir, || say_waiting(dir))
         .map_err(|e| WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED))?;
     let (_, id) = Identity::at(dir).map_err(|e| WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED))?;
-    Ok(HeldFolder { dir: dir.to_path_buf(), id, _lock: lock })
+    super::set_journal::check_records(dir)?;
+    let recovered =
+        super::set_journal::recover_locked(dir).map_err(|e| WriteError::new(dir, set_steps::RECOVER, e, UNTOUCHED))?;
+    Ok(HeldFolder { dir: dir.to_path_buf(), id, recovered, _lock: lock })
 }
 
 /// [`write_set`] into a folder this process already holds ([`hold_folder`]).
@@ -165,8 +176,8 @@ pub fn write_set_held(
 ) -> Result<Vec<String>, WriteError> {
     let dir = held.dir();
     super::set_journal::check_records(dir)?;
-    let notices =
-        super::set_journal::recover_locked(dir).map_err(|e| WriteError::new(dir, set_steps::RECOVER, e, UNTOUCHED))?;
+    // Recovered when the folder was held, before the caller judged its files.
+    let notices = held.recovered.clone();
     refuse_unwritable_names(dir, set)?;
     let staging = new_staging(dir)?;
     match stage_and_swap(held, &staging, set, &belongs) {
@@ -501,6 +512,39 @@ mod tests {
         // The journal begun, each of 3 files, the old set listed, the journal decided, 3
         // moves aside, 3 in, the old files and the journal removed: 13 places to die.
         assert_eq!(steps, 13);
+    }
+
+    /// Issue 59 (a teacher's finding 1): a writer stopped at any step of its swap, then a
+    /// DIFFERENT set written the way the commands write one (the folder held, its files
+    /// judged, the set written): the stopped writer's files are phonglab's, never "not
+    /// written by phonglab". Before the fix a stop after the swap was decided left the new
+    /// set in place and the list of what phonglab wrote naming the old one, and the check
+    /// ran before the recovery, so every later different set was refused.
+    #[test]
+    fn a_writer_stopped_at_any_step_never_blocks_a_different_set() {
+        let belongs = |n: &str| n.ends_with(".md");
+        let mut other = FileSet::default();
+        other.add("a.md", "another set's a");
+        other.add("e.md", "another set's e");
+        let mut steps = 0;
+        for n in 0.. {
+            let dir = temp_dir("stopped-other");
+            old_set(&dir);
+            if with_fault(Fault::KilledAtStep(n), || write_set(&dir, &new_set(), belongs)).is_ok() {
+                break;
+            }
+            steps += 1;
+            let held = hold_folder(&dir).unwrap();
+            let judged = crate::io::exercise_set::refuse_foreign(&dir, &other);
+            assert!(judged.is_ok(), "stopped at step {n}: {:?}", judged.map_err(|e| e.to_string()));
+            assert_eq!(write_set_held(&held, &other, belongs).unwrap(), Vec::<String>::new(), "step {n}");
+            drop(held);
+            let after = listing(&dir);
+            let names: Vec<&str> = after.iter().map(|(n, _)| n.as_str()).collect();
+            assert_eq!(names, ["a.md", "e.md", "mine.txt"], "stopped at step {n}");
+            assert_eq!(after[0].1, b"another set's a", "stopped at step {n}");
+        }
+        assert_eq!(steps, 13, "every step of the swap was tried");
     }
 
     /// Issue 59, #70: a writer killed mid-swap, then a file of the half-placed new set
