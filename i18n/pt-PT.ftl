@@ -999,14 +999,16 @@ check-report-causes = Causas
 check-report-counts = Causas na turma
 check-report-unexplained = não explicado pelo catálogo
 check-report-unreadable = não lido: { $reason }
-check-report-written = { $count ->
+check-class-checked = { $count ->
     [one] um trabalho verificado
    *[other] { $count } trabalhos verificados
 }{ $unread ->
     [0] {""}
     [one] {", "}um não lido
    *[other] {", "}{ $unread } não lidos
-}: { $path }
+}
+check-class-report-written = relatório escrito em { $path } (o gráfico, em { $chart })
+check-class-marks-written = notas escritas em { $path }
 check-printed-with-folder = --printed verifica o texto impresso por um programa; os cadernos de uma pasta são lidos dos seus próprios resultados: indique um ou outro
 check-report-needs-folder = --report e --csv são de uma turma: indique uma pasta de cadernos (a verificação de um caderno é escrita no terminal, ou com --json)
 check-not-read-link = uma ligação simbólica (um trabalho tem de ser um ficheiro da própria pasta)
@@ -1015,6 +1017,7 @@ check-not-read-not-a-file = não é um ficheiro normal (um FIFO ou um dispositiv
 check-chart-link = { $path } é uma ligação simbólica: o nome do gráfico vem do do relatório, e o phonglab nunca escreve através de uma ligação que não lhe foi dada; apague a ligação ou dê outro nome ao relatório
 work-output-link = { $path } é uma ligação simbólica: o check e o diagnose nunca escrevem através de uma ligação, que pode levar a qualquer ficheiro (numa pasta da turma, pode ter sido um aluno a pô-la lá); nada foi escrito. Apague a ligação ou indique outro ficheiro
 work-output-not-ours = { $path } já existe e não foi o phonglab que o escreveu (não é um resultado anterior do phonglab: { $kind }): o check e o diagnose nunca substituem um ficheiro que pode ser de um aluno; nada foi escrito. Indique outro nome, ou tire primeiro esse ficheiro daí
+work-output-other-kind = { $path } já existe e é um resultado do phonglab, mas { $found }, não { $kind }: o check e o diagnose só substituem um ficheiro por outro novo do mesmo tipo, para que um resultado nunca tome o lugar de outro; nada foi escrito. Indique outro nome, ou tire primeiro esse ficheiro daí
 work-output-submission = { $path } está dentro da pasta verificada e tem nome de trabalho de aluno (.ipynb ou .py): a próxima verificação lê-lo-ia como um trabalho; dê-lhe, por exemplo, o nome { $suggested }, ou escreva-o fora da pasta
 work-output-kind-report = o relatório da turma (check --report)
 work-output-kind-marks = as notas (check --csv)
