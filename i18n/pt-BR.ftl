@@ -727,6 +727,7 @@ set-folder-is-a-link = um link para outra pasta: o phonglab só grava um conjunt
 set-folder-replaced = movida ou substituída (por um link ou outra pasta) enquanto o phonglab gravava o conjunto: nada foi gravado por meio dela; o conjunto não foi gravado, e o próximo conjunto na pasta que estava lá descarta o que este começou
 set-record-not-one = um link, ou algo que não é um arquivo comum que o phonglab possa ter gravado (um pipe, um dispositivo, uma pasta, ou um arquivo com mais de 1 MiB), onde o phonglab guarda a lista dos arquivos que gravou nesta pasta: o phonglab nunca lê nem grava por meio dele. Remova-o ou escolha outra pasta
 set-waiting-for-lock = aguardando: outro phonglab está gravando em { $dir }; este continua quando ele terminar
+set-staging-left = o novo conjunto está completo em { $dir }; a pasta de trabalho { $name } do phonglab, lá dentro, ainda não pôde ser removida (um arquivo nela pode ainda estar aberto em outro programa): a próxima execução nesta pasta a remove
 set-left-alone = { $name } em { $dir } ficou como estava: { $why }
 set-why-loose-journal = um diário que o phonglab não escreveu ali (colocado por alguém, ou deixado por uma versão antiga do phonglab); nada do que ele nomeia foi tocado
 set-why-not-a-folder = tem o nome das pastas temporárias do phonglab, mas não é uma pasta criada pelo phonglab; nada foi seguido nem tocado

@@ -713,6 +713,7 @@ set-folder-is-a-link = uma ligação para outra pasta: o phonglab só escreve um
 set-folder-replaced = movida ou substituída (por uma ligação ou outra pasta) enquanto o phonglab escrevia o conjunto: nada foi escrito através dela; o conjunto não foi escrito, e o próximo conjunto na pasta que lá estava deita fora o que este começou
 set-record-not-one = uma ligação, ou algo que não é um ficheiro normal que o phonglab possa ter escrito (um pipe, um dispositivo, uma pasta, ou um ficheiro com mais de 1 MiB), onde o phonglab guarda a lista dos ficheiros que escreveu nesta pasta: o phonglab nunca lê nem escreve através dela. Remova-a, ou escolha outra pasta
 set-waiting-for-lock = à espera: outro phonglab está a escrever em { $dir }; este continua quando ele terminar
+set-staging-left = o novo conjunto está completo em { $dir }; a pasta de trabalho { $name } do phonglab, lá dentro, ainda não pôde ser removida (um ficheiro nela pode estar ainda aberto noutro programa): a próxima execução nesta pasta remove-a
 set-left-alone = { $name } em { $dir } ficou como estava: { $why }
 set-why-loose-journal = um diário que o phonglab não escreveu ali (posto por alguém, ou deixado por uma versão antiga do phonglab); nada do que nomeia foi tocado
 set-why-not-a-folder = tem o nome das pastas temporárias do phonglab mas não é uma pasta criada pelo phonglab; nada foi seguido nem tocado
