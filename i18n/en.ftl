@@ -710,6 +710,7 @@ set-folder-is-a-link = a link to another folder: phonglab writes a set of files 
 set-folder-replaced = moved or replaced (by a link or another folder) while phonglab was writing the set: nothing was written through it; the set was not written, and the next set in the folder that was there throws away what this one began
 set-record-not-one = a link, or not a regular file phonglab can have written (a pipe, a device, a folder, or a file over 1 MiB), where phonglab keeps its list of the files it wrote in this folder: phonglab never reads or writes through it. Remove it, or choose another folder
 set-waiting-for-lock = waiting: another phonglab is writing into { $dir }; this one goes on when it has finished
+set-staging-left = the new set is whole in { $dir }; phonglab's working folder { $name } in it could not be removed yet (a file in it may still be open in another program): the next run in this folder removes it
 set-left-alone = { $name } in { $dir } was left as it is: { $why }
 set-why-loose-journal = a journal phonglab did not write there (planted, or left by an older phonglab); nothing it names was touched
 set-why-not-a-folder = it is named like phonglab's staging folders but is not a folder phonglab made; nothing was followed or touched
@@ -996,14 +997,16 @@ check-report-causes = Causes
 check-report-counts = Causes in the class
 check-report-unexplained = not explained by the catalogue
 check-report-unreadable = not read: { $reason }
-check-report-written = checked { $count ->
+check-class-checked = checked { $count ->
     [one] one submission
    *[other] { $count } submissions
 }{ $unread ->
     [0] {""}
     [one] {", "}one not read
    *[other] {", "}{ $unread } not read
-}: { $path }
+}
+check-class-report-written = report written to { $path } (its chart: { $chart })
+check-class-marks-written = marks written to { $path }
 check-printed-with-folder = --printed checks one script's printed text; a folder's notebooks are read from their own outputs: give one or the other
 check-report-needs-folder = --report and --csv are a class's: give a folder of notebooks (one notebook's check is printed, or written as --json)
 check-not-read-link = a link (a submission must be a file in the folder itself)
@@ -1012,6 +1015,7 @@ check-not-read-not-a-file = not a regular file (a FIFO or a device: a submission
 check-chart-link = { $path } is a link: the chart's name comes from the report's, and phonglab never writes through a link it was not given; remove the link or name another report
 work-output-link = { $path } is a link: check and diagnose never write through a link, which could lead to any file (in a class folder a student may have put it there); nothing was written. Remove the link or name another file
 work-output-not-ours = { $path } is already there and phonglab did not write it (it is not phonglab's earlier { $kind }): check and diagnose never replace a file that may be a student's; nothing was written. Name another file, or move that one away first
+work-output-other-kind = { $path } is already there and is phonglab's { $found }, not its { $kind }: check and diagnose replace a file only with a new one of the same kind, so that one output never takes another's place; nothing was written. Name another file, or move that one away first
 work-output-submission = { $path } is inside the checked folder and named like a student's work (.ipynb or .py): the next check would read it as a submission; name it { $suggested }, for example, or write it outside the folder
 work-output-kind-report = class report (check --report)
 work-output-kind-marks = marks (check --csv)

@@ -727,6 +727,7 @@ set-folder-is-a-link = um link para outra pasta: o phonglab só grava um conjunt
 set-folder-replaced = movida ou substituída (por um link ou outra pasta) enquanto o phonglab gravava o conjunto: nada foi gravado por meio dela; o conjunto não foi gravado, e o próximo conjunto na pasta que estava lá descarta o que este começou
 set-record-not-one = um link, ou algo que não é um arquivo comum que o phonglab possa ter gravado (um pipe, um dispositivo, uma pasta, ou um arquivo com mais de 1 MiB), onde o phonglab guarda a lista dos arquivos que gravou nesta pasta: o phonglab nunca lê nem grava por meio dele. Remova-o ou escolha outra pasta
 set-waiting-for-lock = aguardando: outro phonglab está gravando em { $dir }; este continua quando ele terminar
+set-staging-left = o novo conjunto está completo em { $dir }; a pasta de trabalho { $name } do phonglab, lá dentro, ainda não pôde ser removida (um arquivo nela pode ainda estar aberto em outro programa): a próxima execução nesta pasta a remove
 set-left-alone = { $name } em { $dir } ficou como estava: { $why }
 set-why-loose-journal = um diário que o phonglab não escreveu ali (colocado por alguém, ou deixado por uma versão antiga do phonglab); nada do que ele nomeia foi tocado
 set-why-not-a-folder = tem o nome das pastas temporárias do phonglab, mas não é uma pasta criada pelo phonglab; nada foi seguido nem tocado
@@ -1013,7 +1014,7 @@ check-report-causes = Causas
 check-report-counts = Causas na turma
 check-report-unexplained = não explicado pelo catálogo
 check-report-unreadable = não lido: { $reason }
-check-report-written = { $count ->
+check-class-checked = { $count ->
     [0] { $count } trabalhos verificados
     [one] um trabalho verificado
    *[other] { $count } trabalhos verificados
@@ -1021,7 +1022,9 @@ check-report-written = { $count ->
     [0] {""}
     [one] {", "}um não lido
    *[other] {", "}{ $unread } não lidos
-}: { $path }
+}
+check-class-report-written = relatório gravado em { $path } (o gráfico, em { $chart })
+check-class-marks-written = notas gravadas em { $path }
 check-printed-with-folder = --printed verifica o texto impresso por um programa; os notebooks de uma pasta são lidos das próprias saídas: informe um ou outro
 check-report-needs-folder = --report e --csv são de uma turma: informe uma pasta de notebooks (a verificação de um notebook é escrita no terminal, ou com --json)
 check-not-read-link = um link simbólico (um trabalho precisa ser um arquivo da própria pasta)
@@ -1030,6 +1033,7 @@ check-not-read-not-a-file = não é um arquivo comum (um FIFO ou um dispositivo:
 check-chart-link = { $path } é um link simbólico: o nome do gráfico vem do nome do relatório, e o phonglab nunca escreve através de um link que não recebeu; apague o link ou dê outro nome ao relatório
 work-output-link = { $path } é um link simbólico: o check e o diagnose nunca escrevem através de um link, que pode levar a qualquer arquivo (numa pasta da turma, ele pode ter sido colocado por um aluno); nada foi gravado. Apague o link ou indique outro arquivo
 work-output-not-ours = { $path } já existe e não foi o phonglab que o escreveu (não é um resultado anterior do phonglab: { $kind }): o check e o diagnose nunca substituem um arquivo que pode ser de um aluno; nada foi gravado. Indique outro nome, ou tire esse arquivo daí antes
+work-output-other-kind = { $path } já existe e é um resultado do phonglab, mas { $found }, não { $kind }: o check e o diagnose só substituem um arquivo por outro novo do mesmo tipo, para que um resultado nunca tome o lugar de outro; nada foi gravado. Indique outro nome, ou tire esse arquivo daí antes
 work-output-submission = { $path } está dentro da pasta verificada e tem nome de trabalho de aluno (.ipynb ou .py): a próxima verificação o leria como um trabalho; chame-o, por exemplo, de { $suggested }, ou grave-o fora da pasta
 work-output-kind-report = o relatório da turma (check --report)
 work-output-kind-marks = as notas (check --csv)

@@ -713,6 +713,7 @@ set-folder-is-a-link = uma ligação para outra pasta: o phonglab só escreve um
 set-folder-replaced = movida ou substituída (por uma ligação ou outra pasta) enquanto o phonglab escrevia o conjunto: nada foi escrito através dela; o conjunto não foi escrito, e o próximo conjunto na pasta que lá estava deita fora o que este começou
 set-record-not-one = uma ligação, ou algo que não é um ficheiro normal que o phonglab possa ter escrito (um pipe, um dispositivo, uma pasta, ou um ficheiro com mais de 1 MiB), onde o phonglab guarda a lista dos ficheiros que escreveu nesta pasta: o phonglab nunca lê nem escreve através dela. Remova-a, ou escolha outra pasta
 set-waiting-for-lock = à espera: outro phonglab está a escrever em { $dir }; este continua quando ele terminar
+set-staging-left = o novo conjunto está completo em { $dir }; a pasta de trabalho { $name } do phonglab, lá dentro, ainda não pôde ser removida (um ficheiro nela pode estar ainda aberto noutro programa): a próxima execução nesta pasta remove-a
 set-left-alone = { $name } em { $dir } ficou como estava: { $why }
 set-why-loose-journal = um diário que o phonglab não escreveu ali (posto por alguém, ou deixado por uma versão antiga do phonglab); nada do que nomeia foi tocado
 set-why-not-a-folder = tem o nome das pastas temporárias do phonglab mas não é uma pasta criada pelo phonglab; nada foi seguido nem tocado
@@ -999,14 +1000,16 @@ check-report-causes = Causas
 check-report-counts = Causas na turma
 check-report-unexplained = não explicado pelo catálogo
 check-report-unreadable = não lido: { $reason }
-check-report-written = { $count ->
+check-class-checked = { $count ->
     [one] um trabalho verificado
    *[other] { $count } trabalhos verificados
 }{ $unread ->
     [0] {""}
     [one] {", "}um não lido
    *[other] {", "}{ $unread } não lidos
-}: { $path }
+}
+check-class-report-written = relatório escrito em { $path } (o gráfico, em { $chart })
+check-class-marks-written = notas escritas em { $path }
 check-printed-with-folder = --printed verifica o texto impresso por um programa; os cadernos de uma pasta são lidos dos seus próprios resultados: indique um ou outro
 check-report-needs-folder = --report e --csv são de uma turma: indique uma pasta de cadernos (a verificação de um caderno é escrita no terminal, ou com --json)
 check-not-read-link = uma ligação simbólica (um trabalho tem de ser um ficheiro da própria pasta)
@@ -1015,6 +1018,7 @@ check-not-read-not-a-file = não é um ficheiro normal (um FIFO ou um dispositiv
 check-chart-link = { $path } é uma ligação simbólica: o nome do gráfico vem do do relatório, e o phonglab nunca escreve através de uma ligação que não lhe foi dada; apague a ligação ou dê outro nome ao relatório
 work-output-link = { $path } é uma ligação simbólica: o check e o diagnose nunca escrevem através de uma ligação, que pode levar a qualquer ficheiro (numa pasta da turma, pode ter sido um aluno a pô-la lá); nada foi escrito. Apague a ligação ou indique outro ficheiro
 work-output-not-ours = { $path } já existe e não foi o phonglab que o escreveu (não é um resultado anterior do phonglab: { $kind }): o check e o diagnose nunca substituem um ficheiro que pode ser de um aluno; nada foi escrito. Indique outro nome, ou tire primeiro esse ficheiro daí
+work-output-other-kind = { $path } já existe e é um resultado do phonglab, mas { $found }, não { $kind }: o check e o diagnose só substituem um ficheiro por outro novo do mesmo tipo, para que um resultado nunca tome o lugar de outro; nada foi escrito. Indique outro nome, ou tire primeiro esse ficheiro daí
 work-output-submission = { $path } está dentro da pasta verificada e tem nome de trabalho de aluno (.ipynb ou .py): a próxima verificação lê-lo-ia como um trabalho; dê-lhe, por exemplo, o nome { $suggested }, ou escreva-o fora da pasta
 work-output-kind-report = o relatório da turma (check --report)
 work-output-kind-marks = as notas (check --csv)

@@ -171,22 +171,21 @@ pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> 
     let read = marked.iter().filter(|m| m.check.is_ok()).count();
     let unread = marked.len() - read;
     let scene_shown = a.scene.as_deref().map(crate::io::reasons::shown);
+    if a.report.is_some() || a.csv.is_some() {
+        super::say(&t!("check-class-checked", count = read, unread = unread));
+    }
     if let (Some(report), Some(chart)) = (&a.report, &chart) {
         let chart_name = chart.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
         let text = markdown(&marked, &counts, &chart_name, scene_shown.as_deref());
         write(report, Kind::Report, dir, text.as_bytes())?;
         let (w, h, rgba) = chart_png(&counts, read);
         write(chart, Kind::Chart, dir, &crate::io::image::encode_png_signed(w, h, &rgba, Kind::Chart.png_text())?)?;
-        super::say(&t!(
-            "check-report-written",
-            count = read,
-            unread = unread,
-            path = crate::io::reasons::shown(report)
-        ));
+        let (path, chart) = (crate::io::reasons::shown(report), crate::io::reasons::shown(chart));
+        super::say(&t!("check-class-report-written", path = path, chart = chart));
     }
     if let Some(csv) = &a.csv {
         write(csv, Kind::Marks, dir, marks_csv(&marked).as_bytes())?;
-        super::say(&t!("check-report-written", count = read, unread = unread, path = crate::io::reasons::shown(csv)));
+        super::say(&t!("check-class-marks-written", path = crate::io::reasons::shown(csv)));
     }
     if a.json {
         let all: Vec<serde_json::Value> = marked

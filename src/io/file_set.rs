@@ -118,10 +118,14 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
 /// it ([`crate::platform::os::lock_folder`]) until this is dropped: a writer that checks
 /// what the folder holds (a file it did not write) and then writes takes it before the
 /// check, so that no other run changes the folder between the two ([`write_set_held`]).
+/// What a stopped writer left in it is finished or undone when it is held ([`recover`]),
+/// so that the check judges the folder's files as they are after that.
 pub struct HeldFolder {
     dir: std::path::PathBuf,
     /// The folder's identity when it was held: checked again just before the swap.
     id: Identity,
+    /// What the recovery left as it is, said by [`write_set_held`].
+    recovered: Vec<String>,
     _lock: crate::platform::os::FolderLock,
 }
 
@@ -133,8 +137,12 @@ impl HeldFolder {
 }
 
 /// Makes the folder `dir` if missing and takes its lock ([`HeldFolder`]), saying once on
-/// the terminal that it waits where another phonglab holds it. Refuses a link or a file
-/// at `dir`.
+/// the terminal that it waits where another phonglab holds it, then finishes or undoes
+/// what a stopped writer left there (issue 59: a set stopped after its swap was decided
+/// left the new set in place and the list of what phonglab wrote naming the old one, so a
+/// check made before the recovery blamed the teacher for phonglab's own files). Refuses a
+/// link or a file at `dir`, and records that are not phonglab's
+/// ([`super::set_journal::check_records`]).
 pub fn hold_folder(dir: &Path) -> Result<HeldFolder, WriteError> {
     // A set is written into a real folder only: one planted as a link (an oF project's
     // `src` pointing elsewhere) would send the set, and the old set's removal, outside it.
@@ -154,7 +162,10 @@ pub fn hold_folder(dir: &Path) -> Result<HeldFolder, WriteError> {
     let lock = crate::platform::os::lock_folder(dir, || say_waiting(dir))
         .map_err(|e| WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED))?;
     let (_, id) = Identity::at(dir).map_err(|e| WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED))?;
-    Ok(HeldFolder { dir: dir.to_path_buf(), id, _lock: lock })
+    super::set_journal::check_records(dir)?;
+    let recovered =
+        super::set_journal::recover_locked(dir).map_err(|e| WriteError::new(dir, set_steps::RECOVER, e, UNTOUCHED))?;
+    Ok(HeldFolder { dir: dir.to_path_buf(), id, recovered, _lock: lock })
 }
 
 /// [`write_set`] into a folder this process already holds ([`hold_folder`]).
@@ -165,12 +176,12 @@ pub fn write_set_held(
 ) -> Result<Vec<String>, WriteError> {
     let dir = held.dir();
     super::set_journal::check_records(dir)?;
-    let notices =
-        super::set_journal::recover_locked(dir).map_err(|e| WriteError::new(dir, set_steps::RECOVER, e, UNTOUCHED))?;
+    // Recovered when the folder was held, before the caller judged its files.
+    let notices = held.recovered.clone();
     refuse_unwritable_names(dir, set)?;
     let staging = new_staging(dir)?;
     match stage_and_swap(held, &staging, set, &belongs) {
-        Ok(()) => Ok(notices),
+        Ok(left) => Ok(notices.into_iter().chain(left).collect()),
         Err(Stop::Killed) => Err(killed(dir)),
         Err(Stop::Moved(e)) => Err(e),
         Err(Stop::Failed(e)) => {
@@ -200,7 +211,7 @@ pub fn foreign_file(dir: &Path, set: &FileSet) -> Option<Foreign> {
         }
         let now = match entry_of(dir, name) {
             Ok(now) => now,
-            Err(e) => return Some(Foreign::Unreadable(path, held_open(e))),
+            Err(e) => return Some(Foreign::Unreadable(path.clone(), held_open(e, &path))),
         };
         let same = now.size == bytes.len() as u64 && now.hash == hash_bytes(bytes);
         (!written_as_is(&written, &now) && !same).then_some(Foreign::NotOurs(path))
@@ -216,15 +227,20 @@ pub enum Foreign {
     Unreadable(std::path::PathBuf, io::Error),
 }
 
-/// `e`, as [`io::ErrorKind::ResourceBusy`] where it is Windows' refusal of a file another
-/// program holds open without sharing it (`ERROR_SHARING_VIOLATION`, `ERROR_LOCK_VIOLATION`),
-/// so that it is said as the replace of a single file says it.
-fn held_open(e: io::Error) -> io::Error {
-    if cfg!(windows) && matches!(e.raw_os_error(), Some(32 | 33)) {
-        io::Error::new(io::ErrorKind::ResourceBusy, e)
-    } else {
-        e
-    }
+/// `e`, from reading or moving `path`, as [`io::ErrorKind::ResourceBusy`] where it is
+/// Windows' refusal of a file another program holds open (`ERROR_SHARING_VIOLATION`,
+/// `ERROR_LOCK_VIOLATION`, or `ERROR_ACCESS_DENIED` on a file that is not read-only), with
+/// whatever sharing it holds it (a PDF viewer shares reading: the set's move of it aside
+/// is refused), so that it is said as the replace of a single file says it ("another
+/// program has it open"), never in the system's raw English (issue 59).
+fn held_open(e: io::Error, path: &Path) -> io::Error {
+    let held = cfg!(windows)
+        && match e.raw_os_error() {
+            Some(32 | 33) => true,
+            Some(5) => std::fs::metadata(path).is_ok_and(|m| !m.permissions().readonly()),
+            _ => false,
+        };
+    if held { io::Error::new(io::ErrorKind::ResourceBusy, e) } else { e }
 }
 
 /// Makes this writer's staging folder in `dir`: a name nothing has, made by `mkdir`, which
@@ -283,7 +299,7 @@ fn stage_and_swap(
     staging: &Path,
     set: &FileSet,
     belongs: &dyn Fn(&str) -> bool,
-) -> Result<(), Stop> {
+) -> Result<Option<String>, Stop> {
     let dir = held.dir();
     let (_, here) = Identity::at(staging).map_err(|e| WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED))?;
     let mut journal = Journal { staging: here, decided: false, new: Vec::new(), old: Vec::new() };
@@ -308,13 +324,23 @@ fn stage_and_swap(
     super::set_journal::write_written_list(dir, staging, &journal.new);
     // The old files first, with the journal still there: a kill now is finished by the
     // next run, and one after leaves an empty folder, which the next run removes.
-    std::fs::remove_dir_all(staging.join(ASIDE))
-        .and_then(|()| std::fs::remove_file(staging.join(JOURNAL)))
-        .map_err(|e| WriteError::new(dir, set_steps::REMOVE_JOURNAL, e, set_steps::KEPT_RECOVERABLE))?;
+    // A clean-up refused now (Windows: an old file another program holds open, sharing its
+    // deletion, stays in the staging folder until it lets go) does not fail the run: the new
+    // set is in place and recorded, and the journal, kept, lets the next run finish.
+    let cleaned =
+        std::fs::remove_dir_all(staging.join(ASIDE)).and_then(|()| std::fs::remove_file(staging.join(JOURNAL)));
     step()?;
     let _ = std::fs::remove_dir(staging);
     crate::platform::os::sync_folder(dir);
-    Ok(())
+    Ok(cleaned.is_err().then(|| staging_left(dir, staging)))
+}
+
+/// The note for a staging folder whose clean-up was refused after the new set was placed
+/// (Windows: "directory not empty", a file in it held open): the set is in the folder, and
+/// the next run removes what is left.
+fn staging_left(dir: &Path, staging: &Path) -> String {
+    let name = phonglab_core::escape::terminal::text(&staging.file_name().unwrap_or_default().to_string_lossy());
+    crate::t!("set-staging-left", dir = super::reasons::shown(dir), name = name)
 }
 
 /// Refuses the swap when the folder at the held folder's path is no longer the folder held
@@ -378,6 +404,7 @@ fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
     for old in &j.old {
         if let Err(e) = rename_no_replace(&dir.join(&old.name), &aside.join(&old.name)) {
             undo(&moved_aside, &moved_in);
+            let e = held_open(e, &dir.join(&old.name));
             return Err(WriteError::new(&dir.join(&old.name), "write-step-rename", e, UNTOUCHED).into());
         }
         moved_aside.push(&old.name);
@@ -386,6 +413,7 @@ fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
     for new in &j.new {
         if let Err(e) = rename_no_replace(&staging.join(&new.name), &dir.join(&new.name)) {
             undo(&moved_aside, &moved_in);
+            let e = held_open(e, &staging.join(&new.name));
             return Err(WriteError::new(&dir.join(&new.name), "write-step-rename", e, UNTOUCHED).into());
         }
         moved_in.push(&new.name);
@@ -501,6 +529,39 @@ mod tests {
         // The journal begun, each of 3 files, the old set listed, the journal decided, 3
         // moves aside, 3 in, the old files and the journal removed: 13 places to die.
         assert_eq!(steps, 13);
+    }
+
+    /// Issue 59 (a teacher's finding 1): a writer stopped at any step of its swap, then a
+    /// DIFFERENT set written the way the commands write one (the folder held, its files
+    /// judged, the set written): the stopped writer's files are phonglab's, never "not
+    /// written by phonglab". Before the fix a stop after the swap was decided left the new
+    /// set in place and the list of what phonglab wrote naming the old one, and the check
+    /// ran before the recovery, so every later different set was refused.
+    #[test]
+    fn a_writer_stopped_at_any_step_never_blocks_a_different_set() {
+        let belongs = |n: &str| n.ends_with(".md");
+        let mut other = FileSet::default();
+        other.add("a.md", "another set's a");
+        other.add("e.md", "another set's e");
+        let mut steps = 0;
+        for n in 0.. {
+            let dir = temp_dir("stopped-other");
+            old_set(&dir);
+            if with_fault(Fault::KilledAtStep(n), || write_set(&dir, &new_set(), belongs)).is_ok() {
+                break;
+            }
+            steps += 1;
+            let held = hold_folder(&dir).unwrap();
+            let judged = crate::io::exercise_set::refuse_foreign(&dir, &other);
+            assert!(judged.is_ok(), "stopped at step {n}: {:?}", judged.map_err(|e| e.to_string()));
+            assert_eq!(write_set_held(&held, &other, belongs).unwrap(), Vec::<String>::new(), "step {n}");
+            drop(held);
+            let after = listing(&dir);
+            let names: Vec<&str> = after.iter().map(|(n, _)| n.as_str()).collect();
+            assert_eq!(names, ["a.md", "e.md", "mine.txt"], "stopped at step {n}");
+            assert_eq!(after[0].1, b"another set's a", "stopped at step {n}");
+        }
+        assert_eq!(steps, 13, "every step of the swap was tried");
     }
 
     /// Issue 59, #70: a writer killed mid-swap, then a file of the half-placed new set
@@ -684,5 +745,55 @@ mod tests {
         assert!(!e.contains("not written by phonglab"), "{e}");
         drop(held);
         assert_eq!(listing(&dir), before);
+    }
+
+    /// Issue 59 (a teacher's finding 2): an old file of the set held open by another program
+    /// that shares reading (a PDF viewer), or reading and writing, refuses the set in words
+    /// ("another program has it open"), never the system's raw "Sharing violation"; the
+    /// folder is as it was.
+    #[test]
+    #[cfg(windows)]
+    fn a_sets_file_held_open_with_any_sharing_is_said_so_and_the_folder_is_as_it_was() {
+        use std::os::windows::fs::OpenOptionsExt;
+        // FILE_SHARE_READ, then FILE_SHARE_READ | FILE_SHARE_WRITE: no deleting, no renaming.
+        for share in [1, 3] {
+            let dir = temp_dir("set-held-shared");
+            old_set(&dir);
+            let before = listing(&dir);
+            let held = std::fs::File::options().read(true).share_mode(share).open(dir.join("a.md")).unwrap();
+            let e = write_set(&dir, &new_set(), |n| n.ends_with(".md")).unwrap_err();
+            let said = e.to_string();
+            assert_eq!(e.reason.kind(), io::ErrorKind::ResourceBusy, "share {share}: {said}");
+            assert!(said.contains("a.md") && said.contains("another program has it open"), "share {share}: {said}");
+            assert!(!said.contains("os error"), "share {share}: {said}");
+            drop(held);
+            assert_eq!(listing(&dir), before, "share {share}");
+            assert!(!std::fs::read_dir(&dir).unwrap().flatten().any(|e| e.path().is_dir()), "share {share}: staging");
+        }
+    }
+
+    /// Issue 59 (finding 2): an old file held open with full sharing (deleting too) lets the
+    /// set be swapped in, but its removal waits for the other program, so the staging
+    /// folder cannot be removed yet: the run succeeds, with a note saying the new set is in
+    /// the folder and the next run removes what is left; and it does.
+    #[test]
+    #[cfg(windows)]
+    fn a_clean_up_refused_after_the_set_is_in_place_is_a_note_and_the_next_run_removes_it() {
+        use std::os::windows::fs::OpenOptionsExt;
+        let belongs = |n: &str| n.ends_with(".md");
+        let (want_dir, dir) = (temp_dir("set-held-all-want"), temp_dir("set-held-all"));
+        old_set(&want_dir);
+        write_set(&want_dir, &new_set(), belongs).unwrap();
+        let want = user_files(&want_dir);
+        old_set(&dir);
+        let held = std::fs::File::options().read(true).share_mode(7).open(dir.join("a.md")).unwrap();
+        let notices = write_set(&dir, &new_set(), belongs).unwrap();
+        assert_eq!(user_files(&dir), want, "the new set is in place");
+        assert_eq!(notices.len(), 1, "{notices:?}");
+        assert!(notices[0].contains("the new set is whole in") && notices[0].contains("next run"), "{notices:?}");
+        drop(held);
+        assert_eq!(write_set(&dir, &new_set(), belongs).unwrap(), Vec::<String>::new());
+        assert_eq!(listing(&dir), want);
+        assert!(!std::fs::read_dir(&dir).unwrap().flatten().any(|e| e.path().is_dir()), "staging folder removed");
     }
 }

@@ -141,15 +141,15 @@ fn refusal(path: &Path, kind: Kind, checked: Option<&Path>) -> Option<String> {
         }
         Ok(m) if m.file_type().is_symlink() => return Some(t!("work-output-link", path = shown)),
         Ok(m) if m.is_file() => {
-            let own = match head_of(path) {
-                Ok(head) => kind.is_own(&head),
+            let head = match head_of(path) {
+                Ok(head) => head,
                 Err(e) if crate::platform::os::is_link_refused(&e) => {
                     return Some(t!("work-output-link", path = shown));
                 }
-                Err(_) => false,
+                Err(_) => Vec::new(),
             };
-            if !own {
-                return Some(t!("work-output-not-ours", path = shown, kind = kind.words()));
+            if !kind.is_own(&head) {
+                return Some(not_own(&shown, kind, &head));
             }
         }
         // Nothing there; anything else there (a folder, a device) the write refuses.
@@ -163,6 +163,18 @@ fn refusal(path: &Path, kind: Kind, checked: Option<&Path>) -> Option<String> {
         return Some(t!("work-output-submission", path = shown, suggested = suggested));
     }
     None
+}
+
+/// Why a file at an output's name that is not phonglab's earlier output of this `kind` is
+/// refused: where it is phonglab's output of another kind (a report given as the marks'
+/// name, issue 59), that, since "phonglab did not write it" would be untrue; one output
+/// never takes another's place (the teacher's report stays theirs to keep).
+fn not_own(shown: &str, kind: Kind, head: &[u8]) -> String {
+    let kinds = [Kind::Report, Kind::Marks, Kind::Chart, Kind::Difference];
+    match kinds.into_iter().find(|&other| other != kind && other.is_own(head)) {
+        Some(found) => t!("work-output-other-kind", path = shown, found = found.words(), kind = kind.words()),
+        None => t!("work-output-not-ours", path = shown, kind = kind.words()),
+    }
 }
 
 /// Refuses, before any work, the outputs the rule forbids (the first one's reason), and

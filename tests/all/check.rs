@@ -978,7 +978,7 @@ fn a_flag_that_does_not_apply_is_refused_and_one_submission_is_singular() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     // The one notebook was saved without outputs: not read, and not counted as checked.
     assert!(
-        String::from_utf8_lossy(&o.stderr).contains("checked 0 submissions, one not read:"),
+        String::from_utf8_lossy(&o.stderr).contains("checked 0 submissions, one not read\n"),
         "{}",
         String::from_utf8_lossy(&o.stderr)
     );

@@ -241,3 +241,77 @@ fn the_refusals_are_said_in_portuguese_with_the_name_written_visibly() {
     assert!(said.contains("r\\u{1B}]0;x\\u{7}\\u{202E}.md is a link"), "{said}");
     assert_eq!(std::fs::read_to_string(&theirs).unwrap(), "nome,nota\n");
 }
+
+/// Issue 59 (a teacher's finding 3): `check --report --csv` said "2 submissions checked,
+/// one not read: relatório.md", once per output, as if the report were the file not
+/// read. The count is said once, then what was written where, once each.
+#[test]
+fn check_says_once_what_it_wrote_where() {
+    let root = Scratch::new("said-once");
+    let cls = class(&root, &["a.ipynb"]);
+    let (report, chart, csv) = (root.join("relatório.md"), root.join("relatório.png"), root.join("notas.csv"));
+    let cases: [(&str, [String; 3]); 2] = [
+        (
+            "en_GB.UTF-8",
+            [
+                "checked 0 submissions, one not read\n".into(),
+                format!("report written to {} (its chart: {})\n", report.display(), chart.display()),
+                format!("marks written to {}\n", csv.display()),
+            ],
+        ),
+        (
+            "pt_PT.UTF-8",
+            [
+                "0 trabalhos verificados, um não lido\n".into(),
+                format!("relatório escrito em {} (o gráfico, em {})\n", report.display(), chart.display()),
+                format!("notas escritas em {}\n", csv.display()),
+            ],
+        ),
+    ];
+    for (lang, lines) in cases {
+        let o = phonglab_in(lang, &["check", s(&cls), "--report", s(&report), "--csv", s(&csv)]);
+        assert_eq!(o.status.code(), Some(0), "{lang}: {}", stderr(&o));
+        let said = stderr(&o);
+        for line in &lines {
+            assert_eq!(said.matches(line.as_str()).count(), 1, "{lang}: {line:?} once in {said}");
+        }
+        assert!(!said.contains("not read:") && !said.contains("não lido:"), "{lang}: {said}");
+        assert!(report.is_file() && chart.is_file() && csv.is_file());
+    }
+}
+
+/// Issue 59 (a teacher's finding 4): a report phonglab wrote, then given as the marks'
+/// name (`--report Relatório.MD --csv relatório.md`, two files on Linux): refused, but
+/// with what is true, that it is phonglab's report and not its marks, never "phonglab did
+/// not write it"; nothing written, the report kept.
+#[test]
+fn an_output_of_another_kind_is_said_to_be_phonglabs_and_kept() {
+    let root = Scratch::new("other-kind-said");
+    let cls = class(&root, &["a.ipynb"]);
+    let report = root.join("relatório.md");
+    assert!(phonglab(&["check", s(&cls), "--report", s(&report)]).status.success());
+    let kept = std::fs::read(&report).unwrap();
+    let upper = root.join("Relatório.MD");
+    let cases = [
+        ("en_GB.UTF-8", "is phonglab's class report (check --report), not its marks (check --csv)", "did not write"),
+        (
+            "pt_PT.UTF-8",
+            "é um resultado do phonglab, mas o relatório da turma (check --report), não as notas (check --csv)",
+            "não foi o phonglab",
+        ),
+        (
+            "pt_BR.UTF-8",
+            "é um resultado do phonglab, mas o relatório da turma (check --report), não as notas (check --csv)",
+            "não foi o phonglab",
+        ),
+    ];
+    for (lang, true_words, untrue) in cases {
+        let o = phonglab_in(lang, &["check", s(&cls), "--report", s(&upper), "--csv", s(&report)]);
+        assert_eq!(o.status.code(), Some(2), "{lang}: {}", stderr(&o));
+        let said = stderr(&o);
+        assert!(said.contains(&report.display().to_string()) && said.contains(true_words), "{lang}: {said}");
+        assert!(!said.contains(untrue), "{lang}: {said}");
+        assert_eq!(std::fs::read(&report).unwrap(), kept, "{lang}: the report kept");
+        assert!(!upper.exists(), "{lang}: nothing written");
+    }
+}
