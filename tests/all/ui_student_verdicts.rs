@@ -121,7 +121,9 @@ fn a_spinning_scene_is_checked_at_its_own_view_as_the_command_line_checks_it() {
 fn every_pictures_verdict_starts_with_its_word_and_ends_with_what_to_do() {
     let words = [("en", "Unexplained: "), ("pt-PT", "Não explicada: "), ("pt-BR", "Não explicada: ")];
     for (lang, word) in words {
-        for id in ["diagnose-offset-darker", "diagnose-offset-lighter", "diagnose-levels-darker", "diagnose-levels-lighter"] {
+        for id in
+            ["diagnose-offset-darker", "diagnose-offset-lighter", "diagnose-levels-darker", "diagnose-levels-lighter"]
+        {
             let m = message(lang, id);
             assert!(m.starts_with(word), "{lang} {id}: {m}");
             assert!(m.contains("glLight*/glMaterial*") || m.contains("--png"), "{lang} {id}: no what to do: {m}");
@@ -132,9 +134,11 @@ fn every_pictures_verdict_starts_with_its_word_and_ends_with_what_to_do() {
         let within = message(lang, "diagnose-verdict-right-within");
         assert!(within.contains("phonglab check") && within.contains("glLight*/glMaterial*"), "{lang}: {within}");
     }
-    for (lang, claim) in
-        [("en", "not a mistake in the lighting"), ("pt-PT", "não é um erro na iluminação"), ("pt-BR", "não é um erro na iluminação")]
-    {
+    for (lang, claim) in [
+        ("en", "not a mistake in the lighting"),
+        ("pt-PT", "não é um erro na iluminação"),
+        ("pt-BR", "não é um erro na iluminação"),
+    ] {
         assert!(!message(lang, "diagnose-levels-darker").contains(claim), "{lang}");
         assert!(!message(lang, "diagnose-levels-lighter").contains(claim), "{lang}");
     }

@@ -302,8 +302,7 @@ pub fn compare_ui(
     b: &Evaluated,
 ) -> (Option<String>, Vec<egui::Rect>) {
     if compare.student.is_some() {
-        let rects =
-            {
+        let rects = {
             let filed = super::student_picture::filed(current.doc, current.spun);
             super::student_picture::student_picture_ui(ui, &mut compare.student, &filed, &mut compare.recheck)
         };

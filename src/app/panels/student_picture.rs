@@ -62,7 +62,14 @@ impl StudentPicture {
     /// The picture `image` (RGBA8, `size` square) from `file`, as `d` diagnosed it.
     /// `doc` is the scene it was diagnosed against ([`filed`]); `unspun`, whether that is
     /// not the spin the window shows.
-    pub fn new(file: String, size: usize, image: Vec<u8>, d: &Diagnosis, doc: &Document, unspun: bool) -> StudentPicture {
+    pub fn new(
+        file: String,
+        size: usize,
+        image: Vec<u8>,
+        d: &Diagnosis,
+        doc: &Document,
+        unspun: bool,
+    ) -> StudentPicture {
         let (diff, gain) = difference_image(&d.picture, &image);
         StudentPicture {
             file,
