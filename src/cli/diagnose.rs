@@ -136,6 +136,10 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
         out.push(t!("diagnose-diff-written", path = crate::io::reasons::shown(diff), gain = gain.to_string()));
     }
     if let Some(p) = worst {
+        // Where (0, 0) is, once: the findings say it when they name pixels already.
+        if !Said::of(&d).places() {
+            out.push(t!("diagnose-where"));
+        }
         let show = |b: [u8; 3]| format!("({}, {}, {})", b[0], b[1], b[2]);
         out.push(t!(
             "diagnose-worst",

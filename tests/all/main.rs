@@ -57,6 +57,7 @@ mod ui_probe;
 mod ui_quiz_picture;
 mod ui_random;
 mod ui_student;
+mod ui_student_verdicts;
 mod ui_typing;
 mod vocabulary;
 mod windows_names;

@@ -597,20 +597,29 @@ fn a_long_diagnosis_scrolls_and_the_three_pictures_keep_their_size_within_the_wi
 }
 
 #[test]
-fn a_refused_picture_clears_the_last_verdict_and_says_why_in_compare() {
+fn a_refused_picture_keeps_the_last_verdict_and_says_why_in_compare_when_there_is_none() {
     let dir = TempDir::new("refused");
     let path = dir.0.join("aluno.png");
     let id = mistaken_picture(&path);
     let mut h = harness(1024.0, 600.0);
     check_through_the_menu(&mut h, &path);
     assert!(h.query_by_label_contains(&format!("({id})")).is_some());
-    // A picture of another size: its refusal in Compare, whole, and the old verdict gone.
+    // A picture of another size: refused in the status line, the earlier check as it was
+    // (the guide: "any earlier check stays as it was").
     let wide = dir.0.join("largo.png");
     phonglab::io::image::write_png(&wide, 768, 256, &vec![0; 768 * 256 * 4]).unwrap();
     check_through_the_menu(&mut h, &wide);
+    let message = format!("{:?}", h.state().message);
+    assert!(message.contains("Not checked") && message.contains("largo.png"), "{message}");
+    assert!(h.state().compare.student.as_ref().is_some_and(|p| p.file == "aluno.png"));
+    assert!(h.query_by_label_contains(&format!("({id})")).is_some(), "the last verdict is gone");
+    assert!(h.query_by_label("Student's picture: aluno.png").is_some());
+    // With no earlier check: the refusal in Compare, whole.
+    h.get_by_label("Clear").click();
+    h.run_steps(2);
+    check_through_the_menu(&mut h, &wide);
     assert!(h.state().compare.student.is_none());
     assert!(h.state().compare.open);
-    assert!(h.query_by_label_contains(&format!("({id})")).is_none(), "the last verdict stays");
     assert!(h.query_by_label("Student's picture: largo.png").is_some());
     // Under the heading, not only in the status line at the window's foot.
     let heading = h.get_by_label("Student's picture: largo.png").rect();
@@ -799,7 +808,9 @@ fn a_mistake_of_few_pixels_is_shown_wrong_with_where_it_shows_as_the_command_lin
         .unwrap_or_else(|| panic!("{lines:?}"));
     // Each group where it is, the handle's and the spout's, not the mean between them.
     assert!(
-        footprint.contains("422 pixels: 282 from (71, 207) to (135, 313) and 140 from (399, 247) to (438, 290)."),
+        footprint.contains(
+            "422 pixels: 282 from (71,\u{a0}207) to (135,\u{a0}313) and 140 from (399,\u{a0}247) to (438,\u{a0}290)."
+        ),
         "{footprint}"
     );
     // Every share bound to its % by a no-break space, so that a wrap never leaves % alone.

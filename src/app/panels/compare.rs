@@ -288,6 +288,9 @@ pub struct Current<'a> {
     pub pow: PowFn,
     /// The side the calculation explains.
     pub side: phonglab_core::explain::Side,
+    /// The window's spin ([`super::shaded::ShadedOptions::spun`]): a student's picture is
+    /// checked against the scene without it ([`super::student_picture::filed`]).
+    pub spun: Option<(f64, f64)>,
 }
 
 /// The compare view, in the centre; returns a notice for the app's message line, and where
@@ -299,8 +302,10 @@ pub fn compare_ui(
     b: &Evaluated,
 ) -> (Option<String>, Vec<egui::Rect>) {
     if compare.student.is_some() {
-        let rects =
-            super::student_picture::student_picture_ui(ui, &mut compare.student, current.doc, &mut compare.recheck);
+        let rects = {
+            let filed = super::student_picture::filed(current.doc, current.spun);
+            super::student_picture::student_picture_ui(ui, &mut compare.student, &filed, &mut compare.recheck)
+        };
         return (None, rects);
     }
     if compare.refused.is_some() {

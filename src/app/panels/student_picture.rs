@@ -32,6 +32,23 @@ pub struct StudentPicture {
     pub gain: u32,
     /// The right picture's setup it was diagnosed against ([`picture_setup`]).
     checked: ShadedSetup,
+    /// Whether the window had spun the view: the picture was checked at the scene's own
+    /// spin, not the one shown ([`filed`]), and says so.
+    unspun: bool,
+}
+
+/// The scene `doc` as its file and its program draw it: the turn the window's spin gave
+/// the object since `spun` began ([`crate::app::panels::shaded::ShadedOptions::spun`])
+/// taken back. A student's program draws the scene's own view, not the one shown.
+pub fn filed(doc: &Document, spun: Option<(f64, f64)>) -> std::borrow::Cow<'_, Document> {
+    match spun {
+        Some((start, last)) if last == doc.view.spin_degrees && start != last => {
+            let mut d = doc.clone();
+            d.view.spin_degrees = start;
+            std::borrow::Cow::Owned(d)
+        }
+        _ => std::borrow::Cow::Borrowed(doc),
+    }
 }
 
 /// What the right picture of `doc` is drawn from, as the diagnosis draws it (the exact
@@ -44,8 +61,16 @@ pub fn picture_setup(doc: &Document) -> ShadedSetup {
 
 impl StudentPicture {
     /// The picture `image` (RGBA8, `size` square) from `file`, as `d` diagnosed it.
-    /// `doc` is the scene it was diagnosed against.
-    pub fn new(file: String, size: usize, image: Vec<u8>, d: &Diagnosis, doc: &Document) -> StudentPicture {
+    /// `doc` is the scene it was diagnosed against ([`filed`]); `unspun`, whether that is
+    /// not the spin the window shows.
+    pub fn new(
+        file: String,
+        size: usize,
+        image: Vec<u8>,
+        d: &Diagnosis,
+        doc: &Document,
+        unspun: bool,
+    ) -> StudentPicture {
         let (diff, gain) = difference_image(&d.picture, &image);
         StudentPicture {
             file,
@@ -55,6 +80,7 @@ impl StudentPicture {
             pictures: [d.picture.clone(), image, diff],
             textures: None,
             checked: picture_setup(doc),
+            unspun,
             gain,
         }
     }
@@ -78,8 +104,35 @@ impl StudentPicture {
     /// The diagnosis in words, one line a finding, in the language shown now: as
     /// `phonglab diagnose` says it ([`Said::lines`]).
     pub fn lines(&self) -> Vec<String> {
-        self.said.lines()
+        let mut lines: Vec<String> = self.said.lines().iter().map(|l| one_line_pairs(l)).collect();
+        if self.unspun {
+            lines.push(t!("student-picture-unspun"));
+        }
+        lines
     }
+}
+
+/// `line` with each coordinate pair "(71, 207)" kept on one line: a no-break space after
+/// its comma, so that a wrap never parts x from y.
+pub fn one_line_pairs(line: &str) -> String {
+    let mut out = String::with_capacity(line.len());
+    let mut in_pair = false;
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '(' => in_pair = chars.peek().is_some_and(|n| n.is_ascii_digit() || *n == '-'),
+            ')' => in_pair = false,
+            ',' if in_pair && chars.peek() == Some(&' ') => {
+                chars.next();
+                out.push_str(",\u{a0}");
+                continue;
+            }
+            c if in_pair && !(c.is_ascii_digit() || c == '-' || c == '.') => in_pair = false,
+            _ => {}
+        }
+        out.push(c);
+    }
+    out
 }
 
 /// The student's picture in Compare: the diagnosis, then A, B and the difference side by

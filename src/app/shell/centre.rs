@@ -58,6 +58,7 @@ pub fn centre_ui(ui: &mut Ui, state: &mut AppState, eval: &state::Evaluated) {
             precision: state.settings.precision,
             pow: state.settings.pow,
             side: state.settings.side,
+            spun: state.view_options.spun,
         };
         let (notice, pictures) = compare::compare_ui(ui, &mut state.compare, &current, eval);
         if let Some(m) = notice {

@@ -86,7 +86,7 @@ fn status(state: &AppState, which: Status) -> Option<Message> {
         }
         Status::Picture => {
             let p = state.compare.student.as_ref()?;
-            if p.stale(&state.doc) {
+            if p.stale(&filed(state)) {
                 return Some(Message::Info(p.stale_note()));
             }
             (p.file.clone(), p.lines().into_iter().next().unwrap_or_default())
@@ -119,16 +119,24 @@ pub fn restate(state: &mut AppState) {
 }
 
 fn refuse(state: &mut AppState, why: String) {
-    state.message = Some(Message::Refused(t!("student-not-checked", why = why)));
+    state.message = Some(Message::Refused(not_checked(&why)));
 }
 
-/// Refuses a picture: says why in the status line and in Compare, in place of the last
-/// picture's diagnosis (which is not this file's).
+/// "Not checked: why." with one period, whether or not `why` ends its own sentence.
+fn not_checked(why: &str) -> String {
+    t!("student-not-checked", why = why.trim_end().trim_end_matches('.').to_owned())
+}
+
+/// Refuses a picture: says why in the status line. A picture checked earlier stays in
+/// Compare as it was (its verdict is still its own); with none, Compare shows the refusal.
 fn refuse_picture(state: &mut AppState, path: &Path, why: String) {
-    let said = t!("student-not-checked", why = why.clone());
+    let said = not_checked(&why);
     refuse(state, why);
+    state.student_status = None;
+    if state.compare.student.is_some() {
+        return;
+    }
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    state.compare.student = None;
     state.compare.refused = Some((phonglab_core::escape::printable(&name), said));
     state.compare.open = true;
 }
@@ -200,6 +208,11 @@ pub fn check_menu_ui(ui: &mut egui::Ui, state: &mut AppState) {
     state.chooser = Some(chooser);
 }
 
+/// The scene shown as its file draws it: [`crate::app::panels::student_picture::filed`].
+fn filed(state: &AppState) -> std::borrow::Cow<'_, phonglab_core::Document> {
+    crate::app::panels::student_picture::filed(&state.doc, state.view_options.spun)
+}
+
 /// The export's window, the size a student's picture is drawn at.
 pub const PICTURE_SIZE: usize = 512;
 
@@ -226,15 +239,18 @@ pub fn recheck_picture(state: &mut AppState) {
 /// against the scene shown.
 fn diagnose_picture(state: &mut AppState, image: Vec<u8>, file: String, path: &Path) {
     use phonglab_core::teach::diagnose::{Drawing, diagnose};
-    let mesh = state.doc.view.mesh();
+    // The scene's own view, as its program draws it (the window's spin taken back).
+    let doc = filed(state).into_owned();
+    let unspun = doc != state.doc;
+    let mesh = doc.view.mesh();
     // As `phonglab diagnose` draws it: the exact power, whatever the window's setting (the
     // student's OpenGL computes the exact one).
-    let mut right = Drawing::of(&state.doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
-    right.inside = state.doc.view.mesh_inside();
+    let mut right = Drawing::of(&doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    right.inside = doc.view.mesh_inside();
     match diagnose(&right, &image, PICTURE_SIZE) {
         Ok(d) => {
             let picture =
-                crate::app::panels::student_picture::StudentPicture::new(file, PICTURE_SIZE, image, &d, &state.doc);
+                crate::app::panels::student_picture::StudentPicture::new(file, PICTURE_SIZE, image, &d, &doc, unspun);
             state.compare.student = Some(picture);
             state.compare.refused = None;
             state.compare.open = true;

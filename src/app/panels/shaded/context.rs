@@ -24,6 +24,9 @@ pub struct ShadedOptions {
     pub probe: super::probe_window::ProbeState,
     /// The term shown instead of the picture, if one is.
     pub channel: Option<phonglab_core::channels::Channel>,
+    /// The window's spin ("Auto-rotate"): the spin the view had before the window began to
+    /// turn it, and the spin after its last turn ([`crate::app::panels::student_picture::filed`]).
+    pub spun: Option<(f64, f64)>,
 }
 
 /// What the shaded view reads and writes, borrowed from the shell: the document (edited

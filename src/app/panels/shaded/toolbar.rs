@@ -180,7 +180,15 @@ pub(super) fn toolbar_ui(ui: &mut Ui, state: &mut Shaded<'_>, cache: &ShadedCach
     if state.edit.doc.view.auto_rotate {
         let on_object = super::overlay::vertex_on_object(state.edit.doc);
         let doc = &mut *state.edit.doc;
-        doc.view.spin_degrees = (doc.view.spin_degrees + 0.5).rem_euclid(360.0);
+        let spin = doc.view.spin_degrees;
+        // Where the window began to turn it, unless the spin was since set otherwise (a
+        // file opened, an undo): a student's picture is checked at the scene's own.
+        let start = match state.view_options.spun {
+            Some((start, last)) if last == spin => start,
+            _ => spin,
+        };
+        doc.view.spin_degrees = (spin + 0.5).rem_euclid(360.0);
+        state.view_options.spun = Some((start, doc.view.spin_degrees));
         if on_object {
             *doc = doc.with_vertex_as_shaded(doc.scene.vertex);
         }

@@ -1,6 +1,7 @@
 //! The picture's levels changed as a whole: a gamma, a brightness or a colour profile
 //! applied to the picture as saved (an image editor, a screenshot tool, a monitor's
-//! profile), not a mistake in the lighting. Such a change moves every pixel by a function
+//! profile). It explains the picture as well as any mistake does, which is all it tells: a
+//! lighting mistake may hide under it (a wrong picture then darkened reads so too). Such a change moves every pixel by a function
 //! of its level alone, so it is fitted from the right picture's levels to the student's:
 //! a gamma (`255 (v / 255)^g`, the same for every channel) or an offset (`v + b`, clamped),
 //! applied to the whole picture, its background included. A mistake is named rather than

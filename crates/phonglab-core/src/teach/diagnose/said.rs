@@ -66,6 +66,22 @@ impl Said {
     /// The diagnosis in words, in the language set now: the verdict with the closest cause
     /// and its score, what it rests on, the other causes.
     pub fn lines(&self) -> Vec<String> {
+        let mut out = self.findings();
+        if self.places() {
+            out.push(tr_args("diagnose-where", &[]));
+        }
+        out
+    }
+
+    /// Whether a line names pixels by their coordinates (a footprint's groups, a region, an
+    /// offset's square, marks): then [`Self::lines`] says once where (0, 0) is.
+    pub fn places(&self) -> bool {
+        let shown = matches!(self.shape, Some(Shape::Region(_) | Shape::Marks(_) | Shape::Offset(_)));
+        shown || (self.verdict == Verdict::Wrong && self.footprint.is_some())
+    }
+
+    /// The findings, one a line: the verdict first.
+    fn findings(&self) -> Vec<String> {
         let right = percent(self.right);
         match self.verdict {
             Verdict::Right => vec![self.right_words()],
