@@ -69,31 +69,25 @@ mod windows {
         use std::os::windows::ffi::OsStrExt;
         use windows_sys::Win32::Storage::FileSystem::GetLongPathNameW;
         let wide: Vec<u16> = path.as_os_str().encode_wide().chain([0]).collect();
-        let mut buf = vec![0u16; 1024];
-        loop {
-            let len = u32::try_from(buf.len()).ok()?;
-            // SAFETY: `wide` ends with a 0; `buf` holds `len` u16s.
-            let n = unsafe { GetLongPathNameW(wide.as_ptr(), buf.as_mut_ptr(), len) } as usize;
-            if n == 0 {
-                return None;
-            }
-            if n < buf.len() {
-                buf.truncate(n);
-                return Some(PathBuf::from(std::ffi::OsString::from_wide(&buf)));
-            }
-            buf.resize(n + 1, 0);
-        }
+        // SAFETY: `wide` ends with a 0; `buf` holds `len` u16s.
+        filled_path(|buf, len| unsafe { GetLongPathNameW(wide.as_ptr(), buf, len) })
     }
 
     /// The path the system gives the open `file` (links and junctions resolved).
     fn final_path(file: &File) -> Option<PathBuf> {
         use windows_sys::Win32::Storage::FileSystem::GetFinalPathNameByHandleW;
+        // SAFETY: the handle is open for the call; `buf` holds `len` u16s.
+        filled_path(|buf, len| unsafe { GetFinalPathNameByHandleW(file.as_raw_handle(), buf, len, 0) })
+    }
+
+    /// A path a Windows call writes into a buffer of u16s: `call(buf, len)` returns the
+    /// length written, or the length needed when the buffer is too short, or 0 on failure;
+    /// the buffer grows until the path fits.
+    fn filled_path(mut call: impl FnMut(*mut u16, u32) -> u32) -> Option<PathBuf> {
         let mut buf = vec![0u16; 1024];
         loop {
             let len = u32::try_from(buf.len()).ok()?;
-            // SAFETY: the handle is open for the call; `buf` holds `len` u16s.
-            let n = unsafe { GetFinalPathNameByHandleW(file.as_raw_handle(), buf.as_mut_ptr(), len, 0) };
-            let n = n as usize;
+            let n = call(buf.as_mut_ptr(), len) as usize;
             if n == 0 {
                 return None;
             }
