@@ -736,6 +736,41 @@ fn the_chooser_names_notebooks_printed_text_and_pictures_and_starts_where_the_la
 }
 
 #[test]
+fn a_name_typed_while_the_chooser_is_open_changes_nothing_behind_it() {
+    // Seen in the real window: the chooser open, its name field without the keyboard (a
+    // click beside it), "wrong.png" typed: W, G, N and P switched the two-sided lighting,
+    // the rules, the normals and the precision of the scene behind the chooser.
+    let mut h = harness(1280.0, 720.0);
+    common::open_menu(&mut h, &["File"]);
+    h.get_by_label("Check a student's work…").click();
+    h.run_steps(2);
+    assert!(h.state().chooser.is_some(), "the chooser opens");
+    h.state_mut().chooser.as_mut().unwrap().name.clear();
+    let ctx = h.ctx.clone();
+    ctx.memory_mut(|m| {
+        if let Some(id) = m.focused() {
+            m.surrender_focus(id);
+        }
+    });
+    h.run_steps(1);
+    let seen = |s: &AppState| (s.doc.scene.clone(), s.doc.view.object, s.doc.view.shading, s.settings.precision);
+    let before = seen(h.state());
+    for key in [egui::Key::W, egui::Key::G, egui::Key::N, egui::Key::P, egui::Key::T, egui::Key::Num2] {
+        h.key_press(key);
+        h.run_steps(1);
+    }
+    assert!(seen(h.state()) == before, "the scene behind the chooser changed");
+    assert!(h.state().chooser.is_some(), "the chooser is still open");
+    // Closed, the same keys work again.
+    h.get_by_label("Cancel").click();
+    h.run_steps(2);
+    assert!(h.state().chooser.is_none());
+    h.key_press(egui::Key::G);
+    h.run_steps(2);
+    assert_ne!(h.state().doc.scene.rules.set, before.0.rules.set, "G switches the rules once the chooser is closed");
+}
+
+#[test]
 fn a_named_cause_is_the_cause_and_the_unexplained_verdict_reads_as_one_sentence() {
     // "Wrong. The cause: X" for a named cause; "closest" is the unexplained verdict's word.
     for (lang, wrong) in [("en", "Wrong. The cause: "), ("pt-PT", "Errada. A causa: "), ("pt-BR", "Errada. A causa: ")]

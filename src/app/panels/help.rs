@@ -78,20 +78,23 @@ pub const SHORTCUTS: &[(Modifiers, Key, &str, Action, &str)] = &[
 
 /// May `action` fire from its keys now? While a text field has the keyboard only what
 /// works from everywhere does (Open, Save, Quit and Help's F1: Ctrl+Z is the field's own
-/// undo); in the quiz, where the student types numbers, no key without Ctrl does, so digits
-/// typed after a missed click change nothing.
-fn allowed(modifiers: Modifiers, key: Key, action: Action, typing: bool, quiz: bool) -> bool {
+/// undo); while something asks for typing (`asking`: the quiz, where the student types
+/// numbers, or a window asking for a file's name) no key without Ctrl does, so letters and
+/// digits typed after a missed click change nothing behind it (a name typed into phonglab's
+/// file chooser whose field had lost the keyboard switched the rules, the normals and the
+/// two-sided lighting, one key each).
+fn allowed(modifiers: Modifiers, key: Key, action: Action, typing: bool, asking: bool) -> bool {
     let plain = !modifiers.ctrl && !modifiers.command && key != Key::F1;
     if typing {
         matches!(action, Action::Open | Action::Save | Action::Quit) || key == Key::F1
     } else {
-        !(quiz && plain)
+        !(asking && plain)
     }
 }
 
 /// The actions whose keys were pressed this frame: see `allowed` for which fire while a
-/// text field has the keyboard, or while the quiz (`quiz`) is open.
-pub fn pressed(ctx: &egui::Context, quiz: bool) -> Vec<Action> {
+/// text field has the keyboard, or while something asks for typing (`asking`).
+pub fn pressed(ctx: &egui::Context, asking: bool) -> Vec<Action> {
     let typing = ctx.egui_wants_keyboard_input();
     ctx.input_mut(|i| {
         let mut out = Vec::new();
@@ -99,7 +102,7 @@ pub fn pressed(ctx: &egui::Context, quiz: bool) -> Vec<Action> {
         let mut ordered: Vec<_> = SHORTCUTS.iter().collect();
         ordered.sort_by_key(|(m, ..)| std::cmp::Reverse(m.shift as u8 + m.ctrl as u8 + m.command as u8));
         for (m, k, _, a, _) in ordered {
-            if allowed(*m, *k, *a, typing, quiz) && i.consume_key(*m, *k) && !out.contains(a) {
+            if allowed(*m, *k, *a, typing, asking) && i.consume_key(*m, *k) && !out.contains(a) {
                 out.push(*a);
             }
         }

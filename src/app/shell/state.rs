@@ -125,6 +125,14 @@ pub enum StudentStatus {
 }
 
 impl AppState {
+    /// Something asks for typing or a choice before the scene: the quiz (numbers), phonglab's
+    /// file chooser (a name), or the question of what to do with a dropped notebook. Keys
+    /// without Ctrl then change nothing behind it ([`crate::app::panels::help::pressed`]).
+    /// (The share window is not asking: its link follows the scene the keys change.)
+    pub fn asks_for_typing(&self) -> bool {
+        self.quiz.open || self.chooser.is_some() || self.student_ask.is_some()
+    }
+
     /// Starts on the worksheet's scene (modelview 5).
     pub fn worksheet() -> Self {
         Self::default()
