@@ -20,7 +20,11 @@ pub fn message(e: &clap::Error, command: Option<&str>) -> Option<String> {
         ErrorKind::InvalidUtf8 => Some(t!("arg-error-invalid-utf8")),
         ErrorKind::InvalidSubcommand => {
             let name = shown(&string(e, ContextKind::InvalidSubcommand)?);
-            Some(with_suggestion(t!("arg-error-unknown-command", name = name), e, ContextKind::SuggestedSubcommand))
+            let said = match string(e, ContextKind::Custom).as_deref() {
+                Some("arg-error-unknown-command-or-file") => t!("arg-error-unknown-command-or-file", name = name),
+                _ => t!("arg-error-unknown-command", name = name),
+            };
+            Some(with_suggestion(said, e, ContextKind::SuggestedSubcommand))
         }
         ErrorKind::MissingRequiredArgument => {
             let args: Vec<String> = strings(e, ContextKind::InvalidArg).iter().map(|a| arg_name(a)).collect();
@@ -41,6 +45,27 @@ pub fn message(e: &clap::Error, command: Option<&str>) -> Option<String> {
         _ => None,
     }?;
     Some(finish(said, command))
+}
+
+/// clap's error for `name`, which is no command of `root` (`message` says it with the
+/// catalogue's `id`, `arg-error-unknown-command` or, where a file was expected too,
+/// `arg-error-unknown-command-or-file`), with the closest command as the suggestion (the
+/// measure clap suggests with: Jaro similarity over 0.7).
+pub fn unknown_command(root: &mut clap::Command, name: &str, id: &'static str) -> clap::Error {
+    root.build();
+    let closest = root
+        .get_subcommands()
+        .map(|c| (strsim::jaro(name, c.get_name()), c.get_name().to_string()))
+        .filter(|(score, _)| *score > 0.7)
+        .max_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, n)| n);
+    let mut e = clap::Error::new(ErrorKind::InvalidSubcommand).with_cmd(root);
+    e.insert(ContextKind::InvalidSubcommand, ContextValue::String(name.to_string()));
+    e.insert(ContextKind::Custom, ContextValue::String(id.to_string()));
+    if let Some(c) = closest {
+        e.insert(ContextKind::SuggestedSubcommand, ContextValue::Strings(vec![c]));
+    }
+    e
 }
 
 /// `said` as the refusal prints it, then where the help is.

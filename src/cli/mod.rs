@@ -43,7 +43,8 @@ pub struct Cli {
     #[command(subcommand)]
     pub command: Option<Command>,
     /// A scene file (TOML), or a shared scene's link (https://…#v1.…), to open the app on;
-    /// one that cannot be read opens the worksheet and says why.
+    /// one that cannot be read opens the worksheet and says why (a word without a dot that
+    /// names no file is taken for a mistyped command).
     pub file: Option<PathBuf>,
     /// Who draws the app's shaded view: auto (the GPU when the adapter is a real one), cpu
     /// (the reference renderer) or gpu (the scene's generated WGSL, even on a software
@@ -99,11 +100,20 @@ impl Cli {
         let command = command.as_deref();
         let matches = cmd.try_get_matches_from_mut(std::env::args_os()).unwrap_or_else(|e| exit_escaped(&e, command));
         if let Some(("help", asked)) = matches.subcommand() {
-            let names = asked.get_many::<String>("command").into_iter().flatten();
-            crate::cli::help::print_help_of(&mut cmd, names);
+            let names: Vec<&String> = asked.get_many::<String>("command").into_iter().flatten().collect();
+            // `phonglab help exercises`: no such command, said as `phonglab exercises --x` is.
+            if let Some(name) = names.first().filter(|n| cmd.find_subcommand(n.as_str()).is_none()) {
+                exit_escaped(&arg_errors::unknown_command(&mut cmd, name, "arg-error-unknown-command"), None);
+            }
+            crate::cli::help::print_help_of(&mut cmd, names.into_iter());
             std::process::exit(0);
         }
         let mut cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| exit_escaped(&e, command));
+        // `phonglab exercicios`: a word that is no file is a mistyped command, not a scene to
+        // open the window on (which said why only in the window).
+        if let (None, Some(word)) = (&cli.command, cli.file.as_ref().and_then(|f| mistyped_command(f))) {
+            exit_escaped(&arg_errors::unknown_command(&mut cmd, &word, "arg-error-unknown-command-or-file"), None);
+        }
         if let (Some(Command::Exercise(a)), Some(("exercise", m))) = (&mut cli.command, matches.subcommand()) {
             a.count_given = m.value_source("count") == Some(clap::parser::ValueSource::CommandLine);
         }
@@ -123,6 +133,16 @@ impl Cli {
 /// the standard output), but said in the catalogue's words where its kind is a common one
 /// ([`arg_errors`]), and otherwise with what it echoes of the command line (a bad value,
 /// an unknown option) written visibly where it holds control characters.
+/// `file`, given where a scene file goes, as the command it mistypes: a bare word (no
+/// folder, no extension, not a link) that names nothing. A scene file always has a `.`
+/// (`scene.toml`) and a link a `:`; a word like `exercicios` opened the window on the
+/// worksheet with the error only there.
+fn mistyped_command(file: &std::path::Path) -> Option<String> {
+    let word = file.to_str()?;
+    let bare = !word.is_empty() && !word.contains(['.', ':', '/', '\\']);
+    (bare && std::fs::symlink_metadata(file).is_err()).then(|| word.to_string())
+}
+
 fn exit_escaped(e: &clap::Error, command: Option<&str>) -> ! {
     use clap::error::ErrorKind;
     if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {

@@ -133,6 +133,33 @@ fn claps_common_errors_are_said_in_the_language_asked_for() {
     assert!(said.contains("não pode ser usada com"), "{said}");
 }
 
+/// A mistyped command is refused on the terminal with the closest command (it opened the
+/// window on the worksheet, with the error only there), and so is `help` of one; a scene
+/// file's name and an existing file without an extension still go to the window.
+#[test]
+fn a_mistyped_command_is_refused_on_the_terminal_with_the_closest_one() {
+    for (lang, said) in [
+        ("en", "There is no command \"exercicios\", nor a file of that name. Did you mean exercise?"),
+        ("pt-PT", "Não existe o comando \"exercicios\", nem um ficheiro com esse nome. Queria dizer exercise?"),
+        ("pt-BR", "Não existe o comando \"exercicios\", nem um arquivo com esse nome. Você quis dizer exercise?"),
+    ] {
+        let (code, text) = refused(lang, &["exercicios"]);
+        assert_eq!(code, 2, "{lang}: {text}");
+        assert!(text.contains(said), "{lang}: {text}");
+    }
+    let (code, text) = refused("en", &["help", "exercises"]);
+    assert_eq!(code, 2, "{text}");
+    assert!(text.contains("There is no command \"exercises\". Did you mean exercise?"), "{text}");
+    assert!(text.contains("See phonglab --help."), "{text}");
+    // Nothing close: no suggestion.
+    let (_, text) = refused("en", &["xyzzy"]);
+    assert!(text.contains("There is no command \"xyzzy\", nor a file") && !text.contains("Did you mean"), "{text}");
+    // `help` of a real command still prints its help.
+    let out = phonglab(&["--lang", "en", "help", "exercise"]);
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stdout).contains("phonglab exercise"));
+}
+
 /// A key the teacher edited after phonglab wrote it is not written over by the same
 /// command run again: refused, the key as edited, every other file as it was.
 #[test]
