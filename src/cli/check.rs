@@ -53,7 +53,9 @@ fn read_printed(path: &Path) -> Result<Printed> {
 
 /// Refuses a check past the memory budget (`--memory-budget`, or the default): the
 /// submissions it reads (a folder's notebooks, or the one file), their largest as JSON's
-/// values ([`crate::io::budget::check_bytes`]). The standard input is counted at its cap.
+/// values ([`crate::io::budget::check_bytes`]). The standard input, whose size is not known
+/// before it is read (it is read within its cap, [`crate::io::student_code::MAX_CODE_BYTES`]),
+/// is counted as a submission of no bytes: the process's part and the rest.
 fn within_budget(a: &CheckArgs, folder: Option<&Path>) -> Result<()> {
     let cap = crate::io::student_code::MAX_CODE_BYTES;
     let size = |p: &Path| std::fs::symlink_metadata(p).map_or(0, |m| if m.is_file() { m.len().min(cap) } else { 0 });
@@ -63,7 +65,7 @@ fn within_budget(a: &CheckArgs, folder: Option<&Path>) -> Result<()> {
             .filter(|p| crate::io::student_code::student_code(p) == Some(true))
             .map(|p| size(&p))
             .collect(),
-        (None, Some(p), _) if p.as_path() == Path::new("-") => vec![cap],
+        (None, Some(p), _) if p.as_path() == Path::new("-") => vec![0],
         (None, Some(p), _) | (None, None, Some(p)) => vec![size(p)],
         (None, None, None) => Vec::new(),
     };
@@ -73,7 +75,8 @@ fn within_budget(a: &CheckArgs, folder: Option<&Path>) -> Result<()> {
         count = sizes.len() as i64,
         largest = phonglab_core::mesh::obj::describe_bytes(largest)
     );
-    crate::io::budget::check(&what, crate::io::budget::check_bytes(largest)).map_err(anyhow::Error::msg)
+    crate::io::budget::check(&what, crate::io::budget::check_bytes(sizes.len() as u64, largest))
+        .map_err(anyhow::Error::msg)
 }
 
 /// Runs `phonglab check`: whether the work is right (the exit code, for scripts and

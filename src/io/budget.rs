@@ -204,14 +204,15 @@ pub fn eval_bytes(largest_case: u64) -> u64 {
     largest_case.saturating_mul(32) + (16 << 20)
 }
 
-/// What `phonglab check` holds at its peak, its submissions' largest being `largest` bytes:
-/// the process's own part ([`PROCESS`]), that notebook as serde_json's values (at most 32
-/// bytes a byte of JSON, as [`eval_bytes`] counts), and 16 MiB for the rest (the checks
-/// kept for the report, the key worked). Measured (`/usr/bin/time -v`, debug build): a
-/// notebook of the worksheet peaks at about 30 MB resident; a class of 200 at 86 MB
-/// (release build, docs/guide.md).
-pub fn check_bytes(largest: u64) -> u64 {
-    PROCESS + largest.saturating_mul(32) + (16 << 20)
+/// What `phonglab check` holds at its peak for `count` submissions, the largest `largest`
+/// bytes: the process's own part ([`PROCESS`]), that notebook as serde_json's values (at
+/// most 32 bytes a byte of JSON, as [`eval_bytes`] counts), 16 MiB for the rest (the key
+/// worked, the reading buffers) and 192 KiB a submission (its check kept for the report,
+/// the marks and the chart). Measured (`/usr/bin/time -v`): a script's printed text peaks
+/// at 31 MB resident (debug build; 64 MiB counted); a class of 200 notebooks with its
+/// report, chart and marks at 86 MB (release build, docs/guide.md; 102 MiB counted).
+pub fn check_bytes(count: u64, largest: u64) -> u64 {
+    PROCESS + largest.saturating_mul(32) + (16 << 20) + count.saturating_mul(192 << 10)
 }
 
 /// What `phonglab cost` holds at its peak for a `size` x `size` study of each of the

@@ -754,7 +754,8 @@ fn check_honours_the_memory_budget() {
     let dir = TempDir::new("budget");
     let path = dir.path().join("printed.txt");
     std::fs::write(&path, "vlv =  [0.1 0.2 0.3 0.]\n").unwrap();
-    let out = common::phonglab(&["--lang", "en", "check", "--printed", path.to_str().unwrap(), "--memory-budget", "1K"]);
+    let out =
+        common::phonglab(&["--lang", "en", "check", "--printed", path.to_str().unwrap(), "--memory-budget", "1K"]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("checking one submission of 24 bytes (0.0 MiB) needs about"), "{err}");
