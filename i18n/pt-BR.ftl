@@ -484,6 +484,11 @@ budget-what-render = uma imagem de { $width } x { $height } com { $count ->
     }
 budget-what-window = a janela a { $width } x { $height } pixels
 budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez
+budget-what-check = verificar { $count ->
+    [0] { $count } trabalhos
+    [one] um trabalho de { $largest }
+   *[other] { $count } trabalhos, o maior com { $largest }
+}
 budget-what-cost = o estudo de { $count ->
     [0] { $count } objetos
     [one] um objeto
@@ -998,7 +1003,7 @@ png-reason-damaged = o arquivo está danificado ou incompleto
 png-reason-colours = as cores dele estão gravadas como { $kind }, que o phonglab não lê
 diagnose-wrong-size = { $path } tem { $got } pixels; a imagem desta cena tem { $expected }. Salve o PNG do programa com a opção --png, que desenha a cena nesse tamanho: uma captura de tela de uma janela não é o desenho. (Uma cena desenhada em outro tamanho é verificada com phonglab diagnose --size.)
 diagnose-invisible = Não testados (esta cena não consegue mostrá-los): { $ids }
-diagnose-diff-written = Imagem das diferenças gravada (|A − B| × { $gain }, a maior diferença quase branca): { $path }
+diagnose-diff-written = Imagem das diferenças gravada em { $path }: { $said }
 diagnose-diff-not-png = --diff { $path }: a imagem da diferença é um PNG e o nome dela precisa terminar em .png (o check leria um nome terminado em .ipynb, .py ou .txt como um trabalho de aluno); nada foi escrito.
 diagnose-worst = O pixel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:
 
@@ -1083,6 +1088,7 @@ student-picture-unspun = Verificada com a vista da própria cena, do jeito que o
 student-picture-recheck = Corrigir com esta cena
 student-picture-more = O diagnóstico continua abaixo: role-o com a barra à direita.
 student-picture-difference = Diferença |A − B| × { $gain }
+student-picture-difference-said = A diferença (a terceira imagem): { $said }
 # fix57b
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
 # fixr3

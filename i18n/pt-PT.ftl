@@ -478,6 +478,10 @@ budget-what-render = uma imagem de { $width } x { $height } com { $count ->
     }
 budget-what-window = a janela a { $width } x { $height } píxeis
 budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez
+budget-what-check = verificar { $count ->
+    [one] um trabalho de { $largest }
+   *[other] { $count } trabalhos, o maior com { $largest }
+}
 budget-what-cost = o estudo de { $count ->
     [one] um objeto
    *[other] { $count } objetos
@@ -984,7 +988,7 @@ png-reason-damaged = o ficheiro está danificado ou incompleto
 png-reason-colours = as suas cores estão guardadas como { $kind }, que o phonglab não lê
 diagnose-wrong-size = { $path } tem { $got } píxeis; a imagem desta cena tem { $expected }. Guarde o PNG do programa com a opção --png, que desenha a cena nesse tamanho: uma captura de ecrã de uma janela não é o desenho. (Uma cena desenhada noutro tamanho verifica-se com phonglab diagnose --size.)
 diagnose-invisible = Não experimentados (esta cena não os pode mostrar): { $ids }
-diagnose-diff-written = Imagem das diferenças escrita (|A − B| × { $gain }, a maior diferença quase branca): { $path }
+diagnose-diff-written = Imagem das diferenças escrita em { $path }: { $said }
 diagnose-diff-not-png = --diff { $path }: a imagem da diferença é um PNG e o seu nome tem de terminar em .png (o check leria um nome terminado em .ipynb, .py ou .txt como um trabalho de um aluno); nada foi escrito.
 diagnose-worst = O píxel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:
 
@@ -1068,6 +1072,7 @@ student-picture-unspun = Verificada com a vista da própria cena, tal como o pro
 student-picture-recheck = Corrigir com esta cena
 student-picture-more = O diagnóstico continua abaixo: desloque-o com a barra à direita.
 student-picture-difference = Diferença |A − B| × { $gain }
+student-picture-difference-said = A diferença (a terceira imagem): { $said }
 # fix57b
 check-report-printed-twice = Passos impressos mais de uma vez com valores diferentes (cada impressão foi verificada)
 # fixr3

@@ -51,6 +51,34 @@ fn read_printed(path: &Path) -> Result<Printed> {
     read_printed_text(&text).map_err(|e| anyhow::anyhow!("{}: {e}", crate::io::reasons::shown(path)))
 }
 
+/// Refuses a check past the memory budget (`--memory-budget`, or the default): the
+/// submissions it reads (a folder's notebooks, or the one file), their largest as JSON's
+/// values ([`crate::io::budget::check_bytes`]). The standard input, whose size is not known
+/// before it is read (it is read within its cap, [`crate::io::student_code::MAX_CODE_BYTES`]),
+/// is counted as a submission of no bytes: the process's part and the rest.
+fn within_budget(a: &CheckArgs, folder: Option<&Path>) -> Result<()> {
+    let cap = crate::io::student_code::MAX_CODE_BYTES;
+    let size = |p: &Path| std::fs::symlink_metadata(p).map_or(0, |m| if m.is_file() { m.len().min(cap) } else { 0 });
+    let sizes: Vec<u64> = match (folder, &a.printed, &a.work) {
+        (Some(dir), ..) => std::fs::read_dir(dir)?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| crate::io::student_code::student_code(p) == Some(true))
+            .map(|p| size(&p))
+            .collect(),
+        (None, Some(p), _) if p.as_path() == Path::new("-") => vec![0],
+        (None, Some(p), _) | (None, None, Some(p)) => vec![size(p)],
+        (None, None, None) => Vec::new(),
+    };
+    let largest = sizes.iter().copied().max().unwrap_or(0);
+    let what = t!(
+        "budget-what-check",
+        count = sizes.len() as i64,
+        largest = phonglab_core::mesh::obj::describe_bytes(largest)
+    );
+    crate::io::budget::check(&what, crate::io::budget::check_bytes(sizes.len() as u64, largest))
+        .map_err(anyhow::Error::msg)
+}
+
 /// Runs `phonglab check`: whether the work is right (the exit code, for scripts and
 /// autograders: 0 right, 1 wrong or incomplete; [`super::judged`]); for a class folder,
 /// true once the report is written.
@@ -60,6 +88,7 @@ pub fn run(a: &CheckArgs) -> Result<bool> {
         None => None,
     };
     let folder = a.work.as_ref().filter(|w| w.is_dir());
+    within_budget(a, folder.map(PathBuf::as_path))?;
     // A flag that does not apply is refused, never silently ignored.
     if folder.is_some() && a.printed.is_some() {
         anyhow::bail!(t!("check-printed-with-folder"));

@@ -19,7 +19,7 @@ use phonglab_core::study::check::said::{input_names, printed_again};
 use phonglab_core::study::check::{Check, Overall, check};
 
 use crate::io::student_code::read_notebook;
-use crate::io::work_output::{Kind, MARKS_HEADER};
+use crate::io::work_output::{Kind, marks_header, marks_separator};
 
 /// Writes the class's output `path` of this `kind` by [`crate::io::work_output`]'s rule
 /// (`dir`: the folder checked).
@@ -344,22 +344,30 @@ fn printed_twice_section(marked: &[Marked]) -> String {
     out
 }
 
-/// The marks as CSV: file, verdict (`right`, `wrong`, `incomplete`, `unread`), first
-/// wrong step, the causes in the teacher's words (for incomplete work, why: the steps
-/// not printed, the first named), and their ids for machines (text fields neutralised).
+/// The marks as CSV, separated as the teacher's spreadsheet reads it ([`marks_separator`]):
+/// file, verdict in the teacher's words, first wrong step, the causes in the teacher's
+/// words (for incomplete work, why: the steps not printed, the first named), their ids and
+/// the verdict's id for machines (`right`, `wrong`, `incomplete`, `unread`); text fields
+/// neutralised (never run as a formula).
 pub fn marks_csv(marked: &[Marked]) -> String {
     let f = escape::csv::text_field;
-    let mut out = format!("{MARKS_HEADER}\n");
+    let sep = marks_separator();
+    let mut out = format!("{}\n", marks_header(sep));
     for m in marked {
-        let (verdict, first, why, ids) = match &m.check {
-            Err(e) => ("unread".to_string(), String::new(), e.clone(), String::new()),
-            Ok(c) if c.right() => ("right".to_string(), String::new(), String::new(), String::new()),
+        let (id, first, why, ids) = match &m.check {
+            Err(e) => ("unread", String::new(), e.clone(), String::new()),
+            Ok(c) if c.right() => ("right", String::new(), String::new(), String::new()),
             Ok(c) => {
                 let ids = c.causes.iter().map(|k| k.info.id).collect::<Vec<_>>().join(" ");
-                (c.overall().id().to_string(), first_wrong(c), causes(c), ids)
+                (c.overall().id(), first_wrong(c), causes(c), ids)
             }
         };
-        out.push_str(&format!("{},{},{},{},{}\n", f(&m.name), f(&verdict), f(&first), f(&why), f(&ids)));
+        let word = match &m.check {
+            Err(_) => t!("check-verdict-word-unread"),
+            Ok(c) => verdict_word(c),
+        };
+        let row = [f(&m.name), f(&word), f(&first), f(&why), f(&ids), f(id)];
+        out.push_str(&format!("{}\n", row.join(&sep.to_string())));
     }
     out
 }

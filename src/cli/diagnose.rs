@@ -1,7 +1,7 @@
 //! `phonglab diagnose`: a student's picture of a scene, compared with the right picture and
 //! with each picture mistake's ([`phonglab_core::teach::diagnose`]): the verdict, the
-//! closest mistake with its score, a difference image and the probe's numbers at the pixel
-//! that differs most.
+//! closest mistake with its score, a difference image (the places the findings name boxed
+//! on it) and the probe's numbers at the pixel that differs most.
 
 use std::path::{Path, PathBuf};
 
@@ -11,7 +11,7 @@ use clap::Args;
 use phonglab_core::teach::diagnose::{
     Diagnosis, Drawing, Shape, Tried, Verdict, diagnose, drawings_at_most, listed, said, said::Said,
 };
-use phonglab_core::teach::picture_match::difference_image;
+use phonglab_core::teach::picture_match::{difference_image, draw_boxes};
 use phonglab_core::{PowFn, probe, probe_report};
 
 use super::render::ShadedInput;
@@ -52,7 +52,9 @@ fn right_drawing(a: &DiagnoseArgs, outputs: &[&Path]) -> Result<Drawing> {
         frame: None,
         correct: Vec::new(),
     };
-    let loaded = input.load(outputs)?;
+    // Its whole need is checked below, once: the render's share alone would be refused
+    // first with a budget too small for the rest ("1M: needs 5M", then "5M: needs 26M").
+    let loaded = input.load_unbudgeted(outputs)?;
     let job = loaded.job();
     let (vertices, triangles) = (job.mesh.positions.len() as u64, job.mesh.triangle_count() as u64);
     let mut drawing = Drawing::of(&job);
@@ -107,10 +109,13 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
     let image = crate::io::student_png::read(&a.image, size).map_err(anyhow::Error::msg)?;
     let d = diagnose(&right, &image, size)?;
     let is_right = matches!(d.verdict, Verdict::Right);
-    let (difference, gain) = difference_image(&d.picture, &image);
+    // The places the findings name, boxed on it.
+    let boxes = Said::of(&d).boxes();
+    let mut difference = difference_image(&d.picture, &image);
+    draw_boxes(&mut difference.rgba, size, &boxes);
     if let Some(diff) = &a.diff {
         let signed = Kind::Difference.png_text();
-        let png = crate::io::image::encode_png_signed(size, size, &difference, signed)?;
+        let png = crate::io::image::encode_png_signed(size, size, &difference.rgba, signed)?;
         crate::io::work_output::write(diff, Kind::Difference, None, &png).map_err(anyhow::Error::msg)?;
     }
     let worst = (d.right.worst_levels > 0).then_some(d.right.worst);
@@ -133,7 +138,8 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
         out.push(t!("diagnose-invisible", ids = listed(&hidden)));
     }
     if let Some(diff) = &a.diff {
-        out.push(t!("diagnose-diff-written", path = crate::io::reasons::shown(diff), gain = gain.to_string()));
+        let said = said::difference_said(&difference, boxes.len());
+        out.push(t!("diagnose-diff-written", path = crate::io::reasons::shown(diff), said = said));
     }
     if let Some(p) = worst {
         // Where (0, 0) is, once: the findings say it when they name pixels already.
@@ -185,7 +191,12 @@ fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>)
         let mut j = json!({ "id": s.id() });
         match s {
             Shape::OtherOutline(share) => j["share"] = json!(share),
-            Shape::Region(r) => j["region"] = json!({ "pixels": r.pixels, "x": r.centre.0, "y": r.centre.1 }),
+            Shape::Region(r) => {
+                j["region"] = json!({
+                    "pixels": r.pixels, "x": r.centre.0, "y": r.centre.1,
+                    "from": [r.from.0, r.from.1], "to": [r.to.0, r.to.1],
+                });
+            }
             Shape::Marks(m) => {
                 j["marks"] = json!({ "pixels": m.pixels, "from": [m.from.0, m.from.1], "to": [m.to.0, m.to.1] });
             }

@@ -164,6 +164,15 @@ impl ShadedInput {
     /// Reads the scene and builds its mesh; refuses `outputs` that are the scene's own mesh
     /// and a picture past the memory budget.
     pub fn load(&self, outputs: &[&Path]) -> Result<Loaded> {
+        let loaded = self.load_unbudgeted(outputs)?;
+        within_budget(&loaded.job(), self.size)?;
+        Ok(loaded)
+    }
+
+    /// [`ShadedInput::load`] without the render's memory budget: for a command that draws
+    /// more than one picture and checks its whole need itself, once (`diagnose`), so that
+    /// its refusal says all it needs rather than the first picture's share.
+    pub fn load_unbudgeted(&self, outputs: &[&Path]) -> Result<Loaded> {
         use phonglab_core::mesh::{sphere, teapot};
         use phonglab_core::{Document, ObjectKind, Shading};
         let (object, shading) = (self.object, self.shading);
@@ -244,7 +253,6 @@ impl ShadedInput {
                 inside: doc.view.mesh_inside(),
             }
         };
-        within_budget(&loaded.job(), self.size)?;
         Ok(loaded)
     }
 }

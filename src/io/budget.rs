@@ -181,15 +181,19 @@ pub fn render_bytes(width: u64, height: u64, vertices: u64, triangles: u64) -> u
 }
 
 /// What `phonglab diagnose` holds at its peak for a `size` x `size` picture of a mesh of
-/// `vertices` and `triangles`: the right drawing's renderer, kept for the probe, and one
-/// mistake's renderer at a time ([`render_bytes`] each), and per pixel the right picture,
-/// the student's picture decoded, a mistake's picture, the coverage masks and the
-/// difference image, with the PNG reader's and writer's rows: 64 bytes a pixel more.
-/// Measured (`/usr/bin/time -f %M`, debug build, worksheet-mview1): 207 MB at 2048, 659 MB
-/// at 4096 (39 bytes a pixel); a heavier scene was seen at 93 bytes a pixel, so 96 are
-/// counted.
+/// `vertices` and `triangles`: the process's own part ([`PROCESS`]: the budget counts the
+/// memory the process really takes), the right drawing's renderer, kept for the probe, and
+/// one mistake's renderer at a time ([`render_bytes`] each), and per pixel the right
+/// picture, the student's picture decoded, a mistake's picture, the coverage masks, the
+/// pictures of the mistakes that may be named (kept to tell which draw the same) and the
+/// difference image, with the PNG reader's and writer's rows: 128 bytes a pixel more.
+/// Measured (`/usr/bin/time -v`, debug build): three-lights, the shipped scene that takes
+/// most, peaks at 49 MiB at 256, 76 MiB at 512 and 187 MiB at 1024 pixels (39 MiB and 148
+/// bytes a pixel); spotlight at 72 MiB, phong-demo at 58 MiB, worksheet-mview1 at 55 MiB
+/// at 512. This counts 48 MiB and 160 bytes a pixel: 88 MiB at 512. (It counted 96 bytes a
+/// pixel and not the process: a run given the 26M it asked for peaked at 52 MB.)
 pub fn diagnose_bytes(size: u64, vertices: u64, triangles: u64) -> u64 {
-    2 * render_bytes(size, size, vertices, triangles) + size * size * 64
+    PROCESS + 2 * render_bytes(size, size, vertices, triangles) + size * size * 128
 }
 
 /// What `eval` holds while it lights a case file whose largest case is `largest_case`
@@ -198,6 +202,17 @@ pub fn diagnose_bytes(size: u64, vertices: u64, triangles: u64) -> u64 {
 /// can double), the ids, and 16 MiB for the rest (the reading buffers, one result).
 pub fn eval_bytes(largest_case: u64) -> u64 {
     largest_case.saturating_mul(32) + (16 << 20)
+}
+
+/// What `phonglab check` holds at its peak for `count` submissions, the largest `largest`
+/// bytes: the process's own part ([`PROCESS`]), that notebook as serde_json's values (at
+/// most 32 bytes a byte of JSON, as [`eval_bytes`] counts), 16 MiB for the rest (the key
+/// worked, the reading buffers) and 192 KiB a submission (its check kept for the report,
+/// the marks and the chart). Measured (`/usr/bin/time -v`): a script's printed text peaks
+/// at 31 MB resident (debug build; 64 MiB counted); a class of 200 notebooks with its
+/// report, chart and marks at 86 MB (release build, docs/guide.md; 102 MiB counted).
+pub fn check_bytes(count: u64, largest: u64) -> u64 {
+    PROCESS + largest.saturating_mul(32) + (16 << 20) + count.saturating_mul(192 << 10)
 }
 
 /// What `phonglab cost` holds at its peak for a `size` x `size` study of each of the

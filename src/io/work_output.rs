@@ -35,8 +35,29 @@ pub enum Kind {
     Difference,
 }
 
-/// The marks' first line, the header of `check FOLDER --csv`.
-pub const MARKS_HEADER: &str = "file,verdict,first_wrong,causes,cause_ids";
+/// The marks' columns, their header's names (`check FOLDER --csv`): `verdict` in the
+/// teacher's words, `verdict_id` the same for machines (`right`, `wrong`, `incomplete`,
+/// `unread`), joined by the teacher's separator ([`marks_separator`]).
+pub const MARKS_COLUMNS: [&str; 6] = ["file", "verdict", "first_wrong", "causes", "cause_ids", "verdict_id"];
+
+/// The header of marks written before `verdict` was in the teacher's words (it held the
+/// id): still phonglab's own, replaced by a run again.
+const MARKS_HEADER_BEFORE: &str = "file,verdict,first_wrong,causes,cause_ids";
+
+/// The marks' separator in the language set: `,` in English, `;` in Portuguese, as a
+/// spreadsheet in that language reads a CSV opened with a double click (its decimal mark
+/// is the comma). Moodle's grade import takes either, chosen on its form.
+pub fn marks_separator() -> char {
+    match phonglab_core::locale::current().lang {
+        phonglab_core::locale::Lang::En => ',',
+        _ => ';',
+    }
+}
+
+/// The marks' header, its columns joined by `separator`.
+pub fn marks_header(separator: char) -> String {
+    MARKS_COLUMNS.join(&separator.to_string())
+}
 
 /// The most bytes read of a file at an output's name to know whether phonglab wrote it.
 const HEAD_BYTES: u64 = 4096;
@@ -85,7 +106,10 @@ impl Kind {
                 let title = crate::locale::tr_in(lang, "check-report-title", &[]);
                 first_line() == format!("# {}", phonglab_core::escape::markdown::text(&title))
             }),
-            Kind::Marks => first_line() == MARKS_HEADER,
+            Kind::Marks => {
+                let line = first_line();
+                line == marks_header(',') || line == marks_header(';') || line == MARKS_HEADER_BEFORE
+            }
             Kind::Chart | Kind::Difference => self.png_text().is_some_and(|text| png_says(head, text)),
         }
     }
@@ -216,7 +240,9 @@ mod tests {
         assert_eq!(crate::io::image::read_png(&dir.join("d.png")).unwrap(), (4, 4, pixels.to_vec()));
         // The text after the pixels, or cut short, is not phonglab's.
         assert!(!Kind::Difference.is_own(&diff[..30]));
-        assert!(Kind::Marks.is_own(format!("{MARKS_HEADER}\r\na,right,,,\n").as_bytes()));
+        assert!(Kind::Marks.is_own(format!("{}\r\na,right,,,,right\n", marks_header(',')).as_bytes()));
+        assert!(Kind::Marks.is_own(format!("{}\na;certo;;;;right\n", marks_header(';')).as_bytes()));
+        assert!(Kind::Marks.is_own(b"file,verdict,first_wrong,causes,cause_ids\na,right,,,\n"), "an earlier run's");
         assert!(!Kind::Marks.is_own(b"file,verdict\n"));
         for lang in phonglab_core::locale::Lang::ALL {
             let title = crate::locale::tr_in(lang, "check-report-title", &[]);
@@ -229,7 +255,8 @@ mod tests {
                 let report = crate::cli::check_class::markdown(&[], &[], "r.png", None);
                 assert!(Kind::Report.is_own(report.as_bytes()), "{lang:?}: {report}");
                 assert!(Kind::Marks.is_own(crate::cli::check_class::marks_csv(&[]).as_bytes()));
-                assert!(!Kind::Marks.is_own(report.as_bytes()) && !Kind::Report.is_own(MARKS_HEADER.as_bytes()));
+                assert!(!Kind::Marks.is_own(report.as_bytes()));
+                assert!(!Kind::Report.is_own(marks_header(marks_separator()).as_bytes()));
             });
         }
     }

@@ -695,13 +695,16 @@ fn a_class_with_hostile_names_gets_a_report_and_marks_that_keep_them_as_data() {
     for line in &lines[1..] {
         assert!(!line.starts_with(['=', '+', '-', '@']) && !line.starts_with("\"="), "{line}");
     }
-    assert!(lines[0] == "file,verdict,first_wrong,causes,cause_ids", "{marks}");
+    // A Portuguese spreadsheet's separator, the verdict in the teacher's words beside the
+    // causes, its id last for machines.
+    assert!(lines[0] == "file;verdict;first_wrong;causes;cause_ids;verdict_id", "{marks}");
     assert!(
-        marks.contains("\"'=HYPERLINK(\"\"http:x\"\")|ana.ipynb\",wrong,vlv,vlv ao contrário: da luz para o vértice em vez do vértice para a luz,vlv-reversed"),
+        marks.contains("\"'=HYPERLINK(\"\"http:x\"\")|ana.ipynb\";errado;vlv;vlv ao contrário: da luz para o vértice em vez do vértice para a luz;vlv-reversed;wrong\n"),
         "{marks}"
     );
-    assert!(marks.contains("'-2+3 [link](x) `b`.ipynb,right,,,\n"), "{marks}");
-    assert!(marks.contains("not run.ipynb,unread,"), "{marks}");
+    assert!(marks.contains("'-2+3 [link](x) `b`.ipynb;certo;;;;right\n"), "{marks}");
+    assert!(marks.contains("not run.ipynb;não lido;"), "{marks}");
+    assert!(lines[1..].iter().all(|l| l.ends_with(";wrong") || l.ends_with(";right") || l.ends_with(";unread")));
     let png = std::fs::read(out_dir.path().join("report.png")).unwrap();
     assert!(png.starts_with(b"\x89PNG"));
     // A report asked to go over a submission is refused, and the submission is kept.
@@ -744,6 +747,31 @@ fn printed_text_with_no_step_is_not_right() {
     assert!(text.starts_with("scene: the worksheet's"), "{text}");
 }
 
+/// `--memory-budget` is honoured by check (it was ignored: `--memory-budget 1K` checked as
+/// if not given): past it, the need and the budget that lets it run, nothing checked.
+#[test]
+fn check_honours_the_memory_budget() {
+    let dir = TempDir::new("budget");
+    let path = dir.path().join("printed.txt");
+    std::fs::write(&path, "vlv =  [0.1 0.2 0.3 0.]\n").unwrap();
+    let out =
+        common::phonglab(&["--lang", "en", "check", "--printed", path.to_str().unwrap(), "--memory-budget", "1K"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("checking one submission of 24 bytes (0.0 MiB) needs about"), "{err}");
+    assert!(out.stdout.is_empty(), "nothing checked");
+    let asked = err.split("needs --memory-budget ").nth(1).and_then(|r| r.split_whitespace().next()).expect("{err}");
+    let out = common::phonglab(&["check", "--printed", path.to_str().unwrap(), "--memory-budget", asked]);
+    assert_ne!(out.status.code(), Some(2), "{asked}: {}", String::from_utf8_lossy(&out.stderr));
+    // A class folder: its notebooks counted, the largest named.
+    let class = TempDir::new("budget-class");
+    std::fs::write(class.path().join("a.ipynb"), "{}").unwrap();
+    std::fs::write(class.path().join("b.ipynb"), "x".repeat(3000)).unwrap();
+    let out = common::phonglab(&["--lang", "en", "check", class.path().to_str().unwrap(), "--memory-budget", "1K"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("checking 2 submissions, the largest 3") && err.contains("bytes (0.0 MiB) needs"), "{err}");
+}
+
 /// pt-PT speaks to the student in one register across check and diagnose (the formal,
 /// as the rest of the app: "o seu", "a sua imagem"), and pt-BR with "você".
 #[test]
@@ -782,9 +810,9 @@ fn a_link_in_a_class_folder_is_not_read_and_named_a_link() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let marks = std::fs::read_to_string(&csv).unwrap();
     assert!(!marks.contains("SECRET-42") && !marks.contains("root:"), "{marks}");
-    assert!(marks.contains("\nlink.ipynb,unread,,a link (a submission must be"), "{marks}");
-    assert!(marks.contains("\npasswd.ipynb,unread,,a link (a submission must be"), "{marks}");
-    assert!(marks.contains("\nown.ipynb,unread,") && !marks.contains("own.ipynb,unread,,a link"), "{marks}");
+    assert!(marks.contains("\nlink.ipynb,not read,,a link (a submission must be"), "{marks}");
+    assert!(marks.contains("\npasswd.ipynb,not read,,a link (a submission must be"), "{marks}");
+    assert!(marks.contains("\nown.ipynb,not read,") && !marks.contains("own.ipynb,not read,,a link"), "{marks}");
 }
 
 #[test]
@@ -1049,8 +1077,8 @@ fn a_given_changed_in_place_is_refused_and_a_fifo_or_folder_is_named() {
         let out = common::phonglab(&["check", class.to_str().unwrap(), "--csv", csv.to_str().unwrap()]);
         assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
         let marks = std::fs::read_to_string(&csv).unwrap();
-        assert!(marks.contains("dir.ipynb,unread,,a folder"), "{marks}");
-        assert!(marks.contains("fifo.ipynb,unread,,not a regular file"), "{marks}");
+        assert!(marks.contains("dir.ipynb,not read,,a folder"), "{marks}");
+        assert!(marks.contains("fifo.ipynb,not read,,not a regular file"), "{marks}");
         assert!(!marks.contains("a link"), "{marks}");
     }
 }

@@ -443,6 +443,26 @@ fn the_memory_estimate_covers_every_drawing_and_picture_it_holds() {
     assert!(!err.contains("PNG"), "{err}");
 }
 
+/// A budget too small is told the whole need at once: `--memory-budget 1M` suggested 5M
+/// (the right picture's render), and 5M then suggested 26M; the run given what it asks runs.
+/// And a refusal says so before the picture is read.
+#[test]
+fn a_budget_too_small_is_told_all_the_run_needs_at_once() {
+    let dir = scratch("budget-once");
+    let scene = write(&dir, "scene.toml", &spotlight());
+    let image = dir.join("right.png");
+    let o = phonglab(&["render", "--scene", scene.to_str().unwrap(), "-o", image.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let args = ["--lang", "en", "diagnose", "--scene", scene.to_str().unwrap(), "--image", image.to_str().unwrap()];
+    let o = phonglab(&[&args[..], &["--memory-budget", "1M"]].concat());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("comparing a 512 x 512 picture with"), "the whole run's need first: {err}");
+    let asked = err.split("needs --memory-budget ").nth(1).and_then(|r| r.split_whitespace().next()).expect("{err}");
+    let o = phonglab(&[&args[..], &["--memory-budget", asked]].concat());
+    assert_eq!(o.status.code(), Some(0), "{asked}: {}", String::from_utf8_lossy(&o.stderr));
+}
+
 /// The spot's cutoff given in radians: nothing of the light reaches the object and many
 /// causes draw that picture. The report says so first, names the most common cause, the
 /// others in one line with each light in brackets; "Not tried" lists each id once and
@@ -477,6 +497,35 @@ fn a_light_that_reaches_nothing_is_said_first_and_the_lists_keep_each_light_with
     // The JSON's causes are as they were: the light left out among the same picture's.
     let v = diagnose_json(&right, &image);
     assert!(v["same_picture"].as_array().unwrap().iter().any(|c| c["id"] == "light-left-out"), "{v:#}");
+}
+
+#[test]
+fn a_difference_of_two_levels_is_said_as_drawn_grey_not_near_white() {
+    // The right picture with red 2 levels more everywhere: × 64 draws it at 128, grey; the
+    // caption said "the largest difference near white".
+    let dir = scratch("tiny-diff");
+    let scene = write(&dir, "scene.toml", &spotlight());
+    let drawn = dir.join("drawn.png");
+    let size = SIZE.to_string();
+    let o = phonglab(&["render", "--scene", scene.to_str().unwrap(), "--size", &size, "-o", drawn.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (_, _, mut rgba) = phonglab::io::image::read_png(&drawn).unwrap();
+    for p in rgba.chunks_mut(4) {
+        p[0] = p[0].min(253) + 2;
+    }
+    let image = dir.join("student.png");
+    phonglab::io::image::write_png(&image, SIZE, SIZE, &rgba).unwrap();
+    let diff = dir.join("diff.png");
+    let args = ["--lang", "en", "diagnose", "--scene", scene.to_str().unwrap(), "--image", image.to_str().unwrap()];
+    let o = phonglab(&[&args[..], &["--size", &size, "--diff", diff.to_str().unwrap()]].concat());
+    let text = String::from_utf8_lossy(&o.stdout);
+    let (_, _, d) = phonglab::io::image::read_png(&diff).unwrap();
+    // Its brightest channel, a box's magenta left out.
+    let brightest = d.chunks(4).filter(|p| p[..3] != [255, 0, 255]).map(|p| p[0].max(p[1]).max(p[2])).max().unwrap();
+    assert_eq!(brightest, 128, "{text}");
+    assert!(text.contains(&format!("the largest difference here, 2 levels, is drawn at {brightest}/255")), "{text}");
+    assert!(text.contains("× 64") && text.contains("from a difference of 4 levels on"), "{text}");
+    assert!(!text.contains("near white"), "{text}");
 }
 
 #[test]
@@ -613,7 +662,16 @@ fn a_spot_exponent_a_little_off_or_lines_drawn_over_the_teapot_are_not_right() {
     assert!(marks["pixels"].as_u64().unwrap() >= 48, "{marks:#}");
     assert_eq!((marks["from"][1].as_u64(), marks["to"][1].as_u64()), (Some(270), Some(270)), "{marks:#}");
     let (said, _) = diagnose_at_512(&scene, &lined, &["--lang", "en"]);
-    assert!(said.contains("Thin marks of") && said.contains(", 270) to ("), "{said}");
+    assert!(said.contains("Unexplained: thin marks of") && said.contains(", 270) to ("), "{said}");
+    // The marks are boxed on the difference image: a dashed outline 2 pixels outside them.
+    let diff = dir.join("lined-diff.png");
+    let (said, _) = diagnose_at_512(&scene, &lined, &["--lang", "en", "--diff", diff.to_str().unwrap()]);
+    assert!(said.contains("A dashed magenta box marks the place the diagnosis names"), "{said}");
+    let (_, _, d) = phonglab::io::image::read_png(&diff).unwrap();
+    let boxed = |x: usize, y: usize| d[(y * 512 + x) * 4..(y * 512 + x) * 4 + 3] == [255, 0, 255];
+    let (x0, x1) = (marks["from"][0].as_u64().unwrap() as usize, marks["to"][0].as_u64().unwrap() as usize);
+    assert!(boxed(x0 - 2, 268) && boxed(x0 - 2, 272) && boxed(x1 + 2, 270), "no box around the marks");
+    assert!(!boxed(x0 + 10, 270), "the marks themselves are left as they differ");
 }
 
 #[test]

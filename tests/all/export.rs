@@ -157,3 +157,19 @@ fn the_export_menu_copies_each_kind_of_code_and_a_dropped_notebook_opens_as_the_
     assert_eq!(s.files.path, dir.join("aluno.toml").display().to_string());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A shipped scene's name is English in its file; what phonglab writes from it says it in
+/// the language set: a Portuguese notebook said "Cena: **the worksheet, mview1**".
+#[test]
+fn a_shipped_scene_s_name_is_written_in_the_language_set() {
+    let dir = temp_dir("names");
+    let scene = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/worksheet-mview1.toml");
+    let (nb, py) = (dir.join("nb.ipynb"), dir.join("p.py"));
+    let s = |p: &std::path::Path| p.to_str().unwrap().to_owned();
+    phonglab(&["--lang", "pt-PT", "export", "--scene", &s(&scene), "--to", "notebook", "-o", &s(&nb)]);
+    phonglab(&["--lang", "pt-BR", "export", "--scene", &s(&scene), "--to", "pyopengl", "-o", &s(&py)]);
+    let nb = std::fs::read_to_string(&nb).unwrap();
+    assert!(nb.contains("Cena: **a ficha, mview1**") && !nb.contains("the worksheet"), "{nb}");
+    let py = std::fs::read_to_string(&py).unwrap();
+    assert!(py.contains("a lista, mview1") && !py.contains("the worksheet"), "{py}");
+}

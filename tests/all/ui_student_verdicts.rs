@@ -121,12 +121,20 @@ fn a_spinning_scene_is_checked_at_its_own_view_as_the_command_line_checks_it() {
 fn every_pictures_verdict_starts_with_its_word_and_ends_with_what_to_do() {
     let words = [("en", "Unexplained: "), ("pt-PT", "Não explicada: "), ("pt-BR", "Não explicada: ")];
     for (lang, word) in words {
+        // The word is put before each finding in one place (the core's said.rs, whose tests
+        // say each shape's line); the findings end with what to do.
+        assert!(message(lang, "diagnose-unexplained-said").starts_with(word), "{lang}");
         for id in
             ["diagnose-offset-darker", "diagnose-offset-lighter", "diagnose-levels-darker", "diagnose-levels-lighter"]
         {
             let m = message(lang, id);
-            assert!(m.starts_with(word), "{lang} {id}: {m}");
+            assert!(!m.contains(word.trim_end()), "{lang} {id}: the word twice: {m}");
             assert!(m.contains("glLight*/glMaterial*") || m.contains("--png"), "{lang} {id}: no what to do: {m}");
+        }
+        for id in ["diagnose-region-differs", "diagnose-marks-differ"] {
+            let m = message(lang, id);
+            let last = m.rsplit(". ").next().unwrap();
+            assert!(["Check ", "Verifique ", "Confira "].iter().any(|w| last.starts_with(w)), "{lang} {id}: {m}");
         }
         // The levels explain it as well as a mistake: no claim that none is there.
         let levels = message(lang, "diagnose-levels-darker");
@@ -194,4 +202,35 @@ fn coordinates_say_where_0_0_is_once_and_keep_each_pair_on_one_line() {
     assert_eq!(out.matches(where_.as_str()).count(), 1, "{out}");
     let worst = out.find("The pixel that differs most").expect("the worst pixel");
     assert!(out.find(where_.as_str()).unwrap() < worst, "{out}");
+}
+
+/// The difference image is said as drawn under the diagnosis (the gain, from how many
+/// levels a channel is at full strength, the level its largest difference is drawn at),
+/// and framed: mostly black, it vanished into the dark theme.
+#[test]
+fn the_difference_is_said_as_drawn_and_framed_on_the_dark_theme() {
+    let dir = TempDir::new("framed");
+    let (_, doc) = shipped("phong-demo.toml");
+    let path = dir.0.join("m05.png");
+    picture_with(&doc, &path, "viewer-swapped");
+    let mut h = harness(1280.0, 720.0);
+    h.state_mut().load(doc.clone(), "phong-demo");
+    h.run_steps(2);
+    phonglab::app::shell::student::check_path(h.state_mut(), &path);
+    h.run_steps(2);
+    let p = h.state().compare.student.as_ref().unwrap_or_else(|| panic!("{:?}", h.state().message));
+    let lines = p.lines();
+    let said = lines.last().unwrap();
+    let gain = format!("× {}: black where the two pictures agree", p.gain);
+    assert!(said.starts_with("The difference (the third picture): each channel's |A − B| ") && said.contains(&gain));
+    assert!(said.contains("is drawn at ") && !said.contains("near white"), "{said}");
+    assert!(h.query_by_label_contains("The difference (the third picture)").is_some());
+    // The frame shows against the dark panel and against the black of the difference.
+    let dark = egui::Visuals::dark();
+    let frame = phonglab::app::panels::student_picture::picture_frame(&dark).color;
+    let apart = |a: egui::Color32, b: egui::Color32| {
+        [a.r().abs_diff(b.r()), a.g().abs_diff(b.g()), a.b().abs_diff(b.b())].into_iter().max().unwrap()
+    };
+    assert!(apart(frame, egui::Color32::BLACK) >= 60, "{frame:?}");
+    assert!(apart(frame, dark.panel_fill) >= 60, "{frame:?} on {:?}", dark.panel_fill);
 }

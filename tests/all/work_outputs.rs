@@ -77,7 +77,9 @@ fn picture(scene: &Path, out: &Path) {
 /// The files of the class as the marks list them, in order.
 fn listed(csv: &Path) -> Vec<String> {
     let text = std::fs::read_to_string(csv).unwrap();
-    text.lines().skip(1).map(|l| l.split(',').next().unwrap().to_string()).collect()
+    // The teacher's separator: `;` in Portuguese, `,` in English, as the header says.
+    let sep = if text.starts_with("file;") { ';' } else { ',' };
+    text.lines().skip(1).map(|l| l.split(sep).next().unwrap().to_string()).collect()
 }
 
 #[test]

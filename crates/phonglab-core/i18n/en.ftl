@@ -748,14 +748,14 @@ diagnose-rescale-for-normalize = GL_RESCALE_NORMAL enabled where GL_NORMALIZE is
 diagnose-same-picture = These causes draw the same picture, so it cannot tell them apart (the most common first): { $ids }. Check which one the program holds.
 diagnose-same-picture-fitted = These causes draw the same picture, so it cannot tell them apart (the most common first, a changed value before a value fitted from the picture): { $ids }. Check which one the program holds.
 diagnose-light-unseen = Nothing of light { $light } (GL_LIGHT{ $light }) reaches the object: the picture is the scene lit without it.
-diagnose-nothing-drawn = Nothing of the object is drawn: the picture is only the background. Check the draw call (glutSolidTeapot, gluSphere…) and that it runs, and the camera (gluLookAt, gluPerspective): the object may be behind it or outside its view.
-diagnose-outline-differs = The object's outline is not this scene's ({ $share } of it differs, beyond a pixel): is this the picture of this scene? Check --scene, and the program's object and camera.
-diagnose-region-differs = A region of { $pixels } pixels around ({ $x }, { $y }) differs from the right picture, although the right picture explains { $score } of the object's pixels: something is drawn over the object there, or that part of it is wrong.
-diagnose-offset-darker = Unexplained: the { $pixels } pixels of the object from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 }) are evenly darker than in the right picture, by { $levels } levels on average (noise, a lossy saving or a pixel's shift leave less than { $least }), although the right picture explains { $score } of the object's pixels: something is painted over the object there, or its light or material is a little off. Check what the program draws after the object, and compare its glLight*/glMaterial* values with the scene's.
-diagnose-offset-lighter = Unexplained: the { $pixels } pixels of the object from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 }) are evenly lighter than in the right picture, by { $levels } levels on average (noise, a lossy saving or a pixel's shift leave less than { $least }), although the right picture explains { $score } of the object's pixels: something is painted over the object there, or its light or material is a little off. Check what the program draws after the object, and compare its glLight*/glMaterial* values with the scene's.
-diagnose-marks-differ = Thin marks of { $pixels } pixels, from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 }), differ from the right picture, although the right picture explains { $score } of the object's pixels: lines or marks are drawn over the object there.
-diagnose-levels-darker = Unexplained: the whole picture is { $levels } levels darker on the mean than the right one, and the right picture with its levels so changed explains it as well as any mistake does ({ $score } of the object's pixels). A change of the saved picture's gamma, brightness or colour profile does this, and a mistake in the lighting may hide under it: save the program's PNG unchanged (with its --png option) and check it again.
-diagnose-levels-lighter = Unexplained: the whole picture is { $levels } levels lighter on the mean than the right one, and the right picture with its levels so changed explains it as well as any mistake does ({ $score } of the object's pixels). A change of the saved picture's gamma, brightness or colour profile does this, and a mistake in the lighting may hide under it: save the program's PNG unchanged (with its --png option) and check it again.
+diagnose-nothing-drawn = nothing of the object is drawn: the picture is only the background. Check the draw call (glutSolidTeapot, gluSphere…) and that it runs, and the camera (gluLookAt, gluPerspective): the object may be behind it or outside its view.
+diagnose-outline-differs = the object's outline is not this scene's ({ $share } of it differs, beyond a pixel): is this the picture of this scene? Check --scene, and the program's object and camera.
+diagnose-region-differs = a region of { $pixels } pixels around ({ $x }, { $y }) differs from the right picture, although the right picture explains { $score } of the object's pixels: something is drawn over the object there, or that part of it is wrong. Check what the program draws after the object, and the lighting of that part (its normals, its material).
+diagnose-offset-darker = the { $pixels } pixels of the object from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 }) are evenly darker than in the right picture, by { $levels } levels on average (noise, a lossy saving or a pixel's shift leave less than { $least }), although the right picture explains { $score } of the object's pixels: something is painted over the object there, or its light or material is a little off. Check what the program draws after the object, and compare its glLight*/glMaterial* values with the scene's.
+diagnose-offset-lighter = the { $pixels } pixels of the object from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 }) are evenly lighter than in the right picture, by { $levels } levels on average (noise, a lossy saving or a pixel's shift leave less than { $least }), although the right picture explains { $score } of the object's pixels: something is painted over the object there, or its light or material is a little off. Check what the program draws after the object, and compare its glLight*/glMaterial* values with the scene's.
+diagnose-marks-differ = thin marks of { $pixels } pixels, from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 }), differ from the right picture, although the right picture explains { $score } of the object's pixels: lines or marks are drawn over the object there. Check what the program draws after the object (text, axes, a cursor), and save its PNG before anything is drawn on it.
+diagnose-levels-darker = the whole picture is { $levels } levels darker on the mean than the right one, and the right picture with its levels so changed explains it as well as any mistake does ({ $score } of the object's pixels). A change of the saved picture's gamma, brightness or colour profile does this, and a mistake in the lighting may hide under it: save the program's PNG unchanged (with its --png option) and check it again.
+diagnose-levels-lighter = the whole picture is { $levels } levels lighter on the mean than the right one, and the right picture with its levels so changed explains it as well as any mistake does ({ $score } of the object's pixels). A change of the saved picture's gamma, brightness or colour profile does this, and a mistake in the lighting may hide under it: save the program's PNG unchanged (with its --png option) and check it again.
 diagnose-footprint = This mistake changes the right picture by at most { $most } levels; by more than { $tolerance } levels, past a pixel's shift, only in { $pixels } pixels: { $groups }. That is too few for the share to show it; there your picture is the mistake's: it is { $mistake } levels from the mistake's picture on average, and { $right } from the right one.
 diagnose-footprint-group = { $count } from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } elsewhere
@@ -764,6 +764,17 @@ diagnose-verdict-right-lossy = Right, as saved lossily (JPEG): the right picture
 diagnose-verdict-right-within = Right within what a picture can tell: the right picture explains { $score } of the object's pixels (a pixel's shift and { $tolerance } levels allowed), but inside the object your picture differs from it by up to { $most } levels, { $pixels } pixels by more than { $rounding }. A mistake that changes the picture by no more than that (a shininess or a colour a little off) looks the same: this verdict cannot rule it out. The program's numbers can: check the values the notebook prints with phonglab check, or compare the program's glLight*/glMaterial* values with the scene's.
 diagnose-verdict-right = Right: the right picture explains { $score } of the object's pixels.
 diagnose-verdict-wrong = Wrong. The cause: { $cause } ({ $id }); the picture with that mistake explains { $score } of the object's pixels, the right picture { $right }.
+diagnose-verdict-wrong-or = Wrong. The cause: { $cause } ({ $id }) or { $other } ({ $other-id }){ $more ->
+        [0] {""}
+        [one] , or one more listed below
+       *[other] , or one of { $more } more listed below
+    }: the picture cannot tell which; each of these mistakes explains { $score } of the object's pixels, the right picture { $right }.
+diagnose-unexplained-said = Unexplained: { $finding }
+diagnose-difference-said = each channel's |A − B| × { $gain }: black where the two pictures agree, full strength (255) from a difference of { $full } levels on; the largest difference here, { $largest } levels, is drawn at { $drawn }/255{ $boxes ->
+        [0] .
+        [one] . A dashed magenta box marks the place the diagnosis names.
+       *[other] . Dashed magenta boxes mark the { $boxes } places the diagnosis names.
+    }
 diagnose-also = It also explains the picture: { $cause } ({ $id }), { $score }.
 diagnose-verdict-unexplained = No mistake phonglab knows explains this picture: the right picture explains { $right } of the object's pixels. The closest mistake, not named as the cause ({ $id }, { $score }): { $cause }.
 diagnose-verdict-unexplained-none = No mistake phonglab knows explains this picture: the right picture explains { $right } of the object's pixels.
@@ -860,10 +871,11 @@ check-run-stopped = not checked: the run stopped with an error before the end: {
 check-nothing-compared = not checked: nothing it printed is a step of the worksheet; print each value as the worksheet does, print("vlv = ", vlv)
 check-unreadable-steps = not checked whole: these steps were printed with values that are not numbers as NumPy or Python prints them ({ $names }); print each value alone
 check-missing-steps = not checked: the notebook holds no value for { $names }: a cell was skipped or stopped with an error. Run every cell (Jupyter: Kernel → Restart & Run All), then this one
-check-incomplete = incomplete: the worksheet asks for { $count ->
-        [one] a step
-       *[other] { $count } steps
-    } this work does not print, the first { $first }: { $names }. Run every cell (Jupyter: Restart & Run All, in the Kernel menu), print each step as the worksheet does (print("vlv = ", vlv)), and check it again
+check-incomplete = incomplete: { $steps }
+check-not-printed = the worksheet asks for { $count ->
+        [one] a step this work does not print: { $names }
+       *[other] { $count } steps this work does not print, the first { $first }: { $names }
+    }. Run every cell (Jupyter: Restart & Run All, in the Kernel menu), print each step as the worksheet does (print("vlv = ", vlv)), and check it again
 check-stale-outputs = not checked whole: the outputs are not from one run in order (a cell numbered [{ $later }] below one numbered [{ $earlier }]: a cell was run again, or out of order). Run every cell again (Jupyter: Restart & Run All, in the Kernel menu), save, and check it again
 check-after-error = printed after the error, so by an earlier run (Run All stops at an error), and not checked: { $names }
 # fix57b

@@ -752,14 +752,14 @@ diagnose-rescale-for-normalize = GL_RESCALE_NORMAL ativado onde é necessário G
 diagnose-same-picture = Estas causas desenham a mesma imagem, então não dá para distingui-las por ela (as mais comuns primeiro): { $ids }. Confira qual delas está no programa.
 diagnose-same-picture-fitted = Estas causas desenham a mesma imagem, então não dá para distingui-las por ela (as mais comuns primeiro, um valor alterado antes de um valor ajustado à imagem): { $ids }. Confira qual delas está no programa.
 diagnose-light-unseen = Nada da luz { $light } (GL_LIGHT{ $light }) chega ao objeto: a imagem é a cena iluminada sem ela.
-diagnose-nothing-drawn = Nada do objeto está desenhado: a imagem é só o fundo. Verifique a chamada que o desenha (glutSolidTeapot, gluSphere…) e se ela é executada, e a câmera (gluLookAt, gluPerspective): o objeto pode estar atrás dela ou fora do seu campo de visão.
-diagnose-outline-differs = O contorno do objeto não é o desta cena ({ $share } dele difere, além de um pixel): esta é a imagem desta cena? Verifique --scene, e o objeto e a câmera do programa.
-diagnose-region-differs = Uma região de { $pixels } pixels em torno de ({ $x }, { $y }) difere da imagem certa, embora a imagem certa explique { $score } dos pixels do objeto: há algo desenhado sobre o objeto ali, ou essa parte dele está errada.
-diagnose-offset-darker = Não explicada: os { $pixels } pixels do objeto de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }) estão uniformemente mais escuros do que na imagem certa, { $levels } níveis em média (o ruído, um salvamento com perdas ou um pixel de deslocamento deixam menos de { $least }), embora a imagem certa explique { $score } dos pixels do objeto: algo foi pintado sobre o objeto ali, ou a luz ou o material dele estão um pouco errados. Verifique o que o programa desenha depois do objeto e compare os valores de glLight*/glMaterial* do programa com os da cena.
-diagnose-offset-lighter = Não explicada: os { $pixels } pixels do objeto de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }) estão uniformemente mais claros do que na imagem certa, { $levels } níveis em média (o ruído, um salvamento com perdas ou um pixel de deslocamento deixam menos de { $least }), embora a imagem certa explique { $score } dos pixels do objeto: algo foi pintado sobre o objeto ali, ou a luz ou o material dele estão um pouco errados. Verifique o que o programa desenha depois do objeto e compare os valores de glLight*/glMaterial* do programa com os da cena.
-diagnose-marks-differ = Marcas finas de { $pixels } pixels, de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }), diferem da imagem certa, embora a imagem certa explique { $score } dos pixels do objeto: há linhas ou marcas desenhadas sobre o objeto ali.
-diagnose-levels-darker = Não explicada: a imagem inteira está, em média, { $levels } níveis mais escura que a certa, e a imagem certa com os níveis assim mudados a explica tão bem quanto qualquer erro ({ $score } dos pixels do objeto). Uma mudança do gama, do brilho ou do perfil de cor da imagem salva faz isso, e um erro na iluminação pode se esconder por baixo: salve o PNG do programa sem alterá-lo (com a opção --png) e verifique-o de novo.
-diagnose-levels-lighter = Não explicada: a imagem inteira está, em média, { $levels } níveis mais clara que a certa, e a imagem certa com os níveis assim mudados a explica tão bem quanto qualquer erro ({ $score } dos pixels do objeto). Uma mudança do gama, do brilho ou do perfil de cor da imagem salva faz isso, e um erro na iluminação pode se esconder por baixo: salve o PNG do programa sem alterá-lo (com a opção --png) e verifique-o de novo.
+diagnose-nothing-drawn = nada do objeto está desenhado: a imagem é só o fundo. Verifique a chamada que o desenha (glutSolidTeapot, gluSphere…) e se ela é executada, e a câmera (gluLookAt, gluPerspective): o objeto pode estar atrás dela ou fora do seu campo de visão.
+diagnose-outline-differs = o contorno do objeto não é o desta cena ({ $share } dele difere, além de um pixel): esta é a imagem desta cena? Verifique --scene, e o objeto e a câmera do programa.
+diagnose-region-differs = uma região de { $pixels } pixels em torno de ({ $x }, { $y }) difere da imagem certa, embora a imagem certa explique { $score } dos pixels do objeto: há algo desenhado sobre o objeto ali, ou essa parte dele está errada. Confira o que o programa desenha depois do objeto, e a iluminação dessa parte (as normais, o material).
+diagnose-offset-darker = os { $pixels } pixels do objeto de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }) estão uniformemente mais escuros do que na imagem certa, { $levels } níveis em média (o ruído, uma imagem salva com perdas ou um pixel de deslocamento deixam menos de { $least }), embora a imagem certa explique { $score } dos pixels do objeto: algo foi pintado sobre o objeto ali, ou a luz ou o material dele estão um pouco errados. Verifique o que o programa desenha depois do objeto e compare os valores de glLight*/glMaterial* do programa com os da cena.
+diagnose-offset-lighter = os { $pixels } pixels do objeto de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }) estão uniformemente mais claros do que na imagem certa, { $levels } níveis em média (o ruído, uma imagem salva com perdas ou um pixel de deslocamento deixam menos de { $least }), embora a imagem certa explique { $score } dos pixels do objeto: algo foi pintado sobre o objeto ali, ou a luz ou o material dele estão um pouco errados. Verifique o que o programa desenha depois do objeto e compare os valores de glLight*/glMaterial* do programa com os da cena.
+diagnose-marks-differ = marcas finas de { $pixels } pixels, de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 }), diferem da imagem certa, embora a imagem certa explique { $score } dos pixels do objeto: há linhas ou marcas desenhadas sobre o objeto ali. Confira o que o programa desenha depois do objeto (texto, eixos, um cursor), e salve o PNG dele antes de desenhar algo por cima.
+diagnose-levels-darker = a imagem inteira está, em média, { $levels } níveis mais escura que a certa, e a imagem certa com os níveis assim mudados a explica tão bem quanto qualquer erro ({ $score } dos pixels do objeto). Uma mudança do gama, do brilho ou do perfil de cor da imagem salva faz isso, e um erro na iluminação pode se esconder por baixo: salve o PNG do programa sem alterá-lo (com a opção --png) e verifique-o de novo.
+diagnose-levels-lighter = a imagem inteira está, em média, { $levels } níveis mais clara que a certa, e a imagem certa com os níveis assim mudados a explica tão bem quanto qualquer erro ({ $score } dos pixels do objeto). Uma mudança do gama, do brilho ou do perfil de cor da imagem salva faz isso, e um erro na iluminação pode se esconder por baixo: salve o PNG do programa sem alterá-lo (com a opção --png) e verifique-o de novo.
 diagnose-footprint = Esse erro muda a imagem certa em no máximo { $most } níveis; em mais de { $tolerance } níveis, além do deslocamento de um pixel, só em { $pixels } pixels: { $groups }. São poucos demais para a porcentagem mostrá-lo; ali a sua imagem é a do erro: ela está, em média, a { $mistake } níveis da imagem com o erro e a { $right } da imagem certa.
 diagnose-footprint-group = { $count } de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } em outros lugares
@@ -768,6 +768,17 @@ diagnose-verdict-right-lossy = Certa, do jeito que foi salva com perdas (JPEG): 
 diagnose-verdict-right-within = Certa, até onde uma imagem permite dizer: a imagem certa explica { $score } dos pixels do objeto (com um pixel de deslocamento e { $tolerance } níveis de tolerância), mas dentro do objeto a sua imagem difere dela em até { $most } níveis, { $pixels } pixels em mais de { $rounding }. Um erro que não mude a imagem mais do que isso (um brilho ou uma cor um pouco diferentes) tem a mesma aparência: este veredito não o descarta. Os números do programa descartam: verifique os valores que o notebook imprime com o phonglab check, ou compare os valores de glLight*/glMaterial* do programa com os da cena.
 diagnose-verdict-right = Certa: a imagem certa explica { $score } dos pixels do objeto.
 diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos pixels do objeto, a imagem certa { $right }.
+diagnose-verdict-wrong-or = Errada. A causa: { $cause } ({ $id }) ou { $other } ({ $other-id }){ $more ->
+        [0] {""}
+        [one] , ou mais uma, listada abaixo
+       *[other] , ou uma de mais { $more }, listadas abaixo
+    }: a imagem não permite dizer qual; cada um desses erros explica { $score } dos pixels do objeto, a imagem certa { $right }.
+diagnose-unexplained-said = Não explicada: { $finding }
+diagnose-difference-said = |A − B| de cada canal × { $gain }: preto onde as duas imagens coincidem, intensidade máxima (255) a partir de uma diferença de { $full } níveis; a maior diferença aqui, { $largest } níveis, é desenhada em { $drawn }/255{ $boxes ->
+        [0] .
+        [one] . Uma caixa tracejada em magenta marca o lugar que o diagnóstico aponta.
+       *[other] . Caixas tracejadas em magenta marcam os { $boxes } lugares que o diagnóstico aponta.
+    }
 diagnose-also = Também explica a imagem: { $cause } ({ $id }), { $score }.
 diagnose-verdict-unexplained = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos pixels do objeto. O erro mais próximo, que não é apontado como a causa ({ $id }, { $score }): { $cause }.
 diagnose-verdict-unexplained-none = Nenhum erro que o phonglab conheça explica esta imagem: a imagem certa explica { $right } dos pixels do objeto.
@@ -864,11 +875,12 @@ check-run-stopped = não verificado: a execução parou com um erro antes do fim
 check-nothing-compared = não verificado: nada do que você imprimiu é um passo da lista; imprima cada valor como a lista faz, print("vlv = ", vlv)
 check-unreadable-steps = não verificado por inteiro: estes passos foram impressos com valores que não são números como o NumPy ou o Python os imprimem ({ $names }); imprima cada valor sozinho
 check-missing-steps = não verificado: o notebook não tem valor para { $names }: uma célula não foi executada ou parou com um erro. Execute todas as células (Jupyter: Kernel → Restart & Run All) e depois esta
-check-incomplete = incompleto: a lista pede { $count ->
-        [0] nenhum passo
-        [one] um passo
-       *[other] { $count } passos
-    } que este trabalho não imprime, o primeiro { $first }: { $names }. Execute todas as células (Jupyter: Restart & Run All, no menu Kernel), imprima cada passo como a lista faz (print("vlv = ", vlv)) e verifique de novo
+check-incomplete = incompleto: { $steps }
+check-not-printed = a lista pede { $count ->
+        [0] nenhum passo que este trabalho não imprima
+        [one] um passo que este trabalho não imprime: { $names }
+       *[other] { $count } passos que este trabalho não imprime, o primeiro { $first }: { $names }
+    }. Execute todas as células (Jupyter: Restart & Run All, no menu Kernel), imprima cada passo como a lista faz (print("vlv = ", vlv)) e verifique de novo
 check-stale-outputs = não verificado por inteiro: as saídas não são de uma única execução, em ordem (uma célula numerada [{ $later }] abaixo de uma numerada [{ $earlier }]: uma célula foi executada de novo, ou fora de ordem). Execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel), salve e verifique de novo
 check-after-error = impresso depois do erro, portanto por uma execução anterior (o Run All para em um erro), e não verificado: { $names }
 # fix57b

@@ -1,11 +1,12 @@
 //! A student's picture checked, in Compare: A the right picture of the scene shown, B the
-//! student's, and their difference ([`difference_image`]), above them the diagnosis of
-//! [`phonglab_core::teach::diagnose`] in words (the verdict, the closest cause, its score).
+//! student's, and their difference ([`difference_image`], the places the diagnosis names
+//! boxed on it), above them the diagnosis of [`phonglab_core::teach::diagnose`] in words
+//! (the verdict, the closest cause, its score) and what the difference image shows.
 
 use egui::{RichText, Ui};
 use phonglab_core::teach::diagnose::Diagnosis;
-use phonglab_core::teach::diagnose::said::Said;
-use phonglab_core::teach::picture_match::difference_image;
+use phonglab_core::teach::diagnose::said::{Said, difference_said};
+use phonglab_core::teach::picture_match::{Difference, difference_image, draw_boxes};
 
 use phonglab_core::Document;
 use phonglab_core::raster::shaded::ShadedSetup;
@@ -28,8 +29,11 @@ pub struct StudentPicture {
     pictures: [Vec<u8>; 3],
     /// Their textures, once made.
     textures: Option<[egui::TextureHandle; 3]>,
-    /// The gain the difference is shown at (its largest near white).
+    /// The gain the difference is shown at.
     pub gain: u32,
+    /// The difference image's numbers (its pixels are in `pictures`) and the boxes drawn on
+    /// it, said under the diagnosis ([`difference_said`]).
+    difference: (Difference, usize),
     /// The right picture's setup it was diagnosed against ([`picture_setup`]).
     checked: ShadedSetup,
     /// Whether the window had spun the view: the picture was checked at the scene's own
@@ -71,17 +75,22 @@ impl StudentPicture {
         doc: &Document,
         unspun: bool,
     ) -> StudentPicture {
-        let (diff, gain) = difference_image(&d.picture, &image);
+        let said = Said::of(d);
+        let mut difference = difference_image(&d.picture, &image);
+        let boxes = said.boxes();
+        draw_boxes(&mut difference.rgba, size, &boxes);
+        let diff = std::mem::take(&mut difference.rgba);
         StudentPicture {
             file,
             size,
             verdict: d.verdict.name(),
-            said: Said::of(d),
+            said,
             pictures: [d.picture.clone(), image, diff],
             textures: None,
             checked: picture_setup(doc),
             unspun,
-            gain,
+            gain: difference.gain,
+            difference: (difference, boxes.len()),
         }
     }
 
@@ -108,6 +117,8 @@ impl StudentPicture {
         if self.unspun {
             lines.push(t!("student-picture-unspun"));
         }
+        let (d, boxes) = &self.difference;
+        lines.push(t!("student-picture-difference-said", said = difference_said(d, *boxes)));
         lines
     }
 }
@@ -195,7 +206,10 @@ pub fn student_picture_ui(
             .map(|k| {
                 let label = cols[k].label(RichText::new(&titles[k]).strong());
                 let image = egui::Image::new((textures[k].id(), egui::vec2(side, side)));
-                cols[k].add(image).labelled_by(label.id).rect
+                let rect = cols[k].add(image).labelled_by(label.id).rect;
+                // Framed, as a picture on the dark theme needs: the difference is mostly black.
+                cols[k].painter().rect_stroke(rect, 0.0, picture_frame(cols[k].visuals()), egui::StrokeKind::Outside);
+                rect
             })
             .collect::<Vec<_>>()
     });
@@ -203,6 +217,12 @@ pub fn student_picture_ui(
         *picture = None;
     }
     rects
+}
+
+/// The frame drawn around each picture: a line in the theme's text colour, which shows on
+/// the panel and on a black picture in either theme.
+pub fn picture_frame(visuals: &egui::Visuals) -> egui::Stroke {
+    egui::Stroke::new(1.0, visuals.widgets.noninteractive.fg_stroke.color)
 }
 
 /// How the diagnosis is shown above the pictures: its text's size, its height, and

@@ -220,7 +220,11 @@ pub fn cells(doc: &Document, key: &Key) -> Vec<Cell> {
     let needs = Needs::of(scene, key);
     let n = needs.lights;
     let mut cells = vec![
-        Cell::Markdown(t!("nb-title", scene = escape::markdown::text(&doc.name), rules = needs.rules.to_string())),
+        Cell::Markdown(t!(
+            "nb-title",
+            scene = escape::markdown::text(&crate::formats::library::localised_name(&doc.name)),
+            rules = needs.rules.to_string()
+        )),
         Cell::Markdown(t!("nb-vertex")),
         Cell::Code("import math as m\nimport numpy as np".into()),
         Cell::Code(format!(

@@ -84,7 +84,7 @@ fn header(doc: &Document, shader: bool) -> Result<String, TemplateError> {
         members.push_str("    ofShader shader;\n");
     }
     HEADER.fill(&[
-        ("title", Fill::Text(t!("of-header-comment", scene = doc.name.clone()))),
+        ("title", Fill::Text(t!("of-header-comment", scene = crate::formats::library::localised_name(&doc.name)))),
         ("members", Fill::Code(members)),
     ])
 }

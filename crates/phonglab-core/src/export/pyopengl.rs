@@ -55,7 +55,14 @@ pub fn program(doc: &Document, key: &Key) -> Result<String, String> {
     let code = |s: String| Fill::Code(s);
     PROGRAM
         .fill(&[
-            ("title", text(t!("py-title", scene = doc.name.clone(), shading = shading_name))),
+            (
+                "title",
+                text(t!(
+                    "py-title",
+                    scene = crate::formats::library::localised_name(&doc.name),
+                    shading = shading_name
+                )),
+            ),
             ("usage", text(t!("py-usage"))),
             ("rules", text(rules.into())),
             ("rules_comment", code(wrapped_comment(&t!("py-rules-comment"), ""))),

@@ -19,7 +19,7 @@
 //! | PDF text | [`pdf::text`] | only characters a font draws |
 //! | the terminal | [`terminal::text`] | no escape sequence, no line break |
 //! | JSON (as `serde_json` wrote it) | [`json::text`] | every control as `\u202e`, C0 included (serde's) |
-//! | a CSV field | [`csv::field`] | controls written `\u{202E}`, quoted where it holds `,` or `"` |
+//! | a CSV field | [`csv::field`] | controls written `\u{202E}`, quoted where it holds `,`, `;` or `"` |
 //! | HTML text or attribute | [`html::text`] | no tag, entity or attribute end; controls written `\u{1B}` |
 //! | Moodle XML text | [`moodle_xml::text`] | as HTML's: entities, no control or non-character XML 1.0 refuses (U+FFFE) |
 //! | Moodle XML CDATA | [`moodle_xml::cdata`] | a section that no `]]>` closes early |
@@ -411,10 +411,11 @@ pub mod json {
 pub mod csv {
     /// One field: control characters written visibly (`\u{202E}`: CSV has no escapes, and
     /// a spreadsheet shows a bidirectional control as reordered text), then quoted, with
-    /// quotes doubled, where it holds a comma or a quote.
+    /// quotes doubled, where it holds a comma, a semicolon or a quote: a field reads the
+    /// same whichever of the two separators the file uses (a Portuguese spreadsheet's is `;`).
     pub fn field(text: &str) -> String {
         let s = super::visible_controls(text, |_| false);
-        if s.contains([',', '"']) { format!("\"{}\"", s.replace('"', "\"\"")) } else { s }
+        if s.contains([',', ';', '"']) { format!("\"{}\"", s.replace('"', "\"\"")) } else { s }
     }
 
     /// One field of text a person typed (a file's name): as [`field`], but a text that a
@@ -516,6 +517,9 @@ mod tests {
         assert_eq!(serde_json::from_str::<serde_json::Value>(&safe).unwrap(), value, "the values are unchanged");
         assert_eq!(csv::field("a,\u{202e}b\"c"), "\"a,\\u{202E}b\"\"c\"");
         assert_eq!(csv::field("Phong 32"), "Phong 32");
+        // Read the same with either separator: a Portuguese spreadsheet splits on `;`.
+        assert_eq!(csv::field("a; b"), "\"a; b\"");
+        assert_eq!(csv::text_field("=1;2"), "\"'=1;2\"");
         assert!(!csv::field(HOSTILE).chars().any(is_control));
     }
 

@@ -101,22 +101,85 @@ pub fn compare_within(
 /// look like a difference.
 pub const MAX_DIFFERENCE_GAIN: u32 = 64;
 
-/// The difference image of `picture` and `image` (RGBA8, opaque), and the gain it shows
-/// each channel's difference at: black where they agree; elsewhere amplified so that the
-/// largest difference shows near white (`255 / largest`, from 1 to
-/// [`MAX_DIFFERENCE_GAIN`]): a picture at most 6 levels off is shown × 42, not black.
-pub fn difference_image(picture: &[u8], image: &[u8]) -> (Vec<u8>, u32) {
+/// A difference image ([`difference_image`]): its pixels (RGBA8), the gain each channel's
+/// difference is drawn at, and the largest difference (levels, the largest channel) before
+/// the gain.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Difference {
+    /// Its pixels (RGBA8, opaque).
+    pub rgba: Vec<u8>,
+    /// The gain each channel's difference is drawn at.
+    pub gain: u32,
+    /// The largest difference of a channel anywhere, before the gain.
+    pub largest: u8,
+}
+
+impl Difference {
+    /// The level the largest difference is drawn at: `largest × gain`, at most 255. Only
+    /// a difference of at least [`Difference::full_from`] is drawn white (255): a picture
+    /// 2 levels off at most is drawn at 128, grey.
+    pub fn largest_drawn(&self) -> u8 {
+        (u32::from(self.largest) * self.gain).min(255) as u8
+    }
+
+    /// The least difference drawn at full strength (255): 255 / gain, rounded up.
+    pub fn full_from(&self) -> u32 {
+        255u32.div_ceil(self.gain)
+    }
+}
+
+/// The difference image of `picture` and `image` (RGBA8, opaque): black where they agree;
+/// elsewhere each channel's difference amplified by `255 / largest`, from 1 to
+/// [`MAX_DIFFERENCE_GAIN`]: a picture at most 6 levels off is shown × 42 (its largest
+/// difference at 252, near white), one 1 to 3 levels off × 64 (at 64 to 192, grey).
+pub fn difference_image(picture: &[u8], image: &[u8]) -> Difference {
     let pixels = || picture.chunks_exact(4).zip(image.chunks_exact(4));
-    let largest = pixels().map(|(a, b)| u32::from(apart(a, b))).max().unwrap_or(0);
+    let largest = pixels().map(|(a, b)| apart(a, b)).max().unwrap_or(0);
     // Equal pictures: nothing to amplify.
-    let gain = 255u32.checked_div(largest).map_or(1, |g| g.clamp(1, MAX_DIFFERENCE_GAIN));
+    let gain = 255u32.checked_div(u32::from(largest)).map_or(1, |g| g.clamp(1, MAX_DIFFERENCE_GAIN));
     let rgba = pixels()
         .flat_map(|(a, b)| {
             let d = |c: usize| (u32::from(a[c].abs_diff(b[c])) * gain).min(255) as u8;
             [d(0), d(1), d(2), 255]
         })
         .collect();
-    (rgba, gain)
+    Difference { rgba, gain, largest }
+}
+
+/// A box around pixels a diagnosis names: its top-left and bottom-right corners, included
+/// (x from the left, y from the top).
+pub type Boxed = ((usize, usize), (usize, usize));
+
+/// The ink of the boxes [`draw_boxes`] draws: magenta, in dashes (a difference is grey or
+/// one channel's colour, never dashed).
+pub const BOX_INK: [u8; 3] = [255, 0, 255];
+
+/// How far outside a box its outline is drawn, in pixels: the pixels boxed stay seen.
+const BOX_GAP: usize = 2;
+
+/// Draws each box of `boxes` on `rgba` (RGBA8, `size` square) as a dashed outline in
+/// [`BOX_INK`], [`BOX_GAP`] pixels outside it (within the picture): 3 pixels drawn, 2 left.
+pub fn draw_boxes(rgba: &mut [u8], size: usize, boxes: &[Boxed]) {
+    let Some(last) = size.checked_sub(1) else { return };
+    let dashed = |k: usize| k % 5 < 3;
+    for &((x0, y0), (x1, y1)) in boxes {
+        let (left, top) = (x0.saturating_sub(BOX_GAP), y0.saturating_sub(BOX_GAP));
+        let (right, bottom) = ((x1 + BOX_GAP).min(last), (y1 + BOX_GAP).min(last));
+        let mut ink = |x: usize, y: usize| {
+            let i = (y * size + x) * 4;
+            if let Some(p) = rgba.get_mut(i..i + 3) {
+                p.copy_from_slice(&BOX_INK);
+            }
+        };
+        for x in (left..=right).filter(|&x| dashed(x - left)) {
+            ink(x, top);
+            ink(x, bottom);
+        }
+        for y in (top..=bottom).filter(|&y| dashed(y - top)) {
+            ink(left, y);
+            ink(right, y);
+        }
+    }
 }
 
 #[cfg(test)]
@@ -128,15 +191,34 @@ mod tests {
         // Six levels at most: × 42, the largest near white, the agreeing pixel black.
         let a = [100, 100, 100, 255, 50, 50, 50, 255];
         let b = [106, 103, 100, 255, 50, 50, 50, 255];
-        let (d, gain) = difference_image(&a, &b);
-        assert_eq!(gain, 42);
-        assert_eq!(d, vec![252, 126, 0, 255, 0, 0, 0, 255]);
+        let d = difference_image(&a, &b);
+        assert_eq!((d.gain, d.largest, d.largest_drawn(), d.full_from()), (42, 6, 252, 7));
+        assert_eq!(d.rgba, vec![252, 126, 0, 255, 0, 0, 0, 255]);
         // A difference of 200 levels: as it is.
-        let (d, gain) = difference_image(&a, &[255, 100, 100, 255, 50, 50, 250, 255]);
-        assert_eq!((gain, &d[..4]), (1, &[155, 0, 0, 255][..]));
-        // One level (the 8-bit rounding) is not made white; the same pictures stay black.
-        assert_eq!(difference_image(&a, &[101, 100, 100, 255, 50, 50, 50, 255]).1, MAX_DIFFERENCE_GAIN);
-        assert_eq!(difference_image(&a, &a), (vec![0, 0, 0, 255, 0, 0, 0, 255], 1));
+        let d = difference_image(&a, &[255, 100, 100, 255, 50, 50, 250, 255]);
+        assert_eq!((d.gain, &d.rgba[..4]), (1, &[155, 0, 0, 255][..]));
+        // One level (the 8-bit rounding) is not made white: drawn at 64, grey, and only a
+        // difference of 4 levels would be white; the same pictures stay black.
+        let d = difference_image(&a, &[101, 100, 100, 255, 50, 50, 50, 255]);
+        assert_eq!((d.gain, d.largest_drawn(), d.full_from()), (MAX_DIFFERENCE_GAIN, 64, 4));
+        let same = difference_image(&a, &a);
+        assert_eq!((same.rgba, same.gain, same.largest), (vec![0, 0, 0, 255, 0, 0, 0, 255], 1, 0));
+    }
+
+    #[test]
+    fn a_box_is_a_dashed_outline_outside_the_pixels_it_names_and_stays_in_the_picture() {
+        let size = 12;
+        let mut rgba = vec![0u8; size * size * 4];
+        draw_boxes(&mut rgba, size, &[((4, 4), (6, 6)), ((0, 10), (11, 11))]);
+        let inked = |x: usize, y: usize| rgba[(y * size + x) * 4..(y * size + x) * 4 + 3] == BOX_INK;
+        // The first box's outline runs 2 pixels outside it, from (2, 2) to (8, 8), dashed.
+        assert!(inked(2, 2) && inked(3, 2) && inked(4, 2) && !inked(5, 2) && !inked(6, 2) && inked(7, 2));
+        assert!(inked(2, 4) && inked(8, 2) && !inked(8, 5));
+        // The pixels boxed are left as they were.
+        assert!((3..=7).all(|x| (3..=7).all(|y| !inked(x, y))), "inside the outline");
+        // A box at the picture's edge is drawn along the edge, never past it.
+        assert!(inked(0, 8) && inked(11, 8) && inked(0, 11));
+        assert_eq!(rgba.len(), size * size * 4);
     }
 
     #[test]

@@ -159,6 +159,9 @@ fn outputs_after_a_cells_error_are_not_checked_and_any_error_stops_the_run() {
         let words = phonglab_core::study::check::said::words(&c);
         assert!(words.contains("printed after the error, so by an earlier run"), "{words}");
         assert!(words.contains(&format!("the first {}", after[0])), "{words}");
+        // One verdict: "not checked" (the run stopped), the steps not printed said beside it.
+        let verdicts = words.lines().filter(|l| l.starts_with("not checked") || l.starts_with("incomplete")).count();
+        assert_eq!(verdicts, 1, "{words}");
     }
 }
 

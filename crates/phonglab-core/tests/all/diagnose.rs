@@ -601,7 +601,7 @@ fn a_small_solid_square_painted_on_the_right_picture_is_not_right() {
     // Solid: the 8 x 8 inside the square (its rim's neighbours match), around its centre.
     assert_eq!(r.pixels, 64, "{r:?}");
     assert!(r.centre.0.abs_diff(cx) <= 1 && r.centre.1.abs_diff(cy) <= 1, "{r:?} ({cx}, {cy})");
-    assert!(d.shape.expect("a shape").words(d.right.score).contains(&format!("({}, {})", r.centre.0, r.centre.1)));
+    assert!(d.lines()[0].contains(&format!("({}, {})", r.centre.0, r.centre.1)));
     // A 3 x 3 square is no solid region (within what a pixel's shift may leave), but its
     // 9 pixels, far off, move the mean of its square of 16 by more than noise or a JPEG
     // saving does: an even offset, not right.
@@ -784,6 +784,6 @@ fn white_lines_of_a_pixel_drawn_across_the_right_picture_are_marks_not_right() {
     // Where the lines lie on the object (the teapot's rim may hide their ends).
     assert!(m.from.0 >= cx - 50 && m.to.0 < cx + 50 && m.from.1 >= cy - 30 && m.to.1 < cy + 30, "{m:?}");
     assert!(m.from.0 < cx && m.to.0 > cx && m.from.1 < cy && m.to.1 > cy, "{m:?} ({cx}, {cy})");
-    let words = found.shape.expect("a shape").words(found.right.score);
+    let words = found.lines()[0].clone();
     assert!(words.contains(&format!("({}, {})", m.from.0, m.from.1)), "{words}");
 }

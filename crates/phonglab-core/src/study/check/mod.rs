@@ -215,10 +215,15 @@ impl Unchecked {
             Unchecked::Unreadable(names) => crate::t!("check-unreadable-steps", names = names.clone()),
             Unchecked::Missing(names) => crate::t!("check-missing-steps", names = names.clone()),
             Unchecked::Stale(earlier, later) => crate::t!("check-stale-outputs", earlier = *earlier, later = *later),
-            Unchecked::NotPrinted(count, first, names) => {
-                crate::t!("check-incomplete", count = *count, first = first.clone(), names = names.clone())
-            }
+            Unchecked::NotPrinted(..) => crate::t!("check-incomplete", steps = self.steps_words().unwrap_or_default()),
         }
+    }
+
+    /// The steps not printed in words, without the verdict's word ("incomplete"): what is
+    /// said of them beside another reason, which gives the verdict (one verdict a check).
+    pub fn steps_words(&self) -> Option<String> {
+        let Unchecked::NotPrinted(count, first, names) = self else { return None };
+        Some(crate::t!("check-not-printed", count = *count, first = first.clone(), names = names.clone()))
     }
 }
 
@@ -552,4 +557,27 @@ fn differing_inputs(assignment: &Scene, own: &Scene) -> Vec<String> {
     }
     out.dedup();
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Unchecked;
+    use crate::locale::{Lang, Locale, with_locale};
+
+    #[test]
+    fn one_step_not_printed_is_named_once() {
+        let one = Unchecked::NotPrinted(1, "Ispec".into(), "Ispec".into());
+        for (lang, said) in [
+            (Lang::En, "a step this work does not print: Ispec."),
+            (Lang::PtPt, "um passo que este trabalho não imprime: Ispec."),
+            (Lang::PtBr, "um passo que este trabalho não imprime: Ispec."),
+        ] {
+            let words = with_locale(Locale::of(lang), || one.words());
+            assert!(words.contains(said), "{lang:?}: {words}");
+            assert_eq!(words.matches("Ispec").count(), 1, "{lang:?}: {words}");
+        }
+        let two = Unchecked::NotPrinted(2, "Ispec".into(), "Ispec, I".into());
+        let words = with_locale(Locale::of(Lang::PtPt), || two.words());
+        assert!(words.contains("2 passos que este trabalho não imprime, o primeiro Ispec: Ispec, I."), "{words}");
+    }
 }

@@ -83,8 +83,10 @@ pub fn words(c: &Check) -> String {
     if !c.after_error.is_empty() {
         out.push_str(&format!("{}\n", t!("check-after-error", names = c.after_error.join(", "))));
     }
+    // Beside another reason, which gives the verdict, without a verdict's word of its own.
     if let Some(not_printed) = c.not_printed_reason().filter(|n| why.as_ref() != Some(n)) {
-        out.push_str(&format!("{}\n", not_printed.words()));
+        let said = if why.is_some() { not_printed.steps_words() } else { Some(not_printed.words()) };
+        out.push_str(&format!("{}\n", said.unwrap_or_default()));
     }
     for cause in &c.causes {
         // Labelled: the catalogue's formula with the mistake, never the student's own line.

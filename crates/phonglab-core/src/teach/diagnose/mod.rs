@@ -211,56 +211,6 @@ impl Shape {
             Shape::Offset(_) => "offset-differs",
         }
     }
-
-    /// In words, given the right picture's score.
-    pub fn words(&self, right: f64) -> String {
-        use crate::locale::{Arg, tr_args};
-        let percent = |v: f64| Arg::Text(crate::locale::percent(v, 1));
-        match *self {
-            Shape::NothingDrawn => tr_args("diagnose-nothing-drawn", &[]),
-            Shape::OtherOutline(share) => tr_args("diagnose-outline-differs", &[("share", percent(share))]),
-            Shape::Region(r) => tr_args(
-                "diagnose-region-differs",
-                &[
-                    ("pixels", Arg::Text(r.pixels.to_string())),
-                    ("x", Arg::Text(r.centre.0.to_string())),
-                    ("y", Arg::Text(r.centre.1.to_string())),
-                    ("score", percent(right)),
-                ],
-            ),
-            Shape::Marks(m) => tr_args(
-                "diagnose-marks-differ",
-                &[
-                    ("pixels", Arg::Text(m.pixels.to_string())),
-                    ("x0", Arg::Text(m.from.0.to_string())),
-                    ("y0", Arg::Text(m.from.1.to_string())),
-                    ("x1", Arg::Text(m.to.0.to_string())),
-                    ("y1", Arg::Text(m.to.1.to_string())),
-                    ("score", percent(right)),
-                ],
-            ),
-            Shape::Levels(l) => tr_args(
-                if l.shift < 0.0 { "diagnose-levels-darker" } else { "diagnose-levels-lighter" },
-                &[
-                    ("levels", Arg::Text(crate::locale::decimal(&format!("{:.1}", l.shift.abs())))),
-                    ("score", percent(l.matched.score)),
-                ],
-            ),
-            Shape::Offset(o) => tr_args(
-                if o.levels < 0.0 { "diagnose-offset-darker" } else { "diagnose-offset-lighter" },
-                &[
-                    ("pixels", Arg::Text(o.pixels.to_string())),
-                    ("x0", Arg::Text(o.from.0.to_string())),
-                    ("y0", Arg::Text(o.from.1.to_string())),
-                    ("x1", Arg::Text(o.to.0.to_string())),
-                    ("y1", Arg::Text(o.to.1.to_string())),
-                    ("levels", Arg::Text(crate::locale::decimal(&format!("{:.1}", o.levels.abs())))),
-                    ("least", Arg::Text(crate::locale::decimal(&format!("{OFFSET_AT:.1}")))),
-                    ("score", percent(right)),
-                ],
-            ),
-        }
-    }
 }
 
 /// The most pictures [`diagnose`] draws for `right`: the right one and each mistake it

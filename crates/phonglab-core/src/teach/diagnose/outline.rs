@@ -43,6 +43,10 @@ pub struct Region {
     pub pixels: usize,
     /// Its centre (x from the left, y from the top).
     pub centre: (usize, usize),
+    /// The corner of the box around it nearest the top left.
+    pub from: (usize, usize),
+    /// The corner of the box around it nearest the bottom right.
+    pub to: (usize, usize),
 }
 
 /// Thin marks that differ from the right picture: joined pixels, each more than 16 levels
@@ -60,8 +64,6 @@ pub struct Marks {
 /// Joined pixels of a set: how many, their centre and the box around them.
 struct Joined {
     region: Region,
-    from: (usize, usize),
-    to: (usize, usize),
 }
 
 /// Is pixel `p` of `rgba` more than `levels` from `bg` in a channel?
@@ -148,7 +150,8 @@ fn differing(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: 
 pub fn largest_marks(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Option<Marks> {
     let differs = differing(picture, covered, image, bg, size);
     let largest = regions(&differs, size).into_iter().max_by_key(|j| j.region.pixels)?;
-    Some(Marks { pixels: largest.region.pixels, from: largest.from, to: largest.to })
+    let r = largest.region;
+    Some(Marks { pixels: r.pixels, from: r.from, to: r.to })
 }
 
 /// The 8-connected regions of `set` (`size` square).
@@ -177,7 +180,7 @@ fn regions(set: &[bool], size: usize) -> Vec<Joined> {
                 }
             }
         }
-        out.push(Joined { region: Region { pixels, centre: (sum.0 / pixels, sum.1 / pixels) }, from, to });
+        out.push(Joined { region: Region { pixels, centre: (sum.0 / pixels, sum.1 / pixels), from, to } });
     }
     out
 }
@@ -213,7 +216,7 @@ mod tests {
             }
         }
         let r = largest_region(&picture, &covered, &image, [0, 0, 0], size).expect("a region");
-        assert_eq!(r, Region { pixels: 64, centre: (24, 24) });
+        assert_eq!(r, Region { pixels: 64, centre: (24, 24), from: (21, 21), to: (28, 28) });
     }
 
     #[test]

@@ -3,11 +3,14 @@
 //! when it draws them.
 
 use crate::locale::{Arg, tr_args};
-use crate::teach::picture_match::{Match, TOLERANCE};
+use crate::teach::picture_match::{Boxed, Difference, Match, TOLERANCE};
 
 use super::footprint::Footprint;
 use super::within::{ROUNDING, Within};
-use super::{Diagnosis, LOSSY, Shape, Tried, Verdict, most_common_first, picture_shows, same_picture_said};
+use super::{
+    Diagnosis, GROUPS_SAID, LOSSY, OFFSET_AT, Shape, Tried, Verdict, most_common_first, picture_shows,
+    same_picture_said,
+};
 
 /// What a diagnosis found, kept as numbers: the verdict, the right picture's score, the
 /// mistakes named (the closest first; for an unexplained picture the closest tried, if
@@ -87,7 +90,7 @@ impl Said {
             Verdict::Right => vec![self.right_words()],
             Verdict::Wrong => self.wrong_lines(&right),
             Verdict::Unexplained => match (self.shape, self.named.first()) {
-                (Some(s), _) => vec![s.words(self.right)],
+                (Some(s), _) => vec![unexplained(shape_words(&s, self.right))],
                 (None, Some(t)) => {
                     let (cause, id, score) = named(t);
                     let args = [("right", right), ("cause", cause), ("id", id), ("score", score)];
@@ -128,24 +131,136 @@ impl Said {
         }
     }
 
-    /// "Wrong": what a picture that several causes draw shows, the most common named, the
-    /// footprint it rests on, the others that draw it in one line, then the rest.
+    /// "Wrong": what a picture that several causes draw shows, the cause (or the causes
+    /// the picture cannot rank, "X or Y"), the footprint it rests on, the others that draw
+    /// it in one line, then the rest.
     fn wrong_lines(&self, right: &Arg) -> Vec<String> {
         let tie = most_common_first(&self.same);
         let mut out: Vec<String> = picture_shows(&tie).into_iter().collect();
-        let Some(first) = tie.first().or(self.named.first()) else { return out };
+        let tied = self.tied();
+        let Some(first) = tied.first() else { return out };
         let (cause, id, score) = named(first);
-        out.push(tr_args(
-            "diagnose-verdict-wrong",
-            &[("cause", cause), ("id", id), ("score", score), ("right", right.clone())],
-        ));
+        let mut args = vec![("cause", cause), ("id", id), ("score", score), ("right", right.clone())];
+        let said = match tied.get(1) {
+            None => &tied[..1],
+            Some(other) => {
+                let (other_cause, other_id, _) = named(other);
+                let more = (tied.len() - 2) as i64;
+                args.extend([("other", other_cause), ("other-id", other_id), ("more", Arg::Count(more))]);
+                &tied[..2]
+            }
+        };
+        let id = if said.len() == 1 { "diagnose-verdict-wrong" } else { "diagnose-verdict-wrong-or" };
+        out.push(tr_args(id, &args));
         out.extend(self.footprint.as_ref().map(super::footprint_said));
         out.extend(same_picture_said(&self.same));
-        for c in self.named.iter().filter(|c| *c != first && !tie.contains(c)) {
+        for c in self.named.iter().filter(|c| !said.contains(c) && !self.same.contains(c)) {
             let (cause, id, score) = named(c);
             out.push(tr_args("diagnose-also", &[("cause", cause), ("id", id), ("score", score)]));
         }
         out
+    }
+
+    /// The causes "wrong" names as its cause, the most common first: those the picture
+    /// cannot rank (they draw the same picture, or explain the same share of it as the
+    /// report shows it, to 0.1 %, with no footprint to rank them); else the first alone.
+    fn tied(&self) -> Vec<Tried> {
+        if !self.same.is_empty() {
+            return most_common_first(&self.same);
+        }
+        let Some(first) = self.named.first() else { return Vec::new() };
+        if self.footprint.is_some() {
+            return vec![*first];
+        }
+        let shown = |t: &Tried| (t.matched.map_or(0.0, |m| m.score) * 1000.0).round();
+        let tied: Vec<Tried> = self.named.iter().filter(|t| shown(t) == shown(first)).copied().collect();
+        most_common_first(&tied)
+    }
+
+    /// The places the findings name by their pixels, as boxes to draw on the difference
+    /// image ([`crate::teach::picture_match::draw_boxes`]): the region, the marks or the
+    /// offset's square; the footprint's groups said one by one.
+    pub fn boxes(&self) -> Vec<Boxed> {
+        let mut out = Vec::new();
+        match self.shape {
+            Some(Shape::Region(r)) => out.push((r.from, r.to)),
+            Some(Shape::Marks(m)) => out.push((m.from, m.to)),
+            Some(Shape::Offset(o)) => out.push((o.from, o.to)),
+            _ => {}
+        }
+        if self.verdict == Verdict::Wrong
+            && let Some(f) = &self.footprint
+        {
+            out.extend(f.groups.iter().take(GROUPS_SAID).map(|g| (g.from, g.to)));
+        }
+        out
+    }
+}
+
+/// The difference image `d` in words, as drawn with `boxes` boxes on it: its gain, what
+/// black and full strength mean, the level its largest difference is drawn at, and the
+/// boxes. `phonglab diagnose --diff` and the window say it under the image.
+pub fn difference_said(d: &Difference, boxes: usize) -> String {
+    let text = |v: String| Arg::Text(v);
+    tr_args(
+        "diagnose-difference-said",
+        &[
+            ("gain", text(d.gain.to_string())),
+            ("full", text(d.full_from().to_string())),
+            ("largest", text(d.largest.to_string())),
+            ("drawn", text(d.largest_drawn().to_string())),
+            ("boxes", Arg::Count(boxes as i64)),
+        ],
+    )
+}
+
+/// A finding that leaves the picture unexplained, after the verdict's word: the one place
+/// that word is put before a finding ("Unexplained: a region of 64 pixels...").
+fn unexplained(finding: String) -> String {
+    tr_args("diagnose-unexplained-said", &[("finding", Arg::Text(finding))])
+}
+
+/// What the picture's shape `s` shows, in words, given the right picture's score: each
+/// ends with what to check.
+fn shape_words(s: &Shape, right: f64) -> String {
+    let text = |v: String| Arg::Text(v);
+    let at = |name: &'static str, v: usize| (name, Arg::Text(v.to_string()));
+    let levels = |v: f64| Arg::Text(crate::locale::decimal(&format!("{:.1}", v.abs())));
+    match *s {
+        Shape::NothingDrawn => tr_args("diagnose-nothing-drawn", &[]),
+        Shape::OtherOutline(share) => tr_args("diagnose-outline-differs", &[("share", percent(share))]),
+        Shape::Region(r) => tr_args(
+            "diagnose-region-differs",
+            &[at("pixels", r.pixels), at("x", r.centre.0), at("y", r.centre.1), ("score", percent(right))],
+        ),
+        Shape::Marks(m) => tr_args(
+            "diagnose-marks-differ",
+            &[
+                at("pixels", m.pixels),
+                at("x0", m.from.0),
+                at("y0", m.from.1),
+                at("x1", m.to.0),
+                at("y1", m.to.1),
+                ("score", percent(right)),
+            ],
+        ),
+        Shape::Levels(l) => tr_args(
+            if l.shift < 0.0 { "diagnose-levels-darker" } else { "diagnose-levels-lighter" },
+            &[("levels", levels(l.shift)), ("score", percent(l.matched.score))],
+        ),
+        Shape::Offset(o) => tr_args(
+            if o.levels < 0.0 { "diagnose-offset-darker" } else { "diagnose-offset-lighter" },
+            &[
+                at("pixels", o.pixels),
+                at("x0", o.from.0),
+                at("y0", o.from.1),
+                at("x1", o.to.0),
+                at("y1", o.to.1),
+                ("levels", levels(o.levels)),
+                ("least", text(crate::locale::decimal(&format!("{OFFSET_AT:.1}")))),
+                ("score", percent(right)),
+            ],
+        ),
     }
 }
 
@@ -163,5 +278,112 @@ impl Diagnosis {
     /// In words, one finding a line, in the language set now ([`Said::lines`]).
     pub fn lines(&self) -> Vec<String> {
         Said::of(self).lines()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::locale::{Lang, Locale, with_locale};
+    use crate::teach::diagnose::{At, Levels, MISTAKES, Marks, Offset, Region};
+
+    fn matched(score: f64) -> Match {
+        Match { score, pixels: 1000, worst: (0, 0), worst_levels: 0, miss: 0.0 }
+    }
+
+    fn unexplained_with(shape: Shape) -> Said {
+        Said {
+            verdict: Verdict::Unexplained,
+            right: 0.995,
+            named: Vec::new(),
+            same: Vec::new(),
+            shape: Some(shape),
+            lossy: None,
+            footprint: None,
+            within: None,
+        }
+    }
+
+    fn cause(id: &str, score: f64) -> Tried {
+        let mistake = MISTAKES.iter().position(|m| m.id == id).expect(id);
+        Tried { mistake, at: At::default(), matched: Some(matched(score)) }
+    }
+
+    const SHAPES: [Shape; 7] = [
+        Shape::NothingDrawn,
+        Shape::OtherOutline(0.2),
+        Shape::Region(Region { pixels: 64, centre: (24, 24), from: (21, 21), to: (28, 28) }),
+        Shape::Marks(Marks { pixels: 200, from: (160, 270), to: (359, 270) }),
+        Shape::Levels(Levels {
+            shift: -4.0,
+            gamma: None,
+            matched: Match { score: 0.99, pixels: 1000, worst: (0, 0), worst_levels: 0, miss: 0.0 },
+            distance: 1.0,
+        }),
+        Shape::Offset(Offset { levels: -12.0, pixels: 256, from: (240, 240), to: (255, 255) }),
+        Shape::Offset(Offset { levels: 12.0, pixels: 256, from: (240, 240), to: (255, 255) }),
+    ];
+
+    #[test]
+    fn every_shape_s_finding_starts_with_the_verdict_s_word_and_ends_with_what_to_check() {
+        let words = [(Lang::En, "Unexplained: ", "check"), (Lang::PtPt, "Não explicada: ", "verifique")];
+        let words = [words[0], words[1], (Lang::PtBr, "Não explicada: ", "confira")];
+        for (lang, word, check) in words {
+            for shape in SHAPES {
+                let line = with_locale(Locale::of(lang), || unexplained_with(shape).lines()[0].clone());
+                assert!(line.starts_with(word), "{lang:?} {}: {line}", shape.id());
+                assert_eq!(line.matches(word.trim_end()).count(), 1, "{lang:?}: the word once: {line}");
+                let last = line.rsplit(". ").next().unwrap().to_lowercase();
+                let to_do = last.contains(check) || last.contains("verifique") || last.contains("--png");
+                assert!(to_do, "{lang:?} {}: no what to do last: {line}", shape.id());
+            }
+        }
+    }
+
+    #[test]
+    fn causes_that_explain_the_picture_equally_are_said_as_one_or_the_other() {
+        let tie = vec![cause("attenuation-left-out", 0.9951), cause("spot-left-out", 0.9949)];
+        let wrong = |named: Vec<Tried>| Said {
+            verdict: Verdict::Wrong,
+            right: 0.9,
+            named,
+            same: Vec::new(),
+            shape: None,
+            lossy: None,
+            footprint: None,
+            within: None,
+        };
+        let lines = with_locale(Locale::of(Lang::En), || wrong(tie.clone()).lines());
+        let first = &lines[0];
+        assert!(first.starts_with("Wrong. The cause: "), "{lines:?}");
+        assert!(first.contains("(attenuation-left-out) or ") && first.contains("(spot-left-out)"), "{lines:?}");
+        assert!(!lines.iter().any(|l| l.starts_with("It also explains")), "said once: {lines:?}");
+        let pt = with_locale(Locale::of(Lang::PtBr), || wrong(tie.clone()).lines());
+        assert!(pt[0].contains("(attenuation-left-out) ou ") && pt[0].contains("(spot-left-out)"), "{pt:?}");
+        // Three alike: two named, the third counted and listed after.
+        let three = vec![tie[0], tie[1], cause("specular-left-out", 0.995)];
+        let lines = with_locale(Locale::of(Lang::En), || wrong(three).lines());
+        assert!(lines[0].contains(", or one more listed below"), "{lines:?}");
+        assert!(lines[1].starts_with("It also explains the picture: ") && lines[1].contains("(specular-left-out)"));
+        // One clearly ahead (0.1 % shown apart) is the cause alone.
+        let ahead = vec![cause("attenuation-left-out", 0.999), cause("spot-left-out", 0.995)];
+        let lines = with_locale(Locale::of(Lang::En), || wrong(ahead).lines());
+        assert!(!lines[0].contains(" or "), "{lines:?}");
+        assert!(lines[1].starts_with("It also explains the picture: "), "{lines:?}");
+    }
+
+    #[test]
+    fn the_places_named_are_the_boxes_and_the_difference_is_said_as_drawn() {
+        assert_eq!(unexplained_with(SHAPES[2]).boxes(), vec![((21, 21), (28, 28))]);
+        assert_eq!(unexplained_with(SHAPES[3]).boxes(), vec![((160, 270), (359, 270))]);
+        assert!(unexplained_with(SHAPES[4]).boxes().is_empty(), "the whole picture: no box");
+        // Two levels off at most: × 64, drawn at 128 (grey), white only from 4 levels.
+        let d = crate::teach::picture_match::difference_image(&[100, 100, 100, 255], &[102, 100, 100, 255]);
+        let said = with_locale(Locale::of(Lang::En), || difference_said(&d, 1));
+        assert!(said.contains("× 64") && said.contains("2 levels, is drawn at 128/255"), "{said}");
+        assert!(said.contains("from a difference of 4 levels on") && said.contains("A dashed magenta box"), "{said}");
+        assert!(!said.contains("near white"), "{said}");
+        let none = with_locale(Locale::of(Lang::PtPt), || difference_said(&d, 0));
+        assert!(none.ends_with("128/255.") && !none.contains("caixa"), "{none}");
     }
 }
