@@ -15,6 +15,11 @@
 //!    into place, where nothing is (each rename happens or does not);
 //! 6. the old files, the journal and the staging folder are removed.
 //!
+//! Every move and removal of step 5 and 6, of their undo and of the recovery is of the very
+//! file the journal names, checked through the handle that moves or removes it
+//! ([`super::set_journal::move_entry`], [`super::set_journal::remove_entry`]): a link or
+//! another file put at a name meanwhile is left where it is, and the set is undone.
+//!
 //! A failure before the journal decides leaves the old set untouched; a failure after it
 //! (a rename refused) moves everything back, so the folder is as it was. A process killed
 //! at any step leaves either a staging folder whose journal has not decided (the old set
@@ -33,9 +38,9 @@ use std::fmt;
 use std::io;
 use std::path::Path;
 
-use super::atomic_write::{Fault, WriteError, fault, next_step, rename_no_replace, set_steps, temporary_name};
+use super::atomic_write::{Fault, WriteError, fault, next_step, rename_fault, set_steps, temporary_name};
 use super::set_journal::{
-    ASIDE, Entry, Identity, JOURNAL, Journal, STAGING, entry_of, plain_name, stage, write_journal,
+    ASIDE, Entry, Identity, JOURNAL, Journal, STAGING, Took, entry_of, move_entry, plain_name, stage, write_journal,
 };
 
 /// Files that belong together, written by [`write_set`]: names (no folders) and bytes.
@@ -189,7 +194,7 @@ pub fn write_set_held(
         Err(Stop::Killed) => Err(killed(dir)),
         Err(Stop::Moved(e)) => Err(e),
         Err(Stop::Failed(e)) => {
-            let _ = std::fs::remove_dir_all(&staging);
+            super::set_journal::throw_away(&staging);
             Err(e)
         }
     }
@@ -330,12 +335,11 @@ fn stage_and_swap(
     // A clean-up refused now (Windows: an old file another program holds open, sharing its
     // deletion, stays in the staging folder until it lets go) does not fail the run: the new
     // set is in place and recorded, and the journal, kept, lets the next run finish.
-    let cleaned =
-        std::fs::remove_dir_all(staging.join(ASIDE)).and_then(|()| std::fs::remove_file(staging.join(JOURNAL)));
+    let cleaned = super::set_journal::clear_aside(staging, &journal.old);
     step()?;
     let _ = std::fs::remove_dir(staging);
     crate::platform::os::sync_folder(dir);
-    Ok(cleaned.is_err().then(|| staging_left(dir, staging)))
+    Ok((!cleaned).then(|| staging_left(dir, staging)))
 }
 
 /// The note for a staging folder whose clean-up was refused after the new set was placed
@@ -388,16 +392,22 @@ fn old_set(dir: &Path, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Result<
 /// Step 4: the old files aside (into the staging folder's aside folder), the new ones into
 /// place, where nothing is. A refused rename moves everything back (the new files into the
 /// staging folder, so a journal left by a kill during the undo still finds them).
+///
+/// Each file moves only when it is, right then, the file the journal names
+/// ([`super::set_journal::move_entry`], checked through the handle that moves it): an old
+/// file replaced meanwhile (by a link to a file outside the folder, or another file) is left
+/// where it is and the set is undone (issue 59: under Wine a link moved by its name took
+/// the file it named into the aside folder, which was then removed).
 fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
     let aside = staging.join(ASIDE);
-    let mut moved_aside: Vec<&str> = Vec::new();
-    let mut moved_in: Vec<&str> = Vec::new();
-    let undo = |moved_aside: &[&str], moved_in: &[&str]| {
-        for name in moved_in {
-            let _ = std::fs::rename(dir.join(name), staging.join(name));
+    let mut moved_aside: Vec<&Entry> = Vec::new();
+    let mut moved_in: Vec<&Entry> = Vec::new();
+    let undo = |moved_aside: &[&Entry], moved_in: &[&Entry]| {
+        for new in moved_in {
+            let _ = move_entry(&dir.join(&new.name), &staging.join(&new.name), new);
         }
-        for name in moved_aside {
-            let _ = crate::platform::os::rename_no_replace(&aside.join(name), &dir.join(name));
+        for old in moved_aside {
+            let _ = move_entry(&aside.join(&old.name), &dir.join(&old.name), old);
         }
         crate::platform::os::sync_folder(dir);
     };
@@ -405,25 +415,59 @@ fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
         return Err(WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED).into());
     }
     for old in &j.old {
-        if let Err(e) = rename_no_replace(&dir.join(&old.name), &aside.join(&old.name)) {
+        meanwhile(&dir.join(&old.name));
+        let (from, to) = (dir.join(&old.name), aside.join(&old.name));
+        if let Err(e) = counted_move(&from, &to, old) {
             undo(&moved_aside, &moved_in);
-            let e = held_open(e, &dir.join(&old.name));
-            return Err(WriteError::new(&dir.join(&old.name), "write-step-rename", e, UNTOUCHED).into());
+            return Err(WriteError::new(&from, "write-step-rename", e, UNTOUCHED).into());
         }
-        moved_aside.push(&old.name);
+        moved_aside.push(old);
         step()?;
     }
     for new in &j.new {
-        if let Err(e) = rename_no_replace(&staging.join(&new.name), &dir.join(&new.name)) {
+        let (from, to) = (staging.join(&new.name), dir.join(&new.name));
+        if let Err(e) = counted_move(&from, &to, new) {
             undo(&moved_aside, &moved_in);
-            let e = held_open(e, &staging.join(&new.name));
-            return Err(WriteError::new(&dir.join(&new.name), "write-step-rename", e, UNTOUCHED).into());
+            return Err(WriteError::new(&to, "write-step-rename", e, UNTOUCHED).into());
         }
-        moved_in.push(&new.name);
+        moved_in.push(new);
         step()?;
     }
     crate::platform::os::sync_folder(dir);
     Ok(())
+}
+
+/// One move of the swap ([`super::set_journal::move_entry`]), a rename a test may make fail
+/// ([`Fault::OnRename`]): `Err` with why, in words, where the file at `from` is not the one
+/// the journal names (or is gone) or the system refused (another program holds it open).
+fn counted_move(from: &Path, to: &Path, entry: &Entry) -> io::Result<()> {
+    rename_fault()?;
+    match move_entry(from, to, entry) {
+        Ok(Took::Done) => Ok(()),
+        Ok(Took::Absent | Took::Other) => {
+            Err(io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-file-replaced-meanwhile")))
+        }
+        Err(e) => Err(held_open(e, from)),
+    }
+}
+
+/// Tests: what another process does to the folder just before an old file is moved aside
+/// (after the journal decided), set by the tests' `meanwhile_at_aside`.
+#[cfg(test)]
+thread_local! {
+    static MEANWHILE: std::cell::RefCell<Option<Box<dyn FnMut(&Path)>>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Runs the test's [`MEANWHILE`] with the old file about to move aside; nothing otherwise.
+fn meanwhile(old: &Path) {
+    #[cfg(test)]
+    MEANWHILE.with(|m| {
+        if let Some(f) = m.borrow_mut().as_mut() {
+            f(old);
+        }
+    });
+    #[cfg(not(test))]
+    let _ = old;
 }
 
 impl fmt::Display for FileSet {

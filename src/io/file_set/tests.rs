@@ -361,3 +361,102 @@ fn a_clean_up_refused_after_the_set_is_in_place_is_a_note_and_the_next_run_remov
     assert_eq!(listing(&dir), want);
     assert!(!std::fs::read_dir(&dir).unwrap().flatten().any(|e| e.path().is_dir()), "staging folder removed");
 }
+
+/// Runs `f` with `act` done to the folder, as another process would, just before each old
+/// file of a set moves aside (the journal has decided), given that file's path.
+fn meanwhile_at_aside<R>(act: impl FnMut(&Path) + 'static, f: impl FnOnce() -> R) -> R {
+    MEANWHILE.with(|m| *m.borrow_mut() = Some(Box::new(act)));
+    let r = f();
+    MEANWHILE.with(|m| *m.borrow_mut() = None);
+    r
+}
+
+/// A symbolic link at `link` to the file `to` (Windows: `symlink_file`, which Wine makes a
+/// Unix link; `false` on a Windows that refuses it without a privilege).
+fn plant_link(to: &Path, link: &Path) -> bool {
+    #[cfg(unix)]
+    let made = std::os::unix::fs::symlink(to, link);
+    #[cfg(windows)]
+    let made = std::os::windows::fs::symlink_file(to, link);
+    made.is_ok()
+}
+
+/// A file outside the set's folder, of the user's, and a link to it planted at `b.md` of
+/// the old set by another process after the journal decided, before `b.md` moves aside.
+fn swap_b_for_a_link(dir: &Path, outside: &Path) -> Result<Vec<String>, WriteError> {
+    let thesis = outside.join("thesis.txt");
+    meanwhile_at_aside(
+        move |old| {
+            if old.file_name().is_some_and(|n| n == "b.md") {
+                std::fs::remove_file(old).unwrap();
+                assert!(plant_link(&thesis, old), "a link is made");
+            }
+        },
+        || write_set(dir, &new_set(), |n| n.ends_with(".md")),
+    )
+}
+
+/// Issue 59 (the worst hole, reproduced four times under Wine): an old file of the set
+/// replaced by a link to a file outside the folder between the journal's decision and its
+/// move aside. Before, the move by name took the link (Wine: the file it names) into the
+/// aside folder, which was then removed: the file outside was deleted under Wine, the
+/// user's link on Linux. Now the move is checked through the handle that makes it: the link
+/// is left where it is, the set is undone (the old files back in place) and refused in
+/// words, and the file outside is untouched.
+#[test]
+#[cfg(any(unix, windows))]
+fn an_old_file_swapped_for_a_link_during_the_swap_is_left_and_the_set_undone() {
+    let outside = temp_dir("swap-link-outside");
+    std::fs::write(outside.join("thesis.txt"), "mine").unwrap();
+    let dir = temp_dir("swap-link");
+    old_set(&dir);
+    if cfg!(windows) && !plant_link(&outside.join("thesis.txt"), &dir.join("probe")) {
+        eprintln!("no symbolic link can be made here: nothing to test");
+        return;
+    }
+    let _ = std::fs::remove_file(dir.join("probe"));
+    let e = swap_b_for_a_link(&dir, &outside).unwrap_err().to_string();
+    assert!(e.contains("b.md") && e.contains("replaced while phonglab was writing the set"), "{e}");
+    assert_eq!(std::fs::read(outside.join("thesis.txt")).unwrap(), b"mine", "the file outside is untouched");
+    assert_eq!(crate::io::atomic_write::tests::listing(&outside).len(), 1);
+    assert!(crate::platform::links::reached_through_link(&dir.join("b.md")), "the link is left where it was");
+    let files = listing(&dir);
+    let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(names, ["a.md", "b.md", "c.md", "mine.txt"]);
+    assert_eq!(files[0].1, b"old a", "the old a.md, moved aside before b.md, is back");
+    assert_eq!(files[2].1, b"old c, not in the new set");
+    assert!(!std::fs::read_dir(&dir).unwrap().flatten().any(|e| e.path().is_dir()), "no staging folder left");
+}
+
+/// Issue 59: a stopped writer's staging folder, with a link to a file outside the folder
+/// planted in it (or in its aside folder) by another process: the recovery removes only
+/// what phonglab put there, each checked through its handle; the link and the file it
+/// names are left, said, and the set in place is whole. Before, the recovery removed the
+/// staging folder with everything in it (`remove_dir_all`: Wine follows the link).
+#[test]
+#[cfg(any(unix, windows))]
+fn a_link_planted_in_a_stopped_writers_staging_folder_is_left_by_the_recovery() {
+    let belongs = |n: &str| n.ends_with(".md");
+    let outside = temp_dir("recover-link-outside");
+    std::fs::write(outside.join("thesis.txt"), "mine").unwrap();
+    // Stopped with the journal begun (undecided), and with the old files aside (decided).
+    for (n, inner) in [(2, ""), (7, ASIDE)] {
+        let dir = temp_dir("recover-link");
+        old_set(&dir);
+        with_fault(Fault::KilledAtStep(n), || write_set(&dir, &new_set(), belongs)).unwrap_err();
+        let (staging, _) = journal_in(&dir).expect("a journal");
+        if !plant_link(&outside.join("thesis.txt"), &staging.join(inner).join("planted.md")) {
+            eprintln!("no symbolic link can be made here: nothing to test");
+            return;
+        }
+        let notices = recover(&dir).unwrap();
+        assert_eq!(notices.len(), 1, "step {n}: {notices:?}");
+        assert!(notices[0].contains("something phonglab did not put there"), "step {n}: {notices:?}");
+        assert_eq!(std::fs::read(outside.join("thesis.txt")).unwrap(), b"mine", "step {n}");
+        assert!(crate::platform::links::reached_through_link(&staging.join(inner).join("planted.md")), "step {n}");
+        let names: Vec<String> = listing(&dir).into_iter().map(|(n, _)| n).collect();
+        let want: &[&str] =
+            if n == 2 { &["a.md", "b.md", "c.md", "mine.txt"] } else { &["a.md", "b.md", "d.md", "mine.txt"] };
+        assert_eq!(names, want, "step {n}: the old set whole, or the new one");
+    }
+}

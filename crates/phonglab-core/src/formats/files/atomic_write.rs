@@ -217,7 +217,8 @@ pub fn write_new(tmp: &Path, bytes: &[u8]) -> Result<(), (&'static str, io::Erro
 }
 
 /// Counts a rename on this thread; `Err` where a test makes this one fail.
-fn rename_fault() -> io::Result<()> {
+#[doc(hidden)]
+pub fn rename_fault() -> io::Result<()> {
     if let Some(Fault::OnRename(n)) = fault() {
         let k = RENAMES.with(|c| {
             let k = c.get();
