@@ -712,6 +712,7 @@ set-record-not-one = a link, or not a regular file phonglab can have written (a 
 set-waiting-for-lock = waiting: another phonglab is writing into { $dir }; this one goes on when it has finished
 set-staging-left = the new set is whole in { $dir }; phonglab's working folder { $name } in it could not be removed yet (a file in it may still be open in another program): the next run in this folder removes it
 set-left-alone = { $name } in { $dir } was left as it is: { $why }
+set-name-differs-in-case = { $other } is there, a name that differs from the set's { $name } only in case: Windows takes the two for one file, so the set could replace or lose the wrong one. Rename or move { $other }, or choose another folder
 set-file-replaced-meanwhile = it was replaced while phonglab was writing the set (by a link, or a file phonglab did not write): it was left as it is, and nothing of the new set was put in place
 set-why-not-all-own = it holds something phonglab did not put there (a link, a folder or a file): that was left as it is, with the folder. Look at it, and delete it when it is not yours
 set-why-loose-journal = a journal phonglab did not write there (planted, or left by an older phonglab); nothing it names was touched

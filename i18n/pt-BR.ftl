@@ -729,6 +729,7 @@ set-record-not-one = um link, ou algo que não é um arquivo comum que o phongla
 set-waiting-for-lock = aguardando: outro phonglab está gravando em { $dir }; este continua quando ele terminar
 set-staging-left = o novo conjunto está completo em { $dir }; a pasta de trabalho { $name } do phonglab, lá dentro, ainda não pôde ser removida (um arquivo nela pode ainda estar aberto em outro programa): a próxima execução nesta pasta a remove
 set-left-alone = { $name } em { $dir } ficou como estava: { $why }
+set-name-differs-in-case = { $other } está lá, um nome que só difere do { $name } do conjunto em maiúsculas e minúsculas: o Windows toma os dois por um só arquivo, e o conjunto poderia substituir ou perder o errado. Renomeie ou mova { $other }, ou escolha outra pasta
 set-file-replaced-meanwhile = foi substituído enquanto o phonglab gravava o conjunto (por um link, ou um arquivo que o phonglab não gravou): ficou como estava, e nada do novo conjunto foi colocado no lugar
 set-why-not-all-own = contém algo que o phonglab não colocou lá (um link, uma pasta ou um arquivo): isso ficou como estava, com a pasta. Veja-o, e apague-o se não for seu
 set-why-loose-journal = um diário que o phonglab não escreveu ali (colocado por alguém, ou deixado por uma versão antiga do phonglab); nada do que ele nomeia foi tocado

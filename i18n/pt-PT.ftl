@@ -715,6 +715,7 @@ set-record-not-one = uma ligação, ou algo que não é um ficheiro normal que o
 set-waiting-for-lock = à espera: outro phonglab está a escrever em { $dir }; este continua quando ele terminar
 set-staging-left = o novo conjunto está completo em { $dir }; a pasta de trabalho { $name } do phonglab, lá dentro, ainda não pôde ser removida (um ficheiro nela pode estar ainda aberto noutro programa): a próxima execução nesta pasta remove-a
 set-left-alone = { $name } em { $dir } ficou como estava: { $why }
+set-name-differs-in-case = { $other } está lá, um nome que só difere do { $name } do conjunto em maiúsculas e minúsculas: o Windows toma os dois por um só ficheiro, e o conjunto poderia substituir ou perder o errado. Mude o nome de { $other } ou mova-o, ou escolha outra pasta
 set-file-replaced-meanwhile = foi substituído enquanto o phonglab escrevia o conjunto (por uma ligação, ou um ficheiro que o phonglab não escreveu): ficou como estava, e nada do novo conjunto foi posto no lugar
 set-why-not-all-own = contém algo que o phonglab não lá pôs (uma ligação, uma pasta ou um ficheiro): isso ficou como estava, com a pasta. Veja-o, e apague-o se não for seu
 set-why-loose-journal = um diário que o phonglab não escreveu ali (posto por alguém, ou deixado por uma versão antiga do phonglab); nada do que nomeia foi tocado

@@ -40,7 +40,7 @@ use std::path::Path;
 
 use super::atomic_write::{Fault, WriteError, fault, next_step, rename_fault, set_steps, temporary_name};
 use super::set_journal::{
-    ASIDE, Entry, Identity, JOURNAL, Journal, STAGING, Took, entry_of, move_entry, plain_name, stage, write_journal,
+    ASIDE, Entry, Identity, Journal, STAGING, Took, entry_of, move_entry, plain_name, stage, write_journal,
 };
 
 /// Files that belong together, written by [`write_set`]: names (no folders) and bytes.
@@ -77,10 +77,12 @@ fn step() -> Result<(), Killed> {
 enum Stop {
     Failed(WriteError),
     Killed,
-    /// The folder is no longer the one held (moved, or replaced by a link): refused with
-    /// no clean-up, since the staging folder's path now leads elsewhere; the staging folder
-    /// stays, undecided, in the folder held, whose next set throws it away.
-    Moved(WriteError),
+    /// Refused with no clean-up: the folder is no longer the one held (moved, or replaced
+    /// by a link), so the staging folder's path now leads elsewhere (it stays, undecided,
+    /// in the folder held, whose next set throws it away); or an undo could not put every
+    /// old file back (they stay in the staging folder, with the decided journal, for the
+    /// next run).
+    Left(WriteError),
 }
 
 impl From<Killed> for Stop {
@@ -192,7 +194,7 @@ pub fn write_set_held(
     match stage_and_swap(held, &staging, set, &belongs) {
         Ok(left) => Ok(notices.into_iter().chain(left).collect()),
         Err(Stop::Killed) => Err(killed(dir)),
-        Err(Stop::Moved(e)) => Err(e),
+        Err(Stop::Left(e)) => Err(e),
         Err(Stop::Failed(e)) => {
             super::set_journal::throw_away(&staging);
             Err(e)
@@ -271,6 +273,7 @@ fn new_staging(dir: &Path) -> Result<std::path::PathBuf, WriteError> {
 /// something other than a regular file (a link stays a link: a set cannot be swapped in
 /// through one).
 fn refuse_unwritable_names(dir: &Path, set: &FileSet) -> Result<(), WriteError> {
+    refuse_names_differing_in_case(dir, set)?;
     for (name, _) in &set.files {
         let target = dir.join(name);
         if !plain_name(name) {
@@ -281,6 +284,25 @@ fn refuse_unwritable_names(dir: &Path, set: &FileSet) -> Result<(), WriteError> 
             || crate::platform::links::reached_through_link(&target)
         {
             return Err(refused(&target, "write-step-create", crate::t!("write-not-a-regular-file")));
+        }
+    }
+    Ok(())
+}
+
+/// Refuses a set one of whose names is in `dir` under another case too (`Exercise-01.md`
+/// beside `exercise-01.md`): Windows, and Wine, take the two for one file, so a swap could
+/// move or replace the wrong one (issue 59: a failed run under Wine lost phonglab's own
+/// `exercise-01.md` and said "the folder is unchanged"). On every system, since the folder
+/// is opened on the lab's Windows PCs.
+fn refuse_names_differing_in_case(dir: &Path, set: &FileSet) -> Result<(), WriteError> {
+    let Ok(entries) = std::fs::read_dir(dir) else { return Ok(()) };
+    let here: Vec<String> = entries.flatten().filter_map(|e| e.file_name().into_string().ok()).collect();
+    for (name, _) in &set.files {
+        let folded = name.to_lowercase();
+        if let Some(other) = here.iter().find(|h| *h != name && h.to_lowercase() == folded) {
+            use phonglab_core::escape::terminal::text;
+            let why = crate::t!("set-name-differs-in-case", other = text(other), name = text(name));
+            return Err(refused(&dir.join(other), "write-step-name", why));
         }
     }
     Ok(())
@@ -360,7 +382,7 @@ fn refuse_moved_folder(held: &HeldFolder) -> Result<(), Stop> {
         return Ok(());
     }
     let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-replaced"));
-    Err(Stop::Moved(WriteError::new(dir, set_steps::LIST, e, set_steps::KEPT_FOLDER)))
+    Err(Stop::Left(WriteError::new(dir, set_steps::LIST, e, set_steps::KEPT_FOLDER)))
 }
 
 /// The old set in `dir`: every regular file the new one replaces, and every other member
@@ -402,14 +424,26 @@ fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
     let aside = staging.join(ASIDE);
     let mut moved_aside: Vec<&Entry> = Vec::new();
     let mut moved_in: Vec<&Entry> = Vec::new();
+    // Every file moved back: `false` where one could not be (something put at its name).
     let undo = |moved_aside: &[&Entry], moved_in: &[&Entry]| {
+        let mut all = true;
         for new in moved_in {
-            let _ = move_entry(&dir.join(&new.name), &staging.join(&new.name), new);
+            all &= matches!(move_entry(&dir.join(&new.name), &staging.join(&new.name), new), Ok(Took::Done));
         }
         for old in moved_aside {
-            let _ = move_entry(&aside.join(&old.name), &dir.join(&old.name), old);
+            all &= matches!(move_entry(&aside.join(&old.name), &dir.join(&old.name), old), Ok(Took::Done));
         }
         crate::platform::os::sync_folder(dir);
+        all
+    };
+    // The refusal, said truly: the folder as it was, or (an undo incomplete) nothing deleted
+    // and the files not put back kept in the staging folder with the decided journal.
+    let refused = |at: &Path, e: io::Error, undone: bool| {
+        if undone {
+            Stop::Failed(WriteError::new(at, "write-step-rename", e, UNTOUCHED))
+        } else {
+            Stop::Left(WriteError::new(at, "write-step-rename", e, set_steps::KEPT_STAGING))
+        }
     };
     if let Err(e) = std::fs::create_dir(&aside) {
         return Err(WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED).into());
@@ -418,8 +452,7 @@ fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
         meanwhile(&dir.join(&old.name));
         let (from, to) = (dir.join(&old.name), aside.join(&old.name));
         if let Err(e) = counted_move(&from, &to, old) {
-            undo(&moved_aside, &moved_in);
-            return Err(WriteError::new(&from, "write-step-rename", e, UNTOUCHED).into());
+            return Err(refused(&from, e, undo(&moved_aside, &moved_in)));
         }
         moved_aside.push(old);
         step()?;
@@ -427,8 +460,7 @@ fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
     for new in &j.new {
         let (from, to) = (staging.join(&new.name), dir.join(&new.name));
         if let Err(e) = counted_move(&from, &to, new) {
-            undo(&moved_aside, &moved_in);
-            return Err(WriteError::new(&to, "write-step-rename", e, UNTOUCHED).into());
+            return Err(refused(&to, e, undo(&moved_aside, &moved_in)));
         }
         moved_in.push(new);
         step()?;
@@ -451,11 +483,15 @@ fn counted_move(from: &Path, to: &Path, entry: &Entry) -> io::Result<()> {
     }
 }
 
-/// Tests: what another process does to the folder just before an old file is moved aside
-/// (after the journal decided), set by the tests' `meanwhile_at_aside`.
+/// Tests: something done to the folder, given the path of the old file about to move aside.
+#[cfg(test)]
+type Meanwhile = Box<dyn FnMut(&Path)>;
+
 #[cfg(test)]
 thread_local! {
-    static MEANWHILE: std::cell::RefCell<Option<Box<dyn FnMut(&Path)>>> = const { std::cell::RefCell::new(None) };
+    /// Tests: what another process does to the folder just before an old file is moved
+    /// aside (after the journal decided), set by the tests' `meanwhile_at_aside`.
+    static MEANWHILE: std::cell::RefCell<Option<Meanwhile>> = const { std::cell::RefCell::new(None) };
 }
 
 /// Runs the test's [`MEANWHILE`] with the old file about to move aside; nothing otherwise.

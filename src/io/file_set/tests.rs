@@ -1,8 +1,9 @@
 //! The tests of writing a set of files as one ([`super`]).
 
 use super::*;
-use crate::io::atomic_write::tests::{FAULTS, temp_dir};
+use crate::io::atomic_write::tests::{FAULTS, fresh_dir, plant_link, temp_dir};
 use crate::io::atomic_write::with_fault;
+use crate::io::set_journal::JOURNAL;
 
 /// The old set, written by phonglab (so its files are the next set's to replace or
 /// remove), and a file of the user's.
@@ -371,16 +372,6 @@ fn meanwhile_at_aside<R>(act: impl FnMut(&Path) + 'static, f: impl FnOnce() -> R
     r
 }
 
-/// A symbolic link at `link` to the file `to` (Windows: `symlink_file`, which Wine makes a
-/// Unix link; `false` on a Windows that refuses it without a privilege).
-fn plant_link(to: &Path, link: &Path) -> bool {
-    #[cfg(unix)]
-    let made = std::os::unix::fs::symlink(to, link);
-    #[cfg(windows)]
-    let made = std::os::windows::fs::symlink_file(to, link);
-    made.is_ok()
-}
-
 /// A file outside the set's folder, of the user's, and a link to it planted at `b.md` of
 /// the old set by another process after the journal decided, before `b.md` moves aside.
 fn swap_b_for_a_link(dir: &Path, outside: &Path) -> Result<Vec<String>, WriteError> {
@@ -406,15 +397,16 @@ fn swap_b_for_a_link(dir: &Path, outside: &Path) -> Result<Vec<String>, WriteErr
 #[test]
 #[cfg(any(unix, windows))]
 fn an_old_file_swapped_for_a_link_during_the_swap_is_left_and_the_set_undone() {
-    let outside = temp_dir("swap-link-outside");
+    let outside = fresh_dir("swap-link-outside");
     std::fs::write(outside.join("thesis.txt"), "mine").unwrap();
-    let dir = temp_dir("swap-link");
+    let dir = fresh_dir("swap-link");
     old_set(&dir);
-    if cfg!(windows) && !plant_link(&outside.join("thesis.txt"), &dir.join("probe")) {
+    let probe = fresh_dir("swap-link-probe");
+    std::fs::write(probe.join("target"), "probe").unwrap();
+    if !plant_link(&probe.join("target"), &probe.join("link")) {
         eprintln!("no symbolic link can be made here: nothing to test");
         return;
     }
-    let _ = std::fs::remove_file(dir.join("probe"));
     let e = swap_b_for_a_link(&dir, &outside).unwrap_err().to_string();
     assert!(e.contains("b.md") && e.contains("replaced while phonglab was writing the set"), "{e}");
     assert_eq!(std::fs::read(outside.join("thesis.txt")).unwrap(), b"mine", "the file outside is untouched");
@@ -437,11 +429,11 @@ fn an_old_file_swapped_for_a_link_during_the_swap_is_left_and_the_set_undone() {
 #[cfg(any(unix, windows))]
 fn a_link_planted_in_a_stopped_writers_staging_folder_is_left_by_the_recovery() {
     let belongs = |n: &str| n.ends_with(".md");
-    let outside = temp_dir("recover-link-outside");
+    let outside = fresh_dir("recover-link-outside");
     std::fs::write(outside.join("thesis.txt"), "mine").unwrap();
     // Stopped with the journal begun (undecided), and with the old files aside (decided).
     for (n, inner) in [(2, ""), (7, ASIDE)] {
-        let dir = temp_dir("recover-link");
+        let dir = fresh_dir(&format!("recover-link-{n}"));
         old_set(&dir);
         with_fault(Fault::KilledAtStep(n), || write_set(&dir, &new_set(), belongs)).unwrap_err();
         let (staging, _) = journal_in(&dir).expect("a journal");
@@ -459,4 +451,54 @@ fn a_link_planted_in_a_stopped_writers_staging_folder_is_left_by_the_recovery() 
             if n == 2 { &["a.md", "b.md", "c.md", "mine.txt"] } else { &["a.md", "b.md", "d.md", "mine.txt"] };
         assert_eq!(names, want, "step {n}: the old set whole, or the new one");
     }
+}
+
+/// Issue 59 (finding 3): a file whose name differs from a set's only in case (`B.md` beside
+/// phonglab's `b.md`), which Windows and Wine take for one file: the set is refused before
+/// anything moves, naming it, and both files are as they were. Before, under Wine a failed
+/// run deleted phonglab's own old file and said "the folder is unchanged".
+#[test]
+fn a_name_differing_from_a_sets_only_in_case_refuses_the_set_and_both_files_stay() {
+    let dir = temp_dir("case");
+    old_set(&dir);
+    let theirs = dir.join("B.md");
+    if std::fs::write(&theirs, "theirs").is_err() || std::fs::read(dir.join("b.md")).unwrap() != b"old b" {
+        eprintln!("this file system takes B.md and b.md for one file: nothing to test");
+        return;
+    }
+    let before = listing(&dir);
+    let e = write_set(&dir, &new_set(), |n| n.ends_with(".md")).unwrap_err().to_string();
+    assert!(e.contains("B.md") && e.contains("only in case") && e.contains("the folder is unchanged"), "{e}");
+    assert_eq!(listing(&dir), before);
+}
+
+/// Issue 59 (finding 3): a swap whose undo cannot put an old file back (something put at
+/// its name meanwhile) deletes nothing and says so truly: the old file is kept in the
+/// staging folder, with the journal, never "the folder is unchanged"; the next run leaves
+/// the file there, saying so.
+#[test]
+fn an_undo_that_cannot_put_an_old_file_back_deletes_nothing_and_says_so() {
+    let dir = temp_dir("undo-stuck");
+    old_set(&dir);
+    let planted = dir.join("a.md");
+    let r = meanwhile_at_aside(
+        move |old| {
+            // When c.md moves aside, a.md (aside already) has a file of someone else's at its
+            // name: the new a.md cannot go in, nor the old one back.
+            if old.file_name().is_some_and(|n| n == "c.md") {
+                std::fs::write(&planted, "someone else's").unwrap();
+            }
+        },
+        || write_set(&dir, &new_set(), |n| n.ends_with(".md")),
+    );
+    let e = r.unwrap_err().to_string();
+    assert!(e.contains("a.md") && e.contains("nothing was deleted"), "{e}");
+    assert!(!e.contains("the folder is unchanged"), "{e}");
+    let (staging, j) = journal_in(&dir).expect("the staging folder and its journal are kept");
+    assert!(j.decided);
+    assert_eq!(std::fs::read(staging.join(ASIDE).join("a.md")).unwrap(), b"old a", "the old a.md is kept");
+    assert_eq!(std::fs::read(dir.join("a.md")).unwrap(), b"someone else's");
+    let notices = recover(&dir).unwrap();
+    assert_eq!(notices.len(), 1, "{notices:?}");
+    assert_eq!(std::fs::read(dir.join("a.md")).unwrap(), b"someone else's");
 }
