@@ -1095,6 +1095,9 @@ budget-what-wrong = a set of { $count ->
 
 ## arg-errors
 
+cmdline-not-a-command = { $word } is neither a command of phonglab's nor a file here: “phonglab --help” lists the commands
+cmdline-not-a-command-near = { $word } is neither a command of phonglab's nor a file here: did you mean “phonglab { $command }”? (“phonglab --help” lists the commands)
+cmdline-help-no-command = phonglab has no command named { $name }: “phonglab --help” lists the commands
 arg-error-invalid-value = { $arg } does not take { $value }: it takes { $values }.
 arg-error-missing-value = { $arg } needs a value.
 arg-error-out-of-range = { $arg } takes a whole number from { $low } to { $high }, not { $value }.

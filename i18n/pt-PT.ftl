@@ -1098,6 +1098,9 @@ budget-what-wrong = um conjunto de { $count ->
 
 ## arg-errors
 
+cmdline-not-a-command = { $word } não é um comando do phonglab nem um ficheiro aqui: “phonglab --help” lista os comandos
+cmdline-not-a-command-near = { $word } não é um comando do phonglab nem um ficheiro aqui: queria dizer “phonglab { $command }”? (“phonglab --help” lista os comandos)
+cmdline-help-no-command = o phonglab não tem nenhum comando chamado { $name }: “phonglab --help” lista os comandos
 arg-error-invalid-value = { $arg } não aceita { $value }: aceita { $values }.
 arg-error-missing-value = { $arg } precisa de um valor.
 arg-error-out-of-range = { $arg } aceita um número inteiro de { $low } a { $high }, não { $value }.

@@ -16,6 +16,7 @@ pub mod exercise;
 pub mod explain;
 pub mod export;
 pub mod help;
+pub mod mistyped;
 pub mod probe;
 pub mod render;
 pub mod screenshot;
@@ -99,11 +100,22 @@ impl Cli {
         let command = command.as_deref();
         let matches = cmd.try_get_matches_from_mut(std::env::args_os()).unwrap_or_else(|e| exit_escaped(&e, command));
         if let Some(("help", asked)) = matches.subcommand() {
-            let names = asked.get_many::<String>("command").into_iter().flatten();
-            crate::cli::help::print_help_of(&mut cmd, names);
+            let names = || asked.get_many::<String>("command").into_iter().flatten();
+            if let Some(why) = crate::cli::mistyped::refuse_help_of(&cmd, names()) {
+                eprintln!("phonglab: {why}");
+                std::process::exit(2);
+            }
+            crate::cli::help::print_help_of(&mut cmd, names());
             std::process::exit(0);
         }
         let mut cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| exit_escaped(&e, command));
+        // A mistyped command is not a scene file to open the window on.
+        if cli.command.is_none()
+            && let Some(why) = cli.file.as_deref().and_then(|f| crate::cli::mistyped::refuse_word(f, &cmd))
+        {
+            eprintln!("phonglab: {why}");
+            std::process::exit(2);
+        }
         if let (Some(Command::Exercise(a)), Some(("exercise", m))) = (&mut cli.command, matches.subcommand()) {
             a.count_given = m.value_source("count") == Some(clap::parser::ValueSource::CommandLine);
         }

@@ -145,3 +145,26 @@ fn version_names_the_version_and_the_commit() {
     assert_eq!(text, format!("phonglab {} ({commit})\n", env!("CARGO_PKG_VERSION")));
     assert_eq!(phonglab::cli::VERSION, format!("{} ({commit})", env!("CARGO_PKG_VERSION")));
 }
+
+/// Issue 59: a mistyped command (`phonglab exercicios`) was taken for a scene file and
+/// opened the window, where alone it was said; `phonglab help exercises` printed the
+/// general help and exited 0. Both are said on the terminal now, exit 2, the first with the
+/// nearest command; a file that is there still opens the window (not run here).
+#[test]
+fn a_mistyped_command_or_help_of_no_command_is_said_on_the_terminal_exit_2() {
+    let out = common::phonglab(&["exercicios"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("exercicios is neither a command of phonglab's nor a file here"), "{err}");
+    assert!(err.contains("did you mean “phonglab exercise”?"), "{err}");
+    let out = common::phonglab(&["help", "exercises"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("phonglab has no command named exercises"), "{err}");
+    assert!(out.stdout.is_empty(), "no help printed");
+    let out = common::phonglab_in("pt_BR.UTF-8", &["rendr"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("você quis dizer “phonglab render”?"), "{err}");
+    let out = common::phonglab(&["help", "exercise"]);
+    assert_eq!(out.status.code(), Some(0), "the help of a command that is there");
+}
