@@ -99,8 +99,8 @@ fn names_with_a_stream_or_a_character_windows_refuses_are_refused_before_anythin
         assert!(err.contains(&said), "{name}: {err}");
     }
     let out =
-        common::phonglab_in("pt_PT.UTF-8", &["exercise", "--count", "1", "--out", d.join("x:y").to_str().unwrap()]);
+        common::phonglab_in("pt_PT.UTF-8", &["exercise", "--count", "1", "--out", d.join("set:x").to_str().unwrap()]);
     let err = stderr(&out);
-    assert!(err.contains("x:y contém “:”, que o Windows não permite num nome de ficheiro"), "{err}");
+    assert!(err.contains("set:x contém “:”, que o Windows não permite num nome de ficheiro"), "{err}");
     assert!(names(&d).is_empty(), "nothing written: {:?}", names(&d));
 }
