@@ -101,9 +101,14 @@ impl Cli {
         let matches = cmd.try_get_matches_from_mut(std::env::args_os()).unwrap_or_else(|e| exit_escaped(&e, command));
         if let Some(("help", asked)) = matches.subcommand() {
             let names: Vec<&String> = asked.get_many::<String>("command").into_iter().flatten().collect();
-            // `phonglab help exercises`: no such command, said as `phonglab exercises --x` is.
-            if let Some(name) = names.first().filter(|n| cmd.find_subcommand(n.as_str()).is_none()) {
-                exit_escaped(&arg_errors::unknown_command(&mut cmd, name, "arg-error-unknown-command"), None);
+            // `phonglab help exercises` (or `help bench rendr`): no such command, said as
+            // `phonglab exercises --x` is, with the closest of the command before it.
+            let mut parent = cmd.clone();
+            for name in &names {
+                match parent.find_subcommand(name.as_str()) {
+                    Some(sub) => parent = sub.clone(),
+                    None => exit_escaped(&arg_errors::unknown_command(&mut parent, name, "arg-error-unknown-command"), None),
+                }
             }
             crate::cli::help::print_help_of(&mut cmd, names.into_iter());
             std::process::exit(0);

@@ -10,6 +10,14 @@ pub(crate) mod tests {
     use super::*;
     use std::path::{Path, PathBuf};
 
+    /// [`temp_dir`], named once more by the time: for a test that plants links, whose folder
+    /// an earlier run may have left (Wine reuses process numbers, and its `remove_dir_all`
+    /// follows a Unix link), so that no run meets another's.
+    pub(crate) fn fresh_dir(name: &str) -> PathBuf {
+        let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).unwrap_or_default().as_nanos();
+        temp_dir(&format!("{name}-{nanos}"))
+    }
+
     pub(crate) fn temp_dir(name: &str) -> PathBuf {
         let d = std::env::temp_dir().join(format!("phonglab-atomic-{name}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&d);
@@ -28,6 +36,42 @@ pub(crate) mod tests {
             .collect();
         v.sort();
         v
+    }
+
+    /// Makes a symbolic link at `link` to the file `to`, as another process would: `false`
+    /// where none can be made (a Windows without the privilege). Windows: Windows' own
+    /// (`symlink_file`); under Wine, whose `CreateSymbolicLinkW` makes nothing, a Unix link,
+    /// made by the Unix `ln` (Wine starts a Unix program too) at the paths `winepath -u` gives,
+    /// and waited for (Wine does not wait for a Unix program).
+    pub(crate) fn plant_link(to: &Path, link: &Path) -> bool {
+        #[cfg(unix)]
+        {
+            std::os::unix::fs::symlink(to, link).is_ok()
+        }
+        #[cfg(windows)]
+        {
+            let unix = |p: &Path| {
+                let out = std::process::Command::new("winepath").arg("-u").arg(p).output().ok()?;
+                let s = String::from_utf8(out.stdout).ok()?;
+                out.status.success().then(|| s.trim_end().to_string())
+            };
+            if let (Some(to_u), Some(link_u)) = (unix(to), unix(link)) {
+                let _ = std::process::Command::new(r"Z:\bin\ln").args(["-s", &to_u, &link_u]).status();
+                for _ in 0..500 {
+                    if crate::platform::links::reached_through_link(link) {
+                        return true;
+                    }
+                    std::thread::sleep(std::time::Duration::from_millis(20));
+                }
+                return false;
+            }
+            std::os::windows::fs::symlink_file(to, link).is_ok() && std::fs::symlink_metadata(link).is_ok()
+        }
+        #[cfg(not(any(unix, windows)))]
+        {
+            let _ = (to, link);
+            false
+        }
     }
 
     pub(crate) const FAULTS: [Fault; 6] = [
@@ -139,6 +183,39 @@ pub(crate) mod tests {
         assert!(!names.contains(&stale), "{names:?}");
         assert!(names.contains(&running) && names.contains(&other), "{names:?}");
         assert!(names.contains(&".out.png.x.1.tmp".to_string()), "not phonglab's form: {names:?}");
+    }
+
+    /// Issue 59 (finding 5): a temporary of phonglab's naming whose writer is dead is
+    /// removed only when it is provably phonglab's kind of file: a link of that name (to a
+    /// file outside; Wine opens it as that file) and, on Unix, a file of another user's
+    /// (a classmate's, planted) are left, and the files they name untouched. Under Wine a
+    /// killed write's temporary was never removed (every process was taken to run).
+    #[test]
+    #[cfg(any(unix, windows))]
+    fn a_stale_temporary_goes_only_when_provably_phonglabs_own() {
+        let dir = fresh_dir("stale-own");
+        let outside = fresh_dir("stale-own-outside");
+        std::fs::write(outside.join("thesis.txt"), b"mine").unwrap();
+        let dead = (1u32 << 22) + 1;
+        let (stale, link) = (format!(".out.png.{dead}.0.tmp"), format!(".out.png.{dead}.1.tmp"));
+        std::fs::write(dir.join(&stale), b"part").unwrap();
+        let linked = plant_link(&outside.join("thesis.txt"), &dir.join(&link));
+        // A classmate's file of phonglab's naming (Unix, where this test may give it away).
+        let theirs = format!(".out.png.{dead}.2.tmp");
+        std::fs::write(dir.join(&theirs), b"theirs").unwrap();
+        #[cfg(unix)]
+        let given_away = std::os::unix::fs::chown(dir.join(&theirs), Some(54_321), None).is_ok();
+        #[cfg(windows)]
+        let given_away = false;
+        if !given_away {
+            std::fs::remove_file(dir.join(&theirs)).unwrap();
+        }
+        write(&dir.join("out.png"), b"new").unwrap();
+        let names: Vec<String> = listing(&dir).into_iter().map(|(n, _)| n).collect();
+        assert!(!names.contains(&stale), "the dead writer's temporary is removed: {names:?}");
+        assert_eq!(names.contains(&link), linked, "a link is left: {names:?}");
+        assert_eq!(names.contains(&theirs), given_away, "another user's file is left: {names:?}");
+        assert_eq!(std::fs::read(outside.join("thesis.txt")).unwrap(), b"mine");
     }
 
     #[test]

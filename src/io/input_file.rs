@@ -103,6 +103,29 @@ mod tests {
         assert_eq!(share_fragment(Path::new("scenes/https.toml")), None);
     }
 
+    /// Issue 59 (finding 7): on Windows an input named like a device (`CON`, `nul.toml`,
+    /// `COM1`) is refused in words before it is opened (before: the system's raw "Invalid
+    /// handle (os error 6)"); elsewhere such a name is a file like any other.
+    #[test]
+    fn an_input_named_like_a_windows_device_is_refused_in_words_there() {
+        let dir = crate::io::atomic_write::tests::temp_dir("device-input");
+        for name in ["CON", "nul.toml", "COM1"] {
+            if cfg!(windows) {
+                let e = read_capped(&dir.join(name), MAX_SCENE_BYTES, "scene files").unwrap_err();
+                assert!(e.contains(name) && e.contains("a name Windows keeps for a device"), "{e}");
+                assert!(!e.contains("os error"), "{e}");
+                let e = read_submission(Path::new(name), MAX_SCENE_BYTES, "notebooks").unwrap_err();
+                assert!(e.contains("a name Windows keeps for a device"), "{e}");
+            } else {
+                std::fs::write(dir.join(name), "name = \"con\"").unwrap();
+                assert_eq!(
+                    read_text_capped(&dir.join(name), MAX_SCENE_BYTES, "scene files").unwrap(),
+                    "name = \"con\""
+                );
+            }
+        }
+    }
+
     #[test]
     fn devices_folders_and_large_files_are_refused_before_reading() {
         // (Windows' NUL device: `mesh::obj`'s test in the core.)

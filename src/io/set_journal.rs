@@ -128,8 +128,12 @@ pub fn hash_bytes(bytes: &[u8]) -> String {
 /// The file at `path`, read without following a link: its size, hash and identity. `Err`
 /// when it is not a regular file.
 fn read_entry(path: &Path) -> io::Result<(u64, String, Identity)> {
-    let file = crate::platform::os::open_no_follow(path)?;
-    let (meta, id) = Identity::of_file(&file)?;
+    read_open(&crate::platform::os::open_no_follow(path)?)
+}
+
+/// [`read_entry`] of a file already open, through its handle.
+fn read_open(file: &std::fs::File) -> io::Result<(u64, String, Identity)> {
+    let (meta, id) = Identity::of_file(file)?;
     if !meta.is_file() {
         return Err(io::Error::new(io::ErrorKind::InvalidInput, "not a regular file"));
     }
@@ -159,6 +163,75 @@ pub fn is_entry(path: &Path, entry: &Entry) -> bool {
         return false;
     }
     read_entry(path).is_ok_and(|(size, hash, id)| size == entry.size && hash == entry.hash && id == entry.id)
+}
+
+/// What became of a file asked to move or go ([`move_entry`], [`remove_entry`],
+/// [`remove_own`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Took {
+    /// Moved or removed: it was, right then, the file asked for.
+    Done,
+    /// Nothing is at its name.
+    Absent,
+    /// Something else is at its name (a link, another file, the file changed): left where
+    /// it is, untouched.
+    Other,
+}
+
+/// The file at `path`, opened itself ([`crate::platform::by_handle`]), when `is_it` says,
+/// through that handle, that it is the file asked for; `Err(Took)` when it is absent or
+/// something else is there (a link refused by the open itself, on Windows one reached
+/// under another name too).
+fn open_checked(
+    path: &Path,
+    is_it: impl FnOnce(&std::fs::File) -> bool,
+) -> io::Result<Result<crate::platform::by_handle::Opened, Took>> {
+    let opened = match crate::platform::by_handle::open(path) {
+        Ok(opened) => opened,
+        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Err(Took::Absent)),
+        Err(e) if crate::platform::os::is_link_refused(&e) => return Ok(Err(Took::Other)),
+        Err(e) => return Err(e),
+    };
+    Ok(if is_it(opened.file()) { Ok(opened) } else { Err(Took::Other) })
+}
+
+/// Is the open `file` exactly the one `entry` names (a regular file; its identity, size and
+/// hash, read through the handle)?
+fn is_entry_file(file: &std::fs::File, entry: &Entry) -> bool {
+    read_open(file).is_ok_and(|(size, hash, id)| size == entry.size && hash == entry.hash && id == entry.id)
+}
+
+/// Moves the file at `from` to `to` (where nothing is) only when it is, right then, the file
+/// `entry` names, checked through the handle that moves it: the one way a set's files move
+/// (the swap, its undo, the recovery). A link planted at `from` (Wine: one that opens as
+/// the file it names, which a move by name would have moved) or any other file there is
+/// left where it is ([`Took::Other`]). `Err`: the system refused (Windows: another program
+/// holds the file open without sharing its deletion).
+pub fn move_entry(from: &Path, to: &Path, entry: &Entry) -> io::Result<Took> {
+    match open_checked(from, |f| is_entry_file(f, entry))? {
+        Ok(opened) => Ok(if opened.rename_no_replace(to)? { Took::Done } else { Took::Other }),
+        Err(took) => Ok(took),
+    }
+}
+
+/// Removes the file at `path` only when it is, right then, the file `entry` names, through
+/// the handle that checked it (see [`move_entry`]): the one way a set's old files go.
+pub fn remove_entry(path: &Path, entry: &Entry) -> io::Result<Took> {
+    match open_checked(path, |f| is_entry_file(f, entry))? {
+        Ok(opened) => Ok(if opened.remove()? { Took::Done } else { Took::Other }),
+        Err(took) => Ok(took),
+    }
+}
+
+/// Removes the file at `path`, one of phonglab's own in a staging folder this writer made (a
+/// journal, a temporary file, a file staged before the journal named it), only when it is
+/// a regular file reached under its own name (not a link; Wine: not one that opens as the
+/// file it names), through the handle that checked it.
+pub fn remove_own(path: &Path) -> io::Result<Took> {
+    match open_checked(path, |f| crate::platform::os::regular_file_metadata(f).is_ok_and(|m| m.is_some()))? {
+        Ok(opened) => Ok(if opened.remove()? { Took::Done } else { Took::Other }),
+        Err(took) => Ok(took),
+    }
 }
 
 /// Is the file `now` (its entry, read in the folder now) one that the folder's list of
@@ -198,7 +271,7 @@ pub fn write_journal(staging: &Path, journal: &Journal, counted: bool) -> Result
         std::fs::rename(&tmp, staging.join(JOURNAL))
     };
     renamed.map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
+        let _ = remove_own(&tmp);
         ("write-step-rename", e)
     })?;
     crate::platform::os::sync_folder(staging);
@@ -307,8 +380,13 @@ pub fn recover_locked(dir: &Path) -> io::Result<Vec<String>> {
                 }
             }
             // Stopped before the swap was decided: the old set is whole in place, and
-            // the staging folder holds only what this writer put in it.
-            Ok(Some(_)) => std::fs::remove_dir_all(&staging)?,
+            // the staging folder holds what this writer put in it (removed file by file,
+            // each checked; anything else left, and said).
+            Ok(Some(_)) => {
+                if !throw_away(&staging) {
+                    notices.push(left(dir, &name, &t!("set-why-not-all-own")));
+                }
+            }
             Ok(None) => {
                 if !remove_if_empty(&staging) {
                     notices.push(left(dir, &name, &t!("set-why-no-journal")));
@@ -349,6 +427,39 @@ pub fn written_list(dir: &Path) -> Vec<Entry> {
         .unwrap_or_default()
 }
 
+/// Throws away the staging folder `staging` of a set not swapped in (stopped before its
+/// journal decided, or undone): its journal first, then each regular file in it that is
+/// phonglab's own ([`remove_own`]: never a link, nor what one leads to), then the empty
+/// aside folder and the folder itself. `false`: something else is in it (a link, a folder, a
+/// file of the old set not moved back), left there with the folder.
+pub fn throw_away(staging: &Path) -> bool {
+    let _ = remove_own(&staging.join(JOURNAL));
+    if let Ok(entries) = std::fs::read_dir(staging) {
+        for entry in entries.flatten() {
+            if entry.file_name() != ASIDE {
+                let _ = remove_own(&entry.path());
+            }
+        }
+    }
+    remove_if_empty(staging)
+}
+
+/// Removes the old set's files from the aside folder of `staging` (each only when it is,
+/// right then, the file the journal names: [`remove_entry`]), then the aside folder, then
+/// the journal. `false`: something was not removed (another program holds a file open, or
+/// something else is there), and the journal is kept, so the next run finishes.
+pub fn clear_aside(staging: &Path, old: &[Entry]) -> bool {
+    let aside = staging.join(ASIDE);
+    for entry in old {
+        let _ = remove_entry(&aside.join(&entry.name), entry);
+    }
+    let gone = match std::fs::remove_dir(&aside) {
+        Ok(()) => true,
+        Err(e) => e.kind() == io::ErrorKind::NotFound,
+    };
+    gone && matches!(remove_own(&staging.join(JOURNAL)), Ok(Took::Done | Took::Absent))
+}
+
 /// Removes `staging` when it holds nothing but, at most, an empty aside folder (a writer
 /// killed after it removed its journal, or before it wrote one): no file is lost.
 fn remove_if_empty(staging: &Path) -> bool {
@@ -367,7 +478,7 @@ fn finish(dir: &Path, staging: &Path, j: &Journal) -> Result<(), String> {
     for old in &j.old {
         if is_entry(&dir.join(&old.name), old) {
             let _ = std::fs::create_dir(&aside);
-            if crate::platform::os::rename_no_replace(&dir.join(&old.name), &aside.join(&old.name)).is_err() {
+            if !matches!(move_entry(&dir.join(&old.name), &aside.join(&old.name), old), Ok(Took::Done)) {
                 stuck.push(old.name.clone());
             }
         }
@@ -377,7 +488,7 @@ fn finish(dir: &Path, staging: &Path, j: &Journal) -> Result<(), String> {
         if is_entry(&target, new) {
             continue;
         }
-        if !is_entry(&staged, new) || crate::platform::os::rename_no_replace(&staged, &target).is_err() {
+        if !matches!(move_entry(&staged, &target, new), Ok(Took::Done)) {
             stuck.push(new.name.clone());
         }
     }
@@ -395,7 +506,10 @@ fn finish(dir: &Path, staging: &Path, j: &Journal) -> Result<(), String> {
         return Err(t!("set-why-unfinished", names = names));
     }
     write_written_list(dir, staging, &j.new);
-    let _ = std::fs::remove_dir_all(staging);
+    if !clear_aside(staging, &j.old) {
+        return Err(t!("set-why-not-all-own"));
+    }
+    let _ = std::fs::remove_dir(staging);
     Ok(())
 }
 
@@ -421,9 +535,9 @@ pub fn write_written_list(dir: &Path, staging: &Path, new: &[Entry]) {
     let Ok(list) = serde_json::to_vec(&all) else { return };
     let tmp = staging.join(WRITTEN);
     // One a killed writer left in its own staging folder (the journal said it is one).
-    let _ = std::fs::remove_file(&tmp);
+    let _ = remove_own(&tmp);
     if super::atomic_write::write_new(&tmp, &list).is_ok() && std::fs::rename(&tmp, dir.join(WRITTEN)).is_err() {
-        let _ = std::fs::remove_file(&tmp);
+        let _ = remove_own(&tmp);
     }
 }
 

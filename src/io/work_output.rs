@@ -158,12 +158,15 @@ fn in_folder(path: &Path, dir: &Path) -> bool {
 /// the words is written visibly for the terminal.
 fn refusal(path: &Path, kind: Kind, checked: Option<&Path>) -> Option<String> {
     let shown = crate::io::reasons::shown(path);
+    // A link, as Linux shows it, or as Windows does (Wine shows a Unix link as a plain file:
+    // only its final path tells it, issue 59 finding 4, where the link was replaced).
+    let link = |m: &std::fs::Metadata| m.file_type().is_symlink() || crate::platform::links::reached_through_link(path);
     match std::fs::symlink_metadata(path) {
         // The chart's name is derived from the report's, not given: said so.
-        Ok(m) if m.file_type().is_symlink() && kind == Kind::Chart => {
+        Ok(m) if link(&m) && kind == Kind::Chart => {
             return Some(t!("check-chart-link", path = shown));
         }
-        Ok(m) if m.file_type().is_symlink() => return Some(t!("work-output-link", path = shown)),
+        Ok(m) if link(&m) => return Some(t!("work-output-link", path = shown)),
         Ok(m) if m.is_file() => {
             let head = match head_of(path) {
                 Ok(head) => head,
@@ -225,6 +228,26 @@ pub fn write(path: &Path, kind: Kind, checked: Option<&Path>, bytes: &[u8]) -> R
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 59 (finding 4): the marks named at a link to phonglab's own earlier marks are
+    /// refused as a link, on Linux and under Wine (which shows a Unix link as a plain file,
+    /// whose bytes were the marks': the link was replaced), and nothing is written.
+    #[test]
+    #[cfg(any(unix, windows))]
+    fn an_output_at_a_link_to_phonglabs_own_output_is_refused_as_a_link() {
+        let dir = crate::io::atomic_write::tests::fresh_dir("output-link");
+        let (real, link) = (dir.join("last-year.csv"), dir.join("marks.csv"));
+        std::fs::write(&real, format!("{MARKS_HEADER}\na,right,,,\n")).unwrap();
+        if !crate::io::atomic_write::tests::plant_link(&real, &link) {
+            eprintln!("no symbolic link can be made here: nothing to test");
+            return;
+        }
+        let e = refuse(&[(&link, Kind::Marks)], None).unwrap_err();
+        assert!(e.contains("marks.csv") && e.contains("link"), "{e}");
+        assert!(write(&link, Kind::Marks, None, b"new").is_err());
+        assert_eq!(std::fs::read(&real).unwrap(), format!("{MARKS_HEADER}\na,right,,,\n").as_bytes());
+        assert!(crate::platform::links::reached_through_link(&link), "the link is left");
+    }
 
     #[test]
     fn each_kind_knows_its_own_bytes_and_no_other() {

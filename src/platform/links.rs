@@ -27,6 +27,14 @@ pub fn reached_through_link(path: &Path) -> bool {
     }
 }
 
+/// Windows: is the open `file`, opened at `path`, the entry at that name itself, not a file
+/// a link there leads to (Wine opens a Unix link as its target)? Asked through the handle's
+/// final path (see the module's documentation).
+#[cfg(windows)]
+pub fn opened_under_its_own_name(file: &std::fs::File, path: &Path) -> bool {
+    windows::opened_under_its_own_name(file, path)
+}
+
 #[cfg(windows)]
 mod windows {
     use std::fs::File;
@@ -53,14 +61,32 @@ mod windows {
         if file.metadata().is_ok_and(|m| m.file_attributes() & REPARSE_POINT != 0) {
             return true;
         }
+        under_another_name(&file, parent, name, &path)
+    }
+
+    /// Is the open `file`, opened at `path` (in the folder `parent`, named `name`), reached
+    /// under another name than its own (its final path is not its folder's joined with the
+    /// entry's long name)? `false` where the system cannot say.
+    fn under_another_name(file: &File, parent: &Path, name: &std::ffi::OsStr, path: &Path) -> bool {
+        let open =
+            |p: &Path, flags: u32| File::options().access_mode(0).share_mode(SHARE_ALL).custom_flags(flags).open(p);
         let Ok(folder) = open(parent, FOLDER) else { return false };
         // The entry's long name: a short name (`PHON~0IC`) names the same entry.
-        let long = long_path(&path);
+        let long = long_path(path);
         let name = long.as_deref().and_then(Path::file_name).unwrap_or(name);
-        match (final_path(&file), final_path(&folder)) {
+        match (final_path(file), final_path(&folder)) {
             (Some(at), Some(folder)) => !same_name(&at, &folder.join(name)),
             _ => false,
         }
+    }
+
+    /// Is the open `file`, opened at `path`, the entry at that name itself (not a file a
+    /// link there leads to: Wine's Unix link opens as its target)? `false` where it cannot
+    /// be told (the path has no folder or no name).
+    pub fn opened_under_its_own_name(file: &File, path: &Path) -> bool {
+        let Ok(path) = std::path::absolute(path) else { return false };
+        let (Some(parent), Some(name)) = (path.parent(), path.file_name()) else { return false };
+        !under_another_name(file, parent, name, &path)
     }
 
     /// `path` with each 8.3 short name in it made long (`GetLongPathNameW`): names, not

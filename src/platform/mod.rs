@@ -10,9 +10,11 @@
 //! | [`threads`] | work on a thread of its own, rayon's pool | work on the calling thread (no cross-origin isolation needed) |
 //! | [`clock`] | `std::time::Instant` | `performance.now()`, through `web-time` |
 //! | [`language`] | `LC_ALL`, `LC_MESSAGES`, `LANG` | `navigator.language` |
+//! | [`by_handle`] | a file moved or removed as the very file it is, checked through its open handle (Windows: by that handle) | (not used) |
 //! | [`links`] | whether a file is reached through a link (Windows: a reparse point, or a final path under another name) | (not used) |
 //! | [`page`] | no page: links open the published site | the page's own address, a link's base |
 
+pub mod by_handle;
 pub mod clock;
 pub mod files;
 pub mod language;

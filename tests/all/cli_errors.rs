@@ -154,6 +154,10 @@ fn a_mistyped_command_is_refused_on_the_terminal_with_the_closest_one() {
     // Nothing close: no suggestion.
     let (_, text) = refused("en", &["xyzzy"]);
     assert!(text.contains("There is no command \"xyzzy\", nor a file") && !text.contains("Did you mean"), "{text}");
+    // Nested: the closest of the command before it.
+    let (code, text) = refused("en", &["help", "bench", "rendr"]);
+    assert_eq!(code, 2, "{text}");
+    assert!(text.contains("There is no command \"rendr\". Did you mean render?"), "{text}");
     // `help` of a real command still prints its help.
     let out = phonglab(&["--lang", "en", "help", "exercise"]);
     assert!(out.status.success());

@@ -84,3 +84,23 @@ fn names_windows_keeps_for_devices_are_refused_in_every_language() {
     assert!(err.contains("aux é um nome que o Windows reserva para um dispositivo"), "{err}");
     assert!(names(&d).is_empty(), "nothing made: {:?}", names(&d));
 }
+
+/// Issue 59 (finding 6): an output named with an alternate data stream (`out.png:x`, which
+/// on Windows writes a hidden stream of `out.png`) or a character Windows refuses in a name
+/// (`? * < > | "`): refused on every system before anything is written, in words.
+#[test]
+fn names_with_a_stream_or_a_character_windows_refuses_are_refused_before_anything_is_written() {
+    let d = scratch("chars");
+    for (name, c) in [("out.png:x", ":"), ("a?.png", "?"), ("b*.png", "*"), ("c<d.png", "<"), ("e|f.png", "|")] {
+        let out = common::phonglab(&["render", "--size", "16", "--output", d.join(name).to_str().unwrap()]);
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{name}: {err}");
+        let said = format!("{name} holds “{c}”, which Windows does not allow in a file name");
+        assert!(err.contains(&said), "{name}: {err}");
+    }
+    let out =
+        common::phonglab_in("pt_PT.UTF-8", &["exercise", "--count", "1", "--out", d.join("set:x").to_str().unwrap()]);
+    let err = stderr(&out);
+    assert!(err.contains("set:x contém “:”, que o Windows não permite num nome de ficheiro"), "{err}");
+    assert!(names(&d).is_empty(), "nothing written: {:?}", names(&d));
+}

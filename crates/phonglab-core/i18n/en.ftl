@@ -524,6 +524,7 @@ write-step-remove-journal = remove the journal of
 write-step-killed = stop (killed) while writing
 write-kept-folder = the folder is unchanged
 write-kept-recoverable = the old set or the new one is whole, and the next run in this folder finishes what was started
+write-kept-staging = nothing was deleted: the files that could not be put back in place are kept in phonglab's working folder in it (.phonglab-set…), and the next run in this folder puts them back or says where they are
 
 ## errors
 
@@ -962,6 +963,7 @@ write-kept-nothing = nothing was written
 write-not-a-regular-file = not a regular file (a link, a folder, a device or a pipe): phonglab writes only a regular file or a new one
 read-cannot = cannot read { $path }: { $reason }
 read-not-a-file = { $path } is not a regular file
+read-device-name = { $path } is a name Windows keeps for a device (CON, PRN, AUX, NUL, COM1…, LPT1…), not a file: phonglab reads no device; give the file's own name
 read-too-large = { $path } is { $size }; phonglab reads { $what } of at most { $cap }
 read-not-utf8 = { $path } is not UTF-8 text (byte { $byte })
 read-link-refused = { $path } is a link: not read (a student’s work is read only from a file itself, never through a link)
@@ -970,6 +972,7 @@ file-kind-code = notebooks and scripts
 err-output-is-input = { $output } is { $what } { $input }, which this command reads (the same file): writing it would destroy what is read; choose another output
 err-output-is-other-output = { $output } is the other output { $other } (the same file): one would be written over the other; choose two different files
 err-name-windows-device = { $name } is a name Windows keeps for a device; choose another
+err-name-windows-char = { $name } holds “{ $char }”, which Windows does not allow in a file name (a “:” writes a hidden stream of another file); choose a name without it
 err-name-windows-end = Windows drops a dot or a space at the end of a name ({ $name } would be { $kept }, another file); choose a name without one
 input-kind-input = the input
 input-kind-scene = the scene

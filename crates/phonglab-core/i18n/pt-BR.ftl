@@ -528,6 +528,7 @@ write-step-remove-journal = remover o diário de
 write-step-killed = parar (morto) ao escrever
 write-kept-folder = a pasta não mudou
 write-kept-recoverable = o conjunto antigo ou o novo está completo, e a próxima execução nesta pasta termina o que foi começado
+write-kept-staging = nada foi apagado: os arquivos que não puderam voltar ao seu lugar ficaram na pasta de trabalho do phonglab lá dentro (.phonglab-set…), e a próxima execução nesta pasta os repõe ou diz onde estão
 
 ## errors
 
@@ -968,6 +969,7 @@ write-kept-nothing = nada foi escrito
 write-not-a-regular-file = não é um arquivo comum (um link, uma pasta, um dispositivo ou um pipe): o phonglab só escreve em um arquivo comum ou em um novo
 read-cannot = não foi possível ler { $path }: { $reason }
 read-not-a-file = { $path } não é um arquivo comum
+read-device-name = { $path } é um nome que o Windows reserva para um dispositivo (CON, PRN, AUX, NUL, COM1…, LPT1…), não um arquivo: o phonglab não lê dispositivos; indique o nome do próprio arquivo
 read-too-large = { $path } tem { $size }; o phonglab lê { $what } de no máximo { $cap }
 read-not-utf8 = { $path } não é texto UTF-8 (byte { $byte })
 read-link-refused = { $path } é um link simbólico: não foi lido (o trabalho de um aluno só é lido de um arquivo, nunca por meio de um link)
@@ -976,6 +978,7 @@ file-kind-code = notebooks e programas
 err-output-is-input = { $output } é { $what } { $input }, que este comando lê (o mesmo arquivo): escrevê-lo destruiria o que é lido; escolha outra saída
 err-output-is-other-output = { $output } é a outra saída { $other } (o mesmo arquivo): uma seria escrita por cima da outra; escolha dois arquivos diferentes
 err-name-windows-device = { $name } é um nome que o Windows reserva para um dispositivo; escolha outro
+err-name-windows-char = { $name } contém “{ $char }”, que o Windows não permite em um nome de arquivo (um “:” grava um fluxo oculto de outro arquivo); escolha um nome sem ele
 err-name-windows-end = o Windows remove o ponto ou o espaço no final de um nome ({ $name } seria { $kept }, outro arquivo); escolha um nome sem ele
 input-kind-input = a entrada
 input-kind-scene = a cena

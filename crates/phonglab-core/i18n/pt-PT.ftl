@@ -524,6 +524,7 @@ write-step-remove-journal = remover o diário de
 write-step-killed = parar (morto) ao escrever
 write-kept-folder = a pasta não mudou
 write-kept-recoverable = o conjunto antigo ou o novo está completo, e a próxima execução nesta pasta termina o que foi começado
+write-kept-staging = nada foi apagado: os ficheiros que não puderam voltar ao seu lugar ficaram na pasta de trabalho do phonglab lá dentro (.phonglab-set…), e a próxima execução nesta pasta repõe-nos ou diz onde estão
 
 ## errors
 
@@ -962,6 +963,7 @@ write-kept-nothing = nada foi escrito
 write-not-a-regular-file = não é um ficheiro normal (uma ligação, uma pasta, um dispositivo ou um pipe): o phonglab só escreve num ficheiro normal ou num novo
 read-cannot = não foi possível ler { $path }: { $reason }
 read-not-a-file = { $path } não é um ficheiro normal
+read-device-name = { $path } é um nome que o Windows reserva para um dispositivo (CON, PRN, AUX, NUL, COM1…, LPT1…), não um ficheiro: o phonglab não lê dispositivos; indique o nome do próprio ficheiro
 read-too-large = { $path } tem { $size }; o phonglab lê { $what } de no máximo { $cap }
 read-not-utf8 = { $path } não é texto UTF-8 (byte { $byte })
 read-link-refused = { $path } é uma ligação simbólica: não foi lido (o trabalho de um aluno só é lido de um ficheiro, nunca através de uma ligação)
@@ -970,6 +972,7 @@ file-kind-code = cadernos e programas
 err-output-is-input = { $output } é { $what } { $input }, que este comando lê (o mesmo ficheiro): escrevê-lo destruiria o que é lido; escolha outra saída
 err-output-is-other-output = { $output } é a outra saída { $other } (o mesmo ficheiro): uma seria escrita por cima da outra; escolha dois ficheiros diferentes
 err-name-windows-device = { $name } é um nome que o Windows reserva para um dispositivo; escolha outro
+err-name-windows-char = { $name } contém “{ $char }”, que o Windows não permite num nome de ficheiro (um “:” escreve um fluxo oculto de outro ficheiro); escolha um nome sem ele
 err-name-windows-end = o Windows retira o ponto ou o espaço no fim de um nome ({ $name } seria { $kept }, outro ficheiro); escolha um nome sem ele
 input-kind-input = a entrada
 input-kind-scene = a cena

@@ -72,6 +72,8 @@ pub mod set_steps {
     pub const KEPT_FOLDER: &str = "write-kept-folder";
     /// The old set or the new one is whole; the next run finishes.
     pub const KEPT_RECOVERABLE: &str = "write-kept-recoverable";
+    /// Nothing deleted: files that could not be put back are kept in the staging folder.
+    pub const KEPT_STAGING: &str = "write-kept-staging";
 }
 
 impl WriteError {
@@ -217,7 +219,8 @@ pub fn write_new(tmp: &Path, bytes: &[u8]) -> Result<(), (&'static str, io::Erro
 }
 
 /// Counts a rename on this thread; `Err` where a test makes this one fail.
-fn rename_fault() -> io::Result<()> {
+#[doc(hidden)]
+pub fn rename_fault() -> io::Result<()> {
     if let Some(Fault::OnRename(n)) = fault() {
         let k = RENAMES.with(|c| {
             let k = c.get();
@@ -295,15 +298,17 @@ fn stale_temporary_of(entry: &str, name: &str) -> bool {
 }
 
 /// Removes what killed writes of `name` left in `dir`: the temporary files
-/// `.name.<pid>.<n>.tmp` (regular files, not links) whose writer is no longer running.
+/// `.name.<pid>.<n>.tmp` whose writer is no longer running, each only when it is provably
+/// phonglab's own kind of file, checked through the handle that removes it
+/// ([`crate::formats::files::os::remove_own_file`]: a regular file of this user's, under its
+/// own name, never a link nor the file one leads to); anything else of that name is left.
 /// Only temporaries of the file being written now: another file's are left to its next
 /// write.
 fn remove_stale_temporaries(dir: &Path, name: &str) {
     let Ok(entries) = std::fs::read_dir(dir) else { return };
     for entry in entries.flatten() {
-        let stale = entry.file_name().to_str().is_some_and(|e| stale_temporary_of(e, name));
-        if stale && entry.file_type().is_ok_and(|t| t.is_file()) {
-            let _ = std::fs::remove_file(entry.path());
+        if entry.file_name().to_str().is_some_and(|e| stale_temporary_of(e, name)) {
+            crate::formats::files::os::remove_own_file(dir, &entry.file_name());
         }
     }
 }
@@ -358,7 +363,15 @@ pub enum Unkept {
     /// A name ending in a dot or a space, which Windows drops (`rep.md.` is `rep.md`,
     /// `set ` is `set`): another file than the one named.
     DroppedEnd,
+    /// A name holding a character Windows does not allow in one (`: ? * < > | "`):
+    /// `out.png:x` writes a hidden stream of `out.png` (an alternate data stream), the
+    /// others Windows refuses.
+    Char(char),
 }
+
+/// The characters Windows does not allow in a file name that a name may hold elsewhere (a
+/// control character is left to the messages' escaping; `/` and `\` part a path).
+const NOT_IN_NAMES: [char; 7] = [':', '?', '*', '<', '>', '|', '"'];
 
 /// The names Windows keeps for devices (compared without case, before any extension).
 const DEVICES: [&str; 32] = [
@@ -368,12 +381,15 @@ const DEVICES: [&str; 32] = [
 ];
 
 /// Why Windows cannot keep the file or folder name `name` as it is, if it cannot: a
-/// device's name, or a dot or space at its end. Asked on every system, since a set or a
+/// device's name, a character it does not allow, or a dot or space at its end. Asked on every system, since a set or a
 /// picture written on Linux is opened on the lab's Windows PCs (docs/security.md).
 pub fn unkept_name(name: &std::ffi::OsStr) -> Option<Unkept> {
     let name = name.to_string_lossy();
     if name == "." || name == ".." {
         return None;
+    }
+    if let Some(c) = name.chars().find(|c| NOT_IN_NAMES.contains(c)) {
+        return Some(Unkept::Char(c));
     }
     if name.ends_with(['.', ' ']) {
         return Some(Unkept::DroppedEnd);
@@ -397,6 +413,9 @@ pub fn refuse_unkept_name(path: &Path) -> Result<(), String> {
         let shown_name = text(&name.to_string_lossy());
         match unkept_name(name) {
             Some(Unkept::Device) => return Err(crate::t!("err-name-windows-device", name = shown_name)),
+            Some(Unkept::Char(c)) => {
+                return Err(crate::t!("err-name-windows-char", name = shown_name, char = text(&c.to_string())));
+            }
             Some(Unkept::DroppedEnd) => {
                 let kept = text(name.to_string_lossy().trim_end_matches(['.', ' ']));
                 return Err(crate::t!("err-name-windows-end", name = shown_name, kept = kept));

@@ -194,10 +194,126 @@ pub fn process_alive(pid: u32) -> bool {
         }
         io::Error::last_os_error().raw_os_error() != Some(libc::ESRCH)
     }
-    #[cfg(not(unix))]
+    #[cfg(windows)]
+    {
+        use windows_sys::Win32::Foundation::{CloseHandle, ERROR_INVALID_PARAMETER, STILL_ACTIVE};
+        use windows_sys::Win32::System::Threading::{
+            GetExitCodeProcess, OpenProcess, PROCESS_QUERY_LIMITED_INFORMATION,
+        };
+        // SAFETY: no pointers; the handle returned, if any, is closed below.
+        let h = unsafe { OpenProcess(PROCESS_QUERY_LIMITED_INFORMATION, 0, pid) };
+        if h.is_null() {
+            // No process of that number (ERROR_INVALID_PARAMETER); any other refusal (one
+            // of another user's: access denied) is a process that runs.
+            return io::Error::last_os_error().raw_os_error() != Some(ERROR_INVALID_PARAMETER as i32);
+        }
+        let mut code = 0u32;
+        // SAFETY: `h` is the process handle just opened; `code` is a u32 it writes.
+        let asked = unsafe { GetExitCodeProcess(h, &mut code) } != 0;
+        // SAFETY: closed once.
+        unsafe { CloseHandle(h) };
+        !asked || code == STILL_ACTIVE as u32
+    }
+    #[cfg(not(any(unix, windows)))]
     {
         let _ = pid;
         true
+    }
+}
+
+/// Removes the file `name` in the folder `dir` when it is, through the handle that removes
+/// it, a regular file of this user's, reached under its own name (not a link; Wine opens a
+/// Unix link as the file it names, which a removal by name would remove): `true` when it
+/// did. For a killed write's temporary file ([`crate::formats::files::atomic_write`]).
+/// Unix: `O_NOFOLLOW`, the owner (this user's uid: a classmate's file planted with phonglab's
+/// naming is not), and `lstat` compared just before `unlink`, which never follows. Windows:
+/// opened with `FILE_FLAG_OPEN_REPARSE_POINT` and `DELETE`, its final path compared with
+/// its folder's, and deleted through the handle (`FileDispositionInfo`).
+pub fn remove_own_file(dir: &Path, name: &std::ffi::OsStr) -> bool {
+    let path = dir.join(name);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        let Ok(file) = open_no_follow(&path) else { return false };
+        let (Ok(open), Ok(at)) = (file.metadata(), std::fs::symlink_metadata(&path)) else { return false };
+        // SAFETY: geteuid only reads the process's user.
+        let mine = open.uid() == unsafe { libc::geteuid() };
+        let same = at.file_type().is_file() && at.dev() == open.dev() && at.ino() == open.ino();
+        open.is_file() && mine && same && std::fs::remove_file(&path).is_ok()
+    }
+    #[cfg(windows)]
+    {
+        windows_remove_own_file(dir, name, &path).unwrap_or(false)
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        let _ = path;
+        false
+    }
+}
+
+/// [`remove_own_file`] on Windows; `Err` or `Ok(false)`: not removed.
+#[cfg(windows)]
+fn windows_remove_own_file(dir: &Path, name: &std::ffi::OsStr, path: &Path) -> io::Result<bool> {
+    use std::os::windows::fs::{MetadataExt, OpenOptionsExt};
+    use std::os::windows::io::AsRawHandle;
+    use windows_sys::Win32::Foundation::GENERIC_READ;
+    use windows_sys::Win32::Storage::FileSystem::{
+        DELETE, FILE_DISPOSITION_INFO, FILE_FLAG_BACKUP_SEMANTICS, FILE_FLAG_OPEN_REPARSE_POINT, FileDispositionInfo,
+        SetFileInformationByHandle,
+    };
+    /// `FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE`.
+    const SHARE_ALL: u32 = 7;
+    /// `FILE_ATTRIBUTE_REPARSE_POINT`.
+    const REPARSE_POINT: u32 = 0x400;
+    let file = File::options()
+        .access_mode(GENERIC_READ | DELETE)
+        .share_mode(SHARE_ALL)
+        .custom_flags(FILE_FLAG_OPEN_REPARSE_POINT)
+        .open(path)?;
+    let meta = file.metadata()?;
+    if !meta.is_file() || meta.file_attributes() & REPARSE_POINT != 0 {
+        return Ok(false);
+    }
+    let folder =
+        File::options().access_mode(0).share_mode(SHARE_ALL).custom_flags(FILE_FLAG_BACKUP_SEMANTICS).open(dir)?;
+    let (Some(at), Some(folder)) = (final_path(&file), final_path(&folder)) else { return Ok(false) };
+    let plain = |p: &Path| p.to_string_lossy().to_lowercase().trim_end_matches('\\').to_string();
+    if plain(&at) != plain(&folder.join(name)) {
+        return Ok(false);
+    }
+    let info = FILE_DISPOSITION_INFO { DeleteFile: true };
+    // SAFETY: the handle is open with DELETE access through the call; `info` is read only.
+    let ok = unsafe {
+        SetFileInformationByHandle(
+            file.as_raw_handle(),
+            FileDispositionInfo,
+            (&raw const info).cast(),
+            size_of::<FILE_DISPOSITION_INFO>() as u32,
+        )
+    };
+    Ok(ok != 0)
+}
+
+/// The path Windows gives the open `file` (links resolved; `\\?\` form).
+#[cfg(windows)]
+fn final_path(file: &File) -> Option<std::path::PathBuf> {
+    use std::os::windows::ffi::OsStringExt;
+    use std::os::windows::io::AsRawHandle;
+    use windows_sys::Win32::Storage::FileSystem::GetFinalPathNameByHandleW;
+    let mut buf = vec![0u16; 1024];
+    loop {
+        let len = u32::try_from(buf.len()).ok()?;
+        // SAFETY: the handle is open for the call; `buf` holds `len` u16s.
+        let n = unsafe { GetFinalPathNameByHandleW(file.as_raw_handle(), buf.as_mut_ptr(), len, 0) } as usize;
+        if n == 0 {
+            return None;
+        }
+        if n < buf.len() {
+            buf.truncate(n);
+            return Some(std::ffi::OsString::from_wide(&buf).into());
+        }
+        buf.resize(n + 1, 0);
     }
 }
 

@@ -20,6 +20,7 @@ pub const MAX_CODE_BYTES: u64 = 16 * MAX_SCENE_BYTES;
 /// `t!("file-kind-scenes")`). The messages are in the current language.
 pub fn read_capped(path: &Path, cap: u64, what: &str) -> Result<Vec<u8>, String> {
     let shown = crate::formats::files::reasons::shown(path);
+    refuse_device_name(path, &shown)?;
     read_capped_or(path, cap).map_err(|e| match e {
         Unread::Io(e) => {
             t!("read-cannot", path = shown.clone(), reason = crate::formats::files::reasons::io_reason(&e))
@@ -40,9 +41,21 @@ pub enum Unread {
     TooLarge(u64),
 }
 
+/// Windows: refuses an input named like a device (`CON`, `nul.toml`, `COM1`: Windows opens
+/// the device, and said only "Invalid handle (os error 6)"), in words, before it is opened.
+/// Elsewhere such a name is a file like any other.
+fn refuse_device_name(path: &Path, shown: &str) -> Result<(), String> {
+    use crate::formats::files::atomic_write::{Unkept, unkept_name};
+    let device = path.file_name().is_some_and(|n| unkept_name(n) == Some(Unkept::Device));
+    if cfg!(windows) && device { Err(t!("read-device-name", path = shown)) } else { Ok(()) }
+}
+
 /// [`read_capped`], with the reason as a value (for callers that treat each differently,
 /// as the session does).
 pub fn read_capped_or(path: &Path, cap: u64) -> Result<Vec<u8>, Unread> {
+    if refuse_device_name(path, "").is_err() {
+        return Err(Unread::NotAFile);
+    }
     // Windows cannot open a folder as a file (access denied): said as what it is.
     let refused = |e: std::io::Error| match std::fs::metadata(path) {
         Ok(m) if m.is_dir() => Unread::NotAFile,
@@ -56,6 +69,7 @@ pub fn read_capped_or(path: &Path, cap: u64) -> Result<Vec<u8>, Unread> {
 /// between a look at the folder and the read is never followed.
 pub fn read_submission(path: &Path, cap: u64, what: &str) -> Result<Vec<u8>, String> {
     let shown = crate::formats::files::reasons::shown(path);
+    refuse_device_name(path, &shown)?;
     let opened = crate::formats::files::os::open_no_follow(path).map_err(|e| {
         if crate::formats::files::os::is_link_refused(&e) {
             t!("read-link-refused", path = shown.clone())

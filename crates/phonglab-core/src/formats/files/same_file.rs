@@ -210,6 +210,14 @@ mod tests {
         for end in ["rep.md.", "set ", "a. ", "x..."] {
             assert_eq!(unkept_name(OsStr::new(end)), Some(Unkept::DroppedEnd), "{end}");
         }
+        // Issue 59, finding 6: an alternate data stream (`out.png:x`) and the characters
+        // Windows refuses.
+        for (name, c) in [("out.png:x", ':'), ("a?.png", '?'), ("*.md", '*'), ("a<b", '<'), ("a>b", '>')] {
+            assert_eq!(unkept_name(OsStr::new(name)), Some(Unkept::Char(c)), "{name}");
+        }
+        for (name, c) in [("a|b", '|'), ("say \"hi\".md", '"')] {
+            assert_eq!(unkept_name(OsStr::new(name)), Some(Unkept::Char(c)), "{name}");
+        }
         for fine in ["console.png", "nully.txt", "com10", "lpt", "aux_files", ".", "..", "con-sheet.md", ".hidden"] {
             assert_eq!(unkept_name(OsStr::new(fine)), None, "{fine}");
         }
@@ -218,6 +226,8 @@ mod tests {
         let (report, marks) = (dir.join("rep.md"), dir.join("rep.md."));
         let e = refuse_onto(&[&report, &marks], &[]).unwrap_err();
         assert!(e.contains("rep.md.") && e.contains("Windows drops") && e.contains("rep.md"), "{e}");
+        let e = refuse_onto(&[&dir.join("out.png:x")], &[]).unwrap_err();
+        assert!(e.contains("out.png:x holds “:”, which Windows does not allow in a file name"), "{e}");
         let e = refuse_onto(&[&dir.join("con.png")], &[]).unwrap_err();
         assert!(e.contains("con.png") && e.contains("a name Windows keeps for a device; choose another"), "{e}");
         // A folder phonglab would make, not one that is there (a Linux folder named aux).

@@ -1,0 +1,181 @@
+//! A file moved or removed as the very file it is, never as whatever its name leads to: it
+//! is opened itself ([`open`]: a link is not followed), its caller checks it through that
+//! handle (its identity, size and bytes), and only then is it moved ([`Opened::rename_no_replace`])
+//! or removed ([`Opened::remove`]).
+//!
+//! - Windows: opened with `FILE_FLAG_OPEN_REPARSE_POINT` (a link is opened itself, and
+//!   refused), sharing everything, with `DELETE` access; the move and the removal go through
+//!   that handle (`SetFileInformationByHandle`: `FileRenameInfo`, not replacing;
+//!   `FileDispositionInfo`), so they act on the file the caller checked, whatever was put at
+//!   its name since. Under Wine a Unix link opens as the file it names (and a rename or a
+//!   removal by its name moves or removes that file): its handle has that file's identity,
+//!   and it is reached under another name than the one asked for, so it is refused.
+//! - Unix: opened with `O_NOFOLLOW` (a link is refused by the open itself); a move or a
+//!   removal is by name (`rename`, `unlink`: neither follows the last component), asked
+//!   first (`lstat`: the same device and inode as the handle), and a move is checked again
+//!   at its new name and undone where something else went.
+
+use std::fs::File;
+use std::io;
+use std::path::{Path, PathBuf};
+
+/// A file opened itself, to be checked through [`Opened::file`], then moved or removed.
+pub struct Opened {
+    file: File,
+    /// The name it was opened at (Unix: asked again before the move or the removal;
+    /// Windows acts through the handle alone).
+    #[cfg_attr(windows, allow(dead_code))]
+    path: PathBuf,
+}
+
+/// Opens the file at `path` itself (see the module's documentation). `Err` where nothing
+/// is there, where it is a link (Windows: also one reached under another name, Wine's Unix
+/// link), or where it cannot be opened (Windows: another program holds it open without
+/// sharing its deletion: `ERROR_SHARING_VIOLATION`).
+pub fn open(path: &Path) -> io::Result<Opened> {
+    #[cfg(windows)]
+    let file = windows::open(path)?;
+    #[cfg(not(windows))]
+    let file = crate::platform::os::open_no_follow(path)?;
+    Ok(Opened { file, path: path.to_path_buf() })
+}
+
+impl Opened {
+    /// The open file, to be checked (its identity, size and bytes) before it is acted on.
+    pub fn file(&self) -> &File {
+        &self.file
+    }
+
+    /// Removes the file opened: `Ok(true)`. Unix: only where its name still holds it
+    /// (`Ok(false)` otherwise: nothing removed). Windows: marked for deletion through the
+    /// handle, gone when the last handle to it is closed.
+    pub fn remove(self) -> io::Result<bool> {
+        #[cfg(windows)]
+        {
+            windows::remove(&self.file).map(|()| true)
+        }
+        #[cfg(not(windows))]
+        {
+            if !unix::holds(&self.path, &self.file) {
+                return Ok(false);
+            }
+            std::fs::remove_file(&self.path).map(|()| true)
+        }
+    }
+
+    /// Moves the file opened to `to`, where nothing is (not even a link; `AlreadyExists`
+    /// otherwise): `Ok(true)`. Unix: only where its name still holds it, and checked at `to`
+    /// afterwards: `Ok(false)` where something else was there (moved back: nothing moved).
+    pub fn rename_no_replace(self, to: &Path) -> io::Result<bool> {
+        #[cfg(windows)]
+        {
+            windows::rename_no_replace(&self.file, to).map(|()| true)
+        }
+        #[cfg(not(windows))]
+        {
+            if !unix::holds(&self.path, &self.file) {
+                return Ok(false);
+            }
+            crate::platform::os::rename_no_replace(&self.path, to)?;
+            if unix::holds(to, &self.file) {
+                return Ok(true);
+            }
+            let _ = crate::platform::os::rename_no_replace(to, &self.path);
+            Ok(false)
+        }
+    }
+}
+
+#[cfg(not(windows))]
+mod unix {
+    use std::fs::File;
+    use std::path::Path;
+
+    /// Does the name `path` hold the open `file` itself (not a link to it)?
+    pub fn holds(path: &Path, file: &File) -> bool {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::MetadataExt;
+            let (Ok(at), Ok(open)) = (std::fs::symlink_metadata(path), file.metadata()) else { return false };
+            !at.file_type().is_symlink() && at.dev() == open.dev() && at.ino() == open.ino()
+        }
+        #[cfg(not(unix))]
+        {
+            let _ = file;
+            std::fs::symlink_metadata(path).is_ok_and(|m| !m.file_type().is_symlink())
+        }
+    }
+}
+
+#[cfg(windows)]
+mod windows {
+    use std::fs::File;
+    use std::io;
+    use std::os::windows::ffi::OsStrExt;
+    use std::os::windows::fs::{MetadataExt, OpenOptionsExt};
+    use std::os::windows::io::AsRawHandle;
+    use std::path::Path;
+
+    use windows_sys::Win32::Foundation::GENERIC_READ;
+    use windows_sys::Win32::Storage::FileSystem::{
+        DELETE, FILE_DISPOSITION_INFO, FILE_FLAG_OPEN_REPARSE_POINT, FILE_RENAME_INFO, FileDispositionInfo,
+        FileRenameInfo, SetFileInformationByHandle,
+    };
+
+    /// `FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE`.
+    const SHARE_ALL: u32 = 7;
+    /// `FILE_ATTRIBUTE_REPARSE_POINT`.
+    const REPARSE_POINT: u32 = 0x400;
+    /// `ERROR_CANT_RESOLVE_FILENAME`: a link, refused (as `open_no_follow` says it).
+    const LINK_REFUSED: i32 = 1921;
+
+    pub fn open(path: &Path) -> io::Result<File> {
+        let file = File::options()
+            .access_mode(GENERIC_READ | DELETE)
+            .share_mode(SHARE_ALL)
+            .custom_flags(FILE_FLAG_OPEN_REPARSE_POINT)
+            .open(path)?;
+        let link = file.metadata()?.file_attributes() & REPARSE_POINT != 0;
+        if link || !crate::platform::links::opened_under_its_own_name(&file, path) {
+            return Err(io::Error::from_raw_os_error(LINK_REFUSED));
+        }
+        Ok(file)
+    }
+
+    pub fn remove(file: &File) -> io::Result<()> {
+        let info = FILE_DISPOSITION_INFO { DeleteFile: true };
+        let size = size_of::<FILE_DISPOSITION_INFO>() as u32;
+        // SAFETY: the handle is open (with DELETE access) through the call; `info` is a
+        // FILE_DISPOSITION_INFO of `size` bytes, read only during it.
+        let ok = unsafe {
+            SetFileInformationByHandle(file.as_raw_handle(), FileDispositionInfo, (&raw const info).cast(), size)
+        };
+        if ok == 0 { Err(io::Error::last_os_error()) } else { Ok(()) }
+    }
+
+    pub fn rename_no_replace(file: &File, to: &Path) -> io::Result<()> {
+        let to = std::path::absolute(to)?;
+        let name: Vec<u16> = to.as_os_str().encode_wide().collect();
+        let name_bytes = name.len() * size_of::<u16>();
+        let size = size_of::<FILE_RENAME_INFO>() + name_bytes;
+        // A buffer of u64s: aligned for FILE_RENAME_INFO, with room for the name after it.
+        let mut buf = vec![0u64; size.div_ceil(8)];
+        let info = buf.as_mut_ptr().cast::<FILE_RENAME_INFO>();
+        // SAFETY: `buf` holds `size` bytes, aligned for FILE_RENAME_INFO; the name is copied
+        // into the space from its FileName field on, which `size` counts; the handle is open
+        // with DELETE access through the call, which only reads the buffer.
+        let ok = unsafe {
+            (*info).Anonymous.ReplaceIfExists = false;
+            (*info).RootDirectory = std::ptr::null_mut();
+            (*info).FileNameLength = u32::try_from(name_bytes).map_err(io::Error::other)?;
+            std::ptr::copy_nonoverlapping(name.as_ptr(), (&raw mut (*info).FileName).cast::<u16>(), name.len());
+            SetFileInformationByHandle(
+                file.as_raw_handle(),
+                FileRenameInfo,
+                info.cast_const().cast(),
+                u32::try_from(size).map_err(io::Error::other)?,
+            )
+        };
+        if ok == 0 { Err(io::Error::last_os_error()) } else { Ok(()) }
+    }
+}
