@@ -107,7 +107,9 @@ impl Cli {
             for name in &names {
                 match parent.find_subcommand(name.as_str()) {
                     Some(sub) => parent = sub.clone(),
-                    None => exit_escaped(&arg_errors::unknown_command(&mut parent, name, "arg-error-unknown-command"), None),
+                    None => {
+                        exit_escaped(&arg_errors::unknown_command(&mut parent, name, "arg-error-unknown-command"), None)
+                    }
                 }
             }
             crate::cli::help::print_help_of(&mut cmd, names.into_iter());

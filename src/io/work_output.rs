@@ -237,7 +237,7 @@ mod tests {
     fn an_output_at_a_link_to_phonglabs_own_output_is_refused_as_a_link() {
         let dir = crate::io::atomic_write::tests::fresh_dir("output-link");
         let (real, link) = (dir.join("last-year.csv"), dir.join("marks.csv"));
-        std::fs::write(&real, format!("{MARKS_HEADER}\na,right,,,\n")).unwrap();
+        std::fs::write(&real, format!("{}\na,right,,,\n", marks_header(','))).unwrap();
         if !crate::io::atomic_write::tests::plant_link(&real, &link) {
             eprintln!("no symbolic link can be made here: nothing to test");
             return;
@@ -245,7 +245,7 @@ mod tests {
         let e = refuse(&[(&link, Kind::Marks)], None).unwrap_err();
         assert!(e.contains("marks.csv") && e.contains("link"), "{e}");
         assert!(write(&link, Kind::Marks, None, b"new").is_err());
-        assert_eq!(std::fs::read(&real).unwrap(), format!("{MARKS_HEADER}\na,right,,,\n").as_bytes());
+        assert_eq!(std::fs::read(&real).unwrap(), format!("{}\na,right,,,\n", marks_header(',')).as_bytes());
         assert!(crate::platform::links::reached_through_link(&link), "the link is left");
     }
 

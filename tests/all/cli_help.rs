@@ -145,4 +145,3 @@ fn version_names_the_version_and_the_commit() {
     assert_eq!(text, format!("phonglab {} ({commit})\n", env!("CARGO_PKG_VERSION")));
     assert_eq!(phonglab::cli::VERSION, format!("{} ({commit})", env!("CARGO_PKG_VERSION")));
 }
-
