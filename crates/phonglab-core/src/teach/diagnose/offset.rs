@@ -11,6 +11,10 @@ use crate::teach::picture_match::apart;
 /// The side of the squares whose mean offsets are measured, in pixels.
 pub const BLOCK: usize = 16;
 
+/// How far the squares slide, in pixels: a quarter of [`BLOCK`], so that any square of
+/// [`BLOCK`] pixels shares at least (1 - 1/8)² of its pixels with one measured.
+const STEP: usize = BLOCK / 4;
+
 /// The least mean offset (levels, largest channel) of a square for the picture to be
 /// changed there. Measured (docs/guide.md): honest pictures (Mesa's, noise of ±3 and ±5,
 /// a pixel's shift, blur, resizing, JPEG of quality 90 and 95 of the blind set's right
@@ -73,10 +77,12 @@ pub fn largest_offset(picture: &[u8], covered: &[bool], image: &[u8], size: usiz
     let shift = aligned(picture, image, &on, size);
     let diff = |p: usize, c: usize| i32::from(image[shifted(p, shift, size) * 4 + c]) - i32::from(picture[p * 4 + c]);
     let median: Vec<i32> = (0..3).map(|c| median_of((0..size * size).filter(|&p| on[p]).map(|p| diff(p, c)))).collect();
-    let cells = size.div_ceil(BLOCK);
+    // The squares slide by a quarter of their side: a block painted across a fixed grid's
+    // squares (a 16-pixel square from (248, 248) on a 16-pixel grid) would spread over four
+    // of them and show a quarter of its offset in each.
+    let starts: Vec<usize> = (0..size.saturating_sub(BLOCK / 2)).step_by(STEP).collect();
     let mut best: Option<Offset> = None;
-    for cell in 0..cells * cells {
-        let (x0, y0) = ((cell % cells) * BLOCK, (cell / cells) * BLOCK);
+    for (x0, y0) in starts.iter().flat_map(|&y| starts.iter().map(move |&x| (x, y))) {
         let (x1, y1) = ((x0 + BLOCK).min(size) - 1, (y0 + BLOCK).min(size) - 1);
         let pixels: Vec<usize> =
             (y0..=y1).flat_map(|y| (x0..=x1).map(move |x| y * size + x)).filter(|&p| on[p]).collect();
@@ -91,6 +97,22 @@ pub fn largest_offset(picture: &[u8], covered: &[bool], image: &[u8], size: usiz
         }
     }
     best
+}
+
+/// The mean offset (levels, the channel furthest off, signed) of `image` from `picture`
+/// (both RGBA8, `size` square, the picture covering `covered`) over the square of `at`,
+/// in place, the object's median offset taken away as [`largest_offset`] takes it.
+pub fn offset_over(picture: &[u8], covered: &[bool], image: &[u8], at: Offset, size: usize) -> f64 {
+    let on = inside(covered, size);
+    let diff = |p: usize, c: usize| i32::from(image[p * 4 + c]) - i32::from(picture[p * 4 + c]);
+    let median: Vec<i32> = (0..3).map(|c| median_of((0..size * size).filter(|&p| on[p]).map(|p| diff(p, c)))).collect();
+    let pixels: Vec<usize> = (at.from.1..=at.to.1)
+        .flat_map(|y| (at.from.0..=at.to.0).map(move |x| y * size + x))
+        .filter(|&p| on[p])
+        .collect();
+    let mean =
+        |c: usize| pixels.iter().map(|&p| f64::from(diff(p, c) - median[c])).sum::<f64>() / pixels.len().max(1) as f64;
+    (0..3).map(mean).max_by(|a, b| a.abs().total_cmp(&b.abs())).unwrap_or(0.0)
 }
 
 /// The median of `values` (levels, −255 to 255); 0 when there are none.
