@@ -20,6 +20,7 @@ mod calls;
 mod change;
 mod colours;
 mod drawing;
+mod falloff;
 mod fit;
 mod footprint;
 mod levels;
@@ -270,6 +271,7 @@ pub fn drawings_at_most(right: &Drawing) -> usize {
         lights: right.scene.lights.len(),
         fitted: [[1.0; 3]; colours::TERMS],
         scene: [[0.0; 3]; colours::TERMS],
+        shown: true,
     };
     let mut every = values::Values::default();
     for (i, l) in right.scene.lights.iter().enumerate().take(crate::model::scene::MAX_LIGHTS) {
@@ -280,7 +282,12 @@ pub fn drawings_at_most(right: &Drawing) -> usize {
     every.shininess = Some((right.scene.material.shininess + 1.0, right.scene.material.shininess));
     let sides = Sides { fitted: [[[1.0; 3]; 4]; 2], scene: [[[0.0; 3]; 4]; 2], shininess: [(0.0, 0.0); 2] };
     let at = At { emission: [1.0; 3], colours: Some(colours), values: every, sides: Some(sides), ..At::default() };
-    offered(right, at).len() + 1 + colours::drawings(right) + values::drawings(right) + sides::drawings(right)
+    offered(right, at).len()
+        + 1
+        + colours::drawings(right)
+        + values::drawings(right)
+        + falloff::drawings(right)
+        + sides::drawings(right)
 }
 
 /// Compares `image` (RGBA8, `size` pixels square) with `right` drawn right and with each
@@ -311,6 +318,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         let emission = fit::emission(&picture, &covered, image, size);
         let colours = colours::fit(right, &covered, image, size)?;
         let values = values::fit(right, image, size)?;
+        let values = falloff::shown(right, (&picture, &covered), colours.as_ref(), values, image, size)?;
         let sides = sides::fit(right, &covered, image, size)?;
         for (mistake, at) in offered(right, At { light: 0, emission, colours, values, sides, given }) {
             // A colour fitted from the picture may draw the object in the background's
@@ -338,6 +346,12 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
     if d.shape.is_none() && d.verdict == Verdict::Right {
         shown_subtly(&mut d, subtle);
     }
+    if d.shape.is_none()
+        && d.verdict == Verdict::Right
+        && let Some(t) = colours_shown(right, &d, image, size)?
+    {
+        (d.verdict, d.causes, d.lossy) = (Verdict::Wrong, vec![t], None);
+    }
     if d.shape.is_none() && d.verdict == Verdict::Right {
         let region = outline::largest_region(&d.picture, &covered, image, bg, size);
         d.shape = region.filter(|r| r.pixels >= REGION_AT).map(Shape::Region);
@@ -347,8 +361,13 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         d.shape = marks.filter(|m| m.pixels >= MARKS_AT).map(Shape::Marks);
     }
     if d.shape.is_none() && d.verdict == Verdict::Right {
-        let off = offset::largest_offset(&d.picture, &covered, image, size);
-        d.shape = off.filter(|o| o.levels.abs() >= OFFSET_AT).map(Shape::Offset);
+        let off = offset::largest_offset(&d.picture, &covered, image, size).filter(|o| o.levels.abs() >= OFFSET_AT);
+        if let Some(o) = off {
+            match offset_explained(right, &d, (&covered, o), image, size)? {
+                Some(t) => (d.verdict, d.causes, d.lossy) = (Verdict::Wrong, vec![t], None),
+                None => d.shape = Some(Shape::Offset(o)),
+            }
+        }
     }
     if d.shape.is_some() {
         (d.verdict, d.causes, d.lossy) = (Verdict::Unexplained, Vec::new(), None);
@@ -417,6 +436,52 @@ impl Found {
         self.tried.push(t);
         Ok((wrong, wrong_covered))
     }
+}
+
+/// `colours-differ`, its match measured, when the picture shows the colours fitted from it
+/// ([`Colours::shown`]) though the right picture explains it: a colour a few levels off (the
+/// Phong demo's diffuse 0.388 for 0.4) moves each pixel within the share's tolerance, and
+/// the picture is still nearer the fitted colours' drawing than the scene's by far.
+fn colours_shown(right: &Drawing, d: &Diagnosis, image: &[u8], size: usize) -> Result<Option<Tried>, SceneError> {
+    let shown = |t: &&Tried| t.id() == "colours-differ" && t.at.colours.is_some_and(|c| c.shown);
+    let Some(t) = d.tried.iter().find(shown) else { return Ok(None) };
+    let mut wrong = right.clone();
+    if !(MISTAKES[t.mistake].apply)(&mut wrong, t.at) {
+        return Ok(None);
+    }
+    let (_, rgba, covered) = wrong.draw(size)?;
+    Ok(Some(Tried { matched: Some(compare(&rgba, &covered, image, right.background8(), size)), ..*t }))
+}
+
+/// The mistake with a value fitted from `image` (a shininess, an attenuation, the colours)
+/// whose picture moves the square of `off` as the image does ([`OFFSET_AT`]) and leaves no
+/// square of the image evenly off its own picture: a shininess 10 % off on the three-lights
+/// scene brightens the highlights' surround by a few levels, each pixel within the share's
+/// tolerance, and is that mistake, not a square painted over. The one whose picture leaves
+/// the least offset, its match measured; `None` when none explains it.
+fn offset_explained(
+    right: &Drawing,
+    d: &Diagnosis,
+    (covered, off): (&[bool], Offset),
+    image: &[u8],
+    size: usize,
+) -> Result<Option<Tried>, SceneError> {
+    let mut best: Option<(f64, Tried)> = None;
+    for t in d.tried.iter().filter(|t| t.fitted()) {
+        let mut wrong = right.clone();
+        if !(MISTAKES[t.mistake].apply)(&mut wrong, t.at) {
+            continue;
+        }
+        let (_, rgba, wrong_covered) = wrong.draw(size)?;
+        let own = offset::offset_over(&d.picture, covered, &rgba, off, size);
+        let left = offset::largest_offset(&rgba, &wrong_covered, image, size).map_or(0.0, |o| o.levels.abs());
+        let moves = own.abs() >= OFFSET_AT && own.signum() == off.levels.signum();
+        if moves && left < OFFSET_AT && best.is_none_or(|(l, _)| left < l) {
+            let matched = compare(&rgba, &wrong_covered, image, right.background8(), size);
+            best = Some((left, Tried { matched: Some(matched), ..*t }));
+        }
+    }
+    Ok(best.map(|(_, t)| t))
 }
 
 /// The change of the whole picture's levels ([`levels`]) that explains `image` where the

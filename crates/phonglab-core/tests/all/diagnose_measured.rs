@@ -1,0 +1,59 @@
+//! Issue 57's measured cases of `phonglab diagnose` (scripts/diagnose-table.sh): a light's or
+//! a material's colour a few levels off is said as that colour, not as an attenuation (the
+//! Phong demo has none); a shininess 10 % off is that shininess, not a square painted over.
+
+use phonglab_core::teach::diagnose::{Diagnosis, Drawing, Verdict, diagnose};
+
+const SIZE: usize = 256;
+
+/// A shipped scene (`assets/scenes/NAME.toml`) drawn as `phonglab diagnose` draws it.
+fn shipped(name: &str) -> Drawing {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../assets/scenes/");
+    let text = std::fs::read_to_string(format!("{path}{name}.toml")).expect("a shipped scene");
+    let doc = phonglab_core::Document::from_toml(&text).expect("a scene");
+    let mesh = doc.view.mesh();
+    let mut d = Drawing::of(&doc.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    d.inside = doc.view.mesh_inside();
+    d
+}
+
+/// The causes with their scores, for a failure's message.
+fn said(d: &Diagnosis) -> String {
+    let causes: Vec<_> = d.causes.iter().map(|t| (t.label(), t.matched.map(|m| m.score))).collect();
+    format!("{:?} {causes:?} shape {:?}", d.verdict, d.shape)
+}
+
+/// `right` with `change` made, diagnosed against `right`.
+fn changed(right: &Drawing, change: impl Fn(&mut Drawing)) -> Diagnosis {
+    let mut wrong = right.clone();
+    change(&mut wrong);
+    diagnose(right, &wrong.draw(SIZE).expect("drawn").1, SIZE).expect("diagnosed")
+}
+
+#[test]
+fn a_colour_a_few_levels_off_is_that_colour_not_an_attenuation() {
+    // Each was named an attenuation with confidence: linear (on a scene with none), constant
+    // 1.03, quadratic.
+    let cases: [(&str, &dyn Fn(&mut Drawing)); 3] = [
+        ("phong-demo", &|d| d.scene.material.diffuse.x = 0.388),
+        ("three-lights", &|d| d.scene.lights[1].diffuse.y = 0.87),
+        ("spotlight", &|d| d.scene.lights[0].diffuse -= glam::DVec4::new(6.0, 6.0, 6.0, 0.0) / 255.0),
+    ];
+    for (name, change) in cases {
+        let d = changed(&shipped(name), change);
+        assert_eq!(d.verdict, Verdict::Wrong, "{name}: {}", said(&d));
+        assert_eq!(d.causes[0].id(), "colours-differ", "{name}: {}", said(&d));
+        assert!(d.causes.iter().all(|t| !t.id().starts_with("attenuation-")), "{name}: {}", said(&d));
+    }
+}
+
+#[test]
+fn a_shininess_ten_percent_off_is_the_shininess_not_a_square_painted_over() {
+    // Three lights with 66 or 54 for 60: was "256 pixels ... evenly lighter", unexplained.
+    let right = shipped("three-lights");
+    for shininess in [66.0, 54.0] {
+        let d = changed(&right, |d| d.scene.material.shininess = shininess);
+        assert_eq!(d.verdict, Verdict::Wrong, "{shininess}: {}", said(&d));
+        assert_eq!(d.causes[0].id(), "shininess-differs", "{shininess}: {}", said(&d));
+    }
+}
