@@ -57,3 +57,33 @@ fn a_shininess_ten_percent_off_is_the_shininess_not_a_square_painted_over() {
         assert_eq!(d.causes[0].id(), "shininess-differs", "{shininess}: {}", said(&d));
     }
 }
+
+#[test]
+fn a_right_picture_moved_half_a_pixel_or_blurred_is_right_as_saved_lossily() {
+    // Each pixel the mean of itself and its neighbour to the right (moved half a pixel), or
+    // of its 3 x 3 weighted 1-2-1 (a blur): was unexplained, then "thin marks".
+    let right = shipped("spotlight");
+    let rgba = right.draw(SIZE).expect("drawn").1;
+    let at = |x: usize, y: usize, c: usize| u32::from(rgba[(y.min(SIZE - 1) * SIZE + x.min(SIZE - 1)) * 4 + c]);
+    let half: Vec<u8> = (0..SIZE * SIZE * 4)
+        .map(|i| {
+            let (p, c) = (i / 4, i % 4);
+            if c == 3 { 255 } else { ((at(p % SIZE, p / SIZE, c) + at(p % SIZE + 1, p / SIZE, c) + 1) / 2) as u8 }
+        })
+        .collect();
+    let blurred: Vec<u8> = (0..SIZE * SIZE * 4)
+        .map(|i| {
+            let (p, c) = (i / 4, i % 4);
+            let (x, y) = (p % SIZE, p / SIZE);
+            let w = [1, 2, 1];
+            let near = |k: usize| at((x + k % 3).saturating_sub(1), (y + k / 3).saturating_sub(1), c);
+            let sum: u32 = (0..9).map(|k| w[k % 3] * w[k / 3] * near(k)).sum();
+            if c == 3 { 255 } else { ((sum + 8) / 16) as u8 }
+        })
+        .collect();
+    for (what, image) in [("blurred", blurred), ("half a pixel", half)] {
+        let d = diagnose(&right, &image, SIZE).expect("diagnosed");
+        assert_eq!(d.verdict, Verdict::Right, "{what}: {}", said(&d));
+        assert!(d.lossy.is_some(), "{what}: {}", said(&d));
+    }
+}

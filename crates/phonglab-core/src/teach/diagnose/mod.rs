@@ -46,7 +46,7 @@ pub use within::{ROUNDING, Within};
 
 use crate::model::error::SceneError;
 use crate::raster::render::Renderer;
-use crate::teach::picture_match::{LOSSY, Match, compare, compare_within};
+use crate::teach::picture_match::{LOSSY, Match, TOLERANCE, blended_share, compare, compare_within};
 
 /// The share of the object's pixels the right picture must explain for "right". Measured
 /// (docs/guide.md): the right picture shifted a pixel with 8-bit noise of ±2 scores 1;
@@ -348,7 +348,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
     }
     if d.shape.is_none()
         && d.verdict == Verdict::Right
-        && let Some(t) = colours_shown(right, &d, image, size)?
+        && let Some(t) = colours_shown(right, &d, &covered, image, size)?
     {
         (d.verdict, d.causes, d.lossy) = (Verdict::Wrong, vec![t], None);
     }
@@ -438,19 +438,39 @@ impl Found {
     }
 }
 
-/// `colours-differ`, its match measured, when the picture shows the colours fitted from it
-/// ([`Colours::shown`]) though the right picture explains it: a colour a few levels off (the
-/// Phong demo's diffuse 0.388 for 0.4) moves each pixel within the share's tolerance, and
-/// the picture is still nearer the fitted colours' drawing than the scene's by far.
-fn colours_shown(right: &Drawing, d: &Diagnosis, image: &[u8], size: usize) -> Result<Option<Tried>, SceneError> {
-    let shown = |t: &&Tried| t.id() == "colours-differ" && t.at.colours.is_some_and(|c| c.shown);
-    let Some(t) = d.tried.iter().find(shown) else { return Ok(None) };
-    let mut wrong = right.clone();
-    if !(MISTAKES[t.mistake].apply)(&mut wrong, t.at) {
+/// When the picture shows the colours fitted from it ([`Colours::shown`]) though the right
+/// picture explains it (a colour a few levels off, the Phong demo's diffuse 0.388 for 0.4,
+/// moves each pixel within the share's tolerance, and the picture is still nearer the
+/// fitted colours' drawing than the scene's by far): of the mistakes with values fitted
+/// from the picture (`colours-differ`, a shininess, an attenuation), the one whose drawing
+/// is nearest it in place (a shininess 10 % off is shown by a specular colour fitted to it
+/// too), its match measured.
+fn colours_shown(
+    right: &Drawing,
+    d: &Diagnosis,
+    covered: &[bool],
+    image: &[u8],
+    size: usize,
+) -> Result<Option<Tried>, SceneError> {
+    let shown = |t: &Tried| t.id() == "colours-differ" && t.at.colours.is_some_and(|c| c.shown);
+    if !d.tried.iter().any(shown) {
         return Ok(None);
     }
-    let (_, rgba, covered) = wrong.draw(size)?;
-    Ok(Some(Tried { matched: Some(compare(&rgba, &covered, image, right.background8(), size)), ..*t }))
+    let flat = levels::inner_pixels(covered, size);
+    let mut best: Option<(f64, Tried)> = None;
+    for t in d.tried.iter().filter(|t| t.fitted()) {
+        let mut wrong = right.clone();
+        if !(MISTAKES[t.mistake].apply)(&mut wrong, t.at) {
+            continue;
+        }
+        let (_, rgba, wrong_covered) = wrong.draw(size)?;
+        let distance = levels::distance(&rgba, image, &flat);
+        if best.is_none_or(|(b, _)| distance < b) {
+            let matched = compare(&rgba, &wrong_covered, image, right.background8(), size);
+            best = Some((distance, Tried { matched: Some(matched), ..*t }));
+        }
+    }
+    Ok(best.map(|(_, t)| t))
 }
 
 /// The mistake with a value fitted from `image` (a shininess, an attenuation, the colours)
@@ -507,15 +527,23 @@ fn levels_changed(
 
 /// The right picture's match within [`LOSSY`] levels when it explains `image` as a picture
 /// saved lossily (JPEG) explains its original: at least [`RIGHT_AT`] of the object's pixels
-/// within [`LOSSY`] levels, and the right picture missing by less, on the mean, than every
+/// within [`LOSSY`] levels of a blend of their neighbours ([`blended_share`]), and the right
+/// picture missing by less, on the mean, than every
 /// mistake's picture that the scene shows (noise adds to each alike; a mistake adds its own
 /// difference to the right picture's), with no level lifted or lowered on the median by
 /// more than 1 (lossy saving adds noise, not a bias: a tone curve is not taken for it).
 fn lossy_right(d: &Diagnosis, covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Option<Match> {
     let loose = compare_within(&d.picture, covered, image, bg, size, LOSSY);
+    // A pixel may also be a blend of its neighbours (resized, blurred, antialiased, moved
+    // half a pixel): along the outline such a pixel is half the object's, half the
+    // background's, far from either.
+    let blended = Match { score: blended_share(&d.picture, covered, image, bg, size, LOSSY), ..loose };
     let closest = d.tried.iter().filter_map(|t| t.matched).map(|m| m.miss).fold(f64::INFINITY, f64::min);
     let unbiased = fit::lifts(&d.picture, covered, image, size).iter().all(|(all, _)| all.abs() <= 1);
-    (loose.score >= RIGHT_AT && d.right.miss < closest && unbiased).then_some(loose)
+    // A blend of the right picture's neighbours within the tolerance nearly everywhere is
+    // the right picture resampled or blurred, however near a value fitted to it comes.
+    let resampled = blended_share(&d.picture, covered, image, bg, size, TOLERANCE) >= RIGHT_AT;
+    (blended.score >= RIGHT_AT && (d.right.miss < closest || resampled) && unbiased).then_some(blended)
 }
 
 /// A "right" verdict made "wrong" by the mistakes the image shows over their footprints

@@ -70,12 +70,12 @@ fn shifted(p: usize, (dx, dy): (isize, isize), size: usize) -> usize {
 }
 
 /// The square of [`BLOCK`] (at least half of it inside the object) where `image` is most
-/// evenly off `picture` (both RGBA8, `size` square, the picture covering `covered`), the
+/// evenly off `picture` past a blend of the neighbours ([`past_blend`]) (both RGBA8, `size` square, the picture covering `covered`), the
 /// object's median offset taken away; `None` when no square holds enough of the object.
 pub fn largest_offset(picture: &[u8], covered: &[bool], image: &[u8], size: usize) -> Option<Offset> {
     let on = inside(covered, size);
     let shift = aligned(picture, image, &on, size);
-    let diff = |p: usize, c: usize| i32::from(image[shifted(p, shift, size) * 4 + c]) - i32::from(picture[p * 4 + c]);
+    let diff = |p: usize, c: usize| past_blend(image[shifted(p, shift, size) * 4 + c], picture, p, c, size);
     let median: Vec<i32> = (0..3).map(|c| median_of((0..size * size).filter(|&p| on[p]).map(|p| diff(p, c)))).collect();
     // The squares slide by a quarter of their side: a block painted across a fixed grid's
     // squares (a 16-pixel square from (248, 248) on a 16-pixel grid) would spread over four
@@ -101,10 +101,10 @@ pub fn largest_offset(picture: &[u8], covered: &[bool], image: &[u8], size: usiz
 
 /// The mean offset (levels, the channel furthest off, signed) of `image` from `picture`
 /// (both RGBA8, `size` square, the picture covering `covered`) over the square of `at`,
-/// in place, the object's median offset taken away as [`largest_offset`] takes it.
+/// in place and past a blend of the neighbours ([`past_blend`]), the object's median offset taken away as [`largest_offset`] takes it.
 pub fn offset_over(picture: &[u8], covered: &[bool], image: &[u8], at: Offset, size: usize) -> f64 {
     let on = inside(covered, size);
-    let diff = |p: usize, c: usize| i32::from(image[p * 4 + c]) - i32::from(picture[p * 4 + c]);
+    let diff = |p: usize, c: usize| past_blend(image[p * 4 + c], picture, p, c, size);
     let median: Vec<i32> = (0..3).map(|c| median_of((0..size * size).filter(|&p| on[p]).map(|p| diff(p, c)))).collect();
     let pixels: Vec<usize> = (at.from.1..=at.to.1)
         .flat_map(|y| (at.from.0..=at.to.0).map(move |x| y * size + x))
@@ -113,6 +113,22 @@ pub fn offset_over(picture: &[u8], covered: &[bool], image: &[u8], at: Offset, s
     let mean =
         |c: usize| pixels.iter().map(|&p| f64::from(diff(p, c) - median[c])).sum::<f64>() / pixels.len().max(1) as f64;
     (0..3).map(mean).max_by(|a, b| a.abs().total_cmp(&b.abs())).unwrap_or(0.0)
+}
+
+/// How far level `v` lies past the range channel `c` spans in the 3 x 3 around pixel `p`
+/// of `picture` (RGBA8, `size` square), signed (below it negative); 0 within it: a blend
+/// of the neighbours (a picture moved half a pixel, resized or blurred) is no offset, and a
+/// square painted over a flat part is off by its own levels.
+fn past_blend(v: u8, picture: &[u8], p: usize, c: usize, size: usize) -> i32 {
+    let (x, y) = (p % size, p / size);
+    let (mut low, mut high) = (u8::MAX, 0u8);
+    for qy in y.saturating_sub(1)..=(y + 1).min(size - 1) {
+        for qx in x.saturating_sub(1)..=(x + 1).min(size - 1) {
+            let w = picture[(qy * size + qx) * 4 + c];
+            (low, high) = (low.min(w), high.max(w));
+        }
+    }
+    if v < low { i32::from(v) - i32::from(low) } else { (i32::from(v) - i32::from(high)).max(0) }
 }
 
 /// The median of `values` (levels, −255 to 255); 0 when there are none.
@@ -167,6 +183,16 @@ mod tests {
         let o = largest_offset(&right, &covered, &picture(-12, 16, 0), size).expect("an offset");
         assert!(o.levels <= -OFFSET_AT, "{o:?}");
         assert!(o.from.0 <= 20 + 8 && o.to.0 >= 20 + 8, "{o:?}");
+        // 8 levels darker over 16 x 16 pixels from (24, 24), across the squares of a fixed
+        // 16-pixel grid (a quarter in each: 2 levels): found by the sliding squares.
+        let mut straddling = right.clone();
+        for p in (0..size * size).filter(|p| (24..40).contains(&(p % size)) && (24..40).contains(&(p / size))) {
+            for c in 0..3 {
+                straddling[p * 4 + c] -= 8;
+            }
+        }
+        let o = largest_offset(&right, &covered, &straddling, size).expect("an offset");
+        assert!(o.levels <= -6.0 && o.from == (24, 24), "{o:?}");
         // Noise of ±5 and the picture moved a pixel: nowhere near.
         let noisy = picture(0, 0, 5);
         let o = largest_offset(&right, &covered, &noisy, size).expect("an offset");
