@@ -39,7 +39,7 @@ fn wrongs(name: &str, right: &Drawing) -> Vec<(String, Drawing)> {
     match name {
         "spotlight" => {
             with("wrong-diffuse-6levels", &|d| {
-                d.scene.lights[0].diffuse = lower(d.scene.lights[0].diffuse, 6.0 / 255.0)
+                d.scene.lights[0].diffuse = lower(d.scene.lights[0].diffuse, 6.0 / 255.0);
             });
             with("wrong-red-0.97", &|d| d.scene.lights[0].diffuse.x = 0.97);
             with("wrong-linear-0.07", &|d| d.scene.lights[0].attenuation[1] = 0.07);

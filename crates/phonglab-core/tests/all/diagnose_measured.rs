@@ -23,6 +23,9 @@ fn said(d: &Diagnosis) -> String {
     format!("{:?} {causes:?} shape {:?}", d.verdict, d.shape)
 }
 
+/// A scene's name and a change made to it.
+type Case = (&'static str, &'static dyn Fn(&mut Drawing));
+
 /// `right` with `change` made, diagnosed against `right`.
 fn changed(right: &Drawing, change: impl Fn(&mut Drawing)) -> Diagnosis {
     let mut wrong = right.clone();
@@ -34,7 +37,7 @@ fn changed(right: &Drawing, change: impl Fn(&mut Drawing)) -> Diagnosis {
 fn a_colour_a_few_levels_off_is_that_colour_not_an_attenuation() {
     // Each was named an attenuation with confidence: linear (on a scene with none), constant
     // 1.03, quadratic.
-    let cases: [(&str, &dyn Fn(&mut Drawing)); 3] = [
+    let cases: [Case; 3] = [
         ("phong-demo", &|d| d.scene.material.diffuse.x = 0.388),
         ("three-lights", &|d| d.scene.lights[1].diffuse.y = 0.87),
         ("spotlight", &|d| d.scene.lights[0].diffuse -= glam::DVec4::new(6.0, 6.0, 6.0, 0.0) / 255.0),
@@ -68,7 +71,7 @@ fn a_right_picture_moved_half_a_pixel_or_blurred_is_right_as_saved_lossily() {
     let half: Vec<u8> = (0..SIZE * SIZE * 4)
         .map(|i| {
             let (p, c) = (i / 4, i % 4);
-            if c == 3 { 255 } else { ((at(p % SIZE, p / SIZE, c) + at(p % SIZE + 1, p / SIZE, c) + 1) / 2) as u8 }
+            if c == 3 { 255 } else { (at(p % SIZE, p / SIZE, c) + at(p % SIZE + 1, p / SIZE, c)).div_ceil(2) as u8 }
         })
         .collect();
     let blurred: Vec<u8> = (0..SIZE * SIZE * 4)
