@@ -97,6 +97,33 @@ pub fn compare_within(
     Match { score, pixels, worst, worst_levels, miss }
 }
 
+/// The share of the object's pixels (covered by `picture`, or unlike `bg` in `image` by more
+/// than [`TOLERANCE`]) where each channel of `image` lies within `tolerance` levels of the
+/// range that channel spans in the 3 x 3 around the pixel in `picture`: a blend of the
+/// pixel's neighbours, as resampling, a blur, antialiasing or a half-pixel shift makes
+/// (each pixel a weighted mean of its neighbours), and the ringing of a lossy saving
+/// within `tolerance`. Both RGBA8, `size` x `size`; 1 when the object has no pixels.
+pub fn blended_share(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize, tolerance: u8) -> f64 {
+    let (mut pixels, mut blended) = (0usize, 0usize);
+    for p in 0..size * size {
+        if !covered[p] && apart(&image[p * 4..p * 4 + 3], &bg) <= TOLERANCE {
+            continue;
+        }
+        pixels += 1;
+        let (x, y) = (p % size, p / size);
+        let around: Vec<usize> = (y.saturating_sub(1)..=(y + 1).min(size - 1))
+            .flat_map(|qy| (x.saturating_sub(1)..=(x + 1).min(size - 1)).map(move |qx| qy * size + qx))
+            .collect();
+        let within = (0..3).all(|c| {
+            let (low, high) =
+                around.iter().fold((u8::MAX, 0u8), |(l, h), &q| (l.min(picture[q * 4 + c]), h.max(picture[q * 4 + c])));
+            (low.saturating_sub(tolerance)..=high.saturating_add(tolerance)).contains(&image[p * 4 + c])
+        });
+        blended += usize::from(within);
+    }
+    if pixels == 0 { 1.0 } else { blended as f64 / pixels as f64 }
+}
+
 /// The most a difference image amplifies: past it, the 8-bit rounding's one level would
 /// look like a difference.
 pub const MAX_DIFFERENCE_GAIN: u32 = 64;

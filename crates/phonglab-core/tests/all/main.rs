@@ -16,6 +16,7 @@ mod check_whole;
 mod cost;
 mod diagnose;
 mod diagnose_cause;
+mod diagnose_measured;
 mod documents;
 mod exam;
 mod exercises;

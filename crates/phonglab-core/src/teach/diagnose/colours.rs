@@ -52,6 +52,10 @@ pub struct Colours {
     pub fitted: [[f64; 3]; TERMS],
     /// The scene's products.
     pub scene: [[f64; 3]; TERMS],
+    /// Whether the picture shows the fitted products where they draw another picture than
+    /// the scene's ([`shows_fitted`]): then a product that differs by less than a fit's
+    /// noise on any picture ([`ABSOLUTE`], [`RELATIVE`]) but past [`FINE`] differs.
+    pub shown: bool,
 }
 
 impl Colours {
@@ -63,7 +67,10 @@ impl Colours {
 
     /// The terms whose fitted product is not the scene's.
     pub fn differing(&self) -> Vec<usize> {
-        (0..1 + 3 * self.lights).filter(|&t| differs(self.fitted[t], self.scene[t])).collect()
+        let past = |t: usize| {
+            differs(self.fitted[t], self.scene[t]) || (self.shown && differs_finely(self.fitted[t], self.scene[t]))
+        };
+        (0..1 + 3 * self.lights).filter(|&t| past(t)).collect()
     }
 }
 
@@ -71,6 +78,50 @@ impl Colours {
 /// noise ([`ABSOLUTE`] and [`RELATIVE`] of it)?
 pub(super) fn differs(fitted: [f64; 3], scene: [f64; 3]) -> bool {
     (0..3).any(|c| (fitted[c] - scene[c]).abs() > ABSOLUTE + RELATIVE * scene[c].abs())
+}
+
+/// The least difference (absolute, and the share of the product) of a fitted product from
+/// the scene's that a picture showing the fitted products ([`Colours::shown`]) tells: a
+/// light's red typed 0.97 for 1 on the spotlight's gold teapot moves its diffuse product
+/// by 0.023, the Phong demo's diffuse 0.388 for 0.4 by 0.012.
+pub(super) const FINE: (f64, f64) = (0.004, 0.01);
+
+/// Does a fitted colour differ from the scene's in some channel past [`FINE`]?
+fn differs_finely(fitted: [f64; 3], scene: [f64; 3]) -> bool {
+    (0..3).any(|c| (fitted[c] - scene[c]).abs() > FINE.0 + FINE.1 * scene[c].abs())
+}
+
+/// How much nearer (the mean squared levels) the student's picture must be to the fitted
+/// products' drawing than to the scene's, where the two differ, for the picture to show
+/// the fitted products: a third. Noise and a lossy saving add to both alike; a colour
+/// typed a little off is the fitted one's and misses the scene's by its change.
+const SHOWN_AT: f64 = 1.0 / 3.0;
+
+/// The least pixels where the fitted products' drawing and the scene's differ for the
+/// picture to tell which it shows.
+const SHOWN_PIXELS: usize = 64;
+
+/// Does `image` (RGBA8, `size` square, aligned to the object `covered`) show the products
+/// `fitted` rather than `scene` ([`SHOWN_AT`]): over the object's inside, where their
+/// drawings differ by 2 levels or more in a channel, the mean squared levels by which the
+/// image misses the fitted drawing at most [`SHOWN_AT`] of those it misses the scene's by?
+fn shows_fitted(
+    right: &Drawing,
+    (fitted, scene): (&[[f64; 3]; TERMS], &[[f64; 3]; TERMS]),
+    covered: &[bool],
+    image: &[u8],
+    size: usize,
+) -> Result<bool, SceneError> {
+    let (_, with_fitted, _) = with_products(right, fitted).draw(size)?;
+    let (_, with_scene, _) = with_products(right, scene).draw(size)?;
+    let squared = |a: &[u8], b: &[u8], p: usize| -> f64 {
+        (0..3).map(|c| (f64::from(a[p * 4 + c]) - f64::from(b[p * 4 + c])).powi(2)).sum()
+    };
+    let apart = |p: &usize| (0..3).any(|c| with_fitted[p * 4 + c].abs_diff(with_scene[p * 4 + c]) >= 2);
+    let differ: Vec<usize> = interior(covered, size).into_iter().filter(apart).collect();
+    let to_fitted: f64 = differ.iter().map(|&p| squared(image, &with_fitted, p)).sum();
+    let to_scene: f64 = differ.iter().map(|&p| squared(image, &with_scene, p)).sum();
+    Ok(differ.len() >= SHOWN_PIXELS && to_fitted <= SHOWN_AT * to_scene)
 }
 
 /// A fitted colour as words show it: two decimals in the reader's decimal mark, never
@@ -155,9 +206,10 @@ fn scene_products(d: &Drawing) -> [[f64; 3]; TERMS] {
     out
 }
 
-/// The pictures [`fit`] draws for `right`: one per term, where it fits at all.
+/// The pictures [`fit`] draws for `right`: one per term, the one change's and the joint
+/// fit's, and the fitted products' and the scene's ([`shows_fitted`]), where it fits at all.
 pub fn drawings(right: &Drawing) -> usize {
-    if fittable(right) { 1 + 3 * right.scene.lights.len() } else { 0 }
+    if fittable(right) { 1 + 3 * right.scene.lights.len() + 4 } else { 0 }
 }
 
 /// Can this scene's colours be fitted: both sides lit with the same material (a term
@@ -295,7 +347,8 @@ pub fn fit(right: &Drawing, covered: &[bool], image: &[u8], size: usize) -> Resu
             fitted = one_change[b];
         }
     }
-    Ok(Some(Colours { lights, fitted, scene }))
+    let shown = shows_fitted(right, (&fitted, &scene), covered, image, size)?;
+    Ok(Some(Colours { lights, fitted, scene, shown }))
 }
 
 /// A model of one change: given the channel and the scene's products, the products with

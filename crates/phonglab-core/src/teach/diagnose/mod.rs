@@ -20,6 +20,7 @@ mod calls;
 mod change;
 mod colours;
 mod drawing;
+mod falloff;
 mod fit;
 mod footprint;
 mod levels;
@@ -45,7 +46,7 @@ pub use within::{ROUNDING, Within};
 
 use crate::model::error::SceneError;
 use crate::raster::render::Renderer;
-use crate::teach::picture_match::{LOSSY, Match, compare, compare_within};
+use crate::teach::picture_match::{LOSSY, Match, TOLERANCE, blended_share, compare, compare_within};
 
 /// The share of the object's pixels the right picture must explain for "right". Measured
 /// (docs/guide.md): the right picture shifted a pixel with 8-bit noise of ±2 scores 1;
@@ -220,6 +221,7 @@ pub fn drawings_at_most(right: &Drawing) -> usize {
         lights: right.scene.lights.len(),
         fitted: [[1.0; 3]; colours::TERMS],
         scene: [[0.0; 3]; colours::TERMS],
+        shown: true,
     };
     let mut every = values::Values::default();
     for (i, l) in right.scene.lights.iter().enumerate().take(crate::model::scene::MAX_LIGHTS) {
@@ -230,7 +232,12 @@ pub fn drawings_at_most(right: &Drawing) -> usize {
     every.shininess = Some((right.scene.material.shininess + 1.0, right.scene.material.shininess));
     let sides = Sides { fitted: [[[1.0; 3]; 4]; 2], scene: [[[0.0; 3]; 4]; 2], shininess: [(0.0, 0.0); 2] };
     let at = At { emission: [1.0; 3], colours: Some(colours), values: every, sides: Some(sides), ..At::default() };
-    offered(right, at).len() + 1 + colours::drawings(right) + values::drawings(right) + sides::drawings(right)
+    offered(right, at).len()
+        + 1
+        + colours::drawings(right)
+        + values::drawings(right)
+        + falloff::drawings(right)
+        + sides::drawings(right)
 }
 
 /// Compares `image` (RGBA8, `size` pixels square) with `right` drawn right and with each
@@ -261,6 +268,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         let emission = fit::emission(&picture, &covered, image, size);
         let colours = colours::fit(right, &covered, image, size)?;
         let values = values::fit(right, image, size)?;
+        let values = falloff::shown(right, (&picture, &covered), colours.as_ref(), values, image, size)?;
         let sides = sides::fit(right, &covered, image, size)?;
         for (mistake, at) in offered(right, At { light: 0, emission, colours, values, sides, given }) {
             // A colour fitted from the picture may draw the object in the background's
@@ -288,6 +296,12 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
     if d.shape.is_none() && d.verdict == Verdict::Right {
         shown_subtly(&mut d, subtle);
     }
+    if d.shape.is_none()
+        && d.verdict == Verdict::Right
+        && let Some(t) = colours_shown(right, &d, &covered, image, size)?
+    {
+        (d.verdict, d.causes, d.lossy) = (Verdict::Wrong, vec![t], None);
+    }
     if d.shape.is_none() && d.verdict == Verdict::Right {
         let region = outline::largest_region(&d.picture, &covered, image, bg, size);
         d.shape = region.filter(|r| r.pixels >= REGION_AT).map(Shape::Region);
@@ -297,8 +311,13 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         d.shape = marks.filter(|m| m.pixels >= MARKS_AT).map(Shape::Marks);
     }
     if d.shape.is_none() && d.verdict == Verdict::Right {
-        let off = offset::largest_offset(&d.picture, &covered, image, size);
-        d.shape = off.filter(|o| o.levels.abs() >= OFFSET_AT).map(Shape::Offset);
+        let off = offset::largest_offset(&d.picture, &covered, image, size).filter(|o| o.levels.abs() >= OFFSET_AT);
+        if let Some(o) = off {
+            match offset_explained(right, &d, (&covered, o), image, size)? {
+                Some(t) => (d.verdict, d.causes, d.lossy) = (Verdict::Wrong, vec![t], None),
+                None => d.shape = Some(Shape::Offset(o)),
+            }
+        }
     }
     if d.shape.is_some() {
         (d.verdict, d.causes, d.lossy) = (Verdict::Unexplained, Vec::new(), None);
@@ -369,6 +388,72 @@ impl Found {
     }
 }
 
+/// When the picture shows the colours fitted from it ([`Colours::shown`]) though the right
+/// picture explains it (a colour a few levels off, the Phong demo's diffuse 0.388 for 0.4,
+/// moves each pixel within the share's tolerance, and the picture is still nearer the
+/// fitted colours' drawing than the scene's by far): of the mistakes with values fitted
+/// from the picture (`colours-differ`, a shininess, an attenuation), the one whose drawing
+/// is nearest it in place (a shininess 10 % off is shown by a specular colour fitted to it
+/// too), its match measured.
+fn colours_shown(
+    right: &Drawing,
+    d: &Diagnosis,
+    covered: &[bool],
+    image: &[u8],
+    size: usize,
+) -> Result<Option<Tried>, SceneError> {
+    let shown = |t: &Tried| t.id() == "colours-differ" && t.at.colours.is_some_and(|c| c.shown);
+    if !d.tried.iter().any(shown) {
+        return Ok(None);
+    }
+    let flat = levels::inner_pixels(covered, size);
+    let mut best: Option<(f64, Tried)> = None;
+    for t in d.tried.iter().filter(|t| t.fitted()) {
+        let mut wrong = right.clone();
+        if !(MISTAKES[t.mistake].apply)(&mut wrong, t.at) {
+            continue;
+        }
+        let (_, rgba, wrong_covered) = wrong.draw(size)?;
+        let distance = levels::distance(&rgba, image, &flat);
+        if best.is_none_or(|(b, _)| distance < b) {
+            let matched = compare(&rgba, &wrong_covered, image, right.background8(), size);
+            best = Some((distance, Tried { matched: Some(matched), ..*t }));
+        }
+    }
+    Ok(best.map(|(_, t)| t))
+}
+
+/// The mistake with a value fitted from `image` (a shininess, an attenuation, the colours)
+/// whose picture moves the square of `off` as the image does ([`OFFSET_AT`]) and leaves no
+/// square of the image evenly off its own picture: a shininess 10 % off on the three-lights
+/// scene brightens the highlights' surround by a few levels, each pixel within the share's
+/// tolerance, and is that mistake, not a square painted over. The one whose picture leaves
+/// the least offset, its match measured; `None` when none explains it.
+fn offset_explained(
+    right: &Drawing,
+    d: &Diagnosis,
+    (covered, off): (&[bool], Offset),
+    image: &[u8],
+    size: usize,
+) -> Result<Option<Tried>, SceneError> {
+    let mut best: Option<(f64, Tried)> = None;
+    for t in d.tried.iter().filter(|t| t.fitted()) {
+        let mut wrong = right.clone();
+        if !(MISTAKES[t.mistake].apply)(&mut wrong, t.at) {
+            continue;
+        }
+        let (_, rgba, wrong_covered) = wrong.draw(size)?;
+        let own = offset::offset_over(&d.picture, covered, &rgba, off, size);
+        let left = offset::largest_offset(&rgba, &wrong_covered, image, size).map_or(0.0, |o| o.levels.abs());
+        let moves = own.abs() >= OFFSET_AT && own.signum() == off.levels.signum();
+        if moves && left < OFFSET_AT && best.is_none_or(|(l, _)| left < l) {
+            let matched = compare(&rgba, &wrong_covered, image, right.background8(), size);
+            best = Some((left, Tried { matched: Some(matched), ..*t }));
+        }
+    }
+    Ok(best.map(|(_, t)| t))
+}
+
 /// The change of the whole picture's levels ([`levels`]) that explains `image` where the
 /// right picture does not: at least [`EXPLAINED_AT`] of the object's pixels, and no cause
 /// named clearly closer ([`levels::clearly_closer`]). A gamma or a brightness change of a
@@ -392,15 +477,23 @@ fn levels_changed(
 
 /// The right picture's match within [`LOSSY`] levels when it explains `image` as a picture
 /// saved lossily (JPEG) explains its original: at least [`RIGHT_AT`] of the object's pixels
-/// within [`LOSSY`] levels, and the right picture missing by less, on the mean, than every
+/// within [`LOSSY`] levels of a blend of their neighbours ([`blended_share`]), and the right
+/// picture missing by less, on the mean, than every
 /// mistake's picture that the scene shows (noise adds to each alike; a mistake adds its own
 /// difference to the right picture's), with no level lifted or lowered on the median by
 /// more than 1 (lossy saving adds noise, not a bias: a tone curve is not taken for it).
 fn lossy_right(d: &Diagnosis, covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Option<Match> {
     let loose = compare_within(&d.picture, covered, image, bg, size, LOSSY);
+    // A pixel may also be a blend of its neighbours (resized, blurred, antialiased, moved
+    // half a pixel): along the outline such a pixel is half the object's, half the
+    // background's, far from either.
+    let blended = Match { score: blended_share(&d.picture, covered, image, bg, size, LOSSY), ..loose };
     let closest = d.tried.iter().filter_map(|t| t.matched).map(|m| m.miss).fold(f64::INFINITY, f64::min);
     let unbiased = fit::lifts(&d.picture, covered, image, size).iter().all(|(all, _)| all.abs() <= 1);
-    (loose.score >= RIGHT_AT && d.right.miss < closest && unbiased).then_some(loose)
+    // A blend of the right picture's neighbours within the tolerance nearly everywhere is
+    // the right picture resampled or blurred, however near a value fitted to it comes.
+    let resampled = blended_share(&d.picture, covered, image, bg, size, TOLERANCE) >= RIGHT_AT;
+    (blended.score >= RIGHT_AT && (d.right.miss < closest || resampled) && unbiased).then_some(blended)
 }
 
 /// A "right" verdict made "wrong" by the mistakes the image shows over their footprints

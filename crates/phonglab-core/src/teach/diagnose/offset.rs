@@ -11,6 +11,16 @@ use crate::teach::picture_match::apart;
 /// The side of the squares whose mean offsets are measured, in pixels.
 pub const BLOCK: usize = 16;
 
+/// How far the squares slide, in pixels: a quarter of [`BLOCK`], so that any square of
+/// [`BLOCK`] pixels shares at least (1 - 1/8)² of its pixels with one measured.
+const STEP: usize = BLOCK / 4;
+
+/// The least pixels of a square inside the object for its offset to count: three
+/// quarters. A picture moved half a pixel moves a square across the terminator near the
+/// outline, half inside, by half its gradient (the spotlight's teapot at 512 pixels: a
+/// square of 141 pixels inside, past [`OFFSET_AT`]).
+const INSIDE_AT: usize = BLOCK * BLOCK * 3 / 4;
+
 /// The least mean offset (levels, largest channel) of a square for the picture to be
 /// changed there. Measured (docs/guide.md): honest pictures (Mesa's, noise of ±3 and ±5,
 /// a pixel's shift, blur, resizing, JPEG of quality 90 and 95 of the blind set's right
@@ -65,7 +75,7 @@ fn shifted(p: usize, (dx, dy): (isize, isize), size: usize) -> usize {
     y * size + x
 }
 
-/// The square of [`BLOCK`] (at least half of it inside the object) where `image` is most
+/// The square of [`BLOCK`] (at least [`INSIDE_AT`] of its pixels inside the object) where `image` is most
 /// evenly off `picture` (both RGBA8, `size` square, the picture covering `covered`), the
 /// object's median offset taken away; `None` when no square holds enough of the object.
 pub fn largest_offset(picture: &[u8], covered: &[bool], image: &[u8], size: usize) -> Option<Offset> {
@@ -73,14 +83,16 @@ pub fn largest_offset(picture: &[u8], covered: &[bool], image: &[u8], size: usiz
     let shift = aligned(picture, image, &on, size);
     let diff = |p: usize, c: usize| i32::from(image[shifted(p, shift, size) * 4 + c]) - i32::from(picture[p * 4 + c]);
     let median: Vec<i32> = (0..3).map(|c| median_of((0..size * size).filter(|&p| on[p]).map(|p| diff(p, c)))).collect();
-    let cells = size.div_ceil(BLOCK);
+    // The squares slide by a quarter of their side: a block painted across a fixed grid's
+    // squares (a 16-pixel square from (248, 248) on a 16-pixel grid) would spread over four
+    // of them and show a quarter of its offset in each.
+    let starts: Vec<usize> = (0..size.saturating_sub(BLOCK / 2)).step_by(STEP).collect();
     let mut best: Option<Offset> = None;
-    for cell in 0..cells * cells {
-        let (x0, y0) = ((cell % cells) * BLOCK, (cell / cells) * BLOCK);
+    for (x0, y0) in starts.iter().flat_map(|&y| starts.iter().map(move |&x| (x, y))) {
         let (x1, y1) = ((x0 + BLOCK).min(size) - 1, (y0 + BLOCK).min(size) - 1);
         let pixels: Vec<usize> =
             (y0..=y1).flat_map(|y| (x0..=x1).map(move |x| y * size + x)).filter(|&p| on[p]).collect();
-        if pixels.len() < BLOCK * BLOCK / 2 {
+        if pixels.len() < INSIDE_AT {
             continue;
         }
         let mean =
@@ -91,6 +103,22 @@ pub fn largest_offset(picture: &[u8], covered: &[bool], image: &[u8], size: usiz
         }
     }
     best
+}
+
+/// The mean offset (levels, the channel furthest off, signed) of `image` from `picture`
+/// (both RGBA8, `size` square, the picture covering `covered`) over the square of `at`,
+/// in place and, the object's median offset taken away as [`largest_offset`] takes it.
+pub fn offset_over(picture: &[u8], covered: &[bool], image: &[u8], at: Offset, size: usize) -> f64 {
+    let on = inside(covered, size);
+    let diff = |p: usize, c: usize| i32::from(image[p * 4 + c]) - i32::from(picture[p * 4 + c]);
+    let median: Vec<i32> = (0..3).map(|c| median_of((0..size * size).filter(|&p| on[p]).map(|p| diff(p, c)))).collect();
+    let pixels: Vec<usize> = (at.from.1..=at.to.1)
+        .flat_map(|y| (at.from.0..=at.to.0).map(move |x| y * size + x))
+        .filter(|&p| on[p])
+        .collect();
+    let mean =
+        |c: usize| pixels.iter().map(|&p| f64::from(diff(p, c) - median[c])).sum::<f64>() / pixels.len().max(1) as f64;
+    (0..3).map(mean).max_by(|a, b| a.abs().total_cmp(&b.abs())).unwrap_or(0.0)
 }
 
 /// The median of `values` (levels, −255 to 255); 0 when there are none.
@@ -145,6 +173,16 @@ mod tests {
         let o = largest_offset(&right, &covered, &picture(-12, 16, 0), size).expect("an offset");
         assert!(o.levels <= -OFFSET_AT, "{o:?}");
         assert!(o.from.0 <= 20 + 8 && o.to.0 >= 20 + 8, "{o:?}");
+        // 8 levels darker over 16 x 16 pixels from (24, 24), across the squares of a fixed
+        // 16-pixel grid (a quarter in each: 2 levels): found by the sliding squares.
+        let mut straddling = right.clone();
+        for p in (0..size * size).filter(|p| (24..40).contains(&(p % size)) && (24..40).contains(&(p / size))) {
+            for c in 0..3 {
+                straddling[p * 4 + c] -= 8;
+            }
+        }
+        let o = largest_offset(&right, &covered, &straddling, size).expect("an offset");
+        assert!(o.levels <= -6.0 && o.from == (24, 24), "{o:?}");
         // Noise of ±5 and the picture moved a pixel: nowhere near.
         let noisy = picture(0, 0, 5);
         let o = largest_offset(&right, &covered, &noisy, size).expect("an offset");

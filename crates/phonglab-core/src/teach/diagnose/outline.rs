@@ -17,7 +17,7 @@ const OUTLINE_LEVELS: u8 = 12;
 /// a sphere for the spotlight's teapot by 30 %, a cylinder by 77 %.
 pub const OUTLINE_AT: f64 = 0.15;
 
-/// Levels (largest channel, past the best neighbour) by which a pixel must differ for a
+/// Levels (largest channel, outside the range of the 3 x 3 around it) by which a pixel must differ for a
 /// region: more than a JPEG of quality 90 moves a pixel of a right picture (at most 11).
 const REGION_LEVELS: u8 = 16;
 
@@ -50,7 +50,7 @@ pub struct Region {
 }
 
 /// Thin marks that differ from the right picture: joined pixels, each more than 16 levels
-/// past its best neighbour, that need not make a solid region (lines drawn over the object).
+/// outside the range of the 3 x 3 around it, that need not make a solid region (lines drawn over the object).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Marks {
     /// Its pixels.
@@ -100,23 +100,30 @@ pub fn apart(a: &[bool], b: &[bool], size: usize) -> f64 {
     if union == 0 { 0.0 } else { alone as f64 / union as f64 }
 }
 
-/// The largest channel difference of pixel `p` of `a` from the 3 x 3 around it in `b`, the
-/// best neighbour's.
-fn nearest(a: &[u8], b: &[u8], size: usize, p: usize) -> u8 {
+/// How far pixel `p` of `a` lies outside the range each channel spans in the 3 x 3 around
+/// it in `b` (the largest channel, levels): 0 where it is a blend of those neighbours, as
+/// a picture resized, blurred, antialiased or moved half a pixel is of the picture it was
+/// made from; a mark drawn over a flat part lies outside by its own levels.
+fn outside(a: &[u8], b: &[u8], size: usize, p: usize) -> u8 {
     let (x, y) = (p % size, p / size);
-    let mut best = u8::MAX;
-    for qy in y.saturating_sub(1)..=(y + 1).min(size - 1) {
-        for qx in x.saturating_sub(1)..=(x + 1).min(size - 1) {
-            let q = qy * size + qx;
-            best = best.min((0..3).map(|c| a[p * 4 + c].abs_diff(b[q * 4 + c])).max().unwrap_or(0));
+    let mut most = 0;
+    for c in 0..3 {
+        let (mut low, mut high) = (u8::MAX, 0u8);
+        for qy in y.saturating_sub(1)..=(y + 1).min(size - 1) {
+            for qx in x.saturating_sub(1)..=(x + 1).min(size - 1) {
+                let v = b[(qy * size + qx) * 4 + c];
+                (low, high) = (low.min(v), high.max(v));
+            }
         }
+        let v = a[p * 4 + c];
+        most = most.max(low.saturating_sub(v)).max(v.saturating_sub(high));
     }
-    best
+    most
 }
 
 /// The largest solid region where `image` differs from `picture` (both RGBA8, `size`
 /// square) over the object (`covered` in the picture, or unlike `bg` in the image): the
-/// pixels that differ by more than [`REGION_LEVELS`] from their best neighbour (either way),
+/// pixels that differ by more than [`REGION_LEVELS`] outside the range of the 3 x 3 around them (either way, [`outside`]),
 /// kept where all 8 neighbours differ too (so that an edge a pixel out, or a thin line, is
 /// no region), joined 8-connected. `None` when no pixel is solid.
 pub fn largest_region(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Option<Region> {
@@ -135,12 +142,12 @@ pub fn largest_region(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3
 }
 
 /// The pixels of the object (`covered` in `picture`, or unlike `bg` in `image`) where
-/// `image` differs from `picture` (both RGBA8, `size` square) by more than
-/// [`REGION_LEVELS`] from the best neighbour, either way.
+/// `image` lies more than [`REGION_LEVELS`] outside the range of the 3 x 3 around the pixel
+/// in `picture`, or `picture` outside that of `image` ([`outside`]).
 fn differing(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Vec<bool> {
     let object = |p: usize| covered[p] || unlike(image, p, bg, TOLERANCE);
     (0..size * size)
-        .map(|p| object(p) && nearest(image, picture, size, p).max(nearest(picture, image, size, p)) > REGION_LEVELS)
+        .map(|p| object(p) && outside(image, picture, size, p).max(outside(picture, image, size, p)) > REGION_LEVELS)
         .collect()
 }
 

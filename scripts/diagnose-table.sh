@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Issue 57's measurement of `phonglab diagnose`: honest and wrong pictures of three shipped
+# scenes, degraded as students' pictures are (JPEG, 4:2:0 chroma, resizing, blur, a
+# half-pixel shift), each with its verdict and first cause. Usage:
+#   scripts/diagnose-table.sh DIR [SIZE] [FILTER]
+# (the example crates/phonglab-core/examples/diagnose_table.rs draws and judges them).
+set -euo pipefail
+dir=${1:-/tmp/diag}
+size=${2:-512}
+filter=${3:-}
+run() { cargo run -q -p phonglab-core --example diagnose_table -- "$@"; }
+if [ ! -e "$dir/.rendered" ]; then
+  run render "$dir" "$size"
+  cd "$dir"
+  jpeg() { # in out args...
+    local in=$1 out=$2; shift 2
+    convert "$in" "$@" "/tmp/diag-$$.jpg" && convert "/tmp/diag-$$.jpg" "$out" && rm -f "/tmp/diag-$$.jpg"
+  }
+  for s in spotlight phong-demo three-lights; do
+    r=${s}__right.ppm
+    jpeg "$r" "${s}__right-q75.ppm" -quality 75
+    jpeg "$r" "${s}__right-q90.ppm" -quality 90 -sampling-factor 1x1
+    jpeg "$r" "${s}__right-q95.ppm" -quality 95 -sampling-factor 1x1
+    jpeg "$r" "${s}__right-q75-420.ppm" -quality 75 -sampling-factor 4:2:0
+    jpeg "$r" "${s}__right-q90-420.ppm" -quality 90 -sampling-factor 4:2:0
+    convert "$r" -resize 50% -resize "${size}x${size}!" "${s}__right-resize50.ppm"
+    convert "$r" -resize 75% -resize "${size}x${size}!" "${s}__right-resize75.ppm"
+    convert "$r" -blur 0x0.5 "${s}__right-blur05.ppm"
+    convert "$r" -virtual-pixel edge -distort SRT '0,0 1 0 0.5,0.5' "${s}__right-shift-half.ppm"
+    jpeg "${s}__mark-initials-15lv.ppm" "${s}__mark-initials-15lv-q90.ppm" -quality 90 -sampling-factor 1x1
+    jpeg "${s}__mark-initials-25lv.ppm" "${s}__mark-initials-25lv-q90.ppm" -quality 90 -sampling-factor 1x1
+  done
+  for w in phong-demo__wrong-shininess-90 three-lights__wrong-blue-linear-0.11 three-lights__wrong-shininess-66; do
+    jpeg "$w.ppm" "$w-q90.ppm" -quality 90 -sampling-factor 1x1
+    jpeg "$w.ppm" "$w-q95.ppm" -quality 95 -sampling-factor 1x1
+  done
+  touch .rendered
+  cd - >/dev/null
+fi
+run judge "$dir" "$size" $filter
