@@ -238,7 +238,8 @@ fn verdict(d: &Diagnosis) -> &'static str {
 /// The first cause (or shape) with a short excerpt of its words.
 fn first(d: &Diagnosis) -> String {
     if let Some(s) = d.shape {
-        let words = s.words(d.right.score);
+        // The shape's words are the diagnosis' first line (said.rs puts its verdict word first).
+        let words = d.lines().into_iter().next().unwrap_or_default();
         return format!("{} :: {}", s.id(), words.chars().take(70).collect::<String>());
     }
     match d.causes.first() {
