@@ -145,6 +145,11 @@ impl Said {
             None => &tied[..1],
             Some(other) => {
                 let (other_cause, other_id, _) = named(other);
+                // Run into the sentence after "or": "… or the material's specular …".
+                let other_cause = match other_cause {
+                    Arg::Text(t) => Arg::Text(run_in(&t)),
+                    other => other,
+                };
                 let more = (tied.len() - 2) as i64;
                 args.extend([("other", other_cause), ("other-id", other_id), ("more", Arg::Count(more))]);
                 &tied[..2]
@@ -269,6 +274,20 @@ fn percent(share: f64) -> Arg {
     Arg::Text(crate::locale::percent(share, 1))
 }
 
+/// `words`, a sentence of their own, run into another after "or": a first capital letter
+/// followed by a small one or a space is made small ("A cor especular" → "a cor
+/// especular"); a name in capitals (GL_LIGHT0, RGB) is kept.
+fn run_in(words: &str) -> String {
+    let mut chars = words.chars();
+    match (chars.next(), chars.next()) {
+        // A word ("The", "Cor") or a one-letter article ("A cor", "O brilho").
+        (Some(first), Some(second)) if first.is_uppercase() && (second.is_lowercase() || second == ' ') => {
+            first.to_lowercase().chain(words[first.len_utf8()..].chars()).collect()
+        }
+        _ => words.to_string(),
+    }
+}
+
 /// A cause's words (which name its light), its id, and its score.
 fn named(t: &Tried) -> (Arg, Arg, Arg) {
     (Arg::Text(t.words()), Arg::Text(t.id().to_owned()), percent(t.matched.map_or(0.0, |m| m.score)))
@@ -283,6 +302,15 @@ impl Diagnosis {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn words_run_into_a_sentence_lose_their_first_capital_but_not_a_name() {
+        assert_eq!(super::run_in("A cor especular do material"), "a cor especular do material");
+        assert_eq!(super::run_in("O brilho (GL_SHININESS)"), "o brilho (GL_SHININESS)");
+        assert_eq!(super::run_in("The material's specular"), "the material's specular");
+        assert_eq!(super::run_in("GL_LIGHT0's position"), "GL_LIGHT0's position");
+        assert_eq!(super::run_in("RGB swapped"), "RGB swapped");
+    }
+
     use super::*;
     use crate::locale::{Lang, Locale, with_locale};
     use crate::teach::diagnose::{At, Levels, MISTAKES, Marks, Offset, Region};
