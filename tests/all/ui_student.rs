@@ -589,6 +589,9 @@ fn a_long_diagnosis_scrolls_and_the_three_pictures_keep_their_size_within_the_wi
         for r in &pictures {
             assert!(r.height() >= 150.0, "{w}x{h_px}: a picture {r:?} shrank");
             assert!(r.bottom() <= h_px && r.right() <= w, "{w}x{h_px}: a picture {r:?} leaves the window");
+            // The rect framed is the picture's own, square (the column's whole width was
+            // framed: a white strip beside each picture in the light theme).
+            assert!((r.width() - r.height()).abs() < 0.5, "{w}x{h_px}: a picture's frame {r:?} is not its square");
         }
         // The verdict's first line is shown whole, at the top of the text, above them.
         let shown = h.get_by_label(&lines[0]).rect();

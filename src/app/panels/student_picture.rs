@@ -206,7 +206,11 @@ pub fn student_picture_ui(
             .map(|k| {
                 let label = cols[k].label(RichText::new(&titles[k]).strong());
                 let image = egui::Image::new((textures[k].id(), egui::vec2(side, side)));
-                let rect = cols[k].add(image).labelled_by(label.id).rect;
+                let given = cols[k].add(image).labelled_by(label.id).rect;
+                // The column gives the image its whole width; the picture is drawn side x side
+                // from its top left (seen at 1024x600 in the light theme: a frame around the
+                // column's width left a white strip beside each picture).
+                let rect = egui::Rect::from_min_size(given.min, egui::vec2(side, side).min(given.size()));
                 // Framed, as a picture on the dark theme needs: the difference is mostly black.
                 cols[k].painter().rect_stroke(rect, 0.0, picture_frame(cols[k].visuals()), egui::StrokeKind::Outside);
                 rect
