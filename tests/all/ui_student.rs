@@ -744,6 +744,11 @@ fn a_name_typed_while_the_chooser_is_open_changes_nothing_behind_it() {
     // click beside it), "wrong.png" typed: W, G, N and P switched the two-sided lighting,
     // the rules, the normals and the precision of the scene behind the chooser.
     let mut h = harness(1280.0, 720.0);
+    // An edit to undo: the rules switched (G) before the chooser opens.
+    let first = h.state().doc.scene.rules.set;
+    h.key_press(egui::Key::G);
+    h.run_steps(2);
+    assert_ne!(h.state().doc.scene.rules.set, first, "G switches the rules");
     common::open_menu(&mut h, &["File"]);
     h.get_by_label("Check a student's work…").click();
     h.run_steps(2);
@@ -760,6 +765,12 @@ fn a_name_typed_while_the_chooser_is_open_changes_nothing_behind_it() {
     let before = seen(h.state());
     for key in [egui::Key::W, egui::Key::G, egui::Key::N, egui::Key::P, egui::Key::T, egui::Key::Num2] {
         h.key_press(key);
+        h.run_steps(1);
+    }
+    // Nor Ctrl+Z (the teacher's review: it undid the scene behind the chooser, here the
+    // rules switched before it opened) or Ctrl+R.
+    for key in [egui::Key::Z, egui::Key::R] {
+        h.key_press_modifiers(egui::Modifiers::CTRL, key);
         h.run_steps(1);
     }
     assert!(seen(h.state()) == before, "the scene behind the chooser changed");

@@ -76,25 +76,38 @@ pub const SHORTCUTS: &[(Modifiers, Key, &str, Action, &str)] = &[
     (Modifiers::NONE, Key::A, "A", Action::AutoRotate, "help-auto-rotate"),
 ];
 
+/// What asks for the keyboard before the scene does ([`pressed`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Asking {
+    /// Nothing: every key works.
+    Nothing,
+    /// The quiz, where the student types numbers: no key without Ctrl works, so digits
+    /// typed after a missed click change nothing.
+    Numbers,
+    /// A window that waits for a choice (phonglab's file chooser, the dropped notebook's
+    /// question): only Quit and Help's F1 work. A name typed into the chooser whose field
+    /// had lost the keyboard switched the rules, the normals and the two-sided lighting,
+    /// one key each, and Ctrl+Z undid the scene behind it.
+    Choice,
+}
+
 /// May `action` fire from its keys now? While a text field has the keyboard only what
 /// works from everywhere does (Open, Save, Quit and Help's F1: Ctrl+Z is the field's own
-/// undo); while something asks for typing (`asking`: the quiz, where the student types
-/// numbers, or a window asking for a file's name) no key without Ctrl does, so letters and
-/// digits typed after a missed click change nothing behind it (a name typed into phonglab's
-/// file chooser whose field had lost the keyboard switched the rules, the normals and the
-/// two-sided lighting, one key each).
-fn allowed(modifiers: Modifiers, key: Key, action: Action, typing: bool, asking: bool) -> bool {
+/// undo); while something asks for the keyboard, what [`Asking`] says.
+fn allowed(modifiers: Modifiers, key: Key, action: Action, typing: bool, asking: Asking) -> bool {
     let plain = !modifiers.ctrl && !modifiers.command && key != Key::F1;
-    if typing {
+    if asking == Asking::Choice {
+        action == Action::Quit || key == Key::F1
+    } else if typing {
         matches!(action, Action::Open | Action::Save | Action::Quit) || key == Key::F1
     } else {
-        !(asking && plain)
+        !(asking == Asking::Numbers && plain)
     }
 }
 
 /// The actions whose keys were pressed this frame: see `allowed` for which fire while a
-/// text field has the keyboard, or while something asks for typing (`asking`).
-pub fn pressed(ctx: &egui::Context, asking: bool) -> Vec<Action> {
+/// text field has the keyboard, or while something asks for it (`asking`).
+pub fn pressed(ctx: &egui::Context, asking: Asking) -> Vec<Action> {
     let typing = ctx.egui_wants_keyboard_input();
     ctx.input_mut(|i| {
         let mut out = Vec::new();

@@ -64,7 +64,7 @@ fn frame_start_ui(ui: &mut Ui, state: &mut AppState) -> Option<state::Evaluated>
         keys::apply_action(state, a);
     }
     let typing = ctx.egui_wants_keyboard_input();
-    for a in crate::app::panels::help::pressed(&ctx, state.asks_for_typing()) {
+    for a in crate::app::panels::help::pressed(&ctx, state.asking()) {
         use crate::app::panels::help::Action;
         if typing && matches!(a, Action::Open | Action::Save) {
             ctx.memory_mut(|m| {

@@ -125,12 +125,19 @@ pub enum StudentStatus {
 }
 
 impl AppState {
-    /// Something asks for typing or a choice before the scene: the quiz (numbers), phonglab's
-    /// file chooser (a name), or the question of what to do with a dropped notebook. Keys
-    /// without Ctrl then change nothing behind it ([`crate::app::panels::help::pressed`]).
-    /// (The share window is not asking: its link follows the scene the keys change.)
-    pub fn asks_for_typing(&self) -> bool {
-        self.quiz.open || self.chooser.is_some() || self.student_ask.is_some()
+    /// What asks for the keyboard before the scene ([`crate::app::panels::help::pressed`]):
+    /// phonglab's file chooser or the question of what to do with a dropped notebook (a
+    /// choice), else the quiz (numbers). (The share window is not asking: its link follows
+    /// the scene the keys change.)
+    pub fn asking(&self) -> crate::app::panels::help::Asking {
+        use crate::app::panels::help::Asking;
+        if self.chooser.is_some() || self.student_ask.is_some() {
+            Asking::Choice
+        } else if self.quiz.open {
+            Asking::Numbers
+        } else {
+            Asking::Nothing
+        }
     }
 
     /// Starts on the worksheet's scene (modelview 5).
