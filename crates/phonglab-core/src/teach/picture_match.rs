@@ -185,7 +185,7 @@ pub const BOX_INK: [u8; 3] = [255, 0, 255];
 const BOX_GAP: usize = 2;
 
 /// Draws each box of `boxes` on `rgba` (RGBA8, `size` square) as a dashed outline in
-/// [`BOX_INK`], [`BOX_GAP`] pixels outside it (within the picture): 3 pixels drawn, 2 left.
+/// [`BOX_INK`], `BOX_GAP` pixels outside it (within the picture): 3 pixels drawn, 2 left.
 pub fn draw_boxes(rgba: &mut [u8], size: usize, boxes: &[Boxed]) {
     let Some(last) = size.checked_sub(1) else { return };
     let dashed = |k: usize| k % 5 < 3;

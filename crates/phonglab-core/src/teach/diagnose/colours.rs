@@ -53,8 +53,8 @@ pub struct Colours {
     /// The scene's products.
     pub scene: [[f64; 3]; TERMS],
     /// Whether the picture shows the fitted products where they draw another picture than
-    /// the scene's ([`shows_fitted`]): then a product that differs by less than a fit's
-    /// noise on any picture ([`ABSOLUTE`], [`RELATIVE`]) but past [`FINE`] differs.
+    /// the scene's (`shows_fitted`): then a product that differs by less than a fit's
+    /// noise on any picture (`ABSOLUTE`, `RELATIVE`) but past `FINE` differs.
     pub shown: bool,
 }
 
