@@ -359,7 +359,7 @@ fn stage_and_swap(
     // set is in place and recorded, and the journal, kept, lets the next run finish.
     let cleaned = super::set_journal::clear_aside(staging, &journal.old);
     step()?;
-    let _ = std::fs::remove_dir(staging);
+    let _ = super::set_journal::remove_own_folder(staging);
     crate::platform::os::sync_folder(dir);
     Ok((!cleaned).then(|| staging_left(dir, staging)))
 }

@@ -186,13 +186,48 @@ fn open_checked(
     path: &Path,
     is_it: impl FnOnce(&std::fs::File) -> bool,
 ) -> io::Result<Result<crate::platform::by_handle::Opened, Took>> {
+    // A staging or aside folder on the way swapped for a link (issue 59, the hostile's
+    // review: a staging folder renamed and a link to another folder put at its name made
+    // the clean-up remove every file there): asked before the open and after it, so a swap
+    // between the two is seen too.
+    let folders_real = || path.parent().is_none_or(own_folders_real);
+    if !folders_real() {
+        return Ok(Err(Took::Other));
+    }
     let opened = match crate::platform::by_handle::open(path) {
         Ok(opened) => opened,
         Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Err(Took::Absent)),
         Err(e) if crate::platform::os::is_link_refused(&e) => return Ok(Err(Took::Other)),
         Err(e) => return Err(e),
     };
-    Ok(if is_it(opened.file()) { Ok(opened) } else { Err(Took::Other) })
+    Ok(if folders_real() && is_it(opened.file()) { Ok(opened) } else { Err(Took::Other) })
+}
+
+/// Are `folder` and the folders of phonglab's own it is in (a staging folder, its aside
+/// folder: it and its ancestors named like them, up to the first that is not) real folders,
+/// reached under their own names, not links? The folder they are in is the one held,
+/// checked by its identity ([`super::file_set::hold_folder`]).
+pub fn own_folders_real(folder: &Path) -> bool {
+    folder.ancestors().take_while(|a| a.file_name().and_then(|n| n.to_str()).is_some_and(is_own_folder_name)).all(|a| {
+        std::fs::symlink_metadata(a).is_ok_and(|m| m.is_dir() && !m.file_type().is_symlink())
+            && !crate::platform::links::reached_through_link(a)
+    })
+}
+
+/// Removes the empty `folder`, a staging or aside folder of phonglab's own, only when it
+/// and the folders of phonglab's own it is in are real ([`own_folders_real`]): a link at
+/// its name (Wine: `RemoveDirectory` through it removed the folder it led to) is left.
+pub fn remove_own_folder(folder: &Path) -> io::Result<()> {
+    if !own_folders_real(folder) {
+        return Err(io::Error::new(io::ErrorKind::InvalidInput, "not a folder of phonglab's own"));
+    }
+    std::fs::remove_dir(folder)
+}
+
+/// A name phonglab gives a folder of its own inside a set's folder: a staging folder, or
+/// the aside folder in one.
+fn is_own_folder_name(name: &str) -> bool {
+    is_staging_name(name) || name == ASIDE
 }
 
 /// Is the open `file` exactly the one `entry` names (a regular file; its identity, size and
@@ -208,6 +243,10 @@ fn is_entry_file(file: &std::fs::File, entry: &Entry) -> bool {
 /// left where it is ([`Took::Other`]). `Err`: the system refused (Windows: another program
 /// holds the file open without sharing its deletion).
 pub fn move_entry(from: &Path, to: &Path, entry: &Entry) -> io::Result<Took> {
+    // Nor into a staging or aside folder swapped for a link: the file would leave the folder.
+    if !to.parent().is_none_or(own_folders_real) {
+        return Ok(Took::Other);
+    }
     match open_checked(from, |f| is_entry_file(f, entry))? {
         Ok(opened) => Ok(if opened.rename_no_replace(to)? { Took::Done } else { Took::Other }),
         Err(took) => Ok(took),
@@ -433,6 +472,9 @@ pub fn written_list(dir: &Path) -> Vec<Entry> {
 /// aside folder and the folder itself. `false`: something else is in it (a link, a folder, a
 /// file of the old set not moved back), left there with the folder.
 pub fn throw_away(staging: &Path) -> bool {
+    if !own_folders_real(staging) {
+        return false;
+    }
     let _ = remove_own(&staging.join(JOURNAL));
     if let Ok(entries) = std::fs::read_dir(staging) {
         for entry in entries.flatten() {
@@ -453,7 +495,7 @@ pub fn clear_aside(staging: &Path, old: &[Entry]) -> bool {
     for entry in old {
         let _ = remove_entry(&aside.join(&entry.name), entry);
     }
-    let gone = match std::fs::remove_dir(&aside) {
+    let gone = match remove_own_folder(&aside) {
         Ok(()) => true,
         Err(e) => e.kind() == io::ErrorKind::NotFound,
     };
@@ -463,8 +505,10 @@ pub fn clear_aside(staging: &Path, old: &[Entry]) -> bool {
 /// Removes `staging` when it holds nothing but, at most, an empty aside folder (a writer
 /// killed after it removed its journal, or before it wrote one): no file is lost.
 fn remove_if_empty(staging: &Path) -> bool {
-    let _ = std::fs::remove_dir(staging.join(ASIDE));
-    std::fs::remove_dir(staging).is_ok()
+    // Only real folders of phonglab's own (remove_own_folder: a link planted at a staging
+    // folder's name, under Wine, removed the empty folder it led to).
+    let _ = remove_own_folder(&staging.join(ASIDE));
+    remove_own_folder(staging).is_ok()
 }
 
 /// Rolls the decided swap `j` forward from wherever it stopped: each old file still in
@@ -509,7 +553,7 @@ fn finish(dir: &Path, staging: &Path, j: &Journal) -> Result<(), String> {
     if !clear_aside(staging, &j.old) {
         return Err(t!("set-why-not-all-own"));
     }
-    let _ = std::fs::remove_dir(staging);
+    let _ = remove_own_folder(staging);
     Ok(())
 }
 

@@ -348,3 +348,35 @@ proptest! {
         untouched(&before_outside, &outside, "outside");
     }
 }
+
+/// Issue 59, the hostile's review (F1, F3): a staging folder swapped for a link to another
+/// folder, the clean-up of a set that failed (`throw_away`) or the recovery then removed
+/// every regular file in the folder the link led to (Linux), or that folder itself when
+/// empty (Wine). A staging folder or aside folder reached through a link is left as it is,
+/// and every file it leads to with it.
+#[test]
+#[cfg(any(unix, windows))]
+fn a_staging_folder_swapped_for_a_link_leaves_the_folder_it_leads_to_whole() {
+    let root = crate::io::atomic_write::tests::fresh_dir("staging-link");
+    let (dir, outside) = (root.join("set"), root.join("outside"));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::create_dir_all(outside.join(ASIDE)).unwrap();
+    for name in ["marks-1.txt", "marks-2.txt", JOURNAL] {
+        std::fs::write(outside.join(name), "the teacher's").unwrap();
+    }
+    let staging = dir.join(format!(".{STAGING}.77.1.tmp"));
+    if !crate::io::atomic_write::tests::plant_link(&outside, &staging) {
+        eprintln!("no symbolic link can be made here: nothing to test");
+        return;
+    }
+    let thrown = throw_away(&staging);
+    let cleared = clear_aside(&staging, &[]);
+    let _ = recover(&dir);
+    for name in ["marks-1.txt", "marks-2.txt", JOURNAL] {
+        assert_eq!(std::fs::read(outside.join(name)).unwrap(), b"the teacher's", "{name} was removed through the link");
+    }
+    assert!(outside.join(ASIDE).is_dir(), "the empty folder the link led to was removed");
+    assert!(!thrown && !cleared, "nothing of a link's folder is phonglab's to throw away");
+    assert!(!own_folders_real(&staging), "a link at a staging folder's name is not phonglab's folder");
+    assert!(crate::platform::links::reached_through_link(&staging) || std::fs::symlink_metadata(&staging).is_ok());
+}
