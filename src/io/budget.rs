@@ -30,7 +30,10 @@ static FROM: AtomicU64 = AtomicU64::new(0);
 /// code, the catalogues, the fonts. `phonglab --version` peaks at 27 MB resident (debug
 /// build, `/usr/bin/time -v`); a command that writes files, at up to 40 MB before its
 /// first exercise. Every estimate that says "never below" what a run takes counts it.
-pub const PROCESS: u64 = 48 << 20;
+/// 2026-11-29: `--version` 28.7 MB, three pictures with one mistake each (level 5) 61.5 MB
+/// against the 60 MiB (62.9 MB) counted with 48 MiB here — the test that holds the estimate
+/// to the peak failed once at 63.8 MB —, so 52 MiB.
+pub const PROCESS: u64 = 52 << 20;
 
 /// When the system does not say how much memory is available.
 const FALLBACK: u64 = 4 << 30;
