@@ -98,18 +98,19 @@ impl Chooser {
 /// The chooser's window, while `chooser` is open; closes it and returns the file chosen.
 pub fn chooser_ui(ctx: &egui::Context, chooser: &mut Option<Chooser>) -> Option<Chosen> {
     let c = chooser.as_mut()?;
-    let (mut done, mut cancel) = (None, false);
-    egui::Window::new(t!("chooser-title"))
-        .collapsible(false)
-        .resizable(true)
-        .default_width(520.0)
-        .pivot(egui::Align2::CENTER_CENTER)
-        .default_pos(ctx.content_rect().center())
+    // A modal: the window behind it takes no click, no focus and no Tab while it is open
+    // (the teacher's review: Tab then Space, in the chooser, opened the Scene menu behind
+    // it); its keys are held by `help::Asking::Choice`.
+    let width = 520.0_f32.min(ctx.content_rect().width() - 48.0);
+    let (done, cancel) = egui::Modal::new(egui::Id::new("phonglab chooser"))
         .show(ctx, |ui| {
+            ui.set_width(width);
+            ui.vertical_centered(|ui| ui.heading(t!("chooser-title")));
             ui.label(&c.why);
             ui.separator();
-            (done, cancel) = chooser_body_ui(ui, c);
-        });
+            chooser_body_ui(ui, c)
+        })
+        .inner;
     if cancel || done.is_some() {
         *chooser = None;
     }

@@ -148,19 +148,17 @@ pub fn ask_ui(ctx: &egui::Context, state: &mut AppState) -> Option<(String, Vec<
     let (name, _) = state.student_ask.as_ref()?;
     let shown = phonglab_core::escape::printable(name);
     let (mut open, mut check_it, mut cancel) = (false, false, false);
-    egui::Window::new(t!("student-ask-title"))
-        .collapsible(false)
-        .resizable(false)
-        .pivot(egui::Align2::CENTER_CENTER)
-        .default_pos(ctx.content_rect().center())
-        .show(ctx, |ui| {
-            ui.label(t!("student-ask", file = shown));
-            ui.horizontal_wrapped(|ui| {
-                check_it = ui.button(t!("student-ask-check")).clicked();
-                open = ui.button(t!("student-ask-open")).clicked();
-                cancel = ui.button(t!("chooser-cancel")).clicked();
-            });
+    // A modal, as phonglab's chooser is: nothing behind it takes a click or the keyboard.
+    egui::Modal::new(egui::Id::new("phonglab student ask")).show(ctx, |ui| {
+        ui.set_max_width(520.0_f32.min(ctx.content_rect().width() - 48.0));
+        ui.vertical_centered(|ui| ui.heading(t!("student-ask-title")));
+        ui.label(t!("student-ask", file = shown));
+        ui.horizontal_wrapped(|ui| {
+            check_it = ui.button(t!("student-ask-check")).clicked();
+            open = ui.button(t!("student-ask-open")).clicked();
+            cancel = ui.button(t!("chooser-cancel")).clicked();
         });
+    });
     if !(open || check_it || cancel) {
         return None;
     }
