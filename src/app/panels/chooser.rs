@@ -102,7 +102,7 @@ pub fn chooser_ui(ctx: &egui::Context, chooser: &mut Option<Chooser>) -> Option<
     // (the teacher's review: Tab then Space, in the chooser, opened the Scene menu behind
     // it); its keys are held by `help::Asking::Choice`.
     let width = 520.0_f32.min(ctx.content_rect().width() - 48.0);
-    let (done, cancel) = egui::Modal::new(egui::Id::new("phonglab chooser"))
+    let (done, cancel) = egui::Modal::new(egui::Id::unique("phonglab chooser"))
         .show(ctx, |ui| {
             ui.set_width(width);
             ui.vertical_centered(|ui| ui.heading(t!("chooser-title")));

@@ -149,7 +149,7 @@ pub fn ask_ui(ctx: &egui::Context, state: &mut AppState) -> Option<(String, Vec<
     let shown = phonglab_core::escape::printable(name);
     let (mut open, mut check_it, mut cancel) = (false, false, false);
     // A modal, as phonglab's chooser is: nothing behind it takes a click or the keyboard.
-    egui::Modal::new(egui::Id::new("phonglab student ask")).show(ctx, |ui| {
+    egui::Modal::new(egui::Id::unique("phonglab student ask")).show(ctx, |ui| {
         ui.set_max_width(520.0_f32.min(ctx.content_rect().width() - 48.0));
         ui.vertical_centered(|ui| ui.heading(t!("student-ask-title")));
         ui.label(t!("student-ask", file = shown));
