@@ -407,6 +407,19 @@ fn colours_shown(
         return Ok(None);
     }
     let flat = levels::inner_pixels(covered, size);
+    best_fitted(right, d, image, size, |rgba, _| Some(levels::distance(rgba, image, &flat)))
+}
+
+/// Of the mistakes with a value fitted from `image`, drawn one by one, the one `score`
+/// (its picture and coverage; `None`: not this one) gives the least, its match measured
+/// against `image`: the one loop [`colours_shown`] and [`offset_explained`] choose with.
+fn best_fitted(
+    right: &Drawing,
+    d: &Diagnosis,
+    image: &[u8],
+    size: usize,
+    score: impl Fn(&[u8], &[bool]) -> Option<f64>,
+) -> Result<Option<Tried>, SceneError> {
     let mut best: Option<(f64, Tried)> = None;
     for t in d.tried.iter().filter(|t| t.fitted()) {
         let mut wrong = right.clone();
@@ -414,10 +427,10 @@ fn colours_shown(
             continue;
         }
         let (_, rgba, wrong_covered) = wrong.draw(size)?;
-        let distance = levels::distance(&rgba, image, &flat);
-        if best.is_none_or(|(b, _)| distance < b) {
+        let Some(score) = score(&rgba, &wrong_covered) else { continue };
+        if best.is_none_or(|(b, _)| score < b) {
             let matched = compare(&rgba, &wrong_covered, image, right.background8(), size);
-            best = Some((distance, Tried { matched: Some(matched), ..*t }));
+            best = Some((score, Tried { matched: Some(matched), ..*t }));
         }
     }
     Ok(best.map(|(_, t)| t))
@@ -436,22 +449,12 @@ fn offset_explained(
     image: &[u8],
     size: usize,
 ) -> Result<Option<Tried>, SceneError> {
-    let mut best: Option<(f64, Tried)> = None;
-    for t in d.tried.iter().filter(|t| t.fitted()) {
-        let mut wrong = right.clone();
-        if !(MISTAKES[t.mistake].apply)(&mut wrong, t.at) {
-            continue;
-        }
-        let (_, rgba, wrong_covered) = wrong.draw(size)?;
-        let own = offset::offset_over(&d.picture, covered, &rgba, off, size);
-        let left = offset::largest_offset(&rgba, &wrong_covered, image, size).map_or(0.0, |o| o.levels.abs());
+    best_fitted(right, d, image, size, |rgba, wrong_covered| {
+        let own = offset::offset_over(&d.picture, covered, rgba, off, size);
+        let left = offset::largest_offset(rgba, wrong_covered, image, size).map_or(0.0, |o| o.levels.abs());
         let moves = own.abs() >= OFFSET_AT && own.signum() == off.levels.signum();
-        if moves && left < OFFSET_AT && best.is_none_or(|(l, _)| left < l) {
-            let matched = compare(&rgba, &wrong_covered, image, right.background8(), size);
-            best = Some((left, Tried { matched: Some(matched), ..*t }));
-        }
-    }
-    Ok(best.map(|(_, t)| t))
+        (moves && left < OFFSET_AT).then_some(left)
+    })
 }
 
 /// The change of the whole picture's levels ([`levels`]) that explains `image` where the
