@@ -711,7 +711,8 @@ cost-wrote = wrote { $files } in { $out }
 ## io-errors
 
 set-folder-is-a-link = a link to another folder: phonglab writes a set of files only into a real folder, never through a link
-set-folder-replaced = moved or replaced (by a link or another folder) while phonglab was writing the set: nothing was written through it; the set was not written, and the next set in the folder that was there throws away what this one began
+set-folder-replaced = moved or replaced (by a link or another folder) while phonglab was writing the set: nothing was written, moved or removed through it (phonglab held the folder itself); the set was not written, and what it had begun was removed from the folder it held
+set-staging-replaced = phonglab's working folder { $name } in it was moved or replaced (by a link or another folder) while phonglab was writing the set: nothing was written, moved or removed through it (phonglab held the working folder itself); the set was not written
 set-record-not-one = a link, or not a regular file phonglab can have written (a pipe, a device, a folder, or a file over 1 MiB), where phonglab keeps its list of the files it wrote in this folder: phonglab never reads or writes through it. Remove it, or choose another folder
 set-waiting-for-lock = waiting: another phonglab is writing into { $dir }; this one goes on when it has finished
 set-staging-left = the new set is whole in { $dir }; phonglab's working folder { $name } in it could not be removed yet (a file in it may still be open in another program): the next run in this folder removes it

@@ -729,7 +729,8 @@ cost-wrote = gravado { $files } em { $out }
 ## io-errors
 
 set-folder-is-a-link = um link para outra pasta: o phonglab só grava um conjunto de arquivos em uma pasta de verdade, nunca por meio de um link
-set-folder-replaced = movida ou substituída (por um link ou outra pasta) enquanto o phonglab gravava o conjunto: nada foi gravado por meio dela; o conjunto não foi gravado, e o próximo conjunto na pasta que estava lá descarta o que este começou
+set-folder-replaced = movida ou substituída (por um link ou outra pasta) enquanto o phonglab gravava o conjunto: nada foi gravado, movido ou removido por meio dela (o phonglab segurava a própria pasta); o conjunto não foi gravado, e o que ele tinha começado foi removido da pasta que segurava
+set-staging-replaced = a pasta de trabalho { $name } do phonglab, lá dentro, foi movida ou substituída (por um link ou outra pasta) enquanto o phonglab gravava o conjunto: nada foi gravado, movido ou removido por meio dela (o phonglab segurava a própria pasta de trabalho); o conjunto não foi gravado
 set-record-not-one = um link, ou algo que não é um arquivo comum que o phonglab possa ter gravado (um pipe, um dispositivo, uma pasta, ou um arquivo com mais de 1 MiB), onde o phonglab guarda a lista dos arquivos que gravou nesta pasta: o phonglab nunca lê nem grava por meio dele. Remova-o ou escolha outra pasta
 set-waiting-for-lock = aguardando: outro phonglab está gravando em { $dir }; este continua quando ele terminar
 set-staging-left = o novo conjunto está completo em { $dir }; a pasta de trabalho { $name } do phonglab, lá dentro, ainda não pôde ser removida (um arquivo nela pode ainda estar aberto em outro programa): a próxima execução nesta pasta a remove

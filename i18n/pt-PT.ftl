@@ -714,7 +714,8 @@ cost-wrote = escrito { $files } em { $out }
 ## io-errors
 
 set-folder-is-a-link = uma ligação para outra pasta: o phonglab só escreve um conjunto de ficheiros numa pasta verdadeira, nunca através de uma ligação
-set-folder-replaced = movida ou substituída (por uma ligação ou outra pasta) enquanto o phonglab escrevia o conjunto: nada foi escrito através dela; o conjunto não foi escrito, e o próximo conjunto na pasta que lá estava deita fora o que este começou
+set-folder-replaced = movida ou substituída (por uma ligação ou outra pasta) enquanto o phonglab escrevia o conjunto: nada foi escrito, movido ou removido através dela (o phonglab segurava a própria pasta); o conjunto não foi escrito, e o que tinha começado foi removido da pasta que segurava
+set-staging-replaced = a pasta de trabalho { $name } do phonglab, lá dentro, foi movida ou substituída (por uma ligação ou outra pasta) enquanto o phonglab escrevia o conjunto: nada foi escrito, movido ou removido através dela (o phonglab segurava a própria pasta de trabalho); o conjunto não foi escrito
 set-record-not-one = uma ligação, ou algo que não é um ficheiro normal que o phonglab possa ter escrito (um pipe, um dispositivo, uma pasta, ou um ficheiro com mais de 1 MiB), onde o phonglab guarda a lista dos ficheiros que escreveu nesta pasta: o phonglab nunca lê nem escreve através dela. Remova-a, ou escolha outra pasta
 set-waiting-for-lock = à espera: outro phonglab está a escrever em { $dir }; este continua quando ele terminar
 set-staging-left = o novo conjunto está completo em { $dir }; a pasta de trabalho { $name } do phonglab, lá dentro, ainda não pôde ser removida (um ficheiro nela pode estar ainda aberto noutro programa): a próxima execução nesta pasta remove-a

@@ -40,8 +40,10 @@ use std::path::Path;
 
 use super::atomic_write::{Fault, WriteError, fault, next_step, rename_fault, set_steps, temporary_name};
 use super::set_journal::{
-    ASIDE, Entry, Identity, Journal, STAGING, Took, entry_of, move_entry, plain_name, stage, write_journal,
+    ASIDE, Entry, Identity, Journal, STAGING, Took, entry_in, entry_of, is_entry_in, move_entry, plain_name, stage,
+    write_journal,
 };
+use crate::platform::held_dir::HeldDir;
 
 /// Files that belong together, written by [`write_set`]: names (no folders) and bytes.
 #[derive(Clone, Debug, Default)]
@@ -134,9 +136,10 @@ pub fn write_set(dir: &Path, set: &FileSet, belongs: impl Fn(&str) -> bool) -> R
 /// What a stopped writer left in it is finished or undone when it is held ([`recover`]),
 /// so that the check judges the folder's files as they are after that.
 pub struct HeldFolder {
-    dir: std::path::PathBuf,
-    /// The folder's identity when it was held: checked again just before the swap.
-    id: Identity,
+    /// The folder itself, held by a handle ([`HeldDir`]): the staging folder is made in it,
+    /// and every file moved into or out of it, through that handle, so that the folder
+    /// renamed and replaced by a link meanwhile is never written through (issue 59, F4).
+    held: HeldDir,
     /// What the recovery left as it is, said by [`write_set_held`].
     recovered: Vec<String>,
     _lock: crate::platform::os::FolderLock,
@@ -145,7 +148,7 @@ pub struct HeldFolder {
 impl HeldFolder {
     /// The folder held.
     pub fn dir(&self) -> &Path {
-        &self.dir
+        self.held.path()
     }
 }
 
@@ -172,11 +175,17 @@ pub fn hold_folder(dir: &Path) -> Result<HeldFolder, WriteError> {
     std::fs::create_dir_all(dir).map_err(|e| WriteError::new(dir, "write-step-create-folder", e, UNTOUCHED))?;
     let lock = crate::platform::os::lock_folder(dir, || say_waiting(dir))
         .map_err(|e| WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED))?;
-    let (_, id) = Identity::at(dir).map_err(|e| WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED))?;
+    let held = HeldDir::open(dir).map_err(|e| {
+        if crate::platform::os::is_link_refused(&e) || e.kind() == io::ErrorKind::NotADirectory {
+            refused(dir, "write-step-create-folder", crate::t!("set-folder-is-a-link"))
+        } else {
+            WriteError::new(dir, set_steps::LOCK_FOLDER, e, UNTOUCHED)
+        }
+    })?;
     super::set_journal::check_records(dir)?;
-    let recovered =
-        super::set_journal::recover_locked(dir).map_err(|e| WriteError::new(dir, set_steps::RECOVER, e, UNTOUCHED))?;
-    Ok(HeldFolder { dir: dir.to_path_buf(), id, recovered, _lock: lock })
+    let recovered = super::set_journal::recover_locked(&held)
+        .map_err(|e| WriteError::new(dir, set_steps::RECOVER, e, UNTOUCHED))?;
+    Ok(HeldFolder { held, recovered, _lock: lock })
 }
 
 /// [`write_set`] into a folder this process already holds ([`hold_folder`]).
@@ -190,13 +199,22 @@ pub fn write_set_held(
     // Recovered when the folder was held, before the caller judged its files.
     let notices = held.recovered.clone();
     refuse_unwritable_names(dir, set)?;
-    let staging = new_staging(dir)?;
+    let staging = new_staging(&held.held)?;
     match stage_and_swap(held, &staging, set, &belongs) {
-        Ok(left) => Ok(notices.into_iter().chain(left).collect()),
+        Ok(cleaned) => {
+            let name = staging.path().file_name().unwrap_or_default().to_string_lossy().into_owned();
+            // The staging folder, empty, removed through the folder held (where someone
+            // renamed it within the folder meanwhile, at its new name: found by identity).
+            if cleaned {
+                let _ = super::set_journal::remove_own_folder(&held.held, staging);
+            }
+            held.held.sync();
+            Ok(notices.into_iter().chain((!cleaned).then(|| staging_left(dir, &name))).collect())
+        }
         Err(Stop::Killed) => Err(killed(dir)),
         Err(Stop::Left(e)) => Err(e),
         Err(Stop::Failed(e)) => {
-            super::set_journal::throw_away(&staging);
+            super::set_journal::throw_away(&held.held, staging);
             Err(e)
         }
     }
@@ -257,14 +275,14 @@ fn held_open(e: io::Error, path: &Path) -> io::Error {
 /// Makes this writer's staging folder in `dir`: a name nothing has, made by `mkdir`, which
 /// fails on anything already there (a planted folder or link of the same name is passed
 /// over for the next name).
-fn new_staging(dir: &Path) -> Result<std::path::PathBuf, WriteError> {
+fn new_staging(dir: &HeldDir) -> Result<HeldDir, WriteError> {
     let mut tries = 0;
     loop {
-        let staging = temporary_name(dir, STAGING);
-        match std::fs::create_dir(&staging) {
-            Ok(()) => return Ok(staging),
+        let name = temporary_name(Path::new(""), STAGING);
+        match dir.create_dir(name.as_os_str()) {
+            Ok(staging) => return Ok(staging),
             Err(e) if e.kind() == io::ErrorKind::AlreadyExists && tries < 100 => tries += 1,
-            Err(e) => return Err(WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED)),
+            Err(e) => return Err(WriteError::new(dir.path(), set_steps::CREATE_STAGING, e, UNTOUCHED)),
         }
     }
 }
@@ -321,17 +339,21 @@ fn say_waiting(dir: &Path) {
 /// folder's lock, so a writer still at work is waited for, never disturbed.
 pub fn recover(dir: &Path) -> io::Result<Vec<String>> {
     let _lock = crate::platform::os::lock_folder(dir, || say_waiting(dir))?;
-    super::set_journal::recover_locked(dir)
+    super::set_journal::recover_locked(&HeldDir::open(dir)?)
 }
 
+/// Stages the set in `staging` (held), decides the journal and swaps the set in, every
+/// step through the folders' handles; `Ok(true)`: done and cleaned up, the staging folder
+/// empty; `Ok(false)`: done, but the clean-up was refused (the note of [`staging_left`]).
 fn stage_and_swap(
     held: &HeldFolder,
-    staging: &Path,
+    staging: &HeldDir,
     set: &FileSet,
     belongs: &dyn Fn(&str) -> bool,
-) -> Result<Option<String>, Stop> {
+) -> Result<bool, Stop> {
     let dir = held.dir();
-    let (_, here) = Identity::at(staging).map_err(|e| WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED))?;
+    let (_, here) =
+        Identity::of_file(staging.handle()).map_err(|e| WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED))?;
     let mut journal = Journal { staging: here, decided: false, new: Vec::new(), old: Vec::new() };
     write_journal(staging, &journal, false).map_err(|(what, e)| WriteError::new(dir, what, e, UNTOUCHED))?;
     step()?;
@@ -341,17 +363,17 @@ fn stage_and_swap(
         );
         step()?;
     }
-    crate::platform::os::sync_folder(staging);
-    journal.old = old_set(dir, &journal.new, belongs)?;
+    staging.sync();
+    journal.old = old_set(&held.held, &journal.new, belongs)?;
     step()?;
-    refuse_moved_folder(held)?;
+    refuse_moved(held, staging)?;
     journal.decided = true;
     write_journal(staging, &journal, true).map_err(|(what, e)| WriteError::new(dir, what, e, UNTOUCHED))?;
     step()?;
-    swap(dir, staging, &journal)?;
+    swap(held, staging, &journal)?;
     // The list of what this set wrote, for the next one, while the journal still stands (a
     // kill before it is finished by the recovery, which writes it too).
-    super::set_journal::write_written_list(dir, staging, &journal.new);
+    super::set_journal::write_written_list(&held.held, staging, &journal.new);
     // The old files first, with the journal still there: a kill now is finished by the
     // next run, and one after leaves an empty folder, which the next run removes.
     // A clean-up refused now (Windows: an old file another program holds open, sharing its
@@ -359,52 +381,64 @@ fn stage_and_swap(
     // set is in place and recorded, and the journal, kept, lets the next run finish.
     let cleaned = super::set_journal::clear_aside(staging, &journal.old);
     step()?;
-    let _ = super::set_journal::remove_own_folder(staging);
-    crate::platform::os::sync_folder(dir);
-    Ok((!cleaned).then(|| staging_left(dir, staging)))
+    Ok(cleaned)
 }
 
 /// The note for a staging folder whose clean-up was refused after the new set was placed
 /// (Windows: "directory not empty", a file in it held open): the set is in the folder, and
 /// the next run removes what is left.
-fn staging_left(dir: &Path, staging: &Path) -> String {
-    let name = phonglab_core::escape::terminal::text(&staging.file_name().unwrap_or_default().to_string_lossy());
+fn staging_left(dir: &Path, name: &str) -> String {
+    let name = phonglab_core::escape::terminal::text(name);
     crate::t!("set-staging-left", dir = super::reasons::shown(dir), name = name)
 }
 
-/// Refuses the swap when the folder at the held folder's path is no longer the folder held
-/// (its identity, or a link there): moved and replaced by a link to another set's folder
-/// while the set was written (issue 59, #27), the new set would go through the link.
-fn refuse_moved_folder(held: &HeldFolder) -> Result<(), Stop> {
+/// Why the swap cannot go on where the folder or its staging folder is no longer at its
+/// path (its identity, or a link there): moved and replaced by a link to another folder
+/// while the set was written (issue 59, #27, F4, the hostile's review). Nothing was written
+/// through the link (every step goes through the folders held), but the teacher would not
+/// find the set where they asked for it: the set is refused, and undone. `None`: both are
+/// where they were.
+fn moved(held: &HeldFolder, staging: &HeldDir) -> Option<(std::path::PathBuf, String)> {
     let dir = held.dir();
-    let same = Identity::at(dir).is_ok_and(|(meta, id)| meta.is_dir() && id == held.id);
-    if same && !crate::platform::links::reached_through_link(dir) {
-        return Ok(());
+    if !held.held.still_at_its_path() || crate::platform::links::reached_through_link(dir) {
+        return Some((dir.to_path_buf(), crate::t!("set-folder-replaced")));
     }
-    let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-folder-replaced"));
-    Err(Stop::Left(WriteError::new(dir, set_steps::LIST, e, set_steps::KEPT_FOLDER)))
+    if !staging.still_at_its_path() || crate::platform::links::reached_through_link(staging.path()) {
+        let name = staging.path().file_name().unwrap_or_default().to_string_lossy().into_owned();
+        let name = phonglab_core::escape::terminal::text(&name);
+        return Some((dir.to_path_buf(), crate::t!("set-staging-replaced", name = name)));
+    }
+    None
 }
 
-/// The old set in `dir`: every regular file the new one replaces, and every other member
-/// of it, each as the journal names it.
-fn old_set(dir: &Path, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Result<Vec<Entry>, WriteError> {
-    let entries =
-        std::fs::read_dir(dir).map_err(|e| WriteError::new(dir, set_steps::LIST, e, set_steps::KEPT_FOLDER))?;
+/// Refuses the swap before it is decided where the folder or its staging folder moved
+/// ([`moved`]): the staging folder is thrown away through its handle, so the folder is as
+/// it was.
+fn refuse_moved(held: &HeldFolder, staging: &HeldDir) -> Result<(), Stop> {
+    match moved(held, staging) {
+        None => Ok(()),
+        Some((at, why)) => {
+            let e = io::Error::new(io::ErrorKind::InvalidInput, why);
+            Err(Stop::Failed(WriteError::new(&at, set_steps::LIST, e, set_steps::KEPT_FOLDER)))
+        }
+    }
+}
+
+/// The old set in the folder held `dir`: every regular file the new one replaces, and every
+/// other member of it, each as the journal names it; listed and read through the folder's
+/// handle.
+fn old_set(dir: &HeldDir, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Result<Vec<Entry>, WriteError> {
+    let at = dir.path();
+    let names = dir.names().map_err(|e| WriteError::new(at, set_steps::LIST, e, set_steps::KEPT_FOLDER))?;
     // A member of the old set that the new one lacks goes only when phonglab wrote it and
     // it is unchanged since: a file that merely has a set's kind of name is never removed.
-    let written = super::set_journal::written_list(dir);
-    let ours = |name: &str| {
-        belongs(name) && written.iter().any(|e| e.name == name && super::set_journal::is_entry(&dir.join(name), e))
-    };
+    let written = super::set_journal::written_list_in(dir);
+    let ours = |name: &str| belongs(name) && written.iter().any(|e| e.name == name && is_entry_in(dir, e));
     let mut old = Vec::new();
-    for entry in entries.flatten() {
-        let Ok(name) = entry.file_name().into_string() else { continue };
-        let is_file = entry.file_type().is_ok_and(|t| t.is_file())
-            && !crate::platform::links::reached_through_link(&dir.join(&name));
+    for name in names.into_iter().filter_map(|n| n.into_string().ok()) {
+        let is_file = dir.is_file(std::ffi::OsStr::new(&name));
         if is_file && plain_name(&name) && (new.iter().any(|e| e.name == name) || ours(&name)) {
-            old.push(
-                entry_of(dir, &name).map_err(|e| WriteError::new(&dir.join(&name), set_steps::LIST, e, UNTOUCHED))?,
-            );
+            old.push(entry_in(dir, &name).map_err(|e| WriteError::new(&at.join(&name), set_steps::LIST, e, UNTOUCHED))?);
         }
     }
     old.sort_by(|a, b| a.name.cmp(&b.name));
@@ -412,28 +446,33 @@ fn old_set(dir: &Path, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Result<
 }
 
 /// Step 4: the old files aside (into the staging folder's aside folder), the new ones into
-/// place, where nothing is. A refused rename moves everything back (the new files into the
-/// staging folder, so a journal left by a kill during the undo still finds them).
+/// place, where nothing is, every move between folders held ([`HeldDir`]). A refused rename
+/// moves everything back (the new files into the staging folder, so a journal left by a
+/// kill during the undo still finds them), and so does the folder or its staging folder
+/// found moved ([`moved`], asked before each move and after the last).
 ///
 /// Each file moves only when it is, right then, the file the journal names
 /// ([`super::set_journal::move_entry`], checked through the handle that moves it): an old
 /// file replaced meanwhile (by a link to a file outside the folder, or another file) is left
 /// where it is and the set is undone (issue 59: under Wine a link moved by its name took
 /// the file it named into the aside folder, which was then removed).
-fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
-    let aside = staging.join(ASIDE);
+fn swap(held: &HeldFolder, staging: &HeldDir, j: &Journal) -> Result<(), Stop> {
+    let (dir, path) = (&held.held, held.dir());
+    let aside = staging
+        .create_dir(std::ffi::OsStr::new(ASIDE))
+        .map_err(|e| Stop::Failed(WriteError::new(path, set_steps::CREATE_STAGING, e, UNTOUCHED)))?;
     let mut moved_aside: Vec<&Entry> = Vec::new();
     let mut moved_in: Vec<&Entry> = Vec::new();
     // Every file moved back: `false` where one could not be (something put at its name).
     let undo = |moved_aside: &[&Entry], moved_in: &[&Entry]| {
         let mut all = true;
         for new in moved_in {
-            all &= matches!(move_entry(&dir.join(&new.name), &staging.join(&new.name), new), Ok(Took::Done));
+            all &= matches!(move_entry(dir, staging, new), Ok(Took::Done));
         }
         for old in moved_aside {
-            all &= matches!(move_entry(&aside.join(&old.name), &dir.join(&old.name), old), Ok(Took::Done));
+            all &= matches!(move_entry(&aside, dir, old), Ok(Took::Done));
         }
-        crate::platform::os::sync_folder(dir);
+        dir.sync();
         all
     };
     // The refusal, said truly: the folder as it was, or (an undo incomplete) nothing deleted
@@ -445,41 +484,46 @@ fn swap(dir: &Path, staging: &Path, j: &Journal) -> Result<(), Stop> {
             Stop::Left(WriteError::new(at, "write-step-rename", e, set_steps::KEPT_STAGING))
         }
     };
-    if let Err(e) = std::fs::create_dir(&aside) {
-        return Err(WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED).into());
-    }
+    let gone = || moved(held, staging).map(|(at, why)| (at, io::Error::new(io::ErrorKind::InvalidInput, why)));
     for old in &j.old {
-        meanwhile(&dir.join(&old.name));
-        let (from, to) = (dir.join(&old.name), aside.join(&old.name));
-        if let Err(e) = counted_move(&from, &to, old) {
-            return Err(refused(&from, e, undo(&moved_aside, &moved_in)));
+        meanwhile(&path.join(&old.name));
+        if let Some((at, e)) = gone() {
+            return Err(refused(&at, e, undo(&moved_aside, &moved_in)));
+        }
+        if let Err(e) = counted_move(dir, &aside, old) {
+            return Err(refused(&path.join(&old.name), e, undo(&moved_aside, &moved_in)));
         }
         moved_aside.push(old);
         step()?;
     }
     for new in &j.new {
-        let (from, to) = (staging.join(&new.name), dir.join(&new.name));
-        if let Err(e) = counted_move(&from, &to, new) {
-            return Err(refused(&to, e, undo(&moved_aside, &moved_in)));
+        if let Some((at, e)) = gone() {
+            return Err(refused(&at, e, undo(&moved_aside, &moved_in)));
+        }
+        if let Err(e) = counted_move(staging, dir, new) {
+            return Err(refused(&path.join(&new.name), e, undo(&moved_aside, &moved_in)));
         }
         moved_in.push(new);
         step()?;
     }
-    crate::platform::os::sync_folder(dir);
+    if let Some((at, e)) = gone() {
+        return Err(refused(&at, e, undo(&moved_aside, &moved_in)));
+    }
+    dir.sync();
     Ok(())
 }
 
 /// One move of the swap ([`super::set_journal::move_entry`]), a rename a test may make fail
-/// ([`Fault::OnRename`]): `Err` with why, in words, where the file at `from` is not the one
-/// the journal names (or is gone) or the system refused (another program holds it open).
-fn counted_move(from: &Path, to: &Path, entry: &Entry) -> io::Result<()> {
+/// ([`Fault::OnRename`]): `Err` with why, in words, where the file is not the one the
+/// journal names (or is gone) or the system refused (another program holds it open).
+fn counted_move(from: &HeldDir, to: &HeldDir, entry: &Entry) -> io::Result<()> {
     rename_fault()?;
     match move_entry(from, to, entry) {
         Ok(Took::Done) => Ok(()),
         Ok(Took::Absent | Took::Other) => {
             Err(io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-file-replaced-meanwhile")))
         }
-        Err(e) => Err(held_open(e, from)),
+        Err(e) => Err(held_open(e, &from.path().join(&entry.name))),
     }
 }
 

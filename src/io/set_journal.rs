@@ -8,6 +8,14 @@
 //! - the staging folder (`.phonglab-set.<pid>.<n>.tmp`) is created by this writer alone
 //!   (`mkdir` fails on anything already there, a link included), and the journal lives in
 //!   it (`.phonglab-set.journal`), created exclusively, never read through a link;
+//! - the staging folder, its aside folder and the target folder are held by a handle while
+//!   phonglab works in them ([`crate::platform::held_dir`]: Unix, a descriptor every step
+//!   is relative to; Windows, a handle that does not share deletion, so none of them can be
+//!   renamed or removed meanwhile): one renamed and replaced by a link to another folder
+//!   never sends a write, a move or a removal into the folder the link leads to;
+//! - each file staged is named, by its identity, in a list appended before its bytes are
+//!   written ([`STAGED`]): a writer stopped before its journal decided leaves nothing the
+//!   recovery removes but those;
 //! - the journal names the staging folder by its identity (Unix: device, inode and birth
 //!   time; Windows: the volume's serial number and the file index; what a file gets when it
 //!   is made, which nobody planting a file can choose) and names
@@ -21,6 +29,7 @@
 //!   staging folder, a staging folder without a journal or with a journal that is not its
 //!   own, a file changed since) is left as it is, and a message says so.
 
+use std::ffi::OsStr;
 use std::hash::Hasher as _;
 use std::io::{self, Read};
 use std::path::Path;
@@ -28,6 +37,7 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 use siphasher::sip128::{Hasher128, SipHasher13};
 
+use crate::platform::held_dir::HeldDir;
 use crate::t;
 
 /// The stem of a staging folder's name (`.phonglab-set.<pid>.<n>.tmp`).
@@ -42,6 +52,13 @@ pub const ASIDE: &str = ".phonglab-set.old";
 
 /// The journal's temporary file, inside the staging folder, renamed into place whole.
 const JOURNAL_TMP: &str = ".phonglab-set.journal.tmp";
+
+/// The list of what a writer staged, inside its staging folder: each file's name and
+/// identity, appended (and synced) as each is created, before its bytes are written, so
+/// that a writer stopped before its journal decided leaves every file it staged named by
+/// its identity, and the recovery removes those and nothing else (fix59n left them to be
+/// told by their kind: a regular file under a name of the set).
+const STAGED: &str = ".phonglab-set.staged";
 
 /// The largest journal read: a set of a thousand files takes about 200 KB.
 const MAX_JOURNAL_BYTES: u64 = 1 << 20;
@@ -125,6 +142,12 @@ pub fn hash_bytes(bytes: &[u8]) -> String {
     format!("{:032x}", h.finish128().as_u128())
 }
 
+/// The file `name` in the folder held `dir`, read without following a link: its size, hash
+/// and identity. `Err` when it is not a regular file.
+fn read_entry_in(dir: &HeldDir, name: &str) -> io::Result<(u64, String, Identity)> {
+    read_open(&dir.open_file(OsStr::new(name))?)
+}
+
 /// The file at `path`, read without following a link: its size, hash and identity. `Err`
 /// when it is not a regular file.
 fn read_entry(path: &Path) -> io::Result<(u64, String, Identity)> {
@@ -150,19 +173,23 @@ fn read_open(file: &std::fs::File) -> io::Result<(u64, String, Identity)> {
     Ok((size, format!("{:032x}", h.finish128().as_u128()), id))
 }
 
-/// The entry of the file `name` in `folder`, read there now.
+/// The entry of the file `name` in `folder`, read there now (by its path: for a look that
+/// moves nothing).
 pub fn entry_of(folder: &Path, name: &str) -> io::Result<Entry> {
     let (size, hash, id) = read_entry(&folder.join(name))?;
     Ok(Entry { name: name.to_string(), size, hash, id })
 }
 
-/// Is the file at `path` exactly the one `entry` names (identity, size and hash)?
-pub fn is_entry(path: &Path, entry: &Entry) -> bool {
-    let Ok((meta, id)) = Identity::at(path) else { return false };
-    if !meta.is_file() || id != entry.id || meta.len() != entry.size {
-        return false;
-    }
-    read_entry(path).is_ok_and(|(size, hash, id)| size == entry.size && hash == entry.hash && id == entry.id)
+/// The entry of the file `name` in the folder held `dir`, read there now.
+pub fn entry_in(dir: &HeldDir, name: &str) -> io::Result<Entry> {
+    let (size, hash, id) = read_entry_in(dir, name)?;
+    Ok(Entry { name: name.to_string(), size, hash, id })
+}
+
+/// Is the file `entry.name` in the folder held `dir` exactly the one `entry` names
+/// (identity, size and hash)?
+pub fn is_entry_in(dir: &HeldDir, entry: &Entry) -> bool {
+    read_entry_in(dir, &entry.name).is_ok_and(|(size, hash, id)| size == entry.size && hash == entry.hash && id == entry.id)
 }
 
 /// What became of a file asked to move or go ([`move_entry`], [`remove_entry`],
@@ -178,56 +205,31 @@ pub enum Took {
     Other,
 }
 
-/// The file at `path`, opened itself ([`crate::platform::by_handle`]), when `is_it` says,
-/// through that handle, that it is the file asked for; `Err(Took)` when it is absent or
-/// something else is there (a link refused by the open itself, on Windows one reached
-/// under another name too).
-fn open_checked(
-    path: &Path,
+/// The file `name` in the folder held `dir`, opened itself ([`crate::platform::by_handle`]),
+/// when `is_it` says, through that handle, that it is the file asked for; `Err(Took)` when
+/// it is absent or something else is there (a link refused by the open itself, on Windows
+/// one reached under another name too). The folder is held ([`HeldDir`]): a staging folder
+/// renamed and replaced by a link to another folder meanwhile (issue 59, the hostile's
+/// review) changes nothing, the open is still in the folder held.
+fn open_checked<'a>(
+    dir: &'a HeldDir,
+    name: &str,
     is_it: impl FnOnce(&std::fs::File) -> bool,
-) -> io::Result<Result<crate::platform::by_handle::Opened, Took>> {
-    // A staging or aside folder on the way swapped for a link (issue 59, the hostile's
-    // review: a staging folder renamed and a link to another folder put at its name made
-    // the clean-up remove every file there): asked before the open and after it, so a swap
-    // between the two is seen too.
-    let folders_real = || path.parent().is_none_or(own_folders_real);
-    if !folders_real() {
-        return Ok(Err(Took::Other));
-    }
-    let opened = match crate::platform::by_handle::open(path) {
+) -> io::Result<Result<crate::platform::by_handle::Opened<'a>, Took>> {
+    let opened = match crate::platform::by_handle::open_in(dir, OsStr::new(name)) {
         Ok(opened) => opened,
         Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Err(Took::Absent)),
         Err(e) if crate::platform::os::is_link_refused(&e) => return Ok(Err(Took::Other)),
         Err(e) => return Err(e),
     };
-    Ok(if folders_real() && is_it(opened.file()) { Ok(opened) } else { Err(Took::Other) })
+    Ok(if is_it(opened.file()) { Ok(opened) } else { Err(Took::Other) })
 }
 
-/// Are `folder` and the folders of phonglab's own it is in (a staging folder, its aside
-/// folder: it and its ancestors named like them, up to the first that is not) real folders,
-/// reached under their own names, not links? The folder they are in is the one held,
-/// checked by its identity ([`super::file_set::hold_folder`]).
-pub fn own_folders_real(folder: &Path) -> bool {
-    folder.ancestors().take_while(|a| a.file_name().and_then(|n| n.to_str()).is_some_and(is_own_folder_name)).all(|a| {
-        std::fs::symlink_metadata(a).is_ok_and(|m| m.is_dir() && !m.file_type().is_symlink())
-            && !crate::platform::links::reached_through_link(a)
-    })
-}
-
-/// Removes the empty `folder`, a staging or aside folder of phonglab's own, only when it
-/// and the folders of phonglab's own it is in are real ([`own_folders_real`]): a link at
-/// its name (Wine: `RemoveDirectory` through it removed the folder it led to) is left.
-pub fn remove_own_folder(folder: &Path) -> io::Result<()> {
-    if !own_folders_real(folder) {
-        return Err(io::Error::new(io::ErrorKind::InvalidInput, "not a folder of phonglab's own"));
-    }
-    std::fs::remove_dir(folder)
-}
-
-/// A name phonglab gives a folder of its own inside a set's folder: a staging folder, or
-/// the aside folder in one.
-fn is_own_folder_name(name: &str) -> bool {
-    is_staging_name(name) || name == ASIDE
+/// Removes the empty folder `folder`, one of phonglab's own (a staging or aside folder),
+/// held, from the folder held `parent` ([`HeldDir::remove_dir`]: never through a link put at
+/// its name; Unix: where someone renamed it within `parent`, at its new name).
+pub fn remove_own_folder(parent: &HeldDir, folder: HeldDir) -> io::Result<()> {
+    parent.remove_dir(folder)
 }
 
 /// Is the open `file` exactly the one `entry` names (a regular file; its identity, size and
@@ -236,38 +238,51 @@ fn is_entry_file(file: &std::fs::File, entry: &Entry) -> bool {
     read_open(file).is_ok_and(|(size, hash, id)| size == entry.size && hash == entry.hash && id == entry.id)
 }
 
-/// Moves the file at `from` to `to` (where nothing is) only when it is, right then, the file
-/// `entry` names, checked through the handle that moves it: the one way a set's files move
-/// (the swap, its undo, the recovery). A link planted at `from` (Wine: one that opens as
-/// the file it names, which a move by name would have moved) or any other file there is
-/// left where it is ([`Took::Other`]). `Err`: the system refused (Windows: another program
-/// holds the file open without sharing its deletion).
-pub fn move_entry(from: &Path, to: &Path, entry: &Entry) -> io::Result<Took> {
-    // Nor into a staging or aside folder swapped for a link: the file would leave the folder.
-    if !to.parent().is_none_or(own_folders_real) {
-        return Ok(Took::Other);
-    }
-    match open_checked(from, |f| is_entry_file(f, entry))? {
-        Ok(opened) => Ok(if opened.rename_no_replace(to)? { Took::Done } else { Took::Other }),
+/// Moves the file `entry.name` from the folder held `from` to the same name in the folder
+/// held `to` (where nothing is) only when it is, right then, the file `entry` names, checked
+/// through the handle that moves it: the one way a set's files move (the swap, its undo,
+/// the recovery). A link planted at its name (Wine: one that opens as the file it names,
+/// which a move by name would have moved) or any other file there is left where it is
+/// ([`Took::Other`]). `Err`: the system refused (Windows: another program holds the file
+/// open without sharing its deletion).
+pub fn move_entry(from: &HeldDir, to: &HeldDir, entry: &Entry) -> io::Result<Took> {
+    match open_checked(from, &entry.name, |f| is_entry_file(f, entry))? {
+        Ok(opened) => Ok(if opened.rename_no_replace(to, OsStr::new(&entry.name))? { Took::Done } else { Took::Other }),
         Err(took) => Ok(took),
     }
 }
 
-/// Removes the file at `path` only when it is, right then, the file `entry` names, through
-/// the handle that checked it (see [`move_entry`]): the one way a set's old files go.
-pub fn remove_entry(path: &Path, entry: &Entry) -> io::Result<Took> {
-    match open_checked(path, |f| is_entry_file(f, entry))? {
+/// Removes the file `entry.name` in the folder held `dir` only when it is, right then, the
+/// file `entry` names, through the handle that checked it (see [`move_entry`]): the one way
+/// a set's old files go.
+pub fn remove_entry(dir: &HeldDir, entry: &Entry) -> io::Result<Took> {
+    match open_checked(dir, &entry.name, |f| is_entry_file(f, entry))? {
         Ok(opened) => Ok(if opened.remove()? { Took::Done } else { Took::Other }),
         Err(took) => Ok(took),
     }
 }
 
-/// Removes the file at `path`, one of phonglab's own in a staging folder this writer made (a
-/// journal, a temporary file, a file staged before the journal named it), only when it is
-/// a regular file reached under its own name (not a link; Wine: not one that opens as the
-/// file it names), through the handle that checked it.
-pub fn remove_own(path: &Path) -> io::Result<Took> {
-    match open_checked(path, |f| crate::platform::os::regular_file_metadata(f).is_ok_and(|m| m.is_some()))? {
+/// Removes the file `name` in a staging folder this writer made, held, when it is one of
+/// phonglab's records there (a journal, its temporary file, the list of what was staged, the
+/// list of what was written on its way into the folder): a regular file reached under its
+/// own name (not a link; Wine: not one that opens as the file it names), through the handle
+/// that checked it. A staged file goes only by its identity ([`remove_staged`]).
+pub fn remove_own(dir: &HeldDir, name: &str) -> io::Result<Took> {
+    match open_checked(dir, name, |f| crate::platform::os::regular_file_metadata(f).is_ok_and(|m| m.is_some()))? {
+        Ok(opened) => Ok(if opened.remove()? { Took::Done } else { Took::Other }),
+        Err(took) => Ok(took),
+    }
+}
+
+/// Removes the file `name` in the staging folder held `dir` when the list of what this
+/// writer staged there ([`STAGED`]) names it with the identity it has now: a file staged by
+/// the writer, never one put there by anyone else under a name it staged.
+fn remove_staged(dir: &HeldDir, name: &str, staged: &[Staged]) -> io::Result<Took> {
+    let listed = |f: &std::fs::File| {
+        crate::platform::os::regular_file_metadata(f).is_ok_and(|m| m.is_some())
+            && Identity::of_file(f).is_ok_and(|(_, id)| staged.iter().any(|s| s.name == name && s.id == id))
+    };
+    match open_checked(dir, name, listed)? {
         Ok(opened) => Ok(if opened.remove()? { Took::Done } else { Took::Other }),
         Err(took) => Ok(took),
     }
@@ -277,7 +292,7 @@ pub fn remove_own(path: &Path) -> io::Result<Took> {
 /// what phonglab wrote (`written`) names with these very bytes (name, size and hash)? Its
 /// identity is not asked: a folder copied whole (`cp -a`), or a file rewritten with the
 /// same bytes, still holds what phonglab wrote, not the teacher's work. (Removing a file
-/// asks its identity too: [`is_entry`].)
+/// asks its identity too: [`is_entry_in`].)
 pub fn written_as_is(written: &[Entry], now: &Entry) -> bool {
     written.iter().any(|e| e.name == now.name && e.size == now.size && e.hash == now.hash)
 }
@@ -297,23 +312,34 @@ fn is_staging_name(name: &str) -> bool {
     name.starts_with(&format!(".{STAGING}.")) && name.ends_with(".tmp")
 }
 
-/// Writes `journal` into its staging folder whole: a temporary file created exclusively,
-/// synced, renamed over the journal (both in the folder this writer made). `counted`: the
-/// rename is one a test may make fail ([`super::atomic_write::Fault::OnRename`]).
-pub fn write_journal(staging: &Path, journal: &Journal, counted: bool) -> Result<(), (&'static str, io::Error)> {
+/// Writes `bytes` as the new file `name` in the folder held `dir`: created exclusively
+/// (never through a link), written, synced and closed; on failure removed (as phonglab's
+/// own, in its own folder). Its identity, read through the handle that made it.
+fn write_new_in(dir: &HeldDir, name: &str, bytes: &[u8]) -> Result<Identity, (&'static str, io::Error)> {
+    let file = dir.create_new(OsStr::new(name)).map_err(|e| ("write-step-create", e))?;
+    let id = Identity::of_file(&file).map(|(_, id)| id);
+    let result = super::atomic_write::write_file(file, bytes);
+    if result.is_err() {
+        let _ = remove_own(dir, name);
+    }
+    result?;
+    id.map_err(|e| ("write-step-create", e))
+}
+
+/// Writes `journal` into its staging folder, held, whole: a temporary file created
+/// exclusively, synced, renamed over the journal (both in the folder this writer made,
+/// through its handle). `counted`: the rename is one a test may make fail
+/// ([`super::atomic_write::Fault::OnRename`]).
+pub fn write_journal(staging: &HeldDir, journal: &Journal, counted: bool) -> Result<(), (&'static str, io::Error)> {
     let bytes = serde_json::to_vec(journal).map_err(|e| ("write-step-write", io::Error::other(e)))?;
-    let tmp = staging.join(JOURNAL_TMP);
-    super::atomic_write::write_new(&tmp, &bytes)?;
-    let renamed = if counted {
-        super::atomic_write::rename(&tmp, &staging.join(JOURNAL))
-    } else {
-        std::fs::rename(&tmp, staging.join(JOURNAL))
-    };
+    write_new_in(staging, JOURNAL_TMP, &bytes)?;
+    let fault = if counted { super::atomic_write::rename_fault() } else { Ok(()) };
+    let renamed = fault.and_then(|()| staging.rename_over(OsStr::new(JOURNAL_TMP), staging, OsStr::new(JOURNAL)));
     renamed.map_err(|e| {
-        let _ = remove_own(&tmp);
+        let _ = remove_own(staging, JOURNAL_TMP);
         ("write-step-rename", e)
     })?;
-    crate::platform::os::sync_folder(staging);
+    staging.sync();
     Ok(())
 }
 
@@ -339,11 +365,27 @@ fn read_record(path: &Path) -> Result<Vec<u8>, Record> {
     if crate::platform::links::reached_through_link(path) {
         return Err(Record::NotOne);
     }
-    let file = match crate::platform::os::open_no_follow(path) {
-        Ok(f) => f,
-        Err(e) if e.kind() == io::ErrorKind::NotFound => return Err(Record::Missing),
-        Err(e) => return Err(Record::Unreadable(e)),
-    };
+    match crate::platform::os::open_no_follow(path) {
+        Ok(file) => read_record_open(file),
+        Err(e) if e.kind() == io::ErrorKind::NotFound => Err(Record::Missing),
+        Err(e) => Err(Record::Unreadable(e)),
+    }
+}
+
+/// [`read_record`] of the record `name` in the folder held `dir`, through its handle.
+fn read_record_in(dir: &HeldDir, name: &str) -> Result<Vec<u8>, Record> {
+    if cfg!(windows) && crate::platform::links::reached_through_link(&dir.path().join(name)) {
+        return Err(Record::NotOne);
+    }
+    match dir.open_file(OsStr::new(name)) {
+        Ok(file) => read_record_open(file),
+        Err(e) if e.kind() == io::ErrorKind::NotFound => Err(Record::Missing),
+        Err(e) => Err(Record::Unreadable(e)),
+    }
+}
+
+/// A record's bytes, read through its open handle: a regular file of at most 1 MiB.
+fn read_record_open(file: std::fs::File) -> Result<Vec<u8>, Record> {
     let meta = file.metadata().map_err(Record::Unreadable)?;
     if !meta.is_file() || meta.len() > MAX_JOURNAL_BYTES {
         return Err(Record::NotOne);
@@ -353,18 +395,19 @@ fn read_record(path: &Path) -> Result<Vec<u8>, Record> {
     Ok(bytes)
 }
 
-/// The journal of the staging folder `staging`, when phonglab wrote it there: read without
-/// following a link, under its cap, naming that very folder and only plain files, each
-/// once. `Ok(None)`: the folder has no journal. `Err`: why it is not trusted.
-fn read_journal(staging: &Path) -> Result<Option<Journal>, String> {
-    let bytes = match read_record(&staging.join(JOURNAL)) {
+/// The journal of the staging folder held `staging`, when phonglab wrote it there: read
+/// without following a link, under its cap, naming that very folder (its identity, read
+/// through the handle) and only plain files, each once. `Ok(None)`: the folder has no
+/// journal. `Err`: why it is not trusted.
+fn read_journal(staging: &HeldDir) -> Result<Option<Journal>, String> {
+    let bytes = match read_record_in(staging, JOURNAL) {
         Ok(bytes) => bytes,
         Err(Record::Missing) => return Ok(None),
         Err(Record::Unreadable(e)) => return Err(untrusted(&crate::io::reasons::io_reason(&e))),
         Err(Record::NotOne) => return Err(untrusted(&t!("set-why-not-a-journal"))),
     };
     let j: Journal = serde_json::from_slice(&bytes).map_err(|_| untrusted(&t!("set-why-not-a-journal")))?;
-    let (here, id) = Identity::at(staging).map_err(|e| untrusted(&crate::io::reasons::io_reason(&e)))?;
+    let (here, id) = Identity::of_file(staging.handle()).map_err(|e| untrusted(&crate::io::reasons::io_reason(&e)))?;
     if !here.is_dir() || id != j.staging {
         return Err(untrusted(&t!("set-why-other-folder")));
     }
@@ -389,52 +432,51 @@ fn left(dir: &Path, name: &str, why: &str) -> String {
     t!("set-left-alone", name = text(name), dir = text(&dir.display().to_string()), why = why)
 }
 
-/// Finishes or throws away what killed writers of a set left in `dir`, acting only on
-/// what phonglab wrote (see the module's documentation); the caller holds the folder's
-/// lock, so every staging folder with a journal is a dead writer's. Returns a message for
-/// each thing left as it is.
-pub fn recover_locked(dir: &Path) -> io::Result<Vec<String>> {
+/// Finishes or throws away what killed writers of a set left in the folder held `dir`,
+/// acting only on what phonglab wrote (see the module's documentation), every step through
+/// the folders' handles ([`HeldDir`]); the caller holds the folder's lock, so every staging
+/// folder with a journal is a dead writer's. Returns a message for each thing left as it is.
+pub fn recover_locked(dir: &HeldDir) -> io::Result<Vec<String>> {
     let mut notices = Vec::new();
-    let mut names: Vec<String> =
-        std::fs::read_dir(dir)?.flatten().filter_map(|e| e.file_name().into_string().ok()).collect();
+    let mut names: Vec<String> = dir.names()?.into_iter().filter_map(|n| n.into_string().ok()).collect();
     names.sort();
+    let shown = dir.path();
     for name in names {
         if name == JOURNAL {
-            notices.push(left(dir, &name, &t!("set-why-loose-journal")));
+            notices.push(left(shown, &name, &t!("set-why-loose-journal")));
             continue;
         }
-        if !is_staging_name(&name) {
+        if !is_staging_name(&name) || !dir.has(OsStr::new(&name)) {
             continue;
         }
-        let staging = dir.join(&name);
-        let Ok(meta) = std::fs::symlink_metadata(&staging) else { continue };
-        if !meta.is_dir() {
-            notices.push(left(dir, &name, &t!("set-why-not-a-folder")));
+        // Held itself: a link or a file of that name is not opened as a folder.
+        let Ok(staging) = dir.open_dir(OsStr::new(&name)) else {
+            notices.push(left(shown, &name, &t!("set-why-not-a-folder")));
             continue;
-        }
+        };
         match read_journal(&staging) {
             Ok(Some(j)) if j.decided => {
-                if let Err(why) = finish(dir, &staging, &j) {
-                    notices.push(left(dir, &name, &why));
+                if let Err(why) = finish(dir, staging, &j) {
+                    notices.push(left(shown, &name, &why));
                 }
             }
             // Stopped before the swap was decided: the old set is whole in place, and
             // the staging folder holds what this writer put in it (removed file by file,
             // each checked; anything else left, and said).
             Ok(Some(_)) => {
-                if !throw_away(&staging) {
-                    notices.push(left(dir, &name, &t!("set-why-not-all-own")));
+                if !throw_away(dir, staging) {
+                    notices.push(left(shown, &name, &t!("set-why-not-all-own")));
                 }
             }
             Ok(None) => {
-                if !remove_if_empty(&staging) {
-                    notices.push(left(dir, &name, &t!("set-why-no-journal")));
+                if !remove_if_empty(dir, staging) {
+                    notices.push(left(shown, &name, &t!("set-why-no-journal")));
                 }
             }
-            Err(why) => notices.push(left(dir, &name, &why)),
+            Err(why) => notices.push(left(shown, &name, &why)),
         }
     }
-    crate::platform::os::sync_folder(dir);
+    dir.sync();
     Ok(notices)
 }
 
@@ -460,137 +502,199 @@ pub fn check_records(dir: &Path) -> Result<(), super::atomic_write::WriteError> 
 /// beyond the new set's own names is replaced; a writer refuses such a list first,
 /// [`check_records`]).
 pub fn written_list(dir: &Path) -> Vec<Entry> {
-    read_record(&dir.join(WRITTEN))
-        .ok()
-        .and_then(|bytes| serde_json::from_slice::<Vec<Entry>>(&bytes).ok())
-        .unwrap_or_default()
+    read_record(&dir.join(WRITTEN)).ok().and_then(|bytes| serde_json::from_slice::<Vec<Entry>>(&bytes).ok()).unwrap_or_default()
 }
 
-/// Throws away the staging folder `staging` of a set not swapped in (stopped before its
-/// journal decided, or undone): its journal first, then each regular file in it that is
-/// phonglab's own ([`remove_own`]: never a link, nor what one leads to), then the empty
-/// aside folder and the folder itself. `false`: something else is in it (a link, a folder, a
-/// file of the old set not moved back), left there with the folder.
-pub fn throw_away(staging: &Path) -> bool {
-    if !own_folders_real(staging) {
-        return false;
-    }
-    let _ = remove_own(&staging.join(JOURNAL));
-    if let Ok(entries) = std::fs::read_dir(staging) {
-        for entry in entries.flatten() {
-            if entry.file_name() != ASIDE {
-                let _ = remove_own(&entry.path());
+/// [`written_list`] of the folder held `dir`, read through its handle.
+pub fn written_list_in(dir: &HeldDir) -> Vec<Entry> {
+    read_record_in(dir, WRITTEN).ok().and_then(|bytes| serde_json::from_slice::<Vec<Entry>>(&bytes).ok()).unwrap_or_default()
+}
+
+/// Throws away the staging folder `staging` (held, in the folder held `parent`) of a set not
+/// swapped in (stopped before its journal decided, or undone): its journal first, then each
+/// file in it that phonglab put there (a file it staged, by the identity the list of what it
+/// staged names, [`remove_staged`]; its own records, [`remove_own`]: never a link, nor what
+/// one leads to), then the empty aside folder and the folder itself. `false`: something else
+/// is in it (a link, a folder, a file of the old set not moved back, a file at a staged
+/// name that is not the one staged), left there with the folder.
+pub fn throw_away(parent: &HeldDir, staging: HeldDir) -> bool {
+    let _ = remove_own(&staging, JOURNAL);
+    let staged = staged_list(&staging);
+    if let Ok(names) = staging.names() {
+        for name in names.into_iter().filter_map(|n| n.into_string().ok()) {
+            if [JOURNAL_TMP, WRITTEN, STAGED].contains(&name.as_str()) {
+                continue;
+            }
+            if name != ASIDE {
+                let _ = remove_staged(&staging, &name, &staged);
             }
         }
     }
-    remove_if_empty(staging)
+    for own in [JOURNAL_TMP, WRITTEN, STAGED] {
+        let _ = remove_own(&staging, own);
+    }
+    remove_if_empty(parent, staging)
 }
 
 /// Removes the old set's files from the aside folder of `staging` (each only when it is,
 /// right then, the file the journal names: [`remove_entry`]), then the aside folder, then
-/// the journal. `false`: something was not removed (another program holds a file open, or
-/// something else is there), and the journal is kept, so the next run finishes.
-pub fn clear_aside(staging: &Path, old: &[Entry]) -> bool {
-    let aside = staging.join(ASIDE);
-    for entry in old {
-        let _ = remove_entry(&aside.join(&entry.name), entry);
-    }
-    let gone = match remove_own_folder(&aside) {
-        Ok(()) => true,
+/// the journal and the list of what was staged. `false`: something was not removed
+/// (another program holds a file open, or something else is there), and the journal is
+/// kept, so the next run finishes.
+pub fn clear_aside(staging: &HeldDir, old: &[Entry]) -> bool {
+    let gone = match staging.open_dir(OsStr::new(ASIDE)) {
+        Ok(aside) => {
+            for entry in old {
+                let _ = remove_entry(&aside, entry);
+            }
+            remove_own_folder(staging, aside).is_ok()
+        }
         Err(e) => e.kind() == io::ErrorKind::NotFound,
     };
-    gone && matches!(remove_own(&staging.join(JOURNAL)), Ok(Took::Done | Took::Absent))
+    let cleared = gone && matches!(remove_own(staging, JOURNAL), Ok(Took::Done | Took::Absent));
+    if cleared {
+        let _ = remove_own(staging, STAGED);
+    }
+    cleared
 }
 
-/// Removes `staging` when it holds nothing but, at most, an empty aside folder (a writer
-/// killed after it removed its journal, or before it wrote one): no file is lost.
-fn remove_if_empty(staging: &Path) -> bool {
-    // Only real folders of phonglab's own (remove_own_folder: a link planted at a staging
-    // folder's name, under Wine, removed the empty folder it led to).
-    let _ = remove_own_folder(&staging.join(ASIDE));
-    remove_own_folder(staging).is_ok()
+/// Removes `staging` (held, in the folder held `parent`) when it holds nothing but, at
+/// most, an empty aside folder (a writer killed after it removed its journal, or before it
+/// wrote one): no file is lost.
+fn remove_if_empty(parent: &HeldDir, staging: HeldDir) -> bool {
+    if let Ok(aside) = staging.open_dir(OsStr::new(ASIDE)) {
+        let _ = remove_own_folder(&staging, aside);
+    }
+    remove_own_folder(parent, staging).is_ok()
 }
 
 /// Rolls the decided swap `j` forward from wherever it stopped: each old file still in
 /// place, and still the one the journal names, moved aside; each new file still staged,
 /// and still the one written, moved into its place where nothing is; then the staging
-/// folder removed. `Err`: the files it could not place (something else is at their name),
-/// and the staging folder is kept with them.
-fn finish(dir: &Path, staging: &Path, j: &Journal) -> Result<(), String> {
-    let aside = staging.join(ASIDE);
+/// folder removed. Every step through the folders' handles. `Err`: the files it could not
+/// place (something else is at their name), and the staging folder is kept with them.
+fn finish(dir: &HeldDir, staging: HeldDir, j: &Journal) -> Result<(), String> {
     let mut stuck = Vec::new();
+    let mut aside = None;
     for old in &j.old {
-        if is_entry(&dir.join(&old.name), old) {
-            let _ = std::fs::create_dir(&aside);
-            if !matches!(move_entry(&dir.join(&old.name), &aside.join(&old.name), old), Ok(Took::Done)) {
+        if is_entry_in(dir, old) {
+            if aside.is_none() {
+                aside = staging.open_dir(OsStr::new(ASIDE)).or_else(|_| staging.create_dir(OsStr::new(ASIDE))).ok();
+            }
+            let moved = aside.as_ref().is_some_and(|a| matches!(move_entry(dir, a, old), Ok(Took::Done)));
+            if !moved {
                 stuck.push(old.name.clone());
             }
         }
     }
+    drop(aside);
     for new in &j.new {
-        let (staged, target) = (staging.join(&new.name), dir.join(&new.name));
-        if is_entry(&target, new) {
+        if is_entry_in(dir, new) {
             continue;
         }
-        if !matches!(move_entry(&staged, &target, new), Ok(Took::Done)) {
+        if !matches!(move_entry(&staging, dir, new), Ok(Took::Done)) {
             stuck.push(new.name.clone());
         }
     }
-    crate::platform::os::sync_folder(dir);
+    dir.sync();
     if !stuck.is_empty() {
         // The new files now in place, exactly as written, are recorded as phonglab's, so
         // that the next set removes those it lacks (issue 59, #70: a stopped set of 40
         // whose file the teacher edited stayed beside the next set of 2, named by no
         // record); what could not be placed is named to the user, and kept.
-        let placed: Vec<Entry> = j.new.iter().filter(|e| is_entry(&dir.join(&e.name), e)).cloned().collect();
-        write_written_list(dir, staging, &placed);
+        let placed: Vec<Entry> = j.new.iter().filter(|e| is_entry_in(dir, e)).cloned().collect();
+        write_written_list(dir, &staging, &placed);
         stuck.sort();
         stuck.dedup();
         let names = phonglab_core::escape::terminal::text(&stuck.join(", "));
         return Err(t!("set-why-unfinished", names = names));
     }
-    write_written_list(dir, staging, &j.new);
-    if !clear_aside(staging, &j.old) {
+    write_written_list(dir, &staging, &j.new);
+    if !clear_aside(&staging, &j.old) {
         return Err(t!("set-why-not-all-own"));
     }
-    let _ = remove_own_folder(staging);
+    let _ = remove_own_folder(dir, staging);
     Ok(())
 }
 
-/// Records, whole, the files a set wrote into `dir` ([`WRITTEN`]), with those the list
-/// named before that are still there with the bytes phonglab wrote (in a copied folder
-/// too: their entries kept as they were, so they stay phonglab's to replace; another kind of set's
-/// files: the sheets beside a Moodle file, which the Moodle file leaves in place, stay
-/// phonglab's to replace); a failure only leaves them for the next set to keep. The list is
-/// written in the set's staging folder (made by this writer) and renamed over the name in
-/// `dir`: a rename replaces a name, never follows it, so a link planted there since
-/// [`check_records`] is replaced itself, and nothing is written where it points.
-pub fn write_written_list(dir: &Path, staging: &Path, new: &[Entry]) {
+/// Records, whole, the files a set wrote into the folder held `dir` ([`WRITTEN`]), with
+/// those the list named before that are still there with the bytes phonglab wrote (in a
+/// copied folder too: their entries kept as they were, so they stay phonglab's to replace;
+/// another kind of set's files: the sheets beside a Moodle file, which the Moodle file
+/// leaves in place, stay phonglab's to replace); a failure only leaves them for the next set
+/// to keep. The list is written in the set's staging folder (made by this writer, held) and
+/// renamed over the name in `dir`, both through the folders' handles: a rename replaces a
+/// name, never follows it, so a link planted there since [`check_records`] is replaced
+/// itself, and nothing is written where it points.
+pub fn write_written_list(dir: &HeldDir, staging: &HeldDir, new: &[Entry]) {
     let mut all = new.to_vec();
-    for earlier in written_list(dir) {
+    for earlier in written_list_in(dir) {
         // Still there with the bytes phonglab wrote, as [`written_as_is`] recognises it (a
         // folder copied whole has new identities): kept as the list named it.
         let unchanged =
-            || entry_of(dir, &earlier.name).is_ok_and(|now| written_as_is(std::slice::from_ref(&earlier), &now));
+            || entry_in(dir, &earlier.name).is_ok_and(|now| written_as_is(std::slice::from_ref(&earlier), &now));
         if !all.iter().any(|e| e.name == earlier.name) && unchanged() {
             all.push(earlier);
         }
     }
     let Ok(list) = serde_json::to_vec(&all) else { return };
-    let tmp = staging.join(WRITTEN);
     // One a killed writer left in its own staging folder (the journal said it is one).
-    let _ = remove_own(&tmp);
-    if super::atomic_write::write_new(&tmp, &list).is_ok() && std::fs::rename(&tmp, dir.join(WRITTEN)).is_err() {
-        let _ = remove_own(&tmp);
+    let _ = remove_own(staging, WRITTEN);
+    if write_new_in(staging, WRITTEN, &list).is_ok()
+        && staging.rename_over(OsStr::new(WRITTEN), dir, OsStr::new(WRITTEN)).is_err()
+    {
+        let _ = remove_own(staging, WRITTEN);
     }
 }
 
-/// Writes `bytes` as a new file `name` in the staging folder: created exclusively (never
-/// through a link), synced; its entry for the journal (the identity read back from it).
-pub fn stage(staging: &Path, name: &str, bytes: &[u8]) -> Result<Entry, (&'static str, io::Error)> {
-    let path = staging.join(name);
-    super::atomic_write::write_new(&path, bytes)?;
-    let (_, id) = Identity::at(&path).map_err(|e| ("write-step-create", e))?;
+/// One file a writer staged, as the list of what it staged names it ([`STAGED`]).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+struct Staged {
+    name: String,
+    id: Identity,
+}
+
+/// The list of what the writer of the staging folder held `staging` staged there: one
+/// JSON line per file; a line cut short by a kill, or anything else, is no file's.
+fn staged_list(staging: &HeldDir) -> Vec<Staged> {
+    let Ok(bytes) = read_record_in(staging, STAGED) else { return Vec::new() };
+    bytes.split(|b| *b == b'\n').filter_map(|line| serde_json::from_slice(line).ok()).collect()
+}
+
+/// Appends `staged` to the list of what this writer staged ([`STAGED`]), synced: before a
+/// byte of the staged file is written, so that a writer killed from then on leaves the
+/// file named there by its identity, and the recovery removes it as the one staged.
+fn note_staged(staging: &HeldDir, staged: &Staged) -> io::Result<()> {
+    use std::io::Write as _;
+    let mut line = serde_json::to_vec(staged).map_err(io::Error::other)?;
+    line.push(b'\n');
+    let mut list = staging.append(OsStr::new(STAGED))?;
+    list.write_all(&line)?;
+    list.sync_all()
+}
+
+/// Writes `bytes` as a new file `name` in the staging folder held `staging`: created
+/// exclusively (never through a link), noted in the list of what was staged with the
+/// identity read through the handle that made it ([`note_staged`]), then written and
+/// synced; its entry for the journal.
+pub fn stage(staging: &HeldDir, name: &str, bytes: &[u8]) -> Result<Entry, (&'static str, io::Error)> {
+    let file = staging.create_new(OsStr::new(name)).map_err(|e| ("write-step-create", e))?;
+    let noted = Identity::of_file(&file).and_then(|(_, id)| {
+        note_staged(staging, &Staged { name: name.to_string(), id })?;
+        Ok(id)
+    });
+    let id = match noted {
+        Ok(id) => id,
+        Err(e) => {
+            drop(file);
+            let _ = remove_own(staging, name);
+            return Err(("write-step-create", e));
+        }
+    };
+    if let Err(e) = super::atomic_write::write_file(file, bytes) {
+        let _ = remove_staged(staging, name, &[Staged { name: name.to_string(), id }]);
+        return Err(e);
+    }
     Ok(Entry { name: name.to_string(), size: bytes.len() as u64, hash: hash_bytes(bytes), id })
 }
 

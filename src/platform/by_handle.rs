@@ -10,37 +10,44 @@
 //!   its name since. Under Wine a Unix link opens as the file it names (and a rename or a
 //!   removal by its name moves or removes that file): its handle has that file's identity,
 //!   and it is reached under another name than the one asked for, so it is refused.
-//! - Unix: opened with `O_NOFOLLOW` (a link is refused by the open itself); a move or a
-//!   removal is by name (`rename`, `unlink`: neither follows the last component), asked
-//!   first (`lstat`: the same device and inode as the handle), and a move is checked again
-//!   at its new name and undone where something else went.
+//! - Unix: opened with `O_NOFOLLOW` relative to the folder's descriptor (a link is refused
+//!   by the open itself); a move or a removal is by name relative to the folders'
+//!   descriptors (`renameat2`, `unlinkat`: neither follows the last component, and a folder
+//!   renamed or replaced by a link meanwhile changes nothing: [`HeldDir`]), asked first
+//!   (`fstatat`: the same device and inode as the handle), and a move is checked again at
+//!   its new name and undone where something else went.
 
+use std::ffi::{OsStr, OsString};
 use std::fs::File;
 use std::io;
-use std::path::{Path, PathBuf};
 
-/// A file opened itself, to be checked through [`Opened::file`], then moved or removed.
-pub struct Opened {
+use super::held_dir::HeldDir;
+
+/// A file opened itself in a folder held ([`HeldDir`]), to be checked through
+/// [`Opened::file`], then moved or removed.
+pub struct Opened<'a> {
     file: File,
-    /// The name it was opened at (Unix: asked again before the move or the removal;
-    /// Windows acts through the handle alone).
+    /// The folder it was opened in, and its name there (Unix: asked again before the move
+    /// or the removal, through the folder's descriptor; Windows acts through the handle).
     #[cfg_attr(windows, allow(dead_code))]
-    path: PathBuf,
+    dir: &'a HeldDir,
+    #[cfg_attr(windows, allow(dead_code))]
+    name: OsString,
 }
 
-/// Opens the file at `path` itself (see the module's documentation). `Err` where nothing
-/// is there, where it is a link (Windows: also one reached under another name, Wine's Unix
-/// link), or where it cannot be opened (Windows: another program holds it open without
-/// sharing its deletion: `ERROR_SHARING_VIOLATION`).
-pub fn open(path: &Path) -> io::Result<Opened> {
+/// Opens the file `name` in the folder held `dir` itself (see the module's documentation).
+/// `Err` where nothing is there, where it is a link (Windows: also one reached under
+/// another name, Wine's Unix link), or where it cannot be opened (Windows: another program
+/// holds it open without sharing its deletion: `ERROR_SHARING_VIOLATION`).
+pub fn open_in<'a>(dir: &'a HeldDir, name: &OsStr) -> io::Result<Opened<'a>> {
     #[cfg(windows)]
-    let file = windows::open(path)?;
+    let file = windows::open(&dir.path().join(name))?;
     #[cfg(not(windows))]
-    let file = crate::platform::os::open_no_follow(path)?;
-    Ok(Opened { file, path: path.to_path_buf() })
+    let file = dir.open_file(name)?;
+    Ok(Opened { file, dir, name: name.to_os_string() })
 }
 
-impl Opened {
+impl Opened<'_> {
     /// The open file, to be checked (its identity, size and bytes) before it is acted on.
     pub fn file(&self) -> &File {
         &self.file
@@ -56,53 +63,33 @@ impl Opened {
         }
         #[cfg(not(windows))]
         {
-            if !unix::holds(&self.path, &self.file) {
+            if !self.dir.holds(&self.name, &self.file) {
                 return Ok(false);
             }
-            std::fs::remove_file(&self.path).map(|()| true)
+            self.dir.remove_file(&self.name).map(|()| true)
         }
     }
 
-    /// Moves the file opened to `to`, where nothing is (not even a link; `AlreadyExists`
-    /// otherwise): `Ok(true)`. Unix: only where its name still holds it, and checked at `to`
-    /// afterwards: `Ok(false)` where something else was there (moved back: nothing moved).
-    pub fn rename_no_replace(self, to: &Path) -> io::Result<bool> {
+    /// Moves the file opened to `to_name` in the folder held `to`, where nothing is (not
+    /// even a link; `AlreadyExists` otherwise): `Ok(true)`. Unix: only where its name still
+    /// holds it, and checked at its new name afterwards: `Ok(false)` where something else
+    /// was there (moved back: nothing moved).
+    pub fn rename_no_replace(self, to: &HeldDir, to_name: &OsStr) -> io::Result<bool> {
         #[cfg(windows)]
         {
-            windows::rename_no_replace(&self.file, to).map(|()| true)
+            windows::rename_no_replace(&self.file, &to.path().join(to_name)).map(|()| true)
         }
         #[cfg(not(windows))]
         {
-            if !unix::holds(&self.path, &self.file) {
+            if !self.dir.holds(&self.name, &self.file) {
                 return Ok(false);
             }
-            crate::platform::os::rename_no_replace(&self.path, to)?;
-            if unix::holds(to, &self.file) {
+            self.dir.rename_no_replace(&self.name, to, to_name)?;
+            if to.holds(to_name, &self.file) {
                 return Ok(true);
             }
-            let _ = crate::platform::os::rename_no_replace(to, &self.path);
+            let _ = to.rename_no_replace(to_name, self.dir, &self.name);
             Ok(false)
-        }
-    }
-}
-
-#[cfg(not(windows))]
-mod unix {
-    use std::fs::File;
-    use std::path::Path;
-
-    /// Does the name `path` hold the open `file` itself (not a link to it)?
-    pub fn holds(path: &Path, file: &File) -> bool {
-        #[cfg(unix)]
-        {
-            use std::os::unix::fs::MetadataExt;
-            let (Ok(at), Ok(open)) = (std::fs::symlink_metadata(path), file.metadata()) else { return false };
-            !at.file_type().is_symlink() && at.dev() == open.dev() && at.ino() == open.ino()
-        }
-        #[cfg(not(unix))]
-        {
-            let _ = file;
-            std::fs::symlink_metadata(path).is_ok_and(|m| !m.file_type().is_symlink())
         }
     }
 }

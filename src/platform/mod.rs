@@ -11,12 +11,14 @@
 //! | [`clock`] | `std::time::Instant` | `performance.now()`, through `web-time` |
 //! | [`language`] | `LC_ALL`, `LC_MESSAGES`, `LANG` | `navigator.language` |
 //! | [`by_handle`] | a file moved or removed as the very file it is, checked through its open handle (Windows: by that handle) | (not used) |
+//! | [`held_dir`] | a folder held by a handle, everything inside it done through that handle (Unix: `openat`, `renameat2`, `unlinkat`; Windows: held without sharing its deletion) | (not used) |
 //! | [`links`] | whether a file is reached through a link (Windows: a reparse point, or a final path under another name) | (not used) |
 //! | [`page`] | no page: links open the published site | the page's own address, a link's base |
 
 pub mod by_handle;
 pub mod clock;
 pub mod files;
+pub mod held_dir;
 pub mod language;
 pub mod links;
 pub mod os;

@@ -189,11 +189,13 @@ fn recovery_finishes_a_swap_from_every_state_it_can_be_left_in() {
         std::fs::create_dir_all(staging.join(ASIDE)).unwrap();
         let (_, here) = Identity::at(&staging).unwrap();
         let mut j = Journal { staging: here, decided: true, new: Vec::new(), old: Vec::new() };
+        let held = HeldDir::open(&staging).unwrap();
         for (name, bytes) in &new_set().files {
-            j.new.push(stage(&staging, name, bytes).unwrap());
+            j.new.push(stage(&held, name, bytes).unwrap());
         }
         j.old = ["a.md", "b.md", "c.md"].iter().map(|n| entry_of(&dir, n).unwrap()).collect();
-        write_journal(&staging, &j, false).unwrap();
+        write_journal(&held, &j, false).unwrap();
+        drop(held);
         let aside = |n: &str| std::fs::rename(dir.join(n), staging.join(ASIDE).join(n)).unwrap();
         let move_in = |n: &str| std::fs::rename(staging.join(n), dir.join(n)).unwrap();
         for (name, s) in [("a.md", a), ("b.md", b)] {

@@ -132,16 +132,18 @@ fn a_journal_naming_another_folders_identity_is_refused_and_its_own_finished() {
     std::fs::create_dir(&staging).unwrap();
     let (_, here) = Identity::at(&staging).unwrap();
     assert_ne!(here, there, "two folders, two identities");
-    let new = stage(&staging, "main.cpp", b"// the new main").unwrap();
+    let held = HeldDir::open(&staging).unwrap();
+    let new = stage(&held, "main.cpp", b"// the new main").unwrap();
     let old = entry_of(&dir, "main.cpp").unwrap();
     let journal =
         |staging_id| Journal { staging: staging_id, decided: true, new: vec![new.clone()], old: vec![old.clone()] };
-    write_journal(&staging, &journal(there), false).unwrap();
+    write_journal(&held, &journal(there), false).unwrap();
+    drop(held);
     let before = everything(&dir);
     let notices = recover(&dir).unwrap();
     untouched(&before, &dir, "recovery");
     assert!(notices.len() == 1 && notices[0].contains("not the folder"), "{notices:?}");
-    write_journal(&staging, &journal(here), false).unwrap();
+    write_journal(&HeldDir::open(&staging).unwrap(), &journal(here), false).unwrap();
     assert_eq!(recover(&dir).unwrap(), Vec::<String>::new());
     assert_eq!(std::fs::read(dir.join("main.cpp")).unwrap(), b"// the new main");
     assert!(!staging.exists(), "the staging folder removed");
@@ -156,9 +158,11 @@ fn a_file_changed_since_the_journal_is_not_replaced() {
     let staging = dir.join(".phonglab-set.1.0.tmp");
     std::fs::create_dir(&staging).unwrap();
     let (_, here) = Identity::at(&staging).unwrap();
-    let new = stage(&staging, "a.md", b"new").unwrap();
+    let held = HeldDir::open(&staging).unwrap();
+    let new = stage(&held, "a.md", b"new").unwrap();
     let old = entry_of(&dir, "a.md").unwrap();
-    write_journal(&staging, &Journal { staging: here, decided: true, new: vec![new], old: vec![old] }, false).unwrap();
+    write_journal(&held, &Journal { staging: here, decided: true, new: vec![new], old: vec![old] }, false).unwrap();
+    drop(held);
     std::fs::write(dir.join("a.md"), "old, edited by its owner").unwrap();
     let notices = recover(&dir).unwrap();
     assert_eq!(std::fs::read(dir.join("a.md")).unwrap(), b"old, edited by its owner");
@@ -352,8 +356,11 @@ proptest! {
 /// Issue 59, the hostile's review (F1, F3): a staging folder swapped for a link to another
 /// folder, the clean-up of a set that failed (`throw_away`) or the recovery then removed
 /// every regular file in the folder the link led to (Linux), or that folder itself when
-/// empty (Wine). A staging folder or aside folder reached through a link is left as it is,
-/// and every file it leads to with it.
+/// empty (Wine). A link at a staging folder's name is never held as one (so the recovery
+/// leaves it, and every file it leads to); and a staging folder held, then renamed and
+/// replaced by such a link (fix59x: the check-then-act gap the path's checks left), is
+/// still the one thrown away: every removal goes through its handle, nothing in the folder
+/// the link leads to is touched.
 #[test]
 #[cfg(any(unix, windows))]
 fn a_staging_folder_swapped_for_a_link_leaves_the_folder_it_leads_to_whole() {
@@ -361,7 +368,7 @@ fn a_staging_folder_swapped_for_a_link_leaves_the_folder_it_leads_to_whole() {
     let (dir, outside) = (root.join("set"), root.join("outside"));
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::create_dir_all(outside.join(ASIDE)).unwrap();
-    for name in ["marks-1.txt", "marks-2.txt", JOURNAL] {
+    for name in ["marks-1.txt", "marks-2.txt", JOURNAL, STAGED] {
         std::fs::write(outside.join(name), "the teacher's").unwrap();
     }
     let staging = dir.join(format!(".{STAGING}.77.1.tmp"));
@@ -369,14 +376,30 @@ fn a_staging_folder_swapped_for_a_link_leaves_the_folder_it_leads_to_whole() {
         eprintln!("no symbolic link can be made here: nothing to test");
         return;
     }
-    let thrown = throw_away(&staging);
-    let cleared = clear_aside(&staging, &[]);
+    assert!(HeldDir::open(&staging).is_err(), "a link at a staging folder's name is not held as a folder");
     let _ = recover(&dir);
-    for name in ["marks-1.txt", "marks-2.txt", JOURNAL] {
-        assert_eq!(std::fs::read(outside.join(name)).unwrap(), b"the teacher's", "{name} was removed through the link");
+    let whole = |why: &str| {
+        for name in ["marks-1.txt", "marks-2.txt", JOURNAL, STAGED] {
+            assert_eq!(std::fs::read(outside.join(name)).unwrap(), b"the teacher's", "{why}: {name} removed through the link");
+        }
+        assert!(outside.join(ASIDE).is_dir(), "{why}: the empty folder the link led to was removed");
+    };
+    whole("recovery");
+    // A real staging folder, held and staged into, then renamed away and replaced by the
+    // link (Unix; Windows refuses the rename of a folder held without sharing deletion).
+    std::fs::remove_file(&staging).or_else(|_| std::fs::remove_dir(&staging)).unwrap();
+    std::fs::create_dir(&staging).unwrap();
+    let parent = HeldDir::open(&dir).unwrap();
+    let held = parent.open_dir(staging.file_name().unwrap()).unwrap();
+    stage(&held, "marks-1.txt", b"staged").unwrap();
+    held.create_dir(std::ffi::OsStr::new(ASIDE)).unwrap();
+    let away = dir.join(".away");
+    let moved = std::fs::rename(&staging, &away).is_ok();
+    assert_eq!(moved, cfg!(unix), "a folder held is renamed on Unix only");
+    if moved {
+        assert!(crate::io::atomic_write::tests::plant_link(&outside, &staging));
     }
-    assert!(outside.join(ASIDE).is_dir(), "the empty folder the link led to was removed");
-    assert!(!thrown && !cleared, "nothing of a link's folder is phonglab's to throw away");
-    assert!(!own_folders_real(&staging), "a link at a staging folder's name is not phonglab's folder");
-    assert!(crate::platform::links::reached_through_link(&staging) || std::fs::symlink_metadata(&staging).is_ok());
+    assert!(throw_away(&parent, held), "its own staged file, aside folder and records removed through its handle");
+    whole("a staging folder swapped for a link after it was held");
+    assert!(!away.exists(), "the staging folder removed at the name it was given");
 }

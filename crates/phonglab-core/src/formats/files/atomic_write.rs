@@ -202,20 +202,26 @@ fn close(file: File) -> io::Result<()> {
 #[doc(hidden)]
 pub fn write_new(tmp: &Path, bytes: &[u8]) -> Result<(), (&'static str, io::Error)> {
     let file = File::options().write(true).create_new(true).open(tmp).map_err(|e| ("write-step-create", e))?;
-    let mut out = Counted { file, written: 0 };
-    let result = (|| {
-        out.write_all(bytes).map_err(|e| ("write-step-write", e))?;
-        out.flush().map_err(|e| ("write-step-write", e))?;
-        if fault() == Some(Fault::OnSync) {
-            return Err(("write-step-sync", injected("sync")));
-        }
-        out.file.sync_all().map_err(|e| ("write-step-sync", e))?;
-        close(out.file).map_err(|e| ("write-step-close", e))
-    })();
+    let result = write_file(file, bytes);
     if result.is_err() {
         let _ = std::fs::remove_file(tmp);
     }
     result
+}
+
+/// Writes `bytes` into `file`, new and empty, opened to write: write, flush, sync, close,
+/// each checked (the faults of [`with_fault`] injected). On failure the caller removes the
+/// file (it knows where it made it: the app's sets make theirs relative to a folder held).
+#[doc(hidden)]
+pub fn write_file(file: File, bytes: &[u8]) -> Result<(), (&'static str, io::Error)> {
+    let mut out = Counted { file, written: 0 };
+    out.write_all(bytes).map_err(|e| ("write-step-write", e))?;
+    out.flush().map_err(|e| ("write-step-write", e))?;
+    if fault() == Some(Fault::OnSync) {
+        return Err(("write-step-sync", injected("sync")));
+    }
+    out.file.sync_all().map_err(|e| ("write-step-sync", e))?;
+    close(out.file).map_err(|e| ("write-step-close", e))
 }
 
 /// Counts a rename on this thread; `Err` where a test makes this one fail.
