@@ -70,6 +70,7 @@ struct Killed;
 
 /// Counts a step of a set's swap; `Err(Killed)` where a test kills the writer there.
 fn step() -> Result<(), Killed> {
+    at_step();
     let Some(Fault::KilledAtStep(n)) = fault() else { return Ok(()) };
     if next_step() == n { Err(Killed) } else { Ok(()) }
 }
@@ -536,6 +537,23 @@ thread_local! {
     /// Tests: what another process does to the folder just before an old file is moved
     /// aside (after the journal decided), set by the tests' `meanwhile_at_aside`.
     static MEANWHILE: std::cell::RefCell<Option<Meanwhile>> = const { std::cell::RefCell::new(None) };
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Tests: what another process does to the folder at each step of a set's swap (where
+    /// [`step`] counts one), set by the tests' `meanwhile_at_each_step`.
+    static AT_STEP: std::cell::RefCell<Option<Box<dyn FnMut()>>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Runs the test's [`AT_STEP`]; nothing otherwise.
+fn at_step() {
+    #[cfg(test)]
+    AT_STEP.with(|m| {
+        if let Some(f) = m.borrow_mut().as_mut() {
+            f();
+        }
+    });
 }
 
 /// Runs the test's [`MEANWHILE`] with the old file about to move aside; nothing otherwise.

@@ -504,3 +504,180 @@ fn an_undo_that_cannot_put_an_old_file_back_deletes_nothing_and_says_so() {
     assert_eq!(notices.len(), 1, "{notices:?}");
     assert_eq!(std::fs::read(dir.join("a.md")).unwrap(), b"someone else's");
 }
+
+/// Runs `f` with `act` done to the folder, as another process would, at the `at`-th step of
+/// a set's swap (from 0; [`step`]).
+fn meanwhile_at_step<R>(at: u32, act: impl FnOnce() + 'static, f: impl FnOnce() -> R) -> R {
+    let mut act = Some(act);
+    let mut n = 0;
+    AT_STEP.with(|m| {
+        *m.borrow_mut() = Some(Box::new(move || {
+            if n == at
+                && let Some(act) = act.take()
+            {
+                act();
+            }
+            n += 1;
+        }));
+    });
+    let r = f();
+    AT_STEP.with(|m| *m.borrow_mut() = None);
+    r
+}
+
+/// Every file, folder and link under `dir`, with its bytes (a link: its target), walked
+/// without following a link: what "nothing there was written, moved or removed" compares.
+fn everything_in(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut all = Vec::new();
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        for e in std::fs::read_dir(&d).unwrap().flatten() {
+            let p = e.path();
+            let meta = std::fs::symlink_metadata(&p).unwrap();
+            let rel = p.strip_prefix(dir).unwrap().to_string_lossy().into_owned();
+            let seen = if meta.file_type().is_symlink() {
+                std::fs::read_link(&p).map(|t| t.to_string_lossy().into_owned().into_bytes()).unwrap_or_default()
+            } else if meta.is_dir() {
+                todo.push(p.clone());
+                b"<dir>".to_vec()
+            } else {
+                std::fs::read(&p).unwrap_or_default()
+            };
+            all.push((rel, seen));
+        }
+    }
+    all.sort();
+    all
+}
+
+/// The staging folder a writer is working in, in `dir` (a real folder, not a link).
+fn staging_in(dir: &Path) -> std::path::PathBuf {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .find(|p| {
+            let n = p.file_name().unwrap().to_string_lossy();
+            n.starts_with(".phonglab-set.") && n.ends_with(".tmp") && std::fs::symlink_metadata(p).is_ok_and(|m| m.is_dir())
+        })
+        .expect("a staging folder")
+}
+
+/// Issue 59, the hostile's review, fix59x: the staging folder renamed (within the set's
+/// folder) and replaced by a link to a folder outside at every step of a set's swap: before
+/// the set is staged, between the staging and the journal's decision, during the swap, and
+/// after the aside folder is cleared. Nothing in the folder outside is written, moved or
+/// removed (the staging folder is held by a descriptor: every step goes through it); the
+/// set is refused and undone, saying the working folder was moved or replaced (after the
+/// last step the set is in place: the run succeeds); the folder ends with the old set or
+/// the new one, the staging folder removed at the name it was given, the link left.
+/// Windows: the folder held cannot be renamed (held without sharing its deletion).
+#[test]
+#[cfg(any(unix, windows))]
+fn a_staging_folder_swapped_for_a_link_at_any_step_touches_nothing_outside() {
+    let belongs = |n: &str| n.ends_with(".md");
+    let (want_old, want_new) = (fresh_dir("staging-swap-old"), fresh_dir("staging-swap-new"));
+    old_set(&want_old);
+    old_set(&want_new);
+    write_set(&want_new, &new_set(), belongs).unwrap();
+    let (old, new) = (user_files(&want_old), user_files(&want_new));
+    let probe = fresh_dir("staging-swap-probe");
+    if !plant_link(&want_old, &probe.join("link")) {
+        eprintln!("no symbolic link can be made here: nothing to test");
+        return;
+    }
+    for at in 0..13 {
+        let (dir, outside) = (fresh_dir(&format!("staging-swap-{at}")), fresh_dir(&format!("staging-swap-out-{at}")));
+        old_set(&dir);
+        std::fs::create_dir(outside.join(ASIDE)).unwrap();
+        for name in ["a.md", "b.md", "d.md", "thesis.txt", JOURNAL] {
+            std::fs::write(outside.join(name), "the teacher's").unwrap();
+        }
+        let before = everything_in(&outside);
+        let swapped = std::rc::Rc::new(std::cell::Cell::new(false));
+        let (d, o, s) = (dir.clone(), outside.clone(), swapped.clone());
+        let r = meanwhile_at_step(
+            at,
+            move || {
+                let staging = staging_in(&d);
+                if std::fs::rename(&staging, d.join(".away")).is_ok() {
+                    assert!(plant_link(&o, &staging), "a link is made");
+                    s.set(true);
+                }
+            },
+            || write_set(&dir, &new_set(), belongs),
+        );
+        assert_eq!(everything_in(&outside), before, "step {at}: nothing outside written, moved or removed");
+        assert_eq!(swapped.get(), cfg!(unix), "step {at}: a folder held is renamed on Unix only");
+        let files = user_files(&dir);
+        match r {
+            Err(e) if swapped.get() && at < 12 => {
+                let e = e.to_string();
+                assert!(e.contains("working folder") && e.contains("moved or replaced"), "step {at}: {e}");
+                assert!(e.contains("the folder is unchanged"), "step {at}: {e}");
+                assert_eq!(files, old, "step {at}: the old set, as it was");
+            }
+            Ok(notices) if !swapped.get() || at == 12 => {
+                assert_eq!(notices, Vec::<String>::new(), "step {at}");
+                assert_eq!(files, new, "step {at}: the new set");
+            }
+            r => panic!("step {at}: {:?}", r.map_err(|e| e.to_string())),
+        }
+        assert!(!dir.join(".away").exists(), "step {at}: the staging folder removed at the name it was given");
+    }
+}
+
+/// Issue 59, F4: the set's folder itself renamed and replaced by a link to another folder
+/// after it was held (before the staging folder is made, and at every step of the swap).
+/// Before, the staging folder and its journal were made through the link, in the folder it
+/// leads to, and left there, while the message said "nothing was written through it". Now
+/// the folder is held by a descriptor: nothing in the other folder is written, moved or
+/// removed, the message says so truly, and the folder held ends with its old set (or, the
+/// swap done, the new one) and no staging folder.
+#[test]
+#[cfg(unix)]
+fn a_sets_folder_swapped_for_a_link_writes_nothing_through_it_and_says_so_truly() {
+    let belongs = |n: &str| n.ends_with(".md");
+    let (want_old, want_new) = (temp_dir("folder-swap-old"), temp_dir("folder-swap-new"));
+    old_set(&want_old);
+    old_set(&want_new);
+    write_set(&want_new, &new_set(), belongs).unwrap();
+    let (old, new) = (user_files(&want_old), user_files(&want_new));
+    for at in -1..13 {
+        let (dir, other) = (fresh_dir(&format!("folder-swap-{at}")), fresh_dir(&format!("folder-swap-other-{at}")));
+        old_set(&dir);
+        old_set(&other);
+        let before = everything_in(&other);
+        let away = dir.with_extension("away");
+        let (d, o, a) = (dir.clone(), other.clone(), away.clone());
+        let swap = move || {
+            std::fs::rename(&d, &a).unwrap();
+            std::os::unix::fs::symlink(&o, &d).unwrap();
+        };
+        let held = hold_folder(&dir).unwrap();
+        let r = if at < 0 {
+            swap();
+            write_set_held(&held, &new_set(), belongs)
+        } else {
+            meanwhile_at_step(at as u32, swap, || write_set_held(&held, &new_set(), belongs))
+        };
+        drop(held);
+        assert_eq!(everything_in(&other), before, "step {at}: nothing written, moved or removed through the link");
+        std::fs::remove_file(&dir).unwrap();
+        std::fs::rename(&away, &dir).unwrap();
+        let mut names: Vec<String> =
+            std::fs::read_dir(&dir).unwrap().flatten().map(|e| e.file_name().to_string_lossy().into_owned()).collect();
+        names.retain(|n| n.starts_with(".phonglab-set") && n != ".phonglab-set.written");
+        assert_eq!(names, Vec::<String>::new(), "step {at}: no staging folder left");
+        match r {
+            Err(e) if at < 12 => {
+                let e = e.to_string();
+                assert!(e.contains("moved or replaced") && e.contains("nothing was written, moved or removed"), "{e}");
+                assert!(e.contains("the folder is unchanged"), "step {at}: {e}");
+                assert_eq!(user_files(&dir), old, "step {at}: the folder held keeps its old set");
+            }
+            Ok(_) if at == 12 => assert_eq!(user_files(&dir), new, "step {at}"),
+            r => panic!("step {at}: {:?}", r.map_err(|e| e.to_string())),
+        }
+    }
+}
