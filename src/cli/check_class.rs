@@ -156,11 +156,12 @@ pub fn run(dir: &Path, assignment: Option<&Scene>, a: &ClassArgs) -> Result<()> 
     if let Some(s) = &a.scene {
         guarded.push((s.as_path(), crate::io::same_file::Input::Any));
     }
-    crate::io::same_file::refuse_onto(&outputs, &guarded).map_err(anyhow::Error::msg)?;
     // No link followed, no file phonglab did not write replaced, no phantom submission
-    // made in the folder (`io::work_output`).
+    // made in the folder (`io::work_output`); a link said first, as a link.
     let kinds = [(a.report.as_deref(), Kind::Report), (chart.as_deref(), Kind::Chart), (a.csv.as_deref(), Kind::Marks)];
     let work_outputs: Vec<(&Path, Kind)> = kinds.into_iter().filter_map(|(p, k)| p.map(|p| (p, k))).collect();
+    crate::io::work_output::refuse_links(&work_outputs).map_err(anyhow::Error::msg)?;
+    crate::io::same_file::refuse_onto(&outputs, &guarded).map_err(anyhow::Error::msg)?;
     crate::io::work_output::refuse(&work_outputs, Some(dir)).map_err(anyhow::Error::msg)?;
     if assignment.is_none() {
         super::say(&t!("check-report-no-scene"));

@@ -100,9 +100,11 @@ pub fn run(a: &DiagnoseArgs) -> Result<bool> {
     }
     let outputs: Vec<&Path> = a.diff.iter().map(PathBuf::as_path).collect();
     let inputs = [(a.scene.as_path(), Input::Scene), (a.image.as_path(), Input::Any)];
-    crate::io::same_file::refuse_onto(&outputs, &inputs).map_err(anyhow::Error::msg)?;
-    // Never through a link, nor over a file phonglab did not write (`io::work_output`).
+    // Never through a link, nor over a file phonglab did not write (`io::work_output`); a
+    // link said first, as a link.
     let kinds: Vec<(&Path, Kind)> = outputs.iter().map(|&o| (o, Kind::Difference)).collect();
+    crate::io::work_output::refuse_links(&kinds).map_err(anyhow::Error::msg)?;
+    crate::io::same_file::refuse_onto(&outputs, &inputs).map_err(anyhow::Error::msg)?;
     crate::io::work_output::refuse(&kinds, None).map_err(anyhow::Error::msg)?;
     let right = right_drawing(a, &outputs)?;
     let size = a.size as usize;

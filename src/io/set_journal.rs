@@ -482,7 +482,7 @@ pub fn recover_locked(dir: &HeldDir) -> io::Result<Vec<String>> {
 
 /// Refuses the folder `dir` when its list of what phonglab wrote ([`WRITTEN`]) is there but
 /// is not one phonglab can have written: a link (dangling or not), a pipe, a device, a
-/// folder, or a file past 1 MiB. Such a thing is never followed, read or replaced: a planted
+/// folder, a file past 1 MiB, or a file not in phonglab's form (hand-written). Such a thing is never followed, read or replaced: a planted
 /// link would send the list (its temporary file and its rename) to the file it names, and
 /// a planted pipe would pass for an empty list, so that the teacher's files were blamed for
 /// it. Called before anything is written, and again under the folder's lock.
@@ -491,6 +491,12 @@ pub fn check_records(dir: &Path) -> Result<(), super::atomic_write::WriteError> 
     let path = dir.join(WRITTEN);
     let refused = |e| Err(WriteError::new(&path, "write-step-name", e, set_steps::KEPT_FOLDER));
     match read_record(&path) {
+        // One in another form than phonglab's (written by hand, or by another program):
+        // not trusted, so the files it would name are not judged by it (before, each set
+        // file was then blamed as the teacher's own), and left as it is.
+        Ok(bytes) if serde_json::from_slice::<Vec<Entry>>(&bytes).is_err() => {
+            refused(io::Error::new(io::ErrorKind::InvalidData, t!("set-record-not-phonglabs")))
+        }
         Ok(_) | Err(Record::Missing) => Ok(()),
         Err(Record::Unreadable(e)) if !crate::platform::os::is_link_refused(&e) => refused(e),
         Err(_) => refused(io::Error::new(io::ErrorKind::InvalidInput, t!("set-record-not-one"))),

@@ -158,15 +158,10 @@ fn in_folder(path: &Path, dir: &Path) -> bool {
 /// the words is written visibly for the terminal.
 fn refusal(path: &Path, kind: Kind, checked: Option<&Path>) -> Option<String> {
     let shown = crate::io::reasons::shown(path);
-    // A link, as Linux shows it, or as Windows does (Wine shows a Unix link as a plain file:
-    // only its final path tells it, issue 59 finding 4, where the link was replaced).
-    let link = |m: &std::fs::Metadata| m.file_type().is_symlink() || crate::platform::links::reached_through_link(path);
+    if let Some(why) = link_refusal(path, kind) {
+        return Some(why);
+    }
     match std::fs::symlink_metadata(path) {
-        // The chart's name is derived from the report's, not given: said so.
-        Ok(m) if link(&m) && kind == Kind::Chart => {
-            return Some(t!("check-chart-link", path = shown));
-        }
-        Ok(m) if link(&m) => return Some(t!("work-output-link", path = shown)),
         Ok(m) if m.is_file() => {
             let head = match head_of(path) {
                 Ok(head) => head,
@@ -190,6 +185,27 @@ fn refusal(path: &Path, kind: Kind, checked: Option<&Path>) -> Option<String> {
         return Some(t!("work-output-submission", path = shown, suggested = suggested));
     }
     None
+}
+
+/// Why the output `path` of this `kind` may not be written where it is a link: a link as
+/// Linux shows it, or as Windows does (Wine shows a Unix link as a plain file: only its
+/// final path tells it, issue 59 finding 4, where the link was replaced).
+fn link_refusal(path: &Path, kind: Kind) -> Option<String> {
+    let m = std::fs::symlink_metadata(path).ok()?;
+    if !m.file_type().is_symlink() && !crate::platform::links::reached_through_link(path) {
+        return None;
+    }
+    let shown = crate::io::reasons::shown(path);
+    // The chart's name is derived from the report's, not given: said so.
+    Some(if kind == Kind::Chart { t!("check-chart-link", path = shown) } else { t!("work-output-link", path = shown) })
+}
+
+/// Refuses the first of `outputs` that is a link ([`refuse`]'s first rule), before the
+/// outputs are compared with each other and with the inputs: two output names that are
+/// links to one file are links (never written through), not "the same file" (a refusal
+/// that would send the teacher to rename one of them, still a link).
+pub fn refuse_links(outputs: &[(&Path, Kind)]) -> Result<(), String> {
+    outputs.iter().find_map(|&(path, kind)| link_refusal(path, kind)).map_or(Ok(()), Err)
 }
 
 /// Why a file at an output's name that is not phonglab's earlier output of this `kind` is

@@ -279,3 +279,23 @@ fn a_link_above_the_output_folder_is_the_users_path() {
     assert!(real.join("sub/exercise-01-key.md").is_file() && real.join("sub/index.md").is_file());
     assert!(std::fs::symlink_metadata(r.join("linkdir")).unwrap().file_type().is_symlink(), "still a link");
 }
+
+/// fix59x: a list of what phonglab wrote that is a regular file in another form (written by
+/// hand) is refused by the list's name, said not to be phonglab's and left as it is; before,
+/// phonglab read it as an empty list and blamed the teacher's own earlier sheet
+/// (`exercise-01.md`, which phonglab wrote) as a file it did not write.
+#[test]
+fn a_hand_written_list_is_said_not_to_be_phonglabs_and_left() {
+    let dir = root("junk-list");
+    ok(exercise("sheets", &dir, &[]));
+    let junk = b"exercise-01.md\nexercise-02.md\n";
+    std::fs::write(dir.join(LIST), junk).unwrap();
+    let before = std::fs::read(dir.join("index.md")).unwrap();
+    let o = exercise("sheets", &dir, &["--seed", "9"]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(e.contains(LIST) && e.contains("not a list phonglab wrote") && e.contains("leaves it as it is"), "{e}");
+    assert!(!e.contains("exercise-0") && !e.contains("index.md"), "no file of the set blamed: {e}");
+    assert_eq!(std::fs::read(dir.join(LIST)).unwrap(), junk, "the list left as it is");
+    assert_eq!(std::fs::read(dir.join("index.md")).unwrap(), before);
+}

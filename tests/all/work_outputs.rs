@@ -317,3 +317,24 @@ fn an_output_of_another_kind_is_said_to_be_phonglabs_and_kept() {
         assert!(!upper.exists(), "{lang}: nothing written");
     }
 }
+
+/// fix59x: the report's and the marks' names both links to one file (the teacher's) are
+/// refused as links, the first said first, not as "the same file" (which would send the
+/// teacher to rename one of them, still a link); the file they lead to is kept.
+#[test]
+#[cfg(unix)] // symbolic links
+fn two_outputs_that_are_links_to_one_file_are_refused_as_links() {
+    let root = Scratch::new("two-links");
+    let cls = class(&root, &["a.ipynb"]);
+    let bashrc = root.join("bashrc");
+    std::fs::write(&bashrc, "alias ls='ls --color'\n").unwrap();
+    let (report, marks) = (cls.join("report.md"), cls.join("marks.csv"));
+    common::symlink("../bashrc", &report).unwrap();
+    common::symlink("../bashrc", &marks).unwrap();
+    let o = phonglab(&["check", s(&cls), "--report", s(&report), "--csv", s(&marks)]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(e.contains(&format!("{} is a link", report.display())), "{e}");
+    assert!(!e.contains("the same file"), "{e}");
+    assert_eq!(std::fs::read_to_string(&bashrc).unwrap(), "alias ls='ls --color'\n");
+}

@@ -681,3 +681,28 @@ fn a_sets_folder_swapped_for_a_link_writes_nothing_through_it_and_says_so_truly(
         }
     }
 }
+
+/// fix59n left, fix59x: a writer stopped before its journal named its staged files; a
+/// file of someone else's put in its staging folder at a name it staged (its own `a.md`
+/// removed first). The recovery removes only what the list of what was staged names by
+/// identity (`b.md`), and leaves the other file, saying so; before, any regular file
+/// there was removed as phonglab's kind.
+#[test]
+fn a_file_put_at_a_staged_name_in_a_stopped_writers_staging_folder_is_left() {
+    let belongs = |n: &str| n.ends_with(".md");
+    let dir = temp_dir("staged-identity");
+    old_set(&dir);
+    let old = user_files(&dir);
+    // Killed after the journal was begun and a.md and b.md were staged (steps 0, 1, 2).
+    with_fault(Fault::KilledAtStep(2), || write_set(&dir, &new_set(), belongs)).unwrap_err();
+    let (staging, j) = journal_in(&dir).expect("a journal");
+    assert!(!j.decided && j.new.is_empty(), "the journal names no staged file yet");
+    std::fs::remove_file(staging.join("a.md")).unwrap();
+    std::fs::write(staging.join("a.md"), "a classmate's").unwrap();
+    let notices = recover(&dir).unwrap();
+    assert_eq!(notices.len(), 1, "{notices:?}");
+    assert!(notices[0].contains("something phonglab did not put there"), "{notices:?}");
+    assert_eq!(std::fs::read(staging.join("a.md")).unwrap(), b"a classmate's", "left as it is");
+    assert!(!staging.join("b.md").exists(), "the staged b.md, named by its identity, removed");
+    assert_eq!(user_files(&dir), old, "the old set whole");
+}
