@@ -353,8 +353,8 @@ fn stage_and_swap(
     belongs: &dyn Fn(&str) -> bool,
 ) -> Result<bool, Stop> {
     let dir = held.dir();
-    let (_, here) =
-        Identity::of_file(staging.handle()).map_err(|e| WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED))?;
+    let (_, here) = Identity::of_file(staging.handle())
+        .map_err(|e| WriteError::new(dir, set_steps::CREATE_STAGING, e, UNTOUCHED))?;
     let mut journal = Journal { staging: here, decided: false, new: Vec::new(), old: Vec::new() };
     write_journal(staging, &journal, false).map_err(|(what, e)| WriteError::new(dir, what, e, UNTOUCHED))?;
     step()?;
@@ -439,7 +439,9 @@ fn old_set(dir: &HeldDir, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Resu
     for name in names.into_iter().filter_map(|n| n.into_string().ok()) {
         let is_file = dir.is_file(std::ffi::OsStr::new(&name));
         if is_file && plain_name(&name) && (new.iter().any(|e| e.name == name) || ours(&name)) {
-            old.push(entry_in(dir, &name).map_err(|e| WriteError::new(&at.join(&name), set_steps::LIST, e, UNTOUCHED))?);
+            old.push(
+                entry_in(dir, &name).map_err(|e| WriteError::new(&at.join(&name), set_steps::LIST, e, UNTOUCHED))?,
+            );
         }
     }
     old.sort_by(|a, b| a.name.cmp(&b.name));

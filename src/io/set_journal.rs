@@ -189,7 +189,8 @@ pub fn entry_in(dir: &HeldDir, name: &str) -> io::Result<Entry> {
 /// Is the file `entry.name` in the folder held `dir` exactly the one `entry` names
 /// (identity, size and hash)?
 pub fn is_entry_in(dir: &HeldDir, entry: &Entry) -> bool {
-    read_entry_in(dir, &entry.name).is_ok_and(|(size, hash, id)| size == entry.size && hash == entry.hash && id == entry.id)
+    read_entry_in(dir, &entry.name)
+        .is_ok_and(|(size, hash, id)| size == entry.size && hash == entry.hash && id == entry.id)
 }
 
 /// What became of a file asked to move or go ([`move_entry`], [`remove_entry`],
@@ -508,12 +509,18 @@ pub fn check_records(dir: &Path) -> Result<(), super::atomic_write::WriteError> 
 /// beyond the new set's own names is replaced; a writer refuses such a list first,
 /// [`check_records`]).
 pub fn written_list(dir: &Path) -> Vec<Entry> {
-    read_record(&dir.join(WRITTEN)).ok().and_then(|bytes| serde_json::from_slice::<Vec<Entry>>(&bytes).ok()).unwrap_or_default()
+    read_record(&dir.join(WRITTEN))
+        .ok()
+        .and_then(|bytes| serde_json::from_slice::<Vec<Entry>>(&bytes).ok())
+        .unwrap_or_default()
 }
 
 /// [`written_list`] of the folder held `dir`, read through its handle.
 pub fn written_list_in(dir: &HeldDir) -> Vec<Entry> {
-    read_record_in(dir, WRITTEN).ok().and_then(|bytes| serde_json::from_slice::<Vec<Entry>>(&bytes).ok()).unwrap_or_default()
+    read_record_in(dir, WRITTEN)
+        .ok()
+        .and_then(|bytes| serde_json::from_slice::<Vec<Entry>>(&bytes).ok())
+        .unwrap_or_default()
 }
 
 /// Throws away the staging folder `staging` (held, in the folder held `parent`) of a set not

@@ -558,7 +558,9 @@ fn staging_in(dir: &Path) -> std::path::PathBuf {
         .map(|e| e.path())
         .find(|p| {
             let n = p.file_name().unwrap().to_string_lossy();
-            n.starts_with(".phonglab-set.") && n.ends_with(".tmp") && std::fs::symlink_metadata(p).is_ok_and(|m| m.is_dir())
+            n.starts_with(".phonglab-set.")
+                && n.ends_with(".tmp")
+                && std::fs::symlink_metadata(p).is_ok_and(|m| m.is_dir())
         })
         .expect("a staging folder")
 }

@@ -380,7 +380,11 @@ fn a_staging_folder_swapped_for_a_link_leaves_the_folder_it_leads_to_whole() {
     let _ = recover(&dir);
     let whole = |why: &str| {
         for name in ["marks-1.txt", "marks-2.txt", JOURNAL, STAGED] {
-            assert_eq!(std::fs::read(outside.join(name)).unwrap(), b"the teacher's", "{why}: {name} removed through the link");
+            assert_eq!(
+                std::fs::read(outside.join(name)).unwrap(),
+                b"the teacher's",
+                "{why}: {name} removed through the link"
+            );
         }
         assert!(outside.join(ASIDE).is_dir(), "{why}: the empty folder the link led to was removed");
     };
