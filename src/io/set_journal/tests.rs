@@ -391,7 +391,8 @@ fn a_staging_folder_swapped_for_a_link_leaves_the_folder_it_leads_to_whole() {
     whole("recovery");
     // A real staging folder, held and staged into, then renamed away and replaced by the
     // link (Unix; Windows refuses the rename of a folder held without sharing deletion).
-    std::fs::remove_file(&staging).or_else(|_| std::fs::remove_dir(&staging)).unwrap();
+    // (Another name: Wine removes a Unix link to a folder by removing the folder.)
+    let staging = dir.join(format!(".{STAGING}.77.2.tmp"));
     std::fs::create_dir(&staging).unwrap();
     let parent = HeldDir::open(&dir).unwrap();
     let held = parent.open_dir(staging.file_name().unwrap()).unwrap();
