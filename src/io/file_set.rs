@@ -6,8 +6,12 @@
 //! 1. a staging folder, `.phonglab-set.<pid>.<n>.tmp`, is made in the target folder, and a
 //!    journal in it (`.phonglab-set.journal`) naming the folder itself;
 //! 2. the new set is written whole into the staging folder, and synced;
-//! 3. the folder is checked to be still the one held at the start (its identity, and no
-//!    link at its name): one moved away and replaced by a link meanwhile refuses the set;
+//! 3. the folder and the staging folder are checked to be still at their paths (their
+//!    identities, and no link at their names): one moved away and replaced by a link
+//!    meanwhile refuses the set (asked again before each move of step 5, which is then
+//!    undone). Nothing goes through such a link meanwhile: the folder, the staging folder
+//!    and its aside folder are held by a handle, and every file is made, written, moved and
+//!    removed through those handles ([`crate::platform::held_dir`]);
 //! 4. the journal is written again, whole (a temporary file renamed), naming the new set's
 //!    files and the old set's, each with its size, hash and identity: from this instant the
 //!    new set is decided, and it is whole (in the staging folder, or already in place);
