@@ -1116,3 +1116,5 @@ arg-error-conflict = The option { $arg } cannot be used with { $other }.
 arg-error-twice = { $arg } is given twice: give it once.
 arg-error-unexpected = { $arg } was not expected here: it is not an option, nor the value of one.
 arg-error-more = See { $help }.
+# fix57c
+work-output-changed = { $path } is phonglab's earlier { $kind }, but changed since phonglab wrote it (a line added, an edit), or phonglab kept no record of writing it here: what was added is not phonglab's to erase; nothing was written. Give another name, or move it away first

@@ -1138,3 +1138,5 @@ arg-error-conflict = A opção { $arg } não pode ser usada com { $other }.
 arg-error-twice = { $arg } foi informada duas vezes: informe-a uma vez só.
 arg-error-unexpected = Não se esperava { $arg } aqui: não é uma opção nem o valor de uma.
 arg-error-more = Veja { $help }.
+# fix57c
+work-output-changed = { $path } é um resultado anterior do phonglab ({ $kind }), mas foi alterado depois que o phonglab o gravou (uma linha acrescentada, uma edição), ou o phonglab não guardou registro de tê-lo gravado aqui: o que foi acrescentado não cabe ao phonglab apagar; nada foi gravado. Indique outro nome, ou tire esse arquivo daí antes

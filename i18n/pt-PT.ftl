@@ -1119,3 +1119,5 @@ arg-error-conflict = A opção { $arg } não pode ser usada com { $other }.
 arg-error-twice = { $arg } foi indicada duas vezes: indique-a uma só vez.
 arg-error-unexpected = Não se esperava { $arg } aqui: não é uma opção nem o valor de uma.
 arg-error-more = Veja { $help }.
+# fix57c
+work-output-changed = { $path } é um resultado anterior do phonglab ({ $kind }), mas foi alterado depois de o phonglab o escrever (uma linha acrescentada, uma edição), ou o phonglab não guardou registo de o ter escrito aqui: o que foi acrescentado não é do phonglab para apagar; nada foi escrito. Indique outro nome, ou tire primeiro esse ficheiro daí
