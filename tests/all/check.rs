@@ -902,14 +902,14 @@ fn a_step_printed_again_does_not_hide_the_earlier_wrong_one_and_junk_past_the_ca
     let words = common::phonglab(&["check", "--printed", printed.to_str().unwrap()]);
     let words = String::from_utf8_lossy(&words.stdout);
     assert!(words.contains("printed more than once, with different values (each printing is checked): vlv"), "{words}");
-    // 4096 junk values first: the work is refused whole, never checked in part.
-    let mut junk: String = (0..4096).map(|k| format!("junk{k} = 1\n")).collect();
+    // 16384 junk numbers first: the work is refused whole, never checked in part.
+    let mut junk: String = (0..4096).map(|k| format!("junk{k} = [1 1 1 1]\n")).collect();
     junk.push_str(text);
     std::fs::write(&printed, junk).unwrap();
     let out = common::phonglab(&["check", "--printed", printed.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stdout));
     assert!(
-        String::from_utf8_lossy(&out.stderr).contains("prints more than 4096 values"),
+        String::from_utf8_lossy(&out.stderr).contains("prints more than 16384 numbers"),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );

@@ -434,6 +434,13 @@ impl<'a> Mistaken<'a> {
 /// is the key's 0.0004 and a specular left out alike.
 fn untold(got: &PrintedValue, want: &[f64], mistaken: &mut Mistaken) -> Option<u32> {
     let want = aligned(got, want)?;
+    // A number printed alone is Python's shortest round trip (NumPy's print options do
+    // not shorten it): `-1.0` where the key is -1 exactly is the key, not -1 to a decimal.
+    if let ([g], [w]) = (got.numbers.as_slice(), want) {
+        if (g - w).abs() <= SLACK * w.abs().max(1.0) {
+            return None;
+        }
+    }
     let coarsest = got.half_units.iter().copied().fold(0.0f64, f64::max);
     // Two values a millionth apart never both lie within half a unit finer than this.
     if coarsest < 0.25 * TOLD_APART {
