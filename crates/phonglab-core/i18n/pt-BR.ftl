@@ -990,8 +990,8 @@ check-verdict-too-few-digits = dígitos de menos para decidir (impresso com { $d
         [0] 0 casas decimais
         [one] 1 casa decimal
        *[other] { $decimals } casas decimais
-    }, que não distinguem a chave do valor de um erro ou de 0: imprima mais, por exemplo np.set_printoptions(precision=8))
-check-too-few-digits = não verificado por inteiro: dígitos de menos para distinguir a chave do valor de um erro ou de 0 ({ $names }; { $decimals ->
+    }, que não distinguem o gabarito do valor de um erro ou de 0: imprima mais, por exemplo np.set_printoptions(precision=8))
+check-too-few-digits = não verificado por inteiro: dígitos de menos para distinguir o gabarito do valor de um erro ou de 0 ({ $names }; { $decimals ->
         [0] 0 casas decimais
         [one] 1 casa decimal
        *[other] { $decimals } casas decimais

@@ -983,8 +983,8 @@ input-kind-cases = o ficheiro de casos
 check-verdict-too-few-digits = dígitos a menos para decidir (impresso com { $decimals ->
         [one] 1 casa decimal
        *[other] { $decimals } casas decimais
-    }, que não distinguem a chave do valor de um erro ou de 0: imprima mais, por exemplo np.set_printoptions(precision=8))
-check-too-few-digits = não verificado por inteiro: dígitos a menos para distinguir a chave do valor de um erro ou de 0 ({ $names }; { $decimals ->
+    }, que não distinguem a solução do valor de um erro ou de 0: imprima mais, por exemplo np.set_printoptions(precision=8))
+check-too-few-digits = não verificado por inteiro: dígitos a menos para distinguir a solução do valor de um erro ou de 0 ({ $names }; { $decimals ->
         [one] 1 casa decimal
        *[other] { $decimals } casas decimais
     }). Imprima mais dígitos (np.set_printoptions(precision=8) no início, ou o que o NumPy usa por omissão), execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel) e verifique-o de novo
