@@ -436,10 +436,10 @@ fn untold(got: &PrintedValue, want: &[f64], mistaken: &mut Mistaken) -> Option<u
     let want = aligned(got, want)?;
     // A number printed alone is Python's shortest round trip (NumPy's print options do
     // not shorten it): `-1.0` where the key is -1 exactly is the key, not -1 to a decimal.
-    if let ([g], [w]) = (got.numbers.as_slice(), want) {
-        if (g - w).abs() <= SLACK * w.abs().max(1.0) {
-            return None;
-        }
+    if let ([g], [w]) = (got.numbers.as_slice(), want)
+        && (g - w).abs() <= SLACK * w.abs().max(1.0)
+    {
+        return None;
     }
     let coarsest = got.half_units.iter().copied().fold(0.0f64, f64::max);
     // Two values a millionth apart never both lie within half a unit finer than this.
