@@ -1040,7 +1040,7 @@ check-report-no-scene = No --scene was given: each notebook's typed inputs were 
 check-verdict-word-unread = not read
 check-verdict-word-incomplete = incomplete
 check-report-unread = Not read
-check-report-unchecked = incomplete (a step not printed, outputs out of order, the run stopped, or nothing compared)
+check-report-unchecked = incomplete (a step not printed, outputs out of order, the run stopped, too few digits to tell, or nothing compared)
 cli-check = Check a student's work: a worksheet notebook with its outputs, a script's printed text, or a folder of them; each printed step against the key, the first wrong step and its likely causes. Exit code: 0 right, 1 wrong or not checked, 2 a usage or input error; for a folder, 0 once the report is written
 cli-arg-check-work = The notebook (.ipynb, saved with its outputs), or a folder of them for the whole class
 cli-arg-check-printed = The text a script printed, instead of a notebook (- for the standard input)
@@ -1118,3 +1118,5 @@ arg-error-conflict = The option { $arg } cannot be used with { $other }.
 arg-error-twice = { $arg } is given twice: give it once.
 arg-error-unexpected = { $arg } was not expected here: it is not an option, nor the value of one.
 arg-error-more = See { $help }.
+# fix57c
+work-output-changed = { $path } is phonglab's earlier { $kind }, but changed since phonglab wrote it (a line added, an edit), or phonglab kept no record of writing it here: what was added is not phonglab's to erase; nothing was written. Give another name, or move it away first

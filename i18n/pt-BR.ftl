@@ -1059,7 +1059,7 @@ check-report-no-scene = Nenhuma --scene foi informada: os dados digitados em cad
 check-verdict-word-unread = não lido
 check-verdict-word-incomplete = incompleto
 check-report-unread = Não lidos
-check-report-unchecked = incompleto (um passo não impresso, saídas fora de ordem, a execução parou, ou nada comparado)
+check-report-unchecked = incompleto (um passo não impresso, saídas fora de ordem, a execução parou, dígitos de menos para decidir, ou nada comparado)
 cli-check = Verificar o trabalho de um aluno: um notebook da lista com as saídas, o texto impresso por um programa, ou uma pasta deles; cada passo impresso comparado com o gabarito, o primeiro passo errado e as causas prováveis. Código de saída: 0 certo, 1 errado ou não verificado, 2 erro de uso ou de entrada; para uma pasta, 0 depois de gravado o relatório
 cli-arg-check-work = O notebook (.ipynb, salvo com as saídas), ou uma pasta deles para a turma toda
 cli-arg-check-printed = O texto impresso por um programa, em vez de um notebook (- para a entrada padrão)
@@ -1140,3 +1140,5 @@ arg-error-conflict = A opção { $arg } não pode ser usada com { $other }.
 arg-error-twice = { $arg } foi informada duas vezes: informe-a uma vez só.
 arg-error-unexpected = Não se esperava { $arg } aqui: não é uma opção nem o valor de uma.
 arg-error-more = Veja { $help }.
+# fix57c
+work-output-changed = { $path } é um resultado anterior do phonglab ({ $kind }), mas foi alterado depois que o phonglab o gravou (uma linha acrescentada, uma edição), ou o phonglab não guardou registro de tê-lo gravado aqui: o que foi acrescentado não cabe ao phonglab apagar; nada foi gravado. Indique outro nome, ou tire esse arquivo daí antes

@@ -1043,7 +1043,7 @@ check-report-no-scene = Não foi indicada nenhuma --scene: os dados escritos em 
 check-verdict-word-unread = não lido
 check-verdict-word-incomplete = incompleto
 check-report-unread = Não lidos
-check-report-unchecked = incompleto (um passo não impresso, saídas fora de ordem, a execução parou, ou nada comparado)
+check-report-unchecked = incompleto (um passo não impresso, saídas fora de ordem, a execução parou, dígitos a menos para decidir, ou nada comparado)
 cli-check = Verificar o trabalho de um aluno: um caderno da ficha com os resultados, o texto impresso por um programa, ou uma pasta deles; cada passo impresso comparado com a solução, o primeiro passo errado e as causas prováveis. Código de saída: 0 certo, 1 errado ou não verificado, 2 erro de utilização ou de entrada; para uma pasta, 0 depois de escrito o relatório
 cli-arg-check-work = O caderno (.ipynb, guardado com os resultados), ou uma pasta deles para a turma toda
 cli-arg-check-printed = O texto impresso por um programa, em vez de um caderno (- para a entrada padrão)
@@ -1121,3 +1121,5 @@ arg-error-conflict = A opção { $arg } não pode ser usada com { $other }.
 arg-error-twice = { $arg } foi indicada duas vezes: indique-a uma só vez.
 arg-error-unexpected = Não se esperava { $arg } aqui: não é uma opção nem o valor de uma.
 arg-error-more = Veja { $help }.
+# fix57c
+work-output-changed = { $path } é um resultado anterior do phonglab ({ $kind }), mas foi alterado depois de o phonglab o escrever (uma linha acrescentada, uma edição), ou o phonglab não guardou registo de o ter escrito aqui: o que foi acrescentado não é do phonglab para apagar; nada foi escrito. Indique outro nome, ou tire primeiro esse ficheiro daí

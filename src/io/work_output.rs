@@ -8,8 +8,11 @@
 //!   make its target);
 //! - a file already there is replaced only where it is phonglab's own earlier output of the
 //!   same kind, known by its bytes ([`Kind::is_own`]: the report's title line, the marks'
-//!   header, the PNG's `Software` text); anything else (another student's picture, the
-//!   teacher's notes) is refused, named, and left as it is;
+//!   header, the PNG's `Software` text), and its whole bytes are still what phonglab wrote
+//!   there: the record phonglab kept of it (size, hash and identity, in its data folder:
+//!   [`written_as_recorded`]); anything else (another student's picture, the teacher's
+//!   notes, phonglab's output with a teacher's line added) is refused, named, and left as
+//!   it is;
 //! - inside the checked folder, a name that `check` reads as a submission (`.ipynb`), or a
 //!   student's script (`.py`), is refused: the next check would count it as a student.
 //!
@@ -173,6 +176,9 @@ fn refusal(path: &Path, kind: Kind, checked: Option<&Path>) -> Option<String> {
             if !kind.is_own(&head) {
                 return Some(not_own(&shown, kind, &head));
             }
+            if !written_as_recorded(path) {
+                return Some(t!("work-output-changed", path = shown, kind = kind.words()));
+            }
         }
         // Nothing there; anything else there (a folder, a device) the write refuses.
         _ => {}
@@ -238,7 +244,74 @@ pub fn write(path: &Path, kind: Kind, checked: Option<&Path>, bytes: &[u8]) -> R
     if let Some(why) = refusal(path, kind, checked) {
         return Err(why);
     }
-    crate::io::atomic_write::write_here(path, bytes).map_err(|e| e.to_string())
+    crate::io::atomic_write::write_here(path, bytes).map_err(|e| e.to_string())?;
+    remember(path);
+    Ok(())
+}
+
+/// The folder, in phonglab's data folder ([`crate::platform::storage::storage_dir`]), of
+/// the records of the outputs it wrote: one small file for each output's place, named by
+/// the hash of that place (so two runs writing two outputs never write one record).
+const RECORDS: &str = "outputs-written";
+
+/// The most bytes of a record read (one is about 300).
+const MAX_RECORD_BYTES: u64 = 64 * 1024;
+
+/// What phonglab wrote at an output's place: the place (its folder's real path and its
+/// name), and the file's size, hash and identity just after the write.
+#[derive(serde::Serialize, serde::Deserialize)]
+struct Record {
+    place: String,
+    entry: crate::io::set_journal::Entry,
+}
+
+/// The place of `path`: its folder's real path, joined with its name (the name itself is
+/// never followed: a link there is refused before).
+fn place_of(path: &Path) -> Option<String> {
+    let parent = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    Some(std::fs::canonicalize(parent).ok()?.join(path.file_name()?).to_string_lossy().into_owned())
+}
+
+/// The record file of the output at `path`, and its place; `None` where phonglab has no
+/// data folder (nothing is then kept, and nothing already there is replaced).
+fn record_of(path: &Path) -> Option<(std::path::PathBuf, String)> {
+    let place = place_of(path)?;
+    let dir = crate::platform::storage::storage_dir()?.join(RECORDS);
+    let name = format!("{}.json", crate::io::set_journal::hash_bytes(place.as_bytes()));
+    Some((dir.join(name), place))
+}
+
+/// Keeps the record of the output just written at `path`, written whole. Where it cannot
+/// be kept, the next run finds no record and refuses to replace the output: the safe side.
+fn remember(path: &Path) {
+    let Some((record, place)) = record_of(path) else { return };
+    let (folder, name) = match (path.parent(), path.file_name()) {
+        (Some(f), Some(n)) => (f, n.to_string_lossy().into_owned()),
+        _ => return,
+    };
+    let Ok(entry) = crate::io::set_journal::entry_of(folder, &name) else { return };
+    let Ok(bytes) = serde_json::to_vec(&Record { place, entry }) else { return };
+    if let Some(dir) = record.parent() {
+        let _ = std::fs::create_dir_all(dir);
+    }
+    let _ = crate::io::atomic_write::write_here(&record, &bytes);
+}
+
+/// Whether the file at `path` is, whole, what phonglab last wrote at that place: its
+/// record's size, hash and identity. A line added, a byte changed, or the file replaced by
+/// another with the same bytes (another identity), and it is not.
+pub fn written_as_recorded(path: &Path) -> bool {
+    let Some((record, place)) = record_of(path) else { return false };
+    let mut bytes = Vec::new();
+    let read =
+        crate::platform::os::open_no_follow(&record).and_then(|f| f.take(MAX_RECORD_BYTES).read_to_end(&mut bytes));
+    let Ok(r) = read.map_err(|_| ()).and_then(|_| serde_json::from_slice::<Record>(&bytes).map_err(|_| ())) else {
+        return false;
+    };
+    r.place == place && crate::io::set_journal::is_entry(path, &r.entry)
 }
 
 #[cfg(test)]

@@ -902,14 +902,14 @@ fn a_step_printed_again_does_not_hide_the_earlier_wrong_one_and_junk_past_the_ca
     let words = common::phonglab(&["check", "--printed", printed.to_str().unwrap()]);
     let words = String::from_utf8_lossy(&words.stdout);
     assert!(words.contains("printed more than once, with different values (each printing is checked): vlv"), "{words}");
-    // 4096 junk values first: the work is refused whole, never checked in part.
-    let mut junk: String = (0..4096).map(|k| format!("junk{k} = 1\n")).collect();
+    // 16384 junk numbers first: the work is refused whole, never checked in part.
+    let mut junk: String = (0..4096).map(|k| format!("junk{k} = [1 1 1 1]\n")).collect();
     junk.push_str(text);
     std::fs::write(&printed, junk).unwrap();
     let out = common::phonglab(&["check", "--printed", printed.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stdout));
     assert!(
-        String::from_utf8_lossy(&out.stderr).contains("prints more than 4096 values"),
+        String::from_utf8_lossy(&out.stderr).contains("prints more than 16384 numbers"),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
@@ -1188,4 +1188,26 @@ fn printed_text_of_one_right_line_is_incomplete() {
     let (json, code) = run(sheet);
     assert_eq!((json["verdict"].as_str(), code), (Some("right"), Some(0)), "{json:#}");
     assert_eq!(json["missing"], serde_json::json!([]));
+}
+
+/// Issue 57: work printed with too few digits to tell the key from a mistake's value (the
+/// specular left out, printed under `np.set_printoptions(precision=2)`) is not right in
+/// JSON either: the verdict `incomplete`, why `too-few-digits`, the step's verdict
+/// `too-few-digits`; the exit status not 0.
+#[test]
+fn too_few_digits_are_incomplete_in_json() {
+    let dir = TempDir::new("digits");
+    let text = "vertexNormal =  [0.  0.6 0.8 0. ]\nvlv =  [ 0.79  0.56 -0.25  0.  ]\nvov =  [0. 0. 1. 0.]\n\
+                Iamb =  [0.21 0.13 0.05 0.  ]\nIdif =  [0.1  0.06 0.03 0.  ]\nIspec =  [0. 0. 0. 0.]\n\
+                I =  [0.06 0.04 0.02 0.  ]\n";
+    let printed = dir.path().join("p2.txt");
+    std::fs::write(&printed, text).unwrap();
+    let out = common::phonglab(&["check", "--printed", printed.to_str().unwrap(), "--json"]);
+    assert_ne!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["verdict"], "incomplete", "{json:#}");
+    assert_eq!(json["unchecked"]["id"], "too-few-digits", "{json:#}");
+    let ispec = json["steps"].as_array().unwrap().iter().find(|s| s["step"] == "Ispec").unwrap();
+    assert_eq!(ispec["verdict"], "too-few-digits", "{json:#}");
+    assert!(ispec["words"].as_str().unwrap().contains("np.set_printoptions(precision=8)"), "{json:#}");
 }

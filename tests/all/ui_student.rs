@@ -894,3 +894,35 @@ fn work_missing_a_step_is_said_incomplete_in_the_window() {
         assert!(h.query_by_label_contains("the first Ispec: Ispec, I").is_some());
     }
 }
+
+/// Issue 57: the chooser lists names from a class folder, where a student names their
+/// file: a line break made one file two entries, a right-to-left override (U+202E) made
+/// "\u{202E}gnp.exe.png" read "gnp.exe.png" backwards, an ESC showed as a box. Each is
+/// shown as the terminal shows it (`\u{A}`, `\u{202E}`, `\u{1B}`), one entry a file, and
+/// clicking it still names the file itself.
+#[test]
+#[cfg(unix)] // a file name with a line break
+fn the_chooser_shows_controls_and_bidirectional_overrides_in_names_visibly() {
+    let dir = TempDir::new("chooser-controls");
+    let names = ["two\nlines.txt", "\u{202E}gnp.exe.png", "esc\u{1b}[31m.txt"];
+    for n in names {
+        std::fs::write(dir.0.join(n), printed(None)).unwrap();
+    }
+    let mut h = harness(1280.0, 720.0);
+    common::open_menu(&mut h, &["File"]);
+    h.get_by_label("Check a student's work…").click();
+    h.run_steps(2);
+    h.state_mut().chooser.as_mut().expect("the chooser opens").folder = dir.0.display().to_string();
+    h.run_steps(3);
+    for (name, shown) in names.iter().zip(["two\\u{A}lines.txt", "\\u{202E}gnp.exe.png", "esc\\u{1B}[31m.txt"]) {
+        assert!(h.query_by_label(shown).is_some(), "{shown} listed");
+        h.get_by_label(shown).click();
+        h.run_steps(2);
+        assert_eq!(h.state().chooser.as_ref().unwrap().name, *name, "the file itself is chosen");
+    }
+    for raw in ["two\nlines", "lines.txt", "\u{202E}", "\u{1b}"] {
+        assert!(h.query_by_label(raw).is_none(), "{raw:?} shown as it is");
+    }
+    assert!(h.query_by_label_contains("\u{202E}").is_none(), "no override reaches the window");
+    assert!(h.query_by_label_contains("\u{1b}").is_none(), "no ESC reaches the window");
+}

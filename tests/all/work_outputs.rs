@@ -338,3 +338,74 @@ fn two_outputs_that_are_links_to_one_file_are_refused_as_links() {
     assert!(!e.contains("the same file"), "{e}");
     assert_eq!(std::fs::read_to_string(&bashrc).unwrap(), "alias ls='ls --color'\n");
 }
+
+/// Issue 57: a teacher's line appended to the marks ("Nota do professor: Ana 18"), or a
+/// "## My notes" section added to the report, was erased by the next run: the head said
+/// phonglab's. Now a file is replaced only where its whole bytes are what phonglab last
+/// wrote there (its record, in phonglab's data folder): an edited output, the chart beside
+/// the report edited, a copy of phonglab's bytes put in its place, or an output with no
+/// record is refused in words, exit 2, and nothing is written.
+#[test]
+#[cfg(unix)] // the outputs' identities (inodes) tell that nothing was written
+fn a_teachers_note_added_to_the_marks_or_the_report_is_never_erased() {
+    use std::os::unix::fs::MetadataExt;
+    let root = Scratch::new("teachers-note");
+    let cls = class(&root, &["a.ipynb"]);
+    let (report, chart, csv) = (root.join("turma.md"), root.join("turma.png"), root.join("notas.csv"));
+    let run_in = |data: &Path, lang: &str| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_phonglab"))
+            .env("PHONGLAB_SESSION_DIR", data)
+            .env_remove("LC_ALL")
+            .env_remove("LC_MESSAGES")
+            .env("LANG", lang)
+            .args(["check", s(&cls), "--report", s(&report), "--csv", s(&csv)])
+            .output()
+            .unwrap()
+    };
+    let data = root.join("data");
+    let run = |lang: &str| run_in(&data, lang);
+    for again in 0..2 {
+        let o = run("en_GB.UTF-8");
+        assert_eq!(o.status.code(), Some(0), "run {again}: {}", stderr(&o));
+    }
+    let inodes = || [&report, &chart, &csv].map(|p| std::fs::metadata(p).unwrap().ino());
+    let note = |at: &Path, line: &str| {
+        let mut bytes = std::fs::read(at).unwrap();
+        let kept = bytes.clone();
+        bytes.extend_from_slice(line.as_bytes());
+        std::fs::write(at, &bytes).unwrap();
+        (kept, bytes)
+    };
+    let words = [
+        ("en_GB.UTF-8", "changed since phonglab wrote it"),
+        ("pt_PT.UTF-8", "foi alterado depois de o phonglab o escrever"),
+        ("pt_BR.UTF-8", "foi alterado depois que o phonglab o gravou"),
+    ];
+    for (at, line) in [(&csv, "Nota do professor: Ana 18\n"), (&report, "\n## My notes\n\nAna: 18\n"), (&chart, "x")] {
+        let (kept, edited) = note(at, line);
+        let before = inodes();
+        for (lang, said) in words {
+            let o = run(lang);
+            assert_eq!(o.status.code(), Some(2), "{lang}: {}", stderr(&o));
+            let e = stderr(&o);
+            assert!(e.contains(&at.display().to_string()) && e.contains(said), "{lang}: {e}");
+            assert_eq!(std::fs::read(at).unwrap(), edited, "{lang}: the teacher's note kept");
+            assert_eq!(inodes(), before, "{lang}: nothing written");
+        }
+        // The note taken out again: phonglab's own bytes, its own file: replaced.
+        std::fs::write(at, &kept).unwrap();
+        let o = run("en_GB.UTF-8");
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    }
+    // phonglab's bytes, but another file put in its place: not what phonglab wrote there.
+    let copy = root.join("copy.csv");
+    std::fs::copy(&csv, &copy).unwrap();
+    std::fs::rename(&copy, &csv).unwrap();
+    assert_eq!(run("en_GB.UTF-8").status.code(), Some(2));
+    // No record of it (another data folder): refused, on the safe side.
+    std::fs::remove_file(&csv).unwrap();
+    assert!(run("en_GB.UTF-8").status.success());
+    let o = run_in(&root.join("other-data"), "en_GB.UTF-8");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("changed since phonglab wrote it"), "{}", stderr(&o));
+}

@@ -784,7 +784,7 @@ diagnose-where = Pixels are counted from (0, 0) at the top left, y down, as the 
 ## phonglab check: a student's work checked
 
 check-no-outputs = this notebook was saved without its outputs: nothing it printed can be checked. Run it first (Jupyter: Kernel → Restart & Run All), save it, and check it again
-check-too-many-values = this work prints more than { $count } values: it is refused whole rather than checked in part (print only the worksheet's steps)
+check-too-many-values = this work prints more than { $count } numbers: it is refused whole rather than checked in part (print only the worksheet's steps)
 check-verdict-right = right
 check-verdict-right-given = right, given your { $step }
 check-verdict-rounding = rounding
@@ -979,3 +979,13 @@ input-kind-scene = the scene
 input-kind-mesh = the mesh
 input-kind-code = the notebook or script
 input-kind-cases = the case file
+# fix57c
+check-verdict-too-few-digits = too few digits to tell (printed to { $decimals ->
+        [one] 1 decimal place
+       *[other] { $decimals } decimal places
+    }, which cannot tell the key from a mistake's value or from 0: print more, e.g. np.set_printoptions(precision=8))
+check-too-few-digits = not checked whole: too few digits to tell the key from a mistake's value or from 0 ({ $names }; { $decimals ->
+        [one] 1 decimal place
+       *[other] { $decimals } decimal places
+    } seen). Print more digits (np.set_printoptions(precision=8) at the top, or NumPy's default), run every cell again (Jupyter: Restart & Run All, in the Kernel menu), and check it again
+check-stale-count = not checked whole: a cell's execution count is not a run's ([{ $count }]: Jupyter numbers the cells it runs 1, 2, 3, in order), so nothing says the outputs are from one run in order. Run every cell again (Jupyter: Restart & Run All, in the Kernel menu), save, and check it again

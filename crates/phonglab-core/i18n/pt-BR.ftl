@@ -788,7 +788,7 @@ diagnose-where = Os pixels são contados a partir de (0, 0) no canto superior es
 ## phonglab check: o trabalho de um aluno verificado
 
 check-no-outputs = este notebook foi salvo sem as saídas: não há nada impresso para verificar. Execute-o primeiro (Jupyter: Kernel → Restart & Run All), salve e verifique de novo
-check-too-many-values = este trabalho imprime mais de { $count } valores: ele é recusado por inteiro em vez de verificado só em parte (imprima só os passos da lista de exercícios)
+check-too-many-values = este trabalho imprime mais de { $count } números: ele é recusado por inteiro em vez de verificado só em parte (imprima só os passos da lista de exercícios)
 check-verdict-right = certo
 check-verdict-right-given = certo, dado o seu { $step }
 check-verdict-rounding = arredondamento
@@ -985,3 +985,15 @@ input-kind-scene = a cena
 input-kind-mesh = a malha
 input-kind-code = o notebook ou programa
 input-kind-cases = o arquivo de casos
+# fix57c
+check-verdict-too-few-digits = dígitos de menos para decidir (impresso com { $decimals ->
+        [0] 0 casas decimais
+        [one] 1 casa decimal
+       *[other] { $decimals } casas decimais
+    }, que não distinguem o gabarito do valor de um erro ou de 0: imprima mais, por exemplo np.set_printoptions(precision=8))
+check-too-few-digits = não verificado por inteiro: dígitos de menos para distinguir o gabarito do valor de um erro ou de 0 ({ $names }; { $decimals ->
+        [0] 0 casas decimais
+        [one] 1 casa decimal
+       *[other] { $decimals } casas decimais
+    }). Imprima mais dígitos (np.set_printoptions(precision=8) no início, ou o padrão do NumPy), execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel) e verifique de novo
+check-stale-count = não verificado por inteiro: o número de execução de uma célula não é o de uma execução ([{ $count }]: o Jupyter numera as células que executa 1, 2, 3, em ordem), então nada diz que as saídas são de uma única execução, em ordem. Execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel), salve e verifique de novo

@@ -784,7 +784,7 @@ diagnose-where = Os píxeis contam-se a partir de (0, 0) no canto superior esque
 ## phonglab check: o trabalho de um aluno verificado
 
 check-no-outputs = este caderno foi guardado sem os resultados: não há nada impresso para verificar. Execute-o primeiro (Jupyter: Kernel → Restart & Run All), guarde-o e verifique-o de novo
-check-too-many-values = este trabalho imprime mais de { $count } valores: é recusado por inteiro em vez de verificado só em parte (imprima só os passos da ficha)
+check-too-many-values = este trabalho imprime mais de { $count } números: é recusado por inteiro em vez de verificado só em parte (imprima só os passos da ficha)
 check-verdict-right = certo
 check-verdict-right-given = certo, dado o seu { $step }
 check-verdict-rounding = arredondamento
@@ -979,3 +979,13 @@ input-kind-scene = a cena
 input-kind-mesh = a malha
 input-kind-code = o caderno ou programa
 input-kind-cases = o ficheiro de casos
+# fix57c
+check-verdict-too-few-digits = dígitos a menos para decidir (impresso com { $decimals ->
+        [one] 1 casa decimal
+       *[other] { $decimals } casas decimais
+    }, que não distinguem a solução do valor de um erro ou de 0: imprima mais, por exemplo np.set_printoptions(precision=8))
+check-too-few-digits = não verificado por inteiro: dígitos a menos para distinguir a solução do valor de um erro ou de 0 ({ $names }; { $decimals ->
+        [one] 1 casa decimal
+       *[other] { $decimals } casas decimais
+    }). Imprima mais dígitos (np.set_printoptions(precision=8) no início, ou o que o NumPy usa por omissão), execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel) e verifique-o de novo
+check-stale-count = não verificado por inteiro: o número de execução de uma célula não é o de uma execução ([{ $count }]: o Jupyter numera as células que executa 1, 2, 3, por ordem), portanto nada diz que as saídas são de uma só execução, por ordem. Execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel), guarde e verifique-o de novo

@@ -139,7 +139,10 @@ fn chooser_body_ui(ui: &mut Ui, c: &mut Chooser) -> (Option<Chosen>, bool) {
             }
             Ok(entries) => {
                 for Entry { name, folder } in entries {
-                    let shown = if folder { format!("{name}/") } else { name.clone() };
+                    // A name is shown as the terminal shows it: a line break, a right-to-left
+                    // override or an ESC in it written visibly (`\u{202E}`).
+                    let visible = phonglab_core::escape::window::text(&name);
+                    let shown = if folder { format!("{visible}/") } else { visible };
                     if ui.selectable_label(!folder && name == c.name, shown).clicked() {
                         if folder {
                             enter = Some(name);

@@ -86,7 +86,9 @@ pub fn student_value_ui(ui: &mut Ui, step: &StepCheck, first_wrong: Option<&Chec
     let mut text = RichText::new(line).monospace();
     text = match &step.verdict {
         Verdict::Wrong => text.color(wrong_ink(ui)).strong(),
-        Verdict::Rounding | Verdict::RightGiven(_) => text.color(palette::ink(ui, palette::NOTE)),
+        Verdict::Rounding | Verdict::RightGiven(_) | Verdict::TooFewDigits(_) => {
+            text.color(palette::ink(ui, palette::NOTE))
+        }
         Verdict::Right => text.color(palette::ink(ui, palette::V)),
     };
     ui.add(egui::Label::new(text).wrap());

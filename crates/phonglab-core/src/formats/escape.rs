@@ -18,6 +18,7 @@
 //! | TOML string | [`toml::string`] | a basic string (the `toml` crate writes it) |
 //! | PDF text | [`pdf::text`] | only characters a font draws |
 //! | the terminal | [`terminal::text`] | no escape sequence, no line break |
+//! | the window (a name shown in a list) | [`window::text`] | as the terminal's: one line, no bidirectional control |
 //! | JSON (as `serde_json` wrote it) | [`json::text`] | every control as `\u202e`, C0 included (serde's) |
 //! | a CSV field | [`csv::field`] | controls written `\u{202E}`, quoted where it holds `,`, `;` or `"` |
 //! | HTML text or attribute | [`html::text`] | no tag, entity or attribute end; controls written `\u{1B}` |
@@ -423,6 +424,16 @@ pub mod csv {
     /// carriage return) gets a `'` before it, so it is shown and never computed.
     pub fn text_field(text: &str) -> String {
         if text.starts_with(['=', '+', '-', '@', '\t', '\r']) { field(&format!("'{text}")) } else { field(text) }
+    }
+}
+
+/// The window: a name from outside shown in a list (the chooser's files), written as the
+/// terminal writes it, so a line break does not make two entries of one, a right-to-left
+/// override (U+202E) does not turn `gnp.exe` round, and ESC is `\u{1B}`, not a box.
+pub mod window {
+    /// A name on one line, every control character written `\u{1B}` (as [`super::terminal::text`]).
+    pub fn text(text: &str) -> String {
+        super::terminal::text(text)
     }
 }
 

@@ -297,3 +297,70 @@ fn a_whole_number_is_exact_and_an_unreadable_step_is_never_right() {
     let wrapped = format!("vlv =  [-0.79220526\n{}-0.13925483 0.]\n{key}", " -0.59415395\n".repeat(1030));
     assert!(!check(&scene, &scene, &printed_text(&wrapped)).right());
 }
+
+/// Issue 57: a verdict is proven on the printed digits. The specular left out and printed
+/// with `np.set_printoptions(precision=2)` prints `Ispec = [0. 0. 0. 0.]`, which is the
+/// key's 0.0004 to two decimals, and zero alike: too few digits to tell, never right; so
+/// is `I` at one decimal, whose 0.036 prints 0. NumPy's default precision stays right.
+#[test]
+fn too_few_digits_to_tell_the_key_from_a_mistake_or_from_zero_are_never_right() {
+    use phonglab_core::study::check::Overall;
+    let scene = phonglab_core::presets::worksheet(5);
+    let at_two = "vertexNormal =  [0.  0.6 0.8 0. ]\nvertexPos =  [-512.  -307.2 -729.6    1. ]\n\
+                  lightPos =  [   0.   54. -888.    1.]\nvlv =  [ 0.79  0.56 -0.25  0.  ]\nvov =  [0. 0. 1. 0.]\n\
+                  Iamb =  [0.21 0.13 0.05 0.  ]\ncosTheta =  0.13925483139909867\nIdif =  [0.1  0.06 0.03 0.  ]\n\
+                  H =  [0.64 0.45 0.61 0.  ]\ncosBeta =  0.764399545502715\nIspec =  [0. 0. 0. 0.]\n\
+                  d =  646.2971452822611\nat =  5.241629714528227\nI =  [0.06 0.04 0.02 0.  ]\n";
+    let c = check(&scene, &scene, &printed_text(at_two));
+    let verdict = |c: &phonglab_core::study::check::Check, name: &str| {
+        c.steps.iter().find(|s| s.name == name).unwrap_or_else(|| panic!("no {name}")).verdict.clone()
+    };
+    assert_eq!(verdict(&c, "Ispec"), Verdict::TooFewDigits(2));
+    // The specular left out changes I by 0.0001: two decimals cannot tell.
+    assert_eq!(verdict(&c, "I"), Verdict::TooFewDigits(2));
+    assert!(c.first_wrong.is_none() && !c.right(), "{:?}", c.steps);
+    assert_eq!(c.overall(), Overall::Incomplete);
+    let why = c.unchecked().unwrap();
+    assert_eq!(why.id(), "too-few-digits");
+    let words = phonglab_core::study::check::said::words(&c);
+    assert!(!words.contains("all right"), "{words}");
+    assert!(words.contains("Ispec") && words.contains("2 decimal places"), "{words}");
+    assert!(words.contains("np.set_printoptions(precision=8)"), "{words}");
+    assert!(words.contains("too few digits to tell (printed to 2 decimal places"), "{words}");
+    // One decimal (every array printed so): I's 0.036 and 0.015 print 0, as zero would.
+    let at_one = "Ispec =  [0. 0. 0. 0.]\nI =  [0.1 0.  0.  0. ]\n";
+    assert_eq!(verdict(&check(&scene, &scene, &printed_text(at_one)), "I"), Verdict::TooFewDigits(1));
+    // Precision 0: `[0. 0. 0. 0.]` for 0.0596.
+    let at_none = "I =  [0. 0. 0. 0.]\n";
+    assert_eq!(verdict(&check(&scene, &scene, &printed_text(at_none)), "I"), Verdict::TooFewDigits(0));
+    // Enough digits to tell: right, and a key of 0 printed 0 is right at any precision.
+    let enough = at_two.replace("Ispec =  [0. 0. 0. 0.]", "Ispec =  [4.0551e-04 2.8017e-04 1.7179e-04 0.0000e+00]");
+    let c = check(&scene, &scene, &printed_text(&enough));
+    assert_eq!(verdict(&c, "Ispec"), Verdict::Right);
+    assert_eq!(verdict(&c, "vov"), Verdict::Right);
+}
+
+/// Issue 57: the check is linear in the printings (4000 printings of a wrong `vlv` took
+/// 15 s, each compared again with every earlier one), and its cap counts numbers, not
+/// printings: seventeen arrays of a thousand numbers are refused, saying so.
+#[test]
+fn many_printings_are_checked_in_linear_time_and_the_cap_counts_numbers() {
+    use phonglab_core::study::check::printed::{MAX_VALUES, OutputsError, read_printed_text};
+    let scene = phonglab_core::presets::worksheet(5);
+    let text: String = (0..4000).map(|k| format!("vlv =  [0.1 0.2 0.{} 0]\n", k % 2 + 3)).collect();
+    let start = std::time::Instant::now();
+    let c = check(&scene, &scene, &printed_text(&text));
+    let words = phonglab_core::study::check::said::words(&c);
+    let took = start.elapsed();
+    assert_eq!(c.steps.len(), 4000);
+    assert!(c.steps.iter().all(|s| s.verdict == Verdict::Wrong), "{:?}", &c.steps[..2]);
+    assert_eq!(phonglab_core::study::check::said::printed_again(&c), vec!["vlv".to_string()]);
+    assert!(words.contains("vlv"), "{words}");
+    assert!(took < std::time::Duration::from_secs(4), "{took:?} for 4000 printings");
+    let thousand = vec!["1."; 1000].join(" ");
+    let big: String = (0..17).map(|k| format!("a{k} = [{thousand}]\n")).collect();
+    let Err(OutputsError::TooMany(why)) = read_printed_text(&big) else { panic!("17000 numbers read") };
+    assert!(why.contains(&format!("more than {MAX_VALUES} numbers")), "{why}");
+    let sixteen: String = (0..16).map(|k| format!("a{k} = [{thousand}]\n")).collect();
+    assert_eq!(read_printed_text(&sixteen).unwrap().values.len(), 16);
+}

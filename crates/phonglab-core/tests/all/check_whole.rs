@@ -8,7 +8,7 @@ use std::path::Path;
 
 use phonglab_core::Document;
 use phonglab_core::scene::Scene;
-use phonglab_core::study::check::printed::{notebook_outputs, printed_text};
+use phonglab_core::study::check::printed::{Stale, notebook_outputs, printed_text};
 use phonglab_core::study::check::worked::{Worked, work};
 use phonglab_core::study::check::{ASKED, Overall, Verdict, asked, check};
 
@@ -178,7 +178,7 @@ fn outputs_out_of_order_are_not_right() {
         notebook(&[(first, stream(&printed_of(&key, Some(a)))), (second, stream(&printed_of(&key, Some(b))))])
     };
     let p = notebook_outputs(&cells(Some(5), Some(3))).unwrap();
-    assert_eq!(p.stale, Some((5, 3)));
+    assert_eq!(p.stale, Some(Stale::Back(5, 3)));
     let c = check(&scene, &scene, &p);
     assert_eq!(c.overall(), Overall::Incomplete);
     assert_eq!(c.unchecked().unwrap().id(), "stale-outputs");
@@ -188,7 +188,7 @@ fn outputs_out_of_order_are_not_right() {
         assert_eq!(p.stale, None, "{x:?} {y:?}");
         assert!(check(&scene, &scene, &p).right(), "{x:?} {y:?}");
     }
-    assert_eq!(notebook_outputs(&cells(Some(2), Some(2))).unwrap().stale, Some((2, 2)));
+    assert_eq!(notebook_outputs(&cells(Some(2), Some(2))).unwrap().stale, Some(Stale::Back(2, 2)));
 }
 
 /// The notebook's self-check names the steps it holds no value for; they are said once
@@ -206,4 +206,46 @@ fn steps_the_self_check_found_missing_are_said_once() {
     assert_eq!(c.all_missing(), ["Iamb", "I"]);
     let words = phonglab_core::study::check::said::words(&c);
     assert!(words.contains("holds no value for Iamb, I") && !words.contains("incomplete:"), "{words}");
+}
+
+/// Issue 57: an execution count no run gives (a string, a fraction, a negative, a number
+/// past 2^64, past the largest count taken) says nothing of the order: the outputs are
+/// stale, never right; said with the count as the notebook wrote it.
+#[test]
+fn execution_counts_that_are_not_small_integers_are_stale() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = work(&scene, None, None);
+    let names = asked(&key);
+    let (a, b) = names.split_at(3);
+    let with_counts = |first: serde_json::Value, second: serde_json::Value| {
+        let cells = vec![
+            serde_json::json!({"cell_type": "code", "execution_count": first, "source": ["x = 1\n"],
+                "outputs": stream(&printed_of(&key, Some(a)))}),
+            serde_json::json!({"cell_type": "code", "execution_count": second, "source": ["x = 1\n"],
+                "outputs": stream(&printed_of(&key, Some(b)))}),
+        ];
+        serde_json::json!({"cells": cells}).to_string()
+    };
+    let huge: serde_json::Value = serde_json::from_str("18446744073709551617").unwrap();
+    for (first, second, shown) in [
+        (serde_json::json!("100"), serde_json::json!("99"), "\"100\""),
+        (serde_json::json!(1), serde_json::json!(2.5), "2.5"),
+        (serde_json::json!(1.0), serde_json::json!(2), "1.0"),
+        (serde_json::json!(1), huge, "1.8446744073709552e+19"),
+        (serde_json::json!(-1), serde_json::json!(2), "-1"),
+        (serde_json::json!(1), serde_json::json!(u64::MAX), "18446744073709551615"),
+        (serde_json::json!(true), serde_json::json!(2), "true"),
+    ] {
+        let p = notebook_outputs(&with_counts(first.clone(), second.clone())).unwrap();
+        assert_eq!(p.stale, Some(Stale::NotACount(shown.to_string())), "{first} {second}");
+        let c = check(&scene, &scene, &p);
+        assert_eq!(c.overall(), Overall::Incomplete, "{first} {second}");
+        assert_eq!(c.unchecked().unwrap().id(), "stale-outputs", "{first} {second}");
+        let words = phonglab_core::study::check::said::words(&c);
+        assert!(words.contains(&format!("[{shown}]")) && words.contains("not a run's"), "{words}");
+    }
+    // Small non-negative integers in order (and none at all) are one run's.
+    let p = notebook_outputs(&with_counts(serde_json::json!(0), serde_json::json!(7))).unwrap();
+    assert_eq!(p.stale, None);
+    assert!(check(&scene, &scene, &p).right());
 }

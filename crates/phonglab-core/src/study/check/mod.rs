@@ -12,7 +12,7 @@ pub mod worked;
 use crate::model::rules::Rules;
 use crate::model::scene::{Scene, Side};
 use mistakes::{ACOS_PAST_ONE, CATALOGUE, ColourSwap, Made, MistakeInfo};
-use printed::{Printed, PrintedValue};
+use printed::{Printed, PrintedValue, Stale};
 use worked::{Worked, work, work_made};
 
 /// How a printed step compares with the key.
@@ -25,17 +25,23 @@ pub enum Verdict {
     RightGiven(String),
     /// The key's to about three digits, not to the printed ones: rounded on the way.
     Rounding,
+    /// The key's to the printed digits, but so are a catalogue mistake's value there, or
+    /// zero where the key is not: too few digits to tell (the decimal places printed).
+    /// Never right: a verdict is proven on the printed digits.
+    TooFewDigits(u32),
     /// None of these.
     Wrong,
 }
 
 impl Verdict {
-    /// The verdict's id in JSON and CSV: `right`, `right-given`, `rounding`, `wrong`.
+    /// The verdict's id in JSON and CSV: `right`, `right-given`, `rounding`,
+    /// `too-few-digits`, `wrong`.
     pub fn id(&self) -> &'static str {
         match self {
             Verdict::Right => "right",
             Verdict::RightGiven(_) => "right-given",
             Verdict::Rounding => "rounding",
+            Verdict::TooFewDigits(_) => "too-few-digits",
             Verdict::Wrong => "wrong",
         }
     }
@@ -46,6 +52,7 @@ impl Verdict {
             Verdict::Right => crate::t!("check-verdict-right"),
             Verdict::RightGiven(x) => crate::t!("check-verdict-right-given", step = x.clone()),
             Verdict::Rounding => crate::t!("check-verdict-rounding"),
+            Verdict::TooFewDigits(decimals) => crate::t!("check-verdict-too-few-digits", decimals = *decimals),
             Verdict::Wrong => crate::t!("check-verdict-wrong"),
         }
     }
@@ -128,8 +135,8 @@ pub struct Check {
     /// key's order: a cell not run, or its output cleared. Never right.
     pub not_printed: Vec<String>,
     /// A notebook's outputs not from one run in order: two execution counts, the earlier
-    /// cell's and the later cell's ([`Printed::stale`]).
-    pub stale: Option<(i64, i64)>,
+    /// cell's and the later cell's, or a count no run gives ([`Printed::stale`]).
+    pub stale: Option<Stale>,
     /// The values printed after a cell's error output, from an earlier run: not checked
     /// ([`Printed::after_error`]).
     pub after_error: Vec<String>,
@@ -189,14 +196,18 @@ pub enum Unchecked {
     /// Steps of the key the work holds no value for (named): a cell skipped or stopped.
     Missing(String),
     /// A notebook's outputs not from one run in order (two execution counts, the earlier
-    /// cell's and the later's).
-    Stale(i64, i64),
+    /// cell's and the later's; or a count no run gives).
+    Stale(Stale),
     /// Steps the worksheet asks for not printed: how many, the first, all (named).
     NotPrinted(usize, String, String),
+    /// Steps printed with too few digits to tell the key from a mistake's value or from
+    /// zero (named), and the fewest decimal places seen among them.
+    TooFewDigits(String, u32),
 }
 
 impl Unchecked {
-    /// The reason's id in JSON: `run-stopped`, `nothing-compared`.
+    /// The reason's id in JSON: `run-stopped`, `stale-outputs`, `missing-steps`,
+    /// `unreadable-step`, `too-few-digits`, `nothing-compared`.
     pub fn id(&self) -> &'static str {
         match self {
             Unchecked::Stopped(_) => "run-stopped",
@@ -204,6 +215,7 @@ impl Unchecked {
             Unchecked::Unreadable(_) => "unreadable-step",
             Unchecked::Missing(_) | Unchecked::NotPrinted(..) => "missing-steps",
             Unchecked::Stale(..) => "stale-outputs",
+            Unchecked::TooFewDigits(..) => "too-few-digits",
         }
     }
 
@@ -214,8 +226,14 @@ impl Unchecked {
             Unchecked::NothingCompared => crate::t!("check-nothing-compared"),
             Unchecked::Unreadable(names) => crate::t!("check-unreadable-steps", names = names.clone()),
             Unchecked::Missing(names) => crate::t!("check-missing-steps", names = names.clone()),
-            Unchecked::Stale(earlier, later) => crate::t!("check-stale-outputs", earlier = *earlier, later = *later),
+            Unchecked::Stale(Stale::Back(earlier, later)) => {
+                crate::t!("check-stale-outputs", earlier = *earlier, later = *later)
+            }
+            Unchecked::Stale(Stale::NotACount(count)) => crate::t!("check-stale-count", count = count.clone()),
             Unchecked::NotPrinted(..) => crate::t!("check-incomplete", steps = self.steps_words().unwrap_or_default()),
+            Unchecked::TooFewDigits(names, decimals) => {
+                crate::t!("check-too-few-digits", names = names.clone(), decimals = *decimals)
+            }
         }
     }
 
@@ -263,8 +281,8 @@ impl Check {
         if let Some(e) = self.errors.last() {
             return Some(Unchecked::Stopped(e.clone()));
         }
-        if let Some((earlier, later)) = self.stale {
-            return Some(Unchecked::Stale(earlier, later));
+        if let Some(stale) = &self.stale {
+            return Some(Unchecked::Stale(stale.clone()));
         }
         if !self.missing.is_empty() {
             return Some(Unchecked::Missing(self.missing.join(", ")));
@@ -272,10 +290,29 @@ impl Check {
         if !self.unreadable.is_empty() {
             return Some(Unchecked::Unreadable(self.unreadable.join(", ")));
         }
+        if let Some(few) = self.too_few_digits() {
+            return Some(few);
+        }
         if self.steps.is_empty() {
             return Some(Unchecked::NothingCompared);
         }
         self.not_printed_reason()
+    }
+
+    /// The steps printed with too few digits to tell, as a reason: named once each, with
+    /// the fewest decimal places seen among them.
+    pub fn too_few_digits(&self) -> Option<Unchecked> {
+        let mut names: Vec<&str> = Vec::new();
+        let mut fewest = u32::MAX;
+        for s in &self.steps {
+            if let Verdict::TooFewDigits(decimals) = s.verdict {
+                fewest = fewest.min(decimals);
+                if !names.contains(&s.name.as_str()) {
+                    names.push(&s.name);
+                }
+            }
+        }
+        (!names.is_empty()).then(|| Unchecked::TooFewDigits(names.join(", "), fewest))
     }
 
     /// The steps the worksheet asks for that the work does not print, as a reason.
@@ -352,6 +389,80 @@ fn close(got: &PrintedValue, want: &[f64]) -> bool {
     })
 }
 
+/// How far a value must be from the key's, in some number, to be another value: a
+/// millionth (of the number's size, past 1). Printed at NumPy's default precision (8
+/// decimals) the key and such a value never print alike.
+const TOLD_APART: f64 = 1e-6;
+
+/// Is `other` another value than the key's `want`, by [`TOLD_APART`]?
+fn apart(other: &[f64], want: &[f64]) -> bool {
+    other.len() != want.len() || other.iter().zip(want).any(|(o, w)| (o - w).abs() > TOLD_APART * w.abs().max(1.0))
+}
+
+/// The key worked with each of the catalogue's mistakes (under the assignment's rules),
+/// worked once, and only where a step's printed digits are coarse enough to need them.
+struct Mistaken<'a> {
+    scene: &'a Scene,
+    worked: Option<Vec<Worked>>,
+}
+
+impl<'a> Mistaken<'a> {
+    fn new(scene: &'a Scene) -> Self {
+        Mistaken { scene, worked: None }
+    }
+
+    /// Every mistake's worked values.
+    fn all(&mut self) -> &[Worked] {
+        let scene = self.scene;
+        self.worked.get_or_insert_with(|| {
+            let mut out = Vec::new();
+            for info in &CATALOGUE {
+                let Some(m) = info.mistake.filter(|m| m.applies(scene.rules)) else { continue };
+                for made in Made::instances(m, scene.lights.len()) {
+                    out.push(work_made(scene, Some(made), None));
+                }
+            }
+            out
+        })
+    }
+}
+
+/// Where `got` is the key's `want` to its printed digits: can those digits tell the key
+/// from zero (in a number where the key is not zero) and from every catalogue mistake's
+/// value there? `None` where they can; else the decimal places printed (the coarsest
+/// number's). A verdict is proven on the printed digits: `[0. 0. 0. 0.]` at two decimals
+/// is the key's 0.0004 and a specular left out alike.
+fn untold(got: &PrintedValue, want: &[f64], mistaken: &mut Mistaken) -> Option<u32> {
+    let want = aligned(got, want)?;
+    // A number printed alone is Python's shortest round trip (NumPy's print options do
+    // not shorten it): `-1.0` where the key is -1 exactly is the key, not -1 to a decimal.
+    if let ([g], [w]) = (got.numbers.as_slice(), want)
+        && (g - w).abs() <= SLACK * w.abs().max(1.0)
+    {
+        return None;
+    }
+    let coarsest = got.half_units.iter().copied().fold(0.0f64, f64::max);
+    // Two values a millionth apart never both lie within half a unit finer than this.
+    if coarsest < 0.25 * TOLD_APART {
+        return None;
+    }
+    let decimals = (-(2.0 * coarsest).log10()).round().max(0.0) as u32;
+    let zero_too = (0..want.len()).any(|i| {
+        let mut zeroed = want.to_vec();
+        zeroed[i] = 0.0;
+        apart(&zeroed, want) && same(got, &zeroed)
+    });
+    if zero_too {
+        return Some(decimals);
+    }
+    let mistake_too = mistaken.all().iter().any(|m| {
+        m.get(&got.name)
+            .and_then(|v| aligned(got, v).map(<[f64]>::to_vec))
+            .is_some_and(|v| apart(&v, want) && same(got, &v))
+    });
+    mistake_too.then_some(decimals)
+}
+
 /// Checks what `student` printed against the key of `assignment`; `own` is the scene the
 /// work typed (read from its code: the same as `assignment` unless the class was given
 /// one).
@@ -363,9 +474,15 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
     let mut first_wrong = None;
     // The steps that are not the key's, in order: what a later value may be right given.
     let mut wrong_so_far: Vec<&PrintedValue> = Vec::new();
+    let mut mistaken = Mistaken::new(assignment);
     for p in &student.values {
         let Some(k) = key.get(&p.name) else { continue };
-        let verdict = if same(p, k) || same_point(p, k) {
+        let verdict = if same(p, k) {
+            match untold(p, k, &mut mistaken) {
+                Some(decimals) => Verdict::TooFewDigits(decimals),
+                None => Verdict::Right,
+            }
+        } else if same_point(p, k) {
             Verdict::Right
         } else if let Some(w) = right_given(assignment, &given, &wrong_so_far, p) {
             Verdict::RightGiven(w)
@@ -374,8 +491,11 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
         } else {
             Verdict::Wrong
         };
-        // A rounded value is carried too: what follows from it is right given it.
-        if verdict != Verdict::Right {
+        // A rounded value is carried too: what follows from it is right given it. A name
+        // printed again is carried as last printed (what the cells after it use): each
+        // name once, so the check stays linear in the printings.
+        if !matches!(verdict, Verdict::Right | Verdict::TooFewDigits(_)) {
+            wrong_so_far.retain(|w| w.name != p.name);
             wrong_so_far.push(p);
         }
         if verdict == Verdict::Wrong && first_wrong.is_none() {
@@ -411,7 +531,7 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
         unreadable,
         missing,
         not_printed,
-        stale: student.stale,
+        stale: student.stale.clone(),
         after_error: student.after_error.clone(),
     }
 }

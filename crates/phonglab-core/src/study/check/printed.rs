@@ -44,12 +44,27 @@ pub struct Printed {
     pub missing: Vec<String>,
     /// A notebook's outputs not from one run in order: the first two code cells whose
     /// execution counts go back (the earlier cell's, then the later cell's: `[5]` above
-    /// `[3]`), a cell run again after those below it. Never right.
-    pub stale: Option<(i64, i64)>,
+    /// `[3]`), a cell run again after those below it; or a count no run gives. Never right.
+    pub stale: Option<Stale>,
     /// The values a notebook's cells printed after a cell's error output: Run All stops
     /// at an error, so they are from an earlier run, and are never checked (named).
     pub after_error: Vec<String>,
 }
+
+/// Why a notebook's outputs are not one run's, in order.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Stale {
+    /// Two code cells whose execution counts go back or repeat: the earlier cell's, then
+    /// the later cell's (`[5]` above `[3]`).
+    Back(i64, i64),
+    /// An execution count that is not a small non-negative integer (`"100"`, `1.5`,
+    /// `-1`, past 2^64), as the notebook's JSON writes it (cut short): no run numbers a
+    /// cell so, so nothing says the outputs are in order.
+    NotACount(String),
+}
+
+/// The largest execution count taken as a run's (a kernel numbers its runs 1, 2, 3...).
+pub const MAX_EXECUTION_COUNT: u64 = u32::MAX as u64;
 
 impl Printed {
     /// The value printed last under `name`.
@@ -67,14 +82,15 @@ pub enum OutputsError {
     /// Saved without its outputs: it has to be run first.
     #[error("{0}")]
     NoOutputs(String),
-    /// It prints more values than [`MAX_VALUES`]: refused whole, never checked in part.
+    /// It prints more numbers than [`MAX_VALUES`]: refused whole, never checked in part.
     #[error("{0}")]
     TooMany(String),
 }
 
-/// The most values read from one piece of work (a worksheet prints about twenty; eight
-/// lights, two sides, some hundreds).
-pub const MAX_VALUES: usize = 4096;
+/// The most numbers read from one piece of work, all its printings together (a worksheet
+/// prints about twenty values of four; eight lights, two sides, some hundreds of values):
+/// numbers, not printings, so a thousand-number array counts a thousand.
+pub const MAX_VALUES: usize = 16384;
 /// The most numbers one value holds (a matrix is 16).
 pub const MAX_NUMBERS: usize = 1024;
 /// The most errors kept (a run stops at its first; a script's text may hold a few).
@@ -83,23 +99,21 @@ pub const MAX_ERRORS: usize = 64;
 pub const MAX_VALUE_LINES: usize = MAX_NUMBERS + 1;
 
 /// The values printed in `text`, as [`read_printed_text`]; a text printing more than
-/// [`MAX_VALUES`] values gives none, its refusal in `errors` (nothing is checked in part).
+/// [`MAX_VALUES`] numbers gives none, its refusal in `errors` (nothing is checked in part).
 pub fn printed_text(text: &str) -> Printed {
     read_printed_text(text).unwrap_or_else(|e| Printed { errors: vec![e.to_string()], ..Printed::default() })
 }
 
 /// The values printed in `text`, a script's standard output (or a notebook's outputs, one
-/// after the other); refused when it prints more than [`MAX_VALUES`] values (junk printed
+/// after the other); refused when it prints more than [`MAX_VALUES`] numbers (junk printed
 /// first must not push the work past a cap and out of the check). Linear in the text: a
 /// value's continuation lines are joined at most [`MAX_VALUE_LINES`] and its brackets
 /// counted as they come.
 pub fn read_printed_text(text: &str) -> Result<Printed, OutputsError> {
     let mut out = Printed::default();
     let mut lines = text.lines().peekable();
+    let mut read = 0usize;
     while let Some(line) = lines.next() {
-        if out.values.len() >= MAX_VALUES {
-            return Err(OutputsError::TooMany(crate::t!("check-too-many-values", count = MAX_VALUES)));
-        }
         if let Some(error) = error_line(line) {
             if out.errors.len() < MAX_ERRORS {
                 out.errors.push(error);
@@ -128,7 +142,13 @@ pub fn read_printed_text(text: &str) -> Result<Printed, OutputsError> {
             joined += 1;
         }
         match numbers(name, &value).filter(|_| open <= 0) {
-            Some(v) => out.values.push(v),
+            Some(v) => {
+                read += v.numbers.len();
+                if read > MAX_VALUES {
+                    return Err(OutputsError::TooMany(crate::t!("check-too-many-values", count = MAX_VALUES)));
+                }
+                out.values.push(v);
+            }
             None if !out.unread.iter().any(|n| n == name) && out.unread.len() < MAX_ERRORS => {
                 out.unread.push(name.to_string());
             }
@@ -154,11 +174,18 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
     // The cell errors (any `ename`: `KeyboardInterrupt`, `Exception` too), in order.
     let mut errors: Vec<String> = Vec::new();
     let mut counts: Vec<i64> = Vec::new();
+    let mut not_a_count: Option<String> = None;
     for cell in cells.iter().filter(|c| c["cell_type"] == "code") {
         let source = joined(&cell["source"]);
         code.push_str(&source);
         code.push('\n');
-        counts.extend(cell["execution_count"].as_i64());
+        match execution_count(&cell["execution_count"]) {
+            Ok(Some(n)) => counts.push(n),
+            Ok(None) => {}
+            Err(shown) => {
+                not_a_count.get_or_insert(shown);
+            }
+        }
         for output in cell["outputs"].as_array().map(Vec::as_slice).unwrap_or_default() {
             any = true;
             // The self-check's table echoes the formulas and both values of every step
@@ -183,13 +210,29 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
     p.errors.extend(errors);
     p.errors.truncate(MAX_ERRORS);
     let mut after_error: Vec<String> = Vec::new();
+    let mut named = std::collections::HashSet::new();
     for v in read_printed_text(&after)?.values {
-        if !after_error.contains(&v.name) {
+        if named.insert(v.name.clone()) {
             after_error.push(v.name);
         }
     }
-    let stale = counts.windows(2).find(|w| w[1] <= w[0]).map(|w| (w[0], w[1]));
+    let back = counts.windows(2).find(|w| w[1] <= w[0]).map(|w| Stale::Back(w[0], w[1]));
+    let stale = not_a_count.map(Stale::NotACount).or(back);
     Ok(Printed { code, stale, after_error, ..p })
+}
+
+/// A code cell's execution count: `None` where it has none (`null`, or absent: a
+/// notebook written by a program), the count where it is a small non-negative integer,
+/// else the JSON as written, cut to 24 characters (a string, a fraction, a negative, a
+/// number past 2^64).
+fn execution_count(count: &serde_json::Value) -> Result<Option<i64>, String> {
+    if count.is_null() {
+        return Ok(None);
+    }
+    match count.as_u64().filter(|n| *n <= MAX_EXECUTION_COUNT) {
+        Some(n) => Ok(Some(n as i64)),
+        None => Err(count.to_string().chars().take(24).collect()),
+    }
 }
 
 /// A cell's error output as one line, `ename: evalue` (the value's first line), whatever

@@ -19,11 +19,16 @@ pub fn input_names(c: &Check) -> String {
 }
 
 /// The steps printed more than once with different numbers (each printing is checked).
+/// One pass: a printing differs from some earlier one under its name where that name's
+/// earlier printings already differ among themselves, or it differs from the first.
 pub fn printed_again(c: &Check) -> Vec<String> {
+    let mut seen: std::collections::HashMap<&str, (&[f64], bool)> = std::collections::HashMap::new();
     let mut names: Vec<String> = Vec::new();
-    for (k, s) in c.steps.iter().enumerate() {
-        let again = c.steps[..k].iter().any(|old| old.name == s.name && old.student != s.student);
-        if again && !names.contains(&s.name) {
+    for s in &c.steps {
+        let (first, differ) = seen.entry(s.name.as_str()).or_insert((s.student.as_slice(), false));
+        let again = *differ || *first != s.student.as_slice();
+        if again && !*differ {
+            *differ = true;
             names.push(s.name.clone());
         }
     }
