@@ -322,7 +322,11 @@ import-limit-total = brings the names assigned so far past what phonglab reads: 
 bytes-described = { $count ->
         [one] { $bytes } byte
        *[other] { $bytes } bytes
-    } ({ $mib } MiB)
+    } ({ $scaled })
+bytes-counted = { $count ->
+        [one] { $bytes } byte
+       *[other] { $bytes } bytes
+    }
 obj-index-not-number = line { $line }: { $what } index { $index } is not a number
 obj-index-out-of-range = line { $line }: { $what } index { $index } is out of range (there are { $count })
 obj-what-vertex = vertex

@@ -324,7 +324,12 @@ bytes-described = { $count ->
         [0] { $bytes } bytes
         [one] { $bytes } byte
        *[other] { $bytes } bytes
-    } ({ $mib } MiB)
+    } ({ $scaled })
+bytes-counted = { $count ->
+        [0] { $bytes } bytes
+        [one] { $bytes } byte
+       *[other] { $bytes } bytes
+    }
 obj-index-not-number = linha { $line }: o índice de { $what } { $index } não é um número
 obj-index-out-of-range = linha { $line }: o índice de { $what } { $index } está fora do intervalo (há { $count })
 obj-what-vertex = vértice

@@ -322,7 +322,11 @@ import-limit-total = leva os nomes atribuídos até aqui além do que o phonglab
 bytes-described = { $count ->
         [one] { $bytes } byte
        *[other] { $bytes } bytes
-    } ({ $mib } MiB)
+    } ({ $scaled })
+bytes-counted = { $count ->
+        [one] { $bytes } byte
+       *[other] { $bytes } bytes
+    }
 obj-index-not-number = linha { $line }: o índice de { $what } { $index } não é um número
 obj-index-out-of-range = linha { $line }: o índice de { $what } { $index } está fora do intervalo (há { $count })
 obj-what-vertex = vértice
