@@ -474,7 +474,7 @@ budget-what-render = a { $width } x { $height } picture of { $count ->
        *[other] { $triangles } triangles
     }
 budget-what-window = the window at { $width } x { $height } pixels
-budget-what-diagnose = comparing a { $size } x { $size } picture with { $count } drawings, one at a time
+budget-what-diagnose = comparing a { $size } x { $size } picture with { $count } drawings, one at a time,
 budget-what-check = checking { $count ->
     [one] one submission of { $largest }
    *[other] { $count } submissions, the largest { $largest }

@@ -483,7 +483,7 @@ budget-what-render = uma imagem de { $width } x { $height } com { $count ->
        *[other] { $triangles } triângulos
     }
 budget-what-window = a janela a { $width } x { $height } pixels
-budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez
+budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez,
 budget-what-check = verificar { $count ->
     [0] { $count } trabalhos
     [one] um trabalho de { $largest }

@@ -477,7 +477,7 @@ budget-what-render = uma imagem de { $width } x { $height } com { $count ->
        *[other] { $triangles } triângulos
     }
 budget-what-window = a janela a { $width } x { $height } píxeis
-budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez
+budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez,
 budget-what-check = verificar { $count ->
     [one] um trabalho de { $largest }
    *[other] { $count } trabalhos, o maior com { $largest }
