@@ -257,6 +257,9 @@ fn causes(c: &Check) -> String {
     if !c.inputs_differ.is_empty() {
         said.push(t!("check-inputs-differ", names = input_names(c)));
     }
+    if c.other_scene() {
+        said.push(t!("check-other-scene", count = c.inputs_differ.len()));
+    }
     if c.causes.is_empty() && !c.right() && said.is_empty() {
         return t!("check-report-unexplained");
     }

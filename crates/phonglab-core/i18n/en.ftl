@@ -920,6 +920,7 @@ python-wrong-shape = { $name }: an array of shape { $shape }, where (N, 3) is ex
 nb-self-check = Self-check: with the Python package phonglab installed (it is not on PyPI yet: install the wheel file, `pip install phonglab-*.whl`, which phonglab's `scripts/wheel` builds or your teacher hands out), uncomment the cell below and run it after the others. It compares each value this notebook computed with the key, step by step, and names the first wrong step and its likely cause. Nothing here depends on it.
 check-rules = rules assumed: { $rules }
 check-inputs-differ = your typed inputs differ from the assignment's: { $names }
+check-other-scene = { $count } of your typed inputs differ from the assignment's: is this the right scene (--scene)? No cause is named for work typed for another scene
 check-step = { $step }: yours { $student }, the key's { $key }: { $verdict }
 check-first-wrong = first wrong step: { $step } (yours { $student }, the key's { $key })
 check-all-right = all right: every step printed is the key's

@@ -927,6 +927,7 @@ python-wrong-shape = { $name }: um array de formato { $shape }, quando se espera
 nb-self-check = Autoverificação: com o pacote Python phonglab instalado (ainda não está no PyPI: instale o arquivo wheel, `pip install phonglab-*.whl`, que o `scripts/wheel` do phonglab gera ou que o professor distribui), descomente a célula abaixo e execute-a depois das outras. Ela compara cada valor que este notebook calculou com o gabarito, passo a passo, e aponta o primeiro passo errado e a causa provável. Nada mais neste notebook depende dela.
 check-rules = regras assumidas: { $rules }
 check-inputs-differ = os dados que você digitou diferem dos do enunciado: { $names }
+check-other-scene = { $count } dos dados que você digitou diferem dos do enunciado: esta é a cena certa (--scene)? Nenhuma causa é apontada para um trabalho digitado para outra cena
 check-step = { $step }: o seu { $student }, o do gabarito { $key }: { $verdict }
 check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o do gabarito { $key })
 check-all-right = tudo certo: todos os passos impressos são os do gabarito

@@ -920,6 +920,7 @@ python-wrong-shape = { $name }: uma matriz de forma { $shape }, quando se espera
 nb-self-check = Autoverificação: com o pacote Python phonglab instalado (ainda não está no PyPI: instale o ficheiro wheel, `pip install phonglab-*.whl`, que o `scripts/wheel` do phonglab constrói ou que o professor distribui), retire o comentário da célula abaixo e execute-a depois das outras. Compara cada valor que este caderno calculou com a solução, passo a passo, e indica o primeiro passo errado e a causa provável. Nada mais neste caderno depende dela.
 check-rules = regras assumidas: { $rules }
 check-inputs-differ = os dados que escreveu diferem dos do enunciado: { $names }
+check-other-scene = { $count } dos dados que escreveu diferem dos do enunciado: é esta a cena certa (--scene)? Não se nomeia nenhuma causa para um trabalho escrito para outra cena
 check-step = { $step }: o seu { $student }, o da solução { $key }: { $verdict }
 check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o da solução { $key })
 check-all-right = tudo certo: todos os passos impressos são os da solução
