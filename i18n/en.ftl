@@ -464,6 +464,7 @@ bench-coarse-made = { $object }: the coarse copy has { $triangles } of { $all } 
 import-written = scene written: { $path } ({ $lights })
 budget-over = { $what } needs about { $needed }, more than the memory budget of { $budget } ({ $from }); --memory-budget SIZE raises it: this run needs --memory-budget { $suggest } or more
 budget-from-option = as --memory-budget asks
+budget-from-option-bare = as --memory-budget { $number } asks: a size without a unit counts bytes; { $number } MiB is --memory-budget { $number }M
 budget-from-system = half of the memory available
 budget-from-limit = half of the address space left under this process's limit, ulimit -v
 budget-over-limit = --memory-budget { $budget } is more than this process may still take under its limit, ulimit -v ({ $room } left): a run past it would stop half-way. Lower --memory-budget, or raise the limit (ulimit -v)

@@ -472,6 +472,7 @@ bench-coarse-made = { $object }: a cópia grosseira tem { $triangles } dos { $al
 import-written = cena escrita: { $path } ({ $lights })
 budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçamento de memória de { $budget } ({ $from }); --memory-budget TAMANHO o aumenta: esta execução precisa de --memory-budget { $suggest } ou mais
 budget-from-option = como pede --memory-budget
+budget-from-option-bare = como pede --memory-budget { $number }: um tamanho sem unidade conta bytes; { $number } MiB é --memory-budget { $number }M
 budget-from-system = metade da memória disponível
 budget-from-limit = metade do espaço de endereçamento que resta abaixo do limite deste processo, ulimit -v
 budget-over-limit = --memory-budget { $budget } é mais do que este processo ainda pode ocupar sob o seu limite, ulimit -v (restam { $room }): uma execução que o ultrapasse pararia no meio. Diminua --memory-budget ou aumente o limite (ulimit -v)
