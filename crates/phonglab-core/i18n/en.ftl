@@ -661,6 +661,7 @@ diagnose-normalize-off = GL_NORMALIZE left off under a modelview that scales: th
 diagnose-viewer-swapped = The local and the infinite viewer swapped (GL_LIGHT_MODEL_LOCAL_VIEWER the other way)
 diagnose-flipped-normals = The normals point inwards (flipped)
 diagnose-two-sided-off = Two-sided lighting off: the back faces are lit with the front's normals
+diagnose-two-sided-on = Two-sided lighting on where the scene has it off (GL_LIGHT_MODEL_TWO_SIDE true): the back faces are lit with their own normals and the back material, not with the front's
 diagnose-attenuation-left-out = The attenuation left out
 diagnose-spot-left-out = The spotlight's cone left out (cutoff 180)
 # diagnose: picture mistakes

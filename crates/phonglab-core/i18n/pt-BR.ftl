@@ -666,6 +666,7 @@ diagnose-normalize-off = GL_NORMALIZE deixado desligado com uma modelview que es
 diagnose-viewer-swapped = O observador local e o observador no infinito trocados (GL_LIGHT_MODEL_LOCAL_VIEWER ao contrário)
 diagnose-flipped-normals = As normais apontam para dentro (invertidas)
 diagnose-two-sided-off = A iluminação das duas faces desligada: as faces de trás são iluminadas com as normais da frente
+diagnose-two-sided-on = A iluminação das duas faces ligada onde a cena a tem desligada (GL_LIGHT_MODEL_TWO_SIDE verdadeiro): as faces de trás são iluminadas com as próprias normais e o material de trás, não com os da frente
 diagnose-attenuation-left-out = A atenuação esquecida
 diagnose-spot-left-out = O cone do spot esquecido (corte em 180)
 # diagnose: picture mistakes
