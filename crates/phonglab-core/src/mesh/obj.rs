@@ -68,11 +68,10 @@ pub fn describe_bytes(n: u64) -> String {
     const MIB: u64 = 1 << 20;
     let count = i64::try_from(n).unwrap_or(i64::MAX);
     let bytes = crate::locale::grouped(n);
-    let (unit, name) = match n {
-        ..KIB => return t!("bytes-counted", count = count, bytes = bytes),
-        ..MIB => (KIB, "KiB"),
-        _ => (MIB, "MiB"),
-    };
+    if n < KIB {
+        return t!("bytes-counted", count = count, bytes = bytes);
+    }
+    let (unit, name) = if n < MIB { (KIB, "KiB") } else { (MIB, "MiB") };
     let scaled = format!("{:.1}", n as f64 / unit as f64);
     let scaled = format!("{} {name}", crate::locale::decimal(&scaled));
     t!("bytes-described", count = count, bytes = bytes, scaled = scaled)
