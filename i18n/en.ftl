@@ -464,6 +464,7 @@ bench-coarse-made = { $object }: the coarse copy has { $triangles } of { $all } 
 import-written = scene written: { $path } ({ $lights })
 budget-over = { $what } needs about { $needed }, more than the memory budget of { $budget } ({ $from }); --memory-budget SIZE raises it: this run needs --memory-budget { $suggest } or more
 budget-from-option = as --memory-budget asks
+budget-from-option-bare = as --memory-budget { $number } asks: a size without a unit counts bytes; { $number } MiB is --memory-budget { $number }M
 budget-from-system = half of the memory available
 budget-from-limit = half of the address space left under this process's limit, ulimit -v
 budget-over-limit = --memory-budget { $budget } is more than this process may still take under its limit, ulimit -v ({ $room } left): a run past it would stop half-way. Lower --memory-budget, or raise the limit (ulimit -v)
@@ -474,7 +475,7 @@ budget-what-render = a { $width } x { $height } picture of { $count ->
        *[other] { $triangles } triangles
     }
 budget-what-window = the window at { $width } x { $height } pixels
-budget-what-diagnose = comparing a { $size } x { $size } picture with { $count } drawings, one at a time
+budget-what-diagnose = comparing a { $size } x { $size } picture with { $count } drawings, one at a time,
 budget-what-check = checking { $count ->
     [one] one submission of { $largest }
    *[other] { $count } submissions, the largest { $largest }
@@ -1028,6 +1029,12 @@ work-output-other-kind = { $path } is already there and is phonglab's { $found }
 work-output-submission = { $path } is inside the checked folder and named like a student's work (.ipynb or .py): the next check would read it as a submission; name it { $suggested }, for example, or write it outside the folder
 work-output-kind-report = class report (check --report)
 work-output-kind-marks = marks (check --csv)
+marks-column-file = file
+marks-column-verdict = verdict
+marks-column-first-wrong = first_wrong
+marks-column-causes = causes
+marks-column-cause-ids = cause_ids
+marks-column-verdict-id = verdict_id
 work-output-kind-chart = chart of the causes (check --report)
 work-output-kind-difference = difference image (diagnose --diff)
 check-chart-title = Causes in the class ({ $count } submissions)

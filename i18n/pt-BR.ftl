@@ -472,6 +472,7 @@ bench-coarse-made = { $object }: a cópia grosseira tem { $triangles } dos { $al
 import-written = cena escrita: { $path } ({ $lights })
 budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçamento de memória de { $budget } ({ $from }); --memory-budget TAMANHO o aumenta: esta execução precisa de --memory-budget { $suggest } ou mais
 budget-from-option = como pede --memory-budget
+budget-from-option-bare = como pede --memory-budget { $number }: um tamanho sem unidade conta bytes; { $number } MiB é --memory-budget { $number }M
 budget-from-system = metade da memória disponível
 budget-from-limit = metade do espaço de endereçamento que resta abaixo do limite deste processo, ulimit -v
 budget-over-limit = --memory-budget { $budget } é mais do que este processo ainda pode ocupar sob o seu limite, ulimit -v (restam { $room }): uma execução que o ultrapasse pararia no meio. Diminua --memory-budget ou aumente o limite (ulimit -v)
@@ -483,7 +484,7 @@ budget-what-render = uma imagem de { $width } x { $height } com { $count ->
        *[other] { $triangles } triângulos
     }
 budget-what-window = a janela a { $width } x { $height } pixels
-budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez
+budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez,
 budget-what-check = verificar { $count ->
     [0] { $count } trabalhos
     [one] um trabalho de { $largest }
@@ -1047,6 +1048,12 @@ work-output-other-kind = { $path } já existe e é um resultado do phonglab, mas
 work-output-submission = { $path } está dentro da pasta verificada e tem nome de trabalho de aluno (.ipynb ou .py): a próxima verificação o leria como um trabalho; chame-o, por exemplo, de { $suggested }, ou grave-o fora da pasta
 work-output-kind-report = o relatório da turma (check --report)
 work-output-kind-marks = as notas (check --csv)
+marks-column-file = arquivo
+marks-column-verdict = veredito
+marks-column-first-wrong = primeiro passo errado
+marks-column-causes = causas
+marks-column-cause-ids = ids das causas
+marks-column-verdict-id = id do veredito
 work-output-kind-chart = o gráfico das causas (check --report)
 work-output-kind-difference = a imagem das diferenças (diagnose --diff)
 check-chart-title = Causas na turma ({ $count } trabalhos)

@@ -467,6 +467,7 @@ bench-coarse-made = { $object }: a cópia grosseira tem { $triangles } dos { $al
 import-written = cena escrita: { $path } ({ $lights })
 budget-over = { $what } precisa de cerca de { $needed }, mais do que o orçamento de memória de { $budget } ({ $from }); --memory-budget TAMANHO aumenta-o: esta execução precisa de --memory-budget { $suggest } ou mais
 budget-from-option = como pede --memory-budget
+budget-from-option-bare = como pede --memory-budget { $number }: um tamanho sem unidade conta bytes; { $number } MiB é --memory-budget { $number }M
 budget-from-system = metade da memória disponível
 budget-from-limit = metade do espaço de endereçamento que resta sob o limite deste processo, ulimit -v
 budget-over-limit = --memory-budget { $budget } é mais do que este processo ainda pode ocupar sob o seu limite, ulimit -v (restam { $room }): uma execução que o ultrapasse pararia a meio. Baixe --memory-budget, ou aumente o limite (ulimit -v)
@@ -477,7 +478,7 @@ budget-what-render = uma imagem de { $width } x { $height } com { $count ->
        *[other] { $triangles } triângulos
     }
 budget-what-window = a janela a { $width } x { $height } píxeis
-budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez
+budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez,
 budget-what-check = verificar { $count ->
     [one] um trabalho de { $largest }
    *[other] { $count } trabalhos, o maior com { $largest }
@@ -1031,6 +1032,12 @@ work-output-other-kind = { $path } já existe e é um resultado do phonglab, mas
 work-output-submission = { $path } está dentro da pasta verificada e tem nome de trabalho de aluno (.ipynb ou .py): a próxima verificação lê-lo-ia como um trabalho; dê-lhe, por exemplo, o nome { $suggested }, ou escreva-o fora da pasta
 work-output-kind-report = o relatório da turma (check --report)
 work-output-kind-marks = as notas (check --csv)
+marks-column-file = ficheiro
+marks-column-verdict = veredicto
+marks-column-first-wrong = primeiro passo errado
+marks-column-causes = causas
+marks-column-cause-ids = ids das causas
+marks-column-verdict-id = id do veredicto
 work-output-kind-chart = o gráfico das causas (check --report)
 work-output-kind-difference = a imagem das diferenças (diagnose --diff)
 check-chart-title = Causas na turma ({ $count } trabalhos)

@@ -19,7 +19,7 @@ use phonglab_core::study::check::said::{input_names, printed_again};
 use phonglab_core::study::check::{Check, Overall, check};
 
 use crate::io::student_code::read_notebook;
-use crate::io::work_output::{Kind, marks_header, marks_separator};
+use crate::io::work_output::{Kind, MARKS_BOM, marks_header, marks_separator};
 
 /// Writes the class's output `path` of this `kind` by [`crate::io::work_output`]'s rule
 /// (`dir`: the folder checked).
@@ -258,6 +258,9 @@ fn causes(c: &Check) -> String {
     if !c.inputs_differ.is_empty() {
         said.push(t!("check-inputs-differ", names = input_names(c)));
     }
+    if c.other_scene() {
+        said.push(t!("check-other-scene", count = c.inputs_differ.len()));
+    }
     if c.causes.is_empty() && !c.right() && said.is_empty() {
         return t!("check-report-unexplained");
     }
@@ -345,15 +348,15 @@ fn printed_twice_section(marked: &[Marked]) -> String {
     out
 }
 
-/// The marks as CSV, separated as the teacher's spreadsheet reads it ([`marks_separator`]):
-/// file, verdict in the teacher's words, first wrong step, the causes in the teacher's
+/// The marks as CSV, separated as the teacher's spreadsheet reads it ([`marks_separator`]),
+/// after a byte order mark ([`MARKS_BOM`]), its header in the teacher's language: file, verdict in the teacher's words, first wrong step, the causes in the teacher's
 /// words (for incomplete work, why: the steps not printed, the first named), their ids and
 /// the verdict's id for machines (`right`, `wrong`, `incomplete`, `unread`); text fields
 /// neutralised (never run as a formula).
 pub fn marks_csv(marked: &[Marked]) -> String {
     let f = escape::csv::text_field;
     let sep = marks_separator();
-    let mut out = format!("{}\n", marks_header(sep));
+    let mut out = format!("{MARKS_BOM}{}\n", marks_header(sep));
     for m in marked {
         let (id, first, why, ids) = match &m.check {
             Err(e) => ("unread", String::new(), e.clone(), String::new()),

@@ -64,8 +64,8 @@ pub struct Cli {
     /// The memory a command may take for what it is asked (a picture's size, a mesh):
     /// 512M, 8G, ...; default: half of what the system has available. Past it, a command
     /// says how much it needs and does not start.
-    #[arg(long, global = true, value_name = "SIZE", allow_hyphen_values = true, value_parser = crate::io::budget::parse_size)]
-    pub memory_budget: Option<u64>,
+    #[arg(long, global = true, value_name = "SIZE", allow_hyphen_values = true, value_parser = crate::io::budget::parse_asked)]
+    pub memory_budget: Option<crate::io::budget::Asked>,
 }
 
 fn parse_lang(s: &str) -> Result<crate::locale::Lang, String> {

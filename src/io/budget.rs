@@ -23,7 +23,8 @@ use crate::t;
 static BUDGET: AtomicU64 = AtomicU64::new(0);
 
 /// Where the budget came from, for the message: 0 the memory available, 1
-/// `--memory-budget`, 2 the address-space limit (`ulimit -v`).
+/// `--memory-budget`, 2 the address-space limit (`ulimit -v`), 3 `--memory-budget` given
+/// as a number without a unit (bytes: `90` meant for 90 MiB is 90 bytes).
 static FROM: AtomicU64 = AtomicU64::new(0);
 
 /// The process's own part, besides what a command allocates for what it is asked: the
@@ -42,14 +43,14 @@ const FALLBACK: u64 = 4 << 30;
 /// the core's OBJ reader. Refuses, in words, a budget larger than the address space the
 /// process's limit (`ulimit -v`) still leaves: past the limit an
 /// allocation aborts the process, so such a budget would let a run start that cannot end.
-pub fn set(asked: Option<u64>) -> Result<(), String> {
+pub fn set(asked: Option<Asked>) -> Result<(), String> {
     use crate::platform::os;
-    if let Some(asked) = asked
+    if let Some(Asked { bytes: asked, .. }) = asked
         && let Some(room) = over_the_limit(asked, os::address_space_limit(), os::address_space_in_use())
     {
         return Err(t!("budget-over-limit", budget = describe_bytes(asked), room = describe_bytes(room)));
     }
-    let (bytes, from) = asked.map_or_else(default_budget, |b| (b, 1));
+    let (bytes, from) = asked.map_or_else(default_budget, |a| (a.bytes, if a.bare { 3 } else { 1 }));
     BUDGET.store(bytes, Ordering::Relaxed);
     FROM.store(from, Ordering::Relaxed);
     phonglab_core::mesh::obj::set_memory_budget(bytes);
@@ -112,6 +113,7 @@ pub fn check(what: &str, needed: u64) -> Result<(), String> {
     }
     let from = match from {
         1 => t!("budget-from-option"),
+        3 => t!("budget-from-option-bare", number = budget.to_string()),
         2 => t!("budget-from-limit"),
         _ => t!("budget-from-system"),
     };
@@ -145,6 +147,21 @@ pub fn suggested_budget(needed: u64) -> String {
         return format!("{}.{}G", tenths / 10, tenths % 10);
     }
     format!("{}{letter}", needed.div_ceil(unit).max(1))
+}
+
+/// `--memory-budget` as typed: its bytes, and whether it was a number without a unit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Asked {
+    /// The bytes it stands for.
+    pub bytes: u64,
+    /// Typed without a unit (`90`): bytes, perhaps meant as MiB.
+    pub bare: bool,
+}
+
+/// Reads `--memory-budget` ([`parse_size`]), noting whether it had a unit.
+pub fn parse_asked(text: &str) -> Result<Asked, String> {
+    let bare = !text.contains(|c: char| c.is_ascii_alphabetic());
+    Ok(Asked { bytes: parse_size(text)?, bare })
 }
 
 /// Reads a size: a number of bytes with an optional unit, K, M, G or T (powers of 1024;
@@ -320,7 +337,7 @@ mod tests {
 
     #[test]
     fn over_the_budget_says_the_estimate_and_the_option() {
-        set(Some(1 << 30)).unwrap();
+        set(Some(Asked { bytes: 1 << 30, bare: false })).unwrap();
         assert!(check("a picture", 1 << 29).is_ok());
         let e = check("a picture of 32768 x 32768 pixels", 24 << 30).unwrap_err();
         assert!(e.contains("a picture of 32768 x 32768 pixels needs about 25 769 803 776 bytes"), "{e}");

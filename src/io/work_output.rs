@@ -38,14 +38,27 @@ pub enum Kind {
     Difference,
 }
 
-/// The marks' columns, their header's names (`check FOLDER --csv`): `verdict` in the
-/// teacher's words, `verdict_id` the same for machines (`right`, `wrong`, `incomplete`,
-/// `unread`), joined by the teacher's separator ([`marks_separator`]).
-pub const MARKS_COLUMNS: [&str; 6] = ["file", "verdict", "first_wrong", "causes", "cause_ids", "verdict_id"];
+/// The marks' columns, their header's names in the catalogue (`check FOLDER --csv`):
+/// `verdict` in the teacher's words, `verdict_id` the same for machines (`right`, `wrong`,
+/// `incomplete`, `unread`), joined by the teacher's separator ([`marks_separator`]). In
+/// English the names are the ids they always were (`file`, `verdict`, ...).
+pub const MARKS_COLUMNS: [&str; 6] = [
+    "marks-column-file",
+    "marks-column-verdict",
+    "marks-column-first-wrong",
+    "marks-column-causes",
+    "marks-column-cause-ids",
+    "marks-column-verdict-id",
+];
 
 /// The header of marks written before `verdict` was in the teacher's words (it held the
 /// id): still phonglab's own, replaced by a run again.
 const MARKS_HEADER_BEFORE: &str = "file,verdict,first_wrong,causes,cause_ids";
+
+/// The marks' first bytes: UTF-8's byte order mark. Excel in Portuguese reads a CSV
+/// without it in the system's code page ("não" garbled); Moodle's import and LibreOffice
+/// skip it.
+pub const MARKS_BOM: &str = "\u{feff}";
 
 /// The marks' separator in the language set: `,` in English, `;` in Portuguese, as a
 /// spreadsheet in that language reads a CSV opened with a double click (its decimal mark
@@ -57,9 +70,18 @@ pub fn marks_separator() -> char {
     }
 }
 
-/// The marks' header, its columns joined by `separator`.
+/// The marks' header in the language set, its columns joined by `separator`.
 pub fn marks_header(separator: char) -> String {
-    MARKS_COLUMNS.join(&separator.to_string())
+    marks_header_in(phonglab_core::locale::current().lang, separator)
+}
+
+/// The marks' header in `lang`, its columns joined by `separator` (each a CSV field).
+fn marks_header_in(lang: phonglab_core::locale::Lang, separator: char) -> String {
+    let names: Vec<String> = MARKS_COLUMNS
+        .iter()
+        .map(|id| phonglab_core::escape::csv::text_field(&crate::locale::tr_in(lang, id, &[])))
+        .collect();
+    names.join(&separator.to_string())
 }
 
 /// The most bytes read of a file at an output's name to know whether phonglab wrote it.
@@ -110,8 +132,13 @@ impl Kind {
                 first_line() == format!("# {}", phonglab_core::escape::markdown::text(&title))
             }),
             Kind::Marks => {
+                // Written with a byte order mark, or before there was one.
                 let line = first_line();
-                line == marks_header(',') || line == marks_header(';') || line == MARKS_HEADER_BEFORE
+                let line = line.strip_prefix(MARKS_BOM).unwrap_or(&line);
+                let any = phonglab_core::locale::Lang::ALL
+                    .iter()
+                    .any(|&lang| [',', ';'].iter().any(|&sep| line == marks_header_in(lang, sep)));
+                any || line == MARKS_HEADER_BEFORE
             }
             Kind::Chart | Kind::Difference => self.png_text().is_some_and(|text| png_says(head, text)),
         }
@@ -356,6 +383,15 @@ mod tests {
         assert!(Kind::Marks.is_own(format!("{}\na;certo;;;;right\n", marks_header(';')).as_bytes()));
         assert!(Kind::Marks.is_own(b"file,verdict,first_wrong,causes,cause_ids\na,right,,,\n"), "an earlier run's");
         assert!(!Kind::Marks.is_own(b"file,verdict\n"));
+        // Its own header after the byte order mark it writes, in each language.
+        assert!(Kind::Marks.is_own("\u{feff}file,verdict,first_wrong,causes,cause_ids,verdict_id\n".as_bytes()));
+        let pt = "\u{feff}ficheiro;veredicto;primeiro passo errado;causas;ids das causas;id do veredicto\r\n";
+        assert!(Kind::Marks.is_own(pt.as_bytes()), "{pt}");
+        assert!(
+            Kind::Marks
+                .is_own("arquivo;veredito;primeiro passo errado;causas;ids das causas;id do veredito\n".as_bytes())
+        );
+        assert!(!Kind::Marks.is_own("\u{feff}ficheiro;veredicto\n".as_bytes()));
         for lang in phonglab_core::locale::Lang::ALL {
             let title = crate::locale::tr_in(lang, "check-report-title", &[]);
             assert!(Kind::Report.is_own(format!("# {title}\n\nrest").as_bytes()), "{lang:?}");
@@ -366,7 +402,9 @@ mod tests {
             phonglab_core::locale::with_locale(phonglab_core::locale::Locale::of(lang), || {
                 let report = crate::cli::check_class::markdown(&[], &[], "r.png", None);
                 assert!(Kind::Report.is_own(report.as_bytes()), "{lang:?}: {report}");
-                assert!(Kind::Marks.is_own(crate::cli::check_class::marks_csv(&[]).as_bytes()));
+                let marks = crate::cli::check_class::marks_csv(&[]);
+                assert!(marks.starts_with(MARKS_BOM), "{lang:?}: {marks}");
+                assert!(Kind::Marks.is_own(marks.as_bytes()));
                 assert!(!Kind::Marks.is_own(report.as_bytes()));
                 assert!(!Kind::Report.is_own(marks_header(marks_separator()).as_bytes()));
             });

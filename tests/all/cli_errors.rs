@@ -262,6 +262,22 @@ fn a_negative_memory_budget_is_said_to_be_negative() {
     }
 }
 
+/// `--memory-budget 90` (no unit) is 90 bytes: the refusal says so and suggests the size
+/// with its unit, `90M` (it said "90 bytes (0.0 MiB) (as --memory-budget asks)").
+#[test]
+fn a_memory_budget_without_a_unit_is_suggested_back_with_one() {
+    for (lang, want) in
+        [("en", "without a unit counts bytes"), ("pt-PT", "sem unidade conta bytes"), ("pt-BR", "sem unidade")]
+    {
+        let (code, said) = refused(lang, &["render", "--output", "never-written.png", "--memory-budget", "90"]);
+        assert_eq!(code, 2, "{lang}: {said}");
+        assert!(said.contains(want) && said.contains("--memory-budget 90M"), "{lang}: {said}");
+    }
+    // With a unit, nothing is suggested: it meant what it says.
+    let (_, said) = refused("en", &["render", "--output", "never-written.png", "--memory-budget", "1K"]);
+    assert!(said.contains("(as --memory-budget asks)") && !said.contains("without a unit"), "{said}");
+}
+
 /// A number out of its range is refused with the range in words, whatever is wrong with
 /// it: negative (`--seed -1` was "no option -1"), past the type (`--count` with twenty
 /// digits), or not whole (`--variants 1e20`), in every language.

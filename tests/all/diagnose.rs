@@ -461,6 +461,12 @@ fn a_budget_too_small_is_told_all_the_run_needs_at_once() {
     let asked = err.split("needs --memory-budget ").nth(1).and_then(|r| r.split_whitespace().next()).expect("{err}");
     let o = phonglab(&[&args[..], &["--memory-budget", asked]].concat());
     assert_eq!(o.status.code(), Some(0), "{asked}: {}", String::from_utf8_lossy(&o.stderr));
+    // "um de cada vez" is set off by commas on both sides (it read "um de cada vez precisa").
+    for lang in ["pt-PT", "pt-BR"] {
+        let o = phonglab(&[&["--lang", lang], &args[2..], &["--memory-budget", "1M"]].concat());
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains("desenhos, um de cada vez, precisa de cerca de"), "{lang}: {err}");
+    }
 }
 
 /// The spot's cutoff given in radians: nothing of the light reaches the object and many

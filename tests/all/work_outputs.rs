@@ -77,8 +77,9 @@ fn picture(scene: &Path, out: &Path) {
 /// The files of the class as the marks list them, in order.
 fn listed(csv: &Path) -> Vec<String> {
     let text = std::fs::read_to_string(csv).unwrap();
-    // The teacher's separator: `;` in Portuguese, `,` in English, as the header says.
-    let sep = if text.starts_with("file;") { ';' } else { ',' };
+    // The teacher's separator: `;` in Portuguese, `,` in English, as the header (in the
+    // teacher's language, after a byte order mark) says.
+    let sep = if text.lines().next().unwrap_or_default().contains(';') { ';' } else { ',' };
     text.lines().skip(1).map(|l| l.split(sep).next().unwrap().to_string()).collect()
 }
 

@@ -272,9 +272,10 @@ fn judge(dir: &Path, size: usize, filter: Option<&str>) {
         let t = std::time::Instant::now();
         let d = diagnose(right, &image, size).expect("diagnosed");
         println!(
-            "{stem:44} | {:22} | {:.4} | {} ({:.0}s)",
+            "{stem:44} | {:22} | {:.4} | grid {:.2} | {} ({:.0}s)",
             verdict(&d),
             d.right.score,
+            d.grid,
             first(&d),
             t.elapsed().as_secs_f64()
         );

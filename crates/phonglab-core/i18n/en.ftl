@@ -322,7 +322,11 @@ import-limit-total = brings the names assigned so far past what phonglab reads: 
 bytes-described = { $count ->
         [one] { $bytes } byte
        *[other] { $bytes } bytes
-    } ({ $mib } MiB)
+    } ({ $scaled })
+bytes-counted = { $count ->
+        [one] { $bytes } byte
+       *[other] { $bytes } bytes
+    }
 obj-index-not-number = line { $line }: { $what } index { $index } is not a number
 obj-index-out-of-range = line { $line }: { $what } index { $index } is out of range (there are { $count })
 obj-what-vertex = vertex
@@ -657,6 +661,7 @@ diagnose-normalize-off = GL_NORMALIZE left off under a modelview that scales: th
 diagnose-viewer-swapped = The local and the infinite viewer swapped (GL_LIGHT_MODEL_LOCAL_VIEWER the other way)
 diagnose-flipped-normals = The normals point inwards (flipped)
 diagnose-two-sided-off = Two-sided lighting off: the back faces are lit with the front's normals
+diagnose-two-sided-on = Two-sided lighting on where the scene has it off (GL_LIGHT_MODEL_TWO_SIDE true): the back faces are lit with their own normals and the back material, not with the front's
 diagnose-attenuation-left-out = The attenuation left out
 diagnose-spot-left-out = The spotlight's cone left out (cutoff 180)
 # diagnose: picture mistakes
@@ -761,7 +766,8 @@ diagnose-footprint = This mistake changes the right picture by at most { $most }
 diagnose-footprint-group = { $count } from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } elsewhere
 diagnose-footprint-and = and
-diagnose-verdict-right-lossy = Right, as saved lossily (JPEG): the right picture explains { $score } of the object's pixels within { $levels } levels of a blend of their neighbours ({ $strict } within { $tolerance } of a neighbour), and its differences are noise, not a change of the picture.
+diagnose-verdict-right-lossy = Right, as saved with losses (JPEG) or resized: the right picture explains { $score } of the object's pixels within { $levels } levels of a blend of their neighbours ({ $strict } within { $tolerance } of a neighbour), and its differences are noise, not a change of the picture.
+diagnose-looks-jpeg = The picture looks saved as JPEG: its difference from the right picture jumps across the edges of 8 x 8 blocks ({ $ratio } times as much as inside them). A lossy saving changes every pixel a little and may hide the cause: save the picture as PNG straight from the program (glReadPixels) and diagnose that one.
 diagnose-verdict-right-within = Right within what a picture can tell: the right picture explains { $score } of the object's pixels (a pixel's shift and { $tolerance } levels allowed), but inside the object your picture differs from it by up to { $most } levels, { $pixels } pixels by more than { $rounding }. A mistake that changes the picture by no more than that (a shininess or a colour a little off) looks the same: this verdict cannot rule it out. The program's numbers can: check the values the notebook prints with phonglab check, or compare the program's glLight*/glMaterial* values with the scene's.
 diagnose-verdict-right = Right: the right picture explains { $score } of the object's pixels.
 diagnose-verdict-wrong = Wrong. The cause: { $cause } ({ $id }); the picture with that mistake explains { $score } of the object's pixels, the right picture { $right }.
@@ -916,6 +922,7 @@ python-wrong-shape = { $name }: an array of shape { $shape }, where (N, 3) is ex
 nb-self-check = Self-check: with the Python package phonglab installed (it is not on PyPI yet: install the wheel file, `pip install phonglab-*.whl`, which phonglab's `scripts/wheel` builds or your teacher hands out), uncomment the cell below and run it after the others. It compares each value this notebook computed with the key, step by step, and names the first wrong step and its likely cause. Nothing here depends on it.
 check-rules = rules assumed: { $rules }
 check-inputs-differ = your typed inputs differ from the assignment's: { $names }
+check-other-scene = { $count } of your typed inputs differ from the assignment's: is this the right scene (--scene)? No cause is named for work typed for another scene
 check-step = { $step }: yours { $student }, the key's { $key }: { $verdict }
 check-first-wrong = first wrong step: { $step } (yours { $student }, the key's { $key })
 check-all-right = all right: every step printed is the key's

@@ -324,7 +324,12 @@ bytes-described = { $count ->
         [0] { $bytes } bytes
         [one] { $bytes } byte
        *[other] { $bytes } bytes
-    } ({ $mib } MiB)
+    } ({ $scaled })
+bytes-counted = { $count ->
+        [0] { $bytes } bytes
+        [one] { $bytes } byte
+       *[other] { $bytes } bytes
+    }
 obj-index-not-number = linha { $line }: o índice de { $what } { $index } não é um número
 obj-index-out-of-range = linha { $line }: o índice de { $what } { $index } está fora do intervalo (há { $count })
 obj-what-vertex = vértice
@@ -661,6 +666,7 @@ diagnose-normalize-off = GL_NORMALIZE deixado desligado com uma modelview que es
 diagnose-viewer-swapped = O observador local e o observador no infinito trocados (GL_LIGHT_MODEL_LOCAL_VIEWER ao contrário)
 diagnose-flipped-normals = As normais apontam para dentro (invertidas)
 diagnose-two-sided-off = A iluminação das duas faces desligada: as faces de trás são iluminadas com as normais da frente
+diagnose-two-sided-on = A iluminação das duas faces ligada onde a cena a tem desligada (GL_LIGHT_MODEL_TWO_SIDE verdadeiro): as faces de trás são iluminadas com as próprias normais e o material de trás, não com os da frente
 diagnose-attenuation-left-out = A atenuação esquecida
 diagnose-spot-left-out = O cone do spot esquecido (corte em 180)
 # diagnose: picture mistakes
@@ -765,7 +771,8 @@ diagnose-footprint = Esse erro muda a imagem certa em no máximo { $most } níve
 diagnose-footprint-group = { $count } de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } em outros lugares
 diagnose-footprint-and = e
-diagnose-verdict-right-lossy = Certa, do jeito que foi salva com perdas (JPEG): a imagem certa explica { $score } dos pixels do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e as diferenças são ruído, não uma mudança da imagem.
+diagnose-verdict-right-lossy = Certa, do jeito que foi salva com perdas (JPEG) ou redimensionada: a imagem certa explica { $score } dos pixels do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e as diferenças são ruído, não uma mudança da imagem.
+diagnose-looks-jpeg = A imagem parece ter sido salva como JPEG: a diferença dela para a imagem certa salta nas bordas de blocos de 8 x 8 ({ $ratio } vezes mais do que dentro deles). Salvar com perdas muda um pouco cada pixel e pode esconder a causa: salve a imagem como PNG direto do programa (glReadPixels) e diagnostique essa.
 diagnose-verdict-right-within = Certa, até onde uma imagem permite dizer: a imagem certa explica { $score } dos pixels do objeto (com um pixel de deslocamento e { $tolerance } níveis de tolerância), mas dentro do objeto a sua imagem difere dela em até { $most } níveis, { $pixels } pixels em mais de { $rounding }. Um erro que não mude a imagem mais do que isso (um brilho ou uma cor um pouco diferentes) tem a mesma aparência: este veredito não o descarta. Os números do programa descartam: verifique os valores que o notebook imprime com o phonglab check, ou compare os valores de glLight*/glMaterial* do programa com os da cena.
 diagnose-verdict-right = Certa: a imagem certa explica { $score } dos pixels do objeto.
 diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos pixels do objeto, a imagem certa { $right }.
@@ -922,6 +929,7 @@ python-wrong-shape = { $name }: um array de formato { $shape }, quando se espera
 nb-self-check = Autoverificação: com o pacote Python phonglab instalado (ainda não está no PyPI: instale o arquivo wheel, `pip install phonglab-*.whl`, que o `scripts/wheel` do phonglab gera ou que o professor distribui), descomente a célula abaixo e execute-a depois das outras. Ela compara cada valor que este notebook calculou com o gabarito, passo a passo, e aponta o primeiro passo errado e a causa provável. Nada mais neste notebook depende dela.
 check-rules = regras assumidas: { $rules }
 check-inputs-differ = os dados que você digitou diferem dos do enunciado: { $names }
+check-other-scene = { $count } dos dados que você digitou diferem dos do enunciado: esta é a cena certa (--scene)? Nenhuma causa é apontada para um trabalho digitado para outra cena
 check-step = { $step }: o seu { $student }, o do gabarito { $key }: { $verdict }
 check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o do gabarito { $key })
 check-all-right = tudo certo: todos os passos impressos são os do gabarito

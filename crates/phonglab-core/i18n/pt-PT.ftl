@@ -322,7 +322,11 @@ import-limit-total = leva os nomes atribuídos até aqui além do que o phonglab
 bytes-described = { $count ->
         [one] { $bytes } byte
        *[other] { $bytes } bytes
-    } ({ $mib } MiB)
+    } ({ $scaled })
+bytes-counted = { $count ->
+        [one] { $bytes } byte
+       *[other] { $bytes } bytes
+    }
 obj-index-not-number = linha { $line }: o índice de { $what } { $index } não é um número
 obj-index-out-of-range = linha { $line }: o índice de { $what } { $index } está fora do intervalo (há { $count })
 obj-what-vertex = vértice
@@ -657,6 +661,7 @@ diagnose-normalize-off = GL_NORMALIZE deixado desligado com uma modelview que es
 diagnose-viewer-swapped = O observador local e o observador no infinito trocados (GL_LIGHT_MODEL_LOCAL_VIEWER ao contrário)
 diagnose-flipped-normals = As normais apontam para dentro (invertidas)
 diagnose-two-sided-off = A iluminação das duas faces desligada: as faces de trás são iluminadas com as normais da frente
+diagnose-two-sided-on = A iluminação das duas faces ligada onde a cena a tem desligada (GL_LIGHT_MODEL_TWO_SIDE verdadeiro): as faces de trás são iluminadas com as suas próprias normais e o material de trás, não com os da frente
 diagnose-attenuation-left-out = A atenuação esquecida
 diagnose-spot-left-out = O cone do foco esquecido (corte a 180)
 # diagnose: picture mistakes
@@ -761,7 +766,8 @@ diagnose-footprint = Este erro altera a imagem certa em { $most } níveis, no m�
 diagnose-footprint-group = { $count } de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } noutros sítios
 diagnose-footprint-and = e
-diagnose-verdict-right-lossy = Certa, tal como foi guardada com perdas (JPEG): a imagem certa explica { $score } dos píxeis do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e as diferenças são ruído, não uma alteração da imagem.
+diagnose-verdict-right-lossy = Certa, tal como foi guardada com perdas (JPEG) ou redimensionada: a imagem certa explica { $score } dos píxeis do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e as diferenças são ruído, não uma alteração da imagem.
+diagnose-looks-jpeg = A imagem parece ter sido guardada como JPEG: a sua diferença para a imagem certa salta nas margens de blocos de 8 x 8 ({ $ratio } vezes mais do que dentro deles). Guardar com perdas muda um pouco cada píxel e pode esconder a causa: guarde a imagem como PNG diretamente do programa (glReadPixels) e diagnostique essa.
 diagnose-verdict-right-within = Certa, tanto quanto uma imagem permite dizer: a imagem certa explica { $score } dos píxeis do objeto (com um píxel de desvio e { $tolerance } níveis de tolerância), mas dentro do objeto a sua imagem difere dela até { $most } níveis, { $pixels } píxeis em mais de { $rounding }. Um erro que não altere a imagem mais do que isso (um brilho ou uma cor ligeiramente diferentes) tem o mesmo aspeto: este veredicto não o exclui. Os números do programa excluem-no: verifique os valores que o caderno imprime com o phonglab check, ou compare os valores de glLight*/glMaterial* do programa com os da cena.
 diagnose-verdict-right = Certa: a imagem certa explica { $score } dos píxeis do objeto.
 diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos píxeis do objeto, a imagem certa { $right }.
@@ -916,6 +922,7 @@ python-wrong-shape = { $name }: uma matriz de forma { $shape }, quando se espera
 nb-self-check = Autoverificação: com o pacote Python phonglab instalado (ainda não está no PyPI: instale o ficheiro wheel, `pip install phonglab-*.whl`, que o `scripts/wheel` do phonglab constrói ou que o professor distribui), retire o comentário da célula abaixo e execute-a depois das outras. Compara cada valor que este caderno calculou com a solução, passo a passo, e indica o primeiro passo errado e a causa provável. Nada mais neste caderno depende dela.
 check-rules = regras assumidas: { $rules }
 check-inputs-differ = os dados que escreveu diferem dos do enunciado: { $names }
+check-other-scene = { $count } dos dados que escreveu diferem dos do enunciado: é esta a cena certa (--scene)? Não se nomeia nenhuma causa para um trabalho escrito para outra cena
 check-step = { $step }: o seu { $student }, o da solução { $key }: { $verdict }
 check-first-wrong = primeiro passo errado: { $step } (o seu { $student }, o da solução { $key })
 check-all-right = tudo certo: todos os passos impressos são os da solução

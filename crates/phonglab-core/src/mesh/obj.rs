@@ -61,11 +61,20 @@ pub fn set_memory_budget(bytes: u64) {
     MEMORY_BUDGET.store(bytes, Ordering::Relaxed);
 }
 
-/// A file size in words: "536 870 913 bytes (512.0 MiB)".
+/// A size in words: "536 870 913 bytes (512.0 MiB)"; under 1 MiB in KiB, "11 675 bytes
+/// (11.4 KiB)" (it was "(0.0 MiB)"); under 1 KiB the bytes alone, "90 bytes".
 pub fn describe_bytes(n: u64) -> String {
-    let mib = format!("{:.1}", n as f64 / (1u64 << 20) as f64);
+    const KIB: u64 = 1 << 10;
+    const MIB: u64 = 1 << 20;
     let count = i64::try_from(n).unwrap_or(i64::MAX);
-    t!("bytes-described", count = count, bytes = crate::locale::grouped(n), mib = crate::locale::decimal(&mib))
+    let bytes = crate::locale::grouped(n);
+    if n < KIB {
+        return t!("bytes-counted", count = count, bytes = bytes);
+    }
+    let (unit, name) = if n < MIB { (KIB, "KiB") } else { (MIB, "MiB") };
+    let scaled = format!("{:.1}", n as f64 / unit as f64);
+    let scaled = format!("{} {name}", crate::locale::decimal(&scaled));
+    t!("bytes-described", count = count, bytes = bytes, scaled = scaled)
 }
 
 /// At most 40 characters of a word, for a message.
@@ -642,6 +651,15 @@ mod tests {
         assert!((r - 0.5).abs() < 1e-12 && (k - 0.5 / 3f64.sqrt()).abs() < 1e-12, "{r} {k}");
         let with_normals = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n";
         assert!(parse_obj_noted(with_normals).unwrap().1.is_empty(), "nothing to say");
+    }
+
+    #[test]
+    fn sizes_under_a_mib_are_said_in_kib_and_under_a_kib_in_bytes() {
+        // 11 675 bytes were "(0.0 MiB)".
+        assert_eq!(describe_bytes(11_675), "11 675 bytes (11.4 KiB)");
+        assert_eq!(describe_bytes(90), "90 bytes");
+        assert_eq!(describe_bytes(1), "1 byte");
+        assert_eq!(describe_bytes(1 << 20), "1 048 576 bytes (1.0 MiB)");
     }
 
     #[test]

@@ -235,6 +235,34 @@ fn a_cause_is_only_named_under_rules_where_it_is_a_mistake() {
     assert!(c.causes.iter().any(|k| k.info.id == "specular-without-gate"), "{:?}", c.causes);
 }
 
+/// Work typed for another scene than the one given (a wrong `--scene`: most typed inputs
+/// differ) is asked "is this the right scene?" once, and no cause is named under its first
+/// step (one was, found on a scene the work was not typed for).
+#[test]
+fn work_typed_for_another_scene_is_asked_whether_the_scene_is_right_and_given_no_cause() {
+    use phonglab_core::locale::{Lang, Locale, with_locale};
+    let assignment = phonglab_core::presets::worksheet(5);
+    let mut own = assignment.clone();
+    own.vertex.position += glam::DVec4::new(0.5, -0.25, 0.125, 0.0);
+    own.lights[0].position += glam::DVec4::new(1.0, 2.0, -1.0, 0.0);
+    own.material.diffuse = glam::DVec4::new(0.3, 0.6, 0.2, 1.0);
+    own.material.shininess += 7.0;
+    let printed = printed_text(&printed_of(&work(&own, None, None)));
+    let c = check(&assignment, &own, &printed);
+    assert!(c.inputs_differ.len() >= 4, "{:?}", c.inputs_differ);
+    assert!(c.other_scene() && c.causes.is_empty(), "{:?}", c.causes);
+    let words = with_locale(Locale::of(Lang::En), || phonglab_core::study::check::said::words(&c));
+    assert_eq!(words.matches("is this the right scene (--scene)?").count(), 1, "{words}");
+    assert!(!words.contains("no mistake in the catalogue"), "{words}");
+    let words = with_locale(Locale::of(Lang::PtBr), || phonglab_core::study::check::said::words(&c));
+    assert!(words.contains("esta é a cena certa (--scene)?"), "{words}");
+    // One input typed wrong is a slip, not another scene.
+    let mut slip = assignment.clone();
+    slip.material.shininess += 7.0;
+    let c = check(&assignment, &slip, &printed_text(&printed_of(&work(&slip, None, None))));
+    assert!(!c.other_scene(), "{:?}", c.inputs_differ);
+}
+
 /// The catalogue's formulas are code only: their words are in the user's language
 /// elsewhere, so no English comment is left in what a Portuguese student reads.
 #[test]

@@ -9,7 +9,7 @@ use phonglab_core::mesh::sphere::{glu_sphere, glu_sphere_inside};
 use phonglab_core::model::scene::{Light, LightPlacement, NormalMode, Scene};
 use phonglab_core::teach::diagnose::{
     At, CLEARLY, Drawing, FOOTPRINT_AT, MARKS_AT, MISTAKES, OUTLINE_AT, RIGHT_AT, Scope, Shape, Tried, Verdict,
-    diagnose, offered,
+    diagnose, listed, offered,
 };
 use phonglab_core::teach::picture_match::compare;
 use phonglab_core::{EvalOptions, Rules, ShadingMode};
@@ -60,6 +60,22 @@ fn cylinder_scene() -> Drawing {
     d.mesh = mesh;
     d.clip_from_object = projection() * d.scene.eye_from_object();
     d
+}
+
+/// Two-sided lighting turned on in a scene that has it off (the cylinder, open, seen from
+/// above: its inside shows its back faces) is that cause: it was "right within ...".
+#[test]
+fn two_sided_lighting_on_where_the_scene_has_it_off_is_a_named_cause() {
+    let mut right = cylinder_scene();
+    right.scene.light_model.two_sided = false;
+    let mut on = right.clone();
+    on.scene.light_model.two_sided = true;
+    let (_, rgba, _) = on.draw(SIZE).expect("drawn");
+    let found = diagnose(&right, &shifted_and_noised(&rgba, right.background8()), SIZE).expect("diagnosed");
+    assert_eq!(found.verdict, Verdict::Wrong, "{:?}", found.causes.first().map(Tried::label));
+    assert!(found.causes.iter().take(2).any(|t| t.id() == "two-sided-on"), "{:?}", listed(&found.causes));
+    // Not offered where the scene has it on already.
+    assert!(offered(&on, At::default()).iter().all(|&(i, _)| MISTAKES[i].id != "two-sided-on"));
 }
 
 /// The scene that shows mistake `id`: the cylinder for two-sided lighting; for
@@ -270,9 +286,16 @@ fn each_state_mistake_for_each_light_shifted_and_noised_is_named_first() {
 }
 
 /// The rows none of the scenes above offers, each made on a scene that has what it
-/// changes: tested by [`each_row_no_scene_above_offers_is_named_first`].
-const ELSEWHERE: [&str; 4] =
-    ["colour-material-ambient-and-diffuse", "material-front-only", "reflection-reversed", "rescale-for-normalize"];
+/// changes: tested by [`each_row_no_scene_above_offers_is_named_first`] and (two-sided
+/// lighting turned on, which no closed teapot shows) by
+/// [`two_sided_lighting_on_where_the_scene_has_it_off_is_a_named_cause`].
+const ELSEWHERE: [&str; 5] = [
+    "colour-material-ambient-and-diffuse",
+    "material-front-only",
+    "reflection-reversed",
+    "rescale-for-normalize",
+    "two-sided-on",
+];
 
 /// Colour material tracking the diffuse alone (of-set-color's, changed to `GL_DIFFUSE`),
 /// two-sided lighting (the open cylinder), R . V (the Phong demo's scene) and a scale that

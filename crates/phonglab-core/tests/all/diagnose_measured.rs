@@ -95,3 +95,80 @@ fn a_right_picture_blurred_is_right_as_saved_lossily_and_moved_half_a_pixel_is_n
     assert_ne!(d.verdict, Verdict::Wrong, "half a pixel: {}", said(&d));
     assert!(!matches!(d.shape, Some(Shape::Marks(_) | Shape::Region(_))), "half a pixel: {}", said(&d));
 }
+
+/// Mitchell–Netravali's cubic (B = C = 1/3): ImageMagick's default filter for a picture with
+/// an alpha channel (a PNG phonglab or a viewer saved), down and up alike.
+fn mitchell(x: f64) -> f64 {
+    let x = x.abs();
+    if x < 1.0 {
+        (7.0 * x.powi(3) - 12.0 * x.powi(2) + 16.0 / 3.0) / 6.0
+    } else if x < 2.0 {
+        (-7.0 / 3.0 * x.powi(3) + 12.0 * x.powi(2) - 20.0 * x + 32.0 / 3.0) / 6.0
+    } else {
+        0.0
+    }
+}
+
+/// The rows of `rgba` (`from` pixels wide, `rows` high) resampled to `to` pixels wide with
+/// [`mitchell`] (widened by the scale when shrinking, as ImageMagick does), edges clamped.
+fn resampled_rows(rgba: &[u8], from: usize, rows: usize, to: usize) -> Vec<u8> {
+    let scale = from as f64 / to as f64;
+    let support = 2.0 * scale.max(1.0);
+    let mut out = vec![255u8; to * rows * 4];
+    for x in 0..to {
+        let centre = (x as f64 + 0.5) * scale - 0.5;
+        let taps: Vec<(usize, f64)> = ((centre - support).floor() as i64..=(centre + support).ceil() as i64)
+            .map(|j| (j.clamp(0, from as i64 - 1) as usize, mitchell((j as f64 - centre) / scale.max(1.0))))
+            .collect();
+        let total: f64 = taps.iter().map(|t| t.1).sum();
+        for y in 0..rows {
+            for c in 0..3 {
+                let v: f64 = taps.iter().map(|&(j, w)| w * f64::from(rgba[(y * from + j) * 4 + c])).sum();
+                out[(y * to + x) * 4 + c] = (v / total).round().clamp(0.0, 255.0) as u8;
+            }
+        }
+    }
+    out
+}
+
+/// `rgba` (`w` x `h`) transposed (`h` x `w`).
+fn transposed(rgba: &[u8], w: usize, h: usize) -> Vec<u8> {
+    (0..w * h).flat_map(|p| rgba[((p % h) * w + p / h) * 4..][..4].to_vec()).collect()
+}
+
+/// `rgba` (`size` square) resized to `to` square, as `convert -resize` does with Mitchell's
+/// filter: the rows, then the columns.
+fn resized(rgba: &[u8], size: usize, to: usize) -> Vec<u8> {
+    let rows = resampled_rows(rgba, size, size, to);
+    transposed(&resampled_rows(&transposed(&rows, to, size), size, to, to), to, to)
+}
+
+#[test]
+fn a_right_picture_resized_down_and_up_is_right_and_marks_over_it_are_still_marks() {
+    // The spotlight scene's right PNG through `convert -resize 50% -resize 200%` (Mitchell's
+    // filter, for a picture with an alpha channel): was "thin marks of 114 pixels" on the
+    // lid's rim, where the blur lowers the rim's thin highlight below anything near it.
+    let size = 512;
+    let right = shipped("spotlight");
+    let (_, rgba, covered) = right.draw(size).expect("drawn");
+    let half_and_back = resized(&resized(&rgba, size, size / 2), size / 2, size);
+    let d = diagnose(&right, &half_and_back, size).expect("diagnosed");
+    assert_eq!(d.verdict, Verdict::Right, "{}", said(&d));
+    assert!(d.lossy.is_some(), "{}", said(&d));
+    // Said as resized too, not as a JPEG only.
+    let words = d.lossy_words().expect("words");
+    assert!(words.starts_with("Right, as saved with losses (JPEG) or resized:"), "{words}");
+    // A line of one pixel, 60 levels darker, drawn across it afterwards is still marks.
+    let mut lined = half_and_back.clone();
+    let object: Vec<usize> = (0..size * size).filter(|&p| covered[p]).collect();
+    let cx = object.iter().map(|p| p % size).sum::<usize>() / object.len();
+    let cy = object.iter().map(|p| p / size).sum::<usize>() / object.len();
+    for x in cx - 40..cx + 40 {
+        for c in 0..3 {
+            let at = (cy * size + x) * 4 + c;
+            lined[at] = lined[at].saturating_sub(60);
+        }
+    }
+    let d = diagnose(&right, &lined, size).expect("diagnosed");
+    assert!(matches!(d.shape, Some(Shape::Marks(_))), "{}", said(&d));
+}

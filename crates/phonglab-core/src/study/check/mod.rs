@@ -245,7 +245,20 @@ impl Unchecked {
     }
 }
 
+/// How many typed inputs must differ from the assignment's for the work to look typed for
+/// another scene (a wrong `--scene`): a student's slip changes one or two (a colour, a
+/// light's position); the worksheet's scenes differ from each other in most of their 13.
+/// No cause is named then: the mistakes are sought on the assignment, and one found on a
+/// scene the work was not typed for would be a guess.
+pub const OTHER_SCENE_AT: usize = 4;
+
 impl Check {
+    /// Whether so many typed inputs differ from the assignment's ([`OTHER_SCENE_AT`]) that
+    /// the work looks typed for another scene: "is this the right scene?".
+    pub fn other_scene(&self) -> bool {
+        self.inputs_differ.len() >= OTHER_SCENE_AT
+    }
+
     /// Is the work right: its inputs the assignment's, some step compared, none wrong, and
     /// the run not stopped by an error?
     pub fn right(&self) -> bool {
@@ -503,7 +516,10 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
         }
         steps.push(StepCheck { name: p.name.clone(), student: p.numbers.clone(), key: k.to_vec(), verdict });
     }
-    let causes = if first_wrong.is_some() || !student.errors.is_empty() {
+    // Work typed for another scene (a wrong --scene) is no mistake of this one's.
+    let causes = if inputs_differ.len() >= OTHER_SCENE_AT {
+        Vec::new()
+    } else if first_wrong.is_some() || !student.errors.is_empty() {
         // On the assignment (a mistake in a typed input, `ns = 0.2`), then on what they typed.
         // Only mistakes under the rules assumed (the assignment's) are offered.
         let mut found = causes(assignment, &key, student, assignment.rules);

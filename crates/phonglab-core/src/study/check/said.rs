@@ -57,6 +57,9 @@ pub fn words(c: &Check) -> String {
     if !c.inputs_differ.is_empty() {
         out.push_str(&format!("{}\n", t!("check-inputs-differ", names = input_names(c))));
     }
+    if c.other_scene() {
+        out.push_str(&format!("{}\n", t!("check-other-scene", count = c.inputs_differ.len())));
+    }
     let again = printed_again(c);
     if !again.is_empty() {
         out.push_str(&format!("{}\n", t!("check-printed-twice", names = again.join(", "))));
@@ -98,7 +101,7 @@ pub fn words(c: &Check) -> String {
         let formula = t!("check-cause-formula", formula = cause.formula());
         out.push_str(&format!("{}\n    {formula}\n", cause_line(c, cause)));
     }
-    if c.first_wrong.is_some() && c.causes.is_empty() {
+    if c.first_wrong.is_some() && c.causes.is_empty() && !c.other_scene() {
         out.push_str(&format!("{}\n", t!("check-no-cause")));
     }
     out

@@ -236,6 +236,17 @@ fn two_sided_off(d: &mut Drawing, _: At) -> bool {
     true
 }
 
+/// `GL_LIGHT_MODEL_TWO_SIDE` on where the scene has it off (`two_sided = true` typed into
+/// a scene without it): the back faces lit with their own normals and the back material.
+/// Not offered where the scene has it on already.
+fn two_sided_on(d: &mut Drawing, _: At) -> bool {
+    if d.scene.light_model.two_sided {
+        return false;
+    }
+    d.scene.light_model.two_sided = true;
+    true
+}
+
 /// Attenuation left out: (1, 0, 0), on every light.
 fn attenuation_left_out(d: &mut Drawing, _: At) -> bool {
     for l in &mut d.scene.lights {
@@ -623,7 +634,7 @@ const fn per_light(id: &'static str, message: &'static str, apply: fn(&mut Drawi
 }
 
 /// The picture mistakes, in the order the docs list them.
-pub const MISTAKES: [PictureMistake; 88] = [
+pub const MISTAKES: [PictureMistake; 89] = [
     row("normal-by-modelview", "wrong-cause-normals-by-m", normals_by_modelview),
     row("normal-not-normalised", "diagnose-normalize-off", normalize_off),
     row("reflection-for-halfway", "wrong-cause-reflection-for-halfway", reflection_for_halfway),
@@ -712,6 +723,7 @@ pub const MISTAKES: [PictureMistake; 88] = [
     row("normal-matrix-not-transposed", "diagnose-normal-matrix-not-transposed", normal_matrix_not_transposed),
     row("normal-not-transformed", "diagnose-normal-not-transformed", normal_not_transformed),
     row("depth-test-off", "diagnose-depth-test-off", depth_test_off),
+    row("two-sided-on", "diagnose-two-sided-on", two_sided_on),
     row("quadric-inside", "diagnose-quadric-inside", quadric_inside),
     row("rescale-for-normalize", "diagnose-rescale-for-normalize", rescale_for_normalize),
     per_light("light-after-model", "diagnose-light-after-model-light", light_after_model_alone),

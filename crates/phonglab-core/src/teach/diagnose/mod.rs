@@ -23,6 +23,7 @@ mod drawing;
 mod falloff;
 mod fit;
 mod footprint;
+mod grid;
 mod levels;
 mod mistakes;
 mod offset;
@@ -37,6 +38,7 @@ pub use change::{At, Given};
 pub use colours::Colours;
 pub use drawing::Drawing;
 pub use footprint::{CLEARLY, FOOTPRINT_AT, Footprint, Group};
+pub use grid::{JPEG_GRID_AT, jpeg_grid};
 pub use levels::Levels;
 pub use mistakes::{MISTAKES, PictureMistake, Scope, offered};
 pub use offset::{BLOCK, OFFSET_AT, Offset};
@@ -177,6 +179,10 @@ pub struct Diagnosis {
     /// verdict is "right": unless [`Within::exact`], it is right only within what a
     /// picture can tell.
     pub within: Option<Within>,
+    /// How much more the image's difference from the right picture jumps across the edges
+    /// of JPEG's 8 x 8 blocks than inside them ([`jpeg_grid`]): from [`JPEG_GRID_AT`] the
+    /// picture looks saved as JPEG.
+    pub grid: f64,
 }
 
 /// What a picture's shape shows that no mistake's colours explain.
@@ -325,6 +331,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
     if d.verdict == Verdict::Right {
         d.within = Some(within::within(&d.picture, &covered, image, size));
     }
+    d.grid = jpeg_grid(&d.picture, &covered, image, size);
     d.same_picture = pictures.same_as_first(&d.causes, bg, size);
     // The image cannot rank causes that draw the same picture: they go first in the
     // table's order, the other causes after them as scored.
@@ -691,6 +698,7 @@ fn verdict_of(exact: Match, mut tried: Vec<Tried>, picture: Vec<u8>, renderer: R
         lossy: None,
         footprint: None,
         within: None,
+        grid: 1.0,
     }
 }
 

@@ -50,7 +50,7 @@ pub struct Region {
 }
 
 /// Thin marks that differ from the right picture: joined pixels, each more than 16 levels
-/// outside the range of the 3 x 3 around it, that need not make a solid region (lines drawn over the object).
+/// outside the range of the 3 x 3 around it in the right picture, that need not make a solid region (lines drawn over the object).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Marks {
     /// Its pixels.
@@ -151,11 +151,22 @@ fn differing(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: 
         .collect()
 }
 
-/// The largest set of joined pixels (8-connected) where `image` differs from `picture`
-/// as [`largest_region`] counts them, solid or not: lines or marks drawn over the object.
-/// `None` when no pixel differs.
+/// The pixels of the object (`covered` in `picture`, or unlike `bg` in `image`) where
+/// `image` lies more than [`REGION_LEVELS`] outside the range of the 3 x 3 around the pixel
+/// in `picture` ([`outside`]): what is drawn over the picture. Not the other way round: a
+/// picture resized down and up or blurred loses its thin extremes (a rim's highlight a
+/// pixel or two wide falls below everything near it in the image), and adds nothing
+/// outside its neighbours' range but the ringing of its filter.
+fn added(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Vec<bool> {
+    let object = |p: usize| covered[p] || unlike(image, p, bg, TOLERANCE);
+    (0..size * size).map(|p| object(p) && outside(image, picture, size, p) > REGION_LEVELS).collect()
+}
+
+/// The largest set of joined pixels (8-connected) where `image` lies outside `picture`'s
+/// range as [`added`] counts them, solid or not: lines or marks drawn over the object.
+/// `None` when no pixel does.
 pub fn largest_marks(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Option<Marks> {
-    let differs = differing(picture, covered, image, bg, size);
+    let differs = added(picture, covered, image, bg, size);
     let largest = regions(&differs, size).into_iter().max_by_key(|j| j.region.pixels)?;
     let r = largest.region;
     Some(Marks { pixels: r.pixels, from: r.from, to: r.to })

@@ -33,6 +33,9 @@ pub struct Said {
     pub footprint: Option<Footprint>,
     /// How far a "right" picture is from the right one inside the object.
     pub within: Option<Within>,
+    /// How much the difference from the right picture jumps at JPEG's blocks' edges
+    /// ([`super::jpeg_grid`]).
+    pub grid: f64,
 }
 
 /// How a verdict is filed, for machines (`phonglab diagnose --json`'s `finding`): the
@@ -63,6 +66,7 @@ impl Said {
             lossy: d.lossy,
             footprint: d.footprint.clone(),
             within: d.within,
+            grid: d.grid,
         }
     }
 
@@ -97,8 +101,18 @@ impl Said {
                     vec![tr_args("diagnose-verdict-unexplained", &args)]
                 }
                 (None, None) => vec![tr_args("diagnose-verdict-unexplained-none", &[("right", right)])],
-            },
+            }
+            .into_iter()
+            .chain(self.looks_jpeg())
+            .collect(),
         }
+    }
+
+    /// For a picture left unexplained that looks saved as JPEG ([`super::JPEG_GRID_AT`]):
+    /// that it does, and that the losses may hide the cause.
+    fn looks_jpeg(&self) -> Option<String> {
+        let ratio = Arg::Text(crate::locale::decimal(&format!("{:.1}", self.grid)));
+        (self.grid >= super::JPEG_GRID_AT).then(|| tr_args("diagnose-looks-jpeg", &[("ratio", ratio)]))
     }
 
     /// "Right": as saved lossily, within what a picture can tell (how far it is inside the
@@ -329,6 +343,7 @@ mod tests {
             lossy: None,
             footprint: None,
             within: None,
+            grid: 1.0,
         }
     }
 
@@ -369,6 +384,23 @@ mod tests {
     }
 
     #[test]
+    fn an_unexplained_picture_that_looks_saved_as_jpeg_is_told_the_losses_may_hide_the_cause() {
+        // The spotlight's honest JPEG of quality 75 was unexplained with no hint of it.
+        let jpeg = Said { named: Vec::new(), shape: None, grid: 1.56, ..unexplained_with(Shape::NothingDrawn) };
+        let lines = with_locale(Locale::of(Lang::En), || jpeg.lines());
+        assert_eq!(lines.len(), 2, "{lines:?}");
+        assert!(lines[1].starts_with("The picture looks saved as JPEG"), "{lines:?}");
+        assert!(lines[1].contains("(1.6 times") && lines[1].contains("may hide the cause"), "{lines:?}");
+        let lines = with_locale(Locale::of(Lang::PtPt), || jpeg.lines());
+        assert!(lines[1].contains("guardada como JPEG") && lines[1].contains("(1,6 vezes"), "{lines:?}");
+        // Nor for a picture with no grid, nor for one judged right or wrong.
+        let plain = Said { grid: 1.05, ..jpeg.clone() };
+        assert_eq!(with_locale(Locale::of(Lang::En), || plain.lines()).len(), 1);
+        let right = Said { verdict: Verdict::Right, ..jpeg.clone() };
+        assert!(!with_locale(Locale::of(Lang::En), || right.lines()).iter().any(|l| l.contains("JPEG:")));
+    }
+
+    #[test]
     fn causes_that_explain_the_picture_equally_are_said_as_one_or_the_other() {
         let tie = vec![cause("attenuation-left-out", 0.9951), cause("spot-left-out", 0.9949)];
         let wrong = |named: Vec<Tried>| Said {
@@ -380,6 +412,7 @@ mod tests {
             lossy: None,
             footprint: None,
             within: None,
+            grid: 1.0,
         };
         let lines = with_locale(Locale::of(Lang::En), || wrong(tie.clone()).lines());
         let first = &lines[0];
