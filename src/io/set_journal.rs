@@ -180,6 +180,16 @@ pub fn entry_of(folder: &Path, name: &str) -> io::Result<Entry> {
     Ok(Entry { name: name.to_string(), size, hash, id })
 }
 
+/// Is the file at `path` exactly the one `entry` names (identity, size and hash)? By its
+/// path: for a look that moves nothing (an output's record, `io::work_output`).
+pub fn is_entry(path: &Path, entry: &Entry) -> bool {
+    let Ok((meta, id)) = Identity::at(path) else { return false };
+    if !meta.is_file() || id != entry.id || meta.len() != entry.size {
+        return false;
+    }
+    read_entry(path).is_ok_and(|(size, hash, id)| size == entry.size && hash == entry.hash && id == entry.id)
+}
+
 /// The entry of the file `name` in the folder held `dir`, read there now.
 pub fn entry_in(dir: &HeldDir, name: &str) -> io::Result<Entry> {
     let (size, hash, id) = read_entry_in(dir, name)?;
