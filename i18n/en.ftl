@@ -478,7 +478,7 @@ budget-what-window = the window at { $width } x { $height } pixels
 budget-what-diagnose = comparing a { $size } x { $size } picture with { $count } drawings, one at a time,
 budget-what-check = checking { $count ->
     [one] one submission of { $largest }
-   *[other] { $count } submissions, the largest { $largest }
+   *[other] { $count } submissions, the largest { $largest },
 }
 budget-what-cost = the study of { $count ->
     [one] one object
@@ -990,7 +990,7 @@ png-reason-too-large = it is too large to decode
 png-reason-damaged = the file is damaged or cut short
 png-reason-colours = its colours are stored as { $kind }, which phonglab does not read
 diagnose-wrong-size = { $path } is { $got } pixels; the picture of this scene is { $expected }. Save the program's PNG with its --png option, which draws the scene at that size: a screenshot of a window is not the drawing. (For a scene drawn at another size, phonglab diagnose --size checks it.)
-diagnose-invisible = Not tried (this scene cannot show them): { $ids }
+diagnose-invisible = Not told apart from the right picture (in this scene each draws within what a picture can tell of it): { $ids }
 diagnose-diff-written = Difference image written to { $path }: { $said }
 diagnose-diff-not-png = --diff { $path }: a difference image is a PNG, and its name must end in .png (check would read a name ending in .ipynb, .py or .txt as a student's work); nothing was written.
 diagnose-worst = The pixel that differs most: ({ $x }, { $y }), your picture { $image } against the right one { $right }. The probe of the right picture there:

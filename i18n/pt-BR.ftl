@@ -488,7 +488,7 @@ budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count
 budget-what-check = verificar { $count ->
     [0] { $count } trabalhos
     [one] um trabalho de { $largest }
-   *[other] { $count } trabalhos, o maior com { $largest }
+   *[other] { $count } trabalhos, o maior com { $largest },
 }
 budget-what-cost = o estudo de { $count ->
     [0] { $count } objetos
@@ -1008,7 +1008,7 @@ png-reason-too-large = é grande demais para decodificar
 png-reason-damaged = o arquivo está danificado ou incompleto
 png-reason-colours = as cores dele estão gravadas como { $kind }, que o phonglab não lê
 diagnose-wrong-size = { $path } tem { $got } pixels; a imagem desta cena tem { $expected }. Salve o PNG do programa com a opção --png, que desenha a cena nesse tamanho: uma captura de tela de uma janela não é o desenho. (Uma cena desenhada em outro tamanho é verificada com phonglab diagnose --size.)
-diagnose-invisible = Não testados (esta cena não consegue mostrá-los): { $ids }
+diagnose-invisible = Não se distinguem da imagem certa (nesta cena, cada um a desenha dentro do que uma imagem permite dizer): { $ids }
 diagnose-diff-written = Imagem das diferenças gravada em { $path }: { $said }
 diagnose-diff-not-png = --diff { $path }: a imagem da diferença é um PNG e o nome dela precisa terminar em .png (o check leria um nome terminado em .ipynb, .py ou .txt como um trabalho de aluno); nada foi escrito.
 diagnose-worst = O pixel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:

@@ -481,7 +481,7 @@ budget-what-window = a janela a { $width } x { $height } píxeis
 budget-what-diagnose = comparar uma imagem de { $size } x { $size } com { $count } desenhos, um de cada vez,
 budget-what-check = verificar { $count ->
     [one] um trabalho de { $largest }
-   *[other] { $count } trabalhos, o maior com { $largest }
+   *[other] { $count } trabalhos, o maior com { $largest },
 }
 budget-what-cost = o estudo de { $count ->
     [one] um objeto
@@ -993,7 +993,7 @@ png-reason-too-large = é demasiado grande para descodificar
 png-reason-damaged = o ficheiro está danificado ou incompleto
 png-reason-colours = as suas cores estão guardadas como { $kind }, que o phonglab não lê
 diagnose-wrong-size = { $path } tem { $got } píxeis; a imagem desta cena tem { $expected }. Guarde o PNG do programa com a opção --png, que desenha a cena nesse tamanho: uma captura de ecrã de uma janela não é o desenho. (Uma cena desenhada noutro tamanho verifica-se com phonglab diagnose --size.)
-diagnose-invisible = Não experimentados (esta cena não os pode mostrar): { $ids }
+diagnose-invisible = Não se distinguem da imagem certa (nesta cena, cada um desenha-a dentro do que uma imagem permite dizer): { $ids }
 diagnose-diff-written = Imagem das diferenças escrita em { $path }: { $said }
 diagnose-diff-not-png = --diff { $path }: a imagem da diferença é um PNG e o seu nome tem de terminar em .png (o check leria um nome terminado em .ipynb, .py ou .txt como um trabalho de um aluno); nada foi escrito.
 diagnose-worst = O píxel que mais difere: ({ $x }, { $y }), a sua imagem { $image } contra a certa { $right }. A sonda da imagem certa nesse ponto:

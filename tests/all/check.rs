@@ -15,28 +15,7 @@ use phonglab_core::export::notebook::{Cell, cells, ipynb};
 use phonglab_core::study::check::mistakes::CATALOGUE;
 
 use crate::common;
-
-/// A folder of the test's own, removed when it ends.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new(name: &str) -> TempDir {
-        let p = std::env::temp_dir().join(format!("phonglab-check-{}-{name}", std::process::id()));
-        std::fs::remove_dir_all(&p).ok();
-        std::fs::create_dir_all(&p).unwrap();
-        TempDir(p)
-    }
-
-    fn path(&self) -> &Path {
-        &self.0
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        std::fs::remove_dir_all(&self.0).ok();
-    }
-}
+use crate::common::TempDir;
 
 /// Runs each notebook's code cells in order, in one namespace, with NumPy's default print
 /// options, and saves it with its outputs at the path given after it; an exception stops
@@ -579,7 +558,7 @@ fn every_catalogue_mistake_written_into_a_notebook_is_named_and_the_unchanged_on
         eprintln!("SKIPPED: no python3 with NumPy here (Debian: python3-numpy)");
         return;
     };
-    let dir = TempDir::new("mistakes");
+    let dir = TempDir::new("check-mistakes");
     let cases = cases();
     // Every id of the catalogue has its notebook.
     for info in &CATALOGUE {
@@ -634,7 +613,7 @@ fn every_catalogue_mistake_written_into_a_notebook_is_named_and_the_unchanged_on
 
 #[test]
 fn a_notebook_saved_without_outputs_is_told_to_run_first() {
-    let dir = TempDir::new("unrun");
+    let dir = TempDir::new("check-unrun");
     let path = dir.path().join("never-run.ipynb");
     std::fs::write(&path, edited("unchanged", &worksheet(), &[])).unwrap();
     let out = common::phonglab(&["check", path.to_str().unwrap()]);
@@ -648,19 +627,19 @@ fn a_class_with_hostile_names_gets_a_report_and_marks_that_keep_them_as_data() {
         eprintln!("SKIPPED: no python3 with NumPy here (Debian: python3-numpy)");
         return;
     };
-    let work = TempDir::new("work");
+    let work = TempDir::new("check-work");
     let right = edited("right", &worksheet(), &[]);
     let wrong = edited("wrong", &worksheet(), &[("vlv = (lightPos - vertexPos)", "vlv = (vertexPos - lightPos)")]);
     std::fs::write(work.path().join("0.ipynb"), &right).unwrap();
     std::fs::write(work.path().join("1.ipynb"), &wrong).unwrap();
     let ran = run_all(python, work.path(), 2);
-    let class = TempDir::new("class");
+    let class = TempDir::new("check-class");
     let names = ["=HYPERLINK(\"http:x\")|ana.ipynb", "-2+3 [link](x) `b`.ipynb", "@SUM(A1) *c*.ipynb"];
     for (k, name) in names.iter().enumerate() {
         std::fs::copy(&ran[usize::from(k != 1)], class.path().join(name)).unwrap();
     }
     std::fs::write(class.path().join("not run.ipynb"), &right).unwrap();
-    let out_dir = TempDir::new("out");
+    let out_dir = TempDir::new("check-out");
     let (report, csv) = (out_dir.path().join("report.md"), out_dir.path().join("marks.csv"));
     let out = common::phonglab_in(
         "pt_PT.UTF-8",
@@ -738,7 +717,7 @@ fn printed_text_with_no_step_is_not_right() {
     assert_eq!(out.status.code(), Some(1), "unchecked work is not right: exit 1");
     assert!(json["first_wrong"].is_null());
     assert_eq!(json["unchecked"]["id"], "nothing-compared");
-    let dir = TempDir::new("hello");
+    let dir = TempDir::new("check-hello");
     let path = dir.path().join("hello.txt");
     std::fs::write(&path, "hello\nModuleNotFoundError: No module named 'numpy'\n").unwrap();
     let out = common::phonglab(&["check", "--printed", path.to_str().unwrap()]);
@@ -752,7 +731,7 @@ fn printed_text_with_no_step_is_not_right() {
 /// if not given): past it, the need and the budget that lets it run, nothing checked.
 #[test]
 fn check_honours_the_memory_budget() {
-    let dir = TempDir::new("budget");
+    let dir = TempDir::new("check-budget");
     let path = dir.path().join("printed.txt");
     std::fs::write(&path, "vlv =  [0.1 0.2 0.3 0.]\n").unwrap();
     let out =
@@ -765,12 +744,12 @@ fn check_honours_the_memory_budget() {
     let out = common::phonglab(&["check", "--printed", path.to_str().unwrap(), "--memory-budget", asked]);
     assert_ne!(out.status.code(), Some(2), "{asked}: {}", String::from_utf8_lossy(&out.stderr));
     // A class folder: its notebooks counted, the largest named.
-    let class = TempDir::new("budget-class");
+    let class = TempDir::new("check-budget-class");
     std::fs::write(class.path().join("a.ipynb"), "{}").unwrap();
     std::fs::write(class.path().join("b.ipynb"), "x".repeat(3000)).unwrap();
     let out = common::phonglab(&["--lang", "en", "check", class.path().to_str().unwrap(), "--memory-budget", "1K"]);
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("checking 2 submissions, the largest 3 000 bytes (2.9 KiB) needs"), "{err}");
+    assert!(err.contains("checking 2 submissions, the largest 3 000 bytes (2.9 KiB), needs"), "{err}");
 }
 
 /// pt-PT speaks to the student in one register across check and diagnose (the formal,
@@ -797,7 +776,7 @@ fn check_and_diagnose_use_one_register() {
 #[test]
 #[cfg(unix)] // symbolic links (Windows makes them only with a privilege)
 fn a_link_in_a_class_folder_is_not_read_and_named_a_link() {
-    let root = TempDir::new("links");
+    let root = TempDir::new("check-links");
     let (class, secret) = (root.path().join("cls"), root.path().join("secret"));
     std::fs::create_dir_all(&class).unwrap();
     std::fs::create_dir_all(&secret).unwrap();
@@ -821,7 +800,7 @@ fn a_link_in_a_class_folder_is_not_read_and_named_a_link() {
 fn a_submission_that_is_a_link_is_refused_by_the_open_itself() {
     // The open refuses the link (O_NOFOLLOW), not a look before it: a link planted after
     // the class folder was listed is never followed.
-    let root = TempDir::new("nofollow");
+    let root = TempDir::new("check-nofollow");
     let own = root.path().join("own.ipynb");
     std::fs::write(&own, edited("unchanged", &worksheet(), &[])).unwrap();
     let link = root.path().join("link.ipynb");
@@ -853,7 +832,7 @@ fn a_submission_that_is_a_link_is_refused_by_the_open_itself() {
 #[test]
 #[cfg(unix)] // symbolic links (Windows makes them only with a privilege)
 fn a_link_planted_at_the_charts_derived_name_is_refused_and_its_file_kept() {
-    let root = TempDir::new("chartlink");
+    let root = TempDir::new("check-chartlink");
     let (class, sub, outside) = (root.path().join("cls"), root.path().join("sub"), root.path().join("outside"));
     for d in [&class, &sub, &outside] {
         std::fs::create_dir_all(d).unwrap();
@@ -872,7 +851,7 @@ fn a_link_planted_at_the_charts_derived_name_is_refused_and_its_file_kept() {
 
 #[test]
 fn a_class_as_json_escapes_controls_in_file_names() {
-    let class = TempDir::new("jsonnames");
+    let class = TempDir::new("check-jsonnames");
     let names = ["a\u{9b}31m.ipynb", "b\u{202e}gnp.ipynb", "c\u{2028}d.ipynb"];
     for name in names {
         std::fs::write(class.path().join(name), edited("unchanged", &worksheet(), &[])).unwrap();
@@ -889,7 +868,7 @@ fn a_class_as_json_escapes_controls_in_file_names() {
 
 #[test]
 fn a_step_printed_again_does_not_hide_the_earlier_wrong_one_and_junk_past_the_cap_is_refused() {
-    let dir = TempDir::new("printed");
+    let dir = TempDir::new("check-printed");
     let text = "vertexNormal =  [0.  0.6 0.8 0. ]\nvlv =  [9. 9. 9. 0.]\n\
                 vlv =  [ 0.79220526  0.55887606 -0.2450885   0.        ]\n";
     let printed = dir.path().join("printed.txt");
@@ -918,7 +897,7 @@ fn a_step_printed_again_does_not_hide_the_earlier_wrong_one_and_junk_past_the_ca
 
 #[test]
 fn the_class_report_names_each_students_steps_printed_twice_escaped_for_markdown() {
-    let root = TempDir::new("twice");
+    let root = TempDir::new("check-twice");
     let class = root.path().join("cls");
     std::fs::create_dir_all(&class).unwrap();
     let printed = [
@@ -950,7 +929,7 @@ fn the_class_report_names_each_students_steps_printed_twice_escaped_for_markdown
 
 #[test]
 fn a_given_that_is_not_finite_is_refused_by_check_naming_it() {
-    let dir = TempDir::new("notfinite");
+    let dir = TempDir::new("check-notfinite");
     let nb = serde_json::json!({"cells": [{
         "cell_type": "code",
         "source": ["import numpy as np\n", "vertexPos = np.array([1e999, -384, 0, 1])\n", "vertexNormal = np.array([0, 0, 1, 0])\n"],
@@ -966,7 +945,7 @@ fn a_given_that_is_not_finite_is_refused_by_check_naming_it() {
 
 #[test]
 fn a_nan_given_written_with_numpy_is_refused_by_check_naming_it() {
-    let dir = TempDir::new("nangiven");
+    let dir = TempDir::new("check-nangiven");
     let nb = serde_json::json!({"cells": [{
         "cell_type": "code",
         "source": ["import numpy as np\n", "lightPos = np.array([0, 0, np.nan, 1])\n"],
@@ -982,7 +961,7 @@ fn a_nan_given_written_with_numpy_is_refused_by_check_naming_it() {
 
 #[test]
 fn a_flag_that_does_not_apply_is_refused_and_one_submission_is_singular() {
-    let dir = TempDir::new("flags");
+    let dir = TempDir::new("check-flags");
     let nb = dir.path().join("a.ipynb");
     std::fs::write(&nb, edited("unchanged", &worksheet(), &[])).unwrap();
     let printed = dir.path().join("printed.txt");
@@ -1022,7 +1001,7 @@ fn the_back_side_of_two_sided_lighting_is_checked() {
         eprintln!("SKIPPED: no python3 with NumPy here (Debian: python3-numpy)");
         return;
     };
-    let dir = TempDir::new("two-sided");
+    let dir = TempDir::new("check-two-sided");
     let mut doc = light_behind();
     doc.scene.light_model.two_sided = true;
     doc.scene.light_model.ambient = DVec4::new(0.2, 0.2, 0.2, 1.0);
@@ -1055,7 +1034,7 @@ fn the_back_side_of_two_sided_lighting_is_checked() {
 /// Python did not use; in a class folder a FIFO and a folder are named for what they are.
 #[test]
 fn a_given_changed_in_place_is_refused_and_a_fifo_or_folder_is_named() {
-    let dir = TempDir::new("in-place");
+    let dir = TempDir::new("check-in-place");
     let nb = serde_json::json!({"cells": [{
         "cell_type": "code",
         "source": ["import numpy as np\n", "vertexPos = np.array([-512, -384, 0, 1])\n",
@@ -1093,7 +1072,7 @@ fn a_notebook_cleared_from_its_first_wrong_step_on_is_incomplete_everywhere() {
         eprintln!("SKIPPED: no python3 with NumPy here (Debian: python3-numpy)");
         return;
     };
-    let dir = TempDir::new("cleared");
+    let dir = TempDir::new("check-cleared");
     let doc = worksheet();
     std::fs::write(dir.path().join("0.ipynb"), edited("H", &doc, &[("H = (vlv + vov)", "H = (vlv - vov)")])).unwrap();
     let ran = run_all(python, dir.path(), 1);
@@ -1197,7 +1176,7 @@ fn printed_text_of_one_right_line_is_incomplete() {
 /// `too-few-digits`; the exit status not 0.
 #[test]
 fn too_few_digits_are_incomplete_in_json() {
-    let dir = TempDir::new("digits");
+    let dir = TempDir::new("check-digits");
     let text = "vertexNormal =  [0.  0.6 0.8 0. ]\nvlv =  [ 0.79  0.56 -0.25  0.  ]\nvov =  [0. 0. 1. 0.]\n\
                 Iamb =  [0.21 0.13 0.05 0.  ]\nIdif =  [0.1  0.06 0.03 0.  ]\nIspec =  [0. 0. 0. 0.]\n\
                 I =  [0.06 0.04 0.02 0.  ]\n";

@@ -471,7 +471,7 @@ fn a_budget_too_small_is_told_all_the_run_needs_at_once() {
 
 /// The spot's cutoff given in radians: nothing of the light reaches the object and many
 /// causes draw that picture. The report says so first, names the most common cause, the
-/// others in one line with each light in brackets; "Not tried" lists each id once and
+/// others in one line with each light in brackets; "Not told apart" lists each id once and
 /// never a value fitted from the picture.
 #[test]
 fn a_light_that_reaches_nothing_is_said_first_and_the_lists_keep_each_light_with_its_id() {
@@ -492,7 +492,7 @@ fn a_light_that_reaches_nothing_is_said_first_and_the_lists_keep_each_light_with
     assert!(lines[2].contains("the most common first"), "{out}");
     assert!(lines[2].contains(": light-left-out (GL_LIGHT0), spot-cutoff-radians (GL_LIGHT0), "), "{out}");
     assert!(lines.iter().filter(|l| l.starts_with("It also explains")).count() <= 3, "{out}");
-    let not_tried = lines.iter().find(|l| l.starts_with("Not tried")).expect("not tried");
+    let not_tried = lines.iter().find(|l| l.starts_with("Not told apart")).expect("not tried");
     for l in [lines[2], not_tried] {
         assert!(!l.contains(", GL_LIGHT"), "a light split from its id: {l}");
     }

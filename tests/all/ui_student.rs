@@ -5,6 +5,7 @@
 //! and Clear; bad files are refused and lose nothing.
 
 use crate::common;
+use crate::common::TempDir;
 
 use std::path::{Path, PathBuf};
 
@@ -13,24 +14,6 @@ use egui_kittest::kittest::{NodeT, Queryable};
 use phonglab::app::{AppState, app_ui};
 use phonglab_core::study::check::mistakes::Mistake;
 use phonglab_core::study::check::worked::work;
-
-/// A folder of its own, removed afterwards.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new(name: &str) -> TempDir {
-        let p = std::env::temp_dir().join(format!("phonglab-ui-student-{name}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&p);
-        std::fs::create_dir_all(&p).unwrap();
-        TempDir(p)
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
 
 /// What a script computing the worksheet's scene with `mistake` prints, NumPy-style, to
 /// 8 decimals.
@@ -72,7 +55,7 @@ fn check_through_the_menu(h: &mut Harness<'static, AppState>, path: &Path) {
 
 #[test]
 fn printed_values_checked_show_beside_each_step_with_the_first_wrong_one_framed_and_its_cause() {
-    let dir = TempDir::new("menu");
+    let dir = TempDir::new("ui-student-menu");
     let path = dir.0.join("vlv.txt");
     std::fs::write(&path, printed(Some(Mistake::VlvNotNormalised))).unwrap();
     for (w, ht) in [(1024.0, 600.0), (1280.0, 720.0)] {
@@ -118,7 +101,7 @@ fn printed_values_checked_show_beside_each_step_with_the_first_wrong_one_framed_
 
 #[test]
 fn clear_hides_the_students_values() {
-    let dir = TempDir::new("clear");
+    let dir = TempDir::new("ui-student-clear");
     let path = dir.0.join("right.txt");
     std::fs::write(&path, printed(None)).unwrap();
     let mut h = harness(1280.0, 720.0);
@@ -134,7 +117,7 @@ fn clear_hides_the_students_values() {
 
 #[test]
 fn a_bad_file_is_refused_and_loses_nothing() {
-    let dir = TempDir::new("bad");
+    let dir = TempDir::new("ui-student-bad");
     let good = dir.0.join("vlv.txt");
     std::fs::write(&good, printed(Some(Mistake::VlvNotNormalised))).unwrap();
     let mut h = harness(1280.0, 720.0);
@@ -173,7 +156,7 @@ fn drop_file(h: &mut Harness<'static, AppState>, path: &Path) {
 
 #[test]
 fn a_dropped_notebook_with_outputs_asks_and_printed_text_is_checked_at_once() {
-    let dir = TempDir::new("drop");
+    let dir = TempDir::new("ui-student-drop");
     let nb = dir.0.join("aluno.ipynb");
     std::fs::write(&nb, notebook_with_outputs(&printed(Some(Mistake::VlvNotNormalised)))).unwrap();
     let mut h = harness(1280.0, 720.0);
@@ -213,7 +196,7 @@ fn a_dropped_notebook_with_outputs_asks_and_printed_text_is_checked_at_once() {
 /// words (never the raw id `rules`), and the line lies inside the student's column.
 #[test]
 fn the_inputs_that_differ_are_named_in_words_as_the_command_line_names_them() {
-    let dir = TempDir::new("inputs");
+    let dir = TempDir::new("ui-student-inputs");
     let nb = dir.0.join("aluno.ipynb");
     std::fs::write(&nb, notebook_with_outputs(&printed(None))).unwrap();
     let mut h = harness(1280.0, 720.0);
@@ -259,7 +242,7 @@ fn mistaken_picture(path: &Path) -> &'static str {
 
 #[test]
 fn a_students_picture_opens_in_compare_as_b_with_the_difference_and_the_diagnosis() {
-    let dir = TempDir::new("picture");
+    let dir = TempDir::new("ui-student-picture");
     let path = dir.0.join("aluno.png");
     let id = mistaken_picture(&path);
     let mut h = harness(1024.0, 600.0);
@@ -291,9 +274,65 @@ fn a_students_picture_opens_in_compare_as_b_with_the_difference_and_the_diagnosi
     assert!(h.state().compare.student.is_none());
 }
 
+/// The teacher's review: a notebook (or printed text) checked while Compare showed a
+/// student's picture changed nothing on screen (the calculation, where its steps show, is
+/// hidden by Compare). Now Compare closes, the picture's diagnosis kept for it, and the
+/// steps show with the student's values, their verdict said in the status line.
+#[test]
+fn work_checked_while_compare_shows_a_picture_comes_forward() {
+    let dir = TempDir::new("ui-student-over-compare");
+    let picture = dir.0.join("aluno.png");
+    mistaken_picture(&picture);
+    let printed_path = dir.0.join("vlv.txt");
+    std::fs::write(&printed_path, printed(Some(Mistake::VlvNotNormalised))).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    check_through_the_menu(&mut h, &picture);
+    assert!(h.state().compare.open && h.state().compare.student.is_some());
+    assert!(h.query_by_label_contains("yours = [").is_none());
+    check_through_the_menu(&mut h, &printed_path);
+    assert!(!h.state().compare.open);
+    assert!(h.state().compare.student.is_some(), "the picture's diagnosis is kept");
+    assert!(h.state().student.is_some());
+    let yours = h.get_all_by_label_contains("yours = [").next().expect("the student's values show").rect();
+    assert!(yours.right() <= 1280.0 && yours.bottom() <= 720.0, "{yours:?}");
+    assert!(h.query_by_label("Student's work: vlv.txt").is_some());
+    let message = format!("{:?}", h.state().message);
+    assert!(message.contains("vlv.txt"), "{message}");
+}
+
+/// The teacher's review: Enter in the chooser's name field did nothing; it checks, as the
+/// button does, and only where the button may (a file that is there).
+#[test]
+fn enter_in_the_choosers_name_field_checks_as_the_button_does() {
+    let dir = TempDir::new("ui-student-enter");
+    let path = dir.0.join("vlv.txt");
+    std::fs::write(&path, printed(Some(Mistake::VlvNotNormalised))).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    common::open_menu(&mut h, &["File"]);
+    h.get_by_label("Check a student's work…").click();
+    h.run_steps(2);
+    let c = h.state_mut().chooser.as_mut().expect("the chooser opens");
+    c.folder = dir.0.display().to_string();
+    c.name = "missing.txt".into();
+    h.run_steps(2);
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "File name:").click();
+    h.run_steps(1);
+    h.key_press(egui::Key::Enter);
+    h.run_steps(3);
+    assert!(h.state().chooser.is_some() && h.state().student.is_none(), "no file there: nothing checked");
+    h.state_mut().chooser.as_mut().unwrap().name = "vlv.txt".into();
+    h.run_steps(2);
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "File name:").click();
+    h.run_steps(1);
+    h.key_press(egui::Key::Enter);
+    h.run_steps(3);
+    assert!(h.state().chooser.is_none(), "the chooser closes");
+    assert!(h.state().student.is_some(), "{:?}", h.state().message);
+}
+
 #[test]
 fn the_check_follows_the_scene_shown() {
-    let dir = TempDir::new("follow");
+    let dir = TempDir::new("ui-student-follow");
     let path = dir.0.join("right.txt");
     std::fs::write(&path, printed(None)).unwrap();
     let mut h = harness(1280.0, 720.0);
@@ -327,7 +366,7 @@ fn the_first_wrong_steps_red_reads_on_its_fill_in_both_themes() {
 /// its file: the picture `phonglab render` draws of a scene opened in the window is right.
 #[test]
 fn the_picture_render_draws_of_the_scene_shown_is_right() {
-    let dir = TempDir::new("render");
+    let dir = TempDir::new("ui-student-render");
     let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
     let path = dir.0.join("drawn.png");
     let out = common::phonglab(&[
@@ -365,7 +404,7 @@ fn two_cause_printed() -> String {
 #[test]
 fn a_status_made_before_a_language_switch_is_said_again_in_the_new_language() {
     use phonglab::app::editing::message::Message;
-    let dir = TempDir::new("restate");
+    let dir = TempDir::new("ui-student-restate");
     let path = dir.0.join("vlv.txt");
     std::fs::write(&path, printed(Some(Mistake::VlvReversed))).unwrap();
     let mut h = harness(1280.0, 720.0);
@@ -390,7 +429,7 @@ fn a_status_made_before_a_language_switch_is_said_again_in_the_new_language() {
 #[test]
 fn the_causes_read_whole_in_the_column_and_beside_the_first_wrong_step_and_the_rules_at_body_size() {
     use phonglab_core::study::check::{check, printed::printed_text};
-    let dir = TempDir::new("two-causes");
+    let dir = TempDir::new("ui-student-two-causes");
     let path = dir.0.join("two.txt");
     let text = two_cause_printed();
     std::fs::write(&path, &text).unwrap();
@@ -434,7 +473,7 @@ fn the_causes_read_whole_in_the_column_and_beside_the_first_wrong_step_and_the_r
 
 #[test]
 fn in_portuguese_the_values_wrap_clear_of_the_scroll_bar_at_every_column_width() {
-    let dir = TempDir::new("wide");
+    let dir = TempDir::new("ui-student-wide");
     let path = dir.0.join("vlv.txt");
     std::fs::write(&path, printed(Some(Mistake::VlvReversed))).unwrap();
     let mut h = harness(1920.0, 1080.0);
@@ -563,7 +602,7 @@ fn picture_with(doc: &phonglab_core::document::Document, path: &Path, id: &str) 
 fn a_long_diagnosis_scrolls_and_the_three_pictures_keep_their_size_within_the_window() {
     // The spot's cutoff in radians: nothing of light 0 reaches the object, many mistakes
     // draw that picture, and the diagnosis runs long (longest in Portuguese).
-    let dir = TempDir::new("long");
+    let dir = TempDir::new("ui-student-long");
     let path = dir.0.join("foco.png");
     let doc = spotlight();
     picture_with(&doc, &path, "spot-cutoff-radians");
@@ -601,7 +640,7 @@ fn a_long_diagnosis_scrolls_and_the_three_pictures_keep_their_size_within_the_wi
 
 #[test]
 fn a_refused_picture_keeps_the_last_verdict_and_says_why_in_compare_when_there_is_none() {
-    let dir = TempDir::new("refused");
+    let dir = TempDir::new("ui-student-refused");
     let path = dir.0.join("aluno.png");
     let id = mistaken_picture(&path);
     let mut h = harness(1024.0, 600.0);
@@ -639,7 +678,7 @@ fn a_refused_picture_keeps_the_last_verdict_and_says_why_in_compare_when_there_i
 
 #[test]
 fn a_pictures_verdict_is_hidden_once_the_scene_shown_changes_and_checked_again_on_asking() {
-    let dir = TempDir::new("stale");
+    let dir = TempDir::new("ui-student-stale");
     let path = dir.0.join("aluno.png");
     let id = mistaken_picture(&path);
     let mut h = harness(1280.0, 720.0);
@@ -679,7 +718,7 @@ fn a_pictures_verdict_is_hidden_once_the_scene_shown_changes_and_checked_again_o
 fn presenting_the_long_diagnosis_shows_whole_above_the_pictures_within_the_window() {
     // The spot's cutoff in radians: the longest diagnosis (in Portuguese), at a projector
     // (F5), where no hover shows a scroll bar: its last line is above the pictures.
-    let dir = TempDir::new("present");
+    let dir = TempDir::new("ui-student-present");
     let path = dir.0.join("foco.png");
     let doc = spotlight();
     picture_with(&doc, &path, "spot-cutoff-radians");
@@ -723,7 +762,7 @@ fn presenting_the_long_diagnosis_shows_whole_above_the_pictures_within_the_windo
 
 #[test]
 fn the_chooser_names_notebooks_printed_text_and_pictures_and_starts_where_the_last_work_was() {
-    let dir = TempDir::new("chooser");
+    let dir = TempDir::new("ui-student-chooser");
     let path = dir.0.join("right.txt");
     std::fs::write(&path, printed(None)).unwrap();
     let mut h = harness(1280.0, 720.0);
@@ -799,7 +838,7 @@ fn a_named_cause_is_the_cause_and_the_unexplained_verdict_reads_as_one_sentence(
     assert!(message("pt-BR", "student-picture-right").contains("a imagem certa"));
     // Another material's picture (jade for gold): unexplained; its closest mistake's words
     // (which begin with a capital) are not run into the sentence after a comma.
-    let dir = TempDir::new("unexplained");
+    let dir = TempDir::new("ui-student-unexplained");
     let path = dir.0.join("jade.png");
     let doc = spotlight();
     let mut jade = doc.clone();
@@ -830,7 +869,7 @@ fn a_named_cause_is_the_cause_and_the_unexplained_verdict_reads_as_one_sentence(
 fn a_mistake_of_few_pixels_is_shown_wrong_with_where_it_shows_as_the_command_line_says() {
     // The spotlight drawn with its exponent 10 for 8: the share alone would call it right;
     // the window says wrong, the fitted exponent, and the sentence of the mistake's footprint.
-    let dir = TempDir::new("footprint");
+    let dir = TempDir::new("ui-student-footprint");
     let path = dir.0.join("exp10.png");
     let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
     let text = std::fs::read_to_string(&scene).unwrap();
@@ -876,7 +915,7 @@ fn a_mistake_of_few_pixels_is_shown_wrong_with_where_it_shows_as_the_command_lin
 /// the window at the smallest size.
 #[test]
 fn work_missing_a_step_is_said_incomplete_in_the_window() {
-    let dir = TempDir::new("incomplete");
+    let dir = TempDir::new("ui-student-incomplete");
     let path = dir.0.join("cut.txt");
     let whole = printed(None);
     let cut = whole.find("\nIspec =").expect("Ispec printed");
@@ -903,7 +942,7 @@ fn work_missing_a_step_is_said_incomplete_in_the_window() {
 #[test]
 #[cfg(unix)] // a file name with a line break
 fn the_chooser_shows_controls_and_bidirectional_overrides_in_names_visibly() {
-    let dir = TempDir::new("chooser-controls");
+    let dir = TempDir::new("ui-student-chooser-controls");
     let names = ["two\nlines.txt", "\u{202E}gnp.exe.png", "esc\u{1b}[31m.txt"];
     for n in names {
         std::fs::write(dir.0.join(n), printed(None)).unwrap();

@@ -4,6 +4,7 @@
 //! on one line, and a picture of another size is told to save the program's PNG.
 
 use crate::common;
+use crate::common::TempDir;
 
 use std::path::{Path, PathBuf};
 
@@ -11,24 +12,6 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use phonglab::app::{AppState, app_ui};
 use phonglab_core::document::Document;
-
-/// A folder of its own, removed afterwards.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new(name: &str) -> TempDir {
-        let dir = std::env::temp_dir().join(format!("phonglab-verdicts-{name}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        TempDir(dir)
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
 
 fn harness(w: f32, h: f32) -> Harness<'static, AppState> {
     let mut h = Harness::builder()
@@ -72,7 +55,7 @@ fn message(lang: &str, id: &str) -> String {
 
 #[test]
 fn a_spinning_scene_is_checked_at_its_own_view_as_the_command_line_checks_it() {
-    let dir = TempDir::new("spun");
+    let dir = TempDir::new("verdicts-spun");
     let (scene, doc) = shipped("phong-demo.toml");
     assert!(doc.view.auto_rotate, "the Phong demo's file spins");
     let path = dir.0.join("m05.png");
@@ -154,7 +137,7 @@ fn every_pictures_verdict_starts_with_its_word_and_ends_with_what_to_do() {
 
 #[test]
 fn a_picture_of_another_size_is_told_to_save_the_programs_png_and_a_refusal_has_one_period() {
-    let dir = TempDir::new("size");
+    let dir = TempDir::new("verdicts-size");
     let shot = dir.0.join("captura.png");
     phonglab::io::image::write_png(&shot, 511, 511, &vec![255; 511 * 511 * 4]).unwrap();
     let o = common::phonglab(&[
@@ -192,7 +175,7 @@ fn coordinates_say_where_0_0_is_once_and_keep_each_pair_on_one_line() {
         assert!(m.contains("(0, 0)") && m.contains("glReadPixels"), "{lang}: {m}");
     }
     // The command line says it once, before the pixel that differs most.
-    let dir = TempDir::new("where");
+    let dir = TempDir::new("verdicts-where");
     let (scene, doc) = shipped("spotlight.toml");
     let path = dir.0.join("foco.png");
     picture_with(&doc, &path, "spot-cutoff-radians");
@@ -209,7 +192,7 @@ fn coordinates_say_where_0_0_is_once_and_keep_each_pair_on_one_line() {
 /// and framed: mostly black, it vanished into the dark theme.
 #[test]
 fn the_difference_is_said_as_drawn_and_framed_on_the_dark_theme() {
-    let dir = TempDir::new("framed");
+    let dir = TempDir::new("verdicts-framed");
     let (_, doc) = shipped("phong-demo.toml");
     let path = dir.0.join("m05.png");
     picture_with(&doc, &path, "viewer-swapped");

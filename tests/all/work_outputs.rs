@@ -10,29 +10,8 @@ use std::path::{Path, PathBuf};
 
 #[cfg(unix)] // its tests of links
 use crate::common;
+use crate::common::TempDir as Scratch;
 use crate::common::{phonglab, phonglab_in};
-
-/// A folder of the test's own, removed when it ends.
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(name: &str) -> Scratch {
-        let p = std::env::temp_dir().join(format!("phonglab-work-outputs-{}-{name}", std::process::id()));
-        std::fs::remove_dir_all(&p).ok();
-        std::fs::create_dir_all(&p).unwrap();
-        Scratch(p)
-    }
-
-    fn join(&self, name: &str) -> PathBuf {
-        self.0.join(name)
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        std::fs::remove_dir_all(&self.0).ok();
-    }
-}
 
 /// A notebook check reads (saved without outputs: listed, "not read", as a student's).
 const NOTEBOOK: &str = r#"{"cells": [{"cell_type": "code", "source": ["import numpy as np\n"], "outputs": []}]}"#;
@@ -86,7 +65,7 @@ fn listed(csv: &Path) -> Vec<String> {
 #[test]
 #[cfg(unix)] // symbolic links (Windows makes them only with a privilege)
 fn a_link_at_an_output_of_check_or_diagnose_is_refused_and_its_target_kept() {
-    let root = Scratch::new("links");
+    let root = Scratch::new("work-outputs-links");
     let cls = class(&root, &["a.ipynb"]);
     let bashrc = root.join("bashrc");
     std::fs::write(&bashrc, "alias ls='ls --color'\n").unwrap();
@@ -120,7 +99,7 @@ fn a_link_at_an_output_of_check_or_diagnose_is_refused_and_its_target_kept() {
 
 #[test]
 fn diagnose_never_replaces_another_students_picture() {
-    let root = Scratch::new("other-student");
+    let root = Scratch::new("work-outputs-other-student");
     let scene = scene(&root);
     let cls = root.join("cls");
     std::fs::create_dir_all(&cls).unwrap();
@@ -143,7 +122,7 @@ fn diagnose_never_replaces_another_students_picture() {
         assert_eq!((w, h), (64, 64));
     }
     // Its kind is its own: the marks of a class are not a difference image.
-    let other = Scratch::new("other-kind");
+    let other = Scratch::new("work-outputs-other-kind");
     let cls2 = class(&other, &["a.ipynb"]);
     let marks = root.join("marks.csv");
     assert!(phonglab(&["check", s(&cls2), "--csv", s(&marks)]).status.success());
@@ -155,7 +134,7 @@ fn diagnose_never_replaces_another_students_picture() {
 
 #[test]
 fn check_never_replaces_a_file_it_did_not_write_and_replaces_its_own() {
-    let root = Scratch::new("not-ours");
+    let root = Scratch::new("work-outputs-not-ours");
     let cls = class(&root, &["a.ipynb", "b.ipynb"]);
     let out = root.join("out");
     std::fs::create_dir_all(&out).unwrap();
@@ -186,7 +165,7 @@ fn check_never_replaces_a_file_it_did_not_write_and_replaces_its_own() {
 
 #[test]
 fn an_output_named_like_a_submission_inside_the_checked_folder_is_refused() {
-    let root = Scratch::new("phantom");
+    let root = Scratch::new("work-outputs-phantom");
     let cls = class(&root, &["ana.ipynb", "rui.ipynb"]);
     for (flag, name, suggested) in
         [("--csv", "x.ipynb", "x.csv"), ("--report", "y.py", "y.md"), ("--csv", "Z.IPYNB", "Z.csv")]
@@ -216,7 +195,7 @@ fn an_output_named_like_a_submission_inside_the_checked_folder_is_refused() {
 #[test]
 #[cfg(unix)] // a file name with controls, and symbolic links
 fn the_refusals_are_said_in_portuguese_with_the_name_written_visibly() {
-    let root = Scratch::new("words");
+    let root = Scratch::new("work-outputs-words");
     let cls = class(&root, &["a.ipynb"]);
     let link = cls.join("r\u{1b}]0;x\u{7}\u{202e}.md");
     common::symlink("../elsewhere.md", &link).unwrap();
@@ -250,7 +229,7 @@ fn the_refusals_are_said_in_portuguese_with_the_name_written_visibly() {
 /// read. The count is said once, then what was written where, once each.
 #[test]
 fn check_says_once_what_it_wrote_where() {
-    let root = Scratch::new("said-once");
+    let root = Scratch::new("work-outputs-said-once");
     let cls = class(&root, &["a.ipynb"]);
     let (report, chart, csv) = (root.join("relatório.md"), root.join("relatório.png"), root.join("notas.csv"));
     let cases: [(&str, [String; 3]); 2] = [
@@ -289,7 +268,7 @@ fn check_says_once_what_it_wrote_where() {
 /// not write it"; nothing written, the report kept.
 #[test]
 fn an_output_of_another_kind_is_said_to_be_phonglabs_and_kept() {
-    let root = Scratch::new("other-kind-said");
+    let root = Scratch::new("work-outputs-other-kind-said");
     let cls = class(&root, &["a.ipynb"]);
     let report = root.join("relatório.md");
     assert!(phonglab(&["check", s(&cls), "--report", s(&report)]).status.success());
@@ -325,7 +304,7 @@ fn an_output_of_another_kind_is_said_to_be_phonglabs_and_kept() {
 #[test]
 #[cfg(unix)] // symbolic links
 fn two_outputs_that_are_links_to_one_file_are_refused_as_links() {
-    let root = Scratch::new("two-links");
+    let root = Scratch::new("work-outputs-two-links");
     let cls = class(&root, &["a.ipynb"]);
     let bashrc = root.join("bashrc");
     std::fs::write(&bashrc, "alias ls='ls --color'\n").unwrap();
@@ -350,7 +329,7 @@ fn two_outputs_that_are_links_to_one_file_are_refused_as_links() {
 #[cfg(unix)] // the outputs' identities (inodes) tell that nothing was written
 fn a_teachers_note_added_to_the_marks_or_the_report_is_never_erased() {
     use std::os::unix::fs::MetadataExt;
-    let root = Scratch::new("teachers-note");
+    let root = Scratch::new("work-outputs-teachers-note");
     let cls = class(&root, &["a.ipynb"]);
     let (report, chart, csv) = (root.join("turma.md"), root.join("turma.png"), root.join("notas.csv"));
     let run_in = |data: &Path, lang: &str| {

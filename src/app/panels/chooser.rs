@@ -160,9 +160,12 @@ fn chooser_body_ui(ui: &mut Ui, c: &mut Chooser) -> (Option<Chosen>, bool) {
     if let Some(sub) = enter {
         c.folder = Path::new(c.folder.trim()).join(sub).display().to_string();
     }
+    let mut entered = false;
     ui.horizontal(|ui| {
         let label = ui.label(t!("chooser-name"));
-        ui.add(egui::TextEdit::singleline(&mut c.name).desired_width(300.0)).labelled_by(label.id);
+        let field = ui.add(egui::TextEdit::singleline(&mut c.name).desired_width(300.0)).labelled_by(label.id);
+        // Enter in the name field does what the button does (where the button may).
+        entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
     });
     let mut done = None;
     let mut cancel = false;
@@ -172,7 +175,7 @@ fn chooser_body_ui(ui: &mut Ui, c: &mut Chooser) -> (Option<Chosen>, bool) {
             Purpose::CheckWork => (t!("student-check"), Path::new(&c.path()).is_file()),
             _ => (t!("save"), !c.name.trim().is_empty()),
         };
-        if ui.add_enabled(ok, egui::Button::new(verb)).clicked() {
+        if ui.add_enabled(ok, egui::Button::new(verb)).clicked() || (ok && entered) {
             let path = c.path();
             done = Some(match &c.purpose {
                 Purpose::OpenScene => Chosen::Open(path),

@@ -52,7 +52,10 @@ pub fn check_bytes(state: &mut AppState, bytes: &[u8], path: &Path) {
     }
     match checked(state, bytes, path) {
         Ok(c) => {
+            // The steps show in the calculation, which Compare takes the place of: a
+            // picture in Compare stays there, and Compare closes so the work checked shows.
             state.ui.layout.calculation_open = true;
+            state.compare.open = false;
             state.student = Some(c);
             say(state, Status::Work);
         }
