@@ -70,7 +70,8 @@ impl HeldDir {
     }
 
     /// Makes the folder `name` in this one, where nothing is (`AlreadyExists` otherwise, a
-    /// link included), and holds it.
+    /// link included), for this user alone (Unix: mode 0700: a staging or aside folder,
+    /// trusted later only when no one else can have put anything in it), and holds it.
     pub fn create_dir(&self, name: &OsStr) -> io::Result<HeldDir> {
         #[cfg(unix)]
         unix::mkdir(&self.dir, plain(name)?)?;
@@ -92,8 +93,22 @@ impl HeldDir {
         }
     }
 
+    /// Creates the new file `name` in this folder, to write, for this user alone (Unix:
+    /// mode 0600, whatever the umask): one of phonglab's records, which it trusts later only
+    /// when no one else can have written it ([`crate::platform::os::is_this_users_alone`]).
+    pub fn create_private(&self, name: &OsStr) -> io::Result<File> {
+        #[cfg(unix)]
+        {
+            unix::create_private(&self.dir, plain(name)?)
+        }
+        #[cfg(not(unix))]
+        {
+            self.create_new(name)
+        }
+    }
+
     /// Opens the file `name` in this folder to append to, made if missing (never through a
-    /// link).
+    /// link) for this user alone (Unix: mode 0600): a record of phonglab's.
     pub fn append(&self, name: &OsStr) -> io::Result<File> {
         #[cfg(unix)]
         {
@@ -307,8 +322,12 @@ mod unix {
         open_at(Some(dir), name, libc::O_WRONLY | libc::O_CREAT | libc::O_EXCL | libc::O_NOFOLLOW, 0o666)
     }
 
+    pub fn create_private(dir: &File, name: &OsStr) -> io::Result<File> {
+        open_at(Some(dir), name, libc::O_WRONLY | libc::O_CREAT | libc::O_EXCL | libc::O_NOFOLLOW, 0o600)
+    }
+
     pub fn append(dir: &File, name: &OsStr) -> io::Result<File> {
-        open_at(Some(dir), name, libc::O_WRONLY | libc::O_APPEND | libc::O_CREAT | libc::O_NOFOLLOW, 0o666)
+        open_at(Some(dir), name, libc::O_WRONLY | libc::O_APPEND | libc::O_CREAT | libc::O_NOFOLLOW, 0o600)
     }
 
     pub fn open_read(dir: &File, name: &OsStr) -> io::Result<File> {
@@ -318,7 +337,7 @@ mod unix {
     pub fn mkdir(dir: &File, name: &OsStr) -> io::Result<()> {
         let name = c(name)?;
         // SAFETY: as in `open_at`.
-        check(unsafe { libc::mkdirat(dir.as_raw_fd(), name.as_ptr(), 0o777) }).map(drop)
+        check(unsafe { libc::mkdirat(dir.as_raw_fd(), name.as_ptr(), 0o700) }).map(drop)
     }
 
     pub fn unlink(dir: &File, name: &OsStr, folder: bool) -> io::Result<()> {
