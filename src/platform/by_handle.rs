@@ -28,10 +28,10 @@ use super::held_dir::HeldDir;
 pub struct Opened<'a> {
     file: File,
     /// The folder it was opened in, and its name there (Unix: asked again before the move
-    /// or the removal, through the folder's descriptor; Windows acts through the handle).
-    #[cfg_attr(windows, allow(dead_code))]
+    /// or the removal, through the folder's descriptor; Windows acts through the handle,
+    /// asking first that the folders are still at their paths, and moves back a file whose
+    /// new folder was found moved meanwhile).
     dir: &'a HeldDir,
-    #[cfg_attr(windows, allow(dead_code))]
     name: OsString,
 }
 
@@ -40,8 +40,13 @@ pub struct Opened<'a> {
 /// another name, Wine's Unix link), or where it cannot be opened (Windows: another program
 /// holds it open without sharing its deletion: `ERROR_SHARING_VIOLATION`).
 pub fn open_in<'a>(dir: &'a HeldDir, name: &OsStr) -> io::Result<Opened<'a>> {
+    // Windows opens by path: the folder is asked first to be the one held (under Wine a
+    // Unix program can rename it and put a link at its name; issue 59, round 2).
     #[cfg(windows)]
-    let file = windows::open(&dir.path().join(name))?;
+    let file = {
+        dir.unmoved()?;
+        windows::open(&dir.path().join(name))?
+    };
     #[cfg(not(windows))]
     let file = dir.open_file(name)?;
     Ok(Opened { file, dir, name: name.to_os_string() })
@@ -59,6 +64,7 @@ impl Opened<'_> {
     pub fn remove(self) -> io::Result<bool> {
         #[cfg(windows)]
         {
+            self.dir.unmoved()?;
             windows::remove(&self.file).map(|()| true)
         }
         #[cfg(not(windows))]
@@ -77,7 +83,18 @@ impl Opened<'_> {
     pub fn rename_no_replace(self, to: &HeldDir, to_name: &OsStr) -> io::Result<bool> {
         #[cfg(windows)]
         {
-            windows::rename_no_replace(&self.file, &to.path().join(to_name)).map(|()| true)
+            self.dir.unmoved()?;
+            to.unmoved()?;
+            windows::rename_no_replace(&self.file, &to.path().join(to_name))?;
+            // Moved between the look and the move: the file is put back where it was, by
+            // its handle, when its own folder is still where it was; the error says so.
+            if let Err(e) = to.unmoved() {
+                if self.dir.unmoved().is_ok() {
+                    let _ = windows::rename_no_replace(&self.file, &self.dir.path().join(&self.name));
+                }
+                return Err(e);
+            }
+            Ok(true)
         }
         #[cfg(not(windows))]
         {

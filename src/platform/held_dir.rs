@@ -76,7 +76,10 @@ impl HeldDir {
         #[cfg(unix)]
         unix::mkdir(&self.dir, plain(name)?)?;
         #[cfg(not(unix))]
-        std::fs::create_dir(self.path.join(plain(name)?))?;
+        {
+            self.unmoved()?;
+            std::fs::create_dir(self.path.join(plain(name)?))?;
+        }
         self.open_dir(name)
     }
 
@@ -89,6 +92,7 @@ impl HeldDir {
         }
         #[cfg(not(unix))]
         {
+            self.unmoved()?;
             File::options().write(true).create_new(true).open(self.path.join(plain(name)?))
         }
     }
@@ -118,6 +122,7 @@ impl HeldDir {
         {
             #[cfg(windows)]
             use std::os::windows::fs::OpenOptionsExt;
+            self.unmoved()?;
             let path = self.path.join(plain(name)?);
             let mut options = File::options();
             options.append(true).create(true);
@@ -146,6 +151,7 @@ impl HeldDir {
         }
         #[cfg(not(unix))]
         {
+            self.unmoved()?;
             crate::platform::os::open_no_follow(&self.path.join(plain(name)?))
         }
     }
@@ -212,6 +218,8 @@ impl HeldDir {
         }
         #[cfg(not(unix))]
         {
+            self.unmoved()?;
+            to.unmoved()?;
             crate::platform::os::rename_no_replace(&self.path.join(plain(name)?), &to.path.join(plain(to_name)?))
         }
     }
@@ -225,6 +233,8 @@ impl HeldDir {
         }
         #[cfg(not(unix))]
         {
+            self.unmoved()?;
+            to.unmoved()?;
             std::fs::rename(self.path.join(plain(name)?), to.path.join(plain(to_name)?))
         }
     }
@@ -244,6 +254,34 @@ impl HeldDir {
             return false;
         };
         here.0.is_dir() && !here.0.file_type().is_symlink() && here.1 == held
+    }
+
+    /// `Ok` where this folder is still at its path ([`Self::still_at_its_path`]); otherwise
+    /// an error saying, in the user's words, that it was moved or replaced and this step
+    /// was not made. Windows asks it before every step it takes by path (a Unix program
+    /// under Wine can rename a held folder: Wine's sharing rules bind Windows programs
+    /// only), so that no file is moved, removed or made through a link put at its name.
+    pub fn unmoved(&self) -> io::Result<()> {
+        if self.still_at_its_path() {
+            return Ok(());
+        }
+        let name = self.path.file_name().unwrap_or_default().to_string_lossy().into_owned();
+        let name = phonglab_core::escape::terminal::text(&name);
+        Err(io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-held-folder-moved", name = name)))
+    }
+
+    /// Where the folder `sub`, held, is now in this folder: at its own name, or at the
+    /// name of a folder here with its identity (someone renamed it within this folder);
+    /// `None` where it is in neither (moved out of this folder, or unreadable).
+    pub fn now_in(&self, sub: &HeldDir) -> Option<PathBuf> {
+        if sub.still_at_its_path() {
+            return Some(sub.path.clone());
+        }
+        let (_, held) = crate::platform::os::file_identity(&sub.dir).ok()?;
+        self.names().ok()?.into_iter().map(|n| self.path.join(n)).find(|p| {
+            crate::platform::os::identity_at(p)
+                .is_ok_and(|(m, id)| m.is_dir() && !m.file_type().is_symlink() && id == held)
+        })
     }
 
     /// Removes the folder `sub`, held, from this folder, where it is empty: at its own name,
@@ -560,6 +598,71 @@ mod tests {
         assert!(HeldDir::open(&root.join("link")).is_err());
         assert!(HeldDir::open(&root).unwrap().open_dir(OsStr::new("link")).is_err());
         assert!(HeldDir::open(&root.join("real")).is_ok());
+    }
+
+    /// Windows under Wine (issue 59, round 2, p25): a Unix program, which Wine's sharing
+    /// rules do not bind, renames a held folder away and puts a link to another folder at its
+    /// name. Every step taken by its path is refused in words first (nothing is made, opened,
+    /// moved in or out through the link: before, a new set's files and an old set's PDFs were
+    /// moved into the folder the link led to), and the folder is found where it went.
+    #[test]
+    #[cfg(windows)]
+    fn a_held_folder_a_unix_program_renamed_is_never_worked_in_through_its_name() {
+        use std::io::Write;
+        let root = fresh("unix-swapped");
+        let (dir, away, outside) = (root.join("staging"), root.join("away"), root.join("outside"));
+        for d in [&dir, &outside, &root.join("other")] {
+            std::fs::create_dir_all(d).unwrap();
+        }
+        std::fs::write(outside.join("a.md"), "the teacher's").unwrap();
+        std::fs::write(root.join("other").join("b.md"), "to move in").unwrap();
+        let parent = HeldDir::open(&root).unwrap();
+        let held = parent.open_dir(OsStr::new("staging")).unwrap();
+        let other = parent.open_dir(OsStr::new("other")).unwrap();
+        held.create_new(OsStr::new("kept.md")).unwrap().write_all(b"in the folder held").unwrap();
+        let unix = |p: &std::path::Path| {
+            let out = std::process::Command::new("winepath").arg("-u").arg(p).output().ok()?;
+            out.status.success().then(|| String::from_utf8_lossy(&out.stdout).trim_end().to_string())
+        };
+        let (Some(dir_u), Some(away_u)) = (unix(&dir), unix(&away)) else {
+            eprintln!("not under Wine: no Unix program can rename a folder held here: nothing to test");
+            return;
+        };
+        // A Unix program run from Wine: its exit status is not Wine's to give, so its work
+        // is waited for, up to 10 s.
+        let unix_side = |program: &str, args: &[&str], done: &dyn Fn() -> bool| {
+            let _ = std::process::Command::new(program).args(args).status();
+            (0..500).any(|_| done() || (std::thread::sleep(std::time::Duration::from_millis(20)), false).1)
+        };
+        let outside_u = unix(&outside).unwrap_or_default();
+        if !unix_side(r"Z:\bin\mv", &[&dir_u, &away_u], &|| away.is_dir())
+            || !unix_side(r"Z:\bin\ln", &["-s", &outside_u, &dir_u], &|| {
+                crate::platform::links::reached_through_link(&dir)
+            })
+        {
+            eprintln!("the Unix side could not rename the folder or plant a link: nothing to test");
+            return;
+        }
+        assert!(!held.still_at_its_path(), "a link at its name is not the folder held");
+        let e = held.create_new(OsStr::new("new.md")).unwrap_err().to_string();
+        assert!(e.contains("staging") && e.contains("moved or replaced"), "{e}");
+        assert!(held.open_file(OsStr::new("a.md")).is_err(), "a file read through the link");
+        assert!(held.create_dir(OsStr::new("sub")).is_err(), "a folder made through the link");
+        assert!(crate::platform::by_handle::open_in(&held, OsStr::new("a.md")).is_err(), "opened to move or remove");
+        let b = crate::platform::by_handle::open_in(&other, OsStr::new("b.md")).unwrap();
+        assert!(b.rename_no_replace(&held, OsStr::new("b.md")).is_err(), "moved in through the link");
+        assert!(held.rename_over(OsStr::new("kept.md"), &other, OsStr::new("kept.md")).is_err());
+        let names = |d: &std::path::Path| {
+            let mut v: Vec<String> =
+                std::fs::read_dir(d).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+            v.sort();
+            v
+        };
+        assert_eq!(names(&outside), ["a.md"], "nothing made or moved outside");
+        assert_eq!(std::fs::read(outside.join("a.md")).unwrap(), b"the teacher's");
+        assert_eq!(names(&root.join("other")), ["b.md"], "nothing moved out of the other folder");
+        assert_eq!(std::fs::read(away.join("kept.md")).unwrap(), b"in the folder held");
+        assert_eq!(parent.now_in(&held), Some(away.clone()), "found where it went, by its identity");
     }
 
     /// Windows: a folder held cannot be renamed or removed by anyone (held without
