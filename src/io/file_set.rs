@@ -494,12 +494,18 @@ fn swap(held: &HeldFolder, staging: &HeldDir, j: &Journal) -> Result<(), Stop> {
     let mut moved_in: Vec<&Entry> = Vec::new();
     // Every file moved back: `false` where one could not be (something put at its name).
     let undo = |moved_aside: &[&Entry], moved_in: &[&Entry]| {
+        // Windows works by path: a working folder a Unix program renamed within the set's
+        // folder (under Wine) is worked in at its new name, found by its identity.
+        let staging_now = (cfg!(windows) && !staging.still_at_its_path()).then(|| dir.found_again(staging)).flatten();
+        let staging_at = staging_now.as_ref().unwrap_or(staging);
+        let aside_now = (cfg!(windows) && !aside.still_at_its_path()).then(|| staging_at.found_again(&aside)).flatten();
+        let aside_at = aside_now.as_ref().unwrap_or(&aside);
         let mut all = true;
         for new in moved_in {
-            all &= matches!(move_entry(dir, staging, new), Ok(Took::Done));
+            all &= matches!(move_entry(dir, staging_at, new), Ok(Took::Done));
         }
         for old in moved_aside {
-            all &= matches!(move_entry(&aside, dir, old), Ok(Took::Done));
+            all &= matches!(move_entry(aside_at, dir, old), Ok(Took::Done));
         }
         dir.sync();
         all

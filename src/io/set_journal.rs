@@ -442,6 +442,29 @@ fn read_journal(staging: &HeldDir) -> Result<Option<Journal>, String> {
     Ok(Some(j))
 }
 
+/// Is the folder `name` in the folder held `dir` a staging folder renamed within it (under
+/// Wine a Unix program can rename a folder phonglab holds: issue 59, round 2, p25), proved
+/// phonglab's by this user's journal in it naming that very folder by its identity?
+fn renamed_staging(dir: &HeldDir, name: &str) -> bool {
+    dir.open_dir(OsStr::new(name)).is_ok_and(|sub| {
+        crate::platform::os::is_this_users_alone(sub.handle())
+            && sub.has(OsStr::new(JOURNAL))
+            && matches!(read_journal(&sub), Ok(Some(_)))
+    })
+}
+
+/// `staging`, held in `parent`, where it is now: Windows works by path, so a staging folder
+/// a Unix program renamed within `parent` (under Wine) is held again at its new name, found
+/// by its identity ([`HeldDir::found_again`]); as it is otherwise.
+fn where_now(parent: &HeldDir, staging: HeldDir) -> HeldDir {
+    if cfg!(windows) && !staging.still_at_its_path() {
+        if let Some(again) = parent.found_again(&staging) {
+            return again;
+        }
+    }
+    staging
+}
+
 /// A message about `name` in `dir`, left as it is, and why.
 fn left(dir: &Path, name: &str, why: &str) -> String {
     use phonglab_core::escape::terminal::text;
@@ -462,7 +485,7 @@ pub fn recover_locked(dir: &HeldDir) -> io::Result<Vec<String>> {
             notices.push(left(shown, &name, &t!("set-why-loose-journal")));
             continue;
         }
-        if !is_staging_name(&name) || !dir.has(OsStr::new(&name)) {
+        if !dir.has(OsStr::new(&name)) || !(is_staging_name(&name) || renamed_staging(dir, &name)) {
             continue;
         }
         // Held itself: a link or a file of that name is not opened as a folder.
@@ -554,6 +577,7 @@ pub fn written_list_in(dir: &HeldDir) -> Vec<Entry> {
 /// is in it (a link, a folder, a file of the old set not moved back, a file at a staged
 /// name that is not the one staged), left there with the folder.
 pub fn throw_away(parent: &HeldDir, staging: HeldDir) -> bool {
+    let staging = where_now(parent, staging);
     let _ = remove_own(&staging, JOURNAL);
     let staged = staged_list(&staging);
     if let Ok(names) = staging.names() {

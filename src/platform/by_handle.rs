@@ -79,7 +79,10 @@ impl Opened<'_> {
     /// Moves the file opened to `to_name` in the folder held `to`, where nothing is (not
     /// even a link; `AlreadyExists` otherwise): `Ok(true)`. Unix: only where its name still
     /// holds it, and checked at its new name afterwards: `Ok(false)` where something else
-    /// was there (moved back: nothing moved).
+    /// was there (moved back: nothing moved). Windows: both folders asked first to be the
+    /// ones held ([`HeldDir::unmoved`]), and the new name checked afterwards to hold the file
+    /// checked (Wine renames by the path it was opened at): `Ok(false)` and moved back where
+    /// not; `Err` where the new folder was found moved (the file moved back).
     pub fn rename_no_replace(self, to: &HeldDir, to_name: &OsStr) -> io::Result<bool> {
         #[cfg(windows)]
         {
@@ -93,6 +96,15 @@ impl Opened<'_> {
                     let _ = windows::rename_no_replace(&self.file, &self.dir.path().join(&self.name));
                 }
                 return Err(e);
+            }
+            // Wine renames by the path the handle was opened at: where its folder was swapped
+            // for a link between the look and the move, the file the link leads to moved
+            // instead. What is now at the new name must be the file checked; anything else
+            // goes back by the way it came, and nothing is said moved.
+            let (at, mine) = (to.path().join(to_name), crate::platform::os::file_identity(&self.file)?.1);
+            if !crate::platform::os::identity_at(&at).is_ok_and(|(m, id)| m.is_file() && id == mine) {
+                let _ = crate::platform::os::rename_no_replace(&at, &self.dir.path().join(&self.name));
+                return Ok(false);
             }
             Ok(true)
         }

@@ -284,6 +284,17 @@ impl HeldDir {
         })
     }
 
+    /// The folder `sub`, held, held again where it is now in this folder ([`Self::now_in`]),
+    /// checked to be the very folder by its identity: Windows works by path, so a working
+    /// folder a Unix program renamed within this folder (under Wine) is worked in at its new
+    /// name. `None` where it is not in this folder.
+    pub fn found_again(&self, sub: &HeldDir) -> Option<HeldDir> {
+        let at = self.now_in(sub)?;
+        let again = HeldDir::open(&at).ok()?;
+        let id = |d: &HeldDir| crate::platform::os::file_identity(&d.dir).ok().map(|(_, id)| id);
+        (id(&again)? == id(sub)?).then_some(again)
+    }
+
     /// Removes the folder `sub`, held, from this folder, where it is empty: at its own name,
     /// or (Unix) at whatever name it has now in this folder (someone renamed it), found by
     /// its identity. `Err` where it is not empty, or not found in this folder (moved out of
@@ -307,6 +318,9 @@ impl HeldDir {
         }
         #[cfg(windows)]
         {
+            // Renamed within this folder by a Unix program (under Wine): removed at its new
+            // name, found by its identity, as on Unix.
+            let sub = if sub.still_at_its_path() { sub } else { self.found_again(&sub).unwrap_or(sub) };
             windows::remove_dir(sub.dir, &sub.path)
         }
         #[cfg(not(any(unix, windows)))]
@@ -663,6 +677,10 @@ mod tests {
         assert_eq!(names(&root.join("other")), ["b.md"], "nothing moved out of the other folder");
         assert_eq!(std::fs::read(away.join("kept.md")).unwrap(), b"in the folder held");
         assert_eq!(parent.now_in(&held), Some(away.clone()), "found where it went, by its identity");
+        let again = parent.found_again(&held).expect("held again where it went");
+        assert_eq!(again.path(), away);
+        again.create_new(OsStr::new("new.md")).unwrap().write_all(b"made where it went").unwrap();
+        assert_eq!(std::fs::read(away.join("new.md")).unwrap(), b"made where it went");
     }
 
     /// Windows: a folder held cannot be renamed or removed by anyone (held without
