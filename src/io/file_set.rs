@@ -207,7 +207,9 @@ pub fn write_set_held(
     let staging = new_staging(&held.held)?;
     match stage_and_swap(held, &staging, set, &belongs) {
         Ok(cleaned) => {
-            let name = staging.path().file_name().unwrap_or_default().to_string_lossy().into_owned();
+            // Where it is now (Windows: a Unix program may have renamed it, under Wine).
+            let at = held.held.now_in(&staging).unwrap_or_else(|| staging.path().to_path_buf());
+            let name = at.file_name().unwrap_or_default().to_string_lossy().into_owned();
             // The staging folder, empty, removed through the folder held (where someone
             // renamed it within the folder meanwhile, at its new name: found by identity).
             if cleaned {

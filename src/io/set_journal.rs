@@ -457,10 +457,11 @@ fn renamed_staging(dir: &HeldDir, name: &str) -> bool {
 /// a Unix program renamed within `parent` (under Wine) is held again at its new name, found
 /// by its identity ([`HeldDir::found_again`]); as it is otherwise.
 fn where_now(parent: &HeldDir, staging: HeldDir) -> HeldDir {
-    if cfg!(windows) && !staging.still_at_its_path() {
-        if let Some(again) = parent.found_again(&staging) {
-            return again;
-        }
+    if cfg!(windows)
+        && !staging.still_at_its_path()
+        && let Some(again) = parent.found_again(&staging)
+    {
+        return again;
     }
     staging
 }

@@ -82,7 +82,8 @@ impl Opened<'_> {
     /// was there (moved back: nothing moved). Windows: both folders asked first to be the
     /// ones held ([`HeldDir::unmoved`]), and the new name checked afterwards to hold the file
     /// checked (Wine renames by the path it was opened at): `Ok(false)` and moved back where
-    /// not; `Err` where the new folder was found moved (the file moved back).
+    /// not; `Err` where the new folder was found moved and the file was moved back
+    /// (`Ok(true)` where it could not be: it is in the folder it was moved to).
     pub fn rename_no_replace(self, to: &HeldDir, to_name: &OsStr) -> io::Result<bool> {
         #[cfg(windows)]
         {
@@ -92,17 +93,24 @@ impl Opened<'_> {
             // Moved between the look and the move: the file is put back where it was, by
             // its handle, when its own folder is still where it was; the error says so.
             if let Err(e) = to.unmoved() {
-                if self.dir.unmoved().is_ok() {
-                    let _ = windows::rename_no_replace(&self.file, &self.dir.path().join(&self.name));
+                if self.dir.unmoved().is_ok()
+                    && windows::rename_no_replace(&self.file, &self.dir.path().join(&self.name)).is_ok()
+                {
+                    return Err(e);
                 }
-                return Err(e);
+                // Not put back: it is in its new folder, wherever that went, and the
+                // caller's undo looks for it there (found by its identity).
+                return Ok(true);
             }
             // Wine renames by the path the handle was opened at: where its folder was swapped
             // for a link between the look and the move, the file the link leads to moved
             // instead. What is now at the new name must be the file checked; anything else
             // goes back by the way it came, and nothing is said moved.
+            // (Its new folder moved away just after the move: the file is taken to be in it,
+            // where the caller's undo, finding that folder by its identity, asks for it.)
             let (at, mine) = (to.path().join(to_name), crate::platform::os::file_identity(&self.file)?.1);
-            if !crate::platform::os::identity_at(&at).is_ok_and(|(m, id)| m.is_file() && id == mine) {
+            let arrived = || crate::platform::os::identity_at(&at).is_ok_and(|(m, id)| m.is_file() && id == mine);
+            if !arrived() && to.still_at_its_path() {
                 let _ = crate::platform::os::rename_no_replace(&at, &self.dir.path().join(&self.name));
                 return Ok(false);
             }

@@ -31,6 +31,10 @@ use std::path::{Path, PathBuf};
 pub struct HeldDir {
     dir: File,
     path: PathBuf,
+    /// Its identity, read through the handle when it was held (under Wine a handle whose
+    /// folder a Unix program renamed is read by a path that no longer leads to it, so it is
+    /// not read again).
+    id: Option<(u64, u64)>,
 }
 
 impl HeldDir {
@@ -44,7 +48,8 @@ impl HeldDir {
         let dir = windows::open_dir(path)?;
         #[cfg(not(any(unix, windows)))]
         let dir = File::open(path)?;
-        Ok(HeldDir { dir, path: path.to_path_buf() })
+        let id = crate::platform::os::file_identity(&dir).ok().map(|(_, id)| id);
+        Ok(HeldDir { dir, path: path.to_path_buf(), id })
     }
 
     /// The path it was held at (for messages; Windows: the path the steps go by).
@@ -66,7 +71,8 @@ impl HeldDir {
         let dir = windows::open_dir(&path)?;
         #[cfg(not(any(unix, windows)))]
         let dir = File::open(&path)?;
-        Ok(HeldDir { dir, path })
+        let id = crate::platform::os::file_identity(&dir).ok().map(|(_, id)| id);
+        Ok(HeldDir { dir, path, id })
     }
 
     /// Makes the folder `name` in this one, where nothing is (`AlreadyExists` otherwise, a
@@ -248,9 +254,7 @@ impl HeldDir {
     /// Is the entry at this folder's own path still this folder itself (not moved away,
     /// not a link or another folder put at its name)?
     pub fn still_at_its_path(&self) -> bool {
-        let (Ok(here), Ok((_, held))) =
-            (crate::platform::os::identity_at(&self.path), crate::platform::os::file_identity(&self.dir))
-        else {
+        let (Ok(here), Some(held)) = (crate::platform::os::identity_at(&self.path), self.id) else {
             return false;
         };
         here.0.is_dir() && !here.0.file_type().is_symlink() && here.1 == held
@@ -277,7 +281,7 @@ impl HeldDir {
         if sub.still_at_its_path() {
             return Some(sub.path.clone());
         }
-        let (_, held) = crate::platform::os::file_identity(&sub.dir).ok()?;
+        let held = sub.id?;
         self.names().ok()?.into_iter().map(|n| self.path.join(n)).find(|p| {
             crate::platform::os::identity_at(p)
                 .is_ok_and(|(m, id)| m.is_dir() && !m.file_type().is_symlink() && id == held)
@@ -291,8 +295,7 @@ impl HeldDir {
     pub fn found_again(&self, sub: &HeldDir) -> Option<HeldDir> {
         let at = self.now_in(sub)?;
         let again = HeldDir::open(&at).ok()?;
-        let id = |d: &HeldDir| crate::platform::os::file_identity(&d.dir).ok().map(|(_, id)| id);
-        (id(&again)? == id(sub)?).then_some(again)
+        (again.id? == sub.id?).then_some(again)
     }
 
     /// Removes the folder `sub`, held, from this folder, where it is empty: at its own name,
@@ -321,7 +324,7 @@ impl HeldDir {
             // Renamed within this folder by a Unix program (under Wine): removed at its new
             // name, found by its identity, as on Unix.
             let sub = if sub.still_at_its_path() { sub } else { self.found_again(&sub).unwrap_or(sub) };
-            windows::remove_dir(sub.dir, &sub.path)
+            windows::remove_dir(sub.dir, sub.id, &sub.path)
         }
         #[cfg(not(any(unix, windows)))]
         {
@@ -532,8 +535,8 @@ mod windows {
         open_itself(path, GENERIC_READ, SHARE_NO_DELETE)
     }
 
-    pub fn remove_dir(held: File, path: &Path) -> io::Result<()> {
-        let (_, id) = crate::platform::os::file_identity(&held)?;
+    pub fn remove_dir(held: File, id: Option<(u64, u64)>, path: &Path) -> io::Result<()> {
+        let id = id.ok_or_else(|| io::Error::new(io::ErrorKind::NotFound, "its identity was not read"))?;
         drop(held);
         let dir = open_itself(path, DELETE | READ_ATTRIBUTES, SHARE_ALL)?;
         if crate::platform::os::file_identity(&dir)?.1 != id {
