@@ -699,7 +699,11 @@ fn a_file_put_at_a_staged_name_in_a_stopped_writers_staging_folder_is_left() {
     with_fault(Fault::KilledAtStep(2), || write_set(&dir, &new_set(), belongs)).unwrap_err();
     let (staging, j) = journal_in(&dir).expect("a journal");
     assert!(!j.decided && j.new.is_empty(), "the journal names no staged file yet");
-    std::fs::remove_file(staging.join("a.md")).unwrap();
+    // The staged a.md moved away, not removed: alive, its identity cannot be given to the
+    // classmate's file (Wine's Windows identity is the inode, which a removal frees for the
+    // next file; NTFS's file index never repeats).
+    let kept = dir.with_extension("staged-a.md");
+    std::fs::rename(staging.join("a.md"), &kept).unwrap();
     std::fs::write(staging.join("a.md"), "a classmate's").unwrap();
     let notices = recover(&dir).unwrap();
     assert_eq!(notices.len(), 1, "{notices:?}");
@@ -707,6 +711,7 @@ fn a_file_put_at_a_staged_name_in_a_stopped_writers_staging_folder_is_left() {
     assert_eq!(std::fs::read(staging.join("a.md")).unwrap(), b"a classmate's", "left as it is");
     assert!(!staging.join("b.md").exists(), "the staged b.md, named by its identity, removed");
     assert_eq!(user_files(&dir), old, "the old set whole");
+    std::fs::remove_file(&kept).unwrap();
 }
 
 /// Windows under Wine: renames `from` to `to` as a Unix program does (Wine's sharing rules
