@@ -207,7 +207,9 @@ pub fn write_set_held(
     let staging = new_staging(&held.held)?;
     match stage_and_swap(held, &staging, set, &belongs) {
         Ok(cleaned) => {
-            let name = staging.path().file_name().unwrap_or_default().to_string_lossy().into_owned();
+            // Where it is now (Windows: a Unix program may have renamed it, under Wine).
+            let at = held.held.now_in(&staging).unwrap_or_else(|| staging.path().to_path_buf());
+            let name = at.file_name().unwrap_or_default().to_string_lossy().into_owned();
             // The staging folder, empty, removed through the folder held (where someone
             // renamed it within the folder meanwhile, at its new name: found by identity).
             if cleaned {
@@ -287,6 +289,13 @@ fn new_staging(dir: &HeldDir) -> Result<HeldDir, WriteError> {
         match dir.create_dir(name.as_os_str()) {
             Ok(staging) => return Ok(staging),
             Err(e) if e.kind() == io::ErrorKind::AlreadyExists && tries < 100 => tries += 1,
+            // Made, then renamed and replaced by a link before it was held (under Wine a
+            // Unix program can: "The filename cannot be resolved. (os error 1921)").
+            Err(e) if crate::platform::os::is_link_refused(&e) || e.kind() == io::ErrorKind::NotADirectory => {
+                let shown = phonglab_core::escape::terminal::text(&name.to_string_lossy());
+                let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-staging-taken", name = shown));
+                return Err(WriteError::new(dir.path(), set_steps::CREATE_STAGING, e, UNTOUCHED));
+            }
             Err(e) => return Err(WriteError::new(dir.path(), set_steps::CREATE_STAGING, e, UNTOUCHED)),
         }
     }
@@ -401,26 +410,41 @@ fn staging_left(dir: &Path, name: &str) -> String {
 /// path (its identity, or a link there): moved and replaced by a link to another folder
 /// while the set was written (issue 59, #27, F4, the hostile's review). Nothing was written
 /// through the link (every step goes through the folders held), but the teacher would not
-/// find the set where they asked for it: the set is refused, and undone. `None`: both are
-/// where they were.
-fn moved(held: &HeldFolder, staging: &HeldDir) -> Option<(std::path::PathBuf, String)> {
+/// find the set where they asked for it: the set is refused, and undone. `None`: all are
+/// where they were. Windows (a Unix program under Wine can rename a folder Windows holds)
+/// says what it checked instead: each step by path asked first that the folder was the one
+/// held ([`HeldDir::unmoved`]), and where the working folder is now (issue 59, round 2).
+fn moved(held: &HeldFolder, staging: &HeldDir, aside: Option<&HeldDir>) -> Option<(std::path::PathBuf, String)> {
     let dir = held.dir();
     if !held.held.still_at_its_path() || crate::platform::links::reached_through_link(dir) {
-        return Some((dir.to_path_buf(), crate::t!("set-folder-replaced")));
+        let why = if cfg!(windows) { crate::t!("set-folder-replaced-asked") } else { crate::t!("set-folder-replaced") };
+        return Some((dir.to_path_buf(), why));
     }
-    if !staging.still_at_its_path() || crate::platform::links::reached_through_link(staging.path()) {
-        let name = staging.path().file_name().unwrap_or_default().to_string_lossy().into_owned();
-        let name = phonglab_core::escape::terminal::text(&name);
-        return Some((dir.to_path_buf(), crate::t!("set-staging-replaced", name = name)));
+    let name = |d: &HeldDir| d.path().file_name().unwrap_or_default().to_string_lossy().into_owned();
+    let (parent, gone) = if !staging.still_at_its_path() || crate::platform::links::reached_through_link(staging.path())
+    {
+        (&held.held, staging)
+    } else if let Some(aside) = aside.filter(|a| !a.still_at_its_path()) {
+        (staging, aside)
+    } else {
+        return None;
+    };
+    let shown = phonglab_core::escape::terminal::text(&name(gone));
+    if !cfg!(windows) {
+        return Some((dir.to_path_buf(), crate::t!("set-staging-replaced", name = shown)));
     }
-    None
+    let now = match parent.now_in(gone) {
+        Some(at) => crate::t!("set-staging-now-at", path = super::reasons::shown(&at)),
+        None => crate::t!("set-staging-now-gone"),
+    };
+    Some((dir.to_path_buf(), crate::t!("set-staging-replaced-asked", name = shown, now = now)))
 }
 
 /// Refuses the swap before it is decided where the folder or its staging folder moved
 /// ([`moved`]): the staging folder is thrown away through its handle, so the folder is as
 /// it was.
 fn refuse_moved(held: &HeldFolder, staging: &HeldDir) -> Result<(), Stop> {
-    match moved(held, staging) {
+    match moved(held, staging, None) {
         None => Ok(()),
         Some((at, why)) => {
             let e = io::Error::new(io::ErrorKind::InvalidInput, why);
@@ -472,12 +496,18 @@ fn swap(held: &HeldFolder, staging: &HeldDir, j: &Journal) -> Result<(), Stop> {
     let mut moved_in: Vec<&Entry> = Vec::new();
     // Every file moved back: `false` where one could not be (something put at its name).
     let undo = |moved_aside: &[&Entry], moved_in: &[&Entry]| {
+        // Windows works by path: a working folder a Unix program renamed within the set's
+        // folder (under Wine) is worked in at its new name, found by its identity.
+        let staging_now = (cfg!(windows) && !staging.still_at_its_path()).then(|| dir.found_again(staging)).flatten();
+        let staging_at = staging_now.as_ref().unwrap_or(staging);
+        let aside_now = (cfg!(windows) && !aside.still_at_its_path()).then(|| staging_at.found_again(&aside)).flatten();
+        let aside_at = aside_now.as_ref().unwrap_or(&aside);
         let mut all = true;
         for new in moved_in {
-            all &= matches!(move_entry(dir, staging, new), Ok(Took::Done));
+            all &= matches!(move_entry(dir, staging_at, new), Ok(Took::Done));
         }
         for old in moved_aside {
-            all &= matches!(move_entry(&aside, dir, old), Ok(Took::Done));
+            all &= matches!(move_entry(aside_at, dir, old), Ok(Took::Done));
         }
         dir.sync();
         all
@@ -491,7 +521,8 @@ fn swap(held: &HeldFolder, staging: &HeldDir, j: &Journal) -> Result<(), Stop> {
             Stop::Left(WriteError::new(at, "write-step-rename", e, set_steps::KEPT_STAGING))
         }
     };
-    let gone = || moved(held, staging).map(|(at, why)| (at, io::Error::new(io::ErrorKind::InvalidInput, why)));
+    let gone =
+        || moved(held, staging, Some(&aside)).map(|(at, why)| (at, io::Error::new(io::ErrorKind::InvalidInput, why)));
     for old in &j.old {
         meanwhile(&path.join(&old.name));
         if let Some((at, e)) = gone() {

@@ -22,6 +22,14 @@
 //!   only plain files of the target folder, each with its identity, size and hash
 //!   (SipHash-1-3, 128 bits): the new set's files, written in that run into the staging
 //!   folder, and the old set's files it replaces;
+//! - the identities are public and the hash is unkeyed, so anyone can write a record in
+//!   phonglab's exact form: a record (the journal, the list of what a set wrote, the list of
+//!   what was staged) and a staging folder are trusted only when they are this user's alone
+//!   (`platform::os::is_this_users_alone`, asked through the handle they are read by: on
+//!   Unix owned by this user and writable by no one else, which phonglab makes them, 0600
+//!   and 0700; on Windows owned by this user). A classmate's forged list or journal in a
+//!   shared folder (mode 1777, where they cannot delete the teacher's files themselves) is
+//!   left as it is, and said (issue 59, round 2);
 //! - recovery acts on a staging folder only when its journal is there, read without
 //!   following a link, and names that very folder; it moves or removes a file only when
 //!   the file is the one the journal names (identity, size and hash), and it never renames
@@ -327,7 +335,7 @@ fn is_staging_name(name: &str) -> bool {
 /// (never through a link), written, synced and closed; on failure removed (as phonglab's
 /// own, in its own folder). Its identity, read through the handle that made it.
 fn write_new_in(dir: &HeldDir, name: &str, bytes: &[u8]) -> Result<Identity, (&'static str, io::Error)> {
-    let file = dir.create_new(OsStr::new(name)).map_err(|e| ("write-step-create", e))?;
+    let file = dir.create_private(OsStr::new(name)).map_err(|e| ("write-step-create", e))?;
     let id = Identity::of_file(&file).map(|(_, id)| id);
     let result = super::atomic_write::write_file(file, bytes);
     if result.is_err() {
@@ -367,6 +375,9 @@ enum Record {
     Unreadable(io::Error),
     /// Not a regular file (a link is not followed), or past the cap.
     NotOne,
+    /// Not this user's alone (another user's, or others may write it): anyone can write
+    /// phonglab's form, so only the owner says phonglab wrote it (issue 59, round 2).
+    NotOwn,
 }
 
 /// The bytes of one of phonglab's records at `path`: opened without following a link,
@@ -401,6 +412,9 @@ fn read_record_open(file: std::fs::File) -> Result<Vec<u8>, Record> {
     if !meta.is_file() || meta.len() > MAX_JOURNAL_BYTES {
         return Err(Record::NotOne);
     }
+    if !crate::platform::os::is_this_users_alone(&file) {
+        return Err(Record::NotOwn);
+    }
     let mut bytes = Vec::new();
     file.take(MAX_JOURNAL_BYTES).read_to_end(&mut bytes).map_err(Record::Unreadable)?;
     Ok(bytes)
@@ -416,6 +430,7 @@ fn read_journal(staging: &HeldDir) -> Result<Option<Journal>, String> {
         Err(Record::Missing) => return Ok(None),
         Err(Record::Unreadable(e)) => return Err(untrusted(&crate::io::reasons::io_reason(&e))),
         Err(Record::NotOne) => return Err(untrusted(&t!("set-why-not-a-journal"))),
+        Err(Record::NotOwn) => return Err(untrusted(&t!("set-why-not-own"))),
     };
     let j: Journal = serde_json::from_slice(&bytes).map_err(|_| untrusted(&t!("set-why-not-a-journal")))?;
     let (here, id) = Identity::of_file(staging.handle()).map_err(|e| untrusted(&crate::io::reasons::io_reason(&e)))?;
@@ -435,6 +450,30 @@ fn read_journal(staging: &HeldDir) -> Result<Option<Journal>, String> {
         return Err(untrusted(&t!("set-why-not-a-journal")));
     }
     Ok(Some(j))
+}
+
+/// Is the folder `name` in the folder held `dir` a staging folder renamed within it (under
+/// Wine a Unix program can rename a folder phonglab holds: issue 59, round 2, p25), proved
+/// phonglab's by this user's journal in it naming that very folder by its identity?
+fn renamed_staging(dir: &HeldDir, name: &str) -> bool {
+    dir.open_dir(OsStr::new(name)).is_ok_and(|sub| {
+        crate::platform::os::is_this_users_alone(sub.handle())
+            && sub.has(OsStr::new(JOURNAL))
+            && matches!(read_journal(&sub), Ok(Some(_)))
+    })
+}
+
+/// `staging`, held in `parent`, where it is now: Windows works by path, so a staging folder
+/// a Unix program renamed within `parent` (under Wine) is held again at its new name, found
+/// by its identity ([`HeldDir::found_again`]); as it is otherwise.
+fn where_now(parent: &HeldDir, staging: HeldDir) -> HeldDir {
+    if cfg!(windows)
+        && !staging.still_at_its_path()
+        && let Some(again) = parent.found_again(&staging)
+    {
+        return again;
+    }
+    staging
 }
 
 /// A message about `name` in `dir`, left as it is, and why.
@@ -457,7 +496,7 @@ pub fn recover_locked(dir: &HeldDir) -> io::Result<Vec<String>> {
             notices.push(left(shown, &name, &t!("set-why-loose-journal")));
             continue;
         }
-        if !is_staging_name(&name) || !dir.has(OsStr::new(&name)) {
+        if !dir.has(OsStr::new(&name)) || !(is_staging_name(&name) || renamed_staging(dir, &name)) {
             continue;
         }
         // Held itself: a link or a file of that name is not opened as a folder.
@@ -465,6 +504,12 @@ pub fn recover_locked(dir: &HeldDir) -> io::Result<Vec<String>> {
             notices.push(left(shown, &name, &t!("set-why-not-a-folder")));
             continue;
         };
+        // Made by this user alone (mode 0700): another user's folder, or one others may
+        // write into, holds nothing phonglab can trust, and is not its to empty or remove.
+        if !crate::platform::os::is_this_users_alone(staging.handle()) {
+            notices.push(left(shown, &name, &t!("set-why-folder-not-own")));
+            continue;
+        }
         match read_journal(&staging) {
             Ok(Some(j)) if j.decided => {
                 if let Err(why) = finish(dir, staging, &j) {
@@ -493,7 +538,8 @@ pub fn recover_locked(dir: &HeldDir) -> io::Result<Vec<String>> {
 
 /// Refuses the folder `dir` when its list of what phonglab wrote ([`WRITTEN`]) is there but
 /// is not one phonglab can have written: a link (dangling or not), a pipe, a device, a
-/// folder, a file past 1 MiB, or a file not in phonglab's form (hand-written). Such a thing is never followed, read or replaced: a planted
+/// folder, a file past 1 MiB, a file not in phonglab's form (hand-written), or one that is
+/// not this user's alone (another user's, or others may write it: a forged list). Such a thing is never followed, read or replaced: a planted
 /// link would send the list (its temporary file and its rename) to the file it names, and
 /// a planted pipe would pass for an empty list, so that the teacher's files were blamed for
 /// it. Called before anything is written, and again under the folder's lock.
@@ -509,6 +555,7 @@ pub fn check_records(dir: &Path) -> Result<(), super::atomic_write::WriteError> 
             refused(io::Error::new(io::ErrorKind::InvalidData, t!("set-record-not-phonglabs")))
         }
         Ok(_) | Err(Record::Missing) => Ok(()),
+        Err(Record::NotOwn) => refused(io::Error::new(io::ErrorKind::InvalidData, t!("set-record-not-own"))),
         Err(Record::Unreadable(e)) if !crate::platform::os::is_link_refused(&e) => refused(e),
         Err(_) => refused(io::Error::new(io::ErrorKind::InvalidInput, t!("set-record-not-one"))),
     }
@@ -541,6 +588,7 @@ pub fn written_list_in(dir: &HeldDir) -> Vec<Entry> {
 /// is in it (a link, a folder, a file of the old set not moved back, a file at a staged
 /// name that is not the one staged), left there with the folder.
 pub fn throw_away(parent: &HeldDir, staging: HeldDir) -> bool {
+    let staging = where_now(parent, staging);
     let _ = remove_own(&staging, JOURNAL);
     let staged = staged_list(&staging);
     if let Ok(names) = staging.names() {

@@ -28,10 +28,10 @@ use super::held_dir::HeldDir;
 pub struct Opened<'a> {
     file: File,
     /// The folder it was opened in, and its name there (Unix: asked again before the move
-    /// or the removal, through the folder's descriptor; Windows acts through the handle).
-    #[cfg_attr(windows, allow(dead_code))]
+    /// or the removal, through the folder's descriptor; Windows acts through the handle,
+    /// asking first that the folders are still at their paths, and moves back a file whose
+    /// new folder was found moved meanwhile).
     dir: &'a HeldDir,
-    #[cfg_attr(windows, allow(dead_code))]
     name: OsString,
 }
 
@@ -40,8 +40,13 @@ pub struct Opened<'a> {
 /// another name, Wine's Unix link), or where it cannot be opened (Windows: another program
 /// holds it open without sharing its deletion: `ERROR_SHARING_VIOLATION`).
 pub fn open_in<'a>(dir: &'a HeldDir, name: &OsStr) -> io::Result<Opened<'a>> {
+    // Windows opens by path: the folder is asked first to be the one held (under Wine a
+    // Unix program can rename it and put a link at its name; issue 59, round 2).
     #[cfg(windows)]
-    let file = windows::open(&dir.path().join(name))?;
+    let file = {
+        dir.unmoved()?;
+        windows::open(&dir.path().join(name))?
+    };
     #[cfg(not(windows))]
     let file = dir.open_file(name)?;
     Ok(Opened { file, dir, name: name.to_os_string() })
@@ -59,6 +64,7 @@ impl Opened<'_> {
     pub fn remove(self) -> io::Result<bool> {
         #[cfg(windows)]
         {
+            self.dir.unmoved()?;
             windows::remove(&self.file).map(|()| true)
         }
         #[cfg(not(windows))]
@@ -73,11 +79,42 @@ impl Opened<'_> {
     /// Moves the file opened to `to_name` in the folder held `to`, where nothing is (not
     /// even a link; `AlreadyExists` otherwise): `Ok(true)`. Unix: only where its name still
     /// holds it, and checked at its new name afterwards: `Ok(false)` where something else
-    /// was there (moved back: nothing moved).
+    /// was there (moved back: nothing moved). Windows: both folders asked first to be the
+    /// ones held ([`HeldDir::unmoved`]), and the new name checked afterwards to hold the file
+    /// checked (Wine renames by the path it was opened at): `Ok(false)` and moved back where
+    /// not; `Err` where the new folder was found moved and the file was moved back
+    /// (`Ok(true)` where it could not be: it is in the folder it was moved to).
     pub fn rename_no_replace(self, to: &HeldDir, to_name: &OsStr) -> io::Result<bool> {
         #[cfg(windows)]
         {
-            windows::rename_no_replace(&self.file, &to.path().join(to_name)).map(|()| true)
+            self.dir.unmoved()?;
+            to.unmoved()?;
+            windows::rename_no_replace(&self.file, &to.path().join(to_name))?;
+            // Moved between the look and the move: the file is put back where it was, by
+            // its handle, when its own folder is still where it was; the error says so.
+            if let Err(e) = to.unmoved() {
+                if self.dir.unmoved().is_ok()
+                    && windows::rename_no_replace(&self.file, &self.dir.path().join(&self.name)).is_ok()
+                {
+                    return Err(e);
+                }
+                // Not put back: it is in its new folder, wherever that went, and the
+                // caller's undo looks for it there (found by its identity).
+                return Ok(true);
+            }
+            // Wine renames by the path the handle was opened at: where its folder was swapped
+            // for a link between the look and the move, the file the link leads to moved
+            // instead. What is now at the new name must be the file checked; anything else
+            // goes back by the way it came, and nothing is said moved.
+            // (Its new folder moved away just after the move: the file is taken to be in it,
+            // where the caller's undo, finding that folder by its identity, asks for it.)
+            let (at, mine) = (to.path().join(to_name), crate::platform::os::file_identity(&self.file)?.1);
+            let arrived = || crate::platform::os::identity_at(&at).is_ok_and(|(m, id)| m.is_file() && id == mine);
+            if !arrived() && to.still_at_its_path() {
+                let _ = crate::platform::os::rename_no_replace(&at, &self.dir.path().join(&self.name));
+                return Ok(false);
+            }
+            Ok(true)
         }
         #[cfg(not(windows))]
         {

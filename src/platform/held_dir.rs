@@ -31,6 +31,10 @@ use std::path::{Path, PathBuf};
 pub struct HeldDir {
     dir: File,
     path: PathBuf,
+    /// Its identity, read through the handle when it was held (under Wine a handle whose
+    /// folder a Unix program renamed is read by a path that no longer leads to it, so it is
+    /// not read again).
+    id: Option<(u64, u64)>,
 }
 
 impl HeldDir {
@@ -44,7 +48,8 @@ impl HeldDir {
         let dir = windows::open_dir(path)?;
         #[cfg(not(any(unix, windows)))]
         let dir = File::open(path)?;
-        Ok(HeldDir { dir, path: path.to_path_buf() })
+        let id = crate::platform::os::file_identity(&dir).ok().map(|(_, id)| id);
+        Ok(HeldDir { dir, path: path.to_path_buf(), id })
     }
 
     /// The path it was held at (for messages; Windows: the path the steps go by).
@@ -66,16 +71,21 @@ impl HeldDir {
         let dir = windows::open_dir(&path)?;
         #[cfg(not(any(unix, windows)))]
         let dir = File::open(&path)?;
-        Ok(HeldDir { dir, path })
+        let id = crate::platform::os::file_identity(&dir).ok().map(|(_, id)| id);
+        Ok(HeldDir { dir, path, id })
     }
 
     /// Makes the folder `name` in this one, where nothing is (`AlreadyExists` otherwise, a
-    /// link included), and holds it.
+    /// link included), for this user alone (Unix: mode 0700: a staging or aside folder,
+    /// trusted later only when no one else can have put anything in it), and holds it.
     pub fn create_dir(&self, name: &OsStr) -> io::Result<HeldDir> {
         #[cfg(unix)]
         unix::mkdir(&self.dir, plain(name)?)?;
         #[cfg(not(unix))]
-        std::fs::create_dir(self.path.join(plain(name)?))?;
+        {
+            self.unmoved()?;
+            std::fs::create_dir(self.path.join(plain(name)?))?;
+        }
         self.open_dir(name)
     }
 
@@ -88,12 +98,27 @@ impl HeldDir {
         }
         #[cfg(not(unix))]
         {
+            self.unmoved()?;
             File::options().write(true).create_new(true).open(self.path.join(plain(name)?))
         }
     }
 
+    /// Creates the new file `name` in this folder, to write, for this user alone (Unix:
+    /// mode 0600, whatever the umask): one of phonglab's records, which it trusts later only
+    /// when no one else can have written it ([`crate::platform::os::is_this_users_alone`]).
+    pub fn create_private(&self, name: &OsStr) -> io::Result<File> {
+        #[cfg(unix)]
+        {
+            unix::create_private(&self.dir, plain(name)?)
+        }
+        #[cfg(not(unix))]
+        {
+            self.create_new(name)
+        }
+    }
+
     /// Opens the file `name` in this folder to append to, made if missing (never through a
-    /// link).
+    /// link) for this user alone (Unix: mode 0600): a record of phonglab's.
     pub fn append(&self, name: &OsStr) -> io::Result<File> {
         #[cfg(unix)]
         {
@@ -103,6 +128,7 @@ impl HeldDir {
         {
             #[cfg(windows)]
             use std::os::windows::fs::OpenOptionsExt;
+            self.unmoved()?;
             let path = self.path.join(plain(name)?);
             let mut options = File::options();
             options.append(true).create(true);
@@ -131,6 +157,7 @@ impl HeldDir {
         }
         #[cfg(not(unix))]
         {
+            self.unmoved()?;
             crate::platform::os::open_no_follow(&self.path.join(plain(name)?))
         }
     }
@@ -197,6 +224,8 @@ impl HeldDir {
         }
         #[cfg(not(unix))]
         {
+            self.unmoved()?;
+            to.unmoved()?;
             crate::platform::os::rename_no_replace(&self.path.join(plain(name)?), &to.path.join(plain(to_name)?))
         }
     }
@@ -210,6 +239,8 @@ impl HeldDir {
         }
         #[cfg(not(unix))]
         {
+            self.unmoved()?;
+            to.unmoved()?;
             std::fs::rename(self.path.join(plain(name)?), to.path.join(plain(to_name)?))
         }
     }
@@ -223,12 +254,48 @@ impl HeldDir {
     /// Is the entry at this folder's own path still this folder itself (not moved away,
     /// not a link or another folder put at its name)?
     pub fn still_at_its_path(&self) -> bool {
-        let (Ok(here), Ok((_, held))) =
-            (crate::platform::os::identity_at(&self.path), crate::platform::os::file_identity(&self.dir))
-        else {
+        let (Ok(here), Some(held)) = (crate::platform::os::identity_at(&self.path), self.id) else {
             return false;
         };
         here.0.is_dir() && !here.0.file_type().is_symlink() && here.1 == held
+    }
+
+    /// `Ok` where this folder is still at its path ([`Self::still_at_its_path`]); otherwise
+    /// an error saying, in the user's words, that it was moved or replaced and this step
+    /// was not made. Windows asks it before every step it takes by path (a Unix program
+    /// under Wine can rename a held folder: Wine's sharing rules bind Windows programs
+    /// only), so that no file is moved, removed or made through a link put at its name.
+    pub fn unmoved(&self) -> io::Result<()> {
+        if self.still_at_its_path() {
+            return Ok(());
+        }
+        let name = self.path.file_name().unwrap_or_default().to_string_lossy().into_owned();
+        let name = phonglab_core::escape::terminal::text(&name);
+        Err(io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-held-folder-moved", name = name)))
+    }
+
+    /// Where the folder `sub`, held, is now in this folder: at its own name, or at the
+    /// name of a folder here with its identity (someone renamed it within this folder);
+    /// `None` where it is in neither (moved out of this folder, or unreadable).
+    pub fn now_in(&self, sub: &HeldDir) -> Option<PathBuf> {
+        if sub.still_at_its_path() {
+            return Some(sub.path.clone());
+        }
+        let held = sub.id?;
+        self.names().ok()?.into_iter().map(|n| self.path.join(n)).find(|p| {
+            crate::platform::os::identity_at(p)
+                .is_ok_and(|(m, id)| m.is_dir() && !m.file_type().is_symlink() && id == held)
+        })
+    }
+
+    /// The folder `sub`, held, held again where it is now in this folder ([`Self::now_in`]),
+    /// checked to be the very folder by its identity: Windows works by path, so a working
+    /// folder a Unix program renamed within this folder (under Wine) is worked in at its new
+    /// name. `None` where it is not in this folder.
+    pub fn found_again(&self, sub: &HeldDir) -> Option<HeldDir> {
+        let at = self.now_in(sub)?;
+        let again = HeldDir::open(&at).ok()?;
+        (again.id? == sub.id?).then_some(again)
     }
 
     /// Removes the folder `sub`, held, from this folder, where it is empty: at its own name,
@@ -254,7 +321,10 @@ impl HeldDir {
         }
         #[cfg(windows)]
         {
-            windows::remove_dir(sub.dir, &sub.path)
+            // Renamed within this folder by a Unix program (under Wine): removed at its new
+            // name, found by its identity, as on Unix.
+            let sub = if sub.still_at_its_path() { sub } else { self.found_again(&sub).unwrap_or(sub) };
+            windows::remove_dir(sub.dir, sub.id, &sub.path)
         }
         #[cfg(not(any(unix, windows)))]
         {
@@ -307,8 +377,12 @@ mod unix {
         open_at(Some(dir), name, libc::O_WRONLY | libc::O_CREAT | libc::O_EXCL | libc::O_NOFOLLOW, 0o666)
     }
 
+    pub fn create_private(dir: &File, name: &OsStr) -> io::Result<File> {
+        open_at(Some(dir), name, libc::O_WRONLY | libc::O_CREAT | libc::O_EXCL | libc::O_NOFOLLOW, 0o600)
+    }
+
     pub fn append(dir: &File, name: &OsStr) -> io::Result<File> {
-        open_at(Some(dir), name, libc::O_WRONLY | libc::O_APPEND | libc::O_CREAT | libc::O_NOFOLLOW, 0o666)
+        open_at(Some(dir), name, libc::O_WRONLY | libc::O_APPEND | libc::O_CREAT | libc::O_NOFOLLOW, 0o600)
     }
 
     pub fn open_read(dir: &File, name: &OsStr) -> io::Result<File> {
@@ -318,7 +392,7 @@ mod unix {
     pub fn mkdir(dir: &File, name: &OsStr) -> io::Result<()> {
         let name = c(name)?;
         // SAFETY: as in `open_at`.
-        check(unsafe { libc::mkdirat(dir.as_raw_fd(), name.as_ptr(), 0o777) }).map(drop)
+        check(unsafe { libc::mkdirat(dir.as_raw_fd(), name.as_ptr(), 0o700) }).map(drop)
     }
 
     pub fn unlink(dir: &File, name: &OsStr, folder: bool) -> io::Result<()> {
@@ -461,8 +535,8 @@ mod windows {
         open_itself(path, GENERIC_READ, SHARE_NO_DELETE)
     }
 
-    pub fn remove_dir(held: File, path: &Path) -> io::Result<()> {
-        let (_, id) = crate::platform::os::file_identity(&held)?;
+    pub fn remove_dir(held: File, id: Option<(u64, u64)>, path: &Path) -> io::Result<()> {
+        let id = id.ok_or_else(|| io::Error::new(io::ErrorKind::NotFound, "its identity was not read"))?;
         drop(held);
         let dir = open_itself(path, DELETE | READ_ATTRIBUTES, SHARE_ALL)?;
         if crate::platform::os::file_identity(&dir)?.1 != id {
@@ -541,6 +615,75 @@ mod tests {
         assert!(HeldDir::open(&root.join("link")).is_err());
         assert!(HeldDir::open(&root).unwrap().open_dir(OsStr::new("link")).is_err());
         assert!(HeldDir::open(&root.join("real")).is_ok());
+    }
+
+    /// Windows under Wine (issue 59, round 2, p25): a Unix program, which Wine's sharing
+    /// rules do not bind, renames a held folder away and puts a link to another folder at its
+    /// name. Every step taken by its path is refused in words first (nothing is made, opened,
+    /// moved in or out through the link: before, a new set's files and an old set's PDFs were
+    /// moved into the folder the link led to), and the folder is found where it went.
+    #[test]
+    #[cfg(windows)]
+    fn a_held_folder_a_unix_program_renamed_is_never_worked_in_through_its_name() {
+        use std::io::Write;
+        let root = fresh("unix-swapped");
+        let (dir, away, outside) = (root.join("staging"), root.join("away"), root.join("outside"));
+        for d in [&dir, &outside, &root.join("other")] {
+            std::fs::create_dir_all(d).unwrap();
+        }
+        std::fs::write(outside.join("a.md"), "the teacher's").unwrap();
+        std::fs::write(root.join("other").join("b.md"), "to move in").unwrap();
+        let parent = HeldDir::open(&root).unwrap();
+        let held = parent.open_dir(OsStr::new("staging")).unwrap();
+        let other = parent.open_dir(OsStr::new("other")).unwrap();
+        held.create_new(OsStr::new("kept.md")).unwrap().write_all(b"in the folder held").unwrap();
+        let unix = |p: &std::path::Path| {
+            let out = std::process::Command::new("winepath").arg("-u").arg(p).output().ok()?;
+            out.status.success().then(|| String::from_utf8_lossy(&out.stdout).trim_end().to_string())
+        };
+        let (Some(dir_u), Some(away_u)) = (unix(&dir), unix(&away)) else {
+            eprintln!("not under Wine: no Unix program can rename a folder held here: nothing to test");
+            return;
+        };
+        // A Unix program run from Wine: its exit status is not Wine's to give, so its work
+        // is waited for, up to 10 s.
+        let unix_side = |program: &str, args: &[&str], done: &dyn Fn() -> bool| {
+            let _ = std::process::Command::new(program).args(args).status();
+            (0..500).any(|_| done() || (std::thread::sleep(std::time::Duration::from_millis(20)), false).1)
+        };
+        let outside_u = unix(&outside).unwrap_or_default();
+        if !unix_side(r"Z:\bin\mv", &[&dir_u, &away_u], &|| away.is_dir())
+            || !unix_side(r"Z:\bin\ln", &["-s", &outside_u, &dir_u], &|| {
+                crate::platform::links::reached_through_link(&dir)
+            })
+        {
+            eprintln!("the Unix side could not rename the folder or plant a link: nothing to test");
+            return;
+        }
+        assert!(!held.still_at_its_path(), "a link at its name is not the folder held");
+        let e = held.create_new(OsStr::new("new.md")).unwrap_err().to_string();
+        assert!(e.contains("staging") && e.contains("moved or replaced"), "{e}");
+        assert!(held.open_file(OsStr::new("a.md")).is_err(), "a file read through the link");
+        assert!(held.create_dir(OsStr::new("sub")).is_err(), "a folder made through the link");
+        assert!(crate::platform::by_handle::open_in(&held, OsStr::new("a.md")).is_err(), "opened to move or remove");
+        let b = crate::platform::by_handle::open_in(&other, OsStr::new("b.md")).unwrap();
+        assert!(b.rename_no_replace(&held, OsStr::new("b.md")).is_err(), "moved in through the link");
+        assert!(held.rename_over(OsStr::new("kept.md"), &other, OsStr::new("kept.md")).is_err());
+        let names = |d: &std::path::Path| {
+            let mut v: Vec<String> =
+                std::fs::read_dir(d).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+            v.sort();
+            v
+        };
+        assert_eq!(names(&outside), ["a.md"], "nothing made or moved outside");
+        assert_eq!(std::fs::read(outside.join("a.md")).unwrap(), b"the teacher's");
+        assert_eq!(names(&root.join("other")), ["b.md"], "nothing moved out of the other folder");
+        assert_eq!(std::fs::read(away.join("kept.md")).unwrap(), b"in the folder held");
+        assert_eq!(parent.now_in(&held), Some(away.clone()), "found where it went, by its identity");
+        let again = parent.found_again(&held).expect("held again where it went");
+        assert_eq!(again.path(), away);
+        again.create_new(OsStr::new("new.md")).unwrap().write_all(b"made where it went").unwrap();
+        assert_eq!(std::fs::read(away.join("new.md")).unwrap(), b"made where it went");
     }
 
     /// Windows: a folder held cannot be renamed or removed by anyone (held without

@@ -74,7 +74,9 @@ mod tests {
 
     #[test]
     fn the_latest_text_is_what_a_signal_writes() {
+        // Emptied first: Wine gives processes the same few ids, run after run.
         let dir = std::env::temp_dir().join(format!("phonglab-shutdown-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("session.ron");
         let s = Shutdown::default();
@@ -85,5 +87,6 @@ mod tests {
         s.write_latest();
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "second");
         assert!(!s.requested());
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

@@ -699,7 +699,11 @@ fn a_file_put_at_a_staged_name_in_a_stopped_writers_staging_folder_is_left() {
     with_fault(Fault::KilledAtStep(2), || write_set(&dir, &new_set(), belongs)).unwrap_err();
     let (staging, j) = journal_in(&dir).expect("a journal");
     assert!(!j.decided && j.new.is_empty(), "the journal names no staged file yet");
-    std::fs::remove_file(staging.join("a.md")).unwrap();
+    // The staged a.md moved away, not removed: alive, its identity cannot be given to the
+    // classmate's file (Wine's Windows identity is the inode, which a removal frees for the
+    // next file; NTFS's file index never repeats).
+    let kept = dir.with_extension("staged-a.md");
+    std::fs::rename(staging.join("a.md"), &kept).unwrap();
     std::fs::write(staging.join("a.md"), "a classmate's").unwrap();
     let notices = recover(&dir).unwrap();
     assert_eq!(notices.len(), 1, "{notices:?}");
@@ -707,4 +711,84 @@ fn a_file_put_at_a_staged_name_in_a_stopped_writers_staging_folder_is_left() {
     assert_eq!(std::fs::read(staging.join("a.md")).unwrap(), b"a classmate's", "left as it is");
     assert!(!staging.join("b.md").exists(), "the staged b.md, named by its identity, removed");
     assert_eq!(user_files(&dir), old, "the old set whole");
+    std::fs::remove_file(&kept).unwrap();
+}
+
+/// Windows under Wine: renames `from` to `to` as a Unix program does (Wine's sharing rules
+/// bind Windows programs only, so a folder phonglab holds is renamed): `false` where no Unix
+/// program can be run (not under Wine).
+#[cfg(windows)]
+fn unix_rename(from: &Path, to: &Path) -> bool {
+    let unix = |p: &Path| {
+        let out = std::process::Command::new("winepath").arg("-u").arg(p).output().ok()?;
+        out.status.success().then(|| String::from_utf8_lossy(&out.stdout).trim_end().to_string())
+    };
+    let (Some(f), Some(t)) = (unix(from), unix(to)) else { return false };
+    let _ = std::process::Command::new(r"Z:\bin\mv").args([&f, &t]).status();
+    (0..500).any(|_| to.exists() || (std::thread::sleep(std::time::Duration::from_millis(20)), false).1)
+}
+
+/// Issue 59, round 2 (p25, Wine): a Unix program renames the staging folder (within the
+/// set's folder) and puts a link to a folder outside at its name, at every step of a set's
+/// swap. Windows works by path, so each step first asks that the path still leads to the
+/// folder held: nothing in the folder outside is written, moved or removed (before, the new
+/// set's files were moved into it through the link); the run refuses the set in words
+/// that say what was checked, never "nothing was written, moved or removed through it";
+/// and the folder ends with a whole set, the old one or the new one, at once or after the
+/// next run's recovery, which finds the renamed working folder by its journal.
+#[test]
+#[cfg(windows)]
+fn a_staging_folder_a_unix_program_swaps_for_a_link_touches_nothing_outside_and_a_set_stays_whole() {
+    let belongs = |n: &str| n.ends_with(".md");
+    let (want_old, want_new) = (fresh_dir("unix-swap-old"), fresh_dir("unix-swap-new"));
+    old_set(&want_old);
+    old_set(&want_new);
+    write_set(&want_new, &new_set(), belongs).unwrap();
+    let (old, new) = (user_files(&want_old), user_files(&want_new));
+    let probe = fresh_dir("unix-swap-probe");
+    std::fs::create_dir(probe.join("a")).unwrap();
+    if !unix_rename(&probe.join("a"), &probe.join("b")) || !plant_link(&probe.join("b"), &probe.join("a")) {
+        eprintln!("not under Wine: no Unix program renames a folder here: nothing to test");
+        return;
+    }
+    for at in 0..13 {
+        let (dir, outside) = (fresh_dir(&format!("unix-swap-{at}")), fresh_dir(&format!("unix-swap-out-{at}")));
+        old_set(&dir);
+        std::fs::create_dir(outside.join(ASIDE)).unwrap();
+        for name in ["a.md", "b.md", "d.md", "thesis.txt", JOURNAL] {
+            std::fs::write(outside.join(name), "the teacher's").unwrap();
+        }
+        let before = everything_in(&outside);
+        let swapped = std::rc::Rc::new(std::cell::Cell::new(false));
+        let (d, o, s) = (dir.clone(), outside.clone(), swapped.clone());
+        let r = meanwhile_at_step(
+            at,
+            move || {
+                let staging = staging_in(&d);
+                if unix_rename(&staging, &d.join("away")) {
+                    assert!(plant_link(&o, &staging), "a link is made");
+                    s.set(true);
+                }
+            },
+            || write_set(&dir, &new_set(), belongs),
+        );
+        assert!(swapped.get(), "step {at}: the Unix side renamed the folder held");
+        assert_eq!(everything_in(&outside), before, "step {at}: nothing outside written, moved or removed");
+        if let Err(e) = &r {
+            let e = e.to_string();
+            assert!(
+                e.contains("moved or replaced") && !e.contains("nothing was written, moved or removed through"),
+                "step {at}: {e}"
+            );
+        }
+        let _ = recover(&dir);
+        assert_eq!(everything_in(&outside), before, "step {at}: the recovery touched nothing outside");
+        let files = user_files(&dir);
+        assert!(
+            files == old || files == new,
+            "step {at}: no whole set: {:?}, {:?}",
+            files.iter().map(|f| &f.0).collect::<Vec<_>>(),
+            r.map_err(|e| e.to_string())
+        );
+    }
 }

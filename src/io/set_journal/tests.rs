@@ -408,3 +408,87 @@ fn a_staging_folder_swapped_for_a_link_leaves_the_folder_it_leads_to_whole() {
     whole("a staging folder swapped for a link after it was held");
     assert!(!away.exists(), "the staging folder removed at the name it was given");
 }
+
+/// Makes the record or folder at `path` not this user's alone, as a classmate's forgery
+/// in a shared folder is: writable by others (`others`), or, where the tests run as root,
+/// owned by `nobody` (65534).
+#[cfg(unix)]
+fn not_mine(path: &Path, others: bool) {
+    use std::os::unix::fs::PermissionsExt;
+    if others {
+        let mode = std::fs::symlink_metadata(path).unwrap().permissions().mode();
+        std::fs::set_permissions(path, std::fs::Permissions::from_mode(mode | 0o002)).unwrap();
+    } else {
+        std::os::unix::fs::chown(path, Some(65_534), Some(65_534)).unwrap();
+    }
+}
+
+/// May this process give a file away (`chown`: root)?
+#[cfg(unix)]
+fn can_give_away() -> bool {
+    // SAFETY: geteuid only reads the process's user.
+    (unsafe { libc::geteuid() }) == 0
+}
+
+/// Issue 59, round 2 (p20, p21): a list of what phonglab wrote, in phonglab's exact form
+/// (the identity and SipHash of the teacher's own `exercise-07.md`, which anyone can
+/// compute), planted by a classmate where the teacher writes sets. It is not the teacher's
+/// alone, so it is not trusted: the set is refused in words naming it, and the teacher's
+/// files and the list are left as they are. (Before: `exercise-07.md` deleted, rc 0.)
+#[test]
+#[cfg(unix)]
+fn a_forged_list_of_what_phonglab_wrote_is_not_trusted_when_not_this_users_alone() {
+    for others in [true, false] {
+        if !others && !can_give_away() {
+            continue;
+        }
+        let dir = temp_dir(&format!("forged-written-{others}"));
+        std::fs::write(dir.join("exercise-01.md"), "# Exercise 1 (my own version)").unwrap();
+        std::fs::write(dir.join("exercise-07.md"), "# Exercise 7 (mine)").unwrap();
+        let forged = vec![entry_of(&dir, "exercise-01.md").unwrap(), entry_of(&dir, "exercise-07.md").unwrap()];
+        std::fs::write(dir.join(WRITTEN), serde_json::to_vec(&forged).unwrap()).unwrap();
+        not_mine(&dir.join(WRITTEN), others);
+        let before = everything(&dir);
+        let mut set = FileSet::default();
+        set.add("exercise-01.md", "# Exercise 1");
+        let e = write_set(&dir, &set, |n| n.starts_with("exercise-")).unwrap_err().to_string();
+        untouched(&before, &dir, "a forged list");
+        assert!(e.contains(WRITTEN) && e.contains("not this user's alone"), "{e}");
+        assert!(e.contains("Nothing was written, moved or removed"), "{e}");
+    }
+}
+
+/// Issue 59, round 2 (p23 B, D): a classmate's own staging folder with a journal in
+/// phonglab's exact form, decided, naming the teacher's `key.md` truly as the old set and
+/// the classmate's file as the new one: not this user's alone (the journal, or the folder),
+/// so the recovery leaves it and every file as they are, and says why. The same folder and
+/// journal made by this user are finished: only the owner refused them.
+#[test]
+#[cfg(unix)]
+fn a_forged_journal_or_staging_folder_not_this_users_alone_is_left() {
+    for (what, others) in [("journal", true), ("folder", true), ("journal", false), ("folder", false)] {
+        if !others && !can_give_away() {
+            continue;
+        }
+        let dir = temp_dir(&format!("forged-journal-{what}-{others}"));
+        std::fs::write(dir.join("key.md"), "the teacher's key").unwrap();
+        let staging = dir.join(".phonglab-set.99999.1.tmp");
+        std::fs::create_dir(&staging).unwrap();
+        let (_, here) = Identity::at(&staging).unwrap();
+        let held = HeldDir::open(&staging).unwrap();
+        let new = stage(&held, "key.md", b"the classmate's key").unwrap();
+        let old = entry_of(&dir, "key.md").unwrap();
+        let j = Journal { staging: here, decided: true, new: vec![new], old: vec![old] };
+        write_journal(&held, &j, false).unwrap();
+        drop(held);
+        not_mine(&if what == "journal" { staging.join(JOURNAL) } else { staging.clone() }, others);
+        let before = everything(&dir);
+        let notices = recover(&dir).unwrap();
+        untouched(&before, &dir, "a forged journal");
+        assert_eq!(std::fs::read(dir.join("key.md")).unwrap(), b"the teacher's key");
+        assert!(
+            notices.len() == 1 && notices[0].contains(".phonglab-set.99999.1.tmp") && notices[0].contains("alone"),
+            "{what}: {notices:?}"
+        );
+    }
+}
