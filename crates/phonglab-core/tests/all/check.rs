@@ -422,3 +422,17 @@ fn one_step_printed_with_other_digits_is_judged_at_its_own() {
         assert!(c.right(), "{wrap}");
     }
 }
+
+/// "Right, given your X" names only a step the value depends on: `H` (from `vlv` and
+/// `vov`) a few parts in 10^7 off, after a wrong `at`, is not "right, given your at".
+#[test]
+fn right_given_never_names_a_step_the_value_does_not_depend_on() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let text = printed_with_i(|v| format!("[{}]", v.iter().map(|x| format!("{x:.8}")).collect::<Vec<_>>().join(" ")));
+    assert!(text.contains("0.64472529") && text.contains("at =  5.24"), "{text}");
+    let off = text.replace("at =  5.24", "at =  6.24").replace("0.64472529", "0.64472579");
+    let c = check(&scene, &scene, &printed_text(&off));
+    let verdict = |name: &str| c.steps.iter().find(|s| s.name == name).unwrap().verdict.clone();
+    assert_eq!(verdict("at"), Verdict::Wrong);
+    assert_eq!(verdict("H"), Verdict::Rounding, "{:?}", c.steps);
+}

@@ -484,7 +484,7 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
             }
         } else if same_point(p, k) {
             Verdict::Right
-        } else if let Some(w) = right_given(assignment, &given, &wrong_so_far, p) {
+        } else if let Some(w) = right_given(assignment, &key, &given, &wrong_so_far, p) {
             Verdict::RightGiven(w)
         } else if close(p, k) {
             Verdict::Rounding
@@ -538,18 +538,30 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
 
 /// The earlier wrong step(s) `p` is right given: the key worked with only one of the
 /// student's wrong values carried, the most recent first, that reproduces `p`; else all
-/// of them together (named together). `None` where none does.
-fn right_given(scene: &Scene, given: &Worked, wrong: &[&PrintedValue], p: &PrintedValue) -> Option<String> {
+/// of them together, naming only those `p` depends on. A step `p` does not depend on
+/// (carrying it leaves `p` the key's: `H` and `Idif`) is never named. `None` where none does.
+fn right_given(
+    scene: &Scene,
+    key: &Worked,
+    given: &Worked,
+    wrong: &[&PrintedValue],
+    p: &PrintedValue,
+) -> Option<String> {
+    let want = key.get(&p.name)?;
+    let mut depends = Vec::new();
     for w in wrong.iter().rev() {
         let one = Printed { values: vec![(*w).clone()], ..Printed::default() };
-        if work(scene, None, Some(&one)).get(&p.name).is_some_and(|g| given_from_printed(p, g)) {
+        let carried = work(scene, None, Some(&one));
+        let Some(g) = carried.get(&p.name).filter(|g| apart(g, want)) else { continue };
+        if given_from_printed(p, g) {
             return Some(w.name.clone());
         }
+        depends.push(w.name.as_str());
     }
-    if wrong.is_empty() || !given.get(&p.name).is_some_and(|g| given_from_printed(p, g)) {
+    if depends.is_empty() || !given.get(&p.name).is_some_and(|g| given_from_printed(p, g)) {
         return None;
     }
-    Some(wrong.iter().rev().map(|w| w.name.as_str()).collect::<Vec<_>>().join(", "))
+    Some(depends.join(", "))
 }
 
 /// The catalogue's mistakes under the `assumed` rules that reproduce every value the
