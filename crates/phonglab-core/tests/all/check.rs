@@ -436,3 +436,14 @@ fn right_given_never_names_a_step_the_value_does_not_depend_on() {
     assert_eq!(verdict("at"), Verdict::Wrong);
     assert_eq!(verdict("H"), Verdict::Rounding, "{:?}", c.steps);
 }
+
+/// The typed inputs that differ are named as typed: a changed linear attenuation is
+/// `atLin`, not the `at` worked from it.
+#[test]
+fn typed_inputs_that_differ_are_named_as_typed() {
+    let assignment = phonglab_core::presets::worksheet(5);
+    let mut own = assignment.clone();
+    own.lights[0].attenuation[1] += 0.001;
+    let c = check(&assignment, &own, &printed_text(&printed_of(&work(&own, None, None))));
+    assert_eq!(c.inputs_differ, vec!["atLin".to_string()]);
+}

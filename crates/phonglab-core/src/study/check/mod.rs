@@ -663,8 +663,12 @@ fn givens(scene: &Scene) -> Vec<(String, Vec<f64>)> {
         for (base, c) in [("Lamb", l.ambient), ("Ldif", l.diffuse), ("Lspec", l.specular)] {
             out.push((name(base), c.truncate().to_array().to_vec()));
         }
-        out.push((name("at"), l.attenuation.to_vec()));
-        out.push((name("spotCutoff"), vec![l.spot_cutoff, l.spot_exponent]));
+        // Named as the worksheet types them (`atLin`, not the `at` worked from them).
+        for (base, k) in [("atC", 0), ("atLin", 1), ("atQuad", 2)] {
+            out.push((name(base), vec![l.attenuation[k]]));
+        }
+        out.push((name("spotCutoff"), vec![l.spot_cutoff]));
+        out.push((name("spotCoef"), vec![l.spot_exponent]));
     }
     out
 }
