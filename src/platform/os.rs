@@ -10,8 +10,8 @@ use std::path::Path;
 // Opening, closing, syncing and renaming files: the core's, which the Python package
 // shares (one implementation for every reader and writer of files).
 pub use phonglab_core::files::os::{
-    close_file, is_link_refused, open_no_follow, open_to_read, process_alive, regular_file_metadata, rename_no_replace,
-    sync_folder,
+    close_file, is_link_refused, is_this_users_alone, open_no_follow, open_to_read, process_alive,
+    regular_file_metadata, rename_no_replace, sync_folder,
 };
 
 /// What makes a file or folder itself where the system says it, which a rename keeps and

@@ -252,6 +252,31 @@ pub fn remove_own_file(dir: &Path, name: &std::ffi::OsStr) -> bool {
     }
 }
 
+/// Is the open `file` this user's alone, so that phonglab may trust what it says it wrote
+/// there (a set's records: its list of what it wrote, a journal, a staging folder)? Unix:
+/// owned by the process's effective user and writable by no group or other user (a
+/// classmate can write a record in phonglab's exact form, but not as the teacher: issue 59,
+/// round 2). Windows: its owner, through the handle, is the token's user or default owner
+/// (under Wine, a Unix file of another user's is owned by "ANONYMOUS LOGON"). `false`
+/// where the system cannot say.
+pub fn is_this_users_alone(file: &File) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        // SAFETY: geteuid only reads the process's user.
+        file.metadata().is_ok_and(|m| m.uid() == unsafe { libc::geteuid() } && m.mode() & 0o022 == 0)
+    }
+    #[cfg(windows)]
+    {
+        owned_by_this_user(file)
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        let _ = file;
+        false
+    }
+}
+
 /// [`remove_own_file`] on Windows; `Err` or `Ok(false)`: not removed.
 #[cfg(windows)]
 fn windows_remove_own_file(dir: &Path, name: &std::ffi::OsStr, path: &Path) -> io::Result<bool> {
