@@ -319,8 +319,9 @@ fn too_few_digits_to_tell_the_key_from_a_mistake_or_from_zero_are_never_right() 
     let verdict = |c: &phonglab_core::study::check::Check, name: &str| {
         c.steps.iter().find(|s| s.name == name).unwrap_or_else(|| panic!("no {name}")).verdict.clone()
     };
-    // `[0. 0. 0. 0.]` shows no decimal: it is judged at the digits it shows.
-    assert_eq!(verdict(&c, "Ispec"), Verdict::TooFewDigits(0));
+    // `[0. 0. 0. 0.]` shows no decimal of its own: the print options' two, which the
+    // other arrays show.
+    assert_eq!(verdict(&c, "Ispec"), Verdict::TooFewDigits(2));
     // The specular left out changes I by 0.0001: two decimals cannot tell.
     assert_eq!(verdict(&c, "I"), Verdict::TooFewDigits(2));
     assert!(c.first_wrong.is_none() && !c.right(), "{:?}", c.steps);
@@ -329,7 +330,7 @@ fn too_few_digits_to_tell_the_key_from_a_mistake_or_from_zero_are_never_right() 
     assert_eq!(why.id(), "too-few-digits");
     let words = phonglab_core::study::check::said::words(&c);
     assert!(!words.contains("all right"), "{words}");
-    assert!(words.contains("Ispec") && words.contains("0 decimal places"), "{words}");
+    assert!(words.contains("Ispec") && words.contains("2 decimal places"), "{words}");
     assert!(words.contains("np.set_printoptions(precision=8)"), "{words}");
     assert!(words.contains("too few digits to tell (printed to 2 decimal places"), "{words}");
     // One decimal (every array printed so): I's 0.036 and 0.015 print 0, as zero would.

@@ -341,18 +341,34 @@ fn number(token: &str) -> Option<(f64, f64)> {
 /// NumPy prints an array's elements with as many digits as the one that needs most, up to
 /// its precision, so a short element (`0.6` beside `0.55887606`) is exact to that array's
 /// finest digit: an array's numbers in fixed notation take the finest unit printed in that
-/// same array, and only there. Each printing has its own digits (`np.round(I, 4)`, a
-/// `"%.2f"` join, `np.printoptions(precision=3)` around one print): a value is judged at
-/// the digits it was printed with, never at another printing's.
+/// same array. Each printing has its own digits (`np.round(I, 4)`, a `"%.2f"` join,
+/// `np.printoptions(precision=3)` around one print): a value is judged at the digits it
+/// was printed with, never at another printing's. An array of whole numbers only (`[0. 0.
+/// 1. 0.]`) shows no digit of its own: it takes the finest the work's other arrays show
+/// (the print options' precision), never finer than NumPy's default 8 decimals (a list of
+/// Python's 17-digit floats is no print option).
 fn array_precision(p: &mut Printed) {
-    for v in p.values.iter_mut().filter(|v| v.numbers.len() > 1) {
-        let finest = v
-            .half_units
+    let own_finest = |v: &PrintedValue| {
+        v.half_units
             .iter()
             .zip(&v.fixed)
             .filter(|(h, f)| **f && **h > 0.0)
             .map(|(h, _)| *h)
-            .fold(f64::INFINITY, f64::min);
+            .fold(f64::INFINITY, f64::min)
+    };
+    let work_finest = p
+        .values
+        .iter()
+        .filter(|v| v.numbers.len() > 1)
+        .map(own_finest)
+        .filter(|h| *h < 0.5)
+        .fold(f64::INFINITY, f64::min)
+        .max(0.5e-8);
+    for v in p.values.iter_mut().filter(|v| v.numbers.len() > 1) {
+        let mut finest = own_finest(v);
+        if finest >= 0.5 && work_finest.is_finite() {
+            finest = work_finest;
+        }
         if !finest.is_finite() {
             continue;
         }
@@ -378,6 +394,8 @@ mod tests {
         // Its own finest digit: another array's 8 decimals say nothing of this printing.
         assert_eq!(normal.half_units[0], 0.05);
         assert_eq!(normal.half_units[1], 0.05);
+        // Whole numbers only: the work's other arrays' finest (8 decimals here).
+        assert_eq!(printed_text("v = [0. 1.]\nw = [0.25 0.5]\n").get("v").unwrap().half_units, vec![0.005, 0.005]);
         assert_eq!(p.get("vlv").unwrap().half_units[3], 0.5e-8);
         assert_eq!(p.get("vlv").unwrap().numbers, vec![0.79220526, 0.55887606, -0.2450885, 0.0]);
         assert_eq!(p.get("cosTheta").unwrap().numbers, vec![0.13925483139909867]);
