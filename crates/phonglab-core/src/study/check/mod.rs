@@ -477,7 +477,11 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
     let mut mistaken = Mistaken::new(assignment);
     for p in &student.values {
         let Some(k) = key.get(&p.name) else { continue };
-        let verdict = if same(p, k) {
+        // Read as NumPy's options pad it (the work's finest digits), then at its own.
+        let padded = PrintedValue { half_units: p.padded_half_units.clone(), ..p.clone() };
+        let verdict = if same(&padded, k) && untold(&padded, k, &mut mistaken).is_none() {
+            Verdict::Right
+        } else if same(p, k) {
             match untold(p, k, &mut mistaken) {
                 Some(decimals) => Verdict::TooFewDigits(decimals),
                 None => Verdict::Right,

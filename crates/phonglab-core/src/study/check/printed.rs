@@ -21,6 +21,12 @@ pub struct PrintedValue {
     pub own_half_units: Vec<f64>,
     /// Was each number printed in fixed notation (`0.5`, not `5e-01`)?
     pub fixed: Vec<bool>,
+    /// Half a unit as NumPy's print options would pad it: the finest fixed-notation digit
+    /// any array of the work shows (`[0. -0.6 -0.8 0.]` beside 8-decimal arrays, under the
+    /// default options, is exact to 8 decimals). A second reading: a value the key's at
+    /// these digits, and told apart from every mistake, is right even where its own
+    /// digits cannot tell.
+    pub padded_half_units: Vec<f64>,
 }
 
 /// What a piece of work printed.
@@ -316,7 +322,14 @@ fn numbers(name: &str, value: &str) -> Option<PrintedValue> {
         }
     }
     let own_half_units = half_units.clone();
-    (!numbers.is_empty()).then(|| PrintedValue { name: name.to_string(), numbers, half_units, own_half_units, fixed })
+    (!numbers.is_empty()).then(|| PrintedValue {
+        name: name.to_string(),
+        numbers,
+        padded_half_units: half_units.clone(),
+        half_units,
+        own_half_units,
+        fixed,
+    })
 }
 
 /// One number as NumPy or Python prints it (`0.`, `-0.`, `1.5e-05`, `3`), with half a unit
@@ -364,6 +377,18 @@ fn array_precision(p: &mut Printed) {
         .filter(|h| *h < 0.5)
         .fold(f64::INFINITY, f64::min)
         .max(0.5e-8);
+    let padded = p
+        .values
+        .iter()
+        .filter(|v| v.numbers.len() > 1)
+        .map(own_finest)
+        .filter(|h| *h > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    for v in p.values.iter_mut().filter(|v| v.numbers.len() > 1 && padded.is_finite()) {
+        for (h, _) in v.padded_half_units.iter_mut().zip(&v.fixed).filter(|(_, f)| **f) {
+            *h = h.min(padded);
+        }
+    }
     for v in p.values.iter_mut().filter(|v| v.numbers.len() > 1) {
         let mut finest = own_finest(v);
         if finest >= 0.5 && work_finest.is_finite() {
