@@ -356,10 +356,10 @@ fn number(token: &str) -> Option<(f64, f64)> {
 /// finest digit: an array's numbers in fixed notation take the finest unit printed in that
 /// same array. Each printing has its own digits (`np.round(I, 4)`, a `"%.2f"` join,
 /// `np.printoptions(precision=3)` around one print): a value is judged at the digits it
-/// was printed with, never at another printing's. An array of whole numbers only (`[0. 0.
-/// 1. 0.]`) shows no digit of its own: it takes the finest the work's other arrays show
-/// (the print options' precision), never finer than NumPy's default 8 decimals (a list of
-/// Python's 17-digit floats is no print option).
+/// was printed with, never at another printing's. An array of whole numbers only
+/// (`[0. 0. 1. 0.]`) shows no digit of its own: it takes the finest the work's other
+/// arrays show (the print options' precision), never finer than NumPy's default 8
+/// decimals (a list of Python's 17-digit floats is no print option).
 fn array_precision(p: &mut Printed) {
     let own_finest = |v: &PrintedValue| {
         v.half_units
