@@ -203,8 +203,19 @@ fn refusal(path: &Path, kind: Kind, checked: Option<&Path>) -> Option<String> {
             if !kind.is_own(&head) {
                 return Some(not_own(&shown, kind, &head));
             }
-            if !written_as_recorded(path) {
-                return Some(t!("work-output-changed", path = shown, kind = kind.words()));
+            match recorded(path) {
+                Recorded::Same => {}
+                Recorded::Changed => return Some(t!("work-output-changed", path = shown, kind = kind.words())),
+                Recorded::None => return Some(t!("work-output-no-record", path = shown, kind = kind.words())),
+                Recorded::Untrusted(dir) => {
+                    let records = crate::io::reasons::shown(&dir);
+                    return Some(t!(
+                        "work-output-records-untrusted",
+                        path = shown,
+                        kind = kind.words(),
+                        records = records
+                    ));
+                }
             }
         }
         // Nothing there; anything else there (a folder, a device) the write refuses.
@@ -311,8 +322,10 @@ fn record_of(path: &Path) -> Option<(std::path::PathBuf, String)> {
     Some((dir.join(name), place))
 }
 
-/// Keeps the record of the output just written at `path`, written whole. Where it cannot
-/// be kept, the next run finds no record and refuses to replace the output: the safe side.
+/// Keeps the record of the output just written at `path`, written whole, in a records
+/// folder made this user's alone (Unix: 0700, the record 0600). Where it cannot be kept,
+/// or the folder is not this user's alone (a 777 folder, another user's), none is kept:
+/// the next run finds no record it trusts and refuses to replace the output, the safe side.
 fn remember(path: &Path) {
     let Some((record, place)) = record_of(path) else { return };
     let (folder, name) = match (path.parent(), path.file_name()) {
@@ -321,24 +334,111 @@ fn remember(path: &Path) {
     };
     let Ok(entry) = crate::io::set_journal::entry_of(folder, &name) else { return };
     let Ok(bytes) = serde_json::to_vec(&Record { place, entry }) else { return };
-    if let Some(dir) = record.parent() {
-        let _ = std::fs::create_dir_all(dir);
+    let Some(dir) = record.parent() else { return };
+    if make_records_folder(dir).is_err() || !folder_is_this_users_alone(dir) {
+        return;
     }
-    let _ = crate::io::atomic_write::write_here(&record, &bytes);
+    if crate::io::atomic_write::write_here(&record, &bytes).is_ok() {
+        make_private(&record);
+    }
+}
+
+/// Makes the records folder `dir` (its parents as the system makes them), this user's
+/// alone on Unix (0700); one already there is left as it is (and trusted only if it is
+/// this user's alone).
+fn make_records_folder(dir: &Path) -> std::io::Result<()> {
+    if let Some(parent) = dir.parent() {
+        std::fs::create_dir_all(parent)?;
+    }
+    #[cfg(unix)]
+    let builder = {
+        let mut b = std::fs::DirBuilder::new();
+        std::os::unix::fs::DirBuilderExt::mode(&mut b, 0o700);
+        b
+    };
+    #[cfg(not(unix))]
+    let builder = std::fs::DirBuilder::new();
+    match builder.create(dir) {
+        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => Ok(()),
+        other => other,
+    }
+}
+
+/// Makes the record just written readable and writable by this user alone (Unix: 0600,
+/// whatever the umask).
+fn make_private(record: &Path) {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let _ = std::fs::set_permissions(record, std::fs::Permissions::from_mode(0o600));
+    }
+    #[cfg(not(unix))]
+    let _ = record;
+}
+
+/// Is the folder `dir` this user's alone ([`crate::platform::os::is_this_users_alone`],
+/// asked through a handle to the folder itself, never through a link)?
+fn folder_is_this_users_alone(dir: &Path) -> bool {
+    if std::fs::symlink_metadata(dir).map_or(true, |m| !m.is_dir()) {
+        return false;
+    }
+    #[cfg(windows)]
+    let opened = {
+        use std::os::windows::fs::OpenOptionsExt;
+        // FILE_FLAG_BACKUP_SEMANTICS (a folder) | FILE_FLAG_OPEN_REPARSE_POINT (not followed).
+        std::fs::File::options().read(true).custom_flags(0x0200_0000 | 0x0020_0000).open(dir)
+    };
+    #[cfg(not(windows))]
+    let opened = std::fs::File::open(dir);
+    opened.is_ok_and(|f| crate::platform::os::is_this_users_alone(&f))
+}
+
+/// What phonglab's records say of the file at an output's place.
+#[derive(Debug, PartialEq)]
+enum Recorded {
+    /// No record of writing it there (a file planted with phonglab's first line).
+    None,
+    /// The records folder or this record is not this user's alone: anyone can write a
+    /// record in phonglab's form (its hash is unkeyed), so none there is trusted.
+    Untrusted(std::path::PathBuf),
+    /// A record, and the file is no longer what it says (a line added, another file).
+    Changed,
+    /// The file is, whole, what phonglab last wrote there.
+    Same,
+}
+
+/// What phonglab's records say of the file at `path` ([`Recorded`]).
+fn recorded(path: &Path) -> Recorded {
+    let Some((record, place)) = record_of(path) else { return Recorded::None };
+    let Some(dir) = record.parent() else { return Recorded::None };
+    let Ok(file) = crate::platform::os::open_no_follow(&record) else {
+        return if dir.exists() && !folder_is_this_users_alone(dir) {
+            Recorded::Untrusted(dir.to_path_buf())
+        } else {
+            Recorded::None
+        };
+    };
+    if !folder_is_this_users_alone(dir) || !crate::platform::os::is_this_users_alone(&file) {
+        return Recorded::Untrusted(dir.to_path_buf());
+    }
+    let mut bytes = Vec::new();
+    let read = file.take(MAX_RECORD_BYTES).read_to_end(&mut bytes);
+    let Ok(r) = read.map_err(|_| ()).and_then(|_| serde_json::from_slice::<Record>(&bytes).map_err(|_| ())) else {
+        return Recorded::None;
+    };
+    if r.place == place && crate::io::set_journal::is_entry(path, &r.entry) {
+        Recorded::Same
+    } else {
+        Recorded::Changed
+    }
 }
 
 /// Whether the file at `path` is, whole, what phonglab last wrote at that place: its
-/// record's size, hash and identity. A line added, a byte changed, or the file replaced by
-/// another with the same bytes (another identity), and it is not.
+/// record's size, hash and identity, in a record this user's alone. A line added, a byte
+/// changed, the file replaced by another with the same bytes (another identity), or a
+/// record another user could have written, and it is not.
 pub fn written_as_recorded(path: &Path) -> bool {
-    let Some((record, place)) = record_of(path) else { return false };
-    let mut bytes = Vec::new();
-    let read =
-        crate::platform::os::open_no_follow(&record).and_then(|f| f.take(MAX_RECORD_BYTES).read_to_end(&mut bytes));
-    let Ok(r) = read.map_err(|_| ()).and_then(|_| serde_json::from_slice::<Record>(&bytes).map_err(|_| ())) else {
-        return false;
-    };
-    r.place == place && crate::io::set_journal::is_entry(path, &r.entry)
+    recorded(path) == Recorded::Same
 }
 
 #[cfg(test)]

@@ -387,5 +387,51 @@ fn a_teachers_note_added_to_the_marks_or_the_report_is_never_erased() {
     assert!(run("en_GB.UTF-8").status.success());
     let o = run_in(&root.join("other-data"), "en_GB.UTF-8");
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("changed since phonglab wrote it"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("phonglab has no record of writing it"), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("changed since"), "{}", stderr(&o));
+}
+
+/// Issue 57 round 2: the records of the outputs phonglab wrote are its alone (folder 0700,
+/// records 0600), and a records folder another user can write (777) is not trusted: a
+/// record there may be planted (its hash is unkeyed), so the output is refused in words,
+/// and nothing is written; made this user's alone again, it is trusted again.
+#[test]
+#[cfg(unix)]
+fn the_records_of_outputs_are_trusted_only_when_this_users_alone() {
+    use std::os::unix::fs::PermissionsExt;
+    let root = Scratch::new("records-own");
+    let cls = class(&root, &["a.ipynb"]);
+    let csv = root.join("notas.csv");
+    let data = root.join("data");
+    let run = || {
+        std::process::Command::new(env!("CARGO_BIN_EXE_phonglab"))
+            .env("PHONGLAB_SESSION_DIR", &data)
+            .env("LANG", "en_GB.UTF-8")
+            .env_remove("LC_ALL")
+            .env_remove("LC_MESSAGES")
+            .args(["check", s(&cls), "--csv", s(&csv)])
+            .output()
+            .unwrap()
+    };
+    let o = run();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let records = data.join("outputs-written");
+    let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o777;
+    assert_eq!(mode(&records), 0o700);
+    let kept: Vec<PathBuf> = std::fs::read_dir(&records).unwrap().map(|e| e.unwrap().path()).collect();
+    assert_eq!(kept.len(), 1, "{kept:?}");
+    assert_eq!(mode(&kept[0]), 0o600);
+    assert_eq!(run().status.code(), Some(0), "its own record: replaced");
+    std::fs::set_permissions(&records, std::fs::Permissions::from_mode(0o777)).unwrap();
+    let before = std::fs::read(&csv).unwrap();
+    let o = run();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("not this user's alone") && stderr(&o).contains("outputs-written"), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&csv).unwrap(), before);
+    // A record another user could write (group-writable) is not trusted either.
+    std::fs::set_permissions(&records, std::fs::Permissions::from_mode(0o700)).unwrap();
+    std::fs::set_permissions(&kept[0], std::fs::Permissions::from_mode(0o620)).unwrap();
+    assert_eq!(run().status.code(), Some(2));
+    std::fs::set_permissions(&kept[0], std::fs::Permissions::from_mode(0o600)).unwrap();
+    assert_eq!(run().status.code(), Some(0), "{}", stderr(&run()));
 }

@@ -79,11 +79,15 @@ fn the_worksheets_own_printed_output_is_right() {
     assert_eq!(c.steps.len(), 14);
     assert!(c.steps.iter().all(|s| s.verdict == Verdict::Right), "{:?}", c.steps);
     assert!(c.right());
-    // One value changed in its last digits is rounding; changed more, wrong, and what
-    // follows from it is right given it.
+    // One value rounded for display is judged at its own digits: right to them.
     let rounded =
         text.replace("0.79220526", "0.7922").replace("0.55887606", "0.5589").replace("-0.2450885 ", "-0.2451    ");
     let c = check(&scene, &scene, &printed_text(&rounded));
+    assert_eq!(c.steps[3].verdict, Verdict::Right);
+    // Changed in its last digits (single precision) is rounding; changed more, wrong, and
+    // what follows from it is right given it.
+    let float = text.replace("0.79220526", "0.79220530");
+    let c = check(&scene, &scene, &printed_text(&float));
     assert_eq!(c.steps[3].verdict, Verdict::Rounding);
     assert!(c.first_wrong.is_none());
     // vlv reversed: cosTheta from it is right given it, though worked from its 8 printed decimals.
@@ -343,6 +347,8 @@ fn too_few_digits_to_tell_the_key_from_a_mistake_or_from_zero_are_never_right() 
     let verdict = |c: &phonglab_core::study::check::Check, name: &str| {
         c.steps.iter().find(|s| s.name == name).unwrap_or_else(|| panic!("no {name}")).verdict.clone()
     };
+    // `[0. 0. 0. 0.]` shows no decimal of its own: the print options' two, which the
+    // other arrays show.
     assert_eq!(verdict(&c, "Ispec"), Verdict::TooFewDigits(2));
     // The specular left out changes I by 0.0001: two decimals cannot tell.
     assert_eq!(verdict(&c, "I"), Verdict::TooFewDigits(2));
@@ -391,4 +397,82 @@ fn many_printings_are_checked_in_linear_time_and_the_cap_counts_numbers() {
     assert!(why.contains(&format!("more than {MAX_VALUES} numbers")), "{why}");
     let sixteen: String = (0..16).map(|k| format!("a{k} = [{thousand}]\n")).collect();
     assert_eq!(read_printed_text(&sixteen).unwrap().values.len(), 16);
+}
+
+/// The key printed as NumPy does by default (8 decimals), `I` as `print_i` prints it.
+fn printed_with_i(print_i: impl Fn(&[f64]) -> String) -> String {
+    let scene = phonglab_core::presets::worksheet(5);
+    let mut text = String::new();
+    for (name, v) in &work(&scene, None, None).values {
+        let value = if name == "I" {
+            print_i(v)
+        } else if v.len() == 1 {
+            format!("{}", v[0])
+        } else {
+            format!("[{}]", v.iter().map(|x| format!("{x:.8}")).collect::<Vec<_>>().join(" "))
+        };
+        text.push_str(&format!("{name} =  {value}\n"));
+    }
+    text
+}
+
+/// Each printing is judged at the digits it was printed with: `I` rounded for display
+/// (`np.round(I, 4)`, a `"%.2f"` join, `np.printoptions(precision=3)` around one print)
+/// beside steps printed to 8 decimals is right to its digits or too few to tell, never
+/// wrong; `I.tolist()` or NumPy 2's `list(I)` (17 digits) makes no other step "rounding".
+#[test]
+fn one_step_printed_with_other_digits_is_judged_at_its_own() {
+    let scene = phonglab_core::presets::worksheet(5);
+    for decimals in [2usize, 3, 4] {
+        let text = printed_with_i(|v| {
+            format!("[{}]", v.iter().map(|x| format!("{x:.decimals$}")).collect::<Vec<_>>().join(" "))
+        });
+        let c = check(&scene, &scene, &printed_text(&text));
+        assert!(c.first_wrong.is_none(), "{decimals}: {:?}", c.steps);
+        for s in &c.steps {
+            let ok = s.verdict == Verdict::Right || s.name == "I" && matches!(s.verdict, Verdict::TooFewDigits(_));
+            assert!(ok, "{decimals}: {} {:?}", s.name, s.verdict);
+        }
+    }
+    let listed = |wrap: &'static str| {
+        move |v: &[f64]| {
+            let items: Vec<String> = v.iter().map(|x| format!("{x:?}")).collect();
+            let items: Vec<String> =
+                items.iter().map(|x| if wrap.is_empty() { x.clone() } else { format!("{wrap}({x})") }).collect();
+            format!("[{}]", items.join(", "))
+        }
+    };
+    for wrap in ["", "np.float64"] {
+        let c = check(&scene, &scene, &printed_text(&printed_with_i(listed(wrap))));
+        assert!(c.unreadable.is_empty(), "{wrap}: {:?}", c.unreadable);
+        for s in &c.steps {
+            assert_eq!(s.verdict, Verdict::Right, "{wrap}: {} {:?}", s.name, c.steps);
+        }
+        assert!(c.right(), "{wrap}");
+    }
+}
+
+/// "Right, given your X" names only a step the value depends on: `H` (from `vlv` and
+/// `vov`) a few parts in 10^7 off, after a wrong `at`, is not "right, given your at".
+#[test]
+fn right_given_never_names_a_step_the_value_does_not_depend_on() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let text = printed_with_i(|v| format!("[{}]", v.iter().map(|x| format!("{x:.8}")).collect::<Vec<_>>().join(" ")));
+    assert!(text.contains("0.64472529") && text.contains("at =  5.24"), "{text}");
+    let off = text.replace("at =  5.24", "at =  6.24").replace("0.64472529", "0.64472579");
+    let c = check(&scene, &scene, &printed_text(&off));
+    let verdict = |name: &str| c.steps.iter().find(|s| s.name == name).unwrap().verdict.clone();
+    assert_eq!(verdict("at"), Verdict::Wrong);
+    assert_eq!(verdict("H"), Verdict::Rounding, "{:?}", c.steps);
+}
+
+/// The typed inputs that differ are named as typed: a changed linear attenuation is
+/// `atLin`, not the `at` worked from it.
+#[test]
+fn typed_inputs_that_differ_are_named_as_typed() {
+    let assignment = phonglab_core::presets::worksheet(5);
+    let mut own = assignment.clone();
+    own.lights[0].attenuation[1] += 0.001;
+    let c = check(&assignment, &own, &printed_text(&printed_of(&work(&own, None, None))));
+    assert_eq!(c.inputs_differ, vec!["atLin".to_string()]);
 }

@@ -490,14 +490,18 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
     let mut mistaken = Mistaken::new(assignment);
     for p in &student.values {
         let Some(k) = key.get(&p.name) else { continue };
-        let verdict = if same(p, k) {
+        // Read as NumPy's options pad it (the work's finest digits), then at its own.
+        let padded = PrintedValue { half_units: p.padded_half_units.clone(), ..p.clone() };
+        let verdict = if same(&padded, k) && untold(&padded, k, &mut mistaken).is_none() {
+            Verdict::Right
+        } else if same(p, k) {
             match untold(p, k, &mut mistaken) {
                 Some(decimals) => Verdict::TooFewDigits(decimals),
                 None => Verdict::Right,
             }
         } else if same_point(p, k) {
             Verdict::Right
-        } else if let Some(w) = right_given(assignment, &given, &wrong_so_far, p) {
+        } else if let Some(w) = right_given(assignment, &key, &given, &wrong_so_far, p) {
             Verdict::RightGiven(w)
         } else if close(p, k) {
             Verdict::Rounding
@@ -554,18 +558,30 @@ pub fn check(assignment: &Scene, own: &Scene, student: &Printed) -> Check {
 
 /// The earlier wrong step(s) `p` is right given: the key worked with only one of the
 /// student's wrong values carried, the most recent first, that reproduces `p`; else all
-/// of them together (named together). `None` where none does.
-fn right_given(scene: &Scene, given: &Worked, wrong: &[&PrintedValue], p: &PrintedValue) -> Option<String> {
+/// of them together, naming only those `p` depends on. A step `p` does not depend on
+/// (carrying it leaves `p` the key's: `H` and `Idif`) is never named. `None` where none does.
+fn right_given(
+    scene: &Scene,
+    key: &Worked,
+    given: &Worked,
+    wrong: &[&PrintedValue],
+    p: &PrintedValue,
+) -> Option<String> {
+    let want = key.get(&p.name)?;
+    let mut depends = Vec::new();
     for w in wrong.iter().rev() {
         let one = Printed { values: vec![(*w).clone()], ..Printed::default() };
-        if work(scene, None, Some(&one)).get(&p.name).is_some_and(|g| given_from_printed(p, g)) {
+        let carried = work(scene, None, Some(&one));
+        let Some(g) = carried.get(&p.name).filter(|g| apart(g, want)) else { continue };
+        if given_from_printed(p, g) {
             return Some(w.name.clone());
         }
+        depends.push(w.name.as_str());
     }
-    if wrong.is_empty() || !given.get(&p.name).is_some_and(|g| given_from_printed(p, g)) {
+    if depends.is_empty() || !given.get(&p.name).is_some_and(|g| given_from_printed(p, g)) {
         return None;
     }
-    Some(wrong.iter().rev().map(|w| w.name.as_str()).collect::<Vec<_>>().join(", "))
+    Some(depends.join(", "))
 }
 
 /// The catalogue's mistakes under the `assumed` rules that reproduce every value the
@@ -667,8 +683,12 @@ fn givens(scene: &Scene) -> Vec<(String, Vec<f64>)> {
         for (base, c) in [("Lamb", l.ambient), ("Ldif", l.diffuse), ("Lspec", l.specular)] {
             out.push((name(base), c.truncate().to_array().to_vec()));
         }
-        out.push((name("at"), l.attenuation.to_vec()));
-        out.push((name("spotCutoff"), vec![l.spot_cutoff, l.spot_exponent]));
+        // Named as the worksheet types them (`atLin`, not the `at` worked from them).
+        for (base, k) in [("atC", 0), ("atLin", 1), ("atQuad", 2)] {
+            out.push((name(base), vec![l.attenuation[k]]));
+        }
+        out.push((name("spotCutoff"), vec![l.spot_cutoff]));
+        out.push((name("spotCoef"), vec![l.spot_exponent]));
     }
     out
 }

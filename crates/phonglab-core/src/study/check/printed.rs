@@ -21,6 +21,12 @@ pub struct PrintedValue {
     pub own_half_units: Vec<f64>,
     /// Was each number printed in fixed notation (`0.5`, not `5e-01`)?
     pub fixed: Vec<bool>,
+    /// Half a unit as NumPy's print options would pad it: the finest fixed-notation digit
+    /// any array of the work shows (`[0. -0.6 -0.8 0.]` beside 8-decimal arrays, under the
+    /// default options, is exact to 8 decimals). A second reading: a value the key's at
+    /// these digits, and told apart from every mistake, is right even where its own
+    /// digits cannot tell.
+    pub padded_half_units: Vec<f64>,
 }
 
 /// What a piece of work printed.
@@ -292,7 +298,11 @@ fn depth(s: &str) -> i64 {
 /// The numbers of one printed value, each with half a unit of its last digit; `None` when
 /// something in it is not a number.
 fn numbers(name: &str, value: &str) -> Option<PrintedValue> {
-    let mut v = value.trim();
+    // NumPy 2 writes a list of its scalars with their type: `[np.float64(0.0596), ...]`.
+    let unwrapped = ["np.float64", "np.float32", "np.float16", "np.int64", "np.int32"]
+        .iter()
+        .fold(value.trim().to_string(), |s, t| s.replace(t, " "));
+    let mut v = unwrapped.trim();
     for wrap in ["np.float64(", "float64(", "array(", "np.array("] {
         if let Some(inner) = v.strip_prefix(wrap) {
             v = inner.strip_suffix(')')?;
@@ -312,7 +322,14 @@ fn numbers(name: &str, value: &str) -> Option<PrintedValue> {
         }
     }
     let own_half_units = half_units.clone();
-    (!numbers.is_empty()).then(|| PrintedValue { name: name.to_string(), numbers, half_units, own_half_units, fixed })
+    (!numbers.is_empty()).then(|| PrintedValue {
+        name: name.to_string(),
+        numbers,
+        padded_half_units: half_units.clone(),
+        half_units,
+        own_half_units,
+        fixed,
+    })
 }
 
 /// One number as NumPy or Python prints it (`0.`, `-0.`, `1.5e-05`, `3`), with half a unit
@@ -335,20 +352,51 @@ fn number(token: &str) -> Option<(f64, f64)> {
 }
 
 /// NumPy prints an array's elements with as many digits as the one that needs most, up to
-/// its precision, so a short element (`0.6` beside `0.`) is exact to that precision: an
-/// array's numbers in fixed notation take the finest unit printed in any array of the work.
+/// its precision, so a short element (`0.6` beside `0.55887606`) is exact to that array's
+/// finest digit: an array's numbers in fixed notation take the finest unit printed in that
+/// same array. Each printing has its own digits (`np.round(I, 4)`, a `"%.2f"` join,
+/// `np.printoptions(precision=3)` around one print): a value is judged at the digits it
+/// was printed with, never at another printing's. An array of whole numbers only
+/// (`[0. 0. 1. 0.]`) shows no digit of its own: it takes the finest the work's other
+/// arrays show (the print options' precision), never finer than NumPy's default 8
+/// decimals (a list of Python's 17-digit floats is no print option).
 fn array_precision(p: &mut Printed) {
-    let finest = p
+    let own_finest = |v: &PrintedValue| {
+        v.half_units
+            .iter()
+            .zip(&v.fixed)
+            .filter(|(h, f)| **f && **h > 0.0)
+            .map(|(h, _)| *h)
+            .fold(f64::INFINITY, f64::min)
+    };
+    let work_finest = p
         .values
         .iter()
         .filter(|v| v.numbers.len() > 1)
-        .flat_map(|v| v.half_units.iter().zip(&v.fixed).filter(|(_, f)| **f).map(|(h, _)| *h))
+        .map(own_finest)
+        .filter(|h| *h < 0.5)
+        .fold(f64::INFINITY, f64::min)
+        .max(0.5e-8);
+    let padded = p
+        .values
+        .iter()
+        .filter(|v| v.numbers.len() > 1)
+        .map(own_finest)
         .filter(|h| *h > 0.0)
         .fold(f64::INFINITY, f64::min);
-    if !finest.is_finite() {
-        return;
+    for v in p.values.iter_mut().filter(|v| v.numbers.len() > 1 && padded.is_finite()) {
+        for (h, _) in v.padded_half_units.iter_mut().zip(&v.fixed).filter(|(_, f)| **f) {
+            *h = h.min(padded);
+        }
     }
     for v in p.values.iter_mut().filter(|v| v.numbers.len() > 1) {
+        let mut finest = own_finest(v);
+        if finest >= 0.5 && work_finest.is_finite() {
+            finest = work_finest;
+        }
+        if !finest.is_finite() {
+            continue;
+        }
         for (h, _) in v.half_units.iter_mut().zip(&v.fixed).filter(|(_, f)| **f) {
             *h = h.min(finest);
         }
@@ -368,8 +416,12 @@ mod tests {
         let p = printed_text(text);
         let normal = p.get("vertexNormal").unwrap();
         assert_eq!(normal.numbers, vec![0.0, 0.6, 0.8, 0.0]);
-        // The finest fixed-notation array digit printed (vlv's 8 decimals).
-        assert_eq!(normal.half_units[1], 0.5e-8);
+        // Its own finest digit: another array's 8 decimals say nothing of this printing.
+        assert_eq!(normal.half_units[0], 0.05);
+        assert_eq!(normal.half_units[1], 0.05);
+        // Whole numbers only: the work's other arrays' finest (8 decimals here).
+        assert_eq!(printed_text("v = [0. 1.]\nw = [0.25 0.5]\n").get("v").unwrap().half_units, vec![0.005, 0.005]);
+        assert_eq!(p.get("vlv").unwrap().half_units[3], 0.5e-8);
         assert_eq!(p.get("vlv").unwrap().numbers, vec![0.79220526, 0.55887606, -0.2450885, 0.0]);
         assert_eq!(p.get("cosTheta").unwrap().numbers, vec![0.13925483139909867]);
         let ispec = p.get("Ispec").unwrap();
@@ -378,6 +430,10 @@ mod tests {
         // An array in e notation does not make the fixed ones finer.
         let q = printed_text("a = [8.24368169e-11 0.00000000e+00]\nb = [0.5 0.25]\n");
         assert_eq!(q.get("b").unwrap().half_units, vec![0.5e-2, 0.5e-2]);
+        // NumPy 2's list of its scalars is read.
+        let l = printed_text("I =  [np.float64(0.0596), np.float64(0.0)]\n");
+        assert_eq!(l.get("I").unwrap().numbers, vec![0.0596, 0.0]);
+        assert!(l.unread.is_empty());
         assert_eq!(p.get("vlv[1]").unwrap().numbers, vec![1.0, 2.0, 3.0, 0.0]);
         assert_eq!(p.get("modelview").unwrap().numbers, vec![1.0, 0.0, 0.0, 0.8]);
         assert_eq!(p.errors, vec!["ValueError: math domain error".to_string()]);
