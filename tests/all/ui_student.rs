@@ -7,7 +7,7 @@
 use crate::common;
 use crate::common::TempDir;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
