@@ -45,10 +45,12 @@ if [ ! -e "$dir/.rendered" ]; then
     png_resize "${s}__mark-16px-12lv.ppm" "${s}__mark-16px-12lv-png-resize50.ppm" -resize 50% -resize "${size}x${size}!"
     png_resize "${s}__mark-initials-25lv.ppm" "${s}__mark-initials-25lv-png-resize50.ppm" -resize 50% -resize "${size}x${size}!"
   done
-  for w in phong-demo__wrong-shininess-90 three-lights__wrong-blue-linear-0.11 three-lights__wrong-shininess-66; do
+  for w in phong-demo__wrong-shininess-90 three-lights__wrong-blue-linear-0.11 three-lights__wrong-shininess-66 \
+    three-lights__wrong-red-5levels three-lights__wrong-redall-5levels; do
     jpeg "$w.ppm" "$w-q90.ppm" -quality 90 -sampling-factor 1x1
     jpeg "$w.ppm" "$w-q95.ppm" -quality 95 -sampling-factor 1x1
   done
+  jpeg three-lights__wrong-red-5levels.ppm three-lights__wrong-red-5levels-q75.ppm -quality 75
   touch .rendered
   cd - >/dev/null
 fi
