@@ -300,7 +300,7 @@ fn shape_words(s: &Shape, right: f64) -> String {
                 at("x1", o.to.0),
                 at("y1", o.to.1),
                 ("levels", levels(o.levels)),
-                ("least", text(crate::locale::decimal(&format!("{:.1}", OFFSET_AT + o.shift)))),
+                ("least", text(crate::locale::decimal(&format!("{:.1}", OFFSET_AT + o.shift.abs())))),
                 ("score", percent(right)),
             ],
         ),
