@@ -51,6 +51,13 @@ fn wrongs(name: &str, right: &Drawing) -> Vec<(String, Drawing)> {
         }
         "three-lights" => {
             with("wrong-green-0.87", &|d| d.scene.lights[1].diffuse.y = 0.87);
+            // Issue 57's reviewer: the red light's diffuse 5 levels low (at most 3 in the
+            // picture), alone and on every channel; with noise or saved as JPEG it was
+            // "right as saved lossily".
+            with("wrong-red-5levels", &|d| d.scene.lights[0].diffuse.x -= 5.0 / 255.0);
+            with("wrong-redall-5levels", &|d| {
+                d.scene.lights[0].diffuse = lower(d.scene.lights[0].diffuse, 5.0 / 255.0);
+            });
             with("wrong-blue-linear-0.11", &|d| d.scene.lights[2].attenuation[1] = 0.11);
             with("wrong-shininess-54", &|d| d.scene.material.shininess = 54.0);
             with("wrong-shininess-66", &|d| d.scene.material.shininess = 66.0);
@@ -172,7 +179,20 @@ fn read_ppm(path: &Path, size: usize) -> Option<Vec<u8>> {
 
 /// The right picture box-filtered from one drawn `k` times as large: antialiased.
 fn antialiased(d: &Drawing, size: usize, k: usize) -> Vec<u8> {
-    let big = d.draw(size * k).expect("drawn").1;
+    moved_antialiased(d, size, k, 0)
+}
+
+/// The right picture drawn `k` times as large, moved `by` of its pixels right and down
+/// (its first row and column repeated), and box-filtered: an honest sub-pixel shift.
+fn moved_antialiased(d: &Drawing, size: usize, k: usize, by: usize) -> Vec<u8> {
+    let drawn = d.draw(size * k).expect("drawn").1;
+    let n = size * k;
+    let big: Vec<u8> = (0..n * n)
+        .flat_map(|q| {
+            let (x, y) = ((q % n).saturating_sub(by), (q / n).saturating_sub(by));
+            drawn[(y * n + x) * 4..(y * n + x) * 4 + 4].to_vec()
+        })
+        .collect();
     let mut out = vec![255u8; size * size * 4];
     for p in 0..size * size {
         let (x, y) = (p % size, p / size);
@@ -198,6 +218,9 @@ fn render(dir: &Path, size: usize) {
         write_ppm(&file("right-noise3"), &noised(&rgba, 3, 7), size);
         write_ppm(&file("right-noise5"), &noised(&rgba, 5, 7), size);
         write_ppm(&file("right-antialiased"), &antialiased(&right, size, 4), size);
+        // Issue 57: drawn at twice the size, moved a pixel each way, box-filtered: half a
+        // pixel's shift, which on the spot's pool's edge was "something is painted".
+        write_ppm(&file("right-2x-moved1"), &moved_antialiased(&right, size, 2, 1), size);
         let (cx, cy) = centre(&covered, size);
         let dark = |k: f64| move |v: u8| (f64::from(v) * (1.0 - k)).round() as u8;
         let minus = |l: u8| move |v: u8| v.saturating_sub(l);
@@ -207,6 +230,8 @@ fn render(dir: &Path, size: usize) {
             let at = (cx - 8, cy - 8);
             write_ppm(&file(&format!("mark-16px-{tag}lv")), &marked(&rgba, size, &square(at, 16), &minus(l)), size);
         }
+        // Issue 57: a small square 12 levels darker, and a 4-pixel one 30 % darker.
+        write_ppm(&file("mark-8px-12lv"), &marked(&rgba, size, &square((cx - 4, cy - 4), 8), &minus(12)), size);
         for len in [40usize, 80] {
             let line: Vec<(usize, usize)> = (0..len).map(|i| (cx - len / 2 + i, cy + 10)).collect();
             write_ppm(&file(&format!("mark-line{len}-15lv")), &marked(&rgba, size, &line, &minus(15)), size);

@@ -768,6 +768,11 @@ diagnose-footprint-rest = { $count } elsewhere
 diagnose-footprint-and = and
 diagnose-verdict-right-lossy = Right, as saved with losses (JPEG) or resized: the right picture explains { $score } of the object's pixels within { $levels } levels of a blend of their neighbours ({ $strict } within { $tolerance } of a neighbour), and its differences are noise, not a change of the picture.
 diagnose-looks-jpeg = The picture looks saved as JPEG: its difference from the right picture jumps across the edges of 8 x 8 blocks ({ $ratio } times as much as inside them). A lossy saving changes every pixel a little and may hide the cause: save the picture as PNG straight from the program (the exported program's --png option) and diagnose that one.
+diagnose-evenly-off = The picture is not the right one with losses only: over the { $width } x { $width } pixels from ({ $x0 }, { $y0 }) its { $channel ->
+        [0] red
+        [1] green
+       *[2] blue
+    } is { $levels } levels off the right picture's on average, { $errors } standard errors beyond what half a pixel's shift makes there; noise and a lossy saving scatter such a mean about 0. A value of the scene (a colour, an attenuation, the shininess) is likely a little off there, and the losses may hide which: save the picture as PNG straight from the program (glReadPixels) and diagnose that one.
 diagnose-verdict-right-within = Right within what a picture can tell: the right picture explains { $score } of the object's pixels (a pixel's shift and { $tolerance } levels allowed), but inside the object your picture differs from it by up to { $most } levels, { $pixels } pixels by more than { $rounding }. A mistake that changes the picture by no more than that (a shininess or a colour a little off) looks the same: this verdict cannot rule it out. The program's numbers can: check the values the notebook prints with phonglab check, or compare the program's glLight*/glMaterial* values with the scene's.
 diagnose-verdict-right = Right: the right picture explains { $score } of the object's pixels.
 diagnose-verdict-wrong = Wrong. The cause: { $cause } ({ $id }); the picture with that mistake explains { $score } of the object's pixels, the right picture { $right }.

@@ -773,6 +773,11 @@ diagnose-footprint-rest = { $count } em outros lugares
 diagnose-footprint-and = e
 diagnose-verdict-right-lossy = Certa, do jeito que foi salva com perdas (JPEG) ou redimensionada: a imagem certa explica { $score } dos pixels do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e as diferenças são ruído, não uma mudança da imagem.
 diagnose-looks-jpeg = A imagem parece ter sido salva como JPEG: a diferença dela para a imagem certa salta nas bordas de blocos de 8 x 8 ({ $ratio } vezes mais do que dentro deles). Salvar com perdas muda um pouco cada pixel e pode esconder a causa: salve a imagem como PNG direto do programa (com a opção --png do programa exportado) e diagnostique essa.
+diagnose-evenly-off = A imagem não é a certa apenas com perdas: nos { $width } x { $width } pixels a partir de ({ $x0 }, { $y0 }) o { $channel ->
+        [0] vermelho
+        [1] verde
+       *[2] azul
+    } dela difere do da imagem certa { $levels } níveis em média, { $errors } erros-padrão além do que um deslocamento de meio pixel faz ali; o ruído e uma imagem salva com perdas espalham essa média em torno de 0. Um valor da cena (uma cor, uma atenuação, o brilho) provavelmente está um pouco errado ali, e as perdas podem esconder qual: salve a imagem como PNG direto do programa (glReadPixels) e diagnostique essa.
 diagnose-verdict-right-within = Certa, até onde uma imagem permite dizer: a imagem certa explica { $score } dos pixels do objeto (com um pixel de deslocamento e { $tolerance } níveis de tolerância), mas dentro do objeto a sua imagem difere dela em até { $most } níveis, { $pixels } pixels em mais de { $rounding }. Um erro que não mude a imagem mais do que isso (um brilho ou uma cor um pouco diferentes) tem a mesma aparência: este veredito não o descarta. Os números do programa descartam: verifique os valores que o notebook imprime com o phonglab check, ou compare os valores de glLight*/glMaterial* do programa com os da cena.
 diagnose-verdict-right = Certa: a imagem certa explica { $score } dos pixels do objeto.
 diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos pixels do objeto, a imagem certa { $right }.

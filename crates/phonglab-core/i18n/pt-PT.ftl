@@ -768,6 +768,11 @@ diagnose-footprint-rest = { $count } noutros sítios
 diagnose-footprint-and = e
 diagnose-verdict-right-lossy = Certa, tal como foi guardada com perdas (JPEG) ou redimensionada: a imagem certa explica { $score } dos píxeis do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e as diferenças são ruído, não uma alteração da imagem.
 diagnose-looks-jpeg = A imagem parece ter sido guardada como JPEG: a sua diferença para a imagem certa salta nas margens de blocos de 8 x 8 ({ $ratio } vezes mais do que dentro deles). Guardar com perdas muda um pouco cada píxel e pode esconder a causa: guarde a imagem como PNG diretamente do programa (com a opção --png do programa exportado) e diagnostique essa.
+diagnose-evenly-off = A imagem não é a certa apenas com perdas: nos { $width } x { $width } píxeis a partir de ({ $x0 }, { $y0 }) o seu { $channel ->
+        [0] vermelho
+        [1] verde
+       *[2] azul
+    } difere do da imagem certa { $levels } níveis em média, { $errors } erros-padrão além do que um desvio de meio píxel faz aí; o ruído e uma gravação com perdas espalham essa média à volta de 0. Um valor da cena (uma cor, uma atenuação, o brilho) está provavelmente um pouco errado aí, e as perdas podem esconder qual: guarde a imagem como PNG diretamente do programa (glReadPixels) e diagnostique essa.
 diagnose-verdict-right-within = Certa, tanto quanto uma imagem permite dizer: a imagem certa explica { $score } dos píxeis do objeto (com um píxel de desvio e { $tolerance } níveis de tolerância), mas dentro do objeto a sua imagem difere dela até { $most } níveis, { $pixels } píxeis em mais de { $rounding }. Um erro que não altere a imagem mais do que isso (um brilho ou uma cor ligeiramente diferentes) tem o mesmo aspeto: este veredicto não o exclui. Os números do programa excluem-no: verifique os valores que o caderno imprime com o phonglab check, ou compare os valores de glLight*/glMaterial* do programa com os da cena.
 diagnose-verdict-right = Certa: a imagem certa explica { $score } dos píxeis do objeto.
 diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos píxeis do objeto, a imagem certa { $right }.

@@ -16,6 +16,7 @@
 //! A picture the right one otherwise explains is not right either when a solid region or
 //! thin marks of it differ ([`Region`], [`Marks`]).
 
+mod bias;
 mod calls;
 mod change;
 mod colours;
@@ -34,6 +35,7 @@ mod slips;
 mod values;
 mod within;
 
+pub use bias::{Bias, SYSTEMATIC_AT, systematic};
 pub use change::{At, Given};
 pub use colours::Colours;
 pub use drawing::Drawing;
@@ -183,6 +185,9 @@ pub struct Diagnosis {
     /// of JPEG's 8 x 8 blocks than inside them ([`jpeg_grid`]): from [`JPEG_GRID_AT`] the
     /// picture looks saved as JPEG.
     pub grid: f64,
+    /// Where the image is evenly off the right picture by more than losses make, when that
+    /// alone kept an "unexplained" picture from "right as saved lossily" ([`systematic`]).
+    pub bias: Option<Bias>,
 }
 
 /// What a picture's shape shows that no mistake's colours explain.
@@ -293,10 +298,19 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         d.shape = levels_changed(&d, &pictures, &covered, image, bg, size).map(Shape::Levels);
     }
     if d.shape.is_none() && d.verdict == Verdict::Unexplained {
-        d.lossy = lossy_right(&d, &covered, image, bg, size);
-        if d.lossy.is_some() {
-            d.verdict = Verdict::Right;
-            subtle.append(&mut seen);
+        // A mean over many pixels that noise cannot make is a change of the picture, not
+        // losses: the cause that explains the picture within the losses, or none.
+        let lossy = lossy_right(&d, &covered, image, bg, size);
+        match lossy.map(|_| systematic(&d.picture, &covered, image, size)) {
+            Some(None) => {
+                (d.verdict, d.lossy) = (Verdict::Right, lossy);
+                subtle.append(&mut seen);
+            }
+            Some(Some(bias)) => match lossy_cause(right, &d, image, bg, size)? {
+                Some(t) => (d.verdict, d.causes) = (Verdict::Wrong, vec![t]),
+                None => d.bias = Some(bias),
+            },
+            None => {}
         }
     }
     if d.shape.is_none() && d.verdict == Verdict::Right {
@@ -317,7 +331,7 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         d.shape = marks.filter(|m| m.pixels >= MARKS_AT).map(Shape::Marks);
     }
     if d.shape.is_none() && d.verdict == Verdict::Right {
-        let off = offset::largest_offset(&d.picture, &covered, image, size).filter(|o| o.levels.abs() >= OFFSET_AT);
+        let off = offset::largest_offset(&d.picture, &covered, image, size).filter(|o| o.beyond_shift() >= OFFSET_AT);
         if let Some(o) = off {
             match offset_explained(right, &d, (&covered, o), image, size)? {
                 Some(t) => (d.verdict, d.causes, d.lossy) = (Verdict::Wrong, vec![t], None),
@@ -419,7 +433,8 @@ fn colours_shown(
 
 /// Of the mistakes with a value fitted from `image`, drawn one by one, the one `score`
 /// (its picture and coverage; `None`: not this one) gives the least, its match measured
-/// against `image`: the one loop [`colours_shown`] and [`offset_explained`] choose with.
+/// against `image`: the one loop [`colours_shown`], [`offset_explained`] and [`lossy_cause`]
+/// choose with.
 fn best_fitted(
     right: &Drawing,
     d: &Diagnosis,
@@ -458,7 +473,7 @@ fn offset_explained(
 ) -> Result<Option<Tried>, SceneError> {
     best_fitted(right, d, image, size, |rgba, wrong_covered| {
         let own = offset::offset_over(&d.picture, covered, rgba, off, size);
-        let left = offset::largest_offset(rgba, wrong_covered, image, size).map_or(0.0, |o| o.levels.abs());
+        let left = offset::largest_offset(rgba, wrong_covered, image, size).map_or(0.0, |o| o.beyond_shift().max(0.0));
         let moves = own.abs() >= OFFSET_AT && own.signum() == off.levels.signum();
         (moves && left < OFFSET_AT).then_some(left)
     })
@@ -504,6 +519,24 @@ fn lossy_right(d: &Diagnosis, covered: &[bool], image: &[u8], bg: [u8; 3], size:
     // the right picture resampled or blurred, however near a value fitted to it comes.
     let resampled = blended_share(&d.picture, covered, image, bg, size, TOLERANCE) >= RIGHT_AT;
     (blended.score >= RIGHT_AT && (d.right.miss < closest || resampled) && unbiased).then_some(blended)
+}
+
+/// The mistake with a value fitted from `image` whose picture explains it as a lossy saving
+/// explains its original ([`blended_share`] within [`LOSSY`] levels for at least
+/// [`RIGHT_AT`] of the object, and no square evenly off it: [`systematic`]), the nearest in
+/// place of those; `None` when none does.
+fn lossy_cause(
+    right: &Drawing,
+    d: &Diagnosis,
+    image: &[u8],
+    bg: [u8; 3],
+    size: usize,
+) -> Result<Option<Tried>, SceneError> {
+    best_fitted(right, d, image, size, |rgba, wrong_covered| {
+        let within = blended_share(rgba, wrong_covered, image, bg, size, LOSSY) >= RIGHT_AT;
+        let flat = levels::inner_pixels(wrong_covered, size);
+        (within && systematic(rgba, wrong_covered, image, size).is_none()).then(|| levels::distance(rgba, image, &flat))
+    })
 }
 
 /// A "right" verdict made "wrong" by the mistakes the image shows over their footprints
@@ -699,6 +732,7 @@ fn verdict_of(exact: Match, mut tried: Vec<Tried>, picture: Vec<u8>, renderer: R
         footprint: None,
         within: None,
         grid: 1.0,
+        bias: None,
     }
 }
 

@@ -39,6 +39,18 @@ pub struct Offset {
     pub from: (usize, usize),
     /// Its bottom-right corner, included.
     pub to: (usize, usize),
+    /// What the image's shift by a fraction of a pixel (fitted over the whole object,
+    /// at most half a pixel each way) makes of the square's mean in that channel (levels,
+    /// signed): on a steep gradient (the spot's pool's edge) an honest picture drawn at
+    /// 1024 pixels, moved one and box-filtered to 512, is 4.7 levels darker over a square.
+    pub shift: f64,
+}
+
+impl Offset {
+    /// How far the square's mean is off beyond what the image's sub-pixel shift makes there.
+    pub fn beyond_shift(&self) -> f64 {
+        (self.levels - self.shift).abs()
+    }
 }
 
 /// The object's inside: covered pixels whose 8 neighbours are covered too.
@@ -83,6 +95,7 @@ pub fn largest_offset(picture: &[u8], covered: &[bool], image: &[u8], size: usiz
     let shift = aligned(picture, image, &on, size);
     let diff = |p: usize, c: usize| i32::from(image[shifted(p, shift, size) * 4 + c]) - i32::from(picture[p * 4 + c]);
     let median: Vec<i32> = (0..3).map(|c| median_of((0..size * size).filter(|&p| on[p]).map(|p| diff(p, c)))).collect();
+    let sub = sub_pixel(picture, &on, |p, c| f64::from(diff(p, c) - median[c]), size);
     // The squares slide by a quarter of their side: a block painted across a fixed grid's
     // squares (a 16-pixel square from (248, 248) on a 16-pixel grid) would spread over four
     // of them and show a quarter of its offset in each.
@@ -97,12 +110,59 @@ pub fn largest_offset(picture: &[u8], covered: &[bool], image: &[u8], size: usiz
         }
         let mean =
             |c: usize| pixels.iter().map(|&p| f64::from(diff(p, c) - median[c])).sum::<f64>() / pixels.len() as f64;
-        let levels = (0..3).map(mean).max_by(|a, b| a.abs().total_cmp(&b.abs())).unwrap_or(0.0);
-        if best.is_none_or(|b| levels.abs() > b.levels.abs()) {
-            best = Some(Offset { levels, pixels: pixels.len(), from: (x0, y0), to: (x1, y1) });
+        let (levels, shift) = (0..3)
+            .map(|c| (mean(c), shifted_by(picture, &pixels, c, sub, size)))
+            .max_by(|a, b| (a.0 - a.1).abs().total_cmp(&(b.0 - b.1).abs()))
+            .unwrap_or((0.0, 0.0));
+        let square = Offset { levels, pixels: pixels.len(), from: (x0, y0), to: (x1, y1), shift };
+        if best.is_none_or(|b| square.beyond_shift() > b.beyond_shift()) {
+            best = Some(square);
         }
     }
     best
+}
+
+/// The central differences across and down of `picture`'s channel `c` at `p` (inside the
+/// object: it has its four neighbours).
+fn gradient(picture: &[u8], p: usize, c: usize, size: usize) -> (f64, f64) {
+    let at = |q: usize| f64::from(picture[q * 4 + c]);
+    ((at(p + 1) - at(p - 1)) / 2.0, (at(p + size) - at(p - size)) / 2.0)
+}
+
+/// The image's shift by a fraction of a pixel, as the multiples (across, down) of the
+/// picture's gradient that best make the difference `diff` (least squares over the
+/// object's inside `on`, the three channels), each at most half a pixel: a shift the
+/// whole image shares, which a mark or a value's change, not lined up with the
+/// gradient everywhere, does not make.
+fn sub_pixel(picture: &[u8], on: &[bool], diff: impl Fn(usize, usize) -> f64, size: usize) -> (f64, f64) {
+    let (mut xx, mut xy, mut yy, mut xd, mut yd) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for p in (0..size * size).filter(|&p| on[p]) {
+        for c in 0..3 {
+            let ((gx, gy), d) = (gradient(picture, p, c, size), diff(p, c));
+            (xx, xy, yy, xd, yd) = (xx + gx * gx, xy + gx * gy, yy + gy * gy, xd + gx * d, yd + gy * d);
+        }
+    }
+    let half = |v: f64| if v.is_finite() { v.clamp(-0.5, 0.5) } else { 0.0 };
+    let det = xx * yy - xy * xy;
+    if det.abs() <= 1e-9 * (xx * yy).max(1.0) {
+        // A gradient all one way (or none): each direction alone.
+        return (half(xd / xx), half(yd / yy));
+    }
+    (half((xd * yy - yd * xy) / det), half((yd * xx - xd * xy) / det))
+}
+
+/// What the sub-pixel shift `(a, b)` ([`sub_pixel`]) makes of the mean of `picture`'s
+/// channel `c` over `pixels` (levels, signed).
+fn shifted_by(picture: &[u8], pixels: &[usize], c: usize, (a, b): (f64, f64), size: usize) -> f64 {
+    let n = pixels.len().max(1) as f64;
+    pixels
+        .iter()
+        .map(|&p| {
+            let (gx, gy) = gradient(picture, p, c, size);
+            a * gx + b * gy
+        })
+        .sum::<f64>()
+        / n
 }
 
 /// The mean offset (levels, the channel furthest off, signed) of `image` from `picture`
@@ -199,5 +259,38 @@ mod tests {
         let lifted: Vec<u8> = right.iter().enumerate().map(|(i, &v)| if i % 4 == 3 { v } else { v + 4 }).collect();
         let o = largest_offset(&right, &covered, &lifted, size).expect("an offset");
         assert!(o.levels.abs() < 0.5, "{o:?}");
+    }
+
+    #[test]
+    fn half_a_pixel_s_shift_on_a_steep_edge_is_not_an_offset() {
+        // Flat at 40, a ramp of 12 levels a pixel over x 20..36, flat at 232: moved half a
+        // pixel (each pixel the mean of itself and its left neighbour), the ramp's pixels
+        // are 6 levels darker, a square's mean as far off as a painted mark's.
+        let size = 64;
+        let covered = vec![true; size * size];
+        let level = |x: f64| (40.0 + 12.0 * (x - 20.0).clamp(0.0, 16.0)).round() as u8;
+        let draw = |dx: f64| -> Vec<u8> {
+            (0..size * size)
+                .flat_map(|p| {
+                    let v = level((p % size) as f64 - dx);
+                    [v, v, v, 255]
+                })
+                .collect()
+        };
+        let (right, moved) = (draw(0.0), draw(0.5));
+        let o = largest_offset(&right, &covered, &moved, size).expect("an offset");
+        let on_ramp = Offset { from: (20, 0), to: (35, 15), ..o };
+        let raw = offset_over(&right, &covered, &moved, on_ramp, size);
+        assert!(raw.abs() >= OFFSET_AT, "as far off as a mark: {raw}");
+        assert!(o.beyond_shift() < OFFSET_AT, "but no further than half a pixel's shift makes: {o:?}");
+        // A mark 12 levels darker on the same edge is still beyond it.
+        let mut marked = right.clone();
+        for p in (0..size * size).filter(|p| (20..36).contains(&(p % size)) && (24..40).contains(&(p / size))) {
+            for c in 0..3 {
+                marked[p * 4 + c] -= 12;
+            }
+        }
+        let o = largest_offset(&right, &covered, &marked, size).expect("an offset");
+        assert!(o.beyond_shift() >= OFFSET_AT, "{o:?}");
     }
 }

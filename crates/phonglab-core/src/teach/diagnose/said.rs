@@ -36,6 +36,8 @@ pub struct Said {
     /// How much the difference from the right picture jumps at JPEG's blocks' edges
     /// ([`super::jpeg_grid`]).
     pub grid: f64,
+    /// Where an unexplained picture is evenly off the right one beyond its losses.
+    pub bias: Option<super::Bias>,
 }
 
 /// How a verdict is filed, for machines (`phonglab diagnose --json`'s `finding`): the
@@ -67,6 +69,7 @@ impl Said {
             footprint: d.footprint.clone(),
             within: d.within,
             grid: d.grid,
+            bias: d.bias,
         }
     }
 
@@ -103,9 +106,30 @@ impl Said {
                 (None, None) => vec![tr_args("diagnose-verdict-unexplained-none", &[("right", right)])],
             }
             .into_iter()
+            .chain(self.evenly_off())
             .chain(self.looks_jpeg())
             .collect(),
         }
+    }
+
+    /// For a picture left unexplained only because it is evenly off the right picture
+    /// beyond its losses ([`super::systematic`]): where, by how much, and that the losses
+    /// may hide which value is off.
+    fn evenly_off(&self) -> Option<String> {
+        let b = self.bias?;
+        let at = |name: &'static str, v: usize| (name, Arg::Text(v.to_string()));
+        let number = |v: f64| Arg::Text(crate::locale::decimal(&format!("{v:.1}")));
+        Some(tr_args(
+            "diagnose-evenly-off",
+            &[
+                at("width", super::bias::TILE),
+                at("x0", b.at.0),
+                at("y0", b.at.1),
+                ("channel", Arg::Count(b.channel as i64)),
+                ("levels", number(b.levels)),
+                ("errors", number(b.errors)),
+            ],
+        ))
     }
 
     /// For a picture left unexplained that looks saved as JPEG ([`super::JPEG_GRID_AT`]):
@@ -276,7 +300,7 @@ fn shape_words(s: &Shape, right: f64) -> String {
                 at("x1", o.to.0),
                 at("y1", o.to.1),
                 ("levels", levels(o.levels)),
-                ("least", text(crate::locale::decimal(&format!("{OFFSET_AT:.1}")))),
+                ("least", text(crate::locale::decimal(&format!("{:.1}", OFFSET_AT + o.shift.abs())))),
                 ("score", percent(right)),
             ],
         ),
@@ -344,6 +368,7 @@ mod tests {
             footprint: None,
             within: None,
             grid: 1.0,
+            bias: None,
         }
     }
 
@@ -363,8 +388,8 @@ mod tests {
             matched: Match { score: 0.99, pixels: 1000, worst: (0, 0), worst_levels: 0, miss: 0.0 },
             distance: 1.0,
         }),
-        Shape::Offset(Offset { levels: -12.0, pixels: 256, from: (240, 240), to: (255, 255) }),
-        Shape::Offset(Offset { levels: 12.0, pixels: 256, from: (240, 240), to: (255, 255) }),
+        Shape::Offset(Offset { levels: -12.0, pixels: 256, from: (240, 240), to: (255, 255), shift: 0.0 }),
+        Shape::Offset(Offset { levels: 12.0, pixels: 256, from: (240, 240), to: (255, 255), shift: 0.0 }),
     ];
 
     #[test]
@@ -401,6 +426,24 @@ mod tests {
     }
 
     #[test]
+    fn an_unexplained_picture_evenly_off_beyond_its_losses_is_told_where_and_by_how_much() {
+        // The three-lights' red light 5 levels low with noise of ±3 was "right as saved
+        // lossily", "its differences are noise": now unexplained, and told why.
+        let bias = crate::teach::diagnose::Bias { at: (224, 96), channel: 0, levels: -2.76, errors: 21.0 };
+        let off = Said { named: Vec::new(), shape: None, bias: Some(bias), ..unexplained_with(Shape::NothingDrawn) };
+        let lines = with_locale(Locale::of(Lang::En), || off.lines());
+        assert_eq!(lines.len(), 2, "{lines:?}");
+        assert!(lines[1].contains("32 x 32 pixels from (224, 96) its red is -2.8 levels"), "{lines:?}");
+        assert!(lines[1].contains("21.0 standard errors") && lines[1].contains("may hide which"), "{lines:?}");
+        let lines = with_locale(Locale::of(Lang::PtBr), || off.lines());
+        assert!(lines[1].contains("o vermelho dela difere") && lines[1].contains("-2,8 níveis"), "{lines:?}");
+        let lines = with_locale(Locale::of(Lang::PtPt), || {
+            Said { bias: Some(crate::teach::diagnose::Bias { channel: 2, ..bias }), ..off.clone() }.lines()
+        });
+        assert!(lines[1].contains("o seu azul difere"), "{lines:?}");
+    }
+
+    #[test]
     fn causes_that_explain_the_picture_equally_are_said_as_one_or_the_other() {
         let tie = vec![cause("attenuation-left-out", 0.9951), cause("spot-left-out", 0.9949)];
         let wrong = |named: Vec<Tried>| Said {
@@ -413,6 +456,7 @@ mod tests {
             footprint: None,
             within: None,
             grid: 1.0,
+            bias: None,
         };
         let lines = with_locale(Locale::of(Lang::En), || wrong(tie.clone()).lines());
         let first = &lines[0];
