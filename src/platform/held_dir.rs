@@ -202,17 +202,36 @@ impl HeldDir {
     }
 
     /// Unix: does `name` in this folder hold the open `file` itself (not a link to it)?
-    #[cfg(unix)]
+    /// Elsewhere than Unix and Windows (the browser, which writes no set) it cannot be
+    /// told: never.
+    #[cfg(not(windows))]
     pub fn holds(&self, name: &OsStr, file: &File) -> bool {
-        use std::os::unix::fs::MetadataExt;
-        let (Ok(name), Ok(open)) = (plain(name), file.metadata()) else { return false };
-        unix::stat(&self.dir, name).is_ok_and(|s| !s.is_link && s.dev == open.dev() && s.ino == open.ino())
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::MetadataExt;
+            let (Ok(name), Ok(open)) = (plain(name), file.metadata()) else { return false };
+            unix::stat(&self.dir, name).is_ok_and(|s| !s.is_link && s.dev == open.dev() && s.ino == open.ino())
+        }
+        #[cfg(not(unix))]
+        {
+            let _ = (name, file);
+            false
+        }
     }
 
     /// Unix: removes the entry `name` (a file, or a link itself) from this folder.
-    #[cfg(unix)]
+    /// Elsewhere than Unix and Windows: refused.
+    #[cfg(not(windows))]
     pub fn remove_file(&self, name: &OsStr) -> io::Result<()> {
-        unix::unlink(&self.dir, plain(name)?, false)
+        #[cfg(unix)]
+        {
+            unix::unlink(&self.dir, plain(name)?, false)
+        }
+        #[cfg(not(unix))]
+        {
+            let _ = name;
+            Err(io::Error::new(io::ErrorKind::Unsupported, "no files on this platform"))
+        }
     }
 
     /// Moves `name` in this folder to `to_name` in the folder `to`, only where nothing is
