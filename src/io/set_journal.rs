@@ -14,7 +14,7 @@
 //!   renamed or removed meanwhile): one renamed and replaced by a link to another folder
 //!   never sends a write, a move or a removal into the folder the link leads to;
 //! - each file staged is named, by its identity, in a list appended before its bytes are
-//!   written ([`STAGED`]): a writer stopped before its journal decided leaves nothing the
+//!   written (`STAGED`): a writer stopped before its journal decided leaves nothing the
 //!   recovery removes but those;
 //! - the journal names the staging folder by its identity (Unix: device, inode and birth
 //!   time; Windows: the volume's serial number and the file index; what a file gets when it
@@ -285,7 +285,7 @@ pub fn remove_entry(dir: &HeldDir, entry: &Entry) -> io::Result<Took> {
 /// phonglab's records there (a journal, its temporary file, the list of what was staged, the
 /// list of what was written on its way into the folder): a regular file reached under its
 /// own name (not a link; Wine: not one that opens as the file it names), through the handle
-/// that checked it. A staged file goes only by its identity ([`remove_staged`]).
+/// that checked it. A staged file goes only by its identity (`remove_staged`).
 pub fn remove_own(dir: &HeldDir, name: &str) -> io::Result<Took> {
     match open_checked(dir, name, |f| crate::platform::os::regular_file_metadata(f).is_ok_and(|m| m.is_some()))? {
         Ok(opened) => Ok(if opened.remove()? { Took::Done } else { Took::Other }),
@@ -583,7 +583,7 @@ pub fn written_list_in(dir: &HeldDir) -> Vec<Entry> {
 /// Throws away the staging folder `staging` (held, in the folder held `parent`) of a set not
 /// swapped in (stopped before its journal decided, or undone): its journal first, then each
 /// file in it that phonglab put there (a file it staged, by the identity the list of what it
-/// staged names, [`remove_staged`]; its own records, [`remove_own`]: never a link, nor what
+/// staged names, `remove_staged`; its own records, [`remove_own`]: never a link, nor what
 /// one leads to), then the empty aside folder and the folder itself. `false`: something else
 /// is in it (a link, a folder, a file of the old set not moved back, a file at a staged
 /// name that is not the one staged), left there with the folder.
@@ -746,7 +746,7 @@ fn note_staged(staging: &HeldDir, staged: &Staged) -> io::Result<()> {
 
 /// Writes `bytes` as a new file `name` in the staging folder held `staging`: created
 /// exclusively (never through a link), noted in the list of what was staged with the
-/// identity read through the handle that made it ([`note_staged`]), then written and
+/// identity read through the handle that made it (`note_staged`), then written and
 /// synced; its entry for the journal.
 pub fn stage(staging: &HeldDir, name: &str, bytes: &[u8]) -> Result<Entry, (&'static str, io::Error)> {
     let file = staging.create_new(OsStr::new(name)).map_err(|e| ("write-step-create", e))?;

@@ -1,5 +1,5 @@
 //! A file moved or removed as the very file it is, never as whatever its name leads to: it
-//! is opened itself ([`open`]: a link is not followed), its caller checks it through that
+//! is opened itself ([`open_in`], in a folder held: a link is not followed), its caller checks it through that
 //! handle (its identity, size and bytes), and only then is it moved ([`Opened::rename_no_replace`])
 //! or removed ([`Opened::remove`]).
 //!

@@ -6,9 +6,9 @@
 /// How much more, at the least, the difference must jump across the blocks' edges than
 /// at the most jumping other place in a block for the picture to look saved as JPEG.
 /// Measured (scripts/diagnose-table.sh, the three scenes at 512, over flat parts
-/// ([`FLAT`])): JPEG of quality 75 to 95, 4:4:4 and 4:2:0, 1.25 to 2.09; a blur,
+/// (`FLAT`)): JPEG of quality 75 to 95, 4:4:4 and 4:2:0, 1.25 to 2.09; a blur,
 /// antialiasing, resizes down and up (Lanczos, Mitchell), half a pixel's shift, noise of
-/// ±3 and ±5 and a colour a few levels off, at most 1.02 (against [`QUIET`]).
+/// ±3 and ±5 and a colour a few levels off, at most 1.02 (against `QUIET`).
 pub const JPEG_GRID_AT: f64 = 1.12;
 
 /// The blocks JPEG codes apart.
@@ -27,7 +27,7 @@ const QUIET: f64 = 0.25;
 /// How much more the difference between `image` and `picture` (RGBA8, `size` square) jumps
 /// from one pixel to the next across the edges of 8 x 8 blocks than at the most jumping
 /// other place in a block, along rows and columns together, over pairs on flat parts of
-/// the object (`covered`; [`FLAT`]); 1 when the difference never jumps across an edge.
+/// the object (`covered`; `FLAT`); 1 when the difference never jumps across an edge.
 pub fn jpeg_grid(picture: &[u8], covered: &[bool], image: &[u8], size: usize) -> f64 {
     let mut sum = [0u64; BLOCK];
     let mut count = [0u64; BLOCK];
