@@ -221,6 +221,13 @@ fn json(d: &Diagnosis, image: &[u8], size: usize, probed: Option<&probe::Probe>)
         "same_picture": d.same_picture.iter().map(cause).collect::<Vec<_>>(),
         "right_score": d.right.score,
         "lossy_score": d.lossy.map(|m| m.score),
+        "evenly_off": d.bias.map(|b| {
+            let channel = ["red", "green", "blue"][b.channel.min(2)];
+            json!({
+                "from": [b.at.0, b.at.1], "width": phonglab_core::teach::diagnose::BIAS_SQUARE,
+                "channel": channel, "levels": b.levels, "errors": b.errors,
+            })
+        }),
         "footprint": d.footprint.as_ref().map(|f| json!({
             "pixels": f.pixels, "x": f.centre.0, "y": f.centre.1, "right": f.right, "mistake": f.mistake,
             "most": f.most,

@@ -839,3 +839,47 @@ fn a_transparent_picture_is_refused_and_an_opaque_one_is_judged() {
         }
     }
 }
+
+/// The hostile's review (57): a light's red diffuse 2 % low (0.8804 for 0.9, at most 3 levels
+/// in the picture) under noise of ±3 was "right as saved lossily … its differences are
+/// noise"; it is unexplained, and the JSON says where the picture is evenly off (as the text
+/// does): the square, the channel, the mean and how many standard errors it lies beyond.
+#[test]
+fn a_colour_a_little_off_under_noise_is_never_right_and_the_json_says_where_it_is_evenly_off() {
+    let dir = scratch("evenly-off");
+    let scene = write(&dir, "scene.toml", &shipped("three-lights"));
+    let text = shipped("three-lights").replacen("diffuse = [0.9, 0.1, 0.1]", "diffuse = [0.8804, 0.1, 0.1]", 1);
+    assert_ne!(text, shipped("three-lights"));
+    let wrong = write(&dir, "wrong.toml", &text);
+    let drawn = dir.join("drawn.png");
+    let o = phonglab(&["render", "--scene", wrong.to_str().unwrap(), "--size", "512", "-o", drawn.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (_, _, mut rgba) = phonglab::io::image::read_png(&drawn).unwrap();
+    let mut seed = 11u32;
+    for p in rgba.chunks_mut(4) {
+        for v in &mut p[..3] {
+            seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12345);
+            *v = (i32::from(*v) + ((seed >> 16) % 7) as i32 - 3).clamp(0, 255) as u8;
+        }
+    }
+    let image = dir.join("student.png");
+    phonglab::io::image::write_png(&image, 512, 512, &rgba).unwrap();
+    let args = ["diagnose", "--scene", scene.to_str().unwrap(), "--image", image.to_str().unwrap(), "--json"];
+    let o = phonglab(&args);
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap_or_else(|e| panic!("{e}: {o:?}"));
+    assert_ne!(v["verdict"], "right", "{v:#}");
+    assert_eq!(o.status.code(), Some(1));
+    let off = &v["evenly_off"];
+    assert_eq!(off["channel"], "red", "{v:#}");
+    assert!(off["levels"].as_f64().unwrap() < -1.0, "{v:#}");
+    assert!(off["errors"].as_f64().unwrap() >= phonglab_core::teach::diagnose::SYSTEMATIC_AT, "{v:#}");
+    assert_eq!(off["width"], 32);
+    // The right picture under the same noise says nothing is evenly off.
+    let right = dir.join("right.png");
+    let o = phonglab(&["render", "--scene", scene.to_str().unwrap(), "--size", "512", "-o", right.to_str().unwrap()]);
+    assert!(o.status.success());
+    let right_json =
+        phonglab(&["diagnose", "--scene", scene.to_str().unwrap(), "--image", right.to_str().unwrap(), "--json"]);
+    let r: serde_json::Value = serde_json::from_slice(&right_json.stdout).unwrap();
+    assert!(r["evenly_off"].is_null(), "{r:#}");
+}

@@ -35,7 +35,7 @@ mod slips;
 mod values;
 mod within;
 
-pub use bias::{Bias, SYSTEMATIC_AT, systematic};
+pub use bias::{Bias, SYSTEMATIC_AT, TILE as BIAS_SQUARE, systematic};
 pub use change::{At, Given};
 pub use colours::Colours;
 pub use drawing::Drawing;
