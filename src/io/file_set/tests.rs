@@ -527,6 +527,31 @@ fn meanwhile_at_step<R>(at: u32, act: impl FnOnce() + 'static, f: impl FnOnce() 
 
 /// Every file, folder and link under `dir`, with its bytes (a link: its target), walked
 /// without following a link: what "nothing there was written, moved or removed" compares.
+/// A folder's files, named, with their bytes ([`user_files`], [`everything_in`]).
+type Files = Vec<(String, Vec<u8>)>;
+
+/// The old set and the new one as a folder holds them once a set is written whole: what
+/// a swap test's folder must end with, either way.
+fn old_and_new_sets(name: &str) -> (Files, Files) {
+    let (want_old, want_new) = (fresh_dir(&format!("{name}-old")), fresh_dir(&format!("{name}-new")));
+    old_set(&want_old);
+    old_set(&want_new);
+    write_set(&want_new, &new_set(), |n: &str| n.ends_with(".md")).unwrap();
+    (user_files(&want_old), user_files(&want_new))
+}
+
+/// A folder outside the set's holding the teacher's files at the names a set writes (and
+/// an aside folder), and everything in it: a swap through a link must leave it so.
+fn outside_with_the_teachers_files(name: &str) -> (std::path::PathBuf, Files) {
+    let outside = fresh_dir(name);
+    std::fs::create_dir(outside.join(ASIDE)).unwrap();
+    for name in ["a.md", "b.md", "d.md", "thesis.txt", JOURNAL] {
+        std::fs::write(outside.join(name), "the teacher's").unwrap();
+    }
+    let before = everything_in(&outside);
+    (outside, before)
+}
+
 fn everything_in(dir: &Path) -> Vec<(String, Vec<u8>)> {
     let mut all = Vec::new();
     let mut todo = vec![dir.to_path_buf()];
@@ -578,24 +603,16 @@ fn staging_in(dir: &Path) -> std::path::PathBuf {
 #[cfg(any(unix, windows))]
 fn a_staging_folder_swapped_for_a_link_at_any_step_touches_nothing_outside() {
     let belongs = |n: &str| n.ends_with(".md");
-    let (want_old, want_new) = (fresh_dir("staging-swap-old"), fresh_dir("staging-swap-new"));
-    old_set(&want_old);
-    old_set(&want_new);
-    write_set(&want_new, &new_set(), belongs).unwrap();
-    let (old, new) = (user_files(&want_old), user_files(&want_new));
+    let (old, new) = old_and_new_sets("staging-swap");
     let probe = fresh_dir("staging-swap-probe");
-    if !plant_link(&want_old, &probe.join("link")) {
+    if !plant_link(&probe, &probe.join("link")) {
         eprintln!("no symbolic link can be made here: nothing to test");
         return;
     }
     for at in 0..13 {
-        let (dir, outside) = (fresh_dir(&format!("staging-swap-{at}")), fresh_dir(&format!("staging-swap-out-{at}")));
+        let dir = fresh_dir(&format!("staging-swap-{at}"));
         old_set(&dir);
-        std::fs::create_dir(outside.join(ASIDE)).unwrap();
-        for name in ["a.md", "b.md", "d.md", "thesis.txt", JOURNAL] {
-            std::fs::write(outside.join(name), "the teacher's").unwrap();
-        }
-        let before = everything_in(&outside);
+        let (outside, before) = outside_with_the_teachers_files(&format!("staging-swap-out-{at}"));
         let swapped = std::rc::Rc::new(std::cell::Cell::new(false));
         let (d, o, s) = (dir.clone(), outside.clone(), swapped.clone());
         let r = meanwhile_at_step(
@@ -640,11 +657,7 @@ fn a_staging_folder_swapped_for_a_link_at_any_step_touches_nothing_outside() {
 #[cfg(unix)]
 fn a_sets_folder_swapped_for_a_link_writes_nothing_through_it_and_says_so_truly() {
     let belongs = |n: &str| n.ends_with(".md");
-    let (want_old, want_new) = (temp_dir("folder-swap-old"), temp_dir("folder-swap-new"));
-    old_set(&want_old);
-    old_set(&want_new);
-    write_set(&want_new, &new_set(), belongs).unwrap();
-    let (old, new) = (user_files(&want_old), user_files(&want_new));
+    let (old, new) = old_and_new_sets("folder-swap");
     for at in -1..13 {
         let (dir, other) = (fresh_dir(&format!("folder-swap-{at}")), fresh_dir(&format!("folder-swap-other-{at}")));
         old_set(&dir);
@@ -740,11 +753,7 @@ fn unix_rename(from: &Path, to: &Path) -> bool {
 #[cfg(windows)]
 fn a_staging_folder_a_unix_program_swaps_for_a_link_touches_nothing_outside_and_a_set_stays_whole() {
     let belongs = |n: &str| n.ends_with(".md");
-    let (want_old, want_new) = (fresh_dir("unix-swap-old"), fresh_dir("unix-swap-new"));
-    old_set(&want_old);
-    old_set(&want_new);
-    write_set(&want_new, &new_set(), belongs).unwrap();
-    let (old, new) = (user_files(&want_old), user_files(&want_new));
+    let (old, new) = old_and_new_sets("unix-swap");
     let probe = fresh_dir("unix-swap-probe");
     std::fs::create_dir(probe.join("a")).unwrap();
     if !unix_rename(&probe.join("a"), &probe.join("b")) || !plant_link(&probe.join("b"), &probe.join("a")) {
@@ -752,13 +761,9 @@ fn a_staging_folder_a_unix_program_swaps_for_a_link_touches_nothing_outside_and_
         return;
     }
     for at in 0..13 {
-        let (dir, outside) = (fresh_dir(&format!("unix-swap-{at}")), fresh_dir(&format!("unix-swap-out-{at}")));
+        let dir = fresh_dir(&format!("unix-swap-{at}"));
         old_set(&dir);
-        std::fs::create_dir(outside.join(ASIDE)).unwrap();
-        for name in ["a.md", "b.md", "d.md", "thesis.txt", JOURNAL] {
-            std::fs::write(outside.join(name), "the teacher's").unwrap();
-        }
-        let before = everything_in(&outside);
+        let (outside, before) = outside_with_the_teachers_files(&format!("unix-swap-out-{at}"));
         let swapped = std::rc::Rc::new(std::cell::Cell::new(false));
         let (d, o, s) = (dir.clone(), outside.clone(), swapped.clone());
         let r = meanwhile_at_step(
