@@ -979,6 +979,10 @@ cli-value-quiz = the quiz on the scene
 cli-value-shader = the Shader window
 cli-value-cost = the Cost of accuracy window
 cli-value-demo-fixes = the Phong demo's three corrections, side by side with the demo's own picture
+cli-stopped = { $how ->
+        [ctrl-c] stopped by Ctrl+C.
+       *[asked] stopped: the system asked it to end.
+    } No file is left half-written (each is written whole or not at all); run the command again for what it had not yet written.
 app-cannot-open-window =
     cannot open the window: { $error }
     (headless? the subcommands work without a display: phonglab --help)

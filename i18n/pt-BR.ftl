@@ -997,6 +997,10 @@ cli-value-quiz = o teste sobre a cena
 cli-value-shader = a janela do Shader
 cli-value-cost = a janela do Custo da exatidão
 cli-value-demo-fixes = as três correções da demo de Phong, lado a lado com a imagem da própria demo
+cli-stopped = { $how ->
+        [ctrl-c] interrompido com Ctrl+C.
+       *[asked] interrompido: o sistema pediu que ele terminasse.
+    } Nenhum arquivo ficou gravado pela metade (cada um é gravado inteiro ou não é gravado); rode o comando de novo para o que ele ainda não tinha gravado.
 app-cannot-open-window =
     não é possível abrir a janela: { $error }
     (sem tela? os subcomandos funcionam sem tela: phonglab --help)

@@ -982,6 +982,10 @@ cli-value-quiz = o teste sobre a cena
 cli-value-shader = a janela do Shader
 cli-value-cost = a janela do Custo da exatidão
 cli-value-demo-fixes = as três correções da demo de Phong, lado a lado com a imagem da própria demo
+cli-stopped = { $how ->
+        [ctrl-c] parado com Ctrl+C.
+       *[asked] parado: o sistema pediu-lhe que terminasse.
+    } Nenhum ficheiro ficou escrito a meio (cada um é escrito por inteiro ou não é escrito); corra o comando de novo para o que ainda não tinha escrito.
 app-cannot-open-window =
     não é possível abrir a janela: { $error }
     (sem ecrã? os subcomandos funcionam sem ecrã: phonglab --help)

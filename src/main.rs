@@ -43,6 +43,7 @@ fn main() -> ExitCode {
         }
         Some(command) => {
             phonglab::platform::os::end_quietly_on_closed_pipe();
+            cli::say_when_stopped();
             cli::run(command)
         }
         None => match phonglab::app::run(

@@ -248,6 +248,26 @@ pub fn run(command: Command) -> ExitCode {
     finish(r)
 }
 
+/// A command stopped by Ctrl+C, or by the system asking it to end (a logout, `kill`), says
+/// so on the standard error in the user's language before it ends with the code a shell
+/// expects (130 for Ctrl+C: [`crate::platform::os::stopped_by`]), instead of vanishing
+/// without a word. What it says holds because every file is written whole or not at all
+/// (`io::atomic_write`; a set of files is finished or put back by the next run's journal).
+/// Called once, before the command starts; the window has its own handler (it saves the
+/// session).
+pub fn say_when_stopped() {
+    let (ctrl_c, asked) = (t!("cli-stopped", how = "ctrl-c"), t!("cli-stopped", how = "asked"));
+    let installed = crate::platform::os::on_termination(move |event| {
+        let (by_ctrl_c, code) = crate::platform::os::stopped_by(event);
+        say(&format!("phonglab: {}", if by_ctrl_c { &ctrl_c } else { &asked }));
+        std::process::exit(code);
+    });
+    match installed {
+        Ok(()) => log::debug!("a command stopped by Ctrl+C says so"),
+        Err(e) => log::debug!("a command stopped by Ctrl+C ends without a word: {e}"),
+    }
+}
+
 /// A command's exit code: 0 when it did what it was asked, else 2 after saying why on the
 /// standard error (its control characters written visibly).
 pub fn finish(r: Result<()>) -> ExitCode {

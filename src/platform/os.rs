@@ -303,6 +303,23 @@ pub fn on_termination(_handler: impl Fn(i32) + Send + Sync + 'static) -> io::Res
     Ok(())
 }
 
+/// What [`on_termination`]'s `event` means for a command that it stops: whether it was the
+/// user's Ctrl+C (or Ctrl+Break) rather than the system asking it to end (a logout, a closed
+/// console, `kill`), and the exit code it ends with. Unix: 128 + the signal, as a shell
+/// reports a process the signal ended (130 for Ctrl+C). Windows: 130 for Ctrl+C and
+/// Ctrl+Break, as on Unix, 1 for the others.
+pub fn stopped_by(event: i32) -> (bool, i32) {
+    #[cfg(unix)]
+    {
+        (event == libc::SIGINT, 128 + event)
+    }
+    #[cfg(not(unix))]
+    {
+        let ctrl_c = event == 0 || event == 1;
+        (ctrl_c, if ctrl_c { 130 } else { 1 })
+    }
+}
+
 /// Windows: phonglab is a GUI program (no console window opens when it is double-clicked),
 /// so a command typed in a terminal has no console of its own: this attaches to the
 /// terminal's (the parent's), so that what the command prints appears there. Output already

@@ -912,3 +912,51 @@ fn a_closed_pipe_ends_a_command_without_a_panic() {
         assert!(!err.contains("panicked") && !err.contains("Broken pipe"), "{args:?}: {err}");
     }
 }
+
+/// A command stopped by Ctrl+C (SIGINT) or asked to end (SIGTERM: a logout, `kill`) says so
+/// in the user's language, and that no file is left half-written, before it ends with the
+/// code a shell expects (128 + the signal); it vanished without a word before. The command
+/// waits on its standard input (`check --printed -`), and the signal is sent once its
+/// handler is installed (its debug log line).
+#[cfg(unix)]
+#[test]
+fn a_command_stopped_by_ctrl_c_says_so_in_the_users_language() {
+    use std::io::{BufRead, BufReader, Read};
+    use std::process::Stdio;
+    for (lang, signal, said, code) in [
+        ("C.UTF-8", libc::SIGINT, "phonglab: stopped by Ctrl+C. No file is left half-written", 130),
+        ("pt_PT.UTF-8", libc::SIGINT, "phonglab: parado com Ctrl+C. Nenhum ficheiro ficou escrito a meio", 130),
+        ("pt_BR.UTF-8", libc::SIGTERM, "phonglab: interrompido: o sistema pediu que ele terminasse.", 143),
+    ] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_phonglab"))
+            .args(["check", "--printed", "-"])
+            .env_remove("LC_ALL")
+            .env_remove("LC_MESSAGES")
+            .env("LANG", lang)
+            .env("RUST_LOG", "phonglab=debug")
+            .stdin(Stdio::piped())
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        // Its input closed after a minute, should no handler ever say it is installed: the
+        // command then ends (nothing printed to check), and the test fails rather than hangs.
+        let input = child.stdin.take();
+        std::thread::spawn(move || {
+            std::thread::sleep(std::time::Duration::from_secs(60));
+            drop(input);
+        });
+        let mut err = BufReader::new(child.stderr.take().unwrap());
+        let mut before = String::new();
+        while !before.contains("a command stopped by Ctrl+C says so") {
+            assert!(err.read_line(&mut before).unwrap() > 0, "ended before its handler: {before}");
+        }
+        // SAFETY: a signal to the child this test started and has not yet waited for.
+        assert_eq!(unsafe { libc::kill(child.id() as i32, signal) }, 0);
+        let mut after = String::new();
+        err.read_to_string(&mut after).unwrap();
+        let status = child.wait().unwrap();
+        assert_eq!(status.code(), Some(code), "{lang}: {after}");
+        assert!(after.contains(said), "{lang}: {after}");
+    }
+}
