@@ -64,6 +64,23 @@ fn a_set_folder_with_a_space_at_its_end_is_refused_and_nothing_is_made() {
     assert!(names(&d).is_empty(), "no folder made: {:?}", names(&d));
 }
 
+/// cmd's trap: `--out "C:\Exercícios de CG\"` keeps the quote (a backslash before it) and
+/// joins the next arguments to the folder's name. Refused, nothing made, and the message
+/// says how to write it in the user's language (before: Windows' "invalid name" alone).
+#[test]
+fn a_quote_kept_by_cmd_in_a_folders_name_is_refused_with_how_to_write_it() {
+    let d = scratch("quote");
+    let trapped = d.join("Exercícios de CG\" --count 3");
+    let out = common::phonglab(&["exercise", "--count", "1", "--out", trapped.to_str().unwrap()]);
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("In cmd, a backslash just before a closing quote keeps the quote"), "{err}");
+    assert!(err.contains(r#"("C:\Exercícios de CG", not "C:\Exercícios de CG\")"#), "{err}");
+    let pt = common::phonglab_in("pt_PT.UTF-8", &["exercise", "--count", "1", "--out", trapped.to_str().unwrap()]);
+    assert!(stderr(&pt).contains("No cmd, uma barra invertida mesmo antes das aspas finais"), "{}", stderr(&pt));
+    assert!(names(&d).is_empty(), "no folder made: {:?}", names(&d));
+}
+
 /// #49, #50: device names as a picture, a set's folder and a folder above an output, in
 /// English and in both Portuguese: refused, nothing made (before, Windows' raw errors).
 #[test]

@@ -985,6 +985,7 @@ err-output-is-input = { $output } is { $what } { $input }, which this command re
 err-output-is-other-output = { $output } is the other output { $other } (the same file): one would be written over the other; choose two different files
 err-name-windows-device = { $name } is a name Windows keeps for a device; choose another
 err-name-windows-char = { $name } holds “{ $char }”, which Windows does not allow in a file name (a “:” writes a hidden stream of another file); choose a name without it
+err-name-windows-quote = { $name } holds a “"”, which Windows does not allow in a file name. In cmd, a backslash just before a closing quote keeps the quote and joins what follows to the name: write a folder without its last backslash ("C:\Exercícios de CG", not "C:\Exercícios de CG\")
 err-name-windows-end = Windows drops a dot or a space at the end of a name ({ $name } would be { $kept }, another file); choose a name without one
 input-kind-input = the input
 input-kind-scene = the scene

@@ -992,6 +992,7 @@ err-output-is-input = { $output } é { $what } { $input }, que este comando lê 
 err-output-is-other-output = { $output } é a outra saída { $other } (o mesmo arquivo): uma seria escrita por cima da outra; escolha dois arquivos diferentes
 err-name-windows-device = { $name } é um nome que o Windows reserva para um dispositivo; escolha outro
 err-name-windows-char = { $name } contém “{ $char }”, que o Windows não permite em um nome de arquivo (um “:” grava um fluxo oculto de outro arquivo); escolha um nome sem ele
+err-name-windows-quote = { $name } contém “"”, que o Windows não permite em um nome de arquivo. No cmd, uma barra invertida logo antes das aspas finais mantém as aspas e junta ao nome o que vem depois: escreva a pasta sem a última barra ("C:\Exercícios de CG", e não "C:\Exercícios de CG\")
 err-name-windows-end = o Windows remove o ponto ou o espaço no final de um nome ({ $name } seria { $kept }, outro arquivo); escolha um nome sem ele
 input-kind-input = a entrada
 input-kind-scene = a cena

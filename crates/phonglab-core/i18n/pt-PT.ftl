@@ -985,6 +985,7 @@ err-output-is-input = { $output } é { $what } { $input }, que este comando lê 
 err-output-is-other-output = { $output } é a outra saída { $other } (o mesmo ficheiro): uma seria escrita por cima da outra; escolha dois ficheiros diferentes
 err-name-windows-device = { $name } é um nome que o Windows reserva para um dispositivo; escolha outro
 err-name-windows-char = { $name } contém “{ $char }”, que o Windows não permite num nome de ficheiro (um “:” escreve um fluxo oculto de outro ficheiro); escolha um nome sem ele
+err-name-windows-quote = { $name } contém “"”, que o Windows não permite num nome de ficheiro. No cmd, uma barra invertida mesmo antes das aspas finais guarda as aspas e junta ao nome o que vem a seguir: escreva a pasta sem a última barra ("C:\Exercícios de CG", e não "C:\Exercícios de CG\")
 err-name-windows-end = o Windows retira o ponto ou o espaço no fim de um nome ({ $name } seria { $kept }, outro ficheiro); escolha um nome sem ele
 input-kind-input = a entrada
 input-kind-scene = a cena

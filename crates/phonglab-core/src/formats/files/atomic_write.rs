@@ -419,6 +419,10 @@ pub fn refuse_unkept_name(path: &Path) -> Result<(), String> {
         let shown_name = text(&name.to_string_lossy());
         match unkept_name(name) {
             Some(Unkept::Device) => return Err(crate::t!("err-name-windows-device", name = shown_name)),
+            // A '"' is most often cmd's trap: a backslash just before a closing quote
+            // (`--out "C:\Exercícios de CG\"`) keeps the quote in the argument and joins the
+            // next ones to it; the message says how to write it.
+            Some(Unkept::Char('"')) => return Err(crate::t!("err-name-windows-quote", name = shown_name)),
             Some(Unkept::Char(c)) => {
                 return Err(crate::t!("err-name-windows-char", name = shown_name, char = text(&c.to_string())));
             }
