@@ -1139,6 +1139,6 @@ arg-error-twice = { $arg } is given twice: give it once.
 arg-error-unexpected = { $arg } was not expected here: it is not an option, nor the value of one.
 arg-error-more = See { $help }.
 # fix57c
-work-output-changed = { $path } is phonglab's earlier { $kind }, but changed since phonglab wrote it (a line added, an edit): what was added is not phonglab's to erase; nothing was written. Give another name, or move it away first
+work-output-changed = { $path } is phonglab's earlier { $kind }, but changed since phonglab wrote it (a line added, an edit): phonglab does not erase what was added; nothing was written. Give another name (--csv marks-2.csv, --report report-2.md), or move that file away first
 work-output-no-record = { $path } looks like phonglab's earlier { $kind }, but phonglab has no record of writing it here (anyone can write its first line): it is not phonglab's to replace; nothing was written. Give another name, or move it away first
 work-output-records-untrusted = { $path } looks like phonglab's earlier { $kind }, but phonglab's records of what it wrote ({ $records }) are not this user's alone (another user owns them or can write there), so none is trusted; nothing was written. Give another name, or make that folder yours alone (chmod 700)

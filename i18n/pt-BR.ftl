@@ -1161,6 +1161,6 @@ arg-error-twice = { $arg } foi informada duas vezes: informe-a uma vez só.
 arg-error-unexpected = Não se esperava { $arg } aqui: não é uma opção nem o valor de uma.
 arg-error-more = Veja { $help }.
 # fix57c
-work-output-changed = { $path } é um resultado anterior do phonglab ({ $kind }), mas foi alterado depois que o phonglab o gravou (uma linha acrescentada, uma edição): o que foi acrescentado não cabe ao phonglab apagar; nada foi gravado. Indique outro nome, ou tire esse arquivo daí antes
+work-output-changed = { $path } é um resultado anterior do phonglab, { $kind }, mas foi alterado depois que o phonglab o gravou (uma linha acrescentada, uma edição): o phonglab não apaga o que foi acrescentado; nada foi gravado. Indique outro nome (--csv notas-2.csv, --report relatorio-2.md), ou tire esse arquivo daí antes
 work-output-no-record = { $path } parece um resultado anterior do phonglab ({ $kind }), mas o phonglab não tem registro de tê-lo gravado aqui (qualquer pessoa pode escrever a primeira linha dele): não cabe ao phonglab substituí-lo; nada foi gravado. Indique outro nome, ou tire esse arquivo daí antes
 work-output-records-untrusted = { $path } parece um resultado anterior do phonglab ({ $kind }), mas os registros do que o phonglab gravou ({ $records }) não são só deste usuário (outro usuário é o dono ou pode gravar lá), então nenhum é confiável; nada foi gravado. Indique outro nome, ou torne essa pasta só sua (chmod 700)

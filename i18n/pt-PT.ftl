@@ -1142,6 +1142,6 @@ arg-error-twice = { $arg } foi indicada duas vezes: indique-a uma só vez.
 arg-error-unexpected = Não se esperava { $arg } aqui: não é uma opção nem o valor de uma.
 arg-error-more = Veja { $help }.
 # fix57c
-work-output-changed = { $path } é um resultado anterior do phonglab ({ $kind }), mas foi alterado depois de o phonglab o escrever (uma linha acrescentada, uma edição): o que foi acrescentado não é do phonglab para apagar; nada foi escrito. Indique outro nome, ou tire primeiro esse ficheiro daí
+work-output-changed = { $path } é um resultado anterior do phonglab, { $kind }, mas foi alterado depois de o phonglab o escrever (uma linha acrescentada, uma edição): o phonglab não apaga o que lá foi acrescentado; nada foi escrito. Indique outro nome (--csv notas-2.csv, --report relatorio-2.md), ou tire primeiro esse ficheiro daí
 work-output-no-record = { $path } parece um resultado anterior do phonglab ({ $kind }), mas o phonglab não tem registo de o ter escrito aqui (qualquer pessoa pode escrever a sua primeira linha): não é do phonglab para substituir; nada foi escrito. Indique outro nome, ou tire primeiro esse ficheiro daí
 work-output-records-untrusted = { $path } parece um resultado anterior do phonglab ({ $kind }), mas os registos do que o phonglab escreveu ({ $records }) não são só deste utilizador (outro utilizador é o dono ou pode escrever lá), por isso nenhum é de confiança; nada foi escrito. Indique outro nome, ou torne essa pasta só sua (chmod 700)

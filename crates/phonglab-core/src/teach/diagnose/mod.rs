@@ -232,7 +232,7 @@ pub fn drawings_at_most(right: &Drawing) -> usize {
         lights: right.scene.lights.len(),
         fitted: [[1.0; 3]; colours::TERMS],
         scene: [[0.0; 3]; colours::TERMS],
-        shown: true,
+        shown: Some(colours::Nearer { pixels: 0, to_fitted: 0.0, to_scene: 0.0 }),
     };
     let mut every = values::Values::default();
     for (i, l) in right.scene.lights.iter().enumerate().take(crate::model::scene::MAX_LIGHTS) {
@@ -423,7 +423,7 @@ fn colours_shown(
     image: &[u8],
     size: usize,
 ) -> Result<Option<Tried>, SceneError> {
-    let shown = |t: &Tried| t.id() == "colours-differ" && t.at.colours.is_some_and(|c| c.shown);
+    let shown = |t: &Tried| t.id() == "colours-differ" && t.at.colours.is_some_and(|c| c.shown.is_some());
     if !d.tried.iter().any(shown) {
         return Ok(None);
     }
