@@ -1073,6 +1073,7 @@ student-menu-hover = A worksheet notebook saved with its outputs (.ipynb) or the
 student-choose-why = Choose the student's notebook (saved with its outputs, .ipynb), printed text (.txt) or picture (.png, 512 x 512).
 student-choose-filter = Notebook, printed text or picture
 student-check = Check
+student-own-scene = { $count } of its typed inputs differ from the scene shown: it looks typed for another scene, so it is checked against the notebook's own scene (as phonglab check without --scene). Is this the right scene? To mark it against the assignment, open that scene.
 student-heading = Student's work: { $file }
 student-clear = Clear
 student-clear-hover = Hide the student's values and the findings

@@ -1092,6 +1092,7 @@ student-menu-hover = Um notebook da lista salvo com as saídas (.ipynb) ou o tex
 student-choose-why = Escolha o notebook do aluno (salvo com as saídas, .ipynb), o texto impresso (.txt) ou a imagem (.png, 512 x 512).
 student-choose-filter = Notebook, texto impresso ou imagem
 student-check = Corrigir
+student-own-scene = { $count } dos valores que ele digitou diferem da cena mostrada: parece digitado para outra cena, por isso é conferido com a cena do próprio notebook (como o phonglab check sem --scene). É esta a cena certa? Para corrigir contra o enunciado, abra essa cena.
 student-heading = Trabalho do aluno: { $file }
 student-clear = Limpar
 student-clear-hover = Ocultar os valores do aluno e a correção

@@ -1076,6 +1076,7 @@ student-menu-hover = Um caderno da ficha guardado com as saídas (.ipynb) ou o t
 student-choose-why = Escolha o caderno do aluno (guardado com as saídas, .ipynb), o texto impresso (.txt) ou a imagem (.png, 512 x 512).
 student-choose-filter = Caderno, texto impresso ou imagem
 student-check = Corrigir
+student-own-scene = { $count } dos valores que escreveu diferem da cena mostrada: parece escrito para outra cena, por isso é verificado contra a cena do próprio notebook (como o phonglab check sem --scene). É esta a cena certa? Para o corrigir contra o enunciado, abra essa cena.
 student-heading = Trabalho do aluno: { $file }
 student-clear = Limpar
 student-clear-hover = Esconder os valores do aluno e a correção

@@ -191,6 +191,37 @@ fn a_dropped_notebook_with_outputs_asks_and_printed_text_is_checked_at_once() {
     assert_eq!(h.state().student.as_ref().map(|s| s.file.as_str()), Some("printed.txt"));
 }
 
+/// The worksheet's notebook checked while another scene is shown (the spotlight): its typed
+/// inputs differ in most places, so it is checked against its own scene, as `phonglab check`
+/// without `--scene` does, and the panel says so; before, it listed some 60 inputs in red and
+/// told the teacher to run every cell of a notebook whose every cell was run (teacher, round 3).
+#[test]
+fn a_notebook_typed_for_another_scene_is_checked_against_its_own_and_says_so() {
+    let dir = TempDir::new("ui-student-own-scene");
+    let nb = dir.0.join("aluno.ipynb");
+    std::fs::write(&nb, notebook_with_outputs(&printed(None))).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    h.state_mut().load(spotlight(), "foco");
+    h.run_steps(3);
+    drop_file(&mut h, &nb);
+    h.get_by_label("Check it against this scene").click();
+    h.run_steps(3);
+    let s = h.state().student.as_ref().expect("checked");
+    assert!(s.own_scene.is_some_and(|n| n >= 4), "{:?}", s.own_scene);
+    assert!(s.check.right(), "its own scene's key: {:?}", s.check.unchecked().map(|u| u.words()));
+    let line = h.get_by_label_contains("it looks typed for another scene");
+    let rect = line.rect();
+    assert!(rect.width() > 100.0 && rect.max.x <= 1280.0 && rect.max.y <= 720.0, "{rect:?}");
+    assert!(h.query_by_label_contains("your typed inputs differ from the assignment's").is_none());
+    // Back on the worksheet's scene, the same work is checked against it, with no such line.
+    h.state_mut().load(AppState::worksheet().doc, "ficha");
+    h.run_steps(3);
+    let s = h.state().student.as_ref().expect("still checked");
+    assert_eq!(s.own_scene, None);
+    assert!(s.check.right());
+    assert!(h.query_by_label_contains("it looks typed for another scene").is_none());
+}
+
 /// A notebook worked under the worksheet's rules, checked against a scene under OpenGL's:
 /// the window says which typed inputs differ as the command line does, the rule set in
 /// words (never the raw id `rules`), and the line lies inside the student's column.
