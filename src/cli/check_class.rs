@@ -132,7 +132,7 @@ fn not_a_file(path: &Path) -> Option<String> {
 fn checking_order(paths: &[PathBuf]) -> Vec<usize> {
     let size = |p: &PathBuf| std::fs::symlink_metadata(p).map_or(u64::MAX, |m| m.len());
     let mut order: Vec<(u64, usize)> = paths.iter().enumerate().map(|(k, p)| (size(p), k)).collect();
-    order.sort();
+    order.sort_unstable();
     order.into_iter().map(|(_, k)| k).collect()
 }
 
