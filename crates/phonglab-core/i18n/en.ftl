@@ -1010,3 +1010,4 @@ check-too-few-digits = not checked whole: too few digits to tell the key from a 
        *[other] { $decimals } decimal places
     } seen). Print more digits (np.set_printoptions(precision=8) at the top, or NumPy's default), run every cell again (Jupyter: Restart & Run All, in the Kernel menu), and check it again
 check-stale-count = not checked whole: a cell's execution count is not a run's ([{ $count }]: Jupyter numbers the cells it runs 1, 2, 3, in order), so nothing says the outputs are from one run in order. Run every cell again (Jupyter: Restart & Run All, in the Kernel menu), save, and check it again
+check-stale-not-run = not checked whole: a cell of code between those numbered [{ $above }] and [{ $below }] has no execution count (it was not run in that run, or its outputs were cleared), so the outputs below it are not from its code run in order. Run every cell again (Jupyter: Restart & Run All, in the Kernel menu), save, and check it again
