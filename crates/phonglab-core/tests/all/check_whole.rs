@@ -275,6 +275,24 @@ fn an_error_in_the_self_checks_cell_stops_the_run_as_any_cells() {
     assert_eq!(c.unchecked().unwrap().id(), "run-stopped");
 }
 
+/// The exported notebook's last cell calls phonglab's self-check: a student without
+/// phonglab installed gets `ModuleNotFoundError` there, after every step was printed. Nothing
+/// below it ran stale, so the work is judged as printed (right here), not "run stopped".
+#[test]
+fn an_error_in_a_last_self_check_cell_leaves_the_work_above_it_judged() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = work(&scene, None, None);
+    let cells = serde_json::json!({"cells": [
+        {"cell_type": "code", "execution_count": 1, "source": ["x = 1\n"], "outputs": stream(&printed_of(&key, None))},
+        {"cell_type": "code", "execution_count": 2, "source": ["import phonglab\n", "phonglab.check(globals())\n"],
+         "outputs": [{"output_type": "error", "ename": "ModuleNotFoundError", "evalue": "No module named 'phonglab'", "traceback": []}]},
+    ]});
+    let p = notebook_outputs(&cells.to_string()).unwrap();
+    assert!(p.errors.is_empty(), "{:?}", p.errors);
+    let c = check(&scene, &scene, &p);
+    assert_eq!(c.overall(), Overall::Right, "{:?}", c.unchecked().map(|u| u.id()));
+}
+
 /// Issue 57: a code cell with no execution count between two numbered ones was not run
 /// in that run (or its outputs were cleared): the outputs below it are stale, as counts
 /// that go back are. An empty cell (Jupyter never runs one), and cells not run above or

@@ -191,6 +191,8 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
     // Each code cell's count, in order (`None`: not run); empty cells left out.
     let mut counts: Vec<Option<i64>> = Vec::new();
     let mut not_a_count: Option<String> = None;
+    // A self-check cell's error, the run's once a cell below it has outputs.
+    let mut self_check_error: Option<String> = None;
     for cell in cells.iter().filter(|c| c["cell_type"] == "code") {
         let source = joined(&cell["source"]);
         code.push_str(&source);
@@ -204,14 +206,24 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
         }
         // The self-check's table echoes the formulas and both values of every step
         // (`vlv = vertexPos - lightPos`): phonglab's words, never the student's work. Its
-        // errors are the run's, as any cell's: the run stopped there.
+        // error (phonglab not installed: `ModuleNotFoundError`) stopped the run there, which
+        // matters only to the cells below it: it is the run's error once a cell below has
+        // outputs (then from an earlier run), and the work's printed steps above it stand.
         let self_check = calls_self_check(&source);
-        for output in cell["outputs"].as_array().map(Vec::as_slice).unwrap_or_default() {
+        let outputs = cell["outputs"].as_array().map(Vec::as_slice).unwrap_or_default();
+        if !outputs.is_empty()
+            && let Some(e) = self_check_error.take()
+            && errors.len() < MAX_ERRORS
+        {
+            errors.push(e);
+        }
+        for output in outputs {
             any = true;
             // After an error, Run All runs nothing more: what follows is from an earlier run.
             let into = if errors.is_empty() { &mut text } else { &mut after };
             match output["output_type"].as_str() {
                 Some("stream") if !self_check => into.push_str(&joined(&output["text"])),
+                Some("error") if self_check => self_check_error = Some(cell_error(output)),
                 Some("error") if errors.len() < MAX_ERRORS => errors.push(cell_error(output)),
                 _ => {}
             }
