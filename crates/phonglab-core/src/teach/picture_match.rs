@@ -132,7 +132,11 @@ pub fn luma_chroma(rgba: &[u8]) -> Vec<[f64; 3]> {
 /// JFIF's Y, Cb, Cr of an RGB pixel.
 fn ycc(r: u8, g: u8, b: u8) -> [f64; 3] {
     let (r, g, b) = (f64::from(r), f64::from(g), f64::from(b));
-    [0.299 * r + 0.587 * g + 0.114 * b, 128.0 - 0.168736 * r - 0.331264 * g + 0.5 * b, 128.0 + 0.5 * r - 0.418688 * g - 0.081312 * b]
+    [
+        0.299 * r + 0.587 * g + 0.114 * b,
+        128.0 - 0.168736 * r - 0.331264 * g + 0.5 * b,
+        128.0 + 0.5 * r - 0.418688 * g - 0.081312 * b,
+    ]
 }
 
 /// How far pixel `p` of `image` (RGBA8, `size` square) lies outside what a JPEG with its
@@ -244,7 +248,7 @@ pub type Boxed = ((usize, usize), (usize, usize));
 pub const BOX_INK: [u8; 3] = [255, 0, 255];
 
 /// How far outside a box its outline is drawn, in pixels: the pixels boxed stay seen.
-const BOX_GAP: usize = 2;
+pub const BOX_GAP: usize = 2;
 
 /// Draws each box of `boxes` on `rgba` (RGBA8, `size` square) as a dashed outline in
 /// [`BOX_INK`], `BOX_GAP` pixels outside it (within the picture): 3 pixels drawn, 2 left.

@@ -97,7 +97,7 @@ impl Said {
     /// offset's square, marks): then [`Self::lines`] says once where (0, 0) is.
     pub fn places(&self) -> bool {
         let shown = matches!(self.shape, Some(Shape::Region(_) | Shape::Marks(_) | Shape::Offset(_)));
-        shown || (self.verdict == Verdict::Wrong && self.footprint.is_some())
+        shown || self.bias.is_some() || (self.verdict == Verdict::Wrong && self.footprint.is_some())
     }
 
     /// The findings, one a line: the verdict first.
@@ -238,7 +238,8 @@ impl Said {
 
     /// The places the findings name by their pixels, as boxes to draw on the difference
     /// image ([`crate::teach::picture_match::draw_boxes`]): the region, the marks or the
-    /// offset's square; the footprint's groups said one by one.
+    /// offset's square; the square evenly off the right picture; the footprint's groups said
+    /// one by one.
     pub fn boxes(&self) -> Vec<Boxed> {
         let mut out = Vec::new();
         match self.shape {
@@ -246,6 +247,10 @@ impl Said {
             Some(Shape::Marks(m)) => out.push((m.from, m.to)),
             Some(Shape::Offset(o)) => out.push((o.from, o.to)),
             _ => {}
+        }
+        if let Some(b) = self.bias {
+            let last = super::bias::TILE - 1;
+            out.push((b.at, (b.at.0 + last, b.at.1 + last)));
         }
         if self.verdict == Verdict::Wrong
             && let Some(f) = &self.footprint
@@ -461,8 +466,11 @@ mod tests {
         let bias = crate::teach::diagnose::Bias { at: (224, 96), channel: 0, levels: -2.76, errors: 21.0 };
         let off = Said { named: Vec::new(), shape: None, bias: Some(bias), ..unexplained_with(Shape::NothingDrawn) };
         let lines = with_locale(Locale::of(Lang::En), || off.lines());
-        assert_eq!(lines.len(), 2, "{lines:?}");
+        assert_eq!(lines.len(), 3, "{lines:?}");
         assert!(lines[1].contains("32 x 32 pixels from (224, 96) its red is -2.8 levels"), "{lines:?}");
+        assert!(lines[2].starts_with("Pixels are counted from (0, 0)"), "{lines:?}");
+        // The square it names is boxed on the difference image, as the teacher could not find it.
+        assert_eq!(off.boxes(), vec![((224, 96), (255, 127))]);
         assert!(lines[1].contains("21.0 standard errors") && lines[1].contains("may hide which"), "{lines:?}");
         let lines = with_locale(Locale::of(Lang::PtBr), || off.lines());
         assert!(lines[1].contains("o vermelho dela difere") && lines[1].contains("-2,8 níveis"), "{lines:?}");
