@@ -1073,6 +1073,7 @@ student-menu-hover = A worksheet notebook saved with its outputs (.ipynb) or the
 student-choose-why = Choose the student's notebook (saved with its outputs, .ipynb), printed text (.txt) or picture (.png, 512 x 512).
 student-choose-filter = Notebook, printed text or picture
 student-check = Check
+student-own-scene = { $count } of its typed inputs differ from the scene shown: it looks typed for another scene, so it is checked against the notebook's own scene (as phonglab check without --scene). Is this the right scene? To mark it against the assignment, open that scene.
 student-heading = Student's work: { $file }
 student-clear = Clear
 student-clear-hover = Hide the student's values and the findings
@@ -1139,6 +1140,6 @@ arg-error-twice = { $arg } is given twice: give it once.
 arg-error-unexpected = { $arg } was not expected here: it is not an option, nor the value of one.
 arg-error-more = See { $help }.
 # fix57c
-work-output-changed = { $path } is phonglab's earlier { $kind }, but changed since phonglab wrote it (a line added, an edit): what was added is not phonglab's to erase; nothing was written. Give another name, or move it away first
+work-output-changed = { $path } is phonglab's earlier { $kind }, but changed since phonglab wrote it (a line added, an edit): phonglab does not erase what was added; nothing was written. Give another name (--csv marks-2.csv, --report report-2.md), or move that file away first
 work-output-no-record = { $path } looks like phonglab's earlier { $kind }, but phonglab has no record of writing it here (anyone can write its first line): it is not phonglab's to replace; nothing was written. Give another name, or move it away first
 work-output-records-untrusted = { $path } looks like phonglab's earlier { $kind }, but phonglab's records of what it wrote ({ $records }) are not this user's alone (another user owns them or can write there), so none is trusted; nothing was written. Give another name, or make that folder yours alone (chmod 700)

@@ -126,24 +126,42 @@ fn not_a_file(path: &Path) -> Option<String> {
     }
 }
 
-/// Checks every notebook of `dir` against `assignment` (each its own scene without one).
+/// The order the submissions are checked in: smallest first (then by name), so that a few
+/// huge files cannot use the whole [`MAX_SECONDS`] and leave every ordinary classmate not
+/// read. (Indices into `paths`; a size that cannot be read counts as the largest.)
+fn checking_order(paths: &[PathBuf]) -> Vec<usize> {
+    let size = |p: &PathBuf| std::fs::symlink_metadata(p).map_or(u64::MAX, |m| m.len());
+    let mut order: Vec<(u64, usize)> = paths.iter().enumerate().map(|(k, p)| (size(p), k)).collect();
+    order.sort_unstable();
+    order.into_iter().map(|(_, k)| k).collect()
+}
+
+/// Reads and checks one submission against `assignment` (its own scene without one).
+fn mark_one(path: &Path, assignment: Option<&Scene>) -> Result<Check, String> {
+    read_notebook(path).map(|w| check(assignment.unwrap_or(&w.own), &w.own, &w.printed)).map_err(|e| format!("{e:#}"))
+}
+
+/// Checks every notebook of `dir` against `assignment` (each its own scene without one),
+/// smallest first ([`checking_order`]): once `budget` is spent the rest are not read (the
+/// first is always read). The result is in the files' name order.
 pub fn mark_all(dir: &Path, assignment: Option<&Scene>, budget: Duration) -> Result<Vec<Marked>> {
+    let paths = submissions(dir)?;
     let start = Instant::now();
-    let mut out = Vec::new();
-    for path in submissions(dir)? {
+    let mut marked: Vec<(usize, Marked)> = Vec::new();
+    for (n, k) in checking_order(&paths).into_iter().enumerate() {
+        let path = &paths[k];
         let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        let check = if let Some(why) = not_a_file(&path) {
+        let check = if let Some(why) = not_a_file(path) {
             Err(why)
-        } else if start.elapsed() > budget {
+        } else if n > 0 && start.elapsed() > budget {
             Err(format!("> {} s", budget.as_secs()))
         } else {
-            read_notebook(&path)
-                .map(|w| check(assignment.unwrap_or(&w.own), &w.own, &w.printed))
-                .map_err(|e| format!("{e:#}"))
+            mark_one(path, assignment)
         };
-        out.push(Marked { name, check });
+        marked.push((k, Marked { name, check }));
     }
-    Ok(out)
+    marked.sort_by_key(|(k, _)| *k);
+    Ok(marked.into_iter().map(|(_, m)| m).collect())
 }
 
 /// Runs the class's check: the report and the marks where asked, a summary on the terminal.

@@ -345,7 +345,8 @@ fn remember(path: &Path) {
 
 /// Makes the records folder `dir` (its parents as the system makes them), this user's
 /// alone on Unix (0700); one already there is left as it is (and trusted only if it is
-/// this user's alone).
+/// this user's alone), but for one of this user's that others can only read (0755, made
+/// by an older phonglab): that one is made 0700 ([`tighten_records_folder`]).
 fn make_records_folder(dir: &Path) -> std::io::Result<()> {
     if let Some(parent) = dir.parent() {
         std::fs::create_dir_all(parent)?;
@@ -359,9 +360,30 @@ fn make_records_folder(dir: &Path) -> std::io::Result<()> {
     #[cfg(not(unix))]
     let builder = std::fs::DirBuilder::new();
     match builder.create(dir) {
-        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+            tighten_records_folder(dir);
+            Ok(())
+        }
         other => other,
     }
+}
+
+/// Makes the records folder `dir` 0700 (Unix) where it is this user's alone already
+/// (owned by this user, writable by no one else: 0755) but readable by others: through a
+/// handle to the folder itself, never a link. A folder others can write is left as it is:
+/// a record planted there is never made trusted by tightening it afterwards.
+fn tighten_records_folder(dir: &Path) {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let Ok(folder) = crate::platform::os::open_no_follow(dir) else { return };
+        let open_to_others = folder.metadata().is_ok_and(|m| m.is_dir() && m.permissions().mode() & 0o077 != 0);
+        if open_to_others && crate::platform::os::is_this_users_alone(&folder) {
+            let _ = folder.set_permissions(std::fs::Permissions::from_mode(0o700));
+        }
+    }
+    #[cfg(not(unix))]
+    let _ = dir;
 }
 
 /// Makes the record just written readable and writable by this user alone (Unix: 0600,

@@ -1191,3 +1191,27 @@ fn too_few_digits_are_incomplete_in_json() {
     assert_eq!(ispec["verdict"], "too-few-digits", "{json:#}");
     assert!(ispec["words"].as_str().unwrap().contains("np.set_printoptions(precision=8)"), "{json:#}");
 }
+
+#[test]
+fn a_class_is_checked_smallest_first_so_huge_files_named_first_cannot_starve_the_rest() {
+    // A hostile's huge notebook named first used the whole time cap, and every honest
+    // classmate after it was "not read". With no time at all, only the first file checked
+    // is read: the smallest; the report still lists the files in name order.
+    let class = TempDir::new("check-smallest-first");
+    let nb = |padding: usize| {
+        serde_json::json!({"cells": [
+            {"cell_type": "markdown", "source": ["x".repeat(padding)]},
+            {"cell_type": "code",
+             "source": ["import numpy as np\n", "vertexNormal = np.array([0, 0.6, 0.8, 0])\n"],
+             "outputs": [{"output_type": "stream", "name": "stdout", "text": ["vertexNormal =  [0.  0.6 0.8 0. ]\n"]}]},
+        ]})
+        .to_string()
+    };
+    std::fs::write(class.path().join("a-huge.ipynb"), nb(200_000)).unwrap();
+    std::fs::write(class.path().join("b-honest.ipynb"), nb(0)).unwrap();
+    let marked = phonglab::cli::check_class::mark_all(class.path(), None, std::time::Duration::ZERO).unwrap();
+    let names: Vec<&str> = marked.iter().map(|m| m.name.as_str()).collect();
+    assert_eq!(names, ["a-huge.ipynb", "b-honest.ipynb"]);
+    assert_eq!(marked[0].check.as_ref().err().map(String::as_str), Some("> 0 s"));
+    assert!(marked[1].check.is_ok(), "{:?}", marked[1].check.as_ref().err());
+}

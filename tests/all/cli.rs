@@ -723,7 +723,9 @@ fn errors_tables_and_file_names_in_portuguese_data_in_english() {
     assert!(stderr(&o).trim().starts_with(&said), "{}", stderr(&o));
     let o = phonglab_in("pt_PT.UTF-8", &["render", "-o", "/no/such/folder/x.png"]);
     assert!(
-        stderr(&o).contains("não foi possível escrever /no/such/folder/x.png: criar: não existe; nada foi escrito"),
+        stderr(&o).contains(
+            "não foi possível escrever /no/such/folder/x.png: criar: a pasta /no/such/folder não existe: crie-a primeiro"
+        ) && stderr(&o).contains("; nada foi escrito"),
         "{}",
         stderr(&o)
     );

@@ -191,6 +191,37 @@ fn a_dropped_notebook_with_outputs_asks_and_printed_text_is_checked_at_once() {
     assert_eq!(h.state().student.as_ref().map(|s| s.file.as_str()), Some("printed.txt"));
 }
 
+/// The worksheet's notebook checked while another scene is shown (the spotlight): its typed
+/// inputs differ in most places, so it is checked against its own scene, as `phonglab check`
+/// without `--scene` does, and the panel says so; before, it listed some 60 inputs in red and
+/// told the teacher to run every cell of a notebook whose every cell was run (teacher, round 3).
+#[test]
+fn a_notebook_typed_for_another_scene_is_checked_against_its_own_and_says_so() {
+    let dir = TempDir::new("ui-student-own-scene");
+    let nb = dir.0.join("aluno.ipynb");
+    std::fs::write(&nb, notebook_with_outputs(&printed(None))).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    h.state_mut().load(spotlight(), "foco");
+    h.run_steps(3);
+    drop_file(&mut h, &nb);
+    h.get_by_label("Check it against this scene").click();
+    h.run_steps(3);
+    let s = h.state().student.as_ref().expect("checked");
+    assert!(s.own_scene.is_some_and(|n| n >= 4), "{:?}", s.own_scene);
+    assert!(s.check.right(), "its own scene's key: {:?}", s.check.unchecked().map(|u| u.words()));
+    let line = h.get_by_label_contains("it looks typed for another scene");
+    let rect = line.rect();
+    assert!(rect.width() > 100.0 && rect.max.x <= 1280.0 && rect.max.y <= 720.0, "{rect:?}");
+    assert!(h.query_by_label_contains("your typed inputs differ from the assignment's").is_none());
+    // Back on the worksheet's scene, the same work is checked against it, with no such line.
+    h.state_mut().load(AppState::worksheet().doc, "ficha");
+    h.run_steps(3);
+    let s = h.state().student.as_ref().expect("still checked");
+    assert_eq!(s.own_scene, None);
+    assert!(s.check.right());
+    assert!(h.query_by_label_contains("it looks typed for another scene").is_none());
+}
+
 /// A notebook worked under the worksheet's rules, checked against a scene under OpenGL's:
 /// the window says which typed inputs differ as the command line does, the rule set in
 /// words (never the raw id `rules`), and the line lies inside the student's column.
@@ -327,6 +358,47 @@ fn enter_in_the_choosers_name_field_checks_as_the_button_does() {
     h.key_press(egui::Key::Enter);
     h.run_steps(3);
     assert!(h.state().chooser.is_none(), "the chooser closes");
+    assert!(h.state().student.is_some(), "{:?}", h.state().message);
+}
+
+/// A file double-clicked in the chooser's list is checked, and so is one selected there
+/// followed by Enter: both only selected it before (teacher, round 3).
+#[test]
+fn a_file_double_clicked_or_selected_then_enter_in_the_chooser_is_checked() {
+    let dir = TempDir::new("ui-student-double");
+    std::fs::write(dir.0.join("vlv.txt"), printed(Some(Mistake::VlvNotNormalised))).unwrap();
+    let open_in = |h: &mut Harness<'static, AppState>| {
+        common::open_menu(h, &["File"]);
+        h.get_by_label("Check a student's work…").click();
+        h.run_steps(2);
+        let c = h.state_mut().chooser.as_mut().expect("the chooser opens");
+        c.folder = dir.0.display().to_string();
+        c.name.clear();
+        h.run_steps(2);
+    };
+    let mut h = harness(1280.0, 720.0);
+    open_in(&mut h);
+    // Two clicks in one frame, as raw input (the harness's own clicks go a frame each, too
+    // far apart for egui's double click).
+    let at = h.get_by_label("vlv.txt").rect().center();
+    let input = h.input_mut();
+    input.events.push(egui::Event::PointerMoved(at));
+    for pressed in [true, false, true, false] {
+        let button = egui::PointerButton::Primary;
+        input.events.push(egui::Event::PointerButton { pos: at, button, pressed, modifiers: Default::default() });
+    }
+    h.run_steps(3);
+    assert!(h.state().chooser.is_none(), "the chooser closes");
+    assert_eq!(h.state().student.as_ref().map(|s| s.file.as_str()), Some("vlv.txt"), "{:?}", h.state().message);
+
+    let mut h = harness(1280.0, 720.0);
+    open_in(&mut h);
+    h.get_by_label("vlv.txt").click();
+    h.run_steps(2);
+    assert!(h.state().chooser.is_some() && h.state().student.is_none(), "a click selects only");
+    h.key_press(egui::Key::Enter);
+    h.run_steps(3);
+    assert!(h.state().chooser.is_none(), "Enter checks the file selected");
     assert!(h.state().student.is_some(), "{:?}", h.state().message);
 }
 
@@ -908,6 +980,71 @@ fn a_mistake_of_few_pixels_is_shown_wrong_with_where_it_shows_as_the_command_lin
     let pictures = h.state().ui.geometry.pictures.clone();
     assert_eq!(pictures.len(), 3);
     assert!(shown.bottom() <= pictures[0].top() && shown.right() <= 1280.0, "{shown:?} {pictures:?}");
+}
+
+/// The places the diagnosis names are boxed whole over the difference image at any scale:
+/// at 1024x600 the picture is shown at about a third of its pixels, and the boxes drawn
+/// into its pixels (dashed, one pixel wide) lost most of their sides (teacher, round 3).
+/// Drawn on the screen over the picture, each side shows: the magenta pixels along the
+/// boxes' outlines are counted in the window's rendered image.
+#[test]
+fn the_places_named_are_boxed_whole_over_the_difference_image_when_it_is_shown_small() {
+    let dir = TempDir::new("ui-student-boxes");
+    let path = dir.0.join("exp10.png");
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let text = std::fs::read_to_string(&scene).unwrap();
+    let student = phonglab_core::document::Document::from_toml_in(
+        &text.replace("spot_exponent = 8", "spot_exponent = 10"),
+        scene.parent(),
+    )
+    .unwrap();
+    let mesh = student.view.mesh();
+    let mut d =
+        phonglab_core::teach::diagnose::Drawing::of(&student.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    d.inside = student.view.mesh_inside();
+    let (_, rgba, _) = d.draw(512).unwrap();
+    phonglab::io::image::write_png(&path, 512, 512, &rgba).unwrap();
+    let mut h = harness(1024.0, 600.0);
+    h.state_mut().load(spotlight(), "spotlight");
+    h.run_steps(2);
+    check_through_the_menu(&mut h, &path);
+    h.run_steps(2);
+    let boxes = h.state().compare.student.as_ref().map(|p| p.boxes().to_vec()).unwrap_or_default();
+    assert_eq!(boxes.len(), 2, "the handle's and the spout's: {boxes:?}");
+    let shown = h.state().ui.geometry.pictures[2];
+    assert!(shown.width() < 256.0, "shown small: {shown:?}");
+    let screen = h.render().expect("the test renderer draws");
+    let magenta = |x: f32, y: f32| {
+        let (x, y) = (x.round() as u32, y.round() as u32);
+        (x.saturating_sub(1)..=x + 1).any(|x| {
+            (y.saturating_sub(1)..=y + 1).any(|y| {
+                let [r, g, b, _] = screen.get_pixel(x, y).0;
+                r > 180 && b > 180 && g < 90
+            })
+        })
+    };
+    let scale = shown.width() / 512.0;
+    for ((x0, y0), (x1, y1)) in boxes {
+        let gap = phonglab_core::teach::picture_match::BOX_GAP;
+        let at = |x: usize, y: usize| shown.min + egui::vec2(x as f32, y as f32) * scale;
+        let (from, to) = (at(x0.saturating_sub(gap), y0.saturating_sub(gap)), at(x1 + 1 + gap, y1 + 1 + gap));
+        // Each side sampled every point: a dashed line (6 on, 4 off) inks over half of them.
+        let sides = [
+            (from, egui::pos2(to.x, from.y)),
+            (egui::pos2(to.x, from.y), to),
+            (egui::pos2(from.x, to.y), to),
+            (from, egui::pos2(from.x, to.y)),
+        ];
+        for (a, b) in sides {
+            let steps = (a.distance(b).floor() as usize).max(1);
+            let inked = (0..=steps).filter(|&i| {
+                let p = a + (b - a) * (i as f32 / steps as f32);
+                magenta(p.x, p.y)
+            });
+            let share = inked.count() as f32 / (steps + 1) as f32;
+            assert!(share >= 0.4, "a side from {a:?} to {b:?} is {share} inked");
+        }
+    }
 }
 
 /// Issue 57: work that does not print every step the worksheet asks for is not "all

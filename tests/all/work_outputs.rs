@@ -435,3 +435,39 @@ fn the_records_of_outputs_are_trusted_only_when_this_users_alone() {
     std::fs::set_permissions(&kept[0], std::fs::Permissions::from_mode(0o600)).unwrap();
     assert_eq!(run().status.code(), Some(0), "{}", stderr(&run()));
 }
+
+/// Issue 57: a data folder others can write but whose sticky bit keeps them from removing
+/// or replacing what is this user's (1777, as /tmp) is used: the records folder phonglab
+/// makes in it is 0700. A records folder of this user's that others can read (0755, made
+/// by an older phonglab) is made 0700 when a record is kept in it.
+#[test]
+#[cfg(unix)]
+fn a_sticky_data_folder_is_used_and_an_old_readable_records_folder_is_tightened() {
+    use std::os::unix::fs::PermissionsExt;
+    let root = Scratch::new("records-sticky");
+    let cls = class(&root, &["a.ipynb"]);
+    let csv = root.join("notas.csv");
+    let data = root.join("data");
+    std::fs::create_dir_all(&data).unwrap();
+    std::fs::set_permissions(&data, std::fs::Permissions::from_mode(0o1777)).unwrap();
+    let run = || {
+        std::process::Command::new(env!("CARGO_BIN_EXE_phonglab"))
+            .env("PHONGLAB_SESSION_DIR", &data)
+            .env("LANG", "en_GB.UTF-8")
+            .env_remove("LC_ALL")
+            .env_remove("LC_MESSAGES")
+            .args(["check", s(&cls), "--csv", s(&csv)])
+            .output()
+            .unwrap()
+    };
+    let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o7777;
+    let o = run();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let records = data.join("outputs-written");
+    assert_eq!(mode(&records), 0o700);
+    assert_eq!(mode(&data), 0o1777, "the data folder itself is left as it is");
+    std::fs::set_permissions(&records, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let o = run();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(mode(&records), 0o700);
+}

@@ -766,23 +766,30 @@ diagnose-footprint = This mistake changes the right picture by at most { $most }
 diagnose-footprint-group = { $count } from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } elsewhere
 diagnose-footprint-and = and
-diagnose-verdict-right-lossy = Right, as saved with losses (JPEG) or resized: the right picture explains { $score } of the object's pixels within { $levels } levels of a blend of their neighbours ({ $strict } within { $tolerance } of a neighbour), and its differences are noise, not a change of the picture.
+diagnose-verdict-right-lossy = Right, with losses: the right picture explains { $score } of the object's pixels within { $levels } levels of a blend of their neighbours ({ $strict } within { $tolerance } of a neighbour), and what differs is noise (as a JPEG saving, a resize, a blur or a camera leaves), not a change of the picture.
 diagnose-looks-jpeg = The picture looks saved as JPEG: its difference from the right picture jumps across the edges of 8 x 8 blocks ({ $ratio } times as much as inside them). A lossy saving changes every pixel a little and may hide the cause: save the picture as PNG straight from the program (the exported program's --png option) and diagnose that one.
 diagnose-evenly-off = The picture is not the right one with losses only: over the { $width } x { $width } pixels from ({ $x0 }, { $y0 }) its { $channel ->
         [0] red
         [1] green
        *[2] blue
-    } is { $levels } levels off the right picture's on average, { $errors } standard errors beyond what half a pixel's shift makes there; noise and a lossy saving scatter such a mean about 0. A value of the scene (a colour, an attenuation, the shininess) is likely a little off there, and the losses may hide which: save the picture as PNG straight from the program (the exported program's --png option) and diagnose that one.
+    } is { $levels } levels off the right picture's on average, { $errors } standard errors beyond what half a pixel's shift makes there; noise and a lossy saving scatter such a mean about 0. A value of the scene (a colour, an attenuation, the shininess) may be a little off there, or the picture moved by more than half a pixel, and the losses may hide which: save the picture as PNG straight from the program (the exported program's --png option) and diagnose that one.
 diagnose-verdict-right-within = Right within what a picture can tell: the right picture explains { $score } of the object's pixels (a pixel's shift and { $tolerance } levels allowed), but inside the object your picture differs from it by up to { $most } levels, { $pixels } pixels by more than { $rounding }. A mistake that changes the picture by no more than that (a shininess or a colour a little off) looks the same: this verdict cannot rule it out. The program's numbers can: check the values the notebook prints with phonglab check, or compare the program's glLight*/glMaterial* values with the scene's.
-diagnose-verdict-right = Right: the right picture explains { $score } of the object's pixels.
+diagnose-verdict-right = Right: the right picture explains { $score } of the object's pixels, and inside the object yours is that picture to the rounding ({ $rounding } level), as another OpenGL draws it. A value so little off that it moves no pixel further cannot show in a picture; the numbers the program prints can (phonglab check).
 diagnose-verdict-wrong = Wrong. The cause: { $cause } ({ $id }); the picture with that mistake explains { $score } of the object's pixels, the right picture { $right }.
+diagnose-verdict-wrong-nearer = Wrong. The cause: { $cause } ({ $id }). The picture with that mistake and the right picture both explain { $score } of the object's pixels within the tolerance, but where the two differ ({ $pixels } pixels) yours is { $fitted } levels from the first on average (root mean square) and { $scene } from the right one.
 diagnose-verdict-wrong-or = Wrong. The cause: { $cause } ({ $id }) or { $other } ({ $other-id }){ $more ->
         [0] {""}
         [one] , or one more listed below
        *[other] , or one of { $more } more listed below
     }: the picture cannot tell which; each of these mistakes explains { $score } of the object's pixels, the right picture { $right }.
 diagnose-unexplained-said = Unexplained: { $finding }
-diagnose-difference-said = each channel's |A − B| × { $gain }: black where the two pictures agree, full strength (255) from a difference of { $full } levels on; the largest difference here, { $largest } levels, is drawn at { $drawn }/255{ $boxes ->
+diagnose-difference-said = each channel's |A − B| × { $gain }: black where the two pictures agree, full strength (255) from a difference of { $full } { $full ->
+        [one] level
+       *[other] levels
+    } on; the largest difference here, { $largest } { $largest ->
+        [one] level
+       *[other] levels
+    }, is drawn at { $drawn }/255{ $boxes ->
         [0] .
         [one] . A dashed magenta box marks the place the diagnosis names.
        *[other] . Dashed magenta boxes mark the { $boxes } places the diagnosis names.
@@ -950,6 +957,7 @@ share-base-refused = the page a link opens must be an http:// or https:// addres
 
 ## Files read and written (formats::files): shared by the command line, the window and the Python package
 
+io-folder-missing = its folder { $folder } does not exist: make it first, or name a file in a folder that exists
 io-not-found = it does not exist
 io-permission-denied = permission denied
 io-storage-full = the disk is full
@@ -1002,3 +1010,4 @@ check-too-few-digits = not checked whole: too few digits to tell the key from a 
        *[other] { $decimals } decimal places
     } seen). Print more digits (np.set_printoptions(precision=8) at the top, or NumPy's default), run every cell again (Jupyter: Restart & Run All, in the Kernel menu), and check it again
 check-stale-count = not checked whole: a cell's execution count is not a run's ([{ $count }]: Jupyter numbers the cells it runs 1, 2, 3, in order), so nothing says the outputs are from one run in order. Run every cell again (Jupyter: Restart & Run All, in the Kernel menu), save, and check it again
+check-stale-not-run = not checked whole: a cell of code between those numbered [{ $above }] and [{ $below }] has no execution count (it was not run in that run, or its outputs were cleared), so the outputs below it are not from its code run in order. Run every cell again (Jupyter: Restart & Run All, in the Kernel menu), save, and check it again

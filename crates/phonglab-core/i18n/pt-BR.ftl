@@ -756,8 +756,8 @@ diagnose-material-colours-0-255 = As cores do material (ambiente, difusa, especu
 diagnose-light-not-normalised = No shader, o L de uma luz pontual não é normalizado (L = luz − P sem dividir pelo seu comprimento d): N·L e o cosseno do spot crescem com a distância
 diagnose-reflection-reversed = No shader, R refletido ao contrário (reflect(L, N) em vez de reflect(-L, N)): o brilho aparece do lado oposto ao certo
 diagnose-rescale-for-normalize = GL_RESCALE_NORMAL ativado onde é necessário GL_NORMALIZE: com uma escala não uniforme as normais são reescaladas mas não ficam com comprimento 1
-diagnose-same-picture = Estas causas desenham a mesma imagem, então não dá para distingui-las por ela (as mais comuns primeiro): { $ids }. Confira qual delas está no programa.
-diagnose-same-picture-fitted = Estas causas desenham a mesma imagem, então não dá para distingui-las por ela (as mais comuns primeiro, um valor alterado antes de um valor ajustado à imagem): { $ids }. Confira qual delas está no programa.
+diagnose-same-picture = Essas causas desenham a mesma imagem, então não dá para distingui-las por ela (as mais comuns primeiro): { $ids }. Confira qual delas está no programa.
+diagnose-same-picture-fitted = Essas causas desenham a mesma imagem, então não dá para distingui-las por ela (as mais comuns primeiro, um valor alterado antes de um valor ajustado à imagem): { $ids }. Confira qual delas está no programa.
 diagnose-light-unseen = Nada da luz { $light } (GL_LIGHT{ $light }) chega ao objeto: a imagem é a cena iluminada sem ela.
 diagnose-nothing-drawn = nada do objeto está desenhado: a imagem é só o fundo. Verifique a chamada que o desenha (glutSolidTeapot, gluSphere…) e se ela é executada, e a câmera (gluLookAt, gluPerspective): o objeto pode estar atrás dela ou fora do seu campo de visão.
 diagnose-outline-differs = o contorno do objeto não é o desta cena ({ $share } dele difere, além de um pixel): esta é a imagem desta cena? Verifique --scene, e o objeto e a câmera do programa.
@@ -771,23 +771,32 @@ diagnose-footprint = Esse erro muda a imagem certa em no máximo { $most } níve
 diagnose-footprint-group = { $count } de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } em outros lugares
 diagnose-footprint-and = e
-diagnose-verdict-right-lossy = Certa, do jeito que foi salva com perdas (JPEG) ou redimensionada: a imagem certa explica { $score } dos pixels do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e as diferenças são ruído, não uma mudança da imagem.
+diagnose-verdict-right-lossy = Certa, com perdas: a imagem certa explica { $score } dos pixels do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e o que difere é ruído (como o deixado por um JPEG, um redimensionamento, um desfoque ou uma câmera), não uma mudança da imagem.
 diagnose-looks-jpeg = A imagem parece ter sido salva como JPEG: a diferença dela para a imagem certa salta nas bordas de blocos de 8 x 8 ({ $ratio } vezes mais do que dentro deles). Salvar com perdas muda um pouco cada pixel e pode esconder a causa: salve a imagem como PNG direto do programa (com a opção --png do programa exportado) e diagnostique essa.
 diagnose-evenly-off = A imagem não é a certa apenas com perdas: nos { $width } x { $width } pixels a partir de ({ $x0 }, { $y0 }) o { $channel ->
         [0] vermelho
         [1] verde
        *[2] azul
-    } dela difere do da imagem certa { $levels } níveis em média, { $errors } erros-padrão além do que um deslocamento de meio pixel faz ali; o ruído e uma imagem salva com perdas espalham essa média em torno de 0. Um valor da cena (uma cor, uma atenuação, o brilho) provavelmente está um pouco errado ali, e as perdas podem esconder qual: salve a imagem como PNG direto do programa (com a opção --png do programa exportado) e diagnostique essa.
+    } dela difere do da imagem certa { $levels } níveis em média, { $errors } erros-padrão além do que um deslocamento de meio pixel faz ali; o ruído e uma imagem salva com perdas espalham essa média em torno de 0. Um valor da cena (uma cor, uma atenuação, o brilho) pode estar um pouco errado ali, ou a imagem deslocada mais de meio pixel, e as perdas podem esconder qual: salve a imagem como PNG direto do programa (com a opção --png do programa exportado) e diagnostique essa.
 diagnose-verdict-right-within = Certa, até onde uma imagem permite dizer: a imagem certa explica { $score } dos pixels do objeto (com um pixel de deslocamento e { $tolerance } níveis de tolerância), mas dentro do objeto a sua imagem difere dela em até { $most } níveis, { $pixels } pixels em mais de { $rounding }. Um erro que não mude a imagem mais do que isso (um brilho ou uma cor um pouco diferentes) tem a mesma aparência: este veredito não o descarta. Os números do programa descartam: verifique os valores que o notebook imprime com o phonglab check, ou compare os valores de glLight*/glMaterial* do programa com os da cena.
-diagnose-verdict-right = Certa: a imagem certa explica { $score } dos pixels do objeto.
+diagnose-verdict-right = Certa: a imagem certa explica { $score } dos pixels do objeto e, dentro do objeto, a sua é essa imagem até o arredondamento ({ $rounding } nível), como outro OpenGL a desenha. Um valor tão pouco errado que não mude nenhum pixel mais do que isso não aparece em uma imagem; os números que o programa imprime mostram isso (phonglab check).
 diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos pixels do objeto, a imagem certa { $right }.
+diagnose-verdict-wrong-nearer = Errada. A causa: { $cause } ({ $id }). A imagem com esse erro e a imagem certa explicam ambas { $score } dos pixels do objeto dentro da tolerância, mas onde as duas diferem ({ $pixels } pixels) a sua fica, em média (quadrática), a { $fitted } níveis da primeira e a { $scene } da certa.
 diagnose-verdict-wrong-or = Errada. A causa: { $cause } ({ $id }) ou { $other } ({ $other-id }){ $more ->
         [0] {""}
         [one] , ou mais uma, listada abaixo
        *[other] , ou uma de mais { $more }, listadas abaixo
     }: a imagem não permite dizer qual; cada um desses erros explica { $score } dos pixels do objeto, a imagem certa { $right }.
 diagnose-unexplained-said = Não explicada: { $finding }
-diagnose-difference-said = |A − B| de cada canal × { $gain }: preto onde as duas imagens coincidem, intensidade máxima (255) a partir de uma diferença de { $full } níveis; a maior diferença aqui, { $largest } níveis, é desenhada em { $drawn }/255{ $boxes ->
+diagnose-difference-said = |A − B| de cada canal × { $gain }: preto onde as duas imagens coincidem, intensidade máxima (255) a partir de uma diferença de { $full } { $full ->
+        [0] níveis
+        [one] nível
+       *[other] níveis
+    }; a maior diferença aqui, { $largest } { $largest ->
+        [0] níveis
+        [one] nível
+       *[other] níveis
+    }, é desenhada em { $drawn }/255{ $boxes ->
         [0] .
         [one] . Uma caixa tracejada em magenta marca o lugar que o diagnóstico aponta.
        *[other] . Caixas tracejadas em magenta marcam os { $boxes } lugares que o diagnóstico aponta.
@@ -957,6 +966,7 @@ share-base-refused = a página que um link abre precisa ser um endereço http://
 
 ## Files read and written (formats::files): shared by the command line, the window and the Python package
 
+io-folder-missing = a pasta { $folder } não existe: crie-a antes, ou indique um arquivo em uma pasta que exista
 io-not-found = não existe
 io-permission-denied = sem permissão
 io-storage-full = o disco está cheio
@@ -1011,3 +1021,4 @@ check-too-few-digits = não verificado por inteiro: dígitos de menos para disti
        *[other] { $decimals } casas decimais
     }). Imprima mais dígitos (np.set_printoptions(precision=8) no início, ou o padrão do NumPy), execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel) e verifique de novo
 check-stale-count = não verificado por inteiro: o número de execução de uma célula não é o de uma execução ([{ $count }]: o Jupyter numera as células que executa 1, 2, 3, em ordem), então nada diz que as saídas são de uma única execução, em ordem. Execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel), salve e verifique de novo
+check-stale-not-run = não verificado por inteiro: uma célula de código entre as numeradas [{ $above }] e [{ $below }] não tem número de execução (não foi executada nessa execução, ou suas saídas foram apagadas), então as saídas abaixo dela não são do seu código executado em ordem. Execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel), salve e verifique de novo

@@ -766,23 +766,30 @@ diagnose-footprint = Este erro altera a imagem certa em { $most } níveis, no m�
 diagnose-footprint-group = { $count } de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } noutros sítios
 diagnose-footprint-and = e
-diagnose-verdict-right-lossy = Certa, tal como foi guardada com perdas (JPEG) ou redimensionada: a imagem certa explica { $score } dos píxeis do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e as diferenças são ruído, não uma alteração da imagem.
+diagnose-verdict-right-lossy = Certa, com perdas: a imagem certa explica { $score } dos píxeis do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e o que difere é ruído (como o deixado por um JPEG, um redimensionamento, uma desfocagem ou uma câmara), não uma alteração da imagem.
 diagnose-looks-jpeg = A imagem parece ter sido guardada como JPEG: a sua diferença para a imagem certa salta nas margens de blocos de 8 x 8 ({ $ratio } vezes mais do que dentro deles). Guardar com perdas muda um pouco cada píxel e pode esconder a causa: guarde a imagem como PNG diretamente do programa (com a opção --png do programa exportado) e diagnostique essa.
 diagnose-evenly-off = A imagem não é a certa apenas com perdas: nos { $width } x { $width } píxeis a partir de ({ $x0 }, { $y0 }) o seu { $channel ->
         [0] vermelho
         [1] verde
        *[2] azul
-    } difere do da imagem certa { $levels } níveis em média, { $errors } erros-padrão além do que um desvio de meio píxel faz aí; o ruído e uma gravação com perdas espalham essa média à volta de 0. Um valor da cena (uma cor, uma atenuação, o brilho) está provavelmente um pouco errado aí, e as perdas podem esconder qual: guarde a imagem como PNG diretamente do programa (com a opção --png do programa exportado) e diagnostique essa.
+    } difere do da imagem certa { $levels } níveis em média, { $errors } erros-padrão além do que um desvio de meio píxel faz aí; o ruído e uma gravação com perdas espalham essa média à volta de 0. Um valor da cena (uma cor, uma atenuação, o brilho) pode estar um pouco errado aí, ou a imagem deslocada mais de meio píxel, e as perdas podem esconder qual: guarde a imagem como PNG diretamente do programa (com a opção --png do programa exportado) e diagnostique essa.
 diagnose-verdict-right-within = Certa, tanto quanto uma imagem permite dizer: a imagem certa explica { $score } dos píxeis do objeto (com um píxel de desvio e { $tolerance } níveis de tolerância), mas dentro do objeto a sua imagem difere dela até { $most } níveis, { $pixels } píxeis em mais de { $rounding }. Um erro que não altere a imagem mais do que isso (um brilho ou uma cor ligeiramente diferentes) tem o mesmo aspeto: este veredicto não o exclui. Os números do programa excluem-no: verifique os valores que o caderno imprime com o phonglab check, ou compare os valores de glLight*/glMaterial* do programa com os da cena.
-diagnose-verdict-right = Certa: a imagem certa explica { $score } dos píxeis do objeto.
+diagnose-verdict-right = Certa: a imagem certa explica { $score } dos píxeis do objeto e, dentro do objeto, a sua é essa imagem até ao arredondamento ({ $rounding } nível), como outro OpenGL a desenha. Um valor tão pouco errado que não mude nenhum píxel mais do que isso não se vê numa imagem; os números que o programa imprime mostram-no (phonglab check).
 diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos píxeis do objeto, a imagem certa { $right }.
+diagnose-verdict-wrong-nearer = Errada. A causa: { $cause } ({ $id }). A imagem com esse erro e a imagem certa explicam ambas { $score } dos píxeis do objeto dentro da tolerância, mas onde as duas diferem ({ $pixels } píxeis) a sua está, em média (quadrática), a { $fitted } níveis da primeira e a { $scene } da certa.
 diagnose-verdict-wrong-or = Errada. A causa: { $cause } ({ $id }) ou { $other } ({ $other-id }){ $more ->
         [0] {""}
         [one] , ou mais uma, listada abaixo
        *[other] , ou uma de mais { $more }, listadas abaixo
     }: a imagem não permite dizer qual; cada um destes erros explica { $score } dos píxeis do objeto, a imagem certa { $right }.
 diagnose-unexplained-said = Não explicada: { $finding }
-diagnose-difference-said = |A − B| de cada canal × { $gain }: preto onde as duas imagens coincidem, intensidade máxima (255) a partir de uma diferença de { $full } níveis; a maior diferença aqui, { $largest } níveis, está desenhada a { $drawn }/255{ $boxes ->
+diagnose-difference-said = |A − B| de cada canal × { $gain }: preto onde as duas imagens coincidem, intensidade máxima (255) a partir de uma diferença de { $full } { $full ->
+        [one] nível
+       *[other] níveis
+    }; a maior diferença aqui, { $largest } { $largest ->
+        [one] nível
+       *[other] níveis
+    }, está desenhada a { $drawn }/255{ $boxes ->
         [0] .
         [one] . Uma caixa tracejada a magenta marca o sítio que o diagnóstico indica.
        *[other] . Caixas tracejadas a magenta marcam os { $boxes } sítios que o diagnóstico indica.
@@ -950,6 +957,7 @@ share-base-refused = a página que uma ligação abre tem de ser um endereço ht
 
 ## Files read and written (formats::files): shared by the command line, the window and the Python package
 
+io-folder-missing = a pasta { $folder } não existe: crie-a primeiro, ou indique um ficheiro numa pasta que exista
 io-not-found = não existe
 io-permission-denied = sem permissão
 io-storage-full = o disco está cheio
@@ -1002,3 +1010,4 @@ check-too-few-digits = não verificado por inteiro: dígitos a menos para distin
        *[other] { $decimals } casas decimais
     }). Imprima mais dígitos (np.set_printoptions(precision=8) no início, ou o que o NumPy usa por omissão), execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel) e verifique-o de novo
 check-stale-count = não verificado por inteiro: o número de execução de uma célula não é o de uma execução ([{ $count }]: o Jupyter numera as células que executa 1, 2, 3, por ordem), portanto nada diz que as saídas são de uma só execução, por ordem. Execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel), guarde e verifique-o de novo
+check-stale-not-run = não verificado por inteiro: uma célula de código entre as numeradas [{ $above }] e [{ $below }] não tem número de execução (não foi executada nessa execução, ou as suas saídas foram apagadas), portanto as saídas abaixo dela não são do seu código executado por ordem. Execute de novo todas as células (Jupyter: Restart & Run All, no menu Kernel), guarde e verifique-o de novo

@@ -132,6 +132,8 @@ fn chooser_body_ui(ui: &mut Ui, c: &mut Chooser) -> (Option<Chosen>, bool) {
     let extensions = c.purpose.extensions();
     let wanted: Vec<&str> = extensions.iter().map(String::as_str).collect();
     let mut enter = None;
+    // A file double-clicked is chosen, as in every file dialog (it only selected before).
+    let mut double_clicked = false;
     egui::ScrollArea::vertical().max_height(260.0).auto_shrink([false, true]).show(ui, |ui| {
         match list(Path::new(c.folder.trim()), &wanted) {
             Ok(entries) if entries.is_empty() => {
@@ -143,7 +145,9 @@ fn chooser_body_ui(ui: &mut Ui, c: &mut Chooser) -> (Option<Chosen>, bool) {
                     // override or an ESC in it written visibly (`\u{202E}`).
                     let visible = phonglab_core::escape::window::text(&name);
                     let shown = if folder { format!("{visible}/") } else { visible };
-                    if ui.selectable_label(!folder && name == c.name, shown).clicked() {
+                    let item = ui.selectable_label(!folder && name == c.name, shown);
+                    if item.clicked() || item.double_clicked() {
+                        double_clicked |= !folder && item.double_clicked();
                         if folder {
                             enter = Some(name);
                         } else {
@@ -164,9 +168,17 @@ fn chooser_body_ui(ui: &mut Ui, c: &mut Chooser) -> (Option<Chosen>, bool) {
     ui.horizontal(|ui| {
         let label = ui.label(t!("chooser-name"));
         let field = ui.add(egui::TextEdit::singleline(&mut c.name).desired_width(300.0)).labelled_by(label.id);
-        // Enter in the name field does what the button does (where the button may).
-        entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+        // Enter in the name field does what the button does (where the button may); so
+        // does Enter after a file is selected in the list, while no text field is being
+        // typed in.
+        let focused = ui.memory(|m| m.focused());
+        let typing = focused.is_some_and(|id| egui::TextEdit::load_state(ui.ctx(), id).is_some());
+        let enter = ui.input(|i| i.key_pressed(egui::Key::Enter));
+        entered = (field.lost_focus() && enter) || (enter && !typing && !c.name.trim().is_empty());
     });
+    // Only where the button opens a file: for a save, a double click selects the name.
+    let opens = matches!(c.purpose, Purpose::OpenScene | Purpose::CheckWork);
+    entered |= double_clicked && opens;
     let mut done = None;
     let mut cancel = false;
     ui.horizontal(|ui| {

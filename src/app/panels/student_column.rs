@@ -23,15 +23,28 @@ pub struct StudentCheck {
     /// The scene the work typed, and what it printed: checked again when the scene shown
     /// (the assignment) changes.
     pub work: (Scene, Printed),
-    /// The scene it was checked against.
+    /// The scene shown when it was checked (the assignment).
     pub against: Scene,
+    /// How many typed inputs differed from the scene shown, when so many did
+    /// ([`Check::other_scene`]) that the work was checked against its own scene instead.
+    pub own_scene: Option<usize>,
 }
 
 impl StudentCheck {
-    /// `work` (the scene it typed, what it printed) from `file` checked against `assignment`.
+    /// `work` (the scene it typed, what it printed) from `file` checked against `assignment`,
+    /// or against the scene it typed when it looks typed for another scene
+    /// ([`Check::other_scene`]: a notebook of the worksheet checked while the spotlight is
+    /// shown): then its steps are judged on its own inputs, as `phonglab check` without
+    /// `--scene` judges them, and the panel says so, instead of 60 inputs in red and a false
+    /// "run every cell".
     pub fn new(file: String, assignment: &Scene, work: (Scene, Printed)) -> StudentCheck {
-        let check = check(assignment, &work.0, &work.1);
-        StudentCheck { file, check, work, against: assignment.clone() }
+        let shown = check(assignment, &work.0, &work.1);
+        let (check, own_scene) = if shown.other_scene() {
+            (check(&work.0, &work.0, &work.1), Some(shown.inputs_differ.len()))
+        } else {
+            (shown, None)
+        };
+        StudentCheck { file, check, work, against: assignment.clone(), own_scene }
     }
 
     /// Checks the work again if the scene shown is no longer the one it was checked against.
@@ -111,6 +124,10 @@ pub fn student_summary_ui(ui: &mut Ui, student: &mut Option<StudentCheck>) {
             ui.label(RichText::new(t!("student-heading", file = s.file.clone())).strong());
             clear = ui.button(t!("student-clear")).on_hover_text(t!("student-clear-hover")).clicked();
         });
+        if let Some(count) = s.own_scene {
+            let line = t!("student-own-scene", count = count);
+            ui.add(egui::Label::new(RichText::new(line).color(wrong_ink(ui)).strong()).wrap());
+        }
         findings_ui(ui, &s.check);
     });
     if clear {

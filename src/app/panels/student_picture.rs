@@ -3,10 +3,10 @@
 //! boxed on it), above them the diagnosis of [`phonglab_core::teach::diagnose`] in words
 //! (the verdict, the closest cause, its score) and what the difference image shows.
 
-use egui::{RichText, Ui};
+use egui::{Color32, RichText, Ui};
 use phonglab_core::teach::diagnose::Diagnosis;
 use phonglab_core::teach::diagnose::said::{Said, difference_said};
-use phonglab_core::teach::picture_match::{Difference, difference_image, draw_boxes};
+use phonglab_core::teach::picture_match::{Difference, difference_image};
 
 use phonglab_core::Document;
 use phonglab_core::raster::shaded::ShadedSetup;
@@ -34,6 +34,10 @@ pub struct StudentPicture {
     /// The difference image's numbers (its pixels are in `pictures`) and the boxes drawn on
     /// it, said under the diagnosis ([`difference_said`]).
     difference: (Difference, usize),
+    /// The places the diagnosis names, in the picture's pixels: drawn over the difference
+    /// image on the screen ([`boxes_over`]), at any scale, rather than into its pixels (a
+    /// dashed line one pixel wide vanished when the picture was shown at a third of its size).
+    boxes: Vec<phonglab_core::teach::picture_match::Boxed>,
     /// The right picture's setup it was diagnosed against ([`picture_setup`]).
     checked: ShadedSetup,
     /// Whether the window had spun the view: the picture was checked at the scene's own
@@ -78,7 +82,6 @@ impl StudentPicture {
         let said = Said::of(d);
         let mut difference = difference_image(&d.picture, &image);
         let boxes = said.boxes();
-        draw_boxes(&mut difference.rgba, size, &boxes);
         let diff = std::mem::take(&mut difference.rgba);
         StudentPicture {
             file,
@@ -91,6 +94,7 @@ impl StudentPicture {
             unspun,
             gain: difference.gain,
             difference: (difference, boxes.len()),
+            boxes,
         }
     }
 
@@ -98,6 +102,11 @@ impl StudentPicture {
     /// changed light...)? Then its verdict is not this scene's.
     pub fn stale(&self, doc: &Document) -> bool {
         picture_setup(doc) != self.checked
+    }
+
+    /// The places the diagnosis names, in the picture's pixels (drawn over the difference).
+    pub fn boxes(&self) -> &[phonglab_core::teach::picture_match::Boxed] {
+        &self.boxes
     }
 
     /// The student's picture (RGBA8), to diagnose again.
@@ -213,6 +222,9 @@ pub fn student_picture_ui(
                 let rect = egui::Rect::from_min_size(given.min, egui::vec2(side, side).min(given.size()));
                 // Framed, as a picture on the dark theme needs: the difference is mostly black.
                 cols[k].painter().rect_stroke(rect, 0.0, picture_frame(cols[k].visuals()), egui::StrokeKind::Outside);
+                if k == 2 {
+                    boxes_over(cols[k].painter(), rect, size, &p.boxes);
+                }
                 rect
             })
             .collect::<Vec<_>>()
@@ -221,6 +233,29 @@ pub fn student_picture_ui(
         *picture = None;
     }
     rects
+}
+
+/// Draws `boxes` (in the pixels of a `size`-square picture) over the picture shown in
+/// `rect`: dashed magenta, two points wide, [`BOX_GAP`](phonglab_core::teach::picture_match::BOX_GAP)
+/// pixels outside each place as `phonglab diagnose --diff` draws them, so that they show
+/// whole at any scale.
+pub fn boxes_over(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    size: usize,
+    boxes: &[phonglab_core::teach::picture_match::Boxed],
+) {
+    use phonglab_core::teach::picture_match::{BOX_GAP, BOX_INK};
+    let scale = rect.width() / size.max(1) as f32;
+    let at = |x: usize, y: usize| rect.min + egui::vec2(x as f32, y as f32) * scale;
+    let stroke = egui::Stroke::new(2.0, Color32::from_rgb(BOX_INK[0], BOX_INK[1], BOX_INK[2]));
+    for &((x0, y0), (x1, y1)) in boxes {
+        let (from, to) =
+            (at(x0.saturating_sub(BOX_GAP), y0.saturating_sub(BOX_GAP)), at(x1 + 1 + BOX_GAP, y1 + 1 + BOX_GAP));
+        let corners = [from, egui::pos2(to.x, from.y), to, egui::pos2(from.x, to.y), from];
+        let corners = corners.map(|c| c.clamp(rect.min, rect.max));
+        painter.extend(egui::Shape::dashed_line(&corners, stroke, 6.0, 4.0));
+    }
 }
 
 /// The frame drawn around each picture: a line in the theme's text colour, which shows on

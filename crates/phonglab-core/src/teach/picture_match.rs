@@ -124,6 +124,72 @@ pub fn blended_share(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3]
     if pixels == 0 { 1.0 } else { blended as f64 / pixels as f64 }
 }
 
+/// A picture in JFIF's Y, Cb, Cr (what JPEG stores), one triple a pixel of RGBA8 `rgba`.
+pub fn luma_chroma(rgba: &[u8]) -> Vec<[f64; 3]> {
+    rgba.chunks_exact(4).map(|px| ycc(px[0], px[1], px[2])).collect()
+}
+
+/// JFIF's Y, Cb, Cr of an RGB pixel.
+fn ycc(r: u8, g: u8, b: u8) -> [f64; 3] {
+    let (r, g, b) = (f64::from(r), f64::from(g), f64::from(b));
+    [
+        0.299 * r + 0.587 * g + 0.114 * b,
+        128.0 - 0.168736 * r - 0.331264 * g + 0.5 * b,
+        128.0 + 0.5 * r - 0.418688 * g - 0.081312 * b,
+    ]
+}
+
+/// How far pixel `p` of `image` (RGBA8, `size` square) lies outside what a JPEG with its
+/// colour subsampled (4:2:0: what libjpeg, browsers, PIL and ImageMagick below quality 90
+/// write by default) can make of `picture` (in [`luma_chroma`]): JPEG keeps the brightness
+/// (Y) of every pixel but the colour (Cb, Cr) once for each 2 x 2 block, which the reader
+/// spreads back over a block's neighbours. So Y is measured against the range Y spans in
+/// the 3 x 3 around the pixel in `picture`, Cb and Cr against the range they span in the
+/// 5 x 5 (the block and the reader's spreading); the most of the three, in levels.
+pub fn outside_subsampled(picture: &[[f64; 3]], image: &[u8], size: usize, p: usize) -> f64 {
+    let (x, y) = (p % size, p / size);
+    let here = ycc(image[p * 4], image[p * 4 + 1], image[p * 4 + 2]);
+    let mut most = 0.0f64;
+    for (c, &v) in here.iter().enumerate() {
+        let reach = if c == 0 { 1 } else { 2 };
+        let (mut low, mut high) = (f64::INFINITY, f64::NEG_INFINITY);
+        for qy in y.saturating_sub(reach)..=(y + reach).min(size - 1) {
+            for qx in x.saturating_sub(reach)..=(x + reach).min(size - 1) {
+                let w = picture[qy * size + qx][c];
+                (low, high) = (low.min(w), high.max(w));
+            }
+        }
+        most = most.max(low - v).max(v - high);
+    }
+    most
+}
+
+/// [`blended_share`] for a picture saved as JPEG with its colour subsampled: the share of
+/// the object's pixels within `tolerance` levels of what the subsampling can make of
+/// `picture` ([`outside_subsampled`]). A sharp coloured edge (the spotlight's rim) then
+/// agrees though each of its RGB channels may not; a colour or an intensity off everywhere
+/// is as far from the right picture as before (the systematic test that follows still
+/// applies).
+pub fn blended_share_subsampled(
+    picture: &[u8],
+    covered: &[bool],
+    image: &[u8],
+    bg: [u8; 3],
+    size: usize,
+    tolerance: u8,
+) -> f64 {
+    let of_picture = luma_chroma(picture);
+    let (mut pixels, mut blended) = (0usize, 0usize);
+    for p in 0..size * size {
+        if !covered[p] && apart(&image[p * 4..p * 4 + 3], &bg) <= TOLERANCE {
+            continue;
+        }
+        pixels += 1;
+        blended += usize::from(outside_subsampled(&of_picture, image, size, p) <= f64::from(tolerance));
+    }
+    if pixels == 0 { 1.0 } else { blended as f64 / pixels as f64 }
+}
+
 /// The most a difference image amplifies: past it, the 8-bit rounding's one level would
 /// look like a difference.
 pub const MAX_DIFFERENCE_GAIN: u32 = 64;
@@ -182,7 +248,7 @@ pub type Boxed = ((usize, usize), (usize, usize));
 pub const BOX_INK: [u8; 3] = [255, 0, 255];
 
 /// How far outside a box its outline is drawn, in pixels: the pixels boxed stay seen.
-const BOX_GAP: usize = 2;
+pub const BOX_GAP: usize = 2;
 
 /// Draws each box of `boxes` on `rgba` (RGBA8, `size` square) as a dashed outline in
 /// [`BOX_INK`], `BOX_GAP` pixels outside it (within the picture): 3 pixels drawn, 2 left.

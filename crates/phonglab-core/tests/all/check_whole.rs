@@ -249,3 +249,102 @@ fn execution_counts_that_are_not_small_integers_are_stale() {
     assert_eq!(p.stale, None);
     assert!(check(&scene, &scene, &p).right());
 }
+
+/// Issue 57: a cell that calls the self-check has its printed table skipped, but an error
+/// it stopped with is the run's, as any cell's: the run stopped, and the values printed
+/// below it are from an earlier run (never checked).
+#[test]
+fn an_error_in_the_self_checks_cell_stops_the_run_as_any_cells() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = work(&scene, None, None);
+    let names = asked(&key);
+    let (a, b) = names.split_at(3);
+    let cells = serde_json::json!({"cells": [
+        {"cell_type": "code", "execution_count": 1, "source": ["x = 1\n"], "outputs": stream(&printed_of(&key, Some(a)))},
+        {"cell_type": "code", "execution_count": 2, "source": ["y = z\n", "_ = 'check(globals()'\n"],
+         "outputs": [{"output_type": "stream", "name": "stdout", "text": "vlv = [9 9 9 0]\n"},
+                     {"output_type": "error", "ename": "NameError", "evalue": "name 'z' is not defined", "traceback": []}]},
+        {"cell_type": "code", "execution_count": 3, "source": ["x = 1\n"], "outputs": stream(&printed_of(&key, Some(b)))},
+    ]});
+    let p = notebook_outputs(&cells.to_string()).unwrap();
+    assert_eq!(p.errors, ["NameError: name 'z' is not defined"]);
+    assert_eq!(p.after_error, b);
+    assert!(p.get("vlv").is_none_or(|v| v.numbers != [9.0, 9.0, 9.0, 0.0]), "the self-check's table is not read");
+    let c = check(&scene, &scene, &p);
+    assert_eq!(c.overall(), Overall::Incomplete);
+    assert_eq!(c.unchecked().unwrap().id(), "run-stopped");
+}
+
+/// The exported notebook's last cell calls phonglab's self-check: a student without
+/// phonglab installed gets `ModuleNotFoundError` there, after every step was printed. Nothing
+/// below it ran stale, so the work is judged as printed (right here), not "run stopped".
+#[test]
+fn an_error_in_a_last_self_check_cell_leaves_the_work_above_it_judged() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = work(&scene, None, None);
+    let cells = serde_json::json!({"cells": [
+        {"cell_type": "code", "execution_count": 1, "source": ["x = 1\n"], "outputs": stream(&printed_of(&key, None))},
+        {"cell_type": "code", "execution_count": 2, "source": ["import phonglab\n", "phonglab.check(globals())\n"],
+         "outputs": [{"output_type": "error", "ename": "ModuleNotFoundError", "evalue": "No module named 'phonglab'", "traceback": []}]},
+    ]});
+    let p = notebook_outputs(&cells.to_string()).unwrap();
+    assert!(p.errors.is_empty(), "{:?}", p.errors);
+    let c = check(&scene, &scene, &p);
+    assert_eq!(c.overall(), Overall::Right, "{:?}", c.unchecked().map(|u| u.id()));
+}
+
+/// Issue 57: a code cell with no execution count between two numbered ones was not run
+/// in that run (or its outputs were cleared): the outputs below it are stale, as counts
+/// that go back are. An empty cell (Jupyter never runs one), and cells not run above or
+/// below every numbered one, say nothing.
+#[test]
+fn a_cell_not_run_between_numbered_cells_makes_the_outputs_stale() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = work(&scene, None, None);
+    let names = asked(&key);
+    let (a, b) = names.split_at(3);
+    let with = |middle: serde_json::Value, source: &str, last: Option<i64>| {
+        serde_json::json!({"cells": [
+            {"cell_type": "code", "execution_count": 1, "source": ["x = 1\n"], "outputs": stream(&printed_of(&key, Some(a)))},
+            {"cell_type": "code", "execution_count": middle, "source": [source], "outputs": []},
+            {"cell_type": "code", "execution_count": last, "source": ["x = 1\n"], "outputs": stream(&printed_of(&key, Some(b)))},
+        ]})
+        .to_string()
+    };
+    let p = notebook_outputs(&with(serde_json::Value::Null, "cosTheta = 1\n", Some(3))).unwrap();
+    assert_eq!(p.stale, Some(Stale::NotRun(1, 3)));
+    let c = check(&scene, &scene, &p);
+    assert_eq!(c.overall(), Overall::Incomplete);
+    assert_eq!(c.unchecked().unwrap().id(), "stale-outputs");
+    let words = phonglab_core::study::check::said::words(&c);
+    assert!(words.contains("between those numbered [1] and [3] has no execution count"), "{words}");
+    for (middle, source, last) in [
+        (serde_json::Value::Null, "  \n", Some(3)),
+        (serde_json::Value::Null, "cosTheta = 1\n", None),
+        (serde_json::json!(2), "cosTheta = 1\n", Some(3)),
+    ] {
+        let p = notebook_outputs(&with(middle.clone(), source, last)).unwrap();
+        assert_eq!(p.stale, None, "{middle} {source:?} {last:?}");
+        assert!(check(&scene, &scene, &p).right(), "{middle} {source:?} {last:?}");
+    }
+}
+
+/// Issue 57: right work computed in float32 and printed with `repr()` (what a notebook
+/// shows for an array as a cell's last value: `array([...], dtype=float32)`) is read and
+/// found right (to single precision), never an unreadable step.
+#[test]
+fn right_float32_work_printed_as_its_repr_is_not_unreadable() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = work(&scene, None, None);
+    let mut text = String::new();
+    for (name, v) in &key.values {
+        let numbers: Vec<String> = v.iter().map(|x| format!("{}", *x as f32)).collect();
+        let value =
+            if v.len() == 1 { numbers[0].clone() } else { format!("array([{}], dtype=float32)", numbers.join(", ")) };
+        text.push_str(&format!("{name} = {value}\n"));
+    }
+    let c = check(&scene, &scene, &printed_text(&text));
+    assert!(c.unreadable.is_empty(), "{:?}\n{text}", c.unreadable);
+    assert_eq!(c.first_wrong, None, "{text}");
+    assert_ne!(c.unchecked().map(|u| u.id()), Some("unreadable-step"), "{text}");
+}

@@ -38,14 +38,23 @@ pub struct WriteError {
 }
 
 impl fmt::Display for WriteError {
-    /// "cannot write PATH: STEP: REASON; WHAT WAS KEPT", in the current language.
+    /// "cannot write PATH: STEP: REASON; WHAT WAS KEPT", in the current language. A file
+    /// whose folder is missing says which folder ("it does not exist" read as the file).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use crate::formats::files::reasons::{io_reason, shown};
         use crate::locale::tr;
+        let missing = |folder: &Path| !folder.as_os_str().is_empty() && std::fs::symlink_metadata(folder).is_err();
+        let reason = match self.path.parent() {
+            Some(folder) if self.reason.kind() == io::ErrorKind::NotFound && missing(folder) => {
+                crate::t!("io-folder-missing", folder = shown(folder))
+            }
+            _ => io_reason(&self.reason),
+        };
         f.write_str(&crate::t!(
             "write-error",
-            path = crate::formats::files::reasons::shown(&self.path),
+            path = shown(&self.path),
             what = tr(self.what),
-            reason = crate::formats::files::reasons::io_reason(&self.reason),
+            reason = reason,
             kept = tr(self.kept)
         ))
     }

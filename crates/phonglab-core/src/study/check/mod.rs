@@ -230,6 +230,9 @@ impl Unchecked {
                 crate::t!("check-stale-outputs", earlier = *earlier, later = *later)
             }
             Unchecked::Stale(Stale::NotACount(count)) => crate::t!("check-stale-count", count = count.clone()),
+            Unchecked::Stale(Stale::NotRun(above, below)) => {
+                crate::t!("check-stale-not-run", above = *above, below = *below)
+            }
             Unchecked::NotPrinted(..) => crate::t!("check-incomplete", steps = self.steps_words().unwrap_or_default()),
             Unchecked::TooFewDigits(names, decimals) => {
                 crate::t!("check-too-few-digits", names = names.clone(), decimals = *decimals)

@@ -50,7 +50,8 @@ pub struct Printed {
     pub missing: Vec<String>,
     /// A notebook's outputs not from one run in order: the first two code cells whose
     /// execution counts go back (the earlier cell's, then the later cell's: `[5]` above
-    /// `[3]`), a cell run again after those below it; or a count no run gives. Never right.
+    /// `[3]`), a cell run again after those below it; a cell of code not run between two
+    /// that were; or a count no run gives. Never right.
     pub stale: Option<Stale>,
     /// The values a notebook's cells printed after a cell's error output: Run All stops
     /// at an error, so they are from an earlier run, and are never checked (named).
@@ -67,6 +68,11 @@ pub enum Stale {
     /// `-1`, past 2^64), as the notebook's JSON writes it (cut short): no run numbers a
     /// cell so, so nothing says the outputs are in order.
     NotACount(String),
+    /// A code cell with no execution count (not run, or its outputs cleared) between
+    /// cells numbered as one run's (the count above it, then the count below it): the
+    /// outputs below it are not from its code run in order. (An empty cell is never run
+    /// by Jupyter, and says nothing.)
+    NotRun(i64, i64),
 }
 
 /// The largest execution count taken as a run's (a kernel numbers its runs 1, 2, 3...).
@@ -138,13 +144,16 @@ pub fn read_printed_text(text: &str) -> Result<Printed, OutputsError> {
         {
             value = next.trim().to_string();
         }
-        let mut open = depth(&value);
+        // An array's repr (`array([...],\n      dtype=float32)`) wraps until its parenthesis
+        // closes too.
+        let repr = value.starts_with("array(") || value.starts_with("np.array(");
+        let mut open = depth(&value, repr);
         let mut joined = 0;
         while open > 0 && joined < MAX_VALUE_LINES && value.len() < 64 * MAX_NUMBERS {
             let Some(next) = lines.next() else { break };
             value.push(' ');
             value.push_str(next.trim());
-            open += depth(next);
+            open += depth(next, repr);
             joined += 1;
         }
         match numbers(name, &value).filter(|_| open <= 0) {
@@ -179,30 +188,42 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
     let mut any = false;
     // The cell errors (any `ename`: `KeyboardInterrupt`, `Exception` too), in order.
     let mut errors: Vec<String> = Vec::new();
-    let mut counts: Vec<i64> = Vec::new();
+    // Each code cell's count, in order (`None`: not run); empty cells left out.
+    let mut counts: Vec<Option<i64>> = Vec::new();
     let mut not_a_count: Option<String> = None;
+    // A self-check cell's error, the run's once a cell below it has outputs.
+    let mut self_check_error: Option<String> = None;
     for cell in cells.iter().filter(|c| c["cell_type"] == "code") {
         let source = joined(&cell["source"]);
         code.push_str(&source);
         code.push('\n');
         match execution_count(&cell["execution_count"]) {
-            Ok(Some(n)) => counts.push(n),
-            Ok(None) => {}
+            Ok(n) if !source.trim().is_empty() => counts.push(n),
+            Ok(_) => {}
             Err(shown) => {
                 not_a_count.get_or_insert(shown);
             }
         }
-        for output in cell["outputs"].as_array().map(Vec::as_slice).unwrap_or_default() {
+        // The self-check's table echoes the formulas and both values of every step
+        // (`vlv = vertexPos - lightPos`): phonglab's words, never the student's work. Its
+        // error (phonglab not installed: `ModuleNotFoundError`) stopped the run there, which
+        // matters only to the cells below it: it is the run's error once a cell below has
+        // outputs (then from an earlier run), and the work's printed steps above it stand.
+        let self_check = calls_self_check(&source);
+        let outputs = cell["outputs"].as_array().map(Vec::as_slice).unwrap_or_default();
+        if !outputs.is_empty()
+            && let Some(e) = self_check_error.take()
+            && errors.len() < MAX_ERRORS
+        {
+            errors.push(e);
+        }
+        for output in outputs {
             any = true;
-            // The self-check's table echoes the formulas and both values of every step
-            // (`vlv = vertexPos - lightPos`): phonglab's words, never the student's work.
-            if calls_self_check(&source) {
-                continue;
-            }
             // After an error, Run All runs nothing more: what follows is from an earlier run.
             let into = if errors.is_empty() { &mut text } else { &mut after };
             match output["output_type"].as_str() {
-                Some("stream") => into.push_str(&joined(&output["text"])),
+                Some("stream") if !self_check => into.push_str(&joined(&output["text"])),
+                Some("error") if self_check => self_check_error = Some(cell_error(output)),
                 Some("error") if errors.len() < MAX_ERRORS => errors.push(cell_error(output)),
                 _ => {}
             }
@@ -222,9 +243,26 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
             after_error.push(v.name);
         }
     }
-    let back = counts.windows(2).find(|w| w[1] <= w[0]).map(|w| Stale::Back(w[0], w[1]));
-    let stale = not_a_count.map(Stale::NotACount).or(back);
+    let numbered: Vec<i64> = counts.iter().flatten().copied().collect();
+    let back = numbered.windows(2).find(|w| w[1] <= w[0]).map(|w| Stale::Back(w[0], w[1]));
+    let stale = not_a_count.map(Stale::NotACount).or(back).or_else(|| not_run_between(&counts));
     Ok(Printed { code, stale, after_error, ..p })
+}
+
+/// The first code cell not run (`None`) with a numbered one above it and one below, as
+/// [`Stale::NotRun`] (the counts above and below it). Cells not run above every numbered
+/// one, or below, are not between (a notebook written by a program numbers none).
+fn not_run_between(counts: &[Option<i64>]) -> Option<Stale> {
+    let (mut above, mut gap) = (None, false);
+    for count in counts {
+        match (*count, above) {
+            (Some(below), Some(above)) if gap => return Some(Stale::NotRun(above, below)),
+            (Some(n), _) => above = Some(n),
+            (None, Some(_)) => gap = true,
+            (None, None) => {}
+        }
+    }
+    None
 }
 
 /// A code cell's execution count: `None` where it has none (`null`, or absent: a
@@ -290,9 +328,27 @@ fn is_name(name: &str) -> bool {
             .is_none_or(|i| i.strip_suffix(']').is_some_and(|d| !d.is_empty() && d.chars().all(|c| c.is_ascii_digit())))
 }
 
-/// How many brackets are still open in `s`.
-fn depth(s: &str) -> i64 {
-    s.chars().map(|c| (c == '[') as i64 - (c == ']') as i64).sum()
+/// How many brackets (and parentheses, where `parens`) are still open in `s`.
+fn depth(s: &str, parens: bool) -> i64 {
+    let opens = |c: char| c == '[' || (parens && c == '(');
+    let closes = |c: char| c == ']' || (parens && c == ')');
+    s.chars().map(|c| opens(c) as i64 - closes(c) as i64).sum()
+}
+
+/// The floating-point types whose name an array's repr ends with (`dtype=float32`; NumPy
+/// 1.24 and 2.4 both write it so, without `np.`, which is read as well).
+const FLOAT_DTYPES: [&str; 6] = ["float16", "float32", "float64", "np.float16", "np.float32", "np.float64"];
+
+/// `value` without the type NumPy's repr ends an array of another type than float64 with
+/// (`array([0.1, 0.2], dtype=float32)`: what a notebook shows for a float32 array, and
+/// `repr()`), where it is a float's: the values are read as printed. Any other value
+/// is as it was.
+fn without_float_dtype(value: &str) -> String {
+    let typed = value.strip_suffix(')').and_then(|v| v.rsplit_once("dtype=")).and_then(|(head, dtype)| {
+        let head = head.trim_end().strip_suffix(',')?;
+        FLOAT_DTYPES.contains(&dtype.trim()).then(|| format!("{})", head.trim_end()))
+    });
+    typed.unwrap_or_else(|| value.to_string())
 }
 
 /// The numbers of one printed value, each with half a unit of its last digit; `None` when
@@ -301,7 +357,7 @@ fn numbers(name: &str, value: &str) -> Option<PrintedValue> {
     // NumPy 2 writes a list of its scalars with their type: `[np.float64(0.0596), ...]`.
     let unwrapped = ["np.float64", "np.float32", "np.float16", "np.int64", "np.int32"]
         .iter()
-        .fold(value.trim().to_string(), |s, t| s.replace(t, " "));
+        .fold(without_float_dtype(value.trim()), |s, t| s.replace(t, " "));
     let mut v = unwrapped.trim();
     for wrap in ["np.float64(", "float64(", "array(", "np.array("] {
         if let Some(inner) = v.strip_prefix(wrap) {
@@ -437,6 +493,26 @@ mod tests {
         assert_eq!(p.get("vlv[1]").unwrap().numbers, vec![1.0, 2.0, 3.0, 0.0]);
         assert_eq!(p.get("modelview").unwrap().numbers, vec![1.0, 0.0, 0.0, 0.8]);
         assert_eq!(p.errors, vec!["ValueError: math domain error".to_string()]);
+    }
+
+    #[test]
+    fn a_float32_arrays_repr_is_read_as_printed_its_type_dropped() {
+        // As NumPy 1.24 and 2.4 print `repr()` of float32 and float16 arrays (the type on
+        // a line of its own where the values fill the last), and a scalar array.
+        let text = "vlv = array([ 0.7922053 ,  0.55887604, -0.2450885 ,  0.        ], dtype=float32)\n\
+                    w = array([0.14285715, 0.2857143 , 0.42857143, 0.5714286 , 0.71428573],\n      dtype=float32)\n\
+                    h = array([0.1, 0.2], dtype=float16)\nd = array([0.1, 0.2], dtype=np.float64)\n\
+                    s = array(0.5, dtype=float32)\nn = array([1, 2], dtype=object)\nat = 5.2\n";
+        let p = printed_text(text);
+        assert_eq!(p.get("vlv").unwrap().numbers, vec![0.7922053, 0.55887604, -0.2450885, 0.0]);
+        assert_eq!(p.get("vlv").unwrap().own_half_units[0], 0.5e-7);
+        assert_eq!(p.get("w").unwrap().numbers, vec![0.14285715, 0.2857143, 0.42857143, 0.5714286, 0.71428573]);
+        assert_eq!(p.get("h").unwrap().numbers, vec![0.1, 0.2]);
+        assert_eq!(p.get("d").unwrap().numbers, vec![0.1, 0.2]);
+        assert_eq!(p.get("s").unwrap().numbers, vec![0.5]);
+        assert_eq!(p.get("at").unwrap().numbers, vec![5.2]);
+        // A type that is no float's is not read as numbers.
+        assert_eq!(p.unread, vec!["n".to_string()]);
     }
 
     #[test]

@@ -53,9 +53,25 @@ pub struct Colours {
     /// The scene's products.
     pub scene: [[f64; 3]; TERMS],
     /// Whether the picture shows the fitted products where they draw another picture than
-    /// the scene's (`shows_fitted`): then a product that differs by less than a fit's
-    /// noise on any picture (`ABSOLUTE`, `RELATIVE`) but past `FINE` differs.
-    pub shown: bool,
+    /// the scene's (`shows_fitted`), and how near it is to each there: then a product that
+    /// differs by less than a fit's noise on any picture (`ABSOLUTE`, `RELATIVE`) but past
+    /// `FINE` differs.
+    pub shown: Option<Nearer>,
+}
+
+/// Where the fitted products' drawing and the scene's differ (by 2 levels or more in a
+/// channel, inside the object), how far the student's picture is from each: what
+/// [`Colours::shown`] rests on, and what a "wrong" it decides says when both pictures explain
+/// the same share of the picture.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Nearer {
+    /// The pixels where the two drawings differ.
+    pub pixels: usize,
+    /// The picture's distance from the fitted products' drawing there: the root mean square
+    /// of the levels, over the pixels and channels.
+    pub to_fitted: f64,
+    /// The same from the scene's drawing.
+    pub to_scene: f64,
 }
 
 impl Colours {
@@ -68,7 +84,8 @@ impl Colours {
     /// The terms whose fitted product is not the scene's.
     pub fn differing(&self) -> Vec<usize> {
         let past = |t: usize| {
-            differs(self.fitted[t], self.scene[t]) || (self.shown && differs_finely(self.fitted[t], self.scene[t]))
+            differs(self.fitted[t], self.scene[t])
+                || (self.shown.is_some() && differs_finely(self.fitted[t], self.scene[t]))
         };
         (0..1 + 3 * self.lights).filter(|&t| past(t)).collect()
     }
@@ -105,13 +122,14 @@ const SHOWN_PIXELS: usize = 64;
 /// `fitted` rather than `scene` ([`SHOWN_AT`]): over the object's inside, where their
 /// drawings differ by 2 levels or more in a channel, the mean squared levels by which the
 /// image misses the fitted drawing at most [`SHOWN_AT`] of those it misses the scene's by?
+/// How near it is to each, when it does.
 fn shows_fitted(
     right: &Drawing,
     (fitted, scene): (&[[f64; 3]; TERMS], &[[f64; 3]; TERMS]),
     covered: &[bool],
     image: &[u8],
     size: usize,
-) -> Result<bool, SceneError> {
+) -> Result<Option<Nearer>, SceneError> {
     let (_, with_fitted, _) = with_products(right, fitted).draw(size)?;
     let (_, with_scene, _) = with_products(right, scene).draw(size)?;
     let squared = |a: &[u8], b: &[u8], p: usize| -> f64 {
@@ -121,7 +139,9 @@ fn shows_fitted(
     let differ: Vec<usize> = interior(covered, size).into_iter().filter(apart).collect();
     let to_fitted: f64 = differ.iter().map(|&p| squared(image, &with_fitted, p)).sum();
     let to_scene: f64 = differ.iter().map(|&p| squared(image, &with_scene, p)).sum();
-    Ok(differ.len() >= SHOWN_PIXELS && to_fitted <= SHOWN_AT * to_scene)
+    let shown = differ.len() >= SHOWN_PIXELS && to_fitted <= SHOWN_AT * to_scene;
+    let rms = |sum: f64| (sum / (3 * differ.len().max(1)) as f64).sqrt();
+    Ok(shown.then(|| Nearer { pixels: differ.len(), to_fitted: rms(to_fitted), to_scene: rms(to_scene) }))
 }
 
 /// A fitted colour as words show it: two decimals in the reader's decimal mark, never

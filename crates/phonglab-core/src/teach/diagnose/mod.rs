@@ -232,7 +232,7 @@ pub fn drawings_at_most(right: &Drawing) -> usize {
         lights: right.scene.lights.len(),
         fitted: [[1.0; 3]; colours::TERMS],
         scene: [[0.0; 3]; colours::TERMS],
-        shown: true,
+        shown: Some(colours::Nearer { pixels: 0, to_fitted: 0.0, to_scene: 0.0 }),
     };
     let mut every = values::Values::default();
     for (i, l) in right.scene.lights.iter().enumerate().take(crate::model::scene::MAX_LIGHTS) {
@@ -322,12 +322,15 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
     {
         (d.verdict, d.causes, d.lossy) = (Verdict::Wrong, vec![t], None);
     }
+    // A picture right as saved lossily may have had its colour subsampled (a JPEG): a region
+    // or marks must differ beyond what that makes of the right picture.
+    let subsampled = d.lossy.is_some();
     if d.shape.is_none() && d.verdict == Verdict::Right {
-        let region = outline::largest_region(&d.picture, &covered, image, bg, size);
+        let region = outline::largest_region(&d.picture, &covered, image, bg, size, subsampled);
         d.shape = region.filter(|r| r.pixels >= REGION_AT).map(Shape::Region);
     }
     if d.shape.is_none() && d.verdict == Verdict::Right {
-        let marks = outline::largest_marks(&d.picture, &covered, image, bg, size);
+        let marks = outline::largest_marks(&d.picture, &covered, image, bg, size, subsampled);
         d.shape = marks.filter(|m| m.pixels >= MARKS_AT).map(Shape::Marks);
     }
     if d.shape.is_none() && d.verdict == Verdict::Right {
@@ -423,7 +426,7 @@ fn colours_shown(
     image: &[u8],
     size: usize,
 ) -> Result<Option<Tried>, SceneError> {
-    let shown = |t: &Tried| t.id() == "colours-differ" && t.at.colours.is_some_and(|c| c.shown);
+    let shown = |t: &Tried| t.id() == "colours-differ" && t.at.colours.is_some_and(|c| c.shown.is_some());
     if !d.tried.iter().any(shown) {
         return Ok(None);
     }
@@ -512,7 +515,12 @@ fn lossy_right(d: &Diagnosis, covered: &[bool], image: &[u8], bg: [u8; 3], size:
     // A pixel may also be a blend of its neighbours (resized, blurred, antialiased, moved
     // half a pixel): along the outline such a pixel is half the object's, half the
     // background's, far from either.
-    let blended = Match { score: blended_share(&d.picture, covered, image, bg, size, LOSSY), ..loose };
+    // A JPEG may also have had its colour subsampled (4:2:0, JPEG's usual way, its 8 x 8
+    // blocks too faint to see at high quality): its brightness is then the right picture's
+    // blend, its colour a wider one's.
+    let share = blended_share(&d.picture, covered, image, bg, size, LOSSY)
+        .max(crate::teach::picture_match::blended_share_subsampled(&d.picture, covered, image, bg, size, LOSSY));
+    let blended = Match { score: share, ..loose };
     let closest = d.tried.iter().filter_map(|t| t.matched).map(|m| m.miss).fold(f64::INFINITY, f64::min);
     let unbiased = fit::lifts(&d.picture, covered, image, size).iter().all(|(all, _)| all.abs() <= 1);
     // A blend of the right picture's neighbours within the tolerance nearly everywhere is

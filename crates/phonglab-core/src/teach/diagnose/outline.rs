@@ -126,8 +126,21 @@ fn outside(a: &[u8], b: &[u8], size: usize, p: usize) -> u8 {
 /// pixels that differ by more than [`REGION_LEVELS`] outside the range of the 3 x 3 around them (either way, [`outside`]),
 /// kept where all 8 neighbours differ too (so that an edge a pixel out, or a thin line, is
 /// no region), joined 8-connected. `None` when no pixel is solid.
-pub fn largest_region(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Option<Region> {
-    let differs = differing(picture, covered, image, bg, size);
+///
+/// `subsampled`: as for [`largest_marks`], a pixel differs only where it lies outside what a
+/// JPEG's subsampled colour can make of `picture` too.
+pub fn largest_region(
+    picture: &[u8],
+    covered: &[bool],
+    image: &[u8],
+    bg: [u8; 3],
+    size: usize,
+    subsampled: bool,
+) -> Option<Region> {
+    let mut differs = differing(picture, covered, image, bg, size);
+    if subsampled {
+        beyond_subsampling(&mut differs, picture, image, size);
+    }
     let solid: Vec<bool> = (0..size * size)
         .map(|p| {
             let (x, y) = (p % size, p / size);
@@ -165,11 +178,39 @@ fn added(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usiz
 /// The largest set of joined pixels (8-connected) where `image` lies outside `picture`'s
 /// range as [`added`] counts them, solid or not: lines or marks drawn over the object.
 /// `None` when no pixel does.
-pub fn largest_marks(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize) -> Option<Marks> {
-    let differs = added(picture, covered, image, bg, size);
+///
+/// `subsampled`: the image is a JPEG whose colour may be subsampled (it was found right as
+/// saved lossily, and shows JPEG's blocks): a pixel is then added only where it lies outside
+/// what the subsampling can make of `picture` too
+/// ([`crate::teach::picture_match::outside_subsampled`]): the colour of a sharp coloured
+/// edge (the spotlight's rim) smeared over 2 x 2 blocks is not a mark, while lines drawn over
+/// the object change the brightness as well.
+pub fn largest_marks(
+    picture: &[u8],
+    covered: &[bool],
+    image: &[u8],
+    bg: [u8; 3],
+    size: usize,
+    subsampled: bool,
+) -> Option<Marks> {
+    let mut differs = added(picture, covered, image, bg, size);
+    if subsampled {
+        beyond_subsampling(&mut differs, picture, image, size);
+    }
     let largest = regions(&differs, size).into_iter().max_by_key(|j| j.region.pixels)?;
     let r = largest.region;
     Some(Marks { pixels: r.pixels, from: r.from, to: r.to })
+}
+
+/// Keeps in `differs` only the pixels of `image` that lie more than [`REGION_LEVELS`] outside
+/// what a JPEG with its colour subsampled can make of `picture`
+/// ([`crate::teach::picture_match::outside_subsampled`]).
+fn beyond_subsampling(differs: &mut [bool], picture: &[u8], image: &[u8], size: usize) {
+    let of_picture = crate::teach::picture_match::luma_chroma(picture);
+    for (p, d) in differs.iter_mut().enumerate() {
+        *d = *d
+            && crate::teach::picture_match::outside_subsampled(&of_picture, image, size, p) > f64::from(REGION_LEVELS);
+    }
 }
 
 /// The 8-connected regions of `set` (`size` square).
@@ -226,14 +267,14 @@ mod tests {
         for p in (0..size * size).step_by(7) {
             image[p * 4 + 1] = 0;
         }
-        assert_eq!(largest_region(&picture, &covered, &image, [0, 0, 0], size), None);
+        assert_eq!(largest_region(&picture, &covered, &image, [0, 0, 0], size, false), None);
         // A 10 x 10 square at (20, 20): 8 x 8 solid (its rim has neighbours outside).
         for y in 20..30 {
             for x in 20..30 {
                 image[(y * size + x) * 4..(y * size + x) * 4 + 3].copy_from_slice(&[255, 0, 0]);
             }
         }
-        let r = largest_region(&picture, &covered, &image, [0, 0, 0], size).expect("a region");
+        let r = largest_region(&picture, &covered, &image, [0, 0, 0], size, false).expect("a region");
         assert_eq!(r, Region { pixels: 64, centre: (24, 24), from: (21, 21), to: (28, 28) });
     }
 
@@ -246,7 +287,7 @@ mod tests {
         for p in (0..size * size).step_by(7) {
             image[p * 4 + 1] = 0;
         }
-        assert!(largest_marks(&picture, &covered, &image, [0, 0, 0], size).is_none_or(|m| m.pixels == 1));
+        assert!(largest_marks(&picture, &covered, &image, [0, 0, 0], size, false).is_none_or(|m| m.pixels == 1));
         // Nor is the picture moved a pixel.
         let moved: Vec<u8> = (0..size * size).flat_map(|p| if p % size < 20 { [100; 4] } else { [180; 4] }).collect();
         let at = |dx: usize| -> Vec<u8> {
@@ -254,7 +295,7 @@ mod tests {
                 .flat_map(|p| moved[(p / size * size + (p % size).saturating_sub(dx)) * 4..][..4].to_vec())
                 .collect()
         };
-        assert_eq!(largest_marks(&at(0), &covered, &at(1), [0, 0, 0], size), None);
+        assert_eq!(largest_marks(&at(0), &covered, &at(1), [0, 0, 0], size, false), None);
         let mut image = picture.clone();
         // A line of one pixel from (3, 10) to (32, 10), and a diagonal joined to it.
         for x in 3..33 {
@@ -263,10 +304,10 @@ mod tests {
         for i in 1..8 {
             image[((10 + i) * size + 20 + i) * 4 + 2] = 255;
         }
-        let m = largest_marks(&picture, &covered, &image, [0, 0, 0], size).expect("marks");
+        let m = largest_marks(&picture, &covered, &image, [0, 0, 0], size, false).expect("marks");
         assert_eq!(m, Marks { pixels: 37, from: (3, 10), to: (32, 17) });
         // It is no solid region.
-        assert_eq!(largest_region(&picture, &covered, &image, [0, 0, 0], size), None);
+        assert_eq!(largest_region(&picture, &covered, &image, [0, 0, 0], size, false), None);
     }
 
     #[test]

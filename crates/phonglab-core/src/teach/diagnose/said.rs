@@ -13,8 +13,8 @@ use super::{
 };
 
 /// What a diagnosis found, kept as numbers: the verdict, the right picture's score, the
-/// mistakes named (the closest first; for an unexplained picture the closest tried, if
-/// any matched) and what each verdict rests on.
+/// mistakes named (the closest first; for an unexplained picture the closest tried, if it
+/// explains more of the picture than the right one) and what each verdict rests on.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Said {
     /// The verdict.
@@ -57,7 +57,17 @@ impl Said {
             Verdict::Right => Vec::new(),
             Verdict::Wrong => d.causes.clone(),
             Verdict::Unexplained if d.shape.is_some() => Vec::new(),
-            Verdict::Unexplained => d.tried.first().filter(|t| t.matched.is_some()).copied().into_iter().collect(),
+            // The closest mistake is named only when it explains more of the picture than the
+            // right picture does: one that explains less is no nearer the picture than the
+            // scene itself, and naming it sent students after it (a JPEG'd right picture
+            // "closest to the local viewer swapped").
+            Verdict::Unexplained => d
+                .tried
+                .first()
+                .filter(|t| t.matched.is_some_and(|m| m.score > d.right.score))
+                .copied()
+                .into_iter()
+                .collect(),
         };
         Said {
             verdict: d.verdict,
@@ -87,7 +97,7 @@ impl Said {
     /// offset's square, marks): then [`Self::lines`] says once where (0, 0) is.
     pub fn places(&self) -> bool {
         let shown = matches!(self.shape, Some(Shape::Region(_) | Shape::Marks(_) | Shape::Offset(_)));
-        shown || (self.verdict == Verdict::Wrong && self.footprint.is_some())
+        shown || self.bias.is_some() || (self.verdict == Verdict::Wrong && self.footprint.is_some())
     }
 
     /// The findings, one a line: the verdict first.
@@ -165,7 +175,10 @@ impl Said {
                     ("tolerance", text(TOLERANCE.to_string())),
                 ],
             ),
-            None => tr_args("diagnose-verdict-right", &[("score", percent(self.right))]),
+            None => tr_args(
+                "diagnose-verdict-right",
+                &[("score", percent(self.right)), ("rounding", text(ROUNDING.to_string()))],
+            ),
         }
     }
 
@@ -194,7 +207,10 @@ impl Said {
             }
         };
         let id = if said.len() == 1 { "diagnose-verdict-wrong" } else { "diagnose-verdict-wrong-or" };
-        out.push(tr_args(id, &args));
+        match nearer_said(first, self.right).filter(|_| said.len() == 1) {
+            Some(nearer) => out.push(tr_args("diagnose-verdict-wrong-nearer", &[&args[..], &nearer[..]].concat())),
+            None => out.push(tr_args(id, &args)),
+        }
         out.extend(self.footprint.as_ref().map(super::footprint_said));
         out.extend(same_picture_said(&self.same));
         for c in self.named.iter().filter(|c| !said.contains(c) && !self.same.contains(c)) {
@@ -222,7 +238,8 @@ impl Said {
 
     /// The places the findings name by their pixels, as boxes to draw on the difference
     /// image ([`crate::teach::picture_match::draw_boxes`]): the region, the marks or the
-    /// offset's square; the footprint's groups said one by one.
+    /// offset's square; the square evenly off the right picture; the footprint's groups said
+    /// one by one.
     pub fn boxes(&self) -> Vec<Boxed> {
         let mut out = Vec::new();
         match self.shape {
@@ -230,6 +247,10 @@ impl Said {
             Some(Shape::Marks(m)) => out.push((m.from, m.to)),
             Some(Shape::Offset(o)) => out.push((o.from, o.to)),
             _ => {}
+        }
+        if let Some(b) = self.bias {
+            let last = super::bias::TILE - 1;
+            out.push((b.at, (b.at.0 + last, b.at.1 + last)));
         }
         if self.verdict == Verdict::Wrong
             && let Some(f) = &self.footprint
@@ -249,8 +270,8 @@ pub fn difference_said(d: &Difference, boxes: usize) -> String {
         "diagnose-difference-said",
         &[
             ("gain", text(d.gain.to_string())),
-            ("full", text(d.full_from().to_string())),
-            ("largest", text(d.largest.to_string())),
+            ("full", Arg::Count(i64::from(d.full_from()))),
+            ("largest", Arg::Count(i64::from(d.largest))),
             ("drawn", text(d.largest_drawn().to_string())),
             ("boxes", Arg::Count(boxes as i64)),
         ],
@@ -327,6 +348,19 @@ fn run_in(words: &str) -> String {
 }
 
 /// A cause's words (which name its light), its id, and its score.
+/// For a "wrong" whose cause is colours fitted from the picture ([`super::colours::Nearer`])
+/// where its picture and the right one explain the same share of the student's, as the
+/// report shows it (to 0.1 %): what the verdict rests on instead, where the two pictures
+/// differ (the pixels, and how far the student's is from each there). "The picture with
+/// that mistake explains 100.0 %, the right picture 100.0 %" gave the teacher no reason.
+fn nearer_said(t: &Tried, right: f64) -> Option<[(&'static str, Arg); 3]> {
+    let shown = |share: f64| (share * 1000.0).round();
+    let score = t.matched?.score;
+    let n = t.at.colours?.shown.filter(|_| t.id() == "colours-differ" && shown(score) == shown(right))?;
+    let levels = |v: f64| Arg::Text(crate::locale::decimal(&format!("{v:.1}")));
+    Some([("pixels", Arg::Text(n.pixels.to_string())), ("fitted", levels(n.to_fitted)), ("scene", levels(n.to_scene))])
+}
+
 fn named(t: &Tried) -> (Arg, Arg, Arg) {
     (Arg::Text(t.words()), Arg::Text(t.id().to_owned()), percent(t.matched.map_or(0.0, |m| m.score)))
 }
@@ -432,8 +466,11 @@ mod tests {
         let bias = crate::teach::diagnose::Bias { at: (224, 96), channel: 0, levels: -2.76, errors: 21.0 };
         let off = Said { named: Vec::new(), shape: None, bias: Some(bias), ..unexplained_with(Shape::NothingDrawn) };
         let lines = with_locale(Locale::of(Lang::En), || off.lines());
-        assert_eq!(lines.len(), 2, "{lines:?}");
+        assert_eq!(lines.len(), 3, "{lines:?}");
         assert!(lines[1].contains("32 x 32 pixels from (224, 96) its red is -2.8 levels"), "{lines:?}");
+        assert!(lines[2].starts_with("Pixels are counted from (0, 0)"), "{lines:?}");
+        // The square it names is boxed on the difference image, as the teacher could not find it.
+        assert_eq!(off.boxes(), vec![((224, 96), (255, 127))]);
         assert!(lines[1].contains("21.0 standard errors") && lines[1].contains("may hide which"), "{lines:?}");
         let lines = with_locale(Locale::of(Lang::PtBr), || off.lines());
         assert!(lines[1].contains("o vermelho dela difere") && lines[1].contains("-2,8 níveis"), "{lines:?}");
@@ -490,5 +527,57 @@ mod tests {
         assert!(!said.contains("near white"), "{said}");
         let none = with_locale(Locale::of(Lang::PtPt), || difference_said(&d, 0));
         assert!(none.ends_with("128/255.") && !none.contains("caixa"), "{none}");
+        // One level: "1 level", not "1 levels" (the teacher's caption, in all three).
+        let one = crate::teach::picture_match::difference_image(&[100, 100, 100, 255], &[101, 100, 100, 255]);
+        let said = |lang| with_locale(Locale::of(lang), || difference_said(&one, 0));
+        assert!(said(Lang::En).contains("here, 1 level, is drawn"), "{}", said(Lang::En));
+        assert!(said(Lang::PtPt).contains("aqui, 1 nível, está"), "{}", said(Lang::PtPt));
+        assert!(said(Lang::PtBr).contains("aqui, 1 nível, é"), "{}", said(Lang::PtBr));
+    }
+
+    #[test]
+    fn right_to_the_rounding_says_a_value_a_little_off_cannot_show() {
+        // The teacher's light diffuse 0.78 for 0.8 moved pixels by 1 level at most and was a
+        // bare "Right": it now says what a picture cannot tell.
+        let within = crate::teach::diagnose::within::Within { most: 1, pixels: 0, inside: 5000 };
+        let right = Said { verdict: Verdict::Right, shape: None, within: Some(within), ..unexplained_with(SHAPES[0]) };
+        let en = with_locale(Locale::of(Lang::En), || right.lines());
+        assert!(en[0].starts_with("Right: the right picture explains 99.5\u{a0}%"), "{en:?}");
+        assert!(en[0].contains("to the rounding (1 level)") && en[0].contains("cannot show in a picture"), "{en:?}");
+        let pt = with_locale(Locale::of(Lang::PtPt), || right.lines());
+        assert!(pt[0].contains("até ao arredondamento (1 nível)") && pt[0].contains("não se vê numa imagem"), "{pt:?}");
+    }
+
+    #[test]
+    fn a_colour_shown_though_both_pictures_explain_it_alike_is_wrong_for_its_distances() {
+        // "the picture with that mistake explains 100.0 %, the right picture 100.0 %" gave no
+        // reason: where the two pictures differ, how far the student's is from each.
+        let nearer = crate::teach::diagnose::colours::Nearer { pixels: 4210, to_fitted: 0.62, to_scene: 1.94 };
+        let colours = crate::teach::diagnose::colours::Colours {
+            lights: 1,
+            fitted: [[0.48; 3]; crate::teach::diagnose::colours::TERMS],
+            scene: [[0.5; 3]; crate::teach::diagnose::colours::TERMS],
+            shown: Some(nearer),
+        };
+        let mut fitted = cause("colours-differ", 0.99996);
+        fitted.at.colours = Some(colours);
+        let wrong = Said {
+            verdict: Verdict::Wrong,
+            right: 0.99993,
+            named: vec![fitted],
+            shape: None,
+            ..unexplained_with(SHAPES[0])
+        };
+        let en = with_locale(Locale::of(Lang::En), || wrong.lines());
+        assert!(en[0].starts_with("Wrong. The cause: "), "{en:?}");
+        assert!(en[0].contains("both explain 100.0\u{a0}%"), "{en:?}");
+        assert!(en[0].contains("where the two differ (4210 pixels) yours is 0.6 levels from the first"), "{en:?}");
+        assert!(en[0].contains("and 1.9 from the right one"), "{en:?}");
+        let br = with_locale(Locale::of(Lang::PtBr), || wrong.lines());
+        assert!(br[0].contains("(4210 pixels) a sua fica, em média (quadrática), a 0,6 níveis"), "{br:?}");
+        // Shown apart (99.9 % against 99.5 %): the scores are the reason, said as before.
+        let apart = Said { right: 0.995, ..wrong.clone() };
+        let en = with_locale(Locale::of(Lang::En), || apart.lines());
+        assert!(en[0].contains(", the right picture 99.5\u{a0}%") && !en[0].contains("where the two differ"), "{en:?}");
     }
 }
