@@ -376,17 +376,38 @@ fn a_file_double_clicked_or_selected_then_enter_in_the_chooser_is_checked() {
         c.name.clear();
         h.run_steps(2);
     };
-    let mut h = harness(1280.0, 720.0);
+    // Frames a sixtieth of a second apart, as a window's under a moving pointer (the
+    // harness's own are a quarter of a second: two clicks would be too far apart for egui's
+    // double click).
+    let mut h = Harness::builder()
+        .with_size([1280.0, 720.0])
+        .with_step_dt(1.0 / 60.0)
+        .build_ui_state(|ui, s: &mut AppState| app_ui(ui, s), AppState::worksheet());
+    h.run_steps(2);
     open_in(&mut h);
-    // Two clicks in one frame, as raw input (the harness's own clicks go a frame each, too
-    // far apart for egui's double click).
+    let click = |h: &mut Harness<'static, AppState>, at: egui::Pos2| {
+        let input = h.input_mut();
+        input.events.push(egui::Event::PointerMoved(at));
+        for pressed in [true, false] {
+            let button = egui::PointerButton::Primary;
+            input.events.push(egui::Event::PointerButton { pos: at, button, pressed, modifiers: Default::default() });
+        }
+        h.step();
+    };
+    // A double click whose second click lands on another file (a file appeared above it and
+    // the list moved between the clicks) only selects the file under it.
     let at = h.get_by_label("vlv.txt").rect().center();
-    let input = h.input_mut();
-    input.events.push(egui::Event::PointerMoved(at));
-    for pressed in [true, false, true, false] {
-        let button = egui::PointerButton::Primary;
-        input.events.push(egui::Event::PointerButton { pos: at, button, pressed, modifiers: Default::default() });
-    }
+    click(&mut h, at);
+    std::fs::write(dir.0.join("a.txt"), printed(None)).unwrap();
+    click(&mut h, at);
+    h.run_steps(2);
+    assert!(h.state().chooser.as_ref().is_some_and(|c| c.name == "a.txt"), "selected only");
+    assert!(h.state().student.is_none());
+    // The same file twice, half a second later (else egui counts a triple click): checked.
+    h.run_steps(30);
+    let at = h.get_by_label("vlv.txt").rect().center();
+    click(&mut h, at);
+    click(&mut h, at);
     h.run_steps(3);
     assert!(h.state().chooser.is_none(), "the chooser closes");
     assert_eq!(h.state().student.as_ref().map(|s| s.file.as_str()), Some("vlv.txt"), "{:?}", h.state().message);

@@ -145,9 +145,13 @@ fn chooser_body_ui(ui: &mut Ui, c: &mut Chooser) -> (Option<Chosen>, bool) {
                     // override or an ESC in it written visibly (`\u{202E}`).
                     let visible = phonglab_core::escape::window::text(&name);
                     let shown = if folder { format!("{visible}/") } else { visible };
-                    let item = ui.selectable_label(!folder && name == c.name, shown);
+                    let selected = !folder && name == c.name;
+                    let item = ui.selectable_label(selected, shown);
                     if item.clicked() || item.double_clicked() {
-                        double_clicked |= !folder && item.double_clicked();
+                        // Only the file the double click's first click selected: egui's
+                        // double click is the pointer's, and a list that moved between the
+                        // two clicks would choose whatever the second one landed on.
+                        double_clicked |= selected && item.double_clicked();
                         if folder {
                             enter = Some(name);
                         } else {
