@@ -16,7 +16,9 @@ pub struct Entry {
 /// The subfolders of `dir` and its files whose extension is one of `extensions` (all
 /// files when empty), folders first, each group sorted; or why the folder cannot be read.
 pub fn list(dir: &Path, extensions: &[&str]) -> Result<Vec<Entry>, String> {
-    let read = std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    // In the user's words ("não existe"), the name with its control characters visible.
+    let read = std::fs::read_dir(dir)
+        .map_err(|e| format!("{}: {}", crate::io::reasons::shown(dir), crate::io::reasons::io_reason(&e)))?;
     let mut out: Vec<Entry> = read
         .filter_map(Result::ok)
         .filter_map(|e| {
@@ -39,6 +41,16 @@ pub fn list(dir: &Path, extensions: &[&str]) -> Result<Vec<Entry>, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_folder_that_cannot_be_read_is_said_in_the_users_words() {
+        use phonglab_core::locale::{Lang, Locale, with_locale};
+        let missing = Path::new("/no/such/phonglab/folder");
+        let said = with_locale(Locale::of(Lang::PtPt), || list(missing, &[]).unwrap_err());
+        assert_eq!(said, "/no/such/phonglab/folder: não existe");
+        let said = with_locale(Locale::of(Lang::En), || list(missing, &[]).unwrap_err());
+        assert_eq!(said, "/no/such/phonglab/folder: it does not exist");
+    }
 
     #[test]
     fn folders_first_then_the_files_wanted_without_hidden_ones() {
