@@ -412,6 +412,19 @@ fn a_file_double_clicked_or_selected_then_enter_in_the_chooser_is_checked() {
     assert!(h.state().chooser.is_none(), "the chooser closes");
     assert_eq!(h.state().student.as_ref().map(|s| s.file.as_str()), Some("vlv.txt"), "{:?}", h.state().message);
 
+    // Both clicks in one slow frame (a loaded machine): one layout, the same file: checked.
+    let mut h = harness(1280.0, 720.0);
+    open_in(&mut h);
+    let at = h.get_by_label("vlv.txt").rect().center();
+    let input = h.input_mut();
+    input.events.push(egui::Event::PointerMoved(at));
+    for pressed in [true, false, true, false] {
+        let button = egui::PointerButton::Primary;
+        input.events.push(egui::Event::PointerButton { pos: at, button, pressed, modifiers: Default::default() });
+    }
+    h.run_steps(3);
+    assert_eq!(h.state().student.as_ref().map(|s| s.file.as_str()), Some("vlv.txt"), "{:?}", h.state().message);
+
     let mut h = harness(1280.0, 720.0);
     open_in(&mut h);
     h.get_by_label("vlv.txt").click();

@@ -148,10 +148,25 @@ fn chooser_body_ui(ui: &mut Ui, c: &mut Chooser) -> (Option<Chosen>, bool) {
                     let selected = !folder && name == c.name;
                     let item = ui.selectable_label(selected, shown);
                     if item.clicked() || item.double_clicked() {
-                        // Only the file the double click's first click selected: egui's
-                        // double click is the pointer's, and a list that moved between the
-                        // two clicks would choose whatever the second one landed on.
-                        double_clicked |= selected && item.double_clicked();
+                        // Only the file the double click's first click selected (in an
+                        // earlier frame, or in this one: a slow frame takes both clicks, on
+                        // one layout): egui's double click is the pointer's, and a list that
+                        // moved between the two clicks would choose whatever the second one
+                        // landed on.
+                        let both_now = ui.input(|i| {
+                            let released = |e: &&egui::Event| {
+                                matches!(
+                                    e,
+                                    egui::Event::PointerButton {
+                                        pressed: false,
+                                        button: egui::PointerButton::Primary,
+                                        ..
+                                    }
+                                )
+                            };
+                            i.events.iter().filter(released).count() >= 2
+                        });
+                        double_clicked |= (selected || both_now) && item.double_clicked();
                         if folder {
                             enter = Some(name);
                         } else {
