@@ -1079,6 +1079,7 @@ student-clear = Clear
 student-clear-hover = Hide the student's values and the findings
 student-value = yours = { $student }: { $verdict }
 student-first-wrong-marker = » first wrong step
+student-checked-own = Checked { $file } against its own scene (not this one): { $verdict }
 student-checked = Checked { $file } against this scene: { $verdict }
 student-checked-wrong = not all right; see the calculation
 student-not-checked = Not checked: { $why }. The scene and the calculation are unchanged.

@@ -1082,6 +1082,7 @@ student-clear = Limpar
 student-clear-hover = Esconder os valores do aluno e a correção
 student-value = o seu = { $student }: { $verdict }
 student-first-wrong-marker = » primeiro passo errado
+student-checked-own = { $file } corrigido com a cena do próprio notebook (não esta): { $verdict }
 student-checked = { $file } corrigido com esta cena: { $verdict }
 student-checked-wrong = nem tudo está certo; veja o cálculo
 student-not-checked = Não corrigido: { $why }. A cena e o cálculo não mudaram.

@@ -213,6 +213,9 @@ fn a_notebook_typed_for_another_scene_is_checked_against_its_own_and_says_so() {
     let rect = line.rect();
     assert!(rect.width() > 100.0 && rect.max.x <= 1280.0 && rect.max.y <= 720.0, "{rect:?}");
     assert!(h.query_by_label_contains("your typed inputs differ from the assignment's").is_none());
+    // The status says which scene it was checked against, not "against this scene".
+    let status = format!("{:?}", h.state().message);
+    assert!(status.contains("Checked aluno.ipynb against its own scene (not this one)"), "{status}");
     // Back on the worksheet's scene, the same work is checked against it, with no such line.
     h.state_mut().load(AppState::worksheet().doc, "ficha");
     h.run_steps(3);

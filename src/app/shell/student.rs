@@ -85,7 +85,13 @@ fn status(state: &AppState, which: Status) -> Option<Message> {
     let (file, verdict) = match which {
         Status::Work => {
             let c = state.student.as_ref()?;
-            (c.file.clone(), if c.check.right() { t!("check-all-right") } else { t!("student-checked-wrong") })
+            let verdict = if c.check.right() { t!("check-all-right") } else { t!("student-checked-wrong") };
+            // Checked against the notebook's own scene ([`StudentCheck::own_scene`]): not
+            // "against this scene".
+            if c.own_scene.is_some() {
+                return Some(Message::Info(t!("student-checked-own", file = c.file.clone(), verdict = verdict)));
+            }
+            (c.file.clone(), verdict)
         }
         Status::Picture => {
             let p = state.compare.student.as_ref()?;
