@@ -213,6 +213,9 @@ fn a_notebook_typed_for_another_scene_is_checked_against_its_own_and_says_so() {
     let rect = line.rect();
     assert!(rect.width() > 100.0 && rect.max.x <= 1280.0 && rect.max.y <= 720.0, "{rect:?}");
     assert!(h.query_by_label_contains("your typed inputs differ from the assignment's").is_none());
+    // Its values are not put beside the steps of the scene shown (another scene's).
+    assert!(h.state().student.as_ref().is_some_and(|s| s.step("vlv").is_none()));
+    assert!(h.query_by_label_contains("yours = [").is_none(), "no value of it beside the spotlight's steps");
     // The status says which scene it was checked against, not "against this scene".
     let status = format!("{:?}", h.state().message);
     assert!(status.contains("Checked aluno.ipynb against its own scene (not this one)"), "{status}");
@@ -222,6 +225,7 @@ fn a_notebook_typed_for_another_scene_is_checked_against_its_own_and_says_so() {
     let s = h.state().student.as_ref().expect("still checked");
     assert_eq!(s.own_scene, None);
     assert!(s.check.right());
+    assert!(s.step("vlv").is_some(), "beside the worksheet's own steps again");
     assert!(h.query_by_label_contains("it looks typed for another scene").is_none());
 }
 

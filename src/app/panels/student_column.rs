@@ -56,7 +56,14 @@ impl StudentCheck {
 
     /// The student's step printed under the worksheet's `name` (`vlv`, `vlv[1]`), and
     /// the check when it is the first wrong one (its causes are said beside it).
+    /// `None` for every step when the work was checked against its own scene
+    /// ([`StudentCheck::own_scene`]): the steps shown are the scene shown's, and its values
+    /// ("yours = [-512 …]: right") beside another scene's would read as wrong or right of
+    /// these; the summary names its first wrong step with both values.
     pub fn step(&self, name: &str) -> Option<(&StepCheck, Option<&Check>)> {
+        if self.own_scene.is_some() {
+            return None;
+        }
         let k = self.check.steps.iter().position(|s| s.name == name)?;
         Some((&self.check.steps[k], (self.check.first_wrong == Some(k)).then_some(&self.check)))
     }
