@@ -998,6 +998,7 @@ cli-arg-diagnose-json = Print JSON (for scripts and tests) instead of the report
 file-kind-pictures = pictures
 diagnose-bad-png = { $path } cannot be read as a PNG picture: { $reason }
 diagnose-transparent = { $path } has { $count } transparent or see-through pixels (alpha below 255): what they show depends on what lies behind them, so phonglab does not judge it. Save the picture opaque, as the export and a screenshot of the window save it.
+png-reason-jpeg = it is a JPEG picture, and phonglab diagnoses PNG only (a JPEG's losses can hide the cause): save the picture as PNG straight from the program (the exported program's --png option), or convert it (convert picture.jpg picture.png)
 png-reason-not-png = it is not a PNG file (it does not start as one does)
 png-reason-too-large = it is too large to decode
 png-reason-damaged = the file is damaged or cut short

@@ -65,7 +65,10 @@ fn opaque(rgba: Vec<u8>, shown: &str) -> Result<Vec<u8>, String> {
 /// English): not a PNG at all, too large to decode, or a PNG damaged or cut short.
 fn png_reason(bytes: &[u8], e: &png::DecodingError) -> String {
     const SIGNATURE: [u8; 8] = [137, 80, 78, 71, 13, 10, 26, 10];
-    if !bytes.starts_with(&SIGNATURE) {
+    // JPEG's start of image: students hand in .jpg, however named.
+    if bytes.starts_with(&[0xFF, 0xD8, 0xFF]) {
+        t!("png-reason-jpeg")
+    } else if !bytes.starts_with(&SIGNATURE) {
         t!("png-reason-not-png")
     } else if matches!(e, png::DecodingError::LimitsExceeded) {
         t!("png-reason-too-large")

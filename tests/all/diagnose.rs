@@ -231,6 +231,13 @@ fn hostile_and_wrong_pictures_get_a_clear_message_and_nothing_is_overwritten() {
     // Not a PNG.
     let text = write(&dir, "text.png", "not a picture");
     assert!(run(&text, &[]).contains("cannot be read as a PNG picture"));
+    // A JPEG (as students hand in, named .jpg or .png): said as a JPEG, with how to hand in a
+    // PNG; it was "not a PNG file (it does not start as one does)".
+    let jpeg = dir.join("aluno.jpg");
+    std::fs::write(&jpeg, [0xFF, 0xD8, 0xFF, 0xE0, 0, 16, b'J', b'F', b'I', b'F', 0]).unwrap();
+    let said = run(&jpeg, &[]);
+    assert!(said.contains("it is a JPEG picture, and phonglab diagnoses PNG only"), "{said}");
+    assert!(said.contains("--png option"), "{said}");
     // The decoder's English never reaches a reader: its reason in the catalogue's words.
     let script = write(&dir, "mk.py", "import numpy\n");
     let args = ["--lang", "pt-BR", "diagnose", "--scene", scene.to_str().unwrap(), "--image", script.to_str().unwrap()];

@@ -191,6 +191,23 @@ fn a_dropped_notebook_with_outputs_asks_and_printed_text_is_checked_at_once() {
     assert_eq!(h.state().student.as_ref().map(|s| s.file.as_str()), Some("printed.txt"));
 }
 
+/// A JPEG chosen in the window goes to Compare, which says it is a JPEG and how to hand in
+/// a PNG; it was read as a notebook's text and refused as "not a text file" behind the
+/// picture shown (teacher, round 4).
+#[test]
+fn a_jpeg_checked_in_the_window_is_refused_in_compare_as_a_jpeg() {
+    let dir = TempDir::new("ui-student-jpeg");
+    let path = dir.0.join("aluno.jpg");
+    std::fs::write(&path, [0xFF, 0xD8, 0xFF, 0xE0, 0, 16, b'J', b'F', b'I', b'F', 0]).unwrap();
+    let mut h = harness(1280.0, 720.0);
+    phonglab::app::shell::student::check_path(h.state_mut(), &path);
+    h.run_steps(3);
+    let refused = h.get_by_label_contains("it is a JPEG picture, and phonglab diagnoses PNG only");
+    let rect = refused.rect();
+    assert!(rect.width() > 100.0 && rect.max.x <= 1280.0 && rect.max.y <= 720.0, "{rect:?}");
+    assert!(h.state().student.is_none());
+}
+
 /// The worksheet's notebook checked while another scene is shown (the spotlight): its typed
 /// inputs differ in most places, so it is checked against its own scene, as `phonglab check`
 /// without `--scene` does, and the panel says so; before, it listed some 60 inputs in red and

@@ -14,9 +14,11 @@ use crate::app::panels::student_column::StudentCheck;
 use crate::io::student_code::{MAX_CODE_BYTES, import_text, student_code};
 use crate::t;
 
-/// Is `path` a picture (`.png`), diagnosed in Compare?
+/// Is `path` a picture (`.png`), diagnosed in Compare? A `.jpg` or `.jpeg` is one too: it
+/// goes to Compare, whose reader says it is a JPEG and how to hand in a PNG (read as a
+/// notebook's text, it was refused as "not a text file", behind the picture shown).
 pub fn is_picture(path: &Path) -> bool {
-    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"))
+    path.extension().is_some_and(|e| ["png", "jpg", "jpeg"].iter().any(|x| e.eq_ignore_ascii_case(x)))
 }
 
 /// Is `path` a script's printed text (`.txt`), checked rather than opened?

@@ -334,7 +334,10 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         d.shape = marks.filter(|m| m.pixels >= MARKS_AT).map(Shape::Marks);
     }
     if d.shape.is_none() && d.verdict == Verdict::Right {
-        let off = offset::largest_offset(&d.picture, &covered, image, size).filter(|o| o.beyond_shift() >= OFFSET_AT);
+        // A picture right as saved lossily: its brightness (a JPEG's subsampled colour moves a
+        // square's red or blue near a coloured edge).
+        let largest = if subsampled { offset::largest_offset_in_luma } else { offset::largest_offset };
+        let off = largest(&d.picture, &covered, image, size).filter(|o| o.beyond_shift() >= OFFSET_AT);
         if let Some(o) = off {
             match offset_explained(right, &d, (&covered, o), image, size)? {
                 Some(t) => (d.verdict, d.causes, d.lossy) = (Verdict::Wrong, vec![t], None),
