@@ -271,6 +271,20 @@ pub fn move_entry(from: &HeldDir, to: &HeldDir, entry: &Entry) -> io::Result<Too
     }
 }
 
+/// [`move_entry`] of a new file the recovery puts in place from a staging folder: only where
+/// it is, through the handle that moves it, also owned by this user, so a file of anyone
+/// else's in a staging folder is never put among the teacher's files, whatever a journal
+/// says (issue 59, round 3, p32 D: the classmate's key replaced the teacher's). Owned, not
+/// "alone": a set's file is made as the system makes any file (under a umask 000, others
+/// may write it), shielded by its staging folder, which is this user's alone.
+fn move_own_entry(from: &HeldDir, to: &HeldDir, entry: &Entry) -> io::Result<Took> {
+    let own = |f: &std::fs::File| phonglab_core::files::private::is_owned_by_this_user(f) && is_entry_file(f, entry);
+    match open_checked(from, &entry.name, own)? {
+        Ok(opened) => Ok(if opened.rename_no_replace(to, OsStr::new(&entry.name))? { Took::Done } else { Took::Other }),
+        Err(took) => Ok(took),
+    }
+}
+
 /// Removes the file `entry.name` in the folder held `dir` only when it is, right then, the
 /// file `entry` names, through the handle that checked it (see [`move_entry`]): the one way
 /// a set's old files go.
@@ -663,7 +677,7 @@ fn finish(dir: &HeldDir, staging: HeldDir, j: &Journal) -> Result<(), String> {
         if is_entry_in(dir, new) {
             continue;
         }
-        if !matches!(move_entry(&staging, dir, new), Ok(Took::Done)) {
+        if !matches!(move_own_entry(&staging, dir, new), Ok(Took::Done)) {
             stuck.push(new.name.clone());
         }
     }

@@ -76,75 +76,94 @@ impl HeldDir {
     }
 
     /// Makes the folder `name` in this one, where nothing is (`AlreadyExists` otherwise, a
-    /// link included), for this user alone (Unix: mode 0700: a staging or aside folder,
-    /// trusted later only when no one else can have put anything in it), and holds it.
+    /// link included), for this user alone (Unix: mode 0700; Windows: an owner-only
+    /// descriptor, [`phonglab_core::files::private::OwnerOnly`]: a staging or aside folder,
+    /// trusted later only when no one else can have put anything in it), and holds it
+    /// (Windows: by the handle that made it, through the handle of this one).
     pub fn create_dir(&self, name: &OsStr) -> io::Result<HeldDir> {
         #[cfg(unix)]
-        unix::mkdir(&self.dir, plain(name)?)?;
-        #[cfg(not(unix))]
+        {
+            unix::mkdir(&self.dir, plain(name)?)?;
+            self.open_dir(name)
+        }
+        #[cfg(windows)]
         {
             self.unmoved()?;
-            std::fs::create_dir(self.path.join(plain(name)?))?;
+            let dir = windows::create_in(&self.dir, plain(name)?, windows::Make::Folder)?;
+            let id = crate::platform::os::file_identity(&dir).ok().map(|(_, id)| id);
+            Ok(HeldDir { dir, path: self.path.join(name), id })
         }
-        self.open_dir(name)
+        #[cfg(not(any(unix, windows)))]
+        {
+            std::fs::create_dir(self.path.join(plain(name)?))?;
+            self.open_dir(name)
+        }
     }
 
     /// Creates the new file `name` in this folder, to write (never through a link:
-    /// `AlreadyExists` where anything is there).
+    /// `AlreadyExists` where anything is there; Windows: made through this folder's handle,
+    /// so a link put at the folder's name meanwhile never leads it elsewhere).
     pub fn create_new(&self, name: &OsStr) -> io::Result<File> {
         #[cfg(unix)]
         {
             unix::create_new(&self.dir, plain(name)?)
         }
-        #[cfg(not(unix))]
+        #[cfg(windows)]
         {
             self.unmoved()?;
+            windows::create_in(&self.dir, plain(name)?, windows::Make::File)
+        }
+        #[cfg(not(any(unix, windows)))]
+        {
             File::options().write(true).create_new(true).open(self.path.join(plain(name)?))
         }
     }
 
     /// Creates the new file `name` in this folder, to write, for this user alone (Unix:
-    /// mode 0600, whatever the umask): one of phonglab's records, which it trusts later only
+    /// mode 0600, whatever the umask; Windows: an owner-only descriptor): one of phonglab's records, which it trusts later only
     /// when no one else can have written it ([`crate::platform::os::is_this_users_alone`]).
     pub fn create_private(&self, name: &OsStr) -> io::Result<File> {
         #[cfg(unix)]
         {
             unix::create_private(&self.dir, plain(name)?)
         }
-        #[cfg(not(unix))]
+        #[cfg(windows)]
+        {
+            self.unmoved()?;
+            windows::create_in(&self.dir, plain(name)?, windows::Make::Private)
+        }
+        #[cfg(not(any(unix, windows)))]
         {
             self.create_new(name)
         }
     }
 
     /// Opens the file `name` in this folder to append to, made if missing (never through a
-    /// link) for this user alone (Unix: mode 0600): a record of phonglab's.
+    /// link) for this user alone (Unix: mode 0600; Windows: an owner-only descriptor): a
+    /// record of phonglab's.
     pub fn append(&self, name: &OsStr) -> io::Result<File> {
         #[cfg(unix)]
         {
             unix::append(&self.dir, plain(name)?)
         }
-        #[cfg(not(unix))]
+        #[cfg(windows)]
         {
-            #[cfg(windows)]
-            use std::os::windows::fs::OpenOptionsExt;
             self.unmoved()?;
             let path = self.path.join(plain(name)?);
-            let mut options = File::options();
-            options.append(true).create(true);
-            // `FILE_FLAG_OPEN_REPARSE_POINT`: a link is opened itself, and refused below.
-            #[cfg(windows)]
-            options.custom_flags(0x0020_0000);
-            let file = options.open(&path)?;
-            #[cfg(windows)]
+            // Opened itself (`FILE_OPEN_REPARSE_POINT`), through this folder's handle; a
+            // link (Wine: a Unix one, which opens as the file it names) is refused here.
+            let file = windows::create_in(&self.dir, plain(name)?, windows::Make::Append)?;
             let link = !crate::platform::links::opened_under_its_own_name(&file, &path)
                 || std::os::windows::fs::MetadataExt::file_attributes(&file.metadata()?) & 0x400 != 0;
-            #[cfg(not(windows))]
-            let link = false;
             if link || crate::platform::os::regular_file_metadata(&file)?.is_none() {
                 return Err(io::Error::new(io::ErrorKind::InvalidInput, "not a regular file"));
             }
             Ok(file)
+        }
+        #[cfg(not(any(unix, windows)))]
+        {
+            let _ = name;
+            Err(io::Error::new(io::ErrorKind::Unsupported, "no files on this platform"))
         }
     }
 
@@ -552,6 +571,102 @@ mod windows {
 
     pub fn open_dir(path: &Path) -> io::Result<File> {
         open_itself(path, GENERIC_READ, SHARE_NO_DELETE)
+    }
+
+    /// What [`create_in`] makes.
+    pub enum Make {
+        /// A new file, to write.
+        File,
+        /// A new file, to write, for this user alone (one of phonglab's records).
+        Private,
+        /// A file for this user alone, to append to, made if missing.
+        Append,
+        /// A new folder for this user alone, held as [`open_dir`] holds one.
+        Folder,
+    }
+
+    /// Makes `name` in the folder held `dir` through its handle: `NtCreateFile` with
+    /// `RootDirectory` = that handle (Wine: `openat`-like, relative to the folder's own
+    /// descriptor), never by the folder's path, so a folder renamed and replaced by a link
+    /// between the look ([`super::HeldDir::unmoved`]) and this step still gets it, and
+    /// nothing is made in the folder the link leads to (issue 59, round 3: `.staged`, the
+    /// journal's temporary file and an empty set file were made there). A link at `name`
+    /// is never followed to make a file (`FILE_OPEN_REPARSE_POINT`; a new one fails on
+    /// anything there, `AlreadyExists`). What is this user's alone is made with the
+    /// owner-only descriptor ([`phonglab_core::files::private::OwnerOnly`]).
+    pub fn create_in(dir: &File, name: &std::ffi::OsStr, make: Make) -> io::Result<File> {
+        use std::os::windows::ffi::OsStrExt;
+        use std::os::windows::io::FromRawHandle;
+        use windows_sys::Wdk::Foundation::OBJECT_ATTRIBUTES;
+        use windows_sys::Wdk::Storage::FileSystem::{
+            FILE_CREATE, FILE_DIRECTORY_FILE, FILE_NON_DIRECTORY_FILE, FILE_OPEN_IF, FILE_OPEN_REPARSE_POINT,
+            FILE_SYNCHRONOUS_IO_NONALERT, NtCreateFile,
+        };
+        use windows_sys::Win32::Foundation::{GENERIC_WRITE, OBJ_CASE_INSENSITIVE, RtlNtStatusToDosError, UNICODE_STRING};
+        use windows_sys::Win32::Storage::FileSystem::{
+            FILE_ATTRIBUTE_NORMAL, FILE_GENERIC_READ, FILE_GENERIC_WRITE, FILE_WRITE_DATA, SYNCHRONIZE,
+        };
+        let private = match make {
+            Make::File => None,
+            Make::Private | Make::Append | Make::Folder => Some(phonglab_core::files::private::OwnerOnly::new()?),
+        };
+        let (access, share, disposition, options, attributes) = match make {
+            Make::File | Make::Private => (
+                GENERIC_READ | GENERIC_WRITE | DELETE | SYNCHRONIZE,
+                SHARE_ALL,
+                FILE_CREATE,
+                FILE_NON_DIRECTORY_FILE,
+                FILE_ATTRIBUTE_NORMAL,
+            ),
+            // As std opens to append: every right to write but writing at a position.
+            Make::Append => (
+                (FILE_GENERIC_WRITE & !FILE_WRITE_DATA) | FILE_GENERIC_READ | DELETE,
+                SHARE_ALL,
+                FILE_OPEN_IF,
+                FILE_NON_DIRECTORY_FILE,
+                FILE_ATTRIBUTE_NORMAL,
+            ),
+            Make::Folder => (GENERIC_READ | SYNCHRONIZE, SHARE_NO_DELETE, FILE_CREATE, FILE_DIRECTORY_FILE, 0),
+        };
+        let mut wide: Vec<u16> = name.encode_wide().collect();
+        let bytes = u16::try_from(wide.len() * 2)
+            .map_err(|_| io::Error::new(io::ErrorKind::InvalidFilename, "a name past 32767 characters"))?;
+        let object_name = UNICODE_STRING { Length: bytes, MaximumLength: bytes, Buffer: wide.as_mut_ptr() };
+        let attrs = OBJECT_ATTRIBUTES {
+            Length: size_of::<OBJECT_ATTRIBUTES>() as u32,
+            RootDirectory: dir.as_raw_handle(),
+            ObjectName: &raw const object_name,
+            Attributes: OBJ_CASE_INSENSITIVE,
+            SecurityDescriptor: private.as_ref().map_or(std::ptr::null(), |p| p.descriptor().cast()),
+            SecurityQualityOfService: std::ptr::null(),
+        };
+        let mut handle = std::ptr::null_mut();
+        let mut status_block = Default::default();
+        // SAFETY: `attrs` points at `object_name` (whose buffer, `wide`, holds `bytes`
+        // bytes), at the open folder's handle and at the descriptor in `private`, all alive
+        // through the call; `handle` and `status_block` are written by it.
+        let status = unsafe {
+            NtCreateFile(
+                &mut handle,
+                access,
+                &raw const attrs,
+                &mut status_block,
+                std::ptr::null(),
+                attributes,
+                share,
+                disposition,
+                options | FILE_SYNCHRONOUS_IO_NONALERT | FILE_OPEN_REPARSE_POINT,
+                std::ptr::null(),
+                0,
+            )
+        };
+        if status < 0 {
+            // SAFETY: no pointers.
+            let code = unsafe { RtlNtStatusToDosError(status) };
+            return Err(io::Error::from_raw_os_error(code as i32));
+        }
+        // SAFETY: `handle` was just opened by the call, and is owned here alone.
+        Ok(unsafe { File::from_raw_handle(handle) })
     }
 
     pub fn remove_dir(held: File, id: Option<(u64, u64)>, path: &Path) -> io::Result<()> {
