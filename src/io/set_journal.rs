@@ -27,7 +27,8 @@
 //!   what was staged) and a staging folder are trusted only when they are this user's alone
 //!   (`platform::os::is_this_users_alone`, asked through the handle they are read by: on
 //!   Unix owned by this user and writable by no one else, which phonglab makes them, 0600
-//!   and 0700; on Windows owned by this user). A classmate's forged list or journal in a
+//!   and 0700; on Windows owned by this user, with a DACL that lets no one else write,
+//!   which phonglab makes them: an owner-only descriptor). A classmate's forged list or journal in a
 //!   shared folder (mode 1777, where they cannot delete the teacher's files themselves) is
 //!   left as it is, and said (issue 59, round 2);
 //! - recovery acts on a staging folder only when its journal is there, read without

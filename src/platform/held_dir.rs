@@ -16,7 +16,11 @@
 //!   WITHOUT `FILE_SHARE_DELETE`: while it is held no one can rename or remove it (opening
 //!   it with `DELETE`, which both need, is a sharing violation), nor rename a folder above
 //!   it (NTFS refuses to rename a folder with an open handle beneath it), so its path goes
-//!   on naming the folder held, and the steps go by that path. (The handle asks for no
+//!   on naming the folder held, and the steps go by that path, but for what is made in it:
+//!   a file or folder is made through the folder's handle (`NtCreateFile` with
+//!   `RootDirectory`; Wine opens it relative to the folder's own descriptor), so a folder a
+//!   Unix program renamed under Wine and replaced by a link between phonglab's look and its
+//!   step still gets it, never the folder the link leads to. (The handle asks for no
 //!   `DELETE` itself: a rename into the folder opens it for `FILE_ADD_FILE` sharing reading
 //!   and writing only, which a held `DELETE` would refuse.) Its removal lets go of it, then
 //!   opens it again with `DELETE`, checks it is the very folder held (its identity), and
@@ -89,7 +93,7 @@ impl HeldDir {
         #[cfg(windows)]
         {
             self.unmoved()?;
-            let dir = windows::create_in(&self.dir, plain(name)?, windows::Make::Folder)?;
+            let dir = self.said_moved(windows::create_in(&self.dir, plain(name)?, windows::Make::Folder))?;
             let id = crate::platform::os::file_identity(&dir).ok().map(|(_, id)| id);
             Ok(HeldDir { dir, path: self.path.join(name), id })
         }
@@ -111,7 +115,7 @@ impl HeldDir {
         #[cfg(windows)]
         {
             self.unmoved()?;
-            windows::create_in(&self.dir, plain(name)?, windows::Make::File)
+            self.said_moved(windows::create_in(&self.dir, plain(name)?, windows::Make::File))
         }
         #[cfg(not(any(unix, windows)))]
         {
@@ -130,7 +134,7 @@ impl HeldDir {
         #[cfg(windows)]
         {
             self.unmoved()?;
-            windows::create_in(&self.dir, plain(name)?, windows::Make::Private)
+            self.said_moved(windows::create_in(&self.dir, plain(name)?, windows::Make::Private))
         }
         #[cfg(not(any(unix, windows)))]
         {
@@ -152,7 +156,7 @@ impl HeldDir {
             let path = self.path.join(plain(name)?);
             // Opened itself (`FILE_OPEN_REPARSE_POINT`), through this folder's handle; a
             // link (Wine: a Unix one, which opens as the file it names) is refused here.
-            let file = windows::create_in(&self.dir, plain(name)?, windows::Make::Append)?;
+            let file = self.said_moved(windows::create_in(&self.dir, plain(name)?, windows::Make::Append))?;
             let link = !crate::platform::links::opened_under_its_own_name(&file, &path)
                 || std::os::windows::fs::MetadataExt::file_attributes(&file.metadata()?) & 0x400 != 0;
             if link || crate::platform::os::regular_file_metadata(&file)?.is_none() {
@@ -310,6 +314,14 @@ impl HeldDir {
         let name = self.path.file_name().unwrap_or_default().to_string_lossy().into_owned();
         let name = phonglab_core::escape::terminal::text(&name);
         Err(io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-held-folder-moved", name = name)))
+    }
+
+    /// Windows: `made`, or where it failed and this folder is found moved or replaced
+    /// meanwhile (under Wine a Unix program renamed it, and the system answers only "Invalid
+    /// handle. (os error 6)"), the error that says so in words ([`Self::unmoved`]).
+    #[cfg(windows)]
+    fn said_moved<T>(&self, made: io::Result<T>) -> io::Result<T> {
+        made.map_err(|e| self.unmoved().err().unwrap_or(e))
     }
 
     /// Where the folder `sub`, held, is now in this folder: at its own name, or at the
@@ -602,13 +614,16 @@ mod windows {
             FILE_CREATE, FILE_DIRECTORY_FILE, FILE_NON_DIRECTORY_FILE, FILE_OPEN_IF, FILE_OPEN_REPARSE_POINT,
             FILE_SYNCHRONOUS_IO_NONALERT, NtCreateFile,
         };
-        use windows_sys::Win32::Foundation::{GENERIC_WRITE, OBJ_CASE_INSENSITIVE, RtlNtStatusToDosError, UNICODE_STRING};
+        use windows_sys::Win32::Foundation::{
+            GENERIC_WRITE, OBJ_CASE_INSENSITIVE, RtlNtStatusToDosError, UNICODE_STRING,
+        };
         use windows_sys::Win32::Storage::FileSystem::{
             FILE_ATTRIBUTE_NORMAL, FILE_GENERIC_READ, FILE_GENERIC_WRITE, FILE_WRITE_DATA, SYNCHRONIZE,
         };
         let private = match make {
             Make::File => None,
-            Make::Private | Make::Append | Make::Folder => Some(phonglab_core::files::private::OwnerOnly::new()?),
+            Make::Private | Make::Append => Some(phonglab_core::files::private::OwnerOnly::new(false)?),
+            Make::Folder => Some(phonglab_core::files::private::OwnerOnly::new(true)?),
         };
         let (access, share, disposition, options, attributes) = match make {
             Make::File | Make::Private => (
@@ -818,6 +833,68 @@ mod tests {
         assert_eq!(again.path(), away);
         again.create_new(OsStr::new("new.md")).unwrap().write_all(b"made where it went").unwrap();
         assert_eq!(std::fs::read(away.join("new.md")).unwrap(), b"made where it went");
+    }
+
+    /// Windows under Wine (issue 59, round 3, p30 flip-staging): a Unix program renames a
+    /// held folder away and puts a link to another folder at its name, between phonglab's
+    /// look and its step. What is made in the folder is made through its handle
+    /// (`NtCreateFile`, `RootDirectory`), so it lands in the folder held, wherever it went,
+    /// and nothing is made in the folder the link leads to (before, by path: a `.staged`
+    /// list, a journal's temporary file and an empty set file were made there); the records
+    /// and folders phonglab makes are this user's alone.
+    #[test]
+    #[cfg(windows)]
+    fn what_is_made_in_a_held_folder_swapped_for_a_link_is_made_in_the_folder_held() {
+        use super::windows::{Make, create_in};
+        use std::io::Write;
+        let root = fresh("unix-swapped-make");
+        let (dir, away, outside) = (root.join("staging"), root.join("away"), root.join("outside"));
+        for d in [&dir, &outside] {
+            std::fs::create_dir_all(d).unwrap();
+        }
+        std::fs::write(outside.join("a.md"), "the teacher's").unwrap();
+        let held = HeldDir::open(&root).unwrap().open_dir(OsStr::new("staging")).unwrap();
+        let unix = |p: &std::path::Path| {
+            let out = std::process::Command::new("winepath").arg("-u").arg(p).output().ok()?;
+            out.status.success().then(|| String::from_utf8_lossy(&out.stdout).trim_end().to_string())
+        };
+        let (Some(dir_u), Some(away_u), Some(outside_u)) = (unix(&dir), unix(&away), unix(&outside)) else {
+            eprintln!("not under Wine: no Unix program can rename a folder held here: nothing to test");
+            return;
+        };
+        let _ = std::process::Command::new(r"Z:\bin\mv").args([&dir_u, &away_u]).status();
+        // A Unix program's work is waited for (Wine does not give its exit status), up to 10 s.
+        let _ = (0..500).any(|_| away.is_dir() || (std::thread::sleep(std::time::Duration::from_millis(20)), false).1);
+        let _ = std::process::Command::new(r"Z:\bin\ln").args(["-s", &outside_u, &dir_u]).status();
+        let swapped = (0..500).any(|_| {
+            crate::platform::links::reached_through_link(&dir)
+                || (std::thread::sleep(std::time::Duration::from_millis(20)), false).1
+        });
+        if !swapped || !away.is_dir() {
+            eprintln!("the Unix side could not rename the folder or plant a link: nothing to test");
+            return;
+        }
+        create_in(held.handle(), OsStr::new("new.md"), Make::File).unwrap().write_all(b"new").unwrap();
+        let record = create_in(held.handle(), OsStr::new("record"), Make::Private).unwrap();
+        assert!(crate::platform::os::is_this_users_alone(&record), "a record is this user's alone");
+        drop(record);
+        create_in(held.handle(), OsStr::new("list"), Make::Append).unwrap().write_all(b"line\n").unwrap();
+        create_in(held.handle(), OsStr::new("list"), Make::Append).unwrap().write_all(b"more\n").unwrap();
+        let sub = create_in(held.handle(), OsStr::new("sub"), Make::Folder).unwrap();
+        assert!(crate::platform::os::is_this_users_alone(&sub), "a working folder is this user's alone");
+        drop(sub);
+        let names = |d: &std::path::Path| {
+            let mut v: Vec<String> =
+                std::fs::read_dir(d).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+            v.sort();
+            v
+        };
+        assert_eq!(names(&outside), ["a.md"], "nothing made through the link");
+        assert_eq!(names(&away), ["list", "new.md", "record", "sub"], "made in the folder held");
+        assert_eq!(std::fs::read(away.join("new.md")).unwrap(), b"new");
+        assert_eq!(std::fs::read(away.join("list")).unwrap(), b"line\nmore\n", "appended to");
+        let e = held.create_new(OsStr::new("other.md")).unwrap_err().to_string();
+        assert!(e.contains("staging") && e.contains("moved or replaced"), "said in words: {e}");
     }
 
     /// Windows: a folder held cannot be renamed or removed by anyone (held without

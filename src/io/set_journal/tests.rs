@@ -493,32 +493,6 @@ fn a_forged_journal_or_staging_folder_not_this_users_alone_is_left() {
     }
 }
 
-/// Windows: lets everyone write the file or folder at `path` (its DACL: Everyone, full
-/// control), as Wine makes it from the Unix mode a teacher's umask 000 gives (0666, 0777).
-#[cfg(windows)]
-fn everyone_may_write(path: &Path) {
-    use std::os::windows::ffi::OsStrExt;
-    use windows_sys::Win32::Security::{
-        ACL, ACL_REVISION, AddAccessAllowedAceEx, CreateWellKnownSid, DACL_SECURITY_INFORMATION, InitializeAcl,
-        InitializeSecurityDescriptor, SetFileSecurityW, SetSecurityDescriptorDacl, WinWorldSid,
-    };
-    use windows_sys::Win32::Storage::FileSystem::FILE_ALL_ACCESS;
-    let (mut sid, mut acl, mut sd) = ([0u64; 16], [0u64; 32], [0u64; 8]);
-    let mut sid_len = 128u32;
-    let wide: Vec<u16> = path.as_os_str().encode_wide().chain([0]).collect();
-    // SAFETY: each buffer is as large as the call is told; the path is NUL-terminated.
-    let done = unsafe {
-        CreateWellKnownSid(WinWorldSid, std::ptr::null_mut(), sid.as_mut_ptr().cast(), &mut sid_len) != 0
-            && InitializeAcl(acl.as_mut_ptr().cast::<ACL>(), 256, ACL_REVISION) != 0
-            && AddAccessAllowedAceEx(acl.as_mut_ptr().cast(), ACL_REVISION, 0, FILE_ALL_ACCESS, sid.as_mut_ptr().cast())
-                != 0
-            && InitializeSecurityDescriptor(sd.as_mut_ptr().cast(), 1) != 0
-            && SetSecurityDescriptorDacl(sd.as_mut_ptr().cast(), 1, acl.as_ptr().cast(), 0) != 0
-            && SetFileSecurityW(wide.as_ptr(), DACL_SECURITY_INFORMATION, sd.as_mut_ptr().cast()) != 0
-    };
-    assert!(done, "everyone may write {}: {}", path.display(), std::io::Error::last_os_error());
-}
-
 /// Is the file or folder at `path` this user's alone ([`crate::platform::os::is_this_users_alone`])?
 #[cfg(windows)]
 fn alone(path: &Path) -> bool {
@@ -549,7 +523,7 @@ fn a_list_of_what_phonglab_wrote_that_others_may_write_is_not_trusted_and_its_ow
         ["exercise-01.md", "exercise-02.md", "exercise-07.md"].iter().map(|n| entry_of(&dir, n).unwrap()).collect();
     // Rewritten in place: the owner stays this user; then everyone may write it.
     std::fs::write(dir.join(WRITTEN), serde_json::to_vec(&forged).unwrap()).unwrap();
-    everyone_may_write(&dir.join(WRITTEN));
+    crate::io::atomic_write::tests::everyone_may_write(&dir.join(WRITTEN));
     assert!(!alone(&dir.join(WRITTEN)), "a list everyone may write is not this user's alone");
     let before = everything(&dir);
     let mut next = FileSet::default();
@@ -599,8 +573,8 @@ fn a_journal_or_staging_folder_others_may_write_is_left_and_its_own_is_finished(
         assert!(alone(&staging.join(JOURNAL)) && alone(&staging), "phonglab's own are this user's alone");
         drop((held, parent));
         match what {
-            "journal" => everyone_may_write(&staging.join(JOURNAL)),
-            "folder" => everyone_may_write(&staging),
+            "journal" => crate::io::atomic_write::tests::everyone_may_write(&staging.join(JOURNAL)),
+            "folder" => crate::io::atomic_write::tests::everyone_may_write(&staging),
             _ => {}
         }
         let before = everything(&dir);

@@ -65,24 +65,26 @@ pub fn is_owned_by_this_user(file: &File) -> bool {
 }
 
 #[cfg(windows)]
-pub use windows::OwnerOnly;
+pub use windows::{OwnerOnly, create_dir, make_owner_only};
 
 #[cfg(windows)]
 mod windows {
     use std::fs::File;
     use std::io;
     use std::os::windows::io::AsRawHandle;
+    use std::path::Path;
 
     use windows_sys::Win32::Foundation::{CloseHandle, HANDLE};
     use windows_sys::Win32::Security::{
         ACCESS_ALLOWED_ACE, ACE_HEADER, ACL, ACL_REVISION, AddAccessAllowedAceEx, DACL_SECURITY_INFORMATION, EqualSid,
         GetAce, GetKernelObjectSecurity, GetLengthSid, GetSecurityDescriptorDacl, GetSecurityDescriptorOwner,
         GetTokenInformation, INHERIT_ONLY_ACE, InitializeAcl, InitializeSecurityDescriptor, IsWellKnownSid,
-        OWNER_SECURITY_INFORMATION, PSID, SE_DACL_PROTECTED, SetSecurityDescriptorControl, SetSecurityDescriptorDacl,
-        SetSecurityDescriptorOwner, TOKEN_INFORMATION_CLASS, TOKEN_OWNER, TOKEN_QUERY, TOKEN_USER, TokenOwner,
-        TokenUser, WinBuiltinAdministratorsSid, WinLocalSystemSid,
+        OWNER_SECURITY_INFORMATION, PROTECTED_DACL_SECURITY_INFORMATION, PSID, SE_DACL_PROTECTED, SECURITY_ATTRIBUTES,
+        SetFileSecurityW, SetSecurityDescriptorControl, SetSecurityDescriptorDacl, SetSecurityDescriptorOwner,
+        TOKEN_INFORMATION_CLASS, TOKEN_OWNER, TOKEN_QUERY, TOKEN_USER, TokenOwner, TokenUser,
+        WinBuiltinAdministratorsSid, WinLocalSystemSid,
     };
-    use windows_sys::Win32::Storage::FileSystem::FILE_ALL_ACCESS;
+    use windows_sys::Win32::Storage::FileSystem::{CreateDirectoryW, FILE_ALL_ACCESS, FILE_EXECUTE};
     use windows_sys::Win32::System::Threading::{GetCurrentProcess, OpenProcessToken};
 
     /// The rights that change a file or folder: write data (a folder: add a file), append
@@ -226,13 +228,54 @@ mod windows {
         })
     }
 
+    /// The NUL-terminated wide form of `path`, for the system's calls.
+    fn wide(path: &Path) -> Vec<u16> {
+        use std::os::windows::ffi::OsStrExt;
+        path.as_os_str().encode_wide().chain([0]).collect()
+    }
+
+    /// Makes the folder `path` with the owner-only descriptor ([`OwnerOnly`]): a records
+    /// folder of this user's alone (`AlreadyExists` where anything is there).
+    pub fn create_dir(path: &Path) -> io::Result<()> {
+        let private = OwnerOnly::new(true)?;
+        let attrs = SECURITY_ATTRIBUTES {
+            nLength: size_of::<SECURITY_ATTRIBUTES>() as u32,
+            lpSecurityDescriptor: private.descriptor().cast_mut(),
+            bInheritHandle: 0,
+        };
+        let path = wide(path);
+        // SAFETY: `path` is NUL-terminated; `attrs` points at the descriptor in `private`,
+        // alive through the call.
+        if unsafe { CreateDirectoryW(path.as_ptr(), &raw const attrs) } == 0 {
+            return Err(io::Error::last_os_error());
+        }
+        Ok(())
+    }
+
+    /// Gives the file or folder at `path` the owner-only descriptor ([`OwnerOnly`]): this
+    /// user its owner, and the protected DACL of one entry (a record just written whole,
+    /// which got what its folder gives a new file).
+    pub fn make_owner_only(path: &Path, folder: bool) -> io::Result<()> {
+        let private = OwnerOnly::new(folder)?;
+        let path = wide(path);
+        let info = OWNER_SECURITY_INFORMATION | DACL_SECURITY_INFORMATION | PROTECTED_DACL_SECURITY_INFORMATION;
+        // SAFETY: `path` is NUL-terminated; the descriptor in `private` is alive through
+        // the call, which only reads it.
+        if unsafe { SetFileSecurityW(path.as_ptr(), info, private.descriptor().cast_mut()) } == 0 {
+            return Err(io::Error::last_os_error());
+        }
+        Ok(())
+    }
+
     /// An owner-only security descriptor, to make a file or folder with: owned by this
     /// user, with a protected DACL (nothing inherited from the folder it is made in) of one
     /// entry, this user's SID with full control, inherited by nothing made inside it (a set's
     /// files staged in a working folder get what the system gives a file with no entry to
     /// inherit, as before; only the records and the folders are this user's alone). Under
-    /// Wine the Unix mode it is made with follows (0770: Wine gives the owner's rights to
-    /// the file's group as well), whatever the umask.
+    /// Wine the Unix mode it is made with follows, whatever the umask: 0770 for a folder,
+    /// 0660 for a file (Wine gives the owner's rights to the file's Unix group as well, and
+    /// shows no Unix group in a DACL: a classmate in the teacher's own Unix group is not
+    /// kept out, nor seen; see docs/security.md).
     pub struct OwnerOnly {
         /// The token's buffers, which the descriptor's owner points into.
         _token: Token,
@@ -244,9 +287,12 @@ mod windows {
     }
 
     impl OwnerOnly {
-        /// This user's owner-only descriptor. `Err` where the system cannot make one.
-        pub fn new() -> io::Result<OwnerOnly> {
+        /// This user's owner-only descriptor, for a folder (`folder`: every right) or a
+        /// file (every right but executing it: under Wine, no Unix execute bit).
+        /// `Err` where the system cannot make one.
+        pub fn new(folder: bool) -> io::Result<OwnerOnly> {
             let fail = || io::Error::last_os_error();
+            let rights = if folder { FILE_ALL_ACCESS } else { FILE_ALL_ACCESS & !FILE_EXECUTE };
             let token = Token::of_process().ok_or_else(fail)?;
             let user = token.user();
             // SAFETY: `user` is the token's SID, alive in `token`.
@@ -260,7 +306,7 @@ mod windows {
             // the token's SID; each call writes only into those buffers, which outlive it.
             let made = unsafe {
                 InitializeAcl(acl_ptr, acl_len as u32, ACL_REVISION) != 0
-                    && AddAccessAllowedAceEx(acl_ptr, ACL_REVISION, 0, FILE_ALL_ACCESS, user) != 0
+                    && AddAccessAllowedAceEx(acl_ptr, ACL_REVISION, 0, rights, user) != 0
                     && InitializeSecurityDescriptor(sd_ptr, SD_REVISION) != 0
                     && SetSecurityDescriptorOwner(sd_ptr, user, 0) != 0
                     && SetSecurityDescriptorDacl(sd_ptr, 1, acl_ptr, 0) != 0
