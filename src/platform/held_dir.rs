@@ -93,7 +93,7 @@ impl HeldDir {
         #[cfg(windows)]
         {
             self.unmoved()?;
-            let dir = self.said_moved(windows::create_in(&self.dir, plain(name)?, windows::Make::Folder))?;
+            let dir = self.said_moved(|| windows::create_in(&self.dir, plain(name)?, windows::Make::Folder))?;
             let id = crate::platform::os::file_identity(&dir).ok().map(|(_, id)| id);
             Ok(HeldDir { dir, path: self.path.join(name), id })
         }
@@ -115,7 +115,7 @@ impl HeldDir {
         #[cfg(windows)]
         {
             self.unmoved()?;
-            self.said_moved(windows::create_in(&self.dir, plain(name)?, windows::Make::File))
+            self.said_moved(|| windows::create_in(&self.dir, plain(name)?, windows::Make::File))
         }
         #[cfg(not(any(unix, windows)))]
         {
@@ -134,7 +134,7 @@ impl HeldDir {
         #[cfg(windows)]
         {
             self.unmoved()?;
-            self.said_moved(windows::create_in(&self.dir, plain(name)?, windows::Make::Private))
+            self.said_moved(|| windows::create_in(&self.dir, plain(name)?, windows::Make::Private))
         }
         #[cfg(not(any(unix, windows)))]
         {
@@ -156,7 +156,7 @@ impl HeldDir {
             let path = self.path.join(plain(name)?);
             // Opened itself (`FILE_OPEN_REPARSE_POINT`), through this folder's handle; a
             // link (Wine: a Unix one, which opens as the file it names) is refused here.
-            let file = self.said_moved(windows::create_in(&self.dir, plain(name)?, windows::Make::Append))?;
+            let file = self.said_moved(|| windows::create_in(&self.dir, plain(name)?, windows::Make::Append))?;
             let link = !crate::platform::links::opened_under_its_own_name(&file, &path)
                 || std::os::windows::fs::MetadataExt::file_attributes(&file.metadata()?) & 0x400 != 0;
             if link || crate::platform::os::regular_file_metadata(&file)?.is_none() {
@@ -311,17 +311,38 @@ impl HeldDir {
         if self.still_at_its_path() {
             return Ok(());
         }
-        let name = self.path.file_name().unwrap_or_default().to_string_lossy().into_owned();
-        let name = phonglab_core::escape::terminal::text(&name);
-        Err(io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-held-folder-moved", name = name)))
+        Err(self.moved_error())
     }
 
-    /// Windows: `made`, or where it failed and this folder is found moved or replaced
-    /// meanwhile (under Wine a Unix program renamed it, and the system answers only "Invalid
-    /// handle. (os error 6)"), the error that says so in words ([`Self::unmoved`]).
+    /// The error that says, in the user's words, that this folder was moved or replaced
+    /// while phonglab worked in it, and this step was not made.
+    fn moved_error(&self) -> io::Error {
+        let name = self.path.file_name().unwrap_or_default().to_string_lossy().into_owned();
+        let name = phonglab_core::escape::terminal::text(&name);
+        io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-held-folder-moved", name = name))
+    }
+
+    /// Windows: what `make` makes in this folder through its handle; where it fails and this
+    /// folder is found moved or replaced meanwhile, the error that says so in words
+    /// ([`Self::unmoved`]). Under Wine a Unix program that renames the folder held (and puts
+    /// it back) makes the system answer "Invalid handle. (os error 6)" for the handle phonglab
+    /// holds open, which nothing else does: `make` is asked again up to 3 times, 10 ms
+    /// apart, and then said as the folder moved ("did not take this step": nothing was made).
     #[cfg(windows)]
-    fn said_moved<T>(&self, made: io::Result<T>) -> io::Result<T> {
-        made.map_err(|e| self.unmoved().err().unwrap_or(e))
+    fn said_moved<T>(&self, make: impl Fn() -> io::Result<T>) -> io::Result<T> {
+        /// `ERROR_INVALID_HANDLE`.
+        const LOST: i32 = 6;
+        let mut tries = 0;
+        loop {
+            match make() {
+                Err(e) if e.raw_os_error() == Some(LOST) && tries < 3 => {
+                    tries += 1;
+                    std::thread::sleep(std::time::Duration::from_millis(10));
+                }
+                Err(e) if e.raw_os_error() == Some(LOST) => return Err(self.moved_error()),
+                made => return made.map_err(|e| self.unmoved().err().unwrap_or(e)),
+            }
+        }
     }
 
     /// Where the folder `sub`, held, is now in this folder: at its own name, or at the
