@@ -644,7 +644,7 @@ mod windows {
         let private = match make {
             Make::File => None,
             Make::Private | Make::Append => Some(phonglab_core::files::private::OwnerOnly::new(false)?),
-            Make::Folder => Some(phonglab_core::files::private::OwnerOnly::new(true)?),
+            Make::Folder => Some(phonglab_core::files::private::OwnerOnly::folder_in(dir)?),
         };
         let (access, share, disposition, options, attributes) = match make {
             Make::File | Make::Private => (

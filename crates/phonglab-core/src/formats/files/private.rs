@@ -76,13 +76,13 @@ mod windows {
 
     use windows_sys::Win32::Foundation::{CloseHandle, HANDLE};
     use windows_sys::Win32::Security::{
-        ACCESS_ALLOWED_ACE, ACE_HEADER, ACL, ACL_REVISION, AddAccessAllowedAceEx, DACL_SECURITY_INFORMATION, EqualSid,
-        GetAce, GetKernelObjectSecurity, GetLengthSid, GetSecurityDescriptorDacl, GetSecurityDescriptorOwner,
-        GetTokenInformation, INHERIT_ONLY_ACE, InitializeAcl, InitializeSecurityDescriptor, IsWellKnownSid,
-        OWNER_SECURITY_INFORMATION, PROTECTED_DACL_SECURITY_INFORMATION, PSID, SE_DACL_PROTECTED, SECURITY_ATTRIBUTES,
-        SetFileSecurityW, SetSecurityDescriptorControl, SetSecurityDescriptorDacl, SetSecurityDescriptorOwner,
-        TOKEN_INFORMATION_CLASS, TOKEN_OWNER, TOKEN_QUERY, TOKEN_USER, TokenOwner, TokenUser,
-        WinBuiltinAdministratorsSid, WinLocalSystemSid,
+        ACCESS_ALLOWED_ACE, ACE_HEADER, ACL, ACL_REVISION_DS, AddAccessAllowedAceEx, AddAce, CONTAINER_INHERIT_ACE,
+        DACL_SECURITY_INFORMATION, EqualSid, GetAce, GetKernelObjectSecurity, GetLengthSid, GetSecurityDescriptorDacl,
+        GetSecurityDescriptorOwner, GetTokenInformation, INHERIT_ONLY_ACE, INHERITED_ACE, InitializeAcl,
+        InitializeSecurityDescriptor, IsWellKnownSid, OBJECT_INHERIT_ACE, OWNER_SECURITY_INFORMATION,
+        PROTECTED_DACL_SECURITY_INFORMATION, PSID, SE_DACL_PROTECTED, SECURITY_ATTRIBUTES, SetFileSecurityW,
+        SetSecurityDescriptorControl, SetSecurityDescriptorDacl, SetSecurityDescriptorOwner, TOKEN_INFORMATION_CLASS,
+        TOKEN_OWNER, TOKEN_QUERY, TOKEN_USER, TokenOwner, TokenUser, WinBuiltinAdministratorsSid, WinLocalSystemSid,
     };
     use windows_sys::Win32::Storage::FileSystem::{CreateDirectoryW, FILE_ALL_ACCESS, FILE_EXECUTE};
     use windows_sys::Win32::System::Threading::{GetCurrentProcess, OpenProcessToken};
@@ -267,6 +267,43 @@ mod windows {
         Ok(())
     }
 
+    /// The entries of the open folder `parent`'s DACL that what is made in it inherits
+    /// (object or container inherit), each made inherit-only and explicit, whole, one after
+    /// another; none where the DACL cannot be read.
+    fn inheritable_entries(parent: &File) -> Vec<u8> {
+        let mut out = Vec::new();
+        let Some(sd) = security_of(parent, DACL_SECURITY_INFORMATION) else { return out };
+        let (mut present, mut dacl, mut defaulted): (i32, *mut ACL, i32) = (0, std::ptr::null_mut(), 0);
+        // SAFETY: `sd` is the security descriptor just read; `dacl` points into it.
+        let read = unsafe {
+            GetSecurityDescriptorDacl(sd.as_ptr().cast_mut().cast(), &mut present, &mut dacl, &mut defaulted)
+        };
+        if read == 0 || present == 0 || dacl.is_null() {
+            return out;
+        }
+        // SAFETY: `dacl` points at the ACL inside `sd`, alive here.
+        let count = unsafe { (*dacl).AceCount };
+        for i in 0..u32::from(count) {
+            let mut ace: *mut core::ffi::c_void = std::ptr::null_mut();
+            // SAFETY: `i` is below the ACL's count; `ace` points into the ACL.
+            if unsafe { GetAce(dacl, i, &mut ace) } == 0 || ace.is_null() {
+                continue;
+            }
+            // SAFETY: every entry starts with its header, and is `AceSize` bytes long.
+            let header = unsafe { *ace.cast::<ACE_HEADER>() };
+            let flags = u32::from(header.AceFlags);
+            if flags & (OBJECT_INHERIT_ACE | CONTAINER_INHERIT_ACE) == 0 {
+                continue;
+            }
+            // SAFETY: as above: the whole entry is inside the ACL.
+            let bytes = unsafe { std::slice::from_raw_parts(ace.cast::<u8>(), usize::from(header.AceSize)) };
+            let at = out.len();
+            out.extend_from_slice(bytes);
+            out[at + 1] = ((flags | INHERIT_ONLY_ACE) & !INHERITED_ACE) as u8;
+        }
+        out
+    }
+
     /// An owner-only security descriptor, to make a file or folder with: owned by this
     /// user, with a protected DACL (nothing inherited from the folder it is made in) of one
     /// entry, this user's SID with full control, inherited by nothing made inside it (a set's
@@ -291,22 +328,51 @@ mod windows {
         /// file (every right but executing it: under Wine, no Unix execute bit).
         /// `Err` where the system cannot make one.
         pub fn new(folder: bool) -> io::Result<OwnerOnly> {
+            Self::with(if folder { FILE_ALL_ACCESS } else { FILE_ALL_ACCESS & !FILE_EXECUTE }, &[])
+        }
+
+        /// This user's owner-only descriptor for a working folder made in the open folder
+        /// `parent`: as [`Self::new`], and, for what is made inside it only (inherit-only,
+        /// so they give no one any right on the folder itself, and [`super::is_this_users_alone`]
+        /// passes over them), the entries `parent` gives what is made in it. A set's files,
+        /// staged in the working folder and then moved into `parent`, get what a file made
+        /// there gets, as before (on a Windows share, the students' right to read the
+        /// sheets), not the token's default (this user, SYSTEM and the Administrators
+        /// alone). Under Wine, which keeps no DACL but the Unix mode, nothing changes.
+        pub fn folder_in(parent: &File) -> io::Result<OwnerOnly> {
+            Self::with(FILE_ALL_ACCESS, &inheritable_entries(parent))
+        }
+
+        /// The descriptor: this user the owner; a protected DACL of this user's entry with
+        /// `rights`, then the entries `inherited` (whole entries, one after another).
+        fn with(rights: u32, inherited: &[u8]) -> io::Result<OwnerOnly> {
             let fail = || io::Error::last_os_error();
-            let rights = if folder { FILE_ALL_ACCESS } else { FILE_ALL_ACCESS & !FILE_EXECUTE };
             let token = Token::of_process().ok_or_else(fail)?;
             let user = token.user();
             // SAFETY: `user` is the token's SID, alive in `token`.
             let sid_len = unsafe { GetLengthSid(user) } as usize;
-            let acl_len = (size_of::<ACL>() + size_of::<ACCESS_ALLOWED_ACE>() + sid_len).next_multiple_of(8);
+            let acl_len =
+                (size_of::<ACL>() + size_of::<ACCESS_ALLOWED_ACE>() + sid_len + inherited.len()).next_multiple_of(8);
+            let acl_size = u32::try_from(acl_len).ok().filter(|n| *n <= 0xFFFC);
+            let Some(acl_size) = acl_size else { return Self::with(rights, &[]) };
             let mut acl = vec![0u64; acl_len / 8];
             let mut sd = Box::new([0u64; 8]);
             let acl_ptr = acl.as_mut_ptr().cast::<ACL>();
             let sd_ptr: *mut core::ffi::c_void = sd.as_mut_ptr().cast();
             // SAFETY: `acl` holds `acl_len` bytes, `sd` 64 (a descriptor needs 40); `user` is
-            // the token's SID; each call writes only into those buffers, which outlive it.
+            // the token's SID; `inherited` holds whole entries of its length; each call writes
+            // only into those buffers, which outlive it.
             let made = unsafe {
-                InitializeAcl(acl_ptr, acl_len as u32, ACL_REVISION) != 0
-                    && AddAccessAllowedAceEx(acl_ptr, ACL_REVISION, 0, rights, user) != 0
+                InitializeAcl(acl_ptr, acl_size, ACL_REVISION_DS) != 0
+                    && AddAccessAllowedAceEx(acl_ptr, ACL_REVISION_DS, 0, rights, user) != 0
+                    && (inherited.is_empty()
+                        || AddAce(
+                            acl_ptr,
+                            ACL_REVISION_DS,
+                            u32::MAX,
+                            inherited.as_ptr().cast(),
+                            inherited.len() as u32,
+                        ) != 0)
                     && InitializeSecurityDescriptor(sd_ptr, SD_REVISION) != 0
                     && SetSecurityDescriptorOwner(sd_ptr, user, 0) != 0
                     && SetSecurityDescriptorDacl(sd_ptr, 1, acl_ptr, 0) != 0
@@ -322,6 +388,57 @@ mod windows {
         /// as `self` is).
         pub fn descriptor(&self) -> *const core::ffi::c_void {
             self.sd.as_ptr().cast()
+        }
+    }
+
+    #[cfg(test)]
+    mod tests {
+        use super::*;
+
+        /// The (flags, is this user's SID) of each entry of `owner_only`'s DACL.
+        fn entries(owner_only: &OwnerOnly) -> Vec<(u8, bool)> {
+            let token = Token::of_process().unwrap();
+            let (mut present, mut dacl, mut defaulted): (i32, *mut ACL, i32) = (0, std::ptr::null_mut(), 0);
+            // SAFETY: the descriptor is alive in `owner_only`; `dacl` points into its ACL.
+            let read = unsafe {
+                GetSecurityDescriptorDacl(owner_only.descriptor().cast_mut(), &mut present, &mut dacl, &mut defaulted)
+            };
+            assert!(read != 0 && present != 0 && !dacl.is_null());
+            // SAFETY: as above.
+            (0..u32::from(unsafe { (*dacl).AceCount }))
+                .map(|i| {
+                    let mut ace: *mut core::ffi::c_void = std::ptr::null_mut();
+                    // SAFETY: `i` is below the count; the entry is an allowing one here.
+                    unsafe {
+                        assert!(GetAce(dacl, i, &mut ace) != 0);
+                        let allowed = ace.cast::<ACCESS_ALLOWED_ACE>();
+                        ((*allowed).Header.AceFlags, token.is_mine((&raw mut (*allowed).SidStart).cast()))
+                    }
+                })
+                .collect()
+        }
+
+        /// Issue 59, round 3: a working folder is this user's alone, yet what is staged in
+        /// it gets what its parent gives a new file (on a Windows share, the students'
+        /// right to read the sheets), as before: the parent's inheritable entries are kept,
+        /// inherit-only, after this user's own entry, which nothing inherits.
+        #[test]
+        fn a_working_folder_is_owner_only_and_passes_on_what_its_parent_gives() {
+            use std::os::windows::fs::OpenOptionsExt;
+            let plain = OwnerOnly::new(false).unwrap();
+            assert_eq!(entries(&plain), [(0, true)], "a record: one entry, this user's, inherited by nothing");
+            let dir = std::env::temp_dir().join(format!("phonglab-private {}", std::process::id()));
+            std::fs::create_dir_all(&dir).unwrap();
+            // FILE_FLAG_BACKUP_SEMANTICS: a folder.
+            let parent = File::options().read(true).custom_flags(0x0200_0000).open(&dir).unwrap();
+            let inheritable = inheritable_entries(&parent);
+            let folder = OwnerOnly::folder_in(&parent).unwrap();
+            let got = entries(&folder);
+            assert_eq!(got[0], (0, true), "this user's own entry first, inherited by nothing");
+            assert!(!inheritable.is_empty(), "a temporary folder gives what is made in it some entries");
+            assert!(got.len() > 1 && got[1..].iter().all(|(f, _)| u32::from(*f) & INHERIT_ONLY_ACE != 0), "{got:?}");
+            assert!(got[1..].iter().all(|(f, _)| u32::from(*f) & INHERITED_ACE == 0), "{got:?}");
+            std::fs::remove_dir_all(&dir).unwrap();
         }
     }
 }
