@@ -38,6 +38,37 @@ pub(crate) mod tests {
         v
     }
 
+    /// Windows: lets everyone write the file or folder at `path` (its DACL: Everyone, full
+    /// control), as Wine makes it from the Unix mode a teacher's umask 000 gives (0666, 0777).
+    #[cfg(windows)]
+    pub(crate) fn everyone_may_write(path: &Path) {
+        use std::os::windows::ffi::OsStrExt;
+        use windows_sys::Win32::Security::{
+            ACL, ACL_REVISION, AddAccessAllowedAceEx, CreateWellKnownSid, DACL_SECURITY_INFORMATION, InitializeAcl,
+            InitializeSecurityDescriptor, SetFileSecurityW, SetSecurityDescriptorDacl, WinWorldSid,
+        };
+        use windows_sys::Win32::Storage::FileSystem::FILE_ALL_ACCESS;
+        let (mut sid, mut acl, mut sd) = ([0u64; 16], [0u64; 32], [0u64; 8]);
+        let mut sid_len = 128u32;
+        let wide: Vec<u16> = path.as_os_str().encode_wide().chain([0]).collect();
+        // SAFETY: each buffer is as large as the call is told; the path is NUL-terminated.
+        let done = unsafe {
+            CreateWellKnownSid(WinWorldSid, std::ptr::null_mut(), sid.as_mut_ptr().cast(), &mut sid_len) != 0
+                && InitializeAcl(acl.as_mut_ptr().cast::<ACL>(), 256, ACL_REVISION) != 0
+                && AddAccessAllowedAceEx(
+                    acl.as_mut_ptr().cast(),
+                    ACL_REVISION,
+                    0,
+                    FILE_ALL_ACCESS,
+                    sid.as_mut_ptr().cast(),
+                ) != 0
+                && InitializeSecurityDescriptor(sd.as_mut_ptr().cast(), 1) != 0
+                && SetSecurityDescriptorDacl(sd.as_mut_ptr().cast(), 1, acl.as_ptr().cast(), 0) != 0
+                && SetFileSecurityW(wide.as_ptr(), DACL_SECURITY_INFORMATION, sd.as_mut_ptr().cast()) != 0
+        };
+        assert!(done, "everyone may write {}: {}", path.display(), std::io::Error::last_os_error());
+    }
+
     /// Makes a symbolic link at `link` to the file `to`, as another process would: `false`
     /// where none can be made (a Windows without the privilege). Windows: Windows' own
     /// (`symlink_file`); under Wine, whose `CreateSymbolicLinkW` makes nothing, a Unix link,

@@ -289,16 +289,24 @@ fn new_staging(dir: &HeldDir) -> Result<HeldDir, WriteError> {
         match dir.create_dir(name.as_os_str()) {
             Ok(staging) => return Ok(staging),
             Err(e) if e.kind() == io::ErrorKind::AlreadyExists && tries < 100 => tries += 1,
-            // Made, then renamed and replaced by a link before it was held (under Wine a
-            // Unix program can: "The filename cannot be resolved. (os error 1921)").
-            Err(e) if crate::platform::os::is_link_refused(&e) || e.kind() == io::ErrorKind::NotADirectory => {
-                let shown = phonglab_core::escape::terminal::text(&name.to_string_lossy());
-                let e = io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-staging-taken", name = shown));
-                return Err(WriteError::new(dir.path(), set_steps::CREATE_STAGING, e, UNTOUCHED));
-            }
-            Err(e) => return Err(WriteError::new(dir.path(), set_steps::CREATE_STAGING, e, UNTOUCHED)),
+            Err(e) => return Err(staging_error(dir, &name.to_string_lossy(), e)),
         }
     }
+}
+
+/// Why a working folder (`name`, a staging folder or its aside folder) could not be made
+/// in the folder held `dir`, in words: one made, then renamed and replaced by a link before
+/// it was held, or a link put where it was being made (under Wine a Unix program can: the
+/// system says only "The filename cannot be resolved. (os error 1921)"), is said as a link
+/// that changed while phonglab wrote.
+fn staging_error(dir: &HeldDir, name: &str, e: io::Error) -> WriteError {
+    let e = if crate::platform::os::is_link_refused(&e) || e.kind() == io::ErrorKind::NotADirectory {
+        let shown = phonglab_core::escape::terminal::text(name);
+        io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-staging-taken", name = shown))
+    } else {
+        e
+    };
+    WriteError::new(dir.path(), set_steps::CREATE_STAGING, e, UNTOUCHED)
 }
 
 /// Refuses a set with a name that is not a plain file name, or whose place in `dir` holds
@@ -489,9 +497,8 @@ fn old_set(dir: &HeldDir, new: &[Entry], belongs: &dyn Fn(&str) -> bool) -> Resu
 /// the file it named into the aside folder, which was then removed).
 fn swap(held: &HeldFolder, staging: &HeldDir, j: &Journal) -> Result<(), Stop> {
     let (dir, path) = (&held.held, held.dir());
-    let aside = staging
-        .create_dir(std::ffi::OsStr::new(ASIDE))
-        .map_err(|e| Stop::Failed(WriteError::new(path, set_steps::CREATE_STAGING, e, UNTOUCHED)))?;
+    let aside =
+        staging.create_dir(std::ffi::OsStr::new(ASIDE)).map_err(|e| Stop::Failed(staging_error(dir, ASIDE, e)))?;
     let mut moved_aside: Vec<&Entry> = Vec::new();
     let mut moved_in: Vec<&Entry> = Vec::new();
     // Every file moved back: `false` where one could not be (something put at its name).

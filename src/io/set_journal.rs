@@ -27,7 +27,8 @@
 //!   what was staged) and a staging folder are trusted only when they are this user's alone
 //!   (`platform::os::is_this_users_alone`, asked through the handle they are read by: on
 //!   Unix owned by this user and writable by no one else, which phonglab makes them, 0600
-//!   and 0700; on Windows owned by this user). A classmate's forged list or journal in a
+//!   and 0700; on Windows owned by this user, with a DACL that lets no one else write,
+//!   which phonglab makes them: an owner-only descriptor). A classmate's forged list or journal in a
 //!   shared folder (mode 1777, where they cannot delete the teacher's files themselves) is
 //!   left as it is, and said (issue 59, round 2);
 //! - recovery acts on a staging folder only when its journal is there, read without
@@ -266,6 +267,20 @@ fn is_entry_file(file: &std::fs::File, entry: &Entry) -> bool {
 /// open without sharing its deletion).
 pub fn move_entry(from: &HeldDir, to: &HeldDir, entry: &Entry) -> io::Result<Took> {
     match open_checked(from, &entry.name, |f| is_entry_file(f, entry))? {
+        Ok(opened) => Ok(if opened.rename_no_replace(to, OsStr::new(&entry.name))? { Took::Done } else { Took::Other }),
+        Err(took) => Ok(took),
+    }
+}
+
+/// [`move_entry`] of a new file the recovery puts in place from a staging folder: only where
+/// it is, through the handle that moves it, also owned by this user, so a file of anyone
+/// else's in a staging folder is never put among the teacher's files, whatever a journal
+/// says (issue 59, round 3, p32 D: the classmate's key replaced the teacher's). Owned, not
+/// "alone": a set's file is made as the system makes any file (under a umask 000, others
+/// may write it), shielded by its staging folder, which is this user's alone.
+fn move_own_entry(from: &HeldDir, to: &HeldDir, entry: &Entry) -> io::Result<Took> {
+    let own = |f: &std::fs::File| phonglab_core::files::private::is_owned_by_this_user(f) && is_entry_file(f, entry);
+    match open_checked(from, &entry.name, own)? {
         Ok(opened) => Ok(if opened.rename_no_replace(to, OsStr::new(&entry.name))? { Took::Done } else { Took::Other }),
         Err(took) => Ok(took),
     }
@@ -663,7 +678,7 @@ fn finish(dir: &HeldDir, staging: HeldDir, j: &Journal) -> Result<(), String> {
         if is_entry_in(dir, new) {
             continue;
         }
-        if !matches!(move_entry(&staging, dir, new), Ok(Took::Done)) {
+        if !matches!(move_own_entry(&staging, dir, new), Ok(Took::Done)) {
             stuck.push(new.name.clone());
         }
     }

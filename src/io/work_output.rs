@@ -323,7 +323,7 @@ fn record_of(path: &Path) -> Option<(std::path::PathBuf, String)> {
 }
 
 /// Keeps the record of the output just written at `path`, written whole, in a records
-/// folder made this user's alone (Unix: 0700, the record 0600). Where it cannot be kept,
+/// folder made this user's alone (Unix: 0700, the record 0600; Windows: owner-only). Where it cannot be kept,
 /// or the folder is not this user's alone (a 777 folder, another user's), none is kept:
 /// the next run finds no record it trusts and refuses to replace the output, the safe side.
 fn remember(path: &Path) {
@@ -344,9 +344,10 @@ fn remember(path: &Path) {
 }
 
 /// Makes the records folder `dir` (its parents as the system makes them), this user's
-/// alone on Unix (0700); one already there is left as it is (and trusted only if it is
-/// this user's alone), but for one of this user's that others can only read (0755, made
-/// by an older phonglab): that one is made 0700 ([`tighten_records_folder`]).
+/// alone (Unix: 0700; Windows: an owner-only descriptor, `files::private`); one already
+/// there is left as it is (and trusted only if it is this user's alone), but for one of
+/// this user's that others can only read (0755, made by an older phonglab): that one is
+/// made 0700 ([`tighten_records_folder`]).
 fn make_records_folder(dir: &Path) -> std::io::Result<()> {
     if let Some(parent) = dir.parent() {
         std::fs::create_dir_all(parent)?;
@@ -357,9 +358,13 @@ fn make_records_folder(dir: &Path) -> std::io::Result<()> {
         std::os::unix::fs::DirBuilderExt::mode(&mut b, 0o700);
         b
     };
-    #[cfg(not(unix))]
+    #[cfg(not(any(unix, windows)))]
     let builder = std::fs::DirBuilder::new();
-    match builder.create(dir) {
+    #[cfg(windows)]
+    let made = phonglab_core::files::private::create_dir(dir);
+    #[cfg(not(windows))]
+    let made = builder.create(dir);
+    match made {
         Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
             tighten_records_folder(dir);
             Ok(())
@@ -387,14 +392,16 @@ fn tighten_records_folder(dir: &Path) {
 }
 
 /// Makes the record just written readable and writable by this user alone (Unix: 0600,
-/// whatever the umask).
+/// whatever the umask; Windows: the owner-only descriptor, which under Wine makes it 0660).
 fn make_private(record: &Path) {
     #[cfg(unix)]
     {
         use std::os::unix::fs::PermissionsExt;
         let _ = std::fs::set_permissions(record, std::fs::Permissions::from_mode(0o600));
     }
-    #[cfg(not(unix))]
+    #[cfg(windows)]
+    let _ = phonglab_core::files::private::make_owner_only(record, false);
+    #[cfg(not(any(unix, windows)))]
     let _ = record;
 }
 
@@ -485,6 +492,29 @@ mod tests {
         assert!(write(&link, Kind::Marks, None, b"new").is_err());
         assert_eq!(std::fs::read(&real).unwrap(), format!("{}\na,right,,,\n", marks_header(',')).as_bytes());
         assert!(crate::platform::links::reached_through_link(&link), "the link is left");
+    }
+
+    /// Issue 59, round 3: under Wine a teacher's umask 000 makes a new folder 0777 and a
+    /// new file 0666, which Wine shows as a DACL letting everyone write, and Windows asked
+    /// only the owner, so a classmate could rewrite a record of the teacher's. The records
+    /// folder and each record are made this user's alone (an owner-only descriptor), and
+    /// one that everyone may write is not trusted.
+    #[test]
+    #[cfg(windows)]
+    fn the_records_folder_and_a_record_are_made_this_users_alone() {
+        let dir = crate::io::atomic_write::tests::temp_dir("records-alone").join(RECORDS);
+        make_records_folder(&dir).unwrap();
+        assert!(folder_is_this_users_alone(&dir), "the records folder phonglab makes");
+        let record = dir.join("r.json");
+        std::fs::write(&record, b"{}").unwrap();
+        crate::io::atomic_write::tests::everyone_may_write(&record);
+        let alone =
+            || crate::platform::os::open_no_follow(&record).is_ok_and(|f| crate::platform::os::is_this_users_alone(&f));
+        assert!(!alone(), "a record everyone may write");
+        make_private(&record);
+        assert!(alone(), "a record made private");
+        crate::io::atomic_write::tests::everyone_may_write(&dir);
+        assert!(!folder_is_this_users_alone(&dir), "a records folder everyone may write");
     }
 
     #[test]

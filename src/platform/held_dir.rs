@@ -16,7 +16,11 @@
 //!   WITHOUT `FILE_SHARE_DELETE`: while it is held no one can rename or remove it (opening
 //!   it with `DELETE`, which both need, is a sharing violation), nor rename a folder above
 //!   it (NTFS refuses to rename a folder with an open handle beneath it), so its path goes
-//!   on naming the folder held, and the steps go by that path. (The handle asks for no
+//!   on naming the folder held, and the steps go by that path, but for what is made in it:
+//!   a file or folder is made through the folder's handle (`NtCreateFile` with
+//!   `RootDirectory`; Wine opens it relative to the folder's own descriptor), so a folder a
+//!   Unix program renamed under Wine and replaced by a link between phonglab's look and its
+//!   step still gets it, never the folder the link leads to. (The handle asks for no
 //!   `DELETE` itself: a rename into the folder opens it for `FILE_ADD_FILE` sharing reading
 //!   and writing only, which a held `DELETE` would refuse.) Its removal lets go of it, then
 //!   opens it again with `DELETE`, checks it is the very folder held (its identity), and
@@ -76,75 +80,94 @@ impl HeldDir {
     }
 
     /// Makes the folder `name` in this one, where nothing is (`AlreadyExists` otherwise, a
-    /// link included), for this user alone (Unix: mode 0700: a staging or aside folder,
-    /// trusted later only when no one else can have put anything in it), and holds it.
+    /// link included), for this user alone (Unix: mode 0700; Windows: an owner-only
+    /// descriptor, [`phonglab_core::files::private::OwnerOnly`]: a staging or aside folder,
+    /// trusted later only when no one else can have put anything in it), and holds it
+    /// (Windows: by the handle that made it, through the handle of this one).
     pub fn create_dir(&self, name: &OsStr) -> io::Result<HeldDir> {
         #[cfg(unix)]
-        unix::mkdir(&self.dir, plain(name)?)?;
-        #[cfg(not(unix))]
+        {
+            unix::mkdir(&self.dir, plain(name)?)?;
+            self.open_dir(name)
+        }
+        #[cfg(windows)]
         {
             self.unmoved()?;
-            std::fs::create_dir(self.path.join(plain(name)?))?;
+            let dir = self.said_moved(|| windows::create_in(&self.dir, plain(name)?, windows::Make::Folder))?;
+            let id = crate::platform::os::file_identity(&dir).ok().map(|(_, id)| id);
+            Ok(HeldDir { dir, path: self.path.join(name), id })
         }
-        self.open_dir(name)
+        #[cfg(not(any(unix, windows)))]
+        {
+            std::fs::create_dir(self.path.join(plain(name)?))?;
+            self.open_dir(name)
+        }
     }
 
     /// Creates the new file `name` in this folder, to write (never through a link:
-    /// `AlreadyExists` where anything is there).
+    /// `AlreadyExists` where anything is there; Windows: made through this folder's handle,
+    /// so a link put at the folder's name meanwhile never leads it elsewhere).
     pub fn create_new(&self, name: &OsStr) -> io::Result<File> {
         #[cfg(unix)]
         {
             unix::create_new(&self.dir, plain(name)?)
         }
-        #[cfg(not(unix))]
+        #[cfg(windows)]
         {
             self.unmoved()?;
+            self.said_moved(|| windows::create_in(&self.dir, plain(name)?, windows::Make::File))
+        }
+        #[cfg(not(any(unix, windows)))]
+        {
             File::options().write(true).create_new(true).open(self.path.join(plain(name)?))
         }
     }
 
     /// Creates the new file `name` in this folder, to write, for this user alone (Unix:
-    /// mode 0600, whatever the umask): one of phonglab's records, which it trusts later only
+    /// mode 0600, whatever the umask; Windows: an owner-only descriptor): one of phonglab's records, which it trusts later only
     /// when no one else can have written it ([`crate::platform::os::is_this_users_alone`]).
     pub fn create_private(&self, name: &OsStr) -> io::Result<File> {
         #[cfg(unix)]
         {
             unix::create_private(&self.dir, plain(name)?)
         }
-        #[cfg(not(unix))]
+        #[cfg(windows)]
+        {
+            self.unmoved()?;
+            self.said_moved(|| windows::create_in(&self.dir, plain(name)?, windows::Make::Private))
+        }
+        #[cfg(not(any(unix, windows)))]
         {
             self.create_new(name)
         }
     }
 
     /// Opens the file `name` in this folder to append to, made if missing (never through a
-    /// link) for this user alone (Unix: mode 0600): a record of phonglab's.
+    /// link) for this user alone (Unix: mode 0600; Windows: an owner-only descriptor): a
+    /// record of phonglab's.
     pub fn append(&self, name: &OsStr) -> io::Result<File> {
         #[cfg(unix)]
         {
             unix::append(&self.dir, plain(name)?)
         }
-        #[cfg(not(unix))]
+        #[cfg(windows)]
         {
-            #[cfg(windows)]
-            use std::os::windows::fs::OpenOptionsExt;
             self.unmoved()?;
             let path = self.path.join(plain(name)?);
-            let mut options = File::options();
-            options.append(true).create(true);
-            // `FILE_FLAG_OPEN_REPARSE_POINT`: a link is opened itself, and refused below.
-            #[cfg(windows)]
-            options.custom_flags(0x0020_0000);
-            let file = options.open(&path)?;
-            #[cfg(windows)]
+            // Opened itself (`FILE_OPEN_REPARSE_POINT`), through this folder's handle; a
+            // link (Wine: a Unix one, which opens as the file it names) is refused here.
+            let file = self.said_moved(|| windows::create_in(&self.dir, plain(name)?, windows::Make::Append))?;
             let link = !crate::platform::links::opened_under_its_own_name(&file, &path)
                 || std::os::windows::fs::MetadataExt::file_attributes(&file.metadata()?) & 0x400 != 0;
-            #[cfg(not(windows))]
-            let link = false;
             if link || crate::platform::os::regular_file_metadata(&file)?.is_none() {
                 return Err(io::Error::new(io::ErrorKind::InvalidInput, "not a regular file"));
             }
             Ok(file)
+        }
+        #[cfg(not(any(unix, windows)))]
+        {
+            let _ = name;
+            Err(io::Error::new(io::ErrorKind::Unsupported, "no files on this platform"))
         }
     }
 
@@ -288,9 +311,38 @@ impl HeldDir {
         if self.still_at_its_path() {
             return Ok(());
         }
+        Err(self.moved_error())
+    }
+
+    /// The error that says, in the user's words, that this folder was moved or replaced
+    /// while phonglab worked in it, and this step was not made.
+    fn moved_error(&self) -> io::Error {
         let name = self.path.file_name().unwrap_or_default().to_string_lossy().into_owned();
         let name = phonglab_core::escape::terminal::text(&name);
-        Err(io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-held-folder-moved", name = name)))
+        io::Error::new(io::ErrorKind::InvalidInput, crate::t!("set-held-folder-moved", name = name))
+    }
+
+    /// Windows: what `make` makes in this folder through its handle; where it fails and this
+    /// folder is found moved or replaced meanwhile, the error that says so in words
+    /// ([`Self::unmoved`]). Under Wine a Unix program that renames the folder held (and puts
+    /// it back) makes the system answer "Invalid handle. (os error 6)" for the handle phonglab
+    /// holds open, which nothing else does: `make` is asked again up to 3 times, 10 ms
+    /// apart, and then said as the folder moved ("did not take this step": nothing was made).
+    #[cfg(windows)]
+    fn said_moved<T>(&self, make: impl Fn() -> io::Result<T>) -> io::Result<T> {
+        /// `ERROR_INVALID_HANDLE`.
+        const LOST: i32 = 6;
+        let mut tries = 0;
+        loop {
+            match make() {
+                Err(e) if e.raw_os_error() == Some(LOST) && tries < 3 => {
+                    tries += 1;
+                    std::thread::sleep(std::time::Duration::from_millis(10));
+                }
+                Err(e) if e.raw_os_error() == Some(LOST) => return Err(self.moved_error()),
+                made => return made.map_err(|e| self.unmoved().err().unwrap_or(e)),
+            }
+        }
     }
 
     /// Where the folder `sub`, held, is now in this folder: at its own name, or at the
@@ -554,6 +606,105 @@ mod windows {
         open_itself(path, GENERIC_READ, SHARE_NO_DELETE)
     }
 
+    /// What [`create_in`] makes.
+    pub enum Make {
+        /// A new file, to write.
+        File,
+        /// A new file, to write, for this user alone (one of phonglab's records).
+        Private,
+        /// A file for this user alone, to append to, made if missing.
+        Append,
+        /// A new folder for this user alone, held as [`open_dir`] holds one.
+        Folder,
+    }
+
+    /// Makes `name` in the folder held `dir` through its handle: `NtCreateFile` with
+    /// `RootDirectory` = that handle (Wine: `openat`-like, relative to the folder's own
+    /// descriptor), never by the folder's path, so a folder renamed and replaced by a link
+    /// between the look ([`super::HeldDir::unmoved`]) and this step still gets it, and
+    /// nothing is made in the folder the link leads to (issue 59, round 3: `.staged`, the
+    /// journal's temporary file and an empty set file were made there). A link at `name`
+    /// is never followed to make a file (`FILE_OPEN_REPARSE_POINT`; a new one fails on
+    /// anything there, `AlreadyExists`). What is this user's alone is made with the
+    /// owner-only descriptor ([`phonglab_core::files::private::OwnerOnly`]).
+    pub fn create_in(dir: &File, name: &std::ffi::OsStr, make: Make) -> io::Result<File> {
+        use std::os::windows::ffi::OsStrExt;
+        use std::os::windows::io::FromRawHandle;
+        use windows_sys::Wdk::Foundation::OBJECT_ATTRIBUTES;
+        use windows_sys::Wdk::Storage::FileSystem::{
+            FILE_CREATE, FILE_DIRECTORY_FILE, FILE_NON_DIRECTORY_FILE, FILE_OPEN_IF, FILE_OPEN_REPARSE_POINT,
+            FILE_SYNCHRONOUS_IO_NONALERT, NtCreateFile,
+        };
+        use windows_sys::Win32::Foundation::{
+            GENERIC_WRITE, OBJ_CASE_INSENSITIVE, RtlNtStatusToDosError, UNICODE_STRING,
+        };
+        use windows_sys::Win32::Storage::FileSystem::{
+            FILE_ATTRIBUTE_NORMAL, FILE_GENERIC_READ, FILE_GENERIC_WRITE, FILE_WRITE_DATA, SYNCHRONIZE,
+        };
+        let private = match make {
+            Make::File => None,
+            Make::Private | Make::Append => Some(phonglab_core::files::private::OwnerOnly::new(false)?),
+            Make::Folder => Some(phonglab_core::files::private::OwnerOnly::folder_in(dir)?),
+        };
+        let (access, share, disposition, options, attributes) = match make {
+            Make::File | Make::Private => (
+                GENERIC_READ | GENERIC_WRITE | DELETE | SYNCHRONIZE,
+                SHARE_ALL,
+                FILE_CREATE,
+                FILE_NON_DIRECTORY_FILE,
+                FILE_ATTRIBUTE_NORMAL,
+            ),
+            // As std opens to append: every right to write but writing at a position.
+            Make::Append => (
+                (FILE_GENERIC_WRITE & !FILE_WRITE_DATA) | FILE_GENERIC_READ | DELETE,
+                SHARE_ALL,
+                FILE_OPEN_IF,
+                FILE_NON_DIRECTORY_FILE,
+                FILE_ATTRIBUTE_NORMAL,
+            ),
+            Make::Folder => (GENERIC_READ | SYNCHRONIZE, SHARE_NO_DELETE, FILE_CREATE, FILE_DIRECTORY_FILE, 0),
+        };
+        let mut wide: Vec<u16> = name.encode_wide().collect();
+        let bytes = u16::try_from(wide.len() * 2)
+            .map_err(|_| io::Error::new(io::ErrorKind::InvalidFilename, "a name past 32767 characters"))?;
+        let object_name = UNICODE_STRING { Length: bytes, MaximumLength: bytes, Buffer: wide.as_mut_ptr() };
+        let attrs = OBJECT_ATTRIBUTES {
+            Length: size_of::<OBJECT_ATTRIBUTES>() as u32,
+            RootDirectory: dir.as_raw_handle(),
+            ObjectName: &raw const object_name,
+            Attributes: OBJ_CASE_INSENSITIVE,
+            SecurityDescriptor: private.as_ref().map_or(std::ptr::null(), |p| p.descriptor().cast()),
+            SecurityQualityOfService: std::ptr::null(),
+        };
+        let mut handle = std::ptr::null_mut();
+        let mut status_block = Default::default();
+        // SAFETY: `attrs` points at `object_name` (whose buffer, `wide`, holds `bytes`
+        // bytes), at the open folder's handle and at the descriptor in `private`, all alive
+        // through the call; `handle` and `status_block` are written by it.
+        let status = unsafe {
+            NtCreateFile(
+                &mut handle,
+                access,
+                &raw const attrs,
+                &mut status_block,
+                std::ptr::null(),
+                attributes,
+                share,
+                disposition,
+                options | FILE_SYNCHRONOUS_IO_NONALERT | FILE_OPEN_REPARSE_POINT,
+                std::ptr::null(),
+                0,
+            )
+        };
+        if status < 0 {
+            // SAFETY: no pointers.
+            let code = unsafe { RtlNtStatusToDosError(status) };
+            return Err(io::Error::from_raw_os_error(code as i32));
+        }
+        // SAFETY: `handle` was just opened by the call, and is owned here alone.
+        Ok(unsafe { File::from_raw_handle(handle) })
+    }
+
     pub fn remove_dir(held: File, id: Option<(u64, u64)>, path: &Path) -> io::Result<()> {
         let id = id.ok_or_else(|| io::Error::new(io::ErrorKind::NotFound, "its identity was not read"))?;
         drop(held);
@@ -703,6 +854,68 @@ mod tests {
         assert_eq!(again.path(), away);
         again.create_new(OsStr::new("new.md")).unwrap().write_all(b"made where it went").unwrap();
         assert_eq!(std::fs::read(away.join("new.md")).unwrap(), b"made where it went");
+    }
+
+    /// Windows under Wine (issue 59, round 3, p30 flip-staging): a Unix program renames a
+    /// held folder away and puts a link to another folder at its name, between phonglab's
+    /// look and its step. What is made in the folder is made through its handle
+    /// (`NtCreateFile`, `RootDirectory`), so it lands in the folder held, wherever it went,
+    /// and nothing is made in the folder the link leads to (before, by path: a `.staged`
+    /// list, a journal's temporary file and an empty set file were made there); the records
+    /// and folders phonglab makes are this user's alone.
+    #[test]
+    #[cfg(windows)]
+    fn what_is_made_in_a_held_folder_swapped_for_a_link_is_made_in_the_folder_held() {
+        use super::windows::{Make, create_in};
+        use std::io::Write;
+        let root = fresh("unix-swapped-make");
+        let (dir, away, outside) = (root.join("staging"), root.join("away"), root.join("outside"));
+        for d in [&dir, &outside] {
+            std::fs::create_dir_all(d).unwrap();
+        }
+        std::fs::write(outside.join("a.md"), "the teacher's").unwrap();
+        let held = HeldDir::open(&root).unwrap().open_dir(OsStr::new("staging")).unwrap();
+        let unix = |p: &std::path::Path| {
+            let out = std::process::Command::new("winepath").arg("-u").arg(p).output().ok()?;
+            out.status.success().then(|| String::from_utf8_lossy(&out.stdout).trim_end().to_string())
+        };
+        let (Some(dir_u), Some(away_u), Some(outside_u)) = (unix(&dir), unix(&away), unix(&outside)) else {
+            eprintln!("not under Wine: no Unix program can rename a folder held here: nothing to test");
+            return;
+        };
+        let _ = std::process::Command::new(r"Z:\bin\mv").args([&dir_u, &away_u]).status();
+        // A Unix program's work is waited for (Wine does not give its exit status), up to 10 s.
+        let _ = (0..500).any(|_| away.is_dir() || (std::thread::sleep(std::time::Duration::from_millis(20)), false).1);
+        let _ = std::process::Command::new(r"Z:\bin\ln").args(["-s", &outside_u, &dir_u]).status();
+        let swapped = (0..500).any(|_| {
+            crate::platform::links::reached_through_link(&dir)
+                || (std::thread::sleep(std::time::Duration::from_millis(20)), false).1
+        });
+        if !swapped || !away.is_dir() {
+            eprintln!("the Unix side could not rename the folder or plant a link: nothing to test");
+            return;
+        }
+        create_in(held.handle(), OsStr::new("new.md"), Make::File).unwrap().write_all(b"new").unwrap();
+        let record = create_in(held.handle(), OsStr::new("record"), Make::Private).unwrap();
+        assert!(crate::platform::os::is_this_users_alone(&record), "a record is this user's alone");
+        drop(record);
+        create_in(held.handle(), OsStr::new("list"), Make::Append).unwrap().write_all(b"line\n").unwrap();
+        create_in(held.handle(), OsStr::new("list"), Make::Append).unwrap().write_all(b"more\n").unwrap();
+        let sub = create_in(held.handle(), OsStr::new("sub"), Make::Folder).unwrap();
+        assert!(crate::platform::os::is_this_users_alone(&sub), "a working folder is this user's alone");
+        drop(sub);
+        let names = |d: &std::path::Path| {
+            let mut v: Vec<String> =
+                std::fs::read_dir(d).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+            v.sort();
+            v
+        };
+        assert_eq!(names(&outside), ["a.md"], "nothing made through the link");
+        assert_eq!(names(&away), ["list", "new.md", "record", "sub"], "made in the folder held");
+        assert_eq!(std::fs::read(away.join("new.md")).unwrap(), b"new");
+        assert_eq!(std::fs::read(away.join("list")).unwrap(), b"line\nmore\n", "appended to");
+        let e = held.create_new(OsStr::new("other.md")).unwrap_err().to_string();
+        assert!(e.contains("staging") && e.contains("moved or replaced"), "said in words: {e}");
     }
 
     /// Windows: a folder held cannot be renamed or removed by anyone (held without

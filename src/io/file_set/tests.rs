@@ -797,3 +797,22 @@ fn a_staging_folder_a_unix_program_swaps_for_a_link_touches_nothing_outside_and_
         );
     }
 }
+
+/// Issue 59, round 3 (`HOLD=0.002 p30_wine_flips.sh flip-old`, Wine): a working folder
+/// (the aside folder) replaced by a link as it was made was said in the system's raw words,
+/// "create a staging folder in: The filename cannot be resolved. (os error 1921)". It is
+/// said as a link that changed while phonglab wrote, naming the folder.
+#[test]
+#[cfg(any(unix, windows))]
+fn a_working_folder_taken_by_a_link_as_it_is_made_is_said_in_words() {
+    let dir = fresh_dir("staging-taken-words");
+    let held = HeldDir::open(&dir).unwrap();
+    #[cfg(unix)]
+    let refused = io::Error::from_raw_os_error(libc::ELOOP);
+    #[cfg(windows)]
+    let refused = io::Error::from_raw_os_error(1921);
+    assert!(crate::platform::os::is_link_refused(&refused));
+    let e = super::staging_error(&held, ".phonglab-set.old", refused).to_string();
+    assert!(e.contains(".phonglab-set.old") && e.contains("moved or replaced (by a link"), "{e}");
+    assert!(!e.contains("1921") && !e.contains("cannot be resolved") && !e.contains("os error"), "{e}");
+}

@@ -492,3 +492,103 @@ fn a_forged_journal_or_staging_folder_not_this_users_alone_is_left() {
         );
     }
 }
+
+/// Is the file or folder at `path` this user's alone ([`crate::platform::os::is_this_users_alone`])?
+#[cfg(windows)]
+fn alone(path: &Path) -> bool {
+    use std::os::windows::fs::OpenOptionsExt;
+    let f = std::fs::File::options().read(true).custom_flags(0x0200_0000).open(path).unwrap();
+    crate::platform::os::is_this_users_alone(&f)
+}
+
+/// Issue 59, round 3 (p31, Wine 8): a teacher's umask 000 on a lab share made her own list
+/// of what phonglab wrote writable by everyone (Wine maps the Unix mode to the DACL); a
+/// classmate rewrote it in place in phonglab's exact form, naming her own `exercise-07.md`,
+/// and the next set deleted it (Windows asked only the owner). The list phonglab writes is
+/// now this user's alone (an owner-only descriptor) and trusted; one others may write is
+/// not: the set is refused in words, and every file is left as it is.
+#[test]
+#[cfg(windows)]
+fn a_list_of_what_phonglab_wrote_that_others_may_write_is_not_trusted_and_its_own_is() {
+    let dir = temp_dir("written-others-may-write");
+    let mut set = FileSet::default();
+    set.add("exercise-01.md", "# Exercise 1");
+    set.add("exercise-02.md", "# Exercise 2");
+    write_set(&dir, &set, |n| n.starts_with("exercise-")).unwrap();
+    assert!(alone(&dir.join(WRITTEN)), "the list phonglab writes is this user's alone");
+    assert!(staging_made_alone(&dir), "a working folder phonglab makes is this user's alone");
+    check_records(&dir).unwrap();
+    std::fs::write(dir.join("exercise-07.md"), "# Exercise 7 (mine)").unwrap();
+    let forged: Vec<Entry> =
+        ["exercise-01.md", "exercise-02.md", "exercise-07.md"].iter().map(|n| entry_of(&dir, n).unwrap()).collect();
+    // Rewritten in place: the owner stays this user; then everyone may write it.
+    std::fs::write(dir.join(WRITTEN), serde_json::to_vec(&forged).unwrap()).unwrap();
+    crate::io::atomic_write::tests::everyone_may_write(&dir.join(WRITTEN));
+    assert!(!alone(&dir.join(WRITTEN)), "a list everyone may write is not this user's alone");
+    let before = everything(&dir);
+    let mut next = FileSet::default();
+    next.add("exercise-01.md", "# Exercise 1, again");
+    let e = write_set(&dir, &next, |n| n.starts_with("exercise-")).unwrap_err().to_string();
+    untouched(&before, &dir, "a list others may write");
+    assert!(e.contains(WRITTEN) && e.contains("others may write it"), "{e}");
+    // The same list as phonglab writes it (this user's alone) is trusted: the next set
+    // replaces the one the list names, and leaves the teacher's file.
+    std::fs::remove_file(dir.join(WRITTEN)).unwrap();
+    write_set(&dir, &set, |n| n.starts_with("exercise-")).unwrap();
+    write_set(&dir, &next, |n| n.starts_with("exercise-")).unwrap();
+    assert!(!dir.join("exercise-02.md").exists(), "the file phonglab's own list names is replaced");
+    assert_eq!(std::fs::read(dir.join("exercise-07.md")).unwrap(), b"# Exercise 7 (mine)");
+}
+
+/// Is a working folder phonglab makes in `dir` this user's alone? (Made, asked, removed.)
+#[cfg(windows)]
+fn staging_made_alone(dir: &Path) -> bool {
+    let parent = HeldDir::open(dir).unwrap();
+    let made = parent.create_dir(std::ffi::OsStr::new(".phonglab-set.probe.tmp")).unwrap();
+    let is = alone(made.path());
+    parent.remove_dir(made).unwrap();
+    is
+}
+
+/// Issue 59, round 3 (p32, p35, Wine 8): a stopped writer's staging folder and journal,
+/// the teacher's own, that everyone may write (umask 000 before phonglab made them its
+/// own): a classmate rewrote the journal in place as a decided one, and the recovery
+/// deleted or replaced the teacher's files. Either one that others may write is left by
+/// the recovery, with every file, and said; the same ones as phonglab makes them (this
+/// user's alone) are finished.
+#[test]
+#[cfg(windows)]
+fn a_journal_or_staging_folder_others_may_write_is_left_and_its_own_is_finished() {
+    for what in ["journal", "folder", "neither"] {
+        let dir = temp_dir(&format!("journal-others-may-write-{what}"));
+        std::fs::write(dir.join("key.md"), "the teacher's key").unwrap();
+        let parent = HeldDir::open(&dir).unwrap();
+        let held = parent.create_dir(std::ffi::OsStr::new(".phonglab-set.99999.1.tmp")).unwrap();
+        let staging = held.path().to_path_buf();
+        let (_, here) = Identity::of_file(held.handle()).unwrap();
+        let new = stage(&held, "key.md", b"the classmate's key").unwrap();
+        let old = entry_of(&dir, "key.md").unwrap();
+        let j = Journal { staging: here, decided: true, new: vec![new], old: vec![old] };
+        write_journal(&held, &j, false).unwrap();
+        assert!(alone(&staging.join(JOURNAL)) && alone(&staging), "phonglab's own are this user's alone");
+        drop((held, parent));
+        match what {
+            "journal" => crate::io::atomic_write::tests::everyone_may_write(&staging.join(JOURNAL)),
+            "folder" => crate::io::atomic_write::tests::everyone_may_write(&staging),
+            _ => {}
+        }
+        let before = everything(&dir);
+        let notices = recover(&dir).unwrap();
+        if what == "neither" {
+            assert!(notices.is_empty(), "{notices:?}");
+            assert_eq!(std::fs::read(dir.join("key.md")).unwrap(), b"the classmate's key", "its own is finished");
+            continue;
+        }
+        untouched(&before, &dir, "a journal others may write");
+        assert_eq!(std::fs::read(dir.join("key.md")).unwrap(), b"the teacher's key");
+        assert!(
+            notices.len() == 1 && notices[0].contains(".phonglab-set.99999.1.tmp") && notices[0].contains("alone"),
+            "{what}: {notices:?}"
+        );
+    }
+}

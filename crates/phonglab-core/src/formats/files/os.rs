@@ -252,30 +252,9 @@ pub fn remove_own_file(dir: &Path, name: &std::ffi::OsStr) -> bool {
     }
 }
 
-/// Is the open `file` this user's alone, so that phonglab may trust what it says it wrote
-/// there (a set's records: its list of what it wrote, a journal, a staging folder)? Unix:
-/// owned by the process's effective user and writable by no group or other user (a
-/// classmate can write a record in phonglab's exact form, but not as the teacher: issue 59,
-/// round 2). Windows: its owner, through the handle, is the token's user or default owner
-/// (under Wine, a Unix file of another user's is owned by "ANONYMOUS LOGON"). `false`
-/// where the system cannot say.
-pub fn is_this_users_alone(file: &File) -> bool {
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::MetadataExt;
-        // SAFETY: geteuid only reads the process's user.
-        file.metadata().is_ok_and(|m| m.uid() == unsafe { libc::geteuid() } && m.mode() & 0o022 == 0)
-    }
-    #[cfg(windows)]
-    {
-        owned_by_this_user(file)
-    }
-    #[cfg(not(any(unix, windows)))]
-    {
-        let _ = file;
-        false
-    }
-}
+// Whether a record is this user's alone: `private`'s (Unix: mode and owner; Windows: owner
+// and DACL), asked where the records are read.
+pub use super::private::is_this_users_alone;
 
 /// [`remove_own_file`] on Windows; `Err` or `Ok(false)`: not removed.
 #[cfg(windows)]
@@ -309,7 +288,7 @@ fn windows_remove_own_file(dir: &Path, name: &std::ffi::OsStr, path: &Path) -> i
     }
     // A file of another user's (a classmate's, planted with phonglab's naming) is not
     // this user's temporary, as on Unix (issue 59, fix59x: Windows did not ask).
-    if !owned_by_this_user(&file) {
+    if !super::private::is_owned_by_this_user(&file) {
         return Ok(false);
     }
     let info = FILE_DISPOSITION_INFO { DeleteFile: true };
@@ -323,66 +302,6 @@ fn windows_remove_own_file(dir: &Path, name: &std::ffi::OsStr, path: &Path) -> i
         )
     };
     Ok(ok != 0)
-}
-
-/// Is the open `file` owned by this process's user (its owner, `GetKernelObjectSecurity`,
-/// is the token's user or the token's default owner for the files it makes: an elevated
-/// administrator's files are owned by the Administrators group)? `false` where the system
-/// cannot say: the file is then left.
-#[cfg(windows)]
-fn owned_by_this_user(file: &File) -> bool {
-    use std::os::windows::io::AsRawHandle;
-    use windows_sys::Win32::Foundation::{CloseHandle, HANDLE};
-    use windows_sys::Win32::Security::{
-        EqualSid, GetKernelObjectSecurity, GetSecurityDescriptorOwner, GetTokenInformation, OWNER_SECURITY_INFORMATION,
-        PSID, TOKEN_INFORMATION_CLASS, TOKEN_OWNER, TOKEN_QUERY, TOKEN_USER, TokenOwner, TokenUser,
-    };
-    use windows_sys::Win32::System::Threading::{GetCurrentProcess, OpenProcessToken};
-    // A buffer of u64s (aligned for what the call writes) that `call(buf, len, &mut need)`
-    // fills, asked once for its size.
-    let filled = |call: &dyn Fn(*mut core::ffi::c_void, u32, &mut u32) -> i32| -> Option<Vec<u64>> {
-        let mut need = 0u32;
-        call(std::ptr::null_mut(), 0, &mut need);
-        if need == 0 {
-            return None;
-        }
-        let mut buf = vec![0u64; (need as usize).div_ceil(8)];
-        (call(buf.as_mut_ptr().cast(), need, &mut need) != 0).then_some(buf)
-    };
-    let handle = file.as_raw_handle();
-    // SAFETY: the handle is open (with READ_CONTROL, in GENERIC_READ) through the call;
-    // the buffer holds `len` bytes.
-    let Some(sd) = filled(&|buf, len, need| unsafe {
-        GetKernelObjectSecurity(handle, OWNER_SECURITY_INFORMATION, buf, len, need)
-    }) else {
-        return false;
-    };
-    let (mut owner, mut defaulted): (PSID, i32) = (std::ptr::null_mut(), 0);
-    // SAFETY: `sd` is the security descriptor just read; `owner` points into it.
-    if unsafe { GetSecurityDescriptorOwner(sd.as_ptr().cast_mut().cast(), &mut owner, &mut defaulted) } == 0
-        || owner.is_null()
-    {
-        return false;
-    }
-    let mut token: HANDLE = std::ptr::null_mut();
-    // SAFETY: the process's own pseudo-handle; `token` is written, closed below.
-    if unsafe { OpenProcessToken(GetCurrentProcess(), TOKEN_QUERY, &mut token) } == 0 {
-        return false;
-    }
-    let of_token = |class: TOKEN_INFORMATION_CLASS| {
-        // SAFETY: `token` is open through the call; the buffer holds `len` bytes.
-        filled(&|buf, len, need| unsafe { GetTokenInformation(token, class, buf, len, need) })
-    };
-    let (user, default_owner) = (of_token(TokenUser), of_token(TokenOwner));
-    // SAFETY: closed once.
-    unsafe { CloseHandle(token) };
-    // SAFETY: each buffer holds the structure the call wrote (a TOKEN_USER, a TOKEN_OWNER),
-    // whose SID points into the same buffer, alive here; `owner` points into `sd`.
-    unsafe {
-        let is = |sid: PSID| !sid.is_null() && EqualSid(owner, sid) != 0;
-        user.is_some_and(|b| is((*b.as_ptr().cast::<TOKEN_USER>()).User.Sid))
-            || default_owner.is_some_and(|b| is((*b.as_ptr().cast::<TOKEN_OWNER>()).Owner))
-    }
 }
 
 /// The path Windows gives the open `file` (links resolved; `\\?\` form).

@@ -26,6 +26,11 @@ pub fn io_reason(e: &io::Error) -> String {
         K::AlreadyExists => t!("io-already-exists"),
         K::InvalidFilename => t!("io-invalid-name"),
         K::ResourceBusy => t!("io-open-elsewhere"),
+        // Windows (Wine): a handle phonglab holds, lost because a Unix program renamed the
+        // folder it is in ("Invalid handle. (os error 6)"), and a link refused or changed
+        // while phonglab wrote ("The filename cannot be resolved. (os error 1921)").
+        _ if cfg!(windows) && e.raw_os_error() == Some(6) => t!("io-handle-lost"),
+        _ if cfg!(windows) && e.raw_os_error() == Some(1921) => t!("io-link-in-the-way"),
         _ => e.to_string(),
     }
 }
@@ -45,5 +50,13 @@ mod tests {
         // Another kind: the system's own words.
         let other = io::Error::other("something odd");
         assert_eq!(with_locale(Locale::of(Lang::PtPt), || io_reason(&other)), "something odd");
+        // Windows (Wine, issue 59, round 3): a handle lost to a folder renamed by a Unix
+        // program, a link in the way, in words, not "os error 6" or "1921".
+        if cfg!(windows) {
+            let lost = with_locale(Locale::of(Lang::En), || io_reason(&io::Error::from_raw_os_error(6)));
+            assert!(lost.contains("renamed or replaced by a link") && !lost.contains("os error"), "{lost}");
+            let link = with_locale(Locale::of(Lang::PtBr), || io_reason(&io::Error::from_raw_os_error(1921)));
+            assert!(link.contains("link no caminho") && !link.contains("os error"), "{link}");
+        }
     }
 }
