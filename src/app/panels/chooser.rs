@@ -190,7 +190,7 @@ fn chooser_body_ui(ui: &mut Ui, c: &mut Chooser) -> (Option<Chosen>, bool) {
         // Enter in the name field does what the button does (where the button may); so
         // does Enter after a file is selected in the list, while no text field is being
         // typed in.
-        let focused = ui.memory(|m| m.focused());
+        let focused = ui.memory(egui::Memory::focused);
         let typing = focused.is_some_and(|id| egui::TextEdit::load_state(ui.ctx(), id).is_some());
         let enter = ui.input(|i| i.key_pressed(egui::Key::Enter));
         entered = (field.lost_focus() && enter) || (enter && !typing && !c.name.trim().is_empty());
