@@ -1212,6 +1212,34 @@ fn a_class_is_checked_smallest_first_so_huge_files_named_first_cannot_starve_the
     let marked = phonglab::cli::check_class::mark_all(class.path(), None, std::time::Duration::ZERO).unwrap();
     let names: Vec<&str> = marked.iter().map(|m| m.name.as_str()).collect();
     assert_eq!(names, ["a-huge.ipynb", "b-honest.ipynb"]);
-    assert_eq!(marked[0].check.as_ref().err().map(String::as_str), Some("> 0 s"));
+    let why = marked[0].check.as_ref().err().cloned().unwrap_or_default();
+    assert!(why.starts_with("not read: the class's check took its 0 s"), "{why}");
     assert!(marked[1].check.is_ok(), "{:?}", marked[1].check.as_ref().err());
+}
+
+/// A classmate who can write to a shared class folder drops 1003 junk notebooks, three of
+/// them FIFOs: the class is still marked (the honest notebook right, the FIFOs named), where
+/// a cap of 1000 refused the whole folder with "…: > 1000 .ipynb" and no marks (hostile,
+/// round 4).
+#[cfg(unix)]
+#[test]
+fn a_folder_flooded_with_junk_and_fifos_still_marks_the_class() {
+    let class = TempDir::new("check-flood");
+    for k in 0..1000 {
+        std::fs::write(class.path().join(format!("junk-{k:04}.ipynb")), "{}").unwrap();
+    }
+    for k in 0..3 {
+        let fifo = std::ffi::CString::new(class.path().join(format!("fifo-{k}.ipynb")).to_str().unwrap()).unwrap();
+        // SAFETY: a path this test made, NUL-terminated.
+        assert_eq!(unsafe { libc::mkfifo(fifo.as_ptr(), 0o600) }, 0);
+    }
+    let text = phonglab_core::export::notebook::ipynb(&[]);
+    std::fs::write(class.path().join("zz-honest.ipynb"), text).unwrap();
+    let marked = phonglab::cli::check_class::mark_all(class.path(), None, std::time::Duration::from_secs(120)).unwrap();
+    assert_eq!(marked.len(), 1004);
+    let fifo = marked.iter().find(|m| m.name == "fifo-0.ipynb").expect("named");
+    assert!(fifo.check.as_ref().err().is_some_and(|e| e.contains("not a regular file")), "{:?}", fifo.check);
+    let honest = marked.iter().find(|m| m.name == "zz-honest.ipynb").expect("named");
+    let why = honest.check.as_ref().err().cloned().unwrap_or_default();
+    assert!(!why.contains("not read"), "read: {why}");
 }

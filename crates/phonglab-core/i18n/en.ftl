@@ -766,7 +766,7 @@ diagnose-footprint = This mistake changes the right picture by at most { $most }
 diagnose-footprint-group = { $count } from ({ $x0 }, { $y0 }) to ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } elsewhere
 diagnose-footprint-and = and
-diagnose-verdict-right-lossy = Right, with losses: the right picture explains { $score } of the object's pixels within { $levels } levels of a blend of their neighbours ({ $strict } within { $tolerance } of a neighbour), and what differs is noise (as a JPEG saving, a resize, a blur or a camera leaves), not a change of the picture.
+diagnose-verdict-right-lossy = Right, with losses: the right picture explains { $score } of the object's pixels within { $levels } levels of a blend of their neighbours ({ $strict } within { $tolerance } of a neighbour), and what differs is noise (as a JPEG saving, a resize, a blur or a camera leaves), not a change of the picture that it shows. A value a little off (a spot exponent 9 for 8) may hide in the losses; the numbers the program prints can tell (phonglab check).
 diagnose-looks-jpeg = The picture looks saved as JPEG: its difference from the right picture jumps across the edges of 8 x 8 blocks ({ $ratio } times as much as inside them). A lossy saving changes every pixel a little and may hide the cause: save the picture as PNG straight from the program (the exported program's --png option) and diagnose that one.
 diagnose-evenly-off = The picture is not the right one with losses only: over the { $width } x { $width } pixels from ({ $x0 }, { $y0 }) its { $channel ->
         [0] red

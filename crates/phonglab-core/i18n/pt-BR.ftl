@@ -771,7 +771,7 @@ diagnose-footprint = Esse erro muda a imagem certa em no máximo { $most } níve
 diagnose-footprint-group = { $count } de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } em outros lugares
 diagnose-footprint-and = e
-diagnose-verdict-right-lossy = Certa, com perdas: a imagem certa explica { $score } dos pixels do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e o que difere é ruído (como o deixado por um JPEG, um redimensionamento, um desfoque ou uma câmera), não uma mudança da imagem.
+diagnose-verdict-right-lossy = Certa, com perdas: a imagem certa explica { $score } dos pixels do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e o que difere é ruído (como o deixado por um JPEG, um redimensionamento, um desfoque ou uma câmera), não uma mudança que a imagem mostre. Um valor um pouco errado (um expoente do spot 9 em vez de 8) pode se esconder nas perdas; os números que o programa imprime mostram isso (phonglab check).
 diagnose-looks-jpeg = A imagem parece ter sido salva como JPEG: a diferença dela para a imagem certa salta nas bordas de blocos de 8 x 8 ({ $ratio } vezes mais do que dentro deles). Salvar com perdas muda um pouco cada pixel e pode esconder a causa: salve a imagem como PNG direto do programa (com a opção --png do programa exportado) e diagnostique essa.
 diagnose-evenly-off = A imagem não é a certa apenas com perdas: nos { $width } x { $width } pixels a partir de ({ $x0 }, { $y0 }) o { $channel ->
         [0] vermelho

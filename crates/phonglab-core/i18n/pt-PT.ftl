@@ -766,7 +766,7 @@ diagnose-footprint = Este erro altera a imagem certa em { $most } níveis, no m�
 diagnose-footprint-group = { $count } de ({ $x0 }, { $y0 }) a ({ $x1 }, { $y1 })
 diagnose-footprint-rest = { $count } noutros sítios
 diagnose-footprint-and = e
-diagnose-verdict-right-lossy = Certa, com perdas: a imagem certa explica { $score } dos píxeis do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e o que difere é ruído (como o deixado por um JPEG, um redimensionamento, uma desfocagem ou uma câmara), não uma alteração da imagem.
+diagnose-verdict-right-lossy = Certa, com perdas: a imagem certa explica { $score } dos píxeis do objeto a menos de { $levels } níveis de uma mistura dos seus vizinhos ({ $strict } a menos de { $tolerance } de um vizinho), e o que difere é ruído (como o deixado por um JPEG, um redimensionamento, uma desfocagem ou uma câmara), não uma alteração que a imagem mostre. Um valor ligeiramente errado (um expoente do foco 9 em vez de 8) pode esconder-se nas perdas; os números que o programa imprime mostram-no (phonglab check).
 diagnose-looks-jpeg = A imagem parece ter sido guardada como JPEG: a sua diferença para a imagem certa salta nas margens de blocos de 8 x 8 ({ $ratio } vezes mais do que dentro deles). Guardar com perdas muda um pouco cada píxel e pode esconder a causa: guarde a imagem como PNG diretamente do programa (com a opção --png do programa exportado) e diagnostique essa.
 diagnose-evenly-off = A imagem não é a certa apenas com perdas: nos { $width } x { $width } píxeis a partir de ({ $x0 }, { $y0 }) o seu { $channel ->
         [0] vermelho

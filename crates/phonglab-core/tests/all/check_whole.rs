@@ -261,9 +261,10 @@ fn an_error_in_the_self_checks_cell_stops_the_run_as_any_cells() {
     let (a, b) = names.split_at(3);
     let cells = serde_json::json!({"cells": [
         {"cell_type": "code", "execution_count": 1, "source": ["x = 1\n"], "outputs": stream(&printed_of(&key, Some(a)))},
-        {"cell_type": "code", "execution_count": 2, "source": ["y = z\n", "_ = 'check(globals()'\n"],
+        {"cell_type": "code", "execution_count": 5, "source": ["y = z\n", "_ = 'check(globals()'\n"],
          "outputs": [{"output_type": "stream", "name": "stdout", "text": "vlv = [9 9 9 0]\n"},
                      {"output_type": "error", "ename": "NameError", "evalue": "name 'z' is not defined", "traceback": []}]},
+        // From an earlier run (numbered before the error's cell): Run All stopped at [5].
         {"cell_type": "code", "execution_count": 3, "source": ["x = 1\n"], "outputs": stream(&printed_of(&key, Some(b)))},
     ]});
     let p = notebook_outputs(&cells.to_string()).unwrap();
@@ -291,6 +292,35 @@ fn an_error_in_a_last_self_check_cell_leaves_the_work_above_it_judged() {
     assert!(p.errors.is_empty(), "{:?}", p.errors);
     let c = check(&scene, &scene, &p);
     assert_eq!(c.overall(), Overall::Right, "{:?}", c.unchecked().map(|u| u.id()));
+}
+
+/// A cell of comments only, not run, between run cells (the exported self-check left
+/// commented out, a `# try later`) changes nothing: the work is right, not "stale"; and a
+/// self-check cell's `ModuleNotFoundError` followed by a cell numbered after it (run after
+/// it, one cell at a time) stops nothing (hostile, round 4: both were "incomplete").
+#[test]
+fn a_comment_cell_not_run_and_a_self_check_error_run_past_leave_right_work_right() {
+    let scene = phonglab_core::presets::worksheet(5);
+    let key = work(&scene, None, None);
+    let names = asked(&key);
+    let (a, b) = names.split_at(3);
+    let comment = serde_json::json!({"cells": [
+        {"cell_type": "code", "execution_count": 1, "source": ["x = 1\n"], "outputs": stream(&printed_of(&key, Some(a)))},
+        {"cell_type": "code", "execution_count": null, "source": ["# import phonglab\n", "# phonglab.check(globals())\n"], "outputs": []},
+        {"cell_type": "code", "execution_count": 2, "source": ["x = 1\n"], "outputs": stream(&printed_of(&key, Some(b)))},
+    ]});
+    let p = notebook_outputs(&comment.to_string()).unwrap();
+    assert_eq!(p.stale, None);
+    assert_eq!(check(&scene, &scene, &p).overall(), Overall::Right);
+    let run_past = serde_json::json!({"cells": [
+        {"cell_type": "code", "execution_count": 1, "source": ["x = 1\n"], "outputs": stream(&printed_of(&key, Some(a)))},
+        {"cell_type": "code", "execution_count": 2, "source": ["import phonglab\n", "phonglab.check(globals())\n"],
+         "outputs": [{"output_type": "error", "ename": "ModuleNotFoundError", "evalue": "No module named 'phonglab'", "traceback": []}]},
+        {"cell_type": "code", "execution_count": 3, "source": ["x = 1\n"], "outputs": stream(&printed_of(&key, Some(b)))},
+    ]});
+    let p = notebook_outputs(&run_past.to_string()).unwrap();
+    assert!(p.errors.is_empty(), "{:?}", p.errors);
+    assert_eq!(check(&scene, &scene, &p).overall(), Overall::Right);
 }
 
 /// Issue 57: a code cell with no execution count between two numbered ones was not run

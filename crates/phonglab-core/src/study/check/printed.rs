@@ -192,16 +192,19 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
     let mut counts: Vec<Option<i64>> = Vec::new();
     let mut not_a_count: Option<String> = None;
     // A self-check cell's error, the run's once a cell below it has outputs.
-    let mut self_check_error: Option<String> = None;
+    let mut self_check_error: Option<(String, Option<i64>)> = None;
     for cell in cells.iter().filter(|c| c["cell_type"] == "code") {
         let source = joined(&cell["source"]);
         code.push_str(&source);
         code.push('\n');
-        match execution_count(&cell["execution_count"]) {
-            Ok(n) if !source.trim().is_empty() => counts.push(n),
+        let count = execution_count(&cell["execution_count"]);
+        match &count {
+            // A cell of comments only changes nothing when run (the exported self-check
+            // cell left commented out): like an empty cell, it says nothing of the order.
+            Ok(n) if !only_comments(&source) => counts.push(*n),
             Ok(_) => {}
             Err(shown) => {
-                not_a_count.get_or_insert(shown);
+                not_a_count.get_or_insert(shown.clone());
             }
         }
         // The self-check's table echoes the formulas and both values of every step
@@ -211,8 +214,12 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
         // outputs (then from an earlier run), and the work's printed steps above it stand.
         let self_check = calls_self_check(&source);
         let outputs = cell["outputs"].as_array().map(Vec::as_slice).unwrap_or_default();
+        // A cell below the self-check's error, numbered after it, was run after it (one at a
+        // time): its outputs are current, and the self-check changed nothing they read.
+        let here = count.as_ref().ok().copied().flatten();
         if !outputs.is_empty()
-            && let Some(e) = self_check_error.take()
+            && let Some((e, at)) = self_check_error.take()
+            && !matches!((at, here), (Some(at), Some(here)) if here > at)
             && errors.len() < MAX_ERRORS
         {
             errors.push(e);
@@ -223,7 +230,7 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
             let into = if errors.is_empty() { &mut text } else { &mut after };
             match output["output_type"].as_str() {
                 Some("stream") if !self_check => into.push_str(&joined(&output["text"])),
-                Some("error") if self_check => self_check_error = Some(cell_error(output)),
+                Some("error") if self_check => self_check_error = Some((cell_error(output), here)),
                 Some("error") if errors.len() < MAX_ERRORS => errors.push(cell_error(output)),
                 _ => {}
             }
@@ -247,6 +254,11 @@ pub fn notebook_outputs(text: &str) -> Result<Printed, OutputsError> {
     let back = numbered.windows(2).find(|w| w[1] <= w[0]).map(|w| Stale::Back(w[0], w[1]));
     let stale = not_a_count.map(Stale::NotACount).or(back).or_else(|| not_run_between(&counts));
     Ok(Printed { code, stale, after_error, ..p })
+}
+
+/// Is `source` only comments and blank lines (Python's `#`)?
+fn only_comments(source: &str) -> bool {
+    source.lines().map(str::trim).all(|l| l.is_empty() || l.starts_with('#'))
 }
 
 /// The first code cell not run (`None`) with a numbered one above it and one below, as
