@@ -147,7 +147,7 @@ fn mark_one(path: &Path, assignment: Option<&Scene>) -> Result<Check, String> {
 }
 
 /// Checks every notebook of `dir` against `assignment` (each its own scene without one),
-/// smallest first ([`checking_order`]): once `budget` is spent the rest are not read (the
+/// smallest first (`checking_order`): once `budget` is spent the rest are not read (the
 /// first is always read). The result is in the files' name order.
 pub fn mark_all(dir: &Path, assignment: Option<&Scene>, budget: Duration) -> Result<Vec<Marked>> {
     let paths = submissions(dir)?;

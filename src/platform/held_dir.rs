@@ -81,7 +81,7 @@ impl HeldDir {
 
     /// Makes the folder `name` in this one, where nothing is (`AlreadyExists` otherwise, a
     /// link included), for this user alone (Unix: mode 0700; Windows: an owner-only
-    /// descriptor, [`phonglab_core::files::private::OwnerOnly`]: a staging or aside folder,
+    /// descriptor, `phonglab_core::files::private::OwnerOnly`: a staging or aside folder,
     /// trusted later only when no one else can have put anything in it), and holds it
     /// (Windows: by the handle that made it, through the handle of this one).
     pub fn create_dir(&self, name: &OsStr) -> io::Result<HeldDir> {

@@ -5,7 +5,7 @@
 //!
 //! - Unix: made 0600 and 0700 whatever the umask (`platform::held_dir`); trusted when owned
 //!   by the process's effective user and writable by no group and no other user.
-//! - Windows: made with an owner-only security descriptor ([`OwnerOnly`]: this user the
+//! - Windows: made with an owner-only security descriptor (`OwnerOnly`: this user the
 //!   owner, and a protected DACL with one entry, this user's SID with full control,
 //!   inherited by nothing and inheriting nothing); trusted when its owner is this user and
 //!   its DACL lets no one else write it ([`is_this_users_alone`]). Before, only the owner
