@@ -777,6 +777,7 @@ diagnose-verdict-right-within = Right within what a picture can tell: the right 
 diagnose-verdict-right = Right: the right picture explains { $score } of the object's pixels, and inside the object yours is that picture to the rounding ({ $rounding } level), as another OpenGL draws it. A value so little off that it moves no pixel further cannot show in a picture; the numbers the program prints can (phonglab check).
 diagnose-verdict-wrong = Wrong. The cause: { $cause } ({ $id }); the picture with that mistake explains { $score } of the object's pixels, the right picture { $right }.
 diagnose-verdict-wrong-nearer = Wrong. The cause: { $cause } ({ $id }). The picture with that mistake and the right picture both explain { $score } of the object's pixels within the tolerance, but where the two differ ({ $pixels } pixels) yours is { $fitted } levels from the first on average (root mean square) and { $scene } from the right one.
+diagnose-verdict-wrong-nearer-inside = Wrong. The cause: { $cause } ({ $id }). The picture with that mistake and the right picture both explain { $score } of the object's pixels within the tolerance, but inside the object yours is { $fitted } levels from the first on average (the three channels summed) and { $scene } from the right one.
 diagnose-verdict-wrong-or = Wrong. The cause: { $cause } ({ $id }) or { $other } ({ $other-id }){ $more ->
         [0] {""}
         [one] , or one more listed below

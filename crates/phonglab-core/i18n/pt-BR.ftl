@@ -782,6 +782,7 @@ diagnose-verdict-right-within = Certa, até onde uma imagem permite dizer: a ima
 diagnose-verdict-right = Certa: a imagem certa explica { $score } dos pixels do objeto e, dentro do objeto, a sua é essa imagem até o arredondamento ({ $rounding } nível), como outro OpenGL a desenha. Um valor tão pouco errado que não mude nenhum pixel mais do que isso não aparece em uma imagem; os números que o programa imprime mostram isso (phonglab check).
 diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos pixels do objeto, a imagem certa { $right }.
 diagnose-verdict-wrong-nearer = Errada. A causa: { $cause } ({ $id }). A imagem com esse erro e a imagem certa explicam ambas { $score } dos pixels do objeto dentro da tolerância, mas onde as duas diferem ({ $pixels } pixels) a sua fica, em média (quadrática), a { $fitted } níveis da primeira e a { $scene } da certa.
+diagnose-verdict-wrong-nearer-inside = Errada. A causa: { $cause } ({ $id }). A imagem com esse erro e a imagem certa explicam ambas { $score } dos pixels do objeto dentro da tolerância, mas dentro do objeto a sua fica, em média, a { $fitted } níveis da primeira (somados os três canais) e a { $scene } da certa.
 diagnose-verdict-wrong-or = Errada. A causa: { $cause } ({ $id }) ou { $other } ({ $other-id }){ $more ->
         [0] {""}
         [one] , ou mais uma, listada abaixo

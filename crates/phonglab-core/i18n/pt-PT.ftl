@@ -777,6 +777,7 @@ diagnose-verdict-right-within = Certa, tanto quanto uma imagem permite dizer: a 
 diagnose-verdict-right = Certa: a imagem certa explica { $score } dos píxeis do objeto e, dentro do objeto, a sua é essa imagem até ao arredondamento ({ $rounding } nível), como outro OpenGL a desenha. Um valor tão pouco errado que não mude nenhum píxel mais do que isso não se vê numa imagem; os números que o programa imprime mostram-no (phonglab check).
 diagnose-verdict-wrong = Errada. A causa: { $cause } ({ $id }); a imagem com esse erro explica { $score } dos píxeis do objeto, a imagem certa { $right }.
 diagnose-verdict-wrong-nearer = Errada. A causa: { $cause } ({ $id }). A imagem com esse erro e a imagem certa explicam ambas { $score } dos píxeis do objeto dentro da tolerância, mas onde as duas diferem ({ $pixels } píxeis) a sua está, em média (quadrática), a { $fitted } níveis da primeira e a { $scene } da certa.
+diagnose-verdict-wrong-nearer-inside = Errada. A causa: { $cause } ({ $id }). A imagem com esse erro e a imagem certa explicam ambas { $score } dos píxeis do objeto dentro da tolerância, mas dentro do objeto a sua está, em média, a { $fitted } níveis da primeira (somados os três canais) e a { $scene } da certa.
 diagnose-verdict-wrong-or = Errada. A causa: { $cause } ({ $id }) ou { $other } ({ $other-id }){ $more ->
         [0] {""}
         [one] , ou mais uma, listada abaixo

@@ -188,6 +188,11 @@ pub struct Diagnosis {
     /// Where the image is evenly off the right picture by more than losses make, when that
     /// alone kept an "unexplained" picture from "right as saved lossily" ([`systematic`]).
     pub bias: Option<Bias>,
+    /// When "wrong" rests on the picture being nearer a fitted value's drawing than the
+    /// right one's though both explain it within the tolerance ([`colours_shown`]): the mean
+    /// levels (the three channels summed, over the object's inside) by which the image misses
+    /// the cause's picture, then the right one's.
+    pub nearer: Option<(f64, f64)>,
 }
 
 /// What a picture's shape shows that no mistake's colours explain.
@@ -320,7 +325,9 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         && d.verdict == Verdict::Right
         && let Some(t) = colours_shown(right, &d, &covered, image, size)?
     {
-        (d.verdict, d.causes, d.lossy) = (Verdict::Wrong, vec![t], None);
+        (d.verdict, d.causes, d.lossy) = (Verdict::Wrong, vec![t.0], None);
+        let flat = levels::inner_pixels(&covered, size);
+        d.nearer = Some((t.1, levels::distance(&d.picture, image, &flat)));
     }
     // A picture right as saved lossily may have had its colour subsampled (a JPEG): a region
     // or marks must differ beyond what that makes of the right picture.
@@ -422,19 +429,22 @@ impl Found {
 /// from the picture (`colours-differ`, a shininess, an attenuation), the one whose drawing
 /// is nearest it in place (a shininess 10 % off is shown by a specular colour fitted to it
 /// too), its match measured.
+/// With the mean levels by which the image misses the chosen mistake's drawing (over the
+/// object's inside).
 fn colours_shown(
     right: &Drawing,
     d: &Diagnosis,
     covered: &[bool],
     image: &[u8],
     size: usize,
-) -> Result<Option<Tried>, SceneError> {
+) -> Result<Option<(Tried, f64)>, SceneError> {
     let shown = |t: &Tried| t.id() == "colours-differ" && t.at.colours.is_some_and(|c| c.shown.is_some());
     if !d.tried.iter().any(shown) {
         return Ok(None);
     }
     let flat = levels::inner_pixels(covered, size);
-    best_fitted(right, d, image, size, |rgba, _| Some(levels::distance(rgba, image, &flat)))
+    let best = best_fitted_scored(right, d, image, size, |rgba, _| Some(levels::distance(rgba, image, &flat)))?;
+    Ok(best.map(|(far, t)| (t, far)))
 }
 
 /// Of the mistakes with a value fitted from `image`, drawn one by one, the one `score`
@@ -448,6 +458,17 @@ fn best_fitted(
     size: usize,
     score: impl Fn(&[u8], &[bool]) -> Option<f64>,
 ) -> Result<Option<Tried>, SceneError> {
+    Ok(best_fitted_scored(right, d, image, size, score)?.map(|(_, t)| t))
+}
+
+/// [`best_fitted`] with the least score it found.
+fn best_fitted_scored(
+    right: &Drawing,
+    d: &Diagnosis,
+    image: &[u8],
+    size: usize,
+    score: impl Fn(&[u8], &[bool]) -> Option<f64>,
+) -> Result<Option<(f64, Tried)>, SceneError> {
     let mut best: Option<(f64, Tried)> = None;
     for t in d.tried.iter().filter(|t| t.fitted()) {
         let mut wrong = right.clone();
@@ -461,7 +482,7 @@ fn best_fitted(
             best = Some((score, Tried { matched: Some(matched), ..*t }));
         }
     }
-    Ok(best.map(|(_, t)| t))
+    Ok(best)
 }
 
 /// The mistake with a value fitted from `image` (a shininess, an attenuation, the colours)
@@ -744,6 +765,7 @@ fn verdict_of(exact: Match, mut tried: Vec<Tried>, picture: Vec<u8>, renderer: R
         within: None,
         grid: 1.0,
         bias: None,
+        nearer: None,
     }
 }
 

@@ -38,6 +38,9 @@ pub struct Said {
     pub grid: f64,
     /// Where an unexplained picture is evenly off the right one beyond its losses.
     pub bias: Option<super::Bias>,
+    /// How far the picture is from the cause's drawing and from the right one, when "wrong"
+    /// rests on that ([`Diagnosis::nearer`]).
+    pub nearer: Option<(f64, f64)>,
 }
 
 /// How a verdict is filed, for machines (`phonglab diagnose --json`'s `finding`): the
@@ -80,6 +83,7 @@ impl Said {
             within: d.within,
             grid: d.grid,
             bias: d.bias,
+            nearer: d.nearer,
         }
     }
 
@@ -207,9 +211,15 @@ impl Said {
             }
         };
         let id = if said.len() == 1 { "diagnose-verdict-wrong" } else { "diagnose-verdict-wrong-or" };
-        match nearer_said(first, self.right).filter(|_| said.len() == 1) {
-            Some(nearer) => out.push(tr_args("diagnose-verdict-wrong-nearer", &[&args[..], &nearer[..]].concat())),
-            None => out.push(tr_args(id, &args)),
+        let tie = said.len() == 1 && shown_alike(first, self.right);
+        match (nearer_said(first).filter(|_| tie), self.nearer.filter(|_| tie)) {
+            (Some(nearer), _) => out.push(tr_args("diagnose-verdict-wrong-nearer", &[&args[..], &nearer[..]].concat())),
+            (None, Some((cause, right))) => {
+                let levels = |v: f64| Arg::Text(crate::locale::decimal(&format!("{v:.1}")));
+                let far = [("fitted", levels(cause)), ("scene", levels(right))];
+                out.push(tr_args("diagnose-verdict-wrong-nearer-inside", &[&args[..], &far[..]].concat()));
+            }
+            (None, None) => out.push(tr_args(id, &args)),
         }
         out.extend(self.footprint.as_ref().map(super::footprint_said));
         out.extend(same_picture_said(&self.same));
@@ -353,12 +363,17 @@ fn run_in(words: &str) -> String {
 /// report shows it (to 0.1 %): what the verdict rests on instead, where the two pictures
 /// differ (the pixels, and how far the student's is from each there). "The picture with
 /// that mistake explains 100.0 %, the right picture 100.0 %" gave the teacher no reason.
-fn nearer_said(t: &Tried, right: f64) -> Option<[(&'static str, Arg); 3]> {
-    let shown = |share: f64| (share * 1000.0).round();
-    let score = t.matched?.score;
-    let n = t.at.colours?.shown.filter(|_| t.id() == "colours-differ" && shown(score) == shown(right))?;
+fn nearer_said(t: &Tried) -> Option<[(&'static str, Arg); 3]> {
+    let n = t.at.colours?.shown.filter(|_| t.id() == "colours-differ")?;
     let levels = |v: f64| Arg::Text(crate::locale::decimal(&format!("{v:.1}")));
     Some([("pixels", Arg::Text(n.pixels.to_string())), ("fitted", levels(n.to_fitted)), ("scene", levels(n.to_scene))])
+}
+
+/// Do `t`'s picture and the right one explain the same share of the student's, as the
+/// report shows it (to 0.1 %)? Then the shares are no reason, and the line says what is.
+fn shown_alike(t: &Tried, right: f64) -> bool {
+    let shown = |share: f64| (share * 1000.0).round();
+    t.matched.is_some_and(|m| shown(m.score) == shown(right))
 }
 
 fn named(t: &Tried) -> (Arg, Arg, Arg) {
@@ -403,6 +418,7 @@ mod tests {
             within: None,
             grid: 1.0,
             bias: None,
+            nearer: None,
         }
     }
 
@@ -494,6 +510,7 @@ mod tests {
             within: None,
             grid: 1.0,
             bias: None,
+            nearer: None,
         };
         let lines = with_locale(Locale::of(Lang::En), || wrong(tie.clone()).lines());
         let first = &lines[0];
@@ -575,6 +592,13 @@ mod tests {
         assert!(en[0].contains("and 1.9 from the right one"), "{en:?}");
         let br = with_locale(Locale::of(Lang::PtBr), || wrong.lines());
         assert!(br[0].contains("(4210 pixels) a sua fica, em média (quadrática), a 0,6 níveis"), "{br:?}");
+        // Another fitted cause (a shininess) chosen on the same ground: how far the picture is
+        // from its drawing and from the right one's, over the object's inside.
+        let shininess =
+            Said { named: vec![cause("shininess-differs", 0.99996)], nearer: Some((0.42, 2.31)), ..wrong.clone() };
+        let en = with_locale(Locale::of(Lang::En), || shininess.lines());
+        assert!(en[0].contains("both explain 100.0\u{a0}%") && en[0].contains("0.4 levels from the first"), "{en:?}");
+        assert!(en[0].contains("and 2.3 from the right one"), "{en:?}");
         // Shown apart (99.9 % against 99.5 %): the scores are the reason, said as before.
         let apart = Said { right: 0.995, ..wrong.clone() };
         let en = with_locale(Locale::of(Lang::En), || apart.lines());
