@@ -164,6 +164,30 @@ pub fn outside_subsampled(picture: &[[f64; 3]], image: &[u8], size: usize, p: us
     most
 }
 
+/// `rgba` (RGBA8, `size` square) as a JPEG with its colour subsampled (4:2:0) gives it
+/// back, losses of quantisation aside: each pixel keeps its brightness (JFIF's Y), and the
+/// colour (Cb, Cr) of each 2 x 2 block, from the top left, is the block's mean.
+pub fn subsampled_420(rgba: &[u8], size: usize) -> Vec<u8> {
+    let ycc = luma_chroma(rgba);
+    let mut out = rgba.to_vec();
+    for by in (0..size).step_by(2) {
+        for bx in (0..size).step_by(2) {
+            let block: Vec<usize> =
+                (by..(by + 2).min(size)).flat_map(|y| (bx..(bx + 2).min(size)).map(move |x| y * size + x)).collect();
+            let mean = |c: usize| block.iter().map(|&p| ycc[p][c]).sum::<f64>() / block.len() as f64;
+            let (cb, cr) = (mean(1) - 128.0, mean(2) - 128.0);
+            for &p in &block {
+                let y = ycc[p][0];
+                let rgb = [y + 1.402 * cr, y - 0.344136 * cb - 0.714136 * cr, y + 1.772 * cb];
+                for (c, v) in rgb.into_iter().enumerate() {
+                    out[p * 4 + c] = v.round().clamp(0.0, 255.0) as u8;
+                }
+            }
+        }
+    }
+    out
+}
+
 /// [`blended_share`] for a picture saved as JPEG with its colour subsampled: the share of
 /// the object's pixels within `tolerance` levels of what the subsampling can make of
 /// `picture` ([`outside_subsampled`]). A sharp coloured edge (the spotlight's rim) then

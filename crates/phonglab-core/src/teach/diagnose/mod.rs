@@ -341,9 +341,9 @@ pub fn diagnose(right: &Drawing, image: &[u8], size: usize) -> Result<Diagnosis,
         d.shape = marks.filter(|m| m.pixels >= MARKS_AT).map(Shape::Marks);
     }
     if d.shape.is_none() && d.verdict == Verdict::Right {
-        // A picture right as saved lossily: its brightness (a JPEG's subsampled colour moves a
-        // square's red or blue near a coloured edge).
-        let largest = if subsampled { offset::largest_offset_in_luma } else { offset::largest_offset };
+        // A picture right as saved lossily: what a JPEG's subsampled colour makes of a square
+        // near a coloured edge is a loss, as a sub-pixel shift is.
+        let largest = if subsampled { offset::largest_offset_subsampled } else { offset::largest_offset };
         let off = largest(&d.picture, &covered, image, size).filter(|o| o.beyond_shift() >= OFFSET_AT);
         if let Some(o) = off {
             match offset_explained(right, &d, (&covered, o), image, size)? {

@@ -91,23 +91,30 @@ fn shifted(p: usize, (dx, dy): (isize, isize), size: usize) -> usize {
 /// evenly off `picture` (both RGBA8, `size` square, the picture covering `covered`), the
 /// object's median offset taken away; `None` when no square holds enough of the object.
 pub fn largest_offset(picture: &[u8], covered: &[bool], image: &[u8], size: usize) -> Option<Offset> {
-    largest_offset_by(picture, covered, image, size, false)
+    largest_offset_by(picture, covered, image, size, None)
 }
 
-/// JFIF's weights of red, green and blue in the brightness (Y).
-const LUMA: [f64; 3] = [0.299, 0.587, 0.114];
-
-/// [`largest_offset`] of the brightness (JFIF's Y) alone, for a picture found right as
-/// saved lossily: a JPEG that keeps its colour once for each 2 x 2 block (4:2:0) moves a
-/// square's red or blue mean near a sharp coloured edge (the spotlight's rim: 3.9 levels at
-/// quality 75) while its brightness stays; a square painted over, or initials, change the
-/// brightness. (A colour off evenly is the systematic test's, which such a picture passed.)
-pub fn largest_offset_in_luma(picture: &[u8], covered: &[bool], image: &[u8], size: usize) -> Option<Offset> {
-    largest_offset_by(picture, covered, image, size, true)
+/// [`largest_offset`] for a picture found right as saved lossily that may be a JPEG with its
+/// colour subsampled (4:2:0): a JPEG keeps the colour once for each 2 x 2 block, which moves
+/// a square's red or blue mean near a sharp coloured edge (the spotlight's rim: 3.9 levels
+/// at quality 75). What that makes of each square is taken as losses, as a sub-pixel shift
+/// is ([`Offset::shift`]): measured on the right picture subsampled so
+/// ([`crate::teach::picture_match::subsampled_420`]). An attenuation or a colour off there
+/// moves the square beyond it.
+pub fn largest_offset_subsampled(picture: &[u8], covered: &[bool], image: &[u8], size: usize) -> Option<Offset> {
+    let expected = crate::teach::picture_match::subsampled_420(picture, size);
+    largest_offset_by(picture, covered, image, size, Some(&expected))
 }
 
-/// [`largest_offset`], of the channel furthest off, or of the brightness when `luma`.
-fn largest_offset_by(picture: &[u8], covered: &[bool], image: &[u8], size: usize, luma: bool) -> Option<Offset> {
+/// [`largest_offset`], with what a lossy saving makes of each square (`expected`, the right
+/// picture as the saving would make it) taken as losses too.
+fn largest_offset_by(
+    picture: &[u8],
+    covered: &[bool],
+    image: &[u8],
+    size: usize,
+    expected: Option<&[u8]>,
+) -> Option<Offset> {
     let on = inside(covered, size);
     let shift = aligned(picture, image, &on, size);
     let diff = |p: usize, c: usize| i32::from(image[shifted(p, shift, size) * 4 + c]) - i32::from(picture[p * 4 + c]);
@@ -127,14 +134,16 @@ fn largest_offset_by(picture: &[u8], covered: &[bool], image: &[u8], size: usize
         }
         let mean =
             |c: usize| pixels.iter().map(|&p| f64::from(diff(p, c) - median[c])).sum::<f64>() / pixels.len() as f64;
-        let per_channel: Vec<(f64, f64)> =
-            (0..3).map(|c| (mean(c), shifted_by(picture, &pixels, c, sub, size))).collect();
-        // Both the mean and what the shift makes of it are linear in the channels.
-        let (levels, shift) = if luma {
-            per_channel.iter().zip(LUMA).fold((0.0, 0.0), |(l, s), (&(m, h), w)| (l + w * m, s + w * h))
-        } else {
-            per_channel.into_iter().max_by(|a, b| (a.0 - a.1).abs().total_cmp(&(b.0 - b.1).abs())).unwrap_or((0.0, 0.0))
+        let saved = |c: usize| {
+            expected.map_or(0.0, |e| {
+                pixels.iter().map(|&p| f64::from(e[p * 4 + c]) - f64::from(picture[p * 4 + c])).sum::<f64>()
+                    / pixels.len() as f64
+            })
         };
+        let (levels, shift) = (0..3)
+            .map(|c| (mean(c), shifted_by(picture, &pixels, c, sub, size) + saved(c)))
+            .max_by(|a, b| (a.0 - a.1).abs().total_cmp(&(b.0 - b.1).abs()))
+            .unwrap_or((0.0, 0.0));
         let square = Offset { levels, pixels: pixels.len(), from: (x0, y0), to: (x1, y1), shift };
         if best.is_none_or(|b| square.beyond_shift() > b.beyond_shift()) {
             best = Some(square);
