@@ -189,7 +189,7 @@ pub struct Diagnosis {
     /// alone kept an "unexplained" picture from "right as saved lossily" ([`systematic`]).
     pub bias: Option<Bias>,
     /// When "wrong" rests on the picture being nearer a fitted value's drawing than the
-    /// right one's though both explain it within the tolerance ([`colours_shown`]): the mean
+    /// right one's though both explain it within the tolerance (`colours_shown`): the mean
     /// levels (the three channels summed, over the object's inside) by which the image misses
     /// the cause's picture, then the right one's.
     pub nearer: Option<(f64, f64)>,
