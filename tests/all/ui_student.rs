@@ -710,6 +710,22 @@ fn the_class_chart_is_as_tall_as_its_rows_and_wraps_long_causes_right_aligned_ag
 }
 
 /// The shipped spotlight scene.
+/// The spotlight drawn with its spot exponent 10 for 8, as the student's program would, into
+/// the PNG at `path` (512 square).
+fn write_spotlight_exp10(path: &Path) {
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
+    let text = std::fs::read_to_string(&scene).unwrap();
+    let changed = text.replace("spot_exponent = 8", "spot_exponent = 10");
+    assert_ne!(changed, text);
+    let student = phonglab_core::document::Document::from_toml_in(&changed, scene.parent()).unwrap();
+    let mesh = student.view.mesh();
+    let mut d =
+        phonglab_core::teach::diagnose::Drawing::of(&student.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
+    d.inside = student.view.mesh_inside();
+    let (_, rgba, _) = d.draw(512).unwrap();
+    phonglab::io::image::write_png(path, 512, 512, &rgba).unwrap();
+}
+
 fn spotlight() -> phonglab_core::document::Document {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
     let text = std::fs::read_to_string(&path).unwrap();
@@ -1001,17 +1017,7 @@ fn a_mistake_of_few_pixels_is_shown_wrong_with_where_it_shows_as_the_command_lin
     // the window says wrong, the fitted exponent, and the sentence of the mistake's footprint.
     let dir = TempDir::new("ui-student-footprint");
     let path = dir.0.join("exp10.png");
-    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
-    let text = std::fs::read_to_string(&scene).unwrap();
-    let changed = text.replace("spot_exponent = 8", "spot_exponent = 10");
-    assert_ne!(changed, text);
-    let student = phonglab_core::document::Document::from_toml_in(&changed, scene.parent()).unwrap();
-    let mesh = student.view.mesh();
-    let mut d =
-        phonglab_core::teach::diagnose::Drawing::of(&student.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
-    d.inside = student.view.mesh_inside();
-    let (_, rgba, _) = d.draw(512).unwrap();
-    phonglab::io::image::write_png(&path, 512, 512, &rgba).unwrap();
+    write_spotlight_exp10(&path);
     let mut h = harness(1280.0, 720.0);
     h.state_mut().load(spotlight(), "spotlight");
     h.run_steps(2);
@@ -1049,19 +1055,7 @@ fn a_mistake_of_few_pixels_is_shown_wrong_with_where_it_shows_as_the_command_lin
 fn the_places_named_are_boxed_whole_over_the_difference_image_when_it_is_shown_small() {
     let dir = TempDir::new("ui-student-boxes");
     let path = dir.0.join("exp10.png");
-    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/spotlight.toml");
-    let text = std::fs::read_to_string(&scene).unwrap();
-    let student = phonglab_core::document::Document::from_toml_in(
-        &text.replace("spot_exponent = 8", "spot_exponent = 10"),
-        scene.parent(),
-    )
-    .unwrap();
-    let mesh = student.view.mesh();
-    let mut d =
-        phonglab_core::teach::diagnose::Drawing::of(&student.shaded_setup(phonglab_core::PowFn::Exact).job(&mesh));
-    d.inside = student.view.mesh_inside();
-    let (_, rgba, _) = d.draw(512).unwrap();
-    phonglab::io::image::write_png(&path, 512, 512, &rgba).unwrap();
+    write_spotlight_exp10(&path);
     let mut h = harness(1024.0, 600.0);
     h.state_mut().load(spotlight(), "spotlight");
     h.run_steps(2);

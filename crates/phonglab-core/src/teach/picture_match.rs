@@ -104,24 +104,32 @@ pub fn compare_within(
 /// (each pixel a weighted mean of its neighbours), and the ringing of a lossy saving
 /// within `tolerance`. Both RGBA8, `size` x `size`; 1 when the object has no pixels.
 pub fn blended_share(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usize, tolerance: u8) -> f64 {
-    let (mut pixels, mut blended) = (0usize, 0usize);
+    object_share(covered, image, bg, size, |p| {
+        let (x, y) = (p % size, p / size);
+        let around: Vec<usize> = (y.saturating_sub(1)..=(y + 1).min(size - 1))
+            .flat_map(|qy| (x.saturating_sub(1)..=(x + 1).min(size - 1)).map(move |qx| qy * size + qx))
+            .collect();
+        (0..3).all(|c| {
+            let (low, high) =
+                around.iter().fold((u8::MAX, 0u8), |(l, h), &q| (l.min(picture[q * 4 + c]), h.max(picture[q * 4 + c])));
+            (low.saturating_sub(tolerance)..=high.saturating_add(tolerance)).contains(&image[p * 4 + c])
+        })
+    })
+}
+
+/// The share of the object's pixels (covered by the picture, or unlike `bg` in `image` by
+/// more than [`TOLERANCE`]) for which `holds` is true; 1 when the object has no pixels. The
+/// loop [`blended_share`] and [`blended_share_subsampled`] count with.
+fn object_share(covered: &[bool], image: &[u8], bg: [u8; 3], size: usize, holds: impl Fn(usize) -> bool) -> f64 {
+    let (mut pixels, mut counted) = (0usize, 0usize);
     for p in 0..size * size {
         if !covered[p] && apart(&image[p * 4..p * 4 + 3], &bg) <= TOLERANCE {
             continue;
         }
         pixels += 1;
-        let (x, y) = (p % size, p / size);
-        let around: Vec<usize> = (y.saturating_sub(1)..=(y + 1).min(size - 1))
-            .flat_map(|qy| (x.saturating_sub(1)..=(x + 1).min(size - 1)).map(move |qx| qy * size + qx))
-            .collect();
-        let within = (0..3).all(|c| {
-            let (low, high) =
-                around.iter().fold((u8::MAX, 0u8), |(l, h), &q| (l.min(picture[q * 4 + c]), h.max(picture[q * 4 + c])));
-            (low.saturating_sub(tolerance)..=high.saturating_add(tolerance)).contains(&image[p * 4 + c])
-        });
-        blended += usize::from(within);
+        counted += usize::from(holds(p));
     }
-    if pixels == 0 { 1.0 } else { blended as f64 / pixels as f64 }
+    if pixels == 0 { 1.0 } else { counted as f64 / pixels as f64 }
 }
 
 /// A picture in JFIF's Y, Cb, Cr (what JPEG stores), one triple a pixel of RGBA8 `rgba`.
@@ -203,15 +211,7 @@ pub fn blended_share_subsampled(
     tolerance: u8,
 ) -> f64 {
     let of_picture = luma_chroma(picture);
-    let (mut pixels, mut blended) = (0usize, 0usize);
-    for p in 0..size * size {
-        if !covered[p] && apart(&image[p * 4..p * 4 + 3], &bg) <= TOLERANCE {
-            continue;
-        }
-        pixels += 1;
-        blended += usize::from(outside_subsampled(&of_picture, image, size, p) <= f64::from(tolerance));
-    }
-    if pixels == 0 { 1.0 } else { blended as f64 / pixels as f64 }
+    object_share(covered, image, bg, size, |p| outside_subsampled(&of_picture, image, size, p) <= f64::from(tolerance))
 }
 
 /// The most a difference image amplifies: past it, the 8-bit rounding's one level would

@@ -179,8 +179,8 @@ fn added(picture: &[u8], covered: &[bool], image: &[u8], bg: [u8; 3], size: usiz
 /// range as [`added`] counts them, solid or not: lines or marks drawn over the object.
 /// `None` when no pixel does.
 ///
-/// `subsampled`: the image is a JPEG whose colour may be subsampled (it was found right as
-/// saved lossily, and shows JPEG's blocks): a pixel is then added only where it lies outside
+/// `subsampled`: the image may be a JPEG whose colour is subsampled (it was found right as
+/// saved lossily): a pixel is then added only where it lies outside
 /// what the subsampling can make of `picture` too
 /// ([`crate::teach::picture_match::outside_subsampled`]): the colour of a sharp coloured
 /// edge (the spotlight's rim) smeared over 2 x 2 blocks is not a mark, while lines drawn over
