@@ -1,29 +1,14 @@
 //! The exact power's copies compiled for the processor's vector units (as the renderer's
 //! `raster/render/copies.rs` and the lighter's `specialise/copies.rs`): [`super::operations`]
 //! holds the scalar operations, written once; each copy takes the proof that the processor
-//! runs it. The copies do the same operations (FMA only replaces the library call behind
-//! `mul_add`; AVX-512 only packs the lanes that need a power before the same scalar steps),
-//! so they give the same bits on every processor (tested in [`super`]).
+//! runs it. The copy does the same operations (AVX-512 only packs the lanes that need a
+//! power before the same scalar steps), so it gives the same bits on every processor
+//! (tested in [`super`]).
 
 #[cfg(target_arch = "x86_64")]
-use super::operations::{pow_f32_body, pow_fractional};
+use super::operations::pow_fractional;
 #[cfg(target_arch = "x86_64")]
-use crate::cpu::{Avx512, Fma};
-
-/// [`super::pow_f32`] compiled with the FMA instruction, for the proof that the processor
-/// has it.
-#[cfg(target_arch = "x86_64")]
-#[inline]
-pub fn pow_f32_fma(_: Fma, x: f32, e: f32) -> f32 {
-    // SAFETY: the proof says the processor has FMA.
-    unsafe { pow_f32_fma_body(x, e) }
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-fn pow_f32_fma_body(x: f32, e: f32) -> f32 {
-    pow_f32_body(x, e)
-}
+use crate::cpu::Avx512;
 
 /// [`super::pow_f32_chunk_packed`]'s AVX-512 way, for a fractional `e > 0`, for the proof
 /// that the processor has AVX-512F/DQ/VL (and AVX2, FMA).

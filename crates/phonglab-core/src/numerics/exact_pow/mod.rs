@@ -11,14 +11,14 @@
 //! | anything else (shininess 25.6) | `2^(e log2 x)`, both by polynomials in f64 | ~1e-10 relative |
 
 //!
-//! The steps are in [`operations`], written once; [`copies`] compiles them for the FMA
-//! instruction and AVX-512, and this file's two entries choose the copy the processor runs.
+//! The steps are in [`operations`], written once; [`copies`] compiles them for AVX-512, and
+//! [`pow_f32_chunk_packed`] chooses that copy where the processor runs it.
 
 pub mod copies;
 pub mod operations;
 
 #[cfg(target_arch = "x86_64")]
-use crate::cpu::{Avx512, Fma};
+use crate::cpu::Avx512;
 pub use operations::{pow_f32_body, pow_f32_chunk, whole_exponent};
 
 /// `x^e` in f32 for `x >= 0` (or NaN), computed in f64 and rounded once: the error before
@@ -29,16 +29,11 @@ pub use operations::{pow_f32_body, pow_f32_chunk, whole_exponent};
 /// vectorise; the specialised kernels ([`pow_f32_chunk`]) and the general engine do the
 /// same operations, so they agree bit for bit.
 ///
-/// The polynomials use fused multiply-adds (`mul_add`, exactly rounded by definition, so
-/// every processor gives the same bits): this scalar entry runs a copy compiled for the
-/// FMA instruction where the processor has it (the array kernels are compiled so already),
-/// and the library's `fma` elsewhere.
+/// The polynomials' steps are a product then a sum, each rounded (`operations::fma`, not
+/// the fused instruction, which WebAssembly lacks), so every processor and the page give the
+/// same bits.
 #[inline]
 pub fn pow_f32(x: f32, e: f32) -> f32 {
-    #[cfg(target_arch = "x86_64")]
-    if let Some(proof) = Fma::detect() {
-        return copies::pow_f32_fma(proof, x, e);
-    }
     pow_f32_body(x, e)
 }
 
@@ -101,14 +96,4 @@ mod tests {
         check::<64>(0x0f1e_2d3c_4b5a_6978);
     }
 
-    /// The FMA copy gives the portable operations' bits (the library's `fma` where the
-    /// instruction is missing): correctly rounded by definition either way.
-    #[test]
-    fn the_fma_copy_is_the_portable_power_bit_for_bit() {
-        let mut next = uniform(0x6a09_e667_f3bc_c909);
-        for _ in 0..20_000 {
-            let (x, e) = ((next() * 1.5) as f32, [25.6, 0.5, 8.0, 127.5, 3.3e-3][(next() * 5.0) as usize % 5]);
-            assert_eq!(pow_f32(x, e).to_bits(), pow_f32_body(x, e).to_bits(), "x = {x}, e = {e}");
-        }
-    }
 }

@@ -1,10 +1,20 @@
 //! The exact power's operations, written once: the scalar steps every copy runs.
 
+/// `a * b + c` rounded twice, the product first: the polynomials' step. Not the fused
+/// multiply-add (one rounding): WebAssembly has no such instruction, and its exact
+/// emulation (`numerics::fused`) made the page's per-pixel Phong 3.7 times the same
+/// arithmetic built natively; rounded twice, the page's Phong takes half the time, every
+/// target still gives the same bits (Rust never fuses a product and a sum on its own), and
+/// the desktop's takes 13-16 % more (docs/performance.md, "In the browser"). The error it
+/// adds, a few 2^-53, is far below the polynomials' own (2e-12 and 1e-13).
+#[inline(always)]
+fn fma(a: f64, b: f64, c: f64) -> f64 {
+    a * b + c
+}
+
 /// 2^52 + 2^51: adding it to a double below 2^51 in magnitude rounds to an integer held
 /// in the low mantissa bits (the classic magic-number conversion, vectorisable where a
 /// packed double-to-int64 conversion is not).
-use crate::numerics::fused::mul_add as fma;
-
 const MAGIC: f64 = 6_755_399_441_055_744.0;
 
 /// `log2(x)` for finite `x > 0`, absolute error < 2e-12: `x = m 2^k` with m in
@@ -24,7 +34,6 @@ fn log2_f64(x: f64) -> f64 {
     // 1 + f2/3 + f2^2/5 + ... + f2^6/13 by Estrin's scheme: pairs first, then pairs of
     // pairs, so the longest chain is 4 steps instead of Horner's 6 (the loop is bound by
     // latency, not by the number of operations).
-    // Each step a fused multiply-add: one rounding instead of two, one instruction.
     let f2 = f * f;
     let f4 = f2 * f2;
     let f8 = f4 * f4;
@@ -46,7 +55,6 @@ fn exp2_f64(t: f64) -> f64 {
     let y = (tc - n) * std::f64::consts::LN_2;
     // The Taylor series to y^10/10! by Estrin's scheme (longest chain 4 steps, not 10):
     // every coefficient a constant 1/k!, folded when compiled.
-    // Each step a fused multiply-add.
     let y2 = y * y;
     let y4 = y2 * y2;
     let y8 = y4 * y4;
@@ -62,7 +70,7 @@ fn exp2_f64(t: f64) -> f64 {
     if t > 1023.0 { f64::INFINITY } else { r }
 }
 
-/// [`super::pow_f32`]'s operations (written once; `copies` compiles them with FMA).
+/// [`super::pow_f32`]'s operations (written once; `copies` compiles them for wider vectors).
 #[inline(always)]
 pub fn pow_f32_body(x: f32, e: f32) -> f32 {
     let r = match whole_exponent(e) {
