@@ -6,7 +6,8 @@ load the page's own clock (performance.now(), ms from navigation) at: the page's
 the wasm's first and last byte, WebAssembly.instantiateStreaming's start and end (the
 compile overlaps the download), and the first frame the app counts (its probe's
 `frames`). With --profile the last load runs under the DevTools sampling profiler too and
-the functions with the most time under them (inclusive) are printed.
+the functions with the most time under them (inclusive) are printed (their names only in a
+dist/ built without wasm-opt, `NO_WASM_OPT=1 scripts/web`: wasm-opt drops the name section).
 Usage: scripts/web_first_frame.py [DIST] [--rate RATE] [--runs RUNS] [--profile]
 """
 import collections
