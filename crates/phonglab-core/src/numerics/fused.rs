@@ -1,35 +1,11 @@
-//! The fused multiply-add, `a * b + c` rounded once, where the processor has no such
-//! instruction (WebAssembly): emulated exactly, without branches, so that loops over it
-//! still vectorise and every target gives the same bits. Elsewhere it is `f64::mul_add`.
+//! Error-free transforms without a fused multiply-add, for the processor that has none
+//! (WebAssembly): the exact dot products' product error by Dekker's method, and Knuth's
+//! TwoSum, both branch-free, so loops over them still vectorise and the page gives the
+//! desktop's bits (`robust::two_prod` takes the fused instruction elsewhere).
 //!
-//! The emulation is Boldo and Melquiond's (*Emulation of FMA and correctly rounded sums:
-//! proved algorithms using rounding to odd*, IEEE Trans. Computers 57(4), 2008, algorithm
-//! 5.4): `a b = uh + ul` and `c + uh = th + tl` exactly (error-free transforms), then
-//! `RN(th + RO(tl + ul))`, where RO rounds to odd. Exact for finite operands whose
-//! products and sums neither overflow nor underflow (the polynomials it serves run on
-//! values near 1).
-
-/// `a * b + c` rounded once.
-#[inline(always)]
-pub fn mul_add(a: f64, b: f64, c: f64) -> f64 {
-    #[cfg(target_arch = "wasm32")]
-    {
-        emulated(a, b, c)
-    }
-    #[cfg(not(target_arch = "wasm32"))]
-    {
-        a.mul_add(b, c)
-    }
-}
-
-/// `a * b + c` rounded once, with no fused instruction (see the module's documentation).
-#[inline(always)]
-pub fn emulated(a: f64, b: f64, c: f64) -> f64 {
-    let uh = a * b;
-    let ul = dekker_error(a, b, uh);
-    let (th, tl) = two_sum(c, uh);
-    th + add_round_to_odd(tl, ul)
-}
+//! (Until 2026-11-29 this module also emulated the fused multiply-add itself, rounding to
+//! odd, for the exact power's polynomials; they now round each product and sum, which the
+//! page runs at the desktop's pace: docs/performance.md, "In the browser".)
 
 /// Error-free sum: `a + b = s + e` exactly (Knuth's TwoSum).
 #[inline(always)]
@@ -56,18 +32,6 @@ pub fn dekker_error(a: f64, b: f64, p: f64) -> f64 {
     ((ah * bh - p) + ah * bl + al * bh) + al * bl
 }
 
-/// `x + y` rounded to odd: exact when it is representable, else the one of the two
-/// neighbours whose last bit is 1. From the sum rounded to nearest and its error: the
-/// neighbour towards zero is the rounded sum when the error has its sign, else the rounded
-/// sum one unit in the last place towards zero; then its last bit is set.
-#[inline(always)]
-fn add_round_to_odd(x: f64, y: f64) -> f64 {
-    let (s, e) = two_sum(x, y);
-    let bits = s.to_bits();
-    let towards_zero = if (bits ^ e.to_bits()) >> 63 == 0 { bits } else { bits.wrapping_sub(1) };
-    if e == 0.0 { s } else { f64::from_bits(towards_zero | 1) }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -88,32 +52,38 @@ mod tests {
     }
 
     #[test]
-    fn the_emulation_gives_the_fused_instructions_bits() {
-        let v = values(3 * 400_000, 0x9e37_79b9_7f4a_7c15);
-        let mut near_ties = 0;
-        for t in v.chunks(3) {
-            let (a, b, c) = (t[0], t[1], t[2]);
-            let fused = a.mul_add(b, c);
-            assert_eq!(emulated(a, b, c).to_bits(), fused.to_bits(), "{a:e} {b:e} {c:e}");
-            near_ties += usize::from((a * b + c).to_bits() != fused.to_bits());
-        }
-        // Cancelling cases, where the unfused form is far off; and Dekker's product error,
-        // which the error-free product takes where there is no fused instruction.
-        for t in v.chunks(2) {
+    fn dekkers_product_error_is_the_fused_instructions() {
+        for t in values(2 * 400_000, 0x9e37_79b9_7f4a_7c15).chunks(2) {
             let (a, b) = (t[0], t[1]);
             let p = a * b;
-            let dekker = dekker_error(a, b, p);
-            assert_eq!(dekker.to_bits(), a.mul_add(b, -p).to_bits(), "{a:e} {b:e}");
-            let c = -(a * b);
-            assert_eq!(emulated(a, b, c).to_bits(), a.mul_add(b, c).to_bits(), "{a:e} {b:e}");
-            let c = -(a * b) * (1.0 + f64::EPSILON);
-            assert_eq!(emulated(a, b, c).to_bits(), a.mul_add(b, c).to_bits(), "{a:e} {b:e}");
+            assert_eq!(dekker_error(a, b, p).to_bits(), a.mul_add(b, -p).to_bits(), "{a:e} {b:e}");
         }
-        // The polynomials' own: near 1, constants of every kind.
-        for t in values(2 * 100_000, 7).chunks(2) {
-            let (y, k) = (t[0].fract() * 0.5, 1.0 / (1.0 + t[1].abs()));
-            assert_eq!(emulated(y, k, 0.5).to_bits(), y.mul_add(k, 0.5).to_bits(), "{y:e} {k:e}");
+    }
+
+    /// `x` as an integer number of units of 2^`unit`, where it is one.
+    fn in_units(x: f64, unit: i32) -> i128 {
+        let scaled = x * 2f64.powi(-unit);
+        assert_eq!(scaled.fract(), 0.0, "{x:e} is a whole number of 2^{unit}");
+        scaled as i128
+    }
+
+    #[test]
+    fn two_sum_is_exact() {
+        // s + e = a + b, checked in integers: every value below is a whole number of units
+        // of the smaller operand's last place, and no more than 2^120 of them.
+        let mut inexact = 0;
+        for t in values(2 * 200_000, 7).chunks(2) {
+            let (a, b) = (t[0], t[1]);
+            let unit = a.abs().min(b.abs()).log2().floor() as i32 - 52;
+            if (a.abs().max(b.abs()).log2() as i32 - unit) > 110 {
+                continue;
+            }
+            let (s, e) = two_sum(a, b);
+            assert_eq!(s, a + b);
+            let exact = in_units(a, unit) + in_units(b, unit);
+            assert_eq!(in_units(s, unit) + in_units(e, unit), exact, "{a:e} {b:e}");
+            inexact += usize::from(e != 0.0);
         }
-        assert!(near_ties > 1000, "the test is one where rounding twice differs: {near_ties}");
+        assert!(inexact > 100_000, "the pairs are ones whose sum rounds: {inexact}");
     }
 }

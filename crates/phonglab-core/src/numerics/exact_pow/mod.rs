@@ -95,5 +95,4 @@ mod tests {
         check::<128>(0x9bdf_1357_ace0_2468);
         check::<64>(0x0f1e_2d3c_4b5a_6978);
     }
-
 }
