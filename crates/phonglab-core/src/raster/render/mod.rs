@@ -27,6 +27,7 @@
 pub mod copies;
 mod kept;
 mod mask;
+mod outcodes;
 pub mod resolve;
 pub mod setup;
 mod timing;

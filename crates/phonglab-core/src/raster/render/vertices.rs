@@ -4,6 +4,7 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 use rayon::prelude::*;
 
 use super::Job;
+use super::outcodes;
 use super::window::WindowVert;
 use crate::model::transform::NormalMatrix;
 use crate::specialise::lighter::{Lighter, Lit};
@@ -18,6 +19,9 @@ pub struct Vertices {
     /// Window coordinates of the clip-space positions (see
     /// [`super::window::window_vertices`]).
     pub window: Vec<WindowVert>,
+    /// Where each clip-space position lies against the view volume ([`outcodes::code`]):
+    /// setup reads these, not the positions, for the triangles it need not clip.
+    pub codes: Vec<u8>,
     /// Eye-space normals, `(M^-1)^T n`, not yet normalised (Phong renormalises per pixel).
     pub normal: Vec<Vec3>,
     /// Gouraud: each vertex's colour per side, as the pipeline interpolates it: OpenGL
@@ -71,6 +75,7 @@ impl Vertices {
         self.eye.resize(n, Vec3::ZERO);
         self.clip.resize(n, Vec4::ZERO);
         self.window.resize(n, (0, 0, 0.0, 0.0));
+        self.codes.resize(n, 0);
         self.normal.resize(n, Vec3::ZERO);
         // One pass over chunks of vertices on both threads: transforms and, for Gouraud, the
         // lighting and each side's colour (one fork and join a frame for the whole stage).
@@ -83,9 +88,10 @@ impl Vertices {
             .zip(self.clip.par_chunks_mut(GRAIN))
             .zip(self.normal.par_chunks_mut(GRAIN))
             .zip(self.window.par_chunks_mut(GRAIN))
+            .zip(self.codes.par_chunks_mut(GRAIN))
             .zip(gouraud_chunks.into_par_iter())
             .enumerate()
-            .for_each(|(k, ((((eye, clip), normal), window), gouraud))| {
+            .for_each(|(k, (((((eye, clip), normal), window), codes), gouraud))| {
                 let base = k * GRAIN;
                 // Compared bit for bit with what is overwritten, without a branch.
                 let mut same = true;
@@ -102,6 +108,7 @@ impl Vertices {
                     moved.store(true, std::sync::atomic::Ordering::Relaxed);
                 }
                 window_vertices(clip, window);
+                outcodes::codes(clip, codes);
                 if let (Some((cf, cb)), Some(lighter)) = (gouraud, lighter) {
                     light_chunk(job, lighter, base, cf, cb, None);
                 }
