@@ -8,8 +8,8 @@
 use glam::Vec4;
 
 use super::Job;
-use super::resolve::{Attributes, BandCounts, BandInput, Fragments};
-use super::setup::{ChunkOut, ClippedCorners, RasterTri, Setup};
+use super::resolve::{BandCounts, BandInput, Fragments};
+use super::setup::{ChunkOut, Setup};
 use super::vertices::Vertices;
 use super::visibility::Band;
 use super::window::WindowVert;
@@ -61,25 +61,6 @@ pub fn draw_band(isa: Isa, setup: &Setup, bin: &[u32], band: Band<'_>) -> usize 
     super::visibility::draw_band_any(Portable, setup, bin, band)
 }
 
-/// The attributes of triangles `ts` (a chunk) into `out`, through the copy `isa`: the AVX2
-/// copy does the same operations, in registers of four f64 where the portable copy has
-/// SSE2's two, so the same bits (tested).
-pub(super) fn attributes_chunk(
-    isa: Isa,
-    job: &Job<'_>,
-    verts: &Vertices,
-    ts: &[RasterTri],
-    corners: &ClippedCorners,
-    out: Attributes<'_>,
-) {
-    #[cfg(target_arch = "x86_64")]
-    if let Some(proof) = isa.avx2() {
-        return x86::attributes_chunk(proof, job, verts, ts, corners, out);
-    }
-    let _ = isa;
-    super::resolve::attributes_chunk_any(job, verts, ts, corners, out);
-}
-
 /// Shades one band (`band`) into `px`, its pixels, through the copy `isa`. Returns the
 /// pixels covered and the lighting evaluations made (fragments lit). The copies do the
 /// same operations, so they give the same bits (Rust never fuses a multiply and an add by
@@ -104,9 +85,9 @@ mod x86 {
     use crate::cpu::{Avx2, Avx512};
     use crate::raster::render::Job;
     use crate::raster::render::resolve::{
-        Attributes, BandCounts, BandInput, Fragments, LANES as ResolveLanes, ResolveLanes as Lanes,
+        BandCounts, BandInput, Fragments, LANES as ResolveLanes, ResolveLanes as Lanes,
     };
-    use crate::raster::render::setup::{ChunkOut, ClippedCorners, RasterTri, Setup};
+    use crate::raster::render::setup::{ChunkOut, Setup};
     use crate::raster::render::vertices::Vertices;
     use crate::raster::render::visibility::{Band, LANES, RowPlane, SpanFill};
     use crate::raster::render::window::WindowVert;
@@ -154,29 +135,6 @@ mod x86 {
     #[target_feature(enable = "avx2,fma")]
     fn draw_band_avx2(proof: Avx2, setup: &Setup, bin: &[u32], band: Band<'_>) -> usize {
         crate::raster::render::visibility::draw_band_any(proof, setup, bin, band)
-    }
-
-    pub(super) fn attributes_chunk(
-        _: Avx2,
-        job: &Job<'_>,
-        verts: &Vertices,
-        ts: &[RasterTri],
-        corners: &ClippedCorners,
-        out: Attributes<'_>,
-    ) {
-        // SAFETY: the proof says the processor has AVX2 and FMA.
-        unsafe { attributes_chunk_avx2(job, verts, ts, corners, out) }
-    }
-
-    #[target_feature(enable = "avx2,fma")]
-    fn attributes_chunk_avx2(
-        job: &Job<'_>,
-        verts: &Vertices,
-        ts: &[RasterTri],
-        corners: &ClippedCorners,
-        out: Attributes<'_>,
-    ) {
-        crate::raster::render::resolve::attributes_chunk_any(job, verts, ts, corners, out);
     }
 
     pub(super) fn resolve_band_avx2(
@@ -363,49 +321,5 @@ mod x86 {
             (lo | hi << 4) as u32
         };
         !equal & 0xff
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use glam::Vec3;
-
-    use super::*;
-
-    /// The attribute pass's AVX2 copy gives the portable copy's bits: every triangle's
-    /// colour planes, edge functions, positions and normals, for each shading, two-sided
-    /// too (the sphere and teapot of the benchmark scene, with clipped triangles among them
-    /// at 211 x 101).
-    #[test]
-    fn the_attribute_copies_agree_bit_for_bit() {
-        use crate::mesh::{sphere, teapot};
-        use crate::model::presets::bench_scene;
-        use crate::raster::shaded::bench_job;
-        let Some(avx2) = crate::cpu::Avx2::detect() else { return };
-        let mut two_sided = bench_scene(21);
-        two_sided.light_model.two_sided = true;
-        let (sphere, teapot) = (sphere::glu_sphere(1.0, 50, 50), teapot::glut_teapot(0.8, 7));
-        let mut compared = 0;
-        for (scene, mesh) in [(bench_scene(21), &sphere), (two_sided, &teapot)] {
-            for shading in crate::model::view::Shading::ALL {
-                let job = bench_job(&scene, mesh, shading);
-                let mut r = crate::raster::render::Renderer::new();
-                r.render(&job, 211, 101).unwrap();
-                let ts = &r.setup.tris;
-                let n = ts.len();
-                let run = |isa: Isa| {
-                    let mut edges = vec![Default::default(); n];
-                    let mut colors = vec![Default::default(); n];
-                    let (mut pos, mut nrm) = (vec![[Vec3::ZERO; 3]; n], vec![[Vec3::ZERO; 3]; n]);
-                    let out =
-                        Attributes { edges: &mut edges, colors: &mut colors, pos: &mut pos, nrm: &mut nrm, seen: None };
-                    attributes_chunk(isa, &job, &r.vertices, ts, &r.setup.corners, out);
-                    format!("{edges:?} {colors:?} {pos:?} {nrm:?}")
-                };
-                assert_eq!(run(Isa::Portable), run(Isa::Avx2(avx2)), "{shading:?}");
-                compared += n;
-            }
-        }
-        assert!(compared > 20_000, "{compared}");
     }
 }
