@@ -19,15 +19,17 @@ use crate::cpu::{Isa, Portable};
 /// ([`super::window::to_window`], the same bits as setup's own), into `out`: once per mesh
 /// vertex, for the triangles that need no clipping, instead of once per triangle corner (a
 /// vertex of a closed mesh has about six triangles). Vertices outside the view volume get
-/// values no unclipped triangle reads. The copy `isa` compiled with AVX2 rounds inline
-/// instead of through the C library.
-pub fn window_vertices(isa: Isa, clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
+/// values no unclipped triangle reads. And each vertex's code against the view volume
+/// into `codes` ([`super::outcodes::codes`]). The copy `isa` compiled with AVX2 rounds
+/// inline instead of through the C library, and makes the codes eight vertices at a time.
+pub fn window_vertices(isa: Isa, clip: &[Vec4], out: &mut [WindowVert], codes: &mut [u8], width: usize, height: usize) {
     #[cfg(target_arch = "x86_64")]
     if let Some(proof) = isa.avx2() {
-        return x86::window_vertices(proof, clip, out, width, height);
+        return x86::window_vertices(proof, clip, out, codes, width, height);
     }
     let _ = isa;
     super::window::window_vertices(clip, out, width, height);
+    super::outcodes::codes(clip, codes);
 }
 
 /// Clips, faces, culls and snaps the mesh triangles `faces` into `out` (their slots and the rest),
@@ -92,14 +94,22 @@ mod x86 {
     use crate::raster::render::visibility::{Band, LANES, RowPlane, SpanFill};
     use crate::raster::render::window::WindowVert;
 
-    pub(super) fn window_vertices(_: Avx2, clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
+    pub(super) fn window_vertices(
+        _: Avx2,
+        clip: &[Vec4],
+        out: &mut [WindowVert],
+        codes: &mut [u8],
+        width: usize,
+        height: usize,
+    ) {
         // SAFETY: the proof says the processor has AVX2 and FMA.
-        unsafe { window_vertices_avx2(clip, out, width, height) }
+        unsafe { window_vertices_avx2(clip, out, codes, width, height) }
     }
 
     #[target_feature(enable = "avx2,fma")]
-    fn window_vertices_avx2(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
+    fn window_vertices_avx2(clip: &[Vec4], out: &mut [WindowVert], codes: &mut [u8], width: usize, height: usize) {
         crate::raster::render::window::window_vertices(clip, out, width, height);
+        crate::raster::render::outcodes::codes(clip, codes);
     }
 
     pub(super) fn setup_faces(

@@ -236,8 +236,8 @@ impl Renderer {
     fn vertices_stage(&mut self, job: &Job<'_>, lighter: &Lighter, width: usize, height: usize) -> bool {
         let isa = self.isa;
         let apart = self.visibility.lights_apart(job.mode);
-        let window = |clip: &[glam::Vec4], out: &mut [window::WindowVert]| {
-            copies::window_vertices(isa, clip, out, width, height);
+        let window = |clip: &[glam::Vec4], out: &mut [window::WindowVert], codes: &mut [u8]| {
+            copies::window_vertices(isa, clip, out, codes, width, height);
         };
         let moved = self.vertices.run(job, (!apart).then_some(lighter), window);
         let kept = self.visibility.decide(job, width, height, moved);

@@ -4,7 +4,6 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 use rayon::prelude::*;
 
 use super::Job;
-use super::outcodes;
 use super::window::WindowVert;
 use crate::model::transform::NormalMatrix;
 use crate::specialise::lighter::{Lighter, Lit};
@@ -55,15 +54,16 @@ const GRAIN: usize = 512;
 impl Vertices {
     /// Transforms the job's mesh and, given `lighter` (Gouraud), lights it in the same pass;
     /// `window_vertices` takes a chunk of clip-space positions to the image's window
-    /// coordinates (a copy of [`super::window::window_vertices`] for this processor, chosen
-    /// by the caller). Returns whether any vertex moved: whether an eye-space position or
+    /// coordinates and their codes against the view volume (a copy of
+    /// [`super::window::window_vertices`] and [`super::outcodes::codes`] for this
+    /// processor, chosen by the caller). Returns whether any vertex moved: whether an eye-space position or
     /// normal or a clip-space position differs, in any bit, from the last run's (or their
     /// count does).
     pub fn run(
         &mut self,
         job: &Job<'_>,
         lighter: Option<&Lighter>,
-        window_vertices: impl Fn(&[Vec4], &mut [WindowVert]) + Sync,
+        window_vertices: impl Fn(&[Vec4], &mut [WindowVert], &mut [u8]) + Sync,
     ) -> bool {
         let mesh = job.mesh;
         let n = mesh.positions.len();
@@ -107,8 +107,7 @@ impl Vertices {
                 if !same {
                     moved.store(true, std::sync::atomic::Ordering::Relaxed);
                 }
-                window_vertices(clip, window);
-                outcodes::codes(clip, codes);
+                window_vertices(clip, window, codes);
                 if let (Some((cf, cb)), Some(lighter)) = (gouraud, lighter) {
                     light_chunk(job, lighter, base, cf, cb, None);
                 }
