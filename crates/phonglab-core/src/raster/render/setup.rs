@@ -22,7 +22,7 @@ use super::window::{ONE, WindowVert, to_window};
 /// area `(x1-x0)(y2-y0) - (x2-x0)(y1-y0)` is positive.
 ///
 /// 76 bytes: a million of them are written by setup and read by binning, drawing and
-/// the attributes every frame, so the corners are kept in 32 bits (a corner lies within
+/// the resolve every frame, so the corners are kept in 32 bits (a corner lies within
 /// the guard band, under 5 viewports from the centre: 2^31 / 256 / 5 is over a million
 /// pixels) and widened to 64 for the edge functions' products ([`RasterTri::xy`]), and
 /// where its corners lie in the mesh triangle is a number ([`Corners`]): the mesh
@@ -55,7 +55,7 @@ pub struct RasterTri {
 
 impl RasterTri {
     /// The slot of a mesh triangle that gives no raster triangle: an empty box of rows
-    /// (binning skips it) and a back face (the attributes skip it).
+    /// (binning skips it), marked a back face.
     pub const HOLE: RasterTri = RasterTri {
         x: [0; 3],
         y: [0; 3],

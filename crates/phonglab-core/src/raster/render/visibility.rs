@@ -830,7 +830,7 @@ mod tests {
             // Bands of 3 rows from row 0 and row 4 (rows that cut the triangle's box).
             for (y_start, rows) in [(0, 3), (3, 3), (4, 3)] {
                 let n = w * rows;
-                let init = |k: usize| if k % 3 == 0 { 0.25 } else { 0.5 };
+                let init = |k: usize| if k.is_multiple_of(3) { 0.25 } else { 0.5 };
                 let (mut d_small, mut r_small) = ((0..n).map(init).collect::<Vec<f32>>(), vec![7u32; n]);
                 let (mut d_spans, mut r_spans) = (d_small.clone(), r_small.clone());
                 let band = |depth, raster| Band { y_start, width: w, depth, raster };
