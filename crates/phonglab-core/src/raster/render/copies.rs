@@ -8,8 +8,8 @@
 use glam::Vec4;
 
 use super::Job;
-use super::resolve::{Attributes, BandCounts, BandInput, Fragments};
-use super::setup::{ChunkOut, ClippedCorners, RasterTri, Setup};
+use super::resolve::{BandCounts, BandInput, Fragments};
+use super::setup::{ChunkOut, Setup};
 use super::vertices::Vertices;
 use super::visibility::Band;
 use super::window::WindowVert;
@@ -19,15 +19,17 @@ use crate::cpu::{Isa, Portable};
 /// ([`super::window::to_window`], the same bits as setup's own), into `out`: once per mesh
 /// vertex, for the triangles that need no clipping, instead of once per triangle corner (a
 /// vertex of a closed mesh has about six triangles). Vertices outside the view volume get
-/// values no unclipped triangle reads. The copy `isa` compiled with AVX2 rounds inline
-/// instead of through the C library.
-pub fn window_vertices(isa: Isa, clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
+/// values no unclipped triangle reads. And each vertex's code against the view volume
+/// into `codes` ([`super::outcodes::codes`]). The copy `isa` compiled with AVX2 rounds
+/// inline instead of through the C library, and makes the codes eight vertices at a time.
+pub fn window_vertices(isa: Isa, clip: &[Vec4], out: &mut [WindowVert], codes: &mut [u8], width: usize, height: usize) {
     #[cfg(target_arch = "x86_64")]
     if let Some(proof) = isa.avx2() {
-        return x86::window_vertices(proof, clip, out, width, height);
+        return x86::window_vertices(proof, clip, out, codes, width, height);
     }
     let _ = isa;
     super::window::window_vertices(clip, out, width, height);
+    super::outcodes::codes(clip, codes);
 }
 
 /// Clips, faces, culls and snaps the mesh triangles `faces` into `out` (their slots and the rest),
@@ -61,25 +63,6 @@ pub fn draw_band(isa: Isa, setup: &Setup, bin: &[u32], band: Band<'_>) -> usize 
     super::visibility::draw_band_any(Portable, setup, bin, band)
 }
 
-/// The attributes of triangles `ts` (a chunk) into `out`, through the copy `isa`: the AVX2
-/// copy does the same operations, in registers of four f64 where the portable copy has
-/// SSE2's two, so the same bits (tested).
-pub(super) fn attributes_chunk(
-    isa: Isa,
-    job: &Job<'_>,
-    verts: &Vertices,
-    ts: &[RasterTri],
-    corners: &ClippedCorners,
-    out: Attributes<'_>,
-) {
-    #[cfg(target_arch = "x86_64")]
-    if let Some(proof) = isa.avx2() {
-        return x86::attributes_chunk(proof, job, verts, ts, corners, out);
-    }
-    let _ = isa;
-    super::resolve::attributes_chunk_any(job, verts, ts, corners, out);
-}
-
 /// Shades one band (`band`) into `px`, its pixels, through the copy `isa`. Returns the
 /// pixels covered and the lighting evaluations made (fragments lit). The copies do the
 /// same operations, so they give the same bits (Rust never fuses a multiply and an add by
@@ -104,21 +87,29 @@ mod x86 {
     use crate::cpu::{Avx2, Avx512};
     use crate::raster::render::Job;
     use crate::raster::render::resolve::{
-        Attributes, BandCounts, BandInput, Fragments, LANES as ResolveLanes, ResolveLanes as Lanes,
+        BandCounts, BandInput, Fragments, LANES as ResolveLanes, ResolveLanes as Lanes,
     };
-    use crate::raster::render::setup::{ChunkOut, ClippedCorners, RasterTri, Setup};
+    use crate::raster::render::setup::{ChunkOut, Setup};
     use crate::raster::render::vertices::Vertices;
     use crate::raster::render::visibility::{Band, LANES, RowPlane, SpanFill};
     use crate::raster::render::window::WindowVert;
 
-    pub(super) fn window_vertices(_: Avx2, clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
+    pub(super) fn window_vertices(
+        _: Avx2,
+        clip: &[Vec4],
+        out: &mut [WindowVert],
+        codes: &mut [u8],
+        width: usize,
+        height: usize,
+    ) {
         // SAFETY: the proof says the processor has AVX2 and FMA.
-        unsafe { window_vertices_avx2(clip, out, width, height) }
+        unsafe { window_vertices_avx2(clip, out, codes, width, height) }
     }
 
     #[target_feature(enable = "avx2,fma")]
-    fn window_vertices_avx2(clip: &[Vec4], out: &mut [WindowVert], width: usize, height: usize) {
+    fn window_vertices_avx2(clip: &[Vec4], out: &mut [WindowVert], codes: &mut [u8], width: usize, height: usize) {
         crate::raster::render::window::window_vertices(clip, out, width, height);
+        crate::raster::render::outcodes::codes(clip, codes);
     }
 
     pub(super) fn setup_faces(
@@ -154,29 +145,6 @@ mod x86 {
     #[target_feature(enable = "avx2,fma")]
     fn draw_band_avx2(proof: Avx2, setup: &Setup, bin: &[u32], band: Band<'_>) -> usize {
         crate::raster::render::visibility::draw_band_any(proof, setup, bin, band)
-    }
-
-    pub(super) fn attributes_chunk(
-        _: Avx2,
-        job: &Job<'_>,
-        verts: &Vertices,
-        ts: &[RasterTri],
-        corners: &ClippedCorners,
-        out: Attributes<'_>,
-    ) {
-        // SAFETY: the proof says the processor has AVX2 and FMA.
-        unsafe { attributes_chunk_avx2(job, verts, ts, corners, out) }
-    }
-
-    #[target_feature(enable = "avx2,fma")]
-    fn attributes_chunk_avx2(
-        job: &Job<'_>,
-        verts: &Vertices,
-        ts: &[RasterTri],
-        corners: &ClippedCorners,
-        out: Attributes<'_>,
-    ) {
-        crate::raster::render::resolve::attributes_chunk_any(job, verts, ts, corners, out);
     }
 
     pub(super) fn resolve_band_avx2(
@@ -363,49 +331,5 @@ mod x86 {
             (lo | hi << 4) as u32
         };
         !equal & 0xff
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use glam::Vec3;
-
-    use super::*;
-
-    /// The attribute pass's AVX2 copy gives the portable copy's bits: every triangle's
-    /// colour planes, edge functions, positions and normals, for each shading, two-sided
-    /// too (the sphere and teapot of the benchmark scene, with clipped triangles among them
-    /// at 211 x 101).
-    #[test]
-    fn the_attribute_copies_agree_bit_for_bit() {
-        use crate::mesh::{sphere, teapot};
-        use crate::model::presets::bench_scene;
-        use crate::raster::shaded::bench_job;
-        let Some(avx2) = crate::cpu::Avx2::detect() else { return };
-        let mut two_sided = bench_scene(21);
-        two_sided.light_model.two_sided = true;
-        let (sphere, teapot) = (sphere::glu_sphere(1.0, 50, 50), teapot::glut_teapot(0.8, 7));
-        let mut compared = 0;
-        for (scene, mesh) in [(bench_scene(21), &sphere), (two_sided, &teapot)] {
-            for shading in crate::model::view::Shading::ALL {
-                let job = bench_job(&scene, mesh, shading);
-                let mut r = crate::raster::render::Renderer::new();
-                r.render(&job, 211, 101).unwrap();
-                let ts = &r.setup.tris;
-                let n = ts.len();
-                let run = |isa: Isa| {
-                    let mut edges = vec![Default::default(); n];
-                    let mut colors = vec![Default::default(); n];
-                    let (mut pos, mut nrm) = (vec![[Vec3::ZERO; 3]; n], vec![[Vec3::ZERO; 3]; n]);
-                    let out =
-                        Attributes { edges: &mut edges, colors: &mut colors, pos: &mut pos, nrm: &mut nrm, seen: None };
-                    attributes_chunk(isa, &job, &r.vertices, ts, &r.setup.corners, out);
-                    format!("{edges:?} {colors:?} {pos:?} {nrm:?}")
-                };
-                assert_eq!(run(Isa::Portable), run(Isa::Avx2(avx2)), "{shading:?}");
-                compared += n;
-            }
-        }
-        assert!(compared > 20_000, "{compared}");
     }
 }

@@ -27,6 +27,7 @@
 pub mod copies;
 mod kept;
 mod mask;
+mod outcodes;
 pub mod resolve;
 pub mod setup;
 mod timing;
@@ -235,8 +236,8 @@ impl Renderer {
     fn vertices_stage(&mut self, job: &Job<'_>, lighter: &Lighter, width: usize, height: usize) -> bool {
         let isa = self.isa;
         let apart = self.visibility.lights_apart(job.mode);
-        let window = |clip: &[glam::Vec4], out: &mut [window::WindowVert]| {
-            copies::window_vertices(isa, clip, out, width, height);
+        let window = |clip: &[glam::Vec4], out: &mut [window::WindowVert], codes: &mut [u8]| {
+            copies::window_vertices(isa, clip, out, codes, width, height);
         };
         let moved = self.vertices.run(job, (!apart).then_some(lighter), window);
         let kept = self.visibility.decide(job, width, height, moved);
@@ -258,28 +259,20 @@ impl Renderer {
         }
     }
 
-    /// Stage 4 alone over the kept visibility; only Gouraud makes attributes again (its
-    /// colour planes), for the triangles seen. Returns the fragments lit and the bands'
+    /// Stage 4 alone over the kept visibility. Returns the fragments lit and the bands'
     /// time shares (all of it the resolve's).
     fn shade_kept_stage(&mut self, job: &Job<'_>, lighter: &Lighter, height: usize) -> (usize, [f64; 2]) {
         let (isa, verts) = (self.isa, &self.vertices);
-        let attributes = |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
-            copies::attributes_chunk(isa, job, verts, ts, corners, out);
-        };
-        let seen = match job.mode {
-            ShadingMode::Gouraud => self.visibility.seen(&self.setup, job.mesh).0,
-            _ => &[],
-        };
         let bands = height.div_ceil(visibility::BAND);
-        let prepared = resolve::prepare(job, &self.setup, &mut self.scratch, bands, Some(seen), attributes);
+        let prepared = resolve::prepare(job, &self.setup, &mut self.scratch, bands);
         let frame = Frame { isa, job, setup: &self.setup, verts, lighter, prepared: &prepared };
         let pixels = self.visibility.pixels();
         (shade_kept(&frame, &mut self.image, &mut self.scratch, pixels), [0.0, 1.0])
     }
 
-    /// Stages 3 and 4: binning (serial, while the other thread sets up the triangles'
-    /// attributes), then each band drawn and shaded; records what the frame was drawn
-    /// from. Returns the fragments lit and the bands' time shares.
+    /// Stages 3 and 4: binning (serial, while the other thread prepares the resolve: Flat's
+    /// face colours in 8 bits), then each band drawn and shaded; records what the frame was
+    /// drawn from. Returns the fragments lit and the bands' time shares.
     fn draw_and_shade_stage(
         &mut self,
         job: &Job<'_>,
@@ -288,14 +281,11 @@ impl Renderer {
         height: usize,
     ) -> (usize, [f64; 2]) {
         let (isa, verts) = (self.isa, &self.vertices);
-        let attributes = |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
-            copies::attributes_chunk(isa, job, verts, ts, corners, out);
-        };
         let bands = height.div_ceil(visibility::BAND);
         let (setup, image, bins, scratch) = (&self.setup, &mut self.image, &mut self.bins, &mut self.scratch);
         let ((), prepared) = rayon::join(
             || visibility::bin(setup, width, height, image, bins),
-            || resolve::prepare(job, setup, scratch, bands, None, attributes),
+            || resolve::prepare(job, setup, scratch, bands),
         );
         let frame = Frame { isa, job, setup, verts, lighter, prepared: &prepared };
         let pixels = self.visibility.pixels_to_draw(width, height);
@@ -352,7 +342,7 @@ fn draw_and_shade(
 ) -> (usize, [f64; 2]) {
     use rayon::prelude::*;
     let (width, rows) = (image.width, image.width * visibility::BAND);
-    let (shared, fragments) = resolve::split(scratch);
+    let fragments = resolve::fragments(scratch);
     let (covered, lit, drawing, shading) = image
         .rgba
         .par_chunks_mut(rows * 4)
@@ -373,7 +363,7 @@ fn draw_and_shade(
                 );
                 let drawn = web_time::Instant::now();
                 let (job, setup, lighter, p, verts) = (f.job, f.setup, f.lighter, f.prepared, f.verts);
-                let input = resolve::BandInput { job, setup, lighter, p, shared, verts, raster, y0: y_start, width };
+                let input = resolve::BandInput { job, setup, lighter, p, verts, raster, y0: y_start, width };
                 let shaded = copies::resolve_band(f.isa, &input, px, frags);
                 kept.copy_from_slice(raster);
                 (shaded.covered, shaded.lit, (drawn - start).as_secs_f64(), drawn.elapsed().as_secs_f64())
@@ -391,7 +381,7 @@ fn draw_and_shade(
 fn shade_kept(f: &Frame<'_>, image: &mut Image, scratch: &mut resolve::Scratch, kept: &[u32]) -> usize {
     use rayon::prelude::*;
     let (width, rows) = (image.width, image.width * visibility::BAND);
-    let (shared, fragments) = resolve::split(scratch);
+    let fragments = resolve::fragments(scratch);
     image
         .rgba
         .par_chunks_mut(rows * 4)
@@ -401,8 +391,7 @@ fn shade_kept(f: &Frame<'_>, image: &mut Image, scratch: &mut resolve::Scratch, 
         .map(|(b, ((rgba, frags), raster))| {
             let (px, _) = rgba.as_chunks_mut::<4>();
             let (job, setup, lighter, p, verts) = (f.job, f.setup, f.lighter, f.prepared, f.verts);
-            let input =
-                resolve::BandInput { job, setup, lighter, p, shared, verts, raster, y0: b * visibility::BAND, width };
+            let input = resolve::BandInput { job, setup, lighter, p, verts, raster, y0: b * visibility::BAND, width };
             copies::resolve_band(f.isa, &input, px, frags).lit
         })
         .sum()
@@ -451,7 +440,6 @@ impl Renderer {
             job,
             setup: &self.setup,
             lighter: self.lighter.as_ref()?,
-            shared: &self.scratch.tris,
             verts: &self.vertices,
             row,
         };
@@ -571,12 +559,8 @@ mod tests {
             let image = r.render(&job, w, h).unwrap().0.clone();
             let lighter = r.lighter.as_ref().unwrap();
             let bands = h.div_ceil(visibility::BAND);
-            let attributes =
-                |ts: &[setup::RasterTri], corners: &setup::ClippedCorners, out: resolve::Attributes<'_>| {
-                    copies::attributes_chunk(Isa::Portable, &job, &r.vertices, ts, corners, out);
-                };
-            let prepared = resolve::prepare(&job, &r.setup, &mut r.scratch, bands, None, attributes);
-            let (shared, fragments) = resolve::split(&mut r.scratch);
+            let prepared = resolve::prepare(&job, &r.setup, &mut r.scratch, bands);
+            let fragments = resolve::fragments(&mut r.scratch);
             for (b, frags) in fragments.iter_mut().enumerate().take(bands) {
                 let rows = b * visibility::BAND * w..((b + 1) * visibility::BAND * w).min(w * h);
                 let want = &image.rgba[rows.start * 4..rows.end * 4];
@@ -590,7 +574,6 @@ mod tests {
                         setup: &r.setup,
                         lighter,
                         p: &prepared,
-                        shared,
                         verts: &r.vertices,
                         raster,
                         y0,

@@ -10,20 +10,19 @@ use glam::{Vec3, Vec4};
 use rayon::prelude::*;
 
 use super::Job;
+use super::outcodes::{BEYOND_GUARD, GUARD, OUTSIDE_DEPTH, OUTSIDE_PLANES};
 use super::vertices::Vertices;
 use crate::model::view::ShadingMode;
 use crate::specialise::lighter::Lighter;
 
 pub use super::window::SUBPIXEL_BITS;
 use super::window::{ONE, WindowVert, to_window};
-/// Vertices may lie this many viewports away from the centre before x/y clipping.
-const GUARD: f32 = 8.0;
 
 /// A triangle ready to rasterise, in image space (y down), ordered so that its signed
 /// area `(x1-x0)(y2-y0) - (x2-x0)(y1-y0)` is positive.
 ///
 /// 76 bytes: a million of them are written by setup and read by binning, drawing and
-/// the attributes every frame, so the corners are kept in 32 bits (a corner lies within
+/// the resolve every frame, so the corners are kept in 32 bits (a corner lies within
 /// the guard band, under 5 viewports from the centre: 2^31 / 256 / 5 is over a million
 /// pixels) and widened to 64 for the edge functions' products ([`RasterTri::xy`]), and
 /// where its corners lie in the mesh triangle is a number ([`Corners`]): the mesh
@@ -56,7 +55,7 @@ pub struct RasterTri {
 
 impl RasterTri {
     /// The slot of a mesh triangle that gives no raster triangle: an empty box of rows
-    /// (binning skips it) and a back face (the attributes skip it).
+    /// (binning skips it), marked a back face.
     pub const HOLE: RasterTri = RasterTri {
         x: [0; 3],
         y: [0; 3],
@@ -222,28 +221,11 @@ fn clip_plane(p: &Poly, dist: impl Fn(Vec4) -> f32) -> Poly {
     out
 }
 
-fn planes_needed(c: &[Vec4; 3]) -> (bool, bool) {
-    let outside_depth = c.iter().any(|v| v.z < -v.w || v.z > v.w || v.w <= 0.0);
-    let outside_guard = c.iter().any(|v| v.x.abs() > GUARD * v.w || v.y.abs() > GUARD * v.w);
-    (outside_depth, outside_guard)
-}
-
-/// The planes of the view volume a clip-space point is outside of, one bit each:
-/// x < -w, x > w, y < -w, y > w, z < -w, z > w (a NaN is outside of none).
+/// Are all three corners (their [`outcodes`](super::outcodes)) outside the same plane?
+/// Then nothing of the triangle is visible.
 #[inline(always)]
-fn outcode(v: Vec4) -> u8 {
-    (v.x < -v.w) as u8
-        | ((v.x > v.w) as u8) << 1
-        | ((v.y < -v.w) as u8) << 2
-        | ((v.y > v.w) as u8) << 3
-        | ((v.z < -v.w) as u8) << 4
-        | ((v.z > v.w) as u8) << 5
-}
-
-/// Are all three corners outside the same plane? Then nothing of the triangle is visible.
-#[inline(always)]
-fn trivially_rejected(c: &[Vec4; 3]) -> bool {
-    outcode(c[0]) & outcode(c[1]) & outcode(c[2]) != 0
+fn trivially_rejected(codes: [u8; 3]) -> bool {
+    codes[0] & codes[1] & codes[2] & OUTSIDE_PLANES != 0
 }
 
 /// Which triangles a pixel can show: the back faces culled or not, and the depth test
@@ -477,12 +459,13 @@ pub(super) fn setup_faces(
         let at = j - first;
         let t = job.mesh.triangles[j];
         // Written out: `array::map` was left as a call, once per triangle.
-        let c = [verts.clip[t[0] as usize], verts.clip[t[1] as usize], verts.clip[t[2] as usize]];
-        if trivially_rejected(&c) {
+        let codes = [verts.codes[t[0] as usize], verts.codes[t[1] as usize], verts.codes[t[2] as usize]];
+        if trivially_rejected(codes) {
             out.slots[at] = RasterTri::HOLE;
             continue;
         }
-        let (depth, guard) = planes_needed(&c);
+        let any = codes[0] | codes[1] | codes[2];
+        let (depth, guard) = (any & OUTSIDE_DEPTH != 0, any & BEYOND_GUARD != 0);
         if !depth && !guard {
             // Nothing to clip (most triangles): the corners as they are, in window
             // coordinates already.
@@ -495,6 +478,7 @@ pub(super) fn setup_faces(
             continue;
         }
         // Each corner with its barycentrics in the mesh triangle: (1, 0, 0) and so on.
+        let c = [verts.clip[t[0] as usize], verts.clip[t[1] as usize], verts.clip[t[2] as usize]];
         let mut poly = Poly::default();
         for (k, &clip) in c.iter().enumerate() {
             let mut bary = [0.0; 3];
@@ -553,10 +537,10 @@ mod tests {
                 || all(&|v| v.y > v.w)
                 || all(&|v| v.z < -v.w)
                 || all(&|v| v.z > v.w);
-            assert_eq!(trivially_rejected(&c), want, "{c:?}");
+            assert_eq!(trivially_rejected(c.map(super::super::outcodes::code)), want, "{c:?}");
             if want { rejected += 1 } else { kept += 1 }
         }
         assert!(rejected > 1000 && kept > 1000, "{rejected} / {kept}");
-        assert!(!trivially_rejected(&[Vec4::NAN; 3]));
+        assert!(!trivially_rejected([Vec4::NAN; 3].map(super::super::outcodes::code)));
     }
 }

@@ -18,6 +18,9 @@ pub struct Vertices {
     /// Window coordinates of the clip-space positions (see
     /// [`super::window::window_vertices`]).
     pub window: Vec<WindowVert>,
+    /// Where each clip-space position lies against the view volume ([`outcodes::code`]):
+    /// setup reads these, not the positions, for the triangles it need not clip.
+    pub codes: Vec<u8>,
     /// Eye-space normals, `(M^-1)^T n`, not yet normalised (Phong renormalises per pixel).
     pub normal: Vec<Vec3>,
     /// Gouraud: each vertex's colour per side, as the pipeline interpolates it: OpenGL
@@ -51,15 +54,16 @@ const GRAIN: usize = 512;
 impl Vertices {
     /// Transforms the job's mesh and, given `lighter` (Gouraud), lights it in the same pass;
     /// `window_vertices` takes a chunk of clip-space positions to the image's window
-    /// coordinates (a copy of [`super::window::window_vertices`] for this processor, chosen
-    /// by the caller). Returns whether any vertex moved: whether an eye-space position or
+    /// coordinates and their codes against the view volume (a copy of
+    /// [`super::window::window_vertices`] and [`super::outcodes::codes`] for this
+    /// processor, chosen by the caller). Returns whether any vertex moved: whether an eye-space position or
     /// normal or a clip-space position differs, in any bit, from the last run's (or their
     /// count does).
     pub fn run(
         &mut self,
         job: &Job<'_>,
         lighter: Option<&Lighter>,
-        window_vertices: impl Fn(&[Vec4], &mut [WindowVert]) + Sync,
+        window_vertices: impl Fn(&[Vec4], &mut [WindowVert], &mut [u8]) + Sync,
     ) -> bool {
         let mesh = job.mesh;
         let n = mesh.positions.len();
@@ -71,6 +75,7 @@ impl Vertices {
         self.eye.resize(n, Vec3::ZERO);
         self.clip.resize(n, Vec4::ZERO);
         self.window.resize(n, (0, 0, 0.0, 0.0));
+        self.codes.resize(n, 0);
         self.normal.resize(n, Vec3::ZERO);
         // One pass over chunks of vertices on both threads: transforms and, for Gouraud, the
         // lighting and each side's colour (one fork and join a frame for the whole stage).
@@ -83,9 +88,10 @@ impl Vertices {
             .zip(self.clip.par_chunks_mut(GRAIN))
             .zip(self.normal.par_chunks_mut(GRAIN))
             .zip(self.window.par_chunks_mut(GRAIN))
+            .zip(self.codes.par_chunks_mut(GRAIN))
             .zip(gouraud_chunks.into_par_iter())
             .enumerate()
-            .for_each(|(k, ((((eye, clip), normal), window), gouraud))| {
+            .for_each(|(k, (((((eye, clip), normal), window), codes), gouraud))| {
                 let base = k * GRAIN;
                 // Compared bit for bit with what is overwritten, without a branch.
                 let mut same = true;
@@ -101,7 +107,7 @@ impl Vertices {
                 if !same {
                     moved.store(true, std::sync::atomic::Ordering::Relaxed);
                 }
-                window_vertices(clip, window);
+                window_vertices(clip, window, codes);
                 if let (Some((cf, cb)), Some(lighter)) = (gouraud, lighter) {
                     light_chunk(job, lighter, base, cf, cb, None);
                 }

@@ -2,7 +2,7 @@
 //!
 //! The visibility buffer holds, per pixel, the rasterised triangle. The pixels of a row go
 //! in runs of one triangle: its screen-space barycentrics `l` come from its edge functions
-//! ([`ScreenBarycentrics`](super::visibility::ScreenBarycentrics), exact), and its attributes are loaded once for the run.
+//! ([`ScreenBarycentrics`](super::visibility::ScreenBarycentrics), exact), and its attributes are made once for the run.
 //! Attributes vary linearly in clip space, not on the screen, so they are interpolated
 //! perspective-correctly: `b_i = (l_i / w_i) / sum_j (l_j / w_j)`. Those are mapped back to
 //! the original mesh triangle through its clipped vertices' barycentrics.
@@ -23,7 +23,7 @@
 //! Colours go to 8 bits as OpenGL converts them: `round(255 clamp(c, 0, 1))`.
 //!
 //! The parts: `pixels` (blocks of eight pixels to bytes), `runs` (runs of one triangle and
-//! their weights), `attributes` (per triangle, once a frame), `gouraud` (colour planes),
+//! their weights), `attributes` (a triangle's, per run), `gouraud` (colour planes),
 //! `fragments` (per-pixel lighting), `picking`, `sample` (one pixel again, for the probe); this file shades a band with them.
 
 mod attributes;
@@ -34,14 +34,12 @@ mod pixels;
 mod runs;
 mod sample;
 
-use attributes::{TriangleAttributes, triangle_attributes};
 use fragments::{BATCH, flat_fragments, light_fragments};
 use gouraud::gouraud_run;
 use pixels::{fill_px, to_u8};
 use runs::{Run, blend_n, run_length, xyz};
 
-pub(in crate::raster::render) use attributes::Attributes;
-pub(in crate::raster::render) use attributes::{attributes_chunk_any, attributes_of, seen_triangles};
+pub(in crate::raster::render) use attributes::{attributes_of, seen_triangles};
 pub use fragments::Fragments;
 pub use gouraud::ColorPlanes;
 pub(crate) use picking::original_barycentrics;
@@ -50,7 +48,7 @@ pub(in crate::raster::render) use pixels::ResolveLanes;
 pub use sample::PixelSample;
 pub(in crate::raster::render) use sample::{PixelInput, shade_pixel};
 
-use super::setup::{ClippedCorners, RasterTri, Setup};
+use super::setup::Setup;
 use super::{Job, NO_TRIANGLE};
 use crate::model::view::ShadingMode;
 use crate::numerics::copies::prefetch;
@@ -59,12 +57,10 @@ use crate::numerics::copies::prefetch;
 const RESOLVE_AHEAD: usize = 12;
 use crate::specialise::lighter::Lighter;
 
-/// Per-band buffers of Phong fragments, and each rasterised triangle's attributes at its
-/// three (clipped) vertices, divided by w.
+/// Per-band buffers of Phong fragments.
 #[derive(Default)]
 pub struct Scratch {
     bands: Vec<Fragments>,
-    pub(super) tris: TriangleAttributes,
 }
 
 /// What every band's resolve shares, computed once per frame (`prepare`).
@@ -76,27 +72,12 @@ pub struct Prepared {
     face8: [Vec<[u8; 4]>; 2],
 }
 
-/// The frame's shared resolve state; fills the per-triangle attributes in `scratch`, a
-/// chunk at a time through `attributes` (a copy of [`attributes_chunk_any`]). With
-/// `kept_seen` (the triangles, and their vertices' positions and normals, are the last
-/// frame's, bit for bit, and so is its visibility, which shows the triangles whose bits
-/// are set: [`seen_triangles`]), only Gouraud's, the colours, are made again, and only
-/// for the triangles seen: the others read only the geometry.
-pub(super) fn prepare(
-    job: &Job<'_>,
-    setup: &Setup,
-    scratch: &mut Scratch,
-    bands: usize,
-    kept_seen: Option<&[u64]>,
-    attributes: impl Fn(&[RasterTri], &ClippedCorners, Attributes<'_>) + Sync,
-) -> Prepared {
+/// The frame's shared resolve state, and a buffer of fragments for each of `bands` bands.
+pub(super) fn prepare(job: &Job<'_>, setup: &Setup, scratch: &mut Scratch, bands: usize) -> Prepared {
     let bg = job.background.map(to_u8);
     // Shadings that light each pixel: Phong, and Flat with the demo's derivative normals.
     let per_pixel = job.mode.per_fragment();
     scratch.bands.resize_with(bands, Fragments::default);
-    if !job.mode.per_face() && (job.mode == ShadingMode::Gouraud || kept_seen.is_none()) {
-        triangle_attributes(setup, job.mode, &mut scratch.tris, kept_seen, attributes);
-    }
     // Flat: each face's colour converted to 8 bits once.
     let face8: [Vec<[u8; 4]>; 2] = if job.mode.per_face() {
         [0, 1].map(|side| setup.face_color[side].iter().map(|c| c.map(to_u8)).collect())
@@ -106,14 +87,13 @@ pub(super) fn prepare(
     Prepared { bg: [bg[0], bg[1], bg[2], 255], two: job.scene.light_model.two_sided, per_pixel, face8 }
 }
 
-/// The per-triangle attributes and the per-band fragment buffers, split so that each band
-/// borrows its own fragments while all share the attributes.
-pub fn split(scratch: &mut Scratch) -> (&TriangleAttributes, &mut [Fragments]) {
-    (&scratch.tris, &mut scratch.bands)
+/// The per-band fragment buffers.
+pub fn fragments(scratch: &mut Scratch) -> &mut [Fragments] {
+    &mut scratch.bands
 }
 
 /// What shading one band reads: the frame's job, triangles (`setup`), lighting plan and
-/// prepared attributes, and the band's own visibility buffer `raster`, whose first row is
+/// prepared state, and the band's own visibility buffer `raster`, whose first row is
 /// row `y0` of an image `width` pixels wide.
 #[derive(Clone, Copy)]
 pub struct BandInput<'a> {
@@ -125,9 +105,6 @@ pub struct BandInput<'a> {
     pub lighter: &'a Lighter,
     /// What `prepare` set up for the frame.
     pub p: &'a Prepared,
-    /// The per-triangle attributes ([`split`]): the front faces'; a back face's are
-    /// computed where it wins a pixel, from the vertices.
-    pub shared: &'a TriangleAttributes,
     /// The frame's vertices (their colours, eye-space positions and normals).
     pub verts: &'a crate::raster::render::vertices::Vertices,
     /// The band's visibility buffer: the rasterised triangle at each pixel.
@@ -215,6 +192,8 @@ fn shade_row<L: ResolveLanes>(
         progress.covered += len;
         // The memory of the triangle some pixels ahead asked for now: on a mesh of
         // triangles about a pixel large, each run is a new triangle's, read at random.
+        // (Its vertices, read through it, come from a mesh whose neighbours are mostly
+        // near in memory.)
         if let Some(&ahead) = row_triangles.get(x + RESOLVE_AHEAD)
             && ahead != NO_TRIANGLE
         {
@@ -227,22 +206,7 @@ fn shade_row<L: ResolveLanes>(
 /// Asks for the memory the resolve will read of rasterised triangle `triangle`.
 #[inline(always)]
 fn prefetch_triangle(band: &BandInput<'_>, triangle: usize) {
-    let shared = band.shared;
     prefetch(std::slice::from_ref(&band.setup.tris[triangle]));
-    match band.job.mode {
-        ShadingMode::Gouraud => prefetch(&shared.color[triangle..=triangle]),
-        ShadingMode::Phong => {
-            prefetch(&shared.edges[triangle..=triangle]);
-            prefetch(&shared.pos[triangle..=triangle]);
-            prefetch(&shared.nrm[triangle..=triangle]);
-        }
-        // The demo's Flat reads no normals (they come from the screen derivatives).
-        ShadingMode::FlatDerivatives => {
-            prefetch(&shared.edges[triangle..=triangle]);
-            prefetch(&shared.pos[triangle..=triangle]);
-        }
-        ShadingMode::FlatFace | ShadingMode::FlatProvoking => {}
-    }
 }
 
 /// A run of rasterised triangle `triangle` in `row_px`: Flat and Gouraud write its
@@ -258,18 +222,16 @@ fn shade_run<L: ResolveLanes>(
     frags: &mut Fragments,
     pending: usize,
 ) -> usize {
-    let BandInput { job, setup, verts, p, shared, .. } = *band;
+    let BandInput { job, setup, verts, p, .. } = *band;
     let t = &setup.tris[triangle];
     match job.mode {
         ShadingMode::FlatFace | ShadingMode::FlatProvoking => {
             let side = (t.back && p.two) as usize;
             fill_px(&mut row_px[run.x..run.x + run.len], p.face8[side][t.orig as usize]);
         }
-        // A back face's attributes are not shared: made here, from the vertices.
-        ShadingMode::Gouraud if t.back => {
+        ShadingMode::Gouraud => {
             gouraud_run(lanes, &attributes_of(job, verts, &setup.corners, t).color, run, row_px);
         }
-        ShadingMode::Gouraud => gouraud_run(lanes, &shared.color[triangle], run, row_px),
         ShadingMode::Phong => return phong_run(band, triangle, run, frags, pending),
         ShadingMode::FlatDerivatives => return flat_derivatives_run(band, triangle, run, frags, pending),
     }
@@ -280,18 +242,14 @@ fn shade_run<L: ResolveLanes>(
 /// the `pending` ones. Returns the fragments now pending.
 #[inline(always)]
 fn phong_run(band: &BandInput<'_>, triangle: usize, run: &Run, frags: &mut Fragments, pending: usize) -> usize {
-    let BandInput { job, setup, verts, p, shared, .. } = *band;
+    let BandInput { job, setup, verts, p, .. } = *band;
     let t = &setup.tris[triangle];
-    let own = t.back.then(|| attributes_of(job, verts, &setup.corners, t));
-    let (edges, positions, normals) = match &own {
-        Some(a) => (&a.edges, &a.pos, &a.nrm),
-        None => (&shared.edges[triangle], &shared.pos[triangle], &shared.nrm[triangle]),
-    };
-    let edges = edges.row(run.x, run.y);
+    let a = attributes_of(job, verts, &setup.corners, t);
+    let edges = a.edges.row(run.x, run.y);
     for (k0, _) in run.blocks() {
         let weights = run.weights(&edges, t.inv_w, k0);
-        Fragments::store(&mut frags.pos, pending + k0, &blend_n(&weights, &xyz(positions)));
-        Fragments::store(&mut frags.nrm, pending + k0, &blend_n(&weights, &xyz(normals)));
+        Fragments::store(&mut frags.pos, pending + k0, &blend_n(&weights, &xyz(&a.pos)));
+        Fragments::store(&mut frags.nrm, pending + k0, &blend_n(&weights, &xyz(&a.nrm)));
     }
     run.fragments(frags, pending, t.back && p.two)
 }
@@ -306,18 +264,14 @@ fn flat_derivatives_run(
     frags: &mut Fragments,
     pending: usize,
 ) -> usize {
-    let BandInput { job, setup, verts, p, shared, .. } = *band;
+    let BandInput { job, setup, verts, p, .. } = *band;
     let t = &setup.tris[triangle];
     // `back`: clockwise on the screen (y up), where cross(dFdy, dFdx) is the face normal.
     let n = setup.face_normal[t.orig as usize];
     let face = if t.back { n } else { -n };
-    let own = t.back.then(|| attributes_of(job, verts, &setup.corners, t));
-    let (edges, positions) = match &own {
-        Some(a) => (&a.edges, &a.pos),
-        None => (&shared.edges[triangle], &shared.pos[triangle]),
-    };
-    let edges = edges.row(run.x, run.y);
-    flat_fragments(run, &edges, t.inv_w, positions, face, frags, pending);
+    let a = attributes_of(job, verts, &setup.corners, t);
+    let edges = a.edges.row(run.x, run.y);
+    flat_fragments(run, &edges, t.inv_w, &a.pos, face, frags, pending);
     run.fragments(frags, pending, t.back && p.two)
 }
 

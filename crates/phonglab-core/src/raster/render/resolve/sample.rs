@@ -11,7 +11,7 @@
 
 use glam::Vec3;
 
-use super::attributes::TriangleAttributes;
+use super::attributes::attributes_of;
 use super::gouraud::gouraud_block;
 use super::pixels::{LANES, to_u8};
 use super::runs::{Run, blend_n, xyz};
@@ -46,13 +46,12 @@ pub struct PixelSample {
 }
 
 /// What shading one pixel again reads: the frame's job, triangles, lighting plan and
-/// per-triangle attributes, and the visibility of the pixel's row.
+/// vertices, and the visibility of the pixel's row.
 pub(in crate::raster::render) struct PixelInput<'a> {
     pub(in crate::raster::render) job: &'a Job<'a>,
     pub(in crate::raster::render) setup: &'a Setup,
     pub(in crate::raster::render) lighter: &'a Lighter,
-    pub(in crate::raster::render) shared: &'a TriangleAttributes,
-    /// The frame's vertices (a back face's attributes are computed from them).
+    /// The frame's vertices (the triangle's attributes are made from them).
     pub(in crate::raster::render) verts: &'a crate::raster::render::vertices::Vertices,
     /// The rasterised triangle at each pixel of row `y`.
     pub(in crate::raster::render) row: &'a [u32],
@@ -60,7 +59,7 @@ pub(in crate::raster::render) struct PixelInput<'a> {
 
 /// Pixel (`x`, `y`), covered by rasterised triangle `row[x]`, shaded as the resolve shaded it.
 pub(in crate::raster::render) fn shade_pixel(input: &PixelInput<'_>, x: usize, y: usize) -> Option<PixelSample> {
-    let PixelInput { job, setup, lighter, shared, verts, row } = *input;
+    let PixelInput { job, setup, lighter, verts, row } = *input;
     let r = *row.get(x)?;
     let t = setup.tris.get(r as usize)?;
     let two = job.scene.light_model.two_sided;
@@ -78,9 +77,11 @@ pub(in crate::raster::render) fn shade_pixel(input: &PixelInput<'_>, x: usize, y
         position: None,
         normal: None,
     };
-    let ri = r as usize;
-    // The triangle's attributes as the resolve took them (stored, or for a back face computed).
-    let attributes = if job.mode.per_face() { None } else { shared.of(job, verts, &setup.corners, ri, t) };
+    // The triangle's attributes as the resolve made them; none where the frame made no
+    // vertex colours for them (a frame drawn in another shading than Gouraud).
+    let coloured = verts.color[side].len() == job.mesh.positions.len();
+    let attributes = (!job.mode.per_face() && (job.mode != ShadingMode::Gouraud || coloured))
+        .then(|| attributes_of(job, verts, &setup.corners, t));
     out.colour = match job.mode {
         ShadingMode::FlatFace | ShadingMode::FlatProvoking => *setup.face_color[side].get(out.triangle)?,
         ShadingMode::Gouraud => {
