@@ -20,7 +20,7 @@ use crate::cpu::{Isa, Portable};
 /// vertex, for the triangles that need no clipping, instead of once per triangle corner (a
 /// vertex of a closed mesh has about six triangles). Vertices outside the view volume get
 /// values no unclipped triangle reads. And each vertex's code against the view volume
-/// into `codes` ([`super::outcodes::codes`]). The copy `isa` compiled with AVX2 rounds
+/// into `codes` (`outcodes::codes`). The copy `isa` compiled with AVX2 rounds
 /// inline instead of through the C library, and makes the codes eight vertices at a time.
 pub fn window_vertices(isa: Isa, clip: &[Vec4], out: &mut [WindowVert], codes: &mut [u8], width: usize, height: usize) {
     #[cfg(target_arch = "x86_64")]

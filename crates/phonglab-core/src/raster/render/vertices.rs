@@ -18,7 +18,7 @@ pub struct Vertices {
     /// Window coordinates of the clip-space positions (see
     /// [`super::window::window_vertices`]).
     pub window: Vec<WindowVert>,
-    /// Where each clip-space position lies against the view volume ([`outcodes::code`]):
+    /// Where each clip-space position lies against the view volume (`outcodes::code`):
     /// setup reads these, not the positions, for the triangles it need not clip.
     pub codes: Vec<u8>,
     /// Eye-space normals, `(M^-1)^T n`, not yet normalised (Phong renormalises per pixel).
@@ -55,7 +55,7 @@ impl Vertices {
     /// Transforms the job's mesh and, given `lighter` (Gouraud), lights it in the same pass;
     /// `window_vertices` takes a chunk of clip-space positions to the image's window
     /// coordinates and their codes against the view volume (a copy of
-    /// [`super::window::window_vertices`] and [`super::outcodes::codes`] for this
+    /// [`super::window::window_vertices`] and `outcodes::codes` for this
     /// processor, chosen by the caller). Returns whether any vertex moved: whether an eye-space position or
     /// normal or a clip-space position differs, in any bit, from the last run's (or their
     /// count does).
