@@ -27,3 +27,13 @@ lint_while_building() {
   driver=$( (command -v rustup >/dev/null && rustup which clippy-driver 2>/dev/null) || command -v clippy-driver)
   RUSTC_WORKSPACE_WRAPPER="$driver" CLIPPY_ARGS="-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__" "$@"
 }
+
+# `lint_from_now_on`: the same for every cargo command the calling script runs after it, so
+# that they all build phonglab's crates with the same compiler and reuse what the first
+# built (cargo builds a crate again when its compiler changes: a `cargo run` or `cargo
+# build` without the wrapper after a build with it compiled phonglab's crates anew).
+lint_from_now_on() {
+  RUSTC_WORKSPACE_WRAPPER=$( (command -v rustup >/dev/null && rustup which clippy-driver 2>/dev/null) || command -v clippy-driver)
+  CLIPPY_ARGS="-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__"
+  export RUSTC_WORKSPACE_WRAPPER CLIPPY_ARGS
+}
