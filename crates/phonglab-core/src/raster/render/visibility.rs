@@ -547,8 +547,21 @@ mod tests {
     fn random_tri(next: &mut impl FnMut() -> u64, w: usize, h: usize) -> Option<RasterTri> {
         let one = 1i64 << SUBPIXEL_BITS;
         let coord = |r: u64, n: usize| (r % ((n as u64 + 8) << SUBPIXEL_BITS)) as i64 - 4 * one;
-        let mut x = [0; 3].map(|_| coord(next(), w));
-        let mut y = [0; 3].map(|_| coord(next(), h));
+        let x = [0; 3].map(|_| coord(next(), w));
+        let y = [0; 3].map(|_| coord(next(), h));
+        let (x, y) = oriented(x, y)?;
+        // Half of them flat at one of two depths, so that exact ties (which the strict
+        // depth test must refuse) are common.
+        let z = if next().is_multiple_of(2) {
+            [[0.25; 3], [0.375; 3]][(next() % 2) as usize]
+        } else {
+            [0; 3].map(|_| (next() % 1_000_000) as f32 / 1e6)
+        };
+        boxed(x, y, z, w, h)
+    }
+
+    /// The corners `x`, `y` (fixed point) turned positive (`None` when they are in a line).
+    fn oriented(mut x: [i64; 3], mut y: [i64; 3]) -> Option<([i64; 3], [i64; 3])> {
         let area = edge(x[0], y[0], x[1], y[1], x[2], y[2]);
         if area == 0 {
             return None;
@@ -557,13 +570,13 @@ mod tests {
             x.swap(1, 2);
             y.swap(1, 2);
         }
-        // Half of them flat at one of two depths, so that exact ties (which the strict
-        // depth test must refuse) are common.
-        let z = if next().is_multiple_of(2) {
-            [[0.25; 3], [0.375; 3]][(next() % 2) as usize]
-        } else {
-            [0; 3].map(|_| (next() % 1_000_000) as f32 / 1e6)
-        };
+        Some((x, y))
+    }
+
+    /// The raster triangle of corners `x`, `y` and depths `z` in a `w` x `h` image, with its
+    /// pixel bounding box as setup computes it (`None` when the box holds no pixel centre).
+    fn boxed(x: [i64; 3], y: [i64; 3], z: [f32; 3], w: usize, h: usize) -> Option<RasterTri> {
+        let one = 1i64 << SUBPIXEL_BITS;
         let px = |v: i64| (v - one / 2 + one - 1) >> SUBPIXEL_BITS;
         let (x0, x1) = (px(*x.iter().min()?).max(0), ((*x.iter().max()? - one / 2) >> SUBPIXEL_BITS).min(w as i64 - 1));
         let (y0, y1) = (px(*y.iter().min()?).max(0), ((*y.iter().max()? - one / 2) >> SUBPIXEL_BITS).min(h as i64 - 1));
@@ -794,39 +807,15 @@ mod tests {
                 let c = b * one + (next() % (2 * one as u64)) as i64;
                 if coarse { c / 64 * 64 } else { c }
             };
-            let (mut x, mut y) = ([corner(bx), corner(bx), corner(bx)], [corner(by), corner(by), corner(by)]);
-            let area = edge(x[0], y[0], x[1], y[1], x[2], y[2]);
-            if area == 0 {
+            let Some((x, y)) = oriented([corner(bx), corner(bx), corner(bx)], [corner(by), corner(by), corner(by)])
+            else {
                 continue;
-            }
-            if area < 0 {
-                x.swap(1, 2);
-                y.swap(1, 2);
-            }
-            let px = |v: i64| (v - one / 2 + one - 1) >> SUBPIXEL_BITS;
-            let (x0, x1) = (
-                px(*x.iter().min().unwrap()).max(0),
-                ((*x.iter().max().unwrap() - one / 2) >> SUBPIXEL_BITS).min(w as i64 - 1),
-            );
-            let (y0, y1) = (
-                px(*y.iter().min().unwrap()).max(0),
-                ((*y.iter().max().unwrap() - one / 2) >> SUBPIXEL_BITS).min(h as i64 - 1),
-            );
-            if x0 > x1 || y0 > y1 || x1 - x0 >= 2 || y1 - y0 >= 2 {
-                continue;
-            }
-            let z =
-                if next().is_multiple_of(2) { [0.25; 3] } else { [0; 3].map(|_| (next() % 1_000_000) as f32 / 1e6) };
-            let t = RasterTri {
-                x: x.map(|v| v as i32),
-                y: y.map(|v| v as i32),
-                z,
-                x0: x0 as i32,
-                x1: x1 as i32,
-                y0: y0 as i32,
-                y1: y1 as i32,
-                ..RasterTri::default()
             };
+            let Some(mut t) = boxed(x, y, [0.0; 3], w, h) else { continue };
+            if t.x1 - t.x0 >= 2 || t.y1 - t.y0 >= 2 {
+                continue;
+            }
+            t.z = if next().is_multiple_of(2) { [0.25; 3] } else { [0; 3].map(|_| (next() % 1_000_000) as f32 / 1e6) };
             // Bands of 3 rows from row 0 and row 4 (rows that cut the triangle's box).
             for (y_start, rows) in [(0, 3), (3, 3), (4, 3)] {
                 let n = w * rows;
